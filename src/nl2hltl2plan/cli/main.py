@@ -1,0 +1,57 @@
+"""`nl2hltl2plan` console script: one sub-command per module in this package.
+
+Each command module exposes `register(subparsers)`, which adds its parser and sets `func`, a
+callable taking the parsed arguments and returning the exit code. Errors of the package's own
+family are printed as one readable message (exit 2 unless the command says otherwise); the CLI
+never shows a traceback for user input.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import sys
+
+from nl2hltl2plan import __version__
+from nl2hltl2plan.errors import Nl2Hltl2PlanError
+
+# Order here is the order in `--help`; a module missing from the tree is simply not offered.
+COMMAND_MODULES = ["spec", "check", "show", "world", "plan", "bench"]
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="nl2hltl2plan",
+        description="Natural language -> Hierarchical Task Tree -> hierarchical sc-LTL -> multi-robot plans.",
+    )
+    parser.add_argument("--version", action="version", version=f"%(prog)s {__version__}")
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND")
+    for name in COMMAND_MODULES:
+        try:
+            module = importlib.import_module(f"nl2hltl2plan.cli.cmd_{name}")
+        except ModuleNotFoundError as exc:
+            if exc.name == f"nl2hltl2plan.cli.cmd_{name}":
+                continue
+            raise
+        module.register(sub)
+    return parser
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    if not getattr(args, "func", None):
+        parser.print_help()
+        return 2
+    try:
+        return int(args.func(args) or 0)
+    except Nl2Hltl2PlanError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        print("interrupted", file=sys.stderr)
+        return 130
+
+
+if __name__ == "__main__":
+    sys.exit(main())

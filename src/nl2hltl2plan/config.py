@@ -1,0 +1,39 @@
+"""Settings read from the environment, in one place.
+
+`NL2HLTL2PLAN_DATA` points at the shared data folder (ALFRED layouts, trials, benchmark ground
+truth...). Default: `../shared/data` relative to the repository root, falling back to the current
+directory's `../shared/data`. The data is read in place and never copied into the repository.
+"""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+from nl2hltl2plan.errors import DataError
+
+DATA_ENV = "NL2HLTL2PLAN_DATA"
+_REPO_ROOT = Path(__file__).resolve().parents[2]
+
+
+def data_dir(required: bool = True) -> Path | None:
+    """The shared data folder, or None (required=False) / DataError (required=True) when absent."""
+    env = os.environ.get(DATA_ENV)
+    candidates = [Path(env)] if env else [_REPO_ROOT.parent / "shared" / "data", Path.cwd().parent / "shared" / "data"]
+    for path in candidates:
+        if path.is_dir():
+            return path
+    if required:
+        where = env if env else " or ".join(str(c) for c in candidates)
+        raise DataError(f"shared data folder not found at {where}; set {DATA_ENV} to the folder that holds alfred/, benchmark/ ...")
+    return None
+
+
+def data_path(*parts: str) -> Path:
+    """A file inside the shared data folder; DataError naming it when it does not exist."""
+    base = data_dir(required=True)
+    assert base is not None
+    path = base.joinpath(*parts)
+    if not path.exists():
+        raise DataError(f"missing data file {path} (from {DATA_ENV} / ../shared/data)")
+    return path
