@@ -1,0 +1,13 @@
+"""Planning: simultaneous task allocation and planning for robot teams under hierarchical sc-LTL.
+
+Entry points: `plan(world, spec, starts, objective="min", mode="fast", timeout_s=300.0)` ->
+`PlanResult`, and `oracle_spec(gt, world)` (the spec a perfect translator would give for a
+benchmark instance). See docs/planning.md.
+"""
+
+from __future__ import annotations
+
+from nl2hltl2plan.planning.api import PlanResult, plan
+from nl2hltl2plan.planning.oracle import OracleSpec, oracle_spec
+
+__all__ = ["OracleSpec", "PlanResult", "oracle_spec", "plan"]

@@ -1,0 +1,48 @@
+"""`nl2hltl2plan check SPEC.json`: validate a hierarchical spec (exit 0 valid, 1 invalid, 2 unreadable)."""
+
+from __future__ import annotations
+
+import argparse
+import json
+from pathlib import Path
+
+from nl2hltl2plan.errors import SpecError
+from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
+
+
+def register(sub: argparse._SubParsersAction) -> None:
+    p = sub.add_parser("check", help="validate a hierarchical sc-LTL spec file (Definition 2.1)",
+                       description="Validate a hierarchical sc-LTL specification in the paper's JSON form "
+                       '(a list of levels, each {"name": "formula" or [actions]}). Exit 0 when valid, '
+                       "1 with the reasons when not, 2 when the file cannot be read as JSON.")
+    p.add_argument("spec", help="specification JSON file")
+    p.add_argument("--json", action="store_true", help="print one JSON object")
+    p.set_defaults(func=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    try:
+        data = json.loads(Path(args.spec).read_text())
+    except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:
+        return _report(args, 2, [f"cannot read {args.spec}: {getattr(exc, 'strerror', None) or exc}"])
+    try:
+        spec = HierarchicalSpec.from_json(data)
+    except SpecError as exc:
+        reasons = [line.strip()[2:] for line in str(exc).splitlines()[1:]] or [str(exc)]
+        return _report(args, 1, reasons)
+    summary = {"levels": len(spec.levels), "formulas": len(spec.names), "leaves": len(spec.leaves),
+               "atoms": sorted(spec.atoms())}
+    return _report(args, 0, [], summary)
+
+
+def _report(args: argparse.Namespace, code: int, reasons: list[str], summary: dict | None = None) -> int:
+    if args.json:
+        print(json.dumps({"valid": code == 0, "exit": code, "reasons": reasons, **(summary or {})}, indent=2))
+    elif code == 0 and summary:
+        print(f"valid: {summary['levels']} levels, {summary['formulas']} formulas, {summary['leaves']} leaves, "
+              f"{len(summary['atoms'])} atomic propositions")
+    else:
+        print("invalid:" if code == 1 else "unreadable:")
+        for r in reasons:
+            print(f"  - {r}")
+    return code

@@ -1,0 +1,399 @@
+"""Grounding: words of an instruction -> AI2-THOR object types present in the scene.
+
+The word list is `lexicon.txt` (next to this module) plus every AI2-THOR type under its own name
+split into words ("garbage can" -> GarbageCan). A word maps to an ordered list of candidate types;
+the first one present in the scene is used, or all present ones for words such as "table" or "knife"
+whose reading the annotation guide leaves open. When no candidate is in the scene, grounding fails
+with a `WorldError` that names the missing type ("no Statue in FloorPlan17").
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterable
+from dataclasses import dataclass
+from functools import lru_cache
+from importlib import resources
+
+from nl2hltl2plan.errors import WorldError
+
+# AI2-THOR object types (ALFRED's list plus the few AI2-THOR 5 scenes add).
+THOR_TYPES: tuple[str, ...] = (
+    "AlarmClock",
+    "Apple",
+    "ArmChair",
+    "BaseballBat",
+    "BasketBall",
+    "Bathtub",
+    "BathtubBasin",
+    "Bed",
+    "Blinds",
+    "Book",
+    "Boots",
+    "Bottle",
+    "Bowl",
+    "Box",
+    "Bread",
+    "ButterKnife",
+    "CD",
+    "Cabinet",
+    "Candle",
+    "Cart",
+    "CellPhone",
+    "Chair",
+    "Cloth",
+    "CoffeeMachine",
+    "CoffeeTable",
+    "CounterTop",
+    "CreditCard",
+    "Cup",
+    "Curtains",
+    "Desk",
+    "DeskLamp",
+    "DiningTable",
+    "DishSponge",
+    "Drawer",
+    "Dresser",
+    "Dumbbell",
+    "Egg",
+    "Faucet",
+    "FloorLamp",
+    "Footstool",
+    "Fork",
+    "Fridge",
+    "GarbageCan",
+    "Glassbottle",
+    "HandTowel",
+    "HandTowelHolder",
+    "HousePlant",
+    "Kettle",
+    "KeyChain",
+    "Knife",
+    "Ladle",
+    "Laptop",
+    "LaundryHamper",
+    "LaundryHamperLid",
+    "Lettuce",
+    "LightSwitch",
+    "Microwave",
+    "Mirror",
+    "Mug",
+    "Newspaper",
+    "Ottoman",
+    "Painting",
+    "Pan",
+    "PaperTowel",
+    "PaperTowelRoll",
+    "Pen",
+    "Pencil",
+    "PepperShaker",
+    "Pillow",
+    "Plate",
+    "Plunger",
+    "Poster",
+    "Pot",
+    "Potato",
+    "RemoteControl",
+    "Safe",
+    "SaltShaker",
+    "ScrubBrush",
+    "Shelf",
+    "ShelvingUnit",
+    "ShowerDoor",
+    "ShowerGlass",
+    "SideTable",
+    "Sink",
+    "SinkBasin",
+    "SoapBar",
+    "SoapBottle",
+    "Sofa",
+    "Spatula",
+    "Spoon",
+    "SprayBottle",
+    "Statue",
+    "Stool",
+    "StoveBurner",
+    "StoveKnob",
+    "TVStand",
+    "TeddyBear",
+    "Television",
+    "TennisRacket",
+    "TissueBox",
+    "Toaster",
+    "Toilet",
+    "ToiletPaper",
+    "ToiletPaperHanger",
+    "ToiletPaperRoll",
+    "Tomato",
+    "Towel",
+    "TowelHolder",
+    "Vase",
+    "Watch",
+    "WateringCan",
+    "Window",
+    "WineBottle",
+    "Dishwasher",
+    "DishwasherLowerRack",
+    "DishwasherUpperRack",
+    "Saucer",
+)
+# ALFRED's facts (affordances.json): receptacles, movable ones, and lamps.
+RECEPTACLES = frozenset(
+    {
+        "ArmChair",
+        "BathtubBasin",
+        "Bed",
+        "Bowl",
+        "Box",
+        "Cabinet",
+        "Cart",
+        "CoffeeMachine",
+        "CoffeeTable",
+        "CounterTop",
+        "Cup",
+        "Desk",
+        "DiningTable",
+        "Drawer",
+        "Dresser",
+        "Fridge",
+        "GarbageCan",
+        "HandTowelHolder",
+        "LaundryHamper",
+        "Microwave",
+        "Mug",
+        "Ottoman",
+        "PaintingHanger",
+        "Pan",
+        "Plate",
+        "Pot",
+        "Safe",
+        "Shelf",
+        "SideTable",
+        "SinkBasin",
+        "Sofa",
+        "StoveBurner",
+        "TVStand",
+        "Toaster",
+        "Toilet",
+        "ToiletPaperHanger",
+        "TowelHolder",
+        "Chair",
+        "ShelvingUnit",
+        "Footstool",
+        "Stool",
+        "Boots",
+        "Dishwasher",
+        "DishwasherLowerRack",
+        "DishwasherUpperRack",
+        "Saucer",  # the demo kitchen's own types
+    }
+)
+MOVABLE_RECEPTACLES = frozenset({"Bowl", "Box", "Cup", "Mug", "Pan", "Plate", "Pot", "Saucer"})
+LAMPS = frozenset({"DeskLamp", "FloorLamp"})
+GENERIC = "*"
+
+_TOKEN = re.compile(r"[a-z0-9]+(?:'[a-z]+)?")
+
+
+@dataclass(frozen=True)
+class Entry:
+    """A lexicon entry: candidate types in order; `all_` = every present candidate is acceptable."""
+
+    phrase: str
+    types: tuple[str, ...]
+    all_: bool = False
+
+    @property
+    def generic(self) -> bool:
+        return self.types == (GENERIC,)
+
+    @property
+    def canonical(self) -> str:
+        return self.types[0]
+
+
+@dataclass(frozen=True)
+class Mention:
+    """A lexicon phrase found in a text: token span [start, end), character span, entry, plural form."""
+
+    start: int
+    end: int
+    char_start: int
+    char_end: int
+    surface: str
+    entry: Entry
+    plural: bool
+
+
+def camel_words(type_name: str) -> str:
+    """ "GarbageCan" -> "garbage can", "TVStand" -> "tv stand", "CD" -> "cd"."""
+    return " ".join(re.findall(r"[A-Z]+(?![a-z])|[A-Z][a-z]*|[a-z]+|\d+", type_name)).lower()
+
+
+def tokens(text: str) -> list[tuple[str, int, int]]:
+    """Lower-case word tokens with their character spans."""
+    return [(m.group(0), m.start(), m.end()) for m in _TOKEN.finditer(text.lower())]
+
+
+def _plurals(word: str) -> set[str]:
+    out = {word + "s", word + "es", word + "'s"}
+    if word.endswith("y") and len(word) > 2 and word[-2] not in "aeiou":
+        out.add(word[:-1] + "ies")
+    if word.endswith("fe"):
+        out.add(word[:-2] + "ves")
+    elif word.endswith("f"):
+        out.add(word[:-1] + "ves")
+    if word.endswith("s"):
+        out.discard(word + "s")
+    return out
+
+
+@lru_cache(maxsize=1)
+def lexicon() -> dict[tuple[str, ...], tuple[Entry, bool]]:
+    """phrase tokens -> (entry, is_plural_form). Own entries win over type names and plural forms."""
+    table: dict[tuple[str, ...], tuple[Entry, bool]] = {}
+    singular: dict[tuple[str, ...], Entry] = {}
+    for t in THOR_TYPES:
+        for phrase in {camel_words(t), t.lower()}:
+            singular[tuple(phrase.split())] = Entry(phrase, (t,))
+    text = resources.files("nl2hltl2plan.language").joinpath("lexicon.txt").read_text()
+    for raw in text.splitlines():
+        line = raw.split("#", 1)[0].strip()
+        if not line:
+            continue
+        parts = [p.strip() for p in line.split(" : ")]
+        phrases, types = parts[0], tuple(parts[1].split())
+        all_ = len(parts) > 2 and parts[2] == "all"
+        for phrase in (p.strip() for p in phrases.split(",")):
+            if phrase:
+                singular[tuple(phrase.split())] = Entry(phrase, types, all_)
+    for key, entry in singular.items():
+        for pl in _plurals(key[-1]):
+            pkey = key[:-1] + (pl,)
+            if pkey not in singular:
+                table.setdefault(pkey, (entry, True))
+    for key, entry in singular.items():
+        table[key] = (entry, False)
+    return table
+
+
+@lru_cache(maxsize=1)
+def _max_len() -> int:
+    return max(len(k) for k in lexicon())
+
+
+def find_mentions(text: str) -> list[Mention]:
+    """Longest lexicon matches, left to right, without overlaps."""
+    toks = tokens(text)
+    words = [t[0] for t in toks]
+    lex = lexicon()
+    out: list[Mention] = []
+    i = 0
+    while i < len(words):
+        for n in range(min(_max_len(), len(words) - i), 0, -1):
+            hit = lex.get(tuple(words[i : i + n]))
+            if hit:
+                entry, plural = hit
+                out.append(
+                    Mention(
+                        i,
+                        i + n,
+                        toks[i][1],
+                        toks[i + n - 1][2],
+                        text[toks[i][1] : toks[i + n - 1][2]],
+                        entry,
+                        plural,
+                    )
+                )
+                i += n
+                break
+        else:
+            i += 1
+    return out
+
+
+def lookup(phrase: str) -> Entry | None:
+    """The entry of a whole phrase or of its last mention ("the red mug" -> mug), else None."""
+    hit = lexicon().get(tuple(w for w, _, _ in tokens(phrase)))
+    if hit:
+        return hit[0]
+    ms = find_mentions(phrase)
+    return ms[-1].entry if ms else None
+
+
+class Grounder:
+    """Maps entries/words to the types of one scene; `types=None` means "no scene": keep canonical types."""
+
+    def __init__(self, types: Iterable[str] | None, scene: str = "the scene") -> None:
+        self.types: frozenset[str] | None = frozenset(types) if types is not None else None
+        self.scene = scene
+        self._by_lower = {t.lower(): t for t in (self.types or THOR_TYPES)}
+
+    def resolve(self, entry: Entry) -> list[str]:
+        """Types of the scene the entry stands for ([] when none is present)."""
+        if entry.generic:
+            return []
+        if self.types is None:
+            return list(entry.types) if entry.all_ else [entry.canonical]
+        present = [t for t in entry.types if t in self.types]
+        if not present:
+            return []
+        return present if entry.all_ else present[:1]
+
+    def missing(self, entry: Entry, what: str = "") -> WorldError:
+        words = " ".join(w for w, _, _ in tokens(what))
+        plain = camel_words(entry.canonical)
+        said = (
+            f" (for {what.strip()!r})" if words and plain not in words and entry.phrase not in words else ""
+        )
+        return WorldError(f"no {entry.canonical}{said} in {self.scene}")
+
+    def ground(self, word: str, role: str = "object") -> list[str]:
+        """A word or type name -> present types; WorldError naming it when the scene has none."""
+        w = word.strip()
+        if not w:
+            raise WorldError(f"empty {role} name")
+        exact = self._by_lower.get(w.lower().replace(" ", "")) or self._by_lower.get(w.lower())
+        entry = lookup(w)
+        if (
+            exact
+            and (self.types is None or exact in self.types)
+            and (exact == w.replace(" ", "") or entry is None)
+        ):
+            return [exact]  # a type name as such ("Knife"); a plain word ("knife") goes through the lexicon
+        if entry is None or entry.generic:
+            if exact:  # a real type that is not in the scene
+                raise WorldError(f"no {exact} in {self.scene}")
+            known = {t.lower() for t in THOR_TYPES}
+            if w.lower().replace(" ", "") in known:
+                raise WorldError(f"no {w} in {self.scene}")
+            raise WorldError(f"cannot map the {role} {w!r} to an object type of {self.scene}")
+        got = self.resolve(entry)
+        if not got:
+            raise self.missing(entry, w)
+        return got
+
+
+def scene_types(scene: str) -> set[str]:
+    """Object types of an ALFRED floor plan from the shared data (scene_info and the layout's object list).
+
+    Used where no `World` is at hand (benchmark measurement); DataError when neither file exists.
+    """
+    import json
+
+    from nl2hltl2plan.config import data_dir
+    from nl2hltl2plan.errors import DataError
+
+    base = data_dir(required=True)
+    assert base is not None
+    found: set[str] = set()
+    info = base / "alfred_multiagent" / "scene_info" / f"{scene}.json"
+    if info.exists():
+        found |= {k.split("_")[0] for k in json.loads(info.read_text())["objects"]}
+    objs = base / "alfred" / "layouts" / f"{scene}-objects.json"
+    if objs.exists():
+        found |= set(json.loads(objs.read_text()))
+    if not found:
+        raise DataError(f"no object list for scene {scene} under {base}")
+    found.discard("Floor")
+    return found

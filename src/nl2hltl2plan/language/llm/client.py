@@ -1,0 +1,249 @@
+"""One LLM interface over the official `openai` client (chat completions).
+
+The same code path serves GPT-4-class APIs, vLLM, Ollama and llama.cpp servers (ours included):
+
+- JSON by schema where the server supports it (`response_format` json_schema, falling back to
+  json_object, then to plain text when the server rejects the format);
+- every answer is validated with a pydantic model; an invalid one is re-asked with the validation
+  error (at most `max_reasks` times), then `LLMError`;
+- transport failures (connection, timeout, rate limit, 5xx) are retried with exponential backoff;
+- answers are cached on disk keyed by the full request, and in batch mode unanswered requests are
+  collected instead of sent (`batch.py`).
+"""
+
+from __future__ import annotations
+
+import json
+import re
+import time
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Any, TypeVar
+
+from pydantic import BaseModel, ValidationError
+
+from nl2hltl2plan.errors import LLMError
+from nl2hltl2plan.language.llm.batch import BatchCollector, PendingAnswer
+from nl2hltl2plan.language.llm.cache import AnswerCache, request_key
+from nl2hltl2plan.language.llm.settings import LLMSettings
+
+T = TypeVar("T", bound=BaseModel)
+Validator = Callable[[Any], None]  # extra checks after pydantic; raise ValueError with a readable message
+
+
+@dataclass
+class Stats:
+    requests: int = 0  # answers obtained (sent or cached)
+    sent: int = 0  # HTTP requests that returned an answer
+    cached: int = 0
+    reasks: int = 0
+    retries: int = 0
+
+
+def extract_json(text: str) -> Any:
+    """The JSON value in an answer: the whole text, a ```json fence, or the outermost {...} / [...]."""
+    s = text.strip()
+    fence = re.search(r"```(?:json)?\s*(.*?)```", s, flags=re.S)
+    if fence:
+        s = fence.group(1).strip()
+    try:
+        return json.loads(s)
+    except ValueError:
+        pass
+    for open_, close in (("{", "}"), ("[", "]")):
+        a, b = s.find(open_), s.rfind(close)
+        if 0 <= a < b:
+            try:
+                return json.loads(s[a : b + 1])
+            except ValueError:
+                continue
+    raise ValueError("the answer is not JSON")
+
+
+def _short_validation(exc: ValidationError) -> str:
+    return "; ".join(
+        f"{'.'.join(str(p) for p in e['loc']) or 'answer'}: {e['msg']}" for e in exc.errors()[:6]
+    )
+
+
+class LLMClient:
+    """Ask an OpenAI-compatible server for pydantic-validated JSON answers."""
+
+    def __init__(
+        self,
+        settings: LLMSettings,
+        *,
+        cache: AnswerCache | None = None,
+        batch: BatchCollector | None = None,
+        on_request: Callable[[str], None] | None = None,
+        sleep: Callable[[float], None] = time.sleep,
+    ) -> None:
+        self.settings = settings
+        self.cache = (
+            cache if cache is not None else (AnswerCache(settings.cache_dir) if settings.cache_dir else None)
+        )
+        self.batch = batch
+        self.on_request = on_request
+        self.stats = Stats()
+        self._sleep = sleep
+        self._json_mode = settings.json_mode
+        self._client: Any = None
+
+    # ------------------------------------------------------------------------------------------------
+    @property
+    def client(self) -> Any:
+        if self._client is None:
+            import openai
+
+            self._client = openai.OpenAI(
+                base_url=self.settings.base_url,
+                api_key=self.settings.api_key or "none",
+                timeout=self.settings.timeout,
+                max_retries=0,
+            )
+        return self._client
+
+    def _format(self, schema: type[BaseModel], name: str) -> dict[str, Any] | None:
+        mode = "schema" if self._json_mode == "auto" else self._json_mode
+        if mode == "schema":
+            return {
+                "type": "json_schema",
+                "json_schema": {"name": name, "schema": schema.model_json_schema(), "strict": False},
+            }
+        if mode == "object":
+            return {"type": "json_object"}
+        return None
+
+    def request_for(
+        self, messages: list[dict[str, str]], schema: type[BaseModel], name: str
+    ) -> dict[str, Any]:
+        req: dict[str, Any] = {
+            "model": self.settings.model,
+            "messages": messages,
+            "temperature": self.settings.temperature,
+            "max_tokens": self.settings.max_tokens,
+        }
+        if self.settings.seed is not None:
+            req["seed"] = self.settings.seed
+        fmt = self._format(schema, name)
+        if fmt is not None:
+            req["response_format"] = fmt
+        return req
+
+    # ------------------------------------------------------------------------------------------------
+    def ask(
+        self, messages: list[dict[str, str]], schema: type[T], name: str, validate: Validator | None = None
+    ) -> T:
+        """Send `messages`, parse the answer as `schema` (plus `validate`), re-ask on invalid answers."""
+        msgs = list(messages)
+        last_err = ""
+        for attempt in range(self.settings.max_reasks + 1):
+            req = self.request_for(msgs, schema, name)
+            content = self.complete(req, name)
+            try:
+                value = schema.model_validate(extract_json(content))
+                if validate is not None:
+                    validate(value)
+                return value
+            except ValidationError as exc:
+                last_err = _short_validation(exc)
+            except ValueError as exc:
+                last_err = str(exc)
+            if attempt < self.settings.max_reasks:
+                self.stats.reasks += 1
+                msgs = msgs + [
+                    {"role": "assistant", "content": content[:4000]},
+                    {
+                        "role": "user",
+                        "content": (
+                            f"That answer is not valid: {last_err}. Answer again with only a JSON object "
+                            f"that follows "
+                            f"the schema: {json.dumps(schema.model_json_schema())}"
+                        ),
+                    },
+                ]
+        raise LLMError(f"{name}: no valid answer after {self.settings.max_reasks + 1} attempts ({last_err})")
+
+    def complete(self, request: dict[str, Any], name: str = "request") -> str:
+        """One chat completion (cache, batch, retries, response-format fallback); the answer text."""
+        key = request_key(request)
+        if self.cache is not None:
+            hit = self.cache.get(key)
+            if hit is not None:
+                self.stats.requests += 1
+                self.stats.cached += 1
+                return hit
+        if self.batch is not None:
+            self.batch.add(key, request)
+            raise PendingAnswer(key)
+        if self.on_request is not None:
+            self.on_request(name)
+        content = self._send(request, name)
+        self.stats.requests += 1
+        self.stats.sent += 1
+        if self.cache is not None:
+            self.cache.put(key, request, content, {"name": name})
+        return content
+
+    def _send(self, request: dict[str, Any], name: str) -> str:
+        import openai
+
+        s = self.settings
+        where = s.base_url or "the OpenAI API"
+        delay = s.backoff
+        attempt = 0
+        while True:
+            try:
+                resp = self.client.chat.completions.create(**request)
+                content = resp.choices[0].message.content if resp.choices else None
+                if content is None:
+                    raise LLMError(f"{name}: the server at {where} returned no message content")
+                return content
+            except openai.BadRequestError as exc:
+                if "response_format" in request and s.json_mode == "auto" and _format_rejected(exc):
+                    # the server does not support this JSON mode: fall back (schema -> object -> none)
+                    nxt = "object" if request["response_format"].get("type") == "json_schema" else "none"
+                    self._json_mode = nxt
+                    request = dict(request)
+                    if nxt == "object":
+                        request["response_format"] = {"type": "json_object"}
+                    else:
+                        request.pop("response_format")
+                    continue
+                raise LLMError(f"{name}: the server at {where} rejected the request: {_msg(exc)}") from None
+            except openai.AuthenticationError as exc:
+                raise LLMError(
+                    f"{name}: authentication failed at {where} (set NL2HLTL2PLAN_LLM_API_KEY): {_msg(exc)}"
+                ) from None
+            except openai.NotFoundError as exc:
+                raise LLMError(f"{name}: not found at {where} (model {s.model!r}?): {_msg(exc)}") from None
+            except (
+                openai.APITimeoutError,
+                openai.APIConnectionError,
+                openai.RateLimitError,
+                openai.InternalServerError,
+            ) as exc:
+                if attempt >= s.max_retries:
+                    what = "timed out" if isinstance(exc, openai.APITimeoutError) else "failed"
+                    raise LLMError(
+                        f"{name}: request to {where} {what} after {attempt + 1} attempts "
+                        f"(timeout {s.timeout:g}s): {_msg(exc)}"
+                    ) from None
+                self.stats.retries += 1
+                attempt += 1
+                self._sleep(delay)
+                delay *= 2
+            except openai.APIStatusError as exc:
+                raise LLMError(
+                    f"{name}: the server at {where} answered {exc.status_code}: {_msg(exc)}"
+                ) from None
+
+
+def _msg(exc: Exception) -> str:
+    text = getattr(exc, "message", None) or str(exc)
+    return text.splitlines()[0][:300] if text else exc.__class__.__name__
+
+
+def _format_rejected(exc: Exception) -> bool:
+    text = (getattr(exc, "message", "") or str(exc)).lower()
+    return any(w in text for w in ("response_format", "json_schema", "json schema", "json_object", "grammar"))

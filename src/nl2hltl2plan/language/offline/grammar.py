@@ -1,0 +1,506 @@
+"""Word tables of the offline parser: verbs, prepositions, temporal markers, state words.
+
+Everything here is plain data (regular expressions and sets); `parser.py` applies it.
+"""
+
+from __future__ import annotations
+
+import re
+
+# ----- verbs ---------------------------------------------------------------------------------------
+# class: place (move something somewhere), pick (take hold), clean/heat/cool/slice (change state),
+# fill (fill with water: the object is rinsed in the sink), light (switch a lamp), examine (look at),
+# trash (throw away: destination garbage can), other (open/close...: no task of its own).
+_VERBS: dict[str, tuple[str, ...]] = {
+    "place": (
+        "put",
+        "place",
+        "move",
+        "set",
+        "bring",
+        "carry",
+        "transfer",
+        "deliver",
+        "store",
+        "stash",
+        "leave",
+        "return",
+        "position",
+        "lay",
+        "stick",
+        "insert",
+        "hang",
+        "load",
+        "relocate",
+        "secure",
+        "drop",
+        "stack",
+        "arrange",
+        "slide",
+        "deposit",
+        "locate",
+        "shift",
+        "send",
+        "keep",
+        "tuck",
+        "stow",
+    ),
+    "pick": (
+        "pick",
+        "grab",
+        "retrieve",
+        "gather",
+        "collect",
+        "take",
+        "get",
+        "hold",
+        "lift",
+        "obtain",
+        "fetch",
+        "find",
+        "remove",
+        "use",
+        "holding",
+        "carrying",
+    ),
+    "clean": ("wash", "rinse", "clean", "scrub", "wet", "cleanse", "moisten"),
+    "heat": ("heat", "warm", "cook", "microwave", "bake", "toast", "boil", "reheat"),
+    "cool": ("chill", "cool", "refrigerate", "freeze", "frost"),
+    "slice": ("slice", "cut", "chop", "dice"),
+    "fill": ("fill",),
+    "light": ("turn", "switch", "lit", "light", "toggle", "power", "illuminate"),
+    "examine": (
+        "examine",
+        "inspect",
+        "view",
+        "check",
+        "see",
+        "study",
+        "observe",
+        "read",
+        "look",
+        "glance",
+        "scan",
+        "investigate",
+        "analyze",
+        "analyse",
+    ),
+    "trash": ("throw", "toss", "discard", "dispose", "trash", "bin", "chuck", "dump"),
+    "other": ("open", "close", "shut", "exchange", "swap", "empty", "finish", "complete", "do", "make", "go"),
+}
+
+
+def _gerund(v: str) -> str:
+    if v.endswith("ing"):
+        return v
+    if v in {
+        "put",
+        "set",
+        "get",
+        "cut",
+        "sit",
+        "shut",
+        "swap",
+        "drop",
+        "chop",
+        "pop",
+        "plop",
+        "stop",
+        "dump",
+    }:
+        return v + v[-1] + "ing"
+    if v in {"lit"}:
+        return "lighting"
+    if v.endswith("e") and not v.endswith(("ee", "ye")):
+        return v[:-1] + "ing"
+    return v + "ing"
+
+
+def _past(v: str) -> str:
+    if v in {"put", "set", "cut", "lit", "shut", "read"}:
+        return v
+    if v in {"take"}:
+        return "taken"
+    if v in {"hold"}:
+        return "held"
+    if v in {"get"}:
+        return "got"
+    if v in {"bring"}:
+        return "brought"
+    if v in {"find"}:
+        return "found"
+    if v.endswith("e"):
+        return v + "d"
+    if v.endswith("y") and v[-2] not in "aeiou":
+        return v[:-1] + "ied"
+    if v in {"drop", "chop", "stop", "swap", "plop", "pop"}:
+        return v + v[-1] + "ed"
+    return v + "ed"
+
+
+VERBS: dict[str, tuple[str, str]] = {}  # surface -> (class, base)
+for _cls, _words in _VERBS.items():
+    for _w in _words:
+        for _form in {_w, _gerund(_w), _w + "s", _w + "es"}:
+            VERBS.setdefault(_form, (_cls, _w))
+VERB_PAST: dict[str, tuple[str, str]] = {}  # "placing the statue" refs use gerunds; "the box is examined"
+for _cls, _words in _VERBS.items():
+    for _w in _words:
+        VERB_PAST.setdefault(_past(_w), (_cls, _w))
+
+# words that start a new clause when they follow one of these (then a verb must come next)
+CLAUSE_JOINERS = {
+    "and",
+    "then",
+    "to",
+    "plus",
+    "also",
+    "while",
+    "or",
+    "before",
+    "after",
+    "as",
+    "so",
+    "in",
+    "order",
+    "first",
+    "next",
+    "finally",
+    "lastly",
+    "afterwards",
+    "afterward",
+    "subsequently",
+}
+SEQ_JOINERS = {
+    "then": "then",
+    "next": "then",
+    "afterwards": "then",
+    "afterward": "then",
+    "subsequently": "then",
+    "first": "first",
+    "finally": "finally",
+    "lastly": "finally",
+    "after": "after",
+    "before": "before",
+}
+
+# ----- prepositions ----------------------------------------------------------------------------------
+# multi-word prepositions first (matched on token sequences)
+PREPOSITIONS: list[tuple[str, ...]] = sorted(
+    [
+        tuple(p.split())
+        for p in (
+            "on top of",
+            "in front of",
+            "next to",
+            "close to",
+            "out of",
+            "inside of",
+            "on to",
+            "in to",
+            "along with",
+            "together with",
+            "away from",
+            "by the light of",
+            "under the light of",
+            "in the light of",
+            "with the light of",
+            "under light of",
+            "by light of",
+            "in light of",
+            "near to",
+            "to the left of",
+            "to the right of",
+            "in between",
+            "all the way to",
+            "back into",
+            "back onto",
+            "back on",
+            "back in",
+            "back to",
+            "down on",
+            "down onto",
+            "down in",
+            "over to",
+            "up to",
+            "off of",
+            "on the top of",
+            "to",
+            "into",
+            "onto",
+            "in",
+            "on",
+            "inside",
+            "at",
+            "from",
+            "off",
+            "under",
+            "underneath",
+            "below",
+            "beneath",
+            "above",
+            "over",
+            "near",
+            "by",
+            "beside",
+            "besides",
+            "behind",
+            "between",
+            "against",
+            "through",
+            "toward",
+            "towards",
+            "with",
+            "containing",
+            "holding",
+            "using",
+            "within",
+            "across",
+            "around",
+            "for",
+            "among",
+            "upon",
+            "via",
+            "without",
+            "filled with",
+            "full of",
+        )
+    ],
+    key=len,
+    reverse=True,
+)
+DEST_PREPS = {
+    "to",
+    "into",
+    "onto",
+    "in",
+    "on",
+    "inside",
+    "at",
+    "on top of",
+    "inside of",
+    "on to",
+    "in to",
+    "within",
+    "upon",
+    "back into",
+    "back onto",
+    "back on",
+    "back in",
+    "back to",
+    "down on",
+    "down onto",
+    "down in",
+    "over to",
+    "up to",
+    "all the way to",
+    "on the top of",
+    "under",
+    "underneath",
+    "below",
+    "beneath",
+    "in between",
+    "between",
+    "among",
+}
+NEAR_PREPS = {
+    "near",
+    "by",
+    "beside",
+    "besides",
+    "next to",
+    "close to",
+    "against",
+    "in front of",
+    "behind",
+    "above",
+    "over",
+    "near to",
+    "to the left of",
+    "to the right of",
+    "across",
+    "around",
+    "toward",
+    "towards",
+}
+SOURCE_PREPS = {"from", "out of", "off", "off of", "away from"}
+WITH_PREPS = {"with", "containing", "holding", "along with", "together with", "filled with", "full of"}
+LIGHT_PREPS = {
+    "by the light of",
+    "under the light of",
+    "in the light of",
+    "with the light of",
+    "under light of",
+    "by light of",
+    "in light of",
+    "using",
+}
+PARTICLES = {"up", "down", "away", "back", "around", "aside"}  # skipped after a verb and inside noun phrases
+
+# ----- state words (adjectives and participles in noun phrases) --------------------------------------
+STATE_WORDS: dict[str, str] = {}
+for _w in ("washed", "rinsed", "clean", "cleaned", "wet", "scrubbed", "cleansed", "moist", "damp", "soaked"):
+    STATE_WORDS[_w] = "clean"
+for _w in (
+    "heated",
+    "warm",
+    "warmed",
+    "cooked",
+    "hot",
+    "microwaved",
+    "baked",
+    "toasted",
+    "boiled",
+    "reheated",
+):
+    STATE_WORDS[_w] = "heat"
+for _w in ("chilled", "cold", "cooled", "refrigerated", "frozen", "cool", "iced"):
+    STATE_WORDS[_w] = "cool"
+for _w in ("sliced", "cut", "chopped", "diced"):
+    STATE_WORDS[_w] = "slice"
+SLICE_NOUNS = {"slice", "slices", "piece", "pieces", "wedge", "wedges", "chunk", "chunks", "bit", "bits"}
+WATER_WORDS = {"water"}
+
+# counts
+NUMBERS = {
+    "one": 1,
+    "a": 1,
+    "an": 1,
+    "single": 1,
+    "two": 2,
+    "both": 2,
+    "pair": 2,
+    "couple": 2,
+    "three": 3,
+    "four": 4,
+    "five": 5,
+    "several": 2,
+    "all": 2,
+}
+PRONOUNS = {"it", "them", "this", "that", "these", "those", "they", "one", "same", "its"}
+
+# ----- temporal markers ------------------------------------------------------------------------------
+_F = re.IGNORECASE
+THEN, FINALLY, FIRST, FREE, BEFORE_PREV, AFTER_ALL, AFTER_REF, BEFORE_REF, NOCONSTRAINT = (
+    "then",
+    "finally",
+    "first",
+    "free",
+    "before_prev",
+    "after_all",
+    "after_ref",
+    "before_ref",
+    "none",
+)
+_DONE = r"(?:done|finished|complete|completed|over|through|in\s+place)"
+LEADING: list[tuple[re.Pattern[str], str]] = [
+    (
+        re.compile(
+            r"^(?:and\s+)?(?:then|next|afterwards?|after\s+that|after\s+this|after\s+which|subsequently|"
+            r"later(?:\s+on)?|following\s+(?:that|this)|thereafter|"
+            rf"(?:once|when|after)\s+(?:that|this|it|you)?\s*(?:is\s+|are\s+|have\s+|has\s+)?{_DONE}|"
+            r"after\s+(?:doing|finishing|completing)\s+(?:that|this|it))\b\s*[,:]?\s*",
+            _F,
+        ),
+        THEN,
+    ),
+    (
+        re.compile(
+            r"^(?:finally|lastly|last|in\s+the\s+end|at\s+the\s+end|to\s+finish(?:\s+up)?|eventually|"
+            r"as\s+a\s+final\s+step)\b\s*[,:]?\s*",
+            _F,
+        ),
+        FINALLY,
+    ),
+    (re.compile(r"^(?:finish|end)\s+(?:up\s+)?(?:by|with)\s+", _F), FINALLY),
+    (
+        re.compile(
+            r"^(?:first(?:ly)?(?:\s+of\s+all)?|to\s+(?:begin|start)(?:\s+with)?|initially|before\s+anything\s+else)"
+            r"\b\s*[,:]?\s*",
+            _F,
+        ),
+        FIRST,
+    ),
+    (re.compile(r"^(?:begin|start)\s+(?:by|with)\s+", _F), FIRST),
+    (
+        re.compile(
+            r"^(?:in\s+any\s+order|at\s+any\s+time|anytime|simultaneously|meanwhile|in\s+the\s+meantime|"
+            r"at\s+the\s+same\s+time|in\s+parallel|independently|whenever(?:\s+you\s+like)?)\b\s*[,:]?\s*",
+            _F,
+        ),
+        FREE,
+    ),
+    (
+        re.compile(
+            r"^(?:prior\s+to\s+(?:that|this)|before\s+(?:that|this|doing\s+(?:that|this|so))|beforehand)"
+            r"\b\s*[,:]?\s*",
+            _F,
+        ),
+        BEFORE_PREV,
+    ),
+    (
+        re.compile(
+            r"^(?:after|once|when|following|upon)\s+(?:completing|finishing|doing|all|these|those|"
+            r"the\s+previous|the\s+above|both|everything|each|every)\b[^,]*,\s*",
+            _F,
+        ),
+        AFTER_ALL,
+    ),
+    (re.compile(r"^(?:while|during|as)\b[^,]*,\s*", _F), NOCONSTRAINT),
+    (re.compile(r"^(?:only\s+)?(?:after|once|when|following|upon)\s+(?P<ref>[^,]+),\s*", _F), AFTER_REF),
+    (
+        re.compile(
+            r"^(?:please|now|next\s+up|you\s+should|you\s+need\s+to|you\s+must|we\s+need\s+to|"
+            r"i\s+want\s+you\s+to|can\s+you|could\s+you|go\s+and|also|additionally|in\s+addition|separately|and)\b\s*[,:]?\s*",
+            _F,
+        ),
+        "",
+    ),
+    (re.compile(r"^to\s+(?=[a-z])", _F), ""),
+]
+_FREE_T = (
+    r"(?:at\s+any\s+time|in\s+any\s+order|in\s+any\s+sequence|anytime|any\s+time|whenever(?:\s+you\s+like)?|"
+    r"in\s+whatever\s+order|in\s+no\s+particular\s+order|in\s+parallel|simultaneously|independently)"
+)
+TRAILING: list[tuple[re.Pattern[str], str]] = [
+    (re.compile(rf"\s*,?\s*(?:also\s+)?{_FREE_T}\s*$", _F), FREE),
+    (
+        re.compile(
+            rf"\s*,?\s*(?:this\s+)?(?:can|may|could)\s+(?:be\s+)?(?:done|performed|completed|happen)\s+{_FREE_T}"
+            r"\s*$",
+            _F,
+        ),
+        FREE,
+    ),
+    (
+        re.compile(
+            r"\s*,?\s*(?:(?:this\s+)?(?:should|must|has\s+to|have\s+to|needs?\s+to|can\s+only|is\s+to)\s+be\s+"
+            r"(?:done|completed|performed|finished|placed|put|moved|carried\s+out)\s+)?(?:only\s+)?"
+            r"(?P<rel>after|before|once)\s+(?P<ref>(?:\w+ing\b|the\s|you\s|having\s|all\s|every|each|"
+            r"finishing|completing).+)$",
+            _F,
+        ),
+        "ref",
+    ),
+    (
+        re.compile(
+            r"\s*,?\s*(?:first|at\s+first|to\s+begin\s+with|to\s+start\s+with|before\s+anything\s+else)\s*$",
+            _F,
+        ),
+        FIRST,
+    ),
+    (re.compile(r"\s*,?\s*(?:afterwards?|after\s+that|next|then|later|thereafter|after)\s*$", _F), THEN),
+    (re.compile(r"\s*,?\s*(?:last|lastly|finally|at\s+the\s+end|in\s+the\s+end)\s*$", _F), FINALLY),
+]
+# sentences that only say "no particular order" (no task, no constraint)
+NO_ORDER_SENTENCE = re.compile(
+    r"\b(?:order|sequence)\b.*\b(?:not\s+specified|not\s+matter|doesn't\s+matter|does\s+not\s+matter|free(?:ly)?|"
+    r"any|arbitrary|up\s+to\s+you|not\s+important|irrelevant)\b",
+    _F,
+)
+# "A should be placed before B" with bare noun phrases: a relation between tasks named by their objects
+REL_SENTENCE = re.compile(
+    r"^(?P<a>.+?)\s+(?:should|must|has\s+to|needs?\s+to|is\s+to)\s+(?:be\s+)?(?:placed|put|moved|done|handled|"
+    r"transferred|delivered|completed|finished)\s+(?P<rel>before|after)\s+(?P<b>.+)$",
+    _F,
+)

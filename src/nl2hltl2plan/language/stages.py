@@ -1,0 +1,262 @@
+"""The four prompted stages of the paper (Section III), each one validated LLM call.
+
+1. `decompose`: instruction -> task tree without relations (base tasks with their fields; optional groups)
+2. `relations`: one non-leaf node -> temporal relations between its children
+3. `rephrase` + `translate`: one non-leaf node -> lifted sentences -> one flat sc-LTL formula over
+   the child names (the paper's logical search and translator; optional, the exact compiler is the
+   default)
+4. `complete_actions`: one leaf -> ordered robot API actions over the scene's object types
+
+Answers are pydantic models; structural checks (known ids, acyclic relations, scene types, action
+syntax) raise ValueError inside the client's re-ask loop, so the LLM sees what was wrong.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+from typing import Annotated
+
+import networkx as nx
+from pydantic import BaseModel, Field, field_validator, model_validator
+
+from nl2hltl2plan.language.llm.client import LLMClient
+from nl2hltl2plan.language.prompts import load_prompt
+from nl2hltl2plan.language.tasks import Kind
+
+MAX_TASKS = 12
+MAX_TEXT = 300  # characters of a task's text
+MAX_WORD = 40  # characters of an object / receptacle name
+NodeId = Annotated[str, Field(max_length=12)]
+
+
+# ----- 1. decomposition ------------------------------------------------------------------------------
+class TaskFields(BaseModel):
+    """A base task as the LLM states it (words or types; grounded afterwards)."""
+
+    id: str = Field(max_length=12)
+    text: str = Field(default="", max_length=MAX_TEXT)
+    kind: Kind
+    object: str = Field(max_length=MAX_WORD)
+    count: int = Field(default=1, ge=1, le=2)
+    sliced: bool = False
+    container: str | None = Field(default=None, max_length=MAX_WORD)
+    receptacle: str | None = Field(default=None, max_length=MAX_WORD)
+    light: str | None = Field(default=None, max_length=MAX_WORD)
+
+    @model_validator(mode="after")
+    def _fields_of_kind(self) -> TaskFields:
+        if self.kind == "examine_in_light" and not self.light:
+            raise ValueError(f"task {self.id}: examine_in_light needs a light (the lamp)")
+        if self.kind != "examine_in_light" and not self.receptacle:
+            raise ValueError(f"task {self.id}: kind {self.kind} needs a receptacle")
+        if self.kind == "place_in_container" and not self.container:
+            raise ValueError(f"task {self.id}: place_in_container needs a container")
+        if self.kind == "place_two":
+            self.count = 2
+        return self
+
+
+class DecompNode(BaseModel):
+    """A top-level node: a base task (kind, object ...) or a group of base tasks (subtasks)."""
+
+    id: str = Field(max_length=12)
+    text: str = Field(default="", max_length=MAX_TEXT)
+    kind: Kind | None = None
+    object: str | None = Field(default=None, max_length=MAX_WORD)
+    count: int = Field(default=1, ge=1, le=2)
+    sliced: bool = False
+    container: str | None = Field(default=None, max_length=MAX_WORD)
+    receptacle: str | None = Field(default=None, max_length=MAX_WORD)
+    light: str | None = Field(default=None, max_length=MAX_WORD)
+    subtasks: list[TaskFields] = Field(default_factory=list, max_length=MAX_TASKS)
+
+    @model_validator(mode="after")
+    def _task_or_group(self) -> DecompNode:
+        if not self.subtasks and (self.kind is None or not self.object):
+            raise ValueError(
+                f"node {self.id}: give either kind and object (a base task) or subtasks (a group)"
+            )
+        if not self.subtasks:
+            TaskFields.model_validate(self.model_dump(exclude={"subtasks"}))
+        return self
+
+    def as_task(self) -> TaskFields:
+        return TaskFields.model_validate(self.model_dump(exclude={"subtasks"}))
+
+
+class Decomposition(BaseModel):
+    tasks: list[DecompNode] = Field(min_length=1, max_length=MAX_TASKS)
+
+    @field_validator("tasks")
+    @classmethod
+    def _numbering(cls, tasks: list[DecompNode]) -> list[DecompNode]:
+        for k, t in enumerate(tasks, 1):
+            t.id = f"1.{k}"
+            for j, s in enumerate(t.subtasks, 1):
+                s.id = f"1.{k}.{j}"
+        return tasks
+
+
+def decompose(client: LLMClient, instruction: str, objects: list[str]) -> Decomposition:
+    msgs = load_prompt("decompose").messages(
+        instruction=instruction, objects=", ".join(objects) or "(unknown)"
+    )
+    return client.ask(msgs, Decomposition, "decomposition")
+
+
+# ----- 2. relations -----------------------------------------------------------------------------------
+class Relations(BaseModel):
+    relations: list[tuple[NodeId, NodeId]] = Field(max_length=MAX_TASKS * 3)
+
+
+def relations(
+    client: LLMClient, instruction: str, parent: str, parent_text: str, children: list[tuple[str, str]]
+) -> list[tuple[str, str]]:
+    ids = [c for c, _ in children]
+
+    def check(ans: Relations) -> None:
+        for a, b in ans.relations:
+            bad = [x for x in (a, b) if x not in ids]
+            if bad:
+                raise ValueError(f"unknown subtask id(s) {bad}; use only {ids}")
+            if a == b:
+                raise ValueError(f"[{a}, {b}] relates a task to itself")
+        g = nx.DiGraph(ans.relations)
+        if not nx.is_directed_acyclic_graph(g):
+            raise ValueError("the relations form a cycle: " + " before ".join(a for a, _ in nx.find_cycle(g)))
+
+    msgs = load_prompt("relations").messages(
+        instruction=instruction,
+        parent=f"{parent}: {parent_text}",
+        children="\n".join(f"{c}: {t}" for c, t in children),
+    )
+    ans = client.ask(msgs, Relations, f"relations of {parent}", validate=check)
+    return [(a, b) for a, b in ans.relations]
+
+
+# ----- 3. logical search: rephrase + translate ----------------------------------------------------------
+class Rephrased(BaseModel):
+    sentences: list[str] = Field(min_length=1, max_length=MAX_TASKS * 3)
+
+    @field_validator("sentences")
+    @classmethod
+    def _short(cls, v: list[str]) -> list[str]:
+        if any(len(x) > MAX_TEXT for x in v):
+            raise ValueError(f"keep each sentence under {MAX_TEXT} characters")
+        return v
+
+
+class Translation(BaseModel):
+    ltl: str = Field(min_length=1, max_length=2000)
+
+
+def prop_name(node_id: str) -> str:
+    """The lifted proposition of a child: "1.2" -> "task1_2"."""
+    return "task" + node_id.replace(".", "_")
+
+
+def rephrase(client: LLMClient, children: list[str], rels: list[tuple[str, str]]) -> list[str]:
+    msgs = load_prompt("rephrase").messages(
+        children=", ".join(children), relations=json.dumps([list(r) for r in rels])
+    )
+    return client.ask(msgs, Rephrased, "rephrasing").sentences
+
+
+def translate(
+    client: LLMClient, sentences: list[str], children: list[str], feedback: str | None = None
+) -> str:
+    names = [prop_name(c) for c in children]
+
+    def check(ans: Translation) -> None:
+        used = set(re.findall(r"[A-Za-z_][A-Za-z0-9_]*", ans.ltl)) - {
+            "F",
+            "G",
+            "X",
+            "U",
+            "R",
+            "W",
+            "M",
+            "true",
+            "false",
+        }
+        unknown = sorted(used - set(names))
+        if unknown:
+            raise ValueError(f"unknown propositions {unknown}; use only {names}")
+
+    msgs = load_prompt("translate").messages(
+        names=", ".join(names), sentences=" ".join(s.rstrip(".") + "." for s in sentences)
+    )
+    if feedback:
+        msgs.append({"role": "user", "content": feedback})
+    return client.ask(msgs, Translation, "translation", validate=check).ltl
+
+
+# ----- 4. action completion -----------------------------------------------------------------------------
+ACTION_VOCABULARY = {
+    "pickup": 1,
+    "put": 2,
+    "open": 1,
+    "close": 1,
+    "toggle_on": 1,
+    "toggle_off": 1,
+    "slice": 1,
+}
+VOCABULARY_TEXT = "\n".join(
+    [
+        "- pickup(O): pick up an object of type O (hand empty)",
+        "- put(O,R): put the held O into/onto receptacle R",
+        "- open(R) / close(R): open / close an openable object",
+        "- toggle_on(O) / toggle_off(O): switch a lamp, faucet, microwave ...",
+        "- slice(O): slice O while holding a Knife or ButterKnife; the pieces have type OSliced",
+    ]
+)
+_ACTION = re.compile(r"^([a-z_]+)\(([A-Za-z]+)(?:,([A-Za-z]+))?\)$")
+
+
+class Actions(BaseModel):
+    actions: list[str] = Field(min_length=1, max_length=30)
+
+    @field_validator("actions")
+    @classmethod
+    def _short(cls, v: list[str]) -> list[str]:
+        if any(len(x) > 2 * MAX_WORD + 12 for x in v):
+            raise ValueError("an action is verb(Type) or put(Type,Type)")
+        return v
+
+
+def check_actions(actions: list[str], scene_types: set[str] | None, scene: str = "the scene") -> None:
+    """ValueError naming the first malformed action or unknown type."""
+    for a in actions:
+        m = _ACTION.match(a.replace(" ", ""))
+        if not m or m.group(1) not in ACTION_VOCABULARY:
+            raise ValueError(
+                f"{a!r} is not an action; use only {sorted(ACTION_VOCABULARY)} as verb(Type) or "
+                "put(Type,Type)"
+            )
+        args = [x for x in m.groups()[1:] if x]
+        if len(args) != ACTION_VOCABULARY[m.group(1)]:
+            raise ValueError(f"{a!r}: {m.group(1)} takes {ACTION_VOCABULARY[m.group(1)]} argument(s)")
+        if scene_types is not None:
+            for t in args:
+                if t not in scene_types:
+                    raise ValueError(f"no {t} in {scene}; use only the scene's object types")
+
+
+def complete_actions(
+    client: LLMClient, leaf_text: str, details: dict, scene_types: set[str] | None, scene: str = "the scene"
+) -> list[str]:
+    objects = sorted(t for t in (scene_types or set()) if not t.endswith("Sliced")) if scene_types else []
+    msgs = load_prompt("actions").messages(
+        task=leaf_text,
+        details=json.dumps(details),
+        vocabulary=VOCABULARY_TEXT,
+        objects=", ".join(objects) or "(any)",
+    )
+    ans = client.ask(
+        msgs,
+        Actions,
+        f"actions of {details.get('id', 'leaf')}",
+        validate=lambda a: check_actions([x.replace(" ", "") for x in a.actions], scene_types, scene),
+    )
+    return [a.replace(" ", "") for a in ans.actions]

@@ -1,0 +1,120 @@
+"""From a goal node to a verified timed plan.
+
+- `replay` re-runs an event sequence through the transition relation, optionally with other stand
+  cells; it recomputes the timed schedule and re-checks every precondition.
+- `refine_stand_cells`: the search walks to the *nearest* cell of each region. Given the chosen
+  events, the best stand cells of one robot are a shortest path through its sequence of regions
+  (a layered shortest-path problem, solved exactly with the distance matrix). The refined plan is
+  kept when it is better for the objective (for `min` it never is worse).
+- `to_plan` writes per-robot timed steps (moves along shortest paths, gaps are waits), and
+  `verify` executes the plan in the simulator and judges its events with the spec's
+  `check_trace`. A plan failing either is a planner bug and is never returned.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from nl2hltl2plan.errors import PlanningError
+from nl2hltl2plan.logic.hierarchical import TraceEvent
+from nl2hltl2plan.planning.model import Problem
+from nl2hltl2plan.planning.state import Event, Expander, Node
+from nl2hltl2plan.worlds.plan import Plan, RobotPlan, Step
+from nl2hltl2plan.worlds.simulator import Execution, execute
+
+
+def replay(x: Expander, events: list[Event], stands: list[int] | None = None) -> Node | None:
+    node = x.root()
+    for i, e in enumerate(events):
+        stand = stands[i] if stands is not None else e.stand
+        if e.k < 0:
+            child = x.put_down(node, e.robot, e.objs[1], e.leaf, stand=stand)
+        else:
+            leaf = x.p.leaves[e.leaf]
+            q_next = next((q2 for k, q2 in leaf.moves[node.q[e.leaf]] if k == e.k), None)
+            child = None if q_next is None else x.apply(node, e.robot, leaf, e.k, e.objs, q_next, stand=stand)
+        if child is None:
+            return None
+        node = child
+    return node
+
+
+def refine_stand_cells(x: Expander, goal: Node, objective: str) -> Node:
+    """Per robot, the stand cells minimising its walk through its regions (kept if better)."""
+    events = goal.events()
+    nav = x.nav
+    stands = [e.stand for e in events]
+    changed = False
+    for r, start in enumerate(x.p.starts):
+        idx = [i for i, e in enumerate(events) if e.robot == r]
+        if not idx:
+            continue
+        regions = [nav.region_idx[events[i].anchor] for i in idx]
+        cost = nav.dm[nav.cell_index[start], regions[0]].astype(np.int64)
+        back = []
+        for prev, cur in zip(regions, regions[1:], strict=False):
+            total = cost[:, None] + nav.dm[np.ix_(prev, cur)]
+            arg = total.argmin(axis=0)
+            back.append(arg)
+            cost = total[arg, np.arange(len(cur))]
+        walked = sum(events[i].travel for i in idx)
+        if int(cost.min()) >= walked:
+            continue
+        k = int(cost.argmin())
+        chosen = [0] * len(idx)
+        for j in range(len(idx) - 1, -1, -1):
+            chosen[j] = int(regions[j][k])
+            if j:
+                k = int(back[j - 1][k])
+        for j, i in enumerate(idx):
+            stands[i] = chosen[j]
+        changed = True
+    if not changed:
+        return goal
+    better = replay(x, events, stands)
+    if better is None or not x.is_goal(better):
+        return goal
+    old = (goal.g,) if objective == "min" else (goal.ms, goal.g)
+    new = (better.g,) if objective == "min" else (better.ms, better.g)
+    return better if new < old else goal
+
+
+def to_plan(problem: Problem, x: Expander, events: list[Event]) -> Plan:
+    world = problem.world
+    ids = world.ids
+    cells = x.nav.cells
+    leaf_names = [lf.name for lf in problem.leaves]
+    robots = []
+    for r, start in enumerate(problem.starts):
+        steps: list[Step] = []
+        cur = start
+        clock = 0
+        for e in events:
+            if e.robot != r:
+                continue
+            target = cells[e.stand]
+            for cell in world.path(cur, target)[1:]:
+                clock += 1
+                steps.append(Step(t=clock, verb="move", cell=cell))
+            cur = target
+            if e.t <= clock:
+                raise PlanningError(f"internal error: robot {r} cannot reach its action at t={e.t} in time")
+            clock = e.t
+            task = leaf_names[e.leaf] if e.leaf >= 0 else None
+            steps.append(Step(t=e.t, verb=e.verb, objects=[ids[o] for o in e.objs], task=task))
+        robots.append(RobotPlan(robot=r, start=start, steps=steps))
+    return Plan(robots=robots)
+
+
+def verify(problem: Problem, plan: Plan) -> Execution:
+    """Execute the plan and check its attributed events against the spec; PlanningError if either
+    fails (that would be a planner bug: a plan is never returned unchecked)."""
+    execution = execute(problem.world, plan)
+    if not execution.ok:
+        raise PlanningError("internal error: the planned actions fail in the simulator: "
+                            + "; ".join(execution.violations[:3]))
+    trace = [TraceEvent(e.t, e.atom, e.task) for e in execution.events]
+    result = problem.spec.check_trace(trace)
+    if not result.ok:
+        raise PlanningError("internal error: the plan does not satisfy the specification: " + "; ".join(result.reasons))
+    return execution

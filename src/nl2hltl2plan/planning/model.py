@@ -1,0 +1,440 @@
+"""The planning problem: a world, robots, and a hierarchical spec compiled into search-ready pieces.
+
+What the search needs from the spec (CONTRACTS.md, "attributed traces"):
+- every leaf as a DFA read one event at a time (its own events only), with the moves available
+  from each state: (atom, next state). A leaf is done when its DFA accepts.
+- the non-leaf DFAs, read on completion events of their children (each child completes once).
+- when the relation compiler wrote every non-leaf (`precedence_form`), the explicit pairs
+  "a before b": the planner starts every leaf under b only after a completes (strictly later), so
+  the checker's strict order holds too. Otherwise ("general" structure) completions are serialised
+  and a leaf starts only after every earlier completion.
+
+Static infeasibility (a type the world lacks, an object no robot can reach, a receptacle that does
+not accept the object, a contradictory ordering, an action no robot may do) is found here, before
+any search, with a readable reason.
+"""
+
+from __future__ import annotations
+
+import re
+from collections import deque
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass, field
+from functools import cached_property
+
+import networkx as nx
+
+from nl2hltl2plan.errors import PlanningError, SpecError
+from nl2hltl2plan.logic import spot_backend as sb
+from nl2hltl2plan.logic.automaton import DEAD, Dfa
+from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
+from nl2hltl2plan.worlds.model import KNIFE_TYPES, Cell, World
+from nl2hltl2plan.worlds.plan import ACTION_ARITY
+
+DONE = -2  # leaf / non-leaf state once its formula is satisfied
+_ATOM = re.compile(r"^([a-z_]+)\(([A-Za-z0-9_.]+(?:,[A-Za-z0-9_.]+)*)\)$")
+MAX_PATHS = 12  # remaining action sequences kept per leaf state for the heuristic
+
+
+class Infeasible(Exception):
+    """Raised while building a problem that provably has no plan; `reason` is readable."""
+
+    def __init__(self, reason: str):
+        super().__init__(reason)
+        self.reason = reason
+
+
+@dataclass(frozen=True)
+class Atom:
+    text: str  # put(Apple,Fridge)
+    verb: str
+    types: tuple[str, ...]
+    mask: int  # the letter of this atom alone in the leaf's DFA
+
+
+def parse_atom(text: str) -> tuple[str, tuple[str, ...]] | None:
+    m = _ATOM.match(text)
+    if not m or m.group(1) not in ACTION_ARITY:
+        return None
+    types = tuple(m.group(2).split(","))
+    return (m.group(1), types) if len(types) == ACTION_ARITY[m.group(1)] else None
+
+
+@dataclass
+class Leaf:
+    index: int
+    name: str
+    dfa: Dfa
+    atoms: tuple[Atom, ...]
+    init: int  # DFA state, or DONE when the formula holds before any event
+    moves: dict[int, list[tuple[int, int]]]  # state -> [(atom index, next state or DONE)]
+    min_events: dict[int, int]  # state -> fewest events to satisfy the leaf
+    paths: dict[int, list[tuple[int, ...]]]  # state -> remaining atom sequences (at most MAX_PATHS)
+    tools: frozenset[str]  # picked-up types used as tools (a knife that slices): shared by leaves
+
+    def exclusive(self, verb: str, type_: str) -> bool:
+        """Does this action claim its object for this leaf alone (distinct objects per task)?"""
+        return verb in ("pickup", "slice") and type_ not in self.tools
+
+
+@dataclass
+class NonLeaf:
+    index: int
+    name: str
+    dfa: Dfa
+    children: tuple[str, ...]
+    pairs: tuple[tuple[str, str], ...] | None  # precedence form, else None
+
+
+@dataclass
+class Problem:
+    """Everything fixed during a search: world, robots, compiled spec."""
+
+    world: World
+    spec: HierarchicalSpec
+    starts: tuple[Cell, ...]
+    capabilities: tuple[frozenset[str] | None, ...]
+    leaves: list[Leaf]
+    nonleaves: list[NonLeaf]
+    parent: dict[str, str | None]
+    roots: tuple[str, ...]
+    precedence: bool  # every non-leaf in the relation compiler's form
+    gates: dict[int, tuple[str, ...]] = field(default_factory=dict)  # leaf -> nodes done before it starts
+
+    @property
+    def n_robots(self) -> int:
+        return len(self.starts)
+
+    @cached_property
+    def leaf_index(self) -> dict[str, int]:
+        return {lf.name: lf.index for lf in self.leaves}
+
+    @cached_property
+    def nonleaf_index(self) -> dict[str, int]:
+        return {n.name: n.index for n in self.nonleaves}
+
+    @cached_property
+    def node_names(self) -> list[str]:
+        """Leaves first, then non-leaves: the index space of completion times."""
+        return [lf.name for lf in self.leaves] + [n.name for n in self.nonleaves]
+
+    @cached_property
+    def node_slot(self) -> dict[str, int]:
+        return {name: i for i, name in enumerate(self.node_names)}
+
+    def ancestors(self, name: str) -> list[str]:
+        out = []
+        p = self.parent.get(name)
+        while p is not None:
+            out.append(p)
+            p = self.parent.get(p)
+        return out
+
+    def can_do(self, robot: int, atom: Atom) -> bool:
+        caps = self.capabilities[robot]
+        return caps is None or atom.verb in caps or atom.text in caps
+
+    # ------------------------------------------------------------ viability of non-leaf DFAs
+    def viable(self, nonleaf: int, state: int, remaining: frozenset[str]) -> bool:
+        """Can the non-leaf still be satisfied from `state` when each child in `remaining`
+        completes at most once (one completion per step, idle steps in between)?"""
+        key = (nonleaf, state, remaining)
+        hit = self._viable_cache.get(key)
+        if hit is not None:
+            return hit
+        dfa = self.nonleaves[nonleaf].dfa
+        ok = False
+        seen = {(state, remaining)}
+        queue = deque([(state, remaining)])
+        while queue:
+            q, rem = queue.popleft()
+            if q in dfa.accepting:
+                ok = True
+                break
+            if dfa.is_dead(q):
+                continue
+            for child in rem:
+                q2 = dfa.step(q, (child,))
+                nxt = (q2, rem - {child})
+                if nxt not in seen and q2 != DEAD:
+                    seen.add(nxt)
+                    queue.append(nxt)
+        self._viable_cache[key] = ok
+        return ok
+
+    @cached_property
+    def _viable_cache(self) -> dict:
+        return {}
+
+
+# ---------------------------------------------------------------- building
+def build_problem(
+    world: World,
+    spec: HierarchicalSpec,
+    starts: Sequence[Cell],
+    capabilities: Sequence[Iterable[str] | None] | None = None,
+    dfa_timeout_s: float = 30.0,
+) -> Problem:
+    """Compile the spec for search and run the static feasibility checks.
+
+    Raises PlanningError for malformed input (bad start cells, unknown capability) and
+    `Infeasible` when no plan can exist."""
+    starts_t = tuple((int(c[0]), int(c[1])) for c in starts)
+    if not starts_t:
+        raise PlanningError("at least one robot is needed")
+    for r, c in enumerate(starts_t):
+        if c not in world.cell_set:
+            raise PlanningError(f"robot {r} starts at {c}, which is not a free cell of {world.name}")
+    caps: list[frozenset[str] | None] = []
+    for r in range(len(starts_t)):
+        entry = capabilities[r] if capabilities is not None and r < len(capabilities) else None
+        if entry is None:
+            caps.append(None)
+            continue
+        entry = frozenset(entry)
+        for c in entry:
+            if c not in ACTION_ARITY and parse_atom(c) is None:
+                raise PlanningError(f"robot {r}: capability {c!r} is neither a verb ({', '.join(ACTION_ARITY)}) "
+                                    "nor an action atom like pickup(Apple)")
+        caps.append(entry)
+
+    names = spec.names
+    leaves: list[Leaf] = []
+    nonleaves: list[NonLeaf] = []
+    parent: dict[str, str | None] = {n: None for n in names}
+    for n in names:
+        for c in spec.children(n):
+            parent[c] = n
+    for n in names:
+        dfa = _dfa(spec, n, dfa_timeout_s)
+        if spec.is_leaf(n):
+            leaves.append(_compile_leaf(len(leaves), n, dfa))
+        else:
+            children = tuple(spec.children(n))
+            form = sb.precedence_form(spec.formula(n))
+            pairs = tuple(form[1]) if form is not None and set(form[0]) == set(children) else None
+            _check_stutter(n, dfa, [1 << i for i in range(len(dfa.atoms))])
+            nonleaves.append(NonLeaf(len(nonleaves), n, dfa, children, pairs))
+    problem = Problem(
+        world=world,
+        spec=spec,
+        starts=starts_t,
+        capabilities=tuple(caps),
+        leaves=leaves,
+        nonleaves=nonleaves,
+        parent=parent,
+        roots=tuple(spec.roots),
+        precedence=all(nl.pairs is not None for nl in nonleaves),
+    )
+    _check_orderings(problem)
+    _check_leaves(problem)
+    if problem.precedence:
+        problem.gates = {lf.index: _gates(problem, lf.name) for lf in leaves}
+    return problem
+
+
+def _dfa(spec: HierarchicalSpec, name: str, timeout_s: float) -> Dfa:
+    try:
+        return spec.dfa(name, timeout_s=timeout_s)
+    except SpecError:
+        raise
+    except Exception as exc:  # FormulaError (too large / not sc-LTL): a user-facing problem
+        raise PlanningError(f"cannot build the automaton of {name}: {exc}") from None
+
+
+def _check_stutter(name: str, dfa: Dfa, letters: list[int]) -> None:
+    """Idle steps (empty letters) must not move the DFA: the planner leaves a task idle between its
+    events, and the executor's time steps are not the planner's events. True for F/U formulas."""
+    seen = {dfa.init}
+    queue = deque([dfa.init])
+    while queue:
+        q = queue.popleft()
+        if q in dfa.accepting or dfa.is_dead(q):
+            continue
+        if dfa.step_mask(q, 0) != q:
+            raise PlanningError(
+                f"{name}: the formula changes state on idle steps (it uses X, 'next'); the planner needs "
+                "formulas whose truth does not depend on how many idle steps pass (F, U, &, |)"
+            )
+        for m in letters:
+            q2 = dfa.step_mask(q, m)
+            if q2 != DEAD and q2 not in seen:
+                seen.add(q2)
+                queue.append(q2)
+
+
+def _compile_leaf(index: int, name: str, dfa: Dfa) -> Leaf:
+    atoms = []
+    for i, text in enumerate(dfa.atoms):
+        parsed = parse_atom(text)
+        if parsed is None:
+            raise PlanningError(
+                f"leaf {name}: {text!r} is not a robot action like pickup(Apple) or put(Apple,Fridge) "
+                f"(verbs: {', '.join(ACTION_ARITY)})"
+            )
+        atoms.append(Atom(text, parsed[0], parsed[1], 1 << i))
+    _check_stutter(name, dfa, [a.mask for a in atoms])
+    moves: dict[int, list[tuple[int, int]]] = {}
+    init = DONE if dfa.init in dfa.accepting else dfa.init
+    queue = deque([init] if init != DONE else [])
+    seen = set(queue)
+    while queue:
+        q = queue.popleft()
+        out = []
+        for k, a in enumerate(atoms):
+            q2 = dfa.step_mask(q, a.mask)
+            if q2 == q or dfa.is_dead(q2):
+                continue  # an event that changes nothing, or one that makes the leaf unsatisfiable
+            nxt = DONE if q2 in dfa.accepting else q2
+            out.append((k, nxt))
+            if nxt != DONE and nxt not in seen:
+                seen.add(nxt)
+                queue.append(nxt)
+        moves[q] = out
+    min_events = _min_events(moves)
+    paths = {q: _paths(moves, q) for q in moves}
+    picked = {a.types[0] for a in atoms if a.verb == "pickup"}
+    slicing = any(a.verb == "slice" for a in atoms)
+    tools = frozenset(t for t in picked if t in KNIFE_TYPES) if slicing else frozenset()
+    return Leaf(index, name, dfa, tuple(atoms), init, moves, min_events, paths, tools)
+
+
+def _min_events(moves: dict[int, list[tuple[int, int]]]) -> dict[int, int]:
+    best: dict[int, int] = {}
+    changed = True
+    while changed:  # Bellman-Ford on a small graph
+        changed = False
+        for q, out in moves.items():
+            for _, nxt in out:
+                cand = 1 if nxt == DONE else (best[nxt] + 1 if nxt in best else None)
+                if cand is not None and cand < best.get(q, 1 << 30):
+                    best[q] = cand
+                    changed = True
+    return best
+
+
+def _paths(moves: dict[int, list[tuple[int, int]]], q: int) -> list[tuple[int, ...]]:
+    """Acyclic atom sequences from q to acceptance (at most MAX_PATHS, shortest first)."""
+    out: list[tuple[int, ...]] = []
+    stack: list[tuple[int, tuple[int, ...], frozenset[int]]] = [(q, (), frozenset([q]))]
+    while stack and len(out) < 4 * MAX_PATHS:
+        s, path, seen = stack.pop()
+        for k, nxt in moves.get(s, []):
+            if nxt == DONE:
+                out.append(path + (k,))
+            elif nxt not in seen and len(path) < 40:
+                stack.append((nxt, path + (k,), seen | {nxt}))
+    out.sort(key=len)
+    return out[:MAX_PATHS]
+
+
+def _gates(problem: Problem, leaf: str) -> tuple[str, ...]:
+    """Spec nodes that must be complete before `leaf` starts: for the leaf and each ancestor A,
+    every a with (a, A) among the pairs of A's parent."""
+    out: list[str] = []
+    node = leaf
+    while problem.parent.get(node) is not None:
+        par = problem.parent[node]
+        nl = problem.nonleaves[problem.nonleaf_index[par]]  # type: ignore[index]
+        out += [a for a, b in nl.pairs or () if b == node]
+        node = par  # type: ignore[assignment]
+    return tuple(dict.fromkeys(out))
+
+
+def _check_orderings(problem: Problem) -> None:
+    for nl in problem.nonleaves:
+        if problem.viable(nl.index, nl.dfa.init, frozenset(nl.children)):
+            continue
+        if nl.pairs:
+            g = nx.DiGraph(list(nl.pairs))
+            if not nx.is_directed_acyclic_graph(g):
+                cycle = nx.find_cycle(g)
+                order = " before ".join([a for a, _ in cycle] + [cycle[0][0]])
+                raise Infeasible(f"{nl.name}: the ordering of its tasks has a cycle ({order})")
+        raise Infeasible(f"{nl.name}: no order of completing its tasks satisfies {problem.spec.text(nl.name)}")
+
+
+def _check_leaves(problem: Problem) -> None:
+    """Every leaf needs at least one action sequence the world and the robots can carry out."""
+    world = problem.world
+    comps = [c for c in world.components if any(s in c for s in problem.starts)]
+    robot_cells = set().union(*comps) if comps else set()
+    reasons: dict[str, str] = {}
+
+    def reachable(type_: str) -> bool:
+        return any(
+            set(o.interaction_cells) & robot_cells or (o.slice_of and _reach(world, o.slice_of, robot_cells))
+            for o in world.instances(type_)
+        )
+
+    for lf in problem.leaves:
+        if lf.init == DONE:
+            continue
+        problems = []
+        for path in lf.paths[lf.init] or [()]:
+            why = None
+            for k in path:
+                why = _atom_problem(problem, lf.atoms[k], reachable)
+                if why:
+                    break
+            if not why:
+                break
+            problems.append(why)
+        else:
+            reasons[lf.name] = "; ".join(dict.fromkeys(problems)) or "it has no action sequence"
+    if reasons:
+        required = _required_leaves(problem)
+        blocking = {n: r for n, r in reasons.items() if n in required}
+        if blocking:
+            raise Infeasible("; ".join(f"{n}: {r}" for n, r in blocking.items()))
+
+
+def _reach(world: World, oid: str, cells: set[Cell]) -> bool:
+    return bool(set(world.objects[oid].interaction_cells) & cells)
+
+
+def _atom_problem(problem: Problem, atom: Atom, reachable) -> str | None:
+    world = problem.world
+    verb, types = atom.verb, atom.types
+    for t in types:
+        if not world.instances(t):
+            return f"{atom.text}: there is no {t} in {world.name}"
+        if not reachable(t):
+            return f"{atom.text}: no robot can reach any {t} (no free cell within 1.5 m in the robots' area)"
+    first = world.instances(types[0])[0].affordances
+    if verb == "pickup" and not first.pickupable:
+        return f"{atom.text}: a {types[0]} cannot be picked up"
+    if verb == "put":
+        rec = world.instances(types[1])[0].affordances
+        if not rec.receptacle:
+            return f"{atom.text}: a {types[1]} is not a receptacle"
+        if types[0] not in rec.accepts:
+            return f"{atom.text}: a {types[1]} cannot accept a {types[0]}"
+    if verb in ("open", "close") and not first.openable:
+        return f"{atom.text}: a {types[0]} cannot be opened or closed"
+    if verb in ("toggle_on", "toggle_off") and not first.toggleable:
+        return f"{atom.text}: a {types[0]} cannot be switched on or off"
+    if verb == "slice" and not first.sliceable:
+        return f"{atom.text}: a {types[0]} cannot be sliced"
+    if not any(problem.can_do(r, atom) for r in range(problem.n_robots)):
+        return f"{atom.text}: no robot has the capability to do it"
+    return None
+
+
+def _required_leaves(problem: Problem) -> set[str]:
+    """Leaves every plan must complete: all of them under precedence-form specs; in general, the
+    leaves without which some ancestor can no longer be satisfied."""
+    if problem.precedence:
+        return {lf.name for lf in problem.leaves}
+    required = set()
+    for lf in problem.leaves:
+        node = lf.name
+        needed = True
+        while needed and problem.parent.get(node) is not None:
+            par = problem.parent[node]
+            nl = problem.nonleaves[problem.nonleaf_index[par]]  # type: ignore[index]
+            needed = not problem.viable(nl.index, nl.dfa.init, frozenset(nl.children) - {node})
+            node = par  # type: ignore[assignment]
+        if needed:
+            required.add(lf.name)
+    return required

@@ -1,0 +1,506 @@
+"""Search states and events: one event = one robot walks to a region and does one leaf action.
+
+A node holds the executor's own state (`SimState`: objects, robot cells, hands), so every event the
+search generates is checked by the same precondition code that later executes the plan. It also
+holds each leaf's DFA state and type bindings (within a leaf a type binds to one instance), the
+non-leaf DFA states, and the times that make the schedule:
+
+- a robot's clock is the step of its last action; an event happens at
+  max(clock + walking steps, ready) + 1, where `ready` is the latest step at which any object the
+  event touches (reads or writes: the object, the containers around it, what is inside it, the
+  faucet filling a basin) was last touched, the leaf's previous event, and, for a leaf's first
+  event, the completion of every task that must precede it. Events that touch a common object are
+  therefore strictly ordered in time as in the search order, and the executor, which applies the
+  actions of one step in robot order, reproduces the search's state exactly.
+- the waits this creates are the timed schedule ("wait where a robot depends on another's task").
+
+Decomposition (Luo & Liu's decomposition states): a leaf can pass to another robot whenever the
+robot working on it has an empty hand, because every robot may do a leaf's next action; a robot
+holding a leaf's object is the only one that can put it down.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from nl2hltl2plan.planning.model import DONE, Atom, Leaf, Problem
+from nl2hltl2plan.planning.navigation import INF, Navigator
+from nl2hltl2plan.worlds.simulator import PRESENT, SimState
+
+
+@dataclass(slots=True, frozen=True)
+class Event:
+    robot: int
+    leaf: int
+    atom: str  # type-level atom, e.g. put(Apple,Fridge)
+    verb: str
+    objs: tuple[int, ...]  # object indices
+    stand: int  # cell index the robot acts from
+    travel: int  # cells walked to get there
+    t: int  # step of the action
+    k: int  # atom index in the leaf (-1: putting down an object nobody needs)
+    anchor: int  # object whose interaction region the robot stands in
+
+
+class Node:
+    """A search state; children share nothing mutable with their parent."""
+
+    __slots__ = (
+        "sim", "cell", "clock", "q", "bind", "claimed", "nq", "done_t", "leaf_t", "obj_t",
+        "last_done", "g", "ms", "parent", "event", "h", "ms_lb", "f", "closed", "_memo",
+    )
+
+    def __init__(self) -> None:
+        self.closed = False
+        self._memo: dict | None = None
+
+    def events(self) -> list[Event]:
+        out = []
+        node: Node | None = self
+        while node is not None and node.event is not None:
+            out.append(node.event)
+            node = node.parent
+        return out[::-1]
+
+
+def bound(node: Node, leaf: int, type_: str) -> int:
+    for t, o in node.bind[leaf]:
+        if t == type_:
+            return o
+    return -1
+
+
+class Expander:
+    """Generates successor events of a node (the planner's transition relation)."""
+
+    def __init__(self, problem: Problem, nav: Navigator):
+        self.p = problem
+        self.nav = nav
+        self.world = problem.world
+        self.sim0 = SimState(problem.world)
+        for r, c in enumerate(problem.starts):
+            self.sim0.place_robot(r, c)
+        self.comp = self.sim0.c
+        self.types = self.comp.types
+        self.n_objects = len(self.types)
+        self.by_type: dict[str, list[int]] = {}
+        for i, t in enumerate(self.types):
+            self.by_type.setdefault(t, []).append(i)
+        self.slice_of = [self.comp.index.get(o.slice_of, -1) if o.slice_of else -1
+                         for o in self.world.objects.values()]
+        # a Faucet fills one SinkBasin: a leaf's Faucet and SinkBasin must match
+        self.serves = self.comp.serves
+        # put-down surfaces for an object nobody needs in hand any more (after examine_in_light)
+        self.surfaces: dict[str, list[int]] = {}
+        self.slot = problem.node_slot
+        self.leaf_slot = [self.slot[lf.name] for lf in problem.leaves]
+        self.cap_class = [hash(c) if c is not None else 0 for c in problem.capabilities]
+        self.gate_slots = {i: tuple(self.slot[g] for g in gates) for i, gates in problem.gates.items()}
+
+    # ------------------------------------------------------------ root
+    def root(self) -> Node:
+        p = self.p
+        n = Node()
+        n.sim = self.sim0.copy()
+        n.cell = tuple(self.nav.cell_index[c] for c in p.starts)
+        n.clock = (0,) * p.n_robots
+        n.q = tuple(lf.init for lf in p.leaves)
+        n.bind = tuple(() for _ in p.leaves)
+        n.claimed = frozenset()
+        n.nq = tuple(nl.dfa.init for nl in p.nonleaves)
+        done = [-1] * len(p.node_names)
+        for lf in p.leaves:
+            if lf.init == DONE:
+                done[self.slot[lf.name]] = 0
+        n.done_t = tuple(done)
+        n.leaf_t = (0,) * len(p.leaves)
+        n.obj_t = {}
+        n.last_done = 0
+        n.g = 0
+        n.ms = 0
+        n.parent = None
+        n.event = None
+        # leaves satisfied from the start complete their ancestors at step 0
+        for lf in p.leaves:
+            if lf.init == DONE:
+                res = self._propagate(n, lf.name, 0, list(n.nq), list(n.done_t))
+                if res is None:
+                    raise ValueError(f"{lf.name} holds from the start but breaks an ordering")
+                n.nq, n.done_t = tuple(res[0]), tuple(res[1])
+        return n
+
+    def is_goal(self, node: Node) -> bool:
+        slot = self.slot
+        return all(node.done_t[slot[r]] >= 0 for r in self.p.roots)
+
+    # ------------------------------------------------------------ enabling (orderings)
+    def enabled(self, node: Node, leaf: Leaf) -> bool:
+        """May the leaf start now? Only when completing it (and its ancestors) now would break no
+        ordering: under precedence form, every task that must precede it is complete."""
+        p = self.p
+        if p.precedence:
+            done = node.done_t
+            return all(done[s] >= 0 for s in self.gate_slots[leaf.index])
+        name = leaf.name
+        while p.parent.get(name) is not None:
+            par = p.parent[name]
+            nl = p.nonleaves[p.nonleaf_index[par]]  # type: ignore[index]
+            q = node.nq[nl.index]
+            if q == DONE:
+                return False  # the parent is already satisfied: this task is not needed
+            q2 = nl.dfa.step(q, (name,))
+            if q2 in nl.dfa.accepting:
+                name = par  # type: ignore[assignment]
+                continue
+            remaining = frozenset(c for c in nl.children if c != name and node.done_t[self.slot[c]] < 0)
+            return p.viable(nl.index, q2, remaining)
+        return True
+
+    def _propagate(self, node: Node, name: str, t: int, nq: list[int], done: list[int]):
+        """Completion of `name` at step t climbs the hierarchy; None if it breaks an ordering."""
+        p = self.p
+        while p.parent.get(name) is not None:
+            par = p.parent[name]
+            nl = p.nonleaves[p.nonleaf_index[par]]  # type: ignore[index]
+            q = nq[nl.index]
+            if q == DONE:
+                break
+            q2 = nl.dfa.step(q, (name,))
+            if q2 in nl.dfa.accepting:
+                nq[nl.index] = DONE
+                done[self.slot[par]] = t  # type: ignore[index]
+                name = par  # type: ignore[assignment]
+                continue
+            remaining = frozenset(c for c in nl.children if done[self.slot[c]] < 0)
+            if not p.viable(nl.index, q2, remaining):
+                return None
+            nq[nl.index] = q2
+            break
+        return nq, done
+
+    # ------------------------------------------------------------ candidates
+    def candidates(self, node: Node, leaf: Leaf, atom: Atom, pos: int) -> list[int]:
+        """Instances the atom's pos-th type may bind to (the bound one if any)."""
+        type_ = atom.types[pos]
+        b = bound(node, leaf.index, type_)
+        if b >= 0:
+            return [b]
+        out = self.by_type.get(type_, [])
+        exclusive = pos == 0 and leaf.exclusive(atom.verb, type_)
+        own = {o for _, o in node.bind[leaf.index]}
+        if exclusive:
+            out = [o for o in out if o not in node.claimed or o in own]
+        if type_ == "Faucet":
+            basin = bound(node, leaf.index, "SinkBasin")
+            if basin >= 0:
+                out = [o for o in out if self.serves[o] == basin] or out
+        elif type_ == "SinkBasin":
+            faucet = bound(node, leaf.index, "Faucet")
+            if faucet >= 0 and self.serves[faucet] >= 0:
+                out = [self.serves[faucet]]
+        return out
+
+    def bindings(self, node: Node, leaf: Leaf, atom: Atom, robot: int, limit: int | None) -> list[tuple[int, ...]]:
+        """Object tuples for the atom; with `limit`, only the nearest few per unbound type."""
+        sim = node.sim
+        lists = []
+        for pos in range(len(atom.types)):
+            cands = self.candidates(node, leaf, atom, pos)
+            if pos == 0 and atom.verb in ("pickup", "slice"):
+                cands = [o for o in cands if self._present_or_coming(sim, o)]
+            if limit is not None and len(cands) > limit:
+                cands = self._nearest_first(node, robot, cands, leaf, atom)[:limit]
+            lists.append(cands)
+        if len(lists) == 1:
+            return [(o,) for o in lists[0]]
+        return [(a, b) for a in lists[0] for b in lists[1] if a != b]
+
+    def _present_or_coming(self, sim: SimState, o: int) -> bool:
+        return bool(sim.flags[o] & PRESENT) or (self.slice_of[o] >= 0 and bool(sim.flags[self.slice_of[o]] & PRESENT))
+
+    def _nearest_first(self, node: Node, robot: int, cands: list[int], leaf: Leaf, atom: Atom) -> list[int]:
+        cell = node.cell[robot]
+        nav = self.nav
+        opener = atom.verb == "open" and self._opens_for(node, leaf, atom)
+
+        def key(o: int) -> tuple[int, int, int]:
+            a = nav.anchor(node.sim, o)
+            d = nav.dist(cell, a) if a >= 0 else INF
+            return (0 if not opener or o in opener else 1, d, o)
+
+        return sorted(cands, key=key)
+
+    def _opens_for(self, node: Node, leaf: Leaf, atom: Atom) -> set[int]:
+        """Openables of the atom's type that hold a candidate of a type the leaf picks up later."""
+        sim = node.sim
+        target = atom.types[0]
+        out: set[int] = set()
+        for a in leaf.atoms:
+            if a.verb != "pickup" or bound(node, leaf.index, a.types[0]) >= 0:
+                continue
+            for o in self.by_type.get(a.types[0], []):
+                x = sim.parent[o]
+                while x >= 0:
+                    if self.types[x] == target:
+                        out.add(x)
+                    x = sim.parent[x]
+        return out
+
+    # ------------------------------------------------------------ touching (schedule dependencies)
+    def touched(self, sim: SimState, verb: str, objs: tuple[int, ...], robot: int) -> list[int]:
+        def chain(x: int) -> list[int]:
+            out = []
+            while x >= 0:
+                out.append(x)
+                x = sim.parent[x]
+            return out
+
+        o = objs[0]
+        if verb == "pickup":
+            return chain(o) + sim.subtree(o)
+        if verb == "put":
+            rec = chain(objs[1])
+            faucets = [f for y in rec for f in self.comp.faucets_of.get(y, ())]
+            return sim.subtree(o) + rec + faucets
+        if verb in ("open", "close"):
+            return chain(o)
+        if verb in ("toggle_on", "toggle_off"):
+            out = chain(o) + sim.subtree(o)
+            if self.serves[o] >= 0:
+                out += sim.subtree(self.serves[o])
+            return out
+        if verb == "slice":
+            knife = sim.hand.get(robot, -1)
+            return chain(o) + list(self.comp.slices[o]) + ([knife] if knife >= 0 else [])
+        return [o]
+
+    # ------------------------------------------------------------ one event
+    def apply(self, node: Node, robot: int, leaf: Leaf, atom_k: int, objs: tuple[int, ...],
+              q_next: int, stand: int | None = None) -> Node | None:
+        """The child after `robot` does leaf's atom on `objs` (from the nearest cell of the region, or
+        from `stand`), or None if it cannot."""
+        atom = leaf.atoms[atom_k]
+        verb = atom.verb
+        sim = node.sim
+        hand = sim.hand.get(robot, -1)
+        if verb == "pickup" and hand >= 0:
+            return None
+        if verb == "put" and hand != objs[0]:
+            return None
+        if verb == "slice" and hand < 0:
+            return None
+        anchor = self.nav.anchor(sim, objs[-1])
+        if anchor < 0:
+            return None
+        stand, d = self._stand(node.cell[robot], anchor, stand)
+        if d >= INF:
+            return None
+        touched = self.touched(sim, verb, objs, robot)
+        child_sim = sim.copy()
+        child_sim.pos[robot] = self.nav.cells[stand]
+        if child_sim.act(robot, verb, list(objs)) is not None:
+            return None
+        li = leaf.index
+        ready = node.leaf_t[li]
+        obj_t = node.obj_t
+        for x in touched:
+            tx = obj_t.get(x, 0)
+            if tx > ready:
+                ready = tx
+        first = node.leaf_t[li] == 0
+        if first:
+            if self.p.precedence:
+                for s in self.gate_slots[li]:
+                    if node.done_t[s] > ready:
+                        ready = node.done_t[s]
+            elif node.last_done > ready:
+                ready = node.last_done
+        t = max(node.clock[robot] + d, ready) + 1
+        nq, done = node.nq, node.done_t
+        last_done = node.last_done
+        if q_next == DONE:
+            if not self.p.precedence and t <= last_done:
+                t = last_done + 1  # general formulas: one completion per step, in search order
+            res = self._propagate(node, leaf.name, t, list(nq), list(done))
+            if res is None:
+                return None
+            nq_l, done_l = res
+            done_l[self.leaf_slot[li]] = t
+            nq, done = tuple(nq_l), tuple(done_l)
+            last_done = max(last_done, t)
+        child = Node()
+        child.sim = child_sim
+        cell = list(node.cell)
+        cell[robot] = stand
+        child.cell = tuple(cell)
+        clock = list(node.clock)
+        clock[robot] = t
+        child.clock = tuple(clock)
+        q = list(node.q)
+        q[li] = q_next
+        child.q = tuple(q)
+        bind = node.bind[li]
+        claimed = node.claimed
+        for pos, type_ in enumerate(atom.types):
+            if bound(node, li, type_) < 0:
+                bind = tuple(sorted(bind + ((type_, objs[pos]),)))
+                if pos == 0 and leaf.exclusive(verb, type_):
+                    claimed = claimed | {objs[pos]}
+        if bind is not node.bind[li]:
+            binds = list(node.bind)
+            binds[li] = bind
+            child.bind = tuple(binds)
+        else:
+            child.bind = node.bind
+        child.claimed = claimed
+        child.nq = nq
+        child.done_t = done
+        leaf_t = list(node.leaf_t)
+        leaf_t[li] = t
+        child.leaf_t = tuple(leaf_t)
+        new_obj_t = dict(obj_t)
+        for x in touched:
+            new_obj_t[x] = t
+        child.obj_t = new_obj_t
+        child.last_done = last_done
+        child.g = node.g + d + 1
+        child.ms = max(node.ms, t)
+        child.parent = node
+        child.event = Event(robot, li, atom.text, verb, objs, stand, d, t, atom_k, anchor)
+        return child
+
+    def _stand(self, cell: int, anchor: int, stand: int | None) -> tuple[int, int]:
+        if stand is None:
+            return self.nav.nearest(cell, anchor)
+        return stand, int(self.nav.dm[cell, stand])
+
+    def put_down(self, node: Node, robot: int, surface: int, leaf: int, stand: int | None = None) -> Node | None:
+        """Put a held object nobody needs any more on a surface (attributed to its finished leaf)."""
+        sim = node.sim
+        obj = sim.hand.get(robot, -1)
+        anchor = self.nav.anchor(sim, surface)
+        if obj < 0 or anchor < 0:
+            return None
+        stand, d = self._stand(node.cell[robot], anchor, stand)
+        if d >= INF:
+            return None
+        objs = (obj, surface)
+        touched = self.touched(sim, "put", objs, robot)
+        child_sim = sim.copy()
+        child_sim.pos[robot] = self.nav.cells[stand]
+        if child_sim.act(robot, "put", list(objs)) is not None:
+            return None
+        ready = max((node.obj_t.get(x, 0) for x in touched), default=0)
+        t = max(node.clock[robot] + d, ready) + 1
+        child = Node()
+        for name in ("q", "bind", "claimed", "nq", "done_t", "leaf_t", "last_done"):
+            setattr(child, name, getattr(node, name))
+        child.sim = child_sim
+        cell = list(node.cell)
+        cell[robot] = stand
+        child.cell = tuple(cell)
+        clock = list(node.clock)
+        clock[robot] = t
+        child.clock = tuple(clock)
+        obj_t = dict(node.obj_t)
+        for x in touched:
+            obj_t[x] = t
+        child.obj_t = obj_t
+        child.g = node.g + d + 1
+        child.ms = max(node.ms, t)
+        child.parent = node
+        atom = f"put({self.types[obj]},{self.types[surface]})"
+        child.event = Event(robot, leaf, atom, "put", objs, stand, d, t, -1, anchor)
+        return child
+
+    def surfaces_for(self, obj: int) -> list[int]:
+        type_ = self.types[obj]
+        hit = self.surfaces.get(type_)
+        if hit is None:
+            hit = [
+                i for i, o in enumerate(self.world.objects.values())
+                if type_ in o.affordances.accepts and not o.affordances.openable and not o.pickupable
+                and o.interaction_cells and o.present
+            ]
+            self.surfaces[type_] = hit
+        return hit
+
+    # ------------------------------------------------------------ all successors
+    def successors(self, node: Node, limit: int | None = None, macro: bool = False) -> list[Node]:
+        """Every event any robot can do next (`limit`: nearest instances only; `macro`: a robot
+        that picked something up carries on with that leaf until its hand is empty)."""
+        p = self.p
+        out: list[Node] = []
+        seen_robot: set[tuple] = set()
+        sim = node.sim
+        leaf_enabled = [
+            node.q[lf.index] != DONE and (node.leaf_t[lf.index] > 0 or self.enabled(node, lf)) for lf in p.leaves
+        ]
+        holder_leaf = self._held_leaves(node)
+        for r in range(p.n_robots):
+            hand = sim.hand.get(r, -1)
+            sym = (node.cell[r], hand, self.cap_class[r], node.clock[r])
+            if hand < 0 and sym in seen_robot:
+                continue  # robots in identical situations are interchangeable
+            seen_robot.add(sym)
+            if hand >= 0 and holder_leaf.get(hand, -1) < 0:
+                out.extend(self._put_downs(node, r, hand, limit))
+            for lf in p.leaves:
+                if not leaf_enabled[lf.index]:
+                    continue
+                for k, q_next in lf.moves[node.q[lf.index]]:
+                    atom = lf.atoms[k]
+                    if not p.can_do(r, atom):
+                        continue
+                    for objs in self.bindings(node, lf, atom, r, limit):
+                        child = self.apply(node, r, lf, k, objs, q_next)
+                        if child is None:
+                            continue
+                        if macro and atom.verb == "pickup":
+                            child = self._carry_on(child, r, lf, limit)
+                            if child is None:
+                                continue
+                        out.append(child)
+        return out
+
+    def _held_leaves(self, node: Node) -> dict[int, int]:
+        """Held object -> the unfinished leaf that bound it (absent: nobody needs it in hand)."""
+        out = {}
+        for lf in self.p.leaves:
+            if node.q[lf.index] == DONE:
+                continue
+            for _, o in node.bind[lf.index]:
+                out[o] = lf.index
+        return out
+
+    def _put_downs(self, node: Node, robot: int, obj: int, limit: int | None) -> list[Node]:
+        leaf = next((lf.index for lf in self.p.leaves for _, o in node.bind[lf.index] if o == obj), -1)
+        surfaces = self.surfaces_for(obj)
+        cell = node.cell[robot]
+        surfaces = sorted(surfaces, key=lambda s: (self.nav.dist(cell, s), s))
+        if limit is not None:
+            surfaces = surfaces[:limit]
+        out = []
+        for s in surfaces:
+            child = self.put_down(node, robot, s, leaf)
+            if child is not None:
+                out.append(child)
+        return out
+
+    def _carry_on(self, node: Node, robot: int, leaf: Leaf, limit: int | None) -> Node | None:
+        """Macro step: while the robot holds something for this leaf, do the leaf's next action
+        (nearest choice) until the hand is empty, the leaf is done or nothing applies."""
+        while node.sim.hand.get(robot, -1) >= 0 and node.q[leaf.index] != DONE:
+            best = None
+            for k, q_next in leaf.moves[node.q[leaf.index]]:
+                atom = leaf.atoms[k]
+                if not self.p.can_do(robot, atom):
+                    continue
+                for objs in self.bindings(node, leaf, atom, robot, 1 if limit is not None else None):
+                    child = self.apply(node, robot, leaf, k, objs, q_next)
+                    if child is not None and (best is None or child.g < best.g):
+                        best = child
+            if best is None:
+                break
+            node = best
+        return node

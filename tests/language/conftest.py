@@ -1,0 +1,112 @@
+"""Fixtures of the language tests: a local stub of an OpenAI-compatible server, data skips."""
+
+from __future__ import annotations
+
+import json
+import threading
+import time
+from collections.abc import Callable, Iterator
+from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from nl2hltl2plan.config import data_dir
+
+DATA = Path(__file__).parent / "data"
+
+# A reply: str (assistant content), or (status, body dict), or ("sleep", seconds, reply)
+Reply = Any
+
+
+def completion(content: str, model: str = "stub") -> dict[str, Any]:
+    return {
+        "id": "chatcmpl-stub",
+        "object": "chat.completion",
+        "created": 0,
+        "model": model,
+        "choices": [
+            {"index": 0, "finish_reason": "stop", "message": {"role": "assistant", "content": content}}
+        ],
+        "usage": {"prompt_tokens": 1, "completion_tokens": 1, "total_tokens": 2},
+    }
+
+
+class StubLLM:
+    """A tiny OpenAI-compatible chat server on 127.0.0.1 that replays scripted answers.
+
+    `answer` is called with the request body and returns a reply; by default replies are taken from
+    `queue` in order, or from `rules` (substring of the last user message -> reply).
+    """
+
+    def __init__(self) -> None:
+        self.requests: list[dict[str, Any]] = []
+        self.queue: list[Reply] = []
+        self.rules: list[tuple[str, Reply]] = []
+        self.answer: Callable[[dict[str, Any]], Reply] | None = None
+        stub = self
+
+        class Handler(BaseHTTPRequestHandler):
+            def log_message(self, *a: Any) -> None:  # quiet
+                pass
+
+            def do_POST(self) -> None:  # noqa: N802 - http.server API
+                body = json.loads(self.rfile.read(int(self.headers.get("Content-Length", 0))) or b"{}")
+                stub.requests.append(body)
+                reply = stub._reply(body)
+                while isinstance(reply, tuple) and reply and reply[0] == "sleep":
+                    time.sleep(reply[1])
+                    reply = reply[2]
+                if isinstance(reply, tuple):
+                    status, payload = reply
+                else:
+                    status, payload = 200, completion(str(reply), body.get("model", "stub"))
+                data = json.dumps(payload).encode()
+                try:
+                    self.send_response(status)
+                    self.send_header("Content-Type", "application/json")
+                    self.send_header("Content-Length", str(len(data)))
+                    self.end_headers()
+                    self.wfile.write(data)
+                except (BrokenPipeError, ConnectionResetError):
+                    pass
+
+        self.server = ThreadingHTTPServer(("127.0.0.1", 0), Handler)
+        self.server.daemon_threads = True
+        self.thread = threading.Thread(target=self.server.serve_forever, daemon=True)
+        self.thread.start()
+
+    @property
+    def base_url(self) -> str:
+        return f"http://127.0.0.1:{self.server.server_address[1]}/v1"
+
+    def _reply(self, body: dict[str, Any]) -> Reply:
+        if self.answer is not None:
+            return self.answer(body)
+        if self.queue:
+            return self.queue.pop(0)
+        last = next((m["content"] for m in reversed(body.get("messages", [])) if m["role"] == "user"), "")
+        for key, reply in self.rules:
+            if key in last:
+                return reply
+        return (500, {"error": {"message": "stub has no answer for this request", "type": "server_error"}})
+
+    def close(self) -> None:
+        self.server.shutdown()
+        self.server.server_close()
+
+
+@pytest.fixture
+def stub() -> Iterator[StubLLM]:
+    s = StubLLM()
+    yield s
+    s.close()
+
+
+@pytest.fixture
+def shared_data() -> Path:
+    d = data_dir(required=False)
+    if d is None:
+        pytest.skip("../shared/data is absent")
+    return d

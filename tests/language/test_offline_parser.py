@@ -1,0 +1,300 @@
+"""The offline grammar parser on the paper's own instructions and on the temporal rules of the
+annotation guide (relations compared as transitive closures)."""
+
+from __future__ import annotations
+
+import pytest
+
+from nl2hltl2plan.language.offline import parse_instruction
+from nl2hltl2plan.language.tasks import transitive_closure
+
+KITCHEN = {
+    "Apple",
+    "Bread",
+    "Cabinet",
+    "CounterTop",
+    "Cup",
+    "DiningTable",
+    "Egg",
+    "Faucet",
+    "Fork",
+    "Fridge",
+    "GarbageCan",
+    "Knife",
+    "Microwave",
+    "Mug",
+    "Pan",
+    "Plate",
+    "Pot",
+    "Potato",
+    "SinkBasin",
+    "Spoon",
+    "StoveBurner",
+    "Tomato",
+    "Bowl",
+    "Drawer",
+    "Lettuce",
+    "CoffeeMachine",
+    "Kettle",
+}
+BEDROOM = {
+    "ArmChair",
+    "BaseballBat",
+    "Bed",
+    "CellPhone",
+    "Desk",
+    "DeskLamp",
+    "Drawer",
+    "Dresser",
+    "KeyChain",
+    "Pencil",
+    "Pen",
+    "SideTable",
+    "Shelf",
+    "Bowl",
+    "Mug",
+    "CD",
+    "Laptop",
+    "Book",
+    "AlarmClock",
+}
+
+
+def objs(r) -> list[str]:
+    return [t.object[0] for t in r.tasks]
+
+
+def closure(r) -> set[tuple[str, str]]:
+    """Order as pairs of object names (readable, independent of ids)."""
+    name = {t.id: t.object[0] for t in r.tasks}
+    return {(name[a], name[b]) for a, b in transitive_closure(r.before, list(name))}
+
+
+# ----- the paper's instructions ---------------------------------------------------------------------------
+def test_fig1_caption():
+    r = parse_instruction(
+        "First, put a set of keychains on the armchair. Retrieve a pencil and put it on the side "
+        "table. Move the phone and the bat to the bed in any order",
+        BEDROOM,
+        "FloorPlan301",
+    )
+    assert [t.summary() for t in r.tasks] == [
+        "place KeyChain -> ArmChair",
+        "place Pencil -> SideTable",
+        "place CellPhone -> Bed",
+        "place BaseballBat -> Bed",
+    ]
+    # keychains first, before everything; pencil, phone and bat otherwise free
+    assert closure(r) == {("KeyChain", "Pencil"), ("KeyChain", "CellPhone"), ("KeyChain", "BaseballBat")}
+    assert r.groups == [["C", "D"]] and not r.unparsed
+
+
+def test_example1_dishwasher_hierarchy():
+    from nl2hltl2plan.language.pipeline import build_htt
+
+    text = (
+        "Place items into the dishwasher. Put plates, mugs and utensils into the lower rack in any order. "
+        "After putting items to the lower rack, then put things into upper rack, first put saucers, and then "
+        "put cups."
+    )
+    r = parse_instruction(text)
+    assert objs(r) == ["Plate", "Mug", "Fork", "Saucer", "Cup"]
+    assert [t.receptacle for t in r.tasks] == [["DishwasherLowerRack"]] * 3 + [["DishwasherUpperRack"]] * 2
+    lower, upper = ["Plate", "Mug", "Fork"], ["Saucer", "Cup"]
+    assert closure(r) == {(a, b) for a in lower for b in upper} | {("Saucer", "Cup")}
+    htt, task_node, _ = build_htt(text, r.tasks, r.before, r.groups)
+    # the paper's HTT: 1.1 lower rack (any order), 1.2 upper rack (saucers then cups), 1.1 before 1.2
+    assert htt.node("1").children == ["1.1", "1.2"]
+    assert htt.relations == [("1.2.1", "1.2.2"), ("1.1", "1.2")] or sorted(htt.relations) == [
+        ("1.1", "1.2"),
+        ("1.2.1", "1.2.2"),
+    ]
+    assert [task_node[t] for t in "ABCDE"] == ["1.1.1", "1.1.2", "1.1.3", "1.2.1", "1.2.2"]
+
+
+TABLE2 = [
+    (
+        "Place the green apple in the blue plate and the orange in the yellow plate.",
+        ["GreenApple", "Orange"],
+        set(),
+    ),
+    (
+        "Place the green apple in the pink plate, the orange in the yellow plate and the red apple in the "
+        "blue plate. "
+        "The order of placement is not specified and can be chosen freely.",
+        ["GreenApple", "Orange", "RedApple"],
+        set(),
+    ),
+    (
+        "Place the carrot in the blue plate, the orange in the yellow plate, the green apple in the green "
+        "plate, and the "
+        "red apple in the pink plate in any order.",
+        ["Carrot", "Orange", "GreenApple", "RedApple"],
+        set(),
+    ),
+    (
+        "Begin by placing the green apple and orange in the yellow plate. Once done, place the carrot and "
+        "red apple in "
+        "the blue plate also in any order.",
+        ["GreenApple", "Orange", "Carrot", "RedApple"],
+        {(a, b) for a in ("GreenApple", "Orange") for b in ("Carrot", "RedApple")},
+    ),
+]
+
+
+@pytest.mark.parametrize(("text", "objects", "order"), TABLE2, ids=["t1", "t2", "t3", "t4"])
+def test_table2_tabletop_tasks(text, objects, order):
+    r = parse_instruction(text)
+    assert objs(r) == objects
+    assert closure(r) == order
+    assert not r.unparsed
+
+
+def test_table2_destinations():
+    r = parse_instruction(TABLE2[0][0])
+    assert [t.receptacle for t in r.tasks] == [["BluePlate"], ["YellowPlate"]]
+
+
+TABLE3 = [
+    "Transfer three blocks into the opposite. The red block should be placed before the blue block.",
+    "Put the three blocks into three goal region at region H at, region I and region J each goal region can "
+    "only be "
+    "placed with one object.",
+    "Please plan a solution to move the three pillars to the placement area (region E, F, G) to the side of "
+    "the arm a "
+    "and arm b. Each object cannot be placed on the area other than the target region.",
+    "Transfer three blocks into the opposite regions. The robot arm cannot touch blue block until any of "
+    "the robot "
+    "arm touched the red block. After all of these, you should place yellow block back to region G (where "
+    "the red "
+    "block is currently locating).",
+    "The red block should be placed before the blue block. Please exchange the position of the red block "
+    "and blue "
+    "block. At any time, put the yellow block into the opposite side.",
+    "The red block should be placed before the blue block. Please place the three objects separately to "
+    "region G, H "
+    "and I.",
+    "The red block should be placed before the blue block. Please place the three objects one after another "
+    "to region "
+    "I, no objects can be placed on region F, G and H during this period.",
+]
+
+
+@pytest.mark.parametrize("text", TABLE3, ids=[f"t{i}" for i in range(1, 8)])
+def test_table3_handover_tasks_report_what_they_cannot_read(text):
+    """Tasks 1-7 need counting ("three blocks"), swaps or region constraints: the parser must report the
+    sentences it cannot read and invent no order."""
+    r = parse_instruction(text)
+    assert r.unparsed
+    assert r.before == []
+
+
+def test_table3_task8():
+    r = parse_instruction(
+        "Please first place the yellow block to region I, then place the yellow block to region "
+        "G, and move red and blue blocks to any empty region at any time."
+    )
+    assert [(t.object[0], t.receptacle[0]) for t in r.tasks][:2] == [
+        ("YellowBlock", "RegionI"),
+        ("YellowBlock", "RegionG"),
+    ]
+    assert r.before == [("A", "B")]  # the red and blue blocks are free
+
+
+# ----- temporal rules of the annotation guide ---------------------------------------------------------------
+RULES = [
+    (
+        "Put an apple on the counter at any time. After placing the apple, put a washed potato in the "
+        "fridge.",
+        {("Apple", "Potato")},
+    ),
+    (
+        "Put the egg in the fridge at any time. In any order, put the mug in the cabinet. After placing the "
+        "egg and the "
+        "mug, put the bread on the table.",
+        {("Egg", "Bread"), ("Mug", "Bread")},
+    ),
+    (
+        "Put the egg in the fridge. Then put the mug in the cabinet. Finally, put the bread on the table.",
+        {("Egg", "Mug"), ("Mug", "Bread"), ("Egg", "Bread")},
+    ),
+    (
+        "Put the egg in the fridge at any time. In any order, put the mug in the cabinet. After that, put "
+        "the bread on "
+        "the table. Finally, put the pan on the stove.",
+        {("Mug", "Bread"), ("Bread", "Pan"), ("Mug", "Pan")},
+    ),
+    ("Put the egg in the fridge. Put the mug in the cabinet. Put the bread on the table.", set()),
+    ("Put the egg in the fridge at any time. Prior to that, put the mug in the cabinet.", {("Mug", "Egg")}),
+    ("Putting the mug in the cabinet should be done after putting the egg in the fridge.", {("Egg", "Mug")}),
+    (
+        "Put the egg in the fridge. Put the mug in the cabinet. After these are finished, put the bread on "
+        "the table.",
+        {("Egg", "Bread"), ("Mug", "Bread")},
+    ),
+    ("Put the bread on the table after putting the egg in the fridge.", {("Egg", "Bread")}),
+    ("Put the egg in the fridge first. After that, put the bread on the table.", {("Egg", "Bread")}),
+    ("Put the egg in the fridge and then put the bread on the table.", {("Egg", "Bread")}),
+    (
+        "Put the egg in the fridge. Next, put the mug in the cabinet and put the bread on the table.",
+        {("Egg", "Mug"), ("Egg", "Bread")},
+    ),
+]
+
+
+@pytest.mark.parametrize(("text", "order"), RULES, ids=[f"r{i}" for i in range(len(RULES))])
+def test_temporal_rules(text, order):
+    r = parse_instruction(text, KITCHEN, "FloorPlan1")
+    assert closure(r) == order, (r.tasks, r.before)
+
+
+# ----- base tasks: kinds, states, containers, counts, lamps ------------------------------------------------
+TASKS = [
+    ("Put a washed slice of tomato in the fridge.", "clean_place Tomato(sliced) -> Fridge"),
+    ("Place a cooked apple inside the fridge.", "heat_place Apple -> Fridge"),
+    ("Put a chilled pan on the counter.", "cool_place Pan -> CounterTop"),
+    ("Put a cup with a spoon in it in the sink.", "place_in_container Spoon in Cup -> SinkBasin"),
+    ("Put a spoon in a mug and put the mug on the table.", "place_in_container Spoon in Mug -> DiningTable"),
+    ("Place two potatoes in the garbage can.", "place_two 2x Potato -> GarbageCan"),
+    ("Rinse a fork and put it in the drawer.", "clean_place Fork -> Drawer"),
+    ("Slice the bread, cook a slice, and put it on the table.", "heat_place Bread(sliced) -> DiningTable"),
+    (
+        "Cut a slice of a potato, put it in the microwave, and put it on the counter.",
+        "heat_place Potato(sliced) -> CounterTop",
+    ),
+    ("Throw away the cold slice of lettuce.", "cool_place Lettuce(sliced) -> GarbageCan"),
+    ("Place a kettle with water on the stove.", "clean_place Kettle -> StoveBurner"),
+]
+
+
+@pytest.mark.parametrize(("text", "summary"), TASKS, ids=[f"k{i}" for i in range(len(TASKS))])
+def test_task_fields(text, summary):
+    r = parse_instruction(text, KITCHEN, "FloorPlan1")
+    assert [t.summary() for t in r.tasks] == [summary]
+
+
+def test_examine_in_light():
+    r = parse_instruction(
+        "Turn on a desk lamp with a book in hand. Examine the keychain by the light of the lamp.",
+        BEDROOM,
+        "FloorPlan301",
+    )
+    assert [t.summary() for t in r.tasks] == [
+        "examine_in_light Book under DeskLamp",
+        "examine_in_light KeyChain under DeskLamp",
+    ]
+
+
+def test_unknown_object_is_reported_or_raised():
+    from nl2hltl2plan.errors import WorldError
+
+    r = parse_instruction("Place a statue on a table.", KITCHEN, "FloorPlan17")
+    assert r.issues == ["no Statue in FloorPlan17"] and r.tasks[0].object == ["Statue"]
+    with pytest.raises(WorldError, match="no Statue in FloorPlan17"):
+        parse_instruction("Place a statue on a table.", KITCHEN, "FloorPlan17", strict=True)
+
+
+def test_unparsed_sentences_are_reported_not_guessed():
+    r = parse_instruction("Move the keychain. Check some of the dressers for their contents.", BEDROOM, "x")
+    assert r.tasks == []
+    assert any("keychain" in u for u in r.unparsed)

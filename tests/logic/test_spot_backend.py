@@ -1,0 +1,66 @@
+import pytest
+
+from nl2hltl2plan.errors import FormulaError
+from nl2hltl2plan.logic import spot_backend as sb
+from nl2hltl2plan.logic.automaton import distinguishing_word
+
+
+def test_paper_syntax_and_dotted_and_quoted_names_parse():
+    f = sb.parse('<>(task1.1 && <> "put(Apple,Fridge)") || [](a)')
+    assert set(f.atoms) == {"task1.1", "put(Apple,Fridge)", "a"}
+    assert sb.parse("F(task1.1 & F task1.2)") == sb.parse("<>(task1.1 && <> task1.2)")
+
+
+def test_malformed_formula_reports_spot_pointer():
+    with pytest.raises(FormulaError) as exc:
+        sb.parse("F(a &")
+    assert "cannot parse" in str(exc.value) and "^" in str(exc.value)
+
+
+@pytest.mark.parametrize(
+    "text, fragment",
+    [("G a", "G (always)"), ("a R b", "R (release)"), ("a W b", "W (weak until)"), ("a M b", "M (strong"),
+     ("!(a & b)", "negation is only allowed"), ("a -> F b", "->"), ("F !F a", "negation")],
+)
+def test_non_sc_ltl_is_rejected_with_reason(text, fragment):
+    problems = sb.sc_ltl_problems(sb.parse(text))
+    assert problems and any(fragment in p for p in problems)
+    with pytest.raises(FormulaError, match="not sc-LTL"):
+        sb.dfa(sb.parse(text))
+
+
+@pytest.mark.parametrize("text", ["F a", "a U b", "F(a & X b)", "!a U (b | c)", "F(a & F(b & F c))"])
+def test_sc_ltl_accepted(text):
+    assert sb.sc_ltl_problems(sb.parse(text)) == []
+
+
+def test_dfa_reads_good_prefixes():
+    d = sb.dfa(sb.parse("F(a & F b)"))
+    assert d.accepts([{"a"}, set(), {"b"}])
+    assert d.accepts([{"a", "b"}])
+    assert not d.accepts([{"b"}, {"a"}])
+    assert not d.accepts([])
+    u = sb.dfa(sb.parse("!b U a"))
+    assert u.accepts([set(), {"a"}]) and not u.accepts([{"b"}, {"a"}])
+    assert u.is_dead(u.run([{"b"}]))
+
+
+def test_dfa_size_of_independent_eventualities_is_exponential():
+    for n in (2, 4, 6):
+        d = sb.dfa(sb.parse(" & ".join(f"F p{i}" for i in range(n))))
+        assert d.num_states == 2**n
+
+
+def test_large_translation_is_guarded_by_a_time_limit():
+    big = sb.parse(" & ".join(f"F p{i}" for i in range(24)))
+    with pytest.raises(FormulaError, match="longer than"):
+        sb.dfa(big, timeout_s=1.0)
+
+
+def test_equivalence_and_distinguishing_word():
+    assert sb.equivalent(sb.parse("F(a & F b)"), sb.parse("<>(a && <>b)"))
+    f, g = sb.dfa(sb.parse("F a & F b")), sb.dfa(sb.parse("F(a & F b)"))
+    word = distinguishing_word(f, g)
+    assert word is not None
+    assert f.accepts(word) != g.accepts(word)
+    assert distinguishing_word(f, sb.dfa(sb.parse("F b & F a"))) is None
