@@ -38,6 +38,9 @@ def test_stages_import_downwards_only():
 
 
 def test_only_spot_backend_imports_spot():
-    users = [str(p.relative_to(PKG)) for p in PKG.rglob("*.py")
-             if any(n == "spot" or n.startswith("spot.") for n in imports(p))]
+    users = [
+        str(p.relative_to(PKG))
+        for p in PKG.rglob("*.py")
+        if any(n == "spot" or n.startswith("spot.") for n in imports(p))
+    ]
     assert users == ["logic/spot_backend.py"]

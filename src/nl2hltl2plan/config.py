@@ -19,13 +19,18 @@ _REPO_ROOT = Path(__file__).resolve().parents[2]
 def data_dir(required: bool = True) -> Path | None:
     """The shared data folder, or None (required=False) / DataError (required=True) when absent."""
     env = os.environ.get(DATA_ENV)
-    candidates = [Path(env)] if env else [_REPO_ROOT.parent / "shared" / "data", Path.cwd().parent / "shared" / "data"]
+    candidates = (
+        [Path(env)] if env else [_REPO_ROOT.parent / "shared" / "data", Path.cwd().parent / "shared" / "data"]
+    )
     for path in candidates:
         if path.is_dir():
             return path
     if required:
         where = env if env else " or ".join(str(c) for c in candidates)
-        raise DataError(f"shared data folder not found at {where}; set {DATA_ENV} to the folder that holds alfred/, benchmark/ ...")
+        raise DataError(
+            f"shared data folder not found at {where}; "
+            f"set {DATA_ENV} to the folder that holds alfred/, benchmark/ ..."
+        )
     return None
 
 

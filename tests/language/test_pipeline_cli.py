@@ -122,6 +122,11 @@ def test_cli_plan_json(capsys, monkeypatch, tmp_path):
     payload = json.loads(out.out)
     assert {"backend", "htt", "spec", "plan"} <= set(payload)
     assert payload["backend"] == "offline" and payload["htt"]["relations"] == [["1.1", "1.2"]]
+    assert (
+        payload["planner"]["status"] == "solved"
+        and payload["plan"]["robots"]
+        and payload["travel_cost_m"] > 0
+    )
     assert "offline grammar parser" in out.err
     assert (tmp_path / "out" / "htt.png").stat().st_size > 1000
     assert json.loads((tmp_path / "out" / "result.json").read_text())["tasks"][0]["kind"] == "clean_place"

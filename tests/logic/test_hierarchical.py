@@ -6,10 +6,12 @@ from nl2hltl2plan.logic.hierarchical import HierarchicalSpec, TraceEvent, sequen
 DISHWASHER = [
     {"task1": "F(task1.1 & F task1.2)"},
     {"task1.1": "F task1.1.1 & F task1.1.2", "task1.2": "F(task1.2.1 & F task1.2.2)"},
-    {"task1.1.1": ["pickup(Plate)", "put(Plate,DishwasherLowerRack)"],
-     "task1.1.2": ["pickup(Mug)", "put(Mug,DishwasherLowerRack)"],
-     "task1.2.1": ["pickup(Saucer)", "put(Saucer,DishwasherUpperRack)"],
-     "task1.2.2": ["pickup(Cup)", "put(Cup,DishwasherUpperRack)"]},
+    {
+        "task1.1.1": ["pickup(Plate)", "put(Plate,DishwasherLowerRack)"],
+        "task1.1.2": ["pickup(Mug)", "put(Mug,DishwasherLowerRack)"],
+        "task1.2.1": ["pickup(Saucer)", "put(Saucer,DishwasherUpperRack)"],
+        "task1.2.2": ["pickup(Cup)", "put(Cup,DishwasherUpperRack)"],
+    },
 ]
 
 
@@ -33,19 +35,27 @@ def test_structure():
 
 def test_trace_respecting_order_is_accepted():
     spec = HierarchicalSpec.from_json(DISHWASHER)
-    ok = spec.check_trace(events(*place("task1.1.1", "Plate", "DishwasherLowerRack"),
-                                 *place("task1.1.2", "Mug", "DishwasherLowerRack"),
-                                 *place("task1.2.1", "Saucer", "DishwasherUpperRack"),
-                                 *place("task1.2.2", "Cup", "DishwasherUpperRack")))
+    ok = spec.check_trace(
+        events(
+            *place("task1.1.1", "Plate", "DishwasherLowerRack"),
+            *place("task1.1.2", "Mug", "DishwasherLowerRack"),
+            *place("task1.2.1", "Saucer", "DishwasherUpperRack"),
+            *place("task1.2.2", "Cup", "DishwasherUpperRack"),
+        )
+    )
     assert ok.ok and ok.completed["task1.1"] == 4 and ok.completed["task1"] == 8
 
 
 def test_trace_breaking_order_is_rejected_with_reason():
     spec = HierarchicalSpec.from_json(DISHWASHER)
-    bad = spec.check_trace(events(*place("task1.2.2", "Cup", "DishwasherUpperRack"),
-                                  *place("task1.2.1", "Saucer", "DishwasherUpperRack"),
-                                  *place("task1.1.1", "Plate", "DishwasherLowerRack"),
-                                  *place("task1.1.2", "Mug", "DishwasherLowerRack")))
+    bad = spec.check_trace(
+        events(
+            *place("task1.2.2", "Cup", "DishwasherUpperRack"),
+            *place("task1.2.1", "Saucer", "DishwasherUpperRack"),
+            *place("task1.1.1", "Plate", "DishwasherLowerRack"),
+            *place("task1.1.2", "Mug", "DishwasherLowerRack"),
+        )
+    )
     assert not bad.ok and "task1" in bad.reasons[0]
 
 

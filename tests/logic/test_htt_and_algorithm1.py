@@ -39,11 +39,29 @@ def node(i, text="t", children=(), actions=None):
 @pytest.mark.parametrize(
     "data, match",
     [
-        ({"nodes": [node("1", children=["1.1", "1.2"]), node("1.1"), node("1.2")],
-          "relations": [["1.1", "1.2"], ["1.2", "1.1"]]}, "cyclic"),
-        ({"nodes": [node("1", children=["1.1", "1.2"]), node("1.1", children=["1.1.1"]), node("1.2"),
-                    node("1.1.1")], "relations": [["1.1.1", "1.2"]]}, "not between siblings"),
-        ({"nodes": [node("1", children=["1.1", "1.2"]), node("1.1", children=["1.2"]), node("1.2")]}, "2 parents"),
+        (
+            {
+                "nodes": [node("1", children=["1.1", "1.2"]), node("1.1"), node("1.2")],
+                "relations": [["1.1", "1.2"], ["1.2", "1.1"]],
+            },
+            "cyclic",
+        ),
+        (
+            {
+                "nodes": [
+                    node("1", children=["1.1", "1.2"]),
+                    node("1.1", children=["1.1.1"]),
+                    node("1.2"),
+                    node("1.1.1"),
+                ],
+                "relations": [["1.1.1", "1.2"]],
+            },
+            "not between siblings",
+        ),
+        (
+            {"nodes": [node("1", children=["1.1", "1.2"]), node("1.1", children=["1.2"]), node("1.2")]},
+            "2 parents",
+        ),
         ({"nodes": [node("1"), node("2")]}, "exactly one root"),
         ({"nodes": [node("1", children=["1.1"]), node("1.1", children=["1"])]}, "root|cycle"),
         ({"nodes": [node("1", children=["1.9.9"]), node("1.9.9")]}, "should be 1.<k>"),
@@ -83,7 +101,7 @@ def random_htt(draw):
             leaves.append(nid)
             nodes[-1]["actions"] = [f"act(L{nid.replace('.', '_')})"]
         order = draw(st.permutations(kids)) if kids else []
-        relations.extend([a, b] for i, a in enumerate(order) for b in order[i + 1:] if draw(st.booleans()))
+        relations.extend([a, b] for i, a in enumerate(order) for b in order[i + 1 :] if draw(st.booleans()))
         for c in kids:
             grow(c, depth + 1)
 
@@ -104,7 +122,8 @@ def expected_completion(htt, steps):
             return done[nid]
         times = [visit(c) for c in n.children]
         ok = all(t is not None for t in times) and all(
-            done[a] <= done[b] for a, b in htt.sibling_relations(nid))
+            done[a] <= done[b] for a, b in htt.sibling_relations(nid)
+        )
         done[nid] = max(times) if ok else None
         return done[nid]
 
@@ -117,7 +136,9 @@ def expected_completion(htt, steps):
 def test_spec_of_random_htt_accepts_exactly_the_traces_that_respect_every_relation(case):
     htt, steps = case
     spec = build_spec(htt)
-    trace = [TraceEvent(t, htt.node(leaf).actions[0], f"task{leaf}") for leaf, t in steps.items() if t is not None]
+    trace = [
+        TraceEvent(t, htt.node(leaf).actions[0], f"task{leaf}") for leaf, t in steps.items() if t is not None
+    ]
     result = spec.check_trace(trace)
     expected = expected_completion(htt, steps)
     assert result.ok == (expected["1"] is not None)
@@ -127,8 +148,10 @@ def test_spec_of_random_htt_accepts_exactly_the_traces_that_respect_every_relati
     if len(steps) <= 4:
         flat = sb.dfa(sb.parse(spec.flatten()), timeout_s=60)
         horizon = max([t for t in steps.values() if t] + [1])
-        word = [{f"task{leaf}:{htt.node(leaf).actions[0]}" for leaf, t in steps.items() if t == s}
-                for s in range(1, horizon + 1)]
+        word = [
+            {f"task{leaf}:{htt.node(leaf).actions[0]}" for leaf, t in steps.items() if t == s}
+            for s in range(1, horizon + 1)
+        ]
         assert flat.accepts(word) == result.ok
 
 
@@ -155,7 +178,17 @@ def test_cli_reports_bad_htt_without_traceback(tmp_path, capsys):
     from nl2hltl2plan.cli.main import main
 
     f = tmp_path / "cyclic.json"
-    f.write_text(json.dumps({"nodes": [node("1", children=["1.1", "1.2"]), node("1.1", actions=["a(X)"]),
-                                       node("1.2", actions=["b(X)"])], "relations": [["1.1", "1.2"], ["1.2", "1.1"]]}))
+    f.write_text(
+        json.dumps(
+            {
+                "nodes": [
+                    node("1", children=["1.1", "1.2"]),
+                    node("1.1", actions=["a(X)"]),
+                    node("1.2", actions=["b(X)"]),
+                ],
+                "relations": [["1.1", "1.2"], ["1.2", "1.1"]],
+            }
+        )
+    )
     assert main(["spec", str(f)]) == 2
     assert "cyclic" in capsys.readouterr().err

@@ -19,8 +19,15 @@ def test_malformed_formula_reports_spot_pointer():
 
 @pytest.mark.parametrize(
     "text, fragment",
-    [("G a", "G (always)"), ("a R b", "R (release)"), ("a W b", "W (weak until)"), ("a M b", "M (strong"),
-     ("!(a & b)", "negation is only allowed"), ("a -> F b", "->"), ("F !F a", "negation")],
+    [
+        ("G a", "G (always)"),
+        ("a R b", "R (release)"),
+        ("a W b", "W (weak until)"),
+        ("a M b", "M (strong"),
+        ("!(a & b)", "negation is only allowed"),
+        ("a -> F b", "->"),
+        ("F !F a", "negation"),
+    ],
 )
 def test_non_sc_ltl_is_rejected_with_reason(text, fragment):
     problems = sb.sc_ltl_problems(sb.parse(text))

@@ -11,10 +11,13 @@ from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 
 
 def register(sub: argparse._SubParsersAction) -> None:
-    p = sub.add_parser("check", help="validate a hierarchical sc-LTL spec file (Definition 2.1)",
-                       description="Validate a hierarchical sc-LTL specification in the paper's JSON form "
-                       '(a list of levels, each {"name": "formula" or [actions]}). Exit 0 when valid, '
-                       "1 with the reasons when not, 2 when the file cannot be read as JSON.")
+    p = sub.add_parser(
+        "check",
+        help="validate a hierarchical sc-LTL spec file (Definition 2.1)",
+        description="Validate a hierarchical sc-LTL specification in the paper's JSON form "
+        '(a list of levels, each {"name": "formula" or [actions]}). Exit 0 when valid, '
+        "1 with the reasons when not, 2 when the file cannot be read as JSON.",
+    )
     p.add_argument("spec", help="specification JSON file")
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.set_defaults(func=run)
@@ -30,8 +33,12 @@ def run(args: argparse.Namespace) -> int:
     except SpecError as exc:
         reasons = [line.strip()[2:] for line in str(exc).splitlines()[1:]] or [str(exc)]
         return _report(args, 1, reasons)
-    summary = {"levels": len(spec.levels), "formulas": len(spec.names), "leaves": len(spec.leaves),
-               "atoms": sorted(spec.atoms())}
+    summary = {
+        "levels": len(spec.levels),
+        "formulas": len(spec.names),
+        "leaves": len(spec.leaves),
+        "atoms": sorted(spec.atoms()),
+    }
     return _report(args, 0, [], summary)
 
 
@@ -39,8 +46,10 @@ def _report(args: argparse.Namespace, code: int, reasons: list[str], summary: di
     if args.json:
         print(json.dumps({"valid": code == 0, "exit": code, "reasons": reasons, **(summary or {})}, indent=2))
     elif code == 0 and summary:
-        print(f"valid: {summary['levels']} levels, {summary['formulas']} formulas, {summary['leaves']} leaves, "
-              f"{len(summary['atoms'])} atomic propositions")
+        print(
+            f"valid: {summary['levels']} levels, {summary['formulas']} formulas, {summary['leaves']} leaves, "
+            f"{len(summary['atoms'])} atomic propositions"
+        )
     else:
         print("invalid:" if code == 1 else "unreadable:")
         for r in reasons:

@@ -1,6 +1,6 @@
 """`nl2hltl2plan plan "INSTRUCTION" --world demo|FloorPlanN --robots N [--llm offline|local|openai]`
 
-Instruction -> HTT -> hierarchical LTL (-> multi-robot plan once the planner exists). Prints the HTT,
+Instruction -> HTT -> hierarchical LTL -> multi-robot plan (planning.plan). Prints the HTT,
 the base tasks, the hierarchical LTL and the plan with its travel cost and completion time; `--json`
 prints one object (keys backend, htt, tasks, spec, plan ...); `-o DIR` writes pictures and result.json.
 Without `--llm`, an LLM configured by NL2HLTL2PLAN_LLM_* is used, else the offline parser (said on stderr).
@@ -10,8 +10,6 @@ from __future__ import annotations
 
 import argparse
 import contextlib
-import importlib
-import inspect
 import json
 import sys
 from pathlib import Path
@@ -71,6 +69,18 @@ def register(sub: Any) -> None:
     p.add_argument(
         "-o", "--out", type=Path, default=None, help="write pictures and result.json to this folder"
     )
+    g = p.add_argument_group("planner")
+    g.add_argument(
+        "--objective",
+        choices=["min", "minmax"],
+        default="min",
+        help="min: moves + actions over all robots (the paper's cost); minmax: completion time",
+    )
+    g.add_argument(
+        "--mode", choices=["fast", "exact"], default="fast", help="planner mode (see docs/planning.md)"
+    )
+    g.add_argument("--plan-timeout", type=float, default=300.0, help="planner time limit in seconds")
+    g.add_argument("--starts", default=None, help="robot start cells 'r,c;r,c' (default: the world's)")
     add_llm_arguments(p)
     p.set_defaults(func=run)
 
@@ -127,7 +137,7 @@ def run(args: argparse.Namespace) -> int:
             file=sys.stderr,
         )
         return EXIT_PENDING
-    plan_info = _plan(result, world, args.robots)
+    plan_info = _plan(result, world, args)
     payload = _payload(result, args, plan_info)
     if args.out:
         _write_outputs(args.out, result, world, plan_info, payload)
@@ -139,33 +149,50 @@ def run(args: argparse.Namespace) -> int:
 
 
 # ----- planner --------------------------------------------------------------------------------------------
-def _plan(result: LanguageResult, world: Any, robots: int) -> dict[str, Any]:
-    """Call `planning.plan(...)` when the planner exists; else say it is not available."""
+def start_cells(world: Any, robots: int, given: str | None = None) -> list[tuple[int, int]]:
+    """Robot start cells: `--starts "r,c;r,c"`, else the world's default starts, else free cells spread
+    evenly over the grid (deterministic)."""
+    from nl2hltl2plan.errors import PlanningError
+
+    if given:
+        try:
+            cells = [tuple(int(x) for x in part.split(",")) for part in given.split(";") if part.strip()]
+        except ValueError:
+            raise PlanningError(f"--starts must look like 'r,c;r,c', got {given!r}") from None
+        if len(cells) != robots or any(len(c) != 2 for c in cells):
+            raise PlanningError(f"--starts gives {len(cells)} cells for {robots} robot(s)")
+        return [(c[0], c[1]) for c in cells]
+    defaults = list(getattr(world, "default_starts", ()) or ())
+    if len(defaults) >= robots:
+        return defaults[:robots]
+    free = sorted(world.cells)
+    step = max(1, len(free) // robots)
+    return defaults + [c for c in free[::step] if c not in defaults][: robots - len(defaults)]
+
+
+def _plan(result: LanguageResult, world: Any, args: argparse.Namespace) -> dict[str, Any]:
+    """Run `planning.plan(world, spec, starts, ...)` on the hierarchical spec."""
     try:
-        planning = importlib.import_module("nl2hltl2plan.planning")
-    except ModuleNotFoundError:  # pragma: no cover
-        planning = None
-    fn = getattr(planning, "plan", None) if planning is not None else None
-    if fn is None or not callable(fn):
+        from nl2hltl2plan.planning import plan
+    except ImportError:
         return {"available": False, "message": "planner not available"}
     if result.spec is None:
-        return {
-            "available": False,
-            "message": "planner not run: no hierarchical spec ("
-            + "; ".join(result.warnings or ["spec builder missing"])
-            + ")",
+        why = "; ".join(result.warnings) or "no hierarchical spec"
+        return {"available": False, "message": f"planner not run: {why}"}
+    starts = start_cells(world, args.robots, args.starts)
+    out = plan(
+        world, result.spec, starts, objective=args.objective, mode=args.mode, timeout_s=args.plan_timeout
+    )
+    info: dict[str, Any] = {"available": True, "result": out, "starts": starts, "status": out.status}
+    info.update(
+        {
+            "plan": out.plan,
+            "travel_m": out.travel_m,
+            "completion_time": out.steps,
+            "total_cost": out.total_cost,
+            "message": out.reason,
         }
-    params = inspect.signature(fn).parameters
-    kwargs: dict[str, Any] = {}
-    if "robots" in params:
-        kwargs["robots"] = robots
-    elif "n_robots" in params:
-        kwargs["n_robots"] = robots
-    out = fn(result.spec, world, **kwargs)
-    info: dict[str, Any] = {"available": True, "result": out}
-    for key in ("plan", "travel_m", "travel_cost", "completion_time", "makespan", "ok", "message"):
-        if hasattr(out, key):
-            info[key] = getattr(out, key)
+    )
     return info
 
 
@@ -199,15 +226,23 @@ def _payload(result: LanguageResult, args: argparse.Namespace, plan_info: dict[s
         "leaf_specs": result.leaf_specs,
         "spec": spec,
         "plan": plan,
-        "travel_cost_m": plan_info.get("travel_m", plan_info.get("travel_cost")),
-        "completion_time": plan_info.get("completion_time", plan_info.get("makespan")),
-        "planner": plan_info.get("message") if not plan_info.get("available") else "ok",
+        "travel_cost_m": plan_info.get("travel_m"),
+        "completion_time": plan_info.get("completion_time"),
+        "planner": _planner_summary(plan_info),
         "unparsed": result.unparsed,
         "issues": result.issues,
         "warnings": result.warnings,
         "ltl_checks": result.ltl_checks,
         "llm_calls": result.llm_calls,
     }
+
+
+def _planner_summary(plan_info: dict[str, Any]) -> dict[str, Any]:
+    if not plan_info.get("available"):
+        return {"status": "not run", "reason": plan_info.get("message")}
+    out = plan_info["result"].to_dict(with_plan=False)
+    out["starts"] = [list(c) for c in plan_info.get("starts", [])]
+    return out
 
 
 def _print_human(result: LanguageResult, plan_info: dict[str, Any], args: argparse.Namespace) -> None:
@@ -232,12 +267,20 @@ def _print_human(result: LanguageResult, plan_info: dict[str, Any], args: argpar
     if not plan_info.get("available"):
         print(f"  {plan_info.get('message')}")
         return
-    out = plan_info.get("result")
-    print("  " + str(_dump(plan_info.get("plan")) if plan_info.get("plan") is not None else out)[:4000])
-    if plan_info.get("travel_m") is not None or plan_info.get("travel_cost") is not None:
-        print(f"  travel cost: {plan_info.get('travel_m', plan_info.get('travel_cost'))} m")
-    if plan_info.get("completion_time") is not None or plan_info.get("makespan") is not None:
-        print(f"  completion time: {plan_info.get('completion_time', plan_info.get('makespan'))} steps")
+    if plan_info.get("status") != "solved":
+        print(f"  {plan_info.get('status')}: {plan_info.get('message')}")
+        return
+    plan = plan_info["plan"]
+    for rp in plan.robots:
+        moves = sum(1 for st in rp.steps if st.verb == "move")
+        acts = [
+            f"t{st.t} {st.verb}({','.join(st.objects)})" + (f" [{st.task}]" if st.task else "")
+            for st in rp.steps
+            if st.verb not in ("move", "wait")
+        ]
+        print(f"  robot {rp.robot} from {tuple(rp.start)}: {moves} moves; " + ("; ".join(acts) or "idle"))
+    print(f"  travel cost: {plan_info.get('travel_m'):.2f} m")
+    print(f"  completion time: {plan_info.get('completion_time')} steps")
 
 
 def _write_outputs(

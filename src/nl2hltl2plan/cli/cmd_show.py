@@ -19,9 +19,12 @@ from nl2hltl2plan.logic.hierarchical import HierarchicalSpec  # noqa: E402
 
 
 def register(sub: argparse._SubParsersAction) -> None:
-    p = sub.add_parser("show", help="draw an HTT or a hierarchical spec as a tree picture",
-                       description="Draw a Hierarchical Task Tree (decomposition edges black, temporal "
-                       "relations red) or a specification hierarchy graph (one node per flat formula).")
+    p = sub.add_parser(
+        "show",
+        help="draw an HTT or a hierarchical spec as a tree picture",
+        description="Draw a Hierarchical Task Tree (decomposition edges black, temporal "
+        "relations red) or a specification hierarchy graph (one node per flat formula).",
+    )
     p.add_argument("file", help="HTT JSON or hierarchical spec JSON")
     p.add_argument("-o", "--out", required=True, help="output picture (.png, .svg, .pdf)")
     p.add_argument("--json", action="store_true", help="print what was drawn as JSON")
@@ -49,8 +52,17 @@ def run(args: argparse.Namespace) -> int:
         kind, root = "spec", None
     draw_tree(g, labels, args.out, root)
     if args.json:
-        print(json.dumps({"kind": kind, "nodes": list(g.nodes), "out": args.out,
-                          "edges": [[a, b, d.get("kind")] for a, b, d in g.edges(data=True)]}, indent=2))
+        print(
+            json.dumps(
+                {
+                    "kind": kind,
+                    "nodes": list(g.nodes),
+                    "out": args.out,
+                    "edges": [[a, b, d.get("kind")] for a, b, d in g.edges(data=True)],
+                },
+                indent=2,
+            )
+        )
     else:
         print(f"wrote {args.out} ({kind}, {g.number_of_nodes()} nodes)")
     return 0
@@ -80,11 +92,30 @@ def draw_tree(g: nx.DiGraph, labels: dict[str, str], out: str, root: str | None 
     dec = [(a, b) for a, b, d in g.edges(data=True) if d.get("kind") == "decomposition"]
     rel = [(a, b) for a, b, d in g.edges(data=True) if d.get("kind") == "before"]
     nx.draw_networkx_edges(g, pos, edgelist=dec, ax=ax, arrows=False, edge_color="black")
-    nx.draw_networkx_edges(g, pos, edgelist=rel, ax=ax, edge_color="tab:red", style="dashed",
-                           connectionstyle="arc3,rad=0.3", arrowsize=15)
+    nx.draw_networkx_edges(
+        g,
+        pos,
+        edgelist=rel,
+        ax=ax,
+        edge_color="tab:red",
+        style="dashed",
+        connectionstyle="arc3,rad=0.3",
+        arrowsize=15,
+    )
     for n, (x, y) in pos.items():
-        ax.text(x, y, labels.get(n, n), ha="center", va="center", fontsize=7,
-                bbox={"boxstyle": "round", "fc": "lightyellow" if tree.out_degree(n) else "lightblue", "ec": "gray"})
+        ax.text(
+            x,
+            y,
+            labels.get(n, n),
+            ha="center",
+            va="center",
+            fontsize=7,
+            bbox={
+                "boxstyle": "round",
+                "fc": "lightyellow" if tree.out_degree(n) else "lightblue",
+                "ec": "gray",
+            },
+        )
     ax.set_axis_off()
     ax.margins(0.15)
     fig.tight_layout()

@@ -11,9 +11,12 @@ from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 
 
 def register(sub: argparse._SubParsersAction) -> None:
-    p = sub.add_parser("spec", help="build the hierarchical sc-LTL spec of an HTT (Algorithm 1)",
-                       description="Build the hierarchical sc-LTL specification of a Hierarchical Task Tree "
-                       "(JSON file) with the exact relation compiler and the leaves' action lists.")
+    p = sub.add_parser(
+        "spec",
+        help="build the hierarchical sc-LTL spec of an HTT (Algorithm 1)",
+        description="Build the hierarchical sc-LTL specification of a Hierarchical Task Tree "
+        "(JSON file) with the exact relation compiler and the leaves' action lists.",
+    )
     p.add_argument("htt", help="HTT JSON file (see examples/dishwasher_htt.json)")
     p.add_argument("--sizes", action="store_true", help="also report automaton sizes: hierarchy vs flat")
     p.add_argument("--json", action="store_true", help="print one JSON object")
@@ -31,11 +34,18 @@ def run(args: argparse.Namespace) -> int:
         return 0
     print(format_spec(spec))
     if sizes:
-        print(f"\nautomaton sizes: hierarchy {sizes.hierarchical_states} states / {sizes.hierarchical_edges} edges "
-              f"(sum of {len(sizes.per_formula)} DFAs); flat formula"
-              + (" (exact)" if sizes.flat_exact else " (substitution)") + ": "
-              + (f"{sizes.flat_states} states / {sizes.flat_edges} edges (Büchi automaton)" if sizes.flat_states is not None
-                 else f"not translated: {sizes.flat_error}"))
+        print(
+            f"\nautomaton sizes: hierarchy {sizes.hierarchical_states} states / "
+            f"{sizes.hierarchical_edges} edges "
+            f"(sum of {len(sizes.per_formula)} DFAs); flat formula"
+            + (" (exact)" if sizes.flat_exact else " (substitution)")
+            + ": "
+            + (
+                f"{sizes.flat_states} states / {sizes.flat_edges} edges (Büchi automaton)"
+                if sizes.flat_states is not None
+                else f"not translated: {sizes.flat_error}"
+            )
+        )
     return 0
 
 

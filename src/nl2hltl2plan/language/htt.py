@@ -142,7 +142,9 @@ class HTT(BaseModel):
                 parent_of.setdefault(c, []).append(n.id)
         for c, ps in parent_of.items():
             if len(ps) > 1:
-                out.append(f"node {c} has {len(ps)} parents ({', '.join(ps)}); in a tree each task has one parent")
+                out.append(
+                    f"node {c} has {len(ps)} parents ({', '.join(ps)}); in a tree each task has one parent"
+                )
         roots = [i for i in ids if i not in parent_of]
         if len(roots) != 1:
             out.append(f"an HTT has exactly one root (a node nobody lists as child); found {roots or 'none'}")
@@ -150,7 +152,9 @@ class HTT(BaseModel):
         tree.add_nodes_from(ids)
         if not nx.is_directed_acyclic_graph(tree):
             cycle = nx.find_cycle(tree)
-            out.append("decomposition edges form a cycle: " + " -> ".join([a for a, _ in cycle] + [cycle[0][0]]))
+            out.append(
+                "decomposition edges form a cycle: " + " -> ".join([a for a, _ in cycle] + [cycle[0][0]])
+            )
         elif len(roots) == 1 and len(nx.descendants(tree, roots[0])) + 1 != len(known):
             lost = sorted(known - nx.descendants(tree, roots[0]) - {roots[0]})
             out.append(f"nodes not reachable from the root {roots[0]}: {lost}")
@@ -180,7 +184,9 @@ class HTT(BaseModel):
             rel.add_edge(a, b)
         if not nx.is_directed_acyclic_graph(rel):
             cycle = nx.find_cycle(rel)
-            out.append("temporal relations are cyclic: " + " before ".join([a for a, _ in cycle] + [cycle[0][0]]))
+            out.append(
+                "temporal relations are cyclic: " + " before ".join([a for a, _ in cycle] + [cycle[0][0]])
+            )
         return out
 
     def validate_tree(self) -> HTT:

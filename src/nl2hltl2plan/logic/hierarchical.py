@@ -92,8 +92,13 @@ class SizeReport:
         return {
             "per_formula": {k: {"states": s, "edges": e} for k, (s, e) in self.per_formula.items()},
             "hierarchical": {"states": self.hierarchical_states, "edges": self.hierarchical_edges},
-            "flat": {"formula": self.flat_formula, "states": self.flat_states, "edges": self.flat_edges,
-                     "exact": self.flat_exact, "error": self.flat_error},
+            "flat": {
+                "formula": self.flat_formula,
+                "states": self.flat_states,
+                "edges": self.flat_edges,
+                "exact": self.flat_exact,
+                "error": self.flat_error,
+            },
         }
 
 
@@ -152,7 +157,9 @@ class HierarchicalSpec:
                 try:
                     text = sequence_formula(body) if isinstance(body, list) else body
                     if not isinstance(text, str):
-                        raise SpecError(f"must be a formula string or a list of actions, not {type(body).__name__}")
+                        raise SpecError(
+                            f"must be a formula string or a list of actions, not {type(body).__name__}"
+                        )
                     f = sb.parse(text)
                     reasons = sb.sc_ltl_problems(f)
                     if reasons:
@@ -328,13 +335,19 @@ class HierarchicalSpec:
         by_step: dict[int, list[TraceEvent]] = {}
         for e in events:
             if e.task is not None and e.task not in self._level_of:
-                return TraceCheck(False, {}, [f"event {e.atom} at t={e.t} is attributed to unknown task {e.task!r}"])
+                return TraceCheck(
+                    False, {}, [f"event {e.atom} at t={e.t} is attributed to unknown task {e.task!r}"]
+                )
             if e.task is not None and not self.is_leaf(e.task):
-                return TraceCheck(False, {}, [f"event {e.atom} at t={e.t} is attributed to non-leaf {e.task}"])
+                return TraceCheck(
+                    False, {}, [f"event {e.atom} at t={e.t} is attributed to non-leaf {e.task}"]
+                )
             by_step.setdefault(e.t, []).append(e)
         dfas = {n: self.dfa(n) for n in self.names}
         state = {n: d.init for n, d in dfas.items()}
-        completed: dict[str, int | None] = {n: (0 if dfas[n].init in dfas[n].accepting else None) for n in self.names}
+        completed: dict[str, int | None] = {
+            n: (0 if dfas[n].init in dfas[n].accepting else None) for n in self.names
+        }
         last = max(by_step, default=0)
         for t in range(1, last + 1):
             step_events = by_step.get(t, [])
@@ -342,7 +355,11 @@ class HierarchicalSpec:
             for n in self.leaves:
                 if completed[n] is not None:
                     continue
-                atoms = {e.atom for e in step_events if (e.task == n or e.task is None) and e.atom in self._leaf_atoms[n]}
+                atoms = {
+                    e.atom
+                    for e in step_events
+                    if (e.task == n or e.task is None) and e.atom in self._leaf_atoms[n]
+                }
                 state[n] = dfas[n].step(state[n], atoms)
                 if state[n] in dfas[n].accepting:
                     completed[n] = t

@@ -91,13 +91,17 @@ class Translator(Protocol):
     def translate(self, sentences: str, children: Sequence[str]) -> str: ...
 
 
-def check_translation(candidate: str, children: Sequence[str], before: Sequence[tuple[str, str]]) -> TranslationCheck:
+def check_translation(
+    candidate: str, children: Sequence[str], before: Sequence[tuple[str, str]]
+) -> TranslationCheck:
     """Compare a translator's formula with the compiled one under completion-event semantics."""
     reference = compile_relations(children, before)
     f = sb.parse(candidate)
     extra = set(f.atoms) - set(children)
     if extra:
-        raise FormulaError(f"translation {candidate!r} uses {sorted(extra)}, which are not children {list(children)}")
+        raise FormulaError(
+            f"translation {candidate!r} uses {sorted(extra)}, which are not children {list(children)}"
+        )
     problems = sb.sc_ltl_problems(f)
     if problems:
         raise FormulaError(f"translation {candidate!r} is not sc-LTL: " + "; ".join(problems))

@@ -24,8 +24,8 @@ import multiprocessing as mp
 from collections.abc import Callable, Iterable
 from functools import lru_cache
 
-from spot import buddy
 import spot
+from spot import buddy
 
 from nl2hltl2plan.errors import FormulaError
 from nl2hltl2plan.logic.automaton import Cube, Dfa
@@ -147,8 +147,15 @@ def sc_ltl_problems(f: Formula) -> list[str]:
         elif k == spot.op_Not and g[0].kind() != spot.op_ap:
             problems.append(f"negation is only allowed on atomic propositions: {g.to_str()}")
         elif k not in (
-            spot.op_ap, spot.op_tt, spot.op_ff, spot.op_Not, spot.op_And, spot.op_Or,
-            spot.op_F, spot.op_U, spot.op_X,
+            spot.op_ap,
+            spot.op_tt,
+            spot.op_ff,
+            spot.op_Not,
+            spot.op_And,
+            spot.op_Or,
+            spot.op_F,
+            spot.op_U,
+            spot.op_X,
         ):
             problems.append(f"operator {g.kindstr()} is not part of sc-LTL: {g.to_str()}")
         return False

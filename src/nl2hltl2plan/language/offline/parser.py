@@ -470,9 +470,17 @@ def parse_frame(text: str, start: int = 0, joiner: str = "") -> Frame:
                 cur_prep = None
             i += 1
             continue
-        if light_on and w in {"on", "off"} and (i + 1 >= len(words) or words[i + 1] in _DETERMINERS
-                                                  or words[i + 1] in {",", "and", "while", "with"}
-                                                  or words[i + 1] in G.VERBS or find_mentions(words[i + 1])):
+        if (
+            light_on
+            and w in {"on", "off"}
+            and (
+                i + 1 >= len(words)
+                or words[i + 1] in _DETERMINERS
+                or words[i + 1] in {",", "and", "while", "with"}
+                or words[i + 1] in G.VERBS
+                or find_mentions(words[i + 1])
+            )
+        ):
             flush()  # "turn on the lamp", "turn the lamp on": a particle, not "on the table"
             cur_prep = None
             i += 1
@@ -1043,14 +1051,22 @@ def parse_instruction(
                 b.unparsed.append(f"{c_text} (a list of destinations)")
                 continue
             if fr.cls == "light" and not any(
-                (it.obj is not None and it.obj.is_lamp()) or any(np.is_lamp() for _, np in it.pps) for it in fr.items
+                (it.obj is not None and it.obj.is_lamp()) or any(np.is_lamp() for _, np in it.pps)
+                for it in fr.items
             ):
                 if not any(it.obj is not None and it.obj.pronoun for it in fr.items):
                     fr.cls = "other"  # "switch on the coffee machine": no lamp, no task of ours
             if fr.cls == "other":
-                real = [it.obj for it in fr.items if it.obj is not None and not it.obj.empty and not it.obj.pronoun]
-                noise = fr.verb in {"open", "close", "shut"} and sentence_drafts and all(
-                    o.is_receptacle() or "door" in o.text.lower() for o in real)
+                real = [
+                    it.obj
+                    for it in fr.items
+                    if it.obj is not None and not it.obj.empty and not it.obj.pronoun
+                ]
+                noise = (
+                    fr.verb in {"open", "close", "shut"}
+                    and sentence_drafts
+                    and all(o.is_receptacle() or "door" in o.text.lower() for o in real)
+                )
                 if real and not noise:
                     b.unparsed.append(c_text)
                 continue  # "close the refrigerator door", "while doing so"
