@@ -10,12 +10,13 @@ with a `WorldError` that names the missing type ("no Statue in FloorPlan17").
 from __future__ import annotations
 
 import re
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from functools import lru_cache
 from importlib import resources
 
 from nl2hltl2plan.errors import WorldError
+from nl2hltl2plan.worlds.model import Affordances
 
 # AI2-THOR object types (ALFRED's list plus the few AI2-THOR 5 scenes add).
 THOR_TYPES: tuple[str, ...] = (
@@ -329,15 +330,21 @@ class Grounder:
         self.scene = scene
         self._by_lower = {t.lower(): t for t in (self.types or THOR_TYPES)}
 
+    def candidates(self, entry: Entry) -> list[str]:
+        """Every type of the scene the entry could stand for, in the lexicon's order ([] when none)."""
+        if entry.generic:
+            return []
+        if self.types is None:
+            return list(entry.types)
+        return [t for t in entry.types if t in self.types]
+
     def resolve(self, entry: Entry) -> list[str]:
         """Types of the scene the entry stands for ([] when none is present)."""
         if entry.generic:
             return []
         if self.types is None:
             return list(entry.types) if entry.all_ else [entry.canonical]
-        present = [t for t in entry.types if t in self.types]
-        if not present:
-            return []
+        present = self.candidates(entry)
         return present if entry.all_ else present[:1]
 
     def missing(self, entry: Entry, what: str = "") -> WorldError:
@@ -372,6 +379,98 @@ class Grounder:
         if not got:
             raise self.missing(entry, w)
         return got
+
+
+# ----- roles: which of a word's types can do what the task asks ------------------------------------------
+AffordanceLookup = Callable[[str], "Affordances | None"]
+
+
+def alfred_lookup() -> AffordanceLookup | None:
+    """ALFRED's affordance facts as a lookup (None when the shared data is missing)."""
+    from nl2hltl2plan.errors import DataError
+    from nl2hltl2plan.worlds.affordances import alfred_affordances
+
+    try:
+        table = alfred_affordances()
+    except DataError:
+        return None
+    known = table.object_types | table.receptacles
+
+    def look(type_: str) -> Affordances | None:
+        return table(type_) if type_ in known else None
+
+    return look
+
+
+def world_lookup(world: object) -> AffordanceLookup | None:
+    """The affordances of a world's own objects, by type (None when the world has no objects)."""
+    instances = getattr(world, "instances", None)
+    if instances is None or not hasattr(world, "objects"):
+        return None
+
+    def look(type_: str) -> Affordances | None:
+        objs = instances(type_)
+        return objs[0].affordances if objs else None
+
+    return look
+
+
+_STATE_FLAG = {"clean_place": "cleanable", "heat_place": "heatable", "cool_place": "coolable"}
+
+
+@dataclass
+class Roles:
+    """Candidate types per field of one task; `narrow` keeps the ones that can play their role."""
+
+    object: list[str]
+    receptacle: list[str] | None = None
+    container: list[str] | None = None
+    light: list[str] | None = None
+
+    def narrow(self, look: AffordanceLookup | None, kind: str, sliced: bool) -> Roles:
+        """Keep, per field, the types whose affordances fit the task (a field that would become empty is
+        kept as it was): the object must be pickupable, cleanable / heatable / coolable for those kinds,
+        sliceable when sliced; the container must accept the object; the receptacle must accept what is put
+        into it (the container, else the object); the light must be toggleable. Types the lookup does not
+        know are kept. E.g. "a clean towel" -> Cloth (a HandTowel cannot be cleaned in ALFRED), "the
+        chair" -> ArmChair (ALFRED's Chair accepts nothing), "a chilled bottle" -> WineBottle."""
+        if look is None:
+            return self
+
+        def keep(types: list[str] | None, ok: Callable[[str], bool]) -> list[str] | None:
+            if not types:
+                return types
+            return [t for t in types if look(t) is None or ok(t)] or types
+
+        def flags(t: str) -> Affordances:
+            a = look(t)
+            assert a is not None
+            return a
+
+        def accepts(rec: str, thing: str) -> bool:
+            a = look(rec)
+            if a is None or look(thing) is None:
+                return True
+            return thing in a.accepts or (sliced and thing + "Sliced" in a.accepts)
+
+        flag = _STATE_FLAG.get(kind)
+        obj = keep(self.object, lambda t: flags(t).pickupable) or []
+        if flag:
+            obj = keep(obj, lambda t: getattr((look(t + "Sliced") if sliced else None) or flags(t), flag))
+        if sliced:
+            obj = keep(obj, lambda t: flags(t).sliceable)
+        cont = keep(self.container, lambda c: any(accepts(c, o) for o in obj))
+        if cont:
+            obj = keep(obj, lambda o: any(accepts(c, o) for c in cont)) or []
+        inner = cont or obj
+        rec = keep(self.receptacle, lambda r: any(accepts(r, x) for x in inner))
+        if rec:
+            if cont:
+                cont = keep(cont, lambda c: any(accepts(r, c) for r in rec))
+            else:
+                obj = keep(obj, lambda o: any(accepts(r, o) for r in rec)) or []
+        light = keep(self.light, lambda t: flags(t).toggleable)
+        return Roles(obj, rec, cont, light)
 
 
 def scene_types(scene: str) -> set[str]:

@@ -28,7 +28,7 @@ import networkx as nx
 from pydantic import BaseModel, ConfigDict, Field
 
 from nl2hltl2plan.errors import HTTError, LLMError, Nl2Hltl2PlanError, WorldError
-from nl2hltl2plan.language.grounding import Grounder
+from nl2hltl2plan.language.grounding import AffordanceLookup, Grounder, world_lookup
 from nl2hltl2plan.language.htt import HTT, HTTNode
 from nl2hltl2plan.language.llm.batch import BatchCollector, PendingAnswer
 from nl2hltl2plan.language.llm.client import LLMClient
@@ -294,7 +294,7 @@ def translate(
     types = set(world.object_types()) if world is not None else None
     scene = world.name if world is not None else None
     if backend == "offline":
-        res = _offline(instruction, types, scene, strict)
+        res = _offline(instruction, types, scene, strict, world_lookup(world) if world is not None else None)
     else:
         if client is None:
             raise LLMError(f"backend {backend} needs an LLM client (see open_client)")
@@ -329,10 +329,16 @@ def translate(
     return res
 
 
-def _offline(instruction: str, types: set[str] | None, scene: str | None, strict: bool) -> LanguageResult:
+def _offline(
+    instruction: str,
+    types: set[str] | None,
+    scene: str | None,
+    strict: bool,
+    look: AffordanceLookup | None = None,
+) -> LanguageResult:
     from nl2hltl2plan.language.offline import parse_instruction
 
-    parsed = parse_instruction(instruction, types, scene or "the scene", strict=strict)
+    parsed = parse_instruction(instruction, types, scene or "the scene", strict=strict, affordances=look)
     if not parsed.tasks:
         why = "; ".join(parsed.unparsed) or "no task verb found"
         raise HTTError(

@@ -200,16 +200,16 @@ class Expander:
                 out = [self.serves[faucet]]
         return out
 
-    def bindings(self, node: Node, leaf: Leaf, atom: Atom, robot: int, limit: int | None) -> list[tuple[int, ...]]:
-        """Object tuples for the atom; with `limit`, only the nearest few per unbound type."""
+    def bindings(self, node: Node, leaf: Leaf, atom: Atom, robot: int, ordered: bool) -> list[tuple[int, ...]]:
+        """Object tuples for the atom (`ordered`: nearest instances first)."""
         sim = node.sim
         lists = []
         for pos in range(len(atom.types)):
             cands = self.candidates(node, leaf, atom, pos)
             if pos == 0 and atom.verb in ("pickup", "slice"):
                 cands = [o for o in cands if self._present_or_coming(sim, o)]
-            if limit is not None and len(cands) > limit:
-                cands = self._nearest_first(node, robot, cands, leaf, atom)[:limit]
+            if ordered and len(cands) > 1:
+                cands = self._nearest_first(node, robot, cands, leaf, atom)
             lists.append(cands)
         if len(lists) == 1:
             return [(o,) for o in lists[0]]
@@ -391,6 +391,8 @@ class Expander:
         if child_sim.act(robot, "put", list(objs)) is not None:
             return None
         ready = max((node.obj_t.get(x, 0) for x in touched), default=0)
+        if leaf >= 0:
+            ready = max(ready, node.leaf_t[leaf])  # held until its task is done (examine: lamp on)
         t = max(node.clock[robot] + d, ready) + 1
         child = Node()
         for name in ("q", "bind", "claimed", "nq", "done_t", "leaf_t", "last_done"):
@@ -452,15 +454,17 @@ class Expander:
                     atom = lf.atoms[k]
                     if not p.can_do(r, atom):
                         continue
-                    for objs in self.bindings(node, lf, atom, r, limit):
+                    made = 0
+                    for objs in self.bindings(node, lf, atom, r, limit is not None):
                         child = self.apply(node, r, lf, k, objs, q_next)
                         if child is None:
                             continue
                         if macro and atom.verb == "pickup":
-                            child = self._carry_on(child, r, lf, limit)
-                            if child is None:
-                                continue
+                            child = self._carry_on(child, r, lf)
                         out.append(child)
+                        made += 1
+                        if limit is not None and made >= limit:
+                            break  # restricted successors: the nearest few instances that work
         return out
 
     def _held_leaves(self, node: Node) -> dict[int, int]:
@@ -478,16 +482,16 @@ class Expander:
         surfaces = self.surfaces_for(obj)
         cell = node.cell[robot]
         surfaces = sorted(surfaces, key=lambda s: (self.nav.dist(cell, s), s))
-        if limit is not None:
-            surfaces = surfaces[:limit]
         out = []
         for s in surfaces:
             child = self.put_down(node, robot, s, leaf)
             if child is not None:
                 out.append(child)
+                if limit is not None and len(out) >= limit:
+                    break
         return out
 
-    def _carry_on(self, node: Node, robot: int, leaf: Leaf, limit: int | None) -> Node | None:
+    def _carry_on(self, node: Node, robot: int, leaf: Leaf) -> Node:
         """Macro step: while the robot holds something for this leaf, do the leaf's next action
         (nearest choice) until the hand is empty, the leaf is done or nothing applies."""
         while node.sim.hand.get(robot, -1) >= 0 and node.q[leaf.index] != DONE:
@@ -496,7 +500,7 @@ class Expander:
                 atom = leaf.atoms[k]
                 if not self.p.can_do(robot, atom):
                     continue
-                for objs in self.bindings(node, leaf, atom, robot, 1 if limit is not None else None):
+                for objs in self.bindings(node, leaf, atom, robot, True):
                     child = self.apply(node, robot, leaf, k, objs, q_next)
                     if child is not None and (best is None or child.g < best.g):
                         best = child

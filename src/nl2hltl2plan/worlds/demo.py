@@ -6,6 +6,9 @@ with two racks for the paper's dishwasher example (Example 1): plates, mugs, cup
 utensils. `Dishwasher`, `DishwasherLowerRack`, `DishwasherUpperRack` and `Saucer` are our own types
 (AI2-THOR has none of them); the racks are receptacles inside the openable Dishwasher, so putting
 into a rack needs the dishwasher open. Everything else follows AI2-THOR/ALFRED affordances.
+Plates, mugs, cups, saucers, bowls, forks and spoons are there twice (a butter knife and a knife
+once each): a plural without a count word ("put the plates in the lower rack") is a two-object task
+(`place_two`), as in the benchmark's annotation, so every plural of a dish or utensil can be done.
 """
 
 from __future__ import annotations
@@ -81,6 +84,9 @@ _MOVABLE = [
     ("Saucer_0", (2.45, 0.93, 2.5), "CounterTop_1"),
     ("Saucer_1", (2.5, 0.93, 2.65), "CounterTop_1"),
     ("Knife_0", (2.3, 0.95, 2.55), "CounterTop_1"),
+    ("Fork_1", (2.2, 0.95, 2.45), "CounterTop_1"),
+    ("Spoon_1", (2.15, 0.95, 2.65), "CounterTop_1"),
+    ("Bowl_1", (0.95, 0.95, 2.55), "CounterTop_0"),
     ("Mug_0", (1.25, 0.8, 1.0), "DiningTable_0"),
     ("Mug_1", (2.0, 0.8, 1.25), "DiningTable_0"),
     ("Fork_0", (1.4, 0.78, 1.25), "DiningTable_0"),

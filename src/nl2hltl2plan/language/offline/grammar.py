@@ -270,6 +270,7 @@ PREPOSITIONS: list[tuple[str, ...]] = sorted(
     reverse=True,
 )
 DEST_PREPS = {
+    "then to",  # set by the parser: a further destination after a stop
     "to",
     "into",
     "onto",

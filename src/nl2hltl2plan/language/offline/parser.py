@@ -30,8 +30,11 @@ from nl2hltl2plan.language.grounding import (
     LAMPS,
     MOVABLE_RECEPTACLES,
     RECEPTACLES,
+    AffordanceLookup,
     Entry,
     Grounder,
+    Roles,
+    alfred_lookup,
     find_mentions,
 )
 from nl2hltl2plan.language.offline import grammar as G
@@ -401,11 +404,118 @@ def split_clauses(sentence: str) -> list[tuple[str, int, int, str]]:
     return out
 
 
+# ----- elided verbs ("first the saucers, then the cups, in the upper rack") -------------------------------
+_GAP_SPLIT = re.compile(
+    r"(?:\s*,\s*|\s+)(?:and\s+)?(?P<j>then|next|afterwards?|after\s+that|finally|lastly|followed\s+by)\b"
+    r"\s*,?\s*",
+    re.I,
+)
+_GAP_JOINER = {"finally": "finally", "lastly": "finally"}
+
+
+@dataclass
+class Clause:
+    """One verb clause of a sentence; `gap` >= 0 marks clauses rebuilt from one elided-verb list (a group
+    when they share one destination), `label` their rebuilt text ("put the cups in the upper rack")."""
+
+    text: str
+    start: int
+    end: int
+    joiner: str
+    gap: int = -1
+    label: str = ""
+    whole: str = ""  # the text of the whole list, verb restored
+
+
+def _movable_np(text: str) -> bool:
+    """Does `text` start with a noun phrase naming a movable thing (not a fixed receptacle, not a lamp)?"""
+    words = [w for w, _, _ in _words(text)]
+    if not words or _match_prep(words, 0) is not None or words[0] in G.VERBS:
+        return False
+    head = parse_np(re.split(r"\s*,\s*|\s+(?=(?:in|into|on|onto|to|inside|at)\b)", text, maxsplit=1)[0])
+    if head.entry is None or head.generic or head.is_lamp():
+        return False
+    return not (head.is_receptacle() and not head.is_movable_receptacle())
+
+
+def _dest_pp(verb: str, text: str) -> str:
+    """The destination phrase of `verb text` as written ("in the upper rack"), or ""."""
+    fr = parse_frame(f"{verb} {text}")
+    for it in fr.items:
+        dst = _dest_of(it, fr.cls)
+        if dst is not None:
+            for p, np in it.pps:
+                if np is dst:
+                    return f"{p} {np.text}"
+    return ""
+
+
+def expand_gapping(
+    clauses: list[tuple[str, int, int, str]], verb: str, last_dest: str, gap_base: int = 0
+) -> list[Clause]:
+    """Clauses with an elided verb get it back: "put the plates in the lower rack, then the cups in the upper
+    rack" and a verbless "first the saucers, then the cups, in the upper rack" after a clause whose verb was
+    "put". A list of objects split by sequence words ("then", "next", "finally") becomes one clause per
+    object with the verb of the clause (or `verb`, the previous clause's, when the clause has none); objects
+    without a destination share the last one stated (then they form a group), or, in a verbless sentence
+    that names none, `last_dest` (the previous clause's destination: "Then the tomato")."""
+    out: list[Clause] = []
+    for k, (text, start, end, joiner) in enumerate(clauses):
+        words = [w for w, _, _ in _words(text)]
+        own = bool(words) and words[0] in G.VERBS
+        if own:
+            cut = len(text.split(None, 1)[0])
+            v, args, a0 = text[:cut], text[cut:].lstrip(), len(text) - len(text[cut:].lstrip())
+        elif verb and k == 0:
+            v, args, a0 = verb, text, 0
+        else:
+            out.append(Clause(text, start, end, joiner))
+            continue
+        # split at sequence words that are followed by a movable object (not "then on the counter")
+        parts: list[tuple[str, int, str]] = []  # (segment, offset in args, joiner)
+        pos, seg_joiner = 0, joiner
+        for m in _GAP_SPLIT.finditer(args):
+            if m.start() <= pos or not _movable_np(args[m.end() :]):
+                continue
+            parts.append((args[pos : m.start()], pos, seg_joiner))
+            seg_joiner = _GAP_JOINER.get(m.group("j").lower(), "then")
+            pos = m.end()
+        parts.append((args[pos:], pos, seg_joiner))
+        parts = [(seg.strip(" ,"), off, j) for seg, off, j in parts if seg.strip(" ,")]
+        if own and len(parts) < 2:
+            out.append(Clause(text, start, end, joiner))
+            continue
+        if not parts or not _movable_np(parts[0][0]):
+            out.append(Clause(text, start, end, joiner))
+            continue
+        dests = [_dest_pp(v, seg) for seg, _, _ in parts]
+        shared = next((d for d in reversed(dests) if d), "") or ("" if own else last_dest)
+        missing = [i for i, d in enumerate(dests) if not d]
+        sharing = [i for i, d in enumerate(dests) if not d or d == shared]
+        gap = gap_base + k if len(sharing) > 1 and missing and shared else -1
+        for i, (seg, off, j) in enumerate(parts):
+            seg_text = seg
+            if not dests[i] and shared:  # "the saucers" + "in the upper rack"
+                seg_text = f"{seg.rstrip(' ,')} {shared}"
+            elif shared and dests[i] == shared:  # "the cups, in the upper rack": drop the comma
+                seg_text = re.sub(r"\s*,\s*(?=" + re.escape(shared) + r"$)", " ", seg)
+            label = f"{v} {seg_text}"
+            s0 = start + a0 + off
+            whole = text if own else f"{v} {text}"
+            out.append(Clause(label, s0, s0 + len(seg), j, gap if i in sharing else -1, label, whole))
+    return out
+
+
 def _match_prep(words: list[str], i: int) -> tuple[str, int] | None:
     for p in G.PREPOSITIONS:
         if tuple(words[i : i + len(p)]) == p:
             return " ".join(p), len(p)
     return None
+
+
+_SEQ_WORDS = {"then", "finally", "lastly", "afterwards", "afterward", "later"}  # not "next": "next to"
+_IN_SENTENCE = "in sentence"  # a "finally" that joins clauses of one sentence
+_THEN_TO = "then to"  # a further destination after a stop ("to the sink and finally the toilet")
 
 
 def parse_frame(text: str, start: int = 0, joiner: str = "") -> Frame:
@@ -459,11 +569,30 @@ def parse_frame(text: str, start: int = 0, joiner: str = "") -> Frame:
 
     while i < len(words):
         w = words[i]
+        if (
+            w in _SEQ_WORDS
+            and cur_prep is not None
+            and cur_prep in G.DEST_PREPS
+            and cls in {"place", "trash", "pick", "clean", "heat", "cool"}
+            and i + 1 < len(words)
+        ):
+            # "in the microwave, then on the counter" / "to the sink and finally the toilet": a further
+            # destination; the earlier ones become stops on the way
+            flush()
+            hit = _match_prep(words, i + 1)
+            i += 1 + (hit[1] if hit is not None and hit[0] in G.DEST_PREPS else 0)
+            cur_prep = _THEN_TO
+            continue
         if w in {",", "and"} or (w == "or" and cur_prep is None):
             flush()
             # a new list item starts when the next words are a noun phrase without preposition
             nxt = words[i + 1] if i + 1 < len(words) else ""
-            if nxt and nxt not in {",", "and"} and _match_prep(words, i + 1) is None and nxt not in {"then"}:
+            if (
+                nxt
+                and nxt not in {",", "and"}
+                and _match_prep(words, i + 1) is None
+                and nxt not in _SEQ_WORDS
+            ):
                 if item.obj is not None or item.pps:
                     items.append(item)
                     item = Item(obj=None)
@@ -497,6 +626,19 @@ def parse_frame(text: str, start: int = 0, joiner: str = "") -> Frame:
     if item.obj is not None or item.pps or not items:
         items.append(item)
     ambiguous = False
+    # "from the bath to the sink and finally the toilet": a sequence word before a fixed receptacle adds a
+    # further destination (the earlier ones are stops on the way)
+    while (
+        len(items) > 1
+        and items[-1].obj is not None
+        and not items[-1].pps
+        and any(p in G.DEST_PREPS for p, _ in items[-2].pps)
+        and _words(items[-1].obj.text)[0][0] in _SEQ_WORDS
+        and items[-1].obj.is_receptacle()
+        and not items[-1].obj.is_movable_receptacle()
+    ):
+        items[-2].pps.append((_THEN_TO, items[-1].obj))
+        items.pop()
     # "to region G, H and I": bare noun phrases after an item with a destination continue that destination
     if len(items) > 1 and items[-1].obj is not None and not items[-1].pps and items[-2].pps:
         ambiguous = True
@@ -530,8 +672,30 @@ def _same(a: NP | None, b: NP | None) -> bool:
 _UNDER = {"under", "underneath", "below", "beneath"}
 
 
-def _dest_of(item: Item) -> NP | None:
-    """The destination of one clause item: the receptacle after to/into/onto/in/on..."""
+_DIRECTIONAL = {
+    "to",
+    "into",
+    "onto",
+    "on to",
+    "in to",
+    "back into",
+    "back onto",
+    "back to",
+    "over to",
+    "up to",
+    "all the way to",
+}
+
+
+def _dest_of(item: Item, cls: str = "") -> NP | None:
+    """The destination of one clause item: the receptacle after to/into/onto/in/on... With a verb of taking
+    (`cls` "pick") only a direction counts ("take the towel to the hamper"); "pick up the card on the
+    couch" says where the card is."""
+    if cls == "pick":
+        item = Item(item.obj, [(p, np) for p, np in item.pps if p in _DIRECTIONAL])
+    last = [np for p, np in item.pps if p == _THEN_TO]
+    if last:
+        return last[-1]
     for p, np in item.pps:
         if p in G.DEST_PREPS and p not in _UNDER and np.is_receptacle():
             break  # "in a drawer under the sink": the drawer
@@ -542,23 +706,18 @@ def _dest_of(item: Item) -> NP | None:
         # "to the region H" in a domain without a lexicon entry: any NP after a destination preposition
         dests = [(p, np) for p, np in item.pps if p in G.DEST_PREPS and np.head and not np.pronoun]
     if not dests:
-        return None
+        # "place it with the coffee machine": a fixed receptacle after "with" is where the thing goes
+        fixed = [np for p, np in item.pps if p == "with" and _fixed(np)]
+        return fixed[0] if fixed and cls != "pick" else None
     for p, np in dests:
-        if p in {
-            "to",
-            "into",
-            "onto",
-            "on to",
-            "in to",
-            "back into",
-            "back onto",
-            "back to",
-            "over to",
-            "up to",
-            "all the way to",
-        }:
+        if p in _DIRECTIONAL:
             return np
     return dests[0][1]
+
+
+def _fixed(np: NP) -> bool:
+    """A receptacle that stays where it is (a table, the fridge), not a lamp."""
+    return np.is_receptacle() and not np.is_movable_receptacle() and not np.is_lamp() and not np.pronoun
 
 
 def _near_dest(item: Item) -> NP | None:
@@ -575,8 +734,9 @@ def _near_dest(item: Item) -> NP | None:
 
 
 class _Builder:
-    def __init__(self, grounder: Grounder | None, strict: bool) -> None:
+    def __init__(self, grounder: Grounder | None, strict: bool, look: AffordanceLookup | None = None) -> None:
         self.g = grounder
+        self.look = look
         self.strict = strict
         self.issues: list[str] = []
         self.unparsed: list[str] = []
@@ -614,7 +774,7 @@ class _Builder:
                 raise WorldError(msg)
             self.issues.append(msg)
             return None
-        got = self.g.resolve(np.entry)
+        got = self.g.candidates(np.entry)
         if not got:
             err = self.g.missing(np.entry, np.text)
             if self.strict:
@@ -622,6 +782,28 @@ class _Builder:
             self.issues.append(str(err))
             return [np.entry.canonical]
         return got
+
+    def ground(
+        self, kind: str, sliced: bool, nps: dict[str, NP | None]
+    ) -> dict[str, list[str] | None] | None:
+        """Types per field (object, container, receptacle, light): the scene's candidates of each word,
+        narrowed to those that can play their role (`Roles.narrow`), then the first one unless the word
+        accepts all ("table", "knife")."""
+        got = {role: self.types(np, role) for role, np in nps.items()}
+        if got["object"] is None:
+            return None
+        if self.g is None:
+            return got
+        roles = Roles(got["object"], got["receptacle"], got["container"], got["light"]).narrow(
+            self.look, kind, sliced
+        )
+        out: dict[str, list[str] | None] = {}
+        for role in nps:
+            types, np = getattr(roles, role), nps[role]
+            if types and np is not None and np.entry is not None and not np.entry.all_:
+                types = types[:1]
+            out[role] = types
+        return out
 
     # one draft -> BaseTaskSpec ------------------------------------------------------------------------
     def spec(self, d: Draft, text: str) -> BaseTaskSpec | None:
@@ -672,6 +854,8 @@ class _Builder:
                     count = max(count, 2)  # "one set of keys along with the other set"
                     continue
                 if p in G.WITH_PREPS and not np.pronoun:
+                    if p == "with" and _fixed(np):
+                        continue  # "place it with the coffee machine": the destination (_dest_of)
                     if np.water:
                         states.append("clean")
                         continue
@@ -709,7 +893,11 @@ class _Builder:
                         container = np
                     elif _same(np, obj):
                         count = max(count, 2)
-            dst = _dest_of(it) or _near_dest(it)
+            dst = _dest_of(it, fr.cls) or _near_dest(it)
+            if any(p == _THEN_TO for p, _ in it.pps):  # stops on the way come before the destination
+                dests += [
+                    np for p, np in it.pps if p in G.DEST_PREPS and np.is_receptacle() and np is not dst
+                ]
             if fr.cls == "trash" and dst is None:
                 dst = parse_np("garbage can")
             if dst is not None and not dst.is_lamp():
@@ -782,18 +970,27 @@ class _Builder:
             kind = "place_two"
         else:
             kind = "place"
-        obj_types = self.types(obj, "object")
-        if obj_types is None:
+        fields = self.ground(
+            kind,
+            sliced,
+            {
+                "object": obj,
+                "container": container if kind == "place_in_container" else None,
+                "receptacle": final if kind != "examine_in_light" else None,
+                "light": light if kind == "examine_in_light" else None,
+            },
+        )
+        if fields is None:
             return None
         spec = BaseTaskSpec(
             kind=kind,
-            object=obj_types,
+            object=fields["object"],
             count=min(count, 2) if kind == "place_two" else count,
             sliced=sliced,
             text=text,
-            container=self.types(container, "container") if kind == "place_in_container" else None,
-            receptacle=self.types(final, "receptacle") if kind != "examine_in_light" else None,
-            light=self.types(light, "light") if kind == "examine_in_light" else None,
+            container=fields["container"],
+            receptacle=fields["receptacle"],
+            light=fields["light"],
         )
         if kind == "place_two":
             spec.count = 2
@@ -816,7 +1013,7 @@ def _joins(d: Draft, fr: Frame, it: Item) -> bool:
     if fr.joiner == "after" or fr.joiner == "before":
         return False
     if o is None or o.empty:
-        if fr.cls == "fill" and _dest_of(it) is not None:
+        if fr.cls == "fill" and _dest_of(it, fr.cls) is not None:
             return False  # "fill water in the bathtub": not about the current object
         return fr.cls != "none" or bool(it.pps)
     if o.pronoun:
@@ -828,13 +1025,13 @@ def _joins(d: Draft, fr: Frame, it: Item) -> bool:
         return fr.cls in {"pick", "examine"} or (fr.cls == "place" and last_fr.cls == "light")
     if _same(o, cur):
         # "place the yellow block to region I, then place it... to region G": a second placement is a new task
-        prev_dest = _dest_of(d.frames[-1][1])
+        prev_dest = _dest_of(d.frames[-1][1], last_fr.cls)
         if (
             fr.joiner in {"then", "first"}
             and fr.cls == "place"
             and last_fr.cls == "place"
             and prev_dest is not None
-            and _dest_of(it) is not None
+            and _dest_of(it, fr.cls) is not None
             and (
                 prev_dest.entry is None
                 or prev_dest.entry.canonical not in {"SinkBasin", "Microwave", "Fridge"}
@@ -862,7 +1059,7 @@ def _joins(d: Draft, fr: Frame, it: Item) -> bool:
 def _incomplete(d: Draft) -> bool:
     """A draft that only picked / changed the state of something: the next clause usually completes it."""
     for fr, it in d.frames:
-        if _dest_of(it) is not None or fr.cls in {"light", "examine", "trash"} or fr.light_on:
+        if _dest_of(it, fr.cls) is not None or fr.cls in {"light", "examine", "trash"} or fr.light_on:
             return False
     return True
 
@@ -958,20 +1155,27 @@ def parse_instruction(
     types: set[str] | frozenset[str] | None = None,
     scene: str = "the scene",
     strict: bool = False,
+    affordances: AffordanceLookup | None = None,
 ) -> OfflineParse:
     """Parse one instruction. `types`: the scene's object types (None: keep the words, no grounding).
 
     With `strict=True` a word whose type is not in the scene raises `WorldError` ("no Statue in
     FloorPlan17"); otherwise it is kept with its most plausible type and listed in `issues`.
+    `affordances` (type -> `Affordances` or None when unknown; default: ALFRED's facts when the shared data
+    is there) narrows a word with several types to those that can play their role (`grounding.Roles`).
     """
     text = normalize(instruction)
     grounder = Grounder(types, scene) if types is not None else None
-    b = _Builder(grounder, strict)
+    if types is not None and affordances is None:
+        affordances = alfred_lookup()
+    b = _Builder(grounder, strict, affordances)
     drafts: list[Draft] = []
     units: list[Unit] = []
     extra_rel: list[tuple[str, int, str]] = []  # relation sentences between objects
     next_group = [-1]
     group_text: dict[int, str] = {}
+    gap_groups: dict[int, int] = {}  # Clause.gap -> group
+    last_verb, last_dest = "", ""
     for s_idx, (sentence, s_start) in enumerate(split_sentences(text)):
         body = sentence
         markers: list[tuple[str, str]] = []
@@ -1024,7 +1228,7 @@ def parse_instruction(
         if G.NO_ORDER_SENTENCE.search(body) and not any(w in G.VERBS for w, _, _ in _words(body)[:1]):
             continue
         offset = s_start + sentence.index(body) if body in sentence else s_start
-        clauses = split_clauses(body)
+        clauses = expand_gapping(split_clauses(body), last_verb, last_dest, gap_base=100 * s_idx)
         first_unit = len(units)
         sentence_drafts: list[int] = []
         prev_clause_tasks: list[int] = []
@@ -1032,8 +1236,14 @@ def parse_instruction(
         context: list[tuple[str, NP]] = []
         context_group = -1
         pending_joiner = ""
-        for c_text, c_start, _c_end, joiner in clauses:
+        for clause in clauses:
+            c_text, c_start, joiner = clause.text, clause.start, clause.joiner
             fr = parse_frame(c_text, offset + c_start, joiner)
+            if fr.cls not in {"none", "other"}:
+                last_verb = c_text.split()[0]
+                for it in fr.items:
+                    dst = _dest_of(it, fr.cls)
+                    last_dest = next((f"{p} {np.text}" for p, np in it.pps if np is dst), last_dest)
             joiner = joiner or pending_joiner
             pending_joiner = ""
             if fr.cls == "none":
@@ -1091,7 +1301,13 @@ def parse_instruction(
                         it.pps.extend(shared)
                 fr.items = _merge_items(fr.items, b)
             new_tasks: list[int] = []
-            if context_group >= 0:
+            if clause.gap >= 0:
+                if clause.gap not in gap_groups:
+                    next_group[0] += 1
+                    gap_groups[clause.gap] = next_group[0]
+                    group_text[next_group[0]] = clause.whole
+                group = gap_groups[clause.gap]
+            elif context_group >= 0:
                 group = context_group
             elif len(fr.items) > 1:
                 next_group[0] += 1
@@ -1122,7 +1338,7 @@ def parse_instruction(
                     d.frames.append((fr, it))
                     d.end = fr.end
                     continue
-                label = ""
+                label = clause.label if len(fr.items) == 1 else ""
                 if len(fr.items) > 1 or context:
                     label = _item_text(fr, it)
                 drafts.append(
@@ -1144,7 +1360,7 @@ def parse_instruction(
                 if joiner == "first":
                     unit.markers.append((G.FIRST, ""))
                 if joiner == "finally":
-                    unit.markers.append((G.FINALLY, ""))
+                    unit.markers.append((G.FINALLY, _IN_SENTENCE))
                 units.append(unit)
                 prev_clause_tasks = new_tasks
         sentence_units = units[first_unit:]
@@ -1155,7 +1371,7 @@ def parse_instruction(
                 u.markers.append((kind, ref))
         for kind, ref in trailing:
             if kind in {G.THEN, G.FINALLY} and len(sentence_units) > 1:
-                sentence_units[-1].markers.append((kind, ref))
+                sentence_units[-1].markers.append((kind, _IN_SENTENCE if kind == G.FINALLY else ref))
                 sentence_units[-1].before_sentence = len(units) - 2
             elif kind == G.FREE and len(sentence_units) == 1 and len(sentence_units[0].tasks) > 1:
                 pass  # "move the phone and the bat to the bed in any order": order inside the group is free
@@ -1207,7 +1423,9 @@ def parse_instruction(
             if kind == G.THEN and prev is not None:
                 edges.update((a, b2) for a in prev.tasks for b2 in u.tasks)
             elif kind == G.FINALLY:
-                edges.update((a, b2) for a in earlier if a not in free for b2 in u.tasks)
+                # "..., and finally Y" inside a sentence: after its sibling clauses too
+                scope = [t for t in range(min(u.tasks))] if ref == _IN_SENTENCE else earlier
+                edges.update((a, b2) for a in scope if a not in free for b2 in u.tasks)
             elif kind == G.AFTER_ALL:
                 edges.update((a, b2) for a in earlier for b2 in u.tasks)
             elif kind == G.BEFORE_PREV and prev is not None:
