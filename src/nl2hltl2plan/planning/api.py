@@ -13,7 +13,7 @@ from nl2hltl2plan.planning.extract import refine_stand_cells, to_plan, verify
 from nl2hltl2plan.planning.heuristic import Heuristic
 from nl2hltl2plan.planning.model import Infeasible, _required_leaves, build_problem
 from nl2hltl2plan.planning.navigation import Navigator
-from nl2hltl2plan.planning.search import MS_WEIGHT, Deadline, Searcher
+from nl2hltl2plan.planning.search import Deadline, Searcher
 from nl2hltl2plan.planning.state import Expander, Node
 from nl2hltl2plan.worlds.model import CELL_M, Cell, World
 from nl2hltl2plan.worlds.plan import Plan
@@ -23,7 +23,8 @@ Objective = Literal["min", "minmax"]
 Mode = Literal["fast", "exact"]
 DEFAULT_TIMEOUT_S = 300.0
 DEFAULT_W = 1.5
-FAST_EXPANSIONS = 3000  # AWA* expansions `fast` spends improving its first plan
+FAST_EXPANSIONS = 2000  # AWA* expansions `fast` spends improving its first plan (at most)
+FAST_IMPROVE_S = 1.0  # and seconds (at most)
 BEAM_WIDTH = 8
 BEAM_INSTANCES = 3
 
@@ -42,7 +43,8 @@ class PlanResult:
     steps: int | None = None  # completion time: last step at which some robot acts
     total_cost: int | None = None  # moves + actions, summed over robots (the paper's cost)
     cost: float | None = None  # the objective: total_cost (min) or steps (minmax)
-    lower_bound: float | None = None  # proven lower bound on the optimal cost in the planner's model
+    model_cost: float | None = None  # the objective before stand-cell refinement (the search's value)
+    lower_bound: float | None = None  # proven lower bound on the optimal model_cost
     bound: float | None = None  # cost / lower_bound (1.0: proven optimal)
     proven_optimal: bool = False
     plan_time_s: float = 0.0
@@ -59,7 +61,7 @@ class PlanResult:
     def to_dict(self, with_plan: bool = True) -> dict[str, Any]:
         out = {k: getattr(self, k) for k in (
             "status", "reason", "objective", "mode", "travel_m", "steps", "total_cost", "cost",
-            "lower_bound", "bound", "proven_optimal", "plan_time_s", "expanded", "generated", "stopped")}
+            "model_cost", "lower_bound", "bound", "proven_optimal", "plan_time_s", "expanded", "generated", "stopped")}
         if with_plan:
             out["plan"] = self.plan.model_dump(mode="json") if self.plan is not None else None
             out["events"] = self.events
@@ -76,6 +78,8 @@ def plan(
     capabilities: Sequence[Iterable[str] | None] | None = None,
     w: float = DEFAULT_W,
     fast_expansions: int = FAST_EXPANSIONS,
+    fast_improve_s: float = FAST_IMPROVE_S,
+    refine: bool | None = None,
 ) -> PlanResult:
     """Plan for a robot team under a hierarchical sc-LTL spec; every returned plan is executed in
     the simulator and checked against the spec before it is returned.
@@ -89,9 +93,12 @@ def plan(
     mode: "exact" returns a plan proven optimal for the objective in the planner's model (robots walk
     shortest paths to the nearest cell of each interaction region; a leaf starts after the tasks
     ordered before it are complete); "fast" (default) returns the first plan proven within factor
-    `w` of that optimum (`bound` <= w), or, once `fast_expansions` improvement steps are spent, the
-    best plan found with the ratio it could prove (`bound`; anytime). Both then re-optimise each
-    robot's stand cells, which never makes a plan worse.
+    `w` of that optimum (`bound` <= w), or, once `fast_expansions` improvement steps or
+    `fast_improve_s` seconds are spent, the best plan found with the ratio it could prove (`bound`;
+    anytime). `refine` (default: on in
+    fast, off in exact, so that an exact plan is the model's optimum) then re-optimises each robot's
+    stand cells for the chosen events, which never makes a plan worse (`model_cost` is the value
+    before, `cost` after).
 
     Returns a `PlanResult`: status solved / infeasible (with the reason) / timeout (no plan within
     `timeout_s`); plan (per-robot timed steps), travel_m, steps, total_cost, cost, lower_bound,
@@ -136,7 +143,8 @@ def plan(
             if mode == "exact":
                 best = searcher.awa(root, best, 1.0, 1.0)
             else:
-                best = searcher.awa(root, best, w, w, max_expansions=fast_expansions)
+                best = searcher.awa(root, best, w, w, max_expansions=fast_expansions,
+                                    stop_at=time.perf_counter() + fast_improve_s)
     except Deadline:
         searcher.stats.stopped = "timeout"
         if best is None:
@@ -151,7 +159,9 @@ def plan(
         result.plan_time_s = time.perf_counter() - t0
         return result
     unit_cost = searcher.cost(best) if objective == "min" else best.ms
-    refined = refine_stand_cells(x, best, objective)
+    if refine is None:
+        refine = mode == "fast"
+    refined = refine_stand_cells(x, best, objective) if refine else best
     events = refined.events()
     the_plan = to_plan(problem, x, events)
     execution = verify(problem, the_plan)
@@ -162,10 +172,11 @@ def plan(
     result.steps = execution.steps
     result.total_cost = refined.g
     result.cost = float(refined.g if objective == "min" else refined.ms)
+    result.model_cost = float(unit_cost)
     if stats.proven_optimal:
         stats.lower_bound = float(unit_cost)
     result.lower_bound = stats.lower_bound
-    result.bound = (result.cost / stats.lower_bound) if stats.lower_bound > 0 else None
+    result.bound = (unit_cost / stats.lower_bound) if stats.lower_bound > 0 else None
     result.proven_optimal = stats.proven_optimal
     result.events = [
         {"t": e.t, "robot": e.robot, "atom": e.atom, "task": problem.leaves[e.leaf].name if e.leaf >= 0 else None,
@@ -173,5 +184,4 @@ def plan(
         for e in events
     ]
     result.plan_time_s = time.perf_counter() - t0
-    assert MS_WEIGHT  # minmax costs are lexicographic (steps, total); see search.MS_WEIGHT
     return result

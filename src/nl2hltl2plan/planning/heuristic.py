@@ -1,28 +1,37 @@
 """Admissible lower bounds on the remaining cost of a node (both objectives).
 
-Summed cost (`min`): every remaining event costs 1 plus the steps its robot walks to it. A robot
-arrives at an event's region either from its current cell or from the stand cell of another event
-it did before, and that event is still pending now. So the walk to event e is at least
+Summed cost (`min`): every remaining event costs 1 plus the steps its robot walks to it. In any
+completion, each pending event e has exactly one immediate predecessor in its robot's sequence:
+the robot's current cell (its first future event) or another pending event; and each robot / event
+is the immediate predecessor of at most one event. So the walking is at least the cheapest
+*assignment* of distinct predecessors to pending events, with cost dist(region(pred), region(e)):
 
-    min( min over robots r of dist(cell_r, region(e)),
-         min over pending events e' that may precede e of dist(region(e'), region(e)) )
-
-where e' ranges over the pending events of other leaves and the earlier events of e's own leaf.
-Summing this over pending events counts every robot's walking legs at most once, so the sum is a
-lower bound. Unbound types use the nearest of their candidate instances; a leaf with alternative
-action sequences counts its cheapest one.
+- a pending event cannot be preceded by a later event of its own leaf, nor by an event of a leaf
+  that may only start after e's leaf is complete;
+- the put of an object carried since a pending pickup is preceded by that pickup or by an action
+  done with a full hand (open, close, toggle, slice), never by another pickup or put;
+- a robot's put-down of an object nobody needs (after examine_in_light) is not an event here; a walk
+  through it is no shorter than the direct walk, so the bound stays a lower bound.
+Unbound types use the nearest of their candidate instances. It is solved exactly with
+`scipy.optimize.linear_sum_assignment` (the assignment relaxation of the routing problem).
 
 Completion time (`minmax`): the largest of (a) the current makespan, (b) each leaf's chain: its
 events happen one after another, the first no earlier than a robot can reach it and than the tasks
-ordered before it can finish, a carried object's put no earlier than the walk from its pickup,
-and (c) the work bound: all robots' clocks plus all remaining work, divided among the robots.
+ordered before it can finish, a carried object's put no earlier than the walk from its pickup, and
+(c) the work bound: all robots' clocks plus all remaining work, divided among the robots.
 """
 
 from __future__ import annotations
 
+import numpy as np
+from scipy.optimize import linear_sum_assignment
+
 from nl2hltl2plan.planning.model import DONE, Leaf
 from nl2hltl2plan.planning.navigation import INF
 from nl2hltl2plan.planning.state import Expander, Node, bound
+
+BIG = 1 << 20  # forbidden predecessor (finite for the solver)
+OTHER, PICKUP, PUT = 0, 1, 2
 
 
 class Heuristic:
@@ -31,9 +40,45 @@ class Heuristic:
         self.p = expander.p
         self.nav = expander.nav
         self.required = required  # leaf indices every plan completes
+        nav = self.nav
+        n_obj = len(nav.ids)
+        has_region = [len(r) > 0 for r in nav.region_idx]
+        # anchor x anchor walking distances, and anchor x cell (distance fields)
+        self.field = np.full((n_obj, len(nav.cells)), INF, dtype=np.int64)
+        for a in range(n_obj):
+            if has_region[a]:
+                self.field[a] = nav.field(a)
+        self.rr = np.full((n_obj, n_obj), INF, dtype=np.int64)
+        for a in range(n_obj):
+            if has_region[a]:
+                self.rr[a] = self.field[:, nav.region_idx[a]].min(axis=1)
+        np.minimum(self.rr, self.rr.T, out=self.rr)
+        self.after = self._after_matrix()
+
+    def _after_matrix(self) -> np.ndarray:
+        """after[i, j]: leaf j may only start once leaf i is complete (gates, transitively)."""
+        p = self.p
+        n = len(p.leaves)
+        after = np.zeros((n, n), dtype=bool)
+        if not p.precedence:
+            return after
+        under: dict[str, list[int]] = {}
+        for lf in p.leaves:
+            for name in [lf.name, *p.ancestors(lf.name)]:
+                under.setdefault(name, []).append(lf.index)
+        for j, gates in p.gates.items():
+            for g in gates:
+                for i in under.get(g, []):
+                    after[i, j] = True
+        changed = True
+        while changed:  # transitive closure (tiny matrices)
+            new = after | ((after.astype(np.int64) @ after.astype(np.int64)) > 0)
+            changed = bool((new != after).any())
+            after = new
+        return after
 
     # ------------------------------------------------------------ symbolic regions of pending events
-    def _anchors_of(self, node: Node, leaf: Leaf, type_: str, verb: str, memo: dict) -> frozenset[int]:
+    def _anchors_of(self, node: Node, leaf: Leaf, type_: str, verb: str, memo: dict) -> tuple[int, ...]:
         key = (leaf.index, type_)
         hit = memo.get(key)
         if hit is not None:
@@ -52,105 +97,168 @@ class Heuristic:
                 a = anchor(sim, x.slice_of[o])
             if a >= 0:
                 out.add(a)
-        res = frozenset(out)
+        res = tuple(sorted(out))
         memo[key] = res
         return res
 
     def _path_events(self, node: Node, leaf: Leaf, path: tuple[int, ...], memo: dict) -> list[tuple]:
-        """[(anchors, carried_from)] per event: where it happens, and for a put of an object picked
-        up earlier in the path, the anchors of that pickup (a carry leg)."""
-        where: dict[str, frozenset[int]] = {}
-        picked_at: dict[str, frozenset[int]] = {}
+        """[(anchors, kind, carried_from position or -1, held_by robot or -1)] per event."""
+        where: dict[str, tuple[int, ...]] = {}
+        picked: dict[str, int] = {}
+        held = {}
+        sim = node.sim
+        for t, o in node.bind[leaf.index]:
+            if sim.holder[o] >= 0:
+                held[t] = sim.holder[o]
         out = []
-        for k in path:
+        for j, k in enumerate(path):
             atom = leaf.atoms[k]
             target = atom.types[-1]
             anchors = where.get(target)
             if anchors is None:
                 anchors = self._anchors_of(node, leaf, target, atom.verb, memo)
-            carried = picked_at.get(atom.types[0]) if atom.verb == "put" else None
-            out.append((anchors, carried))
-            if atom.verb == "put":
+            kind = PICKUP if atom.verb == "pickup" else PUT if atom.verb == "put" else OTHER
+            carried = picked.get(atom.types[0], -1) if kind == PUT else -1
+            holder = held.pop(atom.types[0], -1) if kind == PUT and carried < 0 else -1
+            out.append((anchors, kind, carried, holder))
+            if kind == PUT:
                 where[atom.types[0]] = anchors
-                picked_at.pop(atom.types[0], None)
-            elif atom.verb == "pickup":
-                picked_at[atom.types[0]] = anchors
+                picked.pop(atom.types[0], None)
+            elif kind == PICKUP:
+                picked[atom.types[0]] = j
                 where.pop(atom.types[0], None)
         return out
+
+    def _leaf_events(self, node: Node, leaf: Leaf, memo: dict) -> tuple[list[tuple], list[tuple]]:
+        """(events that must happen, events that may happen) for one leaf's remaining work."""
+        q = node.q[leaf.index]
+        paths = leaf.paths.get(q) or []
+        if not paths:
+            return [], []
+        evs = [self._path_events(node, leaf, path, memo) for path in paths]
+        if len(evs) == 1:
+            return evs[0], []
+        if len({len(e) for e in evs}) == 1:
+            # alternatives of equal length: merge event by event (a relaxation)
+            merged = []
+            for pos in range(len(evs[0])):
+                col = [e[pos] for e in evs]
+                anchors = tuple(sorted({a for c in col for a in c[0]}))
+                kinds = {c[1] for c in col}
+                carried = {c[2] for c in col}
+                holders = {c[3] for c in col}
+                merged.append((anchors, kinds.pop() if len(kinds) == 1 else OTHER,
+                               carried.pop() if len(carried) == 1 else -1,
+                               holders.pop() if len(holders) == 1 else -1))
+            return merged, []
+        return [], [ev for e in evs for ev in e]
 
     # ------------------------------------------------------------ the bound
     def evaluate(self, node: Node) -> tuple[int, int]:
         """(lower bound on remaining summed cost, lower bound on the final makespan)."""
         p = self.p
-        nav = self.nav
         memo: dict = {}
-        pending: dict[int, list[list[tuple]]] = {}
+        rows: list[tuple] = []  # (leaf, pos, anchors, kind, carried row, holder)
+        optional: list[tuple[int, ...]] = []
+        extra_events = 0
+        chain: dict[int, tuple[int, int]] = {}
         for lf in p.leaves:
-            q = node.q[lf.index]
-            if q == DONE or lf.index not in self.required:
+            if node.q[lf.index] == DONE or lf.index not in self.required:
                 continue
-            paths = lf.paths.get(q) or []
-            pending[lf.index] = [self._path_events(node, lf, path, memo) for path in paths]
-        if not pending:
+            must, may = self._leaf_events(node, lf, memo)
+            if not must:
+                extra_events += lf.min_events.get(node.q[lf.index], 0)
+                optional += [ev[0] for ev in may]
+                chain[lf.index] = (0, lf.min_events.get(node.q[lf.index], 0))
+                continue
+            base = len(rows)
+            for pos, (anchors, kind, carried, holder) in enumerate(must):
+                rows.append((lf.index, pos, anchors, kind, base + carried if carried >= 0 else -1, holder))
+        if not rows and not extra_events:
             return 0, node.ms
-        # anchors of every pending event per leaf (union over its alternatives)
-        leaf_anchors = {
-            li: frozenset().union(*(a for path in paths for a, _ in path)) if paths else frozenset()
-            for li, paths in pending.items()
-        }
-        cells = node.cell
-        robot_mem: dict[int, int] = {}
-
-        def from_robots(a: int) -> int:
-            hit = robot_mem.get(a)
-            if hit is None:
-                f = nav.field(a)
-                hit = robot_mem[a] = min(f[c] for c in cells)
-            return hit
-
-        rr = nav.rr
-        total = 0
-        leaf_cost: dict[int, int] = {}
-        chain: dict[int, tuple[int, int]] = {}  # leaf -> (first reach steps lb, chain length lb)
-        for li, paths in pending.items():
-            others = frozenset().union(*(leaf_anchors[o] for o in pending if o != li)) if len(pending) > 1 else frozenset()
-            best = INF
-            best_chain: tuple[int, int] | None = None
-            for path in paths:
-                cost = 0
-                earlier: set[int] = set()
-                first_reach = INF
-                length = 0
-                for j, (anchors, carried) in enumerate(path):
-                    if not anchors:
-                        walk = 0
-                    elif anchors & earlier or anchors & others:
-                        walk = 0
-                    else:
-                        walk = min(from_robots(a) for a in anchors)
-                        preds = earlier | others
-                        if walk and preds:
-                            walk = min(walk, min(rr(b, a) for b in preds for a in anchors))
-                    cost += 1 + walk
-                    if j == 0:
-                        first_reach = min((from_robots(a) for a in anchors), default=0)
-                        length = 1
-                    else:
-                        leg = 0
-                        if carried and anchors and not carried & anchors:
-                            leg = min(rr(b, a) for b in carried for a in anchors)
-                        length += 1 + leg
-                    earlier |= anchors
-                if cost < best:
-                    best = cost
-                if best_chain is None or length < best_chain[1]:
-                    best_chain = (first_reach, length)
-            if not paths:
-                best, best_chain = 0, (0, 0)
-            leaf_cost[li] = best
-            chain[li] = best_chain or (0, 0)
-            total += best
+        walk = self._assignment(node, rows, optional) if rows else 0
+        total = len(rows) + extra_events + walk
+        if p.n_robots and (chain or rows):
+            self._chains(node, rows, chain)
         return total, self._makespan(node, total, chain)
+
+    def _assignment(self, node: Node, rows: list[tuple], optional: list[tuple[int, ...]]) -> int:
+        n_ev = len(rows)
+        anchor_sets = [r[2] for r in rows]
+        cols = anchor_sets + optional
+        flat_a = [a for s in anchor_sets for a in (s or (-1,))]
+        flat_b = [b for s in cols for b in (s or (-1,))]
+        empty = [i for i, s in enumerate(anchor_sets) if not s]
+        a_idx = np.array(flat_a, dtype=np.int64)
+        b_idx = np.array(flat_b, dtype=np.int64)
+        a_starts = np.cumsum([0] + [max(1, len(s)) for s in anchor_sets[:-1]])
+        b_starts = np.cumsum([0] + [max(1, len(s)) for s in cols[:-1]])
+        # rows: events (successors); columns: predecessor events, then robots
+        sub = self.rr[np.ix_(b_idx, a_idx)]
+        if (b_idx < 0).any() or (a_idx < 0).any():
+            sub = sub.copy()
+            sub[b_idx < 0, :] = 0
+            sub[:, a_idx < 0] = 0
+        pred = np.minimum.reduceat(np.minimum.reduceat(sub, b_starts, axis=0), a_starts, axis=1)
+        robot = self.field[a_idx][:, list(node.cell)] if len(a_idx) else np.zeros((0, len(node.cell)))
+        robot = np.minimum.reduceat(robot, a_starts, axis=0).T  # robots x events
+        cost = np.vstack([pred, robot]).T.astype(np.int64)  # events x (preds + robots)
+        if empty:
+            cost[empty, :] = 0
+        np.minimum(cost, BIG, out=cost)
+        leaf = np.array([r[0] for r in rows])
+        pos = np.array([r[1] for r in rows])
+        kind = np.array([r[3] for r in rows])
+        n_pred = len(cols)
+        ev_cols = cost[:, :n_ev]
+        # a later (or the same) event of one's own leaf cannot come before
+        same = (leaf[:, None] == leaf[None, :]) & (pos[None, :] >= pos[:, None])
+        # an event of a leaf that starts only after mine is complete cannot come before
+        later = self.after[leaf[:, None], leaf[None, :]]
+        ev_cols[same | later] = BIG
+        # a carried object's put: after its pickup or a hands-full action, never another pick/put
+        for i, r in enumerate(rows):
+            if r[3] != PUT:
+                continue
+            carried, holder = r[4], r[5]
+            if carried < 0 and holder < 0:
+                continue
+            bad = kind != OTHER
+            if carried >= 0:
+                bad = bad.copy()
+                bad[carried] = False
+            ev_cols[i, bad] = BIG
+            if n_pred > n_ev:
+                pass  # optional events may be hands-full actions
+            if carried >= 0:
+                cost[i, n_pred:] = BIG
+            else:
+                keep = cost[i, n_pred + holder]
+                cost[i, n_pred:] = BIG
+                cost[i, n_pred + holder] = keep
+        cost[:, :n_ev] = ev_cols
+        r_ind, c_ind = linear_sum_assignment(cost)
+        total = int(cost[r_ind, c_ind].sum())
+        if total >= BIG:  # no valid assignment (cannot happen for a solvable node): fall back
+            return 0
+        return total
+
+    def _chains(self, node: Node, rows: list[tuple], chain: dict[int, tuple[int, int]]) -> None:
+        """Per leaf: (steps for the first robot to reach its next event, events + carry legs)."""
+        cells = list(node.cell)
+        by_leaf: dict[int, list[tuple]] = {}
+        for r in rows:
+            by_leaf.setdefault(r[0], []).append(r)
+        for li, evs in by_leaf.items():
+            first = evs[0][2]
+            reach = int(self.field[list(first)][:, cells].min()) if first else 0
+            length = 0
+            for r in evs:
+                length += 1
+                if r[3] == PUT and r[4] >= 0 and r[2] and rows[r[4]][2]:
+                    leg = self.rr[np.ix_(list(rows[r[4]][2]), list(r[2]))].min()
+                    length += int(min(leg, BIG))
+            chain[li] = (min(reach, BIG), length)
 
     def _makespan(self, node: Node, remaining: int, chain: dict[int, tuple[int, int]]) -> int:
         p = self.p

@@ -69,7 +69,7 @@ class Leaf:
     init: int  # DFA state, or DONE when the formula holds before any event
     moves: dict[int, list[tuple[int, int]]]  # state -> [(atom index, next state or DONE)]
     min_events: dict[int, int]  # state -> fewest events to satisfy the leaf
-    paths: dict[int, list[tuple[int, ...]]]  # state -> remaining atom sequences (at most MAX_PATHS)
+    paths: dict[int, list[tuple[int, ...]]]  # state -> minimal remaining atom sequences (if known)
     tools: frozenset[str]  # picked-up types used as tools (a knife that slices): shared by leaves
 
     def exclusive(self, verb: str, type_: str) -> bool:
@@ -291,8 +291,10 @@ def _compile_leaf(index: int, name: str, dfa: Dfa) -> Leaf:
                 seen.add(nxt)
                 queue.append(nxt)
         moves[q] = out
+    paths = _minimal_paths(moves)
+    if init != DONE and init in paths:
+        init, moves, paths = _trie(paths[init])
     min_events = _min_events(moves)
-    paths = {q: _paths(moves, q) for q in moves}
     picked = {a.types[0] for a in atoms if a.verb == "pickup"}
     slicing = any(a.verb == "slice" for a in atoms)
     tools = frozenset(t for t in picked if t in KNIFE_TYPES) if slicing else frozenset()
@@ -313,19 +315,75 @@ def _min_events(moves: dict[int, list[tuple[int, int]]]) -> dict[int, int]:
     return best
 
 
-def _paths(moves: dict[int, list[tuple[int, int]]], q: int) -> list[tuple[int, ...]]:
-    """Acyclic atom sequences from q to acceptance (at most MAX_PATHS, shortest first)."""
-    out: list[tuple[int, ...]] = []
-    stack: list[tuple[int, tuple[int, ...], frozenset[int]]] = [(q, (), frozenset([q]))]
-    while stack and len(out) < 4 * MAX_PATHS:
-        s, path, seen = stack.pop()
-        for k, nxt in moves.get(s, []):
+def _minimal_paths(moves: dict[int, list[tuple[int, int]]]) -> dict[int, list[tuple[int, ...]]]:
+    """Per state, the *minimal* atom sequences to acceptance: those containing no other accepting
+    sequence as a subsequence. Every accepting sequence contains one of them (drop repeated
+    states and useless events), which is what the heuristic needs to stay a lower bound. A state
+    whose set is unknown (a cycle, or more than MAX_PATHS sequences) gets no entry."""
+    memo: dict[int, list[tuple[int, ...]] | None] = {}
+    on_stack: set[int] = set()
+
+    def solve(q: int) -> list[tuple[int, ...]] | None:
+        if q in memo:
+            return memo[q]
+        if q in on_stack:
+            return None
+        on_stack.add(q)
+        cands: list[tuple[int, ...]] | None = []
+        for k, nxt in moves.get(q, []):
             if nxt == DONE:
-                out.append(path + (k,))
-            elif nxt not in seen and len(path) < 40:
-                stack.append((nxt, path + (k,), seen | {nxt}))
-    out.sort(key=len)
-    return out[:MAX_PATHS]
+                cands.append((k,))  # type: ignore[union-attr]
+                continue
+            rest = solve(nxt)
+            if rest is None:
+                cands = None
+                break
+            cands.extend((k,) + r for r in rest)  # type: ignore[union-attr]
+        on_stack.discard(q)
+        result = None
+        if cands is not None:
+            cands = sorted(set(cands), key=len)
+            kept: list[tuple[int, ...]] = []
+            for c in cands:
+                if not any(_is_subsequence(m, c) for m in kept):
+                    kept.append(c)
+            result = kept if len(kept) <= MAX_PATHS else None
+        memo[q] = result
+        return result
+
+    for q in moves:
+        solve(q)
+    return {q: v for q, v in memo.items() if v is not None}
+
+
+def _trie(sequences: list[tuple[int, ...]]) -> tuple[int, dict[int, list[tuple[int, int]]], dict[int, list[tuple[int, ...]]]]:
+    """Progress along the leaf's minimal action sequences as a trie (node 0 = nothing done): a
+    leaf never does an action that a shorter way of satisfying it would skip (e.g. switching from
+    the Mug to the Cup alternative half-way). Dropping such actions never costs more, since walks
+    obey the triangle inequality. Returns (root, moves, remaining sequences per node)."""
+    moves: dict[int, list[tuple[int, int]]] = {0: []}
+    rest: dict[int, list[tuple[int, ...]]] = {0: list(sequences)}
+    for seq in sequences:
+        node = 0
+        for j, k in enumerate(seq):
+            if j == len(seq) - 1:
+                if (k, DONE) not in moves[node]:
+                    moves[node].append((k, DONE))
+                break
+            nxt = next((n for kk, n in moves[node] if kk == k and n != DONE), None)
+            if nxt is None:
+                nxt = len(moves)
+                moves[nxt] = []
+                rest[nxt] = []
+                moves[node].append((k, nxt))
+            rest[nxt].append(seq[j + 1:])
+            node = nxt
+    return 0, moves, rest
+
+
+def _is_subsequence(small: tuple[int, ...], big: tuple[int, ...]) -> bool:
+    it = iter(big)
+    return all(x in it for x in small)
 
 
 def _gates(problem: Problem, leaf: str) -> tuple[str, ...]:
@@ -371,7 +429,7 @@ def _check_leaves(problem: Problem) -> None:
         if lf.init == DONE:
             continue
         problems = []
-        for path in lf.paths[lf.init] or [()]:
+        for path in lf.paths.get(lf.init) or [()]:
             why = None
             for k in path:
                 why = _atom_problem(problem, lf.atoms[k], reachable)

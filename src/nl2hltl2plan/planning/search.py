@@ -98,12 +98,16 @@ class Searcher:
 
     # ------------------------------------------------------------ seed
     def beam(self, root: Node, width: int, limit: int) -> Node | None:
-        """Beam search over macro successors; the cheapest goal found, or None."""
+        """Beam search over macro successors; the cheapest goal found, or None. Children are
+        first ranked by an estimate (parent's f plus the walking the step did), and only the best
+        few get the full heuristic."""
+        if root.h is None:
+            self.score(root)
         layer = [root]
         best: Node | None = None
         seen: set = set()
         while layer:
-            children: list[Node] = []
+            children: list[tuple[float, int, Node]] = []
             for node in layer:
                 self.check_time()
                 self.stats.expanded += 1
@@ -117,22 +121,42 @@ class Searcher:
                     if k in seen:
                         continue
                     seen.add(k)
-                    self.score(child)
-                    if best is not None and child.f >= self.cost(best):
-                        continue
-                    children.append(child)
-            children.sort(key=lambda n: (n.f, -n.g))
-            layer = children[:width]
+                    children.append((self.estimate(node, child), -child.g, child))
+            children.sort(key=lambda c: (c[0], c[1]))
+            scored = []
+            for _, _, child in children[: 3 * width]:
+                self.check_time()
+                self.score(child)
+                if best is not None and child.f >= self.cost(best):
+                    continue
+                scored.append(child)
+            scored.sort(key=lambda n: (n.f, -n.g))
+            layer = scored[:width]
         return best
+
+    def estimate(self, parent: Node, child: Node) -> float:
+        """A cheap guess of the child's f: the parent's, plus the walking of the step (the step's
+        actions were already in the parent's bound)."""
+        walked = 0
+        node: Node | None = child
+        while node is not None and node is not parent:
+            walked += node.event.travel if node.event is not None else 0
+            node = node.parent
+        if self.objective == "min":
+            return parent.f + walked
+        return parent.f + MS_WEIGHT * max(0, child.ms - parent.ms_lb) + walked
 
     # ------------------------------------------------------------ AWA*
     def awa(self, root: Node, incumbent: Node | None, w_order: float, w_stop: float,
-            max_expansions: int | None = None) -> Node | None:
+            max_expansions: int | None = None, stop_at: float | None = None) -> Node | None:
+        """Anytime weighted A* with deferred evaluation: a child enters the open list with its
+        parent's bound (valid for it too) and gets its own heuristic when it is first popped."""
         stats = self.stats
         best = incumbent
         ub = self.cost(best) if best is not None else float("inf")
         counter = itertools.count()
-        self.score(root)
+        if root.h is None:
+            self.score(root)
         open_heap: list = [(self.weighted(root, w_order), -root.g, next(counter), root)]
         lb_heap: list = [(root.f, next(counter), root)]
         table: dict = {}
@@ -150,10 +174,25 @@ class Searcher:
             if best is not None and max_expansions is not None and expansions >= max_expansions:
                 stop = "budget"
                 break
-            _, _, _, node = heapq.heappop(open_heap)
+            if best is not None and stop_at is not None and time.perf_counter() > stop_at:
+                stop = "budget"
+                break
+            key, _, _, node = heapq.heappop(open_heap)
             if node.closed or self._stale(table, node):
                 node.closed = True
                 continue
+            if node.h is None:  # deferred evaluation
+                estimate = node.f
+                self.score(node)
+                node.f = max(node.f, estimate)  # both bound the optimum below
+                if node.f >= ub:
+                    node.closed = True
+                    continue
+                heapq.heappush(lb_heap, (node.f, next(counter), node))
+                new_key = self.weighted(node, w_order)
+                if open_heap and new_key > open_heap[0][0]:
+                    heapq.heappush(open_heap, (new_key, -node.g, next(counter), node))
+                    continue
             node.closed = True
             if node.f >= ub:
                 continue
@@ -166,10 +205,13 @@ class Searcher:
                     if c < ub:
                         ub, best = c, child
                     continue
-                self.score(child)
+                child.h = None
+                child.ms_lb = max(node.ms_lb, child.ms)
+                child.f = max(node.f, self._floor(child))
                 if child.f >= ub or not self._record(table, child):
                     continue
-                heapq.heappush(open_heap, (self.weighted(child, w_order), -child.g, next(counter), child))
+                key = child.f if w_order == 1.0 else self._weighted_guess(node, child, w_order)
+                heapq.heappush(open_heap, (key, -child.g, next(counter), child))
                 heapq.heappush(lb_heap, (child.f, next(counter), child))
         if stop == "exhausted" and not open_heap:
             stats.exhausted = True
@@ -179,9 +221,22 @@ class Searcher:
         stats.proven_optimal = best is not None and (stats.exhausted or stats.lower_bound >= self._unit(ub))
         return best
 
+    def _floor(self, node: Node) -> int:
+        """A cheap admissible f: cost so far (the parent's bound covers the rest)."""
+        if self.objective == "min":
+            return node.g
+        return MS_WEIGHT * node.ms + node.g
+
+    def _weighted_guess(self, parent: Node, child: Node, w: float) -> float:
+        h_guess = max(0, parent.h - (child.g - parent.g))
+        if self.objective == "min":
+            return child.g + w * h_guess
+        return MS_WEIGHT * max(child.ms, parent.ms_lb) + child.g + w * h_guess
+
     def _lower_bound(self, lb_heap: list) -> int | None:
-        while lb_heap and lb_heap[0][2].closed:
-            # closed nodes no longer bound the optimum: their children are in the open list
+        while lb_heap and (lb_heap[0][2].closed or lb_heap[0][0] < lb_heap[0][2].f):
+            # closed nodes no longer bound the optimum (their children are in the open list), and
+            # an entry below its node's f is an old estimate of a node pushed again
             heapq.heappop(lb_heap)
         return lb_heap[0][0] if lb_heap else None
 

@@ -52,7 +52,10 @@ class Node:
 
     def __init__(self) -> None:
         self.closed = False
-        self._memo: dict | None = None
+        self._memo: tuple | None = None
+        self.h: int | None = None
+        self.ms_lb = 0
+        self.f = 0
 
     def events(self) -> list[Event]:
         out = []
@@ -61,6 +64,21 @@ class Node:
             out.append(node.event)
             node = node.parent
         return out[::-1]
+
+
+def _subtree(sim: SimState, root: int) -> list[int]:
+    """`root` and everything inside it (SimState.subtree, without the full scan for leaves)."""
+    parent = sim.parent
+    if root not in parent:
+        return [root]
+    out = [root]
+    k = 0
+    while k < len(out):
+        p = out[k]
+        if p in parent:
+            out.extend(i for i, q in enumerate(parent) if q == p)
+        k += 1
+    return out
 
 
 def bound(node: Node, leaf: int, type_: str) -> int:
@@ -257,17 +275,17 @@ class Expander:
 
         o = objs[0]
         if verb == "pickup":
-            return chain(o) + sim.subtree(o)
+            return chain(o) + _subtree(sim, o)
         if verb == "put":
             rec = chain(objs[1])
             faucets = [f for y in rec for f in self.comp.faucets_of.get(y, ())]
-            return sim.subtree(o) + rec + faucets
+            return _subtree(sim, o) + rec + faucets
         if verb in ("open", "close"):
             return chain(o)
         if verb in ("toggle_on", "toggle_off"):
-            out = chain(o) + sim.subtree(o)
+            out = chain(o) + _subtree(sim, o)
             if self.serves[o] >= 0:
-                out += sim.subtree(self.serves[o])
+                out += _subtree(sim, self.serves[o])
             return out
         if verb == "slice":
             knife = sim.hand.get(robot, -1)
@@ -439,21 +457,25 @@ class Expander:
             node.q[lf.index] != DONE and (node.leaf_t[lf.index] > 0 or self.enabled(node, lf)) for lf in p.leaves
         ]
         holder_leaf = self._held_leaves(node)
+        robots = []
         for r in range(p.n_robots):
             hand = sim.hand.get(r, -1)
             sym = (node.cell[r], hand, self.cap_class[r], node.clock[r])
             if hand < 0 and sym in seen_robot:
                 continue  # robots in identical situations are interchangeable
             seen_robot.add(sym)
+            robots.append(r)
             if hand >= 0 and holder_leaf.get(hand, -1) < 0:
                 out.extend(self._put_downs(node, r, hand, limit))
-            for lf in p.leaves:
-                if not leaf_enabled[lf.index]:
-                    continue
-                for k, q_next in lf.moves[node.q[lf.index]]:
-                    atom = lf.atoms[k]
-                    if not p.can_do(r, atom):
-                        continue
+        for lf in p.leaves:
+            if not leaf_enabled[lf.index]:
+                continue
+            for k, q_next in lf.moves[node.q[lf.index]]:
+                atom = lf.atoms[k]
+                able = [r for r in robots if p.can_do(r, atom)]
+                if limit is not None and len(able) > limit:
+                    able = self._closest_robots(node, lf, atom, able)[:limit]
+                for r in able:
                     made = 0
                     for objs in self.bindings(node, lf, atom, r, limit is not None):
                         child = self.apply(node, r, lf, k, objs, q_next)
@@ -466,6 +488,25 @@ class Expander:
                         if limit is not None and made >= limit:
                             break  # restricted successors: the nearest few instances that work
         return out
+
+    def _closest_robots(self, node: Node, leaf: Leaf, atom: Atom, robots: list[int]) -> list[int]:
+        """Robots ordered by when they could reach the atom's nearest candidate (restricted mode)."""
+        sim = node.sim
+        holder = {sim.hand.get(r, -1): r for r in robots}
+        for _, o in node.bind[leaf.index]:
+            if o in holder:
+                return [holder[o]] + [r for r in robots if r != holder[o]]  # the one carrying it first
+        cands = self.candidates(node, leaf, atom, len(atom.types) - 1)
+        anchors = {a for o in cands if (a := self.nav.anchor(sim, o)) >= 0}
+        if not anchors:
+            return robots
+        fields = [self.nav.field(a) for a in anchors]
+
+        def reach(r: int) -> tuple[int, int]:
+            c = node.cell[r]
+            return (node.clock[r] + min(f[c] for f in fields), r)
+
+        return sorted(robots, key=reach)
 
     def _held_leaves(self, node: Node) -> dict[int, int]:
         """Held object -> the unfinished leaf that bound it (absent: nobody needs it in hand)."""
