@@ -64,7 +64,8 @@ def oracle_job(objective: str = "min", mode: str = "fast", timeout_s: float = 30
         issues = benchmark_issues(world, gt)
         spec = oracle_spec(gt, world).spec
         starts = start_cells(world, gt, scenario.robots, scenario.draw)
-        row = plan_and_check(world, spec, gt, starts, objective=objective, mode=mode, timeout_s=timeout_s, **planner)
+        row = plan_and_check(world, spec, gt, starts, objective=objective, mode=mode, timeout_s=timeout_s,
+                             **planner)
         row["feasible"] = not issues
         row["issues"] = issues
         row["gt_feasible"] = gt.feasible

@@ -27,6 +27,11 @@ def percentile(values: Sequence[float], q: float) -> float:
     return ordered[k]
 
 
+def _median(values: list[float | None]) -> float | None:
+    vals = [float(v) for v in values if v is not None]
+    return round(statistics.median(vals), 4) if vals else None
+
+
 def _mean_std(values: list[float]) -> tuple[float | None, float | None]:
     if not values:
         return None, None
@@ -59,7 +64,7 @@ def summarize(rows: Sequence[Row]) -> dict[str, Any]:
             "travel_m_std": travel[1],
             "steps_mean": steps[0],
             "steps_std": steps[1],
-            "plan_time_s_median": round(statistics.median([r["plan_time_s"] for r in grp]), 4) if grp else None,
+            "plan_time_s_median": _median([r.get("plan_time_s") for r in grp]),
         })
     statuses: dict[str, int] = {}
     for r in rows:
@@ -101,7 +106,8 @@ def format_table(summary: dict[str, Any], title: str = "") -> str:
         rate = "-" if r["success_rate"] is None else f"{100 * r['success_rate']:.1f}"
         label = f"{r['n_base']}-{r['robots']}"
         ours = (f"{label:>12} {r['feasible']:>8} {r['success']:>8} {rate:>7} "
-                f"{_pm(r['travel_m_mean'], r['travel_m_std']):>11} {_pm(r['steps_mean'], r['steps_std']):>11}")
+                f"{_pm(r['travel_m_mean'], r['travel_m_std']):>11} "
+                f"{_pm(r['steps_mean'], r['steps_std']):>11}")
         if p:
             o = p["ours"]
             theirs = (f"{o['planning']:>10} {_pm(*o['travel_m']):>11} {_pm(*o['steps']):>11}")
@@ -112,10 +118,12 @@ def format_table(summary: dict[str, Any], title: str = "") -> str:
     lines.append("-" * len(head))
     lines.append(
         f"scenarios {summary['scenarios']}, feasible {summary['feasible']}, solved {summary['solved']}, "
-        f"success {summary['success']} (feasible and checked: {summary['feasible_success']}/{summary['feasible']}), "
+        f"success {summary['success']} "
+        f"(feasible and checked: {summary['feasible_success']}/{summary['feasible']}), "
         f"infeasible reported {summary['infeasible_reported']}"
     )
-    lines.append(f"planning time s: median {t['median']}, p95 {t['p95']}, max {t['max']} (statuses {summary['statuses']})")
+    lines.append(f"planning time s: median {t['median']}, p95 {t['p95']}, max {t['max']} "
+                 f"(statuses {summary['statuses']})")
     lines.append("paper PL % = the paper's planning success rate (its planner on its own converted specs);"
                  " rate % here = success / feasible")
     return "\n".join(lines)

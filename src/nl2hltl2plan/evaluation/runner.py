@@ -13,6 +13,7 @@ from __future__ import annotations
 import json
 import multiprocessing as mp
 import os
+import signal
 import time
 import traceback
 from collections.abc import Callable, Iterable
@@ -54,6 +55,7 @@ def load_rows(path: Path) -> dict[str, Row]:
 
 
 def _child(job: Callable[[Scenario], Row], scenario: Scenario, conn: Connection) -> None:
+    os.setpgid(0, 0)  # own process group: a kill also ends what the job itself started
     try:
         row = job(scenario)
     except BaseException as exc:  # report every failure to the parent as data
@@ -98,30 +100,48 @@ def run_scenarios(
             if progress:
                 progress(row, finished, len(scenarios))
 
-        while todo or running:
-            while todo and len(running) < workers:
-                scenario = todo.pop(0)
-                parent_end, child_end = ctx.Pipe(duplex=False)
-                proc = ctx.Process(target=_child, args=(job, scenario, child_end), daemon=True)
-                proc.start()
-                child_end.close()
-                running[parent_end] = (proc, scenario, time.perf_counter())
-            for conn in wait(list(running), timeout=0.2):
-                proc, scenario, _ = running.pop(conn)  # type: ignore[index]
-                try:
-                    row = conn.recv()
-                except (EOFError, OSError):
-                    row = {"status": "error", "reason": f"worker died (exit code {proc.exitcode})"}
+        try:
+            _loop(todo, running, workers, hard_timeout_s, ctx, job, record)
+        finally:
+            for conn, (proc, _, _) in running.items():  # interrupted: leave no worker behind
+                _kill(proc)
                 conn.close()
-                proc.join(timeout=5)
-                record(scenario, row)
-            now = time.perf_counter()
-            for conn, (proc, scenario, started) in list(running.items()):
-                if now - started > hard_timeout_s:
-                    proc.kill()
-                    proc.join(timeout=5)
-                    conn.close()
-                    del running[conn]
-                    record(scenario, {"status": "timeout", "killed": True, "plan_time_s": round(now - started, 3),
-                                      "reason": f"killed after {hard_timeout_s:g} s"})
     return [done[s.key] for s in scenarios if s.key in done]
+
+
+def _loop(todo, running, workers, hard_timeout_s, ctx, job, record) -> None:
+    while todo or running:
+        while todo and len(running) < workers:
+            scenario = todo.pop(0)
+            parent_end, child_end = ctx.Pipe(duplex=False)
+            # not a daemon: the planner may itself fork (Spot translations with a time limit)
+            proc = ctx.Process(target=_child, args=(job, scenario, child_end))
+            proc.start()
+            child_end.close()
+            running[parent_end] = (proc, scenario, time.perf_counter())
+        for conn in wait(list(running), timeout=0.2):
+            proc, scenario, _ = running.pop(conn)  # type: ignore[index]
+            try:
+                row = conn.recv()
+            except (EOFError, OSError):
+                row = {"status": "error", "reason": f"worker died (exit code {proc.exitcode})"}
+            conn.close()
+            proc.join(timeout=5)
+            record(scenario, row)
+        now = time.perf_counter()
+        for conn, (proc, scenario, started) in list(running.items()):
+            if now - started > hard_timeout_s:
+                _kill(proc)
+                conn.close()
+                del running[conn]
+                record(scenario, {"status": "timeout", "killed": True, "plan_time_s": round(now - started, 3),
+                                  "reason": f"killed after {hard_timeout_s:g} s"})
+
+
+def _kill(proc) -> None:
+    """Kill a worker and its process group (it made itself the group leader)."""
+    try:
+        os.killpg(proc.pid, signal.SIGKILL)
+    except (ProcessLookupError, PermissionError):
+        proc.kill()
+    proc.join(timeout=5)

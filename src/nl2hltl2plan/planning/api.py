@@ -61,7 +61,8 @@ class PlanResult:
     def to_dict(self, with_plan: bool = True) -> dict[str, Any]:
         out = {k: getattr(self, k) for k in (
             "status", "reason", "objective", "mode", "travel_m", "steps", "total_cost", "cost",
-            "model_cost", "lower_bound", "bound", "proven_optimal", "plan_time_s", "expanded", "generated", "stopped")}
+            "model_cost", "lower_bound", "bound", "proven_optimal", "plan_time_s", "expanded", "generated",
+            "stopped")}
         if with_plan:
             out["plan"] = self.plan.model_dump(mode="json") if self.plan is not None else None
             out["events"] = self.events
@@ -77,8 +78,8 @@ def plan(
     timeout_s: float = DEFAULT_TIMEOUT_S,
     capabilities: Sequence[Iterable[str] | None] | None = None,
     w: float = DEFAULT_W,
-    fast_expansions: int = FAST_EXPANSIONS,
-    fast_improve_s: float = FAST_IMPROVE_S,
+    fast_expansions: int | None = FAST_EXPANSIONS,
+    fast_improve_s: float | None = FAST_IMPROVE_S,
     refine: bool | None = None,
 ) -> PlanResult:
     """Plan for a robot team under a hierarchical sc-LTL spec; every returned plan is executed in
@@ -91,14 +92,15 @@ def plan(
     objective: "min" minimises moves + actions summed over robots (the paper's cost); "minmax"
     minimises the completion time (steps), ties broken by the summed cost.
     mode: "exact" returns a plan proven optimal for the objective in the planner's model (robots walk
-    shortest paths to the nearest cell of each interaction region; a leaf starts after the tasks
-    ordered before it are complete); "fast" (default) returns the first plan proven within factor
-    `w` of that optimum (`bound` <= w), or, once `fast_expansions` improvement steps or
-    `fast_improve_s` seconds are spent, the best plan found with the ratio it could prove (`bound`;
-    anytime). `refine` (default: on in
-    fast, off in exact, so that an exact plan is the model's optimum) then re-optimises each robot's
-    stand cells for the chosen events, which never makes a plan worse (`model_cost` is the value
-    before, `cost` after).
+    shortest paths to the nearest cell of each interaction region; a leaf follows one of its minimal
+    action sequences; a leaf starts after the tasks ordered before it are complete). "fast" (default)
+    is anytime: a beam-search plan first, then anytime weighted A* (weight `w`) improves it until
+    it is proven optimal or the improvement budget (`fast_expansions` expansions, `fast_improve_s`
+    seconds) is spent; `bound` is the ratio to the optimum it could prove. With both budgets None,
+    fast stops as soon as the plan is proven within factor `w` (bounded suboptimality). `refine`
+    (default: on in fast, off in exact, so that an exact plan is the model's optimum) then
+    re-optimises each robot's stand cells for the chosen events, which never makes a plan worse
+    (`model_cost` is the value before, `cost` after).
 
     Returns a `PlanResult`: status solved / infeasible (with the reason) / timeout (no plan within
     `timeout_s`); plan (per-robot timed steps), travel_m, steps, total_cost, cost, lower_bound,
@@ -143,8 +145,11 @@ def plan(
             if mode == "exact":
                 best = searcher.awa(root, best, 1.0, 1.0)
             else:
-                best = searcher.awa(root, best, w, w, max_expansions=fast_expansions,
-                                    stop_at=time.perf_counter() + fast_improve_s)
+                unbounded = fast_expansions is None and fast_improve_s is None
+                best = searcher.awa(
+                    root, best, w, w if unbounded else 1.0, max_expansions=fast_expansions,
+                    stop_at=None if fast_improve_s is None else time.perf_counter() + fast_improve_s,
+                )
     except Deadline:
         searcher.stats.stopped = "timeout"
         if best is None:
@@ -179,7 +184,8 @@ def plan(
     result.bound = (unit_cost / stats.lower_bound) if stats.lower_bound > 0 else None
     result.proven_optimal = stats.proven_optimal
     result.events = [
-        {"t": e.t, "robot": e.robot, "atom": e.atom, "task": problem.leaves[e.leaf].name if e.leaf >= 0 else None,
+        {"t": e.t, "robot": e.robot, "atom": e.atom,
+         "task": problem.leaves[e.leaf].name if e.leaf >= 0 else None,
          "objects": [world.ids[o] for o in e.objs], "travel_m": e.travel * CELL_M}
         for e in events
     ]

@@ -116,5 +116,6 @@ def verify(problem: Problem, plan: Plan) -> Execution:
     trace = [TraceEvent(e.t, e.atom, e.task) for e in execution.events]
     result = problem.spec.check_trace(trace)
     if not result.ok:
-        raise PlanningError("internal error: the plan does not satisfy the specification: " + "; ".join(result.reasons))
+        raise PlanningError("internal error: the plan does not satisfy the specification: "
+                            + "; ".join(result.reasons))
     return execution

@@ -79,7 +79,8 @@ class Heuristic:
 
     # ------------------------------------------------------------ symbolic regions of pending events
     def _anchors_of(self, node: Node, leaf: Leaf, type_: str, verb: str, memo: dict) -> tuple[int, ...]:
-        key = (leaf.index, type_)
+        taking = verb in ("pickup", "slice")
+        key = (leaf.index, type_, taking)
         hit = memo.get(key)
         if hit is not None:
             return hit
@@ -88,7 +89,7 @@ class Heuristic:
         anchor = self.nav.anchor
         b = bound(node, leaf.index, type_)
         objs = [b] if b >= 0 else x.by_type.get(type_, [])
-        if b < 0 and leaf.exclusive(verb, type_):
+        if b < 0 and node.claimed and taking:
             objs = [o for o in objs if o not in node.claimed]
         out = set()
         for o in objs:

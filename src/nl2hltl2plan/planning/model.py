@@ -194,7 +194,8 @@ def build_problem(
         entry = frozenset(entry)
         for c in entry:
             if c not in ACTION_ARITY and parse_atom(c) is None:
-                raise PlanningError(f"robot {r}: capability {c!r} is neither a verb ({', '.join(ACTION_ARITY)}) "
+                raise PlanningError(f"robot {r}: capability {c!r} is neither a verb "
+                                    f"({', '.join(ACTION_ARITY)}) "
                                     "nor an action atom like pickup(Apple)")
         caps.append(entry)
 
@@ -356,7 +357,10 @@ def _minimal_paths(moves: dict[int, list[tuple[int, int]]]) -> dict[int, list[tu
     return {q: v for q, v in memo.items() if v is not None}
 
 
-def _trie(sequences: list[tuple[int, ...]]) -> tuple[int, dict[int, list[tuple[int, int]]], dict[int, list[tuple[int, ...]]]]:
+Moves = dict[int, list[tuple[int, int]]]
+
+
+def _trie(sequences: list[tuple[int, ...]]) -> tuple[int, Moves, dict[int, list[tuple[int, ...]]]]:
     """Progress along the leaf's minimal action sequences as a trie (node 0 = nothing done): a
     leaf never does an action that a shorter way of satisfying it would skip (e.g. switching from
     the Mug to the Cup alternative half-way). Dropping such actions never costs more, since walks
@@ -409,7 +413,8 @@ def _check_orderings(problem: Problem) -> None:
                 cycle = nx.find_cycle(g)
                 order = " before ".join([a for a, _ in cycle] + [cycle[0][0]])
                 raise Infeasible(f"{nl.name}: the ordering of its tasks has a cycle ({order})")
-        raise Infeasible(f"{nl.name}: no order of completing its tasks satisfies {problem.spec.text(nl.name)}")
+        raise Infeasible(f"{nl.name}: no order of completing its tasks satisfies "
+                         f"{problem.spec.text(nl.name)}")
 
 
 def _check_leaves(problem: Problem) -> None:
@@ -445,6 +450,31 @@ def _check_leaves(problem: Problem) -> None:
         blocking = {n: r for n, r in reasons.items() if n in required}
         if blocking:
             raise Infeasible("; ".join(f"{n}: {r}" for n, r in blocking.items()))
+    _check_supply(problem, robot_cells)
+
+
+def _check_supply(problem: Problem, robot_cells: set[Cell]) -> None:
+    """Each task takes its own object: more required leaves that must pick up a type than the world
+    has reachable instances of it cannot all be done."""
+    world = problem.world
+    required = _required_leaves(problem)
+    demand: dict[str, list[str]] = {}
+    for lf in problem.leaves:
+        paths = lf.paths.get(lf.init)
+        if lf.name not in required or lf.init == DONE or not paths:
+            continue
+        must = None
+        for path in paths:
+            taken = {lf.atoms[k].types[0] for k in path
+                     if lf.exclusive(lf.atoms[k].verb, lf.atoms[k].types[0])}
+            must = taken if must is None else must & taken
+        for t in must or ():
+            demand.setdefault(t, []).append(lf.name)
+    for t, leaves in sorted(demand.items()):
+        supply = sum(1 for o in world.instances(t) if _reach(world, o.slice_of or o.id, robot_cells))
+        if len(leaves) > supply:
+            raise Infeasible(f"{', '.join(leaves)} each need their own {t}, but the robots can reach "
+                             f"{supply} {t}{'' if supply == 1 else 's'} in {world.name}")
 
 
 def _reach(world: World, oid: str, cells: set[Cell]) -> bool:

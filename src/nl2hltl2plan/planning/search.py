@@ -49,12 +49,10 @@ class Searcher:
         self.objective = objective
         self.deadline = deadline
         self.stats = SearchStats()
-        self._tick = 0
 
     # ------------------------------------------------------------ bookkeeping
     def check_time(self) -> None:
-        self._tick += 1
-        if self._tick & 31 == 0 and time.perf_counter() > self.deadline:
+        if time.perf_counter() > self.deadline:
             raise Deadline
 
     def score(self, node: Node) -> None:
@@ -94,7 +92,8 @@ class Searcher:
                        key=lambda r: (node.cell[r], hand.get(r, -1), self.x.cap_class[r], node.clock[r]))
         obj_t = node.obj_t
         touched = tuple(obj_t.get(i, 0) for i in range(self.x.n_objects))
-        return (tuple(node.clock[r] for r in order), node.leaf_t, node.done_t, node.last_done, node.ms, touched)
+        clocks = tuple(node.clock[r] for r in order)
+        return (clocks, node.leaf_t, node.done_t, node.last_done, node.ms, touched)
 
     # ------------------------------------------------------------ seed
     def beam(self, root: Node, width: int, limit: int) -> Node | None:

@@ -204,10 +204,10 @@ class Expander:
         if b >= 0:
             return [b]
         out = self.by_type.get(type_, [])
-        exclusive = pos == 0 and leaf.exclusive(atom.verb, type_)
-        own = {o for _, o in node.bind[leaf.index]}
-        if exclusive:
-            out = [o for o in out if o not in node.claimed or o in own]
+        if node.claimed and pos == 0 and atom.verb in ("pickup", "slice"):
+            # an object another task took for itself is off limits, also as a tool (a knife being
+            # cleaned is not the one to slice with); as a receptacle it may still be used
+            out = [o for o in out if o not in node.claimed]
         if type_ == "Faucet":
             basin = bound(node, leaf.index, "SinkBasin")
             if basin >= 0:
@@ -218,7 +218,8 @@ class Expander:
                 out = [self.serves[faucet]]
         return out
 
-    def bindings(self, node: Node, leaf: Leaf, atom: Atom, robot: int, ordered: bool) -> list[tuple[int, ...]]:
+    def bindings(self, node: Node, leaf: Leaf, atom: Atom, robot: int,
+                 ordered: bool) -> list[tuple[int, ...]]:
         """Object tuples for the atom (`ordered`: nearest instances first)."""
         sim = node.sim
         lists = []
@@ -234,7 +235,8 @@ class Expander:
         return [(a, b) for a in lists[0] for b in lists[1] if a != b]
 
     def _present_or_coming(self, sim: SimState, o: int) -> bool:
-        return bool(sim.flags[o] & PRESENT) or (self.slice_of[o] >= 0 and bool(sim.flags[self.slice_of[o]] & PRESENT))
+        src = self.slice_of[o]
+        return bool(sim.flags[o] & PRESENT) or (src >= 0 and bool(sim.flags[src] & PRESENT))
 
     def _nearest_first(self, node: Node, robot: int, cands: list[int], leaf: Leaf, atom: Atom) -> list[int]:
         cell = node.cell[robot]
@@ -392,7 +394,8 @@ class Expander:
             return self.nav.nearest(cell, anchor)
         return stand, int(self.nav.dm[cell, stand])
 
-    def put_down(self, node: Node, robot: int, surface: int, leaf: int, stand: int | None = None) -> Node | None:
+    def put_down(self, node: Node, robot: int, surface: int, leaf: int,
+                 stand: int | None = None) -> Node | None:
         """Put a held object nobody needs any more on a surface (attributed to its finished leaf)."""
         sim = node.sim
         obj = sim.hand.get(robot, -1)
@@ -454,7 +457,8 @@ class Expander:
         seen_robot: set[tuple] = set()
         sim = node.sim
         leaf_enabled = [
-            node.q[lf.index] != DONE and (node.leaf_t[lf.index] > 0 or self.enabled(node, lf)) for lf in p.leaves
+            node.q[lf.index] != DONE and (node.leaf_t[lf.index] > 0 or self.enabled(node, lf))
+            for lf in p.leaves
         ]
         holder_leaf = self._held_leaves(node)
         robots = []

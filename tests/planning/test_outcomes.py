@@ -1,0 +1,99 @@
+"""Clear outcomes: infeasible with a reason, timeout, malformed input as PlanningError."""
+
+from __future__ import annotations
+
+import time
+
+import pytest
+from planning_worlds import corridor
+
+from nl2hltl2plan.errors import PlanningError, SpecError
+from nl2hltl2plan.planning import plan
+from nl2hltl2plan.worlds.demo import demo_world
+
+
+def leaf_spec(*actions: str) -> list[dict]:
+    return [{"task1": "F task1.1"}, {"task1.1": list(actions)}]
+
+
+def test_missing_object_type(two_tasks_world):
+    r = plan(two_tasks_world, leaf_spec("pickup(Statue)", "put(Statue,CounterTop)"), [(0, 0)])
+    assert r.status == "infeasible"
+    assert "there is no Statue in corridor" in r.reason
+
+
+def test_object_no_robot_can_reach():
+    world = corridor({"CounterTop_0": 2}, island={"Apple_0": 51})
+    r = plan(world, leaf_spec("pickup(Apple)", "put(Apple,CounterTop)"), [(0, 0)])
+    assert r.status == "infeasible"
+    assert "no robot can reach any Apple" in r.reason
+
+
+def test_receptacle_that_refuses_the_object():
+    world = corridor({"Book_0": 5, "Fridge_0": 9})
+    r = plan(world, leaf_spec("pickup(Book)", "open(Fridge)", "put(Book,Fridge)"), [(0, 0)])
+    assert r.status == "infeasible"
+    assert "a Fridge cannot accept a Book" in r.reason
+
+
+def test_precedence_cycle(two_tasks_world):
+    spec = [
+        {"task1": "F(task1.1 & F task1.2) & F(task1.2 & F task1.1)"},
+        {"task1.1": ["pickup(Apple)", "put(Apple,CounterTop)"],
+         "task1.2": ["pickup(Mug)", "put(Mug,DiningTable)"]},
+    ]
+    r = plan(two_tasks_world, spec, [(0, 0)])
+    assert r.status == "infeasible"
+    assert "cycle" in r.reason and "task1.1" in r.reason
+
+
+def test_no_robot_has_the_capability(two_tasks_world):
+    spec = leaf_spec("pickup(Apple)", "put(Apple,CounterTop)")
+    r = plan(two_tasks_world, spec, [(0, 0), (0, 39)], capabilities=[["put"], ["toggle_on"]])
+    assert r.status == "infeasible" and "no robot has the capability" in r.reason
+    # with one capable robot it is solved, and only that robot acts
+    r = plan(two_tasks_world, spec, [(0, 0), (0, 39)], capabilities=[["open"], None])
+    assert r.solved and {e["robot"] for e in r.events} == {1}
+
+
+def test_infeasible_found_by_search():
+    # the apple sits in a closed fridge and the leaf never opens it: nothing static is wrong,
+    # the exhaustive search proves there is no plan
+    world = corridor({"Apple_0": 10, "Fridge_0": 10, "CounterTop_0": 2}, parents={"Apple_0": "Fridge_0"})
+    r = plan(world, leaf_spec("pickup(Apple)", "put(Apple,CounterTop)"), [(0, 0)])
+    assert r.status == "infeasible"
+    assert "no sequence of robot actions" in r.reason
+
+
+def test_timeout_returns_quickly_without_a_plan():
+    world = demo_world()
+    spec = [
+        {"task1": " & ".join(f"F task1.{k}" for k in range(1, 7))},
+        {f"task1.{k}": body for k, body in enumerate([
+            ["pickup(Plate)", "open(Dishwasher)", "put(Plate,DishwasherLowerRack)"],
+            ["pickup(Mug)", "put(Mug,SinkBasin)", "toggle_on(Faucet)", "toggle_off(Faucet)"],
+            ["pickup(Cup)", "open(Dishwasher)", "put(Cup,DishwasherUpperRack)"],
+            ["pickup(Apple)", "open(Microwave)", "put(Apple,Microwave)", "close(Microwave)"],
+            ["pickup(Book)", "toggle_on(FloorLamp)"],
+            ["pickup(Fork)", "put(Fork,Bowl)", "pickup(Bowl)", "put(Bowl,DiningTable)"],
+        ], start=1)},
+    ]
+    t0 = time.perf_counter()
+    r = plan(world, spec, [(0, 0), (9, 13), (0, 13)], mode="exact", timeout_s=0.001)
+    assert time.perf_counter() - t0 < 2.0
+    assert r.status == "timeout" and r.plan is None and "within 0.001 s" in r.reason
+    # with a little more time the exact search returns its best plan so far, verified, and says so
+    r = plan(world, spec, [(0, 0), (9, 13), (0, 13)], mode="exact", timeout_s=0.3)
+    assert r.status == "solved" and r.stopped == "timeout" and not r.proven_optimal
+    assert r.execution is not None and r.execution.ok
+
+
+def test_malformed_input(two_tasks_world):
+    with pytest.raises(PlanningError, match="not a free cell"):
+        plan(two_tasks_world, leaf_spec("pickup(Apple)", "put(Apple,CounterTop)"), [(3, 3)])
+    with pytest.raises(PlanningError, match="not a robot action"):
+        plan(two_tasks_world, leaf_spec("grab(Apple)", "put(Apple,CounterTop)"), [(0, 0)])
+    with pytest.raises(PlanningError, match="unknown objective"):
+        plan(two_tasks_world, leaf_spec("pickup(Apple)"), [(0, 0)], objective="sum")
+    with pytest.raises(SpecError):
+        plan(two_tasks_world, [{"task1": "G task1.1"}, {"task1.1": ["pickup(Apple)"]}], [(0, 0)])
