@@ -54,10 +54,20 @@ def language_record(gt: GTInstance, backend: str, client: LLMClient | None, ltl:
         # conversion is still scored; planning fails with this reason
         grounding_error = str(exc)
         try:
-            result = translate(gt.instruction, world, backend=backend, client=client, ltl=ltl, strict=False,
-                               actions="none", build_spec=False)
+            result = translate(
+                gt.instruction,
+                world,
+                backend=backend,
+                client=client,
+                ltl=ltl,
+                strict=False,
+                actions="none",
+                build_spec=False,
+            )
         except Nl2Hltl2PlanError as exc2:
-            rec.update(ok=False, error=str(exc2), conversion_ok=False, stage="task decomposition", levels=None)
+            rec.update(
+                ok=False, error=str(exc2), conversion_ok=False, stage="task decomposition", levels=None
+            )
             return rec
     verdict = match(result.tasks, result.before, [t.model_dump() for t in gt.tasks], gt.before)
     rec.update(
@@ -107,7 +117,9 @@ def translate_instances(
     return records
 
 
-def language_job(records: dict[str, Row], gts: dict[str, GTInstance], **planner: Any) -> Callable[[Scenario], Row]:
+def language_job(
+    records: dict[str, Row], gts: dict[str, GTInstance], **planner: Any
+) -> Callable[[Scenario], Row]:
     """A `run_scenarios` job planning from the language stage's spec of the scenario's instruction."""
 
     def job(scenario: Scenario) -> Row:
@@ -127,9 +139,14 @@ def language_job(records: dict[str, Row], gts: dict[str, GTInstance], **planner:
         if not rec.get("levels"):
             # no spec: either the language stage failed, or the tasks cannot be grounded in this
             # world (then the planner has nothing to plan: a planning failure, like infeasible)
-            return {**base, "status": "infeasible" if rec.get("error") else "no_spec",
-                    "reason": rec.get("error") or "no specification", "success": False,
-                    "planning_ok": False, "stage": rec.get("stage") or "planning"}
+            return {
+                **base,
+                "status": "infeasible" if rec.get("error") else "no_spec",
+                "reason": rec.get("error") or "no specification",
+                "success": False,
+                "planning_ok": False,
+                "stage": rec.get("stage") or "planning",
+            }
         spec = HierarchicalSpec.from_json(rec["levels"])
         row = plan_and_check(world, spec, gt, starts, **planner)
         row.update(base)
