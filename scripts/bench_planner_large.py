@@ -16,11 +16,13 @@ import json
 import random
 import statistics
 import sys
+from collections import Counter
 
 from nl2hltl2plan.planning import oracle_spec, plan
 from nl2hltl2plan.worlds.alfred import benchmark_issues, build_benchmark_world, start_cells
 from nl2hltl2plan.worlds.benchmark import load_gt
 from nl2hltl2plan.worlds.checker import check
+from nl2hltl2plan.worlds.model import sliced_type
 from nl2hltl2plan.worlds.tasks import GTInstance
 
 SCENES = ["FloorPlan7", "FloorPlan310", "FloorPlan427", "FloorPlan19", "FloorPlan322", "FloorPlan8",
@@ -39,7 +41,14 @@ def pooled_instance(scene: str, k: int, seed: int) -> GTInstance | None:
     draft = GTInstance(id=f"{scene}.pooled", scene=scene, tasks=tasks, before=before, source_trials=trials,
                        init_pos=insts[0].init_pos)
     world = build_benchmark_world(draft)
-    ok = [t for t in tasks if not t.missing(world)]
+    ok, used = [], Counter()
+    for t in tasks:  # tasks the world can do, each with objects of its own (distinct instances)
+        types = [sliced_type(o) if t.sliced else o for o in t.object]
+        short = len(types) == 1 and used[types[0]] + t.count > len(world.instances(types[0]))
+        if t.missing(world) or short:
+            continue
+        ok.append(t)
+        used[types[0]] += t.count
     if len(ok) < k:
         return None
     keep = ok[:k]
