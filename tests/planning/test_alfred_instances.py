@@ -60,7 +60,8 @@ def test_bench_command(tmp_path, capsys):
     assert summary["scenarios"] == 6 and summary["success"] == summary["feasible"]
     assert set(summary["plan_time_s"]) >= {"median", "p95", "max"}
     row = summary["rows"][0]
-    assert {"n_base", "robots", "success_rate", "travel_m_mean", "travel_m_std", "steps_mean", "steps_std"} <= set(row)
+    keys = {"n_base", "robots", "success_rate", "travel_m_mean", "travel_m_std", "steps_mean", "steps_std"}
+    assert keys <= set(row)
     lines = (out / "scenarios.jsonl").read_text().splitlines()
     assert len(lines) == 6 and all(json.loads(x)["key"] for x in lines)
     printed = capsys.readouterr().out

@@ -13,7 +13,10 @@ from nl2hltl2plan.worlds.checker import check
 from nl2hltl2plan.worlds.demo import demo_world
 from nl2hltl2plan.worlds.tasks import BaseTask, GTInstance
 
-LEAVES = {"task1.1": ["pickup(Apple)", "put(Apple,CounterTop)"], "task1.2": ["pickup(Mug)", "put(Mug,DiningTable)"]}
+LEAVES = {
+    "task1.1": ["pickup(Apple)", "put(Apple,CounterTop)"],
+    "task1.2": ["pickup(Mug)", "put(Mug,DiningTable)"],
+}
 
 
 @pytest.mark.parametrize("root, cost, order", [
@@ -40,8 +43,10 @@ def test_oracle_spec_shape():
     o = oracle_spec(gt, world)
     assert o.levels[0] == {"task1": "F(task1.1 & Ftask1.2) & Ftask1.3"}
     assert o.levels[1]["task1.1"] == "Ftask1.1.1 & Ftask1.1.2"
-    assert o.levels[1]["task1.2"] == ["pickup(Mug)", "put(Mug,SinkBasin)", "toggle_on(Faucet)", "toggle_off(Faucet)",
-                                      "pickup(Mug)", "open(Dishwasher)", "put(Mug,DishwasherUpperRack)"]
+    assert o.levels[1]["task1.2"] == [
+        "pickup(Mug)", "put(Mug,SinkBasin)", "toggle_on(Faucet)", "toggle_off(Faucet)",
+        "pickup(Mug)", "open(Dishwasher)", "put(Mug,DishwasherUpperRack)",
+    ]
     assert o.levels[2]["task1.1.1"] == ["pickup(Plate)", "open(Dishwasher)", "put(Plate,DishwasherLowerRack)"]
     assert o.task_node == {"A": "task1.1", "B": "task1.2", "C": "task1.3"}
     assert o.leaf_task == {"task1.1.1": "A", "task1.1.2": "A", "task1.2": "B", "task1.3": "C"}
@@ -116,3 +121,22 @@ def test_exact_minmax_balances_the_team():
         r_ms = plan(world, spec, [(0, 20), (0, 30)], mode=mode, objective="minmax")
         assert r_ms.steps == 2 and r_ms.total_cost == 4
         assert {e["task"]: e["robot"] for e in r_ms.events} == {"task1.1": 0, "task1.2": 1}
+
+
+def test_completion_check_agrees_with_check_trace():
+    from nl2hltl2plan.logic.hierarchical import TraceEvent
+    from nl2hltl2plan.planning.extract import completion_check
+    from nl2hltl2plan.planning.model import build_problem
+
+    world = demo_world()
+    gt = demo_instance("AF", True)
+    spec = oracle_spec(gt, world).spec
+    r = plan(world, spec, STARTS[:2])
+    trace = [TraceEvent(e.t, e.atom, e.task) for e in r.execution.events]
+    problem = build_problem(world, spec, STARTS[:2])
+    assert completion_check(problem, trace) == [] and spec.check_trace(trace).ok
+    # drop the last event of a plate leaf, or move the first task after the second: both refuse
+    broken = [e for e in trace if not (e.task == "task1.2.2" and e.atom.startswith("put(Plate"))]
+    assert completion_check(problem, broken) and not spec.check_trace(broken).ok
+    late = [TraceEvent(e.t + (100 if e.task == "task1.1" else 0), e.atom, e.task) for e in trace]
+    assert completion_check(problem, late) and not spec.check_trace(late).ok

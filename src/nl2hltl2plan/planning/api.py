@@ -11,6 +11,7 @@ from nl2hltl2plan.errors import PlanningError
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.planning.extract import refine_stand_cells, to_plan, verify
 from nl2hltl2plan.planning.heuristic import Heuristic
+from nl2hltl2plan.planning.improve import improve
 from nl2hltl2plan.planning.model import Infeasible, _required_leaves, build_problem
 from nl2hltl2plan.planning.navigation import Navigator
 from nl2hltl2plan.planning.search import Deadline, Searcher
@@ -24,9 +25,28 @@ Mode = Literal["fast", "exact"]
 DEFAULT_TIMEOUT_S = 300.0
 DEFAULT_W = 1.5
 FAST_EXPANSIONS = 2000  # AWA* expansions `fast` spends improving its first plan (at most)
-FAST_IMPROVE_S = 1.0  # and seconds (at most)
+FAST_IMPROVE_S = 1.0  # and seconds (at most): half local search, half AWA*
+LNS_EXACT_S = 2.0  # local search before the exact search (a good incumbent prunes it)
 BEAM_WIDTH = 8
 BEAM_INSTANCES = 3
+SOLO_WIDTH = 4  # beam width of the single-robot seeds
+SOLO_SEEDS = 10  # robots tried alone (the first ones)
+
+
+def _seed(searcher: Searcher, x: Expander, root: Node, n_robots: int) -> Node | None:
+    """The cheapest of a greedy and a beam search over the team, and of beam searches in which a
+    single robot does everything (summed cost often favours one well-placed robot, which the team
+    beam, deciding one step at a time, can miss); the local search then shares the work out."""
+    found = [searcher.beam(root, 1, 1), searcher.beam(root, BEAM_WIDTH, BEAM_INSTANCES)]
+    if n_robots > 1:
+        for r in range(min(n_robots, SOLO_SEEDS)):
+            x.only = {r}
+            try:
+                found.append(searcher.beam(root, SOLO_WIDTH, BEAM_INSTANCES))
+            finally:
+                x.only = None
+    found = [n for n in found if n is not None]
+    return min(found, key=searcher.cost) if found else None
 
 
 @dataclass
@@ -135,20 +155,21 @@ def plan(
             best = root
             searcher.stats.proven_optimal = True
         else:
-            best = searcher.beam(root, 1, 1)
-            wide = searcher.beam(root, BEAM_WIDTH, BEAM_INSTANCES)
-            if wide is not None and (best is None or searcher.cost(wide) < searcher.cost(best)):
-                best = wide
+            best = _seed(searcher, x, root, problem.n_robots)
             if best is not None:
                 searcher.stats.seed_cost = float(searcher.cost(best))
                 searcher.stats.seed_time_s = time.perf_counter() - t0
+                # local search on the allocation first: a better incumbent also prunes the A*
+                share = LNS_EXACT_S if mode == "exact" else (fast_improve_s or FAST_IMPROVE_S) / 2
+                best, searcher.stats.lns_moves = improve(x, best, objective,
+                                                         min(deadline, time.perf_counter() + share))
             if mode == "exact":
                 best = searcher.awa(root, best, 1.0, 1.0)
             else:
                 unbounded = fast_expansions is None and fast_improve_s is None
                 best = searcher.awa(
                     root, best, w, w if unbounded else 1.0, max_expansions=fast_expansions,
-                    stop_at=None if fast_improve_s is None else time.perf_counter() + fast_improve_s,
+                    stop_at=None if fast_improve_s is None else time.perf_counter() + fast_improve_s / 2,
                 )
     except Deadline:
         searcher.stats.stopped = "timeout"

@@ -79,11 +79,19 @@ class Leaf:
 
 @dataclass
 class NonLeaf:
+    """A non-leaf formula. In the relation compiler's form (`pairs` set) it is satisfied when every
+    child is complete and each pair (a, b) completed a no later than b; no automaton is needed (a
+    conjunction of n `F c` has 2^n states). Otherwise its DFA reads completion events."""
+
     index: int
     name: str
-    dfa: Dfa
+    dfa: Dfa | None
     children: tuple[str, ...]
     pairs: tuple[tuple[str, str], ...] | None  # precedence form, else None
+
+    @property
+    def init(self) -> int:
+        return self.dfa.init if self.dfa is not None else 0
 
 
 @dataclass
@@ -134,7 +142,21 @@ class Problem:
         caps = self.capabilities[robot]
         return caps is None or atom.verb in caps or atom.text in caps
 
-    # ------------------------------------------------------------ viability of non-leaf DFAs
+    # ------------------------------------------------------------ non-leaf progress
+    def step_parent(self, nonleaf: int, state: int, child: str, done: frozenset[str]) -> int | None:
+        """The non-leaf's state once `child` completes (the others in `done` are complete): DONE
+        when it is satisfied, None when it no longer can be."""
+        nl = self.nonleaves[nonleaf]
+        if nl.dfa is None:
+            if any(b == child and a not in done for a, b in nl.pairs or ()):
+                return None
+            return DONE if all(c in done or c == child for c in nl.children) else state
+        q2 = nl.dfa.step(state, (child,))
+        if q2 in nl.dfa.accepting:
+            return DONE
+        remaining = frozenset(c for c in nl.children if c != child and c not in done)
+        return q2 if self.viable(nonleaf, q2, remaining) else None
+
     def viable(self, nonleaf: int, state: int, remaining: frozenset[str]) -> bool:
         """Can the non-leaf still be satisfied from `state` when each child in `remaining`
         completes at most once (one completion per step, idle steps in between)?"""
@@ -143,6 +165,7 @@ class Problem:
         if hit is not None:
             return hit
         dfa = self.nonleaves[nonleaf].dfa
+        assert dfa is not None
         ok = False
         seen = {(state, remaining)}
         queue = deque([(state, remaining)])
@@ -207,15 +230,17 @@ def build_problem(
         for c in spec.children(n):
             parent[c] = n
     for n in names:
-        dfa = _dfa(spec, n, dfa_timeout_s)
         if spec.is_leaf(n):
-            leaves.append(_compile_leaf(len(leaves), n, dfa))
-        else:
-            children = tuple(spec.children(n))
-            form = sb.precedence_form(spec.formula(n))
-            pairs = tuple(form[1]) if form is not None and set(form[0]) == set(children) else None
+            leaves.append(_compile_leaf(len(leaves), n, _dfa(spec, n, dfa_timeout_s)))
+            continue
+        children = tuple(spec.children(n))
+        form = sb.precedence_form(spec.formula(n))
+        pairs = tuple(form[1]) if form is not None and set(form[0]) == set(children) else None
+        dfa = None
+        if pairs is None:
+            dfa = _dfa(spec, n, dfa_timeout_s)
             _check_stutter(n, dfa, [1 << i for i in range(len(dfa.atoms))])
-            nonleaves.append(NonLeaf(len(nonleaves), n, dfa, children, pairs))
+        nonleaves.append(NonLeaf(len(nonleaves), n, dfa, children, pairs))
     problem = Problem(
         world=world,
         spec=spec,
@@ -405,14 +430,15 @@ def _gates(problem: Problem, leaf: str) -> tuple[str, ...]:
 
 def _check_orderings(problem: Problem) -> None:
     for nl in problem.nonleaves:
-        if problem.viable(nl.index, nl.dfa.init, frozenset(nl.children)):
-            continue
-        if nl.pairs:
-            g = nx.DiGraph(list(nl.pairs))
+        if nl.dfa is None:
+            g = nx.DiGraph(list(nl.pairs or ()))
             if not nx.is_directed_acyclic_graph(g):
                 cycle = nx.find_cycle(g)
                 order = " before ".join([a for a, _ in cycle] + [cycle[0][0]])
                 raise Infeasible(f"{nl.name}: the ordering of its tasks has a cycle ({order})")
+            continue
+        if problem.viable(nl.index, nl.dfa.init, frozenset(nl.children)):
+            continue
         raise Infeasible(f"{nl.name}: no order of completing its tasks satisfies "
                          f"{problem.spec.text(nl.name)}")
 
@@ -521,7 +547,8 @@ def _required_leaves(problem: Problem) -> set[str]:
         while needed and problem.parent.get(node) is not None:
             par = problem.parent[node]
             nl = problem.nonleaves[problem.nonleaf_index[par]]  # type: ignore[index]
-            needed = not problem.viable(nl.index, nl.dfa.init, frozenset(nl.children) - {node})
+            rest = frozenset(nl.children) - {node}
+            needed = nl.dfa is None or not problem.viable(nl.index, nl.dfa.init, rest)
             node = par  # type: ignore[assignment]
         if needed:
             required.add(lf.name)

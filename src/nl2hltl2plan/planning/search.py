@@ -36,6 +36,7 @@ class SearchStats:
     generated: int = 0
     seed_cost: float | None = None
     seed_time_s: float | None = None
+    lns_moves: int = 0  # improving local-search moves on the seed
     lower_bound: float = 0.0  # proven lower bound on the optimal cost (objective units)
     proven_optimal: bool = False
     exhausted: bool = False

@@ -114,6 +114,7 @@ class Expander:
         self.leaf_slot = [self.slot[lf.name] for lf in problem.leaves]
         self.cap_class = [hash(c) if c is not None else 0 for c in problem.capabilities]
         self.gate_slots = {i: tuple(self.slot[g] for g in gates) for i, gates in problem.gates.items()}
+        self.only: set[int] | None = None  # restrict successors to these robots (single-robot seeds)
 
     # ------------------------------------------------------------ root
     def root(self) -> Node:
@@ -125,7 +126,7 @@ class Expander:
         n.q = tuple(lf.init for lf in p.leaves)
         n.bind = tuple(() for _ in p.leaves)
         n.claimed = frozenset()
-        n.nq = tuple(nl.dfa.init for nl in p.nonleaves)
+        n.nq = tuple(nl.init for nl in p.nonleaves)
         done = [-1] * len(p.node_names)
         for lf in p.leaves:
             if lf.init == DONE:
@@ -166,12 +167,13 @@ class Expander:
             q = node.nq[nl.index]
             if q == DONE:
                 return False  # the parent is already satisfied: this task is not needed
-            q2 = nl.dfa.step(q, (name,))
-            if q2 in nl.dfa.accepting:
-                name = par  # type: ignore[assignment]
-                continue
-            remaining = frozenset(c for c in nl.children if c != name and node.done_t[self.slot[c]] < 0)
-            return p.viable(nl.index, q2, remaining)
+            done = frozenset(c for c in nl.children if node.done_t[self.slot[c]] >= 0)
+            q2 = p.step_parent(nl.index, q, name, done)
+            if q2 is None:
+                return False
+            if q2 != DONE:
+                return True
+            name = par  # type: ignore[assignment]
         return True
 
     def _propagate(self, node: Node, name: str, t: int, nq: list[int], done: list[int]):
@@ -183,17 +185,15 @@ class Expander:
             q = nq[nl.index]
             if q == DONE:
                 break
-            q2 = nl.dfa.step(q, (name,))
-            if q2 in nl.dfa.accepting:
-                nq[nl.index] = DONE
-                done[self.slot[par]] = t  # type: ignore[index]
-                name = par  # type: ignore[assignment]
-                continue
-            remaining = frozenset(c for c in nl.children if done[self.slot[c]] < 0)
-            if not p.viable(nl.index, q2, remaining):
+            finished = frozenset(c for c in nl.children if c != name and done[self.slot[c]] >= 0)
+            q2 = p.step_parent(nl.index, q, name, finished)
+            if q2 is None:
                 return None
             nq[nl.index] = q2
-            break
+            if q2 != DONE:
+                break
+            done[self.slot[par]] = t  # type: ignore[index]
+            name = par  # type: ignore[assignment]
         return nq, done
 
     # ------------------------------------------------------------ candidates
@@ -328,6 +328,8 @@ class Expander:
             if tx > ready:
                 ready = tx
         first = node.leaf_t[li] == 0
+        if first and not self.enabled(node, leaf):
+            return None  # replays (local search) rely on this; successors() filters it already
         if first:
             if self.p.precedence:
                 for s in self.gate_slots[li]:
@@ -463,6 +465,8 @@ class Expander:
         holder_leaf = self._held_leaves(node)
         robots = []
         for r in range(p.n_robots):
+            if self.only is not None and r not in self.only:
+                continue
             hand = sim.hand.get(r, -1)
             sym = (node.cell[r], hand, self.cap_class[r], node.clock[r])
             if hand < 0 and sym in seen_robot:

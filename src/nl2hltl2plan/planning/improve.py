@@ -1,0 +1,117 @@
+"""Local search on a plan's events: give a segment to another robot, or move it in the order.
+
+A *segment* is what one robot does for one leaf between two empty-hand moments (pick the apple,
+open the fridge, put it in), or a single empty-handed action. The beam search decides segments one
+at a time and can leave a poor allocation (two robots swapping halves of their tasks); these moves
+repair that. Every candidate is evaluated by replaying the whole event list through the planner's
+transition relation (preconditions, bindings, orderings and the schedule are all re-checked, stand
+cells re-chosen), and kept only if the objective improves: first improvement, until no move helps
+or the time is up.
+"""
+
+from __future__ import annotations
+
+import time
+
+from nl2hltl2plan.planning.state import Event, Expander, Node
+
+
+def segments(x: Expander, events: list[Event]) -> list[list[int]]:
+    """Indices of the events of each segment, in order of their first event."""
+    node = x.root()
+    open_seg: dict[int, list[int]] = {}  # robot -> the segment it is in while holding something
+    out: list[list[int]] = []
+    for i, e in enumerate(events):
+        seg = open_seg.get(e.robot)
+        if seg is not None and events[seg[0]].leaf == e.leaf and e.k >= 0:
+            seg.append(i)
+        else:
+            seg = [i]
+            out.append(seg)
+        node = replay_from(x, node, [e])
+        if node is None:
+            return []
+        if node.sim.hand.get(e.robot, -1) >= 0 and e.k >= 0:
+            open_seg[e.robot] = seg
+        else:
+            open_seg.pop(e.robot, None)
+    return out
+
+
+def replay_from(x: Expander, node: Node, events: list[Event]) -> Node | None:
+    for e in events:
+        if e.k < 0:
+            child = x.put_down(node, e.robot, e.objs[1], e.leaf, stand=e.stand)
+        else:
+            leaf = x.p.leaves[e.leaf]
+            q_next = next((q2 for k, q2 in leaf.moves[node.q[e.leaf]] if k == e.k), None)
+            child = None if q_next is None else x.apply(node, e.robot, leaf, e.k, e.objs, q_next)
+        if child is None:
+            return None
+        node = child
+    return node
+
+
+def _value(node: Node, objective: str) -> tuple[int, ...]:
+    return (node.g,) if objective == "min" else (node.ms, node.g)
+
+
+def improve(x: Expander, goal: Node, objective: str, deadline: float) -> tuple[Node, int]:
+    """A goal node at least as good as `goal` (and the number of improving moves made)."""
+    best = goal
+    best_val = _value(goal, objective)
+    moves = 0
+    robots = range(x.p.n_robots)
+    improved = True
+    while improved and time.perf_counter() < deadline:
+        improved = False
+        events = best.events()
+        path = _path(best)  # path[i]: the node after the first i events
+        segs = segments(x, events)
+        for seg in segs:
+            if time.perf_counter() > deadline:
+                break
+            if any(events[i].k < 0 for i in seg):
+                continue
+            owner = events[seg[0]].robot
+            first = seg[0]
+            candidates: list[tuple[int, list[Event]]] = []  # (first changed index, events)
+            for r in robots:  # the same events, done by another robot
+                if r != owner:
+                    moved = list(events)
+                    for i in seg:
+                        e = moved[i]
+                        moved[i] = Event(r, e.leaf, e.atom, e.verb, e.objs, -1, 0, 0, e.k, e.anchor)
+                    candidates.append((first, moved))
+            inside = set(seg)
+            rest = [e for i, e in enumerate(events) if i not in inside]
+            block = [events[i] for i in seg]
+            # the segment earlier or later in the order: before another segment, nearest first
+            starts = sorted({len(rest)} | {sum(1 for i in range(s2[0]) if i not in inside)
+                                           for s2 in segs if s2 is not seg}, key=lambda p: abs(p - first))
+            for pos in starts:
+                if pos != first:
+                    candidates.append((min(pos, first), rest[:pos] + block + rest[pos:]))
+            for start, cand in candidates:
+                end = replay_from(x, path[start], cand[start:])
+                if end is None or not x.is_goal(end):
+                    continue
+                val = _value(end, objective)
+                if val < best_val:
+                    best, best_val = end, val
+                    moves += 1
+                    improved = True
+                    break
+            if improved:
+                break
+    return best, moves
+
+
+
+def _path(goal: Node) -> list[Node]:
+    nodes = []
+    node: Node | None = goal
+    while node is not None:
+        nodes.append(node)
+        node = node.parent
+    return nodes[::-1]
