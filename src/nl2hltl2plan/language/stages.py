@@ -23,6 +23,7 @@ from pydantic import BaseModel, Field, field_validator, model_validator
 from nl2hltl2plan.language.llm.client import LLMClient
 from nl2hltl2plan.language.prompts import load_prompt
 from nl2hltl2plan.language.tasks import Kind
+from nl2hltl2plan.worlds.plan import ACTION_ARITY
 
 MAX_TASKS = 12
 MAX_TEXT = 300  # characters of a task's text
@@ -193,15 +194,7 @@ def translate(
 
 
 # ----- 4. action completion -----------------------------------------------------------------------------
-ACTION_VOCABULARY = {
-    "pickup": 1,
-    "put": 2,
-    "open": 1,
-    "close": 1,
-    "toggle_on": 1,
-    "toggle_off": 1,
-    "slice": 1,
-}
+ACTION_VOCABULARY = ACTION_ARITY  # verb -> number of object arguments
 VOCABULARY_TEXT = "\n".join(
     [
         "- pickup(O): pick up an object of type O (hand empty)",

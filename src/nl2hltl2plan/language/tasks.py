@@ -9,38 +9,21 @@ to the HTT (the HTT nodes carry text and actions only), and `before` pairs betwe
 
 from __future__ import annotations
 
-from typing import Literal
-
 import networkx as nx
 from pydantic import BaseModel, Field
 
-Kind = Literal[
-    "place", "place_two", "place_in_container", "examine_in_light", "clean_place", "heat_place", "cool_place"
-]
-KINDS: tuple[str, ...] = (
-    "place",
-    "place_two",
-    "place_in_container",
-    "examine_in_light",
-    "clean_place",
-    "heat_place",
-    "cool_place",
-)
+from nl2hltl2plan.worlds.tasks import KINDS, BaseTask, Kind
+
+__all__ = ["KINDS", "BaseTaskSpec", "Kind", "TaskSet", "transitive_closure", "transitive_reduction"]
+
 STATE_OF_KIND = {"clean_place": "clean", "heat_place": "hot", "cool_place": "cold"}
 
 
-class BaseTaskSpec(BaseModel):
-    """One base task; the field names and meanings are those of the benchmark ground truth."""
+class BaseTaskSpec(BaseTask):
+    """One base task as the language stage produces it: `worlds.tasks.BaseTask` (the ground truth's
+    fields) with a default id and a readable summary."""
 
     id: str = "A"
-    text: str = ""
-    kind: Kind
-    object: list[str]
-    count: int = 1
-    sliced: bool = False
-    container: list[str] | None = None
-    receptacle: list[str] | None = None
-    light: list[str] | None = None
 
     def summary(self) -> str:
         """One readable line, e.g. `clean_place Potato(sliced) -> Fridge`."""

@@ -30,16 +30,16 @@ LNS_EXACT_S = 2.0  # local search before the exact search (a good incumbent prun
 BEAM_WIDTH = 8
 BEAM_INSTANCES = 3
 SOLO_WIDTH = 4  # beam width of the single-robot seeds
-SOLO_SEEDS = 10  # robots tried alone (the first ones)
+SOLO_SEEDS = 4  # robots tried alone (the best placed ones)
 
 
-def _seed(searcher: Searcher, x: Expander, root: Node, n_robots: int) -> Node | None:
-    """The cheapest of a greedy and a beam search over the team, and of beam searches in which a
-    single robot does everything (summed cost often favours one well-placed robot, which the team
-    beam, deciding one step at a time, can miss); the local search then shares the work out."""
+def _seed(searcher: Searcher, x: Expander, root: Node, objective: str) -> Node | None:
+    """The cheapest of a greedy and a beam search over the team and, for the summed cost, of beam
+    searches in which one well-placed robot does everything (summed cost often favours one robot,
+    which the team beam, deciding one step at a time, can miss); local search then shares work out."""
     found = [searcher.beam(root, 1, 1), searcher.beam(root, BEAM_WIDTH, BEAM_INSTANCES)]
-    if n_robots > 1:
-        for r in range(min(n_robots, SOLO_SEEDS)):
+    if objective == "min" and x.p.n_robots > 1:
+        for r in _well_placed(x, root)[:SOLO_SEEDS]:
             x.only = {r}
             try:
                 found.append(searcher.beam(root, SOLO_WIDTH, BEAM_INSTANCES))
@@ -47,6 +47,28 @@ def _seed(searcher: Searcher, x: Expander, root: Node, n_robots: int) -> Node | 
                 x.only = None
     found = [n for n in found if n is not None]
     return min(found, key=searcher.cost) if found else None
+
+
+def _well_placed(x: Expander, root: Node) -> list[int]:
+    """Robots by the summed walk from their start to each leaf's nearest first object."""
+    nav = x.nav
+    firsts = []
+    for lf in x.p.leaves:
+        anchors = set()
+        for k, _ in lf.moves.get(lf.init, []):
+            atom = lf.atoms[k]
+            for o in x.candidates(root, lf, atom, len(atom.types) - 1):
+                a = nav.anchor(root.sim, o if x.slice_of[o] < 0 else x.slice_of[o])
+                if a >= 0:
+                    anchors.add(a)
+        if anchors:
+            firsts.append(anchors)
+
+    def spread(r: int) -> tuple[int, int]:
+        cell = root.cell[r]
+        return (sum(min(nav.dist(cell, a) for a in anchors) for anchors in firsts), r)
+
+    return sorted(range(x.p.n_robots), key=spread)
 
 
 @dataclass
@@ -155,7 +177,7 @@ def plan(
             best = root
             searcher.stats.proven_optimal = True
         else:
-            best = _seed(searcher, x, root, problem.n_robots)
+            best = _seed(searcher, x, root, objective)
             if best is not None:
                 searcher.stats.seed_cost = float(searcher.cost(best))
                 searcher.stats.seed_time_s = time.perf_counter() - t0

@@ -33,7 +33,7 @@ def replay(x: Expander, events: list[Event], stands: list[int] | None = None) ->
             child = x.put_down(node, e.robot, e.objs[1], e.leaf, stand=stand)
         else:
             leaf = x.p.leaves[e.leaf]
-            q_next = next((q2 for k, q2 in leaf.moves[node.q[e.leaf]] if k == e.k), None)
+            q_next = next((q2 for k, q2 in leaf.moves.get(node.q[e.leaf], ()) if k == e.k), None)
             child = None if q_next is None else x.apply(node, e.robot, leaf, e.k, e.objs, q_next, stand=stand)
         if child is None:
             return None

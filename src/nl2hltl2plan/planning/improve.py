@@ -44,7 +44,7 @@ def replay_from(x: Expander, node: Node, events: list[Event]) -> Node | None:
             child = x.put_down(node, e.robot, e.objs[1], e.leaf, stand=e.stand)
         else:
             leaf = x.p.leaves[e.leaf]
-            q_next = next((q2 for k, q2 in leaf.moves[node.q[e.leaf]] if k == e.k), None)
+            q_next = next((q2 for k, q2 in leaf.moves.get(node.q[e.leaf], ()) if k == e.k), None)
             child = None if q_next is None else x.apply(node, e.robot, leaf, e.k, e.objs, q_next)
         if child is None:
             return None

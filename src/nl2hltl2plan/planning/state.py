@@ -112,7 +112,8 @@ class Expander:
         self.surfaces: dict[str, list[int]] = {}
         self.slot = problem.node_slot
         self.leaf_slot = [self.slot[lf.name] for lf in problem.leaves]
-        self.cap_class = [hash(c) if c is not None else 0 for c in problem.capabilities]
+        classes = list(dict.fromkeys(problem.capabilities))  # robots with equal capabilities
+        self.cap_class = [classes.index(c) for c in problem.capabilities]
         self.gate_slots = {i: tuple(self.slot[g] for g in gates) for i, gates in problem.gates.items()}
         self.only: set[int] | None = None  # restrict successors to these robots (single-robot seeds)
 
@@ -301,6 +302,11 @@ class Expander:
         from `stand`), or None if it cannot."""
         atom = leaf.atoms[atom_k]
         verb = atom.verb
+        if not self.p.can_do(robot, atom):
+            return None
+        taking = verb in ("pickup", "slice")
+        if taking and objs[0] in node.claimed and bound(node, leaf.index, atom.types[0]) < 0:
+            return None  # another task's object (replays of reordered events must respect it too)
         sim = node.sim
         hand = sim.hand.get(robot, -1)
         if verb == "pickup" and hand >= 0:
@@ -402,8 +408,11 @@ class Expander:
         sim = node.sim
         obj = sim.hand.get(robot, -1)
         anchor = self.nav.anchor(sim, surface)
-        if obj < 0 or anchor < 0:
+        caps = self.p.capabilities[robot]
+        if obj < 0 or anchor < 0 or (caps is not None and "put" not in caps):
             return None
+        if leaf >= 0 and node.q[leaf] != DONE:
+            return None  # held until its task is done (examine: until the lamp is on)
         stand, d = self._stand(node.cell[robot], anchor, stand)
         if d >= INF:
             return None
