@@ -61,7 +61,8 @@ def test_bench_llm_offline_end_to_end_with_custom_ground_truth(tmp_path, capsys)
     gt = tmp_path / "gt.jsonl"
     gt.write_text("\n".join(lines[4:7]) + "\n")
     out = tmp_path / "bench"
-    args = ["bench", "alfred", "--llm", "offline", "--robots", "1,2", "--gt", str(gt), "--out", str(out), "--quiet"]
+    args = ["bench", "alfred", "--llm", "offline", "--robots", "1,2", "--gt", str(gt), "--out", str(out)]
+    args.append("--quiet")
     assert main(args) == 0
     assert "overall (conversion, planning)" in capsys.readouterr().out
     summary = json.loads((out / "summary.json").read_text())

@@ -89,7 +89,7 @@ class Heuristic:
         anchor = self.nav.anchor
         b = bound(node, leaf.index, type_)
         objs = [b] if b >= 0 else x.by_type.get(type_, [])
-        if b < 0 and node.claimed and taking:
+        if b < 0 and node.claimed and (taking or type_ in leaf.taken):
             objs = [o for o in objs if o not in node.claimed]
         out = set()
         for o in objs:

@@ -76,6 +76,12 @@ class Leaf:
         """Does this action claim its object for this leaf alone (distinct objects per task)?"""
         return verb in ("pickup", "slice") and type_ not in self.tools
 
+    @cached_property
+    def taken(self) -> frozenset[str]:
+        """Types whose instance this leaf takes for itself (claimed as soon as it is bound, also
+        when first used as a receptacle: the cup a knife is put into, then carried)."""
+        return frozenset(a.types[0] for a in self.atoms if self.exclusive(a.verb, a.types[0]))
+
 
 @dataclass
 class NonLeaf:

@@ -205,9 +205,9 @@ class Expander:
         if b >= 0:
             return [b]
         out = self.by_type.get(type_, [])
-        if node.claimed and pos == 0 and atom.verb in ("pickup", "slice"):
+        if node.claimed and (type_ in leaf.taken or (pos == 0 and atom.verb in ("pickup", "slice"))):
             # an object another task took for itself is off limits, also as a tool (a knife being
-            # cleaned is not the one to slice with); as a receptacle it may still be used
+            # cleaned is not the one to slice with); as a mere receptacle it may still be used
             out = [o for o in out if o not in node.claimed]
         if type_ == "Faucet":
             basin = bound(node, leaf.index, "SinkBasin")
@@ -304,9 +304,10 @@ class Expander:
         verb = atom.verb
         if not self.p.can_do(robot, atom):
             return None
-        taking = verb in ("pickup", "slice")
-        if taking and objs[0] in node.claimed and bound(node, leaf.index, atom.types[0]) < 0:
-            return None  # another task's object (replays of reordered events must respect it too)
+        for pos, type_ in enumerate(atom.types):  # replays of reordered events must respect this too
+            taking = type_ in leaf.taken or (pos == 0 and verb in ("pickup", "slice"))
+            if taking and objs[pos] in node.claimed and bound(node, leaf.index, type_) < 0:
+                return None  # another task's object
         sim = node.sim
         hand = sim.hand.get(robot, -1)
         if verb == "pickup" and hand >= 0:
@@ -372,7 +373,7 @@ class Expander:
         for pos, type_ in enumerate(atom.types):
             if bound(node, li, type_) < 0:
                 bind = tuple(sorted(bind + ((type_, objs[pos]),)))
-                if pos == 0 and leaf.exclusive(verb, type_):
+                if type_ in leaf.taken:
                     claimed = claimed | {objs[pos]}
         if bind is not node.bind[li]:
             binds = list(node.bind)
