@@ -343,11 +343,17 @@ class HierarchicalSpec:
                     False, {}, [f"event {e.atom} at t={e.t} is attributed to non-leaf {e.task}"]
                 )
             by_step.setdefault(e.t, []).append(e)
-        dfas = {n: self.dfa(n) for n in self.names}
+        # non-leaves in the compiler's form (F c, F(a & F b)) are read off directly: they complete
+        # with their last child when every pair is in order, which is exactly when their automaton
+        # would accept; this avoids 2^n-state automata for wide conjunctions
+        forms = {n: sb.precedence_form(self.formula(n)) for n in self.names if not self.is_leaf(n)}
+        dfas = {n: self.dfa(n) for n in self.names if forms.get(n) is None}
         state = {n: d.init for n, d in dfas.items()}
-        completed: dict[str, int | None] = {
-            n: (0 if dfas[n].init in dfas[n].accepting else None) for n in self.names
-        }
+        completed: dict[str, int | None] = {n: None for n in self.names}
+        for n, d in dfas.items():
+            if d.init in d.accepting:
+                completed[n] = 0
+        broken: set[str] = set()
         last = max(by_step, default=0)
         for t in range(1, last + 1):
             step_events = by_step.get(t, [])
@@ -369,6 +375,19 @@ class HierarchicalSpec:
                 for n in self.levels[k - 1]:
                     if self.is_leaf(n) or completed[n] is not None:
                         continue
+                    form = forms.get(n)
+                    if form is not None:
+                        children, pairs = form
+                        done = {c: completed[c] for c in children}
+                        if any(
+                            done[a] is not None and done[b] is not None and done[a] > done[b]
+                            for a, b in pairs
+                        ):
+                            broken.add(n)
+                        elif all(v is not None for v in done.values()):
+                            completed[n] = t
+                            newly.add(n)
+                        continue
                     state[n] = dfas[n].step(state[n], newly)
                     if state[n] in dfas[n].accepting:
                         completed[n] = t
@@ -377,7 +396,7 @@ class HierarchicalSpec:
         for r in self.roots:
             if completed[r] is None:
                 missing = [n for n in self.names if completed[n] is None and not self.children(n)]
-                dead = [n for n in self.names if dfas[n].is_dead(state[n])]
+                dead = sorted(broken | {n for n, d in dfas.items() if d.is_dead(state[n])})
                 why = f"top formula {r} ({self.text(r)}) is not satisfied"
                 if dead:
                     why += f"; violated (can no longer be satisfied): {dead}"

@@ -15,14 +15,13 @@ from __future__ import annotations
 
 import numpy as np
 
-from nl2hltl2plan.errors import FormulaError, PlanningError
+from nl2hltl2plan.errors import PlanningError
 from nl2hltl2plan.logic.hierarchical import TraceEvent
 from nl2hltl2plan.planning.model import Problem
 from nl2hltl2plan.planning.state import Event, Expander, Node
 from nl2hltl2plan.worlds.plan import Plan, RobotPlan, Step
 from nl2hltl2plan.worlds.simulator import Execution, execute
 
-LARGE_NONLEAF = 8  # children of a non-leaf formula beyond which Spot translates it slowly
 
 
 def replay(x: Expander, events: list[Event], stands: list[int] | None = None) -> Node | None:
@@ -116,49 +115,8 @@ def verify(problem: Problem, plan: Plan) -> Execution:
         raise PlanningError("internal error: the planned actions fail in the simulator: "
                             + "; ".join(execution.violations[:3]))
     trace = [TraceEvent(e.t, e.atom, e.task) for e in execution.events]
-    precedence = all(nl.pairs is not None for nl in problem.nonleaves)
-    wide = any(len(nl.children) > LARGE_NONLEAF for nl in problem.nonleaves)
-    if precedence and wide:
-        # check_trace would build the automaton of a conjunction of many `F c` (2^n states, seconds
-        # in Spot): judge the trace with the same completion-event semantics read off the formulas
-        reasons = completion_check(problem, trace)
-    else:
-        try:
-            reasons = problem.spec.check_trace(trace).reasons
-        except FormulaError:
-            if not precedence:
-                raise
-            reasons = completion_check(problem, trace)
+    reasons = problem.spec.check_trace(trace).reasons
     if reasons:
         raise PlanningError("internal error: the plan does not satisfy the specification: "
                             + "; ".join(reasons))
     return execution
-
-
-def completion_check(problem: Problem, trace: list[TraceEvent]) -> list[str]:
-    """`check_trace` for specs whose non-leaf formulas are all in precedence form (`F c` and
-    `F(a & F b)`): a leaf completes at the step its DFA accepts (reading its own events, and
-    unattributed ones); a non-leaf at the step its last child completes, provided every pair
-    (a, b) completed a no later than b (the exact meaning of F(a & F b) on completion events)."""
-    done: dict[str, int] = {}
-    by_step: dict[int, set[tuple[str, str | None]]] = {}
-    for e in trace:
-        by_step.setdefault(e.t, set()).add((e.atom, e.task))
-    for lf in problem.leaves:
-        state = lf.dfa.init
-        if state in lf.dfa.accepting:
-            done[lf.name] = 0
-            continue
-        own = set(lf.dfa.atoms)
-        for t in sorted(by_step):
-            atoms = {a for a, task in by_step[t] if task in (lf.name, None) and a in own}
-            if not atoms:
-                continue
-            state = lf.dfa.step(state, atoms)
-            if state in lf.dfa.accepting:
-                done[lf.name] = t
-                break
-    for nl in sorted(problem.nonleaves, key=lambda n: -problem.spec.level(n.name)):
-        if all(c in done for c in nl.children) and all(done[a] <= done[b] for a, b in nl.pairs or ()):
-            done[nl.name] = max((done[c] for c in nl.children), default=0)
-    return [f"top formula {r} is not satisfied" for r in problem.roots if r not in done]
