@@ -1,0 +1,80 @@
+"""`nl2hltl2plan bench smartllm (--oracle | --llm offline|local|openai) --out DIR`
+
+Runs SMART-LLM's 36 tasks (../shared/data/smartllm) in their AI2-THOR floor plans, each for its own
+heterogeneous robot team: specs from the ground-truth final states (--oracle) or from the
+instruction through the language stage (--llm), planned, executed in the simulator and scored by
+SMART-LLM's metrics (SR, TC, GCR, RU, Exe). Writes DIR/rows.jsonl, DIR/summary.json (the five
+metrics overall and per floor plan) and DIR/report.md (beside SMART-LLM's published numbers).
+"""
+
+from __future__ import annotations
+
+import argparse
+import contextlib
+import json
+from pathlib import Path
+from typing import Any
+
+from nl2hltl2plan.errors import PlanningError
+
+
+def register(bench_subparsers: Any) -> None:
+    """Add `smartllm` to the `bench` sub-commands."""
+    p = bench_subparsers.add_parser(
+        "smartllm",
+        help="SMART-LLM's benchmark with its metrics (SR, TC, GCR, RU, Exe)",
+        description=__doc__.split("\n\n")[1],
+    )
+    source = p.add_mutually_exclusive_group(required=True)
+    source.add_argument("--oracle", action="store_true", help="specs from the ground-truth final states")
+    source.add_argument("--llm", choices=["offline", "local", "openai"], default=None,
+                        help="the instruction through the language stage with this backend")
+    p.add_argument("--timeout", type=float, default=30.0, help="planner time limit per task in s (30)")
+    p.add_argument("--quiet", action="store_true", help="no progress lines")
+    p.add_argument("--out", type=Path, required=True, help="output folder")
+    p.set_defaults(func=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    from nl2hltl2plan.evaluation.smartllm import METRICS, llm_maker, oracle_maker, run_bench
+
+    if args.timeout <= 0:
+        raise PlanningError("--timeout must be positive")
+
+    def progress(row: dict[str, Any]) -> None:
+        if not args.quiet:
+            vals = " ".join(f"{m}={row[m]:.2f}" for m in METRICS if row.get(m) is not None)
+            print(f"{row['id']:<16} {row.get('status', ''):<16} {vals}", flush=True)
+
+    with contextlib.ExitStack() as stack:
+        if args.oracle:
+            maker, label = oracle_maker, "oracle"
+        else:
+            client = None
+            if args.llm != "offline":
+                from nl2hltl2plan.language.llm.settings import LLMSettings
+                from nl2hltl2plan.language.pipeline import open_client
+
+                client = stack.enter_context(open_client(args.llm, LLMSettings.from_env()))
+            maker, label = llm_maker(args.llm, client), f"language backend {args.llm}"
+        summary = run_bench(args.out, maker, label, args.timeout, progress)
+    print(json.dumps(summary["overall"]))
+    return 0
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Stand-alone entry (`python -m nl2hltl2plan.cli.bench_smartllm --oracle --out DIR`)."""
+    from nl2hltl2plan.errors import Nl2Hltl2PlanError
+
+    parser = argparse.ArgumentParser(prog="nl2hltl2plan bench")
+    register(parser.add_subparsers(dest="suite", required=True))
+    args = parser.parse_args(["smartllm", *(argv if argv is not None else __import__("sys").argv[1:])])
+    try:
+        return int(args.func(args))
+    except Nl2Hltl2PlanError as exc:
+        print(f"error: {exc}")
+        return 2
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
