@@ -30,6 +30,8 @@ def register(bench_subparsers: Any) -> None:
     source.add_argument("--llm", choices=["offline", "local", "openai"], default=None,
                         help="the instruction through the language stage with this backend")
     p.add_argument("--timeout", type=float, default=30.0, help="planner time limit per task in s (30)")
+    p.add_argument("--objective", choices=["min", "minmax"], default="minmax",
+                   help="minmax (default): completion time, which favours parallel robots (RU); min: summed cost")
     p.add_argument("--quiet", action="store_true", help="no progress lines")
     p.add_argument("--out", type=Path, required=True, help="output folder")
     p.set_defaults(func=run)
@@ -57,7 +59,7 @@ def run(args: argparse.Namespace) -> int:
 
                 client = stack.enter_context(open_client(args.llm, LLMSettings.from_env()))
             maker, label = llm_maker(args.llm, client), f"language backend {args.llm}"
-        summary = run_bench(args.out, maker, label, args.timeout, progress)
+        summary = run_bench(args.out, maker, label, args.timeout, progress, args.objective)
     print(json.dumps(summary["overall"]))
     return 0
 

@@ -32,7 +32,7 @@ from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.planning import plan
 from nl2hltl2plan.worlds.checker import final_conditions
 from nl2hltl2plan.worlds.effects import condition_holds
-from nl2hltl2plan.worlds.model import World
+from nl2hltl2plan.worlds.model import CELL_M, World
 from nl2hltl2plan.worlds.simulator import Execution, SimState
 from nl2hltl2plan.worlds.smartllm import SmartTask, load_tasks, oracle_spec, start_cells, world_for
 from nl2hltl2plan.worlds.team import smartllm_team
@@ -48,14 +48,16 @@ def published() -> dict[str, Any]:
 
 
 def stages(result_events: list[dict[str, Any]]) -> int:
-    """Sequential stages of a plan: leaves grouped by overlapping [first, last] action times."""
-    spans: dict[str, list[int]] = {}
+    """Sequential stages of a plan: leaves grouped by overlapping spans, a leaf's span running from
+    when its robot sets off for its first action (t minus the walk) to its last action."""
+    spans: dict[str, list[float]] = {}
     for e in result_events:
         task = e.get("task")
         if task is None:
             continue
-        span = spans.setdefault(task, [e["t"], e["t"]])
-        span[0], span[1] = min(span[0], e["t"]), max(span[1], e["t"])
+        start = e["t"] - round(float(e.get("travel_m") or 0.0) / CELL_M)
+        span = spans.setdefault(task, [start, e["t"]])
+        span[0], span[1] = min(span[0], start), max(span[1], e["t"])
     count, end = 0, -1
     for first, last in sorted(spans.values()):
         if first > end:
@@ -101,7 +103,8 @@ def llm_maker(backend: str, client: Any = None) -> SpecMaker:
     return make
 
 
-def run_task(task: SmartTask, make_spec: SpecMaker, timeout_s: float = 30.0) -> dict[str, Any]:
+def run_task(task: SmartTask, make_spec: SpecMaker, timeout_s: float = 30.0,
+             objective: str = "minmax") -> dict[str, Any]:
     """One task: spec -> team check -> plan -> execute -> SMART-LLM's metrics (a JSON-ready row)."""
     row: dict[str, Any] = {"id": task.id, "floor_plan": task.floor_plan, "task": task.text,
                            "robots": [f"robot{r}" for r in task.robots], "has_gt": task.has_gt,
@@ -118,7 +121,7 @@ def run_task(task: SmartTask, make_spec: SpecMaker, timeout_s: float = 30.0) -> 
                    "SMART-LLM's script does)", stages=1 if task.trans is not None else 0)
         n_stages, exe = 1, 1.0
     else:
-        n_stages, exe, execution = _plan_task(task, world, team, make_spec, timeout_s, row)
+        n_stages, exe, execution = _plan_task(task, world, team, make_spec, timeout_s, objective, row)
     met = final_conditions(execution, conds) if execution is not None else _initial(world, conds)
     gcr = sum(met) / len(met) if met else 1.0
     tc = 1.0 if gcr == 1.0 else 0.0
@@ -131,7 +134,7 @@ def run_task(task: SmartTask, make_spec: SpecMaker, timeout_s: float = 30.0) -> 
 
 
 def _plan_task(task: SmartTask, world: World, team: Any, make_spec: SpecMaker, timeout_s: float,
-               row: dict[str, Any]) -> tuple[int, float, Execution | None]:
+               objective: str, row: dict[str, Any]) -> tuple[int, float, Execution | None]:
     try:
         spec, atoms = make_spec(task, world)
     except Nl2Hltl2PlanError as exc:
@@ -143,7 +146,8 @@ def _plan_task(task: SmartTask, world: World, team: Any, make_spec: SpecMaker, t
         return 0, 0.0, None
     starts = start_cells(world, team.size, seed=sum(map(ord, task.id)))
     try:
-        result = plan(world, spec, starts, capabilities=team.capabilities(world), timeout_s=timeout_s)
+        result = plan(world, spec, starts, capabilities=team.capabilities(world), timeout_s=timeout_s,
+                      objective=objective)  # type: ignore[arg-type]
     except Nl2Hltl2PlanError as exc:
         row.update(status="planning error", reason=str(exc))
         return 0, 0.0, None
@@ -187,18 +191,18 @@ def summarize(rows: list[dict[str, Any]]) -> dict[str, Any]:
 
 
 def run_bench(out: Path, make_spec: SpecMaker, label: str, timeout_s: float = 30.0,
-              progress: Callable[[dict[str, Any]], None] | None = None) -> dict[str, Any]:
+              progress: Callable[[dict[str, Any]], None] | None = None, objective: str = "minmax") -> dict[str, Any]:
     """Run every task, write DIR/rows.jsonl, DIR/summary.json and DIR/report.md; return the summary."""
     out.mkdir(parents=True, exist_ok=True)
     rows = []
     with (out / "rows.jsonl").open("w") as sink:
         for task in load_tasks():
-            row = run_task(task, make_spec, timeout_s)
+            row = run_task(task, make_spec, timeout_s, objective)
             rows.append(row)
             sink.write(json.dumps(row) + "\n")
             if progress:
                 progress(row)
-    summary = {"specs": label, **summarize(rows)}
+    summary = {"specs": label, "objective": objective, **summarize(rows)}
     (out / "summary.json").write_text(json.dumps(summary, indent=2) + "\n")
     (out / "report.md").write_text(report_md(summary, rows))
     return summary

@@ -7,7 +7,8 @@ the repairs recorded per task (`notes`): stray spaces/commas ("CoffeeTable,"), l
 ("cabinet", contains [], state null) is no condition and is dropped with a note. The task without
 ground truth (FloorPlan209 "Turn off floor lamp") has `has_gt` False.
 
-Worlds: the floor plan built from its first ALFRED trial with object poses (`worlds.alfred`), plus
+Worlds: the floor plan built from one of its ALFRED trials (`choose_trial`: the first in which the
+objects the goals move lie outside closed containers, as in AI2-THOR's default scenes), plus
 AI2-THOR's vocabulary (`worlds.effects`: books, laptops and blinds open; laptops, phones, burners,
 toasters switch; every receptacle takes any pickupable object, because SMART-LLM executes PutObject with
 `forceAction=True`, which lifts AI2-THOR's compatibility rules; blinds start open and lights on).
@@ -34,7 +35,7 @@ from nl2hltl2plan.errors import DataError, WorldError
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.logic.relations import compile_relations
 from nl2hltl2plan.worlds import effects
-from nl2hltl2plan.worlds.alfred import affordance_table, load_floor_plan
+from nl2hltl2plan.worlds.alfred import affordance_table, alfred_data, default_trial, load_floor_plan
 from nl2hltl2plan.worlds.model import KNIFE_TYPES, Cell, World, WorldObject, sliced_type
 
 ALIASES = {"trash": "GarbageCan", "garbage": "GarbageCan", "cloth": "Cloth", "cabinet": "Cabinet"}
@@ -140,10 +141,30 @@ def _patched(obj: WorldObject, pickupable: frozenset[str]) -> WorldObject:
     return obj
 
 
+def choose_trial(floor_plan: str, movable: tuple[str, ...]) -> str:
+    """The floor plan's first ALFRED trial (file order) in which every `movable` type the goals move
+    exists and lies outside closed containers (AI2-THOR's default scenes, which SMART-LLM uses, keep
+    such objects in the open); the first trial with object poses when none does."""
+    data = alfred_data()
+    first = default_trial(floor_plan)
+    if not movable:
+        return first
+    for tid in data.by_floor_plan.get(floor_plan, []):
+        if not data.trials[tid].poses:
+            continue
+        world = load_floor_plan(floor_plan, [tid])
+        ok = all(any(o.interaction_cells and world.closed_ancestor(o.id) is None for o in world.instances(t))
+                 for t in movable)
+        if ok:
+            return tid
+    return first
+
+
 @cache
-def smartllm_world(floor_plan: str, extra_types: tuple[str, ...] = ()) -> World:
-    """A SMART-LLM floor plan (see the module docstring); `extra_types` are added if missing."""
-    base = load_floor_plan(floor_plan)
+def smartllm_world(floor_plan: str, extra_types: tuple[str, ...] = (), trial: str | None = None) -> World:
+    """A SMART-LLM floor plan (see the module docstring) with the movable objects of `trial`
+    (default: its first trial); `extra_types` are added if missing."""
+    base = load_floor_plan(floor_plan, [trial] if trial else None)
     objects = list(base.objects.values())
     pickupable = frozenset(o.type for o in objects if o.pickupable)
     table = affordance_table()
@@ -184,9 +205,10 @@ def world_for(task: SmartTask) -> World:
     for c in task.conditions:
         if c.state == "COOKED" and c.name == "Bread":
             need.add("Toaster")
-    known = set(affordance_table().object_types)
-    extra = tuple(sorted(t for t in need if t in known))
-    return smartllm_world(task.floor_plan, extra)
+    table = affordance_table()
+    extra = tuple(sorted(t for t in need if t in table.object_types))
+    movable = tuple(sorted(c.contains for c in task.conditions if c.contains and c.contains in table.pickupable))
+    return smartllm_world(task.floor_plan, extra, choose_trial(task.floor_plan, movable))
 
 
 def start_cells(world: World, n: int, seed: int) -> list[Cell]:
@@ -224,9 +246,10 @@ def _receptacle(world: World, name: str, obj: str) -> str:
 
 
 def _slice_seq(world: World, obj: str) -> list[str]:
+    """Take a knife and slice. Putting the knife back is no goal of SMART-LLM's (and a slicer may
+    lack PutObject); the planner puts it down when that robot's hand is needed again."""
     knife = next((k for k in KNIFE_TYPES if world.instances(k)), KNIFE_TYPES[0])
-    drop = "CounterTop" if world.instances("CounterTop") else _resolve(world, "DiningTable")
-    return [f"pickup({knife})", f"slice({obj})", f"put({knife},{drop})"]
+    return [f"pickup({knife})", f"slice({obj})"]
 
 
 def _leaf(world: World, cond: Condition, task: SmartTask) -> tuple[list[str], list[str]]:
