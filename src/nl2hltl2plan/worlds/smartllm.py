@@ -279,8 +279,11 @@ def _leaf(world: World, cond: Condition, task: SmartTask) -> tuple[list[str], li
 
 
 def _take(world: World, obj: str) -> list[str]:
-    holder = next((world.closed_ancestor(o.id) for o in world.instances(obj) if o.present), None)
-    return ([f"open({world.objects[holder].type})"] if holder else []) + [f"pickup({obj})"]
+    """pickup(obj), after opening the container when every reachable instance sits in a closed one."""
+    holders = [world.closed_ancestor(o.id) for o in world.instances(obj) if o.present and o.interaction_cells]
+    if holders and all(holders):
+        return [f"open({world.objects[holders[0]].type})", f"pickup({obj})"]  # type: ignore[index]
+    return [f"pickup({obj})"]
 
 
 def _openable(world: World, typ: str) -> bool:
