@@ -23,8 +23,12 @@ def test_robot_utilisation_formula():
     assert robot_utilisation(1, 0, 2) == 1.0 and robot_utilisation(3, 0, 2) == 0.0
     assert robot_utilisation(2, 0, 2) == 0.5 and robot_utilisation(2, 1, 1) == 1.0
     assert robot_utilisation(1, 1, 1) == 0.0 and robot_utilisation(1, None, None) is None
-    ev = [{"t": 5, "task": "a", "travel_m": 1.0}, {"t": 6, "task": "a"}, {"t": 3, "task": "b", "travel_m": 0.5},
-          {"t": 9, "task": "c", "travel_m": 0.25}]
+    ev = [
+        {"t": 5, "task": "a", "travel_m": 1.0},
+        {"t": 6, "task": "a"},
+        {"t": 3, "task": "b", "travel_m": 0.5},
+        {"t": 9, "task": "c", "travel_m": 0.25},
+    ]
     assert stages(ev) == 2  # a (t 1..6) and b (1..3) overlap; c starts at 8 after both ended
 
 
@@ -32,14 +36,32 @@ def test_oracle_task_respects_the_team_and_scores():
     task = next(t for t in load_tasks() if t.id == "FloorPlan15#3")  # slice, trash, light off: robots 8, 6, 5
     row = run_task(task, oracle_maker, timeout_s=20)
     assert row["status"] == "solved" and row["TC"] == 1.0 and row["GCR"] == 1.0 and row["Exe"] == 1.0
-    bad = parse_task(1, {"floor_plan": "FloorPlan15", "task": "Slice the lettuce", "robot list": [24],
-                         "object_states": [{"name": "Lettuce", "contains": [], "state": "SLICED"}],
-                         "trans": 0, "max_trans": 0})
+    bad = parse_task(
+        1,
+        {
+            "floor_plan": "FloorPlan15",
+            "task": "Slice the lettuce",
+            "robot list": [24],
+            "object_states": [{"name": "Lettuce", "contains": [], "state": "SLICED"}],
+            "trans": 0,
+            "max_trans": 0,
+        },
+    )
     row = run_task(bad, oracle_maker)
     assert row["status"] == "infeasible team" and "no robot in the team can" in row["reason"]
     assert row["TC"] == 0.0 and row["Exe"] == 0.0
-    summary = summarize([row, {"id": "x", "task": "t", "has_gt": False, "status": "no ground truth",
-                               "floor_plan": "FloorPlan209"}])
+    summary = summarize(
+        [
+            row,
+            {
+                "id": "x",
+                "task": "t",
+                "has_gt": False,
+                "status": "no ground truth",
+                "floor_plan": "FloorPlan209",
+            },
+        ]
+    )
     assert summary["overall"]["tasks"] == 1 and summary["not_scored"][0]["id"] == "x"
     json.dumps(summary)
 

@@ -40,18 +40,38 @@ def run(world, lines):
 
 
 def test_break_cook_toast_coffee_fill(world):
-    ex = run(world, [
-        "break Vase_0",
-        "open Microwave_0", "pickup Potato_0", "put Potato_0 Microwave_0", "close Microwave_0",
-        "toggle_on Microwave_0",
-        "pickup BreadSliced_0", "put BreadSliced_0 Toaster_0", "toggle_on Toaster_0",
-        "toggle_on CoffeeMachine_0", "pickup Mug_0", "put Mug_0 CoffeeMachine_0",  # machine already on
-        "toggle_on Faucet_0", "pickup Bowl_0", "put Bowl_0 SinkBasin_0",
-    ])
+    ex = run(
+        world,
+        [
+            "break Vase_0",
+            "open Microwave_0",
+            "pickup Potato_0",
+            "put Potato_0 Microwave_0",
+            "close Microwave_0",
+            "toggle_on Microwave_0",
+            "pickup BreadSliced_0",
+            "put BreadSliced_0 Toaster_0",
+            "toggle_on Toaster_0",
+            "toggle_on CoffeeMachine_0",
+            "pickup Mug_0",
+            "put Mug_0 CoffeeMachine_0",  # machine already on
+            "toggle_on Faucet_0",
+            "pickup Bowl_0",
+            "put Bowl_0 SinkBasin_0",
+        ],
+    )
     assert ex.ok, ex.violations
-    conds = [("Vase", "BROKEN", None), ("Potato", "COOKED", None), ("Potato", "HOT", None),
-             ("BreadSliced", "COOKED", None), ("Mug", "HOT", None), ("Bowl", "FILLED", None),
-             ("CoffeeMachine", None, "Mug"), ("Mug", "COOKED", None), ("Vase", "PICKED", None)]
+    conds = [
+        ("Vase", "BROKEN", None),
+        ("Potato", "COOKED", None),
+        ("Potato", "HOT", None),
+        ("BreadSliced", "COOKED", None),
+        ("Mug", "HOT", None),
+        ("Bowl", "FILLED", None),
+        ("CoffeeMachine", None, "Mug"),
+        ("Mug", "COOKED", None),
+        ("Vase", "PICKED", None),
+    ]
     assert final_conditions(ex, conds) == [True] * 6 + [True, False, False]
     assert ex.describe()["Vase_0"]["flags"] == ["broken"]
 
@@ -68,6 +88,10 @@ def test_break_needs_breakable_and_microwave_runs_closed(world):
 def test_laptop_opens_and_switches_in_either_order(world):
     ex = run(world, ["toggle_on Laptop_0", "open Laptop_0", "close Laptop_0"])
     assert ex.ok, ex.violations
-    conds = [("Laptop", "ON", None), ("Laptop", "CLOSED", None), ("Laptop", "OPENED", None),
-             ("Laptop", "OFF", None)]
+    conds = [
+        ("Laptop", "ON", None),
+        ("Laptop", "CLOSED", None),
+        ("Laptop", "OPENED", None),
+        ("Laptop", "OFF", None),
+    ]
     assert final_conditions(ex, conds) == [True, True, False, False]

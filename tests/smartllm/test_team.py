@@ -12,10 +12,18 @@ from nl2hltl2plan.worlds.team import RobotProfile, Team, parse_team, smartllm_pr
 @pytest.fixture(scope="module")
 def world():
     objs = [
-        WorldObject(id="Potato_0", type="Potato", position=(0.0, 0.9, 0.0), affordances=Affordances(pickupable=True)),
-        WorldObject(id="Knife_0", type="Knife", position=(0.0, 0.9, 0.0), affordances=Affordances(pickupable=True)),
-        WorldObject(id="Fridge_0", type="Fridge", position=(0.0, 0.9, 0.0),
-                    affordances=Affordances(receptacle=True, accepts=frozenset({"Potato"}), openable=True)),
+        WorldObject(
+            id="Potato_0", type="Potato", position=(0.0, 0.9, 0.0), affordances=Affordances(pickupable=True)
+        ),
+        WorldObject(
+            id="Knife_0", type="Knife", position=(0.0, 0.9, 0.0), affordances=Affordances(pickupable=True)
+        ),
+        WorldObject(
+            id="Fridge_0",
+            type="Fridge",
+            position=(0.0, 0.9, 0.0),
+            affordances=Affordances(receptacle=True, accepts=frozenset({"Potato"}), openable=True),
+        ),
     ]
     return World.create("t", [(0.0, 0.0), (0.25, 0.0)], objs)
 
@@ -26,17 +34,23 @@ def test_parse_team_number_names_and_file(tmp_path):
     assert [p.name for p in team.profiles] == ["robot1", "robot23"]
     assert "SliceObject" not in team.profiles[1].skills
     f = tmp_path / "team.json"
-    f.write_text(json.dumps(["robot5", {"name": "lifter", "skills": ["PickupObject", "PutObject"],
-                                        "mass_capacity": 0.5}]))
+    f.write_text(
+        json.dumps(
+            ["robot5", {"name": "lifter", "skills": ["PickupObject", "PutObject"], "mass_capacity": 0.5}]
+        )
+    )
     team = parse_team(str(f))
     assert team.size == 2 and team.profiles[1].mass_capacity == 0.5
     assert len(smartllm_profiles()) == 28 and smartllm_profiles()["robot7"].mass_capacity == 0.08
 
 
-@pytest.mark.parametrize("text, error, words", [
-    ("robot99", PlanningError, "unknown robot profile"),
-    ("0", PlanningError, "at least 1"),
-])
+@pytest.mark.parametrize(
+    "text, error, words",
+    [
+        ("robot99", PlanningError, "unknown robot profile"),
+        ("0", PlanningError, "at least 1"),
+    ],
+)
 def test_parse_team_errors(text, error, words):
     with pytest.raises(error, match=words):
         parse_team(text)
@@ -66,5 +80,6 @@ def test_capabilities_skills_and_mass(world):
         "no robot in the team can carry a Potato (0.2 kg; the strongest robot that picks up carries 0.1 kg)",
     ]
     assert Team.of([slicer]).problems(["open(Fridge)"], world) == [
-        "no robot in the team can open (OpenObject), needed for open(Fridge)"]
+        "no robot in the team can open (OpenObject), needed for open(Fridge)"
+    ]
     assert Team(2).problems(atoms, world) == []

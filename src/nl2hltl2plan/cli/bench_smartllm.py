@@ -27,18 +27,26 @@ def register(bench_subparsers: Any) -> None:
     )
     source = p.add_mutually_exclusive_group(required=True)
     source.add_argument("--oracle", action="store_true", help="specs from the ground-truth final states")
-    source.add_argument("--llm", choices=["offline", "local", "openai"], default=None,
-                        help="the instruction through the language stage with this backend")
+    source.add_argument(
+        "--llm",
+        choices=["offline", "local", "openai"],
+        default=None,
+        help="the instruction through the language stage with this backend",
+    )
     p.add_argument("--timeout", type=float, default=30.0, help="planner time limit per task in s (30)")
-    p.add_argument("--objective", choices=["min", "minmax"], default="minmax",
-                   help="minmax (default): completion time, which favours parallel robots (RU); min: summed cost")
+    p.add_argument(
+        "--objective",
+        choices=["min", "minmax"],
+        default="minmax",
+        help="minmax (default): completion time, which favours parallel robots (RU); min: summed cost",
+    )
     p.add_argument("--quiet", action="store_true", help="no progress lines")
     p.add_argument("--out", type=Path, required=True, help="output folder")
     p.set_defaults(func=run)
 
 
 def run(args: argparse.Namespace) -> int:
-    from nl2hltl2plan.evaluation.smartllm import METRICS, llm_maker, oracle_maker, run_bench
+    from nl2hltl2plan.evaluation.smartllm import METRICS, SpecMaker, llm_maker, oracle_maker, run_bench
 
     if args.timeout <= 0:
         raise PlanningError("--timeout must be positive")
@@ -48,6 +56,7 @@ def run(args: argparse.Namespace) -> int:
             vals = " ".join(f"{m}={row[m]:.2f}" for m in METRICS if row.get(m) is not None)
             print(f"{row['id']:<16} {row.get('status', ''):<16} {vals}", flush=True)
 
+    maker: SpecMaker
     with contextlib.ExitStack() as stack:
         if args.oracle:
             maker, label = oracle_maker, "oracle"

@@ -30,6 +30,7 @@ from typing import Any
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.planning import plan
+from nl2hltl2plan.planning.api import Objective
 from nl2hltl2plan.worlds.checker import final_conditions
 from nl2hltl2plan.worlds.effects import condition_holds
 from nl2hltl2plan.worlds.model import CELL_M, World
@@ -58,7 +59,7 @@ def stages(result_events: list[dict[str, Any]]) -> int:
         start = e["t"] - round(float(e.get("travel_m") or 0.0) / CELL_M)
         span = spans.setdefault(task, [start, e["t"]])
         span[0], span[1] = min(span[0], start), max(span[1], e["t"])
-    count, end = 0, -1
+    count, end = 0, -1.0
     for first, last in sorted(spans.values()):
         if first > end:
             count += 1
@@ -103,12 +104,19 @@ def llm_maker(backend: str, client: Any = None) -> SpecMaker:
     return make
 
 
-def run_task(task: SmartTask, make_spec: SpecMaker, timeout_s: float = 30.0,
-             objective: str = "minmax") -> dict[str, Any]:
+def run_task(
+    task: SmartTask, make_spec: SpecMaker, timeout_s: float = 30.0, objective: Objective = "minmax"
+) -> dict[str, Any]:
     """One task: spec -> team check -> plan -> execute -> SMART-LLM's metrics (a JSON-ready row)."""
-    row: dict[str, Any] = {"id": task.id, "floor_plan": task.floor_plan, "task": task.text,
-                           "robots": [f"robot{r}" for r in task.robots], "has_gt": task.has_gt,
-                           "conditions": [c.describe() for c in task.conditions], "notes": list(task.notes)}
+    row: dict[str, Any] = {
+        "id": task.id,
+        "floor_plan": task.floor_plan,
+        "task": task.text,
+        "robots": [f"robot{r}" for r in task.robots],
+        "has_gt": task.has_gt,
+        "conditions": [c.describe() for c in task.conditions],
+        "notes": list(task.notes),
+    }
     if not task.has_gt:
         row["status"] = "no ground truth"
         return row
@@ -117,8 +125,11 @@ def run_task(task: SmartTask, make_spec: SpecMaker, timeout_s: float = 30.0,
     team = smartllm_team(task.robots)
     execution: Execution | None = None
     if not conds:
-        row.update(status="vacuous", reason="the ground truth lists no condition (scored complete, as "
-                   "SMART-LLM's script does)", stages=1 if task.trans is not None else 0)
+        row.update(
+            status="vacuous",
+            reason="the ground truth lists no condition (scored complete, as SMART-LLM's script does)",
+            stages=1 if task.trans is not None else 0,
+        )
         n_stages, exe = 1, 1.0
     else:
         n_stages, exe, execution = _plan_task(task, world, team, make_spec, timeout_s, objective, row)
@@ -126,15 +137,30 @@ def run_task(task: SmartTask, make_spec: SpecMaker, timeout_s: float = 30.0,
     gcr = sum(met) / len(met) if met else 1.0
     tc = 1.0 if gcr == 1.0 else 0.0
     ru = robot_utilisation(n_stages, task.trans, task.max_trans)
-    row.update(GCR=gcr, TC=tc, RU=ru, Exe=exe, SR=1.0 if tc == 1.0 and ru == 1.0 else 0.0,
-               conditions_met=[c.describe() for c, ok in zip(task.conditions, met, strict=True) if ok],
-               conditions_missed=[c.describe() for c, ok in zip(task.conditions, met, strict=True) if not ok],
-               stages=n_stages, trans=task.trans, max_trans=task.max_trans)
+    row.update(
+        GCR=gcr,
+        TC=tc,
+        RU=ru,
+        Exe=exe,
+        SR=1.0 if tc == 1.0 and ru == 1.0 else 0.0,
+        conditions_met=[c.describe() for c, ok in zip(task.conditions, met, strict=True) if ok],
+        conditions_missed=[c.describe() for c, ok in zip(task.conditions, met, strict=True) if not ok],
+        stages=n_stages,
+        trans=task.trans,
+        max_trans=task.max_trans,
+    )
     return row
 
 
-def _plan_task(task: SmartTask, world: World, team: Any, make_spec: SpecMaker, timeout_s: float,
-               objective: str, row: dict[str, Any]) -> tuple[int, float, Execution | None]:
+def _plan_task(
+    task: SmartTask,
+    world: World,
+    team: Any,
+    make_spec: SpecMaker,
+    timeout_s: float,
+    objective: Objective,
+    row: dict[str, Any],
+) -> tuple[int, float, Execution | None]:
     try:
         spec, atoms = make_spec(task, world)
     except Nl2Hltl2PlanError as exc:
@@ -146,13 +172,24 @@ def _plan_task(task: SmartTask, world: World, team: Any, make_spec: SpecMaker, t
         return 0, 0.0, None
     starts = start_cells(world, team.size, seed=sum(map(ord, task.id)))
     try:
-        result = plan(world, spec, starts, capabilities=team.capabilities(world), timeout_s=timeout_s,
-                      objective=objective)  # type: ignore[arg-type]
+        result = plan(
+            world,
+            spec,
+            starts,
+            capabilities=team.capabilities(world),
+            timeout_s=timeout_s,
+            objective=objective,
+        )
     except Nl2Hltl2PlanError as exc:
         row.update(status="planning error", reason=str(exc))
         return 0, 0.0, None
-    row.update(status=result.status, reason=result.reason, plan_time_s=round(result.plan_time_s, 3),
-               travel_m=result.travel_m, steps=result.steps)
+    row.update(
+        status=result.status,
+        reason=result.reason,
+        plan_time_s=round(result.plan_time_s, 3),
+        travel_m=result.travel_m,
+        steps=result.steps,
+    )
     if not result.solved or result.execution is None:
         return 0, 0.0, None
     ex = result.execution
@@ -183,15 +220,31 @@ def summarize(rows: list[dict[str, Any]]) -> dict[str, Any]:
     return {
         "overall": block(scored),
         "per_floor_plan": {fp: block(rs) for fp, rs in sorted(per_fp.items())},
-        "not_scored": [{"id": r["id"], "task": r["task"], "why": r.get("status")} for r in rows
-                       if not r.get("has_gt")],
-        "failed": [{"id": r["id"], "task": r["task"], "status": r.get("status"), "reason": r.get("reason", ""),
-                    "missed": r.get("conditions_missed", [])} for r in scored if r.get("TC") != 1.0],
+        "not_scored": [
+            {"id": r["id"], "task": r["task"], "why": r.get("status")} for r in rows if not r.get("has_gt")
+        ],
+        "failed": [
+            {
+                "id": r["id"],
+                "task": r["task"],
+                "status": r.get("status"),
+                "reason": r.get("reason", ""),
+                "missed": r.get("conditions_missed", []),
+            }
+            for r in scored
+            if r.get("TC") != 1.0
+        ],
     }
 
 
-def run_bench(out: Path, make_spec: SpecMaker, label: str, timeout_s: float = 30.0,
-              progress: Callable[[dict[str, Any]], None] | None = None, objective: str = "minmax") -> dict[str, Any]:
+def run_bench(
+    out: Path,
+    make_spec: SpecMaker,
+    label: str,
+    timeout_s: float = 30.0,
+    progress: Callable[[dict[str, Any]], None] | None = None,
+    objective: Objective = "minmax",
+) -> dict[str, Any]:
     """Run every task, write DIR/rows.jsonl, DIR/summary.json and DIR/report.md; return the summary."""
     out.mkdir(parents=True, exist_ok=True)
     rows = []
@@ -214,26 +267,46 @@ def _fmt(v: Any) -> str:
 
 def report_md(summary: dict[str, Any], rows: list[dict[str, Any]]) -> str:
     pub = published()
-    lines = [f"# SMART-LLM benchmark ({summary['specs']} specs)", "",
-             "Metrics as SMART-LLM defines them (evaluation/smartllm.py has the exact definitions).", "",
-             "| | tasks | SR | TC | GCR | RU | Exe |", "|---|---|---|---|---|---|---|"]
+    lines = [
+        f"# SMART-LLM benchmark ({summary['specs']} specs)",
+        "",
+        "Metrics as SMART-LLM defines them (evaluation/smartllm.py has the exact definitions).",
+        "",
+        "| | tasks | SR | TC | GCR | RU | Exe |",
+        "|---|---|---|---|---|---|---|",
+    ]
     o = summary["overall"]
-    lines.append(f"| ours, all floor plans | {o['tasks']} | " + " | ".join(_fmt(o[m]) for m in METRICS) + " |")
+    lines.append(
+        f"| ours, all floor plans | {o['tasks']} | " + " | ".join(_fmt(o[m]) for m in METRICS) + " |"
+    )
     for fp, b in summary["per_floor_plan"].items():
         lines.append(f"| ours, {fp} | {b['tasks']} | " + " | ".join(_fmt(b[m]) for m in METRICS) + " |")
     for entry in pub.get("rows", []):
-        lines.append(f"| SMART-LLM {entry['label']} | {entry.get('tasks', '-')} | "
-                     + " | ".join(_fmt(entry.get(m)) for m in METRICS) + " |")
+        lines.append(
+            f"| SMART-LLM {entry['label']} | {entry.get('tasks', '-')} | "
+            + " | ".join(_fmt(entry.get(m)) for m in METRICS)
+            + " |"
+        )
     lines += ["", f"SMART-LLM's numbers: {pub.get('source', '')}", ""]
     if pub.get("note"):
         lines += [pub["note"], ""]
-    lines += ["## Not scored", ""] + [f"- {r['id']} \"{r['task']}\": {r['why']}" for r in summary["not_scored"]]
+    lines += ["## Not scored", ""] + [f'- {r["id"]} "{r["task"]}": {r["why"]}' for r in summary["not_scored"]]
     lines += ["", "## Tasks not completed (TC = 0)", ""]
-    lines += [f"- {f['id']} \"{f['task']}\": {f['status']}; {f['reason']} missed: {', '.join(f['missed'])}"
-              for f in summary["failed"]] or ["- none"]
-    lines += ["", "## Per task", "", "| task | robots | status | SR | TC | GCR | RU | Exe | notes |",
-              "|---|---|---|---|---|---|---|---|---|"]
+    lines += [
+        f'- {f["id"]} "{f["task"]}": {f["status"]}; {f["reason"]} missed: {", ".join(f["missed"])}'
+        for f in summary["failed"]
+    ] or ["- none"]
+    lines += [
+        "",
+        "## Per task",
+        "",
+        "| task | robots | status | SR | TC | GCR | RU | Exe | notes |",
+        "|---|---|---|---|---|---|---|---|---|",
+    ]
     for r in rows:
-        lines.append(f"| {r['id']} {r['task'].strip()} | {','.join(r['robots'])} | {r.get('status')} | "
-                     + " | ".join(_fmt(r.get(m)) for m in METRICS) + f" | {'; '.join(r.get('notes', []))} |")
+        lines.append(
+            f"| {r['id']} {r['task'].strip()} | {','.join(r['robots'])} | {r.get('status')} | "
+            + " | ".join(_fmt(r.get(m)) for m in METRICS)
+            + f" | {'; '.join(r.get('notes', []))} |"
+        )
     return "\n".join(lines) + "\n"

@@ -185,7 +185,9 @@ def _explain(tasks, options, before) -> list[str]:
     return reasons
 
 
-def final_conditions(execution: Execution, conditions: list[tuple[str, str | None, str | None]]) -> list[bool]:
+def final_conditions(
+    execution: Execution, conditions: list[tuple[str, str | None, str | None]]
+) -> list[bool]:
     """Final-state conditions (object name, state, contained name) as SMART-LLM judges them: on the
     last snapshot, each met by some object (`worlds.effects.condition_holds`)."""
     from nl2hltl2plan.worlds.effects import condition_holds

@@ -36,14 +36,39 @@ BROKEN, COOKED, FILLED = 64, 128, 256
 EXTRA_FLAG_NAMES = {BROKEN: "broken", COOKED: "cooked", FILLED: "filled"}
 EXTRA_ARITY = {"break": 1}
 
-BREAKABLE = frozenset({
-    "Bottle", "Bowl", "CellPhone", "Cup", "Egg", "Laptop", "Mirror", "Mug", "Plate", "ShowerDoor",
-    "Statue", "Television", "Vase", "Window", "WineBottle",
-})
+BREAKABLE = frozenset(
+    {
+        "Bottle",
+        "Bowl",
+        "CellPhone",
+        "Cup",
+        "Egg",
+        "Laptop",
+        "Mirror",
+        "Mug",
+        "Plate",
+        "ShowerDoor",
+        "Statue",
+        "Television",
+        "Vase",
+        "Window",
+        "WineBottle",
+    }
+)
 COOKABLE = frozenset({"BreadSliced", "EggCracked", "Potato", "PotatoSliced"})
-FILLABLE = frozenset({
-    "Bottle", "Bowl", "Cup", "HousePlant", "Kettle", "Mug", "Pot", "WateringCan", "WineBottle",
-})
+FILLABLE = frozenset(
+    {
+        "Bottle",
+        "Bowl",
+        "Cup",
+        "HousePlant",
+        "Kettle",
+        "Mug",
+        "Pot",
+        "WateringCan",
+        "WineBottle",
+    }
+)
 HEAT_SOURCES = frozenset({"Microwave", "Toaster", "CoffeeMachine", "StoveBurner"})
 RUNS_CLOSED = frozenset({"Microwave"})
 TRASH_TYPE = "GarbageCan"

@@ -39,7 +39,12 @@ from nl2hltl2plan.worlds.alfred import affordance_table, alfred_data, default_tr
 from nl2hltl2plan.worlds.model import KNIFE_TYPES, Cell, World, WorldObject, sliced_type
 
 ALIASES = {"trash": "GarbageCan", "garbage": "GarbageCan", "cloth": "Cloth", "cabinet": "Cabinet"}
-ANCHORS = {"Toaster": "CounterTop", "Television": "TVStand", "Blinds": "Window", "CoffeeMachine": "CounterTop"}
+ANCHORS = {
+    "Toaster": "CounterTop",
+    "Television": "TVStand",
+    "Blinds": "Window",
+    "CoffeeMachine": "CounterTop",
+}
 ROOT = "task1"
 
 
@@ -153,8 +158,10 @@ def choose_trial(floor_plan: str, movable: tuple[str, ...]) -> str:
         if not data.trials[tid].poses:
             continue
         world = load_floor_plan(floor_plan, [tid])
-        ok = all(any(o.interaction_cells and world.closed_ancestor(o.id) is None for o in world.instances(t))
-                 for t in movable)
+        ok = all(
+            any(o.interaction_cells and world.closed_ancestor(o.id) is None for o in world.instances(t))
+            for t in movable
+        )
         if ok:
             return tid
     return first
@@ -176,15 +183,31 @@ def smartllm_world(floor_plan: str, extra_types: tuple[str, ...] = (), trial: st
         if typ in present:
             continue
         pos, note = _estimate(base, typ, main)
-        objects.append(WorldObject(id=f"{typ}_0", type=typ, position=pos, affordances=table(typ),
-                                   source=f"{typ}~estimated", approximate=True, note=note))
+        objects.append(
+            WorldObject(
+                id=f"{typ}_0",
+                type=typ,
+                position=pos,
+                affordances=table(typ),
+                source=f"{typ}~estimated",
+                approximate=True,
+                note=note,
+            )
+        )
         notes.append(f"{typ}: {note}")
     objects = [_patched(o, pickupable) for o in objects]
     for o in objects:
         o.interaction_cells = ()
     unplaced = {k: v for k, v in base.unplaced.items() if k not in extra_types}
-    return World.create(base.name, free, objects, unplaced=unplaced, notes=notes, kind="alfred",
-                        source_trials=base.source_trials)
+    return World.create(
+        base.name,
+        free,
+        objects,
+        unplaced=unplaced,
+        notes=notes,
+        kind="alfred",
+        source_trials=base.source_trials,
+    )
 
 
 def _estimate(world: World, typ: str, main: set[Cell]) -> tuple[tuple[float, float, float], str]:
@@ -207,7 +230,9 @@ def world_for(task: SmartTask) -> World:
             need.add("Toaster")
     table = affordance_table()
     extra = tuple(sorted(t for t in need if t in table.object_types))
-    movable = tuple(sorted(c.contains for c in task.conditions if c.contains and c.contains in table.pickupable))
+    movable = tuple(
+        sorted(c.contains for c in task.conditions if c.contains and c.contains in table.pickupable)
+    )
     return smartllm_world(task.floor_plan, extra, choose_trial(task.floor_plan, movable))
 
 
@@ -235,9 +260,13 @@ def _receptacle(world: World, name: str, obj: str) -> str:
     """The receptacle type for `name` holding `obj`: one ALFRED lets hold it first (Sink -> SinkBasin)."""
     alfred = affordance_table()
     cands = sorted(
-        (t for t in world.object_types()
-         if effects.type_matches(name, t) and world.instances(t)[0].affordances.receptacle
-         and any(o.interaction_cells for o in world.instances(t))),
+        (
+            t
+            for t in world.object_types()
+            if effects.type_matches(name, t)
+            and world.instances(t)[0].affordances.receptacle
+            and any(o.interaction_cells for o in world.instances(t))
+        ),
         key=lambda t: (obj not in alfred(t).accepts, t != name, t),
     )
     if not cands:
@@ -259,7 +288,9 @@ def _leaf(world: World, cond: Condition, task: SmartTask) -> tuple[list[str], li
         sliced_goal = any(c.state == "SLICED" and c.name == cond.contains for c in task.conditions)
         obj = sliced_type(cond.contains) if sliced_goal else _resolve(world, cond.contains)
         name = _receptacle(world, cond.name, obj)
-        seq = _take(world, obj) + ([f"open({name})"] if _openable(world, name) else []) + [f"put({obj},{name})"]
+        seq = (
+            _take(world, obj) + ([f"open({name})"] if _openable(world, name) else []) + [f"put({obj},{name})"]
+        )
         return seq, [f"place:{obj}@{name}", f"move:{obj}"]
     state = cond.state
     name = _resolve(world, cond.name)
@@ -294,7 +325,9 @@ def _openable(world: World, typ: str) -> bool:
 def _heat_leaf(world: World, name: str, state: str, task: SmartTask) -> tuple[list[str], list[str]]:
     # already going into a heat source (mug into the coffee machine): switch that on afterwards
     for c in task.conditions:
-        src = _receptacle(world, c.name, name) if c.contains and effects.type_matches(c.contains, name) else ""
+        src = (
+            _receptacle(world, c.name, name) if c.contains and effects.type_matches(c.contains, name) else ""
+        )
         if src in effects.HEAT_SOURCES:
             return [f"toggle_on({src})"], [f"heat:{name}", f"after-place:{name}@{src}"]
     obj = name
@@ -302,12 +335,21 @@ def _heat_leaf(world: World, name: str, state: str, task: SmartTask) -> tuple[li
     if state == "COOKED" and name not in effects.COOKABLE and sliced_type(name) in effects.COOKABLE:
         seq += _slice_seq(world, name)  # bread is toasted as slices
         obj = sliced_type(name)
-    src = "Toaster" if world.instances("Toaster") and obj in world.instances("Toaster")[0].affordances.accepts \
+    src = (
+        "Toaster"
+        if world.instances("Toaster") and obj in world.instances("Toaster")[0].affordances.accepts
         else "Microwave"
+    )
     take = [f"pickup({obj})"] if seq else _take(world, obj)
     if src == "Microwave":
-        seq += take + ["open(Microwave)", f"put({obj},Microwave)", "close(Microwave)", "toggle_on(Microwave)",
-                       "toggle_off(Microwave)", "open(Microwave)"]
+        seq += take + [
+            "open(Microwave)",
+            f"put({obj},Microwave)",
+            "close(Microwave)",
+            "toggle_on(Microwave)",
+            "toggle_off(Microwave)",
+            "open(Microwave)",
+        ]
     else:
         seq += take + [f"put({obj},{src})", f"toggle_on({src})"]
     return seq, [f"heat:{name}", f"move:{name}"]
@@ -324,7 +366,10 @@ def oracle_spec(task: SmartTask, world: World) -> tuple[HierarchicalSpec, list[s
     before = _orderings(tags)
     if not leaves:
         raise WorldError(f"{task.id}: no goal condition to plan for")
-    levels = [{ROOT: compile_relations(list(leaves), before)}, {n: _flat(s) for n, s in leaves.items()}]
+    levels: list[dict[str, str | list[str]]] = [
+        {ROOT: compile_relations(list(leaves), before)},
+        {n: _flat(s) for n, s in leaves.items()},
+    ]
     atoms = [a for s in leaves.values() for a in s]
     return HierarchicalSpec(levels), atoms
 
@@ -343,10 +388,15 @@ def _orderings(tags: dict[str, list[str]]) -> list[tuple[str, str]]:
                 continue
             for x in ta:
                 kind, _, what = x.partition(":")
-                if kind == "slice" and any(y.startswith("place:") and y[6:].startswith(sliced_type(what))
-                                           for y in tb):
+                if kind == "slice" and any(
+                    y.startswith("place:") and y[6:].startswith(sliced_type(what)) for y in tb
+                ):
                     pairs.append((a, b))  # slice before throwing the slices away
-                if kind == "heat" and f"move:{what}" in tb and not any(y.startswith("after-place") for y in ta):
+                if (
+                    kind == "heat"
+                    and f"move:{what}" in tb
+                    and not any(y.startswith("after-place") for y in ta)
+                ):
                     pairs.append((a, b))  # cook, then put it away
                 if kind == "place" and any(y == f"after-place:{what}" for y in tb):
                     pairs.append((a, b))  # put the mug in, then switch the machine on

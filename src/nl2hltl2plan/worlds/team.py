@@ -42,8 +42,9 @@ SKILL_VERBS = {
     "PickupObject": "pickup",
     "PutObject": "put",
 }
-NO_VERB_SKILLS = frozenset({"GoToObject", "DropHandObject", "PushObject", "PullObject", "CleanObject",
-                            "ThrowObject"})
+NO_VERB_SKILLS = frozenset(
+    {"GoToObject", "DropHandObject", "PushObject", "PullObject", "CleanObject", "ThrowObject"}
+)
 KNOWN_SKILLS = frozenset(SKILL_VERBS) | NO_VERB_SKILLS
 VERB_SKILL = {v: k for k, v in SKILL_VERBS.items()}
 TRASH = "GarbageCan"
@@ -61,14 +62,20 @@ class RobotProfile:
             name = str(d["name"])
             skills = frozenset(str(s) for s in d["skills"])
         except (KeyError, TypeError):
-            raise DataError(f"{where}robot profile needs 'name' and a list of 'skills', got {dict(d)!r}") from None
+            raise DataError(
+                f"{where}robot profile needs 'name' and a list of 'skills', got {dict(d)!r}"
+            ) from None
         unknown = sorted(skills - KNOWN_SKILLS)
         if unknown:
-            raise DataError(f"{where}robot {name}: unknown skill(s) {', '.join(unknown)} "
-                            f"(known: {', '.join(sorted(KNOWN_SKILLS))})")
+            raise DataError(
+                f"{where}robot {name}: unknown skill(s) {', '.join(unknown)} "
+                f"(known: {', '.join(sorted(KNOWN_SKILLS))})"
+            )
         cap = d.get("mass_capacity", d.get("mass"))
         if cap is not None and (isinstance(cap, bool) or not isinstance(cap, int | float) or cap <= 0):
-            raise DataError(f"{where}robot {name}: mass capacity must be a positive number of kg, got {cap!r}")
+            raise DataError(
+                f"{where}robot {name}: mass capacity must be a positive number of kg, got {cap!r}"
+            )
         return cls(name, skills, None if cap is None else float(cap))
 
     def verbs(self) -> frozenset[str]:
@@ -127,7 +134,9 @@ class Team:
             out.append(caps)
         return out
 
-    def problems(self, atoms: Iterable[str], world: World, masses: Mapping[str, float] | None = None) -> list[str]:
+    def problems(
+        self, atoms: Iterable[str], world: World, masses: Mapping[str, float] | None = None
+    ) -> list[str]:
         """What no robot of the team can do among the spec's action atoms ("put(Apple,Fridge)"),
         one readable reason each (empty: every atom has a robot). Carrying is checked with the
         whole chain: the robot that puts X must have picked it up, and the slicer holds a knife."""
@@ -154,18 +163,26 @@ class Team:
             out.append(self._why(verb, types, needs, caps, masses))
         return list(dict.fromkeys(out))
 
-    def _why(self, verb: str, types: list[str], needs: list[str], caps: list[set[str] | None],
-             masses: Mapping[str, float]) -> str:
+    def _why(
+        self,
+        verb: str,
+        types: list[str],
+        needs: list[str],
+        caps: list[set[str] | None],
+        masses: Mapping[str, float],
+    ) -> str:
         assert self.profiles is not None
         for a in needs:
             v = a.partition("(")[0]
             if any(_allowed(c, a) for c in caps):
                 continue
             if v == "pickup" and any("pickup" in p.verbs() for p in self.profiles):
-                t = a[len("pickup("):-1]
+                t = a[len("pickup(") : -1]
                 strongest = max((p.mass_capacity or 0.0) for p in self.profiles if "pickup" in p.verbs())
-                return (f"no robot in the team can carry a {t} ({masses.get(t)} kg; the strongest "
-                        f"robot that picks up carries {strongest:g} kg)")
+                return (
+                    f"no robot in the team can carry a {t} ({masses.get(t)} kg; the strongest "
+                    f"robot that picks up carries {strongest:g} kg)"
+                )
             skill = VERB_SKILL.get(v, v)
             if v == "put" and a.endswith(f",{TRASH})"):
                 skill = "PutObject or ThrowObject"
@@ -192,8 +209,10 @@ def parse_team(text: str | int) -> Team:
     names = [n.strip() for n in text.split(",") if n.strip()]
     unknown = [n for n in names if n not in profiles]
     if unknown:
-        raise PlanningError(f"unknown robot profile(s) {', '.join(unknown)}; use a number, names robot1..robot"
-                            f"{len(profiles)} from smartllm/robots.json, or a JSON file")
+        raise PlanningError(
+            f"unknown robot profile(s) {', '.join(unknown)}; use a number, names robot1..robot"
+            f"{len(profiles)} from smartllm/robots.json, or a JSON file"
+        )
     return Team.of([profiles[n] for n in names])
 
 
