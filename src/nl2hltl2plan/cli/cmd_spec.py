@@ -7,7 +7,7 @@ import json
 
 from nl2hltl2plan.language.htt import HTT
 from nl2hltl2plan.language.spec_builder import build_spec
-from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
+from nl2hltl2plan.logic.hierarchical import format_spec
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -47,11 +47,3 @@ def run(args: argparse.Namespace) -> int:
             )
         )
     return 0
-
-
-def format_spec(spec: HierarchicalSpec) -> str:
-    lines = []
-    for k, level in enumerate(spec.levels, start=1):
-        for name in level:
-            lines.append(f"L{k}  {name} = {spec.text(name)}")
-    return "\n".join(lines)

@@ -56,14 +56,15 @@ def _load(args):
     from nl2hltl2plan.worlds.tasks import GTInstance
 
     if ".tasks_" in args.name:
-        from nl2hltl2plan.worlds.alfred import build_benchmark_world, start_cells
+        from nl2hltl2plan.worlds.alfred import build_benchmark_world
         from nl2hltl2plan.worlds.benchmark import gt_instance
+        from nl2hltl2plan.worlds.starts import start_cells
 
         if args.trials:
             raise WorldError("a benchmark instance brings its own trials; drop --trials")
         gt = gt_instance(args.name)
         world = build_benchmark_world(gt)
-        return world, gt, start_cells(world, gt, 1)[0]
+        return world, gt, start_cells(world, 1, gt=gt)[0]
     world = load_world(args.name, args.trials)
     gt = None
     if world.kind == "demo":

@@ -404,3 +404,10 @@ class HierarchicalSpec:
                     why += f"; leaves never completed: {missing}"
                 reasons.append(why)
         return TraceCheck(not reasons, completed, reasons)
+
+
+def format_spec(spec: HierarchicalSpec) -> str:
+    """Readable hierarchical LTL, one formula per line, level by level: `L2  task1.1 = F(...)`."""
+    return "\n".join(
+        f"L{k}  {name} = {spec.text(name)}" for k, level in enumerate(spec.levels, start=1) for name in level
+    )
