@@ -66,11 +66,13 @@ def _load(args):
         world = build_benchmark_world(gt)
         return world, gt, start_cells(world, 1, gt=gt)[0]
     world = load_world(args.name, args.trials)
-    gt = None
+    demo_gt: GTInstance | None = None
     if world.kind == "demo":
-        gt = GTInstance(id="demo.dishwasher", scene="demo", tasks=DEMO_TASKS, before=DEMO_BEFORE)
+        demo_gt = GTInstance.model_validate(
+            {"id": "demo.dishwasher", "scene": "demo", "tasks": DEMO_TASKS, "before": DEMO_BEFORE}
+        )
     start = world.default_starts[0] if world.default_starts else None
-    return world, gt, start
+    return world, demo_gt, start
 
 
 def run(args: argparse.Namespace) -> int:

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import contextlib
 from collections.abc import Callable, Iterator
-from typing import Literal
+from typing import Literal, get_args
 
 from nl2hltl2plan.errors import LLMError
 from nl2hltl2plan.language.llm.batch import BatchCollector
@@ -12,10 +12,10 @@ from nl2hltl2plan.language.llm.client import LLMClient
 from nl2hltl2plan.language.llm.settings import LLMSettings
 
 Backend = Literal["offline", "local", "openai"]
-BACKENDS: tuple[str, ...] = ("offline", "local", "openai")
+BACKENDS: tuple[str, ...] = get_args(Backend)
 
 
-def resolve_backend(requested: str | None, settings: LLMSettings) -> tuple[str, str | None]:
+def resolve_backend(requested: str | None, settings: LLMSettings) -> tuple[Backend, str | None]:
     """The backend to use and a note for stderr (None: nothing to say)."""
     if requested in (None, "", "auto"):
         if settings.configured:
@@ -24,9 +24,10 @@ def resolve_backend(requested: str | None, settings: LLMSettings) -> tuple[str, 
             "no LLM configured (NL2HLTL2PLAN_LLM_BASE_URL / NL2HLTL2PLAN_LLM_API_KEY): using the "
             "offline grammar parser"
         )
-    if requested not in BACKENDS:
-        raise LLMError(f"unknown LLM backend {requested!r}; choose one of {', '.join(BACKENDS)}")
-    return requested, None
+    for name in get_args(Backend):
+        if requested == name:
+            return name, None
+    raise LLMError(f"unknown LLM backend {requested!r}; choose one of {', '.join(BACKENDS)}")
 
 
 @contextlib.contextmanager

@@ -9,9 +9,14 @@ to the HTT (the HTT nodes carry text and actions only), and `before` pairs betwe
 
 from __future__ import annotations
 
+from collections.abc import Hashable, Iterable, Sequence
+from typing import TypeVar
+
 import networkx as nx
 
 from nl2hltl2plan.worlds.tasks import KINDS, BaseTask, Kind
+
+N = TypeVar("N", bound=Hashable)
 
 __all__ = ["KINDS", "BaseTaskSpec", "Kind", "task_letter", "transitive_closure", "transitive_reduction"]
 
@@ -30,8 +35,8 @@ def transitive_closure(
 
 
 def transitive_reduction(
-    pairs: list[tuple[str, str]] | set[tuple[str, str]], order: list[str] | None = None
-) -> list[tuple[str, str]]:
+    pairs: Iterable[tuple[N, N]], order: Sequence[N] | None = None
+) -> list[tuple[N, N]]:
     """The fewest pairs with the same closure (pairs must be acyclic); sorted by `order` when given."""
     g = nx.DiGraph()
     g.add_nodes_from(order or [])
