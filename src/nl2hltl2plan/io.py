@@ -207,3 +207,20 @@ def iter_nonblank(text: str) -> Iterator[tuple[int, str]]:
     for n, line in enumerate(text.splitlines(), start=1):
         if line.strip():
             yield n, line
+
+
+PICTURE_FORMATS = ("png", "svg", "pdf", "jpg", "jpeg", "webp", "tif", "tiff", "eps")
+
+
+def check_output_file(path: str | Path, formats: tuple[str, ...] = (), what: str = "output file") -> Path:
+    """Refuse, before any work, an output path whose format is unknown or whose folder cannot be made
+    or written to (`formats`: allowed suffixes without the dot; empty: any)."""
+    p = Path(path)
+    suffix = p.suffix.lower().lstrip(".")
+    if formats and suffix not in formats:
+        raise DataError(f"cannot write {what} {p}: unknown format {suffix or '(none)'!r}; use one of "
+                        f"{', '.join('.' + f for f in formats)}")
+    if p.is_dir():
+        raise DataError(f"cannot write {what} {p}: it is a folder")
+    ensure_writable_dir(p.parent if str(p.parent) else ".", f"folder of the {what}")
+    return p

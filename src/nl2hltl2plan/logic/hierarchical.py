@@ -36,6 +36,7 @@ from pathlib import Path
 from typing import Any
 
 from nl2hltl2plan.errors import FormulaError, SpecError
+from nl2hltl2plan.io import loads, read_text
 from nl2hltl2plan.logic import spot_backend as sb
 from nl2hltl2plan.logic.automaton import Dfa
 
@@ -121,10 +122,7 @@ class HierarchicalSpec:
     @classmethod
     def from_json(cls, data: str | list[Any]) -> HierarchicalSpec:
         if isinstance(data, str):
-            try:
-                data = json.loads(data)
-            except json.JSONDecodeError as exc:
-                raise SpecError(f"specification is not valid JSON: {exc}") from None
+            data = loads(data, "specification")
         if isinstance(data, dict) and "levels" in data:
             data = data["levels"]
         if not isinstance(data, list):
@@ -133,11 +131,7 @@ class HierarchicalSpec:
 
     @classmethod
     def load(cls, path: str | Path) -> HierarchicalSpec:
-        try:
-            text = Path(path).read_text()
-        except OSError as exc:
-            raise SpecError(f"cannot read specification {path}: {exc.strerror}") from None
-        return cls.from_json(text)
+        return cls.from_json(read_text(path, "specification file"))
 
     def to_json_obj(self) -> list[dict[str, LeafOrFormula]]:
         return [dict(level) for level in self.levels]
