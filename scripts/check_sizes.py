@@ -1,6 +1,6 @@
 """Report modules over 600 lines and functions over 100 lines in src/ (the brief's limits).
 
-    python scripts/check_sizes.py            # exit 1 when a limit is exceeded
+python scripts/check_sizes.py            # exit 1 when a limit is exceeded
 """
 
 from __future__ import annotations
@@ -25,7 +25,9 @@ def main() -> int:
             if isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef):
                 length = (node.end_lineno or node.lineno) - node.lineno + 1
                 if length > MAX_FUNCTION:
-                    problems.append(f"{rel}:{node.lineno}: {node.name} has {length} lines (limit {MAX_FUNCTION})")
+                    problems.append(
+                        f"{rel}:{node.lineno}: {node.name} has {length} lines (limit {MAX_FUNCTION})"
+                    )
     print("\n".join(problems) or "all modules and functions within the limits")
     return 1 if problems else 0
 

@@ -23,7 +23,7 @@ from typing import Any
 import networkx as nx
 from pydantic import BaseModel, Field, ValidationError
 
-from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.errors import DataError, HTTError
 from nl2hltl2plan.io import loads, read_text
 
 
@@ -46,6 +46,8 @@ class HTT(BaseModel):
         try:
             raw = loads(data, "HTT") if isinstance(data, str) else data
             htt = cls.model_validate(raw)
+        except DataError as exc:
+            raise HTTError(str(exc)) from None
         except ValidationError as exc:
             raise HTTError(f"HTT does not have the expected fields: {_short(exc)}") from None
         if validate:
