@@ -57,4 +57,7 @@ def _report(args: argparse.Namespace, code: int, reasons: list[str], summary: di
         print("invalid:")
         for r in reasons:
             print(f"  - {r}")
+    if code == 1:
+        more = f" (and {len(reasons) - 1} more)" if len(reasons) > 1 else ""
+        print(f"error: invalid specification: {reasons[0]}{more}", file=sys.stderr)
     return code
