@@ -153,7 +153,8 @@ class Child:
         if status == "ok":
             return payload
         if status == "memory":
-            raise ChildError("memory", f"ran out of memory (limit: {self.memory_mb:g} MiB above the parent)")
+            limit = f" (limit: {self.memory_mb:g} MiB above the parent)" if self.memory_mb is not None else ""
+            raise ChildError("memory", f"ran out of memory{limit}")
         raise ChildError("error", str(payload))
 
     def kill(self) -> None:
