@@ -25,7 +25,9 @@ def test_every_option_has_help_and_names_its_default() -> None:
                 problems.append(f"{prog} {a.dest}: no help")
             elif a.option_strings and a.default not in (None, False, argparse.SUPPRESS) and not a.required:
                 if "default" not in a.help.lower():
-                    problems.append(f"{prog} {a.option_strings[0]}: help does not name its default {a.default!r}")
+                    problems.append(
+                        f"{prog} {a.option_strings[0]}: help does not name its default {a.default!r}"
+                    )
     assert not problems, "\n".join(problems)
 
 
