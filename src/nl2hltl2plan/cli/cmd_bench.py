@@ -30,7 +30,7 @@ from nl2hltl2plan.cli.options import (
     positive_int,
 )
 from nl2hltl2plan.errors import PlanningError
-from nl2hltl2plan.evaluation.runner import Row, Scenario
+from nl2hltl2plan.evaluation.runner import Row, Scenario, is_errored
 from nl2hltl2plan.io import ensure_writable_dir
 from nl2hltl2plan.pipeline import PipelineOptions
 from nl2hltl2plan.worlds.benchmark import load_gt
@@ -166,7 +166,7 @@ def run(args: argparse.Namespace) -> int:
         )
     if not args.json:
         print(f"wrote {out / 'report.md'}, {out / 'summary.json'} and {out / 'scenarios.jsonl'}")
-    errored = [r for r in rows if r.get("status") == "error"]
+    errored = [r for r in rows if is_errored(r)]
     if errored:
         print(
             f"error: {len(errored)} of {len(rows)} scenarios errored (first: {errored[0].get('key')}: "
