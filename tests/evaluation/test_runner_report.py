@@ -9,6 +9,7 @@ import time
 import pytest
 
 from nl2hltl2plan.evaluation.report import format_table, paper_table1, percentile, summarize
+from nl2hltl2plan.evaluation.rows import rows_of
 from nl2hltl2plan.evaluation.runner import RunnerError, Scenario, count_errored, run_scenarios
 
 
@@ -17,8 +18,14 @@ def job(scenario: Scenario) -> dict:
         time.sleep(60)
     if scenario.instance == "broken":
         raise ValueError("bad scenario")
-    return {"status": "solved", "plan_time_s": 0.01 * scenario.robots, "success": True, "feasible": True,
-            "travel_m": 1.0 * scenario.robots, "steps": 10}
+    return {
+        "status": "solved",
+        "plan_time_s": 0.01 * scenario.robots,
+        "success": True,
+        "feasible": True,
+        "travel_m": 1.0 * scenario.robots,
+        "steps": 10,
+    }
 
 
 def test_runner_kills_hangs_reports_errors_and_resumes(tmp_path):
@@ -42,15 +49,37 @@ def test_runner_kills_hangs_reports_errors_and_resumes(tmp_path):
 
 def test_summary_and_table():
     rows = [
-        {"n_base": 1, "robots": 1, "status": "solved", "success": True, "feasible": True, "travel_m": 1.0,
-         "steps": 10, "plan_time_s": 0.1},
-        {"n_base": 1, "robots": 1, "status": "solved", "success": True, "feasible": True, "travel_m": 3.0,
-         "steps": 20, "plan_time_s": 0.3},
-        {"n_base": 1, "robots": 1, "status": "infeasible", "success": False, "feasible": False,
-         "plan_time_s": 0.01},
+        {
+            "n_base": 1,
+            "robots": 1,
+            "status": "solved",
+            "success": True,
+            "feasible": True,
+            "travel_m": 1.0,
+            "steps": 10,
+            "plan_time_s": 0.1,
+        },
+        {
+            "n_base": 1,
+            "robots": 1,
+            "status": "solved",
+            "success": True,
+            "feasible": True,
+            "travel_m": 3.0,
+            "steps": 20,
+            "plan_time_s": 0.3,
+        },
+        {
+            "n_base": 1,
+            "robots": 1,
+            "status": "infeasible",
+            "success": False,
+            "feasible": False,
+            "plan_time_s": 0.01,
+        },
         {"n_base": 2, "robots": 4, "status": "timeout", "success": False, "feasible": True},
     ]
-    s = summarize(rows)
+    s = summarize(rows_of(rows))
     assert (s["scenarios"], s["feasible"], s["solved"], s["success"]) == (4, 3, 2, 2)
     assert s["plan_time_s"] == {"median": 0.1, "p95": 0.3, "max": 0.3, "mean": 0.1367}
     row = s["rows"][0]
@@ -120,8 +149,14 @@ def test_dead_worker_and_bad_return_are_error_rows(tmp_path):
     assert rows[0]["status"] == "error" and "returned int" in rows[0]["reason"]
 
 
-@pytest.mark.parametrize("kw, msg", [({"hard_timeout_s": 0}, "time limit"), ({"hard_timeout_s": float("nan")},
-                                     "time limit"), ({"workers": 0}, "workers must be at least 1")])
+@pytest.mark.parametrize(
+    "kw, msg",
+    [
+        ({"hard_timeout_s": 0}, "time limit"),
+        ({"hard_timeout_s": float("nan")}, "time limit"),
+        ({"workers": 0}, "workers must be at least 1"),
+    ],
+)
 def test_bad_limits_are_refused(tmp_path, kw, msg):
     with pytest.raises(RunnerError, match=msg):
         run_scenarios([Scenario("x", 1, 1)], quick, tmp_path / "rows.jsonl", **kw)
