@@ -7,7 +7,8 @@ import json
 
 from nl2hltl2plan.language.htt import HTT
 from nl2hltl2plan.language.spec_builder import build_spec
-from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
+from nl2hltl2plan.logic.flatten import size_report
+from nl2hltl2plan.logic.hierarchical import format_spec
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -25,7 +26,7 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 def run(args: argparse.Namespace) -> int:
     spec = build_spec(HTT.load(args.htt))
-    sizes = spec.size_report() if args.sizes else None
+    sizes = size_report(spec) if args.sizes else None
     if args.json:
         out: dict = {"levels": spec.to_json_obj()}
         if sizes:
@@ -47,11 +48,3 @@ def run(args: argparse.Namespace) -> int:
             )
         )
     return 0
-
-
-def format_spec(spec: HierarchicalSpec) -> str:
-    lines = []
-    for k, level in enumerate(spec.levels, start=1):
-        for name in level:
-            lines.append(f"L{k}  {name} = {spec.text(name)}")
-    return "\n".join(lines)

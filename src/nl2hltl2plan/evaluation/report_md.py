@@ -20,19 +20,19 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 from nl2hltl2plan.evaluation.language_bench import STAGES  # noqa: E402
 from nl2hltl2plan.evaluation.report import paper_table1, summarize  # noqa: E402
-from nl2hltl2plan.evaluation.runner import Row  # noqa: E402
+from nl2hltl2plan.evaluation.rows import ScenarioRow  # noqa: E402
 
 
 def _rate(num: int, den: int) -> float | None:
     return round(num / den, 4) if den else None
 
 
-def pipeline_summary(rows: Sequence[Row]) -> dict[str, Any]:
+def pipeline_summary(rows: Sequence[ScenarioRow]) -> dict[str, Any]:
     """`report.summarize` plus conversion and planning rates per row and overall."""
     summary = summarize(rows)
-    groups: dict[tuple[int, int], list[Row]] = {}
+    groups: dict[tuple[int, int], list[ScenarioRow]] = {}
     for r in rows:
-        groups.setdefault((r["n_base"], r["robots"]), []).append(r)
+        groups.setdefault((r.n_base, r.robots), []).append(r)
     for row in summary["rows"]:
         grp = groups[(row["n_base"], row["robots"])]
         row.update(_rates(grp))
@@ -41,21 +41,21 @@ def pipeline_summary(rows: Sequence[Row]) -> dict[str, Any]:
     return summary
 
 
-def _rates(rows: Sequence[Row]) -> dict[str, Any]:
-    converted = [r for r in rows if r.get("conversion_ok")]
+def _rates(rows: Sequence[ScenarioRow]) -> dict[str, Any]:
+    converted = [r for r in rows if r.conversion_ok]
     return {
         "conversion_rate": _rate(len(converted), len(rows)),
-        "planning_rate": _rate(sum(1 for r in converted if r.get("planning_ok")), len(converted)),
-        "overall_rate": _rate(sum(1 for r in rows if r.get("success")), len(rows)),
+        "planning_rate": _rate(sum(1 for r in converted if r.planning_ok), len(converted)),
+        "overall_rate": _rate(sum(1 for r in rows if r.success), len(rows)),
     }
 
 
-def failure_breakdown(rows: Sequence[Row]) -> dict[str, Any]:
+def failure_breakdown(rows: Sequence[ScenarioRow]) -> dict[str, Any]:
     """Failed scenarios by the first stage that went wrong (Table IV plus planning and execution)."""
     counts = {s: 0 for s in STAGES}
     for r in rows:
-        if not r.get("success") and r.get("stage"):
-            counts[r["stage"]] = counts.get(r["stage"], 0) + 1
+        if not r.success and r.stage:
+            counts[r.stage] = counts.get(r.stage, 0) + 1
     return {
         "scenarios": len(rows),
         "counts": counts,
@@ -184,10 +184,12 @@ def plot_cost_time(summary: dict[str, Any], out: Path) -> None:
 
 
 def write_report(
-    rows: Sequence[Row], out_dir: Path, title: str, command: str, machine: str
+    rows: Sequence[ScenarioRow], out_dir: Path, title: str, command: str, machine: str
 ) -> dict[str, Any]:
     """Write report.md, summary.json content (returned) and the plots; all and clean subsets."""
-    clean_rows = [r for r in rows if r.get("gt_feasible", r.get("feasible")) and not r.get("ambiguous")]
+    clean_rows = [
+        r for r in rows if (r.feasible if r.gt_feasible is None else r.gt_feasible) and not r.ambiguous
+    ]
     summary = pipeline_summary(rows)
     clean = pipeline_summary(clean_rows) if clean_rows else None
     summary["clean"] = clean
@@ -197,7 +199,7 @@ def write_report(
         out_dir / "success_vs_base_tasks.png",
     )
     plot_cost_time(summary, out_dir / "cost_and_time.png")
-    n_inst = len({r["instance"] for r in rows if "instance" in r}) or len(rows)
+    n_inst = len({r.instance for r in rows}) or len(rows)
     parts = [
         f"# {title}",
         "",
@@ -209,7 +211,7 @@ def write_report(
         table1_markdown(summary),
     ]
     if clean:
-        n_clean = len({r["instance"] for r in clean_rows if "instance" in r})
+        n_clean = len({r.instance for r in clean_rows})
         parts += [
             "",
             f"## Clean instructions: feasible and unambiguous ({n_clean} instructions, "

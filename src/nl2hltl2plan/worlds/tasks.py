@@ -54,6 +54,7 @@ Kind = Literal[
 KINDS: tuple[str, ...] = Kind.__args__  # type: ignore[attr-defined]
 APPLIANCE = {"clean_place": "SinkBasin", "heat_place": "Microwave", "cool_place": "Fridge"}
 TREATMENT = {"clean_place": "cleanable", "heat_place": "heatable", "cool_place": "coolable"}
+MAX_COUNT = 50  # no AI2-THOR scene has more instances of one type
 KNIFE_DROP_PREFERENCE = ("CounterTop", "DiningTable", "SideTable", "Desk", "CoffeeTable", "Shelf", "Dresser")
 
 
@@ -82,19 +83,31 @@ class Goal:
 
 
 class BaseTask(BaseModel):
-    """One ground-truth base task (fields as in alfred_test50_gt.jsonl)."""
+    """One base task: what the ground truth (alfred_test50_gt.jsonl, see ANNOTATION_GUIDE.md) and the
+    language stage both describe — the kind of task, the acceptable AI2-THOR types of the object, the
+    container, the destination and the lamp, how many objects, and whether they must be slices."""
 
     model_config = ConfigDict(extra="ignore")
 
-    id: str
+    id: str = "A"
     text: str = ""
     kind: Kind
     object: list[str]
-    count: int = 1
+    count: int = Field(default=1, ge=1, le=MAX_COUNT)  # objects; more than a scene can hold is refused
     sliced: bool = False
     container: list[str] | None = None
     receptacle: list[str] | None = None
     light: list[str] | None = None
+
+    def summary(self) -> str:
+        """One readable line, e.g. `clean_place Potato(sliced) -> Fridge`."""
+        obj = "|".join(self.object) + ("(sliced)" if self.sliced else "")
+        if self.count > 1:
+            obj = f"{self.count}x {obj}"
+        if self.kind == "examine_in_light":
+            return f"{self.kind} {obj} under {'|'.join(self.light or ['?'])}"
+        inner = f" in {'|'.join(self.container)}" if self.container else ""
+        return f"{self.kind} {obj}{inner} -> {'|'.join(self.receptacle or ['?'])}"
 
     # ------------------------------------------------------------ goal
     def goal(self) -> Goal:
