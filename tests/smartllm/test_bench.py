@@ -4,7 +4,14 @@ import argparse
 import json
 
 from nl2hltl2plan.cli.bench_smartllm import register
-from nl2hltl2plan.evaluation.smartllm import oracle_maker, robot_utilisation, run_task, stages, summarize
+from nl2hltl2plan.evaluation.smartllm import (
+    llm_maker,
+    oracle_maker,
+    robot_utilisation,
+    run_task,
+    stages,
+    summarize,
+)
 from nl2hltl2plan.worlds.smartllm import load_tasks, parse_task
 
 
@@ -71,3 +78,23 @@ def test_cli_registers_under_bench():
     register(parser.add_subparsers(dest="suite"))
     args = parser.parse_args(["smartllm", "--oracle", "--out", "d"])
     assert args.oracle and args.objective == "minmax" and callable(args.func)
+
+
+def test_mass_capacity_and_language_stage():
+    weak = parse_task(
+        4,
+        {
+            "floor_plan": "FloorPlan15",
+            "task": "Put the potato in the fridge",
+            "robot list": [10],
+            "object_states": [{"name": "Fridge", "contains": ["Potato"], "state": None}],
+            "trans": 0,
+            "max_trans": 0,
+        },
+    )
+    row = run_task(weak, oracle_maker, masses={"Potato": 0.18})
+    assert row["status"] == "infeasible team" and "carry a Potato (0.18 kg" in row["reason"]
+    assert run_task(weak, oracle_maker)["TC"] == 1.0  # masses unknown: not limited
+    mug = next(t for t in load_tasks() if t.id == "FloorPlan21#1")  # "Put mug in coffee machine"
+    row = run_task(mug, llm_maker("offline"))
+    assert row["status"] == "solved" and row["TC"] == 1.0

@@ -16,6 +16,7 @@ from pathlib import Path
 from typing import Any
 
 from nl2hltl2plan.errors import PlanningError
+from nl2hltl2plan.language.options import add_llm_arguments, llm_settings
 
 
 def register(bench_subparsers: Any) -> None:
@@ -41,7 +42,15 @@ def register(bench_subparsers: Any) -> None:
         help="minmax (default): completion time, which favours parallel robots (RU); min: summed cost",
     )
     p.add_argument("--quiet", action="store_true", help="no progress lines")
-    p.add_argument("--out", type=Path, required=True, help="output folder")
+    p.add_argument(
+        "--masses",
+        type=Path,
+        default=None,
+        help="JSON object of AI2-THOR object masses in kg by type (robots' mass capacities then "
+        "limit what they pick up; default: none, as the shared data has no masses)",
+    )
+    p.add_argument("-o", "--out", type=Path, required=True, help="output folder")
+    add_llm_arguments(p)
     p.set_defaults(func=run)
 
 
@@ -63,14 +72,31 @@ def run(args: argparse.Namespace) -> int:
         else:
             client = None
             if args.llm != "offline":
-                from nl2hltl2plan.language.llm.settings import LLMSettings
-                from nl2hltl2plan.language.pipeline import open_client
+                from nl2hltl2plan.language.backends import open_client
 
-                client = stack.enter_context(open_client(args.llm, LLMSettings.from_env()))
+                client = stack.enter_context(open_client(args.llm, llm_settings(args)))
             maker, label = llm_maker(args.llm, client), f"language backend {args.llm}"
-        summary = run_bench(args.out, maker, label, args.timeout, progress, args.objective)
+        summary = run_bench(
+            args.out, maker, label, args.timeout, progress, args.objective, _masses(args.masses)
+        )
     print(json.dumps(summary["overall"]))
     return 0
+
+
+def _masses(path: Path | None) -> dict[str, float]:
+    if path is None:
+        return {}
+    from nl2hltl2plan.errors import DataError
+
+    try:
+        raw = json.loads(path.read_text())
+    except (OSError, json.JSONDecodeError) as exc:
+        raise DataError(f"cannot read masses file {path}: {exc}") from None
+    if not isinstance(raw, dict) or not all(
+        isinstance(v, int | float) and not isinstance(v, bool) and v > 0 for v in raw.values()
+    ):
+        raise DataError(f"masses file {path}: expected an object of positive kg values by object type")
+    return {str(k): float(v) for k, v in raw.items()}
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -22,14 +22,14 @@ from __future__ import annotations
 
 import json
 import statistics
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from importlib import resources
 from pathlib import Path
 from typing import Any
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
-from nl2hltl2plan.planning import plan
+from nl2hltl2plan.pipeline import PipelineOptions, planning_stage
 from nl2hltl2plan.planning.api import Objective
 from nl2hltl2plan.worlds.checker import final_conditions
 from nl2hltl2plan.worlds.effects import condition_holds
@@ -82,22 +82,18 @@ def oracle_maker(task: SmartTask, world: World) -> tuple[HierarchicalSpec, list[
 
 
 def llm_maker(backend: str, client: Any = None) -> SpecMaker:
-    """The instruction through our language stage (`client`: an LLMClient for local/openai). The one
-    place that calls the language stage: the lead replaces this body with
-    `nl2hltl2plan.pipeline.run(...)` once it exists."""
+    """The instruction through the pipeline's language stage (`client`: an LLMClient for local/openai)."""
 
     def make(task: SmartTask, world: World) -> tuple[HierarchicalSpec, list[str]]:
         from nl2hltl2plan.errors import SpecError
-        from nl2hltl2plan.language.pipeline import translate
+        from nl2hltl2plan.pipeline import PipelineOptions, language_stage
         from nl2hltl2plan.planning.model import parse_atom
 
-        result = translate(task.text, world=world, backend=backend, client=client)
+        result = language_stage(task.text, world, PipelineOptions(backend=backend), client)  # type: ignore[arg-type]
         spec = result.spec
         if spec is None:
             why = "; ".join(result.issues or result.unparsed or ["no specification built"])
             raise SpecError(f"the language stage gave no specification: {why}")
-        if not isinstance(spec, HierarchicalSpec):
-            spec = HierarchicalSpec.from_json(spec)
         atoms = [a for n in spec.names if spec.is_leaf(n) for a in spec.dfa(n).atoms if parse_atom(a)]
         return spec, atoms
 
@@ -105,7 +101,11 @@ def llm_maker(backend: str, client: Any = None) -> SpecMaker:
 
 
 def run_task(
-    task: SmartTask, make_spec: SpecMaker, timeout_s: float = 30.0, objective: Objective = "minmax"
+    task: SmartTask,
+    make_spec: SpecMaker,
+    timeout_s: float = 30.0,
+    objective: Objective = "minmax",
+    masses: Mapping[str, float] | None = None,
 ) -> dict[str, Any]:
     """One task: spec -> team check -> plan -> execute -> SMART-LLM's metrics (a JSON-ready row)."""
     row: dict[str, Any] = {
@@ -132,7 +132,9 @@ def run_task(
         )
         n_stages, exe = 1, 1.0
     else:
-        n_stages, exe, execution = _plan_task(task, world, team, make_spec, timeout_s, objective, row)
+        n_stages, exe, execution = _plan_task(
+            task, world, team, make_spec, (timeout_s, objective, masses), row
+        )
     met = final_conditions(execution, conds) if execution is not None else _initial(world, conds)
     gcr = sum(met) / len(met) if met else 1.0
     tc = 1.0 if gcr == 1.0 else 0.0
@@ -157,29 +159,29 @@ def _plan_task(
     world: World,
     team: Any,
     make_spec: SpecMaker,
-    timeout_s: float,
-    objective: Objective,
+    settings: tuple[float, Objective, Mapping[str, float] | None],
     row: dict[str, Any],
 ) -> tuple[int, float, Execution | None]:
+    timeout_s, objective, masses = settings
     try:
         spec, atoms = make_spec(task, world)
     except Nl2Hltl2PlanError as exc:
         row.update(status="no spec", reason=str(exc))
         return 0, 0.0, None
-    problems = team.problems(atoms, world)
+    problems = team.problems(atoms, world, masses)
     if problems:
         row.update(status="infeasible team", reason="; ".join(problems))
         return 0, 0.0, None
     starts = start_cells(world, team.size, seed=sum(map(ord, task.id)))
+    caps = team.capabilities(world, masses)
+    options = PipelineOptions(
+        objective=objective,
+        plan_timeout_s=timeout_s,
+        starts=starts,
+        capabilities=[sorted(c) if c is not None else None for c in caps],
+    )
     try:
-        result = plan(
-            world,
-            spec,
-            starts,
-            capabilities=team.capabilities(world),
-            timeout_s=timeout_s,
-            objective=objective,
-        )
+        result = planning_stage(world, spec, starts, options).result
     except Nl2Hltl2PlanError as exc:
         row.update(status="planning error", reason=str(exc))
         return 0, 0.0, None
@@ -244,18 +246,19 @@ def run_bench(
     timeout_s: float = 30.0,
     progress: Callable[[dict[str, Any]], None] | None = None,
     objective: Objective = "minmax",
+    masses: Mapping[str, float] | None = None,
 ) -> dict[str, Any]:
     """Run every task, write DIR/rows.jsonl, DIR/summary.json and DIR/report.md; return the summary."""
     out.mkdir(parents=True, exist_ok=True)
     rows = []
     with (out / "rows.jsonl").open("w") as sink:
         for task in load_tasks():
-            row = run_task(task, make_spec, timeout_s, objective)
+            row = run_task(task, make_spec, timeout_s, objective, masses)
             rows.append(row)
             sink.write(json.dumps(row) + "\n")
             if progress:
                 progress(row)
-    summary = {"specs": label, "objective": objective, **summarize(rows)}
+    summary = {"specs": label, "objective": objective, "masses": dict(masses or {}), **summarize(rows)}
     (out / "summary.json").write_text(json.dumps(summary, indent=2) + "\n")
     (out / "report.md").write_text(report_md(summary, rows))
     return summary
