@@ -83,3 +83,17 @@ def test_capabilities_skills_and_mass(world):
         "no robot in the team can open (OpenObject), needed for open(Fridge)"
     ]
     assert Team(2).problems(atoms, world) == []
+
+
+def test_team_problems_for_a_spec(world):
+    from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
+    from nl2hltl2plan.worlds.team import spec_atoms, team_problems
+
+    spec = HierarchicalSpec([{"t": 'F("open(Fridge)" & F("pickup(Potato)" & F "put(Potato,Fridge)"))'}])
+    assert spec_atoms(spec) == ["open(Fridge)", "pickup(Potato)", "put(Potato,Fridge)"]
+    team = parse_team("robot24")  # GoToObject, SwitchOn, SwitchOff only
+    assert team_problems(team, spec, world)[0] == (
+        "no robot in the team can open (OpenObject), needed for open(Fridge)"
+    )
+    assert "pick up (PickupObject)" in team_problems(team, spec, world)[1]
+    assert team_problems(parse_team("robot1"), spec, world) == []

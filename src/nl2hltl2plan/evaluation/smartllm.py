@@ -36,7 +36,7 @@ from nl2hltl2plan.worlds.effects import condition_holds
 from nl2hltl2plan.worlds.model import CELL_M, World
 from nl2hltl2plan.worlds.simulator import Execution, SimState
 from nl2hltl2plan.worlds.smartllm import SmartTask, load_tasks, oracle_spec, start_cells, world_for
-from nl2hltl2plan.worlds.team import smartllm_team
+from nl2hltl2plan.worlds.team import smartllm_team, spec_atoms
 
 METRICS = ("SR", "TC", "GCR", "RU", "Exe")
 SpecMaker = Callable[[SmartTask, World], tuple[HierarchicalSpec, list[str]]]
@@ -87,15 +87,13 @@ def llm_maker(backend: str, client: Any = None) -> SpecMaker:
     def make(task: SmartTask, world: World) -> tuple[HierarchicalSpec, list[str]]:
         from nl2hltl2plan.errors import SpecError
         from nl2hltl2plan.pipeline import PipelineOptions, language_stage
-        from nl2hltl2plan.planning.model import parse_atom
 
         result = language_stage(task.text, world, PipelineOptions(backend=backend), client)  # type: ignore[arg-type]
         spec = result.spec
         if spec is None:
             why = "; ".join(result.issues or result.unparsed or ["no specification built"])
             raise SpecError(f"the language stage gave no specification: {why}")
-        atoms = [a for n in spec.names if spec.is_leaf(n) for a in spec.dfa(n).atoms if parse_atom(a)]
-        return spec, atoms
+        return spec, spec_atoms(spec)
 
     return make
 

@@ -23,6 +23,7 @@ names ("robot1,robot5"), or a JSON file (a list of profile names and/or {"name",
 from __future__ import annotations
 
 import json
+import re
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from functools import cache
@@ -30,6 +31,7 @@ from pathlib import Path
 
 from nl2hltl2plan.config import data_path
 from nl2hltl2plan.errors import DataError, PlanningError
+from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.worlds.model import KNIFE_TYPES, World
 
 SKILL_VERBS = {
@@ -47,6 +49,7 @@ NO_VERB_SKILLS = frozenset(
 )
 KNOWN_SKILLS = frozenset(SKILL_VERBS) | NO_VERB_SKILLS
 VERB_SKILL = {v: k for k, v in SKILL_VERBS.items()}
+VERB_WORDS = {"pickup": "pick up", "toggle_on": "switch on", "toggle_off": "switch off"}
 TRASH = "GarbageCan"
 
 
@@ -186,8 +189,24 @@ class Team:
             skill = VERB_SKILL.get(v, v)
             if v == "put" and a.endswith(f",{TRASH})"):
                 skill = "PutObject or ThrowObject"
-            return f"no robot in the team can {v.replace('_', ' ')} ({skill}), needed for {a}"
+            return f"no robot in the team can {VERB_WORDS.get(v, v)} ({skill}), needed for {a}"
         return f"no single robot in the team can do all of {', '.join(needs)} (one robot carries an object)"
+
+
+_QUOTED_ATOM = re.compile(r'"([a-z_]+\([A-Za-z0-9_.,]+\))"')
+
+
+def spec_atoms(spec: HierarchicalSpec) -> list[str]:
+    """The action atoms ("put(Apple,Fridge)") of a hierarchical spec's leaves, in order of appearance."""
+    found = (a for leaf in spec.leaves for a in _QUOTED_ATOM.findall(spec.text(leaf)))
+    return list(dict.fromkeys(found))
+
+
+def team_problems(
+    team: Team, spec: HierarchicalSpec, world: World, masses: Mapping[str, float] | None = None
+) -> list[str]:
+    """For `plan --robots`: why the team cannot carry out the spec in the world (empty: it may)."""
+    return team.problems(spec_atoms(spec), world, masses)
 
 
 def _allowed(caps: set[str] | None, atom: str) -> bool:
