@@ -31,12 +31,16 @@ def test_robot_utilisation_formula():
     assert robot_utilisation(2, 0, 2) == 0.5 and robot_utilisation(2, 1, 1) == 1.0
     assert robot_utilisation(1, 1, 1) == 0.0 and robot_utilisation(1, None, None) is None
     ev = [
-        {"t": 5, "task": "a", "travel_m": 1.0},
-        {"t": 6, "task": "a"},
-        {"t": 3, "task": "b", "travel_m": 0.5},
-        {"t": 9, "task": "c", "travel_m": 0.25},
+        {"t": 5, "robot": 0, "task": "a", "travel_m": 1.0},
+        {"t": 6, "robot": 0, "task": "a"},
+        {"t": 3, "robot": 1, "task": "b", "travel_m": 0.5},
+        {"t": 9, "robot": 2, "task": "c", "travel_m": 0.25},
     ]
-    assert stages(ev) == 2  # a (t 1..6) and b (1..3) overlap; c starts at 8 after both ended
+    assert stages(ev) == 2  # a (t 1..6) and b (1..3) overlap; c sets off at 8, after both ended
+    assert stages(ev, [("b", "a")]) == 3  # ordered by the spec: b, then a, then c
+    ev[2]["robot"] = 2
+    ev[2]["t"], ev[3]["t"] = 2, 4  # b (t 0..2) then c (3..4) by robot 2, while a (1..6) runs
+    assert stages(ev) == 2
 
 
 def test_oracle_task_respects_the_team_and_scores():

@@ -7,8 +7,8 @@ SMART-LLM's metrics (Kannan et al., arXiv:2309.10062; the scoring script is
   contained object is one condition, met when some object of that name has it; the script instead
   adds 1 per matching object instance, which can exceed 1 (two items in the fridge) -- we do not.
 - TC (task completion): 1 when GCR = 1.
-- RU (robot utilisation): from the plan's number of sequential stages (leaves that overlap in time
-  form one stage; a leaf that starts after every earlier one ended starts a new stage), with
+- RU (robot utilisation): from the plan's number of sequential stages (`stages`: the longest chain
+  of leaves each ordered after, done by the same robot after, or started after the previous), with
   SMART-LLM's formula on trans + 1 and max_trans + 1: 1 when stages = trans + 1 = max_trans + 1,
   0 when max_trans = trans otherwise, else (max + 1 - stages) / (max - trans), clipped to 0..1.
 - Exe (executability): successful actions / attempted actions of the executed plan (0 when no
@@ -22,10 +22,12 @@ from __future__ import annotations
 
 import json
 import statistics
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Mapping, Sequence
 from importlib import resources
 from pathlib import Path
 from typing import Any
+
+import networkx as nx
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
@@ -48,10 +50,13 @@ def published() -> dict[str, Any]:
     return json.loads(text)
 
 
-def stages(result_events: list[dict[str, Any]]) -> int:
-    """Sequential stages of a plan: leaves grouped by overlapping spans, a leaf's span running from
-    when its robot sets off for its first action (t minus the walk) to its last action."""
+def stages(result_events: list[dict[str, Any]], pairs: Sequence[tuple[str, str]] = ()) -> int:
+    """Sequential stages of a plan: the most leaves on a chain where each comes after the one before
+    it -- ordered after it by the spec (`pairs`, leaf names), done by the same robot after it, or
+    set off only once it had ended. A leaf's span runs from when its robot sets off for its first
+    action (t minus the walk) to its last action; leaves on no common chain run in parallel."""
     spans: dict[str, list[float]] = {}
+    robots: dict[str, set[int]] = {}
     for e in result_events:
         task = e.get("task")
         if task is None:
@@ -59,12 +64,33 @@ def stages(result_events: list[dict[str, Any]]) -> int:
         start = e["t"] - round(float(e.get("travel_m") or 0.0) / CELL_M)
         span = spans.setdefault(task, [start, e["t"]])
         span[0], span[1] = min(span[0], start), max(span[1], e["t"])
-    count, end = 0, -1.0
-    for first, last in sorted(spans.values()):
-        if first > end:
-            count += 1
-        end = max(end, last)
-    return count
+        robots.setdefault(task, set()).add(int(e["robot"]))
+    ordered = set(pairs)
+    graph = nx.DiGraph()
+    graph.add_nodes_from(spans)
+    for a, (sa, ea) in spans.items():
+        for b, (sb, eb) in spans.items():
+            after = (a, b) in ordered or ea < sb or (bool(robots[a] & robots[b]) and ea < eb and sa < sb)
+            if a != b and after and (ea, sa, a) < (eb, sb, b):
+                graph.add_edge(a, b)
+    return nx.dag_longest_path_length(graph) + 1 if spans else 0
+
+
+def leaf_pairs(spec: HierarchicalSpec) -> list[tuple[str, str]]:
+    """The spec's "a before b" pairs between leaves (pairs of non-leaves expanded to their leaves)."""
+    from nl2hltl2plan.logic import spot_backend as sb
+
+    def under(name: str) -> list[str]:
+        return [name] if spec.is_leaf(name) else [x for c in spec.children(name) for x in under(c)]
+
+    out: list[tuple[str, str]] = []
+    for name in spec.names:
+        if spec.is_leaf(name):
+            continue
+        form = sb.precedence_form(spec.formula(name))
+        for a, b in form[1] if form is not None else []:
+            out += [(x, y) for x in under(a) for y in under(b)]
+    return out
 
 
 def robot_utilisation(n_stages: int, trans: int | None, max_trans: int | None) -> float | None:
@@ -195,7 +221,7 @@ def _plan_task(
     ex = result.execution
     row["robots_used"] = sorted({e["robot"] for e in result.events})
     attempted = len(ex.events) + len(ex.violation_list)
-    return stages(result.events), (len(ex.events) / attempted if attempted else 1.0), ex
+    return stages(result.events, leaf_pairs(spec)), (len(ex.events) / attempted if attempted else 1.0), ex
 
 
 def _initial(world: World, conds: list[tuple[str, str | None, str | None]]) -> list[bool]:
