@@ -15,7 +15,8 @@ import json
 from pathlib import Path
 from typing import Any
 
-from nl2hltl2plan.errors import PlanningError
+from nl2hltl2plan.argtypes import positive_float
+from nl2hltl2plan.cli.options import add_backend_argument
 from nl2hltl2plan.language.options import add_llm_arguments, llm_settings
 
 
@@ -28,13 +29,13 @@ def register(bench_subparsers: Any) -> None:
     )
     source = p.add_mutually_exclusive_group(required=True)
     source.add_argument("--oracle", action="store_true", help="specs from the ground-truth final states")
-    source.add_argument(
-        "--llm",
-        choices=["offline", "local", "openai"],
-        default=None,
-        help="the instruction through the language stage with this backend",
+    add_backend_argument(source, help_extra=" (the instruction through the language stage)")
+    p.add_argument(
+        "--timeout",
+        type=positive_float,
+        default=30.0,
+        help="planner time limit per task in seconds (default 30)",
     )
-    p.add_argument("--timeout", type=float, default=30.0, help="planner time limit per task in s (30)")
     p.add_argument(
         "--objective",
         choices=["min", "minmax"],
@@ -56,9 +57,6 @@ def register(bench_subparsers: Any) -> None:
 
 def run(args: argparse.Namespace) -> int:
     from nl2hltl2plan.evaluation.smartllm import METRICS, SpecMaker, llm_maker, oracle_maker, run_bench
-
-    if args.timeout <= 0:
-        raise PlanningError("--timeout must be positive")
 
     def progress(row: dict[str, Any]) -> None:
         if not args.quiet:
