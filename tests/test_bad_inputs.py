@@ -67,7 +67,7 @@ CASES = [
     ("plan-missing-object", ["plan", "put the statue in the sink", "--world", "demo"], 2, "no Statue"),
     ("plan-robots-0", ["plan", PLATES, "--robots", "0"], 2, "--robots"),
     ("plan-robots-huge", ["plan", PLATES, "--robots", "1000000"], 2, "at most"),
-    ("plan-robots-text", ["plan", PLATES, "--robots", "two"], 2, "--robots"),
+    ("plan-robots-unknown-profile", ["plan", PLATES, "--robots", "two"], 2, "unknown robot profile"),
     ("plan-timeout-nan", ["plan", PLATES, "--timeout", "nan"], 2, "--timeout"),
     ("plan-timeout-inf", ["plan", PLATES, "--timeout", "inf"], 2, "--timeout"),
     ("plan-timeout-negative", ["plan", PLATES, "--timeout", "-1"], 2, "--timeout"),

@@ -35,6 +35,7 @@ from nl2hltl2plan.worlds.checker import CheckResult, check
 from nl2hltl2plan.worlds.model import Cell, World
 from nl2hltl2plan.worlds.starts import start_cells
 from nl2hltl2plan.worlds.tasks import GTInstance
+from nl2hltl2plan.worlds.team import Team, team_problems
 
 Objective = Literal["min", "minmax"]
 Mode = Literal["fast", "exact"]
@@ -115,6 +116,8 @@ class Outcome:
     spec: HierarchicalSpec
     starts: list[Cell]
     planned: Planned
+    team: str = ""  # the team's description ("robot1, robot5" or "2 robot(s) with every skill")
+    team: str = ""  # the team's description ("robot1, robot5" or "2 robot(s) with every skill")
 
     @property
     def result(self) -> PlanResult:
@@ -139,6 +142,7 @@ class Outcome:
             "instruction": self.instruction,
             "world": self.world.name,
             "robots": self.robots,
+            "team": self.team,
             "status": self.status.value,
             "htt": lang.htt.model_dump(mode="json"),
             "tasks": [t.model_dump(mode="json") for t in lang.tasks],
@@ -162,33 +166,47 @@ class Outcome:
 def run(
     instruction: str,
     world: World,
-    robots: int = 1,
+    robots: int | Team = 1,
     options: PipelineOptions | None = None,
     client: LLMClient | None = None,
     gt: GTInstance | None = None,
 ) -> Outcome:
-    """Instruction -> checked plan for `robots` robots in `world` (see the module docstring).
+    """Instruction -> checked plan for a team in `world` (see the module docstring).
 
-    Raises an `Nl2Hltl2PlanError` for input the pipeline cannot use (an object the scene lacks, a
-    sentence nothing understood, a cyclic ordering, too many robots); a spec with no plan is not an
-    error but an outcome with status infeasible / timeout and its reason.
+    `robots`: a number of robots that can do everything, or a `worlds.team.Team` of robots with
+    skills and carrying capacities (their capabilities bound the allocation). Raises an
+    `Nl2Hltl2PlanError` for input the pipeline cannot use (an object the scene lacks, a sentence
+    nothing understood, a cyclic ordering, too many robots); a spec with no plan is not an error but
+    an outcome with status infeasible (a team that lacks a skill, with the reason) or timeout.
     """
     opt = options or PipelineOptions()
-    starts = start_cells(world, robots, given=opt.starts)
-    if opt.capabilities is not None and len(opt.capabilities) != robots:
-        raise HTTError(f"{len(opt.capabilities)} capability sets given for {robots} robot(s)")
+    team = robots if isinstance(robots, Team) else Team(robots)
+    starts = start_cells(world, team.size, given=opt.starts)
+    if team.profiles is not None:
+        opt = opt.model_copy(update={"capabilities": [_listed(c) for c in team.capabilities(world)]})
+    if opt.capabilities is not None and len(opt.capabilities) != team.size:
+        raise HTTError(f"{len(opt.capabilities)} capability sets given for {team.size} robot(s)")
     lang = language_stage(instruction, world, opt, client)
     if lang.spec is None:
         why = "; ".join(lang.warnings + lang.issues + lang.unparsed) or "no leaf actions"
         raise HTTError(f"no hierarchical specification for {instruction!r}: {why}")
-    planned = planning_stage(world, lang.spec, starts, opt, gt)
+    problems = team_problems(team, lang.spec, world)
+    if problems:  # a definite no before any search: the team lacks a skill or the strength
+        planned = Planned(PlanResult(status=PlanStatus.INFEASIBLE, reason="; ".join(problems)))
+    else:
+        planned = planning_stage(world, lang.spec, starts, opt, gt)
     return Outcome(
         instruction=lang.instruction,
         world=world,
-        robots=robots,
+        robots=team.size,
         options=opt,
         language=lang,
         spec=lang.spec,
         starts=starts,
         planned=planned,
+        team=team.describe(),
     )
+
+
+def _listed(caps: set[str] | None) -> list[str] | None:
+    return None if caps is None else sorted(caps)

@@ -24,7 +24,6 @@ from nl2hltl2plan.cli.options import (
     add_planner_arguments,
     llm_settings,
     planner_options,
-    positive_int,
 )
 
 EXIT_OK, EXIT_NO_PLAN, EXIT_PENDING = 0, 1, 3
@@ -41,7 +40,12 @@ def register(sub: Any) -> None:
     p.add_argument(
         "--world", default="demo", help="demo (built in) or an ALFRED floor plan FloorPlanN (default: demo)"
     )
-    p.add_argument("--robots", type=positive_int, default=1, help="number of robots (default 1)")
+    p.add_argument(
+        "--robots",
+        default="1",
+        help="the team: a number of robots that can do everything, robot profile names from "
+        "smartllm/robots.json ('robot1,robot5'), or a JSON team file (default 1)",
+    )
     p.add_argument("--starts", default=None, help="robot start cells 'r,c;r,c' (default: the world's)")
     add_backend_argument(p, help_extra=" (default: openai when configured, else offline)")
     p.add_argument(
@@ -101,6 +105,7 @@ def run(args: argparse.Namespace) -> int:
     from nl2hltl2plan.pipeline import run as run_pipeline
     from nl2hltl2plan.worlds import load_world
     from nl2hltl2plan.worlds.starts import parse_cells
+    from nl2hltl2plan.worlds.team import parse_team
 
     settings = llm_settings(args)
     backend, note = resolve_backend(args.llm, settings)
@@ -122,11 +127,12 @@ def run(args: argparse.Namespace) -> int:
             print(f"warning: batch answer {e}", file=sys.stderr)
         print(f"loaded {n} batch answers into the cache", file=sys.stderr)
     world = load_world(args.world)
+    team = parse_team(args.robots)
     batch = BatchCollector() if args.batch_out else None
     spinner, on_request = _spinner(backend != "offline" and batch is None and not args.json)
     try:
         with spinner, open_client(backend, settings, batch=batch, on_request=on_request) as client:
-            outcome = run_pipeline(args.instruction, world, args.robots, options, client)
+            outcome = run_pipeline(args.instruction, world, team, options, client)
     except PendingAnswer:
         assert batch is not None
         n = batch.write(args.batch_out)
@@ -153,7 +159,7 @@ def _print_human(outcome: Any) -> None:
     from nl2hltl2plan.language.render import htt_lines
 
     lang, r = outcome.language, outcome.result
-    print(f"backend: {lang.backend}   world: {outcome.world.name}   robots: {outcome.robots}")
+    print(f"backend: {lang.backend}   world: {outcome.world.name}   team: {outcome.team}")
     print("\nHierarchical Task Tree")
     for line in htt_lines(lang.htt, leaf_specs=lang.leaf_specs):
         print("  " + line)

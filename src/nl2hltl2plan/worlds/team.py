@@ -31,6 +31,7 @@ from pathlib import Path
 
 from nl2hltl2plan.config import data_path
 from nl2hltl2plan.errors import DataError, PlanningError
+from nl2hltl2plan.io import read_json
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.worlds.model import KNIFE_TYPES, World
 
@@ -236,12 +237,7 @@ def parse_team(text: str | int) -> Team:
 
 
 def _team_file(path: Path) -> Team:
-    try:
-        raw = json.loads(path.read_text())
-    except OSError as exc:
-        raise DataError(f"cannot read team file {path}: {exc.strerror}") from None
-    except json.JSONDecodeError as exc:
-        raise DataError(f"team file {path} is not valid JSON: {exc}") from None
+    raw = read_json(path, "team file")
     if isinstance(raw, dict) and "robots" in raw:
         raw = raw["robots"]
     if not isinstance(raw, list) or not raw:
