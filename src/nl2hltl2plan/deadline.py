@@ -108,6 +108,8 @@ def _child_main(
         conn.send(reply)
     except MemoryError:
         conn.send(("memory", ""))
+    except Exception as exc:  # a result that cannot be pickled
+        conn.send(("error", f"the result could not be sent back: {describe_exception(exc)}"))
     finally:
         conn.close()
 

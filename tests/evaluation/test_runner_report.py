@@ -160,3 +160,12 @@ def test_dead_worker_and_bad_return_are_error_rows(tmp_path):
 def test_bad_limits_are_refused(tmp_path, kw, msg):
     with pytest.raises(RunnerError, match=msg):
         run_scenarios([Scenario("x", 1, 1)], quick, tmp_path / "rows.jsonl", **kw)
+
+
+def test_unusable_results_paths_are_clean_errors(tmp_path):
+    (tmp_path / "dir.jsonl").mkdir()
+    with pytest.raises(RunnerError, match="cannot read the results file .*dir.jsonl"):
+        run_scenarios([Scenario("x", 1, 1)], quick, tmp_path / "dir.jsonl")
+    (tmp_path / "file").write_text("")
+    with pytest.raises(RunnerError, match="cannot write the results file"):
+        run_scenarios([Scenario("x", 1, 1)], quick, tmp_path / "file" / "rows.jsonl")

@@ -177,6 +177,8 @@ def test_cli_plan_with_stub_llm(stub, capsys, tmp_path, monkeypatch):
             "--base-url",
             stub.base_url,
             "--json",
+            "--base-url",  # the cache is keyed by server: same server, batch mode
+            stub.base_url,
             "--batch-out",
             str(tmp_path / "pending.jsonl"),
         ]

@@ -16,7 +16,12 @@ def test_paper_syntax_and_dotted_and_quoted_names_parse():
 def test_malformed_formula_reports_spot_pointer():
     with pytest.raises(FormulaError) as exc:
         sb.parse("F(a &")
-    assert "cannot parse" in str(exc.value) and "^" in str(exc.value)
+    msg = str(exc.value)
+    assert msg == "cannot parse formula 'F(a &': syntax error, unexpected end of formula at character 6"
+    for junk in ("F(a\x00b)", "\xff\xfe\x00", "F(" * 3 + "a", "a U U b"):
+        with pytest.raises(FormulaError, match="cannot parse formula") as exc:
+            sb.parse(junk)
+        assert "\n" not in str(exc.value)
 
 
 @pytest.mark.parametrize(
@@ -87,6 +92,12 @@ def test_linear_sequences_are_built_directly_and_agree_with_spot(steps):
     via_spot = sb._to_dfa(sb._translate(f._f, small=True))
     assert distinguishing_word(direct, via_spot) is None
     assert direct.accepts([set(steps)]) and not direct.accepts([set(steps) - {steps[-1]}])
+
+
+def test_next_chains_read_goals_off_accepting_components():
+    d = sb.dfa(sb.parse("X " * 12 + "a"))  # 13 temporal operators: the guarded, transition-based path
+    assert d.accepts([set()] * 12 + [{"a"}]) and not d.accepts([set()] * 12)
+    assert not d.accepts([{"a"}] * 5)
 
 
 def test_thirty_step_sequence_translates_instantly():

@@ -116,3 +116,12 @@ def test_killing_the_parent_takes_workers_and_their_children_with_it(tmp_path: P
         for p in pids:  # when the test fails, do not leave its processes behind
             if _alive(p):
                 os.kill(p, signal.SIGKILL)
+
+
+def _unpicklable(_: object) -> object:
+    return lambda: 0
+
+
+def test_a_result_that_cannot_be_sent_back_is_an_error():
+    with pytest.raises(ChildError, match="the result could not be sent back: .*pickle"):
+        run_with_deadline(_unpicklable, None, timeout_s=5)

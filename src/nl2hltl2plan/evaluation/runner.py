@@ -61,7 +61,10 @@ def read_rows(path: Path) -> tuple[dict[str, Row], list[str]]:
     problems: list[str] = []
     if not path.exists():
         return rows, problems
-    data = path.read_bytes()
+    try:
+        data = path.read_bytes()
+    except OSError as exc:
+        raise RunnerError(f"cannot read the results file {path}: {exc.strerror}") from None
     lines = data.split(b"\n")
     last = len(lines) - (1 if data.endswith(b"\n") else 0)
     for n, raw in enumerate(lines[:last], 1):
@@ -136,14 +139,18 @@ def run_scenarios(
     """Run every scenario (in parallel, each in its own process) and return the rows in order."""
     scenarios = list(scenarios)
     n_workers = _check_limits(workers, hard_timeout_s)
-    out.parent.mkdir(parents=True, exist_ok=True)
-    if not resume and out.exists():
-        out.unlink()
-    done = load_rows(out, notes)
+    try:
+        out.parent.mkdir(parents=True, exist_ok=True)
+        if not resume and out.exists():
+            out.unlink()
+        done = load_rows(out, notes)
+        sink = out.open("a")
+    except OSError as exc:
+        raise RunnerError(f"cannot write the results file {out}: {exc.strerror}") from None
     todo = [s for s in scenarios if s.key not in done]
     running: dict[Child, Scenario] = {}
     finished = len(scenarios) - len(todo)
-    with out.open("a") as sink:
+    with sink:
 
         def record(scenario: Scenario, row: Row) -> None:
             nonlocal finished

@@ -112,8 +112,16 @@ def parse(text: str) -> Formula:
     try:
         return Formula(spot.formula(text))
     except SyntaxError as exc:
-        detail = "\n".join(line for line in str(exc).strip().splitlines() if line.strip())
-        raise FormulaError(f"cannot parse formula {text!r}:\n{detail}") from None
+        raise FormulaError(f"cannot parse formula {_short(text)!r}: {_first_parse_error(str(exc))}") from None
+
+
+def _first_parse_error(spot_message: str) -> str:
+    """Spot's first complaint in one line: "syntax error, unexpected ... at character 5"."""
+    lines = [line for line in spot_message.splitlines() if line.strip()]
+    for k, line in enumerate(lines):
+        if line.lstrip().startswith("^") and k + 1 < len(lines):
+            return f"{lines[k + 1].strip()} at character {line.index('^') - 3}"
+    return " ".join(" ".join(lines).split())[:200] or "syntax error"
 
 
 def atom(name: str) -> Formula:
@@ -370,7 +378,10 @@ def _to_dfa(aut: spot.twa_graph) -> Dfa:
     for e in aut.edges():
         for cube in _cubes(e.cond, var_to_bit):
             edges[e.src].append((cube, e.dst))
-    accepting = frozenset(s for s in range(n) if aut.state_is_accepting(s))
+    # the accepting SCCs of a terminal automaton are closed under every letter: reaching one is a good
+    # prefix (works for state- and transition-based marks alike; a mark on a transient edge is no goal)
+    scc = spot.scc_info(aut)
+    accepting = frozenset(s for s in range(n) if scc.is_accepting_scc(scc.scc_of(s)))
     return Dfa(atoms=atoms, init=aut.get_init_state_number(), accepting=accepting, edges=edges)
 
 
