@@ -52,7 +52,10 @@ def open_client(
     from nl2hltl2plan.language.llm.local_server import LocalServer, smollm2_path
 
     gguf = settings.gguf or smollm2_path()
-    local = settings.model_copy(update={"model": gguf.name, "api_key": "none"})
+    # the server's port changes every run: name the model file in cache keys instead
+    local = settings.model_copy(
+        update={"model": gguf.name, "api_key": "none", "cache_scope": f"local:{gguf.name}"}
+    )
     if batch is not None:  # batch mode answers from the cache only: no server needed
         yield LLMClient(local, batch=batch, on_request=on_request)
         return

@@ -69,10 +69,28 @@ def translate(
     if backend == "offline":
         look = world_lookup(world) if isinstance(world, World) else None
         res = _offline(instruction, types, scene, strict, look)
-    else:
-        if client is None:
-            raise LLMError(f"backend {backend} needs an LLM client (see backends.open_client)")
+        _finish(res, world, backend, client, ltl, actions, build)
+        return res
+    if client is None:
+        raise LLMError(f"backend {backend} needs an LLM client (see backends.open_client)")
+    with client.instruction():  # one deadline for every request this instruction makes
         res = _llm(instruction, types, scene, client, strict)
+        _finish(res, world, backend, client, ltl, actions, build)
+    return res
+
+
+def _finish(
+    res: LanguageResult,
+    world: SceneLike | None,
+    backend: str,
+    client: LLMClient | None,
+    ltl: LtlSource,
+    actions: ActionSource,
+    build: bool,
+) -> None:
+    """Leaf actions (recipes or LLM action completion), then Algorithm 1."""
+    types = set(world.object_types()) if world is not None else None
+    scene = world.name if world is not None else None
     res.backend = backend
     mode = actions if actions != "auto" else ("recipe" if backend == "offline" else "llm")
     if mode == "recipe" and isinstance(world, World):
@@ -94,7 +112,6 @@ def translate(
             "reasks": st.reasks,
             "retries": st.retries,
         }
-    return res
 
 
 def recipe_leaf_specs(
