@@ -69,7 +69,9 @@ def segments(robot_plan: RobotPlan, failed: frozenset[tuple[int, int]] = frozens
 
     for t in range(1, robot_plan.end + 1):
         step = by_t.get(t)
-        kind = "wait" if step is None or step.verb == "wait" else ("move" if step.verb == "move" else "action")
+        kind = (
+            "wait" if step is None or step.verb == "wait" else ("move" if step.verb == "move" else "action")
+        )
         if kind != run_kind or kind == "action":
             close(t - 1)
             run_kind, run_start = ("", 0) if kind == "action" else (kind, t)
@@ -210,6 +212,6 @@ def _default_title(plan: Plan | Execution, plan_obj: Plan) -> str:
     team = f"{n} robot" + ("" if n == 1 else "s")
     if isinstance(plan, Execution):
         extra = "" if plan.ok else f", {len(plan.violation_list)} failed steps"
-        return f"{plan.world.name}: {team}, completion time {plan.steps} steps, travel {plan.travel_m:.2f} m{extra}"
+        return (f"{plan.world.name}: {team}, completion time {plan.steps} steps, "
+                f"travel {plan.travel_m:.2f} m{extra}")  # fmt: skip
     return f"plan of {team}, {plan_obj.horizon} steps"
-

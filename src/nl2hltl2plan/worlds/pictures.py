@@ -68,7 +68,9 @@ def _objects(world: World, ax, labels: bool | Iterable[str] = True) -> None:
 
 
 def place_labels(
-    ax, items: list[tuple[tuple[float, float], str]], avoid: Iterable[tuple[float, float]] = (),
+    ax,
+    items: list[tuple[tuple[float, float], str]],
+    avoid: Iterable[tuple[float, float]] = (),
     fontsize: float = 6.5,
 ) -> None:
     """Label points without overlaps: try offsets around each point (nearest first) and keep the first
@@ -192,8 +194,9 @@ def _numbered_events(ax, execution: Execution, events: list, colours: dict) -> l
         slot = at_cell.get(cell, 0)
         at_cell[cell] = slot + 1
         x, z = world.xz(cell)
-        ax.annotate(str(n), (x, z), xytext=(9 + 13 * (slot % 5), 9 + 13 * (slot // 5)), textcoords="offset points",
-                    ha="center", va="center", fontsize=7, color="white", fontweight="bold", zorder=8,
+        offset = (9 + 13 * (slot % 5), 9 + 13 * (slot // 5))
+        ax.annotate(str(n), (x, z), xytext=offset, textcoords="offset points", ha="center",
+                    va="center", fontsize=7, color="white", fontweight="bold", zorder=8,
                     bbox={"boxstyle": "circle,pad=0.25", "fc": colours[ev.robot], "ec": "black", "lw": 0.5},
                     arrowprops={"arrowstyle": "-", "color": colours[ev.robot], "lw": 0.6})  # fmt: skip
         lines.append((f"{n:>2}. t={ev.t} robot {ev.robot}: {ev.atom}", colours[ev.robot]))
