@@ -188,5 +188,6 @@ def _relation_arrow(ax, pos: dict, size: dict, a: str, b: str, siblings: list[st
         ax.annotate("", xy=(xb - size[b][0] / 2, y), xytext=(xa + size[a][0] / 2, y), arrowprops=style,
                     zorder=4)  # fmt: skip
         return
+    bend = 0.25 if xb < xa else -0.25  # either way the arc bulges upwards
     ax.annotate("", xy=(xb, yb - size[b][1] / 2), xytext=(xa, ya - size[a][1] / 2), zorder=4,
-                arrowprops={**style, "ls": "--", "connectionstyle": "arc3,rad=-0.25"})  # fmt: skip
+                arrowprops={**style, "ls": "--", "connectionstyle": f"arc3,rad={bend}"})  # fmt: skip
