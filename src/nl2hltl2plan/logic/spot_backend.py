@@ -316,3 +316,18 @@ def _cubes(cond: object, var_to_bit: dict[int, int]) -> list[Cube]:
         out.append((pos, neg))
         c = isop.next()
     return out
+
+
+# HOA output (the Hanoi Omega-Automata format, for other tools)
+
+
+def hoa(f: Formula, timeout_s: float = DEFAULT_TIMEOUT_S) -> str:
+    """The automaton `dfa(f)` is read from (Spot's deterministic terminal Büchi automaton, completed
+    with a rejecting sink), written by Spot in HOA v1; large formulas are translated in a child with
+    `timeout_s`, as `dfa` does."""
+    probs = sc_ltl_problems(f)
+    if probs:
+        raise FormulaError(f"{f.text} is not sc-LTL: " + "; ".join(probs))
+    if len(f.atoms) <= IN_PROCESS_MAX_ATOMS:
+        return str(_translate(f._f, small=True).to_str("hoa"))
+    return _in_child(_translate_to_hoa, f.text, timeout_s)
