@@ -19,10 +19,11 @@ import sys
 from collections import Counter
 
 from nl2hltl2plan.planning import oracle_spec, plan
-from nl2hltl2plan.worlds.alfred import benchmark_issues, build_benchmark_world, start_cells
+from nl2hltl2plan.worlds.alfred import benchmark_issues, build_benchmark_world
 from nl2hltl2plan.worlds.benchmark import load_gt
 from nl2hltl2plan.worlds.checker import check
 from nl2hltl2plan.worlds.model import sliced_type
+from nl2hltl2plan.worlds.starts import start_cells
 from nl2hltl2plan.worlds.tasks import GTInstance
 
 SCENES = ["FloorPlan7", "FloorPlan310", "FloorPlan427", "FloorPlan19", "FloorPlan322", "FloorPlan8",
@@ -84,7 +85,7 @@ def main() -> int:
             if benchmark_issues(world, gt):
                 continue
             spec = oracle_spec(gt, world).spec
-            starts = start_cells(world, gt, args.robots)
+            starts = start_cells(world, args.robots, gt=gt)
             actions = sum(len(spec.leaf_actions(n) or []) for n in spec.leaves)
             for objective in ("min", "minmax"):
                 r = plan(world, spec, starts, objective=objective, timeout_s=args.timeout)

@@ -10,6 +10,7 @@ from nl2hltl2plan.cli.main import main
 from nl2hltl2plan.config import data_dir
 from nl2hltl2plan.evaluation.language_bench import STAGES, failure_stage, language_record
 from nl2hltl2plan.evaluation.report_md import failure_breakdown, pipeline_summary, table1_markdown
+from nl2hltl2plan.pipeline import PipelineOptions
 
 needs_data = pytest.mark.skipif(data_dir(required=False) is None, reason="needs ../shared/data")
 
@@ -46,10 +47,10 @@ def test_rates_follow_table_1():
 def test_language_record_scores_conversion_against_ground_truth():
     from nl2hltl2plan.worlds.benchmark import gt_instance
 
-    ok = language_record(gt_instance("FloorPlan15.tasks_1.compose_0.fintune_1"), "offline", None)
+    ok = language_record(gt_instance("FloorPlan15.tasks_1.compose_0.fintune_1"), PipelineOptions(), None)
     assert ok["conversion_ok"] and ok["stage"] is None and ok["levels"]
     # the scene lacks the statue: conversion still scored, no spec to plan (a planning failure)
-    statue = language_record(gt_instance("FloorPlan17.tasks_2.compose_0.fintune_1"), "offline", None)
+    statue = language_record(gt_instance("FloorPlan17.tasks_2.compose_0.fintune_1"), PipelineOptions(), None)
     assert "Statue" in statue["error"] and statue["levels"] is None
 
 
@@ -75,4 +76,4 @@ def test_bench_llm_offline_end_to_end_with_custom_ground_truth(tmp_path, capsys)
     bad = tmp_path / "bad.jsonl"
     bad.write_text("{not json}\n")
     assert main(["bench", "alfred", "--llm", "offline", "--gt", str(bad), "--out", str(out)]) == 2
-    assert "not a ground-truth instance" in capsys.readouterr().err
+    assert "not valid JSON" in capsys.readouterr().err

@@ -8,8 +8,8 @@ import pytest
 
 from nl2hltl2plan.language.grounding import Roles, alfred_lookup
 from nl2hltl2plan.language.offline import parse_instruction
-from nl2hltl2plan.language.pipeline import translate
 from nl2hltl2plan.language.tasks import transitive_closure
+from nl2hltl2plan.language.translate import translate
 from nl2hltl2plan.logic.spot_backend import equivalent, parse
 from nl2hltl2plan.worlds.model import Affordances
 

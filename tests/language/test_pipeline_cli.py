@@ -8,10 +8,12 @@ import pytest
 
 from nl2hltl2plan.cli.main import main
 from nl2hltl2plan.errors import HTTError, WorldError
+from nl2hltl2plan.language.backends import resolve_backend
 from nl2hltl2plan.language.grounding import Grounder, find_mentions
-from nl2hltl2plan.language.pipeline import build_htt, flat_before, resolve_backend, translate
+from nl2hltl2plan.language.htt_build import build_htt, flat_before
 from nl2hltl2plan.language.scoring import match
 from nl2hltl2plan.language.tasks import BaseTaskSpec
+from nl2hltl2plan.language.translate import translate
 
 
 def spec(i: str, obj: str, kind: str = "place", rec: str = "Fridge", **kw) -> BaseTaskSpec:

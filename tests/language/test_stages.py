@@ -10,8 +10,8 @@ import pytest
 from nl2hltl2plan.errors import LLMError, WorldError
 from nl2hltl2plan.language import stages
 from nl2hltl2plan.language.llm import LLMClient, LLMSettings
-from nl2hltl2plan.language.pipeline import translate
 from nl2hltl2plan.language.prompts import STAGES, load_prompt
+from nl2hltl2plan.language.translate import translate
 
 DATA = Path(__file__).parent / "data"
 

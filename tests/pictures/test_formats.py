@@ -67,4 +67,4 @@ def test_spec_hoa_bad_folder(tmp_path, capsys):
     blocker = tmp_path / "file"
     blocker.write_text("x")
     assert main(["spec", str(ROOT / "examples" / "dishwasher_htt.json"), "--hoa", str(blocker / "d")]) == 2
-    assert "cannot create" in capsys.readouterr().err
+    assert "HOA folder" in capsys.readouterr().err

@@ -6,11 +6,11 @@ import argparse
 import json
 from pathlib import Path
 
-from nl2hltl2plan.errors import DataError
+from nl2hltl2plan.io import ensure_writable_dir
 from nl2hltl2plan.language.htt import HTT
 from nl2hltl2plan.language.spec_builder import build_spec
 from nl2hltl2plan.logic import spot_backend as sb
-from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
+from nl2hltl2plan.logic.hierarchical import HierarchicalSpec, format_spec
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -66,10 +66,7 @@ def run(args: argparse.Namespace) -> int:
 
 def write_hoa(spec: HierarchicalSpec, folder: Path) -> dict[str, Path]:
     """DIR/<name>.hoa for every flat formula (leaves too: their action sequence formula)."""
-    try:
-        folder.mkdir(parents=True, exist_ok=True)
-    except OSError as exc:
-        raise DataError(f"cannot create {folder}: {exc.strerror or exc}") from None
+    ensure_writable_dir(folder, "HOA folder")
     written = {}
     for name in spec.names:
         path = folder / f"{name}.hoa"
@@ -77,10 +74,3 @@ def write_hoa(spec: HierarchicalSpec, folder: Path) -> dict[str, Path]:
         written[name] = path
     return written
 
-
-def format_spec(spec: HierarchicalSpec) -> str:
-    lines = []
-    for k, level in enumerate(spec.levels, start=1):
-        for name in level:
-            lines.append(f"L{k}  {name} = {spec.text(name)}")
-    return "\n".join(lines)

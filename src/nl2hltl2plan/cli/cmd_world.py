@@ -56,20 +56,23 @@ def _load(args):
     from nl2hltl2plan.worlds.tasks import GTInstance
 
     if ".tasks_" in args.name:
-        from nl2hltl2plan.worlds.alfred import build_benchmark_world, start_cells
+        from nl2hltl2plan.worlds.alfred import build_benchmark_world
         from nl2hltl2plan.worlds.benchmark import gt_instance
+        from nl2hltl2plan.worlds.starts import start_cells
 
         if args.trials:
             raise WorldError("a benchmark instance brings its own trials; drop --trials")
         gt = gt_instance(args.name)
         world = build_benchmark_world(gt)
-        return world, gt, start_cells(world, gt, 1)[0]
+        return world, gt, start_cells(world, 1, gt=gt)[0]
     world = load_world(args.name, args.trials)
-    gt = None
+    demo_gt: GTInstance | None = None
     if world.kind == "demo":
-        gt = GTInstance(id="demo.dishwasher", scene="demo", tasks=DEMO_TASKS, before=DEMO_BEFORE)
+        demo_gt = GTInstance.model_validate(
+            {"id": "demo.dishwasher", "scene": "demo", "tasks": DEMO_TASKS, "before": DEMO_BEFORE}
+        )
     start = world.default_starts[0] if world.default_starts else None
-    return world, gt, start
+    return world, demo_gt, start
 
 
 def run(args: argparse.Namespace) -> int:

@@ -1,49 +1,22 @@
 """The ALFRED benchmark: scenarios (instance x team size), the oracle-spec job, plan + execute + check.
 
-`plan_and_check(world, spec, gt, starts, ...)` is the generic step every benchmark job ends with,
-whatever produced the spec (oracle converter here, the language stage with --llm): plan, execute
-(done inside `planning.plan`, which refuses to return an unverified plan) and judge the execution
-with the ground-truth goal checker (goals and strict `before` order).
+Every job ends with `pipeline.planning_stage`, whatever produced the spec (the oracle converter here,
+the language stage with --llm): plan, execute (inside `planning.plan`, which refuses to return an
+unverified plan) and judge the execution with the ground-truth goal checker (goals and strict
+`before` order); `planned_row` turns that into the scenario's row.
 """
 
 from __future__ import annotations
 
-import json
-from collections.abc import Sequence
-from pathlib import Path
-from typing import Any
+from collections.abc import Callable, Sequence
 
-from pydantic import ValidationError
-
-from nl2hltl2plan.errors import DataError
 from nl2hltl2plan.evaluation.runner import Row, Scenario
-from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
-from nl2hltl2plan.planning import oracle_spec, plan
-from nl2hltl2plan.worlds.alfred import benchmark_issues, build_benchmark_world, start_cells
+from nl2hltl2plan.pipeline import PipelineOptions, Planned, planning_stage
+from nl2hltl2plan.planning import oracle_spec
+from nl2hltl2plan.worlds.alfred import benchmark_issues, build_benchmark_world
 from nl2hltl2plan.worlds.benchmark import gt_instance, load_gt
-from nl2hltl2plan.worlds.checker import check
-from nl2hltl2plan.worlds.model import Cell, World
+from nl2hltl2plan.worlds.starts import start_cells
 from nl2hltl2plan.worlds.tasks import GTInstance
-
-
-def load_gt_file(path: Path | None = None) -> dict[str, GTInstance]:
-    """Ground-truth instances by id: the benchmark's file, or any JSONL file with its schema."""
-    if path is None:
-        return {g.id: g for g in load_gt()}
-    try:
-        lines = [line for line in Path(path).read_text().splitlines() if line.strip()]
-    except OSError as exc:
-        raise DataError(f"cannot read ground truth {path}: {exc.strerror}") from None
-    out: dict[str, GTInstance] = {}
-    for k, line in enumerate(lines, start=1):
-        try:
-            gt = GTInstance.model_validate(json.loads(line))
-        except (json.JSONDecodeError, ValidationError) as exc:
-            raise DataError(
-                f"{path}:{k} is not a ground-truth instance: {str(exc).splitlines()[0]}"
-            ) from None
-        out[gt.id] = gt
-    return out
 
 
 def alfred_scenarios(
@@ -62,33 +35,21 @@ def alfred_scenarios(
     return [Scenario(g.id, g.n_base, r, draw) for g in insts for r in robots]
 
 
-def plan_and_check(
-    world: World,
-    spec: HierarchicalSpec,
-    gt: GTInstance,
-    starts: Sequence[Cell],
-    **planner: Any,
-) -> Row:
-    """Plan, then judge the executed plan with the goal checker; one JSON-ready row."""
-    result = plan(world, spec, starts, **planner)
+def planned_row(planned: Planned) -> Row:
+    """The planner's result and the goal checker's verdict as one JSON-ready row."""
+    result = planned.result
     row: Row = result.to_dict(with_plan=False)
     row["events"] = result.events
-    row["success"] = False
-    if result.solved and result.execution is not None:
-        verdict = check(result.execution, gt)
-        row["success"] = verdict.success
-        row["check_reasons"] = verdict.reasons
-        row["goal_steps"] = verdict.goal_steps
+    row["success"] = planned.success
+    if planned.check is not None:
+        row["check_reasons"] = planned.check.reasons
+        row["goal_steps"] = planned.check.goal_steps
     return row
 
 
 def oracle_job(
-    objective: str = "min",
-    mode: str = "fast",
-    timeout_s: float = 300.0,
-    gts: dict[str, GTInstance] | None = None,
-    **planner: Any,
-):
+    options: PipelineOptions | None = None, gts: dict[str, GTInstance] | None = None
+) -> Callable[[Scenario], Row]:
     """A job for `run_scenarios`: oracle spec of the instance -> plan -> execute -> check."""
 
     def job(scenario: Scenario) -> Row:
@@ -96,10 +57,8 @@ def oracle_job(
         world = build_benchmark_world(gt)
         issues = benchmark_issues(world, gt)
         spec = oracle_spec(gt, world).spec
-        starts = start_cells(world, gt, scenario.robots, scenario.draw)
-        row = plan_and_check(
-            world, spec, gt, starts, objective=objective, mode=mode, timeout_s=timeout_s, **planner
-        )
+        starts = start_cells(world, scenario.robots, gt=gt, draw=scenario.draw)
+        row = planned_row(planning_stage(world, spec, starts, options, gt))
         row["feasible"] = not issues
         row["issues"] = issues
         row["gt_feasible"] = gt.feasible

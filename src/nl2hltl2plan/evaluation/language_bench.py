@@ -20,16 +20,16 @@ from __future__ import annotations
 import json
 from collections.abc import Callable, Iterable
 from pathlib import Path
-from typing import Any
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
-from nl2hltl2plan.evaluation.alfred import plan_and_check
+from nl2hltl2plan.evaluation.alfred import planned_row
 from nl2hltl2plan.evaluation.runner import Row, Scenario, load_rows
 from nl2hltl2plan.language.llm.client import LLMClient
-from nl2hltl2plan.language.pipeline import translate
 from nl2hltl2plan.language.scoring import match
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
-from nl2hltl2plan.worlds.alfred import benchmark_issues, build_benchmark_world, start_cells
+from nl2hltl2plan.pipeline import PipelineOptions, language_stage, planning_stage
+from nl2hltl2plan.worlds.alfred import benchmark_issues, build_benchmark_world
+from nl2hltl2plan.worlds.starts import start_cells
 from nl2hltl2plan.worlds.tasks import GTInstance
 
 STAGES = (
@@ -42,27 +42,21 @@ STAGES = (
 )
 
 
-def language_record(gt: GTInstance, backend: str, client: LLMClient | None, ltl: str = "compiler") -> Row:
+def language_record(gt: GTInstance, options: PipelineOptions, client: LLMClient | None) -> Row:
     """Run the language stage on one instruction and score it against the ground truth."""
     world = build_benchmark_world(gt)
-    rec: Row = {"key": gt.id, "instance": gt.id, "n_base": gt.n_base, "backend": backend}
+    rec: Row = {"key": gt.id, "instance": gt.id, "n_base": gt.n_base, "backend": options.backend}
     grounding_error = None
+    lenient = options.model_copy(update={"strict": False})
     try:
-        result = translate(gt.instruction, world, backend=backend, client=client, ltl=ltl, strict=False)
+        result = language_stage(gt.instruction, world, lenient, client)
     except Nl2Hltl2PlanError as exc:
         # a task this world cannot provide (no such object, a receptacle that refuses it): the
         # conversion is still scored; planning fails with this reason
         grounding_error = str(exc)
         try:
-            result = translate(
-                gt.instruction,
-                world,
-                backend=backend,
-                client=client,
-                ltl=ltl,
-                strict=False,
-                actions="none",
-                build_spec=False,
+            result = language_stage(
+                gt.instruction, world, lenient.model_copy(update={"actions": "none"}), client
             )
         except Nl2Hltl2PlanError as exc2:
             rec.update(
@@ -97,10 +91,9 @@ def language_record(gt: GTInstance, backend: str, client: LLMClient | None, ltl:
 
 def translate_instances(
     gts: Iterable[GTInstance],
-    backend: str,
+    options: PipelineOptions,
     client: LLMClient | None,
     out: Path,
-    ltl: str = "compiler",
     progress: Callable[[GTInstance], None] | None = None,
 ) -> dict[str, Row]:
     """Language records for every instance, reusing those already in `out` (JSON lines)."""
@@ -108,7 +101,7 @@ def translate_instances(
     with out.open("a") as fh:
         for gt in gts:
             if gt.id not in records:
-                rec = language_record(gt, backend, client, ltl)
+                rec = language_record(gt, options, client)
                 records[gt.id] = rec
                 fh.write(json.dumps(rec) + "\n")
                 fh.flush()
@@ -118,7 +111,7 @@ def translate_instances(
 
 
 def language_job(
-    records: dict[str, Row], gts: dict[str, GTInstance], **planner: Any
+    records: dict[str, Row], gts: dict[str, GTInstance], options: PipelineOptions
 ) -> Callable[[Scenario], Row]:
     """A `run_scenarios` job planning from the language stage's spec of the scenario's instruction."""
 
@@ -127,7 +120,7 @@ def language_job(
         rec = records[scenario.instance]
         world = build_benchmark_world(gt)
         issues = benchmark_issues(world, gt)
-        starts = start_cells(world, gt, scenario.robots, scenario.draw)
+        starts = start_cells(world, scenario.robots, gt=gt, draw=scenario.draw)
         base: Row = {
             "feasible": not issues,
             "issues": issues,
@@ -148,7 +141,7 @@ def language_job(
                 "stage": rec.get("stage") or "planning",
             }
         spec = HierarchicalSpec.from_json(rec["levels"])
-        row = plan_and_check(world, spec, gt, starts, **planner)
+        row = planned_row(planning_stage(world, spec, starts, options, gt))
         row.update(base)
         row["planning_ok"] = row.get("status") == "solved"
         row["stage"] = failure_stage(rec, row)

@@ -379,10 +379,7 @@ class HierarchicalSpec:
                     if form is not None:
                         children, pairs = form
                         done = {c: completed[c] for c in children}
-                        if any(
-                            done[a] is not None and done[b] is not None and done[a] > done[b]
-                            for a, b in pairs
-                        ):
+                        if any(_later(done[a], done[b]) for a, b in pairs):
                             broken.add(n)
                         elif all(v is not None for v in done.values()):
                             completed[n] = t
@@ -404,3 +401,15 @@ class HierarchicalSpec:
                     why += f"; leaves never completed: {missing}"
                 reasons.append(why)
         return TraceCheck(not reasons, completed, reasons)
+
+
+def _later(a: int | None, b: int | None) -> bool:
+    """Both completed, and `a` after `b` (an ordering "a before b" broken)."""
+    return a is not None and b is not None and a > b
+
+
+def format_spec(spec: HierarchicalSpec) -> str:
+    """Readable hierarchical LTL, one formula per line, level by level: `L2  task1.1 = F(...)`."""
+    return "\n".join(
+        f"L{k}  {name} = {spec.text(name)}" for k, level in enumerate(spec.levels, start=1) for name in level
+    )

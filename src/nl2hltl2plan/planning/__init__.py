@@ -7,7 +7,7 @@ benchmark instance). See docs/planning.md.
 
 from __future__ import annotations
 
-from nl2hltl2plan.planning.api import PlanResult, plan
+from nl2hltl2plan.planning.api import PlanResult, PlanStatus, plan
 from nl2hltl2plan.planning.oracle import OracleSpec, oracle_spec
 
-__all__ = ["OracleSpec", "PlanResult", "oracle_spec", "plan"]
+__all__ = ["OracleSpec", "PlanResult", "PlanStatus", "oracle_spec", "plan"]

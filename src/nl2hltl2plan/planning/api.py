@@ -5,6 +5,7 @@ from __future__ import annotations
 import time
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
+from enum import StrEnum
 from typing import Any, Literal
 
 from nl2hltl2plan.errors import PlanningError
@@ -69,6 +70,15 @@ def _well_placed(x: Expander, root: Node) -> list[int]:
         return (sum(min(nav.dist(cell, a) for a in anchors) for anchors in firsts), r)
 
     return sorted(range(x.p.n_robots), key=spread)
+
+
+class PlanStatus(StrEnum):
+    """How a planning call ended (a str enum: `status == "solved"` keeps working)."""
+
+    SOLVED = "solved"
+    INFEASIBLE = "infeasible"
+    TIMEOUT = "timeout"
+    ERROR = "error"
 
 
 @dataclass

@@ -23,7 +23,6 @@ from nl2hltl2plan.worlds.plan import Plan, RobotPlan, Step
 from nl2hltl2plan.worlds.simulator import Execution, execute
 
 
-
 def replay(x: Expander, events: list[Event], stands: list[int] | None = None) -> Node | None:
     node = x.root()
     for i, e in enumerate(events):

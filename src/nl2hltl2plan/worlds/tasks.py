@@ -82,11 +82,13 @@ class Goal:
 
 
 class BaseTask(BaseModel):
-    """One ground-truth base task (fields as in alfred_test50_gt.jsonl)."""
+    """One base task: what the ground truth (alfred_test50_gt.jsonl, see ANNOTATION_GUIDE.md) and the
+    language stage both describe — the kind of task, the acceptable AI2-THOR types of the object, the
+    container, the destination and the lamp, how many objects, and whether they must be slices."""
 
     model_config = ConfigDict(extra="ignore")
 
-    id: str
+    id: str = "A"
     text: str = ""
     kind: Kind
     object: list[str]
@@ -95,6 +97,16 @@ class BaseTask(BaseModel):
     container: list[str] | None = None
     receptacle: list[str] | None = None
     light: list[str] | None = None
+
+    def summary(self) -> str:
+        """One readable line, e.g. `clean_place Potato(sliced) -> Fridge`."""
+        obj = "|".join(self.object) + ("(sliced)" if self.sliced else "")
+        if self.count > 1:
+            obj = f"{self.count}x {obj}"
+        if self.kind == "examine_in_light":
+            return f"{self.kind} {obj} under {'|'.join(self.light or ['?'])}"
+        inner = f" in {'|'.join(self.container)}" if self.container else ""
+        return f"{self.kind} {obj}{inner} -> {'|'.join(self.receptacle or ['?'])}"
 
     # ------------------------------------------------------------ goal
     def goal(self) -> Goal:
