@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import textwrap
 from pathlib import Path
+from typing import Any
 
 from nl2hltl2plan.language.htt import HTT
 
@@ -62,11 +63,14 @@ def htt_labels(htt: HTT, max_actions: int = 8) -> dict[str, str]:
 def draw_htt(htt: HTT, path: str | Path, title: str | None = None) -> Path:
     """Draw the tree (decomposition edges grey, temporal relations red arrows) to an image file."""
     return draw_tree(
-        {n.id: list(n.children) for n in htt.nodes},
-        htt_labels(htt),
-        list(htt.relations),
-        path,
-        title=title,
+        {n.id: list(n.children) for n in htt.nodes}, htt_labels(htt), list(htt.relations), path, title=title
+    )
+
+
+def htt_figure(htt: HTT, title: str | None = None) -> Any:
+    """The HTT picture as a matplotlib figure (the caller saves and closes it)."""
+    return tree_figure(
+        {n.id: list(n.children) for n in htt.nodes}, htt_labels(htt), list(htt.relations), title=title
     )
 
 
@@ -134,6 +138,23 @@ def draw_tree(
 ) -> Path:
     """Draw a forest (`children`: node -> ordered children; every node a key) with boxes sized to
     their text, decomposition edges and `a before b` relations as red arrows; png/svg/pdf by suffix."""
+    import matplotlib.pyplot as plt
+
+    fig = tree_figure(children, labels, relations, title)
+    out = Path(path)
+    out.parent.mkdir(parents=True, exist_ok=True)
+    fig.savefig(out, dpi=120, bbox_inches="tight")
+    plt.close(fig)
+    return out
+
+
+def tree_figure(
+    children: dict[str, list[str]],
+    labels: dict[str, str],
+    relations: list[tuple[str, str]],
+    title: str | None = None,
+) -> Any:
+    """The figure `draw_tree` saves."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -170,11 +191,7 @@ def draw_tree(
     if title:
         fig.suptitle("\n".join(textwrap.wrap(title, max(40, int(total_w / CHAR_IN / 1.2)))), fontsize=8,
                      y=1.0, va="bottom")  # fmt: skip
-    out = Path(path)
-    out.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(out, dpi=120, bbox_inches="tight")
-    plt.close(fig)
-    return out
+    return fig
 
 
 def _relation_arrow(ax, pos: dict, size: dict, a: str, b: str, siblings: list[str]) -> None:
