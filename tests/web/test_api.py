@@ -66,8 +66,16 @@ def test_page_and_worlds(client):
 @pytest.mark.parametrize(
     "body, status, message",
     [
-        ({"instruction": "", "world": "demo", "robots": 1}, 422, "instruction: String should have at least 1"),
-        ({"instruction": INSTRUCTION, "robots": 0}, 422, "robots: Input should be greater than or equal to 1"),
+        (
+            {"instruction": "", "world": "demo", "robots": 1},
+            422,
+            "instruction: String should have at least 1",
+        ),
+        (
+            {"instruction": INSTRUCTION, "robots": 0},
+            422,
+            "robots: Input should be greater than or equal to 1",
+        ),
         ({"instruction": INSTRUCTION, "robots": 99}, 422, "robots: Input should be less than or equal to 8"),
         ({"world": "demo"}, 422, "instruction: Field required"),
         ({"instruction": INSTRUCTION, "colour": "red"}, 422, "colour: Extra inputs are not permitted"),
@@ -84,3 +92,28 @@ def test_bad_requests_get_a_message(client, body, status, message):
 def test_not_json(client):
     res = client.post("/api/plan", content=b"{not json", headers={"content-type": "application/json"})
     assert res.status_code == 422 and res.json()["error"]
+
+
+def test_serve_command_starts_uvicorn_with_the_app_factory(monkeypatch, capsys):
+    import uvicorn
+
+    calls = []
+    monkeypatch.setattr(uvicorn, "run", lambda app, **kw: calls.append((app, kw)))
+    assert main(["serve", "--port", "8123"]) == 0
+    ((app, kw),) = calls
+    assert kw == {"factory": True, "host": "127.0.0.1", "port": 8123, "log_level": "warning"}
+    module, name = app.split(":")
+    assert getattr(__import__(module, fromlist=[name]), name) is create_app
+    assert "http://127.0.0.1:8123/" in capsys.readouterr().out
+
+
+def test_serve_command_errors(monkeypatch, capsys):
+    import importlib.util
+
+    with pytest.raises(SystemExit):
+        main(["serve", "--port", "0"])
+    assert "between 1 and 65535" in capsys.readouterr().err
+    real = importlib.util.find_spec
+    monkeypatch.setattr(importlib.util, "find_spec", lambda n, *a: None if n == "fastapi" else real(n, *a))
+    assert main(["serve"]) == 2
+    assert "pip install 'nl2hltl2plan[web]'" in capsys.readouterr().err

@@ -15,7 +15,9 @@ import pytest
 
 pytest.importorskip("fastapi", reason="the web app needs the [web] extra (fastapi); it is not installed")
 uvicorn = pytest.importorskip("uvicorn", reason="the web app needs uvicorn; it is not installed")
-sync_api = pytest.importorskip("playwright.sync_api", reason="playwright is not installed (pip install playwright)")
+sync_api = pytest.importorskip(
+    "playwright.sync_api", reason="playwright is not installed (pip install playwright)"
+)
 CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
 if CHROMIUM is None:
     pytest.skip("Chromium is not installed (apt-get install chromium)", allow_module_level=True)
@@ -46,11 +48,15 @@ def test_type_an_instruction_and_see_the_pictures(server):
         try:
             page = browser.new_page()
             page.goto(server)
-            page.wait_for_selector("#world option[value='demo'], #world option:text('demo')", state="attached")
+            page.wait_for_selector(
+                "#world option[value='demo'], #world option:text('demo')", state="attached"
+            )
             page.fill("#instruction", "Put the apple in the fridge. Then put the mug in the cabinet.")
             page.fill("#robots", "2")
             page.click("#go")
-            loaded = "(id) => { const i = document.getElementById(id); return i.complete && i.naturalWidth > 0; }"
+            loaded = (
+                "(id) => { const i = document.getElementById(id); return i.complete && i.naturalWidth > 0; }"
+            )
             page.wait_for_function(loaded, arg="gantt", timeout=30000)
             page.wait_for_function(loaded, arg="htt", timeout=30000)
             assert "travel cost" in page.inner_text("#summary")

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import importlib.util
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 
@@ -36,15 +37,15 @@ def _port(text: str) -> int:
     return port
 
 
-def run(args: argparse.Namespace) -> int:
-    try:
-        import uvicorn
+APP_FACTORY = "nl2hltl2plan.web.app:create_app"  # by name: cli and web are independent layers
 
-        from nl2hltl2plan.web.app import create_app
-    except ModuleNotFoundError as exc:
-        raise MissingExtraError(
-            f"the web app needs {exc.name}: pip install 'nl2hltl2plan[web]' (fastapi, uvicorn)"
-        ) from None
+
+def run(args: argparse.Namespace) -> int:
+    missing = [m for m in ("fastapi", "uvicorn") if importlib.util.find_spec(m) is None]
+    if missing:
+        raise MissingExtraError(f"the web app needs {' and '.join(missing)}: pip install 'nl2hltl2plan[web]'")
+    import uvicorn
+
     print(f"serving on http://{args.host}:{args.port}/  (Ctrl-C to stop)")
-    uvicorn.run(create_app(), host=args.host, port=args.port, log_level="warning")
+    uvicorn.run(APP_FACTORY, factory=True, host=args.host, port=args.port, log_level="warning")
     return 0
