@@ -172,3 +172,34 @@ def test_bench_plots_integer_axes_plurals_and_bars_inside_data(tmp_path):
     plot_cost_time(summary, tmp_path / "c.png", rows=rows)
     plot_cost_time(pipeline_summary([_row(3, 2, 0, 1.0, 9, success=False)]), tmp_path / "none.png")
     assert all(_image(tmp_path / n)[0] > 300 for n in ("s.png", "c.png", "none.png"))
+
+
+def test_gantt_from_benchmark_events_and_report_example(tmp_path):
+    from nl2hltl2plan.evaluation.report_md import plot_gantt_example
+    from nl2hltl2plan.worlds.gantt import draw_gantt_events, segments_from_events
+
+    events = [
+        {"t": 4, "robot": 0, "atom": "pickup(Apple)", "task": "task1.1", "travel_m": 0.5},
+        {"t": 5, "robot": 0, "atom": "put(Apple,Fridge)", "task": "task1.1", "travel_m": 0.0},
+        {"t": 3, "robot": 1, "atom": "open(Fridge)", "task": "task1.2", "travel_m": 0.75},
+    ]
+    segs = segments_from_events(events, robots=3)
+    assert [(s.robot, s.kind, s.start, s.end) for s in segs] == [
+        (0, "move", 1, 2),  # walks right after its previous action (here: the start) ...
+        (0, "wait", 3, 3),  # ... then waits for the action's step
+        (0, "action", 4, 4),
+        (0, "action", 5, 5),
+        (1, "move", 1, 2),  # 0.75 m is 3 cells, but only 2 steps fit before t=3
+        (1, "action", 3, 3),
+    ]
+    draw_gantt_events(events, 3, tmp_path / "ev.png", before=[("task1.2", "task1.1")])
+    rows = [
+        {**_row(2, 3, 0, 1.25, 5), "events": events},
+        {**_row(2, 3, 1, 1.0, 5), "events": events[:1]},
+        {**_row(2, 3, 2, 1.0, 5, success=False), "events": events * 2},
+    ]
+    assert plot_gantt_example(rows, tmp_path / "example.png") is rows[0]  # most robots at work
+    assert (
+        plot_gantt_example(rows[2:], tmp_path / "none.png") is None and not (tmp_path / "none.png").exists()
+    )
+    assert _image(tmp_path / "ev.png")[0] > 300 and _image(tmp_path / "example.png")[0] > 300

@@ -131,16 +131,19 @@ def plot_success(summaries: dict[str, dict[str, Any]], out: Path) -> None:
     for ax, (name, summary) in zip(axes[0], summaries.items(), strict=True):
         robots = sorted({r["robots"] for r in summary["rows"]})
         all_x: list[int] = []
-        for k, color in zip(robots, ["tab:blue", "tab:orange", "tab:green", "tab:red"], strict=False):
+        for j, (k, color) in enumerate(
+            zip(robots, ["tab:blue", "tab:orange", "tab:green", "tab:red"], strict=False)
+        ):
             rows = sorted((r for r in summary["rows"] if r["robots"] == k), key=lambda r: r["n_base"])
             xs = [r["n_base"] for r in rows]
             all_x += xs
+            shift = 0.06 * (j - (len(robots) - 1) / 2)  # equal rates of two teams stay visible
             ys = [100 * (r["overall_rate"] or 0) for r in rows]
-            ax.plot(xs, ys, "o-", color=color, label=f"ours, {_team(k)}")
+            ax.plot([x + shift for x in xs], ys, "o-", color=color, label=f"ours, {_team(k)}")
             px = [n for n in xs if (n, k) in paper]
             if px:
-                ax.plot(px, [paper[(n, k)]["ours"]["success"] for n in px], "s--", color=color, alpha=0.5,
-                        label=f"paper, {_team(k)}")  # fmt: skip
+                ax.plot([x + shift for x in px], [paper[(n, k)]["ours"]["success"] for n in px], "s--",
+                        color=color, alpha=0.5, label=f"paper, {_team(k)}")  # fmt: skip
         _integer_x(ax, all_x)
         ax.set_xlabel("base tasks per instruction")
         ax.set_ylabel("overall success (%)")
@@ -216,6 +219,23 @@ def plot_cost_time(summary: dict[str, Any], out: Path, rows: Sequence[Row] | Non
     fig.tight_layout()
     fig.savefig(out, dpi=110)
     plt.close(fig)
+
+
+def plot_gantt_example(rows: Sequence[Row], out: Path) -> Row | None:
+    """The Gantt chart of one successful scenario (the most robots at work, then the most actions), drawn
+    from its row's events; returns that row, or None (nothing drawn) when no scenario succeeded."""
+    from nl2hltl2plan.worlds.gantt import draw_gantt_events
+
+    ok = [r for r in rows if r.get("success") and r.get("events")]
+    if not ok:
+        return None
+    row = max(ok, key=lambda r: (len({e["robot"] for e in r["events"]}), len(r["events"]), r.get("key", "")))
+    title = (
+        f"example: {row.get('instance', row.get('key'))}, {_team(row['robots'])}, "
+        f"travel {row.get('travel_m') or 0:.2f} m, completion {row.get('steps')} steps"
+    )
+    draw_gantt_events(row["events"], row["robots"], out, title=title)
+    return row
 
 
 def write_report(

@@ -23,6 +23,7 @@ from matplotlib.patches import Patch  # noqa: E402
 from matplotlib.ticker import MaxNLocator  # noqa: E402
 
 from nl2hltl2plan.errors import WorldError  # noqa: E402
+from nl2hltl2plan.worlds.model import CELL_M  # noqa: E402
 from nl2hltl2plan.worlds.plan import Plan, RobotPlan  # noqa: E402
 from nl2hltl2plan.worlds.simulator import Execution  # noqa: E402
 
@@ -128,19 +129,69 @@ def draw_gantt(
     plan_obj, failed_rt = _as_plan(plan)
     failed = frozenset((r, t) for t, r in failed_rt)
     robots = sorted(plan_obj.robots, key=lambda r: r.robot)
-    horizon = max(plan_obj.horizon, 1)
-    lanes = {rp.robot: i for i, rp in enumerate(robots)}
     segs = [s for rp in robots for s in segments(rp, failed)]
+    return _chart(
+        segs,
+        [rp.robot for rp in robots],
+        plan_obj.horizon,
+        list(before),
+        title or _default_title(plan, plan_obj),
+        path,
+    )
+
+
+def segments_from_events(events: Sequence[dict], robots: int) -> list[Segment]:
+    """Bars from a benchmark row's `events` (`t`, `robot`, `atom`, `task`, `travel_m` walked before
+    the action): as the planner lays plans out, a robot walks right after its previous action, then
+    waits for the action's step."""
+    out: list[Segment] = []
+    for robot in range(robots):
+        last = 0
+        for e in sorted((e for e in events if e["robot"] == robot), key=lambda e: e["t"]):
+            moves = min(round(float(e.get("travel_m") or 0.0) / CELL_M), e["t"] - last - 1)
+            if moves > 0:
+                out.append(Segment(robot, last + 1, last + moves, "move", f"move x{moves}"))
+            if e["t"] - last - 1 > moves:
+                n = e["t"] - last - 1 - moves
+                out.append(Segment(robot, last + moves + 1, e["t"] - 1, "wait", f"wait x{n}"))
+            out.append(Segment(robot, e["t"], e["t"], "action", e["atom"], e.get("task")))
+            last = e["t"]
+    return out
+
+
+def draw_gantt_events(
+    events: Sequence[dict],
+    robots: int,
+    path: str | Path | None = None,
+    before: Iterable[tuple[str, str]] = (),
+    title: str | None = None,
+):
+    """The Gantt chart of a benchmark row (its `events`, no plan needed); see `draw_gantt`."""
+    segs = segments_from_events(events, robots)
+    horizon = max((s.end for s in segs), default=0)
+    team = f"{robots} robot" + ("" if robots == 1 else "s")
+    return _chart(segs, list(range(robots)), horizon, list(before), title or f"{team}, {horizon} steps", path)
+
+
+def _chart(
+    segs: list[Segment],
+    robot_ids: list[int],
+    horizon: int,
+    before: list[tuple[str, str]],
+    title: str,
+    path: str | Path | None,
+):
+    horizon = max(horizon, 1)
+    lanes = {r: i for i, r in enumerate(robot_ids)}
     tasks = sorted({s.task for s in segs if s.task})
     colour = {t: TASK_COLOURS[k % len(TASK_COLOURS)] for k, t in enumerate(tasks)}
     width = min(40.0, max(8.0, 0.32 * horizon + 3))
-    fig, ax = plt.subplots(figsize=(width, 0.9 + 2.1 * max(1, len(robots))))
+    fig, ax = plt.subplots(figsize=(width, 0.9 + 2.1 * max(1, len(robot_ids))))
     label_actions = width / horizon >= 0.25  # room for a vertical label above a one-step bar
     for s in segs:
         _draw_segment(ax, s, lanes[s.robot], colour, label_actions)
-    for rp in robots:
-        if not rp.steps:
-            ax.text(1, lanes[rp.robot] + BAR_Y, "idle (no steps)", va="center", fontsize=8, color="0.4")
+    for r in set(robot_ids) - {s.robot for s in segs}:
+        ax.text(1, lanes[r] + BAR_Y, "idle (no steps)", va="center", fontsize=8, color="0.4")
     for last, first, kept in _ordering_arrows(segs, before):
         y0, y1 = lanes[last.robot] + BAR_Y + BAR_H / 2, lanes[first.robot] + BAR_Y + BAR_H / 2
         ax.annotate(
@@ -151,16 +202,16 @@ def draw_gantt(
                         "connectionstyle": "arc3,rad=0.35", "shrinkA": 2, "shrinkB": 2},
             zorder=6,
         )  # fmt: skip
-    ax.set_yticks([k + BAR_Y for k in range(len(robots))], [f"robot {rp.robot}" for rp in robots])
-    ax.set_ylim(len(robots) - 0.5 + 0.08, -0.5)  # robot 0 on top; room below for order arrows
-    for k in range(1, len(robots)):
+    ax.set_yticks([k + BAR_Y for k in range(len(robot_ids))], [f"robot {r}" for r in robot_ids])
+    ax.set_ylim(len(robot_ids) - 0.5 + 0.08, -0.5)  # robot 0 on top; room below for order arrows
+    for k in range(1, len(robot_ids)):
         ax.axhline(k - 0.5, color="0.8", lw=0.8)
     ax.set_xlim(0.3, horizon + 0.7)
     ax.xaxis.set_major_locator(MaxNLocator(integer=True))
     ax.set_xlabel("time step")
     ax.grid(axis="x", alpha=0.3)
-    ax.set_title(title or _default_title(plan, plan_obj), fontsize=10)
-    ax.legend(handles=_legend_handles(tasks, colour, bool(list(before))), loc="upper left",
+    ax.set_title(title, fontsize=10)
+    ax.legend(handles=_legend_handles(tasks, colour, bool(before)), loc="upper left",
               bbox_to_anchor=(1.01, 1), fontsize=8, frameon=False)  # fmt: skip
     if path is not None:
         Path(path).parent.mkdir(parents=True, exist_ok=True)
