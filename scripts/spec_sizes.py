@@ -17,6 +17,7 @@ from pathlib import Path
 
 from nl2hltl2plan.language.htt import HTT
 from nl2hltl2plan.language.spec_builder import build_spec
+from nl2hltl2plan.logic.flatten import size_report
 from nl2hltl2plan.planning.oracle import oracle_spec
 from nl2hltl2plan.worlds.alfred import build_benchmark_world
 from nl2hltl2plan.worlds.benchmark import load_gt
@@ -26,7 +27,7 @@ ROOT = Path(__file__).resolve().parents[1]
 
 def row(name: str, spec, timeout: float) -> dict:
     t0 = time.perf_counter()
-    rep = spec.size_report(flat_timeout_s=timeout)
+    rep = size_report(spec, flat_timeout_s=timeout)
     return {
         "name": name,
         "formulas": len(rep.per_formula),

@@ -4,8 +4,9 @@ Reading is bounded and never raises anything but `DataError` with a one-line mes
 file: a size limit (`MAX_BYTES`, stated in the error) so `/dev/zero` or a huge file cannot exhaust
 memory, UTF-8 decoding errors, malformed JSON, and nesting deeper than `MAX_DEPTH` (Python's JSON
 parser recurses, so a 10,000-deep list would otherwise end in RecursionError). Writing creates the
-folder and turns `OSError` into `DataError` naming the path. JSON-lines files are appended to
-line by line with a flush, and a reader reports torn or invalid lines instead of guessing.
+folder and turns `OSError` into `DataError` naming the path; output paths are checked before any
+work (`ensure_writable_dir`, `check_output_file`). Benchmark results files (JSON lines appended as
+scenarios finish) are read and repaired by `evaluation.runner`.
 
 >>> import tempfile, pathlib
 >>> p = pathlib.Path(tempfile.mkdtemp()) / "x.json"
@@ -17,10 +18,7 @@ line by line with a flush, and a reader reports torn or invalid lines instead of
 from __future__ import annotations
 
 import json
-import os
 import stat
-from collections.abc import Iterable, Iterator
-from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -102,33 +100,7 @@ def read_json(path: str | Path, what: str = "JSON file", max_bytes: int = MAX_BY
     return loads(read_text(path, what, max_bytes), f"{what} {path}")
 
 
-@dataclass
-class JsonLines:
-    """The records of a JSON-lines file and the lines that were not records (torn or invalid)."""
-
-    records: list[Any] = field(default_factory=list)
-    bad_lines: list[int] = field(default_factory=list)  # 1-based line numbers
-    torn_tail: bool = False  # the last line has no newline and does not parse: an interrupted write
-
-
-def read_jsonl(path: str | Path, what: str = "JSON-lines file", max_bytes: int = MAX_BYTES) -> JsonLines:
-    """Records of a JSON-lines file; blank lines are skipped, bad lines reported (not raised)."""
-    text = read_text(path, what, max_bytes)
-    out = JsonLines()
-    lines = text.split("\n")
-    for n, line in enumerate(lines, start=1):
-        if not line.strip():
-            continue
-        try:
-            out.records.append(loads(line, f"{what} {path}:{n}"))
-        except DataError:
-            out.bad_lines.append(n)
-            if n == len(lines):  # no newline after it: the writer was interrupted mid-line
-                out.torn_tail = True
-    return out
-
-
-def read_jsonl_strict(path: str | Path, what: str = "JSON-lines file") -> list[Any]:
+def read_jsonl(path: str | Path, what: str = "JSON-lines file") -> list[Any]:
     """Records of a JSON-lines file; the first bad line is an error naming it."""
     text = read_text(path, what)
     out = []
@@ -160,33 +132,6 @@ def write_json(path: str | Path, obj: Any, what: str = "JSON file", indent: int 
     write_text(path, json.dumps(obj, indent=indent, default=str) + "\n", what)
 
 
-def append_jsonl(path: str | Path, records: Iterable[Any], what: str = "JSON-lines file") -> None:
-    """Append records, one line each, flushed after each line."""
-    p = Path(path)
-    _prepare(p, what)
-    try:
-        with p.open("a", encoding="utf-8") as fh:
-            for rec in records:
-                fh.write(json.dumps(rec, default=str) + "\n")
-                fh.flush()
-    except OSError as exc:
-        raise DataError(f"cannot write {what} {p}: {exc.strerror or exc}") from None
-
-
-def repair_jsonl(path: str | Path) -> JsonLines:
-    """Drop torn or invalid lines from a JSON-lines file (rewritten atomically) so that later appends
-    start on a fresh line; returns what was read, with the bad line numbers for the caller to report."""
-    p = Path(path)
-    if not p.exists():
-        return JsonLines()
-    got = read_jsonl(p)
-    if got.bad_lines or (p.stat().st_size and not read_text(p).endswith("\n")):
-        tmp = p.with_name(p.name + ".tmp")
-        write_text(tmp, "".join(json.dumps(r, default=str) + "\n" for r in got.records))
-        os.replace(tmp, p)
-    return got
-
-
 def ensure_writable_dir(path: str | Path, what: str = "output folder") -> Path:
     """Create `path` as a folder (parents too) and check that a file can be written in it."""
     p = Path(path)
@@ -202,8 +147,18 @@ def ensure_writable_dir(path: str | Path, what: str = "output folder") -> Path:
     return p
 
 
-def iter_nonblank(text: str) -> Iterator[tuple[int, str]]:
-    """(1-based line number, line) for the non-blank lines of a text."""
-    for n, line in enumerate(text.splitlines(), start=1):
-        if line.strip():
-            yield n, line
+PICTURE_FORMATS = ("png", "svg", "pdf", "jpg", "jpeg", "webp", "tif", "tiff", "eps")
+
+
+def check_output_file(path: str | Path, formats: tuple[str, ...] = (), what: str = "output file") -> Path:
+    """Refuse, before any work, an output path whose format is unknown or whose folder cannot be made
+    or written to (`formats`: allowed suffixes without the dot; empty: any)."""
+    p = Path(path)
+    suffix = p.suffix.lower().lstrip(".")
+    if formats and suffix not in formats:
+        raise DataError(f"cannot write {what} {p}: unknown format {suffix or '(none)'!r}; use one of "
+                        f"{', '.join('.' + f for f in formats)}")
+    if p.is_dir():
+        raise DataError(f"cannot write {what} {p}: it is a folder")
+    ensure_writable_dir(p.parent if str(p.parent) else ".", f"folder of the {what}")
+    return p

@@ -167,13 +167,15 @@ def test_cli_plan_with_stub_llm(stub, capsys, tmp_path, monkeypatch):
     assert rc == 0
     payload = json.loads(capsys.readouterr().out)
     assert payload["backend"] == "openai" and payload["llm_calls"]["sent"] == 6
-    # batch mode: everything is cached now, so nothing is pending
+    # batch mode: everything is cached now (answers are keyed by server and model), so nothing is pending
     rc = main(
         [
             "plan",
             recorded["instruction"],
             "--llm",
             "openai",
+            "--base-url",
+            stub.base_url,
             "--json",
             "--batch-out",
             str(tmp_path / "pending.jsonl"),

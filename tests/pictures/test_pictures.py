@@ -152,10 +152,13 @@ def test_htt_layout_has_no_overlap_or_truncation(tmp_path):
 
 
 def _row(n_base, robots, draw, travel, steps, success=True):
-    return {"instance": f"i{n_base}-{draw}", "n_base": n_base, "robots": robots, "draw": draw,
-            "key": f"i{n_base}|r{robots}|d{draw}", "success": success, "status": "solved",
-            "feasible": True, "conversion_ok": True, "planning_ok": True, "travel_m": travel,
-            "steps": steps, "plan_time_s": 0.1}  # fmt: skip
+    from nl2hltl2plan.evaluation.rows import ScenarioRow
+
+    fields = {"instance": f"i{n_base}-{draw}", "n_base": n_base, "robots": robots, "draw": draw,
+              "key": f"i{n_base}|r{robots}|d{draw}", "success": success, "status": "solved",
+              "feasible": True, "conversion_ok": True, "planning_ok": True, "travel_m": travel,
+              "steps": steps, "plan_time_s": 0.1}  # fmt: skip
+    return ScenarioRow.model_validate(fields)
 
 
 def test_bench_plots_integer_axes_plurals_and_bars_inside_data(tmp_path):
@@ -176,6 +179,7 @@ def test_bench_plots_integer_axes_plurals_and_bars_inside_data(tmp_path):
 
 def test_gantt_from_benchmark_events_and_report_example(tmp_path):
     from nl2hltl2plan.evaluation.report_md import plot_gantt_example
+    from nl2hltl2plan.evaluation.rows import PlanEvent
     from nl2hltl2plan.worlds.gantt import draw_gantt_events, segments_from_events
 
     events = [
@@ -194,9 +198,11 @@ def test_gantt_from_benchmark_events_and_report_example(tmp_path):
     ]
     draw_gantt_events(events, 3, tmp_path / "ev.png", before=[("task1.2", "task1.1")])
     rows = [
-        {**_row(2, 3, 0, 1.25, 5), "events": events},
-        {**_row(2, 3, 1, 1.0, 5), "events": events[:1]},
-        {**_row(2, 3, 2, 1.0, 5, success=False), "events": events * 2},
+        _row(2, 3, 0, 1.25, 5).model_copy(update={"events": [PlanEvent(**e) for e in events]}),
+        _row(2, 3, 1, 1.0, 5).model_copy(update={"events": [PlanEvent(**events[0])]}),
+        _row(2, 3, 2, 1.0, 5, success=False).model_copy(
+            update={"events": [PlanEvent(**e) for e in events * 2]}
+        ),
     ]
     assert plot_gantt_example(rows, tmp_path / "example.png") is rows[0]  # most robots at work
     assert (

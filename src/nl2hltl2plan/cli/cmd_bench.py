@@ -30,8 +30,8 @@ from nl2hltl2plan.cli.options import (
     positive_int,
 )
 from nl2hltl2plan.errors import PlanningError
-from nl2hltl2plan.evaluation.runner import Row, Scenario
-from nl2hltl2plan.io import ensure_writable_dir
+from nl2hltl2plan.evaluation.runner import Row, Scenario, is_errored
+from nl2hltl2plan.io import ensure_writable_dir, write_json
 from nl2hltl2plan.pipeline import PipelineOptions
 from nl2hltl2plan.worlds.benchmark import load_gt
 from nl2hltl2plan.worlds.tasks import GTInstance
@@ -102,6 +102,7 @@ def run(args: argparse.Namespace) -> int:
         table1_markdown,
         write_report,
     )
+    from nl2hltl2plan.evaluation.rows import rows_of
     from nl2hltl2plan.evaluation.runner import run_scenarios
 
     out: Path = ensure_writable_dir(args.out)
@@ -140,7 +141,7 @@ def run(args: argparse.Namespace) -> int:
         f"ALFRED benchmark, {source}, objective {args.objective}, mode {args.mode} "
         f"({len(rows)} scenarios, {workers} workers)"
     )
-    summary = write_report(rows, out, title, command, machine_description())
+    summary = write_report(rows_of(rows), out, title, command, machine_description())
     summary["command"] = command
     summary["settings"] = {
         "source": "oracle" if args.oracle else args.llm,
@@ -152,7 +153,7 @@ def run(args: argparse.Namespace) -> int:
         "draw": args.draw,
         "workers": workers,
     }
-    (out / "summary.json").write_text(json.dumps(summary, indent=2))
+    write_json(out / "summary.json", summary, "summary file", indent=2)
     if args.json:
         print(json.dumps(summary, indent=2))
     elif args.oracle:
@@ -166,7 +167,7 @@ def run(args: argparse.Namespace) -> int:
         )
     if not args.json:
         print(f"wrote {out / 'report.md'}, {out / 'summary.json'} and {out / 'scenarios.jsonl'}")
-    errored = [r for r in rows if r.get("status") == "error"]
+    errored = [r for r in rows if is_errored(r)]
     if errored:
         print(
             f"error: {len(errored)} of {len(rows)} scenarios errored (first: {errored[0].get('key')}: "

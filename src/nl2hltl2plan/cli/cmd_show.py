@@ -5,11 +5,10 @@ from __future__ import annotations
 import argparse
 import json
 import textwrap
-from pathlib import Path
 
 import networkx as nx
 
-from nl2hltl2plan.errors import DataError
+from nl2hltl2plan.io import PICTURE_FORMATS, check_output_file, read_json
 from nl2hltl2plan.language.htt import HTT
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 
@@ -28,10 +27,8 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    try:
-        data = json.loads(Path(args.file).read_text())
-    except (OSError, json.JSONDecodeError) as exc:
-        raise DataError(f"cannot read {args.file}: {getattr(exc, 'strerror', None) or exc}") from None
+    check_output_file(args.out, PICTURE_FORMATS, "picture")
+    data = read_json(args.file, "HTT or specification file")
     if isinstance(data, dict) and "nodes" in data:
         htt = HTT.from_json(data)
         g = htt.graph()

@@ -10,6 +10,7 @@ from nl2hltl2plan.io import ensure_writable_dir
 from nl2hltl2plan.language.htt import HTT
 from nl2hltl2plan.language.spec_builder import build_spec
 from nl2hltl2plan.logic import spot_backend as sb
+from nl2hltl2plan.logic.flatten import size_report
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec, format_spec
 
 
@@ -35,7 +36,7 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 def run(args: argparse.Namespace) -> int:
     spec = build_spec(HTT.load(args.htt))
-    sizes = spec.size_report() if args.sizes else None
+    sizes = size_report(spec) if args.sizes else None
     written = write_hoa(spec, args.hoa) if args.hoa else None
     if args.json:
         out: dict = {"levels": spec.to_json_obj()}

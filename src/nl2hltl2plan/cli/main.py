@@ -12,6 +12,7 @@ import argparse
 import importlib
 import os
 import sys
+from typing import NoReturn
 
 from pydantic import ValidationError
 
@@ -22,8 +23,15 @@ from nl2hltl2plan.errors import Nl2Hltl2PlanError
 COMMAND_MODULES = ["spec", "check", "show", "world", "plan", "bench", "serve"]
 
 
+class _Parser(argparse.ArgumentParser):
+    """Usage errors as one line on stderr (exit 2), pointing at --help instead of dumping the usage."""
+
+    def error(self, message: str) -> NoReturn:
+        self.exit(2, f"error: {self.prog}: {message} (see {self.prog} --help)\n")
+
+
 def build_parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(
+    parser = _Parser(
         prog="nl2hltl2plan",
         description="Natural language -> Hierarchical Task Tree -> hierarchical sc-LTL -> multi-robot plans.",
     )

@@ -3,18 +3,21 @@
 Every job ends with `pipeline.planning_stage`, whatever produced the spec (the oracle converter here,
 the language stage with --llm): plan, execute (inside `planning.plan`, which refuses to return an
 unverified plan) and judge the execution with the ground-truth goal checker (goals and strict
-`before` order); `planned_row` turns that into the scenario's row.
+`before` order); `ScenarioRow.from_planned` turns that into the scenario's row.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
+from typing import Any
 
+from nl2hltl2plan.evaluation.rows import ScenarioRow
 from nl2hltl2plan.evaluation.runner import Row, Scenario
-from nl2hltl2plan.pipeline import PipelineOptions, Planned, planning_stage
+from nl2hltl2plan.pipeline import PipelineOptions, planning_stage
 from nl2hltl2plan.planning import oracle_spec
 from nl2hltl2plan.worlds.alfred import benchmark_issues, build_benchmark_world
 from nl2hltl2plan.worlds.benchmark import gt_instance, load_gt
+from nl2hltl2plan.worlds.model import Cell, World
 from nl2hltl2plan.worlds.starts import start_cells
 from nl2hltl2plan.worlds.tasks import GTInstance
 
@@ -35,16 +38,16 @@ def alfred_scenarios(
     return [Scenario(g.id, g.n_base, r, draw) for g in insts for r in robots]
 
 
-def planned_row(planned: Planned) -> Row:
-    """The planner's result and the goal checker's verdict as one JSON-ready row."""
-    result = planned.result
-    row: Row = result.to_dict(with_plan=False)
-    row["events"] = result.events
-    row["success"] = planned.success
-    if planned.check is not None:
-        row["check_reasons"] = planned.check.reasons
-        row["goal_steps"] = planned.check.goal_steps
-    return row
+def instance_fields(world: World, gt: GTInstance, starts: list[Cell]) -> dict[str, Any]:
+    """What every row says about its instance: can this world do it, how the annotators judged it."""
+    issues = benchmark_issues(world, gt)
+    return {
+        "feasible": not issues,
+        "issues": issues,
+        "gt_feasible": gt.feasible,
+        "ambiguous": gt.ambiguous,
+        "starts": [list(c) for c in starts],
+    }
 
 
 def oracle_job(
@@ -55,20 +58,17 @@ def oracle_job(
     def job(scenario: Scenario) -> Row:
         gt = gts[scenario.instance] if gts is not None else gt_instance(scenario.instance)
         world = build_benchmark_world(gt)
-        issues = benchmark_issues(world, gt)
-        spec = oracle_spec(gt, world).spec
         starts = start_cells(world, scenario.robots, gt=gt, draw=scenario.draw)
-        row = planned_row(planning_stage(world, spec, starts, options, gt))
-        row["feasible"] = not issues
-        row["issues"] = issues
-        row["gt_feasible"] = gt.feasible
+        spec = oracle_spec(gt, world).spec
         # a perfect translation: conversion succeeds by construction; the rest is the planner's
-        row["conversion_ok"] = True
-        row["planning_ok"] = row.get("status") == "solved"
-        row["stage"] = None if row["success"] else ("execution" if row["planning_ok"] else "planning")
-        row["ambiguous"] = gt.ambiguous
-        row["starts"] = [list(c) for c in starts]
-        return row
+        row = ScenarioRow.from_planned(
+            planning_stage(world, spec, starts, options, gt),
+            conversion_ok=True,
+            **instance_fields(world, gt, starts),
+        )
+        row.planning_ok = row.status == "solved"
+        row.stage = None if row.success else ("execution" if row.planning_ok else "planning")
+        return row.to_json()
 
     return job
 

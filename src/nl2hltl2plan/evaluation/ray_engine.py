@@ -3,11 +3,13 @@ semantics of `runner.run_scenarios`, but runs each scenario as a Ray task, on th
 cluster (`address`), so an evaluation can outgrow one machine.
 
 - Rows: `{**scenario fields, "key": ..., **job row}` appended to `out` (JSON lines) as they finish,
-  exactly as the local engine writes them; with `resume`, scenarios already in `out` are skipped;
-  without, `out` is started afresh.
-- A job that raises gives an "error" row with the message; a task that runs past `hard_timeout_s`
-  (counted from its submission, at most `workers` tasks in flight) is cancelled with force (its worker
-  process is killed) and gives a "timeout" row; a worker that dies gives an "error" row.
+  exactly as the local engine writes them; with `resume`, scenarios already in `out` are skipped
+  (the file is repaired first by `runner.load_rows`: torn lines are reported and dropped); without,
+  `out` is started afresh. Worker count and time limit are checked as the local engine checks them.
+- A job that raises gives an "error" row with the same one-line reason (`deadline.describe_exception`);
+  a task that runs past `hard_timeout_s` (counted from its submission, at most `workers` tasks in
+  flight) is cancelled with force (its worker process is killed) and gives the same "timeout" row
+  marked `killed`; a worker that dies gives an "error" row.
 - The job is any picklable callable of a scenario (Ray pickles closures with cloudpickle). On a
   cluster every node needs this package and the data folder (`NL2HLTL2PLAN_DATA`).
 
@@ -17,16 +19,23 @@ cluster (`address`), so an evaluation can outgrow one machine.
 from __future__ import annotations
 
 import json
-import os
 import time
-import traceback
 from collections.abc import Callable, Iterable
 from dataclasses import asdict
 from pathlib import Path
 from typing import Any
 
+from nl2hltl2plan.deadline import describe_exception
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
-from nl2hltl2plan.evaluation.runner import Row, Scenario, load_rows, run_scenarios
+from nl2hltl2plan.evaluation.runner import (
+    Notes,
+    Row,
+    Scenario,
+    _check_limits,
+    _stderr_note,
+    load_rows,
+    run_scenarios,
+)
 
 ENGINES = ("local", "ray")
 
@@ -38,11 +47,12 @@ class EngineError(Nl2Hltl2PlanError):
 def _run_job(job: Callable[[Scenario], Row], scenario: Scenario) -> Row:
     """The job's row, or an "error" row with the message and where it happened (as the local engine)."""
     try:
-        return job(scenario)
+        row = job(scenario)
     except Exception as exc:  # every failure of a job is data for its row
-        tb = traceback.extract_tb(exc.__traceback__)
-        where = f" at {os.path.basename(tb[-1].filename)}:{tb[-1].lineno}" if tb else ""
-        return {"status": "error", "reason": f"{type(exc).__name__}: {exc}{where}"}
+        return {"status": "error", "reason": describe_exception(exc)}
+    if not isinstance(row, dict):
+        return {"status": "error", "reason": f"the job returned {type(row).__name__}, not a row"}
+    return row
 
 
 def _ray() -> Any:
@@ -75,17 +85,18 @@ def run_scenarios_ray(
     hard_timeout_s: float = 360.0,
     resume: bool = True,
     progress: Callable[[Row, int, int], None] | None = None,
+    notes: Notes | None = _stderr_note,
     address: str | None = None,
 ) -> list[Row]:
     """Run every scenario as a Ray task (at most `workers` at a time) and return the rows in order."""
     ray = _ray()
     scenarios = list(scenarios)
+    workers = _check_limits(workers, hard_timeout_s)
     out.parent.mkdir(parents=True, exist_ok=True)
-    done = load_rows(out) if resume else {}
     if not resume and out.exists():
         out.unlink()
+    done = load_rows(out, notes)
     todo = [s for s in scenarios if s.key not in done]
-    workers = max(1, workers or os.cpu_count() or 1)
     started_here = _connect(ray, address, workers) if todo else False
     finished = len(scenarios) - len(todo)
     try:

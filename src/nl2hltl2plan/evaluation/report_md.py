@@ -21,19 +21,19 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 from nl2hltl2plan.evaluation.language_bench import STAGES  # noqa: E402
 from nl2hltl2plan.evaluation.report import paper_table1, percentile, summarize  # noqa: E402
-from nl2hltl2plan.evaluation.runner import Row  # noqa: E402
+from nl2hltl2plan.evaluation.rows import ScenarioRow  # noqa: E402
 
 
 def _rate(num: int, den: int) -> float | None:
     return round(num / den, 4) if den else None
 
 
-def pipeline_summary(rows: Sequence[Row]) -> dict[str, Any]:
+def pipeline_summary(rows: Sequence[ScenarioRow]) -> dict[str, Any]:
     """`report.summarize` plus conversion and planning rates per row and overall."""
     summary = summarize(rows)
-    groups: dict[tuple[int, int], list[Row]] = {}
+    groups: dict[tuple[int, int], list[ScenarioRow]] = {}
     for r in rows:
-        groups.setdefault((r["n_base"], r["robots"]), []).append(r)
+        groups.setdefault((r.n_base, r.robots), []).append(r)
     for row in summary["rows"]:
         grp = groups[(row["n_base"], row["robots"])]
         row.update(_rates(grp))
@@ -42,21 +42,21 @@ def pipeline_summary(rows: Sequence[Row]) -> dict[str, Any]:
     return summary
 
 
-def _rates(rows: Sequence[Row]) -> dict[str, Any]:
-    converted = [r for r in rows if r.get("conversion_ok")]
+def _rates(rows: Sequence[ScenarioRow]) -> dict[str, Any]:
+    converted = [r for r in rows if r.conversion_ok]
     return {
         "conversion_rate": _rate(len(converted), len(rows)),
-        "planning_rate": _rate(sum(1 for r in converted if r.get("planning_ok")), len(converted)),
-        "overall_rate": _rate(sum(1 for r in rows if r.get("success")), len(rows)),
+        "planning_rate": _rate(sum(1 for r in converted if r.planning_ok), len(converted)),
+        "overall_rate": _rate(sum(1 for r in rows if r.success), len(rows)),
     }
 
 
-def failure_breakdown(rows: Sequence[Row]) -> dict[str, Any]:
+def failure_breakdown(rows: Sequence[ScenarioRow]) -> dict[str, Any]:
     """Failed scenarios by the first stage that went wrong (Table IV plus planning and execution)."""
     counts = {s: 0 for s in STAGES}
     for r in rows:
-        if not r.get("success") and r.get("stage"):
-            counts[r["stage"]] = counts.get(r["stage"], 0) + 1
+        if not r.success and r.stage:
+            counts[r.stage] = counts.get(r.stage, 0) + 1
     return {
         "scenarios": len(rows),
         "counts": counts,
@@ -172,7 +172,7 @@ def _spread(
 
 
 def _points(
-    summary: dict[str, Any], rows: Sequence[Row] | None, team: int, metric: str
+    summary: dict[str, Any], rows: Sequence[ScenarioRow] | None, team: int, metric: str
 ) -> list[tuple[int, float, float, float]]:
     """(base tasks, centre, below, above) per summary row of this team size that has successes."""
     pts = []
@@ -180,9 +180,12 @@ def _points(
         vals = None
         if rows is not None:
             vals = [
-                float(x[metric])
+                float(getattr(x, metric))
                 for x in rows
-                if x.get("success") and x["robots"] == team and x["n_base"] == r["n_base"]
+                if x.success
+                and x.robots == team
+                and x.n_base == r["n_base"]
+                and getattr(x, metric) is not None
             ]
         spread = _spread(r, vals, metric)
         if spread is not None:
@@ -190,7 +193,7 @@ def _points(
     return pts
 
 
-def plot_cost_time(summary: dict[str, Any], out: Path, rows: Sequence[Row] | None = None) -> None:
+def plot_cost_time(summary: dict[str, Any], out: Path, rows: Sequence[ScenarioRow] | None = None) -> None:
     """Travel cost and completion time vs base tasks per team size. With `rows`: medians with
     10th-90th percentile bars over the successful scenarios (asymmetric, inside the data); without:
     mean ± std with the lower bar cut at zero."""
@@ -221,28 +224,30 @@ def plot_cost_time(summary: dict[str, Any], out: Path, rows: Sequence[Row] | Non
     plt.close(fig)
 
 
-def plot_gantt_example(rows: Sequence[Row], out: Path) -> Row | None:
+def plot_gantt_example(rows: Sequence[ScenarioRow], out: Path) -> ScenarioRow | None:
     """The Gantt chart of one successful scenario (the most robots at work, then the most actions), drawn
     from its row's events; returns that row, or None (nothing drawn) when no scenario succeeded."""
     from nl2hltl2plan.worlds.gantt import draw_gantt_events
 
-    ok = [r for r in rows if r.get("success") and r.get("events")]
+    ok = [r for r in rows if r.success and r.events]
     if not ok:
         return None
-    row = max(ok, key=lambda r: (len({e["robot"] for e in r["events"]}), len(r["events"]), r.get("key", "")))
+    row = max(ok, key=lambda r: (len({e.robot for e in r.events}), len(r.events), r.key))
     title = (
-        f"example: {row.get('instance', row.get('key'))}, {_team(row['robots'])}, "
-        f"travel {row.get('travel_m') or 0:.2f} m, completion {row.get('steps')} steps"
+        f"example: {row.instance or row.key}, {_team(row.robots)}, "
+        f"travel {row.travel_m or 0:.2f} m, completion {row.steps} steps"
     )
-    draw_gantt_events(row["events"], row["robots"], out, title=title)
+    draw_gantt_events([e.model_dump() for e in row.events], row.robots, out, title=title)
     return row
 
 
 def write_report(
-    rows: Sequence[Row], out_dir: Path, title: str, command: str, machine: str
+    rows: Sequence[ScenarioRow], out_dir: Path, title: str, command: str, machine: str
 ) -> dict[str, Any]:
     """Write report.md, summary.json content (returned) and the plots; all and clean subsets."""
-    clean_rows = [r for r in rows if r.get("gt_feasible", r.get("feasible")) and not r.get("ambiguous")]
+    clean_rows = [
+        r for r in rows if (r.feasible if r.gt_feasible is None else r.gt_feasible) and not r.ambiguous
+    ]
     summary = pipeline_summary(rows)
     clean = pipeline_summary(clean_rows) if clean_rows else None
     summary["clean"] = clean
@@ -252,7 +257,7 @@ def write_report(
         out_dir / "success_vs_base_tasks.png",
     )
     plot_cost_time(summary, out_dir / "cost_and_time.png", rows=rows)
-    n_inst = len({r["instance"] for r in rows if "instance" in r}) or len(rows)
+    n_inst = len({r.instance for r in rows}) or len(rows)
     parts = [
         f"# {title}",
         "",
@@ -264,7 +269,7 @@ def write_report(
         table1_markdown(summary),
     ]
     if clean:
-        n_clean = len({r["instance"] for r in clean_rows if "instance" in r})
+        n_clean = len({r.instance for r in clean_rows})
         parts += [
             "",
             f"## Clean instructions: feasible and unambiguous ({n_clean} instructions, "

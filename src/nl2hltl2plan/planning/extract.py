@@ -16,7 +16,7 @@ from __future__ import annotations
 import numpy as np
 
 from nl2hltl2plan.errors import PlanningError
-from nl2hltl2plan.logic.hierarchical import TraceEvent
+from nl2hltl2plan.logic.trace import TraceEvent, check_trace
 from nl2hltl2plan.planning.model import Problem
 from nl2hltl2plan.planning.state import Event, Expander, Node
 from nl2hltl2plan.worlds.plan import Plan, RobotPlan, Step
@@ -114,7 +114,7 @@ def verify(problem: Problem, plan: Plan) -> Execution:
         raise PlanningError("internal error: the planned actions fail in the simulator: "
                             + "; ".join(execution.violations[:3]))
     trace = [TraceEvent(e.t, e.atom, e.task) for e in execution.events]
-    reasons = problem.spec.check_trace(trace).reasons
+    reasons = check_trace(problem.spec, trace).reasons
     if reasons:
         raise PlanningError("internal error: the plan does not satisfy the specification: "
                             + "; ".join(reasons))

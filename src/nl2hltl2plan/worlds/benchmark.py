@@ -10,13 +10,13 @@ from pydantic import ValidationError
 
 from nl2hltl2plan.config import data_path
 from nl2hltl2plan.errors import DataError, WorldError
-from nl2hltl2plan.io import read_jsonl_strict
+from nl2hltl2plan.io import read_jsonl
 from nl2hltl2plan.worlds.tasks import GTInstance
 
 
 def _parse(path: Path) -> tuple[GTInstance, ...]:
     out = []
-    for n, obj in enumerate(read_jsonl_strict(path, "ground-truth file"), start=1):
+    for n, obj in enumerate(read_jsonl(path, "ground-truth file"), start=1):
         try:
             out.append(GTInstance.model_validate(obj))
         except ValidationError as exc:

@@ -54,6 +54,7 @@ Kind = Literal[
 KINDS: tuple[str, ...] = Kind.__args__  # type: ignore[attr-defined]
 APPLIANCE = {"clean_place": "SinkBasin", "heat_place": "Microwave", "cool_place": "Fridge"}
 TREATMENT = {"clean_place": "cleanable", "heat_place": "heatable", "cool_place": "coolable"}
+MAX_COUNT = 50  # no AI2-THOR scene has more instances of one type
 KNIFE_DROP_PREFERENCE = ("CounterTop", "DiningTable", "SideTable", "Desk", "CoffeeTable", "Shelf", "Dresser")
 
 
@@ -92,7 +93,7 @@ class BaseTask(BaseModel):
     text: str = ""
     kind: Kind
     object: list[str]
-    count: int = 1
+    count: int = Field(default=1, ge=1, le=MAX_COUNT)  # objects; more than a scene can hold is refused
     sliced: bool = False
     container: list[str] | None = None
     receptacle: list[str] | None = None
