@@ -209,3 +209,20 @@ def test_gantt_from_benchmark_events_and_report_example(tmp_path):
         plot_gantt_example(rows[2:], tmp_path / "none.png") is None and not (tmp_path / "none.png").exists()
     )
     assert _image(tmp_path / "ev.png")[0] > 300 and _image(tmp_path / "example.png")[0] > 300
+
+
+def test_map_markers_do_not_overlap(world):
+    from nl2hltl2plan.pipeline import run
+
+    instruction = (
+        "Put the apple in the fridge and put the mug in the cabinet. Then put the bread on the dining table."
+    )
+    execution = run(instruction, world, robots=2).result.execution
+    fig = draw_execution(execution)
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    boxes = [
+        t.get_bbox_patch().get_window_extent(renderer) for t in fig.axes[0].texts if t.get_text().isdigit()
+    ]
+    assert len(boxes) == len(execution.events) >= 8
+    assert not any(a.overlaps(b) for i, a in enumerate(boxes) for b in boxes[i + 1 :])

@@ -184,17 +184,23 @@ def draw_execution(execution: Execution, path: str | Path | None = None, ax=None
 
 
 def _numbered_events(ax, execution: Execution, events: list, colours: dict) -> list[tuple[str, tuple]]:
-    """Number the actions in time order on the map (actions at one cell side by side); return the
-    numbered list's lines with their robot's colour."""
+    """Number the actions in time order on the map: each marker takes the first slot up and to the right
+    of its cell that no other marker occupies; return the numbered list's lines with their colours."""
     world = execution.world
-    at_cell: dict[tuple[int, int], int] = {}
+    ax.autoscale_view()
+    ax.apply_aspect()
+    to_pt = 72.0 / ax.figure.dpi
+    taken: list[tuple[float, float]] = []
     lines = []
     for n, ev in enumerate(events, start=1):
-        cell = execution.trajectories[ev.robot][ev.t]
-        slot = at_cell.get(cell, 0)
-        at_cell[cell] = slot + 1
-        x, z = world.xz(cell)
-        offset = (9 + 13 * (slot % 5), 9 + 13 * (slot // 5))
+        x, z = world.xz(execution.trajectories[ev.robot][ev.t])
+        px, pz = (v * to_pt for v in ax.transData.transform((x, z)))
+        for slot in range(60):
+            offset = (9 + 13 * (slot % 6), 9 + 13 * (slot // 6))
+            centre = (px + offset[0], pz + offset[1])
+            if all(abs(centre[0] - a) >= 12.5 or abs(centre[1] - b) >= 12.5 for a, b in taken):
+                break
+        taken.append(centre)
         ax.annotate(str(n), (x, z), xytext=offset, textcoords="offset points", ha="center",
                     va="center", fontsize=7, color="white", fontweight="bold", zorder=8,
                     bbox={"boxstyle": "circle,pad=0.25", "fc": colours[ev.robot], "ec": "black", "lw": 0.5},
@@ -232,6 +238,9 @@ def animate_execution(execution: Execution, path: str | Path, fps: int = 4, max_
         frames.append(horizon)
     fig = draw_execution(execution, upto=0)
     ax = fig.axes[0]
+    w, h = fig.get_size_inches()
+    fig.set_size_inches(w + 3.0, h)  # frames are not cropped: keep room for the legend and action list
+    fig.subplots_adjust(left=0.06, right=(w - 1.5) / (w + 3.0), bottom=0.08, top=0.93)
 
     def update(t: int):
         ax.clear()
