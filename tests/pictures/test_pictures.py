@@ -90,7 +90,7 @@ def test_gantt_edge_cases(world, tmp_path):
                 start=(0, 0),
                 steps=[
                     Step(t=k, verb="put", objects=["DishwasherLowerRack_0", "DishwasherUpperRack_0"])
-                    for k in range(1, 200)
+                    for k in range(1, 80)
                 ],
             )  # fmt: skip
         ]
