@@ -23,6 +23,9 @@ class PlanEvent(BaseModel):
     travel_m: float = 0.0
 
 
+IDENTITY = {"key", "instance", "n_base", "robots", "draw"}
+
+
 class ScenarioRow(BaseModel):
     """One scenario (instance x team size x start draw) after planning, execution and checking."""
 
@@ -76,7 +79,8 @@ class ScenarioRow(BaseModel):
         return row
 
     def to_json(self) -> dict[str, Any]:
-        return self.model_dump(mode="json")
+        """JSON for the runner, which adds the scenario's identity (key, instance, ...) itself."""
+        return self.model_dump(mode="json", exclude=IDENTITY - self.model_fields_set)
 
 
 class LanguageRecord(BaseModel):

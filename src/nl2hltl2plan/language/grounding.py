@@ -456,8 +456,8 @@ class Roles:
         flag = _STATE_FLAG.get(kind)
         obj: list[str] = keep(self.object, lambda t: flags(t).pickupable) or []
         if flag:
-            obj = keep(obj, lambda t: getattr((look(t + "Sliced") if sliced else None) or flags(t), flag))
-            obj = obj or []
+            treated = keep(obj, lambda t: getattr((look(t + "Sliced") if sliced else None) or flags(t), flag))
+            obj = treated or []
         if sliced:
             obj = keep(obj, lambda t: flags(t).sliceable) or []
         cont = keep(self.container, lambda c: any(accepts(c, o) for o in obj))

@@ -21,12 +21,14 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import NamedTuple
 
+from nl2hltl2plan.worlds import effects
 from nl2hltl2plan.worlds.model import CELL_M, KNIFE_TYPES, Cell, World
 from nl2hltl2plan.worlds.plan import Plan
 
 # state flag bits
 PRESENT, OPEN, ON, CLEAN, HOT, COLD = 1, 2, 4, 8, 16, 32
 FLAG_NAMES = {PRESENT: "present", OPEN: "open", ON: "on", CLEAN: "clean", HOT: "hot", COLD: "cold"}
+FLAG_NAMES.update(effects.EXTRA_FLAG_NAMES)  # broken, cooked, filled (SMART-LLM's vocabulary)
 
 COOLING_TYPES = frozenset({"Fridge"})  # put into it -> cold
 HEATING_TYPES = frozenset({"Microwave"})  # toggle on -> contents hot
@@ -346,6 +348,7 @@ class SimState:
             sink = self.in_type(o, WASHING_TYPES)
             if sink >= 0 and any(self.flags[f] & ON for f in c.faucets_of.get(sink, ())):
                 self.set_flag_tree(o, CLEAN, "cleanable")
+            effects.after_put(self, o, r)
             return None
         if verb in ("open", "close"):
             (o,) = objs
@@ -355,7 +358,7 @@ class SimState:
             if why:
                 return why
             if verb == "open":
-                if self.flags[o] & ON:
+                if self.flags[o] & ON and c.types[o] in effects.RUNS_CLOSED:
                     return f"{self.name(o)} is on (turn it off first)"
                 self.flags[o] |= OPEN
             else:
@@ -371,7 +374,7 @@ class SimState:
             if verb == "toggle_off":
                 self.flags[o] &= ~ON
                 return None
-            if c.aff[o].openable and self.flags[o] & OPEN:
+            if c.types[o] in effects.RUNS_CLOSED and self.flags[o] & OPEN:
                 return f"{self.name(o)} is open (close it before turning it on)"
             self.flags[o] |= ON
             if c.types[o] in HEATING_TYPES:
@@ -383,6 +386,7 @@ class SimState:
                 for i in self.subtree(sink)[1:]:
                     if c.aff[i].cleanable:
                         self.flags[i] |= CLEAN
+            effects.after_toggle_on(self, o)
             return None
         if verb == "slice":
             (o,) = objs
@@ -400,7 +404,7 @@ class SimState:
                 self.parent[s] = self.parent[o]
                 self.moved[s] = self.moved[o]
             return None
-        return f"unknown verb {verb}"  # pragma: no cover - Step validates verbs
+        return effects.act(self, robot, verb, objs)  # break (SMART-LLM's vocabulary)
 
 
 def execute(world: World, plan: Plan) -> Execution:
