@@ -403,3 +403,23 @@ def _cubes(cond: object, var_to_bit: dict[int, int]) -> list[Cube]:
         out.append((pos, neg))
         c = isop.next()
     return out
+
+
+# HOA output (the Hanoi Omega-Automata format, for other tools)
+
+
+def hoa(
+    f: Formula,
+    timeout_s: float = DEFAULT_TIMEOUT_S,
+    max_states: int = MAX_STATES,
+    memory_mb: float = MEMORY_MB,
+) -> str:
+    """`f`'s deterministic terminal Büchi automaton (completed with a rejecting sink; the language of
+    `dfa(f)`), written by Spot in HOA v1. Bounded as `dfa` is: small formulas in-process, others in
+    a child under the time, memory and state limits (FormulaError naming the limit reached)."""
+    probs = sc_ltl_problems(f)
+    if probs:
+        raise FormulaError(f"{_short(f.text)} is not sc-LTL: " + "; ".join(probs))
+    if temporal_size(f._f) <= IN_PROCESS_MAX_TEMPORAL:
+        return str(_translate(f._f, small=True).to_str("hoa"))
+    return _guarded(_translate_to_hoa, (f.text, max_states), f.text, timeout_s, memory_mb)
