@@ -30,6 +30,7 @@ from nl2hltl2plan.cli.options import (
     positive_int,
 )
 from nl2hltl2plan.errors import PlanningError
+from nl2hltl2plan.evaluation.ray_engine import ENGINES, run_with_engine
 from nl2hltl2plan.evaluation.runner import Row, Scenario, is_errored
 from nl2hltl2plan.io import ensure_writable_dir, write_json
 from nl2hltl2plan.pipeline import PipelineOptions
@@ -77,6 +78,18 @@ def register(sub: Any) -> None:
         "--workers", type=positive_int, default=None, help="parallel worker processes (default: CPU cores)"
     )
     add_planner_arguments(p, timeout_help="planner time limit per scenario")
+    p.add_argument(
+        "--engine",
+        choices=ENGINES,
+        default="local",
+        help="local: worker processes on this machine; ray: Ray tasks, for runs that outgrow one "
+        "machine (pip install 'nl2hltl2plan[ray]') (default: local)",
+    )
+    p.add_argument(
+        "--address",
+        default=None,
+        help="with --engine ray: join a running Ray cluster HOST:PORT (default: a local Ray)",
+    )
     p.add_argument("--fresh", action="store_true", help="start over instead of resuming DIR/scenarios.jsonl")
     p.add_argument("--quiet", action="store_true", help="no progress display")
     p.add_argument("--json", action="store_true", help="print summary.json instead of the table")
@@ -103,7 +116,6 @@ def run(args: argparse.Namespace) -> int:
         write_report,
     )
     from nl2hltl2plan.evaluation.rows import rows_of
-    from nl2hltl2plan.evaluation.runner import run_scenarios
 
     out: Path = ensure_writable_dir(args.out)
     preload()
@@ -127,10 +139,12 @@ def run(args: argparse.Namespace) -> int:
         source = f"language backend {args.llm}"
 
     with _Progress(len(scenarios), "planning", args.quiet) as bar:
-        rows = run_scenarios(
+        rows = run_with_engine(
+            args.engine,
             scenarios,
             job,
             out / "scenarios.jsonl",
+            address=args.address,
             workers=workers,
             hard_timeout_s=args.timeout + 60.0,
             resume=True,

@@ -2,7 +2,8 @@
 
 Instruction -> HTT -> hierarchical LTL -> multi-robot plan, executed and checked (`pipeline.run`).
 Prints the HTT, the base tasks, the hierarchical LTL and the plan with its travel cost and completion
-time; `--json` prints one object (docs/plan_schema.md); `-o DIR` writes result.json and pictures.
+time; `--json` prints one object (docs/plan_schema.md); `-o DIR` writes result.json, htt.png,
+world.png, plan.png (the map with numbered actions) and gantt.png (who does what when).
 Exit status: 0 a checked plan, 1 no plan (infeasible or timeout, with the reason), 2 bad input,
 3 LLM requests pending (batch mode). Without `--llm`, an LLM configured by NL2HLTL2PLAN_LLM_* is used,
 else the offline backend (said on stderr).
@@ -206,11 +207,13 @@ def _optimality(r: Any) -> str:
 def _write_outputs(folder: Path, outcome: Any, payload: dict[str, Any]) -> None:
     """result.json and the pictures, all drawn from the outcome (nothing is re-run)."""
     from nl2hltl2plan.io import write_json
-    from nl2hltl2plan.language.render import draw_htt
+    from nl2hltl2plan.language.render import draw_htt, htt_orderings
     from nl2hltl2plan.worlds import pictures
+    from nl2hltl2plan.worlds.gantt import draw_gantt
 
     write_json(folder / "result.json", payload, "result file")
     draw_htt(outcome.language.htt, folder / "htt.png", title=outcome.instruction)
     pictures.draw_world(outcome.world, folder / "world.png", title=outcome.world.name)
     if outcome.result.execution is not None:
         pictures.draw_execution(outcome.result.execution, folder / "plan.png")
+        draw_gantt(outcome.result.execution, folder / "gantt.png", before=htt_orderings(outcome.language.htt))

@@ -31,10 +31,10 @@ from nl2hltl2plan.evaluation.runner import (
     Notes,
     Row,
     Scenario,
-    _check_limits,
-    _stderr_note,
+    check_limits,
     load_rows,
     run_scenarios,
+    stderr_note,
 )
 
 ENGINES = ("local", "ray")
@@ -85,13 +85,13 @@ def run_scenarios_ray(
     hard_timeout_s: float = 360.0,
     resume: bool = True,
     progress: Callable[[Row, int, int], None] | None = None,
-    notes: Notes | None = _stderr_note,
+    notes: Notes | None = stderr_note,
     address: str | None = None,
 ) -> list[Row]:
     """Run every scenario as a Ray task (at most `workers` at a time) and return the rows in order."""
     ray = _ray()
     scenarios = list(scenarios)
-    workers = _check_limits(workers, hard_timeout_s)
+    workers = check_limits(workers, hard_timeout_s)
     out.parent.mkdir(parents=True, exist_ok=True)
     if not resume and out.exists():
         out.unlink()

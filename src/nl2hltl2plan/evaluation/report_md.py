@@ -22,6 +22,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 from nl2hltl2plan.evaluation.language_bench import STAGES  # noqa: E402
 from nl2hltl2plan.evaluation.report import paper_table1, percentile, summarize  # noqa: E402
 from nl2hltl2plan.evaluation.rows import ScenarioRow  # noqa: E402
+from nl2hltl2plan.io import write_text  # noqa: E402
 
 
 def _rate(num: int, den: int) -> float | None:
@@ -296,7 +297,15 @@ def write_report(
         "![cost and time](cost_and_time.png)",
         "",
     ]
-    (out_dir / "report.md").write_text("\n".join(parts))
+    example = plot_gantt_example(rows, out_dir / "gantt_example.png")
+    if example is not None:
+        parts += [
+            f"An example plan over time ({example.key}):",
+            "",
+            "![an example plan](gantt_example.png)",
+            "",
+        ]
+    write_text(out_dir / "report.md", "\n".join(parts), "report")
     return summary
 
 

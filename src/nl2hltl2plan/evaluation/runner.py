@@ -51,7 +51,7 @@ class Scenario:
         return f"{self.instance}|r{self.robots}|d{self.draw}"
 
 
-def _stderr_note(text: str) -> None:
+def stderr_note(text: str) -> None:
     print(f"warning: {text}", file=sys.stderr)
 
 
@@ -83,7 +83,7 @@ def read_rows(path: Path) -> tuple[dict[str, Row], list[str]]:
     return rows, problems
 
 
-def load_rows(path: Path, notes: Notes | None = _stderr_note) -> dict[str, Row]:
+def load_rows(path: Path, notes: Notes | None = stderr_note) -> dict[str, Row]:
     """Rows already written to a JSON-lines file, by key. Bad lines (a torn last line above all) are
     reported through `notes` and removed from the file, so what is appended next starts a line."""
     rows, problems = read_rows(path)
@@ -117,7 +117,7 @@ def _job_main(job_and_scenario: tuple[Callable[[Scenario], Row], Scenario]) -> R
     return job(scenario)
 
 
-def _check_limits(workers: int | None, hard_timeout_s: float) -> int:
+def check_limits(workers: int | None, hard_timeout_s: float) -> int:
     finite = isinstance(hard_timeout_s, (int, float)) and math.isfinite(hard_timeout_s)
     if not finite or hard_timeout_s <= 0:
         raise RunnerError(f"the per-scenario time limit must be finite and > 0 s, got {hard_timeout_s!r}")
@@ -134,11 +134,11 @@ def run_scenarios(
     hard_timeout_s: float = 360.0,
     resume: bool = True,
     progress: Callable[[Row, int, int], None] | None = None,
-    notes: Notes | None = _stderr_note,
+    notes: Notes | None = stderr_note,
 ) -> list[Row]:
     """Run every scenario (in parallel, each in its own process) and return the rows in order."""
     scenarios = list(scenarios)
-    n_workers = _check_limits(workers, hard_timeout_s)
+    n_workers = check_limits(workers, hard_timeout_s)
     try:
         out.parent.mkdir(parents=True, exist_ok=True)
         if not resume and out.exists():
