@@ -8,12 +8,13 @@ import pytest
 from planning_worlds import corridor
 
 from nl2hltl2plan.errors import PlanningError, SpecError
+from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.planning import plan
 from nl2hltl2plan.worlds.demo import demo_world
 
 
-def leaf_spec(*actions: str) -> list[dict]:
-    return [{"task1": "F task1.1"}, {"task1.1": list(actions)}]
+def leaf_spec(*actions: str) -> HierarchicalSpec:
+    return HierarchicalSpec([{"task1": "F task1.1"}, {"task1.1": list(actions)}])
 
 
 def test_missing_object_type(two_tasks_world):
@@ -37,11 +38,11 @@ def test_receptacle_that_refuses_the_object():
 
 
 def test_precedence_cycle(two_tasks_world):
-    spec = [
+    spec = HierarchicalSpec([
         {"task1": "F(task1.1 & F task1.2) & F(task1.2 & F task1.1)"},
         {"task1.1": ["pickup(Apple)", "put(Apple,CounterTop)"],
          "task1.2": ["pickup(Mug)", "put(Mug,DiningTable)"]},
-    ]
+    ])
     r = plan(two_tasks_world, spec, [(0, 0)])
     assert r.status == "infeasible"
     assert "cycle" in r.reason and "task1.1" in r.reason
@@ -50,7 +51,7 @@ def test_precedence_cycle(two_tasks_world):
 def test_no_robot_has_the_capability(two_tasks_world):
     spec = leaf_spec("pickup(Apple)", "put(Apple,CounterTop)")
     r = plan(two_tasks_world, spec, [(0, 0), (0, 39)], capabilities=[["put"], ["toggle_on"]])
-    assert r.status == "infeasible" and "no robot has the capability" in r.reason
+    assert r.status == "infeasible" and "no robot in the team can pickup(Apple)" in r.reason
     # with one capable robot it is solved, and only that robot acts
     r = plan(two_tasks_world, spec, [(0, 0), (0, 39)], capabilities=[["open"], None])
     assert r.solved and {e["robot"] for e in r.events} == {1}
@@ -67,7 +68,7 @@ def test_infeasible_found_by_search():
 
 def test_timeout_returns_quickly_without_a_plan():
     world = demo_world()
-    spec = [
+    spec = HierarchicalSpec([
         {"task1": " & ".join(f"F task1.{k}" for k in range(1, 7))},
         {f"task1.{k}": body for k, body in enumerate([
             ["pickup(Plate)", "open(Dishwasher)", "put(Plate,DishwasherLowerRack)"],
@@ -77,7 +78,7 @@ def test_timeout_returns_quickly_without_a_plan():
             ["pickup(Book)", "toggle_on(FloorLamp)"],
             ["pickup(Fork)", "put(Fork,Bowl)", "pickup(Bowl)", "put(Bowl,DiningTable)"],
         ], start=1)},
-    ]
+    ])
     t0 = time.perf_counter()
     r = plan(world, spec, [(0, 0), (9, 13), (0, 13)], mode="exact", timeout_s=0.001)
     assert time.perf_counter() - t0 < 2.0
@@ -96,4 +97,7 @@ def test_malformed_input(two_tasks_world):
     with pytest.raises(PlanningError, match="unknown objective"):
         plan(two_tasks_world, leaf_spec("pickup(Apple)"), [(0, 0)], objective="sum")
     with pytest.raises(SpecError):
-        plan(two_tasks_world, [{"task1": "G task1.1"}, {"task1.1": ["pickup(Apple)"]}], [(0, 0)])
+        plan(two_tasks_world, HierarchicalSpec([{"task1": "G task1.1"}, {"task1.1": ["pickup(Apple)"]}]),
+             [(0, 0)])
+    with pytest.raises(PlanningError, match="takes a HierarchicalSpec"):
+        plan(two_tasks_world, [{"task1": "F task1.1"}, {"task1.1": ["pickup(Apple)"]}], [(0, 0)])

@@ -6,9 +6,8 @@
   events, the best stand cells of one robot are a shortest path through its sequence of regions
   (a layered shortest-path problem, solved exactly with the distance matrix). The refined plan is
   kept when it is better for the objective (for `min` it never is worse).
-- `to_plan` writes per-robot timed steps (moves along shortest paths, gaps are waits), and
-  `verify` executes the plan in the simulator and judges its events with the spec's
-  `check_trace`. A plan failing either is a planner bug and is never returned.
+- `to_plan` writes per-robot timed steps (moves along shortest paths, gaps are waits); `plan()` then
+  validates it (`results.validate`).
 """
 
 from __future__ import annotations
@@ -16,12 +15,10 @@ from __future__ import annotations
 import numpy as np
 
 from nl2hltl2plan.errors import PlanningError
-from nl2hltl2plan.logic.hierarchical import TraceEvent
 from nl2hltl2plan.planning.model import Problem
+from nl2hltl2plan.planning.objective import Objective
 from nl2hltl2plan.planning.state import Event, Expander, Node
 from nl2hltl2plan.worlds.plan import Plan, RobotPlan, Step
-from nl2hltl2plan.worlds.simulator import Execution, execute
-
 
 
 def replay(x: Expander, events: list[Event], stands: list[int] | None = None) -> Node | None:
@@ -40,7 +37,7 @@ def replay(x: Expander, events: list[Event], stands: list[int] | None = None) ->
     return node
 
 
-def refine_stand_cells(x: Expander, goal: Node, objective: str) -> Node:
+def refine_stand_cells(x: Expander, goal: Node, objective: Objective) -> Node:
     """Per robot, the stand cells minimising its walk through its regions (kept if better)."""
     events = goal.events()
     nav = x.nav
@@ -75,9 +72,7 @@ def refine_stand_cells(x: Expander, goal: Node, objective: str) -> Node:
     better = replay(x, events, stands)
     if better is None or not x.is_goal(better):
         return goal
-    old = (goal.g,) if objective == "min" else (goal.ms, goal.g)
-    new = (better.g,) if objective == "min" else (better.ms, better.g)
-    return better if new < old else goal
+    return better if objective.value(better) < objective.value(goal) else goal
 
 
 def to_plan(problem: Problem, x: Expander, events: list[Event]) -> Plan:
@@ -105,18 +100,3 @@ def to_plan(problem: Problem, x: Expander, events: list[Event]) -> Plan:
             steps.append(Step(t=e.t, verb=e.verb, objects=[ids[o] for o in e.objs], task=task))
         robots.append(RobotPlan(robot=r, start=start, steps=steps))
     return Plan(robots=robots)
-
-
-def verify(problem: Problem, plan: Plan) -> Execution:
-    """Execute the plan and check its attributed events against the spec; PlanningError if either
-    fails (that would be a planner bug: a plan is never returned unchecked)."""
-    execution = execute(problem.world, plan)
-    if not execution.ok:
-        raise PlanningError("internal error: the planned actions fail in the simulator: "
-                            + "; ".join(execution.violations[:3]))
-    trace = [TraceEvent(e.t, e.atom, e.task) for e in execution.events]
-    reasons = problem.spec.check_trace(trace).reasons
-    if reasons:
-        raise PlanningError("internal error: the plan does not satisfy the specification: "
-                            + "; ".join(reasons))
-    return execution

@@ -66,7 +66,7 @@ def plain_recipe(task: BaseTask) -> list[list[str] | str]:
     """The recipe of a task on its first listed types, without looking at a world."""
     o = task.object[0]
     held = sliced_type(o) if task.sliced else o
-    r = (task.receptacle or [None])[0]
+    r: str | None = task.receptacle[0] if task.receptacle else None
     seq: list[str] = []
     if task.sliced:
         seq += ["pickup(Knife)", f"slice({o})", "put(Knife,CounterTop)"]

@@ -42,20 +42,33 @@ class Event:
     anchor: int  # object whose interaction region the robot stands in
 
 
+Binding = tuple[tuple[str, int], ...]  # a leaf's (type, object index) pairs, sorted
+
+
+@dataclass(slots=True, eq=False)
 class Node:
     """A search state; children share nothing mutable with their parent."""
 
-    __slots__ = (
-        "sim", "cell", "clock", "q", "bind", "claimed", "nq", "done_t", "leaf_t", "obj_t",
-        "last_done", "g", "ms", "parent", "event", "h", "ms_lb", "f", "closed", "_memo",
-    )
-
-    def __init__(self) -> None:
-        self.closed = False
-        self._memo: tuple | None = None
-        self.h: int | None = None
-        self.ms_lb = 0
-        self.f = 0
+    sim: SimState  # the executor's state: objects, robot cells, hands
+    cell: tuple[int, ...]  # per robot, its cell index
+    clock: tuple[int, ...]  # per robot, the step of its last action
+    q: tuple[int, ...]  # per leaf, its progress (trie node) or DONE
+    bind: tuple[Binding, ...]  # per leaf, its type bindings
+    claimed: frozenset[int]  # objects some leaf took for itself
+    nq: tuple[int, ...]  # per non-leaf, its DFA state or DONE
+    done_t: tuple[int, ...]  # per spec node (leaves, then non-leaves), completion step or -1
+    leaf_t: tuple[int, ...]  # per leaf, the step of its last event (0: not started)
+    obj_t: dict[int, int]  # object -> the last step it was touched
+    last_done: int  # the latest completion step
+    g: int  # moves + actions so far
+    ms: int  # makespan so far
+    parent: Node | None = None
+    event: Event | None = None
+    h: int | None = None  # heuristic (summed cost); None until evaluated
+    ms_lb: int = 0  # lower bound on the final makespan
+    f: int = 0  # admissible bound on the objective (objective units of the search)
+    closed: bool = False
+    memo: tuple[object, ...] | None = None  # the duplicate-detection key, once computed
 
     def events(self) -> list[Event]:
         out = []
@@ -79,6 +92,12 @@ def _subtree(sim: SimState, root: int) -> list[int]:
             out.extend(i for i, q in enumerate(parent) if q == p)
         k += 1
     return out
+
+
+def _put(values: tuple[int, ...], i: int, value: int) -> tuple[int, ...]:
+    out = list(values)
+    out[i] = value
+    return tuple(out)
 
 
 def bound(node: Node, leaf: int, type_: str) -> int:
@@ -120,26 +139,16 @@ class Expander:
     # ------------------------------------------------------------ root
     def root(self) -> Node:
         p = self.p
-        n = Node()
-        n.sim = self.sim0.copy()
-        n.cell = tuple(self.nav.cell_index[c] for c in p.starts)
-        n.clock = (0,) * p.n_robots
-        n.q = tuple(lf.init for lf in p.leaves)
-        n.bind = tuple(() for _ in p.leaves)
-        n.claimed = frozenset()
-        n.nq = tuple(nl.init for nl in p.nonleaves)
         done = [-1] * len(p.node_names)
         for lf in p.leaves:
             if lf.init == DONE:
                 done[self.slot[lf.name]] = 0
-        n.done_t = tuple(done)
-        n.leaf_t = (0,) * len(p.leaves)
-        n.obj_t = {}
-        n.last_done = 0
-        n.g = 0
-        n.ms = 0
-        n.parent = None
-        n.event = None
+        n = Node(
+            sim=self.sim0.copy(), cell=tuple(self.nav.cell_index[c] for c in p.starts),
+            clock=(0,) * p.n_robots, q=tuple(lf.init for lf in p.leaves), bind=tuple(() for _ in p.leaves),
+            claimed=frozenset(), nq=tuple(nl.init for nl in p.nonleaves), done_t=tuple(done),
+            leaf_t=(0,) * len(p.leaves), obj_t={}, last_done=0, g=0, ms=0,
+        )
         # leaves satisfied from the start complete their ancestors at step 0
         for lf in p.leaves:
             if lf.init == DONE:
@@ -168,8 +177,8 @@ class Expander:
             q = node.nq[nl.index]
             if q == DONE:
                 return False  # the parent is already satisfied: this task is not needed
-            done = frozenset(c for c in nl.children if node.done_t[self.slot[c]] >= 0)
-            q2 = p.step_parent(nl.index, q, name, done)
+            finished = frozenset(c for c in nl.children if node.done_t[self.slot[c]] >= 0)
+            q2 = p.step_parent(nl.index, q, name, finished)
             if q2 is None:
                 return False
             if q2 != DONE:
@@ -357,17 +366,8 @@ class Expander:
             done_l[self.leaf_slot[li]] = t
             nq, done = tuple(nq_l), tuple(done_l)
             last_done = max(last_done, t)
-        child = Node()
-        child.sim = child_sim
-        cell = list(node.cell)
-        cell[robot] = stand
-        child.cell = tuple(cell)
-        clock = list(node.clock)
-        clock[robot] = t
-        child.clock = tuple(clock)
         q = list(node.q)
         q[li] = q_next
-        child.q = tuple(q)
         bind = node.bind[li]
         claimed = node.claimed
         for pos, type_ in enumerate(atom.types):
@@ -375,28 +375,22 @@ class Expander:
                 bind = tuple(sorted(bind + ((type_, objs[pos]),)))
                 if type_ in leaf.taken:
                     claimed = claimed | {objs[pos]}
+        binds = node.bind
         if bind is not node.bind[li]:
-            binds = list(node.bind)
-            binds[li] = bind
-            child.bind = tuple(binds)
-        else:
-            child.bind = node.bind
-        child.claimed = claimed
-        child.nq = nq
-        child.done_t = done
+            binds_l = list(node.bind)
+            binds_l[li] = bind
+            binds = tuple(binds_l)
         leaf_t = list(node.leaf_t)
         leaf_t[li] = t
-        child.leaf_t = tuple(leaf_t)
         new_obj_t = dict(obj_t)
         for x in touched:
             new_obj_t[x] = t
-        child.obj_t = new_obj_t
-        child.last_done = last_done
-        child.g = node.g + d + 1
-        child.ms = max(node.ms, t)
-        child.parent = node
-        child.event = Event(robot, li, atom.text, verb, objs, stand, d, t, atom_k, anchor)
-        return child
+        return Node(
+            sim=child_sim, cell=_put(node.cell, robot, stand), clock=_put(node.clock, robot, t), q=tuple(q),
+            bind=binds, claimed=claimed, nq=nq, done_t=done, leaf_t=tuple(leaf_t), obj_t=new_obj_t,
+            last_done=last_done, g=node.g + d + 1, ms=max(node.ms, t), parent=node,
+            event=Event(robot, li, atom.text, verb, objs, stand, d, t, atom_k, anchor),
+        )
 
     def _stand(self, cell: int, anchor: int, stand: int | None) -> tuple[int, int]:
         if stand is None:
@@ -427,26 +421,16 @@ class Expander:
         if leaf >= 0:
             ready = max(ready, node.leaf_t[leaf])  # held until its task is done (examine: lamp on)
         t = max(node.clock[robot] + d, ready) + 1
-        child = Node()
-        for name in ("q", "bind", "claimed", "nq", "done_t", "leaf_t", "last_done"):
-            setattr(child, name, getattr(node, name))
-        child.sim = child_sim
-        cell = list(node.cell)
-        cell[robot] = stand
-        child.cell = tuple(cell)
-        clock = list(node.clock)
-        clock[robot] = t
-        child.clock = tuple(clock)
         obj_t = dict(node.obj_t)
         for x in touched:
             obj_t[x] = t
-        child.obj_t = obj_t
-        child.g = node.g + d + 1
-        child.ms = max(node.ms, t)
-        child.parent = node
         atom = f"put({self.types[obj]},{self.types[surface]})"
-        child.event = Event(robot, leaf, atom, "put", objs, stand, d, t, -1, anchor)
-        return child
+        return Node(
+            sim=child_sim, cell=_put(node.cell, robot, stand), clock=_put(node.clock, robot, t), q=node.q,
+            bind=node.bind, claimed=node.claimed, nq=node.nq, done_t=node.done_t, leaf_t=node.leaf_t,
+            obj_t=obj_t, last_done=node.last_done, g=node.g + d + 1, ms=max(node.ms, t), parent=node,
+            event=Event(robot, leaf, atom, "put", objs, stand, d, t, -1, anchor),
+        )
 
     def surfaces_for(self, obj: int) -> list[int]:
         type_ = self.types[obj]
