@@ -7,8 +7,8 @@ import itertools
 import pytest
 from planning_worlds import corridor
 
-from nl2hltl2plan.logic.spot_backend import parse, precedence_form
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
+from nl2hltl2plan.logic.spot_backend import parse, precedence_form
 from nl2hltl2plan.planning import oracle_spec, plan
 from nl2hltl2plan.planning.oracle import plain_recipe
 from nl2hltl2plan.worlds.checker import check

@@ -30,7 +30,7 @@ from nl2hltl2plan.worlds.model import CELL_M, Cell, World
 Mode = Literal["fast", "exact"]
 DEFAULT_TIMEOUT_S = 300.0
 DEFAULT_W = 1.5
-FAST_EXPANSIONS = 2000  # AWA* expansions `fast` spends improving its first plan (at most)
+FAST_EXPANSIONS = 300  # AWA* expansions `fast` spends improving its first plan (at most)
 IMPROVE_EVALS = 600  # local-search candidate replays (both modes)
 MAX_NODES = 400_000  # search nodes held at once (about 1.5 GB), the memory bound
 BEAM_WIDTH = 8
