@@ -57,13 +57,21 @@ def test_no_robot_has_the_capability(two_tasks_world):
     assert r.solved and {e["robot"] for e in r.events} == {1}
 
 
-def test_infeasible_found_by_search():
-    # the apple sits in a closed fridge and the leaf never opens it: nothing static is wrong,
-    # the exhaustive search proves there is no plan
+def test_support_open_inserted_and_infeasible_found_by_search():
+    # the apple sits in a closed fridge and the leaf never opens it: the planner opens it (walk 4 to
+    # the fridge's region 4..16, open, pick, put on the counter whose region 0..8 holds cell 4: 7)
     world = corridor({"Apple_0": 10, "Fridge_0": 10, "CounterTop_0": 2}, parents={"Apple_0": "Fridge_0"})
-    r = plan(world, leaf_spec("pickup(Apple)", "put(Apple,CounterTop)"), [(0, 0)])
+    spec = leaf_spec("pickup(Apple)", "put(Apple,CounterTop)")
+    for mode in ("exact", "fast"):
+        r = plan(world, spec, [(0, 0)], mode=mode)
+        assert r.solved and r.total_cost == 7
+        assert [(e["atom"], e["task"]) for e in r.events] == [
+            ("open(Fridge)", "task1.1"), ("pickup(Apple)", "task1.1"), ("put(Apple,CounterTop)", "task1.1")]
+    # a robot that may not open anything: nothing static is wrong, the exhaustive search proves there
+    # is no plan and names the missing ability
+    r = plan(world, spec, [(0, 0)], capabilities=[["pickup", "put"]])
     assert r.status == "infeasible"
-    assert "no sequence of robot actions" in r.reason
+    assert "no robot in the team can open(Fridge)" in r.reason and "no sequence of robot actions" in r.reason
 
 
 def test_timeout_returns_quickly_without_a_plan():

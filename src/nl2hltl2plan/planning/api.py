@@ -142,6 +142,9 @@ def plan(
             result.status = PlanStatus.INFEASIBLE
             result.reason = ("no sequence of robot actions satisfies the specification in this world "
                              f"(searched {stats.expanded} states)")
+            if x.missing_support:
+                result.reason = (f"no robot in the team can {', '.join(sorted(x.missing_support))}, "
+                                 "which the tasks need; " + result.reason)
         else:
             result.reason = f"no plan found within {timeout_s:g} s (wall-clock timeout, last resort)"
         result.plan_time_s = time.perf_counter() - t0

@@ -18,13 +18,24 @@ from nl2hltl2plan.errors import PlanningError
 from nl2hltl2plan.planning.model import Problem
 from nl2hltl2plan.planning.objective import Objective
 from nl2hltl2plan.planning.state import Event, Expander, Node
+from nl2hltl2plan.planning.support import SUPPORT
 from nl2hltl2plan.worlds.plan import Plan, RobotPlan, Step
 
 
 def replay(x: Expander, events: list[Event], stands: list[int] | None = None) -> Node | None:
-    node = x.root()
+    """The goal node of `events` replayed from the root (`stands`: per event, a stand cell)."""
+    return replay_from(x, x.root(), events, stands)
+
+
+def replay_from(x: Expander, node: Node, events: list[Event], stands: list[int] | None = None,
+                keep_stands: bool = True) -> Node | None:
+    """Re-run events from `node` through the transition relation (None if one no longer applies);
+    stand cells from `stands`, else the events' own (`keep_stands`) or the nearest ones. Support
+    events are skipped: the actions they serve re-insert what the replayed state needs."""
     for i, e in enumerate(events):
-        stand = stands[i] if stands is not None else e.stand
+        stand = stands[i] if stands is not None else (e.stand if keep_stands and e.stand >= 0 else None)
+        if e.k == SUPPORT:
+            continue
         if e.k < 0:
             child = x.put_down(node, e.robot, e.objs[1], e.leaf, stand=stand)
         else:

@@ -13,8 +13,10 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
+from nl2hltl2plan.planning.extract import replay_from
 from nl2hltl2plan.planning.objective import Objective
 from nl2hltl2plan.planning.state import Event, Expander, Node
+from nl2hltl2plan.planning.support import SUPPORT
 
 
 def segments(x: Expander, events: list[Event]) -> list[list[int]]:
@@ -23,13 +25,15 @@ def segments(x: Expander, events: list[Event]) -> list[list[int]]:
     open_seg: dict[int, list[int]] = {}  # robot -> the segment it is in while holding something
     out: list[list[int]] = []
     for i, e in enumerate(events):
+        if e.k == SUPPORT:
+            continue  # re-inserted by the action it serves
         seg = open_seg.get(e.robot)
         if seg is not None and events[seg[0]].leaf == e.leaf and e.k >= 0:
             seg.append(i)
         else:
             seg = [i]
             out.append(seg)
-        node = replay_from(x, node, [e]) if node is not None else None
+        node = replay_from(x, node, [e], keep_stands=False) if node is not None else None
         if node is None:
             return []
         if node.sim.hand.get(e.robot, -1) >= 0 and e.k >= 0:
@@ -37,20 +41,6 @@ def segments(x: Expander, events: list[Event]) -> list[list[int]]:
         else:
             open_seg.pop(e.robot, None)
     return out
-
-
-def replay_from(x: Expander, node: Node, events: list[Event]) -> Node | None:
-    for e in events:
-        if e.k < 0:
-            child = x.put_down(node, e.robot, e.objs[1], e.leaf, stand=e.stand)
-        else:
-            leaf = x.p.leaves[e.leaf]
-            q_next = next((q2 for k, q2 in leaf.moves.get(node.q[e.leaf], ()) if k == e.k), None)
-            child = None if q_next is None else x.apply(node, e.robot, leaf, e.k, e.objs, q_next)
-        if child is None:
-            return None
-        node = child
-    return node
 
 
 def improve(x: Expander, goal: Node, objective: Objective, max_evals: int,
@@ -76,7 +66,7 @@ def improve(x: Expander, goal: Node, objective: Objective, max_evals: int,
                     break
                 check_time()
                 evals += 1
-                end = replay_from(x, path[start], cand[start:])
+                end = replay_from(x, path[start], cand[start:], keep_stands=False)
                 if end is None or not x.is_goal(end):
                     continue
                 val = objective.value(end)

@@ -25,6 +25,7 @@ from dataclasses import dataclass
 
 from nl2hltl2plan.planning.model import DONE, Atom, Leaf, Problem
 from nl2hltl2plan.planning.navigation import INF, Navigator
+from nl2hltl2plan.planning.support import blockers, support_event
 from nl2hltl2plan.worlds.simulator import PRESENT, SimState
 
 
@@ -94,7 +95,7 @@ def _subtree(sim: SimState, root: int) -> list[int]:
     return out
 
 
-def _put(values: tuple[int, ...], i: int, value: int) -> tuple[int, ...]:
+def put(values: tuple[int, ...], i: int, value: int) -> tuple[int, ...]:
     out = list(values)
     out[i] = value
     return tuple(out)
@@ -135,6 +136,7 @@ class Expander:
         self.cap_class = [classes.index(c) for c in problem.capabilities]
         self.gate_slots = {i: tuple(self.slot[g] for g in gates) for i, gates in problem.gates.items()}
         self.only: set[int] | None = None  # restrict successors to these robots (single-robot seeds)
+        self.missing_support: set[str] = set()  # support actions (open/close) no robot in the team may do
 
     # ------------------------------------------------------------ root
     def root(self) -> Node:
@@ -325,6 +327,14 @@ class Expander:
             return None
         if verb == "slice" and hand < 0:
             return None
+        if node.leaf_t[leaf.index] == 0 and not self.enabled(node, leaf):
+            return None  # replays (local search) rely on this; successors() filters it already
+        needs = blockers(sim, verb, objs)
+        if needs:  # open what is in the way first (support actions), then act
+            cur: Node | None = node
+            for s_verb, s_obj in needs:
+                cur = support_event(self, cur, robot, leaf.index, s_verb, s_obj) if cur is not None else None
+            return None if cur is None else self.apply(cur, robot, leaf, atom_k, objs, q_next, stand)
         anchor = self.nav.anchor(sim, objs[-1])
         if anchor < 0:
             return None
@@ -343,10 +353,7 @@ class Expander:
             tx = obj_t.get(x, 0)
             if tx > ready:
                 ready = tx
-        first = node.leaf_t[li] == 0
-        if first and not self.enabled(node, leaf):
-            return None  # replays (local search) rely on this; successors() filters it already
-        if first:
+        if node.leaf_t[li] == 0:
             if self.p.precedence:
                 for s in self.gate_slots[li]:
                     if node.done_t[s] > ready:
@@ -386,7 +393,7 @@ class Expander:
         for x in touched:
             new_obj_t[x] = t
         return Node(
-            sim=child_sim, cell=_put(node.cell, robot, stand), clock=_put(node.clock, robot, t), q=tuple(q),
+            sim=child_sim, cell=put(node.cell, robot, stand), clock=put(node.clock, robot, t), q=tuple(q),
             bind=binds, claimed=claimed, nq=nq, done_t=done, leaf_t=tuple(leaf_t), obj_t=new_obj_t,
             last_done=last_done, g=node.g + d + 1, ms=max(node.ms, t), parent=node,
             event=Event(robot, li, atom.text, verb, objs, stand, d, t, atom_k, anchor),
@@ -426,7 +433,7 @@ class Expander:
             obj_t[x] = t
         atom = f"put({self.types[obj]},{self.types[surface]})"
         return Node(
-            sim=child_sim, cell=_put(node.cell, robot, stand), clock=_put(node.clock, robot, t), q=node.q,
+            sim=child_sim, cell=put(node.cell, robot, stand), clock=put(node.clock, robot, t), q=node.q,
             bind=node.bind, claimed=node.claimed, nq=node.nq, done_t=node.done_t, leaf_t=node.leaf_t,
             obj_t=obj_t, last_done=node.last_done, g=node.g + d + 1, ms=max(node.ms, t), parent=node,
             event=Event(robot, leaf, atom, "put", objs, stand, d, t, -1, anchor),
