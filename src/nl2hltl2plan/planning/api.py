@@ -16,6 +16,7 @@ from nl2hltl2plan.planning.model import Infeasible, Problem, _required_leaves, b
 from nl2hltl2plan.planning.navigation import Navigator
 from nl2hltl2plan.planning.objective import Objective, ObjectiveName, objective_for
 from nl2hltl2plan.planning.results import (
+    GRID_MODEL,
     NEAREST_CELL_MODEL,
     STOP_REASONS,
     PlanResult,
@@ -131,7 +132,7 @@ def plan(
     searcher = Searcher(x, Heuristic(x, required), obj, deadline)
     budget = Budget(fast_expansions if mode == "fast" else None, improve_evals,
                     w if mode == "fast" and fast_expansions is None else 1.0, w if mode == "fast" else 1.0,
-                    max_nodes)
+                    max_nodes, free_stands=grid_model(objective, mode))
     best = _search(searcher, x, budget)
     stats = searcher.stats
     result.expanded, result.peak_nodes = stats.expanded, stats.peak_nodes
@@ -149,7 +150,8 @@ def plan(
             result.reason = f"no plan found within {timeout_s:g} s (wall-clock timeout, last resort)"
         result.plan_time_s = time.perf_counter() - t0
         return result
-    _fill_solved(result, problem, x, obj, best, stats, mode == "fast" if refine is None else refine)
+    _fill_solved(result, problem, x, obj, best, stats, True if refine is None else refine)
+    result.model = GRID_MODEL if grid_model(objective, mode) else NEAREST_CELL_MODEL
     result.plan_time_s = time.perf_counter() - t0
     return result
 
@@ -163,6 +165,14 @@ class Budget:
     w_stop: float  # stop once the incumbent is proven within this factor
     w_order: float  # the weight of the A* ordering
     max_nodes: int | None  # memory bound of the A*
+    free_stands: bool  # stand cells part of the A* search (the grid optimum of the summed cost)
+
+
+def grid_model(objective: str, mode: str) -> bool:
+    """Is the optimum searched over every stand cell (the grid), not only the nearest ones? For the
+    summed cost (both modes). The makespan's schedule couples robots (one waits for another's
+    event), so its search walks to nearest cells and refines the stand cells afterwards."""
+    return objective == "min"
 
 
 def _check_arguments(spec: object, objective: str, mode: str, w: float) -> None:
@@ -189,8 +199,14 @@ def _search(searcher: Searcher, x: Expander, budget: Budget) -> Node | None:
         if best is not None:
             # local search on the allocation first: a better incumbent also prunes the A*
             best = improve(x, best, searcher.obj, budget.improve_evals, searcher.check_time)
-        best = searcher.awa(root, best, budget.w_order, budget.w_stop, max_expansions=budget.expansions,
-                            max_nodes=budget.max_nodes)
+            if budget.free_stands:  # the incumbent's cost on the grid: its best stand cells
+                best = refine_stand_cells(x, best, searcher.obj)
+        x.free_stands = budget.free_stands
+        try:
+            best = searcher.awa(root, best, budget.w_order, budget.w_stop, max_expansions=budget.expansions,
+                                max_nodes=budget.max_nodes)
+        finally:
+            x.free_stands = False
     except Deadline:
         searcher.stats.stopped = "timeout"
     return best
@@ -200,7 +216,10 @@ def _fill_solved(result: PlanResult, problem: Problem, x: Expander, obj: Objecti
                  stats: SearchStats, refine: bool) -> None:
     """Refine, write, validate and report a solved plan."""
     model_cost = obj.reported(best)
-    refined = refine_stand_cells(x, best, obj) if refine else best
+    if best.reach is not None:  # found with free stand cells: choose them now (same cost)
+        refined = refine_stand_cells(x, best, obj, force=True)
+    else:
+        refined = refine_stand_cells(x, best, obj) if refine else best
     events = refined.events()
     the_plan = to_plan(problem, x, events)
     verdict = validate(problem.world, problem.spec, the_plan)
@@ -219,7 +238,6 @@ def _fill_solved(result: PlanResult, problem: Problem, x: Expander, obj: Objecti
     result.bound = (model_cost / lower) if lower > 0 else None  # both over the search's model
     result.proven_optimal = stats.proven_optimal
     result.optimality = optimality_words(result.proven_optimal, result.bound)
-    result.model = NEAREST_CELL_MODEL
     world = problem.world
     result.events = [
         {"t": e.t, "robot": e.robot, "atom": e.atom,

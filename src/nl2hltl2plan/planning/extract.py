@@ -18,7 +18,7 @@ from nl2hltl2plan.errors import PlanningError
 from nl2hltl2plan.planning.model import Problem
 from nl2hltl2plan.planning.objective import Objective
 from nl2hltl2plan.planning.state import Event, Expander, Node
-from nl2hltl2plan.planning.support import SUPPORT
+from nl2hltl2plan.planning.support import SUPPORT, support_event
 from nl2hltl2plan.worlds.plan import Plan, RobotPlan, Step
 
 
@@ -35,6 +35,12 @@ def replay_from(x: Expander, node: Node, events: list[Event], stands: list[int] 
     for i, e in enumerate(events):
         stand = stands[i] if stands is not None else (e.stand if keep_stands and e.stand >= 0 else None)
         if e.k == SUPPORT:
+            if stands is None and not keep_stands:
+                continue  # re-inserted, where still needed, by the action it serves
+            child = support_event(x, node, e.robot, e.leaf, e.verb, e.objs[0], stand)
+            if child is None:
+                return None
+            node = child
             continue
         if e.k < 0:
             child = x.put_down(node, e.robot, e.objs[1], e.leaf, stand=stand)
@@ -48,8 +54,9 @@ def replay_from(x: Expander, node: Node, events: list[Event], stands: list[int] 
     return node
 
 
-def refine_stand_cells(x: Expander, goal: Node, objective: Objective) -> Node:
-    """Per robot, the stand cells minimising its walk through its regions (kept if better)."""
+def refine_stand_cells(x: Expander, goal: Node, objective: Objective, force: bool = False) -> Node:
+    """Per robot, the stand cells minimising its walk through its regions (kept if better; with
+    `force`, always: the search with free stand cells left them to be chosen here)."""
     events = goal.events()
     nav = x.nav
     stands = [e.stand for e in events]
@@ -67,7 +74,7 @@ def refine_stand_cells(x: Expander, goal: Node, objective: Objective) -> Node:
             back.append(arg)
             cost = total[arg, np.arange(len(cur))]
         walked = sum(events[i].travel for i in idx)
-        if int(cost.min()) >= walked:
+        if int(cost.min()) >= walked and not force:
             continue
         k = int(cost.argmin())
         chosen = [0] * len(idx)
@@ -82,7 +89,11 @@ def refine_stand_cells(x: Expander, goal: Node, objective: Objective) -> Node:
         return goal
     better = replay(x, events, stands)
     if better is None or not x.is_goal(better):
+        if force:
+            raise PlanningError("internal error: the chosen stand cells do not replay")
         return goal
+    if force:
+        return better
     return better if objective.value(better) < objective.value(goal) else goal
 
 

@@ -71,6 +71,9 @@ class Searcher:
         sim = node.sim
         robots = sorted(zip(node.cell, (sim.hand.get(r, -1) for r in range(len(node.cell))),
                             self.x.cap_class, strict=True))
+        if node.reach is not None:  # free stand cells: where a robot may stand matters too
+            robots = sorted(zip(node.cell, (sim.hand.get(r, -1) for r in range(len(node.cell))),
+                                self.x.cap_class, node.reach, strict=True))  # type: ignore[arg-type]
         k = (tuple(sim.parent), tuple(sim.flags), tuple(sim.moved), tuple(robots), node.q, node.bind, node.nq)
         node.memo = k
         return k

@@ -23,6 +23,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+import numpy as np
+
 from nl2hltl2plan.planning.model import DONE, Atom, Leaf, Problem
 from nl2hltl2plan.planning.navigation import INF, Navigator
 from nl2hltl2plan.planning.support import blockers, support_event
@@ -44,6 +46,7 @@ class Event:
 
 
 Binding = tuple[tuple[str, int], ...]  # a leaf's (type, object index) pairs, sorted
+Reach = tuple[tuple[int, ...], tuple[int, ...]]  # cells a robot may stand on, extra cost of each (min 0)
 
 
 @dataclass(slots=True, eq=False)
@@ -70,6 +73,9 @@ class Node:
     f: int = 0  # admissible bound on the objective (objective units of the search)
     closed: bool = False
     memo: tuple[object, ...] | None = None  # the duplicate-detection key, once computed
+    # free stand cells (exact summed cost): per robot, every cell of its last region with the extra
+    # walking it costs to have stood there (`cell` holds the cheapest); None: nearest-cell model
+    reach: tuple[Reach | None, ...] | None = None
 
     def events(self) -> list[Event]:
         out = []
@@ -96,6 +102,12 @@ def _subtree(sim: SimState, root: int) -> list[int]:
 
 
 def put(values: tuple[int, ...], i: int, value: int) -> tuple[int, ...]:
+    out = list(values)
+    out[i] = value
+    return tuple(out)
+
+
+def _put_reach(values: tuple[Reach | None, ...], i: int, value: Reach | None) -> tuple[Reach | None, ...]:
     out = list(values)
     out[i] = value
     return tuple(out)
@@ -136,7 +148,8 @@ class Expander:
         self.cap_class = [classes.index(c) for c in problem.capabilities]
         self.gate_slots = {i: tuple(self.slot[g] for g in gates) for i, gates in problem.gates.items()}
         self.only: set[int] | None = None  # restrict successors to these robots (single-robot seeds)
-        self.missing_support: set[str] = set()  # support actions (open/close) no robot in the team may do
+        self.missing_support: set[str] = set()  # support actions (open/close) no robot may do
+        self.free_stands = False  # exact summed cost: stand cells are part of the search (`walk`)
 
     # ------------------------------------------------------------ root
     def root(self) -> Node:
@@ -338,7 +351,7 @@ class Expander:
         anchor = self.nav.anchor(sim, objs[-1])
         if anchor < 0:
             return None
-        stand, d = self._stand(node.cell[robot], anchor, stand)
+        stand, d, reach = self.walk(node, robot, anchor, stand)
         if d >= INF:
             return None
         touched = self.touched(sim, verb, objs, robot)
@@ -396,13 +409,36 @@ class Expander:
             sim=child_sim, cell=put(node.cell, robot, stand), clock=put(node.clock, robot, t), q=tuple(q),
             bind=binds, claimed=claimed, nq=nq, done_t=done, leaf_t=tuple(leaf_t), obj_t=new_obj_t,
             last_done=last_done, g=node.g + d + 1, ms=max(node.ms, t), parent=node,
-            event=Event(robot, li, atom.text, verb, objs, stand, d, t, atom_k, anchor),
+            event=Event(robot, li, atom.text, verb, objs, stand, d, t, atom_k, anchor), reach=reach,
         )
 
-    def _stand(self, cell: int, anchor: int, stand: int | None) -> tuple[int, int]:
-        if stand is None:
-            return self.nav.nearest(cell, anchor)
-        return stand, int(self.nav.dm[cell, stand])
+    def walk(self, node: Node, robot: int, anchor: int,
+             stand: int | None = None) -> tuple[int, int, tuple[Reach | None, ...] | None]:
+        """(stand cell, steps, the child's reach) for `robot` to act in the anchor's region: the
+        nearest cell (or `stand`); with free stand cells, every region cell stays open and `steps` is
+        the least extra walking (a layered shortest path, resolved when the plan is written)."""
+        cell = node.cell[robot]
+        if not self.free_stands or stand is not None:
+            if stand is None:
+                stand, d = self.nav.nearest(cell, anchor)
+            else:
+                d = int(self.nav.dm[cell, stand])
+            reach = None if node.reach is None else _put_reach(node.reach, robot, None)
+            return stand, d, reach
+        old = node.reach[robot] if node.reach is not None else None
+        cells, offsets = old if old is not None else ((cell,), (0,))
+        region = self.nav.region_idx[anchor]
+        if not len(region):
+            return -1, INF, None
+        arrive = (self.nav.dm[np.ix_(np.array(cells), region)] + np.array(offsets)[:, None]).min(axis=0)
+        k = int(arrive.argmin())
+        d = int(arrive[k])
+        if d >= INF:
+            return -1, INF, None
+        ok = arrive < INF
+        new: Reach = (tuple(int(c) for c in region[ok]), tuple(int(v) - d for v in arrive[ok]))
+        base = node.reach if node.reach is not None else (None,) * len(node.cell)
+        return int(region[k]), d, _put_reach(base, robot, new)
 
     def put_down(self, node: Node, robot: int, surface: int, leaf: int,
                  stand: int | None = None) -> Node | None:
@@ -415,7 +451,7 @@ class Expander:
             return None
         if leaf >= 0 and node.q[leaf] != DONE:
             return None  # held until its task is done (examine: until the lamp is on)
-        stand, d = self._stand(node.cell[robot], anchor, stand)
+        stand, d, reach = self.walk(node, robot, anchor, stand)
         if d >= INF:
             return None
         objs = (obj, surface)
@@ -436,7 +472,7 @@ class Expander:
             sim=child_sim, cell=put(node.cell, robot, stand), clock=put(node.clock, robot, t), q=node.q,
             bind=node.bind, claimed=node.claimed, nq=node.nq, done_t=node.done_t, leaf_t=node.leaf_t,
             obj_t=obj_t, last_done=node.last_done, g=node.g + d + 1, ms=max(node.ms, t), parent=node,
-            event=Event(robot, leaf, atom, "put", objs, stand, d, t, -1, anchor),
+            event=Event(robot, leaf, atom, "put", objs, stand, d, t, -1, anchor), reach=reach,
         )
 
     def surfaces_for(self, obj: int) -> list[int]:
@@ -469,7 +505,8 @@ class Expander:
             if self.only is not None and r not in self.only:
                 continue
             hand = sim.hand.get(r, -1)
-            sym = (node.cell[r], hand, self.cap_class[r], node.clock[r])
+            sym = (node.cell[r], hand, self.cap_class[r], node.clock[r],
+                   node.reach[r] if node.reach is not None else None)
             if hand < 0 and sym in seen_robot:
                 continue  # robots in identical situations are interchangeable
             seen_robot.add(sym)

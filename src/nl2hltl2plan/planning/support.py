@@ -46,7 +46,8 @@ def may_support(x: Expander, robot: int, verb: str, obj: int) -> bool:
     return caps is None or verb in caps or f"{verb}({x.types[obj]})" in caps
 
 
-def support_event(x: Expander, node: Node, robot: int, leaf: int, verb: str, obj: int) -> Node | None:
+def support_event(x: Expander, node: Node, robot: int, leaf: int, verb: str, obj: int,
+                  stand: int | None = None) -> Node | None:
     """The child after `robot` walks to `obj` and opens / closes it for `leaf` (None if it cannot)."""
     from nl2hltl2plan.planning.state import Event, Node, put
 
@@ -58,7 +59,7 @@ def support_event(x: Expander, node: Node, robot: int, leaf: int, verb: str, obj
     anchor = x.nav.anchor(sim, obj)
     if anchor < 0:
         return None
-    stand, d = x.nav.nearest(node.cell[robot], anchor)
+    stand, d, reach = x.walk(node, robot, anchor, stand)
     if d >= INF:
         return None
     touched = x.touched(sim, verb, (obj,), robot)
@@ -76,4 +77,5 @@ def support_event(x: Expander, node: Node, robot: int, leaf: int, verb: str, obj
         bind=node.bind, claimed=node.claimed, nq=node.nq, done_t=node.done_t, leaf_t=node.leaf_t,
         obj_t=obj_t, last_done=node.last_done, g=node.g + d + 1, ms=max(node.ms, t), parent=node,
         event=Event(robot, leaf, f"{verb}({x.types[obj]})", verb, (obj,), stand, d, t, SUPPORT, anchor),
+        reach=reach,
     )
