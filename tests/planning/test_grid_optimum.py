@@ -44,7 +44,8 @@ def _random_world(rng: random.Random) -> World:
     spots = rng.sample([(c, r) for r in range(5) for c in range(14) if (r, c) not in wall], 5)
     ids = ["Apple_0", "Apple_1", "Mug_0", "CounterTop_0", "DiningTable_0"]
     objs = [WorldObject(id=i, type=i.rsplit("_", 1)[0], position=(c * 0.25 + 0.1, 0.9, r * 0.25 - 1.2),
-                        affordances=affordances(i.rsplit("_", 1)[0])) for i, (c, r) in zip(ids, spots, strict=True)]
+                        affordances=affordances(i.rsplit("_", 1)[0]))
+            for i, (c, r) in zip(ids, spots, strict=True)]
     return World.create("grid", free, objs, kind="demo")
 
 
