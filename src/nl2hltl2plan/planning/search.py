@@ -69,11 +69,11 @@ class Searcher:
         if memo is not None:
             return memo
         sim = node.sim
-        robots = sorted(zip(node.cell, (sim.hand.get(r, -1) for r in range(len(node.cell))),
-                            self.x.cap_class, strict=True))
-        if node.reach is not None:  # free stand cells: where a robot may stand matters too
-            robots = sorted(zip(node.cell, (sim.hand.get(r, -1) for r in range(len(node.cell))),
-                                self.x.cap_class, node.reach, strict=True))  # type: ignore[arg-type]
+        hands = [sim.hand.get(r, -1) for r in range(len(node.cell))]
+        reach = node.reach if node.reach is not None else (None,) * len(node.cell)
+        # robots sorted: interchangeable robots in the same situation are one state; with free stand
+        # cells, where a robot may stand (and at what extra cost) is part of its situation
+        robots = sorted(zip(node.cell, hands, self.x.cap_class, (r or ((), ()) for r in reach), strict=True))
         k = (tuple(sim.parent), tuple(sim.flags), tuple(sim.moved), tuple(robots), node.q, node.bind, node.nq)
         node.memo = k
         return k
