@@ -349,16 +349,18 @@ class Expander:
                 cur = support_event(self, cur, robot, leaf.index, s_verb, s_obj) if cur is not None else None
             return None if cur is None else self.apply(cur, robot, leaf, atom_k, objs, q_next, stand)
         anchor = self.nav.anchor(sim, objs[-1])
-        if anchor < 0:
+        if anchor < 0 or not len(self.nav.region_idx[anchor]):
+            return None
+        touched = self.touched(sim, verb, objs, robot)
+        child_sim = sim.copy()
+        # the action's preconditions first (from some cell of the region), the walk only if it can
+        child_sim.pos[robot] = self.nav.cells[int(self.nav.region_idx[anchor][0])]
+        if child_sim.act(robot, verb, list(objs)) is not None:
             return None
         stand, d, reach = self.walk(node, robot, anchor, stand)
         if d >= INF:
             return None
-        touched = self.touched(sim, verb, objs, robot)
-        child_sim = sim.copy()
         child_sim.pos[robot] = self.nav.cells[stand]
-        if child_sim.act(robot, verb, list(objs)) is not None:
-            return None
         li = leaf.index
         ready = node.leaf_t[li]
         obj_t = node.obj_t
@@ -436,7 +438,7 @@ class Expander:
         if d >= INF:
             return -1, INF, None
         ok = arrive < INF
-        new: Reach = (tuple(int(c) for c in region[ok]), tuple(int(v) - d for v in arrive[ok]))
+        new: Reach = (tuple(region[ok].tolist()), tuple((arrive[ok] - d).tolist()))
         base = node.reach if node.reach is not None else (None,) * len(node.cell)
         return int(region[k]), d, _put_reach(base, robot, new)
 
