@@ -5,7 +5,7 @@ oracle spec in both modes, in this process, one after another. The planner's bud
 expansions, so the numbers other than times are the same on every run and machine.
 
     python scripts/bench_planner_fast_vs_exact.py [--n-base 1,2] [--robots 1,2,4] [--limit N]
-        [--exact-timeout 120] [--json out.json]
+        [--exact-timeout 120] [--max-nodes 400000] [--jsonl out.jsonl]
 
 Prints per (base tasks, robots): scenarios, exact proven optimal, fast equal to the proven optimum,
 summed-cost ratio fast/exact and the worst ratio, fast's proven bound (median / max), and the
@@ -25,8 +25,8 @@ from nl2hltl2plan.worlds.alfred import benchmark_issues, build_benchmark_world, 
 from nl2hltl2plan.worlds.benchmark import load_gt
 
 
-def run(n_base: list[int], robots: list[int], limit: int | None,
-        exact_timeout: float) -> list[dict[str, Any]]:
+def run(n_base: list[int], robots: list[int], limit: int | None, exact_timeout: float,
+        max_nodes: int, out: str | None) -> list[dict[str, Any]]:
     insts = [g for g in load_gt() if g.n_base in n_base]
     rows = []
     for g in insts[:limit]:
@@ -38,12 +38,16 @@ def run(n_base: list[int], robots: list[int], limit: int | None,
             starts = start_cells(world, g, n)
             row: dict[str, Any] = {"id": g.id, "n_base": g.n_base, "robots": n}
             for mode in ("fast", "exact"):
-                r = plan(world, spec, starts, mode=mode, timeout_s=exact_timeout if mode == "exact" else 300)
+                r = plan(world, spec, starts, mode=mode, timeout_s=exact_timeout if mode == "exact" else 300,
+                         max_nodes=max_nodes)
                 row[mode] = {k: getattr(r, k) for k in (
                     "status", "total_cost", "lower_bound", "bound", "proven_optimal", "plan_time_s",
                     "peak_nodes", "memory_mb", "stopped")}
                 row[mode]["status"] = str(r.status)
             rows.append(row)
+            if out:
+                with open(out, "a") as fh:
+                    fh.write(json.dumps(row) + "\n")
             print(".", end="", flush=True, file=sys.stderr)
     print(file=sys.stderr)
     return rows
@@ -89,13 +93,12 @@ def main() -> int:
     ap.add_argument("--limit", type=int, default=None, help="first N instances only (default: all)")
     ap.add_argument("--exact-timeout", type=float, default=120.0,
                     help="exact mode's wall-clock last resort (120 s)")
-    ap.add_argument("--json", default=None, help="also write the rows to this JSON file")
+    ap.add_argument("--max-nodes", type=int, default=400_000,
+                    help="the planner's memory bound, nodes held at once (deterministic; default 400000)")
+    ap.add_argument("--jsonl", default=None, help="also append one JSON line per scenario to this file")
     args = ap.parse_args()
     rows = run([int(x) for x in args.n_base.split(",")], [int(x) for x in args.robots.split(",")], args.limit,
-               args.exact_timeout)
-    if args.json:
-        with open(args.json, "w") as fh:
-            json.dump(rows, fh, indent=1)
+               args.exact_timeout, args.max_nodes, args.jsonl)
     print("\n".join(table(rows)))
     return 0
 

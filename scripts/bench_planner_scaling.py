@@ -5,7 +5,7 @@ instances pooled into one instruction on one world, the first k kept with their 
 plus two seeded extra orderings; robots start at the first instance's init_pos (first draw).
 
     python scripts/bench_planner_scaling.py [--scenes 3] [--tasks 1-9] [--robots 1,2,4,10]
-        [--exact-upto 0] [--exact-timeout 60] [--json out.json]
+        [--exact-upto 0] [--exact-timeout 60] [--jsonl out.jsonl] [--from-jsonl out.jsonl]
 
 Prints per (base tasks, robots): runs, solved and checked, planning time (median / max), proven
 optimal share, proven bound (median / max), peak search nodes and their estimated memory.
@@ -30,7 +30,7 @@ from nl2hltl2plan.worlds.checker import check  # noqa: E402
 
 
 def run(scenes: list[str], sizes: list[int], robots: list[int], exact_upto: int,
-        exact_timeout: float) -> list[dict[str, Any]]:
+        exact_timeout: float, out: str | None) -> list[dict[str, Any]]:
     rows = []
     for seed, scene in enumerate(scenes):
         for k in sizes:
@@ -51,6 +51,9 @@ def run(scenes: list[str], sizes: list[int], robots: list[int], exact_upto: int,
                         "success": bool(r.solved and check(r.execution, gt).success), "time_s": r.plan_time_s,
                         "cost": r.total_cost, "bound": r.bound, "proven": r.proven_optimal,
                         "peak_nodes": r.peak_nodes, "memory_mb": r.memory_mb, "stopped": r.stopped})
+                    if out:
+                        with open(out, "a") as fh:
+                            fh.write(json.dumps(rows[-1]) + "\n")
                     print(".", end="", flush=True, file=sys.stderr)
     print(file=sys.stderr)
     return rows
@@ -80,14 +83,15 @@ def main() -> int:
     ap.add_argument("--exact-upto", type=int, default=0, help="also run exact mode up to this many tasks (0)")
     ap.add_argument("--exact-timeout", type=float, default=60.0,
                     help="exact mode's wall-clock last resort (60 s)")
-    ap.add_argument("--json", default=None, help="also write the rows to this JSON file")
+    ap.add_argument("--jsonl", default=None, help="also append one JSON line per run to this file")
+    ap.add_argument("--from-jsonl", default=None, help="only print the table of the runs in this file")
     args = ap.parse_args()
+    if args.from_jsonl:
+        print("\n".join(table([json.loads(line) for line in open(args.from_jsonl)])))
+        return 0
     lo, hi = (int(x) for x in args.tasks.split("-"))
     rows = run(SCENES[: args.scenes], list(range(lo, hi + 1)), [int(x) for x in args.robots.split(",")],
-               args.exact_upto, args.exact_timeout)
-    if args.json:
-        with open(args.json, "w") as fh:
-            json.dump(rows, fh, indent=1)
+               args.exact_upto, args.exact_timeout, args.jsonl)
     print("\n".join(table(rows)))
     return 0 if all(r["success"] for r in rows if r["status"] == "solved") else 1
 

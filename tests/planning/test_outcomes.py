@@ -109,3 +109,31 @@ def test_malformed_input(two_tasks_world):
              [(0, 0)])
     with pytest.raises(PlanningError, match="takes a HierarchicalSpec"):
         plan(two_tasks_world, [{"task1": "F task1.1"}, {"task1.1": ["pickup(Apple)"]}], [(0, 0)])
+
+
+def test_a_plan_failing_validation_is_an_error_not_a_plan(two_tasks_world, monkeypatch):
+    import nl2hltl2plan.planning.api as api
+    from nl2hltl2plan.planning import Validation, validate
+
+    def broken(world, spec, plan):
+        v = validate(world, spec, plan)
+        return Validation(False, ["simulated failure"], v.execution)
+
+    monkeypatch.setattr(api, "validate", broken)
+    r = plan(two_tasks_world, leaf_spec("pickup(Apple)", "put(Apple,CounterTop)"), [(0, 0)])
+    assert r.status == "error" and r.plan is None and "simulated failure" in r.reason
+
+
+def test_validate_judges_plans_from_elsewhere(two_tasks_world):
+    from nl2hltl2plan.planning import validate
+    from nl2hltl2plan.worlds.plan import Plan, RobotPlan
+
+    spec = leaf_spec("pickup(Apple)", "put(Apple,CounterTop)")
+    good = plan(two_tasks_world, spec, [(0, 0)]).plan
+    assert validate(two_tasks_world, spec, good).ok
+    idle = Plan(robots=[RobotPlan(robot=0, start=(0, 0), steps=[])])
+    verdict = validate(two_tasks_world, spec, idle)
+    assert not verdict.ok and verdict.reasons
+    late = good.model_copy(deep=True)
+    late.robots[0].steps = [s for s in late.robots[0].steps if s.verb != "put"]
+    assert not validate(two_tasks_world, spec, late).ok

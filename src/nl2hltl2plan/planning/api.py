@@ -112,7 +112,8 @@ def plan(
     `refine` (default: on in fast, off in exact) re-optimises each robot's stand cells for the chosen
     events, which never makes a plan worse (`model_cost` is the value before, `cost` after).
 
-    Returns a `PlanResult` (status solved / infeasible with the reason / timeout). Malformed input
+    Returns a `PlanResult` (status solved / infeasible with the reason / timeout / error: a plan that
+    failed validation, a planner bug, with the reason). Malformed input
     (not a HierarchicalSpec, a start cell that is not free, a leaf atom that is not an action)
     raises `PlanningError`.
     """
@@ -150,7 +151,10 @@ def plan(
             result.reason = f"no plan found within {timeout_s:g} s (wall-clock timeout, last resort)"
         result.plan_time_s = time.perf_counter() - t0
         return result
-    _fill_solved(result, problem, x, obj, best, stats, True if refine is None else refine)
+    try:
+        _fill_solved(result, problem, x, obj, best, stats, True if refine is None else refine)
+    except PlanningError as exc:  # a planner bug: reported, never a plan that fails validation
+        result.status, result.reason, result.plan, result.execution = PlanStatus.ERROR, str(exc), None, None
     result.model = GRID_MODEL if grid_model(objective, mode) else NEAREST_CELL_MODEL
     result.plan_time_s = time.perf_counter() - t0
     return result
