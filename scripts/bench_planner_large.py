@@ -57,7 +57,7 @@ def pooled_instance(scene: str, k: int, seed: int) -> GTInstance | None:
     rel = [(a, b) for a, b in before if a in ids and b in ids]
     rng = random.Random(seed)
     order = [t.id for t in keep]
-    for _ in range(2):  # a couple of extra orderings, consistent with the list order (no cycles)
+    for _ in range(2 if k >= 2 else 0):  # a couple of extra orderings, consistent with the list order
         i, j = sorted(rng.sample(range(k), 2))
         if (order[i], order[j]) not in rel:
             rel.append((order[i], order[j]))

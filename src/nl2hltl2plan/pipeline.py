@@ -191,7 +191,7 @@ def run(
         raise HTTError(f"no hierarchical specification for {instruction!r}: {why}")
     problems = team_problems(team, lang.spec, world)
     if problems:  # a definite no before any search: the team lacks a skill or the strength
-        planned = Planned(PlanResult(status="infeasible", reason="; ".join(problems)))
+        planned = Planned(PlanResult(status=PlanStatus.INFEASIBLE, reason="; ".join(problems)))
     else:
         planned = planning_stage(world, lang.spec, starts, opt, gt)
     return Outcome(
