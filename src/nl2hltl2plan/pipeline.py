@@ -20,7 +20,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Any, Literal
+from typing import Any
 
 from pydantic import BaseModel, ConfigDict, Field
 
@@ -31,14 +31,13 @@ from nl2hltl2plan.language.result import LanguageResult
 from nl2hltl2plan.language.translate import ActionSource, LtlSource, translate
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.planning import PlanResult, PlanStatus, plan
+from nl2hltl2plan.planning.api import Mode
+from nl2hltl2plan.planning.objective import ObjectiveName
 from nl2hltl2plan.worlds.checker import CheckResult, check
 from nl2hltl2plan.worlds.model import Cell, World
 from nl2hltl2plan.worlds.starts import start_cells
 from nl2hltl2plan.worlds.tasks import GTInstance
 from nl2hltl2plan.worlds.team import Team, team_problems
-
-Objective = Literal["min", "minmax"]
-Mode = Literal["fast", "exact"]
 
 
 class PipelineOptions(BaseModel):
@@ -50,7 +49,7 @@ class PipelineOptions(BaseModel):
     ltl: LtlSource = "compiler"
     actions: ActionSource = "auto"
     strict: bool = True  # an object the scene lacks is an error (else reported in `issues`)
-    objective: Objective = "min"
+    objective: ObjectiveName = "min"
     mode: Mode = "fast"
     plan_timeout_s: float = Field(default=300.0, gt=0, allow_inf_nan=False)
     starts: list[Cell] | None = None  # one per robot; default: the world's (see worlds.starts)

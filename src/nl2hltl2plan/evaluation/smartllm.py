@@ -32,7 +32,7 @@ import networkx as nx
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.pipeline import PipelineOptions, planning_stage
-from nl2hltl2plan.planning.api import Objective
+from nl2hltl2plan.planning.objective import ObjectiveName
 from nl2hltl2plan.worlds.checker import final_conditions
 from nl2hltl2plan.worlds.effects import condition_holds
 from nl2hltl2plan.worlds.model import CELL_M, World
@@ -128,7 +128,7 @@ def run_task(
     task: SmartTask,
     make_spec: SpecMaker,
     timeout_s: float = 30.0,
-    objective: Objective = "minmax",
+    objective: ObjectiveName = "minmax",
     masses: Mapping[str, float] | None = None,
 ) -> dict[str, Any]:
     """One task: spec -> team check -> plan -> execute -> SMART-LLM's metrics (a JSON-ready row)."""
@@ -183,7 +183,7 @@ def _plan_task(
     world: World,
     team: Any,
     make_spec: SpecMaker,
-    settings: tuple[float, Objective, Mapping[str, float] | None],
+    settings: tuple[float, ObjectiveName, Mapping[str, float] | None],
     row: dict[str, Any],
 ) -> tuple[int, float, Execution | None]:
     timeout_s, objective, masses = settings
@@ -269,7 +269,7 @@ def run_bench(
     label: str,
     timeout_s: float = 30.0,
     progress: Callable[[dict[str, Any]], None] | None = None,
-    objective: Objective = "minmax",
+    objective: ObjectiveName = "minmax",
     masses: Mapping[str, float] | None = None,
 ) -> dict[str, Any]:
     """Run every task, write DIR/rows.jsonl, DIR/summary.json and DIR/report.md; return the summary."""
