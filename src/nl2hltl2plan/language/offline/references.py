@@ -21,80 +21,81 @@ def ref_targets(
     ref: str,
     specs: list[BaseTaskSpec],
     nps: list[NP | None],
-    lights: list[bool],
-    upto: int | None,
     exclude: list[int] | None = None,
 ) -> tuple[list[int], list[str]]:
     """Task indices a reference ("placing the statue and moving the knife") names; unresolved parts."""
     found: list[int] = []
     missing: list[str] = []
-    last_np: NP | None = None
-    candidates = [i for i in (range(len(specs)) if upto is None else range(upto)) if i not in (exclude or [])]
+    candidates = [i for i in range(len(specs)) if i not in (exclude or [])]
     for part in _ref_parts(ref):
         words = [w for w, _, _ in tokens(part)]
-        k = 0
-        while k < len(words) and (
-            words[k] in G.VERBS
-            or words[k] in G.VERB_PAST
-            or words[k] in G.PARTICLES
-            or words[k] in {"having", "been", "is", "are", "was", "you"}
-        ):
-            k += 1
-        np = parse_np(
-            " ".join(
-                w for w in words[k:] if w not in {"is", "are", "was", "were", "been"} and w not in G.VERB_PAST
-            )
-        )
+        np = _ref_np(words)
         hit: list[int] = []
         if (
             np.entry is not None
             and np.is_lamp()
             or (not np.entry and any(w in {"lamp", "light"} for w in words))
         ):
-            hit = [i for i in candidates if lights[i]]
+            hit = [i for i in candidates if specs[i].kind == "examine_in_light"]
         elif np.entry is not None or np.head:
-            key = np.key
-            hit = [i for i in candidates if nps[i] is not None and nps[i].key == key]
-            hit = hit or [
-                i
-                for i in candidates
-                if nps[i] is not None
-                and (
-                    nps[i].key == key
-                    or (
-                        np.entry is not None
-                        and nps[i].entry is not None
-                        and set(np.entry.types) & set(nps[i].entry.types)
-                    )
-                )
-            ]
-            if not hit and np.entry is not None:
-                hit = [
-                    i
-                    for i in candidates
-                    if np.entry.canonical in (specs[i].container or [])
-                    or np.entry.canonical in specs[i].object
-                ]
+            hit = _hits_by_object(np, specs, nps, candidates)
             if not hit and np.entry is not None:  # "after putting items to the lower rack": by destination
                 hit = [i for i in candidates if np.entry.canonical in (specs[i].receptacle or [])]
                 found.extend(hit)
             if not hit and np.head:
+                head = np.head.replace(" ", "")
                 hit = [
                     i
                     for i in candidates
-                    if np.head.replace(" ", "") in "".join(specs[i].object).lower()
-                    or any(np.head.replace(" ", "") in r.lower() for r in (specs[i].receptacle or []))
+                    if head in "".join(specs[i].object).lower()
+                    or any(head in r.lower() for r in (specs[i].receptacle or []))
                 ]
-        elif last_np is None and part:
-            pass
         if hit:
-            found.append(hit[-1] if len(hit) > 1 and np.entry is not None and not np.plural else hit[-1])
+            found.append(hit[-1])
             if np.plural and len(hit) > 1:
                 found.extend(hit)
         else:
             missing.append(part)
-        last_np = np
     return sorted(set(found)), missing
+
+
+def _ref_np(words: list[str]) -> NP:
+    """The noun phrase of a reference part, past its verbs ("having been washed", "placing")."""
+    k = 0
+    while k < len(words) and (
+        words[k] in G.VERBS
+        or words[k] in G.VERB_PAST
+        or words[k] in G.PARTICLES
+        or words[k] in {"having", "been", "is", "are", "was", "you"}
+    ):
+        k += 1
+    return parse_np(
+        " ".join(
+            w for w in words[k:] if w not in {"is", "are", "was", "were", "been"} and w not in G.VERB_PAST
+        )
+    )
+
+
+def _hits_by_object(
+    np: NP, specs: list[BaseTaskSpec], nps: list[NP | None], candidates: list[int]
+) -> list[int]:
+    """Tasks about the same word, else about a word of a shared type, else with it as object or container."""
+    key = np.key
+    hit = [i for i in candidates if (other := nps[i]) is not None and other.key == key]
+    if not hit and np.entry is not None:
+        types = set(np.entry.types)
+        hit = [
+            i
+            for i in candidates
+            if (other := nps[i]) is not None and other.entry is not None and types & set(other.entry.types)
+        ]
+    if not hit and np.entry is not None:
+        hit = [
+            i
+            for i in candidates
+            if np.entry.canonical in (specs[i].container or []) or np.entry.canonical in specs[i].object
+        ]
+    return hit
 
 
 def self_state(ref: str, specs: list[BaseTaskSpec]) -> None:
@@ -123,7 +124,7 @@ def new_tasks_from_ref(ref: str, b: TaskBuilder, text: str) -> list[BaseTaskSpec
             if drafts and (joins(drafts[-1], fr, it) or incomplete(drafts[-1])):
                 drafts[-1].frames.append((fr, it))
             else:
-                drafts.append(Draft(frames=[(fr, it)], sentence=-1, start=0, end=0))
+                drafts.append(Draft(frames=[(fr, it)], start=0, end=0))
     out = []
     saved = list(b.unparsed)
     for d in drafts:

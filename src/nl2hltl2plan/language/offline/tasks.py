@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from nl2hltl2plan.errors import WorldError
 from nl2hltl2plan.language.grounding import AffordanceLookup, Grounder, Roles, find_mentions
@@ -26,7 +26,6 @@ class Draft:
     """A base task being assembled from frames."""
 
     frames: list[tuple[Frame, Item]]
-    sentence: int
     start: int
     end: int
     group: int = -1
@@ -38,6 +37,46 @@ class Draft:
             if it.obj is not None and not it.obj.pronoun and not it.obj.empty and not it.obj.is_lamp():
                 return it.obj
         return None
+
+
+@dataclass
+class Unit:
+    """The tasks of one clause (or one sentence part) and the temporal markers that apply to them."""
+
+    tasks: list[int]
+    sentence: int
+    markers: list[tuple[str, str]] = field(default_factory=list)  # (kind, ref text)
+    seq_after_prev: bool = False  # joined to the previous clause by "then" inside a sentence
+
+
+@dataclass
+class Tasks:
+    """The result of step 4: the base tasks the drafts state, the noun phrase each is about, the temporal
+    units (task indices into `specs`) and the groups (group number -> task indices)."""
+
+    specs: list[BaseTaskSpec]
+    nps: list[NP | None]
+    units: list[Unit]
+    groups: dict[int, list[int]]
+
+
+def build_tasks(drafts: list[Draft], units: list[Unit], b: TaskBuilder, text: str) -> Tasks:
+    """Ground every draft; drafts that state no task are dropped (and the units' indices follow)."""
+    specs = [b.spec(d, d.label or text[d.start : d.end]) for d in drafts]
+    keep = [i for i, s in enumerate(specs) if s is not None]
+    index = {old: new for new, old in enumerate(keep)}
+    for u in units:
+        u.tasks = [index[t] for t in u.tasks if t in index]
+    groups: dict[int, list[int]] = {}
+    for old, new in index.items():
+        if drafts[old].group >= 0:
+            groups.setdefault(drafts[old].group, []).append(new)
+    return Tasks(
+        specs=[s for s in specs if s is not None],
+        nps=[drafts[i].obj for i in keep],
+        units=[u for u in units if u.tasks],
+        groups=groups,
+    )
 
 
 class TaskBuilder:
@@ -114,192 +153,217 @@ class TaskBuilder:
 
     # one draft -> BaseTaskSpec ------------------------------------------------------------------------
     def spec(self, d: Draft, text: str) -> BaseTaskSpec | None:
-        obj: NP | None = None
-        container: NP | None = None
-        light: NP | None = None
-        states: list[str] = []
-        sliced = False
-        count = 1
-        examine = False
-        dests: list[NP] = []
+        """The base task a draft states, or None (with the reason in `unparsed`) when it states none."""
+        r = _Reading()
         for fr, it in d.frames:
-            o = it.obj
-            if fr.cls in {"clean", "heat", "cool"}:
-                states.append(fr.cls)
-            if fr.cls == "fill":
-                states.append("clean")
-            if fr.cls == "slice":
-                sliced = sliced or obj is not None or (o is not None and not o.pronoun)
-            if fr.cls == "examine":
-                examine = True
-            if o is not None and o.is_lamp() and fr.cls in {"light", "examine"}:
-                light = o
-                o = None
-            for np in [o] + [np for _, np in it.pps]:
-                if np is None:
-                    continue
-                if np.is_lamp() and (fr.cls in {"light", "examine", "pick"} or fr.light_on):
-                    light = light or np
-            if o is not None and not o.pronoun and not o.empty:
-                if obj is None:
-                    obj = o
-                elif container is None and dests and same(o, dests[-1]) and o.is_movable_receptacle():
-                    container = o  # "put a card in a bowl and put the bowl on the desk"
-                elif same(o, container):
-                    pass
-                elif not same(o, obj) and o.is_lamp():
-                    light = o
-            if o is not None:
-                states += sorted(o.states)
-                sliced = sliced or o.sliced
-                if o.water:
-                    states.append("clean")
-                count = max(count, o.count)
-            # "with X in it", "containing X", "holding X", "along with the other set"
-            for p, np in it.pps:
-                if p in {"along with", "together with"} and np.entry is None and not np.head:
-                    count = max(count, 2)  # "one set of keys along with the other set"
-                    continue
-                if p in G.WITH_PREPS and not np.pronoun:
-                    if p == "with" and is_fixed(np):
-                        continue  # "place it with the coffee machine": the destination (dest_of)
-                    if np.water:
-                        states.append("clean")
-                        continue
-                    if np.is_lamp():
-                        light = np
-                        continue
-                    if p in {"along with", "together with"} and (same(np, obj) or np.entry is None):
-                        count = max(count, 2)
-                        continue
-                    if obj is None and (light is not None or fr.cls == "light" or fr.light_on):
-                        obj = np  # "turn on a lamp with a book in hand"
-                        continue
-                    if obj is not None and np.entry is not None and container is None:
-                        if obj.is_movable_receptacle() and not np.is_movable_receptacle():
-                            container, obj = obj, np
-                        elif np.is_movable_receptacle():
-                            container = np
-                        elif obj.is_movable_receptacle():
-                            container, obj = obj, np
-                    states += sorted(np.states)
-                    sliced = sliced or np.sliced
-                if p in G.LIGHT_PREPS and np.is_lamp():
-                    light = np
-                if (
-                    p == ""
-                    and np.entry is not None
-                    and obj is not None
-                    and not np.pronoun
-                    and container is None
-                ):
-                    # "a bowl and a pencil": one movable receptacle and its content
-                    if obj.is_movable_receptacle() and not np.is_movable_receptacle():
-                        container, obj = obj, np
-                    elif np.is_movable_receptacle() and not obj.is_movable_receptacle():
-                        container = np
-                    elif same(np, obj):
-                        count = max(count, 2)
-            dst = dest_of(it, fr.cls) or near_dest(it)
-            if any(p == THEN_TO for p, _ in it.pps):  # stops on the way come before the destination
-                dests += [
-                    np for p, np in it.pps if p in G.DEST_PREPS and np.is_receptacle() and np is not dst
-                ]
-            if fr.cls == "trash" and dst is None:
-                dst = parse_np("garbage can")
-            if dst is not None and not dst.is_lamp():
-                recs = [
-                    np for p, np in it.pps if p in G.DEST_PREPS and np.is_receptacle() and p not in UNDER
-                ]
-                movable = [np for np in recs if np.is_movable_receptacle()]
-                fixed = [np for np in recs if not np.is_movable_receptacle()]
-                if (
-                    obj is not None
-                    and container is None
-                    and not obj.is_movable_receptacle()
-                    and movable
-                    and fixed
-                ):
-                    # "place the spoon in a cup to the counter", "place the watch on the table on a plate"
-                    container = movable[0]
-                    dests.append(container)
-                    dst = fixed[-1]
-                dests.append(dst)
+            _read_frame(r, fr, it)
+        obj = r.obj
         if obj is None:
-            if light is not None:
+            if r.light is not None:
                 self.unparsed.append(f"nothing to hold under the lamp in: {text}")
             elif d.frames and d.frames[0][0].cls not in {"none", "other"}:
                 self.unparsed.append(f"no object to act on in: {text}")
             return None
-        if light is not None or examine:
-            if (
-                obj.is_receptacle()
-                and not obj.is_movable_receptacle()
-                and obj.entry is not None
-                and obj.entry.canonical not in {"Box"}
-            ):
-                self.unparsed.append(f"cannot hold the {obj.text!r} to look at it: {text}")
-                return None
-        # a content placed into a movable receptacle that is then moved: place_in_container
-        final = dests[-1] if dests else None
-        if (
-            container is None
-            and len(dests) >= 2
-            and dests[-2].is_movable_receptacle()
-            and not obj.is_movable_receptacle()
-        ):
-            container = dests[-2]
-        if container is not None and final is not None and same(final, container):
-            final = dests[-2] if len(dests) >= 2 and not same(dests[-2], container) else None
-            if final is None:
-                container = None
-                final = dests[-1]
-        # intermediate appliances imply a state change ("put it in the microwave, then on the counter")
-        for mid in dests[:-1]:
-            if mid.entry is not None and not same(mid, container):
-                st = {"Microwave": "heat", "Fridge": "cool", "SinkBasin": "clean"}.get(mid.entry.canonical)
-                if st:
-                    states.append(st)
-        if light is None and examine:
-            light = parse_np("lamp")
-        kind: str
-        state = next((s for s in ("heat", "cool", "clean") if s in states), None)
-        if light is not None:
-            kind = "examine_in_light"
-        elif final is None:
+        if (r.light is not None or r.examine) and _unholdable(obj):
+            self.unparsed.append(f"cannot hold the {obj.text!r} to look at it: {text}")
+            return None
+        final = _settle_container(r, obj)
+        if r.light is None and r.examine:
+            r.light = parse_np("lamp")
+        if r.light is None and final is None:
             self.unparsed.append(f"no destination for the {obj.text or obj.key!r} in: {text}")
             return None
-        elif container is not None:
-            kind = "place_in_container"
-        elif state:
-            kind = {"heat": "heat_place", "cool": "cool_place", "clean": "clean_place"}[state]
-        elif count >= 2:
-            kind = "place_two"
-        else:
-            kind = "place"
+        kind = _kind_of(r)
         fields = self.ground(
             kind,
-            sliced,
+            r.sliced,
             {
                 "object": obj,
-                "container": container if kind == "place_in_container" else None,
+                "container": r.container if kind == "place_in_container" else None,
                 "receptacle": final if kind != "examine_in_light" else None,
-                "light": light if kind == "examine_in_light" else None,
+                "light": r.light if kind == "examine_in_light" else None,
             },
         )
-        if fields is None:
+        if fields is None or fields["object"] is None:
             return None
-        spec = BaseTaskSpec(
-            kind=kind,
+        return BaseTaskSpec(
+            kind=kind,  # type: ignore[arg-type]  # one of _kind_of's literals
             object=fields["object"],
-            count=min(count, 2) if kind == "place_two" else count,
-            sliced=sliced,
+            count=min(r.count, 2) if kind == "place_two" else r.count,
+            sliced=r.sliced,
             text=text,
             container=fields["container"],
             receptacle=fields["receptacle"],
             light=fields["light"],
         )
-        if kind == "place_two":
-            spec.count = 2
-        return spec
 
+
+@dataclass
+class _Reading:
+    """What the frames of one draft say about its task, gathered frame by frame."""
+
+    obj: NP | None = None
+    container: NP | None = None
+    light: NP | None = None
+    states: list[str] = field(default_factory=list)
+    sliced: bool = False
+    count: int = 1
+    examine: bool = False
+    dests: list[NP] = field(default_factory=list)
+
+
+def _read_frame(r: _Reading, fr: Frame, it: Item) -> None:
+    o = it.obj
+    if fr.cls in {"clean", "heat", "cool"}:
+        r.states.append(fr.cls)
+    if fr.cls == "fill":
+        r.states.append("clean")
+    if fr.cls == "slice":
+        r.sliced = r.sliced or r.obj is not None or (o is not None and not o.pronoun)
+    if fr.cls == "examine":
+        r.examine = True
+    if o is not None and o.is_lamp() and fr.cls in {"light", "examine"}:
+        r.light = o
+        o = None
+    for np in [o] + [np for _, np in it.pps]:
+        if np is not None and np.is_lamp() and (fr.cls in {"light", "examine", "pick"} or fr.light_on):
+            r.light = r.light or np
+    if o is not None:
+        _read_object(r, o)
+    for p, np in it.pps:
+        _read_pp(r, fr, p, np)
+    _read_destination(r, fr, it)
+
+
+def _read_object(r: _Reading, o: NP) -> None:
+    if not o.pronoun and not o.empty:
+        if r.obj is None:
+            r.obj = o
+        elif r.container is None and r.dests and same(o, r.dests[-1]) and o.is_movable_receptacle():
+            r.container = o  # "put a card in a bowl and put the bowl on the desk"
+        elif same(o, r.container):
+            pass
+        elif not same(o, r.obj) and o.is_lamp():
+            r.light = o
+    r.states += sorted(o.states)
+    r.sliced = r.sliced or o.sliced
+    if o.water:
+        r.states.append("clean")
+    r.count = max(r.count, o.count)
+
+
+def _read_pp(r: _Reading, fr: Frame, p: str, np: NP) -> None:
+    """ "with X in it", "containing X", "holding X", "along with the other set", "by the light of a lamp",
+    and a second listed object ("a bowl and a pencil")."""
+    if p in {"along with", "together with"} and np.entry is None and not np.head:
+        r.count = max(r.count, 2)  # "one set of keys along with the other set"
+        return
+    if p in G.WITH_PREPS and not np.pronoun and _read_with(r, fr, p, np):
+        return
+    if p in G.LIGHT_PREPS and np.is_lamp():
+        r.light = np
+    if p == "" and np.entry is not None and r.obj is not None and not np.pronoun and r.container is None:
+        # "a bowl and a pencil": one movable receptacle and its content
+        if r.obj.is_movable_receptacle() and not np.is_movable_receptacle():
+            r.container, r.obj = r.obj, np
+        elif np.is_movable_receptacle() and not r.obj.is_movable_receptacle():
+            r.container = np
+        elif same(np, r.obj):
+            r.count = max(r.count, 2)
+
+
+def _read_with(r: _Reading, fr: Frame, p: str, np: NP) -> bool:
+    """One "with"-like phrase; True when it is settled (nothing else to read from it)."""
+    if p == "with" and is_fixed(np):
+        return True  # "place it with the coffee machine": the destination (dest_of)
+    if np.water:
+        r.states.append("clean")
+        return True
+    if np.is_lamp():
+        r.light = np
+        return True
+    if p in {"along with", "together with"} and (same(np, r.obj) or np.entry is None):
+        r.count = max(r.count, 2)
+        return True
+    if r.obj is None and (r.light is not None or fr.cls == "light" or fr.light_on):
+        r.obj = np  # "turn on a lamp with a book in hand"
+        return True
+    if r.obj is not None and np.entry is not None and r.container is None:
+        if r.obj.is_movable_receptacle() and not np.is_movable_receptacle():
+            r.container, r.obj = r.obj, np
+        elif np.is_movable_receptacle():
+            r.container = np
+        elif r.obj.is_movable_receptacle():
+            r.container, r.obj = r.obj, np
+    r.states += sorted(np.states)
+    r.sliced = r.sliced or np.sliced
+    return False
+
+
+def _read_destination(r: _Reading, fr: Frame, it: Item) -> None:
+    dst = dest_of(it, fr.cls) or near_dest(it)
+    if any(p == THEN_TO for p, _ in it.pps):  # stops on the way come before the destination
+        r.dests += [np for p, np in it.pps if p in G.DEST_PREPS and np.is_receptacle() and np is not dst]
+    if fr.cls == "trash" and dst is None:
+        dst = parse_np("garbage can")
+    if dst is None or dst.is_lamp():
+        return
+    recs = [np for p, np in it.pps if p in G.DEST_PREPS and np.is_receptacle() and p not in UNDER]
+    movable = [np for np in recs if np.is_movable_receptacle()]
+    fixed = [np for np in recs if not np.is_movable_receptacle()]
+    obj = r.obj
+    if obj is not None and r.container is None and not obj.is_movable_receptacle() and movable and fixed:
+        # "place the spoon in a cup to the counter", "place the watch on the table on a plate"
+        r.container = movable[0]
+        r.dests.append(r.container)
+        dst = fixed[-1]
+    r.dests.append(dst)
+
+
+def _unholdable(obj: NP) -> bool:
+    """A fixed receptacle (not a box) cannot be held under a lamp."""
+    return (
+        obj.is_receptacle()
+        and not obj.is_movable_receptacle()
+        and obj.entry is not None
+        and obj.entry.canonical not in {"Box"}
+    )
+
+
+def _settle_container(r: _Reading, obj: NP) -> NP | None:
+    """The final destination; a content placed into a movable receptacle that is then moved gets that
+    receptacle as its container, and appliances on the way add their state change."""
+    dests, container = r.dests, r.container
+    final = dests[-1] if dests else None
+    if (
+        container is None
+        and len(dests) >= 2
+        and dests[-2].is_movable_receptacle()
+        and not (obj.is_movable_receptacle())
+    ):
+        container = dests[-2]
+    if container is not None and final is not None and same(final, container):
+        final = dests[-2] if len(dests) >= 2 and not same(dests[-2], container) else None
+        if final is None:
+            container = None
+            final = dests[-1]
+    # intermediate appliances imply a state change ("put it in the microwave, then on the counter")
+    for mid in dests[:-1]:
+        if mid.entry is not None and not same(mid, container):
+            st = {"Microwave": "heat", "Fridge": "cool", "SinkBasin": "clean"}.get(mid.entry.canonical)
+            if st:
+                r.states.append(st)
+    r.container = container
+    return final
+
+
+def _kind_of(r: _Reading) -> str:
+    """The task kind, once the object and (unless a lamp is involved) the destination are known."""
+    state = next((s for s in ("heat", "cool", "clean") if s in r.states), None)
+    if r.light is not None:
+        return "examine_in_light"
+    if r.container is not None:
+        return "place_in_container"
+    if state:
+        return {"heat": "heat_place", "cool": "cool_place", "clean": "clean_place"}[state]
+    return "place_two" if r.count >= 2 else "place"
