@@ -39,8 +39,29 @@ THEN_TO = "then to"  # a further destination after a stop ("to the sink and fina
 
 
 def parse_frame(text: str, start: int = 0, joiner: str = "") -> Frame:
+    """One clause -> its verb class, verb and items (each an object with its prepositional phrases)."""
     toks = tokens(text)
-    words = [w for w, _, _ in toks]
+    cls, verb, i, light_on = _read_verb([w for w, _, _ in toks])
+    items = _ItemReader(text, toks, cls, light_on).read(i)
+    _join_further_destinations(items)
+    # "to region G, H and I": bare noun phrases after an item with a destination continue that destination
+    ambiguous = len(items) > 1 and items[-1].obj is not None and not items[-1].pps and bool(items[-2].pps)
+    _share_colour_nouns(items)
+    return Frame(
+        text=text,
+        start=start,
+        end=start + len(text),
+        cls=cls,
+        verb=verb,
+        items=items,
+        light_on=light_on,
+        joiner=joiner,
+        ambiguous=ambiguous,
+    )
+
+
+def _read_verb(words: list[str]) -> tuple[str, str, int, bool]:
+    """(verb class, verb, index of the first word after the verb and its particles, switches a light)."""
     cls, verb, i = "none", "", 0
     if words and words[0] in G.VERBS:
         cls, verb = G.VERBS[words[0]]
@@ -65,89 +86,100 @@ def parse_frame(text: str, start: int = 0, joiner: str = "") -> Frame:
         light_on = True
     if verb in {"lit", "illuminate"}:
         light_on = True
-    # segments: prepositions start a PP; "," / "and" separate list items
-    items: list[Item] = []
-    cur_prep: str | None = None
-    cur: list[tuple[str, int, int]] = []
-    item = Item(obj=None)
+    return cls, verb, i, light_on
 
-    def flush() -> None:
-        nonlocal cur, cur_prep
+
+@dataclass
+class _ItemReader:
+    """Reads the words after the verb: prepositions start a PP; "," / "and" separate list items."""
+
+    text: str
+    toks: list[tuple[str, int, int]]
+    cls: str
+    light_on: bool
+    items: list[Item] = field(default_factory=list)
+    item: Item = field(default_factory=lambda: Item(obj=None))
+    cur: list[tuple[str, int, int]] = field(default_factory=list)  # the words of the current noun phrase
+    cur_prep: str | None = None
+
+    def read(self, i: int) -> list[Item]:
+        words = [w for w, _, _ in self.toks]
+        while i < len(words):
+            i = self._step(words, i)
+        self._flush()
+        if self.item.obj is not None or self.item.pps or not self.items:
+            self.items.append(self.item)
+        return self.items
+
+    def _flush(self) -> None:
+        item, cur = self.item, self.cur
         if cur:
-            np_text = text[cur[0][1] : cur[-1][2]]
-            np = parse_np(np_text)
-            if cur_prep is None:
+            np = parse_np(self.text[cur[0][1] : cur[-1][2]])
+            if self.cur_prep is None:
                 if item.obj is None:
                     item.obj = np
                 else:
                     item.pps.append(("", np))
             else:
-                item.pps.append((cur_prep, np))
-        elif cur_prep is not None and cur_prep in {"inside", "in", "on"}:
-            item.pps.append((cur_prep, NP(text="", pronoun=True)))
-        cur = []
+                item.pps.append((self.cur_prep, np))
+        elif self.cur_prep is not None and self.cur_prep in {"inside", "in", "on"}:
+            item.pps.append((self.cur_prep, NP(text="", pronoun=True)))
+        self.cur = []
 
-    while i < len(words):
+    def _step(self, words: list[str], i: int) -> int:
+        """Read the word at `i`; the index of the next word to read."""
         w = words[i]
         if (
             w in SEQ_WORDS
-            and cur_prep is not None
-            and cur_prep in G.DEST_PREPS
-            and cls in {"place", "trash", "pick", "clean", "heat", "cool"}
+            and self.cur_prep is not None
+            and self.cur_prep in G.DEST_PREPS
+            and self.cls in {"place", "trash", "pick", "clean", "heat", "cool"}
             and i + 1 < len(words)
         ):
             # "in the microwave, then on the counter" / "to the sink and finally the toilet": a further
             # destination; the earlier ones become stops on the way
-            flush()
+            self._flush()
             hit = match_prep(words, i + 1)
-            i += 1 + (hit[1] if hit is not None and hit[0] in G.DEST_PREPS else 0)
-            cur_prep = THEN_TO
-            continue
-        if w in {",", "and"} or (w == "or" and cur_prep is None):
-            flush()
+            self.cur_prep = THEN_TO
+            return i + 1 + (hit[1] if hit is not None and hit[0] in G.DEST_PREPS else 0)
+        if w in {",", "and"} or (w == "or" and self.cur_prep is None):
+            self._flush()
             # a new list item starts when the next words are a noun phrase without preposition
             nxt = words[i + 1] if i + 1 < len(words) else ""
-            if (
-                nxt
-                and nxt not in {",", "and"}
-                and match_prep(words, i + 1) is None
-                and nxt not in SEQ_WORDS
-            ):
-                if item.obj is not None or item.pps:
-                    items.append(item)
-                    item = Item(obj=None)
-                cur_prep = None
-            i += 1
-            continue
-        if (
-            light_on
-            and w in {"on", "off"}
-            and (
-                i + 1 >= len(words)
-                or words[i + 1] in DETERMINERS
-                or words[i + 1] in {",", "and", "while", "with"}
-                or words[i + 1] in G.VERBS
-                or find_mentions(words[i + 1])
-            )
-        ):
-            flush()  # "turn on the lamp", "turn the lamp on": a particle, not "on the table"
-            cur_prep = None
-            i += 1
-            continue
+            if nxt and nxt not in {",", "and"} and match_prep(words, i + 1) is None and nxt not in SEQ_WORDS:
+                if self.item.obj is not None or self.item.pps:
+                    self.items.append(self.item)
+                    self.item = Item(obj=None)
+                self.cur_prep = None
+            return i + 1
+        if self.light_on and w in {"on", "off"} and _particle_position(words, i):
+            self._flush()  # "turn on the lamp", "turn the lamp on": a particle, not "on the table"
+            self.cur_prep = None
+            return i + 1
         hit = match_prep(words, i)
-        if hit is not None and not (hit[0] == "of" and cur):
-            flush()
-            cur_prep = hit[0]
-            i += hit[1]
-            continue
-        cur.append(toks[i])
-        i += 1
-    flush()
-    if item.obj is not None or item.pps or not items:
-        items.append(item)
-    ambiguous = False
-    # "from the bath to the sink and finally the toilet": a sequence word before a fixed receptacle adds a
-    # further destination (the earlier ones are stops on the way)
+        if hit is not None and not (hit[0] == "of" and self.cur):
+            self._flush()
+            self.cur_prep = hit[0]
+            return i + hit[1]
+        self.cur.append(self.toks[i])
+        return i + 1
+
+
+def _particle_position(words: list[str], i: int) -> bool:
+    """Is the "on"/"off" at `i` a particle of "turn on" (followed by nothing, a determiner, a joiner, a verb
+    or an object word)?"""
+    return (
+        i + 1 >= len(words)
+        or words[i + 1] in DETERMINERS
+        or words[i + 1] in {",", "and", "while", "with"}
+        or words[i + 1] in G.VERBS
+        or bool(find_mentions(words[i + 1]))
+    )
+
+
+def _join_further_destinations(items: list[Item]) -> None:
+    """ "from the bath to the sink and finally the toilet": a sequence word before a fixed receptacle adds a
+    further destination (the earlier ones are stops on the way)."""
     while (
         len(items) > 1
         and items[-1].obj is not None
@@ -159,10 +191,10 @@ def parse_frame(text: str, start: int = 0, joiner: str = "") -> Frame:
     ):
         items[-2].pps.append((THEN_TO, items[-1].obj))
         items.pop()
-    # "to region G, H and I": bare noun phrases after an item with a destination continue that destination
-    if len(items) > 1 and items[-1].obj is not None and not items[-1].pps and items[-2].pps:
-        ambiguous = True
-    # "the red and blue blocks": colour words share the noun of the last item
+
+
+def _share_colour_nouns(items: list[Item]) -> None:
+    """ "the red and blue blocks": colour words share the noun of the last item."""
     if len(items) > 1 and items[-1].obj is not None:
         last_words = [w for w, _, _ in tokens(items[-1].obj.text) if w not in DETERMINERS]
         if last_words and last_words[0] in COLOURS and len(last_words) > 1:
@@ -171,17 +203,6 @@ def parse_frame(text: str, start: int = 0, joiner: str = "") -> Frame:
                 ws = [w for w, _, _ in tokens(it.obj.text) if w not in DETERMINERS] if it.obj else []
                 if ws and all(w in COLOURS for w in ws):
                     it.obj = parse_np(" ".join(ws) + " " + noun)
-    return Frame(
-        text=text,
-        start=start,
-        end=start + len(text),
-        cls=cls,
-        verb=verb,
-        items=items,
-        light_on=light_on,
-        joiner=joiner,
-        ambiguous=ambiguous,
-    )
 
 
 # ----- drafts -> tasks ---------------------------------------------------------------------------------
@@ -251,5 +272,3 @@ def near_dest(item: Item) -> NP | None:
         ):
             return parse_np("cabinet")
     return None
-
-
