@@ -157,6 +157,7 @@ def tokens(text: str) -> list[tuple[str, int, int]]:
 
 # ----- noun phrases ----------------------------------------------------------------------------------
 def parse_np(text: str) -> NP:
+    """A noun phrase: its head (a lexicon entry, else its own words), pronoun, states, slices, count."""
     np = NP(text=text.strip())
     words = [w for w, _, _ in tokens(text) if w != ","]
     if not words:
@@ -169,6 +170,24 @@ def parse_np(text: str) -> NP:
         all(w in G.PRONOUNS | DETERMINERS for w in words) and any(w in G.PRONOUNS for w in words)
     ):
         np.pronoun = any(w in G.PRONOUNS for w in words) or not content
+    _read_modifiers(np, words)
+    real = [m for m in mentions if not m.entry.generic]
+    if real:
+        # the head is the first mention unless it is followed by "of" + another ("bar of soap" is one entry)
+        m = real[0]
+        np.entry, np.plural = m.entry, m.plural
+        if m.plural and m.entry.canonical not in {"KeyChain"}:
+            np.count = max(np.count, 2)
+    elif mentions:
+        np.generic = True
+        np.plural = mentions[0].plural
+    if not np.entry and not np.pronoun:
+        _read_own_head(np, words, content)
+    return np
+
+
+def _read_modifiers(np: NP, words: list[str]) -> None:
+    """State words (washed, heated, sliced), slice nouns, water, numbers."""
     for w in words:
         if w in G.STATE_WORDS:
             st = G.STATE_WORDS[w]
@@ -184,40 +203,27 @@ def parse_np(text: str) -> NP:
             np.count = max(np.count, G.NUMBERS[w])
     if "toast" in words:
         np.sliced = True
-    real = [m for m in mentions if not m.entry.generic]
-    if real:
-        # the head is the first mention unless it is followed by "of" + another ("bar of soap" is one entry)
-        m = real[0]
-        np.entry, np.plural = m.entry, m.plural
-        if m.plural and m.entry.canonical not in {"KeyChain"}:
-            np.count = max(np.count, 2)
-    elif mentions:
-        np.generic = True
-        np.plural = mentions[0].plural
-    if not np.entry and not np.pronoun:
-        head = [
-            w
-            for w in content
-            if w not in G.STATE_WORDS
-            and w not in G.SLICE_NOUNS
-            and w not in FILLER
-            and w not in G.WATER_WORDS
-        ]
-        if np.generic:
-            head = []
-        np.head = " ".join(head)
-        if (
-            np.head
-            and not np.generic
-            and words[-1].endswith("s")
-            and not words[-1].endswith("ss")
-            and len(head) == 1
-        ):
-            np.plural = True
-            np.count = max(np.count, 2)
-    if np.pronoun and np.entry is None and not np.head and "same" in words:
-        np.pronoun = True
-    return np
+
+
+def _read_own_head(np: NP, words: list[str], content: list[str]) -> None:
+    """No lexicon entry: the content words name the thing ("green apple", "region h"); "-s" marks plural."""
+    head = [
+        w
+        for w in content
+        if w not in G.STATE_WORDS and w not in G.SLICE_NOUNS and w not in FILLER and w not in G.WATER_WORDS
+    ]
+    if np.generic:
+        head = []
+    np.head = " ".join(head)
+    if (
+        np.head
+        and not np.generic
+        and words[-1].endswith("s")
+        and not words[-1].endswith("ss")
+        and len(head) == 1
+    ):
+        np.plural = True
+        np.count = max(np.count, 2)
 
 
 # ----- clauses and frames ------------------------------------------------------------------------------
@@ -226,5 +232,3 @@ def match_prep(words: list[str], i: int) -> tuple[str, int] | None:
         if tuple(words[i : i + len(p)]) == p:
             return " ".join(p), len(p)
     return None
-
-
