@@ -11,6 +11,7 @@ from nl2hltl2plan.language.offline.phrases import match_prep, parse_np, tokens
 
 
 def _is_verb_at(words: list[tuple[str, int, int]], i: int) -> bool:
+    """Does a verb clause start at word `i` (a verb first in the sentence or after a joiner)?"""
     w = words[i][0]
     if w not in G.VERBS:
         return False
@@ -171,4 +172,3 @@ def expand_gapping(
             whole = text if own else f"{v} {text}"
             out.append(Clause(label, s0, s0 + len(seg), j, gap if i in sharing else -1, label, whole))
     return out
-

@@ -49,6 +49,7 @@ class DraftBuilder:
         self.last_dest = ""
 
     def add_sentence(self, s: Sentence) -> None:
+        """Read the clauses of one sentence into drafts and units, then apply the sentence's markers."""
         clauses = expand_gapping(
             split_clauses(s.body), self.last_verb, self.last_dest, gap_base=100 * s.index
         )
@@ -63,6 +64,7 @@ class DraftBuilder:
         return self.next_group
 
     def _add_clause(self, clause: Clause, st: _SentenceState) -> None:
+        """One clause -> its frame; its items continue the last draft or start new ones (one unit)."""
         fr = parse_frame(clause.text, st.sentence.offset + clause.start, clause.joiner)
         if fr.cls not in {"none", "other"}:
             self.last_verb = clause.text.split()[0]
@@ -130,6 +132,7 @@ class DraftBuilder:
         return False
 
     def _share_destinations(self, fr: Frame, st: _SentenceState) -> None:
+        """Items without a destination take the heading's (context) or the one stated last in the list."""
         if st.context:
             for it in fr.items:
                 if it.obj is not None and not any(p in G.DEST_PREPS for p, _ in it.pps):
@@ -143,6 +146,7 @@ class DraftBuilder:
             fr.items = merge_items(fr.items, self.b)
 
     def _group_of(self, clause: Clause, fr: Frame, st: _SentenceState) -> int:
+        """The group of the clause's tasks: an elided-verb list, a heading, a list of objects; else -1."""
         if clause.gap >= 0:
             if clause.gap not in self.gap_groups:
                 self.gap_groups[clause.gap] = self._new_group(clause.whole)

@@ -16,9 +16,6 @@ class Item:
     obj: NP | None
     pps: list[tuple[str, NP]] = field(default_factory=list)
 
-    def pp(self, preps: set[str]) -> list[NP]:
-        return [np for p, np in self.pps if p in preps]
-
 
 @dataclass
 class Frame:
@@ -207,6 +204,7 @@ def _share_colour_nouns(items: list[Item]) -> None:
 
 # ----- drafts -> tasks ---------------------------------------------------------------------------------
 def same(a: NP | None, b: NP | None) -> bool:
+    """Do two noun phrases name the same kind of thing (the same lexicon entry or the same words)?"""
     return a is not None and b is not None and bool(a.key) and a.key == b.key
 
 
@@ -262,13 +260,10 @@ def is_fixed(np: NP) -> bool:
 
 
 def near_dest(item: Item) -> NP | None:
+    """ "by the sink" -> the counter, "under the sink" -> the cabinet."""
     for p, np in item.pps:
         if p in G.NEAR_PREPS and np.entry is not None and np.entry.canonical == "SinkBasin":
             return parse_np("counter")
-        if (
-            p in {"under", "underneath", "below", "beneath"}
-            and np.entry is not None
-            and np.entry.canonical == "SinkBasin"
-        ):
+        if p in UNDER and np.entry is not None and np.entry.canonical == "SinkBasin":
             return parse_np("cabinet")
     return None

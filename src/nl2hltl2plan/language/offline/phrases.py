@@ -152,6 +152,7 @@ class NP:
 
 
 def tokens(text: str) -> list[tuple[str, int, int]]:
+    """(lower-case word or comma, start, end) for each word of `text`."""
     return [(m.group(0).lower(), m.start(), m.end()) for m in _WORD.finditer(text)]
 
 
@@ -228,6 +229,7 @@ def _read_own_head(np: NP, words: list[str], content: list[str]) -> None:
 
 # ----- clauses and frames ------------------------------------------------------------------------------
 def match_prep(words: list[str], i: int) -> tuple[str, int] | None:
+    """The preposition starting at word `i` (the first of `grammar.PREPOSITIONS` that fits) and its length."""
     for p in G.PREPOSITIONS:
         if tuple(words[i : i + len(p)]) == p:
             return " ".join(p), len(p)

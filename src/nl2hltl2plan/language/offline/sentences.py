@@ -121,6 +121,7 @@ def relation_sentence(body: str) -> RelationSentence | None:
 
 
 def normalize(text: str) -> str:
+    """Straight quotes, a space after a full stop, no parenthetical remarks, single spaces."""
     text = text.replace("\u2019", "'").replace("\u2018", "'").replace("\u201c", '"').replace("\u201d", '"')
     text = re.sub(r"(?<=[a-z])\.(?=[A-Za-z])", ". ", text)
     text = re.sub(r"\s*\([^)]*\)", "", text)  # parenthetical remarks: "(where the red block is now)"
@@ -128,6 +129,7 @@ def normalize(text: str) -> str:
 
 
 def split_sentences(text: str) -> list[tuple[str, int]]:
+    """(sentence, start) for each sentence, split at `.`, `;`, `!`, `?`."""
     out: list[tuple[str, int]] = []
     pos = 0
     for m in re.finditer(r"[.;!?]+(?:\s+|$)", text):

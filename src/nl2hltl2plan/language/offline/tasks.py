@@ -80,6 +80,8 @@ def build_tasks(drafts: list[Draft], units: list[Unit], b: TaskBuilder, text: st
 
 
 class TaskBuilder:
+    """Grounds drafts into `BaseTaskSpec`s; keeps what it cannot read (`unparsed`) and grounding `issues`."""
+
     def __init__(self, grounder: Grounder | None, strict: bool, look: AffordanceLookup | None = None) -> None:
         self.g = grounder
         self.look = look
@@ -89,6 +91,7 @@ class TaskBuilder:
 
     # grounding -----------------------------------------------------------------------------------------
     def types(self, np: NP | None, role: str) -> list[str] | None:
+        """The candidate types of a noun phrase (its own words, capitalised, when there is no scene)."""
         if np is None:
             return None
         if self.g is None:
@@ -213,6 +216,7 @@ class _Reading:
 
 
 def _read_frame(r: _Reading, fr: Frame, it: Item) -> None:
+    """Add what one clause item says: its verb's state change, its object, its phrases, its destination."""
     o = it.obj
     if fr.cls in {"clean", "heat", "cool"}:
         r.states.append(fr.cls)
@@ -236,6 +240,7 @@ def _read_frame(r: _Reading, fr: Frame, it: Item) -> None:
 
 
 def _read_object(r: _Reading, o: NP) -> None:
+    """The first object is the task's; a later one may be its container or a lamp."""
     if not o.pronoun and not o.empty:
         if r.obj is None:
             r.obj = o
@@ -301,6 +306,7 @@ def _read_with(r: _Reading, fr: Frame, p: str, np: NP) -> bool:
 
 
 def _read_destination(r: _Reading, fr: Frame, it: Item) -> None:
+    """Where the item goes (stops on the way first); "in a cup to the counter" also names a container."""
     dst = dest_of(it, fr.cls) or near_dest(it)
     if any(p == THEN_TO for p, _ in it.pps):  # stops on the way come before the destination
         r.dests += [np for p, np in it.pps if p in G.DEST_PREPS and np.is_receptacle() and np is not dst]
