@@ -11,6 +11,7 @@ from nl2hltl2plan.language.offline.frames import parse_frame
 from nl2hltl2plan.language.offline.phrases import NP, parse_np, tokens
 from nl2hltl2plan.language.offline.tasks import Draft, TaskBuilder
 from nl2hltl2plan.language.tasks import BaseTaskSpec
+from nl2hltl2plan.worlds.tasks import Kind
 
 
 def _ref_parts(ref: str) -> list[str]:
@@ -98,17 +99,23 @@ def _hits_by_object(
     return hit
 
 
+_STATE_KINDS: dict[str, Kind] = {
+    "clean": "clean_place",
+    "heat": "heat_place",
+    "cool": "cool_place",
+    "fill": "clean_place",
+}
+
+
 def self_state(ref: str, specs: list[BaseTaskSpec]) -> None:
     """ "After refrigerating the pan, pick up a pan ... and put it on the table": the reference is a state
     change of the task itself, not an order."""
     words = [w for w, _, _ in tokens(ref)]
     cls = G.VERBS.get(words[0], ("", ""))[0] if words else ""
-    kind = {"clean": "clean_place", "heat": "heat_place", "cool": "cool_place", "fill": "clean_place"}.get(
-        cls
-    )
+    kind = _STATE_KINDS.get(cls)
     for s in specs:
         if kind and s.kind in {"place", "place_two"} and s.count == 1:
-            s.kind = kind  # type: ignore[assignment]
+            s.kind = kind
 
 
 def new_tasks_from_ref(ref: str, b: TaskBuilder, text: str) -> list[BaseTaskSpec]:

@@ -19,6 +19,7 @@ from nl2hltl2plan.language.offline.frames import (
 )
 from nl2hltl2plan.language.offline.phrases import DETERMINERS, FILLER, NP, parse_np, tokens
 from nl2hltl2plan.language.tasks import BaseTaskSpec
+from nl2hltl2plan.worlds.tasks import Kind
 
 
 @dataclass
@@ -190,7 +191,7 @@ class TaskBuilder:
         if fields is None or fields["object"] is None:
             return None
         return BaseTaskSpec(
-            kind=kind,  # type: ignore[arg-type]  # one of _kind_of's literals
+            kind=kind,
             object=fields["object"],
             count=min(r.count, 2) if kind == "place_two" else r.count,
             sliced=r.sliced,
@@ -363,7 +364,10 @@ def _settle_container(r: _Reading, obj: NP) -> NP | None:
     return final
 
 
-def _kind_of(r: _Reading) -> str:
+_STATE_KINDS: dict[str, Kind] = {"heat": "heat_place", "cool": "cool_place", "clean": "clean_place"}
+
+
+def _kind_of(r: _Reading) -> Kind:
     """The task kind, once the object and (unless a lamp is involved) the destination are known."""
     state = next((s for s in ("heat", "cool", "clean") if s in r.states), None)
     if r.light is not None:
@@ -371,5 +375,5 @@ def _kind_of(r: _Reading) -> str:
     if r.container is not None:
         return "place_in_container"
     if state:
-        return {"heat": "heat_place", "cool": "cool_place", "clean": "clean_place"}[state]
+        return _STATE_KINDS[state]
     return "place_two" if r.count >= 2 else "place"
