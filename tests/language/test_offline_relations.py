@@ -1,5 +1,8 @@
 """Step 6 of the offline parser: order markers -> `before` pairs."""
 
+import pytest
+
+from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.offline.drafts import DraftBuilder
 from nl2hltl2plan.language.offline.relations import relate
 from nl2hltl2plan.language.offline.sentences import read_sentences
@@ -37,9 +40,10 @@ def test_after_a_reference_and_a_relation_sentence() -> None:
     assert before == [("B", "A")]
 
 
-def test_contradictory_order_is_dropped_and_reported() -> None:
-    before, _, unparsed = _before(
-        "Put the pen on the desk. Then put the book on the shelf. The book should be placed before the pen."
-    )
-    assert before == []
-    assert unparsed == ["contradictory order words (cycle among ['A', 'B']); dropped"]
+def test_contradictory_order_is_refused_naming_the_cycle() -> None:
+    with pytest.raises(
+        HTTError, match=r"contradictory ordering in the instruction: A .* before B .* before A"
+    ):
+        _before(
+            "Put the pen on the desk. Then put the book on the shelf. The book should be placed before the pen."
+        )

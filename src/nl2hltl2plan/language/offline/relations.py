@@ -3,13 +3,15 @@ ANNOTATION_GUIDE rules), contradictions dropped, transitively reduced."""
 
 from __future__ import annotations
 
+from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.offline import grammar as G
 from nl2hltl2plan.language.offline.frames import IN_SENTENCE
 from nl2hltl2plan.language.offline.phrases import parse_np
 from nl2hltl2plan.language.offline.references import new_tasks_from_ref, ref_targets, self_state
 from nl2hltl2plan.language.offline.sentences import RelationSentence
 from nl2hltl2plan.language.offline.tasks import TaskBuilder, Tasks, Unit
-from nl2hltl2plan.language.tasks import task_letter, transitive_closure, transitive_reduction
+from nl2hltl2plan.language.semantic_check import find_cycle
+from nl2hltl2plan.language.tasks import task_letter, transitive_reduction
 
 Edges = set[tuple[int, int]]
 
@@ -25,7 +27,7 @@ def relate(
         _marker_edges(k, tasks, free, b, text, edges)
     _first_edges(tasks.units, free, edges)
     _sentence_edges(relations, tasks, b, edges)
-    return _order(edges, tasks, b)
+    return _order(edges, tasks)
 
 
 def _marker_edges(k: int, tasks: Tasks, free: set[int], b: TaskBuilder, text: str, edges: Edges) -> None:
@@ -113,17 +115,16 @@ def _sentence_edges(relations: list[RelationSentence], tasks: Tasks, b: TaskBuil
                     edges.add((x, y) if rel.kind == "before" else (y, x))
 
 
-def _order(edges: Edges, tasks: Tasks, b: TaskBuilder) -> list[tuple[str, str]]:
-    """Give the tasks their ids, drop the pairs of a cycle, and reduce the order transitively."""
+def _order(edges: Edges, tasks: Tasks) -> list[tuple[str, str]]:
+    """Give the tasks their ids and reduce the order transitively; a contradiction (a cycle) is
+    refused with the cycle named, never dropped: the user must say which comes first."""
     ids = [task_letter(i) for i in range(len(tasks.specs))]
     for i, s in enumerate(tasks.specs):
         s.id = ids[i]
     pairs = {(ids[a], ids[b2]) for a, b2 in edges if a != b2}
-    closure = transitive_closure(pairs, ids)
-    cyc = [(a, b2) for a, b2 in pairs if (b2, a) in closure]
-    if cyc:
-        b.unparsed.append(
-            f"contradictory order words (cycle among {sorted({x for p in cyc for x in p})}); dropped"
-        )
-        pairs -= set(cyc)
+    cycle = find_cycle(pairs)
+    if cycle is not None:
+        text = {s.id: s.text for s in tasks.specs}
+        steps = " before ".join(f"{t} ({text[t]!r})" for t in cycle)
+        raise HTTError(f"contradictory ordering in the instruction: {steps}; say which comes first")
     return list(transitive_reduction(pairs, ids))
