@@ -69,7 +69,8 @@ CASES = [
         "plan-contradictory-order",
         [
             "plan",
-            "Put the saucers in the upper rack before the cups. Put the cups in the upper rack before the saucers.",
+            "Put the saucers in the upper rack before the cups. Put the cups in the upper rack before the "
+            "saucers.",
         ],
         2,
         "contradictory ordering",
