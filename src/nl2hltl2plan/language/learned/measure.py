@@ -71,15 +71,15 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("what", choices=["valid", "test50"])
     ap.add_argument("--split", default="valid_seen", choices=["valid_seen", "valid_unseen"])
     ap.add_argument("--n-compose", type=int, default=300)
-    ap.add_argument("--override", type=float, nargs="*", default=[Policy().override])
+    ap.add_argument("--kind-override", type=float, nargs="*", default=[Policy().kind_override])
     args = ap.parse_args(argv)
     rows = validation_rows(args.split, args.n_compose) if args.what == "valid" else load_benchmark()
     print(f"{args.what} {args.split if args.what == 'valid' else ''}: {len(rows)} instructions")
     print("grammar (offline):")
     print(table(evaluate(rows, offline_generator)))
-    for ov in args.override:
-        print(f"learned (override {ov}):")
-        print(table(evaluate(rows, learned_generator(Policy(override=ov)))))
+    for ov in args.kind_override:
+        print(f"learned (kind override {ov}):")
+        print(table(evaluate(rows, learned_generator(Policy(kind_override=ov)))))
     if args.what == "test50":
         print(speed(rows))
     return 0

@@ -24,7 +24,7 @@ from typing import Any
 import numpy as np
 
 from nl2hltl2plan.errors import DataError
-from nl2hltl2plan.language.learned.data import SLOTS, Example
+from nl2hltl2plan.language.learned.data import SLOTS, Example, states_kind
 
 ARTIFACT = "slot_model.npz"
 FORMAT = 2
@@ -42,6 +42,12 @@ class SlotPrediction:
     @property
     def top_kind(self) -> str:
         return self.kind[0][0]
+
+
+def _trains(head: str, e: Example) -> bool:
+    if head == "kind":
+        return states_kind(e)
+    return head in ("sliced", "object") or bool(e.slot(head))
 
 
 def _label(e: Example, head: str) -> str:
@@ -135,7 +141,7 @@ class SlotModel:
         x = hstack(mats, format="csr")
         heads: dict[str, Head] = {}
         for head in HEADS:
-            rows = [i for i, e in enumerate(examples) if head in ("kind", "sliced", "object") or e.slot(head)]
+            rows = [i for i, e in enumerate(examples) if _trains(head, e)]
             clf = LogisticRegression(C=c, max_iter=300, random_state=seed)
             clf.fit(x[rows], [_label(examples[i], head) for i in rows])
             heads[head] = Head([str(k) for k in clf.classes_], clf.coef_.astype(np.float32),
