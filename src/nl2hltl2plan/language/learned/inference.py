@@ -31,7 +31,7 @@ ROLE_OF_KIND = {"place_in_container": ("object", "container", "receptacle"), "ex
 class Policy:
     """How grammar and model are combined (defaults chosen on valid_seen)."""
 
-    kind_override: float = 0.0  # the model's kind replaces the grammar's when its probability is this high
+    kind_override: float = 0.8  # the model's kind replaces the grammar's when its probability is this high
     override: float = 0.9  # the model replaces the grammar's slot type when its top scene type is this sure
     sliced_from_model: bool = True
     ambiguous_ratio: float = 0.5  # second candidate >= ratio * first -> reported as ambiguous
@@ -69,6 +69,8 @@ def combine(task: BaseTaskSpec, pred: SlotPrediction, types: set[str] | None, po
             ambiguities: list[Ambiguity]) -> BaseTaskSpec:
     """One base task from the grammar's reading of a clause and the model's prediction for it."""
     kind = pred.top_kind if pred.kind[0][1] >= policy.kind_override else task.kind
+    if "place_in_container" in (kind, task.kind) and kind != task.kind:
+        kind = task.kind  # a container needs a second object the grammar read (annotators often omit it)
     values: dict[str, list[str] | None] = {"object": None, "container": None, "receptacle": None, "light": None}
     for role in _roles(kind):
         values[role] = _choose(getattr(task, role), pred.slots.get(role, []), types, policy)
