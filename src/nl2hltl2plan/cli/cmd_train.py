@@ -13,7 +13,9 @@ from typing import Any
 
 
 def register(sub: Any) -> None:
-    p = sub.add_parser("train", help="train learned components (language)", description=__doc__.split("\n\n")[1])
+    p = sub.add_parser(
+        "train", help="train learned components (language)", description=__doc__.split("\n\n")[1]
+    )
     what = p.add_subparsers(dest="what", metavar="WHAT", required=True)
     lang = what.add_parser("language", help="the learned language model (slot model)")
     lang.add_argument("-o", "--output", type=Path, default=None, help="where to write the model")

@@ -24,7 +24,10 @@ from nl2hltl2plan.language.offline import parse_instruction as grammar_parse
 from nl2hltl2plan.language.result import Ambiguity
 from nl2hltl2plan.language.tasks import BaseTaskSpec, task_letter
 
-ROLE_OF_KIND = {"place_in_container": ("object", "container", "receptacle"), "examine_in_light": ("object", "light")}
+ROLE_OF_KIND = {
+    "place_in_container": ("object", "container", "receptacle"),
+    "examine_in_light": ("object", "light"),
+}
 
 
 @dataclass(frozen=True)
@@ -52,8 +55,9 @@ def _roles(kind: str) -> tuple[str, ...]:
     return ROLE_OF_KIND.get(kind, ("object", "receptacle"))
 
 
-def _choose(grammar: list[str] | None, ranked: list[tuple[str, float]], types: set[str] | None,
-            policy: Policy) -> list[str] | None:
+def _choose(
+    grammar: list[str] | None, ranked: list[tuple[str, float]], types: set[str] | None, policy: Policy
+) -> list[str] | None:
     in_scene = [t for t in grammar or [] if types is None or t in types]
     if ranked and (not in_scene or (ranked[0][1] >= policy.override and ranked[0][0] not in in_scene)):
         if grammar and not in_scene and types is not None:
@@ -65,29 +69,60 @@ def _choose(grammar: list[str] | None, ranked: list[tuple[str, float]], types: s
     return grammar or None
 
 
-def combine(task: BaseTaskSpec, pred: SlotPrediction, types: set[str] | None, policy: Policy,
-            ambiguities: list[Ambiguity]) -> BaseTaskSpec:
+def _ambiguity(
+    task: BaseTaskSpec, role: str, chosen: list[str], ranked: list[tuple[str, float]], policy: Policy
+) -> Ambiguity | None:
+    """Several scene types kept for the word (e.g. "table"), or the model's best two close: ranked."""
+    prob = dict(ranked)
+    if len(chosen) > 1:
+        total = sum(prob.get(t, 0.0) for t in chosen) or 1.0
+        cands = [(t, prob.get(t, 0.0) / total) for t in chosen]
+    elif len(ranked) > 1 and ranked[0][0] in chosen and ranked[1][1] >= policy.ambiguous_ratio * ranked[0][1]:
+        cands = ranked[:3]
+    else:
+        return None
+    return Ambiguity(
+        task=task.id,
+        role=role,
+        word=task.text,
+        candidates=[t for t, _ in cands],
+        confidence=[round(q, 3) for _, q in cands],
+    )
+
+
+def combine(
+    task: BaseTaskSpec,
+    pred: SlotPrediction,
+    types: set[str] | None,
+    policy: Policy,
+    ambiguities: list[Ambiguity],
+) -> BaseTaskSpec:
     """One base task from the grammar's reading of a clause and the model's prediction for it."""
     kind = pred.top_kind if pred.kind[0][1] >= policy.kind_override else task.kind
     if "place_in_container" in (kind, task.kind) and kind != task.kind:
         kind = task.kind  # a container needs a second object the grammar read (annotators often omit it)
-    values: dict[str, list[str] | None] = {"object": None, "container": None, "receptacle": None, "light": None}
+    values: dict[str, list[str] | None] = {
+        "object": None,
+        "container": None,
+        "receptacle": None,
+        "light": None,
+    }
     for role in _roles(kind):
         values[role] = _choose(getattr(task, role), pred.slots.get(role, []), types, policy)
-        ranked = [(t, q) for t, q in pred.slots.get(role, []) if t in (values[role] or [])] or pred.slots.get(
-            role, []
-        )
-        if len(ranked) > 1 and ranked[1][1] >= policy.ambiguous_ratio * ranked[0][1]:
-            top = ranked[:3]
-            ambiguities.append(
-                Ambiguity(task=task.id, role=role, word=task.text, candidates=[t for t, _ in top],
-                          confidence=[round(q, 3) for _, q in top])
-            )
+        amb = _ambiguity(task, role, values[role] or [], pred.slots.get(role, []), policy)
+        if amb is not None:
+            ambiguities.append(amb)
     sliced = pred.sliced >= 0.5 if policy.sliced_from_model else task.sliced
     return BaseTaskSpec(
-        id=task.id, text=task.text, kind=kind,  # type: ignore[arg-type]
-        object=values["object"] or task.object, count=2 if kind == "place_two" else 1, sliced=sliced,
-        container=values["container"], receptacle=values["receptacle"], light=values["light"],
+        id=task.id,
+        text=task.text,
+        kind=kind,  # type: ignore[arg-type]
+        object=values["object"] or task.object,
+        count=2 if kind == "place_two" else 1,
+        sliced=sliced,
+        container=values["container"],
+        receptacle=values["receptacle"],
+        light=values["light"],
     )
 
 
@@ -121,8 +156,14 @@ def parse_instruction(
     if strict and issues:
         raise WorldError(issues[0])
     return LearnedParse(
-        instruction=instruction, tasks=tasks, before=list(g.before), groups=g.groups,
-        group_texts=g.group_texts, unparsed=unparsed, issues=issues, ambiguities=ambiguities,
+        instruction=instruction,
+        tasks=tasks,
+        before=list(g.before),
+        groups=g.groups,
+        group_texts=g.group_texts,
+        unparsed=unparsed,
+        issues=issues,
+        ambiguities=ambiguities,
     )
 
 

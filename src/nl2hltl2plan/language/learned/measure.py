@@ -34,14 +34,29 @@ def learned_generator(policy: Policy | None = None) -> Generator:
 
 
 def _row_single(i: int, e: Example) -> dict[str, Any]:
-    return {"id": f"{e.trial}#{i}", "n_base": 1, "instruction": e.text, "scene": e.floor_plan,
-            "tasks": [e.as_task().model_dump()], "before": [], "feasible": True, "ambiguous": False}
+    return {
+        "id": f"{e.trial}#{i}",
+        "n_base": 1,
+        "instruction": e.text,
+        "scene": e.floor_plan,
+        "tasks": [e.as_task().model_dump()],
+        "before": [],
+        "feasible": True,
+        "ambiguous": False,
+    }
 
 
 def _row_comp(i: int, c: Composition) -> dict[str, Any]:
-    return {"id": f"compose{i}", "n_base": len(c.tasks), "instruction": c.instruction, "scene": c.scene,
-            "tasks": [t.model_dump() for t in c.tasks], "before": c.before, "feasible": True,
-            "ambiguous": False}
+    return {
+        "id": f"compose{i}",
+        "n_base": len(c.tasks),
+        "instruction": c.instruction,
+        "scene": c.scene,
+        "tasks": [t.model_dump() for t in c.tasks],
+        "before": c.before,
+        "feasible": True,
+        "ambiguous": False,
+    }
 
 
 def validation_rows(split: str, n_compose: int, seed: int = 0) -> list[dict[str, Any]]:
@@ -63,7 +78,8 @@ def speed(rows: list[dict[str, Any]]) -> str:
         t = time.perf_counter()
         gen(r["instruction"], types, r["scene"])
         ms.append(1000 * (time.perf_counter() - t))
-    return f"model load {load_s:.2f} s; median {statistics.median(ms):.1f} ms per instruction (max {max(ms):.0f})"
+    med = statistics.median(ms)
+    return f"model load {load_s:.2f} s; median {med:.1f} ms per instruction (max {max(ms):.0f})"
 
 
 def main(argv: list[str] | None = None) -> int:

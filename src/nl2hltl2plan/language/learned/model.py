@@ -128,13 +128,21 @@ class SlotModel:
             from sklearn.feature_extraction.text import TfidfVectorizer
             from sklearn.linear_model import LogisticRegression
         except ImportError as exc:
-            raise DataError("training the language model needs scikit-learn: pip install scikit-learn") from exc
+            raise DataError(
+                "training the language model needs scikit-learn: pip install scikit-learn"
+            ) from exc
         texts = [e.text.lower() for e in examples]
         specs = [("word", 1, 2, 2, 30000), ("char_wb", 2, 5, 3, 40000)]
         vecs, mats = [], []
         for analyzer, lo, hi, min_df, cap in specs:
-            v = TfidfVectorizer(analyzer=analyzer, ngram_range=(lo, hi), min_df=min_df, sublinear_tf=True,
-                                max_features=cap, dtype=np.float32)
+            v = TfidfVectorizer(
+                analyzer=analyzer,
+                ngram_range=(lo, hi),
+                min_df=min_df,
+                sublinear_tf=True,
+                max_features=cap,
+                dtype=np.float32,
+            )
             mats.append(v.fit_transform(texts))
             vocab = {str(k): int(i) for k, i in v.vocabulary_.items()}
             vecs.append(Vectorizer(analyzer, lo, hi, vocab, v.idf_.astype(np.float32)))
@@ -144,8 +152,11 @@ class SlotModel:
             rows = [i for i, e in enumerate(examples) if _trains(head, e)]
             clf = LogisticRegression(C=c, max_iter=300, random_state=seed)
             clf.fit(x[rows], [_label(examples[i], head) for i in rows])
-            heads[head] = Head([str(k) for k in clf.classes_], clf.coef_.astype(np.float32),
-                               clf.intercept_.astype(np.float32))
+            heads[head] = Head(
+                [str(k) for k in clf.classes_],
+                clf.coef_.astype(np.float32),
+                clf.intercept_.astype(np.float32),
+            )
         model = cls(vecs, heads, {"format": FORMAT, "seed": seed, "C": c, "n_train": len(examples)})
         model.check_features(texts[:: max(1, len(texts) // 200)], x[:: max(1, len(texts) // 200)])
         return model
@@ -199,14 +210,19 @@ class SlotModel:
             for name, arr in self.arrays().items():
                 buf = io.BytesIO()
                 np.lib.format.write_array(buf, np.ascontiguousarray(arr), allow_pickle=False)
-                zf.writestr(zipfile.ZipInfo(f"{name}.npy", date_time=(1980, 1, 1, 0, 0, 0)), buf.getvalue(),
-                            compress_type=zipfile.ZIP_DEFLATED)
+                zf.writestr(
+                    zipfile.ZipInfo(f"{name}.npy", date_time=(1980, 1, 1, 0, 0, 0)),
+                    buf.getvalue(),
+                    compress_type=zipfile.ZIP_DEFLATED,
+                )
 
     @classmethod
     def load(cls, path: Path | None = None) -> SlotModel:
         src = path or Path(str(resources.files("nl2hltl2plan.language.learned") / ARTIFACT))
         if not src.exists():
-            raise DataError(f"no learned language model at {src}; build it with `nl2hltl2plan train language`")
+            raise DataError(
+                f"no learned language model at {src}; build it with `nl2hltl2plan train language`"
+            )
         try:
             with np.load(src, allow_pickle=False) as z:
                 d = {k: z[k] for k in z.files}

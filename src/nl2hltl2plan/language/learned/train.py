@@ -56,5 +56,7 @@ def train_and_report(out: Path, seed: int = 0) -> str:
     lines = [f"trained on {len(data['train'])} annotations in {secs:.0f} s (seed {seed}) -> {out}"]
     for split in ("valid_seen", "valid_unseen"):
         acc = slot_accuracy(model, data[split])
-        lines.append(f"{split} ({len(data[split])}): " + ", ".join(f"{k} {100 * v:.1f}%" for k, v in acc.items()))
+        lines.append(
+            f"{split} ({len(data[split])}): " + ", ".join(f"{k} {100 * v:.1f}%" for k, v in acc.items())
+        )
     return "\n".join(lines)
