@@ -83,6 +83,20 @@ def states_kind(e: Example) -> bool:
     return bool(words.search(text)) or (e.receptacle != _APPLIANCE[e.kind] and bool(appliance.search(text)))
 
 
+def states_slots(e: Example) -> bool:
+    """Whether every labelled type is named in the text (a lexicon phrase that can mean it): ALFRED's
+    labels are the trial's parameters, and annotators often name another object or none."""
+    from nl2hltl2plan.language.grounding import find_mentions
+
+    named = {t for m in find_mentions(e.text) for t in m.entry.types}
+    return all(t in named for t in (e.object, e.container, e.receptacle, e.light) if t)
+
+
+def faithful(e: Example) -> bool:
+    """The text states the kind and names every slot's type: what the benchmark's annotation asks."""
+    return states_kind(e) and states_slots(e)
+
+
 @dataclass
 class Composition:
     """A synthetic multi-task instruction with its ground truth (validation only)."""
