@@ -105,6 +105,7 @@ def test_grounding_ranks_only_scene_types_and_reports_close_calls() -> None:
     for a in r.ambiguities:
         assert set(a.candidates) <= KITCHEN | {"ButterKnife"} and len(a.confidence) == len(a.candidates)
         assert a.confidence == sorted(a.confidence, reverse=True)
+    assert {a.word for a in r.ambiguities} <= {"knife", "table"}
 
 
 def test_missing_type_is_an_error_when_strict() -> None:
@@ -121,3 +122,10 @@ def test_bad_artifact_is_a_one_line_error(tmp_path: Path) -> None:
         SlotModel.load(bad)
     with pytest.raises(DataError, match="train language"):
         SlotModel.load(tmp_path / "absent.npz")
+
+
+def test_train_command_is_registered(capsys: pytest.CaptureFixture[str]) -> None:
+    from nl2hltl2plan.cli.main import main
+
+    assert main(["train", "language", "--help"]) == 0
+    assert "--seed" in capsys.readouterr().out

@@ -17,7 +17,7 @@ from pathlib import Path
 from pydantic import Field
 
 from nl2hltl2plan.errors import WorldError
-from nl2hltl2plan.language.grounding import AffordanceLookup
+from nl2hltl2plan.language.grounding import AffordanceLookup, find_mentions
 from nl2hltl2plan.language.learned.model import SlotModel, SlotPrediction
 from nl2hltl2plan.language.offline import OfflineParse
 from nl2hltl2plan.language.offline import parse_instruction as grammar_parse
@@ -84,10 +84,18 @@ def _ambiguity(
     return Ambiguity(
         task=task.id,
         role=role,
-        word=task.text,
+        word=_word_for(task.text, [t for t, _ in cands]),
         candidates=[t for t, _ in cands],
         confidence=[round(q, 3) for _, q in cands],
     )
+
+
+def _word_for(text: str, candidates: list[str]) -> str:
+    """The phrase of the clause that can mean the candidates ("the table"), else the clause itself."""
+    for m in find_mentions(text):
+        if set(candidates) & set(m.entry.types):
+            return m.surface
+    return text
 
 
 def combine(
