@@ -129,3 +129,8 @@ def test_train_command_is_registered(capsys: pytest.CaptureFixture[str]) -> None
 
     assert main(["train", "language", "--help"]) == 0
     assert "--seed" in capsys.readouterr().out
+
+
+def test_no_task_is_invented_from_text_without_one() -> None:
+    for text in ("hello there", "apple"):
+        assert parse_instruction(text, KITCHEN, "test", strict=False).tasks == []

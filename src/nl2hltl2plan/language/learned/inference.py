@@ -154,12 +154,16 @@ def parse_instruction(
     g = grammar_parse(instruction, scene_types, scene, strict=False, affordances=affordances)
     drafts = list(g.tasks)
     unparsed = list(g.unparsed)
-    if not drafts and instruction.strip():  # no clause the grammar reads: the whole text is one task
+    whole = not drafts and bool(instruction.strip())
+    if whole:  # no clause the grammar reads: the whole text may still be one task
         drafts = [BaseTaskSpec(id=task_letter(0), text=instruction.strip(), kind="place", object=[])]
-        unparsed = []
     preds = model.predict([d.text or instruction for d in drafts], scene_types)
     ambiguities: list[Ambiguity] = []
     tasks = [combine(d, p, scene_types, policy, ambiguities) for d, p in zip(drafts, preds, strict=True)]
+    if whole and not _names_its_types(tasks[0]):
+        tasks, ambiguities = [], []  # the model would invent a task ("hello there"): keep what is unparsed
+    elif whole:
+        unparsed = []
     issues = _missing(tasks, scene_types, scene)
     if strict and issues:
         raise WorldError(issues[0])
@@ -173,6 +177,12 @@ def parse_instruction(
         issues=issues,
         ambiguities=ambiguities,
     )
+
+
+def _names_its_types(task: BaseTaskSpec) -> bool:
+    """Whether the text names (a lexicon phrase for) the type chosen for every slot of the task."""
+    named = {t for m in find_mentions(task.text) for t in m.entry.types}
+    return all(set(getattr(task, r) or []) & named for r in _roles(task.kind))
 
 
 def _missing(tasks: list[BaseTaskSpec], types: set[str] | None, scene: str) -> list[str]:
