@@ -106,3 +106,15 @@ def test_ask_lets_the_user_pick_the_type(
     assert payload["tasks"][0]["receptacle"] == [picked] and payload["ambiguities"] == []
     monkeypatch.setattr("sys.stdin", io.StringIO("9\n"))
     assert main(["plan", TABLE, "--world", "FloorPlan201", "--llm", "learned", "--ask"]) == 2
+
+
+def test_the_learned_parser_cross_checks_an_llm_reading(world) -> None:
+    """An LLM's tasks that differ from the learned parser's reading are reported, not silently used."""
+    from nl2hltl2plan.language.translate import _cross_check, translate
+
+    res = translate(ORDERED, world, "offline", build=False)
+    _cross_check(res, world.object_types(), world.name)
+    assert res.warnings == []  # the same reading
+    res.tasks[0].object = ["Mug"]  # an LLM that moved mugs when saucers were asked
+    _cross_check(res, world.object_types(), world.name)
+    assert any("reads this instruction differently" in w for w in res.warnings)

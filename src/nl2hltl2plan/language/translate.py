@@ -17,7 +17,7 @@ from __future__ import annotations
 
 from typing import Literal, Protocol
 
-from nl2hltl2plan.errors import HTTError, LLMError, WorldError
+from nl2hltl2plan.errors import HTTError, LLMError, Nl2Hltl2PlanError, WorldError
 from nl2hltl2plan.language import stages
 from nl2hltl2plan.language.backends import PARSERS
 from nl2hltl2plan.language.grounding import AffordanceLookup, Grounder, world_lookup
@@ -26,6 +26,7 @@ from nl2hltl2plan.language.llm.batch import PendingAnswer
 from nl2hltl2plan.language.llm.client import LLMClient
 from nl2hltl2plan.language.ltl_generation import llm_generate_ltl, translator_client
 from nl2hltl2plan.language.result import Ambiguity, LanguageResult
+from nl2hltl2plan.language.scoring import match
 from nl2hltl2plan.language.spec_builder import GenerateLTL, build_spec
 from nl2hltl2plan.language.tasks import BaseTaskSpec, task_letter, transitive_reduction
 from nl2hltl2plan.logic.hierarchical import LeafOrFormula
@@ -81,8 +82,26 @@ def translate(
         raise LLMError(f"backend {backend} needs an LLM client (see backends.open_client)")
     with client.instruction():  # one deadline for every request this instruction makes
         res = _llm(instruction, types, scene, client, strict)
+        _cross_check(res, types, scene)
         _finish(res, world, backend, client, ltl, actions, build)
     return res
+
+
+def _cross_check(res: LanguageResult, types: set[str] | None, scene: str | None) -> None:
+    """The learned parser reads the instruction too; where its base tasks or orderings differ from the
+    LLM's, the difference is reported (a warning: either may be the one that is wrong)."""
+    from nl2hltl2plan.language import learned
+
+    try:
+        own = learned.parse_instruction(res.instruction, types, scene or "the scene", strict=False)
+    except Nl2Hltl2PlanError:
+        return
+    if not own.tasks:
+        return
+    verdict = match(res.tasks, res.before, [t.model_dump() for t in own.tasks], own.before, strict=False)
+    if not verdict.order_ok:
+        why = "; ".join(verdict.reasons[:2]) or "different base tasks"
+        res.warnings.append(f"the learned parser reads this instruction differently from the LLM: {why}")
 
 
 def _finish(
