@@ -180,7 +180,10 @@ def _plan(result: LanguageResult, world: Any, args: argparse.Namespace) -> dict[
         why = "; ".join(result.warnings) or "no hierarchical spec"
         return {"available": False, "message": f"planner not run: {why}"}
     starts = start_cells(world, args.robots, args.starts)
-    out = plan(
+    planner: Any = plan
+    if getattr(world, "kind", "") == "handover":  # four fixed arms passing blocks: cooperative planner
+        from nl2hltl2plan.planning.coop import plan_world as planner
+    out = planner(
         world, result.spec, starts, objective=args.objective, mode=args.mode, timeout_s=args.plan_timeout
     )
     info: dict[str, Any] = {"available": True, "result": out, "starts": starts, "status": out.status}
