@@ -19,10 +19,11 @@ import sys
 from collections import Counter
 
 from nl2hltl2plan.planning import oracle_spec, plan
-from nl2hltl2plan.worlds.alfred import benchmark_issues, build_benchmark_world, start_cells
+from nl2hltl2plan.worlds.alfred import benchmark_issues, build_benchmark_world
 from nl2hltl2plan.worlds.benchmark import load_gt
 from nl2hltl2plan.worlds.checker import check
 from nl2hltl2plan.worlds.model import sliced_type
+from nl2hltl2plan.worlds.starts import start_cells
 from nl2hltl2plan.worlds.tasks import GTInstance
 
 SCENES = ["FloorPlan7", "FloorPlan310", "FloorPlan427", "FloorPlan19", "FloorPlan322", "FloorPlan8",
@@ -56,7 +57,7 @@ def pooled_instance(scene: str, k: int, seed: int) -> GTInstance | None:
     rel = [(a, b) for a, b in before if a in ids and b in ids]
     rng = random.Random(seed)
     order = [t.id for t in keep]
-    for _ in range(2):  # a couple of extra orderings, consistent with the list order (no cycles)
+    for _ in range(2 if k >= 2 else 0):  # a couple of extra orderings, consistent with the list order
         i, j = sorted(rng.sample(range(k), 2))
         if (order[i], order[j]) not in rel:
             rel.append((order[i], order[j]))
@@ -84,7 +85,7 @@ def main() -> int:
             if benchmark_issues(world, gt):
                 continue
             spec = oracle_spec(gt, world).spec
-            starts = start_cells(world, gt, args.robots)
+            starts = start_cells(world, args.robots, gt=gt)
             actions = sum(len(spec.leaf_actions(n) or []) for n in spec.leaves)
             for objective in ("min", "minmax"):
                 r = plan(world, spec, starts, objective=objective, timeout_s=args.timeout)

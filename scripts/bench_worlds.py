@@ -29,10 +29,10 @@ def main(argv: list[str] | None = None) -> int:
         build_benchmark_world,
         floor_plans,
         load_floor_plan,
-        start_cells,
     )
     from nl2hltl2plan.worlds.benchmark import load_gt
     from nl2hltl2plan.worlds.scripted import sequential_plan
+    from nl2hltl2plan.worlds.starts import start_cells
 
     try:
         t0 = time.perf_counter()
@@ -54,7 +54,7 @@ def main(argv: list[str] | None = None) -> int:
     plans = []
     for g, w in bench:
         if not benchmark_issues(w, g):
-            plans.append((g, w, sequential_plan(w, g.tasks, g.before, start=start_cells(w, g, 1)[0])))
+            plans.append((g, w, sequential_plan(w, g.tasks, g.before, start=start_cells(w, 1, gt=g)[0])))
     exec_ms, check_ms, steps, ok = [], [], [], 0
     for g, w, p in plans:
         t0 = time.perf_counter()

@@ -17,6 +17,7 @@ from pathlib import Path
 
 from nl2hltl2plan.language.htt import HTT
 from nl2hltl2plan.language.spec_builder import build_spec
+from nl2hltl2plan.logic.flatten import size_report
 from nl2hltl2plan.planning.oracle import oracle_spec
 from nl2hltl2plan.worlds.alfred import build_benchmark_world
 from nl2hltl2plan.worlds.benchmark import load_gt
@@ -26,10 +27,17 @@ ROOT = Path(__file__).resolve().parents[1]
 
 def row(name: str, spec, timeout: float) -> dict:
     t0 = time.perf_counter()
-    rep = spec.size_report(flat_timeout_s=timeout)
-    return {"name": name, "formulas": len(rep.per_formula), "hier_states": rep.hierarchical_states,
-            "hier_edges": rep.hierarchical_edges, "flat_states": rep.flat_states, "flat_edges": rep.flat_edges,
-            "flat_exact": rep.flat_exact, "seconds": round(time.perf_counter() - t0, 2)}
+    rep = size_report(spec, flat_timeout_s=timeout)
+    return {
+        "name": name,
+        "formulas": len(rep.per_formula),
+        "hier_states": rep.hierarchical_states,
+        "hier_edges": rep.hierarchical_edges,
+        "flat_states": rep.flat_states,
+        "flat_edges": rep.flat_edges,
+        "flat_exact": rep.flat_exact,
+        "seconds": round(time.perf_counter() - t0, 2),
+    }
 
 
 def main() -> None:
@@ -39,7 +47,13 @@ def main() -> None:
     ap.add_argument("--timeout", type=float, default=10.0)
     ap.add_argument("--json", action="store_true")
     args = ap.parse_args()
-    rows = [row("Example 1 (dishwasher)", build_spec(HTT.load(ROOT / "examples/dishwasher_htt.json")), args.timeout)]
+    rows = [
+        row(
+            "Example 1 (dishwasher)",
+            build_spec(HTT.load(ROOT / "examples/dishwasher_htt.json")),
+            args.timeout,
+        )
+    ]
     gts = [g for g in load_gt() if g.n_base == args.n_base][: args.limit]
     bench = []
     for gt in gts:
@@ -51,9 +65,12 @@ def main() -> None:
         "flat_translated": len(done),
         "flat_timeouts": len(bench) - len(done),
         "hier_states_median": statistics.median(r["hier_states"] for r in bench) if bench else None,
-        "flat_states_median_of_translated": statistics.median(r["flat_states"] for r in done) if done else None,
+        "flat_states_median_of_translated": statistics.median(r["flat_states"] for r in done)
+        if done
+        else None,
         "ratio_median_of_translated": statistics.median(r["flat_states"] / r["hier_states"] for r in done)
-        if done else None,
+        if done
+        else None,
     }
     if args.json:
         print(json.dumps({"example1": rows[0], "benchmark": bench, "summary": summary}, indent=2))

@@ -10,29 +10,53 @@ from nl2hltl2plan.cli.main import main
 from nl2hltl2plan.config import data_dir
 from nl2hltl2plan.evaluation.language_bench import STAGES, failure_stage, language_record
 from nl2hltl2plan.evaluation.report_md import failure_breakdown, pipeline_summary, table1_markdown
+from nl2hltl2plan.evaluation.rows import LanguageRecord, ScenarioRow
+from nl2hltl2plan.pipeline import PipelineOptions
 
 needs_data = pytest.mark.skipif(data_dir(required=False) is None, reason="needs ../shared/data")
 
 
 def test_failure_stage_order():
-    assert failure_stage({"stage": None}, {"success": True}) is None
-    assert failure_stage({"stage": "temporal extraction"}, {"success": False}) == "temporal extraction"
-    assert failure_stage({"stage": None}, {"success": False, "planning_ok": False}) == "planning"
-    reached = {"success": False, "planning_ok": True, "check_reasons": ["task A (x) is never reached"]}
-    assert failure_stage({"stage": None}, reached) == "action completion"
-    order = {"success": False, "planning_ok": True, "check_reasons": ["order broken: task A ..."]}
-    assert failure_stage({"stage": None}, order) == "execution"
+    def rec(stage=None):
+        return LanguageRecord(key="x", instance="x", n_base=1, backend="offline", stage=stage)
+
+    def row(**kw):
+        return ScenarioRow.model_validate(kw)
+
+    assert failure_stage(rec(), row(success=True)) is None
+    assert failure_stage(rec("temporal extraction"), row(success=False)) == "temporal extraction"
+    assert failure_stage(rec(), row(success=False, planning_ok=False)) == "planning"
+    reached = row(success=False, planning_ok=True, check_reasons=["task A (x) is never reached"])
+    assert failure_stage(rec(), reached) == "action completion"
+    order = row(success=False, planning_ok=True, check_reasons=["order broken: task A ..."])
+    assert failure_stage(rec(), order) == "execution"
 
 
 def _row(n, k, conv, plan, ok, stage=None):
-    return {"n_base": n, "robots": k, "conversion_ok": conv, "planning_ok": plan, "success": ok,
-            "status": "solved" if plan else "infeasible", "plan_time_s": 0.1, "feasible": True,
-            "travel_m": 2.0, "steps": 10, "stage": stage}
+    return ScenarioRow.model_validate(
+        {
+            "n_base": n,
+            "robots": k,
+            "conversion_ok": conv,
+            "planning_ok": plan,
+            "success": ok,
+            "status": "solved" if plan else "infeasible",
+            "plan_time_s": 0.1,
+            "feasible": True,
+            "travel_m": 2.0,
+            "steps": 10,
+            "stage": stage,
+        }
+    )
 
 
 def test_rates_follow_table_1():
-    rows = [_row(1, 1, True, True, True), _row(1, 1, True, False, False, "planning"),
-            _row(1, 1, False, True, False, "task decomposition"), _row(1, 1, True, True, True)]
+    rows = [
+        _row(1, 1, True, True, True),
+        _row(1, 1, True, False, False, "planning"),
+        _row(1, 1, False, True, False, "task decomposition"),
+        _row(1, 1, True, True, True),
+    ]
     s = pipeline_summary(rows)
     r = s["rows"][0]
     assert r["conversion_rate"] == 0.75 and r["planning_rate"] == round(2 / 3, 4) and r["overall_rate"] == 0.5
@@ -46,11 +70,11 @@ def test_rates_follow_table_1():
 def test_language_record_scores_conversion_against_ground_truth():
     from nl2hltl2plan.worlds.benchmark import gt_instance
 
-    ok = language_record(gt_instance("FloorPlan15.tasks_1.compose_0.fintune_1"), "offline", None)
-    assert ok["conversion_ok"] and ok["stage"] is None and ok["levels"]
+    ok = language_record(gt_instance("FloorPlan15.tasks_1.compose_0.fintune_1"), PipelineOptions(), None)
+    assert ok.conversion_ok and ok.stage is None and ok.levels
     # the scene lacks the statue: conversion still scored, no spec to plan (a planning failure)
-    statue = language_record(gt_instance("FloorPlan17.tasks_2.compose_0.fintune_1"), "offline", None)
-    assert "Statue" in statue["error"] and statue["levels"] is None
+    statue = language_record(gt_instance("FloorPlan17.tasks_2.compose_0.fintune_1"), PipelineOptions(), None)
+    assert statue.error is not None and "Statue" in statue.error and statue.levels is None
 
 
 @needs_data
@@ -75,4 +99,4 @@ def test_bench_llm_offline_end_to_end_with_custom_ground_truth(tmp_path, capsys)
     bad = tmp_path / "bad.jsonl"
     bad.write_text("{not json}\n")
     assert main(["bench", "alfred", "--llm", "offline", "--gt", str(bad), "--out", str(out)]) == 2
-    assert "not a ground-truth instance" in capsys.readouterr().err
+    assert "not valid JSON" in capsys.readouterr().err

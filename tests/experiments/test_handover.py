@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import json
+
 import pytest
 
 from nl2hltl2plan.errors import PlanningError, WorldError
@@ -179,6 +181,20 @@ def test_paper_tasks_are_solved_and_checked(task_id):
 def test_plan_on_a_handover_world_uses_the_cooperative_planner():
     world = load_world("handover-line")
     result = plan_world(world, [{"task1": ["pickup(RedBlock)", "put(RedBlock,RegionJ)"]}])
-    assert result.status == "solved" and result.handovers == 3 and result.travel_m > 0
+    assert result.status == "solved" and result.travel_m > 0 and result.total_cost > 0
+    # red goes from E (arm a) to J (arm d): every arm picks it up once
+    pickers = [rp.robot for rp in result.plan.robots for s in rp.steps if s.verb == "pickup"]
+    assert sorted(pickers) == [0, 1, 2, 3]
     with pytest.raises(PlanningError, match="not a handover world"):
         plan_world(load_world("tabletop"), [{"task1": 'F "at(Red,J)"'}])
+
+
+def test_cli_plan_json_on_a_handover_world(capsys):
+    from nl2hltl2plan.cli.main import main
+
+    text = "Move the red block to region J."
+    assert main(["plan", text, "--world", "handover-square", "--json", "--llm", "offline"]) == 0
+    payload = json.loads(capsys.readouterr().out)
+    assert payload["status"] == "solved" and payload["before"] == []
+    assert payload["tasks"][0]["kind"] == "place" and payload["tasks"][0]["receptacle"] == ["RegionJ"]
+    assert sum(1 for r in payload["plan"]["robots"] if r["steps"]) >= 2  # several arms carry it

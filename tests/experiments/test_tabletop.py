@@ -13,8 +13,8 @@ from nl2hltl2plan.evaluation.baselines import LLMPlanAnswer, llm_planner, parse_
 from nl2hltl2plan.evaluation.tabletop import load_tasks, run_bench, run_ours
 from nl2hltl2plan.language.llm.client import LLMClient
 from nl2hltl2plan.language.llm.settings import LLMSettings
-from nl2hltl2plan.language.pipeline import translate
 from nl2hltl2plan.language.tasks import transitive_closure
+from nl2hltl2plan.language.translate import translate
 from nl2hltl2plan.worlds import load_world
 from nl2hltl2plan.worlds.tabletop import HOME, draw_layout, tabletop_world
 

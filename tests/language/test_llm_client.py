@@ -4,6 +4,9 @@ timeouts, format fallback, the answer cache and batch files."""
 from __future__ import annotations
 
 import json
+import threading
+import time
+from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
 
 import pytest
 from pydantic import BaseModel, Field
@@ -205,3 +208,159 @@ def test_settings_from_env(monkeypatch, tmp_path):
     monkeypatch.setenv("NL2HLTL2PLAN_LLM_TIMEOUT", "soon")
     with pytest.raises(LLMError, match="invalid LLM settings"):
         LLMSettings.from_env()
+
+
+# ----- reliability (issue 10.6): a real local HTTP server misbehaving in every way -------------------
+class Misbehaving:
+    """An HTTP server on 127.0.0.1 whose first path segment picks the misbehaviour."""
+
+    BODIES: dict[str, bytes] = {
+        "html": b"<html>502 bad gateway</html>",
+        "notjson": b"not json at all",
+        "empty": b"",
+        "binary": b"\xff\xfe\x00\x01garbage",
+        "deep": b"[" * 100_000,
+        "array": b"[1, 2]",
+        "nochoices": b'{"id": "x"}',
+        "choicesstr": b'{"choices": "x"}',
+        "emptychoices": b'{"choices": []}',
+        "nullmessage": b'{"choices": [{"message": null}]}',
+        "intcontent": b'{"choices": [{"message": {"content": 5}}]}',
+    }
+
+    def __init__(self) -> None:
+        outer = self
+        self.hits = 0
+
+        class Handler(BaseHTTPRequestHandler):
+            def log_message(self, *a: object) -> None:
+                pass
+
+            def do_POST(self) -> None:  # noqa: N802 - http.server API
+                outer.hits += 1
+                self.rfile.read(int(self.headers.get("Content-Length", 0)))
+                kind = self.path.split("/")[1]
+                if kind == "trickle":  # valid headers, then one byte every 0.2 s, forever
+                    self.send_response(200)
+                    self.send_header("Content-Type", "application/json")
+                    self.send_header("Content-Length", "100000")
+                    self.end_headers()
+                    try:
+                        while True:
+                            self.wfile.write(b" ")
+                            self.wfile.flush()
+                            time.sleep(0.2)
+                    except OSError:
+                        return
+                body = Misbehaving.BODIES[kind]
+                ctype = "text/html" if kind == "html" else "application/json"
+                self.send_response(200)
+                self.send_header("Content-Type", ctype)
+                self.send_header("Content-Length", str(len(body)))
+                self.end_headers()
+                self.wfile.write(body)
+
+        self.server = ThreadingHTTPServer(("127.0.0.1", 0), Handler)
+        self.server.daemon_threads = True
+        threading.Thread(target=self.server.serve_forever, args=(0.05,), daemon=True).start()
+
+    def url(self, kind: str) -> str:
+        return f"http://127.0.0.1:{self.server.server_address[1]}/{kind}/v1"
+
+    def close(self) -> None:
+        self.server.shutdown()
+        self.server.server_close()
+
+
+@pytest.fixture
+def bad_server():
+    s = Misbehaving()
+    yield s
+    s.close()
+
+
+def test_trickling_server_hits_the_total_deadline(bad_server):
+    c = LLMClient(LLMSettings(base_url=bad_server.url("trickle"), api_key="k", timeout=0.6, max_retries=1,
+                              backoff=0.01, cache_dir=None))
+    t0 = time.monotonic()
+    with pytest.raises(LLMError, match=r"pair: request to .* timed out after 2 attempts \(timeout 0.6s\)"):
+        c.ask(MSGS, Pair, "pair")
+    assert time.monotonic() - t0 < 2.5  # 2 x 0.6 s, not forever (the HTTP timeout is per read)
+
+
+def test_instruction_deadline_covers_all_requests(stub):
+    stub.answer = lambda body: ("sleep", 0.3, '{"a": 1, "b": []}')
+    c = LLMClient(LLMSettings(base_url=stub.base_url, api_key="k", timeout=5, instruction_timeout=0.5,
+                              max_retries=0, cache_dir=None))
+    c.start_instruction()
+    assert c.ask(MSGS, Pair, "first").a == 1  # 0.3 s of the 0.5 s
+    t0 = time.monotonic()
+    with pytest.raises(LLMError, match=r"second: .*(timed out|past their deadline)"):
+        c.ask([{"role": "user", "content": "again"}], Pair, "second")
+    assert time.monotonic() - t0 < 1.0
+    with c.instruction(5.0):  # an explicit, longer deadline for the next instruction
+        assert c.ask([{"role": "user", "content": "third"}], Pair, "third").a == 1
+
+
+@pytest.mark.parametrize("kind", sorted(Misbehaving.BODIES))
+def test_non_json_and_wrong_schema_bodies_are_clean_errors(bad_server, kind):
+    c = LLMClient(LLMSettings(base_url=bad_server.url(kind), api_key="k", max_retries=0, cache_dir=None))
+    with pytest.raises(LLMError) as exc:
+        c.ask(MSGS, Pair, "pair")
+    msg = str(exc.value)
+    assert msg.startswith("pair: ") and "\n" not in msg and bad_server.url(kind) in msg
+    assert any(w in msg for w in ("not JSON", "not a chat completion", "not text"))
+
+
+def test_cache_key_includes_the_server(stub, tmp_path):
+    other = type(stub)()  # a second stub server with the same model name
+    try:
+        stub.queue = ['{"a": 1, "b": []}']
+        other.queue = ['{"a": 2, "b": []}']
+        assert client_for(stub, tmp_path).ask(MSGS, Pair, "pair").a == 1
+        assert client_for(other, tmp_path).ask(MSGS, Pair, "pair").a == 2  # not replayed from stub
+        assert client_for(stub, tmp_path).ask(MSGS, Pair, "pair").a == 1  # cached, per server
+        assert len(stub.requests) == 1 and len(other.requests) == 1
+    finally:
+        other.close()
+    r = {"model": "m", "messages": MSGS}
+    assert request_key(r, "http://a/v1") != request_key(r, "http://b/v1")
+    assert LLMSettings(base_url="http://A/v1/").scope == LLMSettings(base_url="http://a/v1").scope
+    assert LLMSettings(base_url="http://a/v1", cache_scope="local:x.gguf").scope == "local:x.gguf"
+
+
+@pytest.mark.parametrize("var, value", [("TIMEOUT", "nan"), ("TIMEOUT", "0"), ("TIMEOUT", "inf"),
+                                        ("RETRIES", "-1"), ("INSTRUCTION_TIMEOUT", "-5"), ("CTX", "0")])
+def test_invalid_numeric_settings_are_refused(monkeypatch, var, value):
+    monkeypatch.setenv(f"NL2HLTL2PLAN_LLM_{var}", value)
+    with pytest.raises(LLMError, match="invalid LLM settings"):
+        LLMSettings.from_env()
+
+
+def test_damaged_cache_entries_are_asked_again(stub, tmp_path):
+    stub.queue = ['{"a": 1, "b": []}', '{"a": 1, "b": []}']
+    c = client_for(stub, tmp_path)
+    c.ask(MSGS, Pair, "pair")
+    (entry,) = (tmp_path / "cache").glob("*/*.json")
+    entry.write_bytes(b"\xff[[[")
+    assert client_for(stub, tmp_path).ask(MSGS, Pair, "pair").a == 1
+    assert len(stub.requests) == 2
+
+
+def test_bad_batch_files_are_clean_errors(tmp_path):
+    cache = AnswerCache(tmp_path / "cache")
+    binary = tmp_path / "bin.jsonl"
+    binary.write_bytes(b"\xff\xfe\x00")
+    with pytest.raises(LLMError, match="is not UTF-8 text"):
+        read_answers(binary, cache)
+    with pytest.raises(LLMError, match="cannot read batch answers"):
+        read_answers(tmp_path / "missing.jsonl", cache)
+    answers = tmp_path / "answers.jsonl"
+    answers.write_text('[1]\n{"custom_id": "k", "response": 5}\n{"custom_id": "k", "response": {"body": '
+                       '{"choices": [{"message": {"content": 7}}]}}}\n' + "[" * 5000 + "\n")
+    stored, errors = read_answers(answers, cache)
+    assert stored == 0 and len(errors) == 4
+    requests = tmp_path / "requests.jsonl"
+    requests.write_text("{not json\n")
+    with pytest.raises(LLMError, match="line 1: not a Batch API request line"):
+        read_answers(answers, cache, requests)

@@ -90,7 +90,7 @@ def test_fig1_caption():
 
 
 def test_example1_dishwasher_hierarchy():
-    from nl2hltl2plan.language.pipeline import build_htt
+    from nl2hltl2plan.language.htt_build import build_htt
 
     text = (
         "Place items into the dishwasher. Put plates, mugs and utensils into the lower rack in any order. "

@@ -8,10 +8,12 @@ import pytest
 
 from nl2hltl2plan.cli.main import main
 from nl2hltl2plan.errors import HTTError, WorldError
+from nl2hltl2plan.language.backends import resolve_backend
 from nl2hltl2plan.language.grounding import Grounder, find_mentions
-from nl2hltl2plan.language.pipeline import build_htt, flat_before, resolve_backend, translate
+from nl2hltl2plan.language.htt_build import build_htt, flat_before
 from nl2hltl2plan.language.scoring import match
 from nl2hltl2plan.language.tasks import BaseTaskSpec
+from nl2hltl2plan.language.translate import translate
 
 
 def spec(i: str, obj: str, kind: str = "place", rec: str = "Fridge", **kw) -> BaseTaskSpec:
@@ -165,14 +167,18 @@ def test_cli_plan_with_stub_llm(stub, capsys, tmp_path, monkeypatch):
     assert rc == 0
     payload = json.loads(capsys.readouterr().out)
     assert payload["backend"] == "openai" and payload["llm_calls"]["sent"] == 6
-    # batch mode: everything is cached now, so nothing is pending
+    # batch mode: everything is cached now (answers are keyed by server and model), so nothing is pending
     rc = main(
         [
             "plan",
             recorded["instruction"],
             "--llm",
             "openai",
+            "--base-url",
+            stub.base_url,
             "--json",
+            "--base-url",  # the cache is keyed by server: same server, batch mode
+            stub.base_url,
             "--batch-out",
             str(tmp_path / "pending.jsonl"),
         ]

@@ -10,8 +10,8 @@ import pytest
 from nl2hltl2plan.errors import LLMError, WorldError
 from nl2hltl2plan.language import stages
 from nl2hltl2plan.language.llm import LLMClient, LLMSettings
-from nl2hltl2plan.language.pipeline import translate
 from nl2hltl2plan.language.prompts import STAGES, load_prompt
+from nl2hltl2plan.language.translate import translate
 
 DATA = Path(__file__).parent / "data"
 
@@ -109,7 +109,11 @@ def test_action_completion_is_grounded_in_the_scene(stub):
         '{"actions": ["pickup(Apple)", "put(Apple,DiningTable)"]}',
     ]
     acts = stages.complete_actions(
-        make_client(stub), "put the apple on the table", {"kind": "place"}, {"Apple", "DiningTable"}, "demo"
+        make_client(stub),
+        "put the apple on the table",
+        {"kind": "place", "object": ["Apple"], "receptacle": ["DiningTable"]},
+        {"Apple", "DiningTable"},
+        "demo",
     )
     assert acts == ["pickup(Apple)", "put(Apple,DiningTable)"]
     assert "no Statue in demo" in stub.requests[1]["messages"][-1]["content"]
@@ -179,3 +183,51 @@ def test_learned_translator_falls_back_to_the_compiler(stub, demo, monkeypatch, 
     )
     assert res.ltl_checks[-1].endswith("using the compiler's formula")
     assert "task1.1" in res.spec.levels[0]["task1"] and "F" in res.spec.levels[0]["task1"]
+
+
+# ----- semantic checks with re-asks (issue 10.7) ------------------------------------------------------
+PLATE = {"id": "1.2", "kind": "place", "object": ["Plate"], "receptacle": ["Cabinet"]}
+TYPES = {"Plate", "Mug", "Cabinet"}
+
+
+def test_actions_on_the_wrong_objects_are_reasked_with_the_reason(stub):
+    stub.queue = [
+        '{"actions": ["pickup(Mug)", "put(Mug,Cabinet)"]}',
+        '{"actions": ["pickup(Plate)", "put(Plate,Cabinet)"]}',
+    ]
+    client = make_client(stub)
+    acts = stages.complete_actions(client, "put the plate in the cabinet", PLATE, TYPES, "demo")
+    assert acts == ["pickup(Plate)", "put(Plate,Cabinet)"]
+    feedback = stub.requests[1]["messages"][-1]["content"]
+    assert "does not fit" in feedback and "1.2 is about Plate, not Mug" in feedback
+    assert client.stats.reasks == 1
+
+
+def test_actions_that_stay_wrong_are_an_error_not_a_plan(stub):
+    stub.queue = ['{"actions": ["pickup(Mug)", "put(Mug,Cabinet)"]}'] * 3
+    with pytest.raises(stages.SemanticCheckError, match=r"actions of 1.2: .* after 3 attempts: .*not Mug"):
+        stages.complete_actions(make_client(stub), "put the plate in the cabinet", PLATE, TYPES, "demo")
+
+
+def test_decomposition_missing_a_named_object_is_reasked_then_reported(stub):
+    apple = {"id": "1", "text": "apple", "kind": "place", "object": "apple", "receptacle": "fridge"}
+    one = {"tasks": [apple]}
+    stub.queue = [json.dumps(one)] * 3
+    with pytest.raises(stages.SemanticCheckError, match=r"decomposition: .*names 'mug'.*no task uses it"):
+        stages.decompose(make_client(stub), "Put the apple in the fridge and the mug in the sink.", [])
+    assert "names 'mug'" in stub.requests[1]["messages"][-1]["content"]
+
+
+def test_relations_that_stay_cyclic_name_the_cycle(stub):
+    stub.queue = ['{"relations": [["1.1", "1.2"], ["1.2", "1.1"]]}'] * 3
+    with pytest.raises(stages.SemanticCheckError, match=r"cycle: 1.1 before 1.2 before 1.1"):
+        stages.relations(make_client(stub), "A then B", "1", "all", [("1.1", "A"), ("1.2", "B")])
+
+
+def test_pipeline_with_wrong_leaf_actions_fails_instead_of_solving(stub, demo):
+    """Plates asked, mugs moved: the recorded run with the mug leaves answered by plates."""
+    plates = '{"actions": ["pickup(Plate)", "put(Plate,DiningTable)"]}'
+    rules = [(k, plates if k.startswith("Task: put two mugs") else v) for k, v in RECORDED["rules"]]
+    stub.rules = rules + [("does not fit the request", plates)]  # and it insists when re-asked
+    with pytest.raises(LLMError, match=r"1.2.1.*is about Mug, not Plate"):
+        translate(RECORDED["instruction"], demo, "openai", make_client(stub))

@@ -1,7 +1,9 @@
 import pytest
 
 from nl2hltl2plan.errors import SpecError
-from nl2hltl2plan.logic.hierarchical import HierarchicalSpec, TraceEvent, sequence_formula
+from nl2hltl2plan.logic.flatten import flattens_exactly, size_report
+from nl2hltl2plan.logic.hierarchical import HierarchicalSpec, sequence_formula
+from nl2hltl2plan.logic.trace import TraceEvent, check_trace
 
 DISHWASHER = [
     {"task1": "F(task1.1 & F task1.2)"},
@@ -35,35 +37,37 @@ def test_structure():
 
 def test_trace_respecting_order_is_accepted():
     spec = HierarchicalSpec.from_json(DISHWASHER)
-    ok = spec.check_trace(
+    ok = check_trace(
+        spec,
         events(
             *place("task1.1.1", "Plate", "DishwasherLowerRack"),
             *place("task1.1.2", "Mug", "DishwasherLowerRack"),
             *place("task1.2.1", "Saucer", "DishwasherUpperRack"),
             *place("task1.2.2", "Cup", "DishwasherUpperRack"),
-        )
+        ),
     )
     assert ok.ok and ok.completed["task1.1"] == 4 and ok.completed["task1"] == 8
 
 
 def test_trace_breaking_order_is_rejected_with_reason():
     spec = HierarchicalSpec.from_json(DISHWASHER)
-    bad = spec.check_trace(
+    bad = check_trace(
+        spec,
         events(
             *place("task1.2.2", "Cup", "DishwasherUpperRack"),
             *place("task1.2.1", "Saucer", "DishwasherUpperRack"),
             *place("task1.1.1", "Plate", "DishwasherLowerRack"),
             *place("task1.1.2", "Mug", "DishwasherLowerRack"),
-        )
+        ),
     )
     assert not bad.ok and "task1" in bad.reasons[0]
 
 
 def test_events_count_only_for_their_own_leaf():
     spec = HierarchicalSpec.from_json([{"t": "F a & F b"}, {"a": ["pickup(Apple)"], "b": ["pickup(Apple)"]}])
-    one = spec.check_trace([TraceEvent(1, "pickup(Apple)", "a")])
+    one = check_trace(spec, [TraceEvent(1, "pickup(Apple)", "a")])
     assert not one.ok and one.completed["b"] is None
-    assert spec.check_trace([TraceEvent(1, "pickup(Apple)", "a"), TraceEvent(2, "pickup(Apple)", "b")]).ok
+    assert check_trace(spec, [TraceEvent(1, "pickup(Apple)", "a"), TraceEvent(2, "pickup(Apple)", "b")]).ok
 
 
 def test_sequence_formula():
@@ -100,6 +104,6 @@ def test_not_json():
 
 def test_size_report_hierarchy_is_smaller_than_flat():
     spec = HierarchicalSpec.from_json(DISHWASHER)
-    assert spec.flattens_exactly
-    report = spec.size_report()
+    assert flattens_exactly(spec)
+    report = size_report(spec)
     assert report.flat_states is not None and report.hierarchical_states < report.flat_states

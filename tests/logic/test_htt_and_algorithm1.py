@@ -11,7 +11,8 @@ from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.htt import HTT
 from nl2hltl2plan.language.spec_builder import build_spec
 from nl2hltl2plan.logic import spot_backend as sb
-from nl2hltl2plan.logic.hierarchical import TraceEvent
+from nl2hltl2plan.logic.flatten import flatten
+from nl2hltl2plan.logic.trace import TraceEvent, check_trace
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
@@ -139,14 +140,14 @@ def test_spec_of_random_htt_accepts_exactly_the_traces_that_respect_every_relati
     trace = [
         TraceEvent(t, htt.node(leaf).actions[0], f"task{leaf}") for leaf, t in steps.items() if t is not None
     ]
-    result = spec.check_trace(trace)
+    result = check_trace(spec, trace)
     expected = expected_completion(htt, steps)
     assert result.ok == (expected["1"] is not None)
     if result.ok:
         assert result.completed["task1"] == expected["1"]
     # the exact flat formula (attributed atoms) agrees with the hierarchy
     if len(steps) <= 4:
-        flat = sb.dfa(sb.parse(spec.flatten()), timeout_s=60)
+        flat = sb.dfa(sb.parse(flatten(spec)), timeout_s=60)
         horizon = max([t for t in steps.values() if t] + [1])
         word = [
             {f"task{leaf}:{htt.node(leaf).actions[0]}" for leaf, t in steps.items() if t == s}

@@ -1,3 +1,5 @@
+import time
+
 import pytest
 
 from nl2hltl2plan.errors import FormulaError
@@ -14,7 +16,12 @@ def test_paper_syntax_and_dotted_and_quoted_names_parse():
 def test_malformed_formula_reports_spot_pointer():
     with pytest.raises(FormulaError) as exc:
         sb.parse("F(a &")
-    assert "cannot parse" in str(exc.value) and "^" in str(exc.value)
+    msg = str(exc.value)
+    assert msg == "cannot parse formula 'F(a &': syntax error, unexpected end of formula at character 6"
+    for junk in ("F(a\x00b)", "\xff\xfe\x00", "F(" * 3 + "a", "a U U b"):
+        with pytest.raises(FormulaError, match="cannot parse formula") as exc:
+            sb.parse(junk)
+        assert "\n" not in str(exc.value)
 
 
 @pytest.mark.parametrize(
@@ -71,3 +78,59 @@ def test_equivalence_and_distinguishing_word():
     assert word is not None
     assert f.accepts(word) != g.accepts(word)
     assert distinguishing_word(f, sb.dfa(sb.parse("F b & F a"))) is None
+
+
+# ----- bounded resources (issue 10.4) --------------------------------------------------------------
+@pytest.mark.parametrize(
+    "steps", [["a"], ["a", "b"], ["a", "b", "a"], ["a", "a", "b"], ["c", "b", "a", "b", "c"]]
+)
+def test_linear_sequences_are_built_directly_and_agree_with_spot(steps):
+    text = "F(" + " & F(".join(steps) + ")" * len(steps)
+    f = sb.parse(text)
+    assert sb.linear_sequence(f._f) == steps
+    direct = sb.sequence_dfa(steps)
+    via_spot = sb._to_dfa(sb._translate(f._f, small=True))
+    assert distinguishing_word(direct, via_spot) is None
+    assert direct.accepts([set(steps)]) and not direct.accepts([set(steps) - {steps[-1]}])
+
+
+def test_next_chains_read_goals_off_accepting_components():
+    d = sb.dfa(sb.parse("X " * 12 + "a"))  # 13 temporal operators: the guarded, transition-based path
+    assert d.accepts([set()] * 12 + [{"a"}]) and not d.accepts([set()] * 12)
+    assert not d.accepts([{"a"}] * 5)
+
+
+def test_thirty_step_sequence_translates_instantly():
+    from nl2hltl2plan.logic.hierarchical import sequence_formula
+
+    f = sb.parse(sequence_formula([f"pickup(A{i})" for i in range(30)]))
+    t0 = time.perf_counter()
+    d = sb.dfa(f, timeout_s=1.0)
+    assert time.perf_counter() - t0 < 0.5
+    assert d.num_states == 31
+    assert d.accepts([{f"pickup(A{i})"} for i in range(30)])
+    assert not d.accepts([{f"pickup(A{i})"} for i in range(29, -1, -1)])
+
+
+def test_few_atoms_many_next_operators_is_bounded_by_memory_with_one_line_error():
+    f = sb.parse("F(a & " + "X " * 22 + "b)")  # 2 atoms, 2^22 + 1 states: 4.9 GB in-process before
+    t0 = time.perf_counter()
+    with pytest.raises(FormulaError) as exc:
+        sb.dfa(f, timeout_s=20.0, memory_mb=256)
+    assert time.perf_counter() - t0 < 15
+    msg = str(exc.value)
+    assert "\n" not in msg and ("memory limit of 256 MiB" in msg or "time limit" in msg)
+
+
+def test_automaton_size_limit_names_the_limit():
+    f = sb.parse("F(a & " + "X " * 12 + "b)")
+    with pytest.raises(FormulaError, match=r"has 4097 states, more than the limit of 1000"):
+        sb.dfa(f, max_states=1000)
+    assert sb.dfa(f).num_states >= 4097  # within the default limit it translates
+
+
+@pytest.mark.parametrize("bad", [float("nan"), 0.0, -1.0, float("inf")])
+def test_invalid_time_limits_are_refused(bad):
+    big = sb.parse(" & ".join(f"F q{i}" for i in range(9)))
+    with pytest.raises(FormulaError, match="time limit must be a finite number"):
+        sb.dfa(big, timeout_s=bad)

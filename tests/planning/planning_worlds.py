@@ -49,3 +49,16 @@ def corridor(objects: dict[str, int], parents: dict[str, str] | None = None,
 
 def gt(tasks: list[dict], before: list[tuple[str, str]] = ()) -> GTInstance:
     return GTInstance(id="test", scene="corridor", tasks=[BaseTask(**t) for t in tasks], before=list(before))
+
+
+def two_rows() -> World:
+    """Two corridors of 31 cells (rows 0 and 10, 2.5 m apart) joined at column 30 by a vertical
+    corridor. Apple_0 between the rows at column 15 (region: columns 12..18 of both rows),
+    CounterTop_0 above row 10 at column 2 (region: row 10, columns 0..7)."""
+    free = ([(c * 0.25, 0.0) for c in range(31)] + [(c * 0.25, 2.5) for c in range(31)]
+            + [(30 * 0.25, z * 0.25) for z in range(1, 10)])
+    objs = [WorldObject(id="Apple_0", type="Apple", position=(15 * 0.25, 0.9, 5 * 0.25),
+                        affordances=affordances("Apple")),
+            WorldObject(id="CounterTop_0", type="CounterTop", position=(2 * 0.25, 0.9, 12 * 0.25),
+                        affordances=affordances("CounterTop"))]
+    return World.create("two_rows", free, objs, kind="demo")

@@ -18,12 +18,13 @@ needs_data = pytest.mark.skipif(data_dir(required=False) is None, reason="needs 
 
 
 def run_instance(instance_id: str, robots: int, **kw):
-    from nl2hltl2plan.worlds.alfred import benchmark_issues, build_benchmark_world, start_cells
+    from nl2hltl2plan.worlds.alfred import benchmark_issues, build_benchmark_world
     from nl2hltl2plan.worlds.benchmark import gt_instance
+    from nl2hltl2plan.worlds.starts import start_cells
 
     gt = gt_instance(instance_id)
     world = build_benchmark_world(gt)
-    r = plan(world, oracle_spec(gt, world).spec, start_cells(world, gt, robots), **kw)
+    r = plan(world, oracle_spec(gt, world).spec, start_cells(world, robots, gt=gt), **kw)
     return gt, r, benchmark_issues(world, gt)
 
 

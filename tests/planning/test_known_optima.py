@@ -5,6 +5,7 @@ from __future__ import annotations
 import pytest
 from planning_worlds import corridor, gt
 
+from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.planning import oracle_spec, plan
 from nl2hltl2plan.worlds.checker import check
 
@@ -75,7 +76,7 @@ def test_leaf_passes_to_another_robot():
     # 4 + 1 + 0 + 1 + 0 + 1 = 7, whereas one robot alone would walk to the lamp.
     world = corridor({"Apple_0": 10, "CounterTop_0": 2, "DeskLamp_0": 38})
     leaf = ["pickup(Apple)", "put(Apple,CounterTop)", "toggle_on(DeskLamp)"]
-    spec = [{"task1": "F task1.1"}, {"task1.1": leaf}]
+    spec = HierarchicalSpec([{"task1": "F task1.1"}, {"task1.1": leaf}])
     for mode in ("exact", "fast"):
         r = plan(world, spec, [(0, 0), (0, 39)], mode=mode)
         assert r.solved and r.total_cost == 7

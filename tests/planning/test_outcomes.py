@@ -8,12 +8,13 @@ import pytest
 from planning_worlds import corridor
 
 from nl2hltl2plan.errors import PlanningError, SpecError
+from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.planning import plan
 from nl2hltl2plan.worlds.demo import demo_world
 
 
-def leaf_spec(*actions: str) -> list[dict]:
-    return [{"task1": "F task1.1"}, {"task1.1": list(actions)}]
+def leaf_spec(*actions: str) -> HierarchicalSpec:
+    return HierarchicalSpec([{"task1": "F task1.1"}, {"task1.1": list(actions)}])
 
 
 def test_missing_object_type(two_tasks_world):
@@ -37,11 +38,11 @@ def test_receptacle_that_refuses_the_object():
 
 
 def test_precedence_cycle(two_tasks_world):
-    spec = [
+    spec = HierarchicalSpec([
         {"task1": "F(task1.1 & F task1.2) & F(task1.2 & F task1.1)"},
         {"task1.1": ["pickup(Apple)", "put(Apple,CounterTop)"],
          "task1.2": ["pickup(Mug)", "put(Mug,DiningTable)"]},
-    ]
+    ])
     r = plan(two_tasks_world, spec, [(0, 0)])
     assert r.status == "infeasible"
     assert "cycle" in r.reason and "task1.1" in r.reason
@@ -50,24 +51,32 @@ def test_precedence_cycle(two_tasks_world):
 def test_no_robot_has_the_capability(two_tasks_world):
     spec = leaf_spec("pickup(Apple)", "put(Apple,CounterTop)")
     r = plan(two_tasks_world, spec, [(0, 0), (0, 39)], capabilities=[["put"], ["toggle_on"]])
-    assert r.status == "infeasible" and "no robot has the capability" in r.reason
+    assert r.status == "infeasible" and "no robot in the team can pickup(Apple)" in r.reason
     # with one capable robot it is solved, and only that robot acts
     r = plan(two_tasks_world, spec, [(0, 0), (0, 39)], capabilities=[["open"], None])
     assert r.solved and {e["robot"] for e in r.events} == {1}
 
 
-def test_infeasible_found_by_search():
-    # the apple sits in a closed fridge and the leaf never opens it: nothing static is wrong,
-    # the exhaustive search proves there is no plan
+def test_support_open_inserted_and_infeasible_found_by_search():
+    # the apple sits in a closed fridge and the leaf never opens it: the planner opens it (walk 4 to
+    # the fridge's region 4..16, open, pick, put on the counter whose region 0..8 holds cell 4: 7)
     world = corridor({"Apple_0": 10, "Fridge_0": 10, "CounterTop_0": 2}, parents={"Apple_0": "Fridge_0"})
-    r = plan(world, leaf_spec("pickup(Apple)", "put(Apple,CounterTop)"), [(0, 0)])
+    spec = leaf_spec("pickup(Apple)", "put(Apple,CounterTop)")
+    for mode in ("exact", "fast"):
+        r = plan(world, spec, [(0, 0)], mode=mode)
+        assert r.solved and r.total_cost == 7
+        assert [(e["atom"], e["task"]) for e in r.events] == [
+            ("open(Fridge)", "task1.1"), ("pickup(Apple)", "task1.1"), ("put(Apple,CounterTop)", "task1.1")]
+    # a robot that may not open anything: nothing static is wrong, the exhaustive search proves there
+    # is no plan and names the missing ability
+    r = plan(world, spec, [(0, 0)], capabilities=[["pickup", "put"]])
     assert r.status == "infeasible"
-    assert "no sequence of robot actions" in r.reason
+    assert "no robot in the team can open(Fridge)" in r.reason and "no sequence of robot actions" in r.reason
 
 
 def test_timeout_returns_quickly_without_a_plan():
     world = demo_world()
-    spec = [
+    spec = HierarchicalSpec([
         {"task1": " & ".join(f"F task1.{k}" for k in range(1, 7))},
         {f"task1.{k}": body for k, body in enumerate([
             ["pickup(Plate)", "open(Dishwasher)", "put(Plate,DishwasherLowerRack)"],
@@ -77,7 +86,7 @@ def test_timeout_returns_quickly_without_a_plan():
             ["pickup(Book)", "toggle_on(FloorLamp)"],
             ["pickup(Fork)", "put(Fork,Bowl)", "pickup(Bowl)", "put(Bowl,DiningTable)"],
         ], start=1)},
-    ]
+    ])
     t0 = time.perf_counter()
     r = plan(world, spec, [(0, 0), (9, 13), (0, 13)], mode="exact", timeout_s=0.001)
     assert time.perf_counter() - t0 < 2.0
@@ -96,4 +105,35 @@ def test_malformed_input(two_tasks_world):
     with pytest.raises(PlanningError, match="unknown objective"):
         plan(two_tasks_world, leaf_spec("pickup(Apple)"), [(0, 0)], objective="sum")
     with pytest.raises(SpecError):
-        plan(two_tasks_world, [{"task1": "G task1.1"}, {"task1.1": ["pickup(Apple)"]}], [(0, 0)])
+        plan(two_tasks_world, HierarchicalSpec([{"task1": "G task1.1"}, {"task1.1": ["pickup(Apple)"]}]),
+             [(0, 0)])
+    with pytest.raises(PlanningError, match="takes a HierarchicalSpec"):
+        plan(two_tasks_world, [{"task1": "F task1.1"}, {"task1.1": ["pickup(Apple)"]}], [(0, 0)])
+
+
+def test_a_plan_failing_validation_is_an_error_not_a_plan(two_tasks_world, monkeypatch):
+    import nl2hltl2plan.planning.api as api
+    from nl2hltl2plan.planning import Validation, validate
+
+    def broken(world, spec, plan):
+        v = validate(world, spec, plan)
+        return Validation(False, ["simulated failure"], v.execution)
+
+    monkeypatch.setattr(api, "validate", broken)
+    r = plan(two_tasks_world, leaf_spec("pickup(Apple)", "put(Apple,CounterTop)"), [(0, 0)])
+    assert r.status == "error" and r.plan is None and "simulated failure" in r.reason
+
+
+def test_validate_judges_plans_from_elsewhere(two_tasks_world):
+    from nl2hltl2plan.planning import validate
+    from nl2hltl2plan.worlds.plan import Plan, RobotPlan
+
+    spec = leaf_spec("pickup(Apple)", "put(Apple,CounterTop)")
+    good = plan(two_tasks_world, spec, [(0, 0)]).plan
+    assert validate(two_tasks_world, spec, good).ok
+    idle = Plan(robots=[RobotPlan(robot=0, start=(0, 0), steps=[])])
+    verdict = validate(two_tasks_world, spec, idle)
+    assert not verdict.ok and verdict.reasons
+    late = good.model_copy(deep=True)
+    late.robots[0].steps = [s for s in late.robots[0].steps if s.verb != "put"]
+    assert not validate(two_tasks_world, spec, late).ok

@@ -3,9 +3,10 @@
 import pytest
 
 from nl2hltl2plan.worlds import check, execute
-from nl2hltl2plan.worlds.alfred import benchmark_issues, build_benchmark_world, start_cells
+from nl2hltl2plan.worlds.alfred import benchmark_issues, build_benchmark_world
 from nl2hltl2plan.worlds.benchmark import gt_instance
 from nl2hltl2plan.worlds.scripted import scripted_plan, sequential_plan
+from nl2hltl2plan.worlds.starts import start_cells
 
 pytestmark = pytest.mark.data
 
@@ -79,7 +80,7 @@ def test_every_feasible_instance_is_doable_by_one_robot(gt_instances, worlds):
         world = worlds[g.id]
         if benchmark_issues(world, g):
             continue
-        plan = sequential_plan(world, g.tasks, g.before, start=start_cells(world, g, 1)[0])
+        plan = sequential_plan(world, g.tasks, g.before, start=start_cells(world, 1, gt=g)[0])
         ex = execute(world, plan)
         res = check(ex, g)
         done += 1
@@ -90,7 +91,7 @@ def test_every_feasible_instance_is_doable_by_one_robot(gt_instances, worlds):
 
 
 def _two_robot(world, gt, r0, r1):
-    starts = start_cells(world, gt, 2)
+    starts = start_cells(world, 2, gt=gt)
     return execute(world, scripted_plan(world, {0: (starts[0], r0), 1: (starts[1], r1)}))
 
 
@@ -164,7 +165,7 @@ def test_hand_written_plan_breaking_the_order_fails(data):
 def test_start_cells_use_init_pos(data):
     g = gt_instance("FloorPlan204.tasks_3.compose_2.fintune_1")
     w = build_benchmark_world(g)
-    cells = start_cells(w, g, 4, draw=2)
+    cells = start_cells(w, 4, gt=g, draw=2)
     assert len(cells) == 4 and all(c in w.components[0] for c in cells)
     x, z = g.init_pos[2][0]
     assert w.cell_of(x, z, main=True) == cells[0]
@@ -216,7 +217,7 @@ def test_ai2thor_boundary(data):
         1 for o in w.objects.values() if o.pickupable and o.present
     )
     plan = scripted_plan(
-        w, {0: (start_cells(w, g, 1)[0], ["open Fridge_0", "pickup Apple_0", "put Apple_0 Fridge_0"])}
+        w, {0: (start_cells(w, 1, gt=g)[0], ["open Fridge_0", "pickup Apple_0", "put Apple_0 Fridge_0"])}
     )
     calls = plan_actions(w, plan)[0]
     assert calls[0]["action"] == "Teleport" and calls[-1]["action"] == "PutObject"

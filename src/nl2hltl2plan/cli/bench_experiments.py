@@ -35,7 +35,7 @@ def _positive(text: str) -> int:
 def register(sub: Any) -> None:
     """Add `tabletop` and `handover` parsers to a subparsers object."""
     t = sub.add_parser("tabletop", help="the paper's tabletop study (Table II)")
-    t.add_argument("--out", type=Path, required=True, help="output folder")
+    t.add_argument("-o", "--out", type=Path, required=True, help="output folder")
     t.add_argument("--instances", type=_positive, default=25, help="seeded instances per task (25)")
     t.add_argument("--seed", type=int, default=0, help="seed of the object layouts (0)")
     t.add_argument("--baseline", choices=["auto", "llm", "none"], default="auto",
@@ -43,7 +43,7 @@ def register(sub: Any) -> None:
     _llm_args(t)
     t.set_defaults(func=run_tabletop)
     h = sub.add_parser("handover", help="the paper's four-arm handover study (Table III)")
-    h.add_argument("--out", type=Path, required=True, help="output folder")
+    h.add_argument("-o", "--out", type=Path, required=True, help="output folder")
     h.add_argument("--instances", type=_positive, default=10, help="seeded instances per task (10)")
     h.add_argument("--seed", type=int, default=0, help="seed of block placements and arm poses (0)")
     h.set_defaults(func=run_handover)

@@ -1,4 +1,4 @@
-"""`nl2hltl2plan bench alfred (--oracle | --llm offline|local|openai) --robots 1,2,4 --out DIR`
+"""`nl2hltl2plan bench alfred (--oracle | --llm offline|local|openai) --robots 1,2,4 -o DIR`
 
 Runs every selected benchmark instance (ALFRED, ../shared/data/benchmark, or --gt FILE with the same
 schema) for every team size: with --llm, the whole pipeline (language stage -> hierarchical spec ->
@@ -11,70 +11,103 @@ DIR/report.md with plots, and prints a table in the layout of the paper's Table 
 from __future__ import annotations
 
 import argparse
+import importlib
 import json
 import os
 import sys
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
+from nl2hltl2plan.cli.options import (
+    add_backend_argument,
+    add_llm_arguments,
+    add_planner_arguments,
+    int_list,
+    llm_settings,
+    nonnegative_int,
+    planner_options,
+    positive_int,
+)
 from nl2hltl2plan.errors import PlanningError
+from nl2hltl2plan.evaluation.ray_engine import ENGINES, run_with_engine
+from nl2hltl2plan.evaluation.runner import Row, Scenario, is_errored
+from nl2hltl2plan.io import ensure_writable_dir, write_json
+from nl2hltl2plan.pipeline import PipelineOptions
+from nl2hltl2plan.worlds.benchmark import load_gt
+from nl2hltl2plan.worlds.tasks import GTInstance
 
-
-def _ints(text: str) -> list[int]:
-    try:
-        values = [int(x) for x in text.split(",") if x.strip()]
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"expected comma-separated integers, got {text!r}") from None
-    if not values or any(v < 1 for v in values):
-        raise argparse.ArgumentTypeError(f"expected positive integers, got {text!r}")
-    return values
+# Each suite module exposes `register(bench_subparsers)`; a module missing from the tree is not offered.
+SUITE_MODULES = ["nl2hltl2plan.cli.bench_experiments", "nl2hltl2plan.cli.bench_smartllm"]
 
 
 def register(sub: Any) -> None:
-    p = sub.add_parser(
+    bench = sub.add_parser(
         "bench",
-        help="benchmark the pipeline on ALFRED instances (Table I)",
+        help="benchmarks: alfred (Table I) and the other suites",
+        description="Benchmarks; `nl2hltl2plan bench SUITE --help` for each suite.",
+    )
+    suites = bench.add_subparsers(dest="suite", metavar="SUITE", required=True)
+    p = suites.add_parser(
+        "alfred",
+        help="the paper's AI2-THOR benchmark (Table I)",
         description=__doc__.split("\n\n")[1],
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
-    p.add_argument("suite", choices=["alfred"], help="benchmark suite")
-    source = p.add_mutually_exclusive_group()
+    source = p.add_mutually_exclusive_group(required=True)
     source.add_argument("--oracle", action="store_true", help="plan from oracle specs (a perfect translator)")
-    source.add_argument(
-        "--llm",
-        choices=["offline", "local", "openai"],
-        default=None,
-        help="run the language stage with this backend (the whole pipeline)",
-    )
+    add_backend_argument(source, help_extra=" (runs the whole pipeline)")
     p.add_argument(
         "--gt",
         type=Path,
         default=None,
         help="ground-truth JSONL with the schema of alfred_test50_gt.jsonl (default: that file)",
     )
-    llm = p.add_argument_group("LLM backend for --llm local|openai (environment: NL2HLTL2PLAN_LLM_*)")
-    llm.add_argument("--base-url", default=None, help="OpenAI-compatible endpoint")
-    llm.add_argument("--model", default=None, help="model name")
-    llm.add_argument("--api-key", default=None, help="API key (better: NL2HLTL2PLAN_LLM_API_KEY)")
-    llm.add_argument("--gguf", default=None, help="GGUF file for --llm local (default: SmolLM2 test model)")
-    llm.add_argument("--cache", default=None, help="answer cache folder, or 'off'")
-    p.add_argument("--robots", type=_ints, default=[1, 2, 4], help="team sizes, e.g. 1,2,4 (default)")
-    p.add_argument("--n-base", type=_ints, default=None, help="base-task counts to include (default: all)")
-    p.add_argument("--limit", type=int, default=None, help="first N instances only (after --n-base)")
-    p.add_argument("--draw", type=int, default=0, help="init_pos draw for the start cells (default 0)")
-    p.add_argument("--workers", type=int, default=None, help="parallel worker processes (default: CPU cores)")
-    p.add_argument("--objective", choices=["min", "minmax"], default="min")
-    p.add_argument("--mode", choices=["fast", "exact"], default="fast")
-    p.add_argument("--timeout", type=float, default=300.0, help="planner time limit per scenario in s (300)")
+    p.add_argument("--robots", type=int_list, default=[1, 2, 4], help="team sizes (default 1,2,4)")
+    p.add_argument("--n-base", type=int_list, default=None, help="base-task counts to include (default: all)")
+    p.add_argument(
+        "--limit",
+        type=positive_int,
+        default=None,
+        help="first N instances only, after --n-base (default: all)",
+    )
+    p.add_argument(
+        "--draw", type=nonnegative_int, default=0, help="init_pos draw for the start cells, 0..4 (default 0)"
+    )
+    p.add_argument(
+        "--workers", type=positive_int, default=None, help="parallel worker processes (default: CPU cores)"
+    )
+    add_planner_arguments(p, timeout_help="planner time limit per scenario")
+    p.add_argument(
+        "--engine",
+        choices=ENGINES,
+        default="local",
+        help="local: worker processes on this machine; ray: Ray tasks, for runs that outgrow one "
+        "machine (pip install 'nl2hltl2plan[ray]') (default: local)",
+    )
+    p.add_argument(
+        "--address",
+        default=None,
+        help="with --engine ray: join a running Ray cluster HOST:PORT (default: a local Ray)",
+    )
     p.add_argument("--fresh", action="store_true", help="start over instead of resuming DIR/scenarios.jsonl")
     p.add_argument("--quiet", action="store_true", help="no progress display")
     p.add_argument("--json", action="store_true", help="print summary.json instead of the table")
-    p.add_argument("--out", type=Path, required=True, help="output folder")
-    p.set_defaults(func=run, source_group=source)
+    p.add_argument("-o", "--out", type=Path, required=True, help="output folder")
+    add_llm_arguments(p)
+    p.set_defaults(func=run)
+    for name in SUITE_MODULES:
+        try:
+            module = importlib.import_module(name)
+        except ModuleNotFoundError as exc:
+            if exc.name == name:
+                continue
+            raise
+        module.register(suites)
 
 
 def run(args: argparse.Namespace) -> int:
-    from nl2hltl2plan.evaluation.alfred import alfred_scenarios, load_gt_file, oracle_job, preload
+    from nl2hltl2plan.evaluation.alfred import alfred_scenarios, oracle_job, preload
     from nl2hltl2plan.evaluation.report import format_table
     from nl2hltl2plan.evaluation.report_md import (
         failures_markdown,
@@ -82,38 +115,36 @@ def run(args: argparse.Namespace) -> int:
         table1_markdown,
         write_report,
     )
-    from nl2hltl2plan.evaluation.runner import run_scenarios
+    from nl2hltl2plan.evaluation.rows import rows_of
 
-    if not args.oracle and not args.llm:
-        raise PlanningError(
-            "choose where the specs come from: --oracle (perfect translations) or --llm BACKEND"
-        )
-    if args.limit is not None and args.limit < 1:
-        raise PlanningError("--limit must be at least 1")
+    out: Path = ensure_writable_dir(args.out)
     preload()
-    gts = load_gt_file(args.gt)
+    gts = {g.id: g for g in load_gt(args.gt)}
     scenarios = alfred_scenarios(args.robots, args.n_base, args.limit, args.draw, gts=list(gts.values()))
+    short = sorted({s.instance for s in scenarios if args.draw >= len(gts[s.instance].init_pos)})
+    if short:
+        raise PlanningError(f"--draw {args.draw} is out of range for {short[0]} ({len(short)} instance(s))")
     if not scenarios:
         raise PlanningError("no benchmark instance matches --n-base/--limit")
     workers = args.workers or os.cpu_count() or 1
-    out: Path = args.out
-    out.mkdir(parents=True, exist_ok=True)
     if args.fresh:
         for name in ("scenarios.jsonl", "language.jsonl"):
             (out / name).unlink(missing_ok=True)
-    planner = {"objective": args.objective, "mode": args.mode, "timeout_s": args.timeout}
+    options = PipelineOptions(backend=args.llm or "offline", **planner_options(args))
     if args.oracle:
-        job = oracle_job(gts=gts, **planner)
+        job = oracle_job(options, gts)
         source = "oracle specs"
     else:
-        job = _language_job(args, gts, scenarios, out, planner)
+        job = _language_job(args, gts, scenarios, out, options)
         source = f"language backend {args.llm}"
 
     with _Progress(len(scenarios), "planning", args.quiet) as bar:
-        rows = run_scenarios(
+        rows = run_with_engine(
+            args.engine,
             scenarios,
             job,
             out / "scenarios.jsonl",
+            address=args.address,
             workers=workers,
             hard_timeout_s=args.timeout + 60.0,
             resume=True,
@@ -124,55 +155,64 @@ def run(args: argparse.Namespace) -> int:
         f"ALFRED benchmark, {source}, objective {args.objective}, mode {args.mode} "
         f"({len(rows)} scenarios, {workers} workers)"
     )
-    summary = write_report(rows, out, title, command, machine_description())
+    summary = write_report(rows_of(rows), out, title, command, machine_description())
     summary["command"] = command
     summary["settings"] = {
         "source": "oracle" if args.oracle else args.llm,
         "gt": str(args.gt or "default"),
-        **planner,
+        **planner_options(args),
         "robots": args.robots,
         "n_base": args.n_base,
         "limit": args.limit,
         "draw": args.draw,
         "workers": workers,
     }
-    (out / "summary.json").write_text(json.dumps(summary, indent=2))
+    write_json(out / "summary.json", summary, "summary file", indent=2)
     if args.json:
         print(json.dumps(summary, indent=2))
     elif args.oracle:
         print(format_table(summary, title))
     else:
         t = summary["plan_time_s"]
-        print(f"{title}\n\n{table1_markdown(summary)}\n\nfailures by first failing stage:\n"
-              f"{failures_markdown(summary)}\n\nplanning time s: median {t['median']}, p95 {t['p95']}, "
-              f"max {t['max']}")
+        print(
+            f"{title}\n\n{table1_markdown(summary)}\n\nfailures by first failing stage:\n"
+            f"{failures_markdown(summary)}\n\nplanning time s: median {t['median']}, p95 {t['p95']}, "
+            f"max {t['max']}"
+        )
     if not args.json:
         print(f"wrote {out / 'report.md'}, {out / 'summary.json'} and {out / 'scenarios.jsonl'}")
+    errored = [r for r in rows if is_errored(r)]
+    if errored:
+        print(
+            f"error: {len(errored)} of {len(rows)} scenarios errored (first: {errored[0].get('key')}: "
+            f"{errored[0].get('reason')})",
+            file=sys.stderr,
+        )
+        return 1
     return 0
 
 
-def _language_job(args: argparse.Namespace, gts: dict, scenarios: list, out: Path, planner: dict) -> Any:
+def _language_job(
+    args: argparse.Namespace,
+    gts: dict[str, GTInstance],
+    scenarios: list[Scenario],
+    out: Path,
+    options: PipelineOptions,
+) -> Callable[[Scenario], Row]:
     """Phase 1 in this process (an LLM is asked once per instruction), phase 2 in the workers."""
     from nl2hltl2plan.evaluation.language_bench import language_job, translate_instances
-    from nl2hltl2plan.language.llm.settings import LLMSettings
-    from nl2hltl2plan.language.pipeline import open_client
+    from nl2hltl2plan.language.backends import open_client
 
-    settings = LLMSettings.from_env(
-        base_url=args.base_url, model=args.model, api_key=args.api_key, gguf=args.gguf, cache_dir=args.cache
-    )
+    settings = llm_settings(args)
     ids = list(dict.fromkeys(s.instance for s in scenarios))
     with (
         open_client(args.llm, settings) as client,
         _Progress(len(ids), f"language ({args.llm})", args.quiet) as bar,
     ):
         records = translate_instances(
-            [gts[i] for i in ids],
-            args.llm,
-            client,
-            out / "language.jsonl",
-            progress=lambda _gt: bar.advance(),
+            [gts[i] for i in ids], options, client, out / "language.jsonl", progress=lambda _gt: bar.advance()
         )
-    return language_job(records, gts, **planner)
+    return language_job(records, gts, options)
 
 
 class _Progress:

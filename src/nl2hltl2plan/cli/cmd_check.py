@@ -4,9 +4,10 @@ from __future__ import annotations
 
 import argparse
 import json
-from pathlib import Path
+import sys
 
-from nl2hltl2plan.errors import SpecError
+from nl2hltl2plan.errors import DataError, SpecError
+from nl2hltl2plan.io import read_json
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 
 
@@ -25,9 +26,9 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 def run(args: argparse.Namespace) -> int:
     try:
-        data = json.loads(Path(args.spec).read_text())
-    except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:
-        return _report(args, 2, [f"cannot read {args.spec}: {getattr(exc, 'strerror', None) or exc}"])
+        data = read_json(args.spec, "specification file")
+    except DataError as exc:
+        return _report(args, 2, [str(exc)])
     try:
         spec = HierarchicalSpec.from_json(data)
     except SpecError as exc:
@@ -50,8 +51,13 @@ def _report(args: argparse.Namespace, code: int, reasons: list[str], summary: di
             f"valid: {summary['levels']} levels, {summary['formulas']} formulas, {summary['leaves']} leaves, "
             f"{len(summary['atoms'])} atomic propositions"
         )
+    elif code == 2:
+        print(f"error: {reasons[0]}", file=sys.stderr)
     else:
-        print("invalid:" if code == 1 else "unreadable:")
+        print("invalid:")
         for r in reasons:
             print(f"  - {r}")
+    if code == 1:
+        more = f" (and {len(reasons) - 1} more)" if len(reasons) > 1 else ""
+        print(f"error: invalid specification: {reasons[0]}{more}", file=sys.stderr)
     return code

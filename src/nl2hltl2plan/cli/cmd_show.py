@@ -5,17 +5,12 @@ from __future__ import annotations
 import argparse
 import json
 import textwrap
-from pathlib import Path
 
-import matplotlib
+import networkx as nx
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import networkx as nx  # noqa: E402
-
-from nl2hltl2plan.errors import DataError  # noqa: E402
-from nl2hltl2plan.language.htt import HTT  # noqa: E402
-from nl2hltl2plan.logic.hierarchical import HierarchicalSpec  # noqa: E402
+from nl2hltl2plan.io import PICTURE_FORMATS, check_output_file, read_json
+from nl2hltl2plan.language.htt import HTT
+from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -32,10 +27,8 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    try:
-        data = json.loads(Path(args.file).read_text())
-    except (OSError, json.JSONDecodeError) as exc:
-        raise DataError(f"cannot read {args.file}: {getattr(exc, 'strerror', None) or exc}") from None
+    check_output_file(args.out, PICTURE_FORMATS, "picture")
+    data = read_json(args.file, "HTT or specification file")
     if isinstance(data, dict) and "nodes" in data:
         htt = HTT.from_json(data)
         g = htt.graph()
@@ -69,55 +62,15 @@ def run(args: argparse.Namespace) -> int:
 
 
 def draw_tree(g: nx.DiGraph, labels: dict[str, str], out: str, root: str | None = None) -> None:
-    """Layered top-down layout: depth from the decomposition edges, leaves spread evenly."""
-    tree = nx.DiGraph([(a, b) for a, b, d in g.edges(data=True) if d.get("kind") == "decomposition"])
-    tree.add_nodes_from(g.nodes)
-    roots = [root] if root else [n for n in tree if tree.in_degree(n) == 0]
-    pos: dict[str, tuple[float, float]] = {}
-    next_x = [0.0]
+    """The package's one tree drawing (`language.render.draw_tree`) on a graph with decomposition
+    edges and `before` relations."""
+    from nl2hltl2plan.language.render import draw_tree as render_tree
 
-    def place(n: str, depth: int) -> float:
-        kids = list(tree.successors(n))
-        x = sum(place(c, depth + 1) for c in kids) / len(kids) if kids else next_x[0]
-        if not kids:
-            next_x[0] += 1.0
-        pos[n] = (x, -depth)
-        return x
-
-    for r in roots:
-        place(r, 0)
-    width = max(4.0, 2.6 * next_x[0])
-    height = max(3.0, 2.0 * (1 + max(-y for _, y in pos.values())))
-    fig, ax = plt.subplots(figsize=(width, height))
-    dec = [(a, b) for a, b, d in g.edges(data=True) if d.get("kind") == "decomposition"]
-    rel = [(a, b) for a, b, d in g.edges(data=True) if d.get("kind") == "before"]
-    nx.draw_networkx_edges(g, pos, edgelist=dec, ax=ax, arrows=False, edge_color="black")
-    nx.draw_networkx_edges(
-        g,
-        pos,
-        edgelist=rel,
-        ax=ax,
-        edge_color="tab:red",
-        style="dashed",
-        connectionstyle="arc3,rad=0.3",
-        arrowsize=15,
-    )
-    for n, (x, y) in pos.items():
-        ax.text(
-            x,
-            y,
-            labels.get(n, n),
-            ha="center",
-            va="center",
-            fontsize=7,
-            bbox={
-                "boxstyle": "round",
-                "fc": "lightyellow" if tree.out_degree(n) else "lightblue",
-                "ec": "gray",
-            },
-        )
-    ax.set_axis_off()
-    ax.margins(0.15)
-    fig.tight_layout()
-    fig.savefig(out, dpi=120)
-    plt.close(fig)
+    children: dict[str, list[str]] = {n: [] for n in g.nodes}
+    relations = []
+    for a, b, d in g.edges(data=True):
+        if d.get("kind") == "decomposition":
+            children[a].append(b)
+        elif d.get("kind") == "before":
+            relations.append((a, b))
+    render_tree(children, labels, relations, out)

@@ -4,10 +4,14 @@ from __future__ import annotations
 
 import argparse
 import json
+from pathlib import Path
 
+from nl2hltl2plan.io import ensure_writable_dir
 from nl2hltl2plan.language.htt import HTT
 from nl2hltl2plan.language.spec_builder import build_spec
-from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
+from nl2hltl2plan.logic import spot_backend as sb
+from nl2hltl2plan.logic.flatten import size_report
+from nl2hltl2plan.logic.hierarchical import HierarchicalSpec, format_spec
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -20,19 +24,31 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("htt", help="HTT JSON file (see examples/dishwasher_htt.json)")
     p.add_argument("--sizes", action="store_true", help="also report automaton sizes: hierarchy vs flat")
     p.add_argument("--json", action="store_true", help="print one JSON object")
+    p.add_argument(
+        "--hoa",
+        type=Path,
+        metavar="DIR",
+        default=None,
+        help="write each flat formula's automaton to DIR/<name>.hoa in the HOA format (written by Spot)",
+    )
     p.set_defaults(func=run)
 
 
 def run(args: argparse.Namespace) -> int:
     spec = build_spec(HTT.load(args.htt))
-    sizes = spec.size_report() if args.sizes else None
+    sizes = size_report(spec) if args.sizes else None
+    written = write_hoa(spec, args.hoa) if args.hoa else None
     if args.json:
         out: dict = {"levels": spec.to_json_obj()}
         if sizes:
             out["sizes"] = sizes.to_dict()
+        if written is not None:
+            out["hoa"] = {name: str(path) for name, path in written.items()}
         print(json.dumps(out, indent=2))
         return 0
     print(format_spec(spec))
+    if written is not None:
+        print(f"\nwrote {len(written)} automata in HOA format to {args.hoa}/")
     if sizes:
         print(
             f"\nautomaton sizes: hierarchy {sizes.hierarchical_states} states / "
@@ -49,9 +65,13 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
-def format_spec(spec: HierarchicalSpec) -> str:
-    lines = []
-    for k, level in enumerate(spec.levels, start=1):
-        for name in level:
-            lines.append(f"L{k}  {name} = {spec.text(name)}")
-    return "\n".join(lines)
+def write_hoa(spec: HierarchicalSpec, folder: Path) -> dict[str, Path]:
+    """DIR/<name>.hoa for every flat formula (leaves too: their action sequence formula)."""
+    ensure_writable_dir(folder, "HOA folder")
+    written = {}
+    for name in spec.names:
+        path = folder / f"{name}.hoa"
+        path.write_text(sb.hoa(spec.formula(name)))
+        written[name] = path
+    return written
+

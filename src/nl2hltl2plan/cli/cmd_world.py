@@ -6,6 +6,7 @@ import argparse
 import json
 
 from nl2hltl2plan.errors import WorldError
+from nl2hltl2plan.io import PICTURE_FORMATS, check_output_file
 
 DEMO_TASKS = [  # the paper's dishwasher example, one base task per item
     {"id": "A", "kind": "place", "object": ["Plate"], "receptacle": ["DishwasherLowerRack"]},
@@ -31,7 +32,12 @@ def register(subparsers) -> None:
     p.add_argument("name", help="demo | FloorPlanN | benchmark instance id")
     p.add_argument("--trials", nargs="+", metavar="TRIAL", help="ALFRED trial ids whose object poses to use")
     p.add_argument("--json", action="store_true", help="print JSON instead of text")
-    p.add_argument("-o", "--output", metavar="PNG", help="draw the world (or, with --run, the execution)")
+    p.add_argument(
+        "-o",
+        "--out",
+        metavar="PICTURE",
+        help="draw the world (or, with --run, the execution) to this .png/.svg/.pdf (default: none)",
+    )
     p.add_argument(
         "--regions",
         nargs="+",
@@ -47,7 +53,9 @@ def register(subparsers) -> None:
         help="execute a one-robot greedy plan of the tasks (benchmark: its ground truth; demo: the paper's "
         "dishwasher example) and check it",
     )
-    p.add_argument("--gif", metavar="GIF", help="with --run: also write an animated GIF of the execution")
+    p.add_argument(
+        "--gif", metavar="GIF", help="with --run: also write an animated GIF of the execution (default: none)"
+    )
     p.set_defaults(func=run)
 
 
@@ -56,20 +64,23 @@ def _load(args):
     from nl2hltl2plan.worlds.tasks import GTInstance
 
     if ".tasks_" in args.name:
-        from nl2hltl2plan.worlds.alfred import build_benchmark_world, start_cells
+        from nl2hltl2plan.worlds.alfred import build_benchmark_world
         from nl2hltl2plan.worlds.benchmark import gt_instance
+        from nl2hltl2plan.worlds.starts import start_cells
 
         if args.trials:
             raise WorldError("a benchmark instance brings its own trials; drop --trials")
         gt = gt_instance(args.name)
         world = build_benchmark_world(gt)
-        return world, gt, start_cells(world, gt, 1)[0]
+        return world, gt, start_cells(world, 1, gt=gt)[0]
     world = load_world(args.name, args.trials)
-    gt = None
+    demo_gt: GTInstance | None = None
     if world.kind == "demo":
-        gt = GTInstance(id="demo.dishwasher", scene="demo", tasks=DEMO_TASKS, before=DEMO_BEFORE)
+        demo_gt = GTInstance.model_validate(
+            {"id": "demo.dishwasher", "scene": "demo", "tasks": DEMO_TASKS, "before": DEMO_BEFORE}
+        )
     start = world.default_starts[0] if world.default_starts else None
-    return world, gt, start
+    return world, demo_gt, start
 
 
 def run(args: argparse.Namespace) -> int:
@@ -78,6 +89,10 @@ def run(args: argparse.Namespace) -> int:
 
     if args.gif and not args.run:
         raise WorldError("--gif needs --run")
+    if args.out:
+        check_output_file(args.out, PICTURE_FORMATS, "picture")
+    if args.gif:
+        check_output_file(args.gif, ("gif",), "animation")
     world, gt, start = _load(args)
     out = world.summary()
     if args.objects:
@@ -97,14 +112,14 @@ def run(args: argparse.Namespace) -> int:
         execution = execute(world, plan)
         result = check(execution, gt)
         out["run"] = {**execution.to_dict(), "check": result.model_dump()}
-    if args.output:
+    if args.out:
         from nl2hltl2plan.worlds.pictures import draw_execution, draw_world
 
         if execution is not None:
-            draw_execution(execution, args.output)
+            draw_execution(execution, args.out)
         else:
-            draw_world(world, args.output, regions=args.regions)
-        out["picture"] = args.output
+            draw_world(world, args.out, regions=args.regions)
+        out["picture"] = args.out
     if args.gif and execution is not None:
         from nl2hltl2plan.worlds.pictures import animate_execution
 

@@ -12,16 +12,26 @@ import argparse
 import importlib
 import os
 import sys
+from typing import NoReturn
+
+from pydantic import ValidationError
 
 from nl2hltl2plan import __version__
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 
 # Order here is the order in `--help`; a module missing from the tree is simply not offered.
-COMMAND_MODULES = ["spec", "check", "show", "world", "plan", "bench"]
+COMMAND_MODULES = ["spec", "check", "show", "world", "plan", "bench", "serve"]
+
+
+class _Parser(argparse.ArgumentParser):
+    """Usage errors as one line on stderr (exit 2), pointing at --help instead of dumping the usage."""
+
+    def error(self, message: str) -> NoReturn:
+        self.exit(2, f"error: {self.prog}: {message} (see {self.prog} --help)\n")
 
 
 def build_parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(
+    parser = _Parser(
         prog="nl2hltl2plan",
         description="Natural language -> Hierarchical Task Tree -> hierarchical sc-LTL -> multi-robot plans.",
     )
@@ -38,16 +48,33 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+def _one_line(text: str) -> str:
+    lines = [line.strip() for line in text.splitlines() if line.strip()]
+    return " | ".join(lines) if lines else "unknown error"
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = build_parser()
-    args = parser.parse_args(argv)
+    try:
+        args = parser.parse_args(argv)
+    except SystemExit as exc:  # usage errors (exit 2) and --help (exit 0), already printed
+        return int(exc.code or 0) if isinstance(exc.code, int | None) else 2
     if not getattr(args, "func", None):
         parser.print_help()
         return 2
     try:
         return int(args.func(args) or 0)
     except Nl2Hltl2PlanError as exc:
-        print(f"error: {exc}", file=sys.stderr)
+        print(f"error: {_one_line(str(exc))}", file=sys.stderr)
+        return 2
+    except ValidationError as exc:  # options validated by a pydantic model
+        err = exc.errors()[0]
+        where = ".".join(str(x) for x in err["loc"])
+        print(f"error: invalid {where}: {err['msg']}", file=sys.stderr)
+        return 2
+    except OSError as exc:  # a path the user gave that cannot be read or written
+        where = f" {exc.filename}" if exc.filename else ""
+        print(f"error: cannot use{where}: {exc.strerror or exc}", file=sys.stderr)
         return 2
     except BrokenPipeError:  # output piped into `head` & co.: stop quietly
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())

@@ -1,49 +1,25 @@
 """The ALFRED benchmark: scenarios (instance x team size), the oracle-spec job, plan + execute + check.
 
-`plan_and_check(world, spec, gt, starts, ...)` is the generic step every benchmark job ends with,
-whatever produced the spec (oracle converter here, the language stage with --llm): plan, execute
-(done inside `planning.plan`, which refuses to return an unverified plan) and judge the execution
-with the ground-truth goal checker (goals and strict `before` order).
+Every job ends with `pipeline.planning_stage`, whatever produced the spec (the oracle converter here,
+the language stage with --llm): plan, execute (inside `planning.plan`, which refuses to return an
+unverified plan) and judge the execution with the ground-truth goal checker (goals and strict
+`before` order); `ScenarioRow.from_planned` turns that into the scenario's row.
 """
 
 from __future__ import annotations
 
-import json
-from collections.abc import Sequence
-from pathlib import Path
+from collections.abc import Callable, Sequence
 from typing import Any
 
-from pydantic import ValidationError
-
-from nl2hltl2plan.errors import DataError
+from nl2hltl2plan.evaluation.rows import ScenarioRow
 from nl2hltl2plan.evaluation.runner import Row, Scenario
-from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
-from nl2hltl2plan.planning import oracle_spec, plan
-from nl2hltl2plan.worlds.alfred import benchmark_issues, build_benchmark_world, start_cells
+from nl2hltl2plan.pipeline import PipelineOptions, planning_stage
+from nl2hltl2plan.planning import oracle_spec
+from nl2hltl2plan.worlds.alfred import benchmark_issues, build_benchmark_world
 from nl2hltl2plan.worlds.benchmark import gt_instance, load_gt
-from nl2hltl2plan.worlds.checker import check
 from nl2hltl2plan.worlds.model import Cell, World
+from nl2hltl2plan.worlds.starts import start_cells
 from nl2hltl2plan.worlds.tasks import GTInstance
-
-
-def load_gt_file(path: Path | None = None) -> dict[str, GTInstance]:
-    """Ground-truth instances by id: the benchmark's file, or any JSONL file with its schema."""
-    if path is None:
-        return {g.id: g for g in load_gt()}
-    try:
-        lines = [line for line in Path(path).read_text().splitlines() if line.strip()]
-    except OSError as exc:
-        raise DataError(f"cannot read ground truth {path}: {exc.strerror}") from None
-    out: dict[str, GTInstance] = {}
-    for k, line in enumerate(lines, start=1):
-        try:
-            gt = GTInstance.model_validate(json.loads(line))
-        except (json.JSONDecodeError, ValidationError) as exc:
-            raise DataError(
-                f"{path}:{k} is not a ground-truth instance: {str(exc).splitlines()[0]}"
-            ) from None
-        out[gt.id] = gt
-    return out
 
 
 def alfred_scenarios(
@@ -62,54 +38,37 @@ def alfred_scenarios(
     return [Scenario(g.id, g.n_base, r, draw) for g in insts for r in robots]
 
 
-def plan_and_check(
-    world: World,
-    spec: HierarchicalSpec,
-    gt: GTInstance,
-    starts: Sequence[Cell],
-    **planner: Any,
-) -> Row:
-    """Plan, then judge the executed plan with the goal checker; one JSON-ready row."""
-    result = plan(world, spec, starts, **planner)
-    row: Row = result.to_dict(with_plan=False)
-    row["events"] = result.events
-    row["success"] = False
-    if result.solved and result.execution is not None:
-        verdict = check(result.execution, gt)
-        row["success"] = verdict.success
-        row["check_reasons"] = verdict.reasons
-        row["goal_steps"] = verdict.goal_steps
-    return row
+def instance_fields(world: World, gt: GTInstance, starts: list[Cell]) -> dict[str, Any]:
+    """What every row says about its instance: can this world do it, how the annotators judged it."""
+    issues = benchmark_issues(world, gt)
+    return {
+        "feasible": not issues,
+        "issues": issues,
+        "gt_feasible": gt.feasible,
+        "ambiguous": gt.ambiguous,
+        "starts": [list(c) for c in starts],
+    }
 
 
 def oracle_job(
-    objective: str = "min",
-    mode: str = "fast",
-    timeout_s: float = 300.0,
-    gts: dict[str, GTInstance] | None = None,
-    **planner: Any,
-):
+    options: PipelineOptions | None = None, gts: dict[str, GTInstance] | None = None
+) -> Callable[[Scenario], Row]:
     """A job for `run_scenarios`: oracle spec of the instance -> plan -> execute -> check."""
 
     def job(scenario: Scenario) -> Row:
         gt = gts[scenario.instance] if gts is not None else gt_instance(scenario.instance)
         world = build_benchmark_world(gt)
-        issues = benchmark_issues(world, gt)
+        starts = start_cells(world, scenario.robots, gt=gt, draw=scenario.draw)
         spec = oracle_spec(gt, world).spec
-        starts = start_cells(world, gt, scenario.robots, scenario.draw)
-        row = plan_and_check(
-            world, spec, gt, starts, objective=objective, mode=mode, timeout_s=timeout_s, **planner
-        )
-        row["feasible"] = not issues
-        row["issues"] = issues
-        row["gt_feasible"] = gt.feasible
         # a perfect translation: conversion succeeds by construction; the rest is the planner's
-        row["conversion_ok"] = True
-        row["planning_ok"] = row.get("status") == "solved"
-        row["stage"] = None if row["success"] else ("execution" if row["planning_ok"] else "planning")
-        row["ambiguous"] = gt.ambiguous
-        row["starts"] = [list(c) for c in starts]
-        return row
+        row = ScenarioRow.from_planned(
+            planning_stage(world, spec, starts, options, gt),
+            conversion_ok=True,
+            **instance_fields(world, gt, starts),
+        )
+        row.planning_ok = row.status == "solved"
+        row.stage = None if row.success else ("execution" if row.planning_ok else "planning")
+        return row.to_json()
 
     return job
 

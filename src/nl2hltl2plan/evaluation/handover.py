@@ -117,11 +117,11 @@ def run_task(task: HandoverTask, instances: int, seed: int, **plan_kw: Any) -> d
 def language_check(task: HandoverTask, seed: int = 0) -> dict[str, Any]:
     """Does the language stage (default backend) turn the instruction into a spec that agrees with the
     written one? Agreement is tested on instance 0: the plan for each spec must satisfy the other."""
-    from nl2hltl2plan.language.pipeline import translate
+    from nl2hltl2plan.pipeline import language_stage
 
     hw = instance(task, seed, 0)
     try:
-        language = translate(task.instruction, hw.as_world())
+        language = language_stage(task.instruction, hw.as_world())
     except Nl2Hltl2PlanError as exc:
         return {"converted": False, "equivalent": False, "why": f"language stage: {exc}"}
     if language.spec is None:

@@ -17,19 +17,19 @@ order of the paper's Table IV plus planning and execution.
 
 from __future__ import annotations
 
-import json
 from collections.abc import Callable, Iterable
 from pathlib import Path
-from typing import Any
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
-from nl2hltl2plan.evaluation.alfred import plan_and_check
+from nl2hltl2plan.evaluation.alfred import instance_fields
+from nl2hltl2plan.evaluation.rows import LanguageRecord, ScenarioRow
 from nl2hltl2plan.evaluation.runner import Row, Scenario, load_rows
 from nl2hltl2plan.language.llm.client import LLMClient
-from nl2hltl2plan.language.pipeline import translate
 from nl2hltl2plan.language.scoring import match
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
-from nl2hltl2plan.worlds.alfred import benchmark_issues, build_benchmark_world, start_cells
+from nl2hltl2plan.pipeline import PipelineOptions, language_stage, planning_stage
+from nl2hltl2plan.worlds.alfred import build_benchmark_world
+from nl2hltl2plan.worlds.starts import start_cells
 from nl2hltl2plan.worlds.tasks import GTInstance
 
 STAGES = (
@@ -42,75 +42,63 @@ STAGES = (
 )
 
 
-def language_record(gt: GTInstance, backend: str, client: LLMClient | None, ltl: str = "compiler") -> Row:
+def language_record(gt: GTInstance, options: PipelineOptions, client: LLMClient | None) -> LanguageRecord:
     """Run the language stage on one instruction and score it against the ground truth."""
     world = build_benchmark_world(gt)
-    rec: Row = {"key": gt.id, "instance": gt.id, "n_base": gt.n_base, "backend": backend}
-    grounding_error = None
+    rec = LanguageRecord(key=gt.id, instance=gt.id, n_base=gt.n_base, backend=options.backend)
+    lenient = options.model_copy(update={"strict": False})
     try:
-        result = translate(gt.instruction, world, backend=backend, client=client, ltl=ltl, strict=False)
+        result = language_stage(gt.instruction, world, lenient, client)
     except Nl2Hltl2PlanError as exc:
         # a task this world cannot provide (no such object, a receptacle that refuses it): the
         # conversion is still scored; planning fails with this reason
-        grounding_error = str(exc)
+        rec.error = str(exc)
         try:
-            result = translate(
-                gt.instruction,
-                world,
-                backend=backend,
-                client=client,
-                ltl=ltl,
-                strict=False,
-                actions="none",
-                build_spec=False,
+            result = language_stage(
+                gt.instruction, world, lenient.model_copy(update={"actions": "none"}), client
             )
         except Nl2Hltl2PlanError as exc2:
-            rec.update(
-                ok=False, error=str(exc2), conversion_ok=False, stage="task decomposition", levels=None
-            )
-            return rec
+            return rec.model_copy(update={"error": str(exc2), "stage": "task decomposition"})
     verdict = match(result.tasks, result.before, [t.model_dump() for t in gt.tasks], gt.before)
-    rec.update(
-        ok=result.spec is not None,
-        error=grounding_error,
-        tasks=[t.model_dump() for t in result.tasks],
-        before=[list(p) for p in result.before],
-        unparsed=result.unparsed,
-        issues=result.issues,
-        ltl_checks=result.ltl_checks,
-        llm_calls=result.llm_calls,
-        levels=result.spec.to_json_obj() if result.spec is not None else None,
-        tasks_ok=verdict.tasks_ok,
-        conversion_ok=verdict.order_ok,
-        match_reasons=verdict.reasons,
+    rec = rec.model_copy(
+        update={
+            "ok": result.spec is not None,
+            "tasks": [t.model_dump() for t in result.tasks],
+            "before": [list(p) for p in result.before],
+            "unparsed": result.unparsed,
+            "issues": result.issues,
+            "ltl_checks": result.ltl_checks,
+            "llm_calls": result.llm_calls,
+            "levels": result.spec.to_json_obj() if result.spec is not None else None,
+            "tasks_ok": verdict.tasks_ok,
+            "conversion_ok": verdict.order_ok,
+            "match_reasons": verdict.reasons,
+        }
     )
     if not verdict.tasks_ok:
-        rec["stage"] = "task decomposition"
+        rec.stage = "task decomposition"
     elif not verdict.order_ok:
-        rec["stage"] = "temporal extraction"
-    elif result.spec is None and grounding_error is None:
-        rec["stage"] = "LTL translation"
-    else:
-        rec["stage"] = None
+        rec.stage = "temporal extraction"
+    elif result.spec is None and rec.error is None:
+        rec.stage = "LTL translation"
     return rec
 
 
 def translate_instances(
     gts: Iterable[GTInstance],
-    backend: str,
+    options: PipelineOptions,
     client: LLMClient | None,
     out: Path,
-    ltl: str = "compiler",
     progress: Callable[[GTInstance], None] | None = None,
-) -> dict[str, Row]:
+) -> dict[str, LanguageRecord]:
     """Language records for every instance, reusing those already in `out` (JSON lines)."""
-    records = load_rows(out)
+    records = {k: LanguageRecord.model_validate(v) for k, v in load_rows(out).items()}
     with out.open("a") as fh:
         for gt in gts:
             if gt.id not in records:
-                rec = language_record(gt, backend, client, ltl)
+                rec = language_record(gt, options, client)
                 records[gt.id] = rec
-                fh.write(json.dumps(rec) + "\n")
+                fh.write(rec.model_dump_json() + "\n")
                 fh.flush()
             if progress:
                 progress(gt)
@@ -118,7 +106,7 @@ def translate_instances(
 
 
 def language_job(
-    records: dict[str, Row], gts: dict[str, GTInstance], **planner: Any
+    records: dict[str, LanguageRecord], gts: dict[str, GTInstance], options: PipelineOptions
 ) -> Callable[[Scenario], Row]:
     """A `run_scenarios` job planning from the language stage's spec of the scenario's instruction."""
 
@@ -126,45 +114,36 @@ def language_job(
         gt = gts[scenario.instance]
         rec = records[scenario.instance]
         world = build_benchmark_world(gt)
-        issues = benchmark_issues(world, gt)
-        starts = start_cells(world, gt, scenario.robots, scenario.draw)
-        base: Row = {
-            "feasible": not issues,
-            "issues": issues,
-            "gt_feasible": gt.feasible,
-            "ambiguous": gt.ambiguous,
-            "starts": [list(c) for c in starts],
-            "conversion_ok": bool(rec.get("conversion_ok")),
-        }
-        if not rec.get("levels"):
+        starts = start_cells(world, scenario.robots, gt=gt, draw=scenario.draw)
+        base = {**instance_fields(world, gt, starts), "conversion_ok": rec.conversion_ok}
+        if not rec.levels:
             # no spec: either the language stage failed, or the tasks cannot be grounded in this
             # world (then the planner has nothing to plan: a planning failure, like infeasible)
-            return {
-                **base,
-                "status": "infeasible" if rec.get("error") else "no_spec",
-                "reason": rec.get("error") or "no specification",
-                "success": False,
-                "planning_ok": False,
-                "stage": rec.get("stage") or "planning",
-            }
-        spec = HierarchicalSpec.from_json(rec["levels"])
-        row = plan_and_check(world, spec, gt, starts, **planner)
-        row.update(base)
-        row["planning_ok"] = row.get("status") == "solved"
-        row["stage"] = failure_stage(rec, row)
-        return row
+            return ScenarioRow.model_validate(
+                {
+                    **base,
+                    "status": "infeasible" if rec.error else "no_spec",
+                    "reason": rec.error or "no specification",
+                    "planning_ok": False,
+                    "stage": rec.stage or "planning",
+                }
+            ).to_json()
+        spec = HierarchicalSpec.from_json(rec.levels)
+        row = ScenarioRow.from_planned(planning_stage(world, spec, starts, options, gt), **base)
+        row.planning_ok = row.status == "solved"
+        row.stage = failure_stage(rec, row)
+        return row.to_json()
 
     return job
 
 
-def failure_stage(rec: Row, row: Row) -> str | None:
+def failure_stage(rec: LanguageRecord, row: ScenarioRow) -> str | None:
     """The first stage that went wrong for a scenario (None: overall success)."""
-    if row.get("success"):
+    if row.success:
         return None
-    if rec.get("stage"):
-        return str(rec["stage"])
-    if not row.get("planning_ok"):
+    if rec.stage:
+        return rec.stage
+    if not row.planning_ok:
         return "planning"
-    reasons = " ".join(row.get("check_reasons") or [])
     # a goal the plan never reached although the spec was right: the leaf actions were wrong
-    return "action completion" if "never reached" in reasons else "execution"
+    return "action completion" if "never reached" in " ".join(row.check_reasons) else "execution"

@@ -9,7 +9,7 @@ from collections.abc import Sequence
 from importlib import resources
 from typing import Any
 
-from nl2hltl2plan.evaluation.runner import Row
+from nl2hltl2plan.evaluation.rows import ScenarioRow
 
 
 def paper_table1() -> dict[tuple[int, int], dict[str, Any]]:
@@ -38,44 +38,47 @@ def _mean_std(values: list[float]) -> tuple[float | None, float | None]:
     return round(statistics.fmean(values), 3), round(statistics.pstdev(values), 3)
 
 
-def summarize(rows: Sequence[Row]) -> dict[str, Any]:
+def summarize(rows: Sequence[ScenarioRow]) -> dict[str, Any]:
     """The summary.json object: counts, planning times, and one row per (n_base, robots)."""
-    times = [float(r["plan_time_s"]) for r in rows if r.get("plan_time_s") is not None]
-    feasible = [r for r in rows if r.get("feasible")]
-    groups: dict[tuple[int, int], list[Row]] = {}
+    times = [r.plan_time_s for r in rows if r.plan_time_s is not None]
+    feasible = [r for r in rows if r.feasible]
+    groups: dict[tuple[int, int], list[ScenarioRow]] = {}
     for r in rows:
-        groups.setdefault((r["n_base"], r["robots"]), []).append(r)
+        groups.setdefault((r.n_base, r.robots), []).append(r)
     table = []
     for (n, k), grp in sorted(groups.items()):
-        ok = [r for r in grp if r.get("success")]
-        feas = [r for r in grp if r.get("feasible")]
-        travel = _mean_std([float(r["travel_m"]) for r in ok])
-        steps = _mean_std([float(r["steps"]) for r in ok])
-        table.append({
-            "n_base": n,
-            "robots": k,
-            "scenarios": len(grp),
-            "feasible": len(feas),
-            "solved": sum(1 for r in grp if r.get("status") == "solved"),
-            "success": len(ok),
-            "success_rate": round(len(ok) / len(feas), 4) if feas else None,
-            "success_rate_all": round(len(ok) / len(grp), 4) if grp else None,
-            "travel_m_mean": travel[0],
-            "travel_m_std": travel[1],
-            "steps_mean": steps[0],
-            "steps_std": steps[1],
-            "plan_time_s_median": _median([r.get("plan_time_s") for r in grp]),
-        })
+        ok = [r for r in grp if r.success]
+        feas = [r for r in grp if r.feasible]
+        travel = _mean_std([r.travel_m for r in ok if r.travel_m is not None])
+        steps = _mean_std([float(r.steps) for r in ok if r.steps is not None])
+        table.append(
+            {
+                "n_base": n,
+                "robots": k,
+                "scenarios": len(grp),
+                "feasible": len(feas),
+                "solved": sum(1 for r in grp if r.status == "solved"),
+                "success": len(ok),
+                "success_rate": round(len(ok) / len(feas), 4) if feas else None,
+                "success_rate_all": round(len(ok) / len(grp), 4) if grp else None,
+                "travel_m_mean": travel[0],
+                "travel_m_std": travel[1],
+                "steps_mean": steps[0],
+                "steps_std": steps[1],
+                "plan_time_s_median": _median([r.plan_time_s for r in grp]),
+            }
+        )
     statuses: dict[str, int] = {}
     for r in rows:
-        statuses[r.get("status", "?")] = statuses.get(r.get("status", "?"), 0) + 1
-    infeasible_right = sum(1 for r in rows if not r.get("feasible") and r.get("status") == "infeasible")
+        statuses[r.status] = statuses.get(r.status, 0) + 1
+    infeasible_right = sum(1 for r in rows if not r.feasible and r.status == "infeasible")
     return {
         "scenarios": len(rows),
         "feasible": len(feasible),
-        "solved": sum(1 for r in rows if r.get("status") == "solved"),
-        "success": sum(1 for r in rows if r.get("success")),
-        "feasible_success": sum(1 for r in feasible if r.get("success")),
+        "solved": sum(1 for r in rows if r.status == "solved"),
+        "success": sum(1 for r in rows if r.success),
+        "feasible_success": sum(1 for r in feasible if r.success),
+        "errored": sum(1 for r in rows if r.status == "error" or r.killed),
         "infeasible_reported": infeasible_right,
         "statuses": statuses,
         "plan_time_s": {
@@ -98,19 +101,23 @@ def format_table(summary: dict[str, Any], title: str = "") -> str:
     lines = []
     if title:
         lines.append(title)
-    head = (f"{'tasks-robots':>12} {'feasible':>8} {'success':>8} {'rate %':>7} {'travel (m)':>11} "
-            f"{'completion':>11} | {'paper PL %':>10} {'travel (m)':>11} {'completion':>11}")
+    head = (
+        f"{'tasks-robots':>12} {'feasible':>8} {'success':>8} {'rate %':>7} {'travel (m)':>11} "
+        f"{'completion':>11} | {'paper PL %':>10} {'travel (m)':>11} {'completion':>11}"
+    )
     lines += [head, "-" * len(head)]
     for r in summary["rows"]:
         p = paper.get((r["n_base"], r["robots"]))
         rate = "-" if r["success_rate"] is None else f"{100 * r['success_rate']:.1f}"
         label = f"{r['n_base']}-{r['robots']}"
-        ours = (f"{label:>12} {r['feasible']:>8} {r['success']:>8} {rate:>7} "
-                f"{_pm(r['travel_m_mean'], r['travel_m_std']):>11} "
-                f"{_pm(r['steps_mean'], r['steps_std']):>11}")
+        ours = (
+            f"{label:>12} {r['feasible']:>8} {r['success']:>8} {rate:>7} "
+            f"{_pm(r['travel_m_mean'], r['travel_m_std']):>11} "
+            f"{_pm(r['steps_mean'], r['steps_std']):>11}"
+        )
         if p:
             o = p["ours"]
-            theirs = (f"{o['planning']:>10} {_pm(*o['travel_m']):>11} {_pm(*o['steps']):>11}")
+            theirs = f"{o['planning']:>10} {_pm(*o['travel_m']):>11} {_pm(*o['steps']):>11}"
         else:
             theirs = f"{'':>10} {'':>11} {'':>11}"
         lines.append(f"{ours} | {theirs}")
@@ -122,8 +129,12 @@ def format_table(summary: dict[str, Any], title: str = "") -> str:
         f"(feasible and checked: {summary['feasible_success']}/{summary['feasible']}), "
         f"infeasible reported {summary['infeasible_reported']}"
     )
-    lines.append(f"planning time s: median {t['median']}, p95 {t['p95']}, max {t['max']} "
-                 f"(statuses {summary['statuses']})")
-    lines.append("paper PL % = the paper's planning success rate (its planner on its own converted specs);"
-                 " rate % here = success / feasible")
+    lines.append(
+        f"planning time s: median {t['median']}, p95 {t['p95']}, max {t['max']} "
+        f"(statuses {summary['statuses']})"
+    )
+    lines.append(
+        "paper PL % = the paper's planning success rate (its planner on its own converted specs);"
+        " rate % here = success / feasible"
+    )
     return "\n".join(lines)

@@ -9,6 +9,7 @@ Travel cost and completion time are mean ± std over the successful scenarios.
 
 from __future__ import annotations
 
+import statistics
 from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
@@ -19,20 +20,21 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 from nl2hltl2plan.evaluation.language_bench import STAGES  # noqa: E402
-from nl2hltl2plan.evaluation.report import paper_table1, summarize  # noqa: E402
-from nl2hltl2plan.evaluation.runner import Row  # noqa: E402
+from nl2hltl2plan.evaluation.report import paper_table1, percentile, summarize  # noqa: E402
+from nl2hltl2plan.evaluation.rows import ScenarioRow  # noqa: E402
+from nl2hltl2plan.io import write_text  # noqa: E402
 
 
 def _rate(num: int, den: int) -> float | None:
     return round(num / den, 4) if den else None
 
 
-def pipeline_summary(rows: Sequence[Row]) -> dict[str, Any]:
+def pipeline_summary(rows: Sequence[ScenarioRow]) -> dict[str, Any]:
     """`report.summarize` plus conversion and planning rates per row and overall."""
     summary = summarize(rows)
-    groups: dict[tuple[int, int], list[Row]] = {}
+    groups: dict[tuple[int, int], list[ScenarioRow]] = {}
     for r in rows:
-        groups.setdefault((r["n_base"], r["robots"]), []).append(r)
+        groups.setdefault((r.n_base, r.robots), []).append(r)
     for row in summary["rows"]:
         grp = groups[(row["n_base"], row["robots"])]
         row.update(_rates(grp))
@@ -41,21 +43,21 @@ def pipeline_summary(rows: Sequence[Row]) -> dict[str, Any]:
     return summary
 
 
-def _rates(rows: Sequence[Row]) -> dict[str, Any]:
-    converted = [r for r in rows if r.get("conversion_ok")]
+def _rates(rows: Sequence[ScenarioRow]) -> dict[str, Any]:
+    converted = [r for r in rows if r.conversion_ok]
     return {
         "conversion_rate": _rate(len(converted), len(rows)),
-        "planning_rate": _rate(sum(1 for r in converted if r.get("planning_ok")), len(converted)),
-        "overall_rate": _rate(sum(1 for r in rows if r.get("success")), len(rows)),
+        "planning_rate": _rate(sum(1 for r in converted if r.planning_ok), len(converted)),
+        "overall_rate": _rate(sum(1 for r in rows if r.success), len(rows)),
     }
 
 
-def failure_breakdown(rows: Sequence[Row]) -> dict[str, Any]:
+def failure_breakdown(rows: Sequence[ScenarioRow]) -> dict[str, Any]:
     """Failed scenarios by the first stage that went wrong (Table IV plus planning and execution)."""
     counts = {s: 0 for s in STAGES}
     for r in rows:
-        if not r.get("success") and r.get("stage"):
-            counts[r["stage"]] = counts.get(r["stage"], 0) + 1
+        if not r.success and r.stage:
+            counts[r.stage] = counts.get(r.stage, 0) + 1
     return {
         "scenarios": len(rows),
         "counts": counts,
@@ -112,82 +114,141 @@ def failures_markdown(summary: dict[str, Any]) -> str:
     return "\n".join(lines)
 
 
+def _team(k: int) -> str:
+    return f"{k} robot" if k == 1 else f"{k} robots"
+
+
+def _integer_x(ax, xs: Sequence[int]) -> None:
+    """Whole numbers of base tasks only, with half a unit of room either side."""
+    if xs:
+        ax.set_xticks(range(min(xs), max(xs) + 1))
+        ax.set_xlim(min(xs) - 0.5, max(xs) + 0.5)
+
+
 def plot_success(summaries: dict[str, dict[str, Any]], out: Path) -> None:
     """Overall success vs number of base tasks, one line per team size (paper dashed)."""
     paper = paper_table1()
     fig, axes = plt.subplots(1, len(summaries), figsize=(5.5 * len(summaries), 4), squeeze=False)
     for ax, (name, summary) in zip(axes[0], summaries.items(), strict=True):
         robots = sorted({r["robots"] for r in summary["rows"]})
-        for k, color in zip(robots, ["tab:blue", "tab:orange", "tab:green", "tab:red"], strict=False):
+        all_x: list[int] = []
+        for j, (k, color) in enumerate(
+            zip(robots, ["tab:blue", "tab:orange", "tab:green", "tab:red"], strict=False)
+        ):
             rows = sorted((r for r in summary["rows"] if r["robots"] == k), key=lambda r: r["n_base"])
             xs = [r["n_base"] for r in rows]
-            ax.plot(
-                xs,
-                [100 * (r["overall_rate"] or 0) for r in rows],
-                "o-",
-                color=color,
-                label=f"ours, {k} robots",
-            )
+            all_x += xs
+            shift = 0.06 * (j - (len(robots) - 1) / 2)  # equal rates of two teams stay visible
+            ys = [100 * (r["overall_rate"] or 0) for r in rows]
+            ax.plot([x + shift for x in xs], ys, "o-", color=color, label=f"ours, {_team(k)}")
             px = [n for n in xs if (n, k) in paper]
-            ax.plot(
-                px,
-                [paper[(n, k)]["ours"]["success"] for n in px],
-                "s--",
-                color=color,
-                alpha=0.5,
-                label=f"paper, {k} robots",
-            )
-        ax.set_xlabel("base tasks")
-        ax.set_ylabel("overall success %")
+            if px:
+                ax.plot([x + shift for x in px], [paper[(n, k)]["ours"]["success"] for n in px], "s--",
+                        color=color, alpha=0.5, label=f"paper, {_team(k)}")  # fmt: skip
+        _integer_x(ax, all_x)
+        ax.set_xlabel("base tasks per instruction")
+        ax.set_ylabel("overall success (%)")
         ax.set_ylim(0, 105)
         ax.set_title(name)
         ax.grid(alpha=0.3)
-        ax.legend(fontsize=7)
+        if robots:
+            ax.legend(fontsize=7)
     fig.tight_layout()
     fig.savefig(out, dpi=110)
     plt.close(fig)
 
 
-def plot_cost_time(summary: dict[str, Any], out: Path) -> None:
-    """Travel cost and completion time (mean ± std over successes) vs base tasks per team size."""
+def _spread(
+    summary_row: dict[str, Any], values: list[float] | None, metric: str
+) -> tuple[float, float, float] | None:
+    """(centre, below, above) of one point: median with the 10th-90th percentile range of the
+    successful scenarios' values when known, else mean ± std cut at zero (no negative metres)."""
+    if values:
+        mid = statistics.median(values)
+        return mid, mid - percentile(values, 10), percentile(values, 90) - mid
+    mean, std = summary_row.get(f"{metric}_mean"), summary_row.get(f"{metric}_std")
+    if mean is None:
+        return None
+    return mean, min(std or 0.0, mean), std or 0.0
+
+
+def _points(
+    summary: dict[str, Any], rows: Sequence[ScenarioRow] | None, team: int, metric: str
+) -> list[tuple[int, float, float, float]]:
+    """(base tasks, centre, below, above) per summary row of this team size that has successes."""
+    pts = []
+    for r in sorted((r for r in summary["rows"] if r["robots"] == team), key=lambda r: r["n_base"]):
+        vals = None
+        if rows is not None:
+            vals = [
+                float(getattr(x, metric))
+                for x in rows
+                if x.success
+                and x.robots == team
+                and x.n_base == r["n_base"]
+                and getattr(x, metric) is not None
+            ]
+        spread = _spread(r, vals, metric)
+        if spread is not None:
+            pts.append((r["n_base"], *spread))
+    return pts
+
+
+def plot_cost_time(summary: dict[str, Any], out: Path, rows: Sequence[ScenarioRow] | None = None) -> None:
+    """Travel cost and completion time vs base tasks per team size. With `rows`: medians with
+    10th-90th percentile bars over the successful scenarios (asymmetric, inside the data); without:
+    mean ± std with the lower bar cut at zero."""
     fig, axes = plt.subplots(1, 2, figsize=(11, 4))
-    for k in sorted({r["robots"] for r in summary["rows"]}):
-        rows = sorted(
-            (r for r in summary["rows"] if r["robots"] == k and r["travel_m_mean"] is not None),
-            key=lambda r: r["n_base"],
-        )
-        xs = [r["n_base"] + 0.08 * (k - 2) for r in rows]
-        axes[0].errorbar(
-            xs,
-            [r["travel_m_mean"] for r in rows],
-            [r["travel_m_std"] for r in rows],
-            fmt="o-",
-            capsize=3,
-            label=f"{k} robots",
-        )
-        axes[1].errorbar(
-            xs,
-            [r["steps_mean"] for r in rows],
-            [r["steps_std"] for r in rows],
-            fmt="o-",
-            capsize=3,
-            label=f"{k} robots",
-        )
+    teams = sorted({r["robots"] for r in summary["rows"]})
+    all_x: list[int] = []
+    for j, k in enumerate(teams):
+        for ax, metric in ((axes[0], "travel_m"), (axes[1], "steps")):
+            pts = _points(summary, rows, k, metric)
+            if not pts:
+                continue
+            all_x += [p[0] for p in pts]
+            xs = [p[0] + 0.1 * (j - (len(teams) - 1) / 2) for p in pts]  # side by side, same integer tick
+            ax.errorbar(xs, [p[1] for p in pts], yerr=[[p[2] for p in pts], [p[3] for p in pts]], fmt="o-",
+                        capsize=3, label=_team(k))  # fmt: skip
+    stat = "median, bars 10th-90th percentile" if rows is not None else "mean ± std"
     for ax, label in zip(axes, ["travel cost (m)", "completion time (steps)"], strict=True):
-        ax.set_xlabel("base tasks")
+        _integer_x(ax, all_x)
+        ax.set_xlabel("base tasks per instruction")
         ax.set_ylabel(label)
+        ax.set_ylim(bottom=0)
+        ax.set_title(f"{label.split(' (')[0]} of successful scenarios ({stat})", fontsize=9)
         ax.grid(alpha=0.3)
-        ax.legend()
+        if ax.get_legend_handles_labels()[0]:
+            ax.legend()
     fig.tight_layout()
     fig.savefig(out, dpi=110)
     plt.close(fig)
+
+
+def plot_gantt_example(rows: Sequence[ScenarioRow], out: Path) -> ScenarioRow | None:
+    """The Gantt chart of one successful scenario (the most robots at work, then the most actions), drawn
+    from its row's events; returns that row, or None (nothing drawn) when no scenario succeeded."""
+    from nl2hltl2plan.worlds.gantt import draw_gantt_events
+
+    ok = [r for r in rows if r.success and r.events]
+    if not ok:
+        return None
+    row = max(ok, key=lambda r: (len({e.robot for e in r.events}), len(r.events), r.key))
+    title = (
+        f"example: {row.instance or row.key}, {_team(row.robots)}, "
+        f"travel {row.travel_m or 0:.2f} m, completion {row.steps} steps"
+    )
+    draw_gantt_events([e.model_dump() for e in row.events], row.robots, out, title=title)
+    return row
 
 
 def write_report(
-    rows: Sequence[Row], out_dir: Path, title: str, command: str, machine: str
+    rows: Sequence[ScenarioRow], out_dir: Path, title: str, command: str, machine: str
 ) -> dict[str, Any]:
     """Write report.md, summary.json content (returned) and the plots; all and clean subsets."""
-    clean_rows = [r for r in rows if r.get("gt_feasible", r.get("feasible")) and not r.get("ambiguous")]
+    clean_rows = [
+        r for r in rows if (r.feasible if r.gt_feasible is None else r.gt_feasible) and not r.ambiguous
+    ]
     summary = pipeline_summary(rows)
     clean = pipeline_summary(clean_rows) if clean_rows else None
     summary["clean"] = clean
@@ -196,8 +257,8 @@ def write_report(
         {"all instructions": summary, **({"clean instructions": clean} if clean else {})},
         out_dir / "success_vs_base_tasks.png",
     )
-    plot_cost_time(summary, out_dir / "cost_and_time.png")
-    n_inst = len({r["instance"] for r in rows if "instance" in r}) or len(rows)
+    plot_cost_time(summary, out_dir / "cost_and_time.png", rows=rows)
+    n_inst = len({r.instance for r in rows}) or len(rows)
     parts = [
         f"# {title}",
         "",
@@ -209,7 +270,7 @@ def write_report(
         table1_markdown(summary),
     ]
     if clean:
-        n_clean = len({r["instance"] for r in clean_rows if "instance" in r})
+        n_clean = len({r.instance for r in clean_rows})
         parts += [
             "",
             f"## Clean instructions: feasible and unambiguous ({n_clean} instructions, "
@@ -236,7 +297,15 @@ def write_report(
         "![cost and time](cost_and_time.png)",
         "",
     ]
-    (out_dir / "report.md").write_text("\n".join(parts))
+    example = plot_gantt_example(rows, out_dir / "gantt_example.png")
+    if example is not None:
+        parts += [
+            f"An example plan over time ({example.key}):",
+            "",
+            "![an example plan](gantt_example.png)",
+            "",
+        ]
+    write_text(out_dir / "report.md", "\n".join(parts), "report")
     return summary
 
 

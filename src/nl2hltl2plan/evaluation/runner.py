@@ -1,28 +1,40 @@
 """Run benchmark scenarios in worker processes with a hard per-scenario time limit.
 
 `run_scenarios(scenarios, job, out, workers, hard_timeout_s)` forks one child per scenario (at most
-`workers` at a time); the child runs `job(scenario) -> dict` and sends the row back. The parent kills
-a child that runs past `hard_timeout_s` and records a "timeout" row, so nothing can hang, and a job
-that raises records an "error" row with the message (no traceback). Rows are appended to `out` as
-JSON lines as they finish; with `resume`, scenarios whose key is already in `out` are not run again.
-The job is any function of a scenario (oracle specs here; the language stage plugs in its own).
+`workers` at a time, with `nl2hltl2plan.deadline.Child`: a child dies with its parent, so a killed
+run leaves no orphaned worker); the child runs `job(scenario) -> dict` and sends the row back. The
+parent kills a child that runs past `hard_timeout_s` and records a "timeout" row marked `killed`, so
+nothing can hang, and a job that raises (or a worker that dies) records an "error" row with a
+one-line reason (no traceback). Rows are appended to `out` as JSON lines as they finish; with
+`resume`, scenarios whose key is already in `out` are not run again.
+
+A results file is repaired before anything is appended: a torn last line (a run killed mid-write)
+or any line that is not a JSON object with a "key" is reported (`notes`, default stderr) and
+dropped, so its scenario runs again instead of being appended onto. `count_errored(rows)` is the
+number of scenarios that errored or had to be killed (what makes a benchmark run exit non-zero).
 """
 
 from __future__ import annotations
 
 import json
-import multiprocessing as mp
+import math
 import os
-import signal
-import time
-import traceback
+import sys
+import tempfile
 from collections.abc import Callable, Iterable
 from dataclasses import asdict, dataclass
-from multiprocessing.connection import Connection, wait
 from pathlib import Path
 from typing import Any
 
+from nl2hltl2plan.deadline import Child, ChildError, wait_any
+from nl2hltl2plan.errors import Nl2Hltl2PlanError
+
 Row = dict[str, Any]
+Notes = Callable[[str], None]
+
+
+class RunnerError(Nl2Hltl2PlanError):
+    """The runner cannot start: bad worker count or time limit."""
 
 
 @dataclass(frozen=True)
@@ -39,33 +51,79 @@ class Scenario:
         return f"{self.instance}|r{self.robots}|d{self.draw}"
 
 
-def load_rows(path: Path) -> dict[str, Row]:
-    """Rows already written to a JSON-lines file, by scenario key (a torn last line is ignored)."""
+def stderr_note(text: str) -> None:
+    print(f"warning: {text}", file=sys.stderr)
+
+
+def read_rows(path: Path) -> tuple[dict[str, Row], list[str]]:
+    """Rows of a JSON-lines results file by key, and one problem per line that is not a row."""
     rows: dict[str, Row] = {}
+    problems: list[str] = []
     if not path.exists():
-        return rows
-    for line in path.read_text().splitlines():
-        try:
-            row = json.loads(line)
-        except json.JSONDecodeError:
+        return rows, problems
+    try:
+        data = path.read_bytes()
+    except OSError as exc:
+        raise RunnerError(f"cannot read the results file {path}: {exc.strerror}") from None
+    lines = data.split(b"\n")
+    last = len(lines) - (1 if data.endswith(b"\n") else 0)
+    for n, raw in enumerate(lines[:last], 1):
+        if not raw.strip():
             continue
-        if isinstance(row, dict) and "key" in row:
+        try:
+            row = json.loads(raw.decode("utf-8"))
+        except (UnicodeDecodeError, json.JSONDecodeError, RecursionError):
+            row = None
+        if isinstance(row, dict) and isinstance(row.get("key"), str):
             rows[row["key"]] = row
+            continue
+        torn = n == last and not data.endswith(b"\n")
+        what = "is torn (no end of line: a run was killed writing it)" if torn else "is not a result row"
+        problems.append(f"{path.name} line {n} {what}; dropped, its scenario runs again")
+    return rows, problems
+
+
+def load_rows(path: Path, notes: Notes | None = stderr_note) -> dict[str, Row]:
+    """Rows already written to a JSON-lines file, by key. Bad lines (a torn last line above all) are
+    reported through `notes` and removed from the file, so what is appended next starts a line."""
+    rows, problems = read_rows(path)
+    if problems:
+        for p in problems:
+            if notes is not None:
+                notes(p)
+        _rewrite(path, rows.values())
     return rows
 
 
-def _child(job: Callable[[Scenario], Row], scenario: Scenario, conn: Connection) -> None:
-    os.setpgid(0, 0)  # own process group: a kill also ends what the job itself started
-    try:
-        row = job(scenario)
-    except BaseException as exc:  # report every failure to the parent as data
-        tb = traceback.extract_tb(exc.__traceback__)
-        where = f" at {os.path.basename(tb[-1].filename)}:{tb[-1].lineno}" if tb else ""
-        row = {"status": "error", "reason": f"{type(exc).__name__}: {exc}{where}"}
-    try:
-        conn.send(row)
-    finally:
-        conn.close()
+def _rewrite(path: Path, rows: Iterable[Row]) -> None:
+    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=path.name, suffix=".tmp")
+    with os.fdopen(fd, "w") as fh:
+        for row in rows:
+            fh.write(json.dumps(row) + "\n")
+    os.replace(tmp, path)
+
+
+def is_errored(row: Row) -> bool:
+    """A scenario whose run failed (the job raised, the worker died, or it had to be killed)."""
+    return row.get("status") == "error" or bool(row.get("killed"))
+
+
+def count_errored(rows: Iterable[Row]) -> int:
+    return sum(1 for r in rows if is_errored(r))
+
+
+def _job_main(job_and_scenario: tuple[Callable[[Scenario], Row], Scenario]) -> Row:
+    job, scenario = job_and_scenario
+    return job(scenario)
+
+
+def check_limits(workers: int | None, hard_timeout_s: float) -> int:
+    finite = isinstance(hard_timeout_s, (int, float)) and math.isfinite(hard_timeout_s)
+    if not finite or hard_timeout_s <= 0:
+        raise RunnerError(f"the per-scenario time limit must be finite and > 0 s, got {hard_timeout_s!r}")
+    if workers is not None and workers < 1:
+        raise RunnerError(f"workers must be at least 1, got {workers}")
+    return workers or os.cpu_count() or 1
 
 
 def run_scenarios(
@@ -76,19 +134,23 @@ def run_scenarios(
     hard_timeout_s: float = 360.0,
     resume: bool = True,
     progress: Callable[[Row, int, int], None] | None = None,
+    notes: Notes | None = stderr_note,
 ) -> list[Row]:
     """Run every scenario (in parallel, each in its own process) and return the rows in order."""
     scenarios = list(scenarios)
-    out.parent.mkdir(parents=True, exist_ok=True)
-    done = load_rows(out) if resume else {}
-    if not resume and out.exists():
-        out.unlink()
+    n_workers = check_limits(workers, hard_timeout_s)
+    try:
+        out.parent.mkdir(parents=True, exist_ok=True)
+        if not resume and out.exists():
+            out.unlink()
+        done = load_rows(out, notes)
+        sink = out.open("a")
+    except OSError as exc:
+        raise RunnerError(f"cannot write the results file {out}: {exc.strerror}") from None
     todo = [s for s in scenarios if s.key not in done]
-    workers = max(1, workers or os.cpu_count() or 1)
-    ctx = mp.get_context("fork")
-    running: dict[Connection, tuple[Any, Scenario, float]] = {}
+    running: dict[Child, Scenario] = {}
     finished = len(scenarios) - len(todo)
-    with out.open("a") as sink:
+    with sink:
 
         def record(scenario: Scenario, row: Row) -> None:
             nonlocal finished
@@ -101,47 +163,39 @@ def run_scenarios(
                 progress(row, finished, len(scenarios))
 
         try:
-            _loop(todo, running, workers, hard_timeout_s, ctx, job, record)
+            _loop(todo, running, n_workers, hard_timeout_s, job, record)
         finally:
-            for conn, (proc, _, _) in running.items():  # interrupted: leave no worker behind
-                _kill(proc)
-                conn.close()
+            for child in running:  # interrupted: leave no worker behind
+                child.kill()
     return [done[s.key] for s in scenarios if s.key in done]
 
 
-def _loop(todo, running, workers, hard_timeout_s, ctx, job, record) -> None:
+def _loop(
+    todo: list[Scenario],
+    running: dict[Child, Scenario],
+    workers: int,
+    hard_timeout_s: float,
+    job: Callable[[Scenario], Row],
+    record: Callable[[Scenario, Row], None],
+) -> None:
     while todo or running:
         while todo and len(running) < workers:
             scenario = todo.pop(0)
-            parent_end, child_end = ctx.Pipe(duplex=False)
-            # not a daemon: the planner may itself fork (Spot translations with a time limit)
-            proc = ctx.Process(target=_child, args=(job, scenario, child_end))
-            proc.start()
-            child_end.close()
-            running[parent_end] = (proc, scenario, time.perf_counter())
-        for conn in wait(list(running), timeout=0.2):
-            proc, scenario, _ = running.pop(conn)  # type: ignore[index]
+            # own process group: a timeout kill also ends whatever the job started
+            running[Child(_job_main, (job, scenario), own_group=True)] = scenario
+        for child in wait_any(list(running), timeout_s=0.2):
+            scenario = running.pop(child)
             try:
-                row = conn.recv()
-            except (EOFError, OSError):
-                row = {"status": "error", "reason": f"worker died (exit code {proc.exitcode})"}
-            conn.close()
-            proc.join(timeout=5)
+                row = child.result()
+            except ChildError as exc:
+                row = {"status": "error", "reason": str(exc)}
+            if not isinstance(row, dict):
+                row = {"status": "error", "reason": f"the job returned {type(row).__name__}, not a row"}
             record(scenario, row)
-        now = time.perf_counter()
-        for conn, (proc, scenario, started) in list(running.items()):
-            if now - started > hard_timeout_s:
-                _kill(proc)
-                conn.close()
-                del running[conn]
-                record(scenario, {"status": "timeout", "killed": True, "plan_time_s": round(now - started, 3),
+        for child, scenario in list(running.items()):
+            elapsed = child.elapsed()
+            if elapsed > hard_timeout_s:
+                child.kill()
+                del running[child]
+                record(scenario, {"status": "timeout", "killed": True, "plan_time_s": round(elapsed, 3),
                                   "reason": f"killed after {hard_timeout_s:g} s"})
-
-
-def _kill(proc) -> None:
-    """Kill a worker and its process group (it made itself the group leader)."""
-    try:
-        os.killpg(proc.pid, signal.SIGKILL)
-    except (ProcessLookupError, PermissionError):
-        proc.kill()
-    proc.join(timeout=5)

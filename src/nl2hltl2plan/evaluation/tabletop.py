@@ -69,18 +69,18 @@ class OursOutcome:
 
 
 def run_pipeline(instruction: str, world: World) -> tuple[Any, Any, float]:
-    """Instruction -> (language result, plan result, language seconds): the one place the bench calls
-    the pipeline (to be replaced by `nl2hltl2plan.pipeline.run` when it lands)."""
-    from nl2hltl2plan.language.pipeline import translate
-    from nl2hltl2plan.planning import plan
+    """Instruction -> (language result, plan result, language seconds) through the project's one
+    pipeline (`nl2hltl2plan.pipeline`: its language stage, then its planning stage), timed apart."""
+    from nl2hltl2plan.pipeline import PipelineOptions, language_stage, planning_stage
 
+    options = PipelineOptions(mode="exact", plan_timeout_s=PLAN_TIMEOUT_S, starts=[HOME])
     t0 = time.perf_counter()
-    language = translate(instruction, world)
+    language = language_stage(instruction, world, options)
     language_s = time.perf_counter() - t0
     if language.spec is None:
         return language, None, language_s
-    result = plan(world, language.spec, [HOME], mode="exact", timeout_s=PLAN_TIMEOUT_S)
-    return language, result, language_s
+    planned = planning_stage(world, language.spec, [HOME], options)
+    return language, planned.result, language_s
 
 
 def run_ours(task: TabletopTask, world: World) -> OursOutcome:

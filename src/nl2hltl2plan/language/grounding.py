@@ -454,14 +454,16 @@ class Roles:
             return thing in a.accepts or (sliced and thing + "Sliced" in a.accepts)
 
         flag = _STATE_FLAG.get(kind)
-        obj = keep(self.object, lambda t: flags(t).pickupable) or []
+        obj: list[str] = keep(self.object, lambda t: flags(t).pickupable) or []
         if flag:
-            obj = keep(obj, lambda t: getattr((look(t + "Sliced") if sliced else None) or flags(t), flag))
+            treated = keep(obj, lambda t: getattr((look(t + "Sliced") if sliced else None) or flags(t), flag))
+            obj = treated or []
         if sliced:
-            obj = keep(obj, lambda t: flags(t).sliceable)
+            obj = keep(obj, lambda t: flags(t).sliceable) or []
         cont = keep(self.container, lambda c: any(accepts(c, o) for o in obj))
         if cont:
-            obj = keep(obj, lambda o: any(accepts(c, o) for c in cont)) or []
+            chosen = cont
+            obj = keep(obj, lambda o: any(accepts(c, o) for c in chosen)) or []
         inner = cont or obj
         rec = keep(self.receptacle, lambda r: any(accepts(r, x) for x in inner))
         if rec:

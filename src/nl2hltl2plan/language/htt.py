@@ -17,14 +17,14 @@ JSON form (in and out)::
 
 from __future__ import annotations
 
-import json
 from pathlib import Path
 from typing import Any
 
 import networkx as nx
 from pydantic import BaseModel, Field, ValidationError
 
-from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.errors import DataError, HTTError
+from nl2hltl2plan.io import loads, read_text
 
 
 class HTTNode(BaseModel):
@@ -44,10 +44,10 @@ class HTT(BaseModel):
     def from_json(cls, data: str | dict[str, Any], validate: bool = True) -> HTT:
         """Parse (and by default validate) an HTT; HTTError names what is wrong."""
         try:
-            raw = json.loads(data) if isinstance(data, str) else data
+            raw = loads(data, "HTT") if isinstance(data, str) else data
             htt = cls.model_validate(raw)
-        except json.JSONDecodeError as exc:
-            raise HTTError(f"HTT is not valid JSON: {exc}") from None
+        except DataError as exc:
+            raise HTTError(str(exc)) from None
         except ValidationError as exc:
             raise HTTError(f"HTT does not have the expected fields: {_short(exc)}") from None
         if validate:
@@ -56,11 +56,7 @@ class HTT(BaseModel):
 
     @classmethod
     def load(cls, path: str | Path) -> HTT:
-        try:
-            text = Path(path).read_text()
-        except OSError as exc:
-            raise HTTError(f"cannot read HTT file {path}: {exc.strerror}") from None
-        return cls.from_json(text)
+        return cls.from_json(read_text(path, "HTT file"))
 
     def to_json(self, indent: int | None = 2) -> str:
         return self.model_dump_json(indent=indent, exclude_none=True)

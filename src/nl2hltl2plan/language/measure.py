@@ -13,15 +13,15 @@ feasible-and-unambiguous ones.
 from __future__ import annotations
 
 import argparse
+import contextlib
 import json
 import random
 import sys
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import Any
 
-from nl2hltl2plan.config import data_path
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.language.grounding import scene_types
 from nl2hltl2plan.language.scoring import match
@@ -32,11 +32,66 @@ Generator = Callable[[str, set[str], str], tuple[list[BaseTaskSpec], list[tuple[
 
 
 def load_benchmark() -> list[dict[str, Any]]:
-    path = data_path(*BENCHMARK)
-    return [json.loads(line) for line in path.read_text().splitlines() if line.strip()]
+    """The benchmark's instances as plain dicts (the ground truth's one loader, `worlds.benchmark`)."""
+    from nl2hltl2plan.worlds.benchmark import load_gt
+
+    return [g.model_dump(mode="json") for g in load_gt()]
 
 
-def offline_generator(instruction: str, types: set[str], scene: str):
+@contextlib.contextmanager
+def llm_generator(backend: str, argv: list[str]) -> Iterator[Generator]:
+    """A generator function (instruction, types, scene) -> (tasks, before, problems) over an LLM backend;
+    `argv`: the LLM options of `nl2hltl2plan plan` (--base-url, --model, --cache, --batch-out ...)."""
+    from nl2hltl2plan.language.backends import load_batch_answers, open_client
+    from nl2hltl2plan.language.llm.batch import BatchCollector, PendingAnswer
+    from nl2hltl2plan.language.options import add_llm_arguments, llm_settings
+    from nl2hltl2plan.language.translate import translate
+
+    ap = argparse.ArgumentParser()
+    add_llm_arguments(ap)
+    args = ap.parse_args(argv)
+    settings = llm_settings(args)
+    batch = BatchCollector() if args.batch_out else None
+    if args.batch_answers:
+        load_batch_answers(args.batch_answers, settings)
+    with open_client(backend, settings, batch=batch) as client:
+
+        def generate(
+            instruction: str, types: set[str], scene: str
+        ) -> tuple[list[BaseTaskSpec], list[tuple[str, str]], list[str]]:
+            try:
+                r = translate(
+                    instruction,
+                    _Scene(scene, types),
+                    backend,
+                    client,
+                    strict=False,
+                    build=False,
+                    actions="none",
+                )
+            except PendingAnswer:
+                return [], [], ["pending (batch mode)"]
+            return r.tasks, r.before, r.unparsed + r.issues
+
+        yield generate
+    if batch is not None and len(batch):
+        n = batch.write(args.batch_out)
+        print(f"{n} requests pending, written to {args.batch_out}", file=sys.stderr)
+
+
+class _Scene:
+    """A scene known only by its name and object types (enough for the language stage)."""
+
+    def __init__(self, name: str, types: set[str]) -> None:
+        self.name, self._types = name, types
+
+    def object_types(self) -> set[str]:
+        return self._types
+
+
+def offline_generator(
+    instruction: str, types: set[str], scene: str
+) -> tuple[list[BaseTaskSpec], list[tuple[str, str]], list[str]]:
     from nl2hltl2plan.language.offline import parse_instruction
 
     r = parse_instruction(instruction, types, scene, strict=False)
@@ -124,8 +179,6 @@ def main(argv: list[str] | None = None) -> int:
         generate: Generator = offline_generator
         records = evaluate(rows, generate, progress=sys.stderr.isatty())
     else:
-        from nl2hltl2plan.language.pipeline import llm_generator
-
         with llm_generator(args.backend, rest) as generate:
             records = evaluate(rows, generate, progress=sys.stderr.isatty())
     print(f"backend {args.backend}, {len(records)} instructions")

@@ -9,7 +9,7 @@ exists under which both `before` relations have the same transitive closure.
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Iterator, Sequence
 from itertools import permutations
 from typing import Any
 
@@ -84,10 +84,9 @@ def match(
     gt_closure = transitive_closure(gb, [g.id for g in gt])
     found_tasks = False
     best: dict[str, str] = {}
-    if len(pred) <= 8:
-        candidates = permutations(range(len(gt)))
-    else:  # large: greedy only
-        candidates = iter([tuple(range(len(gt)))])
+    candidates: Iterator[tuple[int, ...]] = (
+        permutations(range(len(gt))) if len(pred) <= 8 else iter([tuple(range(len(gt)))])  # large: greedy
+    )
     for perm in candidates:
         if not all(ok[i][perm[i]] for i in range(len(pred))):
             continue
@@ -107,10 +106,10 @@ def match(
         return MatchResult(
             tasks_ok=False, order_ok=False, reasons=reasons or ["no one-to-one task assignment"]
         )
-    mapped = sorted((best[a], best[b]) for a, b in pb if a in best and b in best)
+    mapped_pairs = sorted((best[a], best[b]) for a, b in pb if a in best and b in best)
     return MatchResult(
         tasks_ok=True,
         order_ok=False,
         mapping=best,
-        reasons=[f"order {mapped} (closure differs from ground truth {sorted(gb)})"],
+        reasons=[f"order {mapped_pairs} (closure differs from ground truth {sorted(gb)})"],
     )

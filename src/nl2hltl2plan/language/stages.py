@@ -7,20 +7,26 @@
    default)
 4. `complete_actions`: one leaf -> ordered robot API actions over the scene's object types
 
-Answers are pydantic models; structural checks (known ids, acyclic relations, scene types, action
-syntax) raise ValueError inside the client's re-ask loop, so the LLM sees what was wrong.
+Answers are pydantic models; structural checks (known ids, scene types, action syntax) raise
+ValueError inside the client's re-ask loop, so the LLM sees what was wrong. Then each answer is
+checked against what it answers (`semantic_check`: the decomposition covers every object the
+instruction names, relations are acyclic, a leaf's actions act on its own objects and receptacles);
+a failed check is re-asked with the reasons (`ask_checked`), and when it persists the stage raises
+`SemanticCheckError` naming them: a wrong answer never becomes a silent "solved".
 """
 
 from __future__ import annotations
 
 import json
 import re
-from typing import Annotated
+from collections.abc import Callable
+from typing import Annotated, TypeVar
 
-import networkx as nx
 from pydantic import BaseModel, Field, field_validator, model_validator
 
-from nl2hltl2plan.language.llm.client import LLMClient
+from nl2hltl2plan.errors import LLMError
+from nl2hltl2plan.language import semantic_check
+from nl2hltl2plan.language.llm.client import LLMClient, Validator
 from nl2hltl2plan.language.prompts import load_prompt
 from nl2hltl2plan.language.tasks import Kind
 from nl2hltl2plan.worlds.plan import ACTION_ARITY
@@ -29,6 +35,44 @@ MAX_TASKS = 12
 MAX_TEXT = 300  # characters of a task's text
 MAX_WORD = 40  # characters of an object / receptacle name
 NodeId = Annotated[str, Field(max_length=12)]
+T = TypeVar("T", bound=BaseModel)
+
+
+class SemanticCheckError(LLMError):
+    """An LLM answer that still does not fit what was asked after the re-asks (the reasons named)."""
+
+
+def ask_checked(
+    client: LLMClient,
+    messages: list[dict[str, str]],
+    schema: type[T],
+    name: str,
+    problems_of: Callable[[T], list[str]],
+    validate: Validator | None = None,
+) -> T:
+    """`client.ask`, then the semantic check `problems_of`: re-asked with the problems (at most
+    `max_reasks` times), then SemanticCheckError naming them."""
+    msgs = list(messages)
+    reasks = client.settings.max_reasks
+    for attempt in range(reasks + 1):
+        answer = client.ask(msgs, schema, name, validate=validate)
+        problems = problems_of(answer)
+        if not problems:
+            return answer
+        if attempt == reasks:
+            break
+        client.stats.reasks += 1
+        msgs = msgs + [
+            {"role": "assistant", "content": answer.model_dump_json()},
+            {
+                "role": "user",
+                "content": "That answer does not fit the request: " + "; ".join(problems)
+                + ". Answer again with only a corrected JSON object.",
+            },
+        ]
+    raise SemanticCheckError(
+        f"{name}: the answer does not fit the request after {reasks + 1} attempts: " + "; ".join(problems)
+    )
 
 
 # ----- 1. decomposition ------------------------------------------------------------------------------
@@ -99,11 +143,24 @@ class Decomposition(BaseModel):
         return tasks
 
 
+def decomposition_tasks(dec: Decomposition) -> list[TaskFields]:
+    """Every base task of a decomposition (group members and single tasks)."""
+    return [t for n in dec.tasks for t in (n.subtasks or [n.as_task()])]
+
+
 def decompose(client: LLMClient, instruction: str, objects: list[str]) -> Decomposition:
+    """The first stage of an instruction: starts the client's per-instruction deadline."""
+    client.start_instruction()
     msgs = load_prompt("decompose").messages(
         instruction=instruction, objects=", ".join(objects) or "(unknown)"
     )
-    return client.ask(msgs, Decomposition, "decomposition")
+    return ask_checked(
+        client,
+        msgs,
+        Decomposition,
+        "decomposition",
+        lambda dec: semantic_check.decomposition_problems(instruction, decomposition_tasks(dec)),
+    )
 
 
 # ----- 2. relations -----------------------------------------------------------------------------------
@@ -123,16 +180,17 @@ def relations(
                 raise ValueError(f"unknown subtask id(s) {bad}; use only {ids}")
             if a == b:
                 raise ValueError(f"[{a}, {b}] relates a task to itself")
-        g = nx.DiGraph(ans.relations)
-        if not nx.is_directed_acyclic_graph(g):
-            raise ValueError("the relations form a cycle: " + " before ".join(a for a, _ in nx.find_cycle(g)))
+
+    def cycle(ans: Relations) -> list[str]:
+        problem = semantic_check.cycle_problem(ans.relations)
+        return [problem] if problem else []
 
     msgs = load_prompt("relations").messages(
         instruction=instruction,
         parent=f"{parent}: {parent_text}",
         children="\n".join(f"{c}: {t}" for c, t in children),
     )
-    ans = client.ask(msgs, Relations, f"relations of {parent}", validate=check)
+    ans = ask_checked(client, msgs, Relations, f"relations of {parent}", cycle, validate=check)
     return [(a, b) for a, b in ans.relations]
 
 
@@ -246,10 +304,16 @@ def complete_actions(
         vocabulary=VOCABULARY_TEXT,
         objects=", ".join(objects) or "(any)",
     )
-    ans = client.ask(
+
+    def fits(a: Actions) -> list[str]:
+        return semantic_check.action_problems([x.replace(" ", "") for x in a.actions], details, scene_types)
+
+    ans = ask_checked(
+        client,
         msgs,
         Actions,
         f"actions of {details.get('id', 'leaf')}",
+        fits,
         validate=lambda a: check_actions([x.replace(" ", "") for x in a.actions], scene_types, scene),
     )
     return [a.replace(" ", "") for a in ans.actions]

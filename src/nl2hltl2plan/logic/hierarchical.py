@@ -19,7 +19,7 @@ The three rules are checked as follows (errors name the formula at fault):
    propositions is an "atom above the leaf level". Leaves may sit above LK when the task tree is
    unbalanced (Algorithm 1 puts a leaf at its node's depth), as in the paper's own construction.
 
-Semantics used for planning and checking (`check_trace`): every action event is attributed to one
+Semantics used for planning and checking (`logic.trace.check_trace`): every action event is attributed to one
 leaf; a leaf formula reads only its own events; a composite proposition is a *completion event*,
 true exactly at the step its formula is first satisfied. A trace satisfies the specification when
 every L1 formula is satisfied.
@@ -29,13 +29,15 @@ from __future__ import annotations
 
 import json
 import re
-from collections.abc import Iterable, Sequence
-from dataclasses import dataclass, field
+from collections.abc import Sequence
 from functools import cached_property
 from pathlib import Path
 from typing import Any
 
-from nl2hltl2plan.errors import FormulaError, SpecError
+import networkx as nx
+
+from nl2hltl2plan.errors import DataError, FormulaError, SpecError
+from nl2hltl2plan.io import loads, read_text
 from nl2hltl2plan.logic import spot_backend as sb
 from nl2hltl2plan.logic.automaton import Dfa
 
@@ -54,52 +56,6 @@ def sequence_formula(actions: Sequence[str], check: bool = True) -> str:
     for a in reversed(actions[:-1]):
         text = f'"{a}" & F({text})'
     return f"F({text})"
-
-
-@dataclass(frozen=True)
-class TraceEvent:
-    """One action at step `t`, attributed to leaf `task` (None: it counts for every leaf)."""
-
-    t: int
-    atom: str
-    task: str | None = None
-
-
-@dataclass
-class TraceCheck:
-    ok: bool
-    completed: dict[str, int | None]  # name -> step of completion (None: never)
-    reasons: list[str] = field(default_factory=list)
-
-
-@dataclass
-class SizeReport:
-    """Automaton sizes: the hierarchy (one DFA per flat formula) against the flattened formula.
-
-    The flat formula is measured by Spot's cheapest Büchi automaton ('BA', 'any', 'medium'), which
-    may be nondeterministic and so is never larger than its DFA: the comparison favours flat."""
-
-    per_formula: dict[str, tuple[int, int]]  # name -> (states, edges)
-    hierarchical_states: int
-    hierarchical_edges: int
-    flat_formula: str
-    flat_states: int | None
-    flat_edges: int | None
-    flat_error: str | None = None
-    flat_exact: bool = True
-
-    def to_dict(self) -> dict[str, Any]:
-        return {
-            "per_formula": {k: {"states": s, "edges": e} for k, (s, e) in self.per_formula.items()},
-            "hierarchical": {"states": self.hierarchical_states, "edges": self.hierarchical_edges},
-            "flat": {
-                "formula": self.flat_formula,
-                "states": self.flat_states,
-                "edges": self.flat_edges,
-                "exact": self.flat_exact,
-                "error": self.flat_error,
-            },
-        }
 
 
 class HierarchicalSpec:
@@ -122,9 +78,9 @@ class HierarchicalSpec:
     def from_json(cls, data: str | list[Any]) -> HierarchicalSpec:
         if isinstance(data, str):
             try:
-                data = json.loads(data)
-            except json.JSONDecodeError as exc:
-                raise SpecError(f"specification is not valid JSON: {exc}") from None
+                data = loads(data, "specification")
+            except DataError as exc:
+                raise SpecError(str(exc)) from None
         if isinstance(data, dict) and "levels" in data:
             data = data["levels"]
         if not isinstance(data, list):
@@ -133,11 +89,7 @@ class HierarchicalSpec:
 
     @classmethod
     def load(cls, path: str | Path) -> HierarchicalSpec:
-        try:
-            text = Path(path).read_text()
-        except OSError as exc:
-            raise SpecError(f"cannot read specification {path}: {exc.strerror}") from None
-        return cls.from_json(text)
+        return cls.from_json(read_text(path, "specification file"))
 
     def to_json_obj(self) -> list[dict[str, LeafOrFormula]]:
         return [dict(level) for level in self.levels]
@@ -204,6 +156,19 @@ class HierarchicalSpec:
             raise SpecError("invalid hierarchical specification:\n  - " + "\n  - ".join(problems))
 
     # ----- structure ---------------------------------------------------------------------------
+    @cached_property
+    def graph(self) -> nx.DiGraph:
+        """The specification hierarchy graph: one node per flat formula (attributes `level`, `text`,
+        `leaf`), an edge from each formula to the composite propositions it uses."""
+        g = nx.DiGraph()
+        for name, k in self._level_of.items():
+            g.add_node(name, level=k, text=self._formulas[name].text)
+        for name, f in self._formulas.items():
+            g.add_edges_from((name, a) for a in f.atoms if a in self._level_of)
+        for n in g.nodes:
+            g.nodes[n]["leaf"] = g.out_degree(n) == 0
+        return g
+
     @property
     def names(self) -> list[str]:
         return list(self._level_of)
@@ -224,11 +189,12 @@ class HierarchicalSpec:
         return self.formula(name).text
 
     def children(self, name: str) -> list[str]:
-        """The composite propositions of `name` (empty for a leaf)."""
+        """The composite propositions of `name` (empty for a leaf), in formula order."""
         return [a for a in self.formula(name).atoms if a in self._level_of]
 
     def is_leaf(self, name: str) -> bool:
-        return not self.children(name)
+        self._check(name)
+        return bool(self.graph.nodes[name]["leaf"])
 
     @property
     def leaves(self) -> list[str]:
@@ -243,10 +209,8 @@ class HierarchicalSpec:
         return {a for n in self.leaves for a in self.formula(n).atoms}
 
     def parent(self, name: str) -> str | None:
-        for n in self.names:
-            if name in self.children(n):
-                return n
-        return None
+        self._check(name)
+        return next(iter(self.graph.predecessors(name)), None)
 
     def dfa(self, name: str, timeout_s: float = sb.DEFAULT_TIMEOUT_S) -> Dfa:
         return sb.dfa(self.formula(name), timeout_s=timeout_s)
@@ -255,152 +219,9 @@ class HierarchicalSpec:
         if name not in self._level_of:
             raise SpecError(f"no specification named {name!r}; names are {self.names}")
 
-    # ----- flattening and sizes ----------------------------------------------------------------
-    @property
-    def flattens_exactly(self) -> bool:
-        """True when every leaf is an action list and every non-leaf formula is in the relation
-        compiler's form (conjunction of F c and F(a & F b)); then `flatten` is exact."""
-        return all(self.leaf_actions(n) for n in self.leaves) and all(
-            sb.precedence_form(self.formula(n)) is not None for n in self.names if not self.is_leaf(n)
-        )
 
-    def flatten(self) -> str:
-        """One flat formula over atomic propositions.
-
-        Exact case (`flattens_exactly`): atoms are *attributed* actions `"leaf:action"`, each
-        happening at most once (as in every plan the planner returns). A leaf completes with its last
-        action; a non-leaf completes with the last of its children, so "X no later than Y" becomes
-        le(X, Y) = AND over X's children (X composite), OR over Y's children (Y composite), and
-        F(last_X & F last_Y) for two leaves. The result is equivalent to the hierarchy under the
-        completion-event semantics, and shows what the hierarchy saves (the paper's motivation).
-
-        Otherwise: Luo & Liu's substitution of each composite proposition by its formula, which
-        keeps every leaf requirement but may weaken orderings between composite tasks."""
-        if self.flattens_exactly:
-            return sb.conj(self._flat_sat(r) for r in self.roots).text
-        done: dict[str, sb.Formula] = {}
-        for k in range(len(self.levels), 0, -1):
-            for name in self.levels[k - 1]:
-                done[name] = self._formulas[name].substitute({c: done[c] for c in self.children(name)})
-        return sb.conj(done[r] for r in self.roots).text
-
-    def _flat_sat(self, name: str) -> sb.Formula:
-        actions = self.leaf_actions(name)
-        if actions:
-            return sb.parse(sequence_formula([f"{name}:{a}" for a in actions], check=False))
-        form = sb.precedence_form(self.formula(name))
-        assert form is not None
-        children, pairs = form
-        return sb.conj([self._flat_sat(c) for c in children] + [self._flat_le(a, b) for a, b in pairs])
-
-    def _flat_le(self, x: str, y: str) -> sb.Formula:
-        if not self.is_leaf(x):
-            return sb.conj(self._flat_le(c, y) for c in self.children(x))
-        if not self.is_leaf(y):
-            return sb.disj(self._flat_le(x, d) for d in self.children(y))
-        last_x = sb.atom(f"{x}:{(self.leaf_actions(x) or [''])[-1]}")
-        last_y = sb.atom(f"{y}:{(self.leaf_actions(y) or [''])[-1]}")
-        return sb.eventually(sb.conj([last_x, sb.eventually(last_y)]))
-
-    def size_report(self, flat_timeout_s: float = 30.0) -> SizeReport:
-        per = {}
-        for n in self.names:
-            d = self.dfa(n)
-            per[n] = (d.num_states, d.num_edges)
-        flat = self.flatten()
-        flat_states = flat_edges = None
-        error = None
-        try:
-            flat_states, flat_edges = sb.automaton_size(sb.parse(flat), timeout_s=flat_timeout_s)
-        except FormulaError as exc:
-            error = str(exc)
-        return SizeReport(
-            per_formula=per,
-            hierarchical_states=sum(s for s, _ in per.values()),
-            hierarchical_edges=sum(e for _, e in per.values()),
-            flat_formula=flat,
-            flat_states=flat_states,
-            flat_edges=flat_edges,
-            flat_error=error,
-            flat_exact=self.flattens_exactly,
-        )
-
-    # ----- checking a finished trace -----------------------------------------------------------
-    @cached_property
-    def _leaf_atoms(self) -> dict[str, frozenset[str]]:
-        return {n: frozenset(self.formula(n).atoms) for n in self.leaves}
-
-    def check_trace(self, events: Iterable[TraceEvent]) -> TraceCheck:
-        """Judge a finished execution under completion-event semantics (module docstring)."""
-        by_step: dict[int, list[TraceEvent]] = {}
-        for e in events:
-            if e.task is not None and e.task not in self._level_of:
-                return TraceCheck(
-                    False, {}, [f"event {e.atom} at t={e.t} is attributed to unknown task {e.task!r}"]
-                )
-            if e.task is not None and not self.is_leaf(e.task):
-                return TraceCheck(
-                    False, {}, [f"event {e.atom} at t={e.t} is attributed to non-leaf {e.task}"]
-                )
-            by_step.setdefault(e.t, []).append(e)
-        # non-leaves in the compiler's form (F c, F(a & F b)) are read off directly: they complete
-        # with their last child when every pair is in order, which is exactly when their automaton
-        # would accept; this avoids 2^n-state automata for wide conjunctions
-        forms = {n: sb.precedence_form(self.formula(n)) for n in self.names if not self.is_leaf(n)}
-        dfas = {n: self.dfa(n) for n in self.names if forms.get(n) is None}
-        state = {n: d.init for n, d in dfas.items()}
-        completed: dict[str, int | None] = {n: None for n in self.names}
-        for n, d in dfas.items():
-            if d.init in d.accepting:
-                completed[n] = 0
-        broken: set[str] = set()
-        last = max(by_step, default=0)
-        for t in range(1, last + 1):
-            step_events = by_step.get(t, [])
-            newly: set[str] = set()
-            for n in self.leaves:
-                if completed[n] is not None:
-                    continue
-                atoms = {
-                    e.atom
-                    for e in step_events
-                    if (e.task == n or e.task is None) and e.atom in self._leaf_atoms[n]
-                }
-                state[n] = dfas[n].step(state[n], atoms)
-                if state[n] in dfas[n].accepting:
-                    completed[n] = t
-                    newly.add(n)
-            # propagate completion events upwards, lowest level first
-            for k in range(len(self.levels), 0, -1):
-                for n in self.levels[k - 1]:
-                    if self.is_leaf(n) or completed[n] is not None:
-                        continue
-                    form = forms.get(n)
-                    if form is not None:
-                        children, pairs = form
-                        done = {c: completed[c] for c in children}
-                        if any(
-                            done[a] is not None and done[b] is not None and done[a] > done[b]
-                            for a, b in pairs
-                        ):
-                            broken.add(n)
-                        elif all(v is not None for v in done.values()):
-                            completed[n] = t
-                            newly.add(n)
-                        continue
-                    state[n] = dfas[n].step(state[n], newly)
-                    if state[n] in dfas[n].accepting:
-                        completed[n] = t
-                        newly.add(n)
-        reasons = []
-        for r in self.roots:
-            if completed[r] is None:
-                missing = [n for n in self.names if completed[n] is None and not self.children(n)]
-                dead = sorted(broken | {n for n, d in dfas.items() if d.is_dead(state[n])})
-                why = f"top formula {r} ({self.text(r)}) is not satisfied"
-                if dead:
-                    why += f"; violated (can no longer be satisfied): {dead}"
-                elif missing:
-                    why += f"; leaves never completed: {missing}"
-                reasons.append(why)
-        return TraceCheck(not reasons, completed, reasons)
+def format_spec(spec: HierarchicalSpec) -> str:
+    """Readable hierarchical LTL, one formula per line, level by level: `L2  task1.1 = F(...)`."""
+    return "\n".join(
+        f"L{k}  {name} = {spec.text(name)}" for k, level in enumerate(spec.levels, start=1) for name in level
+    )

@@ -20,20 +20,25 @@ formulas, and refuse anything that still is not.
 
 from __future__ import annotations
 
-import multiprocessing as mp
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Sequence
 from functools import lru_cache
+from typing import Any
 
 import spot
 from spot import buddy
 
+from nl2hltl2plan.deadline import ChildError, run_with_deadline
 from nl2hltl2plan.errors import FormulaError
 from nl2hltl2plan.logic.automaton import Cube, Dfa
 
-# Formulas with more atoms than this are translated in a forked child guarded by a time limit:
-# Spot's C++ code cannot be interrupted from Python, and a conjunction of n `F p` has 2^n states.
-IN_PROCESS_MAX_ATOMS = 8
+# Formulas with more temporal operators than this are translated in a forked child under time,
+# memory and size limits: Spot's C++ code cannot be interrupted from Python, and automata can be
+# exponential in the number of temporal operators (a conjunction of n `F p` has 2^n states, and
+# F(a & X^n b) has 2^n + 1 whatever its atom count). Up to 8 operators stay below a few hundred states.
+IN_PROCESS_MAX_TEMPORAL = 8
 DEFAULT_TIMEOUT_S = 30.0
+MAX_STATES = 20_000  # a DFA beyond this makes the planner's product search hopeless anyway
+MEMORY_MB = 2048.0  # address space a translation child may add to what it inherited
 
 _FORBIDDEN = {
     spot.op_G: "G (always) is not co-safe",
@@ -44,6 +49,9 @@ _FORBIDDEN = {
     spot.op_Equiv: "<-> is not in positive normal form",
     spot.op_Xor: "xor is not in positive normal form",
 }
+
+
+_TEMPORAL = {spot.op_F, spot.op_G, spot.op_U, spot.op_X, spot.op_R, spot.op_W, spot.op_M}
 
 
 class Formula:
@@ -104,8 +112,16 @@ def parse(text: str) -> Formula:
     try:
         return Formula(spot.formula(text))
     except SyntaxError as exc:
-        detail = "\n".join(line for line in str(exc).strip().splitlines() if line.strip())
-        raise FormulaError(f"cannot parse formula {text!r}:\n{detail}") from None
+        raise FormulaError(f"cannot parse formula {_short(text)!r}: {_first_parse_error(str(exc))}") from None
+
+
+def _first_parse_error(spot_message: str) -> str:
+    """Spot's first complaint in one line: "syntax error, unexpected ... at character 5"."""
+    lines = [line for line in spot_message.splitlines() if line.strip()]
+    for k, line in enumerate(lines):
+        if line.lstrip().startswith("^") and k + 1 < len(lines):
+            return f"{lines[k + 1].strip()} at character {line.index('^') - 3}"
+    return " ".join(" ".join(lines).split())[:200] or "syntax error"
 
 
 def atom(name: str) -> Formula:
@@ -200,25 +216,93 @@ def equivalent(a: Formula, b: Formula) -> bool:
 # translation to DFA
 
 
-def dfa(f: Formula, timeout_s: float = DEFAULT_TIMEOUT_S) -> Dfa:
+def dfa(
+    f: Formula,
+    timeout_s: float = DEFAULT_TIMEOUT_S,
+    max_states: int = MAX_STATES,
+    memory_mb: float = MEMORY_MB,
+) -> Dfa:
     """The DFA of the good prefixes of an sc-LTL formula (see the module docstring).
 
-    Formulas with few atoms are translated in-process ('BA', 'deterministic', 'sbacc'); larger
-    ones in a forked child with `timeout_s` using 'BA', 'any', 'medium' followed by WDBA
-    minimisation, so an exponential formula ends in FormulaError instead of a hang."""
+    Bounded for every formula: a linear sequence F(a1 & F(a2 & ...)) is built directly (any length,
+    no Spot); a formula with at most `IN_PROCESS_MAX_TEMPORAL` temporal operators is translated
+    in-process (its automaton is small by construction); any other one in a forked child limited
+    to `timeout_s` seconds and `memory_mb` MiB, whose automaton must have at most `max_states`
+    states. A limit reached is a one-line FormulaError naming it."""
     probs = sc_ltl_problems(f)
     if probs:
-        raise FormulaError(f"{f.text} is not sc-LTL: " + "; ".join(probs))
-    return _dfa_cached(f.text, timeout_s)
+        raise FormulaError(f"{_short(f.text)} is not sc-LTL: " + "; ".join(probs))
+    return _dfa_cached(f.text, timeout_s, max_states, memory_mb)
 
 
 @lru_cache(maxsize=4096)
-def _dfa_cached(text: str, timeout_s: float) -> Dfa:
+def _dfa_cached(text: str, timeout_s: float, max_states: int, memory_mb: float) -> Dfa:
     f = spot.formula(text)
-    if len(Formula(f).atoms) <= IN_PROCESS_MAX_ATOMS:
+    steps = linear_sequence(f)
+    if steps is not None:
+        return sequence_dfa(steps)
+    if temporal_size(f) <= IN_PROCESS_MAX_TEMPORAL:
         return _to_dfa(_translate(f, small=True))
-    hoa = _in_child(_translate_to_hoa, text, timeout_s)
+    hoa = _guarded(_translate_to_hoa, (text, max_states), text, timeout_s, memory_mb)
     return _to_dfa(spot.automaton(hoa))
+
+
+def temporal_size(f: spot.formula) -> int:
+    """Number of temporal operators (F, U, X, G, R, W, M) in the formula."""
+    count = 0
+
+    def visit(g: spot.formula) -> bool:
+        nonlocal count
+        if g.kind() in _TEMPORAL:
+            count += 1
+        return False
+
+    f.traverse(visit)
+    return count
+
+
+def linear_sequence(f: spot.formula) -> list[str] | None:
+    """[a1, ..., an] when `f` is F(a1 & F(a2 & ... F an)) over atoms, else None."""
+    steps: list[str] = []
+    g = f
+    while True:
+        if g.kind() != spot.op_F:
+            return None
+        body = g[0]
+        if body.kind() == spot.op_ap:
+            return steps + [body.ap_name()]
+        if body.kind() != spot.op_And or body.size() != 2:
+            return None
+        aps = [h for h in body if h.kind() == spot.op_ap]
+        rest = [h for h in body if h.kind() == spot.op_F]
+        if len(aps) != 1 or len(rest) != 1:
+            return None
+        steps.append(aps[0].ap_name())
+        g = rest[0]
+
+
+def sequence_dfa(steps: Sequence[str]) -> Dfa:
+    """The DFA of F(s1 & F(s2 & ... F sn)), built directly: state k = the first k steps happened.
+
+    F includes the present, so one letter may complete several steps at once: from state k the run
+    moves to k + m for the largest m with s(k+1) ... s(k+m) all in the letter (greedy matching is
+    optimal for a subsequence). Cubes with the same atom required and forbidden are dropped."""
+    atoms = tuple(sorted(set(steps)))
+    bit = {a: 1 << i for i, a in enumerate(atoms)}
+    n = len(steps)
+    edges: list[list[tuple[Cube, int]]] = []
+    for k in range(n):
+        out: list[tuple[Cube, int]] = []
+        pos = 0
+        for m in range(0, n - k + 1):
+            if m:
+                pos |= bit[steps[k + m - 1]]
+            neg = bit[steps[k + m]] if k + m < n else 0
+            if not pos & neg:
+                out.append(((pos, neg), k + m))
+        edges.append(out)
+    edges.append([((0, 0), n)])
+    return Dfa(atoms=atoms, init=0, accepting=frozenset({n}), edges=edges)
 
 
 def _translate(f: spot.formula, small: bool) -> spot.twa_graph:
@@ -230,7 +314,7 @@ def _translate(f: spot.formula, small: bool) -> spot.twa_graph:
     if not _is_terminal_dba(aut):
         aut = spot.minimize_obligation(aut, f)
     if not _is_terminal_dba(aut):
-        raise FormulaError(f"Spot did not give a deterministic terminal automaton for {f.to_str()}")
+        raise FormulaError(f"Spot did not give a deterministic terminal automaton for {_short(f.to_str())}")
     spot.complete_here(aut)  # explicit rejecting sink: every letter has a transition
     return aut
 
@@ -239,14 +323,22 @@ def _is_terminal_dba(aut: spot.twa_graph) -> bool:
     return bool(spot.is_deterministic(aut) and spot.is_terminal_automaton(aut))
 
 
-def _translate_to_hoa(text: str) -> str:
-    return str(_translate(spot.formula(text), small=False).to_str("hoa"))
+def _translate_to_hoa(job: tuple[str, int]) -> str:
+    text, max_states = job
+    aut = _translate(spot.formula(text), small=False)
+    if aut.num_states() > max_states:
+        raise FormulaError(
+            f"its automaton has {aut.num_states()} states, more than the limit of {max_states}"
+        )
+    return str(aut.to_str("hoa"))
 
 
-def automaton_size(f: Formula, timeout_s: float = DEFAULT_TIMEOUT_S) -> tuple[int, int]:
+def automaton_size(
+    f: Formula, timeout_s: float = DEFAULT_TIMEOUT_S, memory_mb: float = MEMORY_MB
+) -> tuple[int, int]:
     """(states, edges) of Spot's Büchi automaton for `f` ('BA', 'any', 'medium': the smallest
-    cheap translation, possibly nondeterministic), computed in a child under a time limit."""
-    text = _in_child(_size_text, f.text, timeout_s)
+    cheap translation, possibly nondeterministic), computed in a child under time and memory limits."""
+    text = _guarded(_size_text, f.text, f.text, timeout_s, memory_mb)
     states, edges = text.split()
     return int(states), int(edges)
 
@@ -256,32 +348,24 @@ def _size_text(text: str) -> str:
     return f"{aut.num_states()} {aut.num_edges()}"
 
 
-def _in_child(fn: Callable[[str], str], arg: str, timeout_s: float) -> str:
-    ctx = mp.get_context("fork")
-    parent, child = ctx.Pipe(duplex=False)
+def _short(text: str, limit: int = 80) -> str:
+    return text if len(text) <= limit else text[: limit - 3] + "..."
 
-    def run() -> None:
-        try:
-            child.send(("ok", fn(arg)))
-        except Exception as exc:  # report any failure to the parent as text
-            child.send(("error", str(exc)))
 
-    proc = ctx.Process(target=run, daemon=True)
-    proc.start()
+def _guarded(fn: Callable[[Any], str], arg: Any, text: str, timeout_s: float, memory_mb: float) -> str:
+    """`fn(arg)` in a child with the limits; FormulaError naming the formula and the limit reached."""
     try:
-        if not parent.poll(timeout_s):
-            raise FormulaError(
-                f"translating {arg!r} to an automaton took longer than {timeout_s:g} s; "
-                "split it into a hierarchy of smaller formulas"
-            )
-        status, payload = parent.recv()
-    finally:
-        if proc.is_alive():
-            proc.kill()
-        proc.join()
-    if status != "ok":
-        raise FormulaError(f"Spot failed on {arg!r}: {payload}")
-    return str(payload)
+        return str(run_with_deadline(fn, arg, timeout_s, memory_mb=memory_mb, quiet=True))
+    except ChildError as exc:
+        advice = "; split it into a hierarchy of smaller formulas"
+        if exc.kind == "timeout":
+            why = f"took longer than the time limit of {timeout_s:g} s"
+        elif exc.kind in ("memory", "died"):
+            why = f"needed more than the memory limit of {memory_mb:g} MiB ({exc})"
+        else:
+            why = f"failed: {exc}"
+            advice = "" if "limit of" not in str(exc) else advice
+        raise FormulaError(f"translating {_short(text)} to an automaton {why}{advice}") from None
 
 
 def _to_dfa(aut: spot.twa_graph) -> Dfa:
@@ -294,7 +378,10 @@ def _to_dfa(aut: spot.twa_graph) -> Dfa:
     for e in aut.edges():
         for cube in _cubes(e.cond, var_to_bit):
             edges[e.src].append((cube, e.dst))
-    accepting = frozenset(s for s in range(n) if aut.state_is_accepting(s))
+    # the accepting SCCs of a terminal automaton are closed under every letter: reaching one is a good
+    # prefix (works for state- and transition-based marks alike; a mark on a transient edge is no goal)
+    scc = spot.scc_info(aut)
+    accepting = frozenset(s for s in range(n) if scc.is_accepting_scc(scc.scc_of(s)))
     return Dfa(atoms=atoms, init=aut.get_init_state_number(), accepting=accepting, edges=edges)
 
 
@@ -316,3 +403,23 @@ def _cubes(cond: object, var_to_bit: dict[int, int]) -> list[Cube]:
         out.append((pos, neg))
         c = isop.next()
     return out
+
+
+# HOA output (the Hanoi Omega-Automata format, for other tools)
+
+
+def hoa(
+    f: Formula,
+    timeout_s: float = DEFAULT_TIMEOUT_S,
+    max_states: int = MAX_STATES,
+    memory_mb: float = MEMORY_MB,
+) -> str:
+    """`f`'s deterministic terminal Büchi automaton (completed with a rejecting sink; the language of
+    `dfa(f)`), written by Spot in HOA v1. Bounded as `dfa` is: small formulas in-process, others in
+    a child under the time, memory and state limits (FormulaError naming the limit reached)."""
+    probs = sc_ltl_problems(f)
+    if probs:
+        raise FormulaError(f"{_short(f.text)} is not sc-LTL: " + "; ".join(probs))
+    if temporal_size(f._f) <= IN_PROCESS_MAX_TEMPORAL:
+        return str(_translate(f._f, small=True).to_str("hoa"))
+    return _guarded(_translate_to_hoa, (f.text, max_states), f.text, timeout_s, memory_mb)

@@ -4,49 +4,56 @@ from __future__ import annotations
 
 import time
 from collections.abc import Iterable, Sequence
-from dataclasses import dataclass, field
-from typing import Any, Literal
+from dataclasses import dataclass
+from typing import Literal
 
 from nl2hltl2plan.errors import PlanningError
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
-from nl2hltl2plan.planning.extract import refine_stand_cells, to_plan, verify
+from nl2hltl2plan.planning.extract import refine_stand_cells, to_plan
 from nl2hltl2plan.planning.heuristic import Heuristic
 from nl2hltl2plan.planning.improve import improve
-from nl2hltl2plan.planning.model import Infeasible, _required_leaves, build_problem
+from nl2hltl2plan.planning.model import Infeasible, Problem, _required_leaves, build_problem
 from nl2hltl2plan.planning.navigation import Navigator
-from nl2hltl2plan.planning.search import Deadline, Searcher
+from nl2hltl2plan.planning.objective import Objective, ObjectiveName, objective_for
+from nl2hltl2plan.planning.results import (
+    GRID_MODEL,
+    NEAREST_CELL_MODEL,
+    STOP_REASONS,
+    PlanResult,
+    PlanStatus,
+    optimality_words,
+    validate,
+)
+from nl2hltl2plan.planning.search import NODE_BYTES, Deadline, Searcher, SearchStats
 from nl2hltl2plan.planning.state import Expander, Node
 from nl2hltl2plan.worlds.model import CELL_M, Cell, World
-from nl2hltl2plan.worlds.plan import Plan
-from nl2hltl2plan.worlds.simulator import Execution
 
-Objective = Literal["min", "minmax"]
 Mode = Literal["fast", "exact"]
 DEFAULT_TIMEOUT_S = 300.0
 DEFAULT_W = 1.5
-FAST_EXPANSIONS = 2000  # AWA* expansions `fast` spends improving its first plan (at most)
-FAST_IMPROVE_S = 1.0  # and seconds (at most): half local search, half AWA*
-LNS_EXACT_S = 2.0  # local search before the exact search (a good incumbent prunes it)
+FAST_EXPANSIONS = 300  # AWA* expansions `fast` spends improving its first plan (at most)
+IMPROVE_EVALS = 600  # local-search candidate replays (both modes)
+MAX_NODES = 400_000  # search nodes held at once (about 1.5 GB), the memory bound
 BEAM_WIDTH = 8
 BEAM_INSTANCES = 3
 SOLO_WIDTH = 4  # beam width of the single-robot seeds
 SOLO_SEEDS = 4  # robots tried alone (the best placed ones)
 
 
-def _seed(searcher: Searcher, x: Expander, root: Node, objective: str) -> Node | None:
+def _seed(searcher: Searcher, x: Expander, root: Node) -> Node | None:
     """The cheapest of a greedy and a beam search over the team and, for the summed cost, of beam
     searches in which one well-placed robot does everything (summed cost often favours one robot,
     which the team beam, deciding one step at a time, can miss); local search then shares work out."""
     found = [searcher.beam(root, 1, 1), searcher.beam(root, BEAM_WIDTH, BEAM_INSTANCES)]
-    if objective == "min" and x.p.n_robots > 1:
+    if searcher.obj.solo_seeds and x.p.n_robots > 1:
         for r in _well_placed(x, root)[:SOLO_SEEDS]:
             x.only = {r}
             try:
                 found.append(searcher.beam(root, SOLO_WIDTH, BEAM_INSTANCES))
             finally:
                 x.only = None
-    found = [n for n in found if n is not None]
-    return min(found, key=searcher.cost) if found else None
+    goals = [n for n in found if n is not None]
+    return min(goals, key=searcher.cost) if goals else None
 
 
 def _well_placed(x: Expander, root: Node) -> list[int]:
@@ -71,166 +78,174 @@ def _well_placed(x: Expander, root: Node) -> list[int]:
     return sorted(range(x.p.n_robots), key=spread)
 
 
-@dataclass
-class PlanResult:
-    """Outcome of `plan`. `status`: "solved" (a verified plan), "infeasible" (`reason` says why no
-    plan exists) or "timeout" (no plan within the time limit)."""
-
-    status: Literal["solved", "infeasible", "timeout"]
-    reason: str = ""
-    objective: str = "min"
-    mode: str = "fast"
-    plan: Plan | None = None
-    travel_m: float | None = None  # metres walked, summed over robots
-    steps: int | None = None  # completion time: last step at which some robot acts
-    total_cost: int | None = None  # moves + actions, summed over robots (the paper's cost)
-    cost: float | None = None  # the objective: total_cost (min) or steps (minmax)
-    model_cost: float | None = None  # the objective before stand-cell refinement (the search's value)
-    lower_bound: float | None = None  # proven lower bound on the optimal model_cost
-    bound: float | None = None  # cost / lower_bound (1.0: proven optimal)
-    proven_optimal: bool = False
-    plan_time_s: float = 0.0
-    expanded: int = 0
-    generated: int = 0
-    stopped: str = ""  # why the search stopped: bound, exhausted, budget, timeout
-    execution: Execution | None = field(default=None, repr=False)
-    events: list[dict[str, Any]] = field(default_factory=list)
-
-    @property
-    def solved(self) -> bool:
-        return self.status == "solved"
-
-    def to_dict(self, with_plan: bool = True) -> dict[str, Any]:
-        out = {k: getattr(self, k) for k in (
-            "status", "reason", "objective", "mode", "travel_m", "steps", "total_cost", "cost",
-            "model_cost", "lower_bound", "bound", "proven_optimal", "plan_time_s", "expanded", "generated",
-            "stopped")}
-        if with_plan:
-            out["plan"] = self.plan.model_dump(mode="json") if self.plan is not None else None
-            out["events"] = self.events
-        return out
-
-
 def plan(
     world: World,
-    spec: HierarchicalSpec | list | str,
+    spec: HierarchicalSpec,
     starts: Sequence[Cell],
-    objective: Objective = "min",
+    objective: ObjectiveName = "min",
     mode: Mode = "fast",
     timeout_s: float = DEFAULT_TIMEOUT_S,
     capabilities: Sequence[Iterable[str] | None] | None = None,
     w: float = DEFAULT_W,
     fast_expansions: int | None = FAST_EXPANSIONS,
-    fast_improve_s: float | None = FAST_IMPROVE_S,
+    improve_evals: int = IMPROVE_EVALS,
+    max_nodes: int | None = MAX_NODES,
     refine: bool | None = None,
 ) -> PlanResult:
     """Plan for a robot team under a hierarchical sc-LTL spec; every returned plan is executed in
-    the simulator and checked against the spec before it is returned.
+    the simulator and checked against the spec (`validate`) before it is returned.
 
-    world: a `worlds.World`. spec: a `HierarchicalSpec` (or its JSON levels) whose leaf atoms are
-    robot actions on object types. starts: one free cell per robot. capabilities: optional, per
-    robot, the verbs ("pickup") or atoms ("toggle_on(Faucet)") it may do (None: everything).
+    world: a `worlds.World`. spec: a `HierarchicalSpec` whose leaf atoms are robot actions on
+    object types. starts: one free cell per robot. capabilities: optional, per robot, the verbs
+    ("pickup") or atoms ("toggle_on(Faucet)") it may do (None: everything).
 
     objective: "min" minimises moves + actions summed over robots (the paper's cost); "minmax"
     minimises the completion time (steps), ties broken by the summed cost.
-    mode: "exact" returns a plan proven optimal for the objective in the planner's model (robots walk
-    shortest paths to the nearest cell of each interaction region; a leaf follows one of its minimal
-    action sequences; a leaf starts after the tasks ordered before it are complete). "fast" (default)
-    is anytime: a beam-search plan first, then anytime weighted A* (weight `w`) improves it until
-    it is proven optimal or the improvement budget (`fast_expansions` expansions, `fast_improve_s`
-    seconds) is spent; `bound` is the ratio to the optimum it could prove. With both budgets None,
-    fast stops as soon as the plan is proven within factor `w` (bounded suboptimality). `refine`
-    (default: on in fast, off in exact, so that an exact plan is the model's optimum) then
-    re-optimises each robot's stand cells for the chosen events, which never makes a plan worse
-    (`model_cost` is the value before, `cost` after).
+    mode: "exact" searches until the plan is proven optimal (`result.model` names the model the
+    optimum is over). "fast" (default) is anytime: beam-search seeds, local search
+    (`improve_evals` candidate replays), then anytime weighted A* (weight `w`) for at most
+    `fast_expansions` expansions; `bound` is the ratio to the optimum it could prove. With
+    `fast_expansions=None`, fast stops as soon as the plan is proven within factor `w`. Every budget
+    counts machine-independent units, so the same input gives the same plan; `timeout_s` is a
+    wall-clock last resort, reported as such (`stopped == "timeout"`). `max_nodes` bounds the
+    search's memory (nodes held at once; reported as `peak_nodes`, `memory_mb`).
+    `refine` (default: on in fast, off in exact) re-optimises each robot's stand cells for the chosen
+    events, which never makes a plan worse (`model_cost` is the value before, `cost` after).
 
-    Returns a `PlanResult`: status solved / infeasible (with the reason) / timeout (no plan within
-    `timeout_s`); plan (per-robot timed steps), travel_m, steps, total_cost, cost, lower_bound,
-    bound, plan_time_s, expanded, execution (the simulator's run). Malformed input (a start cell
-    that is not free, a leaf atom that is not an action) raises `PlanningError`.
+    Returns a `PlanResult` (status solved / infeasible with the reason / timeout / error: a plan that
+    failed validation, a planner bug, with the reason). Malformed input
+    (not a HierarchicalSpec, a start cell that is not free, a leaf atom that is not an action)
+    raises `PlanningError`.
     """
     t0 = time.perf_counter()
+    _check_arguments(spec, objective, mode, w)
+    obj = objective_for(objective)
+    result = PlanResult(status=PlanStatus.TIMEOUT, objective=objective, mode=mode)
+    deadline = t0 + timeout_s
+    try:
+        problem = build_problem(world, spec, starts, capabilities, dfa_timeout_s=max(1.0, timeout_s))
+    except Infeasible as exc:
+        result.status, result.reason = PlanStatus.INFEASIBLE, exc.reason
+        result.plan_time_s = time.perf_counter() - t0
+        return result
+    x = Expander(problem, Navigator(world))
+    required = {problem.leaf_index[n] for n in _required_leaves(problem)}
+    searcher = Searcher(x, Heuristic(x, required), obj, deadline)
+    budget = Budget(fast_expansions if mode == "fast" else None, improve_evals,
+                    w if mode == "fast" and fast_expansions is None else 1.0, w if mode == "fast" else 1.0,
+                    max_nodes, free_stands=grid_model(objective, mode))
+    best = _search(searcher, x, budget)
+    stats = searcher.stats
+    result.expanded, result.peak_nodes = stats.expanded, stats.peak_nodes
+    result.memory_mb = round(stats.peak_nodes * NODE_BYTES / 2**20, 1)
+    result.stopped, result.stop_reason = stats.stopped, STOP_REASONS.get(stats.stopped, stats.stopped)
+    if best is None:
+        if stats.exhausted:
+            result.status = PlanStatus.INFEASIBLE
+            result.reason = ("no sequence of robot actions satisfies the specification in this world "
+                             f"(searched {stats.expanded} states)")
+            if x.missing_support:
+                result.reason = (f"no robot in the team can {', '.join(sorted(x.missing_support))}, "
+                                 "which the tasks need; " + result.reason)
+        else:
+            result.reason = f"no plan found within {timeout_s:g} s (wall-clock timeout, last resort)"
+        result.plan_time_s = time.perf_counter() - t0
+        return result
+    try:
+        _fill_solved(result, problem, x, obj, best, stats, True if refine is None else refine)
+    except PlanningError as exc:  # a planner bug: reported, never a plan that fails validation
+        result.status, result.reason, result.plan, result.execution = PlanStatus.ERROR, str(exc), None, None
+    result.model = GRID_MODEL if grid_model(objective, mode) else NEAREST_CELL_MODEL
+    result.plan_time_s = time.perf_counter() - t0
+    return result
+
+
+@dataclass(frozen=True)
+class Budget:
+    """Machine-independent limits of one planning call."""
+
+    expansions: int | None  # AWA* expansions after the seed (None: until w_stop is proven)
+    improve_evals: int  # local-search candidate replays
+    w_stop: float  # stop once the incumbent is proven within this factor
+    w_order: float  # the weight of the A* ordering
+    max_nodes: int | None  # memory bound of the A*
+    free_stands: bool  # stand cells part of the A* search (the grid optimum of the summed cost)
+
+
+def grid_model(objective: str, mode: str) -> bool:
+    """Is the optimum searched over every stand cell (the grid), not only the nearest ones? For the
+    summed cost (both modes). The makespan's schedule couples robots (one waits for another's
+    event), so its search walks to nearest cells and refines the stand cells afterwards."""
+    return objective == "min"
+
+
+def _check_arguments(spec: object, objective: str, mode: str, w: float) -> None:
+    if not isinstance(spec, HierarchicalSpec):
+        raise PlanningError(f"plan() takes a HierarchicalSpec, got {type(spec).__name__} "
+                            "(build one with HierarchicalSpec(levels) or HierarchicalSpec.from_json)")
     if objective not in ("min", "minmax"):
         raise PlanningError(f"unknown objective {objective!r}; use 'min' or 'minmax'")
     if mode not in ("fast", "exact"):
         raise PlanningError(f"unknown mode {mode!r}; use 'fast' or 'exact'")
     if w < 1.0:
         raise PlanningError(f"the suboptimality bound w must be >= 1, got {w}")
-    if not isinstance(spec, HierarchicalSpec):
-        spec = HierarchicalSpec.from_json(spec)
-    result = PlanResult(status="timeout", objective=objective, mode=mode)
-    deadline = t0 + timeout_s
-    try:
-        problem = build_problem(world, spec, starts, capabilities, dfa_timeout_s=max(1.0, timeout_s))
-    except Infeasible as exc:
-        result.status, result.reason = "infeasible", exc.reason
-        result.plan_time_s = time.perf_counter() - t0
-        return result
-    nav = Navigator(world)
-    x = Expander(problem, nav)
-    required = {problem.leaf_index[n] for n in _required_leaves(problem)}
-    searcher = Searcher(x, Heuristic(x, required), objective, deadline)
+
+
+def _search(searcher: Searcher, x: Expander, budget: Budget) -> Node | None:
+    """Seeds, local search, then AWA*; the best goal node found (None if none)."""
     best: Node | None = None
     root = x.root()
     try:
         if x.is_goal(root):
-            best = root
-            searcher.stats.proven_optimal = True
-        else:
-            best = _seed(searcher, x, root, objective)
-            if best is not None:
-                searcher.stats.seed_cost = float(searcher.cost(best))
-                searcher.stats.seed_time_s = time.perf_counter() - t0
-                # local search on the allocation first: a better incumbent also prunes the A*
-                share = LNS_EXACT_S if mode == "exact" else (fast_improve_s or FAST_IMPROVE_S) / 2
-                best, searcher.stats.lns_moves = improve(x, best, objective,
-                                                         min(deadline, time.perf_counter() + share))
-            if mode == "exact":
-                best = searcher.awa(root, best, 1.0, 1.0)
-            else:
-                unbounded = fast_expansions is None and fast_improve_s is None
-                best = searcher.awa(
-                    root, best, w, w if unbounded else 1.0, max_expansions=fast_expansions,
-                    stop_at=None if fast_improve_s is None else time.perf_counter() + fast_improve_s / 2,
-                )
+            searcher.stats.proven_optimal, searcher.stats.stopped = True, "trivial"
+            return root
+        best = _seed(searcher, x, root)
+        if best is not None:
+            # local search on the allocation first: a better incumbent also prunes the A*
+            best = improve(x, best, searcher.obj, budget.improve_evals, searcher.check_time)
+            if budget.free_stands:  # the incumbent's cost on the grid: its best stand cells
+                best = refine_stand_cells(x, best, searcher.obj)
+        x.free_stands = budget.free_stands
+        try:
+            best = searcher.awa(root, best, budget.w_order, budget.w_stop, max_expansions=budget.expansions,
+                                max_nodes=budget.max_nodes)
+        finally:
+            x.free_stands = False
     except Deadline:
         searcher.stats.stopped = "timeout"
-        if best is None:
-            result.reason = f"no plan found within {timeout_s:g} s"
-    stats = searcher.stats
-    result.expanded, result.generated, result.stopped = stats.expanded, stats.generated, stats.stopped
-    if best is None:
-        if stats.exhausted:
-            result.status = "infeasible"
-            result.reason = ("no sequence of robot actions satisfies the specification in this world "
-                             f"(searched {stats.expanded} states)")
-        result.plan_time_s = time.perf_counter() - t0
-        return result
-    unit_cost = searcher.cost(best) if objective == "min" else best.ms
-    if refine is None:
-        refine = mode == "fast"
-    refined = refine_stand_cells(x, best, objective) if refine else best
+    return best
+
+
+def _fill_solved(result: PlanResult, problem: Problem, x: Expander, obj: Objective, best: Node,
+                 stats: SearchStats, refine: bool) -> None:
+    """Refine, write, validate and report a solved plan."""
+    model_cost = obj.reported(best)
+    if best.reach is not None:  # found with free stand cells: choose them now (same cost)
+        refined = refine_stand_cells(x, best, obj, force=True)
+    else:
+        refined = refine_stand_cells(x, best, obj) if refine else best
     events = refined.events()
     the_plan = to_plan(problem, x, events)
-    execution = verify(problem, the_plan)
-    result.status = "solved"
-    result.plan = the_plan
-    result.execution = execution
-    result.travel_m = execution.travel_m
-    result.steps = execution.steps
+    verdict = validate(problem.world, problem.spec, the_plan)
+    if not verdict.ok:
+        raise PlanningError("internal error: the planner's plan fails validation: "
+                            + "; ".join(verdict.reasons))
+    execution = verdict.execution
+    result.status = PlanStatus.SOLVED
+    result.plan, result.execution = the_plan, execution
+    result.travel_m, result.steps = execution.travel_m, execution.steps
     result.total_cost = refined.g
-    result.cost = float(refined.g if objective == "min" else refined.ms)
-    result.model_cost = float(unit_cost)
-    if stats.proven_optimal:
-        stats.lower_bound = float(unit_cost)
-    result.lower_bound = stats.lower_bound
-    result.bound = (unit_cost / stats.lower_bound) if stats.lower_bound > 0 else None
+    result.cost = float(obj.reported(refined))
+    result.model_cost = float(model_cost)
+    lower = float(model_cost) if stats.proven_optimal else stats.lower_bound
+    result.lower_bound = lower
+    result.bound = (model_cost / lower) if lower > 0 else None  # both over the search's model
     result.proven_optimal = stats.proven_optimal
+    result.optimality = optimality_words(result.proven_optimal, result.bound)
+    world = problem.world
     result.events = [
         {"t": e.t, "robot": e.robot, "atom": e.atom,
          "task": problem.leaves[e.leaf].name if e.leaf >= 0 else None,
          "objects": [world.ids[o] for o in e.objs], "travel_m": e.travel * CELL_M}
         for e in events
     ]
-    result.plan_time_s = time.perf_counter() - t0
-    return result

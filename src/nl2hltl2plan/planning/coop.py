@@ -17,7 +17,7 @@ picks it up there, and so on. This planner searches the joint state instead:
 - cost = end-effector moves + actions (pick/put), summed over arms; A* with an admissible transport
   bound (each block a leaf still needs at a place must be carried at least its grid distance there);
 - the plan returned is executed by `worlds.handover.execute_handover` and checked with
-  `HierarchicalSpec.check_trace` before it is returned.
+  `logic.trace.check_trace` before it is returned.
 
 A* is optimal for the macro model (arms act one at a time; a block is put only on a labelled region or
 a shared cell) when the transport bound is admissible, which holds when every positive `at/put/away`
@@ -38,6 +38,7 @@ from typing import Any
 from nl2hltl2plan.errors import PlanningError
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.planning.coop_progress import Event, Progress, PState, leaf_targets
+from nl2hltl2plan.planning.results import PlanResult, PlanStatus
 from nl2hltl2plan.worlds.handover import (
     ARMS,
     HandoverExecution,
@@ -472,50 +473,42 @@ def _finish(
     )
 
 
-# ----- entry point for the CLI's `plan` on a handover world -----------------------------------------
-@dataclass
-class WorldPlanResult:
-    """`coop_plan`'s result in the shape `cli plan` reads from `planning.plan` (status, plan, travel_m,
-    steps, total_cost, reason, to_dict)."""
-
-    coop: CoopResult
-
-    def __getattr__(self, name: str) -> Any:
-        return getattr(self.coop, name)
-
-    @property
-    def travel_m(self) -> float | None:
-        from nl2hltl2plan.worlds.model import CELL_M
-
-        return None if self.coop.travel is None else self.coop.travel * CELL_M
-
-    @property
-    def total_cost(self) -> int | None:
-        return self.coop.cost
-
-    def to_dict(self, with_plan: bool = True) -> dict[str, Any]:
-        out = self.coop.to_dict()
-        if not with_plan:
-            out.pop("plan", None)
-        return out
-
-
+# ----- entry point for the pipeline's planning stage on a handover world ------------------------------
 def plan_world(
     world: Any, spec: HierarchicalSpec | list | str, starts: Any = None, **options: Any
-) -> WorldPlanResult:
-    """Plan on a handover `worlds.World` (from `load_world("handover-square")`): blocks where the world
-    has them, end effectors at `starts` when four cells are given (else the world's). Options other
-    than timeout_s are ignored (the cooperative planner minimises moves + actions)."""
+) -> PlanResult:
+    """Plan on a handover `worlds.World` (from `load_world("handover-square")`) and answer in the main
+    planner's `PlanResult` shape: blocks where the world has them, end effectors at `starts` when four
+    cells are given (else the world's). Options other than timeout_s are ignored (the cooperative
+    planner minimises moves + actions). `execution` stays None: the handover simulator's run is in
+    `coop_plan`'s own result."""
     from nl2hltl2plan.worlds.handover import HandoverWorld, layout
+    from nl2hltl2plan.worlds.model import CELL_M
 
     if getattr(world, "kind", "") != "handover":
         raise PlanningError(f"{getattr(world, 'name', world)} is not a handover world")
     lay = layout(world.name.split("-", 1)[1])
     blocks = {o.type[:-5]: o.interaction_cells[0] for o in world.objects.values() if o.type.endswith("Block")}
-    arm_starts = (
-        tuple(tuple(c) for c in starts)
-        if starts is not None and len(starts) == len(ARMS)
-        else tuple(world.default_starts)
-    )
+    given = [tuple(c) for c in starts] if starts is not None else []
+    arm_starts = tuple(given) if len(given) == len(ARMS) else tuple(world.default_starts)
     hw = HandoverWorld(lay, blocks, arm_starts)  # type: ignore[arg-type]
-    return WorldPlanResult(coop_plan(hw, spec, timeout_s=float(options.get("timeout_s", DEFAULT_TIMEOUT_S))))
+    coop = coop_plan(hw, spec, timeout_s=float(options.get("timeout_s", DEFAULT_TIMEOUT_S)))
+    status = {"solved": PlanStatus.SOLVED, "infeasible": PlanStatus.INFEASIBLE}.get(
+        coop.status, PlanStatus.TIMEOUT
+    )
+    return PlanResult(
+        status=status,
+        reason=coop.reason,
+        objective="min",
+        mode="coop",
+        plan=coop.plan,
+        travel_m=None if coop.travel is None else coop.travel * CELL_M,
+        steps=coop.steps,
+        total_cost=coop.cost,
+        cost=None if coop.cost is None else float(coop.cost),
+        proven_optimal=coop.proven_optimal,
+        optimality="proven optimal" if coop.proven_optimal else "no bound proven",
+        model="cooperative macro model (planning/coop.py)",
+        plan_time_s=coop.plan_time_s,
+        expanded=coop.expanded,
+    )

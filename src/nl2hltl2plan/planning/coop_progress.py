@@ -1,7 +1,7 @@
 """Progress of a hierarchical sc-LTL spec under global letters, and the block targets its leaves name
 (for the cooperative planner, planning/coop.py).
 
-`Progress` follows the semantics of `HierarchicalSpec.check_trace`: a leaf's DFA reads every letter
+`Progress` follows the semantics of `logic.trace.check_trace`: a leaf's DFA reads every letter
 until the leaf first accepts (its completion event); a non-leaf in precedence form completes when
 all children have and no "a before b" pair was broken; other non-leaves step their DFA on the set
 of children completing at that step. Letters here are global (any arm may serve any leaf).

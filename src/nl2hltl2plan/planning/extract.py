@@ -6,9 +6,8 @@
   events, the best stand cells of one robot are a shortest path through its sequence of regions
   (a layered shortest-path problem, solved exactly with the distance matrix). The refined plan is
   kept when it is better for the objective (for `min` it never is worse).
-- `to_plan` writes per-robot timed steps (moves along shortest paths, gaps are waits), and
-  `verify` executes the plan in the simulator and judges its events with the spec's
-  `check_trace`. A plan failing either is a planner bug and is never returned.
+- `to_plan` writes per-robot timed steps (moves along shortest paths, gaps are waits); `plan()` then
+  validates it (`results.validate`).
 """
 
 from __future__ import annotations
@@ -16,18 +15,33 @@ from __future__ import annotations
 import numpy as np
 
 from nl2hltl2plan.errors import PlanningError
-from nl2hltl2plan.logic.hierarchical import TraceEvent
 from nl2hltl2plan.planning.model import Problem
+from nl2hltl2plan.planning.objective import Objective
 from nl2hltl2plan.planning.state import Event, Expander, Node
+from nl2hltl2plan.planning.support import SUPPORT, support_event
 from nl2hltl2plan.worlds.plan import Plan, RobotPlan, Step
-from nl2hltl2plan.worlds.simulator import Execution, execute
-
 
 
 def replay(x: Expander, events: list[Event], stands: list[int] | None = None) -> Node | None:
-    node = x.root()
+    """The goal node of `events` replayed from the root (`stands`: per event, a stand cell)."""
+    return replay_from(x, x.root(), events, stands)
+
+
+def replay_from(x: Expander, node: Node, events: list[Event], stands: list[int] | None = None,
+                keep_stands: bool = True) -> Node | None:
+    """Re-run events from `node` through the transition relation (None if one no longer applies);
+    stand cells from `stands`, else the events' own (`keep_stands`) or the nearest ones. Support
+    events are skipped: the actions they serve re-insert what the replayed state needs."""
     for i, e in enumerate(events):
-        stand = stands[i] if stands is not None else e.stand
+        stand = stands[i] if stands is not None else (e.stand if keep_stands and e.stand >= 0 else None)
+        if e.k == SUPPORT:
+            if stands is None and not keep_stands:
+                continue  # re-inserted, where still needed, by the action it serves
+            child = support_event(x, node, e.robot, e.leaf, e.verb, e.objs[0], stand)
+            if child is None:
+                return None
+            node = child
+            continue
         if e.k < 0:
             child = x.put_down(node, e.robot, e.objs[1], e.leaf, stand=stand)
         else:
@@ -40,8 +54,9 @@ def replay(x: Expander, events: list[Event], stands: list[int] | None = None) ->
     return node
 
 
-def refine_stand_cells(x: Expander, goal: Node, objective: str) -> Node:
-    """Per robot, the stand cells minimising its walk through its regions (kept if better)."""
+def refine_stand_cells(x: Expander, goal: Node, objective: Objective, force: bool = False) -> Node:
+    """Per robot, the stand cells minimising its walk through its regions (kept if better; with
+    `force`, always: the search with free stand cells left them to be chosen here)."""
     events = goal.events()
     nav = x.nav
     stands = [e.stand for e in events]
@@ -59,7 +74,7 @@ def refine_stand_cells(x: Expander, goal: Node, objective: str) -> Node:
             back.append(arg)
             cost = total[arg, np.arange(len(cur))]
         walked = sum(events[i].travel for i in idx)
-        if int(cost.min()) >= walked:
+        if int(cost.min()) >= walked and not force:
             continue
         k = int(cost.argmin())
         chosen = [0] * len(idx)
@@ -74,10 +89,12 @@ def refine_stand_cells(x: Expander, goal: Node, objective: str) -> Node:
         return goal
     better = replay(x, events, stands)
     if better is None or not x.is_goal(better):
+        if force:
+            raise PlanningError("internal error: the chosen stand cells do not replay")
         return goal
-    old = (goal.g,) if objective == "min" else (goal.ms, goal.g)
-    new = (better.g,) if objective == "min" else (better.ms, better.g)
-    return better if new < old else goal
+    if force:
+        return better
+    return better if objective.value(better) < objective.value(goal) else goal
 
 
 def to_plan(problem: Problem, x: Expander, events: list[Event]) -> Plan:
@@ -105,18 +122,3 @@ def to_plan(problem: Problem, x: Expander, events: list[Event]) -> Plan:
             steps.append(Step(t=e.t, verb=e.verb, objects=[ids[o] for o in e.objs], task=task))
         robots.append(RobotPlan(robot=r, start=start, steps=steps))
     return Plan(robots=robots)
-
-
-def verify(problem: Problem, plan: Plan) -> Execution:
-    """Execute the plan and check its attributed events against the spec; PlanningError if either
-    fails (that would be a planner bug: a plan is never returned unchecked)."""
-    execution = execute(problem.world, plan)
-    if not execution.ok:
-        raise PlanningError("internal error: the planned actions fail in the simulator: "
-                            + "; ".join(execution.violations[:3]))
-    trace = [TraceEvent(e.t, e.atom, e.task) for e in execution.events]
-    reasons = problem.spec.check_trace(trace).reasons
-    if reasons:
-        raise PlanningError("internal error: the plan does not satisfy the specification: "
-                            + "; ".join(reasons))
-    return execution

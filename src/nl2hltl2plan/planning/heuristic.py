@@ -201,7 +201,7 @@ class Heuristic:
             sub[b_idx < 0, :] = 0
             sub[:, a_idx < 0] = 0
         pred = np.minimum.reduceat(np.minimum.reduceat(sub, b_starts, axis=0), a_starts, axis=1)
-        robot = self.field[a_idx][:, list(node.cell)] if len(a_idx) else np.zeros((0, len(node.cell)))
+        robot = self._robot_walks(node, a_idx)
         robot = np.minimum.reduceat(robot, a_starts, axis=0).T  # robots x events
         cost = np.vstack([pred, robot]).T.astype(np.int64)  # events x (preds + robots)
         if empty:
@@ -243,6 +243,18 @@ class Heuristic:
         if total >= BIG:  # no valid assignment (cannot happen for a solvable node): fall back
             return 0
         return total
+
+    def _robot_walks(self, node: Node, a_idx: np.ndarray) -> np.ndarray:
+        """anchors x robots: the fewest steps from where each robot may stand to each anchor."""
+        if not len(a_idx):
+            return np.zeros((0, len(node.cell)), dtype=np.int64)
+        out = self.field[a_idx][:, list(node.cell)]
+        if node.reach is not None:
+            for r, reach in enumerate(node.reach):
+                if reach is not None:
+                    walks = self.field[a_idx][:, list(reach[0])] + np.array(reach[1])[None, :]
+                    out[:, r] = walks.min(axis=1)
+        return out
 
     def _chains(self, node: Node, rows: list[tuple], chain: dict[int, tuple[int, int]]) -> None:
         """Per leaf: (steps for the first robot to reach its next event, events + carry legs)."""

@@ -6,29 +6,34 @@ at a time and can leave a poor allocation (two robots swapping halves of their t
 repair that. Every candidate is evaluated by replaying the whole event list through the planner's
 transition relation (preconditions, bindings, orderings and the schedule are all re-checked, stand
 cells re-chosen), and kept only if the objective improves: first improvement, until no move helps
-or the time is up.
+or the budget of evaluated candidates (machine-independent, so the result is deterministic) is spent.
 """
 
 from __future__ import annotations
 
-import time
+from collections.abc import Callable
 
+from nl2hltl2plan.planning.extract import replay_from
+from nl2hltl2plan.planning.objective import Objective
 from nl2hltl2plan.planning.state import Event, Expander, Node
+from nl2hltl2plan.planning.support import SUPPORT
 
 
 def segments(x: Expander, events: list[Event]) -> list[list[int]]:
     """Indices of the events of each segment, in order of their first event."""
-    node = x.root()
+    node: Node | None = x.root()
     open_seg: dict[int, list[int]] = {}  # robot -> the segment it is in while holding something
     out: list[list[int]] = []
     for i, e in enumerate(events):
+        if e.k == SUPPORT:
+            continue  # re-inserted by the action it serves
         seg = open_seg.get(e.robot)
         if seg is not None and events[seg[0]].leaf == e.leaf and e.k >= 0:
             seg.append(i)
         else:
             seg = [i]
             out.append(seg)
-        node = replay_from(x, node, [e])
+        node = replay_from(x, node, [e], keep_stands=False) if node is not None else None
         if node is None:
             return []
         if node.sim.hand.get(e.robot, -1) >= 0 and e.k >= 0:
@@ -38,74 +43,66 @@ def segments(x: Expander, events: list[Event]) -> list[list[int]]:
     return out
 
 
-def replay_from(x: Expander, node: Node, events: list[Event]) -> Node | None:
-    for e in events:
-        if e.k < 0:
-            child = x.put_down(node, e.robot, e.objs[1], e.leaf, stand=e.stand)
-        else:
-            leaf = x.p.leaves[e.leaf]
-            q_next = next((q2 for k, q2 in leaf.moves.get(node.q[e.leaf], ()) if k == e.k), None)
-            child = None if q_next is None else x.apply(node, e.robot, leaf, e.k, e.objs, q_next)
-        if child is None:
-            return None
-        node = child
-    return node
-
-
-def _value(node: Node, objective: str) -> tuple[int, ...]:
-    return (node.g,) if objective == "min" else (node.ms, node.g)
-
-
-def improve(x: Expander, goal: Node, objective: str, deadline: float) -> tuple[Node, int]:
-    """A goal node at least as good as `goal` (and the number of improving moves made)."""
+def improve(x: Expander, goal: Node, objective: Objective, max_evals: int,
+            check_time: Callable[[], None]) -> Node:
+    """A goal node at least as good as `goal`, after at most `max_evals` candidate replays
+    (`check_time` raises when the wall-clock last resort runs out)."""
     best = goal
-    best_val = _value(goal, objective)
-    moves = 0
-    robots = range(x.p.n_robots)
+    best_val = objective.value(goal)
+    evals = 0
     improved = True
-    while improved and time.perf_counter() < deadline:
+    while improved and evals < max_evals:
         improved = False
         events = best.events()
         path = _path(best)  # path[i]: the node after the first i events
         segs = segments(x, events)
         for seg in segs:
-            if time.perf_counter() > deadline:
+            if evals >= max_evals:
                 break
             if any(events[i].k < 0 for i in seg):
                 continue
-            owner = events[seg[0]].robot
-            first = seg[0]
-            candidates: list[tuple[int, list[Event]]] = []  # (first changed index, events)
-            for r in robots:  # the same events, done by another robot
-                if r != owner:
-                    moved = list(events)
-                    for i in seg:
-                        e = moved[i]
-                        moved[i] = Event(r, e.leaf, e.atom, e.verb, e.objs, -1, 0, 0, e.k, e.anchor)
-                    candidates.append((first, moved))
-            inside = set(seg)
-            rest = [e for i, e in enumerate(events) if i not in inside]
-            block = [events[i] for i in seg]
-            # the segment earlier or later in the order: before another segment, nearest first
-            starts = sorted({len(rest)} | {sum(1 for i in range(s2[0]) if i not in inside)
-                                           for s2 in segs if s2 is not seg}, key=lambda p: abs(p - first))
-            for pos in starts:
-                if pos != first:
-                    candidates.append((min(pos, first), rest[:pos] + block + rest[pos:]))
-            for start, cand in candidates:
-                end = replay_from(x, path[start], cand[start:])
+            for start, cand in _candidates(x, events, segs, seg):
+                if evals >= max_evals:
+                    break
+                check_time()
+                evals += 1
+                end = replay_from(x, path[start], cand[start:], keep_stands=False)
                 if end is None or not x.is_goal(end):
                     continue
-                val = _value(end, objective)
+                val = objective.value(end)
                 if val < best_val:
                     best, best_val = end, val
-                    moves += 1
                     improved = True
                     break
             if improved:
                 break
-    return best, moves
+    return best
 
+
+def _candidates(x: Expander, events: list[Event], segs: list[list[int]],
+                seg: list[int]) -> list[tuple[int, list[Event]]]:
+    """(first changed index, events) for the segment given to each other robot, then moved to
+    each other place in the order (nearest first)."""
+    owner = events[seg[0]].robot
+    first = seg[0]
+    candidates: list[tuple[int, list[Event]]] = []  # (first changed index, events)
+    for r in range(x.p.n_robots):  # the same events, done by another robot
+        if r != owner:
+            moved = list(events)
+            for i in seg:
+                e = moved[i]
+                moved[i] = Event(r, e.leaf, e.atom, e.verb, e.objs, -1, 0, 0, e.k, e.anchor)
+            candidates.append((first, moved))
+    inside = set(seg)
+    rest = [e for i, e in enumerate(events) if i not in inside]
+    block = [events[i] for i in seg]
+    # the segment earlier or later in the order: before another segment, nearest first
+    starts = sorted({len(rest)} | {sum(1 for i in range(s2[0]) if i not in inside)
+                                   for s2 in segs if s2 is not seg}, key=lambda p: (abs(p - first), p))
+    for pos in starts:
+        if pos != first:
+            candidates.append((min(pos, first), rest[:pos] + block + rest[pos:]))
+    return candidates
 
 
 def _path(goal: Node) -> list[Node]:

@@ -211,22 +211,22 @@ def build_problem(
     starts_t = tuple((int(c[0]), int(c[1])) for c in starts)
     if not starts_t:
         raise PlanningError("at least one robot is needed")
-    for r, c in enumerate(starts_t):
-        if c not in world.cell_set:
-            raise PlanningError(f"robot {r} starts at {c}, which is not a free cell of {world.name}")
+    for r, cell in enumerate(starts_t):
+        if cell not in world.cell_set:
+            raise PlanningError(f"robot {r} starts at {cell}, which is not a free cell of {world.name}")
     caps: list[frozenset[str] | None] = []
     for r in range(len(starts_t)):
         entry = capabilities[r] if capabilities is not None and r < len(capabilities) else None
         if entry is None:
             caps.append(None)
             continue
-        entry = frozenset(entry)
-        for c in entry:
-            if c not in ACTION_ARITY and parse_atom(c) is None:
-                raise PlanningError(f"robot {r}: capability {c!r} is neither a verb "
+        allowed = frozenset(entry)
+        for cap in allowed:
+            if cap not in ACTION_ARITY and parse_atom(cap) is None:
+                raise PlanningError(f"robot {r}: capability {cap!r} is neither a verb "
                                     f"({', '.join(ACTION_ARITY)}) "
                                     "nor an action atom like pickup(Apple)")
-        caps.append(entry)
+        caps.append(allowed)
 
     names = spec.names
     leaves: list[Leaf] = []
@@ -537,7 +537,7 @@ def _atom_problem(problem: Problem, atom: Atom, reachable) -> str | None:
     if verb == "slice" and not first.sliceable:
         return f"{atom.text}: a {types[0]} cannot be sliced"
     if not any(problem.can_do(r, atom) for r in range(problem.n_robots)):
-        return f"{atom.text}: no robot has the capability to do it"
+        return f"no robot in the team can {atom.text}"
     return None
 
 

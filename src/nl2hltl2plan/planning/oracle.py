@@ -66,7 +66,7 @@ def plain_recipe(task: BaseTask) -> list[list[str] | str]:
     """The recipe of a task on its first listed types, without looking at a world."""
     o = task.object[0]
     held = sliced_type(o) if task.sliced else o
-    r = (task.receptacle or [None])[0]
+    r: str | None = task.receptacle[0] if task.receptacle else None
     seq: list[str] = []
     if task.sliced:
         seq += ["pickup(Knife)", f"slice({o})", "put(Knife,CounterTop)"]
@@ -84,10 +84,10 @@ def plain_recipe(task: BaseTask) -> list[list[str] | str]:
         if kind == "clean_place":
             seq += [f"put({held},SinkBasin)", "toggle_on(Faucet)", "toggle_off(Faucet)"]
         elif kind == "heat_place":
-            seq += ["open(Microwave)", f"put({held},Microwave)", "close(Microwave)",
-                    "toggle_on(Microwave)", "toggle_off(Microwave)", "open(Microwave)"]
+            seq += [f"put({held},Microwave)", "close(Microwave)", "toggle_on(Microwave)",
+                    "toggle_off(Microwave)"]
         else:
-            seq += ["open(Fridge)", f"put({held},Fridge)"]
+            seq += [f"put({held},Fridge)"]
         if r not in (None, app):
             seq += [f"pickup({held})", f"put({held},{r})"]
     seq = [a for a in seq if "None" not in a]

@@ -21,33 +21,32 @@ import time
 from dataclasses import dataclass
 
 from nl2hltl2plan.planning.heuristic import Heuristic
+from nl2hltl2plan.planning.objective import DuplicateTable, Objective
 from nl2hltl2plan.planning.state import Expander, Node
 
-MS_WEIGHT = 1 << 20  # minmax: makespan first, summed cost breaks ties (lexicographic order)
+NODE_BYTES = 4000  # rough memory of one stored search node (SimState copy, tuples), for reporting
 
 
 class Deadline(Exception):
-    """The time limit ran out."""
+    """The wall-clock limit ran out (a last resort: budgets are counted in expansions)."""
 
 
 @dataclass
 class SearchStats:
     expanded: int = 0
     generated: int = 0
-    seed_cost: float | None = None
-    seed_time_s: float | None = None
-    lns_moves: int = 0  # improving local-search moves on the seed
+    peak_nodes: int = 0  # most nodes held at once by an A* (open list + duplicate table)
     lower_bound: float = 0.0  # proven lower bound on the optimal cost (objective units)
     proven_optimal: bool = False
     exhausted: bool = False
-    stopped: str = ""  # why the search stopped: "bound", "exhausted", "budget", "timeout"
+    stopped: str = ""  # why the search stopped: "bound", "exhausted", "budget", "memory", "timeout"
 
 
 class Searcher:
-    def __init__(self, expander: Expander, heuristic: Heuristic, objective: str, deadline: float):
+    def __init__(self, expander: Expander, heuristic: Heuristic, objective: Objective, deadline: float):
         self.x = expander
         self.h = heuristic
-        self.objective = objective
+        self.obj = objective
         self.deadline = deadline
         self.stats = SearchStats()
 
@@ -60,41 +59,24 @@ class Searcher:
         h_sum, ms_lb = self.h.evaluate(node)
         node.h = h_sum
         node.ms_lb = ms_lb
-        node.f = self.admissible(node)
-
-    def admissible(self, node: Node) -> int:
-        if self.objective == "min":
-            return node.g + node.h
-        return MS_WEIGHT * node.ms_lb + node.g + node.h
-
-    def weighted(self, node: Node, w: float) -> float:
-        if self.objective == "min":
-            return node.g + w * node.h
-        return MS_WEIGHT * (node.ms + w * (node.ms_lb - node.ms)) + node.g + w * node.h
+        node.f = self.obj.admissible(node)
 
     def cost(self, node: Node) -> int:
-        return node.g if self.objective == "min" else MS_WEIGHT * node.ms + node.g
+        return self.obj.cost(node)
 
-    def key(self, node: Node) -> tuple:
-        memo = node._memo
+    def key(self, node: Node) -> tuple[object, ...]:
+        memo = node.memo
         if memo is not None:
-            return memo  # type: ignore[return-value]
+            return memo
         sim = node.sim
-        robots = sorted(zip(node.cell, (sim.hand.get(r, -1) for r in range(len(node.cell))),
-                            self.x.cap_class, strict=True))
+        hands = [sim.hand.get(r, -1) for r in range(len(node.cell))]
+        reach = node.reach if node.reach is not None else (None,) * len(node.cell)
+        # robots sorted: interchangeable robots in the same situation are one state; with free stand
+        # cells, where a robot may stand (and at what extra cost) is part of its situation
+        robots = sorted(zip(node.cell, hands, self.x.cap_class, (r or ((), ()) for r in reach), strict=True))
         k = (tuple(sim.parent), tuple(sim.flags), tuple(sim.moved), tuple(robots), node.q, node.bind, node.nq)
-        node._memo = k  # type: ignore[assignment]
+        node.memo = k
         return k
-
-    def times(self, node: Node) -> tuple:
-        """What makes one node's future schedule no worse than another's (minmax dominance)."""
-        hand = node.sim.hand
-        order = sorted(range(len(node.cell)),
-                       key=lambda r: (node.cell[r], hand.get(r, -1), self.x.cap_class[r], node.clock[r]))
-        obj_t = node.obj_t
-        touched = tuple(obj_t.get(i, 0) for i in range(self.x.n_objects))
-        clocks = tuple(node.clock[r] for r in order)
-        return (clocks, node.leaf_t, node.done_t, node.last_done, node.ms, touched)
 
     # ------------------------------------------------------------ seed
     def beam(self, root: Node, width: int, limit: int) -> Node | None:
@@ -142,57 +124,49 @@ class Searcher:
         while node is not None and node is not parent:
             walked += node.event.travel if node.event is not None else 0
             node = node.parent
-        if self.objective == "min":
-            return parent.f + walked
-        return parent.f + MS_WEIGHT * max(0, child.ms - parent.ms_lb) + walked
+        return self.obj.estimate(parent, child, walked)
 
     # ------------------------------------------------------------ AWA*
     def awa(self, root: Node, incumbent: Node | None, w_order: float, w_stop: float,
-            max_expansions: int | None = None, stop_at: float | None = None) -> Node | None:
+            max_expansions: int | None = None, max_nodes: int | None = None) -> Node | None:
         """Anytime weighted A* with deferred evaluation: a child enters the open list with its
-        parent's bound (valid for it too) and gets its own heuristic when it is first popped."""
-        stats = self.stats
+        parent's bound (valid for it too) and gets its own heuristic when it is first popped.
+        Stops when the incumbent is proven within w_stop, the open list is empty, `max_expansions`
+        are spent or more than `max_nodes` are held (with an incumbent), or at the deadline."""
+        stats, obj = self.stats, self.obj
         best = incumbent
-        ub = self.cost(best) if best is not None else float("inf")
+        ub: float = self.cost(best) if best is not None else float("inf")
         counter = itertools.count()
         if root.h is None:
             self.score(root)
-        open_heap: list = [(self.weighted(root, w_order), -root.g, next(counter), root)]
-        lb_heap: list = [(root.f, next(counter), root)]
-        table: dict = {}
-        self._record(table, root)
+        open_heap: list[tuple[float, int, int, Node]] = [(obj.weighted(root, w_order), -root.g, 0, root)]
+        lb_heap: list[tuple[int, int, Node]] = [(root.f, next(counter), root)]
+        table = obj.table(self.x.cap_class, self.x.n_objects)
+        table.record(self.key(root), root)
         expansions = 0
         stop = "exhausted"
         while open_heap:
             self.check_time()
-            lb = self._lower_bound(lb_heap)
+            lb = _lower_bound(lb_heap)
             if lb is not None:
-                stats.lower_bound = max(stats.lower_bound, self._unit(min(lb, ub)))
-                if best is not None and self._proven(ub, lb, w_stop):
+                stats.lower_bound = max(stats.lower_bound, obj.unit(min(lb, ub)))
+                if best is not None and obj.proven(ub, lb, w_stop):
                     stop = "bound"
                     break
+            held = len(open_heap) + len(table)
+            stats.peak_nodes = max(stats.peak_nodes, held)
             if best is not None and max_expansions is not None and expansions >= max_expansions:
                 stop = "budget"
                 break
-            if best is not None and stop_at is not None and time.perf_counter() > stop_at:
-                stop = "budget"
+            if best is not None and max_nodes is not None and held > max_nodes:
+                stop = "memory"
                 break
-            key, _, _, node = heapq.heappop(open_heap)
-            if node.closed or self._stale(table, node):
+            node = heapq.heappop(open_heap)[3]
+            if node.closed or table.stale(self.key(node), node):
                 node.closed = True
                 continue
-            if node.h is None:  # deferred evaluation
-                estimate = node.f
-                self.score(node)
-                node.f = max(node.f, estimate)  # both bound the optimum below
-                if node.f >= ub:
-                    node.closed = True
-                    continue
-                heapq.heappush(lb_heap, (node.f, next(counter), node))
-                new_key = self.weighted(node, w_order)
-                if open_heap and new_key > open_heap[0][0]:
-                    heapq.heappush(open_heap, (new_key, -node.g, next(counter), node))
-                    continue
+            if node.h is None and self._defer(node, ub, open_heap, lb_heap, w_order, counter):
+                continue
             node.closed = True
             if node.f >= ub:
                 continue
@@ -201,85 +175,48 @@ class Searcher:
             for child in self.x.successors(node):
                 stats.generated += 1
                 if self.x.is_goal(child):
-                    c = self.cost(child)
-                    if c < ub:
-                        ub, best = c, child
+                    if self.cost(child) < ub:
+                        ub, best = self.cost(child), child
                     continue
-                child.h = None
                 child.ms_lb = max(node.ms_lb, child.ms)
-                child.f = max(node.f, self._floor(child))
-                if child.f >= ub or not self._record(table, child):
+                child.f = max(node.f, obj.floor(child))
+                if child.f >= ub or not table.record(self.key(child), child):
                     continue
-                key = child.f if w_order == 1.0 else self._weighted_guess(node, child, w_order)
+                key = child.f if w_order == 1.0 else obj.weighted_guess(node, child, w_order)
                 heapq.heappush(open_heap, (key, -child.g, next(counter), child))
                 heapq.heappush(lb_heap, (child.f, next(counter), child))
-        if stop == "exhausted" and not open_heap:
+        if stop == "exhausted":
             stats.exhausted = True
             if best is not None:
-                stats.lower_bound = self._unit(ub)
+                stats.lower_bound = obj.unit(ub)
         stats.stopped = stop
-        stats.proven_optimal = best is not None and (stats.exhausted or stats.lower_bound >= self._unit(ub))
+        stats.proven_optimal = best is not None and (stats.exhausted or stats.lower_bound >= obj.unit(ub))
         return best
 
-    def _floor(self, node: Node) -> int:
-        """A cheap admissible f: cost so far (the parent's bound covers the rest)."""
-        if self.objective == "min":
-            return node.g
-        return MS_WEIGHT * node.ms + node.g
-
-    def _weighted_guess(self, parent: Node, child: Node, w: float) -> float:
-        h_guess = max(0, parent.h - (child.g - parent.g))
-        if self.objective == "min":
-            return child.g + w * h_guess
-        return MS_WEIGHT * max(child.ms, parent.ms_lb) + child.g + w * h_guess
-
-    def _lower_bound(self, lb_heap: list) -> int | None:
-        while lb_heap and (lb_heap[0][2].closed or lb_heap[0][0] < lb_heap[0][2].f):
-            # closed nodes no longer bound the optimum (their children are in the open list), and
-            # an entry below its node's f is an old estimate of a node pushed again
-            heapq.heappop(lb_heap)
-        return lb_heap[0][0] if lb_heap else None
-
-    def _unit(self, value: float) -> float:
-        """Objective units: summed cost for min, completion time for minmax."""
-        return float(value) if self.objective == "min" else float(int(value) // MS_WEIGHT)
-
-    def _proven(self, ub: float, lb: float, w: float) -> bool:
-        if self.objective == "min":
-            return ub <= w * lb
-        if w <= 1.0:
-            return ub <= lb
-        return self._unit(ub) <= w * self._unit(lb)
-
-    def _record(self, table: dict, node: Node) -> bool:
-        """Keep the node unless a recorded node with the same state is at least as good."""
-        k = self.key(node)
-        entries = table.get(k)
-        if self.objective == "min":
-            if entries is not None and entries <= node.g:
-                return False
-            table[k] = node.g
+    def _defer(self, node: Node, ub: float, open_heap: list[tuple[float, int, int, Node]],
+               lb_heap: list[tuple[int, int, Node]], w_order: float, counter: itertools.count[int]) -> bool:
+        """Deferred evaluation of a popped node: score it; True when it is pruned or goes back to
+        the open list (a worse key than the next node's)."""
+        estimate = node.f
+        self.score(node)
+        node.f = max(node.f, estimate)  # both bound the optimum below
+        if node.f >= ub:
+            node.closed = True
             return True
-        tv = self.times(node)
-        if entries is None:
-            table[k] = [(node.g, tv)]
+        heapq.heappush(lb_heap, (node.f, next(counter), node))
+        new_key = self.obj.weighted(node, w_order)
+        if open_heap and new_key > open_heap[0][0]:
+            heapq.heappush(open_heap, (new_key, -node.g, next(counter), node))
             return True
-        for g, other in entries:
-            if g <= node.g and _leq(other, tv):
-                return False
-        entries[:] = [(g, o) for g, o in entries if not (node.g <= g and _leq(tv, o))]
-        entries.append((node.g, tv))
-        return True
-
-    def _stale(self, table: dict, node: Node) -> bool:
-        if self.objective != "min":
-            return False
-        best = table.get(self.key(node))
-        return best is not None and best < node.g
+        return False
 
 
-def _leq(a, b) -> bool:
-    """Elementwise a <= b over nested tuples of ints."""
-    if isinstance(a, tuple):
-        return all(_leq(x, y) for x, y in zip(a, b, strict=True))
-    return a <= b
+def _lower_bound(lb_heap: list[tuple[int, int, Node]]) -> int | None:
+    while lb_heap and (lb_heap[0][2].closed or lb_heap[0][0] < lb_heap[0][2].f):
+        # closed nodes no longer bound the optimum (their children are in the open list), and
+        # an entry below its node's f is an old estimate of a node pushed again
+        heapq.heappop(lb_heap)
+    return lb_heap[0][0] if lb_heap else None
+
+
+__all__ = ["Deadline", "DuplicateTable", "SearchStats", "Searcher"]

@@ -23,8 +23,11 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+import numpy as np
+
 from nl2hltl2plan.planning.model import DONE, Atom, Leaf, Problem
 from nl2hltl2plan.planning.navigation import INF, Navigator
+from nl2hltl2plan.planning.support import blockers, support_event
 from nl2hltl2plan.worlds.simulator import PRESENT, SimState
 
 
@@ -42,20 +45,37 @@ class Event:
     anchor: int  # object whose interaction region the robot stands in
 
 
+Binding = tuple[tuple[str, int], ...]  # a leaf's (type, object index) pairs, sorted
+Reach = tuple[tuple[int, ...], tuple[int, ...]]  # cells a robot may stand on, extra cost of each (min 0)
+
+
+@dataclass(slots=True, eq=False)
 class Node:
     """A search state; children share nothing mutable with their parent."""
 
-    __slots__ = (
-        "sim", "cell", "clock", "q", "bind", "claimed", "nq", "done_t", "leaf_t", "obj_t",
-        "last_done", "g", "ms", "parent", "event", "h", "ms_lb", "f", "closed", "_memo",
-    )
-
-    def __init__(self) -> None:
-        self.closed = False
-        self._memo: tuple | None = None
-        self.h: int | None = None
-        self.ms_lb = 0
-        self.f = 0
+    sim: SimState  # the executor's state: objects, robot cells, hands
+    cell: tuple[int, ...]  # per robot, its cell index
+    clock: tuple[int, ...]  # per robot, the step of its last action
+    q: tuple[int, ...]  # per leaf, its progress (trie node) or DONE
+    bind: tuple[Binding, ...]  # per leaf, its type bindings
+    claimed: frozenset[int]  # objects some leaf took for itself
+    nq: tuple[int, ...]  # per non-leaf, its DFA state or DONE
+    done_t: tuple[int, ...]  # per spec node (leaves, then non-leaves), completion step or -1
+    leaf_t: tuple[int, ...]  # per leaf, the step of its last event (0: not started)
+    obj_t: dict[int, int]  # object -> the last step it was touched
+    last_done: int  # the latest completion step
+    g: int  # moves + actions so far
+    ms: int  # makespan so far
+    parent: Node | None = None
+    event: Event | None = None
+    h: int | None = None  # heuristic (summed cost); None until evaluated
+    ms_lb: int = 0  # lower bound on the final makespan
+    f: int = 0  # admissible bound on the objective (objective units of the search)
+    closed: bool = False
+    memo: tuple[object, ...] | None = None  # the duplicate-detection key, once computed
+    # free stand cells (exact summed cost): per robot, every cell of its last region with the extra
+    # walking it costs to have stood there (`cell` holds the cheapest); None: nearest-cell model
+    reach: tuple[Reach | None, ...] | None = None
 
     def events(self) -> list[Event]:
         out = []
@@ -79,6 +99,18 @@ def _subtree(sim: SimState, root: int) -> list[int]:
             out.extend(i for i, q in enumerate(parent) if q == p)
         k += 1
     return out
+
+
+def put(values: tuple[int, ...], i: int, value: int) -> tuple[int, ...]:
+    out = list(values)
+    out[i] = value
+    return tuple(out)
+
+
+def _put_reach(values: tuple[Reach | None, ...], i: int, value: Reach | None) -> tuple[Reach | None, ...]:
+    out = list(values)
+    out[i] = value
+    return tuple(out)
 
 
 def bound(node: Node, leaf: int, type_: str) -> int:
@@ -116,30 +148,22 @@ class Expander:
         self.cap_class = [classes.index(c) for c in problem.capabilities]
         self.gate_slots = {i: tuple(self.slot[g] for g in gates) for i, gates in problem.gates.items()}
         self.only: set[int] | None = None  # restrict successors to these robots (single-robot seeds)
+        self.missing_support: set[str] = set()  # support actions (open/close) no robot may do
+        self.free_stands = False  # exact summed cost: stand cells are part of the search (`walk`)
 
     # ------------------------------------------------------------ root
     def root(self) -> Node:
         p = self.p
-        n = Node()
-        n.sim = self.sim0.copy()
-        n.cell = tuple(self.nav.cell_index[c] for c in p.starts)
-        n.clock = (0,) * p.n_robots
-        n.q = tuple(lf.init for lf in p.leaves)
-        n.bind = tuple(() for _ in p.leaves)
-        n.claimed = frozenset()
-        n.nq = tuple(nl.init for nl in p.nonleaves)
         done = [-1] * len(p.node_names)
         for lf in p.leaves:
             if lf.init == DONE:
                 done[self.slot[lf.name]] = 0
-        n.done_t = tuple(done)
-        n.leaf_t = (0,) * len(p.leaves)
-        n.obj_t = {}
-        n.last_done = 0
-        n.g = 0
-        n.ms = 0
-        n.parent = None
-        n.event = None
+        n = Node(
+            sim=self.sim0.copy(), cell=tuple(self.nav.cell_index[c] for c in p.starts),
+            clock=(0,) * p.n_robots, q=tuple(lf.init for lf in p.leaves), bind=tuple(() for _ in p.leaves),
+            claimed=frozenset(), nq=tuple(nl.init for nl in p.nonleaves), done_t=tuple(done),
+            leaf_t=(0,) * len(p.leaves), obj_t={}, last_done=0, g=0, ms=0,
+        )
         # leaves satisfied from the start complete their ancestors at step 0
         for lf in p.leaves:
             if lf.init == DONE:
@@ -168,8 +192,8 @@ class Expander:
             q = node.nq[nl.index]
             if q == DONE:
                 return False  # the parent is already satisfied: this task is not needed
-            done = frozenset(c for c in nl.children if node.done_t[self.slot[c]] >= 0)
-            q2 = p.step_parent(nl.index, q, name, done)
+            finished = frozenset(c for c in nl.children if node.done_t[self.slot[c]] >= 0)
+            q2 = p.step_parent(nl.index, q, name, finished)
             if q2 is None:
                 return False
             if q2 != DONE:
@@ -316,17 +340,27 @@ class Expander:
             return None
         if verb == "slice" and hand < 0:
             return None
+        if node.leaf_t[leaf.index] == 0 and not self.enabled(node, leaf):
+            return None  # replays (local search) rely on this; successors() filters it already
+        needs = blockers(sim, verb, objs)
+        if needs:  # open what is in the way first (support actions), then act
+            cur: Node | None = node
+            for s_verb, s_obj in needs:
+                cur = support_event(self, cur, robot, leaf.index, s_verb, s_obj) if cur is not None else None
+            return None if cur is None else self.apply(cur, robot, leaf, atom_k, objs, q_next, stand)
         anchor = self.nav.anchor(sim, objs[-1])
-        if anchor < 0:
-            return None
-        stand, d = self._stand(node.cell[robot], anchor, stand)
-        if d >= INF:
+        if anchor < 0 or not len(self.nav.region_idx[anchor]):
             return None
         touched = self.touched(sim, verb, objs, robot)
         child_sim = sim.copy()
-        child_sim.pos[robot] = self.nav.cells[stand]
+        # the action's preconditions first (from some cell of the region), the walk only if it can
+        child_sim.pos[robot] = self.nav.cells[int(self.nav.region_idx[anchor][0])]
         if child_sim.act(robot, verb, list(objs)) is not None:
             return None
+        stand, d, reach = self.walk(node, robot, anchor, stand)
+        if d >= INF:
+            return None
+        child_sim.pos[robot] = self.nav.cells[stand]
         li = leaf.index
         ready = node.leaf_t[li]
         obj_t = node.obj_t
@@ -334,10 +368,7 @@ class Expander:
             tx = obj_t.get(x, 0)
             if tx > ready:
                 ready = tx
-        first = node.leaf_t[li] == 0
-        if first and not self.enabled(node, leaf):
-            return None  # replays (local search) rely on this; successors() filters it already
-        if first:
+        if node.leaf_t[li] == 0:
             if self.p.precedence:
                 for s in self.gate_slots[li]:
                     if node.done_t[s] > ready:
@@ -357,17 +388,8 @@ class Expander:
             done_l[self.leaf_slot[li]] = t
             nq, done = tuple(nq_l), tuple(done_l)
             last_done = max(last_done, t)
-        child = Node()
-        child.sim = child_sim
-        cell = list(node.cell)
-        cell[robot] = stand
-        child.cell = tuple(cell)
-        clock = list(node.clock)
-        clock[robot] = t
-        child.clock = tuple(clock)
         q = list(node.q)
         q[li] = q_next
-        child.q = tuple(q)
         bind = node.bind[li]
         claimed = node.claimed
         for pos, type_ in enumerate(atom.types):
@@ -375,33 +397,50 @@ class Expander:
                 bind = tuple(sorted(bind + ((type_, objs[pos]),)))
                 if type_ in leaf.taken:
                     claimed = claimed | {objs[pos]}
+        binds = node.bind
         if bind is not node.bind[li]:
-            binds = list(node.bind)
-            binds[li] = bind
-            child.bind = tuple(binds)
-        else:
-            child.bind = node.bind
-        child.claimed = claimed
-        child.nq = nq
-        child.done_t = done
+            binds_l = list(node.bind)
+            binds_l[li] = bind
+            binds = tuple(binds_l)
         leaf_t = list(node.leaf_t)
         leaf_t[li] = t
-        child.leaf_t = tuple(leaf_t)
         new_obj_t = dict(obj_t)
         for x in touched:
             new_obj_t[x] = t
-        child.obj_t = new_obj_t
-        child.last_done = last_done
-        child.g = node.g + d + 1
-        child.ms = max(node.ms, t)
-        child.parent = node
-        child.event = Event(robot, li, atom.text, verb, objs, stand, d, t, atom_k, anchor)
-        return child
+        return Node(
+            sim=child_sim, cell=put(node.cell, robot, stand), clock=put(node.clock, robot, t), q=tuple(q),
+            bind=binds, claimed=claimed, nq=nq, done_t=done, leaf_t=tuple(leaf_t), obj_t=new_obj_t,
+            last_done=last_done, g=node.g + d + 1, ms=max(node.ms, t), parent=node,
+            event=Event(robot, li, atom.text, verb, objs, stand, d, t, atom_k, anchor), reach=reach,
+        )
 
-    def _stand(self, cell: int, anchor: int, stand: int | None) -> tuple[int, int]:
-        if stand is None:
-            return self.nav.nearest(cell, anchor)
-        return stand, int(self.nav.dm[cell, stand])
+    def walk(self, node: Node, robot: int, anchor: int,
+             stand: int | None = None) -> tuple[int, int, tuple[Reach | None, ...] | None]:
+        """(stand cell, steps, the child's reach) for `robot` to act in the anchor's region: the
+        nearest cell (or `stand`); with free stand cells, every region cell stays open and `steps` is
+        the least extra walking (a layered shortest path, resolved when the plan is written)."""
+        cell = node.cell[robot]
+        if not self.free_stands or stand is not None:
+            if stand is None:
+                stand, d = self.nav.nearest(cell, anchor)
+            else:
+                d = int(self.nav.dm[cell, stand])
+            reach = None if node.reach is None else _put_reach(node.reach, robot, None)
+            return stand, d, reach
+        old = node.reach[robot] if node.reach is not None else None
+        cells, offsets = old if old is not None else ((cell,), (0,))
+        region = self.nav.region_idx[anchor]
+        if not len(region):
+            return -1, INF, None
+        arrive = (self.nav.dm[np.ix_(np.array(cells), region)] + np.array(offsets)[:, None]).min(axis=0)
+        k = int(arrive.argmin())
+        d = int(arrive[k])
+        if d >= INF:
+            return -1, INF, None
+        ok = arrive < INF
+        new: Reach = (tuple(region[ok].tolist()), tuple((arrive[ok] - d).tolist()))
+        base = node.reach if node.reach is not None else (None,) * len(node.cell)
+        return int(region[k]), d, _put_reach(base, robot, new)
 
     def put_down(self, node: Node, robot: int, surface: int, leaf: int,
                  stand: int | None = None) -> Node | None:
@@ -414,7 +453,7 @@ class Expander:
             return None
         if leaf >= 0 and node.q[leaf] != DONE:
             return None  # held until its task is done (examine: until the lamp is on)
-        stand, d = self._stand(node.cell[robot], anchor, stand)
+        stand, d, reach = self.walk(node, robot, anchor, stand)
         if d >= INF:
             return None
         objs = (obj, surface)
@@ -427,26 +466,16 @@ class Expander:
         if leaf >= 0:
             ready = max(ready, node.leaf_t[leaf])  # held until its task is done (examine: lamp on)
         t = max(node.clock[robot] + d, ready) + 1
-        child = Node()
-        for name in ("q", "bind", "claimed", "nq", "done_t", "leaf_t", "last_done"):
-            setattr(child, name, getattr(node, name))
-        child.sim = child_sim
-        cell = list(node.cell)
-        cell[robot] = stand
-        child.cell = tuple(cell)
-        clock = list(node.clock)
-        clock[robot] = t
-        child.clock = tuple(clock)
         obj_t = dict(node.obj_t)
         for x in touched:
             obj_t[x] = t
-        child.obj_t = obj_t
-        child.g = node.g + d + 1
-        child.ms = max(node.ms, t)
-        child.parent = node
         atom = f"put({self.types[obj]},{self.types[surface]})"
-        child.event = Event(robot, leaf, atom, "put", objs, stand, d, t, -1, anchor)
-        return child
+        return Node(
+            sim=child_sim, cell=put(node.cell, robot, stand), clock=put(node.clock, robot, t), q=node.q,
+            bind=node.bind, claimed=node.claimed, nq=node.nq, done_t=node.done_t, leaf_t=node.leaf_t,
+            obj_t=obj_t, last_done=node.last_done, g=node.g + d + 1, ms=max(node.ms, t), parent=node,
+            event=Event(robot, leaf, atom, "put", objs, stand, d, t, -1, anchor), reach=reach,
+        )
 
     def surfaces_for(self, obj: int) -> list[int]:
         type_ = self.types[obj]
@@ -478,7 +507,8 @@ class Expander:
             if self.only is not None and r not in self.only:
                 continue
             hand = sim.hand.get(r, -1)
-            sym = (node.cell[r], hand, self.cap_class[r], node.clock[r])
+            sym = (node.cell[r], hand, self.cap_class[r], node.clock[r],
+                   node.reach[r] if node.reach is not None else None)
             if hand < 0 and sym in seen_robot:
                 continue  # robots in identical situations are interchangeable
             seen_robot.add(sym)

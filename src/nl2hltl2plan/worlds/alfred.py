@@ -40,7 +40,7 @@ import numpy as np
 from nl2hltl2plan.config import data_path
 from nl2hltl2plan.errors import DataError, WorldError
 from nl2hltl2plan.worlds.affordances import AffordanceTable, alfred_affordances
-from nl2hltl2plan.worlds.model import Cell, World, WorldObject, add_slices
+from nl2hltl2plan.worlds.model import World, WorldObject, add_slices
 from nl2hltl2plan.worlds.tasks import GTInstance
 
 SAME_OBJECT_M = 0.1
@@ -405,17 +405,3 @@ def benchmark_issues(world: World, gt: GTInstance | dict) -> list[str]:
     """What the world cannot provide for the instance's tasks, in the GT `issues` style."""
     inst = gt if isinstance(gt, GTInstance) else GTInstance.model_validate(gt)
     return [issue for task in inst.tasks for issue in task.missing(world)]
-
-
-def start_cells(world: World, gt: GTInstance | dict, n_robots: int, draw: int = 0) -> list[Cell]:
-    """Robot start cells: the instance's `init_pos` draw (x, z metres; drawn on AI2-THOR 5's reachable
-    positions) snapped to the nearest free cell of the largest connected component of the grid."""
-    inst = gt if isinstance(gt, GTInstance) else GTInstance.model_validate(gt)
-    if not inst.init_pos:
-        raise WorldError(f"{inst.id} has no init_pos")
-    if not 0 <= draw < len(inst.init_pos):
-        raise WorldError(f"{inst.id}: init_pos draw {draw} out of range 0..{len(inst.init_pos) - 1}")
-    positions = inst.init_pos[draw]
-    if n_robots > len(positions):
-        raise WorldError(f"{inst.id}: only {len(positions)} start positions for {n_robots} robots")
-    return [world.cell_of(x, z, main=True) for x, z in positions[:n_robots]]

@@ -183,3 +183,13 @@ def _explain(tasks, options, before) -> list[str]:
     if not reasons:
         reasons.append("no assignment of distinct objects to tasks meets every ordering")
     return reasons
+
+
+def final_conditions(
+    execution: Execution, conditions: list[tuple[str, str | None, str | None]]
+) -> list[bool]:
+    """Final-state conditions (object name, state, contained name) as SMART-LLM judges them: on the
+    last snapshot, each met by some object (`worlds.effects.condition_holds`)."""
+    from nl2hltl2plan.worlds.effects import condition_holds
+
+    return [condition_holds(execution.world, execution.final, n, s, c) for n, s, c in conditions]

@@ -39,7 +39,8 @@ from functools import cached_property
 from typing import Literal
 
 from nl2hltl2plan.errors import WorldError
-from nl2hltl2plan.logic.hierarchical import HierarchicalSpec, TraceCheck, TraceEvent
+from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
+from nl2hltl2plan.logic.trace import TraceCheck, TraceEvent, check_trace
 from nl2hltl2plan.worlds.model import CELL_M, Affordances, Cell, World, WorldObject
 from nl2hltl2plan.worlds.plan import Plan, Step
 
@@ -389,9 +390,9 @@ def execute_handover(hw: HandoverWorld, plan: Plan, atoms: Sequence[str] = ()) -
 
 
 def check_handover(spec: HierarchicalSpec, execution: HandoverExecution) -> TraceCheck:
-    """Judge an execution against a hierarchical spec over handover atoms (`spec.check_trace`)."""
+    """Judge an execution against a hierarchical spec over handover atoms (`logic.trace.check_trace`)."""
     events = [TraceEvent(t, a) for t, letter in enumerate(execution.letters, start=1) for a in sorted(letter)]
-    return spec.check_trace(events)
+    return check_trace(spec, events)
 
 
 # ----- pictures -----------------------------------------------------------------------------------------

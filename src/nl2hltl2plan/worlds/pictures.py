@@ -43,20 +43,64 @@ def _base(world: World, ax=None, size: float = 7.0):
     return ax.figure, ax
 
 
-def _objects(world: World, ax, labels: bool = True) -> None:
+def _objects(world: World, ax, labels: bool | Iterable[str] = True) -> None:
+    """Objects as markers (a legend explains them); `labels`: all fixed objects, none, or these ids."""
     unreachable = set(world.unreachable)
-    for obj in world.objects.values():
-        if not obj.present:
-            continue
-        x, z = obj.xz
-        if obj.pickupable:
-            ax.plot(x, z, "o", ms=3, color="#555555", zorder=3)
-            continue
-        ax.plot(x, z, "s", ms=6, mfc="white" if obj.approximate else "#8c564b", mec="#8c564b", zorder=3)
-        if obj.id in unreachable:
-            ax.plot(x, z, "x", ms=10, color="red", zorder=4)
-        if labels:
-            ax.annotate(obj.id, (x, z), fontsize=6, xytext=(3, 3), textcoords="offset points", zorder=5)
+    present = [o for o in world.objects.values() if o.present]
+    movable = [o.xz for o in present if o.pickupable]
+    fixed = [o for o in present if not o.pickupable]
+    if movable:
+        ax.plot(*zip(*movable, strict=True), "o", ms=3, color="#555555", zorder=3, ls="none",
+                label="movable object")  # fmt: skip
+    for approx, name in ((False, "fixed object"), (True, "fixed object, estimated position")):
+        pts = [o.xz for o in fixed if o.approximate == approx]
+        if pts:
+            ax.plot(*zip(*pts, strict=True), "s", ms=6, ls="none", mec="#8c564b", zorder=3,
+                    mfc="white" if approx else "#8c564b", label=name)  # fmt: skip
+    bad = [world.objects[i].xz for i in unreachable if world.objects[i].present]
+    if bad:
+        ax.plot(*zip(*bad, strict=True), "x", ms=10, color="red", ls="none", zorder=4, label="unreachable")
+    if labels is True:
+        chosen = [o.id for o in fixed]
+    else:
+        chosen = [] if labels is False else [i for i in labels if i in world.objects]
+    place_labels(ax, [(world.objects[i].xz, i) for i in chosen], avoid=[o.xz for o in present])
+
+
+def place_labels(
+    ax,
+    items: list[tuple[tuple[float, float], str]],
+    avoid: Iterable[tuple[float, float]] = (),
+    fontsize: float = 6.5,
+) -> None:
+    """Label points without overlaps: try offsets around each point (nearest first) and keep the first
+    whose box hits no placed label; a label with no free spot goes further out on a leader line."""
+    if not items:
+        return
+    ax.autoscale_view()
+    ax.apply_aspect()
+    renderer = ax.figure.canvas.get_renderer()
+    from matplotlib.transforms import Bbox
+
+    marks = [ax.transData.transform(p) for p in avoid]  # markers stay visible: labels avoid them too
+    placed: list = [Bbox.from_extents(x - 3, y - 3, x + 3, y + 3) for x, y in marks]
+    offsets = [(dx * r, dy * r) for r in (4, 11, 20) for dx, dy in
+               ((1, 1), (1, -1), (-1, 1), (-1, -1), (1, 0), (-1, 0), (0, 1), (0, -1))]  # fmt: skip
+    for (x, y), text in sorted(items, key=lambda it: (it[0][1], it[0][0])):
+        for dx, dy in offsets:
+            t = ax.annotate(text, (x, y), xytext=(dx, dy), textcoords="offset points", fontsize=fontsize,
+                            ha="left" if dx >= 0 else "right", va="bottom" if dy >= 0 else "top", zorder=6,
+                            bbox={"fc": "white", "ec": "none", "alpha": 0.7, "pad": 0.2})  # fmt: skip
+            box = t.get_window_extent(renderer).expanded(1.05, 1.1)
+            if not any(box.overlaps(b) for b in placed):
+                placed.append(box)
+                break
+            t.remove()
+        else:
+            t = ax.annotate(text, (x, y), xytext=(24, 24 + 8 * (len(placed) % 4)), textcoords="offset points",
+                            fontsize=fontsize, zorder=6, arrowprops={"arrowstyle": "-", "color": "0.5",
+                            "lw": 0.5})  # fmt: skip
+            placed.append(t.get_window_extent(renderer))
 
 
 def _resolve(world: World, regions: Iterable[str] | str | None) -> list[str]:
@@ -105,13 +149,16 @@ def draw_world(world: World, path: str | Path | None = None, regions=None, ax=No
 
 
 def draw_execution(execution: Execution, path: str | Path | None = None, ax=None, upto: int | None = None):
-    """Robot trajectories in their own colours, start (circle) to end (triangle), actions labelled."""
+    """Robot trajectories in their own colours, start (circle) to end (triangle); each action is a
+    numbered marker on the map, explained in a numbered list beside it (no stacked labels)."""
     world = execution.world
     fig, ax = _base(world, ax)
-    _objects(world, ax, labels=False)
     upto = execution.plan.horizon if upto is None else upto
+    events = sorted((e for e in execution.events if e.t <= upto), key=lambda e: (e.t, e.robot))
+    _objects(world, ax, labels=sorted({o for e in events for o in e.objects}))
+    colours = {}
     for k, (robot, traj) in enumerate(sorted(execution.trajectories.items())):
-        colour = ROBOT_COLOURS[k % len(ROBOT_COLOURS)]
+        colour = colours[robot] = ROBOT_COLOURS[k % len(ROBOT_COLOURS)]
         pts = [world.xz(c) for c in traj[: upto + 1]]
         jitter = (k - len(execution.trajectories) / 2) * 0.02  # keep overlapping paths apart
         xs = [p[0] + jitter for p in pts]
@@ -119,23 +166,65 @@ def draw_execution(execution: Execution, path: str | Path | None = None, ax=None
         ax.plot(xs, zs, "-", color=colour, lw=2, alpha=0.85, label=f"robot {robot}", zorder=4)
         ax.plot(xs[0], zs[0], "o", color=colour, ms=8, zorder=5)
         ax.plot(xs[-1], zs[-1], "^", color=colour, ms=9, zorder=5)
-        for ev in execution.events:
-            if ev.robot == robot and ev.t <= upto:
-                x, z = world.xz(traj[ev.t])
-                ax.annotate(
-                    f"t={ev.t} {ev.atom}", (x + jitter, z + jitter), fontsize=6, color=colour,
-                    xytext=(4, -8 - 7 * (ev.t % 3)), textcoords="offset points", zorder=6,
-                )  # fmt: skip
+    ax.plot([], [], "o", color="0.3", ms=7, ls="none", label="start")
+    ax.plot([], [], "^", color="0.3", ms=8, ls="none", label="position now" if upto < execution.plan.horizon
+            else "end")  # fmt: skip
+    lines = _numbered_events(ax, execution, events, colours)
     ax.set_title(
         f"{world.name}: t={upto}, travel {execution.travel_m:.2f} m, completion time {execution.steps} steps"
         + ("" if execution.ok else f", {len(execution.violations)} failed steps")
     )
-    ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1), fontsize=8)
+    legend = ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1), fontsize=8)
     ax.autoscale_view()
+    _action_list(ax, legend, lines)
     if path is not None:
         fig.savefig(path, dpi=130, bbox_inches="tight")
         plt.close(fig)
     return fig
+
+
+def _numbered_events(ax, execution: Execution, events: list, colours: dict) -> list[tuple[str, tuple]]:
+    """Number the actions in time order on the map: each marker takes the first slot up and to the right
+    of its cell that no other marker occupies; return the numbered list's lines with their colours."""
+    world = execution.world
+    ax.autoscale_view()
+    ax.apply_aspect()
+    to_pt = 72.0 / ax.figure.dpi
+    taken: list[tuple[float, float]] = []
+    lines = []
+    for n, ev in enumerate(events, start=1):
+        x, z = world.xz(execution.trajectories[ev.robot][ev.t])
+        px, pz = (v * to_pt for v in ax.transData.transform((x, z)))
+        for slot in range(60):
+            offset = (9 + 13 * (slot % 6), 9 + 13 * (slot // 6))
+            centre = (px + offset[0], pz + offset[1])
+            if all(abs(centre[0] - a) >= 12.5 or abs(centre[1] - b) >= 12.5 for a, b in taken):
+                break
+        taken.append(centre)
+        ax.annotate(str(n), (x, z), xytext=offset, textcoords="offset points", ha="center",
+                    va="center", fontsize=7, color="white", fontweight="bold", zorder=8,
+                    bbox={"boxstyle": "circle,pad=0.25", "fc": colours[ev.robot], "ec": "black", "lw": 0.5},
+                    arrowprops={"arrowstyle": "-", "color": colours[ev.robot], "lw": 0.6})  # fmt: skip
+        lines.append((f"{n:>2}. t={ev.t} robot {ev.robot}: {ev.atom}", colours[ev.robot]))
+    return lines
+
+
+def _action_list(ax, legend, lines: list[tuple[str, tuple]]) -> None:
+    """The numbered actions under the legend, in up to three columns."""
+    if not lines:
+        return
+    ax.apply_aspect()
+    box = legend.get_window_extent(ax.figure.canvas.get_renderer()).transformed(ax.transAxes.inverted())
+    top = box.y0 - 0.05
+    ncol = min(3, -(-len(lines) // 30))
+    per_col = -(-len(lines) // ncol)
+    width = max(len(text) for text, _ in lines) * 0.0085
+    for k, (text, colour) in enumerate(lines):
+        col, row = divmod(k, per_col)
+        ax.text(1.02 + width * col, top - 0.032 * row, text, transform=ax.transAxes, fontsize=7, color=colour,
+                va="top", family="monospace")  # fmt: skip
+    ax.text(1.02, top + 0.01, "actions (numbered on the map)", transform=ax.transAxes, fontsize=8,
+            va="bottom", fontweight="bold")  # fmt: skip
 
 
 def animate_execution(execution: Execution, path: str | Path, fps: int = 4, max_frames: int = 400) -> Path:
@@ -149,6 +238,9 @@ def animate_execution(execution: Execution, path: str | Path, fps: int = 4, max_
         frames.append(horizon)
     fig = draw_execution(execution, upto=0)
     ax = fig.axes[0]
+    w, h = fig.get_size_inches()
+    fig.set_size_inches(w + 3.0, h)  # frames are not cropped: keep room for the legend and action list
+    fig.subplots_adjust(left=0.06, right=(w - 1.5) / (w + 3.0), bottom=0.08, top=0.93)
 
     def update(t: int):
         ax.clear()

@@ -18,6 +18,7 @@ ACTION_ARITY = {
     "toggle_on": 1,
     "toggle_off": 1,
     "slice": 1,
+    "break": 1,  # SMART-LLM's BreakObject (worlds/effects.py)
 }
 VERBS = ("move", "wait", *ACTION_ARITY)
 

@@ -235,7 +235,7 @@ def sequential_plan(world: World, tasks: list, before: list | None = None, start
     start = start or (world.default_starts[0] if world.default_starts else world.cells[0])
     greedy = _Greedy(world, 0, start)
     for tid in nx.lexicographical_topological_sort(graph):
-        for leaf in by_id[tid].leaf_specs(world, others=tasks):
+        for leaf in by_id[tid].leaf_specs(world, others=tasks, support=True):
             alternatives = [leaf] if isinstance(leaf, list) else formula_sequences(leaf)
             for k, actions in enumerate(alternatives):
                 saved = greedy.save()

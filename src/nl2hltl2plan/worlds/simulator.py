@@ -21,12 +21,14 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import NamedTuple
 
+from nl2hltl2plan.worlds import effects
 from nl2hltl2plan.worlds.model import CELL_M, KNIFE_TYPES, Cell, World
 from nl2hltl2plan.worlds.plan import Plan
 
 # state flag bits
 PRESENT, OPEN, ON, CLEAN, HOT, COLD = 1, 2, 4, 8, 16, 32
 FLAG_NAMES = {PRESENT: "present", OPEN: "open", ON: "on", CLEAN: "clean", HOT: "hot", COLD: "cold"}
+FLAG_NAMES.update(effects.EXTRA_FLAG_NAMES)  # broken, cooked, filled (SMART-LLM's vocabulary)
 
 COOLING_TYPES = frozenset({"Fridge"})  # put into it -> cold
 HEATING_TYPES = frozenset({"Microwave"})  # toggle on -> contents hot
@@ -304,103 +306,132 @@ class SimState:
     # ------------------------------------------------------------ actions
     def act(self, robot: int, verb: str, objs: list[int]) -> str | None:
         """Apply one action; return the reason it fails (nothing changes then)."""
+        handler = {
+            "pickup": self._pickup,
+            "put": self._put,
+            "open": self._open_close,
+            "close": self._open_close,
+            "toggle_on": self._toggle,
+            "toggle_off": self._toggle,
+            "slice": self._slice,
+        }.get(verb)
+        if handler is None:
+            return effects.act(self, robot, verb, objs)  # break (SMART-LLM's vocabulary)
+        return handler(robot, verb, objs)
+
+    def _pickup(self, robot: int, verb: str, objs: list[int]) -> str | None:
+        """pickup(O): hand empty, O pickupable and in reach; O's contents travel with it."""
         c = self.c
         hand = self.hand.get(robot, -1)
-        if verb == "pickup":
-            (o,) = objs
-            if hand >= 0:
-                return f"robot {robot} already holds {self.name(hand)} (one object in hand)"
-            if not c.aff[o].pickupable:
-                return f"{self.name(o)} ({c.types[o]}) cannot be picked up"
-            why = self.reach_problem(robot, o)
-            if why:
-                return why
-            self.holder[o] = robot
-            self.parent[o] = -1
-            for i in self.subtree(o):  # contents travel with their container
-                self.moved[i] = True
-            self.hand[robot] = o
+        (o,) = objs
+        if hand >= 0:
+            return f"robot {robot} already holds {self.name(hand)} (one object in hand)"
+        if not c.aff[o].pickupable:
+            return f"{self.name(o)} ({c.types[o]}) cannot be picked up"
+        why = self.reach_problem(robot, o)
+        if why:
+            return why
+        self.holder[o] = robot
+        self.parent[o] = -1
+        for i in self.subtree(o):  # contents travel with their container
+            self.moved[i] = True
+        self.hand[robot] = o
+        return None
+
+    def _put(self, robot: int, verb: str, objs: list[int]) -> str | None:
+        """put(O,R): holding O, R accepts it, in reach and open; cooling and washing on arrival."""
+        c = self.c
+        hand = self.hand.get(robot, -1)
+        o, r = objs
+        if hand != o:
+            held = self.name(hand) if hand >= 0 else "nothing"
+            return f"robot {robot} does not hold {self.name(o)} (it holds {held})"
+        if r == o:
+            return f"cannot put {self.name(o)} into itself"
+        if not c.aff[r].receptacle:
+            return f"{self.name(r)} ({c.types[r]}) is not a receptacle"
+        if c.types[o] not in c.aff[r].accepts:
+            return f"{c.types[r]} does not accept {c.types[o]}"
+        why = self.reach_problem(robot, r)
+        if why:
+            return why
+        if c.aff[r].openable and not self.flags[r] & OPEN:
+            return f"{self.name(r)} is closed (open it first)"
+        self.holder[o] = -1
+        self.parent[o] = r
+        self.hand[robot] = -1
+        # in_type starts at o's new parent r, so r itself counts
+        if self.in_type(o, COOLING_TYPES) >= 0:
+            self.set_flag_tree(o, COLD, "coolable")
+        sink = self.in_type(o, WASHING_TYPES)
+        if sink >= 0 and any(self.flags[f] & ON for f in c.faucets_of.get(sink, ())):
+            self.set_flag_tree(o, CLEAN, "cleanable")
+        effects.after_put(self, o, r)
+        return None
+
+    def _open_close(self, robot: int, verb: str, objs: list[int]) -> str | None:
+        """open(O) / close(O) of an openable in reach (an appliance that runs closed must be off)."""
+        c = self.c
+        (o,) = objs
+        if not c.aff[o].openable:
+            return f"{self.name(o)} ({c.types[o]}) cannot be opened or closed"
+        why = self.reach_problem(robot, o)
+        if why:
+            return why
+        if verb == "open":
+            if self.flags[o] & ON and c.types[o] in effects.RUNS_CLOSED:
+                return f"{self.name(o)} is on (turn it off first)"
+            self.flags[o] |= OPEN
+        else:
+            self.flags[o] &= ~OPEN
+        return None
+
+    def _toggle(self, robot: int, verb: str, objs: list[int]) -> str | None:
+        """toggle_on / toggle_off: heating, washing and the SMART-LLM effects of switching on."""
+        c = self.c
+        (o,) = objs
+        if not c.aff[o].toggleable:
+            return f"{self.name(o)} ({c.types[o]}) cannot be switched on or off"
+        why = self.reach_problem(robot, o)
+        if why:
+            return why
+        if verb == "toggle_off":
+            self.flags[o] &= ~ON
             return None
-        if verb == "put":
-            o, r = objs
-            if hand != o:
-                held = self.name(hand) if hand >= 0 else "nothing"
-                return f"robot {robot} does not hold {self.name(o)} (it holds {held})"
-            if r == o:
-                return f"cannot put {self.name(o)} into itself"
-            if not c.aff[r].receptacle:
-                return f"{self.name(r)} ({c.types[r]}) is not a receptacle"
-            if c.types[o] not in c.aff[r].accepts:
-                return f"{c.types[r]} does not accept {c.types[o]}"
-            why = self.reach_problem(robot, r)
-            if why:
-                return why
-            if c.aff[r].openable and not self.flags[r] & OPEN:
-                return f"{self.name(r)} is closed (open it first)"
-            self.holder[o] = -1
-            self.parent[o] = r
-            self.hand[robot] = -1
-            # in_type starts at o's new parent r, so r itself counts
-            if self.in_type(o, COOLING_TYPES) >= 0:
-                self.set_flag_tree(o, COLD, "coolable")
-            sink = self.in_type(o, WASHING_TYPES)
-            if sink >= 0 and any(self.flags[f] & ON for f in c.faucets_of.get(sink, ())):
-                self.set_flag_tree(o, CLEAN, "cleanable")
-            return None
-        if verb in ("open", "close"):
-            (o,) = objs
-            if not c.aff[o].openable:
-                return f"{self.name(o)} ({c.types[o]}) cannot be opened or closed"
-            why = self.reach_problem(robot, o)
-            if why:
-                return why
-            if verb == "open":
-                if self.flags[o] & ON:
-                    return f"{self.name(o)} is on (turn it off first)"
-                self.flags[o] |= OPEN
-            else:
-                self.flags[o] &= ~OPEN
-            return None
-        if verb in ("toggle_on", "toggle_off"):
-            (o,) = objs
-            if not c.aff[o].toggleable:
-                return f"{self.name(o)} ({c.types[o]}) cannot be switched on or off"
-            why = self.reach_problem(robot, o)
-            if why:
-                return why
-            if verb == "toggle_off":
-                self.flags[o] &= ~ON
-                return None
-            if c.aff[o].openable and self.flags[o] & OPEN:
-                return f"{self.name(o)} is open (close it before turning it on)"
-            self.flags[o] |= ON
-            if c.types[o] in HEATING_TYPES:
-                for i in self.subtree(o)[1:]:
-                    if c.aff[i].heatable:
-                        self.flags[i] |= HOT
-            sink = c.serves[o]
-            if sink >= 0:
-                for i in self.subtree(sink)[1:]:
-                    if c.aff[i].cleanable:
-                        self.flags[i] |= CLEAN
-            return None
-        if verb == "slice":
-            (o,) = objs
-            if hand < 0 or c.types[hand] not in KNIFE_TYPES:
-                return f"robot {robot} must hold a Knife or ButterKnife to slice"
-            if not c.aff[o].sliceable:
-                return f"{self.name(o)} ({c.types[o]}) cannot be sliced"
-            why = self.reach_problem(robot, o)
-            if why:
-                return why
-            keep = self.flags[o] & (CLEAN | HOT | COLD)
-            self.flags[o] &= ~PRESENT
-            for s in c.slices[o]:
-                self.flags[s] |= PRESENT | keep
-                self.parent[s] = self.parent[o]
-                self.moved[s] = self.moved[o]
-            return None
-        return f"unknown verb {verb}"  # pragma: no cover - Step validates verbs
+        if c.types[o] in effects.RUNS_CLOSED and self.flags[o] & OPEN:
+            return f"{self.name(o)} is open (close it before turning it on)"
+        self.flags[o] |= ON
+        if c.types[o] in HEATING_TYPES:
+            for i in self.subtree(o)[1:]:
+                if c.aff[i].heatable:
+                    self.flags[i] |= HOT
+        sink = c.serves[o]
+        if sink >= 0:
+            for i in self.subtree(sink)[1:]:
+                if c.aff[i].cleanable:
+                    self.flags[i] |= CLEAN
+        effects.after_toggle_on(self, o)
+        return None
+
+    def _slice(self, robot: int, verb: str, objs: list[int]) -> str | None:
+        """slice(O) while holding a knife: O is replaced by its slices, which keep its state."""
+        c = self.c
+        hand = self.hand.get(robot, -1)
+        (o,) = objs
+        if hand < 0 or c.types[hand] not in KNIFE_TYPES:
+            return f"robot {robot} must hold a Knife or ButterKnife to slice"
+        if not c.aff[o].sliceable:
+            return f"{self.name(o)} ({c.types[o]}) cannot be sliced"
+        why = self.reach_problem(robot, o)
+        if why:
+            return why
+        keep = self.flags[o] & (CLEAN | HOT | COLD)
+        self.flags[o] &= ~PRESENT
+        for s in c.slices[o]:
+            self.flags[s] |= PRESENT | keep
+            self.parent[s] = self.parent[o]
+            self.moved[s] = self.moved[o]
+        return None
 
 
 def execute(world: World, plan: Plan) -> Execution:

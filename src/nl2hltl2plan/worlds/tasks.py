@@ -4,9 +4,11 @@
 the leaf specifications a perfect translator would give (`leaf_specs`), shared by the oracle spec
 converter (planning) and the offline language stage; its goal (`goal`) is what the checker tests.
 
-Recipes (O object, C container, R receptacle, L lamp; `[open(X)]` only when X is openable or all
-instances sit in a closed openable, e.g. the demo's dishwasher racks; `acc(O)` = open(P) first when
-every instance of O starts inside a closed openable P):
+Recipes (O object, C container, R receptacle, L lamp). Leaves carry no opens: the planner inserts
+`open(X)` where the state needs it (support actions). With `leaf_specs(..., support=True)`, for a
+robot that runs recipes literally, the opens are written in: `[open(X)]` only when X is openable or
+all instances sit in a closed openable, e.g. the demo's dishwasher racks; `acc(O)` = open(P) first
+when every instance of O starts inside a closed openable P:
 - place:              acc(O), pickup(O), [open(R)], put(O,R)
 - place_two:          two such leaves (two distinct objects)
 - place_in_container: acc(O), pickup(O), [open(C)], put(O,C), pickup(C), [open(R)], put(C,R)
@@ -54,6 +56,7 @@ Kind = Literal[
 KINDS: tuple[str, ...] = Kind.__args__  # type: ignore[attr-defined]
 APPLIANCE = {"clean_place": "SinkBasin", "heat_place": "Microwave", "cool_place": "Fridge"}
 TREATMENT = {"clean_place": "cleanable", "heat_place": "heatable", "cool_place": "coolable"}
+MAX_COUNT = 50  # no AI2-THOR scene has more instances of one type
 KNIFE_DROP_PREFERENCE = ("CounterTop", "DiningTable", "SideTable", "Desk", "CoffeeTable", "Shelf", "Dresser")
 
 
@@ -82,19 +85,31 @@ class Goal:
 
 
 class BaseTask(BaseModel):
-    """One ground-truth base task (fields as in alfred_test50_gt.jsonl)."""
+    """One base task: what the ground truth (alfred_test50_gt.jsonl, see ANNOTATION_GUIDE.md) and the
+    language stage both describe — the kind of task, the acceptable AI2-THOR types of the object, the
+    container, the destination and the lamp, how many objects, and whether they must be slices."""
 
     model_config = ConfigDict(extra="ignore")
 
-    id: str
+    id: str = "A"
     text: str = ""
     kind: Kind
     object: list[str]
-    count: int = 1
+    count: int = Field(default=1, ge=1, le=MAX_COUNT)  # objects; more than a scene can hold is refused
     sliced: bool = False
     container: list[str] | None = None
     receptacle: list[str] | None = None
     light: list[str] | None = None
+
+    def summary(self) -> str:
+        """One readable line, e.g. `clean_place Potato(sliced) -> Fridge`."""
+        obj = "|".join(self.object) + ("(sliced)" if self.sliced else "")
+        if self.count > 1:
+            obj = f"{self.count}x {obj}"
+        if self.kind == "examine_in_light":
+            return f"{self.kind} {obj} under {'|'.join(self.light or ['?'])}"
+        inner = f" in {'|'.join(self.container)}" if self.container else ""
+        return f"{self.kind} {obj}{inner} -> {'|'.join(self.receptacle or ['?'])}"
 
     # ------------------------------------------------------------ goal
     def goal(self) -> Goal:
@@ -147,12 +162,16 @@ class BaseTask(BaseModel):
         return []
 
     # ------------------------------------------------------------ recipes
-    def leaf_specs(self, world: World, others: Sequence[BaseTask] = ()) -> list[list[str] | str]:
+    def leaf_specs(
+        self, world: World, others: Sequence[BaseTask] = (), support: bool = False
+    ) -> list[list[str] | str]:
         """One entry per leaf: an ordered action list, or a flat sc-LTL formula for choices.
 
-        `others`: the other tasks of the same instruction. They compete for objects: when fewer
-        instances of a type are free to take (not inside a closed openable) than all the tasks
-        need, the recipe also offers "open the drawer/cabinet/safe holding one first".
+        Leaves carry no `open(...)`: the planner opens what is in the way (support actions).
+        `support=True` writes the opens into the recipe (a robot that runs recipes literally):
+        `others` are the other tasks of the same instruction; they compete for objects, and when
+        fewer instances of a type are free to take (not inside a closed openable) than all the
+        tasks need, the recipe also offers "open the drawer/cabinet/safe holding one first".
         """
         issues = self.missing(world)
         if issues:
@@ -164,7 +183,7 @@ class BaseTask(BaseModel):
         for leaf in range(n_leaves):
             seqs: list[list[str]] = []
             for b in bindings:
-                for seq in self._recipe(world, b, demand, slice_here=(leaf == 0)):
+                for seq in self._recipe(world, b, demand, slice_here=(leaf == 0), support=support):
                     if seq not in seqs:
                         seqs.append(seq)
             leaves.append(seqs[0] if len(seqs) == 1 else sequences_formula(seqs))
@@ -222,7 +241,8 @@ class BaseTask(BaseModel):
         return _refusal(world, _available(world, self.receptacle or []), held)
 
     def _recipe(
-        self, world: World, b: dict[str, str], demand: Counter[str], slice_here: bool = True
+        self, world: World, b: dict[str, str], demand: Counter[str], slice_here: bool = True,
+        support: bool = False,
     ) -> list[list[str]]:
         """The action sequences for one type binding (several when an `open` is optional)."""
         o, held = b["O"], b["held"]
@@ -231,19 +251,23 @@ class BaseTask(BaseModel):
         def add(*atoms: str) -> None:
             parts.append([list(atoms)])
 
+        def opens(alternatives: list[list[str]]) -> None:
+            if support:
+                parts.append(alternatives)
+
         def put_into(obj: str, rec: str | None) -> None:
-            parts.append(_open_for_put(world, rec, demand))
+            opens(_open_for_put(world, rec, demand))
             add(f"put({obj},{rec})")
 
         if self.sliced and slice_here:
             knife = next(k for k in KNIFE_TYPES if _available(world, [k]))
-            parts.append(_access(world, knife, 1))
+            opens(_access(world, knife, 1))
             add(f"pickup({knife})")
-            parts.append(_access(world, o, demand[o]))
+            opens(_access(world, o, demand[o]))
             add(f"slice({o})")
             put_into(knife, _knife_drop(world, knife))
         if not self.sliced:
-            parts.append(_access(world, o, demand[o]))
+            opens(_access(world, o, demand[o]))
         add(f"pickup({held})")
         kind = self.kind
         r = b.get("R")
@@ -262,13 +286,16 @@ class BaseTask(BaseModel):
                 add(f"pickup({held})")
                 put_into(held, r)
         elif kind == "heat_place":
-            add("open(Microwave)", f"put({held},Microwave)", "close(Microwave)")
+            opens([["open(Microwave)"]])
+            add(f"put({held},Microwave)", "close(Microwave)")  # it runs only when closed
             add("toggle_on(Microwave)", "toggle_off(Microwave)")
             if r not in (None, "Microwave"):
-                add("open(Microwave)", f"pickup({held})")
+                opens([["open(Microwave)"]])
+                add(f"pickup({held})")
                 put_into(held, r)
         elif kind == "cool_place":
-            add("open(Fridge)", f"put({held},Fridge)")
+            opens([["open(Fridge)"]])
+            add(f"put({held},Fridge)")
             if r not in (None, "Fridge"):
                 add(f"pickup({held})")
                 put_into(held, r)

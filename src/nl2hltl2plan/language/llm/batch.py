@@ -51,12 +51,24 @@ class BatchCollector:
         return len(lines)
 
 
+def _read_text(path: str | Path, what: str) -> str:
+    try:
+        return Path(path).read_text(encoding="utf-8")
+    except OSError as exc:
+        raise LLMError(f"cannot read {what} {path}: {exc.strerror}") from None
+    except UnicodeDecodeError:
+        raise LLMError(f"{what} {path} is not UTF-8 text (a JSONL file was expected)") from None
+
+
 def read_requests(path: str | Path) -> dict[str, dict[str, Any]]:
     out: dict[str, dict[str, Any]] = {}
-    for line in Path(path).read_text().splitlines():
+    for n, line in enumerate(_read_text(path, "batch requests").splitlines(), 1):
         if line.strip():
-            row = json.loads(line)
-            out[row["custom_id"]] = row.get("body")
+            try:
+                row = json.loads(line)
+                out[row["custom_id"]] = row.get("body")
+            except (ValueError, KeyError, TypeError, AttributeError, RecursionError):
+                raise LLMError(f"batch requests {path} line {n}: not a Batch API request line") from None
     return out
 
 
@@ -64,10 +76,7 @@ def read_answers(
     path: str | Path, cache: AnswerCache, requests: str | Path | None = None
 ) -> tuple[int, list[str]]:
     """Store every successful answer of a Batch API output file in `cache`; (stored, error messages)."""
-    try:
-        text = Path(path).read_text()
-    except OSError as exc:
-        raise LLMError(f"cannot read batch answers {path}: {exc.strerror}") from None
+    text = _read_text(path, "batch answers")
     bodies = read_requests(requests) if requests else {}
     stored, errors = 0, []
     for n, line in enumerate(text.splitlines(), 1):
@@ -75,8 +84,11 @@ def read_answers(
             continue
         try:
             row = json.loads(line)
-            key = row["custom_id"]
-        except (ValueError, KeyError):
+            key = str(row["custom_id"])
+        except (ValueError, KeyError, TypeError, RecursionError):
+            errors.append(f"line {n}: not a batch answer")
+            continue
+        if not isinstance(row, dict) or not isinstance(row.get("response") or {}, dict):
             errors.append(f"line {n}: not a batch answer")
             continue
         resp = row.get("response") or {}
@@ -86,6 +98,8 @@ def read_answers(
         try:
             content = resp["body"]["choices"][0]["message"]["content"]
         except (KeyError, IndexError, TypeError):
+            content = None
+        if not isinstance(content, str):
             errors.append(f"{key[:12]}: answer has no message content")
             continue
         cache.put(key, bodies.get(key), content, {"source": "batch"})

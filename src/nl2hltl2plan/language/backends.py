@@ -1,0 +1,74 @@
+"""Which LLM backend to use, and its client for the length of a run."""
+
+from __future__ import annotations
+
+import contextlib
+from collections.abc import Callable, Iterator
+from typing import Literal, get_args
+
+from nl2hltl2plan.errors import LLMError
+from nl2hltl2plan.language.llm.batch import BatchCollector
+from nl2hltl2plan.language.llm.client import LLMClient
+from nl2hltl2plan.language.llm.settings import LLMSettings
+
+Backend = Literal["offline", "local", "openai"]
+BACKENDS: tuple[str, ...] = get_args(Backend)
+
+
+def resolve_backend(requested: str | None, settings: LLMSettings) -> tuple[Backend, str | None]:
+    """The backend to use and a note for stderr (None: nothing to say)."""
+    if requested in (None, "", "auto"):
+        if settings.configured:
+            return "openai", None
+        return "offline", (
+            "no LLM configured (NL2HLTL2PLAN_LLM_BASE_URL / NL2HLTL2PLAN_LLM_API_KEY): using the "
+            "offline grammar parser"
+        )
+    for name in get_args(Backend):
+        if requested == name:
+            return name, None
+    raise LLMError(f"unknown LLM backend {requested!r}; choose one of {', '.join(BACKENDS)}")
+
+
+@contextlib.contextmanager
+def open_client(
+    backend: str,
+    settings: LLMSettings,
+    batch: BatchCollector | None = None,
+    on_request: Callable[[str], None] | None = None,
+) -> Iterator[LLMClient | None]:
+    """An `LLMClient` for the backend (None for offline); the local backend runs its server meanwhile."""
+    if backend == "offline":
+        yield None
+        return
+    if backend == "openai":
+        if not settings.configured and batch is None:
+            raise LLMError(
+                "no LLM configured: set NL2HLTL2PLAN_LLM_BASE_URL and/or NL2HLTL2PLAN_LLM_API_KEY "
+                "(or --base-url / --api-key), or use --llm local / --llm offline"
+            )
+        yield LLMClient(settings, batch=batch, on_request=on_request)
+        return
+    from nl2hltl2plan.language.llm.local_server import LocalServer, smollm2_path
+
+    gguf = settings.gguf or smollm2_path()
+    # the server's port changes every run: name the model file in cache keys instead
+    local = settings.model_copy(
+        update={"model": gguf.name, "api_key": "none", "cache_scope": f"local:{gguf.name}"}
+    )
+    if batch is not None:  # batch mode answers from the cache only: no server needed
+        yield LLMClient(local, batch=batch, on_request=on_request)
+        return
+    with LocalServer(gguf, threads=settings.threads, ctx=settings.ctx) as server:
+        yield LLMClient(local.model_copy(update={"base_url": server.base_url}), on_request=on_request)
+
+
+def load_batch_answers(path: str, settings: LLMSettings) -> tuple[int, list[str]]:
+    """Load an OpenAI Batch API output file into the answer cache: (answers loaded, error lines)."""
+    from nl2hltl2plan.language.llm.batch import read_answers
+    from nl2hltl2plan.language.llm.cache import AnswerCache
+
+    if settings.cache_dir is None:
+        raise LLMError("--batch-answers needs the answer cache (do not combine it with --cache off)")
+    n, errors = read_answers(path, AnswerCache(settings.cache_dir))
+    return n, list(errors)

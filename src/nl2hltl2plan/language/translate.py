@@ -1,0 +1,279 @@
+"""The language stage: instruction -> HTT -> base tasks -> leaf actions -> hierarchical sc-LTL.
+
+`translate(instruction, world, backend, client)` returns a `LanguageResult`:
+
+- `offline`: the grammar parser (`offline/`), leaf actions from the worlds' recipes; deterministic;
+- `local` / `openai`: the paper's prompted stages through an OpenAI-compatible server
+  (decomposition, relations per non-leaf node, action completion per leaf; optionally rephrasing +
+  translation per non-leaf node), each answer validated and grounded in the scene.
+
+Algorithm 1 (`spec_builder.build_spec`) then turns the HTT into the hierarchical spec, with the exact
+relation compiler as GenerateLTL unless `ltl` asks for an LLM / learned translator.
+"""
+
+from __future__ import annotations
+
+from typing import Literal, Protocol
+
+from nl2hltl2plan.errors import HTTError, LLMError, WorldError
+from nl2hltl2plan.language import stages
+from nl2hltl2plan.language.grounding import AffordanceLookup, Grounder, world_lookup
+from nl2hltl2plan.language.htt_build import build_htt
+from nl2hltl2plan.language.llm.batch import PendingAnswer
+from nl2hltl2plan.language.llm.client import LLMClient
+from nl2hltl2plan.language.ltl_generation import llm_generate_ltl, translator_client
+from nl2hltl2plan.language.result import LanguageResult
+from nl2hltl2plan.language.spec_builder import GenerateLTL, build_spec
+from nl2hltl2plan.language.tasks import BaseTaskSpec, task_letter, transitive_reduction
+from nl2hltl2plan.logic.hierarchical import LeafOrFormula
+from nl2hltl2plan.logic.relations import compile_relations
+from nl2hltl2plan.worlds.model import World
+
+LtlSource = Literal["compiler", "llm", "learned"]
+ActionSource = Literal["auto", "recipe", "llm", "none"]
+
+
+class SceneLike(Protocol):
+    """What the language stage needs of a scene: its name and object types (a `World` has both)."""
+
+    name: str
+
+    def object_types(self) -> set[str]: ...
+
+
+def translate(
+    instruction: str,
+    world: SceneLike | None = None,
+    backend: str = "offline",
+    client: LLMClient | None = None,
+    *,
+    ltl: LtlSource = "compiler",
+    actions: ActionSource = "auto",
+    strict: bool = True,
+    build: bool = True,
+) -> LanguageResult:
+    """Instruction -> LanguageResult (HTT, base tasks, leaf actions, hierarchical spec).
+
+    `world`: a `World` (needed for recipes and specs) or anything with `name` and `object_types()`;
+    `ltl`: GenerateLTL by the exact compiler (default), an LLM, or a learned translator, the latter
+    two checked against the compiler; `actions`: "recipe" (worlds recipes), "llm" (action completion
+    prompts), "auto" (recipe offline, llm otherwise) or "none"; `strict`: an object the scene lacks
+    raises WorldError ("no Statue in FloorPlan17") instead of being reported in `issues`;
+    `build`: run Algorithm 1 (off: HTT and base tasks only).
+    """
+    instruction = " ".join(instruction.split())
+    if not instruction:
+        raise HTTError("empty instruction")
+    types = set(world.object_types()) if world is not None else None
+    scene = world.name if world is not None else None
+    if backend == "offline":
+        look = world_lookup(world) if isinstance(world, World) else None
+        res = _offline(instruction, types, scene, strict, look)
+        _finish(res, world, backend, client, ltl, actions, build)
+        return res
+    if client is None:
+        raise LLMError(f"backend {backend} needs an LLM client (see backends.open_client)")
+    with client.instruction():  # one deadline for every request this instruction makes
+        res = _llm(instruction, types, scene, client, strict)
+        _finish(res, world, backend, client, ltl, actions, build)
+    return res
+
+
+def _finish(
+    res: LanguageResult,
+    world: SceneLike | None,
+    backend: str,
+    client: LLMClient | None,
+    ltl: LtlSource,
+    actions: ActionSource,
+    build: bool,
+) -> None:
+    """Leaf actions (recipes or LLM action completion), then Algorithm 1."""
+    types = set(world.object_types()) if world is not None else None
+    scene = world.name if world is not None else None
+    res.backend = backend
+    mode = actions if actions != "auto" else ("recipe" if backend == "offline" else "llm")
+    if mode == "recipe" and isinstance(world, World):
+        res.leaf_specs = recipe_leaf_specs(res.tasks, world, res.leaf_task)
+    elif mode == "llm" and client is not None and types is not None:
+        res.leaf_specs = _llm_actions(res, client, types, scene or "the scene")
+    for n in res.htt.nodes:
+        spec = res.leaf_specs.get(n.id)
+        if isinstance(spec, list):
+            n.actions = list(spec)
+    if build and res.leaf_specs:
+        _attach_spec(res, ltl, client)
+    if client is not None:
+        st = client.stats
+        res.llm_calls = {
+            "requests": st.requests,
+            "sent": st.sent,
+            "cached": st.cached,
+            "reasks": st.reasks,
+            "retries": st.retries,
+        }
+
+
+def recipe_leaf_specs(
+    tasks: list[BaseTaskSpec], world: World, leaf_task: dict[str, str]
+) -> dict[str, LeafOrFormula]:
+    """Leaf actions from the worlds' recipes (`BaseTask.leaf_specs(world, others)`), by HTT leaf id."""
+    out: dict[str, LeafOrFormula] = {}
+    by_task: dict[str, list[str]] = {}
+    for leaf, t in leaf_task.items():
+        by_task.setdefault(t, []).append(leaf)
+    for task in tasks:
+        specs = task.leaf_specs(world, others=[o for o in tasks if o.id != task.id])
+        for leaf, spec in zip(sorted(by_task.get(task.id, [])), specs, strict=False):
+            out[leaf] = spec
+    return out
+
+
+def _offline(
+    instruction: str, types: set[str] | None, scene: str | None, strict: bool, look: AffordanceLookup | None
+) -> LanguageResult:
+    from nl2hltl2plan.language.offline import parse_instruction
+
+    parsed = parse_instruction(instruction, types, scene or "the scene", strict=strict, affordances=look)
+    if not parsed.tasks:
+        why = "; ".join(parsed.unparsed) or "no task verb found"
+        raise HTTError(
+            f"the offline parser understood no task in {instruction!r} ({why}); rephrase it or use an "
+            "LLM backend"
+        )
+    htt, task_node, leaf_task = build_htt(
+        instruction, parsed.tasks, parsed.before, parsed.groups, parsed.group_texts
+    )
+    return LanguageResult(
+        backend="offline",
+        instruction=instruction,
+        scene=scene,
+        htt=htt,
+        tasks=parsed.tasks,
+        before=list(parsed.before),
+        task_node=task_node,
+        leaf_task=leaf_task,
+        unparsed=parsed.unparsed,
+        issues=parsed.issues,
+    )
+
+
+def _ground_fields(f: stages.TaskFields, g: Grounder | None, issues: list[str], strict: bool) -> BaseTaskSpec:
+    def one(word: str | None, role: str) -> list[str] | None:
+        if word is None or not str(word).strip():
+            return None
+        w = str(word).strip()
+        if g is None:
+            return [w]
+        try:
+            return g.ground(w[:-6] if w.endswith("Sliced") else w, role)
+        except WorldError as exc:
+            if strict:
+                raise
+            issues.append(str(exc))
+            return [w]
+
+    sliced = bool(f.sliced) or str(f.object).endswith("Sliced")
+    kind = f.kind
+    return BaseTaskSpec(
+        kind=kind,
+        text=f.text,
+        object=one(f.object, "object") or [],
+        count=2 if kind == "place_two" else f.count,
+        sliced=sliced,
+        container=one(f.container, "container") if kind == "place_in_container" else None,
+        receptacle=one(f.receptacle, "receptacle") if kind != "examine_in_light" else None,
+        light=one(f.light, "light") if kind == "examine_in_light" else None,
+    )
+
+
+def _llm(
+    instruction: str, types: set[str] | None, scene: str | None, client: LLMClient, strict: bool
+) -> LanguageResult:
+    objects = sorted(t for t in (types or set()) if not t.endswith("Sliced"))
+    dec = stages.decompose(client, instruction, objects)
+    g = Grounder(types, scene or "the scene") if types is not None else None
+    issues: list[str] = []
+    tasks: list[BaseTaskSpec] = []
+    groups: list[list[str]] = []
+    node_of: dict[str, str] = {}  # decomposition id -> base task id
+    for node in dec.tasks:
+        members = node.subtasks or [node.as_task()]
+        gm = []
+        for f in members:
+            spec = _ground_fields(f, g, issues, strict)
+            spec.id = task_letter(len(tasks))
+            tasks.append(spec)
+            node_of[f.id] = spec.id
+            gm.append(spec.id)
+        if node.subtasks:
+            groups.append(gm)
+    before = _llm_relations(client, instruction, dec, node_of)
+    red = transitive_reduction(before, [t.id for t in tasks])
+    htt, task_node, leaf_task = build_htt(instruction, tasks, red, groups)
+    return LanguageResult(
+        backend="llm",
+        instruction=instruction,
+        scene=scene,
+        htt=htt,
+        tasks=tasks,
+        before=red,
+        task_node=task_node,
+        leaf_task=leaf_task,
+        issues=issues,
+    )
+
+
+def _llm_relations(
+    client: LLMClient, instruction: str, dec: stages.Decomposition, node_of: dict[str, str]
+) -> set[tuple[str, str]]:
+    """Relations asked once per non-leaf node of the LLM's tree (the root, and each group)."""
+    before: set[tuple[str, str]] = set()
+    top = [(n.id, n.text or (n.subtasks and "; ".join(s.text for s in n.subtasks)) or "") for n in dec.tasks]
+    if len(top) > 1:
+        rel = stages.relations(client, instruction, "1", "the whole instruction", top)
+        under = {n.id: [node_of[s.id] for s in n.subtasks] or [node_of[n.id]] for n in dec.tasks}
+        before |= {(a, b) for x, y in rel for a in under[x] for b in under[y]}
+    for n in dec.tasks:
+        if len(n.subtasks) > 1:
+            rel = stages.relations(client, instruction, n.id, n.text, [(s.id, s.text) for s in n.subtasks])
+            before |= {(node_of[x], node_of[y]) for x, y in rel}
+    return before
+
+
+def _llm_actions(
+    res: LanguageResult, client: LLMClient, types: set[str] | None, scene: str
+) -> dict[str, LeafOrFormula]:
+    by_id = {t.id: t for t in res.tasks}
+    out: dict[str, LeafOrFormula] = {}
+    for leaf in res.htt.leaves():
+        task = by_id[res.leaf_task[leaf.id]]
+        details = {k: v for k, v in task.model_dump().items() if v not in (None, False, "") and k != "text"}
+        details["id"] = leaf.id
+        try:
+            out[leaf.id] = stages.complete_actions(client, leaf.text, details, types, scene)
+        except PendingAnswer:
+            raise
+        except LLMError as exc:
+            raise LLMError(f"action completion for {leaf.id} ({leaf.text!r}) failed: {exc}") from None
+    return out
+
+
+def _attach_spec(res: LanguageResult, ltl: LtlSource, client: LLMClient | None) -> None:
+    """Algorithm 1 with our leaf specs and the chosen GenerateLTL."""
+    missing = [n.id for n in res.htt.leaves() if n.id not in res.leaf_specs]
+    if missing:
+        res.warnings.append(f"hierarchical spec not built: no actions for leaves {missing}")
+        return
+    generate: GenerateLTL = compile_relations
+    if ltl == "llm":
+        if client is None:
+            raise LLMError("--ltl llm needs an LLM backend (or use --ltl learned with a translator server)")
+        generate = llm_generate_ltl(client, client, res.ltl_checks)
+    elif ltl == "learned":
+        generate = llm_generate_ltl(client, translator_client(), res.ltl_checks)
+    elif ltl != "compiler":
+        raise LLMError(f"unknown LTL generator {ltl!r}: compiler, llm or learned")
+    res.spec = build_spec(
+        res.htt, generate_ltl=generate, action_completion=lambda node: res.leaf_specs[node.id]
+    )

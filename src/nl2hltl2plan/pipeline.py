@@ -1,0 +1,214 @@
+"""The one pipeline: instruction -> language stage -> hierarchical sc-LTL -> planner -> checked plan.
+
+The `plan` command, the web app and every benchmark job call these functions (and nothing else
+chains the stages):
+
+- `run(instruction, world, robots, options)` does everything and returns an `Outcome`;
+- `language_stage(instruction, world, options, client)` is the first half (benchmarks run it once per
+  instruction in the parent process, where the LLM client lives);
+- `planning_stage(world, spec, starts, options, gt)` is the second half: plan (the planner executes
+  and checks every plan before returning it), then, when a ground truth is given, judge the execution
+  with the goal checker.
+
+>>> from nl2hltl2plan.worlds.demo import demo_world
+>>> out = run("Put the plates in the lower rack", demo_world(), robots=1)
+>>> out.status.value, out.ok
+('solved', True)
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+from typing import Any
+
+from pydantic import BaseModel, ConfigDict, Field
+
+from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.language.backends import Backend
+from nl2hltl2plan.language.llm.client import LLMClient
+from nl2hltl2plan.language.result import LanguageResult
+from nl2hltl2plan.language.translate import ActionSource, LtlSource, translate
+from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
+from nl2hltl2plan.planning import PlanResult, PlanStatus, plan
+from nl2hltl2plan.planning.api import Mode
+from nl2hltl2plan.planning.objective import ObjectiveName
+from nl2hltl2plan.worlds.checker import CheckResult, check
+from nl2hltl2plan.worlds.model import Cell, World
+from nl2hltl2plan.worlds.starts import start_cells
+from nl2hltl2plan.worlds.tasks import GTInstance
+from nl2hltl2plan.worlds.team import Team, team_problems
+
+
+class PipelineOptions(BaseModel):
+    """Every choice the pipeline makes, validated before any work starts."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    backend: Backend = "offline"
+    ltl: LtlSource = "compiler"
+    actions: ActionSource = "auto"
+    strict: bool = True  # an object the scene lacks is an error (else reported in `issues`)
+    objective: ObjectiveName = "min"
+    mode: Mode = "fast"
+    plan_timeout_s: float = Field(default=300.0, gt=0, allow_inf_nan=False)
+    starts: list[Cell] | None = None  # one per robot; default: the world's (see worlds.starts)
+    capabilities: list[list[str] | None] | None = None  # per robot: verbs/atoms it can do (None: all)
+
+
+@dataclass
+class Planned:
+    """The planning stage's result: the planner's (checked) plan and, with a ground truth, its verdict."""
+
+    result: PlanResult
+    check: CheckResult | None = None
+
+    @property
+    def success(self) -> bool:
+        return self.result.solved and (self.check is None or self.check.success)
+
+
+def language_stage(
+    instruction: str, world: World, options: PipelineOptions | None = None, client: LLMClient | None = None
+) -> LanguageResult:
+    """Instruction -> HTT, base tasks, leaf actions and the hierarchical spec (`result.spec`)."""
+    opt = options or PipelineOptions()
+    return translate(
+        instruction, world, opt.backend, client, ltl=opt.ltl, actions=opt.actions, strict=opt.strict
+    )
+
+
+def planning_stage(
+    world: World,
+    spec: HierarchicalSpec,
+    starts: Sequence[Cell],
+    options: PipelineOptions | None = None,
+    gt: GTInstance | None = None,
+) -> Planned:
+    """Plan for the team (every returned plan is executed and checked against `spec`), then judge the
+    execution against the ground truth's goals and orderings when `gt` is given."""
+    opt = options or PipelineOptions()
+    if world.kind == "handover":  # four fixed arms passing blocks: the cooperative planner
+        from nl2hltl2plan.planning.coop import plan_world
+
+        return Planned(plan_world(world, spec, starts, timeout_s=opt.plan_timeout_s))
+    result = plan(
+        world,
+        spec,
+        list(starts),
+        objective=opt.objective,
+        mode=opt.mode,
+        timeout_s=opt.plan_timeout_s,
+        capabilities=opt.capabilities,
+    )
+    verdict = None
+    if gt is not None and result.solved and result.execution is not None:
+        verdict = check(result.execution, gt)
+    return Planned(result, verdict)
+
+
+@dataclass
+class Outcome:
+    """Everything one run produced, typed at every stage."""
+
+    instruction: str
+    world: World
+    robots: int
+    options: PipelineOptions
+    language: LanguageResult
+    spec: HierarchicalSpec
+    starts: list[Cell]
+    planned: Planned
+    team: str = ""  # the team's description ("robot1, robot5" or "2 robot(s) with every skill")
+
+    @property
+    def result(self) -> PlanResult:
+        return self.planned.result
+
+    @property
+    def status(self) -> PlanStatus:
+        return PlanStatus(self.result.status)
+
+    @property
+    def ok(self) -> bool:
+        return self.planned.success
+
+    def to_json(self) -> dict[str, Any]:
+        """The JSON of `plan --json` and of the web API's `POST /api/plan` (see docs/plan_schema.md)."""
+        lang = self.language
+        r = self.result
+        planner = r.to_dict(with_plan=False)
+        planner["starts"] = [list(c) for c in self.starts]
+        return {
+            "backend": lang.backend,
+            "instruction": self.instruction,
+            "world": self.world.name,
+            "robots": self.robots,
+            "team": self.team,
+            "status": self.status.value,
+            "htt": lang.htt.model_dump(mode="json"),
+            "tasks": [t.model_dump(mode="json") for t in lang.tasks],
+            "before": [list(p) for p in lang.before],
+            "task_node": lang.task_node,
+            "leaf_specs": lang.leaf_specs,
+            "spec": self.spec.to_json_obj(),
+            "plan": r.plan.model_dump(mode="json") if r.plan is not None else None,
+            "travel_cost_m": r.travel_m,
+            "completion_time": r.steps,
+            "planner": planner,
+            "ambiguities": [a.model_dump(mode="json") for a in lang.ambiguities],
+            "unparsed": lang.unparsed,
+            "issues": lang.issues,
+            "warnings": lang.warnings,
+            "ltl_checks": lang.ltl_checks,
+            "llm_calls": lang.llm_calls,
+        }
+
+
+def run(
+    instruction: str,
+    world: World,
+    robots: int | Team = 1,
+    options: PipelineOptions | None = None,
+    client: LLMClient | None = None,
+    gt: GTInstance | None = None,
+) -> Outcome:
+    """Instruction -> checked plan for a team in `world` (see the module docstring).
+
+    `robots`: a number of robots that can do everything, or a `worlds.team.Team` of robots with
+    skills and carrying capacities (their capabilities bound the allocation). Raises an
+    `Nl2Hltl2PlanError` for input the pipeline cannot use (an object the scene lacks, a sentence
+    nothing understood, a cyclic ordering, too many robots); a spec with no plan is not an error but
+    an outcome with status infeasible (a team that lacks a skill, with the reason) or timeout.
+    """
+    opt = options or PipelineOptions()
+    team = robots if isinstance(robots, Team) else Team(robots)
+    starts = start_cells(world, team.size, given=opt.starts)
+    if team.profiles is not None:
+        opt = opt.model_copy(update={"capabilities": [_listed(c) for c in team.capabilities(world)]})
+    if opt.capabilities is not None and len(opt.capabilities) != team.size:
+        raise HTTError(f"{len(opt.capabilities)} capability sets given for {team.size} robot(s)")
+    lang = language_stage(instruction, world, opt, client)
+    if lang.spec is None:
+        why = "; ".join(lang.warnings + lang.issues + lang.unparsed) or "no leaf actions"
+        raise HTTError(f"no hierarchical specification for {instruction!r}: {why}")
+    problems = team_problems(team, lang.spec, world)
+    if problems:  # a definite no before any search: the team lacks a skill or the strength
+        planned = Planned(PlanResult(status=PlanStatus.INFEASIBLE, reason="; ".join(problems)))
+    else:
+        planned = planning_stage(world, lang.spec, starts, opt, gt)
+    return Outcome(
+        instruction=lang.instruction,
+        world=world,
+        robots=team.size,
+        options=opt,
+        language=lang,
+        spec=lang.spec,
+        starts=starts,
+        planned=planned,
+        team=team.describe(),
+    )
+
+
+def _listed(caps: set[str] | None) -> list[str] | None:
+    return None if caps is None else sorted(caps)

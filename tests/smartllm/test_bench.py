@@ -1,0 +1,104 @@
+"""SMART-LLM's tasks, oracle specs and metrics (one real floor plan, kept small for speed)."""
+
+import argparse
+import json
+
+from nl2hltl2plan.cli.bench_smartllm import register
+from nl2hltl2plan.evaluation.smartllm import (
+    llm_maker,
+    oracle_maker,
+    robot_utilisation,
+    run_task,
+    stages,
+    summarize,
+)
+from nl2hltl2plan.worlds.smartllm import load_tasks, parse_task
+
+
+def test_tasks_repairs_and_missing_gt():
+    tasks = {t.id: t for t in load_tasks()}
+    assert len(tasks) == 36 and sum(t.has_gt for t in tasks.values()) == 35
+    assert not tasks["FloorPlan209#1"].has_gt
+    cabinet = tasks["FloorPlan414#4"]
+    assert [c.describe() for c in cabinet.conditions] == ["LightSwitch OFF"]
+    assert any("dropped" in n for n in cabinet.notes)
+    trash = tasks["FloorPlan414#2"]
+    assert [c.describe() for c in trash.conditions] == ["GarbageCan contains Cloth"]
+
+
+def test_robot_utilisation_formula():
+    assert robot_utilisation(1, 0, 2) == 1.0 and robot_utilisation(3, 0, 2) == 0.0
+    assert robot_utilisation(2, 0, 2) == 0.5 and robot_utilisation(2, 1, 1) == 1.0
+    assert robot_utilisation(1, 1, 1) == 0.0 and robot_utilisation(1, None, None) is None
+    ev = [
+        {"t": 5, "robot": 0, "task": "a", "travel_m": 1.0},
+        {"t": 6, "robot": 0, "task": "a"},
+        {"t": 3, "robot": 1, "task": "b", "travel_m": 0.5},
+        {"t": 9, "robot": 2, "task": "c", "travel_m": 0.25},
+    ]
+    assert stages(ev) == 2  # a (t 1..6) and b (1..3) overlap; c sets off at 8, after both ended
+    assert stages(ev, [("b", "a")]) == 3  # ordered by the spec: b, then a, then c
+    ev[2]["robot"] = 2
+    ev[2]["t"], ev[3]["t"] = 2, 4  # b (t 0..2) then c (3..4) by robot 2, while a (1..6) runs
+    assert stages(ev) == 2
+
+
+def test_oracle_task_respects_the_team_and_scores():
+    task = next(t for t in load_tasks() if t.id == "FloorPlan15#3")  # slice, trash, light off: robots 8, 6, 5
+    row = run_task(task, oracle_maker, timeout_s=20)
+    assert row["status"] == "solved" and row["TC"] == 1.0 and row["GCR"] == 1.0 and row["Exe"] == 1.0
+    bad = parse_task(
+        1,
+        {
+            "floor_plan": "FloorPlan15",
+            "task": "Slice the lettuce",
+            "robot list": [24],
+            "object_states": [{"name": "Lettuce", "contains": [], "state": "SLICED"}],
+            "trans": 0,
+            "max_trans": 0,
+        },
+    )
+    row = run_task(bad, oracle_maker)
+    assert row["status"] == "infeasible team" and "no robot in the team can" in row["reason"]
+    assert row["TC"] == 0.0 and row["Exe"] == 0.0
+    summary = summarize(
+        [
+            row,
+            {
+                "id": "x",
+                "task": "t",
+                "has_gt": False,
+                "status": "no ground truth",
+                "floor_plan": "FloorPlan209",
+            },
+        ]
+    )
+    assert summary["overall"]["tasks"] == 1 and summary["not_scored"][0]["id"] == "x"
+    json.dumps(summary)
+
+
+def test_cli_registers_under_bench():
+    parser = argparse.ArgumentParser()
+    register(parser.add_subparsers(dest="suite"))
+    args = parser.parse_args(["smartllm", "--oracle", "--out", "d"])
+    assert args.oracle and args.objective == "minmax" and callable(args.func)
+
+
+def test_mass_capacity_and_language_stage():
+    weak = parse_task(
+        4,
+        {
+            "floor_plan": "FloorPlan15",
+            "task": "Put the potato in the fridge",
+            "robot list": [10],
+            "object_states": [{"name": "Fridge", "contains": ["Potato"], "state": None}],
+            "trans": 0,
+            "max_trans": 0,
+        },
+    )
+    row = run_task(weak, oracle_maker, masses={"Potato": 0.18})
+    assert row["status"] == "infeasible team" and "carry a Potato (0.18 kg" in row["reason"]
+    assert run_task(weak, oracle_maker)["TC"] == 1.0  # masses unknown: not limited
+    mug = next(t for t in load_tasks() if t.id == "FloorPlan21#1")  # "Put mug in coffee machine"
+    row = run_task(mug, llm_maker("offline"))
+    assert row["status"] == "solved" and row["TC"] == 1.0

@@ -1,0 +1,70 @@
+"""The one pipeline (`nl2hltl2plan.pipeline`): what the CLI, the web app and the benchmarks all call."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from nl2hltl2plan.cli.main import main
+from nl2hltl2plan.pipeline import PipelineOptions, run
+from nl2hltl2plan.worlds.demo import demo_world
+from nl2hltl2plan.worlds.team import RobotProfile, Team
+
+ORDERED = "First put the saucers in the upper rack, then put the cups in the upper rack"
+
+
+@pytest.fixture(scope="module")
+def world():
+    return demo_world()
+
+
+def test_run_returns_typed_stages_and_a_checked_plan(world) -> None:
+    out = run(ORDERED, world, robots=2)
+    assert out.ok and out.status == "solved"
+    assert [t.object for t in out.language.tasks] == [["Saucer"], ["Cup"]]
+    assert out.language.before == [("A", "B")]
+    assert out.spec is out.language.spec and len(out.spec.levels) >= 2
+    execution = out.result.execution
+    assert execution is not None and execution.ok
+    # the ordering holds in the executed plan: the last saucer is put before the first cup
+    puts = [(e.t, e.atom) for e in execution.events if e.atom.startswith("put(")]
+    last_saucer = max(t for t, a in puts if "Saucer" in a)
+    first_cup = min(t for t, a in puts if "Cup" in a)
+    assert last_saucer < first_cup
+
+
+def test_to_json_is_what_plan_json_prints(world, capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["plan", ORDERED, "--robots", "2", "--json"]) == 0
+    printed = json.loads(capsys.readouterr().out)
+    expected = json.loads(json.dumps(run(ORDERED, world, robots=2).to_json(), default=str))
+    for key in ("tasks", "before", "spec", "plan", "travel_cost_m", "completion_time", "status", "team"):
+        assert printed[key] == expected[key], key
+
+
+def test_a_team_without_a_needed_skill_is_a_definite_no_with_the_reason(world) -> None:
+    looker = RobotProfile.from_dict({"name": "looker", "skills": ["GoToObject", "OpenObject"]})
+    out = run(ORDERED, world, robots=Team.of([looker]))
+    assert not out.ok and out.status == "infeasible"
+    assert "no robot in the team can pick up" in out.result.reason
+
+
+def test_a_team_splits_work_by_skill(world) -> None:
+    carrier = RobotProfile.from_dict(
+        {"name": "carrier", "skills": ["PickupObject", "PutObject", "OpenObject"]}
+    )
+    idle = RobotProfile.from_dict({"name": "idle", "skills": ["GoToObject"]})
+    out = run(ORDERED, world, robots=Team.of([idle, carrier]))
+    assert out.ok and out.team == "idle, carrier"
+    plan = out.result.plan
+    assert plan is not None
+    acting = {rp.robot for rp in plan.robots for st in rp.steps if st.verb not in ("move", "wait")}
+    assert acting == {1}
+
+
+def test_options_are_validated_before_any_work() -> None:
+    from pydantic import ValidationError
+
+    for bad in ({"plan_timeout_s": float("nan")}, {"plan_timeout_s": 0}, {"objective": "fastest"}):
+        with pytest.raises(ValidationError):
+            PipelineOptions.model_validate(bad)
