@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import json
-
 import pytest
 
 from nl2hltl2plan.errors import PlanningError, WorldError
@@ -189,12 +187,12 @@ def test_plan_on_a_handover_world_uses_the_cooperative_planner():
         plan_world(load_world("tabletop"), [{"task1": 'F "at(Red,J)"'}])
 
 
-def test_cli_plan_json_on_a_handover_world(capsys):
-    from nl2hltl2plan.cli.main import main
+def test_pipeline_planning_stage_plans_handover_worlds_cooperatively():
+    from nl2hltl2plan.pipeline import PipelineOptions, planning_stage
 
-    text = "Move the red block to region J."
-    assert main(["plan", text, "--world", "handover-square", "--json", "--llm", "offline"]) == 0
-    payload = json.loads(capsys.readouterr().out)
-    assert payload["status"] == "solved" and payload["before"] == []
-    assert payload["tasks"][0]["kind"] == "place" and payload["tasks"][0]["receptacle"] == ["RegionJ"]
-    assert sum(1 for r in payload["plan"]["robots"] if r["steps"]) >= 2  # several arms carry it
+    world = load_world("handover-square")
+    spec = HierarchicalSpec.from_json([{"task1": ["pickup(RedBlock)", "put(RedBlock,RegionI)"]}])
+    planned = planning_stage(world, spec, world.default_starts[:1], PipelineOptions())
+    assert planned.result.solved and planned.result.model.startswith("cooperative")
+    pickers = {rp.robot for rp in planned.result.plan.robots for s in rp.steps if s.verb == "pickup"}
+    assert len(pickers) >= 2  # red goes from E (arm a) to I (arm c): handed over

@@ -36,24 +36,24 @@ def register(sub: Any) -> None:
     """Add `tabletop` and `handover` parsers to a subparsers object."""
     t = sub.add_parser("tabletop", help="the paper's tabletop study (Table II)")
     t.add_argument("-o", "--out", type=Path, required=True, help="output folder")
-    t.add_argument("--instances", type=_positive, default=25, help="seeded instances per task (25)")
-    t.add_argument("--seed", type=int, default=0, help="seed of the object layouts (0)")
+    t.add_argument("--instances", type=_positive, default=25, help="seeded instances per task (default 25)")
+    t.add_argument("--seed", type=int, default=0, help="seed of the object layouts (default 0)")
     t.add_argument("--baseline", choices=["auto", "llm", "none"], default="auto",
-                   help="LLM-as-planner baseline: auto (when an LLM is configured), llm (required), none")
+                   help="LLM-as-planner baseline: auto (default; when an LLM is configured), llm, none")
     _llm_args(t)
     t.set_defaults(func=run_tabletop)
     h = sub.add_parser("handover", help="the paper's four-arm handover study (Table III)")
     h.add_argument("-o", "--out", type=Path, required=True, help="output folder")
-    h.add_argument("--instances", type=_positive, default=10, help="seeded instances per task (10)")
-    h.add_argument("--seed", type=int, default=0, help="seed of block placements and arm poses (0)")
+    h.add_argument("--instances", type=_positive, default=10, help="seeded instances per task (default 10)")
+    h.add_argument("--seed", type=int, default=0, help="seed of block placements and arm poses (default 0)")
     h.set_defaults(func=run_handover)
 
 
 def _llm_args(p: argparse.ArgumentParser) -> None:
     g = p.add_argument_group("LLM for the LLM-as-planner baseline (environment: NL2HLTL2PLAN_LLM_*)")
-    g.add_argument("--base-url", default=None)
-    g.add_argument("--model", default=None)
-    g.add_argument("--api-key", default=None)
+    g.add_argument("--base-url", default=None, help="OpenAI-compatible endpoint")
+    g.add_argument("--model", default=None, help="model name")
+    g.add_argument("--api-key", default=None, help="API key (better: NL2HLTL2PLAN_LLM_API_KEY)")
     g.add_argument("--cache", default=None, help="answer cache folder, or 'off'")
 
 
