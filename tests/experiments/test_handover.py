@@ -166,6 +166,9 @@ def test_paper_tasks_are_solved_and_checked(task_id):
     result = coop_plan(hw, task.hierarchical())
     ok, reasons = judge(hw, task.hierarchical(), result)
     assert ok, reasons
+    if task_id == 6:  # "separately to G, H and I": all three there at the end, one per region
+        regions = hw.layout.regions
+        assert set(result.execution.final[2]) == {regions["G"], regions["H"], regions["I"]}
     if task_id == 5:  # exchanging red and blue needs a temporary place for one of them
         puts = [s.objects for rp in result.plan.robots for s in rp.steps if s.verb == "put"]
         temp = [
