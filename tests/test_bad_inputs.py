@@ -65,6 +65,16 @@ CASES = [
     ("plan-no-task", ["plan", "hello there", "--world", "demo"], 2, "understood no task"),
     ("plan-empty", ["plan", "   ", "--world", "demo"], 2, "empty instruction"),
     ("plan-missing-object", ["plan", "put the statue in the sink", "--world", "demo"], 2, "no Statue"),
+    (
+        "plan-contradictory-order",
+        [
+            "plan",
+            "Put the saucers in the upper rack before the cups. Put the cups in the upper rack before the "
+            "saucers.",
+        ],
+        2,
+        "contradictory ordering",
+    ),
     ("plan-robots-0", ["plan", PLATES, "--robots", "0"], 2, "--robots"),
     ("plan-robots-huge", ["plan", PLATES, "--robots", "1000000"], 2, "at most"),
     ("plan-robots-unknown-profile", ["plan", PLATES, "--robots", "two"], 2, "unknown robot profile"),

@@ -68,3 +68,41 @@ def test_options_are_validated_before_any_work() -> None:
     for bad in ({"plan_timeout_s": float("nan")}, {"plan_timeout_s": 0}, {"objective": "fastest"}):
         with pytest.raises(ValidationError):
             PipelineOptions.model_validate(bad)
+
+
+needs_data = pytest.mark.skipif(
+    __import__("nl2hltl2plan.config", fromlist=["data_dir"]).data_dir(required=False) is None,
+    reason="needs ../shared/data",
+)
+TABLE = "Put the remote control on the table"
+
+
+@needs_data
+def test_learned_backend_ranks_ambiguous_words_and_json_lists_them(
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    assert main(["plan", TABLE, "--world", "FloorPlan201", "--llm", "learned", "--json"]) == 0
+    payload = json.loads(capsys.readouterr().out)
+    (amb,) = payload["ambiguities"]
+    assert amb["word"] == "table" and amb["role"] == "receptacle"
+    assert set(amb["candidates"]) == {"CoffeeTable", "DiningTable", "SideTable"}
+    assert amb["confidence"] == sorted(amb["confidence"], reverse=True)
+
+
+@needs_data
+def test_ask_lets_the_user_pick_the_type(
+    monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    import io
+
+    monkeypatch.setattr("sys.stdin", io.StringIO("3\n"))
+    assert main(["plan", TABLE, "--world", "FloorPlan201", "--llm", "learned", "--ask", "--json"]) == 0
+    out = capsys.readouterr()
+    payload = json.loads(out.out)
+    assert "could mean" in out.err
+    picked = [line.split(". ")[1].split(" ")[0] for line in out.err.splitlines() if line.startswith("  3.")][
+        0
+    ]
+    assert payload["tasks"][0]["receptacle"] == [picked] and payload["ambiguities"] == []
+    monkeypatch.setattr("sys.stdin", io.StringIO("9\n"))
+    assert main(["plan", TABLE, "--world", "FloorPlan201", "--llm", "learned", "--ask"]) == 2

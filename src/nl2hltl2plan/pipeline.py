@@ -54,6 +54,7 @@ class PipelineOptions(BaseModel):
     plan_timeout_s: float = Field(default=300.0, gt=0, allow_inf_nan=False)
     starts: list[Cell] | None = None  # one per robot; default: the world's (see worlds.starts)
     capabilities: list[list[str] | None] | None = None  # per robot: verbs/atoms it can do (None: all)
+    choices: dict[str, str] = Field(default_factory=dict)  # a user's picks for ambiguous words (--ask)
 
 
 @dataclass
@@ -74,7 +75,14 @@ def language_stage(
     """Instruction -> HTT, base tasks, leaf actions and the hierarchical spec (`result.spec`)."""
     opt = options or PipelineOptions()
     return translate(
-        instruction, world, opt.backend, client, ltl=opt.ltl, actions=opt.actions, strict=opt.strict
+        instruction,
+        world,
+        opt.backend,
+        client,
+        ltl=opt.ltl,
+        actions=opt.actions,
+        strict=opt.strict,
+        choices=opt.choices,
     )
 
 

@@ -69,6 +69,12 @@ def register(sub: Any) -> None:
         action="store_true",
         help="keep objects the scene lacks (reported as issues) instead of failing",
     )
+    p.add_argument(
+        "--ask",
+        action="store_true",
+        help="ask on the terminal which scene type an ambiguous word means ('the table': dining "
+        "or side table?) instead of taking the top-ranked one (backend learned)",
+    )
     p.add_argument("--json", action="store_true", help="print one JSON object (docs/plan_schema.md)")
     p.add_argument(
         "-o",
@@ -133,6 +139,8 @@ def run(args: argparse.Namespace) -> int:
     spinner, on_request = _spinner(backend != "offline" and batch is None and not args.json)
     try:
         with spinner, open_client(backend, settings, batch=batch, on_request=on_request) as client:
+            if args.ask:
+                options = _ask_choices(args.instruction, world, options, client)
             outcome = run_pipeline(args.instruction, world, team, options, client)
     except PendingAnswer:
         assert batch is not None
@@ -154,6 +162,29 @@ def run(args: argparse.Namespace) -> int:
         print(f"error: no plan: {outcome.status.value}: {outcome.result.reason}", file=sys.stderr)
         return EXIT_NO_PLAN
     return EXIT_OK
+
+
+def _ask_choices(instruction: str, world: Any, options: Any, client: Any) -> Any:
+    """Ask which type each ambiguous word means; the answers become `options.choices`."""
+    from nl2hltl2plan.errors import HTTError
+    from nl2hltl2plan.pipeline import language_stage
+
+    lang = language_stage(instruction, world, options.model_copy(update={"actions": "none"}), client)
+    choices = dict(options.choices)
+    for a in lang.ambiguities:
+        print(f"{a.word!r} ({a.role} of task {a.task}) could mean:", file=sys.stderr)
+        confidence = a.confidence or [0.0] * len(a.candidates)
+        for k, (cand, conf) in enumerate(zip(a.candidates, confidence, strict=True), 1):
+            print(f"  {k}. {cand} ({conf:.0%})", file=sys.stderr)
+        print("choose a number [1]: ", end="", file=sys.stderr, flush=True)
+        answer = sys.stdin.readline()
+        if not answer:
+            raise HTTError("--ask needs an answer on standard input (got end of input)")
+        pick = answer.strip() or "1"
+        if not pick.isdigit() or not 1 <= int(pick) <= len(a.candidates):
+            raise HTTError(f"--ask: {pick!r} is not one of 1..{len(a.candidates)}")
+        choices[f"{a.task}.{a.role}"] = a.candidates[int(pick) - 1]
+    return options.model_copy(update={"choices": choices})
 
 
 def _print_human(outcome: Any) -> None:

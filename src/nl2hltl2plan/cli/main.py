@@ -20,7 +20,7 @@ from nl2hltl2plan import __version__
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 
 # Order here is the order in `--help`; a module missing from the tree is simply not offered.
-COMMAND_MODULES = ["spec", "check", "show", "world", "plan", "bench", "serve"]
+COMMAND_MODULES = ["spec", "check", "show", "world", "plan", "bench", "serve", "train"]
 
 
 class _Parser(argparse.ArgumentParser):

@@ -11,7 +11,8 @@ from nl2hltl2plan.language.llm.batch import BatchCollector
 from nl2hltl2plan.language.llm.client import LLMClient
 from nl2hltl2plan.language.llm.settings import LLMSettings
 
-Backend = Literal["offline", "local", "openai"]
+Backend = Literal["offline", "learned", "local", "openai"]
+PARSERS = ("offline", "learned")  # backends that need no LLM: the grammar, the grammar + slot model
 BACKENDS: tuple[str, ...] = get_args(Backend)
 
 
@@ -37,8 +38,8 @@ def open_client(
     batch: BatchCollector | None = None,
     on_request: Callable[[str], None] | None = None,
 ) -> Iterator[LLMClient | None]:
-    """An `LLMClient` for the backend (None for offline); the local backend runs its server meanwhile."""
-    if backend == "offline":
+    """An `LLMClient` for the backend (None for the parsers); the local backend runs its server meanwhile."""
+    if backend in PARSERS:
         yield None
         return
     if backend == "openai":

@@ -3,6 +3,8 @@
 `translate(instruction, world, backend, client)` returns a `LanguageResult`:
 
 - `offline`: the grammar parser (`offline/`), leaf actions from the worlds' recipes; deterministic;
+- `learned`: the grammar's clauses and relations with a slot model trained on ALFRED's annotations
+  (`learned/`); multi-type words come back ranked as `ambiguities`;
 - `local` / `openai`: the paper's prompted stages through an OpenAI-compatible server
   (decomposition, relations per non-leaf node, action completion per leaf; optionally rephrasing +
   translation per non-leaf node), each answer validated and grounded in the scene.
@@ -17,12 +19,13 @@ from typing import Literal, Protocol
 
 from nl2hltl2plan.errors import HTTError, LLMError, WorldError
 from nl2hltl2plan.language import stages
+from nl2hltl2plan.language.backends import PARSERS
 from nl2hltl2plan.language.grounding import AffordanceLookup, Grounder, world_lookup
 from nl2hltl2plan.language.htt_build import build_htt
 from nl2hltl2plan.language.llm.batch import PendingAnswer
 from nl2hltl2plan.language.llm.client import LLMClient
 from nl2hltl2plan.language.ltl_generation import llm_generate_ltl, translator_client
-from nl2hltl2plan.language.result import LanguageResult
+from nl2hltl2plan.language.result import Ambiguity, LanguageResult
 from nl2hltl2plan.language.spec_builder import GenerateLTL, build_spec
 from nl2hltl2plan.language.tasks import BaseTaskSpec, task_letter, transitive_reduction
 from nl2hltl2plan.logic.hierarchical import LeafOrFormula
@@ -51,6 +54,7 @@ def translate(
     actions: ActionSource = "auto",
     strict: bool = True,
     build: bool = True,
+    choices: dict[str, str] | None = None,
 ) -> LanguageResult:
     """Instruction -> LanguageResult (HTT, base tasks, leaf actions, hierarchical spec).
 
@@ -59,16 +63,18 @@ def translate(
     two checked against the compiler; `actions`: "recipe" (worlds recipes), "llm" (action completion
     prompts), "auto" (recipe offline, llm otherwise) or "none"; `strict`: an object the scene lacks
     raises WorldError ("no Statue in FloorPlan17") instead of being reported in `issues`;
-    `build`: run Algorithm 1 (off: HTT and base tasks only).
+    `build`: run Algorithm 1 (off: HTT and base tasks only); `choices`: a user's pick for an
+    ambiguous slot, `{"A.receptacle": "SideTable"}` (task id . role -> scene type).
     """
     instruction = " ".join(instruction.split())
     if not instruction:
         raise HTTError("empty instruction")
     types = set(world.object_types()) if world is not None else None
     scene = world.name if world is not None else None
-    if backend == "offline":
+    if backend in PARSERS:
         look = world_lookup(world) if isinstance(world, World) else None
-        res = _offline(instruction, types, scene, strict, look)
+        res = _parse(backend, instruction, types, scene, strict, look)
+        _apply_choices(res, choices or {})
         _finish(res, world, backend, client, ltl, actions, build)
         return res
     if client is None:
@@ -92,7 +98,7 @@ def _finish(
     types = set(world.object_types()) if world is not None else None
     scene = world.name if world is not None else None
     res.backend = backend
-    mode = actions if actions != "auto" else ("recipe" if backend == "offline" else "llm")
+    mode = actions if actions != "auto" else ("recipe" if backend in PARSERS else "llm")
     if mode == "recipe" and isinstance(world, World):
         res.leaf_specs = recipe_leaf_specs(res.tasks, world, res.leaf_task)
     elif mode == "llm" and client is not None and types is not None:
@@ -129,12 +135,28 @@ def recipe_leaf_specs(
     return out
 
 
-def _offline(
-    instruction: str, types: set[str] | None, scene: str | None, strict: bool, look: AffordanceLookup | None
+def _parse(
+    backend: str,
+    instruction: str,
+    types: set[str] | None,
+    scene: str | None,
+    strict: bool,
+    look: AffordanceLookup | None,
 ) -> LanguageResult:
-    from nl2hltl2plan.language.offline import parse_instruction
+    """The parser backends: the grammar alone, or the grammar with the learned slot model."""
+    from nl2hltl2plan.language import learned, offline
 
-    parsed = parse_instruction(instruction, types, scene or "the scene", strict=strict, affordances=look)
+    ambiguities: list[Ambiguity] = []
+    if backend == "learned":
+        lp = learned.parse_instruction(
+            instruction, types, scene or "the scene", strict=strict, affordances=look
+        )
+        parsed: offline.OfflineParse = lp
+        ambiguities = lp.ambiguities
+    else:
+        parsed = offline.parse_instruction(
+            instruction, types, scene or "the scene", strict=strict, affordances=look
+        )
     if not parsed.tasks:
         why = "; ".join(parsed.unparsed) or "no task verb found"
         raise HTTError(
@@ -145,7 +167,7 @@ def _offline(
         instruction, parsed.tasks, parsed.before, parsed.groups, parsed.group_texts
     )
     return LanguageResult(
-        backend="offline",
+        backend=backend,
         instruction=instruction,
         scene=scene,
         htt=htt,
@@ -153,9 +175,26 @@ def _offline(
         before=list(parsed.before),
         task_node=task_node,
         leaf_task=leaf_task,
+        ambiguities=ambiguities,
         unparsed=parsed.unparsed,
         issues=parsed.issues,
     )
+
+
+ROLES = ("object", "container", "receptacle", "light")
+
+
+def _apply_choices(res: LanguageResult, choices: dict[str, str]) -> None:
+    """A user's pick for an ambiguous slot (`plan --ask`): that slot becomes exactly the chosen type."""
+    by_id = {t.id: t for t in res.tasks}
+    for key, chosen in choices.items():
+        task_id, _, role = key.partition(".")
+        task = by_id.get(task_id)
+        if task is None or role not in ROLES:
+            raise HTTError(f"cannot apply the choice {key}={chosen}: no task {task_id!r} with a {role!r}")
+        setattr(task, role, [chosen])
+    picked = {key.partition(".")[0] + "." + key.partition(".")[2] for key in choices}
+    res.ambiguities = [a for a in res.ambiguities if f"{a.task}.{a.role}" not in picked]
 
 
 def _ground_fields(f: stages.TaskFields, g: Grounder | None, issues: list[str], strict: bool) -> BaseTaskSpec:

@@ -1,4 +1,4 @@
-"""LLM settings: one pydantic model filled from environment variables, then CLI flags.
+"""LLM settings: one pydantic-settings model filled from environment variables, then CLI flags.
 
 | variable | meaning | default |
 | --- | --- | --- |
@@ -24,11 +24,13 @@ import os
 from pathlib import Path
 from typing import Any, Literal
 
-from pydantic import BaseModel, Field, ValidationError
+from pydantic import AliasChoices, Field, ValidationError, field_validator
+from pydantic_settings import BaseSettings, SettingsConfigDict
 
 from nl2hltl2plan.errors import LLMError
 
 ENV = "NL2HLTL2PLAN_LLM_"
+_OFF = {"off", "none", "0", "no"}
 
 
 def default_cache_dir() -> Path:
@@ -36,53 +38,52 @@ def default_cache_dir() -> Path:
     return Path(base) / "nl2hltl2plan" / "llm"
 
 
-class LLMSettings(BaseModel):
-    base_url: str | None = None
+def _env(*names: str) -> AliasChoices:
+    """Accept the field's name (CLI flags) and these variables."""
+    return AliasChoices(*names)
+
+
+class LLMSettings(BaseSettings):
+    """Every LLM option: environment variables (table above), overridden by CLI flags (`from_env`)."""
+
+    model_config = SettingsConfigDict(env_prefix=ENV, extra="ignore", populate_by_name=True)
+
+    base_url: str | None = Field(
+        default=None, validation_alias=_env("base_url", ENV + "BASE_URL", "OPENAI_BASE_URL")
+    )
     model: str = "gpt-4o"
-    api_key: str | None = None
+    api_key: str | None = Field(
+        default=None, validation_alias=_env("api_key", ENV + "API_KEY", "OPENAI_API_KEY")
+    )
     temperature: float = Field(default=0.0, ge=0, le=2, allow_inf_nan=False)
     timeout: float = Field(default=120.0, gt=0, allow_inf_nan=False)
     instruction_timeout: float = Field(default=600.0, gt=0, allow_inf_nan=False)
-    max_retries: int = Field(default=3, ge=0, le=20)
-    max_reasks: int = Field(default=2, ge=0, le=10)
+    max_retries: int = Field(default=3, ge=0, le=20, validation_alias=_env("max_retries", ENV + "RETRIES"))
+    max_reasks: int = Field(default=2, ge=0, le=10, validation_alias=_env("max_reasks", ENV + "REASKS"))
     backoff: float = Field(default=1.0, ge=0, allow_inf_nan=False)
     cache_scope: str | None = None  # names the answering server in cache keys; None: the base URL
-    json_mode: Literal["auto", "schema", "object", "none"] = "auto"
+    json_mode: Literal["auto", "schema", "object", "none"] = Field(
+        default="auto", validation_alias=_env("json_mode", ENV + "JSON")
+    )
     max_tokens: int = Field(default=1024, ge=1)
     seed: int | None = 0
-    cache_dir: Path | None = None
-    gguf: Path | None = None
+    cache_dir: Path | None = Field(
+        default_factory=default_cache_dir, validation_alias=_env("cache_dir", ENV + "CACHE")
+    )
+    gguf: Path | None = Field(default=None, validation_alias=_env("gguf", "NL2HLTL2PLAN_GGUF"))
     threads: int = Field(default=1, ge=1, le=256)
     ctx: int = Field(default=8192, ge=256)
 
+    @field_validator("cache_dir", mode="before")
+    @classmethod
+    def _cache_off(cls, value: Any) -> Any:
+        return None if isinstance(value, str) and value.strip().lower() in _OFF else value
+
     @classmethod
     def from_env(cls, **overrides: Any) -> LLMSettings:
-        """Environment first, then the non-None `overrides` (CLI flags)."""
-        env = os.environ
-        raw: dict[str, Any] = {
-            "base_url": env.get(ENV + "BASE_URL") or env.get("OPENAI_BASE_URL"),
-            "model": env.get(ENV + "MODEL"),
-            "api_key": env.get(ENV + "API_KEY") or env.get("OPENAI_API_KEY"),
-            "temperature": env.get(ENV + "TEMPERATURE"),
-            "timeout": env.get(ENV + "TIMEOUT"),
-            "instruction_timeout": env.get(ENV + "INSTRUCTION_TIMEOUT"),
-            "cache_scope": env.get(ENV + "CACHE_SCOPE"),
-            "max_retries": env.get(ENV + "RETRIES"),
-            "max_reasks": env.get(ENV + "REASKS"),
-            "json_mode": env.get(ENV + "JSON"),
-            "gguf": env.get("NL2HLTL2PLAN_GGUF"),
-            "threads": env.get(ENV + "THREADS"),
-            "ctx": env.get(ENV + "CTX"),
-        }
-        cache = env.get(ENV + "CACHE")
-        raw["cache_dir"] = (
-            None if (cache or "").lower() in {"off", "none", "0", "no"} else (cache or default_cache_dir())
-        )
-        raw.update({k: v for k, v in overrides.items() if v is not None})
-        if overrides.get("cache_dir") == "off":
-            raw["cache_dir"] = None
+        """Environment first, then the non-None `overrides` (CLI flags); one-line errors."""
         try:
-            return cls.model_validate({k: v for k, v in raw.items() if v is not None or k == "cache_dir"})
+            return cls(**{k: v for k, v in overrides.items() if v is not None})
         except ValidationError as exc:
             bad = "; ".join(f"{'.'.join(map(str, e['loc']))}: {e['msg']}" for e in exc.errors())
             raise LLMError(f"invalid LLM settings ({ENV}* variables or flags): {bad}") from None

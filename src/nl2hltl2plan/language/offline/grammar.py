@@ -324,7 +324,6 @@ NEAR_PREPS = {
     "toward",
     "towards",
 }
-SOURCE_PREPS = {"from", "out of", "off", "off of", "away from"}
 WITH_PREPS = {"with", "containing", "holding", "along with", "together with", "filled with", "full of"}
 LIGHT_PREPS = {
     "by the light of",

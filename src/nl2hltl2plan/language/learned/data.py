@@ -1,0 +1,204 @@
+"""Training and validation data from ALFRED's human annotations, honestly split.
+
+One `Example` per (trial, annotation): the crowd-written `task_desc` and the base task its trial's
+`task_type` / `pddl_params` define. Train: ALFRED `train` trials minus every trial listed in
+`benchmark/training_exclusions.txt` (the families test50 was composed from); validation: `valid_seen`
+and `valid_unseen`. `compose` builds multi-task instructions from validation examples of one floor plan
+with varied temporal connectives and their ground-truth `before` pairs (fixed seed).
+"""
+
+from __future__ import annotations
+
+import gzip
+import json
+import random
+import re
+from dataclasses import dataclass, field
+from functools import lru_cache
+
+from nl2hltl2plan.config import data_path
+from nl2hltl2plan.errors import DataError
+from nl2hltl2plan.language.tasks import BaseTaskSpec, task_letter
+
+KIND_OF_TASK_TYPE = {
+    "pick_and_place_simple": "place",
+    "pick_two_obj_and_place": "place_two",
+    "pick_and_place_with_movable_recep": "place_in_container",
+    "look_at_obj_in_light": "examine_in_light",
+    "pick_clean_then_place_in_recep": "clean_place",
+    "pick_heat_then_place_in_recep": "heat_place",
+    "pick_cool_then_place_in_recep": "cool_place",
+}
+SLOTS = ("object", "container", "receptacle", "light")
+SPLITS = ("train", "valid_seen", "valid_unseen")
+
+
+@dataclass(frozen=True)
+class Example:
+    text: str
+    trial: str
+    split: str
+    floor_plan: str
+    kind: str
+    object: str
+    container: str  # "" when the kind has none
+    receptacle: str
+    light: str
+    sliced: bool
+
+    def slot(self, name: str) -> str:
+        return str(getattr(self, name))
+
+    def as_task(self, task_id: str = "A") -> BaseTaskSpec:
+        return BaseTaskSpec(
+            id=task_id,
+            text=self.text,
+            kind=self.kind,  # type: ignore[arg-type]
+            object=[self.object],
+            count=2 if self.kind == "place_two" else 1,
+            sliced=self.sliced,
+            container=[self.container] if self.container else None,
+            receptacle=[self.receptacle] if self.receptacle else None,
+            light=[self.light] if self.light else None,
+        )
+
+
+# What a text must say for a treatment kind to be read from it. ALFRED annotators often leave the
+# treatment out ("put the apple on the table" for a cool task); the instruction is the authority
+# (ANNOTATION_GUIDE.md), so the kind head learns only from texts that state it.
+_TREATMENT = {
+    "heat_place": (re.compile(r"heat|warm|cook|hot\b|micro"), re.compile(r"microwave")),
+    "cool_place": (re.compile(r"cool|chill|cold|froz|freez"), re.compile(r"fridge|refrigerat|freezer")),
+    "clean_place": (re.compile(r"clean|wash|rins|scrub|wet|water"), re.compile(r"sink|faucet|tap\b")),
+}
+_APPLIANCE = {"heat_place": "Microwave", "cool_place": "Fridge", "clean_place": "SinkBasin"}
+
+
+def states_kind(e: Example) -> bool:
+    """Whether the text states its treatment (words, or the appliance when it is not the destination)."""
+    if e.kind not in _TREATMENT:
+        return True
+    text = e.text.lower()
+    words, appliance = _TREATMENT[e.kind]
+    return bool(words.search(text)) or (e.receptacle != _APPLIANCE[e.kind] and bool(appliance.search(text)))
+
+
+def states_slots(e: Example) -> bool:
+    """Whether every labelled type is named in the text (a lexicon phrase that can mean it): ALFRED's
+    labels are the trial's parameters, and annotators often name another object or none."""
+    from nl2hltl2plan.language.grounding import find_mentions
+
+    named = {t for m in find_mentions(e.text) for t in m.entry.types}
+    return all(t in named for t in (e.object, e.container, e.receptacle, e.light) if t)
+
+
+def faithful(e: Example) -> bool:
+    """The text states the kind and names every slot's type: what the benchmark's annotation asks."""
+    return states_kind(e) and states_slots(e)
+
+
+@dataclass
+class Composition:
+    """A synthetic multi-task instruction with its ground truth (validation only)."""
+
+    instruction: str
+    scene: str
+    tasks: list[BaseTaskSpec]
+    before: list[tuple[str, str]]
+    template: str = ""
+    trials: list[str] = field(default_factory=list)
+
+
+@lru_cache(maxsize=1)
+def excluded_trials() -> frozenset[str]:
+    lines = data_path("benchmark", "training_exclusions.txt").read_text().splitlines()
+    return frozenset(s.strip() for s in lines if s.strip() and not s.startswith("#"))
+
+
+def _example(row: dict, text: str) -> Example:
+    p = row["pddl_params"]
+    kind = KIND_OF_TASK_TYPE[row["task_type"]]
+    return Example(
+        text=" ".join(text.split()),
+        trial=row["trial"],
+        split=row["split"],
+        floor_plan=row["floor_plan"],
+        kind=kind,
+        object=p["object_target"],
+        container=p["mrecep_target"] if kind == "place_in_container" else "",
+        receptacle=p["parent_target"] if kind != "examine_in_light" else "",
+        light=p["toggle_target"] if kind == "examine_in_light" else "",
+        sliced=bool(p["object_sliced"]),
+    )
+
+
+@lru_cache(maxsize=1)
+def load_examples() -> dict[str, list[Example]]:
+    """Examples by split (train / valid_seen / valid_unseen); excluded trials never appear."""
+    banned = excluded_trials()
+    out: dict[str, list[Example]] = {s: [] for s in SPLITS}
+    with gzip.open(data_path("alfred", "trials.jsonl.gz"), "rt") as fh:
+        for line in fh:
+            row = json.loads(line)
+            if row["split"] not in out or not row.get("task_type") or row["trial"] in banned:
+                continue
+            for ann in row["annotations"]:
+                if ann.get("task_desc", "").strip():
+                    out[row["split"]].append(_example(row, ann["task_desc"]))
+    if not out["train"]:
+        raise DataError("no ALFRED training examples found in alfred/trials.jsonl.gz")
+    return out
+
+
+# Connective templates: (text with {0}, {1} ... for clauses, before pairs as clause indices).
+TEMPLATES_2: list[tuple[str, list[tuple[int, int]]]] = [
+    ("First {0}, then {1}.", [(0, 1)]),
+    ("{0}. Then {1}.", [(0, 1)]),
+    ("After you {0}, {1}.", [(0, 1)]),
+    ("{1} after you {0}.", [(0, 1)]),
+    ("{0} before you {1}.", [(0, 1)]),
+    ("Once done with the task to {0}, {1}.", [(0, 1)]),
+    ("{0} and {1} in any order.", []),
+    ("{0}. At any time, {1}.", []),
+    ("{0}. Simultaneously, {1}.", []),
+    ("{1}. Before that, {0}.", [(0, 1)]),
+]
+TEMPLATES_3: list[tuple[str, list[tuple[int, int]]]] = [
+    ("First {0}, then {1}, and finally {2}.", [(0, 1), (1, 2)]),
+    ("{2} after you {0}. At any time, {1}.", [(0, 2)]),
+    ("{0} and {1} in any order. Finally, {2}.", [(0, 2), (1, 2)]),
+    ("{0}. Then {1}. Meanwhile, {2}.", [(0, 1)]),
+]
+
+
+def _clause(text: str) -> str:
+    t = text.strip().rstrip(".!").strip()
+    return t[:1].lower() + t[1:] if t else t
+
+
+def compose(examples: list[Example], n: int, seed: int = 0) -> list[Composition]:
+    """`n` synthetic 2- and 3-task instructions, each from examples of one floor plan (deterministic)."""
+    rng = random.Random(seed)
+    by_plan: dict[str, list[Example]] = {}
+    for e in examples:
+        by_plan.setdefault(e.floor_plan, []).append(e)
+    plans = sorted(p for p, es in by_plan.items() if len({e.trial for e in es}) >= 3)
+    out: list[Composition] = []
+    while len(out) < n and plans:
+        plan = rng.choice(plans)
+        k = rng.choice((2, 3))
+        template, pairs = rng.choice(TEMPLATES_2 if k == 2 else TEMPLATES_3)
+        chosen: list[Example] = []
+        for e in rng.sample(by_plan[plan], len(by_plan[plan])):
+            if all(e.trial != c.trial for c in chosen):
+                chosen.append(e)
+            if len(chosen) == k:
+                break
+        text = template.format(*(_clause(e.text) for e in chosen))
+        text = text[:1].upper() + text[1:]
+        tasks = [e.as_task(task_letter(i)) for i, e in enumerate(chosen)]
+        for t, e in zip(tasks, chosen, strict=True):
+            t.text = _clause(e.text)
+        before = [(task_letter(a), task_letter(b)) for a, b in pairs]
+        out.append(Composition(text, plan, tasks, before, template, [e.trial for e in chosen]))
+    return out

@@ -1,0 +1,199 @@
+"""The learned backend's entry point: grammar for structure, the slot model for what each clause asks.
+
+The offline grammar parser segments the instruction into clauses and reads the temporal relations and
+groups (it does those well). For each clause the slot model predicts the task kind and ranks the
+scene's types for the object, container, receptacle and lamp. Where the two disagree the policy below
+decides (chosen on valid_seen, see docs/learned.md): the model's kind; for a slot, the grammar's types
+unless the model's top scene type is confident (`override`) or the grammar found nothing in the scene.
+A slot whose best two scene types are close is reported as an `Ambiguity` with both ranked.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+from pathlib import Path
+
+from pydantic import Field
+
+from nl2hltl2plan.errors import WorldError
+from nl2hltl2plan.language.grounding import AffordanceLookup, find_mentions
+from nl2hltl2plan.language.learned.model import SlotModel, SlotPrediction
+from nl2hltl2plan.language.offline import OfflineParse
+from nl2hltl2plan.language.offline import parse_instruction as grammar_parse
+from nl2hltl2plan.language.result import Ambiguity
+from nl2hltl2plan.language.tasks import BaseTaskSpec, task_letter
+
+ROLE_OF_KIND = {
+    "place_in_container": ("object", "container", "receptacle"),
+    "examine_in_light": ("object", "light"),
+}
+
+
+@dataclass(frozen=True)
+class Policy:
+    """How grammar and model are combined (defaults chosen on valid_seen)."""
+
+    kind_override: float = 0.8  # the model's kind replaces the grammar's when its probability is this high
+    override: float = 0.9  # the model replaces the grammar's slot type when its top scene type is this sure
+    sliced_from_model: bool = True
+    ambiguous_ratio: float = 0.5  # second candidate >= ratio * first -> reported as ambiguous
+
+
+class LearnedParse(OfflineParse):
+    """The offline parser's result plus the ranked alternatives of ambiguous words."""
+
+    ambiguities: list[Ambiguity] = Field(default_factory=list)
+
+
+@lru_cache(maxsize=2)
+def load_model(path: Path | None = None) -> SlotModel:
+    return SlotModel.load(path)
+
+
+def _roles(kind: str) -> tuple[str, ...]:
+    return ROLE_OF_KIND.get(kind, ("object", "receptacle"))
+
+
+def _choose(
+    grammar: list[str] | None, ranked: list[tuple[str, float]], types: set[str] | None, policy: Policy
+) -> list[str] | None:
+    in_scene = [t for t in grammar or [] if types is None or t in types]
+    if ranked and (not in_scene or (ranked[0][1] >= policy.override and ranked[0][0] not in in_scene)):
+        if grammar and not in_scene and types is not None:
+            return grammar  # the grammar named a type the scene lacks: keep it, it is reported as missing
+        return [ranked[0][0]]
+    if in_scene and len(in_scene) > 1 and ranked:
+        order = {t: q for t, q in ranked}
+        return sorted(in_scene, key=lambda t: -order.get(t, 0.0))
+    return grammar or None
+
+
+def _ambiguity(
+    task: BaseTaskSpec, role: str, chosen: list[str], ranked: list[tuple[str, float]], policy: Policy
+) -> Ambiguity | None:
+    """Several scene types kept for the word (e.g. "table"), or the model's best two close: ranked."""
+    prob = dict(ranked)
+    if len(chosen) > 1:
+        total = sum(prob.get(t, 0.0) for t in chosen) or 1.0
+        cands = [(t, prob.get(t, 0.0) / total) for t in chosen]
+    elif len(ranked) > 1 and ranked[0][0] in chosen and ranked[1][1] >= policy.ambiguous_ratio * ranked[0][1]:
+        cands = ranked[:3]
+    else:
+        return None
+    return Ambiguity(
+        task=task.id,
+        role=role,
+        word=_word_for(task.text, [t for t, _ in cands]),
+        candidates=[t for t, _ in cands],
+        confidence=[round(q, 3) for _, q in cands],
+    )
+
+
+def _word_for(text: str, candidates: list[str]) -> str:
+    """The phrase of the clause that can mean the candidates ("the table"), else the clause itself."""
+    for m in find_mentions(text):
+        if set(candidates) & set(m.entry.types):
+            return m.surface
+    return text
+
+
+def combine(
+    task: BaseTaskSpec,
+    pred: SlotPrediction,
+    types: set[str] | None,
+    policy: Policy,
+    ambiguities: list[Ambiguity],
+) -> BaseTaskSpec:
+    """One base task from the grammar's reading of a clause and the model's prediction for it."""
+    kind = pred.top_kind if pred.kind[0][1] >= policy.kind_override else task.kind
+    if "place_in_container" in (kind, task.kind) and kind != task.kind:
+        kind = task.kind  # a container needs a second object the grammar read (annotators often omit it)
+    values: dict[str, list[str] | None] = {
+        "object": None,
+        "container": None,
+        "receptacle": None,
+        "light": None,
+    }
+    for role in _roles(kind):
+        values[role] = _choose(getattr(task, role), pred.slots.get(role, []), types, policy)
+        amb = _ambiguity(task, role, values[role] or [], pred.slots.get(role, []), policy)
+        if amb is not None:
+            ambiguities.append(amb)
+    sliced = pred.sliced >= 0.5 if policy.sliced_from_model else task.sliced
+    return BaseTaskSpec(
+        id=task.id,
+        text=task.text,
+        kind=kind,  # type: ignore[arg-type]
+        object=values["object"] or task.object,
+        count=2 if kind == "place_two" else 1,
+        sliced=sliced,
+        container=values["container"],
+        receptacle=values["receptacle"],
+        light=values["light"],
+    )
+
+
+def parse_instruction(
+    instruction: str,
+    types: set[str] | frozenset[str] | None = None,
+    scene: str = "the scene",
+    strict: bool = True,
+    affordances: AffordanceLookup | None = None,
+    *,
+    policy: Policy | None = None,
+    model: SlotModel | None = None,
+) -> LearnedParse:
+    """Parse one instruction (the offline parser's contract, plus `ambiguities`).
+
+    `strict=True`: a slot whose types the scene lacks raises `WorldError`; otherwise it is listed in `issues`.
+    """
+    policy = policy or Policy()
+    model = model or load_model()
+    scene_types = set(types) if types is not None else None
+    g = grammar_parse(instruction, scene_types, scene, strict=False, affordances=affordances)
+    drafts = list(g.tasks)
+    unparsed = list(g.unparsed)
+    whole = not drafts and bool(instruction.strip())
+    if whole:  # no clause the grammar reads: the whole text may still be one task
+        drafts = [BaseTaskSpec(id=task_letter(0), text=instruction.strip(), kind="place", object=[])]
+    preds = model.predict([d.text or instruction for d in drafts], scene_types)
+    ambiguities: list[Ambiguity] = []
+    tasks = [combine(d, p, scene_types, policy, ambiguities) for d, p in zip(drafts, preds, strict=True)]
+    if whole and not _names_its_types(tasks[0]):
+        tasks, ambiguities = [], []  # the model would invent a task ("hello there"): keep what is unparsed
+    elif whole:
+        unparsed = []
+    issues = _missing(tasks, scene_types, scene)
+    if strict and issues:
+        raise WorldError(issues[0])
+    return LearnedParse(
+        instruction=instruction,
+        tasks=tasks,
+        before=list(g.before),
+        groups=g.groups,
+        group_texts=g.group_texts,
+        unparsed=unparsed,
+        issues=issues,
+        ambiguities=ambiguities,
+    )
+
+
+def _names_its_types(task: BaseTaskSpec) -> bool:
+    """Whether the text names (a lexicon phrase for) the type chosen for every slot of the task."""
+    named = {t for m in find_mentions(task.text) for t in m.entry.types}
+    return all(set(getattr(task, r) or []) & named for r in _roles(task.kind))
+
+
+def _missing(tasks: list[BaseTaskSpec], types: set[str] | None, scene: str) -> list[str]:
+    if types is None:
+        return []
+    out = []
+    for t in tasks:
+        for role in _roles(t.kind):
+            vals = getattr(t, role) or []
+            if not vals:
+                out.append(f"task {t.id} ({t.text!r}): no {role} found in {scene}")
+            elif not any(v in types for v in vals):
+                out.append(f"no {vals[0]} in {scene}")
+    return out

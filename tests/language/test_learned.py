@@ -1,0 +1,136 @@
+"""The learned backend: honest split, deterministic synthesis, the committed model, grounding."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from nl2hltl2plan.errors import DataError, WorldError
+from nl2hltl2plan.language.learned import parse_instruction
+from nl2hltl2plan.language.learned.data import Example, compose, excluded_trials, load_examples
+from nl2hltl2plan.language.learned.inference import load_model
+from nl2hltl2plan.language.learned.model import SlotModel
+
+KITCHEN = {
+    "Apple",
+    "Fridge",
+    "CounterTop",
+    "Microwave",
+    "Mug",
+    "CoffeeMachine",
+    "DiningTable",
+    "SideTable",
+    "Knife",
+    "Bowl",
+    "SinkBasin",
+    "Sink",
+    "Faucet",
+    "Cabinet",
+    "Plate",
+    "Tomato",
+    "Bread",
+    "Potato",
+}
+LIVING = {"FloorLamp", "DeskLamp", "KeyChain", "Sofa", "Pillow", "RemoteControl", "CoffeeTable", "SideTable"}
+
+
+def _ex(trial: str, plan: str, text: str, obj: str, recep: str) -> Example:
+    return Example(text, trial, "valid_seen", plan, "place", obj, "", recep, "", False)
+
+
+def test_split_never_contains_an_excluded_trial(shared_data: Path) -> None:
+    banned = excluded_trials()
+    data = load_examples()
+    assert len(banned) > 2000 and len(data["train"]) > 10000
+    for split, examples in data.items():
+        assert not {e.trial for e in examples} & banned, split
+        assert {e.split for e in examples} == {split}
+
+
+def test_synthesis_is_deterministic_and_labels_its_order() -> None:
+    ex = [
+        _ex(f"t{i}", "FloorPlan1", f"Put the apple {i} on the counter.", "Apple", "CounterTop")
+        for i in range(4)
+    ]
+    a, b = compose(ex, 30, seed=3), compose(ex, 30, seed=3)
+    assert [(c.instruction, c.before) for c in a] == [(c.instruction, c.before) for c in b]
+    assert [c.instruction for c in compose(ex, 30, seed=4)] != [c.instruction for c in a]
+    first_then = [c for c in a if c.template == "First {0}, then {1}."]
+    for c in first_then:
+        assert c.before == [("A", "B")] and len(c.tasks) == 2
+
+
+@pytest.mark.parametrize(
+    ("text", "types", "want"),
+    [
+        ("Put a chilled apple on the counter.", KITCHEN, [("cool_place", "Apple", "CounterTop")]),
+        ("Heat a potato and put it on the plate.", KITCHEN, [("heat_place", "Potato", "Plate")]),
+        (
+            "Examine the remote under the floor lamp.",
+            LIVING,
+            [("examine_in_light", "RemoteControl", "FloorLamp")],
+        ),
+        ("Put two pillows on the sofa.", LIVING, [("place_two", "Pillow", "Sofa")]),
+    ],
+)
+def test_committed_model_parses_new_sentences(
+    text: str, types: set[str], want: list[tuple[str, str, str]]
+) -> None:
+    r = parse_instruction(text, types, "test")
+    got = [(t.kind, t.object[0], (t.light or t.receptacle or [""])[0]) for t in r.tasks]
+    assert got == want
+
+
+def test_relations_and_slices_survive() -> None:
+    r = parse_instruction(
+        "First rinse a mug and put it in the coffee machine, then put a slice of tomato on the table.",
+        KITCHEN,
+        "test",
+    )
+    assert [t.kind for t in r.tasks] == ["clean_place", "place"]
+    assert r.tasks[1].sliced and r.tasks[1].object == ["Tomato"]
+    assert r.before == [("A", "B")]
+
+
+def test_grounding_ranks_only_scene_types_and_reports_close_calls() -> None:
+    pred = load_model().predict(["put the keys on the table"], LIVING)[0]
+    for role, ranked in pred.slots.items():
+        assert all(t in LIVING for t, _ in ranked), role
+        assert ranked == sorted(ranked, key=lambda x: -x[1])
+    r = parse_instruction(
+        "Put a knife in a bowl and put the bowl on the table.", KITCHEN | {"ButterKnife"}, "test"
+    )
+    assert r.ambiguities, "Knife vs ButterKnife should be a close call"
+    for a in r.ambiguities:
+        assert set(a.candidates) <= KITCHEN | {"ButterKnife"} and len(a.confidence) == len(a.candidates)
+        assert a.confidence == sorted(a.confidence, reverse=True)
+    assert {a.word for a in r.ambiguities} <= {"knife", "table"}
+
+
+def test_missing_type_is_an_error_when_strict() -> None:
+    with pytest.raises(WorldError, match="Statue"):
+        parse_instruction("Put the statue on the sofa.", LIVING, "test")
+    r = parse_instruction("Put the statue on the sofa.", LIVING, "test", strict=False)
+    assert r.issues and "Statue" in r.issues[0]
+
+
+def test_bad_artifact_is_a_one_line_error(tmp_path: Path) -> None:
+    bad = tmp_path / "m.npz"
+    bad.write_bytes(b"not a model")
+    with pytest.raises(DataError, match="cannot read"):
+        SlotModel.load(bad)
+    with pytest.raises(DataError, match="train language"):
+        SlotModel.load(tmp_path / "absent.npz")
+
+
+def test_train_command_is_registered(capsys: pytest.CaptureFixture[str]) -> None:
+    from nl2hltl2plan.cli.main import main
+
+    assert main(["train", "language", "--help"]) == 0
+    assert "--seed" in capsys.readouterr().out
+
+
+def test_no_task_is_invented_from_text_without_one() -> None:
+    for text in ("hello there", "apple"):
+        assert parse_instruction(text, KITCHEN, "test", strict=False).tasks == []

@@ -1,0 +1,46 @@
+"""Step 6 of the offline parser: order markers -> `before` pairs."""
+
+import pytest
+
+from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.language.offline.drafts import DraftBuilder
+from nl2hltl2plan.language.offline.relations import relate
+from nl2hltl2plan.language.offline.sentences import read_sentences
+from nl2hltl2plan.language.offline.tasks import TaskBuilder, build_tasks
+
+
+def _before(text: str) -> tuple[list[tuple[str, str]], list[str], list[str]]:
+    b = TaskBuilder(None, strict=False)
+    read = read_sentences(text)
+    drafting = DraftBuilder(b)
+    for s in read.sentences:
+        drafting.add_sentence(s)
+    tasks = build_tasks(drafting.out.drafts, drafting.out.units, b, text)
+    before = relate(tasks, read.relations, b, text)
+    return before, [s.id for s in tasks.specs], b.unparsed
+
+
+def test_then_and_finally() -> None:
+    before, ids, _ = _before(
+        "Put the pen on the desk. Then put the book on the shelf. Put the cup in the sink at any time. "
+        "Finally, put the apple in the fridge."
+    )
+    assert ids == ["A", "B", "C", "D"]
+    assert before == [("A", "B"), ("B", "D")]  # the free task C stays unordered
+
+
+def test_after_a_reference_and_a_relation_sentence() -> None:
+    before, _, _ = _before(
+        "After placing the book on the shelf, put the pen on the desk. Put the book on the shelf."
+    )
+    assert before == [("B", "A")]
+    before, _, _ = _before(
+        "Put the pen on the desk. Put the book on the shelf. The book should be placed before the pen."
+    )
+    assert before == [("B", "A")]
+
+
+def test_contradictory_order_is_refused_naming_the_cycle() -> None:
+    text = "Put the pen on the desk. Then put the book on the shelf. The book should be placed before the pen"
+    with pytest.raises(HTTError, match=r"contradictory ordering in the instruction: (A|B) .* before"):
+        _before(text)

@@ -1,0 +1,36 @@
+"""Step 1 of the offline parser: sentences and their order markers."""
+
+from nl2hltl2plan.language.offline import grammar as G
+from nl2hltl2plan.language.offline.sentences import normalize, read_sentences
+
+
+def test_normalize_drops_remarks_and_spaces_sentences() -> None:
+    assert normalize("Put the mug (the blue one)  in the sink.Then wash it") == (
+        "Put the mug in the sink. Then wash it"
+    )
+
+
+def test_markers_are_stripped_and_recorded() -> None:
+    read = read_sentences("Put the mug in the sink. Then, place the apple on the table at any time.")
+    first, second = read.sentences
+    assert (first.index, first.body, first.markers, first.trailing) == (0, "Put the mug in the sink", [], [])
+    assert second.body == "place the apple on the table"
+    assert second.markers == [(G.THEN, "")]
+    assert second.trailing == [(G.FREE, "")]
+    assert second.offset == len("Put the mug in the sink. Then, ")
+
+
+def test_after_reference_keeps_its_commas() -> None:
+    read = read_sentences("After washing the cup, the bowl and the plate, put the fork in the drawer.")
+    (s,) = read.sentences
+    assert s.markers == [(G.AFTER_REF, "washing the cup, the bowl and the plate")]
+    assert s.body == "put the fork in the drawer"
+
+
+def test_relation_and_no_order_sentences_state_no_tasks() -> None:
+    read = read_sentences(
+        "Put the bowl on the table. The bowl should be placed before the cup. Order does not matter."
+    )
+    assert [s.body for s in read.sentences] == ["Put the bowl on the table"]
+    (rel,) = read.relations
+    assert (rel.kind, rel.a, rel.b) == ("before", "The bowl", "the cup")
