@@ -41,14 +41,30 @@ __all__ = [
 
 
 def load_world(name: str, trials: list[str] | None = None) -> World:
-    """ "demo" (built in) or an ALFRED floor plan "FloorPlanN" (movables from `trials`, see alfred.py)."""
+    """ "demo", "tabletop", "handover-line", "handover-square" (built in) or an ALFRED floor plan
+    "FloorPlanN" (movables from `trials`, see alfred.py)."""
     if name.lower() == "demo":
         if trials:
             raise WorldError("the demo world takes no ALFRED trials")
         return demo_world()
+    if name.lower() in ("tabletop", "handover-line", "handover-square"):
+        if trials:
+            raise WorldError(f"the {name} world takes no ALFRED trials")
+        return _experiment_world(name.lower())
     from nl2hltl2plan.worlds.alfred import load_floor_plan
 
     return load_floor_plan(name, trials)
+
+
+def _experiment_world(name: str) -> World:
+    """The paper's tabletop and four-arm handover worlds (default instance)."""
+    if name == "tabletop":
+        from nl2hltl2plan.worlds.tabletop import tabletop_world
+
+        return tabletop_world()
+    from nl2hltl2plan.worlds.handover import handover_world
+
+    return handover_world(name.split("-", 1)[1]).as_world()
 
 
 def build_benchmark_world(gt: GTInstance | dict) -> World:

@@ -1,0 +1,54 @@
+"""Four people's rephrasings of each tabletop task (the paper's Q3 user study), written here."""
+
+REPHRASINGS: dict[int, list[str]] = {
+    1: [
+        "Put the green apple on the blue plate and put the orange on the yellow plate.",
+        "Could you move the orange onto the yellow plate and the green apple onto the blue plate?",
+        "Please place the green apple in the blue plate. Also place the orange in the yellow plate.",
+        "Please place the orange in the yellow plate, and place the green apple in the blue plate too.",
+    ],
+    2: [
+        "Put the green apple on the pink plate, the orange on the yellow plate and the red apple on the "
+        "blue plate, in whatever order you like.",
+        "In any order, place the red apple in the blue plate, the orange in the yellow plate and the green "
+        "apple in the pink plate.",
+        "Put the orange in the yellow plate, the red apple in the blue plate and the green apple in the "
+        "pink plate. Order does not matter.",
+        "Could you put the green apple into the pink plate, the orange into the yellow plate and the red "
+        "apple into the blue plate?",
+    ],
+    3: [
+        "Put the carrot on the blue plate, the orange on the yellow plate, the green apple on the green "
+        "plate and the red apple on the pink plate, in any order.",
+        "In any order you like, place the red apple in the pink plate, the green apple in the green plate, "
+        "the orange in the yellow plate and the carrot in the blue plate.",
+        "Move the carrot to the blue plate, the orange to the yellow plate, the green apple to the green "
+        "plate and the red apple to the pink plate.",
+        "Please put the orange in the yellow plate, the carrot in the blue plate, the red apple in the pink "
+        "plate and the green apple in the green plate. The order is up to you.",
+    ],
+    4: [
+        "First put the green apple and the orange in the yellow plate. After that, put the carrot and the "
+        "red apple in the blue plate, in any order.",
+        "Start by placing the orange and the green apple in the yellow plate, then place the red apple and "
+        "the carrot in the blue plate.",
+        "First, place the green apple and the orange in the yellow plate. Then place the carrot and the red "
+        "apple in the blue plate.",
+        "Place the green apple and the orange in the yellow plate. After both are there, place the carrot "
+        "and the red apple in the blue plate in any order.",
+    ],
+}
+
+# Styles the offline parser does not yet read correctly (kept as expected failures for the parser work):
+HARDER: dict[int, list[str]] = {
+    1: ["Green apple goes in the blue plate, orange goes in the yellow plate.",
+        "Hey robot, drop the green apple into the blue plate and the orange into the yellow plate, thanks!"],
+    2: ["I need the orange in the yellow plate, the red apple in the blue plate and the green apple in the "
+        "pink plate. Order does not matter."],
+    4: ["Put the carrot and the red apple in the blue plate after you have put the green apple and the "
+        "orange in the yellow plate.",
+        "Before placing the carrot and red apple in the blue plate, place the green apple and orange in the "
+        "yellow plate.",
+        "Once the green apple and the orange are in the yellow plate, put the carrot and the red apple in "
+        "the blue plate."],
+}

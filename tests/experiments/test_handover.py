@@ -1,0 +1,201 @@
+"""Handover worlds (geometry, simulator, atoms), the cooperative planner and the eight task specs."""
+
+from __future__ import annotations
+
+import pytest
+
+from nl2hltl2plan.errors import PlanningError, WorldError
+from nl2hltl2plan.evaluation.handover import instance, judge, load_tasks
+from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
+from nl2hltl2plan.planning.coop import coop_plan, plan_world
+from nl2hltl2plan.worlds import load_world
+from nl2hltl2plan.worlds.handover import (
+    ARMS,
+    HandoverWorld,
+    compile_atom,
+    execute_handover,
+    handover_world,
+    initial_snap,
+    layout,
+)
+from nl2hltl2plan.worlds.plan import Plan, RobotPlan, Step
+
+TASKS = {t.id: t for t in load_tasks()}
+
+
+@pytest.mark.parametrize("config", ["square", "line"])
+def test_geometry_arms_share_cells_only_with_neighbours(config):
+    lay = layout(config)
+    assert set(lay.regions) == set("EFGHIJ")
+    for a in range(4):
+        assert lay.own(a), f"arm {ARMS[a]} has no own cell"
+        for b in range(4):
+            shared = lay.reach[a] & lay.reach[b]
+            neighbours = abs(a - b) in (1, 3) if config == "square" else abs(a - b) == 1
+            assert bool(shared) == (a == b or neighbours), (a, b)
+    assert all(len(lay.arms_reaching(c)) == 1 for c in lay.regions.values())  # regions are one arm's
+
+
+def test_bad_instances_are_refused():
+    lay = layout("square")
+    with pytest.raises(WorldError, match="cannot reach"):
+        HandoverWorld(lay, {"Red": (0, 1)}, ((4, 4), (0, 4), (4, 4), (4, 0)))
+    with pytest.raises(WorldError, match="same cell"):
+        HandoverWorld(lay, {"Red": (0, 1), "Blue": (0, 1)}, tuple(lay.own(a)[0] for a in range(4)))
+    with pytest.raises(WorldError, match="cannot read atom"):
+        compile_atom(handover_world(), "fly(Red)")
+    with pytest.raises(PlanningError, match="cannot be planned"):
+        coop_plan(handover_world(), [{"t": 'F "at(Green,J)"'}])
+
+
+def _plan(hw, steps_by_arm):
+    return Plan(
+        robots=[RobotPlan(robot=a, start=hw.arm_starts[a], steps=steps_by_arm.get(a, [])) for a in range(4)]
+    )
+
+
+def test_simulator_enforces_reach_collisions_and_capacity():
+    hw = handover_world("square")  # red E (0,1), blue F (0,3), yellow G (1,4); arms at their first own cell
+    # arm a walks out of its reach
+    bad = execute_handover(
+        hw,
+        _plan(
+            hw,
+            {
+                0: [
+                    Step(t=1, verb="move", cell=(0, 1)),
+                    Step(t=2, verb="move", cell=(0, 2)),
+                    Step(t=3, verb="move", cell=(0, 3)),
+                ]
+            },
+        ),
+    )
+    assert not bad.ok and "out of arm a's reach" in bad.violations[0]
+    # a and b both step onto the shared cell (0, 2)
+    clash = execute_handover(
+        hw,
+        _plan(
+            hw,
+            {
+                0: [Step(t=1, verb="move", cell=(0, 1)), Step(t=2, verb="move", cell=(0, 2))],
+                1: [Step(t=2, verb="move", cell=(0, 2))],
+            },
+        ),
+    )
+    assert not clash.ok and "occupied" in clash.violations[0]
+    # arm b picks blue on F and may not put it back onto G, which holds yellow
+    full = execute_handover(
+        hw,
+        _plan(
+            hw,
+            {
+                1: [
+                    Step(t=1, verb="move", cell=(0, 4)),
+                    Step(t=2, verb="move", cell=(0, 3)),
+                    Step(t=3, verb="pickup", objects=["Blue"]),
+                    Step(t=4, verb="move", cell=(0, 4)),
+                    Step(t=5, verb="move", cell=(1, 4)),
+                    Step(t=6, verb="put", objects=["Blue", "G"]),
+                ]
+            },
+        ),
+    )
+    assert full.violations == ["t=6 arm b: put(Blue,G): G already holds a block"]
+    assert full.final[1][1] == 1  # still holding blue
+
+
+def test_atoms_read_the_state():
+    hw = handover_world("square")
+    snap = initial_snap(hw)
+    assert compile_atom(hw, "at(Red,E)")(snap, None)
+    assert compile_atom(hw, "at(Blue,@Blue)")(snap, None)
+    assert compile_atom(hw, "occupied(F)")(snap, None) and compile_atom(hw, "empty(H)")(snap, None)
+    assert not compile_atom(hw, "away(Red)")(snap, None)
+    assert compile_atom(hw, "put(RedBlock,RegionJ)")(snap, ("put", 0, (3, 4)))
+
+
+def test_one_leaf_is_carried_out_by_several_arms():
+    hw = handover_world("square")
+    result = coop_plan(hw, [{"task1": 'F "at(Red,I)"'}])
+    assert result.solved and result.proven_optimal
+    assert result.handovers >= 1
+    arms_acting = {rp.robot for rp in result.plan.robots if any(s.verb == "pickup" for s in rp.steps)}
+    assert len(arms_acting) >= 2
+    assert [h.block for h in result.execution.handovers] == ["Red"] * result.handovers
+
+
+@pytest.mark.slow
+def test_astar_matches_plain_dijkstra_on_a_small_task():
+    hw = handover_world("square")
+    spec = [{"task1": "F(task1.1 & F task1.2)"}, {"task1.1": 'F "at(Red,H)"', "task1.2": 'F "away(Yellow)"'}]
+    fast = coop_plan(hw, spec)
+    slow = coop_plan(hw, spec, use_heuristic=False, weights=(1.0,))
+    assert fast.solved and slow.solved and slow.proven_optimal
+    assert fast.cost == slow.cost
+
+
+def test_negated_atoms_are_respected():
+    hw = handover_world("square")
+    spec = HierarchicalSpec.from_json(
+        [{"task1": '(!"pick(Blue)" U "pick(Red)") & F "at(Blue,I)" & F "at(Red,H)"'}]
+    )
+    result = coop_plan(hw, spec)
+    assert result.solved
+    picks = sorted((s.t, s.objects[0]) for rp in result.plan.robots for s in rp.steps if s.verb == "pickup")
+    assert picks[0][1] == "Red"
+
+
+def test_the_eight_task_specs_are_valid_and_bench_instances_are_seeded():
+    assert sorted(TASKS) == list(range(1, 9))
+    for task in TASKS.values():
+        spec = task.hierarchical()
+        hw = instance(task, 0, 0)
+        assert hw.layout.name == task.config
+        assert instance(task, 0, 0).blocks == hw.blocks and instance(task, 0, 1).arm_starts is not None
+        for atom in spec.atoms():
+            compile_atom(hw, atom)  # every atom is readable
+    assert instance(TASKS[4], 0, 3).start_region("Red") == "G"
+
+
+@pytest.mark.parametrize(
+    "task_id", [5, 6, pytest.param(1, marks=pytest.mark.slow), pytest.param(4, marks=pytest.mark.slow)]
+)
+def test_paper_tasks_are_solved_and_checked(task_id):
+    task = TASKS[task_id]
+    hw = instance(task, 0, 0)
+    result = coop_plan(hw, task.hierarchical())
+    ok, reasons = judge(hw, task.hierarchical(), result)
+    assert ok, reasons
+    if task_id == 6:  # "separately to G, H and I": all three there at the end, one per region
+        regions = hw.layout.regions
+        assert set(result.execution.final[2]) == {regions["G"], regions["H"], regions["I"]}
+    if task_id == 5:  # exchanging red and blue needs a temporary place for one of them
+        puts = [s.objects for rp in result.plan.robots for s in rp.steps if s.verb == "put"]
+        temp = [
+            p
+            for p in puts
+            if p[0] in ("Red", "Blue") and p[1] not in (hw.start_region("Red"), hw.start_region("Blue"))
+        ]
+        assert temp
+
+
+def test_plan_on_a_handover_world_uses_the_cooperative_planner():
+    world = load_world("handover-line")
+    result = plan_world(world, [{"task1": ["pickup(RedBlock)", "put(RedBlock,RegionJ)"]}])
+    assert result.status == "solved" and result.travel_m > 0 and result.total_cost > 0
+    # red goes from E (arm a) to J (arm d): every arm picks it up once
+    pickers = [rp.robot for rp in result.plan.robots for s in rp.steps if s.verb == "pickup"]
+    assert sorted(pickers) == [0, 1, 2, 3]
+    with pytest.raises(PlanningError, match="not a handover world"):
+        plan_world(load_world("tabletop"), [{"task1": 'F "at(Red,J)"'}])
+
+
+def test_pipeline_planning_stage_plans_handover_worlds_cooperatively():
+    from nl2hltl2plan.pipeline import PipelineOptions, planning_stage
+
+    world = load_world("handover-square")
+    spec = HierarchicalSpec.from_json([{"task1": ["pickup(RedBlock)", "put(RedBlock,RegionI)"]}])
+    planned = planning_stage(world, spec, world.default_starts[:1], PipelineOptions())
+    assert planned.result.solved and planned.result.model.startswith("cooperative")
+    pickers = {rp.robot for rp in planned.result.plan.robots for s in rp.steps if s.verb == "pickup"}
+    assert len(pickers) >= 2  # red goes from E (arm a) to I (arm c): handed over

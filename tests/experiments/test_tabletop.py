@@ -1,0 +1,126 @@
+"""The tabletop world, the tabletop bench (ours vs mention order), the LLM-as-planner baseline against a
+stub server, and the verbal-style rephrasings (paper's Q3)."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+from rephrasings import HARDER, REPHRASINGS
+
+from nl2hltl2plan.errors import WorldError
+from nl2hltl2plan.evaluation.baselines import LLMPlanAnswer, llm_planner, parse_llm_answer
+from nl2hltl2plan.evaluation.tabletop import load_tasks, run_bench, run_ours
+from nl2hltl2plan.language.llm.client import LLMClient
+from nl2hltl2plan.language.llm.settings import LLMSettings
+from nl2hltl2plan.language.tasks import transitive_closure
+from nl2hltl2plan.language.translate import translate
+from nl2hltl2plan.worlds import load_world
+from nl2hltl2plan.worlds.tabletop import HOME, draw_layout, tabletop_world
+
+TASKS = {t.id: t for t in load_tasks()}
+
+
+def signature(instruction: str) -> tuple[list, list]:
+    """Base tasks (kind, object, receptacle) and the closed ordering between them."""
+    r = translate(instruction, tabletop_world())
+    key = {t.id: (t.kind, tuple(t.object), tuple(t.receptacle or ())) for t in r.tasks}
+    closure = transitive_closure(r.before, list(key))
+    return sorted(key.values()), sorted((key[a], key[b]) for a, b in closure)
+
+
+def test_layouts_are_seeded_distinct_and_validated():
+    a, b = draw_layout(1), draw_layout(2)
+    assert a == draw_layout(1) and a != b
+    assert len(set(a.values())) == 8 and HOME not in a.values()
+    world = load_world("tabletop")
+    assert {o.type for o in world.objects.values()} >= {"GreenApple", "Carrot", "PinkPlate"}
+    with pytest.raises(WorldError, match="off the"):
+        tabletop_world(layout={**a, "Carrot_0": (99, 0)})
+
+
+def test_paper_wording_parses_to_the_ground_truth():
+    for task in TASKS.values():
+        gt = task.gt_instance()
+        objs, order = signature(task.instruction)
+        assert objs == sorted(("place", tuple(t.object), tuple(t.receptacle or ())) for t in gt.tasks)
+        assert len(order) == len(gt.before), task.id
+
+
+@pytest.mark.parametrize("task_id", sorted(REPHRASINGS))
+def test_rephrasings_give_the_same_tasks_and_orderings(task_id):
+    assert len(REPHRASINGS[task_id]) >= 4
+    reference = signature(TASKS[task_id].instruction)
+    for text in REPHRASINGS[task_id]:
+        assert signature(text) == reference, text
+
+
+@pytest.mark.xfail(reason="styles the offline parser does not read yet (rephrasings.HARDER)", strict=False)
+@pytest.mark.parametrize("task_id", sorted(HARDER))
+def test_harder_rephrasings(task_id):
+    reference = signature(TASKS[task_id].instruction)
+    for text in HARDER[task_id]:
+        assert signature(text) == reference, text
+
+
+def test_ours_is_optimal_and_no_worse_than_mention_order(tmp_path):
+    summary = run_bench(tmp_path, instances=2, seed=3, picture=False)
+    saved = json.loads((tmp_path / "summary.json").read_text())
+    assert saved["tasks"][0]["id"] == 1 and saved["llm_planner"].startswith("not run")
+    for row in summary["tasks"]:
+        assert row["success_rate"] == 1.0 and row["baseline"]["success_rate"] == 1.0
+        assert row["cost_mean"] <= row["baseline"]["cost_mean"]
+        for inst in row["per_instance"]:
+            assert inst["ours"]["cost"] <= inst["mention_order"]["cost"]
+    report = (tmp_path / "report.md").read_text()
+    assert "not run" in report and "111.2 ± 21.6" in report
+
+
+def test_order_constraint_is_kept_by_ours():
+    task = TASKS[4]
+    world = tabletop_world(11)
+    out = run_ours(task, world)
+    assert out.success
+    puts = [s.objects[0].split("_")[0] for s in out.plan.robots[0].steps if s.verb == "put"]
+    assert set(puts[:2]) == {"GreenApple", "Orange"} and set(puts[2:]) == {"Carrot", "RedApple"}
+
+
+def _answer(calls):
+    return lambda body: json.dumps({"calls": calls})
+
+
+def test_llm_planner_baseline_against_a_stub(stub_llm, tmp_path):
+    task = TASKS[1]
+    world = tabletop_world(5)
+    good = [{"api": "pick", "object": "orange"},
+            {"api": "place", "object": "orange", "plate": "yellow plate"},
+            {"api": "pick", "object": "green apple"},
+            {"api": "place", "object": "green apple", "plate": "blue plate"}]
+    stub = stub_llm(_answer(good))
+    client = LLMClient(LLMSettings(base_url=stub.base_url, model="m", api_key="k", cache_dir=None))
+    out = llm_planner(world, task.instruction, HOME, task.gt_instance(), client)
+    assert out.success and out.cost > 0
+    prompt = stub.requests[0]["messages"][-1]["content"]
+    assert "green apple: (x=" in prompt and "minimises the total trajectory" in prompt
+    # an answer that skips a task is executed and judged a failure, not crashed on
+    stub2 = stub_llm(_answer(good[:2]))
+    client2 = LLMClient(LLMSettings(base_url=stub2.base_url, model="m", api_key="k", cache_dir=None))
+    bad = llm_planner(world, task.instruction, HOME, task.gt_instance(), client2)
+    assert not bad.success and "never reached" in " ".join(bad.reasons)
+
+
+def test_llm_answer_with_unknown_object_is_a_readable_error():
+    world = tabletop_world(5)
+    answer = LLMPlanAnswer.model_validate({"calls": [{"api": "pick", "object": "banana"}]})
+    with pytest.raises(WorldError, match="banana"):
+        parse_llm_answer(world, answer)
+
+
+def test_plan_json_keeps_tasks_and_before(capsys):
+    from nl2hltl2plan.cli.main import main
+
+    text = TASKS[4].instruction
+    assert main(["plan", text, "--world", "tabletop", "--json", "--llm", "offline"]) == 0
+    payload = json.loads(capsys.readouterr().out)
+    assert {"kind", "object", "receptacle"} <= set(payload["tasks"][0])
+    assert len(payload["before"]) == 4 and payload["planner"]["status"] == "solved"
