@@ -1,7 +1,7 @@
 """How many of the paper's long instructions (5-9 base tasks, alfred_multiagent/test50, no ground
 truth) become a checked plan through the whole pipeline.
 
-    python scripts/bench_multiagent_long.py --backend offline --robots 2 --timeout 60 [--limit 10] [--json OUT]
+    python scripts/bench_multiagent_long.py --backend offline --robots 2 --timeout 60 [--limit 10]
 
 Each instruction is planned in its floor plan (movable objects from the floor plan's first ALFRED
 trial) for a team started on the instance's first `init_pos` draw. "checked plan" = the planner
@@ -67,7 +67,8 @@ def main() -> None:
     solved = [r["seconds"] for r in records if r["status"] == "solved"]
     print(f"| all | {len(records)} | {c['solved']} | {c['language']} | {c['infeasible']} | {c['timeout']} |")
     if solved:
-        print(f"\nseconds per solved instruction: median {statistics.median(solved):.2f}, max {max(solved):.2f}")
+        med, top = statistics.median(solved), max(solved)
+        print(f"\nseconds per solved instruction: median {med:.2f}, max {top:.2f}")
     if args.json:
         with open(args.json, "w") as fh:
             json.dump(records, fh, indent=1)

@@ -18,7 +18,8 @@ def register(sub: Any) -> None:
     )
     what = p.add_subparsers(dest="what", metavar="WHAT", required=True)
     lang = what.add_parser("language", help="the learned language model (slot model)")
-    lang.add_argument("-o", "--output", type=Path, default=None, help="where to write the model")
+    lang.add_argument("-o", "--out", type=Path, default=None,
+                      help="where to write the model (default: the packaged slot_model.npz)")
     lang.add_argument("--seed", type=int, default=0, help="random seed (default 0)")
     lang.set_defaults(func=run)
 
@@ -29,7 +30,7 @@ def run(args: argparse.Namespace) -> int:
     from nl2hltl2plan.language.learned.model import ARTIFACT
     from nl2hltl2plan.language.learned.train import train_and_report
 
-    out = args.output or Path(str(resources.files("nl2hltl2plan.language.learned") / ARTIFACT))
+    out = args.out or Path(str(resources.files("nl2hltl2plan.language.learned") / ARTIFACT))
     if out.parent and not out.parent.exists():
         out.parent.mkdir(parents=True)
     print(train_and_report(out, seed=args.seed))
