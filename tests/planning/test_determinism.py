@@ -34,8 +34,8 @@ print(json.dumps(out))
 def _run(mode: str, seed: str, objective: str) -> list[dict]:
     src = str(Path(__file__).resolve().parents[2] / "src")
     env = {**os.environ, "PYTHONHASHSEED": seed, "PYTHONPATH": src}
-    done = subprocess.run([sys.executable, "-c", SCRIPT, mode, objective], capture_output=True, text=True, env=env,
-                          timeout=120, check=True)
+    done = subprocess.run([sys.executable, "-c", SCRIPT, mode, objective], capture_output=True, text=True,
+                          env=env, timeout=120, check=True)
     return json.loads(done.stdout)
 
 
