@@ -32,6 +32,7 @@ Mode = Literal["fast", "exact"]
 DEFAULT_TIMEOUT_S = 300.0
 DEFAULT_W = 1.5
 FAST_EXPANSIONS = 300  # AWA* expansions `fast` spends improving its first plan (at most)
+FAST_GENERATED = 5_000  # and AWA* successors generated (at most: large teams branch widely)
 IMPROVE_EVALS = 600  # local-search candidate replays (both modes)
 MAX_NODES = 400_000  # search nodes held at once (about 1.5 GB), the memory bound
 BEAM_WIDTH = 8
@@ -104,7 +105,8 @@ def plan(
     mode: "exact" searches until the plan is proven optimal (`result.model` names the model the
     optimum is over). "fast" (default) is anytime: beam-search seeds, local search
     (`improve_evals` candidate replays), then anytime weighted A* (weight `w`) for at most
-    `fast_expansions` expansions; `bound` is the ratio to the optimum it could prove. With
+    `fast_expansions` expansions (and 5,000 generated successors); `bound` is the ratio to the
+    optimum it could prove. With
     `fast_expansions=None`, fast stops as soon as the plan is proven within factor `w`. Every budget
     counts machine-independent units, so the same input gives the same plan; `timeout_s` is a
     wall-clock last resort, reported as such (`stopped == "timeout"`). `max_nodes` bounds the
@@ -133,7 +135,8 @@ def plan(
     searcher = Searcher(x, Heuristic(x, required), obj, deadline)
     budget = Budget(fast_expansions if mode == "fast" else None, improve_evals,
                     w if mode == "fast" and fast_expansions is None else 1.0, w if mode == "fast" else 1.0,
-                    max_nodes, free_stands=grid_model(objective, mode))
+                    max_nodes, FAST_GENERATED if mode == "fast" and fast_expansions is not None else None,
+                    free_stands=grid_model(objective, mode))
     best = _search(searcher, x, budget)
     stats = searcher.stats
     result.expanded, result.peak_nodes = stats.expanded, stats.peak_nodes
@@ -169,6 +172,7 @@ class Budget:
     w_stop: float  # stop once the incumbent is proven within this factor
     w_order: float  # the weight of the A* ordering
     max_nodes: int | None  # memory bound of the A*
+    generated: int | None  # AWA* successors generated (None: no limit)
     free_stands: bool  # stand cells part of the A* search (the grid optimum of the summed cost)
 
 
@@ -208,7 +212,7 @@ def _search(searcher: Searcher, x: Expander, budget: Budget) -> Node | None:
         x.free_stands = budget.free_stands
         try:
             best = searcher.awa(root, best, budget.w_order, budget.w_stop, max_expansions=budget.expansions,
-                                max_nodes=budget.max_nodes)
+                                max_nodes=budget.max_nodes, max_generated=budget.generated)
         finally:
             x.free_stands = False
     except Deadline:

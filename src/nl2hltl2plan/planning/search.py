@@ -128,11 +128,13 @@ class Searcher:
 
     # ------------------------------------------------------------ AWA*
     def awa(self, root: Node, incumbent: Node | None, w_order: float, w_stop: float,
-            max_expansions: int | None = None, max_nodes: int | None = None) -> Node | None:
+            max_expansions: int | None = None, max_nodes: int | None = None,
+            max_generated: int | None = None) -> Node | None:
         """Anytime weighted A* with deferred evaluation: a child enters the open list with its
         parent's bound (valid for it too) and gets its own heuristic when it is first popped.
         Stops when the incumbent is proven within w_stop, the open list is empty, `max_expansions`
-        are spent or more than `max_nodes` are held (with an incumbent), or at the deadline."""
+        or `max_generated` are spent or more than `max_nodes` are held (with an incumbent), or at
+        the deadline."""
         stats, obj = self.stats, self.obj
         best = incumbent
         ub: float = self.cost(best) if best is not None else float("inf")
@@ -143,7 +145,7 @@ class Searcher:
         lb_heap: list[tuple[int, int, Node]] = [(root.f, next(counter), root)]
         table = obj.table(self.x.cap_class, self.x.n_objects)
         table.record(self.key(root), root)
-        expansions = 0
+        expansions = generated = 0
         stop = "exhausted"
         while open_heap:
             self.check_time()
@@ -155,7 +157,8 @@ class Searcher:
                     break
             held = len(open_heap) + len(table)
             stats.peak_nodes = max(stats.peak_nodes, held)
-            if best is not None and max_expansions is not None and expansions >= max_expansions:
+            if best is not None and ((max_expansions is not None and expansions >= max_expansions)
+                                     or (max_generated is not None and generated >= max_generated)):
                 stop = "budget"
                 break
             if best is not None and max_nodes is not None and held > max_nodes:
@@ -174,6 +177,7 @@ class Searcher:
             stats.expanded += 1
             for child in self.x.successors(node):
                 stats.generated += 1
+                generated += 1
                 if self.x.is_goal(child):
                     if self.cost(child) < ub:
                         ub, best = self.cost(child), child
