@@ -224,15 +224,8 @@ def _print_human(outcome: Any) -> None:
             if st.verb not in ("move", "wait")
         ]
         print(f"  robot {rp.robot} from {tuple(rp.start)}: {moves} moves; " + ("; ".join(acts) or "idle"))
-    print(f"  travel cost: {r.travel_m:.2f} m   completion time: {r.steps} steps   {_optimality(r)}")
-
-
-def _optimality(r: Any) -> str:
-    if r.proven_optimal:
-        return "proven optimal (planner's model)"
-    if r.bound is not None:
-        return f"within {r.bound:.2f}x of the optimum (proven bound)"
-    return "optimality not proven"
+    print(f"  travel cost: {r.travel_m:.2f} m   completion time: {r.steps} steps")
+    print(f"  {r.optimality} ({r.model})")
 
 
 def _write_outputs(folder: Path, outcome: Any, payload: dict[str, Any]) -> None:
