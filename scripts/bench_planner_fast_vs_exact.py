@@ -21,8 +21,9 @@ import sys
 from typing import Any
 
 from nl2hltl2plan.planning import oracle_spec, plan
-from nl2hltl2plan.worlds.alfred import benchmark_issues, build_benchmark_world, start_cells
+from nl2hltl2plan.worlds.alfred import benchmark_issues, build_benchmark_world
 from nl2hltl2plan.worlds.benchmark import load_gt
+from nl2hltl2plan.worlds.starts import start_cells
 
 
 def run(n_base: list[int], robots: list[int], limit: int | None, exact_timeout: float,
@@ -35,7 +36,7 @@ def run(n_base: list[int], robots: list[int], limit: int | None, exact_timeout: 
             continue  # infeasible in our worlds (docs/worlds.md)
         spec = oracle_spec(g, world).spec
         for n in robots:
-            starts = start_cells(world, g, n)
+            starts = start_cells(world, n, gt=g)
             row: dict[str, Any] = {"id": g.id, "n_base": g.n_base, "robots": n}
             for mode in ("fast", "exact"):
                 r = plan(world, spec, starts, mode=mode, timeout_s=exact_timeout if mode == "exact" else 300,

@@ -25,8 +25,9 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 from bench_planner_large import SCENES, pooled_instance  # noqa: E402
 
 from nl2hltl2plan.planning import oracle_spec, plan  # noqa: E402
-from nl2hltl2plan.worlds.alfred import benchmark_issues, build_benchmark_world, start_cells  # noqa: E402
+from nl2hltl2plan.worlds.alfred import benchmark_issues, build_benchmark_world  # noqa: E402
 from nl2hltl2plan.worlds.checker import check  # noqa: E402
+from nl2hltl2plan.worlds.starts import start_cells  # noqa: E402
 
 
 def run(scenes: list[str], sizes: list[int], robots: list[int], exact_upto: int,
@@ -44,7 +45,7 @@ def run(scenes: list[str], sizes: list[int], robots: list[int], exact_upto: int,
             for n in robots:
                 modes = ["fast"] + (["exact"] if k <= exact_upto else [])
                 for mode in modes:
-                    r = plan(world, spec, start_cells(world, gt, n), mode=mode,
+                    r = plan(world, spec, start_cells(world, n, gt=gt), mode=mode,
                              timeout_s=exact_timeout if mode == "exact" else 300.0)
                     rows.append({
                         "instance": gt.id, "tasks": k, "robots": n, "mode": mode, "status": str(r.status),
