@@ -8,17 +8,10 @@ import json
 from dataclasses import dataclass
 
 from nl2hltl2plan.config import data_path
+from nl2hltl2plan.language.learned.data import KIND_OF_TASK_TYPE
 from nl2hltl2plan.language.semantic_check import decomposition_problems
 
-KIND = {
-    "pick_and_place_simple": "place",
-    "pick_two_obj_and_place": "place_two",
-    "pick_and_place_with_movable_recep": "place_in_container",
-    "look_at_obj_in_light": "examine_in_light",
-    "pick_clean_then_place_in_recep": "clean_place",
-    "pick_heat_then_place_in_recep": "heat_place",
-    "pick_cool_then_place_in_recep": "cool_place",
-}
+KIND = KIND_OF_TASK_TYPE
 
 
 @dataclass
