@@ -42,6 +42,11 @@ def files(tmp_path_factory: pytest.TempPathFactory) -> dict[str, str]:
     return {k: str(v) for k, v in out.items()}
 
 
+def _case_id(case: object) -> str:
+    values = getattr(case, "values", case)
+    return str(values[0])  # type: ignore[index]
+
+
 CASES = [
     # (id, argv with {placeholders}, exit status, words the one-line error must contain)
     ("spec-missing", ["spec", "/nonexistent/htt.json"], 2, "no such file"),
@@ -77,7 +82,13 @@ CASES = [
     ),
     ("plan-robots-0", ["plan", PLATES, "--robots", "0"], 2, "--robots"),
     ("plan-robots-huge", ["plan", PLATES, "--robots", "1000000"], 2, "at most"),
-    ("plan-robots-unknown-profile", ["plan", PLATES, "--robots", "two"], 2, "unknown robot profile"),
+    pytest.param(
+        "plan-robots-unknown-profile",
+        ["plan", PLATES, "--robots", "two"],
+        2,
+        "unknown robot profile",
+        marks=pytest.mark.data,
+    ),
     ("plan-timeout-nan", ["plan", PLATES, "--timeout", "nan"], 2, "--timeout"),
     ("plan-timeout-inf", ["plan", PLATES, "--timeout", "inf"], 2, "--timeout"),
     ("plan-timeout-negative", ["plan", PLATES, "--timeout", "-1"], 2, "--timeout"),
@@ -94,13 +105,19 @@ CASES = [
     ("bench-workers-0", ["bench", "alfred", "--oracle", "--workers", "0", "-o", "{tmp}/b"], 2, "--workers"),
     ("bench-robots-bad", ["bench", "alfred", "--oracle", "--robots", "1,x", "-o", "{tmp}/b"], 2, "--robots"),
     ("bench-out-unwritable", ["bench", "alfred", "--oracle", "-o", "/proc/nl2/b"], 2, "cannot write"),
-    ("bench-gt-binary", ["bench", "alfred", "--oracle", "--gt", "{binary}", "-o", "{tmp}/b"], 2, "not UTF-8"),
+    pytest.param(
+        "bench-gt-binary",
+        ["bench", "alfred", "--oracle", "--gt", "{binary}", "-o", "{tmp}/b"],
+        2,
+        "not UTF-8",
+        marks=pytest.mark.data,
+    ),
     ("bench-unknown-suite", ["bench", "nosuch", "-o", "{tmp}/b"], 2, "invalid choice"),
     ("unknown-command", ["frobnicate"], 2, "invalid choice"),
 ]
 
 
-@pytest.mark.parametrize(("name", "argv", "code", "words"), CASES, ids=[c[0] for c in CASES])
+@pytest.mark.parametrize(("name", "argv", "code", "words"), CASES, ids=[_case_id(c) for c in CASES])
 def test_bad_input_gives_one_line_error(
     name: str,
     argv: list[str],

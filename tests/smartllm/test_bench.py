@@ -3,6 +3,8 @@
 import argparse
 import json
 
+import pytest
+
 from nl2hltl2plan.cli.bench_smartllm import register
 from nl2hltl2plan.evaluation.smartllm import (
     llm_maker,
@@ -13,6 +15,8 @@ from nl2hltl2plan.evaluation.smartllm import (
     summarize,
 )
 from nl2hltl2plan.worlds.smartllm import load_tasks, parse_task
+
+pytestmark = pytest.mark.data  # SMART-LLM's tasks and robot profiles
 
 
 def test_tasks_repairs_and_missing_gt():

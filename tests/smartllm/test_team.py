@@ -28,6 +28,7 @@ def world():
     return World.create("t", [(0.0, 0.0), (0.25, 0.0)], objs)
 
 
+@pytest.mark.data
 def test_parse_team_number_names_and_file(tmp_path):
     assert parse_team("3") == Team(3) and parse_team(2).capabilities  # plain sizes stay unrestricted
     team = parse_team("robot1,robot23")
@@ -47,7 +48,7 @@ def test_parse_team_number_names_and_file(tmp_path):
 @pytest.mark.parametrize(
     "text, error, words",
     [
-        ("robot99", PlanningError, "unknown robot profile"),
+        pytest.param("robot99", PlanningError, "unknown robot profile", marks=pytest.mark.data),
         ("0", PlanningError, "at least 1"),
     ],
 )
@@ -85,6 +86,7 @@ def test_capabilities_skills_and_mass(world):
     assert Team(2).problems(atoms, world) == []
 
 
+@pytest.mark.data
 def test_team_problems_for_a_spec(world):
     from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
     from nl2hltl2plan.worlds.team import spec_atoms, team_problems
