@@ -228,3 +228,65 @@ def test_plan_command_works_on_the_handover_worlds(world_name, capsys):
     assert (
         red_in_h < blue_in_i
     )  # handovers put blocks down in shared cells on the way; the goals keep the order
+
+
+def _calls_from(plan) -> list[dict]:
+    """A correct answer: our own cooperative plan's picks and puts, as API calls in time order."""
+    from nl2hltl2plan.worlds.handover import ARMS
+
+    steps = sorted(((st.t, rp.robot, st) for rp in plan.robots for st in rp.steps), key=lambda x: x[:2])
+    calls, at = [], {}
+    for _, arm, st in steps:
+        if st.verb == "move":
+            at[arm] = st.cell
+        elif st.verb in ("pickup", "put"):
+            place = st.objects[1] if st.verb == "put" else None
+            calls.append(
+                {
+                    "arm": ARMS[arm],
+                    "api": "pick" if st.verb == "pickup" else "place",
+                    "block": st.objects[0],
+                    "place": place,
+                }
+            )
+    return calls
+
+
+def test_llm_planner_baseline_for_handover_against_a_stub(stub_llm):
+    from nl2hltl2plan.evaluation.handover import instance, load_tasks
+    from nl2hltl2plan.evaluation.handover_llm import llm_handover
+    from nl2hltl2plan.language.llm.client import LLMClient
+    from nl2hltl2plan.language.llm.settings import LLMSettings
+    from nl2hltl2plan.planning.coop import coop_plan
+
+    task = next(t for t in load_tasks() if t.id == 1)  # red before blue, blocks to the opposite side
+    hw, spec = instance(task, 0, 0), task.hierarchical()
+    ours = coop_plan(hw, spec)
+    calls = _calls_from(ours.plan)
+    good = _resolve_picks(hw, ours.plan, calls)
+
+    def client_for(answer: list[dict]) -> LLMClient:
+        stub = stub_llm(lambda body: json.dumps({"calls": answer}))
+        return LLMClient(LLMSettings(base_url=stub.base_url, model="m", api_key="k", cache_dir=None))
+
+    ok = llm_handover(hw, spec, task.instruction, client_for(good))
+    assert ok["success"] and ok["cost"] is not None, ok["reasons"]
+    short = llm_handover(hw, spec, task.instruction, client_for(good[:-2]))  # stops before the end
+    assert not short["success"] and short["reasons"]
+    far = [{"arm": "a", "api": "pick", "block": "Red", "place": "J"}]  # J is out of arm a's reach
+    unreachable = llm_handover(hw, spec, task.instruction, client_for(far))
+    assert not unreachable["success"] and "arm a cannot reach J" in unreachable["reasons"][0]
+
+
+def _resolve_picks(hw, plan, calls: list[dict]) -> list[dict]:
+    """Fill each pick's place with the cell the picking arm stands on (replayed from the plan)."""
+    cells = {rp.robot: tuple(rp.start) for rp in plan.robots}
+    steps = sorted(((st.t, rp.robot, st) for rp in plan.robots for st in rp.steps), key=lambda x: x[:2])
+    picks = []
+    for _, arm, st in steps:
+        if st.verb == "move":
+            cells[arm] = tuple(st.cell)
+        elif st.verb == "pickup":
+            picks.append(hw.layout.place_name(cells[arm]))
+    it = iter(picks)
+    return [dict(c, place=next(it)) if c["api"] == "pick" else c for c in calls]

@@ -19,55 +19,52 @@ from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
+from nl2hltl2plan.argtypes import positive_int
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
-
-
-def _positive(text: str) -> int:
-    try:
-        value = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"expected a positive integer, got {text!r}") from None
-    if value < 1:
-        raise argparse.ArgumentTypeError(f"expected a positive integer, got {text!r}")
-    return value
+from nl2hltl2plan.language.options import add_llm_arguments, llm_settings
 
 
 def register(sub: Any) -> None:
     """Add `tabletop` and `handover` parsers to a subparsers object."""
     t = sub.add_parser("tabletop", help="the paper's tabletop study (Table II)")
     t.add_argument("-o", "--out", type=Path, required=True, help="output folder")
-    t.add_argument("--instances", type=_positive, default=25, help="seeded instances per task (default 25)")
+    t.add_argument(
+        "--instances", type=positive_int, default=25, help="seeded instances per task (default 25)"
+    )
     t.add_argument("--seed", type=int, default=0, help="seed of the object layouts (default 0)")
-    t.add_argument("--baseline", choices=["auto", "llm", "none"], default="auto",
-                   help="LLM-as-planner baseline: auto (default; when an LLM is configured), llm, none")
-    _llm_args(t)
+    t.add_argument(
+        "--baseline",
+        choices=["auto", "llm", "none"],
+        default="auto",
+        help="LLM-as-planner baseline: auto (default; when an LLM is configured), llm, none",
+    )
+    add_llm_arguments(t)
     t.set_defaults(func=run_tabletop)
     h = sub.add_parser("handover", help="the paper's four-arm handover study (Table III)")
     h.add_argument("-o", "--out", type=Path, required=True, help="output folder")
-    h.add_argument("--instances", type=_positive, default=10, help="seeded instances per task (default 10)")
+    h.add_argument(
+        "--instances", type=positive_int, default=10, help="seeded instances per task (default 10)"
+    )
     h.add_argument("--seed", type=int, default=0, help="seed of block placements and arm poses (default 0)")
+    h.add_argument(
+        "--baseline",
+        choices=["auto", "llm", "none"],
+        default="auto",
+        help="LLM-as-planner baseline: auto (default; when an LLM is configured), llm, none",
+    )
+    add_llm_arguments(h)
     h.set_defaults(func=run_handover)
-
-
-def _llm_args(p: argparse.ArgumentParser) -> None:
-    g = p.add_argument_group("LLM for the LLM-as-planner baseline (environment: NL2HLTL2PLAN_LLM_*)")
-    g.add_argument("--base-url", default=None, help="OpenAI-compatible endpoint")
-    g.add_argument("--model", default=None, help="model name")
-    g.add_argument("--api-key", default=None, help="API key (better: NL2HLTL2PLAN_LLM_API_KEY)")
-    g.add_argument("--cache", default=None, help="answer cache folder, or 'off'")
 
 
 @contextlib.contextmanager
 def _llm_client(args: argparse.Namespace) -> Iterator[Any]:
     """The project's LLM client when the baseline should run, else None."""
     from nl2hltl2plan.language.llm.client import LLMClient
-    from nl2hltl2plan.language.llm.settings import LLMSettings
 
     if args.baseline == "none":
         yield None
         return
-    settings = LLMSettings.from_env(base_url=args.base_url, model=args.model, api_key=args.api_key,
-                                    cache_dir=args.cache)
+    settings = llm_settings(args)
     if not settings.configured:
         if args.baseline == "llm":
             raise Nl2Hltl2PlanError("--baseline llm needs an LLM: set NL2HLTL2PLAN_LLM_BASE_URL / _API_KEY")
@@ -90,22 +87,8 @@ def run_tabletop(args: argparse.Namespace) -> int:
 def run_handover(args: argparse.Namespace) -> int:
     from nl2hltl2plan.evaluation.handover import run_bench
 
-    summary = run_bench(args.out, instances=args.instances, seed=args.seed)
+    with _llm_client(args) as client:
+        summary = run_bench(args.out, instances=args.instances, seed=args.seed, client=client)
     print((args.out / "report.md").read_text())
     print(f"wrote {args.out / 'summary.json'} ({len(summary['tasks'])} tasks)", file=sys.stderr)
     return 0
-
-
-def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="nl2hltl2plan bench", description=__doc__.split("\n\n")[0])
-    register(parser.add_subparsers(dest="suite", metavar="SUITE", required=True))
-    args = parser.parse_args(argv)
-    try:
-        return int(args.func(args))
-    except Nl2Hltl2PlanError as exc:
-        print(f"error: {exc}", file=sys.stderr)
-        return 2
-
-
-if __name__ == "__main__":
-    sys.exit(main())
