@@ -34,3 +34,17 @@ def test_verbless_list_takes_the_previous_verb_and_shares_the_destination() -> N
     ]
     assert clauses[0].gap == clauses[1].gap >= 0  # one shared destination: one group
     assert clauses[1].joiner == "then"
+
+
+def test_a_stated_rule_is_not_read_as_an_elided_object_list() -> None:
+    """"The arm cannot touch the blue block until ..." after "Transfer ... into ..." states a rule; it must
+    not borrow the previous verb and become a task (which then got an invented order)."""
+    from nl2hltl2plan.language.offline import parse_instruction
+
+    r = parse_instruction(
+        "Transfer the boxes into the opposite regions. The robot arm cannot touch blue block until any of "
+        "the robot arm touched the red block. After all of these, place yellow block back to region G."
+    )
+    assert [t.object for t in r.tasks] == [["Box"], ["YellowBlock"]]  # no task made of the rule
+    assert r.before == [("A", "B")]  # "after all of these" is a real order
+    assert any("cannot touch" in u for u in r.unparsed)  # the rule is reported, not guessed

@@ -118,6 +118,10 @@ def _dest_pp(verb: str, text: str) -> str:
     return ""
 
 
+# words of a stated rule ("the arm cannot touch the blue block until ..."), never an elided-verb object list
+_STATEMENT_WORDS = frozenset({"cannot", "can't", "must", "should", "until", "not"})
+
+
 def expand_gapping(
     clauses: list[tuple[str, int, int, str]], verb: str, last_dest: str, gap_base: int = 0
 ) -> list[Clause]:
@@ -134,7 +138,7 @@ def expand_gapping(
         if own:
             cut = len(text.split(None, 1)[0])
             v, args, a0 = text[:cut], text[cut:].lstrip(), len(text) - len(text[cut:].lstrip())
-        elif verb and k == 0:
+        elif verb and k == 0 and not _STATEMENT_WORDS.intersection(words):
             v, args, a0 = verb, text, 0
         else:
             out.append(Clause(text, start, end, joiner))

@@ -122,7 +122,7 @@ def _order(edges: Edges, tasks: Tasks) -> list[tuple[str, str]]:
     for i, s in enumerate(tasks.specs):
         s.id = ids[i]
     pairs = {(ids[a], ids[b2]) for a, b2 in edges if a != b2}
-    cycle = find_cycle(pairs)
+    cycle = find_cycle(sorted(pairs))  # sorted: the same cycle named on every run
     if cycle is not None:
         text = {s.id: s.text for s in tasks.specs}
         steps = " before ".join(f"{t} ({text[t]!r})" for t in cycle)
