@@ -96,10 +96,6 @@ def planning_stage(
     """Plan for the team (every returned plan is executed and checked against `spec`), then judge the
     execution against the ground truth's goals and orderings when `gt` is given."""
     opt = options or PipelineOptions()
-    if world.kind == "handover":  # four fixed arms passing blocks: the cooperative planner
-        from nl2hltl2plan.planning.coop import plan_world
-
-        return Planned(plan_world(world, spec, starts, timeout_s=opt.plan_timeout_s))
     result = plan(
         world,
         spec,

@@ -26,34 +26,34 @@ from nl2hltl2plan.language.options import add_llm_arguments, llm_settings
 
 def register(sub: Any) -> None:
     """Add `tabletop` and `handover` parsers to a subparsers object."""
-    t = sub.add_parser("tabletop", help="the paper's tabletop study (Table II)")
-    t.add_argument("-o", "--out", type=Path, required=True, help="output folder")
-    t.add_argument(
-        "--instances", type=positive_int, default=25, help="seeded instances per task (default 25)"
+    studies = (
+        ("tabletop", "the paper's tabletop study (Table II)", 25, "the object layouts", run_tabletop),
+        (
+            "handover",
+            "the paper's four-arm handover study (Table III)",
+            10,
+            "block placements and arm poses",
+            run_handover,
+        ),
     )
-    t.add_argument("--seed", type=int, default=0, help="seed of the object layouts (default 0)")
-    t.add_argument(
-        "--baseline",
-        choices=["auto", "llm", "none"],
-        default="auto",
-        help="LLM-as-planner baseline: auto (default; when an LLM is configured), llm, none",
-    )
-    add_llm_arguments(t)
-    t.set_defaults(func=run_tabletop)
-    h = sub.add_parser("handover", help="the paper's four-arm handover study (Table III)")
-    h.add_argument("-o", "--out", type=Path, required=True, help="output folder")
-    h.add_argument(
-        "--instances", type=positive_int, default=10, help="seeded instances per task (default 10)"
-    )
-    h.add_argument("--seed", type=int, default=0, help="seed of block placements and arm poses (default 0)")
-    h.add_argument(
-        "--baseline",
-        choices=["auto", "llm", "none"],
-        default="auto",
-        help="LLM-as-planner baseline: auto (default; when an LLM is configured), llm, none",
-    )
-    add_llm_arguments(h)
-    h.set_defaults(func=run_handover)
+    for name, title, instances, seeded, func in studies:
+        p = sub.add_parser(name, help=title)
+        p.add_argument("-o", "--out", type=Path, required=True, help="output folder")
+        p.add_argument(
+            "--instances",
+            type=positive_int,
+            default=instances,
+            help=f"seeded instances per task (default {instances})",
+        )
+        p.add_argument("--seed", type=int, default=0, help=f"seed of {seeded} (default 0)")
+        p.add_argument(
+            "--baseline",
+            choices=["auto", "llm", "none"],
+            default="auto",
+            help="LLM-as-planner baseline: auto (default; when an LLM is configured), llm, none",
+        )
+        add_llm_arguments(p)
+        p.set_defaults(func=func)
 
 
 @contextlib.contextmanager

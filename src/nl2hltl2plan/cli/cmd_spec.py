@@ -6,7 +6,7 @@ import argparse
 import json
 from pathlib import Path
 
-from nl2hltl2plan.io import ensure_writable_dir
+from nl2hltl2plan.io import ensure_writable_dir, write_text
 from nl2hltl2plan.language.htt import HTT
 from nl2hltl2plan.language.spec_builder import build_spec
 from nl2hltl2plan.logic import spot_backend as sb
@@ -71,7 +71,7 @@ def write_hoa(spec: HierarchicalSpec, folder: Path) -> dict[str, Path]:
     written = {}
     for name in spec.names:
         path = folder / f"{name}.hoa"
-        path.write_text(sb.hoa(spec.formula(name)))
+        write_text(path, sb.hoa(spec.formula(name)), "HOA file")
         written[name] = path
     return written
 

@@ -11,7 +11,6 @@ eight instructions the language stage turns into a spec that agrees with the wri
 from __future__ import annotations
 
 import json
-import statistics
 from importlib import resources
 from pathlib import Path
 from typing import Any
@@ -20,6 +19,8 @@ from pydantic import BaseModel
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.evaluation.handover_llm import llm_handover
+from nl2hltl2plan.evaluation.report import mean_std, pm
+from nl2hltl2plan.io import write_json, write_text
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.planning.coop import CoopResult, coop_plan
 from nl2hltl2plan.worlds.handover import HandoverWorld, check_handover, execute_handover, random_instance
@@ -58,12 +59,6 @@ def judge(hw: HandoverWorld, spec: HierarchicalSpec, result: CoopResult) -> tupl
     return execution.ok and verdict.ok, execution.violations[:2] + verdict.reasons[:2]
 
 
-def _mean_std(values: list[float]) -> tuple[float | None, float | None]:
-    if not values:
-        return None, None
-    return statistics.fmean(values), (statistics.pstdev(values) if len(values) > 1 else 0.0)
-
-
 def run_task(
     task: HandoverTask, instances: int, seed: int, client: Any = None, **plan_kw: Any
 ) -> dict[str, Any]:
@@ -92,10 +87,10 @@ def run_task(
             }
         )
     good = [r for r in rows if r["success"]]
-    cost_mean, cost_std = _mean_std([r["cost"] for r in good])
-    rt_mean, rt_std = _mean_std([r["runtime_s"] for r in rows])
-    travel_mean, _ = _mean_std([r["travel"] for r in good])
-    handovers_mean, _ = _mean_std([r["handovers"] for r in good])
+    cost_mean, cost_std = mean_std([r["cost"] for r in good])
+    rt_mean, rt_std = mean_std([r["runtime_s"] for r in rows])
+    travel_mean, _ = mean_std([r["travel"] for r in good])
+    handovers_mean, _ = mean_std([r["handovers"] for r in good])
     return {
         "id": task.id,
         "config": task.config,
@@ -121,14 +116,14 @@ def _baseline_row(llm: list[dict[str, Any]]) -> dict[str, Any]:
     if not llm:
         return {"name": "llm-planner", "status": "not run", "reason": "no LLM configured"}
     good = [r for r in llm if r["success"]]
-    cost_mean, cost_std = _mean_std([r["cost"] for r in good])
+    cost_mean, cost_std = mean_std([r["cost"] for r in good])
     return {
         "name": "llm-planner",
         "status": "run",
         "success_rate": len(good) / len(llm),
         "cost_mean": cost_mean,
         "cost_std": cost_std,
-        "runtime_mean_s": _mean_std([r["runtime_s"] for r in llm])[0],
+        "runtime_mean_s": mean_std([r["runtime_s"] for r in llm])[0],
         "failures": [r["reasons"][:1] for r in llm if not r["success"]][:3],
     }
 
@@ -195,11 +190,11 @@ def run_bench(
         "tasks": rows,
     }
     out.mkdir(parents=True, exist_ok=True)
-    (out / "summary.json").write_text(json.dumps(summary, indent=1))
+    write_json(out / "summary.json", summary, "summary file")
     pictures = []
     if picture and tasks:
         pictures = draw_pictures(tasks, seed, out)
-    (out / "report.md").write_text(handover_markdown(summary, pictures))
+    write_text(out / "report.md", handover_markdown(summary, pictures), "report")
     return summary
 
 
@@ -233,10 +228,6 @@ def _llm_cell(baseline: dict[str, Any]) -> str:
     return "not run" if baseline.get("status") != "run" else f"{100 * baseline['success_rate']:.0f}"
 
 
-def _pm(mean: float | None, std: float | None) -> str:
-    return "—" if mean is None else f"{mean:.1f} ± {(std or 0.0):.1f}"
-
-
 def handover_markdown(summary: dict[str, Any], pictures: list[str]) -> str:
     """report.md in the layout of the paper's Table III, with the paper's numbers."""
     tasks = summary["tasks"]
@@ -262,8 +253,8 @@ def handover_markdown(summary: dict[str, Any], pictures: list[str]) -> str:
         travel = "—" if t["travel_mean"] is None else f"{t['travel_mean']:.1f}"
         handovers = "—" if t["handovers_mean"] is None else f"{t['handovers_mean']:.1f}"
         lines.append(
-            f"| {t['id']} | {_pm(t['cost_mean'], t['cost_std'])} | {travel} | {handovers} | "
-            f"{100 * t['proven_optimal_rate']:.0f} % | {_pm(t['runtime_mean_s'], t['runtime_std_s'])} |"
+            f"| {t['id']} | {pm(t['cost_mean'], t['cost_std'])} | {travel} | {handovers} | "
+            f"{100 * t['proven_optimal_rate']:.0f} % | {pm(t['runtime_mean_s'], t['runtime_std_s'])} |"
         )
     conv = [t for t in tasks if t["language"]["equivalent"]]
     lines += [

@@ -32,10 +32,21 @@ def _median(values: list[float | None]) -> float | None:
     return round(statistics.median(vals), 4) if vals else None
 
 
-def _mean_std(values: list[float]) -> tuple[float | None, float | None]:
+def mean_std(values: list[float]) -> tuple[float | None, float | None]:
+    """Mean and population standard deviation (None, None for no values)."""
     if not values:
         return None, None
-    return round(statistics.fmean(values), 3), round(statistics.pstdev(values), 3)
+    return statistics.fmean(values), statistics.pstdev(values)
+
+
+def _mean_std(values: list[float]) -> tuple[float | None, float | None]:
+    mean, std = mean_std(values)
+    return (None, None) if mean is None or std is None else (round(mean, 3), round(std, 3))
+
+
+def pm(mean: float | None, std: float | None, digits: int = 1) -> str:
+    """"m ± s" for a report table, "—" when nothing was measured."""
+    return "—" if mean is None else f"{mean:.{digits}f} ± {(std or 0.0):.{digits}f}"
 
 
 def summarize(rows: Sequence[ScenarioRow]) -> dict[str, Any]:

@@ -30,6 +30,7 @@ from typing import Any
 import networkx as nx
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
+from nl2hltl2plan.io import write_json, write_text
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.pipeline import PipelineOptions, planning_stage
 from nl2hltl2plan.planning.objective import ObjectiveName
@@ -283,8 +284,8 @@ def run_bench(
             if progress:
                 progress(row)
     summary = {"specs": label, "objective": objective, "masses": dict(masses or {}), **summarize(rows)}
-    (out / "summary.json").write_text(json.dumps(summary, indent=2) + "\n")
-    (out / "report.md").write_text(report_md(summary, rows))
+    write_json(out / "summary.json", summary, "summary file", indent=2)
+    write_text(out / "report.md", report_md(summary, rows), "report")
     return summary
 
 

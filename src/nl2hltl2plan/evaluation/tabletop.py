@@ -10,7 +10,6 @@ rate, travel cost mean ± std (end-effector grid cells), runtime mean ± std (la
 from __future__ import annotations
 
 import json
-import statistics
 import time
 from dataclasses import dataclass
 from importlib import resources
@@ -21,6 +20,8 @@ from pydantic import BaseModel
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.evaluation.baselines import BaselineOutcome, llm_planner, mention_order
+from nl2hltl2plan.evaluation.report import mean_std, pm
+from nl2hltl2plan.io import write_json, write_text
 from nl2hltl2plan.worlds.checker import check
 from nl2hltl2plan.worlds.model import World
 from nl2hltl2plan.worlds.plan import Plan
@@ -106,16 +107,10 @@ def instance_seed(seed: int, task_id: int, k: int) -> int:
     return seed * 100_000 + task_id * 1000 + k
 
 
-def _stats(values: list[float]) -> tuple[float | None, float | None]:
-    if not values:
-        return None, None
-    return statistics.fmean(values), (statistics.pstdev(values) if len(values) > 1 else 0.0)
-
-
 def _row(name: str, outcomes: list[Any]) -> dict[str, Any]:
     ok = [o for o in outcomes if o.success]
-    cost_mean, cost_std = _stats([o.cost for o in ok if o.cost is not None])
-    rt_mean, rt_std = _stats([o.runtime_s for o in outcomes])
+    cost_mean, cost_std = mean_std([o.cost for o in ok if o.cost is not None])
+    rt_mean, rt_std = mean_std([o.runtime_s for o in outcomes])
     return {
         "name": name,
         "instances": len(outcomes),
@@ -183,11 +178,11 @@ def run_bench(out: Path, instances: int = DEFAULT_INSTANCES, seed: int = 0, clie
         "tasks": rows,
     }
     out.mkdir(parents=True, exist_ok=True)
-    (out / "summary.json").write_text(json.dumps(summary, indent=1))
+    write_json(out / "summary.json", summary, "summary file")
     pictures = []
     if picture and tasks:
         pictures.append(draw_comparison(tasks[-1 if len(tasks) < 3 else 2], seed, out / "trajectories.png"))
-    (out / "report.md").write_text(tabletop_markdown(summary, [p.name for p in pictures]))
+    write_text(out / "report.md", tabletop_markdown(summary, [p.name for p in pictures]), "report")
     return summary
 
 
@@ -208,10 +203,6 @@ def draw_comparison(task: TabletopTask, seed: int, path: Path) -> Path:
 
 
 # ----- report ------------------------------------------------------------------------------------------
-def _pm(mean: float | None, std: float | None, digits: int = 1) -> str:
-    return "—" if mean is None else f"{mean:.{digits}f} ± {(std or 0.0):.{digits}f}"
-
-
 def _pct(rate: float | None) -> str:
     return "—" if rate is None else f"{100 * rate:.0f}"
 
@@ -236,11 +227,11 @@ def tabletop_markdown(summary: dict[str, Any], pictures: list[str]) -> str:
         llm_ok = llm_run and "success_rate" in llm
         lines.append(
             f"| {t['id']} | {_pct(t['success_rate'])} | {_pct(base['success_rate'])} | "
-            f"{_pct(llm['success_rate']) if llm_ok else 'not run'} | {_pm(t['cost_mean'], t['cost_std'])} | "
-            f"{_pm(base['cost_mean'], base['cost_std'])} | "
-            f"{_pm(llm['cost_mean'], llm['cost_std']) if llm_ok else 'not run'} | "
-            f"{_pm(t['runtime_mean_s'], t['runtime_std_s'], 3)} | "
-            f"{_pm(llm['runtime_mean_s'], llm['runtime_std_s'], 2) if llm_ok else 'not run'} |"
+            f"{_pct(llm['success_rate']) if llm_ok else 'not run'} | {pm(t['cost_mean'], t['cost_std'])} | "
+            f"{pm(base['cost_mean'], base['cost_std'])} | "
+            f"{pm(llm['cost_mean'], llm['cost_std']) if llm_ok else 'not run'} | "
+            f"{pm(t['runtime_mean_s'], t['runtime_std_s'], 3)} | "
+            f"{pm(llm['runtime_mean_s'], llm['runtime_std_s'], 2) if llm_ok else 'not run'} |"
         )
     lines += ["", "The paper's Table II (GPT-4 pipeline vs GPT-4 as planner, real arm):", "",
               "| Task | success % ours | success % LLM | cost ours | cost LLM | runtime s ours "
@@ -250,8 +241,8 @@ def tabletop_markdown(summary: dict[str, Any], pictures: list[str]) -> str:
         p = t["paper"]
         lines.append(
             f"| {t['id']} | {p['success_pct']['ours']:g} | {p['success_pct']['llm']:g} | "
-            f"{_pm(*p['cost']['ours'])} | {_pm(*p['cost']['llm'])} | {_pm(*p['runtime_s']['ours'])} | "
-            f"{_pm(*p['runtime_s']['llm'])} |"
+            f"{pm(*p['cost']['ours'])} | {pm(*p['cost']['llm'])} | {pm(*p['runtime_s']['ours'])} | "
+            f"{pm(*p['runtime_s']['llm'])} |"
         )
     lines += ["", "Ratios of mean cost, baseline / ours (the paper: LLM / ours):", ""]
     for t in summary["tasks"]:

@@ -14,7 +14,6 @@ from __future__ import annotations
 
 import argparse
 import contextlib
-import json
 import random
 import sys
 import time
@@ -23,6 +22,7 @@ from pathlib import Path
 from typing import Any
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
+from nl2hltl2plan.io import write_json
 from nl2hltl2plan.language.grounding import scene_types
 from nl2hltl2plan.language.scoring import match
 from nl2hltl2plan.language.tasks import BaseTaskSpec
@@ -188,7 +188,7 @@ def main(argv: list[str] | None = None) -> int:
             if not r["ok"]:
                 print(f"- {r['id']}: {'; '.join(r['reasons'])} {r['error']} {r['unparsed'] or ''}")
     if args.json:
-        args.json.write_text(json.dumps(records, indent=1))
+        write_json(args.json, records, "records file")
     return 0
 
 

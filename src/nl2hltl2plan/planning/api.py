@@ -115,12 +115,17 @@ def plan(
     events, which never makes a plan worse (`model_cost` is the value before, `cost` after).
 
     Returns a `PlanResult` (status solved / infeasible with the reason / timeout / error: a plan that
-    failed validation, a planner bug, with the reason). Malformed input
+    failed validation, a planner bug, with the reason). A `handover` world (fixed arms) goes to the
+    cooperative engine (`planning.coop`), which answers in the same `PlanResult`. Malformed input
     (not a HierarchicalSpec, a start cell that is not free, a leaf atom that is not an action)
     raises `PlanningError`.
     """
     t0 = time.perf_counter()
     _check_arguments(spec, objective, mode, w)
+    if world.kind == "handover":  # fixed arms passing blocks through shared cells: the cooperative engine
+        from nl2hltl2plan.planning.coop import plan_world
+
+        return plan_world(world, spec, starts, timeout_s=timeout_s)
     obj = objective_for(objective)
     result = PlanResult(status=PlanStatus.TIMEOUT, objective=objective, mode=mode)
     deadline = t0 + timeout_s
