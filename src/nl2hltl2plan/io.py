@@ -29,19 +29,13 @@ MAX_DEPTH = 200  # nesting of JSON containers
 
 
 def read_text(path: str | Path, what: str = "file", max_bytes: int = MAX_BYTES) -> str:
-    """The UTF-8 text of a regular file (or '-' = standard input), at most `max_bytes` long."""
+    """The UTF-8 text of a file, at most `max_bytes` long."""
     p = Path(path)
     try:
-        if str(path) == "-":
-            import sys
-
-            raw = sys.stdin.buffer.read(max_bytes + 1)
-        else:
-            st = p.stat()
-            if stat.S_ISDIR(st.st_mode):
-                raise DataError(f"cannot read {what} {p}: it is a folder")
-            with p.open("rb") as fh:  # read one byte past the limit: devices report size 0
-                raw = fh.read(max_bytes + 1)
+        if stat.S_ISDIR(p.stat().st_mode):
+            raise DataError(f"cannot read {what} {p}: it is a folder")
+        with p.open("rb") as fh:  # read one byte past the limit: devices report size 0
+            raw = fh.read(max_bytes + 1)
     except FileNotFoundError:
         raise DataError(f"cannot read {what} {p}: no such file") from None
     except PermissionError:

@@ -1,0 +1,16 @@
+"""The docstring examples are run, so they stay true."""
+
+from __future__ import annotations
+
+import doctest
+import importlib
+
+import pytest
+
+MODULES = ["nl2hltl2plan.io", "nl2hltl2plan.pipeline", "nl2hltl2plan.logic.trace", "nl2hltl2plan.worlds.starts"]
+
+
+@pytest.mark.parametrize("name", MODULES)
+def test_docstring_examples(name: str) -> None:
+    result = doctest.testmod(importlib.import_module(name))
+    assert result.attempted > 0 and result.failed == 0
