@@ -7,7 +7,12 @@ import importlib
 
 import pytest
 
-MODULES = ["nl2hltl2plan.io", "nl2hltl2plan.pipeline", "nl2hltl2plan.logic.trace", "nl2hltl2plan.worlds.starts"]
+MODULES = [
+    "nl2hltl2plan.io",
+    "nl2hltl2plan.pipeline",
+    "nl2hltl2plan.logic.trace",
+    "nl2hltl2plan.worlds.starts",
+]
 
 
 @pytest.mark.parametrize("name", MODULES)
