@@ -77,10 +77,11 @@ def _path(hw: HandoverWorld, arm: int, start: Cell, goal: Cell, blocked: set[Cel
     while queue:
         cell = queue.popleft()
         if cell == goal:
-            out = []
-            while prev[cell] is not None:
-                out.append(cell)
-                cell = prev[cell]  # type: ignore[assignment]
+            out: list[Cell] = []
+            step: Cell | None = cell
+            while step is not None and step != start:
+                out.append(step)
+                step = prev[step]
             return out[::-1]
         for dr, dc in ((1, 0), (-1, 0), (0, 1), (0, -1)):
             nxt = (cell[0] + dr, cell[1] + dc)

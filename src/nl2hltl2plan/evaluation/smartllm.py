@@ -32,6 +32,7 @@ import networkx as nx
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.io import write_json, write_text
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
+from nl2hltl2plan.language.backends import Backend
 from nl2hltl2plan.pipeline import PipelineOptions, planning_stage
 from nl2hltl2plan.planning.objective import ObjectiveName
 from nl2hltl2plan.worlds.checker import final_conditions
@@ -108,14 +109,14 @@ def oracle_maker(task: SmartTask, world: World) -> tuple[HierarchicalSpec, list[
     return oracle_spec(task, world)
 
 
-def llm_maker(backend: str, client: Any = None) -> SpecMaker:
+def llm_maker(backend: Backend, client: Any = None) -> SpecMaker:
     """The instruction through the pipeline's language stage (`client`: an LLMClient for local/openai)."""
 
     def make(task: SmartTask, world: World) -> tuple[HierarchicalSpec, list[str]]:
         from nl2hltl2plan.errors import SpecError
         from nl2hltl2plan.pipeline import PipelineOptions, language_stage
 
-        result = language_stage(task.text, world, PipelineOptions(backend=backend), client)  # type: ignore[arg-type]
+        result = language_stage(task.text, world, PipelineOptions(backend=backend), client)
         spec = result.spec
         if spec is None:
             why = "; ".join(result.issues or result.unparsed or ["no specification built"])
