@@ -31,8 +31,8 @@ import networkx as nx
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.io import write_json, write_text
-from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.language.backends import Backend
+from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.pipeline import PipelineOptions, planning_stage
 from nl2hltl2plan.planning.objective import ObjectiveName
 from nl2hltl2plan.worlds.checker import final_conditions
