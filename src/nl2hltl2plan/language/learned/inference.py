@@ -19,6 +19,7 @@ from pydantic import Field
 from nl2hltl2plan.errors import WorldError
 from nl2hltl2plan.language.grounding import AffordanceLookup, find_mentions
 from nl2hltl2plan.language.learned.model import SlotModel, SlotPrediction
+from nl2hltl2plan.language.learned.rescue import rewrite
 from nl2hltl2plan.language.offline import OfflineParse
 from nl2hltl2plan.language.offline import parse_instruction as grammar_parse
 from nl2hltl2plan.language.result import Ambiguity
@@ -38,6 +39,19 @@ class Policy:
     override: float = 0.9  # the model replaces the grammar's slot type when its top scene type is this sure
     sliced_from_model: bool = True
     ambiguous_ratio: float = 0.5  # second candidate >= ratio * first -> reported as ambiguous
+    rescue: bool = False  # clauses the grammar could not read: read by the model, re-parsed (`rescue`)
+    rescue_kind: float = 0.5  # ... when the model's kind probability is at least this
+
+
+# Candidate combinations, compared on the text-faithful validation (`learned.validate`).
+POLICIES: dict[str, Policy] = {
+    "hybrid": Policy(),
+    "conservative": Policy(kind_override=1.01, override=1.01),
+    "conservative_grammar_sliced": Policy(kind_override=1.01, override=1.01, sliced_from_model=False),
+    "hybrid_rescue": Policy(rescue=True),
+    "conservative_rescue": Policy(kind_override=1.01, override=1.01, rescue=True),
+    "hybrid_rescue_0.8": Policy(rescue=True, rescue_kind=0.8),
+}
 
 
 class LearnedParse(OfflineParse):
@@ -152,6 +166,8 @@ def parse_instruction(
     model = model or load_model()
     scene_types = set(types) if types is not None else None
     g = grammar_parse(instruction, scene_types, scene, strict=False, affordances=affordances)
+    if policy.rescue and g.unparsed:
+        g = _rescued(g, instruction, model, scene_types, scene, affordances, policy)
     drafts = list(g.tasks)
     unparsed = list(g.unparsed)
     whole = not drafts and bool(instruction.strip())
@@ -177,6 +193,25 @@ def parse_instruction(
         issues=issues,
         ambiguities=ambiguities,
     )
+
+
+def _rescued(
+    g: OfflineParse,
+    instruction: str,
+    model: SlotModel,
+    types: set[str] | None,
+    scene: str,
+    affordances: AffordanceLookup | None,
+    policy: Policy,
+) -> OfflineParse:
+    """The grammar's parse of the instruction with its unread clauses rewritten, when that reads more tasks."""
+    text = rewrite(instruction, list(g.unparsed), model, types, policy.rescue_kind)
+    if text is None:
+        return g
+    again = grammar_parse(text, types, scene, strict=False, affordances=affordances)
+    if len(again.tasks) <= len(g.tasks):
+        return g
+    return again.model_copy(update={"instruction": instruction})
 
 
 def _names_its_types(task: BaseTaskSpec) -> bool:

@@ -18,16 +18,17 @@ from typing import Any
 
 from nl2hltl2plan.language.grounding import scene_types
 from nl2hltl2plan.language.learned.data import Composition, Example, compose, faithful, load_examples
+from nl2hltl2plan.language.learned.model import SlotModel
 from nl2hltl2plan.language.learned.inference import Policy, load_model, parse_instruction
 from nl2hltl2plan.language.measure import Generator, evaluate, load_benchmark, offline_generator, table
 from nl2hltl2plan.language.tasks import BaseTaskSpec
 
 
-def learned_generator(policy: Policy | None = None) -> Generator:
+def learned_generator(policy: Policy | None = None, model: SlotModel | None = None) -> Generator:
     def generate(
         instruction: str, types: set[str], scene: str
     ) -> tuple[list[BaseTaskSpec], list[tuple[str, str]], list[str]]:
-        r = parse_instruction(instruction, types, scene, strict=False, policy=policy)
+        r = parse_instruction(instruction, types, scene, strict=False, policy=policy, model=model)
         return r.tasks, r.before, r.unparsed
 
     return generate

@@ -13,11 +13,24 @@ from pathlib import Path
 
 from nl2hltl2plan.language.grounding import scene_types
 from nl2hltl2plan.language.learned.data import SLOTS, Example, faithful, load_examples
+from nl2hltl2plan.language.learned.faithful import faithful_examples, training_example
 from nl2hltl2plan.language.learned.model import SlotModel, SlotPrediction
 
 
-def train(seed: int = 0) -> SlotModel:
-    """Fit on the train annotations whose text states their task (`data.faithful`)."""
+def text_faithful_train() -> list[Example]:
+    """The train annotations whose text-faithful label is clear, labelled as the text says
+    (`faithful.text_task`, `faithful.training_example`)."""
+    examples = load_examples()["train"]
+    plans = {e.floor_plan for e in examples}
+    items = faithful_examples(examples, {p: scene_types(p) for p in plans})
+    return [training_example(it) for it in items]
+
+
+def train(seed: int = 0, labels: str = "text") -> SlotModel:
+    """Fit on the train annotations: text-faithful labels (default) or ALFRED's, on those whose text
+    states their task (`data.faithful`, the first version)."""
+    if labels == "text":
+        return SlotModel.fit(text_faithful_train(), seed=seed)
     return SlotModel.fit([e for e in load_examples()["train"] if faithful(e)], seed=seed)
 
 
