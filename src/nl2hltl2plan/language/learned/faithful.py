@@ -31,8 +31,8 @@ from nl2hltl2plan.language.tasks import BaseTaskSpec, task_letter
 
 _SLICE = re.compile(r"\bslice|\bsliced\b|\bpiece|\btoast|\bwedge|\bchunk|\bsection|\bhal(f|ves)\b|\bquarter", re.I)
 _TWO = re.compile(r"\b(two|2|both|pair|couple|second|another|other)\b", re.I)
-# Words for the treatment appliance / tool: a mention of these is not an unassigned object.
-_TOOL_TYPES = {"Microwave", "Fridge", "SinkBasin", "Sink", "Faucet", "Knife", "ButterKnife"}
+# The knife that slices the object: a mention of it is not an object that may be meant instead.
+_KNIVES = {"Knife", "ButterKnife"}
 
 
 @dataclass(frozen=True)
@@ -80,7 +80,7 @@ def text_task(e: Example, types: set[str]) -> BaseTaskSpec | None:
     others = [
         m
         for i, m in enumerate(mentions)
-        if i not in used and not m.entry.generic and not set(m.entry.types) & _TOOL_TYPES
+        if i not in used and not m.entry.generic and not (e.sliced and set(m.entry.types) & _KNIVES)
     ]
     if unsaid and others:
         return None  # the text names an object that may be the one meant: the label would be a guess

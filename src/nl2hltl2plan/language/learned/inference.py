@@ -41,16 +41,15 @@ class Policy:
     ambiguous_ratio: float = 0.5  # second candidate >= ratio * first -> reported as ambiguous
     rescue: bool = False  # clauses the grammar could not read: read by the model, re-parsed (`rescue`)
     rescue_kind: float = 0.5  # ... when the model's kind probability is at least this
+    container_switch: bool = False  # place -> place_in_container when the model is sure and the text names it
 
 
 # Candidate combinations, compared on the text-faithful validation (`learned.validate`).
 POLICIES: dict[str, Policy] = {
     "hybrid": Policy(),
-    "conservative": Policy(kind_override=1.01, override=1.01),
-    "conservative_grammar_sliced": Policy(kind_override=1.01, override=1.01, sliced_from_model=False),
     "hybrid_rescue": Policy(rescue=True),
-    "conservative_rescue": Policy(kind_override=1.01, override=1.01, rescue=True),
-    "hybrid_rescue_0.8": Policy(rescue=True, rescue_kind=0.8),
+    "hybrid_rescue_container_0.6": Policy(rescue=True, container_switch=True, kind_override=0.6),
+    "conservative_rescue": Policy(kind_override=1.01, override=1.01, sliced_from_model=False, rescue=True),
 }
 
 
@@ -112,6 +111,16 @@ def _word_for(text: str, candidates: list[str]) -> str:
     return text
 
 
+def _container_named(task: BaseTaskSpec, pred: SlotPrediction, policy: Policy) -> bool:
+    """The model reads a container task the grammar read as `place`, and the clause names its container."""
+    if not policy.container_switch or pred.top_kind != "place_in_container" or task.kind != "place":
+        return False
+    if pred.kind[0][1] < policy.kind_override or not pred.slots.get("container"):
+        return False
+    named = {t for m in find_mentions(task.text) for t in m.entry.types}
+    return pred.slots["container"][0][0] in named
+
+
 def combine(
     task: BaseTaskSpec,
     pred: SlotPrediction,
@@ -121,8 +130,8 @@ def combine(
 ) -> BaseTaskSpec:
     """One base task from the grammar's reading of a clause and the model's prediction for it."""
     kind = pred.top_kind if pred.kind[0][1] >= policy.kind_override else task.kind
-    if "place_in_container" in (kind, task.kind) and kind != task.kind:
-        kind = task.kind  # a container needs a second object the grammar read (annotators often omit it)
+    if "place_in_container" in (kind, task.kind) and kind != task.kind and not _container_named(task, pred, policy):
+        kind = task.kind  # a container needs a second object the text names (annotators often omit it)
     values: dict[str, list[str] | None] = {
         "object": None,
         "container": None,
