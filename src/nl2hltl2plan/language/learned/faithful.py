@@ -29,7 +29,9 @@ from nl2hltl2plan.language.grounding import Grounder, find_mentions
 from nl2hltl2plan.language.learned.data import SLOTS, Composition, Example, states_kind
 from nl2hltl2plan.language.tasks import BaseTaskSpec, task_letter
 
-_SLICE = re.compile(r"\bslice|\bsliced\b|\bpiece|\btoast|\bwedge|\bchunk|\bsection|\bhal(f|ves)\b|\bquarter", re.I)
+_SLICE = re.compile(
+    r"\bslice|\bsliced\b|\bpiece|\btoast|\bwedge|\bchunk|\bsection|\bhal(f|ves)\b|\bquarter", re.I
+)
 _TWO = re.compile(r"\b(two|2|both|pair|couple|second|another|other)\b", re.I)
 # The knife that slices the object: a mention of it is not an object that may be meant instead.
 _KNIVES = {"Knife", "ButterKnife"}

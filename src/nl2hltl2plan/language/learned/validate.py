@@ -21,7 +21,7 @@ from typing import Any
 from nl2hltl2plan.language.grounding import scene_types
 from nl2hltl2plan.language.learned.data import Composition, load_examples
 from nl2hltl2plan.language.learned.faithful import FaithfulExample, compose_faithful, faithful_examples
-from nl2hltl2plan.language.measure import Generator, evaluate, offline_generator
+from nl2hltl2plan.language.measure import Generator, evaluate, grammar_generator
 
 
 @lru_cache(maxsize=4)
@@ -81,7 +81,7 @@ def generators(model_path: Path | None = None) -> dict[str, Generator]:
     from nl2hltl2plan.language.learned.measure import learned_generator
 
     model = load_model(model_path)
-    out: dict[str, Generator] = {"grammar": offline_generator}
+    out: dict[str, Generator] = {"grammar": grammar_generator}
     for name, policy in POLICIES.items():
         out[name] = learned_generator(policy, model)
     return out
@@ -92,11 +92,15 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--split", default="valid_seen", choices=["valid_seen", "valid_unseen"])
     ap.add_argument("--n", type=int, default=800, help="instructions (a quarter each with 1-4 tasks)")
     ap.add_argument("--seed", type=int, default=0)
-    ap.add_argument("--model", type=Path, default=None, help="slot model artifact (default: the committed one)")
+    ap.add_argument(
+        "--model", type=Path, default=None, help="slot model artifact (default: the committed one)"
+    )
     ap.add_argument("--backends", nargs="*", default=None, help="grammar and/or policy names")
     args = ap.parse_args(argv)
     rows = validation_rows(args.split, args.n, args.seed)
-    print(f"{args.split}: {len(faithful_split(args.split))} text-faithful annotations, {len(rows)} instructions")
+    print(
+        f"{args.split}: {len(faithful_split(args.split))} text-faithful annotations, {len(rows)} instructions"
+    )
     for name, gen in generators(args.model).items():
         if args.backends and name not in args.backends:
             continue
