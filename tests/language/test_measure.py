@@ -1,4 +1,4 @@
-"""The default offline backend on the benchmark (needs ../shared/data): a floor on the measured match rates."""
+"""The default offline backend on the benchmark (needs ../shared/data): floors on the measured rates."""
 
 from __future__ import annotations
 
