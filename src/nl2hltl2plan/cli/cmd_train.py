@@ -2,7 +2,8 @@
 
 Trains the slot model (`language.learned`) on ALFRED's train annotations (text-faithful labels) minus
 the benchmark's excluded trials, prints its slot accuracy on valid_seen / valid_unseen, and writes
-the artifact (default: the committed one inside the package). Deterministic for a seed; about 20-40 s on 2 cores.
+the artifact (default: the committed one inside the package). Deterministic for a seed; about 20-40 s
+on 2 cores.
 """
 
 from __future__ import annotations
