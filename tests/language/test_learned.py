@@ -8,7 +8,7 @@ import pytest
 
 from nl2hltl2plan.errors import DataError, WorldError
 from nl2hltl2plan.language.learned import parse_instruction
-from nl2hltl2plan.language.learned.data import Example, compose, excluded_trials, load_examples
+from nl2hltl2plan.language.learned.data import excluded_trials, load_examples
 from nl2hltl2plan.language.learned.inference import load_model
 from nl2hltl2plan.language.learned.model import SlotModel
 
@@ -35,10 +35,6 @@ KITCHEN = {
 LIVING = {"FloorLamp", "DeskLamp", "KeyChain", "Sofa", "Pillow", "RemoteControl", "CoffeeTable", "SideTable"}
 
 
-def _ex(trial: str, plan: str, text: str, obj: str, recep: str) -> Example:
-    return Example(text, trial, "valid_seen", plan, "place", obj, "", recep, "", False)
-
-
 def test_split_never_contains_an_excluded_trial(shared_data: Path) -> None:
     banned = excluded_trials()
     data = load_examples()
@@ -46,19 +42,6 @@ def test_split_never_contains_an_excluded_trial(shared_data: Path) -> None:
     for split, examples in data.items():
         assert not {e.trial for e in examples} & banned, split
         assert {e.split for e in examples} == {split}
-
-
-def test_synthesis_is_deterministic_and_labels_its_order() -> None:
-    ex = [
-        _ex(f"t{i}", "FloorPlan1", f"Put the apple {i} on the counter.", "Apple", "CounterTop")
-        for i in range(4)
-    ]
-    a, b = compose(ex, 30, seed=3), compose(ex, 30, seed=3)
-    assert [(c.instruction, c.before) for c in a] == [(c.instruction, c.before) for c in b]
-    assert [c.instruction for c in compose(ex, 30, seed=4)] != [c.instruction for c in a]
-    first_then = [c for c in a if c.template == "First {0}, then {1}."]
-    for c in first_then:
-        assert c.before == [("A", "B")] and len(c.tasks) == 2
 
 
 @pytest.mark.parametrize(

@@ -129,7 +129,7 @@ def test_cli_plan_json(capsys, monkeypatch, tmp_path):
         and payload["plan"]["robots"]
         and payload["travel_cost_m"] > 0
     )
-    assert "offline grammar parser" in out.err
+    assert "offline parser (grammar + learned model)" in out.err
     assert (tmp_path / "out" / "htt.png").stat().st_size > 1000
     assert json.loads((tmp_path / "out" / "result.json").read_text())["tasks"][0]["kind"] == "clean_place"
 

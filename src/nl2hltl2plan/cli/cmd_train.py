@@ -1,8 +1,9 @@
 """`nl2hltl2plan train language [-o PATH] [--seed S]`: rebuild the learned language model.
 
-Trains the slot model (`language.learned`) on ALFRED's train annotations minus the benchmark's
-excluded trials, prints its slot accuracy on valid_seen / valid_unseen, and writes the artifact
-(default: the committed one inside the package). Deterministic for a seed; about 1-2 minutes on 2 cores.
+Trains the slot model (`language.learned`) on ALFRED's train annotations (text-faithful labels) minus
+the benchmark's excluded trials, prints its slot accuracy on valid_seen / valid_unseen, and writes
+the artifact (default: the committed one inside the package). Deterministic for a seed; about 20-40 s
+on 2 cores.
 """
 
 from __future__ import annotations

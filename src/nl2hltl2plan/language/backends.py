@@ -11,8 +11,10 @@ from nl2hltl2plan.language.llm.batch import BatchCollector
 from nl2hltl2plan.language.llm.client import LLMClient
 from nl2hltl2plan.language.llm.settings import LLMSettings
 
-Backend = Literal["offline", "learned", "local", "openai"]
-PARSERS = ("offline", "learned")  # backends that need no LLM: the grammar, the grammar + slot model
+Backend = Literal["offline", "learned", "grammar", "local", "openai"]
+# Backends that need no LLM: `offline` (the default) = the grammar with the learned slot model and
+# segmentation rescue (`language.learned`); `learned` is its former name; `grammar` = the grammar alone.
+PARSERS = ("offline", "learned", "grammar")
 BACKENDS: tuple[str, ...] = get_args(Backend)
 
 
@@ -23,7 +25,7 @@ def resolve_backend(requested: str | None, settings: LLMSettings) -> tuple[Backe
             return "openai", None
         return "offline", (
             "no LLM configured (NL2HLTL2PLAN_LLM_BASE_URL / NL2HLTL2PLAN_LLM_API_KEY): using the "
-            "offline grammar parser"
+            "offline parser (grammar + learned model)"
         )
     for name in get_args(Backend):
         if requested == name:

@@ -92,6 +92,17 @@ class _Scene:
 def offline_generator(
     instruction: str, types: set[str], scene: str
 ) -> tuple[list[BaseTaskSpec], list[tuple[str, str]], list[str]]:
+    """The default `offline` backend: the grammar with the learned slot model (`language.learned`)."""
+    from nl2hltl2plan.language.learned import parse_instruction
+
+    r = parse_instruction(instruction, types, scene, strict=False)
+    return r.tasks, r.before, r.unparsed
+
+
+def grammar_generator(
+    instruction: str, types: set[str], scene: str
+) -> tuple[list[BaseTaskSpec], list[tuple[str, str]], list[str]]:
+    """The `grammar` backend: the offline grammar parser alone."""
     from nl2hltl2plan.language.offline import parse_instruction
 
     r = parse_instruction(instruction, types, scene, strict=False)
@@ -158,7 +169,7 @@ def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(
         prog="python -m nl2hltl2plan.language.measure", description=__doc__.split("\n")[0]
     )
-    ap.add_argument("--backend", default="offline", choices=["offline", "local", "openai"])
+    ap.add_argument("--backend", default="offline", choices=["offline", "grammar", "local", "openai"])
     ap.add_argument("--sample", type=int, default=0, help="evaluate a random sample of this many per n_base")
     ap.add_argument("--seed", type=int, default=0)
     ap.add_argument("--n-base", type=int, nargs="*", default=None, help="only these numbers of base tasks")
@@ -175,8 +186,8 @@ def main(argv: list[str] | None = None) -> int:
             grp = [r for r in rows if r["n_base"] == g]
             picked += rng.sample(grp, min(args.sample, len(grp)))
         rows = picked
-    if args.backend == "offline":
-        generate: Generator = offline_generator
+    if args.backend in ("offline", "grammar"):
+        generate: Generator = offline_generator if args.backend == "offline" else grammar_generator
         records = evaluate(rows, generate, progress=sys.stderr.isatty())
     else:
         with llm_generator(args.backend, rest) as generate:

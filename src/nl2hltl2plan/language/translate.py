@@ -2,9 +2,10 @@
 
 `translate(instruction, world, backend, client)` returns a `LanguageResult`:
 
-- `offline`: the grammar parser (`offline/`), leaf actions from the worlds' recipes; deterministic;
-- `learned`: the grammar's clauses and relations with a slot model trained on ALFRED's annotations
-  (`learned/`); multi-type words come back ranked as `ambiguities`;
+- `offline` (alias `learned`): the grammar parser (`offline/`) with the slot model trained on ALFRED's
+  annotations (`learned/`), which reads the clauses the grammar could not and ranks multi-type words
+  (`ambiguities`); leaf actions from the worlds' recipes; deterministic;
+- `grammar`: the grammar parser alone;
 - `local` / `openai`: the paper's prompted stages through an OpenAI-compatible server
   (decomposition, relations per non-leaf node, action completion per leaf; optionally rephrasing +
   translation per non-leaf node), each answer validated and grounded in the scene.
@@ -162,20 +163,20 @@ def _parse(
     strict: bool,
     look: AffordanceLookup | None,
 ) -> LanguageResult:
-    """The parser backends: the grammar alone, or the grammar with the learned slot model."""
+    """The parser backends: the grammar with the learned slot model (offline / learned), or the grammar."""
     from nl2hltl2plan.language import learned, offline
 
     ambiguities: list[Ambiguity] = []
-    if backend == "learned":
+    if backend == "grammar":
+        parsed: offline.OfflineParse = offline.parse_instruction(
+            instruction, types, scene or "the scene", strict=strict, affordances=look
+        )
+    else:
         lp = learned.parse_instruction(
             instruction, types, scene or "the scene", strict=strict, affordances=look
         )
-        parsed: offline.OfflineParse = lp
+        parsed = lp
         ambiguities = lp.ambiguities
-    else:
-        parsed = offline.parse_instruction(
-            instruction, types, scene or "the scene", strict=strict, affordances=look
-        )
     if not parsed.tasks:
         why = "; ".join(parsed.unparsed) or "no task verb found"
         raise HTTError(

@@ -3,22 +3,20 @@
 One `Example` per (trial, annotation): the crowd-written `task_desc` and the base task its trial's
 `task_type` / `pddl_params` define. Train: ALFRED `train` trials minus every trial listed in
 `benchmark/training_exclusions.txt` (the families test50 was composed from); validation: `valid_seen`
-and `valid_unseen`. `compose` builds multi-task instructions from validation examples of one floor plan
-with varied temporal connectives and their ground-truth `before` pairs (fixed seed).
+and `valid_unseen`. Text-faithful labels and the synthetic multi-task validation: `faithful.py`.
 """
 
 from __future__ import annotations
 
 import gzip
 import json
-import random
 import re
 from dataclasses import dataclass, field
 from functools import lru_cache
 
 from nl2hltl2plan.config import data_path
 from nl2hltl2plan.errors import DataError
-from nl2hltl2plan.language.tasks import BaseTaskSpec, task_letter
+from nl2hltl2plan.language.tasks import BaseTaskSpec
 
 KIND_OF_TASK_TYPE = {
     "pick_and_place_simple": "place",
@@ -147,58 +145,4 @@ def load_examples() -> dict[str, list[Example]]:
                     out[row["split"]].append(_example(row, ann["task_desc"]))
     if not out["train"]:
         raise DataError("no ALFRED training examples found in alfred/trials.jsonl.gz")
-    return out
-
-
-# Connective templates: (text with {0}, {1} ... for clauses, before pairs as clause indices).
-TEMPLATES_2: list[tuple[str, list[tuple[int, int]]]] = [
-    ("First {0}, then {1}.", [(0, 1)]),
-    ("{0}. Then {1}.", [(0, 1)]),
-    ("After you {0}, {1}.", [(0, 1)]),
-    ("{1} after you {0}.", [(0, 1)]),
-    ("{0} before you {1}.", [(0, 1)]),
-    ("Once done with the task to {0}, {1}.", [(0, 1)]),
-    ("{0} and {1} in any order.", []),
-    ("{0}. At any time, {1}.", []),
-    ("{0}. Simultaneously, {1}.", []),
-    ("{1}. Before that, {0}.", [(0, 1)]),
-]
-TEMPLATES_3: list[tuple[str, list[tuple[int, int]]]] = [
-    ("First {0}, then {1}, and finally {2}.", [(0, 1), (1, 2)]),
-    ("{2} after you {0}. At any time, {1}.", [(0, 2)]),
-    ("{0} and {1} in any order. Finally, {2}.", [(0, 2), (1, 2)]),
-    ("{0}. Then {1}. Meanwhile, {2}.", [(0, 1)]),
-]
-
-
-def _clause(text: str) -> str:
-    t = text.strip().rstrip(".!").strip()
-    return t[:1].lower() + t[1:] if t else t
-
-
-def compose(examples: list[Example], n: int, seed: int = 0) -> list[Composition]:
-    """`n` synthetic 2- and 3-task instructions, each from examples of one floor plan (deterministic)."""
-    rng = random.Random(seed)
-    by_plan: dict[str, list[Example]] = {}
-    for e in examples:
-        by_plan.setdefault(e.floor_plan, []).append(e)
-    plans = sorted(p for p, es in by_plan.items() if len({e.trial for e in es}) >= 3)
-    out: list[Composition] = []
-    while len(out) < n and plans:
-        plan = rng.choice(plans)
-        k = rng.choice((2, 3))
-        template, pairs = rng.choice(TEMPLATES_2 if k == 2 else TEMPLATES_3)
-        chosen: list[Example] = []
-        for e in rng.sample(by_plan[plan], len(by_plan[plan])):
-            if all(e.trial != c.trial for c in chosen):
-                chosen.append(e)
-            if len(chosen) == k:
-                break
-        text = template.format(*(_clause(e.text) for e in chosen))
-        text = text[:1].upper() + text[1:]
-        tasks = [e.as_task(task_letter(i)) for i, e in enumerate(chosen)]
-        for t, e in zip(tasks, chosen, strict=True):
-            t.text = _clause(e.text)
-        before = [(task_letter(a), task_letter(b)) for a, b in pairs]
-        out.append(Composition(text, plan, tasks, before, template, [e.trial for e in chosen]))
     return out

@@ -1,11 +1,11 @@
-"""Measure the learned backend against the grammar parser, on validation or (once, at the end) test50.
+"""The final report: grammar vs the default (learned) offline backend on test50, run once, and speed.
 
-    python -m nl2hltl2plan.language.learned.measure valid [--split valid_seen] [--n-compose 300]
-    python -m nl2hltl2plan.language.learned.measure test50
+    python -m nl2hltl2plan.language.learned.measure test50   # the final report only, never for tuning
+    python -m nl2hltl2plan.language.learned.measure speed [--split valid_unseen]
 
-`valid`: single ALFRED task descriptions of the split plus synthetic compositions of that split
-(`data.compose`), scored with `language.scoring.match` like the benchmark. `test50`: the benchmark
-table (`language.measure.table`) for both backends, and speed.
+Choices are made on the text-faithful validation (`learned.validate`); test50 is the benchmark table
+(`language.measure.table`) for both backends. `speed` times the default backend on validation
+instructions (model load, median and max per instruction).
 """
 
 from __future__ import annotations
@@ -17,57 +17,20 @@ import time
 from typing import Any
 
 from nl2hltl2plan.language.grounding import scene_types
-from nl2hltl2plan.language.learned.data import Composition, Example, compose, faithful, load_examples
 from nl2hltl2plan.language.learned.inference import Policy, load_model, parse_instruction
-from nl2hltl2plan.language.measure import Generator, evaluate, load_benchmark, offline_generator, table
+from nl2hltl2plan.language.learned.model import SlotModel
+from nl2hltl2plan.language.measure import Generator, evaluate, grammar_generator, load_benchmark, table
 from nl2hltl2plan.language.tasks import BaseTaskSpec
 
 
-def learned_generator(policy: Policy | None = None) -> Generator:
+def learned_generator(policy: Policy | None = None, model: SlotModel | None = None) -> Generator:
     def generate(
         instruction: str, types: set[str], scene: str
     ) -> tuple[list[BaseTaskSpec], list[tuple[str, str]], list[str]]:
-        r = parse_instruction(instruction, types, scene, strict=False, policy=policy)
+        r = parse_instruction(instruction, types, scene, strict=False, policy=policy, model=model)
         return r.tasks, r.before, r.unparsed
 
     return generate
-
-
-def _row_single(i: int, e: Example) -> dict[str, Any]:
-    return {
-        "id": f"{e.trial}#{i}",
-        "n_base": 1,
-        "instruction": e.text,
-        "scene": e.floor_plan,
-        "tasks": [e.as_task().model_dump()],
-        "before": [],
-        "feasible": True,
-        "ambiguous": False,
-    }
-
-
-def _row_comp(i: int, c: Composition) -> dict[str, Any]:
-    return {
-        "id": f"compose{i}",
-        "n_base": len(c.tasks),
-        "instruction": c.instruction,
-        "scene": c.scene,
-        "tasks": [t.model_dump() for t in c.tasks],
-        "before": c.before,
-        "feasible": True,
-        "ambiguous": False,
-    }
-
-
-def validation_rows(
-    split: str, n_compose: int, seed: int = 0, only_faithful: bool = True
-) -> list[dict[str, Any]]:
-    """Single annotations and compositions of a validation split (by default those whose text states
-    their task, `data.faithful`, as the benchmark's annotation follows the text)."""
-    ex = [e for e in load_examples()[split] if faithful(e) or not only_faithful]
-    return [_row_single(i, e) for i, e in enumerate(ex)] + [
-        _row_comp(i, c) for i, c in enumerate(compose(ex, n_compose, seed))
-    ]
 
 
 def speed(rows: list[dict[str, Any]]) -> str:
@@ -88,27 +51,21 @@ def speed(rows: list[dict[str, Any]]) -> str:
 
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(prog="python -m nl2hltl2plan.language.learned.measure")
-    ap.add_argument("what", choices=["valid", "test50"])
-    ap.add_argument("--split", default="valid_seen", choices=["valid_seen", "valid_unseen"])
-    ap.add_argument("--n-compose", type=int, default=300)
-    ap.add_argument(
-        "--all-annotations", action="store_true", help="validate on every annotation, not only faithful ones"
-    )
-    ap.add_argument("--kind-override", type=float, nargs="*", default=[Policy().kind_override])
+    ap.add_argument("what", choices=["test50", "speed"])
+    ap.add_argument("--split", default="valid_unseen", choices=["valid_seen", "valid_unseen"])
     args = ap.parse_args(argv)
-    rows = (
-        validation_rows(args.split, args.n_compose, only_faithful=not args.all_annotations)
-        if args.what == "valid"
-        else load_benchmark()
-    )
-    print(f"{args.what} {args.split if args.what == 'valid' else ''}: {len(rows)} instructions")
-    print("grammar (offline):")
-    print(table(evaluate(rows, offline_generator)))
-    for ov in args.kind_override:
-        print(f"learned (kind override {ov}):")
-        print(table(evaluate(rows, learned_generator(Policy(kind_override=ov)))))
-    if args.what == "test50":
-        print(speed(rows))
+    if args.what == "speed":
+        from nl2hltl2plan.language.learned.validate import validation_rows
+
+        rows = validation_rows(args.split)
+        print(f"{args.split}: {len(rows)} instructions; {speed(rows)}")
+        return 0
+    rows = load_benchmark()
+    print(f"test50: {len(rows)} instructions")
+    print("grammar:")
+    print(table(evaluate(rows, grammar_generator)))
+    print("offline (default: grammar + learned model):")
+    print(table(evaluate(rows, learned_generator())))
     return 0
 
 

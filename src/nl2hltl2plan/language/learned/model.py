@@ -47,7 +47,7 @@ class SlotPrediction:
 def _trains(head: str, e: Example) -> bool:
     if head == "kind":
         return states_kind(e)
-    return head in ("sliced", "object") or bool(e.slot(head))
+    return head == "sliced" or bool(e.slot(head))
 
 
 def _label(e: Example, head: str) -> str:

@@ -118,11 +118,14 @@ def self_state(ref: str, specs: list[BaseTaskSpec]) -> None:
             s.kind = kind
 
 
+_YOU = re.compile(r"^\s*you\s+(?:have\s+|had\s+)?", re.I)
+
+
 def new_tasks_from_ref(ref: str, b: TaskBuilder, text: str) -> list[BaseTaskSpec]:
     """A reference that names no earlier task but states one ("after picking up the box and placing it on
     the armchair"): parse it as clauses of its own."""
     drafts: list[Draft] = []
-    for c_text, _s, _e, _j in split_clauses(ref):
+    for c_text, _s, _e, _j in split_clauses(_YOU.sub("", ref)):  # "after you put ...": a clause of its own
         words = [w for w, _, _ in tokens(c_text)]
         if words and words[0] not in G.VERBS:
             continue

@@ -120,11 +120,16 @@ def relation_sentence(body: str) -> RelationSentence | None:
     return None
 
 
+_UNTIL = re.compile(r"\b([Dd])(?:o not|on't) ([^.;!?]+?) until (?:you )?([^.;!?]+)")
+
+
 def normalize(text: str) -> str:
     """Straight quotes, a space after a full stop, no parenthetical remarks, single spaces."""
     text = text.replace("\u2019", "'").replace("\u2018", "'").replace("\u201c", '"').replace("\u201d", '"')
     text = re.sub(r"(?<=[a-z])\.(?=[A-Za-z])", ". ", text)
     text = re.sub(r"\s*\([^)]*\)", "", text)  # parenthetical remarks: "(where the red block is now)"
+    # "Do not Y until (you) X" states the order of "After X, Y" (ANNOTATION_GUIDE.md)
+    text = _UNTIL.sub(lambda m: f"{'A' if m.group(1) == 'D' else 'a'}fter {m.group(3)}, {m.group(2)}", text)
     return re.sub(r"\s+", " ", text).strip()
 
 

@@ -1,0 +1,98 @@
+"""Segmentation rescue: clauses the grammar could not read, read by the slot model and re-parsed.
+
+Measured per stage on the text-faithful validation (`learned.validate`), the grammar's worst stage is
+segmentation: most wrong instructions have too few base tasks because one clause did not fit a frame
+("move two boxes of tissue from counter to back of toilet", "put the ladle on the end tale"). The
+grammar lists such clauses in `unparsed`. Here the slot model reads each of them; when it finds a task
+whose words the clause names, the clause is replaced in the instruction by a canonical sentence for
+that task ("put two tissue boxes in the toilet") and the grammar parses the whole instruction again, so
+the connectives around the clause still give its temporal relations and groups. The rewrite is kept
+only when the grammar then reads more tasks.
+"""
+
+from __future__ import annotations
+
+import re
+
+from nl2hltl2plan.language.grounding import camel_words, find_mentions
+from nl2hltl2plan.language.learned.model import SlotModel, SlotPrediction
+from nl2hltl2plan.language.offline.sentences import normalize
+
+_IN_CLAUSE = re.compile(
+    r"^(?:no destination for the .*? in|no object to act on in|nothing to hold under the lamp in|"
+    r"cannot hold the .*? to look at it): (?P<clause>.+)$"
+)
+_NOTE = re.compile(r"^(?P<clause>.+?) \((?:a list of destinations|more than two objects[^)]*)\)$")
+_TREAT = {"heat_place": "heat", "cool_place": "chill", "clean_place": "rinse"}
+
+
+def failed_clauses(unparsed: list[str]) -> list[str]:
+    """The clause texts named by the grammar's `unparsed` messages (relations' messages left out)."""
+    out = []
+    for msg in unparsed:
+        if msg.startswith("could not tell which task"):
+            continue
+        m = _IN_CLAUSE.match(msg) or _NOTE.match(msg)
+        out.append(m.group("clause") if m else msg)
+    return out
+
+
+def _np(type_name: str, sliced: bool = False) -> str:
+    return f"a slice of {camel_words(type_name)}" if sliced else f"the {camel_words(type_name)}"
+
+
+def _plural(type_name: str) -> str:
+    w = camel_words(type_name)
+    return w + ("es" if re.search(r"(s|x|ch|sh)$", w) else "s")
+
+
+def canonical(pred: SlotPrediction) -> str | None:
+    """A sentence the grammar reads as the predicted task (None: a slot has no scene type)."""
+    kind = pred.top_kind
+    top = {s: r[0][0] for s, r in pred.slots.items() if r}
+    if "object" not in top:
+        return None
+    sliced = pred.sliced >= 0.5
+    obj = _np(top["object"], sliced)
+    if kind == "examine_in_light":
+        return f"examine {obj} under the {camel_words(top['light'])}" if "light" in top else None
+    if "receptacle" not in top:
+        return None
+    rec = f"the {camel_words(top['receptacle'])}"
+    if kind == "place_two":
+        return f"put two {_plural(top['object'])} in {rec}"
+    if kind == "place_in_container":
+        if "container" not in top:
+            return None
+        return f"put the {camel_words(top['container'])} with {obj} in it in {rec}"
+    if kind in _TREAT:
+        return f"{_TREAT[kind]} {obj} and put it in {rec}"
+    return f"put {obj} in {rec}"
+
+
+def _names_object(clause: str, pred: SlotPrediction) -> bool:
+    """The clause names (a lexicon phrase for) the predicted object: the model found, not invented, it."""
+    top = pred.slots.get("object") or []
+    named = {t for m in find_mentions(clause) for t in m.entry.types}
+    return bool(top) and top[0][0] in named
+
+
+def rewrite(
+    instruction: str, unparsed: list[str], model: SlotModel, types: set[str] | None, min_kind: float = 0.5
+) -> str | None:
+    """The instruction with each readable failed clause replaced by its canonical sentence (None: none)."""
+    text = normalize(instruction)
+    changed = False
+    for clause in failed_clauses(unparsed):
+        at = text.lower().find(clause.lower())
+        if at < 0 or not clause.strip():
+            continue
+        pred = model.predict([clause], types)[0]
+        if pred.kind[0][1] < min_kind or not _names_object(clause, pred):
+            continue
+        sentence = canonical(pred)
+        if sentence is None:
+            continue
+        text = text[:at] + sentence + text[at + len(clause) :]
+        changed = True
+    return text if changed else None
