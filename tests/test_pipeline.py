@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+from typing import Any
 
 import pytest
 
@@ -106,6 +107,34 @@ def test_ask_lets_the_user_pick_the_type(
     assert payload["tasks"][0]["receptacle"] == [picked] and payload["ambiguities"] == []
     monkeypatch.setattr("sys.stdin", io.StringIO("9\n"))
     assert main(["plan", TABLE, "--world", "FloorPlan201", "--llm", "learned", "--ask"]) == 2
+
+
+@needs_data
+def test_run_asks_once_applies_and_records_the_picks(monkeypatch: pytest.MonkeyPatch) -> None:
+    """`ask` sees the ambiguities of the one parse; its pick is applied and kept in the options."""
+    from nl2hltl2plan.language import learned
+    from nl2hltl2plan.worlds import load_world
+
+    parses = []
+    original = learned.parse_instruction
+
+    def counted(*args: Any, **kwargs: Any) -> Any:
+        parses.append(args[0])
+        return original(*args, **kwargs)
+
+    monkeypatch.setattr(learned, "parse_instruction", counted)
+    seen = []
+
+    def pick_last(ambiguities: list[Any]) -> dict[str, str]:
+        seen.extend(ambiguities)
+        return {f"{a.task}.{a.role}": a.candidates[-1] for a in ambiguities}
+
+    out = run(TABLE, load_world("FloorPlan201"), robots=1, ask=pick_last)
+    assert len(parses) == 1 and len(seen) == 1
+    key = f"{seen[0].task}.{seen[0].role}"
+    assert out.options.choices == {key: seen[0].candidates[-1]}
+    assert out.language.tasks[0].receptacle == [seen[0].candidates[-1]] and out.language.ambiguities == []
+    assert out.ok
 
 
 def test_the_learned_parser_cross_checks_an_llm_reading(world) -> None:

@@ -27,8 +27,8 @@ from pydantic import BaseModel, ConfigDict, Field
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.backends import Backend
 from nl2hltl2plan.language.llm.client import LLMClient
-from nl2hltl2plan.language.result import LanguageResult
-from nl2hltl2plan.language.translate import ActionSource, LtlSource, translate
+from nl2hltl2plan.language.result import Ambiguity, LanguageResult
+from nl2hltl2plan.language.translate import ActionSource, Chooser, LtlSource, translate
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.planning import PlanResult, PlanStatus, plan
 from nl2hltl2plan.planning.api import Mode
@@ -70,9 +70,15 @@ class Planned:
 
 
 def language_stage(
-    instruction: str, world: World, options: PipelineOptions | None = None, client: LLMClient | None = None
+    instruction: str,
+    world: World,
+    options: PipelineOptions | None = None,
+    client: LLMClient | None = None,
+    ask: Chooser | None = None,
 ) -> LanguageResult:
-    """Instruction -> HTT, base tasks, leaf actions and the hierarchical spec (`result.spec`)."""
+    """Instruction -> HTT, base tasks, leaf actions and the hierarchical spec (`result.spec`).
+
+    `ask`: shown the parse's ambiguous words, returns the user's picks (`plan --ask`)."""
     opt = options or PipelineOptions()
     return translate(
         instruction,
@@ -83,6 +89,7 @@ def language_stage(
         actions=opt.actions,
         strict=opt.strict,
         choices=opt.choices,
+        ask=ask,
     )
 
 
@@ -176,8 +183,12 @@ def run(
     options: PipelineOptions | None = None,
     client: LLMClient | None = None,
     gt: GTInstance | None = None,
+    ask: Chooser | None = None,
 ) -> Outcome:
     """Instruction -> checked plan for a team in `world` (see the module docstring).
+
+    `ask`: shown the ambiguous words of the parse, returns the user's picks; they are applied and kept
+    in `outcome.options.choices` (so the run can be repeated without asking).
 
     `robots`: a number of robots that can do everything, or a `worlds.team.Team` of robots with
     skills and carrying capacities (their capabilities bound the allocation). Raises an
@@ -192,7 +203,16 @@ def run(
         opt = opt.model_copy(update={"capabilities": [_listed(c) for c in team.capabilities(world)]})
     if opt.capabilities is not None and len(opt.capabilities) != team.size:
         raise HTTError(f"{len(opt.capabilities)} capability sets given for {team.size} robot(s)")
-    lang = language_stage(instruction, world, opt, client)
+    picks: dict[str, str] = {}
+
+    def recorded(ambiguities: list[Ambiguity]) -> dict[str, str]:
+        assert ask is not None
+        picks.update(ask(ambiguities))
+        return picks
+
+    lang = language_stage(instruction, world, opt, client, ask=recorded if ask is not None else None)
+    if picks:
+        opt = opt.model_copy(update={"choices": {**opt.choices, **picks}})
     if lang.spec is None:
         why = "; ".join(lang.warnings + lang.issues + lang.unparsed) or "no leaf actions"
         raise HTTError(f"no hierarchical specification for {instruction!r}: {why}")

@@ -139,9 +139,8 @@ def run(args: argparse.Namespace) -> int:
     spinner, on_request = _spinner(backend != "offline" and batch is None and not args.json)
     try:
         with spinner, open_client(backend, settings, batch=batch, on_request=on_request) as client:
-            if args.ask:
-                options = _ask_choices(args.instruction, world, options, client)
-            outcome = run_pipeline(args.instruction, world, team, options, client)
+            ask = _ask_on_terminal if args.ask else None
+            outcome = run_pipeline(args.instruction, world, team, options, client, ask=ask)
     except PendingAnswer:
         assert batch is not None
         n = batch.write(args.batch_out)
@@ -164,14 +163,12 @@ def run(args: argparse.Namespace) -> int:
     return EXIT_OK
 
 
-def _ask_choices(instruction: str, world: Any, options: Any, client: Any) -> Any:
-    """Ask which type each ambiguous word means; the answers become `options.choices`."""
+def _ask_on_terminal(ambiguities: list[Any]) -> dict[str, str]:
+    """Ask which type each ambiguous word means (one number per word on standard input)."""
     from nl2hltl2plan.errors import HTTError
-    from nl2hltl2plan.pipeline import language_stage
 
-    lang = language_stage(instruction, world, options.model_copy(update={"actions": "none"}), client)
-    choices = dict(options.choices)
-    for a in lang.ambiguities:
+    choices: dict[str, str] = {}
+    for a in ambiguities:
         print(f"{a.word!r} ({a.role} of task {a.task}) could mean:", file=sys.stderr)
         confidence = a.confidence or [0.0] * len(a.candidates)
         for k, (cand, conf) in enumerate(zip(a.candidates, confidence, strict=True), 1):
@@ -184,7 +181,7 @@ def _ask_choices(instruction: str, world: Any, options: Any, client: Any) -> Any
         if not pick.isdigit() or not 1 <= int(pick) <= len(a.candidates):
             raise HTTError(f"--ask: {pick!r} is not one of 1..{len(a.candidates)}")
         choices[f"{a.task}.{a.role}"] = a.candidates[int(pick) - 1]
-    return options.model_copy(update={"choices": choices})
+    return choices
 
 
 def _print_human(outcome: Any) -> None:

@@ -16,6 +16,7 @@ relation compiler as GenerateLTL unless `ltl` asks for an LLM / learned translat
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import Literal, Protocol
 
 from nl2hltl2plan.errors import HTTError, LLMError, Nl2Hltl2PlanError, WorldError
@@ -36,6 +37,7 @@ from nl2hltl2plan.worlds.model import World
 
 LtlSource = Literal["compiler", "llm", "learned"]
 ActionSource = Literal["auto", "recipe", "llm", "none"]
+Chooser = Callable[[list[Ambiguity]], dict[str, str]]  # ambiguities -> {"A.receptacle": "SideTable"}
 
 
 class SceneLike(Protocol):
@@ -57,6 +59,7 @@ def translate(
     strict: bool = True,
     build: bool = True,
     choices: dict[str, str] | None = None,
+    ask: Chooser | None = None,
 ) -> LanguageResult:
     """Instruction -> LanguageResult (HTT, base tasks, leaf actions, hierarchical spec).
 
@@ -66,7 +69,9 @@ def translate(
     prompts), "auto" (recipe offline, llm otherwise) or "none"; `strict`: an object the scene lacks
     raises WorldError ("no Statue in FloorPlan17") instead of being reported in `issues`;
     `build`: run Algorithm 1 (off: HTT and base tasks only); `choices`: a user's pick for an
-    ambiguous slot, `{"A.receptacle": "SideTable"}` (task id . role -> scene type).
+    ambiguous slot, `{"A.receptacle": "SideTable"}` (task id . role -> scene type); `ask`: called
+    with the parse's ambiguities (if any) before leaf actions and specs are built, returns more choices
+    (`plan --ask` asks on the terminal: the instruction is parsed once).
     """
     instruction = " ".join(instruction.split())
     if not instruction:
@@ -76,7 +81,10 @@ def translate(
     if backend in PARSERS:
         look = world_lookup(world) if isinstance(world, World) else None
         res = _parse(backend, instruction, types, scene, strict, look)
-        _apply_choices(res, choices or {})
+        picked = dict(choices or {})
+        if ask is not None and res.ambiguities:
+            picked.update(ask(res.ambiguities))
+        _apply_choices(res, picked)
         _finish(res, world, backend, client, ltl, actions, build)
         return res
     if client is None:
