@@ -199,16 +199,65 @@ class Heuristic:
                              *hand_ids, full))
         if not rows and not extra_events:
             return 0, node.ms
-        carry = sum(self._carries(node, lf, memo) for lf in p.leaves
-                    if node.q[lf.index] != DONE and lf.index in self.required)
+        carry = self._carry_total(node, memo)
         walk = self._assignment(node, rows, optional, hands, carry) if rows else carry
         total = len(rows) + extra_events + walk + self._forced_opens(node, memo)
         if p.n_robots and (chain or rows):
             self._chains(node, rows, chain)
         return total, self._makespan(node, total, chain)
 
-    def _carries(self, node: Node, leaf: Leaf, memo: dict) -> int:
-        """The least walking the leaf's remaining carries need, one instance per type (bounds.py)."""
+    def _carry_total(self, node: Node, memo: dict) -> int:
+        """The carries of all pending leaves. Leaves that each take their own instance of one type
+        (two baseball bats to the bed) get distinct instances: an assignment of instances to them."""
+        total = 0
+        groups: dict[str, list[dict[int, int]]] = {}
+        for lf in self.p.leaves:
+            if node.q[lf.index] == DONE or lf.index not in self.required:
+                continue
+            per = self._carry_per_instance(node, lf, memo)
+            if per is None:
+                total += self._carries(node, lf, memo)
+            else:
+                groups.setdefault(per[0], []).append(per[1])
+        for rows in groups.values():
+            insts = sorted({o for row in rows for o in row})
+            if len(rows) == 1 or len(insts) < len(rows):
+                total += sum(min(row.values()) for row in rows)
+                continue
+            cost = np.array([[row.get(o, BIG) for o in insts] for row in rows], dtype=np.int64)
+            total += _solve(cost) or sum(min(row.values()) for row in rows)
+        return total
+
+    def _carry_per_instance(self, node: Node, leaf: Leaf, memo: dict) -> tuple[str, dict[int, int]] | None:
+        """(T, instance -> the leaf's least carries with it) when the leaf's one path takes an
+        instance of T for itself that is not bound yet; else None."""
+        paths = leaf.paths.get(node.q[leaf.index]) or []
+        if len(paths) != 1:
+            return None
+        atoms = [leaf.atoms[k] for k in paths[0]]
+        taken = sorted({a.types[0] for a in atoms if a.verb == "pickup"
+                        and leaf.exclusive("pickup", a.types[0]) and bound(node, leaf.index, a.types[0]) < 0})
+        if len(taken) != 1:
+            return None
+        t = taken[0]
+        sim = node.sim
+        objs = [o for o in self.x.by_type.get(t, []) if o not in node.claimed]
+        if any(not sim.flags[o] & PRESENT for o in objs):
+            return None  # slices still to come: no list of instances yet
+        by_anchor: dict[int, int] = {}
+        out = {}
+        for o in objs:
+            a = self.nav.anchor(sim, o)
+            if a < 0:
+                continue
+            if a not in by_anchor:
+                by_anchor[a] = self._carries(node, leaf, memo, fixed=(t, a))
+            out[o] = by_anchor[a]
+        return (t, out) if out else None
+
+    def _carries(self, node: Node, leaf: Leaf, memo: dict, fixed: tuple[str, int] | None = None) -> int:
+        """The least walking the leaf's remaining carries need, one instance per type (bounds.py);
+        `fixed`: (type, region) of a type's instance."""
         paths = leaf.paths.get(node.q[leaf.index]) or []
         if not paths:
             return 0
@@ -220,6 +269,8 @@ class Heuristic:
             picked = frozenset(types[0] for verb, types in atoms if verb == "pickup")
 
             def anchors(t: str, picked: frozenset[str] = picked) -> tuple[int, ...]:
+                if fixed is not None and t == fixed[0]:
+                    return (fixed[1],)
                 return self._anchors_of(node, leaf, t, "pickup" if t in picked else "put", memo)
 
             val = joint_min(carry_legs(atoms, held), anchors, self.rr,
