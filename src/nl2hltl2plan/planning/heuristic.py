@@ -36,6 +36,7 @@ from nl2hltl2plan.worlds.simulator import PRESENT
 BIG = 1 << 20  # forbidden predecessor (finite for the solver)
 OTHER, PICKUP, PUT = 0, 1, 2
 EMPTY = ""  # the hand right after a put
+CACHE_LIMIT = 100_000  # carry minima kept across nodes
 
 
 class Heuristic:
@@ -58,6 +59,7 @@ class Heuristic:
                 self.rr[a] = self.field[:, nav.region_idx[a]].min(axis=1)
         np.minimum(self.rr, self.rr.T, out=self.rr)
         self.after = self._after_matrix()
+        self._carry_cache: dict[tuple, int] = {}
 
     def _after_matrix(self) -> np.ndarray:
         """after[i, j]: leaf j may only start once leaf i is complete (gates, transitively)."""
@@ -273,8 +275,20 @@ class Heuristic:
                     return (fixed[1],)
                 return self._anchors_of(node, leaf, t, "pickup" if t in picked else "put", memo)
 
-            val = joint_min(carry_legs(atoms, held), anchors, self.rr,
-                            lambda r, a: self._robot_walks(node, np.array(a, dtype=np.int64))[:, r])
+            legs = carry_legs(atoms, held)
+            if not legs:
+                return 0
+            if held:
+                val = joint_min(legs, anchors, self.rr,
+                                lambda r, a: self._robot_walks(node, np.array(a, dtype=np.int64))[:, r])
+            else:  # a pure function of the legs and the candidate regions: cached across nodes
+                types = sorted({t for leg in legs for t in leg if isinstance(t, str)})
+                key = (tuple(legs), tuple(anchors(t) for t in types))
+                val = self._carry_cache.get(key, -1)
+                if val < 0:
+                    if len(self._carry_cache) > CACHE_LIMIT:
+                        self._carry_cache.clear()
+                    val = self._carry_cache[key] = joint_min(legs, anchors, self.rr, _no_robot)
             best = val if best is None else min(best, val)
             if not best:
                 break
@@ -510,3 +524,7 @@ def _solve(cost: np.ndarray) -> int:
     r_ind, c_ind = linear_sum_assignment(cost)
     total = int(cost[r_ind, c_ind].sum())
     return 0 if total >= BIG else total
+
+
+def _no_robot(robot: int, anchors: tuple[int, ...]) -> np.ndarray:
+    raise AssertionError("no robot holds anything for these carries")

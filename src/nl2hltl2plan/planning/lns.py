@@ -154,7 +154,7 @@ def _segment_moves(x: Expander, objective: Objective, best: Node, best_val: tupl
     return None
 
 
-REBIND_INSTANCES = 6  # other instances tried per type (nearest to the one in the plan first)
+REBIND_INSTANCES = 3  # other instances tried per type (nearest to the one in the plan first)
 
 
 def _rebind_moves(x: Expander, objective: Objective, best: Node, best_val: tuple[int, ...],
