@@ -12,8 +12,14 @@ is the immediate predecessor of at most one event. So the walking is at least th
   done with a full hand (open, close, toggle, slice), never by another pickup or put;
 - a robot's put-down of an object nobody needs (after examine_in_light) is not an event here; a walk
   through it is no shorter than the direct walk, so the bound stays a lower bound.
+- one hand: a put of X follows only its pickup, the robot holding X, or an action after which the
+  hand may hold X (any robot may do a leaf's other actions, so those say nothing about the hand); a
+  pickup never follows a moment the hand is full until a pending put.
 Unbound types use the nearest of their candidate instances. It is solved exactly with
-`scipy.optimize.linear_sum_assignment` (the assignment relaxation of the routing problem).
+`scipy.optimize.linear_sum_assignment` (the assignment relaxation of the routing problem). Two more
+bounds on the walking (`bounds.py`: the carries, binding-consistent, plus the pickups' approaches;
+a spanning tree from the robots) are computed beside it and the largest is kept; every support
+open that every completion needs adds 1.
 
 Completion time (`minmax`): the largest of (a) the current makespan, (b) each leaf's chain: its
 events happen one after another, the first no earlier than a robot can reach it and than the tasks

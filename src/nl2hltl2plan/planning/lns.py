@@ -1,14 +1,16 @@
 """Large-neighbourhood search on a plan: take tasks out, put them back where they cost least.
 
 The local search of `improve.py` moves one segment at a time, either to another robot or to another
-place in the order. Here a whole leaf (all its events, its put-downs included) is taken out of the
-plan and re-inserted as one block, done by one robot, at the cheapest (robot, place) pair; then
-pairs of leaves are taken out together and re-inserted one after the other, each at its cheapest
-pair (ruin and recreate), and finally each segment is moved to its cheapest (robot, place) pair.
-Every candidate is replayed through the transition relation (preconditions, bindings, orderings,
-schedule, support actions re-inserted where the new order needs them), and a change is kept only
-if the objective improves. Candidates are tried in a fixed order and counted in replays, so the
-result is the same on every machine; `plan()` validates whatever comes out.
+place in the order. Here, in this order until nothing improves: a whole leaf (all its events, its
+put-downs included) is taken out and re-inserted as one block, done by one robot, at the cheapest
+(robot, place); each segment is moved to its cheapest (robot, place); a leaf is done with another
+instance of one of its objects (the plate by the side table instead of the one by the watch), at
+its cheapest (robot, place); two leaves are taken out together and re-inserted one after the other,
+each at its cheapest (ruin and recreate). Every candidate is replayed through the transition
+relation (preconditions, bindings, orderings, schedule; support actions re-inserted where the new
+order needs them), and a change is kept only if the objective improves. Candidates are tried in a
+fixed order and counted in replays, so the result is the same on every machine; `plan()` validates
+whatever comes out.
 """
 
 from __future__ import annotations
