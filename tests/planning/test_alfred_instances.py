@@ -36,7 +36,8 @@ def run_instance(instance_id: str, robots: int, **kw):
     ("FloorPlan7.tasks_4.compose_2.fintune_1", 2),  # Cup-or-Mug leaf, slicing, fridge and microwave
 ])
 def test_hard_benchmark_instances_pass_the_checker(instance, robots):
-    gt, r, issues = run_instance(instance, robots)
+    # a small A* budget keeps the suite quick: what is checked here is the plan, not its quality
+    gt, r, issues = run_instance(instance, robots, fast_expansions=300)
     assert not issues and r.solved
     verdict = check(r.execution, gt)
     assert verdict.success, verdict.reasons

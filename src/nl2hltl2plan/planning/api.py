@@ -12,6 +12,7 @@ from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.planning.extract import refine_stand_cells, to_plan
 from nl2hltl2plan.planning.heuristic import Heuristic
 from nl2hltl2plan.planning.improve import improve
+from nl2hltl2plan.planning.lns import lns
 from nl2hltl2plan.planning.model import Infeasible, Problem, _required_leaves, build_problem
 from nl2hltl2plan.planning.navigation import Navigator
 from nl2hltl2plan.planning.objective import Objective, ObjectiveName, objective_for
@@ -31,9 +32,10 @@ from nl2hltl2plan.worlds.model import CELL_M, Cell, World
 Mode = Literal["fast", "exact"]
 DEFAULT_TIMEOUT_S = 300.0
 DEFAULT_W = 1.5
-FAST_EXPANSIONS = 300  # AWA* expansions `fast` spends improving its first plan (at most)
-FAST_GENERATED = 5_000  # and AWA* successors generated (at most: large teams branch widely)
+FAST_EXPANSIONS = 1000  # AWA* expansions `fast` spends improving its first plan (at most)
+FAST_GENERATED = 10_000  # and AWA* successors generated (at most: large teams branch widely)
 IMPROVE_EVALS = 600  # local-search candidate replays (both modes)
+LNS_EVALS = 2000  # large-neighbourhood-search candidate replays (both modes)
 MAX_NODES = 400_000  # search nodes held at once (about 1.5 GB), the memory bound
 BEAM_WIDTH = 8
 BEAM_INSTANCES = 3
@@ -90,6 +92,7 @@ def plan(
     w: float = DEFAULT_W,
     fast_expansions: int | None = FAST_EXPANSIONS,
     improve_evals: int = IMPROVE_EVALS,
+    lns_evals: int = LNS_EVALS,
     max_nodes: int | None = MAX_NODES,
     refine: bool | None = None,
 ) -> PlanResult:
@@ -104,8 +107,9 @@ def plan(
     minimises the completion time (steps), ties broken by the summed cost.
     mode: "exact" searches until the plan is proven optimal (`result.model` names the model the
     optimum is over). "fast" (default) is anytime: beam-search seeds, local search
-    (`improve_evals` candidate replays), then anytime weighted A* (weight `w`) for at most
-    `fast_expansions` expansions (and 5,000 generated successors); `bound` is the ratio to the
+    (`improve_evals` candidate replays), large-neighbourhood search (`lns_evals` replays), then
+    anytime weighted A* (weight `w`) for at most
+    `fast_expansions` expansions (and 10,000 generated successors); `bound` is the ratio to the
     optimum it could prove. With
     `fast_expansions=None`, fast stops as soon as the plan is proven within factor `w`. Every budget
     counts machine-independent units, so the same input gives the same plan; `timeout_s` is a
@@ -138,7 +142,7 @@ def plan(
     x = Expander(problem, Navigator(world))
     required = {problem.leaf_index[n] for n in _required_leaves(problem)}
     searcher = Searcher(x, Heuristic(x, required), obj, deadline)
-    budget = Budget(fast_expansions if mode == "fast" else None, improve_evals,
+    budget = Budget(fast_expansions if mode == "fast" else None, improve_evals, lns_evals,
                     w if mode == "fast" and fast_expansions is None else 1.0, w if mode == "fast" else 1.0,
                     max_nodes, FAST_GENERATED if mode == "fast" and fast_expansions is not None else None,
                     free_stands=grid_model(objective, mode))
@@ -174,6 +178,7 @@ class Budget:
 
     expansions: int | None  # AWA* expansions after the seed (None: until w_stop is proven)
     improve_evals: int  # local-search candidate replays
+    lns_evals: int  # large-neighbourhood-search candidate replays
     w_stop: float  # stop once the incumbent is proven within this factor
     w_order: float  # the weight of the A* ordering
     max_nodes: int | None  # memory bound of the A*
@@ -212,6 +217,7 @@ def _search(searcher: Searcher, x: Expander, budget: Budget) -> Node | None:
         if best is not None:
             # local search on the allocation first: a better incumbent also prunes the A*
             best = improve(x, best, searcher.obj, budget.improve_evals, searcher.check_time)
+            best = lns(x, best, searcher.obj, budget.lns_evals, searcher.check_time)
             if budget.free_stands:  # the incumbent's cost on the grid: its best stand cells
                 best = refine_stand_cells(x, best, searcher.obj)
         x.free_stands = budget.free_stands

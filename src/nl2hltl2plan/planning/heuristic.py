@@ -12,8 +12,14 @@ is the immediate predecessor of at most one event. So the walking is at least th
   done with a full hand (open, close, toggle, slice), never by another pickup or put;
 - a robot's put-down of an object nobody needs (after examine_in_light) is not an event here; a walk
   through it is no shorter than the direct walk, so the bound stays a lower bound.
+- one hand: a put of X follows only its pickup, the robot holding X, or an action after which the
+  hand may hold X (any robot may do a leaf's other actions, so those say nothing about the hand); a
+  pickup never follows a moment the hand is full until a pending put.
 Unbound types use the nearest of their candidate instances. It is solved exactly with
-`scipy.optimize.linear_sum_assignment` (the assignment relaxation of the routing problem).
+`scipy.optimize.linear_sum_assignment` (the assignment relaxation of the routing problem). Two more
+bounds on the walking (`bounds.py`: the carries, binding-consistent, plus the pickups' approaches;
+a spanning tree from the robots) are computed beside it and the largest is kept; every support
+open that every completion needs adds 1.
 
 Completion time (`minmax`): the largest of (a) the current makespan, (b) each leaf's chain: its
 events happen one after another, the first no earlier than a robot can reach it and than the tasks
@@ -26,12 +32,17 @@ from __future__ import annotations
 import numpy as np
 from scipy.optimize import linear_sum_assignment
 
+from nl2hltl2plan.planning.bounds import carry_legs, joint_min, spanning_walk
 from nl2hltl2plan.planning.model import DONE, Leaf
 from nl2hltl2plan.planning.navigation import INF
 from nl2hltl2plan.planning.state import Expander, Node, bound
+from nl2hltl2plan.planning.support import blockers
+from nl2hltl2plan.worlds.simulator import PRESENT
 
 BIG = 1 << 20  # forbidden predecessor (finite for the solver)
 OTHER, PICKUP, PUT = 0, 1, 2
+EMPTY = ""  # the hand right after a put
+CACHE_LIMIT = 100_000  # carry minima kept across nodes
 
 
 class Heuristic:
@@ -54,6 +65,7 @@ class Heuristic:
                 self.rr[a] = self.field[:, nav.region_idx[a]].min(axis=1)
         np.minimum(self.rr, self.rr.T, out=self.rr)
         self.after = self._after_matrix()
+        self._carry_cache: dict[tuple, int] = {}
 
     def _after_matrix(self) -> np.ndarray:
         """after[i, j]: leaf j may only start once leaf i is complete (gates, transitively)."""
@@ -103,7 +115,9 @@ class Heuristic:
         return res
 
     def _path_events(self, node: Node, leaf: Leaf, path: tuple[int, ...], memo: dict) -> list[tuple]:
-        """[(anchors, kind, carried_from position or -1, held_by robot or -1)] per event."""
+        """Per event: (anchors, kind, carried_from position or -1, held_by robot or -1, the type the
+        robot must hold when doing it (None: any), the hand right after it (a type; EMPTY; None:
+        unknown), whether that hand stays full until a later put of this path)."""
         where: dict[str, tuple[int, ...]] = {}
         picked: dict[str, int] = {}
         held = {}
@@ -111,6 +125,7 @@ class Heuristic:
         for t, o in node.bind[leaf.index]:
             if sim.holder[o] >= 0:
                 held[t] = sim.holder[o]
+        hand = next(iter(held), None)  # the type this leaf's robot holds (one hand: at most one)
         out = []
         for j, k in enumerate(path):
             atom = leaf.atoms[k]
@@ -121,7 +136,17 @@ class Heuristic:
             kind = PICKUP if atom.verb == "pickup" else PUT if atom.verb == "put" else OTHER
             carried = picked.get(atom.types[0], -1) if kind == PUT else -1
             holder = held.pop(atom.types[0], -1) if kind == PUT and carried < 0 else -1
-            out.append((anchors, kind, carried, holder))
+            # any robot may do a leaf's other actions (the lamp switched on while another robot
+            # holds the object): only a put needs the hand, and only a pickup fills it
+            need = hand if kind == PUT and hand == atom.types[0] else None
+            after = atom.types[0] if kind == PICKUP else EMPTY if kind == PUT else None
+            if kind == PUT and hand == atom.types[0]:
+                hand = None
+            elif kind == PICKUP:
+                hand = atom.types[0]
+            full = after not in (None, EMPTY) and any(
+                leaf.atoms[k2].verb == "put" and leaf.atoms[k2].types[0] == after for k2 in path[j + 1:])
+            out.append((anchors, kind, carried, holder, need, after, full))
             if kind == PUT:
                 where[atom.types[0]] = anchors
                 picked.pop(atom.types[0], None)
@@ -148,9 +173,11 @@ class Heuristic:
                 kinds = {c[1] for c in col}
                 carried = {c[2] for c in col}
                 holders = {c[3] for c in col}
+                hands = {c[4:] for c in col}
                 merged.append((anchors, kinds.pop() if len(kinds) == 1 else OTHER,
                                carried.pop() if len(carried) == 1 else -1,
-                               holders.pop() if len(holders) == 1 else -1))
+                               holders.pop() if len(holders) == 1 else -1,
+                               *(hands.pop() if len(hands) == 1 else (None, None, False))))
             return merged, []
         return [], [ev for e in evs for ev in e]
 
@@ -159,7 +186,8 @@ class Heuristic:
         """(lower bound on remaining summed cost, lower bound on the final makespan)."""
         p = self.p
         memo: dict = {}
-        rows: list[tuple] = []  # (leaf, pos, anchors, kind, carried row, holder)
+        rows: list[tuple] = []  # (leaf, pos, anchors, kind, carried row, holder, need, after, full)
+        hands: dict[tuple[int, str], int] = {}  # (leaf, held type) -> id
         optional: list[tuple[int, ...]] = []
         extra_events = 0
         chain: dict[int, tuple[int, int]] = {}
@@ -173,17 +201,138 @@ class Heuristic:
                 chain[lf.index] = (0, lf.min_events.get(node.q[lf.index], 0))
                 continue
             base = len(rows)
-            for pos, (anchors, kind, carried, holder) in enumerate(must):
-                rows.append((lf.index, pos, anchors, kind, base + carried if carried >= 0 else -1, holder))
+            for pos, (anchors, kind, carried, holder, need, after, full) in enumerate(must):
+                hand_ids = (self._hand_id(lf.index, need, hands), self._hand_id(lf.index, after, hands))
+                rows.append((lf.index, pos, anchors, kind, base + carried if carried >= 0 else -1, holder,
+                             *hand_ids, full))
         if not rows and not extra_events:
             return 0, node.ms
-        walk = self._assignment(node, rows, optional) if rows else 0
-        total = len(rows) + extra_events + walk
+        carry = self._carry_total(node, memo)
+        walk = self._assignment(node, rows, optional, hands, carry) if rows else carry
+        total = len(rows) + extra_events + walk + self._forced_opens(node, memo)
         if p.n_robots and (chain or rows):
             self._chains(node, rows, chain)
         return total, self._makespan(node, total, chain)
 
-    def _assignment(self, node: Node, rows: list[tuple], optional: list[tuple[int, ...]]) -> int:
+    def _carry_total(self, node: Node, memo: dict) -> int:
+        """The carries of all pending leaves. Leaves that each take their own instance of one type
+        (two baseball bats to the bed) get distinct instances: an assignment of instances to them."""
+        total = 0
+        groups: dict[str, list[dict[int, int]]] = {}
+        for lf in self.p.leaves:
+            if node.q[lf.index] == DONE or lf.index not in self.required:
+                continue
+            per = self._carry_per_instance(node, lf, memo)
+            if per is None:
+                total += self._carries(node, lf, memo)
+            else:
+                groups.setdefault(per[0], []).append(per[1])
+        for rows in groups.values():
+            insts = sorted({o for row in rows for o in row})
+            if len(rows) == 1 or len(insts) < len(rows):
+                total += sum(min(row.values()) for row in rows)
+                continue
+            cost = np.array([[row.get(o, BIG) for o in insts] for row in rows], dtype=np.int64)
+            total += _solve(cost) or sum(min(row.values()) for row in rows)
+        return total
+
+    def _carry_per_instance(self, node: Node, leaf: Leaf, memo: dict) -> tuple[str, dict[int, int]] | None:
+        """(T, instance -> the leaf's least carries with it) when the leaf's one path takes an
+        instance of T for itself that is not bound yet; else None."""
+        paths = leaf.paths.get(node.q[leaf.index]) or []
+        if len(paths) != 1:
+            return None
+        atoms = [leaf.atoms[k] for k in paths[0]]
+        taken = sorted({a.types[0] for a in atoms if a.verb == "pickup"
+                        and leaf.exclusive("pickup", a.types[0]) and bound(node, leaf.index, a.types[0]) < 0})
+        if len(taken) != 1:
+            return None
+        t = taken[0]
+        sim = node.sim
+        objs = [o for o in self.x.by_type.get(t, []) if o not in node.claimed]
+        if any(not sim.flags[o] & PRESENT for o in objs):
+            return None  # slices still to come: no list of instances yet
+        by_anchor: dict[int, int] = {}
+        out = {}
+        for o in objs:
+            a = self.nav.anchor(sim, o)
+            if a < 0:
+                continue
+            if a not in by_anchor:
+                by_anchor[a] = self._carries(node, leaf, memo, fixed=(t, a))
+            out[o] = by_anchor[a]
+        return (t, out) if out else None
+
+    def _carries(self, node: Node, leaf: Leaf, memo: dict, fixed: tuple[str, int] | None = None) -> int:
+        """The least walking the leaf's remaining carries need, one instance per type (bounds.py);
+        `fixed`: (type, region) of a type's instance."""
+        paths = leaf.paths.get(node.q[leaf.index]) or []
+        if not paths:
+            return 0
+        sim = node.sim
+        held = {t: sim.holder[o] for t, o in node.bind[leaf.index] if sim.holder[o] >= 0}
+        best = None
+        for path in paths:
+            atoms = [(leaf.atoms[k].verb, leaf.atoms[k].types) for k in path]
+            picked = frozenset(types[0] for verb, types in atoms if verb == "pickup")
+
+            def anchors(t: str, picked: frozenset[str] = picked) -> tuple[int, ...]:
+                if fixed is not None and t == fixed[0]:
+                    return (fixed[1],)
+                return self._anchors_of(node, leaf, t, "pickup" if t in picked else "put", memo)
+
+            legs = carry_legs(atoms, held)
+            if not legs:
+                return 0
+            if held:
+                val = joint_min(legs, anchors, self.rr,
+                                lambda r, a: self._robot_walks(node, np.array(a, dtype=np.int64))[:, r])
+            else:  # a pure function of the legs and the candidate regions: cached across nodes
+                types = sorted({t for leg in legs for t in leg if isinstance(t, str)})
+                key = (tuple(legs), tuple(anchors(t) for t in types))
+                val = self._carry_cache.get(key, -1)
+                if val < 0:
+                    if len(self._carry_cache) > CACHE_LIMIT:
+                        self._carry_cache.clear()
+                    val = self._carry_cache[key] = joint_min(legs, anchors, self.rr, _no_robot)
+            best = val if best is None else min(best, val)
+            if not best:
+                break
+        return best or 0
+
+    @staticmethod
+    def _hand_id(leaf: int, type_: str | None, hands: dict[tuple[int, str], int]) -> int:
+        """A robot's hand as an id: -1 unknown (anything), -2 empty, else (leaf, held type)."""
+        if type_ is None:
+            return -1
+        if type_ == EMPTY:
+            return -2
+        return hands.setdefault((leaf, type_), len(hands))
+
+    def _robot_hands(self, node: Node, rows: list[tuple], hands: dict[tuple[int, str], int]) -> list[tuple]:
+        """Per robot (its hand id, whether it stays full until a pending put), as for events."""
+        out = []
+        sim = node.sim
+        holders = {r[5] for r in rows if r[5] >= 0}
+        for r in range(len(node.cell)):
+            o = sim.hand.get(r, -1)
+            if o < 0:
+                out.append((-2, False))
+                continue
+            owner = [(lf, t) for lf in range(len(node.q)) if node.q[lf] != DONE
+                     for t, o2 in node.bind[lf] if o2 == o]
+            if not owner:
+                out.append((-2, False))  # nobody needs it: put down on the way (a walk no shorter)
+            elif owner[0] in hands:
+                out.append((hands[owner[0]], r in holders))
+            else:
+                out.append((-1, False))
+        return out
+
+    def _assignment(self, node: Node, rows: list[tuple], optional: list[tuple[int, ...]],
+                    hands: dict[tuple[int, str], int], carry: int) -> int:
+        """The largest of three bounds on the walking still needed: the assignment of distinct
+        predecessors, the carries plus the pickups' approaches, and the spanning tree (bounds.py)."""
         n_ev = len(rows)
         anchor_sets = [r[2] for r in rows]
         cols = anchor_sets + optional
@@ -238,11 +387,76 @@ class Heuristic:
                 cost[i, n_pred:] = BIG
                 cost[i, n_pred + holder] = keep
         cost[:, :n_ev] = ev_cols
-        r_ind, c_ind = linear_sum_assignment(cost)
-        total = int(cost[r_ind, c_ind].sum())
-        if total >= BIG:  # no valid assignment (cannot happen for a solvable node): fall back
-            return 0
-        return total
+        self._hand_rules(node, rows, cost, n_ev, n_pred, hands)
+        walk = _solve(cost)
+        # pickups are never inside a carry (one hand): their approaches add to the carries'
+        # binding-consistent minimum
+        alone = kind == PICKUP
+        approach = cost.copy()
+        approach[~alone] = np.where(approach[~alone] >= BIG, BIG, 0)
+        walk = max(walk, carry + _solve(approach))
+        # the spanning tree over the events of one known region (an event with several candidate
+        # regions would join far groups at no cost; leaving events out keeps it a bound)
+        fixed = [i for i, s in enumerate(anchor_sets) if len(s) == 1]
+        if len(fixed) > 1 or (fixed and walk == 0):
+            ev = np.minimum(pred[np.ix_(fixed, fixed)], BIG)
+            walk = max(walk, spanning_walk(ev, np.minimum(robot[:, fixed].min(axis=0), BIG)))
+        return walk
+
+    def _hand_rules(self, node: Node, rows: list[tuple], cost: np.ndarray, n_ev: int, n_pred: int,
+                    hands: dict[tuple[int, str], int]) -> None:
+        """One hand: a pickup never follows a moment the hand is full until a pending put; an event
+        that needs the hand to hold X (a put of X, an action done while holding X) follows only a
+        moment the hand may hold X. Optional events: hand unknown."""
+        robot = self._robot_hands(node, rows, hands)
+        n_opt = n_pred - n_ev
+        after = np.array([r[7] for r in rows] + [-1] * n_opt + [h for h, _ in robot], dtype=np.int64)
+        full = np.array([r[8] for r in rows] + [False] * n_opt + [f for _, f in robot], dtype=bool)
+        kind = np.array([r[3] for r in rows])
+        need = np.array([r[6] for r in rows], dtype=np.int64)
+        bad = (kind == PICKUP)[:, None] & full[None, :]
+        bad |= (need >= 0)[:, None] & (after[None, :] != -1) & (after[None, :] != need[:, None])
+        cost[bad] = BIG
+
+    def _forced_opens(self, node: Node, memo: dict) -> int:
+        """Support opens every completion needs: closed openables that every candidate of a pending
+        event sits in (or, for a put, is) and that no leaf opens itself; one open event each."""
+        forced: set[int] = set()
+        leaf_opens = {a.types[0] for lf in self.p.leaves if node.q[lf.index] != DONE
+                      for a in lf.atoms if a.verb == "open"}
+        for lf in self.p.leaves:
+            if node.q[lf.index] == DONE or lf.index not in self.required:
+                continue
+            per_path = [self._path_opens(node, lf, path) for path in lf.paths.get(node.q[lf.index]) or []]
+            if per_path:
+                forced |= set.intersection(*per_path)
+        return sum(1 for c in forced if self.x.types[c] not in leaf_opens)
+
+    def _path_opens(self, node: Node, leaf: Leaf, path: tuple[int, ...]) -> set[int]:
+        x = self.x
+        sim = node.sim
+        out: set[int] = set()
+        moved: set[str] = set()
+        for k in path:
+            atom = leaf.atoms[k]
+            target = atom.types[-1]
+            skip = target in moved or atom.verb not in ("pickup", "put")
+            if atom.verb in ("pickup", "put"):
+                moved.add(atom.types[0])  # where it is now no longer tells what it needs
+            if skip:
+                continue
+            b = bound(node, leaf.index, target)
+            cands = [b] if b >= 0 else x.by_type.get(target, [])
+            if not cands or any(x.slice_of[o] >= 0 or not sim.flags[o] & PRESENT for o in cands):
+                continue
+            need: set[int] | None = None
+            for o in cands:
+                got = {c for verb, c in blockers(sim, atom.verb, (o,)) if verb == "open"}
+                need = got if need is None else need & got
+                if not need:
+                    break
+            out |= need or set()
+        return out
 
     def _robot_walks(self, node: Node, a_idx: np.ndarray) -> np.ndarray:
         """anchors x robots: the fewest steps from where each robot may stand to each anchor."""
@@ -309,3 +523,14 @@ class Heuristic:
         for li in chain:
             best = max(best, node_done(p.leaves[li].name))
         return best
+
+
+def _solve(cost: np.ndarray) -> int:
+    """The cheapest assignment (0 when none avoids a forbidden pair: cannot happen when solvable)."""
+    r_ind, c_ind = linear_sum_assignment(cost)
+    total = int(cost[r_ind, c_ind].sum())
+    return 0 if total >= BIG else total
+
+
+def _no_robot(robot: int, anchors: tuple[int, ...]) -> np.ndarray:
+    raise AssertionError("no robot holds anything for these carries")

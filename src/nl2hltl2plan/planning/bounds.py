@@ -1,0 +1,110 @@
+"""Two more lower bounds on the walking a node still needs (summed cost), used beside the
+assignment relaxation of `heuristic.py` (the bound is the largest of them):
+
+- **Carries, binding-consistent.** Within a leaf each type binds to one instance, so the walks the
+  leaf's carries need (the key chain from where it lies to the box, then the box to the armchair)
+  are one sum over a *joint* choice of instances, not a sum of separate nearest choices. While a
+  robot carries a leaf's object to its put it holds it (one hand), so the carries of all leaves
+  are disjoint parts of the robots' walks: their summed minima bound the walking from below, and a
+  pickup's approach (its hand is empty) is disjoint from every carry, so an assignment over the
+  pickups (and the actions done holding an object no put of the leaf takes back) adds to it.
+- **Connection (spanning tree).** Every pending event is reached along some robot's walk, so the
+  walks, with all robots merged into one root, connect the events: their length is at least a
+  minimum spanning tree over the root and the events (region-to-region distances). Unlike the
+  assignment, it cannot close a group of events far from every robot into a cycle of short steps.
+
+Both use the cell-level triangle inequality: dropping events a bound does not model (support
+opens, put-downs, optional alternatives) from a robot's walk never makes it longer.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+
+import numpy as np
+from scipy.sparse.csgraph import minimum_spanning_tree
+
+JOINT_LIMIT = 4096  # instance combinations enumerated per leaf; beyond it each leg takes its own minimum
+
+Leg = tuple[object, str]  # (where the carry starts: a type of the leaf or ("robot", r), the type it ends at)
+
+
+def spanning_walk(ev: np.ndarray, root: np.ndarray) -> int:
+    """Minimum spanning tree over a root and n events: `ev` (n x n, symmetric) the event-to-event
+    walks, `root` (n) the walk from the nearest robot to each event."""
+    n = len(root)
+    if n == 0:
+        return 0
+    full = np.zeros((n + 1, n + 1), dtype=np.float64)
+    full[1:, 1:] = ev
+    full[0, 1:] = root
+    full[1:, 0] = root
+    # + 1 on every edge: the solver reads 0 as "no edge"; a spanning tree has n edges
+    tree = minimum_spanning_tree(full + 1.0)
+    return max(0, int(round(tree.sum())) - n)
+
+
+def carry_legs(atoms: Sequence[tuple[str, tuple[str, ...]]], held: dict[str, int]) -> list[Leg]:
+    """The carries of one leaf path, as legs between the places of its types: `atoms` the path's
+    (verb, types), `held` the leaf's types a robot holds now (type -> robot)."""
+    inside: dict[str, str] = {}  # type -> the type it was put into (its place follows that one)
+    start: dict[str, object] = {t: ("robot", r) for t, r in held.items()}
+    legs: list[Leg] = []
+
+    def place(t: str) -> str:
+        seen = set()
+        while t in inside and t not in seen:
+            seen.add(t)
+            t = inside[t]
+        return t
+
+    for verb, types in atoms:
+        if verb == "pickup":
+            start[types[0]] = place(types[0])
+            inside.pop(types[0], None)
+        elif verb == "put" and len(types) == 2:
+            obj, rec = types
+            origin = start.pop(obj, None)
+            if origin is not None and origin != place(rec):
+                legs.append((origin, place(rec)))
+            inside[obj] = rec
+    return legs
+
+
+def joint_min(legs: list[Leg], anchors: Callable[[str], tuple[int, ...]], rr: np.ndarray,
+              robot_walk: Callable[[int, tuple[int, ...]], np.ndarray]) -> int:
+    """The least summed walk of `legs` over one instance per type (each type's candidate regions:
+    `anchors`); `robot_walk(r, anchors)` is robot r's walk to each of them."""
+    if not legs:
+        return 0
+    types = sorted({t for leg in legs for t in leg if isinstance(t, str)})
+    sets = {t: anchors(t) for t in types}
+    if any(not sets[t] for t in types):
+        return 0  # a type without a known region: no claim
+    axis = {t: i for i, t in enumerate(types)}
+    shape = [len(sets[t]) for t in types]
+    if int(np.prod(shape)) > JOINT_LIMIT:
+        return sum(int(_leg_matrix(leg, sets, rr, robot_walk).min()) for leg in legs)
+    total = np.zeros(shape, dtype=np.int64)
+    for leg in legs:
+        m = _leg_matrix(leg, sets, rr, robot_walk)
+        src, dst = leg
+        view = [1] * len(types)
+        if isinstance(src, str):
+            view[axis[src]] = m.shape[0]
+            view[axis[dst]] = m.shape[1]
+            if axis[src] > axis[dst]:
+                m = m.T
+        else:
+            view[axis[dst]] = m.shape[1]
+        total = total + m.reshape(view)
+    return int(total.min())
+
+
+def _leg_matrix(leg: Leg, sets: dict[str, tuple[int, ...]], rr: np.ndarray,
+                robot_walk: Callable[[int, tuple[int, ...]], np.ndarray]) -> np.ndarray:
+    src, dst = leg
+    if isinstance(src, str):
+        return rr[np.ix_(list(sets[src]), list(sets[dst]))]
+    assert isinstance(src, tuple)
+    return robot_walk(int(src[1]), sets[dst]).reshape(1, -1)
