@@ -18,8 +18,8 @@ def add_backend_argument(
         "--llm",
         choices=BACKENDS,
         default=default,
-        help="language backend: offline (no model), local (llama.cpp GGUF) or openai (any "
-        "OpenAI-compatible server)" + help_extra,
+        help="language backend: offline (grammar + learned slot model, no LLM; alias learned), grammar "
+        "(the parser alone), local (llama.cpp GGUF) or openai (any OpenAI-compatible server)" + help_extra,
     )
 
 
