@@ -12,7 +12,8 @@ The rule, fixed before measuring: the largest candidate whose p95 planning time 
 project's p95 target); if none, the smallest. `planning/api.py`'s FAST_EXPANSIONS / FAST_GENERATED
 hold the chosen one.
 
-    python scripts/planner_validation.py [--instances 30] [--robots 1,2,4] [--budgets 300/5000,1000/10000,3000/30000]
+    python scripts/planner_validation.py [--instances 30] [--robots 1,2,4]
+        [--budgets 300/5000,1000/10000,3000/30000]
 """
 
 from __future__ import annotations
@@ -84,7 +85,8 @@ def main(argv: list[str] | None = None) -> int:
     budgets = [tuple(int(v) for v in b.split("/")) for b in args.budgets.split(",")]
     cases = scenarios(args.instances, args.seed)
     n3 = sum(gt.n_base == 3 for gt, _ in cases)
-    print(f"{len(cases)} valid_seen scenarios ({n3} with 3 tasks, {len(cases) - n3} with 4) x robots {robots}")
+    n4 = len(cases) - n3
+    print(f"{len(cases)} valid_seen scenarios ({n3} with 3 tasks, {n4} with 4) x robots {robots}")
     print("| budget (expansions / generated) | runs | solved | proven optimal | proven within 5 % "
           "| time s (median, p95, max) |\n| --- | --- | --- | --- | --- | --- |")
     chosen = budgets[0]
