@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import pytest
@@ -120,10 +121,25 @@ def test_grammar_reads_after_you_and_do_not_until() -> None:
         "After you put the mug in the cabinet, put the apple in the fridge.",
         "Put the apple in the fridge after you put the mug in the cabinet.",
         "Do not put the apple in the fridge until you put the mug in the cabinet.",
+        "Once done with the task to put the mug in the cabinet, put the apple in the fridge.",
+        "Once you are done putting the mug in the cabinet, put the apple in the fridge.",
+        "Put the mug in the cabinet. When you are done with that, put the apple in the fridge.",
+        "Put the mug in the cabinet. Once done, put the apple in the fridge.",
     ):
         r = grammar_parse(text, ROOM, "t")
         by_obj = {t.object[0]: t.id for t in r.tasks}
         assert r.before == [(by_obj["Mug"], by_obj["Apple"])], text
+
+
+def test_finally_follows_the_guide_in_the_validation_templates() -> None:
+    """ANNOTATION_GUIDE.md: "Finally Y" comes after every earlier task not allowed "in any order"."""
+    from nl2hltl2plan.language.learned.faithful import TEMPLATES
+
+    for text, pairs in (t for ts in TEMPLATES.values() for t in ts):
+        if "in any order. Finally" in text:
+            k = text.count("{") - 1  # the last clause, Y
+            grouped = {int(c) for c in re.findall(r"\{(\d)\}", text.split("in any order")[0].split(". ")[-1])}
+            assert all((a, k) not in pairs for a in grouped), text
 
 
 def test_default_never_overrides_what_the_grammar_read(shared_data: Path) -> None:

@@ -121,6 +121,13 @@ def relation_sentence(body: str) -> RelationSentence | None:
 
 
 _UNTIL = re.compile(r"\b([Dd])(?:o not|on't) ([^.;!?]+?) until (?:you )?([^.;!?]+)")
+# "Once (you are) done (with the task to) X, Y" names what is done: "After X, Y" (not "Then Y")
+_DONE_WITH = re.compile(
+    r"\b([Oo]nce|[Ww]hen|[Aa]fter) (?:you(?:'re| are| have| have been)? )?(?:done|finished|through) "
+    r"(?:with )?(?:the (?:task|job) (?:of |to ))?"
+    r"(?!with\b|(?:that|this|it|these|those|everything|all|both)\b)"
+    r"(?=[a-z][^,.;!?]* [^,.;!?]+,)"
+)
 
 
 def normalize(text: str) -> str:
@@ -130,6 +137,7 @@ def normalize(text: str) -> str:
     text = re.sub(r"\s*\([^)]*\)", "", text)  # parenthetical remarks: "(where the red block is now)"
     # "Do not Y until (you) X" states the order of "After X, Y" (ANNOTATION_GUIDE.md)
     text = _UNTIL.sub(lambda m: f"{'A' if m.group(1) == 'D' else 'a'}fter {m.group(3)}, {m.group(2)}", text)
+    text = _DONE_WITH.sub(lambda m: "After " if m.group(1)[0].isupper() else "after ", text)
     return re.sub(r"\s+", " ", text).strip()
 
 
