@@ -31,18 +31,17 @@ print(json.dumps(out))
 """
 
 
-def _run(mode: str, seed: str, objective: str) -> list[dict]:
+def _run(mode: str, seed: str) -> list[dict]:
     src = str(Path(__file__).resolve().parents[2] / "src")
     env = {**os.environ, "PYTHONHASHSEED": seed, "PYTHONPATH": src}
-    done = subprocess.run([sys.executable, "-c", SCRIPT, mode, objective], capture_output=True, text=True,
-                          env=env, timeout=120, check=True)
+    done = subprocess.run([sys.executable, "-c", SCRIPT, mode, "min", "minmax"], capture_output=True,
+                          text=True, env=env, timeout=120, check=True)
     return json.loads(done.stdout)
 
 
 def test_same_input_gives_the_same_plan_on_any_machine():
-    # summed cost on a quiet machine, completion time on a busy one, each against the other hash seed
-    for objective, (seed_a, seed_b) in (("min", ("1", "2")), ("minmax", ("3", "4"))):
-        quiet = _run("normal", seed_a, objective)
-        busy = _run("slow", seed_b, objective)
-        assert [r["status"] for r in quiet] == ["solved"]
-        assert quiet == busy
+    # summed cost and completion time, a quiet machine against a busy one with another hash seed
+    quiet = _run("normal", "1")
+    busy = _run("slow", "2")
+    assert [r["status"] for r in quiet] == ["solved", "solved"]
+    assert quiet == busy
