@@ -307,3 +307,41 @@ def test_unparsed_sentences_are_reported_not_guessed():
     r = parse_instruction("Move the keychain. Check some of the dressers for their contents.", BEDROOM, "x")
     assert r.tasks == []
     assert any("keychain" in u for u in r.unparsed)
+
+
+# ----- the same kind of object in two tasks ---------------------------------------------------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # a reference that states a task unlike the one its object names: a task of its own, before
+        (
+            "Put a clean mug under the coffee maker before you put a warm mug in the cabinet.",
+            ["clean_place Mug -> CoffeeMachine", "heat_place Mug -> Cabinet"],
+        ),
+        # a finished task, then the object named again with a destination of its own
+        (
+            "Put a heated mug into a cabinet and put a clean mug under the coffee maker in any order.",
+            ["heat_place Mug -> Cabinet", "clean_place Mug -> CoffeeMachine"],
+        ),
+        # a cooked tomato put into the sink is done (the sink is not where it was heated)
+        (
+            "First cook a tomato and put it into the sink, then place a heated tomato on the counter.",
+            ["heat_place Tomato -> SinkBasin", "heat_place Tomato -> CounterTop"],
+        ),
+    ],
+)
+def test_two_tasks_on_one_kind_of_object(text, expected):
+    r = parse_instruction(text, KITCHEN, "FloorPlan1")
+    assert sorted(t.summary() for t in r.tasks) == sorted(expected), r.unparsed
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Put the mug in the sink, wash it and put the mug in the coffee maker.",  # the sink is on the way
+        "Take the apple from the table, put it in the fridge, then put the apple on the counter.",
+    ],
+)
+def test_one_task_that_names_its_object_twice(text):
+    r = parse_instruction(text, KITCHEN, "FloorPlan1")
+    assert len(r.tasks) == 1, [t.summary() for t in r.tasks]

@@ -243,21 +243,9 @@ def joins(d: Draft, fr: Frame, it: Item) -> bool:
         # the draft so far only switched a lamp on: "turn on a lamp while holding a laptop"
         return fr.cls in {"pick", "examine"} or (fr.cls == "place" and last_fr.cls == "light")
     if same(o, cur):
-        # "place the yellow block to region I, then place it... to region G": a second placement is a new task
-        prev_dest = dest_of(d.frames[-1][1], last_fr.cls)
-        if (
-            fr.joiner in {"then", "first"}
-            and fr.cls == "place"
-            and last_fr.cls == "place"
-            and prev_dest is not None
-            and dest_of(it, fr.cls) is not None
-            and (
-                prev_dest.entry is None
-                or prev_dest.entry.canonical not in {"SinkBasin", "Microwave", "Fridge"}
-            )
-        ):
-            return False
-        return True
+        # a task that is done ("a clean mug under the coffee maker") and a clause that names the object again
+        # with a destination of its own ("a warm mug in the cabinet"): a second task on another one
+        return not (_done(d) and _restates(fr, it))
     if o.sliced and o.entry is None and o.head in {"", "slice", "piece"}:
         return True
     for (
@@ -273,6 +261,38 @@ def joins(d: Draft, fr: Frame, it: Item) -> bool:
     if last_fr.cls in {"slice"} and o.sliced:
         return True
     return False
+
+
+# where an object is washed, heated, chilled: a placement there rarely ends a task of that state
+_APPLIANCE = {"clean": "SinkBasin", "heat": "Microwave", "cool": "Fridge"}
+
+
+def _done(d: Draft) -> bool:
+    """Has draft `d` reached its end: an object examined under a lamp, or put down at a final place (not
+    the appliance of a state it still needs: a cooked tomato put into the sink is done, a mug is not)?"""
+    fr, it = d.frames[-1]
+    if fr.cls in {"light", "examine"} or fr.light_on:
+        return True
+    dest = dest_of(it, fr.cls)
+    if dest is None or dest.entry is None or dest.entry.canonical not in _APPLIANCE.values():
+        return dest is not None
+    states = {f.cls for f, _ in d.frames}
+    states |= {s for _, i in d.frames if i.obj is not None for s in i.obj.states}
+    states &= set(_APPLIANCE)
+    return bool(states) and all(_APPLIANCE[s] != dest.entry.canonical for s in states)
+
+
+def _restates(fr: Frame, it: Item) -> bool:
+    """Does a clause name its object anew with a task of its own: a destination ("a warm mug in the cabinet",
+    "a clean mug under the coffee maker"), or "grab a credit card", "examine a credit card"?"""
+    o = it.obj
+    if o is None or o.pronoun:
+        return False
+    if dest_of(it, fr.cls) is not None or fr.cls == "examine":
+        return True
+    if any(p in G.DEST_PREPS and np.is_receptacle() for p, np in it.pps) and fr.cls != "pick":
+        return True
+    return o.text.split()[:1] in (["a"], ["an"], ["another"])
 
 
 def incomplete(d: Draft) -> bool:

@@ -240,6 +240,8 @@ def dest_of(item: Item, cls: str = "") -> NP | None:
             break  # "in a drawer under the sink": the drawer
         if p in UNDER and np.entry is not None and np.entry.canonical == "SinkBasin":
             return parse_np("cabinet")  # "store it under the sink"
+        if p in UNDER and np.entry is not None and np.entry.canonical == "CoffeeMachine":
+            return np  # "a mug under the coffee maker": under its spout, ALFRED's CoffeeMachine receptacle
     dests = [(p, np) for p, np in item.pps if p in G.DEST_PREPS and np.is_receptacle() and p not in UNDER]
     if not dests:
         # "to the region H" in a domain without a lexicon entry: any NP after a destination preposition

@@ -143,3 +143,32 @@ def new_tasks_from_ref(ref: str, b: TaskBuilder, text: str) -> list[BaseTaskSpec
             out.append(spec)
     b.unparsed = saved
     return out
+
+
+_STATES = {"clean_place", "heat_place", "cool_place"}
+
+
+def _differ(new: BaseTaskSpec, old: BaseTaskSpec) -> bool:
+    """Can a whole task stated by a reference not be `old`: another destination, another state?"""
+    if (new.kind == "examine_in_light") != (old.kind == "examine_in_light"):
+        return True
+    if new.receptacle and old.receptacle and not set(new.receptacle) & set(old.receptacle):
+        return True
+    return new.kind in _STATES and old.kind in _STATES and new.kind != old.kind
+
+
+def stated_tasks(ref: str, named: list[BaseTaskSpec], b: TaskBuilder, text: str) -> list[BaseTaskSpec]:
+    """The whole tasks a reference states when they cannot be the tasks its object names ("before you put
+    a warm mug in the cabinet" next to "put a clean mug under the coffee maker"); else none."""
+    if not named:
+        return []
+    new = new_tasks_from_ref(ref, b, text)
+    whole = [n for n in new if n.receptacle or n.kind == "examine_in_light"]
+    if not whole or len(whole) != len(new):
+        return []
+    same_type = [
+        (n, o) for n in new for o in named if set(n.object) & set(o.object)
+    ]
+    if not same_type or not all(_differ(n, o) for n, o in same_type):
+        return []
+    return new

@@ -7,11 +7,11 @@ from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.offline import grammar as G
 from nl2hltl2plan.language.offline.frames import IN_SENTENCE
 from nl2hltl2plan.language.offline.phrases import parse_np
-from nl2hltl2plan.language.offline.references import new_tasks_from_ref, ref_targets, self_state
+from nl2hltl2plan.language.offline.references import new_tasks_from_ref, ref_targets, self_state, stated_tasks
 from nl2hltl2plan.language.offline.sentences import RelationSentence
 from nl2hltl2plan.language.offline.tasks import TaskBuilder, Tasks, Unit
 from nl2hltl2plan.language.semantic_check import find_cycle
-from nl2hltl2plan.language.tasks import task_letter, transitive_reduction
+from nl2hltl2plan.language.tasks import BaseTaskSpec, task_letter, transitive_reduction
 
 Edges = set[tuple[int, int]]
 
@@ -64,6 +64,10 @@ def _ref_edges(after: bool, ref: str, u: Unit, tasks: Tasks, b: TaskBuilder, tex
     specs, nps = tasks.specs, tasks.nps
     targets, missing = ref_targets(ref, specs, nps, exclude=u.tasks)
     own, _ = ref_targets(ref, specs, nps)
+    stated = stated_tasks(ref, [specs[t] for t in own], b, text)
+    if stated:  # "a clean mug under the coffee maker before you put a warm mug in the cabinet"
+        _add_ref_tasks(stated, after, u, tasks, edges)
+        return
     if not targets and own and all(t in u.tasks for t in own):
         self_state(ref, [specs[t] for t in u.tasks])
         return
@@ -79,13 +83,18 @@ def _ref_edges(after: bool, ref: str, u: Unit, tasks: Tasks, b: TaskBuilder, tex
     ):
         return
     new = new_tasks_from_ref(ref, b, text)
-    for spec in new:
-        specs.append(spec)
-        nps.append(None)
-        t = len(specs) - 1
-        edges.update((t, b2) if after else (b2, t) for b2 in u.tasks)
+    _add_ref_tasks(new, after, u, tasks, edges)
     if not new:
         b.unparsed.append(f"could not tell which task {ref!r} refers to")
+
+
+def _add_ref_tasks(new: list[BaseTaskSpec], after: bool, u: Unit, tasks: Tasks, edges: Edges) -> None:
+    """Tasks a reference states, ordered before (after=True) or after the tasks of unit `u`."""
+    for spec in new:
+        tasks.specs.append(spec)
+        tasks.nps.append(None)
+        t = len(tasks.specs) - 1
+        edges.update((t, b2) if after else (b2, t) for b2 in u.tasks)
 
 
 def _first_edges(units: list[Unit], free: set[int], edges: Edges) -> None:
