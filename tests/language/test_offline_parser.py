@@ -345,3 +345,42 @@ def test_two_tasks_on_one_kind_of_object(text, expected):
 def test_one_task_that_names_its_object_twice(text):
     r = parse_instruction(text, KITCHEN, "FloorPlan1")
     assert len(r.tasks) == 1, [t.summary() for t in r.tasks]
+
+
+def test_a_knife_that_slices_is_a_tool_not_a_task():
+    r = parse_instruction("Put a slice of tomato and a knife in the trash can.", KITCHEN, "FloorPlan1")
+    assert [t.summary() for t in r.tasks] == ["place Tomato(sliced) -> GarbageCan"]
+    assert "tool that slices" in r.issues[0]  # said, not silently dropped
+    r = parse_instruction(
+        "Pick up the apple, pick up the knife, cut the apple, put a slice in the fridge.",
+        KITCHEN,
+        "FloorPlan1",
+    )
+    assert [t.summary() for t in r.tasks] == ["place Apple(sliced) -> Fridge"]
+    # a knife listed with something that cannot be sliced is a task
+    r = parse_instruction("Put the knife and the fork in the drawer.", KITCHEN, "FloorPlan1")
+    assert sorted(t.object[0] for t in r.tasks) == ["Fork", "Knife"]
+
+
+def test_a_reference_keeps_the_clauses_about_its_own_object():
+    r = parse_instruction(
+        "Once done with the task to slice the bread, cook a slice in the microwave, put it in the fridge, "
+        "put a clean slice of lettuce on the counter.",
+        KITCHEN,
+        "FloorPlan1",
+    )
+    bread, lettuce = sorted(r.tasks, key=lambda t: t.object[0])
+    assert (bread.kind, bread.receptacle, bread.sliced) == ("heat_place", ["Fridge"], True)
+    assert lettuce.object == ["Lettuce"] and r.before == [(bread.id, lettuce.id)]
+
+
+def test_the_object_held_while_switching_a_lamp_on_is_its_task():
+    r = parse_instruction(
+        "First turn a light on with a bat in hand, then examine the pencil by the light of the lamp.",
+        BEDROOM,
+        "FloorPlan301",
+    )
+    assert [(t.kind, t.object) for t in r.tasks] == [
+        ("examine_in_light", ["BaseballBat"]),
+        ("examine_in_light", ["Pencil"]),
+    ]

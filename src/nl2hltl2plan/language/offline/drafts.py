@@ -83,6 +83,8 @@ class DraftBuilder:
             st.pending_joiner = joiner
             return
         self._share_destinations(fr, st)
+        if fr.cls == "slice":
+            self._knife_is_a_tool(st)
         group = self._group_of(clause, fr, st)
         new_tasks = [t for it in fr.items if (t := self._add_item(fr, it, clause, joiner, group, st)) >= 0]
         if new_tasks:
@@ -143,7 +145,37 @@ class DraftBuilder:
             for it in fr.items[:-1]:
                 if not any(p in G.DEST_PREPS for p, _ in it.pps):
                     it.pps.extend(shared)
+            fr.items = self._without_slicing_knife(fr)
             fr.items = merge_items(fr.items, self.b)
+
+    def _knife_is_a_tool(self, st: _SentenceState) -> None:
+        """ "pick up apple, pick up knife, cut apple": the knife picked up just before slicing is the tool;
+        the clauses that follow continue the draft before it."""
+        if not st.drafts:
+            return
+        d = self.out.drafts[st.drafts[-1]]
+        if (
+            d.obj is not None
+            and d.obj.entry is not None
+            and d.obj.entry.canonical in G.KNIVES
+            and all(f.cls == "pick" and dest_of(it, f.cls) is None for f, it in d.frames)
+        ):
+            d.tool = True
+            st.drafts.pop()
+
+    def _without_slicing_knife(self, fr: Frame) -> list[Item]:
+        """A knife listed with something sliceable is the tool that sliced it, not a task (noted)."""
+
+        def canonical(it: Item) -> str:
+            return it.obj.entry.canonical if it.obj is not None and it.obj.entry is not None else ""
+
+        if not any(canonical(it) in G.SLICEABLE for it in fr.items):
+            return fr.items
+        knives = [it for it in fr.items if canonical(it) in G.KNIVES]
+        for it in knives:
+            assert it.obj is not None
+            self.b.issues.append(f"{it.obj.text!r} in {fr.text!r} is read as the tool that slices")
+        return [it for it in fr.items if it not in knives]
 
     def _group_of(self, clause: Clause, fr: Frame, st: _SentenceState) -> int:
         """The group of the clause's tasks: an elided-verb list, a heading, a list of objects; else -1."""
@@ -240,6 +272,9 @@ def joins(d: Draft, fr: Frame, it: Item) -> bool:
     if o.is_lamp() and (fr.cls in {"light", "examine"} or fr.light_on):
         return incomplete(d)  # "pick up the keys and turn on the lamp"; not after a placement
     if cur is None:
+        held = [np for _, i in d.frames for p, np in i.pps if p in G.WITH_PREPS and not np.is_lamp()]
+        if held:  # "turn a light on with a bat in hand": the bat is the task's object
+            return same(o, held[0])
         # the draft so far only switched a lamp on: "turn on a lamp while holding a laptop"
         return fr.cls in {"pick", "examine"} or (fr.cls == "place" and last_fr.cls == "light")
     if same(o, cur):

@@ -358,6 +358,10 @@ for _w in ("chilled", "cold", "cooled", "refrigerated", "frozen", "cool", "iced"
     STATE_WORDS[_w] = "cool"
 for _w in ("sliced", "cut", "chopped", "diced"):
     STATE_WORDS[_w] = "slice"
+# what AI2-THOR can slice; a knife listed with one of them is the tool that sliced it ("a slice of tomato
+# and a knife in the trash"), as in ALFRED's slicing tasks, whose goal is the slice
+SLICEABLE = {"Apple", "Bread", "Lettuce", "Potato", "Tomato", "Egg"}
+KNIVES = {"Knife", "ButterKnife"}
 SLICE_NOUNS = {"slice", "slices", "piece", "pieces", "wedge", "wedges", "chunk", "chunks", "bit", "bits"}
 WATER_WORDS = {"water"}
 

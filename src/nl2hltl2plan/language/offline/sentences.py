@@ -167,9 +167,19 @@ def after_ref(body: str) -> tuple[str, str] | None:
         flags=re.I,
     ):
         return None
+    splits: list[tuple[str, str]] = []
     for c in re.finditer(r",\s*", body):
         rest = body[c.end() :]
         first = re.match(r"(?:then\s+|please\s+|now\s+|you\s+should\s+|we\s+)?([A-Za-z]+)", rest)
         if c.start() > m.end() and first and first.group(1).lower() in G.VERBS:
-            return body[m.end() : c.start()], rest
-    return None
+            splits.append((body[m.end() : c.start()], rest))
+    # "after slicing the bread, cook a slice, put it in the fridge, put the lettuce on the counter": clauses
+    # about the reference's own object (a pronoun, a slice) still belong to it
+    return next((sp for sp in splits if not _about_the_last_object(sp[1])), splits[0] if splits else None)
+
+
+def _about_the_last_object(clause: str) -> bool:
+    """Does a clause act on the object named before it ("put it in the fridge", "cook a slice")?"""
+    words = [w for w, _, _ in tokens(clause.split(",")[0])][1:]
+    words = [w for w in words if w not in G.PARTICLES and w not in {"a", "an", "the", "one"}]
+    return bool(words) and (words[0] in {"it", "them"} or words[0] in G.SLICE_NOUNS)

@@ -31,6 +31,7 @@ class Draft:
     end: int
     group: int = -1
     label: str = ""  # own text for one item of a list clause ("put plates into the lower rack")
+    tool: bool = False  # only picked up a knife that a later clause slices with: no task of its own
 
     @property
     def obj(self) -> NP | None:
@@ -63,7 +64,7 @@ class Tasks:
 
 def build_tasks(drafts: list[Draft], units: list[Unit], b: TaskBuilder, text: str) -> Tasks:
     """Ground every draft; drafts that state no task are dropped (and the units' indices follow)."""
-    specs = [b.spec(d, d.label or text[d.start : d.end]) for d in drafts]
+    specs = [None if d.tool else b.spec(d, d.label or text[d.start : d.end]) for d in drafts]
     keep = [i for i, s in enumerate(specs) if s is not None]
     index = {old: new for new, old in enumerate(keep)}
     for u in units:
