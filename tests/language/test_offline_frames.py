@@ -39,3 +39,12 @@ def test_noun_phrase_states_counts_and_pronouns() -> None:
     assert parse_np("a slice of bread").sliced
     own = parse_np("the zorbs")  # no lexicon entry: its own words, "-s" a plural
     assert (own.entry, own.head, own.count) == (None, "zorbs", 2)
+
+
+def test_a_compound_names_its_last_noun() -> None:
+    assert parse_np("a chilled glass bowl").key == "Bowl"  # not the glass (a Cup)
+    assert parse_np("the bread knife").key == "Knife"
+    assert parse_np("the bowl of the glass").key == "Bowl"  # "of": the first noun is the head
+    assert parse_np("a wine glass").key == "Cup"  # one lexicon entry
+    np = parse_np("two boxes of tissue")
+    assert (np.key, np.count) == ("TissueBox", 2)

@@ -176,6 +176,10 @@ def parse_np(text: str) -> NP:
     if real:
         # the head is the first mention unless it is followed by "of" + another ("bar of soap" is one entry)
         m = real[0]
+        for nxt in real[1:]:  # a compound names its last noun: "a glass bowl" is a bowl
+            if text[m.char_end : nxt.char_start].strip():
+                break
+            m = nxt
         np.entry, np.plural = m.entry, m.plural
         if m.plural and m.entry.canonical not in {"KeyChain"}:
             np.count = max(np.count, 2)
