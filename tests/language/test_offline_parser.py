@@ -384,3 +384,16 @@ def test_the_object_held_while_switching_a_lamp_on_is_its_task():
         ("examine_in_light", ["BaseballBat"]),
         ("examine_in_light", ["Pencil"]),
     ]
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # "a container": ALFRED's word for the bowl a task puts something into
+        ("Put a knife in a container onto the table.", "place_in_container Knife in Bowl -> DiningTable"),
+        ("Pick up the bread, cool it and serve on the table.", "cool_place Bread -> DiningTable"),
+    ],
+)
+def test_alfred_words(text, expected):
+    r = parse_instruction(text, KITCHEN, "FloorPlan1")
+    assert [t.summary() for t in r.tasks] == [expected]

@@ -44,6 +44,7 @@ _VERBS: dict[str, tuple[str, ...]] = {
         "keep",
         "tuck",
         "stow",
+        "serve",
     ),
     "pick": (
         "pick",
