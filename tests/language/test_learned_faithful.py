@@ -87,16 +87,17 @@ def test_synthesis_is_deterministic_with_one_to_four_tasks() -> None:
             assert c.before == []
 
 
-def test_rescue_reads_the_clause_the_grammar_could_not() -> None:
-    text = (
-        "Move a rinsed off bar of soap from the sink to the back of the toilet. "
-        "Then put the mug in the cabinet."
-    )
-    g = grammar_parse(text, ROOM, "t")
-    assert len(g.tasks) == 1 and failed_clauses(g.unparsed) == [text.split(". ")[0]]
-    r = parse_instruction(text, ROOM, "t")
-    assert [t.summary() for t in r.tasks] == ["clean_place SoapBar -> Toilet", "place Mug -> Cabinet"]
-    assert r.before == [("A", "B")]
+def test_rescue_reads_a_misspelt_object_but_invents_none() -> None:
+    room = ROOM | {"Ladle"}
+    text = "Put the mug in the cabinet. Meanwhile, rinse off a laddle and move it to the table."
+    g = grammar_parse(text, room, "t")
+    assert [t.object for t in g.tasks] == [["Mug"]]
+    assert failed_clauses(g.unparsed) == ["rinse a laddle and move it to the table"]  # said, not dropped
+    r = parse_instruction(text, room, "t")
+    assert [t.summary() for t in r.tasks] == ["place Mug -> Cabinet", "clean_place Ladle -> DiningTable"]
+    # two letters off is not a spelling of "ladle": nothing is read into it
+    r = parse_instruction("Put the mug in the cabinet. Then rinse a lapdog.", room, "t")
+    assert [t.object for t in r.tasks] == [["Mug"]]
 
 
 @pytest.mark.parametrize(

@@ -10,6 +10,11 @@ def test_normalize_drops_remarks_and_spaces_sentences() -> None:
     )
 
 
+def test_off_after_a_state_verb_is_dropped() -> None:
+    assert normalize("Put a rinsed off knife away, cool off a pan") == "Put a rinsed knife away, cool a pan"
+    assert normalize("knock the roll off of the toilet") == "knock the roll off of the toilet"
+
+
 def test_markers_are_stripped_and_recorded() -> None:
     read = read_sentences("Put the mug in the sink. Then, place the apple on the table at any time.")
     first, second = read.sentences

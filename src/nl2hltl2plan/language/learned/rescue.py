@@ -12,14 +12,17 @@ only when the grammar then reads more tasks.
 
 from __future__ import annotations
 
+import difflib
 import re
+from functools import cache
 
-from nl2hltl2plan.language.grounding import camel_words, find_mentions
+from nl2hltl2plan.language.grounding import camel_words, find_mentions, lexicon
 from nl2hltl2plan.language.learned.model import SlotModel, SlotPrediction
 from nl2hltl2plan.language.offline.sentences import normalize
 
 _IN_CLAUSE = re.compile(
     r"^(?:no destination for the .*? in|no object to act on in|nothing to hold under the lamp in|"
+    r"no object of the scene named in|"
     r"cannot hold the .*? to look at it): (?P<clause>.+)$"
 )
 _NOTE = re.compile(r"^(?P<clause>.+?) \((?:a list of destinations|more than two objects[^)]*)\)$")
@@ -71,10 +74,25 @@ def canonical(pred: SlotPrediction) -> str | None:
 
 
 def _names_object(clause: str, pred: SlotPrediction) -> bool:
-    """The clause names (a lexicon phrase for) the predicted object: the model found, not invented, it."""
+    """The clause names (a lexicon phrase for) the predicted object, or misspells one of its words by a
+    letter ("laddle"): the model found, not invented, it."""
     top = pred.slots.get("object") or []
+    if not top:
+        return False
     named = {t for m in find_mentions(clause) for t in m.entry.types}
-    return bool(top) and top[0][0] in named
+    if top[0][0] in named:
+        return True
+    words = _words_of(top[0][0])
+    return any(
+        len(w) >= 5 and difflib.get_close_matches(w, words, n=1, cutoff=0.85)
+        for w in re.findall(r"[a-z]+", clause.lower())
+    )
+
+
+@cache
+def _words_of(type_name: str) -> list[str]:
+    """The words of the lexicon phrases that name a type (for near-spellings)."""
+    return sorted({w for phrase, (entry, _) in lexicon().items() if type_name in entry.types for w in phrase})
 
 
 def rewrite(

@@ -130,6 +130,11 @@ _DONE_WITH = re.compile(
 )
 
 
+_OFF = re.compile(
+    r"\b((?:rins|wash|clean|wip|cool|warm|heat|chill)(?:e|ed|es|ing)?) off\b(?! of\b)", re.IGNORECASE
+)
+
+
 def normalize(text: str) -> str:
     """Straight quotes, a space after a full stop, no parenthetical remarks, single spaces."""
     text = text.replace("\u2019", "'").replace("\u2018", "'").replace("\u201c", '"').replace("\u201d", '"')
@@ -137,6 +142,7 @@ def normalize(text: str) -> str:
     text = re.sub(r"\s*\([^)]*\)", "", text)  # parenthetical remarks: "(where the red block is now)"
     # "Do not Y until (you) X" states the order of "After X, Y" (ANNOTATION_GUIDE.md)
     text = _UNTIL.sub(lambda m: f"{'A' if m.group(1) == 'D' else 'a'}fter {m.group(3)}, {m.group(2)}", text)
+    text = _OFF.sub(r"\1", text)  # "a rinsed off knife", "cool off a plate": the state, not a direction
     text = _DONE_WITH.sub(lambda m: "After " if m.group(1)[0].isupper() else "after ", text)
     return re.sub(r"\s+", " ", text).strip()
 

@@ -190,6 +190,7 @@ class TaskBuilder:
             },
         )
         if fields is None or fields["object"] is None:
+            self.unparsed.append(f"no object of the scene named in: {text}")
             return None
         return BaseTaskSpec(
             kind=kind,
