@@ -46,5 +46,6 @@ def test_a_compound_names_its_last_noun() -> None:
     assert parse_np("the bread knife").key == "Knife"
     assert parse_np("the bowl of the glass").key == "Bowl"  # "of": the first noun is the head
     assert parse_np("a wine glass").key == "Cup"  # one lexicon entry
+    assert parse_np("a soap container").key == "SoapBar"  # a container of soap
     np = parse_np("two boxes of tissue")
     assert (np.key, np.count) == ("TissueBox", 2)

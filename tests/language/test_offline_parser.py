@@ -318,6 +318,16 @@ def test_unparsed_sentences_are_reported_not_guessed():
             "Put a clean mug under the coffee maker before you put a warm mug in the cabinet.",
             ["clean_place Mug -> CoffeeMachine", "heat_place Mug -> Cabinet"],
         ),
+        # an indefinite object in a reference is another one than the task's
+        (
+            "Put a mug on the counter after you put a mug in the cabinet.",
+            ["place Mug -> CounterTop", "place Mug -> Cabinet"],
+        ),
+        # a reference stating a task with another destination and state than the one it seems to name
+        (
+            "Do not put the mug in the cabinet until you put the clean mug in the coffee machine.",
+            ["place Mug -> Cabinet", "clean_place Mug -> CoffeeMachine"],
+        ),
         # a finished task, then the object named again with a destination of its own
         (
             "Put a heated mug into a cabinet and put a clean mug under the coffee maker in any order.",

@@ -177,8 +177,8 @@ def parse_np(text: str) -> NP:
         # the head is the first mention unless it is followed by "of" + another ("bar of soap" is one entry)
         m = real[0]
         for nxt in real[1:]:  # a compound names its last noun: "a glass bowl" is a bowl
-            if text[m.char_end : nxt.char_start].strip():
-                break
+            if text[m.char_end : nxt.char_start].strip() or nxt.entry.phrase == "container":
+                break  # but "a soap container" holds soap: the soap's
             m = nxt
         np.entry, np.plural = m.entry, m.plural
         if m.plural and m.entry.canonical not in {"KeyChain"}:

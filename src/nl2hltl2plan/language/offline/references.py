@@ -166,9 +166,8 @@ def stated_tasks(ref: str, named: list[BaseTaskSpec], b: TaskBuilder, text: str)
     whole = [n for n in new if n.receptacle or n.kind == "examine_in_light"]
     if not whole or len(whole) != len(new):
         return []
-    same_type = [
-        (n, o) for n in new for o in named if set(n.object) & set(o.object)
-    ]
-    if not same_type or not all(_differ(n, o) for n, o in same_type):
-        return []
-    return new
+    # "after you put a watch on a table": an indefinite object is another one than the task's
+    words = [w for w, _, _ in tokens(_YOU.sub("", ref))][1:3]
+    if any(w in {"a", "an", "another"} for w in words):
+        return new
+    return new if all(_differ(n, o) for n in new for o in named) else []
