@@ -15,6 +15,13 @@ def test_off_after_a_state_verb_is_dropped() -> None:
     assert normalize("knock the roll off of the toilet") == "knock the roll off of the toilet"
 
 
+def test_listed_states_stay_one_noun_phrase() -> None:
+    assert normalize("put a chilled, cut slice of lettuce in the sink") == (
+        "put a chilled cut slice of lettuce in the sink"
+    )
+    assert normalize("wash the mug, rinse the cup") == "wash the mug, rinse the cup"
+
+
 def test_markers_are_stripped_and_recorded() -> None:
     read = read_sentences("Put the mug in the sink. Then, place the apple on the table at any time.")
     first, second = read.sentences

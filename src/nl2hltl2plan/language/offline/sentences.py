@@ -135,6 +135,10 @@ _OFF = re.compile(
 )
 
 
+_STATE_ALT = "|".join(sorted(G.STATE_WORDS))
+_STATES_LISTED = re.compile(rf"\b({_STATE_ALT}),\s+(?=(?:{_STATE_ALT})\b)", re.IGNORECASE)
+
+
 def normalize(text: str) -> str:
     """Straight quotes, a space after a full stop, no parenthetical remarks, single spaces."""
     text = text.replace("\u2019", "'").replace("\u2018", "'").replace("\u201c", '"').replace("\u201d", '"')
@@ -142,6 +146,7 @@ def normalize(text: str) -> str:
     text = re.sub(r"\s*\([^)]*\)", "", text)  # parenthetical remarks: "(where the red block is now)"
     # "Do not Y until (you) X" states the order of "After X, Y" (ANNOTATION_GUIDE.md)
     text = _UNTIL.sub(lambda m: f"{'A' if m.group(1) == 'D' else 'a'}fter {m.group(3)}, {m.group(2)}", text)
+    text = _STATES_LISTED.sub(r"\1 ", text)  # "a chilled, cut slice": one noun phrase, not two clauses
     text = _OFF.sub(r"\1", text)  # "a rinsed off knife", "cool off a plate": the state, not a direction
     text = _DONE_WITH.sub(lambda m: "After " if m.group(1)[0].isupper() else "after ", text)
     return re.sub(r"\s+", " ", text).strip()
