@@ -91,6 +91,19 @@ def test_grounding_ranks_only_scene_types_and_reports_close_calls() -> None:
     assert {a.word for a in r.ambiguities} <= {"knife", "table"}
 
 
+def test_benchmarks_take_the_top_candidate_of_each_ambiguous_word() -> None:
+    from nl2hltl2plan.language.learned.measure import learned_generator
+    from nl2hltl2plan.language.translate import top_candidates
+
+    room = {"Apple", "DiningTable", "SideTable", "CounterTop"}
+    r = parse_instruction("Put the apple on the table.", room, "test")
+    (amb,) = r.ambiguities
+    assert top_candidates(r.ambiguities) == {"A.receptacle": amb.candidates[0]}
+    assert r.tasks[0].receptacle == amb.candidates  # the parse itself keeps every table (plan picks one)
+    tasks, _, _ = learned_generator()("Put the apple on the table.", room, "test")
+    assert tasks[0].receptacle == [amb.candidates[0]]  # the benchmark's reading: the top-ranked type
+
+
 def test_missing_type_is_an_error_when_strict() -> None:
     with pytest.raises(WorldError, match="Statue"):
         parse_instruction("Put the statue on the sofa.", LIVING, "test")

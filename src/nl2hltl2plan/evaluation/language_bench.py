@@ -26,6 +26,7 @@ from nl2hltl2plan.evaluation.rows import LanguageRecord, ScenarioRow
 from nl2hltl2plan.evaluation.runner import Row, Scenario, load_rows
 from nl2hltl2plan.language.llm.client import LLMClient
 from nl2hltl2plan.language.scoring import match
+from nl2hltl2plan.language.translate import top_candidates
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.pipeline import PipelineOptions, language_stage, planning_stage
 from nl2hltl2plan.worlds.alfred import build_benchmark_world
@@ -48,14 +49,18 @@ def language_record(gt: GTInstance, options: PipelineOptions, client: LLMClient 
     rec = LanguageRecord(key=gt.id, instance=gt.id, n_base=gt.n_base, backend=options.backend)
     lenient = options.model_copy(update={"strict": False})
     try:
-        result = language_stage(gt.instruction, world, lenient, client)
+        result = language_stage(gt.instruction, world, lenient, client, ask=top_candidates)
     except Nl2Hltl2PlanError as exc:
         # a task this world cannot provide (no such object, a receptacle that refuses it): the
         # conversion is still scored; planning fails with this reason
         rec.error = str(exc)
         try:
             result = language_stage(
-                gt.instruction, world, lenient.model_copy(update={"actions": "none"}), client
+                gt.instruction,
+                world,
+                lenient.model_copy(update={"actions": "none"}),
+                client,
+                ask=top_candidates,
             )
         except Nl2Hltl2PlanError as exc2:
             return rec.model_copy(update={"error": str(exc2), "stage": "task decomposition"})

@@ -40,6 +40,11 @@ ActionSource = Literal["auto", "recipe", "llm", "none"]
 Chooser = Callable[[list[Ambiguity]], dict[str, str]]  # ambiguities -> {"A.receptacle": "SideTable"}
 
 
+def top_candidates(ambiguities: list[Ambiguity]) -> dict[str, str]:
+    """The Chooser benchmarks use: every ambiguous word takes its most likely type (ranked first)."""
+    return {f"{a.task}.{a.role}": a.candidates[0] for a in ambiguities if a.candidates}
+
+
 class SceneLike(Protocol):
     """What the language stage needs of a scene: its name and object types (a `World` has both)."""
 
@@ -84,7 +89,7 @@ def translate(
         picked = dict(choices or {})
         if ask is not None and res.ambiguities:
             picked.update(ask(res.ambiguities))
-        _apply_choices(res, picked)
+        apply_choices(res, picked)
         _finish(res, world, backend, client, ltl, actions, build)
         return res
     if client is None:
@@ -212,7 +217,12 @@ def _parse(
 ROLES = ("object", "container", "receptacle", "light")
 
 
-def _apply_choices(res: LanguageResult, choices: dict[str, str]) -> None:
+class _Choosable(Protocol):
+    tasks: list[BaseTaskSpec]
+    ambiguities: list[Ambiguity]
+
+
+def apply_choices(res: _Choosable, choices: dict[str, str]) -> None:
     """A user's pick for an ambiguous slot (`plan --ask`): that slot becomes exactly the chosen type."""
     by_id = {t.id: t for t in res.tasks}
     for key, chosen in choices.items():

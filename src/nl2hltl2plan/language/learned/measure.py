@@ -21,13 +21,17 @@ from nl2hltl2plan.language.learned.inference import Policy, load_model, parse_in
 from nl2hltl2plan.language.learned.model import SlotModel
 from nl2hltl2plan.language.measure import Generator, evaluate, grammar_generator, load_benchmark, table
 from nl2hltl2plan.language.tasks import BaseTaskSpec
+from nl2hltl2plan.language.translate import apply_choices, top_candidates
 
 
 def learned_generator(policy: Policy | None = None, model: SlotModel | None = None) -> Generator:
+    """The default backend as the benchmarks run it: an ambiguous word takes its top-ranked type."""
+
     def generate(
         instruction: str, types: set[str], scene: str
     ) -> tuple[list[BaseTaskSpec], list[tuple[str, str]], list[str]]:
         r = parse_instruction(instruction, types, scene, strict=False, policy=policy, model=model)
+        apply_choices(r, top_candidates(r.ambiguities))
         return r.tasks, r.before, r.unparsed
 
     return generate
