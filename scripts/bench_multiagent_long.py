@@ -19,6 +19,7 @@ from collections import Counter
 
 from nl2hltl2plan.config import data_path
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
+from nl2hltl2plan.language.translate import top_candidates
 from nl2hltl2plan.pipeline import PipelineOptions, run
 from nl2hltl2plan.worlds import load_world
 
@@ -50,7 +51,8 @@ def main() -> None:
             try:
                 world = load_world(scene)
                 starts = [world.cell_of(x, z, main=True) for x, z in init[: args.robots]]
-                out = run(text, world, args.robots, options.model_copy(update={"starts": starts}))
+                opts = options.model_copy(update={"starts": starts})
+                out = run(text, world, args.robots, opts, ask=top_candidates)  # as every benchmark
                 status, reason = out.status.value, out.result.reason
             except Nl2Hltl2PlanError as exc:
                 status, reason = "language", str(exc)
