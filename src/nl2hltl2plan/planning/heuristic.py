@@ -32,7 +32,13 @@ from __future__ import annotations
 import numpy as np
 from scipy.optimize import linear_sum_assignment
 
-from nl2hltl2plan.planning.bounds import carry_legs, joint_min, spanning_walk
+from nl2hltl2plan.planning.bounds import (
+    Choice,
+    carry_legs,
+    joint_min,
+    least_over_bindings,
+    spanning_walk,
+)
 from nl2hltl2plan.planning.model import DONE, Leaf
 from nl2hltl2plan.planning.navigation import INF
 from nl2hltl2plan.planning.state import Expander, Node, bound
@@ -43,6 +49,7 @@ BIG = 1 << 20  # forbidden predecessor (finite for the solver)
 OTHER, PICKUP, PUT = 0, 1, 2
 EMPTY = ""  # the hand right after a put
 CACHE_LIMIT = 100_000  # carry minima kept across nodes
+ROOT_EVALS = 64  # bound evaluations the root's search over instance choices spends (at most)
 
 
 class Heuristic:
@@ -66,6 +73,7 @@ class Heuristic:
         np.minimum(self.rr, self.rr.T, out=self.rr)
         self.after = self._after_matrix()
         self._carry_cache: dict[tuple, int] = {}
+        self.root_evals = ROOT_EVALS
 
     def _after_matrix(self) -> np.ndarray:
         """after[i, j]: leaf j may only start once leaf i is complete (gates, transitively)."""
@@ -183,9 +191,48 @@ class Heuristic:
 
     # ------------------------------------------------------------ the bound
     def evaluate(self, node: Node) -> tuple[int, int]:
-        """(lower bound on remaining summed cost, lower bound on the final makespan)."""
+        """(lower bound on remaining summed cost, lower bound on the final makespan). At the root
+        (its bound lifts every node's, a child's bound being at least its parent's), the least bound
+        over the leaves' instance choices, searched best first (`bounds.least_over_bindings`)."""
+        if node.parent is None and self.root_evals > 1:
+            choices, capacity = self._binding_choices(node)
+            best = least_over_bindings(choices, capacity, lambda fixed: self._evaluate(node, fixed),
+                                       self.root_evals)
+            if best is not None:
+                return best
+        return self._evaluate(node, {})
+
+    def _binding_choices(self, node: Node) -> tuple[list[Choice], dict[str, dict[int, int]]]:
+        """The (leaf, type) pairs still to bind, with their candidate regions (fewest first); types
+        that several leaves take for themselves form a group of distinct instances."""
+        x, sim = self.x, node.sim
+        choices: list[Choice] = []
+        capacity: dict[str, dict[int, int]] = {}
+        for lf in self.p.leaves:
+            if node.q[lf.index] == DONE or lf.index not in self.required:
+                continue
+            types = sorted({t for path in lf.paths.get(node.q[lf.index]) or [] for k in path
+                            for t in lf.atoms[k].types})
+            for t in types:
+                objs = [o for o in x.by_type.get(t, []) if t not in lf.taken or o not in node.claimed]
+                if bound(node, lf.index, t) >= 0 or not objs:
+                    continue
+                regions = [self.nav.anchor(sim, o if x.slice_of[o] < 0 else x.slice_of[o]) for o in objs]
+                if any(a < 0 for a in regions) or any(not sim.flags[o] & PRESENT for o in objs):
+                    continue  # held, or slices still to come: left to the relaxations
+                group = t if t in lf.taken else None
+                if group is not None:
+                    capacity[t] = {a: regions.count(a) for a in regions}
+                choices.append((lf.index, t, group, tuple(sorted(set(regions)))))
+        choices.sort(key=lambda c: (len(c[3]), c[0], c[1]))
+        return [c for c in choices if len(c[3]) > 1 or c[2] is not None], capacity
+
+    def _evaluate(self, node: Node, fixed: dict[tuple[int, str], int]) -> tuple[int, int]:
+        """The bound with some (leaf, type) pairs fixed to one region (their instance's)."""
         p = self.p
-        memo: dict = {}
+        memo: dict = {"fixed": fixed}
+        for (li, t), region in fixed.items():
+            memo[(li, t, True)] = memo[(li, t, False)] = (region,)
         rows: list[tuple] = []  # (leaf, pos, anchors, kind, carried row, holder, need, after, full)
         hands: dict[tuple[int, str], int] = {}  # (leaf, held type) -> id
         optional: list[tuple[int, ...]] = []
@@ -245,8 +292,8 @@ class Heuristic:
         atoms = [leaf.atoms[k] for k in paths[0]]
         taken = sorted({a.types[0] for a in atoms if a.verb == "pickup"
                         and leaf.exclusive("pickup", a.types[0]) and bound(node, leaf.index, a.types[0]) < 0})
-        if len(taken) != 1:
-            return None
+        if len(taken) != 1 or (leaf.index, taken[0]) in memo["fixed"]:
+            return None  # a type the root's search fixed: its one region is in the memo
         t = taken[0]
         sim = node.sim
         objs = [o for o in self.x.by_type.get(t, []) if o not in node.claimed]
@@ -388,13 +435,13 @@ class Heuristic:
                 cost[i, n_pred + holder] = keep
         cost[:, :n_ev] = ev_cols
         self._hand_rules(node, rows, cost, n_ev, n_pred, hands)
-        walk = _solve(cost)
+        walk = _solve(_with_last(cost, n_ev))
         # pickups are never inside a carry (one hand): their approaches add to the carries'
         # binding-consistent minimum
         alone = kind == PICKUP
         approach = cost.copy()
         approach[~alone] = np.where(approach[~alone] >= BIG, BIG, 0)
-        walk = max(walk, carry + _solve(approach))
+        walk = max(walk, carry + _solve(_with_last(approach, n_ev)))
         # the spanning tree over the events of one known region (an event with several candidate
         # regions would join far groups at no cost; leaving events out keeps it a bound)
         fixed = [i for i, s in enumerate(anchor_sets) if len(s) == 1]
@@ -420,8 +467,12 @@ class Heuristic:
 
     def _forced_opens(self, node: Node, memo: dict) -> int:
         """Support opens every completion needs: closed openables that every candidate of a pending
-        event sits in (or, for a put, is) and that no leaf opens itself; one open event each."""
+        event sits in (or, for a put, is) and that no leaf opens itself, one open event each; then
+        events all of whose candidates are closed in (a put into any of 19 closed drawers) need an
+        open of one of those openables: a family of such events with disjoint openables (and
+        disjoint from the first ones) adds one open each."""
         forced: set[int] = set()
+        some: list[frozenset[int]] = []
         leaf_opens = {a.types[0] for lf in self.p.leaves if node.q[lf.index] != DONE
                       for a in lf.atoms if a.verb == "open"}
         for lf in self.p.leaves:
@@ -429,13 +480,25 @@ class Heuristic:
                 continue
             per_path = [self._path_opens(node, lf, path) for path in lf.paths.get(node.q[lf.index]) or []]
             if per_path:
-                forced |= set.intersection(*per_path)
-        return sum(1 for c in forced if self.x.types[c] not in leaf_opens)
+                forced |= set.intersection(*(every for every, _ in per_path))
+            if len(per_path) == 1:
+                some += per_path[0][1]
+        forced = {c for c in forced if self.x.types[c] not in leaf_opens}
+        taken = set(forced)
+        extra = 0
+        for group in sorted(some, key=lambda g: (len(g), sorted(g))):
+            if taken.isdisjoint(group) and not any(self.x.types[c] in leaf_opens for c in group):
+                taken |= group
+                extra += 1
+        return len(forced) + extra
 
-    def _path_opens(self, node: Node, leaf: Leaf, path: tuple[int, ...]) -> set[int]:
+    def _path_opens(self, node: Node, leaf: Leaf, path: tuple[int, ...]) -> tuple[set[int], list[frozenset[int]]]:
+        """(openables every candidate of some event of the path needs opened, per event whose every
+        candidate needs one: the openables that would do)."""
         x = self.x
         sim = node.sim
         out: set[int] = set()
+        some: list[frozenset[int]] = []
         moved: set[str] = set()
         for k in path:
             atom = leaf.atoms[k]
@@ -450,13 +513,18 @@ class Heuristic:
             if not cands or any(x.slice_of[o] >= 0 or not sim.flags[o] & PRESENT for o in cands):
                 continue
             need: set[int] | None = None
+            union: set[int] = set()
             for o in cands:
                 got = {c for verb, c in blockers(sim, atom.verb, (o,)) if verb == "open"}
                 need = got if need is None else need & got
-                if not need:
+                if not got:
+                    union = set()
                     break
+                union |= got
             out |= need or set()
-        return out
+            if union and not need:
+                some.append(frozenset(union))
+        return out, some
 
     def _robot_walks(self, node: Node, a_idx: np.ndarray) -> np.ndarray:
         """anchors x robots: the fewest steps from where each robot may stand to each anchor."""
@@ -530,6 +598,15 @@ def _solve(cost: np.ndarray) -> int:
     r_ind, c_ind = linear_sum_assignment(cost)
     total = int(cost[r_ind, c_ind].sum())
     return 0 if total >= BIG else total
+
+
+def _with_last(cost: np.ndarray, n_ev: int) -> np.ndarray:
+    """The cost matrix with one more row, "the last event": some pending event is no pending event's
+    predecessor (the last of its robot's), so one event column stays free and at least one event
+    follows a robot (without it, events may precede one another in cycles that no robot enters)."""
+    last = np.full((1, cost.shape[1]), BIG, dtype=cost.dtype)
+    last[0, :n_ev] = 0
+    return np.vstack([cost, last])
 
 
 def _no_robot(robot: int, anchors: tuple[int, ...]) -> np.ndarray:
