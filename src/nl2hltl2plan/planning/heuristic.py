@@ -442,6 +442,9 @@ class Heuristic:
         approach = cost.copy()
         approach[~alone] = np.where(approach[~alone] >= BIG, BIG, 0)
         walk = max(walk, carry + _solve(_with_last(approach, n_ev)))
+        compound = self._approach_and_carry(node, rows, cols, cost, n_ev)
+        if compound is not None:
+            walk = max(walk, _solve(_with_last(compound, n_ev)))
         # the spanning tree over the events of one known region (an event with several candidate
         # regions would join far groups at no cost; leaving events out keeps it a bound)
         fixed = [i for i, s in enumerate(anchor_sets) if len(s) == 1]
@@ -449,6 +452,45 @@ class Heuristic:
             ev = np.minimum(pred[np.ix_(fixed, fixed)], BIG)
             walk = max(walk, spanning_walk(ev, np.minimum(robot[:, fixed].min(axis=0), BIG)))
         return walk
+
+    def _approach_and_carry(self, node: Node, rows: list[tuple], cols: list[tuple[int, ...]], cost: np.ndarray,
+                            n_ev: int) -> np.ndarray | None:
+        """The assignment over the pickups of their approach and carry as one walk, from the
+        predecessor through one cell of the pickup's region to the put's region (a region-level step
+        may reach the object at one end of its region and leave from the other); a held object's
+        put keeps the holder's walk. These walks are disjoint parts of the robots' walks (an approach
+        has the hand empty, a carry full): summed, a bound. None when no pickup is carried."""
+        legs = {r[4]: i for i, r in enumerate(rows) if r[3] == PUT and r[4] >= 0 and r[2]}
+        legs = {k: i for k, i in legs.items() if rows[k][3] == PICKUP and rows[k][2]}
+        if not legs:
+            return None
+        field, region_idx = self.field, self.nav.region_idx
+        src = np.empty((cost.shape[1], field.shape[1]), dtype=np.int64)
+        for j, anchors in enumerate(cols):
+            src[j] = field[list(anchors)].min(axis=0) if anchors else 0
+        n_pred = len(cols)
+        src[n_pred:] = self._robot_walks_to_cells(node)
+        out = np.where(cost >= BIG, BIG, 0)
+        for i, r in enumerate(rows):
+            if r[3] == PUT and r[4] < 0 and r[5] >= 0:
+                out[i] = cost[i]  # a held object's put: the holder's walk to it
+        for k, i in legs.items():
+            cells = np.concatenate([region_idx[a] for a in rows[k][2]])
+            to_put = field[list(rows[i][2])][:, cells].min(axis=0)
+            walks = (np.minimum(src[:, cells], BIG) + np.minimum(to_put, BIG)[None, :]).min(axis=1)
+            out[k] = np.where(cost[k] >= BIG, BIG, np.minimum(walks, BIG))
+        return out
+
+    def _robot_walks_to_cells(self, node: Node) -> np.ndarray:
+        """robots x cells: the fewest steps from where each robot may stand to each cell."""
+        dm = self.nav.dm
+        out = dm[list(node.cell)]
+        if node.reach is not None:
+            out = out.copy()
+            for r, reach in enumerate(node.reach):
+                if reach is not None:
+                    out[r] = (dm[list(reach[0])] + np.array(reach[1])[:, None]).min(axis=0)
+        return out
 
     def _hand_rules(self, node: Node, rows: list[tuple], cost: np.ndarray, n_ev: int, n_pred: int,
                     hands: dict[tuple[int, str], int]) -> None:
