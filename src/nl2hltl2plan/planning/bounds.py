@@ -111,7 +111,8 @@ def _leg_matrix(leg: Leg, sets: dict[str, tuple[int, ...]], rr: np.ndarray,
     return robot_walk(int(src[1]), sets[dst]).reshape(1, -1)
 
 
-Choice = tuple[int, str, str | None, tuple[int, ...]]  # (leaf, type, group of distinct instances or None, regions)
+# (leaf, type, the group of leaves taking distinct instances of it or None, its candidate regions)
+Choice = tuple[int, str, str | None, tuple[int, ...]]
 
 
 def least_over_bindings(choices: Sequence[Choice], capacity: dict[str, dict[int, int]],

@@ -18,8 +18,11 @@ is the immediate predecessor of at most one event. So the walking is at least th
 Unbound types use the nearest of their candidate instances. It is solved exactly with
 `scipy.optimize.linear_sum_assignment` (the assignment relaxation of the routing problem). Two more
 bounds on the walking (`bounds.py`: the carries, binding-consistent, plus the pickups' approaches;
-a spanning tree from the robots) are computed beside it and the largest is kept; every support
-open that every completion needs adds 1.
+a spanning tree from the robots) and the pickups' approach and carry as one walk through one cell
+of the object's region are computed beside it and the largest is kept; every support open that every
+completion needs adds 1 (also one per event, of a family with disjoint openables, whose every
+candidate is closed in). At the root, the bound is minimised over the instance choices as well
+(`bounds.least_over_bindings`).
 
 Completion time (`minmax`): the largest of (a) the current makespan, (b) each leaf's chain: its
 events happen one after another, the first no earlier than a robot can reach it and than the tasks
@@ -41,8 +44,8 @@ from nl2hltl2plan.planning.bounds import (
 )
 from nl2hltl2plan.planning.model import DONE, Leaf
 from nl2hltl2plan.planning.navigation import INF
+from nl2hltl2plan.planning.opens import forced_opens
 from nl2hltl2plan.planning.state import Expander, Node, bound
-from nl2hltl2plan.planning.support import blockers
 from nl2hltl2plan.worlds.simulator import PRESENT
 
 BIG = 1 << 20  # forbidden predecessor (finite for the solver)
@@ -256,7 +259,7 @@ class Heuristic:
             return 0, node.ms
         carry = self._carry_total(node, memo)
         walk = self._assignment(node, rows, optional, hands, carry) if rows else carry
-        total = len(rows) + extra_events + walk + self._forced_opens(node, memo)
+        total = len(rows) + extra_events + walk + forced_opens(self.x, self.required, node)
         if p.n_robots and (chain or rows):
             self._chains(node, rows, chain)
         return total, self._makespan(node, total, chain)
@@ -442,7 +445,7 @@ class Heuristic:
         approach = cost.copy()
         approach[~alone] = np.where(approach[~alone] >= BIG, BIG, 0)
         walk = max(walk, carry + _solve(_with_last(approach, n_ev)))
-        compound = self._approach_and_carry(node, rows, cols, cost, n_ev)
+        compound = self._approach_and_carry(node, rows, cols, cost)
         if compound is not None:
             walk = max(walk, _solve(_with_last(compound, n_ev)))
         # the spanning tree over the events of one known region (an event with several candidate
@@ -453,8 +456,8 @@ class Heuristic:
             walk = max(walk, spanning_walk(ev, np.minimum(robot[:, fixed].min(axis=0), BIG)))
         return walk
 
-    def _approach_and_carry(self, node: Node, rows: list[tuple], cols: list[tuple[int, ...]], cost: np.ndarray,
-                            n_ev: int) -> np.ndarray | None:
+    def _approach_and_carry(self, node: Node, rows: list[tuple], cols: list[tuple[int, ...]],
+                            cost: np.ndarray) -> np.ndarray | None:
         """The assignment over the pickups of their approach and carry as one walk, from the
         predecessor through one cell of the pickup's region to the put's region (a region-level step
         may reach the object at one end of its region and leave from the other); a held object's
@@ -506,67 +509,6 @@ class Heuristic:
         bad = (kind == PICKUP)[:, None] & full[None, :]
         bad |= (need >= 0)[:, None] & (after[None, :] != -1) & (after[None, :] != need[:, None])
         cost[bad] = BIG
-
-    def _forced_opens(self, node: Node, memo: dict) -> int:
-        """Support opens every completion needs: closed openables that every candidate of a pending
-        event sits in (or, for a put, is) and that no leaf opens itself, one open event each; then
-        events all of whose candidates are closed in (a put into any of 19 closed drawers) need an
-        open of one of those openables: a family of such events with disjoint openables (and
-        disjoint from the first ones) adds one open each."""
-        forced: set[int] = set()
-        some: list[frozenset[int]] = []
-        leaf_opens = {a.types[0] for lf in self.p.leaves if node.q[lf.index] != DONE
-                      for a in lf.atoms if a.verb == "open"}
-        for lf in self.p.leaves:
-            if node.q[lf.index] == DONE or lf.index not in self.required:
-                continue
-            per_path = [self._path_opens(node, lf, path) for path in lf.paths.get(node.q[lf.index]) or []]
-            if per_path:
-                forced |= set.intersection(*(every for every, _ in per_path))
-            if len(per_path) == 1:
-                some += per_path[0][1]
-        forced = {c for c in forced if self.x.types[c] not in leaf_opens}
-        taken = set(forced)
-        extra = 0
-        for group in sorted(some, key=lambda g: (len(g), sorted(g))):
-            if taken.isdisjoint(group) and not any(self.x.types[c] in leaf_opens for c in group):
-                taken |= group
-                extra += 1
-        return len(forced) + extra
-
-    def _path_opens(self, node: Node, leaf: Leaf, path: tuple[int, ...]) -> tuple[set[int], list[frozenset[int]]]:
-        """(openables every candidate of some event of the path needs opened, per event whose every
-        candidate needs one: the openables that would do)."""
-        x = self.x
-        sim = node.sim
-        out: set[int] = set()
-        some: list[frozenset[int]] = []
-        moved: set[str] = set()
-        for k in path:
-            atom = leaf.atoms[k]
-            target = atom.types[-1]
-            skip = target in moved or atom.verb not in ("pickup", "put")
-            if atom.verb in ("pickup", "put"):
-                moved.add(atom.types[0])  # where it is now no longer tells what it needs
-            if skip:
-                continue
-            b = bound(node, leaf.index, target)
-            cands = [b] if b >= 0 else x.by_type.get(target, [])
-            if not cands or any(x.slice_of[o] >= 0 or not sim.flags[o] & PRESENT for o in cands):
-                continue
-            need: set[int] | None = None
-            union: set[int] = set()
-            for o in cands:
-                got = {c for verb, c in blockers(sim, atom.verb, (o,)) if verb == "open"}
-                need = got if need is None else need & got
-                if not got:
-                    union = set()
-                    break
-                union |= got
-            out |= need or set()
-            if union and not need:
-                some.append(frozenset(union))
-        return out, some
 
     def _robot_walks(self, node: Node, a_idx: np.ndarray) -> np.ndarray:
         """anchors x robots: the fewest steps from where each robot may stand to each anchor."""
