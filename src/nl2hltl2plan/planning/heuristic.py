@@ -468,31 +468,33 @@ class Heuristic:
         if not legs:
             return None
         field, region_idx = self.field, self.nav.region_idx
-        src = np.empty((cost.shape[1], field.shape[1]), dtype=np.int64)
+        cells_of = {k: np.concatenate([region_idx[a] for a in rows[k][2]]) for k in legs}
+        union = np.unique(np.concatenate(list(cells_of.values())))  # only the cells the pickups use
+        src = np.empty((cost.shape[1], len(union)), dtype=np.int64)
         for j, anchors in enumerate(cols):
-            src[j] = field[list(anchors)].min(axis=0) if anchors else 0
-        n_pred = len(cols)
-        src[n_pred:] = self._robot_walks_to_cells(node)
+            src[j] = field[np.ix_(np.array(anchors, dtype=np.int64), union)].min(axis=0) if anchors else 0
+        src[len(cols):] = self._robot_walks_to_cells(node, union)
+        np.minimum(src, BIG, out=src)
         out = np.where(cost >= BIG, BIG, 0)
         for i, r in enumerate(rows):
             if r[3] == PUT and r[4] < 0 and r[5] >= 0:
                 out[i] = cost[i]  # a held object's put: the holder's walk to it
         for k, i in legs.items():
-            cells = np.concatenate([region_idx[a] for a in rows[k][2]])
-            to_put = field[list(rows[i][2])][:, cells].min(axis=0)
-            walks = (np.minimum(src[:, cells], BIG) + np.minimum(to_put, BIG)[None, :]).min(axis=1)
+            cells = cells_of[k]
+            to_put = np.minimum(field[list(rows[i][2])][:, cells].min(axis=0), BIG)
+            walks = (src[:, np.searchsorted(union, cells)] + to_put[None, :]).min(axis=1)
             out[k] = np.where(cost[k] >= BIG, BIG, np.minimum(walks, BIG))
         return out
 
-    def _robot_walks_to_cells(self, node: Node) -> np.ndarray:
-        """robots x cells: the fewest steps from where each robot may stand to each cell."""
+    def _robot_walks_to_cells(self, node: Node, cells: np.ndarray) -> np.ndarray:
+        """robots x `cells`: the fewest steps from where each robot may stand to each of them."""
         dm = self.nav.dm
-        out = dm[list(node.cell)]
+        out = dm[np.ix_(np.array(node.cell, dtype=np.int64), cells)]
         if node.reach is not None:
-            out = out.copy()
             for r, reach in enumerate(node.reach):
                 if reach is not None:
-                    out[r] = (dm[list(reach[0])] + np.array(reach[1])[:, None]).min(axis=0)
+                    stand = np.array(reach[0], dtype=np.int64)
+                    out[r] = (dm[np.ix_(stand, cells)] + np.array(reach[1])[:, None]).min(axis=0)
         return out
 
     def _hand_rules(self, node: Node, rows: list[tuple], cost: np.ndarray, n_ev: int, n_pred: int,
