@@ -3,6 +3,7 @@ the large-neighbourhood search is deterministic and never makes a plan worse."""
 
 from __future__ import annotations
 
+import itertools
 import random
 
 import numpy as np
@@ -11,7 +12,7 @@ from planning_worlds import corridor, gt
 from test_grid_optimum import PLACE_APPLE, PLACE_MUG, _random_world, brute_force
 
 from nl2hltl2plan.planning import oracle_spec, plan
-from nl2hltl2plan.planning.bounds import carry_legs, joint_min, spanning_walk
+from nl2hltl2plan.planning.bounds import carry_legs, joint_min, least_over_bindings, spanning_walk
 from nl2hltl2plan.planning.extract import replay_from
 from nl2hltl2plan.planning.heuristic import Heuristic
 from nl2hltl2plan.planning.lns import lns
@@ -47,6 +48,33 @@ def test_bound_never_exceeds_the_brute_force_optimum(seed):
         assert r.total_cost == optimum
         x, h = _setup(world, inst, team)
         path = [x.root()]
+        for step in _events_of(x, r):
+            nxt = replay_from(x, path[-1], [step], keep_stands=False)
+            assert nxt is not None
+            path.append(nxt)
+        assert x.is_goal(path[-1])
+        assert all(n.g + h.evaluate(n)[0] <= path[-1].g for n in path)
+
+
+PLACE_APPLE_2 = {"id": "B", "kind": "place", "object": ["Apple"], "receptacle": ["DiningTable"]}
+
+
+@pytest.mark.parametrize("seed", [2, 3, 8, 9, 11])
+def test_two_leaves_taking_one_type_stay_admissible(seed):
+    # both tasks take an apple (distinct instances: the root's search over instance choices keeps
+    # them apart); the root bound and g + h along the optimal plan never exceed the brute force
+    rng = random.Random(seed)
+    world = _random_world(rng)
+    starts = rng.sample(world.cells, 2)
+    inst = gt([PLACE_APPLE, PLACE_APPLE_2])
+    for team in (starts[:1], starts):
+        optimum = brute_force(world, [("Apple", "CounterTop"), ("Apple", "DiningTable")], team)
+        x, h = _setup(world, inst, team)
+        root = x.root()
+        assert h.evaluate(root)[0] <= optimum
+        r = plan(world, oracle_spec(inst, world).spec, team, mode="exact")
+        assert r.total_cost == optimum
+        path = [root]
         for step in _events_of(x, r):
             nxt = replay_from(x, path[-1], [step], keep_stands=False)
             assert nxt is not None
@@ -128,3 +156,44 @@ def test_lns_is_deterministic_and_improves_a_poor_plan():
     poor_g, better_g, events = results[0]
     assert better_g < poor_g and {robot for robot, _, _ in events} == {0, 1}
     assert better_g == plan(world, oracle_spec(inst, world).spec, [(0, 0), (0, 39)], mode="exact").total_cost
+
+
+def test_a_put_into_any_of_two_closed_fridges_needs_an_open():
+    # the robot at the apple (column 20, region 14..26), closed fridges at columns 2 and 38 (regions
+    # 0..8, 32..39): walk 6, pickup, walk 6, open, put = 15. Bound: 2 events, one open (no single
+    # fridge that every completion opens, but every fridge is closed), the approach and the carry as
+    # one walk through one cell of the apple's region (12) = 15; the old bound: 2 + 6 (region to
+    # region: the robot stands in the apple's region, 6 cells from the fridge's) = 8
+    world = corridor({"Apple_0": 20, "Fridge_0": 2, "Fridge_1": 38})
+    inst = gt([{"id": "A", "kind": "place", "object": ["Apple"], "receptacle": ["Fridge"]}])
+    bound = _root_bound(world, inst, [(0, 20)])
+    r = plan(world, oracle_spec(inst, world).spec, [(0, 20)], mode="exact")
+    assert r.total_cost == 15 and bound == 15
+    assert [e["atom"] for e in r.events] == ["pickup(Apple)", "open(Fridge)", "put(Apple,Fridge)"]
+
+
+def test_least_over_bindings_is_the_least_complete_choice_or_below():
+    # three (leaf, type) choices; leaves 0 and 1 take distinct instances of one type (one at region 5,
+    # one at region 6); the bound of a partial choice is the least over its completions (a relaxation)
+    choices = [(0, "Apple", "Apple", (5, 6)), (1, "Apple", "Apple", (5, 6)), (1, "Table", None, (7, 8, 9))]
+    capacity = {"Apple": {5: 1, 6: 1}}
+    cost = {5: 3, 6: 1, 7: 4, 8: 2, 9: 6}
+
+    def full(fixed):
+        return sum(cost[fixed[(c[0], c[1])]] for c in choices)
+
+    def evaluate(fixed):
+        options = [fixed[(c[0], c[1])] if (c[0], c[1]) in fixed else None for c in choices]
+        values = [sum(cost[r] for r in combo) for combo in itertools.product(
+            *[(o,) if o is not None else c[3] for o, c in zip(options, choices, strict=True)])
+            if combo[0] != combo[1]]
+        return (min(values), 0) if values else (10**6, 0)
+
+    best = min(full({(0, "Apple"): a, (1, "Apple"): b, (1, "Table"): t})
+               for a in (5, 6) for b in (5, 6) for t in (7, 8, 9) if a != b)
+    assert best == 3 + 1 + 2
+    assert least_over_bindings(choices, capacity, evaluate, 100) == (best, 0)
+    for budget in range(1, 8):  # a smaller budget: never above the least complete choice
+        got = least_over_bindings(choices, capacity, evaluate, budget)
+        assert got is not None and got[0] <= best
+    assert least_over_bindings([], capacity, evaluate, 100) is None

@@ -19,6 +19,7 @@ opens, put-downs, optional alternatives) from a robot's walk never makes it long
 
 from __future__ import annotations
 
+import heapq
 from collections.abc import Callable, Sequence
 
 import numpy as np
@@ -108,3 +109,49 @@ def _leg_matrix(leg: Leg, sets: dict[str, tuple[int, ...]], rr: np.ndarray,
         return rr[np.ix_(list(sets[src]), list(sets[dst]))]
     assert isinstance(src, tuple)
     return robot_walk(int(src[1]), sets[dst]).reshape(1, -1)
+
+
+# (leaf, type, the group of leaves taking distinct instances of it or None, its candidate regions)
+Choice = tuple[int, str, str | None, tuple[int, ...]]
+
+
+def least_over_bindings(choices: Sequence[Choice], capacity: dict[str, dict[int, int]],
+                        evaluate: Callable[[dict[tuple[int, str], int]], tuple[int, int]],
+                        budget: int) -> tuple[int, int] | None:
+    """The least bound over the instances the pending leaves may bind (their regions), searched
+    best first: a partial choice's bound (`evaluate` with those (leaf, type) fixed to one region)
+    bounds every completion that binds them so, so the least bound over the frontier is a bound at
+    any moment. Instances a group of leaves each take for themselves are distinct (`capacity`: per
+    group, region -> unclaimed instances there). Spends at most `budget` evaluations (a node is
+    expanded with all its children or not at all); (summed bound, makespan bound), or None when
+    nothing was searched."""
+    if not choices:
+        return None
+    counter = 0
+    s0, m0 = evaluate({})
+    heap: list[tuple[int, int, int, tuple[int, ...]]] = [(s0, m0, counter, ())]
+    spent = 1
+    while heap:
+        s, m, _, chosen = heap[0]
+        if len(chosen) == len(choices):
+            break  # the least complete choice: nothing on the frontier is below it
+        leaf, type_, group, regions = choices[len(chosen)]
+        if spent + len(regions) > budget:
+            break
+        heapq.heappop(heap)
+        for region in regions:
+            if group is not None:
+                used = sum(1 for c, r in zip(choices, chosen, strict=False) if c[2] == group and r == region)
+                if used >= capacity[group].get(region, 0):
+                    continue
+            child = (*chosen, region)
+            fixed = {(c[0], c[1]): r for c, r in zip(choices, child, strict=False)}
+            s2, m2 = evaluate(fixed)
+            spent += 1
+            counter += 1
+            heapq.heappush(heap, (max(s, s2), max(m, m2), counter, child))
+    if not heap:
+        return None  # no consistent choice (cannot happen for a solvable node): no claim
+    return heap[0][0], min(entry[1] for entry in heap)
+
+

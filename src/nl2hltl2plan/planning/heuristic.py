@@ -18,8 +18,11 @@ is the immediate predecessor of at most one event. So the walking is at least th
 Unbound types use the nearest of their candidate instances. It is solved exactly with
 `scipy.optimize.linear_sum_assignment` (the assignment relaxation of the routing problem). Two more
 bounds on the walking (`bounds.py`: the carries, binding-consistent, plus the pickups' approaches;
-a spanning tree from the robots) are computed beside it and the largest is kept; every support
-open that every completion needs adds 1.
+a spanning tree from the robots) and the pickups' approach and carry as one walk through one cell
+of the object's region are computed beside it and the largest is kept; every support open that every
+completion needs adds 1 (also one per event, of a family with disjoint openables, whose every
+candidate is closed in). At the root, the bound is minimised over the instance choices as well
+(`bounds.least_over_bindings`).
 
 Completion time (`minmax`): the largest of (a) the current makespan, (b) each leaf's chain: its
 events happen one after another, the first no earlier than a robot can reach it and than the tasks
@@ -32,17 +35,24 @@ from __future__ import annotations
 import numpy as np
 from scipy.optimize import linear_sum_assignment
 
-from nl2hltl2plan.planning.bounds import carry_legs, joint_min, spanning_walk
+from nl2hltl2plan.planning.bounds import (
+    Choice,
+    carry_legs,
+    joint_min,
+    least_over_bindings,
+    spanning_walk,
+)
 from nl2hltl2plan.planning.model import DONE, Leaf
 from nl2hltl2plan.planning.navigation import INF
+from nl2hltl2plan.planning.opens import forced_opens
 from nl2hltl2plan.planning.state import Expander, Node, bound
-from nl2hltl2plan.planning.support import blockers
 from nl2hltl2plan.worlds.simulator import PRESENT
 
 BIG = 1 << 20  # forbidden predecessor (finite for the solver)
 OTHER, PICKUP, PUT = 0, 1, 2
 EMPTY = ""  # the hand right after a put
 CACHE_LIMIT = 100_000  # carry minima kept across nodes
+ROOT_EVALS = 64  # bound evaluations the root's search over instance choices spends (at most)
 
 
 class Heuristic:
@@ -66,6 +76,7 @@ class Heuristic:
         np.minimum(self.rr, self.rr.T, out=self.rr)
         self.after = self._after_matrix()
         self._carry_cache: dict[tuple, int] = {}
+        self.root_evals = ROOT_EVALS
 
     def _after_matrix(self) -> np.ndarray:
         """after[i, j]: leaf j may only start once leaf i is complete (gates, transitively)."""
@@ -183,9 +194,48 @@ class Heuristic:
 
     # ------------------------------------------------------------ the bound
     def evaluate(self, node: Node) -> tuple[int, int]:
-        """(lower bound on remaining summed cost, lower bound on the final makespan)."""
+        """(lower bound on remaining summed cost, lower bound on the final makespan). At the root
+        (its bound lifts every node's, a child's bound being at least its parent's), the least bound
+        over the leaves' instance choices, searched best first (`bounds.least_over_bindings`)."""
+        if node.parent is None and self.root_evals > 1:
+            choices, capacity = self._binding_choices(node)
+            best = least_over_bindings(choices, capacity, lambda fixed: self._evaluate(node, fixed),
+                                       self.root_evals)
+            if best is not None:
+                return best
+        return self._evaluate(node, {})
+
+    def _binding_choices(self, node: Node) -> tuple[list[Choice], dict[str, dict[int, int]]]:
+        """The (leaf, type) pairs still to bind, with their candidate regions (fewest first); types
+        that several leaves take for themselves form a group of distinct instances."""
+        x, sim = self.x, node.sim
+        choices: list[Choice] = []
+        capacity: dict[str, dict[int, int]] = {}
+        for lf in self.p.leaves:
+            if node.q[lf.index] == DONE or lf.index not in self.required:
+                continue
+            types = sorted({t for path in lf.paths.get(node.q[lf.index]) or [] for k in path
+                            for t in lf.atoms[k].types})
+            for t in types:
+                objs = [o for o in x.by_type.get(t, []) if t not in lf.taken or o not in node.claimed]
+                if bound(node, lf.index, t) >= 0 or not objs:
+                    continue
+                regions = [self.nav.anchor(sim, o if x.slice_of[o] < 0 else x.slice_of[o]) for o in objs]
+                if any(a < 0 for a in regions) or any(not sim.flags[o] & PRESENT for o in objs):
+                    continue  # held, or slices still to come: left to the relaxations
+                group = t if t in lf.taken else None
+                if group is not None:
+                    capacity[t] = {a: regions.count(a) for a in regions}
+                choices.append((lf.index, t, group, tuple(sorted(set(regions)))))
+        choices.sort(key=lambda c: (len(c[3]), c[0], c[1]))
+        return [c for c in choices if len(c[3]) > 1 or c[2] is not None], capacity
+
+    def _evaluate(self, node: Node, fixed: dict[tuple[int, str], int]) -> tuple[int, int]:
+        """The bound with some (leaf, type) pairs fixed to one region (their instance's)."""
         p = self.p
-        memo: dict = {}
+        memo: dict = {"fixed": fixed}
+        for (li, t), region in fixed.items():
+            memo[(li, t, True)] = memo[(li, t, False)] = (region,)
         rows: list[tuple] = []  # (leaf, pos, anchors, kind, carried row, holder, need, after, full)
         hands: dict[tuple[int, str], int] = {}  # (leaf, held type) -> id
         optional: list[tuple[int, ...]] = []
@@ -209,7 +259,7 @@ class Heuristic:
             return 0, node.ms
         carry = self._carry_total(node, memo)
         walk = self._assignment(node, rows, optional, hands, carry) if rows else carry
-        total = len(rows) + extra_events + walk + self._forced_opens(node, memo)
+        total = len(rows) + extra_events + walk + forced_opens(self.x, self.required, node)
         if p.n_robots and (chain or rows):
             self._chains(node, rows, chain)
         return total, self._makespan(node, total, chain)
@@ -245,8 +295,8 @@ class Heuristic:
         atoms = [leaf.atoms[k] for k in paths[0]]
         taken = sorted({a.types[0] for a in atoms if a.verb == "pickup"
                         and leaf.exclusive("pickup", a.types[0]) and bound(node, leaf.index, a.types[0]) < 0})
-        if len(taken) != 1:
-            return None
+        if len(taken) != 1 or (leaf.index, taken[0]) in memo["fixed"]:
+            return None  # a type the root's search fixed: its one region is in the memo
         t = taken[0]
         sim = node.sim
         objs = [o for o in self.x.by_type.get(t, []) if o not in node.claimed]
@@ -388,13 +438,16 @@ class Heuristic:
                 cost[i, n_pred + holder] = keep
         cost[:, :n_ev] = ev_cols
         self._hand_rules(node, rows, cost, n_ev, n_pred, hands)
-        walk = _solve(cost)
+        walk = _solve(_with_last(cost, n_ev))
         # pickups are never inside a carry (one hand): their approaches add to the carries'
         # binding-consistent minimum
         alone = kind == PICKUP
         approach = cost.copy()
         approach[~alone] = np.where(approach[~alone] >= BIG, BIG, 0)
-        walk = max(walk, carry + _solve(approach))
+        walk = max(walk, carry + _solve(_with_last(approach, n_ev)))
+        compound = self._approach_and_carry(node, rows, cols, cost)
+        if compound is not None:
+            walk = max(walk, _solve(_with_last(compound, n_ev)))
         # the spanning tree over the events of one known region (an event with several candidate
         # regions would join far groups at no cost; leaving events out keeps it a bound)
         fixed = [i for i, s in enumerate(anchor_sets) if len(s) == 1]
@@ -402,6 +455,47 @@ class Heuristic:
             ev = np.minimum(pred[np.ix_(fixed, fixed)], BIG)
             walk = max(walk, spanning_walk(ev, np.minimum(robot[:, fixed].min(axis=0), BIG)))
         return walk
+
+    def _approach_and_carry(self, node: Node, rows: list[tuple], cols: list[tuple[int, ...]],
+                            cost: np.ndarray) -> np.ndarray | None:
+        """The assignment over the pickups of their approach and carry as one walk, from the
+        predecessor through one cell of the pickup's region to the put's region (a region-level step
+        may reach the object at one end of its region and leave from the other); a held object's
+        put keeps the holder's walk. These walks are disjoint parts of the robots' walks (an approach
+        has the hand empty, a carry full): summed, a bound. None when no pickup is carried."""
+        legs = {r[4]: i for i, r in enumerate(rows) if r[3] == PUT and r[4] >= 0 and r[2]}
+        legs = {k: i for k, i in legs.items() if rows[k][3] == PICKUP and rows[k][2]}
+        if not legs:
+            return None
+        field, region_idx = self.field, self.nav.region_idx
+        cells_of = {k: np.concatenate([region_idx[a] for a in rows[k][2]]) for k in legs}
+        union = np.unique(np.concatenate(list(cells_of.values())))  # only the cells the pickups use
+        src = np.empty((cost.shape[1], len(union)), dtype=np.int64)
+        for j, anchors in enumerate(cols):
+            src[j] = field[np.ix_(np.array(anchors, dtype=np.int64), union)].min(axis=0) if anchors else 0
+        src[len(cols):] = self._robot_walks_to_cells(node, union)
+        np.minimum(src, BIG, out=src)
+        out = np.where(cost >= BIG, BIG, 0)
+        for i, r in enumerate(rows):
+            if r[3] == PUT and r[4] < 0 and r[5] >= 0:
+                out[i] = cost[i]  # a held object's put: the holder's walk to it
+        for k, i in legs.items():
+            cells = cells_of[k]
+            to_put = np.minimum(field[list(rows[i][2])][:, cells].min(axis=0), BIG)
+            walks = (src[:, np.searchsorted(union, cells)] + to_put[None, :]).min(axis=1)
+            out[k] = np.where(cost[k] >= BIG, BIG, np.minimum(walks, BIG))
+        return out
+
+    def _robot_walks_to_cells(self, node: Node, cells: np.ndarray) -> np.ndarray:
+        """robots x `cells`: the fewest steps from where each robot may stand to each of them."""
+        dm = self.nav.dm
+        out = dm[np.ix_(np.array(node.cell, dtype=np.int64), cells)]
+        if node.reach is not None:
+            for r, reach in enumerate(node.reach):
+                if reach is not None:
+                    stand = np.array(reach[0], dtype=np.int64)
+                    out[r] = (dm[np.ix_(stand, cells)] + np.array(reach[1])[:, None]).min(axis=0)
+        return out
 
     def _hand_rules(self, node: Node, rows: list[tuple], cost: np.ndarray, n_ev: int, n_pred: int,
                     hands: dict[tuple[int, str], int]) -> None:
@@ -417,46 +511,6 @@ class Heuristic:
         bad = (kind == PICKUP)[:, None] & full[None, :]
         bad |= (need >= 0)[:, None] & (after[None, :] != -1) & (after[None, :] != need[:, None])
         cost[bad] = BIG
-
-    def _forced_opens(self, node: Node, memo: dict) -> int:
-        """Support opens every completion needs: closed openables that every candidate of a pending
-        event sits in (or, for a put, is) and that no leaf opens itself; one open event each."""
-        forced: set[int] = set()
-        leaf_opens = {a.types[0] for lf in self.p.leaves if node.q[lf.index] != DONE
-                      for a in lf.atoms if a.verb == "open"}
-        for lf in self.p.leaves:
-            if node.q[lf.index] == DONE or lf.index not in self.required:
-                continue
-            per_path = [self._path_opens(node, lf, path) for path in lf.paths.get(node.q[lf.index]) or []]
-            if per_path:
-                forced |= set.intersection(*per_path)
-        return sum(1 for c in forced if self.x.types[c] not in leaf_opens)
-
-    def _path_opens(self, node: Node, leaf: Leaf, path: tuple[int, ...]) -> set[int]:
-        x = self.x
-        sim = node.sim
-        out: set[int] = set()
-        moved: set[str] = set()
-        for k in path:
-            atom = leaf.atoms[k]
-            target = atom.types[-1]
-            skip = target in moved or atom.verb not in ("pickup", "put")
-            if atom.verb in ("pickup", "put"):
-                moved.add(atom.types[0])  # where it is now no longer tells what it needs
-            if skip:
-                continue
-            b = bound(node, leaf.index, target)
-            cands = [b] if b >= 0 else x.by_type.get(target, [])
-            if not cands or any(x.slice_of[o] >= 0 or not sim.flags[o] & PRESENT for o in cands):
-                continue
-            need: set[int] | None = None
-            for o in cands:
-                got = {c for verb, c in blockers(sim, atom.verb, (o,)) if verb == "open"}
-                need = got if need is None else need & got
-                if not need:
-                    break
-            out |= need or set()
-        return out
 
     def _robot_walks(self, node: Node, a_idx: np.ndarray) -> np.ndarray:
         """anchors x robots: the fewest steps from where each robot may stand to each anchor."""
@@ -530,6 +584,15 @@ def _solve(cost: np.ndarray) -> int:
     r_ind, c_ind = linear_sum_assignment(cost)
     total = int(cost[r_ind, c_ind].sum())
     return 0 if total >= BIG else total
+
+
+def _with_last(cost: np.ndarray, n_ev: int) -> np.ndarray:
+    """The cost matrix with one more row, "the last event": some pending event is no pending event's
+    predecessor (the last of its robot's), so one event column stays free and at least one event
+    follows a robot (without it, events may precede one another in cycles that no robot enters)."""
+    last = np.full((1, cost.shape[1]), BIG, dtype=cost.dtype)
+    last[0, :n_ev] = 0
+    return np.vstack([cost, last])
 
 
 def _no_robot(robot: int, anchors: tuple[int, ...]) -> np.ndarray:

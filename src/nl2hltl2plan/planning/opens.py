@@ -1,0 +1,72 @@
+"""Support opens every completion of a node needs (summed-cost bound, `heuristic.py`): one action
+each, on top of the events and the walking."""
+
+from __future__ import annotations
+
+from nl2hltl2plan.planning.model import DONE, Leaf
+from nl2hltl2plan.planning.state import Expander, Node, bound
+from nl2hltl2plan.planning.support import blockers
+from nl2hltl2plan.worlds.simulator import PRESENT
+
+
+def forced_opens(x: Expander, required: set[int], node: Node) -> int:
+    """Support opens every completion needs: closed openables that every candidate of a pending
+    event sits in (or, for a put, is) and that no leaf opens itself, one open event each; then
+    events all of whose candidates are closed in (a put into any of 19 closed drawers) need an
+    open of one of those openables: a family of such events with disjoint openables (and
+    disjoint from the first ones) adds one open each."""
+    forced: set[int] = set()
+    some: list[frozenset[int]] = []
+    leaf_opens = {a.types[0] for lf in x.p.leaves if node.q[lf.index] != DONE
+                  for a in lf.atoms if a.verb == "open"}
+    for lf in x.p.leaves:
+        if node.q[lf.index] == DONE or lf.index not in required:
+            continue
+        per_path = [_path_opens(x, node, lf, path) for path in lf.paths.get(node.q[lf.index]) or []]
+        if per_path:
+            forced |= set.intersection(*(every for every, _ in per_path))
+        if len(per_path) == 1:
+            some += per_path[0][1]
+    forced = {c for c in forced if x.types[c] not in leaf_opens}
+    taken = set(forced)
+    extra = 0
+    for group in sorted(some, key=lambda g: (len(g), sorted(g))):
+        if taken.isdisjoint(group) and not any(x.types[c] in leaf_opens for c in group):
+            taken |= group
+            extra += 1
+    return len(forced) + extra
+
+
+def _path_opens(x: Expander, node: Node, leaf: Leaf,
+                path: tuple[int, ...]) -> tuple[set[int], list[frozenset[int]]]:
+    """(openables every candidate of some event of the path needs opened, per event whose every
+    candidate needs one: the openables that would do)."""
+    sim = node.sim
+    out: set[int] = set()
+    some: list[frozenset[int]] = []
+    moved: set[str] = set()
+    for k in path:
+        atom = leaf.atoms[k]
+        target = atom.types[-1]
+        skip = target in moved or atom.verb not in ("pickup", "put")
+        if atom.verb in ("pickup", "put"):
+            moved.add(atom.types[0])  # where it is now no longer tells what it needs
+        if skip:
+            continue
+        b = bound(node, leaf.index, target)
+        cands = [b] if b >= 0 else x.by_type.get(target, [])
+        if not cands or any(x.slice_of[o] >= 0 or not sim.flags[o] & PRESENT for o in cands):
+            continue
+        need: set[int] | None = None
+        union: set[int] = set()
+        for o in cands:
+            got = {c for verb, c in blockers(sim, atom.verb, (o,)) if verb == "open"}
+            need = got if need is None else need & got
+            if not got:
+                union = set()
+                break
+            union |= got
+        out |= need or set()
+        if union and not need:
+            some.append(frozenset(union))
+    return out, some
