@@ -76,6 +76,19 @@ def test_relations_and_slices_survive() -> None:
     assert r.before == [("A", "B")]
 
 
+def test_a_task_stated_in_a_reference_gets_its_unknown_destination_from_the_model() -> None:
+    # "stand" is no word of the grammar's lexicon: the reference still states a task of its own
+    r = parse_instruction(
+        "After you put a cold cup on a stand, put a microwaved mug on the dining table.",
+        KITCHEN | {"Cup"},
+        "test",
+    )
+    mug, cup = r.tasks
+    assert (mug.kind, mug.object, cup.kind, cup.object) == ("heat_place", ["Mug"], "cool_place", ["Cup"])
+    assert cup.receptacle and set(cup.receptacle) <= KITCHEN
+    assert r.before == [(cup.id, mug.id)]
+
+
 def test_grounding_ranks_only_scene_types_and_reports_close_calls() -> None:
     pred = load_model().predict(["put the keys on the table"], LIVING)[0]
     for role, ranked in pred.slots.items():

@@ -279,8 +279,11 @@ def joins(d: Draft, fr: Frame, it: Item) -> bool:
         return fr.cls in {"pick", "examine"} or (fr.cls == "place" and last_fr.cls == "light")
     if same(o, cur):
         # a task that is done ("a clean mug under the coffee maker") and a clause that names the object again
-        # with a destination of its own ("a warm mug in the cabinet"): a second task on another one
-        return not (_done(d) and _restates(fr, it))
+        # with a destination of its own ("a warm mug in the cabinet"): a second task on another one; so is
+        # "a" tomato after one was put somewhere (an indefinite article introduces another referent)
+        return not ((_done(d) or (_placed(d) and _indefinite(o))) and _restates(fr, it))
+    if _into_the_container(cur, fr, it):
+        return True
     if o.sliced and o.entry is None and o.head in {"", "slice", "piece"}:
         return True
     for (
@@ -317,6 +320,29 @@ def _done(d: Draft) -> bool:
     return bool(states) and all(_APPLIANCE[s] != dest.entry.canonical for s in states)
 
 
+def _placed(d: Draft) -> bool:
+    """Has draft `d` put its object somewhere (its last clause names a destination)?"""
+    fr, it = d.frames[-1]
+    return dest_of(it, fr.cls) is not None
+
+
+def _indefinite(o: NP) -> bool:
+    return o.text.split()[:1] in (["a"], ["an"], ["another"])
+
+
+def _into_the_container(cur: NP | None, fr: Frame, it: Item) -> bool:
+    """ "move a cup to the sink and put a knife in the cup": the content of the movable receptacle that the
+    draft moved (one place_in_container task, ANNOTATION_GUIDE.md)."""
+    o = it.obj
+    return (
+        cur is not None
+        and o is not None
+        and cur.is_movable_receptacle()
+        and not o.is_movable_receptacle()
+        and same(dest_of(it, fr.cls), cur)
+    )
+
+
 def _restates(fr: Frame, it: Item) -> bool:
     """Does a clause name its object anew with a task of its own: a destination ("a warm mug in the cabinet",
     "a clean mug under the coffee maker"), or "grab a credit card", "examine a credit card"?"""
@@ -327,7 +353,7 @@ def _restates(fr: Frame, it: Item) -> bool:
         return True
     if any(p in G.DEST_PREPS and np.is_receptacle() for p, np in it.pps) and fr.cls != "pick":
         return True
-    return o.text.split()[:1] in (["a"], ["an"], ["another"])
+    return _indefinite(o)
 
 
 def incomplete(d: Draft) -> bool:

@@ -162,9 +162,10 @@ def stated_tasks(ref: str, named: list[BaseTaskSpec], b: TaskBuilder, text: str)
     a warm mug in the cabinet" next to "put a clean mug under the coffee maker"); else none."""
     if not named:
         return []
+    # a task the reference states has a destination or a lamp (`TaskBuilder.spec` drops the others), though
+    # the scene may not know its word ("put a cold cup on a stand"): the learned filler may ground it
     new = new_tasks_from_ref(ref, b, text)
-    whole = [n for n in new if n.receptacle or n.kind == "examine_in_light"]
-    if not whole or len(whole) != len(new):
+    if not new:
         return []
     # "after you put a watch on a table": an indefinite object is another one than the task's
     words = [w for w, _, _ in tokens(_YOU.sub("", ref))][1:3]
