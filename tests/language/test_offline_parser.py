@@ -418,8 +418,14 @@ def test_alfred_words(text, expected):
     "text, expected",
     [
         # the content of the movable receptacle the clause before moved: one task (ANNOTATION_GUIDE.md)
-        ("Move the mug to the table and put a spoon in the mug.", "place_in_container Spoon in Mug -> DiningTable"),
-        ("Take a bowl to the counter, then put an apple in the bowl.", "place_in_container Apple in Bowl -> CounterTop"),
+        (
+            "Move the mug to the table and put a spoon in the mug.",
+            "place_in_container Spoon in Mug -> DiningTable",
+        ),
+        (
+            "Take a bowl to the counter, then put an apple in the bowl.",
+            "place_in_container Apple in Bowl -> CounterTop",
+        ),
     ],
 )
 def test_the_content_put_into_a_container_that_was_moved(text, expected):
