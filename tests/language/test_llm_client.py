@@ -280,8 +280,16 @@ def bad_server():
 
 
 def test_trickling_server_hits_the_total_deadline(bad_server):
-    c = LLMClient(LLMSettings(base_url=bad_server.url("trickle"), api_key="k", timeout=0.6, max_retries=1,
-                              backoff=0.01, cache_dir=None))
+    c = LLMClient(
+        LLMSettings(
+            base_url=bad_server.url("trickle"),
+            api_key="k",
+            timeout=0.6,
+            max_retries=1,
+            backoff=0.01,
+            cache_dir=None,
+        )
+    )
     t0 = time.monotonic()
     with pytest.raises(LLMError, match=r"pair: request to .* timed out after 2 attempts \(timeout 0.6s\)"):
         c.ask(MSGS, Pair, "pair")
@@ -290,8 +298,16 @@ def test_trickling_server_hits_the_total_deadline(bad_server):
 
 def test_instruction_deadline_covers_all_requests(stub):
     stub.answer = lambda body: ("sleep", 0.3, '{"a": 1, "b": []}')
-    c = LLMClient(LLMSettings(base_url=stub.base_url, api_key="k", timeout=5, instruction_timeout=0.5,
-                              max_retries=0, cache_dir=None))
+    c = LLMClient(
+        LLMSettings(
+            base_url=stub.base_url,
+            api_key="k",
+            timeout=5,
+            instruction_timeout=0.5,
+            max_retries=0,
+            cache_dir=None,
+        )
+    )
     c.start_instruction()
     assert c.ask(MSGS, Pair, "first").a == 1  # 0.3 s of the 0.5 s
     t0 = time.monotonic()
@@ -329,8 +345,17 @@ def test_cache_key_includes_the_server(stub, tmp_path):
     assert LLMSettings(base_url="http://a/v1", cache_scope="local:x.gguf").scope == "local:x.gguf"
 
 
-@pytest.mark.parametrize("var, value", [("TIMEOUT", "nan"), ("TIMEOUT", "0"), ("TIMEOUT", "inf"),
-                                        ("RETRIES", "-1"), ("INSTRUCTION_TIMEOUT", "-5"), ("CTX", "0")])
+@pytest.mark.parametrize(
+    "var, value",
+    [
+        ("TIMEOUT", "nan"),
+        ("TIMEOUT", "0"),
+        ("TIMEOUT", "inf"),
+        ("RETRIES", "-1"),
+        ("INSTRUCTION_TIMEOUT", "-5"),
+        ("CTX", "0"),
+    ],
+)
 def test_invalid_numeric_settings_are_refused(monkeypatch, var, value):
     monkeypatch.setenv(f"NL2HLTL2PLAN_LLM_{var}", value)
     with pytest.raises(LLMError, match="invalid LLM settings"):
@@ -356,8 +381,10 @@ def test_bad_batch_files_are_clean_errors(tmp_path):
     with pytest.raises(LLMError, match="cannot read batch answers"):
         read_answers(tmp_path / "missing.jsonl", cache)
     answers = tmp_path / "answers.jsonl"
-    answers.write_text('[1]\n{"custom_id": "k", "response": 5}\n{"custom_id": "k", "response": {"body": '
-                       '{"choices": [{"message": {"content": 7}}]}}}\n' + "[" * 5000 + "\n")
+    answers.write_text(
+        '[1]\n{"custom_id": "k", "response": 5}\n{"custom_id": "k", "response": {"body": '
+        '{"choices": [{"message": {"content": 7}}]}}}\n' + "[" * 5000 + "\n"
+    )
     stored, errors = read_answers(answers, cache)
     assert stored == 0 and len(errors) == 4
     requests = tmp_path / "requests.jsonl"

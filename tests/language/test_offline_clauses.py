@@ -37,7 +37,7 @@ def test_verbless_list_takes_the_previous_verb_and_shares_the_destination() -> N
 
 
 def test_a_stated_rule_is_not_read_as_an_elided_object_list() -> None:
-    """"The arm cannot touch the blue block until ..." after "Transfer ... into ..." states a rule; it must
+    """ "The arm cannot touch the blue block until ..." after "Transfer ... into ..." states a rule; it must
     not borrow the previous verb and become a task (which then got an invented order)."""
     from nl2hltl2plan.language.offline import parse_instruction
 

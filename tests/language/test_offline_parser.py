@@ -433,6 +433,15 @@ def test_the_content_put_into_a_container_that_was_moved(text, expected):
     assert [t.summary() for t in r.tasks] == [expected]
 
 
+def test_a_stop_then_back_where_it_came_from():
+    r = parse_instruction(
+        "Take the cup out of the microwave, put it in the fridge, back in the microwave.",
+        KITCHEN,
+        "FloorPlan1",
+    )
+    assert [t.summary() for t in r.tasks] == ["cool_place Cup -> Microwave"]
+
+
 def test_something_else_put_into_a_fixed_receptacle_is_another_task():
     r = parse_instruction("Move the mug to the sink and put a spoon in the sink.", KITCHEN, "FloorPlan1")
     assert sorted(t.summary() for t in r.tasks) == ["place Mug -> SinkBasin", "place Spoon -> SinkBasin"]

@@ -15,6 +15,14 @@ def test_off_after_a_state_verb_is_dropped() -> None:
     assert normalize("knock the roll off of the toilet") == "knock the roll off of the toilet"
 
 
+def test_back_after_a_comma_continues_the_sequence() -> None:
+    assert (
+        normalize("Take the cup out, put it in the fridge, back in the microwave.")
+        == "Take the cup out, put it in the fridge, then back in the microwave."
+    )
+    assert normalize("Put the book back on the shelf.") == "Put the book back on the shelf."
+
+
 def test_listed_states_stay_one_noun_phrase() -> None:
     assert normalize("put a chilled, cut slice of lettuce in the sink") == (
         "put a chilled cut slice of lettuce in the sink"

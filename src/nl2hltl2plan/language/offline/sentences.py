@@ -135,6 +135,9 @@ _OFF = re.compile(
 )
 
 
+_BACK = re.compile(r",\s+back (in|into|on|onto|to)\b", re.IGNORECASE)
+
+
 _STATE_ALT = "|".join(sorted(G.STATE_WORDS))
 _STATES_LISTED = re.compile(rf"\b({_STATE_ALT}),\s+(?=(?:{_STATE_ALT})\b)", re.IGNORECASE)
 
@@ -148,6 +151,7 @@ def normalize(text: str) -> str:
     text = _UNTIL.sub(lambda m: f"{'A' if m.group(1) == 'D' else 'a'}fter {m.group(3)}, {m.group(2)}", text)
     text = _STATES_LISTED.sub(r"\1 ", text)  # "a chilled, cut slice": one noun phrase, not two clauses
     text = _OFF.sub(r"\1", text)  # "a rinsed off knife", "cool off a plate": the state, not a direction
+    text = _BACK.sub(r", then back \1", text)  # "put it in the fridge, back in the microwave": a sequence
     text = _DONE_WITH.sub(lambda m: "After " if m.group(1)[0].isupper() else "after ", text)
     return re.sub(r"\s+", " ", text).strip()
 
