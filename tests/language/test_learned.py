@@ -7,10 +7,11 @@ from pathlib import Path
 import pytest
 
 from nl2hltl2plan.errors import DataError, WorldError
+from nl2hltl2plan.language.grounding import scene_types
 from nl2hltl2plan.language.learned import parse_instruction
 from nl2hltl2plan.language.learned.data import excluded_trials, load_examples
 from nl2hltl2plan.language.learned.inference import load_model
-from nl2hltl2plan.language.learned.model import SlotModel
+from nl2hltl2plan.language.learned.model import SlotModel, with_prior
 
 KITCHEN = {
     "Apple",
@@ -74,6 +75,32 @@ def test_relations_and_slices_survive() -> None:
     assert [t.kind for t in r.tasks] == ["clean_place", "place"]
     assert r.tasks[1].sliced and r.tasks[1].object == ["Tomato"]
     assert r.before == [("A", "B")]
+
+
+def test_the_scene_prior_orders_a_words_scene_types(shared_data: Path, tmp_path: Path) -> None:
+    # a living room with a coffee, dining and side table: "the table" is ranked by the text alone in an
+    # unknown scene, and by what ALFRED's train trials of this floor plan use in FloorPlan201
+    model = load_model()
+    types = scene_types("FloorPlan201")
+    used = model.prior[("FloorPlan201", "receptacle")]
+    in_scene = parse_instruction("Put the remote on the table.", types, "FloorPlan201", strict=False)
+    unknown = parse_instruction("Put the remote on the table.", types, "elsewhere", strict=False)
+    (a,), (b,) = in_scene.ambiguities, unknown.ambiguities
+    assert set(a.candidates) == set(b.candidates) and len(a.candidates) > 1
+    assert a.candidates[0] == max(a.candidates, key=lambda t: used.get(t, 0))
+    assert a.candidates[0] != b.candidates[0]
+    assert in_scene.tasks[0].receptacle == a.candidates  # every candidate stays acceptable, best first
+    # the prior travels with the artifact
+    model.save(tmp_path / "m.npz")
+    assert SlotModel.load(tmp_path / "m.npz").prior == model.prior
+
+
+def test_with_prior_reweights_and_keeps_what_it_does_not_know() -> None:
+    ranked = [("DiningTable", 0.6), ("SideTable", 0.4)]
+    assert with_prior(ranked, None) == ranked
+    reordered = with_prior(ranked, {"SideTable": 30, "DiningTable": 10})
+    assert [t for t, _ in reordered] == ["SideTable", "DiningTable"]
+    assert abs(sum(q for _, q in reordered) - 1.0) < 1e-9
 
 
 def test_a_task_stated_in_a_reference_gets_its_unknown_destination_from_the_model() -> None:

@@ -19,7 +19,7 @@ from pydantic import Field
 
 from nl2hltl2plan.errors import WorldError
 from nl2hltl2plan.language.grounding import AffordanceLookup, find_mentions
-from nl2hltl2plan.language.learned.model import SlotModel, SlotPrediction
+from nl2hltl2plan.language.learned.model import SlotModel, SlotPrediction, with_prior
 from nl2hltl2plan.language.learned.rescue import rewrite
 from nl2hltl2plan.language.offline import OfflineParse
 from nl2hltl2plan.language.offline import parse_instruction as grammar_parse
@@ -76,24 +76,36 @@ def _roles(kind: str) -> tuple[str, ...]:
 
 
 def _choose(
-    grammar: list[str] | None, ranked: list[tuple[str, float]], types: set[str] | None, policy: Policy
+    grammar: list[str] | None,
+    ranked: list[tuple[str, float]],
+    types: set[str] | None,
+    policy: Policy,
+    order: list[tuple[str, float]],
 ) -> list[str] | None:
+    """The slot's types: the grammar's (several ordered by `order`: the model with the scene prior), or
+    the model's best when the grammar found none in the scene."""
     in_scene = [t for t in grammar or [] if types is None or t in types]
     if ranked and (not in_scene or (ranked[0][1] >= policy.override and ranked[0][0] not in in_scene)):
         if grammar and not in_scene and types is not None:
             return grammar  # the grammar named a type the scene lacks: keep it, it is reported as missing
         return [ranked[0][0]]
-    if in_scene and len(in_scene) > 1 and ranked:
-        order = {t: q for t, q in ranked}
-        return sorted(in_scene, key=lambda t: -order.get(t, 0.0))
+    if in_scene and len(in_scene) > 1 and order:
+        score = dict(order)
+        return sorted(in_scene, key=lambda t: -score.get(t, 0.0))
     return grammar or None
 
 
 def _ambiguity(
-    task: BaseTaskSpec, role: str, chosen: list[str], ranked: list[tuple[str, float]], policy: Policy
+    task: BaseTaskSpec,
+    role: str,
+    chosen: list[str],
+    ranked: list[tuple[str, float]],
+    policy: Policy,
+    order: list[tuple[str, float]],
 ) -> Ambiguity | None:
-    """Several scene types kept for the word (e.g. "table"), or the model's best two close: ranked."""
-    prob = dict(ranked)
+    """Several scene types kept for the word (e.g. "table"; confidences from `order`), or the model's best
+    two close: ranked."""
+    prob = dict(order)
     if len(chosen) > 1:
         total = sum(prob.get(t, 0.0) for t in chosen) or 1.0
         cands = [(t, prob.get(t, 0.0) / total) for t in chosen]
@@ -134,6 +146,7 @@ def combine(
     types: set[str] | None,
     policy: Policy,
     ambiguities: list[Ambiguity],
+    prior: dict[str, dict[str, int]] | None = None,
 ) -> BaseTaskSpec:
     """One base task from the grammar's reading of a clause and the model's prediction for it."""
     kind = pred.top_kind if pred.kind[0][1] >= policy.kind_override else task.kind
@@ -150,8 +163,10 @@ def combine(
         "light": None,
     }
     for role in _roles(kind):
-        values[role] = _choose(getattr(task, role), pred.slots.get(role, []), types, policy)
-        amb = _ambiguity(task, role, values[role] or [], pred.slots.get(role, []), policy)
+        ranked = pred.slots.get(role, [])
+        order = with_prior(ranked, (prior or {}).get(role))
+        values[role] = _choose(getattr(task, role), ranked, types, policy, order)
+        amb = _ambiguity(task, role, values[role] or [], ranked, policy, order)
         if amb is not None:
             ambiguities.append(amb)
     sliced = pred.sliced >= 0.5 if policy.sliced_from_model else task.sliced
@@ -195,7 +210,10 @@ def parse_instruction(
         drafts = [BaseTaskSpec(id=task_letter(0), text=instruction.strip(), kind="place", object=[])]
     preds = model.predict([d.text or instruction for d in drafts], scene_types)
     ambiguities: list[Ambiguity] = []
-    tasks = [combine(d, p, scene_types, policy, ambiguities) for d, p in zip(drafts, preds, strict=True)]
+    prior = {slot: counts for (plan, slot), counts in model.prior.items() if plan == scene}
+    tasks = [
+        combine(d, p, scene_types, policy, ambiguities, prior) for d, p in zip(drafts, preds, strict=True)
+    ]
     if whole and not _names_its_types(tasks[0]):
         tasks, ambiguities = [], []  # the model would invent a task ("hello there"): keep what is unparsed
     elif whole:

@@ -14,7 +14,7 @@ from pathlib import Path
 from nl2hltl2plan.language.grounding import scene_types
 from nl2hltl2plan.language.learned.data import SLOTS, Example, faithful, load_examples
 from nl2hltl2plan.language.learned.faithful import FaithfulExample, faithful_examples, training_example
-from nl2hltl2plan.language.learned.model import SlotModel, SlotPrediction
+from nl2hltl2plan.language.learned.model import SlotModel, SlotPrediction, scene_prior
 
 
 def text_faithful_train() -> list[Example]:
@@ -30,8 +30,11 @@ def train(seed: int = 0, labels: str = "text") -> SlotModel:
     """Fit on the train annotations: text-faithful labels (default) or ALFRED's, on those whose text
     states their task (`data.faithful`, the first version)."""
     if labels == "text":
-        return SlotModel.fit(text_faithful_train(), seed=seed)
-    return SlotModel.fit([e for e in load_examples()["train"] if faithful(e)], seed=seed)
+        model = SlotModel.fit(text_faithful_train(), seed=seed)
+    else:
+        model = SlotModel.fit([e for e in load_examples()["train"] if faithful(e)], seed=seed)
+    model.prior = scene_prior(load_examples()["train"])  # which types the scene's train trials use
+    return model
 
 
 def _slot_ok(e: Example, p: SlotPrediction) -> dict[str, bool]:
