@@ -197,3 +197,13 @@ def test_least_over_bindings_is_the_least_complete_choice_or_below():
         got = least_over_bindings(choices, capacity, evaluate, budget)
         assert got is not None and got[0] <= best
     assert least_over_bindings([], capacity, evaluate, 100) is None
+
+
+def test_an_instance_no_cell_can_reach_leaves_the_bound_finite():
+    # Apple_1 lies 15 m past the corridor's end: its region has no cell. The root's search over instance
+    # choices fixes the apple to it once; the approach-and-carry bound skips that leg instead of failing
+    world = corridor({"Apple_0": 20, "Apple_1": 100, "CounterTop_0": 5})
+    inst = gt([PLACE_APPLE])
+    bound = _root_bound(world, inst, [(0, 30)])
+    r = plan(world, oracle_spec(inst, world).spec, [(0, 30)], mode="exact")
+    assert r.solved and r.proven_optimal and 0 < bound <= r.total_cost

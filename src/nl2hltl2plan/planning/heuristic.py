@@ -465,10 +465,11 @@ class Heuristic:
         has the hand empty, a carry full): summed, a bound. None when no pickup is carried."""
         legs = {r[4]: i for i, r in enumerate(rows) if r[3] == PUT and r[4] >= 0 and r[2]}
         legs = {k: i for k, i in legs.items() if rows[k][3] == PICKUP and rows[k][2]}
-        if not legs:
-            return None
         field, region_idx = self.field, self.nav.region_idx
         cells_of = {k: np.concatenate([region_idx[a] for a in rows[k][2]]) for k in legs}
+        cells_of = {k: c for k, c in cells_of.items() if len(c)}  # an instance no cell reaches: no leg
+        if not cells_of:
+            return None
         union = np.unique(np.concatenate(list(cells_of.values())))  # only the cells the pickups use
         src = np.empty((cost.shape[1], len(union)), dtype=np.int64)
         for j, anchors in enumerate(cols):
@@ -479,8 +480,8 @@ class Heuristic:
         for i, r in enumerate(rows):
             if r[3] == PUT and r[4] < 0 and r[5] >= 0:
                 out[i] = cost[i]  # a held object's put: the holder's walk to it
-        for k, i in legs.items():
-            cells = cells_of[k]
+        for k, cells in cells_of.items():
+            i = legs[k]
             to_put = np.minimum(field[list(rows[i][2])][:, cells].min(axis=0), BIG)
             walks = (src[:, np.searchsorted(union, cells)] + to_put[None, :]).min(axis=1)
             out[k] = np.where(cost[k] >= BIG, BIG, np.minimum(walks, BIG))
