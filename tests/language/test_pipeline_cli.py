@@ -145,6 +145,15 @@ def test_cli_plan_human_and_errors(capsys, monkeypatch):
     assert "error: no Statue in demo" in capsys.readouterr().err
 
 
+def test_cli_plan_note_says_what_happens_to_an_ambiguous_word(capsys, monkeypatch):
+    # "utensils" fits four types: without --ask every one stays acceptable, and the note says so
+    rc = main(["plan", "Put the utensils in the lower rack.", "--llm", "offline", "--robots", "2"])
+    err = capsys.readouterr().err
+    assert rc == 0
+    note = next(line for line in err.splitlines() if "'utensils'" in line)
+    assert "could be" in note and "any of them is accepted (--ask to choose)" in note and "using" not in note
+
+
 def test_cli_plan_with_stub_llm(stub, capsys, tmp_path, monkeypatch):
     from pathlib import Path
 

@@ -29,6 +29,8 @@ from nl2hltl2plan.cli.options import (
 
 EXIT_OK, EXIT_NO_PLAN, EXIT_PENDING = 0, 1, 3
 
+AMBIGUOUS_ROLES = ("object", "container", "receptacle", "light")
+
 
 def register(sub: Any) -> None:
     p = sub.add_parser(
@@ -203,10 +205,12 @@ def _print_human(outcome: Any) -> None:
         print(f"not understood: {w}", file=sys.stderr)
     for w in lang.issues + lang.warnings + lang.ltl_checks:
         print(f"warning: {w}", file=sys.stderr)
+    kept = {(t.id, role): getattr(t, role) or [] for t in lang.tasks for role in AMBIGUOUS_ROLES}
     for a in lang.ambiguities:
+        chosen = kept.get((a.task, a.role), [])
+        what = f"using {chosen[0]}" if len(chosen) == 1 else "any of them is accepted (--ask to choose)"
         print(
-            f"note: {a.word!r} ({a.role} of {a.task}) could be {' / '.join(a.candidates)}; "
-            f"using {a.candidates[0]}",
+            f"note: {a.word!r} ({a.role} of {a.task}) could be {' / '.join(a.candidates)}; {what}",
             file=sys.stderr,
         )
     print("\nPlan")
