@@ -69,6 +69,11 @@ def test_type_an_instruction_and_see_the_pictures(server):
             )
             assert inked > 1000
             page.wait_for_function("() => document.getElementById('now').textContent.startsWith('t = ')")
+            # a word several scene types fit is said, with its candidates
+            page.fill("#instruction", "Put the utensils in the lower rack.")
+            page.click("#go")
+            page.wait_for_function("() => document.getElementById('status').textContent.includes('could be')")
+            assert "'utensils' (object of A) could be" in page.inner_text("#status")
             # a bad request shows its message
             page.fill("#instruction", "put the statue in the fridge")
             page.click("#go")
