@@ -190,3 +190,28 @@ def test_bench_refuses_an_absurd_count_before_any_work(
     assert main(["bench", "alfred", "--oracle", "--gt", str(gt), "-o", str(tmp_path / "out")]) == 2
     err = capsys.readouterr().err.strip()
     assert err.startswith("error:") and "count" in err and "\n" not in err
+
+
+def test_a_bug_is_one_line_with_its_own_status(monkeypatch: pytest.MonkeyPatch, capsys) -> None:
+    from nl2hltl2plan.cli import main as cli_main
+
+    def broken(args: object) -> int:
+        raise ValueError("zero-size array\nto reduction operation")
+
+    real = cli_main.build_parser
+
+    def build():  # type: ignore[no-untyped-def]
+        parser = real()  # the `check` command, its handler replaced by one with a bug
+        sub = next(a for a in parser._actions if a.dest == "command")
+        sub.choices["check"].set_defaults(func=broken)
+        return parser
+
+    monkeypatch.setattr(cli_main, "build_parser", build)
+    monkeypatch.delenv("NL2HLTL2PLAN_DEBUG", raising=False)
+    assert main(["check", "x.json"]) == 4
+    err = capsys.readouterr().err.strip()
+    assert err.startswith("internal error: ValueError: zero-size array | to reduction operation")
+    assert len(err.splitlines()) == 1
+    monkeypatch.setenv("NL2HLTL2PLAN_DEBUG", "1")  # developers get the traceback
+    with pytest.raises(ValueError):
+        main(["check", "x.json"])

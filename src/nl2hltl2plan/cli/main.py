@@ -48,6 +48,9 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+INTERNAL_ERROR = 4  # an unexpected exception: a bug of ours, not the user's input
+
+
 def _one_line(text: str) -> str:
     lines = [line.strip() for line in text.splitlines() if line.strip()]
     return " | ".join(lines) if lines else "unknown error"
@@ -82,6 +85,15 @@ def main(argv: list[str] | None = None) -> int:
     except KeyboardInterrupt:
         print("interrupted", file=sys.stderr)
         return 130
+    except Exception as exc:  # a bug: one line and its own status; NL2HLTL2PLAN_DEBUG=1 shows the traceback
+        if os.environ.get("NL2HLTL2PLAN_DEBUG"):
+            raise
+        print(
+            f"internal error: {type(exc).__name__}: {_one_line(str(exc))} (a bug: please report it with "
+            "the command; NL2HLTL2PLAN_DEBUG=1 shows the traceback)",
+            file=sys.stderr,
+        )
+        return INTERNAL_ERROR
 
 
 if __name__ == "__main__":
