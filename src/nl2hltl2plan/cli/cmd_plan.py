@@ -5,8 +5,8 @@ Prints the HTT, the base tasks, the hierarchical LTL and the plan with its trave
 time; `--json` prints one object (docs/plan_schema.md); `-o DIR` writes result.json, htt.png,
 world.png, plan.png (the map with numbered actions) and gantt.png (who does what when).
 Exit status: 0 a checked plan, 1 no plan (infeasible or timeout, with the reason), 2 bad input,
-3 LLM requests pending (batch mode), 4 an internal error (a bug). Without `--llm`, an LLM configured by NL2HLTL2PLAN_LLM_* is used,
-else the offline backend (said on stderr).
+3 LLM requests pending (batch mode), 4 an internal error (a bug). Without `--llm`, an LLM configured
+by NL2HLTL2PLAN_LLM_* is used, else the offline backend (said on stderr).
 """
 
 from __future__ import annotations
