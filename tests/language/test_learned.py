@@ -82,7 +82,7 @@ def test_the_scene_prior_orders_a_words_scene_types(shared_data: Path, tmp_path:
     # unknown scene, and by what ALFRED's train trials of this floor plan use in FloorPlan201
     model = load_model()
     types = scene_types("FloorPlan201")
-    used = model.prior[("FloorPlan201", "receptacle")]
+    used = model.prior["FloorPlan201"]["receptacle"]
     in_scene = parse_instruction("Put the remote on the table.", types, "FloorPlan201", strict=False)
     unknown = parse_instruction("Put the remote on the table.", types, "elsewhere", strict=False)
     (a,), (b,) = in_scene.ambiguities, unknown.ambiguities

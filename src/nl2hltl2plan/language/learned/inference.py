@@ -210,7 +210,7 @@ def parse_instruction(
         drafts = [BaseTaskSpec(id=task_letter(0), text=instruction.strip(), kind="place", object=[])]
     preds = model.predict([d.text or instruction for d in drafts], scene_types)
     ambiguities: list[Ambiguity] = []
-    prior = {slot: counts for (plan, slot), counts in model.prior.items() if plan == scene}
+    prior = model.prior.get(scene)
     tasks = [
         combine(d, p, scene_types, policy, ambiguities, prior) for d, p in zip(drafts, preds, strict=True)
     ]

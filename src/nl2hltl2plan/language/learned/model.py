@@ -128,12 +128,12 @@ class SlotModel:
         vectorizers: list[Vectorizer],
         heads: dict[str, Head],
         meta: dict[str, Any],
-        prior: dict[tuple[str, str], dict[str, int]] | None = None,
+        prior: dict[str, dict[str, dict[str, int]]] | None = None,
     ) -> None:
         self.vectorizers = vectorizers
         self.heads = heads
         self.meta = meta
-        self.prior = prior or {}  # (floor plan, slot) -> type -> train trials' annotations using it
+        self.prior = prior or {}  # floor plan -> slot -> type -> train trials' annotations using it
 
     @classmethod
     def fit(cls, examples: list[Example], seed: int = 0, c: float = 8.0) -> SlotModel:
@@ -213,9 +213,11 @@ class SlotModel:
             out[f"vec{i}_vocab"] = np.array(words)
             out[f"vec{i}_idf"] = v.idf
         if self.prior:
-            keys = sorted((plan, slot, t) for (plan, slot), counts in self.prior.items() for t in counts)
+            keys = sorted(
+                (plan, slot, t) for plan, slots in self.prior.items() for slot in slots for t in slots[slot]
+            )
             out["prior_keys"] = np.array(["|".join(k) for k in keys])
-            out["prior_counts"] = np.array([self.prior[(p, s)][t] for p, s, t in keys], dtype=np.int32)
+            out["prior_counts"] = np.array([self.prior[p][s][t] for p, s, t in keys], dtype=np.int32)
         for name, h in self.heads.items():
             out[f"head_{name}_classes"] = np.array(h.classes)
             out[f"head_{name}_coef"] = h.coef
@@ -258,10 +260,10 @@ class SlotModel:
             h: Head([str(c) for c in d[f"head_{h}_classes"]], d[f"head_{h}_coef"], d[f"head_{h}_intercept"])
             for h in HEADS
         }
-        prior: dict[tuple[str, str], dict[str, int]] = {}
+        prior: dict[str, dict[str, dict[str, int]]] = {}
         for key, n in zip(d.get("prior_keys", []), d.get("prior_counts", []), strict=True):
             plan, slot, t = str(key).split("|")
-            prior.setdefault((plan, slot), {})[t] = int(n)
+            prior.setdefault(plan, {}).setdefault(slot, {})[t] = int(n)
         return cls(vecs, heads, meta, prior)
 
 
@@ -274,8 +276,8 @@ def _ranked(classes: Any, p: Any, types: set[str] | None) -> list[tuple[str, flo
 
 
 def with_prior(ranked: list[tuple[str, float]], counts: dict[str, int] | None) -> list[tuple[str, float]]:
-    """A slot's ranked scene types re-weighted by the scene prior (`counts`: `SlotModel.prior` of the
-    floor plan and slot; None: unchanged)."""
+    """A slot's ranked scene types re-weighted by the scene prior (`counts`: `SlotModel.prior[floor
+    plan][slot]`; None: unchanged)."""
     if not counts:
         return ranked
     n = sum(counts.values())
@@ -287,11 +289,11 @@ def with_prior(ranked: list[tuple[str, float]], counts: dict[str, int] | None) -
     return sorted(((t, q / total) for t, q in weighted), key=lambda tq: -tq[1])
 
 
-def scene_prior(examples: list[Example]) -> dict[tuple[str, str], dict[str, int]]:
-    """(floor plan, slot) -> type -> how many annotations of the examples' trials use it there."""
-    out: dict[tuple[str, str], Counter[str]] = {}
+def scene_prior(examples: list[Example]) -> dict[str, dict[str, dict[str, int]]]:
+    """floor plan -> slot -> type -> how many annotations of the examples' trials use it there."""
+    out: dict[str, dict[str, Counter[str]]] = {}
     for e in examples:
         for s in SLOTS:
             if e.slot(s):
-                out.setdefault((e.floor_plan, s), Counter())[e.slot(s)] += 1
-    return {k: dict(v) for k, v in out.items()}
+                out.setdefault(e.floor_plan, {}).setdefault(s, Counter())[e.slot(s)] += 1
+    return {plan: {s: dict(c) for s, c in slots.items()} for plan, slots in out.items()}

@@ -7,7 +7,15 @@ from dataclasses import dataclass, field
 
 from nl2hltl2plan.language.offline import grammar as G
 from nl2hltl2plan.language.offline.clauses import Clause, expand_gapping, split_clauses
-from nl2hltl2plan.language.offline.frames import IN_SENTENCE, Frame, Item, dest_of, parse_frame, same
+from nl2hltl2plan.language.offline.frames import (
+    IN_SENTENCE,
+    Frame,
+    Item,
+    dest_of,
+    parse_frame,
+    puts_into,
+    same,
+)
 from nl2hltl2plan.language.offline.phrases import NP
 from nl2hltl2plan.language.offline.sentences import Sentence
 from nl2hltl2plan.language.offline.tasks import Draft, TaskBuilder, Unit
@@ -282,7 +290,7 @@ def joins(d: Draft, fr: Frame, it: Item) -> bool:
         # with a destination of its own ("a warm mug in the cabinet"): a second task on another one; so is
         # "a" tomato after one was put somewhere (an indefinite article introduces another referent)
         return not ((_done(d) or (_placed(d) and _indefinite(o))) and _restates(fr, it))
-    if _into_the_container(cur, fr, it):
+    if puts_into(cur, fr, it):
         return True
     if o.sliced and o.entry is None and o.head in {"", "slice", "piece"}:
         return True
@@ -328,19 +336,6 @@ def _placed(d: Draft) -> bool:
 
 def _indefinite(o: NP) -> bool:
     return o.text.split()[:1] in (["a"], ["an"], ["another"])
-
-
-def _into_the_container(cur: NP | None, fr: Frame, it: Item) -> bool:
-    """ "move a cup to the sink and put a knife in the cup": the content of the movable receptacle that the
-    draft moved (one place_in_container task, ANNOTATION_GUIDE.md)."""
-    o = it.obj
-    return (
-        cur is not None
-        and o is not None
-        and cur.is_movable_receptacle()
-        and not o.is_movable_receptacle()
-        and same(dest_of(it, fr.cls), cur)
-    )
 
 
 def _restates(fr: Frame, it: Item) -> bool:

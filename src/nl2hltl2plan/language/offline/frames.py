@@ -269,3 +269,18 @@ def near_dest(item: Item) -> NP | None:
         if p in UNDER and np.entry is not None and np.entry.canonical == "SinkBasin":
             return parse_np("cabinet")
     return None
+
+
+def puts_into(holder: NP | None, fr: Frame, it: Item) -> bool:
+    """Does a clause item put something else into `holder`, a movable receptacle the task moved so far
+    ("move a cup to the sink and put a knife in the cup": one place_in_container task, as
+    ANNOTATION_GUIDE.md says)?"""
+    o = it.obj
+    return (
+        holder is not None
+        and o is not None
+        and not o.pronoun
+        and holder.is_movable_receptacle()
+        and not o.is_movable_receptacle()
+        and same(dest_of(it, fr.cls), holder)
+    )

@@ -15,6 +15,7 @@ from nl2hltl2plan.language.offline.frames import (
     dest_of,
     is_fixed,
     near_dest,
+    puts_into,
     same,
 )
 from nl2hltl2plan.language.offline.phrases import DETERMINERS, FILLER, NP, parse_np, tokens
@@ -235,27 +236,13 @@ def _read_frame(r: _Reading, fr: Frame, it: Item) -> None:
     for np in [o] + [np for _, np in it.pps]:
         if np is not None and np.is_lamp() and (fr.cls in {"light", "examine", "pick"} or fr.light_on):
             r.light = r.light or np
-    if o is not None and _content_of_the_object(r, fr, it):
+    if o is not None and r.container is None and puts_into(r.obj, fr, it):
         r.container, r.obj = r.obj, o  # "move a cup to the sink and put a knife in the cup"
     if o is not None:
         _read_object(r, o)
     for p, np in it.pps:
         _read_pp(r, fr, p, np)
     _read_destination(r, fr, it)
-
-
-def _content_of_the_object(r: _Reading, fr: Frame, it: Item) -> bool:
-    """Does the item put something into the movable receptacle that the task moved so far?"""
-    o = it.obj
-    return (
-        o is not None
-        and not o.pronoun
-        and r.obj is not None
-        and r.container is None
-        and r.obj.is_movable_receptacle()
-        and not o.is_movable_receptacle()
-        and same(dest_of(it, fr.cls), r.obj)
-    )
 
 
 def _read_object(r: _Reading, o: NP) -> None:
