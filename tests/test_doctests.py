@@ -12,6 +12,7 @@ MODULES = [
     "nl2hltl2plan.pipeline",
     "nl2hltl2plan.logic.trace",
     "nl2hltl2plan.worlds.starts",
+    "nl2hltl2plan.language.learned.ranker",
 ]
 
 

@@ -145,7 +145,8 @@ def evaluate(rows: list[dict[str, Any]], generate: Generator, progress: bool = F
 
 
 def table(records: list[dict[str, Any]]) -> str:
-    """Markdown table: per n_base, tasks-match and full-match shares (all / feasible-and-unambiguous)."""
+    """Markdown table: per n_base, tasks-match and full-match shares with counts (all /
+    feasible-and-unambiguous)."""
     lines = [
         "| base tasks | n | tasks match | tasks+order match | lenient types | clean n | clean tasks+order |",
         "| --- | --- | --- | --- | --- | --- | --- |",
@@ -156,7 +157,8 @@ def table(records: list[dict[str, Any]]) -> str:
         cl = [r for r in rs if r["clean"]]
 
         def pct(xs: list[dict[str, Any]], key: str) -> str:
-            return f"{100 * sum(x[key] for x in xs) / len(xs):.0f}%" if xs else "-"
+            k = sum(x[key] for x in xs)
+            return f"{100 * k / len(xs):.0f}% ({k})" if xs else "-"
 
         lines.append(
             f"| {g} | {len(rs)} | {pct(rs, 'tasks_ok')} | {pct(rs, 'ok')} | {pct(rs, 'lenient_ok')} | "

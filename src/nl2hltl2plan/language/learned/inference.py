@@ -19,7 +19,8 @@ from pydantic import Field
 
 from nl2hltl2plan.errors import WorldError
 from nl2hltl2plan.language.grounding import AffordanceLookup, find_mentions
-from nl2hltl2plan.language.learned.model import SlotModel, SlotPrediction, with_prior
+from nl2hltl2plan.language.learned.model import SlotModel, SlotPrediction
+from nl2hltl2plan.language.learned.ranker import TypeRanker
 from nl2hltl2plan.language.learned.rescue import rewrite
 from nl2hltl2plan.language.offline import OfflineParse
 from nl2hltl2plan.language.offline import parse_instruction as grammar_parse
@@ -82,7 +83,7 @@ def _choose(
     policy: Policy,
     order: list[tuple[str, float]],
 ) -> list[str] | None:
-    """The slot's types: the grammar's (several ordered by `order`: the model with the scene prior), or
+    """The slot's types: the grammar's (several ordered by `order`: the type ranker's), or
     the model's best when the grammar found none in the scene."""
     in_scene = [t for t in grammar or [] if types is None or t in types]
     if ranked and (not in_scene or (ranked[0][1] >= policy.override and ranked[0][0] not in in_scene)):
@@ -93,6 +94,22 @@ def _choose(
         score = dict(order)
         return sorted(in_scene, key=lambda t: -score.get(t, 0.0))
     return grammar or None
+
+
+def _order(
+    task: BaseTaskSpec,
+    role: str,
+    ranked: list[tuple[str, float]],
+    types: set[str] | None,
+    ranker: TypeRanker | None,
+) -> list[tuple[str, float]]:
+    """The grammar's several scene types for the slot ("the table"), ordered by the type ranker; else the
+    slot model's ranking."""
+    in_scene = [t for t in getattr(task, role) or [] if types is None or t in types]
+    if ranker is None or len(in_scene) < 2:
+        return ranked
+    prob = dict(ranked)
+    return ranker.order(task.text, [(t, prob.get(t, 0.0)) for t in in_scene])
 
 
 def _ambiguity(
@@ -146,7 +163,7 @@ def combine(
     types: set[str] | None,
     policy: Policy,
     ambiguities: list[Ambiguity],
-    prior: dict[str, dict[str, int]] | None = None,
+    ranker: TypeRanker | None = None,
 ) -> BaseTaskSpec:
     """One base task from the grammar's reading of a clause and the model's prediction for it."""
     kind = pred.top_kind if pred.kind[0][1] >= policy.kind_override else task.kind
@@ -164,7 +181,7 @@ def combine(
     }
     for role in _roles(kind):
         ranked = pred.slots.get(role, [])
-        order = with_prior(ranked, (prior or {}).get(role))
+        order = _order(task, role, ranked, types, ranker)
         values[role] = _choose(getattr(task, role), ranked, types, policy, order)
         amb = _ambiguity(task, role, values[role] or [], ranked, policy, order)
         if amb is not None:
@@ -210,9 +227,9 @@ def parse_instruction(
         drafts = [BaseTaskSpec(id=task_letter(0), text=instruction.strip(), kind="place", object=[])]
     preds = model.predict([d.text or instruction for d in drafts], scene_types)
     ambiguities: list[Ambiguity] = []
-    prior = model.prior.get(scene)
     tasks = [
-        combine(d, p, scene_types, policy, ambiguities, prior) for d, p in zip(drafts, preds, strict=True)
+        combine(d, p, scene_types, policy, ambiguities, model.ranker)
+        for d, p in zip(drafts, preds, strict=True)
     ]
     if whole and not _names_its_types(tasks[0]):
         tasks, ambiguities = [], []  # the model would invent a task ("hello there"): keep what is unparsed

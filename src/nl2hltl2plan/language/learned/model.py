@@ -25,16 +25,10 @@ import numpy as np
 
 from nl2hltl2plan.errors import DataError
 from nl2hltl2plan.language.learned.data import SLOTS, Example, states_kind
+from nl2hltl2plan.language.learned.ranker import TypeRanker
 
 ARTIFACT = "slot_model.npz"
-# The scene prior orders the several scene types a word fits ("the table"): the model's probabilities times
-# ((count + SMOOTHING) / (n + SMOOTHING)) ** POWER, the count being how often ALFRED's train trials of that
-# floor plan use the type in that slot. Chosen on valid_seen (the same floor plans, other trials): the top
-# candidate of an ambiguous word was ALFRED's label in 61 of 104 cases by the text alone, 79 with the prior
-# (powers 3-4 best, smoothing 0.5-2 alike). Only the order of the grammar's candidates uses it
-# (inference.combine; docs/learned.md).
-PRIOR_POWER, PRIOR_SMOOTHING = 4.0, 1.0
-FORMAT = 2
+FORMAT = 3
 HEADS = ("kind", *SLOTS, "sliced")
 
 
@@ -128,12 +122,12 @@ class SlotModel:
         vectorizers: list[Vectorizer],
         heads: dict[str, Head],
         meta: dict[str, Any],
-        prior: dict[str, dict[str, dict[str, int]]] | None = None,
+        ranker: TypeRanker | None = None,
     ) -> None:
         self.vectorizers = vectorizers
         self.heads = heads
         self.meta = meta
-        self.prior = prior or {}  # floor plan -> slot -> type -> train trials' annotations using it
+        self.ranker = ranker  # orders the several scene types a word fits (`ranker.py`)
 
     @classmethod
     def fit(cls, examples: list[Example], seed: int = 0, c: float = 8.0) -> SlotModel:
@@ -212,12 +206,8 @@ class SlotModel:
             out[f"vec{i}_spec"] = np.array([v.analyzer, str(v.lo), str(v.hi)])
             out[f"vec{i}_vocab"] = np.array(words)
             out[f"vec{i}_idf"] = v.idf
-        if self.prior:
-            keys = sorted(
-                (plan, slot, t) for plan, slots in self.prior.items() for slot in slots for t in slots[slot]
-            )
-            out["prior_keys"] = np.array(["|".join(k) for k in keys])
-            out["prior_counts"] = np.array([self.prior[p][s][t] for p, s, t in keys], dtype=np.int32)
+        if self.ranker is not None:
+            out.update(self.ranker.arrays())
         for name, h in self.heads.items():
             out[f"head_{name}_classes"] = np.array(h.classes)
             out[f"head_{name}_coef"] = h.coef
@@ -260,11 +250,7 @@ class SlotModel:
             h: Head([str(c) for c in d[f"head_{h}_classes"]], d[f"head_{h}_coef"], d[f"head_{h}_intercept"])
             for h in HEADS
         }
-        prior: dict[str, dict[str, dict[str, int]]] = {}
-        for key, n in zip(d.get("prior_keys", []), d.get("prior_counts", []), strict=True):
-            plan, slot, t = str(key).split("|")
-            prior.setdefault(plan, {}).setdefault(slot, {})[t] = int(n)
-        return cls(vecs, heads, meta, prior)
+        return cls(vecs, heads, meta, TypeRanker.from_arrays(d))
 
 
 def _ranked(classes: Any, p: Any, types: set[str] | None) -> list[tuple[str, float]]:
@@ -273,27 +259,3 @@ def _ranked(classes: Any, p: Any, types: set[str] | None) -> list[tuple[str, flo
         pairs = [(c, q) for c, q in pairs if c in types]
     total = sum(q for _, q in pairs) or 1.0
     return sorted(((c, q / total) for c, q in pairs), key=lambda cq: -cq[1])
-
-
-def with_prior(ranked: list[tuple[str, float]], counts: dict[str, int] | None) -> list[tuple[str, float]]:
-    """A slot's ranked scene types re-weighted by the scene prior (`counts`: `SlotModel.prior[floor
-    plan][slot]`; None: unchanged)."""
-    if not counts:
-        return ranked
-    n = sum(counts.values())
-    weighted = [
-        (t, q * ((counts.get(t, 0) + PRIOR_SMOOTHING) / (n + PRIOR_SMOOTHING)) ** PRIOR_POWER)
-        for t, q in ranked
-    ]
-    total = sum(q for _, q in weighted) or 1.0
-    return sorted(((t, q / total) for t, q in weighted), key=lambda tq: -tq[1])
-
-
-def scene_prior(examples: list[Example]) -> dict[str, dict[str, dict[str, int]]]:
-    """floor plan -> slot -> type -> how many annotations of the examples' trials use it there."""
-    out: dict[str, dict[str, Counter[str]]] = {}
-    for e in examples:
-        for s in SLOTS:
-            if e.slot(s):
-                out.setdefault(e.floor_plan, {}).setdefault(s, Counter())[e.slot(s)] += 1
-    return {plan: {s: dict(c) for s, c in slots.items()} for plan, slots in out.items()}

@@ -14,7 +14,9 @@ from pathlib import Path
 from nl2hltl2plan.language.grounding import scene_types
 from nl2hltl2plan.language.learned.data import SLOTS, Example, faithful, load_examples
 from nl2hltl2plan.language.learned.faithful import FaithfulExample, faithful_examples, training_example
-from nl2hltl2plan.language.learned.model import SlotModel, SlotPrediction, scene_prior
+from nl2hltl2plan.language.learned.inference import parse_instruction
+from nl2hltl2plan.language.learned.model import SlotModel, SlotPrediction
+from nl2hltl2plan.language.learned.ranker import RankCase, TypeRanker
 
 
 def text_faithful_train() -> list[Example]:
@@ -33,8 +35,22 @@ def train(seed: int = 0, labels: str = "text") -> SlotModel:
         model = SlotModel.fit(text_faithful_train(), seed=seed)
     else:
         model = SlotModel.fit([e for e in load_examples()["train"] if faithful(e)], seed=seed)
-    model.prior = scene_prior(load_examples()["train"])  # which types the scene's train trials use
+    model.ranker = TypeRanker.fit(ranking_cases(model, load_examples()["train"]), seed=seed)
     return model
+
+
+def ranking_cases(model: SlotModel, examples: list[Example]) -> list[RankCase]:
+    """Each annotation's words that the parse leaves with several scene types ("the table") and whose
+    ALFRED type is one of them, with the slot model's probabilities (`model` without a ranker)."""
+    cases = []
+    for e in examples:
+        r = parse_instruction(e.text, scene_types(e.floor_plan), e.floor_plan, strict=False, model=model)
+        for a in r.ambiguities:
+            task = next(t for t in r.tasks if t.id == a.task)
+            label = e.slot(a.role)
+            if len(getattr(task, a.role) or []) > 1 and label in a.candidates:
+                cases.append(RankCase(task.text, tuple(zip(a.candidates, a.confidence, strict=True)), label))
+    return cases
 
 
 def _slot_ok(e: Example, p: SlotPrediction) -> dict[str, bool]:
