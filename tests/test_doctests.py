@@ -13,6 +13,7 @@ MODULES = [
     "nl2hltl2plan.logic.trace",
     "nl2hltl2plan.worlds.starts",
     "nl2hltl2plan.language.learned.ranker",
+    "nl2hltl2plan.worlds.tasks",
 ]
 
 

@@ -186,7 +186,7 @@ def _ask_on_terminal(ambiguities: list[Any]) -> dict[str, str]:
 
 def _print_human(outcome: Any) -> None:
     from nl2hltl2plan.language.render import htt_lines
-    from nl2hltl2plan.language.translate import ROLES
+    from nl2hltl2plan.worlds.tasks import SLOTS
 
     lang, r = outcome.language, outcome.result
     print(f"backend: {lang.backend}   world: {outcome.world.name}   team: {outcome.team}")
@@ -204,7 +204,7 @@ def _print_human(outcome: Any) -> None:
         print(f"not understood: {w}", file=sys.stderr)
     for w in lang.issues + lang.warnings + lang.ltl_checks:
         print(f"warning: {w}", file=sys.stderr)
-    kept = {(t.id, role): getattr(t, role) or [] for t in lang.tasks for role in ROLES}
+    kept = {(t.id, role): getattr(t, role) or [] for t in lang.tasks for role in SLOTS}
     for a in lang.ambiguities:
         chosen = kept.get((a.task, a.role), [])
         what = f"using {chosen[0]}" if len(chosen) == 1 else "any of them is accepted (--ask to choose)"

@@ -34,6 +34,7 @@ from nl2hltl2plan.language.tasks import BaseTaskSpec, task_letter, transitive_re
 from nl2hltl2plan.logic.hierarchical import LeafOrFormula
 from nl2hltl2plan.logic.relations import compile_relations
 from nl2hltl2plan.worlds.model import World
+from nl2hltl2plan.worlds.tasks import SLOTS
 
 LtlSource = Literal["compiler", "llm", "learned"]
 ActionSource = Literal["auto", "recipe", "llm", "none"]
@@ -214,9 +215,6 @@ def _parse(
     )
 
 
-ROLES = ("object", "container", "receptacle", "light")
-
-
 class _Choosable(Protocol):
     tasks: list[BaseTaskSpec]
     ambiguities: list[Ambiguity]
@@ -228,7 +226,7 @@ def apply_choices(res: _Choosable, choices: dict[str, str]) -> None:
     for key, chosen in choices.items():
         task_id, _, role = key.partition(".")
         task = by_id.get(task_id)
-        if task is None or role not in ROLES:
+        if task is None or role not in SLOTS:
             raise HTTError(f"cannot apply the choice {key}={chosen}: no task {task_id!r} with a {role!r}")
         setattr(task, role, [chosen])
     picked = {key.partition(".")[0] + "." + key.partition(".")[2] for key in choices}

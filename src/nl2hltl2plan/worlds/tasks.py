@@ -54,10 +54,24 @@ Kind = Literal[
     "cool_place",
 ]
 KINDS: tuple[str, ...] = Kind.__args__  # type: ignore[attr-defined]
+SLOTS = ("object", "container", "receptacle", "light")  # a base task's typed slots
 APPLIANCE = {"clean_place": "SinkBasin", "heat_place": "Microwave", "cool_place": "Fridge"}
 TREATMENT = {"clean_place": "cleanable", "heat_place": "heatable", "cool_place": "coolable"}
 MAX_COUNT = 50  # no AI2-THOR scene has more instances of one type
 KNIFE_DROP_PREFERENCE = ("CounterTop", "DiningTable", "SideTable", "Desk", "CoffeeTable", "Shelf", "Dresser")
+
+
+def slots_of(kind: str) -> tuple[str, ...]:
+    """The typed slots a task of this kind uses.
+
+    >>> slots_of("place_in_container")
+    ('object', 'container', 'receptacle')
+    """
+    if kind == "place_in_container":
+        return ("object", "container", "receptacle")
+    if kind == "examine_in_light":
+        return ("object", "light")
+    return ("object", "receptacle")
 
 
 @dataclass(frozen=True)

@@ -27,7 +27,6 @@ KIND_OF_TASK_TYPE = {
     "pick_heat_then_place_in_recep": "heat_place",
     "pick_cool_then_place_in_recep": "cool_place",
 }
-SLOTS = ("object", "container", "receptacle", "light")
 SPLITS = ("train", "valid_seen", "valid_unseen")
 
 

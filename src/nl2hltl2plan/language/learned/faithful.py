@@ -26,8 +26,9 @@ import re
 from dataclasses import dataclass, replace
 
 from nl2hltl2plan.language.grounding import Grounder, find_mentions
-from nl2hltl2plan.language.learned.data import SLOTS, Composition, Example, states_kind
+from nl2hltl2plan.language.learned.data import Composition, Example, states_kind
 from nl2hltl2plan.language.tasks import BaseTaskSpec, task_letter
+from nl2hltl2plan.worlds.tasks import SLOTS, slots_of
 
 _SLICE = re.compile(
     r"\bslice|\bsliced\b|\bpiece|\btoast|\bwedge|\bchunk|\bsection|\bhal(f|ves)\b|\bquarter", re.I
@@ -49,14 +50,6 @@ class FaithfulExample:
         return self.example.text
 
 
-def _roles(kind: str) -> tuple[str, ...]:
-    if kind == "place_in_container":
-        return ("object", "container", "receptacle")
-    if kind == "examine_in_light":
-        return ("object", "light")
-    return ("object", "receptacle")
-
-
 def text_task(e: Example, types: set[str]) -> BaseTaskSpec | None:
     """The base task the guide would write for the annotation's text alone (None: unclear, left out)."""
     if not states_kind(e):
@@ -68,7 +61,7 @@ def text_task(e: Example, types: set[str]) -> BaseTaskSpec | None:
     used: set[int] = set()
     lists: dict[str, list[str]] = {}
     unsaid: list[str] = []
-    for role in _roles(e.kind):
+    for role in slots_of(e.kind):
         label = e.slot(role)
         if label not in types:
             return None

@@ -26,11 +26,7 @@ from nl2hltl2plan.language.offline import OfflineParse
 from nl2hltl2plan.language.offline import parse_instruction as grammar_parse
 from nl2hltl2plan.language.result import Ambiguity
 from nl2hltl2plan.language.tasks import BaseTaskSpec, task_letter
-
-ROLE_OF_KIND = {
-    "place_in_container": ("object", "container", "receptacle"),
-    "examine_in_light": ("object", "light"),
-}
+from nl2hltl2plan.worlds.tasks import slots_of
 
 
 @dataclass(frozen=True)
@@ -70,10 +66,6 @@ class LearnedParse(OfflineParse):
 @lru_cache(maxsize=2)
 def load_model(path: Path | None = None) -> SlotModel:
     return SlotModel.load(path)
-
-
-def _roles(kind: str) -> tuple[str, ...]:
-    return ROLE_OF_KIND.get(kind, ("object", "receptacle"))
 
 
 def _choose(
@@ -179,7 +171,7 @@ def combine(
         "receptacle": None,
         "light": None,
     }
-    for role in _roles(kind):
+    for role in slots_of(kind):
         ranked = pred.slots.get(role, [])
         order = _order(task, role, ranked, types, ranker)
         values[role] = _choose(getattr(task, role), ranked, types, policy, order)
@@ -272,7 +264,7 @@ def _rescued(
 def _names_its_types(task: BaseTaskSpec) -> bool:
     """Whether the text names (a lexicon phrase for) the type chosen for every slot of the task."""
     named = {t for m in find_mentions(task.text) for t in m.entry.types}
-    return all(set(getattr(task, r) or []) & named for r in _roles(task.kind))
+    return all(set(getattr(task, r) or []) & named for r in slots_of(task.kind))
 
 
 def _missing(tasks: list[BaseTaskSpec], types: set[str] | None, scene: str) -> list[str]:
@@ -280,7 +272,7 @@ def _missing(tasks: list[BaseTaskSpec], types: set[str] | None, scene: str) -> l
         return []
     out = []
     for t in tasks:
-        for role in _roles(t.kind):
+        for role in slots_of(t.kind):
             vals = getattr(t, role) or []
             if not vals:
                 out.append(f"task {t.id} ({t.text!r}): no {role} found in {scene}")

@@ -24,8 +24,9 @@ from typing import Any
 import numpy as np
 
 from nl2hltl2plan.errors import DataError
-from nl2hltl2plan.language.learned.data import SLOTS, Example, states_kind
+from nl2hltl2plan.language.learned.data import Example, states_kind
 from nl2hltl2plan.language.learned.ranker import TypeRanker
+from nl2hltl2plan.worlds.tasks import SLOTS
 
 ARTIFACT = "slot_model.npz"
 FORMAT = 3
