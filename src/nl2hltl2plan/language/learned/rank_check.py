@@ -15,6 +15,7 @@ from __future__ import annotations
 import argparse
 import sys
 
+from nl2hltl2plan.errors import DataError, Nl2Hltl2PlanError
 from nl2hltl2plan.language.learned.data import Example, load_examples
 from nl2hltl2plan.language.learned.inference import load_model
 from nl2hltl2plan.language.learned.model import SlotModel
@@ -41,7 +42,10 @@ def top_share(cases: list[RankCase], ranker: TypeRanker | None) -> int:
 
 def cross_validation(folds: int = 5, seed: int = 0) -> tuple[int, int, int]:
     """(cases, right by the slot model alone, right by a ranker fitted on the other folds' families)."""
-    from sklearn.model_selection import GroupKFold
+    try:
+        from sklearn.model_selection import GroupKFold
+    except ImportError as exc:
+        raise DataError("the ranking check needs scikit-learn: pip install scikit-learn") from exc
 
     plain = without_ranker(load_model())
     cases: list[RankCase] = []
@@ -67,7 +71,11 @@ def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(prog="python -m nl2hltl2plan.language.learned.rank_check")
     ap.add_argument("--folds", type=int, default=5)
     args = ap.parse_args(argv)
-    n, alone, ranked = cross_validation(args.folds)
+    try:
+        n, alone, ranked = cross_validation(args.folds)
+    except Nl2Hltl2PlanError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
     print(
         f"train, group {args.folds}-fold by family: {n} words; top = label: slot model {alone} "
         f"({100 * alone / n:.1f}%), + ranker {ranked} ({100 * ranked / n:.1f}%)"
