@@ -11,7 +11,7 @@ from nl2hltl2plan.language.learned import parse_instruction
 from nl2hltl2plan.language.learned.data import excluded_trials, load_examples
 from nl2hltl2plan.language.learned.inference import load_model
 from nl2hltl2plan.language.learned.model import SlotModel
-from nl2hltl2plan.language.learned.rank_check import top_share, without_ranker
+from nl2hltl2plan.language.learned.rank_check import top_share
 from nl2hltl2plan.language.learned.ranker import RankCase, TypeRanker
 
 KITCHEN = {
@@ -86,7 +86,7 @@ def test_the_type_ranker_orders_a_words_scene_types(tmp_path: Path) -> None:
     types = KITCHEN | {"ButterKnife"}
     r = parse_instruction("Put the knife on the table.", types, "test", strict=False)
     plain = parse_instruction(
-        "Put the knife on the table.", types, "test", strict=False, model=without_ranker(model)
+        "Put the knife on the table.", types, "test", strict=False, model=model.without_ranker()
     )
     assert [a.role for a in r.ambiguities] == ["object", "receptacle"]
     for a, b in zip(r.ambiguities, plain.ambiguities, strict=True):

@@ -68,6 +68,11 @@ def load_model(path: Path | None = None) -> SlotModel:
     return SlotModel.load(path)
 
 
+def _in_scene(grammar: list[str] | None, types: set[str] | None) -> list[str]:
+    """The grammar's types for a slot that the scene has (all of them when the scene is unknown)."""
+    return [t for t in grammar or [] if types is None or t in types]
+
+
 def _choose(
     grammar: list[str] | None,
     ranked: list[tuple[str, float]],
@@ -77,7 +82,7 @@ def _choose(
 ) -> list[str] | None:
     """The slot's types: the grammar's (several ordered by `order`: the type ranker's), or
     the model's best when the grammar found none in the scene."""
-    in_scene = [t for t in grammar or [] if types is None or t in types]
+    in_scene = _in_scene(grammar, types)
     if ranked and (not in_scene or (ranked[0][1] >= policy.override and ranked[0][0] not in in_scene)):
         if grammar and not in_scene and types is not None:
             return grammar  # the grammar named a type the scene lacks: keep it, it is reported as missing
@@ -97,7 +102,7 @@ def _order(
 ) -> list[tuple[str, float]]:
     """The grammar's several scene types for the slot ("the table"), ordered by the type ranker; else the
     slot model's ranking."""
-    in_scene = [t for t in getattr(task, role) or [] if types is None or t in types]
+    in_scene = _in_scene(getattr(task, role), types)
     if ranker is None or len(in_scene) < 2:
         return ranked
     prob = dict(ranked)

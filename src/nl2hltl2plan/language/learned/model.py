@@ -130,6 +130,10 @@ class SlotModel:
         self.meta = meta
         self.ranker = ranker  # orders the several scene types a word fits (`ranker.py`)
 
+    def without_ranker(self) -> SlotModel:
+        """The same slot model with no type ranker (its candidates keep the slot model's order)."""
+        return SlotModel(self.vectorizers, self.heads, self.meta)
+
     @classmethod
     def fit(cls, examples: list[Example], seed: int = 0, c: float = 8.0) -> SlotModel:
         try:

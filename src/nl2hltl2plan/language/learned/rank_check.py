@@ -18,7 +18,6 @@ import sys
 from nl2hltl2plan.errors import DataError, Nl2Hltl2PlanError
 from nl2hltl2plan.language.learned.data import Example, load_examples
 from nl2hltl2plan.language.learned.inference import load_model
-from nl2hltl2plan.language.learned.model import SlotModel
 from nl2hltl2plan.language.learned.ranker import RankCase, TypeRanker
 from nl2hltl2plan.language.learned.train import ranking_cases
 
@@ -47,7 +46,7 @@ def cross_validation(folds: int = 5, seed: int = 0) -> tuple[int, int, int]:
     except ImportError as exc:
         raise DataError("the ranking check needs scikit-learn: pip install scikit-learn") from exc
 
-    plain = without_ranker(load_model())
+    plain = load_model().without_ranker()
     cases: list[RankCase] = []
     groups: list[str] = []
     for e in load_examples()["train"]:
@@ -61,10 +60,6 @@ def cross_validation(folds: int = 5, seed: int = 0) -> tuple[int, int, int]:
         alone += top_share(held, None)
         ranked += top_share(held, ranker)
     return len(cases), alone, ranked
-
-
-def without_ranker(model: SlotModel) -> SlotModel:
-    return SlotModel(model.vectorizers, model.heads, model.meta)
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -82,7 +77,7 @@ def main(argv: list[str] | None = None) -> int:
     )
     model = load_model()
     for split in ("valid_seen", "valid_unseen"):
-        cases = ranking_cases(without_ranker(model), load_examples()[split])
+        cases = ranking_cases(model.without_ranker(), load_examples()[split])
         a, r = top_share(cases, None), top_share(cases, model.ranker)
         print(f"{split}: {len(cases)} words; top = label: slot model {a}, + ranker {r}")
     return 0

@@ -45,10 +45,11 @@ def _words(clause: str) -> set[str]:
     return set(re.findall(r"[a-z]+", clause.lower()))
 
 
-def features(clause: str, candidate: str, prob: float) -> dict[str, float]:
-    """A candidate's features: its type, its type with each word of the clause, the model's log-prob."""
+def features(words: set[str], candidate: str, prob: float) -> dict[str, float]:
+    """A candidate's features: its type, its type with each word of the clause (`_words`), the model's
+    log-prob."""
     out = {f"{candidate}|": 1.0, "logq": math.log(max(prob, _FLOOR))}
-    out.update({f"{candidate}|{w}": 1.0 for w in _words(clause)})
+    out.update({f"{candidate}|{w}": 1.0 for w in words})
     return out
 
 
@@ -63,8 +64,9 @@ class TypeRanker:
         if len(candidates) < 2:
             return candidates
         total = sum(q for _, q in candidates) or 1.0
+        words = _words(clause)
         scores = [
-            sum(self.weights.get(f, 0.0) * v for f, v in features(clause, t, q / total).items())
+            sum(self.weights.get(f, 0.0) * v for f, v in features(words, t, q / total).items())
             for t, q in candidates
         ]
         top = max(scores)
@@ -83,8 +85,9 @@ class TypeRanker:
             raise DataError("training the type ranker needs scikit-learn: pip install scikit-learn") from exc
         rows, labels = [], []
         for case in cases:
+            words = _words(case.clause)
             for t, q in case.candidates:
-                rows.append(features(case.clause, t, q))
+                rows.append(features(words, t, q))
                 labels.append(int(t == case.label))
         if len(set(labels)) < 2:
             raise DataError("no ambiguous words with a known type to train the type ranker on")
