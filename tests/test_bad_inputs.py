@@ -200,8 +200,8 @@ def test_a_bug_is_one_line_with_its_own_status(monkeypatch: pytest.MonkeyPatch, 
 
     real = cli_main.build_parser
 
-    def build():  # type: ignore[no-untyped-def]
-        parser = real()  # the `check` command, its handler replaced by one with a bug
+    def build(command: str | None = "*"):  # type: ignore[no-untyped-def]
+        parser = real(command)  # the `check` command, its handler replaced by one with a bug
         sub = next(a for a in parser._actions if a.dest == "command")
         sub.choices["check"].set_defaults(func=broken)
         return parser

@@ -13,6 +13,11 @@ from pathlib import Path
 from nl2hltl2plan.errors import DataError
 
 DATA_ENV = "NL2HLTL2PLAN_DATA"
+# what the data folder must hold, named in every message about a missing folder or file
+DATA_CONTENTS = (
+    "alfred/ (layouts/, trials.jsonl.gz, affordances), alfred_multiagent/, benchmark/ (ground truth), "
+    "smartllm/ and nl2ltl/ — see the data README"
+)
 _REPO_ROOT = Path(__file__).resolve().parents[2]
 
 
@@ -26,10 +31,10 @@ def data_dir(required: bool = True) -> Path | None:
         if path.is_dir():
             return path
     if required:
-        where = env if env else " or ".join(str(c) for c in candidates)
+        where = f"{DATA_ENV}={env}" if env else f"{DATA_ENV} is unset and " + " or ".join(
+            str(c) for c in candidates) + " does not exist"
         raise DataError(
-            f"shared data folder not found at {where}; "
-            f"set {DATA_ENV} to the folder that holds alfred/, benchmark/ ..."
+            f"shared data folder not found ({where}); set {DATA_ENV} to the folder that holds {DATA_CONTENTS}"
         )
     return None
 
@@ -40,5 +45,8 @@ def data_path(*parts: str) -> Path:
     assert base is not None
     path = base.joinpath(*parts)
     if not path.exists():
-        raise DataError(f"missing data file {path} (from {DATA_ENV} / ../shared/data)")
+        raise DataError(
+            f"missing data file {path} in the data folder {base} ({DATA_ENV}); "
+            f"the folder must hold {DATA_CONTENTS}"
+        )
     return path

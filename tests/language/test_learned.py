@@ -102,6 +102,7 @@ def test_the_type_ranker_orders_a_words_scene_types(tmp_path: Path) -> None:
 def test_the_type_ranker_learns_a_cue_from_the_rest_of_the_clause() -> None:
     # annotators meant a Knife when a cup is in the clause, else a ButterKnife; the slot model prefers
     # ButterKnife either way: the fitted ranker follows the cue on clauses it never saw
+    pytest.importorskip("sklearn", reason="fitting needs scikit-learn: pip install -e '.[train]'")
     cases = []
     for i, thing in enumerate(["apple", "bread", "potato", "tomato", "lettuce"] * 4):
         with_cup = i % 2 == 0

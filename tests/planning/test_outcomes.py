@@ -91,9 +91,10 @@ def test_timeout_returns_quickly_without_a_plan():
     r = plan(world, spec, [(0, 0), (9, 13), (0, 13)], mode="exact", timeout_s=0.001)
     assert time.perf_counter() - t0 < 2.0
     assert r.status == "timeout" and r.plan is None and "within 0.001 s" in r.reason
-    # with a little more time the exact search returns its best plan so far, verified, and says so
-    r = plan(world, spec, [(0, 0), (9, 13), (0, 13)], mode="exact", timeout_s=3.0)
-    assert r.status == "solved" and r.stopped == "timeout" and not r.proven_optimal
+    # stopped by its deterministic node budget (not the wall clock, which a loaded machine makes
+    # unpredictable), the exact search returns its best plan so far, verified, and says so
+    r = plan(world, spec, [(0, 0), (9, 13), (0, 13)], mode="exact", max_nodes=400)
+    assert r.status == "solved" and r.stopped == "memory" and not r.proven_optimal
     assert r.execution is not None and r.execution.ok
 
 

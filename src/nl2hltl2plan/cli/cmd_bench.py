@@ -19,6 +19,7 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
+from nl2hltl2plan.cli.commands import COMMANDS
 from nl2hltl2plan.cli.options import (
     add_backend_argument,
     add_llm_arguments,
@@ -44,7 +45,7 @@ SUITE_MODULES = ["nl2hltl2plan.cli.bench_experiments", "nl2hltl2plan.cli.bench_s
 def register(sub: Any) -> None:
     bench = sub.add_parser(
         "bench",
-        help="benchmarks: alfred (Table I) and the other suites",
+        help=COMMANDS["bench"],
         description="Benchmarks; `nl2hltl2plan bench SUITE --help` for each suite.",
     )
     suites = bench.add_subparsers(dest="suite", metavar="SUITE", required=True)

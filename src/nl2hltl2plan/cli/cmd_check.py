@@ -6,6 +6,7 @@ import argparse
 import json
 import sys
 
+from nl2hltl2plan.cli.commands import COMMANDS
 from nl2hltl2plan.errors import DataError, SpecError
 from nl2hltl2plan.io import read_json
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
@@ -14,7 +15,7 @@ from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 def register(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser(
         "check",
-        help="validate a hierarchical sc-LTL spec file (Definition 2.1)",
+        help=COMMANDS["check"],
         description="Validate a hierarchical sc-LTL specification in the paper's JSON form "
         '(a list of levels, each {"name": "formula" or [actions]}). Exit 0 when valid, '
         "1 with the reasons when not, 2 when the file cannot be read as JSON.",

@@ -19,6 +19,7 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
+from nl2hltl2plan.cli.commands import COMMANDS
 from nl2hltl2plan.cli.options import (
     add_backend_argument,
     add_llm_arguments,
@@ -33,7 +34,7 @@ EXIT_OK, EXIT_NO_PLAN, EXIT_PENDING = 0, 1, 3
 def register(sub: Any) -> None:
     p = sub.add_parser(
         "plan",
-        help="instruction -> HTT -> hierarchical LTL -> checked multi-robot plan",
+        help=COMMANDS["plan"],
         description=__doc__.split("\n\n")[1],
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
@@ -226,6 +227,13 @@ def _print_human(outcome: Any) -> None:
         print(f"  robot {rp.robot} from {tuple(rp.start)}: {moves} moves; " + ("; ".join(acts) or "idle"))
     print(f"  travel cost: {r.travel_m:.2f} m   completion time: {r.steps} steps")
     print(f"  {r.optimality} ({r.model})")
+    idle = [rp.robot for rp in r.plan.robots if all(st.verb in ("move", "wait") for st in rp.steps)]
+    if idle and r.objective == "min":
+        print(
+            f"  robot {', '.join(map(str, idle))} stays idle: under the objective 'min' (the paper's summed "
+            "travel) giving it work would not lower the team's travel; --objective minmax minimises the "
+            "completion time instead"
+        )
 
 
 def _write_outputs(folder: Path, outcome: Any, payload: dict[str, Any]) -> None:

@@ -5,6 +5,7 @@ from __future__ import annotations
 import argparse
 import importlib.util
 
+from nl2hltl2plan.cli.commands import COMMANDS
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 
 
@@ -15,7 +16,7 @@ class MissingExtraError(Nl2Hltl2PlanError):
 def register(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser(
         "serve",
-        help="the local web app: instruction -> HTT, spec, animated plan and Gantt chart",
+        help=COMMANDS["serve"],
         description="Serve a page where one types an instruction, picks a world and a team, and sees the "
         "HTT, the hierarchical spec, the plan on the map (animated) and its Gantt chart; POST /api/plan "
         'with {"instruction", "world", "robots"} returns the JSON of `plan --json`.',

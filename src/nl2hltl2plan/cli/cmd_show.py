@@ -8,6 +8,7 @@ import textwrap
 
 import networkx as nx
 
+from nl2hltl2plan.cli.commands import COMMANDS
 from nl2hltl2plan.io import PICTURE_FORMATS, check_output_file, read_json
 from nl2hltl2plan.language.htt import HTT
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
@@ -16,7 +17,7 @@ from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 def register(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser(
         "show",
-        help="draw an HTT or a hierarchical spec as a tree picture",
+        help=COMMANDS["show"],
         description="Draw a Hierarchical Task Tree (decomposition edges black, temporal "
         "relations red) or a specification hierarchy graph (one node per flat formula).",
     )

@@ -6,6 +6,7 @@ import argparse
 import json
 from pathlib import Path
 
+from nl2hltl2plan.cli.commands import COMMANDS
 from nl2hltl2plan.io import ensure_writable_dir, write_text
 from nl2hltl2plan.language.htt import HTT
 from nl2hltl2plan.language.spec_builder import build_spec
@@ -17,7 +18,7 @@ from nl2hltl2plan.logic.hierarchical import HierarchicalSpec, format_spec
 def register(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser(
         "spec",
-        help="build the hierarchical sc-LTL spec of an HTT (Algorithm 1)",
+        help=COMMANDS["spec"],
         description="Build the hierarchical sc-LTL specification of a Hierarchical Task Tree "
         "(JSON file) with the exact relation compiler and the leaves' action lists.",
     )

@@ -12,10 +12,12 @@ import argparse
 from pathlib import Path
 from typing import Any
 
+from nl2hltl2plan.cli.commands import COMMANDS
+
 
 def register(sub: Any) -> None:
     p = sub.add_parser(
-        "train", help="train learned components (language)", description=__doc__.split("\n\n")[1]
+        "train", help=COMMANDS["train"], description=__doc__.split("\n\n")[1]
     )
     what = p.add_subparsers(dest="what", metavar="WHAT", required=True)
     lang = what.add_parser("language", help="the learned language model (slot model)")

@@ -5,6 +5,7 @@ from __future__ import annotations
 import argparse
 import json
 
+from nl2hltl2plan.cli.commands import COMMANDS
 from nl2hltl2plan.errors import WorldError
 from nl2hltl2plan.io import PICTURE_FORMATS, check_output_file
 
@@ -21,7 +22,7 @@ DEMO_BEFORE = [["A", "D"], ["B", "D"], ["C", "D"], ["D", "E"]]
 def register(subparsers) -> None:
     p = subparsers.add_parser(
         "world",
-        help="summarise and draw a world: demo, FloorPlanN, or a benchmark instance id",
+        help=COMMANDS["world"],
         description=(
             "Print a world's summary (grid size, free cells, objects by type, what could not be placed) "
             "and optionally draw it. NAME is 'demo' (built in, no data), an ALFRED floor plan such as "

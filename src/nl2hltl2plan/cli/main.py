@@ -12,15 +12,12 @@ import argparse
 import importlib
 import os
 import sys
+from collections.abc import Sequence
 from typing import NoReturn
 
-from pydantic import ValidationError
-
 from nl2hltl2plan import __version__
+from nl2hltl2plan.cli.commands import COMMANDS
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
-
-# Order here is the order in `--help`; a module missing from the tree is simply not offered.
-COMMAND_MODULES = ["spec", "check", "show", "world", "plan", "bench", "serve", "train"]
 
 
 class _Parser(argparse.ArgumentParser):
@@ -30,25 +27,38 @@ class _Parser(argparse.ArgumentParser):
         self.exit(2, f"error: {self.prog}: {message} (see {self.prog} --help)\n")
 
 
-def build_parser() -> argparse.ArgumentParser:
+def _command_in(argv: Sequence[str]) -> str | None:
+    """The sub-command named on the command line: the first word that is not an option (the top-level
+    options, -h and --version, take no value)."""
+    return next((a for a in argv if not a.startswith("-")), None)
+
+
+def build_parser(command: str | None = "*") -> argparse.ArgumentParser:
+    """The CLI's parser. Only `command`'s module is imported and registered in full (every one for "*");
+    each other command is a stub carrying its help line, so `--help` and each command start without
+    importing the rest of the package (the pipeline pulls in scipy, networkx, Spot)."""
     parser = _Parser(
         prog="nl2hltl2plan",
         description="Natural language -> Hierarchical Task Tree -> hierarchical sc-LTL -> multi-robot plans.",
     )
     parser.add_argument("--version", action="version", version=f"%(prog)s {__version__}")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")
-    for name in COMMAND_MODULES:
-        try:
-            module = importlib.import_module(f"nl2hltl2plan.cli.cmd_{name}")
-        except ModuleNotFoundError as exc:
-            if exc.name == f"nl2hltl2plan.cli.cmd_{name}":
-                continue
-            raise
-        module.register(sub)
+    for name, help_line in COMMANDS.items():
+        if command in (name, "*"):
+            importlib.import_module(f"nl2hltl2plan.cli.cmd_{name}").register(sub)
+        else:
+            sub.add_parser(name, help=help_line, add_help=False)
     return parser
 
 
 INTERNAL_ERROR = 4  # an unexpected exception: a bug of ours, not the user's input
+
+
+def _is_validation_error(exc: Exception) -> bool:
+    """A pydantic ValidationError, told without importing pydantic (30 ms of every start-up): one can
+    only have been raised if pydantic was imported."""
+    pydantic = sys.modules.get("pydantic")
+    return pydantic is not None and isinstance(exc, pydantic.ValidationError)
 
 
 def _one_line(text: str) -> str:
@@ -57,7 +67,9 @@ def _one_line(text: str) -> str:
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = build_parser()
+    if argv is None:
+        argv = sys.argv[1:]
+    parser = build_parser(_command_in(argv))
     try:
         args = parser.parse_args(argv)
     except SystemExit as exc:  # usage errors (exit 2) and --help (exit 0), already printed
@@ -70,11 +82,6 @@ def main(argv: list[str] | None = None) -> int:
     except Nl2Hltl2PlanError as exc:
         print(f"error: {_one_line(str(exc))}", file=sys.stderr)
         return 2
-    except ValidationError as exc:  # options validated by a pydantic model
-        err = exc.errors()[0]
-        where = ".".join(str(x) for x in err["loc"])
-        print(f"error: invalid {where}: {err['msg']}", file=sys.stderr)
-        return 2
     except OSError as exc:  # a path the user gave that cannot be read or written
         where = f" {exc.filename}" if exc.filename else ""
         print(f"error: cannot use{where}: {exc.strerror or exc}", file=sys.stderr)
@@ -86,6 +93,11 @@ def main(argv: list[str] | None = None) -> int:
         print("interrupted", file=sys.stderr)
         return 130
     except Exception as exc:  # a bug: one line and its own status; NL2HLTL2PLAN_DEBUG=1 shows the traceback
+        if _is_validation_error(exc):  # options validated by a pydantic model: the user's input
+            err = exc.errors()[0]  # type: ignore[attr-defined]
+            where = ".".join(str(x) for x in err["loc"])
+            print(f"error: invalid {where}: {err['msg']}", file=sys.stderr)
+            return 2
         if os.environ.get("NL2HLTL2PLAN_DEBUG"):
             raise
         print(

@@ -133,10 +133,14 @@ def _type_of_name(name: str) -> str:
 def _layout_file(fp: str, suffix: str) -> Path:
     if not _FLOOR_PLAN.match(fp):
         raise WorldError(f"unknown world {fp!r}: expected 'demo' or an ALFRED floor plan such as FloorPlan17")
-    try:
-        return data_path("alfred", "layouts", f"{fp}-{suffix}")
-    except DataError:
-        raise WorldError(f"no ALFRED layout for {fp} (floor plans 1-30, 201-230, 301-330, 401-430)") from None
+    folder = data_path("alfred", "layouts")  # a missing data folder is a DataError naming the setting
+    path = folder / f"{fp}-{suffix}"
+    if not path.exists():
+        raise WorldError(
+            f"no ALFRED layout for {fp}: {path} does not exist (the layouts in {folder} cover floor plans "
+            "1-30, 201-230, 301-330, 401-430)"
+        )
+    return path
 
 
 @cache
