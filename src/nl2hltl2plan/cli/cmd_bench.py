@@ -17,7 +17,7 @@ import os
 import sys
 from collections.abc import Callable
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from nl2hltl2plan.cli.commands import COMMANDS
 from nl2hltl2plan.cli.options import (
@@ -34,9 +34,10 @@ from nl2hltl2plan.errors import PlanningError
 from nl2hltl2plan.evaluation.ray_engine import ENGINES, run_with_engine
 from nl2hltl2plan.evaluation.runner import Row, Scenario, is_errored
 from nl2hltl2plan.io import ensure_writable_dir, write_json
-from nl2hltl2plan.pipeline import PipelineOptions
-from nl2hltl2plan.worlds.benchmark import load_gt
-from nl2hltl2plan.worlds.tasks import GTInstance
+
+if TYPE_CHECKING:  # the pipeline (scipy, Spot) loads only when a benchmark runs, not for --help
+    from nl2hltl2plan.pipeline import PipelineOptions
+    from nl2hltl2plan.worlds.tasks import GTInstance
 
 # Each suite module exposes `register(bench_subparsers)`; a module missing from the tree is not offered.
 SUITE_MODULES = ["nl2hltl2plan.cli.bench_experiments", "nl2hltl2plan.cli.bench_smartllm"]
@@ -117,6 +118,8 @@ def run(args: argparse.Namespace) -> int:
         write_report,
     )
     from nl2hltl2plan.evaluation.rows import rows_of
+    from nl2hltl2plan.pipeline import PipelineOptions
+    from nl2hltl2plan.worlds.benchmark import load_gt
 
     out: Path = ensure_writable_dir(args.out)
     preload()
