@@ -28,7 +28,6 @@ every L1 formula is satisfied.
 from __future__ import annotations
 
 import json
-import re
 from collections.abc import Sequence
 from functools import cached_property
 from pathlib import Path
@@ -39,9 +38,9 @@ import networkx as nx
 from nl2hltl2plan.errors import DataError, FormulaError, SpecError
 from nl2hltl2plan.io import loads, read_text
 from nl2hltl2plan.logic import spot_backend as sb
+from nl2hltl2plan.logic.atom import Atom
 from nl2hltl2plan.logic.automaton import Dfa
 
-ACTION_RE = re.compile(r"^[a-z_][a-z0-9_]*\([A-Za-z0-9_.]+(,[A-Za-z0-9_.]+)*\)$")
 LeafOrFormula = str | list[str]
 
 
@@ -50,7 +49,7 @@ def sequence_formula(actions: Sequence[str], check: bool = True) -> str:
     if not actions:
         raise SpecError("an action list must not be empty")
     for a in actions:
-        if check and not ACTION_RE.match(a):
+        if check and str(Atom.read(a)) != a:  # an atom, written as the printer writes it
             raise SpecError(f"{a!r} is not an action like verb(Type) or verb(Type,Type)")
     text = f'"{actions[-1]}"'
     for a in reversed(actions[:-1]):

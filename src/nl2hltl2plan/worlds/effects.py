@@ -17,7 +17,7 @@ object-type facts are AI2-THOR's (https://ai2thor.allenai.org/ithor/documentatio
 - books, laptops and blinds open and close (`open` / `close`).
 - throwing into a garbage can is `put(X,GarbageCan)`; in SMART-LLM's worlds the can takes any
   pickupable object (AI2-THOR's ThrowObject can land anything in it).
-The flags extend the simulator's bit set (`BROKEN`, `COOKED`, `FILLED`); `condition_holds` reads a
+The flags `BROKEN`, `COOKED`, `FILLED` of `domain.object_state` are set here; `condition_holds` reads a
 final snapshot for SMART-LLM's ground-truth states (SLICED, ON, OFF, HOT, COOKED, OPENED, CLOSED,
 PICKED, BROKEN, and "contains").
 """
@@ -26,14 +26,12 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
+from nl2hltl2plan.domain.object_state import BROKEN, COOKED, FILLED, HOT, ON, OPEN, PRESENT
 from nl2hltl2plan.worlds.model import World
 
 if TYPE_CHECKING:
     from nl2hltl2plan.worlds.simulator import SimState, Snapshot
 
-# flag bits after the simulator's PRESENT..COLD (1..32)
-BROKEN, COOKED, FILLED = 64, 128, 256
-EXTRA_FLAG_NAMES = {BROKEN: "broken", COOKED: "cooked", FILLED: "filled"}
 EXTRA_ARITY = {"break": 1}
 
 BREAKABLE = frozenset(
@@ -95,8 +93,6 @@ def act(state: SimState, robot: int, verb: str, objs: list[int]) -> str | None:
 
 
 def _heat(state: SimState, source: int) -> None:
-    from nl2hltl2plan.worlds.simulator import HOT
-
     c = state.c
     for i in state.subtree(source)[1:]:
         if c.aff[i].heatable:
@@ -123,8 +119,6 @@ def after_toggle_on(state: SimState, o: int) -> None:
 
 def after_put(state: SimState, o: int, r: int) -> None:
     """Effects of putting object o into r (called after the simulator's own)."""
-    from nl2hltl2plan.worlds.simulator import ON
-
     c = state.c
     x = r
     while x >= 0:  # a running heat source anywhere up the chain (a pan on a lit burner)
@@ -146,8 +140,6 @@ def type_matches(name: str, type_: str) -> bool:
 def condition_holds(world: World, snap: Snapshot, name: str, state: str | None, contains: str | None) -> bool:
     """Does some object named `name` satisfy `state` (SMART-LLM's upper-case state) or hold an
     object named `contains` in the snapshot?"""
-    from nl2hltl2plan.worlds.simulator import HOT, ON, OPEN, PRESENT
-
     ids = world.ids
     objs = [world.objects[i] for i in ids]
     for k, obj in enumerate(objs):

@@ -10,9 +10,8 @@ must wait for it (`until`). Used by tests, the README demo and the CLI; not a pl
 
 from __future__ import annotations
 
-import re
-
 from nl2hltl2plan.errors import WorldError
+from nl2hltl2plan.logic.atom import Atom
 from nl2hltl2plan.worlds.model import Cell, World
 from nl2hltl2plan.worlds.plan import ACTION_ARITY, Plan, RobotPlan, Step
 from nl2hltl2plan.worlds.simulator import OPEN, SimState
@@ -81,15 +80,12 @@ def scripted_plan(world: World, scripts: dict[int, tuple[Cell, list[str]]], chec
 
 
 # ---------------------------------------------------------------- recipes, executed greedily
-_ATOM = re.compile(r"^(\w+)\(([^()]*)\)$")
-
-
 def parse_atom(atom: str) -> tuple[str, list[str]]:
     """`put(Apple,Fridge)` -> ("put", ["Apple", "Fridge"])."""
-    m = _ATOM.match(atom.strip().strip('"'))
-    if not m:
+    parsed = Atom.read(atom)
+    if parsed is None:
         raise WorldError(f"not an action atom: {atom!r}")
-    return m.group(1), [a.strip() for a in m.group(2).split(",") if a.strip()]
+    return parsed.verb, list(parsed.args)
 
 
 class _Greedy:

@@ -21,14 +21,10 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import NamedTuple
 
+from nl2hltl2plan.domain.object_state import CLEAN, COLD, FLAG_NAMES, HOT, ON, OPEN, PRESENT
 from nl2hltl2plan.worlds import effects
 from nl2hltl2plan.worlds.model import CELL_M, KNIFE_TYPES, Cell, World
 from nl2hltl2plan.worlds.plan import Plan
-
-# state flag bits
-PRESENT, OPEN, ON, CLEAN, HOT, COLD = 1, 2, 4, 8, 16, 32
-FLAG_NAMES = {PRESENT: "present", OPEN: "open", ON: "on", CLEAN: "clean", HOT: "hot", COLD: "cold"}
-FLAG_NAMES.update(effects.EXTRA_FLAG_NAMES)  # broken, cooked, filled (SMART-LLM's vocabulary)
 
 COOLING_TYPES = frozenset({"Fridge"})  # put into it -> cold
 HEATING_TYPES = frozenset({"Microwave"})  # toggle on -> contents hot

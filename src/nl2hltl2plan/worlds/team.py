@@ -23,7 +23,6 @@ names ("robot1,robot5"), or a JSON file (a list of profile names and/or {"name",
 from __future__ import annotations
 
 import json
-import re
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from functools import cache
@@ -32,6 +31,7 @@ from pathlib import Path
 from nl2hltl2plan.config import data_path
 from nl2hltl2plan.errors import DataError, PlanningError
 from nl2hltl2plan.io import read_json
+from nl2hltl2plan.logic.atom import Atom
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.worlds.model import KNIFE_TYPES, World
 
@@ -194,12 +194,9 @@ class Team:
         return f"no single robot in the team can do all of {', '.join(needs)} (one robot carries an object)"
 
 
-_QUOTED_ATOM = re.compile(r'"([a-z_]+\([A-Za-z0-9_.,]+\))"')
-
-
 def spec_atoms(spec: HierarchicalSpec) -> list[str]:
     """The action atoms ("put(Apple,Fridge)") of a hierarchical spec's leaves, in order of appearance."""
-    found = (a for leaf in spec.leaves for a in _QUOTED_ATOM.findall(spec.text(leaf)))
+    found = (str(a) for leaf in spec.leaves for a in Atom.find_all(spec.text(leaf)))
     return list(dict.fromkeys(found))
 
 

@@ -1,0 +1,2 @@
+"""The vocabulary every stage shares, below the worlds: the state an object can be in (`object_state`).
+The action atom itself lives in `logic.atom` (a spec's leaves are made of atoms)."""
