@@ -70,6 +70,12 @@ def register(sub: Any) -> None:
         help="keep objects the scene lacks (reported as issues) instead of failing",
     )
     p.add_argument(
+        "--partial",
+        action="store_true",
+        help="plan what was understood when part of the instruction was not (the result says partial; "
+        "default: refuse, exit 2)",
+    )
+    p.add_argument(
         "--ask",
         action="store_true",
         help="ask on the terminal which scene type an ambiguous word means ('the table': dining "
@@ -121,6 +127,7 @@ def run(args: argparse.Namespace) -> int:
         ltl=args.ltl,
         actions=args.actions,
         strict=not args.lenient,
+        partial=args.partial,
         starts=parse_cells(args.starts) if args.starts else None,
         **planner_options(args),
     )
@@ -200,6 +207,8 @@ def _print_human(outcome: Any) -> None:
         print("  before: " + ", ".join(f"{a} < {b}" for a, b in lang.before))
     print("\nHierarchical LTL")
     print("  " + (lang.spec_text or "(not built)").replace("\n", "\n  "))
+    if lang.partial:
+        print("partial: only part of the instruction is planned (--partial)", file=sys.stderr)
     for w in lang.unparsed:
         print(f"not understood: {w}", file=sys.stderr)
     for w in lang.issues + lang.warnings + lang.ltl_checks:

@@ -1,0 +1,400 @@
+"""Word accounting: every content word of an instruction is used by the parse or named as not understood.
+
+`account(instruction, tasks, before, scene)` judges the result of any backend (grammar, learned, LLM)
+from the outside: it reads the instruction's content words (nouns naming objects and places from
+`lexicon.txt`, verbs, counts, negations and order words from `content_words.txt`) and renders the base
+tasks back to the types, kinds, counts and orderings they use. It returns one `Unread` per content word
+the base tasks do not use, and per slot of a base task that no word of the instruction names (an
+invented object or place). Counts the scene cannot satisfy (zero, or more than it holds) and cyclic
+orders are input errors (`HTTError`), whatever the backend made of them.
+
+>>> from nl2hltl2plan.language.tasks import BaseTaskSpec
+>>> cup = BaseTaskSpec(kind="heat_place", object=["Cup"], receptacle=["Microwave"])
+>>> [u.words for u in account("heat a cup of coffee in the microwave", [cup], [])]
+['coffee']
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from functools import lru_cache
+from importlib import resources
+
+import networkx as nx
+
+from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.language.grounding import Mention, camel_words, find_mentions, tokens
+from nl2hltl2plan.language.tasks import BaseTaskSpec
+from nl2hltl2plan.worlds.model import KNIFE_TYPES
+from nl2hltl2plan.worlds.tasks import APPLIANCE, slots_of
+
+# the appliances a kind of task implies, beyond the destination ("heat it on the stove")
+IMPLIED_TYPES = {
+    "clean_place": {APPLIANCE["clean_place"], "Faucet", "BathtubBasin", "Sink"},
+    "heat_place": {APPLIANCE["heat_place"], "StoveBurner", "Toaster", "CoffeeMachine"},
+    "cool_place": {APPLIANCE["cool_place"]},
+}
+DETERMINERS = {"the", "a", "an", "that", "this", "those", "these", "its", "their", "my", "your", "of"}
+# a place named after an object and one of these describes where the object is ("the apple on the table")
+LOCATIVE = {
+    "on", "in", "at", "inside", "near", "beside", "by", "behind", "under", "next", "from", "off", "below",
+    "above", "beneath", "underneath", "across", "against", "between", "around", "along", "with", "of",
+}
+
+
+@dataclass(frozen=True)
+class Unread:
+    """A content word the parse does not use, or a slot of a base task that no word names."""
+
+    words: str
+    category: str  # object / place / action / count / negation / order / invented
+    reason: str
+
+    def __str__(self) -> str:
+        return f"{self.words!r} ({self.category}): {self.reason}"
+
+
+@lru_cache(maxsize=1)
+def vocabulary() -> dict[str, frozenset[str]]:
+    """category -> words, from `content_words.txt`."""
+    out: dict[str, frozenset[str]] = {}
+    text = resources.files("nl2hltl2plan.language").joinpath("content_words.txt").read_text()
+    for raw in text.splitlines():
+        line = raw.split("#", 1)[0].strip()
+        if line:
+            name, _, words = line.partition(":")
+            out[name.strip()] = frozenset(words.split())
+    return out
+
+
+@lru_cache(maxsize=1)
+def verb_places() -> dict[str, str]:
+    """verb -> the place it names ("throw" -> GarbageCan), from `implied_by_verb` in content_words.txt."""
+    return dict(w.split(":", 1) for w in vocabulary()["implied_by_verb"])
+
+
+def stems(word: str) -> set[str]:
+    """The word and its possible stems (heated -> heat, chopped -> chop, slices -> slice)."""
+    out = {word}
+    for suffix in ("s", "es", "ed", "d", "ing"):
+        if word.endswith(suffix) and len(word) > len(suffix) + 2:
+            base = word[: -len(suffix)]
+            out |= {base, base + "e"}
+            if len(base) > 2 and base[-1] == base[-2]:
+                out.add(base[:-1])
+    return out
+
+
+def categories(word: str) -> set[str]:
+    """The content-word categories of one token ({} for a function word)."""
+    forms = stems(word)
+    return {name for name, words in vocabulary().items() if forms & words and name != "implied_by_verb"}
+
+
+def _count_value(cats: set[str], word: str) -> int | None:
+    if word.isdigit():
+        return int(word)
+    for c in cats:
+        if c.startswith("count_"):
+            return int(c.removeprefix("count_"))
+    return None
+
+
+@dataclass
+class _Parse:
+    """The base tasks rendered back to what they use."""
+
+    tasks: Sequence[BaseTaskSpec]
+    before: Sequence[tuple[str, str]]
+
+    @property
+    def kinds(self) -> set[str]:
+        return {t.kind for t in self.tasks}
+
+    @property
+    def sliced(self) -> bool:
+        return any(t.sliced for t in self.tasks)
+
+    def slots(self) -> list[tuple[str, str, frozenset[str]]]:
+        """(task id, role, types) for every filled slot."""
+        out = []
+        for t in self.tasks:
+            for role in slots_of(t.kind):
+                types = getattr(t, role) or []
+                if types:
+                    out.append((t.id, role, frozenset(types)))
+        return out
+
+    def implied(self) -> set[str]:
+        out: set[str] = set()
+        for k in self.kinds:
+            out |= IMPLIED_TYPES.get(k, set())
+        if self.sliced:
+            out |= set(KNIFE_TYPES)
+        return out
+
+    def implied_words(self) -> set[str]:
+        v = vocabulary()
+        out: set[str] = set()
+        for k in self.kinds:
+            out |= v.get(f"implied_{k}", frozenset())
+        if self.sliced:
+            out |= v["implied_sliced"]
+        return out
+
+
+def account(
+    instruction: str,
+    tasks: Sequence[BaseTaskSpec],
+    before: Sequence[tuple[str, str]],
+    instances: Mapping[str, int] | None = None,
+    scene: str = "the scene",
+) -> list[Unread]:
+    """The content words of `instruction` that `tasks`/`before` do not use, and the slots no word names.
+
+    `instances`: how many objects of each type the scene holds (None: unknown, counts are not checked
+    against the scene). Raises HTTError for a count of zero, a count above what the scene holds, and a
+    cyclic order in the text."""
+    parse = _Parse(tasks, before)
+    mentions = [m for m in find_mentions(instruction) if not m.entry.generic]
+    toks = tokens(instruction)
+    in_mention = {i for m in mentions for i in range(m.start, m.end)}
+    out = _nouns(mentions, toks, parse)
+    out += _invented(mentions, toks, parse)
+    out += _words(instruction, toks, in_mention, mentions, parse, instances, scene)
+    out += _orders(toks, in_mention, parse)
+    _check_cycles(instruction, toks, mentions, parse)
+    return out
+
+
+def _phrases(mentions: list[Mention], toks: list[tuple[str, int, int]]) -> list[list[Mention]]:
+    """Mentions that name one thing together: compounds ("dresser drawer", "soap container") and
+    "X of Y" ("two bottles of lotion", "the light of the floor lamp")."""
+    out: list[list[Mention]] = []
+    for m in mentions:
+        if out:
+            gap = [w for w, _, _ in toks[out[-1][-1].end : m.start]]
+            if not gap or (gap[0] == "of" and all(w in DETERMINERS for w in gap)):
+                out[-1].append(m)
+                continue
+        out.append([m])
+    return out
+
+
+def _nouns(mentions: list[Mention], toks: list[tuple[str, int, int]], parse: _Parse) -> list[Unread]:
+    """Object and place nouns: each named thing needs a slot of its own (or is implied / a location)."""
+    implied, implied_words = parse.implied(), parse.implied_words()
+    slots = parse.slots()
+    groups: dict[frozenset[str], list[list[Mention]]] = {}
+    for phrase in _phrases(mentions, toks):
+        if any(m.entry.canonical in implied or m.surface.lower().split()[-1] in implied_words for m in phrase):
+            continue
+        groups.setdefault(frozenset(m.entry.canonical for m in phrase), []).append(phrase)
+    g = nx.Graph()
+    for key, phrases in groups.items():
+        types = {t for m in phrases[0] for t in m.entry.types} | key
+        for k, (_, _, st) in enumerate(slots):
+            if st & types or {t.lower() for t in st} & {t.lower() for t in key}:
+                g.add_edge(("g", key), ("s", k))
+    matching = nx.bipartite.maximum_matching(g, top_nodes=[n for n in g if n[0] == "g"]) if g else {}
+    matched = {a[1] for a in matching if a[0] == "g"}
+    out = []
+    objects = {t for _, role, st in slots if role == "object" for t in st}
+    for key, phrases in groups.items():
+        if key in matched or all(_locative(p[0], toks, mentions) for p in phrases):
+            continue
+        first = phrases[0][-1]
+        what = "object" if any(t in objects for t in first.entry.types) else "place"
+        used = "/".join(first.entry.types[:3])
+        surface = " ".join(m.surface for m in phrases[0]) if len(phrases[0]) > 1 else first.surface
+        out.append(Unread(surface, what, f"no base task uses it ({used})"))
+    return out
+
+
+def _locative(m: Mention, toks: list[tuple[str, int, int]], mentions: list[Mention]) -> bool:
+    """A place named only to say where something is: "from the counter", "the drawer by the stove",
+    "the cabinet under the sink", "the lamp on the desk"."""
+    i = m.start - 1
+    while i >= 0 and m.start - i <= 4 and (toks[i][0] in DETERMINERS or not categories(toks[i][0])):
+        if toks[i][0] in LOCATIVE:
+            break
+        i -= 1
+    if i < 0 or toks[i][0] not in LOCATIVE:
+        return False
+    if toks[i][0] in ("from", "off") or (i > 0 and toks[i - 1][0] == "out"):
+        return True
+    return any(o.end <= i and i - o.end <= 4 for o in mentions)
+
+
+def _invented(mentions: list[Mention], toks: list[tuple[str, int, int]], parse: _Parse) -> list[Unread]:
+    """Slots of base tasks that no word of the instruction names (a guess, not a reading)."""
+    places = verb_places()
+    named = {places[f] for w, _, _ in toks for f in stems(w) if f in places}
+    for m in mentions:
+        named |= set(m.entry.types) | {m.entry.canonical}
+    implied = parse.implied()
+    out = []
+    for task_id, role, types in parse.slots():
+        lowered = {t.lower() for t in named}
+        if types & named or {t.lower() for t in types} & lowered:
+            continue
+        if role == "receptacle" and types & implied:
+            continue
+        what = "/".join(sorted(types)[:3])
+        out.append(Unread(what, "invented", f"task {task_id}'s {role} is named nowhere in the instruction"))
+    return out
+
+
+def _next_mention(mentions: list[Mention], words: list[str], i: int, within: int = 4) -> Mention | None:
+    """The noun a count word counts: the next mention, with only non-content words between."""
+    for m in mentions:
+        if i < m.start <= i + within:
+            between = words[i + 1 : m.start]
+            return m if all(w in DETERMINERS or not categories(w) for w in between) else None
+    return None
+
+
+def _words(
+    instruction: str,
+    toks: list[tuple[str, int, int]],
+    in_mention: set[int],
+    mentions: list[Mention],
+    parse: _Parse,
+    instances: Mapping[str, int] | None,
+    scene: str,
+) -> list[Unread]:
+    """Verbs, counts, negations and unsupported nouns outside the lexicon's mentions."""
+    out: list[Unread] = []
+    words = [w for w, _, _ in toks]
+    for i, w in enumerate(words):
+        if i in in_mention:
+            continue
+        cats = categories(w)
+        if not cats and not w.isdigit():
+            continue
+        unread = _verb(w, cats, words, i, parse) or _noun(w, cats)
+        if "negation" in cats and not _until_guard(instruction, toks[i], parse):
+            unread = Unread(w, "negation", "a negated request: the spec has no constraint for it")
+        elif _count_value(cats, w) is not None or cats & {"quantifier_all", "quantifier_vague"}:
+            unread = _count(instruction, toks[i], cats, mentions, parse, instances, scene)
+        if unread is not None:
+            out.append(unread)
+    return out
+
+
+def _until_guard(instruction: str, tok: tuple[str, int, int], parse: _Parse) -> bool:
+    """"Do not X until Y" is the ordering Y before X, which the parse has as a `before` pair."""
+    rest = re.split(r"[.;!?]", instruction[tok[2] :], maxsplit=1)[0].lower()
+    return bool(parse.before) and re.search(r"\b(until|unless|before)\b", rest) is not None
+
+
+def _verb(w: str, cats: set[str], words: list[str], i: int, parse: _Parse) -> Unread | None:
+    if "verb_switch" in cats:
+        after = words[i + 1 : i + 5]
+        if "off" in after:
+            return Unread(f"{w} off", "action", "no base task switches something off")
+        if "on" in after and "examine_in_light" not in parse.kinds:
+            return Unread(f"{w} on", "action", "no base task switches it on (only a lamp, to look at something)")
+        return None
+    if "verb_unsupported" in cats and not cats & {"verb_any", "verb_step"}:
+        return Unread(w, "action", "no base task does this")
+    if "verb_unsupported_before_object" in cats and words[i + 1 : i + 2] and words[i + 1] in DETERMINERS:
+        return Unread(w, "action", "no base task does this")
+    for c in cats:
+        kind = c.removeprefix("verb_")
+        if c.startswith("verb_") and kind in ("heat_place", "cool_place", "clean_place", "examine_in_light"):
+            if kind not in parse.kinds:
+                return Unread(w, "action", f"no {kind} task")
+    if "verb_sliced" in cats and not parse.sliced:
+        return Unread(w, "action", "no task takes a slice")
+    return None
+
+
+def _noun(w: str, cats: set[str]) -> Unread | None:
+    if "person" in cats:
+        return Unread(w, "place", "a person: no base task hands things to people")
+    if "noun_unsupported" in cats:
+        return Unread(w, "object", "no object of this world is called so")
+    return None
+
+
+def _count(
+    instruction: str,
+    tok: tuple[str, int, int],
+    cats: set[str],
+    mentions: list[Mention],
+    parse: _Parse,
+    instances: Mapping[str, int] | None,
+    scene: str,
+) -> Unread | None:
+    """A count before a noun: the task on that noun takes exactly so many (every one for "all")."""
+    w, start, _ = tok
+    toks = tokens(instruction)
+    m = _next_mention(mentions, [t[0] for t in toks], [t[1] for t in toks].index(start))
+    if m is None:
+        return None
+    types = set(m.entry.types)
+    held = None
+    if instances is not None:
+        present = [t for t in m.entry.types if instances.get(t)]
+        types = set(present if m.entry.all_ else present[:1]) or types
+        held = sum(instances.get(t, 0) for t in types)
+    n = _count_value(cats, w)
+    phrase = instruction[start : m.char_end]
+    if n == 0:
+        raise HTTError(f"a count of zero ({phrase!r}): there is nothing to do; say how many")
+    if n is not None and held is not None and n > held:
+        raise HTTError(f"{phrase!r}: {scene} holds only {held} {camel_words(m.entry.canonical)}")
+    counts = [max(1, t.count) for t in parse.tasks if set(t.object) & types]
+    if "quantifier_all" in cats:
+        n = held
+        if n is None:
+            return None
+    elif "quantifier_vague" in cats:
+        return Unread(phrase, "count", "a vague count: say how many") if 2 not in counts else None
+    if n in counts or (n == 2 and w in ("both", "pair", "couple") and len(counts) >= 2):
+        return None
+    got = " + ".join(map(str, counts)) or "none"
+    return Unread(phrase, "count", f"the base tasks take {got}, not {n}")
+
+
+def _orders(toks: list[tuple[str, int, int]], in_mention: set[int], parse: _Parse) -> list[Unread]:
+    """Order words: with several base tasks and no word that frees the order, a sequence word needs an
+    ordering between them."""
+    cats = [categories(w) for i, (w, _, _) in enumerate(toks) if i not in in_mention]
+    words = [w for i, (w, _, _) in enumerate(toks) if i not in in_mention and "order" in categories(w)]
+    free = any("any_order" in c for c in cats)
+    if not words or len(parse.tasks) < 2 or parse.before or free:
+        return []
+    return [Unread(", ".join(dict.fromkeys(words)), "order", "the base tasks are not ordered")]
+
+
+def _check_cycles(
+    instruction: str, toks: list[tuple[str, int, int]], mentions: list[Mention], parse: _Parse
+) -> None:
+    """'X ... before the Y' / 'X ... after the Y' between object nouns of one sentence: a cycle is an
+    input error."""
+    objects = {t for _, role, st in parse.slots() if role == "object" for t in st}
+    objs = [m for m in mentions if set(m.entry.types) & objects or not objects]
+    g = nx.DiGraph()
+    for i, (w, _, _) in enumerate(toks):
+        if w not in ("before", "after"):
+            continue
+        j = i + 1
+        while j < len(toks) and toks[j][0] in DETERMINERS:
+            j += 1
+        right = [m for m in objs if m.start == j]
+        left = [m for m in objs if m.end <= i and not re.search(r"[.;!?]", instruction[m.char_end : toks[i][1]])]
+        if not left or not right:
+            continue
+        a, b = left[-1].entry.canonical, right[0].entry.canonical
+        if a != b:
+            g.add_edge(*((a, b) if w == "before" else (b, a)))
+    try:
+        cycle = nx.find_cycle(g)
+    except nx.NetworkXNoCycle:
+        return
+    names = [camel_words(a) for a, _ in cycle] + [camel_words(cycle[0][0])]
+    raise HTTError(f"cyclic order in the instruction: {' before '.join(names)}")
