@@ -161,8 +161,9 @@ def account(
     mentions = [m for m in find_mentions(instruction) if not m.entry.generic]
     toks = tokens(instruction)
     in_mention = {i for m in mentions for i in range(m.start, m.end)}
-    out = _nouns(mentions, toks, parse)
+    out = _nouns(instruction, mentions, toks, parse)
     out += _invented(mentions, toks, parse)
+    out += _invented_kinds(toks, mentions, parse)
     out += _words(instruction, toks, in_mention, mentions, parse, instances, scene)
     out += _orders(toks, in_mention, parse)
     _check_cycles(instruction, toks, mentions, parse)
@@ -183,7 +184,9 @@ def _phrases(mentions: list[Mention], toks: list[tuple[str, int, int]]) -> list[
     return out
 
 
-def _nouns(mentions: list[Mention], toks: list[tuple[str, int, int]], parse: _Parse) -> list[Unread]:
+def _nouns(
+    instruction: str, mentions: list[Mention], toks: list[tuple[str, int, int]], parse: _Parse
+) -> list[Unread]:
     """Object and place nouns: each named thing needs a slot of its own (or is implied / a location)."""
     implied, implied_words = parse.implied(), parse.implied_words()
     slots = parse.slots()
@@ -200,10 +203,11 @@ def _nouns(mentions: list[Mention], toks: list[tuple[str, int, int]], parse: _Pa
                 g.add_edge(("g", key), ("s", k))
     matching = nx.bipartite.maximum_matching(g, top_nodes=[n for n in g if n[0] == "g"]) if g else {}
     matched = {a[1] for a in matching if a[0] == "g"}
+    places = [m for key in matched for p in groups[key] for m in p if slots[matching[("g", key)][1]][1] != "object"]
     out = []
     objects = {t for _, role, st in slots if role == "object" for t in st}
     for key, phrases in groups.items():
-        if key in matched or all(_locative(p[0], toks, mentions) for p in phrases):
+        if key in matched or all(_locative(instruction, p[0], toks, places) for p in phrases):
             continue
         first = phrases[0][-1]
         what = "object" if any(t in objects for t in first.entry.types) else "place"
@@ -213,9 +217,9 @@ def _nouns(mentions: list[Mention], toks: list[tuple[str, int, int]], parse: _Pa
     return out
 
 
-def _locative(m: Mention, toks: list[tuple[str, int, int]], mentions: list[Mention]) -> bool:
-    """A place named only to say where something is: "from the counter", "the drawer by the stove",
-    "the cabinet under the sink", "the lamp on the desk"."""
+def _locative(instruction: str, m: Mention, toks: list[tuple[str, int, int]], places: list[Mention]) -> bool:
+    """A place named only to say where something is: "from the counter", or, next to the place the
+    task uses in the same clause, "the drawer by the stove", "the lamp on the desk"."""
     i = m.start - 1
     while i >= 0 and m.start - i <= 4 and (toks[i][0] in DETERMINERS or not categories(toks[i][0])):
         if toks[i][0] in LOCATIVE:
@@ -225,7 +229,15 @@ def _locative(m: Mention, toks: list[tuple[str, int, int]], mentions: list[Menti
         return False
     if toks[i][0] in ("from", "off") or (i > 0 and toks[i - 1][0] == "out"):
         return True
-    return any(o.end <= i and i - o.end <= 4 for o in mentions)
+    clause = _clause_span(instruction, m.char_start)
+    return any(clause[0] <= o.char_start < clause[1] and o.start != m.start for o in places)
+
+
+def _clause_span(text: str, at: int) -> tuple[int, int]:
+    """The clause around character `at`: between punctuation, "and" and "then"."""
+    bounds = [0, *(x.start() for x in re.finditer(r"[,.;!?]|\b(?:and|then)\b", text.lower())), len(text)]
+    start = max(b for b in bounds if b <= at)
+    return start, min(b for b in bounds if b > at)
 
 
 def _invented(mentions: list[Mention], toks: list[tuple[str, int, int]], parse: _Parse) -> list[Unread]:
@@ -244,6 +256,23 @@ def _invented(mentions: list[Mention], toks: list[tuple[str, int, int]], parse: 
             continue
         what = "/".join(sorted(types)[:3])
         out.append(Unread(what, "invented", f"task {task_id}'s {role} is named nowhere in the instruction"))
+    return out
+
+
+def _invented_kinds(toks: list[tuple[str, int, int]], mentions: list[Mention], parse: _Parse) -> list[Unread]:
+    """A heat / cool / clean task or a slice needs a word for it: a verb or state word ("chilled"), or
+    its appliance named as a stop ("put the apple in the microwave, then on the counter")."""
+    cats: set[str] = set()
+    for w, _, _ in toks:
+        cats |= categories(w)
+    named = {m.entry.canonical for m in mentions}
+    out = []
+    for t in parse.tasks:
+        word = f"verb_{t.kind}" in cats or named & IMPLIED_TYPES.get(t.kind, set())
+        if t.kind in IMPLIED_TYPES and not word:
+            out.append(Unread(t.kind, "invented", f"task {t.id}'s treatment is named nowhere in the instruction"))
+        if t.sliced and "verb_sliced" not in cats:
+            out.append(Unread("sliced", "invented", f"task {t.id}'s slice is named nowhere in the instruction"))
     return out
 
 
@@ -353,7 +382,7 @@ def _count(
         if n is None:
             return None
     elif "quantifier_vague" in cats:
-        return Unread(phrase, "count", "a vague count: say how many") if 2 not in counts else None
+        return Unread(phrase, "count", "a vague count: say how many")
     if n in counts or (n == 2 and w in ("both", "pair", "couple") and len(counts) >= 2):
         return None
     got = " + ".join(map(str, counts)) or "none"
