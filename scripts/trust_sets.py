@@ -35,8 +35,17 @@ def parse_task(text: str, task_id: str) -> dict:
     words = text.split()
     kind, obj, dest = words[0], words[1].split("/"), words[2].split("/")
     rest = words[3:]
-    task = {"id": task_id, "text": "", "kind": kind, "object": obj, "count": 1, "sliced": "sliced" in rest,
-            "container": None, "receptacle": dest, "light": None}
+    task = {
+        "id": task_id,
+        "text": "",
+        "kind": kind,
+        "object": obj,
+        "count": 1,
+        "sliced": "sliced" in rest,
+        "container": None,
+        "receptacle": dest,
+        "light": None,
+    }
     if "x2" in rest:
         task["count"] = 2
     if "in" in rest:
@@ -52,9 +61,18 @@ def parse_line(line: str, name: str, n: int) -> dict:
     refuse = parts[4] if len(parts) > 4 else ""
     tasks = [parse_task(t.strip(), chr(65 + k)) for k, t in enumerate(tasks_text.split(";")) if t.strip()]
     before = [p.strip().split("<") for p in before_text.split(",") if p.strip()]
-    return {"id": f"trust.{name}.{n}", "scene": scene, "n_base": len(tasks), "instruction": instruction,
-            "tasks": tasks, "before": before, "feasible": not refuse, "issues": [refuse] if refuse else [],
-            "ambiguous": False, "notes": ["written for issue 23"]}
+    return {
+        "id": f"trust.{name}.{n}",
+        "scene": scene,
+        "n_base": len(tasks),
+        "instruction": instruction,
+        "tasks": tasks,
+        "before": before,
+        "feasible": not refuse,
+        "issues": [refuse] if refuse else [],
+        "ambiguous": False,
+        "notes": ["written for issue 23"],
+    }
 
 
 def build() -> None:
@@ -89,7 +107,7 @@ def load(name: str) -> list[GTInstance]:
 
 
 def measure(backend: str, show: bool) -> None:
-    print(f"| set | n | refused | partial | converted | wrong |\n| --- | --- | --- | --- | --- | --- |")
+    print("| set | n | refused | partial | converted | wrong |\n| --- | --- | --- | --- | --- | --- |")
     details = []
     for name in ("plain", "mixed"):
         gts = load(name)

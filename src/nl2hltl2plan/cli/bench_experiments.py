@@ -87,7 +87,9 @@ def run_tabletop(args: argparse.Namespace) -> int:
 def _errored_exit(errored: int) -> int:
     """Exit 1 when the LLM failed on some instances (their rows say `errored`; not a result)."""
     if errored:
-        print(f"error: the LLM failed on {errored} baseline instance(s) (errored, not scored)", file=sys.stderr)
+        print(
+            f"error: the LLM failed on {errored} baseline instance(s) (errored, not scored)", file=sys.stderr
+        )
         return 1
     return 0
 

@@ -164,6 +164,8 @@ def run(args: argparse.Namespace) -> int:
         print(json.dumps(payload, indent=1, default=str))
     else:
         _print_human(outcome)
+    if outcome.language.partial:
+        print("partial: only part of the instruction is planned (--partial)", file=sys.stderr)
     if not outcome.ok:
         print(f"error: no plan: {outcome.status.value}: {outcome.result.reason}", file=sys.stderr)
         return EXIT_NO_PLAN
@@ -207,8 +209,6 @@ def _print_human(outcome: Any) -> None:
         print("  before: " + ", ".join(f"{a} < {b}" for a, b in lang.before))
     print("\nHierarchical LTL")
     print("  " + (lang.spec_text or "(not built)").replace("\n", "\n  "))
-    if lang.partial:
-        print("partial: only part of the instruction is planned (--partial)", file=sys.stderr)
     for w in lang.unparsed:
         print(f"not understood: {w}", file=sys.stderr)
     for w in lang.issues + lang.warnings + lang.ltl_checks:

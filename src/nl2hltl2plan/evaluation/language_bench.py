@@ -104,9 +104,7 @@ def translate_instances(
     """Language records for every instance, reusing those already in `out` (JSON lines)."""
     # records of a failed LLM are not answers: they run again
     records = {
-        k: rec
-        for k, v in load_rows(out).items()
-        if not (rec := LanguageRecord.model_validate(v)).errored
+        k: rec for k, v in load_rows(out).items() if not (rec := LanguageRecord.model_validate(v)).errored
     }
     with out.open("a") as fh:
         for gt in gts:
@@ -130,7 +128,11 @@ def language_job(
         rec = records[scenario.instance]
         world = build_benchmark_world(gt)
         starts = start_cells(world, scenario.robots, gt=gt, draw=scenario.draw)
-        base = {**instance_fields(world, gt, starts), "conversion_ok": rec.conversion_ok, "partial": rec.partial}
+        base = {
+            **instance_fields(world, gt, starts),
+            "conversion_ok": rec.conversion_ok,
+            "partial": rec.partial,
+        }
         if rec.errored:  # the LLM failed: the scenario errored (the run exits 1, a resume reruns it)
             return ScenarioRow.model_validate(
                 {**base, "status": "error", "reason": f"LLM failed: {rec.error}", "planning_ok": False}

@@ -39,8 +39,29 @@ IMPLIED_TYPES = {
 DETERMINERS = {"the", "a", "an", "that", "this", "those", "these", "its", "their", "my", "your", "of"}
 # a place named after an object and one of these describes where the object is ("the apple on the table")
 LOCATIVE = {
-    "on", "in", "at", "inside", "near", "beside", "by", "behind", "under", "next", "from", "off", "below",
-    "above", "beneath", "underneath", "across", "against", "between", "around", "along", "with", "of",
+    "on",
+    "in",
+    "at",
+    "inside",
+    "near",
+    "beside",
+    "by",
+    "behind",
+    "under",
+    "next",
+    "from",
+    "off",
+    "below",
+    "above",
+    "beneath",
+    "underneath",
+    "across",
+    "against",
+    "between",
+    "around",
+    "along",
+    "with",
+    "of",
 }
 
 
@@ -192,7 +213,9 @@ def _nouns(
     slots = parse.slots()
     groups: dict[frozenset[str], list[list[Mention]]] = {}
     for phrase in _phrases(mentions, toks):
-        if any(m.entry.canonical in implied or m.surface.lower().split()[-1] in implied_words for m in phrase):
+        if any(
+            m.entry.canonical in implied or m.surface.lower().split()[-1] in implied_words for m in phrase
+        ):
             continue
         groups.setdefault(frozenset(m.entry.canonical for m in phrase), []).append(phrase)
     g = nx.Graph()
@@ -203,7 +226,9 @@ def _nouns(
                 g.add_edge(("g", key), ("s", k))
     matching = nx.bipartite.maximum_matching(g, top_nodes=[n for n in g if n[0] == "g"]) if g else {}
     matched = {a[1] for a in matching if a[0] == "g"}
-    places = [m for key in matched for p in groups[key] for m in p if slots[matching[("g", key)][1]][1] != "object"]
+    places = [
+        m for key in matched for p in groups[key] for m in p if slots[matching[("g", key)][1]][1] != "object"
+    ]
     out = []
     objects = {t for _, role, st in slots if role == "object" for t in st}
     for key, phrases in groups.items():
@@ -270,9 +295,13 @@ def _invented_kinds(toks: list[tuple[str, int, int]], mentions: list[Mention], p
     for t in parse.tasks:
         word = f"verb_{t.kind}" in cats or named & IMPLIED_TYPES.get(t.kind, set())
         if t.kind in IMPLIED_TYPES and not word:
-            out.append(Unread(t.kind, "invented", f"task {t.id}'s treatment is named nowhere in the instruction"))
+            out.append(
+                Unread(t.kind, "invented", f"task {t.id}'s treatment is named nowhere in the instruction")
+            )
         if t.sliced and "verb_sliced" not in cats:
-            out.append(Unread("sliced", "invented", f"task {t.id}'s slice is named nowhere in the instruction"))
+            out.append(
+                Unread("sliced", "invented", f"task {t.id}'s slice is named nowhere in the instruction")
+            )
     return out
 
 
@@ -314,7 +343,7 @@ def _words(
 
 
 def _until_guard(instruction: str, tok: tuple[str, int, int], parse: _Parse) -> bool:
-    """"Do not X until Y" is the ordering Y before X, which the parse has as a `before` pair."""
+    """ "Do not X until Y" is the ordering Y before X, which the parse has as a `before` pair."""
     rest = re.split(r"[.;!?]", instruction[tok[2] :], maxsplit=1)[0].lower()
     return bool(parse.before) and re.search(r"\b(until|unless|before)\b", rest) is not None
 
@@ -325,7 +354,9 @@ def _verb(w: str, cats: set[str], words: list[str], i: int, parse: _Parse) -> Un
         if "off" in after:
             return Unread(f"{w} off", "action", "no base task switches something off")
         if "on" in after and "examine_in_light" not in parse.kinds:
-            return Unread(f"{w} on", "action", "no base task switches it on (only a lamp, to look at something)")
+            return Unread(
+                f"{w} on", "action", "no base task switches it on (only a lamp, to look at something)"
+            )
         return None
     if "verb_unsupported" in cats and not cats & {"verb_any", "verb_step"}:
         return Unread(w, "action", "no base task does this")
@@ -415,7 +446,9 @@ def _check_cycles(
         while j < len(toks) and toks[j][0] in DETERMINERS:
             j += 1
         right = [m for m in objs if m.start == j]
-        left = [m for m in objs if m.end <= i and not re.search(r"[.;!?]", instruction[m.char_end : toks[i][1]])]
+        left = [
+            m for m in objs if m.end <= i and not re.search(r"[.;!?]", instruction[m.char_end : toks[i][1]])
+        ]
         if not left or not right:
             continue
         a, b = left[-1].entry.canonical, right[0].entry.canonical

@@ -40,7 +40,7 @@ def suggestions(instruction: str, world: World) -> list[str]:
 
 
 def suggestion_text(instruction: str, world: World | None) -> str:
-    """"; closest supported tasks: ..." (empty when there is nothing to suggest)."""
+    """ "; closest supported tasks: ..." (empty when there is nothing to suggest)."""
     found = suggestions(instruction, world) if isinstance(world, World) else []
     return f"; closest supported tasks: {' | '.join(found)}" if found else ""
 

@@ -31,8 +31,8 @@ from nl2hltl2plan.language.llm.client import LLMClient
 from nl2hltl2plan.language.ltl_generation import llm_generate_ltl, translator_client
 from nl2hltl2plan.language.result import Ambiguity, LanguageResult
 from nl2hltl2plan.language.scoring import match
-from nl2hltl2plan.language.suggest import not_understood, suggestion_text
 from nl2hltl2plan.language.spec_builder import GenerateLTL, build_spec
+from nl2hltl2plan.language.suggest import not_understood, suggestion_text
 from nl2hltl2plan.language.tasks import BaseTaskSpec, task_letter, transitive_reduction
 from nl2hltl2plan.logic.hierarchical import LeafOrFormula
 from nl2hltl2plan.logic.relations import compile_relations
