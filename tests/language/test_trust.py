@@ -62,8 +62,8 @@ def test_counts_and_cycles_are_input_errors():
 
 
 def test_plan_refuses_partial_instructions_unless_asked(capsys):
-    text = "Put the plates in the lower rack and also water the plants"
-    with pytest.raises(HTTError, match="'water' .action.: no base task does this"):
+    text = "Put the plates in the lower rack and then make some tea"
+    with pytest.raises(HTTError, match="'make' .action.: no base task does this"):
         run(text, demo_world())
     assert main(["plan", text, "--world", "demo", "--llm", "offline"]) == 2
     assert "not understood" in capsys.readouterr().err

@@ -16,6 +16,7 @@ orders are input errors (`HTTError`), whatever the backend made of them.
 
 from __future__ import annotations
 
+import difflib
 import re
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
@@ -25,7 +26,7 @@ from importlib import resources
 import networkx as nx
 
 from nl2hltl2plan.errors import HTTError
-from nl2hltl2plan.language.grounding import Mention, camel_words, find_mentions, tokens
+from nl2hltl2plan.language.grounding import Mention, camel_words, find_mentions, lexicon, tokens
 from nl2hltl2plan.language.tasks import BaseTaskSpec
 from nl2hltl2plan.worlds.model import KNIFE_TYPES
 from nl2hltl2plan.worlds.tasks import APPLIANCE, slots_of
@@ -255,12 +256,14 @@ def _locative(instruction: str, m: Mention, toks: list[tuple[str, int, int]], pl
     if toks[i][0] in ("from", "off") or (i > 0 and toks[i - 1][0] == "out"):
         return True
     clause = _clause_span(instruction, m.char_start)
+    if any("verb_take" in categories(w) for w, s, _ in toks if clause[0] <= s < clause[1]):
+        return True
     return any(clause[0] <= o.char_start < clause[1] and o.start != m.start for o in places)
 
 
 def _clause_span(text: str, at: int) -> tuple[int, int]:
-    """The clause around character `at`: between punctuation, "and" and "then"."""
-    bounds = [0, *(x.start() for x in re.finditer(r"[,.;!?]|\b(?:and|then)\b", text.lower())), len(text)]
+    """The clause around character `at`: between full stops, semicolons, "and" and "then"."""
+    bounds = [0, *(x.start() for x in re.finditer(r"[.;!?]|\b(?:and|then)\b", text.lower())), len(text)]
     start = max(b for b in bounds if b <= at)
     return start, min(b for b in bounds if b > at)
 
@@ -273,9 +276,10 @@ def _invented(mentions: list[Mention], toks: list[tuple[str, int, int]], parse: 
         named |= set(m.entry.types) | {m.entry.canonical}
     implied = parse.implied()
     out = []
+    spelt = [w for w, _, _ in toks if len(w) >= 5]
     for task_id, role, types in parse.slots():
         lowered = {t.lower() for t in named}
-        if types & named or {t.lower() for t in types} & lowered:
+        if types & named or {t.lower() for t in types} & lowered or _misspelt(spelt, types):
             continue
         if role == "receptacle" and types & implied:
             continue
@@ -305,7 +309,13 @@ def _invented_kinds(toks: list[tuple[str, int, int]], mentions: list[Mention], p
     return out
 
 
-def _next_mention(mentions: list[Mention], words: list[str], i: int, within: int = 4) -> Mention | None:
+def _misspelt(words: list[str], types: frozenset[str]) -> bool:
+    """A word one letter off a lexicon word of one of the types ("laddle" for the ladle)."""
+    names = sorted({w for key, (entry, _) in lexicon().items() if set(entry.types) & types for w in key})
+    return any(difflib.get_close_matches(w, names, n=1, cutoff=0.85) for w in words)
+
+
+def _next_mention(mentions: list[Mention], words: list[str], i: int, within: int = 3) -> Mention | None:
     """The noun a count word counts: the next mention, with only non-content words between."""
     for m in mentions:
         if i < m.start <= i + within:
@@ -332,7 +342,9 @@ def _words(
         cats = categories(w)
         if not cats and not w.isdigit():
             continue
-        unread = _verb(w, cats, words, i, parse) or _noun(w, cats)
+        unread = _verb(w, cats, words, i, parse)
+        if unread is None and not _locative_word(instruction, i, toks, mentions):
+            unread = _noun(w, cats)
         if "negation" in cats and not _until_guard(instruction, toks[i], parse):
             unread = Unread(w, "negation", "a negated request: the spec has no constraint for it")
         elif _count_value(cats, w) is not None or cats & {"quantifier_all", "quantifier_vague"}:
@@ -340,6 +352,20 @@ def _words(
         if unread is not None:
             out.append(unread)
     return out
+
+
+def _locative_word(
+    instruction: str, i: int, toks: list[tuple[str, int, int]], mentions: list[Mention]
+) -> bool:
+    """A word after a locative preposition that follows a named thing in its clause ("next to the other
+    food", "by the door")."""
+    j = i - 1
+    while j >= 0 and i - j <= 4 and toks[j][0] not in LOCATIVE and not categories(toks[j][0]):
+        j -= 1
+    if j < 0 or toks[j][0] not in LOCATIVE - {"of", "with"}:  # "a cup of coffee" names its contents
+        return False
+    clause = _clause_span(instruction, toks[i][1])
+    return any(clause[0] <= m.char_start < toks[j][1] for m in mentions)
 
 
 def _until_guard(instruction: str, tok: tuple[str, int, int], parse: _Parse) -> bool:
@@ -393,7 +419,7 @@ def _count(
     w, start, _ = tok
     toks = tokens(instruction)
     m = _next_mention(mentions, [t[0] for t in toks], [t[1] for t in toks].index(start))
-    if m is None:
+    if m is None or re.search(r"[,.;:!?]", instruction[start : m.char_start]):
         return None
     types = set(m.entry.types)
     held = None
@@ -408,6 +434,8 @@ def _count(
     if n is not None and held is not None and n > held:
         raise HTTError(f"{phrase!r}: {scene} holds only {held} {camel_words(m.entry.canonical)}")
     counts = [max(1, t.count) for t in parse.tasks if set(t.object) & types]
+    if not counts:  # a count of places ("one of the drawers"), or of a noun the noun check reports
+        return None
     if "quantifier_all" in cats:
         n = held
         if n is None:
