@@ -135,3 +135,46 @@ def test_dead_llm_makes_scenarios_errored_and_resume_reruns_them(tmp_path, stub,
     asked = len(stub.requests)
     assert main(args) == 1  # the resume ran the errored scenario again
     assert len(stub.requests) > asked
+
+
+def test_a_dead_llm_baseline_is_errored_not_a_failure(stub):
+    from nl2hltl2plan.cli.bench_experiments import _errored_exit
+    from nl2hltl2plan.evaluation.baselines import llm_planner
+    from nl2hltl2plan.evaluation.tabletop import HOME, _row, load_tasks, tabletop_world
+    from nl2hltl2plan.language.llm.client import LLMClient
+    from nl2hltl2plan.language.llm.settings import LLMSettings
+
+    stub.answer = lambda body: "garbage, not the JSON asked for"
+    client = LLMClient(LLMSettings(base_url=stub.base_url, api_key="k", max_retries=0, cache_dir=None))
+    task = load_tasks()[0]
+    outcome = llm_planner(tabletop_world(0), task.instruction, HOME, task.gt_instance(), client)
+    assert outcome.errored and not outcome.success and "LLM failed" in outcome.reasons[0]
+    row = _row("llm-planner", [outcome])
+    assert row["errored"] == 1 and row["success_rate"] is None  # not "0 % success"
+    assert _errored_exit(row["errored"]) == 1
+
+
+def test_check_one_judges_an_llm_backend_too(stub):
+    """An OpenAI-compatible server that drops the coffee: the LLM backend's result is partial as well."""
+    from nl2hltl2plan.language.llm.client import LLMClient
+    from nl2hltl2plan.language.llm.settings import LLMSettings
+    from nl2hltl2plan.language.translate import translate
+
+    answer = {
+        "tasks": [
+            {
+                "id": "1.1",
+                "text": "heat a cup",
+                "kind": "heat_place",
+                "object": "cup",
+                "receptacle": "microwave",
+            }
+        ]
+    }
+    stub.answer = lambda body: json.dumps(answer)
+    client = LLMClient(LLMSettings(base_url=stub.base_url, api_key="k", max_retries=0, cache_dir=None))
+    res = translate(
+        "heat a cup of coffee in the microwave", demo_world(), "openai", client, build=False, actions="none"
+    )
+    assert [t.summary() for t in res.tasks] == ["heat_place Cup -> Microwave"]
+    assert res.partial and res.unparsed[0].startswith("'coffee' (object)")

@@ -141,6 +141,8 @@ def language_check(task: HandoverTask, seed: int = 0) -> dict[str, Any]:
         language = language_stage(task.instruction, hw.as_world())
     except Nl2Hltl2PlanError as exc:
         return {"converted": False, "equivalent": False, "why": f"language stage: {exc}"}
+    if language.partial:  # part of the instruction was not understood: not a conversion
+        return {"converted": False, "equivalent": False, "why": f"not understood: {'; '.join(language.unparsed)}"}
     if language.spec is None:
         return {"converted": False, "equivalent": False, "why": "; ".join(language.warnings) or "no spec"}
     out: dict[str, Any] = {

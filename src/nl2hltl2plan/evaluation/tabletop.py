@@ -92,6 +92,9 @@ def run_ours(task: TabletopTask, world: World) -> OursOutcome:
     except Nl2Hltl2PlanError as exc:
         return OursOutcome(False, None, time.perf_counter() - t0, 0.0, [], [], None, [str(exc)])
     runtime = time.perf_counter() - t0
+    if language.partial:  # part of the instruction was not understood: a failure, never a plan
+        why = f"not understood: {'; '.join(language.unparsed)}"
+        return OursOutcome(False, None, runtime, language_s, language.tasks, language.before, None, [why])
     if result is None or not result.solved:
         why = "no hierarchical spec" if result is None else f"planner: {result.status} {result.reason}"
         return OursOutcome(False, None, runtime, language_s, language.tasks, language.before, None, [why])

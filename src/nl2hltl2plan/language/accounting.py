@@ -345,7 +345,11 @@ def _words(
         unread = _verb(w, cats, words, i, parse)
         if unread is None and not _locative_word(instruction, i, toks, mentions):
             unread = _noun(w, cats)
-        if "negation" in cats and not _until_guard(instruction, toks[i], parse):
+        if (
+            "negation" in cats
+            and not _until_guard(instruction, toks[i], parse)
+            and not _free_order(instruction, toks[i])
+        ):
             unread = Unread(w, "negation", "a negated request: the spec has no constraint for it")
         elif _count_value(cats, w) is not None or cats & {"quantifier_all", "quantifier_vague"}:
             unread = _count(instruction, toks[i], cats, mentions, parse, instances, scene)
@@ -366,6 +370,13 @@ def _locative_word(
         return False
     clause = _clause_span(instruction, toks[i][1])
     return any(clause[0] <= m.char_start < toks[j][1] for m in mentions)
+
+
+def _free_order(instruction: str, tok: tuple[str, int, int]) -> bool:
+    """A negation about the order itself ("the order is not specified", "in no particular order")."""
+    start = max((m.end() for m in re.finditer(r"[.;!?]", instruction[: tok[1]])), default=0)
+    end = tok[2] + len(re.split(r"[.;!?]", instruction[tok[2] :], maxsplit=1)[0])
+    return re.search(r"\b(order|sequence)\b", instruction[start:end].lower()) is not None
 
 
 def _until_guard(instruction: str, tok: tuple[str, int, int], parse: _Parse) -> bool:
