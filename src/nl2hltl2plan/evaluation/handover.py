@@ -142,7 +142,8 @@ def language_check(task: HandoverTask, seed: int = 0) -> dict[str, Any]:
     except Nl2Hltl2PlanError as exc:
         return {"converted": False, "equivalent": False, "why": f"language stage: {exc}"}
     if language.partial:  # part of the instruction was not understood: not a conversion
-        return {"converted": False, "equivalent": False, "why": f"not understood: {'; '.join(language.unparsed)}"}
+        why = f"not understood: {'; '.join(language.unparsed)}"
+        return {"converted": False, "equivalent": False, "why": why}
     if language.spec is None:
         return {"converted": False, "equivalent": False, "why": "; ".join(language.warnings) or "no spec"}
     out: dict[str, Any] = {
