@@ -4,7 +4,8 @@
     python scripts/trust_sets.py measure [--backend offline|grammar]   # refused / partial / converted / wrong
 
 The .txt files are hand-written, one instruction a line: `scene | instruction | base tasks | before |
-what must be refused`. Base tasks: `kind Object[/Alt] Destination [x2] [sliced] [in Container]`,
+what must be refused`. Base tasks: `kind Object[/Alt] Destination [x2] [sliced] [in Container]` or
+`set_state Object state`,
 `;`-separated, ids A, B, ... in order; before: `A<B, ...`. A line with something to refuse has
 `feasible: false` and that text in `issues` (its base tasks are the part a world can do).
 
@@ -33,6 +34,19 @@ TRUST = Path(__file__).resolve().parent.parent / "tests" / "language" / "data" /
 
 def parse_task(text: str, task_id: str) -> dict:
     words = text.split()
+    if words[0] == "set_state":  # set_state Object state
+        return {
+            "id": task_id,
+            "text": "",
+            "kind": "set_state",
+            "object": words[1].split("/"),
+            "count": 1,
+            "sliced": False,
+            "container": None,
+            "receptacle": None,
+            "light": None,
+            "state": words[2],
+        }
     kind, obj, dest = words[0], words[1].split("/"), words[2].split("/")
     rest = words[3:]
     task = {

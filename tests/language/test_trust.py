@@ -178,3 +178,30 @@ def test_check_one_judges_an_llm_backend_too(stub):
     )
     assert [t.summary() for t in res.tasks] == ["heat_place Cup -> Microwave"]
     assert res.partial and res.unparsed[0].startswith("'coffee' (object)")
+
+
+@needs_data
+def test_state_requests_the_world_can_do_are_done():
+    from nl2hltl2plan.worlds import load_world
+
+    world = load_world("FloorPlan1")
+    out = run("break the vase", world)
+    assert [t.summary() for t in out.language.tasks] == ["set_state Vase broken"] and out.ok
+    acts = [st.verb for r in out.result.plan.robots for st in r.steps if st.verb not in ("move", "wait")]
+    assert acts == ["break"]
+    ordered = run("put the apple in the fridge and then slice the tomato", world)
+    assert [t.summary() for t in ordered.language.tasks][1] == "set_state Tomato sliced"
+    assert ordered.language.before == [("A", "B")] and ordered.ok
+
+
+def test_state_clauses_are_read_only_for_objects_that_take_the_state():
+    from nl2hltl2plan.language.grounding import Grounder
+    from nl2hltl2plan.language.state_tasks import read_state_clause
+
+    g = Grounder({"Laptop", "LightSwitch", "Vase", "Desk"})
+    assert read_state_clause("Turn on the laptop", g).summary() == "set_state Laptop on"
+    assert read_state_clause("switch off the lights", g).summary() == "set_state LightSwitch off"
+    assert read_state_clause("Break a vase.", g).state == "broken"
+    assert read_state_clause("turn it on", g, pronoun="Laptop").object == ["Laptop"]
+    assert read_state_clause("water the plants", g) is None
+    assert read_state_clause("break the window", g) is None  # not in the scene

@@ -37,6 +37,7 @@ IMPLIED_TYPES = {
     "heat_place": {APPLIANCE["heat_place"], "StoveBurner", "Toaster", "CoffeeMachine"},
     "cool_place": {APPLIANCE["cool_place"]},
 }
+LAMPS = frozenset({"DeskLamp", "FloorLamp"})
 DETERMINERS = {"the", "a", "an", "that", "this", "those", "these", "its", "their", "my", "your", "of"}
 # a place named after an object and one of these describes where the object is ("the apple on the table")
 LOCATIVE = {
@@ -137,14 +138,20 @@ class _Parse:
 
     @property
     def sliced(self) -> bool:
-        return any(t.sliced for t in self.tasks)
+        return any(t.sliced or t.state == "sliced" for t in self.tasks)
+
+    @property
+    def states(self) -> set[str]:
+        return {str(t.state) for t in self.tasks if t.kind == "set_state"}
 
     def slots(self) -> list[tuple[str, str, frozenset[str]]]:
         """(task id, role, types) for every filled slot."""
         out = []
         for t in self.tasks:
             for role in slots_of(t.kind):
-                types = getattr(t, role) or []
+                types = set(getattr(t, role) or [])
+                if "LightSwitch" in types:
+                    types |= LAMPS  # "the light(s)" of a room is its light switch
                 if types:
                     out.append((t.id, role, frozenset(types)))
         return out
@@ -180,8 +187,8 @@ def account(
     against the scene). Raises HTTError for a count of zero, a count above what the scene holds, and a
     cyclic order in the text."""
     parse = _Parse(tasks, before)
-    mentions = [m for m in find_mentions(instruction) if not m.entry.generic]
     toks = tokens(instruction)
+    mentions = [m for m in find_mentions(instruction) if not m.entry.generic and not _is_verb(m, toks)]
     in_mention = {i for m in mentions for i in range(m.start, m.end)}
     out = _nouns(instruction, mentions, toks, parse)
     out += _invented(mentions, toks, parse)
@@ -190,6 +197,13 @@ def account(
     out += _orders(toks, in_mention, parse)
     _check_cycles(instruction, toks, mentions, parse)
     return out
+
+
+def _is_verb(m: Mention, toks: list[tuple[str, int, int]]) -> bool:
+    """A lexicon word used as a verb: "switch" in "switch off the light", "switch the lamp on"."""
+    nxt = toks[m.end][0] if m.end < len(toks) else ""
+    single = m.end - m.start == 1 and "verb_switch" in categories(toks[m.start][0])
+    return single and nxt in ("on", "off", "the", "it", "a")
 
 
 def _phrases(mentions: list[Mention], toks: list[tuple[str, int, int]]) -> list[list[Mention]]:
@@ -388,13 +402,13 @@ def _until_guard(instruction: str, tok: tuple[str, int, int], parse: _Parse) -> 
 def _verb(w: str, cats: set[str], words: list[str], i: int, parse: _Parse) -> Unread | None:
     if "verb_switch" in cats:
         after = words[i + 1 : i + 5]
-        if "off" in after:
+        if "off" in after and "off" not in parse.states:
             return Unread(f"{w} off", "action", "no base task switches something off")
-        if "on" in after and "examine_in_light" not in parse.kinds:
-            return Unread(
-                f"{w} on", "action", "no base task switches it on (only a lamp, to look at something)"
-            )
+        if "on" in after and "examine_in_light" not in parse.kinds and "on" not in parse.states:
+            return Unread(f"{w} on", "action", "no base task switches something on")
         return None
+    if "verb_break" in cats and "broken" not in parse.states:
+        return Unread(w, "action", "no base task breaks something")
     if "verb_unsupported" in cats and not cats & {"verb_any", "verb_step"}:
         return Unread(w, "action", "no base task does this")
     if "verb_unsupported_before_object" in cats and words[i + 1 : i + 2] and words[i + 1] in DETERMINERS:

@@ -32,6 +32,7 @@ from nl2hltl2plan.language.ltl_generation import llm_generate_ltl, translator_cl
 from nl2hltl2plan.language.result import Ambiguity, LanguageResult
 from nl2hltl2plan.language.scoring import match
 from nl2hltl2plan.language.spec_builder import GenerateLTL, build_spec
+from nl2hltl2plan.language.state_tasks import read_unparsed_states, state_orderings
 from nl2hltl2plan.language.suggest import not_understood, suggestion_text
 from nl2hltl2plan.language.tasks import BaseTaskSpec, task_letter, transitive_reduction
 from nl2hltl2plan.logic.hierarchical import LeafOrFormula
@@ -228,6 +229,14 @@ def _parse(
         )
         parsed = lp
         ambiguities = lp.ambiguities
+    if parsed.unparsed:  # clauses that change one object's state (SMART-LLM's skills)
+        states, left = read_unparsed_states(
+            parsed.unparsed, len(parsed.tasks), Grounder(types, scene or "the scene")
+        )
+        if states:
+            tasks = [*parsed.tasks, *states]
+            before = [*parsed.before, *state_orderings(instruction, tasks, states)]
+            parsed = parsed.model_copy(update={"tasks": tasks, "unparsed": left, "before": before})
     if not parsed.tasks:
         why = "; ".join(parsed.unparsed) or "no task verb found"
         hint = suggestion_text(instruction, world if isinstance(world, World) else None)
