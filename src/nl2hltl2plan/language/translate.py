@@ -238,7 +238,14 @@ def _parse(
             before = [*parsed.before, *state_orderings(instruction, tasks, states)]
             parsed = parsed.model_copy(update={"tasks": tasks, "unparsed": left, "before": before})
     if not parsed.tasks:
-        why = "; ".join(parsed.unparsed) or "no task verb found"
+        # the words that make it so (a negation, a skill no task has, a person), named first
+        named = [
+            str(u)
+            for u in account(instruction, [], [])
+            if u.category in ("negation", "action")
+            or u.reason.startswith(("a person", "no object of this world"))
+        ]
+        why = "; ".join(named + parsed.unparsed) or "no task verb found"
         hint = suggestion_text(instruction, world if isinstance(world, World) else None)
         raise HTTError(
             f"the offline parser understood no task in {instruction!r} ({why}){hint}; rephrase it or "
