@@ -2,6 +2,7 @@
 
     python scripts/trust_sets.py build     # tests/language/data/trust/*.txt -> *.jsonl (benchmark format)
     python scripts/trust_sets.py measure [--backend offline|grammar]   # refused / partial / converted / wrong
+    python scripts/trust_sets.py validation [--split valid_seen] [--n 2000] [--seed 1]  # check 1's flags
 
 The .txt files are hand-written, one instruction a line: `scene | instruction | base tasks | before |
 what must be refused`. Base tasks: `kind Object[/Alt] Destination [x2] [sliced] [in Container]` or
@@ -136,14 +137,47 @@ def measure(backend: str, show: bool) -> None:
     print("\n".join(details), file=sys.stderr)
 
 
+def validation(split: str, n: int, seed: int) -> None:
+    """Check 1 on composed ALFRED validation instructions: how many correct conversions it flags (false
+    refusals) and how many wrong ones it turns into refusals."""
+    from nl2hltl2plan.language.accounting import account
+    from nl2hltl2plan.language.grounding import scene_types
+    from nl2hltl2plan.language.learned.inference import parse_instruction
+    from nl2hltl2plan.language.learned.validate import validation_rows
+
+    counts: Counter[tuple[bool, bool]] = Counter()
+    for row in validation_rows(split, n, seed):
+        try:
+            r = parse_instruction(row["instruction"], scene_types(row["scene"]), row["scene"], strict=False)
+            apply_choices(r, top_candidates(r.ambiguities))
+            flagged = bool(r.unparsed or account(row["instruction"], r.tasks, r.before))
+            ok = match(r.tasks, r.before, row["tasks"], row["before"], strict=True).order_ok
+        except Nl2Hltl2PlanError:
+            flagged, ok = True, False
+        counts[(ok, flagged)] += 1
+    right, wrong = (
+        counts[(True, False)] + counts[(True, True)],
+        counts[(False, False)] + counts[(False, True)],
+    )
+    print(
+        f"{split} ({n}, seed {seed}): correct conversions flagged {counts[(True, True)]} of {right}; "
+        f"wrong conversions flagged {counts[(False, True)]} of {wrong}"
+    )
+
+
 def main() -> int:
     ap = argparse.ArgumentParser(prog="python scripts/trust_sets.py")
-    ap.add_argument("what", choices=["build", "measure"])
+    ap.add_argument("what", choices=["build", "measure", "validation"])
+    ap.add_argument("--split", default="valid_seen", choices=["valid_seen", "valid_unseen"])
+    ap.add_argument("--n", type=int, default=2000)
+    ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--backend", default="offline", choices=["offline", "grammar"])
     ap.add_argument("--show", action="store_true", help="print every line that is not converted")
     args = ap.parse_args()
     if args.what == "build":
         build()
+    elif args.what == "validation":
+        validation(args.split, args.n, args.seed)
     else:
         measure(args.backend, args.show)
     return 0
