@@ -192,6 +192,9 @@ def test_state_requests_the_world_can_do_are_done():
     ordered = run("put the apple in the fridge and then slice the tomato", world)
     assert [t.summary() for t in ordered.language.tasks][1] == "set_state Tomato sliced"
     assert ordered.language.before == [("A", "B")] and ordered.ok
+    every = run("put all the plates in the sink", world)  # FloorPlan1 holds three plates
+    assert [t.summary() for t in every.language.tasks] == ["place_two 3x Plate -> SinkBasin"] and every.ok
+    assert len(every.language.htt.leaves()) == 3
 
 
 def test_state_clauses_are_read_only_for_objects_that_take_the_state():

@@ -513,3 +513,27 @@ def _check_cycles(
         return
     names = [camel_words(a) for a, _ in cycle] + [camel_words(cycle[0][0])]
     raise HTTError(f"cyclic order in the instruction: {' before '.join(names)}")
+
+
+def take_every_instance(
+    instruction: str, tasks: Sequence[BaseTaskSpec], instances: Mapping[str, int]
+) -> list[BaseTaskSpec]:
+    """ "all the mugs" / "every mug" / "each mug": the task on that noun takes every instance the scene
+    holds (a `place` of several becomes `place_two` with that count; of one, a `place`)."""
+    toks = tokens(instruction)
+    words = [w for w, _, _ in toks]
+    mentions = [m for m in find_mentions(instruction) if not m.entry.generic]
+    out = [t.model_copy() for t in tasks]
+    for i, w in enumerate(words):
+        if "quantifier_all" not in categories(w):
+            continue
+        m = _next_mention(mentions, words, i)
+        if m is None or re.search(r"[,.;:!?]", instruction[toks[i][1] : m.char_start]):
+            continue
+        for k, t in enumerate(out):
+            held = sum(instances.get(o, 0) for o in t.object if o in m.entry.types)
+            if held < 1 or t.count == held:
+                continue
+            kind = ("place_two" if held > 1 else "place") if t.kind in ("place", "place_two") else t.kind
+            out[k] = t.model_copy(update={"kind": kind, "count": held})
+    return out

@@ -22,7 +22,7 @@ from typing import Literal, Protocol
 
 from nl2hltl2plan.errors import HTTError, LLMError, Nl2Hltl2PlanError, WorldError
 from nl2hltl2plan.language import stages
-from nl2hltl2plan.language.accounting import account
+from nl2hltl2plan.language.accounting import account, take_every_instance
 from nl2hltl2plan.language.backends import PARSERS
 from nl2hltl2plan.language.grounding import AffordanceLookup, Grounder, world_lookup
 from nl2hltl2plan.language.htt_build import build_htt
@@ -112,12 +112,15 @@ def account_words(res: LanguageResult, world: SceneLike | None) -> None:
     """Check 1 (`accounting.account`), the same for every backend: each content word the base tasks
     do not use, and each slot no word names, goes to `unparsed` with its reason (the result is then
     partial). Counts the scene cannot satisfy and cyclic orders raise HTTError."""
-    instances = None
-    if isinstance(world, World):
-        instances = Counter(o.type for o in world.objects.values() if o.present)
+    instances = scene_instances(world) if isinstance(world, World) else None
     scene = world.name if world is not None else "the scene"
     for u in account(res.instruction, res.tasks, res.before, instances, scene):
         res.unparsed.append(str(u))
+
+
+def scene_instances(world: World) -> Counter[str]:
+    """How many objects of each type the world holds (slices not yet cut left out)."""
+    return Counter(o.type for o in world.objects.values() if o.present)
 
 
 def _cross_check(res: LanguageResult, types: set[str] | None, scene: str | None) -> None:
@@ -237,6 +240,9 @@ def _parse(
             tasks = [*parsed.tasks, *states]
             before = [*parsed.before, *state_orderings(instruction, tasks, states)]
             parsed = parsed.model_copy(update={"tasks": tasks, "unparsed": left, "before": before})
+    if isinstance(world, World) and parsed.tasks:  # "all the mugs": every instance the scene holds
+        every = take_every_instance(instruction, parsed.tasks, scene_instances(world))
+        parsed = parsed.model_copy(update={"tasks": every})
     if not parsed.tasks:
         # the words that make it so (a negation, a skill no task has, a person), named first
         named = [
