@@ -1,6 +1,6 @@
 """Word accounting: every content word of an instruction is used by the parse or named as not understood.
 
-`account(instruction, tasks, before, scene)` judges the result of any backend (grammar, learned, LLM)
+`account(instruction, tasks, before, instances, scene)` judges the result of any backend (grammar, learned, LLM)
 from the outside: it reads the instruction's content words (nouns naming objects and places from
 `lexicon.txt`, verbs, counts, negations and order words from `content_words.txt`) and renders the base
 tasks back to the types, kinds, counts and orderings they use. It returns one `Unread` per content word
@@ -40,31 +40,10 @@ IMPLIED_TYPES = {
 LAMPS = frozenset({"DeskLamp", "FloorLamp"})
 DETERMINERS = {"the", "a", "an", "that", "this", "those", "these", "its", "their", "my", "your", "of"}
 # a place named after an object and one of these describes where the object is ("the apple on the table")
-LOCATIVE = {
-    "on",
-    "in",
-    "at",
-    "inside",
-    "near",
-    "beside",
-    "by",
-    "behind",
-    "under",
-    "next",
-    "from",
-    "off",
-    "below",
-    "above",
-    "beneath",
-    "underneath",
-    "across",
-    "against",
-    "between",
-    "around",
-    "along",
-    "with",
-    "of",
-}
+LOCATIVE = frozenset(
+    "on in at inside near beside by behind under next from off below above beneath underneath across "
+    "against between around along with of".split()
+)
 
 
 @dataclass(frozen=True)
