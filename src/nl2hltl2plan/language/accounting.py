@@ -1,7 +1,7 @@
 """Word accounting: every content word of an instruction is used by the parse or named as not understood.
 
-`account(instruction, tasks, before, instances, scene)` judges the result of any backend (grammar, learned, LLM)
-from the outside: it reads the instruction's content words (nouns naming objects and places from
+`account(instruction, tasks, before, instances, scene)` judges the result of any backend (grammar,
+learned, LLM) from the outside: it reads the instruction's content words (nouns naming objects and places from
 `lexicon.txt`, verbs, counts, negations and order words from `content_words.txt`) and renders the base
 tasks back to the types, kinds, counts and orderings they use. It returns one `Unread` per content word
 the base tasks do not use, and per slot of a base task that no word of the instruction names (an
