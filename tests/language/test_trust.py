@@ -208,3 +208,26 @@ def test_state_clauses_are_read_only_for_objects_that_take_the_state():
     assert read_state_clause("turn it on", g, pronoun="Laptop").object == ["Laptop"]
     assert read_state_clause("water the plants", g) is None
     assert read_state_clause("break the window", g) is None  # not in the scene
+
+
+def test_an_llm_backend_can_state_a_skill_the_world_has(stub):
+    from nl2hltl2plan.language.llm.client import LLMClient
+    from nl2hltl2plan.language.llm.settings import LLMSettings
+    from nl2hltl2plan.language.translate import translate
+
+    answer = {
+        "tasks": [
+            {"id": "1.1", "text": "break the vase", "kind": "set_state", "object": "vase", "state": "broken"}
+        ]
+    }
+    stub.answer = lambda body: json.dumps(answer)
+    client = LLMClient(LLMSettings(base_url=stub.base_url, api_key="k", max_retries=0, cache_dir=None))
+    res = translate("break the vase", _Vases(), "openai", client, build=False, actions="none")
+    assert [t.summary() for t in res.tasks] == ["set_state Vase broken"] and not res.partial
+
+
+class _Vases:
+    name = "a room with a vase"
+
+    def object_types(self) -> set[str]:
+        return {"Vase", "Shelf"}

@@ -317,8 +317,9 @@ def _ground_fields(f: stages.TaskFields, g: Grounder | None, issues: list[str], 
         count=2 if kind == "place_two" else f.count,
         sliced=sliced,
         container=one(f.container, "container") if kind == "place_in_container" else None,
-        receptacle=one(f.receptacle, "receptacle") if kind != "examine_in_light" else None,
+        receptacle=one(f.receptacle, "receptacle") if kind not in ("examine_in_light", "set_state") else None,
         light=one(f.light, "light") if kind == "examine_in_light" else None,
+        state=f.state if kind == "set_state" else None,
     )
 
 
