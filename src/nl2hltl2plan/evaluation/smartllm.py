@@ -194,7 +194,7 @@ def _plan_task(
     try:
         spec, atoms = make_spec(task, world)
     except Nl2Hltl2PlanError as exc:
-        row.update(status="no spec", reason=str(exc))
+        row.update(status="no spec", reason=str(exc), partial=str(exc).startswith("not understood"))
         return 0, 0.0, None
     problems = team.problems(atoms, world, masses)
     if problems:
