@@ -28,6 +28,7 @@ from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.backends import Backend
 from nl2hltl2plan.language.llm.client import LLMClient
 from nl2hltl2plan.language.result import Ambiguity, LanguageResult
+from nl2hltl2plan.language.suggest import not_understood
 from nl2hltl2plan.language.translate import ActionSource, Chooser, LtlSource, translate
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.planning import PlanResult, PlanStatus, plan
@@ -55,6 +56,7 @@ class PipelineOptions(BaseModel):
     starts: list[Cell] | None = None  # one per robot; default: the world's (see worlds.starts)
     capabilities: list[list[str] | None] | None = None  # per robot: verbs/atoms it can do (None: all)
     choices: dict[str, str] = Field(default_factory=dict)  # a user's picks for ambiguous words (--ask)
+    partial: bool = False  # plan what was understood when part of the instruction was not (--partial)
 
 
 @dataclass
@@ -157,6 +159,7 @@ class Outcome:
             "robots": self.robots,
             "team": self.team,
             "status": self.status.value,
+            "partial": lang.partial,
             "htt": lang.htt.model_dump(mode="json"),
             "tasks": [t.model_dump(mode="json") for t in lang.tasks],
             "before": [list(p) for p in lang.before],
@@ -190,6 +193,10 @@ def run(
     `ask`: shown the ambiguous words of the parse, returns the user's picks; they are applied and kept
     in `outcome.options.choices` (so the run can be repeated without asking).
 
+    A content word the language stage did not use (`LanguageResult.unparsed`, see
+    `language.accounting`) is a refusal (HTTError naming the words) unless `options.partial`; then the
+    rest is planned and the outcome says `partial`.
+
     `robots`: a number of robots that can do everything, or a `worlds.team.Team` of robots with
     skills and carrying capacities (their capabilities bound the allocation). Raises an
     `Nl2Hltl2PlanError` for input the pipeline cannot use (an object the scene lacks, a sentence
@@ -213,6 +220,8 @@ def run(
     lang = language_stage(instruction, world, opt, client, ask=recorded if ask is not None else None)
     if picks:
         opt = opt.model_copy(update={"choices": {**opt.choices, **picks}})
+    if lang.partial and not opt.partial:
+        raise HTTError(not_understood(lang, world))
     if lang.spec is None:
         why = "; ".join(lang.warnings + lang.issues + lang.unparsed) or "no leaf actions"
         raise HTTError(f"no hierarchical specification for {instruction!r}: {why}")

@@ -15,10 +15,11 @@ def test_offline_match_rates_on_the_benchmark(shared_data):
     records = evaluate(rows, offline_generator)
     by_n = {n: [r for r in records if r["n_base"] == n] for n in (1, 2, 3, 4)}
     rate = {n: sum(r["ok"] for r in rs) / len(rs) for n, rs in by_n.items()}
-    # measured 88 / 82 / 64 / 64 % (docs/learned.md; the grammar alone: 88 / 82 / 64 / 62 %); keep a margin
-    assert rate[1] >= 0.82 and rate[2] >= 0.75 and rate[3] >= 0.56 and rate[4] >= 0.54, rate
-    assert sum(r["ok"] for r in records) / len(records) >= 0.7
+    # a refused or partial conversion (issue 23) is a failure: measured 88 / 72 / 48 / 48 % here
+    # (results/language_trust/report.md); keep a margin
+    assert rate[1] >= 0.82 and rate[2] >= 0.66 and rate[3] >= 0.42 and rate[4] >= 0.42, rate
+    assert sum(r["ok"] for r in records) / len(records) >= 0.6
     clean = [r for r in records if r["clean"]]
-    assert len(clean) == 150 and sum(r["ok"] for r in clean) / len(clean) >= 0.76  # measured 81 %
+    assert len(clean) == 150 and sum(r["ok"] for r in clean) / len(clean) >= 0.66
     assert "| all | 200 |" in table(records)
     assert all(not r["error"] for r in records if r["ok"])

@@ -116,3 +116,11 @@ def test_serve_command_errors(monkeypatch, capsys):
     monkeypatch.setattr(importlib.util, "find_spec", lambda n, *a: None if n == "fastapi" else real(n, *a))
     assert main(["serve"]) == 2
     assert "pip install 'nl2hltl2plan[web]'" in capsys.readouterr().err
+
+
+def test_a_partly_understood_instruction_is_refused_unless_partial_is_asked(client):
+    body = {"instruction": "put the apple in the fridge and make some tea", "world": "demo", "robots": 1}
+    refused = client.post("/api/plan", json=body)
+    assert refused.status_code == 422 and "'make' (action)" in refused.json()["error"]
+    partial = client.post("/api/plan", json={**body, "partial": True})
+    assert partial.status_code == 200 and partial.json()["partial"] is True

@@ -81,6 +81,16 @@ def run_tabletop(args: argparse.Namespace) -> int:
         summary = run_bench(args.out, instances=args.instances, seed=args.seed, client=client)
     print((args.out / "report.md").read_text())
     print(f"wrote {args.out / 'summary.json'} ({len(summary['tasks'])} tasks)", file=sys.stderr)
+    return _errored_exit(summary["errored"])
+
+
+def _errored_exit(errored: int) -> int:
+    """Exit 1 when the LLM failed on some instances (their rows say `errored`; not a result)."""
+    if errored:
+        print(
+            f"error: the LLM failed on {errored} baseline instance(s) (errored, not scored)", file=sys.stderr
+        )
+        return 1
     return 0
 
 
@@ -91,4 +101,4 @@ def run_handover(args: argparse.Namespace) -> int:
         summary = run_bench(args.out, instances=args.instances, seed=args.seed, client=client)
     print((args.out / "report.md").read_text())
     print(f"wrote {args.out / 'summary.json'} ({len(summary['tasks'])} tasks)", file=sys.stderr)
-    return 0
+    return _errored_exit(sum(t["baseline"].get("errored", 0) for t in summary["tasks"]))

@@ -71,6 +71,12 @@ def register(sub: Any) -> None:
         help="keep objects the scene lacks (reported as issues) instead of failing",
     )
     p.add_argument(
+        "--partial",
+        action="store_true",
+        help="plan what was understood when part of the instruction was not (the result says partial; "
+        "default: refuse, exit 2)",
+    )
+    p.add_argument(
         "--ask",
         action="store_true",
         help="ask on the terminal which scene type an ambiguous word means ('the table': dining "
@@ -122,6 +128,7 @@ def run(args: argparse.Namespace) -> int:
         ltl=args.ltl,
         actions=args.actions,
         strict=not args.lenient,
+        partial=args.partial,
         starts=parse_cells(args.starts) if args.starts else None,
         **planner_options(args),
     )
@@ -158,6 +165,8 @@ def run(args: argparse.Namespace) -> int:
         print(json.dumps(payload, indent=1, default=str))
     else:
         _print_human(outcome)
+    if outcome.language.partial:
+        print("partial: only part of the instruction is planned (--partial)", file=sys.stderr)
     if not outcome.ok:
         print(f"error: no plan: {outcome.status.value}: {outcome.result.reason}", file=sys.stderr)
         return EXIT_NO_PLAN

@@ -19,7 +19,7 @@ from typing import Any, Literal
 
 from pydantic import BaseModel, Field
 
-from nl2hltl2plan.errors import Nl2Hltl2PlanError, WorldError
+from nl2hltl2plan.errors import LLMError, Nl2Hltl2PlanError, WorldError
 from nl2hltl2plan.language.grounding import camel_words
 from nl2hltl2plan.worlds.checker import check
 from nl2hltl2plan.worlds.model import Cell, World
@@ -41,6 +41,7 @@ class BaselineOutcome:
     calls: list[Call] = field(default_factory=list)
     reasons: list[str] = field(default_factory=list)
     plan: Plan | None = None
+    errored: bool = False  # the LLM failed (HTTP errors, no connection, invalid answers): not a result
 
 
 def script_plan(world: World, calls: list[Call], start: Cell) -> Plan:
@@ -153,6 +154,10 @@ def llm_planner(world: World, instruction: str, start: Cell, gt: GTInstance, cli
     try:
         answer = client.ask(llm_prompt(world, instruction, start), LLMPlanAnswer, "tabletop_llm_planner")
         calls = parse_llm_answer(world, answer)
+    except LLMError as exc:  # a dead LLM is an error of the run, not a failure of the baseline
+        return BaselineOutcome(
+            "llm-planner", False, None, time.perf_counter() - t0, reasons=[f"LLM failed: {exc}"], errored=True
+        )
     except Nl2Hltl2PlanError as exc:
         return BaselineOutcome("llm-planner", False, None, time.perf_counter() - t0, reasons=[str(exc)])
     return judge("llm-planner", world, calls, start, gt, t0)

@@ -116,11 +116,14 @@ def _baseline_row(llm: list[dict[str, Any]]) -> dict[str, Any]:
     if not llm:
         return {"name": "llm-planner", "status": "not run", "reason": "no LLM configured"}
     good = [r for r in llm if r["success"]]
+    errored = sum(1 for r in llm if r.get("errored"))
+    ran = len(llm) - errored
     cost_mean, cost_std = mean_std([r["cost"] for r in good])
     return {
         "name": "llm-planner",
         "status": "run",
-        "success_rate": len(good) / len(llm),
+        "errored": errored,  # instances where the LLM failed: not in the success rate
+        "success_rate": len(good) / ran if ran else None,
         "cost_mean": cost_mean,
         "cost_std": cost_std,
         "runtime_mean_s": mean_std([r["runtime_s"] for r in llm])[0],
@@ -138,6 +141,9 @@ def language_check(task: HandoverTask, seed: int = 0) -> dict[str, Any]:
         language = language_stage(task.instruction, hw.as_world())
     except Nl2Hltl2PlanError as exc:
         return {"converted": False, "equivalent": False, "why": f"language stage: {exc}"}
+    if language.partial:  # part of the instruction was not understood: not a conversion
+        why = f"not understood: {'; '.join(language.unparsed)}"
+        return {"converted": False, "equivalent": False, "why": why}
     if language.spec is None:
         return {"converted": False, "equivalent": False, "why": "; ".join(language.warnings) or "no spec"}
     out: dict[str, Any] = {
@@ -225,7 +231,10 @@ def draw_pictures(tasks: list[HandoverTask], seed: int, out: Path) -> list[str]:
 
 
 def _llm_cell(baseline: dict[str, Any]) -> str:
-    return "not run" if baseline.get("status") != "run" else f"{100 * baseline['success_rate']:.0f}"
+    if baseline.get("status") != "run":
+        return "not run"
+    rate = baseline["success_rate"]
+    return f"errored ({baseline['errored']})" if rate is None else f"{100 * rate:.0f}"
 
 
 def handover_markdown(summary: dict[str, Any], pictures: list[str]) -> str:

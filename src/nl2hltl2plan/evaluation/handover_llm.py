@@ -15,7 +15,7 @@ from typing import Any, Literal
 
 from pydantic import BaseModel, Field
 
-from nl2hltl2plan.errors import Nl2Hltl2PlanError, WorldError
+from nl2hltl2plan.errors import LLMError, Nl2Hltl2PlanError, WorldError
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.worlds.handover import ARMS, HandoverWorld, check_handover, execute_handover
 from nl2hltl2plan.worlds.model import Cell
@@ -133,6 +133,10 @@ def llm_handover(hw: HandoverWorld, spec: HierarchicalSpec, instruction: str, cl
     try:
         answer = client.ask(handover_prompt(hw, instruction), HandoverAnswer, "handover_llm_planner")
         plan = answer_plan(hw, answer)
+    except LLMError as exc:  # a dead LLM is an error of the run, not a failure of the baseline
+        reasons = [f"LLM failed: {exc}"]
+        return {"success": False, "errored": True, "cost": None, "runtime_s": time.perf_counter() - t0,
+                "reasons": reasons}
     except Nl2Hltl2PlanError as exc:
         return {"success": False, "cost": None, "runtime_s": time.perf_counter() - t0, "reasons": [str(exc)]}
     execution = execute_handover(hw, plan, sorted(spec.atoms()))

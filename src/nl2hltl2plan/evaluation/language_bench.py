@@ -20,7 +20,7 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable
 from pathlib import Path
 
-from nl2hltl2plan.errors import Nl2Hltl2PlanError
+from nl2hltl2plan.errors import LLMError, Nl2Hltl2PlanError
 from nl2hltl2plan.evaluation.alfred import instance_fields
 from nl2hltl2plan.evaluation.rows import LanguageRecord, ScenarioRow
 from nl2hltl2plan.evaluation.runner import Row, Scenario, load_rows
@@ -50,6 +50,8 @@ def language_record(gt: GTInstance, options: PipelineOptions, client: LLMClient 
     lenient = options.model_copy(update={"strict": False})
     try:
         result = language_stage(gt.instruction, world, lenient, client, ask=top_candidates)
+    except LLMError as exc:  # a dead LLM is an error of the run, not an answer about the instruction
+        return rec.model_copy(update={"error": str(exc), "errored": True, "stage": "task decomposition"})
     except Nl2Hltl2PlanError as exc:
         # a task this world cannot provide (no such object, a receptacle that refuses it): the
         # conversion is still scored; planning fails with this reason
@@ -62,6 +64,8 @@ def language_record(gt: GTInstance, options: PipelineOptions, client: LLMClient 
                 client,
                 ask=top_candidates,
             )
+        except LLMError as exc2:
+            return rec.model_copy(update={"error": str(exc2), "errored": True, "stage": "task decomposition"})
         except Nl2Hltl2PlanError as exc2:
             return rec.model_copy(update={"error": str(exc2), "stage": "task decomposition"})
     verdict = match(result.tasks, result.before, [t.model_dump() for t in gt.tasks], gt.before)
@@ -76,11 +80,12 @@ def language_record(gt: GTInstance, options: PipelineOptions, client: LLMClient 
             "llm_calls": result.llm_calls,
             "levels": result.spec.to_json_obj() if result.spec is not None else None,
             "tasks_ok": verdict.tasks_ok,
-            "conversion_ok": verdict.order_ok,
+            "partial": result.partial,
+            "conversion_ok": verdict.order_ok and not result.partial,
             "match_reasons": verdict.reasons,
         }
     )
-    if not verdict.tasks_ok:
+    if not verdict.tasks_ok or result.partial:
         rec.stage = "task decomposition"
     elif not verdict.order_ok:
         rec.stage = "temporal extraction"
@@ -97,7 +102,10 @@ def translate_instances(
     progress: Callable[[GTInstance], None] | None = None,
 ) -> dict[str, LanguageRecord]:
     """Language records for every instance, reusing those already in `out` (JSON lines)."""
-    records = {k: LanguageRecord.model_validate(v) for k, v in load_rows(out).items()}
+    # records of a failed LLM are not answers: they run again
+    records = {
+        k: rec for k, v in load_rows(out).items() if not (rec := LanguageRecord.model_validate(v)).errored
+    }
     with out.open("a") as fh:
         for gt in gts:
             if gt.id not in records:
@@ -120,7 +128,15 @@ def language_job(
         rec = records[scenario.instance]
         world = build_benchmark_world(gt)
         starts = start_cells(world, scenario.robots, gt=gt, draw=scenario.draw)
-        base = {**instance_fields(world, gt, starts), "conversion_ok": rec.conversion_ok}
+        base = {
+            **instance_fields(world, gt, starts),
+            "conversion_ok": rec.conversion_ok,
+            "partial": rec.partial,
+        }
+        if rec.errored:  # the LLM failed: the scenario errored (the run exits 1, a resume reruns it)
+            return ScenarioRow.model_validate(
+                {**base, "status": "error", "reason": f"LLM failed: {rec.error}", "planning_ok": False}
+            ).to_json()
         if not rec.levels:
             # no spec: either the language stage failed, or the tasks cannot be grounded in this
             # world (then the planner has nothing to plan: a planning failure, like infeasible)

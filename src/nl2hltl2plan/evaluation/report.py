@@ -90,6 +90,7 @@ def summarize(rows: Sequence[ScenarioRow]) -> dict[str, Any]:
         "success": sum(1 for r in rows if r.success),
         "feasible_success": sum(1 for r in feasible if r.success),
         "errored": sum(1 for r in rows if r.status == "error" or r.killed),
+        "partial": sum(1 for r in rows if r.partial),  # part of the instruction not understood (a failure)
         "infeasible_reported": infeasible_right,
         "statuses": statuses,
         "plan_time_s": {

@@ -47,6 +47,8 @@ def _rates(rows: Sequence[ScenarioRow]) -> dict[str, Any]:
     converted = [r for r in rows if r.conversion_ok]
     return {
         "conversion_rate": _rate(len(converted), len(rows)),
+        # part of the instruction not understood (refused by `plan`; a conversion failure here)
+        "partial_rate": _rate(sum(1 for r in rows if r.partial), len(rows)),
         "planning_rate": _rate(sum(1 for r in converted if r.planning_ok), len(converted)),
         "overall_rate": _rate(sum(1 for r in rows if r.success), len(rows)),
     }
@@ -102,6 +104,10 @@ def table1_markdown(summary: dict[str, Any]) -> str:
     lines.append(
         f"| all | {summary['scenarios']} | **{_pct(summary['overall_rate'])}** "
         f"({_pct(summary['conversion_rate'])}, {_pct(summary['planning_rate'])}) | | | | | | |"
+    )
+    lines.append(
+        f"\nPartly understood instructions (refused by `plan`, conversion failures here): "
+        f"{_pct(summary['partial_rate'])} % of the scenarios."
     )
     return "\n".join(lines)
 

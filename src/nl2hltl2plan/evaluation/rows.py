@@ -63,6 +63,7 @@ class ScenarioRow(BaseModel):
     gt_feasible: bool | None = None
     ambiguous: bool = False
     conversion_ok: bool | None = None
+    partial: bool = False  # part of the instruction was not understood (a conversion failure)
     planning_ok: bool | None = None
     stage: str | None = None
     starts: list[list[int]] = Field(default_factory=list)
@@ -94,6 +95,8 @@ class LanguageRecord(BaseModel):
     backend: str
     ok: bool = False  # a hierarchical spec was built
     error: str | None = None  # why the spec cannot be planned in this world (grounding), if so
+    errored: bool = False  # the LLM failed (HTTP errors, no connection, invalid answers): rerun on resume
+    partial: bool = False  # part of the instruction was not understood (`unparsed`): a conversion failure
     tasks: list[dict[str, Any]] = Field(default_factory=list)
     before: list[list[str]] = Field(default_factory=list)
     unparsed: list[str] = Field(default_factory=list)

@@ -6,7 +6,8 @@ run leaves no orphaned worker); the child runs `job(scenario) -> dict` and sends
 parent kills a child that runs past `hard_timeout_s` and records a "timeout" row marked `killed`, so
 nothing can hang, and a job that raises (or a worker that dies) records an "error" row with a
 one-line reason (no traceback). Rows are appended to `out` as JSON lines as they finish; with
-`resume`, scenarios whose key is already in `out` are not run again.
+`resume`, scenarios whose key is already in `out` are not run again, except those whose row is an
+"error" (the job raised: a dead LLM, a crashed worker), which run again.
 
 A results file is repaired before anything is appended: a torn last line (a run killed mid-write)
 or any line that is not a JSON object with a "key" is reported (`notes`, default stderr) and
@@ -147,7 +148,7 @@ def run_scenarios(
         sink = out.open("a")
     except OSError as exc:
         raise RunnerError(f"cannot write the results file {out}: {exc.strerror}") from None
-    todo = [s for s in scenarios if s.key not in done]
+    todo = [s for s in scenarios if s.key not in done or done[s.key].get("status") == "error"]
     running: dict[Child, Scenario] = {}
     finished = len(scenarios) - len(todo)
     with sink:

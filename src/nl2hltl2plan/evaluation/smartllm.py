@@ -117,6 +117,8 @@ def llm_maker(backend: Backend, client: Any = None) -> SpecMaker:
         from nl2hltl2plan.pipeline import PipelineOptions, language_stage
 
         result = language_stage(task.text, world, PipelineOptions(backend=backend), client)
+        if result.partial:  # part of the task was not understood: a conversion failure, never a plan
+            raise SpecError(f"not understood: {'; '.join(result.unparsed)}")
         spec = result.spec
         if spec is None:
             why = "; ".join(result.issues or result.unparsed or ["no specification built"])
@@ -192,7 +194,7 @@ def _plan_task(
     try:
         spec, atoms = make_spec(task, world)
     except Nl2Hltl2PlanError as exc:
-        row.update(status="no spec", reason=str(exc))
+        row.update(status="no spec", reason=str(exc), partial=str(exc).startswith("not understood"))
         return 0, 0.0, None
     problems = team.problems(atoms, world, masses)
     if problems:

@@ -92,6 +92,9 @@ def run_ours(task: TabletopTask, world: World) -> OursOutcome:
     except Nl2Hltl2PlanError as exc:
         return OursOutcome(False, None, time.perf_counter() - t0, 0.0, [], [], None, [str(exc)])
     runtime = time.perf_counter() - t0
+    if language.partial:  # part of the instruction was not understood: a failure, never a plan
+        why = f"not understood: {'; '.join(language.unparsed)}"
+        return OursOutcome(False, None, runtime, language_s, language.tasks, language.before, None, [why])
     if result is None or not result.solved:
         why = "no hierarchical spec" if result is None else f"planner: {result.status} {result.reason}"
         return OursOutcome(False, None, runtime, language_s, language.tasks, language.before, None, [why])
@@ -108,13 +111,17 @@ def instance_seed(seed: int, task_id: int, k: int) -> int:
 
 
 def _row(name: str, outcomes: list[Any]) -> dict[str, Any]:
+    """Success over the instances that ran; those where the LLM failed are counted as `errored`."""
+    errored = sum(1 for o in outcomes if getattr(o, "errored", False))
+    ran = len(outcomes) - errored
     ok = [o for o in outcomes if o.success]
     cost_mean, cost_std = mean_std([o.cost for o in ok if o.cost is not None])
     rt_mean, rt_std = mean_std([o.runtime_s for o in outcomes])
     return {
         "name": name,
         "instances": len(outcomes),
-        "success_rate": len(ok) / len(outcomes) if outcomes else 0.0,
+        "errored": errored,
+        "success_rate": len(ok) / ran if ran else None,
         "cost_mean": cost_mean,
         "cost_std": cost_std,
         "runtime_mean_s": rt_mean,
@@ -160,7 +167,7 @@ def run_task(task: TabletopTask, instances: int, seed: int, client: Any = None) 
 
 def _brief(o: Any) -> dict[str, Any]:
     return {"success": o.success, "cost": o.cost, "runtime_s": round(o.runtime_s, 4),
-            "reasons": list(o.reasons)[:3]}
+            "reasons": list(o.reasons)[:3], "errored": getattr(o, "errored", False)}
 
 
 def run_bench(out: Path, instances: int = DEFAULT_INSTANCES, seed: int = 0, client: Any = None,
@@ -176,6 +183,7 @@ def run_bench(out: Path, instances: int = DEFAULT_INSTANCES, seed: int = 0, clie
         "runtime": "language + planning wall time per instance (s); mention order: same language time",
         "llm_planner": "run" if client is not None else "not run (no LLM configured)",
         "tasks": rows,
+        "errored": sum(b.get("errored", 0) for r in rows for b in r["baselines"]),
     }
     out.mkdir(parents=True, exist_ok=True)
     write_json(out / "summary.json", summary, "summary file")

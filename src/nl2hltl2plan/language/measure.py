@@ -23,6 +23,7 @@ from typing import Any
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.io import write_json
+from nl2hltl2plan.language.accounting import account
 from nl2hltl2plan.language.grounding import scene_types
 from nl2hltl2plan.language.scoring import match
 from nl2hltl2plan.language.tasks import BaseTaskSpec
@@ -117,8 +118,11 @@ def evaluate(rows: list[dict[str, Any]], generate: Generator, progress: bool = F
         err = ""
         try:
             tasks, before, unparsed = generate(row["instruction"], scene_types(row["scene"]), row["scene"])
+            # check 1 (word accounting), as `plan` applies it: a partial conversion is a failure
+            unparsed = unparsed + [str(u) for u in account(row["instruction"], tasks, before)]
         except Nl2Hltl2PlanError as exc:
             tasks, before, unparsed, err = [], [], [], str(exc)
+        refused = bool(err or unparsed)
         strict = match(tasks, before, row["tasks"], row["before"], strict=True)
         lenient = match(tasks, before, row["tasks"], row["before"], strict=False)
         out.append(
@@ -126,9 +130,10 @@ def evaluate(rows: list[dict[str, Any]], generate: Generator, progress: bool = F
                 "id": row["id"],
                 "n_base": row["n_base"],
                 "clean": bool(row["feasible"] and not row["ambiguous"]),
-                "tasks_ok": strict.tasks_ok,
-                "ok": strict.order_ok,
-                "lenient_ok": lenient.order_ok,
+                "tasks_ok": strict.tasks_ok and not refused,
+                "ok": strict.order_ok and not refused,
+                "lenient_ok": lenient.order_ok and not refused,
+                "refused": refused,
                 "reasons": strict.reasons,
                 "error": err,
                 "unparsed": unparsed,
@@ -148,8 +153,9 @@ def table(records: list[dict[str, Any]]) -> str:
     """Markdown table: per n_base, tasks-match and full-match shares with counts (all /
     feasible-and-unambiguous)."""
     lines = [
-        "| base tasks | n | tasks match | tasks+order match | lenient types | clean n | clean tasks+order |",
-        "| --- | --- | --- | --- | --- | --- | --- |",
+        "| base tasks | n | refused or partial | tasks match | tasks+order match | lenient types | clean n "
+        "| clean refused or partial | clean tasks+order |",
+        "| --- | --- | --- | --- | --- | --- | --- | --- | --- |",
     ]
     groups = sorted({r["n_base"] for r in records})
     for g in [*groups, "all"]:
@@ -161,8 +167,8 @@ def table(records: list[dict[str, Any]]) -> str:
             return f"{100 * k / len(xs):.0f}% ({k})" if xs else "-"
 
         lines.append(
-            f"| {g} | {len(rs)} | {pct(rs, 'tasks_ok')} | {pct(rs, 'ok')} | {pct(rs, 'lenient_ok')} | "
-            f"{len(cl)} | {pct(cl, 'ok')} |"
+            f"| {g} | {len(rs)} | {pct(rs, 'refused')} | {pct(rs, 'tasks_ok')} | {pct(rs, 'ok')} | "
+            f"{pct(rs, 'lenient_ok')} | {len(cl)} | {pct(cl, 'refused')} | {pct(cl, 'ok')} |"
         )
     return "\n".join(lines)
 

@@ -43,6 +43,11 @@ class LanguageResult(BaseModel):
     llm_calls: dict[str, int] = Field(default_factory=dict)
 
     @property
+    def partial(self) -> bool:
+        """Part of the instruction was not understood (`unparsed` names it, with the reason)."""
+        return bool(self.unparsed)
+
+    @property
     def spec_text(self) -> str | None:
         return format_spec(self.spec) if self.spec is not None else None
 

@@ -30,6 +30,7 @@ from nl2hltl2plan.language.llm.client import LLMClient, Validator
 from nl2hltl2plan.language.prompts import load_prompt
 from nl2hltl2plan.language.tasks import Kind
 from nl2hltl2plan.worlds.plan import ACTION_ARITY
+from nl2hltl2plan.worlds.tasks import State
 
 MAX_TASKS = 12
 MAX_TEXT = 300  # characters of a task's text
@@ -88,9 +89,14 @@ class TaskFields(BaseModel):
     container: str | None = Field(default=None, max_length=MAX_WORD)
     receptacle: str | None = Field(default=None, max_length=MAX_WORD)
     light: str | None = Field(default=None, max_length=MAX_WORD)
+    state: State | None = None  # set_state only
 
     @model_validator(mode="after")
     def _fields_of_kind(self) -> TaskFields:
+        if self.kind == "set_state":
+            if self.state is None:
+                raise ValueError(f"task {self.id}: set_state needs a state (on, off, broken, ...)")
+            return self
         if self.kind == "examine_in_light" and not self.light:
             raise ValueError(f"task {self.id}: examine_in_light needs a light (the lamp)")
         if self.kind != "examine_in_light" and not self.receptacle:
@@ -114,6 +120,7 @@ class DecompNode(BaseModel):
     container: str | None = Field(default=None, max_length=MAX_WORD)
     receptacle: str | None = Field(default=None, max_length=MAX_WORD)
     light: str | None = Field(default=None, max_length=MAX_WORD)
+    state: State | None = None
     subtasks: list[TaskFields] = Field(default_factory=list, max_length=MAX_TASKS)
 
     @model_validator(mode="after")

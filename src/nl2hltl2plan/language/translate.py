@@ -16,11 +16,13 @@ relation compiler as GenerateLTL unless `ltl` asks for an LLM / learned translat
 
 from __future__ import annotations
 
+from collections import Counter
 from collections.abc import Callable
 from typing import Literal, Protocol
 
 from nl2hltl2plan.errors import HTTError, LLMError, Nl2Hltl2PlanError, WorldError
 from nl2hltl2plan.language import stages
+from nl2hltl2plan.language.accounting import account, take_every_instance
 from nl2hltl2plan.language.backends import PARSERS
 from nl2hltl2plan.language.grounding import AffordanceLookup, Grounder, world_lookup
 from nl2hltl2plan.language.htt_build import build_htt
@@ -30,6 +32,8 @@ from nl2hltl2plan.language.ltl_generation import llm_generate_ltl, translator_cl
 from nl2hltl2plan.language.result import Ambiguity, LanguageResult
 from nl2hltl2plan.language.scoring import match
 from nl2hltl2plan.language.spec_builder import GenerateLTL, build_spec
+from nl2hltl2plan.language.state_tasks import read_unparsed_states, state_orderings
+from nl2hltl2plan.language.suggest import not_understood, suggestion_text
 from nl2hltl2plan.language.tasks import BaseTaskSpec, task_letter, transitive_reduction
 from nl2hltl2plan.logic.hierarchical import LeafOrFormula
 from nl2hltl2plan.logic.relations import compile_relations
@@ -86,20 +90,37 @@ def translate(
     scene = world.name if world is not None else None
     if backend in PARSERS:
         look = world_lookup(world) if isinstance(world, World) else None
-        res = _parse(backend, instruction, types, scene, strict, look)
+        res = _parse(backend, instruction, types, scene, strict, look, world)
         picked = dict(choices or {})
         if ask is not None and res.ambiguities:
             picked.update(ask(res.ambiguities))
         apply_choices(res, picked)
-        _finish(res, world, backend, client, ltl, actions, build)
+        account_words(res, world)
+        _finish_or_refuse(res, world, backend, client, ltl, actions, build)
         return res
     if client is None:
         raise LLMError(f"backend {backend} needs an LLM client (see backends.open_client)")
     with client.instruction():  # one deadline for every request this instruction makes
         res = _llm(instruction, types, scene, client, strict)
         _cross_check(res, types, scene)
-        _finish(res, world, backend, client, ltl, actions, build)
+        account_words(res, world)
+        _finish_or_refuse(res, world, backend, client, ltl, actions, build)
     return res
+
+
+def account_words(res: LanguageResult, world: SceneLike | None) -> None:
+    """Check 1 (`accounting.account`), the same for every backend: each content word the base tasks
+    do not use, and each slot no word names, goes to `unparsed` with its reason (the result is then
+    partial). Counts the scene cannot satisfy and cyclic orders raise HTTError."""
+    instances = scene_instances(world) if isinstance(world, World) else None
+    scene = world.name if world is not None else "the scene"
+    for u in account(res.instruction, res.tasks, res.before, instances, scene):
+        res.unparsed.append(str(u))
+
+
+def scene_instances(world: World) -> Counter[str]:
+    """How many objects of each type the world holds (slices not yet cut left out)."""
+    return Counter(o.type for o in world.objects.values() if o.present)
 
 
 def _cross_check(res: LanguageResult, types: set[str] | None, scene: str | None) -> None:
@@ -117,6 +138,25 @@ def _cross_check(res: LanguageResult, types: set[str] | None, scene: str | None)
     if not verdict.order_ok:
         why = "; ".join(verdict.reasons[:2]) or "different base tasks"
         res.warnings.append(f"the learned parser reads this instruction differently from the LLM: {why}")
+
+
+def _finish_or_refuse(
+    res: LanguageResult,
+    world: SceneLike | None,
+    backend: str,
+    client: LLMClient | None,
+    ltl: LtlSource,
+    actions: ActionSource,
+    build: bool,
+) -> None:
+    """`_finish`; a task of a partly understood parse that the world cannot do is reported as what was
+    not understood (the cause in brackets), not as a world error."""
+    try:
+        _finish(res, world, backend, client, ltl, actions, build)
+    except (WorldError, HTTError) as exc:
+        if not res.partial:
+            raise
+        raise HTTError(not_understood(res, world if isinstance(world, World) else None, str(exc))) from None
 
 
 def _finish(
@@ -176,6 +216,7 @@ def _parse(
     scene: str | None,
     strict: bool,
     look: AffordanceLookup | None,
+    world: SceneLike | None = None,
 ) -> LanguageResult:
     """The parser backends: the grammar with the learned slot model (offline / learned), or the grammar."""
     from nl2hltl2plan.language import learned, offline
@@ -191,11 +232,30 @@ def _parse(
         )
         parsed = lp
         ambiguities = lp.ambiguities
+    if parsed.unparsed:  # clauses that change one object's state (SMART-LLM's skills)
+        states, left = read_unparsed_states(
+            parsed.unparsed, len(parsed.tasks), Grounder(types, scene or "the scene")
+        )
+        if states:
+            tasks = [*parsed.tasks, *states]
+            before = [*parsed.before, *state_orderings(instruction, tasks, states)]
+            parsed = parsed.model_copy(update={"tasks": tasks, "unparsed": left, "before": before})
+    if isinstance(world, World) and parsed.tasks:  # "all the mugs": every instance the scene holds
+        every = take_every_instance(instruction, parsed.tasks, scene_instances(world))
+        parsed = parsed.model_copy(update={"tasks": every})
     if not parsed.tasks:
-        why = "; ".join(parsed.unparsed) or "no task verb found"
+        # the words that make it so (a negation, a skill no task has, a person), named first
+        named = [
+            str(u)
+            for u in account(instruction, [], [])
+            if u.category in ("negation", "action")
+            or u.reason.startswith(("a person", "no object of this world"))
+        ]
+        why = "; ".join(named + parsed.unparsed) or "no task verb found"
+        hint = suggestion_text(instruction, world if isinstance(world, World) else None)
         raise HTTError(
-            f"the offline parser understood no task in {instruction!r} ({why}); rephrase it or use an "
-            "LLM backend"
+            f"the offline parser understood no task in {instruction!r} ({why}){hint}; rephrase it or "
+            "use an LLM backend"
         )
     htt, task_node, leaf_task = build_htt(
         instruction, parsed.tasks, parsed.before, parsed.groups, parsed.group_texts
@@ -257,8 +317,9 @@ def _ground_fields(f: stages.TaskFields, g: Grounder | None, issues: list[str], 
         count=2 if kind == "place_two" else f.count,
         sliced=sliced,
         container=one(f.container, "container") if kind == "place_in_container" else None,
-        receptacle=one(f.receptacle, "receptacle") if kind != "examine_in_light" else None,
+        receptacle=one(f.receptacle, "receptacle") if kind not in ("examine_in_light", "set_state") else None,
         light=one(f.light, "light") if kind == "examine_in_light" else None,
+        state=f.state if kind == "set_state" else None,
     )
 
 

@@ -49,6 +49,7 @@ class PlanRequest(BaseModel):
     robots: int = Field(default=1, ge=1, le=MAX_ROBOTS)
     objective: str = Field(default="min", pattern="^(min|minmax)$")
     plan_timeout_s: float = Field(default=60.0, gt=0, le=600)
+    partial: bool = False  # plan what was understood of a partly understood instruction (`plan --partial`)
 
 
 def _error(status: int, message: str) -> JSONResponse:
@@ -147,6 +148,7 @@ def create_app() -> FastAPI:
             backend="offline",
             objective=req.objective,  # type: ignore[arg-type]  # the pattern admits only min / minmax
             plan_timeout_s=req.plan_timeout_s,
+            partial=req.partial,
         )
         try:
             with lock:

@@ -52,9 +52,30 @@ Kind = Literal[
     "clean_place",
     "heat_place",
     "cool_place",
+    "set_state",  # switch on/off, break, slice, open, close or pick up one object (SMART-LLM's skills)
 ]
 KINDS: tuple[str, ...] = Kind.__args__  # type: ignore[attr-defined]
 SLOTS = ("object", "container", "receptacle", "light")  # a base task's typed slots
+State = Literal["on", "off", "broken", "sliced", "open", "closed", "held"]
+STATE_WORDS = {
+    "on": "switched on",
+    "off": "switched off",
+    "broken": "broken",
+    "sliced": "sliced",
+    "open": "opened",
+    "closed": "closed",
+    "held": "picked up",
+}
+# a set_state task's state -> the affordance its object needs (None: see `_state_ok`)
+STATE_FLAG: dict[str, str | None] = {
+    "on": "toggleable",
+    "off": "toggleable",
+    "broken": None,
+    "sliced": "sliceable",
+    "open": "openable",
+    "closed": "openable",
+    "held": "pickupable",
+}
 APPLIANCE = {"clean_place": "SinkBasin", "heat_place": "Microwave", "cool_place": "Fridge"}
 TREATMENT = {"clean_place": "cleanable", "heat_place": "heatable", "cool_place": "coolable"}
 MAX_COUNT = 50  # no AI2-THOR scene has more instances of one type
@@ -71,6 +92,8 @@ def slots_of(kind: str) -> tuple[str, ...]:
         return ("object", "container", "receptacle")
     if kind == "examine_in_light":
         return ("object", "light")
+    if kind == "set_state":
+        return ("object",)
     return ("object", "receptacle")
 
 
@@ -114,12 +137,15 @@ class BaseTask(BaseModel):
     container: list[str] | None = None
     receptacle: list[str] | None = None
     light: list[str] | None = None
+    state: State | None = None  # the state a set_state task brings its object into
 
     def summary(self) -> str:
         """One readable line, e.g. `clean_place Potato(sliced) -> Fridge`."""
         obj = "|".join(self.object) + ("(sliced)" if self.sliced else "")
         if self.count > 1:
             obj = f"{self.count}x {obj}"
+        if self.kind == "set_state":
+            return f"{self.kind} {obj} {self.state}"
         if self.kind == "examine_in_light":
             return f"{self.kind} {obj} under {'|'.join(self.light or ['?'])}"
         inner = f" in {'|'.join(self.container)}" if self.container else ""
@@ -143,6 +169,8 @@ class BaseTask(BaseModel):
         """Readable reasons the world cannot provide this task (empty: it can), GT `issues` style."""
         issues: list[str] = []
         roles: list[list[str]] = [self.object]
+        if self.kind == "set_state":
+            return self._state_missing(world)
         if self.kind == "place_in_container":
             roles.append(self.container or [])
         if self.kind != "examine_in_light":
@@ -173,6 +201,17 @@ class BaseTask(BaseModel):
             return [f"{self.id}: {' or '.join(self.object)} cannot be sliced"]
         if not self._bindings(world):
             return [f"{self.id}: {self._no_binding_reason(world)}"]
+        return []
+
+    def _state_missing(self, world: World) -> list[str]:
+        why = _lack(world, self.object) or (
+            _lack(world, list(KNIFE_TYPES)) if self.state == "sliced" else None
+        )
+        if why:
+            return [f"{self.id}: {why}"]
+        if not self._bindings(world):
+            done = STATE_WORDS.get(self.state or "", str(self.state))
+            return [f"{self.id}: no {' or '.join(self.object)} in {world.name} can be {done}"]
         return []
 
     # ------------------------------------------------------------ recipes
@@ -206,6 +245,8 @@ class BaseTask(BaseModel):
     def _bindings(self, world: World) -> list[dict[str, str]]:
         """Type choices (O, C, R, L) available in the world whose receptacles accept what they get."""
         objs = _available(world, self.object)
+        if self.kind == "set_state":
+            return [{"O": o, "held": o} for o in objs if _state_ok(world, o, self.state)]
         if self.sliced:
             objs = [o for o in objs if world.instances(o)[0].affordances.sliceable]
             if sliced_type_missing := [o for o in objs if not world.instances(sliced_type(o))]:
@@ -273,6 +314,8 @@ class BaseTask(BaseModel):
             opens(_open_for_put(world, rec, demand))
             add(f"put({obj},{rec})")
 
+        if self.kind == "set_state":
+            return [self._state_recipe(world, o)]
         if self.sliced and slice_here:
             knife = next(k for k in KNIFE_TYPES if _available(world, [k]))
             opens(_access(world, knife, 1))
@@ -314,6 +357,31 @@ class BaseTask(BaseModel):
                 add(f"pickup({held})")
                 put_into(held, r)
         return [[a for alt in combo for a in alt] for combo in itertools.product(*parts)]
+
+    def _state_recipe(self, world: World, o: str) -> list[str]:
+        """The actions that bring one object of type o into the task's state."""
+        if self.state == "sliced":
+            knife = next(k for k in KNIFE_TYPES if _available(world, [k]))
+            return [f"pickup({knife})", f"slice({o})", f"put({knife},{_knife_drop(world, knife)})"]
+        verb = {
+            "on": "toggle_on",
+            "off": "toggle_off",
+            "broken": "break",
+            "open": "open",
+            "closed": "close",
+            "held": "pickup",
+        }[self.state or "held"]
+        return [f"{verb}({o})"]
+
+
+def _state_ok(world: World, o: str, state: str | None) -> bool:
+    """Whether objects of type o can be brought into the state (AI2-THOR's affordances)."""
+    from nl2hltl2plan.worlds.effects import BREAKABLE
+
+    if state == "broken":
+        return o in BREAKABLE
+    flag = STATE_FLAG.get(state or "")
+    return flag is not None and bool(getattr(world.instances(o)[0].affordances, flag))
 
 
 class GTInstance(BaseModel):

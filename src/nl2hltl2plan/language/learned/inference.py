@@ -18,6 +18,7 @@ from pathlib import Path
 from pydantic import Field
 
 from nl2hltl2plan.errors import WorldError
+from nl2hltl2plan.language.accounting import account
 from nl2hltl2plan.language.grounding import AffordanceLookup, find_mentions
 from nl2hltl2plan.language.learned.model import SlotModel, SlotPrediction
 from nl2hltl2plan.language.learned.ranker import TypeRanker
@@ -43,7 +44,13 @@ class Policy:
     rescue: bool = True  # clauses the grammar could not read: read by the model, re-parsed (`rescue`)
     rescue_kind: float = 0.5  # ... when the model's kind probability is at least this
     container_switch: bool = False  # place -> place_in_container when the model is sure and the text names it
+    # a slot the grammar found nothing for is filled by the model's best type only when its probability is
+    # at least this (chosen on the validation sets, results/language_trust/report.md); otherwise the
+    # clause's task is dropped and the clause goes to `unparsed`
+    fill: float = 0.3
 
+
+DEFAULT_POLICY = Policy()  # what the `offline` backend uses
 
 # Candidate combinations, compared on the text-faithful validation (`learned.validate`).
 POLICIES: dict[str, Policy] = {
@@ -161,8 +168,10 @@ def combine(
     policy: Policy,
     ambiguities: list[Ambiguity],
     ranker: TypeRanker | None = None,
+    guesses: list[str] | None = None,
 ) -> BaseTaskSpec:
-    """One base task from the grammar's reading of a clause and the model's prediction for it."""
+    """One base task from the grammar's reading of a clause and the model's prediction for it; a slot the
+    model fills below `policy.fill` is reported in `guesses`."""
     kind = pred.top_kind if pred.kind[0][1] >= policy.kind_override else task.kind
     if (
         "place_in_container" in (kind, task.kind)
@@ -180,6 +189,12 @@ def combine(
         ranked = pred.slots.get(role, [])
         order = _order(task, role, ranked, types, ranker)
         values[role] = _choose(getattr(task, role), ranked, types, policy, order)
+        filled = ranked and not getattr(task, role) and values[role] == [ranked[0][0]]
+        if filled and guesses is not None and ranked[0][1] < policy.fill:
+            guesses.append(
+                f"{task.text!r}: its {role} is not stated (the model's guess {ranked[0][0]} at "
+                f"{ranked[0][1]:.0%} is below the {policy.fill:.0%} threshold)"
+            )
         amb = _ambiguity(task, role, values[role] or [], ranked, policy, order)
         if amb is not None:
             ambiguities.append(amb)
@@ -211,7 +226,7 @@ def parse_instruction(
 
     `strict=True`: a slot whose types the scene lacks raises `WorldError`; otherwise it is listed in `issues`.
     """
-    policy = policy or Policy()
+    policy = policy or DEFAULT_POLICY
     model = model or load_model()
     scene_types = set(types) if types is not None else None
     g = grammar_parse(instruction, scene_types, scene, strict=False, affordances=affordances)
@@ -224,13 +239,20 @@ def parse_instruction(
         drafts = [BaseTaskSpec(id=task_letter(0), text=instruction.strip(), kind="place", object=[])]
     preds = model.predict([d.text or instruction for d in drafts], scene_types)
     ambiguities: list[Ambiguity] = []
-    tasks = [
-        combine(d, p, scene_types, policy, ambiguities, model.ranker)
-        for d, p in zip(drafts, preds, strict=True)
-    ]
-    if whole and not _names_its_types(tasks[0]):
+    tasks, before, guessed = [], list(g.before), []
+    for d, p in zip(drafts, preds, strict=True):
+        guesses: list[str] = []
+        t = combine(d, p, scene_types, policy, ambiguities, model.ranker, guesses)
+        if guesses:  # an unstated slot the model is not sure of: the clause is not understood
+            unparsed += guesses
+            guessed.append(t.id)
+        else:
+            tasks.append(t)
+    before = [(a, b) for a, b in before if a not in guessed and b not in guessed]
+    ambiguities = [a for a in ambiguities if a.task not in guessed]
+    if whole and tasks and not (_names_its_types(tasks[0]) and not account(instruction, tasks, [])):
         tasks, ambiguities = [], []  # the model would invent a task ("hello there"): keep what is unparsed
-    elif whole:
+    elif whole and tasks:
         unparsed = []
     issues = _missing(tasks, scene_types, scene)
     if strict and issues:
@@ -238,8 +260,8 @@ def parse_instruction(
     return LearnedParse(
         instruction=instruction,
         tasks=tasks,
-        before=list(g.before),
-        groups=g.groups,
+        before=before,
+        groups=[[t for t in grp if t not in guessed] for grp in g.groups],
         group_texts=g.group_texts,
         unparsed=unparsed,
         issues=issues,
@@ -261,8 +283,8 @@ def _rescued(
     if text is None:
         return g
     again = grammar_parse(text, types, scene, strict=False, affordances=affordances)
-    if len(again.tasks) <= len(g.tasks):
-        return g
+    if len(again.tasks) <= len(g.tasks) or account(instruction, again.tasks, again.before):
+        return g  # a re-reading must read more and pass the word accounting (check 1) of the original
     return again.model_copy(update={"instruction": instruction})
 
 

@@ -1,0 +1,187 @@
+"""Issue 23's own test sets: build their ground truth, and measure the language stage on them.
+
+    python scripts/trust_sets.py build     # tests/language/data/trust/*.txt -> *.jsonl (benchmark format)
+    python scripts/trust_sets.py measure [--backend offline|grammar]   # refused / partial / converted / wrong
+    python scripts/trust_sets.py validation [--split valid_seen] [--n 2000] [--seed 1]  # check 1's flags
+
+The .txt files are hand-written, one instruction a line: `scene | instruction | base tasks | before |
+what must be refused`. Base tasks: `kind Object[/Alt] Destination [x2] [sliced] [in Container]` or
+`set_state Object state`,
+`;`-separated, ids A, B, ... in order; before: `A<B, ...`. A line with something to refuse has
+`feasible: false` and that text in `issues` (its base tasks are the part a world can do).
+
+`measure` runs the `plan` command's language stage (no planning) on each line in its floor plan and
+sorts the outcome: refused (an error, exit 2), partial (`unparsed` names words), converted (the base
+tasks and orderings match the ground truth, lenient types) or wrong (anything else: a plan whose spec
+misses or changes part of the text).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from collections import Counter
+from pathlib import Path
+
+from nl2hltl2plan.errors import Nl2Hltl2PlanError
+from nl2hltl2plan.language.scoring import match
+from nl2hltl2plan.language.translate import apply_choices, top_candidates, translate
+from nl2hltl2plan.worlds import load_world
+from nl2hltl2plan.worlds.tasks import GTInstance
+
+TRUST = Path(__file__).resolve().parent.parent / "tests" / "language" / "data" / "trust"
+
+
+def parse_task(text: str, task_id: str) -> dict:
+    words = text.split()
+    if words[0] == "set_state":  # set_state Object state
+        return {
+            "id": task_id,
+            "text": "",
+            "kind": "set_state",
+            "object": words[1].split("/"),
+            "count": 1,
+            "sliced": False,
+            "container": None,
+            "receptacle": None,
+            "light": None,
+            "state": words[2],
+        }
+    kind, obj, dest = words[0], words[1].split("/"), words[2].split("/")
+    rest = words[3:]
+    task = {
+        "id": task_id,
+        "text": "",
+        "kind": kind,
+        "object": obj,
+        "count": 1,
+        "sliced": "sliced" in rest,
+        "container": None,
+        "receptacle": dest,
+        "light": None,
+    }
+    if "x2" in rest:
+        task["count"] = 2
+    if "in" in rest:
+        task["container"] = rest[rest.index("in") + 1].split("/")
+    if kind == "examine_in_light":
+        task["light"], task["receptacle"] = dest, None
+    return task
+
+
+def parse_line(line: str, name: str, n: int) -> dict:
+    parts = [p.strip() for p in line.split("|")]
+    scene, instruction, tasks_text, before_text = parts[:4]
+    refuse = parts[4] if len(parts) > 4 else ""
+    tasks = [parse_task(t.strip(), chr(65 + k)) for k, t in enumerate(tasks_text.split(";")) if t.strip()]
+    before = [p.strip().split("<") for p in before_text.split(",") if p.strip()]
+    return {
+        "id": f"trust.{name}.{n}",
+        "scene": scene,
+        "n_base": len(tasks),
+        "instruction": instruction,
+        "tasks": tasks,
+        "before": before,
+        "feasible": not refuse,
+        "issues": [refuse] if refuse else [],
+        "ambiguous": False,
+        "notes": ["written for issue 23"],
+    }
+
+
+def build() -> None:
+    for src in sorted(TRUST.glob("*.txt")):
+        lines = [ln for ln in src.read_text().splitlines() if ln.strip() and not ln.startswith("#")]
+        rows = [parse_line(ln, src.stem, n) for n, ln in enumerate(lines, 1)]
+        for r in rows:
+            GTInstance.model_validate(r)
+        src.with_suffix(".jsonl").write_text("".join(json.dumps(r) + "\n" for r in rows))
+        print(f"{src.with_suffix('.jsonl')}: {len(rows)} instructions")
+
+
+def outcome(gt: GTInstance, backend: str = "offline") -> tuple[str, str]:
+    """(refused | partial | converted | wrong, detail) for one line, as `plan` would treat it."""
+    world = load_world(gt.scene)
+    try:
+        res = translate(gt.instruction, world, backend, build=False, actions="none")
+    except Nl2Hltl2PlanError as exc:
+        return "refused", str(exc)
+    if res.partial:
+        return "partial", "; ".join(res.unparsed)
+    apply_choices(res, top_candidates(res.ambiguities))
+    verdict = match(res.tasks, res.before, [t.model_dump() for t in gt.tasks], gt.before, strict=False)
+    if gt.feasible and verdict.order_ok:
+        return "converted", ""
+    return "wrong", "; ".join(verdict.reasons) or f"not refused: {gt.issues}"
+
+
+def load(name: str) -> list[GTInstance]:
+    path = TRUST / f"{name}.jsonl"
+    return [GTInstance.model_validate_json(line) for line in path.read_text().splitlines() if line.strip()]
+
+
+def measure(backend: str, show: bool) -> None:
+    print("| set | n | refused | partial | converted | wrong |\n| --- | --- | --- | --- | --- | --- |")
+    details = []
+    for name in ("plain", "mixed"):
+        gts = load(name)
+        counts: Counter[str] = Counter()
+        for gt in gts:
+            what, why = outcome(gt, backend)
+            counts[what] += 1
+            if what == "wrong" or (show and what != "converted"):
+                details.append(f"{name} {what}: {gt.instruction!r}: {why}")
+        cells = " | ".join(str(counts[k]) for k in ("refused", "partial", "converted", "wrong"))
+        print(f"| {name} | {len(gts)} | {cells} |")
+    print("\n".join(details), file=sys.stderr)
+
+
+def validation(split: str, n: int, seed: int) -> None:
+    """Check 1 on composed ALFRED validation instructions: how many correct conversions it flags (false
+    refusals) and how many wrong ones it turns into refusals."""
+    from nl2hltl2plan.language.accounting import account
+    from nl2hltl2plan.language.grounding import scene_types
+    from nl2hltl2plan.language.learned.inference import parse_instruction
+    from nl2hltl2plan.language.learned.validate import validation_rows
+
+    counts: Counter[tuple[bool, bool]] = Counter()
+    for row in validation_rows(split, n, seed):
+        try:
+            r = parse_instruction(row["instruction"], scene_types(row["scene"]), row["scene"], strict=False)
+            apply_choices(r, top_candidates(r.ambiguities))
+            flagged = bool(r.unparsed or account(row["instruction"], r.tasks, r.before))
+            ok = match(r.tasks, r.before, row["tasks"], row["before"], strict=True).order_ok
+        except Nl2Hltl2PlanError:
+            flagged, ok = True, False
+        counts[(ok, flagged)] += 1
+    right, wrong = (
+        counts[(True, False)] + counts[(True, True)],
+        counts[(False, False)] + counts[(False, True)],
+    )
+    print(
+        f"{split} ({n}, seed {seed}): correct conversions flagged {counts[(True, True)]} of {right}; "
+        f"wrong conversions flagged {counts[(False, True)]} of {wrong}"
+    )
+
+
+def main() -> int:
+    ap = argparse.ArgumentParser(prog="python scripts/trust_sets.py")
+    ap.add_argument("what", choices=["build", "measure", "validation"])
+    ap.add_argument("--split", default="valid_seen", choices=["valid_seen", "valid_unseen"])
+    ap.add_argument("--n", type=int, default=2000)
+    ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--backend", default="offline", choices=["offline", "grammar"])
+    ap.add_argument("--show", action="store_true", help="print every line that is not converted")
+    args = ap.parse_args()
+    if args.what == "build":
+        build()
+    elif args.what == "validation":
+        validation(args.split, args.n, args.seed)
+    else:
+        measure(args.backend, args.show)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

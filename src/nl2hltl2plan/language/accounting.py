@@ -1,0 +1,518 @@
+"""Word accounting: every content word of an instruction is used by the parse or named as not understood.
+
+`account(instruction, tasks, before, instances, scene)` judges the result of any backend (grammar,
+learned, LLM) from the outside: it reads the instruction's content words (nouns naming objects and places from
+`lexicon.txt`, verbs, counts, negations and order words from `content_words.txt`) and renders the base
+tasks back to the types, kinds, counts and orderings they use. It returns one `Unread` per content word
+the base tasks do not use, and per slot of a base task that no word of the instruction names (an
+invented object or place). Counts the scene cannot satisfy (zero, or more than it holds) and cyclic
+orders are input errors (`HTTError`), whatever the backend made of them.
+
+>>> from nl2hltl2plan.language.tasks import BaseTaskSpec
+>>> cup = BaseTaskSpec(kind="heat_place", object=["Cup"], receptacle=["Microwave"])
+>>> [u.words for u in account("heat a cup of coffee in the microwave", [cup], [])]
+['coffee']
+"""
+
+from __future__ import annotations
+
+import difflib
+import re
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from functools import lru_cache
+from importlib import resources
+
+import networkx as nx
+
+from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.language.grounding import Mention, camel_words, find_mentions, lexicon, tokens
+from nl2hltl2plan.language.tasks import BaseTaskSpec
+from nl2hltl2plan.worlds.model import KNIFE_TYPES
+from nl2hltl2plan.worlds.tasks import APPLIANCE, slots_of
+
+# the appliances a kind of task implies, beyond the destination ("heat it on the stove")
+IMPLIED_TYPES = {
+    "clean_place": {APPLIANCE["clean_place"], "Faucet", "BathtubBasin", "Sink"},
+    "heat_place": {APPLIANCE["heat_place"], "StoveBurner", "Toaster", "CoffeeMachine"},
+    "cool_place": {APPLIANCE["cool_place"]},
+}
+LAMPS = frozenset({"DeskLamp", "FloorLamp"})
+DETERMINERS = {"the", "a", "an", "that", "this", "those", "these", "its", "their", "my", "your", "of"}
+# a place named after an object and one of these describes where the object is ("the apple on the table")
+LOCATIVE = frozenset(
+    "on in at inside near beside by behind under next from off below above beneath underneath across "
+    "against between around along with of".split()
+)
+
+
+@dataclass(frozen=True)
+class Unread:
+    """A content word the parse does not use, or a slot of a base task that no word names."""
+
+    words: str
+    category: str  # object / place / action / count / negation / order / invented
+    reason: str
+
+    def __str__(self) -> str:
+        return f"{self.words!r} ({self.category}): {self.reason}"
+
+
+@lru_cache(maxsize=1)
+def vocabulary() -> dict[str, frozenset[str]]:
+    """category -> words, from `content_words.txt`."""
+    out: dict[str, frozenset[str]] = {}
+    text = resources.files("nl2hltl2plan.language").joinpath("content_words.txt").read_text()
+    for raw in text.splitlines():
+        line = raw.split("#", 1)[0].strip()
+        if line:
+            name, _, words = line.partition(":")
+            out[name.strip()] = frozenset(words.split())
+    return out
+
+
+@lru_cache(maxsize=1)
+def verb_places() -> dict[str, str]:
+    """verb -> the place it names ("throw" -> GarbageCan), from `implied_by_verb` in content_words.txt."""
+    return dict(w.split(":", 1) for w in vocabulary()["implied_by_verb"])
+
+
+def stems(word: str) -> set[str]:
+    """The word and its possible stems (heated -> heat, chopped -> chop, slices -> slice)."""
+    out = {word}
+    for suffix in ("s", "es", "ed", "d", "ing"):
+        if word.endswith(suffix) and len(word) > len(suffix) + 2:
+            base = word[: -len(suffix)]
+            out |= {base, base + "e"}
+            if len(base) > 2 and base[-1] == base[-2]:
+                out.add(base[:-1])
+    return out
+
+
+def categories(word: str) -> set[str]:
+    """The content-word categories of one token ({} for a function word)."""
+    forms = stems(word)
+    return {name for name, words in vocabulary().items() if forms & words and name != "implied_by_verb"}
+
+
+def _count_value(cats: set[str], word: str) -> int | None:
+    if word.isdigit():
+        return int(word)
+    for c in cats:
+        if c.startswith("count_"):
+            return int(c.removeprefix("count_"))
+    return None
+
+
+@dataclass
+class _Parse:
+    """The base tasks rendered back to what they use."""
+
+    tasks: Sequence[BaseTaskSpec]
+    before: Sequence[tuple[str, str]]
+
+    @property
+    def kinds(self) -> set[str]:
+        return {t.kind for t in self.tasks}
+
+    @property
+    def sliced(self) -> bool:
+        return any(t.sliced or t.state == "sliced" for t in self.tasks)
+
+    @property
+    def states(self) -> set[str]:
+        return {str(t.state) for t in self.tasks if t.kind == "set_state"}
+
+    def slots(self) -> list[tuple[str, str, frozenset[str]]]:
+        """(task id, role, types) for every filled slot."""
+        out = []
+        for t in self.tasks:
+            for role in slots_of(t.kind):
+                types = set(getattr(t, role) or [])
+                if "LightSwitch" in types:
+                    types |= LAMPS  # "the light(s)" of a room is its light switch
+                if types:
+                    out.append((t.id, role, frozenset(types)))
+        return out
+
+    def implied(self) -> set[str]:
+        out: set[str] = set()
+        for k in self.kinds:
+            out |= IMPLIED_TYPES.get(k, set())
+        if self.sliced:
+            out |= set(KNIFE_TYPES)
+        return out
+
+    def implied_words(self) -> set[str]:
+        v = vocabulary()
+        out: set[str] = set()
+        for k in self.kinds:
+            out |= v.get(f"implied_{k}", frozenset())
+        if self.sliced:
+            out |= v["implied_sliced"]
+        return out
+
+
+def account(
+    instruction: str,
+    tasks: Sequence[BaseTaskSpec],
+    before: Sequence[tuple[str, str]],
+    instances: Mapping[str, int] | None = None,
+    scene: str = "the scene",
+) -> list[Unread]:
+    """The content words of `instruction` that `tasks`/`before` do not use, and the slots no word names.
+
+    `instances`: how many objects of each type the scene holds (None: unknown, counts are not checked
+    against the scene). Raises HTTError for a count of zero, a count above what the scene holds, and a
+    cyclic order in the text."""
+    parse = _Parse(tasks, before)
+    toks = tokens(instruction)
+    mentions = [m for m in find_mentions(instruction) if not m.entry.generic and not _is_verb(m, toks)]
+    in_mention = {i for m in mentions for i in range(m.start, m.end)}
+    out = _nouns(instruction, mentions, toks, parse)
+    out += _invented(mentions, toks, parse)
+    out += _invented_kinds(toks, mentions, parse)
+    out += _words(instruction, toks, in_mention, mentions, parse, instances, scene)
+    out += _orders(toks, in_mention, parse)
+    _check_cycles(instruction, toks, mentions, parse)
+    return out
+
+
+def _is_verb(m: Mention, toks: list[tuple[str, int, int]]) -> bool:
+    """A lexicon word used as a verb: "switch" in "switch off the light", "switch the lamp on"."""
+    nxt = toks[m.end][0] if m.end < len(toks) else ""
+    single = m.end - m.start == 1 and "verb_switch" in categories(toks[m.start][0])
+    return single and nxt in ("on", "off", "the", "it", "a")
+
+
+def _phrases(mentions: list[Mention], toks: list[tuple[str, int, int]]) -> list[list[Mention]]:
+    """Mentions that name one thing together: compounds ("dresser drawer", "soap container") and
+    "X of Y" ("two bottles of lotion", "the light of the floor lamp")."""
+    out: list[list[Mention]] = []
+    for m in mentions:
+        if out:
+            gap = [w for w, _, _ in toks[out[-1][-1].end : m.start]]
+            if not gap or (gap[0] == "of" and all(w in DETERMINERS for w in gap)):
+                out[-1].append(m)
+                continue
+        out.append([m])
+    return out
+
+
+def _nouns(
+    instruction: str, mentions: list[Mention], toks: list[tuple[str, int, int]], parse: _Parse
+) -> list[Unread]:
+    """Object and place nouns: each named thing needs a slot of its own (or is implied / a location)."""
+    implied, implied_words = parse.implied(), parse.implied_words()
+    slots = parse.slots()
+    groups: dict[frozenset[str], list[list[Mention]]] = {}
+    for phrase in _phrases(mentions, toks):
+        if any(
+            m.entry.canonical in implied or m.surface.lower().split()[-1] in implied_words for m in phrase
+        ):
+            continue
+        groups.setdefault(frozenset(m.entry.canonical for m in phrase), []).append(phrase)
+    g = nx.Graph()
+    for key, phrases in groups.items():
+        types = {t for m in phrases[0] for t in m.entry.types} | key
+        for k, (_, _, st) in enumerate(slots):
+            if st & types or {t.lower() for t in st} & {t.lower() for t in key}:
+                g.add_edge(("g", key), ("s", k))
+    matching = nx.bipartite.maximum_matching(g, top_nodes=[n for n in g if n[0] == "g"]) if g else {}
+    matched = {a[1] for a in matching if a[0] == "g"}
+    places = [
+        m for key in matched for p in groups[key] for m in p if slots[matching[("g", key)][1]][1] != "object"
+    ]
+    out = []
+    objects = {t for _, role, st in slots if role == "object" for t in st}
+    for key, phrases in groups.items():
+        if key in matched or all(_locative(instruction, p[0], toks, places) for p in phrases):
+            continue
+        first = phrases[0][-1]
+        what = "object" if any(t in objects for t in first.entry.types) else "place"
+        used = "/".join(first.entry.types[:3])
+        surface = " ".join(m.surface for m in phrases[0]) if len(phrases[0]) > 1 else first.surface
+        out.append(Unread(surface, what, f"no base task uses it ({used})"))
+    return out
+
+
+def _locative(instruction: str, m: Mention, toks: list[tuple[str, int, int]], places: list[Mention]) -> bool:
+    """A place named only to say where something is: "from the counter", or, next to the place the
+    task uses in the same clause, "the drawer by the stove", "the lamp on the desk"."""
+    i = m.start - 1
+    while i >= 0 and m.start - i <= 4 and (toks[i][0] in DETERMINERS or not categories(toks[i][0])):
+        if toks[i][0] in LOCATIVE:
+            break
+        i -= 1
+    if i < 0 or toks[i][0] not in LOCATIVE:
+        return False
+    if toks[i][0] in ("from", "off") or (i > 0 and toks[i - 1][0] == "out"):
+        return True
+    clause = _clause_span(instruction, m.char_start)
+    if any("verb_take" in categories(w) for w, s, _ in toks if clause[0] <= s < clause[1]):
+        return True
+    return any(clause[0] <= o.char_start < clause[1] and o.start != m.start for o in places)
+
+
+def _clause_span(text: str, at: int) -> tuple[int, int]:
+    """The clause around character `at`: between full stops, semicolons, "and" and "then"."""
+    bounds = [0, *(x.start() for x in re.finditer(r"[.;!?]|\b(?:and|then)\b", text.lower())), len(text)]
+    start = max(b for b in bounds if b <= at)
+    return start, min(b for b in bounds if b > at)
+
+
+def _invented(mentions: list[Mention], toks: list[tuple[str, int, int]], parse: _Parse) -> list[Unread]:
+    """Slots of base tasks that no word of the instruction names (a guess, not a reading)."""
+    places = verb_places()
+    named = {places[f] for w, _, _ in toks for f in stems(w) if f in places}
+    for m in mentions:
+        named |= set(m.entry.types) | {m.entry.canonical}
+    implied = parse.implied()
+    out = []
+    spelt = [w for w, _, _ in toks if len(w) >= 5]
+    for task_id, role, types in parse.slots():
+        lowered = {t.lower() for t in named}
+        if types & named or {t.lower() for t in types} & lowered or _misspelt(spelt, types):
+            continue
+        if role == "receptacle" and types & implied:
+            continue
+        what = "/".join(sorted(types)[:3])
+        out.append(Unread(what, "invented", f"task {task_id}'s {role} is named nowhere in the instruction"))
+    return out
+
+
+def _invented_kinds(toks: list[tuple[str, int, int]], mentions: list[Mention], parse: _Parse) -> list[Unread]:
+    """A heat / cool / clean task or a slice needs a word for it: a verb or state word ("chilled"), or
+    its appliance named as a stop ("put the apple in the microwave, then on the counter")."""
+    cats: set[str] = set()
+    for w, _, _ in toks:
+        cats |= categories(w)
+    named = {m.entry.canonical for m in mentions}
+    out = []
+    for t in parse.tasks:
+        word = f"verb_{t.kind}" in cats or named & IMPLIED_TYPES.get(t.kind, set())
+        if t.kind in IMPLIED_TYPES and not word:
+            out.append(
+                Unread(t.kind, "invented", f"task {t.id}'s treatment is named nowhere in the instruction")
+            )
+        if t.sliced and "verb_sliced" not in cats:
+            out.append(
+                Unread("sliced", "invented", f"task {t.id}'s slice is named nowhere in the instruction")
+            )
+    return out
+
+
+def _misspelt(words: list[str], types: frozenset[str]) -> bool:
+    """A word one letter off a lexicon word of one of the types ("laddle" for the ladle)."""
+    names = sorted({w for key, (entry, _) in lexicon().items() if set(entry.types) & types for w in key})
+    return any(difflib.get_close_matches(w, names, n=1, cutoff=0.85) for w in words)
+
+
+def _next_mention(mentions: list[Mention], words: list[str], i: int, within: int = 3) -> Mention | None:
+    """The noun a count word counts: the next mention, with only non-content words between."""
+    for m in mentions:
+        if i < m.start <= i + within:
+            between = words[i + 1 : m.start]
+            return m if all(w in DETERMINERS or not categories(w) for w in between) else None
+    return None
+
+
+def _words(
+    instruction: str,
+    toks: list[tuple[str, int, int]],
+    in_mention: set[int],
+    mentions: list[Mention],
+    parse: _Parse,
+    instances: Mapping[str, int] | None,
+    scene: str,
+) -> list[Unread]:
+    """Verbs, counts, negations and unsupported nouns outside the lexicon's mentions."""
+    out: list[Unread] = []
+    words = [w for w, _, _ in toks]
+    for i, w in enumerate(words):
+        if i in in_mention:
+            continue
+        cats = categories(w)
+        if not cats and not w.isdigit():
+            continue
+        unread = _verb(w, cats, words, i, parse)
+        if unread is None and not _locative_word(instruction, i, toks, mentions):
+            unread = _noun(w, cats)
+        if (
+            "negation" in cats
+            and not _until_guard(instruction, toks[i], parse)
+            and not _free_order(instruction, toks[i])
+        ):
+            unread = Unread(w, "negation", "a negated request: the spec has no constraint for it")
+        elif _count_value(cats, w) is not None or cats & {"quantifier_all", "quantifier_vague"}:
+            unread = _count(instruction, toks[i], cats, mentions, parse, instances, scene)
+        if unread is not None:
+            out.append(unread)
+    return out
+
+
+def _locative_word(
+    instruction: str, i: int, toks: list[tuple[str, int, int]], mentions: list[Mention]
+) -> bool:
+    """A word after a locative preposition that follows a named thing in its clause ("next to the other
+    food", "by the door")."""
+    j = i - 1
+    while j >= 0 and i - j <= 4 and toks[j][0] not in LOCATIVE and not categories(toks[j][0]):
+        j -= 1
+    if j < 0 or toks[j][0] not in LOCATIVE - {"of", "with"}:  # "a cup of coffee" names its contents
+        return False
+    clause = _clause_span(instruction, toks[i][1])
+    return any(clause[0] <= m.char_start < toks[j][1] for m in mentions)
+
+
+def _free_order(instruction: str, tok: tuple[str, int, int]) -> bool:
+    """A negation about the order itself ("the order is not specified", "in no particular order")."""
+    start = max((m.end() for m in re.finditer(r"[.;!?]", instruction[: tok[1]])), default=0)
+    end = tok[2] + len(re.split(r"[.;!?]", instruction[tok[2] :], maxsplit=1)[0])
+    return re.search(r"\b(order|sequence)\b", instruction[start:end].lower()) is not None
+
+
+def _until_guard(instruction: str, tok: tuple[str, int, int], parse: _Parse) -> bool:
+    """ "Do not X until Y" is the ordering Y before X, which the parse has as a `before` pair."""
+    rest = re.split(r"[.;!?]", instruction[tok[2] :], maxsplit=1)[0].lower()
+    return bool(parse.before) and re.search(r"\b(until|unless|before)\b", rest) is not None
+
+
+def _verb(w: str, cats: set[str], words: list[str], i: int, parse: _Parse) -> Unread | None:
+    if "verb_switch" in cats:
+        after = words[i + 1 : i + 5]
+        if "off" in after and "off" not in parse.states:
+            return Unread(f"{w} off", "action", "no base task switches something off")
+        if "on" in after and "examine_in_light" not in parse.kinds and "on" not in parse.states:
+            return Unread(f"{w} on", "action", "no base task switches something on")
+        return None
+    if "verb_break" in cats and "broken" not in parse.states:
+        return Unread(w, "action", "no base task breaks something")
+    if "verb_unsupported" in cats and not cats & {"verb_any", "verb_step"}:
+        return Unread(w, "action", "no base task does this")
+    if "verb_unsupported_before_object" in cats and words[i + 1 : i + 2] and words[i + 1] in DETERMINERS:
+        return Unread(w, "action", "no base task does this")
+    for c in cats:
+        kind = c.removeprefix("verb_")
+        if c.startswith("verb_") and kind in ("heat_place", "cool_place", "clean_place", "examine_in_light"):
+            if kind not in parse.kinds:
+                return Unread(w, "action", f"no {kind} task")
+    if "verb_sliced" in cats and not parse.sliced:
+        return Unread(w, "action", "no task takes a slice")
+    return None
+
+
+def _noun(w: str, cats: set[str]) -> Unread | None:
+    if "person" in cats:
+        return Unread(w, "place", "a person: no base task hands things to people")
+    if "noun_unsupported" in cats:
+        return Unread(w, "object", "no object of this world is called so")
+    return None
+
+
+def _count(
+    instruction: str,
+    tok: tuple[str, int, int],
+    cats: set[str],
+    mentions: list[Mention],
+    parse: _Parse,
+    instances: Mapping[str, int] | None,
+    scene: str,
+) -> Unread | None:
+    """A count before a noun: the task on that noun takes exactly so many (every one for "all")."""
+    w, start, _ = tok
+    toks = tokens(instruction)
+    m = _next_mention(mentions, [t[0] for t in toks], [t[1] for t in toks].index(start))
+    if m is None or re.search(r"[,.;:!?]", instruction[start : m.char_start]):
+        return None
+    types = set(m.entry.types)
+    held = None
+    if instances is not None:
+        present = [t for t in m.entry.types if instances.get(t)]
+        types = set(present if m.entry.all_ else present[:1]) or types
+        held = sum(instances.get(t, 0) for t in types)
+    n = _count_value(cats, w)
+    phrase = instruction[start : m.char_end]
+    if n == 0:
+        raise HTTError(f"a count of zero ({phrase!r}): there is nothing to do; say how many")
+    if n is not None and held is not None and n > held:
+        raise HTTError(f"{phrase!r}: {scene} holds only {held} {camel_words(m.entry.canonical)}")
+    counts = [max(1, t.count) for t in parse.tasks if set(t.object) & types]
+    if not counts:  # a count of places ("one of the drawers"), or of a noun the noun check reports
+        return None
+    if "quantifier_all" in cats:
+        n = held
+        if n is None:
+            return None
+    elif "quantifier_vague" in cats:
+        return Unread(phrase, "count", "a vague count: say how many")
+    if n in counts or (n == 2 and w in ("both", "pair", "couple") and len(counts) >= 2):
+        return None
+    got = " + ".join(map(str, counts)) or "none"
+    return Unread(phrase, "count", f"the base tasks take {got}, not {n}")
+
+
+def _orders(toks: list[tuple[str, int, int]], in_mention: set[int], parse: _Parse) -> list[Unread]:
+    """Order words: with several base tasks and no word that frees the order, a sequence word needs an
+    ordering between them."""
+    cats = [categories(w) for i, (w, _, _) in enumerate(toks) if i not in in_mention]
+    words = [w for i, (w, _, _) in enumerate(toks) if i not in in_mention and "order" in categories(w)]
+    free = any("any_order" in c for c in cats)
+    if not words or len(parse.tasks) < 2 or parse.before or free:
+        return []
+    return [Unread(", ".join(dict.fromkeys(words)), "order", "the base tasks are not ordered")]
+
+
+def _check_cycles(
+    instruction: str, toks: list[tuple[str, int, int]], mentions: list[Mention], parse: _Parse
+) -> None:
+    """'X ... before the Y' / 'X ... after the Y' between object nouns of one sentence: a cycle is an
+    input error."""
+    objects = {t for _, role, st in parse.slots() if role == "object" for t in st}
+    objs = [m for m in mentions if set(m.entry.types) & objects or not objects]
+    g = nx.DiGraph()
+    for i, (w, _, _) in enumerate(toks):
+        if w not in ("before", "after"):
+            continue
+        j = i + 1
+        while j < len(toks) and toks[j][0] in DETERMINERS:
+            j += 1
+        right = [m for m in objs if m.start == j]
+        left = [
+            m for m in objs if m.end <= i and not re.search(r"[.;!?]", instruction[m.char_end : toks[i][1]])
+        ]
+        if not left or not right:
+            continue
+        a, b = left[-1].entry.canonical, right[0].entry.canonical
+        if a != b:
+            g.add_edge(*((a, b) if w == "before" else (b, a)))
+    try:
+        cycle = nx.find_cycle(g)
+    except nx.NetworkXNoCycle:
+        return
+    names = [camel_words(a) for a, _ in cycle] + [camel_words(cycle[0][0])]
+    raise HTTError(f"cyclic order in the instruction: {' before '.join(names)}")
+
+
+def take_every_instance(
+    instruction: str, tasks: Sequence[BaseTaskSpec], instances: Mapping[str, int]
+) -> list[BaseTaskSpec]:
+    """ "all the mugs" / "every mug" / "each mug": the task on that noun takes every instance the scene
+    holds (a `place` of several becomes `place_two` with that count; of one, a `place`)."""
+    toks = tokens(instruction)
+    words = [w for w, _, _ in toks]
+    mentions = [m for m in find_mentions(instruction) if not m.entry.generic]
+    out = [t.model_copy() for t in tasks]
+    for i, w in enumerate(words):
+        if "quantifier_all" not in categories(w):
+            continue
+        m = _next_mention(mentions, words, i)
+        if m is None or re.search(r"[,.;:!?]", instruction[toks[i][1] : m.char_start]):
+            continue
+        for k, t in enumerate(out):
+            held = sum(instances.get(o, 0) for o in t.object if o in m.entry.types)
+            if held < 1 or t.count == held:
+                continue
+            kind = ("place_two" if held > 1 else "place") if t.kind in ("place", "place_two") else t.kind
+            out[k] = t.model_copy(update={"kind": kind, "count": held})
+    return out
