@@ -23,11 +23,10 @@ from nl2hltl2plan.cli.options import (
     add_backend_argument,
     add_llm_arguments,
     add_planner_arguments,
-    int_list,
+    int_in,
+    ints_in,
     llm_settings,
-    nonnegative_int,
     planner_options,
-    positive_int,
 )
 from nl2hltl2plan.errors import PlanningError
 from nl2hltl2plan.evaluation.ray_engine import ENGINES, run_with_engine
@@ -36,6 +35,7 @@ from nl2hltl2plan.io import ensure_writable_dir, write_json
 from nl2hltl2plan.pipeline import PipelineOptions
 from nl2hltl2plan.worlds.benchmark import load_gt
 from nl2hltl2plan.worlds.tasks import GTInstance
+from nl2hltl2plan.worlds.team import MAX_ROBOTS
 
 # Each suite module exposes `register(bench_subparsers)`; a module missing from the tree is not offered.
 SUITE_MODULES = ["nl2hltl2plan.cli.bench_experiments", "nl2hltl2plan.cli.bench_smartllm"]
@@ -63,19 +63,32 @@ def register(sub: Any) -> None:
         default=None,
         help="ground-truth JSONL with the schema of alfred_test50_gt.jsonl (default: that file)",
     )
-    p.add_argument("--robots", type=int_list, default=[1, 2, 4], help="team sizes (default 1,2,4)")
-    p.add_argument("--n-base", type=int_list, default=None, help="base-task counts to include (default: all)")
+    p.add_argument(
+        "--robots",
+        type=ints_in(1, MAX_ROBOTS),
+        default=[1, 2, 4],
+        help=f"team sizes, 1..{MAX_ROBOTS} (default 1,2,4)",
+    )
+    p.add_argument(
+        "--n-base",
+        type=ints_in(1, 100),
+        default=None,
+        help="base-task counts to include, 1..100 (default: all)",
+    )
     p.add_argument(
         "--limit",
-        type=positive_int,
+        type=int_in(1, 1_000_000),
         default=None,
         help="first N instances only, after --n-base (default: all)",
     )
     p.add_argument(
-        "--draw", type=nonnegative_int, default=0, help="init_pos draw for the start cells, 0..4 (default 0)"
+        "--draw", type=int_in(0, 4), default=0, help="init_pos draw for the start cells, 0..4 (default 0)"
     )
     p.add_argument(
-        "--workers", type=positive_int, default=None, help="parallel worker processes (default: CPU cores)"
+        "--workers",
+        type=int_in(1, 256),
+        default=None,
+        help="parallel worker processes, 1..256 (default: CPU cores)",
     )
     add_planner_arguments(p, timeout_help="planner time limit per scenario")
     p.add_argument(

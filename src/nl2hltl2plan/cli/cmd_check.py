@@ -6,7 +6,7 @@ import argparse
 import json
 import sys
 
-from nl2hltl2plan.errors import DataError, SpecError
+from nl2hltl2plan.errors import DataError, FormulaTooLargeError, SpecError
 from nl2hltl2plan.io import read_json
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 
@@ -17,7 +17,8 @@ def register(sub: argparse._SubParsersAction) -> None:
         help="validate a hierarchical sc-LTL spec file (Definition 2.1)",
         description="Validate a hierarchical sc-LTL specification in the paper's JSON form "
         '(a list of levels, each {"name": "formula" or [actions]}). Exit 0 when valid, '
-        "1 with the reasons when not, 2 when the file cannot be read as JSON.",
+        "1 with the reasons when not, 2 when the file cannot be read as JSON or holds a formula too large "
+        "to check.",
     )
     p.add_argument("spec", help="specification JSON file")
     p.add_argument("--json", action="store_true", help="print one JSON object")
@@ -31,6 +32,8 @@ def run(args: argparse.Namespace) -> int:
         return _report(args, 2, [str(exc)])
     try:
         spec = HierarchicalSpec.from_json(data)
+    except FormulaTooLargeError as exc:  # cannot be checked at all: bad input
+        return _report(args, 2, [str(exc)])
     except SpecError as exc:
         reasons = [line.strip()[2:] for line in str(exc).splitlines()[1:]] or [str(exc)]
         return _report(args, 1, reasons)

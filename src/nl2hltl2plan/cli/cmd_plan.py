@@ -84,7 +84,7 @@ def register(sub: Any) -> None:
         help="write result.json and pictures to this folder (default: none)",
     )
     add_planner_arguments(p)
-    add_llm_arguments(p)
+    add_llm_arguments(p, batch=True)
     p.set_defaults(func=run)
 
 
@@ -105,7 +105,7 @@ def _spinner(enabled: bool) -> tuple[contextlib.AbstractContextManager[Any], Cal
 
 
 def run(args: argparse.Namespace) -> int:
-    from nl2hltl2plan.io import ensure_writable_dir
+    from nl2hltl2plan.io import check_new_file, ensure_writable_dir
     from nl2hltl2plan.language.backends import load_batch_answers, open_client, resolve_backend
     from nl2hltl2plan.language.llm.batch import BatchCollector, PendingAnswer
     from nl2hltl2plan.pipeline import PipelineOptions
@@ -126,6 +126,8 @@ def run(args: argparse.Namespace) -> int:
     )
     if args.out is not None:
         ensure_writable_dir(args.out)
+    if args.batch_out:
+        check_new_file(args.batch_out, "batch file")
     if note:
         print(f"note: {note}", file=sys.stderr)
     if args.batch_answers:
