@@ -1,7 +1,8 @@
 """Offline language stage time against instruction length (issue 25: the parser must be near-linear and
 the instruction capped at 2,000 characters).
 
-    PYTHONPATH=src python scripts/bench_instruction_length.py [--out results/reliability/instruction_length.md]
+    PYTHONPATH=src python scripts/bench_instruction_length.py [--out FILE]
+    (default FILE: results/reliability/instruction_length.md)
 
 For five instruction shapes (the paper's dishwasher sentence repeated, long `and` lists, comma lists,
 `then` chains, many short sentences) it times `translate(..., backend="offline")` on the demo world,
@@ -32,9 +33,7 @@ DISHWASHER = (
 ITEMS = ["plate", "mug", "fork", "cup", "saucer"]
 SHAPES: dict[str, Callable[[int], str]] = {
     "dishwasher sentence repeated": lambda k: DISHWASHER * k,
-    "one long 'and' list": lambda k: "put the "
-    + " and the ".join((ITEMS * k)[:k])
-    + " in the lower rack",
+    "one long 'and' list": lambda k: "put the " + " and the ".join((ITEMS * k)[:k]) + " in the lower rack",
     "one long comma list": lambda k: "put the " + ", ".join((ITEMS * k)[:k]) + " in the lower rack",
     "'then' chain": lambda k: "put the plate in the lower rack" + " then put the mug in the upper rack" * k,
     "short sentences": lambda k: "Put the plate in the lower rack. " * k,
@@ -72,8 +71,8 @@ def main() -> None:
     lines = [
         "# Offline language stage: time against instruction length",
         "",
-        f"Command: `PYTHONPATH=src python scripts/bench_instruction_length.py` (cap: {MAX_INSTRUCTION_CHARS:,} "
-        "characters)  ",
+        "Command: `PYTHONPATH=src python scripts/bench_instruction_length.py` "
+        f"(cap: {MAX_INSTRUCTION_CHARS:,} characters)  ",
         f"Commit: {_commit()}  ",
         f"Machine: {platform.node()}, {platform.processor() or platform.machine()}, "
         f"Python {platform.python_version()} (2 shared cores)",

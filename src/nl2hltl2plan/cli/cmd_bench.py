@@ -131,8 +131,8 @@ def run(args: argparse.Namespace) -> int:
     from nl2hltl2plan.evaluation.rows import rows_of
 
     out: Path = ensure_writable_dir(args.out)
+    gts = {g.id: g for g in load_gt(args.gt)}  # a bad --gt file is refused before the data loads
     preload()
-    gts = {g.id: g for g in load_gt(args.gt)}
     scenarios = alfred_scenarios(args.robots, args.n_base, args.limit, args.draw, gts=list(gts.values()))
     short = sorted({s.instance for s in scenarios if args.draw >= len(gts[s.instance].init_pos)})
     if short:

@@ -135,8 +135,8 @@ def run(args: argparse.Namespace) -> int:
         for e in errors[:5]:
             print(f"warning: batch answer {e}", file=sys.stderr)
         print(f"loaded {n} batch answers into the cache", file=sys.stderr)
+    team = parse_team(args.robots)  # before the world: a bad team is refused without loading anything
     world = load_world(args.world)
-    team = parse_team(args.robots)
     batch = BatchCollector() if args.batch_out else None
     spinner, on_request = _spinner(backend != "offline" and batch is None and not args.json)
     try:

@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import argparse
 import importlib.util
+import ipaddress
+import re
 import socket
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
@@ -66,6 +68,11 @@ def run(args: argparse.Namespace) -> int:
 def check_listen_address(host: str, port: int) -> None:
     """Refuse, before starting, a host that does not resolve (`256.1.1.1`) or an address that cannot be
     listened on (port taken, not this machine's interface): uvicorn would exit with status 3 or 1."""
+    if re.fullmatch(r"[0-9.]+", host):  # looks like IPv4: checked here, never sent to a DNS resolver
+        try:
+            ipaddress.IPv4Address(host)
+        except ValueError as exc:
+            raise ServeError(f"cannot listen on --host {host!r}: {exc}") from None
     try:
         infos = socket.getaddrinfo(host, port, type=socket.SOCK_STREAM, flags=socket.AI_PASSIVE)
     except (socket.gaierror, UnicodeError) as exc:
