@@ -32,12 +32,20 @@ def test_robots_superscript_two(capsys: pytest.CaptureFixture[str]) -> None:
     assert "unknown robot profile(s) ²" in capsys.readouterr().err
 
 
+def test_robots_names_longer_than_a_file_name(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["plan", PLATES, "--robots", ",".join(["robot1"] * 80), "--llm", "offline"]) == 2
+    assert capsys.readouterr().err.startswith("error: --robots names 80 robots; a team has at most 64")
+
+
 def test_check_a_formula_too_large_for_spot(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     spec = tmp_path / "big.json"
     spec.write_text(json.dumps([{"root": " & ".join(f"F p{i}" for i in range(70_000))}]))
     assert main(["check", str(spec)]) == 2
     err = capsys.readouterr().err
     assert "L1 root: formula 'F p0 & F p1" in err and "too large for Spot" in err
+    assert main(["check", str(spec), "--json"]) == 2
+    out, err = capsys.readouterr()
+    assert json.loads(out)["exit"] == 2 and err.startswith("error: L1 root: formula")
 
 
 class Pair(BaseModel):
@@ -98,7 +106,9 @@ def test_nested_brackets_from_a_server(brackets_server: str, capsys: pytest.Capt
     assert "nests JSON too deeply" in capsys.readouterr().err
 
 
-@pytest.mark.parametrize("url", ["::::", "localhost:8000", "http://", "ftp://host/v1", "http://h:99999/v1"])
+@pytest.mark.parametrize(
+    "url", ["::::", "localhost:8000", "http://", "ftp://host/v1", "http://h:99999/v1", "http://[::1"]
+)
 def test_a_base_url_that_is_not_an_http_url(
     url: str, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
 ) -> None:
@@ -169,6 +179,7 @@ def test_a_damaged_trials_file_is_exit_2_naming_it(
     "relative, data, load, words",
     [
         ("alfred/trials.jsonl.gz", b"not gzip at all", alfred.alfred_data, "damaged (BadGzipFile"),
+        ("alfred/trials.jsonl.gz", b"", alfred.alfred_data, "holds no trial"),
         (
             "alfred/layouts/FloorPlan17-layout.npy",
             b"\x93NUMPY\x01\x00v\x00{'descr'",

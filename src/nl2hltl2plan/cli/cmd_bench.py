@@ -19,6 +19,7 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
+from nl2hltl2plan.argtypes import MAX_ROBOTS
 from nl2hltl2plan.cli.options import (
     add_backend_argument,
     add_llm_arguments,
@@ -35,7 +36,6 @@ from nl2hltl2plan.io import ensure_writable_dir, write_json
 from nl2hltl2plan.pipeline import PipelineOptions
 from nl2hltl2plan.worlds.benchmark import load_gt
 from nl2hltl2plan.worlds.tasks import GTInstance
-from nl2hltl2plan.worlds.team import MAX_ROBOTS
 
 # Each suite module exposes `register(bench_subparsers)`; a module missing from the tree is not offered.
 SUITE_MODULES = ["nl2hltl2plan.cli.bench_experiments", "nl2hltl2plan.cli.bench_smartllm"]

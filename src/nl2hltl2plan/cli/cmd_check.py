@@ -49,6 +49,8 @@ def run(args: argparse.Namespace) -> int:
 def _report(args: argparse.Namespace, code: int, reasons: list[str], summary: dict | None = None) -> int:
     if args.json:
         print(json.dumps({"valid": code == 0, "exit": code, "reasons": reasons, **(summary or {})}, indent=2))
+        if code == 2:  # bad input: its one-line error on stderr, with --json too
+            print(f"error: {reasons[0]}", file=sys.stderr)
     elif code == 0 and summary:
         print(
             f"valid: {summary['levels']} levels, {summary['formulas']} formulas, {summary['leaves']} leaves, "

@@ -104,6 +104,8 @@ def alfred_data() -> AlfredData:
             types.update(_type_of_name(n) for n, *_ in poses)
     except (KeyError, ValueError, TypeError, AttributeError, IndexError) as exc:
         raise DataError(f"ALFRED trials file {path} is damaged: a record lacks or mistypes {exc}") from None
+    if not trials:
+        raise DataError(f"ALFRED trials file {path} holds no trial (empty or damaged)")
     return AlfredData(trials, by_fp, frozenset(types), frozenset(puts))
 
 

@@ -29,6 +29,7 @@ from dataclasses import dataclass
 from functools import cache
 from pathlib import Path
 
+from nl2hltl2plan.argtypes import MAX_ROBOTS
 from nl2hltl2plan.config import data_path
 from nl2hltl2plan.errors import DataError, PlanningError
 from nl2hltl2plan.io import read_json
@@ -52,7 +53,6 @@ KNOWN_SKILLS = frozenset(SKILL_VERBS) | NO_VERB_SKILLS
 VERB_SKILL = {v: k for k, v in SKILL_VERBS.items()}
 VERB_WORDS = {"pickup": "pick up", "toggle_on": "switch on", "toggle_off": "switch off"}
 TRASH = "GarbageCan"
-MAX_ROBOTS = 64  # a team's size: far above the paper's (4) and the planner's practical range
 
 
 @dataclass(frozen=True)
@@ -225,7 +225,7 @@ def parse_team(text: str | int) -> Team:
         return Team(n)
     text = str(text).strip()
     path = Path(text)
-    if text.endswith(".json") or path.exists():  # a path: read_json refuses what is not a regular file
+    if text.endswith(".json") or _exists(path):  # a path: read_json refuses what is not a regular file
         return _team_file(path)
     profiles = smartllm_profiles()
     names = [n.strip() for n in text.split(",") if n.strip()]
@@ -238,6 +238,13 @@ def parse_team(text: str | int) -> Team:
             f"{len(profiles)} from smartllm/robots.json, or a JSON file"
         )
     return Team.of([profiles[n] for n in names])
+
+
+def _exists(path: Path) -> bool:
+    try:
+        return path.exists()
+    except OSError:  # a name too long to be a file: profile names
+        return False
 
 
 def _team_file(path: Path) -> Team:

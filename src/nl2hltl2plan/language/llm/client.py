@@ -278,7 +278,7 @@ class LLMClient:
                 wait = _retry_after(exc)
                 if wait is not None and wait > self._time_left():
                     raise LLMError(
-                        f"{name}: the server at {where} asks to retry after {round(wait, 1):g}s, past the "
+                        f"{name}: the server at {where} asks to retry after {wait:.0f}s, past the "
                         f"instruction's LLM deadline ({max(0.0, self._time_left()):.0f}s left of "
                         f"{s.instruction_timeout:g}s): {_msg(exc)}"
                     ) from None

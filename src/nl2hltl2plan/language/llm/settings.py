@@ -83,12 +83,13 @@ class LLMSettings(BaseSettings):
         here, not deep inside the HTTP library."""
         if value is None or not value.strip():  # an empty variable: not configured
             return None
-        parts = urlsplit(value.strip())
         try:
-            port_ok = parts.port is None or 0 < parts.port < 65536
-        except ValueError:
-            port_ok = False
-        if parts.scheme.lower() not in ("http", "https") or not parts.hostname or not port_ok:
+            parts = urlsplit(value.strip())
+            ok = parts.scheme.lower() in ("http", "https") and bool(parts.hostname)
+            ok = ok and (parts.port is None or 0 < parts.port < 65536)
+        except ValueError:  # "http://[::1": an unclosed IPv6 address; a port that is not a number
+            ok = False
+        if not ok:
             raise ValueError(f"expected an http:// or https:// URL with a host, got {value!r}")
         return value.strip()
 
