@@ -56,7 +56,8 @@ class Case:
     env: dict[str, str] = field(default_factory=dict)
     setup: Callable[[Path], None] | None = None  # prepares the case's folder
     check: Callable[[Path], str | None] | None = None  # data-loss post-check: a problem or None
-    kill_after: float | None = None  # send SIGKILL after this many seconds (kill-while-writing cases)
+    kill_on_write: tuple[str, float] | None = None  # (watched folder, delay): SIGKILL this long after the
+    # command's first write into the folder is seen (a temporary file or a changed file), mid-write
     close_stdout: bool = False  # the reader of stdout is gone before the command writes (| head -0)
     words: str | None = None  # expected in the error line
 
@@ -98,12 +99,8 @@ def run_case(case: Case, work: Path) -> Result:
         proc.stdout.close()
         proc.stdout = None  # communicate() then reads stderr only
     killed = False
-    if case.kill_after is not None:
-        try:
-            proc.wait(timeout=case.kill_after)
-        except subprocess.TimeoutExpired:
-            os.killpg(proc.pid, signal.SIGKILL)
-            killed = True
+    if case.kill_on_write is not None:
+        killed = _kill_when_writing(proc, folder / case.kill_on_write[0], case.kill_on_write[1], case.limit)
     try:
         _, err = proc.communicate(timeout=case.limit)
     except subprocess.TimeoutExpired:
@@ -121,7 +118,10 @@ def run_case(case: Case, work: Path) -> Result:
     elif problem:
         verdict, detail = "data loss", problem
     elif killed:
-        verdict, detail = "ok", f"killed at {case.kill_after}s; files whole"
+        assert case.kill_on_write is not None
+        verdict = "ok"
+        watched, delay = case.kill_on_write
+        detail = f"killed {delay}s after its first write; {_state(folder / watched)}"
     elif code not in case.expect:
         verdict, detail = "wrong status", f"exit {code}, expected {sorted(case.expect)}: {last[:200]}"
     elif code == 2 and not last.startswith("error:"):
@@ -133,6 +133,41 @@ def run_case(case: Case, work: Path) -> Result:
     else:
         verdict, detail = "ok", last[:200]
     return Result(case, code, seconds, verdict, detail)
+
+
+def _snapshot(folder: Path) -> dict[str, tuple[int, int]]:
+    try:
+        return {p.name: (p.stat().st_size, p.stat().st_mtime_ns) for p in folder.iterdir()}
+    except OSError:  # not there yet, or a file vanished while listed
+        return {}
+
+
+def _kill_when_writing(proc: subprocess.Popen[bytes], watched: Path, delay: float, limit: float) -> bool:
+    """SIGKILL the command `delay` s after it first writes into `watched`; False if it ended first."""
+    before = _snapshot(watched)
+    end = time.monotonic() + limit
+    while proc.poll() is None and time.monotonic() < end:
+        if _snapshot(watched) != before:
+            time.sleep(delay)
+            if proc.poll() is not None:
+                return False
+            os.killpg(proc.pid, signal.SIGKILL)
+            return True
+        time.sleep(0.001)
+    return False
+
+
+def _state(watched: Path) -> str:
+    """What a kill left: files replaced by whole new ones, old files, temporary files."""
+    new = old = tmp = 0
+    for p in watched.iterdir() if watched.exists() else []:
+        if p.name.startswith("."):
+            tmp += 1
+        elif p.read_bytes() in (b"old", b'{"old": true}'):
+            old += 1
+        else:
+            new += 1
+    return f"files whole: {new} new, {old} old, {tmp} temporary left behind"
 
 
 # ---------------------------------------------------------------- file kinds
@@ -747,19 +782,22 @@ def _unchanged(name: str, content: str) -> Callable[[Path], str | None]:
 
 def kill_cases() -> list[Case]:
     out = []
-    for t in (1.0, 1.6, 2.2, 2.8, 3.4, 4.0, 4.6, 5.2, 5.8, 6.4):
-        out.append(Case("kills", f"plan -o killed at {t}s", ["plan", PLATES, "-o", "{d}/out"], {0}, 60,
-                        setup=_old_outputs, check=_whole_outputs, kill_after=t))  # fmt: skip
-    for t in (1.5, 3.0, 4.5):
-        out.append(Case("kills", f"bench tabletop killed at {t}s",
+    for d in (0.0, 0.002, 0.005, 0.01, 0.02, 0.05, 0.1, 0.2, 0.4, 0.8, 1.2, 1.6, 2.0, 2.5, 3.0):
+        out.append(Case("kills", f"plan -o killed {d}s into writing", ["plan", PLATES, "-o", "{d}/out"], {0},
+                        90, setup=_old_outputs, check=_whole_outputs, kill_on_write=("out", d)))  # fmt: skip
+    for d in (0.0, 0.01, 0.05):
+        out.append(Case("kills", f"bench tabletop killed {d}s into writing",
                         ["bench", "tabletop", "--out", "{d}/out", "--instances", "1", "--baseline", "none"],
-                        {0}, 120,
-                        setup=_old_outputs, check=_whole_outputs, kill_after=t))  # fmt: skip
-    for t in (2.0, 5.0, 25.0, 30.0, 35.0):  # training takes 20-40 s; the model is written at its end
-        out.append(Case("kills", f"train language killed at {t}s", ["train", "language"], {0}, 120,
-                        check=_model_loads, kill_after=t))  # fmt: skip
-    out.append(Case("kills", "show -o killed at 2s", ["show", HTT, "-o", "{d}/out/x.png"], {0}, 60,
-                    setup=_old_outputs, check=_whole_outputs, kill_after=2.0))  # fmt: skip
+                        {0}, 180, setup=_old_outputs, check=_whole_outputs,
+                        kill_on_write=("out", d)))  # fmt: skip
+    models = "cache/nl2hltl2plan/models"
+    for d in (0.0, 0.005, 0.02, 0.1):  # the model is written once, at the end of 20-40 s of training
+        out.append(Case("kills", f"train language killed {d}s into writing", ["train", "language"], {0}, 180,
+                        check=_model_loads, kill_on_write=(models, d)))  # fmt: skip
+    for d in (0.0, 0.01):
+        out.append(Case("kills", f"show -o killed {d}s into writing", ["show", HTT, "-o", "{d}/out/x.png"],
+                        {0}, 60, setup=_old_outputs, check=_whole_outputs,
+                        kill_on_write=("out", d)))  # fmt: skip
     out += [
         Case(
             "kills",
@@ -867,7 +905,9 @@ def write_report(path: Path, results: list[Result], total: int) -> None:
         f"{verdicts.get('bad message', 0)} bad messages.**",
         "",
         "Every case runs `python -m nl2hltl2plan ...` in a child process with a time limit "
-        "(tests/reliability/campaign25.py says how each is judged). None of these cases is in the earlier "
+        "(tests/reliability/campaign25.py says how each is judged); a kill case shows exit -9 (the "
+        "campaign's SIGKILL, sent a set delay after the command's first write is seen) and is judged on "
+        "its files. None of these cases is in the earlier "
         "campaigns (tests/reliability/campaign.py, 104 cases, and the 398-case campaign of the issue).",
         "",
         "| area | cases |",
