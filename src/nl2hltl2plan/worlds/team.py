@@ -220,7 +220,7 @@ def parse_team(text: str | int) -> Team:
         n = int(text)
         if not 1 <= n <= MAX_ROBOTS:
             raise PlanningError(
-                f"--robots must be from 1 to {MAX_ROBOTS} (a team has at most that many), got {n}"
+                f"--robots must be at least 1 and at most {MAX_ROBOTS} (a team's largest size), got {n}"
             )
         return Team(n)
     text = str(text).strip()
