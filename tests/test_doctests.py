@@ -9,6 +9,7 @@ import pytest
 
 MODULES = [
     "nl2hltl2plan.io",
+    "nl2hltl2plan.argtypes",
     "nl2hltl2plan.pipeline",
     "nl2hltl2plan.logic.trace",
     "nl2hltl2plan.worlds.starts",
