@@ -3,6 +3,9 @@
 `NL2HLTL2PLAN_DATA` points at the shared data folder (ALFRED layouts, trials, benchmark ground
 truth...). Default: `../shared/data` relative to the repository root, falling back to the current
 directory's `../shared/data`. The data is read in place and never copied into the repository.
+
+`user_cache_dir()` is where the package writes for the user (LLM answers, a retrained language model):
+`$XDG_CACHE_HOME/nl2hltl2plan`, default `~/.cache/nl2hltl2plan`; never the installed package.
 """
 
 from __future__ import annotations
@@ -19,6 +22,12 @@ DATA_CONTENTS = (
     "smartllm/ and nl2ltl/ — see the data README"
 )
 _REPO_ROOT = Path(__file__).resolve().parents[2]
+
+
+def user_cache_dir() -> Path:
+    """The user's cache folder of the package (it may not exist yet)."""
+    base = os.environ.get("XDG_CACHE_HOME") or str(Path.home() / ".cache")
+    return Path(base) / "nl2hltl2plan"
 
 
 def data_dir(required: bool = True) -> Path | None:

@@ -13,6 +13,11 @@ class FormulaError(Nl2Hltl2PlanError):
     """An LTL formula that cannot be parsed, is not sc-LTL, or cannot be translated in time."""
 
 
+class FormulaTooLargeError(FormulaError):
+    """A formula beyond what Spot can represent (more than 65,535 operands of one operator...): the input
+    cannot be checked at all, which is bad input (exit 2), not an invalid specification (exit 1)."""
+
+
 class SpecError(Nl2Hltl2PlanError):
     """A hierarchical specification that breaks Definition 2.1 (or is malformed JSON)."""
 

@@ -19,9 +19,11 @@ from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
-from nl2hltl2plan.argtypes import positive_int
+from nl2hltl2plan.argtypes import int_in, seed
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.language.options import add_llm_arguments, llm_settings
+
+MAX_INSTANCES = 1000  # the paper runs 25 (tabletop) and 10 (handover); each takes a planner call
 
 
 def register(sub: Any) -> None:
@@ -41,11 +43,11 @@ def register(sub: Any) -> None:
         p.add_argument("-o", "--out", type=Path, required=True, help="output folder")
         p.add_argument(
             "--instances",
-            type=positive_int,
+            type=int_in(1, MAX_INSTANCES),
             default=instances,
-            help=f"seeded instances per task (default {instances})",
+            help=f"seeded instances per task, 1..{MAX_INSTANCES} (default {instances})",
         )
-        p.add_argument("--seed", type=int, default=0, help=f"seed of {seeded} (default 0)")
+        p.add_argument("--seed", type=seed, default=0, help=f"seed of {seeded}, 0..2^32-1 (default 0)")
         p.add_argument(
             "--baseline",
             choices=["auto", "llm", "none"],

@@ -12,10 +12,11 @@ from __future__ import annotations
 import argparse
 import contextlib
 import json
+import math
 from pathlib import Path
 from typing import Any
 
-from nl2hltl2plan.argtypes import positive_float
+from nl2hltl2plan.argtypes import seconds
 from nl2hltl2plan.cli.options import add_backend_argument
 from nl2hltl2plan.language.options import add_llm_arguments, llm_settings
 
@@ -32,7 +33,7 @@ def register(bench_subparsers: Any) -> None:
     add_backend_argument(source, help_extra=" (the instruction through the language stage)")
     p.add_argument(
         "--timeout",
-        type=positive_float,
+        type=seconds,
         default=30.0,
         help="planner time limit per task in seconds (default 30)",
     )
@@ -85,13 +86,12 @@ def _masses(path: Path | None) -> dict[str, float]:
     if path is None:
         return {}
     from nl2hltl2plan.errors import DataError
+    from nl2hltl2plan.io import read_json
 
-    try:
-        raw = json.loads(path.read_text())
-    except (OSError, json.JSONDecodeError) as exc:
-        raise DataError(f"cannot read masses file {path}: {exc}") from None
+    raw = read_json(path, "masses file")
     if not isinstance(raw, dict) or not all(
-        isinstance(v, int | float) and not isinstance(v, bool) and v > 0 for v in raw.values()
+        isinstance(v, int | float) and not isinstance(v, bool) and math.isfinite(v) and v > 0
+        for v in raw.values()
     ):
         raise DataError(f"masses file {path}: expected an object of positive kg values by object type")
     return {str(k): float(v) for k, v in raw.items()}

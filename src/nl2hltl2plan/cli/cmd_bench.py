@@ -19,16 +19,16 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from nl2hltl2plan.argtypes import MAX_ROBOTS
 from nl2hltl2plan.cli.commands import COMMANDS
 from nl2hltl2plan.cli.options import (
     add_backend_argument,
     add_llm_arguments,
     add_planner_arguments,
-    int_list,
+    int_in,
+    ints_in,
     llm_settings,
-    nonnegative_int,
     planner_options,
-    positive_int,
 )
 from nl2hltl2plan.errors import PlanningError
 from nl2hltl2plan.evaluation.ray_engine import ENGINES, run_with_engine
@@ -65,19 +65,32 @@ def register(sub: Any) -> None:
         default=None,
         help="ground-truth JSONL with the schema of alfred_test50_gt.jsonl (default: that file)",
     )
-    p.add_argument("--robots", type=int_list, default=[1, 2, 4], help="team sizes (default 1,2,4)")
-    p.add_argument("--n-base", type=int_list, default=None, help="base-task counts to include (default: all)")
+    p.add_argument(
+        "--robots",
+        type=ints_in(1, MAX_ROBOTS),
+        default=[1, 2, 4],
+        help=f"team sizes, 1..{MAX_ROBOTS} (default 1,2,4)",
+    )
+    p.add_argument(
+        "--n-base",
+        type=ints_in(1, 100),
+        default=None,
+        help="base-task counts to include, 1..100 (default: all)",
+    )
     p.add_argument(
         "--limit",
-        type=positive_int,
+        type=int_in(1, 1_000_000),
         default=None,
         help="first N instances only, after --n-base (default: all)",
     )
     p.add_argument(
-        "--draw", type=nonnegative_int, default=0, help="init_pos draw for the start cells, 0..4 (default 0)"
+        "--draw", type=int_in(0, 4), default=0, help="init_pos draw for the start cells, 0..4 (default 0)"
     )
     p.add_argument(
-        "--workers", type=positive_int, default=None, help="parallel worker processes (default: CPU cores)"
+        "--workers",
+        type=int_in(1, 256),
+        default=None,
+        help="parallel worker processes, 1..256 (default: CPU cores)",
     )
     add_planner_arguments(p, timeout_help="planner time limit per scenario")
     p.add_argument(
@@ -122,8 +135,8 @@ def run(args: argparse.Namespace) -> int:
     from nl2hltl2plan.worlds.benchmark import load_gt
 
     out: Path = ensure_writable_dir(args.out)
+    gts = {g.id: g for g in load_gt(args.gt)}  # a bad --gt file is refused before the data loads
     preload()
-    gts = {g.id: g for g in load_gt(args.gt)}
     scenarios = alfred_scenarios(args.robots, args.n_base, args.limit, args.draw, gts=list(gts.values()))
     short = sorted({s.instance for s in scenarios if args.draw >= len(gts[s.instance].init_pos)})
     if short:

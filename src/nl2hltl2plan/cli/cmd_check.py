@@ -7,7 +7,7 @@ import json
 import sys
 
 from nl2hltl2plan.cli.commands import COMMANDS
-from nl2hltl2plan.errors import DataError, SpecError
+from nl2hltl2plan.errors import DataError, FormulaTooLargeError, SpecError
 from nl2hltl2plan.io import read_json
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 
@@ -18,7 +18,8 @@ def register(sub: argparse._SubParsersAction) -> None:
         help=COMMANDS["check"],
         description="Validate a hierarchical sc-LTL specification in the paper's JSON form "
         '(a list of levels, each {"name": "formula" or [actions]}). Exit 0 when valid, '
-        "1 with the reasons when not, 2 when the file cannot be read as JSON.",
+        "1 with the reasons when not, 2 when the file cannot be read as JSON or holds a formula too large "
+        "to check.",
     )
     p.add_argument("spec", help="specification JSON file")
     p.add_argument("--json", action="store_true", help="print one JSON object")
@@ -32,6 +33,8 @@ def run(args: argparse.Namespace) -> int:
         return _report(args, 2, [str(exc)])
     try:
         spec = HierarchicalSpec.from_json(data)
+    except FormulaTooLargeError as exc:  # cannot be checked at all: bad input
+        return _report(args, 2, [str(exc)])
     except SpecError as exc:
         reasons = [line.strip()[2:] for line in str(exc).splitlines()[1:]] or [str(exc)]
         return _report(args, 1, reasons)
@@ -47,6 +50,8 @@ def run(args: argparse.Namespace) -> int:
 def _report(args: argparse.Namespace, code: int, reasons: list[str], summary: dict | None = None) -> int:
     if args.json:
         print(json.dumps({"valid": code == 0, "exit": code, "reasons": reasons, **(summary or {})}, indent=2))
+        if code == 2:  # bad input: its one-line error on stderr, with --json too
+            print(f"error: {reasons[0]}", file=sys.stderr)
     elif code == 0 and summary:
         print(
             f"valid: {summary['levels']} levels, {summary['formulas']} formulas, {summary['leaves']} leaves, "

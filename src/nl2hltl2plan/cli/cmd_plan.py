@@ -91,7 +91,7 @@ def register(sub: Any) -> None:
         help="write result.json and pictures to this folder (default: none)",
     )
     add_planner_arguments(p)
-    add_llm_arguments(p)
+    add_llm_arguments(p, batch=True)
     p.set_defaults(func=run)
 
 
@@ -112,7 +112,7 @@ def _spinner(enabled: bool) -> tuple[contextlib.AbstractContextManager[Any], Cal
 
 
 def run(args: argparse.Namespace) -> int:
-    from nl2hltl2plan.io import ensure_writable_dir
+    from nl2hltl2plan.io import check_new_file, ensure_writable_dir
     from nl2hltl2plan.language.backends import load_batch_answers, open_client, resolve_backend
     from nl2hltl2plan.language.llm.batch import BatchCollector, PendingAnswer
     from nl2hltl2plan.pipeline import PipelineOptions
@@ -134,6 +134,8 @@ def run(args: argparse.Namespace) -> int:
     )
     if args.out is not None:
         ensure_writable_dir(args.out)
+    if args.batch_out:
+        check_new_file(args.batch_out, "batch file")
     if note:
         print(f"note: {note}", file=sys.stderr)
     if args.batch_answers:
@@ -141,8 +143,8 @@ def run(args: argparse.Namespace) -> int:
         for e in errors[:5]:
             print(f"warning: batch answer {e}", file=sys.stderr)
         print(f"loaded {n} batch answers into the cache", file=sys.stderr)
+    team = parse_team(args.robots)  # before the world: a bad team is refused without loading anything
     world = load_world(args.world)
-    team = parse_team(args.robots)
     batch = BatchCollector() if args.batch_out else None
     spinner, on_request = _spinner(backend != "offline" and batch is None and not args.json)
     try:

@@ -2,8 +2,10 @@
 
 Trains the slot model (`language.learned`) on ALFRED's train annotations (text-faithful labels) minus
 the benchmark's excluded trials, prints its slot accuracy on valid_seen / valid_unseen, and writes
-the artifact (default: the committed one inside the package). Deterministic for a seed; about 20-40 s
-on 2 cores.
+the artifact (default: the user's cache, ~/.cache/nl2hltl2plan/models/slot_model.npz, which the
+offline parser then prefers to the packaged model; the installed package is never written). The
+file is written to a temporary file and renamed: a kill leaves the previous model. Deterministic for
+a seed; about 20-40 s on 2 cores.
 """
 
 from __future__ import annotations
@@ -12,6 +14,7 @@ import argparse
 from pathlib import Path
 from typing import Any
 
+from nl2hltl2plan.argtypes import seed
 from nl2hltl2plan.cli.commands import COMMANDS
 
 
@@ -22,19 +25,17 @@ def register(sub: Any) -> None:
     what = p.add_subparsers(dest="what", metavar="WHAT", required=True)
     lang = what.add_parser("language", help="the learned language model (slot model)")
     lang.add_argument("-o", "--out", type=Path, default=None,
-                      help="where to write the model (default: the packaged slot_model.npz)")
-    lang.add_argument("--seed", type=int, default=0, help="random seed (default 0)")
+                      help="where to write the model (default: ~/.cache/nl2hltl2plan/models/slot_model.npz, "
+                      "which the offline parser prefers to the packaged model; delete it to go back)")
+    lang.add_argument("--seed", type=seed, default=0, help="random seed, 0..2^32-1 (default 0)")
     lang.set_defaults(func=run)
 
 
 def run(args: argparse.Namespace) -> int:
-    from importlib import resources
-
-    from nl2hltl2plan.language.learned.model import ARTIFACT
+    from nl2hltl2plan.io import check_output_file
+    from nl2hltl2plan.language.learned.model import user_model_path
     from nl2hltl2plan.language.learned.train import train_and_report
 
-    out = args.out or Path(str(resources.files("nl2hltl2plan.language.learned") / ARTIFACT))
-    if out.parent and not out.parent.exists():
-        out.parent.mkdir(parents=True)
+    out = check_output_file(args.out or user_model_path(), ("npz",), "language model")
     print(train_and_report(out, seed=args.seed))
     return 0

@@ -3,7 +3,9 @@
 Each command module exposes `register(subparsers)`, which adds its parser and sets `func`, a
 callable taking the parsed arguments and returning the exit code. Errors of the package's own
 family are printed as one readable message (exit 2 unless the command says otherwise); the CLI
-never shows a traceback for user input.
+never shows a traceback for user input. The exit statuses (docs/reliability.md): 0 success, 1 a
+definite "no", 2 bad input or usage, 3 LLM requests pending (batch mode), 4 an internal error (a
+bug), 130 interrupted, 141 output cut by a closed pipe (`| head`: quiet, as Unix tools).
 """
 
 from __future__ import annotations
@@ -52,6 +54,7 @@ def build_parser(command: str | None = "*") -> argparse.ArgumentParser:
 
 
 INTERNAL_ERROR = 4  # an unexpected exception: a bug of ours, not the user's input
+BROKEN_PIPE = 141  # 128 + SIGPIPE: what a shell reports for a Unix tool whose reader went away
 
 
 def _is_validation_error(exc: Exception) -> bool:
@@ -66,7 +69,24 @@ def _one_line(text: str) -> str:
     return " | ".join(lines) if lines else "unknown error"
 
 
+def _commands(parser: argparse.ArgumentParser) -> list[str]:
+    for action in parser._actions:  # noqa: SLF001 - argparse keeps its sub-commands here
+        if isinstance(action, argparse._SubParsersAction):  # noqa: SLF001
+            return list(action.choices)
+    return []
+
+
 def main(argv: list[str] | None = None) -> int:
+    try:
+        code = _run(argv)
+        sys.stdout.flush()  # a closed pipe shows here, while it can still be handled
+        return code
+    except BrokenPipeError:  # output piped into `head` & co.: stop quietly
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())  # no second error at exit
+        return BROKEN_PIPE
+
+
+def _run(argv: list[str] | None) -> int:
     if argv is None:
         argv = sys.argv[1:]
     parser = build_parser(_command_in(argv))
@@ -74,11 +94,15 @@ def main(argv: list[str] | None = None) -> int:
         args = parser.parse_args(argv)
     except SystemExit as exc:  # usage errors (exit 2) and --help (exit 0), already printed
         return int(exc.code or 0) if isinstance(exc.code, int | None) else 2
-    if not getattr(args, "func", None):
-        parser.print_help()
+    if not getattr(args, "func", None):  # no command: usage, then one line saying so (bad usage: 2)
+        parser.print_help(sys.stderr)
+        print(f"error: {parser.prog}: no command given; choose one of {', '.join(_commands(parser))}",
+              file=sys.stderr)  # fmt: skip
         return 2
     try:
         return int(args.func(args) or 0)
+    except BrokenPipeError:  # an OSError, but not the user's path: handled by `main`
+        raise
     except Nl2Hltl2PlanError as exc:
         print(f"error: {_one_line(str(exc))}", file=sys.stderr)
         return 2
@@ -86,9 +110,6 @@ def main(argv: list[str] | None = None) -> int:
         where = f" {exc.filename}" if exc.filename else ""
         print(f"error: cannot use{where}: {exc.strerror or exc}", file=sys.stderr)
         return 2
-    except BrokenPipeError:  # output piped into `head` & co.: stop quietly
-        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
-        return 0
     except KeyboardInterrupt:
         print("interrupted", file=sys.stderr)
         return 130

@@ -6,7 +6,7 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
-from nl2hltl2plan.argtypes import int_list, nonnegative_int, positive_float, positive_int
+from nl2hltl2plan.argtypes import int_in, ints_in, seconds
 from nl2hltl2plan.language.backends import BACKENDS
 from nl2hltl2plan.language.options import add_llm_arguments, llm_settings
 
@@ -39,7 +39,10 @@ def add_planner_arguments(p: argparse.ArgumentParser, timeout_help: str = "plann
         help="fast: anytime with a proven bound; exact: proven optimal (default: fast)",
     )
     g.add_argument(
-        "--timeout", type=positive_float, default=300.0, help=f"{timeout_help} in seconds (default 300)"
+        "--timeout",
+        type=seconds,
+        default=300.0,
+        help=f"{timeout_help} in seconds (default 300, at most a week)",
     )
 
 
@@ -51,10 +54,9 @@ __all__ = [
     "add_backend_argument",
     "add_llm_arguments",
     "add_planner_arguments",
-    "int_list",
+    "int_in",
+    "ints_in",
     "llm_settings",
-    "nonnegative_int",
     "planner_options",
-    "positive_float",
-    "positive_int",
+    "seconds",
 ]

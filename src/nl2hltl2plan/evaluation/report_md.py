@@ -22,7 +22,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 from nl2hltl2plan.evaluation.language_bench import STAGES  # noqa: E402
 from nl2hltl2plan.evaluation.report import paper_table1, percentile, summarize  # noqa: E402
 from nl2hltl2plan.evaluation.rows import ScenarioRow  # noqa: E402
-from nl2hltl2plan.io import write_text  # noqa: E402
+from nl2hltl2plan.io import save_figure, write_text  # noqa: E402
 
 
 def _rate(num: int, den: int) -> float | None:
@@ -160,7 +160,7 @@ def plot_success(summaries: dict[str, dict[str, Any]], out: Path) -> None:
         if robots:
             ax.legend(fontsize=7)
     fig.tight_layout()
-    fig.savefig(out, dpi=110)
+    save_figure(fig, out, dpi=110)
     plt.close(fig)
 
 
@@ -227,7 +227,7 @@ def plot_cost_time(summary: dict[str, Any], out: Path, rows: Sequence[ScenarioRo
         if ax.get_legend_handles_labels()[0]:
             ax.legend()
     fig.tight_layout()
-    fig.savefig(out, dpi=110)
+    save_figure(fig, out, dpi=110)
     plt.close(fig)
 
 

@@ -30,7 +30,7 @@ from typing import Any
 import networkx as nx
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
-from nl2hltl2plan.io import write_json, write_text
+from nl2hltl2plan.io import atomic_path, write_json, write_text
 from nl2hltl2plan.language.backends import Backend
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.pipeline import PipelineOptions, planning_stage
@@ -279,7 +279,7 @@ def run_bench(
     """Run every task, write DIR/rows.jsonl, DIR/summary.json and DIR/report.md; return the summary."""
     out.mkdir(parents=True, exist_ok=True)
     rows = []
-    with (out / "rows.jsonl").open("w") as sink:
+    with atomic_path(out / "rows.jsonl", "rows file") as tmp, tmp.open("w") as sink:  # all rows or the old
         for task in load_tasks():
             row = run_task(task, make_spec, timeout_s, objective, masses)
             rows.append(row)

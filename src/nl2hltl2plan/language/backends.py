@@ -33,6 +33,9 @@ def resolve_backend(requested: str | None, settings: LLMSettings) -> tuple[Backe
     raise LLMError(f"unknown LLM backend {requested!r}; choose one of {', '.join(BACKENDS)}")
 
 
+LOCAL_TIMEOUTS = {"timeout": 300.0, "instruction_timeout": 900.0}  # --llm local on this machine's CPU
+
+
 @contextlib.contextmanager
 def open_client(
     backend: str,
@@ -55,9 +58,11 @@ def open_client(
     from nl2hltl2plan.language.llm.local_server import LocalServer, smollm2_path
 
     gguf = settings.gguf or smollm2_path()
-    # the server's port changes every run: name the model file in cache keys instead
+    # the server's port changes every run: name the model file in cache keys instead; a small model
+    # generating on a CPU is slow but alive, so unless the user set them, its deadlines are longer
+    slow = {k: v for k, v in LOCAL_TIMEOUTS.items() if k not in settings.model_fields_set}
     local = settings.model_copy(
-        update={"model": gguf.name, "api_key": "none", "cache_scope": f"local:{gguf.name}"}
+        update={"model": gguf.name, "api_key": "none", "cache_scope": f"local:{gguf.name}", **slow}
     )
     if batch is not None:  # batch mode answers from the cache only: no server needed
         yield LLMClient(local, batch=batch, on_request=on_request)

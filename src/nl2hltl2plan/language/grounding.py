@@ -480,20 +480,22 @@ def scene_types(scene: str) -> set[str]:
 
     Used where no `World` is at hand (benchmark measurement); DataError when neither file exists.
     """
-    import json
-
     from nl2hltl2plan.config import data_dir
     from nl2hltl2plan.errors import DataError
+    from nl2hltl2plan.io import read_json
 
     base = data_dir(required=True)
     assert base is not None
     found: set[str] = set()
     info = base / "alfred_multiagent" / "scene_info" / f"{scene}.json"
-    if info.exists():
-        found |= {k.split("_")[0] for k in json.loads(info.read_text())["objects"]}
-    objs = base / "alfred" / "layouts" / f"{scene}-objects.json"
-    if objs.exists():
-        found |= set(json.loads(objs.read_text()))
+    try:
+        if info.exists():
+            found |= {k.split("_")[0] for k in read_json(info, "scene info file")["objects"]}
+        objs = base / "alfred" / "layouts" / f"{scene}-objects.json"
+        if objs.exists():
+            found |= {str(t) for t in read_json(objs, "ALFRED object list")}
+    except (KeyError, TypeError, AttributeError) as exc:
+        raise DataError(f"the object list of scene {scene} under {base} is damaged ({exc!r})") from None
     if not found:
         raise DataError(f"no object list for scene {scene} under {base}")
     found.discard("Floor")

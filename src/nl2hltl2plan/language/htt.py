@@ -24,7 +24,7 @@ import networkx as nx
 from pydantic import BaseModel, Field, ValidationError
 
 from nl2hltl2plan.errors import DataError, HTTError
-from nl2hltl2plan.io import loads, read_text
+from nl2hltl2plan.io import loads, read_json
 
 
 class HTTNode(BaseModel):
@@ -56,7 +56,7 @@ class HTT(BaseModel):
 
     @classmethod
     def load(cls, path: str | Path) -> HTT:
-        return cls.from_json(read_text(path, "HTT file"))
+        return cls.from_json(read_json(path, "HTT file"))  # errors name the file
 
     def to_json(self, indent: int | None = 2) -> str:
         return self.model_dump_json(indent=indent, exclude_none=True)

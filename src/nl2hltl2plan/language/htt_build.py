@@ -80,7 +80,7 @@ def build_htt(
         )
         for kid, m in zip(kids, members, strict=True):
             add_task(kid, by_id[m])
-        inner = [(a, b) for a, b in closure if a in members and b in members]
+        inner = [(a, b) for a in members for b in members if (a, b) in closure]  # not a scan of the closure
         for a, b in transitive_reduction(inner, members):
             relations.append((task_node[a], task_node[b]))
 

@@ -49,7 +49,7 @@ def llm_generator(backend: str, argv: list[str]) -> Iterator[Generator]:
     from nl2hltl2plan.language.translate import translate
 
     ap = argparse.ArgumentParser()
-    add_llm_arguments(ap)
+    add_llm_arguments(ap, batch=True)
     args = ap.parse_args(argv)
     settings = llm_settings(args)
     batch = BatchCollector() if args.batch_out else None

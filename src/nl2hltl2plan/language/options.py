@@ -5,12 +5,13 @@ from __future__ import annotations
 
 import argparse
 
-from nl2hltl2plan.argtypes import positive_float, positive_int
+from nl2hltl2plan.argtypes import int_in, seconds
 from nl2hltl2plan.language.llm.settings import LLMSettings
 
 
-def add_llm_arguments(p: argparse.ArgumentParser) -> None:
-    """The LLM client's options (each also readable from an NL2HLTL2PLAN_LLM_* variable)."""
+def add_llm_arguments(p: argparse.ArgumentParser, batch: bool = False) -> None:
+    """The LLM client's options (each also readable from an NL2HLTL2PLAN_LLM_* variable); `batch`: also
+    --batch-out / --batch-answers (only commands that implement batch mode offer them)."""
     g = p.add_argument_group("LLM backend (environment: NL2HLTL2PLAN_LLM_*)")
     g.add_argument(
         "--base-url",
@@ -22,24 +23,35 @@ def add_llm_arguments(p: argparse.ArgumentParser) -> None:
     g.add_argument("--temperature", type=float, default=None, help="sampling temperature (default 0)")
     g.add_argument(
         "--llm-timeout",
-        type=positive_float,
+        type=seconds,
         default=None,
-        help="seconds an LLM request may take in total (default 120)",
+        help="seconds one LLM request may take in total (default 30; raise it for slow servers)",
     )
-    g.add_argument("--retries", type=int, default=None, help="retries of failed requests (default 3)")
+    g.add_argument(
+        "--llm-instruction-timeout",
+        type=seconds,
+        default=None,
+        help="seconds all LLM requests of one instruction may take, retries and waits included (default 60)",
+    )
+    g.add_argument(
+        "--retries", type=int_in(0, 20), default=None, help="retries of failed requests, 0..20 (default 3)"
+    )
     g.add_argument(
         "--gguf", default=None, help="GGUF model file for --llm local (default: the SmolLM2 test model)"
     )
     g.add_argument(
-        "--threads", type=positive_int, default=None, help="CPU threads of the local server (default 1)"
+        "--threads", type=int_in(1, 256), default=None, help="local server CPU threads, 1..256 (default 1)"
     )
     g.add_argument(
         "--cache", default=None, help="answer cache folder, or 'off' (default ~/.cache/nl2hltl2plan/llm)"
     )
+    if not batch:
+        return
     g.add_argument(
         "--batch-out",
         default=None,
-        help="batch mode: write pending requests (OpenAI Batch JSONL) here (default: off)",
+        help="batch mode: write pending requests (OpenAI Batch JSONL) to this new file; an existing "
+        "file is refused, never overwritten (default: off)",
     )
     g.add_argument(
         "--batch-answers",
@@ -55,6 +67,7 @@ def llm_settings(args: argparse.Namespace) -> LLMSettings:
         api_key=args.api_key,
         temperature=args.temperature,
         timeout=args.llm_timeout,
+        instruction_timeout=args.llm_instruction_timeout,
         max_retries=args.retries,
         gguf=args.gguf,
         threads=args.threads,

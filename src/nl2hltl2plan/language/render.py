@@ -6,6 +6,7 @@ import textwrap
 from pathlib import Path
 from typing import Any
 
+from nl2hltl2plan.io import save_figure
 from nl2hltl2plan.language.htt import HTT
 
 
@@ -142,8 +143,7 @@ def draw_tree(
 
     fig = tree_figure(children, labels, relations, title)
     out = Path(path)
-    out.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(out, dpi=120, bbox_inches="tight")
+    save_figure(fig, out, dpi=120, bbox_inches="tight")
     plt.close(fig)
     return out
 

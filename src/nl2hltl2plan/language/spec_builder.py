@@ -38,17 +38,17 @@ def build_spec(
 ) -> HierarchicalSpec:
     htt.validate_tree()
     levels: list[dict[str, LeafOrFormula]] = []
-    stack = [htt.root]  # Algorithm 1 pops a stack; levels come from depths, so order is immaterial
+    by_id = {n.id: n for n in htt.nodes}  # one lookup table: linear in the tree, not quadratic
+    stack = [(htt.root, 1)]  # Algorithm 1 pops a stack; levels come from depths, so order is immaterial
     while stack:
-        v = stack.pop()
-        k = htt.depth(v.id)
+        v, k = stack.pop()  # k = GetDepth(v): the root has depth 1
         while len(levels) < k:
             levels.append({})
-        if htt.is_leaf(v.id):
+        if not v.children:
             levels[k - 1][spec_name(v.id)] = action_completion(v)
         else:
-            children = htt.children(v.id)
-            stack.extend(reversed(children))
+            children = [by_id[c] for c in v.children]
+            stack.extend((c, k + 1) for c in reversed(children))
             relations = [(spec_name(a), spec_name(b)) for a, b in htt.sibling_relations(v.id)]
             levels[k - 1][spec_name(v.id)] = generate_ltl([spec_name(c.id) for c in children], relations)
     # keep each level in node order for readable output

@@ -38,9 +38,10 @@ from nl2hltl2plan.language.tasks import BaseTaskSpec, task_letter, transitive_re
 from nl2hltl2plan.logic.hierarchical import LeafOrFormula
 from nl2hltl2plan.logic.relations import compile_relations
 from nl2hltl2plan.worlds.model import World
-from nl2hltl2plan.worlds.tasks import SLOTS
+from nl2hltl2plan.worlds.tasks import SLOTS, demand_of
 
 LtlSource = Literal["compiler", "llm", "learned"]
+MAX_INSTRUCTION_CHARS = 2000  # about 300 words, 15 times the paper's longest; bounds the parser's time
 ActionSource = Literal["auto", "recipe", "llm", "none"]
 Chooser = Callable[[list[Ambiguity]], dict[str, str]]  # ambiguities -> {"A.receptacle": "SideTable"}
 
@@ -83,6 +84,11 @@ def translate(
     with the parse's ambiguities (if any) before leaf actions and specs are built, returns more choices
     (`plan --ask` asks on the terminal: the instruction is parsed once).
     """
+    if len(instruction) > MAX_INSTRUCTION_CHARS:
+        raise HTTError(
+            f"the instruction is {len(instruction):,} characters long; the limit is "
+            f"{MAX_INSTRUCTION_CHARS:,} (split it into several instructions)"
+        )
     instruction = " ".join(instruction.split())
     if not instruction:
         raise HTTError("empty instruction")
@@ -202,8 +208,9 @@ def recipe_leaf_specs(
     by_task: dict[str, list[str]] = {}
     for leaf, t in leaf_task.items():
         by_task.setdefault(t, []).append(leaf)
+    demand = demand_of(tasks)  # once, not once per task: linear in the number of tasks
     for task in tasks:
-        specs = task.leaf_specs(world, others=[o for o in tasks if o.id != task.id])
+        specs = task.leaf_specs(world, demand=demand)
         for leaf, spec in zip(sorted(by_task.get(task.id, [])), specs, strict=False):
             out[leaf] = spec
     return out

@@ -35,7 +35,7 @@ from typing import Any
 
 import networkx as nx
 
-from nl2hltl2plan.errors import DataError, FormulaError, SpecError
+from nl2hltl2plan.errors import DataError, FormulaError, FormulaTooLargeError, SpecError
 from nl2hltl2plan.io import loads, read_text
 from nl2hltl2plan.logic import spot_backend as sb
 from nl2hltl2plan.logic.atom import Atom
@@ -116,6 +116,8 @@ class HierarchicalSpec:
                     if reasons:
                         raise FormulaError("not sc-LTL: " + "; ".join(reasons))
                     self._formulas[name] = f
+                except FormulaTooLargeError as exc:  # cannot be checked at all: bad input, not "invalid"
+                    raise FormulaTooLargeError(f"L{k} {name}: {exc}") from None
                 except (FormulaError, SpecError) as exc:
                     problems.append(f"L{k} {name}: {exc}")
         if problems:

@@ -28,7 +28,7 @@ import spot
 from spot import buddy
 
 from nl2hltl2plan.deadline import ChildError, run_with_deadline
-from nl2hltl2plan.errors import FormulaError
+from nl2hltl2plan.errors import FormulaError, FormulaTooLargeError
 from nl2hltl2plan.logic.automaton import Cube, Dfa
 
 # Formulas with more temporal operators than this are translated in a forked child under time,
@@ -113,6 +113,8 @@ def parse(text: str) -> Formula:
         return Formula(spot.formula(text))
     except SyntaxError as exc:
         raise FormulaError(f"cannot parse formula {_short(text)!r}: {_first_parse_error(str(exc))}") from None
+    except (RuntimeError, MemoryError, RecursionError) as exc:  # e.g. more than 65,535 operands in one &
+        raise FormulaTooLargeError(f"formula {_short(text)!r} is too large for Spot ({exc})") from None
 
 
 def _first_parse_error(spot_message: str) -> str:

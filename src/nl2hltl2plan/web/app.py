@@ -46,7 +46,7 @@ class PlanRequest(BaseModel):
 
     instruction: str = Field(min_length=1, max_length=4000)
     world: str = Field(default="demo", min_length=1, max_length=64)
-    robots: int = Field(default=1, ge=1, le=MAX_ROBOTS)
+    robots: int = Field(default=1, ge=1, le=MAX_ROBOTS, strict=True)  # `true` is not 1 robot
     objective: str = Field(default="min", pattern="^(min|minmax)$")
     plan_timeout_s: float = Field(default=60.0, gt=0, le=600)
     partial: bool = False  # plan what was understood of a partly understood instruction (`plan --partial`)

@@ -9,11 +9,11 @@ a movable receptacle, or it appears in a trial's `object_poses` (ALFRED only pos
 
 from __future__ import annotations
 
-import json
 from functools import cache
 
 from nl2hltl2plan.config import data_path
 from nl2hltl2plan.errors import DataError
+from nl2hltl2plan.io import read_json
 from nl2hltl2plan.worlds.model import Affordances
 
 EXTRA_TOGGLEABLE = frozenset(
@@ -83,8 +83,7 @@ class AffordanceTable:
 def alfred_affordances() -> AffordanceTable:
     """The table from the shared data (cached)."""
     path = data_path("alfred", "affordances.json")
-    try:
-        facts = json.loads(path.read_text())
-    except json.JSONDecodeError as exc:
-        raise DataError(f"{path} is not valid JSON: {exc}") from None
+    facts = read_json(path, "ALFRED affordances file")
+    if not isinstance(facts, dict):
+        raise DataError(f"ALFRED affordances file {path} is damaged: expected a JSON object")
     return AffordanceTable(facts)

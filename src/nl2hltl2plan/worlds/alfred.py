@@ -27,8 +27,6 @@ has object poses.
 
 from __future__ import annotations
 
-import gzip
-import json
 import math
 import re
 from dataclasses import dataclass, field
@@ -39,6 +37,7 @@ import numpy as np
 
 from nl2hltl2plan.config import data_path
 from nl2hltl2plan.errors import DataError, WorldError
+from nl2hltl2plan.io import iter_gzip_jsonl, load_npy, read_json
 from nl2hltl2plan.worlds.affordances import AffordanceTable, alfred_affordances
 from nl2hltl2plan.worlds.model import World, WorldObject, add_slices
 from nl2hltl2plan.worlds.tasks import GTInstance
@@ -82,31 +81,31 @@ def alfred_data() -> AlfredData:
     types: set[str] = set()
     puts: set[tuple[str, str]] = set()
     try:
-        with gzip.open(path, "rt") as fh:
-            for line in fh:
-                row = json.loads(line)
-                poses = [
-                    (p["name"], float(p["x"]), float(p["y"]), float(p["z"])) for p in row["object_poses"]
-                ]
-                ids, gotos = [], []
-                for h in row.get("high_pddl") or []:
-                    for key in ("objectId", "receptacleObjectId"):
-                        if h.get(key):
-                            ids.append(h[key])
-                    if h.get("action") == "PutObject" and h.get("objectId") and h.get("receptacleObjectId"):
-                        obj, rec = _parse_id(h["objectId"]), _parse_id(h["receptacleObjectId"])
-                        if obj and rec:
-                            puts.add((obj[0], rec[0]))
-                    if h.get("action") == "GotoLocation" and h.get("location") and h.get("args"):
-                        _, x, z, rot, _hor = h["location"].split("|")
-                        gotos.append((h["args"][0], int(x) * 0.25, int(z) * 0.25, int(rot) * 90))
-                toggles = [(t["objectType"], bool(t["isOn"])) for t in row.get("object_toggles") or []]
-                trial = Trial(row["trial"], row["floor_plan"], poses, ids, gotos, toggles)
-                trials[trial.trial] = trial
-                by_fp.setdefault(trial.floor_plan, []).append(trial.trial)
-                types.update(_type_of_name(n) for n, *_ in poses)
-    except (OSError, json.JSONDecodeError, KeyError, ValueError) as exc:
-        raise DataError(f"cannot read {path}: {exc}") from None
+        for _n, row in iter_gzip_jsonl(path, "ALFRED trials file"):
+            poses = [
+                (p["name"], float(p["x"]), float(p["y"]), float(p["z"])) for p in row["object_poses"]
+            ]
+            ids, gotos = [], []
+            for h in row.get("high_pddl") or []:
+                for key in ("objectId", "receptacleObjectId"):
+                    if h.get(key):
+                        ids.append(h[key])
+                if h.get("action") == "PutObject" and h.get("objectId") and h.get("receptacleObjectId"):
+                    obj, rec = _parse_id(h["objectId"]), _parse_id(h["receptacleObjectId"])
+                    if obj and rec:
+                        puts.add((obj[0], rec[0]))
+                if h.get("action") == "GotoLocation" and h.get("location") and h.get("args"):
+                    _, x, z, rot, _hor = h["location"].split("|")
+                    gotos.append((h["args"][0], int(x) * 0.25, int(z) * 0.25, int(rot) * 90))
+            toggles = [(t["objectType"], bool(t["isOn"])) for t in row.get("object_toggles") or []]
+            trial = Trial(row["trial"], row["floor_plan"], poses, ids, gotos, toggles)
+            trials[trial.trial] = trial
+            by_fp.setdefault(trial.floor_plan, []).append(trial.trial)
+            types.update(_type_of_name(n) for n, *_ in poses)
+    except (KeyError, ValueError, TypeError, AttributeError, IndexError) as exc:
+        raise DataError(f"ALFRED trials file {path} is damaged: a record lacks or mistypes {exc}") from None
+    if not trials:
+        raise DataError(f"ALFRED trials file {path} holds no trial (empty or damaged)")
     return AlfredData(trials, by_fp, frozenset(types), frozenset(puts))
 
 
@@ -146,14 +145,21 @@ def _layout_file(fp: str, suffix: str) -> Path:
 @cache
 def scene_types(fp: str) -> tuple[str, ...]:
     """Object types the scene lists (FloorPlanN-objects.json)."""
-    return tuple(json.loads(_layout_file(fp, "objects.json").read_text()))
+    path = _layout_file(fp, "objects.json")
+    types = read_json(path, "ALFRED object list")
+    if not isinstance(types, list) or not all(isinstance(t, str) for t in types):
+        raise DataError(f"ALFRED object list {path} is damaged: expected a JSON list of object types")
+    return tuple(types)
 
 
 @cache
 def _free_xz(fp: str) -> np.ndarray:
-    arr = np.load(_layout_file(fp, "layout.npy"))
-    if arr.ndim != 2 or arr.shape[1] != 2:
-        raise DataError(f"{fp}-layout.npy: expected an (N, 2) array of (x, z), got shape {arr.shape}")
+    path = _layout_file(fp, "layout.npy")
+    arr = load_npy(path, "ALFRED layout")
+    if arr.ndim != 2 or arr.shape[1] != 2 or not np.issubdtype(arr.dtype, np.number):
+        raise DataError(
+            f"ALFRED layout {path} is damaged: expected an (N, 2) array of (x, z), got shape {arr.shape}"
+        )
     return arr
 
 
@@ -186,7 +192,10 @@ def _statics(fp: str) -> tuple[tuple[_Static, ...], dict[str, str]]:
     """Static objects of a floor plan and the static types it lists but we cannot place."""
     table = affordance_table()
     movable = table.pickupable
-    openable = json.loads(_layout_file(fp, "openable.json").read_text())
+    openable_path = _layout_file(fp, "openable.json")
+    openable = read_json(openable_path, "ALFRED openable-object file")
+    if not isinstance(openable, dict):
+        raise DataError(f"ALFRED openable-object file {openable_path} is damaged: expected a JSON object")
     data = alfred_data()
     trial_ids = data.by_floor_plan.get(fp, [])
     found: list[_Static] = []

@@ -23,6 +23,7 @@ from matplotlib.patches import Patch  # noqa: E402
 from matplotlib.ticker import MaxNLocator  # noqa: E402
 
 from nl2hltl2plan.errors import WorldError  # noqa: E402
+from nl2hltl2plan.io import save_figure  # noqa: E402
 from nl2hltl2plan.worlds.model import CELL_M  # noqa: E402
 from nl2hltl2plan.worlds.plan import Plan, RobotPlan  # noqa: E402
 from nl2hltl2plan.worlds.simulator import Execution  # noqa: E402
@@ -214,8 +215,7 @@ def _chart(
     ax.legend(handles=_legend_handles(tasks, colour, bool(before)), loc="upper left",
               bbox_to_anchor=(1.01, 1), fontsize=8, frameon=False)  # fmt: skip
     if path is not None:
-        Path(path).parent.mkdir(parents=True, exist_ok=True)
-        fig.savefig(path, dpi=120, bbox_inches="tight")
+        save_figure(fig, path, dpi=120, bbox_inches="tight")
         plt.close(fig)
     return fig
 

@@ -39,6 +39,7 @@ from functools import cached_property
 from typing import Literal
 
 from nl2hltl2plan.errors import WorldError
+from nl2hltl2plan.io import save_figure
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.logic.trace import TraceCheck, TraceEvent, check_trace
 from nl2hltl2plan.worlds.model import CELL_M, Affordances, Cell, World, WorldObject
@@ -464,5 +465,5 @@ def draw_handover(
         title or f"{hw.name}: arms a-d (colours), shared cells hatched, handovers starred", fontsize=8
     )
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    save_figure(fig, path, dpi=110)
     plt.close(fig)

@@ -19,6 +19,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.patches import Rectangle  # noqa: E402
 
 from nl2hltl2plan.errors import WorldError  # noqa: E402
+from nl2hltl2plan.io import atomic_path, save_figure  # noqa: E402
 from nl2hltl2plan.worlds.model import CELL_M, World  # noqa: E402
 from nl2hltl2plan.worlds.simulator import Execution  # noqa: E402
 
@@ -143,7 +144,7 @@ def draw_world(world: World, path: str | Path | None = None, regions=None, ax=No
         ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1), fontsize=7)
     ax.autoscale_view()
     if path is not None:
-        fig.savefig(path, dpi=130, bbox_inches="tight")
+        save_figure(fig, path, dpi=130, bbox_inches="tight")
         plt.close(fig)
     return fig
 
@@ -178,7 +179,7 @@ def draw_execution(execution: Execution, path: str | Path | None = None, ax=None
     ax.autoscale_view()
     _action_list(ax, legend, lines)
     if path is not None:
-        fig.savefig(path, dpi=130, bbox_inches="tight")
+        save_figure(fig, path, dpi=130, bbox_inches="tight")
         plt.close(fig)
     return fig
 
@@ -249,6 +250,7 @@ def animate_execution(execution: Execution, path: str | Path, fps: int = 4, max_
 
     anim = FuncAnimation(fig, update, frames=frames, blit=False)
     path = Path(path)
-    anim.save(path, writer=PillowWriter(fps=fps))
+    with atomic_path(path, "animation") as tmp:
+        anim.save(tmp, writer=PillowWriter(fps=fps))
     plt.close(fig)
     return path

@@ -24,7 +24,6 @@ slice before throwing the slices away).
 
 from __future__ import annotations
 
-import json
 from dataclasses import dataclass, field, replace
 from functools import cache
 
@@ -32,6 +31,7 @@ import numpy as np
 
 from nl2hltl2plan.config import data_path
 from nl2hltl2plan.errors import DataError, WorldError
+from nl2hltl2plan.io import read_jsonl
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.logic.relations import compile_relations
 from nl2hltl2plan.worlds import effects
@@ -118,13 +118,9 @@ def load_tasks() -> tuple[SmartTask, ...]:
     path = data_path("smartllm", "final_test_all.jsonl")
     out: list[SmartTask] = []
     per_fp: dict[str, int] = {}
-    for k, line in enumerate(path.read_text().splitlines(), start=1):
-        if not line.strip():
-            continue
-        try:
-            row = json.loads(line)
-        except json.JSONDecodeError as exc:
-            raise DataError(f"{path}:{k}: not JSON: {exc}") from None
+    for k, row in enumerate(read_jsonl(path, "SMART-LLM task file"), start=1):
+        if not isinstance(row, dict):
+            raise DataError(f"SMART-LLM task file {path}: record {k} is not a JSON object")
         fp = row.get("floor_plan", "?")
         per_fp[fp] = per_fp.get(fp, 0) + 1
         out.append(parse_task(per_fp[fp], row))

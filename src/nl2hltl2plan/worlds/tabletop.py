@@ -17,6 +17,7 @@ from __future__ import annotations
 import random
 
 from nl2hltl2plan.errors import WorldError
+from nl2hltl2plan.io import save_figure
 from nl2hltl2plan.worlds.model import CELL_M, Affordances, Cell, World, WorldObject
 
 ROWS, COLS = 15, 20
@@ -130,5 +131,5 @@ def draw_trajectories(world: World, plans: dict, path, title: str | None = None)
     if title:
         fig.suptitle(title, fontsize=8)
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    save_figure(fig, path, dpi=110)
     plt.close(fig)

@@ -216,7 +216,11 @@ class BaseTask(BaseModel):
 
     # ------------------------------------------------------------ recipes
     def leaf_specs(
-        self, world: World, others: Sequence[BaseTask] = (), support: bool = False
+        self,
+        world: World,
+        others: Sequence[BaseTask] = (),
+        support: bool = False,
+        demand: Counter[str] | None = None,
     ) -> list[list[str] | str]:
         """One entry per leaf: an ordered action list, or a flat sc-LTL formula for choices.
 
@@ -229,7 +233,8 @@ class BaseTask(BaseModel):
         issues = self.missing(world)
         if issues:
             raise WorldError(f"task {self.id} cannot be done in {world.name}: {'; '.join(issues)}")
-        demand = _demand([self, *[t for t in others if t.id != self.id]])
+        if demand is None:  # callers with many tasks pass `demand_of(all tasks)`, computed once
+            demand = demand_of([self, *[t for t in others if t.id != self.id]])
         bindings = self._bindings(world)
         n_leaves = max(1, self.count)  # place_two, and "heat a couple of slices" (count 2)
         leaves: list[list[str] | str] = []
@@ -447,7 +452,7 @@ def _accepts(world: World, receptacle: str | None, type_: str) -> bool:
     return bool(insts) and type_ in insts[0].affordances.accepts
 
 
-def _demand(tasks: Sequence[BaseTask]) -> Counter[str]:
+def demand_of(tasks: Sequence[BaseTask]) -> Counter[str]:
     """How many instances of each type the tasks take (object x count, container); knives are shared."""
     need: Counter[str] = Counter()
     for t in tasks:

@@ -22,12 +22,14 @@ names ("robot1,robot5"), or a JSON file (a list of profile names and/or {"name",
 
 from __future__ import annotations
 
-import json
+import math
+import re
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from functools import cache
 from pathlib import Path
 
+from nl2hltl2plan.argtypes import MAX_ROBOTS
 from nl2hltl2plan.config import data_path
 from nl2hltl2plan.errors import DataError, PlanningError
 from nl2hltl2plan.io import read_json
@@ -76,7 +78,9 @@ class RobotProfile:
                 f"(known: {', '.join(sorted(KNOWN_SKILLS))})"
             )
         cap = d.get("mass_capacity", d.get("mass"))
-        if cap is not None and (isinstance(cap, bool) or not isinstance(cap, int | float) or cap <= 0):
+        if cap is not None and (
+            isinstance(cap, bool) or not isinstance(cap, int | float) or not math.isfinite(cap) or cap <= 0
+        ):  # JSON files may hold NaN and Infinity
             raise DataError(
                 f"{where}robot {name}: mass capacity must be a positive number of kg, got {cap!r}"
             )
@@ -94,10 +98,7 @@ class RobotProfile:
 def smartllm_profiles() -> dict[str, RobotProfile]:
     """SMART-LLM's 28 robot profiles by name (robot1..robot28), from the shared data."""
     path = data_path("smartllm", "robots.json")
-    try:
-        raw = json.loads(path.read_text())
-    except json.JSONDecodeError as exc:
-        raise DataError(f"{path} is not valid JSON: {exc}") from None
+    raw = read_json(path, "SMART-LLM robot profiles file")
     if not isinstance(raw, dict):
         raise DataError(f"{path}: expected an object of robot profiles by name")
     return {k: RobotProfile.from_dict(v, f"{path.name}: ") for k, v in raw.items()}
@@ -213,17 +214,21 @@ def _allowed(caps: set[str] | None, atom: str) -> bool:
 
 def parse_team(text: str | int) -> Team:
     """A team from `plan --robots`: a number, profile names ("robot1,robot5") or a JSON file."""
-    if isinstance(text, int) or str(text).strip().isdigit():
+    if isinstance(text, int) or re.fullmatch(r"\s*[-+]?[0-9]+\s*", str(text)):  # ASCII digits ('²' is none)
         n = int(text)
-        if n < 1:
-            raise PlanningError("--robots must be at least 1")
+        if not 1 <= n <= MAX_ROBOTS:
+            raise PlanningError(
+                f"--robots must be at least 1 and at most {MAX_ROBOTS} (a team's largest size), got {n}"
+            )
         return Team(n)
     text = str(text).strip()
     path = Path(text)
-    if text.endswith(".json") or path.is_file():
+    if text.endswith(".json") or _exists(path):  # a path: read_json refuses what is not a regular file
         return _team_file(path)
     profiles = smartllm_profiles()
     names = [n.strip() for n in text.split(",") if n.strip()]
+    if len(names) > MAX_ROBOTS:
+        raise PlanningError(f"--robots names {len(names)} robots; a team has at most {MAX_ROBOTS}")
     unknown = [n for n in names if n not in profiles]
     if unknown:
         raise PlanningError(
@@ -233,12 +238,21 @@ def parse_team(text: str | int) -> Team:
     return Team.of([profiles[n] for n in names])
 
 
+def _exists(path: Path) -> bool:
+    try:
+        return path.exists()
+    except OSError:  # a name too long to be a file: profile names
+        return False
+
+
 def _team_file(path: Path) -> Team:
     raw = read_json(path, "team file")
     if isinstance(raw, dict) and "robots" in raw:
         raw = raw["robots"]
     if not isinstance(raw, list) or not raw:
         raise DataError(f"team file {path}: expected a non-empty list of robots (names or profiles)")
+    if len(raw) > MAX_ROBOTS:
+        raise DataError(f"team file {path}: {len(raw)} robots; a team has at most {MAX_ROBOTS}")
     out = []
     for k, entry in enumerate(raw):
         if isinstance(entry, str):

@@ -8,14 +8,13 @@ and `valid_unseen`. Text-faithful labels and the synthetic multi-task validation
 
 from __future__ import annotations
 
-import gzip
-import json
 import re
 from dataclasses import dataclass, field
 from functools import lru_cache
 
 from nl2hltl2plan.config import data_path
 from nl2hltl2plan.errors import DataError
+from nl2hltl2plan.io import iter_gzip_jsonl, read_text
 from nl2hltl2plan.language.tasks import BaseTaskSpec
 
 KIND_OF_TASK_TYPE = {
@@ -108,7 +107,8 @@ class Composition:
 
 @lru_cache(maxsize=1)
 def excluded_trials() -> frozenset[str]:
-    lines = data_path("benchmark", "training_exclusions.txt").read_text().splitlines()
+    path = data_path("benchmark", "training_exclusions.txt")
+    lines = read_text(path, "training exclusions file").splitlines()
     return frozenset(s.strip() for s in lines if s.strip() and not s.startswith("#"))
 
 
@@ -134,14 +134,16 @@ def load_examples() -> dict[str, list[Example]]:
     """Examples by split (train / valid_seen / valid_unseen); excluded trials never appear."""
     banned = excluded_trials()
     out: dict[str, list[Example]] = {s: [] for s in SPLITS}
-    with gzip.open(data_path("alfred", "trials.jsonl.gz"), "rt") as fh:
-        for line in fh:
-            row = json.loads(line)
+    path = data_path("alfred", "trials.jsonl.gz")
+    try:
+        for _n, row in iter_gzip_jsonl(path, "ALFRED trials file"):
             if row["split"] not in out or not row.get("task_type") or row["trial"] in banned:
                 continue
             for ann in row["annotations"]:
                 if ann.get("task_desc", "").strip():
                     out[row["split"]].append(_example(row, ann["task_desc"]))
+    except (KeyError, ValueError, TypeError, AttributeError, IndexError) as exc:
+        raise DataError(f"ALFRED trials file {path} is damaged: a record lacks or mistypes {exc}") from None
     if not out["train"]:
         raise DataError("no ALFRED training examples found in alfred/trials.jsonl.gz")
     return out

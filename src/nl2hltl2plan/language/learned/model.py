@@ -23,12 +23,30 @@ from typing import Any
 
 import numpy as np
 
+from nl2hltl2plan.config import user_cache_dir
 from nl2hltl2plan.errors import DataError
+from nl2hltl2plan.io import atomic_path, require_regular_file
 from nl2hltl2plan.language.learned.data import Example, states_kind
 from nl2hltl2plan.language.learned.ranker import TypeRanker
 from nl2hltl2plan.worlds.tasks import SLOTS
 
 ARTIFACT = "slot_model.npz"
+
+
+def packaged_model_path() -> Path:
+    """The model shipped inside the package (never written by default)."""
+    return Path(str(resources.files("nl2hltl2plan.language.learned") / ARTIFACT))
+
+
+def user_model_path() -> Path:
+    """Where `nl2hltl2plan train language` writes by default, and what the loader prefers."""
+    return user_cache_dir() / "models" / ARTIFACT
+
+
+def default_model_path() -> Path:
+    """The model `SlotModel.load()` reads: the user's retrained one when present, else the packaged one."""
+    user = user_model_path()
+    return user if user.exists() else packaged_model_path()
 FORMAT = 3
 HEADS = ("kind", *SLOTS, "sliced")
 
@@ -220,8 +238,12 @@ class SlotModel:
         return out
 
     def save(self, path: Path) -> None:
-        """An .npz file (no pickle) with fixed zip timestamps: the same model gives the same bytes."""
-        with zipfile.ZipFile(path, "w", compression=zipfile.ZIP_DEFLATED, compresslevel=9) as zf:
+        """An .npz file (no pickle) with fixed zip timestamps: the same model gives the same bytes.
+        Written to a temporary file and renamed: a kill leaves the old model, never a torn one."""
+        with (
+            atomic_path(path, "language model") as tmp,
+            zipfile.ZipFile(tmp, "w", compression=zipfile.ZIP_DEFLATED, compresslevel=9) as zf,
+        ):
             for name, arr in self.arrays().items():
                 buf = io.BytesIO()
                 np.lib.format.write_array(buf, np.ascontiguousarray(arr), allow_pickle=False)
@@ -233,17 +255,22 @@ class SlotModel:
 
     @classmethod
     def load(cls, path: Path | None = None) -> SlotModel:
-        src = path or Path(str(resources.files("nl2hltl2plan.language.learned") / ARTIFACT))
+        """The model at `path`; by default the user's retrained one (`user_model_path`) when it exists,
+        else the packaged one. A damaged file is a `DataError` naming it."""
+        src = path or default_model_path()
         if not src.exists():
             raise DataError(
                 f"no learned language model at {src}; build it with `nl2hltl2plan train language`"
             )
         try:
-            with np.load(src, allow_pickle=False) as z:
+            with np.load(require_regular_file(src, "language model"), allow_pickle=False) as z:
                 d = {k: z[k] for k in z.files}
-        except (OSError, ValueError, zipfile.BadZipFile) as exc:
-            raise DataError(f"cannot read the learned language model {src}: {exc}") from exc
-        meta = dict(str(s).split("=", 1) for s in d["meta"])
+            meta = dict(str(s).split("=", 1) for s in d["meta"])
+        except (OSError, ValueError, EOFError, KeyError, zipfile.BadZipFile) as exc:
+            raise DataError(
+                f"cannot read the learned language model {src} (damaged? rebuild it with `nl2hltl2plan "
+                f"train language`): {type(exc).__name__}: {exc}"
+            ) from None
         if meta.get("format") != str(FORMAT):
             raise DataError(f"{src} has another model format; rebuild it with `nl2hltl2plan train language`")
         vecs = []

@@ -17,7 +17,8 @@ import json
 from pathlib import Path
 from typing import Any
 
-from nl2hltl2plan.errors import LLMError
+from nl2hltl2plan.errors import DataError, LLMError
+from nl2hltl2plan.io import read_text, write_text
 from nl2hltl2plan.language.llm.cache import AnswerCache
 
 ENDPOINT = "/v1/chat/completions"
@@ -47,17 +48,16 @@ class BatchCollector:
             json.dumps({"custom_id": key, "method": "POST", "url": ENDPOINT, "body": req}, ensure_ascii=False)
             for key, req in self.requests.items()
         ]
-        Path(path).write_text("\n".join(lines) + ("\n" if lines else ""))
+        write_text(path, "\n".join(lines) + ("\n" if lines else ""), "batch file")  # atomic
         return len(lines)
 
 
 def _read_text(path: str | Path, what: str) -> str:
+    """The file's text: a regular UTF-8 file (a FIFO is refused before opening, not waited on)."""
     try:
-        return Path(path).read_text(encoding="utf-8")
-    except OSError as exc:
-        raise LLMError(f"cannot read {what} {path}: {exc.strerror}") from None
-    except UnicodeDecodeError:
-        raise LLMError(f"{what} {path} is not UTF-8 text (a JSONL file was expected)") from None
+        return read_text(path, what)
+    except DataError as exc:
+        raise LLMError(str(exc)) from None
 
 
 def read_requests(path: str | Path) -> dict[str, dict[str, Any]]:

@@ -6,7 +6,9 @@ The same code path serves GPT-4-class APIs, vLLM, Ollama and llama.cpp servers (
   json_object, then to plain text when the server rejects the format);
 - every answer is validated with a pydantic model; an invalid one is re-asked with the validation
   error (at most `max_reasks` times), then `LLMError`;
-- transport failures (connection, timeout, rate limit, 5xx) are retried with exponential backoff;
+- transport failures (connection, timeout, rate limit, 5xx) are retried with exponential backoff, or
+  after the server's `Retry-After` when it sends one; a wait that would end past the instruction's
+  deadline is an error at once, naming the wait;
 - answers are cached on disk keyed by the full request, and in batch mode unanswered requests are
   collected instead of sent (`batch.py`).
 """
@@ -14,7 +16,10 @@ The same code path serves GPT-4-class APIs, vLLM, Ollama and llama.cpp servers (
 from __future__ import annotations
 
 import contextlib
+import datetime
+import email.utils
 import json
+import math
 import re
 import threading
 import time
@@ -52,6 +57,8 @@ def extract_json(text: str) -> Any:
         return json.loads(s)
     except ValueError:
         pass
+    except RecursionError:  # Python's JSON parser recurses: 200,000 nested brackets end here
+        raise ValueError("the answer nests JSON too deeply") from None
     for open_, close in (("{", "}"), ("[", "]")):
         a, b = s.find(open_), s.rfind(close)
         if 0 <= a < b:
@@ -59,6 +66,8 @@ def extract_json(text: str) -> Any:
                 return json.loads(s[a : b + 1])
             except ValueError:
                 continue
+            except RecursionError:
+                raise ValueError("the answer nests JSON too deeply") from None
     raise ValueError("the answer is not JSON")
 
 
@@ -208,6 +217,12 @@ class LLMClient:
         if self._explicit_deadline is None:
             self._deadline = time.monotonic() + self.settings.instruction_timeout
 
+    def _time_left(self) -> float:
+        """Seconds until the instruction's deadline (a whole instruction's time when none is running)."""
+        if self._deadline is None:
+            return self.settings.instruction_timeout
+        return self._deadline - time.monotonic()
+
     def _budget(self, name: str) -> float:
         """Seconds the next request may take: the request timeout, cut by the instruction's deadline."""
         budget = self.settings.timeout
@@ -260,9 +275,16 @@ class LLMClient:
                         f"{name}: request to {where} {what} after {attempt + 1} attempts "
                         f"(timeout {s.timeout:g}s): {_msg(exc)}"
                     ) from None
+                wait = _retry_after(exc)
+                if wait is not None and wait > self._time_left():
+                    raise LLMError(
+                        f"{name}: the server at {where} asks to retry after {wait:.0f}s, past the "
+                        f"instruction's LLM deadline ({max(0.0, self._time_left()):.0f}s left of "
+                        f"{s.instruction_timeout:g}s): {_msg(exc)}"
+                    ) from None
                 self.stats.retries += 1
                 attempt += 1
-                self._sleep(min(delay, max(0.0, self._budget(name) - 0.01)))
+                self._sleep(wait if wait is not None else min(delay, max(0.0, self._budget(name) - 0.01)))
                 delay *= 2
             except _openai().BadRequestError as exc:
                 if "response_format" in request and s.json_mode == "auto" and _format_rejected(exc):
@@ -308,6 +330,36 @@ def _retried() -> tuple[type[BaseException], ...]:
         o.RateLimitError,
         o.InternalServerError,
     )
+
+
+def _retry_after(exc: BaseException) -> float | None:
+    """Seconds the server asks to wait (`Retry-After`: seconds or an HTTP date; `retry-after-ms`)."""
+    headers = getattr(getattr(exc, "response", None), "headers", None)
+    if headers is None:
+        return None
+    millis, value = headers.get("retry-after-ms"), headers.get("retry-after")
+    seconds = _number(millis)
+    if seconds is not None:
+        seconds /= 1000
+    elif value is not None:
+        seconds = _number(value)
+        if seconds is None:
+            try:
+                when = email.utils.parsedate_to_datetime(value)
+            except (TypeError, ValueError):
+                return None
+            if when.tzinfo is None:
+                return None
+            seconds = (when - datetime.datetime.now(datetime.UTC)).total_seconds()
+    return None if seconds is None else max(0.0, seconds)
+
+
+def _number(text: str | None) -> float | None:
+    try:
+        value = float(text) if text is not None else None
+    except ValueError:
+        return None
+    return value if value is not None and math.isfinite(value) else None
 
 
 def _content(resp: Any, name: str, where: str) -> str:

@@ -6,8 +6,8 @@
 | `NL2HLTL2PLAN_LLM_MODEL` | model name | `gpt-4o` |
 | `NL2HLTL2PLAN_LLM_API_KEY` (or `OPENAI_API_KEY`) | API key | none |
 | `NL2HLTL2PLAN_LLM_TEMPERATURE` | sampling temperature | 0 |
-| `NL2HLTL2PLAN_LLM_TIMEOUT` | seconds per request (a total deadline, not per read) | 120 |
-| `NL2HLTL2PLAN_LLM_INSTRUCTION_TIMEOUT` | seconds for all requests of one instruction | 600 |
+| `NL2HLTL2PLAN_LLM_TIMEOUT` | seconds per request (a total deadline, not per read) | 30 |
+| `NL2HLTL2PLAN_LLM_INSTRUCTION_TIMEOUT` | seconds for one instruction's requests, waits included | 60 |
 | `NL2HLTL2PLAN_LLM_RETRIES` | retries of failed requests (exponential backoff) | 3 |
 | `NL2HLTL2PLAN_LLM_REASKS` | re-asks after an invalid answer | 2 |
 | `NL2HLTL2PLAN_LLM_JSON` | `auto` / `schema` / `object` / `none`: how to ask for JSON | auto |
@@ -20,13 +20,15 @@
 
 from __future__ import annotations
 
-import os
 from pathlib import Path
 from typing import Any, Literal
+from urllib.parse import urlsplit
 
 from pydantic import AliasChoices, Field, ValidationError, field_validator
 from pydantic_settings import BaseSettings, SettingsConfigDict
 
+from nl2hltl2plan.argtypes import MAX_SECONDS
+from nl2hltl2plan.config import user_cache_dir
 from nl2hltl2plan.errors import LLMError
 
 ENV = "NL2HLTL2PLAN_LLM_"
@@ -34,8 +36,7 @@ _OFF = {"off", "none", "0", "no"}
 
 
 def default_cache_dir() -> Path:
-    base = os.environ.get("XDG_CACHE_HOME") or str(Path.home() / ".cache")
-    return Path(base) / "nl2hltl2plan" / "llm"
+    return user_cache_dir() / "llm"
 
 
 def _env(*names: str) -> AliasChoices:
@@ -56,23 +57,41 @@ class LLMSettings(BaseSettings):
         default=None, validation_alias=_env("api_key", ENV + "API_KEY", "OPENAI_API_KEY")
     )
     temperature: float = Field(default=0.0, ge=0, le=2, allow_inf_nan=False)
-    timeout: float = Field(default=120.0, gt=0, allow_inf_nan=False)
-    instruction_timeout: float = Field(default=600.0, gt=0, allow_inf_nan=False)
+    # a dead or trickling server is reported within `instruction_timeout` (flags raise both for slow ones)
+    timeout: float = Field(default=30.0, gt=0, le=MAX_SECONDS, allow_inf_nan=False)
+    instruction_timeout: float = Field(default=60.0, gt=0, le=MAX_SECONDS, allow_inf_nan=False)
     max_retries: int = Field(default=3, ge=0, le=20, validation_alias=_env("max_retries", ENV + "RETRIES"))
     max_reasks: int = Field(default=2, ge=0, le=10, validation_alias=_env("max_reasks", ENV + "REASKS"))
-    backoff: float = Field(default=1.0, ge=0, allow_inf_nan=False)
+    backoff: float = Field(default=1.0, ge=0, le=3600, allow_inf_nan=False)
     cache_scope: str | None = None  # names the answering server in cache keys; None: the base URL
     json_mode: Literal["auto", "schema", "object", "none"] = Field(
         default="auto", validation_alias=_env("json_mode", ENV + "JSON")
     )
-    max_tokens: int = Field(default=1024, ge=1)
+    max_tokens: int = Field(default=1024, ge=1, le=1_000_000)
     seed: int | None = 0
     cache_dir: Path | None = Field(
         default_factory=default_cache_dir, validation_alias=_env("cache_dir", ENV + "CACHE")
     )
     gguf: Path | None = Field(default=None, validation_alias=_env("gguf", "NL2HLTL2PLAN_GGUF"))
     threads: int = Field(default=1, ge=1, le=256)
-    ctx: int = Field(default=8192, ge=256)
+    ctx: int = Field(default=8192, ge=256, le=1_048_576)
+
+    @field_validator("base_url")
+    @classmethod
+    def _http_url(cls, value: str | None) -> str | None:
+        """An http(s) URL with a host; anything else (`::::`, `localhost:8000` without a scheme) is refused
+        here, not deep inside the HTTP library."""
+        if value is None or not value.strip():  # an empty variable: not configured
+            return None
+        try:
+            parts = urlsplit(value.strip())
+            ok = parts.scheme.lower() in ("http", "https") and bool(parts.hostname)
+            ok = ok and (parts.port is None or 0 < parts.port < 65536)
+        except ValueError:  # "http://[::1": an unclosed IPv6 address; a port that is not a number
+            ok = False
+        if not ok:
+            raise ValueError(f"expected an http:// or https:// URL with a host, got {value!r}")
+        return value.strip()
 
     @field_validator("cache_dir", mode="before")
     @classmethod
