@@ -2,8 +2,9 @@
 
 Instruction -> HTT -> hierarchical LTL -> multi-robot plan, executed and checked (`pipeline.run`).
 Prints the HTT, the base tasks, the hierarchical LTL and the plan with its travel cost and completion
-time; `--json` prints one object (docs/plan_schema.md); `-o DIR` writes result.json, htt.png,
-world.png, plan.png (the map with numbered actions) and gantt.png (who does what when).
+time; `--json` prints one object (docs/plan_schema.md); `-o DIR` writes result.json, spec.json,
+spec.hoa and the pictures htt, world, plan (the map with numbered actions) and gantt (who does what
+when), each as .png and .svg.
 Exit status: 0 a checked plan, 1 no plan (infeasible or timeout, with the reason), 2 bad input,
 3 LLM requests pending (batch mode), 4 an internal error (a bug). Without `--llm`, an LLM configured
 by NL2HLTL2PLAN_LLM_* is used, else the offline backend (said on stderr).
@@ -229,15 +230,9 @@ def _print_human(outcome: Any) -> None:
 
 
 def _write_outputs(folder: Path, outcome: Any, payload: dict[str, Any]) -> None:
-    """result.json and the pictures, all drawn from the outcome (nothing is re-run)."""
-    from nl2hltl2plan.io import write_json
-    from nl2hltl2plan.language.render import draw_htt, htt_orderings
-    from nl2hltl2plan.worlds import pictures
-    from nl2hltl2plan.worlds.gantt import draw_gantt
+    """result.json, the spec (JSON and HOA) and the pictures (PNG and SVG), all drawn from the outcome
+    (nothing is re-run): the same files the web page offers for download (`outputs.write_outputs`)."""
+    from nl2hltl2plan.outputs import write_outputs
 
-    write_json(folder / "result.json", payload, "result file")
-    draw_htt(outcome.language.htt, folder / "htt.png", title=outcome.instruction)
-    pictures.draw_world(outcome.world, folder / "world.png", title=outcome.world.name)
-    if outcome.result.execution is not None:
-        pictures.draw_execution(outcome.result.execution, folder / "plan.png")
-        draw_gantt(outcome.result.execution, folder / "gantt.png", before=htt_orderings(outcome.language.htt))
+    for warning in write_outputs(folder, outcome, payload):
+        print(f"warning: {warning}", file=sys.stderr)

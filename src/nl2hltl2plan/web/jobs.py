@@ -51,6 +51,7 @@ class Job:
     events: list[Event] = field(default_factory=list)
     files: dict[str, bytes] = field(default_factory=dict)
     proc: Any = None
+    written: dict[str, Any] | None = None  # the worker's `files` event, passed on once they are read
     _changed: asyncio.Event = field(default_factory=asyncio.Event)
 
     @property
@@ -191,7 +192,9 @@ class Jobs:
             try:
                 while conn.poll():
                     kind, data = conn.recv()
-                    if not job.finished:
+                    if kind == "files":  # said once the server has read them (see _conclude)
+                        job.written = data
+                    elif not job.finished:
                         job.push(kind, data)
             except (EOFError, OSError):
                 loop.remove_reader(conn.fileno())
@@ -211,12 +214,14 @@ class Jobs:
 
     def _conclude(self, job: Job, folder: str) -> None:
         """Read the files the worker wrote, and say how the job ended."""
-        files = job.first("files")
+        files = job.written
         for name in files["names"] if files else []:
             with open(os.path.join(folder, name), "rb") as f:
                 job.files[name] = f.read()
         if job.finished:
             return
+        if files is not None:
+            job.push("files", files)
         if job.first("error") is None and job.first("result") is None:
             code = job.proc.exitcode
             why = f"signal {-code}" if code is not None and code < 0 else f"exit code {code}"
