@@ -98,7 +98,9 @@ def test_progress_streams_each_stage_in_order(client):
 
 
 def test_an_ambiguity_choice_replans(client):
-    free = client.post("/api/plan", json={"instruction": "Put the utensils in the lower rack.", "pictures": False})
+    free = client.post(
+        "/api/plan", json={"instruction": "Put the utensils in the lower rack.", "pictures": False}
+    )
     (amb,) = free.json()["ambiguities"]
     pick = amb["candidates"][1]  # not the top-ranked one, which is used when nobody chooses
     chosen = client.post(
@@ -162,7 +164,9 @@ def test_page_options_and_worlds(client):
     assert opts["worlds"][0] == "demo" and set(opts["objectives"]) == {"min", "minmax"}
     assert opts["examples"]["demo"] and opts["modes"].keys() == {"fast", "exact"}
     geo = client.get("/api/worlds/demo").json()
-    assert len(geo["cells"]) == 132 and any(o["id"] == "Fridge_0" and "closed" in o["state"] for o in geo["objects"])
+    assert len(geo["cells"]) == 132 and any(
+        o["id"] == "Fridge_0" and "closed" in o["state"] for o in geo["objects"]
+    )
     frame = geo["frame"]
     assert 0 < frame["left"] < frame["right"] < 1 and 0 < frame["top"] < frame["bottom"] < 1
     assert client.get("/api/worlds/demo/map.svg").text.lstrip().startswith("<?xml")
@@ -172,15 +176,27 @@ def test_page_options_and_worlds(client):
 @pytest.mark.parametrize(
     "body, status, message",
     [
-        ({"instruction": "", "world": "demo", "robots": 1}, 422, "instruction: String should have at least 1"),
-        ({"instruction": INSTRUCTION, "robots": 0}, 422, "robots: Input should be greater than or equal to 1"),
+        (
+            {"instruction": "", "world": "demo", "robots": 1},
+            422,
+            "instruction: String should have at least 1",
+        ),
+        (
+            {"instruction": INSTRUCTION, "robots": 0},
+            422,
+            "robots: Input should be greater than or equal to 1",
+        ),
         ({"instruction": INSTRUCTION, "robots": 99}, 422, "robots: Input should be less than or equal to 8"),
         ({"instruction": INSTRUCTION, "robots": True}, 422, "robots: Input should be a valid integer"),
         ({"world": "demo"}, 422, "instruction: Field required"),
         ({"instruction": INSTRUCTION, "colour": "red"}, 422, "colour: Extra inputs are not permitted"),
         ({"instruction": INSTRUCTION, "timeout_s": 601}, 422, "timeout_s: Input should be less than"),
         ({"instruction": INSTRUCTION, "profiles": ["robot1"], "team": ["robot1"]}, 422, "not both"),
-        ({"instruction": INSTRUCTION, "team": [{"name": "r", "skills": ["Fly"]}]}, 422, "unknown skill(s) Fly"),
+        (
+            {"instruction": INSTRUCTION, "team": [{"name": "r", "skills": ["Fly"]}]},
+            422,
+            "unknown skill(s) Fly",
+        ),
         ({"instruction": "put the statue in the fridge"}, 422, "no Statue in demo"),
         ({"instruction": INSTRUCTION, "world": "Kitchen"}, 404, "unknown world 'Kitchen'"),
     ],

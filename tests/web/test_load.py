@@ -1,0 +1,47 @@
+"""Load test on 127.0.0.1: long plans hold both workers while short plans queue and light requests
+come in. Light requests stay fast (they never wait behind a plan), and every client gets the answer
+to its own request."""
+
+from __future__ import annotations
+
+import socket
+import threading
+import time
+
+import pytest
+
+pytest.importorskip("fastapi", reason="the web app needs the [web] extra (fastapi); it is not installed")
+uvicorn = pytest.importorskip("uvicorn", reason="the web app needs uvicorn; it is not installed")
+pytest.importorskip("httpx", reason="the load driver needs httpx; it is not installed")
+
+from nl2hltl2plan.web.app import create_app  # noqa: E402
+from nl2hltl2plan.web.load import run_load  # noqa: E402
+
+
+def serve(app) -> tuple[str, uvicorn.Server, threading.Thread]:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        port = s.getsockname()[1]
+    srv = uvicorn.Server(uvicorn.Config(app, host="127.0.0.1", port=port, log_level="warning"))
+    thread = threading.Thread(target=srv.run, daemon=True)
+    thread.start()
+    deadline = time.time() + 30
+    while not srv.started and time.time() < deadline:
+        time.sleep(0.05)
+    assert srv.started, "the server did not start"
+    return f"http://127.0.0.1:{port}", srv, thread
+
+
+def test_light_requests_stay_fast_and_answers_stay_with_their_clients():
+    url, srv, thread = serve(create_app(workers=2, queue=8))
+    try:
+        report = run_load(url, clients=6, slow=2, slow_s=3.0)
+    finally:
+        srv.should_exit = True
+        thread.join(10)
+    summary = report.summary()
+    assert report.problems == []
+    assert report.plans == 6
+    assert summary["light_requests"] >= 10
+    # one plan at a time made a world-geometry request wait 8 s behind a plan; now none waits for one
+    assert summary["light_s"]["p95"] < 1.0, summary
