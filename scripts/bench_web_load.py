@@ -70,6 +70,7 @@ def main() -> None:
         f"| short plans (queued) | {summary['plans']} | {summary['plan_s']['median']:.2f} | | "
         f"{summary['plan_s']['max']:.2f} |",
         "",
+        f"Long plans' HTTP status: {summary['slow_status']} (504: past its deadline, said in one sentence).  ",
         f"Answers checked against their own request (instruction, team, objects): "
         f"{'all right' if not summary['problems'] else json.dumps(summary['problems'])}.",
     ]

@@ -159,6 +159,7 @@ def create_app(workers: int | None = None, queue: int = 8) -> FastAPI:
     @asynccontextmanager
     async def lifespan(_: FastAPI) -> AsyncIterator[None]:
         await asyncio.to_thread(jobs.warm_up)
+        await asyncio.to_thread(maps.world_map, "demo")  # the page's first map, drawn before anyone waits
         yield
         jobs.close()
 

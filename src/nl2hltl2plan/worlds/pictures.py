@@ -72,35 +72,51 @@ def place_labels(
     items: list[tuple[tuple[float, float], str]],
     avoid: Iterable[tuple[float, float]] = (),
     fontsize: float = 6.5,
-) -> None:
-    """Label points without overlaps: try offsets around each point (nearest first) and keep the first
-    whose box hits no placed label; a label with no free spot goes further out on a leader line."""
+) -> list:
+    """Label points so that no two labels overlap and none covers a marker (adjustText moves them
+    apart; a label moved away from its point gets a leader line); returns the label texts."""
     if not items:
-        return
-    ax.autoscale_view()
-    ax.apply_aspect()
-    renderer = ax.figure.canvas.get_renderer()
-    from matplotlib.transforms import Bbox
+        return []
+    from adjustText import adjust_text
 
-    marks = [ax.transData.transform(p) for p in avoid]  # markers stay visible: labels avoid them too
-    placed: list = [Bbox.from_extents(x - 3, y - 3, x + 3, y + 3) for x, y in marks]
-    offsets = [(dx * r, dy * r) for r in (4, 11, 20) for dx, dy in
-               ((1, 1), (1, -1), (-1, 1), (-1, -1), (1, 0), (-1, 0), (0, 1), (0, -1))]  # fmt: skip
-    for (x, y), text in sorted(items, key=lambda it: (it[0][1], it[0][0])):
-        for dx, dy in offsets:
-            t = ax.annotate(text, (x, y), xytext=(dx, dy), textcoords="offset points", fontsize=fontsize,
-                            ha="left" if dx >= 0 else "right", va="bottom" if dy >= 0 else "top", zorder=6,
-                            bbox={"fc": "white", "ec": "none", "alpha": 0.7, "pad": 0.2})  # fmt: skip
-            box = t.get_window_extent(renderer).expanded(1.05, 1.1)
-            if not any(box.overlaps(b) for b in placed):
-                placed.append(box)
-                break
-            t.remove()
-        else:
-            t = ax.annotate(text, (x, y), xytext=(24, 24 + 8 * (len(placed) % 4)), textcoords="offset points",
-                            fontsize=fontsize, zorder=6, arrowprops={"arrowstyle": "-", "color": "0.5",
-                            "lw": 0.5})  # fmt: skip
-            placed.append(t.get_window_extent(renderer))
+    ax.autoscale_view()
+    texts = [ax.text(x, y, text, fontsize=fontsize, zorder=6, ha="center", va="center",
+                     bbox={"fc": "white", "ec": "none", "alpha": 0.75, "pad": 0.3})
+             for (x, y), text in items]  # fmt: skip
+    marks = list(avoid)
+    adjust_text(
+        texts,
+        x=[p[0] for p in marks],
+        y=[p[1] for p in marks],
+        ax=ax,
+        expand=(1.15, 1.35),
+        force_text=(0.4, 0.6),
+        ensure_inside_axes=True,
+        arrowprops={"arrowstyle": "-", "color": "0.45", "lw": 0.5},
+    )
+    _separate(ax, texts)
+    return texts
+
+
+def _separate(ax, texts: list) -> None:
+    """adjustText minimises overlaps but does not promise none: move any label that still touches
+    an earlier one to the nearest free spot around where it is (the leader line stays)."""
+    renderer = ax.figure.canvas.get_renderer()
+    to_data = ax.transData.inverted()
+    placed: list = []
+    steps = [(dx * r, dy * r) for r in (6, 12, 18, 24, 32) for dx, dy in
+             ((0, 1), (0, -1), (1, 0), (-1, 0), (1, 1), (-1, 1), (1, -1), (-1, -1))]  # fmt: skip
+    for t in texts:
+        box = t.get_window_extent(renderer)
+        if any(box.overlaps(b) for b in placed):
+            x, y = ax.transData.transform(t.get_position())
+            for dx, dy in steps:
+                moved = box.translated(dx, dy)
+                if not any(moved.overlaps(b) for b in placed):
+                    t.set_position(to_data.transform((x + dx, y + dy)))
+                    box = moved
+                    break
+        placed.append(box)
 
 
 def _resolve(world: World, regions: Iterable[str] | str | None) -> list[str]:
