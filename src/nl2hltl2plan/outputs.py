@@ -41,7 +41,7 @@ def _replace(path: Path, data: bytes) -> None:
 
 
 def _figure(outcome: Outcome, name: str) -> Any:
-    from nl2hltl2plan.language.render import htt_figure, htt_orderings
+    from nl2hltl2plan.language.render import htt_figure, htt_orderings, htt_task_words
     from nl2hltl2plan.worlds.gantt import draw_gantt
     from nl2hltl2plan.worlds.pictures import draw_execution, draw_world
 
@@ -53,7 +53,8 @@ def _figure(outcome: Outcome, name: str) -> Any:
     assert execution is not None
     if name == "plan":
         return draw_execution(execution)
-    return draw_gantt(execution, before=htt_orderings(outcome.language.htt))
+    htt = outcome.language.htt
+    return draw_gantt(execution, before=htt_orderings(htt), words=htt_task_words(htt))
 
 
 def _hoa(outcome: Outcome) -> str:
@@ -92,7 +93,8 @@ def write_outputs(
         try:
             for fmt in formats:
                 buf = io.BytesIO()
-                fig.savefig(buf, format=fmt, dpi=DPI, bbox_inches="tight")
+                dpi = "figure" if name == "htt" else DPI  # the tree chooses its own, to fit 1,600 px
+                fig.savefig(buf, format=fmt, dpi=dpi, bbox_inches="tight")
                 _replace(out / f"{name}.{fmt}", buf.getvalue())
         finally:
             plt.close(fig)

@@ -33,7 +33,6 @@ from typing import Any
 from fastapi import FastAPI, Request
 from fastapi.exceptions import RequestValidationError
 from fastapi.responses import HTMLResponse, JSONResponse, Response, StreamingResponse
-from starlette.types import ASGIApp, Receive, Scope, Send
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.web import maps
@@ -61,13 +60,13 @@ class BodyLimit:
     """ASGI middleware: a body over `max_bytes` gets 413 before the app reads it (a declared length
     at once; a chunked body as soon as it grows past the limit)."""
 
-    def __init__(self, app: ASGIApp, max_bytes: int) -> None:
+    def __init__(self, app: Any, max_bytes: int) -> None:
         self.app, self.max_bytes = app, max_bytes
 
     def _too_large(self) -> JSONResponse:
         return _error(413, f"the request body is larger than {self.max_bytes} bytes")
 
-    async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
+    async def __call__(self, scope: dict[str, Any], receive: Any, send: Any) -> None:
         if scope["type"] != "http":
             return await self.app(scope, receive, send)
         declared = dict(scope["headers"]).get(b"content-length")

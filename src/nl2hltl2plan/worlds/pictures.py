@@ -221,8 +221,15 @@ def _numbered_events(ax, execution: Execution, events: list, colours: dict) -> l
                     va="center", fontsize=7, color="white", fontweight="bold", zorder=8,
                     bbox={"boxstyle": "circle,pad=0.25", "fc": colours[ev.robot], "ec": "black", "lw": 0.5},
                     arrowprops={"arrowstyle": "-", "color": colours[ev.robot], "lw": 0.6})  # fmt: skip
-        lines.append((f"{n:>2}. t={ev.t} robot {ev.robot}: {ev.atom}", colours[ev.robot]))
+        lines.append((f"{n:>2}. t={ev.t} robot {ev.robot}: {instance_words(ev)}", colours[ev.robot]))
     return lines
+
+
+def instance_words(ev) -> str:
+    """`put(Plate_1, DishwasherLowerRack_0)`: an action with the object ids that the text output, the
+    map and the Gantt chart all use (one name for each object)."""
+    verb = ev.atom.partition("(")[0]
+    return f"{verb}({', '.join(ev.objects)})" if ev.objects else ev.atom
 
 
 def _action_list(ax, legend, lines: list[tuple[str, tuple]]) -> None:
