@@ -48,7 +48,9 @@ def main() -> None:
     srv.should_exit = True
     thread.join(10)
     summary = report.summary()
-    commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True, text=True).stdout.strip()
+    commit = subprocess.run(
+        ["git", "rev-parse", "--short", "HEAD"], capture_output=True, text=True
+    ).stdout.strip()
     machine = f"{platform.machine()}, {os.cpu_count()} CPUs, Python {platform.python_version()}"
     lines = [
         "# Web app under load",
@@ -70,7 +72,7 @@ def main() -> None:
         f"| short plans (queued) | {summary['plans']} | {summary['plan_s']['median']:.2f} | | "
         f"{summary['plan_s']['max']:.2f} |",
         "",
-        f"Long plans' HTTP status: {summary['slow_status']} (504: past its deadline, said in one sentence).  ",
+        f"Long plans' HTTP status: {summary['slow_status']} (504: past its deadline, in one sentence).  ",
         f"Answers checked against their own request (instruction, team, objects): "
         f"{'all right' if not summary['problems'] else json.dumps(summary['problems'])}.",
     ]

@@ -216,7 +216,8 @@ def tree_figure(
             x1, y1 = pos[c]
             if n in stacked:  # an elbow down the column's left side, then across to the box
                 xe = x1 - size[c][0] / 2 - STACK_INDENT_IN / 2
-                ax.plot([xe, xe, x1 - size[c][0] / 2], [y0 + size[n][1] / 2, y1, y1], color="0.55", lw=1, zorder=1)
+                xs, ys = [xe, xe, x1 - size[c][0] / 2], [y0 + size[n][1] / 2, y1, y1]
+                ax.plot(xs, ys, color="0.55", lw=1, zorder=1)
             else:
                 ax.plot([x0, x1], [y0 + size[n][1] / 2, y1 - size[c][1] / 2], color="0.55", lw=1, zorder=1)
     siblings = {c: kids for kids in children.values() for c in kids}

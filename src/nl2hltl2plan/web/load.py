@@ -20,7 +20,11 @@ CLIENT_REQUESTS = [
     ("Put the bread on the dining table.", 3, {"Bread", "DiningTable"}),
     ("Put the tomato in the fridge.", 1, {"Tomato", "Fridge"}),
     ("Put the bowl in the sink.", 2, {"Bowl", "SinkBasin"}),
-    ("Put the apple in the fridge. Then put the mug in the cabinet.", 2, {"Apple", "Fridge", "Mug", "Cabinet"}),
+    (
+        "Put the apple in the fridge. Then put the mug in the cabinet.",
+        2,
+        {"Apple", "Fridge", "Mug", "Cabinet"},
+    ),
 ]
 SLOW = (
     "Put the plates, mugs and utensils in the lower rack in any order; after that, first the saucers, "
@@ -40,10 +44,17 @@ class LoadReport:
         light = sorted(self.light_s)
         return {
             "plans": self.plans,
-            "plan_s": {"median": statistics.median(self.plan_s), "max": max(self.plan_s)} if self.plan_s else {},
+            "plan_s": {"median": statistics.median(self.plan_s), "max": max(self.plan_s)}
+            if self.plan_s
+            else {},
             "light_requests": len(light),
-            "light_s": {"median": statistics.median(light), "p95": light[int(0.95 * (len(light) - 1))],
-                        "max": light[-1]} if light else {},  # fmt: skip
+            "light_s": {
+                "median": statistics.median(light),
+                "p95": light[int(0.95 * (len(light) - 1))],
+                "max": light[-1],
+            }
+            if light
+            else {},  # fmt: skip
             "slow_status": sorted(self.slow_status),
             "problems": self.problems,
         }
@@ -63,7 +74,9 @@ def _plan(client: Any, k: int, report: LoadReport, lock: threading.Lock) -> None
         steps = [s for r in (out["plan"] or {}).get("robots", []) for s in r["steps"]]
         handled = {o.rsplit("_", 1)[0] for s in steps for o in s["objects"]}
         if out["instruction"] != instruction or out["robots"] != robots or handled != needed:
-            report.problems.append(f"client {k}: got the answer to {out['instruction']!r} for {out['robots']} robots")
+            report.problems.append(
+                f"client {k}: got the answer to {out['instruction']!r} for {out['robots']} robots"
+            )
         report.plans += 1
 
 
