@@ -28,7 +28,11 @@ def main() -> None:
     args = ap.parse_args()
     if args.check:
         same = SCHEMA.exists() and SCHEMA.read_text() == rendered()
-        print("docs/plan.schema.json matches the model" if same else "docs/plan.schema.json differs from the model")
+        print(
+            "docs/plan.schema.json matches the model"
+            if same
+            else "docs/plan.schema.json differs from the model"
+        )
         sys.exit(0 if same else 1)
     SCHEMA.write_text(rendered())
     print(f"wrote {SCHEMA}")

@@ -52,7 +52,9 @@ class Step(BaseModel):
     objects: list[str] = Field(
         default=[], description='object instance ids the action uses, e.g. ["Apple_3", "Fridge_0"] for put'
     )
-    task: str | None = Field(default=None, description="the leaf specification this action serves, e.g. task1.2")
+    task: str | None = Field(
+        default=None, description="the leaf specification this action serves, e.g. task1.2"
+    )
 
     @model_validator(mode="after")
     def _shape(self) -> Step:
