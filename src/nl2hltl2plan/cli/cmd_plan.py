@@ -89,20 +89,29 @@ def register(sub: Any) -> None:
     p.set_defaults(func=run)
 
 
-def _spinner(enabled: bool) -> tuple[contextlib.AbstractContextManager[Any], Callable[[str], None] | None]:
-    """A rich spinner on stderr while the LLM works, and the callback that updates it."""
+Callback = Callable[[Any], None]
+
+
+def _spinner(
+    enabled: bool,
+) -> tuple[contextlib.AbstractContextManager[Any], Callback | None, Callback | None]:
+    """A rich spinner on stderr that says the stage the run is in (the pipeline's progress hook, the
+    same one the web page streams) and each LLM request; the two callbacks that update it."""
     if not enabled:
-        return contextlib.nullcontext(), None
+        return contextlib.nullcontext(), None, None
     from rich.console import Console
 
-    status = Console(stderr=True).status("asking the LLM ...")
+    status = Console(stderr=True).status("starting ...")
     count = [0]
 
     def on_request(name: str) -> None:
         count[0] += 1
         status.update(f"asking the LLM: {name} (request {count[0]})")
 
-    return status, on_request
+    def on_progress(p: Any) -> None:
+        status.update(f"{p.stage}: {p.detail}")
+
+    return status, on_request, on_progress
 
 
 def run(args: argparse.Namespace) -> int:
@@ -137,11 +146,15 @@ def run(args: argparse.Namespace) -> int:
     world = load_world(args.world)
     team = parse_team(args.robots)
     batch = BatchCollector() if args.batch_out else None
-    spinner, on_request = _spinner(backend != "offline" and batch is None and not args.json)
+    # not while --ask prompts on the terminal, nor where stderr is not one
+    spinner, on_request, on_progress = _spinner(
+        batch is None and not args.json and not args.ask and sys.stderr.isatty()
+    )
     try:
         with spinner, open_client(backend, settings, batch=batch, on_request=on_request) as client:
             ask = _ask_on_terminal if args.ask else None
-            outcome = run_pipeline(args.instruction, world, team, options, client, ask=ask)
+            instruction = args.instruction
+            outcome = run_pipeline(instruction, world, team, options, client, ask=ask, progress=on_progress)
     except PendingAnswer:
         assert batch is not None
         n = batch.write(args.batch_out)
