@@ -21,7 +21,9 @@ from nl2hltl2plan.web.app import create_app
 
 FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
          "--disable-component-update", "--disable-sync"]  # fmt: skip
-INSTRUCTION = "Put the apple in the fridge. Then put the mug in the cabinet. Finally, put the bread on the dining table."
+INSTRUCTION = (
+    "Put the apple in the fridge. Then put the mug in the cabinet. Finally, put the bread on the dining table."
+)
 
 
 def main() -> None:
