@@ -22,7 +22,8 @@ from nl2hltl2plan.web.app import create_app
 FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
          "--disable-component-update", "--disable-sync"]  # fmt: skip
 INSTRUCTION = (
-    "Put the apple in the fridge. Then put the mug in the cabinet. Finally, put the bread on the dining table."
+    "Put the apple in the fridge. Then put the mug in the cabinet. "
+    "Finally, put the bread on the dining table."
 )
 
 
