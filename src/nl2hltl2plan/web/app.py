@@ -175,6 +175,15 @@ def create_app(workers: int | None = None, queue: int = 8) -> FastAPI:
         message = str(first.get("msg", "invalid request")).removeprefix("Value error, ")
         return _error(422, f"{where}: {message}" if where else message)
 
+    _page_routes(app)
+    _plan_routes(app, jobs)
+    _job_routes(app, jobs)
+    return app
+
+
+def _page_routes(app: FastAPI) -> None:
+    """The page, the choices it offers and the worlds it draws."""
+
     @app.get("/", response_class=HTMLResponse)
     def index() -> str:
         return resources.files("nl2hltl2plan.web").joinpath("static/index.html").read_text()
@@ -186,10 +195,6 @@ def create_app(workers: int | None = None, queue: int = 8) -> FastAPI:
     @app.get("/api/options")
     def choices() -> dict[str, Any]:
         return options()
-
-    @app.get("/api/status")
-    def status() -> dict[str, int]:
-        return jobs.counts()
 
     @app.get("/api/worlds/{name}", response_model=None)
     async def world(name: str) -> dict[str, Any] | JSONResponse:
@@ -207,6 +212,14 @@ def create_app(workers: int | None = None, queue: int = 8) -> FastAPI:
         except Nl2Hltl2PlanError as exc:
             return _error(404, str(exc))
         return Response(svg, media_type=MEDIA["svg"], headers={"Cache-Control": "max-age=3600"})
+
+
+def _plan_routes(app: FastAPI, jobs: Jobs) -> None:
+    """Planning: a JSON answer or an event stream, each a job in a worker process."""
+
+    @app.get("/api/status")
+    def status() -> dict[str, int]:
+        return jobs.counts()
 
     def submit(req: PlanRequest) -> Job | JSONResponse:
         try:
@@ -253,6 +266,10 @@ def create_app(workers: int | None = None, queue: int = 8) -> FastAPI:
             events(), media_type="text/event-stream", headers={"Cache-Control": "no-store"}
         )
 
+
+def _job_routes(app: FastAPI, jobs: Jobs) -> None:
+    """A recent job's files, and cancelling it."""
+
     @app.delete("/api/jobs/{job_id}", response_model=None)
     def cancel(job_id: str) -> JSONResponse:
         job = jobs.get(job_id)
@@ -278,5 +295,3 @@ def create_app(workers: int | None = None, queue: int = 8) -> FastAPI:
             have = ", ".join(job.files) or "none yet"
             return _error(404, f"job {job_id} has no file {name!r} (files: {have})")
         return Response(job.files[name], media_type=MEDIA[name.rsplit(".", 1)[-1]])
-
-    return app
