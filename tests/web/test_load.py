@@ -32,16 +32,36 @@ def serve(app) -> tuple[str, uvicorn.Server, threading.Thread]:
     return f"http://127.0.0.1:{port}", srv, thread
 
 
-def test_light_requests_stay_fast_and_answers_stay_with_their_clients():
+@pytest.fixture(scope="module")
+def url():
     url, srv, thread = serve(create_app(workers=2, queue=8))
-    try:
-        report = run_load(url, clients=6, slow=2, slow_s=3.0)
-    finally:
-        srv.should_exit = True
-        thread.join(10)
+    yield url
+    srv.should_exit = True
+    thread.join(10)
+
+
+def test_light_requests_stay_fast_and_answers_stay_with_their_clients(url):
+    report = run_load(url, clients=6, slow=2, slow_s=3.0)
     summary = report.summary()
     assert report.problems == []
     assert report.plans == 6
     assert summary["light_requests"] >= 10
     # one plan at a time made a world-geometry request wait 8 s behind a plan; now none waits for one
     assert summary["light_s"]["p95"] < 1.0, summary
+
+
+def test_a_client_that_goes_away_cancels_its_job(url):
+    import httpx
+
+    from nl2hltl2plan.web.load import SLOW
+
+    body = {"instruction": SLOW, "robots": 5, "mode": "exact", "pictures": False, "timeout_s": 60}
+    with httpx.Client(base_url=url, timeout=30) as c:
+        with c.stream("POST", "/api/plan/stream", json=body) as res:
+            for line in res.iter_lines():
+                if '"stage": "planning"' in line:
+                    break  # the search runs: hang up
+        deadline = time.time() + 10  # the search alone would run for half a minute
+        while c.get("/api/status").json()["running"]:
+            assert time.time() < deadline, "the job still runs after its client went away"
+            time.sleep(0.1)

@@ -26,7 +26,7 @@ from nl2hltl2plan.worlds import load_world
 from nl2hltl2plan.worlds.team import Team, smartllm_profiles, team_from_json
 
 MEMORY_MB = 3000  # address space a request may add (the planner's node limit stays below it)
-PLAN_SHARE = 0.75  # of the request's deadline, the planner's own time limit (the rest: words, pictures)
+PLAN_SHARE = 0.6  # of the time left, the planner's own limit (the rest: pictures, a loaded machine)
 GRACE_S = 3.0  # the worker ends itself this long after the deadline, should the server not
 
 
