@@ -202,3 +202,5 @@ def test_a_shared_link_reproduces_the_plan(page, browser):
     finally:
         other.close()
     assert second["plan"] == first["plan"] and second["planner"]["objective"] == "minmax"
+    recent = page.eval_on_selector_all("#recent a", "as => as.map(a => a.href)")
+    assert recent[0] == link  # the page keeps the links of the last plans
