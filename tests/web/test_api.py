@@ -142,17 +142,21 @@ def test_a_full_queue_is_a_503(client):
                for _ in range(3)]  # fmt: skip
     for t in threads:
         t.start()
-    deadline = time.monotonic() + 20
-    while sum(client.get("/api/status").json()[k] for k in ("running", "waiting")) < 3:  # 2 workers, 1 queued
-        assert time.monotonic() < deadline, "the jobs did not start"
-        time.sleep(0.05)
-    busy = client.post("/api/plan", json=slow)
-    assert busy.status_code == 503 and busy.headers["Retry-After"]
-    assert "the server is busy: 2 plan(s) running and 1 waiting" in busy.json()["error"]
-    for job_id in list(client.app.state.jobs.jobs):
-        client.delete(f"/api/jobs/{job_id}")
-    for t in threads:
-        t.join(10)
+    try:
+        deadline = time.monotonic() + 60
+        while (
+            sum(client.get("/api/status").json()[k] for k in ("running", "waiting")) < 3
+        ):  # 2 workers, 1 queued
+            assert time.monotonic() < deadline, "the jobs did not start"
+            time.sleep(0.05)
+        busy = client.post("/api/plan", json=slow)
+        assert busy.status_code == 503 and busy.headers["Retry-After"]
+        assert "the server is busy: 2 plan(s) running and 1 waiting" in busy.json()["error"]
+    finally:
+        for job_id in list(client.app.state.jobs.jobs):
+            client.delete(f"/api/jobs/{job_id}")
+        for t in threads:
+            t.join(30)
     assert codes == [499, 499, 499]  # each client hears that its job was cancelled
     assert client.get("/api/status").json() == {"workers": 2, "queue": 1, "running": 0, "waiting": 0}
 
