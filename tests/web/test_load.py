@@ -41,10 +41,10 @@ def url():
 
 
 def test_light_requests_stay_fast_and_answers_stay_with_their_clients(url):
-    report = run_load(url, clients=6, slow=2, slow_s=3.0)
+    report = run_load(url, clients=4, slow=2, slow_s=2.0)
     summary = report.summary()
     assert report.problems == []
-    assert report.plans == 6
+    assert report.plans == 4
     assert summary["light_requests"] >= 10
     # one plan at a time made a world-geometry request wait 8 s behind a plan; now none waits for one
     assert summary["light_s"]["p95"] < 1.0, summary
