@@ -46,8 +46,9 @@ def test_light_requests_stay_fast_and_answers_stay_with_their_clients(url):
     assert report.problems == []
     assert report.plans == 4
     assert summary["light_requests"] >= 10
-    # one plan at a time made a world-geometry request wait 8 s behind a plan; now none waits for one
-    assert summary["light_s"]["p95"] < 1.0, summary
+    # one plan at a time made a world-geometry request wait 8 s behind a plan; now none waits for
+    # one: measured against the plans of the same run (a ratio holds on a loaded machine too)
+    assert summary["light_s"]["p95"] < 0.25 * summary["plan_s"]["median"], summary
 
 
 def test_a_client_that_goes_away_cancels_its_job(url):
