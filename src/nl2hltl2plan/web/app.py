@@ -218,7 +218,7 @@ def _plan_routes(app: FastAPI, jobs: Jobs) -> None:
     """Planning: a JSON answer or an event stream, each a job in a worker process."""
 
     @app.get("/api/status")
-    def status() -> dict[str, int]:
+    async def status() -> dict[str, int]:
         return jobs.counts()
 
     def submit(req: PlanRequest) -> Job | JSONResponse:
@@ -271,7 +271,7 @@ def _job_routes(app: FastAPI, jobs: Jobs) -> None:
     """A recent job's files, and cancelling it."""
 
     @app.delete("/api/jobs/{job_id}", response_model=None)
-    def cancel(job_id: str) -> JSONResponse:
+    async def cancel(job_id: str) -> JSONResponse:  # in the event loop, where jobs change state
         job = jobs.get(job_id)
         if job is None:
             return _error(404, f"no recent job {job_id!r}")
@@ -279,15 +279,16 @@ def _job_routes(app: FastAPI, jobs: Jobs) -> None:
         return JSONResponse({"id": job.id, "state": job.state})
 
     @app.get("/api/jobs/{job_id}/files.zip", response_model=None)
-    def bundle(job_id: str) -> Response:
+    async def bundle(job_id: str) -> Response:
         job = jobs.get(job_id)
         if job is None or not job.files:
             return _error(404, f"no files for job {job_id!r} (a recent job that planned with pictures on)")
         disposition = f'attachment; filename="nl2hltl2plan-{job.id}.zip"'
-        return Response(_zip(job), media_type="application/zip", headers={"Content-Disposition": disposition})
+        data = await asyncio.to_thread(_zip, job)  # compressing: off the event loop
+        return Response(data, media_type="application/zip", headers={"Content-Disposition": disposition})
 
     @app.get("/api/jobs/{job_id}/files/{name}", response_model=None)
-    def file(job_id: str, name: str) -> Response:
+    async def file(job_id: str, name: str) -> Response:
         job = jobs.get(job_id)
         if job is None:
             return _error(404, f"no recent job {job_id!r}; POST /api/plan first")
