@@ -197,20 +197,22 @@ class Jobs:
                     elif not job.finished:
                         job.push(kind, data)
             except (EOFError, OSError):
-                loop.remove_reader(conn.fileno())
+                loop.remove_reader(fd)
                 if not ended.done():
                     ended.set_result(None)
 
-        loop.add_reader(conn.fileno(), readable)
+        fd = conn.fileno()
+        loop.add_reader(fd, readable)
         try:
             await asyncio.wait_for(ended, timeout_s)
         except TimeoutError:
-            loop.remove_reader(conn.fileno())
             job.proc.kill()
             if not job.finished:
                 job.push("error", {"status": 504, "error": f"the request ran past its deadline of "
                                    f"{job.request.timeout_s:g} s (language stage, planning and pictures "
                                    "together)"})  # fmt: skip
+        finally:
+            loop.remove_reader(fd)  # a no-op when the end of the pipe already removed it
 
     def _conclude(self, job: Job, folder: str) -> None:
         """Read the files the worker wrote, and say how the job ended."""
