@@ -51,14 +51,15 @@ def main() -> None:
     commit = subprocess.run(
         ["git", "rev-parse", "--short", "HEAD"], capture_output=True, text=True
     ).stdout.strip()
-    machine = f"{platform.machine()}, {os.cpu_count()} CPUs, Python {platform.python_version()}"
+    load = ", ".join(f"{v:.1f}" for v in os.getloadavg())
+    machine = f"{platform.machine()}, {os.cpu_count()} CPUs, Python {platform.python_version()}, load average {load}"
     lines = [
         "# Web app under load",
         "",
         f"Command: `python scripts/bench_web_load.py --clients {args.clients} --slow {args.slow} "
         f"--slow-s {args.slow_s:g} --workers {args.workers}`  ",
         f"Commit: {commit}  ",
-        f"Machine: {machine} (shared with other jobs while it ran)",
+        f"Machine: {machine} (at the end; the machine was shared with other jobs)",
         "",
         f"{args.slow} long plans (5 robots, exact mode, deadline {args.slow_s:g} s) hold the {args.workers} "
         f"workers; {args.clients} short plans queue behind them; one client asks for world geometry "
