@@ -244,3 +244,16 @@ def test_serve_command_errors(monkeypatch, capsys):
     monkeypatch.setattr(importlib.util, "find_spec", lambda n, *a: None if n == "fastapi" else real(n, *a))
     assert main(["serve"]) == 2
     assert "pip install 'nl2hltl2plan[web]'" in capsys.readouterr().err
+
+
+def test_every_example_is_understood():
+    from nl2hltl2plan.pipeline import language_stage
+    from nl2hltl2plan.web.app import options
+    from nl2hltl2plan.web.maps import cached_world
+
+    examples = options()["examples"]
+    assert {"demo", "tabletop", "handover-line", "handover-square"} <= set(examples)
+    for world, instructions in examples.items():
+        for text in instructions:
+            lang = language_stage(text, cached_world(world))
+            assert lang.spec is not None and not lang.unparsed, (world, text)
