@@ -6,12 +6,15 @@ request (nothing lost, nothing mixed up between clients). Used by the suite's lo
 
 from __future__ import annotations
 
+import http.client
+import json
 import statistics
 import threading
 import time
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 from typing import Any
+from urllib.parse import urlsplit
 
 # (instruction, robots, the object types its plan must handle): each client asks something different
 CLIENT_REQUESTS = [
@@ -30,6 +33,42 @@ SLOW = (
     "Put the plates, mugs and utensils in the lower rack in any order; after that, first the saucers, "
     "then the cups, in the upper rack."
 )
+
+
+@dataclass
+class Answer:
+    status_code: int
+    text: str
+
+    def json(self) -> Any:
+        return json.loads(self.text)
+
+
+class Client:
+    """One client's keep-alive HTTP connection (the standard library's: no extra dependency)."""
+
+    def __init__(self, base_url: str, timeout: float) -> None:
+        url = urlsplit(base_url)
+        self.conn = http.client.HTTPConnection(url.hostname or "127.0.0.1", url.port, timeout=timeout)
+
+    def request(self, method: str, path: str, body: dict[str, Any] | None = None) -> Answer:
+        data = None if body is None else json.dumps(body)
+        headers = {} if body is None else {"Content-Type": "application/json"}
+        self.conn.request(method, path, body=data, headers=headers)
+        res = self.conn.getresponse()
+        return Answer(res.status, res.read().decode())
+
+    def get(self, path: str) -> Answer:
+        return self.request("GET", path)
+
+    def post(self, path: str, json: dict[str, Any]) -> Answer:
+        return self.request("POST", path, json)
+
+    def __enter__(self) -> Client:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.conn.close()
 
 
 @dataclass
@@ -94,13 +133,11 @@ def _slow(client: Any, seconds: float, report: LoadReport, lock: threading.Lock)
 def run_load(base_url: str, clients: int = 6, slow: int = 2, slow_s: float = 3.0) -> LoadReport:
     """`slow` long plans and `clients` short ones at once (each its own connection), and light
     requests in a loop until they are all answered."""
-    import httpx
-
     report, lock = LoadReport(), threading.Lock()
     done = threading.Event()
 
     def light() -> None:
-        with httpx.Client(base_url=base_url, timeout=30) as c:
+        with Client(base_url, timeout=30) as c:
             while not done.is_set():
                 for path in ("/api/worlds/demo", "/api/status"):
                     started = time.perf_counter()
@@ -111,7 +148,7 @@ def run_load(base_url: str, clients: int = 6, slow: int = 2, slow_s: float = 3.0
                             report.problems.append(f"light {path}: HTTP {res.status_code}")
 
     def client_job(fn: Any, *args: Any) -> None:
-        with httpx.Client(base_url=base_url, timeout=120) as c:
+        with Client(base_url, timeout=120) as c:
             fn(c, *args, report, lock)
 
     watcher = threading.Thread(target=light)
