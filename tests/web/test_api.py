@@ -29,7 +29,7 @@ HARD = (
 
 @pytest.fixture(scope="module")
 def client():
-    with TestClient(create_app(workers=2, queue=1)) as c:
+    with TestClient(create_app(workers=1, queue=1)) as c:  # one CPU: the suite's other worker keeps one
         yield c
 
 
@@ -139,26 +139,24 @@ def test_a_full_queue_is_a_503(client):
     slow = {"instruction": HARD, "robots": 5, "mode": "exact", "pictures": False, "timeout_s": 30}
     codes: list[int] = []
     threads = [threading.Thread(target=lambda: codes.append(client.post("/api/plan", json=slow).status_code))
-               for _ in range(3)]  # fmt: skip
+               for _ in range(2)]  # fmt: skip
     for t in threads:
         t.start()
     try:
         deadline = time.monotonic() + 60
-        while (
-            sum(client.get("/api/status").json()[k] for k in ("running", "waiting")) < 3
-        ):  # 2 workers, 1 queued
+        while sum(client.get("/api/status").json()[k] for k in ("running", "waiting")) < 2:  # 1 + 1 queued
             assert time.monotonic() < deadline, "the jobs did not start"
             time.sleep(0.05)
         busy = client.post("/api/plan", json=slow)
         assert busy.status_code == 503 and busy.headers["Retry-After"]
-        assert "the server is busy: 2 plan(s) running and 1 waiting" in busy.json()["error"]
+        assert "the server is busy: 1 plan(s) running and 1 waiting (at most 1 + 1)" in busy.json()["error"]
     finally:
         for job_id in list(client.app.state.jobs.jobs):
             client.delete(f"/api/jobs/{job_id}")
         for t in threads:
             t.join(30)
-    assert codes == [499, 499, 499]  # each client hears that its job was cancelled
-    assert client.get("/api/status").json() == {"workers": 2, "queue": 1, "running": 0, "waiting": 0}
+    assert codes == [499, 499]  # each client hears that its job was cancelled
+    assert client.get("/api/status").json() == {"workers": 1, "queue": 1, "running": 0, "waiting": 0}
 
 
 def test_page_options_and_worlds(client):

@@ -41,7 +41,7 @@ def server():
         s.bind(("127.0.0.1", 0))
         port = s.getsockname()[1]
     srv = uvicorn.Server(
-        uvicorn.Config(create_app(workers=2), host="127.0.0.1", port=port, log_level="warning")
+        uvicorn.Config(create_app(workers=1), host="127.0.0.1", port=port, log_level="warning")
     )
     thread = threading.Thread(target=srv.run, daemon=True)
     thread.start()
