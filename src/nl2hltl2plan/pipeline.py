@@ -18,9 +18,9 @@ chains the stages):
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field
 
@@ -34,6 +34,7 @@ from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.planning import PlanResult, PlanStatus, plan
 from nl2hltl2plan.planning.api import Mode
 from nl2hltl2plan.planning.objective import ObjectiveName
+from nl2hltl2plan.planning.search import SearchStats
 from nl2hltl2plan.worlds.checker import CheckResult, check
 from nl2hltl2plan.worlds.model import Cell, World
 from nl2hltl2plan.worlds.starts import start_cells
@@ -57,6 +58,28 @@ class PipelineOptions(BaseModel):
     capabilities: list[list[str] | None] | None = None  # per robot: verbs/atoms it can do (None: all)
     choices: dict[str, str] = Field(default_factory=dict)  # a user's picks for ambiguous words (--ask)
     partial: bool = False  # plan what was understood when part of the instruction was not (--partial)
+
+
+class Progress(BaseModel):
+    """One step of a run as it happens, for a progress display (the CLI's spinner, the web page's
+    event stream): the stage, a line of words and, while planning, the search's counts so far."""
+
+    stage: Literal["language", "specification", "planning", "execution"]
+    detail: str
+    expanded: int | None = None  # search expansions so far
+    best_cost: float | None = None  # the best plan's cost so far (objective units)
+    lower_bound: float | None = None  # proven lower bound on the optimal cost so far
+
+
+OnProgress = Callable[[Progress], None]
+
+
+def _search_progress(stats: SearchStats) -> Progress:
+    best = "no plan yet" if stats.best_cost is None else f"best cost {stats.best_cost:g}"
+    bound = f", lower bound {stats.lower_bound:g}" if stats.lower_bound > 0 else ""
+    return Progress(stage="planning", detail=f"{stats.expanded} expansions, {best}{bound}",
+                    expanded=stats.expanded, best_cost=stats.best_cost,
+                    lower_bound=stats.lower_bound or None)  # fmt: skip
 
 
 @dataclass
@@ -101,10 +124,13 @@ def planning_stage(
     starts: Sequence[Cell],
     options: PipelineOptions | None = None,
     gt: GTInstance | None = None,
+    progress: OnProgress | None = None,
 ) -> Planned:
     """Plan for the team (every returned plan is executed and checked against `spec`), then judge the
-    execution against the ground truth's goals and orderings when `gt` is given."""
+    execution against the ground truth's goals and orderings when `gt` is given. `progress` hears
+    the search's counts while it runs."""
     opt = options or PipelineOptions()
+    hook = None if progress is None else (lambda stats: progress(_search_progress(stats)))
     result = plan(
         world,
         spec,
@@ -113,6 +139,7 @@ def planning_stage(
         mode=opt.mode,
         timeout_s=opt.plan_timeout_s,
         capabilities=opt.capabilities,
+        on_progress=hook,
     )
     verdict = None
     if gt is not None and result.solved and result.execution is not None:
@@ -187,6 +214,7 @@ def run(
     client: LLMClient | None = None,
     gt: GTInstance | None = None,
     ask: Chooser | None = None,
+    progress: OnProgress | None = None,
 ) -> Outcome:
     """Instruction -> checked plan for a team in `world` (see the module docstring).
 
@@ -202,7 +230,10 @@ def run(
     `Nl2Hltl2PlanError` for input the pipeline cannot use (an object the scene lacks, a sentence
     nothing understood, a cyclic ordering, too many robots); a spec with no plan is not an error but
     an outcome with status infeasible (a team that lacks a skill, with the reason) or timeout.
+
+    `progress`: hears each stage as it starts, and the planner's counts while it searches.
     """
+    tell = progress or (lambda _p: None)
     opt = options or PipelineOptions()
     team = robots if isinstance(robots, Team) else Team(robots)
     starts = start_cells(world, team.size, given=opt.starts)
@@ -217,6 +248,7 @@ def run(
         picks.update(ask(ambiguities))
         return picks
 
+    tell(Progress(stage="language", detail=f"reading the instruction ({opt.backend} backend)"))
     lang = language_stage(instruction, world, opt, client, ask=recorded if ask is not None else None)
     if picks:
         opt = opt.model_copy(update={"choices": {**opt.choices, **picks}})
@@ -225,11 +257,19 @@ def run(
     if lang.spec is None:
         why = "; ".join(lang.warnings + lang.issues + lang.unparsed) or "no leaf actions"
         raise HTTError(f"no hierarchical specification for {instruction!r}: {why}")
+    tell(Progress(stage="specification", detail=f"{len(lang.spec.names)} formulas, "
+                  f"{len(lang.spec.leaves)} leaf tasks"))  # fmt: skip
     problems = team_problems(team, lang.spec, world)
     if problems:  # a definite no before any search: the team lacks a skill or the strength
         planned = Planned(PlanResult(status=PlanStatus.INFEASIBLE, reason="; ".join(problems)))
     else:
-        planned = planning_stage(world, lang.spec, starts, opt, gt)
+        tell(Progress(stage="planning", detail=f"searching for {team.describe()}"))
+        planned = planning_stage(world, lang.spec, starts, opt, gt, progress)
+        r = planned.result
+        tell(Progress(stage="planning", detail=f"{r.expanded} expansions: {PlanStatus(r.status).value}",
+                      expanded=r.expanded, best_cost=r.cost if r.solved else None,
+                      lower_bound=r.lower_bound or None))  # fmt: skip
+    tell(Progress(stage="execution", detail=_execution_words(planned.result)))
     return Outcome(
         instruction=lang.instruction,
         world=world,
@@ -241,6 +281,13 @@ def run(
         planned=planned,
         team=team.describe(),
     )
+
+
+def _execution_words(result: PlanResult) -> str:
+    if result.execution is None:
+        return f"no plan to execute: {PlanStatus(result.status).value}"
+    return (f"executed and checked: travel {result.execution.travel_m:.2f} m, "
+            f"{result.execution.steps} steps")  # fmt: skip
 
 
 def _listed(caps: set[str] | None) -> list[str] | None:

@@ -131,6 +131,9 @@ def test_cli_plan_json(capsys, monkeypatch, tmp_path):
     )
     assert "offline parser (grammar + learned model)" in out.err
     assert (tmp_path / "out" / "htt.png").stat().st_size > 1000
+    from nl2hltl2plan.outputs import output_names  # the files the web page offers for download too
+
+    assert sorted(p.name for p in (tmp_path / "out").iterdir()) == sorted(output_names(has_plan=True))
     assert json.loads((tmp_path / "out" / "result.json").read_text())["tasks"][0]["kind"] == "clean_place"
 
 

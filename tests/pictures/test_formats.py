@@ -21,6 +21,15 @@ def schema():
     return jsonschema.Draft202012Validator(data)
 
 
+def test_committed_schema_is_the_one_generated_from_the_model():
+    from nl2hltl2plan.worlds.plan import ACTION_ARITY, plan_json_schema
+
+    committed = json.loads((ROOT / "docs" / "plan.schema.json").read_text())
+    assert committed == plan_json_schema(), "docs/plan.schema.json drifted: run python scripts/plan_schema.py"
+    verbs = committed["$defs"]["Step"]["properties"]["verb"]["enum"]
+    assert set(ACTION_ARITY) <= set(verbs)  # every action the simulator knows, "break" included
+
+
 def test_plan_json_validates_against_the_schema(schema, capsys):
     assert main(["plan", INSTRUCTION, "--world", "demo", "--robots", "2", "--llm", "offline", "--json"]) == 0
     payload = json.loads(capsys.readouterr().out)

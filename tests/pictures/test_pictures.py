@@ -58,9 +58,9 @@ def test_gantt_segments_merge_moves_and_waits():
     assert [(s.kind, s.start, s.end, s.label) for s in segs] == [
         ("move", 1, 2, "move x2"),
         ("wait", 3, 4, "wait x2"),
-        ("action", 5, 5, "pickup(Apple3)"),
+        ("action", 5, 5, "pickup(Apple_3)"),  # the ids the text output and the map use
         ("wait", 6, 6, "wait x1"),
-        ("action", 7, 7, "put(Apple3,Fridge)"),
+        ("action", 7, 7, "put(Apple_3, Fridge_0)"),
     ]
 
 

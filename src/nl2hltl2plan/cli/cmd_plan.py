@@ -2,8 +2,9 @@
 
 Instruction -> HTT -> hierarchical LTL -> multi-robot plan, executed and checked (`pipeline.run`).
 Prints the HTT, the base tasks, the hierarchical LTL and the plan with its travel cost and completion
-time; `--json` prints one object (docs/plan_schema.md); `-o DIR` writes result.json, htt.png,
-world.png, plan.png (the map with numbered actions) and gantt.png (who does what when).
+time; `--json` prints one object (docs/plan_schema.md); `-o DIR` writes result.json, spec.json,
+spec.hoa and the pictures htt, world, plan (the map with numbered actions) and gantt (who does what
+when), each as .png and .svg.
 Exit status: 0 a checked plan, 1 no plan (infeasible or timeout, with the reason), 2 bad input,
 3 LLM requests pending (batch mode), 4 an internal error (a bug). Without `--llm`, an LLM configured
 by NL2HLTL2PLAN_LLM_* is used, else the offline backend (said on stderr).
@@ -95,20 +96,29 @@ def register(sub: Any) -> None:
     p.set_defaults(func=run)
 
 
-def _spinner(enabled: bool) -> tuple[contextlib.AbstractContextManager[Any], Callable[[str], None] | None]:
-    """A rich spinner on stderr while the LLM works, and the callback that updates it."""
+Callback = Callable[[Any], None]
+
+
+def _spinner(
+    enabled: bool,
+) -> tuple[contextlib.AbstractContextManager[Any], Callback | None, Callback | None]:
+    """A rich spinner on stderr that says the stage the run is in (the pipeline's progress hook, the
+    same one the web page streams) and each LLM request; the two callbacks that update it."""
     if not enabled:
-        return contextlib.nullcontext(), None
+        return contextlib.nullcontext(), None, None
     from rich.console import Console
 
-    status = Console(stderr=True).status("asking the LLM ...")
+    status = Console(stderr=True).status("starting ...")
     count = [0]
 
     def on_request(name: str) -> None:
         count[0] += 1
         status.update(f"asking the LLM: {name} (request {count[0]})")
 
-    return status, on_request
+    def on_progress(p: Any) -> None:
+        status.update(f"{p.stage}: {p.detail}")
+
+    return status, on_request, on_progress
 
 
 def run(args: argparse.Namespace) -> int:
@@ -146,11 +156,15 @@ def run(args: argparse.Namespace) -> int:
     team = parse_team(args.robots)  # before the world: a bad team is refused without loading anything
     world = load_world(args.world)
     batch = BatchCollector() if args.batch_out else None
-    spinner, on_request = _spinner(backend != "offline" and batch is None and not args.json)
+    # not while --ask prompts on the terminal, nor where stderr is not one
+    spinner, on_request, on_progress = _spinner(
+        batch is None and not args.json and not args.ask and sys.stderr.isatty()
+    )
     try:
         with spinner, open_client(backend, settings, batch=batch, on_request=on_request) as client:
             ask = _ask_on_terminal if args.ask else None
-            outcome = run_pipeline(args.instruction, world, team, options, client, ask=ask)
+            instruction = args.instruction
+            outcome = run_pipeline(instruction, world, team, options, client, ask=ask, progress=on_progress)
     except PendingAnswer:
         assert batch is not None
         n = batch.write(args.batch_out)
@@ -248,15 +262,9 @@ def _print_human(outcome: Any) -> None:
 
 
 def _write_outputs(folder: Path, outcome: Any, payload: dict[str, Any]) -> None:
-    """result.json and the pictures, all drawn from the outcome (nothing is re-run)."""
-    from nl2hltl2plan.io import write_json
-    from nl2hltl2plan.language.render import draw_htt, htt_orderings
-    from nl2hltl2plan.worlds import pictures
-    from nl2hltl2plan.worlds.gantt import draw_gantt
+    """result.json, the spec (JSON and HOA) and the pictures (PNG and SVG), all drawn from the outcome
+    (nothing is re-run): the same files the web page offers for download (`outputs.write_outputs`)."""
+    from nl2hltl2plan.outputs import write_outputs
 
-    write_json(folder / "result.json", payload, "result file")
-    draw_htt(outcome.language.htt, folder / "htt.png", title=outcome.instruction)
-    pictures.draw_world(outcome.world, folder / "world.png", title=outcome.world.name)
-    if outcome.result.execution is not None:
-        pictures.draw_execution(outcome.result.execution, folder / "plan.png")
-        draw_gantt(outcome.result.execution, folder / "gantt.png", before=htt_orderings(outcome.language.htt))
+    for warning in write_outputs(folder, outcome, payload):
+        print(f"warning: {warning}", file=sys.stderr)

@@ -24,9 +24,11 @@ def register(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser(
         "serve",
         help=COMMANDS["serve"],
-        description="Serve a page where one types an instruction, picks a world and a team, and sees the "
-        "HTT, the hierarchical spec, the plan on the map (animated) and its Gantt chart; POST /api/plan "
-        'with {"instruction", "world", "robots"} returns the JSON of `plan --json`.',
+        description="Serve a page where one types an instruction, chooses a world, a team and the "
+        "planner's options, watches it being planned (and may cancel), and sees and downloads the HTT, "
+        "the spec, the plan on the map and its Gantt chart; POST /api/plan returns the JSON of "
+        "`plan --json`, POST /api/plan/stream the same as Server-Sent Events. Plans run in worker "
+        "processes, one per CPU, with a bounded queue (docs/web.md; the API at /docs).",
     )
     p.add_argument(
         "--host", default="127.0.0.1", help="interface to listen on (default 127.0.0.1: this machine)"

@@ -25,7 +25,7 @@ from nl2hltl2plan.planning.results import (
     optimality_words,
     validate,
 )
-from nl2hltl2plan.planning.search import NODE_BYTES, Deadline, Searcher, SearchStats
+from nl2hltl2plan.planning.search import NODE_BYTES, Deadline, ProgressHook, Searcher, SearchStats
 from nl2hltl2plan.planning.state import Expander, Node
 from nl2hltl2plan.worlds.model import CELL_M, Cell, World
 
@@ -96,6 +96,7 @@ def plan(
     lns_evals: int = LNS_EVALS,
     max_nodes: int | None = MAX_NODES,
     refine: bool | None = None,
+    on_progress: ProgressHook | None = None,
 ) -> PlanResult:
     """Plan for a robot team under a hierarchical sc-LTL spec; every returned plan is executed in
     the simulator and checked against the spec (`validate`) before it is returned.
@@ -123,7 +124,8 @@ def plan(
     failed validation, a planner bug, with the reason). A `handover` world (fixed arms) goes to the
     cooperative engine (`planning.coop`), which answers in the same `PlanResult`. Malformed input
     (not a HierarchicalSpec, a start cell that is not free, a leaf atom that is not an action)
-    raises `PlanningError`.
+    raises `PlanningError`. `on_progress`, when given, hears the search's `SearchStats` (expansions,
+    best cost and lower bound so far) every quarter second or so (the web page's progress).
     """
     t0 = time.perf_counter()
     _check_arguments(spec, objective, mode, w)
@@ -142,7 +144,7 @@ def plan(
         return result
     x = Expander(problem, Navigator(world))
     required = {problem.leaf_index[n] for n in _required_leaves(problem)}
-    searcher = Searcher(x, Heuristic(x, required), obj, deadline)
+    searcher = Searcher(x, Heuristic(x, required), obj, deadline, on_progress)
     budget = Budget(fast_expansions if mode == "fast" else None, improve_evals, lns_evals,
                     w if mode == "fast" and fast_expansions is None else 1.0, w if mode == "fast" else 1.0,
                     max_nodes, FAST_GENERATED if mode == "fast" and fast_expansions is not None else None,
@@ -221,6 +223,7 @@ def _search(searcher: Searcher, x: Expander, budget: Budget) -> Node | None:
             best = lns(x, best, searcher.obj, budget.lns_evals, searcher.check_time)
             if budget.free_stands:  # the incumbent's cost on the grid: its best stand cells
                 best = refine_stand_cells(x, best, searcher.obj)
+            searcher.found(best)
         x.free_stands = budget.free_stands
         try:
             best = searcher.awa(root, best, budget.w_order, budget.w_stop, max_expansions=budget.expansions,

@@ -18,6 +18,7 @@ from __future__ import annotations
 import heapq
 import itertools
 import time
+from collections.abc import Callable
 from dataclasses import dataclass
 
 from nl2hltl2plan.planning.heuristic import Heuristic
@@ -40,20 +41,36 @@ class SearchStats:
     proven_optimal: bool = False
     exhausted: bool = False
     stopped: str = ""  # why the search stopped: "bound", "exhausted", "budget", "memory", "timeout"
+    best_cost: float | None = None  # the incumbent's cost so far (objective units; None: no plan yet)
+
+
+ProgressHook = Callable[[SearchStats], None]
+PROGRESS_EVERY_S = 0.25  # a progress hook hears from the search at most this often
 
 
 class Searcher:
-    def __init__(self, expander: Expander, heuristic: Heuristic, objective: Objective, deadline: float):
+    def __init__(self, expander: Expander, heuristic: Heuristic, objective: Objective, deadline: float,
+                 on_progress: ProgressHook | None = None):
         self.x = expander
         self.h = heuristic
         self.obj = objective
         self.deadline = deadline
         self.stats = SearchStats()
+        self.on_progress = on_progress
+        self._next_report = 0.0
 
     # ------------------------------------------------------------ bookkeeping
     def check_time(self) -> None:
-        if time.perf_counter() > self.deadline:
+        now = time.perf_counter()
+        if now > self.deadline:
             raise Deadline
+        if self.on_progress is not None and now >= self._next_report:
+            self._next_report = now + PROGRESS_EVERY_S
+            self.on_progress(self.stats)
+
+    def found(self, node: Node) -> None:
+        """Record a new incumbent's cost (what a progress hook reports as the best so far)."""
+        self.stats.best_cost = float(self.obj.reported(node))
 
     def score(self, node: Node) -> None:
         h_sum, ms_lb = self.h.evaluate(node)
@@ -181,6 +198,7 @@ class Searcher:
                 if self.x.is_goal(child):
                     if self.cost(child) < ub:
                         ub, best = self.cost(child), child
+                        self.found(child)
                     continue
                 child.ms_lb = max(node.ms_lb, child.ms)
                 child.f = max(node.f, obj.floor(child))

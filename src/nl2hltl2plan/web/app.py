@@ -1,59 +1,98 @@
-"""The local web app: type an instruction, pick a world and a team, see the HTT, the hierarchical spec,
-the plan on the map (animated in the browser) and its Gantt chart.
+"""The local web app: type an instruction, choose a world, a team and the planner's options, watch it
+being planned, and take the HTT, the spec, the plan, its pictures and its files away (docs/web.md).
 
-Routes (FastAPI; `nl2hltl2plan serve` runs it with uvicorn):
+Routes (FastAPI; `nl2hltl2plan serve` runs it with uvicorn; the Swagger page is `/docs`):
 
-- `GET /` the page (static/index.html);
-- `GET /api/worlds` the worlds one can pick; `GET /api/worlds/{name}` a world's geometry for the map;
-- `POST /api/plan` with `{"instruction", "world", "robots"}` returns exactly the JSON of `plan --json`
-  (`pipeline.Outcome.to_json()`), and its pictures' id in the `X-Outcome-Id` header;
-- `GET /api/outcomes/{id}/htt.svg`, `.../gantt.svg`, `.../map.svg` the pictures of a recent outcome.
+- `GET /` the page; `GET /api/options` the worlds, teams, objectives, modes, backends, limits and
+  example instructions; `GET /api/worlds/{name}` a world's geometry; `.../map.svg` its picture;
+- `POST /api/plan` (a `PlanRequest`) answers with the JSON of `plan --json`, its job id in the
+  `X-Outcome-Id` header; `POST /api/plan/stream` answers the same request as Server-Sent Events:
+  `job`, `progress` (each stage, then the search's expansions and costs so far), `result`, `files`,
+  `error`, and last `done`;
+- `GET /api/jobs/{id}/files/{name}` one file of a finished job (`result.json`, `spec.json`,
+  `spec.hoa`, `htt|world|plan|gantt.png|svg`), `GET /api/jobs/{id}/files.zip` all of them;
+  `DELETE /api/jobs/{id}` cancels a job; `GET /api/status` the workers and the queue.
 
-Bad requests get a 4xx answer `{"error": "one readable sentence"}`. The pipeline and matplotlib are not
-thread-safe, so requests are served one at a time (a local, single-user tool).
+Plans run in worker processes (`web.jobs`): a full queue is a 503 with Retry-After, a request past
+its deadline a 504, a client that goes away cancels its job, and a body over MAX_BODY_BYTES is a 413.
+Every error is `{"error": "one readable sentence"}`.
 """
 
 from __future__ import annotations
 
+import asyncio
 import functools
-import hashlib
 import io
-import threading
-from collections import OrderedDict
+import json
+import zipfile
+from collections.abc import AsyncIterator
+from contextlib import asynccontextmanager
 from importlib import resources
 from typing import Any
 
 from fastapi import FastAPI, Request
 from fastapi.exceptions import RequestValidationError
-from fastapi.responses import HTMLResponse, JSONResponse, Response
-from pydantic import BaseModel, ConfigDict, Field
+from fastapi.responses import HTMLResponse, JSONResponse, Response, StreamingResponse
 
-from nl2hltl2plan.errors import Nl2Hltl2PlanError, WorldError
-from nl2hltl2plan.pipeline import Outcome, PipelineOptions, run
-from nl2hltl2plan.worlds import load_world
-from nl2hltl2plan.worlds.model import World
+from nl2hltl2plan.errors import Nl2Hltl2PlanError
+from nl2hltl2plan.web import maps
+from nl2hltl2plan.web.jobs import Busy, Job, Jobs
+from nl2hltl2plan.web.requests import (
+    DEFAULT_TIMEOUT_S,
+    MAX_INSTRUCTION,
+    MAX_ROBOTS,
+    MAX_TIMEOUT_S,
+    PlanRequest,
+)
 
-MAX_ROBOTS = 8
-KEPT_OUTCOMES = 32  # pictures of this many recent outcomes stay available
 BUILT_IN_WORLDS = ("demo", "tabletop", "handover-line", "handover-square")
-PICTURES = ("htt", "gantt", "map")
+MAX_BODY_BYTES = 256 * 1024  # a request is an instruction, options and at most a small team file
+RETRY_AFTER_S = 5
+MEDIA = {"json": "application/json", "hoa": "text/plain; charset=utf-8", "png": "image/png",
+         "svg": "image/svg+xml"}  # fmt: skip
 
 
-class PlanRequest(BaseModel):
-    """The body of POST /api/plan."""
-
-    model_config = ConfigDict(extra="forbid")
-
-    instruction: str = Field(min_length=1, max_length=4000)
-    world: str = Field(default="demo", min_length=1, max_length=64)
-    robots: int = Field(default=1, ge=1, le=MAX_ROBOTS, strict=True)  # `true` is not 1 robot
-    objective: str = Field(default="min", pattern="^(min|minmax)$")
-    plan_timeout_s: float = Field(default=60.0, gt=0, le=600)
-    partial: bool = False  # plan what was understood of a partly understood instruction (`plan --partial`)
+def _error(status: int, message: str, headers: dict[str, str] | None = None) -> JSONResponse:
+    return JSONResponse({"error": message}, status_code=status, headers=headers)
 
 
-def _error(status: int, message: str) -> JSONResponse:
-    return JSONResponse({"error": message}, status_code=status)
+class BodyLimit:
+    """ASGI middleware: a body over `max_bytes` gets 413 before the app reads it (a declared length
+    at once; a chunked body as soon as it grows past the limit)."""
+
+    def __init__(self, app: Any, max_bytes: int) -> None:
+        self.app, self.max_bytes = app, max_bytes
+
+    def _too_large(self) -> JSONResponse:
+        return _error(413, f"the request body is larger than {self.max_bytes} bytes")
+
+    async def __call__(self, scope: dict[str, Any], receive: Any, send: Any) -> None:
+        if scope["type"] != "http":
+            return await self.app(scope, receive, send)
+        declared = dict(scope["headers"]).get(b"content-length")
+        if declared is not None:
+            if not declared.isdigit() or int(declared) > self.max_bytes:
+                return await self._too_large()(scope, receive, send)
+            return await self.app(scope, receive, send)
+        body, more = b"", True
+        while more:  # no length given: read at most max_bytes, then hand the body on
+            message = await receive()
+            if message["type"] != "http.request":
+                return
+            body += message.get("body", b"")
+            if len(body) > self.max_bytes:
+                return await self._too_large()(scope, receive, send)
+            more = message.get("more_body", False)
+        replayed = False
+
+        async def replay() -> dict[str, Any]:
+            nonlocal replayed
+            if not replayed:
+                replayed = True
+                return {"type": "http.request", "body": body, "more_body": False}
+            return dict(await receive())
+
+        await self.app(scope, replay, send)
 
 
 @functools.lru_cache(maxsize=1)
@@ -62,7 +101,7 @@ def available_worlds() -> list[str]:
     names = []
     for name in BUILT_IN_WORLDS:
         try:
-            load_world(name)
+            maps.cached_world(name)
         except Nl2Hltl2PlanError:
             continue
         names.append(name)
@@ -75,56 +114,75 @@ def available_worlds() -> list[str]:
     return names
 
 
-@functools.lru_cache(maxsize=16)
-def _world(name: str) -> World:
-    return load_world(name)
+@functools.lru_cache(maxsize=1)
+def options() -> dict[str, Any]:
+    """Every choice the page offers (the same as `plan`'s options) and the example instructions."""
+    try:
+        from nl2hltl2plan.worlds.team import smartllm_profiles
+
+        profiles = {name: sorted(p.skills) for name, p in smartllm_profiles().items()}
+    except (Nl2Hltl2PlanError, OSError):
+        profiles = {}
+    worlds = available_worlds()
+    examples = json.loads(resources.files("nl2hltl2plan.web").joinpath("examples.json").read_text())
+    return {
+        "worlds": worlds,
+        "examples": {w: e for w, e in examples.items() if w in worlds},
+        "max_robots": MAX_ROBOTS,
+        "profiles": profiles,
+        "objectives": {"min": "summed travel and actions (the paper's cost)", "minmax": "completion time"},
+        "modes": {"fast": "anytime, with a proven bound", "exact": "proven optimal"},
+        "backends": ["offline", "grammar", "openai", "local"],
+        "timeout_s": {"default": DEFAULT_TIMEOUT_S, "max": MAX_TIMEOUT_S},
+        "max_instruction": MAX_INSTRUCTION,
+        "max_body_bytes": MAX_BODY_BYTES,
+    }
 
 
-def world_geometry(world: World) -> dict[str, Any]:
-    """What the page's map needs: cells with their centres (m) and objects with their positions."""
-    cells = [[r, c, *world.xz((r, c))] for r, c in sorted(world.cells)]
-    objects = [
-        {"id": o.id, "type": o.type, "x": o.xz[0], "z": o.xz[1], "movable": o.pickupable}
-        for o in world.objects.values()
-        if o.present
-    ]
-    return {"name": world.name, "cell_m": 0.25, "cells": cells, "objects": objects}
+def _sse(kind: str, data: dict[str, Any]) -> str:
+    return f"event: {kind}\ndata: {json.dumps(data, default=str)}\n\n"
 
 
-def _render(outcome: Outcome, kind: str) -> bytes:
-    import matplotlib.pyplot as plt
-
-    from nl2hltl2plan.language.render import htt_figure, htt_orderings
-    from nl2hltl2plan.worlds.gantt import draw_gantt
-    from nl2hltl2plan.worlds.pictures import draw_execution
-
+def _zip(job: Job) -> bytes:
     buf = io.BytesIO()
-    execution = outcome.result.execution
-    if kind == "htt":
-        fig = htt_figure(outcome.language.htt)
-    elif execution is None:
-        raise WorldError(f"no plan to draw: {outcome.status.value}: {outcome.result.reason}")
-    elif kind == "gantt":
-        fig = draw_gantt(execution, before=htt_orderings(outcome.language.htt))
-    else:
-        fig = draw_execution(execution)
-    fig.savefig(buf, format="svg", bbox_inches="tight")
-    plt.close(fig)
+    with zipfile.ZipFile(buf, "w", zipfile.ZIP_DEFLATED) as z:
+        for name, data in job.files.items():
+            z.writestr(f"nl2hltl2plan-{job.id}/{name}", data)
     return buf.getvalue()
 
 
-def create_app() -> FastAPI:
-    app = FastAPI(title="nl2hltl2plan", description="Natural language to multi-robot plans")
-    lock = threading.Lock()
-    outcomes: OrderedDict[str, Outcome] = OrderedDict()
+def create_app(workers: int | None = None, queue: int = 8) -> FastAPI:
+    """The app; `workers` plans run at once (default: one per CPU), `queue` more may wait."""
+    jobs = Jobs(workers, queue)
+
+    @asynccontextmanager
+    async def lifespan(_: FastAPI) -> AsyncIterator[None]:
+        await asyncio.to_thread(jobs.warm_up)
+        await asyncio.to_thread(maps.world_map, "demo")  # the page's first map, drawn before anyone waits
+        yield
+        jobs.close()
+
+    app = FastAPI(
+        title="nl2hltl2plan", description="Natural language to multi-robot plans", lifespan=lifespan
+    )
+    app.add_middleware(BodyLimit, max_bytes=MAX_BODY_BYTES)
+    app.state.jobs = jobs
 
     @app.exception_handler(RequestValidationError)
     async def bad_request(_: Request, exc: RequestValidationError) -> JSONResponse:
         first = exc.errors()[0] if exc.errors() else {}
         where = ".".join(str(p) for p in first.get("loc", ()) if p != "body")
-        return _error(
-            422, f"{where}: {first.get('msg', 'invalid request')}" if where else first.get("msg", "")
-        )
+        message = str(first.get("msg", "invalid request")).removeprefix("Value error, ")
+        return _error(422, f"{where}: {message}" if where else message)
+
+    _page_routes(app)
+    _plan_routes(app, jobs)
+    _job_routes(app, jobs)
+    return app
+
+
+def _page_routes(app: FastAPI) -> None:
+    """The page, the choices it offers and the worlds it draws."""
 
     @app.get("/", response_class=HTMLResponse)
     def index() -> str:
@@ -134,48 +192,107 @@ def create_app() -> FastAPI:
     def worlds() -> dict[str, Any]:
         return {"worlds": available_worlds(), "max_robots": MAX_ROBOTS}
 
+    @app.get("/api/options")
+    def choices() -> dict[str, Any]:
+        return options()
+
     @app.get("/api/worlds/{name}", response_model=None)
-    def world(name: str) -> dict[str, Any] | JSONResponse:
+    async def world(name: str) -> dict[str, Any] | JSONResponse:
         try:
-            with lock:
-                return world_geometry(_world(name))
+            geo = maps.geometry(maps.cached_world(name))
         except Nl2Hltl2PlanError as exc:
             return _error(404, str(exc))
+        geo["frame"] = (await asyncio.to_thread(maps.world_map, name))[1]
+        return geo
+
+    @app.get("/api/worlds/{name}/map.svg", response_model=None)
+    async def world_picture(name: str) -> Response:
+        try:
+            svg, _ = await asyncio.to_thread(maps.world_map, name)
+        except Nl2Hltl2PlanError as exc:
+            return _error(404, str(exc))
+        return Response(svg, media_type=MEDIA["svg"], headers={"Cache-Control": "max-age=3600"})
+
+
+def _plan_routes(app: FastAPI, jobs: Jobs) -> None:
+    """Planning: a JSON answer or an event stream, each a job in a worker process."""
+
+    @app.get("/api/status")
+    async def status() -> dict[str, int]:
+        return jobs.counts()
+
+    def submit(req: PlanRequest) -> Job | JSONResponse:
+        try:
+            return jobs.submit(req)
+        except Busy as exc:
+            return _error(503, str(exc), {"Retry-After": str(RETRY_AFTER_S)})
 
     @app.post("/api/plan", response_model=None)
-    def plan(req: PlanRequest) -> JSONResponse:
-        options = PipelineOptions(
-            backend="offline",
-            objective=req.objective,  # type: ignore[arg-type]  # the pattern admits only min / minmax
-            plan_timeout_s=req.plan_timeout_s,
-            partial=req.partial,
+    async def plan(req: PlanRequest, request: Request) -> JSONResponse:
+        job = submit(req)
+        if isinstance(job, JSONResponse):
+            return job
+        async for event in job.follow():
+            if event is None and await request.is_disconnected():
+                jobs.cancel(job)
+                return _error(499, "the client went away; the job was cancelled")
+        error, result = job.first("error"), job.first("result")
+        if error is not None and result is None:
+            return _error(int(error["status"]), str(error["error"]))
+        if result is None:
+            return _error(499, "the job was cancelled")
+        return JSONResponse(result, headers={"X-Outcome-Id": job.id})
+
+    @app.post("/api/plan/stream", response_model=None)
+    async def plan_stream(req: PlanRequest, request: Request) -> Response:
+        job = submit(req)
+        if isinstance(job, JSONResponse):
+            return job
+
+        async def events() -> AsyncIterator[str]:
+            try:
+                yield _sse("job", {"id": job.id, **jobs.counts()})
+                async for event in job.follow():
+                    if event is None:
+                        if await request.is_disconnected():
+                            return
+                        yield ": waiting\n\n"  # a comment line: keeps proxies from timing out
+                    else:
+                        yield _sse(*event)
+            finally:
+                jobs.cancel(job)  # a no-op for a finished job; a client that left cancels its job
+
+        return StreamingResponse(
+            events(), media_type="text/event-stream", headers={"Cache-Control": "no-store"}
         )
-        try:
-            with lock:
-                outcome = run(req.instruction, _world(req.world), robots=req.robots, options=options)
-                payload = outcome.to_json()
-        except WorldError as exc:
-            return _error(404 if "unknown world" in str(exc) else 422, str(exc))
-        except Nl2Hltl2PlanError as exc:
-            return _error(422, str(exc))
-        key = hashlib.sha1(repr(sorted(req.model_dump().items())).encode()).hexdigest()[:16]
-        outcomes[key] = outcome
-        outcomes.move_to_end(key)
-        while len(outcomes) > KEPT_OUTCOMES:
-            outcomes.popitem(last=False)
-        return JSONResponse(payload, headers={"X-Outcome-Id": key})
 
-    @app.get("/api/outcomes/{key}/{picture}.svg", response_model=None)
-    def picture(key: str, picture: str) -> Response:
-        if picture not in PICTURES:
-            return _error(404, f"no picture {picture!r}; pictures are {', '.join(PICTURES)}")
-        if key not in outcomes:
-            return _error(404, f"no recent outcome {key!r}; POST /api/plan first")
-        try:
-            with lock:
-                svg = _render(outcomes[key], picture)
-        except Nl2Hltl2PlanError as exc:
-            return _error(409, str(exc))
-        return Response(svg, media_type="image/svg+xml")
 
-    return app
+def _job_routes(app: FastAPI, jobs: Jobs) -> None:
+    """A recent job's files, and cancelling it."""
+
+    @app.delete("/api/jobs/{job_id}", response_model=None)
+    async def cancel(job_id: str) -> JSONResponse:  # in the event loop, where jobs change state
+        job = jobs.get(job_id)
+        if job is None:
+            return _error(404, f"no recent job {job_id!r}")
+        jobs.cancel(job)
+        return JSONResponse({"id": job.id, "state": job.state})
+
+    @app.get("/api/jobs/{job_id}/files.zip", response_model=None)
+    async def bundle(job_id: str) -> Response:
+        job = jobs.get(job_id)
+        if job is None or not job.files:
+            return _error(404, f"no files for job {job_id!r} (a recent job that planned with pictures on)")
+        disposition = f'attachment; filename="nl2hltl2plan-{job.id}.zip"'
+        data = await asyncio.to_thread(_zip, job)  # compressing: off the event loop
+        return Response(data, media_type="application/zip", headers={"Content-Disposition": disposition})
+
+    @app.get("/api/jobs/{job_id}/files/{name}", response_model=None)
+    async def file(job_id: str, name: str) -> Response:
+        job = jobs.get(job_id)
+        if job is None:
+            return _error(404, f"no recent job {job_id!r}; POST /api/plan first")
+        if name not in job.files:
+            have = ", ".join(job.files) or "none yet"
+            return _error(404, f"job {job_id} has no file {name!r} (files: {have})")
+        return Response(job.files[name], media_type=MEDIA[name.rsplit(".", 1)[-1]])

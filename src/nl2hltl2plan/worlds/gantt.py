@@ -10,8 +10,8 @@ Failed steps of an execution are crossed out.
 
 from __future__ import annotations
 
-import re
-from collections.abc import Iterable, Sequence
+import textwrap
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -34,6 +34,8 @@ TASK_COLOURS = [plt.get_cmap("tab20")(k) for k in range(0, 20, 2)] + [
 MOVE_COLOUR = "#b0b0b0"
 NO_TASK_COLOUR = "#8c8c8c"
 BAR_Y, BAR_H = 0.22, 0.36  # bar centre offset and height inside a lane (lane i spans i-0.5..i+0.5)
+LABEL_PT = 6.5  # action labels' font size
+LABEL_ROOM = 0.5 - (BAR_Y - BAR_H / 2) - 0.02  # lane units between a bar's top and its lane's top
 
 
 @dataclass(frozen=True)
@@ -47,14 +49,6 @@ class Segment:
     label: str
     task: str | None = None
     failed: bool = False
-
-
-def short_id(oid: str) -> str:
-    """`Apple_0` -> `Apple`, `Apple_3` -> `Apple3`: short enough to sit in a one-step bar."""
-    m = re.fullmatch(r"(.+?)_(\d+)", oid)
-    if not m:
-        return oid
-    return m.group(1) if m.group(2) == "0" else f"{m.group(1)}{m.group(2)}"
 
 
 def segments(robot_plan: RobotPlan, failed: frozenset[tuple[int, int]] = frozenset()) -> list[Segment]:
@@ -78,7 +72,7 @@ def segments(robot_plan: RobotPlan, failed: frozenset[tuple[int, int]] = frozens
             close(t - 1)
             run_kind, run_start = ("", 0) if kind == "action" else (kind, t)
         if kind == "action" and step is not None:
-            label = f"{step.verb}({','.join(short_id(o) for o in step.objects)})"
+            label = f"{step.verb}({', '.join(step.objects)})"  # the ids the text and the map use
             out.append(
                 Segment(robot_plan.robot, t, t, "action", label, step.task, (robot_plan.robot, t) in failed)
             )
@@ -120,12 +114,14 @@ def draw_gantt(
     path: str | Path | None = None,
     before: Iterable[tuple[str, str]] = (),
     title: str | None = None,
+    words: Mapping[str, str] | None = None,
 ):
     """Draw the plan's Gantt chart and save it to `path` (png/svg/pdf); returns the figure.
 
     `before` holds ordering constraints as pairs of task names as the plan's steps name them
     (`("task1.1", "task1.2")`); a name also covers its subtree (`task1` covers `task1.2`). Use
-    `language.render.htt_orderings(htt)` to get them from an HTT.
+    `language.render.htt_orderings(htt)` to get them from an HTT. `words`: what each task name says
+    (`language.render.htt_task_words(htt)`), for a legend in words rather than task ids.
     """
     plan_obj, failed_rt = _as_plan(plan)
     failed = frozenset((r, t) for t, r in failed_rt)
@@ -138,6 +134,7 @@ def draw_gantt(
         list(before),
         title or _default_title(plan, plan_obj),
         path,
+        words,
     )
 
 
@@ -181,14 +178,18 @@ def _chart(
     before: list[tuple[str, str]],
     title: str,
     path: str | Path | None,
+    words: Mapping[str, str] | None = None,
 ):
     horizon = max(horizon, 1)
     lanes = {r: i for i, r in enumerate(robot_ids)}
     tasks = sorted({s.task for s in segs if s.task})
     colour = {t: TASK_COLOURS[k % len(TASK_COLOURS)] for k, t in enumerate(tasks)}
     width = min(40.0, max(8.0, 0.32 * horizon + 3))
-    fig, ax = plt.subplots(figsize=(width, 0.9 + 2.1 * max(1, len(robot_ids))))
     label_actions = width / horizon >= 0.25  # room for a vertical label above a one-step bar
+    longest = max((len(line) for s in segs if s.kind == "action" for line in _lines(s.label)), default=0)
+    label_in = longest * LABEL_PT * 0.62 / 72 if label_actions else 0.0
+    lane_in = max(2.1, (label_in + 0.15) / LABEL_ROOM)  # the labels fit inside their lane
+    fig, ax = plt.subplots(figsize=(width, 0.9 + lane_in * max(1, len(robot_ids))))
     for s in segs:
         _draw_segment(ax, s, lanes[s.robot], colour, label_actions)
     for r in set(robot_ids) - {s.robot for s in segs}:
@@ -212,8 +213,8 @@ def _chart(
     ax.set_xlabel("time step")
     ax.grid(axis="x", alpha=0.3)
     ax.set_title(title, fontsize=10)
-    ax.legend(handles=_legend_handles(tasks, colour, bool(before)), loc="upper left",
-              bbox_to_anchor=(1.01, 1), fontsize=8, frameon=False)  # fmt: skip
+    ax.legend(handles=_legend_handles(tasks, colour, bool(before), words or {}), loc="upper left",
+              bbox_to_anchor=(1.01, 1), fontsize=7.5, frameon=False)  # fmt: skip
     if path is not None:
         save_figure(fig, path, dpi=120, bbox_inches="tight")
         plt.close(fig)
@@ -237,13 +238,23 @@ def _draw_segment(ax, s: Segment, lane: int, colour: dict, label_actions: bool) 
         ax.plot([left, left + length], [top, bottom], color="red", lw=2, zorder=5)
         ax.plot([left, left + length], [bottom, top], color="red", lw=2, zorder=5)
     if label_actions:
-        label = s.label if len(s.label) <= 16 else s.label.replace(",", ",\n", 1)
-        ax.text(s.start, top - 0.02, label, rotation=90, ha="center", va="bottom", fontsize=6.5,
-                linespacing=0.9, zorder=7)  # fmt: skip
+        ax.text(s.start, top - 0.02, "\n".join(_lines(s.label)), rotation=90, ha="center", va="bottom",
+                fontsize=LABEL_PT, linespacing=0.9, zorder=7)  # fmt: skip
 
 
-def _legend_handles(tasks: list[str], colour: dict, with_orders: bool) -> list:
-    handles: list = [Patch(fc=colour[t], ec="black", label=t) for t in tasks]
+def _lines(label: str) -> list[str]:
+    """An action label on one line, or one object per line when it is long."""
+    if len(label) <= 18:
+        return [label]
+    head, _, rest = label.partition("(")
+    objects = rest.split(", ")
+    return [f"{head}({objects[0]}" + ("," if len(objects) > 1 else "")] + [
+        o + ("," if k < len(objects) - 2 else "") for k, o in enumerate(objects[1:])
+    ]
+
+
+def _legend_handles(tasks: list[str], colour: dict, with_orders: bool, words: Mapping[str, str]) -> list:
+    handles: list = [Patch(fc=colour[t], ec="black", label=_task_words(t, words)) for t in tasks]
     handles += [
         Patch(fc=MOVE_COLOUR, label="moving"),
         Patch(fc="white", ec="0.5", hatch="///", label="waiting"),
@@ -256,6 +267,14 @@ def _legend_handles(tasks: list[str], colour: dict, with_orders: bool) -> list:
             Line2D([], [], color="tab:red", lw=1.6, label="a before b (broken)"),
         ]
     return handles
+
+
+def _task_words(task: str, words: Mapping[str, str]) -> str:
+    """`1.1.2 put mugs in the lower rack (object 1 of 2)`, wrapped; the bare name without words."""
+    said = words.get(task)
+    if not said:
+        return task
+    return "\n".join(textwrap.wrap(f"{task.removeprefix('task')} {said}", 38))
 
 
 def _default_title(plan: Plan | Execution, plan_obj: Plan) -> str:

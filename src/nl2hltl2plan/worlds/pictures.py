@@ -16,6 +16,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.collections import PatchCollection  # noqa: E402
 from matplotlib.patches import Rectangle  # noqa: E402
 
 from nl2hltl2plan.errors import WorldError  # noqa: E402
@@ -33,11 +34,9 @@ def _base(world: World, ax=None, size: float = 7.0):
         zs = [world.xz(c)[1] for c in world.cells] + [o.position[2] for o in world.objects.values()]
         w, h = max(xs) - min(xs) + 1, max(zs) - min(zs) + 1
         fig, ax = plt.subplots(figsize=(size * min(1.6, max(0.6, w / h)) + 2.5, size))
-    for cell in world.cells:
-        x, z = world.xz(cell)
-        ax.add_patch(
-            Rectangle((x - CELL_M / 2, z - CELL_M / 2), CELL_M, CELL_M, fc="#eeeeee", ec="#cccccc", lw=0.4)
-        )
+    squares = [Rectangle((x - CELL_M / 2, z - CELL_M / 2), CELL_M, CELL_M)
+               for x, z in (world.xz(cell) for cell in world.cells)]  # fmt: skip
+    ax.add_collection(PatchCollection(squares, fc="#eeeeee", ec="#cccccc", lw=0.4))  # one artist: fast
     ax.set_aspect("equal")
     ax.set_xlabel("x (m)")
     ax.set_ylabel("z (m)")
@@ -73,35 +72,56 @@ def place_labels(
     items: list[tuple[tuple[float, float], str]],
     avoid: Iterable[tuple[float, float]] = (),
     fontsize: float = 6.5,
-) -> None:
-    """Label points without overlaps: try offsets around each point (nearest first) and keep the first
-    whose box hits no placed label; a label with no free spot goes further out on a leader line."""
+) -> list:
+    """Label points so that no two labels overlap and none covers a marker (adjustText moves them
+    apart; a label moved away from its point gets a leader line); returns the label texts."""
     if not items:
-        return
-    ax.autoscale_view()
-    ax.apply_aspect()
-    renderer = ax.figure.canvas.get_renderer()
-    from matplotlib.transforms import Bbox
+        return []
+    from adjustText import adjust_text
 
-    marks = [ax.transData.transform(p) for p in avoid]  # markers stay visible: labels avoid them too
-    placed: list = [Bbox.from_extents(x - 3, y - 3, x + 3, y + 3) for x, y in marks]
-    offsets = [(dx * r, dy * r) for r in (4, 11, 20) for dx, dy in
-               ((1, 1), (1, -1), (-1, 1), (-1, -1), (1, 0), (-1, 0), (0, 1), (0, -1))]  # fmt: skip
-    for (x, y), text in sorted(items, key=lambda it: (it[0][1], it[0][0])):
-        for dx, dy in offsets:
-            t = ax.annotate(text, (x, y), xytext=(dx, dy), textcoords="offset points", fontsize=fontsize,
-                            ha="left" if dx >= 0 else "right", va="bottom" if dy >= 0 else "top", zorder=6,
-                            bbox={"fc": "white", "ec": "none", "alpha": 0.7, "pad": 0.2})  # fmt: skip
-            box = t.get_window_extent(renderer).expanded(1.05, 1.1)
-            if not any(box.overlaps(b) for b in placed):
-                placed.append(box)
-                break
-            t.remove()
-        else:
-            t = ax.annotate(text, (x, y), xytext=(24, 24 + 8 * (len(placed) % 4)), textcoords="offset points",
-                            fontsize=fontsize, zorder=6, arrowprops={"arrowstyle": "-", "color": "0.5",
-                            "lw": 0.5})  # fmt: skip
-            placed.append(t.get_window_extent(renderer))
+    ax.autoscale_view()
+    texts = [ax.text(x, y, text, fontsize=fontsize, zorder=6, ha="center", va="center",
+                     bbox={"fc": "white", "ec": "none", "alpha": 0.9, "pad": 0.3})
+             for (x, y), text in items]  # fmt: skip
+    marks = list(avoid)
+    adjust_text(texts, x=[p[0] for p in marks], y=[p[1] for p in marks], ax=ax, expand=(1.15, 1.35),
+                force_text=(0.4, 0.6), ensure_inside_axes=True,
+                iter_lim=60)  # as good as the default's few hundred here, at half the time  # fmt: skip
+    _separate(ax, texts)
+    _leader_lines(ax, texts, [xy for xy, _ in items])
+    return texts
+
+
+def _leader_lines(ax, texts: list, points: list[tuple[float, float]]) -> None:
+    """A thin line from each point to its label where the label moved away (drawn under the label's
+    white box, so it ends at the box; plain lines, not arrows clipped to the box: fast)."""
+    to_px = ax.transData.transform
+    for t, (x, y) in zip(texts, points, strict=True):
+        tx, ty = t.get_position()
+        (px, py), (qx, qy) = to_px((x, y)), to_px((tx, ty))
+        if abs(px - qx) + abs(py - qy) > 10:
+            ax.plot([x, tx], [y, ty], color="0.45", lw=0.5, zorder=5)
+
+
+def _separate(ax, texts: list) -> None:
+    """adjustText minimises overlaps but does not promise none: move any label that still touches
+    an earlier one to the nearest free spot around where it is (the leader line stays)."""
+    renderer = ax.figure.canvas.get_renderer()
+    to_data = ax.transData.inverted()
+    placed: list = []
+    steps = [(dx * r, dy * r) for r in (6, 12, 18, 24, 32) for dx, dy in
+             ((0, 1), (0, -1), (1, 0), (-1, 0), (1, 1), (-1, 1), (1, -1), (-1, -1))]  # fmt: skip
+    for t in texts:
+        box = t.get_window_extent(renderer)
+        if any(box.overlaps(b) for b in placed):
+            x, y = ax.transData.transform(t.get_position())
+            for dx, dy in steps:
+                moved = box.translated(dx, dy)
+                if not any(moved.overlaps(b) for b in placed):
+                    t.set_position(to_data.transform((x + dx, y + dy)))
+                    box = moved
+                    break
+        placed.append(box)
 
 
 def _resolve(world: World, regions: Iterable[str] | str | None) -> list[str]:
@@ -206,8 +226,15 @@ def _numbered_events(ax, execution: Execution, events: list, colours: dict) -> l
                     va="center", fontsize=7, color="white", fontweight="bold", zorder=8,
                     bbox={"boxstyle": "circle,pad=0.25", "fc": colours[ev.robot], "ec": "black", "lw": 0.5},
                     arrowprops={"arrowstyle": "-", "color": colours[ev.robot], "lw": 0.6})  # fmt: skip
-        lines.append((f"{n:>2}. t={ev.t} robot {ev.robot}: {ev.atom}", colours[ev.robot]))
+        lines.append((f"{n:>2}. t={ev.t} robot {ev.robot}: {instance_words(ev)}", colours[ev.robot]))
     return lines
+
+
+def instance_words(ev) -> str:
+    """`put(Plate_1, DishwasherLowerRack_0)`: an action with the object ids that the text output, the
+    map and the Gantt chart all use (one name for each object)."""
+    verb = ev.atom.partition("(")[0]
+    return f"{verb}({', '.join(ev.objects)})" if ev.objects else ev.atom
 
 
 def _action_list(ax, legend, lines: list[tuple[str, tuple]]) -> None:

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from pydantic import BaseModel, ConfigDict, Field, model_validator
 
@@ -23,16 +23,38 @@ ACTION_ARITY = {
 VERBS = ("move", "wait", *ACTION_ARITY)
 
 
-class Step(BaseModel):
-    """One time step of one robot."""
+def _step_rules(schema: dict[str, Any]) -> None:
+    """What `Step._shape` checks, in JSON Schema: a move names its cell, an action its objects."""
+    rules: list[dict[str, Any]] = [
+        {"if": {"properties": {"verb": {"const": "move"}}, "required": ["verb"]},
+         "then": {"required": ["cell"], "properties": {"cell": {"type": "array"}}}}
+    ]  # fmt: skip
+    rules += [
+        {"if": {"properties": {"verb": {"const": verb}}, "required": ["verb"]},
+         "then": {"required": ["objects"], "properties": {"objects": {"minItems": n, "maxItems": n}}}}
+        for verb, n in ACTION_ARITY.items()
+    ]  # fmt: skip
+    schema["allOf"] = rules
 
-    model_config = ConfigDict(frozen=True)
+
+class Step(BaseModel):
+    """What one robot does at one time step. Time steps a robot does not list are waits."""
+
+    model_config = ConfigDict(frozen=True, json_schema_extra=_step_rules)
 
     t: int = Field(ge=1, description="1-based time step; a robot does one thing per step")
-    verb: str
-    cell: tuple[int, int] | None = None  # for "move": the neighbouring cell entered
-    objects: list[str] = []  # instance ids, e.g. ["Apple_3", "Fridge_0"] for put
-    task: str | None = None  # the leaf spec this action serves (attribution)
+    verb: str = Field(
+        description="move to a neighbouring cell, wait, or an action", json_schema_extra={"enum": list(VERBS)}
+    )
+    cell: tuple[int, int] | None = Field(
+        default=None, description="for move: the neighbouring cell entered [row, col] (0.25 m cells)"
+    )
+    objects: list[str] = Field(
+        default=[], description='object instance ids the action uses, e.g. ["Apple_3", "Fridge_0"] for put'
+    )
+    task: str | None = Field(
+        default=None, description="the leaf specification this action serves, e.g. task1.2"
+    )
 
     @model_validator(mode="after")
     def _shape(self) -> Step:
@@ -55,9 +77,11 @@ class Step(BaseModel):
 
 
 class RobotPlan(BaseModel):
-    robot: int = Field(ge=0)
-    start: tuple[int, int]
-    steps: list[Step] = []  # strictly increasing t; gaps are waits
+    """One robot's steps."""
+
+    robot: int = Field(ge=0, description="robot index (0-based)")
+    start: tuple[int, int] = Field(description="the robot's cell at t = 0 [row, col]")
+    steps: list[Step] = Field(default=[], description="strictly increasing t; missing time steps are waits")
 
     @model_validator(mode="after")
     def _increasing(self) -> RobotPlan:
@@ -76,7 +100,9 @@ class RobotPlan(BaseModel):
 
 
 class Plan(BaseModel):
-    robots: list[RobotPlan]
+    """A timed multi-robot plan: one step list per robot."""
+
+    robots: list[RobotPlan] = Field(description="one entry per robot, robot indices distinct")
 
     @model_validator(mode="after")
     def _distinct(self) -> Plan:
@@ -89,3 +115,23 @@ class Plan(BaseModel):
     def horizon(self) -> int:
         """Last time step of any robot."""
         return max((r.end for r in self.robots), default=0)
+
+
+SCHEMA_ID = "https://github.com/nl2hltl2plan/nl2hltl2plan/docs/plan.schema.json"
+
+
+def plan_json_schema() -> dict[str, Any]:
+    """The JSON Schema of a plan, generated from `Plan` (docs/plan.schema.json is this, written by
+    scripts/plan_schema.py; a test fails when the two drift apart)."""
+    schema = Plan.model_json_schema()
+    head = {
+        "$schema": "https://json-schema.org/draft/2020-12/schema",
+        "$id": SCHEMA_ID,
+        "title": "nl2hltl2plan multi-robot plan",
+        "description": "A timed multi-robot plan: one step list per robot, steps in strictly increasing "
+        'time. Written by `nl2hltl2plan plan --json` (key "plan"), result.json of `plan -o DIR` and '
+        "POST /api/plan. Generated from nl2hltl2plan.worlds.plan.Plan; see docs/plan_schema.md.",
+    }
+    schema.pop("title", None)
+    schema.pop("description", None)
+    return {**head, **schema}

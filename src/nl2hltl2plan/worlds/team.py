@@ -246,24 +246,29 @@ def _exists(path: Path) -> bool:
 
 
 def _team_file(path: Path) -> Team:
-    raw = read_json(path, "team file")
+    return team_from_json(read_json(path, "team file"), f"team file {path}")
+
+
+def team_from_json(raw: object, where: str = "team") -> Team:
+    """A team from a team file's content: a list (or `{"robots": [...]}`) of profile names and/or
+    `{"name", "skills", "mass_capacity"}` objects (the web page's uploaded team file too)."""
     if isinstance(raw, dict) and "robots" in raw:
         raw = raw["robots"]
     if not isinstance(raw, list) or not raw:
-        raise DataError(f"team file {path}: expected a non-empty list of robots (names or profiles)")
+        raise DataError(f"{where}: expected a non-empty list of robots (names or profiles)")
     if len(raw) > MAX_ROBOTS:
-        raise DataError(f"team file {path}: {len(raw)} robots; a team has at most {MAX_ROBOTS}")
+        raise DataError(f"{where}: {len(raw)} robots; a team has at most {MAX_ROBOTS}")
     out = []
     for k, entry in enumerate(raw):
         if isinstance(entry, str):
             profiles = smartllm_profiles()
             if entry not in profiles:
-                raise DataError(f"team file {path}: robot {k}: unknown profile {entry!r}")
+                raise DataError(f"{where}: robot {k}: unknown profile {entry!r}")
             out.append(profiles[entry])
         elif isinstance(entry, dict):
-            out.append(RobotProfile.from_dict(entry, f"team file {path}: robot {k}: "))
+            out.append(RobotProfile.from_dict(entry, f"{where}: robot {k}: "))
         else:
-            raise DataError(f"team file {path}: robot {k} must be a profile name or an object, got {entry!r}")
+            raise DataError(f"{where}: robot {k} must be a profile name or an object, got {entry!r}")
     return Team.of(out)
 
 
