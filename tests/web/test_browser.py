@@ -163,6 +163,9 @@ def test_every_control_changes_the_request(page, tmp_path):
         assert base[key] != expected
         (page.select_option if how == "select" else page.fill)(selector, value)
         assert sent()[key] == expected, selector
+    assert base["partial"] is False
+    page.check("#partial")
+    assert sent()["partial"] is True
     page.select_option("#teamkind", "profiles")
     page.fill("#profiles", "robot1, robot5")
     body = sent()
