@@ -417,5 +417,16 @@ def _missing(tasks: list[BaseTaskSpec], types: set[str] | None, scene: str) -> l
             if not vals:
                 out.append(f"task {t.id} ({t.text!r}): no {role} found in {scene}")
             elif not any(v in types for v in vals):
-                out.append(f"no {vals[0]} in {scene}")
+                out.append(f"no {vals[0]} in {scene}" + _listed_not_built(vals[0], scene))
     return out
+
+
+def _listed_not_built(type_: str, scene: str) -> str:
+    """Why a type the floor plan's object lists name is missing: the world built from them has none."""
+    from nl2hltl2plan.language.grounding import scene_types
+
+    try:
+        listed = type_ in scene_types(scene)
+    except Nl2Hltl2PlanError:  # not an ALFRED floor plan (tabletop, demo): nothing more to say
+        return ""
+    return f" (its object list names {type_}, but the world built from it has none)" if listed else ""
