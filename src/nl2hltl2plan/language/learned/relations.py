@@ -44,7 +44,7 @@ def before_pairs(relations: list[str]) -> list[tuple[int, int]]:
             current += 1
     pairs = []
     for steps in chains:
-        for a, b in zip(steps, steps[1:]):
+        for a, b in zip(steps, steps[1:], strict=False):
             pairs += [(x, y) for x in a for y in b]
     for y in last:
         for steps in chains:

@@ -40,15 +40,6 @@ class StructurePolicy:
     doubt: float = 0.0  # ... and neither trusted (-> unparsed) when the model is less sure than this
 
 
-@dataclass
-class StructuredReading:
-    tasks: list[BaseTaskSpec]
-    before: list[tuple[str, str]]
-    groups: list[list[str]]
-    complete: bool
-    confidence: float
-
-
 def base_form(span: str) -> str:
     """The span with a leading participle or gerund put back in the base form ("placed the mug" -> "place
     the mug"), as the grammar reads commands."""
@@ -90,7 +81,12 @@ def resolved(span: str, previous: tuple[str, BaseTaskSpec] | None) -> str:
     return span
 
 
-def combine_spans(reading: Reading, parsed: list[tuple[list[BaseTaskSpec], list[tuple[str, str]]]]):
+SpanTasks = tuple[list[BaseTaskSpec], list[tuple[str, str]]]
+
+
+def combine_spans(
+    reading: Reading, parsed: list[SpanTasks]
+) -> tuple[list[BaseTaskSpec], list[tuple[str, str]], list[list[str]]]:
     """Renumber each span's tasks in text order; every task of a span before every task of a later step."""
     tasks: list[BaseTaskSpec] = []
     before: list[tuple[str, str]] = []
@@ -108,12 +104,19 @@ def combine_spans(reading: Reading, parsed: list[tuple[list[BaseTaskSpec], list[
     return tasks, sorted(set(before)), groups
 
 
-def same_reading(a_tasks, a_before, b_tasks, b_before) -> bool:  # type: ignore[no-untyped-def]
+def same_reading(
+    a_tasks: list[BaseTaskSpec],
+    a_before: list[tuple[str, str]],
+    b_tasks: list[BaseTaskSpec],
+    b_before: list[tuple[str, str]],
+) -> bool:
     """Whether two readings give the same base tasks and the same order (the benchmark's strict match)."""
     return match(a_tasks, a_before, [t.model_dump() for t in b_tasks], b_before).ok
 
 
-def complete_and_accounted(instruction: str, tasks: list[BaseTaskSpec], before: list[tuple[str, str]]) -> bool:
+def complete_and_accounted(
+    instruction: str, tasks: list[BaseTaskSpec], before: list[tuple[str, str]]
+) -> bool:
     """Every content word of the instruction is used (check 1) and the order is acyclic."""
     try:
         return not account(instruction, tasks, before)
