@@ -155,3 +155,19 @@ def test_a_type_the_floor_plan_lists_but_the_world_lacks_is_named() -> None:
     with pytest.raises(WorldError, match=r"no DeskLamp in FloorPlan201 \(its object list names DeskLamp"):
         parse_instruction("look at the remote control under the desk lamp", {"RemoteControl", "Sofa"},
                           "FloorPlan201")
+
+
+def test_the_rule_takes_the_model_only_where_the_grammar_fails_or_the_model_is_sure() -> None:
+    from nl2hltl2plan.language.learned.structured import StructurePolicy, decide
+
+    a = BaseTaskSpec(id="A", text="", kind="place", object=["Mug"], receptacle=["SinkBasin"])
+    b = BaseTaskSpec(id="B", text="", kind="place", object=["Apple"], receptacle=["Fridge"])
+    rule = StructurePolicy(rescue=0.5, override=0.9, doubt=0.3)
+    ordered, free = ([a, b], [("A", "B")]), ([a, b], [])
+    assert decide(([a], [], False), (*ordered, 0.6), rule) == "model"  # the grammar left words unread
+    assert decide(([a], [], False), (*ordered, 0.4), rule) == "grammar"  # ... and the model is unsure
+    assert decide((*free, True), (*ordered, 0.95), rule) == "model"  # both complete, the model sure
+    assert decide((*free, True), (*ordered, 0.6), rule) == "grammar"
+    assert decide((*free, True), (*ordered, 0.2), rule) == "neither"  # neither trusted: unparsed
+    assert decide((*ordered, True), (*ordered, 0.2), rule) == "grammar"  # they agree
+    assert decide((*ordered, True), None, rule) == "grammar"  # the model's reading is incomplete

@@ -29,8 +29,8 @@ from nl2hltl2plan.language.learned.structured import (
     base_form,
     combine_spans,
     complete_and_accounted,
+    decide,
     resolved,
-    same_reading,
     with_verb,
 )
 from nl2hltl2plan.language.offline import OfflineParse
@@ -242,7 +242,7 @@ def parse_instruction(
     policy = policy or DEFAULT_POLICY
     model = model or load_model()
     scene_types = set(types) if types is not None else None
-    parse = _grammar_first(instruction, scene_types, scene, affordances, policy, model)
+    parse = grammar_first_reading(instruction, scene_types, scene, affordances, policy, model)
     if policy.structure is not None:
         structure = structure or load_structure()
         parse = _arbitrated(parse, instruction, scene_types, scene, affordances, policy, model, structure)
@@ -252,7 +252,7 @@ def parse_instruction(
     return parse.model_copy(update={"issues": issues})
 
 
-def _grammar_first(
+def grammar_first_reading(
     instruction: str,
     scene_types: set[str] | None,
     scene: str,
@@ -297,7 +297,7 @@ def _grammar_first(
     )
 
 
-def _structured(
+def structure_reading(
     instruction: str,
     scene_types: set[str] | None,
     scene: str,
@@ -316,10 +316,10 @@ def _structured(
     for span in reading.spans:
         text = with_verb(base_form(span.text), previous[0] if previous else None)
         try:
-            p = _grammar_first(text, scene_types, scene, affordances, policy, model)
+            p = grammar_first_reading(text, scene_types, scene, affordances, policy, model)
             if p.unparsed and resolved(text, previous) != text:
                 text = resolved(text, previous)
-                p = _grammar_first(text, scene_types, scene, affordances, policy, model)
+                p = grammar_first_reading(text, scene_types, scene, affordances, policy, model)
         except Nl2Hltl2PlanError:
             return None
         if p.unparsed or not p.tasks:
@@ -363,20 +363,15 @@ def _arbitrated(
     """The grammar's reading or the structure model's, by `structured.StructurePolicy`."""
     rule = policy.structure
     assert rule is not None
-    s = _structured(instruction, scene_types, scene, affordances, policy, model, structure)
-    if s is None:
-        return g
-    reading, confidence = s
-    if g.unparsed or not g.tasks:
-        return reading if confidence >= rule.rescue else g
-    if same_reading(reading.tasks, reading.before, g.tasks, g.before):
-        return g
-    if confidence >= rule.override:
-        return reading
-    if confidence < rule.doubt:
+    s = structure_reading(instruction, scene_types, scene, affordances, policy, model, structure)
+    complete = bool(g.tasks) and not g.unparsed
+    choice = decide((g.tasks, g.before, complete), (s[0].tasks, s[0].before, s[1]) if s else None, rule)
+    if choice == "model" and s is not None:
+        return s[0]
+    if choice == "neither" and s is not None:
         why = (
             f"the grammar and the structure model read this differently ({len(g.tasks)} vs "
-            f"{len(reading.tasks)} tasks), and the model is only {confidence:.0%} sure"
+            f"{len(s[0].tasks)} tasks), and the model is only {s[1]:.0%} sure"
         )
         return g.model_copy(update={"tasks": [], "before": [], "groups": [], "unparsed": [why]})
     return g

@@ -30,12 +30,12 @@ from nl2hltl2plan.language.learned.compose import HELDOUT_STYLE, TRAIN_STYLE, sy
 from nl2hltl2plan.language.learned.inference import (
     DEFAULT_POLICY,
     LearnedParse,
-    _grammar_first,
-    _structured,
+    grammar_first_reading,
     load_model,
+    structure_reading,
 )
 from nl2hltl2plan.language.learned.structure import load_structure
-from nl2hltl2plan.language.learned.structured import StructurePolicy, same_reading
+from nl2hltl2plan.language.learned.structured import StructurePolicy, decide
 from nl2hltl2plan.language.scoring import match
 from nl2hltl2plan.language.translate import apply_choices, top_candidates
 
@@ -83,17 +83,11 @@ def _ok(parse: LearnedParse, row: dict[str, Any]) -> bool:
 
 
 def choose(g: LearnedParse, s: tuple[LearnedParse, float] | None, rule: StructurePolicy | None) -> str:
-    """Which reading `rule` takes: "g" (grammar-first), "s" (structure model) or "none" (unparsed)."""
-    if rule is None or s is None:
-        return "g"
-    reading, conf = s
-    if g.unparsed or not g.tasks:
-        return "s" if conf >= rule.rescue else "g"
-    if same_reading(reading.tasks, reading.before, g.tasks, g.before):
-        return "g"
-    if conf >= rule.override:
-        return "s"
-    return "none" if conf < rule.doubt else "g"
+    """Which reading `rule` takes (`structured.decide`); None: the grammar-first reading alone."""
+    if rule is None:
+        return "grammar"
+    complete = bool(g.tasks) and not g.unparsed
+    return decide((g.tasks, g.before, complete), (s[0].tasks, s[0].before, s[1]) if s else None, rule)
 
 
 def score_set(rows: list[dict[str, Any]]) -> dict[str, dict[Any, list[int]]]:
@@ -103,12 +97,12 @@ def score_set(rows: list[dict[str, Any]]) -> dict[str, dict[Any, list[int]]]:
     for row in rows:
         types = scene_types(row["scene"])
         try:
-            g = _grammar_first(row["instruction"], types, row["scene"], None, DEFAULT_POLICY, model)
+            g = grammar_first_reading(row["instruction"], types, row["scene"], None, DEFAULT_POLICY, model)
         except Nl2Hltl2PlanError:  # a refusal (e.g. a contradictory order): a failure, whatever the model
             g = LearnedParse(instruction=row["instruction"], unparsed=["refused"])
-        s = _structured(row["instruction"], types, row["scene"], None, DEFAULT_POLICY, model, structure)
-        right = {"g": _ok(g.model_copy(deep=True), row), "none": False}
-        right["s"] = s is not None and _ok(s[0].model_copy(deep=True), row)
+        s = structure_reading(row["instruction"], types, row["scene"], None, DEFAULT_POLICY, model, structure)
+        right = {"grammar": _ok(g.model_copy(deep=True), row), "neither": False}
+        right["model"] = s is not None and _ok(s[0].model_copy(deep=True), row)
         for name, rule in CANDIDATES.items():
             ok = right[choose(g, s, rule)]
             for key in (row["n_base"], "all"):

@@ -1,11 +1,12 @@
 """The structure model's reading of a whole instruction, and how it is weighed against the grammar's.
 
-`read_structured`: the structure model (`structure.py`) cuts the instruction into task spans with their
-relations; each span is read alone by the grammar + slot model (one or more base tasks: "put the plates
-and mugs in the rack" is a group), and the spans' relations give the `before` pairs between them
-(`relations.before_pairs`). A span that does not read completely makes the whole reading incomplete.
+`inference.structure_reading`: the structure model (`structure.py`) cuts the instruction into task spans
+with their relations; each span is read alone by the grammar + slot model (one or more base tasks: "put
+the plates and mugs in the rack" is a group; helpers here: `base_form`, `with_verb`, `resolved`), and the
+spans' relations give the `before` pairs between them (`combine_spans`, `relations.before_pairs`). A span
+that does not read completely makes the whole reading incomplete.
 
-`arbitrate` (the rule chosen on the validation sets, docs/learned.md):
+`decide` (the rule chosen on the validation sets, docs/learned.md):
 - the grammar's reading is complete and the two agree -> the grammar's;
 - the grammar's reading is incomplete (it lists unread words) and the structure model's is complete,
   passes the word accounting (check 1) and is confident -> the structure model's;
@@ -38,6 +39,26 @@ class StructurePolicy:
     rescue: float = 0.5  # the grammar could not read everything: the model's reading if this sure
     override: float = 0.9  # both complete and different: the model's reading if this sure
     doubt: float = 0.0  # ... and neither trusted (-> unparsed) when the model is less sure than this
+
+
+def decide(
+    grammar: tuple[list[BaseTaskSpec], list[tuple[str, str]], bool],
+    model: tuple[list[BaseTaskSpec], list[tuple[str, str]], float] | None,
+    rule: StructurePolicy,
+) -> str:
+    """Which reading to take: "grammar", "model" or "neither" (-> unparsed). `grammar`: its tasks, before
+    pairs and whether it is complete; `model`: the structure model's complete reading and its confidence
+    (None: incomplete)."""
+    if model is None:
+        return "grammar"
+    tasks, before, confidence = model
+    if not grammar[2]:
+        return "model" if confidence >= rule.rescue else "grammar"
+    if same_reading(tasks, before, grammar[0], grammar[1]):
+        return "grammar"
+    if confidence >= rule.override:
+        return "model"
+    return "neither" if confidence < rule.doubt else "grammar"
 
 
 def base_form(span: str) -> str:
