@@ -1,7 +1,9 @@
-"""The default `offline` backend: the grammar for structure, the slot model where the grammar fails.
+"""The default `offline` backend: the grammar and the structure model for structure, the slot model for
+slots where the grammar fails.
 
 The offline grammar parser segments the instruction into clauses and reads the temporal relations and
-groups. A clause it cannot read is read by the slot model and re-parsed (`rescue`). For each clause the
+groups; the learned structure model (`structure.py`) reads them too, and its reading is taken where the
+grammar's is incomplete or where they disagree and the model is sure (`structured.decide`). A clause it cannot read is read by the slot model and re-parsed (`rescue`). For each clause the
 slot model predicts the task kind and ranks the scene's types for the object, container, receptacle and
 lamp: it orders a word's several scene types ("table") and fills a slot the grammar found nothing for
 in the scene; with the default `Policy` (chosen on the text-faithful validation, docs/learned.md) it
