@@ -1,8 +1,11 @@
-"""The default `offline` backend: the grammar for structure, the slot model where the grammar fails.
+"""The default `offline` backend: the grammar and the structure model for structure, the slot model for
+slots where the grammar fails.
 
 The offline grammar parser segments the instruction into clauses and reads the temporal relations and
-groups. A clause it cannot read is read by the slot model and re-parsed (`rescue`). For each clause the
-slot model predicts the task kind and ranks the scene's types for the object, container, receptacle and
+groups; the learned structure model (`structure.py`) reads them too, and its reading is taken where the
+grammar's is incomplete or where they disagree and the model is sure (`structured.decide`). A clause
+the grammar cannot read is read by the slot model and re-parsed (`rescue`). For each clause the slot
+model predicts the task kind and ranks the scene's types for the object, container, receptacle and
 lamp: it orders a word's several scene types ("table") and fills a slot the grammar found nothing for
 in the scene; with the default `Policy` (chosen on the text-faithful validation, docs/learned.md) it
 never replaces a kind, type or `sliced` the grammar read. A slot whose best two scene types are close is
@@ -17,12 +20,22 @@ from pathlib import Path
 
 from pydantic import Field
 
-from nl2hltl2plan.errors import WorldError
+from nl2hltl2plan.errors import Nl2Hltl2PlanError, WorldError
 from nl2hltl2plan.language.accounting import account
 from nl2hltl2plan.language.grounding import AffordanceLookup, find_mentions
 from nl2hltl2plan.language.learned.model import SlotModel, SlotPrediction
 from nl2hltl2plan.language.learned.ranker import TypeRanker
 from nl2hltl2plan.language.learned.rescue import rewrite
+from nl2hltl2plan.language.learned.structure import StructureModel, load_structure
+from nl2hltl2plan.language.learned.structured import (
+    StructurePolicy,
+    base_form,
+    combine_spans,
+    complete_and_accounted,
+    decide,
+    resolved,
+    with_verb,
+)
 from nl2hltl2plan.language.offline import OfflineParse
 from nl2hltl2plan.language.offline import parse_instruction as grammar_parse
 from nl2hltl2plan.language.result import Ambiguity
@@ -48,6 +61,8 @@ class Policy:
     # at least this (chosen on the validation sets, results/language_trust/report.md); otherwise the
     # clause's task is dropped and the clause goes to `unparsed`
     fill: float = 0.3
+    # the structure model's reading against the grammar's (`structured.py`); None: the grammar's alone
+    structure: StructurePolicy | None = StructurePolicy()
 
 
 DEFAULT_POLICY = Policy()  # what the `offline` backend uses
@@ -221,6 +236,7 @@ def parse_instruction(
     *,
     policy: Policy | None = None,
     model: SlotModel | None = None,
+    structure: StructureModel | None = None,
 ) -> LearnedParse:
     """Parse one instruction (the offline parser's contract, plus `ambiguities`).
 
@@ -229,6 +245,25 @@ def parse_instruction(
     policy = policy or DEFAULT_POLICY
     model = model or load_model()
     scene_types = set(types) if types is not None else None
+    parse = grammar_first_reading(instruction, scene_types, scene, affordances, policy, model)
+    if policy.structure is not None:
+        structure = structure or load_structure()
+        parse = _arbitrated(parse, instruction, scene_types, scene, affordances, policy, model, structure)
+    issues = _missing(parse.tasks, scene_types, scene)
+    if strict and issues:
+        raise WorldError(issues[0])
+    return parse.model_copy(update={"issues": issues})
+
+
+def grammar_first_reading(
+    instruction: str,
+    scene_types: set[str] | None,
+    scene: str,
+    affordances: AffordanceLookup | None,
+    policy: Policy,
+    model: SlotModel,
+) -> LearnedParse:
+    """The grammar's structure, its clauses' slots filled and ordered by the slot model."""
     g = grammar_parse(instruction, scene_types, scene, strict=False, affordances=affordances)
     if policy.rescue and g.unparsed:
         g = _rescued(g, instruction, model, scene_types, scene, affordances, policy)
@@ -254,9 +289,6 @@ def parse_instruction(
         tasks, ambiguities = [], []  # the model would invent a task ("hello there"): keep what is unparsed
     elif whole and tasks:
         unparsed = []
-    issues = _missing(tasks, scene_types, scene)
-    if strict and issues:
-        raise WorldError(issues[0])
     return LearnedParse(
         instruction=instruction,
         tasks=tasks,
@@ -264,9 +296,88 @@ def parse_instruction(
         groups=[[t for t in grp if t not in guessed] for grp in g.groups],
         group_texts=g.group_texts,
         unparsed=unparsed,
-        issues=issues,
         ambiguities=ambiguities,
     )
+
+
+def structure_reading(
+    instruction: str,
+    scene_types: set[str] | None,
+    scene: str,
+    affordances: AffordanceLookup | None,
+    policy: Policy,
+    model: SlotModel,
+    structure: StructureModel,
+) -> tuple[LearnedParse, float] | None:
+    """The structure model's spans, each read by the grammar + slot model; None when a span does not
+    read completely or the whole does not pass the word accounting."""
+    reading = structure.read(instruction)
+    if not reading.spans:
+        return None
+    parsed, ambiguities = [], []
+    previous: tuple[str, BaseTaskSpec] | None = None
+    for span in reading.spans:
+        text = with_verb(base_form(span.text), previous[0] if previous else None)
+        try:
+            p = grammar_first_reading(text, scene_types, scene, affordances, policy, model)
+            if p.unparsed and resolved(text, previous) != text:
+                text = resolved(text, previous)
+                p = grammar_first_reading(text, scene_types, scene, affordances, policy, model)
+        except Nl2Hltl2PlanError:
+            return None
+        if p.unparsed or not p.tasks:
+            return None
+        previous = (text, p.tasks[-1])
+        parsed.append((p.tasks, p.before))
+        ambiguities.append(p.ambiguities)
+    tasks, before, groups = combine_spans(reading, parsed)
+    if not complete_and_accounted(instruction, tasks, before):
+        return None
+    renamed = _renamed_ambiguities(ambiguities, parsed, tasks)
+    parse = LearnedParse(
+        instruction=instruction, tasks=tasks, before=before, groups=groups, ambiguities=renamed
+    )
+    return parse, reading.confidence
+
+
+def _renamed_ambiguities(
+    per_span: list[list[Ambiguity]],
+    parsed: list[tuple[list[BaseTaskSpec], list[tuple[str, str]]]],
+    tasks: list[BaseTaskSpec],
+) -> list[Ambiguity]:
+    out, offset = [], 0
+    for ambs, (span_tasks, _) in zip(per_span, parsed, strict=True):
+        new = {t.id: tasks[offset + i].id for i, t in enumerate(span_tasks)}
+        out += [a.model_copy(update={"task": new[a.task]}) for a in ambs if a.task in new]
+        offset += len(span_tasks)
+    return out
+
+
+def _arbitrated(
+    g: LearnedParse,
+    instruction: str,
+    scene_types: set[str] | None,
+    scene: str,
+    affordances: AffordanceLookup | None,
+    policy: Policy,
+    model: SlotModel,
+    structure: StructureModel,
+) -> LearnedParse:
+    """The grammar's reading or the structure model's, by `structured.StructurePolicy`."""
+    rule = policy.structure
+    assert rule is not None
+    s = structure_reading(instruction, scene_types, scene, affordances, policy, model, structure)
+    complete = bool(g.tasks) and not g.unparsed
+    choice = decide((g.tasks, g.before, complete), (s[0].tasks, s[0].before, s[1]) if s else None, rule)
+    if choice == "model" and s is not None:
+        return s[0]
+    if choice == "neither" and s is not None:
+        why = (
+            f"the grammar and the structure model read this differently ({len(g.tasks)} vs "
+            f"{len(s[0].tasks)} tasks), and the model is only {s[1]:.0%} sure"
+        )
+        return g.model_copy(update={"tasks": [], "before": [], "groups": [], "unparsed": [why]})
+    return g
 
 
 def _rescued(
@@ -304,5 +415,16 @@ def _missing(tasks: list[BaseTaskSpec], types: set[str] | None, scene: str) -> l
             if not vals:
                 out.append(f"task {t.id} ({t.text!r}): no {role} found in {scene}")
             elif not any(v in types for v in vals):
-                out.append(f"no {vals[0]} in {scene}")
+                out.append(f"no {vals[0]} in {scene}" + _listed_not_built(vals[0], scene))
     return out
+
+
+def _listed_not_built(type_: str, scene: str) -> str:
+    """Why a type the floor plan's object lists name is missing: the world built from them has none."""
+    from nl2hltl2plan.language.grounding import scene_types
+
+    try:
+        listed = type_ in scene_types(scene)
+    except Nl2Hltl2PlanError:  # not an ALFRED floor plan (tabletop, demo): nothing more to say
+        return ""
+    return f" (its object list names {type_}, but the world built from it has none)" if listed else ""

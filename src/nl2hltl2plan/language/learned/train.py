@@ -20,13 +20,16 @@ from nl2hltl2plan.language.learned.ranker import RankCase, TypeRanker
 from nl2hltl2plan.worlds.tasks import SLOTS
 
 
-def text_faithful_train() -> list[Example]:
-    """The train annotations whose text-faithful label is clear, labelled as the text says
-    (`faithful.text_task`, `faithful.training_example`)."""
-    examples = load_examples()["train"]
+def text_faithful_items(split: str) -> list[FaithfulExample]:
+    """The split's annotations whose text-faithful label is clear (`faithful.text_task`)."""
+    examples = load_examples()[split]
     plans = {e.floor_plan for e in examples}
-    items = faithful_examples(examples, {p: scene_types(p) for p in plans})
-    return [training_example(it) for it in items]
+    return faithful_examples(examples, {p: scene_types(p) for p in plans})
+
+
+def text_faithful_train() -> list[Example]:
+    """The train annotations labelled as the text says (`faithful.training_example`)."""
+    return [training_example(it) for it in text_faithful_items("train")]
 
 
 def train(seed: int = 0, labels: str = "text") -> SlotModel:

@@ -1,0 +1,286 @@
+"""Synthetic multi-task instructions for the structure model, with token-level ground truth.
+
+Each instruction is a chain of task clauses (ALFRED annotations, re-labelled text-faithfully) joined by
+connectives. Every clause is a *span* with a relation label (`RELATIONS`) that says how it is ordered
+against the spans before it, read by `relations.before_pairs`. Two connective families exist:
+`TRAIN_STYLE` (what the model is trained on) and `HELDOUT_STYLE` (never trained on, for validation), so
+that a held-out set measures connectives the model never saw. Styles on top: contractions, polite and
+casual frames, lower case, no final stop, typos, verbs in participle / gerund form ("once you've put
+...", "after heating ...").
+"""
+
+from __future__ import annotations
+
+import random
+import re
+from dataclasses import dataclass
+
+from nl2hltl2plan.language.learned.faithful import FaithfulExample
+from nl2hltl2plan.language.tasks import BaseTaskSpec, task_letter
+
+# Relation of a span to what came before it (text order): START the first; SEQ after the current step;
+# PAR in the current step (no order with it); FREE no order with anything (a chain of its own); PRE a
+# new step before the current one ("before you X, Y": Y is PRE); LAST ("finally Y") after every earlier
+# span not allowed in any order or at any time (benchmark/ANNOTATION_GUIDE.md).
+RELATIONS = ("START", "SEQ", "PAR", "FREE", "PRE", "LAST")
+
+VERB_PARTICIPLE = {
+    "put": "put", "place": "placed", "pick": "picked", "take": "taken", "grab": "grabbed",
+    "move": "moved", "carry": "carried", "bring": "brought", "set": "set", "heat": "heated",
+    "cool": "cooled", "chill": "chilled", "wash": "washed", "rinse": "rinsed", "clean": "cleaned",
+    "slice": "sliced", "cut": "cut", "turn": "turned", "examine": "examined", "look": "looked",
+    "get": "got", "drop": "dropped", "throw": "thrown", "microwave": "microwaved", "warm": "warmed",
+    "cook": "cooked", "hold": "held", "retrieve": "retrieved", "remove": "removed", "open": "opened",
+}
+VERB_GERUND = {
+    "put": "putting", "place": "placing", "pick": "picking", "take": "taking", "grab": "grabbing",
+    "move": "moving", "carry": "carrying", "bring": "bringing", "set": "setting", "heat": "heating",
+    "cool": "cooling", "chill": "chilling", "wash": "washing", "rinse": "rinsing", "clean": "cleaning",
+    "slice": "slicing", "cut": "cutting", "turn": "turning", "examine": "examining", "look": "looking",
+    "get": "getting", "drop": "dropping", "throw": "throwing", "microwave": "microwaving",
+    "warm": "warming", "cook": "cooking", "hold": "holding", "retrieve": "retrieving",
+    "remove": "removing", "open": "opening",
+}
+
+
+@dataclass(frozen=True)
+class Connectives:
+    """One style family: openers of the first span, joiners of a later span by relation (`{x}` = the
+    span, `{xp}` its participle form, `{xg}` its gerund form), whole-instruction endings that force one
+    relation on every later span, and fixed two-span templates (spans in text order, their relations)."""
+
+    openers: tuple[str, ...]
+    joiners: dict[str, tuple[str, ...]]
+    endings: dict[str, tuple[str, ...]]
+    pairs: tuple[tuple[str, tuple[str, str]], ...]
+
+
+TRAIN_STYLE = Connectives(
+    openers=("{x}", "{x}", "{x}", "First {x}", "First, {x}", "Start by {xg}", "Please {x}",
+             "Could you {x}", "Can you {x}", "I'd like you to {x}", "Hey robot, {x}", "To begin, {x}",
+             "Go ahead and {x}", "I need you to {x}"),
+    joiners={
+        "SEQ": (", then {x}", ". Then {x}", " and then {x}", ". After that, {x}", ", after that {x}",
+                ", and after that {x}", ". Once that's done, {x}", ". Once you've done that, {x}",
+                ". Next, {x}", ". Afterwards, {x}", ". When you're done with that, {x}",
+                ". Once you're done with that, {x}", ". After you're done, {x}", ". Then, {x}",
+                ". After this, {x}", " and afterwards {x}",
+                ". Following that, {x}", ". Once finished, {x}", ", and once that is done, {x}",
+                ". Subsequently, {x}", ". Only then {x}", ", followed by {xg}",
+                ". When that's finished, {x}", ", then go on to {x}", ". When done, {x}",
+                ". After doing that, {x}", ". Once it's done, {x}", "; after that {x}", ", and then {x}",
+                ". And then {x}", ". Once that is finished, {x}", "? Then {x}", "? After that, {x}",
+                "? And then {x}"),
+        "PAR": (" and {x}", ", and {x}", ". Also {x}", ". Also, {x}", ", and also {x}", ". And {x}",
+                ". In addition, {x}", ". Plus, {x}", ", as well as {xg}", ". Additionally, {x}",
+                "; and {x}", ", also {x}", "? Also {x}", "? And {x}"),
+        "FREE": (". At any time, {x}", ". Whenever you like, {x}", ". Meanwhile, {x}",
+                 ". At some point, {x}", ". Independently, {x}", ". Whenever you want, {x}",
+                 ". Simultaneously, {x}", ". At the same time, {x}", ". In parallel, {x}"),
+        "LAST": (". Finally, {x}", ", and finally {x}", ". Lastly, {x}", ". In the end, {x}",
+                 ", and lastly {x}", ". Finally {x}"),
+        "PRE": (". Before that, {x}", ", but before that {x}", ", but first {x}", ". But first, {x}",
+                ". Prior to that, {x}", ". Before doing so, {x}"),
+    },
+    endings={
+        "SEQ": (", in that order.", " in that order.", ", one after the other."),
+        "PAR": (" in any order.", ", in any order.", ", in whatever order you like.",
+                ". The order does not matter.", ", order doesn't matter.", ". Any order is fine."),
+    },
+    pairs=(
+        ("Once you've {0p}, {1}.", ("START", "SEQ")),
+        ("After you've {0p}, {1}.", ("START", "SEQ")),
+        ("After you're done {0g}, {1}.", ("START", "SEQ")),
+        ("Before you {0}, {1}.", ("START", "PRE")),
+        ("Before {0g}, {1}.", ("START", "PRE")),
+        ("{0} before you {1}.", ("START", "SEQ")),
+        ("{0} after you {1}.", ("START", "PRE")),
+        ("{0} after {1g}.", ("START", "PRE")),
+        ("{0} once you've {1p}.", ("START", "PRE")),
+        ("After {0g}, {1}.", ("START", "SEQ")),
+        ("When you have {0p}, {1}.", ("START", "SEQ")),
+        ("Do not {0} until you {1}.", ("START", "PRE")),
+        ("{0}, but only after you {1}.", ("START", "PRE")),
+        ("As soon as you've {0p}, {1}.", ("START", "SEQ")),
+        ("{0} after you're done {1g}.", ("START", "PRE")),
+        ("{0} once you're done {1g}.", ("START", "PRE")),
+        ("{0} after you've {1p}.", ("START", "PRE")),
+        ("{0} when you have {1p}.", ("START", "PRE")),
+        ("Once you're done {0g}, {1}.", ("START", "SEQ")),
+        ("After you're finished {0g}, {1}.", ("START", "SEQ")),
+    ),
+)
+
+HELDOUT_STYLE = Connectives(
+    openers=("{x}", "Kindly {x}", "Would you {x}", "Begin by {xg}", "Your first job: {x}",
+             "Alright, {x}"),
+    joiners={
+        "SEQ": (". Having done that, {x}", "; then {x}", ". After you finish, {x}",
+                ". With that done, {x}", ", and when finished {x}", ". After which, {x}"),
+        "PAR": ("; also {x}", ". On top of that, {x}", ", plus {x}"),
+        "FREE": (". Whenever convenient, {x}", ". At whatever point suits you, {x}"),
+        "LAST": (". To finish, {x}", ". And to wrap up, {x}"),
+        "PRE": (". Ahead of that, {x}", ", though first {x}"),
+    },
+    endings={
+        "SEQ": (", strictly in this order.", ", in this sequence."),
+        "PAR": (", the order is up to you.", " in no particular order."),
+    },
+    pairs=(
+        ("Once you're through {0g}, {1}.", ("START", "SEQ")),
+        ("Prior to {0g}, {1}.", ("START", "PRE")),
+        ("{0} as soon as you've {1p}.", ("START", "PRE")),
+        ("Only after you've {0p} should you {1}.", ("START", "SEQ")),
+    ),
+)
+
+
+def _verb_form(clause: str, table: dict[str, str]) -> str | None:
+    head, _, rest = clause.partition(" ")
+    form = table.get(head.lower())
+    return f"{form} {rest}".strip() if form else None
+
+
+def _typo(word: str, rng: random.Random) -> str:
+    if len(word) < 5 or not word.isalpha():
+        return word
+    i = rng.randrange(1, len(word) - 1)
+    op = rng.randrange(3)
+    if op == 0:
+        return word[:i] + word[i + 1 :]  # a letter dropped
+    if op == 1:
+        return word[:i] + word[i + 1] + word[i] + word[i + 2 :]  # two letters swapped
+    return word[:i] + word[i] + word[i:]  # a letter doubled
+
+
+_CONTRACT = ((r"\bdo not\b", "don't"), (r"\byou have\b", "you've"), (r"\byou are\b", "you're"),
+             (r"\bit is\b", "it's"), (r"\bthat is\b", "that's"))
+
+
+def styled_clause(text: str, rng: random.Random) -> str:
+    """An annotation as a clause: no final stop, lower-case start, sometimes a typo or a contraction."""
+    t = re.sub(r"^(to|you|please)\s+", "", text.strip().rstrip(".!").strip(), flags=re.I)
+    t = t[:1].lower() + t[1:]
+    if rng.random() < 0.15:
+        words = t.split(" ")
+        j = rng.randrange(len(words))
+        words[j] = _typo(words[j], rng)
+        t = " ".join(words)
+    for pat, rep in _CONTRACT:
+        if rng.random() < 0.5:
+            t = re.sub(pat, rep, t)
+    return t
+
+
+@dataclass
+class Synth:
+    """One synthetic instruction: its text, the spans' character ranges and relations, the ground truth."""
+
+    text: str
+    spans: list[tuple[int, int]]
+    relations: list[str]
+    tasks: list[BaseTaskSpec]
+    before: list[tuple[str, str]]
+    scene: str
+
+
+class _Builder:
+    def __init__(self) -> None:
+        self.text = ""
+        self.spans: list[tuple[int, int]] = []
+
+    def add(self, piece: str, clauses: dict[str, str]) -> None:
+        """Append a piece with `{x}`-style slots filled from `clauses` (key -> clause), recording spans."""
+        for part in re.split(r"(\{[^}]+\})", piece):
+            if part.startswith("{") and part.endswith("}"):
+                start = len(self.text)
+                self.text += clauses[part[1:-1]]
+                self.spans.append((start, len(self.text)))
+            else:
+                self.text += part
+
+
+def _forms(clause: str) -> dict[str, str] | None:
+    p, g = _verb_form(clause, VERB_PARTICIPLE), _verb_form(clause, VERB_GERUND)
+    return {"": clause, "p": p, "g": g} if p and g else None
+
+
+ELIDABLE = frozenset({"put", "place", "move", "set", "bring", "take", "carry", "drop", "throw"})
+
+
+def _same_verb(a: str, b: str) -> bool:
+    verb = a.split(" ", 1)[0].lower()
+    return verb in ELIDABLE and verb == b.split(" ", 1)[0].lower() and " " in b
+
+
+def _chain(style: Connectives, clauses: list[str], rng: random.Random) -> tuple[str, list, list[str]] | None:
+    """Spans joined one by one: an opener, then a joiner per later span, sometimes a forcing ending."""
+    forms = [_forms(c) or {"": c} for c in clauses]
+    ending_rel = rng.choice([None, None, None, "SEQ", "PAR"]) if len(clauses) > 1 else None
+    b = _Builder()
+    opener = rng.choice([o for o in style.openers if "{xg}" not in o or "g" in forms[0]])
+    b.add(opener.replace("{x", "{0"), {"0" + k: v for k, v in forms[0].items()})
+    rels = ["START"]
+    for i in range(1, len(clauses)):
+        last = i == len(clauses) - 1 and i > 1 and rng.random() < 0.4
+        rel = ending_rel or ("LAST" if last else rng.choice(["SEQ", "SEQ", "SEQ", "PAR", "FREE", "PRE"]))
+        pool = [j for j in style.joiners[rel] if "{xg}" not in j or "g" in forms[i]]
+        if ending_rel:  # "A, B and C in any order" / "..., in that order": plain joiners only
+            pool = [", {x}", " and {x}", ", and {x}", ", then {x}" if rel == "SEQ" else ", {x}"]
+        clause = forms[i]
+        if pool[0] == ", {x}" and _same_verb(clauses[i - 1], clauses[i]) and rng.random() < 0.6:
+            clause = {"": clauses[i].split(" ", 1)[1]}  # "put X in Y and Z in W": the verb left out
+        b.add(rng.choice(pool).replace("{x", "{" + str(i)), {str(i) + k: v for k, v in clause.items()})
+        rels.append(rel)
+    b.add(rng.choice(style.endings[ending_rel]) if ending_rel else rng.choice([".", ".", "", "!"]), {})
+    return b.text, b.spans, rels
+
+
+def _pair(style: Connectives, clauses: list[str], rng: random.Random) -> tuple[str, list, list[str]] | None:
+    template, rels = rng.choice(style.pairs)
+    forms = [_forms(c) for c in clauses]
+    if any(f is None for f in forms):
+        return None
+    values = {str(i) + k: v for i, f in enumerate(forms) for k, v in (f or {}).items()}
+    b = _Builder()
+    b.add(template, values)
+    return b.text, b.spans, list(rels)
+
+
+def _finish(text: str, rng: random.Random) -> str:
+    """Whole-instruction styles: a capital or not, a polite ending, all lower case."""
+    text = text[:1].upper() + text[1:]
+    if rng.random() < 0.25:
+        text = text.lower()
+    if rng.random() < 0.1:
+        text = text.rstrip(".!") + rng.choice([", thanks!", ". Thank you.", " please.", ", cheers"])
+    return text
+
+
+def synthesise(items: list[FaithfulExample], n: int, style: Connectives, seed: int = 0) -> list[Synth]:
+    """`n` instructions of 1-5 spans (one floor plan each, different trials), deterministic for a seed."""
+    from nl2hltl2plan.language.learned.relations import before_pairs
+
+    rng = random.Random(seed)
+    by_plan: dict[str, list[FaithfulExample]] = {}
+    for it in items:
+        by_plan.setdefault(it.example.floor_plan, []).append(it)
+    plans = sorted(by_plan)
+    out: list[Synth] = []
+    while len(out) < n:
+        k = rng.choice([1, 2, 2, 3, 3, 4, 5])
+        pool = by_plan[rng.choice(plans)]
+        chosen = rng.sample(pool, min(k, len(pool)))
+        if len({c.example.trial for c in chosen}) < len(chosen):
+            continue
+        clauses = [styled_clause(c.text, rng) for c in chosen]
+        made = _pair(style, clauses, rng) if k == 2 and rng.random() < 0.5 else _chain(style, clauses, rng)
+        if made is None:
+            continue
+        text, spans, rels = made
+        lowered = _finish(text, rng)
+        ids = [task_letter(i) for i in range(len(chosen))]
+        tasks = [c.task.model_copy(update={"id": i, "text": ""}) for c, i in zip(chosen, ids, strict=True)]
+        before = [(ids[a], ids[b]) for a, b in before_pairs(rels)]
+        out.append(Synth(lowered, spans, rels, tasks, before, chosen[0].example.floor_plan))
+    return out

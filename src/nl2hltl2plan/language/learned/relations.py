@@ -1,0 +1,54 @@
+"""Span relations (`compose.RELATIONS`) -> `before` pairs between spans, by text position.
+
+The spans are read left to right into chains of steps. START opens the first chain; SEQ opens a new
+step after the current one; PAR joins the current step (no order inside a step); PRE opens a new step
+just before the current one ("before you X, Y": Y first); FREE opens a chain of its own (no order with
+anything so far). Every span of a step comes before every span of a later step of its chain. LAST
+("finally Y", the benchmark's annotation guide) comes after every earlier span that is not allowed in any
+order or at any time (a step of one span, not FREE), only after the last such span of each chain.
+
+>>> before_pairs(["START", "SEQ", "PAR", "SEQ"])
+[(0, 1), (0, 2), (1, 3), (2, 3)]
+>>> before_pairs(["START", "PRE"])
+[(1, 0)]
+>>> before_pairs(["START", "PAR", "LAST"])
+[]
+>>> before_pairs(["START", "SEQ", "PAR", "LAST"])
+[(0, 1), (0, 2), (0, 3)]
+"""
+
+from __future__ import annotations
+
+
+def before_pairs(relations: list[str]) -> list[tuple[int, int]]:
+    """The transitively reduced `before` pairs (span indices) that the relations state."""
+    chains: list[list[list[int]]] = []
+    current = 0  # the current step's index in the last chain
+    free: set[int] = set()
+    last: list[int] = []
+    for i, rel in enumerate(relations):
+        if rel == "FREE":
+            free.add(i)
+        if rel == "LAST" and chains:
+            last.append(i)
+        elif not chains or rel in ("START", "FREE", "LAST"):
+            chains.append([[i]])
+            current = 0
+        elif rel == "PAR":
+            chains[-1][current].append(i)
+        elif rel == "PRE":
+            chains[-1].insert(current, [i])
+            current += 1  # the step read so far stays the current one
+        else:  # SEQ
+            chains[-1].insert(current + 1, [i])
+            current += 1
+    pairs = []
+    for steps in chains:
+        for a, b in zip(steps, steps[1:], strict=False):
+            pairs += [(x, y) for x in a for y in b]
+    for y in last:
+        for steps in chains:
+            firm = [k for k, s in enumerate(steps) if len(s) == 1 and s[0] < y and s[0] not in free]
+            if firm:  # the chain's last firm span: the earlier ones are before it already
+                pairs.append((steps[max(firm)][0], y))
+    return sorted(set(pairs))

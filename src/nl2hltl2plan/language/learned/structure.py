@@ -1,0 +1,224 @@
+"""The structure model: a linear-chain CRF that splits an instruction into task spans and labels each
+span's temporal relation to the spans before it (`compose.RELATIONS`).
+
+Tags: `B-<REL>` starts a span, `I` continues it, `O` is a connective or filler word ("then", "once
+you've", "in any order"). Features are the word, its neighbours (3 each side), the first words of its
+sentence ("before you ..."), and the instruction's last words ("... in that order"), so that a
+connective far from the span's first word still labels it. Training uses CRFsuite (`python-crfsuite`,
+the `train` extra); the artifact holds only numpy arrays (feature strings, a weight matrix, the
+transition matrix) and inference is numpy Viterbi / forward-backward, so the core install reads it.
+
+    >>> m = StructureModel.load()
+    >>> [(s.text, s.relation) for s in m.read("Put the mug in the sink, then put the apple in the fridge.")]
+    [('Put the mug in the sink', 'START'), ('put the apple in the fridge', 'SEQ')]
+"""
+
+from __future__ import annotations
+
+import io
+import re
+import zipfile
+from collections.abc import Iterator
+from dataclasses import dataclass
+from functools import lru_cache
+from importlib import resources
+from pathlib import Path
+
+import numpy as np
+
+from nl2hltl2plan.config import user_cache_dir
+from nl2hltl2plan.errors import DataError
+from nl2hltl2plan.io import atomic_path
+
+ARTIFACT = "structure_model.npz"
+_TOKEN = re.compile(r"[A-Za-z0-9]+(?:'[A-Za-z]+)?|[^\sA-Za-z0-9]")
+
+
+def tokenize(text: str) -> list[tuple[str, int, int]]:
+    """Words (with their contraction: "you've") and punctuation marks, with character offsets."""
+    return [(m.group(), m.start(), m.end()) for m in _TOKEN.finditer(text)]
+
+
+def _verbs() -> frozenset[str]:
+    from nl2hltl2plan.language.learned.compose import VERB_GERUND, VERB_PARTICIPLE
+
+    return frozenset(VERB_GERUND) | frozenset(VERB_GERUND.values()) | frozenset(VERB_PARTICIPLE.values())
+
+
+_VERBS = _verbs()
+
+
+def features(words: list[str]) -> list[list[str]]:
+    """The CRF's string features for each token (identical in training and inference)."""
+    low = [w.lower() for w in words]
+    n = len(low)
+    sent_start = []
+    start = 0
+    for i, w in enumerate(low):
+        sent_start.append(start)
+        if w in (".", "!", "?", ";"):
+            start = i + 1
+    tail = "|".join(w for w in low[-4:] if w not in (".", "!"))
+    out = []
+    for i, w in enumerate(low):
+        s = sent_start[i]
+        f = [
+            "b", "w=" + w, "s3=" + w[-3:], "p=" + str(min(i - s, 4)), "end=" + tail,
+            "s0=" + low[s] if s < n else "s0=", "s01=" + "|".join(low[s : s + 2]),
+        ]
+        for d in (-3, -2, -1, 1, 2, 3):
+            j = i + d
+            f.append(f"w{d}=" + (low[j] if 0 <= j < n else "<>"))
+        f.append("w-1w=" + (low[i - 1] if i else "<>") + "|" + w)
+        f.append("ww1=" + w + "|" + (low[i + 1] if i + 1 < n else "<>"))
+        f.append("w-2w-1=" + (low[i - 2] if i > 1 else "<>") + "|" + (low[i - 1] if i else "<>"))
+        if i == 0:
+            f.append("BOS")
+        if w in _VERBS:
+            f.append("verb")
+        if i + 1 < n and low[i + 1] in _VERBS:
+            f.append("verb+1")
+        out.append(f)
+    return out
+
+
+def tags_of(text: str, spans: list[tuple[int, int]], relations: list[str]) -> tuple[list[str], list[str]]:
+    """Gold tags for training: a token inside span k is B-<rel k> (its first token) or I, else O."""
+    words, tags = [], []
+    seen: set[int] = set()
+    for w, a, b in tokenize(text):
+        words.append(w)
+        k = next((k for k, (s, e) in enumerate(spans) if s <= a and b <= e), None)
+        if k is None:
+            tags.append("O")
+        else:
+            tags.append("I" if k in seen else "B-" + relations[k])
+            seen.add(k)
+    return words, tags
+
+
+@dataclass(frozen=True)
+class Span:
+    """One task span of an instruction: its text, where it is, its relation, the model's confidence."""
+
+    text: str
+    start: int
+    end: int
+    relation: str
+
+
+@dataclass(frozen=True)
+class Reading:
+    """The model's reading of an instruction: its spans and the probability of that whole tagging."""
+
+    spans: list[Span]
+    confidence: float
+
+    def __iter__(self) -> Iterator[Span]:
+        return iter(self.spans)
+
+
+class StructureModel:
+    """CRF weights as numpy arrays: `index` feature -> row, `weights` (features x tags), `trans`."""
+
+    def __init__(self, tags: list[str], feature_names: list[str], weights: np.ndarray, trans: np.ndarray):
+        self.tags = tags
+        self.index = {f: i for i, f in enumerate(feature_names)}
+        self.feature_names = feature_names
+        self.weights = weights
+        self.trans = trans
+
+    def _emissions(self, feats: list[list[str]]) -> np.ndarray:
+        out = np.zeros((len(feats), len(self.tags)), dtype=np.float64)
+        for t, fs in enumerate(feats):
+            rows = [self.index[f] for f in fs if f in self.index]
+            if rows:
+                out[t] = self.weights[rows].sum(axis=0)
+        return out
+
+    def tag(self, words: list[str]) -> tuple[list[str], float]:
+        """Viterbi tags and the probability of that tagging (forward algorithm for the normaliser)."""
+        if not words:
+            return [], 1.0
+        em = self._emissions(features(words))
+        n, k = em.shape
+        score = em[0].copy()
+        back = np.zeros((n, k), dtype=np.int64)
+        alpha = em[0].copy()
+        for t in range(1, n):
+            cand = score[:, None] + self.trans
+            back[t] = cand.argmax(axis=0)
+            score = cand.max(axis=0) + em[t]
+            a = alpha[:, None] + self.trans
+            m = a.max(axis=0)
+            alpha = m + np.log(np.exp(a - m).sum(axis=0)) + em[t]
+        best = [int(score.argmax())]
+        for t in range(n - 1, 0, -1):
+            best.append(int(back[t, best[-1]]))
+        best.reverse()
+        top = alpha.max()
+        log_z = top + np.log(np.exp(alpha - top).sum())
+        return [self.tags[i] for i in best], float(np.exp(score.max() - log_z))
+
+    def read(self, text: str) -> Reading:
+        """The instruction's task spans (text order) with their relations."""
+        toks = tokenize(text)
+        tags, conf = self.tag([w for w, _, _ in toks])
+        spans: list[list] = []
+        for (_, a, b), tag in zip(toks, tags, strict=True):
+            if tag.startswith("B-") or (tag == "I" and not spans):
+                spans.append([a, b, tag[2:] if tag.startswith("B-") else "SEQ"])
+            elif tag == "I":  # an I after an O continues the span before it
+                spans[-1][1] = b
+        out = []
+        for i, s in enumerate(spans):
+            rel = "START" if i == 0 else ("SEQ" if s[2] == "START" else s[2])
+            out.append(Span(text[s[0] : s[1]], s[0], s[1], rel))
+        return Reading(out, conf)
+
+    def save(self, path: Path) -> None:
+        arrays = {
+            "tags": np.array(self.tags),
+            "features": np.array(self.feature_names),
+            "weights": self.weights.astype(np.float32),
+            "trans": self.trans.astype(np.float32),
+        }
+        with (  # a temporary file renamed over `path`: a kill leaves the old model, never a torn one
+            atomic_path(path, "structure model") as tmp,
+            zipfile.ZipFile(tmp, "w", compression=zipfile.ZIP_DEFLATED) as zf,
+        ):
+            for name, arr in arrays.items():
+                buf = io.BytesIO()
+                np.lib.format.write_array(buf, np.ascontiguousarray(arr), allow_pickle=False)
+                info = zipfile.ZipInfo(name + ".npy", date_time=(2026, 1, 1, 0, 0, 0))
+                zf.writestr(info, buf.getvalue(), compress_type=zipfile.ZIP_DEFLATED)
+
+    @classmethod
+    def load(cls, path: Path | None = None) -> StructureModel:
+        src = path or default_structure_path()
+        try:
+            with np.load(src, allow_pickle=False) as z:  # type: ignore[arg-type]
+                return cls(
+                    [str(t) for t in z["tags"]],
+                    [str(f) for f in z["features"]],
+                    z["weights"].astype(np.float64),
+                    z["trans"].astype(np.float64),
+                )
+        except (OSError, KeyError, ValueError) as exc:
+            raise DataError(f"cannot read the structure model {src}: {exc}") from exc
+
+
+def user_structure_path() -> Path:
+    """Where `nl2hltl2plan train language` writes the structure model by default (never the package)."""
+    return user_cache_dir() / "models" / ARTIFACT
+
+
+def default_structure_path() -> Path:
+    """The user's retrained structure model when present, else the packaged one."""
+    user = user_structure_path()
+    return user if user.exists() else Path(str(resources.files("nl2hltl2plan.language.learned") / ARTIFACT))
+
+
+@lru_cache(maxsize=2)
+def load_structure(path: Path | None = None) -> StructureModel:
+    return StructureModel.load(path)

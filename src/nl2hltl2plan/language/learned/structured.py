@@ -1,0 +1,145 @@
+"""The structure model's reading of a whole instruction, and how it is weighed against the grammar's.
+
+`inference.structure_reading`: the structure model (`structure.py`) cuts the instruction into task spans
+with their relations; each span is read alone by the grammar + slot model (one or more base tasks: "put
+the plates and mugs in the rack" is a group; helpers here: `base_form`, `with_verb`, `resolved`), and the
+spans' relations give the `before` pairs between them (`combine_spans`, `relations.before_pairs`). A span
+that does not read completely makes the whole reading incomplete.
+
+`decide` (the rule chosen on the validation sets, docs/learned.md):
+- the grammar's reading is complete and the two agree -> the grammar's;
+- the grammar's reading is incomplete (it lists unread words) and the structure model's is complete,
+  passes the word accounting (check 1) and is confident -> the structure model's;
+- both are complete and they disagree -> the structure model's when it is at least `override` sure;
+  when it is less sure than `doubt`, neither is trusted: no tasks, the disagreement goes to `unparsed`;
+  in between the grammar's.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+from nl2hltl2plan.errors import Nl2Hltl2PlanError
+from nl2hltl2plan.language.accounting import account
+from nl2hltl2plan.language.grounding import find_mentions
+from nl2hltl2plan.language.learned.compose import ELIDABLE, VERB_GERUND, VERB_PARTICIPLE
+from nl2hltl2plan.language.learned.relations import before_pairs
+from nl2hltl2plan.language.learned.structure import Reading
+from nl2hltl2plan.language.scoring import match
+from nl2hltl2plan.language.tasks import BaseTaskSpec, task_letter
+
+_BASE_FORM = {v: k for k, v in VERB_PARTICIPLE.items() if v != k} | {v: k for k, v in VERB_GERUND.items()}
+
+
+@dataclass(frozen=True)
+class StructurePolicy:
+    """When the structure model's reading replaces the grammar's (see the module docstring)."""
+
+    rescue: float = 0.5  # the grammar could not read everything: the model's reading if this sure
+    override: float = 0.9  # both complete and different: the model's reading if this sure
+    doubt: float = 0.0  # ... and neither trusted (-> unparsed) when the model is less sure than this
+
+
+def decide(
+    grammar: tuple[list[BaseTaskSpec], list[tuple[str, str]], bool],
+    model: tuple[list[BaseTaskSpec], list[tuple[str, str]], float] | None,
+    rule: StructurePolicy,
+) -> str:
+    """Which reading to take: "grammar", "model" or "neither" (-> unparsed). `grammar`: its tasks, before
+    pairs and whether it is complete; `model`: the structure model's complete reading and its confidence
+    (None: incomplete)."""
+    if model is None:
+        return "grammar"
+    tasks, before, confidence = model
+    if not grammar[2]:
+        return "model" if confidence >= rule.rescue else "grammar"
+    if same_reading(tasks, before, grammar[0], grammar[1]):
+        return "grammar"
+    if confidence >= rule.override:
+        return "model"
+    return "neither" if confidence < rule.doubt else "grammar"
+
+
+def base_form(span: str) -> str:
+    """The span with a leading participle or gerund put back in the base form ("placed the mug" -> "place
+    the mug"), as the grammar reads commands."""
+    head, sep, rest = span.strip().partition(" ")
+    base = _BASE_FORM.get(head.lower())
+    return f"{base}{sep}{rest}" if base else span.strip()
+
+
+def with_verb(span: str, previous: str | None) -> str:
+    """A span whose verb was left out ("put the mug in the sink and the apple in the fridge") gets the
+    previous span's verb back."""
+    verb = (previous or "").strip().split(" ", 1)[0]
+    first = span.strip().split(" ", 1)[0].lower()
+    if verb.lower() in ELIDABLE and first in ("the", "a", "an", "two", "both", "some", "all", "my", "your"):
+        return f"{verb.lower()} {span.strip()}"
+    return span
+
+
+def _surface(text: str, types: list[str] | None) -> str | None:
+    """The phrase of `text` that names one of `types` ("the drawer")."""
+    for m in find_mentions(text):
+        if set(types or []) & set(m.entry.types):
+            return m.surface
+    return None
+
+
+def resolved(span: str, previous: tuple[str, BaseTaskSpec] | None) -> str:
+    """A span that refers to the previous span's task by a pronoun gets its words back: "put it in the
+    coffee machine" -> the previous object; "put the pen there (too)" -> the previous destination."""
+    if previous is None:
+        return span
+    text, task = previous
+    obj = _surface(text, task.object)
+    dest = _surface(text, task.receptacle)
+    if dest and re.search(r"\bthere\b", span):
+        span = re.sub(r"\bthere( too| as well)?\b", f"in the {dest}", span, count=1)
+    if obj and re.match(r"^\w+ (it|them)\b", span):
+        span = re.sub(r"^(\w+) (it|them)\b", lambda m: f"{m.group(1)} the {obj}", span, count=1)
+    return span
+
+
+SpanTasks = tuple[list[BaseTaskSpec], list[tuple[str, str]]]
+
+
+def combine_spans(
+    reading: Reading, parsed: list[SpanTasks]
+) -> tuple[list[BaseTaskSpec], list[tuple[str, str]], list[list[str]]]:
+    """Renumber each span's tasks in text order; every task of a span before every task of a later step."""
+    tasks: list[BaseTaskSpec] = []
+    before: list[tuple[str, str]] = []
+    groups: list[list[str]] = []
+    ids_of_span: list[list[str]] = []
+    for span_tasks, span_before in parsed:
+        new = {t.id: task_letter(len(tasks) + i) for i, t in enumerate(span_tasks)}
+        tasks += [t.model_copy(update={"id": new[t.id]}) for t in span_tasks]
+        before += [(new[a], new[b]) for a, b in span_before]
+        ids_of_span.append(list(new.values()))
+        if len(new) > 1:
+            groups.append(list(new.values()))
+    for a, b in before_pairs([s.relation for s in reading.spans]):
+        before += [(x, y) for x in ids_of_span[a] for y in ids_of_span[b]]
+    return tasks, sorted(set(before)), groups
+
+
+def same_reading(
+    a_tasks: list[BaseTaskSpec],
+    a_before: list[tuple[str, str]],
+    b_tasks: list[BaseTaskSpec],
+    b_before: list[tuple[str, str]],
+) -> bool:
+    """Whether two readings give the same base tasks and the same order (the benchmark's strict match)."""
+    return match(a_tasks, a_before, [t.model_dump() for t in b_tasks], b_before).ok
+
+
+def complete_and_accounted(
+    instruction: str, tasks: list[BaseTaskSpec], before: list[tuple[str, str]]
+) -> bool:
+    """Every content word of the instruction is used (check 1) and the order is acyclic."""
+    try:
+        return not account(instruction, tasks, before)
+    except Nl2Hltl2PlanError:
+        return False
