@@ -44,7 +44,7 @@ from nl2hltl2plan.planning.bounds import (
 )
 from nl2hltl2plan.planning.model import DONE, Leaf
 from nl2hltl2plan.planning.navigation import INF
-from nl2hltl2plan.planning.opens import forced_opens
+from nl2hltl2plan.planning.opens import forced_closes, forced_opens
 from nl2hltl2plan.planning.state import Expander, Node, bound
 from nl2hltl2plan.worlds.simulator import PRESENT
 
@@ -76,7 +76,18 @@ class Heuristic:
         np.minimum(self.rr, self.rr.T, out=self.rr)
         self.after = self._after_matrix()
         self._carry_cache: dict[tuple, int] = {}
+        self._near_cache: dict[tuple[int, ...], np.ndarray] = {}
         self.root_evals = ROOT_EVALS
+
+    def _near(self, anchors: tuple[int, ...]) -> np.ndarray:
+        """Per cell, the walk from the nearest of `anchors`' regions: a pure function of the anchor
+        set (a state's events share a few), so it is computed once per set, not once per node."""
+        hit = self._near_cache.get(anchors)
+        if hit is None:
+            if len(self._near_cache) > CACHE_LIMIT // 100:
+                self._near_cache.clear()
+            hit = self._near_cache[anchors] = self.field[list(anchors)].min(axis=0)
+        return hit
 
     def _after_matrix(self) -> np.ndarray:
         """after[i, j]: leaf j may only start once leaf i is complete (gates, transitively)."""
@@ -259,7 +270,8 @@ class Heuristic:
             return 0, node.ms
         carry = self._carry_total(node, memo)
         walk = self._assignment(node, rows, optional, hands, carry) if rows else carry
-        total = len(rows) + extra_events + walk + forced_opens(self.x, self.required, node)
+        support = forced_opens(self.x, self.required, node) + forced_closes(self.x, self.required, node)
+        total = len(rows) + extra_events + walk + support
         if p.n_robots and (chain or rows):
             self._chains(node, rows, chain)
         return total, self._makespan(node, total, chain)
@@ -465,7 +477,7 @@ class Heuristic:
         has the hand empty, a carry full): summed, a bound. None when no pickup is carried."""
         legs = {r[4]: i for i, r in enumerate(rows) if r[3] == PUT and r[4] >= 0 and r[2]}
         legs = {k: i for k, i in legs.items() if rows[k][3] == PICKUP and rows[k][2]}
-        field, region_idx = self.field, self.nav.region_idx
+        region_idx = self.nav.region_idx
         cells_of = {k: np.concatenate([region_idx[a] for a in rows[k][2]]) for k in legs}
         cells_of = {k: c for k, c in cells_of.items() if len(c)}  # an instance no cell reaches: no leg
         if not cells_of:
@@ -473,7 +485,7 @@ class Heuristic:
         union = np.unique(np.concatenate(list(cells_of.values())))  # only the cells the pickups use
         src = np.empty((cost.shape[1], len(union)), dtype=np.int64)
         for j, anchors in enumerate(cols):
-            src[j] = field[np.ix_(np.array(anchors, dtype=np.int64), union)].min(axis=0) if anchors else 0
+            src[j] = self._near(anchors)[union] if anchors else 0
         src[len(cols):] = self._robot_walks_to_cells(node, union)
         np.minimum(src, BIG, out=src)
         out = np.where(cost >= BIG, BIG, 0)
@@ -482,7 +494,7 @@ class Heuristic:
                 out[i] = cost[i]  # a held object's put: the holder's walk to it
         for k, cells in cells_of.items():
             i = legs[k]
-            to_put = np.minimum(field[list(rows[i][2])][:, cells].min(axis=0), BIG)
+            to_put = np.minimum(self._near(rows[i][2])[cells], BIG)
             walks = (src[:, np.searchsorted(union, cells)] + to_put[None, :]).min(axis=1)
             out[k] = np.where(cost[k] >= BIG, BIG, np.minimum(walks, BIG))
         return out
@@ -533,7 +545,7 @@ class Heuristic:
             by_leaf.setdefault(r[0], []).append(r)
         for li, evs in by_leaf.items():
             first = evs[0][2]
-            reach = int(self.field[list(first)][:, cells].min()) if first else 0
+            reach = int(self._near(first)[cells].min()) if first else 0
             length = 0
             for r in evs:
                 length += 1
