@@ -35,6 +35,8 @@ DEFAULT_W = 1.5
 # fast mode's budgets, chosen on valid_seen scenarios (scripts/planner_validation.py, docs/planning.md)
 FAST_EXPANSIONS = 300  # AWA* expansions `fast` spends improving its first plan (at most)
 FAST_GENERATED = 5_000  # and AWA* successors generated (at most: large teams branch widely)
+FAST_WORK = 400_000  # and heuristic work (assignment-matrix cells: fewer evaluations on larger problems)
+FAST_GAP = 1.05  # fast mode stops once its plan is proven within this factor of the optimum
 IMPROVE_EVALS = 600  # local-search candidate replays (both modes)
 LNS_EVALS = 2000  # large-neighbourhood-search candidate replays (both modes)
 MAX_NODES = 400_000  # search nodes held at once (about 1.5 GB), the memory bound
@@ -92,6 +94,7 @@ def plan(
     capabilities: Sequence[Iterable[str] | None] | None = None,
     w: float = DEFAULT_W,
     fast_expansions: int | None = FAST_EXPANSIONS,
+    fast_work: int | None = FAST_WORK,
     improve_evals: int = IMPROVE_EVALS,
     lns_evals: int = LNS_EVALS,
     max_nodes: int | None = MAX_NODES,
@@ -142,11 +145,9 @@ def plan(
         return result
     x = Expander(problem, Navigator(world))
     required = {problem.leaf_index[n] for n in _required_leaves(problem)}
-    searcher = Searcher(x, Heuristic(x, required), obj, deadline)
-    budget = Budget(fast_expansions if mode == "fast" else None, improve_evals, lns_evals,
-                    w if mode == "fast" and fast_expansions is None else 1.0, w if mode == "fast" else 1.0,
-                    max_nodes, FAST_GENERATED if mode == "fast" and fast_expansions is not None else None,
-                    free_stands=grid_model(objective, mode))
+    searcher = Searcher(x, Heuristic(x, required, makespan=obj.makespan_bound), obj, deadline)
+    budget = _budget(mode, w, fast_expansions, fast_work, improve_evals, lns_evals, max_nodes,
+                     grid_model(objective, mode))
     best = _search(searcher, x, budget)
     stats = searcher.stats
     result.expanded, result.peak_nodes = stats.expanded, stats.peak_nodes
@@ -185,6 +186,20 @@ class Budget:
     max_nodes: int | None  # memory bound of the A*
     generated: int | None  # AWA* successors generated (None: no limit)
     free_stands: bool  # stand cells part of the A* search (the grid optimum of the summed cost)
+    work: int | None = None  # AWA* heuristic work (`Heuristic.work`; None: no limit)
+
+
+def _budget(mode: str, w: float, expansions: int | None, work: int | None, improve_evals: int,
+            lns_evals: int, max_nodes: int | None, free_stands: bool) -> Budget:
+    """Exact: no A* budget, stop when proven optimal. Fast: the budgets (the work budget sizes the
+    A* to the problem: a large problem's evaluations cost more, so it gets fewer), stopping as soon
+    as the plan is proven within FAST_GAP; with `expansions=None`, until proven within `w`."""
+    if mode == "exact":
+        return Budget(None, improve_evals, lns_evals, 1.0, 1.0, max_nodes, None, free_stands)
+    if expansions is None:
+        return Budget(None, improve_evals, lns_evals, w, w, max_nodes, None, free_stands)
+    return Budget(expansions, improve_evals, lns_evals, min(w, FAST_GAP), w, max_nodes, FAST_GENERATED,
+                  free_stands, work)
 
 
 def grid_model(objective: str, mode: str) -> bool:
@@ -224,7 +239,8 @@ def _search(searcher: Searcher, x: Expander, budget: Budget) -> Node | None:
         x.free_stands = budget.free_stands
         try:
             best = searcher.awa(root, best, budget.w_order, budget.w_stop, max_expansions=budget.expansions,
-                                max_nodes=budget.max_nodes, max_generated=budget.generated)
+                                max_nodes=budget.max_nodes, max_generated=budget.generated,
+                                max_work=budget.work)
         finally:
             x.free_stands = False
     except Deadline:

@@ -52,12 +52,17 @@ BIG = 1 << 20  # forbidden predecessor (finite for the solver)
 OTHER, PICKUP, PUT = 0, 1, 2
 EMPTY = ""  # the hand right after a put
 CACHE_LIMIT = 100_000  # carry minima kept across nodes
+EVAL_WORK = 200  # an evaluation's fixed cost, in assignment-matrix cells (measured: ~1.5 ms vs ~7 us a cell)
 ROOT_EVALS = 64  # bound evaluations the root's search over instance choices spends (at most)
 
 
 class Heuristic:
-    def __init__(self, expander: Expander, required: set[int]):
+    def __init__(self, expander: Expander, required: set[int], makespan: bool = True):
         self.x = expander
+        self.makespan = makespan  # is the completion-time bound needed (objective `minmax`)?
+        # work done so far, in cells of assignment matrices solved: machine-independent and
+        # proportional to the evaluations' cost, so budgets in it scale with the problem's size
+        self.work = 0
         self.p = expander.p
         self.nav = expander.nav
         self.required = required  # leaf indices every plan completes
@@ -272,6 +277,8 @@ class Heuristic:
         walk = self._assignment(node, rows, optional, hands, carry) if rows else carry
         support = forced_opens(self.x, self.required, node) + forced_closes(self.x, self.required, node)
         total = len(rows) + extra_events + walk + support
+        if not self.makespan:
+            return total, node.ms
         if p.n_robots and (chain or rows):
             self._chains(node, rows, chain)
         return total, self._makespan(node, total, chain)
@@ -449,6 +456,7 @@ class Heuristic:
                 cost[i, n_pred:] = BIG
                 cost[i, n_pred + holder] = keep
         cost[:, :n_ev] = ev_cols
+        self.work += cost.size + EVAL_WORK
         self._hand_rules(node, rows, cost, n_ev, n_pred, hands)
         walk = _solve(_with_last(cost, n_ev))
         # pickups are never inside a carry (one hand): their approaches add to the carries'
