@@ -35,10 +35,14 @@ DEFAULT_W = 1.5
 # fast mode's budgets, chosen on valid_seen scenarios (scripts/planner_validation.py, docs/planning.md)
 FAST_EXPANSIONS = 300  # AWA* expansions `fast` spends improving its first plan (at most)
 FAST_GENERATED = 5_000  # and AWA* successors generated (at most: large teams branch widely)
-FAST_WORK = 400_000  # and heuristic work (assignment-matrix cells: fewer evaluations on larger problems)
+FAST_WORK = 100_000  # and heuristic work (assignment-matrix cells: fewer evaluations on larger problems)
 FAST_GAP = 1.05  # fast mode stops once its plan is proven within this factor of the optimum
 IMPROVE_EVALS = 600  # local-search candidate replays (both modes)
 LNS_EVALS = 2000  # large-neighbourhood-search candidate replays (both modes)
+# replays cost in proportion to the plan's events: both local searches also stop after this many
+# replayed events (a 10-event plan keeps its 600 / 2,000 replays, a 50-event one gets fewer)
+IMPROVE_EVENTS = 12_000
+LNS_EVENTS = 30_000
 MAX_NODES = 400_000  # search nodes held at once (about 1.5 GB), the memory bound
 BEAM_WIDTH = 8
 BEAM_INSTANCES = 3
@@ -187,6 +191,7 @@ class Budget:
     generated: int | None  # AWA* successors generated (None: no limit)
     free_stands: bool  # stand cells part of the A* search (the grid optimum of the summed cost)
     work: int | None = None  # AWA* heuristic work (`Heuristic.work`; None: no limit)
+    light_seeds: bool = False  # beam seeds rank children by the assignment bound alone (cheaper)
 
 
 def _budget(mode: str, w: float, expansions: int | None, work: int | None, improve_evals: int,
@@ -199,7 +204,7 @@ def _budget(mode: str, w: float, expansions: int | None, work: int | None, impro
     if expansions is None:
         return Budget(None, improve_evals, lns_evals, w, w, max_nodes, None, free_stands)
     return Budget(expansions, improve_evals, lns_evals, min(w, FAST_GAP), w, max_nodes, FAST_GENERATED,
-                  free_stands, work)
+                  free_stands, work, light_seeds=True)
 
 
 def grid_model(objective: str, mode: str) -> bool:
@@ -229,12 +234,23 @@ def _search(searcher: Searcher, x: Expander, budget: Budget) -> Node | None:
         if x.is_goal(root):
             searcher.stats.proven_optimal, searcher.stats.stopped = True, "trivial"
             return root
-        best = _seed(searcher, x, root)
-        if best is not None:
-            # local search on the allocation first: a better incumbent also prunes the A*
-            best = improve(x, best, searcher.obj, budget.improve_evals, searcher.check_time)
-            best = lns(x, best, searcher.obj, budget.lns_evals, searcher.check_time)
-            if budget.free_stands:  # the incumbent's cost on the grid: its best stand cells
+        searcher.score(root)  # the full bound at the root: the A*'s first lower bound
+        searcher.h.light = budget.light_seeds
+        try:
+            best = _seed(searcher, x, root)
+        finally:
+            searcher.h.light = False
+        if best is not None and budget.free_stands:  # the incumbent's cost on the grid: its best stand cells
+            best = refine_stand_cells(x, best, searcher.obj)
+        if best is not None and not searcher.obj.proven(searcher.cost(best), root.f, 1.0):
+            # local search on the allocation first (unless the root's bound proves the seed
+            # optimal already): a better incumbent also prunes the A*
+            n = max(1, len(best.events()))
+            best = improve(x, best, searcher.obj, min(budget.improve_evals, max(1, IMPROVE_EVENTS // n)),
+                           searcher.check_time)
+            best = lns(x, best, searcher.obj, min(budget.lns_evals, max(1, LNS_EVENTS // n)),
+                       searcher.check_time)
+            if budget.free_stands:
                 best = refine_stand_cells(x, best, searcher.obj)
         x.free_stands = budget.free_stands
         try:

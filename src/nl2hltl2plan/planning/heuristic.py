@@ -63,6 +63,9 @@ class Heuristic:
         # work done so far, in cells of assignment matrices solved: machine-independent and
         # proportional to the evaluations' cost, so budgets in it scale with the problem's size
         self.work = 0
+        # light: only the assignment of predecessors (the beam seeds rank children with it; every
+        # bound here is admissible, the full one is only tighter)
+        self.light = False
         self.p = expander.p
         self.nav = expander.nav
         self.required = required  # leaf indices every plan completes
@@ -213,7 +216,7 @@ class Heuristic:
         """(lower bound on remaining summed cost, lower bound on the final makespan). At the root
         (its bound lifts every node's, a child's bound being at least its parent's), the least bound
         over the leaves' instance choices, searched best first (`bounds.least_over_bindings`)."""
-        if node.parent is None and self.root_evals > 1:
+        if node.parent is None and self.root_evals > 1 and not self.light:
             choices, capacity = self._binding_choices(node)
             best = least_over_bindings(choices, capacity, lambda fixed: self._evaluate(node, fixed),
                                        self.root_evals)
@@ -273,7 +276,7 @@ class Heuristic:
                              *hand_ids, full))
         if not rows and not extra_events:
             return 0, node.ms
-        carry = self._carry_total(node, memo)
+        carry = 0 if self.light else self._carry_total(node, memo)
         walk = self._assignment(node, rows, optional, hands, carry) if rows else carry
         support = forced_opens(self.x, self.required, node) + forced_closes(self.x, self.required, node)
         total = len(rows) + extra_events + walk + support
@@ -459,6 +462,8 @@ class Heuristic:
         self.work += cost.size + EVAL_WORK
         self._hand_rules(node, rows, cost, n_ev, n_pred, hands)
         walk = _solve(_with_last(cost, n_ev))
+        if self.light:
+            return walk
         # pickups are never inside a carry (one hand): their approaches add to the carries'
         # binding-consistent minimum
         alone = kind == PICKUP
