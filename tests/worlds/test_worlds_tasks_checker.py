@@ -52,9 +52,10 @@ def test_recipes_single_choice(demo):
         "put(Mug,DiningTable)",
     ]
     # the scripted runner's recipe (support=True) writes the microwave's opens and its close
-    assert task(kind="heat_place", object=["Mug"], receptacle=["DiningTable"]).leaf_specs(demo, support=True)[0][
-        1:6] == ["open(Microwave)", "put(Mug,Microwave)", "close(Microwave)", "toggle_on(Microwave)",
-                 "toggle_off(Microwave)"]
+    heat_task = task(kind="heat_place", object=["Mug"], receptacle=["DiningTable"])
+    assert heat_task.leaf_specs(demo, support=True)[0][1:6] == [
+        "open(Microwave)", "put(Mug,Microwave)", "close(Microwave)", "toggle_on(Microwave)",
+        "toggle_off(Microwave)"]
     # closed-fridge apples are the only Tomatoes: open it first; cool into the fridge stops there
     cool = task(kind="cool_place", object=["Tomato"], receptacle=["Fridge"])
     assert cool.leaf_specs(demo) == [["pickup(Tomato)", "put(Tomato,Fridge)"]]
