@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from nl2hltl2plan.planning.bounds import carry_legs, joint_min
+from nl2hltl2plan.planning.bounds import Leg, carry_legs, joint_min
 from nl2hltl2plan.planning.model import DONE, Leaf
 from nl2hltl2plan.planning.relax import BIG, solve
 from nl2hltl2plan.planning.state import Node, bound
@@ -82,15 +82,13 @@ def _carries(h: Heuristic, node: Node, leaf: Leaf, memo: dict, fixed: tuple[str,
     held = {t: sim.holder[o] for t, o in node.bind[leaf.index] if sim.holder[o] >= 0}
     best = None
     for path in paths:
-        atoms = [(leaf.atoms[k].verb, leaf.atoms[k].types) for k in path]
-        picked = frozenset(types[0] for verb, types in atoms if verb == "pickup")
+        legs, picked = _path_legs(h, leaf, path, held)
 
         def anchors(t: str, picked: frozenset[str] = picked) -> tuple[int, ...]:
             if fixed is not None and t == fixed[0]:
                 return (fixed[1],)
             return h.anchors_of(node, leaf, t, "pickup" if t in picked else "put", memo)
 
-        legs = carry_legs(atoms, held)
         if not legs:
             return 0
         if held:
@@ -113,3 +111,18 @@ def _carries(h: Heuristic, node: Node, leaf: Leaf, memo: dict, fixed: tuple[str,
 
 def _no_robot(robot: int, anchors: tuple[int, ...]) -> np.ndarray:
     raise AssertionError("no robot holds anything for these carries")
+
+
+def _path_legs(h: Heuristic, leaf: Leaf, path: tuple[int, ...],
+               held: dict[str, int]) -> tuple[list[Leg], frozenset[str]]:
+    """The carry legs of a leaf path and the types it picks up: a pure function of the path and
+    of which robots hold which of its types, so computed once per such state, not once per node."""
+    key = (leaf.index, path, tuple(sorted(held.items())))
+    hit = h.legs_cache.get(key)
+    if hit is None:
+        atoms = [(leaf.atoms[k].verb, leaf.atoms[k].types) for k in path]
+        picked = frozenset(types[0] for verb, types in atoms if verb == "pickup")
+        if len(h.legs_cache) > CACHE_LIMIT:
+            h.legs_cache.clear()
+        hit = h.legs_cache[key] = (carry_legs(atoms, held), picked)
+    return hit

@@ -37,6 +37,7 @@ import numpy as np
 
 from nl2hltl2plan.planning.bounds import (
     Choice,
+    Leg,
     least_over_bindings,
     spanning_walk,
 )
@@ -83,6 +84,7 @@ class Heuristic:
         np.minimum(self.rr, self.rr.T, out=self.rr)
         self.after = self._after_matrix()
         self.carry_cache: dict[tuple, int] = {}  # carry minima of legs and regions (carries.py)
+        self.legs_cache: dict[tuple, tuple[list[Leg], frozenset[str]]] = {}  # a leaf path's carry legs
         self._near_cache: dict[tuple[int, ...], np.ndarray] = {}
         self.root_evals = ROOT_EVALS
 
