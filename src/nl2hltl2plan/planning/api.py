@@ -35,7 +35,7 @@ DEFAULT_W = 1.5
 # fast mode's budgets, chosen on valid_seen scenarios (scripts/planner_validation.py, docs/planning.md)
 FAST_EXPANSIONS = 300  # AWA* expansions `fast` spends improving its first plan (at most)
 FAST_GENERATED = 5_000  # and AWA* successors generated (at most: large teams branch widely)
-FAST_WORK = 100_000  # and heuristic work (assignment-matrix cells: fewer evaluations on larger problems)
+FAST_WORK = 400_000  # and heuristic work (assignment-matrix cells: fewer evaluations on larger problems)
 FAST_GAP = 1.05  # fast mode stops once its plan is proven within this factor of the optimum
 IMPROVE_EVALS = 600  # local-search candidate replays (both modes)
 LNS_EVALS = 2000  # large-neighbourhood-search candidate replays (both modes)
