@@ -116,10 +116,11 @@ def plan(
     mode: "exact" searches until the plan is proven optimal (`result.model` names the model the
     optimum is over). "fast" (default) is anytime: beam-search seeds, local search
     (`improve_evals` candidate replays), large-neighbourhood search (`lns_evals` replays), then
-    anytime weighted A* (weight `w`) for at most
-    `fast_expansions` expansions (and FAST_GENERATED successors); `bound` is the ratio to the
-    optimum it could prove. With
-    `fast_expansions=None`, fast stops as soon as the plan is proven within factor `w`. Every budget
+    anytime weighted A* (weight `w`) for at most `fast_expansions` expansions, FAST_GENERATED
+    successors and `fast_work` units of heuristic work (assignment-matrix cells: a larger problem
+    gets fewer evaluations), stopping as soon as the plan is proven within FAST_GAP (5 %); `bound` is
+    the ratio to the optimum it could prove. With `fast_expansions=None`, fast stops as soon as the
+    plan is proven within factor `w`. Every budget
     counts machine-independent units, so the same input gives the same plan; `timeout_s` is a
     wall-clock last resort, reported as such (`stopped == "timeout"`). `max_nodes` bounds the
     search's memory (nodes held at once; reported as `peak_nodes`, `memory_mb`).
