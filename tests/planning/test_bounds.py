@@ -207,3 +207,29 @@ def test_an_instance_no_cell_can_reach_leaves_the_bound_finite():
     bound = _root_bound(world, inst, [(0, 30)])
     r = plan(world, oracle_spec(inst, world).spec, [(0, 30)], mode="exact")
     assert r.solved and r.proven_optimal and 0 < bound <= r.total_cost
+
+
+def test_the_microwave_must_be_closed_to_heat_once_for_two_tasks():
+    # the heat recipe puts the object in (the microwave is open then) and switches it on: one
+    # support close is forced, and one serves two heat tasks; the bound stays below the optimum
+    from nl2hltl2plan.planning.opens import forced_closes
+    from nl2hltl2plan.worlds.demo import demo_world
+
+    world = demo_world()
+    heat = {"id": "A", "kind": "heat_place", "object": ["Apple"], "receptacle": ["DiningTable"]}
+    heat2 = {"id": "B", "kind": "heat_place", "object": ["Mug"], "receptacle": ["CounterTop"]}
+    cool = {"id": "C", "kind": "cool_place", "object": ["Tomato"], "receptacle": ["CounterTop"]}
+    for tasks, closes in (([heat], 1), ([heat, heat2], 1), ([cool], 0)):
+        inst = gt(tasks)
+        x, h = _setup(world, inst, [(0, 0)])
+        assert forced_closes(x, h.required, x.root()) == closes
+    inst = gt([heat])
+    x, h = _setup(world, inst, [(0, 0)])
+    r = plan(world, oracle_spec(inst, world).spec, [(0, 0)], mode="exact")
+    assert r.proven_optimal and h.evaluate(x.root())[0] <= r.total_cost
+
+
+def test_spanning_walk_reads_each_pair_by_its_shorter_direction():
+    # event 0 -> 1 costs 9 one way and 2 the other: the tree joins them for 2
+    ev = np.array([[0, 9], [2, 0]])
+    assert spanning_walk(ev, np.array([3, 50])) == 3 + 2

@@ -35,8 +35,14 @@ DEFAULT_W = 1.5
 # fast mode's budgets, chosen on valid_seen scenarios (scripts/planner_validation.py, docs/planning.md)
 FAST_EXPANSIONS = 300  # AWA* expansions `fast` spends improving its first plan (at most)
 FAST_GENERATED = 5_000  # and AWA* successors generated (at most: large teams branch widely)
+FAST_WORK = 400_000  # and heuristic work (assignment-matrix cells: fewer evaluations on larger problems)
+FAST_GAP = 1.05  # fast mode stops once its plan is proven within this factor of the optimum
 IMPROVE_EVALS = 600  # local-search candidate replays (both modes)
 LNS_EVALS = 2000  # large-neighbourhood-search candidate replays (both modes)
+# replays cost in proportion to the plan's events: both local searches also stop after this many
+# replayed events (a 10-event plan keeps its 600 / 2,000 replays, a 50-event one gets fewer)
+IMPROVE_EVENTS = 12_000
+LNS_EVENTS = 30_000
 MAX_NODES = 400_000  # search nodes held at once (about 1.5 GB), the memory bound
 BEAM_WIDTH = 8
 BEAM_INSTANCES = 3
@@ -92,6 +98,7 @@ def plan(
     capabilities: Sequence[Iterable[str] | None] | None = None,
     w: float = DEFAULT_W,
     fast_expansions: int | None = FAST_EXPANSIONS,
+    fast_work: int | None = FAST_WORK,
     improve_evals: int = IMPROVE_EVALS,
     lns_evals: int = LNS_EVALS,
     max_nodes: int | None = MAX_NODES,
@@ -110,10 +117,11 @@ def plan(
     mode: "exact" searches until the plan is proven optimal (`result.model` names the model the
     optimum is over). "fast" (default) is anytime: beam-search seeds, local search
     (`improve_evals` candidate replays), large-neighbourhood search (`lns_evals` replays), then
-    anytime weighted A* (weight `w`) for at most
-    `fast_expansions` expansions (and FAST_GENERATED successors); `bound` is the ratio to the
-    optimum it could prove. With
-    `fast_expansions=None`, fast stops as soon as the plan is proven within factor `w`. Every budget
+    anytime weighted A* (weight `w`) for at most `fast_expansions` expansions, FAST_GENERATED
+    successors and `fast_work` units of heuristic work (assignment-matrix cells: a larger problem
+    gets fewer evaluations), stopping as soon as the plan is proven within FAST_GAP (5 %); `bound` is
+    the ratio to the optimum it could prove. With `fast_expansions=None`, fast stops as soon as the
+    plan is proven within factor `w`. Every budget
     counts machine-independent units, so the same input gives the same plan; `timeout_s` is a
     wall-clock last resort, reported as such (`stopped == "timeout"`). `max_nodes` bounds the
     search's memory (nodes held at once; reported as `peak_nodes`, `memory_mb`).
@@ -144,11 +152,9 @@ def plan(
         return result
     x = Expander(problem, Navigator(world))
     required = {problem.leaf_index[n] for n in _required_leaves(problem)}
-    searcher = Searcher(x, Heuristic(x, required), obj, deadline, on_progress)
-    budget = Budget(fast_expansions if mode == "fast" else None, improve_evals, lns_evals,
-                    w if mode == "fast" and fast_expansions is None else 1.0, w if mode == "fast" else 1.0,
-                    max_nodes, FAST_GENERATED if mode == "fast" and fast_expansions is not None else None,
-                    free_stands=grid_model(objective, mode))
+    searcher = Searcher(x, Heuristic(x, required, makespan=obj.makespan_bound), obj, deadline, on_progress)
+    budget = _budget(mode, w, fast_expansions, fast_work, improve_evals, lns_evals, max_nodes,
+                     grid_model(objective, mode))
     best = _search(searcher, x, budget)
     stats = searcher.stats
     result.expanded, result.peak_nodes = stats.expanded, stats.peak_nodes
@@ -187,6 +193,21 @@ class Budget:
     max_nodes: int | None  # memory bound of the A*
     generated: int | None  # AWA* successors generated (None: no limit)
     free_stands: bool  # stand cells part of the A* search (the grid optimum of the summed cost)
+    work: int | None = None  # AWA* heuristic work (`Heuristic.work`; None: no limit)
+    light_seeds: bool = False  # beam seeds rank children by the assignment bound alone (cheaper)
+
+
+def _budget(mode: str, w: float, expansions: int | None, work: int | None, improve_evals: int,
+            lns_evals: int, max_nodes: int | None, free_stands: bool) -> Budget:
+    """Exact: no A* budget, stop when proven optimal. Fast: the budgets (the work budget sizes the
+    A* to the problem: a large problem's evaluations cost more, so it gets fewer), stopping as soon
+    as the plan is proven within FAST_GAP; with `expansions=None`, until proven within `w`."""
+    if mode == "exact":
+        return Budget(None, improve_evals, lns_evals, 1.0, 1.0, max_nodes, None, free_stands)
+    if expansions is None:
+        return Budget(None, improve_evals, lns_evals, w, w, max_nodes, None, free_stands)
+    return Budget(expansions, improve_evals, lns_evals, min(w, FAST_GAP), w, max_nodes, FAST_GENERATED,
+                  free_stands, work, light_seeds=True)
 
 
 def grid_model(objective: str, mode: str) -> bool:
@@ -216,18 +237,30 @@ def _search(searcher: Searcher, x: Expander, budget: Budget) -> Node | None:
         if x.is_goal(root):
             searcher.stats.proven_optimal, searcher.stats.stopped = True, "trivial"
             return root
-        best = _seed(searcher, x, root)
-        if best is not None:
-            # local search on the allocation first: a better incumbent also prunes the A*
-            best = improve(x, best, searcher.obj, budget.improve_evals, searcher.check_time)
-            best = lns(x, best, searcher.obj, budget.lns_evals, searcher.check_time)
-            if budget.free_stands:  # the incumbent's cost on the grid: its best stand cells
+        searcher.score(root)  # the full bound at the root: the A*'s first lower bound
+        searcher.h.light = budget.light_seeds
+        try:
+            best = _seed(searcher, x, root)
+        finally:
+            searcher.h.light = False
+        if best is not None and budget.free_stands:  # the incumbent's cost on the grid: its best stand cells
+            best = refine_stand_cells(x, best, searcher.obj)
+        if best is not None and not searcher.obj.proven(searcher.cost(best), root.f, 1.0):
+            # local search on the allocation first (unless the root's bound proves the seed
+            # optimal already): a better incumbent also prunes the A*
+            n = max(1, len(best.events()))
+            best = improve(x, best, searcher.obj, min(budget.improve_evals, max(1, IMPROVE_EVENTS // n)),
+                           searcher.check_time)
+            best = lns(x, best, searcher.obj, min(budget.lns_evals, max(1, LNS_EVENTS // n)),
+                       searcher.check_time)
+            if budget.free_stands:
                 best = refine_stand_cells(x, best, searcher.obj)
             searcher.found(best)
         x.free_stands = budget.free_stands
         try:
             best = searcher.awa(root, best, budget.w_order, budget.w_stop, max_expansions=budget.expansions,
-                                max_nodes=budget.max_nodes, max_generated=budget.generated)
+                                max_nodes=budget.max_nodes, max_generated=budget.generated,
+                                max_work=budget.work)
         finally:
             x.free_stands = False
     except Deadline:

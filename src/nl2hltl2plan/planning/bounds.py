@@ -23,26 +23,29 @@ import heapq
 from collections.abc import Callable, Sequence
 
 import numpy as np
-from scipy.sparse.csgraph import minimum_spanning_tree
 
+_NO_EDGE = np.iinfo(np.int64).max  # an event already in the tree
 JOINT_LIMIT = 4096  # instance combinations enumerated per leaf; beyond it each leg takes its own minimum
 
 Leg = tuple[object, str]  # (where the carry starts: a type of the leaf or ("robot", r), the type it ends at)
 
 
 def spanning_walk(ev: np.ndarray, root: np.ndarray) -> int:
-    """Minimum spanning tree over a root and n events: `ev` (n x n, symmetric) the event-to-event
-    walks, `root` (n) the walk from the nearest robot to each event."""
+    """Minimum spanning tree over a root and n events: `ev` (n x n) the event-to-event walks,
+    `root` (n) the walk from the nearest robot to each event."""
     n = len(root)
-    if n == 0:
-        return 0
-    full = np.zeros((n + 1, n + 1), dtype=np.float64)
-    full[1:, 1:] = ev
-    full[0, 1:] = root
-    full[1:, 0] = root
-    # + 1 on every edge: the solver reads 0 as "no edge"; a spanning tree has n edges
-    tree = minimum_spanning_tree(full + 1.0)
-    return max(0, int(round(tree.sum())) - n)
+    # Prim's algorithm on the dense matrix (tens of events: cheaper than a sparse-graph solver); a
+    # walk joins two events in either direction, so an edge costs the shorter of the two
+    ev = np.minimum(ev, ev.T)
+    link = np.array(root, dtype=np.int64)  # each event's cheapest edge into the tree so far
+    out = np.zeros(n, dtype=bool)
+    total = 0
+    for _ in range(n):
+        j = int(np.where(out, _NO_EDGE, link).argmin())
+        total += int(link[j])
+        out[j] = True
+        np.minimum(link, ev[j], out=link)
+    return total
 
 
 def carry_legs(atoms: Sequence[tuple[str, tuple[str, ...]]], held: dict[str, int]) -> list[Leg]:

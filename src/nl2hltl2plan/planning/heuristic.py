@@ -24,40 +24,48 @@ completion needs adds 1 (also one per event, of a family with disjoint openables
 candidate is closed in). At the root, the bound is minimised over the instance choices as well
 (`bounds.least_over_bindings`).
 
-Completion time (`minmax`): the largest of (a) the current makespan, (b) each leaf's chain: its
-events happen one after another, the first no earlier than a robot can reach it and than the tasks
-ordered before it can finish, a carried object's put no earlier than the walk from its pickup, and
-(c) the work bound: all robots' clocks plus all remaining work, divided among the robots.
+Completion time (`minmax`): `makespan.py`, from the same pending events (`relax.EventRow`); the
+summed cost skips it. `Heuristic.work` counts the cells of the assignment matrices solved (plus a
+fixed amount per evaluation): fast mode's A* budget is counted in it, so a large problem, whose
+evaluations cost more, gets fewer of them. `Heuristic.light` keeps only the assignment (the beam
+seeds rank children with it).
 """
 
 from __future__ import annotations
 
 import numpy as np
-from scipy.optimize import linear_sum_assignment
 
 from nl2hltl2plan.planning.bounds import (
     Choice,
-    carry_legs,
-    joint_min,
+    Leg,
     least_over_bindings,
     spanning_walk,
 )
+from nl2hltl2plan.planning.carries import carry_total
+from nl2hltl2plan.planning.makespan import leaf_chains, makespan_bound
 from nl2hltl2plan.planning.model import DONE, Leaf
 from nl2hltl2plan.planning.navigation import INF
-from nl2hltl2plan.planning.opens import forced_opens
+from nl2hltl2plan.planning.opens import forced_closes, forced_opens
+from nl2hltl2plan.planning.relax import BIG, OTHER, PICKUP, PUT, EventRow, solve
 from nl2hltl2plan.planning.state import Expander, Node, bound
 from nl2hltl2plan.worlds.simulator import PRESENT
 
-BIG = 1 << 20  # forbidden predecessor (finite for the solver)
-OTHER, PICKUP, PUT = 0, 1, 2
 EMPTY = ""  # the hand right after a put
-CACHE_LIMIT = 100_000  # carry minima kept across nodes
+NEAR_CACHE_LIMIT = 1_000  # per-anchor-set distance rows kept across nodes
+EVAL_WORK = 200  # an evaluation's fixed cost, in assignment-matrix cells (measured: ~1.5 ms vs ~7 us a cell)
 ROOT_EVALS = 64  # bound evaluations the root's search over instance choices spends (at most)
 
 
 class Heuristic:
-    def __init__(self, expander: Expander, required: set[int]):
+    def __init__(self, expander: Expander, required: set[int], makespan: bool = True):
         self.x = expander
+        self.makespan = makespan  # is the completion-time bound needed (objective `minmax`)?
+        # work done so far, in cells of assignment matrices solved: machine-independent and
+        # proportional to the evaluations' cost, so budgets in it scale with the problem's size
+        self.work = 0
+        # light: only the assignment of predecessors (the beam seeds rank children with it; every
+        # bound here is admissible, the full one is only tighter)
+        self.light = False
         self.p = expander.p
         self.nav = expander.nav
         self.required = required  # leaf indices every plan completes
@@ -75,8 +83,20 @@ class Heuristic:
                 self.rr[a] = self.field[:, nav.region_idx[a]].min(axis=1)
         np.minimum(self.rr, self.rr.T, out=self.rr)
         self.after = self._after_matrix()
-        self._carry_cache: dict[tuple, int] = {}
+        self.carry_cache: dict[tuple, int] = {}  # carry minima of legs and regions (carries.py)
+        self.legs_cache: dict[tuple, tuple[list[Leg], frozenset[str]]] = {}  # a leaf path's carry legs
+        self._near_cache: dict[tuple[int, ...], np.ndarray] = {}
         self.root_evals = ROOT_EVALS
+
+    def _near(self, anchors: tuple[int, ...]) -> np.ndarray:
+        """Per cell, the walk from the nearest of `anchors`' regions: a pure function of the anchor
+        set (a state's events share a few), so it is computed once per set, not once per node."""
+        hit = self._near_cache.get(anchors)
+        if hit is None:
+            if len(self._near_cache) > NEAR_CACHE_LIMIT:
+                self._near_cache.clear()
+            hit = self._near_cache[anchors] = self.field[list(anchors)].min(axis=0)
+        return hit
 
     def _after_matrix(self) -> np.ndarray:
         """after[i, j]: leaf j may only start once leaf i is complete (gates, transitively)."""
@@ -101,7 +121,7 @@ class Heuristic:
         return after
 
     # ------------------------------------------------------------ symbolic regions of pending events
-    def _anchors_of(self, node: Node, leaf: Leaf, type_: str, verb: str, memo: dict) -> tuple[int, ...]:
+    def anchors_of(self, node: Node, leaf: Leaf, type_: str, verb: str, memo: dict) -> tuple[int, ...]:
         taking = verb in ("pickup", "slice")
         key = (leaf.index, type_, taking)
         hit = memo.get(key)
@@ -143,7 +163,7 @@ class Heuristic:
             target = atom.types[-1]
             anchors = where.get(target)
             if anchors is None:
-                anchors = self._anchors_of(node, leaf, target, atom.verb, memo)
+                anchors = self.anchors_of(node, leaf, target, atom.verb, memo)
             kind = PICKUP if atom.verb == "pickup" else PUT if atom.verb == "put" else OTHER
             carried = picked.get(atom.types[0], -1) if kind == PUT else -1
             holder = held.pop(atom.types[0], -1) if kind == PUT and carried < 0 else -1
@@ -197,7 +217,7 @@ class Heuristic:
         """(lower bound on remaining summed cost, lower bound on the final makespan). At the root
         (its bound lifts every node's, a child's bound being at least its parent's), the least bound
         over the leaves' instance choices, searched best first (`bounds.least_over_bindings`)."""
-        if node.parent is None and self.root_evals > 1:
+        if node.parent is None and self.root_evals > 1 and not self.light:
             choices, capacity = self._binding_choices(node)
             best = least_over_bindings(choices, capacity, lambda fixed: self._evaluate(node, fixed),
                                        self.root_evals)
@@ -236,7 +256,7 @@ class Heuristic:
         memo: dict = {"fixed": fixed}
         for (li, t), region in fixed.items():
             memo[(li, t, True)] = memo[(li, t, False)] = (region,)
-        rows: list[tuple] = []  # (leaf, pos, anchors, kind, carried row, holder, need, after, full)
+        rows: list[EventRow] = []
         hands: dict[tuple[int, str], int] = {}  # (leaf, held type) -> id
         optional: list[tuple[int, ...]] = []
         extra_events = 0
@@ -253,102 +273,19 @@ class Heuristic:
             base = len(rows)
             for pos, (anchors, kind, carried, holder, need, after, full) in enumerate(must):
                 hand_ids = (self._hand_id(lf.index, need, hands), self._hand_id(lf.index, after, hands))
-                rows.append((lf.index, pos, anchors, kind, base + carried if carried >= 0 else -1, holder,
-                             *hand_ids, full))
+                rows.append(EventRow(lf.index, pos, anchors, kind, base + carried if carried >= 0 else -1,
+                                     holder, *hand_ids, full))
         if not rows and not extra_events:
             return 0, node.ms
-        carry = self._carry_total(node, memo)
+        carry = 0 if self.light else carry_total(self, node, memo)
         walk = self._assignment(node, rows, optional, hands, carry) if rows else carry
-        total = len(rows) + extra_events + walk + forced_opens(self.x, self.required, node)
+        support = forced_opens(self.x, self.required, node) + forced_closes(self.x, self.required, node)
+        total = len(rows) + extra_events + walk + support
+        if not self.makespan:
+            return total, node.ms
         if p.n_robots and (chain or rows):
-            self._chains(node, rows, chain)
-        return total, self._makespan(node, total, chain)
-
-    def _carry_total(self, node: Node, memo: dict) -> int:
-        """The carries of all pending leaves. Leaves that each take their own instance of one type
-        (two baseball bats to the bed) get distinct instances: an assignment of instances to them."""
-        total = 0
-        groups: dict[str, list[dict[int, int]]] = {}
-        for lf in self.p.leaves:
-            if node.q[lf.index] == DONE or lf.index not in self.required:
-                continue
-            per = self._carry_per_instance(node, lf, memo)
-            if per is None:
-                total += self._carries(node, lf, memo)
-            else:
-                groups.setdefault(per[0], []).append(per[1])
-        for rows in groups.values():
-            insts = sorted({o for row in rows for o in row})
-            if len(rows) == 1 or len(insts) < len(rows):
-                total += sum(min(row.values()) for row in rows)
-                continue
-            cost = np.array([[row.get(o, BIG) for o in insts] for row in rows], dtype=np.int64)
-            total += _solve(cost) or sum(min(row.values()) for row in rows)
-        return total
-
-    def _carry_per_instance(self, node: Node, leaf: Leaf, memo: dict) -> tuple[str, dict[int, int]] | None:
-        """(T, instance -> the leaf's least carries with it) when the leaf's one path takes an
-        instance of T for itself that is not bound yet; else None."""
-        paths = leaf.paths.get(node.q[leaf.index]) or []
-        if len(paths) != 1:
-            return None
-        atoms = [leaf.atoms[k] for k in paths[0]]
-        taken = sorted({a.types[0] for a in atoms if a.verb == "pickup"
-                        and leaf.exclusive("pickup", a.types[0]) and bound(node, leaf.index, a.types[0]) < 0})
-        if len(taken) != 1 or (leaf.index, taken[0]) in memo["fixed"]:
-            return None  # a type the root's search fixed: its one region is in the memo
-        t = taken[0]
-        sim = node.sim
-        objs = [o for o in self.x.by_type.get(t, []) if o not in node.claimed]
-        if any(not sim.flags[o] & PRESENT for o in objs):
-            return None  # slices still to come: no list of instances yet
-        by_anchor: dict[int, int] = {}
-        out = {}
-        for o in objs:
-            a = self.nav.anchor(sim, o)
-            if a < 0:
-                continue
-            if a not in by_anchor:
-                by_anchor[a] = self._carries(node, leaf, memo, fixed=(t, a))
-            out[o] = by_anchor[a]
-        return (t, out) if out else None
-
-    def _carries(self, node: Node, leaf: Leaf, memo: dict, fixed: tuple[str, int] | None = None) -> int:
-        """The least walking the leaf's remaining carries need, one instance per type (bounds.py);
-        `fixed`: (type, region) of a type's instance."""
-        paths = leaf.paths.get(node.q[leaf.index]) or []
-        if not paths:
-            return 0
-        sim = node.sim
-        held = {t: sim.holder[o] for t, o in node.bind[leaf.index] if sim.holder[o] >= 0}
-        best = None
-        for path in paths:
-            atoms = [(leaf.atoms[k].verb, leaf.atoms[k].types) for k in path]
-            picked = frozenset(types[0] for verb, types in atoms if verb == "pickup")
-
-            def anchors(t: str, picked: frozenset[str] = picked) -> tuple[int, ...]:
-                if fixed is not None and t == fixed[0]:
-                    return (fixed[1],)
-                return self._anchors_of(node, leaf, t, "pickup" if t in picked else "put", memo)
-
-            legs = carry_legs(atoms, held)
-            if not legs:
-                return 0
-            if held:
-                val = joint_min(legs, anchors, self.rr,
-                                lambda r, a: self._robot_walks(node, np.array(a, dtype=np.int64))[:, r])
-            else:  # a pure function of the legs and the candidate regions: cached across nodes
-                types = sorted({t for leg in legs for t in leg if isinstance(t, str)})
-                key = (tuple(legs), tuple(anchors(t) for t in types))
-                val = self._carry_cache.get(key, -1)
-                if val < 0:
-                    if len(self._carry_cache) > CACHE_LIMIT:
-                        self._carry_cache.clear()
-                    val = self._carry_cache[key] = joint_min(legs, anchors, self.rr, _no_robot)
-            best = val if best is None else min(best, val)
-            if not best:
-                break
-        return best or 0
+            leaf_chains(self._near, self.rr, node, rows, chain)
+        return total, makespan_bound(self.x, node, total, chain)
 
     @staticmethod
     def _hand_id(leaf: int, type_: str | None, hands: dict[tuple[int, str], int]) -> int:
@@ -359,11 +296,12 @@ class Heuristic:
             return -2
         return hands.setdefault((leaf, type_), len(hands))
 
-    def _robot_hands(self, node: Node, rows: list[tuple], hands: dict[tuple[int, str], int]) -> list[tuple]:
+    def _robot_hands(self, node: Node, rows: list[EventRow],
+                     hands: dict[tuple[int, str], int]) -> list[tuple[int, bool]]:
         """Per robot (its hand id, whether it stays full until a pending put), as for events."""
         out = []
         sim = node.sim
-        holders = {r[5] for r in rows if r[5] >= 0}
+        holders = {r.holder for r in rows if r.holder >= 0}
         for r in range(len(node.cell)):
             o = sim.hand.get(r, -1)
             if o < 0:
@@ -379,12 +317,12 @@ class Heuristic:
                 out.append((-1, False))
         return out
 
-    def _assignment(self, node: Node, rows: list[tuple], optional: list[tuple[int, ...]],
+    def _assignment(self, node: Node, rows: list[EventRow], optional: list[tuple[int, ...]],
                     hands: dict[tuple[int, str], int], carry: int) -> int:
         """The largest of three bounds on the walking still needed: the assignment of distinct
         predecessors, the carries plus the pickups' approaches, and the spanning tree (bounds.py)."""
         n_ev = len(rows)
-        anchor_sets = [r[2] for r in rows]
+        anchor_sets = [r.anchors for r in rows]
         cols = anchor_sets + optional
         flat_a = [a for s in anchor_sets for a in (s or (-1,))]
         flat_b = [b for s in cols for b in (s or (-1,))]
@@ -400,15 +338,15 @@ class Heuristic:
             sub[b_idx < 0, :] = 0
             sub[:, a_idx < 0] = 0
         pred = np.minimum.reduceat(np.minimum.reduceat(sub, b_starts, axis=0), a_starts, axis=1)
-        robot = self._robot_walks(node, a_idx)
+        robot = self.robot_walks(node, a_idx)
         robot = np.minimum.reduceat(robot, a_starts, axis=0).T  # robots x events
         cost = np.vstack([pred, robot]).T.astype(np.int64)  # events x (preds + robots)
         if empty:
             cost[empty, :] = 0
         np.minimum(cost, BIG, out=cost)
-        leaf = np.array([r[0] for r in rows])
-        pos = np.array([r[1] for r in rows])
-        kind = np.array([r[3] for r in rows])
+        leaf = np.array([r.leaf for r in rows])
+        pos = np.array([r.pos for r in rows])
+        kind = np.array([r.kind for r in rows])
         n_pred = len(cols)
         ev_cols = cost[:, :n_ev]
         # a later (or the same) event of one's own leaf cannot come before
@@ -418,9 +356,9 @@ class Heuristic:
         ev_cols[same | later] = BIG
         # a carried object's put: after its pickup or a hands-full action, never another pick/put
         for i, r in enumerate(rows):
-            if r[3] != PUT:
+            if r.kind != PUT:
                 continue
-            carried, holder = r[4], r[5]
+            carried, holder = r.carried, r.holder
             if carried < 0 and holder < 0:
                 continue
             bad = kind != OTHER
@@ -428,8 +366,6 @@ class Heuristic:
                 bad = bad.copy()
                 bad[carried] = False
             ev_cols[i, bad] = BIG
-            if n_pred > n_ev:
-                pass  # optional events may be hands-full actions
             if carried >= 0:
                 cost[i, n_pred:] = BIG
             else:
@@ -437,17 +373,20 @@ class Heuristic:
                 cost[i, n_pred:] = BIG
                 cost[i, n_pred + holder] = keep
         cost[:, :n_ev] = ev_cols
+        self.work += cost.size + EVAL_WORK
         self._hand_rules(node, rows, cost, n_ev, n_pred, hands)
-        walk = _solve(_with_last(cost, n_ev))
+        walk = solve(_with_last(cost, n_ev))
+        if self.light:
+            return walk
         # pickups are never inside a carry (one hand): their approaches add to the carries'
         # binding-consistent minimum
         alone = kind == PICKUP
         approach = cost.copy()
         approach[~alone] = np.where(approach[~alone] >= BIG, BIG, 0)
-        walk = max(walk, carry + _solve(_with_last(approach, n_ev)))
+        walk = max(walk, carry + solve(_with_last(approach, n_ev)))
         compound = self._approach_and_carry(node, rows, cols, cost)
         if compound is not None:
-            walk = max(walk, _solve(_with_last(compound, n_ev)))
+            walk = max(walk, solve(_with_last(compound, n_ev)))
         # the spanning tree over the events of one known region (an event with several candidate
         # regions would join far groups at no cost; leaving events out keeps it a bound)
         fixed = [i for i, s in enumerate(anchor_sets) if len(s) == 1]
@@ -456,33 +395,33 @@ class Heuristic:
             walk = max(walk, spanning_walk(ev, np.minimum(robot[:, fixed].min(axis=0), BIG)))
         return walk
 
-    def _approach_and_carry(self, node: Node, rows: list[tuple], cols: list[tuple[int, ...]],
+    def _approach_and_carry(self, node: Node, rows: list[EventRow], cols: list[tuple[int, ...]],
                             cost: np.ndarray) -> np.ndarray | None:
         """The assignment over the pickups of their approach and carry as one walk, from the
         predecessor through one cell of the pickup's region to the put's region (a region-level step
         may reach the object at one end of its region and leave from the other); a held object's
         put keeps the holder's walk. These walks are disjoint parts of the robots' walks (an approach
         has the hand empty, a carry full): summed, a bound. None when no pickup is carried."""
-        legs = {r[4]: i for i, r in enumerate(rows) if r[3] == PUT and r[4] >= 0 and r[2]}
-        legs = {k: i for k, i in legs.items() if rows[k][3] == PICKUP and rows[k][2]}
-        field, region_idx = self.field, self.nav.region_idx
-        cells_of = {k: np.concatenate([region_idx[a] for a in rows[k][2]]) for k in legs}
+        legs = {r.carried: i for i, r in enumerate(rows) if r.kind == PUT and r.carried >= 0 and r.anchors}
+        legs = {k: i for k, i in legs.items() if rows[k].kind == PICKUP and rows[k].anchors}
+        region_idx = self.nav.region_idx
+        cells_of = {k: np.concatenate([region_idx[a] for a in rows[k].anchors]) for k in legs}
         cells_of = {k: c for k, c in cells_of.items() if len(c)}  # an instance no cell reaches: no leg
         if not cells_of:
             return None
         union = np.unique(np.concatenate(list(cells_of.values())))  # only the cells the pickups use
         src = np.empty((cost.shape[1], len(union)), dtype=np.int64)
         for j, anchors in enumerate(cols):
-            src[j] = field[np.ix_(np.array(anchors, dtype=np.int64), union)].min(axis=0) if anchors else 0
+            src[j] = self._near(anchors)[union] if anchors else 0
         src[len(cols):] = self._robot_walks_to_cells(node, union)
         np.minimum(src, BIG, out=src)
         out = np.where(cost >= BIG, BIG, 0)
         for i, r in enumerate(rows):
-            if r[3] == PUT and r[4] < 0 and r[5] >= 0:
+            if r.kind == PUT and r.carried < 0 and r.holder >= 0:
                 out[i] = cost[i]  # a held object's put: the holder's walk to it
         for k, cells in cells_of.items():
             i = legs[k]
-            to_put = np.minimum(field[list(rows[i][2])][:, cells].min(axis=0), BIG)
+            to_put = np.minimum(self._near(rows[i].anchors)[cells], BIG)
             walks = (src[:, np.searchsorted(union, cells)] + to_put[None, :]).min(axis=1)
             out[k] = np.where(cost[k] >= BIG, BIG, np.minimum(walks, BIG))
         return out
@@ -498,22 +437,22 @@ class Heuristic:
                     out[r] = (dm[np.ix_(stand, cells)] + np.array(reach[1])[:, None]).min(axis=0)
         return out
 
-    def _hand_rules(self, node: Node, rows: list[tuple], cost: np.ndarray, n_ev: int, n_pred: int,
+    def _hand_rules(self, node: Node, rows: list[EventRow], cost: np.ndarray, n_ev: int, n_pred: int,
                     hands: dict[tuple[int, str], int]) -> None:
         """One hand: a pickup never follows a moment the hand is full until a pending put; an event
         that needs the hand to hold X (a put of X, an action done while holding X) follows only a
         moment the hand may hold X. Optional events: hand unknown."""
         robot = self._robot_hands(node, rows, hands)
         n_opt = n_pred - n_ev
-        after = np.array([r[7] for r in rows] + [-1] * n_opt + [h for h, _ in robot], dtype=np.int64)
-        full = np.array([r[8] for r in rows] + [False] * n_opt + [f for _, f in robot], dtype=bool)
-        kind = np.array([r[3] for r in rows])
-        need = np.array([r[6] for r in rows], dtype=np.int64)
+        after = np.array([r.after for r in rows] + [-1] * n_opt + [h for h, _ in robot], dtype=np.int64)
+        full = np.array([r.full for r in rows] + [False] * n_opt + [f for _, f in robot], dtype=bool)
+        kind = np.array([r.kind for r in rows])
+        need = np.array([r.need for r in rows], dtype=np.int64)
         bad = (kind == PICKUP)[:, None] & full[None, :]
         bad |= (need >= 0)[:, None] & (after[None, :] != -1) & (after[None, :] != need[:, None])
         cost[bad] = BIG
 
-    def _robot_walks(self, node: Node, a_idx: np.ndarray) -> np.ndarray:
+    def robot_walks(self, node: Node, a_idx: np.ndarray) -> np.ndarray:
         """anchors x robots: the fewest steps from where each robot may stand to each anchor."""
         if not len(a_idx):
             return np.zeros((0, len(node.cell)), dtype=np.int64)
@@ -525,67 +464,6 @@ class Heuristic:
                     out[:, r] = walks.min(axis=1)
         return out
 
-    def _chains(self, node: Node, rows: list[tuple], chain: dict[int, tuple[int, int]]) -> None:
-        """Per leaf: (steps for the first robot to reach its next event, events + carry legs)."""
-        cells = list(node.cell)
-        by_leaf: dict[int, list[tuple]] = {}
-        for r in rows:
-            by_leaf.setdefault(r[0], []).append(r)
-        for li, evs in by_leaf.items():
-            first = evs[0][2]
-            reach = int(self.field[list(first)][:, cells].min()) if first else 0
-            length = 0
-            for r in evs:
-                length += 1
-                if r[3] == PUT and r[4] >= 0 and r[2] and rows[r[4]][2]:
-                    leg = self.rr[np.ix_(list(rows[r[4]][2]), list(r[2]))].min()
-                    length += int(min(leg, BIG))
-            chain[li] = (min(reach, BIG), length)
-
-    def _makespan(self, node: Node, remaining: int, chain: dict[int, tuple[int, int]]) -> int:
-        p = self.p
-        x = self.x
-        n = p.n_robots
-        work = -(-(sum(node.clock) + remaining) // n)
-        min_clock = min(node.clock)
-        done_lb: dict[str, int] = {}
-
-        def node_done(name: str) -> int:
-            hit = done_lb.get(name)
-            if hit is not None:
-                return hit
-            slot = x.slot[name]
-            if node.done_t[slot] >= 0:
-                val = node.done_t[slot]
-            elif name in p.leaf_index:
-                li = p.leaf_index[name]
-                first_reach, length = chain.get(li, (0, 0))
-                start = node.leaf_t[li]
-                if start == 0:
-                    if p.precedence:
-                        start = max([node_done(g) for g in p.gates[li]], default=0)
-                    else:
-                        start = node.last_done
-                    start = max(start, min_clock + first_reach)
-                val = start + length
-            else:
-                nl = p.nonleaves[p.nonleaf_index[name]]
-                val = max((node_done(c) for c in nl.children), default=0) if nl.pairs is not None else 0
-            done_lb[name] = val
-            return val
-
-        best = max(node.ms, work)
-        for li in chain:
-            best = max(best, node_done(p.leaves[li].name))
-        return best
-
-
-def _solve(cost: np.ndarray) -> int:
-    """The cheapest assignment (0 when none avoids a forbidden pair: cannot happen when solvable)."""
-    r_ind, c_ind = linear_sum_assignment(cost)
-    total = int(cost[r_ind, c_ind].sum())
-    return 0 if total >= BIG else total
-
 
 def _with_last(cost: np.ndarray, n_ev: int) -> np.ndarray:
     """The cost matrix with one more row, "the last event": some pending event is no pending event's
@@ -594,7 +472,3 @@ def _with_last(cost: np.ndarray, n_ev: int) -> np.ndarray:
     last = np.full((1, cost.shape[1]), BIG, dtype=cost.dtype)
     last[0, :n_ev] = 0
     return np.vstack([cost, last])
-
-
-def _no_robot(robot: int, anchors: tuple[int, ...]) -> np.ndarray:
-    raise AssertionError("no robot holds anything for these carries")

@@ -24,6 +24,7 @@ class Objective:
     name: ObjectiveName
     description: str
     solo_seeds: bool  # worth seeding with single-robot plans (one well-placed robot often wins)
+    makespan_bound: bool  # does scoring read the completion-time bound (`Node.ms_lb`)?
 
     def cost(self, node: Node) -> int:
         """The objective of a goal node, in search units."""
@@ -74,6 +75,7 @@ class SummedCost(Objective):
     name: ObjectiveName = "min"
     description = "moves + actions summed over robots"
     solo_seeds = True
+    makespan_bound = False
 
     def cost(self, node: Node) -> int:
         return node.g
@@ -113,6 +115,7 @@ class Makespan(Objective):
     name: ObjectiveName = "minmax"
     description = "completion time (steps), ties broken by moves + actions summed over robots"
     solo_seeds = False
+    makespan_bound = True
 
     def cost(self, node: Node) -> int:
         return MS_WEIGHT * node.ms + node.g

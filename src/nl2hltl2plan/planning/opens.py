@@ -1,12 +1,13 @@
-"""Support opens every completion of a node needs (summed-cost bound, `heuristic.py`): one action
-each, on top of the events and the walking."""
+"""Support opens and closes every completion of a node needs (summed-cost bound, `heuristic.py`):
+one action each, on top of the events and the walking."""
 
 from __future__ import annotations
 
 from nl2hltl2plan.planning.model import DONE, Leaf
 from nl2hltl2plan.planning.state import Expander, Node, bound
 from nl2hltl2plan.planning.support import blockers
-from nl2hltl2plan.worlds.simulator import PRESENT
+from nl2hltl2plan.worlds.effects import RUNS_CLOSED
+from nl2hltl2plan.worlds.simulator import OPEN, PRESENT
 
 
 def forced_opens(x: Expander, required: set[int], node: Node) -> int:
@@ -70,3 +71,41 @@ def _path_opens(x: Expander, node: Node, leaf: Leaf,
         if union and not need:
             some.append(frozenset(union))
     return out, some
+
+
+def forced_closes(x: Expander, required: set[int], node: Node) -> int:
+    """Support closes every completion needs: an appliance that runs only closed (the microwave)
+    must be closed before a pending `toggle_on` of it when every path of the leaf first puts
+    something into it (the put leaves it open) or when every candidate is open now. One close per
+    such type at least (two heat tasks may share one close); none for a type a leaf closes itself."""
+    leaf_closes = {a.types[0] for lf in x.p.leaves if node.q[lf.index] != DONE
+                   for a in lf.atoms if a.verb == "close"}
+    types: set[str] = set()
+    for lf in x.p.leaves:
+        if node.q[lf.index] == DONE or lf.index not in required:
+            continue
+        paths = lf.paths.get(node.q[lf.index]) or []
+        found = [_needs_close(x, node, lf, path) for path in paths]
+        if found and all(found) and len(set(found)) == 1:
+            types.add(found[0])
+    return len(types - leaf_closes)
+
+
+def _needs_close(x: Expander, node: Node, leaf: Leaf, path: tuple[int, ...]) -> str:
+    """The run-closed appliance type this path must find closed after it is open, or ""."""
+    filled: set[str] = set()
+    for k in path:
+        atom = leaf.atoms[k]
+        target = atom.types[-1]
+        if target not in RUNS_CLOSED:
+            continue
+        if atom.verb == "put":
+            filled.add(target)
+        elif atom.verb == "close":
+            return ""
+        elif atom.verb == "toggle_on":
+            b = bound(node, leaf.index, target)
+            cands = [b] if b >= 0 else x.by_type.get(target, [])
+            if target in filled or (cands and all(node.sim.flags[o] & OPEN for o in cands)):
+                return target
+    return ""

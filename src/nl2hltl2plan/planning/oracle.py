@@ -84,8 +84,7 @@ def plain_recipe(task: BaseTask) -> list[list[str] | str]:
         if kind == "clean_place":
             seq += [f"put({held},SinkBasin)", "toggle_on(Faucet)", "toggle_off(Faucet)"]
         elif kind == "heat_place":
-            seq += [f"put({held},Microwave)", "close(Microwave)", "toggle_on(Microwave)",
-                    "toggle_off(Microwave)"]
+            seq += [f"put({held},Microwave)", "toggle_on(Microwave)", "toggle_off(Microwave)"]
         else:
             seq += [f"put({held},Fridge)"]
         if r not in (None, app):

@@ -146,12 +146,12 @@ class Searcher:
     # ------------------------------------------------------------ AWA*
     def awa(self, root: Node, incumbent: Node | None, w_order: float, w_stop: float,
             max_expansions: int | None = None, max_nodes: int | None = None,
-            max_generated: int | None = None) -> Node | None:
+            max_generated: int | None = None, max_work: int | None = None) -> Node | None:
         """Anytime weighted A* with deferred evaluation: a child enters the open list with its
         parent's bound (valid for it too) and gets its own heuristic when it is first popped.
-        Stops when the incumbent is proven within w_stop, the open list is empty, `max_expansions`
-        or `max_generated` are spent or more than `max_nodes` are held (with an incumbent), or at
-        the deadline."""
+        Stops when the incumbent is proven within w_stop, the open list is empty, `max_expansions`,
+        `max_generated` or `max_work` (the heuristic's work, `Heuristic.work`) are spent or more
+        than `max_nodes` are held (with an incumbent), or at the deadline."""
         stats, obj = self.stats, self.obj
         best = incumbent
         ub: float = self.cost(best) if best is not None else float("inf")
@@ -163,6 +163,7 @@ class Searcher:
         table = obj.table(self.x.cap_class, self.x.n_objects)
         table.record(self.key(root), root)
         expansions = generated = 0
+        work_end = None if max_work is None else self.h.work + max_work
         stop = "exhausted"
         while open_heap:
             self.check_time()
@@ -175,7 +176,8 @@ class Searcher:
             held = len(open_heap) + len(table)
             stats.peak_nodes = max(stats.peak_nodes, held)
             if best is not None and ((max_expansions is not None and expansions >= max_expansions)
-                                     or (max_generated is not None and generated >= max_generated)):
+                                     or (max_generated is not None and generated >= max_generated)
+                                     or (work_end is not None and self.h.work >= work_end)):
                 stop = "budget"
                 break
             if best is not None and max_nodes is not None and held > max_nodes:

@@ -86,21 +86,6 @@ class Node:
         return out[::-1]
 
 
-def _subtree(sim: SimState, root: int) -> list[int]:
-    """`root` and everything inside it (SimState.subtree, without the full scan for leaves)."""
-    parent = sim.parent
-    if root not in parent:
-        return [root]
-    out = [root]
-    k = 0
-    while k < len(out):
-        p = out[k]
-        if p in parent:
-            out.extend(i for i, q in enumerate(parent) if q == p)
-        k += 1
-    return out
-
-
 def put(values: tuple[int, ...], i: int, value: int) -> tuple[int, ...]:
     out = list(values)
     out[i] = value
@@ -302,17 +287,17 @@ class Expander:
 
         o = objs[0]
         if verb == "pickup":
-            return chain(o) + _subtree(sim, o)
+            return chain(o) + sim.subtree(o)
         if verb == "put":
             rec = chain(objs[1])
             faucets = [f for y in rec for f in self.comp.faucets_of.get(y, ())]
-            return _subtree(sim, o) + rec + faucets
+            return sim.subtree(o) + rec + faucets
         if verb in ("open", "close"):
             return chain(o)
         if verb in ("toggle_on", "toggle_off"):
-            out = chain(o) + _subtree(sim, o)
+            out = chain(o) + sim.subtree(o)
             if self.serves[o] >= 0:
-                out += _subtree(sim, self.serves[o])
+                out += sim.subtree(self.serves[o])
             return out
         if verb == "slice":
             knife = sim.hand.get(robot, -1)

@@ -244,11 +244,15 @@ class SimState:
         return self.c.ids[i]
 
     def subtree(self, root: int) -> list[int]:
+        """`root` and everything inside it (a list scan only for objects that contain something:
+        the `in` test runs in C, and most objects contain nothing)."""
+        parent = self.parent
         out = [root]
         k = 0
         while k < len(out):
             p = out[k]
-            out.extend(i for i, q in enumerate(self.parent) if q == p)
+            if p in parent:
+                out.extend(i for i, q in enumerate(parent) if q == p)
             k += 1
         return out
 

@@ -4,9 +4,10 @@
 the leaf specifications a perfect translator would give (`leaf_specs`), shared by the oracle spec
 converter (planning) and the offline language stage; its goal (`goal`) is what the checker tests.
 
-Recipes (O object, C container, R receptacle, L lamp). Leaves carry no opens: the planner inserts
-`open(X)` where the state needs it (support actions). With `leaf_specs(..., support=True)`, for a
-robot that runs recipes literally, the opens are written in: `[open(X)]` only when X is openable or
+Recipes (O object, C container, R receptacle, L lamp). Leaves carry no opens and no closes: the
+planner inserts `open(X)` where the state needs it and closes an open appliance before switching it
+on (support actions). With `leaf_specs(..., support=True)`, for a robot that runs recipes
+literally, they are written in: `[open(X)]` only when X is openable or
 all instances sit in a closed openable, e.g. the demo's dishwasher racks; `acc(O)` = open(P) first
 when every instance of O starts inside a closed openable P:
 - place:              acc(O), pickup(O), [open(R)], put(O,R)
@@ -17,7 +18,8 @@ when every instance of O starts inside a closed openable P:
                       pickup(O), [open(R)], put(O,R)
 - heat_place:         acc(O), pickup(O), open(Microwave), put(O,Microwave), close(Microwave),
                       toggle_on(Microwave), toggle_off(Microwave), open(Microwave), pickup(O),
-                      [open(R)], put(O,R)        (the microwave must be closed to run)
+                      [open(R)], put(O,R)        (the microwave must be closed to run; its
+                      close, like the opens, is a support action: written only with support=True)
 - cool_place:         acc(O), pickup(O), open(Fridge), put(O,Fridge), pickup(O), [open(R)], put(O,R)
 When R is the appliance itself (chilled tomato in the fridge), the recipe stops once the object is in
 it and treated. Sliced objects: pickup(K), slice(O), put(K,KR), then the recipe on OSliced starting
@@ -315,6 +317,8 @@ class BaseTask(BaseModel):
             if support:
                 parts.append(alternatives)
 
+        closes = opens  # support actions too: written only for a robot that runs recipes literally
+
         def put_into(obj: str, rec: str | None) -> None:
             opens(_open_for_put(world, rec, demand))
             add(f"put({obj},{rec})")
@@ -349,7 +353,8 @@ class BaseTask(BaseModel):
                 put_into(held, r)
         elif kind == "heat_place":
             opens([["open(Microwave)"]])
-            add(f"put({held},Microwave)", "close(Microwave)")  # it runs only when closed
+            add(f"put({held},Microwave)")
+            closes([["close(Microwave)"]])  # it runs only closed: the planner closes it when it is open
             add("toggle_on(Microwave)", "toggle_off(Microwave)")
             if r not in (None, "Microwave"):
                 opens([["open(Microwave)"]])
