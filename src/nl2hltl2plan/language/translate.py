@@ -20,7 +20,7 @@ from collections.abc import Callable
 from typing import Literal, Protocol
 
 from nl2hltl2plan.errors import HTTError, LLMError, Nl2Hltl2PlanError, WorldError
-from nl2hltl2plan.language import stages
+from nl2hltl2plan.language import handover, stages
 from nl2hltl2plan.language.backends import PARSERS
 from nl2hltl2plan.language.grounding import AffordanceLookup, Grounder, world_lookup
 from nl2hltl2plan.language.htt_build import build_htt
@@ -84,6 +84,9 @@ def translate(
         raise HTTError("empty instruction")
     types = set(world.object_types()) if world is not None else None
     scene = world.name if world is not None else None
+    if backend in PARSERS and handover.is_handover(world):  # the four-arm worlds' own phrases
+        assert isinstance(world, World)
+        return handover.translate_handover(instruction, world)
     if backend in PARSERS:
         look = world_lookup(world) if isinstance(world, World) else None
         res = _parse(backend, instruction, types, scene, strict, look)
