@@ -14,37 +14,37 @@ REPHRASINGS: dict[int, list[str]] = {
     3: [
         "Move the three pillars to regions E, F and G. No block may be placed on any area other than the "
         "target regions.",
-        "Transfer all three objects to the side of arm a and arm b. Each block must not be placed on the area "
-        "other than the target region.",
+        "Transfer all three objects to the side of arm a and arm b. Each block must not be placed on the "
+        "area other than the target region.",
     ],
     4: [
-        "Move the three blocks to the opposite side. No arm may touch the blue block until an arm has touched "
-        "the red block. Finally, put the yellow block back to region G.",
+        "Move the three blocks to the opposite side. No arm may touch the blue block until an arm has "
+        "touched the red block. Finally, put the yellow block back to region G.",
         "Transfer all blocks into the opposite regions. The blue block cannot be picked up until the red "
         "block has been picked up. After all of this, place the yellow block on region G.",
     ],
     5: [
-        "Swap the positions of the red and blue blocks; the red block must be placed before the blue block. "
-        "Put the yellow block on the opposite side at any time.",
-        "Exchange the red block and the blue block. The blue block should be placed after the red block. At "
-        "any time, move the yellow block to the other side.",
+        "Swap the positions of the red and blue blocks; the red block must be placed before the blue "
+        "block. Put the yellow block on the opposite side at any time.",
+        "Exchange the red block and the blue block. The blue block should be placed after the red block. "
+        "At any time, move the yellow block to the other side.",
     ],
     6: [
-        "Put the three blocks separately into regions G, H and I. The red block must be placed before the "
-        "blue block.",
-        "Place the red block before the blue block. Move all three objects to region G, H and I, one block "
-        "per region.",
+        "Put the three blocks separately into regions G, H and I. The red block must be placed before the"
+        " blue block.",
+        "Place the red block before the blue block. Move all three objects to region G, H and I, one "
+        "block per region.",
     ],
     7: [
-        "Place the three blocks one by one on region I, the red block before the blue block; no blocks can be "
-        "placed on regions F, G and H in the meantime.",
-        "Move the three objects one after another to region I. The red block should be placed before the blue "
-        "block. No blocks may be put on region F, G or H during this period.",
+        "Place the three blocks one by one on region I, the red block before the blue block; no blocks "
+        "can be placed on regions F, G and H in the meantime.",
+        "Move the three objects one after another to region I. The red block should be placed before the "
+        "blue block. No blocks may be put on region F, G or H during this period.",
     ],
     8: [
-        "First move the yellow block to region I, then move the yellow block to region G, and put the red and "
-        "blue blocks on any empty region at any time.",
-        "At any time, move the red and blue blocks to any free region. First place the yellow block on region "
-        "I, then place the yellow block on region G.",
+        "First move the yellow block to region I, then move the yellow block to region G, and put the red"
+        " and blue blocks on any empty region at any time.",
+        "At any time, move the red and blue blocks to any free region. First place the yellow block on "
+        "region I, then place the yellow block on region G.",
     ],
 }

@@ -275,6 +275,11 @@ def _goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
         return f" G{len(clauses) - 1} "
 
     mods = rf"((?:\s*,?\s*{MOD})*)"
+
+    def matched(x: re.Match[str], k: int) -> str:  # groups from k: blocks, modifiers, place, modifiers
+        place, text = m.places[int(x.group(k + 2))], x.group(0).strip()
+        return goal(_blocks(m, x.group(k)), place, text, x.group(k + 1) + x.group(k + 3))
+
     _consume(
         m,
         r"\b(?:exchange|swap|switch|interchange|trade)\s+(?:the\s+)?(?:positions?\s+|places?\s+|locations?\s+|spots?\s+)?(?:of\s+)?B(\d+)(?:\s+(?:s\s+)?(?:positions?|places?|locations?))?",
@@ -288,24 +293,20 @@ def _goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
     _consume(
         m,
         rf"\b{VERB}\s+B(\d+){mods}\s+(?:back\s+)?{PREP}\s+P(\d+){mods}",
-        lambda x: goal(
-            _blocks(m, x.group(1)), m.places[int(x.group(3))], x.group(0).strip(), x.group(2) + x.group(4)
-        ),
+        lambda x: matched(x, 1),
     )
     _consume(
         m,
         rf"\bB(\d+)\s+(?:should|must|needs?\s+to|has\s+to|have\s+to|will)?\s*(?:be\s+)?{DONE}{mods}\s+(?:back\s+)?"
         rf"{PREP}\s+P(\d+){mods}",
-        lambda x: goal(
-            _blocks(m, x.group(1)), m.places[int(x.group(3))], x.group(0).strip(), x.group(2) + x.group(4)
-        ),
+        lambda x: matched(x, 1),
     )
     # a verb shared with the clause before: "put the red block in H, then the blue block in I"
     _consume(
         m,
-        rf"(?<=G\d)(?P<link>\s*,?\s*(?:and\s+)?(?:then\s+)?)B(\d+){mods}\s+(?:back\s+)?{PREP}\s+P(\d+){mods}",
-        lambda x: x.group("link")
-        + goal(_blocks(m, x.group(2)), m.places[int(x.group(4))], x.group(0).strip(), x.group(3) + x.group(5)),
+        rf"(?<=G\d)(?P<link>\s*,?\s*(?:and\s+)?(?:then\s+)?)B(\d+){mods}\s+(?:back\s+)?{PREP}\s+P(\d+)"
+        rf"{mods}",
+        lambda x: x.group("link") + matched(x, 2),
     )
     _markers(m, clauses)
     return clauses
