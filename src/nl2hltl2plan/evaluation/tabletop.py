@@ -211,6 +211,7 @@ def run_study(task: TabletopTask, seed: int, layouts: int = STUDY_LAYOUTS) -> di
                 "instruction": text,
                 **_row(style, outcomes),
                 "failures": sorted({r for o in outcomes if not o.success for r in o.reasons[:1]})[:2],
+                "per_layout": [{"success": o.success, "cost": o.cost} for o in outcomes],
             }
         )
     for r in rows:
