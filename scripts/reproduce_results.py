@@ -76,10 +76,9 @@ def stamp(report: Path, command: list[str], seconds: float) -> None:
     """Replace the report's provenance section with this run's command, commit and machine."""
     text = report.read_text() if report.exists() else ""
     text = text.split("\n" + PROVENANCE)[0].rstrip("\n")
-    text += (
-        f"\n\n{PROVENANCE}\n\nCommand: `{' '.join(command)}`  \nCommit: {commit()}  \nMachine: {machine()}  \n"
-        f"Wall time: {seconds:.0f} s\n"
-    )
+    lines = [PROVENANCE, "", f"Command: `{' '.join(command)}`  ", f"Commit: {commit()}  "]
+    lines += [f"Machine: {machine()}  ", f"Wall time: {seconds:.0f} s"]
+    text += "\n\n" + "\n".join(lines) + "\n"
     report.write_text(text)
 
 
