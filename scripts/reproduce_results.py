@@ -59,7 +59,8 @@ def commit() -> str:
         return subprocess.run(["git", *args], cwd=ROOT, capture_output=True, text=True).stdout.strip()
 
     head = git("rev-parse", "--short", "HEAD") or "unknown"
-    dirty = bool(git("status", "--porcelain", "--untracked-files=no"))
+    # the code's state, not the results this run is writing
+    dirty = bool(git("status", "--porcelain", "--untracked-files=no", "--", ".", ":!results"))
     return head + (" + uncommitted changes" if dirty else "")
 
 

@@ -2,10 +2,12 @@
 
 Each of the eight tasks has its hierarchical spec written as data (`data/handover_tasks.json`, with
 the reading of the task text it encodes). For each task and each seeded instance (block placement
-and arm poses), the cooperative planner (`planning.coop`) plans; the plan is executed step by step
-by the handover simulator and judged against the spec (`HierarchicalSpec.check_trace`). The report
-gives success rate, cost and runtime per task beside the paper's Table III, and says which of the
-eight instructions the language stage turns into a spec that agrees with the written one.
+and arm poses), the cooperative planner (`planning.coop`, a budget in expansions) plans from the
+written spec or, with a language backend, from the language stage's spec of the instruction on that
+instance (the paper's whole pipeline); the plan is executed step by step by the handover simulator
+and judged against the written spec. `language_equal` says whether the language stage's spec equals
+the written one node by node (`specs_equivalent`: Spot equivalence). The report gives success rate,
+cost and runtime per task beside the paper's Table III.
 """
 
 from __future__ import annotations

@@ -13,7 +13,9 @@ SMART-LLM's metrics (Kannan et al., arXiv:2309.10062; the scoring script is
   0 when max_trans = trans otherwise, else (max + 1 - stages) / (max - trans), clipped to 0..1.
 - Exe (executability): successful actions / attempted actions of the executed plan (0 when no
   plan was made: nothing could be executed).
-- SR (success): TC = 1 and RU = 1.
+- SR (success): TC = 1 and RU = 1; a task without a stage annotation has no RU and is left out of SR.
+Each row also carries `script`: the five metrics exactly as SMART-LLM's own script computes them
+(`evaluation.smartllm_script`: per entry, +1 per match, no BROKEN check, RU unclipped).
 A task whose team lacks a needed skill is reported infeasible with the reason, before planning; the
 final state is then the initial one. The task without ground truth is listed, not scored.
 """
