@@ -72,7 +72,7 @@ class Goal:
     regions: tuple[str, ...]  # resolved labels (empty for away / start_of)
     text: str
     drop_guard: set[str] = field(default_factory=set)  # atoms that must not happen until the goal holds
-    touch_guard: list[str] = field(default_factory=list)  # "!pick(X) U pick(Y)"
+    touch_guard: list[str] = field(default_factory=list)  # blocks Y: not picked before Y is
 
     def state(self) -> str:
         if self.place.kind == "away":
@@ -93,7 +93,8 @@ class Goal:
         body = f"F {self.state()}"
         if self.drop_guard:
             body = "(" + " & ".join(f'!"{a}"' for a in sorted(self.drop_guard)) + f") U {self.state()}"
-        return " & ".join([f"({g})" for g in self.touch_guard] + [body]) if self.touch_guard else body
+        guards = [f'(!"pick({self.block})" U "pick({y})")' for y in self.touch_guard]
+        return " & ".join([*guards, body])
 
 
 @dataclass
@@ -153,18 +154,14 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
     for blocks, place, explicit, text in pending:
         _guard(goals, blocks, place, explicit, scene, text)
     for x, y in touches:
-        _first_goal(goals, x).touch_guard.append(f'!"pick({x})" U "pick({y})"')
+        _first_goal(goals, x).touch_guard.append(y)
     root = _tree(clauses)
     for x, y in orders:
         _order(root, _first_goal(goals, x), _first_goal(goals, y))
-    return _result(instruction, root, goals, notes)
+    return _result(world.name, instruction, root, goals, notes)
 
 
 # ----- clause patterns --------------------------------------------------------------------------------
-def _consume(m: Marked, pattern: str, make) -> None:
-    m.sub(pattern, make)
-
-
 def _blocks(m: Marked, k: str) -> list[str]:
     return m.blocks[int(k)]
 
@@ -190,8 +187,8 @@ def _orders(m: Marked) -> list[tuple[str, str]]:
         (r"(?:before|earlier\s+than|prior\s+to|ahead\s+of)", False),
         (r"(?:after|later\s+than)", True),
     ):
-        _consume(m, rf"\b{VERB}\s+B(\d+)\s+{word}\s+B(\d+){tail}", lambda x, f=flip: add(x, f))
-        _consume(m, rf"\bB(\d+)\s+{modal}(?:{DONE}\s+)?{word}\s+B(\d+){tail}", lambda x, f=flip: add(x, f))
+        m.sub(rf"\b{VERB}\s+B(\d+)\s+{word}\s+B(\d+){tail}", lambda x, f=flip: add(x, f))
+        m.sub(rf"\bB(\d+)\s+{modal}(?:{DONE}\s+)?{word}\s+B(\d+){tail}", lambda x, f=flip: add(x, f))
     return out
 
 
@@ -203,14 +200,12 @@ def _touch_guards(m: Marked) -> list[tuple[str, str]]:
         return " "
 
     until = r"(?:until|before|unless)"
-    _consume(
-        m,
+    m.sub(
         rf"(?:(?:\bA\s+)?{NEG}|\bno\s+A\s+(?:may|can|should|must|will|is\s+allowed\s+to)?)\s+{TOUCH}\s+B(\d+)\s+{until}\s+(?:A\s+)?(?:has\s+|have\s+|had\s+)?(?:already\s+)?"
         rf"{TOUCHED}\s+B(\d+)",
         add,
     )
-    _consume(
-        m,
+    m.sub(
         rf"\bB(\d+)\s+{NEG}\s+be\s+{TOUCHED}\s+(?:by\s+A\s+)?{until}\s+B(\d+)\s+(?:has\s+been|is|was|had\s+been)\s+"
         rf"(?:already\s+)?{TOUCHED}",
         add,
@@ -232,19 +227,17 @@ def _prohibitions(m: Marked) -> list[tuple[list[str], Place | None, list[str], s
         return " "
 
     down = rf"(?:\s+down)?\s+{PREP}\s+P(?P<p>\d+){PERIOD}"
-    _consume(
-        m,
+    m.sub(
         rf"\bno\s+B(?P<b>\d+)\s+(?:can|may|should|must|will|is\s+allowed\s+to|are\s+allowed\s+to)?\s*(?:ever\s+)?(?:be\s+)?{DROP}{down}",
         add,
     )
-    _consume(m, rf"\bB(?P<b>\d+)\s+{NEG}\s+(?:ever\s+)?be\s+{DROP}{down}", add)
-    _consume(
-        m,
+    m.sub(rf"\bB(?P<b>\d+)\s+{NEG}\s+(?:ever\s+)?be\s+{DROP}{down}", add)
+    m.sub(
         rf"(?:(?:\bA\s+)?{NEG}|\bno\s+A\s+(?:may|can|should|must|will)?)\s+(?:put|place|drop|set|leave|lay)\s+"
         rf"B(?P<b>\d+){down}",
         add,
     )
-    _consume(m, rf"\bnothing\s+(?:can|may|should|must|will)?\s*(?:be\s+)?{DROP}{down}", add)
+    m.sub(rf"\bnothing\s+(?:can|may|should|must|will)?\s*(?:be\s+)?{DROP}{down}", add)
     return out
 
 
@@ -280,30 +273,25 @@ def _goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
         place, text = m.places[int(x.group(k + 2))], x.group(0).strip()
         return goal(_blocks(m, x.group(k)), place, text, x.group(k + 1) + x.group(k + 3))
 
-    _consume(
-        m,
+    m.sub(
         r"\b(?:exchange|swap|switch|interchange|trade)\s+(?:the\s+)?(?:positions?\s+|places?\s+|locations?\s+|spots?\s+)?(?:of\s+)?B(\d+)(?:\s+(?:s\s+)?(?:positions?|places?|locations?))?",
         exchange,
     )
-    _consume(
-        m,
+    m.sub(
         r"\bB(\d+)\s+(?:should\s+|must\s+)?(?:exchange|swap|switch|trade)\s+(?:their\s+)?(?:positions?|places?|locations?|spots?)",
         exchange,
     )
-    _consume(
-        m,
+    m.sub(
         rf"\b{VERB}\s+B(\d+){mods}\s+(?:back\s+)?{PREP}\s+P(\d+){mods}",
         lambda x: matched(x, 1),
     )
-    _consume(
-        m,
+    m.sub(
         rf"\bB(\d+)\s+(?:should|must|needs?\s+to|has\s+to|have\s+to|will)?\s*(?:be\s+)?{DONE}{mods}\s+(?:back\s+)?"
         rf"{PREP}\s+P(\d+){mods}",
         lambda x: matched(x, 1),
     )
     # a verb shared with the clause before: "put the red block in H, then the blue block in I"
-    _consume(
-        m,
+    m.sub(
         rf"(?<=G\d)(?P<link>\s*,?\s*(?:and\s+)?(?:then\s+)?)B(\d+){mods}\s+(?:back\s+)?{PREP}\s+P(\d+)"
         rf"{mods}",
         lambda x: x.group("link") + matched(x, 2),
@@ -317,22 +305,19 @@ def _markers(m: Marked, clauses: list[Clause]) -> None:
         clauses[int(match.group(1))].marker = marker
         return f" G{match.group(1)} "
 
-    _consume(
-        m, rf"\b(?:first(?:ly)?|to\s+begin\s+with|start\s+by){LEAD}G(\d+)", lambda x: set_marker(x, "first")
-    )
-    _consume(
-        m,
+    m.sub(rf"\b(?:first(?:ly)?|to\s+begin\s+with|start\s+by){LEAD}G(\d+)", lambda x: set_marker(x, "first"))
+    m.sub(
         rf"(?:,\s*)?(?:\band\s+)?\b(?:then|after\s+that|afterwards?|next|subsequently|later){LEAD}G(\d+)",
         lambda x: set_marker(x, "then"),
     )
-    _consume(m, rf"\b{AFTER_ALL}{LEAD}G(\d+)", lambda x: set_marker(x, "after_all"))
+    m.sub(rf"\b{AFTER_ALL}{LEAD}G(\d+)", lambda x: set_marker(x, "after_all"))
 
     def anytime(match: re.Match[str]) -> str:
         clauses[int(match.group(1))].together = False
         return f" G{match.group(1)} "
 
-    _consume(m, r"\b(?:at\s+any\s+time|any\s+time|in\s+any\s+order)\s*,?\s*G(\d+)", anytime)
-    _consume(m, r"(?:,\s*)?\band\s+(?=G\d+)", lambda _: " ")
+    m.sub(r"\b(?:at\s+any\s+time|any\s+time|in\s+any\s+order)\s*,?\s*G(\d+)", anytime)
+    m.sub(r"(?:,\s*)?\band\s+(?=G\d+)", lambda _: " ")
 
 
 def _resolve(place: Place, block: str, scene: Scene) -> tuple[str, ...]:
@@ -376,7 +361,7 @@ def _first_goal(goals: list[Goal], block: str) -> Goal:
     mine = [g for g in goals if g.block == block]
     if not mine:
         raise HTTError(f"the instruction orders or guards the {block.lower()} block but gives it no goal")
-    if len({id(g) for g in mine}) > 1 and len(mine) > 1:
+    if len(mine) > 1:
         raise HTTError(f"the {block.lower()} block has {len(mine)} goals: which one is ordered?")
     return mine[0]
 
@@ -434,19 +419,19 @@ def _order(root: Item, a: Goal, b: Goal) -> None:
         raise HTTError(f"cannot order {a.text!r} before {b.text!r}: they belong to different steps")
 
 
-def _result(instruction: str, root: Item, goals: list[Goal], notes: list[str]) -> LanguageResult:
+def _result(scene: str, instruction: str, root: Item, goals: list[Goal], notes: list[str]) -> LanguageResult:
     if len(root.children) == 1:
         root = root.children[0]
     nodes: list[HTTNode] = []
     relations: list[tuple[str, str]] = []
     leaf_specs: dict[str, str] = {}
-    ids: dict[int, str] = {}
+    goal_leaf: dict[int, str] = {}  # id(goal) -> its HTT leaf
 
     def add(item: Item, node_id: str, text: str) -> None:
-        ids[id(item)] = node_id
         if not item.children:
             nodes.append(HTTNode(id=node_id, text=text))
             if item.goal is not None:
+                goal_leaf[id(item.goal)] = node_id
                 leaf_specs[node_id] = item.goal.leaf()
             else:
                 leaf_specs[node_id] = "F(" + " & ".join(g.state() for g in item.joint or []) + ")"
@@ -459,14 +444,6 @@ def _result(instruction: str, root: Item, goals: list[Goal], notes: list[str]) -
 
     add(root, "1", instruction)
     htt = HTT(instruction=instruction, nodes=nodes, relations=relations)
-    for node in htt.nodes:
-        if node.id in leaf_specs:
-            node.actions = None
-    spec = build_spec(htt, action_completion=lambda node: leaf_specs[node.id])
-    return _language_result(instruction, htt, spec, root, goals, ids, leaf_specs, notes)
-
-
-def _language_result(instruction, htt, spec, root, goals, ids, leaf_specs, notes) -> LanguageResult:  # type: ignore[no-untyped-def]
     letter = {id(g): task_letter(k) for k, g in enumerate(goals)}
     tasks = [
         BaseTaskSpec(
@@ -478,51 +455,41 @@ def _language_result(instruction, htt, spec, root, goals, ids, leaf_specs, notes
         )
         for g in goals
     ]
-    before: set[tuple[str, str]] = set()
-
-    def pairs(item: Item) -> None:
-        for i, j in item.before:
-            before.update(
-                (letter[id(a)], letter[id(b)])
-                for a in item.children[i].goals()
-                for b in item.children[j].goals()
-            )
-        for c in item.children:
-            pairs(c)
-
-    pairs(root)
-    constraints = sorted(set(notes))
-    for g in goals:
-        for guard in g.touch_guard:
-            x, y = re.findall(r"pick\((\w+)\)", guard)
-            constraints.append(f"{x.lower()} is not picked up before {y.lower()} is")
-        if g.drop_guard:
-            atoms = ", ".join(sorted(g.drop_guard))
-            constraints.append(f"until {g.block.lower()} is on {g.where()}: none of {atoms}")
-    task_node = {letter[id(g)]: node for g in goals for node, _ in [(ids.get(_leaf_of(root, g), ""), 0)]}
+    task_node = {letter[id(g)]: goal_leaf[id(g)] for g in goals}
     return LanguageResult(
         backend="offline",
         instruction=instruction,
-        scene=None,
+        scene=scene,
         htt=htt,
         tasks=tasks,
-        before=transitive_reduction(before, [t.id for t in tasks]),
+        before=transitive_reduction(_task_pairs(root, letter), [t.id for t in tasks]),
         task_node=task_node,
         leaf_task={v: k for k, v in task_node.items()},
         leaf_specs=dict(leaf_specs),
-        spec=spec,
-        constraints=sorted(set(constraints) | set(_joint_texts(root))),
+        spec=build_spec(htt, action_completion=lambda node: leaf_specs[node.id]),
+        constraints=_constraints(root, goals, notes),
     )
 
 
-def _leaf_of(item: Item, g: Goal) -> int:
-    if item.goal is g:
-        return id(item)
-    for c in item.children:
-        found = _leaf_of(c, g)
-        if found:
-            return found
-    return 0
+def _task_pairs(item: Item, letter: dict[int, str]) -> set[tuple[str, str]]:
+    """Base-task precedence: every goal under an earlier sibling before every goal under a later one."""
+    out = {
+        (letter[id(a)], letter[id(b)])
+        for i, j in item.before
+        for a in item.children[i].goals()
+        for b in item.children[j].goals()
+    }
+    return out.union(*(_task_pairs(c, letter) for c in item.children))
+
+
+def _constraints(root: Item, goals: list[Goal], notes: list[str]) -> list[str]:
+    """The guards and joint goals as text, sorted (the canonical order of `plan --json`)."""
+    out = set(notes) | set(_joint_texts(root))
+    for g in goals:
+        out.update(f"{g.block.lower()} is not picked up before {y.lower()} is" for y in g.touch_guard)
+        if g.drop_guard:
+            out.add(f"until {g.block.lower()} is on {g.where()}: none of {', '.join(sorted(g.drop_guard))}")
+    return sorted(out)
 
 
 def _joint_texts(item: Item) -> list[str]:
