@@ -6,6 +6,7 @@ REPHRASINGS: dict[int, list[str]] = {
         "Move all three blocks to the opposite side. The red one must be placed before the blue one.",
         "Bring the three cubes over to the other side; the blue block should be placed after the red block.",
         "Carry every block into the opposite regions. Place the red block before the blue block.",
+        "Move the 3 blocks across to the opposite side. Red goes before blue.",
     ],
     2: [
         "Place the three blocks into the goal regions H, I and J; each region can hold only one block.",
@@ -16,12 +17,15 @@ REPHRASINGS: dict[int, list[str]] = {
         "target regions.",
         "Transfer all three objects to the side of arm a and arm b. Each block must not be placed on the "
         "area other than the target region.",
+        "Move the three blocks to region E, F and G and never place any block on the other regions.",
     ],
     4: [
         "Move the three blocks to the opposite side. No arm may touch the blue block until an arm has "
         "touched the red block. Finally, put the yellow block back to region G.",
         "Transfer all blocks into the opposite regions. The blue block cannot be picked up until the red "
         "block has been picked up. After all of this, place the yellow block on region G.",
+        "Move all three blocks to the opposite regions. Do not touch the blue block before the red block "
+        "has been touched. At the end, put the yellow block back on region G.",
     ],
     5: [
         "Swap the positions of the red and blue blocks; the red block must be placed before the blue "
@@ -34,17 +38,23 @@ REPHRASINGS: dict[int, list[str]] = {
         " blue block.",
         "Place the red block before the blue block. Move all three objects to region G, H and I, one "
         "block per region.",
+        "The red block should be placed before the blue block. Place the three blocks in region G, H and "
+        "I, one in each.",
     ],
     7: [
         "Place the three blocks one by one on region I, the red block before the blue block; no blocks "
         "can be placed on regions F, G and H in the meantime.",
         "Move the three objects one after another to region I. The red block should be placed before the "
         "blue block. No blocks may be put on region F, G or H during this period.",
+        "Place the three blocks on region I one by one, the red block before the blue block. Meanwhile no"
+        " block may be placed on region F, G or H.",
     ],
     8: [
         "First move the yellow block to region I, then move the yellow block to region G, and put the red"
         " and blue blocks on any empty region at any time.",
         "At any time, move the red and blue blocks to any free region. First place the yellow block on "
         "region I, then place the yellow block on region G.",
+        "Put the yellow block on region I first, then put it on region G. Move the red and blue blocks to"
+        " any empty region at any time.",
     ],
 }

@@ -68,6 +68,7 @@ def test_the_opposite_side_is_resolved_against_where_the_blocks_start():
         ("Put the red block in region K.", "cannot use"),
         ("The red block should be placed before the blue block.", "no goal"),
         ("Put the red block in region H unless it rains.", "rains"),
+        ("Swap the red block and the blue block, placing red first.", "placing"),  # no order is guessed
     ],
 )
 def test_what_the_rules_cannot_read_is_refused_by_name(text, named):

@@ -41,8 +41,9 @@ VERB = r"(?:transfer|move|put|place|bring|carry|take|deliver|relocate|shift|get|
 PREP = r"(?:to|into|onto|on|in|at|towards?|over\s+to|in\s+to|on\s+to)"
 MOD = (
     r"(?:separately|individually|one\s+after\s+another|one\s+by\s+one|one\s+at\s+a\s+time|in\s+turn|each|"
-    r"all|at\s+any\s+time|any\s+time|whenever|as\s+well|too)"
+    r"all|at\s+any\s+time|any\s+time|whenever|as\s+well|too|across|over)"
 )
+GERUND = r"(?:placing|putting|moving|transferring|bringing|carrying|delivering)"
 DONE = r"(?:placed|put|moved|transferred|delivered|carried|brought|done|handled|go|goes)"
 NEG = (
     r"(?:cannot|can\s+not|can\s+t|must\s+not|mustn\s+t|should\s+not|shouldn\s+t|may\s+not|do\s+not|"
@@ -187,7 +188,7 @@ def _orders(m: Marked) -> list[tuple[str, str]]:
         (r"(?:before|earlier\s+than|prior\s+to|ahead\s+of)", False),
         (r"(?:after|later\s+than)", True),
     ):
-        m.sub(rf"\b{VERB}\s+B(\d+)\s+{word}\s+B(\d+){tail}", lambda x, f=flip: add(x, f))
+        m.sub(rf"\b(?:{VERB}|{GERUND})\s+B(\d+)\s+{word}\s+B(\d+){tail}", lambda x, f=flip: add(x, f))
         m.sub(rf"\bB(\d+)\s+{modal}(?:{DONE}\s+)?{word}\s+B(\d+){tail}", lambda x, f=flip: add(x, f))
     return out
 
@@ -200,10 +201,21 @@ def _touch_guards(m: Marked) -> list[tuple[str, str]]:
         return " "
 
     until = r"(?:until|before|unless)"
+    # the other block's touch, active ("until an arm touched Y") or passive ("until Y has been touched")
+    other = (
+        rf"(?:(?:A\s+)?(?:has\s+|have\s+|had\s+)?(?:already\s+)?{TOUCHED}\s+B(\d+)|B(\d+)\s+"
+        rf"(?:has\s+been|have\s+been|is|was|had\s+been|gets)\s+(?:already\s+)?{TOUCHED})"
+    )
+
+    def add_either(match: re.Match[str]) -> str:
+        y = match.group(2) or match.group(3)
+        out.append((_one(m, match.group(1), "a touch rule"), _one(m, y, "a touch rule")))
+        return " "
+
     m.sub(
-        rf"(?:(?:\bA\s+)?{NEG}|\bno\s+A\s+(?:may|can|should|must|will|is\s+allowed\s+to)?)\s+{TOUCH}\s+B(\d+)\s+{until}\s+(?:A\s+)?(?:has\s+|have\s+|had\s+)?(?:already\s+)?"
-        rf"{TOUCHED}\s+B(\d+)",
-        add,
+        rf"(?:(?:\bA\s+)?{NEG}|\bno\s+A\s+(?:may|can|should|must|will|is\s+allowed\s+to)?)\s+{TOUCH}\s+B(\d+)\s+"
+        rf"{until}\s+{other}",
+        add_either,
     )
     m.sub(
         rf"\bB(\d+)\s+{NEG}\s+be\s+{TOUCHED}\s+(?:by\s+A\s+)?{until}\s+B(\d+)\s+(?:has\s+been|is|was|had\s+been)\s+"
@@ -220,6 +232,8 @@ def _prohibitions(m: Marked) -> list[tuple[list[str], Place | None, list[str], s
     def add(match: re.Match[str]) -> str:
         blocks = _blocks(m, match.group("b")) if match.groupdict().get("b") else []
         place = m.places[int(match.group("p"))]
+        if place.kind == "opposite" and "other" in place.text:  # "the other regions": all but the targets
+            place = Place("complement", text=place.text)
         explicit = list(place.regions) if place.kind == "regions" else []
         if place.kind not in ("regions", "complement"):
             raise HTTError(f"cannot forbid '{place.text}': name the regions")
@@ -227,6 +241,10 @@ def _prohibitions(m: Marked) -> list[tuple[list[str], Place | None, list[str], s
         return " "
 
     down = rf"(?:\s+down)?\s+{PREP}\s+P(?P<p>\d+){PERIOD}"
+    m.sub(
+        r"\b(?:meanwhile|in\s+the\s+meantime|during\s+this\s+(?:period|time)|throughout)\s*,?\s*(?=no\s+B|nothing)",
+        "",
+    )
     m.sub(
         rf"\bno\s+B(?P<b>\d+)\s+(?:can|may|should|must|will|is\s+allowed\s+to|are\s+allowed\s+to)?\s*(?:ever\s+)?(?:be\s+)?{DROP}{down}",
         add,
@@ -311,6 +329,7 @@ def _markers(m: Marked, clauses: list[Clause]) -> None:
         lambda x: set_marker(x, "then"),
     )
     m.sub(rf"\b{AFTER_ALL}{LEAD}G(\d+)", lambda x: set_marker(x, "after_all"))
+    m.sub(r"\bG(\d+)\s+first\b", lambda x: set_marker(x, "first"))
 
     def anytime(match: re.Match[str]) -> str:
         clauses[int(match.group(1))].together = False

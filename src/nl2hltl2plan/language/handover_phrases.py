@@ -146,9 +146,9 @@ def _mark_one_per_region(m: Marked) -> None:
         r"(?:with\s+)?(?:one|a\s+single|1)\s+" + NOUN + r"\b"
     )
     per = (
-        r"\b(?:only\s+)?(?:one|a\s+single)\s+"
+        r"\b(?:only\s+)?(?:one|a\s+single)(?:\s+"
         + NOUN
-        + r"\s+(?:per|in\s+each|for\s+each)\s+(?:region|area|zone)\b"
+        + r")?\s+(?:per|in\s+each|on\s+each|for\s+each)(?:\s+(?:region|area|zone))?\b"
     )
 
     def note(match: re.Match[str]) -> str:
@@ -200,6 +200,20 @@ def _mark_blocks(m: Marked, scene: Scene) -> None:
     m.sub(rf"\bno\s+{NOUN}\b", lambda match: "no" + _new_block(m, scene.blocks, match.group(0)))
     m.sub(each, lambda match: _new_block(m, scene.blocks, match.group(0)))
     m.sub(group, all_blocks)
+    _mark_pronouns(m)
+
+
+def _mark_pronouns(m: Marked) -> None:
+    """'it' / 'them': the blocks of the nearest mention before (one block for 'it')."""
+
+    def resolve(match: re.Match[str]) -> str:
+        before = [int(k) for k in re.findall(r"\bB(\d+)\b", m.text[: match.start()])]
+        fits = [k for k in before if match.group(0) == "them" or len(m.blocks[k]) == 1]
+        if not fits:
+            return match.group(0)
+        return _new_block(m, m.blocks[fits[-1]], match.group(0))
+
+    m.text = re.sub(r"\b(?:it|them)\b", resolve, m.text)
 
 
 def _new_place(m: Marked, place: Place) -> str:
