@@ -63,6 +63,7 @@ AFTER_ALL = (
     r"(?:this|these|that)\s+(?:is|are|has\s+been|have\s+been)\s+done|when\s+(?:all\s+)?(?:this|these|that)\s+"
     r"(?:is|are)\s+done|finally|lastly|at\s+the\s+end|in\s+the\s+end)"
 )
+Prohibition = tuple[list[str], Place | None, list[str], str]  # blocks, place, explicit regions, text
 LEAD = r"\s*,?\s*(?:you\s+should\s+|please\s+|we\s+should\s+)?"
 
 
@@ -133,7 +134,7 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
     orders: list[tuple[str, str]] = []
     touches: list[tuple[str, str]] = []
     notes: list[str] = []
-    pending: list[tuple[list[str], Place | None, list[str], str]] = []  # drop prohibitions with no goal yet
+    pending: list[Prohibition] = []  # prohibitions stated before any goal
     for sentence in (s for s in re.split(r"[.;!?]+(?:\s|$)", instruction) if s.strip()):
         m = mark(sentence, scene)
         notes += m.notes
@@ -225,9 +226,9 @@ def _touch_guards(m: Marked) -> list[tuple[str, str]]:
     return out
 
 
-def _prohibitions(m: Marked) -> list[tuple[list[str], Place | None, list[str], str]]:
+def _prohibitions(m: Marked) -> list[Prohibition]:
     """(blocks, place, explicit regions, text) per 'no block can be placed on ...' statement."""
-    out: list[tuple[list[str], Place | None, list[str], str]] = []
+    out: list[Prohibition] = []
 
     def add(match: re.Match[str]) -> str:
         blocks = _blocks(m, match.group("b")) if match.groupdict().get("b") else []
