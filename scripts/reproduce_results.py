@@ -59,8 +59,8 @@ def commit() -> str:
         return subprocess.run(["git", *args], cwd=ROOT, capture_output=True, text=True).stdout.strip()
 
     head = git("rev-parse", "--short", "HEAD") or "unknown"
-    # the code's state, not the results this run is writing
-    dirty = bool(git("status", "--porcelain", "--untracked-files=no", "--", ".", ":!results"))
+    # the state of what makes the results (the package and its data), not of tests, docs or results
+    dirty = bool(git("status", "--porcelain", "--untracked-files=no", "--", "src", "pyproject.toml"))
     return head + (" + uncommitted changes" if dirty else "")
 
 

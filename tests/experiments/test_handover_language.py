@@ -93,3 +93,28 @@ def test_plan_json_lists_tasks_before_and_constraints(capsys):
     assert payload["constraints"] == sorted(payload["constraints"])
     assert "until red is on H|I|J: none of drop(F)" in payload["constraints"]
     assert any(c.startswith("at once: red on H|I|J, blue on H|I|J") for c in payload["constraints"])
+
+
+def test_bench_handover_plans_from_the_language_stage(tmp_path):
+    """`bench handover --llm offline`: each instance is planned from the language stage's spec and judged
+    against the written one; rows say language_equal; the budget is expansions."""
+    import argparse
+
+    from nl2hltl2plan.cli.bench_experiments import register
+    from nl2hltl2plan.evaluation.handover import run_bench
+
+    parser = argparse.ArgumentParser()
+    register(parser.add_subparsers(dest="suite"))
+    args = parser.parse_args(["handover", "-o", "d", "--llm", "offline", "--expansions", "5000"])
+    assert args.llm == "offline" and args.expansions == 5000
+    summary = run_bench(
+        tmp_path, instances=2, task_ids=[3], picture=False, backend="offline", max_expansions=5000
+    )
+    assert (
+        summary["specs"].startswith("language stage (offline)")
+        and "5000 expansions" in summary["planner_budget"]
+    )
+    task3 = summary["tasks"][0]
+    assert task3["language_equal"] is True and task3["success_rate"] == 1.0
+    assert all(r["language_equal"] and r["expanded"] <= 5000 for r in task3["per_instance"])
+    assert "language_equal" in (tmp_path / "report.md").read_text()
