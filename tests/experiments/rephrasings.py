@@ -41,20 +41,14 @@ REPHRASINGS: dict[int, list[str]] = {
 
 # Styles the offline parser does not yet read correctly (kept as expected failures for the parser work):
 HARDER: dict[int, list[str]] = {
-    1: [
-        "Green apple goes in the blue plate, orange goes in the yellow plate.",
-        "Hey robot, drop the green apple into the blue plate and the orange into the yellow plate, thanks!",
-    ],
-    2: [
-        "I need the orange in the yellow plate, the red apple in the blue plate and the green apple in the "
-        "pink plate. Order does not matter."
-    ],
-    4: [
-        "Put the carrot and the red apple in the blue plate after you have put the green apple and the "
+    1: ["Green apple goes in the blue plate, orange goes in the yellow plate.",
+        "Hey robot, drop the green apple into the blue plate and the orange into the yellow plate, thanks!"],
+    2: ["I need the orange in the yellow plate, the red apple in the blue plate and the green apple in the "
+        "pink plate. Order does not matter."],
+    4: ["Put the carrot and the red apple in the blue plate after you have put the green apple and the "
         "orange in the yellow plate.",
         "Before placing the carrot and red apple in the blue plate, place the green apple and orange in the "
         "yellow plate.",
         "Once the green apple and the orange are in the yellow plate, put the carrot and the red apple in "
-        "the blue plate.",
-    ],
+        "the blue plate."],
 }

@@ -40,31 +40,8 @@ SWITCHED = {"clean_place": ("Faucet",), "heat_place": ("Microwave",)}
 # the tasks must act on: "the lamp on the desk", "the mug from the table" (a missing destination is
 # already refused by the schema: every task kind but examine_in_light needs a receptacle)
 PLACE_WORDS = {
-    "from",
-    "off",
-    "out",
-    "on",
-    "in",
-    "at",
-    "by",
-    "near",
-    "beside",
-    "next",
-    "under",
-    "above",
-    "below",
-    "behind",
-    "inside",
-    "onto",
-    "into",
-    "to",
-    "across",
-    "around",
-    "over",
-    "top",
-    "beneath",
-    "within",
-    "of",
+    "from", "off", "out", "on", "in", "at", "by", "near", "beside", "next", "under", "above", "below",
+    "behind", "inside", "onto", "into", "to", "across", "around", "over", "top", "beneath", "within", "of",
 }
 
 

@@ -66,8 +66,7 @@ def ask_checked(
             {"role": "assistant", "content": answer.model_dump_json()},
             {
                 "role": "user",
-                "content": "That answer does not fit the request: "
-                + "; ".join(problems)
+                "content": "That answer does not fit the request: " + "; ".join(problems)
                 + ". Answer again with only a corrected JSON object.",
             },
         ]

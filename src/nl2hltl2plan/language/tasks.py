@@ -34,7 +34,9 @@ def transitive_closure(
     return {(a, b) for a in g.nodes for b in nx.descendants(g, a)}
 
 
-def transitive_reduction(pairs: Iterable[tuple[N, N]], order: Sequence[N] | None = None) -> list[tuple[N, N]]:
+def transitive_reduction(
+    pairs: Iterable[tuple[N, N]], order: Sequence[N] | None = None
+) -> list[tuple[N, N]]:
     """The fewest pairs with the same closure (pairs must be acyclic); sorted by `order` when given."""
     g = nx.DiGraph()
     g.add_nodes_from(order or [])
