@@ -28,6 +28,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass, field
+from typing import TypeGuard
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.handover_phrases import FILLER, Marked, Place, Scene, mark
@@ -123,7 +124,7 @@ class Item:
         return [g for c in self.children for g in c.goals()]
 
 
-def is_handover(world: object) -> bool:
+def is_handover(world: object) -> TypeGuard[World]:
     return isinstance(world, World) and world.kind == "handover"
 
 
