@@ -24,6 +24,7 @@ from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.evaluation.handover_llm import llm_handover
 from nl2hltl2plan.evaluation.report import mean_std, pm
 from nl2hltl2plan.io import write_json, write_text
+from nl2hltl2plan.language.backends import Backend
 from nl2hltl2plan.logic import spot_backend as sb
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.planning.coop import MAX_EXPANSIONS, CoopResult, coop_plan
@@ -68,7 +69,7 @@ def run_task(
     instances: int,
     seed: int,
     client: Any = None,
-    backend: str | None = None,
+    backend: Backend | None = None,
     **plan_kw: Any,
 ) -> dict[str, Any]:
     """Plan every instance, from the written spec or (with `backend`) from the language stage's spec of
@@ -187,13 +188,13 @@ def _first_difference(a: HierarchicalSpec, x: str, b: HierarchicalSpec, y: str) 
     return f"the relations of {x} differ: {a.text(x)} against {b.text(y)}"
 
 
-def language_check(task: HandoverTask, hw: HandoverWorld, backend: str = "offline") -> dict[str, Any]:
+def language_check(task: HandoverTask, hw: HandoverWorld, backend: Backend = "offline") -> dict[str, Any]:
     """The language stage's spec of the instruction on this instance, and whether it equals the written
     one node by node (`specs_equivalent`)."""
     from nl2hltl2plan.pipeline import PipelineOptions, language_stage
 
     try:
-        language = language_stage(task.instruction, hw.as_world(), PipelineOptions(backend=backend))  # type: ignore[arg-type]
+        language = language_stage(task.instruction, hw.as_world(), PipelineOptions(backend=backend))
     except Nl2Hltl2PlanError as exc:
         return {"converted": False, "language_equal": False, "why": f"language stage: {exc}"}
     if language.spec is None:
@@ -219,7 +220,7 @@ def run_bench(
     task_ids: list[int] | None = None,
     picture: bool = True,
     client: Any = None,
-    backend: str | None = None,
+    backend: Backend | None = None,
     max_expansions: int = MAX_EXPANSIONS,
 ) -> dict[str, Any]:
     """Run the handover bench; write DIR/summary.json, DIR/report.md and the plan pictures.
