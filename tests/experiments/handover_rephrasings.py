@@ -11,6 +11,7 @@ REPHRASINGS: dict[int, list[str]] = {
     2: [
         "Place the three blocks into the goal regions H, I and J; each region can hold only one block.",
         "Put all the blocks in regions H, I and J, one block per region.",
+        "Place each block in a different goal region: region H, I and J.",
     ],
     3: [
         "Move the three pillars to regions E, F and G. No block may be placed on any area other than the "
@@ -18,6 +19,8 @@ REPHRASINGS: dict[int, list[str]] = {
         "Transfer all three objects to the side of arm a and arm b. Each block must not be placed on the "
         "area other than the target region.",
         "Move the three blocks to region E, F and G and never place any block on the other regions.",
+        "Bring the three pillars to regions E, F and G on the side of arms a and b. A block may not be "
+        "placed on any region other than the target regions.",
     ],
     4: [
         "Move the three blocks to the opposite side. No arm may touch the blue block until an arm has "
@@ -32,6 +35,8 @@ REPHRASINGS: dict[int, list[str]] = {
         "block. Put the yellow block on the opposite side at any time.",
         "Exchange the red block and the blue block. The blue block should be placed after the red block. "
         "At any time, move the yellow block to the other side.",
+        "Please swap the positions of the red and blue blocks, with the red block placed before the blue "
+        "block. Put the yellow block on the opposite side at any time.",
     ],
     6: [
         "Put the three blocks separately into regions G, H and I. The red block must be placed before the"
@@ -48,6 +53,8 @@ REPHRASINGS: dict[int, list[str]] = {
         "blue block. No blocks may be put on region F, G or H during this period.",
         "Place the three blocks on region I one by one, the red block before the blue block. Meanwhile no"
         " block may be placed on region F, G or H.",
+        "One by one, put all three blocks on region I, the red block before the blue block, and do not "
+        "put any block on regions F, G and H meanwhile.",
     ],
     8: [
         "First move the yellow block to region I, then move the yellow block to region G, and put the red"
@@ -56,5 +63,7 @@ REPHRASINGS: dict[int, list[str]] = {
         "region I, then place the yellow block on region G.",
         "Put the yellow block on region I first, then put it on region G. Move the red and blue blocks to"
         " any empty region at any time.",
+        "Move the yellow block to region I, then to region G. Move the red and blue blocks to any empty "
+        "region at any time.",
     ],
 }

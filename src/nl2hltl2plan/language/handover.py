@@ -191,7 +191,10 @@ def _orders(m: Marked) -> list[tuple[str, str]]:
         (r"(?:after|later\s+than)", True),
     ):
         m.sub(rf"\b(?:{VERB}|{GERUND})\s+B(\d+)\s+{word}\s+B(\d+){tail}", lambda x, f=flip: add(x, f))
-        m.sub(rf"\bB(\d+)\s+{modal}(?:{DONE}\s+)?{word}\s+B(\d+){tail}", lambda x, f=flip: add(x, f))
+        m.sub(
+            rf"(?:\bwith\s+)?\bB(\d+)\s+{modal}(?:{DONE}\s+)?{word}\s+B(\d+){tail}",
+            lambda x, f=flip: add(x, f),
+        )
     return out
 
 
@@ -288,6 +291,8 @@ def _goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
         return f" G{len(clauses) - 1} "
 
     mods = rf"((?:\s*,?\s*{MOD})*)"
+    # "one by one, put all three blocks on I": the modifier read where it usually stands, after the object
+    m.sub(rf"\b({MOD})\s*,?\s*({VERB}\s+B\d+)", r"\2 \1")
 
     def matched(x: re.Match[str], k: int) -> str:  # groups from k: blocks, modifiers, place, modifiers
         place, text = m.places[int(x.group(k + 2))], x.group(0).strip()
@@ -315,6 +320,19 @@ def _goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
         rf"(?<=G\d)(?P<link>\s*,?\s*(?:and\s+)?(?:then\s+)?)B(\d+){mods}\s+(?:back\s+)?{PREP}\s+P(\d+)"
         rf"{mods}",
         lambda x: x.group("link") + matched(x, 2),
+    )
+    # the verb and the blocks shared with the clause before: "to region I, then to region G"
+    m.sub(
+        rf"(?<=G\d)(?P<link>\s*,?\s*(?:and\s+)?then\s+)(?:back\s+)?{PREP}\s+P(\d+){mods}",
+        lambda x: (
+            x.group("link")
+            + goal(
+                [g.block for g in clauses[-1].goals],
+                m.places[int(x.group(2))],
+                x.group(0).strip(),
+                x.group(3),
+            )
+        ),
     )
     _markers(m, clauses)
     return clauses

@@ -155,8 +155,12 @@ def _mark_one_per_region(m: Marked) -> None:
         m.notes.append("one block per region (the world's rule: a cell holds one block)")
         return " "
 
+    different = (
+        r"\b(?:in|into|on|onto|to)\s+(?:a\s+)?different\s+(?:goal\s+|target\s+)?(?:region|area|zone)s?\s*:?"
+    )
     m.sub(each, note)
     m.sub(per, note)
+    m.sub(different, lambda match: note(match) + "in ")
 
 
 def _mark_arms(m: Marked) -> None:
@@ -198,6 +202,9 @@ def _mark_blocks(m: Marked, scene: Scene) -> None:
     m.sub(colours, by_colour)
     # "no block may be placed ...": the prohibitions read "no B"
     m.sub(rf"\bno\s+{NOUN}\b", lambda match: "no" + _new_block(m, scene.blocks, match.group(0)))
+    # "a block may not be placed ...": a generic block in a prohibition is every block
+    negation = r"(?=\s+(?:may|must|can|should|shall|is)\s*(?:not|never)|\s+(?:cannot|never|mustn))"
+    m.sub(rf"\b(?:a|an|any)\s+{NOUN}\b{negation}", lambda match: _new_block(m, scene.blocks, match.group(0)))
     m.sub(each, lambda match: _new_block(m, scene.blocks, match.group(0)))
     m.sub(group, all_blocks)
     _mark_pronouns(m)
