@@ -190,6 +190,7 @@ class Outcome:
             "htt": lang.htt.model_dump(mode="json"),
             "tasks": [t.model_dump(mode="json") for t in lang.tasks],
             "before": [list(p) for p in lang.before],
+            "constraints": lang.constraints,
             "task_node": lang.task_node,
             "leaf_specs": lang.leaf_specs,
             "spec": self.spec.to_json_obj(),

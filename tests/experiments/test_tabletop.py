@@ -63,8 +63,8 @@ def test_harder_rephrasings(task_id):
         assert signature(text) == reference, text
 
 
-def test_ours_is_optimal_and_no_worse_than_mention_order(tmp_path):
-    summary = run_bench(tmp_path, instances=2, seed=3, picture=False)
+def test_ours_is_optimal_and_no_worse_than_either_baseline(tmp_path):
+    summary = run_bench(tmp_path, instances=2, seed=3, picture=False, study_layouts=1)
     saved = json.loads((tmp_path / "summary.json").read_text())
     assert saved["tasks"][0]["id"] == 1 and saved["llm_planner"].startswith("not run")
     for row in summary["tasks"]:
@@ -72,6 +72,10 @@ def test_ours_is_optimal_and_no_worse_than_mention_order(tmp_path):
         assert row["cost_mean"] <= row["baseline"]["cost_mean"]
         for inst in row["per_instance"]:
             assert inst["ours"]["cost"] <= inst["mention_order"]["cost"]
+            assert inst["nearest_first"]["success"] and inst["ours"]["cost"] <= inst["nearest_first"]["cost"]
+        study = row["study"]
+        assert [w["style"] for w in study["wordings"]][0] == "original" and len(study["wordings"]) == 5
+        assert study["wordings"][0]["success_rate"] == 1.0 and study["cases"] == 5
     report = (tmp_path / "report.md").read_text()
     assert "not run" in report and "111.2 ± 21.6" in report
 
@@ -92,10 +96,12 @@ def _answer(calls):
 def test_llm_planner_baseline_against_a_stub(stub_llm, tmp_path):
     task = TASKS[1]
     world = tabletop_world(5)
-    good = [{"api": "pick", "object": "orange"},
-            {"api": "place", "object": "orange", "plate": "yellow plate"},
-            {"api": "pick", "object": "green apple"},
-            {"api": "place", "object": "green apple", "plate": "blue plate"}]
+    good = [
+        {"api": "pick", "object": "orange"},
+        {"api": "place", "object": "orange", "plate": "yellow plate"},
+        {"api": "pick", "object": "green apple"},
+        {"api": "place", "object": "green apple", "plate": "blue plate"},
+    ]
     stub = stub_llm(_answer(good))
     client = LLMClient(LLMSettings(base_url=stub.base_url, model="m", api_key="k", cache_dir=None))
     out = llm_planner(world, task.instruction, HOME, task.gt_instance(), client)
@@ -124,3 +130,22 @@ def test_plan_json_keeps_tasks_and_before(capsys):
     payload = json.loads(capsys.readouterr().out)
     assert {"kind", "object", "receptacle"} <= set(payload["tasks"][0])
     assert len(payload["before"]) == 4 and payload["planner"]["status"] == "solved"
+
+
+def test_nearest_first_takes_the_nearest_ready_item():
+    """The greedy walks to the nearest item whose ordered predecessors are placed (task 4: the yellow
+    plate's two items first), and its plan passes the same checker as ours."""
+    from nl2hltl2plan.evaluation.baselines import nearest_first
+    from nl2hltl2plan.worlds.tabletop import HOME
+
+    task = TASKS[4]
+    world = tabletop_world(11)
+    lang = run_ours(task, world)
+    out = nearest_first(world, lang.tasks, lang.before, HOME, task.gt_instance(), 0.0)
+    assert out.success
+    picks = [obj.split("_")[0] for verb, obj, _ in out.calls if verb == "pick"]
+    assert set(picks[:2]) == {"GreenApple", "Orange"}
+    first = world.get(out.calls[0][1]).interaction_cells[0]
+    other = next(t for t in lang.tasks if t.object[0] in {"GreenApple", "Orange"} and t.object[0] != picks[0])
+    second = world.instances(other.object[0])[0].interaction_cells[0]
+    assert len(world.path(HOME, first)) <= len(world.path(HOME, second))

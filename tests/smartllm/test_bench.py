@@ -106,3 +106,21 @@ def test_mass_capacity_and_language_stage():
     mug = next(t for t in load_tasks() if t.id == "FloorPlan21#1")  # "Put mug in coffee machine"
     row = run_task(mug, llm_maker("offline"))
     assert row["status"] == "solved" and row["TC"] == 1.0
+
+
+def test_smartllm_script_scoring_counts_as_end_thread_does():
+    """SMART-LLM's own script: one task per entry, +1 per match (GCR can pass 1, then TC = 0), no BROKEN
+    check, raw names, RU unclipped; tasks without a stage annotation are left out of SR."""
+    from nl2hltl2plan.evaluation.smartllm_script import script_ru
+
+    tasks = {t.id: t for t in load_tasks()}
+    plate = run_task(tasks["FloorPlan15#5"], oracle_maker, timeout_s=20)  # a plate holding egg and tomato
+    assert plate["TC"] == 1.0 and plate["GCR"] == 1.0
+    assert plate["script"]["GCR"] == 2.0 and plate["script"]["TC"] == 0.0  # one entry, two contents
+    trash = run_task(tasks["FloorPlan414#2"], oracle_maker, timeout_s=20)  # raw name "trash"
+    assert trash["GCR"] == 1.0 and trash["script"]["GCR"] == 0.0
+    assert script_ru(4, 0, 2) == -0.5 and script_ru(1, 1, 3) == 1.5  # unclipped
+    assert script_ru(2, 1, 1) == 1.0 and script_ru(1, 1, 1) == 0.0 and script_ru(1, None, 3) is None
+    no_annotation = run_task(tasks["FloorPlan21#6"], oracle_maker, timeout_s=20)
+    assert no_annotation["RU"] is None and no_annotation["SR"] is None
+    assert summarize([no_annotation, plate])["left_out_of_SR"] == ["FloorPlan21#6"]

@@ -21,7 +21,9 @@ from typing import Any
 
 from nl2hltl2plan.argtypes import int_in, seed
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
+from nl2hltl2plan.language.backends import BACKENDS
 from nl2hltl2plan.language.options import add_llm_arguments, llm_settings
+from nl2hltl2plan.planning.coop import MAX_EXPANSIONS
 
 MAX_INSTANCES = 1000  # the paper runs 25 (tabletop) and 10 (handover); each takes a planner call
 
@@ -55,6 +57,20 @@ def register(sub: Any) -> None:
             help="LLM-as-planner baseline: auto (default; when an LLM is configured), llm, none",
         )
         add_llm_arguments(p)
+        if name == "handover":
+            p.add_argument(
+                "--llm",
+                choices=BACKENDS,
+                default=None,
+                help="plan each instance from this language backend's spec of the instruction (the whole "
+                "pipeline) instead of the written spec; rows say language_equal",
+            )
+            p.add_argument(
+                "--expansions",
+                type=int_in(1, 100 * MAX_EXPANSIONS),  # bounded: a budget, not a way to run forever
+                default=MAX_EXPANSIONS,
+                help=f"planner budget per instance in expansions (deterministic; default {MAX_EXPANSIONS})",
+            )
         p.set_defaults(func=func)
 
 
@@ -100,7 +116,14 @@ def run_handover(args: argparse.Namespace) -> int:
     from nl2hltl2plan.evaluation.handover import run_bench
 
     with _llm_client(args) as client:
-        summary = run_bench(args.out, instances=args.instances, seed=args.seed, client=client)
+        summary = run_bench(
+            args.out,
+            instances=args.instances,
+            seed=args.seed,
+            client=client,
+            backend=args.llm,
+            max_expansions=args.expansions,
+        )
     print((args.out / "report.md").read_text())
     print(f"wrote {args.out / 'summary.json'} ({len(summary['tasks'])} tasks)", file=sys.stderr)
     return _errored_exit(sum(t["baseline"].get("errored", 0) for t in summary["tasks"]))

@@ -1,7 +1,10 @@
-"""Baselines of the tabletop study (Table II): mention order, and an LLM used directly as the planner.
+"""Baselines of the tabletop study (Table II): mention order, nearest item first, and an LLM used
+directly as the planner.
 
 - mention order: the arm places the objects in the order the instruction names them, each on a
   shortest grid path (the behaviour the paper observed in its LLM planner, Fig. 5);
+- nearest item first: a greedy that always takes the nearest item whose ordered predecessors are
+  placed (a fair, trivial baseline: the paper's LLM planner was optimal on task 1);
 - LLM-as-planner: the prompt the paper describes (initial 2-D coordinates of every object and of the
   arm, the API, "minimise the trajectory"), answered as a list of API calls, which is parsed,
   turned into a grid plan, executed by our simulator and checked like our own plans. It runs only
@@ -94,6 +97,37 @@ def mention_order(world: World, tasks: list[Any], start: Cell, gt: GTInstance, t
         plate = instance_of(world, (task.receptacle or [""])[0])
         calls += [("pick", obj, None), ("place", obj, plate)]
     return judge("mention-order", world, calls, start, gt, t0)
+
+
+def nearest_first(
+    world: World,
+    tasks: list[Any],
+    before: list[tuple[str, str]],
+    start: Cell,
+    gt: GTInstance,
+    t0: float,
+) -> BaselineOutcome:
+    """Greedy: from where the arm is, take the nearest item (grid path) among those whose ordered
+    predecessors (`before`, between the tasks' ids) are placed, and put it into its plate."""
+    from nl2hltl2plan.language.tasks import transitive_closure
+
+    closure = transitive_closure(before, [t.id for t in tasks])
+    left = {
+        t.id: (instance_of(world, t.object[0]), instance_of(world, (t.receptacle or [""])[0])) for t in tasks
+    }
+    calls: list[Call] = []
+    cur = start
+    while left:
+        ready = [k for k in left if not any((p, k) in closure for p in left if p != k)]
+        if not ready:
+            raise WorldError("the orderings of the tasks form a cycle")
+
+        here = cur
+        k = min(ready, key=lambda x: (len(world.path(here, world.get(left[x][0]).interaction_cells[0])), x))
+        obj, plate = left.pop(k)
+        calls += [("pick", obj, None), ("place", obj, plate)]
+        cur = world.get(plate).interaction_cells[0]
+    return judge("nearest-first", world, calls, start, gt, t0)
 
 
 # ----- LLM as the planner -----------------------------------------------------------------------------

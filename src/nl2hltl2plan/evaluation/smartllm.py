@@ -13,7 +13,9 @@ SMART-LLM's metrics (Kannan et al., arXiv:2309.10062; the scoring script is
   0 when max_trans = trans otherwise, else (max + 1 - stages) / (max - trans), clipped to 0..1.
 - Exe (executability): successful actions / attempted actions of the executed plan (0 when no
   plan was made: nothing could be executed).
-- SR (success): TC = 1 and RU = 1.
+- SR (success): TC = 1 and RU = 1; a task without a stage annotation has no RU and is left out of SR.
+Each row also carries `script`: the five metrics exactly as SMART-LLM's own script computes them
+(`evaluation.smartllm_script`: per entry, +1 per match, no BROKEN check, RU unclipped).
 A task whose team lacks a needed skill is reported infeasible with the reason, before planning; the
 final state is then the initial one. The task without ground truth is listed, not scored.
 """
@@ -30,6 +32,7 @@ from typing import Any
 import networkx as nx
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
+from nl2hltl2plan.evaluation.smartllm_script import script_metrics
 from nl2hltl2plan.io import atomic_path, write_json, write_text
 from nl2hltl2plan.language.backends import Backend
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
@@ -163,6 +166,7 @@ def run_task(
         n_stages, exe, execution = _plan_task(
             task, world, team, make_spec, (timeout_s, objective, masses), row
         )
+    snap = execution.final if execution is not None else SimState(world).snapshot(0)
     met = final_conditions(execution, conds) if execution is not None else _initial(world, conds)
     gcr = sum(met) / len(met) if met else 1.0
     tc = 1.0 if gcr == 1.0 else 0.0
@@ -172,7 +176,9 @@ def run_task(
         TC=tc,
         RU=ru,
         Exe=exe,
-        SR=1.0 if tc == 1.0 and ru == 1.0 else 0.0,
+        # SR needs RU: a task without a stage annotation (trans / max_trans) is left out of SR
+        SR=None if ru is None else (1.0 if tc == 1.0 and ru == 1.0 else 0.0),
+        script=script_metrics(world, snap, task.entries, n_stages, task.trans, task.max_trans, exe),
         conditions_met=[c.describe() for c, ok in zip(task.conditions, met, strict=True) if ok],
         conditions_missed=[c.describe() for c, ok in zip(task.conditions, met, strict=True) if not ok],
         stages=n_stages,
@@ -237,10 +243,11 @@ def summarize(rows: list[dict[str, Any]]) -> dict[str, Any]:
     """The five metrics (means over scored tasks, fractions 0..1) overall and per floor plan."""
     scored = [r for r in rows if r.get("has_gt")]
 
-    def block(rs: list[dict[str, Any]]) -> dict[str, Any]:
+    def block(rs: list[dict[str, Any]], key: str | None = None) -> dict[str, Any]:
         out: dict[str, Any] = {"tasks": len(rs)}
         for m in METRICS:
-            vals = [float(r[m]) for r in rs if r.get(m) is not None]
+            scores = [(r.get(key) or {}) if key else r for r in rs]
+            vals = [float(x[m]) for x in scores if x.get(m) is not None]
             out[m] = round(statistics.fmean(vals), 4) if vals else None
         return out
 
@@ -249,6 +256,8 @@ def summarize(rows: list[dict[str, Any]]) -> dict[str, Any]:
         per_fp.setdefault(r["floor_plan"], []).append(r)
     return {
         "overall": block(scored),
+        "overall_script": block(scored, "script"),
+        "left_out_of_SR": [r["id"] for r in scored if r.get("SR") is None],
         "per_floor_plan": {fp: block(rs) for fp, rs in sorted(per_fp.items())},
         "not_scored": [
             {"id": r["id"], "task": r["task"], "why": r.get("status")} for r in rows if not r.get("has_gt")
@@ -310,6 +319,12 @@ def report_md(summary: dict[str, Any], rows: list[dict[str, Any]]) -> str:
     lines.append(
         f"| ours, all floor plans | {o['tasks']} | " + " | ".join(_fmt(o[m]) for m in METRICS) + " |"
     )
+    sc = summary["overall_script"]
+    lines.append(
+        f"| ours, scored by SMART-LLM's script | {sc['tasks']} | "
+        + " | ".join(_fmt(sc[m]) for m in METRICS)
+        + " |"
+    )
     for fp, b in summary["per_floor_plan"].items():
         lines.append(f"| ours, {fp} | {b['tasks']} | " + " | ".join(_fmt(b[m]) for m in METRICS) + " |")
     for entry in pub.get("rows", []):
@@ -319,6 +334,7 @@ def report_md(summary: dict[str, Any], rows: list[dict[str, Any]]) -> str:
             + " |"
         )
     lines += ["", f"SMART-LLM's numbers: {pub.get('source', '')}", ""]
+    lines += _scoring_notes(summary, rows)
     if pub.get("note"):
         lines += [pub["note"], ""]
     lines += ["## Not scored", ""] + [f'- {r["id"]} "{r["task"]}": {r["why"]}' for r in summary["not_scored"]]
@@ -341,3 +357,45 @@ def report_md(summary: dict[str, Any], rows: list[dict[str, Any]]) -> str:
             + f" | {'; '.join(r.get('notes', []))} |"
         )
     return "\n".join(lines) + "\n"
+
+
+def _scoring_notes(summary: dict[str, Any], rows: list[dict[str, Any]]) -> list[str]:
+    """Why the two scorings differ, task by task (evaluation/smartllm_script.py has the script's rules)."""
+    left_out = summary.get("left_out_of_SR", [])
+    lines = [
+        "Two scorings: *ours* follows SMART-LLM's definitions (one condition per state and per contained "
+        "object, met by some object; BROKEN checked; RU clipped to 0..1); *SMART-LLM's script* computes "
+        "them as `end_thread.py` does (one task per ground-truth entry with raw names, +1 per matching "
+        "object, no BROKEN or FILLED check, GCR may exceed 1 and then TC = 0, RU unclipped; our plan's "
+        "sequential stages stand for the script's top-level code blocks).",
+        "",
+        f"Left out of SR (no stage annotation trans / max_trans): {', '.join(left_out) or 'none'}.",
+        "",
+        "| task | ours TC / GCR / RU | script TC / GCR / RU | why they differ |",
+        "|---|---|---|---|",
+    ]
+    for r in rows:
+        s = r.get("script")
+        if not s or all(_fmt(r.get(m)) == _fmt(s.get(m)) for m in ("TC", "GCR", "RU")):
+            continue
+        lines.append(
+            f"| {r['id']} | {_fmt(r.get('TC'))} / {_fmt(r.get('GCR'))} / {_fmt(r.get('RU'))} | "
+            f"{_fmt(s.get('TC'))} / {_fmt(s.get('GCR'))} / {_fmt(s.get('RU'))} | {_why_differ(r, s)} |"
+        )
+    return lines + [""]
+
+
+def _why_differ(row: dict[str, Any], script: dict[str, Any]) -> str:
+    reasons = []
+    conditions = " ".join(row.get("conditions", []))
+    if script.get("GCR") is not None and script["GCR"] > 1:
+        reasons.append("+1 per matching object and per content, 1 task per entry: GCR > 1, so TC = 0")
+    if "BROKEN" in conditions or "FILLED" in conditions:
+        reasons.append("the script never checks BROKEN / FILLED")
+    if any("read as" in n or "dropped" in n for n in row.get("notes", [])):
+        reasons.append("raw ground-truth names (repaired in ours) or an empty entry")
+    if row.get("RU") != script.get("RU"):
+        reasons.append("RU unclipped in the script")
+    if not reasons and (row.get("GCR") or 0) != (script.get("GCR") or 0):
+        reasons.append("per-entry counting (an entry with a state and contents is one task)")
+    return "; ".join(reasons) or "-"

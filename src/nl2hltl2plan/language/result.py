@@ -40,6 +40,7 @@ class LanguageResult(BaseModel):
     unparsed: list[str] = Field(default_factory=list)
     issues: list[str] = Field(default_factory=list)
     warnings: list[str] = Field(default_factory=list)
+    constraints: list[str] = Field(default_factory=list)  # guards and joint goals as text (handover worlds)
     llm_calls: dict[str, int] = Field(default_factory=dict)
 
     @property

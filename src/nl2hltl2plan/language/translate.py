@@ -21,7 +21,7 @@ from collections.abc import Callable
 from typing import Literal, Protocol
 
 from nl2hltl2plan.errors import HTTError, LLMError, Nl2Hltl2PlanError, WorldError
-from nl2hltl2plan.language import stages
+from nl2hltl2plan.language import handover, stages
 from nl2hltl2plan.language.accounting import account, take_every_instance
 from nl2hltl2plan.language.backends import PARSERS
 from nl2hltl2plan.language.grounding import AffordanceLookup, Grounder, world_lookup
@@ -94,6 +94,8 @@ def translate(
         raise HTTError("empty instruction")
     types = set(world.object_types()) if world is not None else None
     scene = world.name if world is not None else None
+    if backend in PARSERS and handover.is_handover(world):  # the four-arm worlds' own phrases
+        return handover.translate_handover(instruction, world)
     if backend in PARSERS:
         look = world_lookup(world) if isinstance(world, World) else None
         res = _parse(backend, instruction, types, scene, strict, look, world)

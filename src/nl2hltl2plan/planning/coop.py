@@ -28,6 +28,7 @@ from __future__ import annotations
 
 import heapq
 import itertools
+import math
 import time
 from collections import deque
 from collections.abc import Callable
@@ -51,7 +52,6 @@ from nl2hltl2plan.worlds.handover import (
 from nl2hltl2plan.worlds.model import Cell
 from nl2hltl2plan.worlds.plan import Plan, RobotPlan, Step
 
-DEFAULT_TIMEOUT_S = 30.0
 MAX_EXPANSIONS = 60_000
 
 
@@ -308,7 +308,7 @@ FIRST_SHARE = 0.7  # of the budget, for the first search
 def coop_plan(
     hw: HandoverWorld,
     spec: HierarchicalSpec | list | str,
-    timeout_s: float = DEFAULT_TIMEOUT_S,
+    timeout_s: float | None = None,
     max_expansions: int = MAX_EXPANSIONS,
     use_heuristic: bool = True,
     weights: tuple[float, ...] = WEIGHTS,
@@ -317,19 +317,19 @@ def coop_plan(
 
     Anytime: weighted A* with each of `weights` in turn, every search pruned by the best plan so far;
     when the last weight is 1 and its search finishes, the plan is optimal in the macro model
-    (`proven_optimal`). `timeout_s` and `max_expansions` bound the whole call."""
+    (`proven_optimal`). The budget is `max_expansions` (deterministic: the same plan on any machine,
+    under any load); `timeout_s`, when given, is only a safety stop (a run it ends is load-dependent)."""
     t0 = time.perf_counter()
     if not isinstance(spec, HierarchicalSpec):
         spec = HierarchicalSpec.from_json(spec)
     s = _Search(hw, spec)
     h: Callable[[Snap, PState], int] = s.heuristic if use_heuristic else (lambda a, b: 0)
-    budget = _Budget(t0 + timeout_s, max_expansions)
+    budget = _Budget(t0 + timeout_s if timeout_s is not None else math.inf, max_expansions)
     best: tuple[int, list[Macro]] | None = None
     proven = exhausted = False
     for i, w in enumerate(weights):
         # the first (weighted) search gets most of the budget; the rest goes to the exact A*
         share = FIRST_SHARE if i == 0 and len(weights) > 1 else 1.0
-        budget.stop_at = time.perf_counter() + (budget.deadline - time.perf_counter()) * share
         budget.stop_expanded = budget.expanded + int((budget.max_expansions - budget.expanded) * share)
         if best is None and i > 0:
             w = (weights[0] + w) / 2  # the first search found nothing: a lighter weight, not plain A*
@@ -348,7 +348,8 @@ def coop_plan(
         reason = (
             f"no cooperative plan satisfies the specification (searched {budget.expanded} states)"
             if exhausted
-            else f"no plan within {budget.expanded} expansions / {timeout_s:g} s"
+            else f"no plan within {budget.expanded} expansions"
+            + (f" / {timeout_s:g} s" if timeout_s is not None else "")
         )
         return CoopResult(status, reason, expanded=budget.expanded, plan_time_s=time.perf_counter() - t0)
     out = _finish(hw, spec, best[1], best[0], budget.expanded, t0)
@@ -361,12 +362,11 @@ class _Budget:
     deadline: float
     max_expansions: int
     expanded: int = 0
-    stop_at: float = 0.0  # end of the current search's share (time and expansions)
-    stop_expanded: int = 0
+    stop_expanded: int = 0  # end of the current search's share of the expansions
 
     @property
     def spent(self) -> bool:
-        return self.expanded >= self.stop_expanded or time.perf_counter() > min(self.deadline, self.stop_at)
+        return self.expanded >= self.stop_expanded or time.perf_counter() > self.deadline
 
 
 def _astar(
@@ -479,9 +479,9 @@ def plan_world(
 ) -> PlanResult:
     """Plan on a handover `worlds.World` (from `load_world("handover-square")`) and answer in the main
     planner's `PlanResult` shape: blocks where the world has them, end effectors at `starts` when four
-    cells are given (else the world's). Options other than timeout_s are ignored (the cooperative
-    planner minimises moves + actions). `execution` stays None: the handover simulator's run is in
-    `coop_plan`'s own result."""
+    cells are given (else the world's). Options other than timeout_s (a last-resort stop) are ignored
+    (the cooperative planner minimises moves + actions). `execution` stays None: the handover
+    simulator's run is in `coop_plan`'s own result."""
     from nl2hltl2plan.worlds.handover import HandoverWorld, layout
     from nl2hltl2plan.worlds.model import CELL_M
 
@@ -492,7 +492,8 @@ def plan_world(
     given = [tuple(c) for c in starts] if starts is not None else []
     arm_starts = tuple(given) if len(given) == len(ARMS) else tuple(world.default_starts)
     hw = HandoverWorld(lay, blocks, arm_starts)  # type: ignore[arg-type]
-    coop = coop_plan(hw, spec, timeout_s=float(options.get("timeout_s", DEFAULT_TIMEOUT_S)))
+    timeout = options.get("timeout_s")  # the pipeline's last-resort wall clock; the budget is expansions
+    coop = coop_plan(hw, spec, timeout_s=None if timeout is None else float(timeout))
     status = {"solved": PlanStatus.SOLVED, "infeasible": PlanStatus.INFEASIBLE}.get(
         coop.status, PlanStatus.TIMEOUT
     )

@@ -71,6 +71,8 @@ class SmartTask:
     trans: int | None
     max_trans: int | None
     notes: list[str] = field(default_factory=list)
+    # the ground truth's entries as written (raw names): SMART-LLM's own script scores these
+    entries: list[tuple[str, str | None, tuple[str, ...]]] = field(default_factory=list)
 
     @property
     def id(self) -> str:
@@ -95,6 +97,10 @@ def parse_task(index: int, row: dict) -> SmartTask:
     notes: list[str] = []
     conds: list[Condition] = []
     has_gt = "object_states" in row
+    entries = [
+        (str(e.get("name", "")), e.get("state"), tuple(str(c) for c in e.get("contains") or []))
+        for e in row.get("object_states") or []
+    ]
     for entry in row.get("object_states") or []:
         name = _clean_name(str(entry.get("name", "")), notes)
         contains = [_clean_name(str(c), notes) for c in entry.get("contains") or []]
@@ -109,7 +115,8 @@ def parse_task(index: int, row: dict) -> SmartTask:
         conds.extend(Condition(name, contains=c) for c in contains)
     if not has_gt:
         notes.append("no ground-truth object_states in SMART-LLM's data: not scored")
-    return SmartTask(index, fp, text, robots, conds, has_gt, row.get("trans"), row.get("max_trans"), notes)
+    trans, max_trans = row.get("trans"), row.get("max_trans")
+    return SmartTask(index, fp, text, robots, conds, has_gt, trans, max_trans, notes, entries)
 
 
 @cache

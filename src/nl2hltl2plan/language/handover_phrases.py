@@ -1,0 +1,305 @@
+"""Phrases of the four-arm handover instructions (paper Table III), read against the world's layout.
+
+A sentence is read in passes. Noun phrases first become placeholders: blocks (`B0`: "the three
+pillars", "red and blue blocks", "each object"), places (`P0`: "region H, I and J", "the opposite
+side", "any empty region", "the side of arm a and arm b", "where the red block is", "the area other
+than the target region") and arms (`A`: "the robot arm", "any of the arms"). Then the clause
+patterns of `language.handover` consume placeholders and words. Whatever a pass leaves unread is a
+refusal naming the words: nothing is silently dropped.
+
+Places resolve against the instance: "the opposite" is, per block, the labelled regions on the other
+arms' side from where the block starts (arms a, b against c, d); "the side of arm a and arm b" the
+labelled regions those arms reach; "where the red block is" the region red starts on.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from typing import Literal
+
+from nl2hltl2plan.errors import HTTError, WorldError
+from nl2hltl2plan.worlds.handover import REGIONS, Layout, layout
+from nl2hltl2plan.worlds.model import Cell, World
+
+COLOURS = ("red", "blue", "yellow")
+COUNTS = {"two": 2, "three": 3, "four": 4, "both": 2, "2": 2, "3": 3, "4": 4}
+NOUN = r"(?:block|cube|pillar|object|item|piece|one)"
+NOUNS = r"(?:blocks|cubes|pillars|objects|items|pieces|ones)"
+COLOUR = r"(?:red|blue|yellow)"
+LETTER = r"\b[e-j]\b"
+PLACE_NOUN = r"(?:regions?|areas?|zones?|places?|spots?|positions?|cells?|sides?)"
+# words that carry no meaning here (articles, politeness, modal verbs, the agent)
+FILLER = frozenset(
+    "please plan a an the solution to for you we should shall can could would will must kindly now "
+    "also so it is are be that i want need make sure this task , ( ) : and".split()
+)
+
+
+@dataclass(frozen=True)
+class Place:
+    """A place phrase: labelled regions, per-block opposite side, any empty region, a block's start,
+    or the labelled regions other than a goal's targets (only in prohibitions)."""
+
+    kind: Literal["regions", "opposite", "away", "start_of", "complement"]
+    regions: tuple[str, ...] = ()
+    block: str = ""  # start_of: whose start
+    text: str = ""
+
+
+@dataclass
+class Scene:
+    """What the handover phrases need of a world: its layout and where each block starts."""
+
+    layout: Layout
+    starts: dict[str, Cell]  # "Red" -> cell
+
+    @classmethod
+    def of(cls, world: World) -> Scene:
+        config = world.name.split("-", 1)[1] if "-" in world.name else ""
+        try:
+            lay = layout(config)
+        except WorldError:
+            raise HTTError(f"{world.name} is not a handover world (square or line)") from None
+        starts = {
+            o.type[: -len("Block")]: o.interaction_cells[0]
+            for o in world.objects.values()
+            if o.type.endswith("Block") and o.interaction_cells
+        }
+        return cls(lay, starts)
+
+    @property
+    def blocks(self) -> list[str]:
+        return [c.capitalize() for c in COLOURS if c.capitalize() in self.starts]
+
+    def side(self, cell: Cell) -> int | None:
+        """0: only arms a/b reach the cell; 1: only c/d; None: both sides (a shared middle cell)."""
+        arms = set(self.layout.arms_reaching(cell))
+        if arms <= {0, 1}:
+            return 0
+        if arms <= {2, 3}:
+            return 1
+        return None
+
+    def opposite(self, block: str) -> tuple[str, ...]:
+        side = self.side(self.starts[block])
+        if side is None:
+            raise HTTError(
+                f"'the opposite' is unclear for the {block.lower()} block: it starts between the sides"
+            )
+        return tuple(
+            r for r in REGIONS if r in self.layout.regions and self.side(self.layout.regions[r]) == 1 - side
+        )
+
+    def arms_side(self, arms: list[int]) -> tuple[str, ...]:
+        return tuple(r for r in REGIONS if set(self.layout.arms_reaching(self.layout.regions[r])) & set(arms))
+
+    def start_region(self, block: str) -> str:
+        cell = self.starts[block]
+        if cell not in self.layout.region_at:
+            raise HTTError(f"the {block.lower()} block does not start on a labelled region")
+        return self.layout.region_at[cell]
+
+    def block(self, colour: str) -> str:
+        name = colour.capitalize()
+        if name not in self.starts:
+            raise HTTError(f"there is no {colour} block in this world; blocks: {', '.join(self.blocks)}")
+        return name
+
+
+@dataclass
+class Marked:
+    """A sentence with its phrases replaced by placeholders (`B0`, `P0`, `A`)."""
+
+    text: str
+    blocks: list[list[str]] = field(default_factory=list)  # B<k> -> block names
+    block_text: list[str] = field(default_factory=list)
+    places: list[Place] = field(default_factory=list)  # P<k>
+    notes: list[str] = field(default_factory=list)  # one-per-region statements, read as the world's rule
+
+    def sub(self, pattern: str, make) -> None:  # make(match) -> replacement text
+        self.text = re.sub(pattern, make, self.text)
+
+
+def normalise(sentence: str) -> str:
+    text = sentence.lower().replace("’", "'")
+    text = re.sub(r"([,()])", r" \1 ", text)
+    text = re.sub(r"\b(\w+)'s\b", r"\1 s", text)  # red's -> red s (a possessive)
+    return " ".join(text.split())
+
+
+def mark(sentence: str, scene: Scene) -> Marked:
+    m = Marked(normalise(sentence))
+    _mark_one_per_region(m)
+    _mark_arms(m)
+    _mark_blocks(m, scene)
+    _mark_places(m, scene)
+    return m
+
+
+def _mark_one_per_region(m: Marked) -> None:
+    """'each goal region can only be placed with one object', 'one block per region': a cell holds one
+    block in these worlds, so this is the world's own rule (recorded, no formula)."""
+    each = (
+        r"\b(?:each|every)\s+(?:goal\s+|target\s+)?(?:region|area|zone|place)\s+(?:can|may|should|must|will)?\s*"
+        r"(?:only\s+)?(?:be\s+)?(?:placed|filled|holds?|takes?|gets?|receives?|contains?)\s+(?:only\s+)?"
+        r"(?:with\s+)?(?:one|a\s+single|1)\s+" + NOUN + r"\b"
+    )
+    per = (
+        r"\b(?:only\s+)?(?:one|a\s+single)(?:\s+"
+        + NOUN
+        + r")?\s+(?:per|in\s+each|on\s+each|for\s+each)(?:\s+(?:region|area|zone))?\b"
+    )
+
+    def note(match: re.Match[str]) -> str:
+        m.notes.append("one block per region (the world's rule: a cell holds one block)")
+        return " "
+
+    different = (
+        r"\b(?:in|into|on|onto|to)\s+(?:a\s+)?different\s+(?:goal\s+|target\s+)?(?:region|area|zone)s?\s*:?"
+    )
+    m.sub(each, note)
+    m.sub(per, note)
+    m.sub(different, lambda match: note(match) + "in ")
+
+
+def _mark_arms(m: Marked) -> None:
+    m.sub(
+        r"\b(?:any\s+(?:of\s+)?|an?\s+|each\s+|every\s+)?(?:the\s+)?(?:robot\s+)?(?:arms?|robots?)\b(?!\s+[a-d]\b)",
+        lambda _: " A ",
+    )
+
+
+def _new_block(m: Marked, names: list[str], text: str) -> str:
+    m.blocks.append(names)
+    m.block_text.append(text.strip())
+    return f" B{len(m.blocks) - 1} "
+
+
+def _mark_blocks(m: Marked, scene: Scene) -> None:
+    colours = (
+        rf"\b(?:the\s+)?{COLOUR}(?:\s+{NOUN})?(?:\s*(?:,|and|&|or)\s*(?:the\s+)?{COLOUR}(?:\s+{NOUN})?)*"
+        rf"(?:\s+{NOUNS})?\b"
+    )
+
+    def by_colour(match: re.Match[str]) -> str:
+        names = [scene.block(c) for c in re.findall(COLOUR, match.group(0))]
+        return _new_block(m, list(dict.fromkeys(names)), match.group(0))
+
+    count = r"(?:(two|three|four|both|all|\d+)\s+)?"
+    group = rf"\b(?:all\s+(?:of\s+)?)?(?:the\s+)?{count}(?:of\s+)?(?:the\s+)?{NOUNS}\b"
+
+    def all_blocks(match: re.Match[str]) -> str:
+        count = match.group(1)
+        n = len(scene.blocks)
+        if count and count != "all" and COUNTS.get(count) != n:
+            raise HTTError(
+                f"'{match.group(0).strip()}' names {count} blocks; this world has {n}: which ones?"
+            )
+        return _new_block(m, scene.blocks, match.group(0))
+
+    each = rf"\b(?:each|every|any|all)\s+(?:of\s+the\s+)?(?:{NOUN}|{NOUNS})\b"
+    m.sub(colours, by_colour)
+    # "no block may be placed ...": the prohibitions read "no B"
+    m.sub(rf"\bno\s+{NOUN}\b", lambda match: "no" + _new_block(m, scene.blocks, match.group(0)))
+    # "a block may not be placed ...": a generic block in a prohibition is every block
+    negation = r"(?=\s+(?:may|must|can|should|shall|is)\s*(?:not|never)|\s+(?:cannot|never|mustn))"
+    m.sub(rf"\b(?:a|an|any)\s+{NOUN}\b{negation}", lambda match: _new_block(m, scene.blocks, match.group(0)))
+    m.sub(each, lambda match: _new_block(m, scene.blocks, match.group(0)))
+    m.sub(group, all_blocks)
+    _mark_pronouns(m)
+
+
+def _mark_pronouns(m: Marked) -> None:
+    """'it' / 'them': the blocks of the nearest mention before (one block for 'it')."""
+
+    def resolve(match: re.Match[str]) -> str:
+        before = [int(k) for k in re.findall(r"\bB(\d+)\b", m.text[: match.start()])]
+        fits = [k for k in before if match.group(0) == "them" or len(m.blocks[k]) == 1]
+        if not fits:
+            return match.group(0)
+        return _new_block(m, m.blocks[fits[-1]], match.group(0))
+
+    m.text = re.sub(r"\b(?:it|them)\b", resolve, m.text)
+
+
+def _new_place(m: Marked, place: Place) -> str:
+    m.places.append(place)
+    return f" P{len(m.places) - 1} "
+
+
+def _mark_places(m: Marked, scene: Scene) -> None:
+    complement = (
+        r"\b(?:the\s+)?(?:any\s+)?(?:other\s+)?(?:areas?|regions?|places?|anywhere|zones?)\s+"
+        r"(?:other\s+than|except(?:\s+for)?|besides|apart\s+from|but)\s+(?:the\s+|their\s+|its\s+)?"
+        r"(?:target|goal|destination|assigned)\s+(?:regions?|areas?|places?|zones?)\b"
+    )
+    m.sub(complement, lambda match: _new_place(m, Place("complement", text=match.group(0).strip())))
+
+    def start_of(match: re.Match[str]) -> str:
+        k = int(match.group(1))
+        if len(m.blocks[k]) != 1:
+            return match.group(0)
+        block = m.blocks[k][0]
+        return _new_place(m, Place("start_of", (scene.start_region(block),), block, match.group(0).strip()))
+
+    where = (
+        r"\(?\s*\bwhere\s+B(\d+)\s+(?:is|was|lies|lay|sits|sat|stands|started|starts)\s*(?:currently\s+|now\s+|"
+        r"initially\s+|at\s+first\s+)?(?:located|locating|lying|placed|sitting|standing|from)?\s*\)?"
+    )
+    m.sub(where, start_of)
+    m.sub(
+        r"\b(?:the\s+)?(?:original\s+|initial\s+|starting\s+|start\s+)?(?:position|place|spot|location|cell)\s+of\s+B(\d+)\s*(?=\W|$)",
+        start_of,
+    )
+    m.sub(
+        r"\b(?:the\s+)?(?:opposite(?:\s+(?:side|sides|end|regions?|areas?|zones?))?|(?:far|other|facing)\s+"
+        r"(?:side|sides|end|regions?|areas?|zones?))(?:\s+(?:regions?|areas?))?\b",
+        lambda match: _new_place(m, Place("opposite", text=match.group(0).strip())),
+    )
+    m.sub(
+        r"\b(?:any|an|some|a)\s+(?:other\s+)?(?:empty|free|unoccupied|vacant|open)\s+" + PLACE_NOUN + r"\b",
+        lambda match: _new_place(m, Place("away", text=match.group(0).strip())),
+    )
+
+    def arms(match: re.Match[str]) -> str:
+        letters = re.findall(r"\b[a-d]\b", match.group(0).replace("side of", ""))
+        regions = scene.arms_side(["abcd".index(x) for x in letters])
+        return _new_place(m, Place("regions", regions, text=match.group(0).strip()))
+
+    m.sub(
+        r"\b(?:the\s+)?sides?\s+of\s+(?:the\s+)?arms?\s+[a-d](?:\s*(?:,|and|&)\s*(?:the\s+)?(?:arm\s+)?[a-d])*\b",
+        arms,
+    )
+
+    def regions(match: re.Match[str]) -> str:
+        text = match.group(0)
+        letters = [
+            x.upper() for x in re.findall(LETTER, re.sub(r"^.*?(?:regions?|areas?|zones?)\b", "", text))
+        ]
+        unknown = [x for x in letters if x not in scene.layout.regions]
+        if unknown:
+            raise HTTError(f"no region {', '.join(unknown)} in handover-{scene.layout.name}")
+        count = re.match(r"\s*(?:the\s+)?(two|three|four|\d+)\s", text)
+        if count and COUNTS.get(count.group(1)) != len(set(letters)):
+            raise HTTError(f"'{text.strip()}' says {count.group(1)} regions but names {len(set(letters))}")
+        return _new_place(m, Place("regions", tuple(dict.fromkeys(letters)), text=text.strip()))
+
+    link = r"(?:\s*(?:,|\band\b|\bor\b|\bat\b|&|\(|\)))*\s*(?:\bregions?\s+)?"
+    lead = (
+        r"\b(?:the\s+)?(?:(?:two|three|four|\d+)\s+)?(?:(?:goal|target|placement|destination)\s+)?"
+        r"(?:regions?|areas?|zones?)\s*(?:\(\s*)?(?:at\s+)?(?:regions?\s+)?"
+    )
+    m.sub(lead + LETTER + r"(?:" + link + LETTER + r")*(?:\s*\))?(?:\s+at\b)?", regions)
+    # a place named twice ("region G (where the red block is)", "area (E, F, G) to the side of arm a"):
+    # both readings must agree
+    apposition = r"P(\d+)\s*(?:,|\(|to|on|at|in)?\s*P(\d+)\s*\)?"
+    while re.search(apposition, m.text):
+        m.sub(apposition, lambda match: _merge(m, int(match.group(1)), int(match.group(2))))
+
+
+def _merge(m: Marked, i: int, j: int) -> str:
+    a, b = m.places[i], m.places[j]
+    if a.kind != "regions" or b.kind not in ("regions", "start_of") or set(a.regions) != set(b.regions):
+        raise HTTError(f"'{a.text}' and '{b.text}' name different places")
+    return f" P{i} "

@@ -1,0 +1,120 @@
+"""The language stage on the handover worlds: the eight Table III instructions and our own rephrasings
+give the written specs, node by node (Spot equivalence); what the rules cannot read is refused."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+from handover_rephrasings import REPHRASINGS
+
+from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.evaluation.handover import instance, load_tasks, specs_equivalent
+from nl2hltl2plan.language.translate import translate
+from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
+
+TASKS = {t.id: t for t in load_tasks()}
+
+
+def _spec(task_id: int, text: str, k: int = 0) -> HierarchicalSpec:
+    result = translate(text, instance(TASKS[task_id], 0, k).as_world())
+    assert result.spec is not None
+    return result.spec
+
+
+@pytest.mark.parametrize("task_id", sorted(TASKS))
+def test_table3_instructions_give_the_written_specs(task_id):
+    task = TASKS[task_id]
+    equal, why = specs_equivalent(_spec(task_id, task.instruction), task.hierarchical())
+    assert equal, why
+
+
+@pytest.mark.parametrize(
+    ("task_id", "text"), [(t, text) for t, texts in REPHRASINGS.items() for text in texts]
+)
+def test_rephrasings_give_the_same_specs(task_id, text):
+    equal, why = specs_equivalent(_spec(task_id, text), TASKS[task_id].hierarchical())
+    assert equal, why
+
+
+@pytest.mark.parametrize(
+    ("task_id", "text"),
+    [
+        (1, "Transfer three blocks into the opposite. The blue block should be placed before the red block."),
+        (3, "Move the three pillars to regions E, F and G."),  # the prohibition is missing
+        (4, "Transfer three blocks into the opposite regions. Then place the yellow block on region G."),
+        (7, "Place the three objects one after another to region I, no objects can be placed on region F."),
+    ],
+)
+def test_a_different_meaning_gives_a_different_spec(task_id, text):
+    equal, _ = specs_equivalent(_spec(task_id, text), TASKS[task_id].hierarchical())
+    assert not equal
+
+
+def test_the_opposite_side_is_resolved_against_where_the_blocks_start():
+    """Task 3's instances start the blocks on H, I, J: there 'the opposite' is E, F, G."""
+    spec = _spec(3, "Move the three blocks to the opposite side.")
+    atoms = spec.atoms()
+    assert {"at(Red,E)", "at(Red,F)", "at(Red,G)"} <= atoms
+    assert not any(a.endswith(("H)", "I)", "J)")) for a in atoms)
+
+
+@pytest.mark.parametrize(
+    ("text", "named"),
+    [
+        ("Transfer three blocks into the opposite gently.", "gently"),
+        ("Move two blocks to region H.", "names two blocks"),
+        ("Put the green block in region H.", "green"),
+        ("Put the red block in region K.", "cannot use"),
+        ("The red block should be placed before the blue block.", "no goal"),
+        ("Put the red block in region H unless it rains.", "rains"),
+        ("Swap the red block and the blue block, placing red first.", "placing"),  # no order is guessed
+    ],
+)
+def test_what_the_rules_cannot_read_is_refused_by_name(text, named):
+    with pytest.raises(HTTError, match=named) as exc:
+        translate(text, instance(TASKS[1], 0, 0).as_world())
+    assert "\n" not in str(exc.value)
+
+
+def test_plan_json_lists_tasks_before_and_constraints(capsys):
+    from nl2hltl2plan.cli.main import main
+
+    text = TASKS[4].instruction
+    assert main(["plan", text, "--world", "handover-square", "--json"]) == 2  # red does not start on G here
+    assert "name different places" in capsys.readouterr().err
+    text = "Put the red and blue blocks on the opposite side; the red block before the blue block. No block "
+    text += "can be placed on region F during this period."
+    assert main(["plan", text, "--world", "handover-square", "--json"]) == 0
+    payload = json.loads(capsys.readouterr().out)
+    assert payload["status"] == "solved"
+    assert [t["receptacle"] for t in payload["tasks"]] == [["RegionH", "RegionI", "RegionJ"]] * 2
+    assert payload["before"] == [["A", "B"]]
+    assert payload["constraints"] == sorted(payload["constraints"])
+    assert "until red is on H|I|J: none of drop(F)" in payload["constraints"]
+    assert any(c.startswith("at once: red on H|I|J, blue on H|I|J") for c in payload["constraints"])
+
+
+def test_bench_handover_plans_from_the_language_stage(tmp_path):
+    """`bench handover --llm offline`: each instance is planned from the language stage's spec and judged
+    against the written one; rows say language_equal; the budget is expansions."""
+    import argparse
+
+    from nl2hltl2plan.cli.bench_experiments import register
+    from nl2hltl2plan.evaluation.handover import run_bench
+
+    parser = argparse.ArgumentParser()
+    register(parser.add_subparsers(dest="suite"))
+    args = parser.parse_args(["handover", "-o", "d", "--llm", "offline", "--expansions", "5000"])
+    assert args.llm == "offline" and args.expansions == 5000
+    summary = run_bench(
+        tmp_path, instances=2, task_ids=[3], picture=False, backend="offline", max_expansions=5000
+    )
+    assert (
+        summary["specs"].startswith("language stage (offline)")
+        and "5000 expansions" in summary["planner_budget"]
+    )
+    task3 = summary["tasks"][0]
+    assert task3["language_equal"] is True and task3["success_rate"] == 1.0
+    assert all(r["language_equal"] and r["expanded"] <= 5000 for r in task3["per_instance"])
+    assert "language_equal" in (tmp_path / "report.md").read_text()
