@@ -18,17 +18,23 @@ turns silently into a "solved" plan.
 
 from __future__ import annotations
 
-import re
 from collections.abc import Iterable, Mapping, Sequence
 from typing import Any, Protocol
 
 import networkx as nx
 
 from nl2hltl2plan.language.grounding import THOR_TYPES, find_mentions, lookup, tokens
+from nl2hltl2plan.logic.atom import Atom
 from nl2hltl2plan.worlds.model import KNIFE_TYPES, sliced_type
 from nl2hltl2plan.worlds.tasks import APPLIANCE
 
-_ACTION = re.compile(r"^([a-z_]+)\(([A-Za-z]+)(?:,([A-Za-z]+))?\)$")
+
+def _action(text: str) -> Atom | None:
+    """An action on object types (letters only: no instance names) with one or two arguments, or None."""
+    atom = Atom.read(text)
+    ok = atom is not None and len(atom.args) <= 2 and all(x.isalpha() for x in atom.args)
+    return atom if ok else None
+
 # types a task of this kind uses without naming them as a field
 IMPLIED: dict[str, tuple[str, ...]] = {
     "clean_place": ("SinkBasin", "Sink", "Faucet"),
@@ -75,9 +81,9 @@ def _types(value: Any) -> set[str]:
 def _parse(actions: Sequence[str]) -> list[tuple[str, list[str]]]:
     out = []
     for a in actions:
-        m = _ACTION.match(a.replace(" ", ""))
-        if m:
-            out.append((m.group(1), [x for x in m.groups()[1:] if x]))
+        m = _action(a)
+        if m is not None:
+            out.append((m.verb, list(m.args)))
     return out
 
 

@@ -29,6 +29,7 @@ from nl2hltl2plan.language import semantic_check
 from nl2hltl2plan.language.llm.client import LLMClient, Validator
 from nl2hltl2plan.language.prompts import load_prompt
 from nl2hltl2plan.language.tasks import Kind
+from nl2hltl2plan.logic.atom import Atom
 from nl2hltl2plan.worlds.plan import ACTION_ARITY
 from nl2hltl2plan.worlds.tasks import State
 
@@ -269,7 +270,14 @@ VOCABULARY_TEXT = "\n".join(
         "- slice(O): slice O while holding a Knife or ButterKnife; the pieces have type OSliced",
     ]
 )
-_ACTION = re.compile(r"^([a-z_]+)\(([A-Za-z]+)(?:,([A-Za-z]+))?\)$")
+
+
+def _action(text: str) -> Atom | None:
+    """An action on object types (letters only: no instance names) with one or two arguments, or None."""
+    atom = Atom.read(text)
+    ok = atom is not None and len(atom.args) <= 2 and all(x.isalpha() for x in atom.args)
+    return atom if ok else None
+
 
 
 class Actions(BaseModel):
@@ -286,15 +294,15 @@ class Actions(BaseModel):
 def check_actions(actions: list[str], scene_types: set[str] | None, scene: str = "the scene") -> None:
     """ValueError naming the first malformed action or unknown type."""
     for a in actions:
-        m = _ACTION.match(a.replace(" ", ""))
-        if not m or m.group(1) not in ACTION_VOCABULARY:
+        m = _action(a)
+        if m is None or m.verb not in ACTION_VOCABULARY:
             raise ValueError(
                 f"{a!r} is not an action; use only {sorted(ACTION_VOCABULARY)} as verb(Type) or "
                 "put(Type,Type)"
             )
-        args = [x for x in m.groups()[1:] if x]
-        if len(args) != ACTION_VOCABULARY[m.group(1)]:
-            raise ValueError(f"{a!r}: {m.group(1)} takes {ACTION_VOCABULARY[m.group(1)]} argument(s)")
+        args = list(m.args)
+        if len(args) != ACTION_VOCABULARY[m.verb]:
+            raise ValueError(f"{a!r}: {m.verb} takes {ACTION_VOCABULARY[m.verb]} argument(s)")
         if scene_types is not None:
             for t in args:
                 if t not in scene_types:

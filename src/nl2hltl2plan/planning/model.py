@@ -16,7 +16,6 @@ any search, with a readable reason.
 
 from __future__ import annotations
 
-import re
 from collections import deque
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
@@ -26,13 +25,13 @@ import networkx as nx
 
 from nl2hltl2plan.errors import PlanningError, SpecError
 from nl2hltl2plan.logic import spot_backend as sb
+from nl2hltl2plan.logic.atom import Atom
 from nl2hltl2plan.logic.automaton import DEAD, Dfa
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.worlds.model import KNIFE_TYPES, Cell, World
 from nl2hltl2plan.worlds.plan import ACTION_ARITY
 
 DONE = -2  # leaf / non-leaf state once its formula is satisfied
-_ATOM = re.compile(r"^([a-z_]+)\(([A-Za-z0-9_.]+(?:,[A-Za-z0-9_.]+)*)\)$")
 MAX_PATHS = 12  # remaining action sequences kept per leaf state for the heuristic
 
 
@@ -45,7 +44,9 @@ class Infeasible(Exception):
 
 
 @dataclass(frozen=True)
-class Atom:
+class LeafAtom:
+    """An action atom of one leaf, with its letter in the leaf's DFA."""
+
     text: str  # put(Apple,Fridge)
     verb: str
     types: tuple[str, ...]
@@ -53,11 +54,11 @@ class Atom:
 
 
 def parse_atom(text: str) -> tuple[str, tuple[str, ...]] | None:
-    m = _ATOM.match(text)
-    if not m or m.group(1) not in ACTION_ARITY:
+    """(verb, types) of a robot action atom with the verb's arity, or None."""
+    atom = Atom.read(text)
+    if atom is None or atom.verb not in ACTION_ARITY or len(atom.args) != ACTION_ARITY[atom.verb]:
         return None
-    types = tuple(m.group(2).split(","))
-    return (m.group(1), types) if len(types) == ACTION_ARITY[m.group(1)] else None
+    return atom.verb, atom.args
 
 
 @dataclass
@@ -65,7 +66,7 @@ class Leaf:
     index: int
     name: str
     dfa: Dfa
-    atoms: tuple[Atom, ...]
+    atoms: tuple[LeafAtom, ...]
     init: int  # DFA state, or DONE when the formula holds before any event
     moves: dict[int, list[tuple[int, int]]]  # state -> [(atom index, next state or DONE)]
     min_events: dict[int, int]  # state -> fewest events to satisfy the leaf
@@ -144,7 +145,7 @@ class Problem:
             p = self.parent.get(p)
         return out
 
-    def can_do(self, robot: int, atom: Atom) -> bool:
+    def can_do(self, robot: int, atom: LeafAtom) -> bool:
         caps = self.capabilities[robot]
         return caps is None or atom.verb in caps or atom.text in caps
 
@@ -304,7 +305,7 @@ def _compile_leaf(index: int, name: str, dfa: Dfa) -> Leaf:
                 f"leaf {name}: {text!r} is not a robot action like pickup(Apple) or put(Apple,Fridge) "
                 f"(verbs: {', '.join(ACTION_ARITY)})"
             )
-        atoms.append(Atom(text, parsed[0], parsed[1], 1 << i))
+        atoms.append(LeafAtom(text, parsed[0], parsed[1], 1 << i))
     _check_stutter(name, dfa, [a.mask for a in atoms])
     moves: dict[int, list[tuple[int, int]]] = {}
     init = DONE if dfa.init in dfa.accepting else dfa.init
@@ -513,7 +514,7 @@ def _reach(world: World, oid: str, cells: set[Cell]) -> bool:
     return bool(set(world.objects[oid].interaction_cells) & cells)
 
 
-def _atom_problem(problem: Problem, atom: Atom, reachable) -> str | None:
+def _atom_problem(problem: Problem, atom: LeafAtom, reachable) -> str | None:
     world = problem.world
     verb, types = atom.verb, atom.types
     for t in types:

@@ -25,7 +25,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from nl2hltl2plan.planning.model import DONE, Atom, Leaf, Problem
+from nl2hltl2plan.planning.model import DONE, Leaf, LeafAtom, Problem
 from nl2hltl2plan.planning.navigation import INF, Navigator
 from nl2hltl2plan.planning.support import blockers, support_event
 from nl2hltl2plan.worlds.simulator import PRESENT, SimState
@@ -207,7 +207,7 @@ class Expander:
         return nq, done
 
     # ------------------------------------------------------------ candidates
-    def candidates(self, node: Node, leaf: Leaf, atom: Atom, pos: int) -> list[int]:
+    def candidates(self, node: Node, leaf: Leaf, atom: LeafAtom, pos: int) -> list[int]:
         """Instances the atom's pos-th type may bind to (the bound one if any)."""
         type_ = atom.types[pos]
         b = bound(node, leaf.index, type_)
@@ -228,7 +228,7 @@ class Expander:
                 out = [self.serves[faucet]]
         return out
 
-    def bindings(self, node: Node, leaf: Leaf, atom: Atom, robot: int,
+    def bindings(self, node: Node, leaf: Leaf, atom: LeafAtom, robot: int,
                  ordered: bool) -> list[tuple[int, ...]]:
         """Object tuples for the atom (`ordered`: nearest instances first)."""
         sim = node.sim
@@ -248,7 +248,9 @@ class Expander:
         src = self.slice_of[o]
         return bool(sim.flags[o] & PRESENT) or (src >= 0 and bool(sim.flags[src] & PRESENT))
 
-    def _nearest_first(self, node: Node, robot: int, cands: list[int], leaf: Leaf, atom: Atom) -> list[int]:
+    def _nearest_first(
+        self, node: Node, robot: int, cands: list[int], leaf: Leaf, atom: LeafAtom
+    ) -> list[int]:
         cell = node.cell[robot]
         nav = self.nav
         opener = atom.verb == "open" and self._opens_for(node, leaf, atom)
@@ -260,7 +262,7 @@ class Expander:
 
         return sorted(cands, key=key)
 
-    def _opens_for(self, node: Node, leaf: Leaf, atom: Atom) -> set[int]:
+    def _opens_for(self, node: Node, leaf: Leaf, atom: LeafAtom) -> set[int]:
         """Openables of the atom's type that hold a candidate of a type the leaf picks up later."""
         sim = node.sim
         target = atom.types[0]
@@ -522,7 +524,7 @@ class Expander:
                             break  # restricted successors: the nearest few instances that work
         return out
 
-    def _closest_robots(self, node: Node, leaf: Leaf, atom: Atom, robots: list[int]) -> list[int]:
+    def _closest_robots(self, node: Node, leaf: Leaf, atom: LeafAtom, robots: list[int]) -> list[int]:
         """Robots ordered by when they could reach the atom's nearest candidate (restricted mode)."""
         sim = node.sim
         holder = {sim.hand.get(r, -1): r for r in robots}

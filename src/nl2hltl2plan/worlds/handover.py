@@ -40,6 +40,7 @@ from typing import Literal
 
 from nl2hltl2plan.errors import WorldError
 from nl2hltl2plan.io import save_figure
+from nl2hltl2plan.logic.atom import Atom
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.logic.trace import TraceCheck, TraceEvent, check_trace
 from nl2hltl2plan.worlds.model import CELL_M, Affordances, Cell, World, WorldObject
@@ -225,7 +226,6 @@ def handover_world(config: str = "square") -> HandoverWorld:
 Snap = tuple[tuple[Cell, ...], tuple[int, ...], tuple[Cell | None, ...]]
 Event = tuple[str, int, Cell] | None  # ("pick" | "put", block index, cell) at this step, or None
 AtomFn = Callable[[Snap, Event], bool]
-_ATOM = re.compile(r"^([a-z]+)\(([A-Za-z@]+)(?:,([A-Za-z@0-9]+))?\)$")
 
 
 def _block_index(hw: HandoverWorld, name: str) -> int:
@@ -245,10 +245,10 @@ def _place(hw: HandoverWorld, name: str) -> Cell:
 
 def compile_atom(hw: HandoverWorld, atom: str) -> AtomFn:
     """A leaf atom -> a test on (snapshot, event); WorldError for an atom the world cannot read."""
-    m = _ATOM.match(atom)
-    if not m:
+    parsed = Atom.read(atom)
+    if parsed is None or len(parsed.args) > 2:
         raise WorldError(f"cannot read atom {atom!r} in {hw.name} (see worlds/handover.py for the atoms)")
-    verb, x, y = m.groups()
+    verb, x, y = parsed.verb, parsed.args[0], (parsed.args[1] if len(parsed.args) == 2 else None)
     labelled = frozenset(hw.layout.regions.values())
     if verb in ("at", "put") and y is not None:
         b, cell = _block_index(hw, x), _place(hw, y)
