@@ -24,6 +24,7 @@ from matplotlib.ticker import MaxNLocator  # noqa: E402
 
 from nl2hltl2plan.errors import WorldError  # noqa: E402
 from nl2hltl2plan.io import save_figure  # noqa: E402
+from nl2hltl2plan.logic.atom import Atom
 from nl2hltl2plan.worlds.model import CELL_M  # noqa: E402
 from nl2hltl2plan.worlds.plan import Plan, RobotPlan  # noqa: E402
 from nl2hltl2plan.worlds.simulator import Execution  # noqa: E402
@@ -152,9 +153,18 @@ def segments_from_events(events: Sequence[dict], robots: int) -> list[Segment]:
             if e["t"] - last - 1 > moves:
                 n = e["t"] - last - 1 - moves
                 out.append(Segment(robot, last + moves + 1, e["t"] - 1, "wait", f"wait x{n}"))
-            out.append(Segment(robot, e["t"], e["t"], "action", e["atom"], e.get("task")))
+            out.append(Segment(robot, e["t"], e["t"], "action", _instance_label(e), e.get("task")))
             last = e["t"]
     return out
+
+
+def _instance_label(event: dict) -> str:
+    """The action with the objects it acted on (`put(Mug_1,Sink_0)`), the names the text output and
+    the map use; the type-level atom when the row did not record them."""
+    atom, objects = Atom.read(str(event["atom"])), event.get("objects") or []
+    if atom is None or len(objects) != len(atom.args):
+        return str(event["atom"])
+    return str(Atom(atom.verb, tuple(objects)))
 
 
 def draw_gantt_events(
