@@ -71,12 +71,21 @@ def test_pictures_are_written_atomically(tmp_path: Path) -> None:
 def test_train_writes_to_the_user_cache_by_default(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
     monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path))
     written: list[Path] = []
-    from nl2hltl2plan.language.learned import train
+    from nl2hltl2plan.language.learned import structure_train, train
 
-    monkeypatch.setattr(train, "train_and_report", lambda out, seed=0: written.append(out) or "trained")
+    def record(out: Path, seed: int = 0) -> str:  # stands in for minutes of training
+        written.append(out)
+        return "trained"
+
+    monkeypatch.setattr(train, "train_and_report", record)
+    monkeypatch.setattr(structure_train, "train_and_report", record)
     assert main(["train", "language"]) == 0
-    assert written == [tmp_path / "nl2hltl2plan" / "models" / "slot_model.npz"]
+    models = tmp_path / "nl2hltl2plan" / "models"
+    assert written == [models / "slot_model.npz", models / "structure_model.npz"]
     assert slot_model.packaged_model_path() not in written
+    written.clear()
+    assert main(["train", "language", "--only", "structure"]) == 0
+    assert written == [models / "structure_model.npz"]
 
 
 def test_the_loader_prefers_the_user_model_and_names_a_damaged_one(
