@@ -23,7 +23,6 @@ from nl2hltl2plan.argtypes import int_in, seed
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.language.backends import BACKENDS
 from nl2hltl2plan.language.options import add_llm_arguments, llm_settings
-from nl2hltl2plan.planning.coop import MAX_EXPANSIONS
 
 MAX_INSTANCES = 1000  # the paper runs 25 (tabletop) and 10 (handover); each takes a planner call
 
@@ -67,9 +66,10 @@ def register(sub: Any) -> None:
             )
             p.add_argument(
                 "--expansions",
-                type=int_in(1, 100 * MAX_EXPANSIONS),  # bounded: a budget, not a way to run forever
-                default=MAX_EXPANSIONS,
-                help=f"planner budget per instance in expansions (deterministic; default {MAX_EXPANSIONS})",
+                type=int_in(1, 10_000_000),  # bounded: a budget, not a way to run forever
+                default=None,  # the planner's own (planning.coop.MAX_EXPANSIONS), read when the bench runs
+                help="planner budget per instance in expansions (deterministic; default: the cooperative "
+                "planner's own, planning.coop.MAX_EXPANSIONS)",
             )
         p.set_defaults(func=func)
 
@@ -114,6 +114,7 @@ def _errored_exit(errored: int) -> int:
 
 def run_handover(args: argparse.Namespace) -> int:
     from nl2hltl2plan.evaluation.handover import run_bench
+    from nl2hltl2plan.planning.coop import MAX_EXPANSIONS
 
     with _llm_client(args) as client:
         summary = run_bench(
@@ -122,7 +123,7 @@ def run_handover(args: argparse.Namespace) -> int:
             seed=args.seed,
             client=client,
             backend=args.llm,
-            max_expansions=args.expansions,
+            max_expansions=args.expansions or MAX_EXPANSIONS,
         )
     print((args.out / "report.md").read_text())
     print(f"wrote {args.out / 'summary.json'} ({len(summary['tasks'])} tasks)", file=sys.stderr)
