@@ -75,3 +75,18 @@ def test_the_readme_is_an_entry_point_whose_commands_ci_runs() -> None:
     ci = (ROOT / ".ci" / "run").read_text()
     assert 'eval "$install_line"' in ci and 'eval "$test_line"' in ci and "python3 -m venv" in ci
     assert "deptry" in ci
+
+
+def test_an_idle_robot_is_explained() -> None:
+    # one task, two robots: the summed-travel objective leaves the far robot idle, and says why
+    from nl2hltl2plan.pipeline import PipelineOptions, run
+    from nl2hltl2plan.worlds import load_world
+
+    out = run("put a cup in the upper rack", load_world("demo"), robots=2)
+    assert out.ok
+    note = out.idle_note()
+    assert note is not None and "stays idle" in note and "'minmax'" in note
+    assert out.to_json()["idle_note"] == note
+    team = run("put a cup in the upper rack", load_world("demo"), robots=1,
+               options=PipelineOptions(objective="minmax"))
+    assert team.idle_note() is None  # a single robot is never "idle beside the others"

@@ -173,6 +173,21 @@ class Outcome:
     def ok(self) -> bool:
         return self.planned.success
 
+    def idle_note(self) -> str | None:
+        """Why a robot of the team does nothing in the plan (a newcomer reads an idle robot as broken
+        multi-robot planning); None when every robot acts."""
+        plan = self.result.plan
+        if plan is None or len(plan.robots) < 2:
+            return None
+        idle = [rp.robot for rp in plan.robots if all(st.verb in ("move", "wait") for st in rp.steps)]
+        if not idle:
+            return None
+        who = f"robot {', '.join(map(str, idle))} stays idle"
+        if self.result.objective == "min":
+            return (f"{who}: under the objective 'min' (the paper's summed travel) giving it work would not "
+                    "lower the team's travel; the objective 'minmax' minimises the completion time instead")
+        return f"{who}: giving it work would not finish the plan sooner (the tasks' order or distances)"
+
     def to_json(self) -> dict[str, Any]:
         """The JSON of `plan --json` and of the web API's `POST /api/plan` (see docs/plan_schema.md)."""
         lang = self.language
@@ -204,6 +219,7 @@ class Outcome:
             "warnings": lang.warnings,
             "ltl_checks": lang.ltl_checks,
             "llm_calls": lang.llm_calls,
+            "idle_note": self.idle_note(),
         }
 
 

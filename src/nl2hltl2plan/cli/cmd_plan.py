@@ -252,13 +252,9 @@ def _print_human(outcome: Any) -> None:
         print(f"  robot {rp.robot} from {tuple(rp.start)}: {moves} moves; " + ("; ".join(acts) or "idle"))
     print(f"  travel cost: {r.travel_m:.2f} m   completion time: {r.steps} steps")
     print(f"  {r.optimality} ({r.model})")
-    idle = [rp.robot for rp in r.plan.robots if all(st.verb in ("move", "wait") for st in rp.steps)]
-    if idle and r.objective == "min":
-        print(
-            f"  robot {', '.join(map(str, idle))} stays idle: under the objective 'min' (the paper's summed "
-            "travel) giving it work would not lower the team's travel; --objective minmax minimises the "
-            "completion time instead"
-        )
+    note = outcome.idle_note()
+    if note:
+        print(f"  {note}")
 
 
 def _write_outputs(folder: Path, outcome: Any, payload: dict[str, Any]) -> None:
