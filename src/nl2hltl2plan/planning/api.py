@@ -5,10 +5,11 @@ from __future__ import annotations
 import time
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
-from typing import Literal
+from typing import Any, Literal
 
 from nl2hltl2plan.errors import PlanningError
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
+from nl2hltl2plan.planning.engines import CooperativeEngine, Engine
 from nl2hltl2plan.planning.extract import refine_stand_cells, to_plan
 from nl2hltl2plan.planning.heuristic import Heuristic
 from nl2hltl2plan.planning.improve import improve
@@ -129,18 +130,58 @@ def plan(
     events, which never makes a plan worse (`model_cost` is the value before, `cost` after).
 
     Returns a `PlanResult` (status solved / infeasible with the reason / timeout / error: a plan that
-    failed validation, a planner bug, with the reason). A `handover` world (fixed arms) goes to the
-    cooperative engine (`planning.coop`), which answers in the same `PlanResult`. Malformed input
+    failed validation, a planner bug, with the reason). The first of `ENGINES` that supports the world
+    plans: a `handover` world (fixed arms) goes to the cooperative engine (`planning.engines`), which
+    answers in the same `PlanResult`; every other world to the search planner. Malformed input
     (not a HierarchicalSpec, a start cell that is not free, a leaf atom that is not an action)
     raises `PlanningError`. `on_progress`, when given, hears the search's `SearchStats` (expansions,
     best cost and lower bound so far) every quarter second or so (the web page's progress).
     """
-    t0 = time.perf_counter()
     _check_arguments(spec, objective, mode, w)
-    if world.kind == "handover":  # fixed arms passing blocks through shared cells: the cooperative engine
-        from nl2hltl2plan.planning.coop import plan_world
+    engine = next(e for e in ENGINES if e.supports(world))
+    return engine.solve(
+        world, spec, starts, objective=objective, mode=mode, timeout_s=timeout_s, capabilities=capabilities,
+        w=w, fast_expansions=fast_expansions, fast_work=fast_work, improve_evals=improve_evals,
+        lns_evals=lns_evals, max_nodes=max_nodes, refine=refine, on_progress=on_progress,
+    )
 
-        return plan_world(world, spec, starts, timeout_s=timeout_s)
+
+class SearchEngine:
+    """The search planner (this module): every grid world with mobile robots."""
+
+    name = "search"
+
+    def supports(self, world: World) -> bool:
+        return True
+
+    def solve(
+        self, world: World, spec: HierarchicalSpec, starts: Sequence[Cell], **options: Any
+    ) -> PlanResult:
+        return _search_plan(world, spec, starts, **options)
+
+
+ENGINES: list[Engine] = [CooperativeEngine(), SearchEngine()]  # asked in order: the first that supports
+
+
+def _search_plan(
+    world: World,
+    spec: HierarchicalSpec,
+    starts: Sequence[Cell],
+    objective: ObjectiveName,
+    mode: Mode,
+    timeout_s: float,
+    capabilities: Sequence[Iterable[str] | None] | None,
+    w: float,
+    fast_expansions: int | None,
+    fast_work: int | None,
+    improve_evals: int,
+    lns_evals: int,
+    max_nodes: int | None,
+    refine: bool | None,
+    on_progress: ProgressHook | None,
+) -> PlanResult:
+    """`plan` by the search planner: seeds, local search, AWA* (see `plan`)."""
+    t0 = time.perf_counter()
     obj = objective_for(objective)
     result = PlanResult(status=PlanStatus.TIMEOUT, objective=objective, mode=mode)
     deadline = t0 + timeout_s
