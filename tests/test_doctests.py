@@ -11,6 +11,7 @@ MODULES = [
     "nl2hltl2plan.io",
     "nl2hltl2plan.logic.atom",
     "nl2hltl2plan.domain.object_state",
+    "nl2hltl2plan.language.parsers",
     "nl2hltl2plan.argtypes",
     "nl2hltl2plan.pipeline",
     "nl2hltl2plan.logic.trace",

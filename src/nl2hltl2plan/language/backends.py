@@ -10,11 +10,9 @@ from nl2hltl2plan.errors import LLMError
 from nl2hltl2plan.language.llm.batch import BatchCollector
 from nl2hltl2plan.language.llm.client import LLMClient
 from nl2hltl2plan.language.llm.settings import LLMSettings
+from nl2hltl2plan.language.parsers import PARSERS  # the backends that need no LLM
 
 Backend = Literal["offline", "learned", "grammar", "local", "openai"]
-# Backends that need no LLM: `offline` (the default) = the grammar with the learned slot model and
-# segmentation rescue (`language.learned`); `learned` is its former name; `grammar` = the grammar alone.
-PARSERS = ("offline", "learned", "grammar")
 BACKENDS: tuple[str, ...] = get_args(Backend)
 
 

@@ -23,12 +23,12 @@ from typing import Literal, Protocol
 from nl2hltl2plan.errors import HTTError, LLMError, Nl2Hltl2PlanError, WorldError
 from nl2hltl2plan.language import handover, stages
 from nl2hltl2plan.language.accounting import account, take_every_instance
-from nl2hltl2plan.language.backends import PARSERS
 from nl2hltl2plan.language.grounding import AffordanceLookup, Grounder, world_lookup
 from nl2hltl2plan.language.htt_build import build_htt
 from nl2hltl2plan.language.llm.batch import PendingAnswer
 from nl2hltl2plan.language.llm.client import LLMClient
 from nl2hltl2plan.language.ltl_generation import llm_generate_ltl, translator_client
+from nl2hltl2plan.language.parsers import PARSERS
 from nl2hltl2plan.language.result import Ambiguity, LanguageResult
 from nl2hltl2plan.language.scoring import match
 from nl2hltl2plan.language.spec_builder import GenerateLTL, build_spec
@@ -227,20 +227,9 @@ def _parse(
     look: AffordanceLookup | None,
     world: SceneLike | None = None,
 ) -> LanguageResult:
-    """The parser backends: the grammar with the learned slot model (offline / learned), or the grammar."""
-    from nl2hltl2plan.language import learned, offline
-
-    ambiguities: list[Ambiguity] = []
-    if backend == "grammar":
-        parsed: offline.OfflineParse = offline.parse_instruction(
-            instruction, types, scene or "the scene", strict=strict, affordances=look
-        )
-    else:
-        lp = learned.parse_instruction(
-            instruction, types, scene or "the scene", strict=strict, affordances=look
-        )
-        parsed = lp
-        ambiguities = lp.ambiguities
+    """A backend that needs no LLM (`parsers.PARSERS`), then the clauses only a state task reads."""
+    parse = PARSERS[backend]
+    parsed, ambiguities = parse(instruction, types, scene or "the scene", strict=strict, affordances=look)
     if parsed.unparsed:  # clauses that change one object's state (SMART-LLM's skills)
         states, left = read_unparsed_states(
             parsed.unparsed, len(parsed.tasks), Grounder(types, scene or "the scene")
