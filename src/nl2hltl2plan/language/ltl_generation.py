@@ -5,14 +5,13 @@ paper lists as missing)."""
 
 from __future__ import annotations
 
-import os
 import re
 from collections.abc import Sequence
 
-from nl2hltl2plan.errors import FormulaError, LLMError
+from nl2hltl2plan.errors import FormulaError
 from nl2hltl2plan.language import stages
 from nl2hltl2plan.language.llm.client import LLMClient
-from nl2hltl2plan.language.llm.settings import LLMSettings
+from nl2hltl2plan.language.llm.settings import translator_settings
 from nl2hltl2plan.language.spec_builder import GenerateLTL
 from nl2hltl2plan.logic.relations import check_translation, compile_relations
 
@@ -21,16 +20,7 @@ def translator_client() -> LLMClient:
     """The learned translator (the paper's fine-tuned model over lifted sentences), served by any
     OpenAI-compatible server: NL2HLTL2PLAN_TRANSLATOR_BASE_URL / _MODEL / _API_KEY."""
 
-    url = os.environ.get("NL2HLTL2PLAN_TRANSLATOR_BASE_URL")
-    if not url:
-        raise LLMError(
-            "--ltl learned needs NL2HLTL2PLAN_TRANSLATOR_BASE_URL (a server for the fine-tuned translator)"
-        )
-    settings = LLMSettings.from_env(
-        base_url=url,
-        model=os.environ.get("NL2HLTL2PLAN_TRANSLATOR_MODEL", "translator"),
-        api_key=os.environ.get("NL2HLTL2PLAN_TRANSLATOR_API_KEY", "none"),
-    )
+    settings = translator_settings()
     return LLMClient(settings)
 
 

