@@ -21,9 +21,9 @@ from nl2hltl2plan.web.app import create_app
 
 FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
          "--disable-component-update", "--disable-sync"]  # fmt: skip
-INSTRUCTION = (
-    "Put the apple in the fridge. Then put the mug in the cabinet. "
-    "Finally, put the bread on the dining table."
+INSTRUCTION = (  # the README's example: both robots work under the completion-time objective
+    "Put the plates, mugs and utensils in the lower rack in any order; after that, first the saucers, "
+    "then the cups, in the upper rack"
 )
 
 
