@@ -5,8 +5,6 @@ to its own request."""
 from __future__ import annotations
 
 import json
-import socket
-import threading
 import time
 
 import pytest
@@ -14,30 +12,16 @@ import pytest
 pytest.importorskip("fastapi", reason="the web app needs the [web] extra (fastapi); it is not installed")
 uvicorn = pytest.importorskip("uvicorn", reason="the web app needs uvicorn; it is not installed")
 
+from serving import served  # noqa: E402
+
 from nl2hltl2plan.web.app import create_app  # noqa: E402
 from nl2hltl2plan.web.load import run_load  # noqa: E402
 
 
-def serve(app) -> tuple[str, uvicorn.Server, threading.Thread]:
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        port = s.getsockname()[1]
-    srv = uvicorn.Server(uvicorn.Config(app, host="127.0.0.1", port=port, log_level="warning"))
-    thread = threading.Thread(target=srv.run, daemon=True)
-    thread.start()
-    deadline = time.time() + 30
-    while not srv.started and time.time() < deadline:
-        time.sleep(0.05)
-    assert srv.started, "the server did not start"
-    return f"http://127.0.0.1:{port}", srv, thread
-
-
 @pytest.fixture(scope="module")
 def url():
-    url, srv, thread = serve(create_app(workers=1, queue=8))  # one CPU: the suite's other worker keeps one
-    yield url
-    srv.should_exit = True
-    thread.join(10)
+    with served(create_app(workers=1, queue=8)) as base:  # one CPU: the suite's other worker keeps one
+        yield base
 
 
 def test_light_requests_stay_fast_and_answers_stay_with_their_clients(url):

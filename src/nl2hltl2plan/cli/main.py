@@ -69,13 +69,6 @@ def _one_line(text: str) -> str:
     return " | ".join(lines) if lines else "unknown error"
 
 
-def _commands(parser: argparse.ArgumentParser) -> list[str]:
-    for action in parser._actions:  # noqa: SLF001 - argparse keeps its sub-commands here
-        if isinstance(action, argparse._SubParsersAction):  # noqa: SLF001
-            return list(action.choices)
-    return []
-
-
 def main(argv: list[str] | None = None) -> int:
     try:
         code = _run(argv)
@@ -96,7 +89,7 @@ def _run(argv: list[str] | None) -> int:
         return int(exc.code or 0) if isinstance(exc.code, int | None) else 2
     if not getattr(args, "func", None):  # no command: usage, then one line saying so (bad usage: 2)
         parser.print_help(sys.stderr)
-        print(f"error: {parser.prog}: no command given; choose one of {', '.join(_commands(parser))}",
+        print(f"error: {parser.prog}: no command given; choose one of {', '.join(COMMANDS)}",
               file=sys.stderr)  # fmt: skip
         return 2
     try:

@@ -1,6 +1,7 @@
 """The backends that need no LLM, behind one interface: each reads an instruction into base tasks,
-their order and groups (an `OfflineParse`) and the ambiguous words it ranked. `translate` looks the
-backend up in `PARSERS` instead of switching on its name.
+their order and groups and the ambiguous words it ranked (an `OfflineParse`). `translate` looks the
+backend up in `PARSERS` instead of switching on its name; each is imported on first use, so that the
+CLI starts without the parsers.
 
 - `offline` (the default; `learned` is its former name): the grammar parser with the learned
   structure and slot models (`language.learned`);
@@ -12,48 +13,38 @@ backend up in `PARSERS` instead of switching on its name.
 
 from __future__ import annotations
 
+import importlib
 from typing import TYPE_CHECKING, Protocol
 
 if TYPE_CHECKING:
     from nl2hltl2plan.language.grounding import AffordanceLookup
     from nl2hltl2plan.language.offline import OfflineParse
-    from nl2hltl2plan.language.result import Ambiguity
 
 
 class Parser(Protocol):
     def __call__(
         self, instruction: str, types: set[str] | None, scene: str, *, strict: bool,
         affordances: AffordanceLookup | None,
-    ) -> tuple[OfflineParse, list[Ambiguity]]: ...
+    ) -> OfflineParse: ...
 
 
-def grammar_parser(
-    instruction: str,
-    types: set[str] | None,
-    scene: str,
-    *,
-    strict: bool,
-    affordances: AffordanceLookup | None,
-) -> tuple[OfflineParse, list[Ambiguity]]:
-    """The grammar alone: no ranking, so no ambiguities are reported."""
-    from nl2hltl2plan.language import offline
+def _lazy(module: str) -> Parser:
+    """The `parse_instruction` of `module`, imported when first called."""
 
-    return offline.parse_instruction(instruction, types, scene, strict=strict, affordances=affordances), []
+    def parse(
+        instruction: str, types: set[str] | None, scene: str, *, strict: bool,
+        affordances: AffordanceLookup | None,
+    ) -> OfflineParse:
+        reader = importlib.import_module(module).parse_instruction
+        parsed: OfflineParse = reader(instruction, types, scene, strict=strict, affordances=affordances)
+        return parsed
 
-
-def offline_parser(
-    instruction: str,
-    types: set[str] | None,
-    scene: str,
-    *,
-    strict: bool,
-    affordances: AffordanceLookup | None,
-) -> tuple[OfflineParse, list[Ambiguity]]:
-    """The grammar with the learned structure and slot models, which rank ambiguous words."""
-    from nl2hltl2plan.language import learned
-
-    parse = learned.parse_instruction(instruction, types, scene, strict=strict, affordances=affordances)
-    return parse, parse.ambiguities
+    return parse
 
 
-PARSERS: dict[str, Parser] = {"offline": offline_parser, "learned": offline_parser, "grammar": grammar_parser}
+_OFFLINE = _lazy("nl2hltl2plan.language.learned")
+PARSERS: dict[str, Parser] = {
+    "offline": _OFFLINE,
+    "learned": _OFFLINE,
+    "grammar": _lazy("nl2hltl2plan.language.offline"),
+}

@@ -16,8 +16,9 @@ relation compiler as GenerateLTL unless `ltl` asks for an LLM / learned translat
 
 from __future__ import annotations
 
+import contextlib
 from collections import Counter
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from typing import Literal, Protocol
 
 from nl2hltl2plan.errors import HTTError, LLMError, Nl2Hltl2PlanError, WorldError
@@ -104,7 +105,8 @@ def translate(
             picked.update(ask(res.ambiguities))
         apply_choices(res, picked)
         account_words(res, world)
-        _finish_or_refuse(res, world, backend, client, ltl, actions, build)
+        with _refused_as_not_understood(res, world):
+            _finish(res, world, backend, client, ltl, actions, build)
         return res
     if client is None:
         raise LLMError(f"backend {backend} needs an LLM client (see backends.open_client)")
@@ -112,7 +114,8 @@ def translate(
         res = _llm(instruction, types, scene, client, strict)
         _cross_check(res, types, scene)
         account_words(res, world)
-        _finish_or_refuse(res, world, backend, client, ltl, actions, build)
+        with _refused_as_not_understood(res, world):
+            _finish(res, world, backend, client, ltl, actions, build)
     return res
 
 
@@ -148,19 +151,12 @@ def _cross_check(res: LanguageResult, types: set[str] | None, scene: str | None)
         res.warnings.append(f"the learned parser reads this instruction differently from the LLM: {why}")
 
 
-def _finish_or_refuse(
-    res: LanguageResult,
-    world: SceneLike | None,
-    backend: str,
-    client: LLMClient | None,
-    ltl: LtlSource,
-    actions: ActionSource,
-    build: bool,
-) -> None:
-    """`_finish`; a task of a partly understood parse that the world cannot do is reported as what was
-    not understood (the cause in brackets), not as a world error."""
+@contextlib.contextmanager
+def _refused_as_not_understood(res: LanguageResult, world: SceneLike | None) -> Iterator[None]:
+    """A task of a partly understood parse that the world cannot do is reported as what was not
+    understood (the cause in brackets), not as a world error."""
     try:
-        _finish(res, world, backend, client, ltl, actions, build)
+        yield
     except (WorldError, HTTError) as exc:
         if not res.partial:
             raise
@@ -229,7 +225,7 @@ def _parse(
 ) -> LanguageResult:
     """A backend that needs no LLM (`parsers.PARSERS`), then the clauses only a state task reads."""
     parse = PARSERS[backend]
-    parsed, ambiguities = parse(instruction, types, scene or "the scene", strict=strict, affordances=look)
+    parsed = parse(instruction, types, scene or "the scene", strict=strict, affordances=look)
     if parsed.unparsed:  # clauses that change one object's state (SMART-LLM's skills)
         states, left = read_unparsed_states(
             parsed.unparsed, len(parsed.tasks), Grounder(types, scene or "the scene")
@@ -267,7 +263,7 @@ def _parse(
         before=list(parsed.before),
         task_node=task_node,
         leaf_task=leaf_task,
-        ambiguities=ambiguities,
+        ambiguities=parsed.ambiguities,
         unparsed=parsed.unparsed,
         issues=parsed.issues,
     )

@@ -18,8 +18,6 @@ from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
 
-from pydantic import Field
-
 from nl2hltl2plan.errors import Nl2Hltl2PlanError, WorldError
 from nl2hltl2plan.language.accounting import account
 from nl2hltl2plan.language.grounding import AffordanceLookup, find_mentions
@@ -80,9 +78,7 @@ POLICIES: dict[str, Policy] = {
 
 
 class LearnedParse(OfflineParse):
-    """The offline parser's result plus the ranked alternatives of ambiguous words."""
-
-    ambiguities: list[Ambiguity] = Field(default_factory=list)
+    """The offline parser's result as the learned backend gives it (its `ambiguities` are ranked)."""
 
 
 @lru_cache(maxsize=2)

@@ -33,20 +33,33 @@ from nl2hltl2plan.worlds.tasks import SLOTS
 ARTIFACT = "slot_model.npz"
 
 
+def packaged_path(artifact: str) -> Path:
+    """A model file shipped inside the package (never written by default)."""
+    return Path(str(resources.files("nl2hltl2plan.language.learned") / artifact))
+
+
+def user_path(artifact: str) -> Path:
+    """Where `nl2hltl2plan train language` writes a model file by default, and what the loaders prefer."""
+    return user_cache_dir() / "models" / artifact
+
+
+def preferred_path(artifact: str) -> Path:
+    """The user's retrained model file when present, else the packaged one."""
+    user = user_path(artifact)
+    return user if user.exists() else packaged_path(artifact)
+
+
 def packaged_model_path() -> Path:
-    """The model shipped inside the package (never written by default)."""
-    return Path(str(resources.files("nl2hltl2plan.language.learned") / ARTIFACT))
+    return packaged_path(ARTIFACT)
 
 
 def user_model_path() -> Path:
-    """Where `nl2hltl2plan train language` writes by default, and what the loader prefers."""
-    return user_cache_dir() / "models" / ARTIFACT
+    return user_path(ARTIFACT)
 
 
 def default_model_path() -> Path:
-    """The model `SlotModel.load()` reads: the user's retrained one when present, else the packaged one."""
-    user = user_model_path()
-    return user if user.exists() else packaged_model_path()
+    """The slot model `SlotModel.load()` reads (`preferred_path`)."""
+    return preferred_path(ARTIFACT)
 FORMAT = 3
 HEADS = ("kind", *SLOTS, "sliced")
 

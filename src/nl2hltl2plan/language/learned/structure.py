@@ -21,14 +21,13 @@ import zipfile
 from collections.abc import Iterator
 from dataclasses import dataclass
 from functools import lru_cache
-from importlib import resources
 from pathlib import Path
 
 import numpy as np
 
-from nl2hltl2plan.config import user_cache_dir
 from nl2hltl2plan.errors import DataError
 from nl2hltl2plan.io import atomic_path
+from nl2hltl2plan.language.learned.model import preferred_path, user_path
 
 ARTIFACT = "structure_model.npz"
 _TOKEN = re.compile(r"[A-Za-z0-9]+(?:'[A-Za-z]+)?|[^\sA-Za-z0-9]")
@@ -210,13 +209,12 @@ class StructureModel:
 
 def user_structure_path() -> Path:
     """Where `nl2hltl2plan train language` writes the structure model by default (never the package)."""
-    return user_cache_dir() / "models" / ARTIFACT
+    return user_path(ARTIFACT)
 
 
 def default_structure_path() -> Path:
     """The user's retrained structure model when present, else the packaged one."""
-    user = user_structure_path()
-    return user if user.exists() else Path(str(resources.files("nl2hltl2plan.language.learned") / ARTIFACT))
+    return preferred_path(ARTIFACT)
 
 
 @lru_cache(maxsize=2)

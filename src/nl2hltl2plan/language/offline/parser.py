@@ -30,6 +30,7 @@ from nl2hltl2plan.language.offline.drafts import DraftBuilder
 from nl2hltl2plan.language.offline.relations import relate
 from nl2hltl2plan.language.offline.sentences import normalize, read_sentences
 from nl2hltl2plan.language.offline.tasks import TaskBuilder, build_tasks
+from nl2hltl2plan.language.result import Ambiguity
 from nl2hltl2plan.language.tasks import BaseTaskSpec, task_letter
 
 
@@ -43,6 +44,8 @@ class OfflineParse(BaseModel):
     group_texts: list[str] = Field(default_factory=list)  # the words that state each group
     unparsed: list[str] = Field(default_factory=list)
     issues: list[str] = Field(default_factory=list)
+    # words several scene types fit, ranked (the learned backend ranks them; the grammar alone reports none)
+    ambiguities: list[Ambiguity] = Field(default_factory=list)
 
 
 def parse_instruction(
