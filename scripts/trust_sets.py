@@ -5,15 +5,18 @@
     python scripts/trust_sets.py validation [--split valid_seen] [--n 2000] [--seed 1]  # check 1's flags
 
 The .txt files are hand-written, one instruction a line: `scene | instruction | base tasks | before |
-what must be refused`. Base tasks: `kind Object[/Alt] Destination [x2] [sliced] [in Container]` or
+what must be refused | constraints`. Constraints (what a negation forbids): `;`-separated, each the
+forbidden action patterns separated by blanks (`put(Cup,SinkBasin)`, `any(Tomato)` for every action the
+world allows on a tomato), optionally `until A` (the base task that lifts it).
+Base tasks: `kind Object[/Alt] Destination [x2] [sliced] [in Container]` or
 `set_state Object state`,
 `;`-separated, ids A, B, ... in order; before: `A<B, ...`. A line with something to refuse has
 `feasible: false` and that text in `issues` (its base tasks are the part a world can do).
 
 `measure` runs the `plan` command's language stage (no planning) on each line in its floor plan and
 sorts the outcome: refused (an error, exit 2), partial (`unparsed` names words), converted (the base
-tasks and orderings match the ground truth, lenient types) or wrong (anything else: a plan whose spec
-misses or changes part of the text).
+tasks, orderings and constraints match the ground truth, lenient types) or wrong (anything else: a plan
+whose spec misses or changes part of the text).
 """
 
 from __future__ import annotations
@@ -74,6 +77,7 @@ def parse_line(line: str, name: str, n: int) -> dict:
     parts = [p.strip() for p in line.split("|")]
     scene, instruction, tasks_text, before_text = parts[:4]
     refuse = parts[4] if len(parts) > 4 else ""
+    constraints = [parse_constraint(c) for c in (parts[5] if len(parts) > 5 else "").split(";") if c.strip()]
     tasks = [parse_task(t.strip(), chr(65 + k)) for k, t in enumerate(tasks_text.split(";")) if t.strip()]
     before = [p.strip().split("<") for p in before_text.split(",") if p.strip()]
     return {
@@ -87,7 +91,32 @@ def parse_line(line: str, name: str, n: int) -> dict:
         "issues": [refuse] if refuse else [],
         "ambiguous": False,
         "notes": ["written for issue 23"],
+        "constraints": constraints,
     }
+
+
+def parse_constraint(text: str) -> dict:
+    """`pattern pattern ... [until A]` -> {"forbid": [...], "until": "A" or None}."""
+    words = text.split()
+    until = words[words.index("until") + 1] if "until" in words else None
+    return {"forbid": [w for w in words if w != "until" and w != until], "until": until}
+
+
+def constraints_match(got: list, truth: list[dict], world) -> bool:
+    """Do the language stage's constraints forbid exactly what the ground truth's do (`any(X)`: every
+    action the world allows on X), each lifted by the same task?"""
+    from nl2hltl2plan.language.grounding import world_lookup
+    from nl2hltl2plan.language.negations import patterns
+
+    def expand(forbid: list[str]) -> frozenset[str]:
+        out: set[str] = set()
+        for p in forbid:
+            out |= set(patterns("any", [p[4:-1]], look=world_lookup(world))) if p.startswith("any(") else {p}
+        return frozenset(out)
+
+    want = sorted((sorted(expand(c["forbid"])), c["until"] or "") for c in truth)
+    have = sorted((sorted(c.forbid), c.until or "") for c in got)
+    return want == have
 
 
 def build() -> None:
@@ -111,14 +140,27 @@ def outcome(gt: GTInstance, backend: str = "offline") -> tuple[str, str]:
         return "partial", "; ".join(res.unparsed)
     apply_choices(res, top_candidates(res.ambiguities))
     verdict = match(res.tasks, res.before, [t.model_dump() for t in gt.tasks], gt.before, strict=False)
-    if gt.feasible and verdict.order_ok:
+    truth = constraints_of(gt)
+    if gt.feasible and verdict.order_ok and constraints_match(res.constraint_specs, truth, world):
         return "converted", ""
+    if gt.feasible and verdict.order_ok:
+        return "wrong", f"constraints {[c.describe() for c in res.constraint_specs]}, not {truth}"
     return "wrong", "; ".join(verdict.reasons) or f"not refused: {gt.issues}"
+
+
+_CONSTRAINTS: dict[str, list[dict]] = {}  # row id -> its constraints (GTInstance ignores the field)
+
+
+def constraints_of(gt: GTInstance) -> list[dict]:
+    """The ground truth's constraints, as `load` read them."""
+    return _CONSTRAINTS.get(gt.id, [])
 
 
 def load(name: str) -> list[GTInstance]:
     path = TRUST / f"{name}.jsonl"
-    return [GTInstance.model_validate_json(line) for line in path.read_text().splitlines() if line.strip()]
+    rows = [json.loads(line) for line in path.read_text().splitlines() if line.strip()]
+    _CONSTRAINTS.update({r["id"]: r.get("constraints", []) for r in rows})
+    return [GTInstance.model_validate(r) for r in rows]
 
 
 def measure(backend: str, show: bool) -> None:

@@ -80,7 +80,7 @@ def write_outputs(
     warnings: list[str] = []
     result = payload if payload is not None else outcome.to_json()
     _replace(out / "result.json", json.dumps(result, indent=1, default=str).encode())
-    _replace(out / "spec.json", json.dumps(outcome.spec.to_json_obj(), indent=1).encode())
+    _replace(out / "spec.json", outcome.spec.to_json(indent=1).encode())  # with its constraints, if any
     try:
         _replace(out / "spec.hoa", _hoa(outcome).encode())
     except Nl2Hltl2PlanError as exc:

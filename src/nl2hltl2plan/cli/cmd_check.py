@@ -43,6 +43,7 @@ def run(args: argparse.Namespace) -> int:
         "formulas": len(spec.names),
         "leaves": len(spec.leaves),
         "atoms": sorted(spec.atoms()),
+        "constraints": [c.describe() for c in spec.constraints],
     }
     return _report(args, 0, [], summary)
 
@@ -55,7 +56,7 @@ def _report(args: argparse.Namespace, code: int, reasons: list[str], summary: di
     elif code == 0 and summary:
         print(
             f"valid: {summary['levels']} levels, {summary['formulas']} formulas, {summary['leaves']} leaves, "
-            f"{len(summary['atoms'])} atomic propositions"
+            f"{len(summary['atoms'])} atomic propositions, {len(summary['constraints'])} constraints"
         )
     elif code == 2:
         print(f"error: {reasons[0]}", file=sys.stderr)

@@ -27,7 +27,9 @@ import networkx as nx
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.grounding import Mention, camel_words, find_mentions, lexicon, tokens
+from nl2hltl2plan.language.negations import ConstraintSpec
 from nl2hltl2plan.language.tasks import BaseTaskSpec
+from nl2hltl2plan.logic.atom import Atom
 from nl2hltl2plan.worlds.model import KNIFE_TYPES
 from nl2hltl2plan.worlds.tasks import APPLIANCE, slots_of
 
@@ -110,6 +112,8 @@ class _Parse:
 
     tasks: Sequence[BaseTaskSpec]
     before: Sequence[tuple[str, str]]
+    constraints: Sequence[ConstraintSpec] = ()
+    spans: Sequence[tuple[int, int, ConstraintSpec]] = ()  # where each constraint's words are
 
     @property
     def kinds(self) -> set[str]:
@@ -133,7 +137,14 @@ class _Parse:
                     types |= LAMPS  # "the light(s)" of a room is its light switch
                 if types:
                     out.append((t.id, role, frozenset(types)))
+        for k, c in enumerate(self.constraints, 1):  # a negation's things: one slot per type it forbids on
+            named = {a for p in c.forbid for a in (Atom.read_pattern(p) or Atom("", ())).args if a != "*"}
+            out += [(f"constraint {k}", "constraint", frozenset({t})) for t in sorted(named)]
         return out
+
+    def constraint_at(self, char: int) -> ConstraintSpec | None:
+        """The constraint whose words hold character `char` of the instruction."""
+        return next((c for a, b, c in self.spans if a <= char < b), None)
 
     def implied(self) -> set[str]:
         out: set[str] = set()
@@ -159,13 +170,19 @@ def account(
     before: Sequence[tuple[str, str]],
     instances: Mapping[str, int] | None = None,
     scene: str = "the scene",
+    constraints: Sequence[ConstraintSpec] = (),
 ) -> list[Unread]:
-    """The content words of `instruction` that `tasks`/`before` do not use, and the slots no word names.
+    """The content words of `instruction` that `tasks`/`before`/`constraints` do not use, and the slots
+    no word names.
 
     `instances`: how many objects of each type the scene holds (None: unknown, counts are not checked
-    against the scene). Raises HTTError for a count of zero, a count above what the scene holds, and a
-    cyclic order in the text."""
-    parse = _Parse(tasks, before)
+    against the scene). A negation, and the verb of its clause, count as used when a constraint's
+    words (`ConstraintSpec.text`, found in the instruction) hold it and the constraint forbids that
+    verb's action; the things a constraint forbids actions on count like a task's slots. Raises
+    HTTError for a count of zero, a count above what the scene holds, and a cyclic order in the text."""
+    lowered = instruction.lower()
+    spans = [(at, at + len(c.text), c) for c in constraints if (at := lowered.find(c.text.lower())) >= 0]
+    parse = _Parse(tasks, before, constraints, spans)
     toks = tokens(instruction)
     mentions = [m for m in find_mentions(instruction) if not m.entry.generic and not _is_verb(m, toks)]
     in_mention = {i for m in mentions for i in range(m.start, m.end)}
@@ -173,7 +190,7 @@ def account(
     out += _invented(mentions, toks, parse)
     out += _invented_kinds(toks, mentions, parse)
     out += _words(instruction, toks, in_mention, mentions, parse, instances, scene)
-    out += _orders(toks, in_mention, parse)
+    out += _orders(toks, {i for i, t in enumerate(toks) if parse.constraint_at(t[1])} | in_mention, parse)
     _check_cycles(instruction, toks, mentions, parse)
     return out
 
@@ -335,15 +352,21 @@ def _words(
         cats = categories(w)
         if not cats and not w.isdigit():
             continue
-        unread = _verb(w, cats, words, i, parse)
+        guard = parse.constraint_at(toks[i][1])
+        if guard is None:
+            unread = _verb(w, cats, words, i, parse)
+        else:
+            unread = _constraint_verb(w, cats, words, i, guard)
         if unread is None and not _locative_word(instruction, i, toks, mentions):
             unread = _noun(w, cats)
         if (
             "negation" in cats
+            and guard is None
             and not _until_guard(instruction, toks[i], parse)
             and not _free_order(instruction, toks[i])
         ):
-            unread = Unread(w, "negation", "a negated request: the spec has no constraint for it")
+            unread = Unread(w, "negation", "a negated request that no constraint of the spec carries (only "
+                            "actions on things of the world can be forbidden)")
         elif _count_value(cats, w) is not None or cats & {"quantifier_all", "quantifier_vague"}:
             unread = _count(instruction, toks[i], cats, mentions, parse, instances, scene)
         if unread is not None:
@@ -399,6 +422,25 @@ def _verb(w: str, cats: set[str], words: list[str], i: int, parse: _Parse) -> Un
                 return Unread(w, "action", f"no {kind} task")
     if "verb_sliced" in cats and not parse.sliced:
         return Unread(w, "action", "no task takes a slice")
+    return None
+
+
+def _constraint_verb(w: str, cats: set[str], words: list[str], i: int, c: ConstraintSpec) -> Unread | None:
+    """A verb inside a negated clause: the constraint must forbid its action."""
+    verbs = {a.verb for p in c.forbid if (a := Atom.read_pattern(p)) is not None}
+    after = words[i + 1 : i + 5]
+    if "verb_switch" in cats and ("on" in after or "off" in after):
+        need = "toggle_on" if "on" in after else "toggle_off"
+        if need in verbs:
+            return None
+        return Unread(w, "action", f"the constraint {c.text!r} does not forbid {need}")
+    wanted = {"verb_break": "break", "verb_sliced": "slice"}
+    for cat, verb in wanted.items():
+        if cat in cats and verb not in verbs:
+            return Unread(w, "action", f"the constraint {c.text!r} does not forbid {verb}")
+    states = {"verb_heat_place", "verb_cool_place", "verb_clean_place", "verb_examine_in_light"}
+    if cats & states or "verb_unsupported" in cats:
+        return Unread(w, "action", "a constraint forbids actions, not this (a change of state or a skill)")
     return None
 
 

@@ -5,6 +5,7 @@ from __future__ import annotations
 from pydantic import BaseModel, ConfigDict, Field
 
 from nl2hltl2plan.language.htt import HTT
+from nl2hltl2plan.language.negations import ConstraintSpec
 from nl2hltl2plan.language.tasks import BaseTaskSpec
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec, LeafOrFormula, format_spec
 
@@ -40,7 +41,10 @@ class LanguageResult(BaseModel):
     unparsed: list[str] = Field(default_factory=list)
     issues: list[str] = Field(default_factory=list)
     warnings: list[str] = Field(default_factory=list)
-    constraints: list[str] = Field(default_factory=list)  # guards and joint goals as text (handover worlds)
+    # the constraints as text, sorted: the negations' "words: formula" beside the spec; on the handover
+    # worlds their guards and joint goals
+    constraints: list[str] = Field(default_factory=list)
+    constraint_specs: list[ConstraintSpec] = Field(default_factory=list)  # the negations, typed
     llm_calls: dict[str, int] = Field(default_factory=dict)
 
     @property

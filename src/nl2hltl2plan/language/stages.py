@@ -138,8 +138,35 @@ class DecompNode(BaseModel):
         return TaskFields.model_validate(self.model_dump(exclude={"subtasks"}))
 
 
+CONSTRAINT_VERBS = ("put", "pickup", "open", "close", "toggle_on", "toggle_off", "slice", "break", "use")
+
+
+class ConstraintWords(BaseModel):
+    """A negation as the LLM states it ("never open the fridge"): the words, the forbidden action on an
+    object (and place, for put), and the task id whose completion lifts it (until-guards)."""
+
+    text: str = Field(max_length=MAX_TEXT)
+    verb: str = Field(json_schema_extra={"enum": list(CONSTRAINT_VERBS)})
+    object: str = Field(max_length=MAX_WORD)
+    receptacle: str | None = Field(default=None, max_length=MAX_WORD)
+    until: str | None = Field(default=None, max_length=12)
+    # what the coverage check reads of a task (`semantic_check.TaskWords`)
+    kind: str = "constraint"
+    sliced: bool = False
+    container: str | None = None
+    light: str | None = None
+
+    @field_validator("verb")
+    @classmethod
+    def _known_verb(cls, verb: str) -> str:
+        if verb not in CONSTRAINT_VERBS:
+            raise ValueError(f"constraint verb {verb!r}: use one of {', '.join(CONSTRAINT_VERBS)}")
+        return verb
+
+
 class Decomposition(BaseModel):
     tasks: list[DecompNode] = Field(min_length=1, max_length=MAX_TASKS)
+    constraints: list[ConstraintWords] = Field(default_factory=list, max_length=MAX_TASKS)
 
     @field_validator("tasks")
     @classmethod
@@ -167,7 +194,9 @@ def decompose(client: LLMClient, instruction: str, objects: list[str]) -> Decomp
         msgs,
         Decomposition,
         "decomposition",
-        lambda dec: semantic_check.decomposition_problems(instruction, decomposition_tasks(dec)),
+        lambda dec: semantic_check.decomposition_problems(
+            instruction, [*decomposition_tasks(dec), *dec.constraints]
+        ),
     )
 
 

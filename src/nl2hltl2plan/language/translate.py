@@ -29,6 +29,14 @@ from nl2hltl2plan.language.htt_build import build_htt
 from nl2hltl2plan.language.llm.batch import PendingAnswer
 from nl2hltl2plan.language.llm.client import LLMClient
 from nl2hltl2plan.language.ltl_generation import llm_generate_ltl, translator_client
+from nl2hltl2plan.language.negations import (
+    ConstraintSpec,
+    Negation,
+    patterns,
+    read_negations,
+    resolve_until,
+    spec_constraints,
+)
 from nl2hltl2plan.language.parsers import PARSERS
 from nl2hltl2plan.language.result import Ambiguity, LanguageResult
 from nl2hltl2plan.language.scoring import match
@@ -36,7 +44,7 @@ from nl2hltl2plan.language.spec_builder import GenerateLTL, build_spec
 from nl2hltl2plan.language.state_tasks import read_unparsed_states, state_orderings
 from nl2hltl2plan.language.suggest import not_understood, suggestion_text
 from nl2hltl2plan.language.tasks import BaseTaskSpec, task_letter, transitive_reduction
-from nl2hltl2plan.logic.hierarchical import LeafOrFormula
+from nl2hltl2plan.logic.hierarchical import HierarchicalSpec, LeafOrFormula
 from nl2hltl2plan.logic.relations import compile_relations
 from nl2hltl2plan.worlds.model import World
 from nl2hltl2plan.worlds.tasks import SLOTS, demand_of
@@ -99,7 +107,13 @@ def translate(
         return handover.translate_handover(instruction, world)
     if backend in PARSERS:
         look = world_lookup(world) if isinstance(world, World) else None
-        res = _parse(backend, instruction, types, scene, strict, look, world)
+        grounder = Grounder(types, scene or "the scene")
+        rest, negations = read_negations(instruction, grounder, look)
+        if negations and not rest.strip(" ,.;!?"):
+            raise HTTError(nothing_to_do(instruction, [n.spec for n in negations]))
+        res = _parse(backend, rest, types, scene, strict, look, world)
+        if negations:
+            _keep_negations(res, instruction, negations, grounder)
         picked = dict(choices or {})
         if ask is not None and res.ambiguities:
             picked.update(ask(res.ambiguities))
@@ -119,13 +133,31 @@ def translate(
     return res
 
 
+def nothing_to_do(instruction: str, constraints: list[ConstraintSpec]) -> str:
+    """The refusal of an instruction that only says what not to do (there is no task to plan)."""
+    said = "; ".join(c.describe() for c in constraints)
+    return (f"nothing to do: {instruction!r} only says what not to do ({said}); state a task too, "
+            "e.g. 'put the mug in the sink, but never open the fridge'")
+
+
+def _keep_negations(
+    res: LanguageResult, instruction: str, negations: list[Negation], grounder: Grounder
+) -> None:
+    """The parse of the instruction without its negated clauses, given back the whole instruction and
+    the constraints those clauses state (an until-guard on the task its words name)."""
+    res.instruction = instruction
+    res.htt.instruction = instruction
+    res.htt.nodes[0].text = instruction
+    res.constraint_specs = [n.spec for n in resolve_until(negations, res.tasks, grounder)]
+
+
 def account_words(res: LanguageResult, world: SceneLike | None) -> None:
     """Check 1 (`accounting.account`), the same for every backend: each content word the base tasks
     do not use, and each slot no word names, goes to `unparsed` with its reason (the result is then
     partial). Counts the scene cannot satisfy and cyclic orders raise HTTError."""
     instances = scene_instances(world) if isinstance(world, World) else None
     scene = world.name if world is not None else "the scene"
-    for u in account(res.instruction, res.tasks, res.before, instances, scene):
+    for u in account(res.instruction, res.tasks, res.before, instances, scene, res.constraint_specs):
         res.unparsed.append(str(u))
 
 
@@ -342,6 +374,7 @@ def _llm(
     red = transitive_reduction(before, [t.id for t in tasks])
     htt, task_node, leaf_task = build_htt(instruction, tasks, red, groups)
     return LanguageResult(
+        constraint_specs=_llm_constraints(dec.constraints, g, node_of, issues),
         backend="llm",
         instruction=instruction,
         scene=scene,
@@ -352,6 +385,28 @@ def _llm(
         leaf_task=leaf_task,
         issues=issues,
     )
+
+
+def _llm_constraints(
+    stated: list[stages.ConstraintWords], g: Grounder | None, node_of: dict[str, str], issues: list[str]
+) -> list[ConstraintSpec]:
+    """The LLM's constraints over scene types; one on a thing the scene lacks, or waiting for a task
+    that does not exist, is left out (with the reason in `issues`), so its negation stays unread."""
+    out = []
+    for c in stated:
+        try:
+            objects = g.ground(c.object, "object") if g is not None else [c.object]
+            places = [] if not c.receptacle else g.ground(c.receptacle, "receptacle") if g else [c.receptacle]
+        except WorldError as exc:
+            issues.append(f"constraint {c.text!r} not kept: {exc}")
+            continue
+        if c.until is not None and c.until not in node_of:
+            issues.append(f"constraint {c.text!r} not kept: it waits for an unknown task {c.until!r}")
+            continue
+        forbid = patterns("any" if c.verb == "use" else c.verb, objects, places)
+        until = node_of[c.until] if c.until is not None else None
+        out.append(ConstraintSpec(text=c.text, forbid=forbid, until=until))
+    return out
 
 
 def _llm_relations(
@@ -404,6 +459,8 @@ def _attach_spec(res: LanguageResult, ltl: LtlSource, client: LLMClient | None) 
         generate = llm_generate_ltl(client, translator_client(), res.ltl_checks)
     elif ltl != "compiler":
         raise LLMError(f"unknown LTL generator {ltl!r}: compiler, llm or learned")
-    res.spec = build_spec(
-        res.htt, generate_ltl=generate, action_completion=lambda node: res.leaf_specs[node.id]
-    )
+    spec = build_spec(res.htt, generate_ltl=generate, action_completion=lambda node: res.leaf_specs[node.id])
+    if res.constraint_specs:  # the negations, beside the nodes (G !p, until-guards)
+        spec = HierarchicalSpec(spec.levels, spec_constraints(res.constraint_specs, res.task_node))
+        res.constraints = sorted(c.describe() for c in spec.constraints)
+    res.spec = spec

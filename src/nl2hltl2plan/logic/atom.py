@@ -34,6 +34,8 @@ _VERB = r"[a-z_][a-z0-9_]*"
 _ARG = r"@?[A-Za-z0-9_.]+"
 _SYNTAX = re.compile(rf"({_VERB})\(\s*({_ARG}(?:\s*,\s*{_ARG})*)\s*\)")
 _WHOLE = re.compile(rf"^\s*\"?{_SYNTAX.pattern}\"?\s*$")
+# a pattern of atoms (a constraint's "any action on the microwave"): `*` stands for any argument
+_PATTERN = re.compile(rf"^\s*\"?({_VERB})\(\s*((?:{_ARG}|\*)(?:\s*,\s*(?:{_ARG}|\*))*)\s*\)\"?\s*$")
 _QUOTED = re.compile(rf"\"{_SYNTAX.pattern}\"")
 
 
@@ -56,6 +58,24 @@ class Atom(NamedTuple):
         """The atom `text` spells, or None."""
         m = _WHOLE.match(text)
         return None if m is None else cls._of(m)
+
+    @classmethod
+    def read_pattern(cls, text: str) -> Atom | None:
+        """The atom pattern `text` spells (an atom whose arguments may be `*`: `put(*,Microwave)`), or None.
+
+        >>> Atom.read_pattern("put(*,Microwave)").covers(Atom.parse("put(Mug,Microwave)"))
+        True
+        """
+        m = _PATTERN.match(text)
+        return None if m is None else cls._of(m)
+
+    def covers(self, atom: Atom) -> bool:
+        """Does this pattern (`*` for any argument) match `atom`?"""
+        return (
+            self.verb == atom.verb
+            and len(self.args) == len(atom.args)
+            and all(p in ("*", a) for p, a in zip(self.args, atom.args, strict=True))
+        )
 
     @classmethod
     def _of(cls, m: re.Match[str]) -> Atom:

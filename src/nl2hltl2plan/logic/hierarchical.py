@@ -40,6 +40,7 @@ from nl2hltl2plan.io import loads, read_text
 from nl2hltl2plan.logic import spot_backend as sb
 from nl2hltl2plan.logic.atom import Atom
 from nl2hltl2plan.logic.automaton import Dfa
+from nl2hltl2plan.logic.constraints import Constraint
 
 LeafOrFormula = str | list[str]
 
@@ -58,9 +59,10 @@ def sequence_formula(actions: Sequence[str], check: bool = True) -> str:
 
 
 class HierarchicalSpec:
-    """A validated hierarchical sc-LTL specification."""
+    """A validated hierarchical sc-LTL specification, with the constraints beside it (G !p and
+    until-guards over action atoms, `logic.constraints`; an until-guard names one of its nodes)."""
 
-    def __init__(self, levels: Sequence[dict[str, LeafOrFormula]]):
+    def __init__(self, levels: Sequence[dict[str, LeafOrFormula]], constraints: Sequence[Constraint] = ()):
         if not isinstance(levels, Sequence) or isinstance(levels, str | bytes) or not levels:
             raise SpecError("a hierarchical specification is a non-empty list of levels")
         self.levels: list[dict[str, LeafOrFormula]] = []
@@ -71,6 +73,10 @@ class HierarchicalSpec:
         self._formulas: dict[str, sb.Formula] = {}
         self._level_of: dict[str, int] = {}
         self._validate()
+        self.constraints: tuple[Constraint, ...] = tuple(constraints)
+        for c in self.constraints:
+            if c.until is not None and c.until not in self._level_of:
+                raise SpecError(f"constraint {c.text!r} waits for {c.until!r}, no formula of the spec")
 
     # ----- JSON ------------------------------------------------------------------------------
     @classmethod
@@ -80,11 +86,14 @@ class HierarchicalSpec:
                 data = loads(data, "specification")
             except DataError as exc:
                 raise SpecError(str(exc)) from None
-        if isinstance(data, dict) and "levels" in data:
+        constraints: list[Any] = []
+        if isinstance(data, dict) and "levels" in data:  # {"levels": [...], "constraints": [...]}
+            constraints = data.get("constraints") or []
             data = data["levels"]
-        if not isinstance(data, list):
-            raise SpecError('a specification is a JSON list of levels, e.g. [{"task1": "F a"}]')
-        return cls(data)
+        if not isinstance(data, list) or not isinstance(constraints, list):
+            raise SpecError('a specification is a JSON list of levels, e.g. [{"task1": "F a"}], or '
+                            '{"levels": [...], "constraints": [{"text": ..., "forbid": [...]}]}')
+        return cls(data, [Constraint.from_json(c) for c in constraints])
 
     @classmethod
     def load(cls, path: str | Path) -> HierarchicalSpec:
@@ -94,7 +103,11 @@ class HierarchicalSpec:
         return [dict(level) for level in self.levels]
 
     def to_json(self, indent: int | None = 2) -> str:
-        return json.dumps(self.to_json_obj(), indent=indent)
+        """The levels as a JSON list, or, with constraints, {"levels": [...], "constraints": [...]}."""
+        if not self.constraints:
+            return json.dumps(self.to_json_obj(), indent=indent)
+        doc = {"levels": self.to_json_obj(), "constraints": [c.to_json() for c in self.constraints]}
+        return json.dumps(doc, indent=indent)
 
     # ----- validation (Definition 2.1) ---------------------------------------------------------
     def _validate(self) -> None:
@@ -222,7 +235,9 @@ class HierarchicalSpec:
 
 
 def format_spec(spec: HierarchicalSpec) -> str:
-    """Readable hierarchical LTL, one formula per line, level by level: `L2  task1.1 = F(...)`."""
-    return "\n".join(
-        f"L{k}  {name} = {spec.text(name)}" for k, level in enumerate(spec.levels, start=1) for name in level
-    )
+    """Readable hierarchical LTL, one formula per line, level by level: `L2  task1.1 = F(...)`; then
+    the constraints beside it: `C   G!"open(Fridge)"  (never open the fridge)`."""
+    levels = enumerate(spec.levels, start=1)
+    lines = [f"L{k}  {name} = {spec.text(name)}" for k, level in levels for name in level]
+    lines += [f"C   {c.formula}  ({c.text})" for c in spec.constraints]
+    return "\n".join(lines)

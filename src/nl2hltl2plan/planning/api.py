@@ -209,6 +209,8 @@ def _search_plan(
             if x.missing_support:
                 result.reason = (f"no robot in the team can {', '.join(sorted(x.missing_support))}, "
                                  "which the tasks need; " + result.reason)
+            if x.blocked_by:
+                result.reason += f"; the constraints forbade: {'; '.join(sorted(x.blocked_by))}"
         else:
             result.reason = f"no plan found within {timeout_s:g} s (wall-clock timeout, last resort)"
         result.plan_time_s = time.perf_counter() - t0

@@ -11,6 +11,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Any, Protocol
 
+from nl2hltl2plan.errors import PlanningError
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.planning.results import PlanResult
 from nl2hltl2plan.worlds.model import Cell, World
@@ -42,4 +43,7 @@ class CooperativeEngine:
     ) -> PlanResult:
         from nl2hltl2plan.planning.coop import plan_world
 
+        if spec.constraints:  # its guards are compiled into the leaves (language/handover.py) instead
+            raise PlanningError("the handover worlds' engine does not take constraints beside the spec "
+                                f"({spec.constraints[0].text!r}); state them as guards in the leaves")
         return plan_world(world, spec, starts, timeout_s=options.get("timeout_s"))

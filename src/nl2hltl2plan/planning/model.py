@@ -9,6 +9,11 @@ What the search needs from the spec (CONTRACTS.md, "attributed traces"):
   the checker's strict order holds too. Otherwise ("general" structure) completions are serialised
   and a leaf starts only after every earlier completion.
 
+Constraints beside the spec (`logic.constraints`: G !p, until-guards) become the problem's
+forbidden atoms: the search generates no event that one forbids (`Problem.forbidden_by`), and a leaf
+whose every action sequence needs a forbidden atom is infeasible before any search, naming the
+constraint.
+
 Static infeasibility (a type the world lacks, an object no robot can reach, a receptacle that does
 not accept the object, a contradictory ordering, an action no robot may do) is found here, before
 any search, with a readable reason.
@@ -27,6 +32,7 @@ from nl2hltl2plan.errors import PlanningError, SpecError
 from nl2hltl2plan.logic import spot_backend as sb
 from nl2hltl2plan.logic.atom import Atom
 from nl2hltl2plan.logic.automaton import DEAD, Dfa
+from nl2hltl2plan.logic.constraints import Constraint
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.worlds.model import KNIFE_TYPES, Cell, World
 from nl2hltl2plan.worlds.plan import ACTION_ARITY
@@ -115,6 +121,7 @@ class Problem:
     roots: tuple[str, ...]
     precedence: bool  # every non-leaf in the relation compiler's form
     gates: dict[int, tuple[str, ...]] = field(default_factory=dict)  # leaf -> nodes done before it starts
+    constraints: tuple[Constraint, ...] = ()  # the spec's: atoms no event may be (until a node is done)
 
     @property
     def n_robots(self) -> int:
@@ -144,6 +151,17 @@ class Problem:
             out.append(p)
             p = self.parent.get(p)
         return out
+
+    def forbidden_by(self, atom: str, done_t: Sequence[int] | None = None, t: int = 0) -> Constraint | None:
+        """The constraint an event `atom` at step t breaks, given the nodes' completion steps `done_t`
+        (indexed by `node_slot`; None: nothing complete), or None when it breaks none."""
+        for c in self.constraints:
+            if not c.forbids(atom):
+                continue
+            done = -1 if c.until is None or done_t is None else done_t[self.node_slot[c.until]]
+            if not c.lifted(done if done >= 0 else None, t):
+                return c
+        return None
 
     def can_do(self, robot: int, atom: LeafAtom) -> bool:
         caps = self.capabilities[robot]
@@ -258,6 +276,7 @@ def build_problem(
         parent=parent,
         roots=tuple(spec.roots),
         precedence=all(nl.pairs is not None for nl in nonleaves),
+        constraints=spec.constraints,
     )
     _check_orderings(problem)
     _check_leaves(problem)
@@ -539,6 +558,9 @@ def _atom_problem(problem: Problem, atom: LeafAtom, reachable) -> str | None:
         return f"{atom.text}: a {types[0]} cannot be sliced"
     if not any(problem.can_do(r, atom) for r in range(problem.n_robots)):
         return f"no robot in the team can {atom.text}"
+    banned = problem.forbidden_by(atom.text)
+    if banned is not None and banned.until is None:
+        return f"{atom.text} is forbidden by the constraint {banned.text!r} ({banned.formula})"
     return None
 
 

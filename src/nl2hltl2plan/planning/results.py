@@ -1,8 +1,9 @@
 """What the planner returns: `PlanStatus`, `PlanResult`, and `validate` (execute a plan and judge it).
 
 `validate(world, spec, plan)` is what `plan()` runs on every plan before returning it, and what a
-user runs on a plan from elsewhere: the simulator executes it (every precondition) and the spec
-judges the executed, attributed events (`logic.trace.check_trace`).
+user runs on a plan from elsewhere: the simulator executes it (every precondition), the spec
+judges the executed, attributed events (`logic.trace.check_trace`) and the goal checker's
+`constraint_violations` every executed action against the constraints beside the spec.
 """
 
 from __future__ import annotations
@@ -13,6 +14,7 @@ from typing import Any
 
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.logic.trace import TraceEvent, check_trace
+from nl2hltl2plan.worlds.checker import constraint_violations
 from nl2hltl2plan.worlds.model import World
 from nl2hltl2plan.worlds.plan import Plan
 from nl2hltl2plan.worlds.simulator import Execution, execute
@@ -62,8 +64,9 @@ def validate(world: World, spec: HierarchicalSpec, plan: Plan) -> Validation:
         return Validation(False, ["the plan fails in the simulator: " + "; ".join(execution.violations[:3])],
                           execution)
     trace = [TraceEvent(e.t, e.atom, e.task) for e in execution.events]
-    reasons = check_trace(spec, trace).reasons
-    return Validation(not reasons, list(reasons), execution)
+    verdict = check_trace(spec, trace)
+    reasons = verdict.reasons + constraint_violations(execution, spec.constraints, verdict.completed)
+    return Validation(not reasons, reasons, execution)
 
 
 @dataclass

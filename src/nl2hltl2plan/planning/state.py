@@ -135,6 +135,7 @@ class Expander:
         self.only: set[int] | None = None  # restrict successors to these robots (single-robot seeds)
         self.missing_support: set[str] = set()  # support actions (open/close) no robot may do
         self.free_stands = False  # exact summed cost: stand cells are part of the search (`walk`)
+        self.blocked_by: set[str] = set()  # constraints that forbade some event (`forbids`)
 
     # ------------------------------------------------------------ root
     def root(self) -> Node:
@@ -363,6 +364,8 @@ class Expander:
             elif node.last_done > ready:
                 ready = node.last_done
         t = max(node.clock[robot] + d, ready) + 1
+        if self.p.constraints and self.forbids(atom.text, node, t):
+            return None
         nq, done = node.nq, node.done_t
         last_done = node.last_done
         if q_next == DONE:
@@ -400,6 +403,14 @@ class Expander:
             last_done=last_done, g=node.g + d + 1, ms=max(node.ms, t), parent=node,
             event=Event(robot, li, atom.text, verb, objs, stand, d, t, atom_k, anchor), reach=reach,
         )
+
+    def forbids(self, atom: str, node: Node, t: int) -> bool:
+        """Does a constraint of the spec forbid `atom` at step t after `node`? (Named in the
+        infeasible reason when the search finds no plan.)"""
+        banned = self.p.forbidden_by(atom, node.done_t, t)
+        if banned is not None:
+            self.blocked_by.add(banned.describe())
+        return banned is not None
 
     def walk(self, node: Node, robot: int, anchor: int,
              stand: int | None = None) -> tuple[int, int, tuple[Reach | None, ...] | None]:
@@ -453,10 +464,12 @@ class Expander:
         if leaf >= 0:
             ready = max(ready, node.leaf_t[leaf])  # held until its task is done (examine: lamp on)
         t = max(node.clock[robot] + d, ready) + 1
+        atom = f"put({self.types[obj]},{self.types[surface]})"
+        if self.p.constraints and self.forbids(atom, node, t):
+            return None
         obj_t = dict(node.obj_t)
         for x in touched:
             obj_t[x] = t
-        atom = f"put({self.types[obj]},{self.types[surface]})"
         return Node(
             sim=child_sim, cell=put(node.cell, robot, stand), clock=put(node.clock, robot, t), q=node.q,
             bind=node.bind, claimed=node.claimed, nq=node.nq, done_t=node.done_t, leaf_t=node.leaf_t,

@@ -13,14 +13,21 @@ Semantics (ANNOTATION_GUIDE.md, judged on the execution alone, however the plan 
   (ALFRED base tasks work on distinct objects); for every pair [X, Y] in `before`, X's goal must be
   reached strictly earlier than Y's. The checker searches all instance assignments for one that works.
 - strict (default): a plan with failed steps (executor violations) does not succeed either.
+
+`constraint_violations(execution, constraints, completed)` judges the same execution against the
+constraints beside a spec (G !p, until-guards; `logic.constraints`): every executed action, support
+actions and put-downs included, is matched against what they forbid. `planning.validate` runs it on
+every plan the planner returns, and on a plan from elsewhere.
 """
 
 from __future__ import annotations
 
 import itertools
+from collections.abc import Mapping, Sequence
 
 from pydantic import BaseModel
 
+from nl2hltl2plan.logic.constraints import Constraint, violations
 from nl2hltl2plan.worlds.simulator import CLEAN, COLD, HOT, ON, PRESENT, Execution, Snapshot, _compiled
 from nl2hltl2plan.worlds.tasks import Goal, GTInstance
 
@@ -183,6 +190,16 @@ def _explain(tasks, options, before) -> list[str]:
     if not reasons:
         reasons.append("no assignment of distinct objects to tasks meets every ordering")
     return reasons
+
+
+def constraint_violations(
+    execution: Execution, constraints: Sequence[Constraint], completed: Mapping[str, int | None]
+) -> list[str]:
+    """Why the executed actions break the constraints (empty: they keep them). `completed`: spec node
+    -> the step it completed (`logic.trace.check_trace`), which lifts an until-guard."""
+    if not constraints:
+        return []
+    return violations(constraints, ((e.t, e.atom) for e in execution.events), completed)
 
 
 def final_conditions(

@@ -1,0 +1,310 @@
+"""Negations become constraints: "never open the fridge", "do not put the cups in the upper rack",
+"avoid the sofa", "without using the microwave", "put the keys on the sofa, not the remote".
+
+`read_negations(instruction, grounder, look)` finds each negated clause, reads what it forbids as
+action-atom patterns over the scene's types (`open(Fridge)`, `put(Cup,DishwasherUpperRack)`, every
+action on the microwave for "use" / "avoid" / "touch"), and returns the instruction without those
+clauses (what the task parser reads) plus one `Negation` per clause. A clause with "until" / "before"
+("do not open the fridge until the mug is in the sink") is an until-guard lifted by the task the
+words after it name (`resolve_until`, once the base tasks exist). "Do not put X until you put Y" is
+left to the task parser, which reads it as the ordering Y before X (the composed instructions'
+phrasing). A negation this module cannot read (a state: "do not heat the mug"; an object the scene
+lacks; "no", "nothing", "except") is left in the text, where the word accounting refuses it.
+
+The LLM backends state constraints themselves (`decompose.md`, `ConstraintWords`); both readings end
+in `ConstraintSpec`, which `account` judges like the base tasks and `spec_constraints` puts beside
+the hierarchical spec (`logic.constraints`).
+
+>>> from nl2hltl2plan.language.grounding import Grounder
+>>> rest, found = read_negations("put the apple in the fridge but never open the microwave",
+...                              Grounder({"Apple", "Fridge", "Microwave"}))
+>>> rest, [(n.spec.text, n.spec.forbid) for n in found]
+('put the apple in the fridge', [('never open the microwave', ['open(Microwave)'])])
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+from pydantic import BaseModel, Field
+
+from nl2hltl2plan.language.grounding import AffordanceLookup, Grounder, Mention, find_mentions, tokens
+from nl2hltl2plan.language.spec_builder import spec_name
+from nl2hltl2plan.language.tasks import BaseTaskSpec
+from nl2hltl2plan.logic.constraints import Constraint
+
+CUES = {
+    "not",
+    "never",
+    "don't",
+    "dont",
+    "doesn't",
+    "mustn't",
+    "shouldn't",
+    "cannot",
+    "can't",
+    "won't",
+    "avoid",
+    "without",
+}
+LEAD = {"do", "does", "please", "you", "must", "should", "will", "and", "but", "or", "so", "just"}
+FILLER = {"do", "to", "ever", "you", "please", "be", "at", "all", "go", "the", "a", "an", "any"}
+UNTIL = {"until", "till", "before", "unless"}
+LISTED = {"the", "a", "an", "some", "my", "your", "its", "their", "two", "both", "all"}  # "and the mugs"
+PREPS = {"in", "into", "on", "onto", "inside", "to", "under", "at", "near", "by", "beside"}
+# a verb of the clause -> the action it forbids ("any": every action on the thing)
+VERBS = {
+    **dict.fromkeys("put place set leave drop store stick throw toss insert load hang stack".split(), "put"),
+    **dict.fromkeys("move carry take bring pick grab get lift remove hold fetch handle".split(), "pickup"),
+    **dict.fromkeys("touch use using disturb approach bother".split(), "any"),
+    "open": "open",
+    "opening": "open",
+    "close": "close",
+    "closing": "close",
+    "shut": "close",
+    **dict.fromkeys("slice cut chop dice".split(), "slice"),
+    **dict.fromkeys("break smash shatter".split(), "break"),
+    **dict.fromkeys("turn switch power toggle".split(), "switch"),
+}
+ALL_VERBS = ("pickup", "open", "close", "toggle_on", "toggle_off", "slice", "break")
+
+
+class ConstraintSpec(BaseModel):
+    """A constraint as the language stage states it: the instruction's words, the forbidden action
+    patterns over scene types, and the base task whose completion lifts it (None: never lifted)."""
+
+    text: str
+    forbid: list[str] = Field(min_length=1)
+    until: str | None = None  # a base-task id
+
+    def describe(self) -> str:
+        guard = f" until task {self.until} is done" if self.until else ""
+        return f"{self.text}: forbids {', '.join(self.forbid)}{guard}"
+
+
+@dataclass
+class Negation:
+    """One negated clause of the instruction: its character span, the constraint it states and the
+    words naming the task that lifts it (until-guards)."""
+
+    start: int
+    end: int
+    spec: ConstraintSpec
+    until_words: str = ""
+
+
+def patterns(
+    verb: str, objects: Sequence[str], places: Sequence[str] = (), look: AffordanceLookup | None = None
+) -> list[str]:
+    """The atom patterns a forbidden verb on these types stands for (`any`: every action the
+    affordances allow on the thing; `put` without a place: putting it anywhere)."""
+    out: list[str] = []
+    for o in objects:
+        if verb == "put":
+            out += [f"put({o},{p})" for p in places] or [f"put({o},*)"]
+        elif verb == "pickup" and places:
+            out += [f"put({o},{p})" for p in places]
+        elif verb == "any":
+            out += _every_action(o, look)
+        elif verb in ALL_VERBS:
+            out.append(f"{verb}({o})")
+    return sorted(set(out))
+
+
+def _every_action(type_: str, look: AffordanceLookup | None) -> list[str]:
+    aff = look(type_) if look is not None else None
+    if aff is None:
+        return [f"{v}({type_})" for v in ALL_VERBS] + [f"put({type_},*)", f"put(*,{type_})"]
+    out = [f"pickup({type_})", f"put({type_},*)"] if aff.pickupable else []
+    out += [f"open({type_})", f"close({type_})"] if aff.openable else []
+    out += [f"toggle_on({type_})", f"toggle_off({type_})"] if aff.toggleable else []
+    out += [f"slice({type_})"] if aff.sliceable else []
+    out += [f"put(*,{type_})"] if aff.receptacle else []
+    return out or [f"{v}({type_})" for v in ALL_VERBS]
+
+
+def read_negations(
+    instruction: str, grounder: Grounder, look: AffordanceLookup | None = None
+) -> tuple[str, list[Negation]]:
+    """(the instruction without its negated clauses, the negations read); see the module docstring."""
+    toks = tokens(instruction)
+    words = [w for w, _, _ in toks]
+    mentions = find_mentions(instruction)
+    found: list[Negation] = []
+    for i, w in enumerate(words):
+        if (
+            w not in CUES
+            or _about_order(instruction, toks[i])
+            or any(n.start <= toks[i][1] < n.end for n in found)
+        ):
+            continue
+        neg = _read_clause(instruction, toks, i, mentions, grounder, look)
+        if neg is not None:
+            found.append(neg)
+    rest = instruction
+    for n in sorted(found, key=lambda n: -n.start):
+        rest = rest[: n.start] + " " + rest[n.end :]
+    rest = re.sub(r"\s+([,.;!?])", r"\1", " ".join(rest.split()))
+    rest = re.sub(r"^[,;\s]+|^(?:and|but|then)\s+|[,;\s]+$", "", rest, flags=re.I).strip()
+    return rest, found
+
+
+def _about_order(instruction: str, tok: tuple[str, int, int]) -> bool:
+    """ "the order is not specified", "in no particular order": a negation about the order itself."""
+    start = max((m.end() for m in re.finditer(r"[.;!?]", instruction[: tok[1]])), default=0)
+    end = tok[2] + len(re.split(r"[.;!?]", instruction[tok[2] :], maxsplit=1)[0])
+    return re.search(r"\b(order|sequence)\b", instruction[start:end].lower()) is not None
+
+
+def _read_clause(
+    text: str,
+    toks: list[tuple[str, int, int]],
+    i: int,
+    mentions: list[Mention],
+    grounder: Grounder,
+    look: AffordanceLookup | None,
+) -> Negation | None:
+    words = [w for w, _, _ in toks]
+    end_tok = _clause_end(text, toks, i)
+    j = i + 1
+    while j < end_tok and words[j] in FILLER - {"the", "a", "an", "any"}:
+        j += 1
+    verb = _verb_of(words[j]) if j < end_tok else None
+    if verb is None and words[i] in ("avoid", "without"):
+        verb = "any"  # "avoid the stove", "without the microwave"
+    cut = next((k for k in range(j, end_tok) if words[k] in UNTIL), end_tok)
+    if verb == "put" and cut < end_tok:
+        return None  # "do not put X until you put Y": the parser's ordering Y before X
+    inside = [m for m in mentions if i < m.start < cut and not m.entry.generic]
+    if verb == "switch":
+        after = words[j + 1 : cut]
+        verb = "toggle_on" if "on" in after else "toggle_off" if "off" in after else None
+    places: list[str] = []
+    if verb is None and inside and inside[0].start <= j + 1:  # "..., not the remote": the clause before's
+        verb, places = "put", _previous_destination(text, toks, i, mentions, grounder)
+        if not places:
+            return None
+    if verb is None or not inside:
+        return None
+    things, where = _objects_and_places(inside, words, grounder)
+    if things is None:
+        return None
+    if verb in ("put", "pickup") and where:
+        places = where
+    elif where:  # "never open the fridge on the left": the extra place is not read
+        return None
+    forbid = patterns(verb, things, places, look)
+    start = _clause_start(text, toks, i)
+    end = toks[end_tok - 1][2] if end_tok > i else toks[i][2]
+    clause = text[toks[_first_word(toks, i)][1] : end]
+    until_words = text[toks[cut][2] : end].strip() if cut < end_tok else ""
+    return Negation(start, end, ConstraintSpec(text=clause, forbid=forbid), until_words) if forbid else None
+
+
+def _verb_of(word: str) -> str | None:
+    """The forbidden action a verb names, inflected or not ("breaking", "opens", "touched")."""
+    for suffix in ("", "ing", "s", "es", "ed", "d"):
+        base = (
+            word[: len(word) - len(suffix)]
+            if suffix and word.endswith(suffix)
+            else word
+            if not suffix
+            else ""
+        )
+        for form in filter(
+            None, {base, base + "e", base[:-1] if len(base) > 2 and base[-1] == base[-2] else ""}
+        ):
+            if form in VERBS:
+                return VERBS[form]
+    return None
+
+
+def _objects_and_places(
+    inside: list[Mention], words: list[str], grounder: Grounder
+) -> tuple[list[str] | None, list[str]]:
+    """Scene types of the things the clause names, split into objects and places (after a preposition)."""
+    things: list[str] = []
+    places: list[str] = []
+    for m in inside:
+        types = grounder.resolve(m.entry)
+        if not types:
+            return None, []  # an object the scene lacks: the negation stays unread (refused)
+        is_place = any(w in PREPS for w in words[max(0, m.start - 3) : m.start]) and things
+        (places if is_place else things).extend(types)
+    return (things or None), places
+
+
+def _previous_destination(
+    text: str, toks: list[tuple[str, int, int]], i: int, mentions: list[Mention], grounder: Grounder
+) -> list[str]:
+    """The destination of the clause before the cue in its sentence ("put the keys on the sofa, not ...")."""
+    start = max((m.end() for m in re.finditer(r"[.;!?]", text[: toks[i][1]])), default=0)
+    words = [w for w, _, _ in toks]
+    before = [m for m in mentions if start <= m.char_start < toks[i][1]]
+    for m in reversed(before):
+        if any(w in PREPS for w in words[max(0, m.start - 3) : m.start]):
+            return grounder.resolve(m.entry)
+    return []
+
+
+def _clause_end(text: str, toks: list[tuple[str, int, int]], i: int) -> int:
+    """The token index that ends the negated clause: a punctuation mark, or "and" / "but" / "then"
+    not followed by a determiner (a list of things goes on)."""
+    for k in range(i + 1, len(toks)):
+        if re.search(r"[,.;!?]", text[toks[k - 1][2] : toks[k][1]]):
+            return k
+        if toks[k][0] in ("and", "but", "then") and k + 1 < len(toks) and toks[k + 1][0] not in LISTED:
+            return k  # "never open the fridge and heat the mug" (not "the cups and the mugs")
+    return len(toks)
+
+
+def _first_word(toks: list[tuple[str, int, int]], i: int) -> int:
+    """The clause's first word: "do" / "please" before "not" belong to it."""
+    k = i
+    while k > 0 and toks[k - 1][0] in LEAD - {"and", "but", "or", "so"}:
+        k -= 1
+    return k
+
+
+def _clause_start(text: str, toks: list[tuple[str, int, int]], i: int) -> int:
+    """Where the removed text starts: the clause's first word, with the joiner before it (", but")."""
+    k = _first_word(toks, i)
+    while (
+        k > 0
+        and toks[k - 1][0] in ("and", "but", "or", "so")
+        and not re.search(r"[.;!?]", text[toks[k - 1][2] : toks[k][1]])
+    ):
+        k -= 1
+    start = toks[k][1]
+    prefix = text[:start].rstrip()
+    return len(prefix) - 1 if prefix.endswith(",") else start
+
+
+def resolve_until(
+    negations: list[Negation], tasks: Sequence[BaseTaskSpec], grounder: Grounder
+) -> list[Negation]:
+    """Each until-guard gets the base task its words name (the first task on the thing they name);
+    a guard whose words name no task is dropped (its negation then stays unread)."""
+    out = []
+    for n in negations:
+        if not n.until_words:
+            out.append(n)
+            continue
+        named = [
+            t for m in find_mentions(n.until_words) if not m.entry.generic for t in grounder.resolve(m.entry)
+        ]
+        task = next((t for t in tasks if named and set(t.object) & {named[0]}), None)
+        if task is not None:
+            n.spec = n.spec.model_copy(update={"until": task.id})
+            out.append(n)
+    return out
+
+
+def spec_constraints(constraints: Sequence[ConstraintSpec], task_node: dict[str, str]) -> list[Constraint]:
+    """The language stage's constraints beside the spec: an until-guard waits for its task's node."""
+    return [
+        Constraint(c.text, tuple(c.forbid), spec_name(task_node[c.until]) if c.until else None)
+        for c in constraints
+    ]
