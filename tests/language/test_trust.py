@@ -92,6 +92,9 @@ def test_no_instruction_of_our_sets_yields_a_spec_missing_part_of_it(name):
     assert wrong == []
     if name == "plain":  # most plain instructions convert, not merely refuse
         assert sum(what == "converted" for what, _ in outcomes) >= 0.9 * len(gts)
+    pairs = zip(gts, outcomes, strict=True)
+    negated = [(gt.instruction, o) for gt, o in pairs if trust_sets.constraints_of(gt)]
+    assert all(what == "converted" for _, (what, _) in negated), negated  # their constraints, exactly
 
 
 def test_dead_llm_makes_scenarios_errored_and_resume_reruns_them(tmp_path, stub, capsys):

@@ -250,11 +250,12 @@ def _previous_destination(
 
 
 def _clause_end(text: str, toks: list[tuple[str, int, int]], i: int) -> int:
-    """The token index that ends the negated clause: a punctuation mark, or "and" / "but" / "then"
+    """The token index that ends the negated clause: a full stop, or a comma, "and", "but" or "then"
     not followed by a determiner (a list of things goes on)."""
     for k in range(i + 1, len(toks)):
-        if re.search(r"[,.;!?]", text[toks[k - 1][2] : toks[k][1]]):
-            return k
+        gap = text[toks[k - 1][2] : toks[k][1]]
+        if re.search(r"[.;!?]", gap) or ("," in gap and toks[k][0] not in LISTED):
+            return k  # a comma goes on with a list of things: "the butter knife, the fork and the spoon"
         if toks[k][0] in ("and", "but", "then") and k + 1 < len(toks) and toks[k + 1][0] not in LISTED:
             return k  # "never open the fridge and heat the mug" (not "the cups and the mugs")
     return len(toks)

@@ -1,0 +1,167 @@
+"""Issue 23: negations become constraints beside the spec, which the planner and the checker enforce
+(real Spot, real planner, real plan validator)."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+import spot
+
+from nl2hltl2plan.cli.main import main
+from nl2hltl2plan.config import data_dir
+from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.language.accounting import account
+from nl2hltl2plan.language.grounding import Grounder
+from nl2hltl2plan.language.negations import ConstraintSpec, read_negations
+from nl2hltl2plan.language.tasks import BaseTaskSpec
+from nl2hltl2plan.logic.constraints import Constraint
+from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
+from nl2hltl2plan.pipeline import run
+from nl2hltl2plan.planning import plan, validate
+from nl2hltl2plan.worlds.demo import demo_world
+
+needs_data = pytest.mark.skipif(data_dir(required=False) is None, reason="needs ../shared/data")
+KITCHEN = {"Apple", "Fridge", "Microwave", "Mug", "CounterTop", "SinkBasin", "Cup", "DishwasherUpperRack"}
+
+
+def read(text: str) -> tuple[str, list[tuple[str, list[str], str]]]:
+    rest, found = read_negations(text, Grounder(KITCHEN))
+    return rest, [(n.spec.text, n.spec.forbid, n.until_words) for n in found]
+
+
+def test_negated_clauses_are_read_as_forbidden_actions_and_taken_out_of_the_tasks():
+    assert read("put the apple in the fridge but don't put the mug on the counter") == (
+        "put the apple in the fridge",
+        [("don't put the mug on the counter", ["put(Mug,CounterTop)"], "")],
+    )
+    assert read("never turn on the microwave and put the apple in the fridge")[1] == [
+        ("never turn on the microwave", ["toggle_on(Microwave)"], "")
+    ]
+    rest, [(_, forbid, _)] = read("put the mug in the sink without using the microwave")
+    assert rest == "put the mug in the sink" and "open(Microwave)" in forbid and "put(*,Microwave)" in forbid
+    assert read("put the mug in the sink, never the cup")[1] == [
+        ("never the cup", ["put(Cup,SinkBasin)"], "")
+    ]
+    _, [(_, _, until)] = read(
+        "put the mug in the sink. Do not open the fridge before the mug is in the sink."
+    )
+    assert until == "the mug is in the sink"
+    # left to the task parser (an ordering) or to the word accounting (refused)
+    for kept in (
+        "Do not put the apple in the fridge until you put the mug in the cabinet.",
+        "heat the mug but do not heat the cup",
+        "put the mug in the sink in any order; the order is not specified",
+        "put the mug in the sink and never open the safe",  # no safe in the scene
+    ):
+        assert read(kept) == (kept, []), kept
+
+
+def test_the_accounting_counts_a_negation_as_used_when_a_constraint_carries_it():
+    text = "put the apple in the fridge but never open the microwave"
+    apple = BaseTaskSpec(id="A", kind="place", object=["Apple"], receptacle=["Fridge"])
+    never = ConstraintSpec(text="never open the microwave", forbid=["open(Microwave)"])
+    assert {u.category for u in account(text, [apple], [])} == {"negation", "place"}
+    assert account(text, [apple], [], constraints=[never]) == []
+    # a constraint that forbids something else than its words say is not a reading of them
+    wrong = ConstraintSpec(text="never turn on the microwave", forbid=["open(Microwave)"])
+    found = account(
+        "put the apple in the fridge but never turn on the microwave", [apple], [], constraints=[wrong]
+    )
+    assert [u.category for u in found] == ["action"]
+    invented = ConstraintSpec(text="never open the microwave", forbid=["open(Cabinet)"])
+    assert {u.category for u in account(text, [apple], [], constraints=[invented])} == {"invented", "place"}
+
+
+def test_a_constraint_is_a_safety_formula_beside_the_sc_ltl_nodes():
+    never = Constraint("never open the fridge", ("open(Fridge)",))
+    assert spot.formula(never.formula).is_syntactic_safety()
+    assert not spot.formula(never.formula).is_syntactic_guarantee()  # so not a node of the hierarchy
+    guard = Constraint("not before", ("open(Fridge)",), "task1")
+    assert spot.formula(guard.formula).is_syntactic_guarantee()
+    spec = HierarchicalSpec([{"task1": ["pickup(Apple)", "put(Apple,Fridge)"]}], [guard])
+    again = HierarchicalSpec.from_json(spec.to_json())
+    assert again.constraints == spec.constraints and "U task1" in again.constraints[0].formula
+    with pytest.raises(Exception, match="no formula of the spec"):
+        HierarchicalSpec([{"task1": ["pickup(Apple)"]}], [Constraint("x", ("open(Fridge)",), "task9")])
+
+
+def test_the_planner_avoids_what_a_constraint_forbids_and_the_checker_rejects_a_violation():
+    world = demo_world()
+    free = run("put a utensil in the sink", world)
+    took = [e["atom"] for e in free.result.events if e["atom"].startswith("pickup")]
+    banned = took[0].removeprefix("pickup(").removesuffix(")")  # the utensil it chose
+    words = {"ButterKnife": "butter knife", "Fork": "fork", "Spoon": "spoon", "Knife": "knife"}[banned]
+    kept = run(f"put a utensil in the sink but do not touch the {words}", world)
+    assert kept.ok and kept.spec.constraints and kept.result.total_cost >= free.result.total_cost
+    assert not any(banned in e["atom"] for e in kept.result.events)
+    # the unconstrained plan, checked against the constrained spec: rejected, naming the constraint
+    verdict = validate(world, kept.spec, free.result.plan)
+    assert not verdict.ok and "breaks the constraint" in verdict.reasons[0]
+    assert validate(world, kept.spec, kept.result.plan).ok
+
+
+def test_an_infeasible_constraint_is_a_definite_no_naming_it(capsys):
+    text = "put a cup in the upper rack, never open the dishwasher"  # the dishwasher is closed
+    assert main(["plan", text, "--world", "demo", "--llm", "offline"]) == 1
+    assert "never open the dishwasher" in capsys.readouterr().err
+    spec = HierarchicalSpec([{"task1": ["pickup(Cup)", "put(Cup,DishwasherUpperRack)"]}],
+                            [Constraint("no cups in the rack", ("put(Cup,*)",))])  # fmt: skip
+    result = plan(demo_world(), spec, [(0, 0)])
+    assert result.status == "infeasible" and "no cups in the rack" in result.reason
+
+
+def test_plan_json_lists_the_constraints_and_a_bare_negation_has_nothing_to_do(capsys):
+    text = "put the plates in the lower rack and never open the fridge"
+    assert main(["plan", text, "--world", "demo", "--llm", "offline", "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["constraints"] == ['never open the fridge: G!"open(Fridge)"'] and not out["partial"]
+    with pytest.raises(HTTError, match="nothing to do: .* only says what not to do"):
+        run("do not put the cups in the upper rack", demo_world())
+    assert main(["plan", "heat the plate but do not heat the mug", "--world", "demo"]) == 2
+    assert "'not' (negation)" in capsys.readouterr().err
+
+
+@needs_data
+def test_a_constraint_can_make_the_plan_costlier():
+    from nl2hltl2plan.worlds import load_world
+
+    world = load_world("FloorPlan1")  # one apple lies in the microwave, the other on the counter
+    free = run("put an apple in the sink", world)
+    kept = run("put an apple in the sink without using the microwave", world)
+    assert "open(Microwave)" in [e["atom"] for e in free.result.events]
+    assert kept.ok and kept.result.total_cost > free.result.total_cost
+    assert not validate(world, kept.spec, free.result.plan).ok
+    guard = run("put the apple in the fridge and put the mug in the sink. Do not open the fridge before "
+                "the mug is in the sink.", world)  # fmt: skip
+    events = [e["atom"] for e in guard.result.events]
+    assert guard.ok and events.index("open(Fridge)") > events.index("put(Mug,SinkBasin)")
+
+
+def test_an_llm_backend_states_constraints(stub):
+    from nl2hltl2plan.language.llm.client import LLMClient
+    from nl2hltl2plan.language.llm.settings import LLMSettings
+    from nl2hltl2plan.language.stages import SemanticCheckError
+    from nl2hltl2plan.language.translate import translate
+
+    text = "put the apple in the fridge but never open the microwave"
+    answer = {
+        "tasks": [{"id": "1.1", "text": "put the apple in the fridge", "kind": "place", "object": "apple",
+                   "receptacle": "fridge"}],
+        "constraints": [{"text": "never open the microwave", "verb": "open", "object": "microwave"}],
+    }  # fmt: skip
+    stub.answer = lambda body: json.dumps(answer)
+    client = LLMClient(LLMSettings(base_url=stub.base_url, api_key="k", max_retries=0, cache_dir=None))
+    res = translate(text, _Kitchen(), "openai", client, build=False, actions="none")
+    assert [c.forbid for c in res.constraint_specs] == [["open(Microwave)"]] and not res.partial
+    answer["constraints"] = []  # the negation dropped: an error naming it, never a plan
+    client = LLMClient(LLMSettings(base_url=stub.base_url, api_key="k", max_retries=0, cache_dir=None))
+    with pytest.raises(SemanticCheckError, match="names 'microwave'"):
+        translate(text, _Kitchen(), "openai", client, build=False, actions="none")
+
+
+class _Kitchen:
+    name = "a kitchen"
+
+    def object_types(self) -> set[str]:
+        return KITCHEN
