@@ -50,7 +50,7 @@ def test_negated_clauses_are_read_as_forbidden_actions_and_taken_out_of_the_task
     # left to the task parser (an ordering) or to the word accounting (refused)
     for kept in (
         "Do not put the apple in the fridge until you put the mug in the cabinet.",
-        "heat the mug but do not heat the cup",
+        "put the mug in the sink and never examine the apple",
         "put the mug in the sink in any order; the order is not specified",
         "put the mug in the sink and never open the safe",  # no safe in the scene
     ):
@@ -118,8 +118,11 @@ def test_plan_json_lists_the_constraints_and_a_bare_negation_has_nothing_to_do(c
     assert out["constraints"] == ['never open the fridge: G!"open(Fridge)"'] and not out["partial"]
     with pytest.raises(HTTError, match="nothing to do: .* only says what not to do"):
         run("do not put the cups in the upper rack", demo_world())
-    assert main(["plan", "heat the plate but do not heat the mug", "--world", "demo"]) == 2
-    assert "'not' (negation)" in capsys.readouterr().err
+    assert (
+        main(["plan", "heat the plate and put it on the counter, never examine the mug", "--world", "demo"])
+        == 2
+    )
+    assert "'never' (negation)" in capsys.readouterr().err
 
 
 @needs_data
@@ -136,6 +139,19 @@ def test_a_constraint_can_make_the_plan_costlier():
                 "the mug is in the sink.", world)  # fmt: skip
     events = [e["atom"] for e in guard.result.events]
     assert guard.ok and events.index("open(Fridge)") > events.index("put(Mug,SinkBasin)")
+
+
+@needs_data
+def test_a_change_of_state_can_be_forbidden():
+    from nl2hltl2plan.worlds import load_world
+
+    world = load_world("FloorPlan1")  # an apple lies in the microwave: heating the potato heats it too
+    free = run("heat the potato and put it on the counter", world)
+    kept = run("heat the potato and put it on the counter, but do not heat the apple", world)
+    assert kept.spec.constraints[0].forbid == ("heat(Apple)",)
+    assert kept.status == "infeasible" and "do not heat the apple" in kept.result.reason
+    (why,) = validate(world, kept.spec, free.result.plan).reasons
+    assert "heat(Apple) breaks the constraint 'do not heat the apple'" in why
 
 
 def test_an_llm_backend_states_constraints(stub):

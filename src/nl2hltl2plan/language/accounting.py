@@ -48,6 +48,12 @@ LOCATIVE = frozenset(
 )
 
 
+NO_CONSTRAINT = (
+    "a negated request that no constraint of the spec carries (only actions on things of the world, and "
+    "their heating, cooling or cleaning, can be forbidden)"
+)
+
+
 @dataclass(frozen=True)
 class Unread:
     """A content word the parse does not use, or a slot of a base task that no word names."""
@@ -365,8 +371,7 @@ def _words(
             and not _until_guard(instruction, toks[i], parse)
             and not _free_order(instruction, toks[i])
         ):
-            unread = Unread(w, "negation", "a negated request that no constraint of the spec carries (only "
-                            "actions on things of the world can be forbidden)")
+            unread = Unread(w, "negation", NO_CONSTRAINT)
         elif _count_value(cats, w) is not None or cats & {"quantifier_all", "quantifier_vague"}:
             unread = _count(instruction, toks[i], cats, mentions, parse, instances, scene)
         if unread is not None:
@@ -438,9 +443,12 @@ def _constraint_verb(w: str, cats: set[str], words: list[str], i: int, c: Constr
     for cat, verb in wanted.items():
         if cat in cats and verb not in verbs:
             return Unread(w, "action", f"the constraint {c.text!r} does not forbid {verb}")
-    states = {"verb_heat_place", "verb_cool_place", "verb_clean_place", "verb_examine_in_light"}
-    if cats & states or "verb_unsupported" in cats:
-        return Unread(w, "action", "a constraint forbids actions, not this (a change of state or a skill)")
+    states = {"verb_heat_place": "heat", "verb_cool_place": "cool", "verb_clean_place": "clean"}
+    for cat, verb in states.items():
+        if cat in cats and verb not in verbs:
+            return Unread(w, "action", f"the constraint {c.text!r} does not forbid {verb}")
+    if "verb_examine_in_light" in cats or "verb_unsupported" in cats:
+        return Unread(w, "action", "a constraint forbids actions and changes of state, not this skill")
     return None
 
 

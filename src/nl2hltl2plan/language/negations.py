@@ -67,8 +67,13 @@ VERBS = {
     **dict.fromkeys("slice cut chop dice".split(), "slice"),
     **dict.fromkeys("break smash shatter".split(), "break"),
     **dict.fromkeys("turn switch power toggle".split(), "switch"),
+    # changes of state (`worlds.checker.STATE_EVENTS`): "do not heat the cup"
+    **dict.fromkeys("heat warm cook microwave".split(), "heat"),
+    **dict.fromkeys("chill cool refrigerate freeze".split(), "cool"),
+    **dict.fromkeys("wash rinse clean scrub".split(), "clean"),
 }
 ALL_VERBS = ("pickup", "open", "close", "toggle_on", "toggle_off", "slice", "break")
+STATE_VERBS = ("heat", "cool", "clean")  # an object becomes hot / cold / clean
 
 
 class ConstraintSpec(BaseModel):
@@ -108,7 +113,7 @@ def patterns(
             out += [f"put({o},{p})" for p in places]
         elif verb == "any":
             out += _every_action(o, look)
-        elif verb in ALL_VERBS:
+        elif verb in ALL_VERBS or verb in STATE_VERBS:
             out.append(f"{verb}({o})")
     return sorted(set(out))
 

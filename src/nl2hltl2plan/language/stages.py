@@ -138,7 +138,10 @@ class DecompNode(BaseModel):
         return TaskFields.model_validate(self.model_dump(exclude={"subtasks"}))
 
 
-CONSTRAINT_VERBS = ("put", "pickup", "open", "close", "toggle_on", "toggle_off", "slice", "break", "use")
+CONSTRAINT_VERBS = (
+    *("put", "pickup", "open", "close", "toggle_on", "toggle_off", "slice", "break", "use"),
+    *("heat", "cool", "clean"),  # the object becomes hot / cold / clean
+)
 
 
 class ConstraintWords(BaseModel):

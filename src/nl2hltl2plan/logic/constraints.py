@@ -23,7 +23,7 @@ t=5 open(Fridge) breaks the constraint 'never open the fridge' (G!"open(Fridge)"
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from functools import cached_property
 from typing import Any
@@ -101,7 +101,18 @@ def violations(
     `completed`: spec node -> the step it completed (None: never), for the until-guards."""
     out = []
     for t, atom in events:
-        for c in constraints:
-            if c.forbids(atom) and not c.lifted(completed.get(c.until) if c.until else None, t):
-                out.append(f"t={t} {atom} breaks the constraint {c.text!r} ({c.formula})")
+        c = breach(constraints, atom, t, lambda node: completed.get(node))
+        if c is not None:
+            out.append(f"t={t} {atom} breaks the constraint {c.text!r} ({c.formula})")
     return out
+
+
+def breach(
+    constraints: Sequence[Constraint], atom: str, t: int, completed: Callable[[str], int | None]
+) -> Constraint | None:
+    """The first constraint that an event `atom` at step t breaks (None: it breaks none); `completed`
+    gives a spec node's completion step (None: not complete). The planner and the validator share it."""
+    for c in constraints:
+        if c.forbids(atom) and not c.lifted(completed(c.until) if c.until else None, t):
+            return c
+    return None

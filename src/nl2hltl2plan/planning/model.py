@@ -32,8 +32,9 @@ from nl2hltl2plan.errors import PlanningError, SpecError
 from nl2hltl2plan.logic import spot_backend as sb
 from nl2hltl2plan.logic.atom import Atom
 from nl2hltl2plan.logic.automaton import DEAD, Dfa
-from nl2hltl2plan.logic.constraints import Constraint
+from nl2hltl2plan.logic.constraints import Constraint, breach
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
+from nl2hltl2plan.worlds.checker import STATE_EVENTS
 from nl2hltl2plan.worlds.model import KNIFE_TYPES, Cell, World
 from nl2hltl2plan.worlds.plan import ACTION_ARITY
 
@@ -152,16 +153,19 @@ class Problem:
             p = self.parent.get(p)
         return out
 
-    def forbidden_by(self, atom: str, done_t: Sequence[int] | None = None, t: int = 0) -> Constraint | None:
-        """The constraint an event `atom` at step t breaks, given the nodes' completion steps `done_t`
-        (indexed by `node_slot`; None: nothing complete), or None when it breaks none."""
-        for c in self.constraints:
-            if not c.forbids(atom):
-                continue
-            done = -1 if c.until is None or done_t is None else done_t[self.node_slot[c.until]]
-            if not c.lifted(done if done >= 0 else None, t):
-                return c
-        return None
+    def forbidden_by(
+        self, events: Iterable[str], done_t: Sequence[int] = (), t: int = 0
+    ) -> Constraint | None:
+        """The constraint an event at step t breaks (None: none), given the nodes' completion steps
+        `done_t` (indexed by `node_slot`, -1: not complete; empty: nothing complete)."""
+        slot = self.node_slot
+        done = (lambda n: done_t[slot[n]] if done_t[slot[n]] >= 0 else None) if done_t else (lambda n: None)
+        return next((c for e in events if (c := breach(self.constraints, e, t, done))), None)
+
+    @cached_property
+    def watches_states(self) -> bool:
+        """Does a constraint forbid a change of state (`heat(Mug)`, `worlds.checker.STATE_EVENTS`)?"""
+        return any(p.verb in STATE_EVENTS.values() for c in self.constraints for p in c.patterns)
 
     def can_do(self, robot: int, atom: LeafAtom) -> bool:
         caps = self.capabilities[robot]
@@ -558,7 +562,7 @@ def _atom_problem(problem: Problem, atom: LeafAtom, reachable) -> str | None:
         return f"{atom.text}: a {types[0]} cannot be sliced"
     if not any(problem.can_do(r, atom) for r in range(problem.n_robots)):
         return f"no robot in the team can {atom.text}"
-    banned = problem.forbidden_by(atom.text)
+    banned = problem.forbidden_by([atom.text])
     if banned is not None and banned.until is None:
         return f"{atom.text} is forbidden by the constraint {banned.text!r} ({banned.formula})"
     return None

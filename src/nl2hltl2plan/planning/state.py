@@ -28,6 +28,7 @@ import numpy as np
 from nl2hltl2plan.planning.model import DONE, Leaf, LeafAtom, Problem
 from nl2hltl2plan.planning.navigation import INF, Navigator
 from nl2hltl2plan.planning.support import blockers, support_event
+from nl2hltl2plan.worlds.checker import state_events
 from nl2hltl2plan.worlds.simulator import PRESENT, SimState
 
 
@@ -364,7 +365,7 @@ class Expander:
             elif node.last_done > ready:
                 ready = node.last_done
         t = max(node.clock[robot] + d, ready) + 1
-        if self.p.constraints and self.forbids(atom.text, node, t):
+        if self.p.constraints and self.forbids(atom.text, node, t, child_sim):
             return None
         nq, done = node.nq, node.done_t
         last_done = node.last_done
@@ -404,10 +405,10 @@ class Expander:
             event=Event(robot, li, atom.text, verb, objs, stand, d, t, atom_k, anchor), reach=reach,
         )
 
-    def forbids(self, atom: str, node: Node, t: int) -> bool:
-        """Does a constraint of the spec forbid `atom` at step t after `node`? (Named in the
-        infeasible reason when the search finds no plan.)"""
-        banned = self.p.forbidden_by(atom, node.done_t, t)
+    def forbids(self, atom: str, node: Node, t: int, after: SimState) -> bool:
+        """Does a constraint forbid `atom` at step t after `node`, or a change of state it makes (`after`)?"""
+        states = state_events(self.types, node.sim.flags, after.flags) if self.p.watches_states else []
+        banned = self.p.forbidden_by([atom, *states], node.done_t, t)
         if banned is not None:
             self.blocked_by.add(banned.describe())
         return banned is not None
@@ -465,7 +466,7 @@ class Expander:
             ready = max(ready, node.leaf_t[leaf])  # held until its task is done (examine: lamp on)
         t = max(node.clock[robot] + d, ready) + 1
         atom = f"put({self.types[obj]},{self.types[surface]})"
-        if self.p.constraints and self.forbids(atom, node, t):
+        if self.p.constraints and self.forbids(atom, node, t, child_sim):
             return None
         obj_t = dict(node.obj_t)
         for x in touched:

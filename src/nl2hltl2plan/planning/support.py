@@ -69,7 +69,7 @@ def support_event(x: Expander, node: Node, robot: int, leaf: int, verb: str, obj
         return None
     ready = max((node.obj_t.get(o, 0) for o in touched), default=0)
     t = max(node.clock[robot] + d, ready) + 1
-    if x.p.constraints and x.forbids(f"{verb}({x.types[obj]})", node, t):
+    if x.p.constraints and x.forbids(f"{verb}({x.types[obj]})", node, t, child_sim):
         return None
     obj_t = dict(node.obj_t)
     for o in touched:

@@ -16,7 +16,8 @@ Semantics (ANNOTATION_GUIDE.md, judged on the execution alone, however the plan 
 
 `constraint_violations(execution, constraints, completed)` judges the same execution against the
 constraints beside a spec (G !p, until-guards; `logic.constraints`): every executed action, support
-actions and put-downs included, is matched against what they forbid. `planning.validate` runs it on
+actions and put-downs included, and every change of state (`state_events`: `heat(Mug)` at the step
+a mug becomes hot, `cool(X)`, `clean(X)`) is matched against what they forbid. `planning.validate` runs it on
 every plan the planner returns, and on a plan from elsewhere.
 """
 
@@ -32,6 +33,8 @@ from nl2hltl2plan.worlds.simulator import CLEAN, COLD, HOT, ON, PRESENT, Executi
 from nl2hltl2plan.worlds.tasks import Goal, GTInstance
 
 _STATE_FLAG = {"clean_place": CLEAN, "heat_place": HOT, "cool_place": COLD}
+# a constraint's state atoms: `heat(Mug)` is true at the step some mug becomes hot
+STATE_EVENTS = {HOT: "heat", COLD: "cool", CLEAN: "clean"}
 _SEARCH_BUDGET = 200_000
 
 
@@ -199,7 +202,21 @@ def constraint_violations(
     -> the step it completed (`logic.trace.check_trace`), which lifts an until-guard."""
     if not constraints:
         return []
-    return violations(constraints, ((e.t, e.atom) for e in execution.events), completed)
+    types = _compiled(execution.world).types
+    events = [(e.t, e.atom) for e in execution.events]
+    history = execution.state_history
+    for before, after in zip(history, history[1:], strict=False):
+        events += [(after.t, s) for s in state_events(types, before.flags, after.flags)]
+    return violations(constraints, sorted(events), completed)
+
+
+def state_events(types: Sequence[str], before: Sequence[int], after: Sequence[int]) -> list[str]:
+    """The state atoms a step makes true: `heat(Mug)` for each mug that was not hot before and is after."""
+    out = []
+    for i, (a, b) in enumerate(zip(before, after, strict=True)):
+        gained = b & ~a
+        out += [f"{verb}({types[i]})" for flag, verb in STATE_EVENTS.items() if gained & flag]
+    return out
 
 
 def final_conditions(
