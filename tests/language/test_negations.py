@@ -50,6 +50,7 @@ def test_negated_clauses_are_read_as_forbidden_actions_and_taken_out_of_the_task
     # left to the task parser (an ordering) or to the word accounting (refused)
     for kept in (
         "Do not put the apple in the fridge until you put the mug in the cabinet.",
+        "Do not open the fridge and put the apple in it until you put the mug in the sink.",
         "put the mug in the sink and never examine the apple",
         "put the mug in the sink in any order; the order is not specified",
         "put the mug in the sink and never open the safe",  # no safe in the scene

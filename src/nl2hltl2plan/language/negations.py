@@ -6,10 +6,11 @@ action-atom patterns over the scene's types (`open(Fridge)`, `put(Cup,Dishwasher
 action on the microwave for "use" / "avoid" / "touch"), and returns the instruction without those
 clauses (what the task parser reads) plus one `Negation` per clause. A clause with "until" / "before"
 ("do not open the fridge until the mug is in the sink") is an until-guard lifted by the task the
-words after it name (`resolve_until`, once the base tasks exist). "Do not put X until you put Y" is
-left to the task parser, which reads it as the ordering Y before X (the composed instructions'
-phrasing). A negation this module cannot read (a state: "do not heat the mug"; an object the scene
-lacks; "no", "nothing", "except") is left in the text, where the word accounting refuses it.
+words after it name (`resolve_until`, once the base tasks exist). "Do not X until you Y" is left to
+the task parser, which reads it as the ordering Y before X (the composed instructions' phrasing), as
+is "do not put X until Y". "Do not heat / chill / wash X" forbids the change of state (`heat(X)`). A
+negation this module cannot read (a skill: "never examine the watch"; a thing the scene lacks; "no",
+"nothing", "except") is left in the text, where the word accounting refuses it.
 
 The LLM backends state constraints themselves (`decompose.md`, `ConstraintWords`); both readings end
 in `ConstraintSpec`, which `account` judges like the base tasks and `spec_constraints` puts beside
@@ -142,6 +143,7 @@ def read_negations(
         if (
             w not in CUES
             or _about_order(instruction, toks[i])
+            or _an_ordering(instruction, toks[i])
             or any(n.start <= toks[i][1] < n.end for n in found)
         ):
             continue
@@ -154,6 +156,13 @@ def read_negations(
     rest = re.sub(r"\s+([,.;!?])", r"\1", " ".join(rest.split()))
     rest = re.sub(r"^[,;\s]+|^(?:and|but|then)\s+|[,;\s]+$", "", rest, flags=re.I).strip()
     return rest, found
+
+
+def _an_ordering(instruction: str, tok: tuple[str, int, int]) -> bool:
+    """ "Do not X until you Y" (and "before you", "unless you"): the composed instructions' way to say
+    Y before X, both to be done, which the task parser reads as an ordering."""
+    rest = re.split(r"[.;!?]", instruction[tok[2] :], maxsplit=1)[0].lower()
+    return re.search(r"\b(until|till|before|unless) you\b", rest) is not None
 
 
 def _about_order(instruction: str, tok: tuple[str, int, int]) -> bool:
