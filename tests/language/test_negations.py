@@ -13,8 +13,8 @@ from nl2hltl2plan.config import data_dir
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.accounting import account
 from nl2hltl2plan.language.grounding import Grounder
-from nl2hltl2plan.language.negations import ConstraintSpec, read_negations
-from nl2hltl2plan.language.tasks import BaseTaskSpec
+from nl2hltl2plan.language.negations import read_negations
+from nl2hltl2plan.language.tasks import BaseTaskSpec, ConstraintSpec
 from nl2hltl2plan.logic.constraints import Constraint
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.pipeline import run

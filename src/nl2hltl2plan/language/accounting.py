@@ -27,8 +27,7 @@ import networkx as nx
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.grounding import Mention, camel_words, find_mentions, lexicon, tokens
-from nl2hltl2plan.language.negations import ConstraintSpec
-from nl2hltl2plan.language.tasks import BaseTaskSpec
+from nl2hltl2plan.language.tasks import BaseTaskSpec, ConstraintSpec
 from nl2hltl2plan.logic.atom import Atom
 from nl2hltl2plan.worlds.model import KNIFE_TYPES
 from nl2hltl2plan.worlds.tasks import APPLIANCE, slots_of

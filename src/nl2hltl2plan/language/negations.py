@@ -29,11 +29,10 @@ import re
 from collections.abc import Sequence
 from dataclasses import dataclass
 
-from pydantic import BaseModel, Field
-
+from nl2hltl2plan.language.accounting import stems
 from nl2hltl2plan.language.grounding import AffordanceLookup, Grounder, Mention, find_mentions, tokens
 from nl2hltl2plan.language.spec_builder import spec_name
-from nl2hltl2plan.language.tasks import BaseTaskSpec
+from nl2hltl2plan.language.tasks import BaseTaskSpec, ConstraintSpec
 from nl2hltl2plan.logic.constraints import Constraint
 
 CUES = {
@@ -75,19 +74,6 @@ VERBS = {
 }
 ALL_VERBS = ("pickup", "open", "close", "toggle_on", "toggle_off", "slice", "break")
 STATE_VERBS = ("heat", "cool", "clean")  # an object becomes hot / cold / clean
-
-
-class ConstraintSpec(BaseModel):
-    """A constraint as the language stage states it: the instruction's words, the forbidden action
-    patterns over scene types, and the base task whose completion lifts it (None: never lifted)."""
-
-    text: str
-    forbid: list[str] = Field(min_length=1)
-    until: str | None = None  # a base-task id
-
-    def describe(self) -> str:
-        guard = f" until task {self.until} is done" if self.until else ""
-        return f"{self.text}: forbids {', '.join(self.forbid)}{guard}"
 
 
 @dataclass
@@ -219,33 +205,24 @@ def _read_clause(
 
 def _verb_of(word: str) -> str | None:
     """The forbidden action a verb names, inflected or not ("breaking", "opens", "touched")."""
-    for suffix in ("", "ing", "s", "es", "ed", "d"):
-        base = (
-            word[: len(word) - len(suffix)]
-            if suffix and word.endswith(suffix)
-            else word
-            if not suffix
-            else ""
-        )
-        for form in filter(
-            None, {base, base + "e", base[:-1] if len(base) > 2 and base[-1] == base[-2] else ""}
-        ):
-            if form in VERBS:
-                return VERBS[form]
-    return None
+    return next((VERBS[f] for f in sorted(stems(word), key=len, reverse=True) if f in VERBS), None)
 
 
 def _objects_and_places(
     inside: list[Mention], words: list[str], grounder: Grounder
 ) -> tuple[list[str] | None, list[str]]:
-    """Scene types of the things the clause names, split into objects and places (after a preposition)."""
+    """Scene types of the things the clause names, split into objects and places (after a preposition);
+    a place after "from" / "off" only says where the thing is ("don't move the vase from the table")."""
     things: list[str] = []
     places: list[str] = []
     for m in inside:
         types = grounder.resolve(m.entry)
         if not types:
             return None, []  # an object the scene lacks: the negation stays unread (refused)
-        is_place = any(w in PREPS for w in words[max(0, m.start - 3) : m.start]) and things
+        before = words[max(0, m.start - 3) : m.start]
+        if things and {"from", "off"} & set(before):
+            continue
+        is_place = any(w in PREPS for w in before) and things
         (places if is_place else things).extend(types)
     return (things or None), places
 

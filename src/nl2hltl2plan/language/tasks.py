@@ -13,16 +13,38 @@ from collections.abc import Hashable, Iterable, Sequence
 from typing import TypeVar
 
 import networkx as nx
+from pydantic import BaseModel, Field
 
 from nl2hltl2plan.worlds.tasks import KINDS, BaseTask, Kind
 
 N = TypeVar("N", bound=Hashable)
 
-__all__ = ["KINDS", "BaseTaskSpec", "Kind", "task_letter", "transitive_closure", "transitive_reduction"]
+__all__ = [
+    "KINDS",
+    "BaseTaskSpec",
+    "ConstraintSpec",
+    "Kind",
+    "task_letter",
+    "transitive_closure",
+    "transitive_reduction",
+]
 
 
 # The one base-task model lives in worlds (the ground truth uses it too); the old name stays for callers.
 BaseTaskSpec = BaseTask
+
+
+class ConstraintSpec(BaseModel):
+    """A constraint as the language stage states it: the instruction's words, the forbidden action
+    patterns over scene types, and the base task whose completion lifts it (None: never lifted)."""
+
+    text: str
+    forbid: list[str] = Field(min_length=1)
+    until: str | None = None  # a base-task id
+
+    def describe(self) -> str:
+        guard = f" until task {self.until} is done" if self.until else ""
+        return f"{self.text}: forbids {', '.join(self.forbid)}{guard}"
 
 
 def transitive_closure(

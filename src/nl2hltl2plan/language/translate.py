@@ -30,7 +30,6 @@ from nl2hltl2plan.language.llm.batch import PendingAnswer
 from nl2hltl2plan.language.llm.client import LLMClient
 from nl2hltl2plan.language.ltl_generation import llm_generate_ltl, translator_client
 from nl2hltl2plan.language.negations import (
-    ConstraintSpec,
     Negation,
     patterns,
     read_negations,
@@ -43,7 +42,7 @@ from nl2hltl2plan.language.scoring import match
 from nl2hltl2plan.language.spec_builder import GenerateLTL, build_spec
 from nl2hltl2plan.language.state_tasks import read_unparsed_states, state_orderings
 from nl2hltl2plan.language.suggest import not_understood, suggestion_text
-from nl2hltl2plan.language.tasks import BaseTaskSpec, task_letter, transitive_reduction
+from nl2hltl2plan.language.tasks import BaseTaskSpec, ConstraintSpec, task_letter, transitive_reduction
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec, LeafOrFormula
 from nl2hltl2plan.logic.relations import compile_relations
 from nl2hltl2plan.worlds.model import World
@@ -147,7 +146,7 @@ def _keep_negations(
     the constraints those clauses state (an until-guard on the task its words name)."""
     res.instruction = instruction
     res.htt.instruction = instruction
-    res.htt.nodes[0].text = instruction
+    res.htt.root.text = instruction
     res.constraint_specs = [n.spec for n in resolve_until(negations, res.tasks, grounder)]
 
 
