@@ -4,6 +4,8 @@
 from __future__ import annotations
 
 import json
+import sys
+from pathlib import Path
 
 import pytest
 import spot
@@ -22,6 +24,7 @@ from nl2hltl2plan.planning import plan, validate
 from nl2hltl2plan.worlds.demo import demo_world
 
 needs_data = pytest.mark.skipif(data_dir(required=False) is None, reason="needs ../shared/data")
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "scripts"))  # trust_sets
 KITCHEN = {"Apple", "Fridge", "Microwave", "Mug", "CounterTop", "SinkBasin", "Cup", "DishwasherUpperRack"}
 
 
@@ -182,3 +185,16 @@ class _Kitchen:
 
     def object_types(self) -> set[str]:
         return KITCHEN
+
+
+@needs_data
+def test_benchmark_records_keep_the_constraints_for_the_planning_workers():
+    import trust_sets
+
+    from nl2hltl2plan.evaluation.language_bench import language_record
+    from nl2hltl2plan.pipeline import PipelineOptions
+
+    (gt,) = [g for g in trust_sets.load("mixed") if g.instruction.endswith("never touch the tomato")]
+    rec = language_record(gt, PipelineOptions(), None)
+    spec = HierarchicalSpec.from_json({"levels": rec.levels, "constraints": rec.constraints})
+    assert rec.conversion_ok and [c.text for c in spec.constraints] == ["never touch the tomato"]

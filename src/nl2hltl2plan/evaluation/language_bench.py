@@ -79,6 +79,7 @@ def language_record(gt: GTInstance, options: PipelineOptions, client: LLMClient 
             "ltl_checks": result.ltl_checks,
             "llm_calls": result.llm_calls,
             "levels": result.spec.to_json_obj() if result.spec is not None else None,
+            "constraints": [c.to_json() for c in result.spec.constraints] if result.spec is not None else [],
             "tasks_ok": verdict.tasks_ok,
             "partial": result.partial,
             "conversion_ok": verdict.order_ok and not result.partial,
@@ -149,7 +150,7 @@ def language_job(
                     "stage": rec.stage or "planning",
                 }
             ).to_json()
-        spec = HierarchicalSpec.from_json(rec.levels)
+        spec = HierarchicalSpec.from_json({"levels": rec.levels, "constraints": rec.constraints})
         row = ScenarioRow.from_planned(planning_stage(world, spec, starts, options, gt), **base)
         row.planning_ok = row.status == "solved"
         row.stage = failure_stage(rec, row)

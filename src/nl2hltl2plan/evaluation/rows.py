@@ -104,6 +104,7 @@ class LanguageRecord(BaseModel):
     ltl_checks: list[str] = Field(default_factory=list)
     llm_calls: dict[str, int] = Field(default_factory=dict)
     levels: list[dict[str, Any]] | None = None  # the hierarchical spec's JSON levels
+    constraints: list[dict[str, Any]] = Field(default_factory=list)  # beside them (negations), as JSON
     tasks_ok: bool = False
     conversion_ok: bool = False
     match_reasons: list[str] = Field(default_factory=list)

@@ -80,7 +80,7 @@ class HierarchicalSpec:
 
     # ----- JSON ------------------------------------------------------------------------------
     @classmethod
-    def from_json(cls, data: str | list[Any]) -> HierarchicalSpec:
+    def from_json(cls, data: str | list[Any] | dict[str, Any]) -> HierarchicalSpec:
         if isinstance(data, str):
             try:
                 data = loads(data, "specification")
