@@ -153,11 +153,23 @@ class ConstraintWords(BaseModel):
     object: str = Field(max_length=MAX_WORD)
     receptacle: str | None = Field(default=None, max_length=MAX_WORD)
     until: str | None = Field(default=None, max_length=12)
-    # what the coverage check reads of a task (`semantic_check.TaskWords`)
-    kind: str = "constraint"
-    sliced: bool = False
-    container: str | None = None
-    light: str | None = None
+
+    # what the coverage check reads of a task (`semantic_check.TaskWords`): its object and receptacle
+    @property
+    def kind(self) -> str:
+        return "constraint"
+
+    @property
+    def sliced(self) -> bool:
+        return False
+
+    @property
+    def container(self) -> str | None:
+        return None
+
+    @property
+    def light(self) -> str | None:
+        return None
 
     @field_validator("verb")
     @classmethod
