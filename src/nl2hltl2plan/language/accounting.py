@@ -47,6 +47,14 @@ LOCATIVE = frozenset(
 )
 
 
+# a verb inside a negated clause -> what its constraint must forbid (an action, or a change of state)
+CONSTRAINT_VERBS = {
+    "verb_break": "break",
+    "verb_sliced": "slice",
+    "verb_heat_place": "heat",
+    "verb_cool_place": "cool",
+    "verb_clean_place": "clean",
+}
 NO_CONSTRAINT = (
     "a negated request that no constraint of the spec carries (only actions on things of the world, and "
     "their heating, cooling or cleaning, can be forbidden)"
@@ -438,12 +446,7 @@ def _constraint_verb(w: str, cats: set[str], words: list[str], i: int, c: Constr
         if need in verbs:
             return None
         return Unread(w, "action", f"the constraint {c.text!r} does not forbid {need}")
-    wanted = {"verb_break": "break", "verb_sliced": "slice"}
-    for cat, verb in wanted.items():
-        if cat in cats and verb not in verbs:
-            return Unread(w, "action", f"the constraint {c.text!r} does not forbid {verb}")
-    states = {"verb_heat_place": "heat", "verb_cool_place": "cool", "verb_clean_place": "clean"}
-    for cat, verb in states.items():
+    for cat, verb in CONSTRAINT_VERBS.items():
         if cat in cats and verb not in verbs:
             return Unread(w, "action", f"the constraint {c.text!r} does not forbid {verb}")
     if "verb_examine_in_light" in cats or "verb_unsupported" in cats:

@@ -17,8 +17,8 @@ Semantics (ANNOTATION_GUIDE.md, judged on the execution alone, however the plan 
 `constraint_violations(execution, constraints, completed)` judges the same execution against the
 constraints beside a spec (G !p, until-guards; `logic.constraints`): every executed action, support
 actions and put-downs included, and every change of state (`state_events`: `heat(Mug)` at the step
-a mug becomes hot, `cool(X)`, `clean(X)`) is matched against what they forbid. `planning.validate` runs it on
-every plan the planner returns, and on a plan from elsewhere.
+a mug becomes hot, `cool(X)`, `clean(X)`) is matched against what they forbid. `planning.validate`
+runs it on every plan the planner returns, and on a plan from elsewhere.
 """
 
 from __future__ import annotations
