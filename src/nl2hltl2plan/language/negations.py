@@ -54,15 +54,14 @@ FILLER = {"do", "to", "ever", "you", "please", "be", "at", "all", "go", "the", "
 UNTIL = {"until", "till", "before", "unless"}
 LISTED = {"the", "a", "an", "some", "my", "your", "its", "their", "two", "both", "all"}  # "and the mugs"
 PREPS = {"in", "into", "on", "onto", "inside", "to", "under", "at", "near", "by", "beside"}
-# a verb of the clause -> the action it forbids ("any": every action on the thing)
+# a verb of the clause (any inflection: `accounting.stems`) -> the action it forbids ("any": every
+# action on the thing)
 VERBS = {
     **dict.fromkeys("put place set leave drop store stick throw toss insert load hang stack".split(), "put"),
     **dict.fromkeys("move carry take bring pick grab get lift remove hold fetch handle".split(), "pickup"),
-    **dict.fromkeys("touch use using disturb approach bother".split(), "any"),
+    **dict.fromkeys("touch use using disturb approach bother".split(), "any"),  # ("using": too short a stem)
     "open": "open",
-    "opening": "open",
     "close": "close",
-    "closing": "close",
     "shut": "close",
     **dict.fromkeys("slice cut chop dice".split(), "slice"),
     **dict.fromkeys("break smash shatter".split(), "break"),
@@ -126,8 +125,9 @@ def read_negations(
     mentions = find_mentions(instruction)
     found: list[Negation] = []
     for i, w in enumerate(words):
+        goes_on = w in ("or", "nor") and bool(found) and not instruction[found[-1].end : toks[i][1]].strip()
         if (
-            w not in CUES
+            (w not in CUES and not goes_on)
             or _about_order(instruction, toks[i])
             or _an_ordering(instruction, toks[i])
             or any(n.start <= toks[i][1] < n.end for n in found)
@@ -249,6 +249,8 @@ def _clause_end(text: str, toks: list[tuple[str, int, int]], i: int) -> int:
             return k  # a comma goes on with a list of things: "the butter knife, the fork and the spoon"
         if toks[k][0] in ("and", "but", "then") and k + 1 < len(toks) and toks[k + 1][0] not in LISTED:
             return k  # "never open the fridge and heat the mug" (not "the cups and the mugs")
+        if toks[k][0] in ("or", "nor") and k + 1 < len(toks) and _verb_of(toks[k + 1][0]):
+            return k  # "without opening the fridge or using the microwave": a negation of its own
     return len(toks)
 
 

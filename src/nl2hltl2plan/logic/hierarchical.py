@@ -22,7 +22,9 @@ The three rules are checked as follows (errors name the formula at fault):
 Semantics used for planning and checking (`logic.trace.check_trace`): every action event is attributed to one
 leaf; a leaf formula reads only its own events; a composite proposition is a *completion event*,
 true exactly at the step its formula is first satisfied. A trace satisfies the specification when
-every L1 formula is satisfied.
+every L1 formula is satisfied and it keeps the constraints beside the levels (`logic.constraints`:
+G !p and until-guards, judged on every event of the trace; JSON `{"levels": [...], "constraints":
+[...]}`).
 """
 
 from __future__ import annotations
