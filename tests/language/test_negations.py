@@ -46,6 +46,9 @@ def test_negated_clauses_are_read_as_forbidden_actions_and_taken_out_of_the_task
     assert read("put the mug in the sink, never the cup")[1] == [
         ("never the cup", ["put(Cup,SinkBasin)"], "")
     ]
+    _, [opening, using] = read("put the mug in the sink without opening the fridge or using the microwave")
+    assert opening[1] == ["open(Fridge)"] and using[0] == "or using the microwave"
+    assert "put(*,Microwave)" in using[1]
     _, [(_, _, until)] = read(
         "put the mug in the sink. Do not open the fridge before the mug is in the sink."
     )
