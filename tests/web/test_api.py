@@ -266,3 +266,12 @@ def test_every_example_is_understood():
         for text in instructions:
             lang = language_stage(text, cached_world(world))
             assert lang.spec is not None and not lang.unparsed, (world, text)
+
+
+def test_a_negation_comes_back_as_a_constraint(client):
+    body = {"instruction": "put the apple in the fridge but never open the microwave", "world": "demo"}
+    res = client.post("/api/plan", json=body)
+    assert res.status_code == 200, res.text
+    out = res.json()
+    assert out["status"] == "solved"
+    assert out["constraints"] == ['never open the microwave: G!"open(Microwave)"']
