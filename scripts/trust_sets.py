@@ -143,7 +143,7 @@ def validation(split: str, n: int, seed: int) -> None:
     from nl2hltl2plan.language.accounting import account
     from nl2hltl2plan.language.grounding import scene_types
     from nl2hltl2plan.language.learned.inference import parse_instruction
-    from nl2hltl2plan.language.learned.validate import validation_rows
+    from nl2hltl2plan.suites.alfred.learned_validation import validation_rows
 
     counts: Counter[tuple[bool, bool]] = Counter()
     for row in validation_rows(split, n, seed):

@@ -8,10 +8,10 @@ import pytest
 
 from nl2hltl2plan.cli.main import main
 from nl2hltl2plan.config import data_dir
-from nl2hltl2plan.evaluation.language_bench import STAGES, failure_stage, language_record
-from nl2hltl2plan.evaluation.report_md import failure_breakdown, pipeline_summary, table1_markdown
-from nl2hltl2plan.evaluation.rows import LanguageRecord, ScenarioRow
 from nl2hltl2plan.pipeline import PipelineOptions
+from nl2hltl2plan.suites.alfred.alfred_language import STAGES, failure_stage, language_record
+from nl2hltl2plan.suites.alfred.alfred_report import failure_breakdown, pipeline_summary, table1_markdown
+from nl2hltl2plan.suites.rows import LanguageRecord, ScenarioRow
 
 needs_data = pytest.mark.skipif(data_dir(required=False) is None, reason="needs ../shared/data")
 
@@ -68,7 +68,7 @@ def test_rates_follow_table_1():
 
 @needs_data
 def test_language_record_scores_conversion_against_ground_truth():
-    from nl2hltl2plan.worlds.benchmark import gt_instance
+    from nl2hltl2plan.suites.alfred.ground_truth import gt_instance
 
     ok = language_record(gt_instance("FloorPlan15.tasks_1.compose_0.fintune_1"), PipelineOptions(), None)
     assert ok.conversion_ok and ok.stage is None and ok.levels

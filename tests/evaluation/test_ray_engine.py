@@ -7,8 +7,8 @@ import time
 
 import pytest
 
-from nl2hltl2plan.evaluation.ray_engine import EngineError, run_with_engine
-from nl2hltl2plan.evaluation.runner import Scenario
+from nl2hltl2plan.suites.ray_engine import EngineError, run_with_engine
+from nl2hltl2plan.suites.runner import Scenario
 
 INSTRUCTIONS = {
     "apple": "Put the apple in the fridge.",

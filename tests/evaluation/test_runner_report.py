@@ -8,9 +8,9 @@ import time
 
 import pytest
 
-from nl2hltl2plan.evaluation.report import format_table, paper_table1, percentile, summarize
-from nl2hltl2plan.evaluation.rows import rows_of
-from nl2hltl2plan.evaluation.runner import RunnerError, Scenario, count_errored, run_scenarios
+from nl2hltl2plan.suites.rows import rows_of
+from nl2hltl2plan.suites.runner import RunnerError, Scenario, count_errored, run_scenarios
+from nl2hltl2plan.suites.summaries import format_table, paper_table1, percentile, summarize
 
 
 def job(scenario: Scenario) -> dict:

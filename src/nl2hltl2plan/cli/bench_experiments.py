@@ -22,7 +22,7 @@ from typing import Any
 from nl2hltl2plan.argtypes import int_in, seed
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.language.backends import BACKENDS
-from nl2hltl2plan.language.options import add_llm_arguments, llm_settings
+from nl2hltl2plan.language.llm.llm_options import add_llm_arguments, llm_settings
 
 MAX_INSTANCES = 1000  # the paper runs 25 (tabletop) and 10 (handover); each takes a planner call
 
@@ -93,7 +93,7 @@ def _llm_client(args: argparse.Namespace) -> Iterator[Any]:
 
 
 def run_tabletop(args: argparse.Namespace) -> int:
-    from nl2hltl2plan.evaluation.tabletop import run_bench
+    from nl2hltl2plan.suites.tabletop.tabletop_bench import run_bench
 
     with _llm_client(args) as client:
         summary = run_bench(args.out, instances=args.instances, seed=args.seed, client=client)
@@ -113,8 +113,8 @@ def _errored_exit(errored: int) -> int:
 
 
 def run_handover(args: argparse.Namespace) -> int:
-    from nl2hltl2plan.evaluation.handover import run_bench
     from nl2hltl2plan.planning.coop import MAX_EXPANSIONS
+    from nl2hltl2plan.suites.handover.handover_bench import run_bench
 
     with _llm_client(args) as client:
         summary = run_bench(

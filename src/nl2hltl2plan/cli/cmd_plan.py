@@ -211,7 +211,7 @@ def _ask_on_terminal(ambiguities: list[Any]) -> dict[str, str]:
 
 
 def _print_human(outcome: Any) -> None:
-    from nl2hltl2plan.language.render import htt_lines
+    from nl2hltl2plan.present.htt_pictures import htt_lines
     from nl2hltl2plan.worlds.tasks import SLOTS
 
     lang, r = outcome.language, outcome.result
@@ -260,7 +260,7 @@ def _print_human(outcome: Any) -> None:
 def _write_outputs(folder: Path, outcome: Any, payload: dict[str, Any]) -> None:
     """result.json, the spec (JSON and HOA) and the pictures (PNG and SVG), all drawn from the outcome
     (nothing is re-run): the same files the web page offers for download (`outputs.write_outputs`)."""
-    from nl2hltl2plan.outputs import write_outputs
+    from nl2hltl2plan.present.outputs import write_outputs
 
     for warning in write_outputs(folder, outcome, payload):
         print(f"warning: {warning}", file=sys.stderr)

@@ -8,7 +8,7 @@ from typing import Any
 
 from nl2hltl2plan.argtypes import int_in, ints_in, seconds
 from nl2hltl2plan.language.backends import BACKENDS
-from nl2hltl2plan.language.options import add_llm_arguments, llm_settings
+from nl2hltl2plan.language.llm.llm_options import add_llm_arguments, llm_settings
 
 
 def add_backend_argument(

@@ -19,8 +19,8 @@ from dataclasses import dataclass, field
 from typing import Literal
 
 from nl2hltl2plan.errors import HTTError, WorldError
-from nl2hltl2plan.worlds.handover import REGIONS, Layout, layout
-from nl2hltl2plan.worlds.model import Cell, World
+from nl2hltl2plan.worlds.handover_world import REGIONS, Layout, layout
+from nl2hltl2plan.worlds.world import Cell, World
 
 COLOURS = ("red", "blue", "yellow")
 COUNTS = {"two": 2, "three": 3, "four": 4, "both": 2, "2": 2, "3": 3, "4": 4}

@@ -35,8 +35,8 @@ from nl2hltl2plan.language.handover_phrases import FILLER, Marked, Place, Scene,
 from nl2hltl2plan.language.htt import HTT, HTTNode
 from nl2hltl2plan.language.result import LanguageResult
 from nl2hltl2plan.language.spec_builder import build_spec
-from nl2hltl2plan.language.tasks import BaseTaskSpec, task_letter, transitive_reduction
-from nl2hltl2plan.worlds.model import World
+from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter, transitive_reduction
+from nl2hltl2plan.worlds.world import World
 
 VERB = r"(?:transfer|move|put|place|bring|carry|take|deliver|relocate|shift|get|set|send|return)"
 PREP = r"(?:to|into|onto|on|in|at|towards?|over\s+to|in\s+to|on\s+to)"

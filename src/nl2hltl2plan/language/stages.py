@@ -28,7 +28,7 @@ from nl2hltl2plan.errors import LLMError
 from nl2hltl2plan.language import semantic_check
 from nl2hltl2plan.language.llm.client import LLMClient, Validator
 from nl2hltl2plan.language.prompts import load_prompt
-from nl2hltl2plan.language.tasks import Kind
+from nl2hltl2plan.language.task_specs import Kind
 from nl2hltl2plan.logic.atom import Atom
 from nl2hltl2plan.worlds.plan import ACTION_ARITY
 from nl2hltl2plan.worlds.tasks import State

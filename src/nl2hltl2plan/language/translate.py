@@ -22,7 +22,7 @@ from collections.abc import Callable, Iterator
 from typing import Literal, Protocol
 
 from nl2hltl2plan.errors import HTTError, LLMError, Nl2Hltl2PlanError, WorldError
-from nl2hltl2plan.language import handover, stages
+from nl2hltl2plan.language import handover_reading, stages
 from nl2hltl2plan.language.accounting import account, take_every_instance
 from nl2hltl2plan.language.grounding import AffordanceLookup, Grounder, world_lookup
 from nl2hltl2plan.language.htt_build import build_htt
@@ -35,11 +35,11 @@ from nl2hltl2plan.language.scoring import match
 from nl2hltl2plan.language.spec_builder import GenerateLTL, build_spec
 from nl2hltl2plan.language.state_tasks import read_unparsed_states, state_orderings
 from nl2hltl2plan.language.suggest import not_understood, suggestion_text
-from nl2hltl2plan.language.tasks import BaseTaskSpec, task_letter, transitive_reduction
+from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter, transitive_reduction
 from nl2hltl2plan.logic.hierarchical import LeafOrFormula
 from nl2hltl2plan.logic.relations import compile_relations
-from nl2hltl2plan.worlds.model import World
 from nl2hltl2plan.worlds.tasks import SLOTS, demand_of
+from nl2hltl2plan.worlds.world import World
 
 LtlSource = Literal["compiler", "llm", "learned"]
 MAX_INSTRUCTION_CHARS = 2000  # about 300 words, 15 times the paper's longest; bounds the parser's time
@@ -95,8 +95,8 @@ def translate(
         raise HTTError("empty instruction")
     types = set(world.object_types()) if world is not None else None
     scene = world.name if world is not None else None
-    if backend in PARSERS and handover.is_handover(world):  # the four-arm worlds' own phrases
-        return handover.translate_handover(instruction, world)
+    if backend in PARSERS and handover_reading.is_handover(world):  # the four-arm worlds' own phrases
+        return handover_reading.translate_handover(instruction, world)
     if backend in PARSERS:
         look = world_lookup(world) if isinstance(world, World) else None
         res = _parse(backend, instruction, types, scene, strict, look, world)

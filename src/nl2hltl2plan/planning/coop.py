@@ -40,7 +40,7 @@ from nl2hltl2plan.errors import PlanningError
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.planning.coop_progress import Event, Progress, PState, leaf_targets
 from nl2hltl2plan.planning.results import PlanResult, PlanStatus
-from nl2hltl2plan.worlds.handover import (
+from nl2hltl2plan.worlds.handover_world import (
     ARMS,
     HandoverExecution,
     HandoverWorld,
@@ -49,8 +49,8 @@ from nl2hltl2plan.worlds.handover import (
     execute_handover,
     initial_snap,
 )
-from nl2hltl2plan.worlds.model import Cell
 from nl2hltl2plan.worlds.plan import Plan, RobotPlan, Step
+from nl2hltl2plan.worlds.world import Cell
 
 MAX_EXPANSIONS = 60_000
 
@@ -482,8 +482,8 @@ def plan_world(
     cells are given (else the world's). Options other than timeout_s (a last-resort stop) are ignored
     (the cooperative planner minimises moves + actions). `execution` stays None: the handover
     simulator's run is in `coop_plan`'s own result."""
-    from nl2hltl2plan.worlds.handover import HandoverWorld, layout
-    from nl2hltl2plan.worlds.model import CELL_M
+    from nl2hltl2plan.worlds.handover_world import HandoverWorld, layout
+    from nl2hltl2plan.worlds.world import CELL_M
 
     if getattr(world, "kind", "") != "handover":
         raise PlanningError(f"{getattr(world, 'name', world)} is not a handover world")

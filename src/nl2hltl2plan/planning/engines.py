@@ -13,7 +13,7 @@ from typing import Any, Protocol
 
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.planning.results import PlanResult
-from nl2hltl2plan.worlds.model import Cell, World
+from nl2hltl2plan.worlds.world import Cell, World
 
 
 class Engine(Protocol):

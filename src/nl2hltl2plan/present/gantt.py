@@ -25,9 +25,9 @@ from matplotlib.ticker import MaxNLocator  # noqa: E402
 from nl2hltl2plan.errors import WorldError  # noqa: E402
 from nl2hltl2plan.io import save_figure  # noqa: E402
 from nl2hltl2plan.logic.atom import Atom
-from nl2hltl2plan.worlds.model import CELL_M  # noqa: E402
 from nl2hltl2plan.worlds.plan import Plan, RobotPlan  # noqa: E402
 from nl2hltl2plan.worlds.simulator import Execution  # noqa: E402
+from nl2hltl2plan.worlds.world import CELL_M  # noqa: E402
 
 TASK_COLOURS = [plt.get_cmap("tab20")(k) for k in range(0, 20, 2)] + [
     plt.get_cmap("tab20")(k) for k in range(1, 20, 2)

@@ -41,9 +41,9 @@ def _replace(path: Path, data: bytes) -> None:
 
 
 def _figure(outcome: Outcome, name: str) -> Any:
-    from nl2hltl2plan.language.render import htt_figure, htt_orderings, htt_task_words
-    from nl2hltl2plan.worlds.gantt import draw_gantt
-    from nl2hltl2plan.worlds.pictures import draw_execution, draw_world
+    from nl2hltl2plan.present.gantt import draw_gantt
+    from nl2hltl2plan.present.htt_pictures import htt_figure, htt_orderings, htt_task_words
+    from nl2hltl2plan.present.pictures import draw_execution, draw_world
 
     execution = outcome.result.execution
     if name == "htt":

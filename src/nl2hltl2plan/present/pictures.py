@@ -21,8 +21,8 @@ from matplotlib.patches import Rectangle  # noqa: E402
 
 from nl2hltl2plan.errors import WorldError  # noqa: E402
 from nl2hltl2plan.io import atomic_path, save_figure  # noqa: E402
-from nl2hltl2plan.worlds.model import CELL_M, World  # noqa: E402
 from nl2hltl2plan.worlds.simulator import Execution  # noqa: E402
+from nl2hltl2plan.worlds.world import CELL_M, World  # noqa: E402
 
 ROBOT_COLOURS = [plt.get_cmap("tab10")(k) for k in range(10)]
 REGION_COLOURS = [plt.get_cmap("Set2")(k) for k in range(8)]

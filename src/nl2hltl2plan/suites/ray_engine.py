@@ -27,7 +27,7 @@ from typing import Any
 
 from nl2hltl2plan.deadline import describe_exception
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
-from nl2hltl2plan.evaluation.runner import (
+from nl2hltl2plan.suites.runner import (
     Notes,
     Row,
     Scenario,

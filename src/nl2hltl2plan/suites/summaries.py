@@ -9,12 +9,12 @@ from collections.abc import Sequence
 from importlib import resources
 from typing import Any
 
-from nl2hltl2plan.evaluation.rows import ScenarioRow
+from nl2hltl2plan.suites.rows import ScenarioRow
 
 
 def paper_table1() -> dict[tuple[int, int], dict[str, Any]]:
     """The paper's Table I rows by (n_base, robots)."""
-    text = resources.files("nl2hltl2plan.evaluation").joinpath("paper_table1.json").read_text()
+    text = resources.files("nl2hltl2plan.suites.alfred").joinpath("paper_table1.json").read_text()
     return {(r["n_base"], r["robots"]): r for r in json.loads(text)["rows"]}
 
 

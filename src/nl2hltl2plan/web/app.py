@@ -106,7 +106,7 @@ def available_worlds() -> list[str]:
             continue
         names.append(name)
     try:
-        from nl2hltl2plan.worlds.alfred import floor_plans
+        from nl2hltl2plan.worlds.floor_plans import floor_plans
 
         names += floor_plans()
     except (Nl2Hltl2PlanError, OSError):

@@ -94,7 +94,7 @@ def work(body: dict[str, Any], folder: str, conn: Connection) -> None:
         payload = outcome.to_json()
         conn.send(("result", payload))
         if req.pictures:
-            from nl2hltl2plan.outputs import output_names, write_outputs
+            from nl2hltl2plan.present.outputs import output_names, write_outputs
 
             warnings = write_outputs(folder, outcome, payload)
             names = [n for n in output_names(outcome.result.execution is not None) if os.path.exists(

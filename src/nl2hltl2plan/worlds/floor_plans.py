@@ -39,8 +39,8 @@ from nl2hltl2plan.config import data_path
 from nl2hltl2plan.errors import DataError, WorldError
 from nl2hltl2plan.io import iter_gzip_jsonl, load_npy, read_json
 from nl2hltl2plan.worlds.affordances import AffordanceTable, alfred_affordances
-from nl2hltl2plan.worlds.model import World, WorldObject, add_slices
 from nl2hltl2plan.worlds.tasks import GTInstance
+from nl2hltl2plan.worlds.world import World, WorldObject, add_slices
 
 SAME_OBJECT_M = 0.1
 SAME_POSE_M = 0.01

@@ -44,7 +44,7 @@ from typing import Literal
 from pydantic import BaseModel, ConfigDict, Field
 
 from nl2hltl2plan.errors import WorldError
-from nl2hltl2plan.worlds.model import KNIFE_TYPES, World, sliced_type
+from nl2hltl2plan.worlds.world import KNIFE_TYPES, World, sliced_type
 
 Kind = Literal[
     "place",

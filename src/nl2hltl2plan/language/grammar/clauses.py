@@ -5,9 +5,9 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
-from nl2hltl2plan.language.offline import grammar as G
-from nl2hltl2plan.language.offline.frames import dest_of, parse_frame
-from nl2hltl2plan.language.offline.phrases import match_prep, parse_np, tokens
+from nl2hltl2plan.language.grammar import word_tables as G
+from nl2hltl2plan.language.grammar.frames import dest_of, parse_frame
+from nl2hltl2plan.language.grammar.phrases import match_prep, parse_np, tokens
 
 
 def _is_verb_at(words: list[tuple[str, int, int]], i: int) -> bool:

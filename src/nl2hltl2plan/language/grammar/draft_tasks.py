@@ -5,9 +5,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from nl2hltl2plan.errors import WorldError
-from nl2hltl2plan.language.grounding import AffordanceLookup, Grounder, Roles, find_mentions
-from nl2hltl2plan.language.offline import grammar as G
-from nl2hltl2plan.language.offline.frames import (
+from nl2hltl2plan.language.grammar import word_tables as G
+from nl2hltl2plan.language.grammar.frames import (
     THEN_TO,
     UNDER,
     Frame,
@@ -18,8 +17,9 @@ from nl2hltl2plan.language.offline.frames import (
     puts_into,
     same,
 )
-from nl2hltl2plan.language.offline.phrases import DETERMINERS, FILLER, NP, parse_np, tokens
-from nl2hltl2plan.language.tasks import BaseTaskSpec
+from nl2hltl2plan.language.grammar.phrases import DETERMINERS, FILLER, NP, parse_np, tokens
+from nl2hltl2plan.language.grounding import AffordanceLookup, Grounder, Roles, find_mentions
+from nl2hltl2plan.language.task_specs import BaseTaskSpec
 from nl2hltl2plan.worlds.tasks import Kind
 
 

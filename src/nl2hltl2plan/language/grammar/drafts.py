@@ -5,9 +5,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from nl2hltl2plan.language.offline import grammar as G
-from nl2hltl2plan.language.offline.clauses import Clause, expand_gapping, split_clauses
-from nl2hltl2plan.language.offline.frames import (
+from nl2hltl2plan.language.grammar import word_tables as G
+from nl2hltl2plan.language.grammar.clauses import Clause, expand_gapping, split_clauses
+from nl2hltl2plan.language.grammar.draft_tasks import Draft, TaskBuilder, Unit
+from nl2hltl2plan.language.grammar.frames import (
     IN_SENTENCE,
     Frame,
     Item,
@@ -16,9 +17,8 @@ from nl2hltl2plan.language.offline.frames import (
     puts_into,
     same,
 )
-from nl2hltl2plan.language.offline.phrases import NP
-from nl2hltl2plan.language.offline.sentences import Sentence
-from nl2hltl2plan.language.offline.tasks import Draft, TaskBuilder, Unit
+from nl2hltl2plan.language.grammar.phrases import NP
+from nl2hltl2plan.language.grammar.sentences import Sentence
 
 
 @dataclass

@@ -4,9 +4,9 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from nl2hltl2plan.language.grammar import word_tables as G
+from nl2hltl2plan.language.grammar.phrases import COLOURS, DETERMINERS, NP, match_prep, parse_np, tokens
 from nl2hltl2plan.language.grounding import find_mentions
-from nl2hltl2plan.language.offline import grammar as G
-from nl2hltl2plan.language.offline.phrases import COLOURS, DETERMINERS, NP, match_prep, parse_np, tokens
 
 
 @dataclass

@@ -4,14 +4,14 @@ ANNOTATION_GUIDE rules), contradictions dropped, transitively reduced."""
 from __future__ import annotations
 
 from nl2hltl2plan.errors import HTTError
-from nl2hltl2plan.language.offline import grammar as G
-from nl2hltl2plan.language.offline.frames import IN_SENTENCE
-from nl2hltl2plan.language.offline.phrases import parse_np
-from nl2hltl2plan.language.offline.references import new_tasks_from_ref, ref_targets, self_state, stated_tasks
-from nl2hltl2plan.language.offline.sentences import RelationSentence
-from nl2hltl2plan.language.offline.tasks import TaskBuilder, Tasks, Unit
+from nl2hltl2plan.language.grammar import word_tables as G
+from nl2hltl2plan.language.grammar.draft_tasks import TaskBuilder, Tasks, Unit
+from nl2hltl2plan.language.grammar.frames import IN_SENTENCE
+from nl2hltl2plan.language.grammar.phrases import parse_np
+from nl2hltl2plan.language.grammar.references import new_tasks_from_ref, ref_targets, self_state, stated_tasks
+from nl2hltl2plan.language.grammar.sentences import RelationSentence
 from nl2hltl2plan.language.semantic_check import find_cycle
-from nl2hltl2plan.language.tasks import BaseTaskSpec, task_letter, transitive_reduction
+from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter, transitive_reduction
 
 Edges = set[tuple[int, int]]
 

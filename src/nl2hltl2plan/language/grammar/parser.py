@@ -25,13 +25,13 @@ from __future__ import annotations
 
 from pydantic import BaseModel, Field
 
+from nl2hltl2plan.language.grammar.draft_tasks import TaskBuilder, build_tasks
+from nl2hltl2plan.language.grammar.drafts import DraftBuilder
+from nl2hltl2plan.language.grammar.order_relations import relate
+from nl2hltl2plan.language.grammar.sentences import normalize, read_sentences
 from nl2hltl2plan.language.grounding import AffordanceLookup, Grounder, alfred_lookup
-from nl2hltl2plan.language.offline.drafts import DraftBuilder
-from nl2hltl2plan.language.offline.relations import relate
-from nl2hltl2plan.language.offline.sentences import normalize, read_sentences
-from nl2hltl2plan.language.offline.tasks import TaskBuilder, build_tasks
 from nl2hltl2plan.language.result import Ambiguity
-from nl2hltl2plan.language.tasks import BaseTaskSpec, task_letter
+from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter
 
 
 class OfflineParse(BaseModel):

@@ -5,8 +5,8 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field
 
+from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grounding import LAMPS, MOVABLE_RECEPTACLES, RECEPTACLES, Entry, find_mentions
-from nl2hltl2plan.language.offline import grammar as G
 
 _WORD = re.compile(r"[A-Za-z0-9]+(?:'[A-Za-z]+)?|,")
 DETERMINERS = {

@@ -4,13 +4,13 @@ from __future__ import annotations
 
 import re
 
-from nl2hltl2plan.language.offline import grammar as G
-from nl2hltl2plan.language.offline.clauses import split_clauses
-from nl2hltl2plan.language.offline.drafts import incomplete, joins
-from nl2hltl2plan.language.offline.frames import parse_frame
-from nl2hltl2plan.language.offline.phrases import NP, parse_np, tokens
-from nl2hltl2plan.language.offline.tasks import Draft, TaskBuilder
-from nl2hltl2plan.language.tasks import BaseTaskSpec
+from nl2hltl2plan.language.grammar import word_tables as G
+from nl2hltl2plan.language.grammar.clauses import split_clauses
+from nl2hltl2plan.language.grammar.draft_tasks import Draft, TaskBuilder
+from nl2hltl2plan.language.grammar.drafts import incomplete, joins
+from nl2hltl2plan.language.grammar.frames import parse_frame
+from nl2hltl2plan.language.grammar.phrases import NP, parse_np, tokens
+from nl2hltl2plan.language.task_specs import BaseTaskSpec
 from nl2hltl2plan.worlds.tasks import Kind
 
 

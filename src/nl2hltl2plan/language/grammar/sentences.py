@@ -5,8 +5,8 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field
 
-from nl2hltl2plan.language.offline import grammar as G
-from nl2hltl2plan.language.offline.phrases import tokens
+from nl2hltl2plan.language.grammar import word_tables as G
+from nl2hltl2plan.language.grammar.phrases import tokens
 
 
 @dataclass

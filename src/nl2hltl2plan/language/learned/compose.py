@@ -16,7 +16,7 @@ import re
 from dataclasses import dataclass
 
 from nl2hltl2plan.language.learned.faithful import FaithfulExample
-from nl2hltl2plan.language.tasks import BaseTaskSpec, task_letter
+from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter
 
 # Relation of a span to what came before it (text order): START the first; SEQ after the current step;
 # PAR in the current step (no order with it); FREE no order with anything (a chain of its own); PRE a

@@ -27,7 +27,7 @@ from dataclasses import dataclass, replace
 
 from nl2hltl2plan.language.grounding import Grounder, find_mentions
 from nl2hltl2plan.language.learned.data import Composition, Example, states_kind
-from nl2hltl2plan.language.tasks import BaseTaskSpec, task_letter
+from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter
 from nl2hltl2plan.worlds.tasks import SLOTS, slots_of
 
 _SLICE = re.compile(

@@ -20,10 +20,12 @@ from pathlib import Path
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError, WorldError
 from nl2hltl2plan.language.accounting import account
+from nl2hltl2plan.language.grammar import OfflineParse
+from nl2hltl2plan.language.grammar import parse_instruction as grammar_parse
 from nl2hltl2plan.language.grounding import AffordanceLookup, find_mentions
-from nl2hltl2plan.language.learned.model import SlotModel, SlotPrediction
 from nl2hltl2plan.language.learned.ranker import TypeRanker
 from nl2hltl2plan.language.learned.rescue import rewrite
+from nl2hltl2plan.language.learned.slot_model import SlotModel, SlotPrediction
 from nl2hltl2plan.language.learned.structure import StructureModel, load_structure
 from nl2hltl2plan.language.learned.structured import (
     StructurePolicy,
@@ -34,10 +36,8 @@ from nl2hltl2plan.language.learned.structured import (
     resolved,
     with_verb,
 )
-from nl2hltl2plan.language.offline import OfflineParse
-from nl2hltl2plan.language.offline import parse_instruction as grammar_parse
 from nl2hltl2plan.language.result import Ambiguity
-from nl2hltl2plan.language.tasks import BaseTaskSpec, task_letter
+from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter
 from nl2hltl2plan.worlds.tasks import slots_of
 
 

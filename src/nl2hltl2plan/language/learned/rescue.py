@@ -16,9 +16,9 @@ import difflib
 import re
 from functools import cache
 
+from nl2hltl2plan.language.grammar.sentences import normalize
 from nl2hltl2plan.language.grounding import camel_words, find_mentions, lexicon
-from nl2hltl2plan.language.learned.model import SlotModel, SlotPrediction
-from nl2hltl2plan.language.offline.sentences import normalize
+from nl2hltl2plan.language.learned.slot_model import SlotModel, SlotPrediction
 
 _IN_CLAUSE = re.compile(
     r"^(?:no destination for the .*? in|no object to act on in|nothing to hold under the lamp in|"

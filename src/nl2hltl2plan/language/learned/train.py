@@ -15,8 +15,8 @@ from nl2hltl2plan.language.grounding import scene_types
 from nl2hltl2plan.language.learned.data import Example, faithful, load_examples
 from nl2hltl2plan.language.learned.faithful import FaithfulExample, faithful_examples, training_example
 from nl2hltl2plan.language.learned.inference import parse_instruction
-from nl2hltl2plan.language.learned.model import SlotModel, SlotPrediction
 from nl2hltl2plan.language.learned.ranker import RankCase, TypeRanker
+from nl2hltl2plan.language.learned.slot_model import SlotModel, SlotPrediction
 from nl2hltl2plan.worlds.tasks import SLOTS
 
 

@@ -11,15 +11,15 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 from typing import Any
 
-from nl2hltl2plan.evaluation.rows import ScenarioRow
-from nl2hltl2plan.evaluation.runner import Row, Scenario
 from nl2hltl2plan.pipeline import PipelineOptions, planning_stage
 from nl2hltl2plan.planning import oracle_spec
-from nl2hltl2plan.worlds.alfred import benchmark_issues, build_benchmark_world
-from nl2hltl2plan.worlds.benchmark import gt_instance, load_gt
-from nl2hltl2plan.worlds.model import Cell, World
+from nl2hltl2plan.suites.alfred.ground_truth import gt_instance, load_gt
+from nl2hltl2plan.suites.rows import ScenarioRow
+from nl2hltl2plan.suites.runner import Row, Scenario
+from nl2hltl2plan.worlds.floor_plans import benchmark_issues, build_benchmark_world
 from nl2hltl2plan.worlds.starts import start_cells
 from nl2hltl2plan.worlds.tasks import GTInstance
+from nl2hltl2plan.worlds.world import Cell, World
 
 
 def alfred_scenarios(
@@ -75,7 +75,7 @@ def oracle_job(
 
 def preload() -> None:
     """Load the ground truth and ALFRED data once in the parent (workers are forked from it)."""
-    from nl2hltl2plan.worlds.alfred import alfred_data
+    from nl2hltl2plan.worlds.floor_plans import alfred_data
 
     load_gt()
     alfred_data()

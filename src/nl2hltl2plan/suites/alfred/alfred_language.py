@@ -21,15 +21,15 @@ from collections.abc import Callable, Iterable
 from pathlib import Path
 
 from nl2hltl2plan.errors import LLMError, Nl2Hltl2PlanError
-from nl2hltl2plan.evaluation.alfred import instance_fields
-from nl2hltl2plan.evaluation.rows import LanguageRecord, ScenarioRow
-from nl2hltl2plan.evaluation.runner import Row, Scenario, load_rows
 from nl2hltl2plan.language.llm.client import LLMClient
 from nl2hltl2plan.language.scoring import match
 from nl2hltl2plan.language.translate import top_candidates
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.pipeline import PipelineOptions, language_stage, planning_stage
-from nl2hltl2plan.worlds.alfred import build_benchmark_world
+from nl2hltl2plan.suites.alfred.alfred_bench import instance_fields
+from nl2hltl2plan.suites.rows import LanguageRecord, ScenarioRow
+from nl2hltl2plan.suites.runner import Row, Scenario, load_rows
+from nl2hltl2plan.worlds.floor_plans import build_benchmark_world
 from nl2hltl2plan.worlds.starts import start_cells
 from nl2hltl2plan.worlds.tasks import GTInstance
 

@@ -19,10 +19,10 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from nl2hltl2plan.evaluation.language_bench import STAGES  # noqa: E402
-from nl2hltl2plan.evaluation.report import paper_table1, percentile, summarize  # noqa: E402
-from nl2hltl2plan.evaluation.rows import ScenarioRow  # noqa: E402
 from nl2hltl2plan.io import save_figure, write_text  # noqa: E402
+from nl2hltl2plan.suites.alfred.alfred_language import STAGES  # noqa: E402
+from nl2hltl2plan.suites.rows import ScenarioRow  # noqa: E402
+from nl2hltl2plan.suites.summaries import paper_table1, percentile, summarize  # noqa: E402
 
 
 def _rate(num: int, den: int) -> float | None:
@@ -234,7 +234,7 @@ def plot_cost_time(summary: dict[str, Any], out: Path, rows: Sequence[ScenarioRo
 def plot_gantt_example(rows: Sequence[ScenarioRow], out: Path) -> ScenarioRow | None:
     """The Gantt chart of one successful scenario (the most robots at work, then the most actions), drawn
     from its row's events; returns that row, or None (nothing drawn) when no scenario succeeded."""
-    from nl2hltl2plan.worlds.gantt import draw_gantt_events
+    from nl2hltl2plan.present.gantt import draw_gantt_events
 
     ok = [r for r in rows if r.success and r.events]
     if not ok:

@@ -1,7 +1,7 @@
 """Measure conversion quality on the benchmark: generated base tasks vs the ground truth.
 
-    python -m nl2hltl2plan.language.measure --backend offline
-    python -m nl2hltl2plan.language.measure --backend local --sample 20 --seed 0
+    python -m nl2hltl2plan.suites.alfred.conversion --backend offline
+    python -m nl2hltl2plan.suites.alfred.conversion --backend local --sample 20 --seed 0
 
 For each instruction of benchmark/alfred_test50_gt.jsonl the language stage produces base tasks and
 `before` pairs for the instruction's scene; `scoring.match` compares them with the ground truth. The
@@ -26,7 +26,7 @@ from nl2hltl2plan.io import write_json
 from nl2hltl2plan.language.accounting import account
 from nl2hltl2plan.language.grounding import scene_types
 from nl2hltl2plan.language.scoring import match
-from nl2hltl2plan.language.tasks import BaseTaskSpec
+from nl2hltl2plan.language.task_specs import BaseTaskSpec
 
 BENCHMARK = ("benchmark", "alfred_test50_gt.jsonl")
 Generator = Callable[[str, set[str], str], tuple[list[BaseTaskSpec], list[tuple[str, str]], list[str]]]
@@ -34,7 +34,7 @@ Generator = Callable[[str, set[str], str], tuple[list[BaseTaskSpec], list[tuple[
 
 def load_benchmark() -> list[dict[str, Any]]:
     """The benchmark's instances as plain dicts (the ground truth's one loader, `worlds.benchmark`)."""
-    from nl2hltl2plan.worlds.benchmark import load_gt
+    from nl2hltl2plan.suites.alfred.ground_truth import load_gt
 
     return [g.model_dump(mode="json") for g in load_gt()]
 
@@ -45,7 +45,7 @@ def llm_generator(backend: str, argv: list[str]) -> Iterator[Generator]:
     `argv`: the LLM options of `nl2hltl2plan plan` (--base-url, --model, --cache, --batch-out ...)."""
     from nl2hltl2plan.language.backends import load_batch_answers, open_client
     from nl2hltl2plan.language.llm.batch import BatchCollector, PendingAnswer
-    from nl2hltl2plan.language.options import add_llm_arguments, llm_settings
+    from nl2hltl2plan.language.llm.llm_options import add_llm_arguments, llm_settings
     from nl2hltl2plan.language.translate import translate
 
     ap = argparse.ArgumentParser()
@@ -104,7 +104,7 @@ def grammar_generator(
     instruction: str, types: set[str], scene: str
 ) -> tuple[list[BaseTaskSpec], list[tuple[str, str]], list[str]]:
     """The `grammar` backend: the offline grammar parser alone."""
-    from nl2hltl2plan.language.offline import parse_instruction
+    from nl2hltl2plan.language.grammar import parse_instruction
 
     r = parse_instruction(instruction, types, scene, strict=False)
     return r.tasks, r.before, r.unparsed
@@ -175,7 +175,7 @@ def table(records: list[dict[str, Any]]) -> str:
 
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(
-        prog="python -m nl2hltl2plan.language.measure", description=__doc__.split("\n")[0]
+        prog="python -m nl2hltl2plan.suites.alfred.conversion", description=__doc__.split("\n")[0]
     )
     ap.add_argument("--backend", default="offline", choices=["offline", "grammar", "local", "openai"])
     ap.add_argument("--sample", type=int, default=0, help="evaluate a random sample of this many per n_base")

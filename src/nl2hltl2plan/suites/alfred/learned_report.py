@@ -1,7 +1,7 @@
 """The final report: grammar vs the default (learned) offline backend on test50, run once, and speed.
 
-    python -m nl2hltl2plan.language.learned.measure test50   # the final report only, never for tuning
-    python -m nl2hltl2plan.language.learned.measure speed [--split valid_unseen]
+    python -m nl2hltl2plan.suites.alfred.learned_report test50   # the final report only, never for tuning
+    python -m nl2hltl2plan.suites.alfred.learned_report speed [--split valid_unseen]
 
 Choices are made on the text-faithful validation (`learned.validate`); test50 is the benchmark table
 (`language.measure.table`) for both backends. `speed` times the default backend on validation
@@ -18,10 +18,16 @@ from typing import Any
 
 from nl2hltl2plan.language.grounding import scene_types
 from nl2hltl2plan.language.learned.inference import Policy, load_model, parse_instruction
-from nl2hltl2plan.language.learned.model import SlotModel
-from nl2hltl2plan.language.measure import Generator, evaluate, grammar_generator, load_benchmark, table
-from nl2hltl2plan.language.tasks import BaseTaskSpec
+from nl2hltl2plan.language.learned.slot_model import SlotModel
+from nl2hltl2plan.language.task_specs import BaseTaskSpec
 from nl2hltl2plan.language.translate import apply_choices, top_candidates
+from nl2hltl2plan.suites.alfred.conversion import (
+    Generator,
+    evaluate,
+    grammar_generator,
+    load_benchmark,
+    table,
+)
 
 
 def learned_generator(policy: Policy | None = None, model: SlotModel | None = None) -> Generator:
@@ -54,12 +60,12 @@ def speed(rows: list[dict[str, Any]]) -> str:
 
 
 def main(argv: list[str] | None = None) -> int:
-    ap = argparse.ArgumentParser(prog="python -m nl2hltl2plan.language.learned.measure")
+    ap = argparse.ArgumentParser(prog="python -m nl2hltl2plan.suites.alfred.learned_report")
     ap.add_argument("what", choices=["test50", "speed"])
     ap.add_argument("--split", default="valid_unseen", choices=["valid_seen", "valid_unseen"])
     args = ap.parse_args(argv)
     if args.what == "speed":
-        from nl2hltl2plan.language.learned.validate import validation_rows
+        from nl2hltl2plan.suites.alfred.learned_validation import validation_rows
 
         rows = validation_rows(args.split)
         print(f"{args.split}: {len(rows)} instructions; {speed(rows)}")

@@ -1,6 +1,6 @@
 """The text-faithful validation: grammar vs learned backends, per stage, on synthetic 1-4 task instructions.
 
-    python -m nl2hltl2plan.language.learned.validate [--split valid_seen] [--n 800] [--seed 0]
+    python -m nl2hltl2plan.suites.alfred.learned_validation [--split valid_seen] [--n 800] [--seed 0]
 
 Rows come from `faithful.compose_faithful` over the split's annotations re-labelled the benchmark's way
 (`faithful.text_task`), a quarter each with 1, 2, 3 and 4 base tasks. Scored with `scoring.match`
@@ -21,7 +21,7 @@ from typing import Any
 from nl2hltl2plan.language.grounding import scene_types
 from nl2hltl2plan.language.learned.data import Composition, load_examples
 from nl2hltl2plan.language.learned.faithful import FaithfulExample, compose_faithful, faithful_examples
-from nl2hltl2plan.language.measure import Generator, evaluate, grammar_generator
+from nl2hltl2plan.suites.alfred.conversion import Generator, evaluate, grammar_generator
 
 
 @lru_cache(maxsize=4)
@@ -78,7 +78,7 @@ def error_kinds(records: list[dict[str, Any]]) -> Counter[str]:
 
 def generators(model_path: Path | None = None) -> dict[str, Generator]:
     from nl2hltl2plan.language.learned.inference import POLICIES, load_model
-    from nl2hltl2plan.language.learned.measure import learned_generator
+    from nl2hltl2plan.suites.alfred.learned_report import learned_generator
 
     model = load_model(model_path)
     out: dict[str, Generator] = {"grammar": grammar_generator}
@@ -88,7 +88,7 @@ def generators(model_path: Path | None = None) -> dict[str, Generator]:
 
 
 def main(argv: list[str] | None = None) -> int:
-    ap = argparse.ArgumentParser(prog="python -m nl2hltl2plan.language.learned.validate")
+    ap = argparse.ArgumentParser(prog="python -m nl2hltl2plan.suites.alfred.learned_validation")
     ap.add_argument("--split", default="valid_seen", choices=["valid_seen", "valid_unseen"])
     ap.add_argument("--n", type=int, default=800, help="instructions (a quarter each with 1-4 tasks)")
     ap.add_argument("--seed", type=int, default=0)

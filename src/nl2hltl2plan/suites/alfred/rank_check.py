@@ -1,6 +1,6 @@
 """How often the type ranker's top candidate is the type the annotation was written for.
 
-    python -m nl2hltl2plan.language.learned.rank_check [--folds 5]
+    python -m nl2hltl2plan.suites.alfred.rank_check [--folds 5]
 
 Two checks, slot model alone against slot model + ranker, over the words that the parse leaves with
 several scene types and whose ALFRED type is among them:
@@ -63,7 +63,7 @@ def cross_validation(folds: int = 5, seed: int = 0) -> tuple[int, int, int]:
 
 
 def main(argv: list[str] | None = None) -> int:
-    ap = argparse.ArgumentParser(prog="python -m nl2hltl2plan.language.learned.rank_check")
+    ap = argparse.ArgumentParser(prog="python -m nl2hltl2plan.suites.alfred.rank_check")
     ap.add_argument("--folds", type=int, default=5)
     args = ap.parse_args(argv)
     try:

@@ -1,6 +1,6 @@
 """Validation of the structure model and of the rule that weighs it against the grammar.
 
-    python -m nl2hltl2plan.language.learned.structure_validate [--n 400] [--sets plain,heldout,...]
+    python -m nl2hltl2plan.suites.alfred.structure_validation [--n 400] [--sets plain,heldout,...]
 
 Sets (never test50, never the excluded trials):
 - `plain`: issue 23's user-style instructions (tests/language/data/trust/plain.jsonl, 6 floor plans);
@@ -55,7 +55,7 @@ CANDIDATES: dict[str, StructurePolicy | None] = {
 
 def rows_of_set(name: str, n: int) -> list[dict[str, Any]]:
     from nl2hltl2plan.language.learned.train import text_faithful_items
-    from nl2hltl2plan.language.learned.validate import validation_rows
+    from nl2hltl2plan.suites.alfred.learned_validation import validation_rows
 
     if name == "plain":
         return [json.loads(line) for line in (TRUST / "plain.jsonl").read_text().splitlines() if line]
@@ -113,7 +113,7 @@ def score_set(rows: list[dict[str, Any]]) -> dict[str, dict[Any, list[int]]]:
 
 
 def main(argv: list[str] | None = None) -> int:
-    ap = argparse.ArgumentParser(prog="python -m nl2hltl2plan.language.learned.structure_validate")
+    ap = argparse.ArgumentParser(prog="python -m nl2hltl2plan.suites.alfred.structure_validation")
     ap.add_argument("--n", type=int, default=400)
     ap.add_argument("--sets", default="plain,heldout_unseen,trainstyle_unseen,faithful_seen,faithful_unseen")
     args = ap.parse_args(argv)

@@ -21,14 +21,19 @@ from typing import Any
 from pydantic import BaseModel
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
-from nl2hltl2plan.evaluation.handover_llm import llm_handover
-from nl2hltl2plan.evaluation.report import mean_std, pm
 from nl2hltl2plan.io import write_json, write_text
 from nl2hltl2plan.language.backends import Backend
 from nl2hltl2plan.logic import spot_backend as sb
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.planning.coop import MAX_EXPANSIONS, CoopResult, coop_plan
-from nl2hltl2plan.worlds.handover import HandoverWorld, check_handover, execute_handover, random_instance
+from nl2hltl2plan.suites.handover.handover_llm import llm_handover
+from nl2hltl2plan.suites.summaries import mean_std, pm
+from nl2hltl2plan.worlds.handover_world import (
+    HandoverWorld,
+    check_handover,
+    execute_handover,
+    random_instance,
+)
 
 DEFAULT_INSTANCES = 10
 
@@ -47,7 +52,7 @@ class HandoverTask(BaseModel):
 
 
 def load_tasks() -> list[HandoverTask]:
-    text = resources.files("nl2hltl2plan.evaluation").joinpath("data/handover_tasks.json").read_text()
+    text = resources.files("nl2hltl2plan.suites.handover").joinpath("handover_tasks.json").read_text()
     return [HandoverTask.model_validate(t) for t in json.loads(text)["tasks"]]
 
 
@@ -265,7 +270,8 @@ def run_bench(
 
 def draw_pictures(tasks: list[HandoverTask], seed: int, out: Path) -> list[str]:
     """Both layouts, and a plan with its handovers for the first task of each configuration."""
-    from nl2hltl2plan.worlds.handover import draw_handover, handover_world
+    from nl2hltl2plan.present.handover_pictures import draw_handover
+    from nl2hltl2plan.worlds.handover_world import handover_world
 
     names = []
     for config in ("square", "line"):

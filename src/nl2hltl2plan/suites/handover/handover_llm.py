@@ -17,9 +17,9 @@ from pydantic import BaseModel, Field
 
 from nl2hltl2plan.errors import LLMError, Nl2Hltl2PlanError, WorldError
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
-from nl2hltl2plan.worlds.handover import ARMS, HandoverWorld, check_handover, execute_handover
-from nl2hltl2plan.worlds.model import Cell
+from nl2hltl2plan.worlds.handover_world import ARMS, HandoverWorld, check_handover, execute_handover
 from nl2hltl2plan.worlds.plan import Plan, RobotPlan, Step
+from nl2hltl2plan.worlds.world import Cell
 
 
 class ArmCall(BaseModel):

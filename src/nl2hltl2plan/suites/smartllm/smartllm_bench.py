@@ -32,18 +32,24 @@ from typing import Any
 import networkx as nx
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
-from nl2hltl2plan.evaluation.smartllm_script import script_metrics
 from nl2hltl2plan.io import atomic_path, write_json, write_text
 from nl2hltl2plan.language.backends import Backend
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.pipeline import PipelineOptions, planning_stage
 from nl2hltl2plan.planning.objective import ObjectiveName
+from nl2hltl2plan.suites.smartllm.smartllm_script import script_metrics
+from nl2hltl2plan.suites.smartllm.smartllm_tasks import (
+    SmartTask,
+    load_tasks,
+    oracle_spec,
+    start_cells,
+    world_for,
+)
 from nl2hltl2plan.worlds.checker import final_conditions
 from nl2hltl2plan.worlds.effects import condition_holds
-from nl2hltl2plan.worlds.model import CELL_M, World
 from nl2hltl2plan.worlds.simulator import Execution, SimState
-from nl2hltl2plan.worlds.smartllm import SmartTask, load_tasks, oracle_spec, start_cells, world_for
 from nl2hltl2plan.worlds.team import smartllm_team, spec_atoms
+from nl2hltl2plan.worlds.world import CELL_M, World
 
 METRICS = ("SR", "TC", "GCR", "RU", "Exe")
 SpecMaker = Callable[[SmartTask, World], tuple[HierarchicalSpec, list[str]]]
@@ -51,7 +57,7 @@ SpecMaker = Callable[[SmartTask, World], tuple[HierarchicalSpec, list[str]]]
 
 def published() -> dict[str, Any]:
     """SMART-LLM's published numbers with their source (evaluation/data/smartllm_published.json)."""
-    text = resources.files("nl2hltl2plan.evaluation").joinpath("data/smartllm_published.json").read_text()
+    text = resources.files("nl2hltl2plan.suites.smartllm").joinpath("smartllm_published.json").read_text()
     return json.loads(text)
 
 

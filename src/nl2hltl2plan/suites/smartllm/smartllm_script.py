@@ -26,8 +26,8 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from nl2hltl2plan.worlds.effects import COOKED
-from nl2hltl2plan.worlds.model import World
 from nl2hltl2plan.worlds.simulator import HOT, ON, OPEN, PRESENT, Snapshot
+from nl2hltl2plan.worlds.world import World
 
 Entry = tuple[str, str | None, tuple[str, ...]]  # raw name, state, contains
 

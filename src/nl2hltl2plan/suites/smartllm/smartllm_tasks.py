@@ -35,8 +35,8 @@ from nl2hltl2plan.io import read_jsonl
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.logic.relations import compile_relations
 from nl2hltl2plan.worlds import effects
-from nl2hltl2plan.worlds.alfred import affordance_table, alfred_data, default_trial, load_floor_plan
-from nl2hltl2plan.worlds.model import KNIFE_TYPES, Cell, World, WorldObject, sliced_type
+from nl2hltl2plan.worlds.floor_plans import affordance_table, alfred_data, default_trial, load_floor_plan
+from nl2hltl2plan.worlds.world import KNIFE_TYPES, Cell, World, WorldObject, sliced_type
 
 ALIASES = {"trash": "GarbageCan", "garbage": "GarbageCan", "cloth": "Cloth", "cabinet": "Cabinet"}
 ANCHORS = {

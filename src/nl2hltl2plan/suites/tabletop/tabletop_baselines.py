@@ -25,10 +25,10 @@ from pydantic import BaseModel, Field
 from nl2hltl2plan.errors import LLMError, Nl2Hltl2PlanError, WorldError
 from nl2hltl2plan.language.grounding import camel_words
 from nl2hltl2plan.worlds.checker import check
-from nl2hltl2plan.worlds.model import Cell, World
 from nl2hltl2plan.worlds.plan import Plan, RobotPlan, Step
 from nl2hltl2plan.worlds.simulator import execute
 from nl2hltl2plan.worlds.tasks import GTInstance
+from nl2hltl2plan.worlds.world import Cell, World
 
 Call = tuple[str, str, str | None]  # (verb "pick" | "place", object id, plate id or None)
 
@@ -109,7 +109,7 @@ def nearest_first(
 ) -> BaselineOutcome:
     """Greedy: from where the arm is, take the nearest item (grid path) among those whose ordered
     predecessors (`before`, between the tasks' ids) are placed, and put it into its plate."""
-    from nl2hltl2plan.language.tasks import transitive_closure
+    from nl2hltl2plan.language.task_specs import transitive_closure
 
     closure = transitive_closure(before, [t.id for t in tasks])
     left = {

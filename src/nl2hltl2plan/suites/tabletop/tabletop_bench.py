@@ -19,15 +19,20 @@ from typing import Any
 from pydantic import BaseModel
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
-from nl2hltl2plan.evaluation.baselines import BaselineOutcome, llm_planner, mention_order, nearest_first
-from nl2hltl2plan.evaluation.report import mean_std, pm
 from nl2hltl2plan.io import write_json, write_text
+from nl2hltl2plan.suites.summaries import mean_std, pm
+from nl2hltl2plan.suites.tabletop.tabletop_baselines import (
+    BaselineOutcome,
+    llm_planner,
+    mention_order,
+    nearest_first,
+)
 from nl2hltl2plan.worlds.checker import check
-from nl2hltl2plan.worlds.model import World
 from nl2hltl2plan.worlds.plan import Plan
 from nl2hltl2plan.worlds.simulator import execute
-from nl2hltl2plan.worlds.tabletop import CELL_CM, HOME, tabletop_world
+from nl2hltl2plan.worlds.tabletop_world import CELL_CM, HOME, tabletop_world
 from nl2hltl2plan.worlds.tasks import GTInstance
+from nl2hltl2plan.worlds.world import World
 
 DEFAULT_INSTANCES = 25
 PLAN_TIMEOUT_S = 60.0
@@ -54,7 +59,7 @@ class TabletopTask(BaseModel):
 
 def load_tasks() -> list[TabletopTask]:
     """The paper's four tabletop tasks with their ground truth and the paper's Table II numbers."""
-    text = resources.files("nl2hltl2plan.evaluation").joinpath("data/tabletop_tasks.json").read_text()
+    text = resources.files("nl2hltl2plan.suites.tabletop").joinpath("tabletop_tasks.json").read_text()
     return [TabletopTask.model_validate(t) for t in json.loads(text)["tasks"]]
 
 
@@ -194,7 +199,7 @@ def run_task(
 
 def load_rephrasings() -> dict[str, Any]:
     """The user-study rephrasings (four styles per task, data/tabletop_rephrasings.json)."""
-    text = resources.files("nl2hltl2plan.evaluation").joinpath("data/tabletop_rephrasings.json").read_text()
+    text = resources.files("nl2hltl2plan.suites.tabletop").joinpath("tabletop_rephrasings.json").read_text()
     data: dict[str, Any] = json.loads(text)
     return data
 
@@ -274,7 +279,7 @@ def run_bench(
 
 def draw_comparison(task: TabletopTask, seed: int, path: Path) -> Path:
     """Trajectories of ours and of mention order on instance 0 of `task` (the paper's Fig. 5)."""
-    from nl2hltl2plan.worlds.tabletop import draw_trajectories
+    from nl2hltl2plan.present.tabletop_pictures import draw_trajectories
 
     world = tabletop_world(instance_seed(seed, task.id, 0))
     o = run_ours(task, world)
