@@ -18,8 +18,7 @@ from collections import Counter
 from pathlib import Path
 
 from nl2hltl2plan.language.learned.inference import Policy
-from nl2hltl2plan.suites.alfred.conversion import evaluate
-from nl2hltl2plan.suites.alfred.learned_report import learned_generator
+from nl2hltl2plan.suites.alfred.conversion import evaluate, learned_generator
 from nl2hltl2plan.suites.alfred.learned_validation import validation_rows
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))

@@ -148,7 +148,7 @@ def test_grounding_ranks_only_scene_types_and_reports_close_calls() -> None:
 
 def test_benchmarks_take_the_top_candidate_of_each_ambiguous_word() -> None:
     from nl2hltl2plan.language.translate import top_candidates
-    from nl2hltl2plan.suites.alfred.learned_report import learned_generator
+    from nl2hltl2plan.suites.alfred.conversion import learned_generator
 
     room = {"Apple", "DiningTable", "SideTable", "CounterTop"}
     r = parse_instruction("Put the apple on the table.", room, "test")

@@ -19,7 +19,7 @@ import sys
 import time
 from collections.abc import Callable, Iterator
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.io import write_json
@@ -27,6 +27,10 @@ from nl2hltl2plan.language.accounting import account
 from nl2hltl2plan.language.grounding import scene_types
 from nl2hltl2plan.language.scoring import match
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
+
+if TYPE_CHECKING:
+    from nl2hltl2plan.language.learned.inference import Policy
+    from nl2hltl2plan.language.learned.slot_model import SlotModel
 
 BENCHMARK = ("benchmark", "alfred_test50_gt.jsonl")
 Generator = Callable[[str, set[str], str], tuple[list[BaseTaskSpec], list[tuple[str, str]], list[str]]]
@@ -108,6 +112,22 @@ def grammar_generator(
 
     r = parse_instruction(instruction, types, scene, strict=False)
     return r.tasks, r.before, r.unparsed
+
+
+def learned_generator(policy: Policy | None = None, model: SlotModel | None = None) -> Generator:
+    """The default backend as the benchmarks run it: an ambiguous word takes its top-ranked type."""
+
+    from nl2hltl2plan.language.learned.inference import parse_instruction
+    from nl2hltl2plan.language.translate import apply_choices, top_candidates
+
+    def generate(
+        instruction: str, types: set[str], scene: str
+    ) -> tuple[list[BaseTaskSpec], list[tuple[str, str]], list[str]]:
+        r = parse_instruction(instruction, types, scene, strict=False, policy=policy, model=model)
+        apply_choices(r, top_candidates(r.ambiguities))
+        return r.tasks, r.before, r.unparsed
+
+    return generate
 
 
 def evaluate(rows: list[dict[str, Any]], generate: Generator, progress: bool = False) -> list[dict[str, Any]]:

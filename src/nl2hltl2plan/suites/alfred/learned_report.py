@@ -17,30 +17,14 @@ import time
 from typing import Any
 
 from nl2hltl2plan.language.grounding import scene_types
-from nl2hltl2plan.language.learned.inference import Policy, load_model, parse_instruction
-from nl2hltl2plan.language.learned.slot_model import SlotModel
-from nl2hltl2plan.language.task_specs import BaseTaskSpec
-from nl2hltl2plan.language.translate import apply_choices, top_candidates
+from nl2hltl2plan.language.learned.inference import load_model
 from nl2hltl2plan.suites.alfred.conversion import (
-    Generator,
     evaluate,
     grammar_generator,
+    learned_generator,
     load_benchmark,
     table,
 )
-
-
-def learned_generator(policy: Policy | None = None, model: SlotModel | None = None) -> Generator:
-    """The default backend as the benchmarks run it: an ambiguous word takes its top-ranked type."""
-
-    def generate(
-        instruction: str, types: set[str], scene: str
-    ) -> tuple[list[BaseTaskSpec], list[tuple[str, str]], list[str]]:
-        r = parse_instruction(instruction, types, scene, strict=False, policy=policy, model=model)
-        apply_choices(r, top_candidates(r.ambiguities))
-        return r.tasks, r.before, r.unparsed
-
-    return generate
 
 
 def speed(rows: list[dict[str, Any]]) -> str:

@@ -21,7 +21,7 @@ from typing import Any
 from nl2hltl2plan.language.grounding import scene_types
 from nl2hltl2plan.language.learned.data import Composition, load_examples
 from nl2hltl2plan.language.learned.faithful import FaithfulExample, compose_faithful, faithful_examples
-from nl2hltl2plan.suites.alfred.conversion import Generator, evaluate, grammar_generator
+from nl2hltl2plan.suites.alfred.conversion import Generator, evaluate, grammar_generator, learned_generator
 
 
 @lru_cache(maxsize=4)
@@ -78,7 +78,6 @@ def error_kinds(records: list[dict[str, Any]]) -> Counter[str]:
 
 def generators(model_path: Path | None = None) -> dict[str, Generator]:
     from nl2hltl2plan.language.learned.inference import POLICIES, load_model
-    from nl2hltl2plan.suites.alfred.learned_report import learned_generator
 
     model = load_model(model_path)
     out: dict[str, Generator] = {"grammar": grammar_generator}
