@@ -109,7 +109,7 @@ def outcome(gt: GTInstance, backend: str = "offline") -> tuple[str, str]:
         return "refused", str(exc)
     if res.partial:
         return "partial", "; ".join(res.unparsed)
-    apply_choices(res, top_candidates(res.ambiguities))
+    res = apply_choices(res, top_candidates(res.ambiguities))
     verdict = match(res.tasks, res.before, [t.model_dump() for t in gt.tasks], gt.before, strict=False)
     if gt.feasible and verdict.order_ok:
         return "converted", ""
@@ -149,7 +149,7 @@ def validation(split: str, n: int, seed: int) -> None:
     for row in validation_rows(split, n, seed):
         try:
             r = parse_instruction(row["instruction"], scene_types(row["scene"]), row["scene"], strict=False)
-            apply_choices(r, top_candidates(r.ambiguities))
+            r = apply_choices(r, top_candidates(r.ambiguities))
             flagged = bool(r.unparsed or account(row["instruction"], r.tasks, r.before))
             ok = match(r.tasks, r.before, row["tasks"], row["before"], strict=True).order_ok
         except Nl2Hltl2PlanError:

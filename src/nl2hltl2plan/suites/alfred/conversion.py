@@ -124,7 +124,7 @@ def learned_generator(policy: Policy | None = None, model: SlotModel | None = No
         instruction: str, types: set[str], scene: str
     ) -> tuple[list[BaseTaskSpec], list[tuple[str, str]], list[str]]:
         r = parse_instruction(instruction, types, scene, strict=False, policy=policy, model=model)
-        apply_choices(r, top_candidates(r.ambiguities))
+        r = apply_choices(r, top_candidates(r.ambiguities))
         return r.tasks, r.before, r.unparsed
 
     return generate

@@ -30,6 +30,7 @@ from nl2hltl2plan.language.learned.compose import HELDOUT_STYLE, TRAIN_STYLE, sy
 from nl2hltl2plan.language.learned.inference import (
     DEFAULT_POLICY,
     LearnedParse,
+    ParseContext,
     grammar_first_reading,
     load_model,
     structure_reading,
@@ -73,7 +74,7 @@ def rows_of_set(name: str, n: int) -> list[dict[str, Any]]:
 def _ok(parse: LearnedParse, row: dict[str, Any]) -> bool:
     if parse.unparsed or not parse.tasks:
         return False
-    apply_choices(parse, top_candidates(parse.ambiguities))
+    parse = apply_choices(parse, top_candidates(parse.ambiguities))
     try:
         if account(row["instruction"], parse.tasks, parse.before):
             return False
@@ -95,12 +96,12 @@ def score_set(rows: list[dict[str, Any]]) -> dict[str, dict[Any, list[int]]]:
     model, structure = load_model(), load_structure()
     out: dict[str, dict[Any, list[int]]] = {name: {} for name in CANDIDATES}
     for row in rows:
-        types = scene_types(row["scene"])
+        ctx = ParseContext(scene_types(row["scene"]), row["scene"], None, DEFAULT_POLICY, model)
         try:
-            g = grammar_first_reading(row["instruction"], types, row["scene"], None, DEFAULT_POLICY, model)
+            g = grammar_first_reading(row["instruction"], ctx)
         except Nl2Hltl2PlanError:  # a refusal (e.g. a contradictory order): a failure, whatever the model
             g = LearnedParse(instruction=row["instruction"], unparsed=["refused"])
-        s = structure_reading(row["instruction"], types, row["scene"], None, DEFAULT_POLICY, model, structure)
+        s = structure_reading(row["instruction"], ctx, structure)
         right = {"grammar": _ok(g.model_copy(deep=True), row), "neither": False}
         right["model"] = s is not None and _ok(s[0].model_copy(deep=True), row)
         for name, rule in CANDIDATES.items():
