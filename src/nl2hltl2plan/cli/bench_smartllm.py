@@ -75,11 +75,10 @@ def run(args: argparse.Namespace) -> int:
         if args.oracle:
             maker, label = oracle_maker, "oracle"
         else:
-            client = None
-            if args.llm != "offline":
-                from nl2hltl2plan.language.backends import open_client
+            from nl2hltl2plan.language.backends import open_client
 
-                client = stack.enter_context(open_client(args.llm, llm_settings(args)))
+            # None for the backends that need no LLM (`parsers.PARSERS`)
+            client = stack.enter_context(open_client(args.llm, llm_settings(args)))
             maker, label = llm_maker(args.llm, client), f"language backend {args.llm}"
         summary = run_bench(
             args.out, maker, label, args.timeout, progress, args.objective, _masses(args.masses)

@@ -18,6 +18,7 @@ cluster (`address`), so an evaluation can outgrow one machine.
 
 from __future__ import annotations
 
+import functools
 import json
 import time
 from collections.abc import Callable, Iterable
@@ -37,7 +38,7 @@ from nl2hltl2plan.suites.runner import (
     stderr_note,
 )
 
-ENGINES = ("local", "ray")
+ENGINES = ("local", "ray")  # `run_with_engine`'s names for run_scenarios and run_scenarios_ray
 
 
 class EngineError(Nl2Hltl2PlanError):
@@ -171,10 +172,12 @@ def run_with_engine(
 ) -> list[Row]:
     """`runner.run_scenarios` (engine "local") or `run_scenarios_ray` (engine "ray", `address` to join
     a running cluster); the other keyword arguments are those of `run_scenarios`."""
-    if engine == "local":
-        if address:
-            raise EngineError("--address needs --engine ray")
-        return run_scenarios(scenarios, job, out, **kwargs)
-    if engine == "ray":
-        return run_scenarios_ray(scenarios, job, out, address=address, **kwargs)
-    raise EngineError(f"unknown engine {engine!r}; expected one of {', '.join(ENGINES)}")
+    runners: dict[str, Callable[..., list[Row]]] = {
+        "local": run_scenarios,
+        "ray": functools.partial(run_scenarios_ray, address=address),
+    }
+    if engine not in runners:
+        raise EngineError(f"unknown engine {engine!r}; expected one of {', '.join(ENGINES)}")
+    if address and runners[engine] is run_scenarios:
+        raise EngineError("--address needs --engine ray")
+    return runners[engine](scenarios, job, out, **kwargs)

@@ -214,9 +214,9 @@ def main(argv: list[str] | None = None) -> int:
             grp = [r for r in rows if r["n_base"] == g]
             picked += rng.sample(grp, min(args.sample, len(grp)))
         rows = picked
-    if args.backend in ("offline", "grammar"):
-        generate: Generator = offline_generator if args.backend == "offline" else grammar_generator
-        records = evaluate(rows, generate, progress=sys.stderr.isatty())
+    parsers: dict[str, Generator] = {"offline": offline_generator, "grammar": grammar_generator}
+    if args.backend in parsers:  # the backends that need no LLM
+        records = evaluate(rows, parsers[args.backend], progress=sys.stderr.isatty())
     else:
         with llm_generator(args.backend, rest) as generate:
             records = evaluate(rows, generate, progress=sys.stderr.isatty())
