@@ -211,8 +211,8 @@ def _ask_on_terminal(ambiguities: list[Any]) -> dict[str, str]:
 
 
 def _print_human(outcome: Any) -> None:
+    from nl2hltl2plan.domain.task_kinds import SLOTS
     from nl2hltl2plan.present.htt_pictures import htt_lines
-    from nl2hltl2plan.worlds.tasks import SLOTS
 
     lang, r = outcome.language, outcome.result
     print(f"backend: {lang.backend}   world: {outcome.world.name}   team: {outcome.team}")

@@ -25,10 +25,10 @@ from importlib import resources
 
 import networkx as nx
 
+from nl2hltl2plan.domain.task_kinds import APPLIANCE, slots_of
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.grounding import Mention, camel_words, find_mentions, lexicon, tokens
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
-from nl2hltl2plan.worlds.tasks import APPLIANCE, slots_of
 from nl2hltl2plan.worlds.world import KNIFE_TYPES
 
 # the appliances a kind of task implies, beyond the destination ("heat it on the stove")

@@ -14,7 +14,8 @@ from typing import TypeVar
 
 import networkx as nx
 
-from nl2hltl2plan.worlds.tasks import KINDS, BaseTask, Kind
+from nl2hltl2plan.domain.task_kinds import KINDS, Kind
+from nl2hltl2plan.worlds.tasks import BaseTask
 
 N = TypeVar("N", bound=Hashable)
 

@@ -24,6 +24,7 @@ from collections import Counter
 from collections.abc import Callable, Iterator
 from typing import Literal, Protocol, Self, TypeVar
 
+from nl2hltl2plan.domain.task_kinds import SLOTS
 from nl2hltl2plan.errors import HTTError, LLMError, Nl2Hltl2PlanError, WorldError
 from nl2hltl2plan.language import handover_reading, stages
 from nl2hltl2plan.language.accounting import account, take_every_instance
@@ -41,7 +42,7 @@ from nl2hltl2plan.language.suggest import not_understood, suggestion_text
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter, transitive_reduction
 from nl2hltl2plan.logic.hierarchical import LeafOrFormula
 from nl2hltl2plan.logic.relations import compile_relations
-from nl2hltl2plan.worlds.tasks import SLOTS, demand_of
+from nl2hltl2plan.worlds.tasks import demand_of
 from nl2hltl2plan.worlds.world import World
 
 LtlSource = Literal["compiler", "llm", "learned"]

@@ -9,12 +9,13 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
+from nl2hltl2plan.domain.task_kinds import Goal
 from nl2hltl2plan.errors import WorldError
 from nl2hltl2plan.worlds.checker import CheckResult, check
 from nl2hltl2plan.worlds.demo import demo_world
 from nl2hltl2plan.worlds.plan import Plan, RobotPlan, Step
 from nl2hltl2plan.worlds.simulator import Event, Execution, SimState, execute
-from nl2hltl2plan.worlds.tasks import BaseTask, Goal, GTInstance
+from nl2hltl2plan.worlds.tasks import BaseTask, GTInstance
 from nl2hltl2plan.worlds.world import CELL_M, VISIBILITY_M, Affordances, Cell, World, WorldObject
 
 __all__ = [

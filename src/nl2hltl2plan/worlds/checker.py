@@ -21,8 +21,9 @@ import itertools
 
 from pydantic import BaseModel
 
+from nl2hltl2plan.domain.task_kinds import Goal
 from nl2hltl2plan.worlds.simulator import CLEAN, COLD, HOT, ON, PRESENT, Execution, Snapshot, _compiled
-from nl2hltl2plan.worlds.tasks import Goal, GTInstance
+from nl2hltl2plan.worlds.tasks import GTInstance
 
 _STATE_FLAG = {"clean_place": CLEAN, "heat_place": HOT, "cool_place": COLD}
 _SEARCH_BUDGET = 200_000

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from nl2hltl2plan.domain.task_kinds import Kind
 from nl2hltl2plan.errors import WorldError
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.frames import (
@@ -20,7 +21,6 @@ from nl2hltl2plan.language.grammar.frames import (
 from nl2hltl2plan.language.grammar.phrases import DETERMINERS, FILLER, NP, parse_np, tokens
 from nl2hltl2plan.language.grounding import AffordanceLookup, Grounder, Roles, find_mentions
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
-from nl2hltl2plan.worlds.tasks import Kind
 
 
 @dataclass

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import re
 
+from nl2hltl2plan.domain.task_kinds import Kind
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.clauses import split_clauses
 from nl2hltl2plan.language.grammar.draft_tasks import Draft, TaskBuilder
@@ -11,7 +12,6 @@ from nl2hltl2plan.language.grammar.drafts import incomplete, joins
 from nl2hltl2plan.language.grammar.frames import parse_frame
 from nl2hltl2plan.language.grammar.phrases import NP, parse_np, tokens
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
-from nl2hltl2plan.worlds.tasks import Kind
 
 
 def _ref_parts(ref: str) -> list[str]:

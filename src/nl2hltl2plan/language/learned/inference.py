@@ -18,6 +18,7 @@ from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
 
+from nl2hltl2plan.domain.task_kinds import slots_of
 from nl2hltl2plan.errors import Nl2Hltl2PlanError, WorldError
 from nl2hltl2plan.language.accounting import account
 from nl2hltl2plan.language.grammar import OfflineParse
@@ -38,7 +39,6 @@ from nl2hltl2plan.language.learned.structured import (
 )
 from nl2hltl2plan.language.result import Ambiguity
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter
-from nl2hltl2plan.worlds.tasks import slots_of
 
 
 @dataclass(frozen=True)

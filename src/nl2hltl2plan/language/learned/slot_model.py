@@ -24,11 +24,11 @@ from typing import Any
 import numpy as np
 
 from nl2hltl2plan.config import user_cache_dir
+from nl2hltl2plan.domain.task_kinds import SLOTS
 from nl2hltl2plan.errors import DataError
 from nl2hltl2plan.io import atomic_path, require_regular_file
 from nl2hltl2plan.language.learned.data import Example, states_kind
 from nl2hltl2plan.language.learned.ranker import TypeRanker
-from nl2hltl2plan.worlds.tasks import SLOTS
 
 ARTIFACT = "slot_model.npz"
 

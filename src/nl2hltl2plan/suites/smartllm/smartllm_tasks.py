@@ -378,9 +378,9 @@ def oracle_spec(task: SmartTask, world: World) -> tuple[HierarchicalSpec, list[s
 
 
 def _flat(seq: list[str]) -> str:
-    from nl2hltl2plan.worlds.tasks import sequence_formula
+    from nl2hltl2plan.logic.action_sequences import sequences_formula
 
-    return sequence_formula(seq)
+    return sequences_formula([seq])
 
 
 def _orderings(tags: dict[str, list[str]]) -> list[tuple[str, str]]:
