@@ -23,9 +23,9 @@ from typing import Any
 
 from reproduce_results import commit, machine
 
+from nl2hltl2plan.config.llm_settings import LLMSettings
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.language.backends import open_client
-from nl2hltl2plan.language.llm.settings import LLMSettings
 from nl2hltl2plan.pipeline import PipelineOptions, language_stage
 from nl2hltl2plan.suites.handover import handover_bench as handover
 from nl2hltl2plan.suites.handover.handover_llm import llm_handover

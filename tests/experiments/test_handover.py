@@ -253,8 +253,8 @@ def _calls_from(plan) -> list[dict]:
 
 
 def test_llm_planner_baseline_for_handover_against_a_stub(stub_llm):
+    from nl2hltl2plan.config.llm_settings import LLMSettings
     from nl2hltl2plan.language.llm.client import LLMClient
-    from nl2hltl2plan.language.llm.settings import LLMSettings
     from nl2hltl2plan.planning.coop import coop_plan
     from nl2hltl2plan.suites.handover.handover_bench import instance, load_tasks
     from nl2hltl2plan.suites.handover.handover_llm import llm_handover

@@ -8,9 +8,9 @@ import json
 import pytest
 from rephrasings import HARDER, REPHRASINGS
 
+from nl2hltl2plan.config.llm_settings import LLMSettings
 from nl2hltl2plan.errors import WorldError
 from nl2hltl2plan.language.llm.client import LLMClient
-from nl2hltl2plan.language.llm.settings import LLMSettings
 from nl2hltl2plan.language.task_specs import transitive_closure
 from nl2hltl2plan.language.translate import translate
 from nl2hltl2plan.suites.tabletop.tabletop_baselines import LLMPlanAnswer, llm_planner, parse_llm_answer

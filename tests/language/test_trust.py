@@ -139,8 +139,8 @@ def test_dead_llm_makes_scenarios_errored_and_resume_reruns_them(tmp_path, stub,
 
 def test_a_dead_llm_baseline_is_errored_not_a_failure(stub):
     from nl2hltl2plan.cli.bench_experiments import _errored_exit
+    from nl2hltl2plan.config.llm_settings import LLMSettings
     from nl2hltl2plan.language.llm.client import LLMClient
-    from nl2hltl2plan.language.llm.settings import LLMSettings
     from nl2hltl2plan.suites.tabletop.tabletop_baselines import llm_planner
     from nl2hltl2plan.suites.tabletop.tabletop_bench import HOME, _row, load_tasks, tabletop_world
 
@@ -156,8 +156,8 @@ def test_a_dead_llm_baseline_is_errored_not_a_failure(stub):
 
 def test_check_one_judges_an_llm_backend_too(stub):
     """An OpenAI-compatible server that drops the coffee: the LLM backend's result is partial as well."""
+    from nl2hltl2plan.config.llm_settings import LLMSettings
     from nl2hltl2plan.language.llm.client import LLMClient
-    from nl2hltl2plan.language.llm.settings import LLMSettings
     from nl2hltl2plan.language.translate import translate
 
     answer = {
@@ -211,8 +211,8 @@ def test_state_clauses_are_read_only_for_objects_that_take_the_state():
 
 
 def test_an_llm_backend_can_state_a_skill_the_world_has(stub):
+    from nl2hltl2plan.config.llm_settings import LLMSettings
     from nl2hltl2plan.language.llm.client import LLMClient
-    from nl2hltl2plan.language.llm.settings import LLMSettings
     from nl2hltl2plan.language.translate import translate
 
     answer = {

@@ -1,4 +1,6 @@
-"""Settings read from the environment, in one place.
+"""Settings read from the environment, in one place: this package (`config.llm_settings` holds the LLM's
+and the learned translator's, as pydantic-settings models; nothing else in the package reads the
+environment).
 
 `NL2HLTL2PLAN_DATA` points at the shared data folder (ALFRED layouts, trials, benchmark ground
 truth...). Default: `../shared/data` relative to the repository root, falling back to the current
@@ -16,12 +18,19 @@ from pathlib import Path
 from nl2hltl2plan.errors import DataError
 
 DATA_ENV = "NL2HLTL2PLAN_DATA"
+DEBUG_ENV = "NL2HLTL2PLAN_DEBUG"  # set: an internal error shows its traceback
+MAX_SECONDS = 7 * 24 * 3600.0  # a week: above any sensible time limit, below what timers accept
 # what the data folder must hold, named in every message about a missing folder or file
 DATA_CONTENTS = (
     "alfred/ (layouts/, trials.jsonl.gz, affordances), alfred_multiagent/, benchmark/ (ground truth), "
     "smartllm/ and nl2ltl/ — see the data README"
 )
-_REPO_ROOT = Path(__file__).resolve().parents[2]
+_REPO_ROOT = Path(__file__).resolve().parents[3]  # config/__init__.py -> the repository
+
+
+def debug() -> bool:
+    """Whether NL2HLTL2PLAN_DEBUG asks for tracebacks of internal errors."""
+    return bool(os.environ.get(DEBUG_ENV))
 
 
 def user_cache_dir() -> Path:

@@ -19,7 +19,8 @@
 | `NL2HLTL2PLAN_TRANSLATOR_BASE_URL` | server of the learned LTL translator (`--ltl learned`) | none |
 | `NL2HLTL2PLAN_TRANSLATOR_MODEL` / `_API_KEY` | its model name and key | `translator` / none |
 
-The data folder (`NL2HLTL2PLAN_DATA`) and the user's cache folder are read in `config`.
+The data folder (`NL2HLTL2PLAN_DATA`), the user's cache folder and `NL2HLTL2PLAN_DEBUG` are read in
+`config` itself.
 """
 
 from __future__ import annotations
@@ -31,8 +32,7 @@ from urllib.parse import urlsplit
 from pydantic import AliasChoices, Field, ValidationError, field_validator
 from pydantic_settings import BaseSettings, SettingsConfigDict
 
-from nl2hltl2plan.argtypes import MAX_SECONDS
-from nl2hltl2plan.config import user_cache_dir
+from nl2hltl2plan.config import MAX_SECONDS, user_cache_dir
 from nl2hltl2plan.errors import LLMError
 
 ENV = "NL2HLTL2PLAN_LLM_"

@@ -6,10 +6,10 @@ import contextlib
 from collections.abc import Callable, Iterator
 from typing import Literal, get_args
 
+from nl2hltl2plan.config.llm_settings import LLMSettings
 from nl2hltl2plan.errors import LLMError
 from nl2hltl2plan.language.llm.batch import BatchCollector
 from nl2hltl2plan.language.llm.client import LLMClient
-from nl2hltl2plan.language.llm.settings import LLMSettings
 from nl2hltl2plan.language.parsers import PARSERS  # the backends that need no LLM
 
 Backend = Literal["offline", "learned", "grammar", "local", "openai"]

@@ -47,8 +47,8 @@ def team_of(req: PlanRequest) -> Team:
 
 def plan_request(req: PlanRequest, on_progress: Any = None) -> Outcome:
     """Run the pipeline for one request (in this process)."""
+    from nl2hltl2plan.config.llm_settings import LLMSettings
     from nl2hltl2plan.language.backends import open_client
-    from nl2hltl2plan.language.llm.settings import LLMSettings
 
     options = PipelineOptions(
         backend=req.backend,

@@ -1,12 +1,12 @@
 """The LLM client's command-line options, declared once for every command and script that talks to an
-LLM (each option can also be set by its NL2HLTL2PLAN_LLM_* variable, see `llm/settings.py`)."""
+LLM (each option can also be set by its NL2HLTL2PLAN_LLM_* variable, see `config.llm_settings`)."""
 
 from __future__ import annotations
 
 import argparse
 
 from nl2hltl2plan.argtypes import int_in, seconds
-from nl2hltl2plan.language.llm.settings import LLMSettings
+from nl2hltl2plan.config.llm_settings import LLMSettings
 
 
 def add_llm_arguments(p: argparse.ArgumentParser, batch: bool = False) -> None:
