@@ -1,7 +1,7 @@
 """Choose fast mode's search budgets on planning scenarios that are NOT the evaluation set.
 
 The scenarios come from ALFRED's valid_seen split: the text-faithful compositions of the language
-validation (`language.learned.validate`: 1-4 base tasks from one floor plan, fixed seed), turned into
+validation (`suites.alfred.learned_validation`: 1-4 base tasks from one floor plan, fixed seed), turned into
 ground-truth-like instances (their own trials place the objects, the world's default start cells),
 keeping the 3- and 4-task ones the world can do. Neither `benchmark/alfred_test50_gt.jsonl` nor an
 excluded trial is read. Each candidate budget (A* expansions / generated successors) plans every

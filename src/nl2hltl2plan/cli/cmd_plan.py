@@ -259,7 +259,7 @@ def _print_human(outcome: Any) -> None:
 
 def _write_outputs(folder: Path, outcome: Any, payload: dict[str, Any]) -> None:
     """result.json, the spec (JSON and HOA) and the pictures (PNG and SVG), all drawn from the outcome
-    (nothing is re-run): the same files the web page offers for download (`outputs.write_outputs`)."""
+    (nothing is re-run): the same files the web page offers for download (`present.outputs.write_outputs`)."""
     from nl2hltl2plan.present.outputs import write_outputs
 
     for warning in write_outputs(folder, outcome, payload):

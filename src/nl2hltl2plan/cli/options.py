@@ -1,5 +1,5 @@
 """Options that several commands share, declared once: the backend choice and the planner group (the
-LLM group is `language.options`; value types that refuse bad numbers are `argtypes`)."""
+LLM group is `language.llm.llm_options`; value types that refuse bad numbers are `argtypes`)."""
 
 from __future__ import annotations
 

@@ -4,7 +4,7 @@ A sentence is read in passes. Noun phrases first become placeholders: blocks (`B
 pillars", "red and blue blocks", "each object"), places (`P0`: "region H, I and J", "the opposite
 side", "any empty region", "the side of arm a and arm b", "where the red block is", "the area other
 than the target region") and arms (`A`: "the robot arm", "any of the arms"). Then the clause
-patterns of `language.handover` consume placeholders and words. Whatever a pass leaves unread is a
+patterns of `language.handover_reading` consume placeholders and words. Whatever a pass leaves unread is a
 refusal naming the words: nothing is silently dropped.
 
 Places resolve against the instance: "the opposite" is, per block, the labelled regions on the other

@@ -5,7 +5,7 @@ CLI starts without the parsers.
 
 - `offline` (the default; `learned` is its former name): the grammar parser with the learned
   structure and slot models (`language.learned`);
-- `grammar`: the grammar parser alone (`language.offline`).
+- `grammar`: the grammar parser alone (`language.grammar`).
 
 >>> sorted(PARSERS)
 ['grammar', 'learned', 'offline']

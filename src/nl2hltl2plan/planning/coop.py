@@ -6,7 +6,7 @@ picks it up there, and so on. This planner searches the joint state instead:
 
 - a state is (end-effector cell per arm, block held per arm, cell per block) plus the progress of the
   hierarchical spec: the DFA state of every unfinished leaf, which tasks are complete, and the DFA
-  state of non-leaves not in precedence form; leaves read *global* atoms (worlds/handover.py), so any
+  state of non-leaves not in precedence form; leaves read *global* atoms (worlds/handover_world.py), so any
   arm may serve any leaf, and leaf formulas may use negated atoms (`!pick(Blue) U pick(Red)`) and
   region occupancy (`drop(F)`, `empty(H)`, `at(Red,@Blue)`);
 - a move of the search is a macro: one arm walks a shortest path inside its reach (around the other
@@ -16,7 +16,7 @@ picks it up there, and so on. This planner searches the joint state instead:
   letter of its action, exactly what the executed plan shows step by step;
 - cost = end-effector moves + actions (pick/put), summed over arms; A* with an admissible transport
   bound (each block a leaf still needs at a place must be carried at least its grid distance there);
-- the plan returned is executed by `worlds.handover.execute_handover` and checked with
+- the plan returned is executed by `worlds.handover_world.execute_handover` and checked with
   `logic.trace.check_trace` before it is returned.
 
 A* is optimal for the macro model (arms act one at a time; a block is put only on a labelled region or

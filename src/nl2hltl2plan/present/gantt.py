@@ -121,8 +121,8 @@ def draw_gantt(
 
     `before` holds ordering constraints as pairs of task names as the plan's steps name them
     (`("task1.1", "task1.2")`); a name also covers its subtree (`task1` covers `task1.2`). Use
-    `language.render.htt_orderings(htt)` to get them from an HTT. `words`: what each task name says
-    (`language.render.htt_task_words(htt)`), for a legend in words rather than task ids.
+    `present.htt_pictures.htt_orderings(htt)` to get them from an HTT. `words`: what each task name says
+    (`present.htt_pictures.htt_task_words(htt)`), for a legend in words rather than task ids.
     """
     plan_obj, failed_rt = _as_plan(plan)
     failed = frozenset((r, t) for t, r in failed_rt)

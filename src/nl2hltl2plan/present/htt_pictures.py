@@ -44,7 +44,7 @@ MAX_WIDTH_IN = MAX_PX / DPI
 
 def htt_orderings(htt: HTT) -> list[tuple[str, str]]:
     """The HTT's temporal relations as pairs of spec names (`task<id>`), the names plan steps carry
-    (input for `worlds.gantt.draw_gantt(before=...)`)."""
+    (input for `present.gantt.draw_gantt(before=...)`)."""
     from nl2hltl2plan.language.spec_builder import spec_name
 
     return [(spec_name(a), spec_name(b)) for a, b in htt.relations]
@@ -52,7 +52,7 @@ def htt_orderings(htt: HTT) -> list[tuple[str, str]]:
 
 def htt_task_words(htt: HTT) -> dict[str, str]:
     """What each task says, by the name plan steps carry (`task1.2` -> "put the mugs in the rack"),
-    for a Gantt legend in words (`worlds.gantt.draw_gantt(words=...)`)."""
+    for a Gantt legend in words (`present.gantt.draw_gantt(words=...)`)."""
     from nl2hltl2plan.language.spec_builder import spec_name
 
     return {spec_name(n.id): n.text for n in htt.nodes}

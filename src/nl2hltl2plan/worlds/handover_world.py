@@ -246,7 +246,9 @@ def compile_atom(hw: HandoverWorld, atom: str) -> AtomFn:
     """A leaf atom -> a test on (snapshot, event); WorldError for an atom the world cannot read."""
     parsed = Atom.read(atom)
     if parsed is None or len(parsed.args) > 2:
-        raise WorldError(f"cannot read atom {atom!r} in {hw.name} (see worlds/handover.py for the atoms)")
+        raise WorldError(
+            f"cannot read atom {atom!r} in {hw.name} (see worlds/handover_world.py for the atoms)"
+        )
     verb, x, y = parsed.verb, parsed.args[0], (parsed.args[1] if len(parsed.args) == 2 else None)
     labelled = frozenset(hw.layout.regions.values())
     if verb in ("at", "put") and y is not None:
@@ -269,7 +271,7 @@ def compile_atom(hw: HandoverWorld, atom: str) -> AtomFn:
         if verb == "empty":
             return lambda s, e: cell not in s[2]
         return lambda s, e: cell in s[2]
-    raise WorldError(f"cannot read atom {atom!r} in {hw.name} (see worlds/handover.py for the atoms)")
+    raise WorldError(f"cannot read atom {atom!r} in {hw.name} (see worlds/handover_world.py for the atoms)")
 
 
 def initial_snap(hw: HandoverWorld) -> Snap:

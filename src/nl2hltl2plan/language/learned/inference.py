@@ -44,7 +44,8 @@ from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter
 @dataclass(frozen=True)
 class Policy:
     """How grammar and model are combined. The defaults were chosen on the text-faithful validation of
-    valid_seen (`learned.validate`, docs/learned.md): every override policy measured within 1 point, so
+    valid_seen (`suites.alfred.learned_validation`, docs/learned.md): every override policy measured
+    within 1 point, so
     the one that overrides least was taken (the model never replaces a kind, type or `sliced` the grammar
     read); the segmentation rescue measured +4 to +5 points."""
 
@@ -65,7 +66,7 @@ class Policy:
 
 DEFAULT_POLICY = Policy()  # what the `offline` backend uses
 
-# Candidate combinations, compared on the text-faithful validation (`learned.validate`).
+# Candidate combinations, compared on the text-faithful validation (`suites.alfred.learned_validation`).
 POLICIES: dict[str, Policy] = {
     "default": Policy(),
     "no_rescue": Policy(rescue=False),

@@ -1,6 +1,7 @@
 """Segmentation rescue: clauses the grammar could not read, read by the slot model and re-parsed.
 
-Measured per stage on the text-faithful validation (`learned.validate`), the grammar's worst stage is
+Measured per stage on the text-faithful validation (`suites.alfred.learned_validation`), the grammar's
+worst stage is
 segmentation: most wrong instructions have too few base tasks because one clause did not fit a frame
 ("move two boxes of tissue from counter to back of toilet", "put the ladle on the end tale"). The
 grammar lists such clauses in `unparsed`. Here the slot model reads each of them; when it finds a task

@@ -37,7 +37,8 @@ Generator = Callable[[str, set[str], str], tuple[list[BaseTaskSpec], list[tuple[
 
 
 def load_benchmark() -> list[dict[str, Any]]:
-    """The benchmark's instances as plain dicts (the ground truth's one loader, `worlds.benchmark`)."""
+    """The benchmark's instances as plain dicts (the ground truth's one loader,
+    `suites.alfred.ground_truth`)."""
     from nl2hltl2plan.suites.alfred.ground_truth import load_gt
 
     return [g.model_dump(mode="json") for g in load_gt()]

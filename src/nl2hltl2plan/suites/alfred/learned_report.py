@@ -3,8 +3,9 @@
     python -m nl2hltl2plan.suites.alfred.learned_report test50   # the final report only, never for tuning
     python -m nl2hltl2plan.suites.alfred.learned_report speed [--split valid_unseen]
 
-Choices are made on the text-faithful validation (`learned.validate`); test50 is the benchmark table
-(`language.measure.table`) for both backends. `speed` times the default backend on validation
+Choices are made on the text-faithful validation (`suites.alfred.learned_validation`); test50 is the
+benchmark table
+(`suites.alfred.conversion.table`) for both backends. `speed` times the default backend on validation
 instructions (model load, median and max per instruction).
 """
 

@@ -351,7 +351,8 @@ def handover_markdown(summary: dict[str, Any], pictures: list[str]) -> str:
         )
     lines += [
         "",
-        "LLM-as-planner baseline (evaluation/handover_llm.py: the instance's coordinates, the arms' reach, "
+        "LLM-as-planner baseline (suites/handover/handover_llm.py: the instance's coordinates, the arms' "
+        "reach, "
         "the API and the instruction; the answer is executed and checked like our plans): "
         + summary["llm_planner"]
         + ".",

@@ -15,7 +15,7 @@ SMART-LLM's metrics (Kannan et al., arXiv:2309.10062; the scoring script is
   plan was made: nothing could be executed).
 - SR (success): TC = 1 and RU = 1; a task without a stage annotation has no RU and is left out of SR.
 Each row also carries `script`: the five metrics exactly as SMART-LLM's own script computes them
-(`evaluation.smartllm_script`: per entry, +1 per match, no BROKEN check, RU unclipped).
+(`suites.smartllm.smartllm_script`: per entry, +1 per match, no BROKEN check, RU unclipped).
 A task whose team lacks a needed skill is reported infeasible with the reason, before planning; the
 final state is then the initial one. The task without ground truth is listed, not scored.
 """
@@ -56,7 +56,7 @@ SpecMaker = Callable[[SmartTask, World], tuple[HierarchicalSpec, list[str]]]
 
 
 def published() -> dict[str, Any]:
-    """SMART-LLM's published numbers with their source (evaluation/data/smartllm_published.json)."""
+    """SMART-LLM's published numbers with their source (suites/smartllm/smartllm_published.json)."""
     text = resources.files("nl2hltl2plan.suites.smartllm").joinpath("smartllm_published.json").read_text()
     return json.loads(text)
 
@@ -316,7 +316,7 @@ def report_md(summary: dict[str, Any], rows: list[dict[str, Any]]) -> str:
     lines = [
         f"# SMART-LLM benchmark ({summary['specs']} specs)",
         "",
-        "Metrics as SMART-LLM defines them (evaluation/smartllm.py has the exact definitions).",
+        "Metrics as SMART-LLM defines them (suites/smartllm/smartllm_bench.py has the exact definitions).",
         "",
         "| | tasks | SR | TC | GCR | RU | Exe |",
         "|---|---|---|---|---|---|---|",
@@ -366,7 +366,8 @@ def report_md(summary: dict[str, Any], rows: list[dict[str, Any]]) -> str:
 
 
 def _scoring_notes(summary: dict[str, Any], rows: list[dict[str, Any]]) -> list[str]:
-    """Why the two scorings differ, task by task (evaluation/smartllm_script.py has the script's rules)."""
+    """Why the two scorings differ, task by task (suites/smartllm/smartllm_script.py has the script's
+    rules)."""
     left_out = summary.get("left_out_of_SR", [])
     lines = [
         "Two scorings: *ours* follows SMART-LLM's definitions (one condition per state and per contained "

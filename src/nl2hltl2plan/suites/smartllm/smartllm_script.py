@@ -15,7 +15,7 @@ SMART-LLM (github.com/SMARTlab-Purdue/SMART-LLM @ be42930) scores a run in
   (max_trans + 1 - no_trans) / (max_trans - trans), not clipped (it can fall below 0 or exceed 1).
 - SR = 1 iff TC == 1 and RU == 1. Exe = successful / attempted actions.
 
-Our plans have no script: a plan's sequential stages (`evaluation.smartllm.stages`) stand for its
+Our plans have no script: a plan's sequential stages (`suites.smartllm.smartllm_bench.stages`) stand for its
 top-level blocks (a script of the plan would run one block per stage). Object names: AI2-THOR's
 names start with the type, so an object's type stands for its name and a received object's type for
 its id; a sliced object is the original whose slices exist.

@@ -383,7 +383,7 @@ def _study_markdown(summary: dict[str, Any]) -> list[str]:
         "",
         f"## Verbal styles (the paper's user study: each wording on {layouts} seeded layouts)",
         "",
-        "Rephrasings: `evaluation/data/tabletop_rephrasings.json` (four styles per task, written for this "
+        "Rephrasings: `suites/tabletop/tabletop_rephrasings.json` (four styles per task, written for this "
         "study and never used to develop the parser; the parser's validation rephrasings are a separate "
         "set).",
         "",
