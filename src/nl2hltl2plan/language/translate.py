@@ -183,8 +183,7 @@ def _finish(
         spec = leaf_specs.get(n.id)
         if isinstance(spec, list):
             n.actions = list(spec)
-    update: dict = {"backend": backend, "leaf_specs": leaf_specs, "htt": htt}
-    res = res.model_copy(update=update)
+    res = res.model_copy(update={"backend": backend, "leaf_specs": leaf_specs, "htt": htt})
     if build and leaf_specs:
         res = _attach_spec(res, ltl, client)
     if client is not None:
@@ -206,14 +205,14 @@ LeafActions = Callable[[LanguageResult, "SceneLike | None", LLMClient | None], L
 
 def _recipe_actions(
     res: LanguageResult, world: SceneLike | None, client: LLMClient | None
-) -> dict[str, LeafOrFormula] | None:
+) -> LeafSpecs | None:
     """Leaf actions from the worlds' recipes (None: a scene known only by its types has none)."""
     return recipe_leaf_specs(res.tasks, world, res.leaf_task) if isinstance(world, World) else None
 
 
 def _completed_actions(
     res: LanguageResult, world: SceneLike | None, client: LLMClient | None
-) -> dict[str, LeafOrFormula] | None:
+) -> LeafSpecs | None:
     """Leaf actions by the LLM's action completion (None without a client or a scene)."""
     if client is None or world is None:
         return None
