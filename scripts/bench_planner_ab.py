@@ -32,7 +32,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 from bench_planner_large import pooled_instance  # noqa: E402
 from planner_validation import scenarios  # noqa: E402
 
-from nl2hltl2plan.worlds.alfred import benchmark_issues, build_benchmark_world  # noqa: E402
+from nl2hltl2plan.worlds.floor_plans import benchmark_issues, build_benchmark_world  # noqa: E402
 from nl2hltl2plan.worlds.starts import start_cells  # noqa: E402
 
 HERE = Path(__file__).resolve().parent

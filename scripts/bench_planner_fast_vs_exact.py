@@ -23,8 +23,8 @@ import sys
 from typing import Any
 
 from nl2hltl2plan.planning import oracle_spec, plan
-from nl2hltl2plan.worlds.alfred import benchmark_issues, build_benchmark_world
-from nl2hltl2plan.worlds.benchmark import load_gt
+from nl2hltl2plan.suites.alfred.ground_truth import load_gt
+from nl2hltl2plan.worlds.floor_plans import benchmark_issues, build_benchmark_world
 from nl2hltl2plan.worlds.starts import start_cells
 
 

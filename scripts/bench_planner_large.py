@@ -19,12 +19,12 @@ import sys
 from collections import Counter
 
 from nl2hltl2plan.planning import oracle_spec, plan
-from nl2hltl2plan.worlds.alfred import benchmark_issues, build_benchmark_world
-from nl2hltl2plan.worlds.benchmark import load_gt
+from nl2hltl2plan.suites.alfred.ground_truth import load_gt
 from nl2hltl2plan.worlds.checker import check
-from nl2hltl2plan.worlds.model import sliced_type
+from nl2hltl2plan.worlds.floor_plans import benchmark_issues, build_benchmark_world
 from nl2hltl2plan.worlds.starts import start_cells
 from nl2hltl2plan.worlds.tasks import GTInstance
+from nl2hltl2plan.worlds.world import sliced_type
 
 SCENES = ["FloorPlan7", "FloorPlan310", "FloorPlan427", "FloorPlan19", "FloorPlan322", "FloorPlan8",
           "FloorPlan27"]

@@ -26,8 +26,8 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 from bench_planner_large import SCENES, pooled_instance  # noqa: E402
 
 from nl2hltl2plan.planning import oracle_spec, plan  # noqa: E402
-from nl2hltl2plan.worlds.alfred import benchmark_issues, build_benchmark_world  # noqa: E402
 from nl2hltl2plan.worlds.checker import check  # noqa: E402
+from nl2hltl2plan.worlds.floor_plans import benchmark_issues, build_benchmark_world  # noqa: E402
 from nl2hltl2plan.worlds.starts import start_cells  # noqa: E402
 
 

@@ -22,15 +22,15 @@ def main(argv: list[str] | None = None) -> int:
     args = parser.parse_args(argv)
 
     from nl2hltl2plan.errors import Nl2Hltl2PlanError
+    from nl2hltl2plan.suites.alfred.ground_truth import load_gt
     from nl2hltl2plan.worlds import check, execute
-    from nl2hltl2plan.worlds.alfred import (
+    from nl2hltl2plan.worlds.floor_plans import (
         alfred_data,
         benchmark_issues,
         build_benchmark_world,
         floor_plans,
         load_floor_plan,
     )
-    from nl2hltl2plan.worlds.benchmark import load_gt
     from nl2hltl2plan.worlds.scripted import sequential_plan
     from nl2hltl2plan.worlds.starts import start_cells
 

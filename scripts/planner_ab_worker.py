@@ -16,7 +16,7 @@ import time
 
 def run(job: dict) -> dict:
     from nl2hltl2plan.planning import oracle_spec, plan
-    from nl2hltl2plan.worlds.alfred import build_benchmark_world
+    from nl2hltl2plan.worlds.floor_plans import build_benchmark_world
 
     world = build_benchmark_world(job["gt"])
     spec = oracle_spec(job["gt"], world).spec

@@ -1,7 +1,7 @@
 """Choose fast mode's search budgets on planning scenarios that are NOT the evaluation set.
 
 The scenarios come from ALFRED's valid_seen split: the text-faithful compositions of the language
-validation (`language.learned.validate`: 1-4 base tasks from one floor plan, fixed seed), turned into
+validation (`suites.alfred.learned_validation`: 1-4 base tasks from one floor plan, fixed seed), turned into
 ground-truth-like instances (their own trials place the objects, the world's default start cells),
 keeping the 3- and 4-task ones the world can do. Neither `benchmark/alfred_test50_gt.jsonl` nor an
 excluded trial is read. Each candidate budget (A* expansions / generated successors) plans every
@@ -25,12 +25,12 @@ import time
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.language.learned.faithful import compose_faithful
-from nl2hltl2plan.language.learned.validate import faithful_split
 from nl2hltl2plan.planning import api, oracle_spec, plan
-from nl2hltl2plan.worlds.alfred import benchmark_issues, build_benchmark_world
-from nl2hltl2plan.worlds.model import World
+from nl2hltl2plan.suites.alfred.learned_validation import faithful_split
+from nl2hltl2plan.worlds.floor_plans import benchmark_issues, build_benchmark_world
 from nl2hltl2plan.worlds.starts import start_cells
 from nl2hltl2plan.worlds.tasks import BaseTask, GTInstance
+from nl2hltl2plan.worlds.world import World
 
 
 def scenarios(n: int, seed: int, sizes: tuple[int, ...] = (3, 4)) -> list[tuple[GTInstance, World]]:

@@ -19,8 +19,8 @@ from nl2hltl2plan.language.htt import HTT
 from nl2hltl2plan.language.spec_builder import build_spec
 from nl2hltl2plan.logic.flatten import size_report
 from nl2hltl2plan.planning.oracle import oracle_spec
-from nl2hltl2plan.worlds.alfred import build_benchmark_world
-from nl2hltl2plan.worlds.benchmark import load_gt
+from nl2hltl2plan.suites.alfred.ground_truth import load_gt
+from nl2hltl2plan.worlds.floor_plans import build_benchmark_world
 
 ROOT = Path(__file__).resolve().parents[1]
 

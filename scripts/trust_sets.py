@@ -138,7 +138,7 @@ def outcome(gt: GTInstance, backend: str = "offline") -> tuple[str, str]:
         return "refused", str(exc)
     if res.partial:
         return "partial", "; ".join(res.unparsed)
-    apply_choices(res, top_candidates(res.ambiguities))
+    res = apply_choices(res, top_candidates(res.ambiguities))
     verdict = match(res.tasks, res.before, [t.model_dump() for t in gt.tasks], gt.before, strict=False)
     truth = constraints_of(gt)
     if gt.feasible and verdict.order_ok and constraints_match(res.constraint_specs, truth, world):
@@ -185,13 +185,13 @@ def validation(split: str, n: int, seed: int) -> None:
     from nl2hltl2plan.language.accounting import account
     from nl2hltl2plan.language.grounding import scene_types
     from nl2hltl2plan.language.learned.inference import parse_instruction
-    from nl2hltl2plan.language.learned.validate import validation_rows
+    from nl2hltl2plan.suites.alfred.learned_validation import validation_rows
 
     counts: Counter[tuple[bool, bool]] = Counter()
     for row in validation_rows(split, n, seed):
         try:
             r = parse_instruction(row["instruction"], scene_types(row["scene"]), row["scene"], strict=False)
-            apply_choices(r, top_candidates(r.ambiguities))
+            r = apply_choices(r, top_candidates(r.ambiguities))
             flagged = bool(r.unparsed or account(row["instruction"], r.tasks, r.before))
             ok = match(r.tasks, r.before, row["tasks"], row["before"], strict=True).order_ok
         except Nl2Hltl2PlanError:

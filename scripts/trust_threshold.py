@@ -3,7 +3,8 @@
     python scripts/trust_threshold.py [--split valid_seen] [--n 800]
 
 For each candidate threshold, the default backend runs on the split's composed instructions
-(`learned.validate.validation_rows`) and on issue 23's own sets (tests/language/data/trust); each
+(`suites.alfred.learned_validation.validation_rows`) and on issue 23's own sets
+(tests/language/data/trust); each
 instruction is converted (matches, nothing unread), refused/partial (an error or `unparsed` after check
 1) or wrong (does not match, yet nothing unread: a plan would miss or change part of the text). The
 threshold kept is the lowest with the fewest wrong conversions, then the most converted.
@@ -18,9 +19,8 @@ from collections import Counter
 from pathlib import Path
 
 from nl2hltl2plan.language.learned.inference import Policy
-from nl2hltl2plan.language.learned.measure import learned_generator
-from nl2hltl2plan.language.learned.validate import validation_rows
-from nl2hltl2plan.language.measure import evaluate
+from nl2hltl2plan.suites.alfred.conversion import evaluate, learned_generator
+from nl2hltl2plan.suites.alfred.learned_validation import validation_rows
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import trust_sets  # noqa: E402

@@ -143,7 +143,7 @@ def _gt_file(tmp_path: Path, **update: object) -> Path:
 
     if data_dir(required=False) is None:
         pytest.skip("needs ../shared/data")
-    from nl2hltl2plan.worlds.benchmark import load_gt
+    from nl2hltl2plan.suites.alfred.ground_truth import load_gt
 
     base = next(g for g in load_gt() if g.n_base == 2 and g.feasible)
     a, b = base.tasks[0].id, base.tasks[1].id

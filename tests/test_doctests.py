@@ -17,7 +17,8 @@ MODULES = [
     "nl2hltl2plan.logic.trace",
     "nl2hltl2plan.worlds.starts",
     "nl2hltl2plan.language.learned.ranker",
-    "nl2hltl2plan.worlds.tasks",
+    "nl2hltl2plan.domain.task_kinds",
+    "nl2hltl2plan.logic.action_sequences",
 ]
 
 

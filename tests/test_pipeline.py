@@ -142,8 +142,9 @@ def test_the_learned_parser_cross_checks_an_llm_reading(world) -> None:
     from nl2hltl2plan.language.translate import _cross_check, translate
 
     res = translate(ORDERED, world, "offline", build=False)
-    _cross_check(res, world.object_types(), world.name)
-    assert res.warnings == []  # the same reading
-    res.tasks[0].object = ["Mug"]  # an LLM that moved mugs when saucers were asked
-    _cross_check(res, world.object_types(), world.name)
-    assert any("reads this instruction differently" in w for w in res.warnings)
+    assert _cross_check(res, world.object_types(), world.name).warnings == []  # the same reading
+    mugs = res.tasks[0].model_copy(update={"object": ["Mug"]})  # an LLM that moved mugs, not saucers
+    moved = res.model_copy(update={"tasks": [mugs, *res.tasks[1:]]})
+    warned = _cross_check(moved, world.object_types(), world.name)
+    assert any("reads this instruction differently" in w for w in warned.warnings)
+    assert moved.warnings == []  # a new result; the one given is unchanged

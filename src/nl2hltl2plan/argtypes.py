@@ -14,7 +14,8 @@ import argparse
 import math
 from collections.abc import Callable
 
-MAX_SECONDS = 7 * 24 * 3600.0  # a week: above any sensible time limit, below what timers accept
+from nl2hltl2plan.config import MAX_SECONDS
+
 MAX_SEED = 2**32 - 1  # numpy's seeds
 MAX_ROBOTS = 64  # a team's size: far above the paper's (4) and the planner's practical range
 

@@ -9,7 +9,7 @@ Writing is atomic: every file goes to a temporary file in the same folder that i
 target (`atomic_path`), so a kill leaves the old file or the new one, never a torn one; the folder is
 created and `OSError` becomes a `DataError` naming the path. Output paths are checked before any work
 (`ensure_writable_dir`, `check_output_file`, `check_new_file`). Benchmark results files (JSON lines
-appended as scenarios finish, the one exception) are read and repaired by `evaluation.runner`.
+appended as scenarios finish, the one exception) are read and repaired by `suites.runner`.
 
 >>> import tempfile, pathlib
 >>> p = pathlib.Path(tempfile.mkdtemp()) / "x.json"

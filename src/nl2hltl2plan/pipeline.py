@@ -36,10 +36,10 @@ from nl2hltl2plan.planning.api import Mode
 from nl2hltl2plan.planning.objective import ObjectiveName
 from nl2hltl2plan.planning.search import SearchStats
 from nl2hltl2plan.worlds.checker import CheckResult, check
-from nl2hltl2plan.worlds.model import Cell, World
 from nl2hltl2plan.worlds.starts import start_cells
 from nl2hltl2plan.worlds.tasks import GTInstance
 from nl2hltl2plan.worlds.team import Team, team_problems
+from nl2hltl2plan.worlds.world import Cell, World
 
 
 class PipelineOptions(BaseModel):

@@ -7,11 +7,11 @@ import json
 import pytest
 
 from nl2hltl2plan.errors import PlanningError, WorldError
-from nl2hltl2plan.evaluation.handover import instance, judge, load_tasks
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.planning.coop import coop_plan, plan_world
+from nl2hltl2plan.suites.handover.handover_bench import instance, judge, load_tasks
 from nl2hltl2plan.worlds import load_world
-from nl2hltl2plan.worlds.handover import (
+from nl2hltl2plan.worlds.handover_world import (
     ARMS,
     HandoverWorld,
     compile_atom,
@@ -232,7 +232,7 @@ def test_plan_command_works_on_the_handover_worlds(world_name, capsys):
 
 def _calls_from(plan) -> list[dict]:
     """A correct answer: our own cooperative plan's picks and puts, as API calls in time order."""
-    from nl2hltl2plan.worlds.handover import ARMS
+    from nl2hltl2plan.worlds.handover_world import ARMS
 
     steps = sorted(((st.t, rp.robot, st) for rp in plan.robots for st in rp.steps), key=lambda x: x[:2])
     calls, at = [], {}
@@ -253,11 +253,11 @@ def _calls_from(plan) -> list[dict]:
 
 
 def test_llm_planner_baseline_for_handover_against_a_stub(stub_llm):
-    from nl2hltl2plan.evaluation.handover import instance, load_tasks
-    from nl2hltl2plan.evaluation.handover_llm import llm_handover
+    from nl2hltl2plan.config.llm_settings import LLMSettings
     from nl2hltl2plan.language.llm.client import LLMClient
-    from nl2hltl2plan.language.llm.settings import LLMSettings
     from nl2hltl2plan.planning.coop import coop_plan
+    from nl2hltl2plan.suites.handover.handover_bench import instance, load_tasks
+    from nl2hltl2plan.suites.handover.handover_llm import llm_handover
 
     task = next(t for t in load_tasks() if t.id == 1)  # red before blue, blocks to the opposite side
     hw, spec = instance(task, 0, 0), task.hierarchical()

@@ -9,9 +9,9 @@ import pytest
 from handover_rephrasings import REPHRASINGS
 
 from nl2hltl2plan.errors import HTTError
-from nl2hltl2plan.evaluation.handover import instance, load_tasks, specs_equivalent
 from nl2hltl2plan.language.translate import translate
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
+from nl2hltl2plan.suites.handover.handover_bench import instance, load_tasks, specs_equivalent
 
 TASKS = {t.id: t for t in load_tasks()}
 
@@ -101,7 +101,7 @@ def test_bench_handover_plans_from_the_language_stage(tmp_path):
     import argparse
 
     from nl2hltl2plan.cli.bench_experiments import register
-    from nl2hltl2plan.evaluation.handover import run_bench
+    from nl2hltl2plan.suites.handover.handover_bench import run_bench
 
     parser = argparse.ArgumentParser()
     register(parser.add_subparsers(dest="suite"))

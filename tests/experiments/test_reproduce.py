@@ -32,8 +32,8 @@ def _committed(suite: str, name: str = "summary.json") -> Any:
 @pytest.mark.data
 @pytest.mark.parametrize("suite", ["smartllm_oracle", "smartllm_offline"])
 def test_smartllm_results_are_current(suite):
-    from nl2hltl2plan.evaluation.smartllm import llm_maker, oracle_maker, run_task, summarize
-    from nl2hltl2plan.worlds.smartllm import load_tasks
+    from nl2hltl2plan.suites.smartllm.smartllm_bench import llm_maker, oracle_maker, run_task, summarize
+    from nl2hltl2plan.suites.smartllm.smartllm_tasks import load_tasks
 
     summary = _committed(suite)
     rows = [json.loads(line) for line in (ROOT / "results" / suite / "rows.jsonl").read_text().splitlines()]
@@ -47,7 +47,7 @@ def test_smartllm_results_are_current(suite):
 
 
 def test_tabletop_results_are_current():
-    from nl2hltl2plan.evaluation.tabletop import load_tasks, run_task
+    from nl2hltl2plan.suites.tabletop.tabletop_bench import load_tasks, run_task
 
     summary = _committed("tabletop")
     for task in load_tasks():
@@ -60,7 +60,7 @@ def test_tabletop_results_are_current():
 
 
 def test_handover_language_results_are_current():
-    from nl2hltl2plan.evaluation.handover import instance, language_check, load_tasks
+    from nl2hltl2plan.suites.handover.handover_bench import instance, language_check, load_tasks
 
     summary = _committed("handover")
     assert summary["specs"].startswith("language stage")

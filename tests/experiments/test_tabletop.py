@@ -8,15 +8,15 @@ import json
 import pytest
 from rephrasings import HARDER, REPHRASINGS
 
+from nl2hltl2plan.config.llm_settings import LLMSettings
 from nl2hltl2plan.errors import WorldError
-from nl2hltl2plan.evaluation.baselines import LLMPlanAnswer, llm_planner, parse_llm_answer
-from nl2hltl2plan.evaluation.tabletop import load_tasks, run_bench, run_ours
 from nl2hltl2plan.language.llm.client import LLMClient
-from nl2hltl2plan.language.llm.settings import LLMSettings
-from nl2hltl2plan.language.tasks import transitive_closure
+from nl2hltl2plan.language.task_specs import transitive_closure
 from nl2hltl2plan.language.translate import translate
+from nl2hltl2plan.suites.tabletop.tabletop_baselines import LLMPlanAnswer, llm_planner, parse_llm_answer
+from nl2hltl2plan.suites.tabletop.tabletop_bench import load_tasks, run_bench, run_ours
 from nl2hltl2plan.worlds import load_world
-from nl2hltl2plan.worlds.tabletop import HOME, draw_layout, tabletop_world
+from nl2hltl2plan.worlds.tabletop_world import HOME, draw_layout, tabletop_world
 
 TASKS = {t.id: t for t in load_tasks()}
 
@@ -135,8 +135,8 @@ def test_plan_json_keeps_tasks_and_before(capsys):
 def test_nearest_first_takes_the_nearest_ready_item():
     """The greedy walks to the nearest item whose ordered predecessors are placed (task 4: the yellow
     plate's two items first), and its plan passes the same checker as ours."""
-    from nl2hltl2plan.evaluation.baselines import nearest_first
-    from nl2hltl2plan.worlds.tabletop import HOME
+    from nl2hltl2plan.suites.tabletop.tabletop_baselines import nearest_first
+    from nl2hltl2plan.worlds.tabletop_world import HOME
 
     task = TASKS[4]
     world = tabletop_world(11)

@@ -10,9 +10,9 @@ from nl2hltl2plan.errors import DataError, WorldError
 from nl2hltl2plan.language.learned import parse_instruction
 from nl2hltl2plan.language.learned.data import excluded_trials, load_examples
 from nl2hltl2plan.language.learned.inference import load_model
-from nl2hltl2plan.language.learned.model import SlotModel
-from nl2hltl2plan.language.learned.rank_check import top_share
 from nl2hltl2plan.language.learned.ranker import RankCase, TypeRanker
+from nl2hltl2plan.language.learned.slot_model import SlotModel
+from nl2hltl2plan.suites.alfred.rank_check import top_share
 
 KITCHEN = {
     "Apple",
@@ -147,8 +147,8 @@ def test_grounding_ranks_only_scene_types_and_reports_close_calls() -> None:
 
 
 def test_benchmarks_take_the_top_candidate_of_each_ambiguous_word() -> None:
-    from nl2hltl2plan.language.learned.measure import learned_generator
     from nl2hltl2plan.language.translate import top_candidates
+    from nl2hltl2plan.suites.alfred.conversion import learned_generator
 
     room = {"Apple", "DiningTable", "SideTable", "CounterTop"}
     r = parse_instruction("Put the apple on the table.", room, "test")

@@ -7,6 +7,7 @@ from pathlib import Path
 
 import pytest
 
+from nl2hltl2plan.language.grammar import parse_instruction as grammar_parse
 from nl2hltl2plan.language.learned import parse_instruction
 from nl2hltl2plan.language.learned.data import Example
 from nl2hltl2plan.language.learned.faithful import (
@@ -17,7 +18,6 @@ from nl2hltl2plan.language.learned.faithful import (
 )
 from nl2hltl2plan.language.learned.inference import Policy, load_model
 from nl2hltl2plan.language.learned.rescue import canonical, failed_clauses
-from nl2hltl2plan.language.offline import parse_instruction as grammar_parse
 
 ROOM = {"Apple", "Fridge", "CounterTop", "DiningTable", "SideTable", "Mug", "Cabinet", "Toilet", "SoapBar"}
 ROOM |= {"SinkBasin", "Knife", "ButterKnife", "Tomato", "Microwave", "Bowl", "Spoon", "DeskLamp", "KeyChain"}
@@ -145,7 +145,7 @@ def test_finally_follows_the_guide_in_the_validation_templates() -> None:
 
 def test_default_never_overrides_what_the_grammar_read(shared_data: Path) -> None:
     """The chosen rule: the model orders multi-type words and fills empty slots, nothing else."""
-    from nl2hltl2plan.language.learned.validate import validation_rows
+    from nl2hltl2plan.suites.alfred.learned_validation import validation_rows
 
     assert Policy().kind_override > 1 and Policy().override > 1 and not Policy().sliced_from_model
     no_rescue = Policy(rescue=False)
@@ -176,7 +176,7 @@ def test_slot_model_beats_the_majority_baseline_on_held_out_scenes(shared_data: 
     from collections import Counter
 
     from nl2hltl2plan.language.grounding import scene_types
-    from nl2hltl2plan.language.learned.validate import faithful_split
+    from nl2hltl2plan.suites.alfred.learned_validation import faithful_split
 
     items = faithful_split("valid_unseen")[::4]
     prior = Counter(it.task.object[0] for it in faithful_split("valid_seen"))

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from nl2hltl2plan.language.measure import evaluate, load_benchmark, offline_generator, table
+from nl2hltl2plan.suites.alfred.conversion import evaluate, load_benchmark, offline_generator, table
 
 pytestmark = pytest.mark.data
 

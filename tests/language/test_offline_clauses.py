@@ -1,6 +1,6 @@
 """Step 2 of the offline parser: clauses, and elided verbs restored."""
 
-from nl2hltl2plan.language.offline.clauses import expand_gapping, split_clauses
+from nl2hltl2plan.language.grammar.clauses import expand_gapping, split_clauses
 
 
 def test_split_before_each_verb_with_its_joiner() -> None:
@@ -39,7 +39,7 @@ def test_verbless_list_takes_the_previous_verb_and_shares_the_destination() -> N
 def test_a_stated_rule_is_not_read_as_an_elided_object_list() -> None:
     """ "The arm cannot touch the blue block until ..." after "Transfer ... into ..." states a rule; it must
     not borrow the previous verb and become a task (which then got an invented order)."""
-    from nl2hltl2plan.language.offline import parse_instruction
+    from nl2hltl2plan.language.grammar import parse_instruction
 
     r = parse_instruction(
         "Transfer the boxes into the opposite regions. The robot arm cannot touch blue block until any of "

@@ -1,7 +1,7 @@
 """Step 3 of the offline parser: frames (verb class + items) and noun phrases."""
 
-from nl2hltl2plan.language.offline.frames import THEN_TO, dest_of, parse_frame
-from nl2hltl2plan.language.offline.phrases import parse_np
+from nl2hltl2plan.language.grammar.frames import THEN_TO, dest_of, parse_frame
+from nl2hltl2plan.language.grammar.phrases import parse_np
 
 
 def _items(text: str) -> list[tuple[str, list[tuple[str, str]]]]:

@@ -5,8 +5,8 @@ from __future__ import annotations
 
 import pytest
 
-from nl2hltl2plan.language.offline import parse_instruction
-from nl2hltl2plan.language.tasks import transitive_closure
+from nl2hltl2plan.language.grammar import parse_instruction
+from nl2hltl2plan.language.task_specs import transitive_closure
 
 KITCHEN = {
     "Apple",

@@ -1,9 +1,9 @@
 """Step 5 of the offline parser: references to earlier tasks."""
 
-from nl2hltl2plan.language.offline.phrases import NP, parse_np
-from nl2hltl2plan.language.offline.references import new_tasks_from_ref, ref_targets
-from nl2hltl2plan.language.offline.tasks import TaskBuilder
-from nl2hltl2plan.language.tasks import BaseTaskSpec
+from nl2hltl2plan.language.grammar.draft_tasks import TaskBuilder
+from nl2hltl2plan.language.grammar.phrases import NP, parse_np
+from nl2hltl2plan.language.grammar.references import new_tasks_from_ref, ref_targets
+from nl2hltl2plan.language.task_specs import BaseTaskSpec
 
 
 def _spec(obj: str, rec: str) -> BaseTaskSpec:

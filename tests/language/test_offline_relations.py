@@ -3,10 +3,10 @@
 import pytest
 
 from nl2hltl2plan.errors import HTTError
-from nl2hltl2plan.language.offline.drafts import DraftBuilder
-from nl2hltl2plan.language.offline.relations import relate
-from nl2hltl2plan.language.offline.sentences import read_sentences
-from nl2hltl2plan.language.offline.tasks import TaskBuilder, build_tasks
+from nl2hltl2plan.language.grammar.draft_tasks import TaskBuilder, build_tasks
+from nl2hltl2plan.language.grammar.drafts import DraftBuilder
+from nl2hltl2plan.language.grammar.order_relations import relate
+from nl2hltl2plan.language.grammar.sentences import read_sentences
 
 
 def _before(text: str) -> tuple[list[tuple[str, str]], list[str], list[str]]:

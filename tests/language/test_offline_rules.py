@@ -6,12 +6,12 @@ from __future__ import annotations
 
 import pytest
 
+from nl2hltl2plan.language.grammar import parse_instruction
 from nl2hltl2plan.language.grounding import Roles, alfred_lookup
-from nl2hltl2plan.language.offline import parse_instruction
-from nl2hltl2plan.language.tasks import transitive_closure
+from nl2hltl2plan.language.task_specs import transitive_closure
 from nl2hltl2plan.language.translate import translate
 from nl2hltl2plan.logic.spot_backend import equivalent, parse
-from nl2hltl2plan.worlds.model import Affordances
+from nl2hltl2plan.worlds.world import Affordances
 
 FLAGSHIP = (
     "Put the plates, mugs and utensils in the lower rack in any order; after that, first the saucers, "

@@ -1,7 +1,7 @@
 """Step 1 of the offline parser: sentences and their order markers."""
 
-from nl2hltl2plan.language.offline import grammar as G
-from nl2hltl2plan.language.offline.sentences import normalize, read_sentences
+from nl2hltl2plan.language.grammar import word_tables as G
+from nl2hltl2plan.language.grammar.sentences import normalize, read_sentences
 
 
 def test_normalize_drops_remarks_and_spaces_sentences() -> None:

@@ -1,8 +1,8 @@
 """Step 4 of the offline parser: drafts (clauses about one object) and grounded tasks."""
 
-from nl2hltl2plan.language.offline.drafts import DraftBuilder
-from nl2hltl2plan.language.offline.sentences import read_sentences
-from nl2hltl2plan.language.offline.tasks import TaskBuilder, Tasks, build_tasks
+from nl2hltl2plan.language.grammar.draft_tasks import TaskBuilder, Tasks, build_tasks
+from nl2hltl2plan.language.grammar.drafts import DraftBuilder
+from nl2hltl2plan.language.grammar.sentences import read_sentences
 
 
 def _tasks(text: str) -> tuple[Tasks, TaskBuilder]:

@@ -12,7 +12,7 @@ from nl2hltl2plan.language.backends import resolve_backend
 from nl2hltl2plan.language.grounding import Grounder, find_mentions
 from nl2hltl2plan.language.htt_build import build_htt, flat_before
 from nl2hltl2plan.language.scoring import match
-from nl2hltl2plan.language.tasks import BaseTaskSpec
+from nl2hltl2plan.language.task_specs import BaseTaskSpec
 from nl2hltl2plan.language.translate import translate
 
 
@@ -131,7 +131,7 @@ def test_cli_plan_json(capsys, monkeypatch, tmp_path):
     )
     assert "offline parser (grammar + learned model)" in out.err
     assert (tmp_path / "out" / "htt.png").stat().st_size > 1000
-    from nl2hltl2plan.outputs import output_names  # the files the web page offers for download too
+    from nl2hltl2plan.present.outputs import output_names  # the files the web page offers for download too
 
     assert sorted(p.name for p in (tmp_path / "out").iterdir()) == sorted(output_names(has_plan=True))
     assert json.loads((tmp_path / "out" / "result.json").read_text())["tasks"][0]["kind"] == "clean_place"

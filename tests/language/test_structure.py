@@ -11,10 +11,10 @@ import pytest
 from nl2hltl2plan.errors import WorldError
 from nl2hltl2plan.language.learned import parse_instruction
 from nl2hltl2plan.language.learned.compose import HELDOUT_STYLE, TRAIN_STYLE, styled_clause
-from nl2hltl2plan.language.learned.relations import before_pairs
+from nl2hltl2plan.language.learned.span_order import before_pairs
 from nl2hltl2plan.language.learned.structure import StructureModel, load_structure, tags_of, tokenize
 from nl2hltl2plan.language.learned.structured import base_form, resolved, with_verb
-from nl2hltl2plan.language.tasks import BaseTaskSpec
+from nl2hltl2plan.language.task_specs import BaseTaskSpec
 
 KITCHEN = {"Apple", "Fridge", "Mug", "SinkBasin", "Sink", "Egg", "CounterTop", "CoffeeMachine", "Bowl"}
 

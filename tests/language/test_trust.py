@@ -12,7 +12,7 @@ from nl2hltl2plan.cli.main import main
 from nl2hltl2plan.config import data_dir
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.accounting import account
-from nl2hltl2plan.language.tasks import BaseTaskSpec
+from nl2hltl2plan.language.task_specs import BaseTaskSpec
 from nl2hltl2plan.pipeline import PipelineOptions, run
 from nl2hltl2plan.worlds.demo import demo_world
 
@@ -142,10 +142,10 @@ def test_dead_llm_makes_scenarios_errored_and_resume_reruns_them(tmp_path, stub,
 
 def test_a_dead_llm_baseline_is_errored_not_a_failure(stub):
     from nl2hltl2plan.cli.bench_experiments import _errored_exit
-    from nl2hltl2plan.evaluation.baselines import llm_planner
-    from nl2hltl2plan.evaluation.tabletop import HOME, _row, load_tasks, tabletop_world
+    from nl2hltl2plan.config.llm_settings import LLMSettings
     from nl2hltl2plan.language.llm.client import LLMClient
-    from nl2hltl2plan.language.llm.settings import LLMSettings
+    from nl2hltl2plan.suites.tabletop.tabletop_baselines import llm_planner
+    from nl2hltl2plan.suites.tabletop.tabletop_bench import HOME, _row, load_tasks, tabletop_world
 
     stub.answer = lambda body: "garbage, not the JSON asked for"
     client = LLMClient(LLMSettings(base_url=stub.base_url, api_key="k", max_retries=0, cache_dir=None))
@@ -159,8 +159,8 @@ def test_a_dead_llm_baseline_is_errored_not_a_failure(stub):
 
 def test_check_one_judges_an_llm_backend_too(stub):
     """An OpenAI-compatible server that drops the coffee: the LLM backend's result is partial as well."""
+    from nl2hltl2plan.config.llm_settings import LLMSettings
     from nl2hltl2plan.language.llm.client import LLMClient
-    from nl2hltl2plan.language.llm.settings import LLMSettings
     from nl2hltl2plan.language.translate import translate
 
     answer = {
@@ -214,8 +214,8 @@ def test_state_clauses_are_read_only_for_objects_that_take_the_state():
 
 
 def test_an_llm_backend_can_state_a_skill_the_world_has(stub):
+    from nl2hltl2plan.config.llm_settings import LLMSettings
     from nl2hltl2plan.language.llm.client import LLMClient
-    from nl2hltl2plan.language.llm.settings import LLMSettings
     from nl2hltl2plan.language.translate import translate
 
     answer = {

@@ -6,12 +6,12 @@ from __future__ import annotations
 import pytest
 from PIL import Image
 
-from nl2hltl2plan.language.render import draw_htt, fitted_layout, htt_labels, htt_task_words
 from nl2hltl2plan.pipeline import run
+from nl2hltl2plan.present.gantt import draw_gantt
+from nl2hltl2plan.present.htt_pictures import draw_htt, fitted_layout, htt_labels, htt_task_words
+from nl2hltl2plan.present.pictures import draw_execution, draw_world
 from nl2hltl2plan.worlds import load_world
 from nl2hltl2plan.worlds.demo import demo_world
-from nl2hltl2plan.worlds.gantt import draw_gantt
-from nl2hltl2plan.worlds.pictures import draw_execution, draw_world
 
 DEMO = (
     "Put the plates, mugs and utensils in the lower rack in any order; after that, first the saucers, "

@@ -6,14 +6,20 @@ import pytest
 from PIL import Image
 
 from nl2hltl2plan.errors import WorldError
-from nl2hltl2plan.evaluation.report import summarize
-from nl2hltl2plan.evaluation.report_md import _points, _team, pipeline_summary, plot_cost_time, plot_success
 from nl2hltl2plan.language.htt import HTT
-from nl2hltl2plan.language.render import draw_htt, htt_labels, htt_orderings, tree_layout
+from nl2hltl2plan.present.gantt import _ordering_arrows, draw_gantt, segments
+from nl2hltl2plan.present.htt_pictures import draw_htt, htt_labels, htt_orderings, tree_layout
+from nl2hltl2plan.present.pictures import draw_execution
+from nl2hltl2plan.suites.alfred.alfred_report import (
+    _points,
+    _team,
+    pipeline_summary,
+    plot_cost_time,
+    plot_success,
+)
+from nl2hltl2plan.suites.summaries import summarize
 from nl2hltl2plan.worlds import execute
 from nl2hltl2plan.worlds.demo import demo_world
-from nl2hltl2plan.worlds.gantt import _ordering_arrows, draw_gantt, segments
-from nl2hltl2plan.worlds.pictures import draw_execution
 from nl2hltl2plan.worlds.plan import Plan, RobotPlan, Step
 from nl2hltl2plan.worlds.scripted import scripted_plan
 
@@ -152,7 +158,7 @@ def test_htt_layout_has_no_overlap_or_truncation(tmp_path):
 
 
 def _row(n_base, robots, draw, travel, steps, success=True):
-    from nl2hltl2plan.evaluation.rows import ScenarioRow
+    from nl2hltl2plan.suites.rows import ScenarioRow
 
     fields = {"instance": f"i{n_base}-{draw}", "n_base": n_base, "robots": robots, "draw": draw,
               "key": f"i{n_base}|r{robots}|d{draw}", "success": success, "status": "solved",
@@ -178,9 +184,9 @@ def test_bench_plots_integer_axes_plurals_and_bars_inside_data(tmp_path):
 
 
 def test_gantt_from_benchmark_events_and_report_example(tmp_path):
-    from nl2hltl2plan.evaluation.report_md import plot_gantt_example
-    from nl2hltl2plan.evaluation.rows import PlanEvent
-    from nl2hltl2plan.worlds.gantt import draw_gantt_events, segments_from_events
+    from nl2hltl2plan.present.gantt import draw_gantt_events, segments_from_events
+    from nl2hltl2plan.suites.alfred.alfred_report import plot_gantt_example
+    from nl2hltl2plan.suites.rows import PlanEvent
 
     events = [
         {"t": 4, "robot": 0, "atom": "pickup(Apple)", "task": "task1.1", "travel_m": 0.5},

@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 from planning_worlds import corridor
 
-from nl2hltl2plan.worlds.model import World
+from nl2hltl2plan.worlds.world import World
 
 
 @pytest.fixture

@@ -7,8 +7,8 @@ max(0, c - 6 - s, s - (c + 6)) steps. An island of 3 cells at columns 50..52 is 
 
 from __future__ import annotations
 
-from nl2hltl2plan.worlds.model import Affordances, World, WorldObject
 from nl2hltl2plan.worlds.tasks import BaseTask, GTInstance
+from nl2hltl2plan.worlds.world import Affordances, World, WorldObject
 
 MOVABLE = ("Apple", "Mug", "Book")
 ACCEPTS = {

@@ -15,8 +15,8 @@ needs_data = pytest.mark.skipif(data_dir(required=False) is None, reason="needs 
 
 
 def run_instance(instance_id: str, robots: int, **kw):
-    from nl2hltl2plan.worlds.alfred import benchmark_issues, build_benchmark_world
-    from nl2hltl2plan.worlds.benchmark import gt_instance
+    from nl2hltl2plan.suites.alfred.ground_truth import gt_instance
+    from nl2hltl2plan.worlds.floor_plans import benchmark_issues, build_benchmark_world
     from nl2hltl2plan.worlds.starts import start_cells
 
     gt = gt_instance(instance_id)

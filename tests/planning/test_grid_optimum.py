@@ -13,7 +13,7 @@ from planning_worlds import affordances, gt, two_rows
 
 from nl2hltl2plan.planning import oracle_spec, plan
 from nl2hltl2plan.worlds.checker import check
-from nl2hltl2plan.worlds.model import Cell, World, WorldObject
+from nl2hltl2plan.worlds.world import Cell, World, WorldObject
 
 PLACE_APPLE = {"id": "A", "kind": "place", "object": ["Apple"], "receptacle": ["CounterTop"]}
 PLACE_MUG = {"id": "B", "kind": "place", "object": ["Mug"], "receptacle": ["DiningTable"]}

@@ -18,11 +18,11 @@ from pydantic import BaseModel
 
 from nl2hltl2plan.deadline import ChildError, run_with_deadline
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
-from nl2hltl2plan.evaluation.runner import Scenario, run_scenarios
 from nl2hltl2plan.language import stages
 from nl2hltl2plan.language.llm import AnswerCache, LLMClient, LLMSettings, read_answers
 from nl2hltl2plan.logic import spot_backend as sb
 from nl2hltl2plan.logic.hierarchical import sequence_formula
+from nl2hltl2plan.suites.runner import Scenario, run_scenarios
 
 TMP = Path(sys.argv[1])
 TMP.mkdir(exist_ok=True)

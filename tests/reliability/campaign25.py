@@ -767,7 +767,7 @@ def _model_loads(folder: Path) -> str | None:
     if not path.exists():
         return None  # killed before writing: the packaged model is used
     env = {**os.environ, "PYTHONPATH": str(ROOT / "src"), "XDG_CACHE_HOME": str(folder / "cache")}
-    code = "from nl2hltl2plan.language.learned.model import SlotModel; SlotModel.load()"
+    code = "from nl2hltl2plan.language.learned.slot_model import SlotModel; SlotModel.load()"
     res = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, timeout=120)
     return None if res.returncode == 0 else f"the user model does not load: {res.stderr[-200:]!r}"
 

@@ -65,7 +65,7 @@ PARENT = textwrap.dedent(
     import os, sys, time
     from pathlib import Path
     from nl2hltl2plan.deadline import run_with_deadline
-    from nl2hltl2plan.evaluation.runner import Scenario, run_scenarios
+    from nl2hltl2plan.suites.runner import Scenario, run_scenarios
 
     pids = Path(sys.argv[1])
 

@@ -21,7 +21,9 @@ from nl2hltl2plan.cli.main import main
 from nl2hltl2plan.config import data_dir
 from nl2hltl2plan.errors import DataError, LLMError
 from nl2hltl2plan.language.llm import LLMClient, LLMSettings, extract_json
-from nl2hltl2plan.worlds import affordances, alfred, smartllm, team
+from nl2hltl2plan.suites.smartllm import smartllm_tasks as smartllm
+from nl2hltl2plan.worlds import affordances, team
+from nl2hltl2plan.worlds import floor_plans as alfred
 
 ROOT = Path(__file__).parents[2]
 PLATES = "put the plates in the lower rack"

@@ -18,7 +18,7 @@ import pytest
 from nl2hltl2plan.cli.main import main
 from nl2hltl2plan.errors import DataError
 from nl2hltl2plan.io import atomic_path, read_json, save_figure, write_json
-from nl2hltl2plan.language.learned import model as slot_model
+from nl2hltl2plan.language.learned import slot_model
 from nl2hltl2plan.language.learned.inference import load_model
 from nl2hltl2plan.language.llm.batch import BatchCollector
 

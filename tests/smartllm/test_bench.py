@@ -6,7 +6,7 @@ import json
 import pytest
 
 from nl2hltl2plan.cli.bench_smartllm import register
-from nl2hltl2plan.evaluation.smartllm import (
+from nl2hltl2plan.suites.smartllm.smartllm_bench import (
     llm_maker,
     oracle_maker,
     robot_utilisation,
@@ -14,7 +14,7 @@ from nl2hltl2plan.evaluation.smartllm import (
     stages,
     summarize,
 )
-from nl2hltl2plan.worlds.smartllm import load_tasks, parse_task
+from nl2hltl2plan.suites.smartllm.smartllm_tasks import load_tasks, parse_task
 
 pytestmark = pytest.mark.data  # SMART-LLM's tasks and robot profiles
 
@@ -111,7 +111,7 @@ def test_mass_capacity_and_language_stage():
 def test_smartllm_script_scoring_counts_as_end_thread_does():
     """SMART-LLM's own script: one task per entry, +1 per match (GCR can pass 1, then TC = 0), no BROKEN
     check, raw names, RU unclipped; tasks without a stage annotation are left out of SR."""
-    from nl2hltl2plan.evaluation.smartllm_script import script_ru
+    from nl2hltl2plan.suites.smartllm.smartllm_script import script_ru
 
     tasks = {t.id: t for t in load_tasks()}
     plate = run_task(tasks["FloorPlan15#5"], oracle_maker, timeout_s=20)  # a plate holding egg and tomato

@@ -4,8 +4,8 @@ import pytest
 
 from nl2hltl2plan.worlds import execute
 from nl2hltl2plan.worlds.checker import final_conditions
-from nl2hltl2plan.worlds.model import Affordances, World, WorldObject
 from nl2hltl2plan.worlds.scripted import scripted_plan
+from nl2hltl2plan.worlds.world import Affordances, World, WorldObject
 
 SMALL = frozenset({"Mug", "Potato", "BreadSliced", "Vase", "Bowl"})
 AFF = {

@@ -5,8 +5,8 @@ import json
 import pytest
 
 from nl2hltl2plan.errors import DataError, PlanningError
-from nl2hltl2plan.worlds.model import Affordances, World, WorldObject
 from nl2hltl2plan.worlds.team import RobotProfile, Team, parse_team, smartllm_profiles
+from nl2hltl2plan.worlds.world import Affordances, World, WorldObject
 
 
 @pytest.fixture(scope="module")

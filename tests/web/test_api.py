@@ -67,7 +67,7 @@ def test_plan_returns_the_json_of_plan_json(planned, capsys):
 
 
 def test_downloads_are_the_files_of_plan_o(client, planned):
-    from nl2hltl2plan.outputs import output_names
+    from nl2hltl2plan.present.outputs import output_names
 
     written = sorted(output_names(has_plan=True))  # `plan -o` writes these (tests/language/test_pipeline_cli)
     key = planned.headers["X-Outcome-Id"]

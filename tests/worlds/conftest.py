@@ -32,6 +32,6 @@ def demo():
 @pytest.fixture(scope="session")
 def gt_instances():
     require_data()
-    from nl2hltl2plan.worlds.benchmark import load_gt
+    from nl2hltl2plan.suites.alfred.ground_truth import load_gt
 
     return load_gt()

@@ -2,9 +2,9 @@
 
 import pytest
 
+from nl2hltl2plan.suites.alfred.ground_truth import gt_instance
 from nl2hltl2plan.worlds import check, execute
-from nl2hltl2plan.worlds.alfred import benchmark_issues, build_benchmark_world
-from nl2hltl2plan.worlds.benchmark import gt_instance
+from nl2hltl2plan.worlds.floor_plans import benchmark_issues, build_benchmark_world
 from nl2hltl2plan.worlds.scripted import scripted_plan, sequential_plan
 from nl2hltl2plan.worlds.starts import start_cells
 
@@ -172,7 +172,7 @@ def test_start_cells_use_init_pos(data):
 
 
 def test_all_floor_plans_build_and_report_what_they_cannot_place(data):
-    from nl2hltl2plan.worlds.alfred import floor_plans, load_floor_plan, scene_types
+    from nl2hltl2plan.worlds.floor_plans import floor_plans, load_floor_plan, scene_types
 
     names = floor_plans()
     assert len(names) == 120
@@ -202,7 +202,7 @@ def test_floor_plan_world_details(data):
         with pytest.raises(WorldError):
             load_world(bad)
     with pytest.raises(WorldError, match="is in FloorPlan1, not FloorPlan17"):
-        from nl2hltl2plan.worlds.alfred import default_trial
+        from nl2hltl2plan.worlds.floor_plans import default_trial
 
         load_world("FloorPlan17", trials=[default_trial("FloorPlan1")])
 

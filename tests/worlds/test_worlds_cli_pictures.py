@@ -4,8 +4,8 @@ import pytest
 
 from nl2hltl2plan.cli.main import main
 from nl2hltl2plan.errors import WorldError
+from nl2hltl2plan.present.pictures import animate_execution, draw_execution, draw_world
 from nl2hltl2plan.worlds import execute
-from nl2hltl2plan.worlds.pictures import animate_execution, draw_execution, draw_world
 from nl2hltl2plan.worlds.scripted import scripted_plan
 
 

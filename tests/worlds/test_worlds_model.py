@@ -3,7 +3,7 @@ import pytest
 
 from nl2hltl2plan.errors import WorldError
 from nl2hltl2plan.worlds import CELL_M, VISIBILITY_M, World, WorldObject, load_world
-from nl2hltl2plan.worlds.model import Affordances
+from nl2hltl2plan.worlds.world import Affordances
 
 
 def test_cell_xz_roundtrip(demo):

@@ -1,9 +1,9 @@
 import pytest
 
 from nl2hltl2plan.errors import WorldError
+from nl2hltl2plan.logic.action_sequences import sequences_formula
 from nl2hltl2plan.worlds import BaseTask, GTInstance, check, execute
 from nl2hltl2plan.worlds.scripted import scripted_plan
-from nl2hltl2plan.worlds.tasks import sequences_formula
 
 DISHWASHER_GT = {
     "id": "demo.dishwasher",

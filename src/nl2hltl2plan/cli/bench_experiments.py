@@ -22,7 +22,7 @@ from typing import Any
 from nl2hltl2plan.argtypes import int_in, seed
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.language.backends import BACKENDS
-from nl2hltl2plan.language.options import add_llm_arguments, llm_settings
+from nl2hltl2plan.language.llm.llm_options import add_llm_arguments, llm_settings
 
 MAX_INSTANCES = 1000  # the paper runs 25 (tabletop) and 10 (handover); each takes a planner call
 
@@ -30,16 +30,17 @@ MAX_INSTANCES = 1000  # the paper runs 25 (tabletop) and 10 (handover); each tak
 def register(sub: Any) -> None:
     """Add `tabletop` and `handover` parsers to a subparsers object."""
     studies = (
-        ("tabletop", "the paper's tabletop study (Table II)", 25, "the object layouts", run_tabletop),
+        ("tabletop", "the paper's tabletop study (Table II)", 25, "the object layouts", run_tabletop, None),
         (
             "handover",
             "the paper's four-arm handover study (Table III)",
             10,
             "block placements and arm poses",
             run_handover,
+            _handover_arguments,
         ),
     )
-    for name, title, instances, seeded, func in studies:
+    for name, title, instances, seeded, func, own_arguments in studies:
         p = sub.add_parser(name, help=title)
         p.add_argument("-o", "--out", type=Path, required=True, help="output folder")
         p.add_argument(
@@ -56,22 +57,27 @@ def register(sub: Any) -> None:
             help="LLM-as-planner baseline: auto (default; when an LLM is configured), llm, none",
         )
         add_llm_arguments(p)
-        if name == "handover":
-            p.add_argument(
-                "--llm",
-                choices=BACKENDS,
-                default=None,
-                help="plan each instance from this language backend's spec of the instruction (the whole "
-                "pipeline) instead of the written spec; rows say language_equal",
-            )
-            p.add_argument(
-                "--expansions",
-                type=int_in(1, 10_000_000),  # bounded: a budget, not a way to run forever
-                default=None,  # the planner's own (planning.coop.MAX_EXPANSIONS), read when the bench runs
-                help="planner budget per instance in expansions (deterministic; default: the cooperative "
-                "planner's own, planning.coop.MAX_EXPANSIONS)",
-            )
+        if own_arguments is not None:
+            own_arguments(p)
         p.set_defaults(func=func)
+
+
+def _handover_arguments(p: argparse.ArgumentParser) -> None:
+    """The handover study's own options: a language backend instead of the written specs, and a budget."""
+    p.add_argument(
+        "--llm",
+        choices=BACKENDS,
+        default=None,
+        help="plan each instance from this language backend's spec of the instruction (the whole "
+        "pipeline) instead of the written spec; rows say language_equal",
+    )
+    p.add_argument(
+        "--expansions",
+        type=int_in(1, 10_000_000),  # bounded: a budget, not a way to run forever
+        default=None,  # the planner's own (planning.coop.MAX_EXPANSIONS), read when the bench runs
+        help="planner budget per instance in expansions (deterministic; default: the cooperative "
+        "planner's own, planning.coop.MAX_EXPANSIONS)",
+    )
 
 
 @contextlib.contextmanager
@@ -93,7 +99,7 @@ def _llm_client(args: argparse.Namespace) -> Iterator[Any]:
 
 
 def run_tabletop(args: argparse.Namespace) -> int:
-    from nl2hltl2plan.evaluation.tabletop import run_bench
+    from nl2hltl2plan.suites.tabletop.tabletop_bench import run_bench
 
     with _llm_client(args) as client:
         summary = run_bench(args.out, instances=args.instances, seed=args.seed, client=client)
@@ -113,8 +119,8 @@ def _errored_exit(errored: int) -> int:
 
 
 def run_handover(args: argparse.Namespace) -> int:
-    from nl2hltl2plan.evaluation.handover import run_bench
     from nl2hltl2plan.planning.coop import MAX_EXPANSIONS
+    from nl2hltl2plan.suites.handover.handover_bench import run_bench
 
     with _llm_client(args) as client:
         summary = run_bench(

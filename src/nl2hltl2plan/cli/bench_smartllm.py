@@ -18,7 +18,7 @@ from typing import Any
 
 from nl2hltl2plan.argtypes import seconds
 from nl2hltl2plan.cli.options import add_backend_argument
-from nl2hltl2plan.language.options import add_llm_arguments, llm_settings
+from nl2hltl2plan.language.llm.llm_options import add_llm_arguments, llm_settings
 
 
 def register(bench_subparsers: Any) -> None:
@@ -57,7 +57,13 @@ def register(bench_subparsers: Any) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from nl2hltl2plan.evaluation.smartllm import METRICS, SpecMaker, llm_maker, oracle_maker, run_bench
+    from nl2hltl2plan.suites.smartllm.smartllm_bench import (
+        METRICS,
+        SpecMaker,
+        llm_maker,
+        oracle_maker,
+        run_bench,
+    )
 
     def progress(row: dict[str, Any]) -> None:
         if not args.quiet:
@@ -69,11 +75,10 @@ def run(args: argparse.Namespace) -> int:
         if args.oracle:
             maker, label = oracle_maker, "oracle"
         else:
-            client = None
-            if args.llm != "offline":
-                from nl2hltl2plan.language.backends import open_client
+            from nl2hltl2plan.language.backends import open_client
 
-                client = stack.enter_context(open_client(args.llm, llm_settings(args)))
+            # None for the backends that need no LLM (`parsers.PARSERS`)
+            client = stack.enter_context(open_client(args.llm, llm_settings(args)))
             maker, label = llm_maker(args.llm, client), f"language backend {args.llm}"
         summary = run_bench(
             args.out, maker, label, args.timeout, progress, args.objective, _masses(args.masses)

@@ -31,9 +31,9 @@ from nl2hltl2plan.cli.options import (
     planner_options,
 )
 from nl2hltl2plan.errors import PlanningError
-from nl2hltl2plan.evaluation.ray_engine import ENGINES, run_with_engine
-from nl2hltl2plan.evaluation.runner import Row, Scenario, is_errored
 from nl2hltl2plan.io import ensure_writable_dir, write_json
+from nl2hltl2plan.suites.ray_engine import ENGINES, run_with_engine
+from nl2hltl2plan.suites.runner import Row, Scenario, is_errored
 
 if TYPE_CHECKING:  # the pipeline (scipy, Spot) loads only when a benchmark runs, not for --help
     from nl2hltl2plan.pipeline import PipelineOptions
@@ -122,17 +122,17 @@ def register(sub: Any) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from nl2hltl2plan.evaluation.alfred import alfred_scenarios, oracle_job, preload
-    from nl2hltl2plan.evaluation.report import format_table
-    from nl2hltl2plan.evaluation.report_md import (
+    from nl2hltl2plan.pipeline import PipelineOptions
+    from nl2hltl2plan.suites.alfred.alfred_bench import alfred_scenarios, oracle_job, preload
+    from nl2hltl2plan.suites.alfred.alfred_report import (
         failures_markdown,
         machine_description,
         table1_markdown,
         write_report,
     )
-    from nl2hltl2plan.evaluation.rows import rows_of
-    from nl2hltl2plan.pipeline import PipelineOptions
-    from nl2hltl2plan.worlds.benchmark import load_gt
+    from nl2hltl2plan.suites.alfred.ground_truth import load_gt
+    from nl2hltl2plan.suites.rows import rows_of
+    from nl2hltl2plan.suites.summaries import format_table
 
     out: Path = ensure_writable_dir(args.out)
     gts = {g.id: g for g in load_gt(args.gt)}  # a bad --gt file is refused before the data loads
@@ -217,8 +217,8 @@ def _language_job(
     options: PipelineOptions,
 ) -> Callable[[Scenario], Row]:
     """Phase 1 in this process (an LLM is asked once per instruction), phase 2 in the workers."""
-    from nl2hltl2plan.evaluation.language_bench import language_job, translate_instances
     from nl2hltl2plan.language.backends import open_client
+    from nl2hltl2plan.suites.alfred.alfred_language import language_job, translate_instances
 
     settings = llm_settings(args)
     ids = list(dict.fromkeys(s.instance for s in scenarios))

@@ -211,8 +211,8 @@ def _ask_on_terminal(ambiguities: list[Any]) -> dict[str, str]:
 
 
 def _print_human(outcome: Any) -> None:
-    from nl2hltl2plan.language.render import htt_lines
-    from nl2hltl2plan.worlds.tasks import SLOTS
+    from nl2hltl2plan.domain.task_kinds import SLOTS
+    from nl2hltl2plan.present.htt_pictures import htt_lines
 
     lang, r = outcome.language, outcome.result
     print(f"backend: {lang.backend}   world: {outcome.world.name}   team: {outcome.team}")
@@ -259,8 +259,8 @@ def _print_human(outcome: Any) -> None:
 
 def _write_outputs(folder: Path, outcome: Any, payload: dict[str, Any]) -> None:
     """result.json, the spec (JSON and HOA) and the pictures (PNG and SVG), all drawn from the outcome
-    (nothing is re-run): the same files the web page offers for download (`outputs.write_outputs`)."""
-    from nl2hltl2plan.outputs import write_outputs
+    (nothing is re-run): the same files the web page offers for download (`present.outputs.write_outputs`)."""
+    from nl2hltl2plan.present.outputs import write_outputs
 
     for warning in write_outputs(folder, outcome, payload):
         print(f"warning: {warning}", file=sys.stderr)

@@ -63,9 +63,9 @@ def run(args: argparse.Namespace) -> int:
 
 
 def draw_tree(g: nx.DiGraph, labels: dict[str, str], out: str, root: str | None = None) -> None:
-    """The package's one tree drawing (`language.render.draw_tree`) on a graph with decomposition
+    """The package's one tree drawing (`present.htt_pictures.draw_tree`) on a graph with decomposition
     edges and `before` relations."""
-    from nl2hltl2plan.language.render import draw_tree as render_tree
+    from nl2hltl2plan.present.htt_pictures import draw_tree as render_tree
 
     children: dict[str, list[str]] = {n: [] for n in g.nodes}
     relations = []

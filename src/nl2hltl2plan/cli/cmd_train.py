@@ -43,7 +43,7 @@ def register(sub: Any) -> None:
 def run(args: argparse.Namespace) -> int:
     from nl2hltl2plan.io import check_output_file
     from nl2hltl2plan.language.learned import structure_train
-    from nl2hltl2plan.language.learned.model import user_model_path
+    from nl2hltl2plan.language.learned.slot_model import user_model_path
     from nl2hltl2plan.language.learned.structure import user_structure_path
     from nl2hltl2plan.language.learned.train import train_and_report
 

@@ -65,8 +65,8 @@ def _load(args):
     from nl2hltl2plan.worlds.tasks import GTInstance
 
     if ".tasks_" in args.name:
-        from nl2hltl2plan.worlds.alfred import build_benchmark_world
-        from nl2hltl2plan.worlds.benchmark import gt_instance
+        from nl2hltl2plan.suites.alfred.ground_truth import gt_instance
+        from nl2hltl2plan.worlds.floor_plans import build_benchmark_world
         from nl2hltl2plan.worlds.starts import start_cells
 
         if args.trials:
@@ -86,7 +86,7 @@ def _load(args):
 
 def run(args: argparse.Namespace) -> int:
     from nl2hltl2plan.worlds import check, execute
-    from nl2hltl2plan.worlds.alfred import benchmark_issues
+    from nl2hltl2plan.worlds.floor_plans import benchmark_issues
 
     if args.gif and not args.run:
         raise WorldError("--gif needs --run")
@@ -114,7 +114,7 @@ def run(args: argparse.Namespace) -> int:
         result = check(execution, gt)
         out["run"] = {**execution.to_dict(), "check": result.model_dump()}
     if args.out:
-        from nl2hltl2plan.worlds.pictures import draw_execution, draw_world
+        from nl2hltl2plan.present.pictures import draw_execution, draw_world
 
         if execution is not None:
             draw_execution(execution, args.out)
@@ -122,7 +122,7 @@ def run(args: argparse.Namespace) -> int:
             draw_world(world, args.out, regions=args.regions)
         out["picture"] = args.out
     if args.gif and execution is not None:
-        from nl2hltl2plan.worlds.pictures import animate_execution
+        from nl2hltl2plan.present.pictures import animate_execution
 
         animate_execution(execution, args.gif)
         out["gif"] = args.gif

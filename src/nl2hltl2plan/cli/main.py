@@ -19,6 +19,7 @@ from typing import NoReturn
 
 from nl2hltl2plan import __version__
 from nl2hltl2plan.cli.commands import COMMANDS
+from nl2hltl2plan.config import debug
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 
 
@@ -112,7 +113,7 @@ def _run(argv: list[str] | None) -> int:
             where = ".".join(str(x) for x in err["loc"])
             print(f"error: invalid {where}: {err['msg']}", file=sys.stderr)
             return 2
-        if os.environ.get("NL2HLTL2PLAN_DEBUG"):
+        if debug():
             raise
         print(
             f"internal error: {type(exc).__name__}: {_one_line(str(exc))} (a bug: please report it with "

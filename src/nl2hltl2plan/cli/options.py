@@ -1,5 +1,5 @@
 """Options that several commands share, declared once: the backend choice and the planner group (the
-LLM group is `language.options`; value types that refuse bad numbers are `argtypes`)."""
+LLM group is `language.llm.llm_options`; value types that refuse bad numbers are `argtypes`)."""
 
 from __future__ import annotations
 
@@ -8,7 +8,7 @@ from typing import Any
 
 from nl2hltl2plan.argtypes import int_in, ints_in, seconds
 from nl2hltl2plan.language.backends import BACKENDS
-from nl2hltl2plan.language.options import add_llm_arguments, llm_settings
+from nl2hltl2plan.language.llm.llm_options import add_llm_arguments, llm_settings
 
 
 def add_backend_argument(

@@ -1,2 +1,3 @@
-"""The vocabulary every stage shares, below the worlds: the state an object can be in (`object_state`).
+"""The vocabulary every stage shares, below the worlds: the state an object can be in (`object_state`)
+and the task ontology: kinds of base task, their slots, states and goals (`task_kinds`).
 The action atom itself lives in `logic.atom` (a spec's leaves are made of atoms)."""

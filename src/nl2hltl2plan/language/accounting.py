@@ -8,7 +8,7 @@ the base tasks do not use, and per slot of a base task that no word of the instr
 invented object or place). Counts the scene cannot satisfy (zero, or more than it holds) and cyclic
 orders are input errors (`HTTError`), whatever the backend made of them.
 
->>> from nl2hltl2plan.language.tasks import BaseTaskSpec
+>>> from nl2hltl2plan.language.task_specs import BaseTaskSpec
 >>> cup = BaseTaskSpec(kind="heat_place", object=["Cup"], receptacle=["Microwave"])
 >>> [u.words for u in account("heat a cup of coffee in the microwave", [cup], [])]
 ['coffee']
@@ -25,12 +25,12 @@ from importlib import resources
 
 import networkx as nx
 
+from nl2hltl2plan.domain.task_kinds import APPLIANCE, slots_of
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.grounding import Mention, camel_words, find_mentions, lexicon, tokens
-from nl2hltl2plan.language.tasks import BaseTaskSpec, ConstraintSpec
+from nl2hltl2plan.language.task_specs import BaseTaskSpec, ConstraintSpec
 from nl2hltl2plan.logic.atom import Atom
-from nl2hltl2plan.worlds.model import KNIFE_TYPES
-from nl2hltl2plan.worlds.tasks import APPLIANCE, slots_of
+from nl2hltl2plan.worlds.world import KNIFE_TYPES
 
 # the appliances a kind of task implies, beyond the destination ("heat it on the stove")
 IMPLIED_TYPES = {

@@ -6,10 +6,10 @@ import contextlib
 from collections.abc import Callable, Iterator
 from typing import Literal, get_args
 
+from nl2hltl2plan.config.llm_settings import LLMSettings
 from nl2hltl2plan.errors import LLMError
 from nl2hltl2plan.language.llm.batch import BatchCollector
 from nl2hltl2plan.language.llm.client import LLMClient
-from nl2hltl2plan.language.llm.settings import LLMSettings
 from nl2hltl2plan.language.parsers import PARSERS  # the backends that need no LLM
 
 Backend = Literal["offline", "learned", "grammar", "local", "openai"]
@@ -45,14 +45,30 @@ def open_client(
     if backend in PARSERS:
         yield None
         return
-    if backend == "openai":
-        if not settings.configured and batch is None:
-            raise LLMError(
-                "no LLM configured: set NL2HLTL2PLAN_LLM_BASE_URL and/or NL2HLTL2PLAN_LLM_API_KEY "
-                "(or --base-url / --api-key), or use --llm local / --llm offline"
-            )
-        yield LLMClient(settings, batch=batch, on_request=on_request)
-        return
+    if backend not in LLM_CLIENTS:
+        raise LLMError(f"unknown LLM backend {backend!r}; choose one of {', '.join(BACKENDS)}")
+    with LLM_CLIENTS[backend](settings, batch, on_request) as client:
+        yield client
+
+
+@contextlib.contextmanager
+def _server_client(
+    settings: LLMSettings, batch: BatchCollector | None, on_request: Callable[[str], None] | None
+) -> Iterator[LLMClient]:
+    """`openai`: any OpenAI-compatible server the settings name."""
+    if not settings.configured and batch is None:
+        raise LLMError(
+            "no LLM configured: set NL2HLTL2PLAN_LLM_BASE_URL and/or NL2HLTL2PLAN_LLM_API_KEY "
+            "(or --base-url / --api-key), or use --llm local / --llm offline"
+        )
+    yield LLMClient(settings, batch=batch, on_request=on_request)
+
+
+@contextlib.contextmanager
+def _local_client(
+    settings: LLMSettings, batch: BatchCollector | None, on_request: Callable[[str], None] | None
+) -> Iterator[LLMClient]:
+    """`local`: a llama.cpp server on a GGUF file, started for the length of the run."""
     from nl2hltl2plan.language.llm.local_server import LocalServer, smollm2_path
 
     gguf = settings.gguf or smollm2_path()
@@ -67,6 +83,10 @@ def open_client(
         return
     with LocalServer(gguf, threads=settings.threads, ctx=settings.ctx) as server:
         yield LLMClient(local.model_copy(update={"base_url": server.base_url}), on_request=on_request)
+
+
+# the backends that talk to an LLM, by name (those that need none are `parsers.PARSERS`)
+LLM_CLIENTS = {"openai": _server_client, "local": _local_client}
 
 
 def load_batch_answers(path: str, settings: LLMSettings) -> tuple[int, list[str]]:

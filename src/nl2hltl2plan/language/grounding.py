@@ -16,7 +16,7 @@ from functools import lru_cache
 from importlib import resources
 
 from nl2hltl2plan.errors import WorldError
-from nl2hltl2plan.worlds.model import Affordances
+from nl2hltl2plan.worlds.world import Affordances
 
 # AI2-THOR object types (ALFRED's list plus the few AI2-THOR 5 scenes add).
 THOR_TYPES: tuple[str, ...] = (

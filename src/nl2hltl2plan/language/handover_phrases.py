@@ -4,7 +4,7 @@ A sentence is read in passes. Noun phrases first become placeholders: blocks (`B
 pillars", "red and blue blocks", "each object"), places (`P0`: "region H, I and J", "the opposite
 side", "any empty region", "the side of arm a and arm b", "where the red block is", "the area other
 than the target region") and arms (`A`: "the robot arm", "any of the arms"). Then the clause
-patterns of `language.handover` consume placeholders and words. Whatever a pass leaves unread is a
+patterns of `language.handover_reading` consume placeholders and words. Whatever a pass leaves unread is a
 refusal naming the words: nothing is silently dropped.
 
 Places resolve against the instance: "the opposite" is, per block, the labelled regions on the other
@@ -19,8 +19,8 @@ from dataclasses import dataclass, field
 from typing import Literal
 
 from nl2hltl2plan.errors import HTTError, WorldError
-from nl2hltl2plan.worlds.handover import REGIONS, Layout, layout
-from nl2hltl2plan.worlds.model import Cell, World
+from nl2hltl2plan.worlds.handover_world import REGIONS, Layout, layout
+from nl2hltl2plan.worlds.world import Cell, World
 
 COLOURS = ("red", "blue", "yellow")
 COUNTS = {"two": 2, "three": 3, "four": 4, "both": 2, "2": 2, "3": 3, "4": 4}

@@ -11,7 +11,7 @@ import networkx as nx
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.htt import HTT, HTTNode
-from nl2hltl2plan.language.tasks import BaseTaskSpec, transitive_closure, transitive_reduction
+from nl2hltl2plan.language.task_specs import BaseTaskSpec, transitive_closure, transitive_reduction
 
 
 def n_leaves(task: BaseTaskSpec) -> int:

@@ -8,10 +8,10 @@ from __future__ import annotations
 import re
 from collections.abc import Sequence
 
+from nl2hltl2plan.config.llm_settings import translator_settings
 from nl2hltl2plan.errors import FormulaError
 from nl2hltl2plan.language import stages
 from nl2hltl2plan.language.llm.client import LLMClient
-from nl2hltl2plan.language.llm.settings import translator_settings
 from nl2hltl2plan.language.spec_builder import GenerateLTL
 from nl2hltl2plan.logic.relations import check_translation, compile_relations
 

@@ -32,7 +32,7 @@ from dataclasses import dataclass
 from nl2hltl2plan.language.accounting import stems
 from nl2hltl2plan.language.grounding import AffordanceLookup, Grounder, Mention, find_mentions, tokens
 from nl2hltl2plan.language.spec_builder import spec_name
-from nl2hltl2plan.language.tasks import BaseTaskSpec, ConstraintSpec
+from nl2hltl2plan.language.task_specs import BaseTaskSpec, ConstraintSpec
 from nl2hltl2plan.logic.constraints import Constraint
 
 CUES = {

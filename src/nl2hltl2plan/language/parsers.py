@@ -5,7 +5,7 @@ CLI starts without the parsers.
 
 - `offline` (the default; `learned` is its former name): the grammar parser with the learned
   structure and slot models (`language.learned`);
-- `grammar`: the grammar parser alone (`language.offline`).
+- `grammar`: the grammar parser alone (`language.grammar`).
 
 >>> sorted(PARSERS)
 ['grammar', 'learned', 'offline']
@@ -17,8 +17,8 @@ import importlib
 from typing import TYPE_CHECKING, Protocol
 
 if TYPE_CHECKING:
+    from nl2hltl2plan.language.grammar import OfflineParse
     from nl2hltl2plan.language.grounding import AffordanceLookup
-    from nl2hltl2plan.language.offline import OfflineParse
 
 
 class Parser(Protocol):
@@ -46,5 +46,5 @@ _OFFLINE = _lazy("nl2hltl2plan.language.learned")
 PARSERS: dict[str, Parser] = {
     "offline": _OFFLINE,
     "learned": _OFFLINE,
-    "grammar": _lazy("nl2hltl2plan.language.offline"),
+    "grammar": _lazy("nl2hltl2plan.language.grammar"),
 }

@@ -5,7 +5,7 @@ from __future__ import annotations
 from pydantic import BaseModel, ConfigDict, Field
 
 from nl2hltl2plan.language.htt import HTT
-from nl2hltl2plan.language.tasks import BaseTaskSpec, ConstraintSpec
+from nl2hltl2plan.language.task_specs import BaseTaskSpec, ConstraintSpec
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec, LeafOrFormula, format_spec
 
 

@@ -15,7 +15,7 @@ from typing import Any
 
 from pydantic import BaseModel, Field
 
-from nl2hltl2plan.language.tasks import BaseTaskSpec, transitive_closure
+from nl2hltl2plan.language.task_specs import BaseTaskSpec, transitive_closure
 
 
 class MatchResult(BaseModel):

@@ -23,10 +23,10 @@ from typing import Any, Protocol
 
 import networkx as nx
 
+from nl2hltl2plan.domain.task_kinds import APPLIANCE
 from nl2hltl2plan.language.grounding import THOR_TYPES, find_mentions, lookup, tokens
 from nl2hltl2plan.logic.atom import Atom
-from nl2hltl2plan.worlds.model import KNIFE_TYPES, sliced_type
-from nl2hltl2plan.worlds.tasks import APPLIANCE
+from nl2hltl2plan.worlds.world import KNIFE_TYPES, sliced_type
 
 
 def _action(text: str) -> Atom | None:

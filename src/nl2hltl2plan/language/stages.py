@@ -24,14 +24,14 @@ from typing import Annotated, TypeVar
 
 from pydantic import BaseModel, Field, field_validator, model_validator
 
+from nl2hltl2plan.domain.task_kinds import State
 from nl2hltl2plan.errors import LLMError
 from nl2hltl2plan.language import semantic_check
 from nl2hltl2plan.language.llm.client import LLMClient, Validator
 from nl2hltl2plan.language.prompts import load_prompt
-from nl2hltl2plan.language.tasks import Kind
+from nl2hltl2plan.language.task_specs import Kind
 from nl2hltl2plan.logic.atom import Atom
 from nl2hltl2plan.worlds.plan import ACTION_ARITY
-from nl2hltl2plan.worlds.tasks import State
 
 MAX_TASKS = 12
 MAX_TEXT = 300  # characters of a task's text

@@ -16,7 +16,7 @@ import re
 
 from nl2hltl2plan.errors import WorldError
 from nl2hltl2plan.language.grounding import Grounder
-from nl2hltl2plan.language.tasks import BaseTaskSpec
+from nl2hltl2plan.language.task_specs import BaseTaskSpec
 
 _DET = r"(?:the|a|an|my|that|this)\s+"
 _PATTERNS: tuple[tuple[str, str], ...] = (
@@ -70,7 +70,7 @@ def read_unparsed_states(
     """The state tasks among the parser's unread clauses (ids from `first_id` on: 0 = A) and the
     messages left unread."""
     from nl2hltl2plan.language.learned.rescue import failed_clauses
-    from nl2hltl2plan.language.tasks import task_letter
+    from nl2hltl2plan.language.task_specs import task_letter
 
     tasks: list[BaseTaskSpec] = []
     left: list[str] = []

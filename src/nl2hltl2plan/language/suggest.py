@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from nl2hltl2plan.language.grounding import camel_words, find_mentions
 from nl2hltl2plan.language.result import LanguageResult
-from nl2hltl2plan.worlds.model import World
+from nl2hltl2plan.worlds.world import World
 
 MAX_SUGGESTIONS = 3
 

@@ -2,7 +2,7 @@
 
 `translate(instruction, world, backend, client)` returns a `LanguageResult`:
 
-- `offline` (alias `learned`): the grammar parser (`offline/`) with the slot model trained on ALFRED's
+- `offline` (alias `learned`): the grammar parser (`grammar/`) with the slot model trained on ALFRED's
   annotations (`learned/`), which reads the clauses the grammar could not and ranks multi-type words
   (`ambiguities`); leaf actions from the worlds' recipes; deterministic;
 - `grammar`: the grammar parser alone;
@@ -12,6 +12,9 @@
 
 Algorithm 1 (`spec_builder.build_spec`) then turns the HTT into the hierarchical spec, with the exact
 relation compiler as GenerateLTL unless `ltl` asks for an LLM / learned translator.
+
+Each step takes the result so far and returns a new one (`model_copy`); nothing is changed in place, so
+a caller that keeps an earlier result (the parse before the user's choices, say) keeps it as it was.
 """
 
 from __future__ import annotations
@@ -19,10 +22,11 @@ from __future__ import annotations
 import contextlib
 from collections import Counter
 from collections.abc import Callable, Iterator
-from typing import Literal, Protocol
+from typing import Literal, Protocol, Self, TypeVar
 
+from nl2hltl2plan.domain.task_kinds import SLOTS
 from nl2hltl2plan.errors import HTTError, LLMError, Nl2Hltl2PlanError, WorldError
-from nl2hltl2plan.language import handover, stages
+from nl2hltl2plan.language import handover_reading, stages
 from nl2hltl2plan.language.accounting import account, take_every_instance
 from nl2hltl2plan.language.grounding import AffordanceLookup, Grounder, world_lookup
 from nl2hltl2plan.language.htt_build import build_htt
@@ -42,11 +46,11 @@ from nl2hltl2plan.language.scoring import match
 from nl2hltl2plan.language.spec_builder import GenerateLTL, build_spec
 from nl2hltl2plan.language.state_tasks import read_unparsed_states, state_orderings
 from nl2hltl2plan.language.suggest import not_understood, suggestion_text
-from nl2hltl2plan.language.tasks import BaseTaskSpec, ConstraintSpec, task_letter, transitive_reduction
+from nl2hltl2plan.language.task_specs import BaseTaskSpec, ConstraintSpec, task_letter, transitive_reduction
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec, LeafOrFormula
 from nl2hltl2plan.logic.relations import compile_relations
-from nl2hltl2plan.worlds.model import World
-from nl2hltl2plan.worlds.tasks import SLOTS, demand_of
+from nl2hltl2plan.worlds.tasks import demand_of
+from nl2hltl2plan.worlds.world import World
 
 LtlSource = Literal["compiler", "llm", "learned"]
 MAX_INSTRUCTION_CHARS = 2000  # about 300 words, 15 times the paper's longest; bounds the parser's time
@@ -102,8 +106,8 @@ def translate(
         raise HTTError("empty instruction")
     types = set(world.object_types()) if world is not None else None
     scene = world.name if world is not None else None
-    if backend in PARSERS and handover.is_handover(world):  # the four-arm worlds' own phrases
-        return handover.translate_handover(instruction, world)
+    if backend in PARSERS and handover_reading.is_handover(world):  # the four-arm worlds' own phrases
+        return handover_reading.translate_handover(instruction, world)
     if backend in PARSERS:
         look = world_lookup(world) if isinstance(world, World) else None
         grounder = Grounder(types, scene or "the scene")
@@ -112,24 +116,20 @@ def translate(
             raise HTTError(nothing_to_do(instruction, [n.spec for n in negations]))
         res = _parse(backend, rest, types, scene, strict, look, world)
         if negations:
-            _keep_negations(res, instruction, negations, grounder)
+            res = _keep_negations(res, instruction, negations, grounder)
         picked = dict(choices or {})
         if ask is not None and res.ambiguities:
             picked.update(ask(res.ambiguities))
-        apply_choices(res, picked)
-        account_words(res, world)
+        res = account_words(apply_choices(res, picked), world)
         with _refused_as_not_understood(res, world):
-            _finish(res, world, backend, client, ltl, actions, build)
-        return res
+            return _finish(res, world, backend, client, ltl, actions, build)
     if client is None:
         raise LLMError(f"backend {backend} needs an LLM client (see backends.open_client)")
     with client.instruction():  # one deadline for every request this instruction makes
         res = _llm(instruction, types, scene, client, strict)
-        _cross_check(res, types, scene)
-        account_words(res, world)
+        res = account_words(_cross_check(res, types, scene), world)
         with _refused_as_not_understood(res, world):
-            _finish(res, world, backend, client, ltl, actions, build)
-    return res
+            return _finish(res, world, backend, client, ltl, actions, build)
 
 
 def nothing_to_do(instruction: str, constraints: list[ConstraintSpec]) -> str:
@@ -141,23 +141,25 @@ def nothing_to_do(instruction: str, constraints: list[ConstraintSpec]) -> str:
 
 def _keep_negations(
     res: LanguageResult, instruction: str, negations: list[Negation], grounder: Grounder
-) -> None:
+) -> LanguageResult:
     """The parse of the instruction without its negated clauses, given back the whole instruction and
     the constraints those clauses state (an until-guard on the task its words name)."""
-    res.instruction = instruction
-    res.htt.instruction = instruction
-    res.htt.root.text = instruction
-    res.constraint_specs = [n.spec for n in resolve_until(negations, res.tasks, grounder)]
+    htt = res.htt.model_copy(deep=True)
+    htt.instruction = instruction
+    htt.root.text = instruction
+    constraints = [n.spec for n in resolve_until(negations, res.tasks, grounder)]
+    return res.model_copy(update={"instruction": instruction, "htt": htt, "constraint_specs": constraints})
 
 
-def account_words(res: LanguageResult, world: SceneLike | None) -> None:
+def account_words(res: LanguageResult, world: SceneLike | None) -> LanguageResult:
     """Check 1 (`accounting.account`), the same for every backend: each content word the base tasks
     do not use, and each slot no word names, goes to `unparsed` with its reason (the result is then
     partial). Counts the scene cannot satisfy and cyclic orders raise HTTError."""
     instances = scene_instances(world) if isinstance(world, World) else None
     scene = world.name if world is not None else "the scene"
-    for u in account(res.instruction, res.tasks, res.before, instances, scene, res.constraint_specs):
-        res.unparsed.append(str(u))
+    unread = account(res.instruction, res.tasks, res.before, instances, scene, res.constraint_specs)
+    words = [str(u) for u in unread]
+    return res.model_copy(update={"unparsed": [*res.unparsed, *words]}) if words else res
 
 
 def scene_instances(world: World) -> Counter[str]:
@@ -165,7 +167,7 @@ def scene_instances(world: World) -> Counter[str]:
     return Counter(o.type for o in world.objects.values() if o.present)
 
 
-def _cross_check(res: LanguageResult, types: set[str] | None, scene: str | None) -> None:
+def _cross_check(res: LanguageResult, types: set[str] | None, scene: str | None) -> LanguageResult:
     """The learned parser reads the instruction too; where its base tasks or orderings differ from the
     LLM's, the difference is reported (a warning: either may be the one that is wrong)."""
     from nl2hltl2plan.language import learned
@@ -173,13 +175,15 @@ def _cross_check(res: LanguageResult, types: set[str] | None, scene: str | None)
     try:
         own = learned.parse_instruction(res.instruction, types, scene or "the scene", strict=False)
     except Nl2Hltl2PlanError:
-        return
+        return res
     if not own.tasks:
-        return
+        return res
     verdict = match(res.tasks, res.before, [t.model_dump() for t in own.tasks], own.before, strict=False)
-    if not verdict.order_ok:
-        why = "; ".join(verdict.reasons[:2]) or "different base tasks"
-        res.warnings.append(f"the learned parser reads this instruction differently from the LLM: {why}")
+    if verdict.order_ok:
+        return res
+    why = "; ".join(verdict.reasons[:2]) or "different base tasks"
+    warning = f"the learned parser reads this instruction differently from the LLM: {why}"
+    return res.model_copy(update={"warnings": [*res.warnings, warning]})
 
 
 @contextlib.contextmanager
@@ -202,31 +206,58 @@ def _finish(
     ltl: LtlSource,
     actions: ActionSource,
     build: bool,
-) -> None:
+) -> LanguageResult:
     """Leaf actions (recipes or LLM action completion), then Algorithm 1."""
-    types = set(world.object_types()) if world is not None else None
-    scene = world.name if world is not None else None
-    res.backend = backend
     mode = actions if actions != "auto" else ("recipe" if backend in PARSERS else "llm")
-    if mode == "recipe" and isinstance(world, World):
-        res.leaf_specs = recipe_leaf_specs(res.tasks, world, res.leaf_task)
-    elif mode == "llm" and client is not None and types is not None:
-        res.leaf_specs = _llm_actions(res, client, types, scene or "the scene")
-    for n in res.htt.nodes:
-        spec = res.leaf_specs.get(n.id)
+    found = ACTION_SOURCES[mode](res, world, client)
+    leaf_specs = res.leaf_specs if found is None else found
+    htt = res.htt.model_copy(deep=True)
+    for n in htt.nodes:
+        spec = leaf_specs.get(n.id)
         if isinstance(spec, list):
             n.actions = list(spec)
-    if build and res.leaf_specs:
-        _attach_spec(res, ltl, client)
+    res = res.model_copy(update={"backend": backend, "leaf_specs": leaf_specs, "htt": htt})
+    if build and leaf_specs:
+        res = _attach_spec(res, ltl, client)
     if client is not None:
         st = client.stats
-        res.llm_calls = {
+        llm_calls = {
             "requests": st.requests,
             "sent": st.sent,
             "cached": st.cached,
             "reasks": st.reasks,
             "retries": st.retries,
         }
+        res = res.model_copy(update={"llm_calls": llm_calls})
+    return res
+
+
+LeafSpecs = dict[str, LeafOrFormula]
+LeafActions = Callable[[LanguageResult, "SceneLike | None", LLMClient | None], LeafSpecs | None]
+
+
+def _recipe_actions(
+    res: LanguageResult, world: SceneLike | None, client: LLMClient | None
+) -> LeafSpecs | None:
+    """Leaf actions from the worlds' recipes (None: a scene known only by its types has none)."""
+    return recipe_leaf_specs(res.tasks, world, res.leaf_task) if isinstance(world, World) else None
+
+
+def _completed_actions(
+    res: LanguageResult, world: SceneLike | None, client: LLMClient | None
+) -> LeafSpecs | None:
+    """Leaf actions by the LLM's action completion (None without a client or a scene)."""
+    if client is None or world is None:
+        return None
+    return _llm_actions(res, client, set(world.object_types()), world.name or "the scene")
+
+
+# where the leaves' actions come from (`actions=`; "auto" is recipe offline, llm otherwise)
+ACTION_SOURCES: dict[str, LeafActions] = {
+    "recipe": _recipe_actions,
+    "llm": _completed_actions,
+    "none": lambda res, world, client: None,
+}
 
 
 def recipe_leaf_specs(
@@ -304,18 +335,27 @@ class _Choosable(Protocol):
     tasks: list[BaseTaskSpec]
     ambiguities: list[Ambiguity]
 
+    def model_copy(self, *, update: dict | None = None, deep: bool = False) -> Self: ...
 
-def apply_choices(res: _Choosable, choices: dict[str, str]) -> None:
-    """A user's pick for an ambiguous slot (`plan --ask`): that slot becomes exactly the chosen type."""
+
+C = TypeVar("C", bound=_Choosable)  # a LanguageResult or a parser's OfflineParse
+
+
+def apply_choices(res: C, choices: dict[str, str]) -> C:
+    """A user's pick for an ambiguous slot (`plan --ask`): that slot becomes exactly the chosen type.
+    Returns the result with the picked slots set and their ambiguities gone."""
+    if not choices:
+        return res
     by_id = {t.id: t for t in res.tasks}
+    picks: dict[str, dict[str, list[str]]] = {}  # task id -> {role: [type]}
     for key, chosen in choices.items():
         task_id, _, role = key.partition(".")
-        task = by_id.get(task_id)
-        if task is None or role not in SLOTS:
+        if by_id.get(task_id) is None or role not in SLOTS:
             raise HTTError(f"cannot apply the choice {key}={chosen}: no task {task_id!r} with a {role!r}")
-        setattr(task, role, [chosen])
-    picked = {key.partition(".")[0] + "." + key.partition(".")[2] for key in choices}
-    res.ambiguities = [a for a in res.ambiguities if f"{a.task}.{a.role}" not in picked]
+        picks.setdefault(task_id, {})[role] = [chosen]
+    tasks = [t.model_copy(update=picks[t.id]) if t.id in picks else t for t in res.tasks]
+    ambiguities = [a for a in res.ambiguities if f"{a.task}.{a.role}" not in choices]
+    return res.model_copy(update={"tasks": tasks, "ambiguities": ambiguities})
 
 
 def _ground_fields(f: stages.TaskFields, g: Grounder | None, issues: list[str], strict: bool) -> BaseTaskSpec:
@@ -443,23 +483,34 @@ def _llm_actions(
     return out
 
 
-def _attach_spec(res: LanguageResult, ltl: LtlSource, client: LLMClient | None) -> None:
+def _attach_spec(res: LanguageResult, ltl: LtlSource, client: LLMClient | None) -> LanguageResult:
     """Algorithm 1 with our leaf specs and the chosen GenerateLTL."""
     missing = [n.id for n in res.htt.leaves() if n.id not in res.leaf_specs]
     if missing:
-        res.warnings.append(f"hierarchical spec not built: no actions for leaves {missing}")
-        return
-    generate: GenerateLTL = compile_relations
-    if ltl == "llm":
-        if client is None:
-            raise LLMError("--ltl llm needs an LLM backend (or use --ltl learned with a translator server)")
-        generate = llm_generate_ltl(client, client, res.ltl_checks)
-    elif ltl == "learned":
-        generate = llm_generate_ltl(client, translator_client(), res.ltl_checks)
-    elif ltl != "compiler":
+        warning = f"hierarchical spec not built: no actions for leaves {missing}"
+        return res.model_copy(update={"warnings": [*res.warnings, warning]})
+    if ltl not in LTL_SOURCES:
         raise LLMError(f"unknown LTL generator {ltl!r}: compiler, llm or learned")
-    spec = build_spec(res.htt, generate_ltl=generate, action_completion=lambda node: res.leaf_specs[node.id])
+    checks = list(res.ltl_checks)  # the LLM translations that differed from the compiler, appended
+    generate = LTL_SOURCES[ltl](client, checks)
+    leaf_specs = res.leaf_specs
+    spec = build_spec(res.htt, generate_ltl=generate, action_completion=lambda node: leaf_specs[node.id])
+    update: dict[str, object] = {"spec": spec, "ltl_checks": checks}
     if res.constraint_specs:  # the negations, beside the nodes (G !p, until-guards)
         spec = HierarchicalSpec(spec.levels, spec_constraints(res.constraint_specs, res.task_node))
-        res.constraints = sorted(c.describe() for c in spec.constraints)
-    res.spec = spec
+        update |= {"spec": spec, "constraints": sorted(c.describe() for c in spec.constraints)}
+    return res.model_copy(update=update)
+
+
+def _llm_ltl(client: LLMClient | None, checks: list[str]) -> GenerateLTL:
+    if client is None:
+        raise LLMError("--ltl llm needs an LLM backend (or use --ltl learned with a translator server)")
+    return llm_generate_ltl(client, client, checks)
+
+
+# GenerateLTL of Algorithm 1 (`ltl=`): the exact compiler, the LLM, or a learned translator server
+LTL_SOURCES: dict[str, Callable[[LLMClient | None, list[str]], GenerateLTL]] = {
+    "compiler": lambda client, checks: compile_relations,
+    "llm": _llm_ltl,
+    "learned": lambda client, checks: llm_generate_ltl(client, translator_client(), checks),
+}

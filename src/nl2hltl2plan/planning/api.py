@@ -28,7 +28,7 @@ from nl2hltl2plan.planning.results import (
 )
 from nl2hltl2plan.planning.search import NODE_BYTES, Deadline, ProgressHook, Searcher, SearchStats
 from nl2hltl2plan.planning.state import Expander, Node
-from nl2hltl2plan.worlds.model import CELL_M, Cell, World
+from nl2hltl2plan.worlds.world import CELL_M, Cell, World
 
 Mode = Literal["fast", "exact"]
 DEFAULT_TIMEOUT_S = 300.0

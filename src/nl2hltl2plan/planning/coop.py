@@ -6,7 +6,7 @@ picks it up there, and so on. This planner searches the joint state instead:
 
 - a state is (end-effector cell per arm, block held per arm, cell per block) plus the progress of the
   hierarchical spec: the DFA state of every unfinished leaf, which tasks are complete, and the DFA
-  state of non-leaves not in precedence form; leaves read *global* atoms (worlds/handover.py), so any
+  state of non-leaves not in precedence form; leaves read *global* atoms (worlds/handover_world.py), so any
   arm may serve any leaf, and leaf formulas may use negated atoms (`!pick(Blue) U pick(Red)`) and
   region occupancy (`drop(F)`, `empty(H)`, `at(Red,@Blue)`);
 - a move of the search is a macro: one arm walks a shortest path inside its reach (around the other
@@ -16,7 +16,7 @@ picks it up there, and so on. This planner searches the joint state instead:
   letter of its action, exactly what the executed plan shows step by step;
 - cost = end-effector moves + actions (pick/put), summed over arms; A* with an admissible transport
   bound (each block a leaf still needs at a place must be carried at least its grid distance there);
-- the plan returned is executed by `worlds.handover.execute_handover` and checked with
+- the plan returned is executed by `worlds.handover_world.execute_handover` and checked with
   `logic.trace.check_trace` before it is returned.
 
 A* is optimal for the macro model (arms act one at a time; a block is put only on a labelled region or
@@ -40,7 +40,7 @@ from nl2hltl2plan.errors import PlanningError
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.planning.coop_progress import Event, Progress, PState, leaf_targets
 from nl2hltl2plan.planning.results import PlanResult, PlanStatus
-from nl2hltl2plan.worlds.handover import (
+from nl2hltl2plan.worlds.handover_world import (
     ARMS,
     HandoverExecution,
     HandoverWorld,
@@ -49,8 +49,8 @@ from nl2hltl2plan.worlds.handover import (
     execute_handover,
     initial_snap,
 )
-from nl2hltl2plan.worlds.model import Cell
 from nl2hltl2plan.worlds.plan import Plan, RobotPlan, Step
+from nl2hltl2plan.worlds.world import Cell
 
 MAX_EXPANSIONS = 60_000
 
@@ -482,8 +482,8 @@ def plan_world(
     cells are given (else the world's). Options other than timeout_s (a last-resort stop) are ignored
     (the cooperative planner minimises moves + actions). `execution` stays None: the handover
     simulator's run is in `coop_plan`'s own result."""
-    from nl2hltl2plan.worlds.handover import HandoverWorld, layout
-    from nl2hltl2plan.worlds.model import CELL_M
+    from nl2hltl2plan.worlds.handover_world import HandoverWorld, layout
+    from nl2hltl2plan.worlds.world import CELL_M
 
     if getattr(world, "kind", "") != "handover":
         raise PlanningError(f"{getattr(world, 'name', world)} is not a handover world")

@@ -16,8 +16,8 @@ from nl2hltl2plan.errors import PlanningError, WorldError
 from nl2hltl2plan.logic import spot_backend as sb
 from nl2hltl2plan.logic.automaton import DEAD, Dfa
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
-from nl2hltl2plan.worlds.handover import HandoverWorld, Snap, compile_atom
-from nl2hltl2plan.worlds.model import Cell
+from nl2hltl2plan.worlds.handover_world import HandoverWorld, Snap, compile_atom
+from nl2hltl2plan.worlds.world import Cell
 
 Event = tuple[str, int, Cell] | None
 PState = tuple[tuple[int, ...], int, tuple[int, ...]]  # leaf DFA states, completed mask, non-leaf DFA states

@@ -14,7 +14,7 @@ from typing import Any, Protocol
 from nl2hltl2plan.errors import PlanningError
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.planning.results import PlanResult
-from nl2hltl2plan.worlds.model import Cell, World
+from nl2hltl2plan.worlds.world import Cell, World
 
 
 class Engine(Protocol):
@@ -43,7 +43,7 @@ class CooperativeEngine:
     ) -> PlanResult:
         from nl2hltl2plan.planning.coop import plan_world
 
-        if spec.constraints:  # its guards are compiled into the leaves (language/handover.py) instead
+        if spec.constraints:  # its guards are compiled into the leaves (language/handover_reading.py) instead
             raise PlanningError("the handover worlds' engine does not take constraints beside the spec "
                                 f"({spec.constraints[0].text!r}); state them as guards in the leaves")
         return plan_world(world, spec, starts, timeout_s=options.get("timeout_s"))

@@ -35,8 +35,8 @@ from nl2hltl2plan.logic.automaton import DEAD, Dfa
 from nl2hltl2plan.logic.constraints import Constraint, breach
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.worlds.checker import STATE_EVENTS
-from nl2hltl2plan.worlds.model import KNIFE_TYPES, Cell, World
 from nl2hltl2plan.worlds.plan import ACTION_ARITY
+from nl2hltl2plan.worlds.world import KNIFE_TYPES, Cell, World
 
 DONE = -2  # leaf / non-leaf state once its formula is satisfied
 MAX_PATHS = 12  # remaining action sequences kept per leaf state for the heuristic

@@ -11,8 +11,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from nl2hltl2plan.worlds.model import Cell, World
 from nl2hltl2plan.worlds.simulator import SimState
+from nl2hltl2plan.worlds.world import Cell, World
 
 INF = 1 << 30
 

@@ -13,11 +13,12 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from nl2hltl2plan.domain.task_kinds import APPLIANCE
 from nl2hltl2plan.errors import WorldError
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.logic.relations import compile_relations
-from nl2hltl2plan.worlds.model import World, sliced_type
-from nl2hltl2plan.worlds.tasks import APPLIANCE, BaseTask, GTInstance
+from nl2hltl2plan.worlds.tasks import BaseTask, GTInstance
+from nl2hltl2plan.worlds.world import World, sliced_type
 
 ROOT = "task1"
 

@@ -15,9 +15,9 @@ from typing import Any
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.logic.trace import TraceEvent, check_trace
 from nl2hltl2plan.worlds.checker import constraint_violations
-from nl2hltl2plan.worlds.model import World
 from nl2hltl2plan.worlds.plan import Plan
 from nl2hltl2plan.worlds.simulator import Execution, execute
+from nl2hltl2plan.worlds.world import World
 
 # the model every optimum and bound is stated over
 GRID_MODEL = ("the grid: robots move one 0.25 m cell per step (4-neighbour moves, as the simulator) and act "

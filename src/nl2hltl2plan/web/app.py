@@ -44,8 +44,9 @@ from nl2hltl2plan.web.requests import (
     MAX_TIMEOUT_S,
     PlanRequest,
 )
+from nl2hltl2plan.worlds import BUILT_IN
 
-BUILT_IN_WORLDS = ("demo", "tabletop", "handover-line", "handover-square")
+BUILT_IN_WORLDS = tuple(BUILT_IN)  # demo, tabletop, handover-line, handover-square
 MAX_BODY_BYTES = 256 * 1024  # a request is an instruction, options and at most a small team file
 RETRY_AFTER_S = 5
 MEDIA = {"json": "application/json", "hoa": "text/plain; charset=utf-8", "png": "image/png",
@@ -106,7 +107,7 @@ def available_worlds() -> list[str]:
             continue
         names.append(name)
     try:
-        from nl2hltl2plan.worlds.alfred import floor_plans
+        from nl2hltl2plan.worlds.floor_plans import floor_plans
 
         names += floor_plans()
     except (Nl2Hltl2PlanError, OSError):

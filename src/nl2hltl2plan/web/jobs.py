@@ -32,7 +32,7 @@ from nl2hltl2plan.web.requests import PlanRequest
 
 HEARTBEAT_S = 0.25  # how often a follower wakes up with no news (to notice a gone client)
 KILL_GRACE_S = 1.0  # past the deadline, how long the worker may take to say so itself
-PRELOAD = ["nl2hltl2plan.web.worker", "nl2hltl2plan.outputs", "matplotlib.pyplot"]
+PRELOAD = ["nl2hltl2plan.web.worker", "nl2hltl2plan.present.outputs", "matplotlib.pyplot"]
 Event = tuple[str, dict[str, Any]]
 
 

@@ -13,7 +13,7 @@ import threading
 from typing import Any
 
 from nl2hltl2plan.worlds import load_world
-from nl2hltl2plan.worlds.model import World
+from nl2hltl2plan.worlds.world import World
 
 _DRAWING = threading.Lock()
 PAD_IN = 0.1
@@ -58,7 +58,7 @@ def world_map(name: str) -> tuple[bytes, dict[str, float]]:
     picture (left/right from the left edge, top/bottom from the top edge)."""
     import matplotlib.pyplot as plt
 
-    from nl2hltl2plan.worlds.pictures import draw_world
+    from nl2hltl2plan.present.pictures import draw_world
 
     world = cached_world(name)
     with _DRAWING:

@@ -47,8 +47,8 @@ def team_of(req: PlanRequest) -> Team:
 
 def plan_request(req: PlanRequest, on_progress: Any = None) -> Outcome:
     """Run the pipeline for one request (in this process)."""
+    from nl2hltl2plan.config.llm_settings import LLMSettings
     from nl2hltl2plan.language.backends import open_client
-    from nl2hltl2plan.language.llm.settings import LLMSettings
 
     options = PipelineOptions(
         backend=req.backend,
@@ -94,7 +94,7 @@ def work(body: dict[str, Any], folder: str, conn: Connection) -> None:
         payload = outcome.to_json()
         conn.send(("result", payload))
         if req.pictures:
-            from nl2hltl2plan.outputs import output_names, write_outputs
+            from nl2hltl2plan.present.outputs import output_names, write_outputs
 
             warnings = write_outputs(folder, outcome, payload)
             names = [n for n in output_names(outcome.result.execution is not None) if os.path.exists(

@@ -7,15 +7,19 @@ Entry points: `load_world(name)` ("demo" or "FloorPlanN"), `build_benchmark_worl
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
+from nl2hltl2plan.domain.task_kinds import Goal
 from nl2hltl2plan.errors import WorldError
 from nl2hltl2plan.worlds.checker import CheckResult, check
 from nl2hltl2plan.worlds.demo import demo_world
-from nl2hltl2plan.worlds.model import CELL_M, VISIBILITY_M, Affordances, Cell, World, WorldObject
 from nl2hltl2plan.worlds.plan import Plan, RobotPlan, Step
 from nl2hltl2plan.worlds.simulator import Event, Execution, SimState, execute
-from nl2hltl2plan.worlds.tasks import BaseTask, Goal, GTInstance
+from nl2hltl2plan.worlds.tasks import BaseTask, GTInstance
+from nl2hltl2plan.worlds.world import CELL_M, VISIBILITY_M, Affordances, Cell, World, WorldObject
 
 __all__ = [
+    "BUILT_IN",
     "CELL_M",
     "VISIBILITY_M",
     "Affordances",
@@ -42,33 +46,46 @@ __all__ = [
 
 def load_world(name: str, trials: list[str] | None = None) -> World:
     """ "demo", "tabletop", "handover-line", "handover-square" (built in) or an ALFRED floor plan
-    "FloorPlanN" (movables from `trials`, see alfred.py)."""
-    if name.lower() == "demo":
+    "FloorPlanN" (movables from `trials`, see floor_plans.py)."""
+    build = BUILT_IN.get(name.lower())
+    if build is not None:
         if trials:
-            raise WorldError("the demo world takes no ALFRED trials")
-        return demo_world()
-    if name.lower() in ("tabletop", "handover-line", "handover-square"):
-        if trials:
-            raise WorldError(f"the {name} world takes no ALFRED trials")
-        return _experiment_world(name.lower())
-    from nl2hltl2plan.worlds.alfred import load_floor_plan
+            raise WorldError(f"the {name.lower()} world takes no ALFRED trials")
+        return build()
+    from nl2hltl2plan.worlds.floor_plans import load_floor_plan
 
     return load_floor_plan(name, trials)
 
 
-def _experiment_world(name: str) -> World:
-    """The paper's tabletop and four-arm handover worlds (default instance)."""
-    if name == "tabletop":
-        from nl2hltl2plan.worlds.tabletop import tabletop_world
+def _tabletop() -> World:
+    """The paper's tabletop world (default instance)."""
+    from nl2hltl2plan.worlds.tabletop_world import tabletop_world
 
-        return tabletop_world()
-    from nl2hltl2plan.worlds.handover import handover_world
+    return tabletop_world()
 
-    return handover_world(name.split("-", 1)[1]).as_world()
+
+def _handover(config: str) -> Callable[[], World]:
+    """The paper's four-arm handover world `config` (default instance)."""
+
+    def build() -> World:
+        from nl2hltl2plan.worlds.handover_world import handover_world
+
+        return handover_world(config).as_world()
+
+    return build
+
+
+# the worlds that need no data, by name (each imported when first built)
+BUILT_IN: dict[str, Callable[[], World]] = {
+    "demo": demo_world,
+    "tabletop": _tabletop,
+    "handover-line": _handover("line"),
+    "handover-square": _handover("square"),
+}
 
 
 def build_benchmark_world(gt: GTInstance | dict) -> World:
     """The world of one benchmark instance: its floor plan with its source trials' objects."""
-    from nl2hltl2plan.worlds.alfred import build_benchmark_world as build
+    from nl2hltl2plan.worlds.floor_plans import build_benchmark_world as build
 
     return build(gt)

@@ -14,7 +14,7 @@ from functools import cache
 from nl2hltl2plan.config import data_path
 from nl2hltl2plan.errors import DataError
 from nl2hltl2plan.io import read_json
-from nl2hltl2plan.worlds.model import Affordances
+from nl2hltl2plan.worlds.world import Affordances
 
 EXTRA_TOGGLEABLE = frozenset(
     {"Faucet", "Microwave", "CoffeeMachine", "Toaster", "StoveKnob", "LightSwitch", "Television"}

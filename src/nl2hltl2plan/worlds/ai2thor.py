@@ -15,8 +15,8 @@ from __future__ import annotations
 
 import math
 
-from nl2hltl2plan.worlds.model import World
 from nl2hltl2plan.worlds.plan import Plan
+from nl2hltl2plan.worlds.world import World
 
 VERB_ACTION = {
     "pickup": "PickupObject",

@@ -28,9 +28,10 @@ from collections.abc import Mapping, Sequence
 
 from pydantic import BaseModel
 
+from nl2hltl2plan.domain.task_kinds import Goal
 from nl2hltl2plan.logic.constraints import Constraint, violations
 from nl2hltl2plan.worlds.simulator import CLEAN, COLD, HOT, ON, PRESENT, Execution, Snapshot, _compiled
-from nl2hltl2plan.worlds.tasks import Goal, GTInstance
+from nl2hltl2plan.worlds.tasks import GTInstance
 
 _STATE_FLAG = {"clean_place": CLEAN, "heat_place": HOT, "cool_place": COLD}
 # a constraint's state atoms: `heat(Mug)` is true at the step some mug becomes hot

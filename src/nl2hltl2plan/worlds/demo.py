@@ -13,7 +13,7 @@ once each): a plural without a count word ("put the plates in the lower rack") i
 
 from __future__ import annotations
 
-from nl2hltl2plan.worlds.model import Affordances, World, WorldObject, add_slices, sliced_type
+from nl2hltl2plan.worlds.world import Affordances, World, WorldObject, add_slices, sliced_type
 
 DISHES = ("Plate", "Mug", "Cup", "Saucer", "Bowl")
 UTENSILS = ("Fork", "Spoon", "ButterKnife", "Knife")

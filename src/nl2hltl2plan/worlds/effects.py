@@ -27,7 +27,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from nl2hltl2plan.domain.object_state import BROKEN, COOKED, FILLED, HOT, ON, OPEN, PRESENT
-from nl2hltl2plan.worlds.model import World
+from nl2hltl2plan.worlds.world import World
 
 if TYPE_CHECKING:
     from nl2hltl2plan.worlds.simulator import SimState, Snapshot

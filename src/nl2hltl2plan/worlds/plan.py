@@ -7,7 +7,7 @@ from typing import TYPE_CHECKING, Any
 from pydantic import BaseModel, ConfigDict, Field, model_validator
 
 if TYPE_CHECKING:
-    from nl2hltl2plan.worlds.model import World
+    from nl2hltl2plan.worlds.world import World
 
 # verb -> number of object arguments
 ACTION_ARITY = {

@@ -11,11 +11,11 @@ must wait for it (`until`). Used by tests, the README demo and the CLI; not a pl
 from __future__ import annotations
 
 from nl2hltl2plan.errors import WorldError
+from nl2hltl2plan.logic.action_sequences import formula_sequences
 from nl2hltl2plan.logic.atom import Atom
-from nl2hltl2plan.worlds.model import Cell, World
 from nl2hltl2plan.worlds.plan import ACTION_ARITY, Plan, RobotPlan, Step
 from nl2hltl2plan.worlds.simulator import OPEN, SimState
-from nl2hltl2plan.worlds.tasks import formula_sequences
+from nl2hltl2plan.worlds.world import Cell, World
 
 
 def parse_line(line: str) -> tuple[str, list[str], str | None]:

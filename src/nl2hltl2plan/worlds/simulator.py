@@ -23,8 +23,8 @@ from typing import NamedTuple
 
 from nl2hltl2plan.domain.object_state import CLEAN, COLD, FLAG_NAMES, HOT, ON, OPEN, PRESENT
 from nl2hltl2plan.worlds import effects
-from nl2hltl2plan.worlds.model import CELL_M, KNIFE_TYPES, Cell, World
 from nl2hltl2plan.worlds.plan import Plan
+from nl2hltl2plan.worlds.world import CELL_M, KNIFE_TYPES, Cell, World
 
 COOLING_TYPES = frozenset({"Fridge"})  # put into it -> cold
 HEATING_TYPES = frozenset({"Microwave"})  # toggle on -> contents hot

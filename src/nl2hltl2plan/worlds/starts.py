@@ -10,8 +10,8 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from nl2hltl2plan.errors import WorldError
-from nl2hltl2plan.worlds.model import Cell, World
 from nl2hltl2plan.worlds.tasks import GTInstance
+from nl2hltl2plan.worlds.world import Cell, World
 
 
 def parse_cells(text: str) -> list[Cell]:

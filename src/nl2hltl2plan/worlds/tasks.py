@@ -3,6 +3,8 @@
 `BaseTask` holds the ground-truth task fields of benchmark/alfred_test50_gt.jsonl. Its recipes are
 the leaf specifications a perfect translator would give (`leaf_specs`), shared by the oracle spec
 converter (planning) and the offline language stage; its goal (`goal`) is what the checker tests.
+The kinds, slots, states and the `Goal` type are the shared vocabulary of `domain.task_kinds`; a
+recipe's leaf formula is written by `logic.action_sequences`.
 
 Recipes (O object, C container, R receptacle, L lamp). Leaves carry no opens and no closes: the
 planner inserts `open(X)` where the state needs it and closes an open appliance before switching it
@@ -35,92 +37,26 @@ present (and reachable) in the world, and to combinations the receptacles accept
 from __future__ import annotations
 
 import itertools
-import re
 from collections import Counter
 from collections.abc import Sequence
-from dataclasses import dataclass
-from typing import Literal
 
 from pydantic import BaseModel, ConfigDict, Field
 
+from nl2hltl2plan.domain.task_kinds import (
+    APPLIANCE,
+    MAX_COUNT,
+    STATE_FLAG,
+    STATE_WORDS,
+    TREATMENT,
+    Goal,
+    Kind,
+    State,
+)
 from nl2hltl2plan.errors import WorldError
-from nl2hltl2plan.worlds.model import KNIFE_TYPES, World, sliced_type
+from nl2hltl2plan.logic.action_sequences import sequences_formula
+from nl2hltl2plan.worlds.world import KNIFE_TYPES, World, sliced_type
 
-Kind = Literal[
-    "place",
-    "place_two",
-    "place_in_container",
-    "examine_in_light",
-    "clean_place",
-    "heat_place",
-    "cool_place",
-    "set_state",  # switch on/off, break, slice, open, close or pick up one object (SMART-LLM's skills)
-]
-KINDS: tuple[str, ...] = Kind.__args__  # type: ignore[attr-defined]
-SLOTS = ("object", "container", "receptacle", "light")  # a base task's typed slots
-State = Literal["on", "off", "broken", "sliced", "open", "closed", "held"]
-STATE_WORDS = {
-    "on": "switched on",
-    "off": "switched off",
-    "broken": "broken",
-    "sliced": "sliced",
-    "open": "opened",
-    "closed": "closed",
-    "held": "picked up",
-}
-# a set_state task's state -> the affordance its object needs (None: see `_state_ok`)
-STATE_FLAG: dict[str, str | None] = {
-    "on": "toggleable",
-    "off": "toggleable",
-    "broken": None,
-    "sliced": "sliceable",
-    "open": "openable",
-    "closed": "openable",
-    "held": "pickupable",
-}
-APPLIANCE = {"clean_place": "SinkBasin", "heat_place": "Microwave", "cool_place": "Fridge"}
-TREATMENT = {"clean_place": "cleanable", "heat_place": "heatable", "cool_place": "coolable"}
-MAX_COUNT = 50  # no AI2-THOR scene has more instances of one type
 KNIFE_DROP_PREFERENCE = ("CounterTop", "DiningTable", "SideTable", "Desk", "CoffeeTable", "Shelf", "Dresser")
-
-
-def slots_of(kind: str) -> tuple[str, ...]:
-    """The typed slots a task of this kind uses.
-
-    >>> slots_of("place_in_container")
-    ('object', 'container', 'receptacle')
-    """
-    if kind == "place_in_container":
-        return ("object", "container", "receptacle")
-    if kind == "examine_in_light":
-        return ("object", "light")
-    if kind == "set_state":
-        return ("object",)
-    return ("object", "receptacle")
-
-
-@dataclass(frozen=True)
-class Goal:
-    """What must hold for a task: `count` distinct objects of `objects` types in the target state."""
-
-    task: str
-    kind: str
-    objects: frozenset[str]
-    containers: frozenset[str]
-    receptacles: frozenset[str]
-    lights: frozenset[str]
-    count: int
-
-    def describe(self) -> str:
-        obj = "/".join(sorted(self.objects))
-        rec = "/".join(sorted(self.receptacles))
-        if self.kind == "examine_in_light":
-            return f"hold {obj} while a {'/'.join(sorted(self.lights))} is on"
-        if self.kind == "place_in_container":
-            return f"{obj} in a {'/'.join(sorted(self.containers))} in/on {rec}"
-        state = {"clean_place": "clean ", "heat_place": "hot ", "cool_place": "cold "}.get(self.kind, "")
-        n = f"{self.count} " if self.count > 1 else ""
-        return f"{n}{state}{obj} in/on {rec}" if rec else f"{n}{state}{obj}"
 
 
 class BaseTask(BaseModel):
@@ -506,86 +442,3 @@ def _knife_drop(world: World, knife: str) -> str:
         if _available(world, [t]) and not world.instances(t)[0].affordances.pickupable:
             return t
     raise WorldError(f"no receptacle in {world.name} accepts a {knife}")
-
-
-def sequences_formula(seqs: list[list[str]]) -> str:
-    """Flat sc-LTL for "one of these action sequences, in order": a trie of F(a & F(...)) terms."""
-    trie: dict = {}
-    for seq in seqs:
-        node = trie
-        for atom in seq:
-            node = node.setdefault(atom, {})
-        node[None] = {}  # end marker: a shorter sequence makes longer ones with its prefix redundant
-
-    def emit(node: dict) -> str | None:
-        if None in node:
-            return None
-        parts = []
-        for atom, child in node.items():
-            inner = emit(child)
-            parts.append(f'F "{atom}"' if inner is None else f'F("{atom}" & {inner})')
-        return parts[0] if len(parts) == 1 else "(" + " | ".join(parts) + ")"
-
-    text = emit(trie)
-    assert text is not None
-    return text[1:-1] if text.startswith("(") and _balanced_outer(text) else text
-
-
-def formula_sequences(formula: str) -> list[list[str]]:
-    """The action sequences of a `sequences_formula` text (its inverse), in order."""
-    tokens = re.findall(r'"[^"]*"|F|&|\||\(|\)', formula)
-    pos = 0
-
-    def peek() -> str | None:
-        return tokens[pos] if pos < len(tokens) else None
-
-    def take(expected: str | None = None) -> str:
-        nonlocal pos
-        tok = peek()
-        if tok is None or (expected is not None and tok != expected):
-            raise WorldError(f"not a recipe formula (at token {pos}: {tok!r}): {formula}")
-        pos += 1
-        return tok
-
-    def expr() -> list[list[str]]:
-        seqs = term()
-        while peek() == "|":
-            take("|")
-            seqs += term()
-        return seqs
-
-    def term() -> list[list[str]]:
-        if peek() == "(":
-            take("(")
-            seqs = expr()
-            take(")")
-            return seqs
-        take("F")
-        if peek() != "(":
-            return [[take().strip('"')]]
-        take("(")
-        atom = take().strip('"')
-        take("&")
-        rest = term()
-        take(")")
-        return [[atom, *r] for r in rest]
-
-    seqs = expr()
-    if pos != len(tokens):
-        raise WorldError(f"not a recipe formula (trailing text): {formula}")
-    return seqs
-
-
-def _balanced_outer(text: str) -> bool:
-    depth = 0
-    for i, ch in enumerate(text):
-        depth += ch == "("
-        depth -= ch == ")"
-        if depth == 0 and i < len(text) - 1:
-            return False
-    return True
-
-
-def sequence_formula(seq: list[str]) -> str:
-    """The flat formula of one ordered action list: F("a" & F("b" & F "c"))."""
-    return sequences_formula([seq])

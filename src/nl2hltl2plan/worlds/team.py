@@ -35,7 +35,7 @@ from nl2hltl2plan.errors import DataError, PlanningError
 from nl2hltl2plan.io import read_json
 from nl2hltl2plan.logic.atom import Atom
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
-from nl2hltl2plan.worlds.model import KNIFE_TYPES, World
+from nl2hltl2plan.worlds.world import KNIFE_TYPES, World
 
 SKILL_VERBS = {
     "OpenObject": "open",

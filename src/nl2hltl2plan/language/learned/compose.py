@@ -16,7 +16,7 @@ import re
 from dataclasses import dataclass
 
 from nl2hltl2plan.language.learned.faithful import FaithfulExample
-from nl2hltl2plan.language.tasks import BaseTaskSpec, task_letter
+from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter
 
 # Relation of a span to what came before it (text order): START the first; SEQ after the current step;
 # PAR in the current step (no order with it); FREE no order with anything (a chain of its own); PRE a
@@ -259,7 +259,7 @@ def _finish(text: str, rng: random.Random) -> str:
 
 def synthesise(items: list[FaithfulExample], n: int, style: Connectives, seed: int = 0) -> list[Synth]:
     """`n` instructions of 1-5 spans (one floor plan each, different trials), deterministic for a seed."""
-    from nl2hltl2plan.language.learned.relations import before_pairs
+    from nl2hltl2plan.language.learned.span_order import before_pairs
 
     rng = random.Random(seed)
     by_plan: dict[str, list[FaithfulExample]] = {}

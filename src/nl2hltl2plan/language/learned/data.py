@@ -15,7 +15,7 @@ from functools import lru_cache
 from nl2hltl2plan.config import data_path
 from nl2hltl2plan.errors import DataError
 from nl2hltl2plan.io import iter_gzip_jsonl, read_text
-from nl2hltl2plan.language.tasks import BaseTaskSpec
+from nl2hltl2plan.language.task_specs import BaseTaskSpec
 
 KIND_OF_TASK_TYPE = {
     "pick_and_place_simple": "place",

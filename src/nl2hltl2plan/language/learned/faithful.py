@@ -25,10 +25,10 @@ import random
 import re
 from dataclasses import dataclass, replace
 
+from nl2hltl2plan.domain.task_kinds import SLOTS, slots_of
 from nl2hltl2plan.language.grounding import Grounder, find_mentions
 from nl2hltl2plan.language.learned.data import Composition, Example, states_kind
-from nl2hltl2plan.language.tasks import BaseTaskSpec, task_letter
-from nl2hltl2plan.worlds.tasks import SLOTS, slots_of
+from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter
 
 _SLICE = re.compile(
     r"\bslice|\bsliced\b|\bpiece|\btoast|\bwedge|\bchunk|\bsection|\bhal(f|ves)\b|\bquarter", re.I

@@ -18,12 +18,15 @@ from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
 
+from nl2hltl2plan.domain.task_kinds import slots_of
 from nl2hltl2plan.errors import Nl2Hltl2PlanError, WorldError
 from nl2hltl2plan.language.accounting import account
+from nl2hltl2plan.language.grammar import OfflineParse
+from nl2hltl2plan.language.grammar import parse_instruction as grammar_parse
 from nl2hltl2plan.language.grounding import AffordanceLookup, find_mentions
-from nl2hltl2plan.language.learned.model import SlotModel, SlotPrediction
 from nl2hltl2plan.language.learned.ranker import TypeRanker
 from nl2hltl2plan.language.learned.rescue import rewrite
+from nl2hltl2plan.language.learned.slot_model import SlotModel, SlotPrediction
 from nl2hltl2plan.language.learned.structure import StructureModel, load_structure
 from nl2hltl2plan.language.learned.structured import (
     StructurePolicy,
@@ -34,17 +37,15 @@ from nl2hltl2plan.language.learned.structured import (
     resolved,
     with_verb,
 )
-from nl2hltl2plan.language.offline import OfflineParse
-from nl2hltl2plan.language.offline import parse_instruction as grammar_parse
 from nl2hltl2plan.language.result import Ambiguity
-from nl2hltl2plan.language.tasks import BaseTaskSpec, task_letter
-from nl2hltl2plan.worlds.tasks import slots_of
+from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter
 
 
 @dataclass(frozen=True)
 class Policy:
     """How grammar and model are combined. The defaults were chosen on the text-faithful validation of
-    valid_seen (`learned.validate`, docs/learned.md): every override policy measured within 1 point, so
+    valid_seen (`suites.alfred.learned_validation`, docs/learned.md): every override policy measured
+    within 1 point, so
     the one that overrides least was taken (the model never replaces a kind, type or `sliced` the grammar
     read); the segmentation rescue measured +4 to +5 points."""
 
@@ -65,7 +66,7 @@ class Policy:
 
 DEFAULT_POLICY = Policy()  # what the `offline` backend uses
 
-# Candidate combinations, compared on the text-faithful validation (`learned.validate`).
+# Candidate combinations, compared on the text-faithful validation (`suites.alfred.learned_validation`).
 POLICIES: dict[str, Policy] = {
     "default": Policy(),
     "no_rescue": Policy(rescue=False),
@@ -239,30 +240,34 @@ def parse_instruction(
     `strict=True`: a slot whose types the scene lacks raises `WorldError`; otherwise it is listed in `issues`.
     """
     policy = policy or DEFAULT_POLICY
-    model = model or load_model()
     scene_types = set(types) if types is not None else None
-    parse = grammar_first_reading(instruction, scene_types, scene, affordances, policy, model)
+    ctx = ParseContext(scene_types, scene, affordances, policy, model or load_model())
+    parse = grammar_first_reading(instruction, ctx)
     if policy.structure is not None:
-        structure = structure or load_structure()
-        parse = _arbitrated(parse, instruction, scene_types, scene, affordances, policy, model, structure)
+        parse = _arbitrated(parse, instruction, ctx, structure or load_structure())
     issues = _missing(parse.tasks, scene_types, scene)
     if strict and issues:
         raise WorldError(issues[0])
     return parse.model_copy(update={"issues": issues})
 
 
-def grammar_first_reading(
-    instruction: str,
-    scene_types: set[str] | None,
-    scene: str,
-    affordances: AffordanceLookup | None,
-    policy: Policy,
-    model: SlotModel,
-) -> LearnedParse:
+@dataclass(frozen=True)
+class ParseContext:
+    """What every reading of one instruction shares: the scene, and the policy and model that read it."""
+
+    scene_types: set[str] | None
+    scene: str
+    affordances: AffordanceLookup | None
+    policy: Policy
+    model: SlotModel
+
+
+def grammar_first_reading(instruction: str, ctx: ParseContext) -> LearnedParse:
     """The grammar's structure, its clauses' slots filled and ordered by the slot model."""
-    g = grammar_parse(instruction, scene_types, scene, strict=False, affordances=affordances)
+    scene_types, policy, model = ctx.scene_types, ctx.policy, ctx.model
+    g = grammar_parse(instruction, scene_types, ctx.scene, strict=False, affordances=ctx.affordances)
     if policy.rescue and g.unparsed:
-        g = _rescued(g, instruction, model, scene_types, scene, affordances, policy)
+        g = _rescued(g, instruction, ctx)
     drafts = list(g.tasks)
     unparsed = list(g.unparsed)
     whole = not drafts and bool(instruction.strip())
@@ -297,13 +302,7 @@ def grammar_first_reading(
 
 
 def structure_reading(
-    instruction: str,
-    scene_types: set[str] | None,
-    scene: str,
-    affordances: AffordanceLookup | None,
-    policy: Policy,
-    model: SlotModel,
-    structure: StructureModel,
+    instruction: str, ctx: ParseContext, structure: StructureModel
 ) -> tuple[LearnedParse, float] | None:
     """The structure model's spans, each read by the grammar + slot model; None when a span does not
     read completely or the whole does not pass the word accounting."""
@@ -315,10 +314,10 @@ def structure_reading(
     for span in reading.spans:
         text = with_verb(base_form(span.text), previous[0] if previous else None)
         try:
-            p = grammar_first_reading(text, scene_types, scene, affordances, policy, model)
+            p = grammar_first_reading(text, ctx)
             if p.unparsed and resolved(text, previous) != text:
                 text = resolved(text, previous)
-                p = grammar_first_reading(text, scene_types, scene, affordances, policy, model)
+                p = grammar_first_reading(text, ctx)
         except Nl2Hltl2PlanError:
             return None
         if p.unparsed or not p.tasks:
@@ -350,19 +349,12 @@ def _renamed_ambiguities(
 
 
 def _arbitrated(
-    g: LearnedParse,
-    instruction: str,
-    scene_types: set[str] | None,
-    scene: str,
-    affordances: AffordanceLookup | None,
-    policy: Policy,
-    model: SlotModel,
-    structure: StructureModel,
+    g: LearnedParse, instruction: str, ctx: ParseContext, structure: StructureModel
 ) -> LearnedParse:
     """The grammar's reading or the structure model's, by `structured.StructurePolicy`."""
-    rule = policy.structure
+    rule = ctx.policy.structure
     assert rule is not None
-    s = structure_reading(instruction, scene_types, scene, affordances, policy, model, structure)
+    s = structure_reading(instruction, ctx, structure)
     complete = bool(g.tasks) and not g.unparsed
     choice = decide((g.tasks, g.before, complete), (s[0].tasks, s[0].before, s[1]) if s else None, rule)
     if choice == "model" and s is not None:
@@ -376,20 +368,12 @@ def _arbitrated(
     return g
 
 
-def _rescued(
-    g: OfflineParse,
-    instruction: str,
-    model: SlotModel,
-    types: set[str] | None,
-    scene: str,
-    affordances: AffordanceLookup | None,
-    policy: Policy,
-) -> OfflineParse:
+def _rescued(g: OfflineParse, instruction: str, ctx: ParseContext) -> OfflineParse:
     """The grammar's parse with its unread clauses rewritten, when that reads more tasks."""
-    text = rewrite(instruction, list(g.unparsed), model, types, policy.rescue_kind)
+    text = rewrite(instruction, list(g.unparsed), ctx.model, ctx.scene_types, ctx.policy.rescue_kind)
     if text is None:
         return g
-    again = grammar_parse(text, types, scene, strict=False, affordances=affordances)
+    again = grammar_parse(text, ctx.scene_types, ctx.scene, strict=False, affordances=ctx.affordances)
     if len(again.tasks) <= len(g.tasks) or account(instruction, again.tasks, again.before):
         return g  # a re-reading must read more and pass the word accounting (check 1) of the original
     return again.model_copy(update={"instruction": instruction})

@@ -1,6 +1,7 @@
 """Segmentation rescue: clauses the grammar could not read, read by the slot model and re-parsed.
 
-Measured per stage on the text-faithful validation (`learned.validate`), the grammar's worst stage is
+Measured per stage on the text-faithful validation (`suites.alfred.learned_validation`), the grammar's
+worst stage is
 segmentation: most wrong instructions have too few base tasks because one clause did not fit a frame
 ("move two boxes of tissue from counter to back of toilet", "put the ladle on the end tale"). The
 grammar lists such clauses in `unparsed`. Here the slot model reads each of them; when it finds a task
@@ -16,9 +17,9 @@ import difflib
 import re
 from functools import cache
 
+from nl2hltl2plan.language.grammar.sentences import normalize
 from nl2hltl2plan.language.grounding import camel_words, find_mentions, lexicon
-from nl2hltl2plan.language.learned.model import SlotModel, SlotPrediction
-from nl2hltl2plan.language.offline.sentences import normalize
+from nl2hltl2plan.language.learned.slot_model import SlotModel, SlotPrediction
 
 _IN_CLAUSE = re.compile(
     r"^(?:no destination for the .*? in|no object to act on in|nothing to hold under the lamp in|"

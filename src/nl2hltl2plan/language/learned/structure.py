@@ -27,7 +27,7 @@ import numpy as np
 
 from nl2hltl2plan.errors import DataError
 from nl2hltl2plan.io import atomic_path
-from nl2hltl2plan.language.learned.model import preferred_path, user_path
+from nl2hltl2plan.language.learned.slot_model import preferred_path, user_path
 
 ARTIFACT = "structure_model.npz"
 _TOKEN = re.compile(r"[A-Za-z0-9]+(?:'[A-Za-z]+)?|[^\sA-Za-z0-9]")

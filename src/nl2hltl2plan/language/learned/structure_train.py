@@ -61,7 +61,7 @@ def span_accuracy(model: StructureModel, n: int = 400, seed: int = 7) -> dict[st
     """On compositions of valid_unseen annotations: the share whose spans are all right, and whose spans'
     number and `before` pairs are right, per connective style (training's, held-out)."""
     from nl2hltl2plan.language.learned.compose import HELDOUT_STYLE
-    from nl2hltl2plan.language.learned.relations import before_pairs
+    from nl2hltl2plan.language.learned.span_order import before_pairs
     from nl2hltl2plan.language.learned.train import text_faithful_items
 
     items = text_faithful_items("valid_unseen")

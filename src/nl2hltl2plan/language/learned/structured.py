@@ -24,10 +24,10 @@ from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.language.accounting import account
 from nl2hltl2plan.language.grounding import find_mentions
 from nl2hltl2plan.language.learned.compose import ELIDABLE, VERB_GERUND, VERB_PARTICIPLE
-from nl2hltl2plan.language.learned.relations import before_pairs
+from nl2hltl2plan.language.learned.span_order import before_pairs
 from nl2hltl2plan.language.learned.structure import Reading
 from nl2hltl2plan.language.scoring import match
-from nl2hltl2plan.language.tasks import BaseTaskSpec, task_letter
+from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter
 
 _BASE_FORM = {v: k for k, v in VERB_PARTICIPLE.items() if v != k} | {v: k for k, v in VERB_GERUND.items()}
 

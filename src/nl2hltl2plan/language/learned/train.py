@@ -11,13 +11,13 @@ from __future__ import annotations
 import time
 from pathlib import Path
 
+from nl2hltl2plan.domain.task_kinds import SLOTS
 from nl2hltl2plan.language.grounding import scene_types
 from nl2hltl2plan.language.learned.data import Example, faithful, load_examples
 from nl2hltl2plan.language.learned.faithful import FaithfulExample, faithful_examples, training_example
 from nl2hltl2plan.language.learned.inference import parse_instruction
-from nl2hltl2plan.language.learned.model import SlotModel, SlotPrediction
 from nl2hltl2plan.language.learned.ranker import RankCase, TypeRanker
-from nl2hltl2plan.worlds.tasks import SLOTS
+from nl2hltl2plan.language.learned.slot_model import SlotModel, SlotPrediction
 
 
 def text_faithful_items(split: str) -> list[FaithfulExample]:

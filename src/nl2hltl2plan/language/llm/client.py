@@ -29,10 +29,10 @@ from typing import Any, TypeVar
 
 from pydantic import BaseModel, ValidationError
 
+from nl2hltl2plan.config.llm_settings import LLMSettings
 from nl2hltl2plan.errors import LLMError
 from nl2hltl2plan.language.llm.batch import BatchCollector, PendingAnswer
 from nl2hltl2plan.language.llm.cache import AnswerCache, request_key
-from nl2hltl2plan.language.llm.settings import LLMSettings
 
 T = TypeVar("T", bound=BaseModel)
 Validator = Callable[[Any], None]  # extra checks after pydantic; raise ValueError with a readable message

@@ -1,0 +1,178 @@
+"""Step 2, clauses: a sentence -> its verb clauses, with elided verbs restored."""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+from nl2hltl2plan.language.grammar import word_tables as G
+from nl2hltl2plan.language.grammar.frames import dest_of, parse_frame
+from nl2hltl2plan.language.grammar.phrases import match_prep, parse_np, tokens
+
+
+def _is_verb_at(words: list[tuple[str, int, int]], i: int) -> bool:
+    """Does a verb clause start at word `i` (a verb first in the sentence or after a joiner)?"""
+    w = words[i][0]
+    if w not in G.VERBS:
+        return False
+    if i == 0:
+        return True
+    prev = words[i - 1][0]
+    if prev == "," or prev in G.CLAUSE_JOINERS:
+        # "to the", "in place": only when this word is used as a verb (followed by a noun phrase / particle)
+        if (
+            prev in {"to", "in", "order", "as", "so"}
+            and G.VERBS[w][0] in {"place", "pick"}
+            and w in {"place", "set", "rest", "stand", "sit", "bin", "light", "watch", "use", "find"}
+        ):
+            nxt = words[i + 1][0] if i + 1 < len(words) else ""
+            return (
+                nxt in {"it", "them", "the", "a", "an", "on", "in", "down", "up", "into", "onto"}
+                and prev == "to"
+            )
+        if prev == "in" and w not in {"order"}:
+            return False
+        return True
+    return False
+
+
+def split_clauses(sentence: str) -> list[tuple[str, int, int, str]]:
+    """(clause text, start, end, joiner) for each verb clause of a sentence."""
+    words = tokens(sentence)
+    cuts: list[tuple[int, str]] = []
+    for i in range(len(words)):
+        if _is_verb_at(words, i):
+            j = i - 1
+            joiner = ""
+            while j >= 0 and (words[j][0] == "," or words[j][0] in G.CLAUSE_JOINERS):
+                if words[j][0] in G.SEQ_JOINERS:
+                    joiner = G.SEQ_JOINERS[words[j][0]]
+                elif words[j][0] in {"to", "and", "while", "plus", "or", "as"} and not joiner:
+                    joiner = words[j][0]
+                j -= 1
+            cut = words[j + 1][1] if j + 1 < i else words[i][1]
+            cuts.append((cut if i else 0, joiner))
+    if not cuts or cuts[0][0] != 0:
+        cuts.insert(0, (0, ""))
+    out = []
+    for k, (cut, joiner) in enumerate(cuts):
+        end = cuts[k + 1][0] if k + 1 < len(cuts) else len(sentence)
+        chunk = sentence[cut:end]
+        stripped = re.sub(
+            r"^[\s,]*(?:(?:and|then|to|plus|also|while|or|as|so|first|next|finally|lastly|afterwards?|"
+            r"subsequently)\b[\s,]*)*",
+            "",
+            chunk,
+            flags=re.I,
+        )
+        stripped = re.sub(r"[\s,]*(?:\band\b)?[\s,]*$", "", stripped)
+        if stripped:
+            s = cut + chunk.index(stripped)
+            out.append((stripped, s, s + len(stripped), joiner))
+    return out
+
+
+# ----- elided verbs ("first the saucers, then the cups, in the upper rack") -------------------------------
+_GAP_SPLIT = re.compile(
+    r"(?:\s*,\s*|\s+)(?:and\s+)?(?P<j>then|next|afterwards?|after\s+that|finally|lastly|followed\s+by)\b"
+    r"\s*,?\s*",
+    re.I,
+)
+_GAP_JOINER = {"finally": "finally", "lastly": "finally"}
+
+
+@dataclass
+class Clause:
+    """One verb clause of a sentence; `gap` >= 0 marks clauses rebuilt from one elided-verb list (a group
+    when they share one destination), `label` their rebuilt text ("put the cups in the upper rack")."""
+
+    text: str
+    start: int
+    end: int
+    joiner: str
+    gap: int = -1
+    label: str = ""
+    whole: str = ""  # the text of the whole list, verb restored
+
+
+def _movable_np(text: str) -> bool:
+    """Does `text` start with a noun phrase naming a movable thing (not a fixed receptacle, not a lamp)?"""
+    words = [w for w, _, _ in tokens(text)]
+    if not words or match_prep(words, 0) is not None or words[0] in G.VERBS:
+        return False
+    head = parse_np(re.split(r"\s*,\s*|\s+(?=(?:in|into|on|onto|to|inside|at)\b)", text, maxsplit=1)[0])
+    if head.entry is None or head.generic or head.is_lamp():
+        return False
+    return not (head.is_receptacle() and not head.is_movable_receptacle())
+
+
+def _dest_pp(verb: str, text: str) -> str:
+    """The destination phrase of `verb text` as written ("in the upper rack"), or ""."""
+    fr = parse_frame(f"{verb} {text}")
+    for it in fr.items:
+        dst = dest_of(it, fr.cls)
+        if dst is not None:
+            for p, np in it.pps:
+                if np is dst:
+                    return f"{p} {np.text}"
+    return ""
+
+
+# words of a stated rule ("the arm cannot touch the blue block until ..."), never an elided-verb object list
+_STATEMENT_WORDS = frozenset({"cannot", "can't", "must", "should", "until", "not"})
+
+
+def expand_gapping(
+    clauses: list[tuple[str, int, int, str]], verb: str, last_dest: str, gap_base: int = 0
+) -> list[Clause]:
+    """Clauses with an elided verb get it back: "put the plates in the lower rack, then the cups in the upper
+    rack" and a verbless "first the saucers, then the cups, in the upper rack" after a clause whose verb was
+    "put". A list of objects split by sequence words ("then", "next", "finally") becomes one clause per
+    object with the verb of the clause (or `verb`, the previous clause's, when the clause has none); objects
+    without a destination share the last one stated (then they form a group), or, in a verbless sentence
+    that names none, `last_dest` (the previous clause's destination: "Then the tomato")."""
+    out: list[Clause] = []
+    for k, (text, start, end, joiner) in enumerate(clauses):
+        words = [w for w, _, _ in tokens(text)]
+        own = bool(words) and words[0] in G.VERBS
+        if own:
+            cut = len(text.split(None, 1)[0])
+            v, args, a0 = text[:cut], text[cut:].lstrip(), len(text) - len(text[cut:].lstrip())
+        elif verb and k == 0 and not _STATEMENT_WORDS.intersection(words):
+            v, args, a0 = verb, text, 0
+        else:
+            out.append(Clause(text, start, end, joiner))
+            continue
+        # split at sequence words that are followed by a movable object (not "then on the counter")
+        parts: list[tuple[str, int, str]] = []  # (segment, offset in args, joiner)
+        pos, seg_joiner = 0, joiner
+        for m in _GAP_SPLIT.finditer(args):
+            if m.start() <= pos or not _movable_np(args[m.end() :]):
+                continue
+            parts.append((args[pos : m.start()], pos, seg_joiner))
+            seg_joiner = _GAP_JOINER.get(m.group("j").lower(), "then")
+            pos = m.end()
+        parts.append((args[pos:], pos, seg_joiner))
+        parts = [(seg.strip(" ,"), off, j) for seg, off, j in parts if seg.strip(" ,")]
+        if own and len(parts) < 2:
+            out.append(Clause(text, start, end, joiner))
+            continue
+        if not parts or not _movable_np(parts[0][0]):
+            out.append(Clause(text, start, end, joiner))
+            continue
+        dests = [_dest_pp(v, seg) for seg, _, _ in parts]
+        shared = next((d for d in reversed(dests) if d), "") or ("" if own else last_dest)
+        missing = [i for i, d in enumerate(dests) if not d]
+        sharing = [i for i, d in enumerate(dests) if not d or d == shared]
+        gap = gap_base + k if len(sharing) > 1 and missing and shared else -1
+        for i, (seg, off, j) in enumerate(parts):
+            seg_text = seg
+            if not dests[i] and shared:  # "the saucers" + "in the upper rack"
+                seg_text = f"{seg.rstrip(' ,')} {shared}"
+            elif shared and dests[i] == shared:  # "the cups, in the upper rack": drop the comma
+                seg_text = re.sub(r"\s*,\s*(?=" + re.escape(shared) + r"$)", " ", seg)
+            label = f"{v} {seg_text}"
+            s0 = start + a0 + off
+            whole = text if own else f"{v} {text}"
+            out.append(Clause(label, s0, s0 + len(seg), j, gap if i in sharing else -1, label, whole))
+    return out

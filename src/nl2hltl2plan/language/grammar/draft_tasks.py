@@ -1,0 +1,384 @@
+"""Step 4b, tasks: one draft (the frames about one object) -> a grounded `BaseTaskSpec`."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from nl2hltl2plan.domain.task_kinds import Kind
+from nl2hltl2plan.errors import WorldError
+from nl2hltl2plan.language.grammar import word_tables as G
+from nl2hltl2plan.language.grammar.frames import (
+    THEN_TO,
+    UNDER,
+    Frame,
+    Item,
+    dest_of,
+    is_fixed,
+    near_dest,
+    puts_into,
+    same,
+)
+from nl2hltl2plan.language.grammar.phrases import DETERMINERS, FILLER, NP, parse_np, tokens
+from nl2hltl2plan.language.grounding import AffordanceLookup, Grounder, Roles, find_mentions
+from nl2hltl2plan.language.task_specs import BaseTaskSpec
+
+
+@dataclass
+class Draft:
+    """A base task being assembled from frames."""
+
+    frames: list[tuple[Frame, Item]]
+    start: int
+    end: int
+    group: int = -1
+    label: str = ""  # own text for one item of a list clause ("put plates into the lower rack")
+    tool: bool = False  # only picked up a knife that a later clause slices with: no task of its own
+
+    @property
+    def obj(self) -> NP | None:
+        for _, it in self.frames:
+            if it.obj is not None and not it.obj.pronoun and not it.obj.empty and not it.obj.is_lamp():
+                return it.obj
+        return None
+
+
+@dataclass
+class Unit:
+    """The tasks of one clause (or one sentence part) and the temporal markers that apply to them."""
+
+    tasks: list[int]
+    sentence: int
+    markers: list[tuple[str, str]] = field(default_factory=list)  # (kind, ref text)
+    seq_after_prev: bool = False  # joined to the previous clause by "then" inside a sentence
+
+
+@dataclass
+class Tasks:
+    """The result of step 4: the base tasks the drafts state, the noun phrase each is about, the temporal
+    units (task indices into `specs`) and the groups (group number -> task indices)."""
+
+    specs: list[BaseTaskSpec]
+    nps: list[NP | None]
+    units: list[Unit]
+    groups: dict[int, list[int]]
+
+
+def build_tasks(drafts: list[Draft], units: list[Unit], b: TaskBuilder, text: str) -> Tasks:
+    """Ground every draft; drafts that state no task are dropped (and the units' indices follow)."""
+    specs = [None if d.tool else b.spec(d, d.label or text[d.start : d.end]) for d in drafts]
+    keep = [i for i, s in enumerate(specs) if s is not None]
+    index = {old: new for new, old in enumerate(keep)}
+    for u in units:
+        u.tasks = [index[t] for t in u.tasks if t in index]
+    groups: dict[int, list[int]] = {}
+    for old, new in index.items():
+        if drafts[old].group >= 0:
+            groups.setdefault(drafts[old].group, []).append(new)
+    return Tasks(
+        specs=[s for s in specs if s is not None],
+        nps=[drafts[i].obj for i in keep],
+        units=[u for u in units if u.tasks],
+        groups=groups,
+    )
+
+
+class TaskBuilder:
+    """Grounds drafts into `BaseTaskSpec`s; keeps what it cannot read (`unparsed`) and grounding `issues`."""
+
+    def __init__(self, grounder: Grounder | None, strict: bool, look: AffordanceLookup | None = None) -> None:
+        self.g = grounder
+        self.look = look
+        self.strict = strict
+        self.issues: list[str] = []
+        self.unparsed: list[str] = []
+
+    # grounding -----------------------------------------------------------------------------------------
+    def types(self, np: NP | None, role: str) -> list[str] | None:
+        """The candidate types of a noun phrase (its own words, capitalised, when there is no scene)."""
+        if np is None:
+            return None
+        if self.g is None:
+            if np.entry is not None and not (np.head and len(np.head.split()) > 1):
+                # no scene: keep words that distinguish objects the lexicon would merge ("red apple")
+                spans = [(m.char_start, m.char_end) for m in find_mentions(np.text)]
+                words = [
+                    w
+                    for w in tokens(np.text)
+                    if w[0] not in DETERMINERS
+                    and w[0] not in G.STATE_WORDS
+                    and not any(a <= w[1] < b for a, b in spans)
+                ]
+                extra = [
+                    w[0]
+                    for w in words
+                    if w[0] not in FILLER
+                    and w[0] not in G.SLICE_NOUNS
+                    and w[0] != ","
+                    and w[0] not in G.NUMBERS
+                ]
+                if extra and np.entry.canonical not in {"KeyChain"}:
+                    return ["".join(x.capitalize() for x in extra) + np.entry.canonical]
+                return [np.entry.canonical] if not np.entry.all_ else list(np.entry.types)
+            return ["".join(x.capitalize() for x in np.head.split())] if np.head else None
+        if np.entry is None:
+            msg = f"cannot map the {role} {np.head or np.text!r} to an object type of {self.g.scene}"
+            if self.strict:
+                raise WorldError(msg)
+            self.issues.append(msg)
+            return None
+        got = self.g.candidates(np.entry)
+        if not got:
+            err = self.g.missing(np.entry, np.text)
+            if self.strict:
+                raise err
+            self.issues.append(str(err))
+            return [np.entry.canonical]
+        return got
+
+    def ground(
+        self, kind: str, sliced: bool, nps: dict[str, NP | None]
+    ) -> dict[str, list[str] | None] | None:
+        """Types per field (object, container, receptacle, light): the scene's candidates of each word,
+        narrowed to those that can play their role (`Roles.narrow`), then the first one unless the word
+        accepts all ("table", "knife")."""
+        got = {role: self.types(np, role) for role, np in nps.items()}
+        if got["object"] is None:
+            return None
+        if self.g is None:
+            return got
+        roles = Roles(got["object"], got["receptacle"], got["container"], got["light"]).narrow(
+            self.look, kind, sliced
+        )
+        out: dict[str, list[str] | None] = {}
+        for role in nps:
+            types, np = getattr(roles, role), nps[role]
+            if types and np is not None and np.entry is not None and not np.entry.all_:
+                types = types[:1]
+            out[role] = types
+        return out
+
+    # one draft -> BaseTaskSpec ------------------------------------------------------------------------
+    def spec(self, d: Draft, text: str) -> BaseTaskSpec | None:
+        """The base task a draft states, or None (with the reason in `unparsed`) when it states none."""
+        r = _Reading()
+        for fr, it in d.frames:
+            _read_frame(r, fr, it)
+        obj = r.obj
+        if obj is None:
+            if r.light is not None:
+                self.unparsed.append(f"nothing to hold under the lamp in: {text}")
+            elif d.frames and d.frames[0][0].cls not in {"none", "other"}:
+                self.unparsed.append(f"no object to act on in: {text}")
+            return None
+        if (r.light is not None or r.examine) and _unholdable(obj):
+            self.unparsed.append(f"cannot hold the {obj.text!r} to look at it: {text}")
+            return None
+        final = _settle_container(r, obj)
+        if r.light is None and r.examine:
+            r.light = parse_np("lamp")
+        if r.light is None and final is None:
+            self.unparsed.append(f"no destination for the {obj.text or obj.key!r} in: {text}")
+            return None
+        kind = _kind_of(r)
+        fields = self.ground(
+            kind,
+            r.sliced,
+            {
+                "object": obj,
+                "container": r.container if kind == "place_in_container" else None,
+                "receptacle": final if kind != "examine_in_light" else None,
+                "light": r.light if kind == "examine_in_light" else None,
+            },
+        )
+        if fields is None or fields["object"] is None:
+            self.unparsed.append(f"no object of the scene named in: {text}")
+            return None
+        return BaseTaskSpec(
+            kind=kind,
+            object=fields["object"],
+            count=min(r.count, 2) if kind == "place_two" else r.count,
+            sliced=r.sliced,
+            text=text,
+            container=fields["container"],
+            receptacle=fields["receptacle"],
+            light=fields["light"],
+        )
+
+
+@dataclass
+class _Reading:
+    """What the frames of one draft say about its task, gathered frame by frame."""
+
+    obj: NP | None = None
+    container: NP | None = None
+    light: NP | None = None
+    states: list[str] = field(default_factory=list)
+    sliced: bool = False
+    count: int = 1
+    examine: bool = False
+    dests: list[NP] = field(default_factory=list)
+
+
+def _read_frame(r: _Reading, fr: Frame, it: Item) -> None:
+    """Add what one clause item says: its verb's state change, its object, its phrases, its destination."""
+    o = it.obj
+    if fr.cls in {"clean", "heat", "cool"}:
+        r.states.append(fr.cls)
+    if fr.cls == "fill":
+        r.states.append("clean")
+    if fr.cls == "slice":
+        r.sliced = r.sliced or r.obj is not None or (o is not None and not o.pronoun)
+    if fr.cls == "examine":
+        r.examine = True
+    if o is not None and o.is_lamp() and fr.cls in {"light", "examine"}:
+        r.light = o
+        o = None
+    for np in [o] + [np for _, np in it.pps]:
+        if np is not None and np.is_lamp() and (fr.cls in {"light", "examine", "pick"} or fr.light_on):
+            r.light = r.light or np
+    if o is not None and r.container is None and puts_into(r.obj, fr, it):
+        r.container, r.obj = r.obj, o  # "move a cup to the sink and put a knife in the cup"
+    if o is not None:
+        _read_object(r, o)
+    for p, np in it.pps:
+        _read_pp(r, fr, p, np)
+    _read_destination(r, fr, it)
+
+
+def _read_object(r: _Reading, o: NP) -> None:
+    """The first object is the task's; a later one may be its container or a lamp."""
+    if not o.pronoun and not o.empty:
+        if r.obj is None:
+            r.obj = o
+        elif r.container is None and r.dests and same(o, r.dests[-1]) and o.is_movable_receptacle():
+            r.container = o  # "put a card in a bowl and put the bowl on the desk"
+        elif same(o, r.container):
+            pass
+        elif not same(o, r.obj) and o.is_lamp():
+            r.light = o
+    r.states += sorted(o.states)
+    r.sliced = r.sliced or o.sliced
+    if o.water:
+        r.states.append("clean")
+    r.count = max(r.count, o.count)
+
+
+def _read_pp(r: _Reading, fr: Frame, p: str, np: NP) -> None:
+    """ "with X in it", "containing X", "holding X", "along with the other set", "by the light of a lamp",
+    and a second listed object ("a bowl and a pencil")."""
+    if p in {"along with", "together with"} and np.entry is None and not np.head:
+        r.count = max(r.count, 2)  # "one set of keys along with the other set"
+        return
+    if p in G.WITH_PREPS and not np.pronoun and _read_with(r, fr, p, np):
+        return
+    if p in G.LIGHT_PREPS and np.is_lamp():
+        r.light = np
+    if p == "" and np.entry is not None and r.obj is not None and not np.pronoun and r.container is None:
+        # "a bowl and a pencil": one movable receptacle and its content
+        if r.obj.is_movable_receptacle() and not np.is_movable_receptacle():
+            r.container, r.obj = r.obj, np
+        elif np.is_movable_receptacle() and not r.obj.is_movable_receptacle():
+            r.container = np
+        elif same(np, r.obj):
+            r.count = max(r.count, 2)
+
+
+def _read_with(r: _Reading, fr: Frame, p: str, np: NP) -> bool:
+    """One "with"-like phrase; True when it is settled (nothing else to read from it)."""
+    if p == "with" and is_fixed(np):
+        return True  # "place it with the coffee machine": the destination (dest_of)
+    if np.water:
+        r.states.append("clean")
+        return True
+    if np.is_lamp():
+        r.light = np
+        return True
+    if p in {"along with", "together with"} and (same(np, r.obj) or np.entry is None):
+        r.count = max(r.count, 2)
+        return True
+    if r.obj is None and (r.light is not None or fr.cls == "light" or fr.light_on):
+        r.obj = np  # "turn on a lamp with a book in hand"
+        return True
+    if r.obj is not None and np.entry is not None and r.container is None:
+        if r.obj.is_movable_receptacle() and not np.is_movable_receptacle():
+            r.container, r.obj = r.obj, np
+        elif np.is_movable_receptacle():
+            r.container = np
+        elif r.obj.is_movable_receptacle():
+            r.container, r.obj = r.obj, np
+    r.states += sorted(np.states)
+    r.sliced = r.sliced or np.sliced
+    return False
+
+
+def _read_destination(r: _Reading, fr: Frame, it: Item) -> None:
+    """Where the item goes (stops on the way first); "in a cup to the counter" also names a container."""
+    dst = dest_of(it, fr.cls) or near_dest(it)
+    if any(p == THEN_TO for p, _ in it.pps):  # stops on the way come before the destination
+        r.dests += [np for p, np in it.pps if p in G.DEST_PREPS and np.is_receptacle() and np is not dst]
+    if fr.cls == "trash" and dst is None:
+        dst = parse_np("garbage can")
+    if dst is None or dst.is_lamp():
+        return
+    recs = [np for p, np in it.pps if p in G.DEST_PREPS and np.is_receptacle() and p not in UNDER]
+    movable = [np for np in recs if np.is_movable_receptacle()]
+    fixed = [np for np in recs if not np.is_movable_receptacle()]
+    obj = r.obj
+    if obj is not None and r.container is None and not obj.is_movable_receptacle() and movable and fixed:
+        # "place the spoon in a cup to the counter", "place the watch on the table on a plate"
+        r.container = movable[0]
+        r.dests.append(r.container)
+        dst = fixed[-1]
+    r.dests.append(dst)
+
+
+def _unholdable(obj: NP) -> bool:
+    """A fixed receptacle (not a box) cannot be held under a lamp."""
+    return (
+        obj.is_receptacle()
+        and not obj.is_movable_receptacle()
+        and obj.entry is not None
+        and obj.entry.canonical not in {"Box"}
+    )
+
+
+def _settle_container(r: _Reading, obj: NP) -> NP | None:
+    """The final destination; a content placed into a movable receptacle that is then moved gets that
+    receptacle as its container, and appliances on the way add their state change."""
+    dests, container = r.dests, r.container
+    final = dests[-1] if dests else None
+    if (
+        container is None
+        and len(dests) >= 2
+        and dests[-2].is_movable_receptacle()
+        and not (obj.is_movable_receptacle())
+    ):
+        container = dests[-2]
+    if container is not None and final is not None and same(final, container):
+        final = dests[-2] if len(dests) >= 2 and not same(dests[-2], container) else None
+        if final is None:
+            container = None
+            final = dests[-1]
+    # intermediate appliances imply a state change ("put it in the microwave, then on the counter")
+    for mid in dests[:-1]:
+        if mid.entry is not None and not same(mid, container):
+            st = {"Microwave": "heat", "Fridge": "cool", "SinkBasin": "clean"}.get(mid.entry.canonical)
+            if st:
+                r.states.append(st)
+    r.container = container
+    return final
+
+
+_STATE_KINDS: dict[str, Kind] = {"heat": "heat_place", "cool": "cool_place", "clean": "clean_place"}
+
+
+def _kind_of(r: _Reading) -> Kind:
+    """The task kind, once the object and (unless a lamp is involved) the destination are known."""
+    state = next((s for s in ("heat", "cool", "clean") if s in r.states), None)
+    if r.light is not None:
+        return "examine_in_light"
+    if r.container is not None:
+        return "place_in_container"
+    if state:
+        return _STATE_KINDS[state]
+    return "place_two" if r.count >= 2 else "place"

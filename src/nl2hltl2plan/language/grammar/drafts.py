@@ -1,0 +1,387 @@
+"""Step 4a, drafts: the frames of each sentence -> task drafts (consecutive clauses about one object, a
+list of objects sharing one verb as a group) and temporal units (the tasks of one clause + their markers)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from nl2hltl2plan.language.grammar import word_tables as G
+from nl2hltl2plan.language.grammar.clauses import Clause, expand_gapping, split_clauses
+from nl2hltl2plan.language.grammar.draft_tasks import Draft, TaskBuilder, Unit
+from nl2hltl2plan.language.grammar.frames import (
+    IN_SENTENCE,
+    Frame,
+    Item,
+    dest_of,
+    parse_frame,
+    puts_into,
+    same,
+)
+from nl2hltl2plan.language.grammar.phrases import NP
+from nl2hltl2plan.language.grammar.sentences import Sentence
+
+
+@dataclass
+class Drafts:
+    """The result of step 4a: drafts, units (draft indices) and the words that state each group."""
+
+    drafts: list[Draft] = field(default_factory=list)
+    units: list[Unit] = field(default_factory=list)
+    group_text: dict[int, str] = field(default_factory=dict)
+
+
+@dataclass
+class _SentenceState:
+    """What the clauses of one sentence share while they are read."""
+
+    sentence: Sentence
+    first_unit: int
+    drafts: list[int] = field(default_factory=list)
+    prev_clause_tasks: list[int] = field(default_factory=list)
+    # "put things into the upper rack, first X, then Y": a shared destination for the clauses that follow
+    context: list[tuple[str, NP]] = field(default_factory=list)
+    context_group: int = -1
+    pending_joiner: str = ""
+
+
+class DraftBuilder:
+    """Reads sentence after sentence; the verb and destination of the last clause carry over to a verbless
+    sentence that follows ("Then the tomato")."""
+
+    def __init__(self, b: TaskBuilder) -> None:
+        self.b = b
+        self.out = Drafts()
+        self.next_group = -1
+        self.gap_groups: dict[int, int] = {}  # Clause.gap -> group
+        self.last_verb = ""
+        self.last_dest = ""
+
+    def add_sentence(self, s: Sentence) -> None:
+        """Read the clauses of one sentence into drafts and units, then apply the sentence's markers."""
+        clauses = expand_gapping(
+            split_clauses(s.body), self.last_verb, self.last_dest, gap_base=100 * s.index
+        )
+        st = _SentenceState(s, len(self.out.units))
+        for clause in clauses:
+            self._add_clause(clause, st)
+        self._apply_markers(st)
+
+    def _new_group(self, text: str) -> int:
+        self.next_group += 1
+        self.out.group_text[self.next_group] = text
+        return self.next_group
+
+    def _add_clause(self, clause: Clause, st: _SentenceState) -> None:
+        """One clause -> its frame; its items continue the last draft or start new ones (one unit)."""
+        fr = parse_frame(clause.text, st.sentence.offset + clause.start, clause.joiner)
+        if fr.cls not in {"none", "other"}:
+            self.last_verb = clause.text.split()[0]
+            for it in fr.items:
+                dst = dest_of(it, fr.cls)
+                self.last_dest = next((f"{p} {np.text}" for p, np in it.pps if np is dst), self.last_dest)
+        joiner = clause.joiner or st.pending_joiner
+        st.pending_joiner = ""
+        if self._skip(fr, clause.text, st):
+            return
+        if all(it.obj is not None and it.obj.generic for it in fr.items):
+            # a heading about generic things ("place items into the dishwasher"): its destination is the
+            # context of the clauses that follow in this sentence, which form a group
+            st.context = [(p, np) for it in fr.items for p, np in it.pps if p in G.DEST_PREPS]
+            st.context_group = self._new_group(fr.text)
+            st.pending_joiner = joiner
+            return
+        self._share_destinations(fr, st)
+        if fr.cls == "slice":
+            self._knife_is_a_tool(st)
+        group = self._group_of(clause, fr, st)
+        new_tasks = [t for it in fr.items if (t := self._add_item(fr, it, clause, joiner, group, st)) >= 0]
+        if new_tasks:
+            unit = Unit(tasks=new_tasks, sentence=st.sentence.index)
+            if joiner == "then" and st.prev_clause_tasks:
+                unit.seq_after_prev = True
+            if joiner == "first":
+                unit.markers.append((G.FIRST, ""))
+            if joiner == "finally":
+                unit.markers.append((G.FINALLY, IN_SENTENCE))
+            self.out.units.append(unit)
+            st.prev_clause_tasks = new_tasks
+
+    def _skip(self, fr: Frame, c_text: str, st: _SentenceState) -> bool:
+        """Clauses that state no task of ours (listed in `unparsed` when they name a real object)."""
+        unparsed = self.b.unparsed
+        if fr.cls == "none":
+            if not st.drafts or any(
+                it.obj is not None and not it.obj.empty and not it.obj.pronoun for it in fr.items
+            ):
+                unparsed.append(c_text)
+                return True
+        if any(it.obj is not None and it.obj.count > 2 for it in fr.items):
+            unparsed.append(f"{c_text} (more than two objects of one kind in one task is not supported)")
+            return True
+        if fr.ambiguous:
+            unparsed.append(f"{c_text} (a list of destinations)")
+            return True
+        if fr.cls == "light" and not any(
+            (it.obj is not None and it.obj.is_lamp()) or any(np.is_lamp() for _, np in it.pps)
+            for it in fr.items
+        ):
+            if not any(it.obj is not None and it.obj.pronoun for it in fr.items):
+                fr.cls = "other"  # "switch on the coffee machine": no lamp, no task of ours
+        if fr.cls == "other":
+            real = [
+                it.obj for it in fr.items if it.obj is not None and not it.obj.empty and not it.obj.pronoun
+            ]
+            noise = (
+                fr.verb in {"open", "close", "shut"}
+                and st.drafts
+                and all(o.is_receptacle() or "door" in o.text.lower() for o in real)
+            )
+            if real and not noise:
+                unparsed.append(c_text)
+            return True  # "close the refrigerator door", "while doing so"
+        return False
+
+    def _share_destinations(self, fr: Frame, st: _SentenceState) -> None:
+        """Items without a destination take the heading's (context) or the one stated last in the list."""
+        if st.context:
+            for it in fr.items:
+                if it.obj is not None and not any(p in G.DEST_PREPS for p, _ in it.pps):
+                    it.pps.extend(st.context)
+        # multi-object clause items sharing one destination at the end: copy it to the others
+        if len(fr.items) > 1:
+            shared = [(p, np) for p, np in fr.items[-1].pps if p in G.DEST_PREPS]
+            for it in fr.items[:-1]:
+                if not any(p in G.DEST_PREPS for p, _ in it.pps):
+                    it.pps.extend(shared)
+            fr.items = self._without_slicing_knife(fr)
+            fr.items = merge_items(fr.items, self.b)
+
+    def _knife_is_a_tool(self, st: _SentenceState) -> None:
+        """ "pick up apple, pick up knife, cut apple": the knife picked up just before slicing is the tool;
+        the clauses that follow continue the draft before it."""
+        if not st.drafts:
+            return
+        d = self.out.drafts[st.drafts[-1]]
+        if (
+            d.obj is not None
+            and d.obj.entry is not None
+            and d.obj.entry.canonical in G.KNIVES
+            and all(f.cls == "pick" and dest_of(it, f.cls) is None for f, it in d.frames)
+        ):
+            d.tool = True
+            st.drafts.pop()
+
+    def _without_slicing_knife(self, fr: Frame) -> list[Item]:
+        """A knife listed with something sliceable is the tool that sliced it, not a task (noted)."""
+
+        def canonical(it: Item) -> str:
+            return it.obj.entry.canonical if it.obj is not None and it.obj.entry is not None else ""
+
+        if not any(canonical(it) in G.SLICEABLE for it in fr.items):
+            return fr.items
+        knives = [it for it in fr.items if canonical(it) in G.KNIVES]
+        for it in knives:
+            assert it.obj is not None
+            self.b.issues.append(f"{it.obj.text!r} in {fr.text!r} is read as the tool that slices")
+        return [it for it in fr.items if it not in knives]
+
+    def _group_of(self, clause: Clause, fr: Frame, st: _SentenceState) -> int:
+        """The group of the clause's tasks: an elided-verb list, a heading, a list of objects; else -1."""
+        if clause.gap >= 0:
+            if clause.gap not in self.gap_groups:
+                self.gap_groups[clause.gap] = self._new_group(clause.whole)
+            return self.gap_groups[clause.gap]
+        if st.context_group >= 0:
+            return st.context_group
+        if len(fr.items) > 1:
+            return self._new_group(fr.text)
+        return -1
+
+    def _add_item(
+        self, fr: Frame, it: Item, clause: Clause, joiner: str, group: int, st: _SentenceState
+    ) -> int:
+        """Attach one clause item to the sentence's last draft (-1) or start a new draft (its index)."""
+        drafts = self.out.drafts
+        d = drafts[st.drafts[-1]] if st.drafts else None
+        if d is not None and len(fr.items) == 1 and _continues(d, fr, it, joiner):
+            d.frames.append((fr, it))
+            d.end = fr.end
+            return -1
+        label = clause.label if len(fr.items) == 1 else ""
+        if len(fr.items) > 1 or st.context:
+            label = item_text(fr, it)
+        drafts.append(Draft(frames=[(fr, it)], start=fr.start, end=fr.end, group=group, label=label))
+        st.drafts.append(len(drafts) - 1)
+        return len(drafts) - 1
+
+    def _apply_markers(self, st: _SentenceState) -> None:
+        """Leading markers apply to all units of the sentence; trailing "then"/"finally" to the last."""
+        units = self.out.units
+        sentence_units = units[st.first_unit :]
+        if not sentence_units:
+            return
+        for kind, ref in st.sentence.markers:
+            for u in sentence_units:
+                u.markers.append((kind, ref))
+        for kind, ref in st.sentence.trailing:
+            if kind in {G.THEN, G.FINALLY} and len(sentence_units) > 1:
+                sentence_units[-1].markers.append((kind, IN_SENTENCE if kind == G.FINALLY else ref))
+            elif kind == G.FREE and len(sentence_units) == 1 and len(sentence_units[0].tasks) > 1:
+                pass  # "move the phone and the bat to the bed in any order": order inside the group is free
+            elif (
+                kind == G.FREE
+                and len(sentence_units) > 1
+                and sentence_units[0].markers == []
+                and all(self.out.drafts[t].group >= 0 for u in sentence_units for t in u.tasks)
+            ):
+                pass
+            else:
+                for u in sentence_units:
+                    u.markers.append((kind, ref))
+
+
+def _continues(d: Draft, fr: Frame, it: Item, joiner: str) -> bool:
+    """Does the single item of a clause continue draft `d` rather than start a task of its own?"""
+    if joiner not in {"first", "finally"} and (
+        joins(d, fr, it)
+        or (
+            incomplete(d)
+            and fr.cls not in {"pick"}
+            and it.obj is not None
+            and (it.obj.pronoun or it.obj.empty)
+        )
+    ):
+        return True
+    return incomplete(d) and d.obj is None
+
+
+# ----- text helpers ----------------------------------------------------------------------------------
+def item_text(fr: Frame, it: Item) -> str:
+    """Own text of one item of a list clause: verb + object + its destination ("put plates into the rack")."""
+    verb = fr.text.split()[0] if fr.text.split() else ""
+    parts = [verb, it.obj.text if it.obj is not None else ""]
+    parts += [f"{p} {np.text}" for p, np in it.pps if p in G.DEST_PREPS and np.text]
+    return " ".join(x for x in parts if x)
+
+
+def joins(d: Draft, fr: Frame, it: Item) -> bool:
+    """Does clause item `it` continue task draft `d` (same object, pronoun, no object, container)?"""
+    o = it.obj
+    last_fr = d.frames[-1][0]
+    cur = d.obj
+    if fr.joiner == "after" or fr.joiner == "before":
+        return False
+    if o is None or o.empty:
+        if fr.cls == "fill" and dest_of(it, fr.cls) is not None:
+            return False  # "fill water in the bathtub": not about the current object
+        return fr.cls != "none" or bool(it.pps)
+    if o.pronoun:
+        return True
+    if o.is_lamp() and (fr.cls in {"light", "examine"} or fr.light_on):
+        return incomplete(d)  # "pick up the keys and turn on the lamp"; not after a placement
+    if cur is None:
+        held = [np for _, i in d.frames for p, np in i.pps if p in G.WITH_PREPS and not np.is_lamp()]
+        if held:  # "turn a light on with a bat in hand": the bat is the task's object
+            return same(o, held[0])
+        # the draft so far only switched a lamp on: "turn on a lamp while holding a laptop"
+        return fr.cls in {"pick", "examine"} or (fr.cls == "place" and last_fr.cls == "light")
+    if same(o, cur):
+        # a task that is done ("a clean mug under the coffee maker") and a clause that names the object again
+        # with a destination of its own ("a warm mug in the cabinet"): a second task on another one; so is
+        # "a" tomato after one was put somewhere (an indefinite article introduces another referent)
+        return not ((_done(d) or (_placed(d) and _indefinite(o))) and _restates(fr, it))
+    if puts_into(cur, fr, it):
+        return True
+    if o.sliced and o.entry is None and o.head in {"", "slice", "piece"}:
+        return True
+    for (
+        _,
+        it2,
+    ) in d.frames:  # the container of the content: "put a spoon in a mug and put the mug on the table"
+        dst = dest_of(it2)
+        if dst is not None and same(o, dst) and o.is_movable_receptacle():
+            return True
+        for p, np in it2.pps:
+            if p in G.WITH_PREPS and same(o, np):
+                return True
+    if last_fr.cls in {"slice"} and o.sliced:
+        return True
+    return False
+
+
+# where an object is washed, heated, chilled: a placement there rarely ends a task of that state
+_APPLIANCE = {"clean": "SinkBasin", "heat": "Microwave", "cool": "Fridge"}
+
+
+def _done(d: Draft) -> bool:
+    """Has draft `d` reached its end: an object examined under a lamp, or put down at a final place (not
+    the appliance of a state it still needs: a cooked tomato put into the sink is done, a mug is not)?"""
+    fr, it = d.frames[-1]
+    if fr.cls in {"light", "examine"} or fr.light_on:
+        return True
+    dest = dest_of(it, fr.cls)
+    if dest is None or dest.entry is None or dest.entry.canonical not in _APPLIANCE.values():
+        return dest is not None
+    states = {f.cls for f, _ in d.frames}
+    states |= {s for _, i in d.frames if i.obj is not None for s in i.obj.states}
+    states &= set(_APPLIANCE)
+    return bool(states) and all(_APPLIANCE[s] != dest.entry.canonical for s in states)
+
+
+def _placed(d: Draft) -> bool:
+    """Has draft `d` put its object somewhere (its last clause names a destination)?"""
+    fr, it = d.frames[-1]
+    return dest_of(it, fr.cls) is not None
+
+
+def _indefinite(o: NP) -> bool:
+    return o.text.split()[:1] in (["a"], ["an"], ["another"])
+
+
+def _restates(fr: Frame, it: Item) -> bool:
+    """Does a clause name its object anew with a task of its own: a destination ("a warm mug in the cabinet",
+    "a clean mug under the coffee maker"), or "grab a credit card", "examine a credit card"?"""
+    o = it.obj
+    if o is None or o.pronoun:
+        return False
+    if dest_of(it, fr.cls) is not None or fr.cls == "examine":
+        return True
+    if any(p in G.DEST_PREPS and np.is_receptacle() for p, np in it.pps) and fr.cls != "pick":
+        return True
+    return _indefinite(o)
+
+
+def incomplete(d: Draft) -> bool:
+    """A draft that only picked / changed the state of something: the next clause usually completes it."""
+    for fr, it in d.frames:
+        if dest_of(it, fr.cls) is not None or fr.cls in {"light", "examine", "trash"} or fr.light_on:
+            return False
+    return True
+
+
+def merge_items(items: list[Item], b: TaskBuilder) -> list[Item]:
+    """Two objects that one clause lists for one destination: a container and its content ("a bowl and a
+    pencil"), or two objects of the same type ("an empty roll and a full roll of toilet paper")."""
+    items = [
+        it
+        for it in items
+        if not (
+            it.obj is not None
+            and it.obj.is_receptacle()
+            and not it.obj.is_movable_receptacle()
+            and len(items) > 1
+        )
+    ] or items
+    if len(items) != 2 or any(it.obj is None or it.obj.pronoun or it.obj.entry is None for it in items):
+        return items
+    x, y = items
+    xo, yo = x.obj, y.obj
+    assert xo is not None and yo is not None and xo.entry is not None and yo.entry is not None
+    dests = [(p, np) for p, np in y.pps if p in G.DEST_PREPS]
+    if b.g is not None and set(b.g.resolve(xo.entry)) == set(b.g.resolve(yo.entry)) and b.g.resolve(xo.entry):
+        xo.count = 2
+        return [Item(obj=xo, pps=dests or x.pps)]
+    if xo.is_movable_receptacle() != yo.is_movable_receptacle():
+        cont, content = (xo, yo) if xo.is_movable_receptacle() else (yo, xo)
+        return [Item(obj=content, pps=[("containing", cont), *dests])]
+    return items

@@ -1,0 +1,286 @@
+"""Step 3, frames: one clause -> its verb class and its items (object + prepositional phrases)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from nl2hltl2plan.language.grammar import word_tables as G
+from nl2hltl2plan.language.grammar.phrases import COLOURS, DETERMINERS, NP, match_prep, parse_np, tokens
+from nl2hltl2plan.language.grounding import find_mentions
+
+
+@dataclass
+class Item:
+    """One object of a clause with its prepositional phrases: [(prep, NP)]."""
+
+    obj: NP | None
+    pps: list[tuple[str, NP]] = field(default_factory=list)
+
+
+@dataclass
+class Frame:
+    text: str
+    start: int
+    end: int
+    cls: str  # verb class (grammar._VERBS keys) or "none"
+    verb: str
+    items: list[Item]
+    light_on: bool = False  # "turn ... on/off"
+    joiner: str = ""  # word that joined it to the previous clause ("then", "and", "to", ...)
+    ambiguous: bool = False  # a list the parser cannot assign (several destinations)
+
+
+SEQ_WORDS = {"then", "finally", "lastly", "afterwards", "afterward", "later"}  # not "next": "next to"
+IN_SENTENCE = "in sentence"  # a "finally" that joins clauses of one sentence
+THEN_TO = "then to"  # a further destination after a stop ("to the sink and finally the toilet")
+
+
+def parse_frame(text: str, start: int = 0, joiner: str = "") -> Frame:
+    """One clause -> its verb class, verb and items (each an object with its prepositional phrases)."""
+    toks = tokens(text)
+    cls, verb, i, light_on = _read_verb([w for w, _, _ in toks])
+    items = _ItemReader(text, toks, cls, light_on).read(i)
+    _join_further_destinations(items)
+    # "to region G, H and I": bare noun phrases after an item with a destination continue that destination
+    ambiguous = len(items) > 1 and items[-1].obj is not None and not items[-1].pps and bool(items[-2].pps)
+    _share_colour_nouns(items)
+    return Frame(
+        text=text,
+        start=start,
+        end=start + len(text),
+        cls=cls,
+        verb=verb,
+        items=items,
+        light_on=light_on,
+        joiner=joiner,
+        ambiguous=ambiguous,
+    )
+
+
+def _read_verb(words: list[str]) -> tuple[str, str, int, bool]:
+    """(verb class, verb, index of the first word after the verb and its particles, switches a light)."""
+    cls, verb, i = "none", "", 0
+    if words and words[0] in G.VERBS:
+        cls, verb = G.VERBS[words[0]]
+        i = 1
+        # "look at", "pick up", "throw away", "put down", "turn on": particles
+        extra = {"off", "out"} if cls in {"clean", "heat", "cool", "pick"} else set()
+        while i < len(words) and words[i] in G.PARTICLES | {"at"} | extra:
+            if words[i] == "at" and verb != "look":
+                break
+            if verb in {"turn", "switch", "power"} and words[i] in {"on", "off"}:
+                break
+            i += 1
+    light_on = False
+    if verb in {"turn", "switch", "power", "toggle"}:
+        if any(w in {"on", "off"} for w in words[1:]):
+            light_on = True
+        else:
+            cls = "other"
+    if verb == "clean" and i > 1 and words[1] == "up":
+        cls = "pick"  # "clean up pencils" = collect them
+    if verb == "light" and cls == "light":
+        light_on = True
+    if verb in {"lit", "illuminate"}:
+        light_on = True
+    return cls, verb, i, light_on
+
+
+@dataclass
+class _ItemReader:
+    """Reads the words after the verb: prepositions start a PP; "," / "and" separate list items."""
+
+    text: str
+    toks: list[tuple[str, int, int]]
+    cls: str
+    light_on: bool
+    items: list[Item] = field(default_factory=list)
+    item: Item = field(default_factory=lambda: Item(obj=None))
+    cur: list[tuple[str, int, int]] = field(default_factory=list)  # the words of the current noun phrase
+    cur_prep: str | None = None
+
+    def read(self, i: int) -> list[Item]:
+        words = [w for w, _, _ in self.toks]
+        while i < len(words):
+            i = self._step(words, i)
+        self._flush()
+        if self.item.obj is not None or self.item.pps or not self.items:
+            self.items.append(self.item)
+        return self.items
+
+    def _flush(self) -> None:
+        item, cur = self.item, self.cur
+        if cur:
+            np = parse_np(self.text[cur[0][1] : cur[-1][2]])
+            if self.cur_prep is None:
+                if item.obj is None:
+                    item.obj = np
+                else:
+                    item.pps.append(("", np))
+            else:
+                item.pps.append((self.cur_prep, np))
+        elif self.cur_prep is not None and self.cur_prep in {"inside", "in", "on"}:
+            item.pps.append((self.cur_prep, NP(text="", pronoun=True)))
+        self.cur = []
+
+    def _step(self, words: list[str], i: int) -> int:
+        """Read the word at `i`; the index of the next word to read."""
+        w = words[i]
+        if (
+            w in SEQ_WORDS
+            and self.cur_prep is not None
+            and self.cur_prep in G.DEST_PREPS
+            and self.cls in {"place", "trash", "pick", "clean", "heat", "cool"}
+            and i + 1 < len(words)
+        ):
+            # "in the microwave, then on the counter" / "to the sink and finally the toilet": a further
+            # destination; the earlier ones become stops on the way
+            self._flush()
+            hit = match_prep(words, i + 1)
+            self.cur_prep = THEN_TO
+            return i + 1 + (hit[1] if hit is not None and hit[0] in G.DEST_PREPS else 0)
+        if w in {",", "and"} or (w == "or" and self.cur_prep is None):
+            self._flush()
+            # a new list item starts when the next words are a noun phrase without preposition
+            nxt = words[i + 1] if i + 1 < len(words) else ""
+            if nxt and nxt not in {",", "and"} and match_prep(words, i + 1) is None and nxt not in SEQ_WORDS:
+                if self.item.obj is not None or self.item.pps:
+                    self.items.append(self.item)
+                    self.item = Item(obj=None)
+                self.cur_prep = None
+            return i + 1
+        if self.light_on and w in {"on", "off"} and _particle_position(words, i):
+            self._flush()  # "turn on the lamp", "turn the lamp on": a particle, not "on the table"
+            self.cur_prep = None
+            return i + 1
+        hit = match_prep(words, i)
+        if hit is not None and not (hit[0] == "of" and self.cur):
+            self._flush()
+            self.cur_prep = hit[0]
+            return i + hit[1]
+        self.cur.append(self.toks[i])
+        return i + 1
+
+
+def _particle_position(words: list[str], i: int) -> bool:
+    """Is the "on"/"off" at `i` a particle of "turn on" (followed by nothing, a determiner, a joiner, a verb
+    or an object word)?"""
+    return (
+        i + 1 >= len(words)
+        or words[i + 1] in DETERMINERS
+        or words[i + 1] in {",", "and", "while", "with"}
+        or words[i + 1] in G.VERBS
+        or bool(find_mentions(words[i + 1]))
+    )
+
+
+def _join_further_destinations(items: list[Item]) -> None:
+    """ "from the bath to the sink and finally the toilet": a sequence word before a fixed receptacle adds a
+    further destination (the earlier ones are stops on the way)."""
+    while (
+        len(items) > 1
+        and items[-1].obj is not None
+        and not items[-1].pps
+        and any(p in G.DEST_PREPS for p, _ in items[-2].pps)
+        and tokens(items[-1].obj.text)[0][0] in SEQ_WORDS
+        and items[-1].obj.is_receptacle()
+        and not items[-1].obj.is_movable_receptacle()
+    ):
+        items[-2].pps.append((THEN_TO, items[-1].obj))
+        items.pop()
+
+
+def _share_colour_nouns(items: list[Item]) -> None:
+    """ "the red and blue blocks": colour words share the noun of the last item."""
+    if len(items) > 1 and items[-1].obj is not None:
+        last_words = [w for w, _, _ in tokens(items[-1].obj.text) if w not in DETERMINERS]
+        if last_words and last_words[0] in COLOURS and len(last_words) > 1:
+            noun = " ".join(last_words[1:])
+            for it in items[:-1]:
+                ws = [w for w, _, _ in tokens(it.obj.text) if w not in DETERMINERS] if it.obj else []
+                if ws and all(w in COLOURS for w in ws):
+                    it.obj = parse_np(" ".join(ws) + " " + noun)
+
+
+# ----- drafts -> tasks ---------------------------------------------------------------------------------
+def same(a: NP | None, b: NP | None) -> bool:
+    """Do two noun phrases name the same kind of thing (the same lexicon entry or the same words)?"""
+    return a is not None and b is not None and bool(a.key) and a.key == b.key
+
+
+UNDER = {"under", "underneath", "below", "beneath"}
+
+
+DIRECTIONAL = {
+    "to",
+    "into",
+    "onto",
+    "on to",
+    "in to",
+    "back into",
+    "back onto",
+    "back to",
+    "over to",
+    "up to",
+    "all the way to",
+}
+
+
+def dest_of(item: Item, cls: str = "") -> NP | None:
+    """The destination of one clause item: the receptacle after to/into/onto/in/on... With a verb of taking
+    (`cls` "pick") only a direction counts ("take the towel to the hamper"); "pick up the card on the
+    couch" says where the card is."""
+    if cls == "pick":
+        item = Item(item.obj, [(p, np) for p, np in item.pps if p in DIRECTIONAL])
+    last = [np for p, np in item.pps if p == THEN_TO]
+    if last:
+        return last[-1]
+    for p, np in item.pps:
+        if p in G.DEST_PREPS and p not in UNDER and np.is_receptacle():
+            break  # "in a drawer under the sink": the drawer
+        if p in UNDER and np.entry is not None and np.entry.canonical == "SinkBasin":
+            return parse_np("cabinet")  # "store it under the sink"
+        if p in UNDER and np.entry is not None and np.entry.canonical == "CoffeeMachine":
+            return np  # "a mug under the coffee maker": under its spout, ALFRED's CoffeeMachine receptacle
+    dests = [(p, np) for p, np in item.pps if p in G.DEST_PREPS and np.is_receptacle() and p not in UNDER]
+    if not dests:
+        # "to the region H" in a domain without a lexicon entry: any NP after a destination preposition
+        dests = [(p, np) for p, np in item.pps if p in G.DEST_PREPS and np.head and not np.pronoun]
+    if not dests:
+        # "place it with the coffee machine": a fixed receptacle after "with" is where the thing goes
+        fixed = [np for p, np in item.pps if p == "with" and is_fixed(np)]
+        return fixed[0] if fixed and cls != "pick" else None
+    for p, np in dests:
+        if p in DIRECTIONAL:
+            return np
+    return dests[0][1]
+
+
+def is_fixed(np: NP) -> bool:
+    """A receptacle that stays where it is (a table, the fridge), not a lamp."""
+    return np.is_receptacle() and not np.is_movable_receptacle() and not np.is_lamp() and not np.pronoun
+
+
+def near_dest(item: Item) -> NP | None:
+    """ "by the sink" -> the counter, "under the sink" -> the cabinet."""
+    for p, np in item.pps:
+        if p in G.NEAR_PREPS and np.entry is not None and np.entry.canonical == "SinkBasin":
+            return parse_np("counter")
+        if p in UNDER and np.entry is not None and np.entry.canonical == "SinkBasin":
+            return parse_np("cabinet")
+    return None
+
+
+def puts_into(holder: NP | None, fr: Frame, it: Item) -> bool:
+    """Does a clause item put something else into `holder`, a movable receptacle the task moved so far
+    ("move a cup to the sink and put a knife in the cup": one place_in_container task, as
+    ANNOTATION_GUIDE.md says)?"""
+    o = it.obj
+    return (
+        holder is not None
+        and o is not None
+        and not o.pronoun
+        and holder.is_movable_receptacle()
+        and not o.is_movable_receptacle()
+        and same(dest_of(it, fr.cls), holder)
+    )

@@ -1,0 +1,139 @@
+"""Step 6, relations: the order markers of the units -> `before` pairs between task ids (the
+ANNOTATION_GUIDE rules), contradictions dropped, transitively reduced."""
+
+from __future__ import annotations
+
+from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.language.grammar import word_tables as G
+from nl2hltl2plan.language.grammar.draft_tasks import TaskBuilder, Tasks, Unit
+from nl2hltl2plan.language.grammar.frames import IN_SENTENCE
+from nl2hltl2plan.language.grammar.phrases import parse_np
+from nl2hltl2plan.language.grammar.references import new_tasks_from_ref, ref_targets, self_state, stated_tasks
+from nl2hltl2plan.language.grammar.sentences import RelationSentence
+from nl2hltl2plan.language.semantic_check import find_cycle
+from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter, transitive_reduction
+
+Edges = set[tuple[int, int]]
+
+
+def relate(
+    tasks: Tasks, relations: list[RelationSentence], b: TaskBuilder, text: str
+) -> list[tuple[str, str]]:
+    """The `before` pairs (task ids, which this step assigns). A reference that names no task but states one
+    ("after picking up the box") adds that task to `tasks`; what cannot be resolved goes to `b.unparsed`."""
+    edges: Edges = set()
+    free = {t for u in tasks.units if any(kind == G.FREE for kind, _ in u.markers) for t in u.tasks}
+    for k in range(len(tasks.units)):
+        _marker_edges(k, tasks, free, b, text, edges)
+    _first_edges(tasks.units, free, edges)
+    _sentence_edges(relations, tasks, b, edges)
+    return _order(edges, tasks)
+
+
+def _marker_edges(k: int, tasks: Tasks, free: set[int], b: TaskBuilder, text: str, edges: Edges) -> None:
+    """The edges that the markers of unit `k` state ("Then", "Finally", "after all that", "before that")."""
+    units = tasks.units
+    u = units[k]
+    prev = units[k - 1] if k > 0 else None
+    seq_prev = prev
+    # sentence markers refer to the clause before the sentence, not to a sibling clause of the sentence
+    if prev is not None and prev.sentence == u.sentence and not u.seq_after_prev:
+        cands = [v for v in units[:k] if v.sentence != u.sentence]
+        prev = cands[-1] if cands else None
+    first_of_sentence = min(t for v in units if v.sentence == u.sentence for t in v.tasks)
+    earlier = [t for t in range(len(tasks.specs)) if t < first_of_sentence]
+    for kind, ref in u.markers:
+        if kind == G.THEN and prev is not None:
+            edges.update((a, b2) for a in prev.tasks for b2 in u.tasks)
+        elif kind == G.FINALLY:
+            # "..., and finally Y" inside a sentence: after its sibling clauses too
+            scope = list(range(min(u.tasks))) if ref == IN_SENTENCE else earlier
+            edges.update((a, b2) for a in scope if a not in free for b2 in u.tasks)
+        elif kind == G.AFTER_ALL:
+            edges.update((a, b2) for a in earlier for b2 in u.tasks)
+        elif kind == G.BEFORE_PREV and prev is not None:
+            edges.update((b2, a) for a in prev.tasks for b2 in u.tasks)
+        elif kind in {G.AFTER_REF, G.BEFORE_REF}:
+            _ref_edges(kind == G.AFTER_REF, ref, u, tasks, b, text, edges)
+    if u.seq_after_prev and seq_prev is not None:
+        edges.update((a, b2) for a in seq_prev.tasks for b2 in u.tasks)
+
+
+def _ref_edges(after: bool, ref: str, u: Unit, tasks: Tasks, b: TaskBuilder, text: str, edges: Edges) -> None:
+    """ "After placing the statue, Y" / "Y before moving the knife": edges to the named tasks."""
+    specs, nps = tasks.specs, tasks.nps
+    targets, missing = ref_targets(ref, specs, nps, exclude=u.tasks)
+    own, _ = ref_targets(ref, specs, nps)
+    stated = stated_tasks(ref, [specs[t] for t in own], b, text)
+    if stated:  # "a clean mug under the coffee maker before you put a warm mug in the cabinet"
+        _add_ref_tasks(stated, after, u, tasks, edges)
+        return
+    if not targets and own and all(t in u.tasks for t in own):
+        self_state(ref, [specs[t] for t in u.tasks])
+        return
+    targets = [t for t in targets if t not in u.tasks]
+    for t in targets:
+        edges.update((t, b2) if after else (b2, t) for b2 in u.tasks)
+    if not missing or targets:
+        return
+    # "after refrigerating the pan" about the task itself: a state, not an order
+    keys = [parse_np(p).key for p in missing]
+    if any(
+        key and any(key == (np.key if (np := nps[t]) is not None else None) for t in u.tasks) for key in keys
+    ):
+        return
+    new = new_tasks_from_ref(ref, b, text)
+    _add_ref_tasks(new, after, u, tasks, edges)
+    if not new:
+        b.unparsed.append(f"could not tell which task {ref!r} refers to")
+
+
+def _add_ref_tasks(new: list[BaseTaskSpec], after: bool, u: Unit, tasks: Tasks, edges: Edges) -> None:
+    """Tasks a reference states, ordered before (after=True) or after the tasks of unit `u`."""
+    for spec in new:
+        tasks.specs.append(spec)
+        tasks.nps.append(None)
+        t = len(tasks.specs) - 1
+        edges.update((t, b2) if after else (b2, t) for b2 in u.tasks)
+
+
+def _first_edges(units: list[Unit], free: set[int], edges: Edges) -> None:
+    """ "First X" with no sequencing word right after: X before every later task not allowed at any time."""
+    for k, u in enumerate(units):
+        if any(kind == G.FIRST for kind, _ in u.markers):
+            nxt = units[k + 1] if k + 1 < len(units) else None
+            if nxt is not None and (
+                nxt.seq_after_prev
+                or any(kind in {G.THEN, G.AFTER_ALL, G.AFTER_REF} for kind, _ in nxt.markers)
+            ):
+                continue
+            later = [t for v in units[k + 1 :] for t in v.tasks if t not in free]
+            edges.update((a, b2) for a in u.tasks for b2 in later)
+
+
+def _sentence_edges(relations: list[RelationSentence], tasks: Tasks, b: TaskBuilder, edges: Edges) -> None:
+    """Relation sentences between objects ("the red block should be placed before the blue block")."""
+    for rel in relations:
+        ta, _ = ref_targets(rel.a, tasks.specs, tasks.nps)
+        tb, _ = ref_targets(rel.b, tasks.specs, tasks.nps)
+        if not ta or not tb:
+            b.unparsed.append(f"{rel.a} {rel.kind} {rel.b}")
+        for x in ta:
+            for y in tb:
+                if x != y:
+                    edges.add((x, y) if rel.kind == "before" else (y, x))
+
+
+def _order(edges: Edges, tasks: Tasks) -> list[tuple[str, str]]:
+    """Give the tasks their ids and reduce the order transitively; a contradiction (a cycle) is
+    refused with the cycle named, never dropped: the user must say which comes first."""
+    ids = [task_letter(i) for i in range(len(tasks.specs))]
+    for i, s in enumerate(tasks.specs):
+        s.id = ids[i]
+    pairs = {(ids[a], ids[b2]) for a, b2 in edges if a != b2}
+    cycle = find_cycle(sorted(pairs))  # sorted: the same cycle named on every run
+    if cycle is not None:
+        text = {s.id: s.text for s in tasks.specs}
+        steps = " before ".join(f"{t} ({text[t]!r})" for t in cycle)
+        raise HTTError(f"contradictory ordering in the instruction: {steps}; say which comes first")
+    return list(transitive_reduction(pairs, ids))

@@ -1,0 +1,174 @@
+"""Step 5, references: "after placing the statue" -> the tasks it names (or new ones it states)."""
+
+from __future__ import annotations
+
+import re
+
+from nl2hltl2plan.domain.task_kinds import Kind
+from nl2hltl2plan.language.grammar import word_tables as G
+from nl2hltl2plan.language.grammar.clauses import split_clauses
+from nl2hltl2plan.language.grammar.draft_tasks import Draft, TaskBuilder
+from nl2hltl2plan.language.grammar.drafts import incomplete, joins
+from nl2hltl2plan.language.grammar.frames import parse_frame
+from nl2hltl2plan.language.grammar.phrases import NP, parse_np, tokens
+from nl2hltl2plan.language.task_specs import BaseTaskSpec
+
+
+def _ref_parts(ref: str) -> list[str]:
+    return [p.strip() for p in re.split(r",|\band\b|\bas well as\b|\bplus\b", ref, flags=re.I) if p.strip()]
+
+
+def ref_targets(
+    ref: str,
+    specs: list[BaseTaskSpec],
+    nps: list[NP | None],
+    exclude: list[int] | None = None,
+) -> tuple[list[int], list[str]]:
+    """Task indices a reference ("placing the statue and moving the knife") names; unresolved parts."""
+    found: list[int] = []
+    missing: list[str] = []
+    candidates = [i for i in range(len(specs)) if i not in (exclude or [])]
+    for part in _ref_parts(ref):
+        words = [w for w, _, _ in tokens(part)]
+        np = _ref_np(words)
+        hit: list[int] = []
+        if (
+            np.entry is not None
+            and np.is_lamp()
+            or (not np.entry and any(w in {"lamp", "light"} for w in words))
+        ):
+            hit = [i for i in candidates if specs[i].kind == "examine_in_light"]
+        elif np.entry is not None or np.head:
+            hit = _hits_by_object(np, specs, nps, candidates)
+            if not hit and np.entry is not None:  # "after putting items to the lower rack": by destination
+                hit = [i for i in candidates if np.entry.canonical in (specs[i].receptacle or [])]
+                found.extend(hit)
+            if not hit and np.head:
+                head = np.head.replace(" ", "")
+                hit = [
+                    i
+                    for i in candidates
+                    if head in "".join(specs[i].object).lower()
+                    or any(head in r.lower() for r in (specs[i].receptacle or []))
+                ]
+        if hit:
+            found.append(hit[-1])
+            if np.plural and len(hit) > 1:
+                found.extend(hit)
+        else:
+            missing.append(part)
+    return sorted(set(found)), missing
+
+
+def _ref_np(words: list[str]) -> NP:
+    """The noun phrase of a reference part, past its verbs ("having been washed", "placing")."""
+    k = 0
+    while k < len(words) and (
+        words[k] in G.VERBS
+        or words[k] in G.VERB_PAST
+        or words[k] in G.PARTICLES
+        or words[k] in {"having", "been", "is", "are", "was", "you"}
+    ):
+        k += 1
+    return parse_np(
+        " ".join(
+            w for w in words[k:] if w not in {"is", "are", "was", "were", "been"} and w not in G.VERB_PAST
+        )
+    )
+
+
+def _hits_by_object(
+    np: NP, specs: list[BaseTaskSpec], nps: list[NP | None], candidates: list[int]
+) -> list[int]:
+    """Tasks about the same word, else about a word of a shared type, else with it as object or container."""
+    key = np.key
+    hit = [i for i in candidates if (other := nps[i]) is not None and other.key == key]
+    if not hit and np.entry is not None:
+        types = set(np.entry.types)
+        hit = [
+            i
+            for i in candidates
+            if (other := nps[i]) is not None and other.entry is not None and types & set(other.entry.types)
+        ]
+    if not hit and np.entry is not None:
+        hit = [
+            i
+            for i in candidates
+            if np.entry.canonical in (specs[i].container or []) or np.entry.canonical in specs[i].object
+        ]
+    return hit
+
+
+_STATE_KINDS: dict[str, Kind] = {
+    "clean": "clean_place",
+    "heat": "heat_place",
+    "cool": "cool_place",
+    "fill": "clean_place",
+}
+
+
+def self_state(ref: str, specs: list[BaseTaskSpec]) -> None:
+    """ "After refrigerating the pan, pick up a pan ... and put it on the table": the reference is a state
+    change of the task itself, not an order."""
+    words = [w for w, _, _ in tokens(ref)]
+    cls = G.VERBS.get(words[0], ("", ""))[0] if words else ""
+    kind = _STATE_KINDS.get(cls)
+    for s in specs:
+        if kind and s.kind in {"place", "place_two"} and s.count == 1:
+            s.kind = kind
+
+
+_YOU = re.compile(r"^\s*you\s+(?:have\s+|had\s+)?", re.I)
+
+
+def new_tasks_from_ref(ref: str, b: TaskBuilder, text: str) -> list[BaseTaskSpec]:
+    """A reference that names no earlier task but states one ("after picking up the box and placing it on
+    the armchair"): parse it as clauses of its own."""
+    drafts: list[Draft] = []
+    for c_text, _s, _e, _j in split_clauses(_YOU.sub("", ref)):  # "after you put ...": a clause of its own
+        words = [w for w, _, _ in tokens(c_text)]
+        if words and words[0] not in G.VERBS:
+            continue
+        fr = parse_frame(c_text, 0, "")
+        for it in fr.items:
+            if drafts and (joins(drafts[-1], fr, it) or incomplete(drafts[-1])):
+                drafts[-1].frames.append((fr, it))
+            else:
+                drafts.append(Draft(frames=[(fr, it)], start=0, end=0))
+    out = []
+    saved = list(b.unparsed)
+    for d in drafts:
+        spec = b.spec(d, ref)
+        if spec is not None:
+            out.append(spec)
+    b.unparsed = saved
+    return out
+
+
+_STATES = {"clean_place", "heat_place", "cool_place"}
+
+
+def _differ(new: BaseTaskSpec, old: BaseTaskSpec) -> bool:
+    """Can a whole task stated by a reference not be `old`: another destination, another state?"""
+    if (new.kind == "examine_in_light") != (old.kind == "examine_in_light"):
+        return True
+    if new.receptacle and old.receptacle and not set(new.receptacle) & set(old.receptacle):
+        return True
+    return new.kind in _STATES and old.kind in _STATES and new.kind != old.kind
+
+
+def stated_tasks(ref: str, named: list[BaseTaskSpec], b: TaskBuilder, text: str) -> list[BaseTaskSpec]:
+    """The whole tasks a reference states when they cannot be the tasks its object names ("before you put
+    a warm mug in the cabinet" next to "put a clean mug under the coffee maker"); else none."""
+    if not named:
+        return []
+    # a task the reference states has a destination or a lamp (`TaskBuilder.spec` drops the others), though
+    # the scene may not know its word ("put a cold cup on a stand"): the learned filler may ground it
+    new = new_tasks_from_ref(ref, b, text)
+    if not new:
+        return []
+    # "after you put a watch on a table": an indefinite object is another one than the task's
+    words = [w for w, _, _ in tokens(_YOU.sub("", ref))][1:3]
+    if any(w in {"a", "an", "another"} for w in words):
+        return new
+    return new if all(_differ(n, o) for n in new for o in named) else []

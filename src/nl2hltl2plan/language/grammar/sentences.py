@@ -1,0 +1,200 @@
+"""Step 1, sentences: normalise the text, split it into sentences, strip their order markers."""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+
+from nl2hltl2plan.language.grammar import word_tables as G
+from nl2hltl2plan.language.grammar.phrases import tokens
+
+
+@dataclass
+class Sentence:
+    """One sentence that states tasks: its text, where it starts in the normalised instruction, the body
+    left after its order markers were stripped, and those markers as (kind, reference) pairs."""
+
+    index: int  # position among all sentences of the instruction (relation sentences included)
+    text: str
+    start: int
+    body: str
+    markers: list[tuple[str, str]] = field(default_factory=list)  # leading ("Then,", "After X-ing the Z,")
+    trailing: list[tuple[str, str]] = field(default_factory=list)  # trailing ("at any time", "first")
+
+    @property
+    def offset(self) -> int:
+        """Where the body starts in the normalised instruction."""
+        return self.start + self.text.index(self.body) if self.body in self.text else self.start
+
+
+@dataclass
+class RelationSentence:
+    """ "The red block should be placed before the blue block": an order between tasks named by objects."""
+
+    kind: str  # "before" or "after"
+    a: str
+    b: str
+
+
+@dataclass
+class Sentences:
+    """The result of step 1: the sentences that state tasks and the relation sentences."""
+
+    sentences: list[Sentence] = field(default_factory=list)
+    relations: list[RelationSentence] = field(default_factory=list)
+
+
+def read_sentences(text: str) -> Sentences:
+    """Split a normalised instruction into sentences and strip their order markers. Sentences that only say
+    that the order is free ("The order does not matter.") are dropped: the absence of relations says it."""
+    out = Sentences()
+    for index, (sentence, start) in enumerate(split_sentences(text)):
+        markers, body = strip_leading(sentence)
+        rel = relation_sentence(body)
+        if rel is not None:
+            out.relations.append(rel)
+            continue
+        trailing, body = strip_trailing(body)
+        body = body.strip(" ,")
+        if not body:
+            continue
+        rel = relation_sentence(body)
+        if rel is not None:
+            out.relations.append(rel)
+            continue
+        if G.NO_ORDER_SENTENCE.search(body) and not any(w in G.VERBS for w, _, _ in tokens(body)[:1]):
+            continue
+        out.sentences.append(Sentence(index, sentence, start, body, markers, trailing))
+    return out
+
+
+def strip_leading(body: str) -> tuple[list[tuple[str, str]], str]:
+    """Leading order markers ("Then,", "Finally,", "After placing the statue,", "First,") and the rest."""
+    markers: list[tuple[str, str]] = []
+    changed = True
+    while changed:
+        changed = False
+        split = after_ref(body)
+        if split is not None:
+            markers.append((G.AFTER_REF, split[0]))
+            body = split[1]
+            changed = True
+            continue
+        for pat, kind in G.LEADING:
+            m = pat.match(body)
+            if m and m.end() > 0:
+                ref = m.groupdict().get("ref") or ""
+                if kind:
+                    markers.append((kind, ref))
+                body = body[m.end() :]
+                changed = True
+                break
+    return markers, body
+
+
+def strip_trailing(body: str) -> tuple[list[tuple[str, str]], str]:
+    """Trailing order markers ("at any time", "first", "after moving the X") and the rest."""
+    trailing: list[tuple[str, str]] = []
+    changed = True
+    while changed and body:
+        changed = False
+        for pat, kind in G.TRAILING:
+            m = pat.search(body)
+            if m and m.start() > 0:
+                if kind == "ref":
+                    rel = m.group("rel").lower()
+                    trailing.append((G.BEFORE_REF if rel == "before" else G.AFTER_REF, m.group("ref")))
+                else:
+                    trailing.append((kind, ""))
+                body = body[: m.start()]
+                changed = True
+                break
+    return trailing, body
+
+
+def relation_sentence(body: str) -> RelationSentence | None:
+    """ "The red block should be placed before the blue block" (a sentence that starts with no verb)."""
+    rel = G.REL_SENTENCE.match(body)
+    if rel and not any(w in G.VERBS for w, _, _ in tokens(rel.group("a"))[:1]):
+        return RelationSentence(rel.group("rel").lower(), rel.group("a"), rel.group("b"))
+    return None
+
+
+_UNTIL = re.compile(r"\b([Dd])(?:o not|on't) ([^.;!?]+?) until (?:you )?([^.;!?]+)")
+# "Once (you are) done (with the task to) X, Y" names what is done: "After X, Y" (not "Then Y")
+_DONE_WITH = re.compile(
+    r"\b([Oo]nce|[Ww]hen|[Aa]fter) (?:you(?:'re| are| have| have been)? )?(?:done|finished|through) "
+    r"(?:with )?(?:the (?:task|job) (?:of |to ))?"
+    r"(?!with\b|(?:that|this|it|these|those|everything|all|both)\b)"
+    r"(?=[a-z][^,.;!?]* [^,.;!?]+,)"
+)
+
+
+_OFF = re.compile(
+    r"\b((?:rins|wash|clean|wip|cool|warm|heat|chill)(?:e|ed|es|ing)?) off\b(?! of\b)", re.IGNORECASE
+)
+
+
+_BACK = re.compile(r",\s+back (in|into|on|onto|to)\b", re.IGNORECASE)
+
+
+_STATE_ALT = "|".join(sorted(G.STATE_WORDS))
+_STATES_LISTED = re.compile(rf"\b({_STATE_ALT}),\s+(?=(?:{_STATE_ALT})\b)", re.IGNORECASE)
+
+
+def normalize(text: str) -> str:
+    """Straight quotes, a space after a full stop, no parenthetical remarks, single spaces."""
+    text = text.replace("\u2019", "'").replace("\u2018", "'").replace("\u201c", '"').replace("\u201d", '"')
+    text = re.sub(r"(?<=[a-z])\.(?=[A-Za-z])", ". ", text)
+    text = re.sub(r"\s*\([^)]*\)", "", text)  # parenthetical remarks: "(where the red block is now)"
+    # "Do not Y until (you) X" states the order of "After X, Y" (ANNOTATION_GUIDE.md)
+    text = _UNTIL.sub(lambda m: f"{'A' if m.group(1) == 'D' else 'a'}fter {m.group(3)}, {m.group(2)}", text)
+    text = _STATES_LISTED.sub(r"\1 ", text)  # "a chilled, cut slice": one noun phrase, not two clauses
+    text = _OFF.sub(r"\1", text)  # "a rinsed off knife", "cool off a plate": the state, not a direction
+    text = _BACK.sub(r", then back \1", text)  # "put it in the fridge, back in the microwave": a sequence
+    text = _DONE_WITH.sub(lambda m: "After " if m.group(1)[0].isupper() else "after ", text)
+    return re.sub(r"\s+", " ", text).strip()
+
+
+def split_sentences(text: str) -> list[tuple[str, int]]:
+    """(sentence, start) for each sentence, split at `.`, `;`, `!`, `?`."""
+    out: list[tuple[str, int]] = []
+    pos = 0
+    for m in re.finditer(r"[.;!?]+(?:\s+|$)", text):
+        chunk = text[pos : m.start()].strip()
+        if chunk:
+            out.append((chunk, pos + (len(text[pos : m.start()]) - len(text[pos : m.start()].lstrip()))))
+        pos = m.end()
+    rest = text[pos:].strip()
+    if rest:
+        out.append((rest, pos))
+    return out
+
+
+def after_ref(body: str) -> tuple[str, str] | None:
+    """ "After placing the plunger, soap bottle, and towel, put ...": (reference, rest) split at the comma
+    that is followed by a verb (references may contain commas)."""
+    m = re.match(r"^(?:only\s+)?(?:after|once|when|following|upon)\s+", body, flags=re.I)
+    if not m or re.match(
+        r"^(?:completing|finishing|doing|all|these|those|the\s+previous|the\s+above|both|"
+        r"everything|each|every|that|this|it|done|finished|complete|completed|over|through|you|we)\b",
+        body[m.end() :],
+        flags=re.I,
+    ):
+        return None
+    splits: list[tuple[str, str]] = []
+    for c in re.finditer(r",\s*", body):
+        rest = body[c.end() :]
+        first = re.match(r"(?:then\s+|please\s+|now\s+|you\s+should\s+|we\s+)?([A-Za-z]+)", rest)
+        if c.start() > m.end() and first and first.group(1).lower() in G.VERBS:
+            splits.append((body[m.end() : c.start()], rest))
+    # "after slicing the bread, cook a slice, put it in the fridge, put the lettuce on the counter": clauses
+    # about the reference's own object (a pronoun, a slice) still belong to it
+    return next((sp for sp in splits if not _about_the_last_object(sp[1])), splits[0] if splits else None)
+
+
+def _about_the_last_object(clause: str) -> bool:
+    """Does a clause act on the object named before it ("put it in the fridge", "cook a slice")?"""
+    words = [w for w, _, _ in tokens(clause.split(",")[0])][1:]
+    words = [w for w in words if w not in G.PARTICLES and w not in {"a", "an", "the", "one"}]
+    return bool(words) and (words[0] in {"it", "them"} or words[0] in G.SLICE_NOUNS)

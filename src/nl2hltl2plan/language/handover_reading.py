@@ -1,0 +1,536 @@
+"""The language stage on the four-arm handover worlds (paper Section IV-C, Table III).
+
+`translate_handover(instruction, world)` reads an instruction about the blocks and regions of a
+`handover-square` / `handover-line` world and returns the same `LanguageResult` as the other
+worlds (HTT, base tasks, `before`, leaf formulas, the hierarchical spec) plus `constraints`: the
+guards and joint goals as text, sorted. Phrases are resolved against the instance's layout
+(`language.handover_phrases`). The rules, each general:
+
+- a goal clause "VERB BLOCKS [back] to PLACE" gives one leaf per block: `F(at(B,R1) | at(B,R2) ...)`
+  (the opposite side: per block; any empty region: `away(B)`; where another block starts: `@B`);
+  "exchange the positions of X and Y" gives `F at(X,@Y)` and `F at(Y,@X)`;
+- a clause that moves several blocks to lasting places also asks for them there at once (a leaf
+  `F(state_1 & state_2 ...)`), unless it says "at any time", "one after another" or its places hold
+  fewer blocks than it moves;
+- "X should be placed before Y" orders X's goal before Y's; "first ..., then ..." makes one node of
+  the steps in order; "after all of these, ..." makes one node of everything said so far and puts
+  the new goal after it;
+- "the arm cannot touch X until it touched Y" guards X's goal: `(!pick(X) U pick(Y)) & ...`;
+- "no block can be placed on R (during this period)" and "cannot be placed on the area other than the
+  target region" guard every goal of the sentence (or, in a sentence of its own, every goal so far)
+  until it is met: `(!drop(R) & ...) U state` (a plan ends when its last goal is met, so this is
+  "never" for the plan's whole run);
+- "each region holds one object", "separately": the world's own rule (a cell holds one block).
+Every word is read or is a filler; anything else is refused, naming the words.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from typing import TypeGuard
+
+from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.language.handover_phrases import FILLER, Marked, Place, Scene, mark
+from nl2hltl2plan.language.htt import HTT, HTTNode
+from nl2hltl2plan.language.result import LanguageResult
+from nl2hltl2plan.language.spec_builder import build_spec
+from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter, transitive_reduction
+from nl2hltl2plan.worlds.world import World
+
+VERB = r"(?:transfer|move|put|place|bring|carry|take|deliver|relocate|shift|get|set|send|return)"
+PREP = r"(?:to|into|onto|on|in|at|towards?|over\s+to|in\s+to|on\s+to)"
+MOD = (
+    r"(?:separately|individually|one\s+after\s+another|one\s+by\s+one|one\s+at\s+a\s+time|in\s+turn|each|"
+    r"all|at\s+any\s+time|any\s+time|whenever|as\s+well|too|across|over)"
+)
+GERUND = r"(?:placing|putting|moving|transferring|bringing|carrying|delivering)"
+DONE = r"(?:placed|put|moved|transferred|delivered|carried|brought|done|handled|go|goes)"
+NEG = (
+    r"(?:cannot|can\s+not|can\s+t|must\s+not|mustn\s+t|should\s+not|shouldn\s+t|may\s+not|do\s+not|"
+    r"does\s+not|don\s+t|doesn\s+t|(?:is|are)\s+not\s+allowed\s+to|never|not)"
+)
+TOUCH = r"(?:touch|pick\s+up|pick|grasp|grab|handle|move|lift)"
+TOUCHED = (
+    r"(?:touched|picked\s+up|picked|grasped|grabbed|handled|moved|lifted|touches|picks\s+up|grabs|moves)"
+)
+DROP = r"(?:placed|put|dropped|set|left|laid)"
+PERIOD = (
+    r"(?:\s*,?\s*(?:during\s+this\s+(?:period|time)|in\s+the\s+meantime|meanwhile|while\s+doing\s+(?:so|this)|"
+    r"until\s+then|throughout|at\s+any\s+time|ever|at\s+all))?"
+)
+AFTER_ALL = (
+    r"(?:after\s+all\s+(?:of\s+)?(?:these|this|that|the\s+above)|after\s+all\s+that|once\s+(?:all\s+)?"
+    r"(?:this|these|that)\s+(?:is|are|has\s+been|have\s+been)\s+done|when\s+(?:all\s+)?(?:this|these|that)\s+"
+    r"(?:is|are)\s+done|finally|lastly|at\s+the\s+end|in\s+the\s+end)"
+)
+Prohibition = tuple[list[str], Place | None, list[str], str]  # blocks, place, explicit regions, text
+LEAD = r"\s*,?\s*(?:you\s+should\s+|please\s+|we\s+should\s+)?"
+
+
+@dataclass
+class Goal:
+    block: str
+    place: Place
+    regions: tuple[str, ...]  # resolved labels (empty for away / start_of)
+    text: str
+    drop_guard: set[str] = field(default_factory=set)  # atoms that must not happen until the goal holds
+    touch_guard: list[str] = field(default_factory=list)  # blocks Y: not picked before Y is
+
+    def state(self) -> str:
+        if self.place.kind == "away":
+            return f'"away({self.block})"'
+        if self.place.kind == "start_of" and not self.regions:
+            return f'"at({self.block},@{self.place.block})"'
+        parts = [f'"at({self.block},{r})"' for r in self.regions]
+        return parts[0] if len(parts) == 1 else "(" + " | ".join(parts) + ")"
+
+    def where(self) -> str:
+        if self.place.kind == "away":
+            return "any empty region"
+        if self.place.kind == "start_of" and not self.regions:
+            return f"where {self.place.block.lower()} started"
+        return "|".join(self.regions)
+
+    def leaf(self) -> str:
+        body = f"F {self.state()}"
+        if self.drop_guard:
+            body = "(" + " & ".join(f'!"{a}"' for a in sorted(self.drop_guard)) + f") U {self.state()}"
+        guards = [f'(!"pick({self.block})" U "pick({y})")' for y in self.touch_guard]
+        return " & ".join([*guards, body])
+
+
+@dataclass
+class Clause:
+    goals: list[Goal]
+    text: str
+    marker: str = ""  # "", "first", "then", "after_all"
+    together: bool = False
+
+
+@dataclass
+class Item:
+    """A node of the task tree being built: a goal leaf, a joint ('at once') leaf, or a group."""
+
+    text: str
+    goal: Goal | None = None
+    joint: list[Goal] | None = None
+    children: list[Item] = field(default_factory=list)
+    before: list[tuple[int, int]] = field(default_factory=list)
+
+    def goals(self) -> list[Goal]:
+        if self.goal is not None:
+            return [self.goal]
+        return [g for c in self.children for g in c.goals()]
+
+
+def is_handover(world: object) -> TypeGuard[World]:
+    return isinstance(world, World) and world.kind == "handover"
+
+
+def translate_handover(instruction: str, world: World) -> LanguageResult:
+    """Instruction -> LanguageResult on a handover world (see the module docstring)."""
+    scene = Scene.of(world)
+    clauses: list[Clause] = []
+    orders: list[tuple[str, str]] = []
+    touches: list[tuple[str, str]] = []
+    notes: list[str] = []
+    pending: list[Prohibition] = []  # prohibitions stated before any goal
+    for sentence in (s for s in re.split(r"[.;!?]+(?:\s|$)", instruction) if s.strip()):
+        m = mark(sentence, scene)
+        notes += m.notes
+        forbids = _prohibitions(m)
+        touches += _touch_guards(m)
+        orders += _orders(m)
+        new = _goal_clauses(m, scene)
+        _refuse_leftovers(m, sentence)
+        scope = [g for c in new for g in c.goals] or [g for c in clauses for g in c.goals]
+        for blocks, place, explicit, text in forbids:
+            if scope:
+                _guard(scope, blocks, place, explicit, scene, text)
+            else:
+                pending.append((blocks, place, explicit, text))
+        clauses += new
+    if not clauses:
+        raise HTTError(f"no goal for a block in {instruction!r} (say where each block goes)")
+    goals = [g for c in clauses for g in c.goals]
+    for blocks, place, explicit, text in pending:
+        _guard(goals, blocks, place, explicit, scene, text)
+    for x, y in touches:
+        _first_goal(goals, x).touch_guard.append(y)
+    root = _tree(clauses)
+    for x, y in orders:
+        _order(root, _first_goal(goals, x), _first_goal(goals, y))
+    return _result(world.name, instruction, root, goals, notes)
+
+
+# ----- clause patterns --------------------------------------------------------------------------------
+def _blocks(m: Marked, k: str) -> list[str]:
+    return m.blocks[int(k)]
+
+
+def _one(m: Marked, k: str, what: str) -> str:
+    names = m.blocks[int(k)]
+    if len(names) != 1:
+        raise HTTError(f"'{m.block_text[int(k)]}' names {len(names)} blocks where {what} needs one")
+    return names[0]
+
+
+def _orders(m: Marked) -> list[tuple[str, str]]:
+    out: list[tuple[str, str]] = []
+    modal = r"(?:should|must|has\s+to|have\s+to|needs?\s+to|is\s+to|are\s+to|will)?\s*(?:be\s+)?"
+    tail = rf"(?:\s+(?:is|has\s+been|gets|was)\s+{DONE})?"
+
+    def add(match: re.Match[str], flip: bool) -> str:
+        a, b = _one(m, match.group(1), "an order"), _one(m, match.group(2), "an order")
+        out.append((b, a) if flip else (a, b))
+        return " "
+
+    for word, flip in (
+        (r"(?:before|earlier\s+than|prior\s+to|ahead\s+of)", False),
+        (r"(?:after|later\s+than)", True),
+    ):
+        m.sub(rf"\b(?:{VERB}|{GERUND})\s+B(\d+)\s+{word}\s+B(\d+){tail}", lambda x, f=flip: add(x, f))
+        m.sub(
+            rf"(?:\bwith\s+)?\bB(\d+)\s+{modal}(?:{DONE}\s+)?{word}\s+B(\d+){tail}",
+            lambda x, f=flip: add(x, f),
+        )
+    return out
+
+
+def _touch_guards(m: Marked) -> list[tuple[str, str]]:
+    out: list[tuple[str, str]] = []
+
+    def add(match: re.Match[str]) -> str:
+        out.append((_one(m, match.group(1), "a touch rule"), _one(m, match.group(2), "a touch rule")))
+        return " "
+
+    until = r"(?:until|before|unless)"
+    # the other block's touch, active ("until an arm touched Y") or passive ("until Y has been touched")
+    other = (
+        rf"(?:(?:A\s+)?(?:has\s+|have\s+|had\s+)?(?:already\s+)?{TOUCHED}\s+B(\d+)|B(\d+)\s+"
+        rf"(?:has\s+been|have\s+been|is|was|had\s+been|gets)\s+(?:already\s+)?{TOUCHED})"
+    )
+
+    def add_either(match: re.Match[str]) -> str:
+        y = match.group(2) or match.group(3)
+        out.append((_one(m, match.group(1), "a touch rule"), _one(m, y, "a touch rule")))
+        return " "
+
+    m.sub(
+        rf"(?:(?:\bA\s+)?{NEG}|\bno\s+A\s+(?:may|can|should|must|will|is\s+allowed\s+to)?)\s+{TOUCH}\s+B(\d+)\s+"
+        rf"{until}\s+{other}",
+        add_either,
+    )
+    m.sub(
+        rf"\bB(\d+)\s+{NEG}\s+be\s+{TOUCHED}\s+(?:by\s+A\s+)?{until}\s+B(\d+)\s+(?:has\s+been|is|was|had\s+been)\s+"
+        rf"(?:already\s+)?{TOUCHED}",
+        add,
+    )
+    return out
+
+
+def _prohibitions(m: Marked) -> list[Prohibition]:
+    """(blocks, place, explicit regions, text) per 'no block can be placed on ...' statement."""
+    out: list[Prohibition] = []
+
+    def add(match: re.Match[str]) -> str:
+        blocks = _blocks(m, match.group("b")) if match.groupdict().get("b") else []
+        place = m.places[int(match.group("p"))]
+        if place.kind == "opposite" and "other" in place.text:  # "the other regions": all but the targets
+            place = Place("complement", text=place.text)
+        explicit = list(place.regions) if place.kind == "regions" else []
+        if place.kind not in ("regions", "complement"):
+            raise HTTError(f"cannot forbid '{place.text}': name the regions")
+        out.append((blocks, None if explicit else place, explicit, match.group(0).strip()))
+        return " "
+
+    down = rf"(?:\s+down)?\s+{PREP}\s+P(?P<p>\d+){PERIOD}"
+    m.sub(
+        r"\b(?:meanwhile|in\s+the\s+meantime|during\s+this\s+(?:period|time)|throughout)\s*,?\s*(?=no\s+B|nothing)",
+        "",
+    )
+    m.sub(
+        rf"\bno\s+B(?P<b>\d+)\s+(?:can|may|should|must|will|is\s+allowed\s+to|are\s+allowed\s+to)?\s*(?:ever\s+)?(?:be\s+)?{DROP}{down}",
+        add,
+    )
+    m.sub(rf"\bB(?P<b>\d+)\s+{NEG}\s+(?:ever\s+)?be\s+{DROP}{down}", add)
+    m.sub(
+        rf"(?:(?:\bA\s+)?{NEG}|\bno\s+A\s+(?:may|can|should|must|will)?)\s+(?:put|place|drop|set|leave|lay)\s+"
+        rf"B(?P<b>\d+){down}",
+        add,
+    )
+    m.sub(rf"\bnothing\s+(?:can|may|should|must|will)?\s*(?:be\s+)?{DROP}{down}", add)
+    return out
+
+
+def _goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
+    clauses: list[Clause] = []
+
+    def goal(blocks: list[str], place: Place, text: str, mods: str) -> str:
+        goals = [Goal(b, place, _resolve(place, b, scene), text) for b in blocks]
+        in_turn = re.search(r"one\s+after|one\s+by|one\s+at|in\s+turn", mods) is not None
+        anytime = re.search(r"any\s+time|whenever", mods) is not None
+        room = len({r for g in goals for r in g.regions}) >= len(goals) or place.kind == "start_of"
+        together = len(goals) > 1 and place.kind != "away" and room and not (in_turn or anytime)
+        clauses.append(Clause(goals, text, together=together))
+        return f" G{len(clauses) - 1} "
+
+    def exchange(match: re.Match[str]) -> str:
+        pair = _blocks(m, match.group(1))
+        if len(pair) != 2:
+            raise HTTError(
+                f"exchange needs two blocks, '{m.block_text[int(match.group(1))]}' names {len(pair)}"
+            )
+        x, y = pair
+        goals = [
+            Goal(x, Place("start_of", block=y), (), f"{x.lower()} where {y.lower()} started"),
+            Goal(y, Place("start_of", block=x), (), f"{y.lower()} where {x.lower()} started"),
+        ]
+        clauses.append(Clause(goals, match.group(0).strip(), together=True))
+        return f" G{len(clauses) - 1} "
+
+    mods = rf"((?:\s*,?\s*{MOD})*)"
+    # "one by one, put all three blocks on I": the modifier read where it usually stands, after the object
+    m.sub(rf"\b({MOD})\s*,?\s*({VERB}\s+B\d+)", r"\2 \1")
+
+    def matched(x: re.Match[str], k: int) -> str:  # groups from k: blocks, modifiers, place, modifiers
+        place, text = m.places[int(x.group(k + 2))], x.group(0).strip()
+        return goal(_blocks(m, x.group(k)), place, text, x.group(k + 1) + x.group(k + 3))
+
+    m.sub(
+        r"\b(?:exchange|swap|switch|interchange|trade)\s+(?:the\s+)?(?:positions?\s+|places?\s+|locations?\s+|spots?\s+)?(?:of\s+)?B(\d+)(?:\s+(?:s\s+)?(?:positions?|places?|locations?))?",
+        exchange,
+    )
+    m.sub(
+        r"\bB(\d+)\s+(?:should\s+|must\s+)?(?:exchange|swap|switch|trade)\s+(?:their\s+)?(?:positions?|places?|locations?|spots?)",
+        exchange,
+    )
+    m.sub(
+        rf"\b{VERB}\s+B(\d+){mods}\s+(?:back\s+)?{PREP}\s+P(\d+){mods}",
+        lambda x: matched(x, 1),
+    )
+    m.sub(
+        rf"\bB(\d+)\s+(?:should|must|needs?\s+to|has\s+to|have\s+to|will)?\s*(?:be\s+)?{DONE}{mods}\s+(?:back\s+)?"
+        rf"{PREP}\s+P(\d+){mods}",
+        lambda x: matched(x, 1),
+    )
+    # a verb shared with the clause before: "put the red block in H, then the blue block in I"
+    m.sub(
+        rf"(?<=G\d)(?P<link>\s*,?\s*(?:and\s+)?(?:then\s+)?)B(\d+){mods}\s+(?:back\s+)?{PREP}\s+P(\d+)"
+        rf"{mods}",
+        lambda x: x.group("link") + matched(x, 2),
+    )
+    # the verb and the blocks shared with the clause before: "to region I, then to region G"
+    m.sub(
+        rf"(?<=G\d)(?P<link>\s*,?\s*(?:and\s+)?then\s+)(?:back\s+)?{PREP}\s+P(\d+){mods}",
+        lambda x: (
+            x.group("link")
+            + goal(
+                [g.block for g in clauses[-1].goals],
+                m.places[int(x.group(2))],
+                x.group(0).strip(),
+                x.group(3),
+            )
+        ),
+    )
+    _markers(m, clauses)
+    return clauses
+
+
+def _markers(m: Marked, clauses: list[Clause]) -> None:
+    def set_marker(match: re.Match[str], marker: str) -> str:
+        clauses[int(match.group(1))].marker = marker
+        return f" G{match.group(1)} "
+
+    m.sub(rf"\b(?:first(?:ly)?|to\s+begin\s+with|start\s+by){LEAD}G(\d+)", lambda x: set_marker(x, "first"))
+    m.sub(
+        rf"(?:,\s*)?(?:\band\s+)?\b(?:then|after\s+that|afterwards?|next|subsequently|later){LEAD}G(\d+)",
+        lambda x: set_marker(x, "then"),
+    )
+    m.sub(rf"\b{AFTER_ALL}{LEAD}G(\d+)", lambda x: set_marker(x, "after_all"))
+    m.sub(r"\bG(\d+)\s+first\b", lambda x: set_marker(x, "first"))
+
+    def anytime(match: re.Match[str]) -> str:
+        clauses[int(match.group(1))].together = False
+        return f" G{match.group(1)} "
+
+    m.sub(r"\b(?:at\s+any\s+time|any\s+time|in\s+any\s+order)\s*,?\s*G(\d+)", anytime)
+    m.sub(r"(?:,\s*)?\band\s+(?=G\d+)", lambda _: " ")
+
+
+def _resolve(place: Place, block: str, scene: Scene) -> tuple[str, ...]:
+    if place.kind == "opposite":
+        return scene.opposite(block)
+    if place.kind == "regions":
+        return place.regions
+    if place.kind == "start_of":
+        return place.regions
+    if place.kind == "away":
+        return ()
+    raise HTTError(f"'{place.text}' is not a place a block can go to")
+
+
+def _refuse_leftovers(m: Marked, sentence: str) -> None:
+    unused = [m.block_text[int(k)] for k in re.findall(r"\bB(\d+)\b", m.text)]
+    unused += [m.places[int(k)].text for k in re.findall(r"\bP(\d+)\b", m.text)]
+    words = [w for w in re.findall(r"[A-Za-z']+\d*|\d+", m.text) if w not in FILLER]
+    words = [w for w in words if not re.fullmatch(r"[BPG]\d+|A", w)]
+    if unused or words:
+        what = ", ".join(repr(x) for x in unused + words)
+        raise HTTError(f"the handover parser cannot use {what} in {sentence.strip()!r}; rephrase it")
+
+
+def _guard(
+    goals: list[Goal], blocks: list[str], place: Place | None, explicit: list[str], scene: Scene, text: str
+) -> None:
+    every = not blocks or set(blocks) == set(scene.blocks)
+    for g in goals:
+        if explicit:
+            regions = explicit
+        else:
+            if g.place.kind not in ("regions", "opposite"):
+                raise HTTError(f"'{text}': the goal '{g.text}' has no target regions to except")
+            regions = [r for r in scene.layout.regions if r not in g.regions]
+        for r in regions:
+            g.drop_guard.update({f"drop({r})"} if every else {f"put({b},{r})" for b in blocks})
+
+
+def _first_goal(goals: list[Goal], block: str) -> Goal:
+    mine = [g for g in goals if g.block == block]
+    if not mine:
+        raise HTTError(f"the instruction orders or guards the {block.lower()} block but gives it no goal")
+    if len(mine) > 1:
+        raise HTTError(f"the {block.lower()} block has {len(mine)} goals: which one is ordered?")
+    return mine[0]
+
+
+# ----- the task tree ----------------------------------------------------------------------------------
+def _items(c: Clause) -> list[Item]:
+    items = [Item(f"{g.block.lower()} block to {g.where()}", goal=g) for g in c.goals]
+    if c.together:
+        text = "at once: " + ", ".join(f"{g.block.lower()} on {g.where()}" for g in c.goals)
+        items.append(Item(text, joint=list(c.goals)))
+    return items
+
+
+def _unit(c: Clause) -> Item:
+    items = _items(c)
+    return items[0] if len(items) == 1 else Item(c.text, children=items)
+
+
+def _tree(clauses: list[Clause]) -> Item:
+    root = Item("")
+    chain: Item | None = None
+    prev: Clause | None = None
+    for c in clauses:
+        if c.marker == "then" and prev is not None:
+            if chain is None:
+                n_prev = len(_items(prev))
+                root.children = root.children[:-n_prev]
+                chain = Item(prev.text, children=[_unit(prev)])
+                root.children.append(chain)
+            chain.children.append(_unit(c))
+            chain.before.append((len(chain.children) - 2, len(chain.children) - 1))
+            chain.text += "; " + c.text
+        elif c.marker == "after_all" and root.children:
+            old = root.children[0] if len(root.children) == 1 else root
+            root = Item("", children=[old])
+            root.children += _items(c)
+            root.before += [(0, k) for k in range(1, len(root.children))]
+            chain = None
+        else:
+            root.children += _items(c)
+            chain = None
+        prev = c
+    return root
+
+
+def _order(root: Item, a: Goal, b: Goal) -> None:
+    def visit(item: Item) -> bool:
+        kids = [c.goal for c in item.children]
+        if a in kids and b in kids:
+            item.before.append((kids.index(a), kids.index(b)))
+            return True
+        return any(visit(c) for c in item.children)
+
+    if not visit(root):
+        raise HTTError(f"cannot order {a.text!r} before {b.text!r}: they belong to different steps")
+
+
+def _result(scene: str, instruction: str, root: Item, goals: list[Goal], notes: list[str]) -> LanguageResult:
+    if len(root.children) == 1:
+        root = root.children[0]
+    nodes: list[HTTNode] = []
+    relations: list[tuple[str, str]] = []
+    leaf_specs: dict[str, str] = {}
+    goal_leaf: dict[int, str] = {}  # id(goal) -> its HTT leaf
+
+    def add(item: Item, node_id: str, text: str) -> None:
+        if not item.children:
+            nodes.append(HTTNode(id=node_id, text=text))
+            if item.goal is not None:
+                goal_leaf[id(item.goal)] = node_id
+                leaf_specs[node_id] = item.goal.leaf()
+            else:
+                leaf_specs[node_id] = "F(" + " & ".join(g.state() for g in item.joint or []) + ")"
+            return
+        kids = [f"{node_id}.{k}" for k in range(1, len(item.children) + 1)]
+        nodes.append(HTTNode(id=node_id, text=text, children=kids))
+        relations.extend((kids[i], kids[j]) for i, j in item.before)
+        for kid, child in zip(kids, item.children, strict=True):
+            add(child, kid, child.text)
+
+    add(root, "1", instruction)
+    htt = HTT(instruction=instruction, nodes=nodes, relations=relations)
+    letter = {id(g): task_letter(k) for k, g in enumerate(goals)}
+    tasks = [
+        BaseTaskSpec(
+            id=letter[id(g)],
+            text=g.text,
+            kind="place",
+            object=[f"{g.block}Block"],
+            receptacle=[f"Region{r}" for r in g.regions] or [g.where()],
+        )
+        for g in goals
+    ]
+    task_node = {letter[id(g)]: goal_leaf[id(g)] for g in goals}
+    return LanguageResult(
+        backend="offline",
+        instruction=instruction,
+        scene=scene,
+        htt=htt,
+        tasks=tasks,
+        before=transitive_reduction(_task_pairs(root, letter), [t.id for t in tasks]),
+        task_node=task_node,
+        leaf_task={v: k for k, v in task_node.items()},
+        leaf_specs=dict(leaf_specs),
+        spec=build_spec(htt, action_completion=lambda node: leaf_specs[node.id]),
+        constraints=_constraints(root, goals, notes),
+    )
+
+
+def _task_pairs(item: Item, letter: dict[int, str]) -> set[tuple[str, str]]:
+    """Base-task precedence: every goal under an earlier sibling before every goal under a later one."""
+    out = {
+        (letter[id(a)], letter[id(b)])
+        for i, j in item.before
+        for a in item.children[i].goals()
+        for b in item.children[j].goals()
+    }
+    return out.union(*(_task_pairs(c, letter) for c in item.children))
+
+
+def _constraints(root: Item, goals: list[Goal], notes: list[str]) -> list[str]:
+    """The guards and joint goals as text, sorted (the canonical order of `plan --json`)."""
+    out = set(notes) | set(_joint_texts(root))
+    for g in goals:
+        out.update(f"{g.block.lower()} is not picked up before {y.lower()} is" for y in g.touch_guard)
+        if g.drop_guard:
+            out.add(f"until {g.block.lower()} is on {g.where()}: none of {', '.join(sorted(g.drop_guard))}")
+    return sorted(out)
+
+
+def _joint_texts(item: Item) -> list[str]:
+    own = [item.text] if item.joint else []
+    return sorted(own + [t for c in item.children for t in _joint_texts(c)])

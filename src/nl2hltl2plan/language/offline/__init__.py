@@ -1,5 +1,0 @@
-"""The offline backend: a deterministic grammar-based parser (no model, no network)."""
-
-from nl2hltl2plan.language.offline.parser import OfflineParse, parse_instruction
-
-__all__ = ["OfflineParse", "parse_instruction"]

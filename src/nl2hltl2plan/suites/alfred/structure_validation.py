@@ -1,0 +1,135 @@
+"""Validation of the structure model and of the rule that weighs it against the grammar.
+
+    python -m nl2hltl2plan.suites.alfred.structure_validation [--n 400] [--sets plain,heldout,...]
+
+Sets (never test50, never the excluded trials):
+- `plain`: issue 23's user-style instructions (tests/language/data/trust/plain.jsonl, 6 floor plans);
+- `heldout_unseen`: compositions of valid_unseen annotations with the held-out connectives
+  (`compose.HELDOUT_STYLE`, never trained on);
+- `trainstyle_unseen`: valid_unseen annotations with the training connectives (unseen clauses, scenes);
+- `faithful_seen` / `faithful_unseen`: `faithful.compose_faithful` (the earlier validation's 25
+  templates) over valid_seen / valid_unseen.
+
+For each instruction the grammar-first reading and the structure model's reading are computed once;
+every candidate `StructurePolicy` is then scored on them (the benchmark's strict match; a reading with
+unread words is a failure), per set and per number of base tasks.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from pathlib import Path
+from typing import Any
+
+from nl2hltl2plan.errors import Nl2Hltl2PlanError
+from nl2hltl2plan.language.accounting import account
+from nl2hltl2plan.language.grounding import scene_types
+from nl2hltl2plan.language.learned.compose import HELDOUT_STYLE, TRAIN_STYLE, synthesise
+from nl2hltl2plan.language.learned.inference import (
+    DEFAULT_POLICY,
+    LearnedParse,
+    ParseContext,
+    grammar_first_reading,
+    load_model,
+    structure_reading,
+)
+from nl2hltl2plan.language.learned.structure import load_structure
+from nl2hltl2plan.language.learned.structured import StructurePolicy, decide
+from nl2hltl2plan.language.scoring import match
+from nl2hltl2plan.language.translate import apply_choices, top_candidates
+
+TRUST = Path(__file__).resolve().parents[4] / "tests" / "language" / "data" / "trust"
+
+CANDIDATES: dict[str, StructurePolicy | None] = {
+    "grammar_first": None,
+    "rescue_0.5": StructurePolicy(rescue=0.5),
+    "rescue_0.8": StructurePolicy(rescue=0.8),
+    "rescue_0.5_override_0.9": StructurePolicy(rescue=0.5, override=0.9),
+    "rescue_0.5_override_0.97": StructurePolicy(rescue=0.5, override=0.97),
+    "rescue_0.5_override_0.99": StructurePolicy(rescue=0.5, override=0.99),
+    "rescue_0.5_override_0.9_doubt_0.5": StructurePolicy(rescue=0.5, override=0.9, doubt=0.5),
+    "structure_always": StructurePolicy(rescue=0.0, override=0.0),
+}
+
+
+def rows_of_set(name: str, n: int) -> list[dict[str, Any]]:
+    from nl2hltl2plan.language.learned.train import text_faithful_items
+    from nl2hltl2plan.suites.alfred.learned_validation import validation_rows
+
+    if name == "plain":
+        return [json.loads(line) for line in (TRUST / "plain.jsonl").read_text().splitlines() if line]
+    if name.startswith("faithful_"):
+        return validation_rows("valid_" + name.split("_")[1], n, 0)
+    style = HELDOUT_STYLE if name.startswith("heldout") else TRAIN_STYLE
+    synth = synthesise(text_faithful_items("valid_unseen"), n, style, seed=11)
+    return [
+        {"id": f"{name}.{i}", "n_base": len(s.tasks), "instruction": s.text, "scene": s.scene,
+         "tasks": [t.model_dump() for t in s.tasks], "before": s.before}
+        for i, s in enumerate(synth)
+    ]
+
+
+def _ok(parse: LearnedParse, row: dict[str, Any]) -> bool:
+    if parse.unparsed or not parse.tasks:
+        return False
+    parse = apply_choices(parse, top_candidates(parse.ambiguities))
+    try:
+        if account(row["instruction"], parse.tasks, parse.before):
+            return False
+    except Exception:  # noqa: BLE001 - a cyclic order or a count error is a failure here
+        return False
+    return match(parse.tasks, parse.before, row["tasks"], row["before"], strict=True).order_ok
+
+
+def choose(g: LearnedParse, s: tuple[LearnedParse, float] | None, rule: StructurePolicy | None) -> str:
+    """Which reading `rule` takes (`structured.decide`); None: the grammar-first reading alone."""
+    if rule is None:
+        return "grammar"
+    complete = bool(g.tasks) and not g.unparsed
+    return decide((g.tasks, g.before, complete), (s[0].tasks, s[0].before, s[1]) if s else None, rule)
+
+
+def score_set(rows: list[dict[str, Any]]) -> dict[str, dict[Any, list[int]]]:
+    """Per candidate policy, per number of base tasks: [right, total]."""
+    model, structure = load_model(), load_structure()
+    out: dict[str, dict[Any, list[int]]] = {name: {} for name in CANDIDATES}
+    for row in rows:
+        ctx = ParseContext(scene_types(row["scene"]), row["scene"], None, DEFAULT_POLICY, model)
+        try:
+            g = grammar_first_reading(row["instruction"], ctx)
+        except Nl2Hltl2PlanError:  # a refusal (e.g. a contradictory order): a failure, whatever the model
+            g = LearnedParse(instruction=row["instruction"], unparsed=["refused"])
+        s = structure_reading(row["instruction"], ctx, structure)
+        right = {"grammar": _ok(g.model_copy(deep=True), row), "neither": False}
+        right["model"] = s is not None and _ok(s[0].model_copy(deep=True), row)
+        for name, rule in CANDIDATES.items():
+            ok = right[choose(g, s, rule)]
+            for key in (row["n_base"], "all"):
+                cell = out[name].setdefault(key, [0, 0])
+                cell[0] += int(ok)
+                cell[1] += 1
+    return out
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(prog="python -m nl2hltl2plan.suites.alfred.structure_validation")
+    ap.add_argument("--n", type=int, default=400)
+    ap.add_argument("--sets", default="plain,heldout_unseen,trainstyle_unseen,faithful_seen,faithful_unseen")
+    args = ap.parse_args(argv)
+    for name in args.sets.split(","):
+        rows = rows_of_set(name, args.n)
+        scores = score_set(rows)
+        keys = sorted(k for k in scores["grammar_first"] if k != "all") + ["all"]
+        print(f"\n{name} ({len(rows)} instructions): conversion per number of base tasks")
+        print("| policy | " + " | ".join(str(k) for k in keys) + " |")
+        print("| --- |" + " --- |" * len(keys))
+        for policy, cells in scores.items():
+            vals = [f"{100 * cells[k][0] / cells[k][1]:.1f}% ({cells[k][0]}/{cells[k][1]})" for k in keys]
+            print(f"| {policy} | " + " | ".join(vals) + " |")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,1 @@
+"""SMART-LLM's benchmark: its tasks, worlds and oracle specs, the job and SMART-LLM's metrics."""
