@@ -200,13 +200,19 @@ def _names_object_before(text: str, at: int) -> bool:
     return bool(mentions) and mentions[-1].char_end == len(text[:at].rstrip())
 
 
+_LIST_WORDS = frozenset({"the", "a", "an", "and", "or", "both", ","})
+
+
 def _verbless_placement(body: str) -> bool:
-    """Does the sentence name objects and then, after in/into/to/onto/on, a place, with no verb?"""
+    """Does the sentence start with object names only ("green apple and the orange") and go on with
+    in/into/to/onto/on and a place?"""
     words = tokens(body)
     k = next((i for i, (w, _, _) in enumerate(words) if w in _PLACE_PREPS), None)
-    if not k or any(w in G.VERBS or w in G.PRONOUNS or w in ("i", "you", "we") for w, _, _ in words[:k]):
+    if not k:
         return False
-    return _names_object_before(body, words[k][1]) and bool(find_mentions(body[words[k][2] :]))
+    named = [(m.char_start, m.char_end) for m in find_mentions(body[: words[k][1]])]
+    only_names = all(w in _LIST_WORDS or any(a <= s < b for a, b in named) for w, s, _ in words[:k])
+    return only_names and _names_object_before(body, words[k][1]) and bool(find_mentions(body[words[k][2] :]))
 
 
 def split_sentences(text: str) -> list[tuple[str, int]]:
