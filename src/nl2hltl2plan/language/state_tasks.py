@@ -31,7 +31,7 @@ from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 
 from nl2hltl2plan.errors import HTTError, WorldError
-from nl2hltl2plan.language.accounting import LOCATIVE, categories
+from nl2hltl2plan.language.accounting import LOCATIVE, account, categories, stems, verb_places
 from nl2hltl2plan.language.grounding import Grounder, find_mentions, tokens
 from nl2hltl2plan.language.tasks import BaseTaskSpec
 
@@ -98,16 +98,6 @@ ROOM_KINDS = {"kitchen": (1, 30), "living room": (201, 230), "bedroom": (301, 33
 _ROOM_SYNONYMS = {"lounge": "living room", "restroom": "bathroom"}
 
 
-@dataclass(frozen=True)
-class _Scene:
-    """What clause reading needs of the scene: its types (grounder), how many of each it holds, and
-    whether a type can take a state (for "it": the toaster, not the bread, is switched on)."""
-
-    grounder: Grounder
-    counts: Mapping[str, int] | None = None
-    can: Callable[[str, str], bool] | None = None
-
-
 def read_state_clause(
     clause: str,
     grounder: Grounder,
@@ -119,16 +109,13 @@ def read_state_clause(
     state (None: not such a clause). `pronoun`: the object type(s) "it" may stand for, nearest first;
     `counts`: instances per type, to refuse "all the X" when the scene holds several; `can(type,
     state)`: whether objects of a type can take a state."""
-    return _read(
-        clause, _Scene(grounder, counts, can), [pronoun] if isinstance(pronoun, str) else list(pronoun or [])
-    )
+    pronouns = [pronoun] if isinstance(pronoun, str) else list(pronoun or [])
+    return _read(clause, StateReader(grounder, counts, can), pronouns)
 
 
-def _read(clause: str, scene: _Scene, pronouns: list[str]) -> BaseTaskSpec | None:
+def _read(clause: str, scene: StateReader, pronouns: list[str]) -> BaseTaskSpec | None:
     text = _normal(clause)
-    clause = re.sub(
-        r"^(?:(?:and|then|also)\s+)+", "", clause.strip(), flags=re.IGNORECASE
-    )  # the task's words
+    clause = re.sub(r"^(?:(?:and|then|also)\s+)+", "", clause.strip(), flags=re.IGNORECASE)
     light = _room_light(text, scene)
     if light is not None:
         return BaseTaskSpec(kind="set_state", text=clause.strip(), object=["LightSwitch"], state=light)  # type: ignore[arg-type]
@@ -175,7 +162,7 @@ def _slice_phrase(phrase: str) -> tuple[str, bool]:
     return next(g for g in m.groups() if g), True
 
 
-def _ground(word: str, state: str, scene: _Scene, pronouns: list[str]) -> list[str]:
+def _ground(word: str, state: str, scene: StateReader, pronouns: list[str]) -> list[str]:
     if word in ("it", "them"):
         fit = [p for p in pronouns if scene.can is None or scene.can(p, state)]
         return fit[:1]
@@ -209,6 +196,18 @@ def _ground(word: str, state: str, scene: _Scene, pronouns: list[str]) -> list[s
     return types
 
 
+_NOT_A_NAME = LOCATIVE | {"to", "into", "onto", "toward", "towards", "while", "then", "and", "or"}
+_VERBS = {
+    "verb_any",
+    "verb_take",
+    "verb_step",
+    "verb_switch",
+    "verb_heat_place",
+    "verb_cool_place",
+    "verb_clean_place",
+}
+
+
 def _one_thing(phrase: str) -> bool:
     """Is the phrase one object's name, with nothing after it ("the red mug", not "the mug on the
     table": a place there is for the grammar, or is not understood)?"""
@@ -222,7 +221,7 @@ def _one_thing(phrase: str) -> bool:
     return not any(w in _NOT_A_NAME or categories(w) & _VERBS for w, _, _ in toks[: last.start])
 
 
-def _room_light(text: str, scene: _Scene) -> str | None:
+def _room_light(text: str, scene: StateReader) -> str | None:
     """ "on" / "off" when the clause only asks for a room to be lit or dark (None: it does not)."""
     for pattern, state in _ROOM_STATE:
         m = re.match(pattern, text)
@@ -260,16 +259,6 @@ def light_condition(clause: str, grounder: Grounder) -> tuple[str, BaseTaskSpec 
     return head, BaseTaskSpec(kind="set_state", text=tail, object=["LightSwitch"], state=state)  # type: ignore[arg-type]
 
 
-_NOT_A_NAME = LOCATIVE | {"to", "into", "onto", "toward", "towards", "while", "then", "and", "or"}
-_VERBS = {
-    "verb_any",
-    "verb_take",
-    "verb_step",
-    "verb_switch",
-    "verb_heat_place",
-    "verb_cool_place",
-    "verb_clean_place",
-}
 _GUESS = re.compile(r"^'(?P<clause>.+)': its \w+ is not stated")
 _PARTS = re.compile(r",\s*|;\s*|\s+and\s+|\s+(?=then\s)|(?<=[.!?])\s+")
 _CONNECTIVE = re.compile(r"^(?:and|then|also)?$", re.IGNORECASE)
@@ -282,7 +271,9 @@ def _parts(text: str) -> list[str]:
 
 @dataclass
 class StateReader:
-    """Reads clauses as state and treatment requests in one scene (see the module docstring)."""
+    """Reads clauses as state and treatment requests in one scene (see the module docstring): its types
+    (grounder), how many of each it holds (to refuse "all the X" when there are several), and whether
+    a type can take a state (for "it": the toaster, not the bread, is switched on)."""
 
     grounder: Grounder
     counts: Mapping[str, int] | None = None
@@ -291,13 +282,12 @@ class StateReader:
     def read(self, text: str, pronouns: Sequence[str] = ()) -> list[BaseTaskSpec] | None:
         """Every part of `text` (split at commas, semicolons, "and" and sentence ends) read as a
         request, a light condition before the task it conditions; None when a part is no request.
-        Tasks have no ids yet; `ordered(tasks)` gives the light conditions' pairs once they do."""
-        scene = _Scene(self.grounder, self.counts, self.can)
+        Tasks have no ids yet; `light_orders(tasks)` gives the conditions' pairs once they do."""
         out: list[BaseTaskSpec] = []
         for part in _parts(text):
             head, condition = light_condition(part, self.grounder)
             near = [*(x for t in reversed(out) for x in t.object[:1]), *pronouns]
-            task = _read(head, scene, near)
+            task = _read(head, self, near)
             if task is None:
                 return None
             out += [condition, task] if condition is not None else [task]
@@ -346,8 +336,6 @@ def reread(tasks: Sequence[BaseTaskSpec], instruction: str, reader: StateReader)
     requests when it is nothing but requests ("wash the mug and turn off the lights", which the learned
     model reads as a lamp), or itself followed by the requests that end the clause ("put the bread in
     the toaster and turn it on")."""
-    from nl2hltl2plan.language.accounting import account
-
     out: list[list[BaseTaskSpec]] = []
     for t in tasks:
         said = bool(t.text) and t.text.lower() in instruction.lower()
@@ -377,8 +365,6 @@ def _requests_after(task: BaseTaskSpec, reader: StateReader) -> list[BaseTaskSpe
 def guessed_slot(task: BaseTaskSpec, text: str) -> bool:
     """Does the task fill a place (receptacle, container, lamp) that no word of `text` names (a learned
     guess: "warm up the mug" -> onto the coffee machine)?"""
-    from nl2hltl2plan.language.accounting import stems, verb_places
-
     named = {t for m in find_mentions(text) for t in m.entry.types}
     named |= {verb_places()[f] for w, _, _ in tokens(text) for f in stems(w) if f in verb_places()}
     slots = [task.receptacle, task.container, task.light]

@@ -226,7 +226,8 @@ def _parse(
     look: AffordanceLookup | None,
     world: SceneLike | None = None,
 ) -> LanguageResult:
-    """A backend that needs no LLM (`parsers.PARSERS`), then the clauses only a state task reads."""
+    """A backend that needs no LLM (`parsers.PARSERS`), with the state and treatment requests it cannot
+    read (`state_tasks`)."""
     reader = _state_reader(types, scene, world)
     parsed = _parsed_and_reread(PARSERS[backend], instruction, types, scene, strict, look, reader)
     if parsed.unparsed:  # clauses that change or treat one object (SMART-LLM's skills and goals)
@@ -329,23 +330,29 @@ def _relettered(
     new_id: dict[str, list[str]] = {}
     tasks: list[BaseTaskSpec] = []
     fresh: list[BaseTaskSpec] = []
+    kept: set[str] = set()  # tasks the parser read as they stand
     for old, group in [*zip(parsed.tasks, stand_for, strict=True), *((None, [t]) for t in added)]:
         renamed = [t.model_copy(update={"id": task_letter(len(tasks) + k)}) for k, t in enumerate(group)]
         tasks += renamed
         if old is None or group != [old]:
             fresh += renamed
+        else:
+            kept.add(old.id)
         if old is not None:
             new_id[old.id] = [t.id for t in renamed]
     before = [(x, y) for a, b in parsed.before for x in new_id.get(a, [a]) for y in new_id.get(b, [b])]
     groups = [[x for m in grp for x in new_id.get(m, [m])] for grp in parsed.groups]
     before += light_orders(tasks) + state_orderings(parsed.instruction, tasks, fresh)
-    kept = [
-        a.model_copy(update={"task": new_id[a.task][0]})
-        for a in parsed.ambiguities
-        if len(new_id.get(a.task, [])) == 1
+    ambiguities = [
+        a.model_copy(update={"task": new_id[a.task][0]}) for a in parsed.ambiguities if a.task in kept
     ]
     return parsed.model_copy(
-        update={"tasks": tasks, "before": list(dict.fromkeys(before)), "groups": groups, "ambiguities": kept}
+        update={
+            "tasks": tasks,
+            "before": list(dict.fromkeys(before)),
+            "groups": groups,
+            "ambiguities": ambiguities,
+        }
     )
 
 
