@@ -40,15 +40,48 @@ REPHRASINGS: dict[int, list[str]] = {
 }
 
 # Styles the offline parser does not yet read correctly (kept as expected failures for the parser work):
+# a subordinate clause that states the order ("before placing ...", "once ... are in ...").
 HARDER: dict[int, list[str]] = {
-    1: ["Green apple goes in the blue plate, orange goes in the yellow plate.",
-        "Hey robot, drop the green apple into the blue plate and the orange into the yellow plate, thanks!"],
-    2: ["I need the orange in the yellow plate, the red apple in the blue plate and the green apple in the "
-        "pink plate. Order does not matter."],
-    4: ["Put the carrot and the red apple in the blue plate after you have put the green apple and the "
-        "orange in the yellow plate.",
-        "Before placing the carrot and red apple in the blue plate, place the green apple and orange in the "
+    4: ["Before placing the carrot and red apple in the blue plate, place the green apple and orange in the "
         "yellow plate.",
         "Once the green apple and the orange are in the yellow plate, put the carrot and the red apple in "
         "the blue plate."],
+}
+
+# Validation rephrasings in the terse and conversational styles (issue 24), written for developing the
+# reader's rules for those styles; kept apart from the study's wordings
+# (suites/data/tabletop_rephrasings.json), which were not used to write the rules.
+STYLES: dict[str, dict[int, list[str]]] = {
+    "terse": {
+        1: ["Green apple onto blue plate; orange onto yellow plate.",
+            "Orange into the yellow plate and green apple into the blue plate.",
+            "Green apple goes in the blue plate, orange goes in the yellow plate."],
+        2: ["Red apple into blue plate, green apple into pink plate, orange into yellow plate. Any order.",
+            "The orange on the yellow plate, the green apple on the pink plate, the red apple on the blue "
+            "plate, in any order."],
+        3: ["Orange on the yellow plate, carrot on the blue plate, red apple on the pink plate, green apple "
+            "on the green plate, any order."],
+        4: ["First green apple and orange into the yellow plate, then red apple and carrot into the blue "
+            "plate.",
+            "Orange and green apple on the yellow plate first. Then carrot and red apple on the blue plate, "
+            "any order."],
+    },
+    "conversational": {
+        1: ["I would like you to put the orange in the yellow plate and the green apple in the blue plate.",
+            "We need the green apple on the blue plate and the orange on the yellow plate, please.",
+            "Hey robot, drop the green apple into the blue plate and the orange into the yellow plate, "
+            "thanks!"],
+        2: ["I'd love the orange to be in the yellow plate, the red apple in the blue plate and the green "
+            "apple in the pink plate, in whatever order.",
+            "I need the orange in the yellow plate, the red apple in the blue plate and the green apple in "
+            "the pink plate. Order does not matter."],
+        3: ["I want the carrot to go on the blue plate, the orange on the yellow plate, the green apple on "
+            "the green plate and the red apple on the pink plate. Any order is fine."],
+        4: ["Begin with the orange and the green apple on the yellow plate, and after that I'd like the "
+            "carrot and the red apple on the blue plate.",
+            "Could you start with the green apple and the orange in the yellow plate? When that is done, "
+            "the carrot and the red apple go in the blue plate.",
+            "Put the carrot and the red apple in the blue plate after you have put the green apple and the "
+            "orange in the yellow plate."],
+    },
 }

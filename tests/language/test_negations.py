@@ -9,7 +9,6 @@ from pathlib import Path
 
 import pytest
 import spot
-from nl2hltl2plan.language.task_specs import BaseTaskSpec, ConstraintSpec
 
 from nl2hltl2plan.cli.main import main
 from nl2hltl2plan.config import data_dir
@@ -17,6 +16,7 @@ from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.accounting import account
 from nl2hltl2plan.language.grounding import Grounder
 from nl2hltl2plan.language.negations import read_negations
+from nl2hltl2plan.language.task_specs import BaseTaskSpec, ConstraintSpec
 from nl2hltl2plan.logic.constraints import Constraint
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.pipeline import run
@@ -163,7 +163,6 @@ def test_a_change_of_state_can_be_forbidden():
 
 def test_an_llm_backend_states_constraints(stub):
     from nl2hltl2plan.config.llm_settings import LLMSettings
-
     from nl2hltl2plan.language.llm.client import LLMClient
     from nl2hltl2plan.language.stages import SemanticCheckError
     from nl2hltl2plan.language.translate import translate
@@ -194,9 +193,9 @@ class _Kitchen:
 @needs_data
 def test_benchmark_records_keep_the_constraints_for_the_planning_workers():
     import trust_sets
-    from nl2hltl2plan.suites.alfred.alfred_language import language_record
 
     from nl2hltl2plan.pipeline import PipelineOptions
+    from nl2hltl2plan.suites.alfred.alfred_language import language_record
 
     (gt,) = [g for g in trust_sets.load("mixed") if g.instruction.endswith("never touch the tomato")]
     rec = language_record(gt, PipelineOptions(), None)

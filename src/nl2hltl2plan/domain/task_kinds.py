@@ -21,7 +21,7 @@ Kind = Literal[
 ]
 KINDS: tuple[str, ...] = Kind.__args__  # type: ignore[attr-defined]
 SLOTS = ("object", "container", "receptacle", "light")  # a base task's typed slots
-State = Literal["on", "off", "broken", "sliced", "open", "closed", "held"]
+State = Literal["on", "off", "broken", "sliced", "open", "closed", "held", "toasted"]
 STATE_WORDS = {
     "on": "switched on",
     "off": "switched off",
@@ -31,7 +31,7 @@ STATE_WORDS = {
     "closed": "closed",
     "held": "picked up",
 }
-# a set_state task's state -> the affordance its object needs (None: see `_state_ok`)
+# a set_state task's state -> the affordance its object needs (None: see `worlds.tasks.can_take_state`)
 STATE_FLAG: dict[str, str | None] = {
     "on": "toggleable",
     "off": "toggleable",

@@ -27,7 +27,7 @@ import networkx as nx
 
 from nl2hltl2plan.domain.task_kinds import APPLIANCE, slots_of
 from nl2hltl2plan.errors import HTTError
-from nl2hltl2plan.language.grounding import Mention, camel_words, find_mentions, lexicon, tokens
+from nl2hltl2plan.language.grounding import Mention, camel_words, find_mentions, lexicon, lookup, tokens
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, ConstraintSpec
 from nl2hltl2plan.logic.atom import Atom
 from nl2hltl2plan.worlds.world import KNIFE_TYPES
@@ -39,6 +39,7 @@ IMPLIED_TYPES = {
     "cool_place": {APPLIANCE["cool_place"]},
 }
 LAMPS = frozenset({"DeskLamp", "FloorLamp"})
+OPENED_FOR_ITSELF = frozenset({"Book", "Laptop", "Blinds"})  # opened to be open, not to reach inside
 DETERMINERS = {"the", "a", "an", "that", "this", "those", "these", "its", "their", "my", "your", "of"}
 # a place named after an object and one of these describes where the object is ("the apple on the table")
 LOCATIVE = frozenset(
@@ -130,7 +131,8 @@ class _Parse:
 
     @property
     def kinds(self) -> set[str]:
-        return {t.kind for t in self.tasks}
+        """The kinds of task, a toast counting as heating (in the toaster)."""
+        return {t.kind for t in self.tasks} | {"heat_place" for t in self.tasks if t.state == "toasted"}
 
     @property
     def sliced(self) -> bool:
@@ -139,6 +141,13 @@ class _Parse:
     @property
     def states(self) -> set[str]:
         return {str(t.state) for t in self.tasks if t.kind == "set_state"}
+
+    @property
+    def light_states(self) -> set[str]:
+        """The states set_state tasks switch a room's light switch or a lamp into."""
+        lights = LAMPS | {"LightSwitch"}
+        on = {"on"} if "examine_in_light" in self.kinds else set()  # its lamp is switched on
+        return on | {str(t.state) for t in self.tasks if t.kind == "set_state" and set(t.object) & lights}
 
     def slots(self) -> list[tuple[str, str, frozenset[str]]]:
         """(task id, role, types) for every filled slot."""
@@ -295,6 +304,8 @@ def _invented(mentions: list[Mention], toks: list[tuple[str, int, int]], parse: 
     """Slots of base tasks that no word of the instruction names (a guess, not a reading)."""
     places = verb_places()
     named = {places[f] for w, _, _ in toks for f in stems(w) if f in places}
+    if any(c.startswith("state_lights_") for w, _, _ in toks for c in categories(w)):
+        named.add("LightSwitch")  # "make the kitchen dark" names the room's lights
     for m in mentions:
         named |= set(m.entry.types) | {m.entry.canonical}
     implied = parse.implied()
@@ -423,6 +434,15 @@ def _verb(w: str, cats: set[str], words: list[str], i: int, parse: _Parse) -> Un
         return None
     if "verb_break" in cats and "broken" not in parse.states:
         return Unread(w, "action", "no base task breaks something")
+    if w in ("open", "close", "shut") and (thing := _opened_thing(words[i + 1 : i + 4], parse)):
+        return Unread(f"{w} the {camel_words(thing).lower()}", "action", f"no base task {w}s it")
+    for state in ("off", "on"):
+        if f"state_lights_{state}" in cats and state not in parse.light_states:
+            return Unread(w, "state", f"no base task switches the lights {state}")
+    if "verb_unsupported" in cats and any(
+        c.startswith("state_lights_") for x in words[i + 1 : i + 5] for c in categories(x)
+    ):
+        return None  # "make the kitchen dark": the state word is the request, judged on its own
     if "verb_unsupported" in cats and not cats & {"verb_any", "verb_step"}:
         return Unread(w, "action", "no base task does this")
     if "verb_unsupported_before_object" in cats and words[i + 1 : i + 2] and words[i + 1] in DETERMINERS:
@@ -452,6 +472,19 @@ def _constraint_verb(w: str, cats: set[str], words: list[str], i: int, c: Constr
     if "verb_examine_in_light" in cats or "verb_unsupported" in cats:
         return Unread(w, "action", "a constraint forbids actions and changes of state, not this skill")
     return None
+
+
+def _opened_thing(after: list[str], parse: _Parse) -> str | None:
+    """The object an "open" / "close" names when it is opened for its own sake (a book, a laptop, the
+    blinds: never a container on the way) and no task opens or closes it."""
+    rest = " ".join(after[1:] if after and after[0] in DETERMINERS else after)
+    entry = lookup(rest.split()[0]) if rest else None
+    if entry is None or not set(entry.types) & OPENED_FOR_ITSELF:
+        return None
+    done = {
+        t for x in parse.tasks if x.kind == "set_state" and x.state in ("open", "closed") for t in x.object
+    }
+    return None if set(entry.types) & done else entry.canonical
 
 
 def _noun(w: str, cats: set[str]) -> Unread | None:

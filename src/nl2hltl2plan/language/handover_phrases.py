@@ -23,6 +23,7 @@ from nl2hltl2plan.worlds.handover_world import REGIONS, Layout, layout
 from nl2hltl2plan.worlds.world import Cell, World
 
 COLOURS = ("red", "blue", "yellow")
+_TOUCHED = r"(?:touched|picked|grasped|grabbed|handled|moved|lifted)"
 COUNTS = {"two": 2, "three": 3, "four": 4, "both": 2, "2": 2, "3": 3, "4": 4}
 NOUN = r"(?:block|cube|pillar|object|item|piece|one)"
 NOUNS = r"(?:blocks|cubes|pillars|objects|items|pieces|ones)"
@@ -146,7 +147,7 @@ def _mark_one_per_region(m: Marked) -> None:
         r"(?:with\s+)?(?:one|a\s+single|1)\s+" + NOUN + r"\b"
     )
     per = (
-        r"\b(?:only\s+)?(?:one|a\s+single)(?:\s+"
+        r"\b(?:with\s+)?(?:only\s+)?(?:one|a\s+single)(?:\s+"
         + NOUN
         + r")?\s+(?:per|in\s+each|on\s+each|for\s+each)(?:\s+(?:region|area|zone))?\b"
     )
@@ -164,6 +165,11 @@ def _mark_one_per_region(m: Marked) -> None:
 
 
 def _mark_arms(m: Marked) -> None:
+    # "until one of them touched the red block": them = the arms (the agent of touching)
+    m.sub(
+        rf"\b(?:one|any|either|each)\s+of\s+them\b(?=\s+(?:has\s+|have\s+|had\s+)?{_TOUCHED})",
+        lambda _: " A ",
+    )
     m.sub(
         r"\b(?:any\s+(?:of\s+)?|an?\s+|each\s+|every\s+)?(?:the\s+)?(?:robot\s+)?(?:arms?|robots?)\b(?!\s+[a-d]\b)",
         lambda _: " A ",
@@ -230,7 +236,7 @@ def _new_place(m: Marked, place: Place) -> str:
 
 def _mark_places(m: Marked, scene: Scene) -> None:
     complement = (
-        r"\b(?:the\s+)?(?:any\s+)?(?:other\s+)?(?:areas?|regions?|places?|anywhere|zones?)\s+"
+        r"\b(?:the\s+|an?\s+)?(?:any\s+)?(?:other\s+)?(?:areas?|regions?|places?|anywhere|zones?)\s+"
         r"(?:other\s+than|except(?:\s+for)?|besides|apart\s+from|but)\s+(?:the\s+|their\s+|its\s+)?"
         r"(?:target|goal|destination|assigned)\s+(?:regions?|areas?|places?|zones?)\b"
     )
@@ -291,6 +297,12 @@ def _mark_places(m: Marked, scene: Scene) -> None:
         r"(?:regions?|areas?|zones?)\s*(?:\(\s*)?(?:at\s+)?(?:regions?\s+)?"
     )
     m.sub(lead + LETTER + r"(?:" + link + LETTER + r")*(?:\s*\))?(?:\s+at\b)?", regions)
+    # "the placement area on the side of arm a and arm b (region E, F, G)": the area is the place named
+    m.sub(
+        r"\b(?:the\s+)?(?:goal|target|placement|destination)\s+(?:regions?|areas?|zones?)"
+        r"\s+(?:on|to|at|in)\s+(?=P\d)",
+        " ",
+    )
     # a place named twice ("region G (where the red block is)", "area (E, F, G) to the side of arm a"):
     # both readings must agree
     apposition = r"P(\d+)\s*(?:,|\(|to|on|at|in)?\s*P(\d+)\s*\)?"

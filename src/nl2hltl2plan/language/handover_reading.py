@@ -321,9 +321,10 @@ def _goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
         rf"{mods}",
         lambda x: x.group("link") + matched(x, 2),
     )
-    # the verb and the blocks shared with the clause before: "to region I, then to region G"
+    # the verb and the blocks shared with the clause before: "to region I, then to region G", "on
+    # region I first and then on region G"
     m.sub(
-        rf"(?<=G\d)(?P<link>\s*,?\s*(?:and\s+)?then\s+)(?:back\s+)?{PREP}\s+P(\d+){mods}",
+        rf"(?<=G\d)(?P<link>(?:\s+first\b)?\s*,?\s*(?:and\s+)?then\s+)(?:back\s+)?{PREP}\s+P(\d+){mods}",
         lambda x: (
             x.group("link")
             + goal(

@@ -21,10 +21,10 @@ from __future__ import annotations
 
 import contextlib
 from collections import Counter
-from collections.abc import Callable, Iterator
-from typing import Literal, Protocol, Self, TypeVar
+from collections.abc import Callable, Iterator, Sequence
+from typing import TYPE_CHECKING, Literal, Protocol, Self, TypeVar, get_args
 
-from nl2hltl2plan.domain.task_kinds import SLOTS
+from nl2hltl2plan.domain.task_kinds import SLOTS, State
 from nl2hltl2plan.errors import HTTError, LLMError, Nl2Hltl2PlanError, WorldError
 from nl2hltl2plan.language import handover_reading, stages
 from nl2hltl2plan.language.accounting import account, take_every_instance
@@ -40,17 +40,20 @@ from nl2hltl2plan.language.negations import (
     resolve_until,
     spec_constraints,
 )
-from nl2hltl2plan.language.parsers import PARSERS
+from nl2hltl2plan.language.parsers import PARSERS, Parser
 from nl2hltl2plan.language.result import Ambiguity, LanguageResult
 from nl2hltl2plan.language.scoring import match
 from nl2hltl2plan.language.spec_builder import GenerateLTL, build_spec
-from nl2hltl2plan.language.state_tasks import read_unparsed_states, state_orderings
+from nl2hltl2plan.language.state_tasks import StateReader, guessed_slot, light_orders, reread, state_orderings
 from nl2hltl2plan.language.suggest import not_understood, suggestion_text
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, ConstraintSpec, task_letter, transitive_reduction
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec, LeafOrFormula
 from nl2hltl2plan.logic.relations import compile_relations
-from nl2hltl2plan.worlds.tasks import demand_of
+from nl2hltl2plan.worlds.tasks import can_take_state, demand_of
 from nl2hltl2plan.worlds.world import World
+
+if TYPE_CHECKING:
+    from nl2hltl2plan.language.grammar import OfflineParse
 
 LtlSource = Literal["compiler", "llm", "learned"]
 MAX_INSTRUCTION_CHARS = 2000  # about 300 words, 15 times the paper's longest; bounds the parser's time
@@ -285,17 +288,15 @@ def _parse(
     look: AffordanceLookup | None,
     world: SceneLike | None = None,
 ) -> LanguageResult:
-    """A backend that needs no LLM (`parsers.PARSERS`), then the clauses only a state task reads."""
-    parse = PARSERS[backend]
-    parsed = parse(instruction, types, scene or "the scene", strict=strict, affordances=look)
-    if parsed.unparsed:  # clauses that change one object's state (SMART-LLM's skills)
-        states, left = read_unparsed_states(
-            parsed.unparsed, len(parsed.tasks), Grounder(types, scene or "the scene")
+    """A backend that needs no LLM (`parsers.PARSERS`), with the state and treatment requests it cannot
+    read (`state_tasks`)."""
+    reader = _state_reader(types, scene, world)
+    parsed = _parsed_and_reread(PARSERS[backend], instruction, types, scene, strict, look, reader)
+    if parsed.unparsed:  # clauses that change or treat one object (SMART-LLM's skills and goals)
+        states, left = reader.read_unparsed(parsed.unparsed, parsed.tasks)
+        parsed = _relettered(
+            parsed.model_copy(update={"unparsed": left}), [[t] for t in parsed.tasks], states
         )
-        if states:
-            tasks = [*parsed.tasks, *states]
-            before = [*parsed.before, *state_orderings(instruction, tasks, states)]
-            parsed = parsed.model_copy(update={"tasks": tasks, "unparsed": left, "before": before})
     if isinstance(world, World) and parsed.tasks:  # "all the mugs": every instance the scene holds
         every = take_every_instance(instruction, parsed.tasks, scene_instances(world))
         parsed = parsed.model_copy(update={"tasks": every})
@@ -328,6 +329,92 @@ def _parse(
         ambiguities=parsed.ambiguities,
         unparsed=parsed.unparsed,
         issues=parsed.issues,
+    )
+
+
+def _state_reader(types: set[str] | None, scene: str | None, world: SceneLike | None) -> StateReader:
+    """The reader of state and treatment requests (`state_tasks`) for this scene."""
+    grounder = Grounder(types, scene or "the scene")
+    if not isinstance(world, World):
+        return StateReader(grounder)
+
+    def can(type_: str, state: str) -> bool:
+        if state not in get_args(State):  # a treatment or a throw: any object the recipe accepts
+            return True
+        return bool(world.instances(type_)) and can_take_state(world, type_, state)
+
+    return StateReader(grounder, scene_instances(world), can)
+
+
+def _parsed_and_reread(
+    parse: Parser,
+    instruction: str,
+    types: set[str] | None,
+    scene: str | None,
+    strict: bool,
+    look: AffordanceLookup | None,
+    reader: StateReader,
+) -> OfflineParse:
+    """The parser's reading, or, when the whole instruction is nothing but state and treatment requests
+    and the parser fails on it, leaves words unread or fills a place no word names, the requests
+    (`state_tasks`); otherwise each task whose clause is read so is reread (`state_tasks.reread`). A
+    scene error of the strict parse stands unless the requests replace the task that caused it."""
+    from nl2hltl2plan.language.grammar import OfflineParse
+
+    whole = reader.read(instruction)
+    try:
+        parsed = parse(instruction, types, scene or "the scene", strict=strict, affordances=look)
+    except WorldError:
+        if whole is not None:
+            return _relettered(OfflineParse(instruction=instruction), [], whole)
+        if not strict:
+            raise
+        parsed = parse(instruction, types, scene or "the scene", strict=False, affordances=look)
+        parsed = _relettered(parsed, reread(parsed.tasks, instruction, reader))
+        if types is not None and any(
+            t not in types for x in parsed.tasks for r in SLOTS for t in getattr(x, r) or []
+        ):
+            raise
+        return parsed.model_copy(update={"issues": []})
+    loose = parsed.unparsed or not parsed.tasks or account(instruction, parsed.tasks, parsed.before)
+    if whole is not None and (loose or any(guessed_slot(t, instruction) for t in parsed.tasks)):
+        return _relettered(OfflineParse(instruction=instruction), [], whole)
+    return _relettered(parsed, reread(parsed.tasks, instruction, reader))
+
+
+def _relettered(
+    parsed: OfflineParse, stand_for: list[list[BaseTaskSpec]], added: Sequence[BaseTaskSpec] = ()
+) -> OfflineParse:
+    """The parse with its i-th task replaced by `stand_for[i]` and the `added` tasks appended, all
+    lettered afresh (A, B, ...); orders, groups and ambiguities follow the tasks (a replaced task's
+    ambiguities go), a light condition comes before its task, and the new tasks are ordered by the
+    instruction's sequence words (`state_tasks.state_orderings`)."""
+    new_id: dict[str, list[str]] = {}
+    tasks: list[BaseTaskSpec] = []
+    fresh: list[BaseTaskSpec] = []
+    kept: set[str] = set()  # tasks the parser read as they stand
+    for old, group in [*zip(parsed.tasks, stand_for, strict=True), *((None, [t]) for t in added)]:
+        renamed = [t.model_copy(update={"id": task_letter(len(tasks) + k)}) for k, t in enumerate(group)]
+        tasks += renamed
+        if old is None or group != [old]:
+            fresh += renamed
+        else:
+            kept.add(old.id)
+        if old is not None:
+            new_id[old.id] = [t.id for t in renamed]
+    before = [(x, y) for a, b in parsed.before for x in new_id.get(a, [a]) for y in new_id.get(b, [b])]
+    groups = [[x for m in grp for x in new_id.get(m, [m])] for grp in parsed.groups]
+    before += light_orders(tasks) + state_orderings(parsed.instruction, tasks, fresh)
+    ambiguities = [
+        a.model_copy(update={"task": new_id[a.task][0]}) for a in parsed.ambiguities if a.task in kept
+    ]
+    return parsed.model_copy(
+        update={
+            "tasks": tasks,
+            "before": list(dict.fromkeys(before)),
+            "groups": groups,
+            "ambiguities": ambiguities,
+        }
     )
 
 

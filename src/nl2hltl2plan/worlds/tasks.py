@@ -23,6 +23,7 @@ when every instance of O starts inside a closed openable P:
                       [open(R)], put(O,R)        (the microwave must be closed to run; its
                       close, like the opens, is a support action: written only with support=True)
 - cool_place:         acc(O), pickup(O), open(Fridge), put(O,Fridge), pickup(O), [open(R)], put(O,R)
+- set_state:          the one action; a slice: pickup(K), slice(O), put(K,KR); a toast: `_state_recipe`
 When R is the appliance itself (chilled tomato in the fridge), the recipe stops once the object is in
 it and treated. Sliced objects: pickup(K), slice(O), put(K,KR), then the recipe on OSliced starting
 at its pickup (K = Knife if the world has one, else ButterKnife; KR = the first of CounterTop,
@@ -142,14 +143,15 @@ class BaseTask(BaseModel):
         return []
 
     def _state_missing(self, world: World) -> list[str]:
-        why = _lack(world, self.object) or (
-            _lack(world, list(KNIFE_TYPES)) if self.state == "sliced" else None
-        )
+        knife, toaster = self.state == "sliced" or self.sliced, self.state == "toasted"
+        why = _lack(world, self.object) or (_lack(world, list(KNIFE_TYPES)) if knife else None) or (
+            _lack(world, ["Toaster"]) if toaster else None)
         if why:
             return [f"{self.id}: {why}"]
         if not self._bindings(world):
             done = STATE_WORDS.get(self.state or "", str(self.state))
-            return [f"{self.id}: no {' or '.join(self.object)} in {world.name} can be {done}"]
+            done += " (a slice of it can: 'toast a slice of ...')" if toaster and not self.sliced else ""
+            return [f"{self.id}: no {' or '.join(sorted(self.goal().objects))} in {world.name} can be {done}"]
         return []
 
     # ------------------------------------------------------------ recipes
@@ -189,7 +191,8 @@ class BaseTask(BaseModel):
         """Type choices (O, C, R, L) available in the world whose receptacles accept what they get."""
         objs = _available(world, self.object)
         if self.kind == "set_state":
-            return [{"O": o, "held": o} for o in objs if _state_ok(world, o, self.state)]
+            took = {o: sliced_type(o) if self.sliced else o for o in objs}
+            return [{"O": o, "held": took[o]} for o in objs if can_take_state(world, took[o], self.state)]
         if self.sliced:
             objs = [o for o in objs if world.instances(o)[0].affordances.sliceable]
             if sliced_type_missing := [o for o in objs if not world.instances(sliced_type(o))]:
@@ -260,7 +263,7 @@ class BaseTask(BaseModel):
             add(f"put({obj},{rec})")
 
         if self.kind == "set_state":
-            return [self._state_recipe(world, o)]
+            return [self._state_recipe(world, o, held)]
         if self.sliced and slice_here:
             knife = next(k for k in KNIFE_TYPES if _available(world, [k]))
             opens(_access(world, knife, 1))
@@ -304,11 +307,15 @@ class BaseTask(BaseModel):
                 put_into(held, r)
         return [[a for alt in combo for a in alt] for combo in itertools.product(*parts)]
 
-    def _state_recipe(self, world: World, o: str) -> list[str]:
-        """The actions that bring one object of type o into the task's state."""
+    def _state_recipe(self, world: World, o: str, held: str) -> list[str]:
+        """The actions that bring an object of type o (its slice `held`) into the task's state."""
+        knife = next((k for k in KNIFE_TYPES if _available(world, [k])), KNIFE_TYPES[0])
+        cut = [f"pickup({knife})", f"slice({o})", f"put({knife},{_knife_drop(world, knife)})"]
         if self.state == "sliced":
-            knife = next(k for k in KNIFE_TYPES if _available(world, [k]))
-            return [f"pickup({knife})", f"slice({o})", f"put({knife},{_knife_drop(world, knife)})"]
+            return cut
+        if self.state == "toasted":  # the knife is left to the planner (a slicer may lack PutObject)
+            into = [f"pickup({held})", f"put({held},Toaster)", "toggle_on(Toaster)"]
+            return (cut[:2] if self.sliced else []) + into
         verb = {
             "on": "toggle_on",
             "off": "toggle_off",
@@ -320,12 +327,14 @@ class BaseTask(BaseModel):
         return [f"{verb}({o})"]
 
 
-def _state_ok(world: World, o: str, state: str | None) -> bool:
-    """Whether objects of type o can be brought into the state (AI2-THOR's affordances)."""
-    from nl2hltl2plan.worlds.effects import BREAKABLE
+def can_take_state(world: World, o: str, state: str | None) -> bool:
+    """Whether objects of type o can take the state (AI2-THOR's affordances; a toaster cooks Cookables)."""
+    from nl2hltl2plan.worlds.effects import BREAKABLE, COOKABLE
 
     if state == "broken":
         return o in BREAKABLE
+    if state == "toasted":
+        return o in COOKABLE and bool(world.instances(o)) and _accepts(world, "Toaster", o)
     flag = STATE_FLAG.get(state or "")
     return flag is not None and bool(getattr(world.instances(o)[0].affordances, flag))
 

@@ -7,6 +7,7 @@ from dataclasses import dataclass, field
 
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.phrases import tokens
+from nl2hltl2plan.language.grounding import find_mentions
 
 
 @dataclass
@@ -153,7 +154,65 @@ def normalize(text: str) -> str:
     text = _OFF.sub(r"\1", text)  # "a rinsed off knife", "cool off a plate": the state, not a direction
     text = _BACK.sub(r", then back \1", text)  # "put it in the fridge, back in the microwave": a sequence
     text = _DONE_WITH.sub(lambda m: "After " if m.group(1)[0].isupper() else "after ", text)
-    return re.sub(r"\s+", " ", text).strip()
+    return supply_put(re.sub(r"\s+", " ", text).strip())
+
+
+# The placement verb a terse or conversational request leaves out (issue 24's tabletop styles):
+# "I'd like the apple to go in the plate", "we need the apple on the plate" -> "put the apple in ...";
+# "the apple goes in the plate" / "the apple in the plate" (a sentence with no verb) -> "put the apple
+# in the plate"; "start with the apple in the plate" -> "first put the apple in the plate".
+_WISH = re.compile(
+    r"\b(?:I|we)(?:'d|\s+would|\s+will)?\s+(?:like|love|want|need|prefer)\s+(?:(?:for\s+)?you\s+to\s+)?",
+    re.I,
+)
+_TO_GO = re.compile(
+    r"\s+(?:to\s+(?:go|be(?:\s+(?:put|placed|moved|set))?)|goes|go|belongs?|should\s+(?:go|be))"
+    r"\s+(?=(?:in|into|on|onto|to)\s)",
+    re.I,
+)
+_START_WITH = re.compile(r"\b(?:start|begin)\s+with\s+(?=(?:the|a|an)\s)", re.I)
+_PLACE_PREPS = ("in", "into", "to", "onto", "on")
+
+
+def supply_put(text: str) -> str:
+    """The text with the placement verb its requests leave out written in (see above); a sentence with
+    a verb, or whose words before the place name no object, is left as it is."""
+    text = _WISH.sub(lambda m: "" if _verb_follows(text, m.end()) else "put ", text)
+    text = _TO_GO.sub(lambda m: " " if _names_object_before(text, m.start()) else m.group(0), text)
+    text = _START_WITH.sub("first put ", text)
+    out, pos = [], 0
+    for sentence, start in split_sentences(text):
+        _, body = strip_leading(sentence)
+        at = start + len(sentence) - len(body)
+        if _verbless_placement(body):
+            out.append(text[pos:at] + "put ")
+            pos = at
+    return "".join(out) + text[pos:]
+
+
+def _verb_follows(text: str, at: int) -> bool:
+    first = tokens(text[at:])[:1]
+    return bool(first) and first[0][0] in G.VERBS
+
+
+def _names_object_before(text: str, at: int) -> bool:
+    mentions = find_mentions(text[:at])
+    return bool(mentions) and mentions[-1].char_end == len(text[:at].rstrip())
+
+
+_LIST_WORDS = frozenset({"the", "a", "an", "and", "or", "both", ","})
+
+
+def _verbless_placement(body: str) -> bool:
+    """Does the sentence start with object names only ("green apple and the orange") and go on with
+    in/into/to/onto/on and a place?"""
+    words = tokens(body)
+    k = next((i for i, (w, _, _) in enumerate(words) if w in _PLACE_PREPS), None)
+    if not k:
+        return False
+    named = [(m.char_start, m.char_end) for m in find_mentions(body[: words[k][1]])]
+    only_names = all(w in _LIST_WORDS or any(a <= s < b for a, b in named) for w, s, _ in words[:k])
+    return only_names and _names_object_before(body, words[k][1]) and bool(find_mentions(body[words[k][2] :]))
 
 
 def split_sentences(text: str) -> list[tuple[str, int]]:

@@ -13,6 +13,9 @@ SMART-LLM's metrics (Kannan et al., arXiv:2309.10062; the scoring script is
   0 when max_trans = trans otherwise, else (max + 1 - stages) / (max - trans), clipped to 0..1.
 - Exe (executability): successful actions / attempted actions of the executed plan (0 when no
   plan was made: nothing could be executed).
+- A task whose ground truth lists no condition is still planned from its instruction: with no spec
+  or no plan (a refusal) it scores 0, never a vacuous success; only the oracle, which has nothing to
+  plan, scores it complete.
 - SR (success): TC = 1 and RU = 1; a task without a stage annotation has no RU and is left out of SR.
 Each row also carries `script`: the five metrics exactly as SMART-LLM's own script computes them
 (`suites.smartllm.smartllm_script`: per entry, +1 per match, no BROKEN check, RU unclipped).
@@ -161,20 +164,21 @@ def run_task(
     conds = [(c.name, c.state, c.contains) for c in task.conditions]
     team = smartllm_team(task.robots)
     execution: Execution | None = None
-    if not conds:
+    if not conds and make_spec is oracle_maker:
         row.update(
             status="vacuous",
             reason="the ground truth lists no condition (scored complete, as SMART-LLM's script does)",
             stages=1 if task.trans is not None else 0,
         )
         n_stages, exe = 1, 1.0
-    else:
+    else:  # an instruction is planned even when the ground truth lists nothing to check
         n_stages, exe, execution = _plan_task(
             task, world, team, make_spec, (timeout_s, objective, masses), row
         )
     snap = execution.final if execution is not None else SimState(world).snapshot(0)
     met = final_conditions(execution, conds) if execution is not None else _initial(world, conds)
-    gcr = sum(met) / len(met) if met else 1.0
+    # no condition: complete (as SMART-LLM's script scores it) only once a plan was made and run
+    gcr = sum(met) / len(met) if met else (1.0 if execution is not None or n_stages else 0.0)
     tc = 1.0 if gcr == 1.0 else 0.0
     ru = robot_utilisation(n_stages, task.trans, task.max_trans)
     row.update(
@@ -349,6 +353,10 @@ def report_md(summary: dict[str, Any], rows: list[dict[str, Any]]) -> str:
         f'- {f["id"]} "{f["task"]}": {f["status"]}; {f["reason"]} missed: {", ".join(f["missed"])}'
         for f in summary["failed"]
     ] or ["- none"]
+    lines += ["", "## Tasks not successful (SR = 0), and why", ""]
+    lines += [f'- {r["id"]} "{r["task"].strip()}": {_why_not(r)}' for r in rows if r.get("SR") == 0.0] or [
+        "- none"
+    ]
     lines += [
         "",
         "## Per task",
@@ -363,6 +371,22 @@ def report_md(summary: dict[str, Any], rows: list[dict[str, Any]]) -> str:
             + f" | {'; '.join(r.get('notes', []))} |"
         )
     return "\n".join(lines) + "\n"
+
+
+def _why_not(row: dict[str, Any]) -> str:
+    """Why a task scores SR 0: not completed (its status and reason), or completed in another number
+    of sequential stages than SMART-LLM's annotation (RU < 1)."""
+    if row.get("TC") != 1.0:
+        missed = ", ".join(row.get("conditions_missed", [])) or "nothing to check, but no plan"
+        why = f": {row['reason']}" if row.get("reason") else ""
+        return f"{row.get('status')}{why}; missed: {missed}"
+    want = (
+        f"{row['trans'] + 1}"
+        if row["trans"] == row["max_trans"]
+        else f"{row['trans'] + 1}..{row['max_trans'] + 1}"
+    )
+    ru = _fmt(row.get("RU"))
+    return f"complete, in {row.get('stages')} sequential stage(s) where the annotation has {want}: RU {ru}"
 
 
 def _scoring_notes(summary: dict[str, Any], rows: list[dict[str, Any]]) -> list[str]:
