@@ -183,6 +183,24 @@ def test_an_llm_backend_states_constraints(stub):
         translate(text, _Kitchen(), "openai", client, build=False, actions="none")
 
 
+def test_an_llm_answer_of_constraints_only_has_nothing_to_do(stub):
+    from nl2hltl2plan.config.llm_settings import LLMSettings
+    from nl2hltl2plan.errors import LLMError
+    from nl2hltl2plan.language.llm.client import LLMClient
+    from nl2hltl2plan.language.translate import translate
+
+    answer: dict = {"tasks": [], "constraints": [
+        {"text": "never open the microwave", "verb": "open", "object": "microwave"}]}
+    stub.answer = lambda body: json.dumps(answer)
+    client = LLMClient(LLMSettings(base_url=stub.base_url, api_key="k", max_retries=0, cache_dir=None))
+    with pytest.raises(HTTError, match="nothing to do: .* only says what not to do"):
+        translate("never open the microwave", _Kitchen(), "openai", client, build=False, actions="none")
+    answer["constraints"] = []  # neither a task nor a constraint: an invalid answer, not an empty plan
+    client = LLMClient(LLMSettings(base_url=stub.base_url, api_key="k", max_retries=0, cache_dir=None))
+    with pytest.raises(LLMError, match="no task and no constraint"):
+        translate("never open the microwave", _Kitchen(), "openai", client, build=False, actions="none")
+
+
 class _Kitchen:
     name = "a kitchen"
 

@@ -180,8 +180,15 @@ class ConstraintWords(BaseModel):
 
 
 class Decomposition(BaseModel):
-    tasks: list[DecompNode] = Field(min_length=1, max_length=MAX_TASKS)
+    tasks: list[DecompNode] = Field(max_length=MAX_TASKS)
     constraints: list[ConstraintWords] = Field(default_factory=list, max_length=MAX_TASKS)
+
+    @model_validator(mode="after")
+    def _says_something(self) -> Decomposition:
+        # no task is an answer only when the instruction only says what not to do
+        if not self.tasks and not self.constraints:
+            raise ValueError("the answer names no task and no constraint")
+        return self
 
     @field_validator("tasks")
     @classmethod

@@ -496,11 +496,14 @@ def _llm(
             gm.append(spec.id)
         if node.subtasks:
             groups.append(gm)
+    constraints = _llm_constraints(dec.constraints, g, node_of, issues)
+    if not tasks and constraints:
+        raise HTTError(nothing_to_do(instruction, constraints))
     before = _llm_relations(client, instruction, dec, node_of)
     red = transitive_reduction(before, [t.id for t in tasks])
     htt, task_node, leaf_task = build_htt(instruction, tasks, red, groups)
     return LanguageResult(
-        constraint_specs=_llm_constraints(dec.constraints, g, node_of, issues),
+        constraint_specs=constraints,
         backend="llm",
         instruction=instruction,
         scene=scene,
