@@ -21,9 +21,11 @@ import time
 from collections.abc import Callable
 from dataclasses import dataclass
 
+from nl2hltl2plan.planning.budget import StopReason
 from nl2hltl2plan.planning.heuristic import Heuristic
+from nl2hltl2plan.planning.node import Node
 from nl2hltl2plan.planning.objective import DuplicateTable, Objective
-from nl2hltl2plan.planning.state import Expander, Node
+from nl2hltl2plan.planning.state import Expander
 
 NODE_BYTES = 4000  # rough memory of one stored search node (SimState copy, tuples), for reporting
 
@@ -40,7 +42,7 @@ class SearchStats:
     lower_bound: float = 0.0  # proven lower bound on the optimal cost (objective units)
     proven_optimal: bool = False
     exhausted: bool = False
-    stopped: str = ""  # why the search stopped: "bound", "exhausted", "budget", "memory", "timeout"
+    stopped: StopReason = StopReason.NONE  # why the search stopped
     best_cost: float | None = None  # the incumbent's cost so far (objective units; None: no plan yet)
 
 
@@ -96,10 +98,10 @@ class Searcher:
         return k
 
     # ------------------------------------------------------------ seed
-    def beam(self, root: Node, width: int, limit: int) -> Node | None:
-        """Beam search over macro successors; the cheapest goal found, or None. Children are
-        first ranked by an estimate (parent's f plus the walking the step did), and only the best
-        few get the full heuristic."""
+    def beam(self, root: Node, width: int, limit: int, robots: frozenset[int] | None = None) -> Node | None:
+        """Beam search over macro successors (of `robots` only, when given); the cheapest goal
+        found, or None. Children are first ranked by an estimate (parent's f plus the walking the
+        step did), and only the best few get the full heuristic."""
         if root.h is None:
             self.score(root)
         layer = [root]
@@ -110,7 +112,7 @@ class Searcher:
             for node in layer:
                 self.check_time()
                 self.stats.expanded += 1
-                for child in self.x.successors(node, limit=limit, macro=True):
+                for child in self.x.successors(node, limit=limit, macro=True, robots=robots):
                     self.stats.generated += 1
                     if self.x.is_goal(child):
                         if best is None or self.cost(child) < self.cost(best):
@@ -164,24 +166,24 @@ class Searcher:
         table.record(self.key(root), root)
         expansions = generated = 0
         work_end = None if max_work is None else self.h.work + max_work
-        stop = "exhausted"
+        stop = StopReason.EXHAUSTED
         while open_heap:
             self.check_time()
             lb = _lower_bound(lb_heap)
             if lb is not None:
                 stats.lower_bound = max(stats.lower_bound, obj.unit(min(lb, ub)))
                 if best is not None and obj.proven(ub, lb, w_stop):
-                    stop = "bound"
+                    stop = StopReason.BOUND
                     break
             held = len(open_heap) + len(table)
             stats.peak_nodes = max(stats.peak_nodes, held)
             if best is not None and ((max_expansions is not None and expansions >= max_expansions)
                                      or (max_generated is not None and generated >= max_generated)
                                      or (work_end is not None and self.h.work >= work_end)):
-                stop = "budget"
+                stop = StopReason.BUDGET
                 break
             if best is not None and max_nodes is not None and held > max_nodes:
-                stop = "memory"
+                stop = StopReason.MEMORY
                 break
             node = heapq.heappop(open_heap)[3]
             if node.closed or table.stale(self.key(node), node):
@@ -209,7 +211,7 @@ class Searcher:
                 key = child.f if w_order == 1.0 else obj.weighted_guess(node, child, w_order)
                 heapq.heappush(open_heap, (key, -child.g, next(counter), child))
                 heapq.heappush(lb_heap, (child.f, next(counter), child))
-        if stop == "exhausted":
+        if stop == StopReason.EXHAUSTED:
             stats.exhausted = True
             if best is not None:
                 stats.lower_bound = obj.unit(ub)
