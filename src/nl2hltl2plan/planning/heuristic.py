@@ -326,7 +326,7 @@ class Heuristic:
         a_starts = np.cumsum([0] + [max(1, len(anchors)) for anchors in anchor_sets[:-1]])
         b_starts = np.cumsum([0] + [max(1, len(anchors)) for anchors in cols[:-1]])
         # rows: events (successors); columns: predecessor events, then robots
-        sub = self.rr[np.ix_(b_idx, a_idx)]
+        sub = self.rr[b_idx[:, None], a_idx]  # (plain broadcasting: np.ix_ costs more per call)
         if (b_idx < 0).any() or (a_idx < 0).any():
             sub = sub.copy()
             sub[b_idx < 0, :] = 0
@@ -385,7 +385,7 @@ class Heuristic:
         # regions would join far groups at no cost; leaving events out keeps it a bound)
         fixed = [i for i, anchors in enumerate(anchor_sets) if len(anchors) == 1]
         if len(fixed) > 1 or (fixed and walk == 0):
-            ev = np.minimum(pred[np.ix_(fixed, fixed)], BIG)
+            ev = np.minimum(pred[np.array(fixed)[:, None], fixed], BIG)
             walk = max(walk, spanning_walk(ev, np.minimum(robot[:, fixed].min(axis=0), BIG)))
         return walk
 
@@ -425,12 +425,12 @@ class Heuristic:
     def _robot_walks_to_cells(self, node: Node, cells: np.ndarray) -> np.ndarray:
         """robots x `cells`: the fewest steps from where each robot may stand to each of them."""
         dm = self.nav.dm
-        out = dm[np.ix_(np.array(node.cell, dtype=np.int64), cells)]
+        out = dm[np.array(node.cell, dtype=np.int64)[:, None], cells]
         if node.reach is not None:
             for r, reach in enumerate(node.reach):
                 if reach is not None:
                     stand = np.array(reach[0], dtype=np.int64)
-                    out[r] = (dm[np.ix_(stand, cells)] + np.array(reach[1])[:, None]).min(axis=0)
+                    out[r] = (dm[stand[:, None], cells] + np.array(reach[1])[:, None]).min(axis=0)
         return out
 
     def _hand_rules(self, node: Node, rows: list[EventRow], cost: np.ndarray, n_ev: int, n_pred: int,
@@ -454,12 +454,13 @@ class Heuristic:
         """anchors x robots: the fewest steps from where each robot may stand to each anchor."""
         if not len(a_idx):
             return np.zeros((0, len(node.cell)), dtype=np.int64)
-        out = self.field[a_idx][:, list(node.cell)]
+        rows = a_idx[:, None]  # only the needed cells of the anchors' distance fields
+        out = self.field[rows, list(node.cell)]
         if node.reach is not None:
-            for r, reach in enumerate(node.reach):
+            for robot, reach in enumerate(node.reach):
                 if reach is not None:
-                    walks = self.field[a_idx][:, list(reach[0])] + np.array(reach[1])[None, :]
-                    out[:, r] = walks.min(axis=1)
+                    walks = self.field[rows, list(reach[0])] + np.array(reach[1])[None, :]
+                    out[:, robot] = walks.min(axis=1)
         return out
 
 
@@ -502,6 +503,8 @@ def _with_last(cost: np.ndarray, n_ev: int) -> np.ndarray:
     """The cost matrix with one more row, "the last event": some pending event is no pending event's
     predecessor (the last of its robot's), so one event column stays free and at least one event
     follows a robot (without it, events may precede one another in cycles that no robot enters)."""
-    last = np.full((1, cost.shape[1]), BIG, dtype=cost.dtype)
-    last[0, :n_ev] = 0
-    return np.vstack([cost, last])
+    out = np.empty((cost.shape[0] + 1, cost.shape[1]), dtype=cost.dtype)
+    out[:-1] = cost
+    out[-1] = BIG
+    out[-1, :n_ev] = 0
+    return out

@@ -344,7 +344,7 @@ class Expander:
         region = self.nav.region_idx[anchor]
         if not len(region):
             return -1, INF, None
-        arrive = (self.nav.dm[np.ix_(np.array(cells), region)] + np.array(offsets)[:, None]).min(axis=0)
+        arrive = (self.nav.dm[np.array(cells)[:, None], region] + np.array(offsets)[:, None]).min(axis=0)
         k = int(arrive.argmin())
         d = int(arrive[k])
         if d >= INF:
