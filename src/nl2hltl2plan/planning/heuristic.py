@@ -45,7 +45,6 @@ from nl2hltl2plan.planning.bounds import (
 )
 from nl2hltl2plan.planning.carries import carry_total
 from nl2hltl2plan.planning.leaves import DONE, Leaf
-from nl2hltl2plan.planning.lp_bound import tiled_walk
 from nl2hltl2plan.planning.makespan import leaf_chains, makespan_bound
 from nl2hltl2plan.planning.navigation import INF
 from nl2hltl2plan.planning.node import Node, bound
@@ -61,8 +60,6 @@ ROOT_EVALS = 64  # bound evaluations the root's search over instance choices spe
 
 
 class Heuristic:
-    tiled_root = True  # experiment: the tiled LP at the root (scripts/bench_planner_lp.py)
-
     def __init__(self, expander: Expander, required: set[int], makespan: bool = True):
         self.x = expander
         self.makespan = makespan  # is the completion-time bound needed (objective `minmax`)?
@@ -214,10 +211,8 @@ class Heuristic:
             choices, capacity = self._binding_choices(node)
             best = least_over_bindings(choices, capacity, lambda fixed: self._evaluate(node, fixed),
                                        self.root_evals)
-            tiled = self._evaluate(node, {}, tiled=self.tiled_root)
-            if best is None:
-                return tiled
-            return max(best[0], tiled[0]), max(best[1], tiled[1])
+            if best is not None:
+                return best
         return self._evaluate(node, {})
 
     def _binding_choices(self, node: Node) -> tuple[list[Choice], dict[str, dict[int, int]]]:
@@ -247,10 +242,8 @@ class Heuristic:
         choices.sort(key=lambda choice: (len(choice.regions), choice.leaf, choice.type_))
         return [choice for choice in choices if len(choice.regions) > 1 or choice.group is not None], capacity
 
-    def _evaluate(self, node: Node, fixed: dict[tuple[int, str], int],
-                  tiled: bool = False) -> tuple[int, int]:
-        """The bound with some (leaf, type) pairs fixed to one region (their instance's); `tiled`:
-        also the walks through tiles of the regions (`lp_bound`, a linear program: the root's)."""
+    def _evaluate(self, node: Node, fixed: dict[tuple[int, str], int]) -> tuple[int, int]:
+        """The bound with some (leaf, type) pairs fixed to one region (their instance's)."""
         p = self.p
         memo: dict = {"fixed": fixed}
         for (li, t), region in fixed.items():
@@ -279,7 +272,7 @@ class Heuristic:
         if not rows and not extra_events:
             return 0, node.ms
         carry = 0 if self.light else carry_total(self, node, memo)
-        walk = self._assignment(node, rows, optional, hands, carry, tiled) if rows else carry
+        walk = self._assignment(node, rows, optional, hands, carry) if rows else carry
         support = forced_opens(self.x, self.required, node) + forced_closes(self.x, self.required, node)
         total = len(rows) + extra_events + walk + support
         if not self.makespan:
@@ -319,7 +312,7 @@ class Heuristic:
         return out
 
     def _assignment(self, node: Node, rows: list[EventRow], optional: list[tuple[int, ...]],
-                    hands: dict[tuple[int, str], int], carry: int, tiled: bool = False) -> int:
+                    hands: dict[tuple[int, str], int], carry: int) -> int:
         """The largest of three bounds on the walking still needed: the assignment of distinct
         predecessors, the carries plus the pickups' approaches, and the spanning tree (bounds.py)."""
         n_ev = len(rows)
@@ -388,10 +381,6 @@ class Heuristic:
         compound = self._approach_and_carry(node, rows, cols, cost)
         if compound is not None:
             walk = max(walk, solve(_with_last(compound, n_ev)))
-        if tiled:
-            lp_walk = tiled_walk(self.nav, self._near, lambda cells: self._robot_walks_to_cells(node, cells),
-                                 anchor_sets, optional, cost)
-            walk = max(walk, lp_walk or 0)
         # the spanning tree over the events of one known region (an event with several candidate
         # regions would join far groups at no cost; leaving events out keeps it a bound)
         fixed = [i for i, anchors in enumerate(anchor_sets) if len(anchors) == 1]
