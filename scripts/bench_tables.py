@@ -1,5 +1,6 @@
 """Where a benchmark script's table goes: stdout, and with `--out FILE` also a markdown file that
-starts with the command, the commit and the machine (so an unattended run documents itself)."""
+starts with the command, the commit and the machine (so an unattended run documents itself). The
+commit is read when the script starts (`STARTED`), the load average when it ends."""
 
 from __future__ import annotations
 
@@ -10,8 +11,8 @@ import sys
 from pathlib import Path
 
 
-def provenance() -> list[str]:
-    """The command line, the commit (with a mark when the tree has changes) and the machine."""
+def _commit() -> str:
+    """The checked-out commit, marked when the tree has uncommitted changes."""
     root = Path(__file__).resolve().parent.parent
     try:
         commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], cwd=root, capture_output=True,
@@ -19,11 +20,19 @@ def provenance() -> list[str]:
         dirty = subprocess.run(["git", "status", "--porcelain", "--untracked-files=no"], cwd=root,
                                capture_output=True, text=True, check=True).stdout.strip()
     except (OSError, subprocess.CalledProcessError):
-        commit, dirty = "unknown (no git)", ""
+        return "unknown (no git)"
+    return commit + (" (with uncommitted changes)" if dirty else "")
+
+
+STARTED = _commit()  # read when the benchmark script imports this module, before it measures
+
+
+def provenance() -> list[str]:
+    """The command line, the commit measured and the machine."""
     load = ", ".join(f"{x:.1f}" for x in os.getloadavg())
     return [
         f"command: `python {' '.join(sys.argv)}`",
-        f"commit: {commit}{' (with uncommitted changes)' if dirty else ''}",
+        f"commit: {STARTED}",
         f"machine: {platform.platform()}, {os.cpu_count()} cores, Python {platform.python_version()}; "
         f"load average at the end: {load}",
     ]

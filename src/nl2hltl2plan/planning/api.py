@@ -27,7 +27,7 @@ from nl2hltl2plan.planning.results import (
     optimality_words,
     validate,
 )
-from nl2hltl2plan.planning.search import NODE_BYTES, Deadline, ProgressHook, Searcher, SearchStats
+from nl2hltl2plan.planning.search import NODE_BYTES, Deadline, ProgressHook, Searcher, SearchStats, Stall
 from nl2hltl2plan.planning.state import Expander
 from nl2hltl2plan.worlds.model import CELL_M, Cell, World
 
@@ -39,6 +39,10 @@ FAST_EXPANSIONS = 300  # AWA* expansions `fast` spends improving its first plan 
 FAST_GENERATED = 5_000  # and AWA* successors generated (at most: large teams branch widely)
 FAST_WORK = 400_000  # and heuristic work (assignment-matrix cells: fewer evaluations on larger problems)
 FAST_GAP = 1.05  # fast mode stops once its plan is proven within this factor of the optimum
+# and its A* stops once the proven bound has stopped rising: after FAST_STALL_WORK units of work, when
+# the bound last rose more than STALL_SHARE of the work spent ago (chosen on valid_seen, docs/planning.md)
+FAST_STALL_WORK = 100_000
+STALL_SHARE = 2 / 3
 IMPROVE_EVALS = 600  # local-search candidate replays (both modes)
 LNS_EVALS = 2000  # large-neighbourhood-search candidate replays (both modes)
 # replays cost in proportion to the plan's events: both local searches also stop after this many
@@ -231,7 +235,7 @@ def _budget(mode: str, w: float, expansions: int | None, work: int | None, impro
     if expansions is None:
         return replace(local, w_stop=w, w_order=w)
     return replace(local, expansions=expansions, generated=FAST_GENERATED, work=work, w_stop=min(w, FAST_GAP),
-                   w_order=w, light_seeds=True)
+                   w_order=w, light_seeds=True, stall_work=FAST_STALL_WORK if work is not None else None)
 
 
 def grid_model(objective: str, mode: str) -> bool:
@@ -281,8 +285,10 @@ def _search(searcher: Searcher, x: Expander, budget: Budget) -> Node | None:
                 best = refine_stand_cells(x, best, searcher.obj)
             searcher.found(best)
         start = with_free_stands(root) if budget.free_stands else root
+        stall = None if budget.stall_work is None else Stall(budget.stall_work, STALL_SHARE)
         best = searcher.awa(start, best, budget.w_order, budget.w_stop, max_expansions=budget.expansions,
-                            max_nodes=budget.max_nodes, max_generated=budget.generated, max_work=budget.work)
+                            max_nodes=budget.max_nodes, max_generated=budget.generated, max_work=budget.work,
+                            stall=stall)
     except Deadline:
         searcher.stats.stopped = StopReason.TIMEOUT
     return best

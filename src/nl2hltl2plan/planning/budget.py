@@ -20,6 +20,7 @@ class StopReason(StrEnum):
     EXHAUSTED = "exhausted"
     BOUND = "bound"
     BUDGET = "budget"
+    STALLED = "stalled"
     MEMORY = "memory"
     TIMEOUT = "timeout"
 
@@ -35,6 +36,7 @@ _SENTENCES = {
     StopReason.EXHAUSTED: "search space exhausted (proven optimal)",
     StopReason.BOUND: "incumbent proven within the requested factor",
     StopReason.BUDGET: "expansion budget spent",
+    StopReason.STALLED: "the proven bound stopped rising (fast mode's budget)",
     StopReason.MEMORY: "node limit reached (memory bound)",
     StopReason.TIMEOUT: "wall-clock timeout (last resort)",
 }
@@ -55,3 +57,6 @@ class Budget:
     max_nodes: int | None = None  # memory bound of the A* (nodes held at once)
     free_stands: bool = False  # stand cells part of the A* search (the grid optimum of the summed cost)
     light_seeds: bool = False  # beam seeds rank children by the assignment bound alone (cheaper)
+    # AWA*: past this much heuristic work, stop once the bound has not risen for STALL_SHARE of the
+    # work spent (None: never)
+    stall_work: int | None = None

@@ -148,12 +148,14 @@ class Searcher:
     # ------------------------------------------------------------ AWA*
     def awa(self, root: Node, incumbent: Node | None, w_order: float, w_stop: float,
             max_expansions: int | None = None, max_nodes: int | None = None,
-            max_generated: int | None = None, max_work: int | None = None) -> Node | None:
+            max_generated: int | None = None, max_work: int | None = None,
+            stall: Stall | None = None) -> Node | None:
         """Anytime weighted A* with deferred evaluation: a child enters the open list with its
         parent's bound (valid for it too) and gets its own heuristic when it is first popped.
         Stops when the incumbent is proven within w_stop, the open list is empty, `max_expansions`,
-        `max_generated` or `max_work` (the heuristic's work, `Heuristic.work`) are spent or more
-        than `max_nodes` are held (with an incumbent), or at the deadline."""
+        `max_generated` or `max_work` (the heuristic's work, `Heuristic.work`) are spent, the
+        proven bound has stopped rising (`stall`), or more than `max_nodes` are held (with an
+        incumbent), or at the deadline."""
         stats, obj = self.stats, self.obj
         best = incumbent
         ub: float = self.cost(best) if best is not None else float("inf")
@@ -165,7 +167,9 @@ class Searcher:
         table = obj.table(self.x.cap_class, self.x.n_objects)
         table.record(self.key(root), root)
         expansions = generated = 0
-        work_end = None if max_work is None else self.h.work + max_work
+        work_start = self.h.work
+        work_end = None if max_work is None else work_start + max_work
+        best_lb, last_rise = -1, 0  # the highest bound so far, and the work spent when it was reached
         stop = StopReason.EXHAUSTED
         while open_heap:
             self.check_time()
@@ -175,6 +179,11 @@ class Searcher:
                 if best is not None and obj.proven(ub, lb, w_stop):
                     stop = StopReason.BOUND
                     break
+                if lb > best_lb:
+                    best_lb, last_rise = lb, self.h.work - work_start
+            if best is not None and stall is not None and stall.stalled(self.h.work - work_start, last_rise):
+                stop = StopReason.STALLED
+                break
             held = len(open_heap) + len(table)
             stats.peak_nodes = max(stats.peak_nodes, held)
             if best is not None and ((max_expansions is not None and expansions >= max_expansions)
@@ -237,6 +246,20 @@ class Searcher:
         return False
 
 
+@dataclass(frozen=True)
+class Stall:
+    """When an A* whose proven bound has stopped rising gives up: once it has spent `min_work`
+    (heuristic work) and its bound last rose more than `share` of the work spent so far ago. On
+    valid_seen scenarios the bound of a search that is going to prove its plan rises as it goes
+    (docs/planning.md); a search whose bound sits still for most of its budget rarely proves it."""
+
+    min_work: int
+    share: float
+
+    def stalled(self, spent: int, last_rise: int) -> bool:
+        return spent >= self.min_work and spent - last_rise >= self.share * spent
+
+
 def _lower_bound(lb_heap: list[tuple[int, int, Node]]) -> int | None:
     while lb_heap and (lb_heap[0][2].closed or lb_heap[0][0] < lb_heap[0][2].f):
         # closed nodes no longer bound the optimum (their children are in the open list), and
@@ -245,4 +268,4 @@ def _lower_bound(lb_heap: list[tuple[int, int, Node]]) -> int | None:
     return lb_heap[0][0] if lb_heap else None
 
 
-__all__ = ["Deadline", "DuplicateTable", "SearchStats", "Searcher"]
+__all__ = ["Deadline", "DuplicateTable", "SearchStats", "Searcher", "Stall"]
