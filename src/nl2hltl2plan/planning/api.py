@@ -101,6 +101,7 @@ def plan(
     w: float = DEFAULT_W,
     fast_expansions: int | None = FAST_EXPANSIONS,
     fast_work: int | None = FAST_WORK,
+    fast_stall_work: int | None = FAST_STALL_WORK,
     improve_evals: int = IMPROVE_EVALS,
     lns_evals: int = LNS_EVALS,
     max_nodes: int | None = MAX_NODES,
@@ -121,9 +122,10 @@ def plan(
     (`improve_evals` candidate replays), large-neighbourhood search (`lns_evals` replays), then
     anytime weighted A* (weight `w`) for at most `fast_expansions` expansions, FAST_GENERATED
     successors and `fast_work` units of heuristic work (assignment-matrix cells: a larger problem
-    gets fewer evaluations), stopping as soon as the plan is proven within FAST_GAP (5 %); `bound` is
-    the ratio to the optimum it could prove. With `fast_expansions=None`, fast stops as soon as the
-    plan is proven within factor `w`. Every budget
+    gets fewer evaluations), stopping as soon as the plan is proven within FAST_GAP (5 %), or, past
+    `fast_stall_work` units, once its proven bound has not risen for STALL_SHARE of the work spent
+    (None: never); `bound` is the ratio to the optimum it could prove. With `fast_expansions=None`,
+    fast stops as soon as the plan is proven within factor `w`. Every budget
     counts machine-independent units, so the same input gives the same plan; `timeout_s` is a
     wall-clock last resort, reported as such (`stopped == "timeout"`). `max_nodes` bounds the
     search's memory (nodes held at once; reported as `peak_nodes`, `memory_mb`).
@@ -142,7 +144,8 @@ def plan(
     engine = next(e for e in ENGINES if e.supports(world))
     return engine.solve(
         world, spec, starts, objective=objective, mode=mode, timeout_s=timeout_s, capabilities=capabilities,
-        w=w, fast_expansions=fast_expansions, fast_work=fast_work, improve_evals=improve_evals,
+        w=w, fast_expansions=fast_expansions, fast_work=fast_work, fast_stall_work=fast_stall_work,
+        improve_evals=improve_evals,
         lns_evals=lns_evals, max_nodes=max_nodes, refine=refine, on_progress=on_progress,
     )
 
@@ -175,6 +178,7 @@ def _search_plan(
     w: float,
     fast_expansions: int | None,
     fast_work: int | None,
+    fast_stall_work: int | None,
     improve_evals: int,
     lns_evals: int,
     max_nodes: int | None,
@@ -195,8 +199,8 @@ def _search_plan(
     x = Expander(problem, Navigator(world))
     required = {problem.leaf_index[n] for n in required_leaves(problem)}
     searcher = Searcher(x, Heuristic(x, required, makespan=obj.makespan_bound), obj, deadline, on_progress)
-    budget = _budget(mode, w, fast_expansions, fast_work, improve_evals, lns_evals, max_nodes,
-                     grid_model(objective, mode))
+    budget = _budget(mode, w, fast_expansions, fast_work, fast_stall_work, improve_evals, lns_evals,
+                     max_nodes, grid_model(objective, mode))
     best = _search(searcher, x, budget)
     stats = searcher.stats
     result.expanded, result.peak_nodes = stats.expanded, stats.peak_nodes
@@ -223,11 +227,12 @@ def _search_plan(
     return result
 
 
-def _budget(mode: str, w: float, expansions: int | None, work: int | None, improve_evals: int,
-            lns_evals: int, max_nodes: int | None, free_stands: bool) -> Budget:
+def _budget(mode: str, w: float, expansions: int | None, work: int | None, stall_work: int | None,
+            improve_evals: int, lns_evals: int, max_nodes: int | None, free_stands: bool) -> Budget:
     """Exact: no A* budget, stop when proven optimal. Fast: the budgets (the work budget sizes the
-    A* to the problem: a large problem's evaluations cost more, so it gets fewer), stopping as soon
-    as the plan is proven within FAST_GAP; with `expansions=None`, until proven within `w`."""
+    A* to the problem: a large problem's evaluations cost more, so it gets fewer; the stall stop),
+    stopping as soon as the plan is proven within FAST_GAP; with `expansions=None`, until proven
+    within `w`."""
     local = Budget(improve_evals=improve_evals, lns_evals=lns_evals, max_nodes=max_nodes,
                    free_stands=free_stands)
     if mode == "exact":
@@ -235,7 +240,7 @@ def _budget(mode: str, w: float, expansions: int | None, work: int | None, impro
     if expansions is None:
         return replace(local, w_stop=w, w_order=w)
     return replace(local, expansions=expansions, generated=FAST_GENERATED, work=work, w_stop=min(w, FAST_GAP),
-                   w_order=w, light_seeds=True, stall_work=FAST_STALL_WORK if work is not None else None)
+                   w_order=w, light_seeds=True, stall_work=stall_work)
 
 
 def grid_model(objective: str, mode: str) -> bool:
