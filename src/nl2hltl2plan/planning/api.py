@@ -145,8 +145,8 @@ def plan(
     return engine.solve(
         world, spec, starts, objective=objective, mode=mode, timeout_s=timeout_s, capabilities=capabilities,
         w=w, fast_expansions=fast_expansions, fast_work=fast_work, fast_stall_work=fast_stall_work,
-        improve_evals=improve_evals,
-        lns_evals=lns_evals, max_nodes=max_nodes, refine=refine, on_progress=on_progress,
+        improve_evals=improve_evals, lns_evals=lns_evals, max_nodes=max_nodes, refine=refine,
+        on_progress=on_progress,
     )
 
 
