@@ -12,6 +12,7 @@ FloorPlan7 instruction of `bench_planner_large.py` with its first k base tasks x
 
     python scripts/bench_planner_ab.py --base ../h29-base [--valid 12] [--robots 1,2,4]
         [--pooled 5-9] [--pooled-robots 4,10] [--fresh] [--jsonl out.jsonl] [--from-jsonl out.jsonl]
+        [--out table.md]
 
 `--fresh` starts a new worker per run (its peak memory is then the run's own).
 """
@@ -30,6 +31,7 @@ from typing import Any
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from bench_planner_large import pooled_instance  # noqa: E402
+from bench_tables import emit  # noqa: E402
 from planner_validation import scenarios  # noqa: E402
 
 from nl2hltl2plan.worlds.floor_plans import benchmark_issues, build_benchmark_world  # noqa: E402
@@ -156,9 +158,10 @@ def main() -> int:
     ap.add_argument("--fresh", action="store_true", help="a new worker process per run")
     ap.add_argument("--jsonl", default=None, help="also append one JSON line per scenario to this file")
     ap.add_argument("--from-jsonl", default=None, help="only print the table of the runs in this file")
+    ap.add_argument("--out", default=None, help="also write the table here (with command, commit, machine)")
     args = ap.parse_args()
     if args.from_jsonl:
-        print("\n".join(table([json.loads(line) for line in open(args.from_jsonl)])))
+        emit(table([json.loads(line) for line in open(args.from_jsonl)]), args.out)
         return 0
     if not args.base or not (Path(args.base) / "src" / "nl2hltl2plan").is_dir():
         print(f"error: --base must be a checkout with src/nl2hltl2plan, got {args.base!r}", file=sys.stderr)
@@ -176,7 +179,7 @@ def main() -> int:
     finally:
         a.close()
         b.close()
-    print("\n".join(table(rows)))
+    emit(table(rows), args.out)
     return 0
 
 

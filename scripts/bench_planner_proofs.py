@@ -2,7 +2,7 @@
 optimal and proven within 5 % (bound <= 1.05), the proven bound (median / max) and the planning
 time, read from the run's scenarios.jsonl (`nl2hltl2plan bench alfred --oracle -o DIR`).
 
-    python scripts/bench_planner_proofs.py DIR [--n-base 3,4]
+    python scripts/bench_planner_proofs.py DIR [--n-base 3,4] [--out table.md]
 
 Prints a Markdown table (solved scenarios only; the last row pools the selected ones).
 """
@@ -15,6 +15,10 @@ import statistics
 import sys
 from pathlib import Path
 from typing import Any
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+
+from bench_tables import emit  # noqa: E402
 
 
 def load(run: str) -> list[dict[str, Any]]:
@@ -33,7 +37,7 @@ def table(rows: list[dict[str, Any]], n_base: list[int] | None) -> list[str]:
     if n_base:
         rows = [r for r in rows if r["n_base"] in n_base]
     out = ["| base tasks | robots | solved | proven optimal | proven within 5 % | bound (median, max) "
-           "| time s (median, max) |", "|" + " --- |" * 7]
+           "| time s (median, p95, max) |", "|" + " --- |" * 7]
     groups = sorted({(r["n_base"], r["robots"]) for r in rows})
     for key in [*groups, None]:
         sel = [r for r in rows if key is None or (r["n_base"], r["robots"]) == key]
@@ -47,17 +51,25 @@ def table(rows: list[dict[str, Any]], n_base: list[int] | None) -> list[str]:
             f"| {label[0]} | {label[1]} | {len(sel)} | {sum(bool(r['proven_optimal']) for r in sel)} "
             f"| {sum(b <= 1.05 for b in bounds)} ({100 * sum(b <= 1.05 for b in bounds) / len(sel):.0f} %) "
             f"| {statistics.median(bounds):.3f}, {max(bounds):.3f} "
-            f"| {statistics.median(times):.2f}, {max(times):.2f} |")
+            f"| {statistics.median(times):.2f}, {_p95(times):.2f}, {max(times):.2f} |")
     return out
+
+
+def _p95(values: list[float]) -> float:
+    """The 95th percentile (the value below which 95 % of the runs fall; inclusive method)."""
+    if len(values) < 2:
+        return values[0]
+    return statistics.quantiles(values, n=20, method="inclusive")[18]
 
 
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("run", help="an oracle benchmark output folder")
     ap.add_argument("--n-base", default=None, help="base-task counts to keep (default: all)")
+    ap.add_argument("--out", default=None, help="also write the table here (with command, commit, machine)")
     args = ap.parse_args()
     n_base = [int(x) for x in args.n_base.split(",")] if args.n_base else None
-    print("\n".join(table(load(args.run), n_base)))
+    emit(table(load(args.run), n_base), args.out)
     return 0
 
 

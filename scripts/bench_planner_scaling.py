@@ -5,7 +5,7 @@ instances pooled into one instruction on one world, the first k kept with their 
 plus two seeded extra orderings; robots start at the first instance's init_pos (first draw).
 
     python scripts/bench_planner_scaling.py [--scenes 3] [--tasks 1-9] [--robots 1,2,4,10]
-        [--exact-upto 0] [--exact-timeout 60] [--jsonl out.jsonl] [--from-jsonl out.jsonl]
+        [--exact-upto 0] [--exact-timeout 60] [--jsonl out.jsonl] [--from-jsonl out.jsonl] [--out table.md]
 
 Prints per (base tasks, robots): runs, solved and checked, planning time (median / max), proven
 optimal share, proven within 5 % (bound <= 1.05), proven bound (median / max), peak search nodes and
@@ -16,14 +16,17 @@ from __future__ import annotations
 
 import argparse
 import json
+import resource
 import statistics
 import sys
+import time
 from pathlib import Path
 from typing import Any
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from bench_planner_large import SCENES, pooled_instance  # noqa: E402
+from bench_tables import emit  # noqa: E402
 
 from nl2hltl2plan.planning import oracle_spec, plan  # noqa: E402
 from nl2hltl2plan.worlds.checker import check  # noqa: E402
@@ -46,13 +49,18 @@ def run(scenes: list[str], sizes: list[int], robots: list[int], exact_upto: int,
             for n in robots:
                 modes = ["fast"] + (["exact"] if k <= exact_upto else [])
                 for mode in modes:
+                    cpu0 = time.process_time()
                     r = plan(world, spec, start_cells(world, n, gt=gt), mode=mode,
                              timeout_s=exact_timeout if mode == "exact" else 300.0)
+                    cpu = time.process_time() - cpu0
+                    # the process's peak so far: a run's own peak when it is the first (--tasks k-k)
+                    rss_mb = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
                     rows.append({
                         "instance": gt.id, "tasks": k, "robots": n, "mode": mode, "status": str(r.status),
                         "success": bool(r.solved and check(r.execution, gt).success), "time_s": r.plan_time_s,
                         "cost": r.total_cost, "bound": r.bound, "proven": r.proven_optimal,
-                        "peak_nodes": r.peak_nodes, "memory_mb": r.memory_mb, "stopped": r.stopped})
+                        "peak_nodes": r.peak_nodes, "memory_mb": r.memory_mb, "stopped": str(r.stopped),
+                        "cpu_s": cpu, "rss_mb": rss_mb})
                     if out:
                         with open(out, "a") as fh:
                             fh.write(json.dumps(rows[-1]) + "\n")
@@ -62,20 +70,23 @@ def run(scenes: list[str], sizes: list[int], robots: list[int], exact_upto: int,
 
 
 def table(rows: list[dict[str, Any]]) -> list[str]:
-    out = ["| mode | base tasks | robots | runs | solved + checked | time s (median, max) | proven optimal "
-           "| proven within 5 % | bound (median, max) | peak nodes (max) | memory MB (max, est.) |",
-           "|" + " --- |" * 11]
+    out = ["| mode | base tasks | robots | runs | solved + checked | time s (median, max) | CPU s (max) "
+           "| proven optimal | proven within 5 % | bound (median, max) | peak nodes (max) "
+           "| search memory MB (max, est.) | process peak RSS MB |",
+           "|" + " --- |" * 13]
     for key in sorted({(r["mode"], r["tasks"], r["robots"]) for r in rows}):
         sel = [r for r in rows if (r["mode"], r["tasks"], r["robots"]) == key]
         times = [r["time_s"] for r in sel]
         bounds = [r["bound"] for r in sel if r["bound"] is not None]
         out.append(f"| {key[0]} | {key[1]} | {key[2]} | {len(sel)} | {sum(r['success'] for r in sel)} "
                    f"| {statistics.median(times):.2f}, {max(times):.2f} "
+                   f"| {max(r.get('cpu_s', float('nan')) for r in sel):.2f} "
                    f"| {sum(r['proven'] for r in sel)}/{len(sel)} "
                    f"| {sum(b <= 1.05 for b in bounds)}/{len(sel)} "
                    f"| {statistics.median(bounds) if bounds else float('nan'):.3f}, "
                    f"{max(bounds, default=float('nan')):.3f} | {max(r['peak_nodes'] for r in sel)} "
-                   f"| {max(r['memory_mb'] for r in sel):.0f} |")
+                   f"| {max(r['memory_mb'] for r in sel):.0f} "
+                   f"| {max(r.get('rss_mb', float('nan')) for r in sel):.0f} |")
     return out
 
 
@@ -89,14 +100,15 @@ def main() -> int:
                     help="exact mode's wall-clock last resort (60 s)")
     ap.add_argument("--jsonl", default=None, help="also append one JSON line per run to this file")
     ap.add_argument("--from-jsonl", default=None, help="only print the table of the runs in this file")
+    ap.add_argument("--out", default=None, help="also write the table here (with command, commit, machine)")
     args = ap.parse_args()
     if args.from_jsonl:
-        print("\n".join(table([json.loads(line) for line in open(args.from_jsonl)])))
+        emit(table([json.loads(line) for line in open(args.from_jsonl)]), args.out)
         return 0
     lo, hi = (int(x) for x in args.tasks.split("-"))
     rows = run(SCENES[: args.scenes], list(range(lo, hi + 1)), [int(x) for x in args.robots.split(",")],
                args.exact_upto, args.exact_timeout, args.jsonl)
-    print("\n".join(table(rows)))
+    emit(table(rows), args.out)
     return 0 if all(r["success"] for r in rows if r["status"] == "solved") else 1
 
 

@@ -12,21 +12,22 @@ from planning_worlds import corridor, gt
 from test_grid_optimum import PLACE_APPLE, PLACE_MUG, _random_world, brute_force
 
 from nl2hltl2plan.planning import oracle_spec, plan
-from nl2hltl2plan.planning.bounds import carry_legs, joint_min, least_over_bindings, spanning_walk
+from nl2hltl2plan.planning.bounds import Choice, carry_legs, joint_min, least_over_bindings, spanning_walk
 from nl2hltl2plan.planning.extract import replay_from
 from nl2hltl2plan.planning.heuristic import Heuristic
 from nl2hltl2plan.planning.lns import lns
-from nl2hltl2plan.planning.model import _required_leaves, build_problem
+from nl2hltl2plan.planning.model import build_problem, required_leaves
 from nl2hltl2plan.planning.navigation import Navigator
+from nl2hltl2plan.planning.node import Event
 from nl2hltl2plan.planning.objective import objective_for
 from nl2hltl2plan.planning.search import Searcher
-from nl2hltl2plan.planning.state import Event, Expander
+from nl2hltl2plan.planning.state import Expander
 
 
 def _setup(world, inst, starts):
     problem = build_problem(world, oracle_spec(inst, world).spec, starts, None)
     x = Expander(problem, Navigator(world))
-    return x, Heuristic(x, {problem.leaf_index[n] for n in _required_leaves(problem)})
+    return x, Heuristic(x, {problem.leaf_index[n] for n in required_leaves(problem)})
 
 
 def _root_bound(world, inst, starts) -> int:
@@ -145,9 +146,7 @@ def test_lns_is_deterministic_and_improves_a_poor_plan():
         x, h = _setup(world, inst, [(0, 0), (0, 39)])
         obj = objective_for("min")
         searcher = Searcher(x, h, obj, deadline=float("inf"))
-        x.only = {0}
-        poor = searcher.beam(x.root(), 1, 1)
-        x.only = None
+        poor = searcher.beam(x.root(), 1, 1, robots=frozenset({0}))
         assert poor is not None and x.is_goal(poor)
         better = lns(x, poor, obj, 2000, lambda: None)
         assert x.is_goal(better) and better.g <= poor.g
@@ -175,7 +174,8 @@ def test_a_put_into_any_of_two_closed_fridges_needs_an_open():
 def test_least_over_bindings_is_the_least_complete_choice_or_below():
     # three (leaf, type) choices; leaves 0 and 1 take distinct instances of one type (one at region 5,
     # one at region 6); the bound of a partial choice is the least over its completions (a relaxation)
-    choices = [(0, "Apple", "Apple", (5, 6)), (1, "Apple", "Apple", (5, 6)), (1, "Table", None, (7, 8, 9))]
+    choices = [Choice(0, "Apple", "Apple", (5, 6)), Choice(1, "Apple", "Apple", (5, 6)),
+               Choice(1, "Table", None, (7, 8, 9))]
     capacity = {"Apple": {5: 1, 6: 1}}
     cost = {5: 3, 6: 1, 7: 4, 8: 2, 9: 6}
 

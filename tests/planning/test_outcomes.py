@@ -138,3 +138,28 @@ def test_validate_judges_plans_from_elsewhere(two_tasks_world):
     late = good.model_copy(deep=True)
     late.robots[0].steps = [s for s in late.robots[0].steps if s.verb != "put"]
     assert not validate(two_tasks_world, spec, late).ok
+
+
+def test_fast_mode_gives_up_a_search_whose_bound_stopped_rising():
+    # three kitchen tasks for two robots: the A* finds no better plan after its seeds, and its bound
+    # sits still for a while before the search space is exhausted
+    world = demo_world()
+    spec = HierarchicalSpec([
+        {"task1": " & ".join(f"F task1.{k}" for k in range(1, 4))},
+        {f"task1.{k}": body for k, body in enumerate([
+            ["pickup(Plate)", "open(Dishwasher)", "put(Plate,DishwasherLowerRack)"],
+            ["pickup(Mug)", "put(Mug,SinkBasin)", "toggle_on(Faucet)", "toggle_off(Faucet)"],
+            ["pickup(Cup)", "open(Dishwasher)", "put(Cup,DishwasherUpperRack)"],
+        ], start=1)},
+    ])
+    starts = [(0, 0), (9, 13)]
+    stalled = plan(world, spec, starts, fast_stall_work=1)
+    again = plan(world, spec, starts, fast_stall_work=1)
+    full = plan(world, spec, starts, fast_stall_work=None)
+    assert stalled.stopped == "stalled" and not stalled.proven_optimal and stalled.execution.ok
+    assert "stopped rising" in stalled.stop_reason
+    assert (again.stopped, again.cost, again.lower_bound, again.events) == (
+        stalled.stopped, stalled.cost, stalled.lower_bound, stalled.events)
+    # the search it gave up proves the same plan optimal; the bound it had reached is below that
+    assert full.stopped == "exhausted" and full.proven_optimal and full.cost == stalled.cost
+    assert stalled.lower_bound < full.lower_bound == full.cost

@@ -4,30 +4,31 @@ from __future__ import annotations
 
 import time
 from collections.abc import Iterable, Sequence
-from dataclasses import dataclass
+from dataclasses import replace
 from typing import Any, Literal
 
 from nl2hltl2plan.errors import PlanningError
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
+from nl2hltl2plan.planning.budget import Budget, StopReason
 from nl2hltl2plan.planning.engines import CooperativeEngine, Engine
 from nl2hltl2plan.planning.extract import refine_stand_cells, to_plan
 from nl2hltl2plan.planning.heuristic import Heuristic
 from nl2hltl2plan.planning.improve import improve
 from nl2hltl2plan.planning.lns import lns
-from nl2hltl2plan.planning.model import Infeasible, Problem, _required_leaves, build_problem
+from nl2hltl2plan.planning.model import Infeasible, Problem, build_problem, required_leaves
 from nl2hltl2plan.planning.navigation import Navigator
+from nl2hltl2plan.planning.node import Node, with_free_stands
 from nl2hltl2plan.planning.objective import Objective, ObjectiveName, objective_for
 from nl2hltl2plan.planning.results import (
     GRID_MODEL,
     NEAREST_CELL_MODEL,
-    STOP_REASONS,
     PlanResult,
     PlanStatus,
     optimality_words,
     validate,
 )
-from nl2hltl2plan.planning.search import NODE_BYTES, Deadline, ProgressHook, Searcher, SearchStats
-from nl2hltl2plan.planning.state import Expander, Node
+from nl2hltl2plan.planning.search import NODE_BYTES, Deadline, ProgressHook, Searcher, SearchStats, Stall
+from nl2hltl2plan.planning.state import Expander
 from nl2hltl2plan.worlds.world import CELL_M, Cell, World
 
 Mode = Literal["fast", "exact"]
@@ -38,6 +39,10 @@ FAST_EXPANSIONS = 300  # AWA* expansions `fast` spends improving its first plan 
 FAST_GENERATED = 5_000  # and AWA* successors generated (at most: large teams branch widely)
 FAST_WORK = 400_000  # and heuristic work (assignment-matrix cells: fewer evaluations on larger problems)
 FAST_GAP = 1.05  # fast mode stops once its plan is proven within this factor of the optimum
+# and its A* stops once the proven bound has stopped rising: after FAST_STALL_WORK units of work, when
+# the bound last rose more than STALL_SHARE of the work spent ago (chosen on valid_seen, docs/planning.md)
+FAST_STALL_WORK = 100_000
+STALL_SHARE = 2 / 3
 IMPROVE_EVALS = 600  # local-search candidate replays (both modes)
 LNS_EVALS = 2000  # large-neighbourhood-search candidate replays (both modes)
 # replays cost in proportion to the plan's events: both local searches also stop after this many
@@ -57,13 +62,9 @@ def _seed(searcher: Searcher, x: Expander, root: Node) -> Node | None:
     which the team beam, deciding one step at a time, can miss); local search then shares work out."""
     found = [searcher.beam(root, 1, 1), searcher.beam(root, BEAM_WIDTH, BEAM_INSTANCES)]
     if searcher.obj.solo_seeds and x.p.n_robots > 1:
-        for r in _well_placed(x, root)[:SOLO_SEEDS]:
-            x.only = {r}
-            try:
-                found.append(searcher.beam(root, SOLO_WIDTH, BEAM_INSTANCES))
-            finally:
-                x.only = None
-    goals = [n for n in found if n is not None]
+        for robot in _well_placed(x, root)[:SOLO_SEEDS]:
+            found.append(searcher.beam(root, SOLO_WIDTH, BEAM_INSTANCES, robots=frozenset({robot})))
+    goals = [goal for goal in found if goal is not None]
     return min(goals, key=searcher.cost) if goals else None
 
 
@@ -100,6 +101,7 @@ def plan(
     w: float = DEFAULT_W,
     fast_expansions: int | None = FAST_EXPANSIONS,
     fast_work: int | None = FAST_WORK,
+    fast_stall_work: int | None = FAST_STALL_WORK,
     improve_evals: int = IMPROVE_EVALS,
     lns_evals: int = LNS_EVALS,
     max_nodes: int | None = MAX_NODES,
@@ -120,9 +122,10 @@ def plan(
     (`improve_evals` candidate replays), large-neighbourhood search (`lns_evals` replays), then
     anytime weighted A* (weight `w`) for at most `fast_expansions` expansions, FAST_GENERATED
     successors and `fast_work` units of heuristic work (assignment-matrix cells: a larger problem
-    gets fewer evaluations), stopping as soon as the plan is proven within FAST_GAP (5 %); `bound` is
-    the ratio to the optimum it could prove. With `fast_expansions=None`, fast stops as soon as the
-    plan is proven within factor `w`. Every budget
+    gets fewer evaluations), stopping as soon as the plan is proven within FAST_GAP (5 %), or, past
+    `fast_stall_work` units, once its proven bound has not risen for STALL_SHARE of the work spent
+    (None: never); `bound` is the ratio to the optimum it could prove. With `fast_expansions=None`,
+    fast stops as soon as the plan is proven within factor `w`. Every budget
     counts machine-independent units, so the same input gives the same plan; `timeout_s` is a
     wall-clock last resort, reported as such (`stopped == "timeout"`). `max_nodes` bounds the
     search's memory (nodes held at once; reported as `peak_nodes`, `memory_mb`).
@@ -141,8 +144,9 @@ def plan(
     engine = next(e for e in ENGINES if e.supports(world))
     return engine.solve(
         world, spec, starts, objective=objective, mode=mode, timeout_s=timeout_s, capabilities=capabilities,
-        w=w, fast_expansions=fast_expansions, fast_work=fast_work, improve_evals=improve_evals,
-        lns_evals=lns_evals, max_nodes=max_nodes, refine=refine, on_progress=on_progress,
+        w=w, fast_expansions=fast_expansions, fast_work=fast_work, fast_stall_work=fast_stall_work,
+        improve_evals=improve_evals, lns_evals=lns_evals, max_nodes=max_nodes, refine=refine,
+        on_progress=on_progress,
     )
 
 
@@ -174,6 +178,7 @@ def _search_plan(
     w: float,
     fast_expansions: int | None,
     fast_work: int | None,
+    fast_stall_work: int | None,
     improve_evals: int,
     lns_evals: int,
     max_nodes: int | None,
@@ -192,15 +197,15 @@ def _search_plan(
         result.plan_time_s = time.perf_counter() - t0
         return result
     x = Expander(problem, Navigator(world))
-    required = {problem.leaf_index[n] for n in _required_leaves(problem)}
+    required = {problem.leaf_index[n] for n in required_leaves(problem)}
     searcher = Searcher(x, Heuristic(x, required, makespan=obj.makespan_bound), obj, deadline, on_progress)
-    budget = _budget(mode, w, fast_expansions, fast_work, improve_evals, lns_evals, max_nodes,
-                     grid_model(objective, mode))
+    budget = _budget(mode, w, fast_expansions, fast_work, fast_stall_work, improve_evals, lns_evals,
+                     max_nodes, grid_model(objective, mode))
     best = _search(searcher, x, budget)
     stats = searcher.stats
     result.expanded, result.peak_nodes = stats.expanded, stats.peak_nodes
     result.memory_mb = round(stats.peak_nodes * NODE_BYTES / 2**20, 1)
-    result.stopped, result.stop_reason = stats.stopped, STOP_REASONS.get(stats.stopped, stats.stopped)
+    result.stopped, result.stop_reason = stats.stopped, stats.stopped.sentence
     if best is None:
         if stats.exhausted:
             result.status = PlanStatus.INFEASIBLE
@@ -224,33 +229,20 @@ def _search_plan(
     return result
 
 
-@dataclass(frozen=True)
-class Budget:
-    """Machine-independent limits of one planning call."""
-
-    expansions: int | None  # AWA* expansions after the seed (None: until w_stop is proven)
-    improve_evals: int  # local-search candidate replays
-    lns_evals: int  # large-neighbourhood-search candidate replays
-    w_stop: float  # stop once the incumbent is proven within this factor
-    w_order: float  # the weight of the A* ordering
-    max_nodes: int | None  # memory bound of the A*
-    generated: int | None  # AWA* successors generated (None: no limit)
-    free_stands: bool  # stand cells part of the A* search (the grid optimum of the summed cost)
-    work: int | None = None  # AWA* heuristic work (`Heuristic.work`; None: no limit)
-    light_seeds: bool = False  # beam seeds rank children by the assignment bound alone (cheaper)
-
-
-def _budget(mode: str, w: float, expansions: int | None, work: int | None, improve_evals: int,
-            lns_evals: int, max_nodes: int | None, free_stands: bool) -> Budget:
+def _budget(mode: str, w: float, expansions: int | None, work: int | None, stall_work: int | None,
+            improve_evals: int, lns_evals: int, max_nodes: int | None, free_stands: bool) -> Budget:
     """Exact: no A* budget, stop when proven optimal. Fast: the budgets (the work budget sizes the
-    A* to the problem: a large problem's evaluations cost more, so it gets fewer), stopping as soon
-    as the plan is proven within FAST_GAP; with `expansions=None`, until proven within `w`."""
+    A* to the problem: a large problem's evaluations cost more, so it gets fewer; the stall stop),
+    stopping as soon as the plan is proven within FAST_GAP; with `expansions=None`, until proven
+    within `w`."""
+    local = Budget(improve_evals=improve_evals, lns_evals=lns_evals, max_nodes=max_nodes,
+                   free_stands=free_stands)
     if mode == "exact":
-        return Budget(None, improve_evals, lns_evals, 1.0, 1.0, max_nodes, None, free_stands)
+        return local
     if expansions is None:
-        return Budget(None, improve_evals, lns_evals, w, w, max_nodes, None, free_stands)
-    return Budget(expansions, improve_evals, lns_evals, min(w, FAST_GAP), w, max_nodes, FAST_GENERATED,
-                  free_stands, work, light_seeds=True)
+        return replace(local, w_stop=w, w_order=w)
+    return replace(local, expansions=expansions, generated=FAST_GENERATED, work=work, w_stop=min(w, FAST_GAP),
+                   w_order=w, light_seeds=True, stall_work=stall_work)
 
 
 def grid_model(objective: str, mode: str) -> bool:
@@ -278,7 +270,7 @@ def _search(searcher: Searcher, x: Expander, budget: Budget) -> Node | None:
     root = x.root()
     try:
         if x.is_goal(root):
-            searcher.stats.proven_optimal, searcher.stats.stopped = True, "trivial"
+            searcher.stats.proven_optimal, searcher.stats.stopped = True, StopReason.TRIVIAL
             return root
         searcher.score(root)  # the full bound at the root: the A*'s first lower bound
         searcher.h.light = budget.light_seeds
@@ -299,15 +291,13 @@ def _search(searcher: Searcher, x: Expander, budget: Budget) -> Node | None:
             if budget.free_stands:
                 best = refine_stand_cells(x, best, searcher.obj)
             searcher.found(best)
-        x.free_stands = budget.free_stands
-        try:
-            best = searcher.awa(root, best, budget.w_order, budget.w_stop, max_expansions=budget.expansions,
-                                max_nodes=budget.max_nodes, max_generated=budget.generated,
-                                max_work=budget.work)
-        finally:
-            x.free_stands = False
+        start = with_free_stands(root) if budget.free_stands else root
+        stall = None if budget.stall_work is None else Stall(budget.stall_work, STALL_SHARE)
+        best = searcher.awa(start, best, budget.w_order, budget.w_stop, max_expansions=budget.expansions,
+                            max_nodes=budget.max_nodes, max_generated=budget.generated, max_work=budget.work,
+                            stall=stall)
     except Deadline:
-        searcher.stats.stopped = "timeout"
+        searcher.stats.stopped = StopReason.TIMEOUT
     return best
 
 

@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import heapq
 from collections.abc import Callable, Sequence
+from typing import NamedTuple
 
 import numpy as np
 
@@ -114,8 +115,13 @@ def _leg_matrix(leg: Leg, sets: dict[str, tuple[int, ...]], rr: np.ndarray,
     return robot_walk(int(src[1]), sets[dst]).reshape(1, -1)
 
 
-# (leaf, type, the group of leaves taking distinct instances of it or None, its candidate regions)
-Choice = tuple[int, str, str | None, tuple[int, ...]]
+class Choice(NamedTuple):
+    """A (leaf, type) pair still to bind, with its candidate regions."""
+
+    leaf: int
+    type_: str
+    group: str | None  # the group of leaves that take distinct instances of the type, or None
+    regions: tuple[int, ...]
 
 
 def least_over_bindings(choices: Sequence[Choice], capacity: dict[str, dict[int, int]],
@@ -138,17 +144,19 @@ def least_over_bindings(choices: Sequence[Choice], capacity: dict[str, dict[int,
         s, m, _, chosen = heap[0]
         if len(chosen) == len(choices):
             break  # the least complete choice: nothing on the frontier is below it
-        leaf, type_, group, regions = choices[len(chosen)]
+        group, regions = choices[len(chosen)].group, choices[len(chosen)].regions
         if spent + len(regions) > budget:
             break
         heapq.heappop(heap)
         for region in regions:
             if group is not None:
-                used = sum(1 for c, r in zip(choices, chosen, strict=False) if c[2] == group and r == region)
+                used = sum(1 for choice, taken in zip(choices, chosen, strict=False)
+                           if choice.group == group and taken == region)
                 if used >= capacity[group].get(region, 0):
                     continue
             child = (*chosen, region)
-            fixed = {(c[0], c[1]): r for c, r in zip(choices, child, strict=False)}
+            fixed = {(choice.leaf, choice.type_): taken
+                     for choice, taken in zip(choices, child, strict=False)}
             s2, m2 = evaluate(fixed)
             spent += 1
             counter += 1

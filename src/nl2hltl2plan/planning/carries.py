@@ -10,9 +10,9 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from nl2hltl2plan.planning.bounds import Leg, carry_legs, joint_min
-from nl2hltl2plan.planning.model import DONE, Leaf
+from nl2hltl2plan.planning.leaves import DONE, Leaf
+from nl2hltl2plan.planning.node import Node, bound
 from nl2hltl2plan.planning.relax import BIG, solve
-from nl2hltl2plan.planning.state import Node, bound
 from nl2hltl2plan.worlds.simulator import PRESENT
 
 if TYPE_CHECKING:

@@ -33,11 +33,12 @@ import time
 from collections import deque
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from functools import cached_property, lru_cache
+from functools import cached_property
 from typing import Any
 
 from nl2hltl2plan.errors import PlanningError
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
+from nl2hltl2plan.planning.budget import Budget, StopReason
 from nl2hltl2plan.planning.coop_progress import Event, Progress, PState, leaf_targets
 from nl2hltl2plan.planning.results import PlanResult, PlanStatus
 from nl2hltl2plan.worlds.handover_world import (
@@ -53,6 +54,7 @@ from nl2hltl2plan.worlds.plan import Plan, RobotPlan, Step
 from nl2hltl2plan.worlds.world import Cell
 
 MAX_EXPANSIONS = 60_000
+CACHE_LIMIT = 200_000  # cached paths / tours per search object (cleared when full)
 
 
 @dataclass
@@ -65,7 +67,7 @@ class Macro:
 
 @dataclass
 class CoopResult:
-    status: str  # solved | infeasible | timeout
+    status: PlanStatus  # solved | infeasible | timeout (the search planner's statuses)
     reason: str = ""
     plan: Plan | None = None
     cost: int | None = None  # moves + actions
@@ -76,11 +78,12 @@ class CoopResult:
     expanded: int = 0
     plan_time_s: float = 0.0
     proven_optimal: bool = False
+    stopped: StopReason = StopReason.NONE
     execution: HandoverExecution | None = field(default=None, repr=False)
 
     @property
     def solved(self) -> bool:
-        return self.status == "solved"
+        return self.status == PlanStatus.SOLVED
 
     def to_dict(self) -> dict[str, Any]:
         keys = (
@@ -110,10 +113,21 @@ class _Search:
             sorted(c for c in self.lay.reach[a] if c in self.lay.shared or c in self.lay.region_at)
             for a in range(len(ARMS))
         ]
+        # pure functions of their arguments, cached on this search object (and dropped with it)
+        self._paths: dict[tuple[int, Cell, Cell, frozenset[Cell]], tuple[Cell, ...] | None] = {}
+        self._tours: dict[tuple[Cell, tuple[frozenset[Cell], ...]], int] = {}
 
-    @lru_cache(maxsize=200_000)  # noqa: B019 - one search object per plan call
     def path(self, arm: int, start: Cell, goal: Cell, blocked: frozenset[Cell]) -> tuple[Cell, ...] | None:
         """Shortest path inside the arm's reach avoiding `blocked` (cells entered, start excluded)."""
+        key = (arm, start, goal, blocked)
+        if key not in self._paths:
+            if len(self._paths) >= CACHE_LIMIT:
+                self._paths.clear()
+            self._paths[key] = self._shortest_path(arm, start, goal, blocked)
+        return self._paths[key]
+
+    def _shortest_path(self, arm: int, start: Cell, goal: Cell,
+                       blocked: frozenset[Cell]) -> tuple[Cell, ...] | None:
         reach = self.lay.reach[arm]
         prev: dict[Cell, Cell | None] = {start: None}
         queue = deque([start])
@@ -214,9 +228,16 @@ class _Search:
         total += 3 * len(in_way - set(sets))
         return total + approach
 
-    @lru_cache(maxsize=100_000)  # noqa: B019 - one search object per plan call
     def _tour(self, src: Cell, needed: tuple[frozenset[Cell], ...]) -> int:
         """Shortest walk from `src` through one cell of every set, in the best order."""
+        key = (src, needed)
+        if key not in self._tours:
+            if len(self._tours) >= CACHE_LIMIT:
+                self._tours.clear()
+            self._tours[key] = self._shortest_tour(src, needed)
+        return self._tours[key]
+
+    def _shortest_tour(self, src: Cell, needed: tuple[frozenset[Cell], ...]) -> int:
         unique = list(dict.fromkeys(needed))[:4]
         best = 10**6
         for order in itertools.permutations(unique):
@@ -324,45 +345,57 @@ def coop_plan(
         spec = HierarchicalSpec.from_json(spec)
     s = _Search(hw, spec)
     h: Callable[[Snap, PState], int] = s.heuristic if use_heuristic else (lambda a, b: 0)
-    budget = _Budget(t0 + timeout_s if timeout_s is not None else math.inf, max_expansions)
+    budget = _Spend(Budget(expansions=max_expansions), t0 + timeout_s if timeout_s is not None else math.inf)
     best: tuple[int, list[Macro]] | None = None
     proven = exhausted = False
+    stopped = StopReason.BUDGET
     for i, w in enumerate(weights):
         # the first (weighted) search gets most of the budget; the rest goes to the exact A*
         share = FIRST_SHARE if i == 0 and len(weights) > 1 else 1.0
-        budget.stop_expanded = budget.expanded + int((budget.max_expansions - budget.expanded) * share)
+        budget.stop_expanded = budget.expanded + int((budget.limit - budget.expanded) * share)
         if best is None and i > 0:
             w = (weights[0] + w) / 2  # the first search found nothing: a lighter weight, not plain A*
         found, complete = _astar(s, h, w, best[0] if best else None, budget)
         if found is not None:
             best = found
         if complete and w == 1.0 and best is not None:
-            proven = True
+            proven, stopped = True, StopReason.EXHAUSTED
         if complete and best is None:
-            exhausted = True  # no plan at all: even this search ran out of states
+            exhausted, stopped = True, StopReason.EXHAUSTED  # no plan at all: even this search ran out
             break
-        if budget.expanded >= budget.max_expansions or time.perf_counter() > budget.deadline:
+        if budget.expanded >= budget.limit:
+            stopped = StopReason.BUDGET
+            break
+        if time.perf_counter() > budget.deadline:
+            stopped = StopReason.TIMEOUT
             break
     if best is None:
-        status = "infeasible" if exhausted else "timeout"
+        status = PlanStatus.INFEASIBLE if exhausted else PlanStatus.TIMEOUT
         reason = (
             f"no cooperative plan satisfies the specification (searched {budget.expanded} states)"
             if exhausted
             else f"no plan within {budget.expanded} expansions"
             + (f" / {timeout_s:g} s" if timeout_s is not None else "")
         )
-        return CoopResult(status, reason, expanded=budget.expanded, plan_time_s=time.perf_counter() - t0)
+        return CoopResult(status, reason, expanded=budget.expanded, plan_time_s=time.perf_counter() - t0,
+                          stopped=stopped)
     out = _finish(hw, spec, best[1], best[0], budget.expanded, t0)
-    out.proven_optimal = proven
+    out.proven_optimal, out.stopped = proven, stopped
     return out
 
 
 @dataclass
-class _Budget:
-    deadline: float
-    max_expansions: int
+class _Spend:
+    """What the searches of one `coop_plan` call have spent of its `Budget`."""
+
+    budget: Budget
+    deadline: float  # the wall-clock last resort
     expanded: int = 0
     stop_expanded: int = 0  # end of the current search's share of the expansions
+
+    @property
+    def limit(self) -> int:
+        return self.budget.expansions if self.budget.expansions is not None else 10**12
 
     @property
     def spent(self) -> bool:
@@ -370,7 +403,7 @@ class _Budget:
 
 
 def _astar(
-    s: _Search, h: Callable[[Snap, PState], int], weight: float, bound: int | None, budget: _Budget
+    s: _Search, h: Callable[[Snap, PState], int], weight: float, bound: int | None, budget: _Spend
 ) -> tuple[tuple[int, list[Macro]] | None, bool]:
     """One weighted A* (f = g + weight*h), pruning g + h >= bound; (cost, macros) and whether the
     search space was exhausted (so nothing cheaper than `bound` exists when nothing was found)."""
@@ -459,7 +492,7 @@ def _finish(
         why = "; ".join(execution.violations[:2] + verdict.reasons[:2])
         raise PlanningError(f"internal error: the cooperative plan failed its own check: {why}")
     return CoopResult(
-        "solved",
+        PlanStatus.SOLVED,
         "",
         plan,
         cost,
@@ -494,11 +527,8 @@ def plan_world(
     hw = HandoverWorld(lay, blocks, arm_starts)  # type: ignore[arg-type]
     timeout = options.get("timeout_s")  # the pipeline's last-resort wall clock; the budget is expansions
     coop = coop_plan(hw, spec, timeout_s=None if timeout is None else float(timeout))
-    status = {"solved": PlanStatus.SOLVED, "infeasible": PlanStatus.INFEASIBLE}.get(
-        coop.status, PlanStatus.TIMEOUT
-    )
     return PlanResult(
-        status=status,
+        status=coop.status,
         reason=coop.reason,
         objective="min",
         mode="coop",
@@ -512,4 +542,6 @@ def plan_world(
         model="cooperative macro model (planning/coop.py)",
         plan_time_s=coop.plan_time_s,
         expanded=coop.expanded,
+        stopped=coop.stopped,
+        stop_reason=coop.stopped.sentence,
     )

@@ -16,8 +16,9 @@ import numpy as np
 
 from nl2hltl2plan.errors import PlanningError
 from nl2hltl2plan.planning.model import Problem
+from nl2hltl2plan.planning.node import Event, Node
 from nl2hltl2plan.planning.objective import Objective
-from nl2hltl2plan.planning.state import Event, Expander, Node
+from nl2hltl2plan.planning.state import Expander
 from nl2hltl2plan.planning.support import SUPPORT, support_event
 from nl2hltl2plan.worlds.plan import Plan, RobotPlan, Step
 

@@ -33,6 +33,8 @@ seeds rank children with it).
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
 
 from nl2hltl2plan.planning.bounds import (
@@ -42,12 +44,13 @@ from nl2hltl2plan.planning.bounds import (
     spanning_walk,
 )
 from nl2hltl2plan.planning.carries import carry_total
+from nl2hltl2plan.planning.leaves import DONE, Leaf
 from nl2hltl2plan.planning.makespan import leaf_chains, makespan_bound
-from nl2hltl2plan.planning.model import DONE, Leaf
 from nl2hltl2plan.planning.navigation import INF
+from nl2hltl2plan.planning.node import Node, bound
 from nl2hltl2plan.planning.opens import forced_closes, forced_opens
 from nl2hltl2plan.planning.relax import BIG, OTHER, PICKUP, PUT, EventRow, solve
-from nl2hltl2plan.planning.state import Expander, Node, bound
+from nl2hltl2plan.planning.state import Expander
 from nl2hltl2plan.worlds.simulator import PRESENT
 
 EMPTY = ""  # the hand right after a put
@@ -130,36 +133,34 @@ class Heuristic:
         x = self.x
         sim = node.sim
         anchor = self.nav.anchor
-        b = bound(node, leaf.index, type_)
-        objs = [b] if b >= 0 else x.by_type.get(type_, [])
-        if b < 0 and node.claimed and (taking or type_ in leaf.taken):
-            objs = [o for o in objs if o not in node.claimed]
+        bound_to = bound(node, leaf.index, type_)
+        objs = [bound_to] if bound_to >= 0 else x.by_type.get(type_, [])
+        if bound_to < 0 and node.claimed and (taking or type_ in leaf.taken):
+            objs = [obj for obj in objs if obj not in node.claimed]
         out = set()
-        for o in objs:
-            a = anchor(sim, o)
-            if a < 0 and x.slice_of[o] >= 0:
-                a = anchor(sim, x.slice_of[o])
-            if a >= 0:
-                out.add(a)
+        for obj in objs:
+            region = anchor(sim, obj)
+            if region < 0 and x.slice_of[obj] >= 0:
+                region = anchor(sim, x.slice_of[obj])
+            if region >= 0:
+                out.add(region)
         res = tuple(sorted(out))
         memo[key] = res
         return res
 
-    def _path_events(self, node: Node, leaf: Leaf, path: tuple[int, ...], memo: dict) -> list[tuple]:
-        """Per event: (anchors, kind, carried_from position or -1, held_by robot or -1, the type the
-        robot must hold when doing it (None: any), the hand right after it (a type; EMPTY; None:
-        unknown), whether that hand stays full until a later put of this path)."""
+    def _path_events(self, node: Node, leaf: Leaf, path: tuple[int, ...], memo: dict) -> list[PathEvent]:
+        """The events of one remaining action sequence of a leaf, as the bounds see them."""
         where: dict[str, tuple[int, ...]] = {}
         picked: dict[str, int] = {}
         held = {}
         sim = node.sim
-        for t, o in node.bind[leaf.index]:
-            if sim.holder[o] >= 0:
-                held[t] = sim.holder[o]
+        for type_, obj in node.bind[leaf.index]:
+            if sim.holder[obj] >= 0:
+                held[type_] = sim.holder[obj]
         hand = next(iter(held), None)  # the type this leaf's robot holds (one hand: at most one)
         out = []
-        for j, k in enumerate(path):
-            atom = leaf.atoms[k]
+        for pos, atom_k in enumerate(path):
+            atom = leaf.atoms[atom_k]
             target = atom.types[-1]
             anchors = where.get(target)
             if anchors is None:
@@ -176,41 +177,30 @@ class Heuristic:
             elif kind == PICKUP:
                 hand = atom.types[0]
             full = after not in (None, EMPTY) and any(
-                leaf.atoms[k2].verb == "put" and leaf.atoms[k2].types[0] == after for k2 in path[j + 1:])
-            out.append((anchors, kind, carried, holder, need, after, full))
+                leaf.atoms[later].verb == "put" and leaf.atoms[later].types[0] == after
+                for later in path[pos + 1:])
+            out.append(PathEvent(anchors, kind, carried, holder, Hand(need, after, full)))
             if kind == PUT:
                 where[atom.types[0]] = anchors
                 picked.pop(atom.types[0], None)
             elif kind == PICKUP:
-                picked[atom.types[0]] = j
+                picked[atom.types[0]] = pos
                 where.pop(atom.types[0], None)
         return out
 
-    def _leaf_events(self, node: Node, leaf: Leaf, memo: dict) -> tuple[list[tuple], list[tuple]]:
+    def _leaf_events(self, node: Node, leaf: Leaf, memo: dict) -> tuple[list[PathEvent], list[PathEvent]]:
         """(events that must happen, events that may happen) for one leaf's remaining work."""
         q = node.q[leaf.index]
         paths = leaf.paths.get(q) or []
         if not paths:
             return [], []
-        evs = [self._path_events(node, leaf, path, memo) for path in paths]
-        if len(evs) == 1:
-            return evs[0], []
-        if len({len(e) for e in evs}) == 1:
+        per_path = [self._path_events(node, leaf, path, memo) for path in paths]
+        if len(per_path) == 1:
+            return per_path[0], []
+        if len({len(events) for events in per_path}) == 1:
             # alternatives of equal length: merge event by event (a relaxation)
-            merged = []
-            for pos in range(len(evs[0])):
-                col = [e[pos] for e in evs]
-                anchors = tuple(sorted({a for c in col for a in c[0]}))
-                kinds = {c[1] for c in col}
-                carried = {c[2] for c in col}
-                holders = {c[3] for c in col}
-                hands = {c[4:] for c in col}
-                merged.append((anchors, kinds.pop() if len(kinds) == 1 else OTHER,
-                               carried.pop() if len(carried) == 1 else -1,
-                               holders.pop() if len(holders) == 1 else -1,
-                               *(hands.pop() if len(hands) == 1 else (None, None, False))))
-            return merged, []
-        return [], [ev for e in evs for ev in e]
+            return [_merged(column) for column in zip(*per_path, strict=True)], []
+        return [], [event for events in per_path for event in events]
 
     # ------------------------------------------------------------ the bound
     def evaluate(self, node: Node) -> tuple[int, int]:
@@ -234,21 +224,23 @@ class Heuristic:
         for lf in self.p.leaves:
             if node.q[lf.index] == DONE or lf.index not in self.required:
                 continue
-            types = sorted({t for path in lf.paths.get(node.q[lf.index]) or [] for k in path
-                            for t in lf.atoms[k].types})
-            for t in types:
-                objs = [o for o in x.by_type.get(t, []) if t not in lf.taken or o not in node.claimed]
-                if bound(node, lf.index, t) >= 0 or not objs:
+            types = sorted({type_ for path in lf.paths.get(node.q[lf.index]) or [] for atom_k in path
+                            for type_ in lf.atoms[atom_k].types})
+            for type_ in types:
+                objs = [obj for obj in x.by_type.get(type_, [])
+                        if type_ not in lf.taken or obj not in node.claimed]
+                if bound(node, lf.index, type_) >= 0 or not objs:
                     continue
-                regions = [self.nav.anchor(sim, o if x.slice_of[o] < 0 else x.slice_of[o]) for o in objs]
-                if any(a < 0 for a in regions) or any(not sim.flags[o] & PRESENT for o in objs):
+                regions = [self.nav.anchor(sim, obj if x.slice_of[obj] < 0 else x.slice_of[obj])
+                           for obj in objs]
+                if any(region < 0 for region in regions) or any(not sim.flags[obj] & PRESENT for obj in objs):
                     continue  # held, or slices still to come: left to the relaxations
-                group = t if t in lf.taken else None
+                group = type_ if type_ in lf.taken else None
                 if group is not None:
-                    capacity[t] = {a: regions.count(a) for a in regions}
-                choices.append((lf.index, t, group, tuple(sorted(set(regions)))))
-        choices.sort(key=lambda c: (len(c[3]), c[0], c[1]))
-        return [c for c in choices if len(c[3]) > 1 or c[2] is not None], capacity
+                    capacity[type_] = {region: regions.count(region) for region in regions}
+                choices.append(Choice(lf.index, type_, group, tuple(sorted(set(regions)))))
+        choices.sort(key=lambda choice: (len(choice.regions), choice.leaf, choice.type_))
+        return [choice for choice in choices if len(choice.regions) > 1 or choice.group is not None], capacity
 
     def _evaluate(self, node: Node, fixed: dict[tuple[int, str], int]) -> tuple[int, int]:
         """The bound with some (leaf, type) pairs fixed to one region (their instance's)."""
@@ -267,14 +259,16 @@ class Heuristic:
             must, may = self._leaf_events(node, lf, memo)
             if not must:
                 extra_events += lf.min_events.get(node.q[lf.index], 0)
-                optional += [ev[0] for ev in may]
+                optional += [event.anchors for event in may]
                 chain[lf.index] = (0, lf.min_events.get(node.q[lf.index], 0))
                 continue
             base = len(rows)
-            for pos, (anchors, kind, carried, holder, need, after, full) in enumerate(must):
-                hand_ids = (self._hand_id(lf.index, need, hands), self._hand_id(lf.index, after, hands))
-                rows.append(EventRow(lf.index, pos, anchors, kind, base + carried if carried >= 0 else -1,
-                                     holder, *hand_ids, full))
+            for pos, event in enumerate(must):
+                hand = event.hand
+                rows.append(EventRow(lf.index, pos, event.anchors, event.kind,
+                                     base + event.carried if event.carried >= 0 else -1, event.holder,
+                                     self._hand_id(lf.index, hand.need, hands),
+                                     self._hand_id(lf.index, hand.after, hands), hand.full))
         if not rows and not extra_events:
             return 0, node.ms
         carry = 0 if self.light else carry_total(self, node, memo)
@@ -301,18 +295,18 @@ class Heuristic:
         """Per robot (its hand id, whether it stays full until a pending put), as for events."""
         out = []
         sim = node.sim
-        holders = {r.holder for r in rows if r.holder >= 0}
-        for r in range(len(node.cell)):
-            o = sim.hand.get(r, -1)
-            if o < 0:
+        holders = {row.holder for row in rows if row.holder >= 0}
+        for robot in range(len(node.cell)):
+            held = sim.hand.get(robot, -1)
+            if held < 0:
                 out.append((-2, False))
                 continue
-            owner = [(lf, t) for lf in range(len(node.q)) if node.q[lf] != DONE
-                     for t, o2 in node.bind[lf] if o2 == o]
+            owner = [(leaf, type_) for leaf in range(len(node.q)) if node.q[leaf] != DONE
+                     for type_, obj in node.bind[leaf] if obj == held]
             if not owner:
                 out.append((-2, False))  # nobody needs it: put down on the way (a walk no shorter)
             elif owner[0] in hands:
-                out.append((hands[owner[0]], r in holders))
+                out.append((hands[owner[0]], robot in holders))
             else:
                 out.append((-1, False))
         return out
@@ -322,17 +316,17 @@ class Heuristic:
         """The largest of three bounds on the walking still needed: the assignment of distinct
         predecessors, the carries plus the pickups' approaches, and the spanning tree (bounds.py)."""
         n_ev = len(rows)
-        anchor_sets = [r.anchors for r in rows]
+        anchor_sets = [row.anchors for row in rows]
         cols = anchor_sets + optional
-        flat_a = [a for s in anchor_sets for a in (s or (-1,))]
-        flat_b = [b for s in cols for b in (s or (-1,))]
-        empty = [i for i, s in enumerate(anchor_sets) if not s]
+        flat_a = [anchor for anchors in anchor_sets for anchor in (anchors or (-1,))]
+        flat_b = [anchor for anchors in cols for anchor in (anchors or (-1,))]
+        empty = [i for i, anchors in enumerate(anchor_sets) if not anchors]
         a_idx = np.array(flat_a, dtype=np.int64)
         b_idx = np.array(flat_b, dtype=np.int64)
-        a_starts = np.cumsum([0] + [max(1, len(s)) for s in anchor_sets[:-1]])
-        b_starts = np.cumsum([0] + [max(1, len(s)) for s in cols[:-1]])
+        a_starts = np.cumsum([0] + [max(1, len(anchors)) for anchors in anchor_sets[:-1]])
+        b_starts = np.cumsum([0] + [max(1, len(anchors)) for anchors in cols[:-1]])
         # rows: events (successors); columns: predecessor events, then robots
-        sub = self.rr[np.ix_(b_idx, a_idx)]
+        sub = self.rr[b_idx[:, None], a_idx]  # (plain broadcasting: np.ix_ costs more per call)
         if (b_idx < 0).any() or (a_idx < 0).any():
             sub = sub.copy()
             sub[b_idx < 0, :] = 0
@@ -344,9 +338,9 @@ class Heuristic:
         if empty:
             cost[empty, :] = 0
         np.minimum(cost, BIG, out=cost)
-        leaf = np.array([r.leaf for r in rows])
-        pos = np.array([r.pos for r in rows])
-        kind = np.array([r.kind for r in rows])
+        leaf = np.array([row.leaf for row in rows])
+        pos = np.array([row.pos for row in rows])
+        kind = np.array([row.kind for row in rows])
         n_pred = len(cols)
         ev_cols = cost[:, :n_ev]
         # a later (or the same) event of one's own leaf cannot come before
@@ -355,10 +349,10 @@ class Heuristic:
         later = self.after[leaf[:, None], leaf[None, :]]
         ev_cols[same | later] = BIG
         # a carried object's put: after its pickup or a hands-full action, never another pick/put
-        for i, r in enumerate(rows):
-            if r.kind != PUT:
+        for i, row in enumerate(rows):
+            if row.kind != PUT:
                 continue
-            carried, holder = r.carried, r.holder
+            carried, holder = row.carried, row.holder
             if carried < 0 and holder < 0:
                 continue
             bad = kind != OTHER
@@ -389,9 +383,9 @@ class Heuristic:
             walk = max(walk, solve(_with_last(compound, n_ev)))
         # the spanning tree over the events of one known region (an event with several candidate
         # regions would join far groups at no cost; leaving events out keeps it a bound)
-        fixed = [i for i, s in enumerate(anchor_sets) if len(s) == 1]
+        fixed = [i for i, anchors in enumerate(anchor_sets) if len(anchors) == 1]
         if len(fixed) > 1 or (fixed and walk == 0):
-            ev = np.minimum(pred[np.ix_(fixed, fixed)], BIG)
+            ev = np.minimum(pred[np.array(fixed)[:, None], fixed], BIG)
             walk = max(walk, spanning_walk(ev, np.minimum(robot[:, fixed].min(axis=0), BIG)))
         return walk
 
@@ -402,11 +396,14 @@ class Heuristic:
         may reach the object at one end of its region and leave from the other); a held object's
         put keeps the holder's walk. These walks are disjoint parts of the robots' walks (an approach
         has the hand empty, a carry full): summed, a bound. None when no pickup is carried."""
-        legs = {r.carried: i for i, r in enumerate(rows) if r.kind == PUT and r.carried >= 0 and r.anchors}
-        legs = {k: i for k, i in legs.items() if rows[k].kind == PICKUP and rows[k].anchors}
+        # pickup row -> the row of its put
+        legs = {row.carried: i for i, row in enumerate(rows)
+                if row.kind == PUT and row.carried >= 0 and row.anchors}
+        legs = {pick: put for pick, put in legs.items() if rows[pick].kind == PICKUP and rows[pick].anchors}
         region_idx = self.nav.region_idx
-        cells_of = {k: np.concatenate([region_idx[a] for a in rows[k].anchors]) for k in legs}
-        cells_of = {k: c for k, c in cells_of.items() if len(c)}  # an instance no cell reaches: no leg
+        cells_of = {pick: np.concatenate([region_idx[a] for a in rows[pick].anchors]) for pick in legs}
+        # an instance no cell reaches: no leg
+        cells_of = {pick: cells for pick, cells in cells_of.items() if len(cells)}
         if not cells_of:
             return None
         union = np.unique(np.concatenate(list(cells_of.values())))  # only the cells the pickups use
@@ -416,25 +413,24 @@ class Heuristic:
         src[len(cols):] = self._robot_walks_to_cells(node, union)
         np.minimum(src, BIG, out=src)
         out = np.where(cost >= BIG, BIG, 0)
-        for i, r in enumerate(rows):
-            if r.kind == PUT and r.carried < 0 and r.holder >= 0:
+        for i, row in enumerate(rows):
+            if row.kind == PUT and row.carried < 0 and row.holder >= 0:
                 out[i] = cost[i]  # a held object's put: the holder's walk to it
-        for k, cells in cells_of.items():
-            i = legs[k]
-            to_put = np.minimum(self._near(rows[i].anchors)[cells], BIG)
+        for pick, cells in cells_of.items():
+            to_put = np.minimum(self._near(rows[legs[pick]].anchors)[cells], BIG)
             walks = (src[:, np.searchsorted(union, cells)] + to_put[None, :]).min(axis=1)
-            out[k] = np.where(cost[k] >= BIG, BIG, np.minimum(walks, BIG))
+            out[pick] = np.where(cost[pick] >= BIG, BIG, np.minimum(walks, BIG))
         return out
 
     def _robot_walks_to_cells(self, node: Node, cells: np.ndarray) -> np.ndarray:
         """robots x `cells`: the fewest steps from where each robot may stand to each of them."""
         dm = self.nav.dm
-        out = dm[np.ix_(np.array(node.cell, dtype=np.int64), cells)]
+        out = dm[np.array(node.cell, dtype=np.int64)[:, None], cells]
         if node.reach is not None:
             for r, reach in enumerate(node.reach):
                 if reach is not None:
                     stand = np.array(reach[0], dtype=np.int64)
-                    out[r] = (dm[np.ix_(stand, cells)] + np.array(reach[1])[:, None]).min(axis=0)
+                    out[r] = (dm[stand[:, None], cells] + np.array(reach[1])[:, None]).min(axis=0)
         return out
 
     def _hand_rules(self, node: Node, rows: list[EventRow], cost: np.ndarray, n_ev: int, n_pred: int,
@@ -444,10 +440,12 @@ class Heuristic:
         moment the hand may hold X. Optional events: hand unknown."""
         robot = self._robot_hands(node, rows, hands)
         n_opt = n_pred - n_ev
-        after = np.array([r.after for r in rows] + [-1] * n_opt + [h for h, _ in robot], dtype=np.int64)
-        full = np.array([r.full for r in rows] + [False] * n_opt + [f for _, f in robot], dtype=bool)
-        kind = np.array([r.kind for r in rows])
-        need = np.array([r.need for r in rows], dtype=np.int64)
+        after = np.array([row.after for row in rows] + [-1] * n_opt + [hand for hand, _ in robot],
+                         dtype=np.int64)
+        full = np.array([row.full for row in rows] + [False] * n_opt + [stays for _, stays in robot],
+                        dtype=bool)
+        kind = np.array([row.kind for row in rows])
+        need = np.array([row.need for row in rows], dtype=np.int64)
         bad = (kind == PICKUP)[:, None] & full[None, :]
         bad |= (need >= 0)[:, None] & (after[None, :] != -1) & (after[None, :] != need[:, None])
         cost[bad] = BIG
@@ -456,19 +454,57 @@ class Heuristic:
         """anchors x robots: the fewest steps from where each robot may stand to each anchor."""
         if not len(a_idx):
             return np.zeros((0, len(node.cell)), dtype=np.int64)
-        out = self.field[a_idx][:, list(node.cell)]
+        rows = a_idx[:, None]  # only the needed cells of the anchors' distance fields
+        out = self.field[rows, list(node.cell)]
         if node.reach is not None:
-            for r, reach in enumerate(node.reach):
+            for robot, reach in enumerate(node.reach):
                 if reach is not None:
-                    walks = self.field[a_idx][:, list(reach[0])] + np.array(reach[1])[None, :]
-                    out[:, r] = walks.min(axis=1)
+                    walks = self.field[rows, list(reach[0])] + np.array(reach[1])[None, :]
+                    out[:, robot] = walks.min(axis=1)
         return out
+
+
+class Hand(NamedTuple):
+    """The hand around one pending event of a leaf."""
+
+    need: str | None  # the type the robot must hold to do it (None: any hand)
+    after: str | None  # the hand right after it: a type, EMPTY, or None (unknown)
+    full: bool  # the hand stays full from it until a later put of the same path
+
+
+UNKNOWN_HAND = Hand(None, None, False)
+
+
+class PathEvent(NamedTuple):
+    """One event of a leaf's remaining action sequence, before it becomes an `EventRow`."""
+
+    anchors: tuple[int, ...]  # the regions it may happen in
+    kind: int  # OTHER, PICKUP or PUT
+    carried: int  # a put: the position of the pickup of what it puts in this path, else -1
+    holder: int  # a put of what a robot holds now: that robot, else -1
+    hand: Hand
+
+
+def _merged(column: tuple[PathEvent, ...]) -> PathEvent:
+    """One event standing for the events at one position of equally long alternatives: the union
+    of their regions, and each attribute where they agree (else the weakest value)."""
+    kinds = {event.kind for event in column}
+    carried = {event.carried for event in column}
+    holders = {event.holder for event in column}
+    hands = {event.hand for event in column}
+    return PathEvent(tuple(sorted({a for event in column for a in event.anchors})),
+                     kinds.pop() if len(kinds) == 1 else OTHER,
+                     carried.pop() if len(carried) == 1 else -1,
+                     holders.pop() if len(holders) == 1 else -1,
+                     hands.pop() if len(hands) == 1 else UNKNOWN_HAND)
 
 
 def _with_last(cost: np.ndarray, n_ev: int) -> np.ndarray:
     """The cost matrix with one more row, "the last event": some pending event is no pending event's
     predecessor (the last of its robot's), so one event column stays free and at least one event
     follows a robot (without it, events may precede one another in cycles that no robot enters)."""
-    last = np.full((1, cost.shape[1]), BIG, dtype=cost.dtype)
-    last[0, :n_ev] = 0
-    return np.vstack([cost, last])
+    out = np.empty((cost.shape[0] + 1, cost.shape[1]), dtype=cost.dtype)
+    out[:-1] = cost
+    out[-1] = BIG
+    out[-1, :n_ev] = 0
+    return out

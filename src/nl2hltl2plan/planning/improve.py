@@ -14,8 +14,9 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from nl2hltl2plan.planning.extract import replay_from
+from nl2hltl2plan.planning.node import Event, Node
 from nl2hltl2plan.planning.objective import Objective
-from nl2hltl2plan.planning.state import Event, Expander, Node
+from nl2hltl2plan.planning.state import Expander
 from nl2hltl2plan.planning.support import SUPPORT
 
 

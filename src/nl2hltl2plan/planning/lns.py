@@ -20,8 +20,9 @@ from itertools import combinations
 
 from nl2hltl2plan.planning.extract import replay_from
 from nl2hltl2plan.planning.improve import segments
+from nl2hltl2plan.planning.node import Event, Node
 from nl2hltl2plan.planning.objective import Objective
-from nl2hltl2plan.planning.state import Event, Expander, Node
+from nl2hltl2plan.planning.state import Expander
 from nl2hltl2plan.planning.support import SUPPORT
 
 

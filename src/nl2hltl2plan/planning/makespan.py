@@ -9,8 +9,9 @@ from collections.abc import Callable
 
 import numpy as np
 
+from nl2hltl2plan.planning.node import Node
 from nl2hltl2plan.planning.relax import BIG, PUT, EventRow
-from nl2hltl2plan.planning.state import Expander, Node
+from nl2hltl2plan.planning.state import Expander
 
 Chains = dict[int, tuple[int, int]]  # leaf -> (steps for the first robot to reach it, events + carry legs)
 

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from typing import Literal
 
-from nl2hltl2plan.planning.state import Node
+from nl2hltl2plan.planning.node import Node
 
 MS_WEIGHT = 1 << 20  # minmax: makespan first, summed cost breaks ties (lexicographic order)
 ObjectiveName = Literal["min", "minmax"]

@@ -3,8 +3,9 @@ one action each, on top of the events and the walking."""
 
 from __future__ import annotations
 
-from nl2hltl2plan.planning.model import DONE, Leaf
-from nl2hltl2plan.planning.state import Expander, Node, bound
+from nl2hltl2plan.planning.leaves import DONE, Leaf
+from nl2hltl2plan.planning.node import Node, bound
+from nl2hltl2plan.planning.state import Expander
 from nl2hltl2plan.planning.support import blockers
 from nl2hltl2plan.worlds.effects import RUNS_CLOSED
 from nl2hltl2plan.worlds.simulator import OPEN, PRESENT

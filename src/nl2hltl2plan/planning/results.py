@@ -14,6 +14,7 @@ from typing import Any
 
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.logic.trace import TraceEvent, check_trace
+from nl2hltl2plan.planning.budget import StopReason
 from nl2hltl2plan.worlds.checker import constraint_violations
 from nl2hltl2plan.worlds.plan import Plan
 from nl2hltl2plan.worlds.simulator import Execution, execute
@@ -36,16 +37,6 @@ class PlanStatus(StrEnum):
     ERROR = "error"  # the planner failed (a bug); `reason` says how
 
 
-# why a search stopped: key -> the sentence reported
-STOP_REASONS = {
-    "": "",
-    "trivial": "the specification holds before any action",
-    "exhausted": "search space exhausted (proven optimal)",
-    "bound": "incumbent proven within the requested factor",
-    "budget": "expansion budget spent",
-    "memory": "node limit reached (memory bound)",
-    "timeout": "wall-clock timeout (last resort)",
-}
 
 
 @dataclass
@@ -95,7 +86,7 @@ class PlanResult:
     expanded: int = 0  # search nodes expanded (the budgets count these)
     peak_nodes: int = 0  # most search nodes held at once
     memory_mb: float = 0.0  # rough memory of those nodes
-    stopped: str = ""  # key of STOP_REASONS
+    stopped: StopReason = StopReason.NONE  # why the search stopped (`stop_reason`: in words)
     stop_reason: str = ""  # the sentence
     execution: Execution | None = field(default=None, repr=False)
     events: list[dict[str, Any]] = field(default_factory=list)
@@ -109,7 +100,7 @@ class PlanResult:
             "reason", "objective", "mode", "travel_m", "steps", "total_cost", "cost", "model_cost",
             "lower_bound", "bound", "proven_optimal", "optimality", "model", "plan_time_s", "expanded",
             "peak_nodes", "memory_mb", "stopped", "stop_reason")}
-        out = {"status": self.status.value, **out}
+        out = {"status": self.status.value, **out, "stopped": str(self.stopped)}
         if with_plan:
             out["plan"] = self.plan.model_dump(mode="json") if self.plan is not None else None
             out["events"] = self.events

@@ -21,9 +21,11 @@ import time
 from collections.abc import Callable
 from dataclasses import dataclass
 
+from nl2hltl2plan.planning.budget import StopReason
 from nl2hltl2plan.planning.heuristic import Heuristic
+from nl2hltl2plan.planning.node import Node
 from nl2hltl2plan.planning.objective import DuplicateTable, Objective
-from nl2hltl2plan.planning.state import Expander, Node
+from nl2hltl2plan.planning.state import Expander
 
 NODE_BYTES = 4000  # rough memory of one stored search node (SimState copy, tuples), for reporting
 
@@ -40,7 +42,7 @@ class SearchStats:
     lower_bound: float = 0.0  # proven lower bound on the optimal cost (objective units)
     proven_optimal: bool = False
     exhausted: bool = False
-    stopped: str = ""  # why the search stopped: "bound", "exhausted", "budget", "memory", "timeout"
+    stopped: StopReason = StopReason.NONE  # why the search stopped
     best_cost: float | None = None  # the incumbent's cost so far (objective units; None: no plan yet)
 
 
@@ -96,10 +98,10 @@ class Searcher:
         return k
 
     # ------------------------------------------------------------ seed
-    def beam(self, root: Node, width: int, limit: int) -> Node | None:
-        """Beam search over macro successors; the cheapest goal found, or None. Children are
-        first ranked by an estimate (parent's f plus the walking the step did), and only the best
-        few get the full heuristic."""
+    def beam(self, root: Node, width: int, limit: int, robots: frozenset[int] | None = None) -> Node | None:
+        """Beam search over macro successors (of `robots` only, when given); the cheapest goal
+        found, or None. Children are first ranked by an estimate (parent's f plus the walking the
+        step did), and only the best few get the full heuristic."""
         if root.h is None:
             self.score(root)
         layer = [root]
@@ -110,7 +112,7 @@ class Searcher:
             for node in layer:
                 self.check_time()
                 self.stats.expanded += 1
-                for child in self.x.successors(node, limit=limit, macro=True):
+                for child in self.x.successors(node, limit=limit, macro=True, robots=robots):
                     self.stats.generated += 1
                     if self.x.is_goal(child):
                         if best is None or self.cost(child) < self.cost(best):
@@ -146,12 +148,14 @@ class Searcher:
     # ------------------------------------------------------------ AWA*
     def awa(self, root: Node, incumbent: Node | None, w_order: float, w_stop: float,
             max_expansions: int | None = None, max_nodes: int | None = None,
-            max_generated: int | None = None, max_work: int | None = None) -> Node | None:
+            max_generated: int | None = None, max_work: int | None = None,
+            stall: Stall | None = None) -> Node | None:
         """Anytime weighted A* with deferred evaluation: a child enters the open list with its
         parent's bound (valid for it too) and gets its own heuristic when it is first popped.
         Stops when the incumbent is proven within w_stop, the open list is empty, `max_expansions`,
-        `max_generated` or `max_work` (the heuristic's work, `Heuristic.work`) are spent or more
-        than `max_nodes` are held (with an incumbent), or at the deadline."""
+        `max_generated` or `max_work` (the heuristic's work, `Heuristic.work`) are spent, the
+        proven bound has stopped rising (`stall`), or more than `max_nodes` are held (with an
+        incumbent), or at the deadline."""
         stats, obj = self.stats, self.obj
         best = incumbent
         ub: float = self.cost(best) if best is not None else float("inf")
@@ -163,25 +167,32 @@ class Searcher:
         table = obj.table(self.x.cap_class, self.x.n_objects)
         table.record(self.key(root), root)
         expansions = generated = 0
-        work_end = None if max_work is None else self.h.work + max_work
-        stop = "exhausted"
+        work_start = self.h.work
+        work_end = None if max_work is None else work_start + max_work
+        best_lb, last_rise = -1, 0  # the highest bound so far, and the work spent when it was reached
+        stop = StopReason.EXHAUSTED
         while open_heap:
             self.check_time()
             lb = _lower_bound(lb_heap)
             if lb is not None:
                 stats.lower_bound = max(stats.lower_bound, obj.unit(min(lb, ub)))
                 if best is not None and obj.proven(ub, lb, w_stop):
-                    stop = "bound"
+                    stop = StopReason.BOUND
                     break
+                if lb > best_lb:
+                    best_lb, last_rise = lb, self.h.work - work_start
+            if best is not None and stall is not None and stall.stalled(self.h.work - work_start, last_rise):
+                stop = StopReason.STALLED
+                break
             held = len(open_heap) + len(table)
             stats.peak_nodes = max(stats.peak_nodes, held)
             if best is not None and ((max_expansions is not None and expansions >= max_expansions)
                                      or (max_generated is not None and generated >= max_generated)
                                      or (work_end is not None and self.h.work >= work_end)):
-                stop = "budget"
+                stop = StopReason.BUDGET
                 break
             if best is not None and max_nodes is not None and held > max_nodes:
-                stop = "memory"
+                stop = StopReason.MEMORY
                 break
             node = heapq.heappop(open_heap)[3]
             if node.closed or table.stale(self.key(node), node):
@@ -209,7 +220,7 @@ class Searcher:
                 key = child.f if w_order == 1.0 else obj.weighted_guess(node, child, w_order)
                 heapq.heappush(open_heap, (key, -child.g, next(counter), child))
                 heapq.heappush(lb_heap, (child.f, next(counter), child))
-        if stop == "exhausted":
+        if stop == StopReason.EXHAUSTED:
             stats.exhausted = True
             if best is not None:
                 stats.lower_bound = obj.unit(ub)
@@ -235,6 +246,20 @@ class Searcher:
         return False
 
 
+@dataclass(frozen=True)
+class Stall:
+    """When an A* whose proven bound has stopped rising gives up: once it has spent `min_work`
+    (heuristic work) and its bound last rose more than `share` of the work spent so far ago. On
+    valid_seen scenarios the bound of a search that is going to prove its plan rises as it goes
+    (docs/planning.md); a search whose bound sits still for most of its budget rarely proves it."""
+
+    min_work: int
+    share: float
+
+    def stalled(self, spent: int, last_rise: int) -> bool:
+        return spent >= self.min_work and spent - last_rise >= self.share * spent
+
+
 def _lower_bound(lb_heap: list[tuple[int, int, Node]]) -> int | None:
     while lb_heap and (lb_heap[0][2].closed or lb_heap[0][0] < lb_heap[0][2].f):
         # closed nodes no longer bound the optimum (their children are in the open list), and
@@ -243,4 +268,4 @@ def _lower_bound(lb_heap: list[tuple[int, int, Node]]) -> int | None:
     return lb_heap[0][0] if lb_heap else None
 
 
-__all__ = ["Deadline", "DuplicateTable", "SearchStats", "Searcher"]
+__all__ = ["Deadline", "DuplicateTable", "SearchStats", "Searcher", "Stall"]

@@ -1,9 +1,9 @@
-"""Search states and events: one event = one robot walks to a region and does one leaf action.
+"""The transition relation (`Expander`): the events a node (`node.Node`) allows, one robot walking
+to a region and doing one leaf action, and the child each makes.
 
 A node holds the executor's own state (`SimState`: objects, robot cells, hands), so every event the
-search generates is checked by the same precondition code that later executes the plan. It also
-holds each leaf's DFA state and type bindings (within a leaf a type binds to one instance), the
-non-leaf DFA states, and the times that make the schedule:
+search generates is checked by the same precondition code that later executes the plan. The times
+in a node make the schedule:
 
 - a robot's clock is the step of its last action; an event happens at
   max(clock + walking steps, ready) + 1, where `ready` is the latest step at which any object the
@@ -21,89 +21,15 @@ holding a leaf's object is the only one that can put it down.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import numpy as np
 
-from nl2hltl2plan.planning.model import DONE, Leaf, LeafAtom, Problem
+from nl2hltl2plan.planning.leaves import DONE, Leaf, LeafAtom
+from nl2hltl2plan.planning.model import Problem
 from nl2hltl2plan.planning.navigation import INF, Navigator
+from nl2hltl2plan.planning.node import Event, Node, Reach, bound, put
 from nl2hltl2plan.planning.support import blockers, support_event
 from nl2hltl2plan.worlds.checker import state_events
 from nl2hltl2plan.worlds.simulator import PRESENT, SimState
-
-
-@dataclass(slots=True, frozen=True)
-class Event:
-    robot: int
-    leaf: int
-    atom: str  # type-level atom, e.g. put(Apple,Fridge)
-    verb: str
-    objs: tuple[int, ...]  # object indices
-    stand: int  # cell index the robot acts from
-    travel: int  # cells walked to get there
-    t: int  # step of the action
-    k: int  # atom index in the leaf (-1: putting down an object nobody needs)
-    anchor: int  # object whose interaction region the robot stands in
-
-
-Binding = tuple[tuple[str, int], ...]  # a leaf's (type, object index) pairs, sorted
-Reach = tuple[tuple[int, ...], tuple[int, ...]]  # cells a robot may stand on, extra cost of each (min 0)
-
-
-@dataclass(slots=True, eq=False)
-class Node:
-    """A search state; children share nothing mutable with their parent."""
-
-    sim: SimState  # the executor's state: objects, robot cells, hands
-    cell: tuple[int, ...]  # per robot, its cell index
-    clock: tuple[int, ...]  # per robot, the step of its last action
-    q: tuple[int, ...]  # per leaf, its progress (trie node) or DONE
-    bind: tuple[Binding, ...]  # per leaf, its type bindings
-    claimed: frozenset[int]  # objects some leaf took for itself
-    nq: tuple[int, ...]  # per non-leaf, its DFA state or DONE
-    done_t: tuple[int, ...]  # per spec node (leaves, then non-leaves), completion step or -1
-    leaf_t: tuple[int, ...]  # per leaf, the step of its last event (0: not started)
-    obj_t: dict[int, int]  # object -> the last step it was touched
-    last_done: int  # the latest completion step
-    g: int  # moves + actions so far
-    ms: int  # makespan so far
-    parent: Node | None = None
-    event: Event | None = None
-    h: int | None = None  # heuristic (summed cost); None until evaluated
-    ms_lb: int = 0  # lower bound on the final makespan
-    f: int = 0  # admissible bound on the objective (objective units of the search)
-    closed: bool = False
-    memo: tuple[object, ...] | None = None  # the duplicate-detection key, once computed
-    # free stand cells (exact summed cost): per robot, every cell of its last region with the extra
-    # walking it costs to have stood there (`cell` holds the cheapest); None: nearest-cell model
-    reach: tuple[Reach | None, ...] | None = None
-
-    def events(self) -> list[Event]:
-        out = []
-        node: Node | None = self
-        while node is not None and node.event is not None:
-            out.append(node.event)
-            node = node.parent
-        return out[::-1]
-
-
-def put(values: tuple[int, ...], i: int, value: int) -> tuple[int, ...]:
-    out = list(values)
-    out[i] = value
-    return tuple(out)
-
-
-def _put_reach(values: tuple[Reach | None, ...], i: int, value: Reach | None) -> tuple[Reach | None, ...]:
-    out = list(values)
-    out[i] = value
-    return tuple(out)
-
-
-def bound(node: Node, leaf: int, type_: str) -> int:
-    for t, o in node.bind[leaf]:
-        if t == type_:
-            return o
-    return -1
 
 
 class Expander:
@@ -133,9 +59,7 @@ class Expander:
         classes = list(dict.fromkeys(problem.capabilities))  # robots with equal capabilities
         self.cap_class = [classes.index(c) for c in problem.capabilities]
         self.gate_slots = {i: tuple(self.slot[g] for g in gates) for i, gates in problem.gates.items()}
-        self.only: set[int] | None = None  # restrict successors to these robots (single-robot seeds)
         self.missing_support: set[str] = set()  # support actions (open/close) no robot may do
-        self.free_stands = False  # exact summed cost: stand cells are part of the search (`walk`)
         self.blocked_by: set[str] = set()  # constraints that forbade some event (`forbids`)
 
     # ------------------------------------------------------------ root
@@ -416,22 +340,23 @@ class Expander:
     def walk(self, node: Node, robot: int, anchor: int,
              stand: int | None = None) -> tuple[int, int, tuple[Reach | None, ...] | None]:
         """(stand cell, steps, the child's reach) for `robot` to act in the anchor's region: the
-        nearest cell (or `stand`); with free stand cells, every region cell stays open and `steps` is
-        the least extra walking (a layered shortest path, resolved when the plan is written)."""
+        nearest cell (or `stand`); with free stand cells (a node with a `reach`: `with_free_stands`),
+        every region cell stays open and `steps` is the least extra walking (a layered shortest
+        path, resolved when the plan is written)."""
         cell = node.cell[robot]
-        if not self.free_stands or stand is not None:
+        if node.reach is None or stand is not None:
             if stand is None:
                 stand, d = self.nav.nearest(cell, anchor)
             else:
                 d = int(self.nav.dm[cell, stand])
-            reach = None if node.reach is None else _put_reach(node.reach, robot, None)
+            reach = None if node.reach is None else put(node.reach, robot, None)
             return stand, d, reach
         old = node.reach[robot] if node.reach is not None else None
         cells, offsets = old if old is not None else ((cell,), (0,))
         region = self.nav.region_idx[anchor]
         if not len(region):
             return -1, INF, None
-        arrive = (self.nav.dm[np.ix_(np.array(cells), region)] + np.array(offsets)[:, None]).min(axis=0)
+        arrive = (self.nav.dm[np.array(cells)[:, None], region] + np.array(offsets)[:, None]).min(axis=0)
         k = int(arrive.argmin())
         d = int(arrive[k])
         if d >= INF:
@@ -439,7 +364,7 @@ class Expander:
         ok = arrive < INF
         new: Reach = (tuple(region[ok].tolist()), tuple((arrive[ok] - d).tolist()))
         base = node.reach if node.reach is not None else (None,) * len(node.cell)
-        return int(region[k]), d, _put_reach(base, robot, new)
+        return int(region[k]), d, put(base, robot, new)
 
     def put_down(self, node: Node, robot: int, surface: int, leaf: int,
                  stand: int | None = None) -> Node | None:
@@ -491,9 +416,11 @@ class Expander:
         return hit
 
     # ------------------------------------------------------------ all successors
-    def successors(self, node: Node, limit: int | None = None, macro: bool = False) -> list[Node]:
-        """Every event any robot can do next (`limit`: nearest instances only; `macro`: a robot
-        that picked something up carries on with that leaf until its hand is empty)."""
+    def successors(self, node: Node, limit: int | None = None, macro: bool = False,
+                   robots: frozenset[int] | None = None) -> list[Node]:
+        """Every event any robot (of `robots`, when given: the single-robot seeds) can do next
+        (`limit`: nearest instances only; `macro`: a robot that picked something up carries on
+        with that leaf until its hand is empty)."""
         p = self.p
         out: list[Node] = []
         seen_robot: set[tuple] = set()
@@ -503,35 +430,35 @@ class Expander:
             for lf in p.leaves
         ]
         holder_leaf = self._held_leaves(node)
-        robots = []
-        for r in range(p.n_robots):
-            if self.only is not None and r not in self.only:
+        acting = []
+        for robot in range(p.n_robots):
+            if robots is not None and robot not in robots:
                 continue
-            hand = sim.hand.get(r, -1)
-            sym = (node.cell[r], hand, self.cap_class[r], node.clock[r],
-                   node.reach[r] if node.reach is not None else None)
-            if hand < 0 and sym in seen_robot:
+            hand = sim.hand.get(robot, -1)
+            situation = (node.cell[robot], hand, self.cap_class[robot], node.clock[robot],
+                         node.reach[robot] if node.reach is not None else None)
+            if hand < 0 and situation in seen_robot:
                 continue  # robots in identical situations are interchangeable
-            seen_robot.add(sym)
-            robots.append(r)
+            seen_robot.add(situation)
+            acting.append(robot)
             if hand >= 0 and holder_leaf.get(hand, -1) < 0:
-                out.extend(self._put_downs(node, r, hand, limit))
-        for lf in p.leaves:
-            if not leaf_enabled[lf.index]:
+                out.extend(self._put_downs(node, robot, hand, limit))
+        for leaf in p.leaves:
+            if not leaf_enabled[leaf.index]:
                 continue
-            for k, q_next in lf.moves[node.q[lf.index]]:
-                atom = lf.atoms[k]
-                able = [r for r in robots if p.can_do(r, atom)]
+            for atom_k, q_next in leaf.moves[node.q[leaf.index]]:
+                atom = leaf.atoms[atom_k]
+                able = [robot for robot in acting if p.can_do(robot, atom)]
                 if limit is not None and len(able) > limit:
-                    able = self._closest_robots(node, lf, atom, able)[:limit]
-                for r in able:
+                    able = self._closest_robots(node, leaf, atom, able)[:limit]
+                for robot in able:
                     made = 0
-                    for objs in self.bindings(node, lf, atom, r, limit is not None):
-                        child = self.apply(node, r, lf, k, objs, q_next)
+                    for objs in self.bindings(node, leaf, atom, robot, limit is not None):
+                        child = self.apply(node, robot, leaf, atom_k, objs, q_next)
                         if child is None:
                             continue
                         if macro and atom.verb == "pickup":
-                            child = self._carry_on(child, r, lf)
+                            child = self._carry_on(child, robot, leaf)
                         out.append(child)
                         made += 1
                         if limit is not None and made >= limit:

@@ -18,7 +18,8 @@ from nl2hltl2plan.planning.navigation import INF
 from nl2hltl2plan.worlds.simulator import OPEN, SimState
 
 if TYPE_CHECKING:
-    from nl2hltl2plan.planning.state import Expander, Node
+    from nl2hltl2plan.planning.node import Node
+    from nl2hltl2plan.planning.state import Expander
 
 SUPPORT = -2  # Event.k of a support action (-1: putting down an object nobody needs)
 
@@ -49,7 +50,7 @@ def may_support(x: Expander, robot: int, verb: str, obj: int) -> bool:
 def support_event(x: Expander, node: Node, robot: int, leaf: int, verb: str, obj: int,
                   stand: int | None = None) -> Node | None:
     """The child after `robot` walks to `obj` and opens / closes it for `leaf` (None if it cannot)."""
-    from nl2hltl2plan.planning.state import Event, Node, put
+    from nl2hltl2plan.planning.node import Event, Node, put
 
     if not may_support(x, robot, verb, obj):
         if not any(may_support(x, r, verb, obj) for r in range(x.p.n_robots)):

@@ -26,6 +26,7 @@ from nl2hltl2plan.language.backends import Backend
 from nl2hltl2plan.logic import spot_backend as sb
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.planning.coop import MAX_EXPANSIONS, CoopResult, coop_plan
+from nl2hltl2plan.planning.results import PlanStatus
 from nl2hltl2plan.suites.handover.handover_llm import llm_handover
 from nl2hltl2plan.suites.summaries import mean_std, pm
 from nl2hltl2plan.worlds.handover_world import (
@@ -98,7 +99,9 @@ def run_task(
             row["language_why"] = lang["why"]
             spec = lang.get("spec")
         result = (
-            coop_plan(hw, spec, **plan_kw) if spec is not None else CoopResult("error", row["language_why"])
+            coop_plan(hw, spec, **plan_kw)
+            if spec is not None
+            else CoopResult(PlanStatus.ERROR, row["language_why"])
         )
         ok, reasons = judge(hw, reference, result)
         rows.append(
