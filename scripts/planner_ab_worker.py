@@ -16,7 +16,11 @@ import time
 
 def run(job: dict) -> dict:
     from nl2hltl2plan.planning import oracle_spec, plan
-    from nl2hltl2plan.worlds.floor_plans import build_benchmark_world
+
+    try:
+        from nl2hltl2plan.worlds.floor_plans import build_benchmark_world
+    except ImportError:  # releases before the issue-26 moves (8daad2e) named the module worlds.alfred
+        from nl2hltl2plan.worlds.alfred import build_benchmark_world  # type: ignore[no-redef]
 
     world = build_benchmark_world(job["gt"])
     spec = oracle_spec(job["gt"], world).spec
