@@ -53,6 +53,9 @@ def _marker_edges(k: int, tasks: Tasks, free: set[int], b: TaskBuilder, text: st
             edges.update((a, b2) for a in earlier for b2 in u.tasks)
         elif kind == G.BEFORE_PREV and prev is not None:
             edges.update((b2, a) for a in prev.tasks for b2 in u.tasks)
+        elif kind == G.IN_ORDER:  # "..., in that order": each named task after the one named before it
+            own = sorted(t for v in units if v.sentence == u.sentence for t in v.tasks)
+            edges.update(zip(own, own[1:], strict=False))
         elif kind in {G.AFTER_REF, G.BEFORE_REF}:
             _ref_edges(kind == G.AFTER_REF, ref, u, tasks, b, text, edges)
     if u.seq_after_prev and seq_prev is not None:

@@ -138,6 +138,16 @@ _OFF = re.compile(
 _BACK = re.compile(r",\s+back (in|into|on|onto|to)\b", re.IGNORECASE)
 
 
+# "a mug that's got a pencil in it": a container, as "a mug with a pencil in it"
+_HAS_IN_IT = re.compile(
+    r"\b(?:that|which)(?:'s| has| is holding| holds)(?: got)? (?=(?:a|an|the|some|two) [^,.;]*? in (?:it|them)\b)",
+    re.IGNORECASE,
+)
+# "move soap to the sink, followed by moving to the cupboard": one more stop, the same object
+_FOLLOWED_TO = re.compile(
+    r",?\s+followed by (?:moving|taking|bringing|carrying|putting|placing) (?:it |them )?(to|into|onto|in|on)\b",
+    re.IGNORECASE,
+)
 _STATE_ALT = "|".join(sorted(G.STATE_WORDS))
 _STATES_LISTED = re.compile(rf"\b({_STATE_ALT}),\s+(?=(?:{_STATE_ALT})\b)", re.IGNORECASE)
 
@@ -152,6 +162,8 @@ def normalize(text: str) -> str:
     text = _STATES_LISTED.sub(r"\1 ", text)  # "a chilled, cut slice": one noun phrase, not two clauses
     text = _OFF.sub(r"\1", text)  # "a rinsed off knife", "cool off a plate": the state, not a direction
     text = _BACK.sub(r", then back \1", text)  # "put it in the fridge, back in the microwave": a sequence
+    text = _HAS_IN_IT.sub("with ", text)
+    text = _FOLLOWED_TO.sub(r" and finally \1", text)
     text = _DONE_WITH.sub(lambda m: "After " if m.group(1)[0].isupper() else "after ", text)
     return re.sub(r"\s+", " ", text).strip()
 
