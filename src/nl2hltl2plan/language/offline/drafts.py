@@ -207,6 +207,18 @@ class DraftBuilder:
             d.frames.append((fr, it))
             d.end = fr.end
             return -1
+        if (
+            d is None
+            and drafts
+            and not incomplete(drafts[-1])
+            and not _in_its_appliance(drafts[-1])
+            and it.obj is not None
+            and it.obj.pronoun
+            and fr.cls not in {"light", "none"}
+        ):
+            # "Put the mug in the sink. Then put it in the coffee machine.": "it" is the object of the
+            # finished task of the sentence before, and this is a task of its own
+            it.obj = drafts[-1].obj or it.obj
         label = clause.label if len(fr.items) == 1 else ""
         if len(fr.items) > 1 or st.context:
             label = item_text(fr, it)
@@ -349,6 +361,16 @@ def _restates(fr: Frame, it: Item) -> bool:
     if any(p in G.DEST_PREPS and np.is_receptacle() for p, np in it.pps) and fr.cls != "pick":
         return True
     return _indefinite(o)
+
+
+APPLIANCE_OF = {"heat": "Microwave", "cool": "Fridge", "clean": "SinkBasin"}
+
+
+def _in_its_appliance(d: Draft) -> bool:
+    """ "Heat the potato in the microwave.": the place is the treatment's appliance, the task goes on."""
+    fr, it = d.frames[-1]
+    dst = dest_of(it, fr.cls)
+    return dst is not None and dst.entry is not None and dst.entry.canonical == APPLIANCE_OF.get(fr.cls)
 
 
 def incomplete(d: Draft) -> bool:

@@ -471,6 +471,7 @@ LEADING: list[tuple[re.Pattern[str], str]] = [
     ),
     (re.compile(r"^(?:while|during|as)\b[^,]*,\s*", _F), NOCONSTRAINT),
     (re.compile(r"^(?:only\s+)?(?:after|once|when|following|upon)\s+(?P<ref>[^,]+),\s*", _F), AFTER_REF),
+    (re.compile(r"^(?:just\s+)?(?:before|prior\s+to)\s+(?P<ref>[^,]+),\s*", _F), BEFORE_REF),
     (
         re.compile(
             r"^(?:please|now|next\s+up|you\s+should|you\s+need\s+to|you\s+must|we\s+need\s+to|"
