@@ -168,7 +168,13 @@ def account(
     cyclic order in the text."""
     parse = _Parse(tasks, before)
     toks = tokens(instruction)
-    mentions = [m for m in find_mentions(instruction) if not m.entry.generic and not _is_verb(m, toks)]
+    mentions = [
+        m
+        for m in find_mentions(instruction)
+        if not m.entry.generic
+        and not _is_verb(m, toks)
+        and "noun_unsupported" not in categories(m.surface.lower())  # "my glasses" are no drinking glasses
+    ]
     in_mention = {i for m in mentions for i in range(m.start, m.end)}
     out = _nouns(instruction, mentions, toks, parse)
     out += _invented(mentions, toks, parse)

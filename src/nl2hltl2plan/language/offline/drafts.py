@@ -12,6 +12,7 @@ from nl2hltl2plan.language.offline.frames import (
     Frame,
     Item,
     dest_of,
+    is_fixed,
     parse_frame,
     puts_into,
     same,
@@ -400,6 +401,9 @@ def merge_items(items: list[Item], b: TaskBuilder) -> list[Item]:
     xo, yo = x.obj, y.obj
     assert xo is not None and yo is not None and xo.entry is not None and yo.entry is not None
     dests = [(p, np) for p, np in y.pps if p in G.DEST_PREPS]
+    own = [np for p, np in x.pps if p in G.DEST_PREPS and is_fixed(np)]
+    if own and any(is_fixed(np) and not same(np, own[-1]) for _, np in dests):
+        return items  # "the mug in the sink and the egg in the fridge": each goes its own way
     if b.g is not None and set(b.g.resolve(xo.entry)) == set(b.g.resolve(yo.entry)) and b.g.resolve(xo.entry):
         xo.count = 2
         return [Item(obj=xo, pps=dests or x.pps)]

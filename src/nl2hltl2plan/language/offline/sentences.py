@@ -140,12 +140,14 @@ _BACK = re.compile(r",\s+back (in|into|on|onto|to)\b", re.IGNORECASE)
 
 # "a mug that's got a pencil in it": a container, as "a mug with a pencil in it"
 _HAS_IN_IT = re.compile(
-    r"\b(?:that|which)(?:'s| has| is holding| holds)(?: got)? (?=(?:a|an|the|some|two) [^,.;]*? in (?:it|them)\b)",
+    r"\b(?:that|which)(?:'s| has| is holding| holds)(?: got)? "
+    r"(?=(?:a|an|the|some|two) [^,.;]*? in (?:it|them)\b)",
     re.IGNORECASE,
 )
 # "move soap to the sink, followed by moving to the cupboard": one more stop, the same object
 _FOLLOWED_TO = re.compile(
-    r",?\s+followed by (?:moving|taking|bringing|carrying|putting|placing) (?:it |them )?(to|into|onto|in|on)\b",
+    r",?\s+followed by (?:moving|taking|bringing|carrying|putting|placing) "
+    r"(?:it |them )?(to|into|onto|in|on)\b",
     re.IGNORECASE,
 )
 _STATE_ALT = "|".join(sorted(G.STATE_WORDS))
