@@ -19,7 +19,7 @@ ROOM = {
     "Apple", "Bread", "Egg", "Mug", "Cup", "Plate", "Pan", "Fork", "Spatula", "Kettle", "SoapBar",
     "Plunger", "Candle", "KeyChain", "Watch", "Fridge", "Microwave", "CounterTop", "SinkBasin", "Faucet",
     "Cabinet", "Drawer", "Toilet", "Dresser", "Safe", "Box", "GarbageCan", "CoffeeMachine", "Desk",
-    "Pencil", "Pen",
+    "Pencil", "Pen", "DeskLamp",
 }  # fmt: skip
 
 
@@ -97,6 +97,8 @@ def test_connectives_and_references(text, tasks, order):
         # navigation and finding are steps of the task
         ("go to the counter, grab the bread and put it in the fridge", "place Bread -> Fridge"),
         ("locate the egg and put it in the fridge", "place Egg -> Fridge"),
+        # the lamp a person uses lights what they look at
+        ("use the light from the lamp to look at the mug", "examine_in_light Mug under DeskLamp"),
     ],
 )
 def test_landmarks_names_plurals_and_steps(text, task):

@@ -150,6 +150,13 @@ _FOLLOWED_TO = re.compile(
     r"(?:it |them )?(to|into|onto|in|on)\b",
     re.IGNORECASE,
 )
+# "use the light from the lamp to look at the book": the lamp lights the examination
+_USE_LAMP = re.compile(
+    r"\b(?:use|using) (?:the |a )?(?:light (?:from|of) (?:the |a )?)?(?P<lamp>(?:\w+ )?lamp|light)"
+    r"(?: light)? to (?P<verb>look at|see|examine|view|read|inspect|check) "
+    r"(?P<obj>[^,.;!?]+?)(?=[,.;!?]|\s+(?:and|then)\b|$)",
+    re.IGNORECASE,
+)
 _STATE_ALT = "|".join(sorted(G.STATE_WORDS))
 _STATES_LISTED = re.compile(rf"\b({_STATE_ALT}),\s+(?=(?:{_STATE_ALT})\b)", re.IGNORECASE)
 
@@ -165,6 +172,7 @@ def normalize(text: str) -> str:
     text = _OFF.sub(r"\1", text)  # "a rinsed off knife", "cool off a plate": the state, not a direction
     text = _BACK.sub(r", then back \1", text)  # "put it in the fridge, back in the microwave": a sequence
     text = _HAS_IN_IT.sub("with ", text)
+    text = _USE_LAMP.sub(lambda m: f"{m['verb']} {m['obj']} by the light of the {m['lamp']}", text)
     text = _FOLLOWED_TO.sub(r" and finally \1", text)
     text = _DONE_WITH.sub(lambda m: "After " if m.group(1)[0].isupper() else "after ", text)
     return re.sub(r"\s+", " ", text).strip()
