@@ -53,6 +53,11 @@ PUT_EGG, PUT_MUG = "place Egg -> Fridge", "place Mug -> SinkBasin"
             {(PUT_MUG, PUT_EGG)},
         ),
         ("Put the egg in the fridge. Concurrently, put the mug in the sink.", [PUT_EGG, PUT_MUG], set()),
+        (
+            "put the egg in the fridge first and then put the mug in the sink",
+            [PUT_EGG, PUT_MUG],
+            {(PUT_EGG, PUT_MUG)},
+        ),
         (  # "it" in a new sentence after a finished task: a task of its own on the same object
             "put the mug in the sink. then put it in the coffee machine",
             [PUT_MUG, "place Mug -> CoffeeMachine"],
