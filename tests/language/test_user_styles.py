@@ -58,6 +58,16 @@ PUT_EGG, PUT_MUG = "place Egg -> Fridge", "place Mug -> SinkBasin"
             [PUT_EGG, PUT_MUG],
             {(PUT_EGG, PUT_MUG)},
         ),
+        (
+            "put the egg in the fridge and when you're done put the mug in the sink",
+            [PUT_EGG, PUT_MUG],
+            {(PUT_EGG, PUT_MUG)},
+        ),
+        (
+            "put the egg in the fridge, and once that's done put the mug in the sink",
+            [PUT_EGG, PUT_MUG],
+            {(PUT_EGG, PUT_MUG)},
+        ),
         (  # "it" in a new sentence after a finished task: a task of its own on the same object
             "put the mug in the sink. then put it in the coffee machine",
             [PUT_MUG, "place Mug -> CoffeeMachine"],
@@ -155,6 +165,13 @@ def spec(kind: str, obj: str, rec: str, tid: str = "A", count: int = 1) -> BaseT
         # where the robot walks is a step; a place nothing goes to is still named
         ("walk over to the sink and put the mug in it", ["Mug:SinkBasin"], [], []),
         ("put the mug in the sink and the egg in the drawer", ["Mug:SinkBasin"], [], ["egg", "drawer"]),
+        # "when" orders ("... when you're done"): two tasks and no order is unread, never a silent guess
+        (
+            "put the mug in the sink and the pen in the drawer when you can",
+            ["Mug:SinkBasin", "Pen:Drawer"],
+            [],
+            ["when"],
+        ),
         # a piece of soap is a whole bar; a piece of bread is a slice
         ("put both pieces of soap in the sink", ["SoapBar:SinkBasin:2"], [], []),
         ("put both pieces of bread in the sink", ["Bread:SinkBasin:2"], [], ["pieces"]),

@@ -157,6 +157,14 @@ _USE_LAMP = re.compile(
     r"(?P<obj>[^,.;!?]+?)(?=[,.;!?]|\s+(?:and|then)\b|$)",
     re.IGNORECASE,
 )
+# "put X in A, and once that's done put Y in B" / "... and when you're done put Y ...": inside a
+# sentence, the same as "then" (at its start the leading markers read it)
+_DONE_INSIDE = re.compile(
+    r"(?<=\w)\s*,?\s+(?:and\s+)?(?:once|when|after)\s+(?:that's|that\s+is|it's|it\s+is|this\s+is|you're|"
+    r"you\s+are|you've|you\s+have)?\s*(?:done|finished|through)(?:\s+with\s+(?:that|it|this))?"
+    r"\s*,?\s+(?=[a-z])",
+    re.IGNORECASE,
+)
 _STATE_ALT = "|".join(sorted(G.STATE_WORDS))
 _STATES_LISTED = re.compile(rf"\b({_STATE_ALT}),\s+(?=(?:{_STATE_ALT})\b)", re.IGNORECASE)
 
@@ -174,6 +182,7 @@ def normalize(text: str) -> str:
     text = _HAS_IN_IT.sub("with ", text)
     text = _USE_LAMP.sub(lambda m: f"{m['verb']} {m['obj']} by the light of the {m['lamp']}", text)
     text = _FOLLOWED_TO.sub(r" and finally \1", text)
+    text = _DONE_INSIDE.sub(", then ", text)
     text = _DONE_WITH.sub(lambda m: "After " if m.group(1)[0].isupper() else "after ", text)
     return re.sub(r"\s+", " ", text).strip()
 
