@@ -111,8 +111,10 @@ def test_the_offline_backend_takes_the_models_structure_where_the_grammar_fails(
     text: str, tasks: list[tuple[str, str]], before: list[tuple[str, str]]
 ) -> None:
     r = parse_instruction(text, KITCHEN, "kitchen")
-    assert [(t.object[0], (t.receptacle or [""])[0]) for t in r.tasks] == tasks
-    assert sorted(r.before) == before and not r.unparsed
+    got = {t.id: (t.object[0], (t.receptacle or [""])[0]) for t in r.tasks}
+    want = {chr(65 + k): task for k, task in enumerate(tasks)}
+    assert sorted(got.values()) == sorted(tasks) and not r.unparsed  # the same tasks, in any listing order
+    assert {(got[a], got[b]) for a, b in r.before} == {(want[a], want[b]) for a, b in before}
 
 
 def test_span_helpers_restore_verbs_and_references() -> None:

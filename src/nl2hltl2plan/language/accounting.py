@@ -27,7 +27,15 @@ import networkx as nx
 
 from nl2hltl2plan.domain.task_kinds import APPLIANCE, slots_of
 from nl2hltl2plan.errors import HTTError
-from nl2hltl2plan.language.grounding import Mention, camel_words, find_mentions, lexicon, lookup, tokens
+from nl2hltl2plan.language.grounding import (
+    SLICEABLE,
+    Mention,
+    camel_words,
+    find_mentions,
+    lexicon,
+    lookup,
+    tokens,
+)
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, ConstraintSpec
 from nl2hltl2plan.logic.atom import Atom
 from nl2hltl2plan.worlds.world import KNIFE_TYPES
@@ -40,6 +48,7 @@ IMPLIED_TYPES = {
 }
 LAMPS = frozenset({"DeskLamp", "FloorLamp"})
 OPENED_FOR_ITSELF = frozenset({"Book", "Laptop", "Blinds"})  # opened to be open, not to reach inside
+NAVIGATION = frozenset({"go", "walk", "head", "come", "run", "move", "turn"})  # "move to the sink", no object
 DETERMINERS = {"the", "a", "an", "that", "this", "those", "these", "its", "their", "my", "your", "of"}
 # a place named after an object and one of these describes where the object is ("the apple on the table")
 LOCATIVE = frozenset(
@@ -206,7 +215,13 @@ def account(
     spans = [(at, at + len(c.text), c) for c in constraints if (at := lowered.find(c.text.lower())) >= 0]
     parse = _Parse(tasks, before, constraints, spans)
     toks = tokens(instruction)
-    mentions = [m for m in find_mentions(instruction) if not m.entry.generic and not _is_verb(m, toks)]
+    mentions = [
+        m
+        for m in find_mentions(instruction)
+        if not m.entry.generic
+        and not _is_verb(m, toks)
+        and "noun_unsupported" not in categories(m.surface.lower())  # "my glasses" are no drinking glasses
+    ]
     in_mention = {i for m in mentions for i in range(m.start, m.end)}
     out = _nouns(instruction, mentions, toks, parse)
     out += _invented(mentions, toks, parse)
@@ -283,14 +298,29 @@ def _locative(instruction: str, m: Mention, toks: list[tuple[str, int, int]], pl
         if toks[i][0] in LOCATIVE:
             break
         i -= 1
+    if _walked_to(toks, m.start):
+        return True
     if i < 0 or toks[i][0] not in LOCATIVE:
         return False
-    if toks[i][0] in ("from", "off") or (i > 0 and toks[i - 1][0] == "out"):
+    first = i
+    while first > 0 and toks[first - 1][0] in LOCATIVE | {"out"}:
+        first -= 1  # "from in between the sink and ...", "out of", "from under the bed": where it is
+    if toks[first][0] in ("from", "off", "out"):
         return True
     clause = _clause_span(instruction, m.char_start)
     if any("verb_take" in categories(w) for w, s, _ in toks if clause[0] <= s < clause[1]):
         return True
     return any(clause[0] <= o.char_start < clause[1] and o.start != m.start for o in places)
+
+
+def _walked_to(toks: list[tuple[str, int, int]], start: int) -> bool:
+    """ "go to the counter, grab the bread ...": where the robot walks (the place's first word at
+    `start`) is a step of the task, not a destination."""
+    j, to = start - 1, False
+    while j >= 0 and toks[j][0] in {"to", "towards", "toward", "over", "back", "up", "the", "a"}:
+        to = to or toks[j][0] in {"to", "towards", "toward"}
+        j -= 1
+    return to and j >= 0 and bool(stems(toks[j][0]) & NAVIGATION)
 
 
 def _clause_span(text: str, at: int) -> tuple[int, int]:
@@ -443,16 +473,20 @@ def _verb(w: str, cats: set[str], words: list[str], i: int, parse: _Parse) -> Un
         c.startswith("state_lights_") for x in words[i + 1 : i + 5] for c in categories(x)
     ):
         return None  # "make the kitchen dark": the state word is the request, judged on its own
+    if "verb_seek" in cats and not {"and", ","} & set(words[i + 1 : i + 8]):
+        return Unread(w, "action", "finding is not a task: say what to do with it")
     if "verb_unsupported" in cats and not cats & {"verb_any", "verb_step"}:
         return Unread(w, "action", "no base task does this")
     if "verb_unsupported_before_object" in cats and words[i + 1 : i + 2] and words[i + 1] in DETERMINERS:
         return Unread(w, "action", "no base task does this")
+    if words[i + 1 : i + 2] == ["up"] and "verb_clean_place" in cats:
+        return None  # "clean up the pencils": tidy them away, not wash them
     for c in cats:
         kind = c.removeprefix("verb_")
         if c.startswith("verb_") and kind in ("heat_place", "cool_place", "clean_place", "examine_in_light"):
             if kind not in parse.kinds:
                 return Unread(w, "action", f"no {kind} task")
-    if "verb_sliced" in cats and not parse.sliced:
+    if "verb_sliced" in cats and not parse.sliced and not _piece_of_whole(words, i):
         return Unread(w, "action", "no task takes a slice")
     return None
 
@@ -485,6 +519,14 @@ def _opened_thing(after: list[str], parse: _Parse) -> str | None:
         t for x in parse.tasks if x.kind == "set_state" and x.state in ("open", "closed") for t in x.object
     }
     return None if set(entry.types) & done else entry.canonical
+
+
+def _piece_of_whole(words: list[str], i: int) -> bool:
+    """ "both pieces of soap": a piece of something no knife slices is the whole thing."""
+    if words[i + 1 : i + 2] != ["of"]:
+        return False
+    named = find_mentions(" ".join(words[i + 2 : i + 6]))
+    return bool(named) and not set(named[0].entry.types) & SLICEABLE
 
 
 def _noun(w: str, cats: set[str]) -> Unread | None:
@@ -541,7 +583,14 @@ def _orders(toks: list[tuple[str, int, int]], in_mention: set[int], parse: _Pars
     """Order words: with several base tasks and no word that frees the order, a sequence word needs an
     ordering between them."""
     cats = [categories(w) for i, (w, _, _) in enumerate(toks) if i not in in_mention]
-    words = [w for i, (w, _, _) in enumerate(toks) if i not in in_mention and "order" in categories(w)]
+    plain = [w for w, _, _ in toks]
+    words = [
+        w
+        for i, w in enumerate(plain)
+        if i not in in_mention and "order" in categories(w) and plain[i : i + 2] != ["next", "to"]
+    ]  # "next to the sink" names a place, not a step
+    text = " ".join(plain)
+    words += [p for p in ("in that order", "in this order") if f" {p} " in f" {text} "]
     free = any("any_order" in c for c in cats)
     if not words or len(parse.tasks) < 2 or parse.before or free:
         return []

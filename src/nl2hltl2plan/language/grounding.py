@@ -18,6 +18,8 @@ from importlib import resources
 from nl2hltl2plan.errors import WorldError
 from nl2hltl2plan.worlds.world import Affordances
 
+# what a knife slices in ALFRED (an egg cracks): "a piece of soap" is a whole soap bar
+SLICEABLE = frozenset({"Apple", "Bread", "Lettuce", "Potato", "Tomato", "Egg"})
 # AI2-THOR object types (ALFRED's list plus the few AI2-THOR 5 scenes add).
 THOR_TYPES: tuple[str, ...] = (
     "AlarmClock",

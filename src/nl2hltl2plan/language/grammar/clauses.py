@@ -45,7 +45,8 @@ def split_clauses(sentence: str) -> list[tuple[str, int, int, str]]:
             j = i - 1
             joiner = ""
             while j >= 0 and (words[j][0] == "," or words[j][0] in G.CLAUSE_JOINERS):
-                if words[j][0] in G.SEQ_JOINERS:
+                if words[j][0] in G.SEQ_JOINERS and not (joiner and G.SEQ_JOINERS[words[j][0]] == "first"):
+                    # "X first and then Y": "first" ends the clause before, "then" joins this one
                     joiner = G.SEQ_JOINERS[words[j][0]]
                 elif words[j][0] in {"to", "and", "while", "plus", "or", "as"} and not joiner:
                     joiner = words[j][0]

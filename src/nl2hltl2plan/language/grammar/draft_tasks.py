@@ -19,7 +19,7 @@ from nl2hltl2plan.language.grammar.frames import (
     same,
 )
 from nl2hltl2plan.language.grammar.phrases import DETERMINERS, FILLER, NP, parse_np, tokens
-from nl2hltl2plan.language.grounding import AffordanceLookup, Grounder, Roles, find_mentions
+from nl2hltl2plan.language.grounding import THOR_TYPES, AffordanceLookup, Grounder, Roles, find_mentions
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
 
 
@@ -197,12 +197,17 @@ class TaskBuilder:
             kind=kind,
             object=fields["object"],
             count=min(r.count, 2) if kind == "place_two" else r.count,
-            sliced=r.sliced,
+            sliced=r.sliced and _sliceable(fields["object"]),
             text=text,
             container=fields["container"],
             receptacle=fields["receptacle"],
             light=fields["light"],
         )
+
+
+def _sliceable(types: list[str]) -> bool:
+    """ "both pieces of soap" are whole soap bars: only what a knife can slice is ever sliced."""
+    return any(t in G.SLICEABLE or t not in THOR_TYPES for t in types)
 
 
 @dataclass

@@ -13,6 +13,7 @@ from nl2hltl2plan.language.grammar.frames import (
     Frame,
     Item,
     dest_of,
+    is_fixed,
     parse_frame,
     puts_into,
     same,
@@ -207,6 +208,18 @@ class DraftBuilder:
             d.frames.append((fr, it))
             d.end = fr.end
             return -1
+        if (
+            d is None
+            and drafts
+            and not incomplete(drafts[-1])
+            and not _in_its_appliance(drafts[-1])
+            and it.obj is not None
+            and it.obj.pronoun
+            and fr.cls not in {"light", "none"}
+        ):
+            # "Put the mug in the sink. Then put it in the coffee machine.": "it" is the object of the
+            # finished task of the sentence before, and this is a task of its own
+            it.obj = drafts[-1].obj or it.obj
         label = clause.label if len(fr.items) == 1 else ""
         if len(fr.items) > 1 or st.context:
             label = item_text(fr, it)
@@ -351,6 +364,16 @@ def _restates(fr: Frame, it: Item) -> bool:
     return _indefinite(o)
 
 
+APPLIANCE_OF = {"heat": "Microwave", "cool": "Fridge", "clean": "SinkBasin"}
+
+
+def _in_its_appliance(d: Draft) -> bool:
+    """ "Heat the potato in the microwave.": the place is the treatment's appliance, the task goes on."""
+    fr, it = d.frames[-1]
+    dst = dest_of(it, fr.cls)
+    return dst is not None and dst.entry is not None and dst.entry.canonical == APPLIANCE_OF.get(fr.cls)
+
+
 def incomplete(d: Draft) -> bool:
     """A draft that only picked / changed the state of something: the next clause usually completes it."""
     for fr, it in d.frames:
@@ -378,6 +401,9 @@ def merge_items(items: list[Item], b: TaskBuilder) -> list[Item]:
     xo, yo = x.obj, y.obj
     assert xo is not None and yo is not None and xo.entry is not None and yo.entry is not None
     dests = [(p, np) for p, np in y.pps if p in G.DEST_PREPS]
+    own = [np for p, np in x.pps if p in G.DEST_PREPS and is_fixed(np)]
+    if own and any(is_fixed(np) and not same(np, own[-1]) for _, np in dests):
+        return items  # "the mug in the sink and the egg in the fridge": each goes its own way
     if b.g is not None and set(b.g.resolve(xo.entry)) == set(b.g.resolve(yo.entry)) and b.g.resolve(xo.entry):
         xo.count = 2
         return [Item(obj=xo, pps=dests or x.pps)]

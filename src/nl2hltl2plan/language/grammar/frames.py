@@ -98,6 +98,7 @@ class _ItemReader:
     item: Item = field(default_factory=lambda: Item(obj=None))
     cur: list[tuple[str, int, int]] = field(default_factory=list)  # the words of the current noun phrase
     cur_prep: str | None = None
+    source_pair: bool = False  # after "from between": the next "and" joins two places, not two items
 
     def read(self, i: int) -> list[Item]:
         words = [w for w, _, _ in self.toks]
@@ -139,6 +140,10 @@ class _ItemReader:
             hit = match_prep(words, i + 1)
             self.cur_prep = THEN_TO
             return i + 1 + (hit[1] if hit is not None and hit[0] in G.DEST_PREPS else 0)
+        if w == "and" and self.cur_prep == "from" and self.source_pair:
+            self._flush()  # "from between the sink and the toilet": both say where it is
+            self.source_pair = False
+            return i + 1
         if w in {",", "and"} or (w == "or" and self.cur_prep is None):
             self._flush()
             # a new list item starts when the next words are a noun phrase without preposition
@@ -154,6 +159,10 @@ class _ItemReader:
             self.cur_prep = None
             return i + 1
         hit = match_prep(words, i)
+        if hit is not None and self.cur_prep == "from" and not self.cur:
+            # "from between the sink and the toilet", "from under the bed": still where it is
+            self.source_pair = hit[0] in {"between", "in between"}
+            return i + hit[1]
         if hit is not None and not (hit[0] == "of" and self.cur):
             self._flush()
             self.cur_prep = hit[0]

@@ -37,9 +37,10 @@ def _marker_edges(k: int, tasks: Tasks, free: set[int], b: TaskBuilder, text: st
     prev = units[k - 1] if k > 0 else None
     seq_prev = prev
     # sentence markers refer to the clause before the sentence, not to a sibling clause of the sentence
+    cands = [v for v in units[:k] if v.sentence != u.sentence]
+    outer = cands[-1] if cands else None  # the clause before the sentence
     if prev is not None and prev.sentence == u.sentence and not u.seq_after_prev:
-        cands = [v for v in units[:k] if v.sentence != u.sentence]
-        prev = cands[-1] if cands else None
+        prev = outer
     first_of_sentence = min(t for v in units if v.sentence == u.sentence for t in v.tasks)
     earlier = [t for t in range(len(tasks.specs)) if t < first_of_sentence]
     for kind, ref in u.markers:
@@ -51,8 +52,11 @@ def _marker_edges(k: int, tasks: Tasks, free: set[int], b: TaskBuilder, text: st
             edges.update((a, b2) for a in scope if a not in free for b2 in u.tasks)
         elif kind == G.AFTER_ALL:
             edges.update((a, b2) for a in earlier for b2 in u.tasks)
-        elif kind == G.BEFORE_PREV and prev is not None:
-            edges.update((b2, a) for a in prev.tasks for b2 in u.tasks)
+        elif kind == G.BEFORE_PREV and outer is not None:  # "X. Before that, Y, then Z": Y, Z before X
+            edges.update((b2, a) for a in outer.tasks for b2 in u.tasks)
+        elif kind == G.IN_ORDER:  # "..., in that order": each named task after the one named before it
+            own = sorted(t for v in units if v.sentence == u.sentence for t in v.tasks)
+            edges.update(zip(own, own[1:], strict=False))
         elif kind in {G.AFTER_REF, G.BEFORE_REF}:
             _ref_edges(kind == G.AFTER_REF, ref, u, tasks, b, text, edges)
     if u.seq_after_prev and seq_prev is not None:

@@ -181,7 +181,10 @@ def parse_np(text: str) -> NP:
                 break  # but "a soap container" holds soap: the soap's
             m = nxt
         np.entry, np.plural = m.entry, m.plural
-        if m.plural and m.entry.canonical not in {"KeyChain"}:
+        surface = text[m.char_start : m.char_end].lower()
+        one_of = words[:2] == ["one", "of"]  # "one of the pots": one
+        if m.plural and surface != "keys" and not surface.startswith("set of") and not one_of:
+            # "keys" and "a set of keychains" are one key chain; "the keychains" are two
             np.count = max(np.count, 2)
     elif mentions:
         np.generic = True

@@ -139,6 +139,33 @@ _OFF = re.compile(
 _BACK = re.compile(r",\s+back (in|into|on|onto|to)\b", re.IGNORECASE)
 
 
+# "a mug that's got a pencil in it": a container, as "a mug with a pencil in it"
+_HAS_IN_IT = re.compile(
+    r"\b(?:that|which)(?:'s| has| is holding| holds)(?: got)? "
+    r"(?=(?:a|an|the|some|two) [^,.;]*? in (?:it|them)\b)",
+    re.IGNORECASE,
+)
+# "move soap to the sink, followed by moving to the cupboard": one more stop, the same object
+_FOLLOWED_TO = re.compile(
+    r",?\s+followed by (?:moving|taking|bringing|carrying|putting|placing) "
+    r"(?:it |them )?(to|into|onto|in|on)\b",
+    re.IGNORECASE,
+)
+# "use the light from the lamp to look at the book": the lamp lights the examination
+_USE_LAMP = re.compile(
+    r"\b(?:use|using) (?:the |a )?(?:light (?:from|of) (?:the |a )?)?(?P<lamp>(?:\w+ )?lamp|light)"
+    r"(?: light)? to (?P<verb>look at|see|examine|view|read|inspect|check) "
+    r"(?P<obj>[^,.;!?]+?)(?=[,.;!?]|\s+(?:and|then)\b|$)",
+    re.IGNORECASE,
+)
+# "put X in A, and once that's done put Y in B" / "... and when you're done put Y ...": inside a
+# sentence, the same as "then" (at its start the leading markers read it)
+_DONE_INSIDE = re.compile(
+    r"(?<=\w)\s*,?\s+(?:and\s+)?(?:once|when|after)\s+(?:that's|that\s+is|it's|it\s+is|this\s+is|you're|"
+    r"you\s+are|you've|you\s+have)?\s*(?:done|finished|through)(?:\s+with\s+(?:that|it|this))?"
+    r"\s*,?\s+(?=[a-z])",
+    re.IGNORECASE,
+)
 _STATE_ALT = "|".join(sorted(G.STATE_WORDS))
 _STATES_LISTED = re.compile(rf"\b({_STATE_ALT}),\s+(?=(?:{_STATE_ALT})\b)", re.IGNORECASE)
 
@@ -153,6 +180,10 @@ def normalize(text: str) -> str:
     text = _STATES_LISTED.sub(r"\1 ", text)  # "a chilled, cut slice": one noun phrase, not two clauses
     text = _OFF.sub(r"\1", text)  # "a rinsed off knife", "cool off a plate": the state, not a direction
     text = _BACK.sub(r", then back \1", text)  # "put it in the fridge, back in the microwave": a sequence
+    text = _HAS_IN_IT.sub("with ", text)
+    text = _USE_LAMP.sub(lambda m: f"{m['verb']} {m['obj']} by the light of the {m['lamp']}", text)
+    text = _FOLLOWED_TO.sub(r" and finally \1", text)
+    text = _DONE_INSIDE.sub(", then ", text)
     text = _DONE_WITH.sub(lambda m: "After " if m.group(1)[0].isupper() else "after ", text)
     return supply_put(re.sub(r"\s+", " ", text).strip())
 

@@ -7,6 +7,8 @@ from __future__ import annotations
 
 import re
 
+from nl2hltl2plan.language import grounding
+
 # ----- verbs ---------------------------------------------------------------------------------------
 # class: place (move something somewhere), pick (take hold), clean/heat/cool/slice (change state),
 # fill (fill with water: the object is rinsed in the sink), light (switch a lamp), examine (look at),
@@ -59,6 +61,7 @@ _VERBS: dict[str, tuple[str, ...]] = {
         "obtain",
         "fetch",
         "find",
+        "locate",
         "remove",
         "use",
         "holding",
@@ -87,7 +90,21 @@ _VERBS: dict[str, tuple[str, ...]] = {
         "analyse",
     ),
     "trash": ("throw", "toss", "discard", "dispose", "trash", "bin", "chuck", "dump"),
-    "other": ("open", "close", "shut", "exchange", "swap", "empty", "finish", "complete", "do", "make", "go"),
+    "other": (
+        "open",
+        "close",
+        "shut",
+        "exchange",
+        "swap",
+        "empty",
+        "finish",
+        "complete",
+        "do",
+        "make",
+        "go",
+        "walk",
+        "head",
+    ),
 }
 
 
@@ -361,7 +378,7 @@ for _w in ("sliced", "cut", "chopped", "diced"):
     STATE_WORDS[_w] = "slice"
 # what AI2-THOR can slice; a knife listed with one of them is the tool that sliced it ("a slice of tomato
 # and a knife in the trash"), as in ALFRED's slicing tasks, whose goal is the slice
-SLICEABLE = {"Apple", "Bread", "Lettuce", "Potato", "Tomato", "Egg"}
+SLICEABLE = grounding.SLICEABLE
 KNIVES = {"Knife", "ButterKnife"}
 SLICE_NOUNS = {"slice", "slices", "piece", "pieces", "wedge", "wedges", "chunk", "chunks", "bit", "bits"}
 WATER_WORDS = {"water"}
@@ -397,6 +414,7 @@ THEN, FINALLY, FIRST, FREE, BEFORE_PREV, AFTER_ALL, AFTER_REF, BEFORE_REF, NOCON
     "before_ref",
     "none",
 )
+IN_ORDER = "in_order"  # "..., in that order": the sentence's tasks in the order they are named
 _DONE = r"(?:done|finished|complete|completed|over|through|in\s+place)"
 LEADING: list[tuple[re.Pattern[str], str]] = [
     (
@@ -430,7 +448,7 @@ LEADING: list[tuple[re.Pattern[str], str]] = [
     (
         re.compile(
             r"^(?:in\s+any\s+order|at\s+any\s+time|anytime|simultaneously|meanwhile|in\s+the\s+meantime|"
-            r"at\s+the\s+same\s+time|in\s+parallel|independently|whenever(?:\s+you\s+like)?)\b\s*[,:]?\s*",
+            r"at\s+the\s+same\s+time|in\s+parallel|independently|concurrently|whenever(?:\s+you\s+like)?)\b\s*[,:]?\s*",
             _F,
         ),
         FREE,
@@ -453,6 +471,7 @@ LEADING: list[tuple[re.Pattern[str], str]] = [
     ),
     (re.compile(r"^(?:while|during|as)\b[^,]*,\s*", _F), NOCONSTRAINT),
     (re.compile(r"^(?:only\s+)?(?:after|once|when|following|upon)\s+(?P<ref>[^,]+),\s*", _F), AFTER_REF),
+    (re.compile(r"^(?:just\s+)?(?:before|prior\s+to)\s+(?P<ref>[^,]+),\s*", _F), BEFORE_REF),
     (
         re.compile(
             r"^(?:please|now|next\s+up|you\s+should|you\s+need\s+to|you\s+must|we\s+need\s+to|"
@@ -465,7 +484,7 @@ LEADING: list[tuple[re.Pattern[str], str]] = [
 ]
 _FREE_T = (
     r"(?:at\s+any\s+time|in\s+any\s+order|in\s+any\s+sequence|anytime|any\s+time|whenever(?:\s+you\s+like)?|"
-    r"in\s+whatever\s+order|in\s+no\s+particular\s+order|in\s+parallel|simultaneously|independently)"
+    r"in\s+whatever\s+order|in\s+no\s+particular\s+order|in\s+parallel|simultaneously|concurrently|independently)"
 )
 TRAILING: list[tuple[re.Pattern[str], str]] = [
     (re.compile(rf"\s*,?\s*(?:also\s+)?{_FREE_T}\s*$", _F), FREE),
@@ -496,6 +515,14 @@ TRAILING: list[tuple[re.Pattern[str], str]] = [
     ),
     (re.compile(r"\s*,?\s*(?:afterwards?|after\s+that|next|then|later|thereafter|after)\s*$", _F), THEN),
     (re.compile(r"\s*,?\s*(?:last|lastly|finally|at\s+the\s+end|in\s+the\s+end)\s*$", _F), FINALLY),
+    (
+        re.compile(
+            r"\s*,?\s*(?:in\s+(?:that|this|the\s+same|the\s+given|the\s+listed)\s+(?:order|sequence)|"
+            r"in\s+the\s+order\s+(?:given|listed|stated|named))(?:\s*,?\s*please)?\s*$",
+            _F,
+        ),
+        IN_ORDER,
+    ),
 ]
 # sentences that only say "no particular order" (no task, no constraint)
 NO_ORDER_SENTENCE = re.compile(

@@ -74,10 +74,10 @@ def canonical(pred: SlotPrediction) -> str | None:
     return f"put {obj} in {rec}"
 
 
-def _names_object(clause: str, pred: SlotPrediction) -> bool:
-    """The clause names (a lexicon phrase for) the predicted object, or misspells one of its words by a
-    letter ("laddle"): the model found, not invented, it."""
-    top = pred.slots.get("object") or []
+def _names_object(clause: str, pred: SlotPrediction, slot: str = "object") -> bool:
+    """The clause names (a lexicon phrase for) the predicted object (or `slot`), or misspells one of its
+    words by a letter ("laddle"): the model found, not invented, it."""
+    top = pred.slots.get(slot) or []
     if not top:
         return False
     named = {t for m in find_mentions(clause) for t in m.entry.types}
@@ -88,6 +88,22 @@ def _names_object(clause: str, pred: SlotPrediction) -> bool:
         len(w) >= 5 and difflib.get_close_matches(w, words, n=1, cutoff=0.85)
         for w in re.findall(r"[a-z]+", clause.lower())
     )
+
+
+def _names_place(clause: str, pred: SlotPrediction) -> bool:
+    """The clause names the predicted receptacle, or its verb implies it ("throw the apple away")."""
+    top = pred.slots.get("receptacle") or []
+    if not top:
+        return False
+    implied = {place for w in re.findall(r"[a-z]+", clause.lower()) for place in _verb_places(w)}
+    return top[0][0] in implied or _names_object(clause, pred, "receptacle")
+
+
+def _verb_places(word: str) -> set[str]:
+    from nl2hltl2plan.language.accounting import stems, verb_places
+
+    places = verb_places()
+    return {places[s] for s in stems(word) if s in places}
 
 
 @cache
@@ -109,6 +125,8 @@ def rewrite(
         pred = model.predict([clause], types)[0]
         if pred.kind[0][1] < min_kind or not _names_object(clause, pred):
             continue
+        if pred.top_kind != "examine_in_light" and not _names_place(clause, pred):
+            continue  # "gather the cell phones": where to is not said in the clause, not a guess
         sentence = canonical(pred)
         if sentence is None:
             continue

@@ -51,11 +51,14 @@ def features(words: list[str]) -> list[list[str]]:
     """The CRF's string features for each token (identical in training and inference)."""
     low = [w.lower() for w in words]
     n = len(low)
-    sent_start = []
+    sent_start, sent_tail = [], []
     start = 0
     for i, w in enumerate(low):
         sent_start.append(start)
-        if w in (".", "!", "?", ";"):
+        if w in (".", "!", "?", ";") or i == n - 1:
+            # the sentence's last words ("Then X and Y in any order."), for each of its tokens
+            end = "|".join(x for x in low[max(start, i - 3) : i + 1] if x not in (".", "!", "?", ";"))
+            sent_tail += [end] * (i + 1 - start)
             start = i + 1
     tail = "|".join(w for w in low[-4:] if w not in (".", "!"))
     out = []
@@ -63,7 +66,7 @@ def features(words: list[str]) -> list[list[str]]:
         s = sent_start[i]
         f = [
             "b", "w=" + w, "s3=" + w[-3:], "p=" + str(min(i - s, 4)), "end=" + tail,
-            "s0=" + low[s] if s < n else "s0=", "s01=" + "|".join(low[s : s + 2]),
+            "s0=" + low[s] if s < n else "s0=", "s01=" + "|".join(low[s : s + 2]), "send=" + sent_tail[i],
         ]
         for d in (-3, -2, -1, 1, 2, 3):
             j = i + d

@@ -1,0 +1,191 @@
+"""Why the language stage fails on the validation sets: every failure put in one class.
+
+    python scripts/language_failures.py [--sets faithful_unseen,heldout_unseen,...] [--n 400]
+        [--save-rows DIR] [--rows DIR] [--show CLASS] [--long]
+
+Sets with ground truth (never test50, never the excluded trials): `faithful_seen`, `faithful_unseen`,
+`trainstyle_unseen`, `heldout_unseen` (`learned.structure_validate.rows_of_set`), `plain` (issue 23's
+user-style set), `users` and `users_heldout` (tests/language/data/styles/). A composed set depends on
+the lexicon (its text-faithful labels), so `--save-rows DIR` keeps the rows and `--rows DIR` scores
+another version of the code on exactly those rows (before/after on the same instructions).
+
+Classes of a failure (the default offline backend, its reading after the top candidate of each
+ambiguous word, then check 1, `accounting.account`):
+- `accounting false refusal`: the reading matches the ground truth, only check 1 names a word;
+- `unread clause, reading right`: the reading matches, but the grammar left a clause unread;
+- `refused, reading wrong`: words are unread and the reading is wrong too (a right refusal);
+- `structure: task count` / `structure: order`: read completely, the number of tasks or the order is wrong;
+- `grounding: type`: kinds and counts right, a type is outside the accepted ones (lenient match passes);
+- `slot: kind/count/sliced/type`: any other wrong task;
+- `error`: refused with an error (a contradictory order, an impossible count).
+
+`--long`: the 177 long instructions of alfred_multiagent (no ground truth): the language stage in each
+floor plan's world, and why an instruction is not accepted (the world lacks an object, a task the world
+cannot do, unread words by category, an unread clause).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import re
+import sys
+from collections import Counter, defaultdict
+from pathlib import Path
+from typing import Any
+
+from nl2hltl2plan.errors import Nl2Hltl2PlanError
+from nl2hltl2plan.language.accounting import account
+from nl2hltl2plan.language.grounding import scene_types
+from nl2hltl2plan.language.learned.inference import parse_instruction
+from nl2hltl2plan.language.scoring import match
+from nl2hltl2plan.language.translate import apply_choices, top_candidates, translate
+from nl2hltl2plan.suites.alfred.structure_validation import rows_of_set
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from bench_multiagent_long import instructions  # noqa: E402
+from trust_sets import parse_line  # noqa: E402
+
+STYLES = Path(__file__).resolve().parent.parent / "tests" / "language" / "data" / "styles"
+FINDING = re.compile(r"^'(.+?)' \((\w+)\): (.*)$")  # one finding of check 1 (`accounting.Unread`)
+CLASSES = (
+    "ok",
+    "accounting false refusal",
+    "unread clause, reading right",
+    "refused, reading wrong",
+    "structure: task count",
+    "structure: order",
+    "grounding: type",
+    "slot: kind/count/sliced/type",
+    "error",
+)
+
+
+def rows(name: str, n: int) -> list[dict[str, Any]]:
+    if name.startswith("users"):
+        lines = [
+            ln for ln in (STYLES / f"{name}.txt").read_text().splitlines() if ln.strip() and ln[0] != "#"
+        ]
+        return [parse_line(ln, name, k) for k, ln in enumerate(lines, 1)]
+    return rows_of_set(name, n)
+
+
+def classify(row: dict[str, Any]) -> tuple[str, str]:
+    """(class, why) of one instruction with ground truth."""
+    try:
+        p = parse_instruction(row["instruction"], scene_types(row["scene"]), row["scene"], strict=False)
+        apply_choices(p, top_candidates(p.ambiguities))
+        found = [str(u) for u in account(row["instruction"], p.tasks, p.before)]
+    except Nl2Hltl2PlanError as exc:
+        return "error", str(exc)
+    unread = list(p.unparsed) + found
+    verdict = match(p.tasks, p.before, row["tasks"], row["before"], strict=True)
+    if verdict.order_ok:
+        if not unread:
+            return "ok", ""
+        only_check1 = all(FINDING.match(u) for u in unread)
+        return ("accounting false refusal" if only_check1 else "unread clause, reading right"), "; ".join(
+            unread
+        )
+    why = "; ".join(verdict.reasons)
+    if unread:
+        return "refused, reading wrong", "; ".join(unread) + " || " + why
+    if len(p.tasks) != len(row["tasks"]):
+        return "structure: task count", why
+    if verdict.tasks_ok:
+        return "structure: order", why
+    if match(p.tasks, p.before, row["tasks"], row["before"], strict=False).order_ok:
+        return "grounding: type", why
+    return "slot: kind/count/sliced/type", why
+
+
+def report_set(name: str, data: list[dict[str, Any]], show: str | None) -> None:
+    per: dict[Any, Counter[str]] = defaultdict(Counter)
+    for row in data:
+        cls, why = classify(row)
+        for key in (row["n_base"], "all"):
+            per[key][cls] += 1
+        if show and cls == show:
+            print(f"  {row['instruction']!r}: {why[:300]}", file=sys.stderr)
+    keys = sorted(k for k in per if k != "all") + ["all"]
+    print(f"\n{name} ({len(data)} instructions): outcome per number of base tasks")
+    print("| class | " + " | ".join(str(k) for k in keys) + " |")
+    print("| --- |" + " --- |" * len(keys))
+    for cls in CLASSES:
+        if per["all"][cls]:
+            print(f"| {cls} | " + " | ".join(str(per[k][cls]) for k in keys) + " |")
+    print("| converted | " + " | ".join(f"{per[k]['ok']}/{sum(per[k].values())}" for k in keys) + " |")
+
+
+def long_reason(text: str, world: Any) -> list[str]:
+    """Why the language stage does not accept one long instruction (empty: accepted)."""
+    try:
+        r = translate(text, world, "offline", ask=top_candidates, build=False, actions="none")
+    except Nl2Hltl2PlanError as exc:
+        msg = str(exc)
+        if re.match(r"no \w+ in FloorPlan", msg):
+            return ["world: names an object the world lacks"]
+        if "cannot be done" in msg:
+            return ["world: a task the world cannot do"]
+        if "contradictory" in msg:
+            return ["a contradictory order"]
+        return ["refused: " + msg[:40]]
+    out = []
+    for u in r.unparsed:
+        m = FINDING.match(u)
+        out.append(f"check 1: {m.group(2)} word" if m else "grammar: an unread clause")
+    return sorted(set(out))
+
+
+def report_long() -> None:
+    from nl2hltl2plan.worlds import load_world
+
+    worlds: dict[str, Any] = {}
+    first: Counter[str] = Counter()
+    anywhere: Counter[str] = Counter()
+    accepted = total = 0
+    for n_base in range(5, 10):
+        for key, text, _ in instructions(n_base):
+            scene = key.split(".")[0]
+            world = worlds.setdefault(scene, load_world(scene))
+            reasons = long_reason(text, world)
+            total += 1
+            accepted += not reasons
+            if reasons:
+                first[
+                    reasons[0] if reasons[0].startswith(("world", "a contra", "refused")) else "unread words"
+                ] += 1
+            anywhere.update(reasons)
+    print(f"\nalfred_multiagent long instructions: language stage accepts {accepted} of {total}")
+    print("| not accepted because | instructions |\n| --- | --- |")
+    for k, v in first.most_common():
+        print(f"| {k} | {v} |")
+    print("\n| unread words, by kind (an instruction may have several) | instructions |\n| --- | --- |")
+    for k, v in anywhere.most_common():
+        if k.startswith(("check 1", "grammar")):
+            print(f"| {k} | {v} |")
+
+
+def main() -> int:
+    ap = argparse.ArgumentParser(prog="python scripts/language_failures.py")
+    ap.add_argument("--sets", default="plain,users,faithful_unseen,trainstyle_unseen,heldout_unseen")
+    ap.add_argument("--n", type=int, default=400)
+    ap.add_argument("--save-rows", type=Path, default=None, help="write each set's rows to DIR/<set>.json")
+    ap.add_argument("--rows", type=Path, default=None, help="read the rows saved in DIR instead")
+    ap.add_argument("--show", default=None, help="print the instructions of this class on stderr")
+    ap.add_argument("--long", action="store_true", help="also the alfred_multiagent long instructions")
+    args = ap.parse_args()
+    for name in [s for s in args.sets.split(",") if s]:
+        saved = args.rows / f"{name}.json" if args.rows else None
+        data = json.loads(saved.read_text()) if saved and saved.exists() else rows(name, args.n)
+        if args.save_rows:
+            args.save_rows.mkdir(parents=True, exist_ok=True)
+            (args.save_rows / f"{name}.json").write_text(json.dumps(data))
+        report_set(name, data, args.show)
+    if args.long:
+        report_long()
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
