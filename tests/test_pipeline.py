@@ -139,12 +139,13 @@ def test_run_asks_once_applies_and_records_the_picks(monkeypatch: pytest.MonkeyP
 
 def test_the_learned_parser_cross_checks_an_llm_reading(world) -> None:
     """An LLM's tasks that differ from the learned parser's reading are reported, not silently used."""
-    from nl2hltl2plan.language.translate import _cross_check, translate
+    from nl2hltl2plan.language.llm_reading import cross_check
+    from nl2hltl2plan.language.translate import translate
 
     res = translate(ORDERED, world, "offline", build=False)
-    assert _cross_check(res, world.object_types(), world.name).warnings == []  # the same reading
+    assert cross_check(res, world.object_types(), world.name).warnings == []  # the same reading
     mugs = res.tasks[0].model_copy(update={"object": ["Mug"]})  # an LLM that moved mugs, not saucers
     moved = res.model_copy(update={"tasks": [mugs, *res.tasks[1:]]})
-    warned = _cross_check(moved, world.object_types(), world.name)
+    warned = cross_check(moved, world.object_types(), world.name)
     assert any("reads this instruction differently" in w for w in warned.warnings)
     assert moved.warnings == []  # a new result; the one given is unchanged

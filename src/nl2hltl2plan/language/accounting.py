@@ -1,12 +1,13 @@
 """Word accounting: every content word of an instruction is used by the parse or named as not understood.
 
 `account(instruction, tasks, before, instances, scene)` judges the result of any backend (grammar,
-learned, LLM) from the outside: it reads the instruction's content words (nouns naming objects and places from
-`lexicon.txt`, verbs, counts, negations and order words from `content_words.txt`) and renders the base
-tasks back to the types, kinds, counts and orderings they use. It returns one `Unread` per content word
-the base tasks do not use, and per slot of a base task that no word of the instruction names (an
-invented object or place). Counts the scene cannot satisfy (zero, or more than it holds) and cyclic
-orders are input errors (`HTTError`), whatever the backend made of them.
+learned, LLM) from the outside: it reads the instruction's content words (nouns naming objects and
+places from `lexicon.txt`; verbs, counts, negations and order words from `content_words.txt`, read by
+`content_words`) and renders the base tasks back to the types, kinds, counts and orderings they use
+(`parse_usage`). It returns one `Unread` per content word the base tasks do not use, and per slot of a
+base task that no word of the instruction names (an invented object or place). Counts the scene cannot
+satisfy (zero, or more than it holds) and cyclic orders are input errors (`HTTError`), whatever the
+backend made of them.
 
 >>> from nl2hltl2plan.language.task_specs import BaseTaskSpec
 >>> cup = BaseTaskSpec(kind="heat_place", object=["Cup"], receptacle=["Microwave"])
@@ -19,14 +20,18 @@ from __future__ import annotations
 import difflib
 import re
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
-from functools import lru_cache
-from importlib import resources
 
 import networkx as nx
 
-from nl2hltl2plan.domain.task_kinds import APPLIANCE, slots_of
 from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.language.content_words import (
+    DETERMINERS,
+    LOCATIVE,
+    Unread,
+    categories,
+    stems,
+    verb_places,
+)
 from nl2hltl2plan.language.grounding import (
     SLICEABLE,
     Mention,
@@ -36,88 +41,16 @@ from nl2hltl2plan.language.grounding import (
     lookup,
     tokens,
 )
+from nl2hltl2plan.language.negations import unforbidden_verb
+from nl2hltl2plan.language.parse_usage import IMPLIED_TYPES, ParseUsage
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, ConstraintSpec
-from nl2hltl2plan.logic.atom import Atom
-from nl2hltl2plan.worlds.world import KNIFE_TYPES
 
-# the appliances a kind of task implies, beyond the destination ("heat it on the stove")
-IMPLIED_TYPES = {
-    "clean_place": {APPLIANCE["clean_place"], "Faucet", "BathtubBasin", "Sink"},
-    "heat_place": {APPLIANCE["heat_place"], "StoveBurner", "Toaster", "CoffeeMachine"},
-    "cool_place": {APPLIANCE["cool_place"]},
-}
-LAMPS = frozenset({"DeskLamp", "FloorLamp"})
 OPENED_FOR_ITSELF = frozenset({"Book", "Laptop", "Blinds"})  # opened to be open, not to reach inside
 NAVIGATION = frozenset({"go", "walk", "head", "come", "run", "move", "turn"})  # "move to the sink", no object
-DETERMINERS = {"the", "a", "an", "that", "this", "those", "these", "its", "their", "my", "your", "of"}
-# a place named after an object and one of these describes where the object is ("the apple on the table")
-LOCATIVE = frozenset(
-    "on in at inside near beside by behind under next from off below above beneath underneath across "
-    "against between around along with of".split()
-)
-
-
-# a verb inside a negated clause -> what its constraint must forbid (an action, or a change of state)
-CONSTRAINT_VERBS = {
-    "verb_break": "break",
-    "verb_sliced": "slice",
-    "verb_heat_place": "heat",
-    "verb_cool_place": "cool",
-    "verb_clean_place": "clean",
-}
 NO_CONSTRAINT = (
     "a negated request that no constraint of the spec carries (only actions on things of the world, and "
     "their heating, cooling or cleaning, can be forbidden)"
 )
-
-
-@dataclass(frozen=True)
-class Unread:
-    """A content word the parse does not use, or a slot of a base task that no word names."""
-
-    words: str
-    category: str  # object / place / action / count / negation / order / invented
-    reason: str
-
-    def __str__(self) -> str:
-        return f"{self.words!r} ({self.category}): {self.reason}"
-
-
-@lru_cache(maxsize=1)
-def vocabulary() -> dict[str, frozenset[str]]:
-    """category -> words, from `content_words.txt`."""
-    out: dict[str, frozenset[str]] = {}
-    text = resources.files("nl2hltl2plan.language").joinpath("content_words.txt").read_text()
-    for raw in text.splitlines():
-        line = raw.split("#", 1)[0].strip()
-        if line:
-            name, _, words = line.partition(":")
-            out[name.strip()] = frozenset(words.split())
-    return out
-
-
-@lru_cache(maxsize=1)
-def verb_places() -> dict[str, str]:
-    """verb -> the place it names ("throw" -> GarbageCan), from `implied_by_verb` in content_words.txt."""
-    return dict(w.split(":", 1) for w in vocabulary()["implied_by_verb"])
-
-
-def stems(word: str) -> set[str]:
-    """The word and its possible stems (heated -> heat, chopped -> chop, slices -> slice)."""
-    out = {word}
-    for suffix in ("s", "es", "ed", "d", "ing"):
-        if word.endswith(suffix) and len(word) > len(suffix) + 2:
-            base = word[: -len(suffix)]
-            out |= {base, base + "e"}
-            if len(base) > 2 and base[-1] == base[-2]:
-                out.add(base[:-1])
-    return out
-
-
-def categories(word: str) -> set[str]:
-    """The content-word categories of one token ({} for a function word)."""
-    forms = stems(word)
-    return {name for name, words in vocabulary().items() if forms & words and name != "implied_by_verb"}
 
 
 def _count_value(cats: set[str], word: str) -> int | None:
@@ -127,72 +60,6 @@ def _count_value(cats: set[str], word: str) -> int | None:
         if c.startswith("count_"):
             return int(c.removeprefix("count_"))
     return None
-
-
-@dataclass
-class _Parse:
-    """The base tasks rendered back to what they use."""
-
-    tasks: Sequence[BaseTaskSpec]
-    before: Sequence[tuple[str, str]]
-    constraints: Sequence[ConstraintSpec] = ()
-    spans: Sequence[tuple[int, int, ConstraintSpec]] = ()  # where each constraint's words are
-
-    @property
-    def kinds(self) -> set[str]:
-        """The kinds of task, a toast counting as heating (in the toaster)."""
-        return {t.kind for t in self.tasks} | {"heat_place" for t in self.tasks if t.state == "toasted"}
-
-    @property
-    def sliced(self) -> bool:
-        return any(t.sliced or t.state == "sliced" for t in self.tasks)
-
-    @property
-    def states(self) -> set[str]:
-        return {str(t.state) for t in self.tasks if t.kind == "set_state"}
-
-    @property
-    def light_states(self) -> set[str]:
-        """The states set_state tasks switch a room's light switch or a lamp into."""
-        lights = LAMPS | {"LightSwitch"}
-        on = {"on"} if "examine_in_light" in self.kinds else set()  # its lamp is switched on
-        return on | {str(t.state) for t in self.tasks if t.kind == "set_state" and set(t.object) & lights}
-
-    def slots(self) -> list[tuple[str, str, frozenset[str]]]:
-        """(task id, role, types) for every filled slot."""
-        out = []
-        for t in self.tasks:
-            for role in slots_of(t.kind):
-                types = set(getattr(t, role) or [])
-                if "LightSwitch" in types:
-                    types |= LAMPS  # "the light(s)" of a room is its light switch
-                if types:
-                    out.append((t.id, role, frozenset(types)))
-        for k, c in enumerate(self.constraints, 1):  # a negation's things: one slot per type it forbids on
-            named = {a for p in c.forbid for a in (Atom.read_pattern(p) or Atom("", ())).args if a != "*"}
-            out += [(f"constraint {k}", "constraint", frozenset({t})) for t in sorted(named)]
-        return out
-
-    def constraint_at(self, char: int) -> ConstraintSpec | None:
-        """The constraint whose words hold character `char` of the instruction."""
-        return next((c for a, b, c in self.spans if a <= char < b), None)
-
-    def implied(self) -> set[str]:
-        out: set[str] = set()
-        for k in self.kinds:
-            out |= IMPLIED_TYPES.get(k, set())
-        if self.sliced:
-            out |= set(KNIFE_TYPES)
-        return out
-
-    def implied_words(self) -> set[str]:
-        v = vocabulary()
-        out: set[str] = set()
-        for k in self.kinds:
-            out |= v.get(f"implied_{k}", frozenset())
-        if self.sliced:
-            out |= v["implied_sliced"]
-        return out
 
 
 def account(
@@ -213,7 +80,7 @@ def account(
     HTTError for a count of zero, a count above what the scene holds, and a cyclic order in the text."""
     lowered = instruction.lower()
     spans = [(at, at + len(c.text), c) for c in constraints if (at := lowered.find(c.text.lower())) >= 0]
-    parse = _Parse(tasks, before, constraints, spans)
+    parse = ParseUsage(tasks, before, constraints, spans)
     toks = tokens(instruction)
     mentions = [
         m
@@ -254,7 +121,7 @@ def _phrases(mentions: list[Mention], toks: list[tuple[str, int, int]]) -> list[
 
 
 def _nouns(
-    instruction: str, mentions: list[Mention], toks: list[tuple[str, int, int]], parse: _Parse
+    instruction: str, mentions: list[Mention], toks: list[tuple[str, int, int]], parse: ParseUsage
 ) -> list[Unread]:
     """Object and place nouns: each named thing needs a slot of its own (or is implied / a location)."""
     implied, implied_words = parse.implied(), parse.implied_words()
@@ -330,7 +197,7 @@ def _clause_span(text: str, at: int) -> tuple[int, int]:
     return start, min(b for b in bounds if b > at)
 
 
-def _invented(mentions: list[Mention], toks: list[tuple[str, int, int]], parse: _Parse) -> list[Unread]:
+def _invented(mentions: list[Mention], toks: list[tuple[str, int, int]], parse: ParseUsage) -> list[Unread]:
     """Slots of base tasks that no word of the instruction names (a guess, not a reading)."""
     places = verb_places()
     named = {places[f] for w, _, _ in toks for f in stems(w) if f in places}
@@ -352,7 +219,9 @@ def _invented(mentions: list[Mention], toks: list[tuple[str, int, int]], parse: 
     return out
 
 
-def _invented_kinds(toks: list[tuple[str, int, int]], mentions: list[Mention], parse: _Parse) -> list[Unread]:
+def _invented_kinds(
+    toks: list[tuple[str, int, int]], mentions: list[Mention], parse: ParseUsage
+) -> list[Unread]:
     """A heat / cool / clean task or a slice needs a word for it: a verb or state word ("chilled"), or
     its appliance named as a stop ("put the apple in the microwave, then on the counter")."""
     cats: set[str] = set()
@@ -393,7 +262,7 @@ def _words(
     toks: list[tuple[str, int, int]],
     in_mention: set[int],
     mentions: list[Mention],
-    parse: _Parse,
+    parse: ParseUsage,
     instances: Mapping[str, int] | None,
     scene: str,
 ) -> list[Unread]:
@@ -410,7 +279,7 @@ def _words(
         if guard is None:
             unread = _verb(w, cats, words, i, parse)
         else:
-            unread = _constraint_verb(w, cats, words, i, guard)
+            unread = unforbidden_verb(w, cats, words, i, guard)
         if unread is None and not _locative_word(instruction, i, toks, mentions):
             unread = _noun(w, cats)
         if (
@@ -448,13 +317,13 @@ def _free_order(instruction: str, tok: tuple[str, int, int]) -> bool:
     return re.search(r"\b(order|sequence)\b", instruction[start:end].lower()) is not None
 
 
-def _until_guard(instruction: str, tok: tuple[str, int, int], parse: _Parse) -> bool:
+def _until_guard(instruction: str, tok: tuple[str, int, int], parse: ParseUsage) -> bool:
     """ "Do not X until Y" is the ordering Y before X, which the parse has as a `before` pair."""
     rest = re.split(r"[.;!?]", instruction[tok[2] :], maxsplit=1)[0].lower()
     return bool(parse.before) and re.search(r"\b(until|unless|before)\b", rest) is not None
 
 
-def _verb(w: str, cats: set[str], words: list[str], i: int, parse: _Parse) -> Unread | None:
+def _verb(w: str, cats: set[str], words: list[str], i: int, parse: ParseUsage) -> Unread | None:
     if "verb_switch" in cats:
         after = words[i + 1 : i + 5]
         if "off" in after and "off" not in parse.states:
@@ -491,24 +360,7 @@ def _verb(w: str, cats: set[str], words: list[str], i: int, parse: _Parse) -> Un
     return None
 
 
-def _constraint_verb(w: str, cats: set[str], words: list[str], i: int, c: ConstraintSpec) -> Unread | None:
-    """A verb inside a negated clause: the constraint must forbid its action."""
-    verbs = {a.verb for p in c.forbid if (a := Atom.read_pattern(p)) is not None}
-    after = words[i + 1 : i + 5]
-    if "verb_switch" in cats and ("on" in after or "off" in after):
-        need = "toggle_on" if "on" in after else "toggle_off"
-        if need in verbs:
-            return None
-        return Unread(w, "action", f"the constraint {c.text!r} does not forbid {need}")
-    for cat, verb in CONSTRAINT_VERBS.items():
-        if cat in cats and verb not in verbs:
-            return Unread(w, "action", f"the constraint {c.text!r} does not forbid {verb}")
-    if "verb_examine_in_light" in cats or "verb_unsupported" in cats:
-        return Unread(w, "action", "a constraint forbids actions and changes of state, not this skill")
-    return None
-
-
-def _opened_thing(after: list[str], parse: _Parse) -> str | None:
+def _opened_thing(after: list[str], parse: ParseUsage) -> str | None:
     """The object an "open" / "close" names when it is opened for its own sake (a book, a laptop, the
     blinds: never a container on the way) and no task opens or closes it."""
     rest = " ".join(after[1:] if after and after[0] in DETERMINERS else after)
@@ -542,7 +394,7 @@ def _count(
     tok: tuple[str, int, int],
     cats: set[str],
     mentions: list[Mention],
-    parse: _Parse,
+    parse: ParseUsage,
     instances: Mapping[str, int] | None,
     scene: str,
 ) -> Unread | None:
@@ -579,7 +431,7 @@ def _count(
     return Unread(phrase, "count", f"the base tasks take {got}, not {n}")
 
 
-def _orders(toks: list[tuple[str, int, int]], in_mention: set[int], parse: _Parse) -> list[Unread]:
+def _orders(toks: list[tuple[str, int, int]], in_mention: set[int], parse: ParseUsage) -> list[Unread]:
     """Order words: with several base tasks and no word that frees the order, a sequence word needs an
     ordering between them."""
     cats = [categories(w) for i, (w, _, _) in enumerate(toks) if i not in in_mention]
@@ -598,7 +450,7 @@ def _orders(toks: list[tuple[str, int, int]], in_mention: set[int], parse: _Pars
 
 
 def _check_cycles(
-    instruction: str, toks: list[tuple[str, int, int]], mentions: list[Mention], parse: _Parse
+    instruction: str, toks: list[tuple[str, int, int]], mentions: list[Mention], parse: ParseUsage
 ) -> None:
     """'X ... before the Y' / 'X ... after the Y' between object nouns of one sentence: a cycle is an
     input error."""

@@ -29,10 +29,11 @@ import re
 from collections.abc import Sequence
 from dataclasses import dataclass
 
-from nl2hltl2plan.language.accounting import stems
+from nl2hltl2plan.language.content_words import Unread, stems
 from nl2hltl2plan.language.grounding import AffordanceLookup, Grounder, Mention, find_mentions, tokens
 from nl2hltl2plan.language.spec_builder import spec_name
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, ConstraintSpec
+from nl2hltl2plan.logic.atom import Atom
 from nl2hltl2plan.logic.constraints import Constraint
 
 CUES = {
@@ -54,7 +55,7 @@ FILLER = {"do", "to", "ever", "you", "please", "be", "at", "all", "go", "the", "
 UNTIL = {"until", "till", "before", "unless"}
 LISTED = {"the", "a", "an", "some", "my", "your", "its", "their", "two", "both", "all"}  # "and the mugs"
 PREPS = {"in", "into", "on", "onto", "inside", "to", "under", "at", "near", "by", "beside"}
-# a verb of the clause (any inflection: `accounting.stems`) -> the action it forbids ("any": every
+# a verb of the clause (any inflection: `content_words.stems`) -> the action it forbids ("any": every
 # action on the thing)
 VERBS = {
     **dict.fromkeys("put place set leave drop store stick throw toss insert load hang stack".split(), "put"),
@@ -302,3 +303,38 @@ def spec_constraints(constraints: Sequence[ConstraintSpec], task_node: dict[str,
         Constraint(c.text, tuple(c.forbid), spec_name(task_node[c.until]) if c.until else None)
         for c in constraints
     ]
+
+
+# a verb inside a negated clause -> what its constraint must forbid (an action, or a change of state)
+CONSTRAINT_VERBS = {
+    "verb_break": "break",
+    "verb_sliced": "slice",
+    "verb_heat_place": "heat",
+    "verb_cool_place": "cool",
+    "verb_clean_place": "clean",
+}
+
+
+def unforbidden_verb(w: str, cats: set[str], words: list[str], i: int, c: ConstraintSpec) -> Unread | None:
+    """A verb inside a negated clause that its constraint does not forbid (check 1 of `accounting`):
+    "never turn on the microwave" needs toggle_on among the forbidden actions, "do not heat the cup" heat."""
+    verbs = {a.verb for p in c.forbid if (a := Atom.read_pattern(p)) is not None}
+    after = words[i + 1 : i + 5]
+    if "verb_switch" in cats and ("on" in after or "off" in after):
+        need = "toggle_on" if "on" in after else "toggle_off"
+        if need in verbs:
+            return None
+        return Unread(w, "action", f"the constraint {c.text!r} does not forbid {need}")
+    for cat, verb in CONSTRAINT_VERBS.items():
+        if cat in cats and verb not in verbs:
+            return Unread(w, "action", f"the constraint {c.text!r} does not forbid {verb}")
+    if "verb_examine_in_light" in cats or "verb_unsupported" in cats:
+        return Unread(w, "action", "a constraint forbids actions and changes of state, not this skill")
+    return None
+
+
+def nothing_to_do(instruction: str, constraints: list[ConstraintSpec]) -> str:
+    """The refusal of an instruction that only says what not to do (there is no task to plan)."""
+    said = "; ".join(c.describe() for c in constraints)
+    return (f"nothing to do: {instruction!r} only says what not to do ({said}); state a task too, "
+            "e.g. 'put the mug in the sink, but never open the fridge'")

@@ -31,7 +31,8 @@ from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 
 from nl2hltl2plan.errors import HTTError, WorldError
-from nl2hltl2plan.language.accounting import LOCATIVE, account, categories, stems, verb_places
+from nl2hltl2plan.language.accounting import account
+from nl2hltl2plan.language.content_words import LOCATIVE, categories, stems, verb_places
 from nl2hltl2plan.language.grounding import Grounder, find_mentions, tokens
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
 

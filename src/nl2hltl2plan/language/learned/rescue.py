@@ -100,7 +100,7 @@ def _names_place(clause: str, pred: SlotPrediction) -> bool:
 
 
 def _verb_places(word: str) -> set[str]:
-    from nl2hltl2plan.language.accounting import stems, verb_places
+    from nl2hltl2plan.language.content_words import stems, verb_places
 
     places = verb_places()
     return {places[s] for s in stems(word) if s in places}

@@ -1,0 +1,74 @@
+"""The content words of an instruction: the vocabulary the word-accounting check (`accounting`) and the
+readers share.
+
+`categories(word)` gives the categories of one token from `content_words.txt` (verbs by the task they
+name, counts, negations, order words, the places a verb implies), `stems(word)` the forms it may have
+come from, and `Unread` is one word (or invented slot) the parse does not use, with its reason.
+
+>>> sorted(c for c in categories("heated") if c.startswith("verb_"))
+['verb_heat_place']
+>>> stems("chopped") >= {"chop"}
+True
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+from importlib import resources
+
+DETERMINERS = {"the", "a", "an", "that", "this", "those", "these", "its", "their", "my", "your", "of"}
+# a place named after an object and one of these describes where the object is ("the apple on the table")
+LOCATIVE = frozenset(
+    "on in at inside near beside by behind under next from off below above beneath underneath across "
+    "against between around along with of".split()
+)
+
+
+@dataclass(frozen=True)
+class Unread:
+    """A content word the parse does not use, or a slot of a base task that no word names."""
+
+    words: str
+    category: str  # object / place / action / count / negation / order / invented
+    reason: str
+
+    def __str__(self) -> str:
+        return f"{self.words!r} ({self.category}): {self.reason}"
+
+
+@lru_cache(maxsize=1)
+def vocabulary() -> dict[str, frozenset[str]]:
+    """category -> words, from `content_words.txt`."""
+    out: dict[str, frozenset[str]] = {}
+    text = resources.files("nl2hltl2plan.language").joinpath("content_words.txt").read_text()
+    for raw in text.splitlines():
+        line = raw.split("#", 1)[0].strip()
+        if line:
+            name, _, words = line.partition(":")
+            out[name.strip()] = frozenset(words.split())
+    return out
+
+
+@lru_cache(maxsize=1)
+def verb_places() -> dict[str, str]:
+    """verb -> the place it names ("throw" -> GarbageCan), from `implied_by_verb` in content_words.txt."""
+    return dict(w.split(":", 1) for w in vocabulary()["implied_by_verb"])
+
+
+def stems(word: str) -> set[str]:
+    """The word and its possible stems (heated -> heat, chopped -> chop, slices -> slice)."""
+    out = {word}
+    for suffix in ("s", "es", "ed", "d", "ing"):
+        if word.endswith(suffix) and len(word) > len(suffix) + 2:
+            base = word[: -len(suffix)]
+            out |= {base, base + "e"}
+            if len(base) > 2 and base[-1] == base[-2]:
+                out.add(base[:-1])
+    return out
+
+
+def categories(word: str) -> set[str]:
+    """The content-word categories of one token ({} for a function word)."""
+    forms = stems(word)
+    return {name for name, words in vocabulary().items() if forms & words and name != "implied_by_verb"}
