@@ -90,7 +90,7 @@ def main() -> int:
             for objective in ("min", "minmax"):
                 r = plan(world, spec, starts, objective=objective, timeout_s=args.timeout)
                 ok = r.solved and check(r.execution, gt).success
-                used = len({e["robot"] for e in r.events})
+                used = len({e.robot for e in r.events})
                 row = {"instance": gt.id, "tasks": k, "leaves": len(spec.leaves), "actions": actions,
                        "objective": objective, "status": r.status, "time_s": round(r.plan_time_s, 3),
                        "travel_m": r.travel_m, "steps": r.steps, "robots_used": used,

@@ -12,6 +12,14 @@ import json
 import resource
 import sys
 import time
+from typing import Any
+
+
+def _robot_and_atom(event: Any) -> list[Any]:
+    """[robot, atom] of a planner event: a typed `PlanEvent` today, a dict in 8daad2e."""
+    if isinstance(event, dict):
+        return [event["robot"], event["atom"]]
+    return [event.robot, event.atom]
 
 
 def run(job: dict) -> dict:
@@ -30,7 +38,7 @@ def run(job: dict) -> dict:
     wall, cpu = time.perf_counter() - wall, time.process_time() - cpu
     return {"status": str(r.status), "total_cost": r.total_cost, "bound": r.bound,
             "proven_optimal": bool(r.proven_optimal), "wall_s": wall, "cpu_s": cpu,
-            "events": [[e["robot"], e["atom"]] for e in r.events],
+            "events": [_robot_and_atom(e) for e in r.events],
             "max_rss_mb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024}
 
 

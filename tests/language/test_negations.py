@@ -96,12 +96,12 @@ def test_a_constraint_is_a_safety_formula_beside_the_sc_ltl_nodes():
 def test_the_planner_avoids_what_a_constraint_forbids_and_the_checker_rejects_a_violation():
     world = demo_world()
     free = run("put a utensil in the sink", world)
-    took = [e["atom"] for e in free.result.events if e["atom"].startswith("pickup")]
+    took = [e.atom for e in free.result.events if e.atom.startswith("pickup")]
     banned = took[0].removeprefix("pickup(").removesuffix(")")  # the utensil it chose
     words = {"ButterKnife": "butter knife", "Fork": "fork", "Spoon": "spoon", "Knife": "knife"}[banned]
     kept = run(f"put a utensil in the sink but do not touch the {words}", world)
     assert kept.ok and kept.spec.constraints and kept.result.total_cost >= free.result.total_cost
-    assert not any(banned in e["atom"] for e in kept.result.events)
+    assert not any(banned in e.atom for e in kept.result.events)
     # the unconstrained plan, checked against the constrained spec: rejected, naming the constraint
     verdict = validate(world, kept.spec, free.result.plan)
     assert not verdict.ok and "breaks the constraint" in verdict.reasons[0]
@@ -139,12 +139,12 @@ def test_a_constraint_can_make_the_plan_costlier():
     world = load_world("FloorPlan1")  # one apple lies in the microwave, the other on the counter
     free = run("put an apple in the sink", world)
     kept = run("put an apple in the sink without using the microwave", world)
-    assert "open(Microwave)" in [e["atom"] for e in free.result.events]
+    assert "open(Microwave)" in [e.atom for e in free.result.events]
     assert kept.ok and kept.result.total_cost > free.result.total_cost
     assert not validate(world, kept.spec, free.result.plan).ok
     guard = run("put the apple in the fridge and put the mug in the sink. Do not open the fridge before "
                 "the mug is in the sink.", world)  # fmt: skip
-    events = [e["atom"] for e in guard.result.events]
+    events = [e.atom for e in guard.result.events]
     assert guard.ok and events.index("open(Fridge)") > events.index("put(Mug,SinkBasin)")
 
 

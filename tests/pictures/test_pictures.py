@@ -184,14 +184,14 @@ def test_bench_plots_integer_axes_plurals_and_bars_inside_data(tmp_path):
 
 
 def test_gantt_from_benchmark_events_and_report_example(tmp_path):
+    from nl2hltl2plan.domain.plan_events import PlanEvent
     from nl2hltl2plan.present.gantt import draw_gantt_events, segments_from_events
     from nl2hltl2plan.suites.alfred.alfred_report import plot_gantt_example
-    from nl2hltl2plan.suites.rows import PlanEvent
 
     events = [
-        {"t": 4, "robot": 0, "atom": "pickup(Apple)", "task": "task1.1", "travel_m": 0.5},
-        {"t": 5, "robot": 0, "atom": "put(Apple,Fridge)", "task": "task1.1", "travel_m": 0.0},
-        {"t": 3, "robot": 1, "atom": "open(Fridge)", "task": "task1.2", "travel_m": 0.75},
+        PlanEvent(t=4, robot=0, atom="pickup(Apple)", task="task1.1", travel_m=0.5),
+        PlanEvent(t=5, robot=0, atom="put(Apple,Fridge)", task="task1.1", travel_m=0.0),
+        PlanEvent(t=3, robot=1, atom="open(Fridge)", task="task1.2", travel_m=0.75),
     ]
     segs = segments_from_events(events, robots=3)
     assert [(s.robot, s.kind, s.start, s.end) for s in segs] == [
@@ -204,10 +204,10 @@ def test_gantt_from_benchmark_events_and_report_example(tmp_path):
     ]
     draw_gantt_events(events, 3, tmp_path / "ev.png", before=[("task1.2", "task1.1")])
     rows = [
-        _row(2, 3, 0, 1.25, 5).model_copy(update={"events": [PlanEvent(**e) for e in events]}),
-        _row(2, 3, 1, 1.0, 5).model_copy(update={"events": [PlanEvent(**events[0])]}),
+        _row(2, 3, 0, 1.25, 5).model_copy(update={"events": events}),
+        _row(2, 3, 1, 1.0, 5).model_copy(update={"events": events[:1]}),
         _row(2, 3, 2, 1.0, 5, success=False).model_copy(
-            update={"events": [PlanEvent(**e) for e in events * 2]}
+            update={"events": events * 2}
         ),
     ]
     assert plot_gantt_example(rows, tmp_path / "example.png") is rows[0]  # most robots at work

@@ -89,10 +89,10 @@ def _events_of(x: Expander, r) -> list[Event]:
     ids = {oid: i for i, oid in enumerate(x.world.ids)}
     out = []
     for e in r.events:
-        leaf = x.p.leaf_index[e["task"]]
-        k = next(i for i, a in enumerate(x.p.leaves[leaf].atoms) if a.text == e["atom"])
-        objs = tuple(ids[o] for o in e["objects"])
-        out.append(Event(e["robot"], leaf, e["atom"], e["atom"].split("(")[0], objs, -1, 0, 0, k, objs[-1]))
+        leaf = x.p.leaf_index[e.task]
+        k = next(i for i, a in enumerate(x.p.leaves[leaf].atoms) if a.text == e.atom)
+        objs = tuple(ids[o] for o in e.objects)
+        out.append(Event(e.robot, leaf, e.atom, e.atom.split("(")[0], objs, -1, 0, 0, k, objs[-1]))
     return out
 
 
@@ -115,7 +115,7 @@ def test_an_apple_in_a_closed_fridge_needs_an_open():
     bound = _root_bound(world, inst, [(0, 0)])
     r = plan(world, oracle_spec(inst, world).spec, [(0, 0)], mode="exact")
     assert r.total_cost == 27 and bound == 27
-    assert [e["atom"] for e in r.events] == ["open(Fridge)", "pickup(Apple)", "put(Apple,CounterTop)"]
+    assert [e.atom for e in r.events] == ["open(Fridge)", "pickup(Apple)", "put(Apple,CounterTop)"]
 
 
 def test_carries_take_one_instance_per_type():
@@ -168,7 +168,7 @@ def test_a_put_into_any_of_two_closed_fridges_needs_an_open():
     bound = _root_bound(world, inst, [(0, 20)])
     r = plan(world, oracle_spec(inst, world).spec, [(0, 20)], mode="exact")
     assert r.total_cost == 15 and bound == 15
-    assert [e["atom"] for e in r.events] == ["pickup(Apple)", "open(Fridge)", "put(Apple,Fridge)"]
+    assert [e.atom for e in r.events] == ["pickup(Apple)", "open(Fridge)", "put(Apple,Fridge)"]
 
 
 def test_least_over_bindings_is_the_least_complete_choice_or_below():

@@ -26,7 +26,8 @@ out = []
 for objective in sys.argv[2:]:
     r = plan(world, oracle_spec(gt, world).spec, [(0, 0), (9, 13), (0, 13)], objective=objective,
              timeout_s=10**6)
-    out.append({"status": r.status, "cost": r.cost, "bound": r.bound, "events": r.events})
+    out.append({"status": r.status, "cost": r.cost, "bound": r.bound,
+                "events": [e.model_dump() for e in r.events]})
 print(json.dumps(out))
 """
 

@@ -37,7 +37,7 @@ def test_one_robot_two_ordered_tasks(mode):
         assert r.total_cost == 44
         assert r.steps == 44
         assert r.travel_m == 40 * 0.25
-        atoms = [e["atom"] for e in r.events]
+        atoms = [e.atom for e in r.events]
         assert atoms == ["pickup(Apple)", "put(Apple,DiningTable)", "pickup(Mug)", "put(Mug,CounterTop)"]
 
 
@@ -48,7 +48,7 @@ def test_two_robots_split_two_tasks(mode, two_tasks_world):
     inst = gt([PLACE_APPLE, PLACE_MUG])
     r = solve(two_tasks_world, inst, [(0, 0), (0, 39)], mode=mode)
     assert r.total_cost == 11
-    by_robot = {e["task"]: e["robot"] for e in r.events}
+    by_robot = {e.task: e.robot for e in r.events}
     assert by_robot == {"task1.1": 0, "task1.2": 1}
     r = solve(two_tasks_world, inst, [(0, 0), (0, 39)], mode=mode, objective="minmax")
     assert r.steps == 6  # robot 0 picks at t=5, puts at t=6; robot 1 done at t=5
@@ -80,8 +80,8 @@ def test_leaf_passes_to_another_robot():
     for mode in ("exact", "fast"):
         r = plan(world, spec, [(0, 0), (0, 39)], mode=mode)
         assert r.solved and r.total_cost == 7
-        assert [e["robot"] for e in r.events] == [0, 0, 1]
-        assert {e["task"] for e in r.events} == {"task1.1"}
+        assert [e.robot for e in r.events] == [0, 0, 1]
+        assert {e.task for e in r.events} == {"task1.1"}
 
 
 def test_clean_task_binds_the_faucet_of_its_basin():
@@ -89,6 +89,6 @@ def test_clean_task_binds_the_faucet_of_its_basin():
     world = corridor({"Apple_0": 10, "SinkBasin_0": 14, "Faucet_0": 14, "CounterTop_0": 2})
     inst = gt([{"id": "A", "kind": "clean_place", "object": ["Apple"], "receptacle": ["CounterTop"]}])
     r = solve(world, inst, [(0, 0)], mode="exact")
-    atoms = [e["atom"] for e in r.events]
+    atoms = [e.atom for e in r.events]
     assert atoms == ["pickup(Apple)", "put(Apple,SinkBasin)", "toggle_on(Faucet)", "toggle_off(Faucet)",
                      "pickup(Apple)", "put(Apple,CounterTop)"]

@@ -2,11 +2,13 @@
 
 from __future__ import annotations
 
+import json
 import time
 
 import pytest
 from planning_worlds import corridor
 
+from nl2hltl2plan.domain.plan_events import PlanEvent
 from nl2hltl2plan.errors import PlanningError, SpecError
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.planning import plan
@@ -54,7 +56,22 @@ def test_no_robot_has_the_capability(two_tasks_world):
     assert r.status == "infeasible" and "no robot in the team can pickup(Apple)" in r.reason
     # with one capable robot it is solved, and only that robot acts
     r = plan(two_tasks_world, spec, [(0, 0), (0, 39)], capabilities=[["open"], None])
-    assert r.solved and {e["robot"] for e in r.events} == {1}
+    assert r.solved and {e.robot for e in r.events} == {1}
+
+
+def test_events_are_typed_and_keep_their_json():
+    world = corridor({"Apple_0": 10, "CounterTop_0": 2})
+    r = plan(world, leaf_spec("pickup(Apple)", "put(Apple,CounterTop)"), [(0, 0)])
+    assert r.solved and all(isinstance(e, PlanEvent) for e in r.events)
+    assert [(e.robot, e.atom, e.task, e.objects) for e in r.events] == [
+        (0, "pickup(Apple)", "task1.1", ["Apple_0"]),
+        (0, "put(Apple,CounterTop)", "task1.1", ["Apple_0", "CounterTop_0"]),
+    ]
+    assert sum(e.travel_m for e in r.events) == r.travel_m  # the walk before each action
+    # the JSON is the planner's event object, field for field, and reads back as the same events
+    shown = json.loads(json.dumps(r.to_dict()))["events"]
+    assert [list(e) for e in shown] == [["t", "robot", "atom", "task", "objects", "travel_m"]] * 2
+    assert [PlanEvent.model_validate(e) for e in shown] == r.events
 
 
 def test_support_open_inserted_and_infeasible_found_by_search():
@@ -65,7 +82,7 @@ def test_support_open_inserted_and_infeasible_found_by_search():
     for mode in ("exact", "fast"):
         r = plan(world, spec, [(0, 0)], mode=mode)
         assert r.solved and r.total_cost == 7
-        assert [(e["atom"], e["task"]) for e in r.events] == [
+        assert [(e.atom, e.task) for e in r.events] == [
             ("open(Fridge)", "task1.1"), ("pickup(Apple)", "task1.1"), ("put(Apple,CounterTop)", "task1.1")]
     # a robot that may not open anything: nothing static is wrong, the exhaustive search proves there
     # is no plan and names the missing ability

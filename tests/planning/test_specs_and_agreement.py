@@ -32,7 +32,7 @@ def test_general_non_leaf_formulas(two_tasks_world, root, cost, order, mode):
     # costs 20+1+8... = the values below, worked out along the corridor
     r = plan(two_tasks_world, HierarchicalSpec([{"task1": root}, LEAVES]), [(0, 39)], mode=mode)
     assert r.solved and r.model_cost == cost
-    assert [e["task"] for e in r.events] == order
+    assert [e.task for e in r.events] == order
 
 
 def test_oracle_spec_shape():
@@ -57,7 +57,7 @@ def test_oracle_spec_shape():
     assert o.leaf_task == {"task1.1.1": "A", "task1.1.2": "A", "task1.2": "B", "task1.3": "C"}
     r = plan(world, o.spec, [(0, 0), (9, 13)])
     assert r.solved and check(r.execution, gt).success
-    assert [e["atom"] for e in r.events].count("open(Dishwasher)") == 1
+    assert [e.atom for e in r.events].count("open(Dishwasher)") == 1
 
 
 def test_oracle_spec_of_a_task_the_world_lacks():
@@ -126,7 +126,7 @@ def test_exact_minmax_balances_the_team():
         assert r_min.total_cost == 4
         r_ms = plan(world, spec, [(0, 20), (0, 30)], mode=mode, objective="minmax")
         assert r_ms.steps == 2 and r_ms.total_cost == 4
-        assert {e["task"]: e["robot"] for e in r_ms.events} == {"task1.1": 0, "task1.2": 1}
+        assert {e.task: e.robot for e in r_ms.events} == {"task1.1": 0, "task1.2": 1}
 
 
 def test_check_trace_on_a_planned_trace_and_its_breakages():

@@ -20,7 +20,7 @@ def test_one_open_serves_two_tasks():
                               "task1.2": ["pickup(Mug)", "put(Mug,Fridge)"]}])
     for mode in ("exact", "fast"):
         r = plan(world, spec, [(0, 20)], mode=mode)
-        atoms = [e["atom"] for e in r.events]
+        atoms = [e.atom for e in r.events]
         assert r.solved and atoms.count("open(Fridge)") == 1, atoms
         assert atoms.index("open(Fridge)") < atoms.index("put(Apple,Fridge)")
         assert r.total_cost == 9
@@ -35,7 +35,7 @@ def test_heat_reopens_the_microwave_it_closed_and_no_leaf_opens_or_closes():
         assert not any(a.startswith(("open(", "close(")) for a in oracle.spec.leaf_actions(name)), name
     r = plan(world, oracle.spec, [(0, 0), (9, 13)])
     assert r.solved and check(r.execution, inst).success
-    atoms = [e["atom"] for e in r.events]
+    atoms = [e.atom for e in r.events]
     # open, put, close (support: it runs only closed), on, off, open again (support), pick
     heat = [a for a in atoms if "Microwave" in a]
     assert heat == ["open(Microwave)", "put(Apple,Microwave)", "close(Microwave)", "toggle_on(Microwave)",
@@ -50,7 +50,7 @@ def test_switching_on_an_open_appliance_closes_it_first():
                              {"task1.1": ["pickup(Apple)", "put(Apple,Microwave)", "toggle_on(Microwave)"]}])
     r = plan(world, spec, [(0, 0)])
     assert r.solved
-    assert [e["atom"] for e in r.events] == ["pickup(Apple)", "open(Microwave)", "put(Apple,Microwave)",
+    assert [e.atom for e in r.events] == ["pickup(Apple)", "open(Microwave)", "put(Apple,Microwave)",
                                              "close(Microwave)", "toggle_on(Microwave)"]
 
 
@@ -64,8 +64,8 @@ def test_two_heat_tasks_close_the_microwave_only_to_switch_it_on():
     for starts in ([(0, 0)], [(0, 0), (9, 13)]):
         r = plan(world, spec, starts)
         assert r.solved and check(r.execution, inst).success
-        micro = [e["atom"] for e in r.events if "Microwave)" in e["atom"] and "put(" not in e["atom"]
-                 and "pickup(" not in e["atom"]]
+        micro = [e.atom for e in r.events if "Microwave)" in e.atom and "put(" not in e.atom
+                 and "pickup(" not in e.atom]
         closes = [i for i, a in enumerate(micro) if a == "close(Microwave)"]
         assert closes and all(micro[i + 1] == "toggle_on(Microwave)" for i in closes), micro
         assert len(closes) <= micro.count("toggle_on(Microwave)")

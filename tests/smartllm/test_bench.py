@@ -6,6 +6,7 @@ import json
 import pytest
 
 from nl2hltl2plan.cli.bench_smartllm import register
+from nl2hltl2plan.domain.plan_events import PlanEvent
 from nl2hltl2plan.suites.smartllm.smartllm_bench import (
     llm_maker,
     oracle_maker,
@@ -35,15 +36,15 @@ def test_robot_utilisation_formula():
     assert robot_utilisation(2, 0, 2) == 0.5 and robot_utilisation(2, 1, 1) == 1.0
     assert robot_utilisation(1, 1, 1) == 0.0 and robot_utilisation(1, None, None) is None
     ev = [
-        {"t": 5, "robot": 0, "task": "a", "travel_m": 1.0},
-        {"t": 6, "robot": 0, "task": "a"},
-        {"t": 3, "robot": 1, "task": "b", "travel_m": 0.5},
-        {"t": 9, "robot": 2, "task": "c", "travel_m": 0.25},
+        PlanEvent(t=5, robot=0, atom="pickup(A)", task="a", travel_m=1.0),
+        PlanEvent(t=6, robot=0, atom="put(A,B)", task="a"),
+        PlanEvent(t=3, robot=1, atom="pickup(B)", task="b", travel_m=0.5),
+        PlanEvent(t=9, robot=2, atom="pickup(C)", task="c", travel_m=0.25),
     ]
     assert stages(ev) == 2  # a (t 1..6) and b (1..3) overlap; c sets off at 8, after both ended
     assert stages(ev, [("b", "a")]) == 3  # ordered by the spec: b, then a, then c
-    ev[2]["robot"] = 2
-    ev[2]["t"], ev[3]["t"] = 2, 4  # b (t 0..2) then c (3..4) by robot 2, while a (1..6) runs
+    ev[2] = ev[2].model_copy(update={"robot": 2, "t": 2})
+    ev[3] = ev[3].model_copy(update={"t": 4})  # b (t 0..2) then c (3..4) by robot 2, while a (1..6) runs
     assert stages(ev) == 2
 
 

@@ -7,6 +7,7 @@ from collections.abc import Iterable, Sequence
 from dataclasses import replace
 from typing import Any, Literal
 
+from nl2hltl2plan.domain.plan_events import PlanEvent
 from nl2hltl2plan.errors import PlanningError
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.planning.budget import Budget, StopReason
@@ -329,8 +330,8 @@ def _fill_solved(result: PlanResult, problem: Problem, x: Expander, obj: Objecti
     result.optimality = optimality_words(result.proven_optimal, result.bound)
     world = problem.world
     result.events = [
-        {"t": e.t, "robot": e.robot, "atom": e.atom,
-         "task": problem.leaves[e.leaf].name if e.leaf >= 0 else None,
-         "objects": [world.ids[o] for o in e.objs], "travel_m": e.travel * CELL_M}
+        PlanEvent(t=e.t, robot=e.robot, atom=e.atom,
+                  task=problem.leaves[e.leaf].name if e.leaf >= 0 else None,
+                  objects=[world.ids[o] for o in e.objs], travel_m=e.travel * CELL_M)
         for e in events
     ]

@@ -12,6 +12,7 @@ from dataclasses import dataclass, field
 from enum import StrEnum
 from typing import Any
 
+from nl2hltl2plan.domain.plan_events import PlanEvent
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.logic.trace import TraceEvent, check_trace
 from nl2hltl2plan.planning.budget import StopReason
@@ -89,7 +90,7 @@ class PlanResult:
     stopped: StopReason = StopReason.NONE  # why the search stopped (`stop_reason`: in words)
     stop_reason: str = ""  # the sentence
     execution: Execution | None = field(default=None, repr=False)
-    events: list[dict[str, Any]] = field(default_factory=list)
+    events: list[PlanEvent] = field(default_factory=list)
 
     @property
     def solved(self) -> bool:
@@ -103,7 +104,7 @@ class PlanResult:
         out = {"status": self.status.value, **out, "stopped": str(self.stopped)}
         if with_plan:
             out["plan"] = self.plan.model_dump(mode="json") if self.plan is not None else None
-            out["events"] = self.events
+            out["events"] = [e.model_dump() for e in self.events]
         return out
 
 

@@ -22,6 +22,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.patches import Patch  # noqa: E402
 from matplotlib.ticker import MaxNLocator  # noqa: E402
 
+from nl2hltl2plan.domain.plan_events import PlanEvent  # noqa: E402
 from nl2hltl2plan.errors import WorldError  # noqa: E402
 from nl2hltl2plan.io import save_figure  # noqa: E402
 from nl2hltl2plan.logic.atom import Atom
@@ -139,36 +140,36 @@ def draw_gantt(
     )
 
 
-def segments_from_events(events: Sequence[dict], robots: int) -> list[Segment]:
-    """Bars from a benchmark row's `events` (`t`, `robot`, `atom`, `task`, `travel_m` walked before
-    the action): as the planner lays plans out, a robot walks right after its previous action, then
+def segments_from_events(events: Sequence[PlanEvent], robots: int) -> list[Segment]:
+    """Bars from a plan's events (a benchmark row's or the planner's; `travel_m` walked before the
+    action): as the planner lays plans out, a robot walks right after its previous action, then
     waits for the action's step."""
     out: list[Segment] = []
     for robot in range(robots):
         last = 0
-        for e in sorted((e for e in events if e["robot"] == robot), key=lambda e: e["t"]):
-            moves = min(round(float(e.get("travel_m") or 0.0) / CELL_M), e["t"] - last - 1)
+        for e in sorted((e for e in events if e.robot == robot), key=lambda e: e.t):
+            moves = min(round(e.travel_m / CELL_M), e.t - last - 1)
             if moves > 0:
                 out.append(Segment(robot, last + 1, last + moves, "move", f"move x{moves}"))
-            if e["t"] - last - 1 > moves:
-                n = e["t"] - last - 1 - moves
-                out.append(Segment(robot, last + moves + 1, e["t"] - 1, "wait", f"wait x{n}"))
-            out.append(Segment(robot, e["t"], e["t"], "action", _instance_label(e), e.get("task")))
-            last = e["t"]
+            if e.t - last - 1 > moves:
+                n = e.t - last - 1 - moves
+                out.append(Segment(robot, last + moves + 1, e.t - 1, "wait", f"wait x{n}"))
+            out.append(Segment(robot, e.t, e.t, "action", _instance_label(e), e.task))
+            last = e.t
     return out
 
 
-def _instance_label(event: dict) -> str:
+def _instance_label(event: PlanEvent) -> str:
     """The action with the objects it acted on (`put(Mug_1,Sink_0)`), the names the text output and
     the map use; the type-level atom when the row did not record them."""
-    atom, objects = Atom.read(str(event["atom"])), event.get("objects") or []
+    atom, objects = Atom.read(event.atom), event.objects
     if atom is None or len(objects) != len(atom.args):
-        return str(event["atom"])
+        return event.atom
     return str(Atom(atom.verb, tuple(objects)))
 
 
 def draw_gantt_events(
-    events: Sequence[dict],
+    events: Sequence[PlanEvent],
     robots: int,
     path: str | Path | None = None,
     before: Iterable[tuple[str, str]] = (),

@@ -11,17 +11,8 @@ from typing import Any
 
 from pydantic import BaseModel, ConfigDict, Field
 
+from nl2hltl2plan.domain.plan_events import PlanEvent
 from nl2hltl2plan.pipeline import Planned
-
-
-class PlanEvent(BaseModel):
-    t: int
-    robot: int
-    atom: str
-    task: str | None = None
-    objects: list[str] = Field(default_factory=list)
-    travel_m: float = 0.0
-
 
 IDENTITY = {"key", "instance", "n_base", "robots", "draw"}
 

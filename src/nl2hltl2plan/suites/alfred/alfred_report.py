@@ -244,7 +244,7 @@ def plot_gantt_example(rows: Sequence[ScenarioRow], out: Path) -> ScenarioRow | 
         f"example: {row.instance or row.key}, {_team(row.robots)}, "
         f"travel {row.travel_m or 0:.2f} m, completion {row.steps} steps"
     )
-    draw_gantt_events([e.model_dump() for e in row.events], row.robots, out, title=title)
+    draw_gantt_events(row.events, row.robots, out, title=title)
     return row
 
 

@@ -34,6 +34,7 @@ from typing import Any
 
 import networkx as nx
 
+from nl2hltl2plan.domain.plan_events import PlanEvent
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.io import atomic_path, write_json, write_text
 from nl2hltl2plan.language.backends import Backend
@@ -64,7 +65,7 @@ def published() -> dict[str, Any]:
     return json.loads(text)
 
 
-def stages(result_events: list[dict[str, Any]], pairs: Sequence[tuple[str, str]] = ()) -> int:
+def stages(result_events: Sequence[PlanEvent], pairs: Sequence[tuple[str, str]] = ()) -> int:
     """Sequential stages of a plan: the most leaves on a chain where each comes after the one before
     it -- ordered after it by the spec (`pairs`, leaf names), done by the same robot after it, or
     set off only once it had ended. A leaf's span runs from when its robot sets off for its first
@@ -72,13 +73,13 @@ def stages(result_events: list[dict[str, Any]], pairs: Sequence[tuple[str, str]]
     spans: dict[str, list[float]] = {}
     robots: dict[str, set[int]] = {}
     for e in result_events:
-        task = e.get("task")
+        task = e.task
         if task is None:
             continue
-        start = e["t"] - round(float(e.get("travel_m") or 0.0) / CELL_M)
-        span = spans.setdefault(task, [start, e["t"]])
-        span[0], span[1] = min(span[0], start), max(span[1], e["t"])
-        robots.setdefault(task, set()).add(int(e["robot"]))
+        start = e.t - round(e.travel_m / CELL_M)
+        span = spans.setdefault(task, [start, e.t])
+        span[0], span[1] = min(span[0], start), max(span[1], e.t)
+        robots.setdefault(task, set()).add(e.robot)
     ordered = set(pairs)
     graph = nx.DiGraph()
     graph.add_nodes_from(spans)
@@ -239,7 +240,7 @@ def _plan_task(
     if not result.solved or result.execution is None:
         return 0, 0.0, None
     ex = result.execution
-    row["robots_used"] = sorted({e["robot"] for e in result.events})
+    row["robots_used"] = sorted({e.robot for e in result.events})
     attempted = len(ex.events) + len(ex.violation_list)
     return stages(result.events, leaf_pairs(spec)), (len(ex.events) / attempted if attempted else 1.0), ex
 
