@@ -81,13 +81,14 @@ def test_unknown_requests_suggest_supported_tasks():
 
 
 @needs_data
+@pytest.mark.parametrize("backend", ["offline", "grammar"])
 @pytest.mark.parametrize("name", ["plain", "mixed"])
-def test_no_instruction_of_our_sets_yields_a_spec_missing_part_of_it(name):
+def test_no_instruction_of_our_sets_yields_a_spec_missing_part_of_it(name, backend):
     import trust_sets
 
     gts = trust_sets.load(name)
     assert len(gts) >= (100 if name == "plain" else 60)
-    outcomes = [trust_sets.outcome(gt) for gt in gts]
+    outcomes = [trust_sets.outcome(gt, backend) for gt in gts]
     wrong = [(gt.instruction, why) for gt, (what, why) in zip(gts, outcomes, strict=True) if what == "wrong"]
     assert wrong == []
     if name == "plain":  # most plain instructions convert, not merely refuse
@@ -234,3 +235,14 @@ class _Vases:
 
     def object_types(self) -> set[str]:
         return {"Vase", "Shelf"}
+
+
+def test_a_placement_without_a_destination_is_partial_not_a_spec():
+    """A misspelt place ("tabel") leaves the grammar's task without a receptacle: the result names it."""
+    from nl2hltl2plan.language.accounting import unfilled_slots
+    from nl2hltl2plan.language.task_specs import BaseTaskSpec
+
+    lost = BaseTaskSpec(id="A", kind="place", text="put teh bread on the tabel", object=["Bread"])
+    (unread,) = unfilled_slots([lost])
+    assert unread.category == "place" and "task A has no receptacle" in unread.reason
+    assert unfilled_slots([lost.model_copy(update={"receptacle": ["DiningTable"]})]) == []

@@ -23,6 +23,7 @@ from collections.abc import Mapping, Sequence
 
 import networkx as nx
 
+from nl2hltl2plan.domain.task_kinds import slots_of
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.content_words import (
     DETERMINERS,
@@ -96,6 +97,20 @@ def account(
     out += _words(instruction, toks, in_mention, mentions, parse, instances, scene)
     out += _orders(toks, {i for i, t in enumerate(toks) if parse.constraint_at(t[1])} | in_mention, parse)
     _check_cycles(instruction, toks, mentions, parse)
+    return out
+
+
+def unfilled_slots(tasks: Sequence[BaseTaskSpec]) -> list[Unread]:
+    """Each task with no object, and each placement with no destination: a word that should have named
+    it was not understood ("on the tabel", "on it too"). Judged on the final result only (`translate`),
+    not inside the parsers' own arbitration, which reads partial parses on purpose."""
+    out = []
+    for t in tasks:
+        places = [r for r in slots_of(t.kind) if r != "object"] if t.kind.startswith("place") else []
+        for role in ["object", *places]:
+            if not getattr(t, role):
+                why = f"task {t.id} has no {role}: the words that should name it were not understood"
+                out.append(Unread(t.text or t.id, "object" if role == "object" else "place", why))
     return out
 
 
