@@ -132,6 +132,12 @@ def test_the_opposite_side_is_resolved_against_where_the_blocks_start():
         ("Move the three blocks to the opposite side while swapping their positions.", "their"),
         ("The red block comes before the blue block; swap them.", "them"),  # 'them' across a sentence
         ("Move the three blocks to the opposite side. Objects must not be placed anywhere.", "anywhere"),
+        # an exchanged block that also goes elsewhere: its position is its start or that goal
+        (
+            "Move the red block to region H and the blue block to region I, then swap their positions.",
+            "exchanged",
+        ),
+        ("Move the red block to region H. Then swap the red block and the blue block.", "exchanged"),
     ],
 )
 def test_what_the_rules_cannot_read_is_refused_by_name(text, named):

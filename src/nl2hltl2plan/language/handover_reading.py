@@ -158,6 +158,9 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
     if not clauses:
         raise HTTError(f"no goal for a block in {instruction!r} (say where each block goes)")
     goals = [g for c in clauses for g in c.goals]
+    swapped = {b for g in goals if g.place.block and not g.regions for b in (g.block, g.place.block)}
+    if sum(g.block in swapped for g in goals) > len(swapped):  # where is "its position" then: start or goal?
+        raise HTTError("an exchanged block also has another goal: which positions are exchanged?")
     for blocks, place, explicit, text in pending:
         _guard(goals, blocks, place, explicit, scene, text)
     for x, y in touches:
@@ -340,8 +343,7 @@ def _goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
         lambda x: f" G{x.group(1)} {x.group('link')}" + again(clauses[int(x.group(1))], x),
     )
     _markers(m, clauses)
-    # the patterns make clauses in their own order: the task tree wants them in the sentence's order
-    order = [int(k) for k in re.findall(r"\bG(\d+)\b", m.text)]
+    order = [int(k) for k in re.findall(r"\bG(\d+)\b", m.text)]  # the sentence's order, not the patterns'
     if sorted(order) != list(range(len(clauses))):  # a clause lost or read twice: never guess
         raise HTTError(f"cannot tell the order of the goals in {m.text.strip()!r}")
     return [clauses[k] for k in order]
@@ -378,10 +380,8 @@ def _markers(m: Marked, clauses: list[Clause]) -> None:
 def _resolve(place: Place, block: str, scene: Scene) -> tuple[str, ...]:
     if place.kind == "opposite":
         return scene.opposite(block)
-    if place.kind in ("regions", "start_of"):
-        return place.regions
-    if place.kind == "away":
-        return ()
+    if place.kind in ("regions", "start_of", "away"):
+        return place.regions  # () for "away" and an exchange's start_of
     raise HTTError(f"'{place.text}' is not a place a block can go to")
 
 
