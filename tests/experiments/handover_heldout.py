@@ -50,3 +50,99 @@ HELD_OUT: dict[int, list[str]] = {
         "on region I, then put the yellow block on region G.",
     ],
 }
+
+
+# Seen while fixing (issue 24): of the lead's second held-out set (16 rephrasings, never shared), 8 gave the
+# written specs and 8 were refused, never a different spec. Those 8 are below and no longer held out: the
+# phrase classes they use are now read generally ("the red one", "gets placed / goes down / comes
+# before", "making sure", "fill R with the blocks", "next to arm a and arm b" beside a named place,
+# "anywhere other than the target region", "but" before a rule, "while exchanging their positions").
+SEEN_WHILE_FIXING: dict[int, list[str]] = {
+    1: [
+        "Bring all three blocks over to the opposite side, making sure the red one gets placed before the"
+        " blue one.",
+        "The red block goes down before the blue block; move three blocks to the opposite.",
+    ],
+    2: [
+        "Fill the goal regions H, I and J with the three blocks so that each region holds only one object.",
+    ],
+    3: [
+        "Move the three pillars over to regions E, F and G, next to arm a and arm b. Do not place any "
+        "object on an area other than the target region.",
+        "Please get the three pillars into the placement area (regions E, F and G). Objects must not be "
+        "placed anywhere other than the target region.",
+    ],
+    4: [
+        "Transfer the three blocks into the opposite regions, but the blue block cannot be touched by any"
+        " arm until the red block has been touched. Finally, return the yellow block to region G.",
+    ],
+    5: [
+        "Place the red block before the blue block while exchanging their positions. The yellow block "
+        "goes to the opposite side at any time.",
+    ],
+    7: [
+        "One after another, put the three blocks on region I, and during this period nothing can be "
+        "placed on region F, G and H; the red block comes before the blue block.",
+    ],
+}
+
+# Our own variants of those phrase classes, written while fixing (tests only).
+FIXING_VARIANTS: dict[int, list[str]] = {
+    1: [
+        "Move the three blocks over to the opposite side, making sure that the red one is placed before "
+        "the blue one.",
+        "Carry the three blocks to the opposite side; the red block has to be placed earlier than the "
+        "blue block.",
+        "The red one comes ahead of the blue one. Move all three blocks to the other side.",
+        "Bring the three blocks to the opposite side, but the red block gets put down before the blue block.",
+        "Ensure the red block lands before the blue block, and move three blocks into the opposite regions.",
+    ],
+    2: [
+        "Fill regions H, I and J with the three blocks; each region can have only one block.",
+        "Occupy the goal regions H, I and J with all three blocks. Each region takes only one object.",
+    ],
+    3: [
+        "Move the three pillars to regions E, F and G, beside arm a and arm b. Objects may not be placed "
+        "anywhere other than the target region.",
+        "Bring the three pillars over to regions E, F and G near arms a and b. Never place any object on "
+        "an area other than the target region.",
+        "Move the three pillars to the placement area (regions E, F and G). Objects must never be placed "
+        "anywhere else.",
+        "Move the three blocks to regions E, F and G on the side of arm a and arm b, but no object can be"
+        " placed on any area other than the target region.",
+        "Transfer the three pillars to regions E, F and G. Do not place any object anywhere other than "
+        "the target region.",
+    ],
+    4: [
+        "Move the three blocks to the opposite regions, but the blue block may not be picked up by any "
+        "arm until the red block has been picked up. When all that is done, put the yellow block back to "
+        "region G.",
+        "Transfer the three blocks into the opposite regions. The blue block cannot be touched by an arm "
+        "until the red block is touched. Finally, return the yellow block to region G.",
+    ],
+    5: [
+        "Swap the red block and the blue block, making sure the red one gets placed before the blue one. "
+        "The yellow block goes to the opposite side at any time.",
+        "Put the red block before the blue block while swapping their positions. At any time, move the "
+        "yellow block to the opposite side.",
+        "Place the red block before the blue block and swap them. The yellow block goes to the other side"
+        " at any time.",
+    ],
+    6: [
+        "Put the three blocks separately on regions G, H and I; the red block is placed before the blue "
+        "block.",
+        "Fill regions G, H and I with the three blocks, the red block ahead of the blue block.",
+    ],
+    7: [
+        "One by one, move the three blocks to region I, but nothing may be placed on region F, G and H "
+        "during this period; the red block comes before the blue block.",
+        "Put the three blocks on region I one after another; the red block gets placed earlier than the "
+        "blue block. Meanwhile nothing can be put on region F, G or H.",
+    ],
+    8: [
+        "First put the yellow block on region I, then on region G, and move the red and blue blocks to "
+        "any empty region at any time.",
+        "The red and blue blocks go to any empty region at any time, and the yellow block goes to region "
+        "I first and then to region G.",
+    ],
+}

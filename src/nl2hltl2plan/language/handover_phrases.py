@@ -9,7 +9,9 @@ refusal naming the words: nothing is silently dropped.
 
 Places resolve against the instance: "the opposite" is, per block, the labelled regions on the other
 arms' side from where the block starts (arms a, b against c, d); "the side of arm a and arm b" the
-labelled regions those arms reach; "where the red block is" the region red starts on.
+labelled regions those arms reach; "where the red block is" the region red starts on. A landmark
+("next to arm a and arm b") only describes a place named beside it, and must agree with it; "swap
+them", "exchanging their positions": the two blocks named before in the sentence (else unread).
 """
 
 from __future__ import annotations
@@ -40,9 +42,10 @@ FILLER = frozenset(
 @dataclass(frozen=True)
 class Place:
     """A place phrase: labelled regions, per-block opposite side, any empty region, a block's start,
-    or the labelled regions other than a goal's targets (only in prohibitions)."""
+    or the labelled regions other than a goal's targets (only in prohibitions); a landmark ("next to arm
+    a and arm b") only describes a place named beside it and must agree with it."""
 
-    kind: Literal["regions", "opposite", "away", "start_of", "complement"]
+    kind: Literal["regions", "opposite", "away", "start_of", "complement", "landmark"]
     regions: tuple[str, ...] = ()
     block: str = ""  # start_of: whose start
     text: str = ""
@@ -135,7 +138,20 @@ def mark(sentence: str, scene: Scene) -> Marked:
     _mark_arms(m)
     _mark_blocks(m, scene)
     _mark_places(m, scene)
+    _mark_connectives(m)
     return m
+
+
+def _mark_connectives(m: Marked) -> None:
+    """'making sure (that)', 'ensure that' introduce what follows and add nothing."""
+    m.sub(r"\b(?:making|make|be)\s+sure\s+(?:that\s+)?|\bensur(?:e|ing)\s+(?:that\s+)?", " ")
+
+
+def drop_but(m: Marked) -> None:
+    """'but' before a rule, read after the goal clauses ('move ... , but the blue block cannot be touched
+    ...'): 'but' before a goal may mean an exception ('..., but the red block goes to G'), so it stays
+    unread there, and so does 'all blocks but red'."""
+    m.sub(r"(?:,\s*)?\bbut\b(?!\s*,?\s*(?:G\d|B\d))", " ")
 
 
 def _mark_one_per_region(m: Marked) -> None:
@@ -143,7 +159,7 @@ def _mark_one_per_region(m: Marked) -> None:
     block in these worlds, so this is the world's own rule (recorded, no formula)."""
     each = (
         r"\b(?:each|every)\s+(?:goal\s+|target\s+)?(?:region|area|zone|place)\s+(?:can|may|should|must|will)?\s*"
-        r"(?:only\s+)?(?:be\s+)?(?:placed|filled|holds?|takes?|gets?|receives?|contains?)\s+(?:only\s+)?"
+        r"(?:only\s+)?(?:be\s+)?(?:placed|filled|holds?|takes?|gets?|receives?|contains?|ha(?:ve|s))\s+(?:only\s+)?"
         r"(?:with\s+)?(?:one|a\s+single|1)\s+" + NOUN + r"\b"
     )
     per = (
@@ -226,6 +242,14 @@ def _mark_pronouns(m: Marked) -> None:
             return match.group(0)
         return _new_block(m, m.blocks[fits[-1]], match.group(0))
 
+    def pair(match: re.Match[str]) -> str:  # "while exchanging their positions": the two blocks named
+        named = [b for k in re.findall(r"\bB(\d+)\b", m.text[: match.start()]) for b in m.blocks[int(k)]]
+        if len(set(named)) != 2 or re.search(r"B\d+\s+(?:should\s+|must\s+)?$", m.text[: match.start()]):
+            return match.group(0)  # not two, or the pair is the subject: "X and Y exchange their positions"
+        return match.group(1) + _new_block(m, list(dict.fromkeys(named)), match.group(2))
+
+    swap = r"(?:exchang(?:e|ing)|swap(?:ping)?|switch(?:ing)?|interchang(?:e|ing)|trad(?:e|ing))"
+    m.text = re.sub(rf"\b({swap}\s+)(them|their)\b", pair, m.text)
     m.text = re.sub(r"\b(?:it|them)\b", resolve, m.text)
 
 
@@ -240,7 +264,11 @@ def _mark_places(m: Marked, scene: Scene) -> None:
         r"(?:other\s+than|except(?:\s+for)?|besides|apart\s+from|but)\s+(?:the\s+|their\s+|its\s+)?"
         r"(?:target|goal|destination|assigned)\s+(?:regions?|areas?|places?|zones?)\b"
     )
-    m.sub(complement, lambda match: _new_place(m, Place("complement", text=match.group(0).strip())))
+    def other_than(match: re.Match[str]) -> str:  # "anywhere other than ...", "elsewhere": with its "on"
+        on = " on " if re.match(r"anywhere|elsewhere", match.group(0)) else ""
+        return on + _new_place(m, Place("complement", text=match.group(0).strip()))
+
+    m.sub(complement + r"|\b(?:anywhere\s+else|elsewhere)\b", other_than)
 
     def start_of(match: re.Match[str]) -> str:
         k = int(match.group(1))
@@ -269,12 +297,14 @@ def _mark_places(m: Marked, scene: Scene) -> None:
     )
 
     def arms(match: re.Match[str]) -> str:
-        letters = re.findall(r"\b[a-d]\b", match.group(0).replace("side of", ""))
+        letters = re.findall(r"\b[a-d]\b", re.sub(r"side of|reach of", "", match.group(0)))
         regions = scene.arms_side(["abcd".index(x) for x in letters])
-        return _new_place(m, Place("regions", regions, text=match.group(0).strip()))
+        kind: Literal["regions", "landmark"] = "regions" if "side" in match.group(0) else "landmark"
+        return _new_place(m, Place(kind, regions, text=match.group(0).strip()))
 
     m.sub(
-        r"\b(?:the\s+)?sides?\s+of\s+(?:the\s+)?arms?\s+[a-d](?:\s*(?:,|and|&)\s*(?:the\s+)?(?:arm\s+)?[a-d])*\b",
+        r"\b(?:(?:the\s+)?sides?\s+of|next\s+to|beside|near|close\s+to|in\s+front\s+of|within\s+reach\s+of|"
+        r"reachable\s+by)\s+(?:the\s+)?arms?\s+[a-d](?:\s*(?:,|and|&)\s*(?:the\s+)?(?:arm\s+)?[a-d])*\b",
         arms,
     )
 
@@ -312,6 +342,7 @@ def _mark_places(m: Marked, scene: Scene) -> None:
 
 def _merge(m: Marked, i: int, j: int) -> str:
     a, b = m.places[i], m.places[j]
-    if a.kind != "regions" or b.kind not in ("regions", "start_of") or set(a.regions) != set(b.regions):
+    agree = a.kind == "regions" and b.kind in ("regions", "start_of", "landmark")
+    if not agree or set(a.regions) != set(b.regions):
         raise HTTError(f"'{a.text}' and '{b.text}' name different places")
     return f" P{i} "

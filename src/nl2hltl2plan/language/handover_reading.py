@@ -8,30 +8,33 @@ guards and joint goals as text, sorted. Phrases are resolved against the instanc
 
 - a goal clause "VERB BLOCKS [back] to PLACE" gives one leaf per block: `F(at(B,R1) | at(B,R2) ...)`
   (the opposite side: per block; any empty region: `away(B)`; where another block starts: `@B`);
-  "exchange the positions of X and Y" gives `F at(X,@Y)` and `F at(Y,@X)`;
+  "fill R with BLOCKS" is the same (as many regions as blocks); "exchange the positions of X and Y"
+  ("while swapping their positions") gives `F at(X,@Y)` and `F at(Y,@X)`;
 - a clause that moves several blocks to lasting places also asks for them there at once (a leaf
   `F(state_1 & state_2 ...)`), unless it says "at any time", "one after another" or its places hold
   fewer blocks than it moves;
-- "X should be placed before Y" orders X's goal before Y's; "first ..., then ..." makes one node of
-  the steps in order; "after all of these, ..." makes one node of everything said so far and puts
-  the new goal after it;
+- "X should be placed / gets placed / comes before Y" orders X's goal before Y's; "first ..., then
+  ..." makes one node of the steps in order; "after all of these, ..." makes one node of everything
+  said so far and puts the new goal after it;
 - "the arm cannot touch X until it touched Y" guards X's goal: `(!pick(X) U pick(Y)) & ...`;
 - "no block can be placed on R (during this period)" and "cannot be placed on the area other than the
   target region" guard every goal of the sentence (or, in a sentence of its own, every goal so far)
   until it is met: `(!drop(R) & ...) U state` (a plan ends when its last goal is met, so this is
   "never" for the plan's whole run);
 - "each region holds one object", "separately": the world's own rule (a cell holds one block).
-Every word is read or is a filler; anything else is refused, naming the words.
+Clauses are kept in the sentence's order; "but" is read only before a rule. Every word is read or is
+a filler; anything else is refused, naming the words.
 """
 
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import TypeGuard
 
 from nl2hltl2plan.errors import HTTError
-from nl2hltl2plan.language.handover_phrases import FILLER, Marked, Place, Scene, mark
+from nl2hltl2plan.language.handover_phrases import FILLER, Marked, Place, Scene, drop_but, mark
 from nl2hltl2plan.language.htt import HTT, HTTNode
 from nl2hltl2plan.language.result import LanguageResult
 from nl2hltl2plan.language.spec_builder import build_spec
@@ -143,6 +146,7 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
         touches += _touch_guards(m)
         orders += _orders(m)
         new = _goal_clauses(m, scene)
+        drop_but(m)
         _refuse_leftovers(m, sentence)
         scope = [g for c in new for g in c.goals] or [g for c in clauses for g in c.goals]
         for blocks, place, explicit, text in forbids:
@@ -154,6 +158,9 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
     if not clauses:
         raise HTTError(f"no goal for a block in {instruction!r} (say where each block goes)")
     goals = [g for c in clauses for g in c.goals]
+    swapped = {b for g in goals if g.place.block and not g.regions for b in (g.block, g.place.block)}
+    if sum(g.block in swapped for g in goals) > len(swapped):  # where is "its position" then: start or goal?
+        raise HTTError("an exchanged block also has another goal: which positions are exchanged?")
     for blocks, place, explicit, text in pending:
         _guard(goals, blocks, place, explicit, scene, text)
     for x, y in touches:
@@ -178,7 +185,7 @@ def _one(m: Marked, k: str, what: str) -> str:
 
 def _orders(m: Marked) -> list[tuple[str, str]]:
     out: list[tuple[str, str]] = []
-    modal = r"(?:should|must|has\s+to|have\s+to|needs?\s+to|is\s+to|are\s+to|will)?\s*(?:be\s+)?"
+    modal = r"(?:should|must|has\s+to|have\s+to|needs?\s+to|is\s+to|are\s+to|will|gets?|is|are)?\s*(?:be\s+)?"
     tail = rf"(?:\s+(?:is|has\s+been|gets|was)\s+{DONE})?"
 
     def add(match: re.Match[str], flip: bool) -> str:
@@ -192,7 +199,8 @@ def _orders(m: Marked) -> list[tuple[str, str]]:
     ):
         m.sub(rf"\b(?:{VERB}|{GERUND})\s+B(\d+)\s+{word}\s+B(\d+){tail}", lambda x, f=flip: add(x, f))
         m.sub(
-            rf"(?:\bwith\s+)?\bB(\d+)\s+{modal}(?:{DONE}\s+)?{word}\s+B(\d+){tail}",
+            rf"(?:\bwith\s+)?\bB(\d+)\s+{modal}(?:(?:{DONE}|comes?|lands?|arrives?)\s+)?(?:down\s+)?{word}\s+B(\d+)"
+            rf"{tail}",
             lambda x, f=flip: add(x, f),
         )
     return out
@@ -254,7 +262,8 @@ def _prohibitions(m: Marked) -> list[Prohibition]:
         rf"\bno\s+B(?P<b>\d+)\s+(?:can|may|should|must|will|is\s+allowed\s+to|are\s+allowed\s+to)?\s*(?:ever\s+)?(?:be\s+)?{DROP}{down}",
         add,
     )
-    m.sub(rf"\bB(?P<b>\d+)\s+{NEG}\s+(?:ever\s+)?be\s+{DROP}{down}", add)
+    modal = r"(?:(?:must|may|can|should|shall|will|is|are)\s+)?"
+    m.sub(rf"\bB(?P<b>\d+)\s+{modal}{NEG}\s+(?:ever\s+)?(?:be\s+)?{DROP}{down}", add)
     m.sub(
         rf"(?:(?:\bA\s+)?{NEG}|\bno\s+A\s+(?:may|can|should|must|will)?)\s+(?:put|place|drop|set|leave|lay)\s+"
         rf"B(?P<b>\d+){down}",
@@ -268,6 +277,7 @@ def _goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
     clauses: list[Clause] = []
 
     def goal(blocks: list[str], place: Place, text: str, mods: str) -> str:
+        text = text.strip()
         goals = [Goal(b, place, _resolve(place, b, scene), text) for b in blocks]
         in_turn = re.search(r"one\s+after|one\s+by|one\s+at|in\s+turn", mods) is not None
         anytime = re.search(r"any\s+time|whenever", mods) is not None
@@ -290,6 +300,10 @@ def _goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
         clauses.append(Clause(goals, match.group(0).strip(), together=True))
         return f" G{len(clauses) - 1} "
 
+    def again(before: Clause, x: re.Match[str]) -> str:  # the blocks of `before` to a new place
+        text = x.string[x.start("link") : x.end()]
+        return goal([g.block for g in before.goals], m.places[int(x.group(3))], text, x.group(4))
+
     mods = rf"((?:\s*,?\s*{MOD})*)"
     # "one by one, put all three blocks on I": the modifier read where it usually stands, after the object
     m.sub(rf"\b({MOD})\s*,?\s*({VERB}\s+B\d+)", r"\2 \1")
@@ -299,7 +313,7 @@ def _goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
         return goal(_blocks(m, x.group(k)), place, text, x.group(k + 1) + x.group(k + 3))
 
     m.sub(
-        r"\b(?:exchange|swap|switch|interchange|trade)\s+(?:the\s+)?(?:positions?\s+|places?\s+|locations?\s+|spots?\s+)?(?:of\s+)?B(\d+)(?:\s+(?:s\s+)?(?:positions?|places?|locations?))?",
+        r"(?:\bwhile\s+)?\b(?:exchang(?:e|ing)|swap(?:ping)?|switch(?:ing)?|interchang(?:e|ing)|trad(?:e|ing))\s+(?:the\s+)?(?:positions?\s+|places?\s+|locations?\s+|spots?\s+)?(?:of\s+)?B(\d+)(?:\s+(?:s\s+)?(?:positions?|places?|locations?))?",
         exchange,
     )
     m.sub(
@@ -310,6 +324,8 @@ def _goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
         rf"\b{VERB}\s+B(\d+){mods}\s+(?:back\s+)?{PREP}\s+P(\d+){mods}",
         lambda x: matched(x, 1),
     )
+    # the inverse syntax "fill regions H, I and J with the three blocks": as many places as blocks
+    m.sub(rf"\b(?:fill|occupy|populate)\s+P(\d+)\s+with\s+B(\d+){mods}", lambda x: _fill(m, x, goal))
     m.sub(
         rf"\bB(\d+)\s+(?:should|must|needs?\s+to|has\s+to|have\s+to|will)?\s*(?:be\s+)?{DONE}{mods}\s+(?:back\s+)?"
         rf"{PREP}\s+P(\d+){mods}",
@@ -321,22 +337,23 @@ def _goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
         rf"{mods}",
         lambda x: x.group("link") + matched(x, 2),
     )
-    # the verb and the blocks shared with the clause before: "to region I, then to region G", "on
-    # region I first and then on region G"
+    # the verb and the blocks shared with the clause just before: "to I, then to G", "on I first, then on G"
     m.sub(
-        rf"(?<=G\d)(?P<link>(?:\s+first\b)?\s*,?\s*(?:and\s+)?then\s+)(?:back\s+)?{PREP}\s+P(\d+){mods}",
-        lambda x: (
-            x.group("link")
-            + goal(
-                [g.block for g in clauses[-1].goals],
-                m.places[int(x.group(2))],
-                x.group(0).strip(),
-                x.group(3),
-            )
-        ),
+        rf"\bG(\d+)(?P<link>(?:\s+first\b)?\s*,?\s*(?:and\s+)?then\s+)(?:back\s+)?{PREP}\s+P(\d+){mods}",
+        lambda x: f" G{x.group(1)} {x.group('link')}" + again(clauses[int(x.group(1))], x),
     )
     _markers(m, clauses)
-    return clauses
+    order = [int(k) for k in re.findall(r"\bG(\d+)\b", m.text)]  # the sentence's order, not the patterns'
+    if sorted(order) != list(range(len(clauses))):  # a clause lost or read twice: never guess
+        raise HTTError(f"cannot tell the order of the goals in {m.text.strip()!r}")
+    return [clauses[k] for k in order]
+
+
+def _fill(m: Marked, x: re.Match[str], goal: Callable[[list[str], Place, str, str], str]) -> str:
+    place, blocks = m.places[int(x.group(1))], _blocks(m, x.group(2))
+    if place.kind != "regions" or len(set(place.regions)) != len(blocks):
+        raise HTTError(f"'{x.group(0).strip()}': fill needs as many named regions as blocks")
+    return goal(blocks, place, x.group(0).strip(), x.group(3))
 
 
 def _markers(m: Marked, clauses: list[Clause]) -> None:
@@ -363,12 +380,8 @@ def _markers(m: Marked, clauses: list[Clause]) -> None:
 def _resolve(place: Place, block: str, scene: Scene) -> tuple[str, ...]:
     if place.kind == "opposite":
         return scene.opposite(block)
-    if place.kind == "regions":
-        return place.regions
-    if place.kind == "start_of":
-        return place.regions
-    if place.kind == "away":
-        return ()
+    if place.kind in ("regions", "start_of", "away"):
+        return place.regions  # () for "away" and an exchange's start_of
     raise HTTError(f"'{place.text}' is not a place a block can go to")
 
 
