@@ -146,3 +146,58 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "I first and then to region G.",
     ],
 }
+
+
+# Written by the lead in session 8 before h37's fixes and never shown to whoever wrote the rules; run
+# once, after those fixes: 8 of 16 gave the written spec and 8 were refused, naming the words; none gave
+# a different spec. The test asserts that last property: read right, or refused, never misread.
+LEAD_HELD_OUT: dict[int, list[str]] = {
+    1: [
+        "Move the three blocks to the opposite side; the red block has to be placed before the blue "
+        "block.",
+        "Please carry three blocks into the opposite, placing the red block earlier than the blue block.",
+    ],
+    2: [
+        "Move the three blocks to region H, region I and region J, with only one object allowed in each "
+        "goal region.",
+        "Each goal region can hold only one object: put the three blocks into region H, region I and "
+        "region J.",
+    ],
+    3: [
+        "Transfer the three pillars to the placement area next to arm a and arm b, that is region E, F "
+        "and G. No object may be put on an area other than the target region.",
+        "Move all three pillars to regions E, F and G; never place an object on an area other than the "
+        "target region.",
+    ],
+    4: [
+        "Transfer the three blocks to the opposite regions. Until some arm has touched the red block, no "
+        "arm may touch the blue block. After that, move the yellow block back to region G.",
+        "Put the three blocks into the opposite regions; no robot arm can touch the blue block until a "
+        "robot arm has touched the red block. Once all of this is done, place the yellow block back to "
+        "region G.",
+    ],
+    5: [
+        "Exchange the red block's and the blue block's positions, and place the red block before the blue"
+        " block. At any time, move the yellow block into the opposite side.",
+        "Put the yellow block into the opposite side at any time. Exchange the position of the red block "
+        "and the blue block, the red block being placed before the blue block.",
+    ],
+    6: [
+        "Place the three blocks on regions G, H and I separately. Place the red block before the blue "
+        "block.",
+        "Separately place the three objects to region G, region H and region I, and the red block should "
+        "be placed first, before the blue block.",
+    ],
+    7: [
+        "Place the red block before the blue block. Put the three blocks one after another onto region I,"
+        " and no object can be placed on region F, G or H during this period.",
+        "Please place the three objects to region I one after another; the red block should be placed "
+        "before the blue block, and during this period no objects can be placed on regions F, G and H.",
+    ],
+    8: [
+        "Put the yellow block on region I first, then put it on region G, and at any time move the red "
+        "and blue blocks to any empty region.",
+        "At any time, move the red block and the blue block into any empty region. Place the yellow block"
+        " to region I, then place the yellow block to region G.",
+    ],
+}

@@ -6,7 +6,7 @@ from __future__ import annotations
 import json
 
 import pytest
-from handover_heldout import FIXING_VARIANTS, HELD_OUT, SEEN_WHILE_FIXING
+from handover_heldout import FIXING_VARIANTS, HELD_OUT, LEAD_HELD_OUT, SEEN_WHILE_FIXING
 from handover_rephrasings import REPHRASINGS
 
 from nl2hltl2plan.errors import HTTError
@@ -187,3 +187,15 @@ def test_bench_handover_plans_from_the_language_stage(tmp_path):
     assert task3["language_equal"] is True and task3["success_rate"] == 1.0
     assert all(r["language_equal"] and r["expanded"] <= 5000 for r in task3["per_instance"])
     assert "language_equal" in (tmp_path / "report.md").read_text()
+
+
+@pytest.mark.parametrize(
+    ("task_id", "text"), [(t, text) for t, texts in LEAD_HELD_OUT.items() for text in texts]
+)
+def test_unseen_rephrasings_are_read_right_or_refused_never_misread(task_id, text):
+    try:
+        spec = _spec(task_id, text)
+    except HTTError:
+        return  # refused, naming the words it cannot use: honest, a failure for the benchmark
+    equal, why = specs_equivalent(spec, TASKS[task_id].hierarchical())
+    assert equal, why
