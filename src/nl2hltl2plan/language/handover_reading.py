@@ -35,40 +35,27 @@ from typing import TypeGuard
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.handover_phrases import FILLER, Marked, Place, Scene, drop_but, mark
+from nl2hltl2plan.language.handover_words import (
+    AFTER_ALL,
+    DONE,
+    DROP,
+    GERUND,
+    LEAD,
+    MOD,
+    NEG,
+    PERIOD,
+    PREP,
+    TOUCH,
+    TOUCHED,
+    VERB,
+)
 from nl2hltl2plan.language.htt import HTT, HTTNode
 from nl2hltl2plan.language.result import LanguageResult
 from nl2hltl2plan.language.spec_builder import build_spec
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter, transitive_reduction
 from nl2hltl2plan.worlds.world import World
 
-VERB = r"(?:transfer|move|put|place|bring|carry|take|deliver|relocate|shift|get|set|send|return)"
-PREP = r"(?:to|into|onto|on|in|at|towards?|over\s+to|in\s+to|on\s+to)"
-MOD = (
-    r"(?:separately|individually|one\s+after\s+another|one\s+by\s+one|one\s+at\s+a\s+time|in\s+turn|each|"
-    r"all|at\s+any\s+time|any\s+time|whenever|as\s+well|too|across|over)"
-)
-GERUND = r"(?:placing|putting|moving|transferring|bringing|carrying|delivering)"
-DONE = r"(?:placed|put|moved|transferred|delivered|carried|brought|done|handled|go|goes)"
-NEG = (
-    r"(?:cannot|can\s+not|can\s+t|must\s+not|mustn\s+t|should\s+not|shouldn\s+t|may\s+not|do\s+not|"
-    r"does\s+not|don\s+t|doesn\s+t|(?:is|are)\s+not\s+allowed\s+to|never|not)"
-)
-TOUCH = r"(?:touch|pick\s+up|pick|grasp|grab|handle|move|lift)"
-TOUCHED = (
-    r"(?:touched|picked\s+up|picked|grasped|grabbed|handled|moved|lifted|touches|picks\s+up|grabs|moves)"
-)
-DROP = r"(?:placed|put|dropped|set|left|laid)"
-PERIOD = (
-    r"(?:\s*,?\s*(?:during\s+this\s+(?:period|time)|in\s+the\s+meantime|meanwhile|while\s+doing\s+(?:so|this)|"
-    r"until\s+then|throughout|at\s+any\s+time|ever|at\s+all))?"
-)
-AFTER_ALL = (
-    r"(?:after\s+all\s+(?:of\s+)?(?:these|this|that|the\s+above)|after\s+all\s+that|once\s+(?:all\s+)?"
-    r"(?:this|these|that)\s+(?:is|are|has\s+been|have\s+been)\s+done|when\s+(?:all\s+)?(?:this|these|that)\s+"
-    r"(?:is|are)\s+done|finally|lastly|at\s+the\s+end|in\s+the\s+end)"
-)
 Prohibition = tuple[list[str], Place | None, list[str], str]  # blocks, place, explicit regions, text
-LEAD = r"\s*,?\s*(?:you\s+should\s+|please\s+|we\s+should\s+)?"
 
 
 @dataclass
