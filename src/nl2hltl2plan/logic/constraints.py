@@ -63,10 +63,18 @@ class Constraint:
         text = f"G !({bad})" if self.until is None else f"!({bad}) U {self.until}"
         return sb.parse(text).text
 
+    @cached_property
+    def _verdicts(self) -> dict[str, bool]:
+        """atom -> `forbids(atom)`: the planner asks about the same few atoms at every successor."""
+        return {}
+
     def forbids(self, atom: str) -> bool:
         """Does some pattern match the action atom `atom` (type level: `put(Mug,SinkBasin)`)?"""
-        a = Atom.read(atom)
-        return a is not None and any(p.covers(a) for p in self.patterns)
+        verdict = self._verdicts.get(atom)
+        if verdict is None:
+            a = Atom.read(atom)
+            verdict = self._verdicts[atom] = a is not None and any(p.covers(a) for p in self.patterns)
+        return verdict
 
     def lifted(self, completed_at: int | None, t: int) -> bool:
         """Is the ban lifted for an event at step t, when `until` completed at `completed_at`?"""

@@ -162,28 +162,15 @@ class HandoverWorld:
         lay = self.layout
         free = [(c * CELL_M, r * CELL_M) for r, c in sorted(lay.cells)]
         block_types = tuple(f"{b}Block" for b in BLOCKS)
-        objects = []
-        for b, (r, c) in self.blocks.items():
-            objects.append(
-                WorldObject(
-                    id=f"{b}Block_0",
-                    type=f"{b}Block",
-                    position=(c * CELL_M, 0.0, r * CELL_M),
-                    affordances=Affordances(pickupable=True),
-                    interaction_cells=((r, c),),
-                    parent=f"Region{lay.region_at[(r, c)]}_0" if (r, c) in lay.region_at else None,
-                )
+        pickup = Affordances(pickupable=True)
+        objects = [
+            _grid_object(
+                f"{b}Block", cell, pickup, f"Region{lay.region_at[cell]}_0" if cell in lay.region_at else None
             )
-        for name, (r, c) in lay.regions.items():
-            objects.append(
-                WorldObject(
-                    id=f"Region{name}_0",
-                    type=f"Region{name}",
-                    position=(c * CELL_M, 0.0, r * CELL_M),
-                    affordances=Affordances(receptacle=True, accepts=frozenset(block_types)),
-                    interaction_cells=((r, c),),
-                )
-            )
+            for b, cell in self.blocks.items()
+        ]
+        region = Affordances(receptacle=True, accepts=frozenset(block_types))
+        objects += [_grid_object(f"Region{name}", cell, region) for name, cell in lay.regions.items()]
         return World.create(
             self.name,
             free,
@@ -192,6 +179,19 @@ class HandoverWorld:
             default_starts=self.arm_starts,
             notes=[f"four-arm handover world ({lay.name}); plan it with planning.coop"],
         )
+
+
+def _grid_object(type_: str, cell: Cell, affordances: Affordances, parent: str | None = None) -> WorldObject:
+    """The one object of `type_` standing on a grid cell (a block or a region), used from that cell."""
+    r, c = cell
+    return WorldObject(
+        id=f"{type_}_0",
+        type=type_,
+        position=(c * CELL_M, 0.0, r * CELL_M),
+        affordances=affordances,
+        interaction_cells=(cell,),
+        parent=parent,
+    )
 
 
 def random_instance(config: str, placement: dict[str, list[str]], seed: int) -> HandoverWorld:
