@@ -305,7 +305,7 @@ def _words(
         ):
             unread = Unread(w, "negation", NO_CONSTRAINT)
         elif _count_value(cats, w) is not None or cats & {"quantifier_all", "quantifier_vague"}:
-            unread = _count(instruction, toks[i], cats, mentions, parse, instances, scene)
+            unread = _count(instruction, toks, i, cats, mentions, parse, instances, scene)
         if unread is not None:
             out.append(unread)
     return out
@@ -406,7 +406,8 @@ def _noun(w: str, cats: set[str]) -> Unread | None:
 
 def _count(
     instruction: str,
-    tok: tuple[str, int, int],
+    toks: list[tuple[str, int, int]],
+    i: int,
     cats: set[str],
     mentions: list[Mention],
     parse: ParseUsage,
@@ -414,9 +415,8 @@ def _count(
     scene: str,
 ) -> Unread | None:
     """A count before a noun: the task on that noun takes exactly so many (every one for "all")."""
-    w, start, _ = tok
-    toks = tokens(instruction)
-    m = _next_mention(mentions, [t[0] for t in toks], [t[1] for t in toks].index(start))
+    w, start, _ = toks[i]
+    m = _next_mention(mentions, [t[0] for t in toks], i)
     if m is None or re.search(r"[,.;:!?]", instruction[start : m.char_start]):
         return None
     types = set(m.entry.types)

@@ -534,4 +534,4 @@ def _constraints(root: Item, goals: list[Goal], notes: list[str]) -> list[str]:
 
 def _joint_texts(item: Item) -> list[str]:
     own = [item.text] if item.joint else []
-    return sorted(own + [t for c in item.children for t in _joint_texts(c)])
+    return own + [t for c in item.children for t in _joint_texts(c)]  # `_constraints` sorts them

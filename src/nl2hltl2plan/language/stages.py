@@ -28,6 +28,7 @@ from nl2hltl2plan.domain.task_kinds import State
 from nl2hltl2plan.errors import LLMError
 from nl2hltl2plan.language import semantic_check
 from nl2hltl2plan.language.llm.client import LLMClient, Validator
+from nl2hltl2plan.language.negations import ALL_VERBS, STATE_VERBS
 from nl2hltl2plan.language.prompts import load_prompt
 from nl2hltl2plan.language.task_specs import Kind
 from nl2hltl2plan.logic.atom import Atom
@@ -138,10 +139,8 @@ class DecompNode(BaseModel):
         return TaskFields.model_validate(self.model_dump(exclude={"subtasks"}))
 
 
-CONSTRAINT_VERBS = (
-    *("put", "pickup", "open", "close", "toggle_on", "toggle_off", "slice", "break", "use"),
-    *("heat", "cool", "clean"),  # the object becomes hot / cold / clean
-)
+# the actions a negation forbids (`negations`), as the LLM names them ("use": every action on the thing)
+CONSTRAINT_VERBS = ("put", *ALL_VERBS, "use", *STATE_VERBS)
 
 
 class ConstraintWords(BaseModel):

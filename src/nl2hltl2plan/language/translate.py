@@ -22,6 +22,7 @@ from __future__ import annotations
 import contextlib
 from collections import Counter
 from collections.abc import Callable, Iterator, Sequence
+from dataclasses import asdict
 from typing import TYPE_CHECKING, Literal, Protocol, Self, TypeVar, get_args
 
 from nl2hltl2plan.domain.task_kinds import SLOTS, State
@@ -116,7 +117,7 @@ def translate(
         rest, negations = read_negations(instruction, grounder, look)
         if negations and not rest.strip(" ,.;!?"):
             raise HTTError(nothing_to_do(instruction, [n.spec for n in negations]))
-        res = _parse(backend, rest, types, scene, strict, look, world)
+        res = _parse(backend, rest, grounder, strict, look, world)
         if negations:
             res = _keep_negations(res, instruction, negations, grounder)
         picked = dict(choices or {})
@@ -198,15 +199,7 @@ def _finish(
     if build and leaf_specs:
         res = _attach_spec(res, ltl, client)
     if client is not None:
-        st = client.stats
-        llm_calls = {
-            "requests": st.requests,
-            "sent": st.sent,
-            "cached": st.cached,
-            "reasks": st.reasks,
-            "retries": st.retries,
-        }
-        res = res.model_copy(update={"llm_calls": llm_calls})
+        res = res.model_copy(update={"llm_calls": asdict(client.stats)})
     return res
 
 
@@ -257,23 +250,24 @@ def recipe_leaf_specs(
 def _parse(
     backend: str,
     instruction: str,
-    types: set[str] | None,
-    scene: str | None,
+    grounder: Grounder,
     strict: bool,
     look: AffordanceLookup | None,
     world: SceneLike | None = None,
 ) -> LanguageResult:
     """A backend that needs no LLM (`parsers.PARSERS`), with the state and treatment requests it cannot
     read (`state_tasks`)."""
-    reader = _state_reader(types, scene, world)
+    types = set(grounder.types) if grounder.types is not None else None
+    scene = world.name if world is not None else None
+    reader = _state_reader(grounder, world)
     parsed = _parsed_and_reread(PARSERS[backend], instruction, types, scene, strict, look, reader)
     if parsed.unparsed:  # clauses that change or treat one object (SMART-LLM's skills and goals)
         states, left = reader.read_unparsed(parsed.unparsed, parsed.tasks)
         parsed = _relettered(
             parsed.model_copy(update={"unparsed": left}), [[t] for t in parsed.tasks], states
         )
-    if isinstance(world, World) and parsed.tasks:  # "all the mugs": every instance the scene holds
-        every = take_every_instance(instruction, parsed.tasks, scene_instances(world))
+    if reader.counts is not None and parsed.tasks:  # "all the mugs": every instance the scene holds
+        every = take_every_instance(instruction, parsed.tasks, reader.counts)
         parsed = parsed.model_copy(update={"tasks": every})
     if not parsed.tasks:
         # the words that make it so (a negation, a skill no task has, a person), named first
@@ -307,9 +301,9 @@ def _parse(
     )
 
 
-def _state_reader(types: set[str] | None, scene: str | None, world: SceneLike | None) -> StateReader:
-    """The reader of state and treatment requests (`state_tasks`) for this scene."""
-    grounder = Grounder(types, scene or "the scene")
+def _state_reader(grounder: Grounder, world: SceneLike | None) -> StateReader:
+    """The reader of state and treatment requests (`state_tasks`) for this scene (its object counts
+    when the scene is a `World`)."""
     if not isinstance(world, World):
         return StateReader(grounder)
 

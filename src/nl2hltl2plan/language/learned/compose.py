@@ -15,7 +15,7 @@ import random
 import re
 from dataclasses import dataclass
 
-from nl2hltl2plan.language.learned.faithful import FaithfulExample
+from nl2hltl2plan.language.learned.faithful import FaithfulExample, by_floor_plan
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter
 
 # Relation of a span to what came before it (text order): START the first; SEQ after the current step;
@@ -262,9 +262,7 @@ def synthesise(items: list[FaithfulExample], n: int, style: Connectives, seed: i
     from nl2hltl2plan.language.learned.span_order import before_pairs
 
     rng = random.Random(seed)
-    by_plan: dict[str, list[FaithfulExample]] = {}
-    for it in items:
-        by_plan.setdefault(it.example.floor_plan, []).append(it)
+    by_plan = by_floor_plan(items)
     plans = sorted(by_plan)
     out: list[Synth] = []
     while len(out) < n:

@@ -146,12 +146,18 @@ def _clause(text: str) -> str:
     return t[:1].lower() + t[1:] if t else t
 
 
-def compose_faithful(items: list[FaithfulExample], n: int, seed: int = 0) -> list[Composition]:
-    """`n` instructions of 1-4 base tasks (a quarter each), each from one floor plan (deterministic)."""
-    rng = random.Random(seed)
+def by_floor_plan(items: list[FaithfulExample]) -> dict[str, list[FaithfulExample]]:
+    """The examples grouped by floor plan (one composed instruction draws from one plan)."""
     by_plan: dict[str, list[FaithfulExample]] = {}
     for it in items:
         by_plan.setdefault(it.example.floor_plan, []).append(it)
+    return by_plan
+
+
+def compose_faithful(items: list[FaithfulExample], n: int, seed: int = 0) -> list[Composition]:
+    """`n` instructions of 1-4 base tasks (a quarter each), each from one floor plan (deterministic)."""
+    rng = random.Random(seed)
+    by_plan = by_floor_plan(items)
     plans = sorted(by_plan)
     out: list[Composition] = []
     while len(out) < n and plans:
