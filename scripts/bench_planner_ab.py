@@ -31,7 +31,7 @@ from typing import Any
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from bench_planner_large import pooled_instance  # noqa: E402
-from bench_tables import emit  # noqa: E402
+from bench_tables import add_run_file_arguments, append_jsonl, emit, emit_from_jsonl  # noqa: E402
 from planner_validation import scenarios  # noqa: E402
 
 from nl2hltl2plan.worlds.floor_plans import benchmark_issues, build_benchmark_world  # noqa: E402
@@ -96,9 +96,7 @@ def measure(todo: list[dict[str, Any]], a: Side, b: Side, out: str | None) -> li
         got = {side.name: side.run(job) for side in order}
         row = {k: job[k] for k in ("id", "tasks", "robots")} | {"A": got["A"], "B": got["B"]}
         rows.append(row)
-        if out:
-            with open(out, "a") as fh:
-                fh.write(json.dumps(row) + "\n")
+        append_jsonl(out, row)
         ra, rb = got["A"], got["B"]
         print(f"{job['id']:<40} {job['tasks']} x {job['robots']:>2}: A {ra.get('wall_s', 0):7.2f} s "
               f"cost {ra.get('total_cost')} | B {rb.get('wall_s', 0):7.2f} s cost {rb.get('total_cost')}",
@@ -156,12 +154,9 @@ def main() -> int:
     ap.add_argument("--pooled", default="", help="pooled FloorPlan7 sizes, a range lo-hi (none)")
     ap.add_argument("--pooled-robots", default="4,10")
     ap.add_argument("--fresh", action="store_true", help="a new worker process per run")
-    ap.add_argument("--jsonl", default=None, help="also append one JSON line per scenario to this file")
-    ap.add_argument("--from-jsonl", default=None, help="only print the table of the runs in this file")
-    ap.add_argument("--out", default=None, help="also write the table here (with command, commit, machine)")
+    add_run_file_arguments(ap, unit="scenario")
     args = ap.parse_args()
-    if args.from_jsonl:
-        emit(table([json.loads(line) for line in open(args.from_jsonl)]), args.out)
+    if emit_from_jsonl(args, table):
         return 0
     if not args.base or not (Path(args.base) / "src" / "nl2hltl2plan").is_dir():
         print(f"error: --base must be a checkout with src/nl2hltl2plan, got {args.base!r}", file=sys.stderr)

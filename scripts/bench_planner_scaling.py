@@ -15,7 +15,6 @@ their estimated memory.
 from __future__ import annotations
 
 import argparse
-import json
 import resource
 import statistics
 import sys
@@ -26,7 +25,7 @@ from typing import Any
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from bench_planner_large import SCENES, pooled_instance  # noqa: E402
-from bench_tables import emit  # noqa: E402
+from bench_tables import add_run_file_arguments, append_jsonl, emit, emit_from_jsonl  # noqa: E402
 
 from nl2hltl2plan.planning import oracle_spec, plan  # noqa: E402
 from nl2hltl2plan.worlds.checker import check  # noqa: E402
@@ -61,9 +60,7 @@ def run(scenes: list[str], sizes: list[int], robots: list[int], exact_upto: int,
                         "cost": r.total_cost, "bound": r.bound, "proven": r.proven_optimal,
                         "peak_nodes": r.peak_nodes, "memory_mb": r.memory_mb, "stopped": str(r.stopped),
                         "cpu_s": cpu, "rss_mb": rss_mb})
-                    if out:
-                        with open(out, "a") as fh:
-                            fh.write(json.dumps(rows[-1]) + "\n")
+                    append_jsonl(out, rows[-1])
                     print(".", end="", flush=True, file=sys.stderr)
     print(file=sys.stderr)
     return rows
@@ -98,12 +95,9 @@ def main() -> int:
     ap.add_argument("--exact-upto", type=int, default=0, help="also run exact mode up to this many tasks (0)")
     ap.add_argument("--exact-timeout", type=float, default=60.0,
                     help="exact mode's wall-clock last resort (60 s)")
-    ap.add_argument("--jsonl", default=None, help="also append one JSON line per run to this file")
-    ap.add_argument("--from-jsonl", default=None, help="only print the table of the runs in this file")
-    ap.add_argument("--out", default=None, help="also write the table here (with command, commit, machine)")
+    add_run_file_arguments(ap)
     args = ap.parse_args()
-    if args.from_jsonl:
-        emit(table([json.loads(line) for line in open(args.from_jsonl)]), args.out)
+    if emit_from_jsonl(args, table):
         return 0
     lo, hi = (int(x) for x in args.tasks.split("-"))
     rows = run(SCENES[: args.scenes], list(range(lo, hi + 1)), [int(x) for x in args.robots.split(",")],

@@ -13,13 +13,13 @@ work would it have spent. Never reads the evaluation set.
 from __future__ import annotations
 
 import argparse
-import json
 import sys
 from pathlib import Path
 from typing import Any
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
+from bench_tables import append_jsonl  # noqa: E402
 from planner_validation import scenarios  # noqa: E402
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError  # noqa: E402
@@ -80,9 +80,7 @@ def record(instances: int, robots: list[int], out: str | None) -> list[dict[str,
                 continue
             runs.append({"id": gt.id, "robots": k, "bound": r.bound, "stopped": str(r.stopped),
                          "work": rec.work, "rises": rec.rises, "plans": rec.plans})
-            if out:
-                with open(out, "a") as fh:
-                    fh.write(json.dumps(runs[-1]) + "\n")
+            append_jsonl(out, runs[-1])
             print(".", end="", flush=True, file=sys.stderr)
     print(file=sys.stderr)
     return runs

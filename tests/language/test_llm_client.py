@@ -4,11 +4,11 @@ timeouts, format fallback, the answer cache and batch files."""
 from __future__ import annotations
 
 import json
-import threading
 import time
-from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
+from http.server import BaseHTTPRequestHandler
 
 import pytest
+from http_stub import start_server, stop_server
 from pydantic import BaseModel, Field
 
 from nl2hltl2plan.errors import LLMError
@@ -260,16 +260,13 @@ class Misbehaving:
                 self.end_headers()
                 self.wfile.write(body)
 
-        self.server = ThreadingHTTPServer(("127.0.0.1", 0), Handler)
-        self.server.daemon_threads = True
-        threading.Thread(target=self.server.serve_forever, args=(0.05,), daemon=True).start()
+        self.server = start_server(Handler)
 
     def url(self, kind: str) -> str:
         return f"http://127.0.0.1:{self.server.server_address[1]}/{kind}/v1"
 
     def close(self) -> None:
-        self.server.shutdown()
-        self.server.server_close()
+        stop_server(self.server)
 
 
 @pytest.fixture

@@ -8,13 +8,13 @@ import os
 import socket
 import subprocess
 import sys
-import threading
 from collections.abc import Iterator
-from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
+from http.server import BaseHTTPRequestHandler
 from pathlib import Path
 from typing import Any
 
 import pytest
+from http_stub import start_server, stop_server
 from pydantic import BaseModel, ValidationError
 
 from nl2hltl2plan.cli.main import main
@@ -80,12 +80,9 @@ def brackets_server() -> Iterator[str]:
             self.end_headers()
             self.wfile.write(body)
 
-    server = ThreadingHTTPServer(("127.0.0.1", 0), Handler)
-    server.daemon_threads = True
-    threading.Thread(target=server.serve_forever, args=(0.05,), daemon=True).start()
+    server = start_server(Handler)
     yield f"http://127.0.0.1:{server.server_address[1]}/v1"
-    server.shutdown()
-    server.server_close()
+    stop_server(server)
 
 
 def test_nested_brackets_from_a_server(brackets_server: str, capsys: pytest.CaptureFixture[str]) -> None:

@@ -15,11 +15,11 @@ Every file is written to a temporary name and renamed, so a killed run leaves no
 from __future__ import annotations
 
 import json
-import os
 from pathlib import Path
 from typing import Any
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
+from nl2hltl2plan.io import atomic_path, save_figure
 from nl2hltl2plan.pipeline import Outcome
 
 PICTURES = ("htt", "world", "plan", "gantt")
@@ -35,9 +35,8 @@ def output_names(has_plan: bool, formats: tuple[str, ...] = FORMATS) -> list[str
 
 
 def _replace(path: Path, data: bytes) -> None:
-    tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
-    tmp.write_bytes(data)
-    os.replace(tmp, path)
+    with atomic_path(path, "output file") as tmp:
+        tmp.write_bytes(data)
 
 
 def _figure(outcome: Outcome, name: str) -> Any:
@@ -72,8 +71,6 @@ def write_outputs(
 ) -> list[str]:
     """Write the run's files into `folder` (it must exist); returns warnings (a file not written and
     why: an automaton too large for Spot's limits leaves spec.hoa out)."""
-    import io
-
     import matplotlib.pyplot as plt
 
     out = Path(folder)
@@ -82,20 +79,20 @@ def write_outputs(
     _replace(out / "result.json", json.dumps(result, indent=1, default=str).encode())
     _replace(out / "spec.json", outcome.spec.to_json(indent=1).encode())  # with its constraints, if any
     try:
-        _replace(out / "spec.hoa", _hoa(outcome).encode())
+        hoa = _hoa(outcome)
     except Nl2Hltl2PlanError as exc:
         warnings.append(f"spec.hoa not written: {exc}")
+    else:
+        _replace(out / "spec.hoa", hoa.encode())
     has_plan = outcome.result.execution is not None
     for name in PICTURES:
         if name in PLAN_PICTURES and not has_plan:
             continue
         fig = _figure(outcome, name)
         try:
+            dpi = "figure" if name == "htt" else DPI  # the tree chooses its own, to fit 1,600 px
             for fmt in formats:
-                buf = io.BytesIO()
-                dpi = "figure" if name == "htt" else DPI  # the tree chooses its own, to fit 1,600 px
-                fig.savefig(buf, format=fmt, dpi=dpi, bbox_inches="tight")
-                _replace(out / f"{name}.{fmt}", buf.getvalue())
+                save_figure(fig, out / f"{name}.{fmt}", "picture", dpi=dpi, bbox_inches="tight")
         finally:
             plt.close(fig)
     return warnings

@@ -3,9 +3,10 @@ semantics of `runner.run_scenarios`, but runs each scenario as a Ray task, on th
 cluster (`address`), so an evaluation can outgrow one machine.
 
 - Rows: `{**scenario fields, "key": ..., **job row}` appended to `out` (JSON lines) as they finish,
-  exactly as the local engine writes them; with `resume`, scenarios already in `out` are skipped
-  (the file is repaired first by `runner.load_rows`: torn lines are reported and dropped); without,
-  `out` is started afresh. Worker count and time limit are checked as the local engine checks them.
+  exactly as the local engine writes them (both keep `out` with `runner.ResultsFile`): with `resume`,
+  scenarios already in `out` are skipped except "error" rows, which run again (the file is repaired
+  first: torn lines are reported and dropped); without, `out` is started afresh. Worker count and
+  time limit are checked as the local engine checks them.
 - A job that raises gives an "error" row with the same one-line reason (`deadline.describe_exception`);
   a task that runs past `hard_timeout_s` (counted from its submission, at most `workers` tasks in
   flight) is cancelled with force (its worker process is killed) and gives the same "timeout" row
@@ -19,10 +20,8 @@ cluster (`address`), so an evaluation can outgrow one machine.
 from __future__ import annotations
 
 import functools
-import json
 import time
 from collections.abc import Callable, Iterable
-from dataclasses import asdict
 from pathlib import Path
 from typing import Any
 
@@ -30,10 +29,10 @@ from nl2hltl2plan.deadline import describe_exception
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.suites.runner import (
     Notes,
+    ResultsFile,
     Row,
     Scenario,
     check_limits,
-    load_rows,
     run_scenarios,
     stderr_note,
 )
@@ -93,32 +92,16 @@ def run_scenarios_ray(
     ray = _ray()
     scenarios = list(scenarios)
     workers = check_limits(workers, hard_timeout_s)
-    out.parent.mkdir(parents=True, exist_ok=True)
-    if not resume and out.exists():
-        out.unlink()
-    done = load_rows(out, notes)
-    todo = [s for s in scenarios if s.key not in done]
-    started_here = _connect(ray, address, workers) if todo else False
-    finished = len(scenarios) - len(todo)
+    results = ResultsFile(out, scenarios, resume, progress, notes)
+    started_here = _connect(ray, address, workers) if results.todo else False
     try:
-        with out.open("a") as sink:
-
-            def record(scenario: Scenario, row: Row) -> None:
-                nonlocal finished
-                row = {**asdict(scenario), "key": scenario.key, **row}
-                done[scenario.key] = row
-                sink.write(json.dumps(row) + "\n")
-                sink.flush()
-                finished += 1
-                if progress:
-                    progress(row, finished, len(scenarios))
-
-            if todo:
-                _loop(ray, todo, job, workers, hard_timeout_s, record)
+        with results:
+            if results.todo:
+                _loop(ray, results.todo, job, workers, hard_timeout_s, results.record)
     finally:
         if started_here:
             ray.shutdown()
-    return [done[s.key] for s in scenarios if s.key in done]
+    return results.rows()
 
 
 def _loop(

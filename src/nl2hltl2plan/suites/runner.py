@@ -127,6 +127,58 @@ def check_limits(workers: int | None, hard_timeout_s: float) -> int:
     return workers or os.cpu_count() or 1
 
 
+class ResultsFile:
+    """A run's JSON-lines results file, as both engines keep it: the rows already there (`done`, the
+    file repaired by `load_rows`; without `resume` it is started afresh), the scenarios still to run
+    (`todo`: not there yet, or there as an "error"), and `record`, which appends a finished row."""
+
+    def __init__(
+        self,
+        out: Path,
+        scenarios: list[Scenario],
+        resume: bool,
+        progress: Callable[[Row, int, int], None] | None,
+        notes: Notes | None,
+    ) -> None:
+        self.out, self.scenarios, self._progress = out, scenarios, progress
+        try:
+            out.parent.mkdir(parents=True, exist_ok=True)
+            if not resume and out.exists():
+                out.unlink()
+            self.done = load_rows(out, notes)
+        except OSError as exc:
+            raise self._unwritable(exc) from None
+        done = self.done
+        self.todo = [s for s in scenarios if s.key not in done or done[s.key].get("status") == "error"]
+        self._finished = len(scenarios) - len(self.todo)
+
+    def _unwritable(self, exc: OSError) -> RunnerError:
+        return RunnerError(f"cannot write the results file {self.out}: {exc.strerror}")
+
+    def __enter__(self) -> ResultsFile:
+        try:
+            self._sink = self.out.open("a")
+        except OSError as exc:
+            raise self._unwritable(exc) from None
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self._sink.close()
+
+    def record(self, scenario: Scenario, row: Row) -> None:
+        row = {**asdict(scenario), "key": scenario.key, **row}
+        self.done[scenario.key] = row
+        self._sink.write(json.dumps(row) + "\n")
+        self._sink.flush()
+        self._finished += 1
+        if self._progress:
+            self._progress(row, self._finished, len(self.scenarios))
+
+    def rows(self) -> list[Row]:
+        """The rows of every scenario that has one, in the scenarios' order."""
+        return [self.done[s.key] for s in self.scenarios if s.key in self.done]
+
+
 def run_scenarios(
     scenarios: Iterable[Scenario],
     job: Callable[[Scenario], Row],
@@ -140,35 +192,15 @@ def run_scenarios(
     """Run every scenario (in parallel, each in its own process) and return the rows in order."""
     scenarios = list(scenarios)
     n_workers = check_limits(workers, hard_timeout_s)
-    try:
-        out.parent.mkdir(parents=True, exist_ok=True)
-        if not resume and out.exists():
-            out.unlink()
-        done = load_rows(out, notes)
-        sink = out.open("a")
-    except OSError as exc:
-        raise RunnerError(f"cannot write the results file {out}: {exc.strerror}") from None
-    todo = [s for s in scenarios if s.key not in done or done[s.key].get("status") == "error"]
+    results = ResultsFile(out, scenarios, resume, progress, notes)
     running: dict[Child, Scenario] = {}
-    finished = len(scenarios) - len(todo)
-    with sink:
-
-        def record(scenario: Scenario, row: Row) -> None:
-            nonlocal finished
-            row = {**asdict(scenario), "key": scenario.key, **row}
-            done[scenario.key] = row
-            sink.write(json.dumps(row) + "\n")
-            sink.flush()
-            finished += 1
-            if progress:
-                progress(row, finished, len(scenarios))
-
+    with results:
         try:
-            _loop(todo, running, n_workers, hard_timeout_s, job, record)
+            _loop(results.todo, running, n_workers, hard_timeout_s, job, results.record)
         finally:
             for child in running:  # interrupted: leave no worker behind
                 child.kill()
-    return [done[s.key] for s in scenarios if s.key in done]
+    return results.rows()
 
 
 def _loop(

@@ -42,6 +42,7 @@ from nl2hltl2plan.web.requests import (
     MAX_INSTRUCTION,
     MAX_ROBOTS,
     MAX_TIMEOUT_S,
+    WEB_BACKENDS,
     PlanRequest,
 )
 from nl2hltl2plan.worlds import BUILT_IN
@@ -133,7 +134,7 @@ def options() -> dict[str, Any]:
         "profiles": profiles,
         "objectives": {"min": "summed travel and actions (the paper's cost)", "minmax": "completion time"},
         "modes": {"fast": "anytime, with a proven bound", "exact": "proven optimal"},
-        "backends": ["offline", "grammar", "openai", "local"],
+        "backends": list(WEB_BACKENDS),
         "timeout_s": {"default": DEFAULT_TIMEOUT_S, "max": MAX_TIMEOUT_S},
         "max_instruction": MAX_INSTRUCTION,
         "max_body_bytes": MAX_BODY_BYTES,

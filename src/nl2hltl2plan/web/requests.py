@@ -5,7 +5,7 @@ Strict types: `"robots": true` is not 1 robot, `"robots": "2"` is not 2.
 
 from __future__ import annotations
 
-from typing import Any, Literal
+from typing import Any, Literal, get_args
 
 from pydantic import BaseModel, ConfigDict, Field, StrictBool, StrictInt, model_validator
 
@@ -15,6 +15,8 @@ MAX_ROBOTS = 8
 MAX_INSTRUCTION = MAX_INSTRUCTION_CHARS  # characters: the language stage's own cap, refused before any work
 MAX_TIMEOUT_S = 600.0
 DEFAULT_TIMEOUT_S = 60.0
+WebBackend = Literal["offline", "grammar", "openai", "local"]  # the page offers these, in this order
+WEB_BACKENDS: tuple[str, ...] = get_args(WebBackend)
 
 
 class PlanRequest(BaseModel):
@@ -33,7 +35,7 @@ class PlanRequest(BaseModel):
     team: list[str | dict[str, Any]] | None = Field(default=None, min_length=1, max_length=MAX_ROBOTS)
     objective: Literal["min", "minmax"] = "min"
     mode: Literal["fast", "exact"] = "fast"
-    backend: Literal["offline", "grammar", "openai", "local"] = "offline"
+    backend: WebBackend = "offline"
     timeout_s: float = Field(default=DEFAULT_TIMEOUT_S, gt=0, le=MAX_TIMEOUT_S, allow_inf_nan=False)
     choices: dict[str, str] = Field(default_factory=dict, max_length=64)  # "task.role" -> scene type
     pictures: StrictBool = True  # render the pictures and downloads after the plan
