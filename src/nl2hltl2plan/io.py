@@ -24,6 +24,7 @@ import contextlib
 import gzip
 import json
 import os
+import platform
 import secrets
 import stat
 import zlib
@@ -279,3 +280,9 @@ def check_output_file(path: str | Path, formats: tuple[str, ...] = (), what: str
         raise DataError(f"cannot write {what} {p}: it is a folder")
     ensure_writable_dir(p.parent if str(p.parent) else ".", f"folder of the {what}")
     return p
+
+
+def machine_description() -> str:
+    """The machine line every report states: system, architecture, cores and Python."""
+    cores = os.cpu_count()
+    return f"{platform.system()} {platform.machine()}, {cores} cores, Python {platform.python_version()}"

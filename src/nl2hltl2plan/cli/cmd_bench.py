@@ -122,11 +122,11 @@ def register(sub: Any) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    from nl2hltl2plan.io import machine_description
     from nl2hltl2plan.pipeline import PipelineOptions
     from nl2hltl2plan.suites.alfred.alfred_bench import alfred_scenarios, oracle_job, preload
     from nl2hltl2plan.suites.alfred.alfred_report import (
         failures_markdown,
-        machine_description,
         table1_markdown,
         write_report,
     )

@@ -34,7 +34,7 @@ from nl2hltl2plan.logic.automaton import DEAD, Dfa
 from nl2hltl2plan.logic.constraints import Constraint, breach
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
 from nl2hltl2plan.planning.leaves import DONE, Leaf, LeafAtom, check_stutter, compile_leaf, parse_atom
-from nl2hltl2plan.worlds.checker import STATE_EVENTS
+from nl2hltl2plan.worlds.checker import watches_states
 from nl2hltl2plan.worlds.plan import ACTION_ARITY
 from nl2hltl2plan.worlds.world import Cell, World
 
@@ -120,8 +120,8 @@ class Problem:
 
     @cached_property
     def watches_states(self) -> bool:
-        """Does a constraint forbid a change of state (`heat(Mug)`, `worlds.checker.STATE_EVENTS`)?"""
-        return any(p.verb in STATE_EVENTS.values() for c in self.constraints for p in c.patterns)
+        """Does a constraint forbid a change of state (`worlds.checker.watches_states`)?"""
+        return watches_states(self.constraints)
 
     def can_do(self, robot: int, atom: LeafAtom) -> bool:
         caps = self.capabilities[robot]

@@ -203,12 +203,19 @@ def constraint_violations(
     -> the step it completed (`logic.trace.check_trace`), which lifts an until-guard."""
     if not constraints:
         return []
-    types = _compiled(execution.world).types
     events = [(e.t, e.atom) for e in execution.events]
-    history = execution.state_history
-    for before, after in zip(history, history[1:], strict=False):
-        events += [(after.t, s) for s in state_events(types, before.flags, after.flags)]
+    if watches_states(constraints):
+        types = _compiled(execution.world).types
+        history = execution.state_history
+        for before, after in zip(history, history[1:], strict=False):
+            events += [(after.t, s) for s in state_events(types, before.flags, after.flags)]
     return violations(constraints, sorted(events), completed)
+
+
+def watches_states(constraints: Sequence[Constraint]) -> bool:
+    """Does a constraint forbid a change of state (`heat(Mug)`, `STATE_EVENTS`)? Only then are the
+    state events of a trace worth computing."""
+    return any(p.verb in STATE_EVENTS.values() for c in constraints for p in c.patterns)
 
 
 def state_events(types: Sequence[str], before: Sequence[int], after: Sequence[int]) -> list[str]:
