@@ -56,6 +56,7 @@ from nl2hltl2plan.worlds.simulator import PRESENT
 EMPTY = ""  # the hand right after a put
 NEAR_CACHE_LIMIT = 1_000  # per-anchor-set distance rows kept across nodes
 EVAL_WORK = 200  # an evaluation's fixed cost, in assignment-matrix cells (measured: ~1.5 ms vs ~7 us a cell)
+PENDING_CACHE_LIMIT = 20_000  # pending work kept per object state across nodes
 ROOT_EVALS = 64  # bound evaluations the root's search over instance choices spends (at most)
 
 
@@ -89,6 +90,7 @@ class Heuristic:
         self.carry_cache: dict[tuple, int] = {}  # carry minima of legs and regions (carries.py)
         self.legs_cache: dict[tuple, tuple[list[Leg], frozenset[str]]] = {}  # a leaf path's carry legs
         self._near_cache: dict[tuple[int, ...], np.ndarray] = {}
+        self._pending_cache: dict[tuple, Pending] = {}
         self.root_evals = ROOT_EVALS
 
     def _near(self, anchors: tuple[int, ...]) -> np.ndarray:
@@ -244,6 +246,35 @@ class Heuristic:
 
     def _evaluate(self, node: Node, fixed: dict[tuple[int, str], int]) -> tuple[int, int]:
         """The bound with some (leaf, type) pairs fixed to one region (their instance's)."""
+        pending = self._pending(node, fixed)
+        rows = pending.rows
+        if not rows and not pending.extra_events:
+            return 0, node.ms
+        carry = pending.carry
+        if carry < 0:  # an object is held: the carries depend on where its holder stands
+            carry = 0 if self.light else carry_total(self, node, pending.memo)
+        walk = self._assignment(node, rows, pending.optional, pending.hands, carry) if rows else carry
+        total = len(rows) + pending.extra_events + walk + pending.support
+        if not self.makespan:
+            return total, node.ms
+        chain = dict(pending.chain)
+        if self.p.n_robots and (chain or rows):
+            leaf_chains(self._near, self.rr, node, rows, chain)
+        return total, makespan_bound(self.x, node, total, chain)
+
+    def _pending(self, node: Node, fixed: dict[tuple[int, str], int]) -> Pending:
+        """What the node has still to do, as the bounds see it: a function of the objects' state
+        and the leaves' progress and bindings alone, not of where the robots are, so it is computed
+        once per such state (the same event done by another robot, or independent events in
+        another order, reach one) and shared by every node in it."""
+        key = None
+        if not fixed:
+            sim = node.sim
+            key = (tuple(sim.parent), tuple(sim.holder), tuple(sim.flags), tuple(sim.moved), node.q,
+                   node.bind, node.claimed, self.light)
+            hit = self._pending_cache.get(key)
+            if hit is not None:
+                return hit
         p = self.p
         memo: dict = {"fixed": fixed}
         for (li, t), region in fixed.items():
@@ -269,17 +300,15 @@ class Heuristic:
                                      base + event.carried if event.carried >= 0 else -1, event.holder,
                                      self._hand_id(lf.index, hand.need, hands),
                                      self._hand_id(lf.index, hand.after, hands), hand.full))
-        if not rows and not extra_events:
-            return 0, node.ms
-        carry = 0 if self.light else carry_total(self, node, memo)
-        walk = self._assignment(node, rows, optional, hands, carry) if rows else carry
+        held = any(obj >= 0 for obj in node.sim.hand.values())
+        carry = -1 if held else 0 if self.light or not (rows or extra_events) else carry_total(self, node, memo)
         support = forced_opens(self.x, self.required, node) + forced_closes(self.x, self.required, node)
-        total = len(rows) + extra_events + walk + support
-        if not self.makespan:
-            return total, node.ms
-        if p.n_robots and (chain or rows):
-            leaf_chains(self._near, self.rr, node, rows, chain)
-        return total, makespan_bound(self.x, node, total, chain)
+        out = Pending(rows, optional, hands, extra_events, chain, carry, support, memo)
+        if key is not None:
+            if len(self._pending_cache) > PENDING_CACHE_LIMIT:
+                self._pending_cache.clear()
+            self._pending_cache[key] = out
+        return out
 
     @staticmethod
     def _hand_id(leaf: int, type_: str | None, hands: dict[tuple[int, str], int]) -> int:
@@ -462,6 +491,19 @@ class Heuristic:
                     walks = self.field[rows, list(reach[0])] + np.array(reach[1])[None, :]
                     out[:, robot] = walks.min(axis=1)
         return out
+
+
+class Pending(NamedTuple):
+    """A node's pending work as the bounds see it (`Heuristic._pending`); shared, never changed."""
+
+    rows: list[EventRow]  # the events every completion does
+    optional: list[tuple[int, ...]]  # the regions of events some completions do
+    hands: dict[tuple[int, str], int]  # (leaf, held type) -> hand id
+    extra_events: int  # events of leaves whose alternatives differ in length (their least count)
+    chain: dict[int, tuple[int, int]]  # per leaf of `extra_events`: its makespan chain
+    carry: int  # the carries' least walking, -1 when a robot holds an object (then it depends on it)
+    support: int  # the support opens and closes every completion needs
+    memo: dict  # the pending events' candidate regions (`anchors_of`)
 
 
 class Hand(NamedTuple):

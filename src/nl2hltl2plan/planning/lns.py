@@ -63,9 +63,12 @@ def _best_insertion(x: Expander, objective: Objective, rest: list[Event], block:
     every robot: (value, events), or None (`goal`: only complete plans count)."""
     best: tuple[tuple[int, ...], list[Event]] | None = None
     prefix = _prefixes(x, rest)
+    starts = _leaf_starts(rest)
     for r in range(x.p.n_robots):
         moved = _as_robot(block, r)
         for pos in range(len(prefix)):
+            if not _may_insert(rest, pos, r, starts):
+                continue
             if not budget.take():
                 return best
             end = replay_from(x, prefix[pos], moved + rest[pos:], keep_stands=False)
@@ -75,6 +78,25 @@ def _best_insertion(x: Expander, objective: Objective, rest: list[Event], block:
             if best is None or val < best[0]:
                 best = (val, rest[:pos] + moved + rest[pos:])
     return best
+
+
+def _leaf_starts(rest: list[Event]) -> set[int]:
+    """The positions at which a leaf's first event stands."""
+    seen: set[int] = set()
+    out = set()
+    for pos, e in enumerate(rest):
+        if e.leaf not in seen:
+            seen.add(e.leaf)
+            out.add(pos)
+    return out
+
+
+def _may_insert(rest: list[Event], pos: int, robot: int, starts: set[int]) -> bool:
+    """The places worth trying for a block done by `robot`: right before one of its own events, before
+    a leaf starts (where the state other leaves leave behind, and their orderings, change) and at
+    the end. Between two of the robot's events, other robots' events move its walk by nothing, so
+    the other places repeat these for the summed cost."""
+    return pos == len(rest) or rest[pos].robot == robot or pos in starts
 
 
 def _replay(x: Expander, events: list[Event]) -> Node | None:

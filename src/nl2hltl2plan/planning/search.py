@@ -98,14 +98,17 @@ class Searcher:
         return k
 
     # ------------------------------------------------------------ seed
-    def beam(self, root: Node, width: int, limit: int, robots: frozenset[int] | None = None) -> Node | None:
+    def beam(self, root: Node, width: int, limit: int, robots: frozenset[int] | None = None,
+             ub: int | None = None) -> Node | None:
         """Beam search over macro successors (of `robots` only, when given); the cheapest goal
-        found, or None. Children are first ranked by an estimate (parent's f plus the walking the
-        step did), and only the best few get the full heuristic."""
+        found that costs less than `ub` (when given), or None. Children are first ranked by an
+        estimate (parent's f plus the walking the step did), and only the best few get the full
+        heuristic."""
         if root.h is None:
             self.score(root)
         layer = [root]
         best: Node | None = None
+        bar = float("inf") if ub is None else ub
         seen: set = set()
         while layer:
             children: list[tuple[float, int, Node]] = []
@@ -115,7 +118,7 @@ class Searcher:
                 for child in self.x.successors(node, limit=limit, macro=True, robots=robots):
                     self.stats.generated += 1
                     if self.x.is_goal(child):
-                        if best is None or self.cost(child) < self.cost(best):
+                        if self.cost(child) < (self.cost(best) if best is not None else bar):
                             best = child
                         continue
                     k = self.key(child)
@@ -128,7 +131,7 @@ class Searcher:
             for _, _, child in children[: 3 * width]:
                 self.check_time()
                 self.score(child)
-                if best is not None and child.f >= self.cost(best):
+                if child.f >= (self.cost(best) if best is not None else bar):
                     continue
                 scored.append(child)
             scored.sort(key=lambda n: (n.f, -n.g))
