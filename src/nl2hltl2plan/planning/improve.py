@@ -67,7 +67,8 @@ def improve(x: Expander, goal: Node, objective: Objective, max_evals: int,
                     break
                 check_time()
                 evals += 1
-                end = replay_from(x, path[start], cand[start:], keep_stands=False)
+                end = replay_from(x, path[start], cand[start:], keep_stands=False,
+                                  cutoff=lambda n, bar=best_val: objective.value(n) >= bar)
                 if end is None or not x.is_goal(end):
                     continue
                 val = objective.value(end)

@@ -71,7 +71,9 @@ def _best_insertion(x: Expander, objective: Objective, rest: list[Event], block:
                 continue
             if not budget.take():
                 return best
-            end = replay_from(x, prefix[pos], moved + rest[pos:], keep_stands=False)
+            bar = None if best is None else best[0]
+            end = replay_from(x, prefix[pos], moved + rest[pos:], keep_stands=False,
+                              cutoff=None if bar is None else lambda n, bar=bar: objective.value(n) >= bar)
             if end is None or (goal and not x.is_goal(end)):
                 continue
             val = objective.value(end)
