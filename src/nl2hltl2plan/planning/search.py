@@ -27,6 +27,7 @@ from nl2hltl2plan.planning.node import Node
 from nl2hltl2plan.planning.objective import DuplicateTable, Objective
 from nl2hltl2plan.planning.state import Expander
 
+BEAM_SCORED = 3  # a beam gives the full heuristic to this many children per slot (by estimate)
 NODE_BYTES = 4000  # rough memory of one stored search node (SimState copy, tuples), for reporting
 
 
@@ -128,7 +129,7 @@ class Searcher:
                     children.append((self.estimate(node, child), -child.g, child))
             children.sort(key=lambda c: (c[0], c[1]))
             scored = []
-            for _, _, child in children[: 3 * width]:
+            for _, _, child in children[: BEAM_SCORED * width]:
                 self.check_time()
                 self.score(child)
                 if child.f >= (self.cost(best) if best is not None else bar):
