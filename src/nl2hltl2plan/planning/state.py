@@ -458,7 +458,7 @@ class Expander:
                         if child is None:
                             continue
                         if macro and atom.verb == "pickup":
-                            child = self._carry_on(child, robot, leaf)
+                            child = self.carry_on(child, robot, leaf)
                         out.append(child)
                         made += 1
                         if limit is not None and made >= limit:
@@ -508,7 +508,7 @@ class Expander:
                     break
         return out
 
-    def _carry_on(self, node: Node, robot: int, leaf: Leaf) -> Node:
+    def carry_on(self, node: Node, robot: int, leaf: Leaf) -> Node:
         """Macro step: while the robot holds something for this leaf, do the leaf's next action
         (nearest choice) until the hand is empty, the leaf is done or nothing applies."""
         while node.sim.hand.get(robot, -1) >= 0 and node.q[leaf.index] != DONE:
