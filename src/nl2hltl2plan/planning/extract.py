@@ -61,6 +61,16 @@ def replay_from(x: Expander, node: Node, events: list[Event], stands: list[int] 
     return node
 
 
+def reaching(objective: Objective, bar: tuple[int, ...]) -> Callable[[Node], bool]:
+    """A replay's `cutoff`: the node's value already reaches `bar` (values only grow along a
+    replay: summed cost, makespan), so the candidate cannot beat it."""
+
+    def reached(node: Node) -> bool:
+        return objective.value(node) >= bar
+
+    return reached
+
+
 def refine_stand_cells(x: Expander, goal: Node, objective: Objective, force: bool = False) -> Node:
     """Per robot, the stand cells minimising its walk through its regions (kept if better; with
     `force`, always: the search with free stand cells left them to be chosen here)."""

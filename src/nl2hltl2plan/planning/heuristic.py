@@ -300,8 +300,11 @@ class Heuristic:
                                      base + event.carried if event.carried >= 0 else -1, event.holder,
                                      self._hand_id(lf.index, hand.need, hands),
                                      self._hand_id(lf.index, hand.after, hands), hand.full))
-        held = any(obj >= 0 for obj in node.sim.hand.values())
-        carry = -1 if held else 0 if self.light or not (rows or extra_events) else carry_total(self, node, memo)
+        carry = 0
+        if any(obj >= 0 for obj in node.sim.hand.values()):
+            carry = -1  # computed per node (`_evaluate`)
+        elif not self.light and (rows or extra_events):
+            carry = carry_total(self, node, memo)
         support = forced_opens(self.x, self.required, node) + forced_closes(self.x, self.required, node)
         out = Pending(rows, optional, hands, extra_events, chain, carry, support, memo)
         if key is not None:

@@ -18,7 +18,7 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 from itertools import combinations
 
-from nl2hltl2plan.planning.extract import replay_from
+from nl2hltl2plan.planning.extract import reaching, replay_from
 from nl2hltl2plan.planning.improve import segments
 from nl2hltl2plan.planning.node import Event, Node
 from nl2hltl2plan.planning.objective import Objective
@@ -75,7 +75,7 @@ def _best_insertion(x: Expander, objective: Objective, rest: list[Event], block:
                 return best
             bar = beat if best is None else best[0]
             end = replay_from(x, prefix[pos], moved + rest[pos:], keep_stands=False,
-                              cutoff=None if bar is None else lambda n, bar=bar: objective.value(n) >= bar)
+                              cutoff=None if bar is None else reaching(objective, bar))
             if end is None or (goal and not x.is_goal(end)):
                 continue
             val = objective.value(end)
