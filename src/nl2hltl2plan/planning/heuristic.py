@@ -56,6 +56,7 @@ from nl2hltl2plan.worlds.simulator import PRESENT
 EMPTY = ""  # the hand right after a put
 NEAR_CACHE_LIMIT = 1_000  # per-anchor-set distance rows kept across nodes
 EVAL_WORK = 200  # an evaluation's fixed cost, in assignment-matrix cells (measured: ~1.5 ms vs ~7 us a cell)
+TEMPLATE = "template"  # the key of a Pending's memo that holds its Template
 PENDING_CACHE_LIMIT = 20_000  # pending work kept per object state across nodes
 ROOT_EVALS = 64  # bound evaluations the root's search over instance choices spends (at most)
 
@@ -253,7 +254,7 @@ class Heuristic:
         carry = pending.carry
         if carry < 0:  # an object is held: the carries depend on where its holder stands
             carry = 0 if self.light else carry_total(self, node, pending.memo)
-        walk = self._assignment(node, rows, pending.optional, pending.hands, carry) if rows else carry
+        walk = self._assignment(node, pending, carry) if rows else carry
         total = len(rows) + pending.extra_events + walk + pending.support
         if not self.makespan:
             return total, node.ms
@@ -343,62 +344,27 @@ class Heuristic:
                 out.append((-1, False))
         return out
 
-    def _assignment(self, node: Node, rows: list[EventRow], optional: list[tuple[int, ...]],
-                    hands: dict[tuple[int, str], int], carry: int) -> int:
+    def _assignment(self, node: Node, pending: Pending, carry: int) -> int:
         """The largest of three bounds on the walking still needed: the assignment of distinct
         predecessors, the carries plus the pickups' approaches, and the spanning tree (bounds.py)."""
-        n_ev = len(rows)
-        anchor_sets = [row.anchors for row in rows]
-        cols = anchor_sets + optional
-        flat_a = [anchor for anchors in anchor_sets for anchor in (anchors or (-1,))]
-        flat_b = [anchor for anchors in cols for anchor in (anchors or (-1,))]
-        empty = [i for i, anchors in enumerate(anchor_sets) if not anchors]
-        a_idx = np.array(flat_a, dtype=np.int64)
-        b_idx = np.array(flat_b, dtype=np.int64)
-        a_starts = np.cumsum([0] + [max(1, len(anchors)) for anchors in anchor_sets[:-1]])
-        b_starts = np.cumsum([0] + [max(1, len(anchors)) for anchors in cols[:-1]])
-        # rows: events (successors); columns: predecessor events, then robots
-        sub = self.rr[b_idx[:, None], a_idx]  # (plain broadcasting: np.ix_ costs more per call)
-        if (b_idx < 0).any() or (a_idx < 0).any():
-            sub = sub.copy()
-            sub[b_idx < 0, :] = 0
-            sub[:, a_idx < 0] = 0
-        pred = np.minimum.reduceat(np.minimum.reduceat(sub, b_starts, axis=0), a_starts, axis=1)
-        robot = self.robot_walks(node, a_idx)
-        robot = np.minimum.reduceat(robot, a_starts, axis=0).T  # robots x events
-        cost = np.vstack([pred, robot]).T.astype(np.int64)  # events x (preds + robots)
-        if empty:
-            cost[empty, :] = 0
-        np.minimum(cost, BIG, out=cost)
-        leaf = np.array([row.leaf for row in rows])
-        pos = np.array([row.pos for row in rows])
-        kind = np.array([row.kind for row in rows])
-        n_pred = len(cols)
-        ev_cols = cost[:, :n_ev]
-        # a later (or the same) event of one's own leaf cannot come before
-        same = (leaf[:, None] == leaf[None, :]) & (pos[None, :] >= pos[:, None])
-        # an event of a leaf that starts only after mine is complete cannot come before
-        later = self.after[leaf[:, None], leaf[None, :]]
-        ev_cols[same | later] = BIG
-        # a carried object's put: after its pickup or a hands-full action, never another pick/put
-        for i, row in enumerate(rows):
-            if row.kind != PUT:
-                continue
-            carried, holder = row.carried, row.holder
-            if carried < 0 and holder < 0:
-                continue
-            bad = kind != OTHER
-            if carried >= 0:
-                bad = bad.copy()
-                bad[carried] = False
-            ev_cols[i, bad] = BIG
-            if carried >= 0:
-                cost[i, n_pred:] = BIG
-            else:
-                keep = cost[i, n_pred + holder]
-                cost[i, n_pred:] = BIG
-                cost[i, n_pred + holder] = keep
-        cost[:, :n_ev] = ev_cols
+        rows, hands = pending.rows, pending.hands
+        t = pending.memo.get(TEMPLATE)
+        if t is None:
+            t = pending.memo[TEMPLATE] = self._template(rows, pending.optional)
+        n_ev, n_pred, cols, kind, pred = len(rows), len(t.cols), t.cols, t.kind, t.pred
+        # rows: events (successors); columns: predecessor events (the template), then robots
+        robot = np.minimum.reduceat(self.robot_walks(node, t.a_idx), t.a_starts, axis=0)  # events x robots
+        walks = robot.astype(np.int64)
+        if t.empty:
+            walks[t.empty, :] = 0
+        np.minimum(walks, BIG, out=walks)
+        for i, holder in t.held_puts:  # a carried object's put: no robot's first event but its holder's
+            keep = walks[i, holder] if holder >= 0 else BIG
+            walks[i, :] = BIG
+            if holder >= 0:
+                walks[i, holder] = keep
+        cost = np.hstack([t.cost, walks])
+        robot = robot.T  # robots x events
         self.work += cost.size + EVAL_WORK
         self._hand_rules(node, rows, cost, n_ev, n_pred, hands)
         walk = solve(_with_last(cost, n_ev))
@@ -415,11 +381,59 @@ class Heuristic:
             walk = max(walk, solve(_with_last(compound, n_ev)))
         # the spanning tree over the events of one known region (an event with several candidate
         # regions would join far groups at no cost; leaving events out keeps it a bound)
-        fixed = [i for i, anchors in enumerate(anchor_sets) if len(anchors) == 1]
+        fixed = [i for i, row in enumerate(rows) if len(row.anchors) == 1]
         if len(fixed) > 1 or (fixed and walk == 0):
             ev = np.minimum(pred[np.array(fixed)[:, None], fixed], BIG)
             walk = max(walk, spanning_walk(ev, np.minimum(robot[:, fixed].min(axis=0), BIG)))
         return walk
+
+    def _template(self, rows: list[EventRow], optional: list[tuple[int, ...]]) -> Template:
+        """The robot-independent part of the assignment's cost matrix: events x predecessor events
+        with the order and hand rules applied (computed once per pending work, `Pending`)."""
+        n_ev = len(rows)
+        anchor_sets = [row.anchors for row in rows]
+        cols = anchor_sets + optional
+        flat_a = [anchor for anchors in anchor_sets for anchor in (anchors or (-1,))]
+        flat_b = [anchor for anchors in cols for anchor in (anchors or (-1,))]
+        empty = [i for i, anchors in enumerate(anchor_sets) if not anchors]
+        a_idx = np.array(flat_a, dtype=np.int64)
+        b_idx = np.array(flat_b, dtype=np.int64)
+        a_starts = np.cumsum([0] + [max(1, len(anchors)) for anchors in anchor_sets[:-1]])
+        b_starts = np.cumsum([0] + [max(1, len(anchors)) for anchors in cols[:-1]])
+        sub = self.rr[b_idx[:, None], a_idx]  # (plain broadcasting: np.ix_ costs more per call)
+        if (b_idx < 0).any() or (a_idx < 0).any():
+            sub = sub.copy()
+            sub[b_idx < 0, :] = 0
+            sub[:, a_idx < 0] = 0
+        pred = np.minimum.reduceat(np.minimum.reduceat(sub, b_starts, axis=0), a_starts, axis=1)
+        cost = pred.T.astype(np.int64)  # events x predecessors
+        if empty:
+            cost[empty, :] = 0
+        np.minimum(cost, BIG, out=cost)
+        leaf = np.array([row.leaf for row in rows])
+        pos = np.array([row.pos for row in rows])
+        kind = np.array([row.kind for row in rows])
+        ev_cols = cost[:, :n_ev]
+        # a later (or the same) event of one's own leaf cannot come before
+        same = (leaf[:, None] == leaf[None, :]) & (pos[None, :] >= pos[:, None])
+        # an event of a leaf that starts only after mine is complete cannot come before
+        later = self.after[leaf[:, None], leaf[None, :]]
+        ev_cols[same | later] = BIG
+        # a carried object's put: after its pickup or a hands-full action, never another pick/put
+        held_puts = []
+        for i, row in enumerate(rows):
+            if row.kind != PUT:
+                continue
+            carried, holder = row.carried, row.holder
+            if carried < 0 and holder < 0:
+                continue
+            bad = kind != OTHER
+            if carried >= 0:
+                bad = bad.copy()
+                bad[carried] = False
+            ev_cols[i, bad] = BIG
+            held_puts.append((i, -1 if carried >= 0 else holder))
+        return Template(cols, empty, a_idx, a_starts, pred, cost, kind, held_puts)
 
     def _approach_and_carry(self, node: Node, rows: list[EventRow], cols: list[tuple[int, ...]],
                             cost: np.ndarray) -> np.ndarray | None:
@@ -507,6 +521,19 @@ class Pending(NamedTuple):
     carry: int  # the carries' least walking, -1 when a robot holds an object (then it depends on it)
     support: int  # the support opens and closes every completion needs
     memo: dict  # the pending events' candidate regions (`anchors_of`)
+
+
+class Template(NamedTuple):
+    """The robot-independent part of the assignment relaxation of a `Pending` (`Heuristic._template`)."""
+
+    cols: list[tuple[int, ...]]  # the predecessor events' regions (the pending events, then optional ones)
+    empty: list[int]  # events with no region (a free first event)
+    a_idx: np.ndarray  # the events' regions, flattened
+    a_starts: np.ndarray  # where each event's regions start in `a_idx`
+    pred: np.ndarray  # predecessors x events: the least region-to-region walk
+    cost: np.ndarray  # events x predecessors, the order and hand rules applied (read-only)
+    kind: np.ndarray  # per event: OTHER, PICKUP or PUT
+    held_puts: list[tuple[int, int]]  # puts of a carried object: (event, its holder or -1: none)
 
 
 class Hand(NamedTuple):
