@@ -27,8 +27,11 @@ candidate is closed in). At the root, the bound is minimised over the instance c
 Completion time (`minmax`): `makespan.py`, from the same pending events (`relax.EventRow`); the
 summed cost skips it. `Heuristic.work` counts the cells of the assignment matrices solved (plus a
 fixed amount per evaluation): fast mode's A* budget is counted in it, so a large problem, whose
-evaluations cost more, gets fewer of them. `Heuristic.light` keeps only the assignment (the beam
-seeds rank children with it).
+evaluations cost more, gets fewer of them. `Heuristic.light` keeps only the assignment (fast mode's
+greedy and team beam seeds rank children with it). What depends on the objects' state alone, not on
+where the robots are (the pending events, their regions and hands, the forced opens and closes, the
+carries while nothing is held, the robot-independent part of the assignment matrix), is computed
+once per such state (`Pending`, `Template`) and shared by every node in it.
 """
 
 from __future__ import annotations
@@ -68,8 +71,8 @@ class Heuristic:
         # work done so far, in cells of assignment matrices solved: machine-independent and
         # proportional to the evaluations' cost, so budgets in it scale with the problem's size
         self.work = 0
-        # light: only the assignment of predecessors (the beam seeds rank children with it; every
-        # bound here is admissible, the full one is only tighter)
+        # light: only the assignment of predecessors (fast mode's greedy and team beams rank
+        # children with it; every bound here is admissible, the full one is only tighter)
         self.light = False
         self.p = expander.p
         self.nav = expander.nav
