@@ -2,8 +2,10 @@
 
 from __future__ import annotations
 
+import gc
 import time
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Iterator, Sequence
+from contextlib import contextmanager
 from dataclasses import replace
 from typing import Any, Literal
 
@@ -57,16 +59,28 @@ SOLO_WIDTH = 4  # beam width of the single-robot seeds
 SOLO_SEEDS = 4  # robots tried alone (the best placed ones)
 
 
-def _seed(searcher: Searcher, x: Expander, root: Node) -> Node | None:
-    """The cheapest of a greedy and a beam search over the team and, for the summed cost, of beam
-    searches in which one well-placed robot does everything (summed cost often favours one robot,
-    which the team beam, deciding one step at a time, can miss); local search then shares work out."""
-    found = [searcher.beam(root, 1, 1), searcher.beam(root, BEAM_WIDTH, BEAM_INSTANCES)]
+def _seed(searcher: Searcher, x: Expander, root: Node, light: bool) -> Node | None:
+    """The cheapest of beam searches in which one well-placed robot does everything (for the summed
+    cost, which often favours one robot; ranked by the full bound, which finds much cheaper solo
+    plans on large problems), then a greedy and a team beam search, ranked by the assignment bound
+    alone when `light` and pruned by the solo plans' cost (a child whose bound reaches it cannot
+    lead to a cheaper plan); local search then shares work out."""
+    found: list[Node] = []
     if searcher.obj.solo_seeds and x.p.n_robots > 1:
         for robot in _well_placed(x, root)[:SOLO_SEEDS]:
-            found.append(searcher.beam(root, SOLO_WIDTH, BEAM_INSTANCES, robots=frozenset({robot})))
-    goals = [goal for goal in found if goal is not None]
-    return min(goals, key=searcher.cost) if goals else None
+            goal = searcher.beam(root, SOLO_WIDTH, BEAM_INSTANCES, robots=frozenset({robot}))
+            if goal is not None:
+                found.append(goal)
+    searcher.h.light = light
+    try:
+        for width, limit in ((1, 1), (BEAM_WIDTH, BEAM_INSTANCES)):
+            ub = min(map(searcher.cost, found)) if found else None
+            goal = searcher.beam(root, width, limit, ub=ub)
+            if goal is not None:
+                found.append(goal)
+    finally:
+        searcher.h.light = False
+    return min(found, key=searcher.cost) if found else None
 
 
 def _well_placed(x: Expander, root: Node) -> list[int]:
@@ -143,12 +157,28 @@ def plan(
     """
     _check_arguments(spec, objective, mode, w)
     engine = next(e for e in ENGINES if e.supports(world))
-    return engine.solve(
-        world, spec, starts, objective=objective, mode=mode, timeout_s=timeout_s, capabilities=capabilities,
-        w=w, fast_expansions=fast_expansions, fast_work=fast_work, fast_stall_work=fast_stall_work,
-        improve_evals=improve_evals, lns_evals=lns_evals, max_nodes=max_nodes, refine=refine,
-        on_progress=on_progress,
-    )
+    with _without_cycle_collection():
+        return engine.solve(
+            world, spec, starts, objective=objective, mode=mode, timeout_s=timeout_s,
+            capabilities=capabilities, w=w, fast_expansions=fast_expansions, fast_work=fast_work,
+            fast_stall_work=fast_stall_work, improve_evals=improve_evals, lns_evals=lns_evals,
+            max_nodes=max_nodes, refine=refine, on_progress=on_progress,
+        )
+
+
+@contextmanager
+def _without_cycle_collection() -> Iterator[None]:
+    """Python's cycle collector off while planning: a search allocates hundreds of thousands of
+    nodes, tuples and states that form no reference cycles (a node points to its parent only), and
+    each full collection walks every live object of the process (a loaded data set included), which
+    cost sub-second plans up to several times their own time. Reference counting still frees them."""
+    enabled = gc.isenabled()
+    gc.disable()
+    try:
+        yield
+    finally:
+        if enabled:
+            gc.enable()
 
 
 class SearchEngine:
@@ -274,11 +304,7 @@ def _search(searcher: Searcher, x: Expander, budget: Budget) -> Node | None:
             searcher.stats.proven_optimal, searcher.stats.stopped = True, StopReason.TRIVIAL
             return root
         searcher.score(root)  # the full bound at the root: the A*'s first lower bound
-        searcher.h.light = budget.light_seeds
-        try:
-            best = _seed(searcher, x, root)
-        finally:
-            searcher.h.light = False
+        best = _seed(searcher, x, root, budget.light_seeds)
         if best is not None and budget.free_stands:  # the incumbent's cost on the grid: its best stand cells
             best = refine_stand_cells(x, best, searcher.obj)
         if best is not None and not searcher.obj.proven(searcher.cost(best), root.f, 1.0):

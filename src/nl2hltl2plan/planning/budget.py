@@ -56,7 +56,7 @@ class Budget:
     w_order: float = 1.0  # the weight of the A* ordering
     max_nodes: int | None = None  # memory bound of the A* (nodes held at once)
     free_stands: bool = False  # stand cells part of the A* search (the grid optimum of the summed cost)
-    light_seeds: bool = False  # beam seeds rank children by the assignment bound alone (cheaper)
+    light_seeds: bool = False  # greedy and team beams rank children by the assignment bound alone (cheaper)
     # AWA*: past this much heuristic work, stop once the bound has not risen for STALL_SHARE of the
     # work spent (None: never)
     stall_work: int | None = None

@@ -12,6 +12,8 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import numpy as np
 
 from nl2hltl2plan.errors import PlanningError
@@ -29,11 +31,15 @@ def replay(x: Expander, events: list[Event], stands: list[int] | None = None) ->
 
 
 def replay_from(x: Expander, node: Node, events: list[Event], stands: list[int] | None = None,
-                keep_stands: bool = True) -> Node | None:
+                keep_stands: bool = True, cutoff: Callable[[Node], bool] | None = None) -> Node | None:
     """Re-run events from `node` through the transition relation (None if one no longer applies);
     stand cells from `stands`, else the events' own (`keep_stands`) or the nearest ones. Support
-    events are skipped: the actions they serve re-insert what the replayed state needs."""
+    events are skipped: the actions they serve re-insert what the replayed state needs. `cutoff`:
+    None as soon as it holds for a replayed node (the local searches stop a candidate whose cost so
+    far already rules it out: every objective's value only grows along a replay)."""
     for i, e in enumerate(events):
+        if cutoff is not None and cutoff(node):
+            return None
         stand = stands[i] if stands is not None else (e.stand if keep_stands and e.stand >= 0 else None)
         if e.k == SUPPORT:
             if stands is None and not keep_stands:
@@ -53,6 +59,16 @@ def replay_from(x: Expander, node: Node, events: list[Event], stands: list[int] 
             return None
         node = child
     return node
+
+
+def reaching(objective: Objective, bar: tuple[int, ...]) -> Callable[[Node], bool]:
+    """A replay's `cutoff`: the node's value already reaches `bar` (values only grow along a
+    replay: summed cost, makespan), so the candidate cannot beat it."""
+
+    def reached(node: Node) -> bool:
+        return objective.value(node) >= bar
+
+    return reached
 
 
 def refine_stand_cells(x: Expander, goal: Node, objective: Objective, force: bool = False) -> Node:

@@ -27,8 +27,11 @@ candidate is closed in). At the root, the bound is minimised over the instance c
 Completion time (`minmax`): `makespan.py`, from the same pending events (`relax.EventRow`); the
 summed cost skips it. `Heuristic.work` counts the cells of the assignment matrices solved (plus a
 fixed amount per evaluation): fast mode's A* budget is counted in it, so a large problem, whose
-evaluations cost more, gets fewer of them. `Heuristic.light` keeps only the assignment (the beam
-seeds rank children with it).
+evaluations cost more, gets fewer of them. `Heuristic.light` keeps only the assignment (fast mode's
+greedy and team beam seeds rank children with it). What depends on the objects' state alone, not on
+where the robots are (the pending events, their regions and hands, the forced opens and closes, the
+carries while nothing is held, the robot-independent part of the assignment matrix), is computed
+once per such state (`Pending`, `Template`) and shared by every node in it.
 """
 
 from __future__ import annotations
@@ -56,6 +59,8 @@ from nl2hltl2plan.worlds.simulator import PRESENT
 EMPTY = ""  # the hand right after a put
 NEAR_CACHE_LIMIT = 1_000  # per-anchor-set distance rows kept across nodes
 EVAL_WORK = 200  # an evaluation's fixed cost, in assignment-matrix cells (measured: ~1.5 ms vs ~7 us a cell)
+TEMPLATE = "template"  # the key of a Pending's memo that holds its Template
+PENDING_CACHE_LIMIT = 20_000  # pending work kept per object state across nodes
 ROOT_EVALS = 64  # bound evaluations the root's search over instance choices spends (at most)
 
 
@@ -66,8 +71,8 @@ class Heuristic:
         # work done so far, in cells of assignment matrices solved: machine-independent and
         # proportional to the evaluations' cost, so budgets in it scale with the problem's size
         self.work = 0
-        # light: only the assignment of predecessors (the beam seeds rank children with it; every
-        # bound here is admissible, the full one is only tighter)
+        # light: only the assignment of predecessors (fast mode's greedy and team beams rank
+        # children with it; every bound here is admissible, the full one is only tighter)
         self.light = False
         self.p = expander.p
         self.nav = expander.nav
@@ -89,6 +94,7 @@ class Heuristic:
         self.carry_cache: dict[tuple, int] = {}  # carry minima of legs and regions (carries.py)
         self.legs_cache: dict[tuple, tuple[list[Leg], frozenset[str]]] = {}  # a leaf path's carry legs
         self._near_cache: dict[tuple[int, ...], np.ndarray] = {}
+        self._pending_cache: dict[tuple, Pending] = {}
         self.root_evals = ROOT_EVALS
 
     def _near(self, anchors: tuple[int, ...]) -> np.ndarray:
@@ -244,6 +250,35 @@ class Heuristic:
 
     def _evaluate(self, node: Node, fixed: dict[tuple[int, str], int]) -> tuple[int, int]:
         """The bound with some (leaf, type) pairs fixed to one region (their instance's)."""
+        pending = self._pending(node, fixed)
+        rows = pending.rows
+        if not rows and not pending.extra_events:
+            return 0, node.ms
+        carry = pending.carry
+        if carry < 0:  # an object is held: the carries depend on where its holder stands
+            carry = 0 if self.light else carry_total(self, node, pending.memo)
+        walk = self._assignment(node, pending, carry) if rows else carry
+        total = len(rows) + pending.extra_events + walk + pending.support
+        if not self.makespan:
+            return total, node.ms
+        chain = dict(pending.chain)
+        if self.p.n_robots and (chain or rows):
+            leaf_chains(self._near, self.rr, node, rows, chain)
+        return total, makespan_bound(self.x, node, total, chain)
+
+    def _pending(self, node: Node, fixed: dict[tuple[int, str], int]) -> Pending:
+        """What the node has still to do, as the bounds see it: a function of the objects' state
+        and the leaves' progress and bindings alone, not of where the robots are, so it is computed
+        once per such state (the same event done by another robot, or independent events in
+        another order, reach one) and shared by every node in it."""
+        key = None
+        if not fixed:
+            sim = node.sim
+            key = (tuple(sim.parent), tuple(sim.holder), tuple(sim.flags), tuple(sim.moved), node.q,
+                   node.bind, node.claimed, self.light)
+            hit = self._pending_cache.get(key)
+            if hit is not None:
+                return hit
         p = self.p
         memo: dict = {"fixed": fixed}
         for (li, t), region in fixed.items():
@@ -269,17 +304,18 @@ class Heuristic:
                                      base + event.carried if event.carried >= 0 else -1, event.holder,
                                      self._hand_id(lf.index, hand.need, hands),
                                      self._hand_id(lf.index, hand.after, hands), hand.full))
-        if not rows and not extra_events:
-            return 0, node.ms
-        carry = 0 if self.light else carry_total(self, node, memo)
-        walk = self._assignment(node, rows, optional, hands, carry) if rows else carry
+        carry = 0
+        if any(obj >= 0 for obj in node.sim.hand.values()):
+            carry = -1  # computed per node (`_evaluate`)
+        elif not self.light and (rows or extra_events):
+            carry = carry_total(self, node, memo)
         support = forced_opens(self.x, self.required, node) + forced_closes(self.x, self.required, node)
-        total = len(rows) + extra_events + walk + support
-        if not self.makespan:
-            return total, node.ms
-        if p.n_robots and (chain or rows):
-            leaf_chains(self._near, self.rr, node, rows, chain)
-        return total, makespan_bound(self.x, node, total, chain)
+        out = Pending(rows, optional, hands, extra_events, chain, carry, support, memo)
+        if key is not None:
+            if len(self._pending_cache) > PENDING_CACHE_LIMIT:
+                self._pending_cache.clear()
+            self._pending_cache[key] = out
+        return out
 
     @staticmethod
     def _hand_id(leaf: int, type_: str | None, hands: dict[tuple[int, str], int]) -> int:
@@ -311,62 +347,27 @@ class Heuristic:
                 out.append((-1, False))
         return out
 
-    def _assignment(self, node: Node, rows: list[EventRow], optional: list[tuple[int, ...]],
-                    hands: dict[tuple[int, str], int], carry: int) -> int:
+    def _assignment(self, node: Node, pending: Pending, carry: int) -> int:
         """The largest of three bounds on the walking still needed: the assignment of distinct
         predecessors, the carries plus the pickups' approaches, and the spanning tree (bounds.py)."""
-        n_ev = len(rows)
-        anchor_sets = [row.anchors for row in rows]
-        cols = anchor_sets + optional
-        flat_a = [anchor for anchors in anchor_sets for anchor in (anchors or (-1,))]
-        flat_b = [anchor for anchors in cols for anchor in (anchors or (-1,))]
-        empty = [i for i, anchors in enumerate(anchor_sets) if not anchors]
-        a_idx = np.array(flat_a, dtype=np.int64)
-        b_idx = np.array(flat_b, dtype=np.int64)
-        a_starts = np.cumsum([0] + [max(1, len(anchors)) for anchors in anchor_sets[:-1]])
-        b_starts = np.cumsum([0] + [max(1, len(anchors)) for anchors in cols[:-1]])
-        # rows: events (successors); columns: predecessor events, then robots
-        sub = self.rr[b_idx[:, None], a_idx]  # (plain broadcasting: np.ix_ costs more per call)
-        if (b_idx < 0).any() or (a_idx < 0).any():
-            sub = sub.copy()
-            sub[b_idx < 0, :] = 0
-            sub[:, a_idx < 0] = 0
-        pred = np.minimum.reduceat(np.minimum.reduceat(sub, b_starts, axis=0), a_starts, axis=1)
-        robot = self.robot_walks(node, a_idx)
-        robot = np.minimum.reduceat(robot, a_starts, axis=0).T  # robots x events
-        cost = np.vstack([pred, robot]).T.astype(np.int64)  # events x (preds + robots)
-        if empty:
-            cost[empty, :] = 0
-        np.minimum(cost, BIG, out=cost)
-        leaf = np.array([row.leaf for row in rows])
-        pos = np.array([row.pos for row in rows])
-        kind = np.array([row.kind for row in rows])
-        n_pred = len(cols)
-        ev_cols = cost[:, :n_ev]
-        # a later (or the same) event of one's own leaf cannot come before
-        same = (leaf[:, None] == leaf[None, :]) & (pos[None, :] >= pos[:, None])
-        # an event of a leaf that starts only after mine is complete cannot come before
-        later = self.after[leaf[:, None], leaf[None, :]]
-        ev_cols[same | later] = BIG
-        # a carried object's put: after its pickup or a hands-full action, never another pick/put
-        for i, row in enumerate(rows):
-            if row.kind != PUT:
-                continue
-            carried, holder = row.carried, row.holder
-            if carried < 0 and holder < 0:
-                continue
-            bad = kind != OTHER
-            if carried >= 0:
-                bad = bad.copy()
-                bad[carried] = False
-            ev_cols[i, bad] = BIG
-            if carried >= 0:
-                cost[i, n_pred:] = BIG
-            else:
-                keep = cost[i, n_pred + holder]
-                cost[i, n_pred:] = BIG
-                cost[i, n_pred + holder] = keep
-        cost[:, :n_ev] = ev_cols
+        rows, hands = pending.rows, pending.hands
+        t = pending.memo.get(TEMPLATE)
+        if t is None:
+            t = pending.memo[TEMPLATE] = self._template(rows, pending.optional)
+        n_ev, n_pred, cols, kind, pred = len(rows), len(t.cols), t.cols, t.kind, t.pred
+        # rows: events (successors); columns: predecessor events (the template), then robots
+        robot = np.minimum.reduceat(self.robot_walks(node, t.a_idx), t.a_starts, axis=0)  # events x robots
+        walks = robot.astype(np.int64)
+        if t.empty:
+            walks[t.empty, :] = 0
+        np.minimum(walks, BIG, out=walks)
+        for i, holder in t.held_puts:  # a carried object's put: no robot's first event but its holder's
+            keep = walks[i, holder] if holder >= 0 else BIG
+            walks[i, :] = BIG
+            if holder >= 0:
+                walks[i, holder] = keep
+        cost = np.hstack([t.cost, walks])
+        robot = robot.T  # robots x events
         self.work += cost.size + EVAL_WORK
         self._hand_rules(node, rows, cost, n_ev, n_pred, hands)
         walk = solve(_with_last(cost, n_ev))
@@ -383,11 +384,59 @@ class Heuristic:
             walk = max(walk, solve(_with_last(compound, n_ev)))
         # the spanning tree over the events of one known region (an event with several candidate
         # regions would join far groups at no cost; leaving events out keeps it a bound)
-        fixed = [i for i, anchors in enumerate(anchor_sets) if len(anchors) == 1]
+        fixed = [i for i, row in enumerate(rows) if len(row.anchors) == 1]
         if len(fixed) > 1 or (fixed and walk == 0):
             ev = np.minimum(pred[np.array(fixed)[:, None], fixed], BIG)
             walk = max(walk, spanning_walk(ev, np.minimum(robot[:, fixed].min(axis=0), BIG)))
         return walk
+
+    def _template(self, rows: list[EventRow], optional: list[tuple[int, ...]]) -> Template:
+        """The robot-independent part of the assignment's cost matrix: events x predecessor events
+        with the order and hand rules applied (computed once per pending work, `Pending`)."""
+        n_ev = len(rows)
+        anchor_sets = [row.anchors for row in rows]
+        cols = anchor_sets + optional
+        flat_a = [anchor for anchors in anchor_sets for anchor in (anchors or (-1,))]
+        flat_b = [anchor for anchors in cols for anchor in (anchors or (-1,))]
+        empty = [i for i, anchors in enumerate(anchor_sets) if not anchors]
+        a_idx = np.array(flat_a, dtype=np.int64)
+        b_idx = np.array(flat_b, dtype=np.int64)
+        a_starts = np.cumsum([0] + [max(1, len(anchors)) for anchors in anchor_sets[:-1]])
+        b_starts = np.cumsum([0] + [max(1, len(anchors)) for anchors in cols[:-1]])
+        sub = self.rr[b_idx[:, None], a_idx]  # (plain broadcasting: np.ix_ costs more per call)
+        if (b_idx < 0).any() or (a_idx < 0).any():
+            sub = sub.copy()
+            sub[b_idx < 0, :] = 0
+            sub[:, a_idx < 0] = 0
+        pred = np.minimum.reduceat(np.minimum.reduceat(sub, b_starts, axis=0), a_starts, axis=1)
+        cost = pred.T.astype(np.int64)  # events x predecessors
+        if empty:
+            cost[empty, :] = 0
+        np.minimum(cost, BIG, out=cost)
+        leaf = np.array([row.leaf for row in rows])
+        pos = np.array([row.pos for row in rows])
+        kind = np.array([row.kind for row in rows])
+        ev_cols = cost[:, :n_ev]
+        # a later (or the same) event of one's own leaf cannot come before
+        same = (leaf[:, None] == leaf[None, :]) & (pos[None, :] >= pos[:, None])
+        # an event of a leaf that starts only after mine is complete cannot come before
+        later = self.after[leaf[:, None], leaf[None, :]]
+        ev_cols[same | later] = BIG
+        # a carried object's put: after its pickup or a hands-full action, never another pick/put
+        held_puts = []
+        for i, row in enumerate(rows):
+            if row.kind != PUT:
+                continue
+            carried, holder = row.carried, row.holder
+            if carried < 0 and holder < 0:
+                continue
+            bad = kind != OTHER
+            if carried >= 0:
+                bad = bad.copy()
+                bad[carried] = False
+            ev_cols[i, bad] = BIG
+            held_puts.append((i, -1 if carried >= 0 else holder))
+        return Template(cols, empty, a_idx, a_starts, pred, cost, kind, held_puts)
 
     def _approach_and_carry(self, node: Node, rows: list[EventRow], cols: list[tuple[int, ...]],
                             cost: np.ndarray) -> np.ndarray | None:
@@ -462,6 +511,32 @@ class Heuristic:
                     walks = self.field[rows, list(reach[0])] + np.array(reach[1])[None, :]
                     out[:, robot] = walks.min(axis=1)
         return out
+
+
+class Pending(NamedTuple):
+    """A node's pending work as the bounds see it (`Heuristic._pending`); shared, never changed."""
+
+    rows: list[EventRow]  # the events every completion does
+    optional: list[tuple[int, ...]]  # the regions of events some completions do
+    hands: dict[tuple[int, str], int]  # (leaf, held type) -> hand id
+    extra_events: int  # events of leaves whose alternatives differ in length (their least count)
+    chain: dict[int, tuple[int, int]]  # per leaf of `extra_events`: its makespan chain
+    carry: int  # the carries' least walking, -1 when a robot holds an object (then it depends on it)
+    support: int  # the support opens and closes every completion needs
+    memo: dict  # the pending events' candidate regions (`anchors_of`)
+
+
+class Template(NamedTuple):
+    """The robot-independent part of the assignment relaxation of a `Pending` (`Heuristic._template`)."""
+
+    cols: list[tuple[int, ...]]  # the predecessor events' regions (the pending events, then optional ones)
+    empty: list[int]  # events with no region (a free first event)
+    a_idx: np.ndarray  # the events' regions, flattened
+    a_starts: np.ndarray  # where each event's regions start in `a_idx`
+    pred: np.ndarray  # predecessors x events: the least region-to-region walk
+    cost: np.ndarray  # events x predecessors, the order and hand rules applied (read-only)
+    kind: np.ndarray  # per event: OTHER, PICKUP or PUT
+    held_puts: list[tuple[int, int]]  # puts of a carried object: (event, its holder or -1: none)
 
 
 class Hand(NamedTuple):

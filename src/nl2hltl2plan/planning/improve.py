@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from nl2hltl2plan.planning.extract import replay_from
+from nl2hltl2plan.planning.extract import reaching, replay_from
 from nl2hltl2plan.planning.node import Event, Node
 from nl2hltl2plan.planning.objective import Objective
 from nl2hltl2plan.planning.state import Expander
@@ -67,7 +67,8 @@ def improve(x: Expander, goal: Node, objective: Objective, max_evals: int,
                     break
                 check_time()
                 evals += 1
-                end = replay_from(x, path[start], cand[start:], keep_stands=False)
+                end = replay_from(x, path[start], cand[start:], keep_stands=False,
+                                  cutoff=reaching(objective, best_val))
                 if end is None or not x.is_goal(end):
                     continue
                 val = objective.value(end)

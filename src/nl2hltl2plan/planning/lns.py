@@ -18,7 +18,7 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 from itertools import combinations
 
-from nl2hltl2plan.planning.extract import replay_from
+from nl2hltl2plan.planning.extract import reaching, replay_from
 from nl2hltl2plan.planning.improve import segments
 from nl2hltl2plan.planning.node import Event, Node
 from nl2hltl2plan.planning.objective import Objective
@@ -58,23 +58,49 @@ def _prefixes(x: Expander, rest: list[Event]) -> list[Node]:
 
 
 def _best_insertion(x: Expander, objective: Objective, rest: list[Event], block: list[Event],
-                    budget: _Budget, goal: bool) -> tuple[tuple[int, ...], list[Event]] | None:
+                    budget: _Budget, goal: bool,
+                    beat: tuple[int, ...] | None = None) -> tuple[tuple[int, ...], list[Event]] | None:
     """The cheapest way to put `block` (done by one robot) into `rest`, at every place and for
-    every robot: (value, events), or None (`goal`: only complete plans count)."""
+    every robot: (value, events), or None (`goal`: only complete plans count; `beat`: only those
+    cheaper than it, so a replay stops as soon as its cost so far reaches it)."""
     best: tuple[tuple[int, ...], list[Event]] | None = None
     prefix = _prefixes(x, rest)
+    starts = _leaf_starts(rest)
     for r in range(x.p.n_robots):
         moved = _as_robot(block, r)
         for pos in range(len(prefix)):
+            if not _may_insert(rest, pos, r, starts):
+                continue
             if not budget.take():
                 return best
-            end = replay_from(x, prefix[pos], moved + rest[pos:], keep_stands=False)
+            bar = beat if best is None else best[0]
+            end = replay_from(x, prefix[pos], moved + rest[pos:], keep_stands=False,
+                              cutoff=None if bar is None else reaching(objective, bar))
             if end is None or (goal and not x.is_goal(end)):
                 continue
             val = objective.value(end)
-            if best is None or val < best[0]:
+            if (best is None or val < best[0]) and (beat is None or val < beat):
                 best = (val, rest[:pos] + moved + rest[pos:])
     return best
+
+
+def _leaf_starts(rest: list[Event]) -> set[int]:
+    """The positions at which a leaf's first event stands."""
+    seen: set[int] = set()
+    out = set()
+    for pos, e in enumerate(rest):
+        if e.leaf not in seen:
+            seen.add(e.leaf)
+            out.add(pos)
+    return out
+
+
+def _may_insert(rest: list[Event], pos: int, robot: int, starts: set[int]) -> bool:
+    """The places worth trying for a block done by `robot`: right before one of its own events, before
+    a leaf starts (where the state other leaves leave behind, and their orderings, change) and at
+    the end. Between two of the robot's events, other robots' events move its walk by nothing, so
+    the other places repeat these for the summed cost."""
+    return pos == len(rest) or rest[pos].robot == robot or pos in starts
 
 
 def _replay(x: Expander, events: list[Event]) -> Node | None:
@@ -113,7 +139,7 @@ def _leaf_moves(x: Expander, objective: Objective, best: Node, best_val: tuple[i
     for leaf in _leaves_of(events):
         rest = [e for e in events if e.leaf != leaf]
         block = [e for e in events if e.leaf == leaf]
-        found = _best_insertion(x, objective, rest, block, budget, goal=True)
+        found = _best_insertion(x, objective, rest, block, budget, goal=True, beat=best_val)
         if found is not None and found[0] < best_val:
             return _replay(x, found[1])
         if budget.left <= 0:
@@ -132,7 +158,8 @@ def _pair_moves(x: Expander, objective: Objective, best: Node, best_val: tuple[i
             if budget.left <= 0:
                 break
             continue  # the other leaf gates what remains: no partial plan replays
-        found = _best_insertion(x, objective, first[1], [e for e in events if e.leaf == b], budget, goal=True)
+        found = _best_insertion(x, objective, first[1], [e for e in events if e.leaf == b], budget, goal=True,
+                                 beat=best_val)
         if found is not None and found[0] < best_val:
             return _replay(x, found[1])
         if budget.left <= 0:
@@ -149,7 +176,8 @@ def _segment_moves(x: Expander, objective: Objective, best: Node, best_val: tupl
             continue
         inside = set(seg)
         rest = _core([e for i, e in enumerate(all_events) if i not in inside])
-        found = _best_insertion(x, objective, rest, [all_events[i] for i in seg], budget, goal=True)
+        found = _best_insertion(x, objective, rest, [all_events[i] for i in seg], budget, goal=True,
+                                 beat=best_val)
         if found is not None and found[0] < best_val:
             return _replay(x, found[1])
         if budget.left <= 0:
@@ -177,7 +205,7 @@ def _rebind_moves(x: Expander, objective: Objective, best: Node, best_val: tuple
                                         else 1 << 30, o2))
             for o2 in others[:REBIND_INSTANCES]:
                 swapped = [_swap(e, o, o2) for e in block]
-                found = _best_insertion(x, objective, rest, swapped, budget, goal=True)
+                found = _best_insertion(x, objective, rest, swapped, budget, goal=True, beat=best_val)
                 if found is not None and found[0] < best_val:
                     return _replay(x, found[1])
                 if budget.left <= 0:

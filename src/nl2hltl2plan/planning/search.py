@@ -23,10 +23,12 @@ from dataclasses import dataclass
 
 from nl2hltl2plan.planning.budget import StopReason
 from nl2hltl2plan.planning.heuristic import Heuristic
+from nl2hltl2plan.planning.leaves import DONE
 from nl2hltl2plan.planning.node import Node
 from nl2hltl2plan.planning.objective import DuplicateTable, Objective
 from nl2hltl2plan.planning.state import Expander
 
+BEAM_SCORED = 3  # a beam gives the full heuristic to this many children per slot (by estimate)
 NODE_BYTES = 4000  # rough memory of one stored search node (SimState copy, tuples), for reporting
 
 
@@ -60,6 +62,8 @@ class Searcher:
         self.stats = SearchStats()
         self.on_progress = on_progress
         self._next_report = 0.0
+        self._beam_best: Node | None = None  # the running beam's cheapest goal so far
+        self._beam_bar = float("inf")  # the cost a beam's goal must beat
 
     # ------------------------------------------------------------ bookkeeping
     def check_time(self) -> None:
@@ -98,42 +102,80 @@ class Searcher:
         return k
 
     # ------------------------------------------------------------ seed
-    def beam(self, root: Node, width: int, limit: int, robots: frozenset[int] | None = None) -> Node | None:
+    def beam(self, root: Node, width: int, limit: int, robots: frozenset[int] | None = None,
+             ub: int | None = None) -> Node | None:
         """Beam search over macro successors (of `robots` only, when given); the cheapest goal
-        found, or None. Children are first ranked by an estimate (parent's f plus the walking the
-        step did), and only the best few get the full heuristic."""
+        found that costs less than `ub` (when given), or None. Children are first ranked by an
+        estimate (parent's f plus the walking the step did), and only the best few get the full
+        heuristic."""
         if root.h is None:
             self.score(root)
         layer = [root]
-        best: Node | None = None
+        self._beam_best = None
+        self._beam_bar = float("inf") if ub is None else ub
         seen: set = set()
         while layer:
-            children: list[tuple[float, int, Node]] = []
+            raw: list[tuple[float, int, Node, Node]] = []
             for node in layer:
                 self.check_time()
                 self.stats.expanded += 1
-                for child in self.x.successors(node, limit=limit, macro=True, robots=robots):
+                for child in self.x.successors(node, limit=limit, robots=robots):
                     self.stats.generated += 1
-                    if self.x.is_goal(child):
-                        if best is None or self.cost(child) < self.cost(best):
-                            best = child
-                        continue
-                    k = self.key(child)
-                    if k in seen:
-                        continue
-                    seen.add(k)
-                    children.append((self.estimate(node, child), -child.g, child))
-            children.sort(key=lambda c: (c[0], c[1]))
+                    raw.append((self.estimate(node, child), len(raw), node, child))
             scored = []
-            for _, _, child in children[: 3 * width]:
+            for child in self._best_children(raw, BEAM_SCORED * width, seen):
                 self.check_time()
                 self.score(child)
-                if best is not None and child.f >= self.cost(best):
+                if child.f >= self._beam_limit():
                     continue
                 scored.append(child)
             scored.sort(key=lambda n: (n.f, -n.g))
             layer = scored[:width]
-        return best
+        return self._beam_best
+
+    def _beam_limit(self) -> float:
+        best = self._beam_best
+        return self.cost(best) if best is not None else self._beam_bar
+
+    def _best_children(self, raw: list[tuple[float, int, Node, Node]], k: int, seen: set) -> list[Node]:
+        """The k best new children by (estimate, -g) after their macro steps (a robot that picked
+        something up carries on with that leaf until its hand is empty). A macro step only adds
+        walking, so the estimate before it bounds the one after it: children are carried on in
+        that order and the rest are never carried on once k finished ones rank before them. A
+        child that may reach the goal (at most one required leaf left) is always carried on."""
+        required = self.h.required
+        heap: list[tuple[float, int, Node, Node]] = []
+        finished: list[tuple[float, int, int, Node]] = []
+        for item in raw:
+            _, _, _, child = item
+            if sum(1 for li in required if child.q[li] != DONE) <= 1:
+                self._finish(item, finished, seen)
+            else:
+                heap.append(item)
+        heapq.heapify(heap)
+        while heap:
+            if len(finished) >= k and heapq.nsmallest(k, finished)[-1][0] < heap[0][0]:
+                break
+            self._finish(heapq.heappop(heap), finished, seen)
+        finished.sort()
+        return [child for _, _, _, child in finished[:k]]
+
+    def _finish(self, item: tuple[float, int, Node, Node], finished: list[tuple[float, int, int, Node]],
+                seen: set) -> None:
+        """Carry a child on (its macro step), keep it if it is a new state, note it if a goal."""
+        _, index, parent, child = item
+        event = child.event
+        if event is not None and event.verb == "pickup":
+            child = self.x.carry_on(child, event.robot, self.x.p.leaves[event.leaf])
+        if self.x.is_goal(child):
+            if self.cost(child) < self._beam_limit():
+                self._beam_best = child
+            return
+        key = self.key(child)
+        if key in seen:
+            return
+        seen.add(key)
+        finished.append((self.estimate(parent, child), -child.g, index, child))
 
     def estimate(self, parent: Node, child: Node) -> float:
         """A cheap guess of the child's f: the parent's, plus the walking of the step (the step's

@@ -458,7 +458,7 @@ class Expander:
                         if child is None:
                             continue
                         if macro and atom.verb == "pickup":
-                            child = self._carry_on(child, robot, leaf)
+                            child = self.carry_on(child, robot, leaf)
                         out.append(child)
                         made += 1
                         if limit is not None and made >= limit:
@@ -508,20 +508,34 @@ class Expander:
                     break
         return out
 
-    def _carry_on(self, node: Node, robot: int, leaf: Leaf) -> Node:
+    def carry_on(self, node: Node, robot: int, leaf: Leaf) -> Node:
         """Macro step: while the robot holds something for this leaf, do the leaf's next action
         (nearest choice) until the hand is empty, the leaf is done or nothing applies."""
         while node.sim.hand.get(robot, -1) >= 0 and node.q[leaf.index] != DONE:
-            best = None
-            for k, q_next in leaf.moves[node.q[leaf.index]]:
-                atom = leaf.atoms[k]
-                if not self.p.can_do(robot, atom):
-                    continue
-                for objs in self.bindings(node, leaf, atom, robot, True):
-                    child = self.apply(node, robot, leaf, k, objs, q_next)
-                    if child is not None and (best is None or child.g < best.g):
-                        best = child
+            options = [(k, q_next, objs) for k, q_next in leaf.moves[node.q[leaf.index]]
+                       if self.p.can_do(robot, leaf.atoms[k])
+                       for objs in self.bindings(node, leaf, leaf.atoms[k], robot, True)]
+            # the first option of least cost; tried cheapest first by a lower bound on the child's
+            # cost, so the options that cannot win are never applied
+            order = sorted((self._least_g(node, robot, objs), i) for i, (_, _, objs) in enumerate(options))
+            best: Node | None = None
+            best_i = -1
+            for least, i in order:
+                if best is not None and (least, i) > (best.g, best_i):
+                    break
+                k, q_next, objs = options[i]
+                child = self.apply(node, robot, leaf, k, objs, q_next)
+                if child is not None and (best is None or (child.g, i) < (best.g, best_i)):
+                    best, best_i = child, i
             if best is None:
                 break
             node = best
         return node
+
+    def _least_g(self, node: Node, robot: int, objs: tuple[int, ...]) -> int:
+        """A lower bound on the cost of the child in which `robot` acts on `objs` (support actions
+        first only add to it: a detour is never shorter, by the triangle inequality)."""
+        anchor = self.nav.anchor(node.sim, objs[-1])
+        if anchor < 0 or node.reach is not None:
+            return node.g + 1
+        return node.g + 1 + self.nav.nearest(node.cell[robot], anchor)[1]
