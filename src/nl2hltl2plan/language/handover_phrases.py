@@ -21,6 +21,7 @@ from dataclasses import dataclass, field
 from typing import Literal
 
 from nl2hltl2plan.errors import HTTError, WorldError
+from nl2hltl2plan.language.handover_words import EMPTY, NEG, REWRITES, VERB, typo_table
 from nl2hltl2plan.worlds.handover_world import REGIONS, Layout, layout
 from nl2hltl2plan.worlds.world import Cell, World
 
@@ -31,7 +32,7 @@ NOUN = r"(?:block|cube|pillar|object|item|piece|one)"
 NOUNS = r"(?:blocks|cubes|pillars|objects|items|pieces|ones)"
 COLOUR = r"(?:red|blue|yellow)"
 LETTER = r"\b[e-j]\b"
-PLACE_NOUN = r"(?:regions?|areas?|zones?|places?|spots?|positions?|cells?|sides?)"
+PLACE_NOUN = r"(?:regions?|areas?|zones?|places?|spots?|positions?|cells?|sides?|locations?)"
 # words that carry no meaning here (articles, politeness, modal verbs, the agent)
 FILLER = frozenset(
     "please plan a an the solution to for you we should shall can could would will must kindly now "
@@ -125,10 +126,18 @@ class Marked:
         self.text = re.sub(pattern, make, self.text)
 
 
+TYPOS = typo_table()
+
+
 def normalise(sentence: str) -> str:
+    """Lower case, punctuation spaced out, typos mended and `REWRITES` applied."""
     text = sentence.lower().replace("’", "'")
-    text = re.sub(r"([,()])", r" \1 ", text)
+    text = re.sub(r"(?<=[a-z])-(?=[a-z])", " ", text)  # one-by-one -> one by one
+    text = re.sub(r"([,()/:])", r" \1 ", text)
     text = re.sub(r"\b(\w+)'s\b", r"\1 s", text)  # red's -> red s (a possessive)
+    text = re.sub(r"[a-z]+", lambda w: TYPOS.get(w.group(0), w.group(0)), text)
+    for pattern, replacement in REWRITES:
+        text = re.sub(pattern, replacement, text)
     return " ".join(text.split())
 
 
@@ -155,28 +164,35 @@ def drop_but(m: Marked) -> None:
 
 
 def _mark_one_per_region(m: Marked) -> None:
-    """'each goal region can only be placed with one object', 'one block per region': a cell holds one
-    block in these worlds, so this is the world's own rule (recorded, no formula)."""
-    each = (
-        r"\b(?:each|every)\s+(?:goal\s+|target\s+)?(?:region|area|zone|place)\s+(?:can|may|should|must|will)?\s*"
-        r"(?:only\s+)?(?:be\s+)?(?:placed|filled|holds?|takes?|gets?|receives?|contains?|ha(?:ve|s))\s+(?:only\s+)?"
-        r"(?:with\s+)?(?:one|a\s+single|1)\s+" + NOUN + r"\b"
+    """'each goal region can only hold one object', 'one block per region', 'no region may hold more than
+    one block', 'each in a different region': a cell holds one block in these worlds, so this is the
+    world's own rule (recorded, no formula)."""
+    region = r"(?:goal\s+|target\s+)?(?:region|area|zone|place|spot|cell)"
+    one = (
+        rf"(?:only\s+|just\s+|at\s+most\s+|no\s+more\s+than\s+|exactly\s+)?(?:one|a\s+single|1)(?:\s+{NOUN})?"
     )
-    per = (
-        r"\b(?:with\s+)?(?:only\s+)?(?:one|a\s+single)(?:\s+"
-        + NOUN
-        + r")?\s+(?:per|in\s+each|on\s+each|for\s+each)(?:\s+(?:region|area|zone))?\b"
+    hold = r"(?:placed|filled|holds?|takes?|gets?|receives?|contains?|ha(?:ve|s)|fits?|accepts?)"
+    patterns = (
+        rf"\b(?:each|every)\s+{region}\s+(?:can|may|should|must|will)?\s*(?:only\s+)?(?:be\s+)?{hold}\s+"
+        rf"(?:only\s+)?(?:with\s+)?{one}\b",
+        rf"\bno\s+{region}\s+(?:can|may|should|must|will)?\s*(?:be\s+)?{hold}\s+(?:with\s+)?more\s+than\s+"
+        rf"(?:one|a\s+single|1)(?:\s+{NOUN})?\b",
+        rf"\b(?:with\s+)?{one}\s+(?:is\s+|being\s+)?(?:allowed\s+|permitted\s+)?(?:per|in|on|for|to)\s+"
+        rf"(?:each|every)\s+{region}\b",
+        rf"\b(?:with\s+)?{one}\s+per\s+{region}\b|\b(?:with\s+)?{one}\s+(?:per|in\s+each|on\s+each|for\s+each)\b",
     )
 
     def note(match: re.Match[str]) -> str:
         m.notes.append("one block per region (the world's rule: a cell holds one block)")
         return " "
 
+    for pattern in patterns:
+        m.sub(pattern, note)
+    # "each into a different region among H, I and J", "in its own region: H, I or J"
     different = (
-        r"\b(?:in|into|on|onto|to)\s+(?:a\s+)?different\s+(?:goal\s+|target\s+)?(?:region|area|zone)s?\s*:?"
+        rf"\b(?:each\s+)?(?:in|into|on|onto|to)\s+(?:an?\s+|its\s+|their\s+)?(?:different|separate|distinct|own)\s+"
+        rf"{region}s?\s*(?:(?:among|from|of|out\s+of)\s+|:\s*)?"
     )
-    m.sub(each, note)
-    m.sub(per, note)
     m.sub(different, lambda match: note(match) + "in ")
 
 
@@ -187,7 +203,8 @@ def _mark_arms(m: Marked) -> None:
         lambda _: " A ",
     )
     m.sub(
-        r"\b(?:any\s+(?:of\s+)?|an?\s+|each\s+|every\s+)?(?:the\s+)?(?:robot\s+)?(?:arms?|robots?)\b(?!\s+[a-d]\b)",
+        r"\b(?:any\s+(?:of\s+)?|an?\s+|each\s+|every\s+|some\s+|either\s+)?(?:the\s+)?(?:robot\s+)?(?:arms?|robots?)\b"
+        r"(?!\s+[a-d]\b)",
         lambda _: " A ",
     )
 
@@ -200,13 +217,24 @@ def _new_block(m: Marked, names: list[str], text: str) -> str:
 
 def _mark_blocks(m: Marked, scene: Scene) -> None:
     colours = (
-        rf"\b(?:the\s+)?{COLOUR}(?:\s+{NOUN})?(?:\s*(?:,|and|&|or)\s*(?:the\s+)?{COLOUR}(?:\s+{NOUN})?)*"
-        rf"(?:\s+{NOUNS})?\b"
+        rf"\b(?:the\s+)?{COLOUR}(?:\s+{NOUN})?(?:\s+s\b)?(?:\s*(?:,|and|&|or)\s*(?:the\s+)?{COLOUR}(?:\s+{NOUN})?"
+        rf"(?:\s+s\b)?)*(?:\s+{NOUNS})?\b"
     )
 
     def by_colour(match: re.Match[str]) -> str:
-        names = [scene.block(c) for c in re.findall(COLOUR, match.group(0))]
-        return _new_block(m, list(dict.fromkeys(names)), match.group(0))
+        text = match.group(0)
+        words = [w.group(0) for w in re.finditer(COLOUR, text)]
+        if len(set(words)) < len(words):  # "the red and the blue block, the red block being ...": a colour
+            # named again starts a new phrase, marked by the next pass
+            again = next(k for k in range(len(words)) if words[k] in words[:k])
+            start = [w.start() for w in re.finditer(COLOUR, text)][again]
+            head = re.sub(r"\s*(?:,|and|&|or)\s*(?:the\s+)?$", "", text[:start])
+            return by_colour_text(head) + text[len(head) :]
+        return by_colour_text(text)
+
+    def by_colour_text(text: str) -> str:
+        names = [scene.block(c) for c in re.findall(COLOUR, text)]
+        return _new_block(m, list(dict.fromkeys(names)), text)
 
     count = r"(?:(two|three|four|both|all|\d+)\s+)?"
     group = rf"\b(?:all\s+(?:of\s+)?)?(?:the\s+)?{count}(?:of\s+)?(?:the\s+)?{NOUNS}\b"
@@ -220,14 +248,20 @@ def _mark_blocks(m: Marked, scene: Scene) -> None:
             )
         return _new_block(m, scene.blocks, match.group(0))
 
-    each = rf"\b(?:each|every|any|all)\s+(?:of\s+the\s+)?(?:{NOUN}|{NOUNS})\b"
+    each = rf"\b(?:each|every|any|all)\s+(?:of\s+the\s+)?{count}(?:{NOUN}|{NOUNS})\b"
     m.sub(colours, by_colour)
+    m.sub(colours, by_colour)  # the phrases a repeated colour started
     # "no block may be placed ...": the prohibitions read "no B"
     m.sub(rf"\bno\s+{NOUN}\b", lambda match: "no" + _new_block(m, scene.blocks, match.group(0)))
     # "a block may not be placed ...": a generic block in a prohibition is every block
     negation = r"(?=\s+(?:may|must|can|should|shall|is)\s*(?:not|never)|\s+(?:cannot|never|mustn))"
     m.sub(rf"\b(?:a|an|any)\s+{NOUN}\b{negation}", lambda match: _new_block(m, scene.blocks, match.group(0)))
-    m.sub(each, lambda match: _new_block(m, scene.blocks, match.group(0)))
+    # "never place an object on ...", "do not put anything on ...": a generic object after a negated verb
+    m.sub(
+        rf"\b({NEG}\s+(?:{VERB}|drop|leave|lay))\s+(?:(?:a|an|any)\s+{NOUN}|anything)\b",
+        lambda match: match.group(1) + _new_block(m, scene.blocks, match.group(0)),
+    )
+    m.sub(each, all_blocks)
     m.sub(group, all_blocks)
     _mark_pronouns(m)
 
@@ -237,7 +271,7 @@ def _mark_pronouns(m: Marked) -> None:
 
     def resolve(match: re.Match[str]) -> str:
         before = [int(k) for k in re.findall(r"\bB(\d+)\b", m.text[: match.start()])]
-        fits = [k for k in before if match.group(0) == "them" or len(m.blocks[k]) == 1]
+        fits = [k for k in before if match.group(0) != "it" or len(m.blocks[k]) == 1]
         if not fits:
             return match.group(0)
         return _new_block(m, m.blocks[fits[-1]], match.group(0))
@@ -250,7 +284,7 @@ def _mark_pronouns(m: Marked) -> None:
 
     swap = r"(?:exchang(?:e|ing)|swap(?:ping)?|switch(?:ing)?|interchang(?:e|ing)|trad(?:e|ing))"
     m.text = re.sub(rf"\b({swap}\s+)(them|their)\b", pair, m.text)
-    m.text = re.sub(r"\b(?:it|them)\b", resolve, m.text)
+    m.text = re.sub(r"\b(?:it|them|they)\b", resolve, m.text)
 
 
 def _new_place(m: Marked, place: Place) -> str:
@@ -259,16 +293,70 @@ def _new_place(m: Marked, place: Place) -> str:
 
 
 def _mark_places(m: Marked, scene: Scene) -> None:
-    complement = (
-        r"\b(?:the\s+|an?\s+)?(?:any\s+)?(?:other\s+)?(?:areas?|regions?|places?|anywhere|zones?)\s+"
-        r"(?:other\s+than|except(?:\s+for)?|besides|apart\s+from|but)\s+(?:the\s+|their\s+|its\s+)?"
-        r"(?:target|goal|destination|assigned)\s+(?:regions?|areas?|places?|zones?)\b"
+    _mark_target_complements(m)
+    _mark_starts(m, scene)
+    m.sub(
+        r"\b(?:the\s+)?(?:opposite(?:\s+(?:side|sides|end|regions?|areas?|zones?))?|(?:far|other|facing)\s+"
+        r"(?:side|sides|end|regions?|areas?|zones?))(?:\s+(?:regions?|areas?))?"
+        r"(?:\s+of\s+the\s+(?:table|workspace|work\s+area|board))?\b",
+        lambda match: _new_place(m, Place("opposite", text=match.group(0).strip())),
     )
+    m.sub(
+        rf"\b(?:(?:any|an|some|a)\s+)?(?:other\s+)?{EMPTY}\s+{PLACE_NOUN}\b",
+        lambda match: _new_place(m, Place("away", text=match.group(0).strip())),
+    )
+    _mark_arm_sides(m, scene)
+    _mark_region_lists(m, scene)
+    # "the placement area (on the side of) P", "any region except P", "those regions": the place named
+    m.sub(rf"\b(?:the\s+)?{TARGET}\s+(?:regions?|areas?|zones?)\s+(?:(?:on|to|at|in)\s+)?(?=P\d)", " ")
+    m.sub(
+        rf"\b(?:(?:the|an?|any|all)\s+)?(?:other\s+)?{PLACE_NOUN}\s+{OTHER_THAN}\s+P(\d+)|\boutside\s+(?:of\s+)?P(\d+)",
+        lambda match: _complement_of(m, match),
+    )
+    m.sub(
+        rf"\b(?:those|these|the\s+same|said)\s+{PLACE_NOUN}\b",
+        lambda match: _new_place(m, m.places[-1]) if m.places else match.group(0),
+    )
+    # a place named twice ("region G (where the red block is)", "area (E, F, G) to the side of arm a",
+    # "next to arm a and arm b, that is region E, F and G"): both readings must agree
+    apposition = (
+        r"P(\d+)\s*,?\s*(?:\(|to|on|at|in|that\s+is|which\s+(?:is|are)|namely|:)?\s*,?\s*P(\d+)\s*\)?"
+    )
+    while re.search(apposition, m.text):
+        m.sub(apposition, lambda match: _merge(m, int(match.group(1)), int(match.group(2))))
+
+
+TARGET = r"(?:goal|target|placement|destination|assigned)"
+OTHER_THAN = r"(?:other\s+than|except(?:\s+for)?|besides|apart\s+from|but|outside(?:\s+of)?)"
+
+
+def _mark_target_complements(m: Marked) -> None:
+    """'an area other than the target region', 'anywhere else', 'any other region': in a prohibition,
+    every labelled region but the goals' targets."""
+    complement = (
+        rf"\b(?:the\s+|an?\s+)?(?:any\s+)?(?:other\s+)?(?:{PLACE_NOUN}|anywhere)\s+{OTHER_THAN}\s+"
+        rf"(?:the\s+|their\s+|its\s+)?{TARGET}\s+{PLACE_NOUN}\b|\boutside\s+(?:of\s+)?(?:the\s+|their\s+|its\s+)?"
+        rf"{TARGET}\s+{PLACE_NOUN}\b|\b(?:any|all)\s+other\s+{PLACE_NOUN}\b"
+    )
+
     def other_than(match: re.Match[str]) -> str:  # "anywhere other than ...", "elsewhere": with its "on"
-        on = " on " if re.match(r"anywhere|elsewhere", match.group(0)) else ""
+        on = " on " if re.match(r"anywhere|elsewhere|outside", match.group(0)) else ""
         return on + _new_place(m, Place("complement", text=match.group(0).strip()))
 
     m.sub(complement + r"|\b(?:anywhere\s+else|elsewhere)\b", other_than)
+
+
+def _complement_of(m: Marked, match: re.Match[str]) -> str:
+    """'any region except E, F and G', 'outside E, F and G': the labelled regions but those."""
+    named = m.places[int(match.group(1) or match.group(2))]
+    if named.kind != "regions":
+        raise HTTError(f"cannot tell which regions '{match.group(0).strip()}' leaves out")
+    on = " on " if match.group(2) else ""
+    return on + _new_place(m, Place("complement", named.regions, text=match.group(0).strip()))
+
+
+def _mark_starts(m: Marked, scene: Scene) -> None:
+    """'where the red block is', 'the original position of the red block': the region it starts on."""
 
     def start_of(match: re.Match[str]) -> str:
         k = int(match.group(1))
@@ -278,23 +366,25 @@ def _mark_places(m: Marked, scene: Scene) -> None:
         return _new_place(m, Place("start_of", (scene.start_region(block),), block, match.group(0).strip()))
 
     where = (
-        r"\(?\s*\bwhere\s+B(\d+)\s+(?:is|was|lies|lay|sits|sat|stands|started|starts)\s*(?:currently\s+|now\s+|"
-        r"initially\s+|at\s+first\s+)?(?:located|locating|lying|placed|sitting|standing|from)?\s*\)?"
+        r"(?:\b(?:to|in|into|on|onto|at)\s+)?\(?\s*\bwhere\s+B(\d+)\s+(?:is|was|lies|lay|sits|sat|stands|started|starts)\s*(?:currently\s+|now\s+|"
+        r"initially\s+|at\s+first\s+)?(?:located|locating|lying|placed|sitting|standing|from)?\s*"
+        r"(?:currently|now|initially|at\s+first|at\s+the\s+start)?\s*\)?"
     )
-    m.sub(where, start_of)
+
+    def where_of(match: re.Match[str]) -> str:  # "back (to) where the red block is": a place to go to
+        place = start_of(match)
+        return match.group(0) if place == match.group(0) else " to " + place
+
+    m.sub(where, where_of)
     m.sub(
-        r"\b(?:the\s+)?(?:original\s+|initial\s+|starting\s+|start\s+)?(?:position|place|spot|location|cell)\s+of\s+B(\d+)\s*(?=\W|$)",
+        r"\b(?:the\s+)?(?:original\s+|initial\s+|starting\s+|start\s+)?(?:position|place|spot|location|cell)\s+of\s+"
+        r"B(\d+)\s*(?=\W|$)",
         start_of,
     )
-    m.sub(
-        r"\b(?:the\s+)?(?:opposite(?:\s+(?:side|sides|end|regions?|areas?|zones?))?|(?:far|other|facing)\s+"
-        r"(?:side|sides|end|regions?|areas?|zones?))(?:\s+(?:regions?|areas?))?\b",
-        lambda match: _new_place(m, Place("opposite", text=match.group(0).strip())),
-    )
-    m.sub(
-        r"\b(?:any|an|some|a)\s+(?:other\s+)?(?:empty|free|unoccupied|vacant|open)\s+" + PLACE_NOUN + r"\b",
-        lambda match: _new_place(m, Place("away", text=match.group(0).strip())),
-    )
+
+
+def _mark_arm_sides(m: Marked, scene: Scene) -> None:
+    """'the side of arm a and arm b' (a place), 'next to arm a and arm b' (a landmark beside a place)."""
 
     def arms(match: re.Match[str]) -> str:
         letters = re.findall(r"\b[a-d]\b", re.sub(r"side of|reach of", "", match.group(0)))
@@ -303,44 +393,41 @@ def _mark_places(m: Marked, scene: Scene) -> None:
         return _new_place(m, Place(kind, regions, text=match.group(0).strip()))
 
     m.sub(
-        r"\b(?:(?:the\s+)?sides?\s+of|next\s+to|beside|near|close\s+to|in\s+front\s+of|within\s+reach\s+of|"
+        r"\b(?:(?:the\s+)?sides?\s+of|next\s+to|beside|by|near|close\s+to|in\s+front\s+of|within\s+reach\s+of|"
         r"reachable\s+by)\s+(?:the\s+)?arms?\s+[a-d](?:\s*(?:,|and|&)\s*(?:the\s+)?(?:arm\s+)?[a-d])*\b",
         arms,
     )
 
+
+def _mark_region_lists(m: Marked, scene: Scene) -> None:
+    """'region H, I and J', 'the goal regions G/H/I', and bare letters after a preposition ('on I')."""
+
     def regions(match: re.Match[str]) -> str:
-        text = match.group(0)
-        letters = [
-            x.upper() for x in re.findall(LETTER, re.sub(r"^.*?(?:regions?|areas?|zones?)\b", "", text))
-        ]
+        letters = [x.upper() for x in re.findall(LETTER, match.group("list"))]
         unknown = [x for x in letters if x not in scene.layout.regions]
         if unknown:
             raise HTTError(f"no region {', '.join(unknown)} in handover-{scene.layout.name}")
+        text = match.group(0)[len(match.group("prep") or "") :]
         count = re.match(r"\s*(?:the\s+)?(two|three|four|\d+)\s", text)
         if count and COUNTS.get(count.group(1)) != len(set(letters)):
             raise HTTError(f"'{text.strip()}' says {count.group(1)} regions but names {len(set(letters))}")
-        return _new_place(m, Place("regions", tuple(dict.fromkeys(letters)), text=text.strip()))
+        place = _new_place(m, Place("regions", tuple(dict.fromkeys(letters)), text=text.strip()))
+        return (match.group("prep") or "") + place
 
-    link = r"(?:\s*(?:,|\band\b|\bor\b|\bat\b|&|\(|\)))*\s*(?:\bregions?\s+)?"
+    link = rf"(?:\s*(?:,|\band\b|\bor\b|\bat\b|&|/|\(|\)))*\s*(?:\b{PLACE_NOUN}\s+)?"
     lead = (
-        r"\b(?:the\s+)?(?:(?:two|three|four|\d+)\s+)?(?:(?:goal|target|placement|destination)\s+)?"
-        r"(?:regions?|areas?|zones?)\s*(?:\(\s*)?(?:at\s+)?(?:regions?\s+)?"
+        rf"(?P<prep>)\b(?:the\s+)?(?:(?:two|three|four|\d+)\s+)?(?:{TARGET}\s+)?"
+        rf"{PLACE_NOUN}\s*(?:\(\s*)?(?:at\s+)?(?:{PLACE_NOUN}\s+)?"
     )
-    m.sub(lead + LETTER + r"(?:" + link + LETTER + r")*(?:\s*\))?(?:\s+at\b)?", regions)
-    # "the placement area on the side of arm a and arm b (region E, F, G)": the area is the place named
-    m.sub(
-        r"\b(?:the\s+)?(?:goal|target|placement|destination)\s+(?:regions?|areas?|zones?)"
-        r"\s+(?:on|to|at|in)\s+(?=P\d)",
-        " ",
-    )
-    # a place named twice ("region G (where the red block is)", "area (E, F, G) to the side of arm a"):
-    # both readings must agree
-    apposition = r"P(\d+)\s*(?:,|\(|to|on|at|in)?\s*P(\d+)\s*\)?"
-    while re.search(apposition, m.text):
-        m.sub(apposition, lambda match: _merge(m, int(match.group(1)), int(match.group(2))))
+    bare = r"(?P<prep>\b(?:to|into|onto|on|in|at|among|over|between|than|except|besides|from|outside)\s+)"
+    letters = LETTER + r"(?:" + link + LETTER + r")*(?:\s*\))?"
+    m.sub(rf"{lead}(?P<list>{letters})(?:\s+at\b)?", regions)
+    m.sub(rf"{bare}(?P<list>{letters})", regions)
 
 
 def _merge(m: Marked, i: int, j: int) -> str:
+    if m.places[i].kind != "regions":  # keep the named regions; the other reading must agree with them
+        i, j = j, i
     a, b = m.places[i], m.places[j]
     agree = a.kind == "regions" and b.kind in ("regions", "start_of", "landmark")
     if not agree or set(a.regions) != set(b.regions):

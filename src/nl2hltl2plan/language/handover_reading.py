@@ -35,18 +35,22 @@ from typing import TypeGuard
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.handover_phrases import FILLER, Marked, Place, Scene, drop_but, mark
+from nl2hltl2plan.language.handover_rules import (
+    Prohibition,
+    blocks_of,
+    read_orders,
+    read_prohibitions,
+    read_touch_guards,
+)
 from nl2hltl2plan.language.handover_words import (
     AFTER_ALL,
     DONE,
-    DROP,
-    GERUND,
     LEAD,
     MOD,
-    NEG,
-    PERIOD,
+    MODAL,
+    PERIOD_WORDS,
     PREP,
-    TOUCH,
-    TOUCHED,
+    THEN,
     VERB,
 )
 from nl2hltl2plan.language.htt import HTT, HTTNode
@@ -54,8 +58,6 @@ from nl2hltl2plan.language.result import LanguageResult
 from nl2hltl2plan.language.spec_builder import build_spec
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter, transitive_reduction
 from nl2hltl2plan.worlds.world import World
-
-Prohibition = tuple[list[str], Place | None, list[str], str]  # blocks, place, explicit regions, text
 
 
 @dataclass
@@ -129,9 +131,9 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
     for sentence in (s for s in re.split(r"[.;!?]+(?:\s|$)", instruction) if s.strip()):
         m = mark(sentence, scene)
         notes += m.notes
-        forbids = _prohibitions(m)
-        touches += _touch_guards(m)
-        orders += _orders(m)
+        forbids = read_prohibitions(m)
+        touches += read_touch_guards(m)
+        orders += read_orders(m)
         new = _goal_clauses(m, scene)
         drop_but(m)
         _refuse_leftovers(m, sentence)
@@ -159,107 +161,6 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
 
 
 # ----- clause patterns --------------------------------------------------------------------------------
-def _blocks(m: Marked, k: str) -> list[str]:
-    return m.blocks[int(k)]
-
-
-def _one(m: Marked, k: str, what: str) -> str:
-    names = m.blocks[int(k)]
-    if len(names) != 1:
-        raise HTTError(f"'{m.block_text[int(k)]}' names {len(names)} blocks where {what} needs one")
-    return names[0]
-
-
-def _orders(m: Marked) -> list[tuple[str, str]]:
-    out: list[tuple[str, str]] = []
-    modal = r"(?:should|must|has\s+to|have\s+to|needs?\s+to|is\s+to|are\s+to|will|gets?|is|are)?\s*(?:be\s+)?"
-    tail = rf"(?:\s+(?:is|has\s+been|gets|was)\s+{DONE})?"
-
-    def add(match: re.Match[str], flip: bool) -> str:
-        a, b = _one(m, match.group(1), "an order"), _one(m, match.group(2), "an order")
-        out.append((b, a) if flip else (a, b))
-        return " "
-
-    for word, flip in (
-        (r"(?:before|earlier\s+than|prior\s+to|ahead\s+of)", False),
-        (r"(?:after|later\s+than)", True),
-    ):
-        m.sub(rf"\b(?:{VERB}|{GERUND})\s+B(\d+)\s+{word}\s+B(\d+){tail}", lambda x, f=flip: add(x, f))
-        m.sub(
-            rf"(?:\bwith\s+)?\bB(\d+)\s+{modal}(?:(?:{DONE}|comes?|lands?|arrives?)\s+)?(?:down\s+)?{word}\s+B(\d+)"
-            rf"{tail}",
-            lambda x, f=flip: add(x, f),
-        )
-    return out
-
-
-def _touch_guards(m: Marked) -> list[tuple[str, str]]:
-    out: list[tuple[str, str]] = []
-
-    def add(match: re.Match[str]) -> str:
-        out.append((_one(m, match.group(1), "a touch rule"), _one(m, match.group(2), "a touch rule")))
-        return " "
-
-    until = r"(?:until|before|unless)"
-    # the other block's touch, active ("until an arm touched Y") or passive ("until Y has been touched")
-    other = (
-        rf"(?:(?:A\s+)?(?:has\s+|have\s+|had\s+)?(?:already\s+)?{TOUCHED}\s+B(\d+)|B(\d+)\s+"
-        rf"(?:has\s+been|have\s+been|is|was|had\s+been|gets)\s+(?:already\s+)?{TOUCHED})"
-    )
-
-    def add_either(match: re.Match[str]) -> str:
-        y = match.group(2) or match.group(3)
-        out.append((_one(m, match.group(1), "a touch rule"), _one(m, y, "a touch rule")))
-        return " "
-
-    m.sub(
-        rf"(?:(?:\bA\s+)?{NEG}|\bno\s+A\s+(?:may|can|should|must|will|is\s+allowed\s+to)?)\s+{TOUCH}\s+B(\d+)\s+"
-        rf"{until}\s+{other}",
-        add_either,
-    )
-    m.sub(
-        rf"\bB(\d+)\s+{NEG}\s+be\s+{TOUCHED}\s+(?:by\s+A\s+)?{until}\s+B(\d+)\s+(?:has\s+been|is|was|had\s+been)\s+"
-        rf"(?:already\s+)?{TOUCHED}",
-        add,
-    )
-    return out
-
-
-def _prohibitions(m: Marked) -> list[Prohibition]:
-    """(blocks, place, explicit regions, text) per 'no block can be placed on ...' statement."""
-    out: list[Prohibition] = []
-
-    def add(match: re.Match[str]) -> str:
-        blocks = _blocks(m, match.group("b")) if match.groupdict().get("b") else []
-        place = m.places[int(match.group("p"))]
-        if place.kind == "opposite" and "other" in place.text:  # "the other regions": all but the targets
-            place = Place("complement", text=place.text)
-        explicit = list(place.regions) if place.kind == "regions" else []
-        if place.kind not in ("regions", "complement"):
-            raise HTTError(f"cannot forbid '{place.text}': name the regions")
-        out.append((blocks, None if explicit else place, explicit, match.group(0).strip()))
-        return " "
-
-    down = rf"(?:\s+down)?\s+{PREP}\s+P(?P<p>\d+){PERIOD}"
-    m.sub(
-        r"\b(?:meanwhile|in\s+the\s+meantime|during\s+this\s+(?:period|time)|throughout)\s*,?\s*(?=no\s+B|nothing)",
-        "",
-    )
-    m.sub(
-        rf"\bno\s+B(?P<b>\d+)\s+(?:can|may|should|must|will|is\s+allowed\s+to|are\s+allowed\s+to)?\s*(?:ever\s+)?(?:be\s+)?{DROP}{down}",
-        add,
-    )
-    modal = r"(?:(?:must|may|can|should|shall|will|is|are)\s+)?"
-    m.sub(rf"\bB(?P<b>\d+)\s+{modal}{NEG}\s+(?:ever\s+)?(?:be\s+)?{DROP}{down}", add)
-    m.sub(
-        rf"(?:(?:\bA\s+)?{NEG}|\bno\s+A\s+(?:may|can|should|must|will)?)\s+(?:put|place|drop|set|leave|lay)\s+"
-        rf"B(?P<b>\d+){down}",
-        add,
-    )
-    m.sub(rf"\bnothing\s+(?:can|may|should|must|will)?\s*(?:be\s+)?{DROP}{down}", add)
-    return out
-
-
 def _goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
     clauses: list[Clause] = []
 
@@ -274,7 +175,7 @@ def _goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
         return f" G{len(clauses) - 1} "
 
     def exchange(match: re.Match[str]) -> str:
-        pair = _blocks(m, match.group(1))
+        pair = blocks_of(m, match.group(1))
         if len(pair) != 2:
             raise HTTError(
                 f"exchange needs two blocks, '{m.block_text[int(match.group(1))]}' names {len(pair)}"
@@ -297,7 +198,7 @@ def _goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
 
     def matched(x: re.Match[str], k: int) -> str:  # groups from k: blocks, modifiers, place, modifiers
         place, text = m.places[int(x.group(k + 2))], x.group(0).strip()
-        return goal(_blocks(m, x.group(k)), place, text, x.group(k + 1) + x.group(k + 3))
+        return goal(blocks_of(m, x.group(k)), place, text, x.group(k + 1) + x.group(k + 3))
 
     m.sub(
         r"(?:\bwhile\s+)?\b(?:exchang(?:e|ing)|swap(?:ping)?|switch(?:ing)?|interchang(?:e|ing)|trad(?:e|ing))\s+(?:the\s+)?(?:positions?\s+|places?\s+|locations?\s+|spots?\s+)?(?:of\s+)?B(\d+)(?:\s+(?:s\s+)?(?:positions?|places?|locations?))?",
@@ -314,7 +215,7 @@ def _goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
     # the inverse syntax "fill regions H, I and J with the three blocks": as many places as blocks
     m.sub(rf"\b(?:fill|occupy|populate)\s+P(\d+)\s+with\s+B(\d+){mods}", lambda x: _fill(m, x, goal))
     m.sub(
-        rf"\bB(\d+)\s+(?:should|must|needs?\s+to|has\s+to|have\s+to|will)?\s*(?:be\s+)?{DONE}{mods}\s+(?:back\s+)?"
+        rf"(?:\bwith\s+)?\bB(\d+)\s+{MODAL}{DONE}{mods}\s+(?:back\s+)?"
         rf"{PREP}\s+P(\d+){mods}",
         lambda x: matched(x, 1),
     )
@@ -326,7 +227,7 @@ def _goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
     )
     # the verb and the blocks shared with the clause just before: "to I, then to G", "on I first, then on G"
     m.sub(
-        rf"\bG(\d+)(?P<link>(?:\s+first\b)?\s*,?\s*(?:and\s+)?then\s+)(?:back\s+)?{PREP}\s+P(\d+){mods}",
+        rf"\bG(\d+)(?P<link>(?:\s+first\b)?\s*,?\s*(?:and\s+)?{THEN}{LEAD})(?:back\s+)?{PREP}\s+P(\d+){mods}",
         lambda x: f" G{x.group(1)} {x.group('link')}" + again(clauses[int(x.group(1))], x),
     )
     _markers(m, clauses)
@@ -337,7 +238,7 @@ def _goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
 
 
 def _fill(m: Marked, x: re.Match[str], goal: Callable[[list[str], Place, str, str], str]) -> str:
-    place, blocks = m.places[int(x.group(1))], _blocks(m, x.group(2))
+    place, blocks = m.places[int(x.group(1))], blocks_of(m, x.group(2))
     if place.kind != "regions" or len(set(place.regions)) != len(blocks):
         raise HTTError(f"'{x.group(0).strip()}': fill needs as many named regions as blocks")
     return goal(blocks, place, x.group(0).strip(), x.group(3))
@@ -350,7 +251,7 @@ def _markers(m: Marked, clauses: list[Clause]) -> None:
 
     m.sub(rf"\b(?:first(?:ly)?|to\s+begin\s+with|start\s+by){LEAD}G(\d+)", lambda x: set_marker(x, "first"))
     m.sub(
-        rf"(?:,\s*)?(?:\band\s+)?\b(?:then|after\s+that|afterwards?|next|subsequently|later){LEAD}G(\d+)",
+        rf"(?:,\s*)?(?:\band\s+)?\b{THEN}{LEAD}G(\d+)",
         lambda x: set_marker(x, "then"),
     )
     m.sub(rf"\b{AFTER_ALL}{LEAD}G(\d+)", lambda x: set_marker(x, "after_all"))
@@ -361,6 +262,8 @@ def _markers(m: Marked, clauses: list[Clause]) -> None:
         return f" G{match.group(1)} "
 
     m.sub(r"\b(?:at\s+any\s+time|any\s+time|in\s+any\s+order)\s*,?\s*G(\d+)", anytime)
+    # "meanwhile, move ...": a goal with no order to the others, as any goal without a marker
+    m.sub(rf"\b{PERIOD_WORDS}\s*,?\s*(?=G\d+|at\s+any\s+time)", " ")
     m.sub(r"(?:,\s*)?\band\s+(?=G\d+)", lambda _: " ")
 
 
@@ -389,6 +292,8 @@ def _guard(
     for g in goals:
         if explicit:
             regions = explicit
+        elif place is not None and place.regions:  # "any region except E, F and G"
+            regions = [r for r in scene.layout.regions if r not in place.regions]
         else:
             if g.place.kind not in ("regions", "opposite"):
                 raise HTTError(f"'{text}': the goal '{g.text}' has no target regions to except")

@@ -1,15 +1,27 @@
 """The word classes of the four-arm handover worlds' reader (`handover_reading`), as regular
 expressions: placing verbs and prepositions, modifiers, negations, touching and dropping verbs, the
-"during this period" and "after all of these" phrases, and the polite lead-ins the reader skips."""
+"during this period" and "after all of these" phrases, the polite lead-ins the reader skips, and the
+rewrites that map a writer's variants (synonyms, British forms, common typos) onto the forms read."""
 
-VERB = r"(?:transfer|move|put|place|bring|carry|take|deliver|relocate|shift|get|set|send|return)"
-PREP = r"(?:to|into|onto|on|in|at|towards?|over\s+to|in\s+to|on\s+to)"
+VERB = (
+    r"(?:transfer|move|put|place|bring|carry|take|deliver|relocate|shift|get|set|send|return|distribute|"
+    r"spread|position|drop)"
+)
+PREP = r"(?:to|into|onto|on|in|at|towards?|over\s+to|in\s+to|on\s+to|among|across|over)"
 MOD = (
     r"(?:separately|individually|one\s+after\s+another|one\s+by\s+one|one\s+at\s+a\s+time|in\s+turn|each|"
-    r"all|at\s+any\s+time|any\s+time|whenever|as\s+well|too|across|over)"
+    r"all|at\s+any\s+time|any\s+time|whenever|in\s+any\s+order|as\s+well|too|across|over)"
 )
-GERUND = r"(?:placing|putting|moving|transferring|bringing|carrying|delivering)"
-DONE = r"(?:placed|put|moved|transferred|delivered|carried|brought|done|handled|go|goes)"
+GERUND = r"(?:placing|putting|moving|transferring|bringing|carrying|delivering|taking|getting|shifting)"
+DONE = (
+    r"(?:placed|put|moved|transferred|delivered|carried|brought|taken|shifted|relocated|done|handled|set|"
+    r"dropped|go|goes|going|end\s+up|ends\s+up|land|lands)"
+)
+# a passive goal's or order's modal: "should", "is to", "can", "has to" ... ("be" follows, optional)
+MODAL = (
+    r"(?:(?:should|must|shall|will|can|may|could|would|has\s+to|have\s+to|needs?\s+to|ought\s+to|is\s+to|"
+    r"are\s+to|gets?|is|are|being)\s+)?(?:(?:all|each|both|first|only|also)\s+)?(?:be\s+)?"
+)
 NEG = (
     r"(?:cannot|can\s+not|can\s+t|must\s+not|mustn\s+t|should\s+not|shouldn\s+t|may\s+not|do\s+not|"
     r"does\s+not|don\s+t|doesn\s+t|(?:is|are)\s+not\s+allowed\s+to|never|not)"
@@ -18,14 +30,83 @@ TOUCH = r"(?:touch|pick\s+up|pick|grasp|grab|handle|move|lift)"
 TOUCHED = (
     r"(?:touched|picked\s+up|picked|grasped|grabbed|handled|moved|lifted|touches|picks\s+up|grabs|moves)"
 )
-DROP = r"(?:placed|put|dropped|set|left|laid)"
-PERIOD = (
-    r"(?:\s*,?\s*(?:during\s+this\s+(?:period|time)|in\s+the\s+meantime|meanwhile|while\s+doing\s+(?:so|this)|"
-    r"until\s+then|throughout|at\s+any\s+time|ever|at\s+all))?"
+DROP = r"(?:placed|put|dropped|set|left|laid)(?:\s+down)?"
+# "during this period": a prohibition's scope, the goals of its sentence (else all goals so far)
+PERIOD_WORDS = (
+    r"(?:during\s+(?:this|that|the\s+same)\s+(?:period|time)|in\s+the\s+meantime|meanwhile|"
+    r"while\s+doing\s+(?:so|this|that|it)|while\s+(?:this|that)\s+(?:happens|is\s+happening|goes\s+on)|"
+    r"at\s+the\s+same\s+time|in\s+the\s+process|all\s+the\s+while|the\s+whole\s+time|throughout|until\s+then)"
 )
+PERIOD = rf"(?:\s*,?\s*(?:{PERIOD_WORDS}|at\s+any\s+time|ever|at\s+all))?"
+EMPTY = r"(?:empty|free|clear|unoccupied|vacant)"
+DONE_STATE = r"(?:done|finished|complete|completed|over)"
 AFTER_ALL = (
-    r"(?:after\s+all\s+(?:of\s+)?(?:these|this|that|the\s+above)|after\s+all\s+that|once\s+(?:all\s+)?"
-    r"(?:this|these|that)\s+(?:is|are|has\s+been|have\s+been)\s+done|when\s+(?:all\s+)?(?:this|these|that)\s+"
-    r"(?:is|are)\s+done|finally|lastly|at\s+the\s+end|in\s+the\s+end)"
+    r"(?:after\s+(?:all\s+(?:of\s+)?(?:these|this|that|the\s+above)|everything(?:\s+else)?)"
+    rf"(?:\s+(?:is|are|has\s+been|have\s+been)\s+{DONE_STATE})?|(?:once|when)\s+(?:all\s+(?:of\s+)?)?"
+    rf"(?:this|these|that|everything(?:\s+else)?|the\s+above)\s+(?:is|are|has\s+been|have\s+been)\s+{DONE_STATE}|"
+    r"finally|lastly|last\s+of\s+all|at\s+the\s+(?:very\s+)?end|in\s+the\s+end|as\s+a\s+(?:final|last)\s+step)"
 )
+THEN = r"(?:then|after\s+that|afterwards?|next|subsequently|later|and\s+then)"
 LEAD = r"\s*,?\s*(?:you\s+should\s+|please\s+|we\s+should\s+)?"
+
+# Rewrites applied to the lower-cased sentence before any phrase is read: each maps a variant onto the
+# form the patterns read and changes no meaning ("prior to" -> "before", "whilst" -> "while").
+REWRITES: tuple[tuple[str, str], ...] = (
+    (r"\bi\s*\.\s*e\s*\.?(?=\s|,|$)", " that is "),
+    (r"\bwhilst\b", "while"),
+    (r"\bcan\s*'\s*t\b", "cannot"),
+    (r"\bwon\s*'\s*t\b", "will not"),
+    (r"\bshan\s*'\s*t\b", "shall not"),
+    (r"n\s*'\s*t\b", " not"),
+    (r"\bamongst\b", "among"),
+    (r"\b(?:i|we)\s*(?:'\s*d|would)\s+like\s+(?:you\s+)?to\b", "please"),
+    (r"\b(?:i|we)\s+(?:want|need)\s+you\s+to\b", "please"),
+    (r"\b(?:could|can|would|will)\s+you\s+(?:please\s+)?", "please "),
+    (r"\blet\s*'?\s*s\b|\blet\s+us\b|\bgo\s+ahead\s+and\b", "please"),
+    (r"\banytime\b", "at any time"),
+    (
+        r"\b(?:whenever\s+(?:you\s+(?:like|want|wish|please|can)|convenient|possible|it\s+suits\s+you)|"
+        r"at\s+(?:any|whatever)\s+(?:point(?:\s+in\s+time)?|moment|stage)|any\s+time\s+you\s+(?:like|want))\b",
+        "at any time",
+    ),
+    (r"\bat\s+any\s+time\s+at\s+any\s+time\b", "at any time"),
+    (
+        r"\b(?:sequentially|in\s+sequence|successively|in\s+succession|consecutively|one\s+after\s+the\s+other)\b",
+        "one after another",
+    ),
+    (r"\b(?:earlier\s+than|prior\s+to|ahead\s+of|in\s+advance\s+of|sooner\s+than)\b", "before"),
+    (r"\blater\s+than\b", "after"),
+    # "put it on I before putting it on G": the steps in order
+    (
+        r"\s*,?\s*\bbefore\s+(?:placing|putting|moving|bringing|transferring|taking|carrying|setting)\b",
+        ", then put",
+    ),
+    (r"\b(?:avoid|refrain\s+from)\s+placing\b", "do not place"),
+    (r"\b(?:avoid|refrain\s+from)\s+putting\b", "do not put"),
+    (r"\b(?:avoid|refrain\s+from)\s+dropping\b", "do not drop"),
+    (r"\b(?:avoid|refrain\s+from)\s+setting\b", "do not set"),
+    (r"\b(?:avoid|refrain\s+from)\s+touching\b", "do not touch"),
+    (r"\b(?:avoid|refrain\s+from)\s+picking\s+up\b", "do not pick up"),
+    (r"\b(?:avoid|refrain\s+from)\s+grabbing\b", "do not grab"),
+)
+
+# Common typos of the words that carry the meaning: a transposed, dropped or doubled letter (not the
+# first) of a word of five letters or more; forms that are English words themselves are left alone.
+TYPO_WORDS = (
+    "block blocks region regions opposite place placed transfer before after yellow pillar pillars object "
+    "objects separately another empty touch touched exchange position positions should until during period "
+    "please first other across"
+).split()
+REAL_WORDS = frozenset("pace paced touche fist firs pease pleas".split())
+
+
+def typo_table() -> dict[str, str]:
+    """misspelling -> word, for the words of `TYPO_WORDS` (a misspelling that two words share is left out)."""
+    seen: dict[str, set[str]] = {}
+    for word in (w for w in TYPO_WORDS if len(w) >= 5):
+        forms = {word[:i] + word[i + 1] + word[i] + word[i + 2 :] for i in range(1, len(word) - 1)}
+        forms |= {word[:i] + word[i + 1 :] for i in range(1, len(word))}
+        forms |= {word[:i] + word[i] + word[i:] for i in range(1, len(word))}
+        for form in forms - set(TYPO_WORDS) - REAL_WORDS:
+            seen.setdefault(form, set()).add(word)
+    return {form: next(iter(words)) for form, words in seen.items() if len(words) == 1}

@@ -1,0 +1,193 @@
+"""The rules of a handover sentence, read before its goals (`handover_reading`): the orders between
+blocks' goals ("X before Y"), the touch guards ("no arm may touch X until Y has been touched") and the
+prohibitions ("no block can be placed on R during this period"). Each reader consumes the placeholders
+and words it reads and returns what it found; what no reader reads is refused by the caller."""
+
+from __future__ import annotations
+
+import re
+
+from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.language.handover_phrases import Marked, Place
+from nl2hltl2plan.language.handover_words import (
+    DONE,
+    DROP,
+    EMPTY,
+    GERUND,
+    MODAL,
+    NEG,
+    PERIOD,
+    PERIOD_WORDS,
+    PREP,
+    THEN,
+    TOUCH,
+    TOUCHED,
+    VERB,
+)
+
+Prohibition = tuple[list[str], Place | None, list[str], str]  # blocks, place, explicit regions, text
+
+
+def blocks_of(m: Marked, k: str) -> list[str]:
+    return m.blocks[int(k)]
+
+
+def one_block(m: Marked, k: str, what: str) -> str:
+    names = m.blocks[int(k)]
+    if len(names) != 1:
+        raise HTTError(f"'{m.block_text[int(k)]}' names {len(names)} blocks where {what} needs one")
+    return names[0]
+
+
+def read_orders(m: Marked) -> list[tuple[str, str]]:
+    """'X (should be placed) before Y', 'Y after X', 'place X first, then Y', 'X followed by Y', 'once X
+    has been placed, Y may be placed', 'do not place Y until X has been placed': X's goal before Y's."""
+    out: list[tuple[str, str]] = []
+    tail = rf"(?:\s+(?:is|has\s+been|gets|was|have\s+been|are)\s+{DONE})?"
+    done = rf"(?:(?:{DONE}|comes?|lands?|arrives?|goes)\s+)?(?:down\s+)?(?:first\s*,?\s*)?"
+
+    def add(match: re.Match[str], flip: bool) -> str:
+        a, b = one_block(m, match.group(1), "an order"), one_block(m, match.group(2), "an order")
+        out.append((b, a) if flip else (a, b))
+        return " "
+
+    def add_pair(a: str, b: str) -> str:
+        out.append((one_block(m, a, "an order"), one_block(m, b, "an order")))
+        return " "
+
+    # the second block's goal, without its place: "then the blue block", "followed by the blue block"
+    end = r"(?=\s*(?:$|,|\band\b|\)))"
+    later = r"(?:after\s+B\d+|second|next|last|afterwards?)"
+    then = rf"(?:{THEN}|followed\s+by|and(?=\s+(?:{VERB}\s+)?B\d+\s+{later}\b))"
+
+    def add_then(x: re.Match[str]) -> str:  # "the red block first and the blue block after it": it = red
+        if x.group(3) is not None and m.blocks[int(x.group(3))] != m.blocks[int(x.group(1))]:
+            return x.group(0)
+        return add(x, False)
+
+    m.sub(
+        rf"\b(?:(?:{VERB}|{GERUND})\s+)?B(\d+)\s+(?:first\s*)?,?\s*{then}\s+(?:(?:{VERB}|{GERUND})\s+)?B(\d+)"
+        rf"(?:\s+(?:after\s+B(\d+)|second|next|last|afterwards?))?{end}",
+        add_then,
+    )
+    for word, flip in ((r"before", False), (r"after", True)):
+        m.sub(
+            rf"\b(?:{VERB}|{GERUND})\s+B(\d+)\s+(?:first\s*,?\s*)?{word}\s+B(\d+){tail}",
+            lambda x, f=flip: add(x, f),
+        )
+        m.sub(
+            rf"(?:\bwith\s+)?\bB(\d+)\s+{MODAL}{done}(?:only\s+)?{word}\s+B(\d+){tail}",
+            lambda x, f=flip: add(x, f),
+        )
+    m.sub(
+        rf"\b(?:only\s+)?(?:once|after|when)\s+B(\d+)\s+(?:has|have|had)\s+been\s+{DONE}\s*,?\s*(?:only\s+then\s+)?"
+        rf"(?:can|may|should|must|will)?\s*(?:B(\d+)\s+{MODAL}{DONE}|(?:{VERB})\s+B(\d+)){end}",
+        lambda x: add_pair(x.group(1), x.group(2) or x.group(3)),
+    )
+    m.sub(
+        rf"\b(?:A\s+)?{NEG}\s+(?:{VERB})\s+B(\d+)\s+(?:until|before)\s+B(\d+)\s+(?:has|have|had)\s+been\s+{DONE}{end}",
+        lambda x: add_pair(x.group(2), x.group(1)),
+    )
+
+    return out
+
+
+def read_touch_guards(m: Marked) -> list[tuple[str, str]]:
+    """(X, Y): X is not picked up before Y is. 'no arm may touch X until an arm has touched Y', 'until Y
+    has been touched, X must not be touched', 'X may only be touched after Y', 'Y must be picked up
+    before X', 'leave X alone until Y has been touched'."""
+    out: list[tuple[str, str]] = []
+
+    def add(match: re.Match[str]) -> str:
+        y = next(match.group(g) for g in ("y1", "y2", "y3") if match.group(g) is not None)
+        out.append((one_block(m, match.group("x"), "a touch rule"), one_block(m, y, "a touch rule")))
+        return " "
+
+    end = r"(?=\s*(?:$|,|\band\b|\)))"
+    # Y's touch, active ("an arm touched Y"), passive ("Y has been touched") or elliptic ("... before Y")
+    other = (
+        rf"(?:(?:A\s+)?(?:has\s+|have\s+|had\s+)?(?:already\s+)?{TOUCHED}\s+B(?P<y1>\d+)|B(?P<y2>\d+)\s+"
+        rf"(?:has\s+been|have\s+been|is|was|had\s+been|gets|got)\s+(?:already\s+)?{TOUCHED}|B(?P<y3>\d+){end})"
+    )
+    may = r"(?:may|can|should|must|will|shall|is\s+allowed\s+to|are\s+allowed\s+to)"
+    no_touch = rf"(?:(?:\bA\s+)?{NEG}|\bno\s+A\s+{may}?)\s+{TOUCH}\s+B(?P<x>\d+)"
+    not_touched = rf"\bB(?P<x>\d+)\s+{NEG}\s+(?:ever\s+)?be\s+{TOUCHED}(?:\s+by\s+A)?"
+    until = r"(?:until|before|unless)"
+    after = r"(?:only\s+)?(?:after|once|when)"
+    for pattern in (
+        rf"{no_touch}\s+{until}\s+{other}",
+        rf"{not_touched}\s+{until}\s+{other}",
+        rf"\b{until}\s+{other}\s*,?\s*{no_touch}",
+        rf"\b{until}\s+{other}\s*,?\s*{not_touched}",
+        rf"\bleave\s+B(?P<x>\d+)\s+(?:alone|untouched|be)\s+{until}\s+{other}",
+        rf"\b{after}\s+{other}\s*,?\s*(?:only\s+then\s+)?{may}\s+(?:A\s+)?{TOUCH}\s+B(?P<x>\d+)",
+        rf"\b{after}\s+{other}\s*,?\s*(?:only\s+then\s+)?{may}\s+B(?P<x>\d+)\s+be\s+{TOUCHED}(?:\s+by\s+A)?",
+        rf"(?:\bA\s+)?{may}\s+(?:only\s+)?{TOUCH}\s+B(?P<x>\d+)\s+{after}\s+{other}",
+        rf"\bB(?P<x>\d+)\s+{may}\s+(?:only\s+)?be\s+{TOUCHED}(?:\s+by\s+A)?\s+{after}\s+{other}",
+        # the positive order of the touches: "Y must be picked up before X (is)"
+        rf"\bB(?P<y1>\d+)\s+{MODAL}{TOUCHED}(?:\s+by\s+A)?\s+(?:first\s*,?\s*)?before\s+B(?P<x>\d+)"
+        rf"(?:\s+(?:is|has\s+been|gets)\s+{TOUCHED})?(?P<y2>)(?P<y3>){end}",
+        rf"(?:\bA\s+)?(?:{may}\s+)?{TOUCH}\s+B(?P<y1>\d+)\s+(?:first\s*,?\s*)?before\s+(?:touching\s+|picking\s+up\s+|"
+        rf"grabbing\s+|{TOUCH}\s+)?B(?P<x>\d+)(?P<y2>)(?P<y3>){end}",
+    ):
+        m.sub(pattern, add)
+    return out
+
+
+def read_prohibitions(m: Marked) -> list[Prohibition]:
+    """(blocks, place, explicit regions, text) per 'no block can be placed on ...' statement."""
+    out: list[Prohibition] = []
+
+    def add(match: re.Match[str]) -> str:
+        blocks = blocks_of(m, match.group("b")) if match.groupdict().get("b") else []
+        place = m.places[int(match.group("p"))]
+        if place.kind == "opposite" and "other" in place.text:  # "the other regions": all but the targets
+            place = Place("complement", text=place.text)
+        explicit = list(place.regions) if place.kind == "regions" else []
+        if place.kind not in ("regions", "complement"):
+            raise HTTError(f"cannot forbid '{place.text}': name the regions")
+        out.append((blocks, None if explicit else place, explicit, match.group(0).strip()))
+        return " "
+
+    down = rf"(?:\s+down)?\s+{PREP}\s+P(?P<p>\d+){PERIOD}"
+    m.sub(
+        rf"\b{PERIOD_WORDS}\s*,?\s*(?=no\s+B|nothing|B\d+\s+{MODAL}{NEG}|(?:A\s+)?{NEG}|keep|leave|P\d)", " "
+    )
+    may = r"(?:can|may|should|must|will|shall|is\s+allowed\s+to|are\s+allowed\s+to)"
+    m.sub(rf"\bno\s+B(?P<b>\d+)\s+{may}?\s*(?:ever\s+)?(?:be\s+)?{DROP}{down}", add)
+    modal = r"(?:(?:must|may|can|should|shall|will|is|are)\s+)?"
+    m.sub(rf"\bB(?P<b>\d+)\s+{modal}{NEG}\s+(?:ever\s+)?(?:be\s+)?{DROP}{down}", add)
+    m.sub(
+        rf"(?:(?:\bA\s+)?{NEG}|\bno\s+A\s+{may}?)\s+(?:put|place|drop|set|leave|lay)\s+B(?P<b>\d+){down}",
+        add,
+    )
+    m.sub(rf"\bnothing\s+{may}?\s*(?:be\s+)?{DROP}{down}", add)
+    # "regions F, G and H must stay empty (meanwhile)", "keep F, G and H free": nothing is put there
+    must = r"(?:(?:must|should|will|shall|has\s+to|have\s+to|needs?\s+to)\s+)?"
+    stay = rf"{must}(?:stay|remain|be\s+kept|be\s+left)"
+    m.sub(rf"\bP(?P<p>\d+)\s+{stay}\s+{EMPTY}{PERIOD}", add)
+    m.sub(rf"\b(?:keep|leave)\s+P(?P<p>\d+)\s+{EMPTY}{PERIOD}", add)
+
+    def add_only(match: re.Match[str]) -> str:
+        keep = m.places[int(match.group("p"))] if match.group("p") else None
+        if keep is not None and keep.kind != "regions":
+            raise HTTError(f"cannot forbid all but '{keep.text}': name the regions")
+        regions = keep.regions if keep is not None else ()
+        out.append(
+            (
+                blocks_of(m, match.group("b")),
+                Place("complement", regions, text=match.group(0)),
+                [],
+                match.group(0),
+            )
+        )
+        return " "
+
+    # "objects may only be placed on the target regions / on E, F and G": nowhere else
+    target = r"(?:P(?P<p>\d+)|(?P<t>the\s+(?:target|goal)\s+(?:regions?|areas?|zones?)))"
+    m.sub(
+        rf"\bB(?P<b>\d+)\s+{may}\s+(?:only\s+be\s+{DROP}|be\s+{DROP}\s+only)\s+{PREP}\s+{target}{PERIOD}",
+        add_only,
+    )
+
+    return out
