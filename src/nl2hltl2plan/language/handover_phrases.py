@@ -121,6 +121,8 @@ class Marked:
     block_text: list[str] = field(default_factory=list)
     places: list[Place] = field(default_factory=list)  # P<k>
     notes: list[str] = field(default_factory=list)  # one-per-region statements, read as the world's rule
+    last_one: str = ""  # the last single block the sentence names (what "it" means in the next)
+    last_regions: tuple[str, ...] = ()  # the last regions it names ("regions other than these" in the next)
 
     def sub(self, pattern: str, make) -> None:  # make(match) -> replacement text
         self.text = re.sub(pattern, make, self.text)
@@ -141,12 +143,17 @@ def normalise(sentence: str) -> str:
     return " ".join(text.split())
 
 
-def mark(sentence: str, scene: Scene) -> Marked:
+def mark(sentence: str, scene: Scene, before: Marked | None = None) -> Marked:
+    """The sentence with its phrases marked; `before`, the sentence before, tells what 'it' and 'these
+    regions' may mean."""
+    previous = before or Marked("")
     m = Marked(normalise(sentence))
     _mark_one_per_region(m)
     _mark_arms(m)
-    _mark_blocks(m, scene)
-    _mark_places(m, scene)
+    _mark_blocks(m, scene, previous.last_one)
+    _mark_places(m, scene, previous.last_regions)
+    named = [p.regions for p in m.places if p.kind == "regions"]
+    m.last_regions = named[-1] if named else ()
     _mark_connectives(m)
     return m
 
@@ -173,12 +180,14 @@ def _mark_one_per_region(m: Marked) -> None:
     )
     hold = r"(?:placed|filled|holds?|takes?|gets?|receives?|contains?|ha(?:ve|s)|fits?|accepts?)"
     patterns = (
-        rf"\b(?:each|every)\s+{region}\s+(?:can|may|should|must|will)?\s*(?:only\s+)?(?:be\s+)?{hold}\s+"
+        rf"\b(?:each|every|an?|any)\s+{region}\s+(?:can|may|should|must|will)?\s*(?:only\s+)?(?:be\s+)?{hold}\s+"
         rf"(?:only\s+)?(?:with\s+)?{one}\b",
         rf"\bno\s+{region}\s+(?:can|may|should|must|will)?\s*(?:be\s+)?{hold}\s+(?:with\s+)?more\s+than\s+"
         rf"(?:one|a\s+single|1)(?:\s+{NOUN})?\b",
-        rf"\b(?:with\s+)?{one}\s+(?:is\s+|being\s+)?(?:allowed\s+|permitted\s+)?(?:per|in|on|for|to)\s+"
+        rf"\b(?:with\s+)?{one}\s+(?:(?:is|being|may|can|should|must|will)\s+)?(?:be\s+)?(?:allowed\s+|permitted\s+)?"
+        rf"(?:(?:to\s+)?(?:occupy|go\s+(?:in|on|to|into)|sit\s+(?:in|on)|be\s+(?:placed\s+)?(?:in|on))\s+|(?:per|in|on|for|to)\s+)"
         rf"(?:each|every)\s+{region}\b",
+        r"\bone\s+(?:each|apiece)\b",
         rf"\b(?:with\s+)?{one}\s+per\s+{region}\b|\b(?:with\s+)?{one}\s+(?:per|in\s+each|on\s+each|for\s+each)\b",
     )
 
@@ -215,7 +224,7 @@ def _new_block(m: Marked, names: list[str], text: str) -> str:
     return f" B{len(m.blocks) - 1} "
 
 
-def _mark_blocks(m: Marked, scene: Scene) -> None:
+def _mark_blocks(m: Marked, scene: Scene, previous: str) -> None:
     colours = (
         rf"\b(?:the\s+)?{COLOUR}(?:\s+{NOUN})?(?:\s+s\b)?(?:\s*(?:,|and|&|or)\s*(?:the\s+)?{COLOUR}(?:\s+{NOUN})?"
         rf"(?:\s+s\b)?)*(?:\s+{NOUNS})?\b"
@@ -263,18 +272,26 @@ def _mark_blocks(m: Marked, scene: Scene) -> None:
     )
     m.sub(each, all_blocks)
     m.sub(group, all_blocks)
-    _mark_pronouns(m)
+    _mark_pronouns(m, previous)
 
 
-def _mark_pronouns(m: Marked) -> None:
-    """'it' / 'them': the blocks of the nearest mention before (one block for 'it')."""
+def _mark_pronouns(m: Marked, previous: str) -> None:
+    """'it' / 'them': the blocks of the nearest mention before (one block for 'it'; for 'it' with none
+    in its sentence, the last single block the sentence before named)."""
 
     def resolve(match: re.Match[str]) -> str:
-        before = [int(k) for k in re.findall(r"\bB(\d+)\b", m.text[: match.start()])]
+        head = m.text[: match.start()]
+        # not the block just before an "after"/"before" ("the blue block after it": it is not the blue block)
+        head = re.sub(r"\bB\d+\s+(?:after|before|than|behind)\s*$", " ", head)
+        before = [int(k) for k in re.findall(r"\bB(\d+)\b", head)]
         fits = [k for k in before if match.group(0) != "it" or len(m.blocks[k]) == 1]
-        if not fits:
-            return match.group(0)
-        return _new_block(m, m.blocks[fits[-1]], match.group(0))
+        if fits:
+            return _new_block(m, m.blocks[fits[-1]], match.group(0))
+        return (
+            _new_block(m, [previous], match.group(0))
+            if previous and match.group(0) == "it"
+            else match.group(0)
+        )
 
     def pair(match: re.Match[str]) -> str:  # "while exchanging their positions": the two blocks named
         named = [b for k in re.findall(r"\bB(\d+)\b", m.text[: match.start()]) for b in m.blocks[int(k)]]
@@ -285,6 +302,8 @@ def _mark_pronouns(m: Marked) -> None:
     swap = r"(?:exchang(?:e|ing)|swap(?:ping)?|switch(?:ing)?|interchang(?:e|ing)|trad(?:e|ing))"
     m.text = re.sub(rf"\b({swap}\s+)(them|their)\b", pair, m.text)
     m.text = re.sub(r"\b(?:it|them|they)\b", resolve, m.text)
+    singles = [m.blocks[int(k)] for k in re.findall(r"\bB(\d+)\b", m.text) if len(m.blocks[int(k)]) == 1]
+    m.last_one = singles[-1][0] if singles else ""
 
 
 def _new_place(m: Marked, place: Place) -> str:
@@ -292,7 +311,7 @@ def _new_place(m: Marked, place: Place) -> str:
     return f" P{len(m.places) - 1} "
 
 
-def _mark_places(m: Marked, scene: Scene) -> None:
+def _mark_places(m: Marked, scene: Scene, named_before: tuple[str, ...]) -> None:
     _mark_target_complements(m)
     _mark_starts(m, scene)
     m.sub(
@@ -312,6 +331,17 @@ def _mark_places(m: Marked, scene: Scene) -> None:
     m.sub(
         rf"\b(?:(?:the|an?|any|all)\s+)?(?:other\s+)?{PLACE_NOUN}\s+{OTHER_THAN}\s+P(\d+)|\boutside\s+(?:of\s+)?P(\d+)",
         lambda match: _complement_of(m, match),
+    )
+
+    def other_than_these(match: re.Match[str]) -> str:  # the labelled regions but the ones just named
+        named = [p.regions for p in m.places if p.kind == "regions"] or [named_before]
+        if not named[-1]:
+            return match.group(0)
+        return _new_place(m, Place("complement", named[-1], text=match.group(0).strip()))
+
+    m.sub(
+        rf"\b(?:(?:the|any|all)\s+)?(?:other\s+)?{PLACE_NOUN}\s+{OTHER_THAN}\s+(?:these|those|them|the\s+ones\s+(?:named|above))\b",
+        other_than_these,
     )
     m.sub(
         rf"\b(?:those|these|the\s+same|said)\s+{PLACE_NOUN}\b",
@@ -333,10 +363,12 @@ OTHER_THAN = r"(?:other\s+than|except(?:\s+for)?|besides|apart\s+from|but|outsid
 def _mark_target_complements(m: Marked) -> None:
     """'an area other than the target region', 'anywhere else', 'any other region': in a prohibition,
     every labelled region but the goals' targets."""
+    targets = (
+        rf"(?:the\s+|their\s+|its\s+|an?\s+|one\s+of\s+the\s+)?(?:{TARGET}\s+{PLACE_NOUN}|targets|goals)\b"
+    )
     complement = (
-        rf"\b(?:the\s+|an?\s+)?(?:any\s+)?(?:other\s+)?(?:{PLACE_NOUN}|anywhere)\s+{OTHER_THAN}\s+"
-        rf"(?:the\s+|their\s+|its\s+)?{TARGET}\s+{PLACE_NOUN}\b|\boutside\s+(?:of\s+)?(?:the\s+|their\s+|its\s+)?"
-        rf"{TARGET}\s+{PLACE_NOUN}\b|\b(?:any|all)\s+other\s+{PLACE_NOUN}\b"
+        rf"\b(?:the\s+|an?\s+)?(?:any\s+)?(?:other\s+)?(?:{PLACE_NOUN}|anywhere)\s+(?:{OTHER_THAN}|that\s+(?:is|are)\s+not)\s+"
+        rf"{targets}|\boutside\s+(?:of\s+)?{targets}|\b(?:any|all)\s+other\s+{PLACE_NOUN}\b"
     )
 
     def other_than(match: re.Match[str]) -> str:  # "anywhere other than ...", "elsewhere": with its "on"
@@ -417,7 +449,7 @@ def _mark_region_lists(m: Marked, scene: Scene) -> None:
     link = rf"(?:\s*(?:,|\band\b|\bor\b|\bat\b|&|/|\(|\)))*\s*(?:\b{PLACE_NOUN}\s+)?"
     lead = (
         rf"(?P<prep>)\b(?:the\s+)?(?:(?:two|three|four|\d+)\s+)?(?:{TARGET}\s+)?"
-        rf"{PLACE_NOUN}\s*(?:\(\s*)?(?:at\s+)?(?:{PLACE_NOUN}\s+)?"
+        rf"{PLACE_NOUN}\s*(?::\s*)?(?:\(\s*)?(?:at\s+)?(?:{PLACE_NOUN}\s+)?"
     )
     bare = r"(?P<prep>\b(?:to|into|onto|on|in|at|among|over|between|than|except|besides|from|outside)\s+)"
     letters = LETTER + r"(?:" + link + LETTER + r")*(?:\s*\))?"

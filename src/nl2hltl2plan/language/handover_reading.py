@@ -33,6 +33,8 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import TypeGuard
 
+import networkx as nx
+
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.handover_phrases import FILLER, Marked, Place, Scene, drop_but, mark
 from nl2hltl2plan.language.handover_rules import (
@@ -97,6 +99,7 @@ class Clause:
     goals: list[Goal]
     text: str
     marker: str = ""  # "", "first", "then", "after_all"
+    leader: str = ""  # a block placed before the clause's other blocks ("swap red and blue, red first")
     together: bool = False
 
 
@@ -128,8 +131,10 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
     touches: list[tuple[str, str]] = []
     notes: list[str] = []
     pending: list[Prohibition] = []  # prohibitions stated before any goal
+    previous: Marked | None = None  # the sentence before ("it", "these regions" in the next one)
     for sentence in (s for s in re.split(r"[.;!?]+(?:\s|$)", instruction) if s.strip()):
-        m = mark(sentence, scene)
+        m = mark(sentence, scene, previous)
+        previous = m
         notes += m.notes
         forbids = read_prohibitions(m)
         touches += read_touch_guards(m)
@@ -144,6 +149,7 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
             else:
                 pending.append((blocks, place, explicit, text))
         clauses += new
+    orders += [(c.leader, g.block) for c in clauses if c.leader for g in c.goals if g.block != c.leader]
     if not clauses:
         raise HTTError(f"no goal for a block in {instruction!r} (say where each block goes)")
     goals = [g for c in clauses for g in c.goals]
@@ -154,6 +160,7 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
         _guard(goals, blocks, place, explicit, scene, text)
     for x, y in touches:
         _first_goal(goals, x).touch_guard.append(y)
+    _refuse_cyclic(orders)
     root = _tree(clauses)
     for x, y in orders:
         _order(root, _first_goal(goals, x), _first_goal(goals, y))
@@ -208,12 +215,27 @@ def _goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
         r"\bB(\d+)\s+(?:should\s+|must\s+)?(?:exchange|swap|switch|trade)\s+(?:their\s+)?(?:positions?|places?|locations?|spots?)",
         exchange,
     )
+    m.sub(  # "the positions of the red and blue blocks should be swapped"
+        rf"\b(?:the\s+)?(?:positions?|places?|locations?)\s+of\s+B(\d+)\s+{MODAL}(?:swapped|exchanged|switched|interchanged)",
+        exchange,
+    )
+    # "... so that each ends up where the other was": what an exchange is
     m.sub(
-        rf"\b{VERB}\s+B(\d+){mods}\s+(?:back\s+)?{PREP}\s+P(\d+){mods}",
+        r"(?<=G\d)\s*,?\s*so\s+that\s+each\s+(?:one\s+)?(?:ends\s+up|is|goes|lands|sits)\s+(?:where|in\s+the\s+place)\s+"
+        r"the\s+other\s+(?:one\s+)?(?:was|is|started|stood|had\s+been)\b",
+        " ",
+    )
+    m.sub(
+        rf"\b{VERB}\s+B(\d+){mods}(?:\s+first)?\s+(?:back\s+)?{PREP}\s+P(\d+){mods}",
         lambda x: matched(x, 1),
     )
     # the inverse syntax "fill regions H, I and J with the three blocks": as many places as blocks
     m.sub(rf"\b(?:fill|occupy|populate)\s+P(\d+)\s+with\s+B(\d+){mods}", lambda x: _fill(m, x, goal))
+    m.sub(
+        rf"\b(?:each\s+of\s+)?P(\d+)\s+{MODAL}(?:each\s+)?(?:receive|get|take|hold|contain)s?\s+(?:exactly\s+|just\s+)?"
+        rf"(?:one\s+of\s+)?B(\d+){mods}",
+        lambda x: _fill(m, x, goal),
+    )
     m.sub(
         rf"(?:\bwith\s+)?\bB(\d+)\s+{MODAL}{DONE}{mods}\s+(?:back\s+)?"
         rf"{PREP}\s+P(\d+){mods}",
@@ -254,7 +276,19 @@ def _markers(m: Marked, clauses: list[Clause]) -> None:
         rf"(?:,\s*)?(?:\band\s+)?\b{THEN}{LEAD}G(\d+)",
         lambda x: set_marker(x, "then"),
     )
-    m.sub(rf"\b{AFTER_ALL}{LEAD}G(\d+)", lambda x: set_marker(x, "after_all"))
+    m.sub(rf"\b(?:then\s*,?\s*)?{AFTER_ALL}{LEAD}G(\d+)", lambda x: set_marker(x, "after_all"))
+
+    def leader(match: re.Match[str]) -> str:  # "swap red and blue, red first": red before the others
+        clause, first = clauses[int(match.group(1))], m.blocks[int(match.group(2))]
+        if len(first) != 1 or len(clause.goals) < 2 or first[0] not in [g.block for g in clause.goals]:
+            return match.group(0)
+        clause.leader = first[0]
+        return f" G{match.group(1)} "
+
+    m.sub(
+        rf"\bG(\d+)\s*,?\s*(?:(?:placing|putting|moving|with|and)\s+)?B(\d+)\s+{MODAL}(?:placed\s+|put\s+|goes\s+)?first\b",
+        leader,
+    )
     m.sub(r"\bG(\d+)\s+first\b", lambda x: set_marker(x, "first"))
 
     def anytime(match: re.Match[str]) -> str:
@@ -300,6 +334,14 @@ def _guard(
             regions = [r for r in scene.layout.regions if r not in g.regions]
         for r in regions:
             g.drop_guard.update({f"drop({r})"} if every else {f"put({b},{r})" for b in blocks})
+
+
+def _refuse_cyclic(orders: list[tuple[str, str]]) -> None:
+    """'red before blue' and 'blue before red' (or 'red before itself'): no plan can keep both."""
+    graph = nx.DiGraph(orders)
+    if not nx.is_directed_acyclic_graph(graph):
+        cycle = [x.lower() for x, _ in nx.find_cycle(graph)]
+        raise HTTError(f"the instruction orders the blocks in a cycle: {' before '.join([*cycle, cycle[0]])}")
 
 
 def _first_goal(goals: list[Goal], block: str) -> Goal:

@@ -22,6 +22,7 @@ from nl2hltl2plan.language.handover_words import (
     THEN,
     TOUCH,
     TOUCHED,
+    TOUCHING,
     VERB,
 )
 
@@ -72,7 +73,7 @@ def read_orders(m: Marked) -> list[tuple[str, str]]:
     )
     for word, flip in ((r"before", False), (r"after", True)):
         m.sub(
-            rf"\b(?:{VERB}|{GERUND})\s+B(\d+)\s+(?:first\s*,?\s*)?{word}\s+B(\d+){tail}",
+            rf"\b(?:{VERB}|{GERUND})\s+B(\d+)\s+(?:first\s*,?\s*)?{word}\s+(?:you\s+(?:{VERB}\s+)?|{GERUND}\s+)?B(\d+){tail}",
             lambda x, f=flip: add(x, f),
         )
         m.sub(
@@ -80,12 +81,22 @@ def read_orders(m: Marked) -> list[tuple[str, str]]:
             lambda x, f=flip: add(x, f),
         )
     m.sub(
-        rf"\b(?:only\s+)?(?:once|after|when)\s+B(\d+)\s+(?:has|have|had)\s+been\s+{DONE}\s*,?\s*(?:only\s+then\s+)?"
+        rf"\b(?:only\s+)?(?:once|after|when)\s+B(\d+)\s+(?:(?:has|have|had)\s+been|is|are|was|gets)\s+{DONE}\s*,?\s*"
+        r"(?:only\s+then\s+)?"
         rf"(?:can|may|should|must|will)?\s*(?:B(\d+)\s+{MODAL}{DONE}|(?:{VERB})\s+B(\d+)){end}",
         lambda x: add_pair(x.group(1), x.group(2) or x.group(3)),
     )
+    m.sub(  # "before the blue block is placed, the red block must be placed"
+        rf"\bbefore\s+B(\d+)\s+(?:(?:has|have)\s+been|is|are|gets)\s+{DONE}\s*,?\s*B(\d+)\s+{MODAL}{DONE}{end}",
+        lambda x: add_pair(x.group(2), x.group(1)),
+    )
     m.sub(
         rf"\b(?:A\s+)?{NEG}\s+(?:{VERB})\s+B(\d+)\s+(?:until|before)\s+B(\d+)\s+(?:has|have|had)\s+been\s+{DONE}{end}",
+        lambda x: add_pair(x.group(2), x.group(1)),
+    )
+    m.sub(
+        rf"\bB(\d+)\s+(?:(?:must|may|can|should|shall|will|is|are)\s+)?{NEG}\s+be\s+{DONE}\s+(?:until|before)\s+B(\d+)\s+"
+        rf"(?:has|have|had)\s+been\s+{DONE}{end}",
         lambda x: add_pair(x.group(2), x.group(1)),
     )
 
@@ -106,11 +117,14 @@ def read_touch_guards(m: Marked) -> list[tuple[str, str]]:
     end = r"(?=\s*(?:$|,|\band\b|\)))"
     # Y's touch, active ("an arm touched Y"), passive ("Y has been touched") or elliptic ("... before Y")
     other = (
-        rf"(?:(?:A\s+)?(?:has\s+|have\s+|had\s+)?(?:already\s+)?{TOUCHED}\s+B(?P<y1>\d+)|B(?P<y2>\d+)\s+"
-        rf"(?:has\s+been|have\s+been|is|was|had\s+been|gets|got)\s+(?:already\s+)?{TOUCHED}|B(?P<y3>\d+){end})"
+        rf"(?:(?:A\s+)?(?:has\s+|have\s+|had\s+)?(?:already\s+)?(?:{TOUCHED}|{TOUCHING})\s+B(?P<y1>\d+)|B(?P<y2>\d+)\s+"
+        rf"(?:(?:has|have|had)\s+(?:already\s+)?been|is|was|gets|got)\s+(?:already\s+)?{TOUCHED}|B(?P<y3>\d+){end})"
     )
     may = r"(?:may|can|should|must|will|shall|is\s+allowed\s+to|are\s+allowed\s+to)"
-    no_touch = rf"(?:(?:\bA\s+)?{NEG}|\bno\s+A\s+{may}?)\s+{TOUCH}\s+B(?P<x>\d+)"
+    no_touch = (
+        rf"(?:(?:\bA\s+)?{NEG}\s+{TOUCH}|\bno\s+A\s+{may}?\s*{TOUCH}|\b(?:never|not|without)\s+{TOUCHING})"
+        r"\s+B(?P<x>\d+)"
+    )
     not_touched = rf"\bB(?P<x>\d+)\s+{NEG}\s+(?:ever\s+)?be\s+{TOUCHED}(?:\s+by\s+A)?"
     until = r"(?:until|before|unless)"
     after = r"(?:only\s+)?(?:after|once|when)"

@@ -30,6 +30,7 @@ TOUCH = r"(?:touch|pick\s+up|pick|grasp|grab|handle|move|lift)"
 TOUCHED = (
     r"(?:touched|picked\s+up|picked|grasped|grabbed|handled|moved|lifted|touches|picks\s+up|grabs|moves)"
 )
+TOUCHING = r"(?:touching|picking\s+up|picking|grabbing|grasping|handling|lifting|moving)"
 DROP = r"(?:placed|put|dropped|set|left|laid)(?:\s+down)?"
 # "during this period": a prohibition's scope, the goals of its sentence (else all goals so far)
 PERIOD_WORDS = (
@@ -53,6 +54,8 @@ LEAD = r"\s*,?\s*(?:you\s+should\s+|please\s+|we\s+should\s+)?"
 # form the patterns read and changes no meaning ("prior to" -> "before", "whilst" -> "while").
 REWRITES: tuple[tuple[str, str], ...] = (
     (r"\bi\s*\.\s*e\s*\.?(?=\s|,|$)", " that is "),
+    (r"^\s*(?:your|the|my)\s+(?:job|task|goal|mission|assignment)\s*(?:is\s+to\b|:)", "please"),
+    (r"(?<=s)'(?=\s|$)", ""),  # the blocks' positions -> the blocks positions
     (r"\bwhilst\b", "while"),
     (r"\bcan\s*'\s*t\b", "cannot"),
     (r"\bwon\s*'\s*t\b", "will not"),
@@ -76,18 +79,42 @@ REWRITES: tuple[tuple[str, str], ...] = (
     ),
     (r"\b(?:earlier\s+than|prior\s+to|ahead\s+of|in\s+advance\s+of|sooner\s+than)\b", "before"),
     (r"\blater\s+than\b", "after"),
+    (r"\buntil\s+after\b", "until"),
+    (
+        r"\b(?:do\s+not|don\s*'\s*t)\s+let\s+(?:any\s+|an?\s+|the\s+)?(?:robot\s+)?(?:arms?|robots?)\s+",
+        "no arm may ",
+    ),
+    # "the regions across from where they are now": the opposite side
+    (
+        r"\b(?:the\s+)?(?:regions?|areas?|side|zones?)\s+across\s+from\s+where\s+(?:they|it|the\s+blocks?)\s+"
+        r"(?:are|is|start|started|were|was|lie|sit)(?:\s+(?:now|currently|at\s+first))?\b",
+        "the opposite side",
+    ),
     # "put it on I before putting it on G": the steps in order
     (
         r"\s*,?\s*\bbefore\s+(?:placing|putting|moving|bringing|transferring|taking|carrying|setting)\b",
         ", then put",
     ),
-    (r"\b(?:avoid|refrain\s+from)\s+placing\b", "do not place"),
-    (r"\b(?:avoid|refrain\s+from)\s+putting\b", "do not put"),
-    (r"\b(?:avoid|refrain\s+from)\s+dropping\b", "do not drop"),
-    (r"\b(?:avoid|refrain\s+from)\s+setting\b", "do not set"),
-    (r"\b(?:avoid|refrain\s+from)\s+touching\b", "do not touch"),
-    (r"\b(?:avoid|refrain\s+from)\s+picking\s+up\b", "do not pick up"),
-    (r"\b(?:avoid|refrain\s+from)\s+grabbing\b", "do not grab"),
+)
+
+# "avoid placing", "refrain from touching", "without putting": a negated verb
+NEGATED_GERUNDS = {
+    "placing": "place",
+    "putting": "put",
+    "dropping": "drop",
+    "setting": "set",
+    "touching": "touch",
+    "grabbing": "grab",
+    "picking up": "pick up",
+}
+REWRITES += tuple(
+    (rf"\b(?:avoid|refrain\s+from)\s+{gerund}\b", f"do not {verb}")
+    for gerund, verb in NEGATED_GERUNDS.items()
+)
+REWRITES += tuple(
+    (rf"\s*,?\s*\bwithout\s+(?:ever\s+)?{gerund}\b", f" and never {verb}")
+    for gerund, verb in NEGATED_GERUNDS.items()
+    if verb not in ("touch", "grab", "pick up")  # "without touching X before Y" is a touch rule
 )
 
 # Common typos of the words that carry the meaning: a transposed, dropped or doubled letter (not the
