@@ -149,6 +149,24 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "The blue block may only be placed after the red block has been placed. Move all 3 blocks to the "
         "opposite side.",
         "Get the three blocks to the opposite regions; the red one must go before the blue one.",
+        "Your job: get all three blocks over to the opposite side. Make sure red is placed before blue.",
+        "Move every block to the opposite side of the workspace; red must be put down before blue.",
+        "The three blocks need to end up on the opposite side, and the red block should be placed prior "
+        "to the blue block.",
+        "Blue may not be placed until red has been placed. All three blocks go to the opposite side.",
+        "Transfer the 3 blocks to the opposite regions. Red first, then blue.",
+        "please move the three blocks to the opposite side. the red block needs to be placed before the "
+        "blue block",
+        "Relocate all the blocks to the opposite side, with red placed before blue.",
+        "Move the three blocks to the other side. Place red before blue.",
+        "I need all three blocks moved over to the opposite side, and the red block has to land before "
+        "the blue block.",
+        "Move the three cubes to the regions across from where they are now. Red should be placed before "
+        "blue.",
+        "Please transfer the three blocks to the opposite side, but place the red block before you place "
+        "the blue block.",
+        "Before the blue block is placed, the red block must be placed. Move all three blocks to the "
+        "opposite side.",
     ],
     2: [
         "Fill regions H, I and J with the three blocks; each region can have only one block.",
@@ -166,6 +184,19 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "Please put every block into a separate region among H, I and J.",
         "Place each of the three blocks in its own region: H, I or J.",
         "Put the three cubes into areas H, I and J, one cube per area.",
+        "Put the three blocks in regions H, I, and J. Only one block may occupy each region.",
+        "Each of the regions H, I and J should receive exactly one of the three blocks.",
+        "Place the three blocks into the regions H, I and J so that every region holds a single block.",
+        "Move the three blocks onto H, I and J, one block to each region.",
+        "Put the three blocks into the three goal regions: H, I, and J. Each goal region can take only "
+        "one object.",
+        "The three blocks should go to regions H, I and J, at most one per region.",
+        "Put the three blocks into the three goal regions H, I and J, making sure each goal region holds "
+        "just one object.",
+        "Place the blocks into region H, region I and region J. A region can only hold one block.",
+        "Put the three blocks on regions H, I and J - one block per region.",
+        "Put the three blocks into goal regions H, I, J; every goal region can contain only one object.",
+        "Move the blocks into the goal regions (H, I and J), one object in each.",
     ],
     3: [
         "Move the three pillars to regions E, F and G, beside arm a and arm b. Objects may not be placed "
@@ -195,6 +226,26 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "The three pillars should be moved to regions E, F and G. Avoid placing any object on the other "
         "regions.",
         "No object may ever be placed on regions H, I or J. Move the three pillars to regions E, F and G.",
+        "Move the three pillars to the placement area beside arm a and arm b, which is regions E, F and "
+        "G. Objects may not be put anywhere outside the target regions.",
+        "Please carry the three pillars to regions E, F and G. Do not put objects on any region other "
+        "than the targets.",
+        "Move all three pillars to E, F and G, on the side of arms a and b. No object may be placed in "
+        "any other region.",
+        "Bring the three pillars to the placement area (regions E, F, G) next to arms a and b. Never put "
+        "any object on an area that is not a target region.",
+        "Transfer the three pillars to regions E, F and G. Objects can only be placed on the target regions.",
+        "Move the three pillars into regions E, F and G on the side of arm a and arm b; nothing may be "
+        "placed on any region except the target regions.",
+        "Please move the three pillars to the placement area next to arms a and b, namely regions E, F "
+        "and G. No object should ever be placed on a region other than the target regions.",
+        "Move the three pillars to regions E, F and G. Objects must not be placed in any region besides "
+        "the target regions.",
+        "Bring all three pillars to E, F and G, near arm a and arm b; do not place anything on regions "
+        "other than these.",
+        "Transfer the pillars to the placement area on the side of arm a and arm b (regions E, F and G). "
+        "Each object must not be placed on an area other than its target region.",
+        "Move the three pillars to regions E, F and G without placing any object on any other region.",
     ],
     4: [
         "Move the three blocks to the opposite regions, but the blue block may not be picked up by any "
@@ -222,6 +273,32 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "block has been touched. After all of these, put the yellow block back where the red block is.",
         "Move the 3 blocks to the opposite side. The robot arms must not touch the blue block until the "
         "red block has been picked up. After everything else, place the yellow block on region G.",
+        "Move the three blocks to the opposite regions. The blue block may not be touched until the red "
+        "block has been touched. Then, once everything is done, put the yellow block back in region G.",
+        "Transfer the three blocks to the opposite side. An arm may only touch the blue block after an "
+        "arm has touched the red block. When all of this is finished, place the yellow block back on "
+        "region G.",
+        "First move the three blocks to the opposite regions, never touching the blue block before the "
+        "red block has been touched. After all of this, return the yellow block to region G.",
+        "Move the three blocks across to the opposite regions. Do not pick up the blue block before the "
+        "red block has been picked up. At the end, the yellow block goes back to region G.",
+        "Put all three blocks in the opposite regions; no arm should touch the blue block until some arm "
+        "has touched the red block. Afterwards, move the yellow block back to G.",
+        "Transfer three blocks into the opposite regions. The robot arms must not touch the blue block "
+        "before touching the red block. After all of these, place the yellow block back to region G, "
+        "where the red block is now.",
+        "Transfer the three blocks to the opposite regions. An arm must not touch the blue block unless "
+        "the red block has already been touched. Once that is done, return the yellow block to region G.",
+        "Move the three blocks to the opposite regions. Don't let any arm touch the blue block until the "
+        "red block has been touched. Finally, move the yellow block back into region G.",
+        "Move the three blocks to the opposite regions; the blue block cannot be touched until after the "
+        "red block is touched. After all of that, put the yellow block back on region G where the red "
+        "block is.",
+        "Transfer all three blocks to the opposite regions, and the robot arm cannot touch the blue block "
+        "until any of the robot arms has touched the red block. Finally, place the yellow block back in "
+        "region G.",
+        "Move three blocks into the opposite regions. The blue block may only be picked up once the red "
+        "block has been picked up. At the very end, put the yellow block back to region G.",
     ],
     5: [
         "Swap the red block and the blue block, making sure the red one gets placed before the blue one. "
@@ -246,6 +323,27 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "block. Put the yellow block on the opposite side whenever.",
         "Exchange the places of the red block and the blue block; the blue block should be placed after "
         "the red block. In any order, move the yellow block across to the opposite side.",
+        "Swap the positions of the red and blue blocks, red block first. Move the yellow block to the "
+        "opposite side at any time.",
+        "The red block and the blue block should swap places; place the red one before the blue one. The "
+        "yellow block can be moved to the opposite side whenever.",
+        "Exchange the red and blue blocks' positions, placing the red block before the blue block. At any "
+        "time, put the yellow block on the opposite side.",
+        "Put the yellow block on the opposite side at any time. Also swap the red and blue blocks; the "
+        "red block is to be placed before the blue block.",
+        "Exchange the positions of the red block and the blue block. The red block should be placed "
+        "before the blue block. The yellow block goes to the opposite side at any time.",
+        "Switch red and blue, placing red before blue. Move yellow to the opposite side at any time.",
+        "Exchange the positions of the red block and the blue block, with the red block being placed "
+        "first. At any time, move the yellow block to the other side.",
+        "The positions of the red and blue blocks should be swapped, and the red block should be placed "
+        "before the blue block. The yellow block should be moved to the opposite side at any time.",
+        "Swap the red and blue blocks' positions; the red block is placed before the blue block. Whenever "
+        "you want, put the yellow block on the opposite side.",
+        "Please exchange the red block and the blue block so that each ends up where the other was, "
+        "placing red before blue. At any time put the yellow block on the opposite side.",
+        "Red and blue must trade places, red placed before blue; the yellow block goes to the opposite "
+        "side at any time.",
     ],
     6: [
         "Put the three blocks separately on regions G, H and I; the red block is placed before the blue "
@@ -265,6 +363,24 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "The red block should be placed before the blue block. Separately put the blocks in G/H/I.",
         "Put all of the blocks onto regions G, H, I separately; the blue block is placed after the red "
         "block.",
+        "Put the three blocks separately on regions G, H and I. Red must be placed before blue.",
+        "Place the three objects in regions G, H and I, one each. The red object should be placed before "
+        "the blue object.",
+        "The red block goes before the blue block. Place the three blocks separately onto regions G, H, "
+        "and I.",
+        "Please place the three blocks on G, H and I separately, putting the red block before the blue "
+        "block.",
+        "Move the three objects separately to regions G, H and I, with the red block being placed before "
+        "the blue block.",
+        "Separately place the 3 blocks in regions G, H and I; red is placed ahead of blue.",
+        "Place the three objects separately on region G, region H and region I, placing the red object "
+        "before the blue object.",
+        "Put the three blocks separately into G, H and I. Make sure the red block is placed before the "
+        "blue block.",
+        "Place the red block before the blue block; the three blocks go separately to regions G, H and I.",
+        "Separately move the three blocks to the regions G, H and I, and the blue block should be placed "
+        "after the red block.",
+        "The three objects should be put separately in regions G, H and I, and red must come before blue.",
     ],
     7: [
         "One by one, move the three blocks to region I, but nothing may be placed on region F, G and H "
@@ -287,6 +403,26 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "block; in the meantime no object may be placed on region F, G or H.",
         "Place all 3 blocks one by one in region I. The red block has to be placed before the blue block, "
         "and no block can be placed on regions F, G and H while doing so.",
+        "Put the three blocks on region I one after another, the red block before the blue block. During "
+        "this period, nothing may be placed on regions F, G and H.",
+        "Place the three objects one after another onto region I. Red goes before blue. No objects may be "
+        "put on F, G or H meanwhile.",
+        "One after another, place the three blocks on region I, with the red block placed before the blue "
+        "block; during this time do not place any object on regions F, G, or H.",
+        "Place the three blocks one by one on region I (red before blue). Regions F, G and H must remain "
+        "empty during this period.",
+        "Move the three objects one after another to region I; the red block should come before the blue "
+        "block. No objects can be placed on regions F, G, and H in the meantime.",
+        "Place the three objects on region I one after another. Red should be placed before blue. "
+        "Meanwhile, don't put any object on regions F, G or H.",
+        "One after another, move the three blocks onto region I; the red block needs to be placed before "
+        "the blue block, and during this period no object may be placed on regions F, G, and H.",
+        "Please put the three objects one after another to region I and do not place objects on regions "
+        "F, G and H during this period; the red block should be placed before the blue block.",
+        "Place the three blocks one by one on region I with red before blue, and keep regions F, G and H "
+        "empty while doing so.",
+        "The red block should be placed before the blue block. Place the three objects one after another "
+        "to region I, and no object may be placed on the regions F, G and H during this period.",
     ],
     8: [
         "First put the yellow block on region I, then on region G, and move the red and blue blocks to "
@@ -310,6 +446,28 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "Yellow goes to region I, then to region G; red and blue go to any empty region at any time.",
         "Please put the yellow block onto region I first, and then onto region G. Whenever you like, move "
         "the red block and the blue block into any empty region.",
+        "Put the yellow block on region I, then on region G. At any time, move the red and blue blocks to "
+        "any empty region.",
+        "First, place the yellow block on region I; then place it on region G. The red and blue blocks go "
+        "to any empty region at any time.",
+        "Move the yellow block first to region I and then to region G, and at any time move the red and "
+        "blue blocks into any empty region.",
+        "Place the yellow block on region I, and then place the yellow block on region G. Move the red "
+        "and blue blocks to empty regions at any time.",
+        "The yellow block must go to region I first and then to region G. Whenever, put the red and blue "
+        "blocks on any empty region.",
+        "Please first put the yellow block on region I, then put the yellow block on region G, and move "
+        "the red block and the blue block to any vacant region at any time.",
+        "First move the yellow block to region I, then to region G, and put the red and blue blocks in "
+        "any empty regions at any time.",
+        "Put the yellow block first on region I and then on region G. At any time, the red and blue "
+        "blocks should be placed on any empty region.",
+        "Place the yellow block on region I, then move it to region G. The red and blue blocks can be "
+        "moved to any empty region whenever.",
+        "The yellow block goes to region I and then to region G. Move the red and blue blocks to any "
+        "empty region at any time.",
+        "Please place the yellow block on region I first, after that on region G; also move the red and "
+        "blue blocks to any empty region at any time.",
     ],
 }
 
@@ -329,18 +487,36 @@ NEAR_MISSES: dict[int, list[str]] = {
         "Move the three blocks to the opposite side; place the blue block first, then the red block.",
         "Move the three blocks to the opposite side; don't place the red block until the blue block has "
         "been placed.",
+        "Move the three blocks to the opposite side, red first.",
+        "Move the three blocks to the opposite side, but place the blue block before you place the red "
+        "block.",
+        "Before the red block is placed, the blue block must be placed. Move all three blocks to the "
+        "opposite side.",
+        "Once the blue block has been placed, the red block may be placed. Move the three blocks to the "
+        "opposite side.",
+        "Transfer the three blcoks to the oposite side; the red block after the blue block.",
+        "Move the three cubes to the regions across from where they are now, one after another; red "
+        "before blue.",
+        "Move the three blocks to the opposite side. Place the red block first and the blue block after "
+        "the yellow block.",
     ],
     2: [
         "Put the three blocks into regions H, I and G, one per region.",
         "Put the three blocks into regions H, I and J respectively.",
         "Put the three blocks into region H, I and J one after another.",
         "Put the three blocks into region H, I and J; the red block before the blue block.",
+        "A region can hold two blocks. Put the three blocks in H, I and J.",
+        "Put the three blocks in H, I and G, one per region.",
+        "Each of the regions H, I and G should receive exactly one of the three blocks.",
     ],
     3: [
         "Move the three pillars to regions E, F and G.",
         "Move the three pillars to regions E, F and G. No object may be placed on region H.",
         "Move the three pillars to regions E, F and H. No object may be placed on any other region.",
         "Move the three pillars to regions E, F and G. No object may be placed on regions H or I.",
+        "Move the three pillars to E, F and G; do not place anything on regions other than H.",
+        "Move the pillars to E, F and G. Objects can only be placed on regions E and F.",
+        "Move the three pillars to regions E, F and G without placing any object on region H.",
     ],
     4: [
         "Move the three blocks to the opposite regions. No arm may touch the red block until an arm has "
@@ -350,6 +526,14 @@ NEAR_MISSES: dict[int, list[str]] = {
         "touched the red block. Then put the yellow block on region H.",
         "Move the three blocks to the opposite regions. No arm may touch the blue block until an arm has "
         "touched the red block. At any time, put the yellow block back to region G.",
+        "Move the three blocks to the opposite regions. An arm must not touch the red block unless the "
+        "blue block has already been touched. Finally, put the yellow block back to region G.",
+        "Move the three blocks to the opposite regions. Don't let any arm touch the blue block until the "
+        "yellow block has been touched. Finally, put the yellow block back to region G.",
+        "Move the three blocks to the opposite regions. The blue block has to be picked up before the red "
+        "block. Finally, put the yellow block back to region G.",
+        "Move the three blocks to the opposite regions. No arm may touch the blue block until the red "
+        "block has been touched. Then, once everything is done, put the yellow block back in region H.",
     ],
     5: [
         "Exchange the positions of the red and yellow blocks; the red block before the blue block. Put "
@@ -359,6 +543,10 @@ NEAR_MISSES: dict[int, list[str]] = {
         "Exchange the positions of the red and blue blocks. Put the yellow block on the opposite side at "
         "any time.",
         "Exchange the positions of the red and blue blocks; the red block before the blue block.",
+        "Exchange the positions of the red block and the blue block, with the blue block being placed "
+        "first. At any time, move the yellow block to the other side.",
+        "The positions of the red and yellow blocks should be swapped, and the red block should be placed "
+        "before the blue block.",
     ],
     6: [
         "Place the three blocks separately on regions G, H and J; the red block before the blue block.",
@@ -372,6 +560,8 @@ NEAR_MISSES: dict[int, list[str]] = {
         "Place the three blocks one after another on region H; no object may be placed on region F, G or "
         "I meanwhile. The red block before the blue block.",
         "Place the three blocks one after another on region I. The red block before the blue block.",
+        "Place the three blocks one by one on region I with red before blue, and keep regions F and G "
+        "empty while doing so.",
     ],
     8: [
         "First place the yellow block on region G, then on region I. Move the red and blue blocks to any "
@@ -382,6 +572,10 @@ NEAR_MISSES: dict[int, list[str]] = {
         "region E at any time.",
         "First place the yellow block on region I, then on region G. Move the red block to any empty "
         "region at any time.",
+        "Place the yellow block on region G before putting it on region I. Move the red and blue blocks "
+        "to any empty region at any time.",
+        "Put the yellow block on region I; then place it on region H. Move the red and blue blocks to any "
+        "empty region at any time.",
     ],
 }
 
