@@ -167,6 +167,15 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "the blue block.",
         "Before the blue block is placed, the red block must be placed. Move all three blocks to the "
         "opposite side.",
+        "Can you please move the three blocks to the opposite side? Remember to place the red block "
+        "before the blue block.",
+        "All three blocks must be relocated to the opposite regions. The red one should be put down "
+        "before the blue one.",
+        "Shift the three blocks over to the opposite side, making sure red is put down earlier than blue.",
+        "Take the 3 blocks to the opposite side of the table and place red before blue.",
+        "The task is to move three blocks to the opposite side; red must precede blue.",
+        "Move the three blocks to the far side. The blue block must be placed after the red block has "
+        "been placed.",
     ],
     2: [
         "Fill regions H, I and J with the three blocks; each region can have only one block.",
@@ -197,6 +206,12 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "Put the three blocks on regions H, I and J - one block per region.",
         "Put the three blocks into goal regions H, I, J; every goal region can contain only one object.",
         "Move the blocks into the goal regions (H, I and J), one object in each.",
+        "Place the three blocks in the goal regions H, I and J. Each goal region can only take one object.",
+        "Put the three blocks into regions H, I and J, so that no region has more than one block.",
+        "Please move the 3 blocks into region H, region I and region J; only a single object is allowed "
+        "per region.",
+        "Arrange the three blocks in regions H, I and J, one block in every region.",
+        "Each goal region can hold only a single object. Move the three blocks to H, I and J.",
     ],
     3: [
         "Move the three pillars to regions E, F and G, beside arm a and arm b. Objects may not be placed "
@@ -246,6 +261,15 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "Transfer the pillars to the placement area on the side of arm a and arm b (regions E, F and G). "
         "Each object must not be placed on an area other than its target region.",
         "Move the three pillars to regions E, F and G without placing any object on any other region.",
+        "Move the three pillars to the placement area, which consists of regions E, F and G on the side "
+        "of arms a and b. No object may be placed anywhere except the target regions.",
+        "Relocate the three pillars to regions E, F and G. Objects are not allowed on any area other than "
+        "the target region.",
+        "Place the three pillars onto regions E, F and G next to arm a and arm b. No object can ever be "
+        "put on the other regions.",
+        "Carry the three pillars to E, F and G. An object must never be placed on an area other than its "
+        "target region.",
+        "The three pillars go to regions E, F and G; do not place any objects outside the target regions.",
     ],
     4: [
         "Move the three blocks to the opposite regions, but the blue block may not be picked up by any "
@@ -299,6 +323,17 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "region G.",
         "Move three blocks into the opposite regions. The blue block may only be picked up once the red "
         "block has been picked up. At the very end, put the yellow block back to region G.",
+        "Move the three blocks to the opposite regions. The blue block is not to be touched before the "
+        "red block has been touched. After everything, place the yellow block back on region G.",
+        "Send the three blocks to the opposite regions. Touch the red block before touching the blue "
+        "block. At the end, put the yellow block back to region G.",
+        "Transfer the three blocks to the opposite regions. No arm is allowed to touch the blue block "
+        "until an arm has touched the red block. When that is all done, move the yellow block back to "
+        "region G.",
+        "Move the three blocks to the opposite regions; however, the blue block must not be picked up "
+        "until the red block has been picked up. Finally the yellow block should be returned to region G.",
+        "Transfer the three blocks into the opposite regions. Nobody may touch the blue block until the "
+        "red block has been touched. Lastly, put the yellow block back to region G.",
     ],
     5: [
         "Swap the red block and the blue block, making sure the red one gets placed before the blue one. "
@@ -344,6 +379,16 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "placing red before blue. At any time put the yellow block on the opposite side.",
         "Red and blue must trade places, red placed before blue; the yellow block goes to the opposite "
         "side at any time.",
+        "Exchange the places of the red and blue blocks, and make sure the red block is placed before the "
+        "blue block. Move the yellow block to the opposite side at any time.",
+        "Swap red and blue around, red before blue. At any time, the yellow block should go to the "
+        "opposite side.",
+        "Interchange the positions of the red block and the blue block; the red block has to be placed "
+        "first. Whenever, move the yellow block to the opposite side.",
+        "Move the yellow block to the opposite side whenever you like. Also, exchange the positions of "
+        "the red and the blue block, placing the red block prior to the blue block.",
+        "Please swap the red block with the blue block, the red one being placed before the blue one, and "
+        "at any time put the yellow block into the opposite side.",
     ],
     6: [
         "Put the three blocks separately on regions G, H and I; the red block is placed before the blue "
@@ -381,6 +426,14 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "Separately move the three blocks to the regions G, H and I, and the blue block should be placed "
         "after the red block.",
         "The three objects should be put separately in regions G, H and I, and red must come before blue.",
+        "Place the three blocks on regions G, H and I, separately; place the red block before you place "
+        "the blue block.",
+        "The three objects should be placed separately on regions G, H and I, with the red object placed "
+        "before the blue object.",
+        "Move each of the three blocks separately to regions G, H and I. Red has to be placed before blue.",
+        "Put the three blocks separately to region G, H and I; the red block should be placed before the "
+        "blue block is placed.",
+        "Separately place the blocks on G, H, and I. The red block must go down before the blue block.",
     ],
     7: [
         "One by one, move the three blocks to region I, but nothing may be placed on region F, G and H "
@@ -423,6 +476,16 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "empty while doing so.",
         "The red block should be placed before the blue block. Place the three objects one after another "
         "to region I, and no object may be placed on the regions F, G and H during this period.",
+        "Put the three blocks on region I one after another, red before blue, and do not put any object "
+        "on F, G or H in the meantime.",
+        "One after another, place all three objects on region I. The red object should be placed before "
+        "the blue object. No objects may be placed on region F, G or H during this time.",
+        "Place the three objects to region I one after the other, with the red block before the blue "
+        "block; nothing should be placed on regions F, G and H meanwhile.",
+        "Move the three blocks to region I one by one; the red one goes before the blue one, and regions "
+        "F, G, and H stay empty throughout.",
+        "The red block should be placed before the blue block. One at a time, put the three objects on "
+        "region I, and no object can be dropped on regions F, G or H during this period.",
     ],
     8: [
         "First put the yellow block on region I, then on region G, and move the red and blue blocks to "
@@ -468,6 +531,16 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "empty region at any time.",
         "Please place the yellow block on region I first, after that on region G; also move the red and "
         "blue blocks to any empty region at any time.",
+        "Place the yellow block on region I, and after that, place it on region G. Put the red and blue "
+        "blocks on any empty region at any time.",
+        "Move the red and blue blocks to any empty regions whenever you like, and move the yellow block "
+        "to region I and then to region G.",
+        "First, put the yellow block onto region I. Then put the yellow block onto region G. The red and "
+        "blue blocks may be moved to any empty region at any time.",
+        "Put the yellow block on region I first and on region G second. At any time, move the red and "
+        "blue blocks to any empty region.",
+        "Please place the yellow block to region I first, then place the yellow block to region G, and "
+        "move the red block and the blue block to any free region at any time.",
     ],
 }
 
@@ -499,6 +572,10 @@ NEAR_MISSES: dict[int, list[str]] = {
         "before blue.",
         "Move the three blocks to the opposite side. Place the red block first and the blue block after "
         "the yellow block.",
+        "Move the three blocks to the opposite side; red must precede yellow.",
+        "Move the three blocks to the opposite side; red goes first, yellow after red.",
+        "Can you please move the three blocks to the opposite side? Remember to place the blue block "
+        "before the red block.",
     ],
     2: [
         "Put the three blocks into regions H, I and G, one per region.",
@@ -508,6 +585,7 @@ NEAR_MISSES: dict[int, list[str]] = {
         "A region can hold two blocks. Put the three blocks in H, I and J.",
         "Put the three blocks in H, I and G, one per region.",
         "Each of the regions H, I and G should receive exactly one of the three blocks.",
+        "Arrange the three blocks in regions H, I and G, one block in every region.",
     ],
     3: [
         "Move the three pillars to regions E, F and G.",
@@ -517,6 +595,9 @@ NEAR_MISSES: dict[int, list[str]] = {
         "Move the three pillars to E, F and G; do not place anything on regions other than H.",
         "Move the pillars to E, F and G. Objects can only be placed on regions E and F.",
         "Move the three pillars to regions E, F and G without placing any object on region H.",
+        "Relocate the three pillars to regions E, F and G. Objects are not allowed on region H.",
+        "Move the three pillars to the placement area, which consists of regions E, F and H. No object "
+        "may be placed anywhere except the target regions.",
     ],
     4: [
         "Move the three blocks to the opposite regions. No arm may touch the red block until an arm has "
@@ -534,6 +615,10 @@ NEAR_MISSES: dict[int, list[str]] = {
         "block. Finally, put the yellow block back to region G.",
         "Move the three blocks to the opposite regions. No arm may touch the blue block until the red "
         "block has been touched. Then, once everything is done, put the yellow block back in region H.",
+        "Move the three blocks to the opposite regions. The red block is not to be touched before the "
+        "blue block has been touched. After everything, place the yellow block back on region G.",
+        "Move the three blocks to the opposite regions. Nobody may touch the blue block until the red "
+        "block has been touched. When that is all done, move the yellow block back to region H.",
     ],
     5: [
         "Exchange the positions of the red and yellow blocks; the red block before the blue block. Put "
@@ -547,6 +632,10 @@ NEAR_MISSES: dict[int, list[str]] = {
         "first. At any time, move the yellow block to the other side.",
         "The positions of the red and yellow blocks should be swapped, and the red block should be placed "
         "before the blue block.",
+        "Swap red and blue around, blue before red. At any time, the yellow block should go to the "
+        "opposite side.",
+        "Please swap the red block with the yellow block, the red one being placed before the blue one, "
+        "and at any time put the yellow block into the opposite side.",
     ],
     6: [
         "Place the three blocks separately on regions G, H and J; the red block before the blue block.",
@@ -576,6 +665,8 @@ NEAR_MISSES: dict[int, list[str]] = {
         "to any empty region at any time.",
         "Put the yellow block on region I; then place it on region H. Move the red and blue blocks to any "
         "empty region at any time.",
+        "Put the yellow block on region G first and on region I second. At any time, move the red and "
+        "blue blocks to any empty region.",
     ],
 }
 

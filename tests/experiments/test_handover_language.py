@@ -136,7 +136,7 @@ def test_the_opposite_side_is_resolved_against_where_the_blocks_start():
         ("The red block should be placed before the blue block.", "no goal"),
         ("Put the red block in region H unless it rains.", "rains"),
         # no order is guessed: "first" names no clause here
-        ("Swap the red block and the blue block. Red first.", "first"),
+        ("Swap the red block and the blue block. Yellow first.", "first among which"),
         ("Move the three blocks to the opposite side. Red before blue. Blue before red.", "cycle"),
         # 'but' before a goal may be an exception; 'all blocks but red' is one
         ("Move three blocks to the opposite side, but the red block goes to region G.", "'but'"),

@@ -21,7 +21,7 @@ from dataclasses import dataclass, field
 from typing import Literal
 
 from nl2hltl2plan.errors import HTTError, WorldError
-from nl2hltl2plan.language.handover_words import EMPTY, NEG, REWRITES, VERB, typo_table
+from nl2hltl2plan.language.handover_words import APPOSITION, EMPTY, NEG, REWRITES, VERB, typo_table
 from nl2hltl2plan.worlds.handover_world import REGIONS, Layout, layout
 from nl2hltl2plan.worlds.world import Cell, World
 
@@ -36,7 +36,8 @@ PLACE_NOUN = r"(?:regions?|areas?|zones?|places?|spots?|positions?|cells?|sides?
 # words that carry no meaning here (articles, politeness, modal verbs, the agent)
 FILLER = frozenset(
     "please plan a an the solution to for you we should shall can could would will must kindly now "
-    "also so it is are be that i want need make sure this task , ( ) : and".split()
+    "also so it is are be that i want need make sure this task , ( ) : and however additionally moreover "
+    "furthermore".split()
 )
 
 
@@ -187,6 +188,7 @@ def _mark_one_per_region(m: Marked) -> None:
         rf"\b(?:with\s+)?{one}\s+(?:(?:is|being|may|can|should|must|will)\s+)?(?:be\s+)?(?:allowed\s+|permitted\s+)?"
         rf"(?:(?:to\s+)?(?:occupy|go\s+(?:in|on|to|into)|sit\s+(?:in|on)|be\s+(?:placed\s+)?(?:in|on))\s+|(?:per|in|on|for|to)\s+)"
         rf"(?:each|every)\s+{region}\b",
+        rf"\b(?:with\s+)?{one}\s+(?:(?:is|being|may|can)\s+)?(?:allowed\s+|permitted\s+)?per\s+{region}\b",
         r"\bone\s+(?:each|apiece)\b",
         rf"\b(?:with\s+)?{one}\s+per\s+{region}\b|\b(?:with\s+)?{one}\s+(?:per|in\s+each|on\s+each|for\s+each)\b",
     )
@@ -231,15 +233,20 @@ def _mark_blocks(m: Marked, scene: Scene, previous: str) -> None:
     )
 
     def by_colour(match: re.Match[str]) -> str:
+        """One phrase per list of colours; a colour named again ("the red and the blue block, the red block
+        being ...") or a list whose last link is a bare comma ("the blue block, the red one") starts a new
+        phrase there, which the next pass marks."""
         text = match.group(0)
-        words = [w.group(0) for w in re.finditer(COLOUR, text)]
-        if len(set(words)) < len(words):  # "the red and the blue block, the red block being ...": a colour
-            # named again starts a new phrase, marked by the next pass
-            again = next(k for k in range(len(words)) if words[k] in words[:k])
-            start = [w.start() for w in re.finditer(COLOUR, text)][again]
-            head = re.sub(r"\s*(?:,|and|&|or)\s*(?:the\s+)?$", "", text[:start])
-            return by_colour_text(head) + text[len(head) :]
-        return by_colour_text(text)
+        found = list(re.finditer(COLOUR, text))
+        starts, words = [w.start() for w in found], [w.group(0) for w in found]
+        links = [text[:k] for k in starts[1:]]
+        cut = next((k for k in range(1, len(words)) if words[k] in words[:k]), None)
+        if cut is None and links and re.search(r",\s*(?:the\s+)?$", links[-1]):
+            cut = len(words) - 1
+        if cut is None:
+            return by_colour_text(text)
+        head = re.sub(r"\s*(?:,|and|&|or)\s*(?:the\s+)?$", "", text[: starts[cut]])
+        return by_colour_text(head) + text[len(head) :]
 
     def by_colour_text(text: str) -> str:
         names = [scene.block(c) for c in re.findall(COLOUR, text)]
@@ -327,7 +334,7 @@ def _mark_places(m: Marked, scene: Scene, named_before: tuple[str, ...]) -> None
     _mark_arm_sides(m, scene)
     _mark_region_lists(m, scene)
     # "the placement area (on the side of) P", "any region except P", "those regions": the place named
-    m.sub(rf"\b(?:the\s+)?{TARGET}\s+(?:regions?|areas?|zones?)\s+(?:(?:on|to|at|in)\s+)?(?=P\d)", " ")
+    m.sub(rf"\b(?:the\s+)?{TARGET}\s+(?:regions?|areas?|zones?)\s*,?\s*(?:{APPOSITION}\s*)?,?\s*(?=P\d)", " ")
     m.sub(
         rf"\b(?:(?:the|an?|any|all)\s+)?(?:other\s+)?{PLACE_NOUN}\s+{OTHER_THAN}\s+P(\d+)|\boutside\s+(?:of\s+)?P(\d+)",
         lambda match: _complement_of(m, match),
@@ -349,9 +356,7 @@ def _mark_places(m: Marked, scene: Scene, named_before: tuple[str, ...]) -> None
     )
     # a place named twice ("region G (where the red block is)", "area (E, F, G) to the side of arm a",
     # "next to arm a and arm b, that is region E, F and G"): both readings must agree
-    apposition = (
-        r"P(\d+)\s*,?\s*(?:\(|to|on|at|in|that\s+is|which\s+(?:is|are)|namely|:)?\s*,?\s*P(\d+)\s*\)?"
-    )
+    apposition = rf"P(\d+)\s*,?\s*{APPOSITION}?\s*,?\s*P(\d+)\s*\)?"
     while re.search(apposition, m.text):
         m.sub(apposition, lambda match: _merge(m, int(match.group(1)), int(match.group(2))))
 

@@ -40,6 +40,7 @@ from nl2hltl2plan.language.handover_phrases import FILLER, Marked, Place, Scene,
 from nl2hltl2plan.language.handover_rules import (
     Prohibition,
     blocks_of,
+    read_leaders,
     read_orders,
     read_prohibitions,
     read_touch_guards,
@@ -138,7 +139,10 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
         notes += m.notes
         forbids = read_prohibitions(m)
         touches += read_touch_guards(m)
-        orders += read_orders(m)
+        sentence_orders = read_orders(m)
+        orders += sentence_orders
+        # "red goes first, blue after red": the order says what "first" means
+        leaders = [b for b in read_leaders(m) if b not in [x for x, _ in sentence_orders]]
         new = _goal_clauses(m, scene)
         drop_but(m)
         _refuse_leftovers(m, sentence)
@@ -149,6 +153,8 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
             else:
                 pending.append((blocks, place, explicit, text))
         clauses += new
+        for block in leaders:
+            _lead(clauses, block)
     orders += [(c.leader, g.block) for c in clauses if c.leader for g in c.goals if g.block != c.leader]
     if not clauses:
         raise HTTError(f"no goal for a block in {instruction!r} (say where each block goes)")
@@ -181,8 +187,8 @@ def _goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
         clauses.append(Clause(goals, text, together=together))
         return f" G{len(clauses) - 1} "
 
-    def exchange(match: re.Match[str]) -> str:
-        pair = blocks_of(m, match.group(1))
+    def exchange(match: re.Match[str], other: str = "") -> str:
+        pair = blocks_of(m, match.group(1)) + (blocks_of(m, other) if other else [])
         if len(pair) != 2:
             raise HTTError(
                 f"exchange needs two blocks, '{m.block_text[int(match.group(1))]}' names {len(pair)}"
@@ -207,8 +213,12 @@ def _goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
         place, text = m.places[int(x.group(k + 2))], x.group(0).strip()
         return goal(blocks_of(m, x.group(k)), place, text, x.group(k + 1) + x.group(k + 3))
 
+    m.sub(  # "swap the red block with the blue block"
+        r"\b(?:exchange|swap|switch|interchange|trade)\s+(?:the\s+)?(?:positions?\s+of\s+)?B(\d+)\s+with\s+B(\d+)",
+        lambda x: exchange(x, x.group(2)),
+    )
     m.sub(
-        r"(?:\bwhile\s+)?\b(?:exchang(?:e|ing)|swap(?:ping)?|switch(?:ing)?|interchang(?:e|ing)|trad(?:e|ing))\s+(?:the\s+)?(?:positions?\s+|places?\s+|locations?\s+|spots?\s+)?(?:of\s+)?B(\d+)(?:\s+(?:s\s+)?(?:positions?|places?|locations?))?",
+        r"(?:\bwhile\s+)?\b(?:exchang(?:e|ing)|swap(?:ping)?|switch(?:ing)?|interchang(?:e|ing)|trad(?:e|ing))\s+(?:the\s+)?(?:positions?\s+|places?\s+|locations?\s+|spots?\s+)?(?:of\s+)?B(\d+)(?:\s+(?:s\s+)?(?:positions?|places?|locations?))?(?:\s+(?:around|round|over))?",
         exchange,
     )
     m.sub(
@@ -252,6 +262,10 @@ def _goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
         rf"\bG(\d+)(?P<link>(?:\s+first\b)?\s*,?\s*(?:and\s+)?{THEN}{LEAD})(?:back\s+)?{PREP}\s+P(\d+){mods}",
         lambda x: f" G{x.group(1)} {x.group('link')}" + again(clauses[int(x.group(1))], x),
     )
+    m.sub(  # "on I first and on G second": the second place named after the first
+        rf"\bG(\d+)(?P<link>\s+first\s*,?\s*and\s+)(?:back\s+)?{PREP}\s+P(\d+){mods}\s+(?:second|next|afterwards?|last)\b",
+        lambda x: f" G{x.group(1)} then " + again(clauses[int(x.group(1))], x),
+    )
     _markers(m, clauses)
     order = [int(k) for k in re.findall(r"\bG(\d+)\b", m.text)]  # the sentence's order, not the patterns'
     if sorted(order) != list(range(len(clauses))):  # a clause lost or read twice: never guess
@@ -278,17 +292,6 @@ def _markers(m: Marked, clauses: list[Clause]) -> None:
     )
     m.sub(rf"\b(?:then\s*,?\s*)?{AFTER_ALL}{LEAD}G(\d+)", lambda x: set_marker(x, "after_all"))
 
-    def leader(match: re.Match[str]) -> str:  # "swap red and blue, red first": red before the others
-        clause, first = clauses[int(match.group(1))], m.blocks[int(match.group(2))]
-        if len(first) != 1 or len(clause.goals) < 2 or first[0] not in [g.block for g in clause.goals]:
-            return match.group(0)
-        clause.leader = first[0]
-        return f" G{match.group(1)} "
-
-    m.sub(
-        rf"\bG(\d+)\s*,?\s*(?:(?:placing|putting|moving|with|and)\s+)?B(\d+)\s+{MODAL}(?:placed\s+|put\s+|goes\s+)?first\b",
-        leader,
-    )
     m.sub(r"\bG(\d+)\s+first\b", lambda x: set_marker(x, "first"))
 
     def anytime(match: re.Match[str]) -> str:
@@ -334,6 +337,18 @@ def _guard(
             regions = [r for r in scene.layout.regions if r not in g.regions]
         for r in regions:
             g.drop_guard.update({f"drop({r})"} if every else {f"put({b},{r})" for b in blocks})
+
+
+def _lead(clauses: list[Clause], block: str) -> None:
+    """'swap red and blue, red first', 'the red block has to be placed first': the block goes before the
+    other blocks of the latest clause that moves it with others."""
+    for clause in reversed(clauses):
+        if len(clause.goals) > 1 and block in [g.block for g in clause.goals]:
+            clause.leader = block
+            return
+    raise HTTError(
+        f"'the {block.lower()} block first': first among which blocks? (say 'before the ... block')"
+    )
 
 
 def _refuse_cyclic(orders: list[tuple[str, str]]) -> None:

@@ -103,6 +103,26 @@ def read_orders(m: Marked) -> list[tuple[str, str]]:
     return out
 
 
+def read_leaders(m: Marked) -> list[str]:
+    """'..., red first', 'with the red block being placed first': a block before the others it is moved
+    with (the caller finds the clause)."""
+    out: list[str] = []
+
+    def add(match: re.Match[str]) -> str:
+        names = m.blocks[int(match.group(1))]
+        if len(names) != 1:
+            return match.group(0)
+        out.append(names[0])
+        return " "
+
+    m.sub(
+        rf"(?:\b(?:with|placing|putting|moving|and)\s+)?\bB(\d+)\s+{MODAL}(?:(?:placed|put|moved|set)\s+|goe?s?\s+|"
+        r"comes?\s+)?first\b(?=\s*(?:$|,|\band\b|\)))",
+        add,
+    )
+    return out
+
+
 def read_touch_guards(m: Marked) -> list[tuple[str, str]]:
     """(X, Y): X is not picked up before Y is. 'no arm may touch X until an arm has touched Y', 'until Y
     has been touched, X must not be touched', 'X may only be touched after Y', 'Y must be picked up
@@ -125,7 +145,10 @@ def read_touch_guards(m: Marked) -> list[tuple[str, str]]:
         rf"(?:(?:\bA\s+)?{NEG}\s+{TOUCH}|\bno\s+A\s+{may}?\s*{TOUCH}|\b(?:never|not|without)\s+{TOUCHING})"
         r"\s+B(?P<x>\d+)"
     )
-    not_touched = rf"\bB(?P<x>\d+)\s+{NEG}\s+(?:ever\s+)?be\s+{TOUCHED}(?:\s+by\s+A)?"
+    not_touched = (
+        rf"\bB(?P<x>\d+)\s+(?:(?:is|are|must|may|can|should|shall|will)\s+)?{NEG}\s+(?:ever\s+)?(?:to\s+)?be\s+"
+        rf"{TOUCHED}(?:\s+by\s+A)?"
+    )
     until = r"(?:until|before|unless)"
     after = r"(?:only\s+)?(?:after|once|when)"
     for pattern in (
@@ -176,6 +199,10 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
         add,
     )
     m.sub(rf"\bnothing\s+{may}?\s*(?:be\s+)?{DROP}{down}", add)
+    # "objects are not allowed on ...", "no object is allowed on ...", "objects are forbidden on ..."
+    banned = r"(?:not\s+(?:allowed|permitted)|forbidden|prohibited|banned)"
+    m.sub(rf"\bB(?P<b>\d+)\s+(?:is|are)\s+{banned}\s+(?:from\s+)?{PREP}\s+P(?P<p>\d+){PERIOD}", add)
+    m.sub(rf"\bno\s+B(?P<b>\d+)\s+(?:is|are)\s+(?:allowed|permitted)\s+{PREP}\s+P(?P<p>\d+){PERIOD}", add)
     # "regions F, G and H must stay empty (meanwhile)", "keep F, G and H free": nothing is put there
     must = r"(?:(?:must|should|will|shall|has\s+to|have\s+to|needs?\s+to)\s+)?"
     stay = rf"{must}(?:stay|remain|be\s+kept|be\s+left)"

@@ -5,7 +5,7 @@ rewrites that map a writer's variants (synonyms, British forms, common typos) on
 
 VERB = (
     r"(?:transfer|move|put|place|bring|carry|take|deliver|relocate|shift|get|set|send|return|distribute|"
-    r"spread|position|drop)"
+    r"spread|position|drop|arrange)"
 )
 PREP = r"(?:to|into|onto|on|in|at|towards?|over\s+to|in\s+to|on\s+to|among|across|over)"
 MOD = (
@@ -14,7 +14,8 @@ MOD = (
 )
 GERUND = r"(?:placing|putting|moving|transferring|bringing|carrying|delivering|taking|getting|shifting)"
 DONE = (
-    r"(?:placed|put|moved|transferred|delivered|carried|brought|taken|shifted|relocated|done|handled|set|"
+    r"(?:placed|put|moved|transferred|delivered|carried|brought|taken|shifted|relocated|returned|sent|"
+    r"arranged|positioned|done|handled|set|"
     r"dropped|go|goes|going|end\s+up|ends\s+up|land|lands)"
 )
 # a passive goal's or order's modal: "should", "is to", "can", "has to" ... ("be" follows, optional)
@@ -44,10 +45,16 @@ DONE_STATE = r"(?:done|finished|complete|completed|over)"
 AFTER_ALL = (
     r"(?:after\s+(?:all\s+(?:of\s+)?(?:these|this|that|the\s+above)|everything(?:\s+else)?)"
     rf"(?:\s+(?:is|are|has\s+been|have\s+been)\s+{DONE_STATE})?|(?:once|when)\s+(?:all\s+(?:of\s+)?)?"
-    rf"(?:this|these|that|everything(?:\s+else)?|the\s+above)\s+(?:is|are|has\s+been|have\s+been)\s+{DONE_STATE}|"
+    rf"(?:this|these|that|it|everything(?:\s+else)?|the\s+above)(?:\s+all)?\s+(?:is|are|has\s+been|have\s+been)\s+"
+    rf"(?:all\s+)?{DONE_STATE}|"
     r"finally|lastly|last\s+of\s+all|at\s+the\s+(?:very\s+)?end|in\s+the\s+end|as\s+a\s+(?:final|last)\s+step)"
 )
 THEN = r"(?:then|after\s+that|afterwards?|next|subsequently|later|and\s+then)"
+# a place named again in other words: "the placement area, which consists of regions E, F and G"
+APPOSITION = (
+    r"(?:\(|to|on|at|in|that\s+is|which\s+(?:is|are|consists\s+of|comprises|includes)|consisting\s+of|comprising|"
+    r"made\s+up\s+of|namely|:)"
+)
 LEAD = r"\s*,?\s*(?:you\s+should\s+|please\s+|we\s+should\s+)?"
 
 # Rewrites applied to the lower-cased sentence before any phrase is read: each maps a variant onto the
@@ -80,6 +87,10 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\b(?:earlier\s+than|prior\s+to|ahead\s+of|in\s+advance\s+of|sooner\s+than)\b", "before"),
     (r"\blater\s+than\b", "after"),
     (r"\buntil\s+after\b", "until"),
+    (r"\b(?:remember|be\s+sure|make\s+sure|do\s+not\s+forget|note|keep\s+in\s+mind)\s+(?:to|that)\b", " "),
+    (r"\bprecedes?\b", "comes before"),
+    (r"\bfollows?\b", "comes after"),
+    (r"\b(?:nobody|no\s+one|none\s+of\s+the\s+(?:robot\s+)?arms)\b", "no arm"),
     (
         r"\b(?:do\s+not|don\s*'\s*t)\s+let\s+(?:any\s+|an?\s+|the\s+)?(?:robot\s+)?(?:arms?|robots?)\s+",
         "no arm may ",
