@@ -176,6 +176,13 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "The task is to move three blocks to the opposite side; red must precede blue.",
         "Move the three blocks to the far side. The blue block must be placed after the red block has "
         "been placed.",
+        "Step 1: move the three blocks to the opposite side. Step 2: the red block must be placed before "
+        "the blue block.",
+        "It is required that all three blocks be moved to the opposite side, and that the red block is "
+        "placed before the blue block.",
+        "Move the three blocks to the opposite side; note that red needs to come before blue.",
+        "We want the three blocks on the opposite side, with the red block placed before the blue block.",
+        "Put every block on the opposite side of the table. Place red earlier than blue.",
     ],
     2: [
         "Fill regions H, I and J with the three blocks; each region can have only one block.",
@@ -212,6 +219,12 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "per region.",
         "Arrange the three blocks in regions H, I and J, one block in every region.",
         "Each goal region can hold only a single object. Move the three blocks to H, I and J.",
+        "1) Put the three blocks into regions H, I and J. 2) Each region can hold only one object.",
+        "Three blocks go into H, I and J, one per region.",
+        "Please place the three blocks into the target regions H, I and J; there can be only one object "
+        "in each region.",
+        "The three blocks should end up in regions H, I and J, with no two blocks sharing a region.",
+        "Put the three blocks into H, I and J. Do not put more than one block in a region.",
     ],
     3: [
         "Move the three pillars to regions E, F and G, beside arm a and arm b. Objects may not be placed "
@@ -270,6 +283,14 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "Carry the three pillars to E, F and G. An object must never be placed on an area other than its "
         "target region.",
         "The three pillars go to regions E, F and G; do not place any objects outside the target regions.",
+        "Pillars to E, F and G. No object on any other region.",
+        "Move the three pillars to the area near arm a and arm b (regions E, F and G). Make sure no "
+        "object is placed on an area other than the target region.",
+        "The three pillars are to be moved to regions E, F and G. Placing any object on a region other "
+        "than the target regions is not allowed.",
+        "Please move the three pillars into the placement area on arm a and arm b's side, regions E, F "
+        "and G, and never put an object on a non-target region.",
+        "Move the three pillars to regions E, F and G, and only ever place objects on the target regions.",
     ],
     4: [
         "Move the three blocks to the opposite regions, but the blue block may not be picked up by any "
@@ -334,6 +355,16 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "until the red block has been picked up. Finally the yellow block should be returned to region G.",
         "Transfer the three blocks into the opposite regions. Nobody may touch the blue block until the "
         "red block has been touched. Lastly, put the yellow block back to region G.",
+        "Step 1: move the three blocks to the opposite regions, and no arm may touch the blue block until "
+        "an arm has touched the red block. Step 2: put the yellow block back to region G.",
+        "Move the three blocks to the opposite regions. The red block has to be touched first, before any "
+        "arm touches the blue block. Finally, put the yellow block back to region G.",
+        "Transfer the three blocks into the opposite regions, touching the red block before the blue "
+        "block. After all of these, place the yellow block back to region G.",
+        "Move three blocks to the opposite regions. Keep the arms off the blue block until the red block "
+        "has been touched. Then, when all that is done, put the yellow block back in region G.",
+        "The three blocks go to the opposite regions; the arms may touch the blue block only after "
+        "touching the red block. After all this, the yellow block goes back to region G.",
     ],
     5: [
         "Swap the red block and the blue block, making sure the red one gets placed before the blue one. "
@@ -389,6 +420,16 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "the red and the blue block, placing the red block prior to the blue block.",
         "Please swap the red block with the blue block, the red one being placed before the blue one, and "
         "at any time put the yellow block into the opposite side.",
+        "Swap the red block and the blue block (red placed first) and move the yellow block to the "
+        "opposite side at any time.",
+        "Exchange the positions of red and blue. Red should be placed before blue. Yellow goes to the "
+        "opposite side at any time.",
+        "The red block and blue block exchange positions, with red going before blue; the yellow block "
+        "can go to the opposite side at any time.",
+        "At any point, move the yellow block to the opposite side. The red block and the blue block need "
+        "to switch places, and the red block must be placed before the blue block.",
+        "Switch the positions of the red block and the blue block, red before blue, and put the yellow "
+        "block on the other side at any time.",
     ],
     6: [
         "Put the three blocks separately on regions G, H and I; the red block is placed before the blue "
@@ -434,6 +475,15 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "Put the three blocks separately to region G, H and I; the red block should be placed before the "
         "blue block is placed.",
         "Separately place the blocks on G, H, and I. The red block must go down before the blue block.",
+        "Three objects, separately, to regions G, H and I; red before blue.",
+        "Place the three objects separately on regions G, H and I. The red one has to be placed before "
+        "the blue one.",
+        "I want the three blocks placed separately on G, H and I, and the red block must be placed before "
+        "the blue block.",
+        "Place the three objects separately into regions G, H, and I, making sure to place the red block "
+        "before the blue block.",
+        "Please place the red block before the blue block while placing the three blocks separately on "
+        "regions G, H and I.",
     ],
     7: [
         "One by one, move the three blocks to region I, but nothing may be placed on region F, G and H "
@@ -486,6 +536,15 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "F, G, and H stay empty throughout.",
         "The red block should be placed before the blue block. One at a time, put the three objects on "
         "region I, and no object can be dropped on regions F, G or H during this period.",
+        "Put the three objects on region I, one after another. The red block should be placed before the "
+        "blue block. No object may be put on regions F, G or H while this is happening.",
+        "Three blocks to region I one after another, red before blue, nothing on F, G or H in the meantime.",
+        "Place the three blocks one after another on region I; the red block is placed before the blue "
+        "block. During this period, regions F, G and H must be kept empty.",
+        "While placing the three blocks one after another on region I, do not place anything on regions "
+        "F, G and H. The red block should be placed before the blue block.",
+        "Place the three objects one after another to region I, red before blue, and make sure that "
+        "nothing is placed on regions F, G and H during this period.",
     ],
     8: [
         "First put the yellow block on region I, then on region G, and move the red and blue blocks to "
@@ -541,6 +600,15 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "blue blocks to any empty region.",
         "Please place the yellow block to region I first, then place the yellow block to region G, and "
         "move the red block and the blue block to any free region at any time.",
+        "Yellow block: region I first, then region G. Red and blue blocks: any empty region, at any time.",
+        "Put the yellow block on region I and afterwards put it on region G. The red and blue blocks can "
+        "be put on any empty region at any time.",
+        "Place the yellow block first on region I, then on region G; the red and blue blocks should go to "
+        "any empty region at any time.",
+        "The yellow block has to go to region I first and then to region G. Meanwhile, the red and blue "
+        "blocks can be moved to any empty region at any time.",
+        "Move the yellow block to region I, followed by region G. Move the red and blue blocks to any "
+        "empty region at any time.",
     ],
 }
 
@@ -576,6 +644,8 @@ NEAR_MISSES: dict[int, list[str]] = {
         "Move the three blocks to the opposite side; red goes first, yellow after red.",
         "Can you please move the three blocks to the opposite side? Remember to place the blue block "
         "before the red block.",
+        "Step 1: move the three blocks to the opposite side. Step 2: the blue block must be placed before "
+        "the red block.",
     ],
     2: [
         "Put the three blocks into regions H, I and G, one per region.",
@@ -586,6 +656,7 @@ NEAR_MISSES: dict[int, list[str]] = {
         "Put the three blocks in H, I and G, one per region.",
         "Each of the regions H, I and G should receive exactly one of the three blocks.",
         "Arrange the three blocks in regions H, I and G, one block in every region.",
+        "The three blocks should end up in regions H, I and G, with no two blocks sharing a region.",
     ],
     3: [
         "Move the three pillars to regions E, F and G.",
@@ -598,6 +669,8 @@ NEAR_MISSES: dict[int, list[str]] = {
         "Relocate the three pillars to regions E, F and G. Objects are not allowed on region H.",
         "Move the three pillars to the placement area, which consists of regions E, F and H. No object "
         "may be placed anywhere except the target regions.",
+        "Pillars to E, F and G. No object on region H.",
+        "Move the three pillars to regions E, F and G. Placing any object on region H is not allowed.",
     ],
     4: [
         "Move the three blocks to the opposite regions. No arm may touch the red block until an arm has "
@@ -619,6 +692,12 @@ NEAR_MISSES: dict[int, list[str]] = {
         "blue block has been touched. After everything, place the yellow block back on region G.",
         "Move the three blocks to the opposite regions. Nobody may touch the blue block until the red "
         "block has been touched. When that is all done, move the yellow block back to region H.",
+        "Move three blocks to the opposite regions. Keep the arms off the red block until the blue block "
+        "has been touched. Then, when all that is done, put the yellow block back in region G.",
+        "Transfer the three blocks into the opposite regions, touching the blue block before the red "
+        "block. After all of these, place the yellow block back to region G.",
+        "Step 1: put the yellow block back to region G. Step 2: move the three blocks to the opposite "
+        "regions, and no arm may touch the blue block until an arm has touched the red block.",
     ],
     5: [
         "Exchange the positions of the red and yellow blocks; the red block before the blue block. Put "
@@ -651,6 +730,7 @@ NEAR_MISSES: dict[int, list[str]] = {
         "Place the three blocks one after another on region I. The red block before the blue block.",
         "Place the three blocks one by one on region I with red before blue, and keep regions F and G "
         "empty while doing so.",
+        "Three blocks to region I one after another, red before blue, nothing on F or G in the meantime.",
     ],
     8: [
         "First place the yellow block on region G, then on region I. Move the red and blue blocks to any "
@@ -667,6 +747,9 @@ NEAR_MISSES: dict[int, list[str]] = {
         "empty region at any time.",
         "Put the yellow block on region G first and on region I second. At any time, move the red and "
         "blue blocks to any empty region.",
+        "Step 1: put the yellow block on region G. Step 2: put it on region I. Red and blue blocks: any "
+        "empty region, at any time.",
+        "Yellow block: region G first, then region I. Red and blue blocks: any empty region, at any time.",
     ],
 }
 

@@ -21,7 +21,7 @@ from dataclasses import dataclass, field
 from typing import Literal
 
 from nl2hltl2plan.errors import HTTError, WorldError
-from nl2hltl2plan.language.handover_words import APPOSITION, EMPTY, NEG, REWRITES, VERB, typo_table
+from nl2hltl2plan.language.handover_words import APPOSITION, EMPTY, NEG, REWRITES, SWAP, VERB, typo_table
 from nl2hltl2plan.worlds.handover_world import REGIONS, Layout, layout
 from nl2hltl2plan.worlds.world import Cell, World
 
@@ -180,17 +180,24 @@ def _mark_one_per_region(m: Marked) -> None:
         rf"(?:only\s+|just\s+|at\s+most\s+|no\s+more\s+than\s+|exactly\s+)?(?:one|a\s+single|1)(?:\s+{NOUN})?"
     )
     hold = r"(?:placed|filled|holds?|takes?|gets?|receives?|contains?|ha(?:ve|s)|fits?|accepts?)"
-    patterns = (
+    patterns: tuple[str, ...] = (
         rf"\b(?:each|every|an?|any)\s+{region}\s+(?:can|may|should|must|will)?\s*(?:only\s+)?(?:be\s+)?{hold}\s+"
         rf"(?:only\s+)?(?:with\s+)?{one}\b",
         rf"\bno\s+{region}\s+(?:can|may|should|must|will)?\s*(?:be\s+)?{hold}\s+(?:with\s+)?more\s+than\s+"
         rf"(?:one|a\s+single|1)(?:\s+{NOUN})?\b",
-        rf"\b(?:with\s+)?{one}\s+(?:(?:is|being|may|can|should|must|will)\s+)?(?:be\s+)?(?:allowed\s+|permitted\s+)?"
+        rf"\b(?:with\s+|there\s+(?:can|may|should|must|will)\s+be\s+)?{one}\s+(?:(?:is|being|may|can|should|must|will)\s+)?"
+        r"(?:be\s+)?(?:allowed\s+|permitted\s+)?"
         rf"(?:(?:to\s+)?(?:occupy|go\s+(?:in|on|to|into)|sit\s+(?:in|on)|be\s+(?:placed\s+)?(?:in|on))\s+|(?:per|in|on|for|to)\s+)"
         rf"(?:each|every)\s+{region}\b",
         rf"\b(?:with\s+)?{one}\s+(?:(?:is|being|may|can)\s+)?(?:allowed\s+|permitted\s+)?per\s+{region}\b",
         r"\bone\s+(?:each|apiece)\b",
         rf"\b(?:with\s+)?{one}\s+per\s+{region}\b|\b(?:with\s+)?{one}\s+(?:per|in\s+each|on\s+each|for\s+each)\b",
+    )
+
+    patterns += (
+        rf"\b(?:with\s+)?no\s+two\s+{NOUNS}\s+(?:(?:may|can|should|will)\s+)?(?:sharing|share)\s+(?:a\s+|the\s+same\s+)?{region}\b",
+        rf"\b(?:do\s+not|never)\s+(?:put|place)\s+more\s+than\s+(?:one|a\s+single)(?:\s+{NOUN})?\s+(?:in|on|into|onto)\s+"
+        rf"(?:a|any|each|the\s+same)\s+{region}\b",
     )
 
     def note(match: re.Match[str]) -> str:
@@ -274,7 +281,7 @@ def _mark_blocks(m: Marked, scene: Scene, previous: str) -> None:
     m.sub(rf"\b(?:a|an|any)\s+{NOUN}\b{negation}", lambda match: _new_block(m, scene.blocks, match.group(0)))
     # "never place an object on ...", "do not put anything on ...": a generic object after a negated verb
     m.sub(
-        rf"\b({NEG}\s+(?:{VERB}|drop|leave|lay))\s+(?:(?:a|an|any)\s+{NOUN}|anything)\b",
+        rf"\b({NEG}\s+(?:{VERB}|drop|leave|lay)|placing|putting|dropping|setting)\s+(?:(?:a|an|any)\s+{NOUN}|anything)\b",
         lambda match: match.group(1) + _new_block(m, scene.blocks, match.group(0)),
     )
     m.sub(each, all_blocks)
@@ -306,8 +313,7 @@ def _mark_pronouns(m: Marked, previous: str) -> None:
             return match.group(0)  # not two, or the pair is the subject: "X and Y exchange their positions"
         return match.group(1) + _new_block(m, list(dict.fromkeys(named)), match.group(2))
 
-    swap = r"(?:exchang(?:e|ing)|swap(?:ping)?|switch(?:ing)?|interchang(?:e|ing)|trad(?:e|ing))"
-    m.text = re.sub(rf"\b({swap}\s+)(them|their)\b", pair, m.text)
+    m.text = re.sub(rf"\b({SWAP}\s+)(them|their)\b", pair, m.text)
     m.text = re.sub(r"\b(?:it|them|they)\b", resolve, m.text)
     singles = [m.blocks[int(k)] for k in re.findall(r"\bB(\d+)\b", m.text) if len(m.blocks[int(k)]) == 1]
     m.last_one = singles[-1][0] if singles else ""
@@ -334,7 +340,8 @@ def _mark_places(m: Marked, scene: Scene, named_before: tuple[str, ...]) -> None
     _mark_arm_sides(m, scene)
     _mark_region_lists(m, scene)
     # "the placement area (on the side of) P", "any region except P", "those regions": the place named
-    m.sub(rf"\b(?:the\s+)?{TARGET}\s+(?:regions?|areas?|zones?)\s*,?\s*(?:{APPOSITION}\s*)?,?\s*(?=P\d)", " ")
+    named = rf"\b(?:the\s+)?(?:{TARGET}\s+(?:regions?|areas?|zones?)|area|zone)"
+    m.sub(rf"{named}\s*,?\s*(?:{APPOSITION}\s*)?,?\s*(?=P\d)", " ")
     m.sub(
         rf"\b(?:(?:the|an?|any|all)\s+)?(?:other\s+)?{PLACE_NOUN}\s+{OTHER_THAN}\s+P(\d+)|\boutside\s+(?:of\s+)?P(\d+)",
         lambda match: _complement_of(m, match),
@@ -368,12 +375,13 @@ OTHER_THAN = r"(?:other\s+than|except(?:\s+for)?|besides|apart\s+from|but|outsid
 def _mark_target_complements(m: Marked) -> None:
     """'an area other than the target region', 'anywhere else', 'any other region': in a prohibition,
     every labelled region but the goals' targets."""
+    non_target = rf"\b(?:an?\s+|any\s+)?non\s+{TARGET}\s+{PLACE_NOUN}\b"
     targets = (
         rf"(?:the\s+|their\s+|its\s+|an?\s+|one\s+of\s+the\s+)?(?:{TARGET}\s+{PLACE_NOUN}|targets|goals)\b"
     )
     complement = (
         rf"\b(?:the\s+|an?\s+)?(?:any\s+)?(?:other\s+)?(?:{PLACE_NOUN}|anywhere)\s+(?:{OTHER_THAN}|that\s+(?:is|are)\s+not)\s+"
-        rf"{targets}|\boutside\s+(?:of\s+)?{targets}|\b(?:any|all)\s+other\s+{PLACE_NOUN}\b"
+        rf"{targets}|\boutside\s+(?:of\s+)?{targets}|\b(?:any|all)\s+other\s+{PLACE_NOUN}\b|{non_target}"
     )
 
     def other_than(match: re.Match[str]) -> str:  # "anywhere other than ...", "elsewhere": with its "on"
@@ -427,11 +435,14 @@ def _mark_arm_sides(m: Marked, scene: Scene) -> None:
         letters = re.findall(r"\b[a-d]\b", re.sub(r"side of|reach of", "", match.group(0)))
         regions = scene.arms_side(["abcd".index(x) for x in letters])
         kind: Literal["regions", "landmark"] = "regions" if "side" in match.group(0) else "landmark"
+        if match.group(0).startswith("on") and kind == "landmark":  # "on arm a" names no place
+            return match.group(0)
         return _new_place(m, Place(kind, regions, text=match.group(0).strip()))
 
     m.sub(
         r"\b(?:(?:the\s+)?sides?\s+of|next\s+to|beside|by|near|close\s+to|in\s+front\s+of|within\s+reach\s+of|"
-        r"reachable\s+by)\s+(?:the\s+)?arms?\s+[a-d](?:\s*(?:,|and|&)\s*(?:the\s+)?(?:arm\s+)?[a-d])*\b",
+        r"reachable\s+by|on)\s+(?:the\s+)?arms?\s+[a-d](?:\s*(?:,|and|&)\s*(?:the\s+)?(?:arm\s+)?[a-d])*"
+        r"(?:\s+s\s+sides?)?\b",
         arms,
     )
 

@@ -48,11 +48,13 @@ from nl2hltl2plan.language.handover_rules import (
 from nl2hltl2plan.language.handover_words import (
     AFTER_ALL,
     DONE,
+    GERUND,
     LEAD,
     MOD,
     MODAL,
     PERIOD_WORDS,
     PREP,
+    SWAP,
     THEN,
     VERB,
 )
@@ -133,7 +135,8 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
     notes: list[str] = []
     pending: list[Prohibition] = []  # prohibitions stated before any goal
     previous: Marked | None = None  # the sentence before ("it", "these regions" in the next one)
-    for sentence in (s for s in re.split(r"[.;!?]+(?:\s|$)", instruction) if s.strip()):
+    steps = re.sub(r"(^|[.;!?]\s+)(\d)\.\s", r"\1\2) ", instruction)  # "1. Put ...": a numbered step
+    for sentence in (s for s in re.split(r"[.;!?]+(?:\s|$)", steps) if s.strip()):
         m = mark(sentence, scene, previous)
         previous = m
         notes += m.notes
@@ -144,6 +147,8 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
         # "red goes first, blue after red": the order says what "first" means
         leaders = [b for b in read_leaders(m) if b not in [x for x, _ in sentence_orders]]
         new = _goal_clauses(m, scene)
+        if not new:  # "Step 2: the red block before the blue block": a step of rules only
+            m.sub(r"^\s*then\b", " ")
         drop_but(m)
         _refuse_leftovers(m, sentence)
         scope = [g for c in new for g in c.goals] or [g for c in clauses for g in c.goals]
@@ -213,30 +218,15 @@ def _goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
         place, text = m.places[int(x.group(k + 2))], x.group(0).strip()
         return goal(blocks_of(m, x.group(k)), place, text, x.group(k + 1) + x.group(k + 3))
 
-    m.sub(  # "swap the red block with the blue block"
-        r"\b(?:exchange|swap|switch|interchange|trade)\s+(?:the\s+)?(?:positions?\s+of\s+)?B(\d+)\s+with\s+B(\d+)",
-        lambda x: exchange(x, x.group(2)),
-    )
+    _read_exchanges(m, exchange)
     m.sub(
-        r"(?:\bwhile\s+)?\b(?:exchang(?:e|ing)|swap(?:ping)?|switch(?:ing)?|interchang(?:e|ing)|trad(?:e|ing))\s+(?:the\s+)?(?:positions?\s+|places?\s+|locations?\s+|spots?\s+)?(?:of\s+)?B(\d+)(?:\s+(?:s\s+)?(?:positions?|places?|locations?))?(?:\s+(?:around|round|over))?",
-        exchange,
+        rf"(?:\bwhile\s+)?\b(?:{VERB}|{GERUND})\s+B(\d+){mods}(?:\s+first)?\s+(?:(?:to\s+)?(?:be|end\s+up)\s+)?"
+        rf"(?:back\s+)?{PREP}\s+P(\d+){mods}",
+        lambda x: matched(x, 1),
     )
+    # a heading-like goal at the start of a sentence or after a comma: "pillars to E, F and G"
     m.sub(
-        r"\bB(\d+)\s+(?:should\s+|must\s+)?(?:exchange|swap|switch|trade)\s+(?:their\s+)?(?:positions?|places?|locations?|spots?)",
-        exchange,
-    )
-    m.sub(  # "the positions of the red and blue blocks should be swapped"
-        rf"\b(?:the\s+)?(?:positions?|places?|locations?)\s+of\s+B(\d+)\s+{MODAL}(?:swapped|exchanged|switched|interchanged)",
-        exchange,
-    )
-    # "... so that each ends up where the other was": what an exchange is
-    m.sub(
-        r"(?<=G\d)\s*,?\s*so\s+that\s+each\s+(?:one\s+)?(?:ends\s+up|is|goes|lands|sits)\s+(?:where|in\s+the\s+place)\s+"
-        r"the\s+other\s+(?:one\s+)?(?:was|is|started|stood|had\s+been)\b",
-        " ",
-    )
-    m.sub(
-        rf"\b{VERB}\s+B(\d+){mods}(?:\s+first)?\s+(?:back\s+)?{PREP}\s+P(\d+){mods}",
+        rf"(?:^|(?<=,))\s*B(\d+){mods}\s*(?::\s*|,?\s*(?:to|into|onto)\s+)P(\d+){mods}(?:\s+first\b)?(?=\s*(?:$|,|\band\b))",
         lambda x: matched(x, 1),
     )
     # the inverse syntax "fill regions H, I and J with the three blocks": as many places as blocks
@@ -259,8 +249,9 @@ def _goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
     )
     # the verb and the blocks shared with the clause just before: "to I, then to G", "on I first, then on G"
     m.sub(
-        rf"\bG(\d+)(?P<link>(?:\s+first\b)?\s*,?\s*(?:and\s+)?{THEN}{LEAD})(?:back\s+)?{PREP}\s+P(\d+){mods}",
-        lambda x: f" G{x.group(1)} {x.group('link')}" + again(clauses[int(x.group(1))], x),
+        rf"\bG(\d+)(?P<link>(?:\s+first\b)?\s*,?\s*(?:and\s+)?(?:{THEN}{LEAD}|followed\s+by\s+))(?:back\s+)?(?:{PREP}\s+)?"
+        rf"P(\d+){mods}",
+        lambda x: f" G{x.group(1)} then " + again(clauses[int(x.group(1))], x),
     )
     m.sub(  # "on I first and on G second": the second place named after the first
         rf"\bG(\d+)(?P<link>\s+first\s*,?\s*and\s+)(?:back\s+)?{PREP}\s+P(\d+){mods}\s+(?:second|next|afterwards?|last)\b",
@@ -271,6 +262,33 @@ def _goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
     if sorted(order) != list(range(len(clauses))):  # a clause lost or read twice: never guess
         raise HTTError(f"cannot tell the order of the goals in {m.text.strip()!r}")
     return [clauses[k] for k in order]
+
+
+def _read_exchanges(m: Marked, exchange: Callable[..., str]) -> None:
+    """'exchange the positions of X and Y', 'swap X with Y', 'X and Y should trade places', 'the positions
+    of X and Y should be swapped' (and '..., so that each ends up where the other was')."""
+    m.sub(  # "swap the red block with the blue block"
+        rf"\b{SWAP}\s+(?:the\s+)?(?:positions?\s+of\s+)?B(\d+)\s+with\s+B(\d+)",
+        lambda x: exchange(x, x.group(2)),
+    )
+    m.sub(
+        rf"(?:\bwhile\s+)?\b{SWAP}\s+(?:the\s+)?(?:positions?\s+|places?\s+|locations?\s+|spots?\s+)?(?:of\s+)?B(\d+)(?:\s+(?:s\s+)?(?:positions?|places?|locations?))?(?:\s+(?:around|round|over))?",
+        exchange,
+    )
+    m.sub(
+        rf"\bB(\d+)\s+{MODAL}(?:exchange|swap|switch|trade)s?\s+(?:their\s+)?(?:positions?|places?|locations?|spots?)",
+        exchange,
+    )
+    m.sub(  # "the positions of the red and blue blocks should be swapped"
+        rf"\b(?:the\s+)?(?:positions?|places?|locations?)\s+of\s+B(\d+)\s+{MODAL}(?:swapped|exchanged|switched|interchanged)",
+        exchange,
+    )
+    # "... so that each ends up where the other was": what an exchange is
+    m.sub(
+        r"(?<=G\d)\s*,?\s*so\s+that\s+each\s+(?:one\s+)?(?:ends\s+up|is|goes|lands|sits)\s+(?:where|in\s+the\s+place)\s+"
+        r"the\s+other\s+(?:one\s+)?(?:was|is|started|stood|had\s+been)\b",
+        " ",
+    )
 
 
 def _fill(m: Marked, x: re.Match[str], goal: Callable[[list[str], Place, str, str], str]) -> str:

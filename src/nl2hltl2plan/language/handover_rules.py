@@ -157,14 +157,15 @@ def read_touch_guards(m: Marked) -> list[tuple[str, str]]:
         rf"\b{until}\s+{other}\s*,?\s*{no_touch}",
         rf"\b{until}\s+{other}\s*,?\s*{not_touched}",
         rf"\bleave\s+B(?P<x>\d+)\s+(?:alone|untouched|be)\s+{until}\s+{other}",
+        rf"\b(?:keep|hold)\s+A\s+(?:off|away\s+from)\s+B(?P<x>\d+)\s+{until}\s+{other}",
         rf"\b{after}\s+{other}\s*,?\s*(?:only\s+then\s+)?{may}\s+(?:A\s+)?{TOUCH}\s+B(?P<x>\d+)",
         rf"\b{after}\s+{other}\s*,?\s*(?:only\s+then\s+)?{may}\s+B(?P<x>\d+)\s+be\s+{TOUCHED}(?:\s+by\s+A)?",
         rf"(?:\bA\s+)?{may}\s+(?:only\s+)?{TOUCH}\s+B(?P<x>\d+)\s+{after}\s+{other}",
         rf"\bB(?P<x>\d+)\s+{may}\s+(?:only\s+)?be\s+{TOUCHED}(?:\s+by\s+A)?\s+{after}\s+{other}",
         # the positive order of the touches: "Y must be picked up before X (is)"
-        rf"\bB(?P<y1>\d+)\s+{MODAL}{TOUCHED}(?:\s+by\s+A)?\s+(?:first\s*,?\s*)?before\s+B(?P<x>\d+)"
+        rf"\bB(?P<y1>\d+)\s+{MODAL}{TOUCHED}(?:\s+by\s+A)?\s+(?:first\s*,?\s*)?before\s+(?:(?:A\s+)?{TOUCHED}\s+)?B(?P<x>\d+)"
         rf"(?:\s+(?:is|has\s+been|gets)\s+{TOUCHED})?(?P<y2>)(?P<y3>){end}",
-        rf"(?:\bA\s+)?(?:{may}\s+)?{TOUCH}\s+B(?P<y1>\d+)\s+(?:first\s*,?\s*)?before\s+(?:touching\s+|picking\s+up\s+|"
+        rf"(?:\bA\s+)?(?:{may}\s+)?(?:{TOUCH}|{TOUCHING})\s+B(?P<y1>\d+)\s+(?:first\s*,?\s*)?before\s+(?:touching\s+|picking\s+up\s+|"
         rf"grabbing\s+|{TOUCH}\s+)?B(?P<x>\d+)(?P<y2>)(?P<y3>){end}",
     ):
         m.sub(pattern, add)
@@ -191,14 +192,23 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
         rf"\b{PERIOD_WORDS}\s*,?\s*(?=no\s+B|nothing|B\d+\s+{MODAL}{NEG}|(?:A\s+)?{NEG}|keep|leave|P\d)", " "
     )
     may = r"(?:can|may|should|must|will|shall|is\s+allowed\s+to|are\s+allowed\s+to)"
-    m.sub(rf"\bno\s+B(?P<b>\d+)\s+{may}?\s*(?:ever\s+)?(?:be\s+)?{DROP}{down}", add)
+    m.sub(rf"\bno\s+B(?P<b>\d+)\s+(?:{may}\s+|is\s+|are\s+|gets\s+)?(?:ever\s+)?(?:be\s+)?{DROP}{down}", add)
+    # verbless: "no object on any other region", "nothing on F, G or H in the meantime"
+    m.sub(rf"\bno\s+B(?P<b>\d+)\s+(?:on|in|onto|into)\s+P(?P<p>\d+){PERIOD}", add)
+    m.sub(rf"\bnothing\s+(?:on|in|onto|into)\s+P(?P<p>\d+){PERIOD}", add)
     modal = r"(?:(?:must|may|can|should|shall|will|is|are)\s+)?"
     m.sub(rf"\bB(?P<b>\d+)\s+{modal}{NEG}\s+(?:ever\s+)?(?:be\s+)?{DROP}{down}", add)
     m.sub(
         rf"(?:(?:\bA\s+)?{NEG}|\bno\s+A\s+{may}?)\s+(?:put|place|drop|set|leave|lay)\s+B(?P<b>\d+){down}",
         add,
     )
-    m.sub(rf"\bnothing\s+{may}?\s*(?:be\s+)?{DROP}{down}", add)
+    m.sub(rf"\bnothing\s+(?:{may}\s+)?(?:be\s+|is\s+|gets\s+)?{DROP}{down}", add)
+    # "placing any object on R is not allowed"
+    m.sub(
+        rf"\b(?:placing|putting|dropping|setting)\s+B(?P<b>\d+){down}\s+(?:is|are)\s+(?:not\s+(?:allowed|permitted)|"
+        r"forbidden|prohibited|banned)",
+        add,
+    )
     # "objects are not allowed on ...", "no object is allowed on ...", "objects are forbidden on ..."
     banned = r"(?:not\s+(?:allowed|permitted)|forbidden|prohibited|banned)"
     m.sub(rf"\bB(?P<b>\d+)\s+(?:is|are)\s+{banned}\s+(?:from\s+)?{PREP}\s+P(?P<p>\d+){PERIOD}", add)
@@ -224,10 +234,15 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
         )
         return " "
 
-    # "objects may only be placed on the target regions / on E, F and G": nowhere else
+    # "objects may only be placed on the target regions / on E, F and G", "only ever place objects on the
+    # target regions": nowhere else
     target = r"(?:P(?P<p>\d+)|(?P<t>the\s+(?:target|goal)\s+(?:regions?|areas?|zones?)))"
     m.sub(
         rf"\bB(?P<b>\d+)\s+{may}\s+(?:only\s+be\s+{DROP}|be\s+{DROP}\s+only)\s+{PREP}\s+{target}{PERIOD}",
+        add_only,
+    )
+    m.sub(
+        rf"\b(?:(?:A\s+)?{may}\s+)?only\s+(?:ever\s+)?(?:place|put|drop|set)\s+B(?P<b>\d+)\s+{PREP}\s+{target}{PERIOD}",
         add_only,
     )
 

@@ -5,7 +5,7 @@ rewrites that map a writer's variants (synonyms, British forms, common typos) on
 
 VERB = (
     r"(?:transfer|move|put|place|bring|carry|take|deliver|relocate|shift|get|set|send|return|distribute|"
-    r"spread|position|drop|arrange)"
+    r"spread|position|drop|arrange|want|need)"
 )
 PREP = r"(?:to|into|onto|on|in|at|towards?|over\s+to|in\s+to|on\s+to|among|across|over)"
 MOD = (
@@ -27,6 +27,7 @@ NEG = (
     r"(?:cannot|can\s+not|can\s+t|must\s+not|mustn\s+t|should\s+not|shouldn\s+t|may\s+not|do\s+not|"
     r"does\s+not|don\s+t|doesn\s+t|(?:is|are)\s+not\s+allowed\s+to|never|not)"
 )
+SWAP = r"(?:exchang(?:e|ing)|swap(?:ping)?|switch(?:ing)?|interchang(?:e|ing)|trad(?:e|ing))"
 TOUCH = r"(?:touch|pick\s+up|pick|grasp|grab|handle|move|lift)"
 TOUCHED = (
     r"(?:touched|picked\s+up|picked|grasped|grabbed|handled|moved|lifted|touches|picks\s+up|grabs|moves)"
@@ -87,6 +88,10 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\b(?:earlier\s+than|prior\s+to|ahead\s+of|in\s+advance\s+of|sooner\s+than)\b", "before"),
     (r"\blater\s+than\b", "after"),
     (r"\buntil\s+after\b", "until"),
+    (r"\bit\s+is\s+(?:required|necessary|important|essential)\s+that\b", " "),
+    # a numbered step: the first, or one after the step before
+    (r"^\s*(?:step\s+(?:1|one)\s*:?|1\s*[):]|\(\s*1\s*\))\s*", "first "),
+    (r"^\s*(?:step\s+(?:[2-9]|two|three|four|five)\s*:?|[2-9]\s*[):]|\(\s*[2-9]\s*\))\s*", "then "),
     (r"\b(?:remember|be\s+sure|make\s+sure|do\s+not\s+forget|note|keep\s+in\s+mind)\s+(?:to|that)\b", " "),
     (r"\bprecedes?\b", "comes before"),
     (r"\bfollows?\b", "comes after"),
