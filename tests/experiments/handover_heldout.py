@@ -183,6 +183,9 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "Move the three blocks to the opposite side; note that red needs to come before blue.",
         "We want the three blocks on the opposite side, with the red block placed before the blue block.",
         "Put every block on the opposite side of the table. Place red earlier than blue.",
+        "Move all blocks from their current regions to the opposite ones. The red block goes before the "
+        "blue block.",
+        "Transfer the three blocks to the opposite side. Place the red block before placing the blue block.",
     ],
     2: [
         "Fill regions H, I and J with the three blocks; each region can have only one block.",
@@ -225,6 +228,7 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "in each region.",
         "The three blocks should end up in regions H, I and J, with no two blocks sharing a region.",
         "Put the three blocks into H, I and J. Do not put more than one block in a region.",
+        "Put one block in each of the regions H, I and J.",
     ],
     3: [
         "Move the three pillars to regions E, F and G, beside arm a and arm b. Objects may not be placed "
@@ -365,6 +369,10 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "has been touched. Then, when all that is done, put the yellow block back in region G.",
         "The three blocks go to the opposite regions; the arms may touch the blue block only after "
         "touching the red block. After all this, the yellow block goes back to region G.",
+        "Move the three blocks to the opposite regions. No arm may touch the blue block until the red "
+        "block has been touched. Put the yellow block back on region G at the end.",
+        "Move the three blocks to the opposite regions. No arm may touch the blue block until the red "
+        "block has been touched. Then put the yellow block back to region G.",
     ],
     5: [
         "Swap the red block and the blue block, making sure the red one gets placed before the blue one. "
@@ -430,6 +438,8 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "to switch places, and the red block must be placed before the blue block.",
         "Switch the positions of the red block and the blue block, red before blue, and put the yellow "
         "block on the other side at any time.",
+        "Exchange red and blue with each other, red first. Put the yellow block on the opposite side at "
+        "any time.",
     ],
     6: [
         "Put the three blocks separately on regions G, H and I; the red block is placed before the blue "
@@ -484,6 +494,7 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "before the blue block.",
         "Please place the red block before the blue block while placing the three blocks separately on "
         "regions G, H and I.",
+        "Place one block on each of regions G, H and I. Red before blue.",
     ],
     7: [
         "One by one, move the three blocks to region I, but nothing may be placed on region F, G and H "
@@ -657,6 +668,7 @@ NEAR_MISSES: dict[int, list[str]] = {
         "Each of the regions H, I and G should receive exactly one of the three blocks.",
         "Arrange the three blocks in regions H, I and G, one block in every region.",
         "The three blocks should end up in regions H, I and G, with no two blocks sharing a region.",
+        "Put one block in each of the regions H and I.",
     ],
     3: [
         "Move the three pillars to regions E, F and G.",
@@ -671,6 +683,7 @@ NEAR_MISSES: dict[int, list[str]] = {
         "may be placed anywhere except the target regions.",
         "Pillars to E, F and G. No object on region H.",
         "Move the three pillars to regions E, F and G. Placing any object on region H is not allowed.",
+        "Move the three pillars to E, F and H. No object may be placed on any other region.",
     ],
     4: [
         "Move the three blocks to the opposite regions. No arm may touch the red block until an arm has "

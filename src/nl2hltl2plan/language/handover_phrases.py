@@ -29,6 +29,7 @@ COLOURS = ("red", "blue", "yellow")
 _TOUCHED = r"(?:touched|picked|grasped|grabbed|handled|moved|lifted)"
 COUNTS = {"two": 2, "three": 3, "four": 4, "both": 2, "2": 2, "3": 3, "4": 4}
 NOUN = r"(?:block|cube|pillar|object|item|piece|one)"
+GROUP_NOUNS = r"(?:blocks|cubes|pillars|objects|items|pieces)"
 NOUNS = r"(?:blocks|cubes|pillars|objects|items|pieces|ones)"
 COLOUR = r"(?:red|blue|yellow)"
 LETTER = r"\b[e-j]\b"
@@ -191,7 +192,7 @@ def _mark_one_per_region(m: Marked) -> None:
         rf"(?:each|every)\s+{region}\b",
         rf"\b(?:with\s+)?{one}\s+(?:(?:is|being|may|can)\s+)?(?:allowed\s+|permitted\s+)?per\s+{region}\b",
         r"\bone\s+(?:each|apiece)\b",
-        rf"\b(?:with\s+)?{one}\s+per\s+{region}\b|\b(?:with\s+)?{one}\s+(?:per|in\s+each|on\s+each|for\s+each)\b",
+        rf"\b(?:with\s+)?{one}\s+per\s+{region}\b|\b(?:with\s+)?{one}\s+(?:per|in\s+each|on\s+each|for\s+each)\b(?!\s+of\b)",
     )
 
     patterns += (
@@ -260,7 +261,8 @@ def _mark_blocks(m: Marked, scene: Scene, previous: str) -> None:
         return _new_block(m, list(dict.fromkeys(names)), text)
 
     count = r"(?:(two|three|four|both|all|\d+)\s+)?"
-    group = rf"\b(?:all\s+(?:of\s+)?)?(?:the\s+)?{count}(?:of\s+)?(?:the\s+)?{NOUNS}\b"
+    # (not "ones": "the opposite ones" names places)
+    group = rf"\b(?:all\s+(?:of\s+)?)?(?:the\s+)?{count}(?:of\s+)?(?:the\s+)?{GROUP_NOUNS}\b"
 
     def all_blocks(match: re.Match[str]) -> str:
         count = match.group(1)
@@ -328,7 +330,7 @@ def _mark_places(m: Marked, scene: Scene, named_before: tuple[str, ...]) -> None
     _mark_target_complements(m)
     _mark_starts(m, scene)
     m.sub(
-        r"\b(?:the\s+)?(?:opposite(?:\s+(?:side|sides|end|regions?|areas?|zones?))?|(?:far|other|facing)\s+"
+        r"\b(?:the\s+)?(?:opposite(?:\s+(?:side|sides|end|regions?|areas?|zones?|ones?))?|(?:far|other|facing)\s+"
         r"(?:side|sides|end|regions?|areas?|zones?))(?:\s+(?:regions?|areas?))?"
         r"(?:\s+of\s+the\s+(?:table|workspace|work\s+area|board))?\b",
         lambda match: _new_place(m, Place("opposite", text=match.group(0).strip())),
@@ -469,7 +471,7 @@ def _mark_region_lists(m: Marked, scene: Scene) -> None:
     )
     bare = r"(?P<prep>\b(?:to|into|onto|on|in|at|among|over|between|than|except|besides|from|outside)\s+)"
     letters = LETTER + r"(?:" + link + LETTER + r")*(?:\s*\))?"
-    m.sub(rf"{lead}(?P<list>{letters})(?:\s+at\b)?", regions)
+    m.sub(rf"{lead}(?P<list>{letters})(?:\s+at\b(?=\s*,))?", regions)
     m.sub(rf"{bare}(?P<list>{letters})", regions)
 
 

@@ -229,6 +229,12 @@ def _goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
         rf"(?:^|(?<=,))\s*B(\d+){mods}\s*(?::\s*|,?\s*(?:to|into|onto)\s+)P(\d+){mods}(?:\s+first\b)?(?=\s*(?:$|,|\band\b))",
         lambda x: matched(x, 1),
     )
+    # "put one block in each of regions H, I and J": every block, one per region (as many as blocks)
+    m.sub(
+        rf"\b{VERB}\s+(?:one|a|a\s+single)\s+(?:block|object|cube|pillar|item)\s+(?:in|on|into|onto|to)\s+(?:each|every)\s+"
+        rf"(?:one\s+)?(?:of\s+)?P(\d+)(?P<b>){mods}",
+        lambda x: _fill(m, x, goal, scene.blocks),
+    )
     # the inverse syntax "fill regions H, I and J with the three blocks": as many places as blocks
     m.sub(rf"\b(?:fill|occupy|populate)\s+P(\d+)\s+with\s+B(\d+){mods}", lambda x: _fill(m, x, goal))
     m.sub(
@@ -272,7 +278,7 @@ def _read_exchanges(m: Marked, exchange: Callable[..., str]) -> None:
         lambda x: exchange(x, x.group(2)),
     )
     m.sub(
-        rf"(?:\bwhile\s+)?\b{SWAP}\s+(?:the\s+)?(?:positions?\s+|places?\s+|locations?\s+|spots?\s+)?(?:of\s+)?B(\d+)(?:\s+(?:s\s+)?(?:positions?|places?|locations?))?(?:\s+(?:around|round|over))?",
+        rf"(?:\bwhile\s+)?\b{SWAP}\s+(?:the\s+)?(?:positions?\s+|places?\s+|locations?\s+|spots?\s+)?(?:of\s+)?B(\d+)(?:\s+(?:s\s+)?(?:positions?|places?|locations?))?(?:\s+(?:around|round|over|with\s+each\s+other|with\s+one\s+another))?",
         exchange,
     )
     m.sub(
@@ -291,8 +297,13 @@ def _read_exchanges(m: Marked, exchange: Callable[..., str]) -> None:
     )
 
 
-def _fill(m: Marked, x: re.Match[str], goal: Callable[[list[str], Place, str, str], str]) -> str:
-    place, blocks = m.places[int(x.group(1))], blocks_of(m, x.group(2))
+def _fill(
+    m: Marked,
+    x: re.Match[str],
+    goal: Callable[[list[str], Place, str, str], str],
+    every: list[str] | None = None,
+) -> str:
+    place, blocks = m.places[int(x.group(1))], every or blocks_of(m, x.group(2))
     if place.kind != "regions" or len(set(place.regions)) != len(blocks):
         raise HTTError(f"'{x.group(0).strip()}': fill needs as many named regions as blocks")
     return goal(blocks, place, x.group(0).strip(), x.group(3))
@@ -309,6 +320,10 @@ def _markers(m: Marked, clauses: list[Clause]) -> None:
         lambda x: set_marker(x, "then"),
     )
     m.sub(rf"\b(?:then\s*,?\s*)?{AFTER_ALL}{LEAD}G(\d+)", lambda x: set_marker(x, "after_all"))
+    m.sub(  # "put the yellow block back on G at the end"
+        r"\bG(\d+)\s*,?\s*(?:at\s+the\s+(?:very\s+)?end|in\s+the\s+end|lastly|finally|last|as\s+the\s+(?:last|final)\s+step)\b",
+        lambda x: set_marker(x, "after_all"),
+    )
 
     m.sub(r"\bG(\d+)\s+first\b", lambda x: set_marker(x, "first"))
 

@@ -88,6 +88,12 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\b(?:earlier\s+than|prior\s+to|ahead\s+of|in\s+advance\s+of|sooner\s+than)\b", "before"),
     (r"\blater\s+than\b", "after"),
     (r"\buntil\s+after\b", "until"),
+    # where the blocks start adds nothing to where they go: "from their current regions"
+    (
+        r"\bfrom\s+(?:their|its|the)\s+(?:current|present|starting|initial|original)\s+"
+        r"(?:regions?|positions?|places?|locations?|spots?|sides?)\b",
+        " ",
+    ),
     (r"\bit\s+is\s+(?:required|necessary|important|essential)\s+that\b", " "),
     # a numbered step: the first, or one after the step before
     (r"^\s*(?:step\s+(?:1|one)\s*:?|1\s*[):]|\(\s*1\s*\))\s*", "first "),
