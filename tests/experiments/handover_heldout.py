@@ -186,6 +186,11 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "Move all blocks from their current regions to the opposite ones. The red block goes before the "
         "blue block.",
         "Transfer the three blocks to the opposite side. Place the red block before placing the blue block.",
+        "Transfer the three blocks to opposite side. Red block should be placed before blue block.",
+        "Please move three block into the opposite, the red block need to be placed before blue block.",
+        "Move three blocks to opposite regions, red block placed before the blue block.",
+        "Three blocks should be transfer to the opposite. Red is placed before blue.",
+        "Put the blocks into opposite side, and please place red block earlier than blue block.",
     ],
     2: [
         "Fill regions H, I and J with the three blocks; each region can have only one block.",
@@ -229,6 +234,12 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "The three blocks should end up in regions H, I and J, with no two blocks sharing a region.",
         "Put the three blocks into H, I and J. Do not put more than one block in a region.",
         "Put one block in each of the regions H, I and J.",
+        "Put three blocks into region H, region I and region J, each region only can be placed one object.",
+        "Please put the three blocks in the goal regions H, I, J; every goal region only can have one "
+        "object.",
+        "Place three blocks into three goal regions which are region H, I and J, each goal region can "
+        "only place one object.",
+        "Put the three block into region H, I and J, one region only one object.",
     ],
     3: [
         "Move the three pillars to regions E, F and G, beside arm a and arm b. Objects may not be placed "
@@ -295,6 +306,14 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "Please move the three pillars into the placement area on arm a and arm b's side, regions E, F "
         "and G, and never put an object on a non-target region.",
         "Move the three pillars to regions E, F and G, and only ever place objects on the target regions.",
+        "Please move three pillars to placement area region E, F, G which is at the side of arm a and arm "
+        "b. Each object can not be placed on other area except target region.",
+        "Move the three pillars into the placement area (region E, F and G) beside arm a and arm b. "
+        "Objects can not be put on the areas other than target regions.",
+        "Move three pillars to region E, F, G. Every object cannot be placed on area other than the "
+        "target region.",
+        "Move the three pillars to the area of arm a and arm b side, region E, F, G. Each object should "
+        "not be placed in other regions except the target regions.",
     ],
     4: [
         "Move the three blocks to the opposite regions, but the blue block may not be picked up by any "
@@ -373,6 +392,17 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "block has been touched. Put the yellow block back on region G at the end.",
         "Move the three blocks to the opposite regions. No arm may touch the blue block until the red "
         "block has been touched. Then put the yellow block back to region G.",
+        "Transfer three blocks into opposite regions. Robot arm can not touch blue block until any robot "
+        "arm touched red block. After all these, place yellow block back to region G where red block is "
+        "located now.",
+        "Move three blocks to the opposite regions. The robot arms can not touch the blue block before "
+        "any arm touched red block. After all of this, yellow block should be placed back to region G.",
+        "Transfer three blocks into opposite regions; the arm is not allowed to touch blue block until "
+        "the red block is touched by any arm. After these are all done, please place the yellow block "
+        "back to region G.",
+        "Transfer the three blocks into the opposite regions. Any robot arm can not touch the blue block "
+        "until some arm touched red block. After all of these, you should put yellow block back to region "
+        "G (where red block locates currently).",
     ],
     5: [
         "Swap the red block and the blue block, making sure the red one gets placed before the blue one. "
@@ -440,6 +470,14 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "block on the other side at any time.",
         "Exchange red and blue with each other, red first. Put the yellow block on the opposite side at "
         "any time.",
+        "Red block should be placed before blue block. Please exchange the positions of red block and "
+        "blue block. Yellow block can be put into the opposite side at any time.",
+        "Please exchange red block and blue block position, red block should be placed before blue block. "
+        "Put yellow block into the opposite side in any time.",
+        "Exchange the position of red and blue block, the red block is placed before the blue block. At "
+        "any time put the yellow block to opposite side.",
+        "The red block should be placed earlier than the blue block. Exchange the positions of the red "
+        "block and the blue block. Anytime put the yellow block into the opposite side.",
     ],
     6: [
         "Put the three blocks separately on regions G, H and I; the red block is placed before the blue "
@@ -495,6 +533,14 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "Please place the red block before the blue block while placing the three blocks separately on "
         "regions G, H and I.",
         "Place one block on each of regions G, H and I. Red before blue.",
+        "Red block should be placed before blue block. Please place three objects separately to region G, "
+        "H and I.",
+        "Please place three objects to region G, H, I separately, the red block should be placed before "
+        "blue block.",
+        "Place the three objects separately into region G, region H, region I. Red block is placed before "
+        "blue block.",
+        "The red block need to be placed before the blue block. Place three objects separately on the "
+        "region G, H and I.",
     ],
     7: [
         "One by one, move the three blocks to region I, but nothing may be placed on region F, G and H "
@@ -556,6 +602,14 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "F, G and H. The red block should be placed before the blue block.",
         "Place the three objects one after another to region I, red before blue, and make sure that "
         "nothing is placed on regions F, G and H during this period.",
+        "Red block should be placed before blue block. Please place three objects one after another to "
+        "region I, no object can be put on region F, G and H during this period.",
+        "Please place three objects to region I one after another, and the red block should be placed "
+        "before the blue block, during this period no objects can be placed on region F, G and H.",
+        "Place the three objects one by one to the region I. The red block should be placed before the "
+        "blue block. During this period, region F, G and H can not be placed any object.",
+        "Place three objects one after another to region I, red block before blue block, and no object "
+        "can be placed on the region F, G, H in this period.",
     ],
     8: [
         "First put the yellow block on region I, then on region G, and move the red and blue blocks to "
@@ -620,6 +674,14 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "blocks can be moved to any empty region at any time.",
         "Move the yellow block to region I, followed by region G. Move the red and blue blocks to any "
         "empty region at any time.",
+        "Please first place yellow block to region I, then place yellow block to region G, and move red "
+        "block and blue block to any empty region at any time.",
+        "First place the yellow block to region I and then to region G. Move red and blue block to any "
+        "empty region at any time.",
+        "Please place yellow block to region I first, after that place it to region G. Red and blue "
+        "blocks move to any empty regions at any time.",
+        "Place yellow block on region I, then on region G; red and blue blocks can be moved to any empty "
+        "region in any time.",
     ],
 }
 
@@ -657,6 +719,7 @@ NEAR_MISSES: dict[int, list[str]] = {
         "before the red block.",
         "Step 1: move the three blocks to the opposite side. Step 2: the blue block must be placed before "
         "the red block.",
+        "Three blocks should be transfer to the opposite. Blue is placed before red.",
     ],
     2: [
         "Put the three blocks into regions H, I and G, one per region.",
@@ -669,6 +732,7 @@ NEAR_MISSES: dict[int, list[str]] = {
         "Arrange the three blocks in regions H, I and G, one block in every region.",
         "The three blocks should end up in regions H, I and G, with no two blocks sharing a region.",
         "Put one block in each of the regions H and I.",
+        "Put the three block into region H, I and G, one region only one object.",
     ],
     3: [
         "Move the three pillars to regions E, F and G.",
@@ -711,6 +775,9 @@ NEAR_MISSES: dict[int, list[str]] = {
         "block. After all of these, place the yellow block back to region G.",
         "Step 1: put the yellow block back to region G. Step 2: move the three blocks to the opposite "
         "regions, and no arm may touch the blue block until an arm has touched the red block.",
+        "Transfer three blocks into opposite regions; the arm is not allowed to touch red block until the "
+        "blue block is touched by any arm. After these are all done, please place the yellow block back "
+        "to region G.",
     ],
     5: [
         "Exchange the positions of the red and yellow blocks; the red block before the blue block. Put "
@@ -744,6 +811,8 @@ NEAR_MISSES: dict[int, list[str]] = {
         "Place the three blocks one by one on region I with red before blue, and keep regions F and G "
         "empty while doing so.",
         "Three blocks to region I one after another, red before blue, nothing on F or G in the meantime.",
+        "Place the three objects one by one to the region I. The red block should be placed before the "
+        "blue block. During this period, region F and G can not be placed any object.",
     ],
     8: [
         "First place the yellow block on region G, then on region I. Move the red and blue blocks to any "
@@ -763,6 +832,8 @@ NEAR_MISSES: dict[int, list[str]] = {
         "Step 1: put the yellow block on region G. Step 2: put it on region I. Red and blue blocks: any "
         "empty region, at any time.",
         "Yellow block: region G first, then region I. Red and blue blocks: any empty region, at any time.",
+        "Please place yellow block to region I first, after that place it to region G. Red and blue "
+        "blocks move to region E at any time.",
     ],
 }
 

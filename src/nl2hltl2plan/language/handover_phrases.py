@@ -180,10 +180,12 @@ def _mark_one_per_region(m: Marked) -> None:
     one = (
         rf"(?:only\s+|just\s+|at\s+most\s+|no\s+more\s+than\s+|exactly\s+)?(?:one|a\s+single|1)(?:\s+{NOUN})?"
     )
-    hold = r"(?:placed|filled|holds?|takes?|gets?|receives?|contains?|ha(?:ve|s)|fits?|accepts?)"
+    hold = r"(?:placed|filled|holds?|takes?|gets?|receives?|contains?|ha(?:ve|s)|fits?|accepts?|place|put)"
     patterns: tuple[str, ...] = (
-        rf"\b(?:each|every|an?|any)\s+{region}\s+(?:can|may|should|must|will)?\s*(?:only\s+)?(?:be\s+)?{hold}\s+"
-        rf"(?:only\s+)?(?:with\s+)?{one}\b",
+        # "each goal region can only hold one object", "each region only can be placed one object", "one
+        # region only one object"
+        rf"\b(?:each|every|an?|any|one)\s+{region}\s+(?:only\s+)?(?:can|may|should|must|will)?\s*(?:only\s+)?"
+        rf"(?:be\s+)?(?:{hold}\s+)?(?:only\s+)?(?:with\s+)?{one}\b",
         rf"\bno\s+{region}\s+(?:can|may|should|must|will)?\s*(?:be\s+)?{hold}\s+(?:with\s+)?more\s+than\s+"
         rf"(?:one|a\s+single|1)(?:\s+{NOUN})?\b",
         rf"\b(?:with\s+|there\s+(?:can|may|should|must|will)\s+be\s+)?{one}\s+(?:(?:is|being|may|can|should|must|will)\s+)?"
@@ -286,6 +288,12 @@ def _mark_blocks(m: Marked, scene: Scene, previous: str) -> None:
         rf"\b({NEG}\s+(?:{VERB}|drop|leave|lay)|placing|putting|dropping|setting)\s+(?:(?:a|an|any)\s+{NOUN}|anything)\b",
         lambda match: match.group(1) + _new_block(m, scene.blocks, match.group(0)),
     )
+    # "three block" (a count with a singular noun), "be placed any object"
+    m.sub(rf"\b(?:the\s+)?(two|three|four|\d+)\s+{NOUN}\b", all_blocks)
+    m.sub(
+        rf"\b(be\s+(?:placed|put|dropped|set))\s+(?:any\s+{NOUN}|anything)\b",
+        lambda match: match.group(1) + _new_block(m, scene.blocks, match.group(0)),
+    )
     m.sub(each, all_blocks)
     m.sub(group, all_blocks)
     _mark_pronouns(m, previous)
@@ -342,7 +350,7 @@ def _mark_places(m: Marked, scene: Scene, named_before: tuple[str, ...]) -> None
     _mark_arm_sides(m, scene)
     _mark_region_lists(m, scene)
     # "the placement area (on the side of) P", "any region except P", "those regions": the place named
-    named = rf"\b(?:the\s+)?(?:{TARGET}\s+(?:regions?|areas?|zones?)|area|zone)"
+    named = rf"\b(?:the\s+)?(?:(?:two|three|four|\d+)\s+)?(?:{TARGET}\s+(?:regions?|areas?|zones?)|area|zone)"
     m.sub(rf"{named}\s*,?\s*(?:{APPOSITION}\s*)?,?\s*(?=P\d)", " ")
     m.sub(
         rf"\b(?:(?:the|an?|any|all)\s+)?(?:other\s+)?{PLACE_NOUN}\s+{OTHER_THAN}\s+P(\d+)|\boutside\s+(?:of\s+)?P(\d+)",
@@ -413,7 +421,8 @@ def _mark_starts(m: Marked, scene: Scene) -> None:
         return _new_place(m, Place("start_of", (scene.start_region(block),), block, match.group(0).strip()))
 
     where = (
-        r"(?:\b(?:to|in|into|on|onto|at)\s+)?\(?\s*\bwhere\s+B(\d+)\s+(?:is|was|lies|lay|sits|sat|stands|started|starts)\s*(?:currently\s+|now\s+|"
+        r"(?:\b(?:to|in|into|on|onto|at)\s+)?\(?\s*\bwhere\s+B(\d+)\s+(?:is|was|lies|lay|sits|sat|stands|started|starts|locates|stays|rests)\s*"
+        r"(?:currently\s+|now\s+|"
         r"initially\s+|at\s+first\s+)?(?:located|locating|lying|placed|sitting|standing|from)?\s*"
         r"(?:currently|now|initially|at\s+first|at\s+the\s+start)?\s*\)?"
     )
@@ -437,14 +446,14 @@ def _mark_arm_sides(m: Marked, scene: Scene) -> None:
         letters = re.findall(r"\b[a-d]\b", re.sub(r"side of|reach of", "", match.group(0)))
         regions = scene.arms_side(["abcd".index(x) for x in letters])
         kind: Literal["regions", "landmark"] = "regions" if "side" in match.group(0) else "landmark"
-        if match.group(0).startswith("on") and kind == "landmark":  # "on arm a" names no place
+        if re.match(r"on|of|at", match.group(0)) and kind == "landmark":  # "on arm a" names no place
             return match.group(0)
         return _new_place(m, Place(kind, regions, text=match.group(0).strip()))
 
     m.sub(
         r"\b(?:(?:the\s+)?sides?\s+of|next\s+to|beside|by|near|close\s+to|in\s+front\s+of|within\s+reach\s+of|"
-        r"reachable\s+by|on)\s+(?:the\s+)?arms?\s+[a-d](?:\s*(?:,|and|&)\s*(?:the\s+)?(?:arm\s+)?[a-d])*"
-        r"(?:\s+s\s+sides?)?\b",
+        r"reachable\s+by|on|of|at)\s+(?:the\s+)?arms?\s+[a-d](?:\s*(?:,|and|&)\s*(?:the\s+)?(?:arm\s+)?[a-d])*"
+        r"(?:(?:\s+s)?\s+sides?)?\b",
         arms,
     )
 

@@ -138,7 +138,8 @@ def read_touch_guards(m: Marked) -> list[tuple[str, str]]:
     # Y's touch, active ("an arm touched Y"), passive ("Y has been touched") or elliptic ("... before Y")
     other = (
         rf"(?:(?:A\s+)?(?:has\s+|have\s+|had\s+)?(?:already\s+)?(?:{TOUCHED}|{TOUCHING})\s+B(?P<y1>\d+)|B(?P<y2>\d+)\s+"
-        rf"(?:(?:has|have|had)\s+(?:already\s+)?been|is|was|gets|got)\s+(?:already\s+)?{TOUCHED}|B(?P<y3>\d+){end})"
+        rf"(?:(?:has|have|had)\s+(?:already\s+)?been|is|was|gets|got)\s+(?:already\s+)?{TOUCHED}(?:\s+by\s+A)?|"
+        rf"B(?P<y3>\d+){end})"
     )
     may = r"(?:may|can|should|must|will|shall|is\s+allowed\s+to|are\s+allowed\s+to)"
     no_touch = (
@@ -213,6 +214,8 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
     banned = r"(?:not\s+(?:allowed|permitted)|forbidden|prohibited|banned)"
     m.sub(rf"\bB(?P<b>\d+)\s+(?:is|are)\s+{banned}\s+(?:from\s+)?{PREP}\s+P(?P<p>\d+){PERIOD}", add)
     m.sub(rf"\bno\s+B(?P<b>\d+)\s+(?:is|are)\s+(?:allowed|permitted)\s+{PREP}\s+P(?P<p>\d+){PERIOD}", add)
+    # "region F, G and H can not be placed any object (during this period)"
+    m.sub(rf"\bP(?P<p>\d+)\s+(?:{may}\s+)?{NEG}\s+be\s+{DROP}\s+(?:with\s+)?B(?P<b>\d+){PERIOD}", add)
     # "regions F, G and H must stay empty (meanwhile)", "keep F, G and H free": nothing is put there
     must = r"(?:(?:must|should|will|shall|has\s+to|have\s+to|needs?\s+to)\s+)?"
     stay = rf"{must}(?:stay|remain|be\s+kept|be\s+left)"

@@ -15,7 +15,7 @@ MOD = (
 GERUND = r"(?:placing|putting|moving|transferring|bringing|carrying|delivering|taking|getting|shifting)"
 DONE = (
     r"(?:placed|put|moved|transferred|delivered|carried|brought|taken|shifted|relocated|returned|sent|"
-    r"arranged|positioned|done|handled|set|"
+    r"arranged|positioned|done|handled|set|transfer|move|place|bring|carry|"
     r"dropped|go|goes|going|end\s+up|ends\s+up|land|lands)"
 )
 # a passive goal's or order's modal: "should", "is to", "can", "has to" ... ("be" follows, optional)
@@ -36,7 +36,7 @@ TOUCHING = r"(?:touching|picking\s+up|picking|grabbing|grasping|handling|lifting
 DROP = r"(?:placed|put|dropped|set|left|laid)(?:\s+down)?"
 # "during this period": a prohibition's scope, the goals of its sentence (else all goals so far)
 PERIOD_WORDS = (
-    r"(?:during\s+(?:this|that|the\s+same)\s+(?:period|time)|in\s+the\s+meantime|meanwhile|"
+    r"(?:(?:during|in)\s+(?:this|that|the\s+same)\s+(?:period|time)|in\s+the\s+meantime|meanwhile|"
     r"while\s+doing\s+(?:so|this|that|it)|while\s+(?:this|that)\s+(?:happens|is\s+happening|goes\s+on)|"
     r"at\s+the\s+same\s+time|in\s+the\s+process|all\s+the\s+while|the\s+whole\s+time|throughout|until\s+then)"
 )
@@ -44,16 +44,16 @@ PERIOD = rf"(?:\s*,?\s*(?:{PERIOD_WORDS}|at\s+any\s+time|ever|at\s+all))?"
 EMPTY = r"(?:empty|free|clear|unoccupied|vacant)"
 DONE_STATE = r"(?:done|finished|complete|completed|over)"
 AFTER_ALL = (
-    r"(?:after\s+(?:all\s+(?:of\s+)?(?:these|this|that|the\s+above)|everything(?:\s+else)?)"
-    rf"(?:\s+(?:is|are|has\s+been|have\s+been)\s+{DONE_STATE})?|(?:once|when)\s+(?:all\s+(?:of\s+)?)?"
-    rf"(?:this|these|that|it|everything(?:\s+else)?|the\s+above)(?:\s+all)?\s+(?:is|are|has\s+been|have\s+been)\s+"
-    rf"(?:all\s+)?{DONE_STATE}|"
-    r"finally|lastly|last\s+of\s+all|at\s+the\s+(?:very\s+)?end|in\s+the\s+end|as\s+a\s+(?:final|last)\s+step)"
+    r"(?:(?:once|when|after)\s+(?:all\s+(?:of\s+)?)?(?:this|these|that|it|everything(?:\s+else)?|the\s+above)(?:\s+all)?\s+"
+    rf"(?:is|are|has\s+been|have\s+been)\s+(?:all\s+)?{DONE_STATE}|after\s+(?:all\s+(?:of\s+)?(?:these|this|that|"
+    r"the\s+above)|everything(?:\s+else)?)|finally|lastly|last\s+of\s+all|at\s+the\s+(?:very\s+)?end|in\s+the\s+end|"
+    r"as\s+a\s+(?:final|last)\s+step)"
 )
 THEN = r"(?:then|after\s+that|afterwards?|next|subsequently|later|and\s+then)"
 # a place named again in other words: "the placement area, which consists of regions E, F and G"
 APPOSITION = (
-    r"(?:\(|to|on|at|in|that\s+is|which\s+(?:is|are|consists\s+of|comprises|includes)|consisting\s+of|comprising|"
+    r"(?:\(|(?:which\s+(?:is|are)\s+|that\s+(?:is|are)\s+)?(?:to|on|at|in)|that\s+is|"
+    r"which\s+(?:is|are|consists\s+of|comprises|includes)|consisting\s+of|comprising|"
     r"made\s+up\s+of|namely|:)"
 )
 LEAD = r"\s*,?\s*(?:you\s+should\s+|please\s+|we\s+should\s+)?"
@@ -74,7 +74,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\b(?:i|we)\s+(?:want|need)\s+you\s+to\b", "please"),
     (r"\b(?:could|can|would|will)\s+you\s+(?:please\s+)?", "please "),
     (r"\blet\s*'?\s*s\b|\blet\s+us\b|\bgo\s+ahead\s+and\b", "please"),
-    (r"\banytime\b", "at any time"),
+    (r"\banytime\b|\bin\s+any\s+time\b", "at any time"),
     (
         r"\b(?:whenever\s+(?:you\s+(?:like|want|wish|please|can)|convenient|possible|it\s+suits\s+you)|"
         r"at\s+(?:any|whatever)\s+(?:point(?:\s+in\s+time)?|moment|stage)|any\s+time\s+you\s+(?:like|want))\b",
