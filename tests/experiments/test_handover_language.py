@@ -138,6 +138,12 @@ def test_the_opposite_side_is_resolved_against_where_the_blocks_start():
         # no order is guessed: "first" names no clause here
         ("Swap the red block and the blue block. Yellow first.", "first among which"),
         ("Move the three blocks to the opposite side. Red before blue. Blue before red.", "cycle"),
+        ("Move any block to region H.", "'any'"),  # one block, but which?
+        # a negated order says what may not happen, not what must: not read as "blue before red"
+        (
+            "Move the three blocks to the opposite side; the red block must not be placed before the blue block.",
+            "not",
+        ),
         # 'but' before a goal may be an exception; 'all blocks but red' is one
         ("Move three blocks to the opposite side, but the red block goes to region G.", "'but'"),
         ("Move all blocks but the red block to the opposite side.", "but"),

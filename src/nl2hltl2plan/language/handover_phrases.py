@@ -275,7 +275,7 @@ def _mark_blocks(m: Marked, scene: Scene, previous: str) -> None:
             )
         return _new_block(m, scene.blocks, match.group(0))
 
-    each = rf"\b(?:each|every|any|all)\s+(?:of\s+the\s+)?{count}(?:{NOUN}|{NOUNS})\b"
+    each = rf"\b(?:each|every|all)\s+(?:of\s+the\s+)?{count}(?:{NOUN}|{NOUNS})\b"  # not "any": one of them
     m.sub(colours, by_colour)
     m.sub(colours, by_colour)  # the phrases a repeated colour started
     # "no block may be placed ...": the prohibitions read "no B"
@@ -285,7 +285,7 @@ def _mark_blocks(m: Marked, scene: Scene, previous: str) -> None:
     m.sub(rf"\b(?:a|an|any)\s+{NOUN}\b{negation}", lambda match: _new_block(m, scene.blocks, match.group(0)))
     # "never place an object on ...", "do not put anything on ...": a generic object after a negated verb
     m.sub(
-        rf"\b({NEG}\s+(?:{VERB}|drop|leave|lay)|placing|putting|dropping|setting)\s+(?:(?:a|an|any)\s+{NOUN}|anything)\b",
+        rf"\b({NEG}\s+(?:{VERB}|drop|leave|lay)|placing|putting|dropping|setting)\s+(?:(?:a|an|any)\s+{NOUN}|any\s+{NOUNS}|anything)\b",
         lambda match: match.group(1) + _new_block(m, scene.blocks, match.group(0)),
     )
     # "three block" (a count with a singular noun), "be placed any object"
