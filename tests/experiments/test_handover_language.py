@@ -141,7 +141,8 @@ def test_the_opposite_side_is_resolved_against_where_the_blocks_start():
         ("Move any block to region H.", "'any'"),  # one block, but which?
         # a negated order says what may not happen, not what must: not read as "blue before red"
         (
-            "Move the three blocks to the opposite side; the red block must not be placed before the blue block.",
+            "Move the three blocks to the opposite side; the red block must not be placed before the blue "
+            "block.",
             "not",
         ),
         # 'but' before a goal may be an exception; 'all blocks but red' is one
