@@ -3,8 +3,10 @@
 `translate_handover(instruction, world)` reads an instruction about the blocks and regions of a
 `handover-square` / `handover-line` world and returns the same `LanguageResult` as the other
 worlds (HTT, base tasks, `before`, leaf formulas, the hierarchical spec) plus `constraints`: the
-guards and joint goals as text, sorted. Phrases are resolved against the instance's layout
-(`language.handover_phrases`). The rules, each general:
+guards and joint goals as text, sorted. Each sentence is normalised and its phrases are resolved
+against the instance's layout (`language.handover_phrases`, word tables in `handover_words`); its
+orders, touch guards and prohibitions are read first (`language.handover_rules`), then its goals. The
+rules, each general:
 
 - a goal clause "VERB BLOCKS [back] to PLACE" gives one leaf per block: `F(at(B,R1) | at(B,R2) ...)`
   (the opposite side: per block; any empty region: `away(B)`; where another block starts: `@B`);
@@ -13,9 +15,10 @@ guards and joint goals as text, sorted. Phrases are resolved against the instanc
 - a clause that moves several blocks to lasting places also asks for them there at once (a leaf
   `F(state_1 & state_2 ...)`), unless it says "at any time", "one after another" or its places hold
   fewer blocks than it moves;
-- "X should be placed / gets placed / comes before Y" orders X's goal before Y's; "first ..., then
-  ..." makes one node of the steps in order; "after all of these, ..." makes one node of everything
-  said so far and puts the new goal after it;
+- "X should be placed / gets placed / comes before Y" orders X's goal before Y's; "X first" puts X
+  before the other blocks of the latest clause that moves it with others; "first ..., then ..."
+  makes one node of the steps in order; "after all of these, ..." makes one node of everything said
+  so far and puts the new goal after it; orders in a cycle are refused;
 - "the arm cannot touch X until it touched Y" guards X's goal: `(!pick(X) U pick(Y)) & ...`;
 - "no block can be placed on R (during this period)" and "cannot be placed on the area other than the
   target region" guard every goal of the sentence (or, in a sentence of its own, every goal so far)
