@@ -191,6 +191,14 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "Move three blocks to opposite regions, red block placed before the blue block.",
         "Three blocks should be transfer to the opposite. Red is placed before blue.",
         "Put the blocks into opposite side, and please place red block earlier than blue block.",
+        "Relocate all three blocks to the regions on the opposite side of the workspace, ensuring that "
+        "the red block is placed prior to the blue block.",
+        "All three cubes are to be transferred to the opposite side; the placement of the red cube must "
+        "precede that of the blue cube.",
+        "Move the three blocks to the opposite side such that the red block is placed before the blue block.",
+        "Transfer the three blocks to the opposite regions. The red block has to be in place before the "
+        "blue block.",
+        "Transfer the blocks to the opposite side, in an order where red is placed before blue.",
     ],
     2: [
         "Fill regions H, I and J with the three blocks; each region can have only one block.",
@@ -240,6 +248,11 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "Place three blocks into three goal regions which are region H, I and J, each goal region can "
         "only place one object.",
         "Put the three block into region H, I and J, one region only one object.",
+        "Place the three blocks in target regions H, I and J, with at most one object per target region.",
+        "Transfer the three blocks to regions H, I and J. No two objects may occupy the same region.",
+        "Put the three blocks into the goal regions H, I and J, such that each goal region contains "
+        "exactly one object.",
+        "The three blocks must be distributed among regions H, I and J, one object per region.",
     ],
     3: [
         "Move the three pillars to regions E, F and G, beside arm a and arm b. Objects may not be placed "
@@ -314,6 +327,13 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "target region.",
         "Move the three pillars to the area of arm a and arm b side, region E, F, G. Each object should "
         "not be placed in other regions except the target regions.",
+        "Relocate the three pillars to the placement area adjacent to manipulators a and b (regions E, F "
+        "and G). No object may be placed in any region other than its target region.",
+        "Transfer the three pillars to regions E, F and G, which lie on the side of arms a and b. At no "
+        "time may an object be placed on a non-target region.",
+        "Move the three pillars to regions E, F and G. Under no circumstances should an object be put on "
+        "a region other than the target regions.",
+        "Move the three pillars to regions E, F and G, placing objects only on the target regions.",
     ],
     4: [
         "Move the three blocks to the opposite regions, but the blue block may not be picked up by any "
@@ -403,6 +423,15 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "Transfer the three blocks into the opposite regions. Any robot arm can not touch the blue block "
         "until some arm touched red block. After all of these, you should put yellow block back to region "
         "G (where red block locates currently).",
+        "Transfer the three blocks to the opposite regions, subject to the constraint that no manipulator "
+        "touches the blue block before the red block has been touched. Subsequently, return the yellow "
+        "block to region G.",
+        "Move the three blocks to the opposite regions. The blue block must remain untouched until the "
+        "red block has been touched. Once this is complete, place the yellow block back in region G.",
+        "Transfer the three blocks to the opposite regions. No gripper may grasp the blue block until the "
+        "red block has been grasped. Finally, move the yellow block back to region G.",
+        "Transfer the three blocks to the opposite regions; do not pick up the blue block until after the "
+        "red block has been picked up. When finished, put the yellow block back to region G.",
     ],
     5: [
         "Swap the red block and the blue block, making sure the red one gets placed before the blue one. "
@@ -478,6 +507,14 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "any time put the yellow block to opposite side.",
         "The red block should be placed earlier than the blue block. Exchange the positions of the red "
         "block and the blue block. Anytime put the yellow block into the opposite side.",
+        "Interchange the locations of the red and blue blocks, with the red block placed before the blue "
+        "block. The yellow block may be moved to the opposite side at any time.",
+        "Swap the red and blue blocks so that each occupies the other's original position; place red "
+        "before blue. At any time, move the yellow block to the opposite side.",
+        "Exchange the positions of the red block and the blue block, placing the red block first. "
+        "Independently, move the yellow block to the opposite side at any time.",
+        "The red and blue blocks must swap positions (red is placed before blue). The yellow block must "
+        "be transferred to the opposite side, at any time.",
     ],
     6: [
         "Put the three blocks separately on regions G, H and I; the red block is placed before the blue "
@@ -541,6 +578,12 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "blue block.",
         "The red block need to be placed before the blue block. Place three objects separately on the "
         "region G, H and I.",
+        "Place the three objects individually in regions G, H and I, placing the red object prior to the "
+        "blue object.",
+        "Distribute the three blocks separately over regions G, H and I; the red block must be placed "
+        "before the blue block.",
+        "Place the three blocks in regions G, H and I, one per region, red before blue.",
+        "Put the three objects separately onto regions G, H and I. The red one must precede the blue one.",
     ],
     7: [
         "One by one, move the three blocks to region I, but nothing may be placed on region F, G and H "
@@ -610,6 +653,14 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "blue block. During this period, region F, G and H can not be placed any object.",
         "Place three objects one after another to region I, red block before blue block, and no object "
         "can be placed on the region F, G, H in this period.",
+        "Place the three objects one after another onto region I, with the red block preceding the blue "
+        "block. Throughout this process, no object may be placed on regions F, G or H.",
+        "Sequentially place the three blocks on region I, red before blue; regions F, G and H must remain "
+        "unoccupied during this period.",
+        "Place the three blocks on region I one at a time, the red block before the blue block, while "
+        "ensuring that no object is placed on regions F, G and H.",
+        "Move the three objects to region I one after another, red block first and blue block after it. "
+        "During this period, nothing may be put on region F, G or H.",
     ],
     8: [
         "First put the yellow block on region I, then on region G, and move the red and blue blocks to "
@@ -682,6 +733,14 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "blocks move to any empty regions at any time.",
         "Place yellow block on region I, then on region G; red and blue blocks can be moved to any empty "
         "region in any time.",
+        "Place the yellow block on region I, and subsequently on region G. The red and blue blocks may be "
+        "moved to any empty region at any time.",
+        "First move the yellow block to region I, and then move it to region G. At any time, relocate the "
+        "red and blue blocks to any unoccupied region.",
+        "The yellow block goes first to region I and then to region G, while the red and blue blocks go "
+        "to any empty region at any time.",
+        "Place the yellow block on region I and afterwards on region G; independently, move the red and "
+        "blue blocks to any empty region at any time.",
     ],
 }
 
@@ -720,6 +779,9 @@ NEAR_MISSES: dict[int, list[str]] = {
         "Step 1: move the three blocks to the opposite side. Step 2: the blue block must be placed before "
         "the red block.",
         "Three blocks should be transfer to the opposite. Blue is placed before red.",
+        "All three cubes are to be transferred to the opposite side; the placement of the blue cube must "
+        "precede that of the red cube.",
+        "Transfer the blocks to the opposite side, in an order where blue is placed before red.",
     ],
     2: [
         "Put the three blocks into regions H, I and G, one per region.",
@@ -748,6 +810,8 @@ NEAR_MISSES: dict[int, list[str]] = {
         "Pillars to E, F and G. No object on region H.",
         "Move the three pillars to regions E, F and G. Placing any object on region H is not allowed.",
         "Move the three pillars to E, F and H. No object may be placed on any other region.",
+        "Transfer the three pillars to regions E, F and H, which lie on the side of arms a and b. At no "
+        "time may an object be placed on a non-target region.",
     ],
     4: [
         "Move the three blocks to the opposite regions. No arm may touch the red block until an arm has "
@@ -778,6 +842,8 @@ NEAR_MISSES: dict[int, list[str]] = {
         "Transfer three blocks into opposite regions; the arm is not allowed to touch red block until the "
         "blue block is touched by any arm. After these are all done, please place the yellow block back "
         "to region G.",
+        "Move the three blocks to the opposite regions. The red block must remain untouched until the "
+        "blue block has been touched. Once this is complete, place the yellow block back in region G.",
     ],
     5: [
         "Exchange the positions of the red and yellow blocks; the red block before the blue block. Put "
@@ -795,6 +861,8 @@ NEAR_MISSES: dict[int, list[str]] = {
         "opposite side.",
         "Please swap the red block with the yellow block, the red one being placed before the blue one, "
         "and at any time put the yellow block into the opposite side.",
+        "Swap the red and yellow blocks so that each occupies the other's original position; place red "
+        "before blue. At any time, move the yellow block to the opposite side.",
     ],
     6: [
         "Place the three blocks separately on regions G, H and J; the red block before the blue block.",
@@ -813,6 +881,8 @@ NEAR_MISSES: dict[int, list[str]] = {
         "Three blocks to region I one after another, red before blue, nothing on F or G in the meantime.",
         "Place the three objects one by one to the region I. The red block should be placed before the "
         "blue block. During this period, region F and G can not be placed any object.",
+        "Place the three objects one after another onto region I, with the blue block preceding the red "
+        "block. Throughout this process, no object may be placed on regions F, G or H.",
     ],
     8: [
         "First place the yellow block on region G, then on region I. Move the red and blue blocks to any "

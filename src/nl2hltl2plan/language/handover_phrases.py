@@ -38,7 +38,7 @@ PLACE_NOUN = r"(?:regions?|areas?|zones?|places?|spots?|positions?|cells?|sides?
 FILLER = frozenset(
     "please plan a an the solution to for you we should shall can could would will must kindly now "
     "also so it is are be that i want need make sure this task , ( ) : and however additionally moreover "
-    "furthermore".split()
+    "furthermore independently".split()
 )
 
 
@@ -162,7 +162,10 @@ def mark(sentence: str, scene: Scene, before: Marked | None = None) -> Marked:
 
 def _mark_connectives(m: Marked) -> None:
     """'making sure (that)', 'ensure that' introduce what follows and add nothing."""
-    m.sub(r"\b(?:making|make|be)\s+sure\s+(?:that\s+)?|\bensur(?:e|ing)\s+(?:that\s+)?", " ")
+    m.sub(
+        r"(?:\bwhile\s+)?\b(?:(?:making|make|be)\s+sure|ensur(?:e|ing))\s+(?:that\s+)?|\b(?:such|so)\s+that\b(?!\s+each\b)",
+        " ",
+    )
 
 
 def drop_but(m: Marked) -> None:
@@ -198,7 +201,8 @@ def _mark_one_per_region(m: Marked) -> None:
     )
 
     patterns += (
-        rf"\b(?:with\s+)?no\s+two\s+{NOUNS}\s+(?:(?:may|can|should|will)\s+)?(?:sharing|share)\s+(?:a\s+|the\s+same\s+)?{region}\b",
+        rf"\b(?:with\s+)?no\s+two\s+{NOUNS}\s+(?:(?:may|can|should|will)\s+)?(?:sharing|share|occupy|be\s+(?:in|on))\s+"
+        rf"(?:a\s+|the\s+same\s+)?{region}\b",
         rf"\b(?:do\s+not|never)\s+(?:put|place)\s+more\s+than\s+(?:one|a\s+single)(?:\s+{NOUN})?\s+(?:in|on|into|onto)\s+"
         rf"(?:a|any|each|the\s+same)\s+{region}\b",
     )
@@ -350,7 +354,8 @@ def _mark_places(m: Marked, scene: Scene, named_before: tuple[str, ...]) -> None
     _mark_arm_sides(m, scene)
     _mark_region_lists(m, scene)
     # "the placement area (on the side of) P", "any region except P", "those regions": the place named
-    named = rf"\b(?:the\s+)?(?:(?:two|three|four|\d+)\s+)?(?:{TARGET}\s+(?:regions?|areas?|zones?)|area|zone)"
+    count = r"(?:(?:two|three|four|\d+)\s+)?"
+    named = rf"\b(?:the\s+)?{count}(?:{TARGET}\s+(?:regions?|areas?|zones?)|areas?|zones?|regions)"
     m.sub(rf"{named}\s*,?\s*(?:{APPOSITION}\s*)?,?\s*(?=P\d)", " ")
     m.sub(
         rf"\b(?:(?:the|an?|any|all)\s+)?(?:other\s+)?{PLACE_NOUN}\s+{OTHER_THAN}\s+P(\d+)|\boutside\s+(?:of\s+)?P(\d+)",
@@ -452,7 +457,7 @@ def _mark_arm_sides(m: Marked, scene: Scene) -> None:
 
     m.sub(
         r"\b(?:(?:the\s+)?sides?\s+of|next\s+to|beside|by|near|close\s+to|in\s+front\s+of|within\s+reach\s+of|"
-        r"reachable\s+by|on|of|at)\s+(?:the\s+)?arms?\s+[a-d](?:\s*(?:,|and|&)\s*(?:the\s+)?(?:arm\s+)?[a-d])*"
+        r"reachable\s+by|adjacent\s+to|on|of|at)\s+(?:the\s+)?arms?\s+[a-d](?:\s*(?:,|and|&)\s*(?:the\s+)?(?:arm\s+)?[a-d])*"
         r"(?:(?:\s+s)?\s+sides?)?\b",
         arms,
     )

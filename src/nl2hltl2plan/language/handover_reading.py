@@ -246,7 +246,7 @@ def _goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
         lambda x: _fill(m, x, goal),
     )
     m.sub(
-        rf"(?:\bwith\s+)?\bB(\d+)\s+{MODAL}{DONE}{mods}\s+(?:back\s+)?"
+        rf"(?:\bwith\s+)?\bB(\d+)\s+{MODAL}{DONE}{mods}(?:\s+first)?\s+(?:back\s+)?"
         rf"{PREP}\s+P(\d+){mods}",
         lambda x: matched(x, 1),
     )
@@ -295,7 +295,9 @@ def _read_exchanges(m: Marked, exchange: Callable[..., str]) -> None:
     # "... so that each ends up where the other was": what an exchange is
     m.sub(
         r"(?<=G\d)\s*,?\s*so\s+that\s+each\s+(?:one\s+)?(?:ends\s+up|is|goes|lands|sits)\s+(?:where|in\s+the\s+place)\s+"
-        r"the\s+other\s+(?:one\s+)?(?:was|is|started|stood|had\s+been)\b",
+        r"the\s+other\s+(?:one\s+)?(?:was|is|started|stood|had\s+been)\b|(?<=G\d)\s*,?\s*so\s+that\s+each\s+(?:one\s+)?"
+        r"(?:occupies|takes|gets|ends\s+up\s+(?:in|on)|goes\s+to)\s+the\s+other\s+(?:one\s+)?s\s+"
+        r"(?:original\s+|initial\s+|starting\s+)?(?:position|place|spot|location|region)\b",
         " ",
     )
 
@@ -335,8 +337,9 @@ def _markers(m: Marked, clauses: list[Clause]) -> None:
         return f" G{match.group(1)} "
 
     m.sub(r"\b(?:at\s+any\s+time|any\s+time|in\s+any\s+order)\s*,?\s*G(\d+)", anytime)
-    # "meanwhile, move ...": a goal with no order to the others, as any goal without a marker
-    m.sub(rf"\b{PERIOD_WORDS}\s*,?\s*(?=G\d+|at\s+any\s+time)", " ")
+    # "meanwhile, move ...", "..., while the red block goes ...": a goal with no order to the others, as
+    # any goal without a marker
+    m.sub(rf"\b(?:{PERIOD_WORDS}|while)\s*,?\s*(?=G\d+|at\s+any\s+time)", " ")
     m.sub(r"(?:,\s*)?\band\s+(?=G\d+)", lambda _: " ")
 
 

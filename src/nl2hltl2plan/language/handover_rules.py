@@ -56,6 +56,13 @@ def read_orders(m: Marked) -> list[tuple[str, str]]:
         out.append((one_block(m, a, "an order"), one_block(m, b, "an order")))
         return " "
 
+    m.sub(  # "the placement of the red block must precede (come before) that of the blue block"
+        rf"\b(?:the\s+)?(?:placement|placing|delivery|transfer)\s+of\s+B(\d+)\s+{MODAL}(?:comes?\s+|happens?\s+|occurs?\s+)?"
+        rf"(before|after)\s+(?:that|the\s+(?:placement|placing|delivery|transfer))\s+of\s+B(\d+)",
+        lambda x: (
+            add_pair(x.group(1), x.group(3)) if x.group(2) == "before" else add_pair(x.group(3), x.group(1))
+        ),
+    )
     # the second block's goal, without its place: "then the blue block", "followed by the blue block"
     end = r"(?=\s*(?:$|,|\band\b|\)))"
     later = r"(?:after\s+B\d+|second|next|last|afterwards?)"
@@ -143,7 +150,7 @@ def read_touch_guards(m: Marked) -> list[tuple[str, str]]:
     )
     may = r"(?:may|can|should|must|will|shall|is\s+allowed\s+to|are\s+allowed\s+to)"
     no_touch = (
-        rf"(?:(?:\bA\s+)?{NEG}\s+{TOUCH}|\bno\s+A\s+{may}?\s*{TOUCH}|\b(?:never|not|without)\s+{TOUCHING})"
+        rf"(?:(?:\bA\s+)?{NEG}\s+{TOUCH}|\bno\s+A\s+(?:{may}\s+)?(?:{TOUCH}|{TOUCHED})|\b(?:never|not|without)\s+{TOUCHING})"
         r"\s+B(?P<x>\d+)"
     )
     not_touched = (
@@ -159,6 +166,7 @@ def read_touch_guards(m: Marked) -> list[tuple[str, str]]:
         rf"\b{until}\s+{other}\s*,?\s*{not_touched}",
         rf"\bleave\s+B(?P<x>\d+)\s+(?:alone|untouched|be)\s+{until}\s+{other}",
         rf"\b(?:keep|hold)\s+A\s+(?:off|away\s+from)\s+B(?P<x>\d+)\s+{until}\s+{other}",
+        rf"\bB(?P<x>\d+)\s+{MODAL}(?:remain|stay|be\s+left|left)\s+untouched\s+{until}\s+{other}",
         rf"\b{after}\s+{other}\s*,?\s*(?:only\s+then\s+)?{may}\s+(?:A\s+)?{TOUCH}\s+B(?P<x>\d+)",
         rf"\b{after}\s+{other}\s*,?\s*(?:only\s+then\s+)?{may}\s+B(?P<x>\d+)\s+be\s+{TOUCHED}(?:\s+by\s+A)?",
         rf"(?:\bA\s+)?{may}\s+(?:only\s+)?{TOUCH}\s+B(?P<x>\d+)\s+{after}\s+{other}",
@@ -247,6 +255,9 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
     m.sub(
         rf"\b(?:(?:A\s+)?{may}\s+)?only\s+(?:ever\s+)?(?:place|put|drop|set)\s+B(?P<b>\d+)\s+{PREP}\s+{target}{PERIOD}",
         add_only,
+    )
+    m.sub(
+        rf"\b(?:placing|putting|dropping|setting)\s+B(?P<b>\d+)\s+only\s+{PREP}\s+{target}{PERIOD}", add_only
     )
 
     return out

@@ -15,7 +15,7 @@ MOD = (
 GERUND = r"(?:placing|putting|moving|transferring|bringing|carrying|delivering|taking|getting|shifting)"
 DONE = (
     r"(?:placed|put|moved|transferred|delivered|carried|brought|taken|shifted|relocated|returned|sent|"
-    r"arranged|positioned|done|handled|set|transfer|move|place|bring|carry|"
+    r"arranged|positioned|distributed|spread|done|handled|set|transfer|move|place|bring|carry|"
     r"dropped|go|goes|going|end\s+up|ends\s+up|land|lands)"
 )
 # a passive goal's or order's modal: "should", "is to", "can", "has to" ... ("be" follows, optional)
@@ -38,22 +38,24 @@ DROP = r"(?:placed|put|dropped|set|left|laid)(?:\s+down)?"
 PERIOD_WORDS = (
     r"(?:(?:during|in)\s+(?:this|that|the\s+same)\s+(?:period|time)|in\s+the\s+meantime|meanwhile|"
     r"while\s+doing\s+(?:so|this|that|it)|while\s+(?:this|that)\s+(?:happens|is\s+happening|goes\s+on)|"
-    r"at\s+the\s+same\s+time|in\s+the\s+process|all\s+the\s+while|the\s+whole\s+time|throughout|until\s+then)"
+    r"at\s+the\s+same\s+time|in\s+the\s+process|all\s+the\s+while|the\s+whole\s+time|"
+    r"throughout(?:\s+(?:this|the|that)\s+(?:process|period|time))?|until\s+then)"
 )
 PERIOD = rf"(?:\s*,?\s*(?:{PERIOD_WORDS}|at\s+any\s+time|ever|at\s+all))?"
 EMPTY = r"(?:empty|free|clear|unoccupied|vacant)"
 DONE_STATE = r"(?:done|finished|complete|completed|over)"
 AFTER_ALL = (
     r"(?:(?:once|when|after)\s+(?:all\s+(?:of\s+)?)?(?:this|these|that|it|everything(?:\s+else)?|the\s+above)(?:\s+all)?\s+"
-    rf"(?:is|are|has\s+been|have\s+been)\s+(?:all\s+)?{DONE_STATE}|after\s+(?:all\s+(?:of\s+)?(?:these|this|that|"
+    rf"(?:is|are|has\s+been|have\s+been)\s+(?:all\s+)?{DONE_STATE}|(?:once|when)\s+{DONE_STATE}|"
+    r"after\s+(?:all\s+(?:of\s+)?(?:these|this|that|"
     r"the\s+above)|everything(?:\s+else)?)|finally|lastly|last\s+of\s+all|at\s+the\s+(?:very\s+)?end|in\s+the\s+end|"
     r"as\s+a\s+(?:final|last)\s+step)"
 )
 THEN = r"(?:then|after\s+that|afterwards?|next|subsequently|later|and\s+then)"
 # a place named again in other words: "the placement area, which consists of regions E, F and G"
 APPOSITION = (
-    r"(?:\(|(?:which\s+(?:is|are)\s+|that\s+(?:is|are)\s+)?(?:to|on|at|in)|that\s+is|"
-    r"which\s+(?:is|are|consists\s+of|comprises|includes)|consisting\s+of|comprising|"
+    r"(?:\(|(?:which\s+(?:is|are|lies?|sits?)\s+|that\s+(?:is|are|lies?)\s+)?(?:to|on|at|in)|that\s+is|"
+    r"which\s+(?:is|are|consists\s+of|comprises|includes|lies|lie)|consisting\s+of|comprising|"
     r"made\s+up\s+of|namely|:)"
 )
 LEAD = r"\s*,?\s*(?:you\s+should\s+|please\s+|we\s+should\s+)?"
@@ -88,6 +90,19 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\b(?:earlier\s+than|prior\s+to|ahead\s+of|in\s+advance\s+of|sooner\s+than)\b", "before"),
     (r"\blater\s+than\b", "after"),
     (r"\buntil\s+after\b", "until"),
+    (r"\b(?:manipulators|grippers|end\s+effectors|robotic\s+arms)\b", "arms"),
+    (r"\b(?:manipulator|gripper|end\s+effector|robotic\s+arm)\b", "arm"),
+    (r"\bbe\s+in\s+place\b", "be placed"),
+    (r"\bin\s+(?:an|the|such\s+an)\s+order\s+(?:where|in\s+which|that|such\s+that)\b", ","),
+    (r"\s*,?\s*\bsubject\s+to\s+the\s+(?:constraint|condition|rule|requirement)\s+that\b", ","),
+    # "under no circumstances should an object be put on R": an object should never be put on R
+    (
+        r"\b(?:under\s+no\s+circumstances|at\s+no\s+(?:time|point))\s+(should|may|can|must|shall|is|are)\s+"
+        r"(an?\s+\w+|any\s+\w+|objects|blocks|nothing|anything)\s+be\b",
+        r"\2 \1 never be",
+    ),
+    (r"\bpreceding\b", "before"),
+    (r"\b(?<!the\s)following\b", "after"),
     # where the blocks start adds nothing to where they go: "from their current regions"
     (
         r"\bfrom\s+(?:their|its|the)\s+(?:current|present|starting|initial|original)\s+"
