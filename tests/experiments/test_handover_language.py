@@ -6,6 +6,7 @@ from __future__ import annotations
 import json
 
 import pytest
+from handover_axes import near_misses, sample
 from handover_heldout import FIXING_VARIANTS, HELD_OUT, LEAD_HELD_OUT, NEAR_MISSES, SEEN_WHILE_FIXING
 from handover_rephrasings import REPHRASINGS
 
@@ -115,6 +116,21 @@ def test_near_misses_are_refused_or_give_another_spec(task_id, text):
         assert "\n" not in str(exc)
         return
     equal, _ = specs_equivalent(spec, TASKS[task_id].hierarchical())
+    assert not equal
+
+
+@pytest.mark.parametrize(("task_id", "text"), [(t, text) for t, texts in sample().items() for text in texts])
+def test_combinations_of_the_axes_give_the_same_specs(task_id, text):
+    """A fixed-seed sample of slot combinations (verb x group x "the opposite" x order sentence x ...)."""
+    equal, why = specs_equivalent(_spec(task_id, text), TASKS[task_id].hierarchical())
+    assert equal, why
+
+
+@pytest.mark.parametrize(
+    ("task_id", "text"), [(t, text) for t, texts in near_misses().items() for text in texts]
+)
+def test_combinations_with_one_meaning_changed_give_another_spec(task_id, text):
+    equal, _ = specs_equivalent(_spec(task_id, text), TASKS[task_id].hierarchical())
     assert not equal
 
 

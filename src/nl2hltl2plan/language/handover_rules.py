@@ -78,7 +78,7 @@ def read_orders(m: Marked) -> list[tuple[str, str]]:
         rf"(?:\s+(?:after\s+B(\d+)|second|next|last|afterwards?))?{end}",
         add_then,
     )
-    for word, flip in ((r"before", False), (r"after", True)):
+    for word, flip in ((r"before", False), (r"(?:after|once)", True)):
         m.sub(
             rf"\b(?:{VERB}|{GERUND})\s+B(\d+)\s+(?:first\s*,?\s*)?{word}\s+(?:you\s+(?:{VERB}\s+)?|{GERUND}\s+)?B(\d+){tail}",
             lambda x, f=flip: add(x, f),
