@@ -199,6 +199,14 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "Transfer the three blocks to the opposite regions. The red block has to be in place before the "
         "blue block.",
         "Transfer the blocks to the opposite side, in an order where red is placed before blue.",
+        "Transfer the three blocks into the opposite regions. Make the red block be placed before the "
+        "blue block.",
+        "Move three blocks into the opposite; place the red block before you place the blue one.",
+        "Please transfer three blocks to the opposite. Placing of the red block should happen before the "
+        "blue block.",
+        "Transfer three blocks into the opposite side, and the red block is to be placed ahead of the "
+        "blue block.",
+        "The red block should be put before the blue block. Transfer three blocks into the opposite.",
     ],
     2: [
         "Fill regions H, I and J with the three blocks; each region can have only one block.",
@@ -253,6 +261,13 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "Put the three blocks into the goal regions H, I and J, such that each goal region contains "
         "exactly one object.",
         "The three blocks must be distributed among regions H, I and J, one object per region.",
+        "Put the three blocks into the three goal regions, which are region H, region I and region J; "
+        "each goal region can only hold one object.",
+        "Place the three blocks at region H, region I and region J. Each goal region can be placed with "
+        "only one object.",
+        "Put the three blocks into three goal regions (region H, region I and region J). Each of the goal "
+        "regions can only contain one object.",
+        "Put three blocks in goal regions H, I and J, and each goal region can only take one of the objects.",
     ],
     3: [
         "Move the three pillars to regions E, F and G, beside arm a and arm b. Objects may not be placed "
@@ -334,6 +349,14 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "Move the three pillars to regions E, F and G. Under no circumstances should an object be put on "
         "a region other than the target regions.",
         "Move the three pillars to regions E, F and G, placing objects only on the target regions.",
+        "Please plan a solution that moves the three pillars to the placement area (regions E, F and G) "
+        "on the side of arm a and arm b. No object can be placed on an area other than the target region.",
+        "Move the three pillars to the placement area, region E, F and G, beside arm a and arm b. Each "
+        "object can't be placed on any area other than its target region.",
+        "Plan to move the three pillars into the placement area at the side of arm a and arm b, i.e. "
+        "regions E, F and G. Objects cannot be placed on the areas other than the target regions.",
+        "Move the three pillars to the area on the side of arms a and b (region E, F, G); every object "
+        "must not be placed on the area other than the target region.",
     ],
     4: [
         "Move the three blocks to the opposite regions, but the blue block may not be picked up by any "
@@ -432,6 +455,18 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "red block has been grasped. Finally, move the yellow block back to region G.",
         "Transfer the three blocks to the opposite regions; do not pick up the blue block until after the "
         "red block has been picked up. When finished, put the yellow block back to region G.",
+        "Transfer three blocks into the opposite regions. Robot arms cannot touch the blue block until "
+        "any robot arm has touched the red block. After all of that, place the yellow block back to "
+        "region G, where the red block currently is.",
+        "Move the three blocks into the opposite regions. The blue block cannot be touched by a robot arm "
+        "until the red block has been touched by any robot arm. After all of these are done, you should "
+        "put the yellow block back to region G.",
+        "Transfer three blocks to the opposite regions. A robot arm can't touch the blue block until one "
+        "of the robot arms has touched the red block. After all of these, return the yellow block back to "
+        "region G, where the red block is currently located.",
+        "Transfer three blocks into the opposite regions; the robot arms must not touch the blue block "
+        "until some robot arm has touched the red block; after all these, put the yellow block back to "
+        "region G.",
     ],
     5: [
         "Swap the red block and the blue block, making sure the red one gets placed before the blue one. "
@@ -515,6 +550,14 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "Independently, move the yellow block to the opposite side at any time.",
         "The red and blue blocks must swap positions (red is placed before blue). The yellow block must "
         "be transferred to the opposite side, at any time.",
+        "The red block must be placed before the blue block. Exchange the position of the red block and "
+        "the blue block. Put the yellow block into the opposite side at any time.",
+        "Please exchange the positions of the red block and the blue block, where the red block should be "
+        "placed before the blue block. The yellow block can go to the opposite side at any time.",
+        "Exchange the positions of the red and blue blocks, placing the red block before the blue block, "
+        "and at any time put the yellow block into the opposite side.",
+        "Red block should be placed before blue block. Please exchange red block's position and blue "
+        "block's position. At any time, put yellow block into the opposite.",
     ],
     6: [
         "Put the three blocks separately on regions G, H and I; the red block is placed before the blue "
@@ -584,6 +627,13 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "before the blue block.",
         "Place the three blocks in regions G, H and I, one per region, red before blue.",
         "Put the three objects separately onto regions G, H and I. The red one must precede the blue one.",
+        "The red block should be placed before the blue block. Please place the three objects separately "
+        "into region G, H and I.",
+        "Please place the three objects to region G, H and I separately. The red block should be placed "
+        "earlier than the blue block.",
+        "Please place three objects separately to regions G, H, I, and the red block should be placed "
+        "before the blue block.",
+        "Place the three objects separately to region G, H and I; red block before blue block.",
     ],
     7: [
         "One by one, move the three blocks to region I, but nothing may be placed on region F, G and H "
@@ -661,6 +711,14 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "ensuring that no object is placed on regions F, G and H.",
         "Move the three objects to region I one after another, red block first and blue block after it. "
         "During this period, nothing may be put on region F, G or H.",
+        "The red block should be placed before the blue block. Please place the three objects to region I "
+        "one after another; no object can be placed on region F, G or H during this period.",
+        "The red block should be placed before the blue block. Place the three objects one after another "
+        "to region I, and during this period, no objects may be placed on regions F, G and H.",
+        "Please place the three objects one after another to region I, the red block before the blue "
+        "block; no objects can be put on region F, G and H during this period.",
+        "Please place the three objects one after another into region I. The red block is placed before "
+        "the blue block. No object can be placed on region F, G and H in the meantime.",
     ],
     8: [
         "First put the yellow block on region I, then on region G, and move the red and blue blocks to "
@@ -741,6 +799,14 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "to any empty region at any time.",
         "Place the yellow block on region I and afterwards on region G; independently, move the red and "
         "blue blocks to any empty region at any time.",
+        "Please place the yellow block to region I first, and then place the yellow block to region G. "
+        "Move the red and blue blocks to any empty region at any time.",
+        "First place the yellow block to region I, then to region G, and move the red block and blue "
+        "block to any empty region at any time.",
+        "Please first put the yellow block on region I, then put the yellow block on region G; red and "
+        "blue blocks can be moved to any empty region at any time.",
+        "Please place the yellow block first to region I, then to region G, and at any time move red and "
+        "blue blocks to any empty region.",
     ],
 }
 
@@ -782,6 +848,8 @@ NEAR_MISSES: dict[int, list[str]] = {
         "All three cubes are to be transferred to the opposite side; the placement of the blue cube must "
         "precede that of the red cube.",
         "Transfer the blocks to the opposite side, in an order where blue is placed before red.",
+        "Please transfer three blocks to the opposite. Placing of the blue block should happen before the "
+        "red block.",
     ],
     2: [
         "Put the three blocks into regions H, I and G, one per region.",
@@ -795,6 +863,8 @@ NEAR_MISSES: dict[int, list[str]] = {
         "The three blocks should end up in regions H, I and G, with no two blocks sharing a region.",
         "Put one block in each of the regions H and I.",
         "Put the three block into region H, I and G, one region only one object.",
+        "Put the three blocks into three goal regions (region H, region I and region G). Each of the goal "
+        "regions can only contain one object.",
     ],
     3: [
         "Move the three pillars to regions E, F and G.",
@@ -844,6 +914,9 @@ NEAR_MISSES: dict[int, list[str]] = {
         "to region G.",
         "Move the three blocks to the opposite regions. The red block must remain untouched until the "
         "blue block has been touched. Once this is complete, place the yellow block back in region G.",
+        "Transfer three blocks to the opposite regions. A robot arm can't touch the red block until one "
+        "of the robot arms has touched the blue block. After all of these, return the yellow block back "
+        "to region G, where the red block is currently located.",
     ],
     5: [
         "Exchange the positions of the red and yellow blocks; the red block before the blue block. Put "
@@ -863,6 +936,10 @@ NEAR_MISSES: dict[int, list[str]] = {
         "and at any time put the yellow block into the opposite side.",
         "Swap the red and yellow blocks so that each occupies the other's original position; place red "
         "before blue. At any time, move the yellow block to the opposite side.",
+        "Please exchange the positions of the red block and the blue block, where the blue block should "
+        "be placed before the red block. The yellow block can go to the opposite side at any time.",
+        "Red block should be placed before blue block. Please exchange red block's position and yellow "
+        "block's position. At any time, put yellow block into the opposite.",
     ],
     6: [
         "Place the three blocks separately on regions G, H and J; the red block before the blue block.",

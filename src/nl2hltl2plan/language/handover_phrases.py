@@ -182,12 +182,13 @@ def _mark_one_per_region(m: Marked) -> None:
     region = r"(?:goal\s+|target\s+)?(?:region|area|zone|place|spot|cell)"
     one = (
         rf"(?:only\s+|just\s+|at\s+most\s+|no\s+more\s+than\s+|exactly\s+)?(?:one|a\s+single|1)(?:\s+{NOUN})?"
+        rf"(?:\s+of\s+(?:the\s+)?{NOUNS})?"
     )
     hold = r"(?:placed|filled|holds?|takes?|gets?|receives?|contains?|ha(?:ve|s)|fits?|accepts?|place|put)"
     patterns: tuple[str, ...] = (
         # "each goal region can only hold one object", "each region only can be placed one object", "one
         # region only one object"
-        rf"\b(?:each|every|an?|any|one)\s+{region}\s+(?:only\s+)?(?:can|may|should|must|will)?\s*(?:only\s+)?"
+        rf"\b(?:each|every|an?|any|one)\s+(?:of\s+the\s+)?{region}s?\s+(?:only\s+)?(?:can|may|should|must|will)?\s*(?:only\s+)?"
         rf"(?:be\s+)?(?:{hold}\s+)?(?:only\s+)?(?:with\s+)?{one}\b",
         rf"\bno\s+{region}\s+(?:can|may|should|must|will)?\s*(?:be\s+)?{hold}\s+(?:with\s+)?more\s+than\s+"
         rf"(?:one|a\s+single|1)(?:\s+{NOUN})?\b",
@@ -228,7 +229,8 @@ def _mark_arms(m: Marked) -> None:
         lambda _: " A ",
     )
     m.sub(
-        r"\b(?:any\s+(?:of\s+)?|an?\s+|each\s+|every\s+|some\s+|either\s+)?(?:the\s+)?(?:robot\s+)?(?:arms?|robots?)\b"
+        r"\b(?:(?:any|one|some|either|each)\s+of\s+|any\s+|an?\s+|each\s+|every\s+|some\s+|either\s+)?(?:the\s+)?"
+        r"(?:robot\s+)?(?:arms?|robots?)\b"
         r"(?!\s+[a-d]\b)",
         lambda _: " A ",
     )
@@ -426,7 +428,8 @@ def _mark_starts(m: Marked, scene: Scene) -> None:
         return _new_place(m, Place("start_of", (scene.start_region(block),), block, match.group(0).strip()))
 
     where = (
-        r"(?:\b(?:to|in|into|on|onto|at)\s+)?\(?\s*\bwhere\s+B(\d+)\s+(?:is|was|lies|lay|sits|sat|stands|started|starts|locates|stays|rests)\s*"
+        r"(?:\b(?:to|in|into|on|onto|at)\s+)?\(?\s*\bwhere\s+B(\d+)\s+(?:currently\s+|now\s+|initially\s+)?"
+        r"(?:is|was|lies|lay|sits|sat|stands|started|starts|locates|stays|rests)\s*"
         r"(?:currently\s+|now\s+|"
         r"initially\s+|at\s+first\s+)?(?:located|locating|lying|placed|sitting|standing|from)?\s*"
         r"(?:currently|now|initially|at\s+first|at\s+the\s+start)?\s*\)?"

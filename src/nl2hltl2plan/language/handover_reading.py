@@ -139,6 +139,7 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
     pending: list[Prohibition] = []  # prohibitions stated before any goal
     previous: Marked | None = None  # the sentence before ("it", "these regions" in the next one)
     steps = re.sub(r"(^|[.;!?]\s+)(\d)\.\s", r"\1\2) ", instruction)  # "1. Put ...": a numbered step
+    steps = re.sub(r"\b[iI]\.\s?[eE]\.", "that is", steps)  # not a sentence's end
     for sentence in (s for s in re.split(r"[.;!?]+(?:\s|$)", steps) if s.strip()):
         m = mark(sentence, scene, previous)
         previous = m
@@ -277,7 +278,8 @@ def _read_exchanges(m: Marked, exchange: Callable[..., str]) -> None:
     """'exchange the positions of X and Y', 'swap X with Y', 'X and Y should trade places', 'the positions
     of X and Y should be swapped' (and '..., so that each ends up where the other was')."""
     m.sub(  # "swap the red block with the blue block"
-        rf"\b{SWAP}\s+(?:the\s+)?(?:positions?\s+of\s+)?B(\d+)\s+with\s+B(\d+)",
+        rf"\b{SWAP}\s+(?:the\s+)?(?:positions?\s+of\s+)?B(\d+)(?:\s+(?:s\s+)?(?:positions?|places?|locations?))?\s+(?:with|and)\s+"
+        r"B(\d+)(?:\s+(?:s\s+)?(?:positions?|places?|locations?))?",
         lambda x: exchange(x, x.group(2)),
     )
     m.sub(

@@ -58,7 +58,7 @@ def read_orders(m: Marked) -> list[tuple[str, str]]:
 
     m.sub(  # "the placement of the red block must precede (come before) that of the blue block"
         rf"\b(?:the\s+)?(?:placement|placing|delivery|transfer)\s+of\s+B(\d+)\s+{MODAL}(?:comes?\s+|happens?\s+|occurs?\s+)?"
-        rf"(before|after)\s+(?:that|the\s+(?:placement|placing|delivery|transfer))\s+of\s+B(\d+)",
+        rf"(before|after)\s+(?:(?:that|the\s+(?:placement|placing|delivery|transfer))\s+of\s+)?B(\d+)",
         lambda x: (
             add_pair(x.group(1), x.group(3)) if x.group(2) == "before" else add_pair(x.group(3), x.group(1))
         ),
@@ -84,7 +84,7 @@ def read_orders(m: Marked) -> list[tuple[str, str]]:
             lambda x, f=flip: add(x, f),
         )
         m.sub(
-            rf"(?:\bwith\s+)?\bB(\d+)\s+{MODAL}{done}(?:only\s+)?{word}\s+B(\d+){tail}",
+            rf"(?:\b(?:with|where|in\s+which)\s+)?\bB(\d+)\s+{MODAL}{done}(?:only\s+)?{word}\s+B(\d+){tail}",
             lambda x, f=flip: add(x, f),
         )
     m.sub(

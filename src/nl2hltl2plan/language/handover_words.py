@@ -90,6 +90,10 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\b(?:earlier\s+than|prior\s+to|ahead\s+of|in\s+advance\s+of|sooner\s+than)\b", "before"),
     (r"\blater\s+than\b", "after"),
     (r"\buntil\s+after\b", "until"),
+    (
+        r"\b(?:plan|find|give|compute)\s+(?:a\s+)?(?:solution|plan)\s+(?:that|which)\s+(move|put|place|transfer|bring)s\b",
+        r"\1",
+    ),
     (r"\b(?:manipulators|grippers|end\s+effectors|robotic\s+arms)\b", "arms"),
     (r"\b(?:manipulator|gripper|end\s+effector|robotic\s+arm)\b", "arm"),
     (r"\bbe\s+in\s+place\b", "be placed"),
