@@ -1,11 +1,13 @@
 """Phrases of the four-arm handover instructions (paper Table III), read against the world's layout.
 
-A sentence is read in passes. Noun phrases first become placeholders: blocks (`B0`: "the three
-pillars", "red and blue blocks", "each object"), places (`P0`: "region H, I and J", "the opposite
-side", "any empty region", "the side of arm a and arm b", "where the red block is", "the area other
-than the target region") and arms (`A`: "the robot arm", "any of the arms"). Then the clause
-patterns of `language.handover_reading` consume placeholders and words. Whatever a pass leaves unread is a
-refusal naming the words: nothing is silently dropped.
+A sentence is read in passes. It is normalised first (lower case, typos mended, the variants of
+`handover_words.REWRITES` rewritten onto the forms read). Noun phrases then become placeholders:
+blocks (`B0`: "the three pillars", "red and blue blocks", "each object"), places (`P0`: "region H, I
+and J", "the opposite side", "any empty region", "the side of arm a and arm b", "where the red block
+is", "the area other than the target region") and arms (`A`: "the robot arm", "any of the arms").
+Then the rules of `language.handover_rules` and the clause patterns of `language.handover_reading`
+consume placeholders and words. Whatever a pass leaves unread is a refusal naming the words: nothing
+is silently dropped.
 
 Places resolve against the instance: "the opposite" is, per block, the labelled regions on the other
 arms' side from where the block starts (arms a, b against c, d); "the side of arm a and arm b" the
@@ -45,8 +47,9 @@ FILLER = frozenset(
 @dataclass(frozen=True)
 class Place:
     """A place phrase: labelled regions, per-block opposite side, any empty region, a block's start,
-    or the labelled regions other than a goal's targets (only in prohibitions); a landmark ("next to arm
-    a and arm b") only describes a place named beside it and must agree with it."""
+    or (only in prohibitions) the labelled regions other than a goal's targets or, when `regions` is
+    given, other than those; a landmark ("next to arm a and arm b") only describes a place named beside
+    it and must agree with it."""
 
     kind: Literal["regions", "opposite", "away", "start_of", "complement", "landmark"]
     regions: tuple[str, ...] = ()
@@ -198,10 +201,7 @@ def _mark_one_per_region(m: Marked) -> None:
         rf"(?:each|every)\s+{region}\b",
         rf"\b(?:with\s+)?{one}\s+(?:(?:is|being|may|can)\s+)?(?:allowed\s+|permitted\s+)?per\s+{region}\b",
         r"\bone\s+(?:each|apiece)\b",
-        rf"\b(?:with\s+)?{one}\s+per\s+{region}\b|\b(?:with\s+)?{one}\s+(?:per|in\s+each|on\s+each|for\s+each)\b(?!\s+of\b)",
-    )
-
-    patterns += (
+        rf"\b(?:with\s+)?{one}\s+(?:per|in\s+each|on\s+each|for\s+each)\b(?!\s+of\b)",
         rf"\b(?:with\s+)?no\s+two\s+{NOUNS}\s+(?:(?:may|can|should|will)\s+)?(?:sharing|share|occupy|be\s+(?:in|on))\s+"
         rf"(?:a\s+|the\s+same\s+)?{region}\b",
         rf"\b(?:do\s+not|never)\s+(?:put|place)\s+more\s+than\s+(?:one|a\s+single)(?:\s+{NOUN})?\s+(?:in|on|into|onto)\s+"
@@ -365,10 +365,10 @@ def _mark_places(m: Marked, scene: Scene, named_before: tuple[str, ...]) -> None
     )
 
     def other_than_these(match: re.Match[str]) -> str:  # the labelled regions but the ones just named
-        named = [p.regions for p in m.places if p.kind == "regions"] or [named_before]
-        if not named[-1]:
+        lists = [p.regions for p in m.places if p.kind == "regions"] or [named_before]
+        if not lists[-1]:
             return match.group(0)
-        return _new_place(m, Place("complement", named[-1], text=match.group(0).strip()))
+        return _new_place(m, Place("complement", lists[-1], text=match.group(0).strip()))
 
     m.sub(
         rf"\b(?:(?:the|any|all)\s+)?(?:other\s+)?{PLACE_NOUN}\s+{OTHER_THAN}\s+(?:these|those|them|the\s+ones\s+(?:named|above))\b",

@@ -138,9 +138,7 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
     notes: list[str] = []
     pending: list[Prohibition] = []  # prohibitions stated before any goal
     previous: Marked | None = None  # the sentence before ("it", "these regions" in the next one)
-    steps = re.sub(r"(^|[.;!?]\s+)(\d)\.\s", r"\1\2) ", instruction)  # "1. Put ...": a numbered step
-    steps = re.sub(r"\b[iI]\.\s?[eE]\.", "that is", steps)  # not a sentence's end
-    for sentence in (s for s in re.split(r"[.;!?]+(?:\s|$)", steps) if s.strip()):
+    for sentence in _sentences(instruction):
         m = mark(sentence, scene, previous)
         previous = m
         notes += m.notes
@@ -180,6 +178,13 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
     for x, y in orders:
         _order(root, _first_goal(goals, x), _first_goal(goals, y))
     return _result(world.name, instruction, root, goals, notes)
+
+
+def _sentences(instruction: str) -> list[str]:
+    """Split at '.', ';', '!' and '?', but not in 'i.e.' nor after a step's number ('1. Put ...')."""
+    text = re.sub(r"(^|[.;!?]\s+)(\d)\.\s", r"\1\2) ", instruction)
+    text = re.sub(r"\b[iI]\.\s?[eE]\.", "that is", text)
+    return [s for s in re.split(r"[.;!?]+(?:\s|$)", text) if s.strip()]
 
 
 # ----- clause patterns --------------------------------------------------------------------------------
