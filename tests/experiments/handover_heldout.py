@@ -207,6 +207,8 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "Transfer three blocks into the opposite side, and the red block is to be placed ahead of the "
         "blue block.",
         "The red block should be put before the blue block. Transfer three blocks into the opposite.",
+        "Move the three blocks to the opposite side. Do the red one before the blue one.",
+        "The blocks must be moved across to the opposite side, with red going before blue.",
     ],
     2: [
         "Fill regions H, I and J with the three blocks; each region can have only one block.",
@@ -268,6 +270,7 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "Put the three blocks into three goal regions (region H, region I and region J). Each of the goal "
         "regions can only contain one object.",
         "Put three blocks in goal regions H, I and J, and each goal region can only take one of the objects.",
+        "Put the blocks in the goal regions H, I and J; no region may have two blocks.",
     ],
     3: [
         "Move the three pillars to regions E, F and G, beside arm a and arm b. Objects may not be placed "
@@ -357,6 +360,7 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "regions E, F and G. Objects cannot be placed on the areas other than the target regions.",
         "Move the three pillars to the area on the side of arms a and b (region E, F, G); every object "
         "must not be placed on the area other than the target region.",
+        "Move the three pillars to regions E, F and G, and keep all other regions free of objects.",
     ],
     4: [
         "Move the three blocks to the opposite regions, but the blue block may not be picked up by any "
@@ -467,6 +471,8 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "Transfer three blocks into the opposite regions; the robot arms must not touch the blue block "
         "until some robot arm has touched the red block; after all these, put the yellow block back to "
         "region G.",
+        "Move the three blocks to the opposite regions; the red block must be touched before the blue "
+        "block. As the final step, put the yellow block back on region G.",
     ],
     5: [
         "Swap the red block and the blue block, making sure the red one gets placed before the blue one. "
@@ -558,6 +564,12 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "and at any time put the yellow block into the opposite side.",
         "Red block should be placed before blue block. Please exchange red block's position and blue "
         "block's position. At any time, put yellow block into the opposite.",
+        "Put the red block where the blue block is and the blue block where the red block is, red first. "
+        "The yellow block goes to the opposite side at any time.",
+        "Place the red block where the blue block started and the blue block where the red block started; "
+        "the red block before the blue block. At any time, move the yellow block to the opposite side.",
+        "Put the red block where the blue block is. Then put the blue block where the red block was. The "
+        "yellow block goes to the opposite side at any time.",
     ],
     6: [
         "Put the three blocks separately on regions G, H and I; the red block is placed before the blue "
@@ -719,6 +731,10 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "block; no objects can be put on region F, G and H during this period.",
         "Please place the three objects one after another into region I. The red block is placed before "
         "the blue block. No object can be placed on region F, G and H in the meantime.",
+        "Put the three blocks on region I one after another, red before blue; regions F, G and H must not "
+        "be used during this period.",
+        "Place the three blocks on region I one after another, the red block before the blue block, and "
+        "no object may be placed on any of regions F, G and H meanwhile.",
     ],
     8: [
         "First put the yellow block on region I, then on region G, and move the red and blue blocks to "
@@ -850,6 +866,7 @@ NEAR_MISSES: dict[int, list[str]] = {
         "Transfer the blocks to the opposite side, in an order where blue is placed before red.",
         "Please transfer three blocks to the opposite. Placing of the blue block should happen before the "
         "red block.",
+        "Move the three blocks to the opposite side. Do the blue one before the red one.",
     ],
     2: [
         "Put the three blocks into regions H, I and G, one per region.",
@@ -882,6 +899,7 @@ NEAR_MISSES: dict[int, list[str]] = {
         "Move the three pillars to E, F and H. No object may be placed on any other region.",
         "Transfer the three pillars to regions E, F and H, which lie on the side of arms a and b. At no "
         "time may an object be placed on a non-target region.",
+        "Move the three pillars to regions E, F and G, and keep region H free of objects.",
     ],
     4: [
         "Move the three blocks to the opposite regions. No arm may touch the red block until an arm has "
@@ -940,6 +958,12 @@ NEAR_MISSES: dict[int, list[str]] = {
         "be placed before the red block. The yellow block can go to the opposite side at any time.",
         "Red block should be placed before blue block. Please exchange red block's position and yellow "
         "block's position. At any time, put yellow block into the opposite.",
+        "Put the red block where the blue block is and the blue block where the yellow block is, red "
+        "first. The yellow block goes to the opposite side at any time.",
+        "Put the red block where the blue block is and the blue block where the red block is, blue first. "
+        "The yellow block goes to the opposite side at any time.",
+        "Put the blue block where the red block is. Then put the red block where the blue block was. The "
+        "yellow block goes to the opposite side at any time.",
     ],
     6: [
         "Place the three blocks separately on regions G, H and J; the red block before the blue block.",
@@ -960,6 +984,8 @@ NEAR_MISSES: dict[int, list[str]] = {
         "blue block. During this period, region F and G can not be placed any object.",
         "Place the three objects one after another onto region I, with the blue block preceding the red "
         "block. Throughout this process, no object may be placed on regions F, G or H.",
+        "Put the three blocks on region I one after another, red before blue; regions F and G must not be "
+        "used during this period.",
     ],
     8: [
         "First place the yellow block on region G, then on region I. Move the red and blue blocks to any "

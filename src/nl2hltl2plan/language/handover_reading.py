@@ -159,7 +159,7 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
                 _guard(scope, blocks, place, explicit, scene, text)
             else:
                 pending.append((blocks, place, explicit, text))
-        clauses += new
+        clauses = _crossed_exchanges(clauses + new, orders)
         for block in leaders:
             _lead(clauses, block)
     orders += [(c.leader, g.block) for c in clauses if c.leader for g in c.goals if g.block != c.leader]
@@ -383,6 +383,39 @@ def _guard(
             regions = [r for r in scene.layout.regions if r not in g.regions]
         for r in regions:
             g.drop_guard.update({f"drop({r})"} if every else {f"put({b},{r})" for b in blocks})
+
+
+def _crossed_exchanges(clauses: list[Clause], orders: list[tuple[str, str]]) -> list[Clause]:
+    """'put the red block where the blue block is and the blue block where the red block is' (also in
+    two sentences, '... then ...': red before blue) is the exchange of their positions."""
+    out = list(clauses)
+    for first in clauses:
+        g = first.goals[0]
+        if first not in out or len(first.goals) != 1 or g.place.kind != "start_of":
+            continue
+        if first.marker == "after_all":
+            continue
+        second = next(
+            (
+                c
+                for c in out[out.index(first) + 1 :]
+                if len(c.goals) == 1
+                and c.marker in ("", "then")
+                and c.goals[0].place.kind == "start_of"
+                and (c.goals[0].block, c.goals[0].place.block) == (g.place.block, g.block)
+            ),
+            None,
+        )
+        if second is None:
+            continue
+        h = second.goals[0]
+        if second.marker == "then":
+            orders.append((g.block, h.block))
+        g.regions = h.regions = ()  # where the other started: `@B`, as an exchange
+        merged = Clause([g, h], f"{first.text}; {second.text}", marker=first.marker, together=True)
+        out[out.index(first)] = merged
+        out.remove(second)
+    return out
 
 
 def _lead(clauses: list[Clause], block: str) -> None:

@@ -80,7 +80,7 @@ def read_orders(m: Marked) -> list[tuple[str, str]]:
     )
     for word, flip in ((r"before", False), (r"(?:after|once)", True)):
         m.sub(
-            rf"\b(?:{VERB}|{GERUND})\s+B(\d+)\s+(?:first\s*,?\s*)?{word}\s+(?:you\s+(?:{VERB}\s+)?|{GERUND}\s+)?B(\d+){tail}",
+            rf"\b(?:{VERB}|{GERUND}|do|handle)\s+B(\d+)\s+(?:first\s*,?\s*)?{word}\s+(?:you\s+(?:{VERB}\s+)?|{GERUND}\s+)?B(\d+){tail}",
             lambda x, f=flip: add(x, f),
         )
         m.sub(
@@ -196,6 +196,13 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
         out.append((blocks, None if explicit else place, explicit, match.group(0).strip()))
         return " "
 
+    def add_used(match: re.Match[str]) -> str:
+        place = m.places[int(match.group("p") or match.group("q"))]
+        if place.kind != "regions":
+            raise HTTError(f"cannot forbid '{place.text}': name the regions")
+        out.append(([], None, list(place.regions), match.group(0).strip()))
+        return " "
+
     down = rf"(?:\s+down)?\s+{PREP}\s+P(?P<p>\d+){PERIOD}"
     m.sub(
         rf"\b{PERIOD_WORDS}\s*,?\s*(?=no\s+B|nothing|B\d+\s+{MODAL}{NEG}|(?:A\s+)?{NEG}|keep|leave|P\d)", " "
@@ -227,8 +234,12 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
     # "regions F, G and H must stay empty (meanwhile)", "keep F, G and H free": nothing is put there
     must = r"(?:(?:must|should|will|shall|has\s+to|have\s+to|needs?\s+to)\s+)?"
     stay = rf"{must}(?:stay|remain|be\s+kept|be\s+left)"
-    m.sub(rf"\bP(?P<p>\d+)\s+{stay}\s+{EMPTY}{PERIOD}", add)
-    m.sub(rf"\b(?:keep|leave)\s+P(?P<p>\d+)\s+{EMPTY}{PERIOD}", add)
+    free = rf"{EMPTY}(?:\s+(?:of\s+)?B\d+)?"
+    m.sub(rf"\bP(?P<p>\d+)\s+{stay}\s+{free}{PERIOD}", add)
+    m.sub(rf"\b(?:keep|leave)\s+P(?P<p>\d+)\s+{free}{PERIOD}", add)
+    # "regions F, G and H must not be used (during this period)", "do not use F, G or H"
+    used = rf"\bP(?P<p>\d+)\s+(?:{may}\s+)?{NEG}\s+be\s+used{PERIOD}|\b{NEG}\s+use\s+P(?P<q>\d+){PERIOD}"
+    m.sub(used, add_used)
 
     def add_only(match: re.Match[str]) -> str:
         keep = m.places[int(match.group("p"))] if match.group("p") else None

@@ -49,7 +49,7 @@ AFTER_ALL = (
     rf"(?:is|are|has\s+been|have\s+been)\s+(?:all\s+)?{DONE_STATE}|(?:once|when)\s+{DONE_STATE}|"
     r"after\s+(?:all\s+(?:of\s+)?(?:these|this|that|"
     r"the\s+above)|everything(?:\s+else)?)|finally|lastly|last\s+of\s+all|at\s+the\s+(?:very\s+)?end|in\s+the\s+end|"
-    r"as\s+a\s+(?:final|last)\s+step)"
+    r"as\s+(?:a|the)\s+(?:final|last)\s+step)"
 )
 THEN = r"(?:then|after\s+that|afterwards?|next|subsequently|later|and\s+then)"
 # a place named again in other words: "the placement area, which consists of regions E, F and G"
@@ -90,6 +90,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\b(?:earlier\s+than|prior\s+to|ahead\s+of|in\s+advance\s+of|sooner\s+than)\b", "before"),
     (r"\blater\s+than\b", "after"),
     (r"\buntil\s+after\b", "until"),
+    (r"\b(?:any|either)\s+of\s+(?=(?:the\s+)?(?:regions?|areas?|zones?)\b)", ""),
     (
         r"\b(?:plan|find|give|compute)\s+(?:a\s+)?(?:solution|plan)\s+(?:that|which)\s+(move|put|place|transfer|bring)s\b",
         r"\1",
