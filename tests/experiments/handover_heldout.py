@@ -209,6 +209,10 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "The red block should be put before the blue block. Transfer three blocks into the opposite.",
         "Move the three blocks to the opposite side. Do the red one before the blue one.",
         "The blocks must be moved across to the opposite side, with red going before blue.",
+        "Move the three blocks over to the opposite side. The first block to be placed must be red, and "
+        "blue has to come after red.",
+        "Get all three blocks over to the opposite regions, and be sure to place red before blue.",
+        "Move each block to the opposite side; red should be placed sooner than blue.",
     ],
     2: [
         "Fill regions H, I and J with the three blocks; each region can have only one block.",
@@ -271,6 +275,8 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "regions can only contain one object.",
         "Put three blocks in goal regions H, I and J, and each goal region can only take one of the objects.",
         "Put the blocks in the goal regions H, I and J; no region may have two blocks.",
+        "Put the three blocks into regions H, I and J (one object per goal region).",
+        "Put the three blocks into regions H, I and J, and don't put two objects in the same region.",
     ],
     3: [
         "Move the three pillars to regions E, F and G, beside arm a and arm b. Objects may not be placed "
@@ -361,6 +367,8 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "Move the three pillars to the area on the side of arms a and b (region E, F, G); every object "
         "must not be placed on the area other than the target region.",
         "Move the three pillars to regions E, F and G, and keep all other regions free of objects.",
+        "Move the three pillars to regions E, F and G. No object may be set down on the remaining regions.",
+        "Move the three pillars to regions E, F and G; no other region may receive an object.",
     ],
     4: [
         "Move the three blocks to the opposite regions, but the blue block may not be picked up by any "
@@ -473,6 +481,10 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "region G.",
         "Move the three blocks to the opposite regions; the red block must be touched before the blue "
         "block. As the final step, put the yellow block back on region G.",
+        "Move the three blocks to the opposite regions. No arm may touch the blue block until the red "
+        "block has been touched. The last step is to put the yellow block back on region G.",
+        "Move the three blocks to the opposite regions, but leave the blue block untouched until the red "
+        "block has been touched. After that is done, put the yellow block back to region G.",
     ],
     5: [
         "Swap the red block and the blue block, making sure the red one gets placed before the blue one. "
@@ -570,6 +582,9 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "the red block before the blue block. At any time, move the yellow block to the opposite side.",
         "Put the red block where the blue block is. Then put the blue block where the red block was. The "
         "yellow block goes to the opposite side at any time.",
+        "Swap the red block and the blue block. The red block should be placed before the blue block. The "
+        "yellow block goes to the opposite side, at any moment.",
+        "Red and blue should swap positions, red first; yellow to the opposite side at any time.",
     ],
     6: [
         "Put the three blocks separately on regions G, H and I; the red block is placed before the blue "
@@ -735,6 +750,10 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "be used during this period.",
         "Place the three blocks on region I one after another, the red block before the blue block, and "
         "no object may be placed on any of regions F, G and H meanwhile.",
+        "Place the three blocks one after another on region I, red before blue. Nothing else may be put "
+        "on regions F, G or H during this period.",
+        "Place the three blocks one after another on region I, the red block before the blue block; no "
+        "other objects can be placed on regions F, G and H during this period.",
     ],
     8: [
         "First put the yellow block on region I, then on region G, and move the red and blue blocks to "
@@ -823,6 +842,10 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "blue blocks can be moved to any empty region at any time.",
         "Please place the yellow block first to region I, then to region G, and at any time move red and "
         "blue blocks to any empty region.",
+        "Take the yellow block to region I and from there to region G. Move the red and blue blocks to "
+        "any empty region at any time.",
+        "Put the yellow block on region I, after which put it on region G. The red and blue blocks can go "
+        "to any empty region at any time.",
     ],
 }
 
@@ -867,6 +890,8 @@ NEAR_MISSES: dict[int, list[str]] = {
         "Please transfer three blocks to the opposite. Placing of the blue block should happen before the "
         "red block.",
         "Move the three blocks to the opposite side. Do the blue one before the red one.",
+        "Move the three blocks over to the opposite side. The first block to be placed must be blue, and "
+        "red has to come after blue.",
     ],
     2: [
         "Put the three blocks into regions H, I and G, one per region.",
@@ -900,6 +925,7 @@ NEAR_MISSES: dict[int, list[str]] = {
         "Transfer the three pillars to regions E, F and H, which lie on the side of arms a and b. At no "
         "time may an object be placed on a non-target region.",
         "Move the three pillars to regions E, F and G, and keep region H free of objects.",
+        "Move the three pillars to regions E, F and G; no region other than H may receive an object.",
     ],
     4: [
         "Move the three blocks to the opposite regions. No arm may touch the red block until an arm has "
@@ -986,6 +1012,8 @@ NEAR_MISSES: dict[int, list[str]] = {
         "block. Throughout this process, no object may be placed on regions F, G or H.",
         "Put the three blocks on region I one after another, red before blue; regions F and G must not be "
         "used during this period.",
+        "Place the three blocks one after another on region I, the red block before the blue block; no "
+        "other objects can be placed on regions F and G during this period.",
     ],
     8: [
         "First place the yellow block on region G, then on region I. Move the red and blue blocks to any "
@@ -1007,6 +1035,8 @@ NEAR_MISSES: dict[int, list[str]] = {
         "Yellow block: region G first, then region I. Red and blue blocks: any empty region, at any time.",
         "Please place yellow block to region I first, after that place it to region G. Red and blue "
         "blocks move to region E at any time.",
+        "Take the yellow block to region G and from there to region I. Move the red and blue blocks to "
+        "any empty region at any time.",
     ],
 }
 

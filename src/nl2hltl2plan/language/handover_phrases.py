@@ -204,7 +204,8 @@ def _mark_one_per_region(m: Marked) -> None:
         rf"\b(?:with\s+)?{one}\s+(?:per|in\s+each|on\s+each|for\s+each)\b(?!\s+of\b)",
         rf"\b(?:with\s+)?no\s+two\s+{NOUNS}\s+(?:(?:may|can|should|will)\s+)?(?:sharing|share|occupy|be\s+(?:in|on))\s+"
         rf"(?:a\s+|the\s+same\s+)?{region}\b",
-        rf"\b(?:do\s+not|never)\s+(?:put|place)\s+more\s+than\s+(?:one|a\s+single)(?:\s+{NOUN})?\s+(?:in|on|into|onto)\s+"
+        rf"\b(?:do\s+not|never)\s+(?:put|place)\s+(?:more\s+than\s+(?:one|a\s+single)(?:\s+{NOUN})?|(?:two|2)\s+{NOUNS})\s+"
+        r"(?:in|on|into|onto)\s+"
         rf"(?:a|any|each|the\s+same)\s+{region}\b",
     )
 
@@ -392,7 +393,10 @@ OTHER_THAN = r"(?:other\s+than|except(?:\s+for)?|besides|apart\s+from|but|outsid
 def _mark_target_complements(m: Marked) -> None:
     """'an area other than the target region', 'anywhere else', 'any other region': in a prohibition,
     every labelled region but the goals' targets."""
-    non_target = rf"\b(?:an?\s+|any\s+)?non\s+{TARGET}\s+{PLACE_NOUN}\b"
+    non_target = (
+        rf"\b(?:an?\s+|any\s+)?non\s+{TARGET}\s+{PLACE_NOUN}\b|\b(?:the\s+|all\s+(?:the\s+)?|any\s+(?:of\s+the\s+)?)?"
+        rf"(?:remaining|rest\s+of\s+the)\s+{PLACE_NOUN}\b"
+    )
     targets = (
         rf"(?:the\s+|their\s+|its\s+|an?\s+|one\s+of\s+the\s+)?(?:{TARGET}\s+{PLACE_NOUN}|targets|goals)\b"
     )

@@ -209,6 +209,12 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
     )
     may = r"(?:can|may|should|must|will|shall|is\s+allowed\s+to|are\s+allowed\s+to)"
     m.sub(rf"\bno\s+B(?P<b>\d+)\s+(?:{may}\s+|is\s+|are\s+|gets\s+)?(?:ever\s+)?(?:be\s+)?{DROP}{down}", add)
+    # "no other region may receive an object": the regions named may not receive any
+    m.sub(
+        rf"\bno\s+P(?P<p>\d+)\s+(?:{may}\s+)?(?:receive|get|hold|take|contain)s?\s+(?:an?\s+|any\s+)?"
+        r"(?:(?:block|object|cube|pillar|item|piece)s?|anything)\b",
+        add,
+    )
     # verbless: "no object on any other region", "nothing on F, G or H in the meantime"
     m.sub(rf"\bno\s+B(?P<b>\d+)\s+(?:on|in|onto|into)\s+P(?P<p>\d+){PERIOD}", add)
     m.sub(rf"\bnothing\s+(?:on|in|onto|into)\s+P(?P<p>\d+){PERIOD}", add)

@@ -51,7 +51,10 @@ AFTER_ALL = (
     r"the\s+above)|everything(?:\s+else)?)|finally|lastly|last\s+of\s+all|at\s+the\s+(?:very\s+)?end|in\s+the\s+end|"
     r"as\s+(?:a|the)\s+(?:final|last)\s+step)"
 )
-THEN = r"(?:then|after\s+that|afterwards?|next|subsequently|later|and\s+then)"
+THEN = (
+    r"(?:then|after\s+that|afterwards?|next|subsequently|later|and\s+then|(?:and\s+)?from\s+there|"
+    r"after\s+which)"
+)
 # a place named again in other words: "the placement area, which consists of regions E, F and G"
 APPOSITION = (
     r"(?:\(|(?:which\s+(?:is|are|lies?|sits?)\s+|that\s+(?:is|are|lies?)\s+)?(?:to|on|at|in)|that\s+is|"
@@ -90,6 +93,16 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\b(?:earlier\s+than|prior\s+to|ahead\s+of|in\s+advance\s+of|sooner\s+than)\b", "before"),
     (r"\blater\s+than\b", "after"),
     (r"\buntil\s+after\b", "until"),
+    (r"\bnothing\s+else\b", "nothing"),
+    (r"\bno\s+other\s+(?=(?:blocks?|objects?|items?|cubes?|pillars?|pieces?)\b)", "no "),
+    (r"\bthe\s+(?:last|final)\s+step\s+is\s+to\b", "finally"),
+    (r"\bthe\s+first\s+step\s+is\s+to\b", "first"),
+    (r"\bthe\s+(?:next|second)\s+step\s+is\s+to\b", "then"),
+    (
+        r"\bthe\s+first\s+(?:block|object|one)\s+(?:to\s+be\s+placed|placed|to\s+go)\s+(?:must|should|has\s+to|will)\s+be\s+"
+        r"(?:the\s+)?(red|blue|yellow)(?:\s+(?:block|one))?",
+        r"\1 first",
+    ),
     (r"\b(?:any|either)\s+of\s+(?=(?:the\s+)?(?:regions?|areas?|zones?)\b)", ""),
     (
         r"\b(?:plan|find|give|compute)\s+(?:a\s+)?(?:solution|plan)\s+(?:that|which)\s+(move|put|place|transfer|bring)s\b",
