@@ -213,6 +213,9 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "blue has to come after red.",
         "Get all three blocks over to the opposite regions, and be sure to place red before blue.",
         "Move each block to the opposite side; red should be placed sooner than blue.",
+        "Move the three blocks from the side of arms a and b to the side of arms c and d. The red block "
+        "should be placed before the blue block.",
+        "Transfer the three blocks from regions E, F and G to the opposite regions; red before blue.",
     ],
     2: [
         "Fill regions H, I and J with the three blocks; each region can have only one block.",
@@ -585,6 +588,8 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "Swap the red block and the blue block. The red block should be placed before the blue block. The "
         "yellow block goes to the opposite side, at any moment.",
         "Red and blue should swap positions, red first; yellow to the opposite side at any time.",
+        "Move the red block to the blue block's position and the blue block to the red block's position, "
+        "red before blue. Move the yellow block to the opposite side at any time.",
     ],
     6: [
         "Put the three blocks separately on regions G, H and I; the red block is placed before the blue "
@@ -661,6 +666,7 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "Please place three objects separately to regions G, H, I, and the red block should be placed "
         "before the blue block.",
         "Place the three objects separately to region G, H and I; red block before blue block.",
+        "Place the three blocks on G, H and I, one on each. Red before blue.",
     ],
     7: [
         "One by one, move the three blocks to region I, but nothing may be placed on region F, G and H "
@@ -846,6 +852,8 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "any empty region at any time.",
         "Put the yellow block on region I, after which put it on region G. The red and blue blocks can go "
         "to any empty region at any time.",
+        "Move the yellow block to region I; after that, move it on to region G. Move the red and blue "
+        "blocks to any empty region at any time.",
     ],
 }
 
@@ -892,6 +900,9 @@ NEAR_MISSES: dict[int, list[str]] = {
         "Move the three blocks to the opposite side. Do the blue one before the red one.",
         "Move the three blocks over to the opposite side. The first block to be placed must be blue, and "
         "red has to come after blue.",
+        "Move the three blocks from the side of arms c and d to the side of arms a and b. The red block "
+        "should be placed before the blue block.",
+        "Transfer the three blocks from regions H, I and J to the opposite regions; red before blue.",
     ],
     2: [
         "Put the three blocks into regions H, I and G, one per region.",
@@ -990,6 +1001,8 @@ NEAR_MISSES: dict[int, list[str]] = {
         "The yellow block goes to the opposite side at any time.",
         "Put the blue block where the red block is. Then put the red block where the blue block was. The "
         "yellow block goes to the opposite side at any time.",
+        "Move the red block to the blue block's position and the blue block to the yellow block's "
+        "position, red before blue. Move the yellow block to the opposite side at any time.",
     ],
     6: [
         "Place the three blocks separately on regions G, H and J; the red block before the blue block.",

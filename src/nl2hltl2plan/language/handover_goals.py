@@ -109,6 +109,7 @@ def goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
         return goal(blocks_of(m, x.group(k)), place, text, x.group(k + 1) + x.group(k + 3))
 
     _read_exchanges(m, exchange)
+    _read_sources(m, scene)
     m.sub(
         rf"(?:\bwhile\s+)?\b(?:{VERB}|{GERUND})\s+B(\d+){mods}(?:\s+first)?\s+(?:(?:to\s+)?(?:be|end\s+up)\s+)?"
         rf"(?:back\s+)?{PREP}\s+P(\d+){mods}",
@@ -188,6 +189,19 @@ def _read_exchanges(m: Marked, exchange: Callable[..., str]) -> None:
         r"(?:original\s+|initial\s+|starting\s+)?(?:position|place|spot|location|region)\b",
         " ",
     )
+
+
+def _read_sources(m: Marked, scene: Scene) -> None:
+    """'move the blocks from the side of arm a and arm b to ...': where they start, which must be so."""
+
+    def check(match: re.Match[str]) -> str:
+        source = m.places[int(match.group(2))]
+        for block in blocks_of(m, match.group(1)):
+            if source.kind != "regions" or scene.start_region(block) not in source.regions:
+                raise HTTError(f"the {block.lower()} block does not start on '{source.text}'")
+        return f" B{match.group(1)} "
+
+    m.sub(r"\bB(\d+)\s+(?:away\s+)?from\s+P(\d+)", check)
 
 
 def _fill(

@@ -381,9 +381,10 @@ def _mark_places(m: Marked, scene: Scene, named_before: tuple[str, ...]) -> None
     )
     # a place named twice ("region G (where the red block is)", "area (E, F, G) to the side of arm a",
     # "next to arm a and arm b, that is region E, F and G"): both readings must agree
-    apposition = rf"P(\d+)\s*,?\s*{APPOSITION}?\s*,?\s*P(\d+)\s*\)?"
+    # ("from P to Q" names a source and a goal: not a place named twice)
+    apposition = rf"(?<!from)(?<=\S)(\s+)P(\d+)\s*,?\s*{APPOSITION}?\s*,?\s*P(\d+)\s*\)?"
     while re.search(apposition, m.text):
-        m.sub(apposition, lambda match: _merge(m, int(match.group(1)), int(match.group(2))))
+        m.sub(apposition, lambda match: match.group(1) + _merge(m, int(match.group(2)), int(match.group(3))))
 
 
 TARGET = r"(?:goal|target|placement|destination|assigned)"
@@ -424,8 +425,8 @@ def _complement_of(m: Marked, match: re.Match[str]) -> str:
 def _mark_starts(m: Marked, scene: Scene) -> None:
     """'where the red block is', 'the original position of the red block': the region it starts on."""
 
-    def start_of(match: re.Match[str]) -> str:
-        k = int(match.group(1))
+    def start_of(match: re.Match[str], group: int = 1) -> str:
+        k = int(match.group(group))
         if len(m.blocks[k]) != 1:
             return match.group(0)
         block = m.blocks[k][0]
@@ -444,11 +445,15 @@ def _mark_starts(m: Marked, scene: Scene) -> None:
         return match.group(0) if place == match.group(0) else " to " + place
 
     m.sub(where, where_of)
-    m.sub(
-        r"\b(?:the\s+)?(?:original\s+|initial\s+|starting\s+|start\s+)?(?:position|place|spot|location|cell)\s+of\s+"
-        r"B(\d+)\s*(?=\W|$)",
-        start_of,
-    )
+    start = r"(?:original\s+|initial\s+|starting\s+|start\s+)?(?:position|place|spot|location|cell|region)"
+    m.sub(rf"\b(?:the\s+)?{start}\s+of\s+B(\d+)\s*(?=\W|$)", start_of)
+
+    # "to the blue block's position" (the possessive may be read with the block)
+    def possessive(match: re.Match[str]) -> str:
+        place = start_of(match, 2)
+        return match.group(0) if place == match.group(0) else match.group(1) + place
+
+    m.sub(rf"\b((?:to|into|onto|on|in|at)\s+)B(\d+)\s+(?:s\s+)?{start}\b", possessive)
 
 
 def _mark_arm_sides(m: Marked, scene: Scene) -> None:
