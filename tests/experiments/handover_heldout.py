@@ -216,6 +216,11 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "Move the three blocks from the side of arms a and b to the side of arms c and d. The red block "
         "should be placed before the blue block.",
         "Transfer the three blocks from regions E, F and G to the opposite regions; red before blue.",
+        "Transfer all of the blocks into the opposite regions, and make sure the red block gets there "
+        "before the blue block does.",
+        "Move each of the three blocks to the side across from it. Red is to be placed before blue.",
+        "Please bring the three blocks over to the opposite side; however, the blue block can only be "
+        "placed after the red one.",
     ],
     2: [
         "Fill regions H, I and J with the three blocks; each region can have only one block.",
@@ -280,6 +285,10 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "Put the blocks in the goal regions H, I and J; no region may have two blocks.",
         "Put the three blocks into regions H, I and J (one object per goal region).",
         "Put the three blocks into regions H, I and J, and don't put two objects in the same region.",
+        "Put the three blocks in goal regions H, I and J; a goal region can take at most one object.",
+        "Move the three blocks into H, I and J, placing exactly one block in each region.",
+        "Please put the three blocks into the three goal regions H, I and J. Only one object fits in each "
+        "goal region.",
     ],
     3: [
         "Move the three pillars to regions E, F and G, beside arm a and arm b. Objects may not be placed "
@@ -372,6 +381,11 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "Move the three pillars to regions E, F and G, and keep all other regions free of objects.",
         "Move the three pillars to regions E, F and G. No object may be set down on the remaining regions.",
         "Move the three pillars to regions E, F and G; no other region may receive an object.",
+        "Move the three pillars into the placement area next to arm a and arm b, which is made up of "
+        "regions E, F and G. Do not put any object on the other areas.",
+        "Carry the three pillars to regions E, F and G on arm a and arm b's side, and make sure no object "
+        "is ever placed on an area that is not a target.",
+        "Move the three pillars to regions E, F and G. Objects are only allowed on the target regions.",
     ],
     4: [
         "Move the three blocks to the opposite regions, but the blue block may not be picked up by any "
@@ -488,6 +502,14 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "block has been touched. The last step is to put the yellow block back on region G.",
         "Move the three blocks to the opposite regions, but leave the blue block untouched until the red "
         "block has been touched. After that is done, put the yellow block back to region G.",
+        "Transfer the three blocks to the opposite regions. None of the arms may touch the blue block "
+        "before some arm has touched the red block. Once everything is done, move the yellow block back "
+        "to region G.",
+        "Move the three blocks into the opposite regions, with no arm touching the blue block until the "
+        "red block has been touched, and then, after all that, put the yellow block back to region G.",
+        "Transfer three blocks into the opposite regions. The blue block is off limits until an arm has "
+        "touched the red block. After all of these, place the yellow block back to region G, where the "
+        "red block is.",
     ],
     5: [
         "Swap the red block and the blue block, making sure the red one gets placed before the blue one. "
@@ -590,6 +612,12 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "Red and blue should swap positions, red first; yellow to the opposite side at any time.",
         "Move the red block to the blue block's position and the blue block to the red block's position, "
         "red before blue. Move the yellow block to the opposite side at any time.",
+        "Exchange where the red block and the blue block are, placing red before blue. At any time, move "
+        "the yellow block to the opposite side.",
+        "Swap the red block's position with the blue block's position; the red block should be placed "
+        "before the blue block. Put the yellow block on the opposite side at any time.",
+        "The red block should be placed before the blue block while the two exchange positions. The "
+        "yellow block may go to the opposite side at any time.",
     ],
     6: [
         "Put the three blocks separately on regions G, H and I; the red block is placed before the blue "
@@ -667,6 +695,10 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "before the blue block.",
         "Place the three objects separately to region G, H and I; red block before blue block.",
         "Place the three blocks on G, H and I, one on each. Red before blue.",
+        "Place the three objects separately in regions G, H and I, and the red object needs to be placed "
+        "before the blue object.",
+        "Red before blue: place the three blocks separately onto regions G, H and I.",
+        "Please put the three blocks into regions G, H and I separately, with red going down before blue.",
     ],
     7: [
         "One by one, move the three blocks to region I, but nothing may be placed on region F, G and H "
@@ -760,6 +792,12 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "on regions F, G or H during this period.",
         "Place the three blocks one after another on region I, the red block before the blue block; no "
         "other objects can be placed on regions F, G and H during this period.",
+        "The red block should be placed before the blue block. Place the three objects on region I one "
+        "after another, and keep regions F, G and H empty during this period.",
+        "Place the three blocks one by one on region I, red before blue, and throughout, nothing may be "
+        "placed on region F, G or H.",
+        "Move the three objects, one after another, to region I (red before blue). No objects can be "
+        "placed on regions F, G and H during this period.",
     ],
     8: [
         "First put the yellow block on region I, then on region G, and move the red and blue blocks to "
@@ -854,6 +892,12 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "to any empty region at any time.",
         "Move the yellow block to region I; after that, move it on to region G. Move the red and blue "
         "blocks to any empty region at any time.",
+        "Move the yellow block first to region I, then on to region G; the red and blue blocks may go to "
+        "any empty region at any time.",
+        "First put the yellow block on region I and afterwards on region G. Red and blue: move them to "
+        "any empty region at any time.",
+        "Put the yellow block on region I and then on region G, and at any time put the red and the blue "
+        "block on any empty region.",
     ],
 }
 
@@ -903,6 +947,9 @@ NEAR_MISSES: dict[int, list[str]] = {
         "Move the three blocks from the side of arms c and d to the side of arms a and b. The red block "
         "should be placed before the blue block.",
         "Transfer the three blocks from regions H, I and J to the opposite regions; red before blue.",
+        "Transfer all of the blocks into the opposite regions, and make sure the blue block gets there "
+        "before the red block does.",
+        "Move each of the three blocks to the side across from it. Blue is to be placed before red.",
     ],
     2: [
         "Put the three blocks into regions H, I and G, one per region.",
@@ -918,6 +965,7 @@ NEAR_MISSES: dict[int, list[str]] = {
         "Put the three block into region H, I and G, one region only one object.",
         "Put the three blocks into three goal regions (region H, region I and region G). Each of the goal "
         "regions can only contain one object.",
+        "Move the three blocks into H, I and G, placing exactly one block in each region.",
     ],
     3: [
         "Move the three pillars to regions E, F and G.",
@@ -937,6 +985,7 @@ NEAR_MISSES: dict[int, list[str]] = {
         "time may an object be placed on a non-target region.",
         "Move the three pillars to regions E, F and G, and keep region H free of objects.",
         "Move the three pillars to regions E, F and G; no region other than H may receive an object.",
+        "Move the three pillars to regions E, F and G. Objects are only allowed on regions E and F.",
     ],
     4: [
         "Move the three blocks to the opposite regions. No arm may touch the red block until an arm has "
@@ -972,6 +1021,11 @@ NEAR_MISSES: dict[int, list[str]] = {
         "Transfer three blocks to the opposite regions. A robot arm can't touch the red block until one "
         "of the robot arms has touched the blue block. After all of these, return the yellow block back "
         "to region G, where the red block is currently located.",
+        "Transfer three blocks into the opposite regions. The red block is off limits until an arm has "
+        "touched the blue block. After all of these, place the yellow block back to region G, where the "
+        "red block is.",
+        "Move the three blocks into the opposite regions, with no arm touching the red block until the "
+        "blue block has been touched, and then, after all that, put the yellow block back to region G.",
     ],
     5: [
         "Exchange the positions of the red and yellow blocks; the red block before the blue block. Put "
@@ -1003,6 +1057,10 @@ NEAR_MISSES: dict[int, list[str]] = {
         "yellow block goes to the opposite side at any time.",
         "Move the red block to the blue block's position and the blue block to the yellow block's "
         "position, red before blue. Move the yellow block to the opposite side at any time.",
+        "Exchange where the red block and the yellow block are, placing red before blue. At any time, "
+        "move the yellow block to the opposite side.",
+        "The blue block should be placed before the red block while the two exchange positions. The "
+        "yellow block may go to the opposite side at any time.",
     ],
     6: [
         "Place the three blocks separately on regions G, H and J; the red block before the blue block.",
@@ -1050,6 +1108,8 @@ NEAR_MISSES: dict[int, list[str]] = {
         "blocks move to region E at any time.",
         "Take the yellow block to region G and from there to region I. Move the red and blue blocks to "
         "any empty region at any time.",
+        "First put the yellow block on region I and afterwards on region G. Red and blue: move them to "
+        "region E at any time.",
     ],
 }
 

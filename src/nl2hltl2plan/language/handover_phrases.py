@@ -195,9 +195,10 @@ def _mark_one_per_region(m: Marked) -> None:
         rf"(?:be\s+)?(?:{hold}\s+)?(?:only\s+)?(?:with\s+)?{one}\b",
         rf"\bno\s+{region}\s+(?:can|may|should|must|will)?\s*(?:be\s+)?{hold}\s+(?:with\s+)?(?:more\s+than\s+"
         rf"(?:one|a\s+single|1)(?:\s+{NOUN})?|(?:two|2)\s+{NOUNS})\b",
-        rf"\b(?:with\s+|there\s+(?:can|may|should|must|will)\s+be\s+)?{one}\s+(?:(?:is|being|may|can|should|must|will)\s+)?"
+        rf"\b(?:with\s+|placing\s+|putting\s+|there\s+(?:can|may|should|must|will)\s+be\s+)?{one}\s+(?:(?:is|being|may|can|should|must|will)\s+)?"
         r"(?:be\s+)?(?:allowed\s+|permitted\s+)?"
-        rf"(?:(?:to\s+)?(?:occupy|go\s+(?:in|on|to|into)|sit\s+(?:in|on)|be\s+(?:placed\s+)?(?:in|on))\s+|(?:per|in|on|for|to)\s+)"
+        rf"(?:(?:to\s+)?(?:occupy|go\s+(?:in|on|to|into)|sit\s+(?:in|on)|be\s+(?:placed\s+)?(?:in|on)|fits?\s+(?:in|on|into))\s+|"
+        r"(?:per|in|on|for|to)\s+)"
         rf"(?:each|every)\s+{region}\b",
         rf"\b(?:with\s+)?{one}\s+(?:(?:is|being|may|can)\s+)?(?:allowed\s+|permitted\s+)?per\s+{region}\b",
         r"\bone\s+(?:each|apiece)\b",
@@ -331,7 +332,19 @@ def _mark_pronouns(m: Marked, previous: str) -> None:
         return match.group(1) + _new_block(m, list(dict.fromkeys(named)), match.group(2))
 
     m.text = re.sub(rf"\b({SWAP}\s+)(them|their)\b", pair, m.text)
+    # "while the two exchange positions": the two blocks named before
+    m.text = re.sub(
+        rf"\b()(the\s+two|both\s+of\s+them|the\s+pair)(?=\s+(?:should\s+|must\s+|will\s+)?{SWAP})",
+        pair,
+        m.text,
+    )
     m.text = re.sub(r"\b(?:it|them|they)\b", resolve, m.text)
+    # "red and blue: move them to any empty region": the heading is what "them" names
+    heading = re.match(r"\s*B(\d+)\s*:", m.text)
+    if heading and any(
+        m.blocks[int(k)] == m.blocks[int(heading.group(1))] for k in re.findall(r"\bB(\d+)\b", m.text)[1:]
+    ):
+        m.text = m.text[heading.end() :]
     singles = [m.blocks[int(k)] for k in re.findall(r"\bB(\d+)\b", m.text) if len(m.blocks[int(k)]) == 1]
     m.last_one = singles[-1][0] if singles else ""
 
@@ -399,7 +412,7 @@ def _mark_target_complements(m: Marked) -> None:
         rf"(?:remaining|rest\s+of\s+the)\s+{PLACE_NOUN}\b"
     )
     targets = (
-        rf"(?:the\s+|their\s+|its\s+|an?\s+|one\s+of\s+the\s+)?(?:{TARGET}\s+{PLACE_NOUN}|targets|goals)\b"
+        rf"(?:the\s+|their\s+|its\s+|an?\s+|one\s+of\s+the\s+)?(?:{TARGET}\s+{PLACE_NOUN}|targets?|goals?)\b"
     )
     complement = (
         rf"\b(?:the\s+|an?\s+)?(?:any\s+)?(?:other\s+)?(?:{PLACE_NOUN}|anywhere)\s+(?:{OTHER_THAN}|that\s+(?:is|are)\s+not)\s+"

@@ -44,8 +44,8 @@ def read_orders(m: Marked) -> list[tuple[str, str]]:
     """'X (should be placed) before Y', 'Y after X', 'place X first, then Y', 'X followed by Y', 'once X
     has been placed, Y may be placed', 'do not place Y until X has been placed': X's goal before Y's."""
     out: list[tuple[str, str]] = []
-    tail = rf"(?:\s+(?:is|has\s+been|gets|was|have\s+been|are)\s+{DONE})?"
-    done = rf"(?:(?:{DONE}|comes?|lands?|arrives?|goes)\s+)?(?:down\s+)?(?:first\s*,?\s*)?"
+    tail = rf"(?:\s+(?:is|has\s+been|gets|was|have\s+been|are)\s+{DONE}|\s+does)?"
+    done = rf"(?:(?:{DONE}|comes?|lands?|arrives?|goes|gets)\s+)?(?:down\s+|there\s+)?(?:first\s*,?\s*)?"
 
     def add(match: re.Match[str], flip: bool) -> str:
         a, b = one_block(m, match.group(1), "an order"), one_block(m, match.group(2), "an order")
@@ -150,7 +150,8 @@ def read_touch_guards(m: Marked) -> list[tuple[str, str]]:
     )
     may = r"(?:may|can|should|must|will|shall|is\s+allowed\s+to|are\s+allowed\s+to)"
     no_touch = (
-        rf"(?:(?:\bA\s+)?{NEG}\s+{TOUCH}|\bno\s+A\s+(?:{may}\s+)?(?:{TOUCH}|{TOUCHED})|\b(?:never|not|without)\s+{TOUCHING})"
+        rf"(?:(?:\bA\s+)?{NEG}\s+{TOUCH}|(?:\bwith\s+)?\bno\s+A\s+(?:{may}\s+)?(?:{TOUCH}|{TOUCHED}|{TOUCHING})|"
+        rf"\b(?:never|not|without)\s+{TOUCHING})"
         r"\s+B(?P<x>\d+)"
     )
     not_touched = (
@@ -166,6 +167,7 @@ def read_touch_guards(m: Marked) -> list[tuple[str, str]]:
         rf"\b{until}\s+{other}\s*,?\s*{not_touched}",
         rf"\bleave\s+B(?P<x>\d+)\s+(?:alone|untouched|be)\s+{until}\s+{other}",
         rf"\b(?:keep|hold)\s+A\s+(?:off|away\s+from)\s+B(?P<x>\d+)\s+{until}\s+{other}",
+        rf"\bB(?P<x>\d+)\s+(?:is|are|stays?|remains?)\s+off\s+limits\s+{until}\s+{other}",
         rf"\bB(?P<x>\d+)\s+{MODAL}(?:remain|stay|be\s+left|left)\s+untouched\s+{until}\s+{other}",
         rf"\b{after}\s+{other}\s*,?\s*(?:only\s+then\s+)?{may}\s+(?:A\s+)?{TOUCH}\s+B(?P<x>\d+)",
         rf"\b{after}\s+{other}\s*,?\s*(?:only\s+then\s+)?{may}\s+B(?P<x>\d+)\s+be\s+{TOUCHED}(?:\s+by\s+A)?",
@@ -269,6 +271,7 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
         rf"\bB(?P<b>\d+)\s+{may}\s+(?:only\s+be\s+{DROP}|be\s+{DROP}\s+only)\s+{PREP}\s+{target}{PERIOD}",
         add_only,
     )
+    m.sub(rf"\bB(?P<b>\d+)\s+(?:is|are)\s+only\s+(?:allowed|permitted)\s+{PREP}\s+{target}{PERIOD}", add_only)
     m.sub(
         rf"\b(?:(?:A\s+)?{may}\s+)?only\s+(?:ever\s+)?(?:place|put|drop|set)\s+B(?P<b>\d+)\s+{PREP}\s+{target}{PERIOD}",
         add_only,

@@ -57,7 +57,8 @@ THEN = (
 )
 # a place named again in other words: "the placement area, which consists of regions E, F and G"
 APPOSITION = (
-    r"(?:\(|(?:which\s+(?:is|are|lies?|sits?)\s+|that\s+(?:is|are|lies?)\s+)?(?:to|on|at|in)|that\s+is|"
+    r"(?:\(|which\s+(?:is|are)\s+made\s+up\s+of|(?:which\s+(?:is|are|lies?|sits?)\s+|that\s+(?:is|are|lies?)\s+)?"
+    r"(?:to|on|at|in)|that\s+is|"
     r"which\s+(?:is|are|consists\s+of|comprises|includes|lies|lie)|consisting\s+of|comprising|"
     r"made\s+up\s+of|namely|:)"
 )
@@ -141,8 +142,8 @@ REWRITES: tuple[tuple[str, str], ...] = (
     ),
     # "the regions across from where they are now": the opposite side
     (
-        r"\b(?:the\s+)?(?:regions?|areas?|side|zones?)\s+across\s+from\s+where\s+(?:they|it|the\s+blocks?)\s+"
-        r"(?:are|is|start|started|were|was|lie|sit)(?:\s+(?:now|currently|at\s+first))?\b",
+        r"\b(?:the\s+)?(?:regions?|areas?|side|zones?)\s+across\s+from\s+(?:where\s+(?:they|it|the\s+blocks?)\s+"
+        r"(?:are|is|start|started|were|was|lie|sit)(?:\s+(?:now|currently|at\s+first))?|it|them)\b",
         "the opposite side",
     ),
     # "put it on I before putting it on G": the steps in order
