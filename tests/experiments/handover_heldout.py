@@ -221,6 +221,9 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "Move each of the three blocks to the side across from it. Red is to be placed before blue.",
         "Please bring the three blocks over to the opposite side; however, the blue block can only be "
         "placed after the red one.",
+        "Transfer the three blocks into the opposite side. Place the red block before the blue block.",
+        "Move three blocks into the opposite regions, the red block placed earlier than the blue block.",
+        "Carry the three blocks to the opposite; the red block has to be placed ahead of the blue block.",
     ],
     2: [
         "Fill regions H, I and J with the three blocks; each region can have only one block.",
@@ -289,6 +292,12 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "Move the three blocks into H, I and J, placing exactly one block in each region.",
         "Please put the three blocks into the three goal regions H, I and J. Only one object fits in each "
         "goal region.",
+        "Put the three blocks in the three goal regions H, I and J; each goal region can be placed with "
+        "only one object.",
+        "Place the three blocks into goal region H, goal region I and goal region J; each goal region can "
+        "hold one object only.",
+        "Put the three blocks into three goal regions, namely region H, region I and region J; only one "
+        "object can be placed in each goal region.",
     ],
     3: [
         "Move the three pillars to regions E, F and G, beside arm a and arm b. Objects may not be placed "
@@ -386,6 +395,12 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "Carry the three pillars to regions E, F and G on arm a and arm b's side, and make sure no object "
         "is ever placed on an area that is not a target.",
         "Move the three pillars to regions E, F and G. Objects are only allowed on the target regions.",
+        "Plan a solution to move the three pillars to the placement area (region E, F, G) beside arm a "
+        "and arm b. Objects cannot be placed on areas other than the target regions.",
+        "Move the three pillars to the placement area of arm a and arm b, region E, F and G. No object "
+        "can be placed on any area other than the target region.",
+        "Move the three pillars to the placement area (regions E, F and G) at the side of arm a and arm "
+        "b; every object cannot be placed on other areas than the target region.",
     ],
     4: [
         "Move the three blocks to the opposite regions, but the blue block may not be picked up by any "
@@ -510,6 +525,15 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "Transfer three blocks into the opposite regions. The blue block is off limits until an arm has "
         "touched the red block. After all of these, place the yellow block back to region G, where the "
         "red block is.",
+        "Transfer three blocks into the opposite regions. The robot arm cannot touch the blue block until "
+        "any robot arm has touched the red block. After all of these, place the yellow block back on "
+        "region G, where the red block currently is.",
+        "Transfer the three blocks into the opposite regions. No robot arm can touch the blue block "
+        "before a robot arm touched the red block. When all of these are done, put the yellow block back "
+        "to region G.",
+        "Transfer three blocks into the opposite regions; the blue block may not be touched by the robot "
+        "arms until the red block has been touched. After all of these, you should put the yellow block "
+        "back to region G.",
     ],
     5: [
         "Swap the red block and the blue block, making sure the red one gets placed before the blue one. "
@@ -618,6 +642,12 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "before the blue block. Put the yellow block on the opposite side at any time.",
         "The red block should be placed before the blue block while the two exchange positions. The "
         "yellow block may go to the opposite side at any time.",
+        "Place the red block before the blue block. Exchange the positions of the red block and the blue "
+        "block. Put the yellow block into the opposite side at any time.",
+        "Exchange the position of the red block and the blue block, and the red block should be placed "
+        "before the blue one. The yellow block can be put into the opposite side at any time.",
+        "The red block should be placed before the blue block. Please swap the positions of the red block "
+        "and the blue block. At any time, put the yellow block to the opposite side.",
     ],
     6: [
         "Put the three blocks separately on regions G, H and I; the red block is placed before the blue "
@@ -699,6 +729,12 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "before the blue object.",
         "Red before blue: place the three blocks separately onto regions G, H and I.",
         "Please put the three blocks into regions G, H and I separately, with red going down before blue.",
+        "The red block should be placed before the blue block. Please place the three objects separately "
+        "on region G, H and I.",
+        "Place the three objects separately to region G, region H and region I; the red one should be "
+        "placed before the blue one.",
+        "Separately place the three objects into region G, H and I, and place the red block before the "
+        "blue block.",
     ],
     7: [
         "One by one, move the three blocks to region I, but nothing may be placed on region F, G and H "
@@ -798,6 +834,12 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "placed on region F, G or H.",
         "Move the three objects, one after another, to region I (red before blue). No objects can be "
         "placed on regions F, G and H during this period.",
+        "The red block should be placed before the blue block. Please place the three objects one after "
+        "another on region I; during this period no object can be placed on region F, G and H.",
+        "Please place the three objects to region I one by one, with the red block placed before the blue "
+        "block; no objects can be placed on region F, G and H during this period.",
+        "Place the three objects one after another to region I. The red block should be placed before the "
+        "blue block. No object can be placed on regions F, G and H in this period.",
     ],
     8: [
         "First put the yellow block on region I, then on region G, and move the red and blue blocks to "
@@ -898,6 +940,12 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "any empty region at any time.",
         "Put the yellow block on region I and then on region G, and at any time put the red and the blue "
         "block on any empty region.",
+        "Please place the yellow block on region I first, then on region G, and move the red and blue "
+        "blocks to any empty region at any time.",
+        "First place the yellow block to region I, then place it to region G; move the red and blue "
+        "blocks to any empty regions at any time.",
+        "Please first put the yellow block to region I and then to region G, and put the red block and "
+        "blue block to any empty region at any time.",
     ],
 }
 
@@ -966,6 +1014,8 @@ NEAR_MISSES: dict[int, list[str]] = {
         "Put the three blocks into three goal regions (region H, region I and region G). Each of the goal "
         "regions can only contain one object.",
         "Move the three blocks into H, I and G, placing exactly one block in each region.",
+        "Place the three blocks into goal region H, goal region I and goal region G; each goal region can "
+        "hold one object only.",
     ],
     3: [
         "Move the three pillars to regions E, F and G.",
@@ -986,6 +1036,10 @@ NEAR_MISSES: dict[int, list[str]] = {
         "Move the three pillars to regions E, F and G, and keep region H free of objects.",
         "Move the three pillars to regions E, F and G; no region other than H may receive an object.",
         "Move the three pillars to regions E, F and G. Objects are only allowed on regions E and F.",
+        "Move the three pillars to the placement area of arm c and arm d, region H, I and J. No object "
+        "can be placed on any area other than the target region.",
+        "Move the three pillars to the placement area (regions E, F and G) at the side of arm a and arm "
+        "b; every object cannot be placed on other areas than regions E and F.",
     ],
     4: [
         "Move the three blocks to the opposite regions. No arm may touch the red block until an arm has "

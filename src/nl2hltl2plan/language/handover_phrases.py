@@ -185,7 +185,7 @@ def _mark_one_per_region(m: Marked) -> None:
     region = r"(?:goal\s+|target\s+)?(?:region|area|zone|place|spot|cell)"
     one = (
         rf"(?:only\s+|just\s+|at\s+most\s+|no\s+more\s+than\s+|exactly\s+)?(?:one|a\s+single|1)(?:\s+{NOUN})?"
-        rf"(?:\s+of\s+(?:the\s+)?{NOUNS})?"
+        rf"(?:\s+of\s+(?:the\s+)?{NOUNS})?(?:\s+only)?"
     )
     hold = r"(?:placed|filled|holds?|takes?|gets?|receives?|contains?|ha(?:ve|s)|fits?|accepts?|place|put)"
     patterns: tuple[str, ...] = (
@@ -416,7 +416,8 @@ def _mark_target_complements(m: Marked) -> None:
     )
     complement = (
         rf"\b(?:the\s+|an?\s+)?(?:any\s+)?(?:other\s+)?(?:{PLACE_NOUN}|anywhere)\s+(?:{OTHER_THAN}|that\s+(?:is|are)\s+not)\s+"
-        rf"{targets}|\boutside\s+(?:of\s+)?{targets}|\b(?:any|all)\s+other\s+{PLACE_NOUN}\b|{non_target}"
+        rf"{targets}|\boutside\s+(?:of\s+)?{targets}|\b(?:any|all)\s+other\s+{PLACE_NOUN}\b|{non_target}|"
+        rf"\b(?:any\s+)?other\s+{PLACE_NOUN}\s+than\s+{targets}"
     )
 
     def other_than(match: re.Match[str]) -> str:  # "anywhere other than ...", "elsewhere": with its "on"
@@ -475,13 +476,17 @@ def _mark_arm_sides(m: Marked, scene: Scene) -> None:
     def arms(match: re.Match[str]) -> str:
         letters = re.findall(r"\b[a-d]\b", re.sub(r"side of|reach of", "", match.group(0)))
         regions = scene.arms_side(["abcd".index(x) for x in letters])
-        kind: Literal["regions", "landmark"] = "regions" if "side" in match.group(0) else "landmark"
+        side = (
+            "side" in match.group(0) or re.search(r"(?:area|region|zone)s?\s+of", match.group(0)) is not None
+        )
+        kind: Literal["regions", "landmark"] = "regions" if side else "landmark"
         if re.match(r"on|of|at", match.group(0)) and kind == "landmark":  # "on arm a" names no place
             return match.group(0)
         return _new_place(m, Place(kind, regions, text=match.group(0).strip()))
 
     m.sub(
-        r"\b(?:(?:the\s+)?sides?\s+of|next\s+to|beside|by|near|close\s+to|in\s+front\s+of|within\s+reach\s+of|"
+        r"\b(?:(?:the\s+)?sides?\s+of|(?:the\s+)?(?:goal\s+|target\s+|placement\s+)?(?:area|region|zone)s?\s+of|"
+        r"next\s+to|beside|by|near|close\s+to|in\s+front\s+of|within\s+reach\s+of|"
         r"reachable\s+by|adjacent\s+to|on|of|at)\s+(?:the\s+)?arms?\s+[a-d](?:\s*(?:,|and|&)\s*(?:the\s+)?(?:arm\s+)?[a-d])*"
         r"(?:(?:\s+s)?\s+sides?)?\b",
         arms,
@@ -503,7 +508,7 @@ def _mark_region_lists(m: Marked, scene: Scene) -> None:
         place = _new_place(m, Place("regions", tuple(dict.fromkeys(letters)), text=text.strip()))
         return (match.group("prep") or "") + place
 
-    link = rf"(?:\s*(?:,|\band\b|\bor\b|\bat\b|&|/|\(|\)))*\s*(?:\b{PLACE_NOUN}\s+)?"
+    link = rf"(?:\s*(?:,|\band\b|\bor\b|\bat\b|&|/|\(|\)))*\s*(?:\b(?:{TARGET}\s+)?{PLACE_NOUN}\s+)?"
     lead = (
         rf"(?P<prep>)\b(?:the\s+)?(?:(?:two|three|four|\d+)\s+)?(?:{TARGET}\s+)?"
         rf"{PLACE_NOUN}\s*(?::\s*)?(?:\(\s*)?(?:at\s+)?(?:{PLACE_NOUN}\s+)?"
