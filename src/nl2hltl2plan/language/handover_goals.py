@@ -70,6 +70,7 @@ class Clause:
 
 
 def goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
+    """The sentence's goal clauses, in the sentence's order (a clause lost or read twice is refused)."""
     clauses: list[Clause] = []
 
     def goal(blocks: list[str], place: Place, text: str, mods: str) -> str:
@@ -232,7 +233,6 @@ def _markers(m: Marked, clauses: list[Clause]) -> None:
         r"\bG(\d+)\s*,?\s*(?:at\s+the\s+(?:very\s+)?end|in\s+the\s+end|lastly|finally|last|as\s+the\s+(?:last|final)\s+step)\b",
         lambda x: set_marker(x, "after_all"),
     )
-
     m.sub(r"\bG(\d+)\s+first\b", lambda x: set_marker(x, "first"))
 
     def anytime(match: re.Match[str]) -> str:
