@@ -224,6 +224,8 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "Transfer the three blocks into the opposite side. Place the red block before the blue block.",
         "Move three blocks into the opposite regions, the red block placed earlier than the blue block.",
         "Carry the three blocks to the opposite; the red block has to be placed ahead of the blue block.",
+        "Get all 3 blocks to the oppsite side, red before blue please.",
+        "Move the blocks across to the other side - the red one needs to land before the blue one.",
     ],
     2: [
         "Fill regions H, I and J with the three blocks; each region can have only one block.",
@@ -298,6 +300,8 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "hold one object only.",
         "Put the three blocks into three goal regions, namely region H, region I and region J; only one "
         "object can be placed in each goal region.",
+        "Put the blocks on H, I, J (one each).",
+        "Place the three blocks into regions H, I and J so every region ends up with exactly one block.",
     ],
     3: [
         "Move the three pillars to regions E, F and G, beside arm a and arm b. Objects may not be placed "
@@ -401,6 +405,9 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "can be placed on any area other than the target region.",
         "Move the three pillars to the placement area (regions E, F and G) at the side of arm a and arm "
         "b; every object cannot be placed on other areas than the target region.",
+        "Bring the three pillars over to E, F and G on the a/b side. Don't put anything anywhere else.",
+        "Move the three pillars to the placement area near arms a and b (regions E, F, G), never placing "
+        "an object outside the target regions.",
     ],
     4: [
         "Move the three blocks to the opposite regions, but the blue block may not be picked up by any "
@@ -534,6 +541,10 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "Transfer three blocks into the opposite regions; the blue block may not be touched by the robot "
         "arms until the red block has been touched. After all of these, you should put the yellow block "
         "back to region G.",
+        "Move all three blocks to the opposite regions. Don't touch blue until red has been touched. When "
+        "you're done, put yellow back on G.",
+        "Transfer the three blocks to the opposite regions, but the arms must leave the blue block alone "
+        "until the red block has been picked up. Afterwards, put the yellow block back on region G.",
     ],
     5: [
         "Swap the red block and the blue block, making sure the red one gets placed before the blue one. "
@@ -648,6 +659,9 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "before the blue one. The yellow block can be put into the opposite side at any time.",
         "The red block should be placed before the blue block. Please swap the positions of the red block "
         "and the blue block. At any time, put the yellow block to the opposite side.",
+        "Swap red and blue (red goes first) and put yellow on the opposite side whenever.",
+        "Swap the positions of red and blue, with red placed first; yellow goes to the other side at any "
+        "time.",
     ],
     6: [
         "Put the three blocks separately on regions G, H and I; the red block is placed before the blue "
@@ -735,6 +749,8 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "placed before the blue one.",
         "Separately place the three objects into region G, H and I, and place the red block before the "
         "blue block.",
+        "Put the 3 objects on G, H and I separately. Red has to go before blue.",
+        "Separately place the blocks onto G, H and I, making sure red is placed before blue.",
     ],
     7: [
         "One by one, move the three blocks to region I, but nothing may be placed on region F, G and H "
@@ -840,6 +856,8 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "block; no objects can be placed on region F, G and H during this period.",
         "Place the three objects one after another to region I. The red block should be placed before the "
         "blue block. No object can be placed on regions F, G and H in this period.",
+        "One after another, put the three blocks on I (red before blue). Nothing goes on F, G or H in the "
+        "meantime.",
     ],
     8: [
         "First put the yellow block on region I, then on region G, and move the red and blue blocks to "
@@ -946,6 +964,8 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "blocks to any empty regions at any time.",
         "Please first put the yellow block to region I and then to region G, and put the red block and "
         "blue block to any empty region at any time.",
+        "Yellow goes to I and then to G. Red and blue can go to any empty region whenever.",
+        "Put the yellow block on I, then move it to G; put red and blue on any free region at any time.",
     ],
 }
 
@@ -1040,6 +1060,9 @@ NEAR_MISSES: dict[int, list[str]] = {
         "can be placed on any area other than the target region.",
         "Move the three pillars to the placement area (regions E, F and G) at the side of arm a and arm "
         "b; every object cannot be placed on other areas than regions E and F.",
+        "Bring the three pillars over to E, F and H on the a/b side. Don't put anything anywhere else.",
+        "Move the three pillars to the placement area near arms a and b (regions E, F, G), never placing "
+        "an object on region H.",
     ],
     4: [
         "Move the three blocks to the opposite regions. No arm may touch the red block until an arm has "
@@ -1080,6 +1103,10 @@ NEAR_MISSES: dict[int, list[str]] = {
         "red block is.",
         "Move the three blocks into the opposite regions, with no arm touching the red block until the "
         "blue block has been touched, and then, after all that, put the yellow block back to region G.",
+        "Move all three blocks to the opposite regions. Don't touch red until blue has been touched. When "
+        "you're done, put yellow back on G.",
+        "Move all three blocks to the opposite regions. Don't touch blue until red has been touched. When "
+        "you're done, put yellow back on H.",
     ],
     5: [
         "Exchange the positions of the red and yellow blocks; the red block before the blue block. Put "
@@ -1139,6 +1166,8 @@ NEAR_MISSES: dict[int, list[str]] = {
         "used during this period.",
         "Place the three blocks one after another on region I, the red block before the blue block; no "
         "other objects can be placed on regions F and G during this period.",
+        "One after another, put the three blocks on I (red before blue). Nothing goes on F or G in the "
+        "meantime.",
     ],
     8: [
         "First place the yellow block on region G, then on region I. Move the red and blue blocks to any "

@@ -187,7 +187,10 @@ def _mark_one_per_region(m: Marked) -> None:
         rf"(?:only\s+|just\s+|at\s+most\s+|no\s+more\s+than\s+|exactly\s+)?(?:one|a\s+single|1)(?:\s+{NOUN})?"
         rf"(?:\s+of\s+(?:the\s+)?{NOUNS})?(?:\s+only)?"
     )
-    hold = r"(?:placed|filled|holds?|takes?|gets?|receives?|contains?|ha(?:ve|s)|fits?|accepts?|place|put)"
+    hold = (
+        r"(?:placed|filled|holds?|takes?|gets?|receives?|contains?|ha(?:ve|s)|fits?|accepts?|place|put|"
+        r"ends?\s+up\s+with)"
+    )
     patterns: tuple[str, ...] = (
         # "each goal region can only hold one object", "each region only can be placed one object", "one
         # region only one object"
@@ -491,6 +494,17 @@ def _mark_arm_sides(m: Marked, scene: Scene) -> None:
         r"(?:(?:\s+s)?\s+sides?)?\b",
         arms,
     )
+    # "the a/b side", "the side of a and b" without the word "arm"
+    m.sub(
+        r"\b(?:the\s+)?(?:arms?\s+)?[a-d]\s*(?:/|&|and|,)\s*(?:arm\s+)?[a-d]\s+(?:arms?\s+)?(?:s\s+)?sides?\b",
+        lambda match: _new_place(
+            m, Place("regions", _sides(scene, match.group(0)), text=match.group(0).strip())
+        ),
+    )
+
+
+def _sides(scene: Scene, text: str) -> tuple[str, ...]:
+    return scene.arms_side(["abcd".index(x) for x in re.findall(r"\b[a-d]\b", text)])
 
 
 def _mark_region_lists(m: Marked, scene: Scene) -> None:

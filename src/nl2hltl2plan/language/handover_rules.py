@@ -27,6 +27,7 @@ from nl2hltl2plan.language.handover_words import (
 )
 
 Prohibition = tuple[list[str], Place | None, list[str], str]  # blocks, place, explicit regions, text
+_MAY = r"(?:can|may|should|must|will|shall|is\s+allowed\s+to|are\s+allowed\s+to)"
 
 
 def blocks_of(m: Marked, k: str) -> list[str]:
@@ -209,12 +210,17 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
     m.sub(
         rf"\b{PERIOD_WORDS}\s*,?\s*(?=no\s+B|nothing|B\d+\s+{MODAL}{NEG}|(?:A\s+)?{NEG}|keep|leave|P\d)", " "
     )
-    may = r"(?:can|may|should|must|will|shall|is\s+allowed\s+to|are\s+allowed\s+to)"
+    may = _MAY
     m.sub(rf"\bno\s+B(?P<b>\d+)\s+(?:{may}\s+|is\s+|are\s+|gets\s+)?(?:ever\s+)?(?:be\s+)?{DROP}{down}", add)
     # "no other region may receive an object": the regions named may not receive any
     m.sub(
         rf"\bno\s+P(?P<p>\d+)\s+(?:{may}\s+)?(?:receive|get|hold|take|contain)s?\s+(?:an?\s+|any\s+)?"
         r"(?:(?:block|object|cube|pillar|item|piece)s?|anything)\b",
+        add,
+    )
+    # "nothing goes on F, G or H", "no block may go on R"
+    m.sub(
+        rf"\b(?:no\s+B(?P<b>\d+)|nothing)\s+(?:{may}\s+)?(?:goes|go)\s+(?:on|in|onto|into|to)\s+P(?P<p>\d+){PERIOD}",
         add,
     )
     # verbless: "no object on any other region", "nothing on F, G or H in the meantime"
@@ -249,6 +255,14 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
     used = rf"\bP(?P<p>\d+)\s+(?:{may}\s+)?{NEG}\s+be\s+used{PERIOD}|\b{NEG}\s+use\s+P(?P<q>\d+){PERIOD}"
     m.sub(used, add_used)
 
+    return out + _read_only_on(m)
+
+
+def _read_only_on(m: Marked) -> list[Prohibition]:
+    """'objects may only be placed on the target regions / on E, F and G', 'only ever place objects on
+    the target regions': every labelled region but those is forbidden."""
+    out: list[Prohibition] = []
+
     def add_only(match: re.Match[str]) -> str:
         keep = m.places[int(match.group("p"))] if match.group("p") else None
         if keep is not None and keep.kind != "regions":
@@ -264,16 +278,14 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
         )
         return " "
 
-    # "objects may only be placed on the target regions / on E, F and G", "only ever place objects on the
-    # target regions": nowhere else
     target = r"(?:P(?P<p>\d+)|(?P<t>the\s+(?:target|goal)\s+(?:regions?|areas?|zones?)))"
     m.sub(
-        rf"\bB(?P<b>\d+)\s+{may}\s+(?:only\s+be\s+{DROP}|be\s+{DROP}\s+only)\s+{PREP}\s+{target}{PERIOD}",
+        rf"\bB(?P<b>\d+)\s+{_MAY}\s+(?:only\s+be\s+{DROP}|be\s+{DROP}\s+only)\s+{PREP}\s+{target}{PERIOD}",
         add_only,
     )
     m.sub(rf"\bB(?P<b>\d+)\s+(?:is|are)\s+only\s+(?:allowed|permitted)\s+{PREP}\s+{target}{PERIOD}", add_only)
     m.sub(
-        rf"\b(?:(?:A\s+)?{may}\s+)?only\s+(?:ever\s+)?(?:place|put|drop|set)\s+B(?P<b>\d+)\s+{PREP}\s+{target}{PERIOD}",
+        rf"\b(?:(?:A\s+)?{_MAY}\s+)?only\s+(?:ever\s+)?(?:place|put|drop|set)\s+B(?P<b>\d+)\s+{PREP}\s+{target}{PERIOD}",
         add_only,
     )
     m.sub(

@@ -47,6 +47,7 @@ DONE_STATE = r"(?:done|finished|complete|completed|over)"
 AFTER_ALL = (
     r"(?:(?:once|when|after)\s+(?:all\s+(?:of\s+)?)?(?:this|these|that|it|everything(?:\s+else)?|the\s+above)(?:\s+all)?\s+"
     rf"(?:is|are|has\s+been|have\s+been)\s+(?:all\s+)?{DONE_STATE}|(?:once|when)\s+{DONE_STATE}|"
+    rf"(?:once|when|after)\s+(?:you|we)\s*(?:'\s*re|'\s*ve\s+been|\s+are|\s+have\s+been)\s+(?:all\s+)?{DONE_STATE}|"
     r"after\s+(?:all\s+(?:of\s+)?(?:these|this|that|"
     r"the\s+above)|everything(?:\s+else)?)|finally|lastly|last\s+of\s+all|at\s+the\s+(?:very\s+)?end|in\s+the\s+end|"
     r"as\s+(?:a|the)\s+(?:final|last)\s+step)"
@@ -168,7 +169,7 @@ REWRITES += tuple(
     for gerund, verb in NEGATED_GERUNDS.items()
 )
 REWRITES += tuple(
-    (rf"\s*,?\s*\bwithout\s+(?:ever\s+)?{gerund}\b", f" and never {verb}")
+    (rf"\s*,?\s*\b(?:without\s+(?:ever\s+)?|never\s+){gerund}\b", f" and never {verb}")
     for gerund, verb in NEGATED_GERUNDS.items()
     if verb not in ("touch", "grab", "pick up")  # "without touching X before Y" is a touch rule
 )
