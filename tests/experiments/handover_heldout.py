@@ -302,6 +302,9 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "object can be placed in each goal region.",
         "Put the blocks on H, I, J (one each).",
         "Place the three blocks into regions H, I and J so every region ends up with exactly one block.",
+        "Put the three blocks in regions H, I and J, making sure that no region holds more than one object.",
+        "Move the three blocks to the goal regions H, I and J, where each goal region takes just one object.",
+        "Place the three blocks onto region H, region I and region J; a single object per goal region.",
     ],
     3: [
         "Move the three pillars to regions E, F and G, beside arm a and arm b. Objects may not be placed "
@@ -408,6 +411,12 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "Bring the three pillars over to E, F and G on the a/b side. Don't put anything anywhere else.",
         "Move the three pillars to the placement area near arms a and b (regions E, F, G), never placing "
         "an object outside the target regions.",
+        "Move the three pillars to regions E, F and G, the placement area by arm a and arm b. Placing an "
+        "object on any area besides the target regions is forbidden.",
+        "Move the three pillars into the placement area (regions E, F and G) next to arms a and b, and "
+        "never put any object on a region that is not one of the target regions.",
+        "Please move the three pillars to the placement area on arm a and arm b's side, that is, regions "
+        "E, F and G; no object may be placed on any other area.",
     ],
     4: [
         "Move the three blocks to the opposite regions, but the blue block may not be picked up by any "
@@ -545,6 +554,15 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "you're done, put yellow back on G.",
         "Transfer the three blocks to the opposite regions, but the arms must leave the blue block alone "
         "until the red block has been picked up. Afterwards, put the yellow block back on region G.",
+        "Transfer the three blocks to the opposite regions. The blue block must not be touched by any arm "
+        "until the red block has been touched. After all that, put the yellow block back to region G, "
+        "where the red block currently sits.",
+        "Move the three blocks into the opposite regions. Until the red block has been touched by an arm, "
+        "no arm may touch the blue block. When all of this is finished, place the yellow block back on "
+        "region G.",
+        "Transfer all three blocks into the opposite regions, and do not let any robot arm touch the blue "
+        "block until the red block has been touched. After all of these, return the yellow block to "
+        "region G.",
     ],
     5: [
         "Swap the red block and the blue block, making sure the red one gets placed before the blue one. "
@@ -858,6 +876,12 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "blue block. No object can be placed on regions F, G and H in this period.",
         "One after another, put the three blocks on I (red before blue). Nothing goes on F, G or H in the "
         "meantime.",
+        "Place the three objects on region I one after another. The red block must be placed before the "
+        "blue block, and while this is going on, no object can be placed on regions F, G and H.",
+        "The red block should be placed before the blue block. Place the three blocks one after another "
+        "onto region I, and no blocks may be placed on region F, G or H during this period.",
+        "Put the three objects into region I one after another, placing the red one before the blue one; "
+        "during this time, regions F, G and H cannot receive any object.",
     ],
     8: [
         "First put the yellow block on region I, then on region G, and move the red and blue blocks to "
@@ -1036,6 +1060,7 @@ NEAR_MISSES: dict[int, list[str]] = {
         "Move the three blocks into H, I and G, placing exactly one block in each region.",
         "Place the three blocks into goal region H, goal region I and goal region G; each goal region can "
         "hold one object only.",
+        "Move the three blocks to the goal regions H, I and G, where each goal region takes just one object.",
     ],
     3: [
         "Move the three pillars to regions E, F and G.",
@@ -1168,6 +1193,10 @@ NEAR_MISSES: dict[int, list[str]] = {
         "other objects can be placed on regions F and G during this period.",
         "One after another, put the three blocks on I (red before blue). Nothing goes on F or G in the "
         "meantime.",
+        "Put the three objects into region I one after another, placing the red one before the blue one; "
+        "during this time, regions F and H cannot receive any object.",
+        "Place the three objects on region I one after another. The blue block must be placed before the "
+        "red block, and while this is going on, no object can be placed on regions F, G and H.",
     ],
     8: [
         "First place the yellow block on region G, then on region I. Move the red and blue blocks to any "

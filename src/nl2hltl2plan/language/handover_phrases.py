@@ -194,7 +194,7 @@ def _mark_one_per_region(m: Marked) -> None:
     patterns: tuple[str, ...] = (
         # "each goal region can only hold one object", "each region only can be placed one object", "one
         # region only one object"
-        rf"\b(?:each|every|an?|any|one)\s+(?:of\s+the\s+)?{region}s?\s+(?:only\s+)?(?:can|may|should|must|will)?\s*(?:only\s+)?"
+        rf"(?:,\s*(?:where|in\s+which)\s+)?\b(?:each|every|an?|any|one)\s+(?:of\s+the\s+)?{region}s?\s+(?:only\s+)?(?:can|may|should|must|will)?\s*(?:only\s+)?"
         rf"(?:be\s+)?(?:{hold}\s+)?(?:only\s+)?(?:with\s+)?{one}\b",
         rf"\bno\s+{region}\s+(?:can|may|should|must|will)?\s*(?:be\s+)?{hold}\s+(?:with\s+)?(?:more\s+than\s+"
         rf"(?:one|a\s+single|1)(?:\s+{NOUN})?|(?:two|2)\s+{NOUNS})\b",

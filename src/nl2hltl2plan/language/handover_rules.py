@@ -212,12 +212,11 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
     )
     may = _MAY
     m.sub(rf"\bno\s+B(?P<b>\d+)\s+(?:{may}\s+|is\s+|are\s+|gets\s+)?(?:ever\s+)?(?:be\s+)?{DROP}{down}", add)
-    # "no other region may receive an object": the regions named may not receive any
-    m.sub(
-        rf"\bno\s+P(?P<p>\d+)\s+(?:{may}\s+)?(?:receive|get|hold|take|contain)s?\s+(?:an?\s+|any\s+)?"
-        r"(?:(?:block|object|cube|pillar|item|piece)s?|anything)\b",
-        add,
-    )
+    # "no other region may receive an object", "regions F, G and H cannot receive any object"
+    thing = r"(?:an?\s+|any\s+)?(?:(?:block|object|cube|pillar|item|piece)s?|anything)"
+    receive = rf"(?:receive|get|hold|take|contain)s?\s+{thing}"
+    m.sub(rf"\bno\s+P(?P<p>\d+)\s+(?:{may}\s+)?{receive}\b{PERIOD}", add)
+    m.sub(rf"\bP(?P<p>\d+)\s+(?:{may}\s+)?{NEG}\s+{receive}\b{PERIOD}", add)
     # "nothing goes on F, G or H", "no block may go on R"
     m.sub(
         rf"\b(?:no\s+B(?P<b>\d+)|nothing)\s+(?:{may}\s+)?(?:goes|go)\s+(?:on|in|onto|into|to)\s+P(?P<p>\d+){PERIOD}",

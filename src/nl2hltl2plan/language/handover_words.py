@@ -37,7 +37,7 @@ DROP = r"(?:placed|put|dropped|set|left|laid)(?:\s+down)?"
 # "during this period": a prohibition's scope, the goals of its sentence (else all goals so far)
 PERIOD_WORDS = (
     r"(?:(?:during|in)\s+(?:this|that|the\s+same)\s+(?:period|time)|in\s+the\s+meantime|meanwhile|"
-    r"while\s+doing\s+(?:so|this|that|it)|while\s+(?:this|that)\s+(?:happens|is\s+happening|goes\s+on)|"
+    r"while\s+doing\s+(?:so|this|that|it)|while\s+(?:this|that)\s+(?:happens|is\s+happening|goes\s+on|is\s+going\s+on)|"
     r"at\s+the\s+same\s+time|in\s+the\s+process|all\s+the\s+while|the\s+whole\s+time|"
     r"throughout(?:\s+(?:this|the|that)\s+(?:process|period|time))?|until\s+then)"
 )
