@@ -226,6 +226,9 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "Carry the three blocks to the opposite; the red block has to be placed ahead of the blue block.",
         "Get all 3 blocks to the oppsite side, red before blue please.",
         "Move the blocks across to the other side - the red one needs to land before the blue one.",
+        "Transfer the three blocks to the opposite side, and the red block needs to be put before the "
+        "blue block.",
+        "Bring three blocks into the opposite. Red block must be placed before the blue block.",
     ],
     2: [
         "Fill regions H, I and J with the three blocks; each region can have only one block.",
@@ -305,6 +308,10 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "Put the three blocks in regions H, I and J, making sure that no region holds more than one object.",
         "Move the three blocks to the goal regions H, I and J, where each goal region takes just one object.",
         "Place the three blocks onto region H, region I and region J; a single object per goal region.",
+        "Put the three blocks into the three goal regions: region H, region I and region J. Every goal "
+        "region can be placed with only a single object.",
+        "Please put three blocks into goal regions at region H, region I and region J; only one object "
+        "can be placed in each goal region.",
     ],
     3: [
         "Move the three pillars to regions E, F and G, beside arm a and arm b. Objects may not be placed "
@@ -417,6 +424,10 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "never put any object on a region that is not one of the target regions.",
         "Please move the three pillars to the placement area on arm a and arm b's side, that is, regions "
         "E, F and G; no object may be placed on any other area.",
+        "Please move the three pillars to the placement area (region E, F, G) on the side of arm a and "
+        "arm b. An object cannot be placed on any area except the target region.",
+        "Move the three pillars to the placement area at arm a and arm b's side (regions E, F and G). "
+        "Don't place any object on an area other than its target region.",
     ],
     4: [
         "Move the three blocks to the opposite regions, but the blue block may not be picked up by any "
@@ -563,6 +574,12 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "Transfer all three blocks into the opposite regions, and do not let any robot arm touch the blue "
         "block until the red block has been touched. After all of these, return the yellow block to "
         "region G.",
+        "Transfer three blocks to the opposite regions. A robot arm cannot touch the blue block until a "
+        "robot arm has touched the red block. After all of this, put the yellow block back to region G, "
+        "where the red block is located.",
+        "Move the three blocks into the opposite regions. The blue block cannot be touched until the red "
+        "block is touched. After everything, put the yellow block back on region G (where the red block "
+        "currently is).",
     ],
     5: [
         "Swap the red block and the blue block, making sure the red one gets placed before the blue one. "
@@ -680,6 +697,10 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "Swap red and blue (red goes first) and put yellow on the opposite side whenever.",
         "Swap the positions of red and blue, with red placed first; yellow goes to the other side at any "
         "time.",
+        "Place the red block before the blue block. Exchange the positions of red and blue blocks. Put "
+        "the yellow block on the opposite side at any time.",
+        "Please exchange the red block's position with the blue block's position, placing the red block "
+        "before the blue block. The yellow block goes to the opposite side at any time.",
     ],
     6: [
         "Put the three blocks separately on regions G, H and I; the red block is placed before the blue "
@@ -769,6 +790,10 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "blue block.",
         "Put the 3 objects on G, H and I separately. Red has to go before blue.",
         "Separately place the blocks onto G, H and I, making sure red is placed before blue.",
+        "Place the three objects to region G, H and I separately, and the red block must be placed before "
+        "the blue block.",
+        "Red block should be placed before blue block. Place the three objects to regions G, H and I, "
+        "separately.",
     ],
     7: [
         "One by one, move the three blocks to region I, but nothing may be placed on region F, G and H "
@@ -882,6 +907,10 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "onto region I, and no blocks may be placed on region F, G or H during this period.",
         "Put the three objects into region I one after another, placing the red one before the blue one; "
         "during this time, regions F, G and H cannot receive any object.",
+        "Place the three objects to region I one after another, the red block must be placed before the "
+        "blue block, and during this period no object can be placed on region F, G and H.",
+        "Red block should be placed before blue block. Place the three objects one after another to "
+        "region I; in the meantime, no objects may be put on regions F, G and H.",
     ],
     8: [
         "First put the yellow block on region I, then on region G, and move the red and blue blocks to "
@@ -990,6 +1019,10 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "blue block to any empty region at any time.",
         "Yellow goes to I and then to G. Red and blue can go to any empty region whenever.",
         "Put the yellow block on I, then move it to G; put red and blue on any free region at any time.",
+        "First place the yellow block on region I, then place it on region G. Move the red block and the "
+        "blue block to any empty region at any time.",
+        "Place the yellow block to region I first and to region G next; at any time, move the red and "
+        "blue blocks to any empty region.",
     ],
 }
 
