@@ -229,6 +229,10 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "Transfer the three blocks to the opposite side, and the red block needs to be put before the "
         "blue block.",
         "Bring three blocks into the opposite. Red block must be placed before the blue block.",
+        "I would like the three blocks to be moved to the opposite side. Please note that the red block "
+        "has to be placed before the blue block.",
+        "Your goal is to get the three blocks to the opposite regions. There is one ordering requirement: "
+        "red must be placed before blue.",
     ],
     2: [
         "Fill regions H, I and J with the three blocks; each region can have only one block.",
@@ -312,6 +316,10 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "region can be placed with only a single object.",
         "Please put three blocks into goal regions at region H, region I and region J; only one object "
         "can be placed in each goal region.",
+        "The three blocks need to go into regions H, I and J. Keep in mind that each of these goal "
+        "regions can only hold a single object.",
+        "Please arrange the three blocks in the goal regions H, I and J. Since each region holds only one "
+        "object, each block gets its own region.",
     ],
     3: [
         "Move the three pillars to regions E, F and G, beside arm a and arm b. Objects may not be placed "
@@ -428,6 +436,10 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "arm b. An object cannot be placed on any area except the target region.",
         "Move the three pillars to the placement area at arm a and arm b's side (regions E, F and G). "
         "Don't place any object on an area other than its target region.",
+        "The task is to move the three pillars to the placement area beside arm a and arm b, which "
+        "consists of regions E, F and G. Objects must never be placed anywhere except the target regions.",
+        "Move the three pillars to regions E, F and G. While doing this, no object may be put down on any "
+        "region that is not a target region.",
     ],
     4: [
         "Move the three blocks to the opposite regions, but the blue block may not be picked up by any "
@@ -580,6 +592,12 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "Move the three blocks into the opposite regions. The blue block cannot be touched until the red "
         "block is touched. After everything, put the yellow block back on region G (where the red block "
         "currently is).",
+        "First, transfer the three blocks to the opposite regions, with the rule that the blue block may "
+        "not be touched until the red block has been touched. Then, once this is all done, put the yellow "
+        "block back to region G.",
+        "Please move the three blocks to the opposite regions. There is a restriction: no robot arm may "
+        "touch the blue block before some arm has touched the red block. Finally, bring the yellow block "
+        "back to region G.",
     ],
     5: [
         "Swap the red block and the blue block, making sure the red one gets placed before the blue one. "
@@ -701,6 +719,11 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "the yellow block on the opposite side at any time.",
         "Please exchange the red block's position with the blue block's position, placing the red block "
         "before the blue block. The yellow block goes to the opposite side at any time.",
+        "The positions of the red block and the blue block should be exchanged, and the red block needs "
+        "to be placed before the blue block. In addition, move the yellow block to the opposite side at "
+        "any time.",
+        "I need the red and blue blocks to swap places, with red going first. The yellow block should "
+        "also be moved to the opposite side at any time.",
     ],
     6: [
         "Put the three blocks separately on regions G, H and I; the red block is placed before the blue "
@@ -794,6 +817,10 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "the blue block.",
         "Red block should be placed before blue block. Place the three objects to regions G, H and I, "
         "separately.",
+        "The three objects should be placed separately on regions G, H and I. There is one ordering "
+        "requirement: the red block before the blue block.",
+        "Please place the three objects separately onto regions G, H and I. Note that the red block must "
+        "be placed before the blue block.",
     ],
     7: [
         "One by one, move the three blocks to region I, but nothing may be placed on region F, G and H "
@@ -911,6 +938,11 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "blue block, and during this period no object can be placed on region F, G and H.",
         "Red block should be placed before blue block. Place the three objects one after another to "
         "region I; in the meantime, no objects may be put on regions F, G and H.",
+        "The three objects should be placed one after another on region I, with the red block before the "
+        "blue block. During this whole period, nothing may be placed on regions F, G or H.",
+        "Put the three objects one after another to region I. Keep in mind that the red block is placed "
+        "before the blue block, and that no object may be placed on regions F, G and H during this "
+        "period.",
     ],
     8: [
         "First put the yellow block on region I, then on region G, and move the red and blue blocks to "
@@ -1023,6 +1055,10 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "blue block to any empty region at any time.",
         "Place the yellow block to region I first and to region G next; at any time, move the red and "
         "blue blocks to any empty region.",
+        "The yellow block should first go to region I and afterwards to region G. In addition, the red "
+        "and blue blocks should be moved to any empty region, at any time.",
+        "Start by placing the yellow block on region I, then place it on region G. At any time, the red "
+        "and blue blocks can be moved to any empty region.",
     ],
 }
 
@@ -1075,6 +1111,10 @@ NEAR_MISSES: dict[int, list[str]] = {
         "Transfer all of the blocks into the opposite regions, and make sure the blue block gets there "
         "before the red block does.",
         "Move each of the three blocks to the side across from it. Blue is to be placed before red.",
+        "Your goal is to get the three blocks to the opposite regions. There is one ordering requirement: "
+        "blue must be placed before red.",
+        "I would like the three blocks to be moved to regions H and I. Please note that the red block has "
+        "to be placed before the blue block.",
     ],
     2: [
         "Put the three blocks into regions H, I and G, one per region.",
@@ -1094,6 +1134,8 @@ NEAR_MISSES: dict[int, list[str]] = {
         "Place the three blocks into goal region H, goal region I and goal region G; each goal region can "
         "hold one object only.",
         "Move the three blocks to the goal regions H, I and G, where each goal region takes just one object.",
+        "Please arrange the three blocks in the goal regions H, I and G. Since each region holds only one "
+        "object, each block gets its own region.",
     ],
     3: [
         "Move the three pillars to regions E, F and G.",
@@ -1200,6 +1242,8 @@ NEAR_MISSES: dict[int, list[str]] = {
         "move the yellow block to the opposite side.",
         "The blue block should be placed before the red block while the two exchange positions. The "
         "yellow block may go to the opposite side at any time.",
+        "I need the red and yellow blocks to swap places, with red going first. The yellow block should "
+        "also be moved to the opposite side at any time.",
     ],
     6: [
         "Place the three blocks separately on regions G, H and J; the red block before the blue block.",
@@ -1230,6 +1274,8 @@ NEAR_MISSES: dict[int, list[str]] = {
         "during this time, regions F and H cannot receive any object.",
         "Place the three objects on region I one after another. The blue block must be placed before the "
         "red block, and while this is going on, no object can be placed on regions F, G and H.",
+        "The three objects should be placed one after another on region I, with the red block before the "
+        "blue block. During this whole period, nothing may be placed on regions F or G.",
     ],
     8: [
         "First place the yellow block on region G, then on region I. Move the red and blue blocks to any "

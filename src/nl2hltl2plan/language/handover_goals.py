@@ -112,7 +112,8 @@ def goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
     _read_exchanges(m, exchange)
     _read_sources(m, scene)
     m.sub(
-        rf"(?:\bwhile\s+)?\b(?:{VERB}|{GERUND})\s+B(\d+){mods}(?:\s+first)?\s*,?\s+(?:(?:to\s+)?(?:be|end\s+up)\s+)?"
+        rf"(?:\bwhile\s+)?\b(?:{VERB}|{GERUND})\s+B(\d+){mods}(?:\s+first)?\s*,?\s+"
+        rf"(?:to\s+(?:be\s+)?(?:{DONE}\s+)?|be\s+(?:{DONE}\s+)?|end\s+up\s+)?"
         rf"(?:back\s+)?{PREP}\s+P(\d+){mods}",
         lambda x: matched(x, 1),
     )
@@ -175,7 +176,8 @@ def _read_exchanges(m: Marked, exchange: Callable[..., str]) -> None:
         exchange,
     )
     m.sub(
-        rf"(?:\bwhile\s+)?\bB(\d+)\s+{MODAL}(?:exchange|swap|switch|trade)s?\s+(?:their\s+)?(?:positions?|places?|locations?|spots?)",
+        rf"(?:\bwhile\s+|\b(?:want|need|have)\s+)?\bB(\d+)\s+(?:to\s+)?{MODAL}(?:exchange|swap|switch|trade)s?\s+(?:their\s+)?"
+        r"(?:positions?|places?|locations?|spots?)",
         exchange,
     )
     m.sub(rf"\b{SWAP}\s+(?:the\s+places\s+)?where\s+B(\d+)\s+(?:are|stand|sit|lie)\b", exchange)

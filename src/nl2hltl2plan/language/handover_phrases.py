@@ -40,7 +40,7 @@ PLACE_NOUN = r"(?:regions?|areas?|zones?|places?|spots?|positions?|cells?|sides?
 FILLER = frozenset(
     "please plan a an the solution to for you we should shall can could would will must kindly now "
     "also so it is are be that i want need make sure this task , ( ) : and however additionally moreover "
-    "furthermore independently".split()
+    "furthermore independently since".split()
 )
 
 
@@ -194,7 +194,7 @@ def _mark_one_per_region(m: Marked) -> None:
     patterns: tuple[str, ...] = (
         # "each goal region can only hold one object", "each region only can be placed one object", "one
         # region only one object"
-        rf"(?:,\s*(?:where|in\s+which)\s+)?\b(?:each|every|an?|any|one)\s+(?:of\s+the\s+)?{region}s?\s+(?:only\s+)?(?:can|may|should|must|will)?\s*(?:only\s+)?"
+        rf"(?:,\s*(?:where|in\s+which)\s+)?\b(?:each|every|an?|any|one)\s+(?:of\s+(?:the|these|those)\s+)?{region}s?\s+(?:only\s+)?(?:can|may|should|must|will)?\s*(?:only\s+)?"
         rf"(?:be\s+)?(?:{hold}\s+)?(?:only\s+)?(?:with\s+)?{one}\b",
         rf"\bno\s+{region}\s+(?:can|may|should|must|will)?\s*(?:be\s+)?{hold}\s+(?:with\s+)?(?:more\s+than\s+"
         rf"(?:one|a\s+single|1)(?:\s+{NOUN})?|(?:two|2)\s+{NOUNS})\b",
@@ -208,6 +208,7 @@ def _mark_one_per_region(m: Marked) -> None:
         rf"\b(?:with\s+)?{one}\s+(?:per|in\s+each|on\s+each|for\s+each)\b(?!\s+of\b)",
         rf"\b(?:with\s+)?no\s+two\s+{NOUNS}\s+(?:(?:may|can|should|will)\s+)?(?:sharing|share|occupy|be\s+(?:in|on))\s+"
         rf"(?:a\s+|the\s+same\s+)?{region}\b",
+        rf"\beach\s+{NOUN}\s+(?:gets|has|takes|goes\s+(?:to|in|into))\s+(?:its\s+own|a\s+(?:different|separate))\s+{region}\b",
         rf"\b(?:do\s+not|never)\s+(?:put|place)\s+(?:more\s+than\s+(?:one|a\s+single)(?:\s+{NOUN})?|(?:two|2)\s+{NOUNS})\s+"
         r"(?:in|on|into|onto)\s+"
         rf"(?:a|any|each|the\s+same)\s+{region}\b",

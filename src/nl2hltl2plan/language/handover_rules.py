@@ -125,7 +125,7 @@ def read_leaders(m: Marked) -> list[str]:
 
     m.sub(
         rf"(?:\b(?:with|placing|putting|moving|and)\s+)?\bB(\d+)\s+{MODAL}(?:(?:placed|put|moved|set)\s+|goe?s?\s+|"
-        r"comes?\s+)?first\b(?=\s*(?:$|,|\band\b|\)))",
+        r"comes?\s+|going\s+|coming\s+)?first\b(?=\s*(?:$|,|\band\b|\)))",
         add,
     )
     return out

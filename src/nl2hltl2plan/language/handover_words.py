@@ -36,7 +36,7 @@ TOUCHING = r"(?:touching|picking\s+up|picking|grabbing|grasping|handling|lifting
 DROP = r"(?:placed|put|dropped|set|left|laid)(?:\s+down)?"
 # "during this period": a prohibition's scope, the goals of its sentence (else all goals so far)
 PERIOD_WORDS = (
-    r"(?:(?:during|in)\s+(?:this|that|the\s+same)\s+(?:period|time)|in\s+the\s+meantime|meanwhile|"
+    r"(?:(?:during|in)\s+(?:this|that|the\s+same)\s+(?:whole\s+|entire\s+)?(?:period|time)|in\s+the\s+meantime|meanwhile|"
     r"while\s+doing\s+(?:so|this|that|it)|while\s+(?:this|that)\s+(?:happens|is\s+happening|goes\s+on|is\s+going\s+on)|"
     r"at\s+the\s+same\s+time|in\s+the\s+process|all\s+the\s+while|the\s+whole\s+time|"
     r"throughout(?:\s+(?:this|the|that)\s+(?:process|period|time))?|until\s+then)"
@@ -95,6 +95,15 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\b(?:earlier\s+than|prior\s+to|ahead\s+of|in\s+advance\s+of|sooner\s+than)\b", "before"),
     (r"\blater\s+than\b", "after"),
     (r"\buntil\s+after\b", "until"),
+    (r"\b(?:i|we)\s*(?:'\s*d|would)\s+like\b", "want"),
+    # framing that announces a rule: "there is one ordering requirement:", "with the rule that"
+    (
+        r"\bthere\s+(?:is|are)\s+(?:one|a|an|another|two|some)\s+(?:\w+\s+)?(?:requirement|restriction|constraint|"
+        r"condition|rule)s?\s*:",
+        " ",
+    ),
+    (r"\s*,?\s*\bwith\s+the\s+(?:rule|condition|constraint|requirement|restriction)\s+that\b", ","),
+    (r"\bin\s+addition\b", " "),
     (r"\bnothing\s+else\b", "nothing"),
     (r"\bno\s+other\s+(?=(?:blocks?|objects?|items?|cubes?|pillars?|pieces?)\b)", "no "),
     (r"\bthe\s+(?:last|final)\s+step\s+is\s+to\b", "finally"),
