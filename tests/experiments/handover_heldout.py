@@ -233,6 +233,9 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "has to be placed before the blue block.",
         "Your goal is to get the three blocks to the opposite regions. There is one ordering requirement: "
         "red must be placed before blue.",
+        "Please relocate the three blocks onto the opposite regions; make certain the red one is set down "
+        "before the blue one.",
+        "All blocks go to the opposite side. Order: red before blue.",
     ],
     2: [
         "Fill regions H, I and J with the three blocks; each region can have only one block.",
@@ -320,6 +323,9 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "regions can only hold a single object.",
         "Please arrange the three blocks in the goal regions H, I and J. Since each region holds only one "
         "object, each block gets its own region.",
+        "Distribute the three blocks among regions H, I and J, with no region receiving more than one "
+        "object.",
+        "Load regions H, I and J with the three blocks, one block per region.",
     ],
     3: [
         "Move the three pillars to regions E, F and G, beside arm a and arm b. Objects may not be placed "
@@ -440,6 +446,9 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "consists of regions E, F and G. Objects must never be placed anywhere except the target regions.",
         "Move the three pillars to regions E, F and G. While doing this, no object may be put down on any "
         "region that is not a target region.",
+        "Shift the three pillars over to regions E, F and G beside arms a and b, and under no "
+        "circumstances place an object on a region other than these.",
+        "Move the three pillars onto E, F and G. Do not drop any object onto the other regions at any point.",
     ],
     4: [
         "Move the three blocks to the opposite regions, but the blue block may not be picked up by any "
@@ -598,6 +607,10 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "Please move the three blocks to the opposite regions. There is a restriction: no robot arm may "
         "touch the blue block before some arm has touched the red block. Finally, bring the yellow block "
         "back to region G.",
+        "Move the three blocks to the opposite regions; no arm is permitted to touch the blue block until "
+        "an arm has touched the red block. Once that is finished, put the yellow block back to region G.",
+        "Move the three blocks into the opposite regions. The blue block has to wait until the red block "
+        "has been touched. After all of these, return the yellow block to G.",
     ],
     5: [
         "Swap the red block and the blue block, making sure the red one gets placed before the blue one. "
@@ -724,6 +737,10 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "any time.",
         "I need the red and blue blocks to swap places, with red going first. The yellow block should "
         "also be moved to the opposite side at any time.",
+        "Trade the places of the red and blue blocks, red before blue, and at some point move yellow over "
+        "to the opposite side.",
+        "Swap the red and blue blocks, putting red down first. Yellow goes to the opposite side, in any "
+        "order.",
     ],
     6: [
         "Put the three blocks separately on regions G, H and I; the red block is placed before the blue "
@@ -821,6 +838,9 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "requirement: the red block before the blue block.",
         "Please place the three objects separately onto regions G, H and I. Note that the red block must "
         "be placed before the blue block.",
+        "Place one object on each of regions G, H and I; the red block is to be placed before the blue "
+        "block.",
+        "Put the three objects on regions G, H and I, one on each region, red before blue.",
     ],
     7: [
         "One by one, move the three blocks to region I, but nothing may be placed on region F, G and H "
@@ -943,6 +963,10 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "Put the three objects one after another to region I. Keep in mind that the red block is placed "
         "before the blue block, and that no object may be placed on regions F, G and H during this "
         "period.",
+        "Place all three objects on region I, one after another, with red before blue. Throughout, "
+        "regions F, G and H are off limits.",
+        "Put the three objects on region I in turn (red ahead of blue) and do not place anything on F, G "
+        "and H while that is happening.",
     ],
     8: [
         "First put the yellow block on region I, then on region G, and move the red and blue blocks to "
@@ -1059,6 +1083,9 @@ FIXING_VARIANTS: dict[int, list[str]] = {
         "and blue blocks should be moved to any empty region, at any time.",
         "Start by placing the yellow block on region I, then place it on region G. At any time, the red "
         "and blue blocks can be moved to any empty region.",
+        "Place the yellow block on region I and subsequently on region G. Red and blue may be put on any "
+        "empty region at any time.",
+        "Yellow: region I, then region G. Red and blue: any empty region, at any time.",
     ],
 }
 
@@ -1115,6 +1142,7 @@ NEAR_MISSES: dict[int, list[str]] = {
         "blue must be placed before red.",
         "I would like the three blocks to be moved to regions H and I. Please note that the red block has "
         "to be placed before the blue block.",
+        "All blocks go to the opposite side. Order: blue before red.",
     ],
     2: [
         "Put the three blocks into regions H, I and G, one per region.",
@@ -1136,6 +1164,7 @@ NEAR_MISSES: dict[int, list[str]] = {
         "Move the three blocks to the goal regions H, I and G, where each goal region takes just one object.",
         "Please arrange the three blocks in the goal regions H, I and G. Since each region holds only one "
         "object, each block gets its own region.",
+        "Load regions H, I and G with the three blocks, one block per region.",
     ],
     3: [
         "Move the three pillars to regions E, F and G.",
@@ -1207,6 +1236,8 @@ NEAR_MISSES: dict[int, list[str]] = {
         "you're done, put yellow back on G.",
         "Move all three blocks to the opposite regions. Don't touch blue until red has been touched. When "
         "you're done, put yellow back on H.",
+        "Move the three blocks into the opposite regions. The red block has to wait until the blue block "
+        "has been touched. After all of these, return the yellow block to G.",
     ],
     5: [
         "Exchange the positions of the red and yellow blocks; the red block before the blue block. Put "
@@ -1244,6 +1275,8 @@ NEAR_MISSES: dict[int, list[str]] = {
         "yellow block may go to the opposite side at any time.",
         "I need the red and yellow blocks to swap places, with red going first. The yellow block should "
         "also be moved to the opposite side at any time.",
+        "Swap the red and blue blocks, putting blue down first. Yellow goes to the opposite side, in any "
+        "order.",
     ],
     6: [
         "Place the three blocks separately on regions G, H and J; the red block before the blue block.",
@@ -1276,6 +1309,8 @@ NEAR_MISSES: dict[int, list[str]] = {
         "red block, and while this is going on, no object can be placed on regions F, G and H.",
         "The three objects should be placed one after another on region I, with the red block before the "
         "blue block. During this whole period, nothing may be placed on regions F or G.",
+        "Place all three objects on region I, one after another, with red before blue. Throughout, "
+        "regions F and G are off limits.",
     ],
     8: [
         "First place the yellow block on region G, then on region I. Move the red and blue blocks to any "

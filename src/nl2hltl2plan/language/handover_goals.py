@@ -129,7 +129,7 @@ def goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
         lambda x: _fill(m, x, goal, scene.blocks),
     )
     # the inverse syntax "fill regions H, I and J with the three blocks": as many places as blocks
-    m.sub(rf"\b(?:fill|occupy|populate)\s+P(\d+)\s+with\s+B(\d+){mods}", lambda x: _fill(m, x, goal))
+    m.sub(rf"\b(?:fill|occupy|populate|load)\s+P(\d+)\s+with\s+B(\d+){mods}", lambda x: _fill(m, x, goal))
     m.sub(
         rf"\b(?:each\s+of\s+)?P(\d+)\s+{MODAL}(?:each\s+)?(?:receive|get|take|hold|contain)s?\s+(?:exactly\s+|just\s+)?"
         rf"(?:one\s+of\s+)?B(\d+){mods}",

@@ -166,7 +166,8 @@ def mark(sentence: str, scene: Scene, before: Marked | None = None) -> Marked:
 def _mark_connectives(m: Marked) -> None:
     """'making sure (that)', 'ensure that' introduce what follows and add nothing."""
     m.sub(
-        r"(?:\bwhile\s+)?\b(?:(?:making|make|be)\s+sure|ensur(?:e|ing))\s+(?:that\s+)?|\b(?:such|so)\s+that\b(?!\s+each\b)",
+        r"(?:\bwhile\s+)?\b(?:(?:making|make|be)\s+(?:sure|certain)|ensur(?:e|ing))\s+(?:that\s+)?|"
+        r"\b(?:such|so)\s+that\b(?!\s+each\b)",
         " ",
     )
 
@@ -196,7 +197,8 @@ def _mark_one_per_region(m: Marked) -> None:
         # region only one object"
         rf"(?:,\s*(?:where|in\s+which)\s+)?\b(?:each|every|an?|any|one)\s+(?:of\s+(?:the|these|those)\s+)?{region}s?\s+(?:only\s+)?(?:can|may|should|must|will)?\s*(?:only\s+)?"
         rf"(?:be\s+)?(?:{hold}\s+)?(?:only\s+)?(?:with\s+)?{one}\b",
-        rf"\bno\s+{region}\s+(?:can|may|should|must|will)?\s*(?:be\s+)?{hold}\s+(?:with\s+)?(?:more\s+than\s+"
+        rf"(?:\bwith\s+)?\bno\s+{region}\s+(?:can|may|should|must|will)?\s*(?:be\s+)?"
+        rf"(?:{hold}|receiving|getting|holding|having|taking)\s+(?:with\s+)?(?:more\s+than\s+"
         rf"(?:one|a\s+single|1)(?:\s+{NOUN})?|(?:two|2)\s+{NOUNS})\b",
         rf"\b(?:with\s+|placing\s+|putting\s+|there\s+(?:can|may|should|must|will)\s+be\s+)?{one}\s+(?:(?:is|being|may|can|should|must|will)\s+)?"
         r"(?:be\s+)?(?:allowed\s+|permitted\s+)?"
@@ -389,7 +391,7 @@ def _mark_places(m: Marked, scene: Scene, named_before: tuple[str, ...]) -> None
         return _new_place(m, Place("complement", lists[-1], text=match.group(0).strip()))
 
     m.sub(
-        rf"\b(?:(?:the|any|all)\s+)?(?:other\s+)?{PLACE_NOUN}\s+{OTHER_THAN}\s+(?:these|those|them|the\s+ones\s+(?:named|above))\b",
+        rf"\b(?:(?:the|any|all|an?)\s+)?(?:other\s+)?{PLACE_NOUN}\s+{OTHER_THAN}\s+(?:these|those|them|the\s+ones\s+(?:named|above))\b",
         other_than_these,
     )
     m.sub(

@@ -27,7 +27,7 @@ from nl2hltl2plan.language.handover_words import (
 )
 
 Prohibition = tuple[list[str], Place | None, list[str], str]  # blocks, place, explicit regions, text
-_MAY = r"(?:can|may|should|must|will|shall|is\s+allowed\s+to|are\s+allowed\s+to)"
+_MAY = r"(?:can|may|should|must|will|shall|(?:is|are)\s+(?:allowed|permitted)\s+to)"
 
 
 def blocks_of(m: Marked, k: str) -> list[str]:
@@ -124,7 +124,7 @@ def read_leaders(m: Marked) -> list[str]:
         return " "
 
     m.sub(
-        rf"(?:\b(?:with|placing|putting|moving|and)\s+)?\bB(\d+)\s+{MODAL}(?:(?:placed|put|moved|set)\s+|goe?s?\s+|"
+        rf"(?:\b(?:with|placing|putting|moving|and)\s+)?\bB(\d+)\s+(?:down\s+)?{MODAL}(?:(?:placed|put|moved|set)\s+|goe?s?\s+|"
         r"comes?\s+|going\s+|coming\s+)?first\b(?=\s*(?:$|,|\band\b|\)))",
         add,
     )
@@ -149,7 +149,7 @@ def read_touch_guards(m: Marked) -> list[tuple[str, str]]:
         rf"(?:(?:has|have|had)\s+(?:already\s+)?been|is|was|gets|got)\s+(?:already\s+)?{TOUCHED}(?:\s+by\s+A)?|"
         rf"B(?P<y3>\d+){end})"
     )
-    may = r"(?:may|can|should|must|will|shall|is\s+allowed\s+to|are\s+allowed\s+to)"
+    may = _MAY
     no_touch = (
         rf"(?:(?:\bA\s+)?{NEG}\s+{TOUCH}|(?:\bwith\s+)?\bno\s+A\s+(?:{may}\s+)?(?:{TOUCH}|{TOUCHED}|{TOUCHING})|"
         rf"\b(?:never|not|without)\s+{TOUCHING})"
@@ -169,6 +169,7 @@ def read_touch_guards(m: Marked) -> list[tuple[str, str]]:
         rf"\bleave\s+B(?P<x>\d+)\s+(?:alone|untouched|be)\s+{until}\s+{other}",
         rf"\b(?:keep|hold)\s+A\s+(?:off|away\s+from)\s+B(?P<x>\d+)\s+{until}\s+{other}",
         rf"\bB(?P<x>\d+)\s+(?:is|are|stays?|remains?)\s+off\s+limits\s+{until}\s+{other}",
+        rf"\bB(?P<x>\d+)\s+{MODAL}wait\s+{until}\s+{other}",
         rf"\bB(?P<x>\d+)\s+{MODAL}(?:remain|stay|be\s+left|left)\s+untouched\s+{until}\s+{other}",
         rf"\b{after}\s+{other}\s*,?\s*(?:only\s+then\s+)?{may}\s+(?:A\s+)?{TOUCH}\s+B(?P<x>\d+)",
         rf"\b{after}\s+{other}\s*,?\s*(?:only\s+then\s+)?{may}\s+B(?P<x>\d+)\s+be\s+{TOUCHED}(?:\s+by\s+A)?",
@@ -250,6 +251,7 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
     free = rf"{EMPTY}(?:\s+(?:of\s+)?B\d+)?"
     m.sub(rf"\bP(?P<p>\d+)\s+{stay}\s+{free}{PERIOD}", add)
     m.sub(rf"\b(?:keep|leave)\s+P(?P<p>\d+)\s+{free}{PERIOD}", add)
+    m.sub(rf"\bP(?P<p>\d+)\s+(?:is|are|stays?|remains?|{stay})\s+off\s+limits{PERIOD}", add)
     # "regions F, G and H must not be used (during this period)", "do not use F, G or H"
     used = rf"\bP(?P<p>\d+)\s+(?:{may}\s+)?{NEG}\s+be\s+used{PERIOD}|\b{NEG}\s+use\s+P(?P<q>\d+){PERIOD}"
     m.sub(used, add_used)
