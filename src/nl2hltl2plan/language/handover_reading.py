@@ -3,8 +3,11 @@
 `translate_handover(instruction, world)` reads an instruction about the blocks and regions of a
 `handover-square` / `handover-line` world and returns the same `LanguageResult` as the other
 worlds (HTT, base tasks, `before`, leaf formulas, the hierarchical spec) plus `constraints`: the
-guards and joint goals as text, sorted. Phrases are resolved against the instance's layout
-(`language.handover_phrases`). The rules, each general:
+guards and joint goals as text, sorted. Each sentence is normalised and its phrases are resolved
+against the instance's layout (`language.handover_phrases`, word tables in `handover_words`); its
+orders, touch guards and prohibitions are read first (`language.handover_rules`), then its goal
+clauses (`language.handover_goals`); this module builds the task tree and the spec. The rules, each
+general:
 
 - a goal clause "VERB BLOCKS [back] to PLACE" gives one leaf per block: `F(at(B,R1) | at(B,R2) ...)`
   (the opposite side: per block; any empty region: `away(B)`; where another block starts: `@B`);
@@ -13,9 +16,10 @@ guards and joint goals as text, sorted. Phrases are resolved against the instanc
 - a clause that moves several blocks to lasting places also asks for them there at once (a leaf
   `F(state_1 & state_2 ...)`), unless it says "at any time", "one after another" or its places hold
   fewer blocks than it moves;
-- "X should be placed / gets placed / comes before Y" orders X's goal before Y's; "first ..., then
-  ..." makes one node of the steps in order; "after all of these, ..." makes one node of everything
-  said so far and puts the new goal after it;
+- "X should be placed / gets placed / comes before Y" orders X's goal before Y's; "X first" puts X
+  before the other blocks of the latest clause that moves it with others; "first ..., then ..."
+  makes one node of the steps in order; "after all of these, ..." makes one node of everything said
+  so far and puts the new goal after it; orders in a cycle are refused;
 - "the arm cannot touch X until it touched Y" guards X's goal: `(!pick(X) U pick(Y)) & ...`;
 - "no block can be placed on R (during this period)" and "cannot be placed on the area other than the
   target region" guard every goal of the sentence (or, in a sentence of its own, every goal so far)
@@ -29,73 +33,26 @@ a filler; anything else is refused, naming the words.
 from __future__ import annotations
 
 import re
-from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import TypeGuard
 
+import networkx as nx
+
 from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.language.handover_goals import Clause, Goal, crossed_exchanges, goal_clauses, lead
 from nl2hltl2plan.language.handover_phrases import FILLER, Marked, Place, Scene, drop_but, mark
-from nl2hltl2plan.language.handover_words import (
-    AFTER_ALL,
-    DONE,
-    DROP,
-    GERUND,
-    LEAD,
-    MOD,
-    NEG,
-    PERIOD,
-    PREP,
-    TOUCH,
-    TOUCHED,
-    VERB,
+from nl2hltl2plan.language.handover_rules import (
+    Prohibition,
+    read_leaders,
+    read_orders,
+    read_prohibitions,
+    read_touch_guards,
 )
 from nl2hltl2plan.language.htt import HTT, HTTNode
 from nl2hltl2plan.language.result import LanguageResult
 from nl2hltl2plan.language.spec_builder import build_spec
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter, transitive_reduction
 from nl2hltl2plan.worlds.world import World
-
-Prohibition = tuple[list[str], Place | None, list[str], str]  # blocks, place, explicit regions, text
-
-
-@dataclass
-class Goal:
-    block: str
-    place: Place
-    regions: tuple[str, ...]  # resolved labels (empty for away / start_of)
-    text: str
-    drop_guard: set[str] = field(default_factory=set)  # atoms that must not happen until the goal holds
-    touch_guard: list[str] = field(default_factory=list)  # blocks Y: not picked before Y is
-
-    def state(self) -> str:
-        if self.place.kind == "away":
-            return f'"away({self.block})"'
-        if self.place.kind == "start_of" and not self.regions:
-            return f'"at({self.block},@{self.place.block})"'
-        parts = [f'"at({self.block},{r})"' for r in self.regions]
-        return parts[0] if len(parts) == 1 else "(" + " | ".join(parts) + ")"
-
-    def where(self) -> str:
-        if self.place.kind == "away":
-            return "any empty region"
-        if self.place.kind == "start_of" and not self.regions:
-            return f"where {self.place.block.lower()} started"
-        return "|".join(self.regions)
-
-    def leaf(self) -> str:
-        body = f"F {self.state()}"
-        if self.drop_guard:
-            body = "(" + " & ".join(f'!"{a}"' for a in sorted(self.drop_guard)) + f") U {self.state()}"
-        guards = [f'(!"pick({self.block})" U "pick({y})")' for y in self.touch_guard]
-        return " & ".join([*guards, body])
-
-
-@dataclass
-class Clause:
-    goals: list[Goal]
-    text: str
-    marker: str = ""  # "", "first", "then", "after_all"
-    together: bool = False
 
 
 @dataclass
@@ -126,13 +83,20 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
     touches: list[tuple[str, str]] = []
     notes: list[str] = []
     pending: list[Prohibition] = []  # prohibitions stated before any goal
-    for sentence in (s for s in re.split(r"[.;!?]+(?:\s|$)", instruction) if s.strip()):
-        m = mark(sentence, scene)
+    previous: Marked | None = None  # the sentence before ("it", "these regions" in the next one)
+    for sentence in _sentences(instruction):
+        m = mark(sentence, scene, previous)
+        previous = m
         notes += m.notes
-        forbids = _prohibitions(m)
-        touches += _touch_guards(m)
-        orders += _orders(m)
-        new = _goal_clauses(m, scene)
+        forbids = read_prohibitions(m)
+        touches += read_touch_guards(m)
+        sentence_orders = read_orders(m)
+        orders += sentence_orders
+        # "red goes first, blue after red": the order says what "first" means
+        leaders = [b for b in read_leaders(m) if b not in [x for x, _ in sentence_orders]]
+        new = goal_clauses(m, scene)
+        if not new:  # "Step 2: the red block before the blue block": a step of rules only
+            m.sub(r"^\s*then\b", " ")
         drop_but(m)
         _refuse_leftovers(m, sentence)
         scope = [g for c in new for g in c.goals] or [g for c in clauses for g in c.goals]
@@ -141,7 +105,10 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
                 _guard(scope, blocks, place, explicit, scene, text)
             else:
                 pending.append((blocks, place, explicit, text))
-        clauses += new
+        clauses = crossed_exchanges(clauses + new, orders)
+        for block in leaders:
+            lead(clauses, block)
+    orders += [(c.leader, g.block) for c in clauses if c.leader for g in c.goals if g.block != c.leader]
     if not clauses:
         raise HTTError(f"no goal for a block in {instruction!r} (say where each block goes)")
     goals = [g for c in clauses for g in c.goals]
@@ -152,224 +119,18 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
         _guard(goals, blocks, place, explicit, scene, text)
     for x, y in touches:
         _first_goal(goals, x).touch_guard.append(y)
+    _refuse_cyclic(orders)
     root = _tree(clauses)
     for x, y in orders:
         _order(root, _first_goal(goals, x), _first_goal(goals, y))
     return _result(world.name, instruction, root, goals, notes)
 
 
-# ----- clause patterns --------------------------------------------------------------------------------
-def _blocks(m: Marked, k: str) -> list[str]:
-    return m.blocks[int(k)]
-
-
-def _one(m: Marked, k: str, what: str) -> str:
-    names = m.blocks[int(k)]
-    if len(names) != 1:
-        raise HTTError(f"'{m.block_text[int(k)]}' names {len(names)} blocks where {what} needs one")
-    return names[0]
-
-
-def _orders(m: Marked) -> list[tuple[str, str]]:
-    out: list[tuple[str, str]] = []
-    modal = r"(?:should|must|has\s+to|have\s+to|needs?\s+to|is\s+to|are\s+to|will|gets?|is|are)?\s*(?:be\s+)?"
-    tail = rf"(?:\s+(?:is|has\s+been|gets|was)\s+{DONE})?"
-
-    def add(match: re.Match[str], flip: bool) -> str:
-        a, b = _one(m, match.group(1), "an order"), _one(m, match.group(2), "an order")
-        out.append((b, a) if flip else (a, b))
-        return " "
-
-    for word, flip in (
-        (r"(?:before|earlier\s+than|prior\s+to|ahead\s+of)", False),
-        (r"(?:after|later\s+than)", True),
-    ):
-        m.sub(rf"\b(?:{VERB}|{GERUND})\s+B(\d+)\s+{word}\s+B(\d+){tail}", lambda x, f=flip: add(x, f))
-        m.sub(
-            rf"(?:\bwith\s+)?\bB(\d+)\s+{modal}(?:(?:{DONE}|comes?|lands?|arrives?)\s+)?(?:down\s+)?{word}\s+B(\d+)"
-            rf"{tail}",
-            lambda x, f=flip: add(x, f),
-        )
-    return out
-
-
-def _touch_guards(m: Marked) -> list[tuple[str, str]]:
-    out: list[tuple[str, str]] = []
-
-    def add(match: re.Match[str]) -> str:
-        out.append((_one(m, match.group(1), "a touch rule"), _one(m, match.group(2), "a touch rule")))
-        return " "
-
-    until = r"(?:until|before|unless)"
-    # the other block's touch, active ("until an arm touched Y") or passive ("until Y has been touched")
-    other = (
-        rf"(?:(?:A\s+)?(?:has\s+|have\s+|had\s+)?(?:already\s+)?{TOUCHED}\s+B(\d+)|B(\d+)\s+"
-        rf"(?:has\s+been|have\s+been|is|was|had\s+been|gets)\s+(?:already\s+)?{TOUCHED})"
-    )
-
-    def add_either(match: re.Match[str]) -> str:
-        y = match.group(2) or match.group(3)
-        out.append((_one(m, match.group(1), "a touch rule"), _one(m, y, "a touch rule")))
-        return " "
-
-    m.sub(
-        rf"(?:(?:\bA\s+)?{NEG}|\bno\s+A\s+(?:may|can|should|must|will|is\s+allowed\s+to)?)\s+{TOUCH}\s+B(\d+)\s+"
-        rf"{until}\s+{other}",
-        add_either,
-    )
-    m.sub(
-        rf"\bB(\d+)\s+{NEG}\s+be\s+{TOUCHED}\s+(?:by\s+A\s+)?{until}\s+B(\d+)\s+(?:has\s+been|is|was|had\s+been)\s+"
-        rf"(?:already\s+)?{TOUCHED}",
-        add,
-    )
-    return out
-
-
-def _prohibitions(m: Marked) -> list[Prohibition]:
-    """(blocks, place, explicit regions, text) per 'no block can be placed on ...' statement."""
-    out: list[Prohibition] = []
-
-    def add(match: re.Match[str]) -> str:
-        blocks = _blocks(m, match.group("b")) if match.groupdict().get("b") else []
-        place = m.places[int(match.group("p"))]
-        if place.kind == "opposite" and "other" in place.text:  # "the other regions": all but the targets
-            place = Place("complement", text=place.text)
-        explicit = list(place.regions) if place.kind == "regions" else []
-        if place.kind not in ("regions", "complement"):
-            raise HTTError(f"cannot forbid '{place.text}': name the regions")
-        out.append((blocks, None if explicit else place, explicit, match.group(0).strip()))
-        return " "
-
-    down = rf"(?:\s+down)?\s+{PREP}\s+P(?P<p>\d+){PERIOD}"
-    m.sub(
-        r"\b(?:meanwhile|in\s+the\s+meantime|during\s+this\s+(?:period|time)|throughout)\s*,?\s*(?=no\s+B|nothing)",
-        "",
-    )
-    m.sub(
-        rf"\bno\s+B(?P<b>\d+)\s+(?:can|may|should|must|will|is\s+allowed\s+to|are\s+allowed\s+to)?\s*(?:ever\s+)?(?:be\s+)?{DROP}{down}",
-        add,
-    )
-    modal = r"(?:(?:must|may|can|should|shall|will|is|are)\s+)?"
-    m.sub(rf"\bB(?P<b>\d+)\s+{modal}{NEG}\s+(?:ever\s+)?(?:be\s+)?{DROP}{down}", add)
-    m.sub(
-        rf"(?:(?:\bA\s+)?{NEG}|\bno\s+A\s+(?:may|can|should|must|will)?)\s+(?:put|place|drop|set|leave|lay)\s+"
-        rf"B(?P<b>\d+){down}",
-        add,
-    )
-    m.sub(rf"\bnothing\s+(?:can|may|should|must|will)?\s*(?:be\s+)?{DROP}{down}", add)
-    return out
-
-
-def _goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
-    clauses: list[Clause] = []
-
-    def goal(blocks: list[str], place: Place, text: str, mods: str) -> str:
-        text = text.strip()
-        goals = [Goal(b, place, _resolve(place, b, scene), text) for b in blocks]
-        in_turn = re.search(r"one\s+after|one\s+by|one\s+at|in\s+turn", mods) is not None
-        anytime = re.search(r"any\s+time|whenever", mods) is not None
-        room = len({r for g in goals for r in g.regions}) >= len(goals) or place.kind == "start_of"
-        together = len(goals) > 1 and place.kind != "away" and room and not (in_turn or anytime)
-        clauses.append(Clause(goals, text, together=together))
-        return f" G{len(clauses) - 1} "
-
-    def exchange(match: re.Match[str]) -> str:
-        pair = _blocks(m, match.group(1))
-        if len(pair) != 2:
-            raise HTTError(
-                f"exchange needs two blocks, '{m.block_text[int(match.group(1))]}' names {len(pair)}"
-            )
-        x, y = pair
-        goals = [
-            Goal(x, Place("start_of", block=y), (), f"{x.lower()} where {y.lower()} started"),
-            Goal(y, Place("start_of", block=x), (), f"{y.lower()} where {x.lower()} started"),
-        ]
-        clauses.append(Clause(goals, match.group(0).strip(), together=True))
-        return f" G{len(clauses) - 1} "
-
-    def again(before: Clause, x: re.Match[str]) -> str:  # the blocks of `before` to a new place
-        text = x.string[x.start("link") : x.end()]
-        return goal([g.block for g in before.goals], m.places[int(x.group(3))], text, x.group(4))
-
-    mods = rf"((?:\s*,?\s*{MOD})*)"
-    # "one by one, put all three blocks on I": the modifier read where it usually stands, after the object
-    m.sub(rf"\b({MOD})\s*,?\s*({VERB}\s+B\d+)", r"\2 \1")
-
-    def matched(x: re.Match[str], k: int) -> str:  # groups from k: blocks, modifiers, place, modifiers
-        place, text = m.places[int(x.group(k + 2))], x.group(0).strip()
-        return goal(_blocks(m, x.group(k)), place, text, x.group(k + 1) + x.group(k + 3))
-
-    m.sub(
-        r"(?:\bwhile\s+)?\b(?:exchang(?:e|ing)|swap(?:ping)?|switch(?:ing)?|interchang(?:e|ing)|trad(?:e|ing))\s+(?:the\s+)?(?:positions?\s+|places?\s+|locations?\s+|spots?\s+)?(?:of\s+)?B(\d+)(?:\s+(?:s\s+)?(?:positions?|places?|locations?))?",
-        exchange,
-    )
-    m.sub(
-        r"\bB(\d+)\s+(?:should\s+|must\s+)?(?:exchange|swap|switch|trade)\s+(?:their\s+)?(?:positions?|places?|locations?|spots?)",
-        exchange,
-    )
-    m.sub(
-        rf"\b{VERB}\s+B(\d+){mods}\s+(?:back\s+)?{PREP}\s+P(\d+){mods}",
-        lambda x: matched(x, 1),
-    )
-    # the inverse syntax "fill regions H, I and J with the three blocks": as many places as blocks
-    m.sub(rf"\b(?:fill|occupy|populate)\s+P(\d+)\s+with\s+B(\d+){mods}", lambda x: _fill(m, x, goal))
-    m.sub(
-        rf"\bB(\d+)\s+(?:should|must|needs?\s+to|has\s+to|have\s+to|will)?\s*(?:be\s+)?{DONE}{mods}\s+(?:back\s+)?"
-        rf"{PREP}\s+P(\d+){mods}",
-        lambda x: matched(x, 1),
-    )
-    # a verb shared with the clause before: "put the red block in H, then the blue block in I"
-    m.sub(
-        rf"(?<=G\d)(?P<link>\s*,?\s*(?:and\s+)?(?:then\s+)?)B(\d+){mods}\s+(?:back\s+)?{PREP}\s+P(\d+)"
-        rf"{mods}",
-        lambda x: x.group("link") + matched(x, 2),
-    )
-    # the verb and the blocks shared with the clause just before: "to I, then to G", "on I first, then on G"
-    m.sub(
-        rf"\bG(\d+)(?P<link>(?:\s+first\b)?\s*,?\s*(?:and\s+)?then\s+)(?:back\s+)?{PREP}\s+P(\d+){mods}",
-        lambda x: f" G{x.group(1)} {x.group('link')}" + again(clauses[int(x.group(1))], x),
-    )
-    _markers(m, clauses)
-    order = [int(k) for k in re.findall(r"\bG(\d+)\b", m.text)]  # the sentence's order, not the patterns'
-    if sorted(order) != list(range(len(clauses))):  # a clause lost or read twice: never guess
-        raise HTTError(f"cannot tell the order of the goals in {m.text.strip()!r}")
-    return [clauses[k] for k in order]
-
-
-def _fill(m: Marked, x: re.Match[str], goal: Callable[[list[str], Place, str, str], str]) -> str:
-    place, blocks = m.places[int(x.group(1))], _blocks(m, x.group(2))
-    if place.kind != "regions" or len(set(place.regions)) != len(blocks):
-        raise HTTError(f"'{x.group(0).strip()}': fill needs as many named regions as blocks")
-    return goal(blocks, place, x.group(0).strip(), x.group(3))
-
-
-def _markers(m: Marked, clauses: list[Clause]) -> None:
-    def set_marker(match: re.Match[str], marker: str) -> str:
-        clauses[int(match.group(1))].marker = marker
-        return f" G{match.group(1)} "
-
-    m.sub(rf"\b(?:first(?:ly)?|to\s+begin\s+with|start\s+by){LEAD}G(\d+)", lambda x: set_marker(x, "first"))
-    m.sub(
-        rf"(?:,\s*)?(?:\band\s+)?\b(?:then|after\s+that|afterwards?|next|subsequently|later){LEAD}G(\d+)",
-        lambda x: set_marker(x, "then"),
-    )
-    m.sub(rf"\b{AFTER_ALL}{LEAD}G(\d+)", lambda x: set_marker(x, "after_all"))
-    m.sub(r"\bG(\d+)\s+first\b", lambda x: set_marker(x, "first"))
-
-    def anytime(match: re.Match[str]) -> str:
-        clauses[int(match.group(1))].together = False
-        return f" G{match.group(1)} "
-
-    m.sub(r"\b(?:at\s+any\s+time|any\s+time|in\s+any\s+order)\s*,?\s*G(\d+)", anytime)
-    m.sub(r"(?:,\s*)?\band\s+(?=G\d+)", lambda _: " ")
-
-
-def _resolve(place: Place, block: str, scene: Scene) -> tuple[str, ...]:
-    if place.kind == "opposite":
-        return scene.opposite(block)
-    if place.kind in ("regions", "start_of", "away"):
-        return place.regions  # () for "away" and an exchange's start_of
-    raise HTTError(f"'{place.text}' is not a place a block can go to")
+def _sentences(instruction: str) -> list[str]:
+    """Split at '.', ';', '!' and '?', but not in 'i.e.' nor after a step's number ('1. Put ...')."""
+    text = re.sub(r"(^|[.;!?]\s+)(\d)\.\s", r"\1\2) ", instruction)
+    text = re.sub(r"\b[iI]\.\s?[eE]\.", "that is", text)
+    return [s for s in re.split(r"[.;!?]+(?:\s|$)", text) if s.strip()]
 
 
 def _refuse_leftovers(m: Marked, sentence: str) -> None:
@@ -389,12 +150,22 @@ def _guard(
     for g in goals:
         if explicit:
             regions = explicit
+        elif place is not None and place.regions:  # "any region except E, F and G"
+            regions = [r for r in scene.layout.regions if r not in place.regions]
         else:
             if g.place.kind not in ("regions", "opposite"):
                 raise HTTError(f"'{text}': the goal '{g.text}' has no target regions to except")
             regions = [r for r in scene.layout.regions if r not in g.regions]
         for r in regions:
             g.drop_guard.update({f"drop({r})"} if every else {f"put({b},{r})" for b in blocks})
+
+
+def _refuse_cyclic(orders: list[tuple[str, str]]) -> None:
+    """'red before blue' and 'blue before red' (or 'red before itself'): no plan can keep both."""
+    graph = nx.DiGraph(orders)
+    if not nx.is_directed_acyclic_graph(graph):
+        cycle = [x.lower() for x, _ in nx.find_cycle(graph)]
+        raise HTTError(f"the instruction orders the blocks in a cycle: {' before '.join([*cycle, cycle[0]])}")
 
 
 def _first_goal(goals: list[Goal], block: str) -> Goal:

@@ -1,31 +1,208 @@
 """The word classes of the four-arm handover worlds' reader (`handover_reading`), as regular
 expressions: placing verbs and prepositions, modifiers, negations, touching and dropping verbs, the
-"during this period" and "after all of these" phrases, and the polite lead-ins the reader skips."""
+"during this period" and "after all of these" phrases, the polite lead-ins the reader skips, and the
+rewrites that map a writer's variants (synonyms, British forms, common typos) onto the forms read."""
 
-VERB = r"(?:transfer|move|put|place|bring|carry|take|deliver|relocate|shift|get|set|send|return)"
-PREP = r"(?:to|into|onto|on|in|at|towards?|over\s+to|in\s+to|on\s+to)"
+VERB = (
+    r"(?:transfer|move|put|place|bring|carry|take|deliver|relocate|shift|get|set|send|return|distribute|"
+    r"spread|position|drop|arrange|want|need)"
+)
+PREP = r"(?:to|into|onto|on|in|at|towards?|over\s+to|in\s+to|on\s+to|among|across|over)"
 MOD = (
     r"(?:separately|individually|one\s+after\s+another|one\s+by\s+one|one\s+at\s+a\s+time|in\s+turn|each|"
-    r"all|at\s+any\s+time|any\s+time|whenever|as\s+well|too|across|over)"
+    r"all|at\s+any\s+time|any\s+time|whenever|in\s+any\s+order|as\s+well|too|across|over)"
 )
-GERUND = r"(?:placing|putting|moving|transferring|bringing|carrying|delivering)"
-DONE = r"(?:placed|put|moved|transferred|delivered|carried|brought|done|handled|go|goes)"
+GERUND = r"(?:placing|putting|moving|transferring|bringing|carrying|delivering|taking|getting|shifting)"
+DONE = (
+    r"(?:placed|put|moved|transferred|delivered|carried|brought|taken|shifted|relocated|returned|sent|"
+    r"arranged|positioned|distributed|spread|done|handled|set|transfer|move|place|bring|carry|"
+    r"dropped|go|goes|going|end\s+up|ends\s+up|land|lands)"
+)
+# a passive goal's or order's modal: "should", "is to", "can", "has to" ... ("be" follows, optional)
+MODAL = (
+    r"(?:(?:should|must|shall|will|can|may|could|would|has\s+to|have\s+to|needs?\s+to|ought\s+to|is\s+to|"
+    r"are\s+to|gets?|is|are|being)\s+)?(?:(?:all|each|both|first|only|also)\s+)?(?:be\s+)?"
+)
 NEG = (
     r"(?:cannot|can\s+not|can\s+t|must\s+not|mustn\s+t|should\s+not|shouldn\s+t|may\s+not|do\s+not|"
     r"does\s+not|don\s+t|doesn\s+t|(?:is|are)\s+not\s+allowed\s+to|never|not)"
 )
+SWAP = r"(?:exchang(?:e|ing)|swap(?:ping)?|switch(?:ing)?|interchang(?:e|ing)|trad(?:e|ing))"
 TOUCH = r"(?:touch|pick\s+up|pick|grasp|grab|handle|move|lift)"
 TOUCHED = (
     r"(?:touched|picked\s+up|picked|grasped|grabbed|handled|moved|lifted|touches|picks\s+up|grabs|moves)"
 )
-DROP = r"(?:placed|put|dropped|set|left|laid)"
-PERIOD = (
-    r"(?:\s*,?\s*(?:during\s+this\s+(?:period|time)|in\s+the\s+meantime|meanwhile|while\s+doing\s+(?:so|this)|"
-    r"until\s+then|throughout|at\s+any\s+time|ever|at\s+all))?"
+TOUCHING = r"(?:touching|picking\s+up|picking|grabbing|grasping|handling|lifting|moving)"
+DROP = r"(?:placed|put|dropped|set|left|laid)(?:\s+down)?"
+# "during this period": a prohibition's scope, the goals of its sentence (else all goals so far)
+PERIOD_WORDS = (
+    r"(?:(?:during|in)\s+(?:this|that|the\s+same)\s+(?:whole\s+|entire\s+)?(?:period|time)|in\s+the\s+meantime|meanwhile|"
+    r"while\s+doing\s+(?:so|this|that|it)|while\s+(?:this|that)\s+(?:happens|is\s+happening|goes\s+on|is\s+going\s+on)|"
+    r"at\s+the\s+same\s+time|in\s+the\s+process|all\s+the\s+while|the\s+whole\s+time|"
+    r"throughout(?:\s+(?:this|the|that)\s+(?:process|period|time))?|until\s+then)"
 )
+PERIOD = rf"(?:\s*,?\s*(?:{PERIOD_WORDS}|at\s+any\s+time|ever|at\s+all))?"
+EMPTY = r"(?:empty|free|clear|unoccupied|vacant)"
+DONE_STATE = r"(?:done|finished|complete|completed|over)"
 AFTER_ALL = (
-    r"(?:after\s+all\s+(?:of\s+)?(?:these|this|that|the\s+above)|after\s+all\s+that|once\s+(?:all\s+)?"
-    r"(?:this|these|that)\s+(?:is|are|has\s+been|have\s+been)\s+done|when\s+(?:all\s+)?(?:this|these|that)\s+"
-    r"(?:is|are)\s+done|finally|lastly|at\s+the\s+end|in\s+the\s+end)"
+    r"(?:(?:once|when|after)\s+(?:all\s+(?:of\s+)?)?(?:this|these|that|it|everything(?:\s+else)?|the\s+above)(?:\s+all)?\s+"
+    rf"(?:is|are|has\s+been|have\s+been)\s+(?:all\s+)?{DONE_STATE}|(?:once|when)\s+{DONE_STATE}|"
+    rf"(?:once|when|after)\s+(?:you|we)\s*(?:'\s*re|'\s*ve\s+been|\s+are|\s+have\s+been)\s+(?:all\s+)?{DONE_STATE}|"
+    r"after\s+(?:all\s+(?:of\s+)?(?:these|this|that|"
+    r"the\s+above)|everything(?:\s+else)?)|finally|lastly|last\s+of\s+all|at\s+the\s+(?:very\s+)?end|in\s+the\s+end|"
+    r"as\s+(?:a|the)\s+(?:final|last)\s+step)"
+)
+THEN = (
+    r"(?:then|after\s+that|afterwards?|next|subsequently|later|and\s+then|(?:and\s+)?from\s+there|"
+    r"after\s+which)"
+)
+# a place named again in other words: "the placement area, which consists of regions E, F and G"
+APPOSITION = (
+    r"(?:\(|which\s+(?:is|are)\s+made\s+up\s+of|(?:which\s+(?:is|are|lies?|sits?)\s+|that\s+(?:is|are|lies?)\s+)?"
+    r"(?:to|on|at|in)|that\s+is|"
+    r"which\s+(?:is|are|consists\s+of|comprises|includes|lies|lie)|consisting\s+of|comprising|"
+    r"made\s+up\s+of|namely|:)"
 )
 LEAD = r"\s*,?\s*(?:you\s+should\s+|please\s+|we\s+should\s+)?"
+
+# Rewrites applied to the lower-cased sentence before any phrase is read: each maps a variant onto the
+# form the patterns read and changes no meaning ("prior to" -> "before", "whilst" -> "while").
+REWRITES: tuple[tuple[str, str], ...] = (
+    (r"\bi\s*\.\s*e\s*\.?(?=\s|,|$)", " that is "),
+    (r"^\s*(?:your|the|my)\s+(?:job|task|goal|mission|assignment)\s*(?:is\s+to\b|:)", "please"),
+    (r"(?<=s)'(?=\s|$)", ""),  # the blocks' positions -> the blocks positions
+    (r"\bwhilst\b", "while"),
+    (r"\bcan\s*'\s*t\b", "cannot"),
+    (r"\bwon\s*'\s*t\b", "will not"),
+    (r"\bshan\s*'\s*t\b", "shall not"),
+    (r"n\s*'\s*t\b", " not"),
+    (r"\bamongst\b", "among"),
+    (r"\b(?:i|we)\s*(?:'\s*d|would)\s+like\s+(?:you\s+)?to\b", "please"),
+    (r"\b(?:i|we)\s+(?:want|need)\s+you\s+to\b", "please"),
+    (r"\b(?:could|can|would|will)\s+you\s+(?:please\s+)?", "please "),
+    (r"\blet\s*'?\s*s\b|\blet\s+us\b|\bgo\s+ahead\s+and\b", "please"),
+    (r"\banytime\b|\bin\s+any\s+time\b", "at any time"),
+    (
+        r"\b(?:whenever\s+(?:you\s+(?:like|want|wish|please|can)|convenient|possible|it\s+suits\s+you)|"
+        r"at\s+(?:any|whatever)\s+(?:point(?:\s+in\s+time)?|moment|stage)|any\s+time\s+you\s+(?:like|want))\b",
+        "at any time",
+    ),
+    (r"\bat\s+any\s+time\s+at\s+any\s+time\b", "at any time"),
+    (
+        r"\b(?:sequentially|in\s+sequence|successively|in\s+succession|consecutively|one\s+after\s+the\s+other)\b",
+        "one after another",
+    ),
+    (r"\b(?:earlier\s+than|prior\s+to|ahead\s+of|in\s+advance\s+of|sooner\s+than)\b", "before"),
+    (r"\blater\s+than\b", "after"),
+    (r"\buntil\s+after\b", "until"),
+    (r"\b(?:i|we)\s*(?:'\s*d|would)\s+like\b", "want"),
+    # framing that announces a rule: "there is one ordering requirement:", "with the rule that"
+    (
+        r"\bthere\s+(?:is|are)\s+(?:one|a|an|another|two|some)\s+(?:\w+\s+)?(?:requirement|restriction|constraint|"
+        r"condition|rule)s?\s*:",
+        " ",
+    ),
+    (r"\s*,?\s*\bwith\s+the\s+(?:rule|condition|constraint|requirement|restriction)\s+that\b", ","),
+    (r"\bin\s+addition\b", " "),
+    (r"^\s*(?:order|ordering|sequence|constraint|rule)\s*:", " "),
+    (r"\bunder\s+no\s+circumstances\s+(?=(?:place|put|drop|set|touch|move)\b)", "never "),
+    (r"\bat\s+some\s+(?:point|time)\b", "at any time"),
+    (r"\bnothing\s+else\b", "nothing"),
+    (r"\bno\s+other\s+(?=(?:blocks?|objects?|items?|cubes?|pillars?|pieces?)\b)", "no "),
+    (r"\bthe\s+(?:last|final)\s+step\s+is\s+to\b", "finally"),
+    (r"\bthe\s+first\s+step\s+is\s+to\b", "first"),
+    (r"\bthe\s+(?:next|second)\s+step\s+is\s+to\b", "then"),
+    (
+        r"\bthe\s+first\s+(?:block|object|one)\s+(?:to\s+be\s+placed|placed|to\s+go)\s+(?:must|should|has\s+to|will)\s+be\s+"
+        r"(?:the\s+)?(red|blue|yellow)(?:\s+(?:block|one))?",
+        r"\1 first",
+    ),
+    (r"\b(?:any|either)\s+of\s+(?=(?:the\s+)?(?:regions?|areas?|zones?)\b)", ""),
+    (
+        r"\b(?:plan|find|give|compute)\s+(?:a\s+)?(?:solution|plan)\s+(?:that|which)\s+(move|put|place|transfer|bring)s\b",
+        r"\1",
+    ),
+    (r"\b(?:manipulators|grippers|end\s+effectors|robotic\s+arms)\b", "arms"),
+    (r"\b(?:manipulator|gripper|end\s+effector|robotic\s+arm)\b", "arm"),
+    (r"\bbe\s+in\s+place\b", "be placed"),
+    (r"\bin\s+(?:an|the|such\s+an)\s+order\s+(?:where|in\s+which|that|such\s+that)\b", ","),
+    (r"\s*,?\s*\bsubject\s+to\s+the\s+(?:constraint|condition|rule|requirement)\s+that\b", ","),
+    # "under no circumstances should an object be put on R": an object should never be put on R
+    (
+        r"\b(?:under\s+no\s+circumstances|at\s+no\s+(?:time|point))\s+(should|may|can|must|shall|is|are)\s+"
+        r"(an?\s+\w+|any\s+\w+|objects|blocks|nothing|anything)\s+be\b",
+        r"\2 \1 never be",
+    ),
+    (r"\bpreceding\b", "before"),
+    (r"\b(?<!the\s)following\b", "after"),
+    # where the blocks start adds nothing to where they go: "from their current regions"
+    (
+        r"\bfrom\s+(?:their|its|the)\s+(?:current|present|starting|initial|original)\s+"
+        r"(?:regions?|positions?|places?|locations?|spots?|sides?)\b",
+        " ",
+    ),
+    (r"\bit\s+is\s+(?:required|necessary|important|essential)\s+that\b", " "),
+    # a numbered step: the first, or one after the step before
+    (r"^\s*(?:step\s+(?:1|one)\s*:?|1\s*[):]|\(\s*1\s*\))\s*", "first "),
+    (r"^\s*(?:step\s+(?:[2-9]|two|three|four|five)\s*:?|[2-9]\s*[):]|\(\s*[2-9]\s*\))\s*", "then "),
+    (r"\b(?:remember|be\s+sure|make\s+sure|do\s+not\s+forget|note|keep\s+in\s+mind)\s+(?:to|that)\b", " "),
+    (r"\bprecedes?\b", "comes before"),
+    (r"\bfollows?\b", "comes after"),
+    (r"\b(?:nobody|no\s+one|none\s+of\s+the\s+(?:robot\s+)?arms)\b", "no arm"),
+    (
+        r"\b(?:do\s+not|don\s*'\s*t)\s+let\s+(?:any\s+|an?\s+|the\s+)?(?:robot\s+)?(?:arms?|robots?)\s+",
+        "no arm may ",
+    ),
+    # "the regions across from where they are now": the opposite side
+    (
+        r"\b(?:the\s+)?(?:regions?|areas?|side|zones?)\s+across\s+from\s+(?:where\s+(?:they|it|the\s+blocks?)\s+"
+        r"(?:are|is|start|started|were|was|lie|sit)(?:\s+(?:now|currently|at\s+first))?|it|them)\b",
+        "the opposite side",
+    ),
+    # "put it on I before putting it on G": the steps in order
+    (
+        r"\s*,?\s*\bbefore\s+(?:placing|putting|moving|bringing|transferring|taking|carrying|setting)\b",
+        ", then put",
+    ),
+)
+
+# "avoid placing", "refrain from touching", "without putting": a negated verb
+NEGATED_GERUNDS = {
+    "placing": "place",
+    "putting": "put",
+    "dropping": "drop",
+    "setting": "set",
+    "touching": "touch",
+    "grabbing": "grab",
+    "picking up": "pick up",
+}
+REWRITES += tuple(
+    (rf"\b(?:avoid|refrain\s+from)\s+{gerund}\b", f"do not {verb}")
+    for gerund, verb in NEGATED_GERUNDS.items()
+)
+REWRITES += tuple(
+    (rf"\s*,?\s*\b(?:without\s+(?:ever\s+)?|never\s+){gerund}\b", f" and never {verb}")
+    for gerund, verb in NEGATED_GERUNDS.items()
+    if verb not in ("touch", "grab", "pick up")  # "without touching X before Y" is a touch rule
+)
+
+# Common typos of the words that carry the meaning: a transposed, dropped or doubled letter (not the
+# first) of a word of five letters or more; forms that are English words themselves are left alone.
+TYPO_WORDS = (
+    "block blocks region regions opposite place placed transfer before after yellow pillar pillars object "
+    "objects separately another empty touch touched exchange position positions should until during period "
+    "please first other across"
+).split()
+REAL_WORDS = frozenset("pace paced touche fist firs pease pleas".split())
+
+
+def typo_table() -> dict[str, str]:
+    """misspelling -> word, for the words of `TYPO_WORDS` (a misspelling that two words share is left out)."""
+    seen: dict[str, set[str]] = {}
+    for word in (w for w in TYPO_WORDS if len(w) >= 5):
+        forms = {word[:i] + word[i + 1] + word[i] + word[i + 2 :] for i in range(1, len(word) - 1)}
+        forms |= {word[:i] + word[i + 1 :] for i in range(1, len(word))}
+        forms |= {word[:i] + word[i] + word[i:] for i in range(1, len(word))}
+        for form in forms - set(TYPO_WORDS) - REAL_WORDS:
+            seen.setdefault(form, set()).add(word)
+    return {form: next(iter(words)) for form, words in seen.items() if len(words) == 1}

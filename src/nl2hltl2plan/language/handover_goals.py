@@ -1,0 +1,301 @@
+"""The goal clauses of a handover sentence (`handover_reading`): "VERB BLOCKS (back) to PLACE" in its
+active, gerund, passive and heading forms, the inverse "fill R with BLOCKS", exchanges, the same blocks
+"then to G", and the markers of a clause ("first", "then", "after all of these", "at any time"). A
+clause gives a `Goal` per block; several blocks to lasting places are also asked for at once.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.language.handover_phrases import Marked, Place, Scene
+from nl2hltl2plan.language.handover_rules import blocks_of
+from nl2hltl2plan.language.handover_words import (
+    AFTER_ALL,
+    DONE,
+    GERUND,
+    LEAD,
+    MOD,
+    MODAL,
+    PERIOD_WORDS,
+    PREP,
+    SWAP,
+    THEN,
+    VERB,
+)
+
+
+@dataclass
+class Goal:
+    block: str
+    place: Place
+    regions: tuple[str, ...]  # resolved labels (empty for away / start_of)
+    text: str
+    drop_guard: set[str] = field(default_factory=set)  # atoms that must not happen until the goal holds
+    touch_guard: list[str] = field(default_factory=list)  # blocks Y: not picked before Y is
+
+    def state(self) -> str:
+        if self.place.kind == "away":
+            return f'"away({self.block})"'
+        if self.place.kind == "start_of" and not self.regions:
+            return f'"at({self.block},@{self.place.block})"'
+        parts = [f'"at({self.block},{r})"' for r in self.regions]
+        return parts[0] if len(parts) == 1 else "(" + " | ".join(parts) + ")"
+
+    def where(self) -> str:
+        if self.place.kind == "away":
+            return "any empty region"
+        if self.place.kind == "start_of" and not self.regions:
+            return f"where {self.place.block.lower()} started"
+        return "|".join(self.regions)
+
+    def leaf(self) -> str:
+        body = f"F {self.state()}"
+        if self.drop_guard:
+            body = "(" + " & ".join(f'!"{a}"' for a in sorted(self.drop_guard)) + f") U {self.state()}"
+        guards = [f'(!"pick({self.block})" U "pick({y})")' for y in self.touch_guard]
+        return " & ".join([*guards, body])
+
+
+@dataclass
+class Clause:
+    goals: list[Goal]
+    text: str
+    marker: str = ""  # "", "first", "then", "after_all"
+    leader: str = ""  # a block placed before the clause's other blocks ("swap red and blue, red first")
+    together: bool = False
+
+
+def goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
+    """The sentence's goal clauses, in the sentence's order (a clause lost or read twice is refused)."""
+    clauses: list[Clause] = []
+
+    def goal(blocks: list[str], place: Place, text: str, mods: str) -> str:
+        text = text.strip()
+        goals = [Goal(b, place, _resolve(place, b, scene), text) for b in blocks]
+        in_turn = re.search(r"one\s+after|one\s+by|one\s+at|in\s+turn", mods) is not None
+        anytime = re.search(r"any\s+time|whenever", mods) is not None
+        room = len({r for g in goals for r in g.regions}) >= len(goals) or place.kind == "start_of"
+        together = len(goals) > 1 and place.kind != "away" and room and not (in_turn or anytime)
+        clauses.append(Clause(goals, text, together=together))
+        return f" G{len(clauses) - 1} "
+
+    def exchange(match: re.Match[str], other: str = "") -> str:
+        pair = blocks_of(m, match.group(1)) + (blocks_of(m, other) if other else [])
+        if len(pair) != 2:
+            raise HTTError(
+                f"exchange needs two blocks, '{m.block_text[int(match.group(1))]}' names {len(pair)}"
+            )
+        x, y = pair
+        goals = [
+            Goal(x, Place("start_of", block=y), (), f"{x.lower()} where {y.lower()} started"),
+            Goal(y, Place("start_of", block=x), (), f"{y.lower()} where {x.lower()} started"),
+        ]
+        clauses.append(Clause(goals, match.group(0).strip(), together=True))
+        return f" G{len(clauses) - 1} "
+
+    def again(before: Clause, x: re.Match[str]) -> str:  # the blocks of `before` to a new place
+        text = x.string[x.start("link") : x.end()]
+        return goal([g.block for g in before.goals], m.places[int(x.group(3))], text, x.group(4))
+
+    mods = rf"((?:\s*,?\s*{MOD})*)"
+    # "one by one, put all three blocks on I": the modifier read where it usually stands, after the object
+    m.sub(rf"\b({MOD})\s*,?\s*({VERB}\s+B\d+)", r"\2 \1")
+
+    def matched(x: re.Match[str], k: int) -> str:  # groups from k: blocks, modifiers, place, modifiers
+        place, text = m.places[int(x.group(k + 2))], x.group(0).strip()
+        return goal(blocks_of(m, x.group(k)), place, text, x.group(k + 1) + x.group(k + 3))
+
+    _read_exchanges(m, exchange)
+    _read_sources(m, scene)
+    m.sub(
+        rf"(?:\bwhile\s+)?\b(?:{VERB}|{GERUND})\s+B(\d+){mods}(?:\s+first)?\s*,?\s+"
+        rf"(?:to\s+(?:be\s+)?(?:{DONE}\s+)?|be\s+(?:{DONE}\s+)?|end\s+up\s+)?"
+        rf"(?:back\s+)?{PREP}\s+P(\d+){mods}",
+        lambda x: matched(x, 1),
+    )
+    # a heading-like goal at the start of a sentence or after a comma: "pillars to E, F and G"
+    m.sub(
+        rf"(?:^|(?<=,))\s*B(\d+){mods}\s*(?::\s*|,?\s*(?:to|into|onto)\s+)P(\d+){mods}(?:\s+first\b)?(?=\s*(?:$|,|\band\b))",
+        lambda x: matched(x, 1),
+    )
+    # "put one block in each of regions H, I and J": every block, one per region (as many as blocks)
+    m.sub(
+        rf"\b{VERB}\s+(?:one|a|a\s+single)\s+(?:block|object|cube|pillar|item)\s+(?:in|on|into|onto|to)\s+(?:each|every)\s+"
+        rf"(?:one\s+)?(?:of\s+)?P(\d+)(?P<b>){mods}",
+        lambda x: _fill(m, x, goal, scene.blocks),
+    )
+    # the inverse syntax "fill regions H, I and J with the three blocks": as many places as blocks
+    m.sub(rf"\b(?:fill|occupy|populate|load)\s+P(\d+)\s+with\s+B(\d+){mods}", lambda x: _fill(m, x, goal))
+    m.sub(
+        rf"\b(?:each\s+of\s+)?P(\d+)\s+{MODAL}(?:each\s+)?(?:receive|get|take|hold|contain)s?\s+(?:exactly\s+|just\s+)?"
+        rf"(?:one\s+of\s+)?B(\d+){mods}",
+        lambda x: _fill(m, x, goal),
+    )
+    m.sub(
+        rf"(?:\bwith\s+)?\bB(\d+)\s+{MODAL}{DONE}{mods}(?:\s+first)?\s+(?:back\s+)?"
+        rf"{PREP}\s+P(\d+){mods}",
+        lambda x: matched(x, 1),
+    )
+    # a verb shared with the clause before: "put the red block in H, then the blue block in I"
+    m.sub(
+        rf"(?<=G\d)(?P<link>\s*,?\s*(?:and\s+)?(?:then\s+)?)B(\d+){mods}\s+(?:back\s+)?{PREP}\s+P(\d+)"
+        rf"{mods}",
+        lambda x: x.group("link") + matched(x, 2),
+    )
+    # the verb and the blocks shared with the clause just before: "to I, then to G", "on I first, then on G"
+    m.sub(
+        rf"\bG(\d+)(?P<link>(?:\s+first\b)?\s*,?\s*(?:and\s+)?(?:{THEN}{LEAD}|followed\s+by\s+))(?:back\s+)?(?:{PREP}\s+)?"
+        rf"P(\d+){mods}",
+        lambda x: f" G{x.group(1)} then " + again(clauses[int(x.group(1))], x),
+    )
+    m.sub(  # "on I first and on G second": the second place named after the first
+        rf"\bG(\d+)(?P<link>\s+first\s*,?\s*and\s+)(?:back\s+)?{PREP}\s+P(\d+){mods}\s+(?:second|next|afterwards?|last)\b",
+        lambda x: f" G{x.group(1)} then " + again(clauses[int(x.group(1))], x),
+    )
+    _markers(m, clauses)
+    order = [int(k) for k in re.findall(r"\bG(\d+)\b", m.text)]  # the sentence's order, not the patterns'
+    if sorted(order) != list(range(len(clauses))):  # a clause lost or read twice: never guess
+        raise HTTError(f"cannot tell the order of the goals in {m.text.strip()!r}")
+    return [clauses[k] for k in order]
+
+
+def _read_exchanges(m: Marked, exchange: Callable[..., str]) -> None:
+    """'exchange the positions of X and Y', 'swap X with Y', 'X and Y should trade places', 'the positions
+    of X and Y should be swapped' (and '..., so that each ends up where the other was')."""
+    m.sub(  # "swap the red block with the blue block"
+        rf"\b{SWAP}\s+(?:the\s+)?(?:positions?\s+of\s+)?B(\d+)(?:\s+(?:s\s+)?(?:positions?|places?|locations?))?\s+(?:with|and)\s+"
+        r"B(\d+)(?:\s+(?:s\s+)?(?:positions?|places?|locations?))?",
+        lambda x: exchange(x, x.group(2)),
+    )
+    m.sub(
+        rf"(?:\bwhile\s+)?\b{SWAP}\s+(?:the\s+)?(?:positions?\s+|places?\s+|locations?\s+|spots?\s+)?(?:of\s+)?B(\d+)(?:\s+(?:s\s+)?(?:positions?|places?|locations?))?(?:\s+(?:around|round|over|with\s+each\s+other|with\s+one\s+another))?",
+        exchange,
+    )
+    m.sub(
+        rf"(?:\bwhile\s+|\b(?:want|need|have)\s+)?\bB(\d+)\s+(?:to\s+)?{MODAL}(?:exchange|swap|switch|trade)s?\s+(?:their\s+)?"
+        r"(?:positions?|places?|locations?|spots?)",
+        exchange,
+    )
+    m.sub(rf"\b{SWAP}\s+(?:the\s+places\s+)?where\s+B(\d+)\s+(?:are|stand|sit|lie)\b", exchange)
+    m.sub(  # "the positions of the red and blue blocks should be swapped"
+        rf"\b(?:the\s+)?(?:positions?|places?|locations?)\s+of\s+B(\d+)\s+{MODAL}(?:swapped|exchanged|switched|interchanged)",
+        exchange,
+    )
+    # "... so that each ends up where the other was": what an exchange is
+    m.sub(
+        r"(?<=G\d)\s*,?\s*so\s+that\s+each\s+(?:one\s+)?(?:ends\s+up|is|goes|lands|sits)\s+(?:where|in\s+the\s+place)\s+"
+        r"the\s+other\s+(?:one\s+)?(?:was|is|started|stood|had\s+been)\b|(?<=G\d)\s*,?\s*so\s+that\s+each\s+(?:one\s+)?"
+        r"(?:occupies|takes|gets|ends\s+up\s+(?:in|on)|goes\s+to)\s+the\s+other\s+(?:one\s+)?s\s+"
+        r"(?:original\s+|initial\s+|starting\s+)?(?:position|place|spot|location|region)\b",
+        " ",
+    )
+
+
+def _read_sources(m: Marked, scene: Scene) -> None:
+    """'move the blocks from the side of arm a and arm b to ...': where they start, which must be so."""
+
+    def check(match: re.Match[str]) -> str:
+        source = m.places[int(match.group(2))]
+        for block in blocks_of(m, match.group(1)):
+            if source.kind != "regions" or scene.start_region(block) not in source.regions:
+                raise HTTError(f"the {block.lower()} block does not start on '{source.text}'")
+        return f" B{match.group(1)} "
+
+    m.sub(r"\bB(\d+)\s+(?:away\s+)?from\s+P(\d+)", check)
+
+
+def _fill(
+    m: Marked,
+    x: re.Match[str],
+    goal: Callable[[list[str], Place, str, str], str],
+    every: list[str] | None = None,
+) -> str:
+    place, blocks = m.places[int(x.group(1))], every or blocks_of(m, x.group(2))
+    if place.kind != "regions" or len(set(place.regions)) != len(blocks):
+        raise HTTError(f"'{x.group(0).strip()}': fill needs as many named regions as blocks")
+    return goal(blocks, place, x.group(0).strip(), x.group(3))
+
+
+def _markers(m: Marked, clauses: list[Clause]) -> None:
+    def set_marker(match: re.Match[str], marker: str) -> str:
+        clauses[int(match.group(1))].marker = marker
+        return f" G{match.group(1)} "
+
+    m.sub(rf"\b(?:first(?:ly)?|to\s+begin\s+with|start\s+by){LEAD}G(\d+)", lambda x: set_marker(x, "first"))
+    m.sub(
+        rf"(?:,\s*)?(?:\band\s+)?\b{THEN}{LEAD}G(\d+)",
+        lambda x: set_marker(x, "then"),
+    )
+    m.sub(rf"\b(?:then\s*,?\s*)?{AFTER_ALL}{LEAD}G(\d+)", lambda x: set_marker(x, "after_all"))
+    m.sub(  # "put the yellow block back on G at the end"
+        r"\bG(\d+)\s*,?\s*(?:at\s+the\s+(?:very\s+)?end|in\s+the\s+end|lastly|finally|last|as\s+the\s+(?:last|final)\s+step)\b",
+        lambda x: set_marker(x, "after_all"),
+    )
+    m.sub(r"\bG(\d+)\s+first\b", lambda x: set_marker(x, "first"))
+
+    def anytime(match: re.Match[str]) -> str:
+        clauses[int(match.group(1))].together = False
+        return f" G{match.group(1)} "
+
+    m.sub(r"\b(?:at\s+any\s+time|any\s+time|in\s+any\s+order)\s*,?\s*G(\d+)", anytime)
+    # "meanwhile, move ...", "..., while the red block goes ...": a goal with no order to the others, as
+    # any goal without a marker
+    m.sub(rf"\b(?:{PERIOD_WORDS}|while)\s*,?\s*(?=G\d+|at\s+any\s+time)", " ")
+    m.sub(r"(?:,\s*)?\band\s+(?=G\d+)", lambda _: " ")
+
+
+def _resolve(place: Place, block: str, scene: Scene) -> tuple[str, ...]:
+    if place.kind == "opposite":
+        return scene.opposite(block)
+    if place.kind in ("regions", "start_of", "away"):
+        return place.regions  # () for "away" and an exchange's start_of
+    raise HTTError(f"'{place.text}' is not a place a block can go to")
+
+
+def crossed_exchanges(clauses: list[Clause], orders: list[tuple[str, str]]) -> list[Clause]:
+    """'put the red block where the blue block is and the blue block where the red block is' (also in
+    two sentences, '... then ...': red before blue) is the exchange of their positions."""
+    out = list(clauses)
+    for first in clauses:
+        g = first.goals[0]
+        if first not in out or len(first.goals) != 1 or g.place.kind != "start_of":
+            continue
+        if first.marker == "after_all":
+            continue
+        second = next(
+            (
+                c
+                for c in out[out.index(first) + 1 :]
+                if len(c.goals) == 1
+                and c.marker in ("", "then")
+                and c.goals[0].place.kind == "start_of"
+                and (c.goals[0].block, c.goals[0].place.block) == (g.place.block, g.block)
+            ),
+            None,
+        )
+        if second is None:
+            continue
+        h = second.goals[0]
+        if second.marker == "then":
+            orders.append((g.block, h.block))
+        g.regions = h.regions = ()  # where the other started: `@B`, as an exchange
+        merged = Clause([g, h], f"{first.text}; {second.text}", marker=first.marker, together=True)
+        out[out.index(first)] = merged
+        out.remove(second)
+    return out
+
+
+def lead(clauses: list[Clause], block: str) -> None:
+    """'swap red and blue, red first', 'the red block has to be placed first': the block goes before the
+    other blocks of the latest clause that moves it with others."""
+    for clause in reversed(clauses):
+        if len(clause.goals) > 1 and block in [g.block for g in clause.goals]:
+            clause.leader = block
+            return
+    raise HTTError(
+        f"'the {block.lower()} block first': first among which blocks? (say 'before the ... block')"
+    )
