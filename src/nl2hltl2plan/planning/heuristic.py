@@ -51,7 +51,7 @@ from nl2hltl2plan.planning.node import Node, bound
 from nl2hltl2plan.planning.opens import forced_closes, forced_opens
 from nl2hltl2plan.planning.relax import BIG, OTHER, PICKUP, PUT, EventRow, solve
 from nl2hltl2plan.planning.state import Expander
-from nl2hltl2plan.planning.tour import tour_walk
+from nl2hltl2plan.planning.tour import chain_walk, tour_walk
 from nl2hltl2plan.worlds.simulator import PRESENT
 
 EMPTY = ""  # the hand right after a put
@@ -275,7 +275,7 @@ class Heuristic:
         carry = 0 if self.light else carry_total(self, node, memo)
         walk = self._assignment(node, rows, optional, hands, carry) if rows else carry
         if node.parent is None and not fixed and not self.light:  # once at the root (tour.py)
-            walk = max(walk, tour_walk(self, node, rows))
+            walk = max(walk, tour_walk(self, node, rows), chain_walk(self, node, rows))
         support = forced_opens(self.x, self.required, node) + forced_closes(self.x, self.required, node)
         total = len(rows) + extra_events + walk + support
         if not self.makespan:

@@ -33,7 +33,7 @@ import numpy as np
 
 from nl2hltl2plan.planning.navigation import INF
 from nl2hltl2plan.planning.node import Node
-from nl2hltl2plan.planning.relax import EventRow
+from nl2hltl2plan.planning.relax import BIG, EventRow, solve
 
 if TYPE_CHECKING:
     from nl2hltl2plan.planning.heuristic import Heuristic
@@ -117,3 +117,56 @@ def _forest(dm: np.ndarray, stops: list[np.ndarray], start: np.ndarray) -> int:
                 sub = (sub - 1) & mask
         cover = nxt
     return int(cover[full]) if cover[full] < INF else 0
+
+
+def chain_walk(h: Heuristic, node: Node, rows: list[EventRow]) -> int:
+    """The robots' walks pass through the pending events in time order, so through any chain of
+    them that must happen one after another (a leaf's events in their order; every event of a leaf
+    before every event of a leaf ordered after it). The chain taken is the longest one by
+    region-to-region steps. One robot walks it, cell by cell (a layered shortest path); several
+    robots split it, each walking its part in the chain's order: each chain event follows a robot's
+    start or an earlier chain event, each of those precedes at most one, an assignment (no cycle can
+    form: predecessors come earlier), walked region to region."""
+    events = [i for i, row in enumerate(rows) if row.anchors]
+    if not events:
+        return 0
+    leaf = np.array([rows[i].leaf for i in events])
+    pos = np.array([rows[i].pos for i in events])
+    # before[a, b]: event a happens before event b
+    before = ((leaf[:, None] == leaf[None, :]) & (pos[:, None] < pos[None, :])) | h.after[np.ix_(leaf, leaf)]
+    anchors = [list(rows[i].anchors) for i in events]
+    step = np.array([[int(h.rr[np.ix_(a, b)].min()) for b in anchors] for a in anchors])
+    flat = h.robot_walks(node, np.array([a for ax in anchors for a in ax], dtype=np.int64))
+    offsets = np.cumsum([0] + [len(ax) for ax in anchors])
+    reach = np.array([flat[offsets[k]:offsets[k + 1]].min(axis=0) for k in range(len(events))])  # x robots
+    chain = _longest_chain(before, step, reach.min(axis=1))
+    if len(node.cell) > 1:
+        return _split_chain(step[np.ix_(chain, chain)], reach[chain])
+    cells = [np.unique(np.concatenate([h.nav.region_idx[a] for a in anchors[k]])) for k in chain]
+    walk = h._robot_walks_to_cells(node, cells[0])[0]
+    for prev, cur in zip(cells, cells[1:], strict=False):
+        walk = (walk[:, None] + h.nav.dm[np.ix_(prev, cur)]).min(axis=0)
+    return int(walk.min()) if walk.min() < INF else 0
+
+
+def _longest_chain(before: np.ndarray, step: np.ndarray, reach: np.ndarray) -> list[int]:
+    """The events (indices) of the chain of the most region-to-region walking, in time order."""
+    order = sorted(range(len(reach)), key=lambda k: (int(before[:, k].sum()), k))  # topological
+    longest = np.minimum(reach, BIG).astype(np.int64)
+    back = [-1] * len(reach)
+    for k in order:
+        for j in order:
+            if before[j, k] and longest[j] + step[j, k] > longest[k]:
+                longest[k], back[k] = longest[j] + step[j, k], j
+    chain = [int(np.argmax(longest))]
+    while back[chain[-1]] >= 0:
+        chain.append(back[chain[-1]])
+    return chain[::-1]
+
+
+def _split_chain(step: np.ndarray, reach: np.ndarray) -> int:
+    """Least walk of robots serving a chain in order: `step` chain x chain, `reach` chain x robots."""
+    n = len(step)
+    earlier = np.tril(np.ones((n, n), dtype=bool), k=-1)  # [b, a]: a comes before b
+    cost = np.hstack([np.where(earlier, step.T, BIG), reach]).astype(np.int64)
+    return solve(np.minimum(cost, BIG))
