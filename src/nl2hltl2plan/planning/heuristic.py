@@ -21,8 +21,9 @@ bounds on the walking (`bounds.py`: the carries, binding-consistent, plus the pi
 a spanning tree from the robots) and the pickups' approach and carry as one walk through one cell
 of the object's region are computed beside it and the largest is kept; every support open that every
 completion needs adds 1 (also one per event, of a family with disjoint openables, whose every
-candidate is closed in). At the root, the bound is minimised over the instance choices as well
-(`bounds.least_over_bindings`).
+candidate is closed in). At the root, two cell-level bounds on the walking join them (`tour.py`:
+paths out of the robots through the events' regions; events in their time order), and the bound is
+minimised over the instance choices as well (`bounds.least_over_bindings`).
 
 Completion time (`minmax`): `makespan.py`, from the same pending events (`relax.EventRow`); the
 summed cost skips it. `Heuristic.work` counts the cells of the assignment matrices solved (plus a

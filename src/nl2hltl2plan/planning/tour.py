@@ -1,5 +1,6 @@
-"""The root's tour bound: the robots' walks, cell by cell, must pass through every pending event's
-region (a lower bound on the walking of the summed cost, `heuristic.py`).
+"""The root's cell-level bounds on the walking of the summed cost (`heuristic.py`): the tour (the
+robots' walks, cell by cell, pass through every pending event's region) and the chain (events that
+must happen one after another, walked in that order).
 
 The other relaxations measure walks region to region (the least distance between any cell of one
 region and any cell of the next). Regions are large (every cell within 1.5 m of the object), so
@@ -20,9 +21,10 @@ keep is free; it keeps the few whose cells are farthest from every robot (the on
 walking), after merging stops with the same cell set and dropping a stop whose cells include a
 robot's cell or another kept stop's cells (visiting that one visits it too).
 
-It ignores the events' order, the hands and the instance choices across leaves (a stop may be any
-candidate's cell), so it is cheap enough at the root (`Heuristic.evaluate`: once, not per node),
-and it lifts every node's bound (a child's bound is at least its parent's).
+The tour ignores the events' order, the hands and the instance choices across leaves (a stop may
+be any candidate's cell); the chain (`chain_walk`) adds the order. Both are cheap enough at the
+root (`Heuristic._evaluate`: once, not per node), and they lift every node's bound (a child's bound
+is at least its parent's).
 """
 
 from __future__ import annotations
