@@ -5,10 +5,10 @@ must happen one after another, walked in that order).
 The other relaxations measure walks region to region (the least distance between any cell of one
 region and any cell of the next). Regions are large (every cell within 1.5 m of the object), so
 that distance is no metric: a step may enter a region at one end and leave it from the other for
-free, and a chain of overlapping regions crosses a room at no cost (FloorPlan224, valid_seen: the
-sofa is 28 steps from the robot, yet the events reach it through the overlapping regions of a
-dresser and a box in 0 steps). A robot, though, stands on one cell at a time, and cell distances
-obey the triangle inequality.
+free, and a chain of overlapping regions crosses a room at almost no cost (FloorPlan224, valid_seen:
+the sofa is 28 steps from the robot, yet region to region the robot reaches it in 5, through a
+newspaper's, a box's and a dresser's overlapping regions). A robot, though, stands on one cell at a
+time, and cell distances obey the triangle inequality.
 
 So: each robot's walk is a sequence of cells that visits, for every pending event, one cell of one
 of the event's candidate regions (the cell it acts from). Keeping only a few of these "stops"
