@@ -21,8 +21,9 @@ bounds on the walking (`bounds.py`: the carries, binding-consistent, plus the pi
 a spanning tree from the robots) and the pickups' approach and carry as one walk through one cell
 of the object's region are computed beside it and the largest is kept; every support open that every
 completion needs adds 1 (also one per event, of a family with disjoint openables, whose every
-candidate is closed in). At the root, the bound is minimised over the instance choices as well
-(`bounds.least_over_bindings`).
+candidate is closed in). At the root, two cell-level bounds on the walking join them (`tour.py`:
+paths out of the robots through the events' regions; events in their time order), and the bound is
+minimised over the instance choices as well (`bounds.least_over_bindings`).
 
 Completion time (`minmax`): `makespan.py`, from the same pending events (`relax.EventRow`); the
 summed cost skips it. `Heuristic.work` counts the cells of the assignment matrices solved (plus a
@@ -54,6 +55,7 @@ from nl2hltl2plan.planning.node import Node, bound
 from nl2hltl2plan.planning.opens import forced_closes, forced_opens
 from nl2hltl2plan.planning.relax import BIG, OTHER, PICKUP, PUT, EventRow, solve
 from nl2hltl2plan.planning.state import Expander
+from nl2hltl2plan.planning.tour import chain_walk, tour_walk
 from nl2hltl2plan.worlds.simulator import PRESENT
 
 EMPTY = ""  # the hand right after a put
@@ -258,6 +260,8 @@ class Heuristic:
         if carry < 0:  # an object is held: the carries depend on where its holder stands
             carry = 0 if self.light else carry_total(self, node, pending.memo)
         walk = self._assignment(node, pending, carry) if rows else carry
+        if node.parent is None and not fixed and not self.light:  # once at the root (tour.py)
+            walk = max(walk, tour_walk(self, node, rows), chain_walk(self, node, rows))
         total = len(rows) + pending.extra_events + walk + pending.support
         if not self.makespan:
             return total, node.ms

@@ -1,0 +1,174 @@
+"""The root's cell-level bounds on the walking of the summed cost (`heuristic.py`): the tour (the
+robots' walks, cell by cell, pass through every pending event's region) and the chain (events that
+must happen one after another, walked in that order).
+
+The other relaxations measure walks region to region (the least distance between any cell of one
+region and any cell of the next). Regions are large (every cell within 1.5 m of the object), so
+that distance is no metric: a step may enter a region at one end and leave it from the other for
+free, and a chain of overlapping regions crosses a room at almost no cost (FloorPlan224, valid_seen:
+the sofa is 28 steps from the robot, yet region to region the robot reaches it in 5, through a
+newspaper's, a box's and a dresser's overlapping regions). A robot, though, stands on one cell at a
+time, and cell distances obey the triangle inequality.
+
+So: each robot's walk is a sequence of cells that visits, for every pending event, one cell of one
+of the event's candidate regions (the cell it acts from). Keeping only a few of these "stops"
+(events dropped from a walk never make it longer), the least total walk of paths out of the robots
+that visit every kept stop is a lower bound, computed exactly by dynamic programming over the
+subsets of stops (Held & Karp, with one state per cell of the stop's cell set; the generalised
+travelling-salesman path), its paths then split among the robots by a second dynamic programme over
+subsets (each robot's path starts where that robot stands; a robot may stay put). Which stops to
+keep is free; it keeps the few whose cells are farthest from every robot (the ones that force
+walking), after merging stops with the same cell set and dropping a stop whose cells include a
+robot's cell or another kept stop's cells (visiting that one visits it too).
+
+The tour ignores the events' order, the hands and the instance choices across leaves (a stop may
+be any candidate's cell); the chain (`chain_walk`) adds the order. Both are cheap enough at the
+root (`Heuristic._evaluate`: once, not per node), and they lift every node's bound (a child's bound
+is at least its parent's).
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from nl2hltl2plan.planning.navigation import INF
+from nl2hltl2plan.planning.node import Node
+from nl2hltl2plan.planning.relax import BIG, EventRow, solve
+
+if TYPE_CHECKING:
+    from nl2hltl2plan.planning.heuristic import Heuristic
+
+MAX_STOPS = 7  # stops kept (the programme has 2^stops subsets)
+MAX_CELLS = 160  # a stop with more candidate cells says little (it is near everything): left out
+
+
+def tour_walk(h: Heuristic, node: Node, rows: list[EventRow]) -> int:
+    """The least walking of paths out of the robots through one cell of each kept stop."""
+    stops = _stops(h, node, rows)
+    if not stops:
+        return 0
+    start = h._robot_walks_to_cells(node, np.concatenate(stops))  # robots x the stops' cells
+    return _forest(h.nav.dm, stops, start)
+
+
+def _stops(h: Heuristic, node: Node, rows: list[EventRow]) -> list[np.ndarray]:
+    """The cell sets of the stops kept: distinct, small, not holding a robot, farthest first."""
+    region_idx = h.nav.region_idx
+    by_anchors: dict[tuple[int, ...], np.ndarray] = {}
+    for row in rows:
+        if row.anchors and row.anchors not in by_anchors:
+            by_anchors[row.anchors] = np.unique(np.concatenate([region_idx[a] for a in row.anchors]))
+    robot_cells = set(node.cell)
+    if node.reach is not None:
+        robot_cells |= {c for reach in node.reach if reach is not None for c in reach[0]}
+    scored = []
+    for anchors, cells in sorted(by_anchors.items()):
+        if not len(cells) or len(cells) > MAX_CELLS or robot_cells & set(cells.tolist()):
+            continue
+        far = int(h._robot_walks_to_cells(node, cells).min())
+        if far >= INF:
+            return []  # a stop no robot reaches: no claim
+        scored.append((-far, anchors, cells))
+    scored.sort(key=lambda item: (item[0], item[1]))
+    kept: list[np.ndarray] = []
+    for _, _, cells in scored:
+        if len(kept) == MAX_STOPS:
+            break
+        as_set = set(cells.tolist())
+        if any(set(other.tolist()) <= as_set for other in kept):
+            continue  # visiting that kept stop visits this one too
+        kept.append(cells)
+    return kept
+
+
+def _forest(dm: np.ndarray, stops: list[np.ndarray], start: np.ndarray) -> int:
+    """Least summed walk of one path per robot (possibly empty) that together visit every stop:
+    `start` robots x (the stops' cells, concatenated)."""
+    n = len(stops)
+    full = (1 << n) - 1
+    offsets = np.cumsum([0] + [len(cells) for cells in stops])
+    steps = [[dm[np.ix_(a, b)] for b in stops] for a in stops]
+    best_path = np.full((len(start), 1 << n), INF, dtype=np.int64)  # robot x subset: one path
+    best_path[:, 0] = 0
+    for r in range(len(start)):
+        # end[mask][j]: per cell of stop j, the least walk from robot r through the stops of mask,
+        # ending at that cell (Held & Karp over subsets, one state per cell)
+        end: list[dict[int, np.ndarray]] = [{} for _ in range(1 << n)]
+        for j in range(n):
+            end[1 << j][j] = start[r, offsets[j]:offsets[j + 1]]
+        for mask in range(1, 1 << n):
+            for j, walk in end[mask].items():
+                best_path[r, mask] = min(best_path[r, mask], int(walk.min()))
+                for k in range(n):
+                    if mask >> k & 1:
+                        continue
+                    nxt = (walk[:, None] + steps[j][k]).min(axis=0)
+                    grown = mask | 1 << k
+                    old = end[grown].get(k)
+                    end[grown][k] = nxt if old is None else np.minimum(old, nxt)
+    # split the stops among the robots: cover[mask] = least walk of robots 0..r covering mask
+    cover = best_path[0].copy()
+    for r in range(1, len(start)):
+        nxt = cover.copy()
+        for mask in range(1, 1 << n):
+            sub = mask
+            while sub:
+                nxt[mask] = min(nxt[mask], cover[mask ^ sub] + best_path[r, sub])
+                sub = (sub - 1) & mask
+        cover = nxt
+    return int(cover[full]) if cover[full] < INF else 0
+
+
+def chain_walk(h: Heuristic, node: Node, rows: list[EventRow]) -> int:
+    """The robots' walks pass through the pending events in time order, so through any chain of
+    them that must happen one after another (a leaf's events in their order; every event of a leaf
+    before every event of a leaf ordered after it). The chain taken is the longest one by
+    region-to-region steps. One robot walks it, cell by cell (a layered shortest path); several
+    robots split it, each walking its part in the chain's order: each chain event follows a robot's
+    start or an earlier chain event, each of those precedes at most one, an assignment (no cycle can
+    form: predecessors come earlier), walked region to region."""
+    events = [i for i, row in enumerate(rows) if row.anchors]
+    if not events:
+        return 0
+    leaf = np.array([rows[i].leaf for i in events])
+    pos = np.array([rows[i].pos for i in events])
+    # before[a, b]: event a happens before event b
+    before = ((leaf[:, None] == leaf[None, :]) & (pos[:, None] < pos[None, :])) | h.after[np.ix_(leaf, leaf)]
+    anchors = [list(rows[i].anchors) for i in events]
+    step = np.array([[int(h.rr[np.ix_(a, b)].min()) for b in anchors] for a in anchors])
+    flat = h.robot_walks(node, np.array([a for ax in anchors for a in ax], dtype=np.int64))
+    offsets = np.cumsum([0] + [len(ax) for ax in anchors])
+    reach = np.array([flat[offsets[k]:offsets[k + 1]].min(axis=0) for k in range(len(events))])  # x robots
+    chain = _longest_chain(before, step, reach.min(axis=1))
+    if len(node.cell) > 1:
+        return _split_chain(step[np.ix_(chain, chain)], reach[chain])
+    cells = [np.unique(np.concatenate([h.nav.region_idx[a] for a in anchors[k]])) for k in chain]
+    walk = h._robot_walks_to_cells(node, cells[0])[0]
+    for prev, cur in zip(cells, cells[1:], strict=False):
+        walk = (walk[:, None] + h.nav.dm[np.ix_(prev, cur)]).min(axis=0)
+    return int(walk.min()) if walk.min() < INF else 0
+
+
+def _longest_chain(before: np.ndarray, step: np.ndarray, reach: np.ndarray) -> list[int]:
+    """The events (indices) of the chain of the most region-to-region walking, in time order."""
+    order = sorted(range(len(reach)), key=lambda k: (int(before[:, k].sum()), k))  # topological
+    longest = np.minimum(reach, BIG).astype(np.int64)
+    back = [-1] * len(reach)
+    for k in order:
+        for j in order:
+            if before[j, k] and longest[j] + step[j, k] > longest[k]:
+                longest[k], back[k] = longest[j] + step[j, k], j
+    chain = [int(np.argmax(longest))]
+    while back[chain[-1]] >= 0:
+        chain.append(back[chain[-1]])
+    return chain[::-1]
+
+
+def _split_chain(step: np.ndarray, reach: np.ndarray) -> int:
+    """Least walk of robots serving a chain in order: `step` chain x chain, `reach` chain x robots."""
+    n = len(step)
+    earlier = np.tril(np.ones((n, n), dtype=bool), k=-1)  # [b, a]: a comes before b
+    cost = np.hstack([np.where(earlier, step.T, BIG), reach]).astype(np.int64)
+    return solve(np.minimum(cost, BIG))
