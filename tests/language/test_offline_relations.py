@@ -6,6 +6,7 @@ from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.grammar.draft_tasks import TaskBuilder, build_tasks
 from nl2hltl2plan.language.grammar.drafts import DraftBuilder
 from nl2hltl2plan.language.grammar.order_relations import relate
+from nl2hltl2plan.language.grammar.parser import parse_instruction
 from nl2hltl2plan.language.grammar.sentences import read_sentences
 
 
@@ -44,3 +45,27 @@ def test_contradictory_order_is_refused_naming_the_cycle() -> None:
     text = "Put the pen on the desk. Then put the book on the shelf. The book should be placed before the pen"
     with pytest.raises(HTTError, match=r"contradictory ordering in the instruction: (A|B) .* before"):
         _before(text)
+
+
+def _parsed(text: str) -> tuple[list[tuple[str, str]], list[str]]:
+    p = parse_instruction(text, None, strict=False)
+    return sorted(p.before), p.unparsed
+
+
+def test_a_reference_by_position_names_tasks_by_their_place_in_the_text() -> None:
+    pre = "Put the pen on the desk at any time. Put the book on the shelf. "
+    assert _parsed(pre + "Once done with the first tasks, put the cup in the sink.") == (
+        [("A", "C"), ("B", "C")],
+        [],
+    )
+    assert _parsed(pre + "After the previous task is done, put the cup in the sink.") == ([("B", "C")], [])
+    assert _parsed(pre + "After the first task, put the cup in the sink.") == ([("A", "C")], [])
+    assert _parsed(pre + "When everything else is finished, put the cup in the sink.") == (
+        [("A", "C"), ("B", "C")],
+        [],
+    )
+
+
+def test_a_sentence_that_starts_with_followed_by_comes_after_the_one_before() -> None:
+    text = "Put the pen on the desk. Followed by placing the book on the shelf."
+    assert _parsed(text) == ([("A", "B")], [])

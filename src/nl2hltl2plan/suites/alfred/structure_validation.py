@@ -55,15 +55,22 @@ CANDIDATES: dict[str, StructurePolicy | None] = {
 
 
 def rows_of_set(name: str, n: int) -> list[dict[str, Any]]:
+    """The rows of a set; `NAME:SEED` composes it with another seed (e.g. `faithful_unseen:21`)."""
+    from nl2hltl2plan.language.learned.compose_refs import DEV_REFS, HELDOUT_REFS, compose_refs
     from nl2hltl2plan.language.learned.train import text_faithful_items
-    from nl2hltl2plan.suites.alfred.learned_validation import validation_rows
+    from nl2hltl2plan.suites.alfred.learned_validation import faithful_split, rows_of, validation_rows
 
+    name, _, seed_text = name.partition(":")
     if name == "plain":
         return [json.loads(line) for line in (TRUST / "plain.jsonl").read_text().splitlines() if line]
     if name.startswith("faithful_"):
-        return validation_rows("valid_" + name.split("_")[1], n, 0)
+        return validation_rows("valid_" + name.split("_")[1], n, int(seed_text or 0))
+    if name.startswith("refs"):  # refsdev_unseen / refsheld_seen ...: `compose_refs` phrase families
+        family = HELDOUT_REFS if name.startswith("refsheld") else DEV_REFS
+        items = list(faithful_split("valid_" + name.split("_")[1]))
+        return rows_of(compose_refs(items, n, family, int(seed_text or 0)))
     style = HELDOUT_STYLE if name.startswith("heldout") else TRAIN_STYLE
-    synth = synthesise(text_faithful_items("valid_unseen"), n, style, seed=11)
+    synth = synthesise(text_faithful_items("valid_unseen"), n, style, seed=int(seed_text or 11))
     return [
         {"id": f"{name}.{i}", "n_base": len(s.tasks), "instruction": s.text, "scene": s.scene,
          "tasks": [t.model_dump() for t in s.tasks], "before": s.before}
