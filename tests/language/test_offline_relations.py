@@ -69,3 +69,22 @@ def test_a_reference_by_position_names_tasks_by_their_place_in_the_text() -> Non
 def test_a_sentence_that_starts_with_followed_by_comes_after_the_one_before() -> None:
     text = "Put the pen on the desk. Followed by placing the book on the shelf."
     assert _parsed(text) == ([("A", "B")], [])
+
+
+def test_done_with_a_named_task_is_a_reference_not_then() -> None:
+    for text in (
+        "put the apple in the microwave when you're done putting the plate in the sink",
+        "put the apple in the microwave after you are done putting the plate in the sink",
+    ):
+        assert _parsed(text) == ([("B", "A")], [])
+    assert _parsed("put the apple in the microwave, and once that's done put the plate in the sink") == (
+        [("A", "B")],
+        [],
+    )
+
+
+def test_a_shelf_inside_the_fridge_is_the_fridge() -> None:
+    p = parse_instruction("Put the apple on the middle shelf in the fridge.", {"Apple", "Fridge", "Shelf"})
+    assert [(t.object, t.receptacle) for t in p.tasks] == [(["Apple"], ["Fridge"])] and p.unparsed == []
+    p = parse_instruction("Put the apple on the shelf.", {"Apple", "Fridge", "Shelf"})
+    assert [t.receptacle for t in p.tasks] == [["Shelf"]]

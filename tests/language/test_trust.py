@@ -256,3 +256,6 @@ def test_the_word_accounting_prefers_the_phrase_that_names_the_slots_type():
     # "a bottle of hand soap" is one thing: the soap bottle
     soap = [task("place", "SoapBottle", "Toilet")]
     assert account("Move a bottle of hand soap to the toilet", soap, []) == []
+    # "the shelf in the fridge" is a part of the fridge
+    apple = [task("place", "Apple", "Fridge")]
+    assert account("Put the apple on the top shelf in the fridge", apple, []) == []

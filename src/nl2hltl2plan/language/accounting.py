@@ -122,17 +122,21 @@ def _is_verb(m: Mention, toks: list[tuple[str, int, int]]) -> bool:
 
 
 def _phrases(mentions: list[Mention], toks: list[tuple[str, int, int]]) -> list[list[Mention]]:
-    """Mentions that name one thing together: compounds ("dresser drawer", "soap container") and
-    "X of Y" ("two bottles of lotion", "the light of the floor lamp")."""
+    """Mentions that name one thing together: compounds ("dresser drawer", "soap container"), "X of Y"
+    ("two bottles of lotion", "the light of the floor lamp") and parts ("the shelf in the fridge")."""
     out: list[list[Mention]] = []
     for m in mentions:
         if out:
             gap = [w for w, _, _ in toks[out[-1][-1].end : m.start]]
-            if not gap or (gap[0] == "of" and _modifiers(gap[1:])):
+            part = out[-1][-1].surface.lower().split()[-1] in PART_NOUNS and gap[:1] in (["in"], ["inside"])
+            if not gap or ((gap[0] == "of" or part) and _modifiers(gap[1:])):
                 out[-1].append(m)
                 continue
         out.append([m])
     return out
+
+
+PART_NOUNS = frozenset({"shelf", "shelves"})  # "the shelf in the fridge": a part of the fridge
 
 
 def _modifiers(words: list[str]) -> bool:

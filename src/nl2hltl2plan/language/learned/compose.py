@@ -47,12 +47,14 @@ VERB_GERUND = {
 class Connectives:
     """One style family: openers of the first span, joiners of a later span by relation (`{x}` = the
     span, `{xp}` its participle form, `{xg}` its gerund form), whole-instruction endings that force one
-    relation on every later span, and fixed two-span templates (spans in text order, their relations)."""
+    relation on every later span, fixed two-span templates (spans in text order, their relations), and
+    openers that leave the first span free."""
 
     openers: tuple[str, ...]
     joiners: dict[str, tuple[str, ...]]
     endings: dict[str, tuple[str, ...]]
     pairs: tuple[tuple[str, tuple[str, str]], ...]
+    free_openers: tuple[str, ...] = ()  # a first span free of every later one ("{x} at any time. ...")
 
 
 TRAIN_STYLE = Connectives(
@@ -70,15 +72,16 @@ TRAIN_STYLE = Connectives(
                 ". When that's finished, {x}", ", then go on to {x}", ". When done, {x}",
                 ". After doing that, {x}", ". Once it's done, {x}", "; after that {x}", ", and then {x}",
                 ". And then {x}", ". Once that is finished, {x}", "? Then {x}", "? After that, {x}",
-                "? And then {x}"),
+                "? And then {x}", ". Followed by {xg}"),
         "PAR": (" and {x}", ", and {x}", ". Also {x}", ". Also, {x}", ", and also {x}", ". And {x}",
                 ". In addition, {x}", ". Plus, {x}", ", as well as {xg}", ". Additionally, {x}",
                 "; and {x}", ", also {x}", "? Also {x}", "? And {x}"),
         "FREE": (". At any time, {x}", ". Whenever you like, {x}", ". Meanwhile, {x}",
                  ". At some point, {x}", ". Independently, {x}", ". Whenever you want, {x}",
-                 ". Simultaneously, {x}", ". At the same time, {x}", ". In parallel, {x}"),
+                 ". Simultaneously, {x}", ". At the same time, {x}", ". In parallel, {x}",
+                 ". {x} at any time", ". {x} whenever you like", ". In any order, {x}"),
         "LAST": (". Finally, {x}", ", and finally {x}", ". Lastly, {x}", ". In the end, {x}",
-                 ", and lastly {x}", ". Finally {x}"),
+                 ", and lastly {x}", ". Finally {x}", ". Finish by {xg}"),
         "PRE": (". Before that, {x}", ", but before that {x}", ", but first {x}", ". But first, {x}",
                 ". Prior to that, {x}", ". Before doing so, {x}"),
     },
@@ -109,6 +112,7 @@ TRAIN_STYLE = Connectives(
         ("Once you're done {0g}, {1}.", ("START", "SEQ")),
         ("After you're finished {0g}, {1}.", ("START", "SEQ")),
     ),
+    free_openers=("{x} at any time", "{x} whenever you like", "At any time, {x}"),
 )
 
 HELDOUT_STYLE = Connectives(
@@ -218,9 +222,11 @@ def _chain(style: Connectives, clauses: list[str], rng: random.Random) -> tuple[
     forms = [_forms(c) or {"": c} for c in clauses]
     ending_rel = rng.choice([None, None, None, "SEQ", "PAR"]) if len(clauses) > 1 else None
     b = _Builder()
-    opener = rng.choice([o for o in style.openers if "{xg}" not in o or "g" in forms[0]])
+    free_first = bool(style.free_openers) and len(clauses) > 1 and not ending_rel and rng.random() < 0.2
+    openers = style.free_openers if free_first else style.openers
+    opener = rng.choice([o for o in openers if "{xg}" not in o or "g" in forms[0]])
     b.add(opener.replace("{x", "{0"), {"0" + k: v for k, v in forms[0].items()})
-    rels = ["START"]
+    rels = ["FREE" if free_first else "START"]
     for i in range(1, len(clauses)):
         last = i == len(clauses) - 1 and i > 1 and rng.random() < 0.4
         rel = ending_rel or ("LAST" if last else rng.choice(["SEQ", "SEQ", "SEQ", "PAR", "FREE", "PRE"]))
