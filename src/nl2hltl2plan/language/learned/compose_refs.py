@@ -34,6 +34,7 @@ class RefPhrases:
     after_all: tuple[str, ...]  # after every earlier task
     seq: tuple[str, ...]  # after the clause just before
     last: tuple[str, ...]  # "finally": after every earlier task not allowed at any time
+    # (and a sentence with no phrase at all: no order of its own)
 
 
 DEV_REFS = RefPhrases(
@@ -95,10 +96,12 @@ def _pick(
 ) -> tuple[str, list[int]] | None:
     """The phrase of clause `i` (i > 0) and the earlier clauses it comes after (None: none fits)."""
     f = {"x": forms[i]["x"], "xg": forms[i]["xg"]}
-    kinds = ["free_after", "free_before", "ref", "ref", "ref_state", "after_all", "seq"]
+    kinds = ["free_after", "free_before", "ref", "ref", "ref_state", "after_all", "seq", "bare"]
     choice = rng.choice(kinds + ["last"] * 2 if i == len(forms) - 1 else kinds)
     if choice in ("free_after", "free_before"):
         return rng.choice(getattr(fam, choice)).format(**f), []
+    if choice == "bare":  # a sentence with no temporal word: no order of its own, but not free
+        return f["x"], []
     if choice == "seq":
         return rng.choice(fam.seq).format(**f), [i - 1]
     if choice == "after_all":
