@@ -8,7 +8,11 @@ Sets (never test50, never the excluded trials):
   (`compose.HELDOUT_STYLE`, never trained on);
 - `trainstyle_unseen`: valid_unseen annotations with the training connectives (unseen clauses, scenes);
 - `faithful_seen` / `faithful_unseen`: `faithful.compose_faithful` (the earlier validation's 25
-  templates) over valid_seen / valid_unseen.
+  templates) over valid_seen / valid_unseen;
+- `refsdev_seen` / `refsdev_unseen` / `refsheld_seen` / `refsheld_unseen`: `compose_refs.compose_refs`
+  (the paper's multi-agent style: tasks named by their object, "at any time"; development and held-out
+  phrase families).
+A name with `:SEED` composes the set with that seed (`faithful_unseen:21`).
 
 For each instruction the grammar-first reading and the structure model's reading are computed once;
 every candidate `StructurePolicy` is then scored on them (the benchmark's strict match; a reading with
