@@ -88,3 +88,14 @@ def test_a_shelf_inside_the_fridge_is_the_fridge() -> None:
     assert [(t.object, t.receptacle) for t in p.tasks] == [(["Apple"], ["Fridge"])] and p.unparsed == []
     p = parse_instruction("Put the apple on the shelf.", {"Apple", "Fridge", "Shelf"})
     assert [t.receptacle for t in p.tasks] == [["Shelf"]]
+
+
+def test_after_that_inside_a_sentence_is_then() -> None:
+    text = "put the orange and the apple on the plate, and after that put the mug in the sink"
+    p = parse_instruction(text, None, strict=False)
+    assert [(t.object, t.receptacle) for t in p.tasks] == [
+        (["Orange"], ["Plate"]),
+        (["Apple"], ["Plate"]),
+        (["Mug"], ["SinkBasin"]),
+    ]
+    assert sorted(p.before) == [("A", "C"), ("B", "C")]

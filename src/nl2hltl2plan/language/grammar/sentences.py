@@ -166,6 +166,11 @@ _DONE_INSIDE = re.compile(
     r"\s*,?\s+(?=[a-z])",
     re.IGNORECASE,
 )
+# "put X in A, and after that put Y in B": inside a sentence, the same as "then"
+_AFTER_THAT_INSIDE = re.compile(
+    r"(?<=\w)\s*,?\s+(?:and\s+)?(?:after\s+(?:that|this)|afterwards?|following\s+that)\s*,?\s+(?=[a-z])",
+    re.IGNORECASE,
+)
 # "Y when you're done putting X in A": what is done is named, a reference ("Y after putting X in A")
 _DONE_GERUND = re.compile(
     r"\b(after|once|when)\s+you(?:'re|\s+are|'ve|\s+have)?\s+(?:done|finished|through)\s+(?:with\s+)?"
@@ -200,6 +205,7 @@ def normalize(text: str) -> str:
     text = _FOLLOWED_TO.sub(r" and finally \1", text)
     text = _DONE_GERUND.sub(r"\1 ", text)
     text = _DONE_INSIDE.sub(", then ", text)
+    text = _AFTER_THAT_INSIDE.sub(", then ", text)
     text = _DONE_WITH.sub(lambda m: "After " if m.group(1)[0].isupper() else "after ", text)
     return supply_put(re.sub(r"\s+", " ", text).strip())
 

@@ -483,7 +483,7 @@ LEADING: list[tuple[re.Pattern[str], str]] = [
     (re.compile(r"^to\s+(?=[a-z])", _F), ""),
 ]
 _FREE_T = (
-    r"(?:at\s+any\s+time|in\s+any\s+order|in\s+any\s+sequence|anytime|any\s+time|whenever(?:\s+you\s+like)?|"
+    r"(?:at\s+any\s+time|in\s+any\s+order|any\s+order|in\s+any\s+sequence|anytime|any\s+time|whenever(?:\s+you\s+like)?|"
     r"in\s+whatever\s+order|in\s+no\s+particular\s+order|in\s+parallel|simultaneously|concurrently|independently)"
 )
 TRAILING: list[tuple[re.Pattern[str], str]] = [

@@ -35,6 +35,7 @@ from nl2hltl2plan.language.learned.inference import (
     DEFAULT_POLICY,
     LearnedParse,
     ParseContext,
+    grammar_complete,
     grammar_first_reading,
     load_model,
     structure_reading,
@@ -98,8 +99,8 @@ def choose(g: LearnedParse, s: tuple[LearnedParse, float] | None, rule: Structur
     """Which reading `rule` takes (`structured.decide`); None: the grammar-first reading alone."""
     if rule is None:
         return "grammar"
-    complete = bool(g.tasks) and not g.unparsed
-    return decide((g.tasks, g.before, complete), (s[0].tasks, s[0].before, s[1]) if s else None, rule)
+    model = (s[0].tasks, s[0].before, s[1]) if s else None
+    return decide((g.tasks, g.before, grammar_complete(g)), model, rule)
 
 
 def score_set(rows: list[dict[str, Any]]) -> dict[str, dict[Any, list[int]]]:
