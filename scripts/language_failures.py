@@ -4,9 +4,10 @@
         [--save-rows DIR] [--rows DIR] [--show CLASS] [--long]
 
 Sets with ground truth (never test50, never the excluded trials): `faithful_seen`, `faithful_unseen`,
-`trainstyle_unseen`, `heldout_unseen` (`learned.structure_validate.rows_of_set`), `plain` (issue 23's
-user-style set), `users` and `users_heldout` (tests/language/data/styles/). A composed set depends on
-the lexicon (its text-faithful labels), so `--save-rows DIR` keeps the rows and `--rows DIR` scores
+`trainstyle_unseen`, `heldout_unseen`, the reference-style `refsdev_seen/unseen` and `refsheld_seen/unseen`
+(`suites.alfred.structure_validation.rows_of_set`; `NAME:SEED` composes one with another seed), `plain`
+(issue 23's user-style set), `users` and `users_heldout` (tests/language/data/styles/). A composed set
+depends on the lexicon (its text-faithful labels), so `--save-rows DIR` keeps the rows and `--rows DIR` scores
 another version of the code on exactly those rows (before/after on the same instructions).
 
 Classes of a failure (the default offline backend, its reading after the top candidate of each

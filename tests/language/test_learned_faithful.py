@@ -197,3 +197,30 @@ def test_slot_model_beats_the_majority_baseline_on_held_out_scenes(shared_data: 
     assert n > 100
     assert hits["model"] / n >= 0.85 and hits["kind"] / n >= 0.85, hits
     assert hits["majority"] / n <= 0.3, hits
+
+
+def test_reference_compositions_order_by_the_task_they_name() -> None:
+    from nl2hltl2plan.language.learned.compose_refs import DEV_REFS, HELDOUT_REFS, compose_refs
+
+    items = []
+    pairs = [("Apple", "Fridge"), ("Mug", "Cabinet"), ("Tomato", "CounterTop"), ("SoapBar", "Toilet")]
+    for i, (obj, rec) in enumerate(pairs + [("Bowl", "Microwave")]):
+        e = _ex(f"Put the {obj.lower()} in the {rec.lower()}.", obj=obj, recep=rec, trial=f"t{i}")
+        items.append(FaithfulExample(e, text_task(e, ROOM)))  # type: ignore[arg-type]
+    a = compose_refs(items, 60, DEV_REFS, seed=3)
+    assert [c.instruction for c in a] == [c.instruction for c in compose_refs(items, 60, DEV_REFS, seed=3)]
+    assert sorted({len(c.tasks) for c in a}) == [1, 2, 3, 4, 5]
+    named = 0
+    for c in a:
+        assert len(set(c.trials)) == len(c.tasks)
+        for m in re.finditer(r"After putting the (\w+), (\w+) the (\w+)", c.instruction):
+            first = next(t.id for t in c.tasks if m.group(1) in t.text)
+            then = next(t.id for t in c.tasks if f"{m.group(2)} the {m.group(3)}" in t.text)
+            named += 1
+            assert (first, then) in c.before
+    assert named
+    more = compose_refs(items, 300, DEV_REFS, seed=3)
+    free = [c for c in more if re.fullmatch(r"[^.]+ at any time\. Put [^.]+\.", c.instruction)]
+    assert free and all(c.before == [] for c in free)  # a free task, then a sentence with no temporal word
+    b = compose_refs(items, 60, HELDOUT_REFS, seed=3)
+    assert not {c.instruction for c in b if len(c.tasks) > 1} & {c.instruction for c in a}  # other phrases

@@ -23,10 +23,14 @@ KITCHEN = {"Apple", "Fridge", "Mug", "SinkBasin", "Sink", "Egg", "CounterTop", "
     ("relations", "pairs"),
     [
         (["START", "SEQ", "SEQ"], [(0, 1), (1, 2)]),
-        (["START", "PAR", "SEQ"], [(0, 2), (1, 2)]),  # "X and Y in any order. Once both are done, Z"
+        (["START", "ANY", "SEQ"], [(0, 2), (1, 2)]),  # "X and Y in any order. Once both are done, Z"
         (["START", "PRE"], [(1, 0)]),  # "Before you X, Y"
         (["START", "SEQ", "FREE", "SEQ"], [(0, 1), (2, 3)]),  # "... Simultaneously, Z. Then W"
-        (["START", "SEQ", "PAR", "LAST"], [(0, 1), (0, 2), (0, 3)]),  # the guide's "Finally"
+        # the guide's "Finally": after every task not allowed in any order or at any time
+        (["START", "SEQ", "ANY", "LAST"], [(0, 1), (0, 2), (0, 3)]),  # "Then Y and Z in any order"
+        (["START", "SEQ", "PAR", "LAST"], [(0, 1), (0, 2), (1, 3), (2, 3)]),  # "Then Y. Also Z."
+        (["START", "PAR", "LAST"], [(0, 2), (1, 2)]),  # "X. Y. Finally Z."
+        (["FREE", "PAR", "LAST"], [(1, 2)]),  # "X at any time. Y. Finally Z."
         (["START", "SEQ", "LAST"], [(0, 1), (1, 2)]),
     ],
 )
@@ -67,6 +71,12 @@ def test_styled_clauses_are_lower_case_commands_without_a_stop() -> None:
             "on the counter.",
             ["START", "SEQ", "SEQ"],
         ),
+        # a sentence with no temporal word is in no order, but "finally" comes after it (the guide)
+        (
+            "Put the apple in the fridge. Put the mug in the sink. Finally, put the egg on the counter.",
+            ["START", "PAR", "LAST"],
+        ),
+        ("Put the apple in the fridge at any time. Finally, put the mug in the sink.", ["FREE", "LAST"]),
     ],
 )
 def test_the_committed_model_reads_the_connectives_people_use(text: str, spans: list[str]) -> None:

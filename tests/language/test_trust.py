@@ -246,3 +246,16 @@ def test_a_placement_without_a_destination_is_partial_not_a_spec():
     (unread,) = unfilled_slots([lost])
     assert unread.category == "place" and "task A has no receptacle" in unread.reason
     assert unfilled_slots([lost.model_copy(update={"receptacle": ["DiningTable"]})]) == []
+
+
+def test_the_word_accounting_prefers_the_phrase_that_names_the_slots_type():
+    # "the table" may mean the coffee table too, but "coffee table" names it: "the table" is a landmark
+    text = "Move the remote from the table to the couch. Lastly, place a vase on a coffee table."
+    tasks = [task("place", "RemoteControl", "Sofa"), task("place", "Vase", "CoffeeTable")]
+    assert account(text, tasks, [("A", "B")]) == []
+    # "a bottle of hand soap" is one thing: the soap bottle
+    soap = [task("place", "SoapBottle", "Toilet")]
+    assert account("Move a bottle of hand soap to the toilet", soap, []) == []
+    # "the shelf in the fridge" is a part of the fridge
+    apple = [task("place", "Apple", "Fridge")]
+    assert account("Put the apple on the top shelf in the fridge", apple, []) == []

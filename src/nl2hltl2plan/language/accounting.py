@@ -122,17 +122,28 @@ def _is_verb(m: Mention, toks: list[tuple[str, int, int]]) -> bool:
 
 
 def _phrases(mentions: list[Mention], toks: list[tuple[str, int, int]]) -> list[list[Mention]]:
-    """Mentions that name one thing together: compounds ("dresser drawer", "soap container") and
-    "X of Y" ("two bottles of lotion", "the light of the floor lamp")."""
+    """Mentions that name one thing together: compounds ("dresser drawer", "soap container"), "X of Y"
+    ("two bottles of lotion", "the light of the floor lamp") and parts ("the shelf in the fridge")."""
     out: list[list[Mention]] = []
     for m in mentions:
         if out:
             gap = [w for w, _, _ in toks[out[-1][-1].end : m.start]]
-            if not gap or (gap[0] == "of" and all(w in DETERMINERS for w in gap)):
+            part = out[-1][-1].surface.lower().split()[-1] in PART_NOUNS and gap[:1] in (["in"], ["inside"])
+            if not gap or ((gap[0] == "of" or part) and _modifiers(gap[1:])):
                 out[-1].append(m)
                 continue
         out.append([m])
     return out
+
+
+PART_NOUNS = frozenset({"shelf", "shelves"})  # "the shelf in the fridge": a part of the fridge
+
+
+def _modifiers(words: list[str]) -> bool:
+    """Words between "of" and a noun that only describe it: determiners, and at most two others that name
+    no action or relation ("a bottle of hand soap", "a bar of white soap", "a glass of the water")."""
+    others = [w for w in words if w not in DETERMINERS]
+    return len(others) <= 2 and not any(categories(w) for w in others)
 
 
 def _nouns(
@@ -148,17 +159,23 @@ def _nouns(
         ):
             continue
         groups.setdefault(frozenset(m.entry.canonical for m in phrase), []).append(phrase)
+    # A phrase whose head's own type fills the slot ("coffee table" -> CoffeeTable) is matched before one
+    # that only may mean it ("the table"). Nodes are numbers (groups 0.., slots after them), so that the
+    # matching never depends on the run's string hashing.
+    keys = list(groups)
     g = nx.Graph()
-    for key, phrases in groups.items():
+    for i, (key, phrases) in enumerate(groups.items()):
         types = {t for m in phrases[0] for t in m.entry.types} | key
         for k, (_, _, st) in enumerate(slots):
-            if st & types or {t.lower() for t in st} & {t.lower() for t in key}:
-                g.add_edge(("g", key), ("s", k))
-    matching = nx.bipartite.maximum_matching(g, top_nodes=[n for n in g if n[0] == "g"]) if g else {}
-    matched = {a[1] for a in matching if a[0] == "g"}
-    places = [
-        m for key in matched for p in groups[key] for m in p if slots[matching[("g", key)][1]][1] != "object"
-    ]
+            head = phrases[0][-1].entry.canonical  # "glass pitcher": a pitcher, not a glass
+            if head in st or head.lower() in {t.lower() for t in st}:
+                g.add_edge(i, len(keys) + k, weight=3)
+            elif st & types:
+                g.add_edge(i, len(keys) + k, weight=2)
+    pairs = [sorted(e) for e in nx.max_weight_matching(g, maxcardinality=True)]
+    slot_of = {i: k - len(keys) for i, k in pairs}
+    matched = {keys[i] for i in slot_of}
+    places = [m for i, k in slot_of.items() if slots[k][1] != "object" for p in groups[keys[i]] for m in p]
     out = []
     objects = {t for _, role, st in slots if role == "object" for t in st}
     for key, phrases in groups.items():

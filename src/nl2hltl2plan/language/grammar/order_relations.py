@@ -3,6 +3,8 @@ ANNOTATION_GUIDE rules), contradictions dropped, transitively reduced."""
 
 from __future__ import annotations
 
+import re
+
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.draft_tasks import TaskBuilder, Tasks, Unit
@@ -57,10 +59,35 @@ def _marker_edges(k: int, tasks: Tasks, free: set[int], b: TaskBuilder, text: st
         elif kind == G.IN_ORDER:  # "..., in that order": each named task after the one named before it
             own = sorted(t for v in units if v.sentence == u.sentence for t in v.tasks)
             edges.update(zip(own, own[1:], strict=False))
+        elif kind == G.AFTER_REF and (named := by_position(ref, earlier, prev)) is not None:
+            edges.update((a, b2) for a in named for b2 in u.tasks)
         elif kind in {G.AFTER_REF, G.BEFORE_REF}:
             _ref_edges(kind == G.AFTER_REF, ref, u, tasks, b, text, edges)
     if u.seq_after_prev and seq_prev is not None:
         edges.update((a, b2) for a in seq_prev.tasks for b2 in u.tasks)
+
+
+def by_position(ref: str, earlier: list[int], prev: Unit | None) -> list[int] | None:
+    """The tasks a reference by position names ("the first tasks", "the previous task", "everything
+    else": `G.GENERIC_REF`); None when it names tasks another way (by their objects)."""
+    m = G.GENERIC_REF.match(_normal(ref))
+    if m is None:
+        return None
+    which, noun = (m.groupdict().get("which") or "").lower(), (m.groupdict().get("noun") or "").lower()
+    singular = bool(noun) and not noun.endswith("s")
+    if singular and which in G.ORDINALS:
+        k = G.ORDINALS[which]
+        return [earlier[k]] if k < len(earlier) else []
+    if singular and which in {"previous", "last", "preceding", "prior", "former"} and prev is not None:
+        return list(prev.tasks)
+    return list(earlier)
+
+
+def _normal(ref: str) -> str:
+    """A reference without the "you are done with" around it: "you've finished the first tasks"."""
+    ref = re.sub(r"^(?:you(?:'ve|'re|\s+are|\s+have)?\s+)?(?:done|finished|completed|through)\s+(?:with\s+)?",
+                 "", ref.strip(), flags=re.I)
+    return re.sub(r"^(?:completing|finishing|doing)\s+", "", ref, flags=re.I).strip()
 
 
 def _ref_edges(after: bool, ref: str, u: Unit, tasks: Tasks, b: TaskBuilder, text: str, edges: Edges) -> None:

@@ -166,6 +166,25 @@ _DONE_INSIDE = re.compile(
     r"\s*,?\s+(?=[a-z])",
     re.IGNORECASE,
 )
+# "put X in A, and after that put Y in B": inside a sentence, the same as "then"
+_AFTER_THAT_INSIDE = re.compile(
+    r"(?<=\w)\s*,?\s+(?:and\s+)?(?:after\s+(?:that|this)|afterwards?|following\s+that)\s*,?\s+(?=[a-z])",
+    re.IGNORECASE,
+)
+# "Y when you're done putting X in A": what is done is named, a reference ("Y after putting X in A")
+_DONE_GERUND = re.compile(
+    r"\b(after|once|when)\s+you(?:'re|\s+are|'ve|\s+have)?\s+(?:done|finished|through)\s+(?:with\s+)?"
+    r"(?=[a-z]+ing\b)",
+    re.IGNORECASE,
+)
+# "on the middle shelf in the fridge", "the top shelf of the cabinet": a shelf that is part of an appliance
+# or a cabinet is that receptacle (the world has no shelf object inside it)
+_SHELF_OF = re.compile(
+    r"\b(?:the|a)\s+(?:(?:top|middle|bottom|upper|lower|first|second|third|left|right)\s+)?"
+    r"shel(?:f|ves)\s+(?:in|of|inside)\s+(?=(?:the|a)\s+(?:fridge|refrigerator|freezer|cabinet|cupboard|"
+    r"microwave|safe)\b)",
+    re.IGNORECASE,
+)
 _STATE_ALT = "|".join(sorted(G.STATE_WORDS))
 _STATES_LISTED = re.compile(rf"\b({_STATE_ALT}),\s+(?=(?:{_STATE_ALT})\b)", re.IGNORECASE)
 
@@ -181,9 +200,12 @@ def normalize(text: str) -> str:
     text = _OFF.sub(r"\1", text)  # "a rinsed off knife", "cool off a plate": the state, not a direction
     text = _BACK.sub(r", then back \1", text)  # "put it in the fridge, back in the microwave": a sequence
     text = _HAS_IN_IT.sub("with ", text)
+    text = _SHELF_OF.sub("", text)
     text = _USE_LAMP.sub(lambda m: f"{m['verb']} {m['obj']} by the light of the {m['lamp']}", text)
     text = _FOLLOWED_TO.sub(r" and finally \1", text)
+    text = _DONE_GERUND.sub(r"\1 ", text)
     text = _DONE_INSIDE.sub(", then ", text)
+    text = _AFTER_THAT_INSIDE.sub(", then ", text)
     text = _DONE_WITH.sub(lambda m: "After " if m.group(1)[0].isupper() else "after ", text)
     return supply_put(re.sub(r"\s+", " ", text).strip())
 

@@ -420,7 +420,7 @@ LEADING: list[tuple[re.Pattern[str], str]] = [
     (
         re.compile(
             r"^(?:and\s+)?(?:then|next|afterwards?|after\s+that|after\s+this|after\s+which|subsequently|"
-            r"later(?:\s+on)?|following\s+(?:that|this)|thereafter|"
+            r"later(?:\s+on)?|following\s+(?:that|this)|thereafter|followed\s+by|"
             rf"(?:once|when|after)\s+(?:that|this|it|you)?\s*(?:is\s+|are\s+|have\s+|has\s+)?{_DONE}|"
             r"after\s+(?:doing|finishing|completing)\s+(?:that|this|it))\b\s*[,:]?\s*",
             _F,
@@ -464,7 +464,7 @@ LEADING: list[tuple[re.Pattern[str], str]] = [
     (
         re.compile(
             r"^(?:after|once|when|following|upon)\s+(?:completing|finishing|doing|all|these|those|"
-            r"the\s+previous|the\s+above|both|everything|each|every)\b[^,]*,\s*",
+            r"the\s+previous(?!\s+(?:task|step|job|one|thing)\b)|the\s+above|both|everything|each|every)\b[^,]*,\s*",
             _F,
         ),
         AFTER_ALL,
@@ -483,7 +483,7 @@ LEADING: list[tuple[re.Pattern[str], str]] = [
     (re.compile(r"^to\s+(?=[a-z])", _F), ""),
 ]
 _FREE_T = (
-    r"(?:at\s+any\s+time|in\s+any\s+order|in\s+any\s+sequence|anytime|any\s+time|whenever(?:\s+you\s+like)?|"
+    r"(?:at\s+any\s+time|in\s+any\s+order|any\s+order|in\s+any\s+sequence|anytime|any\s+time|whenever(?:\s+you\s+like)?|"
     r"in\s+whatever\s+order|in\s+no\s+particular\s+order|in\s+parallel|simultaneously|concurrently|independently)"
 )
 TRAILING: list[tuple[re.Pattern[str], str]] = [
@@ -500,7 +500,7 @@ TRAILING: list[tuple[re.Pattern[str], str]] = [
         re.compile(
             r"\s*,?\s*(?:(?:this\s+)?(?:should|must|has\s+to|have\s+to|needs?\s+to|can\s+only|is\s+to)\s+be\s+"
             r"(?:done|completed|performed|finished|placed|put|moved|carried\s+out)\s+)?(?:only\s+)?"
-            r"(?P<rel>after|before|once)\s+(?P<ref>(?:\w+ing\b|the\s|you\s|having\s|all\s|every|each|"
+            r"(?P<rel>after|before|once|when(?=\s+\w+ing\b))\s+(?P<ref>(?:\w+ing\b|the\s|you\s|having\s|all\s|every|each|"
             r"finishing|completing).+)$",
             _F,
         ),
@@ -524,6 +524,23 @@ TRAILING: list[tuple[re.Pattern[str], str]] = [
         IN_ORDER,
     ),
 ]
+# A reference to tasks by position, not by object ("once done with the first tasks", "after the previous
+# task", "when everything else is finished"): every earlier task, or (a singular "previous/last task") the
+# one just before, or (a singular ordinal, "the first task") that one.
+_TASK_NOUN = r"(?:tasks?|steps?|jobs?|things?|chores?|actions?|ones?|parts?|errands?)"
+GENERIC_REF = re.compile(
+    r"^(?:(?:all|each|every|both)\s+(?:of\s+)?)?(?:the|these|those|your|my|our)?\s*"
+    r"(?P<which>first|previous|above|earlier|prior|preceding|other|former|initial|last|second|third|fourth)?\s*"
+    r"(?:(?:two|three|four|few|couple\s+of)\s+)?"
+    rf"(?P<noun>{_TASK_NOUN})(?:\s+(?:above|before|so\s+far|mentioned|listed))?"
+    r"(?:\s+(?:is|are|have\s+been|has\s+been)\s+(?:done|finished|complete|completed|over))?$"
+    r"|^(?:everything|all)(?:\s+(?:else|of\s+(?:that|this|those|these|the\s+above)|above|that|this|before|so\s+far))?"
+    r"(?:\s+(?:is|are|has\s+been)\s+(?:done|finished|complete|completed|over))?$"
+    r"|^the\s+(?:rest|above)$",
+    _F,
+)
+ORDINALS = {"first": 0, "second": 1, "third": 2, "fourth": 3}
+
 # sentences that only say "no particular order" (no task, no constraint)
 NO_ORDER_SENTENCE = re.compile(
     r"\b(?:order|sequence)\b.*\b(?:not\s+specified|not\s+matter|doesn't\s+matter|does\s+not\s+matter|free(?:ly)?|"

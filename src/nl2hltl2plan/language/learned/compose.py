@@ -19,10 +19,11 @@ from nl2hltl2plan.language.learned.faithful import FaithfulExample, by_floor_pla
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter
 
 # Relation of a span to what came before it (text order): START the first; SEQ after the current step;
-# PAR in the current step (no order with it); FREE no order with anything (a chain of its own); PRE a
-# new step before the current one ("before you X, Y": Y is PRE); LAST ("finally Y") after every earlier
-# span not allowed in any order or at any time (benchmark/ANNOTATION_GUIDE.md).
-RELATIONS = ("START", "SEQ", "PAR", "FREE", "PRE", "LAST")
+# PAR in the current step (no order with it: "and", "also", a sentence with no temporal word); ANY the
+# same, the order explicitly left open ("X and Y in any order"); FREE no order with anything (a chain of
+# its own); PRE a new step before the current one ("before you X, Y": Y is PRE); LAST ("finally Y")
+# after every earlier span not allowed in any order or at any time (benchmark/ANNOTATION_GUIDE.md).
+RELATIONS = ("START", "SEQ", "PAR", "ANY", "FREE", "PRE", "LAST")
 
 VERB_PARTICIPLE = {
     "put": "put", "place": "placed", "pick": "picked", "take": "taken", "grab": "grabbed",
@@ -47,12 +48,14 @@ VERB_GERUND = {
 class Connectives:
     """One style family: openers of the first span, joiners of a later span by relation (`{x}` = the
     span, `{xp}` its participle form, `{xg}` its gerund form), whole-instruction endings that force one
-    relation on every later span, and fixed two-span templates (spans in text order, their relations)."""
+    relation on every later span, fixed two-span templates (spans in text order, their relations), and
+    openers that leave the first span free."""
 
     openers: tuple[str, ...]
     joiners: dict[str, tuple[str, ...]]
     endings: dict[str, tuple[str, ...]]
     pairs: tuple[tuple[str, tuple[str, str]], ...]
+    free_openers: tuple[str, ...] = ()  # a first span free of every later one ("{x} at any time. ...")
 
 
 TRAIN_STYLE = Connectives(
@@ -70,21 +73,24 @@ TRAIN_STYLE = Connectives(
                 ". When that's finished, {x}", ", then go on to {x}", ". When done, {x}",
                 ". After doing that, {x}", ". Once it's done, {x}", "; after that {x}", ", and then {x}",
                 ". And then {x}", ". Once that is finished, {x}", "? Then {x}", "? After that, {x}",
-                "? And then {x}"),
-        "PAR": (" and {x}", ", and {x}", ". Also {x}", ". Also, {x}", ", and also {x}", ". And {x}",
+                "? And then {x}", ". Followed by {xg}"),
+        "PAR": (". {x}", " and {x}", ", and {x}", ". Also {x}", ". Also, {x}", ", and also {x}", ". And {x}",
                 ". In addition, {x}", ". Plus, {x}", ", as well as {xg}", ". Additionally, {x}",
                 "; and {x}", ", also {x}", "? Also {x}", "? And {x}"),
+        "ANY": (" and {x} in any order", ", and {x}, in any order", " and {x}, in whatever order you like",
+                ", {x}, order doesn't matter"),
         "FREE": (". At any time, {x}", ". Whenever you like, {x}", ". Meanwhile, {x}",
                  ". At some point, {x}", ". Independently, {x}", ". Whenever you want, {x}",
-                 ". Simultaneously, {x}", ". At the same time, {x}", ". In parallel, {x}"),
+                 ". Simultaneously, {x}", ". At the same time, {x}", ". In parallel, {x}",
+                 ". {x} at any time", ". {x} whenever you like", ". In any order, {x}"),
         "LAST": (". Finally, {x}", ", and finally {x}", ". Lastly, {x}", ". In the end, {x}",
-                 ", and lastly {x}", ". Finally {x}"),
+                 ", and lastly {x}", ". Finally {x}", ". Finish by {xg}"),
         "PRE": (". Before that, {x}", ", but before that {x}", ", but first {x}", ". But first, {x}",
                 ". Prior to that, {x}", ". Before doing so, {x}"),
     },
     endings={
         "SEQ": (", in that order.", " in that order.", ", one after the other."),
-        "PAR": (" in any order.", ", in any order.", ", in whatever order you like.",
+        "ANY": (" in any order.", ", in any order.", ", in whatever order you like.",
                 ". The order does not matter.", ", order doesn't matter.", ". Any order is fine."),
     },
     pairs=(
@@ -109,6 +115,7 @@ TRAIN_STYLE = Connectives(
         ("Once you're done {0g}, {1}.", ("START", "SEQ")),
         ("After you're finished {0g}, {1}.", ("START", "SEQ")),
     ),
+    free_openers=("{x} at any time", "{x} whenever you like", "At any time, {x}"),
 )
 
 HELDOUT_STYLE = Connectives(
@@ -124,7 +131,7 @@ HELDOUT_STYLE = Connectives(
     },
     endings={
         "SEQ": (", strictly in this order.", ", in this sequence."),
-        "PAR": (", the order is up to you.", " in no particular order."),
+        "ANY": (", the order is up to you.", " in no particular order."),
     },
     pairs=(
         ("Once you're through {0g}, {1}.", ("START", "SEQ")),
@@ -216,17 +223,22 @@ def _same_verb(a: str, b: str) -> bool:
 def _chain(style: Connectives, clauses: list[str], rng: random.Random) -> tuple[str, list, list[str]] | None:
     """Spans joined one by one: an opener, then a joiner per later span, sometimes a forcing ending."""
     forms = [_forms(c) or {"": c} for c in clauses]
-    ending_rel = rng.choice([None, None, None, "SEQ", "PAR"]) if len(clauses) > 1 else None
+    ending_rel = rng.choice([None, None, None, "SEQ", "ANY"]) if len(clauses) > 1 else None
     b = _Builder()
-    opener = rng.choice([o for o in style.openers if "{xg}" not in o or "g" in forms[0]])
+    free_first = bool(style.free_openers) and len(clauses) > 1 and not ending_rel and rng.random() < 0.2
+    openers = style.free_openers if free_first else style.openers
+    opener = rng.choice([o for o in openers if "{xg}" not in o or "g" in forms[0]])
     b.add(opener.replace("{x", "{0"), {"0" + k: v for k, v in forms[0].items()})
-    rels = ["START"]
+    rels = ["FREE" if free_first else "START"]
     for i in range(1, len(clauses)):
         last = i == len(clauses) - 1 and i > 1 and rng.random() < 0.4
-        rel = ending_rel or ("LAST" if last else rng.choice(["SEQ", "SEQ", "SEQ", "PAR", "FREE", "PRE"]))
-        pool = [j for j in style.joiners[rel] if "{xg}" not in j or "g" in forms[i]]
+        # ANY inside the instruction ("X and Y in any order. Finally Z") where the style has its joiners
+        choices = ["SEQ", "SEQ", "SEQ", "PAR", "FREE", "PRE"] + (["ANY"] if "ANY" in style.joiners else [])
+        rel = ending_rel or ("LAST" if last else rng.choice(choices))
         if ending_rel:  # "A, B and C in any order" / "..., in that order": plain joiners only
             pool = [", {x}", " and {x}", ", and {x}", ", then {x}" if rel == "SEQ" else ", {x}"]
+        else:
+            pool = [j for j in style.joiners[rel] if "{xg}" not in j or "g" in forms[i]]
         clause = forms[i]
         if pool[0] == ", {x}" and _same_verb(clauses[i - 1], clauses[i]) and rng.random() < 0.6:
             clause = {"": clauses[i].split(" ", 1)[1]}  # "put X in Y and Z in W": the verb left out

@@ -355,7 +355,7 @@ def _arbitrated(
     rule = ctx.policy.structure
     assert rule is not None
     s = structure_reading(instruction, ctx, structure)
-    complete = bool(g.tasks) and not g.unparsed
+    complete = grammar_complete(g)
     choice = decide((g.tasks, g.before, complete), (s[0].tasks, s[0].before, s[1]) if s else None, rule)
     if choice == "model" and s is not None:
         return s[0]
@@ -366,6 +366,12 @@ def _arbitrated(
         )
         return g.model_copy(update={"tasks": [], "before": [], "groups": [], "unparsed": [why]})
     return g
+
+
+def grammar_complete(g: LearnedParse) -> bool:
+    """Whether the grammar-first reading is whole: tasks, nothing unread, and every content word used
+    (check 1: a reading that leaves "the orange" out is refused anyway, so it cannot outweigh the model's)."""
+    return bool(g.tasks) and not g.unparsed and complete_and_accounted(g.instruction, g.tasks, g.before)
 
 
 def _rescued(g: OfflineParse, instruction: str, ctx: ParseContext) -> OfflineParse:

@@ -174,7 +174,10 @@ class StructureModel:
                 spans[-1][1] = b
         out = []
         for i, s in enumerate(spans):
-            rel = "START" if i == 0 else ("SEQ" if s[2] == "START" else s[2])
+            if i == 0:  # the first span opens the order, unless it is free ("X at any time. Finally Y")
+                rel = "FREE" if s[2] == "FREE" else "START"
+            else:
+                rel = "SEQ" if s[2] == "START" else s[2]
             out.append(Span(text[s[0] : s[1]], s[0], s[1], rel))
         return Reading(out, conf)
 

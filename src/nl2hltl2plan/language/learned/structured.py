@@ -37,7 +37,7 @@ class StructurePolicy:
     """When the structure model's reading replaces the grammar's (see the module docstring)."""
 
     rescue: float = 0.5  # the grammar could not read everything: the model's reading if this sure
-    override: float = 0.9  # both complete and different: the model's reading if this sure
+    override: float = 0.97  # both complete and different: the model's reading if this sure
     doubt: float = 0.0  # ... and neither trusted (-> unparsed) when the model is less sure than this
 
 

@@ -8,7 +8,11 @@ Sets (never test50, never the excluded trials):
   (`compose.HELDOUT_STYLE`, never trained on);
 - `trainstyle_unseen`: valid_unseen annotations with the training connectives (unseen clauses, scenes);
 - `faithful_seen` / `faithful_unseen`: `faithful.compose_faithful` (the earlier validation's 25
-  templates) over valid_seen / valid_unseen.
+  templates) over valid_seen / valid_unseen;
+- `refsdev_seen` / `refsdev_unseen` / `refsheld_seen` / `refsheld_unseen`: `compose_refs.compose_refs`
+  (the paper's multi-agent style: tasks named by their object, "at any time"; development and held-out
+  phrase families).
+A name with `:SEED` composes the set with that seed (`faithful_unseen:21`).
 
 For each instruction the grammar-first reading and the structure model's reading are computed once;
 every candidate `StructurePolicy` is then scored on them (the benchmark's strict match; a reading with
@@ -31,6 +35,7 @@ from nl2hltl2plan.language.learned.inference import (
     DEFAULT_POLICY,
     LearnedParse,
     ParseContext,
+    grammar_complete,
     grammar_first_reading,
     load_model,
     structure_reading,
@@ -55,15 +60,22 @@ CANDIDATES: dict[str, StructurePolicy | None] = {
 
 
 def rows_of_set(name: str, n: int) -> list[dict[str, Any]]:
+    """The rows of a set; `NAME:SEED` composes it with another seed (e.g. `faithful_unseen:21`)."""
+    from nl2hltl2plan.language.learned.compose_refs import DEV_REFS, HELDOUT_REFS, compose_refs
     from nl2hltl2plan.language.learned.train import text_faithful_items
-    from nl2hltl2plan.suites.alfred.learned_validation import validation_rows
+    from nl2hltl2plan.suites.alfred.learned_validation import faithful_split, rows_of, validation_rows
 
+    name, _, seed_text = name.partition(":")
     if name == "plain":
         return [json.loads(line) for line in (TRUST / "plain.jsonl").read_text().splitlines() if line]
     if name.startswith("faithful_"):
-        return validation_rows("valid_" + name.split("_")[1], n, 0)
+        return validation_rows("valid_" + name.split("_")[1], n, int(seed_text or 0))
+    if name.startswith("refs"):  # refsdev_unseen / refsheld_seen ...: `compose_refs` phrase families
+        family = HELDOUT_REFS if name.startswith("refsheld") else DEV_REFS
+        items = list(faithful_split("valid_" + name.split("_")[1]))
+        return rows_of(compose_refs(items, n, family, int(seed_text or 0)))
     style = HELDOUT_STYLE if name.startswith("heldout") else TRAIN_STYLE
-    synth = synthesise(text_faithful_items("valid_unseen"), n, style, seed=11)
+    synth = synthesise(text_faithful_items("valid_unseen"), n, style, seed=int(seed_text or 11))
     return [
         {"id": f"{name}.{i}", "n_base": len(s.tasks), "instruction": s.text, "scene": s.scene,
          "tasks": [t.model_dump() for t in s.tasks], "before": s.before}
@@ -87,8 +99,8 @@ def choose(g: LearnedParse, s: tuple[LearnedParse, float] | None, rule: Structur
     """Which reading `rule` takes (`structured.decide`); None: the grammar-first reading alone."""
     if rule is None:
         return "grammar"
-    complete = bool(g.tasks) and not g.unparsed
-    return decide((g.tasks, g.before, complete), (s[0].tasks, s[0].before, s[1]) if s else None, rule)
+    model = (s[0].tasks, s[0].before, s[1]) if s else None
+    return decide((g.tasks, g.before, grammar_complete(g)), model, rule)
 
 
 def score_set(rows: list[dict[str, Any]]) -> dict[str, dict[Any, list[int]]]:
