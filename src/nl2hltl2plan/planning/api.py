@@ -46,6 +46,7 @@ FAST_GAP = 1.05  # fast mode stops once its plan is proven within this factor of
 # the bound last rose more than STALL_SHARE of the work spent ago (chosen on valid_seen, docs/planning.md)
 FAST_STALL_WORK = 100_000
 STALL_SHARE = 2 / 3
+STALL_NEAR = 1.0  # but not while the plan is at most this many objective units above the bound
 IMPROVE_EVALS = 600  # local-search candidate replays (both modes)
 LNS_EVALS = 2000  # large-neighbourhood-search candidate replays (both modes)
 # replays cost in proportion to the plan's events: both local searches also stop after this many
@@ -319,7 +320,7 @@ def _search(searcher: Searcher, x: Expander, budget: Budget) -> Node | None:
                 best = refine_stand_cells(x, best, searcher.obj)
             searcher.found(best)
         start = with_free_stands(root) if budget.free_stands else root
-        stall = None if budget.stall_work is None else Stall(budget.stall_work, STALL_SHARE)
+        stall = None if budget.stall_work is None else Stall(budget.stall_work, STALL_SHARE, STALL_NEAR)
         best = searcher.awa(start, best, budget.w_order, budget.w_stop, max_expansions=budget.expansions,
                             max_nodes=budget.max_nodes, max_generated=budget.generated, max_work=budget.work,
                             stall=stall)

@@ -223,7 +223,8 @@ class Searcher:
                     break
                 if lb > best_lb:
                     best_lb, last_rise = lb, self.h.work - work_start
-            if best is not None and stall is not None and stall.stalled(self.h.work - work_start, last_rise):
+            if (best is not None and stall is not None
+                    and stall.stalled(self.h.work - work_start, last_rise, obj.unit(ub) - obj.unit(best_lb))):
                 stop = StopReason.STALLED
                 break
             held = len(open_heap) + len(table)
@@ -291,15 +292,19 @@ class Searcher:
 @dataclass(frozen=True)
 class Stall:
     """When an A* whose proven bound has stopped rising gives up: once it has spent `min_work`
-    (heuristic work) and its bound last rose more than `share` of the work spent so far ago. On
-    valid_seen scenarios the bound of a search that is going to prove its plan rises as it goes
-    (docs/planning.md); a search whose bound sits still for most of its budget rarely proves it."""
+    (heuristic work) and its bound last rose more than `share` of the work spent so far ago, unless
+    its plan is at most `near` objective units above the bound. On valid_seen scenarios the bound of
+    a search that is going to prove its plan rises as it goes, or the search exhausts a small space
+    where the plan is one unit above the bound, so that the bound's next rise proves it
+    (docs/planning.md); a search whose bound sits still for most of its budget further off rarely
+    proves it."""
 
     min_work: int
     share: float
+    near: float = 1.0
 
-    def stalled(self, spent: int, last_rise: int) -> bool:
-        return spent >= self.min_work and spent - last_rise >= self.share * spent
+    def stalled(self, spent: int, last_rise: int, gap: float) -> bool:
+        return gap > self.near and spent >= self.min_work and spent - last_rise >= self.share * spent
 
 
 def _lower_bound(lb_heap: list[tuple[int, int, Node]]) -> int | None:
