@@ -1,4 +1,4 @@
-"""Choose fast mode's stall stop (`api.FAST_STALL_WORK`, `api.STALL_SHARE`) on valid_seen scenarios.
+"""Choose fast mode's stall stop (`api.FAST_STALL_WORK`, `STALL_SHARE`, `STALL_NEAR`) on valid_seen scenarios.
 
 Plans the valid_seen 3-4 task scenarios of `planner_validation.py` in fast mode with the stall stop
 off, recording its first plan's cost, when the A*'s proven bound rose (in units of heuristic work)

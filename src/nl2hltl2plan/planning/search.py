@@ -293,15 +293,14 @@ class Searcher:
 class Stall:
     """When an A* whose proven bound has stopped rising gives up: once it has spent `min_work`
     (heuristic work) and its bound last rose more than `share` of the work spent so far ago, unless
-    its plan is at most `near` objective units above the bound. On valid_seen scenarios the bound of
-    a search that is going to prove its plan rises as it goes, or the search exhausts a small space
-    where the plan is one unit above the bound, so that the bound's next rise proves it
-    (docs/planning.md); a search whose bound sits still for most of its budget further off rarely
-    proves it."""
+    its plan is at most `near` objective units above that bound (`gap`). On valid_seen scenarios a
+    search that goes on to prove its plan raises its bound as it goes, or exhausts a small space
+    with its plan one unit above the bound (docs/planning.md); a search whose bound sits still for
+    most of its budget further off rarely proves it."""
 
     min_work: int
     share: float
-    near: float = 1.0
+    near: float
 
     def stalled(self, spent: int, last_rise: int, gap: float) -> bool:
         return gap > self.near and spent >= self.min_work and spent - last_rise >= self.share * spent
