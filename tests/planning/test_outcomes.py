@@ -11,7 +11,7 @@ from planning_worlds import corridor
 from nl2hltl2plan.domain.plan_events import PlanEvent
 from nl2hltl2plan.errors import PlanningError, SpecError
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
-from nl2hltl2plan.planning import plan
+from nl2hltl2plan.planning import api, plan
 from nl2hltl2plan.worlds.demo import demo_world
 
 
@@ -157,12 +157,8 @@ def test_validate_judges_plans_from_elsewhere(two_tasks_world):
     assert not validate(two_tasks_world, spec, late).ok
 
 
-def test_fast_mode_gives_up_a_search_whose_bound_stopped_rising():
-    # three kitchen tasks for two robots: the A* finds no better plan after its seeds, and its bound
-    # sits still for a while before the search space is exhausted (starts where the root's bound does
-    # not prove the plan at once)
-    world = demo_world()
-    spec = HierarchicalSpec([
+def _three_kitchen_tasks() -> HierarchicalSpec:
+    return HierarchicalSpec([
         {"task1": " & ".join(f"F task1.{k}" for k in range(1, 4))},
         {f"task1.{k}": body for k, body in enumerate([
             ["pickup(Plate)", "open(Dishwasher)", "put(Plate,DishwasherLowerRack)"],
@@ -170,6 +166,13 @@ def test_fast_mode_gives_up_a_search_whose_bound_stopped_rising():
             ["pickup(Cup)", "open(Dishwasher)", "put(Cup,DishwasherUpperRack)"],
         ], start=1)},
     ])
+
+
+def test_fast_mode_gives_up_a_search_whose_bound_stopped_rising():
+    # three kitchen tasks for two robots: the A* finds no better plan after its seeds, and its bound
+    # sits still for a while before the search space is exhausted (starts where the root's bound does
+    # not prove the plan at once); the plan is 2 units above the bound, more than STALL_NEAR
+    world, spec = demo_world(), _three_kitchen_tasks()
     starts = [(7, 13), (6, 1)]
     stalled = plan(world, spec, starts, fast_stall_work=1)
     again = plan(world, spec, starts, fast_stall_work=1)
@@ -181,3 +184,13 @@ def test_fast_mode_gives_up_a_search_whose_bound_stopped_rising():
     # the search it gave up proves the same plan optimal; the bound it had reached is below that
     assert full.stopped == "exhausted" and full.proven_optimal and full.cost == stalled.cost
     assert stalled.lower_bound < full.lower_bound == full.cost
+    assert full.cost - stalled.lower_bound > api.STALL_NEAR
+
+
+def test_fast_mode_keeps_searching_while_its_plan_is_near_the_bound(monkeypatch: pytest.MonkeyPatch):
+    # the same search with a plan 2 units above its bound: within STALL_NEAR = 2 the stall stop
+    # waits, and the search goes on to prove the plan optimal by exhausting the space
+    world, spec = demo_world(), _three_kitchen_tasks()
+    monkeypatch.setattr(api, "STALL_NEAR", 2.0)
+    near = plan(world, spec, [(7, 13), (6, 1)], fast_stall_work=1)
+    assert near.stopped == "exhausted" and near.proven_optimal and near.cost == near.lower_bound

@@ -43,9 +43,11 @@ FAST_GENERATED = 5_000  # and AWA* successors generated (at most: large teams br
 FAST_WORK = 400_000  # and heuristic work (assignment-matrix cells: fewer evaluations on larger problems)
 FAST_GAP = 1.05  # fast mode stops once its plan is proven within this factor of the optimum
 # and its A* stops once the proven bound has stopped rising: after FAST_STALL_WORK units of work, when
-# the bound last rose more than STALL_SHARE of the work spent ago (chosen on valid_seen, docs/planning.md)
+# the bound last rose more than STALL_SHARE of the work spent ago, unless the plan is at most STALL_NEAR
+# objective units above the bound (the next rise may prove it; chosen on valid_seen, docs/planning.md)
 FAST_STALL_WORK = 100_000
 STALL_SHARE = 2 / 3
+STALL_NEAR = 1.0
 IMPROVE_EVALS = 600  # local-search candidate replays (both modes)
 LNS_EVALS = 2000  # large-neighbourhood-search candidate replays (both modes)
 # replays cost in proportion to the plan's events: both local searches also stop after this many
@@ -139,8 +141,9 @@ def plan(
     successors and `fast_work` units of heuristic work (assignment-matrix cells: a larger problem
     gets fewer evaluations), stopping as soon as the plan is proven within FAST_GAP (5 %), or, past
     `fast_stall_work` units, once its proven bound has not risen for STALL_SHARE of the work spent
-    (None: never); `bound` is the ratio to the optimum it could prove. With `fast_expansions=None`,
-    fast stops as soon as the plan is proven within factor `w`. Every budget
+    while the plan is more than STALL_NEAR above it (None: never); `bound` is the ratio to the
+    optimum it could prove. With `fast_expansions=None`, fast stops as soon as the plan is proven
+    within factor `w`. Every budget
     counts machine-independent units, so the same input gives the same plan; `timeout_s` is a
     wall-clock last resort, reported as such (`stopped == "timeout"`). `max_nodes` bounds the
     search's memory (nodes held at once; reported as `peak_nodes`, `memory_mb`).
@@ -319,7 +322,7 @@ def _search(searcher: Searcher, x: Expander, budget: Budget) -> Node | None:
                 best = refine_stand_cells(x, best, searcher.obj)
             searcher.found(best)
         start = with_free_stands(root) if budget.free_stands else root
-        stall = None if budget.stall_work is None else Stall(budget.stall_work, STALL_SHARE)
+        stall = None if budget.stall_work is None else Stall(budget.stall_work, STALL_SHARE, STALL_NEAR)
         best = searcher.awa(start, best, budget.w_order, budget.w_stop, max_expansions=budget.expansions,
                             max_nodes=budget.max_nodes, max_generated=budget.generated, max_work=budget.work,
                             stall=stall)

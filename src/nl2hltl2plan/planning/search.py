@@ -223,7 +223,8 @@ class Searcher:
                     break
                 if lb > best_lb:
                     best_lb, last_rise = lb, self.h.work - work_start
-            if best is not None and stall is not None and stall.stalled(self.h.work - work_start, last_rise):
+            if (best is not None and stall is not None
+                    and stall.stalled(self.h.work - work_start, last_rise, obj.unit(ub) - obj.unit(best_lb))):
                 stop = StopReason.STALLED
                 break
             held = len(open_heap) + len(table)
@@ -291,15 +292,18 @@ class Searcher:
 @dataclass(frozen=True)
 class Stall:
     """When an A* whose proven bound has stopped rising gives up: once it has spent `min_work`
-    (heuristic work) and its bound last rose more than `share` of the work spent so far ago. On
-    valid_seen scenarios the bound of a search that is going to prove its plan rises as it goes
-    (docs/planning.md); a search whose bound sits still for most of its budget rarely proves it."""
+    (heuristic work) and its bound last rose more than `share` of the work spent so far ago, unless
+    its plan is at most `near` objective units above that bound (`gap`). On valid_seen scenarios a
+    search that goes on to prove its plan raises its bound as it goes, or exhausts a small space
+    with its plan one unit above the bound (docs/planning.md); a search whose bound sits still for
+    most of its budget further off rarely proves it."""
 
     min_work: int
     share: float
+    near: float
 
-    def stalled(self, spent: int, last_rise: int) -> bool:
-        return spent >= self.min_work and spent - last_rise >= self.share * spent
+    def stalled(self, spent: int, last_rise: int, gap: float) -> bool:
+        return gap > self.near and spent >= self.min_work and spent - last_rise >= self.share * spent
 
 
 def _lower_bound(lb_heap: list[tuple[int, int, Node]]) -> int | None:
