@@ -215,6 +215,9 @@ def _fill(
     every: list[str] | None = None,
 ) -> str:
     place, blocks = m.places[int(x.group(1))], every or blocks_of(m, x.group(2))
+    in_turn = re.search(r"one\s+after|one\s+by|one\s+at|in\s+turn", x.group(3)) is not None
+    if in_turn and every is None and place.kind == "regions":  # "region I receives the blocks one by one"
+        return goal(blocks, place, x.group(0).strip(), x.group(3))
     if place.kind != "regions" or len(set(place.regions)) != len(blocks):
         raise HTTError(f"'{x.group(0).strip()}': fill needs as many named regions as blocks")
     return goal(blocks, place, x.group(0).strip(), x.group(3))

@@ -79,6 +79,15 @@ def read_orders(m: Marked) -> list[tuple[str, str]]:
         rf"(?:\s+(?:after\s+B(\d+)|second|next|last|afterwards?))?{end}",
         add_then,
     )
+    def add_keeping_goal(x: re.Match[str]) -> str:  # the goal stays for the goal reader
+        add_pair(x.group(2), x.group(4)) if x.group(3) == "before" else add_pair(x.group(4), x.group(2))
+        return f" {x.group(1)} "
+
+    m.sub(  # "place the red block on the opposite side before the blue block"
+        rf"\b((?:{VERB}|{GERUND})\s+B(\d+)\s+(?:back\s+)?{PREP}\s+P\d+)\s*,?\s+(?:first\s*,?\s*)?(before|after)\s+"
+        rf"(?:you\s+(?:{VERB}\s+)?|{GERUND}\s+)?B(\d+){tail}{end}",
+        add_keeping_goal,
+    )
     for word, flip in ((r"before", False), (r"(?:after|once)", True)):
         m.sub(
             rf"\b(?:{VERB}|{GERUND}|do|handle)\s+B(\d+)\s+(?:first\s*,?\s*)?{word}\s+(?:you\s+(?:{VERB}\s+)?|{GERUND}\s+)?B(\d+){tail}",
@@ -170,7 +179,7 @@ def read_touch_guards(m: Marked) -> list[tuple[str, str]]:
         rf"\b(?:keep|hold)\s+A\s+(?:off|away\s+from)\s+B(?P<x>\d+)\s+{until}\s+{other}",
         rf"\bB(?P<x>\d+)\s+(?:is|are|stays?|remains?)\s+off\s+limits\s+{until}\s+{other}",
         rf"\bB(?P<x>\d+)\s+{MODAL}wait\s+{until}\s+{other}",
-        rf"\bB(?P<x>\d+)\s+{MODAL}(?:remain|stay|be\s+left|left)\s+untouched\s+{until}\s+{other}",
+        rf"\bB(?P<x>\d+)\s+{MODAL}(?:(?:remains?|stays?|remaining|staying|be\s+left|left)\s+)?untouched\s+{until}\s+{other}",
         rf"\b{after}\s+{other}\s*,?\s*(?:only\s+then\s+)?{may}\s+(?:A\s+)?{TOUCH}\s+B(?P<x>\d+)",
         rf"\b{after}\s+{other}\s*,?\s*(?:only\s+then\s+)?{may}\s+B(?P<x>\d+)\s+be\s+{TOUCHED}(?:\s+by\s+A)?",
         rf"(?:\bA\s+)?{may}\s+(?:only\s+)?{TOUCH}\s+B(?P<x>\d+)\s+{after}\s+{other}",
@@ -255,6 +264,7 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
     # "regions F, G and H must not be used (during this period)", "do not use F, G or H"
     used = rf"\bP(?P<p>\d+)\s+(?:{may}\s+)?{NEG}\s+be\s+used{PERIOD}|\b{NEG}\s+use\s+P(?P<q>\d+){PERIOD}"
     m.sub(used, add_used)
+    m.sub(rf"\bno\s+P(?P<p>\d+)\s+(?:{may}\s+)?be\s+used{PERIOD}", add)  # "no other region may be used"
 
     return out + _read_only_on(m)
 

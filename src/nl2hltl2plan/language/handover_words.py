@@ -5,22 +5,24 @@ rewrites that map a writer's variants (synonyms, British forms, common typos) on
 
 VERB = (
     r"(?:transfer|move|put|place|bring|carry|take|deliver|relocate|shift|get|set|send|return|distribute|"
-    r"spread|position|drop|arrange|want|need)"
+    r"spread|position|drop|arrange|want|need|lay|deposit)"
 )
 PREP = r"(?:to|into|onto|on|in|at|towards?|over\s+to|in\s+to|on\s+to|among|across|over)"
 MOD = (
     r"(?:separately|individually|one\s+after\s+another|one\s+by\s+one|one\s+at\s+a\s+time|in\s+turn|each|"
     r"all|at\s+any\s+time|any\s+time|whenever|in\s+any\s+order|as\s+well|too|across|over)"
 )
-GERUND = r"(?:placing|putting|moving|transferring|bringing|carrying|delivering|taking|getting|shifting)"
+GERUND = (
+    r"(?:placing|putting|moving|transferring|bringing|carrying|delivering|taking|getting|shifting|laying)"
+)
 DONE = (
     r"(?:placed|put|moved|transferred|delivered|carried|brought|taken|shifted|relocated|returned|sent|"
-    r"arranged|positioned|distributed|spread|done|handled|set|transfer|move|place|bring|carry|"
+    r"arranged|positioned|distributed|spread|done|handled|set|transfer|move|place|bring|carry|deposited|belongs?|"
     r"dropped|go|goes|going|end\s+up|ends\s+up|land|lands)"
 )
 # a passive goal's or order's modal: "should", "is to", "can", "has to" ... ("be" follows, optional)
 MODAL = (
-    r"(?:(?:should|must|shall|will|can|may|could|would|has\s+to|have\s+to|needs?\s+to|ought\s+to|is\s+to|"
+    r"(?:(?:should|must|shall|will|can|may|could|would|has\s+to|have\s+to|needs?\s+to|ought\s+to|is\s+to|to|"
     r"are\s+to|gets?|is|are|being)\s+)?(?:(?:all|each|both|first|only|also)\s+)?(?:be\s+)?"
 )
 NEG = (
@@ -50,7 +52,7 @@ AFTER_ALL = (
     rf"(?:once|when|after)\s+(?:you|we)\s*(?:'\s*re|'\s*ve\s+been|\s+are|\s+have\s+been)\s+(?:all\s+)?{DONE_STATE}|"
     r"after\s+(?:all\s+(?:of\s+)?(?:these|this|that|"
     r"the\s+above)|everything(?:\s+else)?)|finally|lastly|last\s+of\s+all|at\s+the\s+(?:very\s+)?end|in\s+the\s+end|"
-    r"as\s+(?:a|the)\s+(?:final|last)\s+step)"
+    r"as\s+(?:a|the)\s+(?:final|last)\s+step|(?:up)?on\s+(?:completion|finishing)(?:\s+of\s+(?:this|these|that|the\s+above|all\s+(?:of\s+)?(?:this|these|that)))?)"
 )
 THEN = (
     r"(?:then|after\s+that|afterwards?|next|subsequently|later|and\s+then|(?:and\s+)?from\s+there|"
@@ -104,7 +106,8 @@ REWRITES: tuple[tuple[str, str], ...] = (
     ),
     (r"\s*,?\s*\bwith\s+the\s+(?:rule|condition|constraint|requirement|restriction)\s+that\b", ","),
     (r"\bin\s+addition\b", " "),
-    (r"^\s*(?:order|ordering|sequence|constraint|rule)\s*:", " "),
+    (r"^\s*(?:order|ordering|sequence|constraints?|rules?|requirements?|restrictions?|conditions?)\s*:", " "),
+    (r"^\s*(?:objective|goal|task|aim|mission|instructions?)\s*:", "please"),
     (r"\bunder\s+no\s+circumstances\s+(?=(?:place|put|drop|set|touch|move)\b)", "never "),
     (r"\bat\s+some\s+(?:point|time)\b", "at any time"),
     (r"\bnothing\s+else\b", "nothing"),
@@ -117,10 +120,27 @@ REWRITES: tuple[tuple[str, str], ...] = (
         r"(?:the\s+)?(red|blue|yellow)(?:\s+(?:block|one))?",
         r"\1 first",
     ),
-    (r"\b(?:any|either)\s+of\s+(?=(?:the\s+)?(?:regions?|areas?|zones?)\b)", ""),
+    (r"\b(?:any|either|one)\s+of\s+(?=(?:the\s+)?(?:(?:goal|target)\s+)?(?:regions?|areas?|zones?)\b)", ""),
+    (r"\barrange\s+for\b", " "),  # "arrange for the blocks to be moved to ..."
+    (r"\b(?:simply|merely|just)\s+(?=(?:needs?|ha(?:s|ve))\s+to\b)", ""),  # "they simply need to be moved"
+    # a topic and its pronoun: "as for the red and blue blocks, they ..." -> "the red and blue blocks ..."
+    (r"^\s*as\s+(?:for|to|regards)\s+([a-z ]+?)\s*,\s*(?:they|it)\b", r"\1"),
+    # "on region I first and on region G thereafter", "to region I and, after that, to region G"
+    (
+        r"\band\s+((?:on|onto|in|into|to)\s+(?:region\s+)?[e-j])\s+(?:thereafter|afterwards?|after\s+that|later)\b",
+        r", then \1",
+    ),
+    (r"(?:\s+and)?\s*,\s*(?:after\s+that|afterwards?|subsequently|thereafter)\s*,", ", then"),
     (
         r"\b(?:plan|find|give|compute)\s+(?:a\s+)?(?:solution|plan)\s+(?:that|which)\s+(move|put|place|transfer|bring)s\b",
         r"\1",
+    ),
+    # framing that asks for the plan of a task: "plan how to move ...", "find a way to move ..."
+    (
+        r"^\s*(?:please\s*,?\s*)?(?:(?:plan|figure\s+out|work\s+out|find\s+out|determine|decide|show\s+(?:me|us)|"
+        r"tell\s+(?:me|us))\s+how\s+to|(?:find|devise|come\s+up\s+with|work\s+out|make|create|produce|generate|"
+        r"write)\s+(?:a|the)\s+(?:way|plan|schedule|sequence\s+of\s+actions)\s+(?:to|for\s+the\s+arms\s+to))\b",
+        "please",
     ),
     (r"\b(?:manipulators|grippers|end\s+effectors|robotic\s+arms)\b", "arms"),
     (r"\b(?:manipulator|gripper|end\s+effector|robotic\s+arm)\b", "arm"),
@@ -141,7 +161,13 @@ REWRITES: tuple[tuple[str, str], ...] = (
         r"(?:regions?|positions?|places?|locations?|spots?|sides?)\b",
         " ",
     ),
-    (r"\bit\s+is\s+(?:required|necessary|important|essential)\s+that\b", " "),
+    (
+        r"\bit\s+is\s+(?:required|necessary|important|essential|requested|desired|expected|mandatory|imperative)\s+"
+        r"that\b",
+        " ",
+    ),
+    # "the goal is to have the blocks on ...": the state asked for, as a goal
+    (r"\b(please|to)\s+have\s+(?=(?:the|all|both|each|every)\b)", r"\1 get "),
     # a numbered step: the first, or one after the step before
     (r"^\s*(?:step\s+(?:1|one)\s*:?|1\s*[):]|\(\s*1\s*\))\s*", "first "),
     (r"^\s*(?:step\s+(?:[2-9]|two|three|four|five)\s*:?|[2-9]\s*[):]|\(\s*[2-9]\s*\))\s*", "then "),
