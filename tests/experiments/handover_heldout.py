@@ -1506,7 +1506,10 @@ LEAD_SESSION9: dict[int, list[str]] = {
 # refusals of our rounds below ("all three" without a noun, bare region lists "F, G, H", "region I receives
 # the blocks one after another", "upon completion", "provided that", "it is requested that", "to be
 # placed", "deposited", "belong in", "Objective:", "arrange for", "on I first and on G thereafter", "as for
-# X, they ..."): each gives the written spec.
+# X, they ...", "the arms are required to", "occupy regions", "->", "P for B" / "P: B" headings, "being
+# grasped", "the other regions are not to be used", "receive no object", "X and Y shall exchange their
+# positions", "whereas", "at an arbitrary time", "the only ordering rule is that"): each gives the written
+# spec.
 H43_VARIANTS: dict[int, list[str]] = {
     1: [
         "Put the red block on the opposite side before the blue block, and move all three blocks to the "
@@ -1522,6 +1525,11 @@ H43_VARIANTS: dict[int, list[str]] = {
         "placed prior to the blue block.",
         "Kindly arrange for all three blocks to be moved to the opposite side, with the red block placed "
         "ahead of the blue block.",
+        "The arms are required to transfer the three blocks to the opposite side; the red block is placed "
+        "before the blue block.",
+        "You must move all three blocks to the opposite side. The only ordering rule is that red goes before "
+        "blue.",
+        "Opposite side for all three blocks, red before blue.",
     ],
     2: [
         "I want the three blocks in regions H, I and J, with each region holding only one object.",
@@ -1534,6 +1542,8 @@ H43_VARIANTS: dict[int, list[str]] = {
         "Each of the three blocks is to be deposited in one of the goal regions H, I and J, and no goal "
         "region may contain more than one object.",
         "The three blocks belong in regions H, I and J; each region holds one object.",
+        "The three blocks shall occupy regions H, I and J, max one object per region.",
+        "Blocks → regions H, I and J; at most one object per region.",
     ],
     3: [
         "Move the three pillars to regions E, F and G. No object may be put on any other region than the "
@@ -1549,6 +1559,9 @@ H43_VARIANTS: dict[int, list[str]] = {
         "Three pillars to regions E, F, G. No other region may be used.",
         "Task: move the three pillars to regions E, F and G. No object on any other area than the target "
         "region.",
+        "The three pillars are to be conveyed to regions E, F and G, situated on the side of arm a and arm "
+        "b. Regions H, I and J shall receive no object.",
+        "Move the three pillars to regions E, F and G. The other regions are not to be used for anything.",
     ],
     4: [
         "Move the three blocks into the opposite regions. No arm may pick the blue block up until an arm has "
@@ -1561,12 +1574,21 @@ H43_VARIANTS: dict[int, list[str]] = {
         "region G.",
         "Move the three blocks to the opposite regions, the blue block staying untouched until the red block "
         "has been touched. On completion of this, put the yellow block back to region G.",
+        "All three blocks go to the opposite regions. The blue block may not be picked up by any arm prior "
+        "to the red block being picked up. At the end, the yellow block returns to region G.",
+        "The three blocks must be delivered to the opposite regions; be careful about one thing: the blue "
+        "block remains untouched until the red block has been touched. Finally, return the yellow block to "
+        "region G.",
     ],
     5: [
         "Plan how to exchange the positions of the red block and the blue block, red before blue, and move "
         "the yellow block to the opposite side at any time.",
         "The red block and the blue block are to exchange positions, the red block to be placed before the "
         "blue block. The yellow block is to be moved to the opposite side at any time.",
+        "The red block and the blue block shall exchange their positions, the red block being placed first. "
+        "The yellow block goes to the opposite side at an arbitrary time.",
+        "The red and blue blocks swap their places, red first, whereas the yellow block goes to the opposite "
+        "side at any time.",
     ],
     6: [
         "Could you place the three objects separately in region G, region H and region I? Please set the red "
@@ -1579,6 +1601,8 @@ H43_VARIANTS: dict[int, list[str]] = {
         "block.",
         "Distribute the three blocks over regions G, H and I so that each region gets one block. The red "
         "block has to go down before the blue block.",
+        "The three blocks shall be placed separately in regions G, H and I, where the red block is required "
+        "to be placed before the blue block.",
     ],
     7: [
         "All three to region I, one after another; red before blue. Regions F, G and H stay empty meanwhile.",
@@ -1587,6 +1611,9 @@ H43_VARIANTS: dict[int, list[str]] = {
         "Region I should receive the three blocks one after another. Red has to come before blue, and while "
         "this happens, regions F, G and H must stay empty.",
         "All three to I, one after another, red before blue. F, G, H stay empty meanwhile.",
+        "Region I: all three blocks, one after another, red before blue; F, G and H off limits.",
+        "The three blocks shall be placed on region I in succession, red prior to blue; regions F, G and H "
+        "receive no object during this period.",
     ],
     8: [
         "Come up with a plan to put the yellow block on region I and then on region G, and to move the red "
@@ -1595,6 +1622,8 @@ H43_VARIANTS: dict[int, list[str]] = {
         "blocks are to be moved to any empty region at any time.",
         "Take the yellow block to region I and, after that, to region G. As for the red and blue blocks, "
         "they simply need to be moved to any empty region at any time.",
+        "The yellow block visits region I first and then region G. The red and blue blocks go to any empty "
+        "region at any time you like.",
     ],
 }
 
@@ -1611,6 +1640,9 @@ H43_NEAR_MISSES: dict[int, list[str]] = {
         "Work out how to transfer the three blocks to the opposite side.",
         "Kindly arrange for all three blocks to be moved to region H, with the red block placed ahead of the "
         "blue block.",
+        "Opposite side for the red and blue blocks, red before blue.",
+        "The arms are required to transfer the three blocks to the opposite side; the blue block is placed "
+        "before the red block.",
     ],
     2: [
         "I want the three blocks in regions H and I, with each goal region holding just one object.",
@@ -1618,6 +1650,8 @@ H43_NEAR_MISSES: dict[int, list[str]] = {
         "object.",
         "I want the three blocks in regions H, I and J, with each goal region holding two objects.",
         "Each of the three blocks is to be deposited in one of the goal regions H, I and E.",
+        "The three blocks shall occupy regions H, I and E, max one object per region.",
+        "Blocks → regions H and I; at most one object per region.",
     ],
     3: [
         "Move the three pillars to regions E, F and G. No object may be placed on any other area than region "
@@ -1628,6 +1662,9 @@ H43_NEAR_MISSES: dict[int, list[str]] = {
         "other than the target region.",
         "Three pillars to regions E, F, G. Region H may be used.",
         "Three pillars to regions E, F, G. No object on H, I.",
+        "Move the three pillars to regions E, F and G. Regions H and I shall receive no object.",
+        "Move the three pillars to regions E, F and G. The other regions may be used for anything.",
+        "Pillars → E, F, G. Keep H, I empty.",
     ],
     4: [
         "Move the three blocks into the opposite regions. No arm may pick the red block up until an arm has "
@@ -1637,6 +1674,16 @@ H43_NEAR_MISSES: dict[int, list[str]] = {
         "region G.",
         "The three blocks shall be transferred to the opposite regions. Upon completion, the yellow block "
         "shall be returned to region G.",
+        "All three blocks go to the opposite regions. The blue block may not be picked up by any arm prior "
+        "to the yellow block being picked up. At the end, the yellow block returns to region G.",
+        "All three blocks go to the opposite regions. The red block may not be picked up by any arm prior to "
+        "the blue block being picked up. At the end, the yellow block returns to region G.",
+    ],
+    5: [
+        "The red block and the blue block shall exchange their positions, the blue block being placed first. "
+        "The yellow block goes to the opposite side at any time.",
+        "The red and yellow blocks shall exchange their positions, the red block being placed first. The "
+        "yellow block goes to the opposite side at any time.",
     ],
     6: [
         "Could you place the three objects separately in region G, region H and region I? Please put the "
@@ -1650,22 +1697,27 @@ H43_NEAR_MISSES: dict[int, list[str]] = {
         "All three to I, one after another, red before blue. F, G stay empty meanwhile.",
         "Region I should receive the three blocks one after another. Blue has to come before red, and while "
         "this happens, regions F, G and H must stay empty.",
+        "Region I: all three blocks, one after another, blue before red; F, G and H off limits.",
+        "Region I: all three blocks, one after another, red before blue; F and G off limits.",
     ],
     8: [
         "The yellow block is to be placed on region G first and on region I thereafter; the red and blue "
         "blocks are to be moved to any empty region at any time.",
         "Take the yellow block to region I and, after that, to region H. As for the red and blue blocks, "
         "they simply need to be moved to any empty region at any time.",
+        "The yellow block visits region G first and then region I. The red and blue blocks go to any empty "
+        "region at any time you like.",
     ],
 }
 
 # Our fresh rounds in the styles h38 found weakest (terse, formal, explanatory), each run once on first
 # contact before the reader was changed for it (instance 0): round 1 (24 sentences): 10 gave the written
-# spec, 14 were refused, 0 another spec; round 2 (24): 11 / 13 / 0. After the class fixes: 15 / 9 / 0 and
-# 19 / 5 / 0. Still refused on purpose or left: reasons and asides ("because ...", "since ...", "has to
-# wait:", "the order matters only for ..."), telegraphic headings without a preposition ("Yellow: I, then
-# G", "G, H, I: one block each", "Blue block: not to be touched before red block"), "respectively". The
-# test asserts that each is read right or refused, never misread.
+# spec, 14 were refused, 0 another spec; round 2 (24): 11 / 13 / 0; round 3 (24): 2 / 22 / 0. After the
+# class fixes: 15 / 9 / 0, 19 / 5 / 0 and 19 / 5 / 0. Still refused: reasons and asides ("because ...",
+# "since ...", "has to wait:", "what I need is simple:", "stack nothing:"), telegraphic chains without a
+# preposition ("Yellow: I, then G", "Yellow -> I -> G", "G, H, I: one block each", "Blue block: not to be
+# touched before red block"), "respectively", "where the other one started" for an exchange. The test
+# asserts that each is read right or refused, never misread.
 H43_ROUNDS: dict[int, list[str]] = {
     1: [
         "Blocks: all three to the opposite side. Order: red, then blue.",
@@ -1679,6 +1731,11 @@ H43_ROUNDS: dict[int, list[str]] = {
         "ahead of the blue block.",
         "Since the blocks start on one side, they all have to go across to the opposite side; place the red "
         "one there before the blue one.",
+        "Opposite side: all blocks. Red precedes blue.",
+        "The arms are required to transfer every block to the opposite side, and the red block is to be "
+        "placed before the blue block.",
+        "What I need is simple: the three blocks should all end up on the opposite side, and the red one has "
+        "to be put there before the blue one.",
     ],
     2: [
         "Three blocks to H, I, J; one per region.",
@@ -1691,6 +1748,10 @@ H43_ROUNDS: dict[int, list[str]] = {
         "region may contain more than one object.",
         "The three blocks belong in regions H, I and J. A region can hold just one object, so put one block "
         "in each.",
+        "Blocks to regions H/I/J, max one per region.",
+        "The three blocks shall occupy regions H, I and J, no region holding more than a single object.",
+        "Please fill the goal regions H, I and J with the three blocks; because every goal region fits only "
+        "one object, the blocks will end up in different regions.",
     ],
     3: [
         "Pillars to E, F, G. Nothing on other regions.",
@@ -1704,6 +1765,12 @@ H43_ROUNDS: dict[int, list[str]] = {
         "prohibited.",
         "Move the pillars to E, F and G, the regions on the side of arm a and arm b. Keep in mind that no "
         "object may ever be put on an area other than the target region.",
+        "Pillars → E, F, G. Keep H, I, J empty.",
+        "The three pillars are to be conveyed to regions E, F and G, located on the side of arm a and arm b. "
+        "At no time may an object be placed on an area other than the target region.",
+        "The pillars should go to the placement area by arm a and arm b, i.e. regions E, F and G. The other "
+        "regions are not to be used for anything, so do not drop any object on an area other than the target "
+        "region.",
     ],
     4: [
         "Three blocks to the opposite regions. Blue untouched until red is touched. Last: yellow back to G.",
@@ -1721,6 +1788,14 @@ H43_ROUNDS: dict[int, list[str]] = {
         "Start by moving the three blocks to the opposite regions. There is one restriction: the blue block "
         "must not be picked up by any arm before the red block has been picked up. Once that is finished, "
         "move the yellow block back to region G.",
+        "Opposite regions for all three blocks; red must be touched before blue; yellow returns to G at the "
+        "end.",
+        "All three blocks must be delivered to the opposite regions. The blue block may not be grasped by "
+        "any arm prior to the red block being grasped. Once the above is complete, the yellow block must be "
+        "placed back on region G.",
+        "You will move the three blocks to the opposite regions. Be careful about one thing: the blue block "
+        "must stay untouched until an arm has touched the red block. At the very end, the yellow block goes "
+        "back to region G.",
     ],
     5: [
         "Swap red and blue, red first. Yellow to the opposite side, any time.",
@@ -1733,6 +1808,11 @@ H43_ROUNDS: dict[int, list[str]] = {
         "blue block. The yellow block is to be moved to the opposite side at any time.",
         "Red and blue need to swap places. Because red must be placed before blue, start with red. The "
         "yellow block can go to the opposite side whenever convenient.",
+        "Red and blue swap positions (red placed first); yellow to the opposite side whenever.",
+        "The red block and the blue block shall exchange their positions, the red block being placed first, "
+        "while the yellow block shall be transferred to the opposite side at an arbitrary time.",
+        "I want red and blue to end up where the other one started, and red should be placed before blue. "
+        "Whenever it suits you, also move the yellow block to the opposite side.",
     ],
     6: [
         "Three blocks to G, H, I, one each. Red before blue.",
@@ -1745,6 +1825,11 @@ H43_ROUNDS: dict[int, list[str]] = {
         "placed prior to the blue block.",
         "Distribute the three blocks over regions G, H and I so that each region gets one block. The red "
         "block has to go down before the blue block.",
+        "Regions G, H, I get the three blocks, one each; red placed before blue.",
+        "The three blocks shall be placed separately in regions G, H and I, where the red block is required "
+        "to be placed before the blue block.",
+        "Spread the three blocks across regions G, H and I, one per region. The only ordering rule is that "
+        "the red block is placed earlier than the blue block.",
     ],
     7: [
         "All three to I, one after another, red before blue. F, G, H stay empty meanwhile.",
@@ -1757,6 +1842,11 @@ H43_ROUNDS: dict[int, list[str]] = {
         "blue block; no object may be placed on regions F, G or H during this period.",
         "Put each of the three blocks on region I in turn. The red block must come before the blue block, "
         "and until then nothing should be put on region F, G or H.",
+        "Region I: all three blocks, one after another, red before blue; F, G, H off limits.",
+        "The three blocks shall be placed on region I in succession, the red block prior to the blue block, "
+        "and regions F, G and H shall receive no object during this period.",
+        "Stack nothing: put the three blocks on region I one at a time, red before blue, and keep regions F, "
+        "G and H free the whole time.",
     ],
     8: [
         "Yellow: I, then G. Red and blue: any empty region, any time.",
@@ -1769,5 +1859,10 @@ H43_ROUNDS: dict[int, list[str]] = {
         "blocks are to be moved to any empty region at any time.",
         "Take the yellow block to region I and, after that, to region G. As for the red and blue blocks, "
         "they simply need to be moved to any empty region at any time.",
+        "Yellow → I → G. Red, blue → any empty region, any time.",
+        "The yellow block shall be moved to region I and subsequently to region G, whereas the red and blue "
+        "blocks shall be moved to any empty region at any time.",
+        "The yellow block visits region I first and then region G. Meanwhile, at any time you like, the red "
+        "and blue blocks have to be moved to any empty region.",
     ],
 }

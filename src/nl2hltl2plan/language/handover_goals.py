@@ -117,7 +117,12 @@ def goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
         rf"(?:back\s+)?{PREP}\s+P(\d+){mods}",
         lambda x: matched(x, 1),
     )
-    # a heading-like goal at the start of a sentence or after a comma: "pillars to E, F and G"
+    # a heading-like goal at the start of a sentence or after a comma: "pillars to E, F and G"; the place
+    # first: "region I: all three blocks", "the opposite regions for all three blocks"
+    m.sub(
+        rf"(?:^|(?<=,))\s*P(\d+)\s*(?::|\bfor\b)\s*B(\d+){mods}(?=\s*(?:$|,|\band\b))",
+        lambda x: goal(blocks_of(m, x.group(2)), m.places[int(x.group(1))], x.group(0), x.group(3)),
+    )
     m.sub(
         rf"(?:^|(?<=,))\s*B(\d+){mods}\s*(?::\s*|,?\s*(?:to|into|onto)\s+)P(\d+){mods}(?:\s+first\b)?(?=\s*(?:$|,|\band\b))",
         lambda x: matched(x, 1),
@@ -166,6 +171,20 @@ def goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
 def _read_exchanges(m: Marked, exchange: Callable[..., str]) -> None:
     """'exchange the positions of X and Y', 'swap X with Y', 'X and Y should trade places', 'the positions
     of X and Y should be swapped' (and '..., so that each ends up where the other was')."""
+    m.sub(  # "the red block and the blue block shall exchange their positions"
+        rf"\bB(\d+)\s+and\s+B(\d+)\s+(?:to\s+)?{MODAL}(?:exchange|swap|switch|trade)s?\s+(?:their\s+)?"
+        r"(?:positions|places|locations|spots)",
+        lambda x: exchange(x, x.group(2)),
+    )
+
+    def exchange_their(x: re.Match[str]) -> str:  # "their" must name the same two blocks
+        same = sorted(m.blocks[int(x.group(1))]) == sorted(m.blocks[int(x.group(2))])
+        return exchange(x) if same else x.group(0)
+
+    m.sub(
+        rf"\bB(\d+)\s+(?:to\s+)?{MODAL}(?:exchange|swap|switch|trade)s?\s+B(\d+)\s+(?:positions|places|locations|spots)",
+        exchange_their,
+    )
     m.sub(  # "swap the red block with the blue block"
         rf"\b{SWAP}\s+(?:the\s+)?(?:positions?\s+of\s+)?B(\d+)(?:\s+(?:s\s+)?(?:positions?|places?|locations?))?\s+(?:with|and)\s+"
         r"B(\d+)(?:\s+(?:s\s+)?(?:positions?|places?|locations?))?",

@@ -155,7 +155,7 @@ def read_touch_guards(m: Marked) -> list[tuple[str, str]]:
     # Y's touch, active ("an arm touched Y"), passive ("Y has been touched") or elliptic ("... before Y")
     other = (
         rf"(?:(?:A\s+)?(?:has\s+|have\s+|had\s+)?(?:already\s+)?(?:{TOUCHED}|{TOUCHING})\s+B(?P<y1>\d+)|B(?P<y2>\d+)\s+"
-        rf"(?:(?:has|have|had)\s+(?:already\s+)?been|is|was|gets|got)\s+(?:already\s+)?{TOUCHED}(?:\s+by\s+A)?|"
+        rf"(?:(?:has|have|had)\s+(?:already\s+)?been|is|was|gets|got|being)\s+(?:already\s+)?{TOUCHED}(?:\s+by\s+A)?|"
         rf"B(?P<y3>\d+){end})"
     )
     may = _MAY
@@ -209,13 +209,6 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
         out.append((blocks, None if explicit else place, explicit, match.group(0).strip()))
         return " "
 
-    def add_used(match: re.Match[str]) -> str:
-        place = m.places[int(match.group("p") or match.group("q"))]
-        if place.kind != "regions":
-            raise HTTError(f"cannot forbid '{place.text}': name the regions")
-        out.append(([], None, list(place.regions), match.group(0).strip()))
-        return " "
-
     down = rf"(?:\s+down)?\s+{PREP}\s+P(?P<p>\d+){PERIOD}"
     m.sub(
         rf"\b{PERIOD_WORDS}\s*,?\s*(?=no\s+B|nothing|B\d+\s+{MODAL}{NEG}|(?:A\s+)?{NEG}|keep|leave|P\d)", " "
@@ -227,6 +220,9 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
     receive = rf"(?:receive|get|hold|take|contain)s?\s+{thing}"
     m.sub(rf"\bno\s+P(?P<p>\d+)\s+(?:{may}\s+)?{receive}\b{PERIOD}", add)
     m.sub(rf"\bP(?P<p>\d+)\s+(?:{may}\s+)?{NEG}\s+{receive}\b{PERIOD}", add)
+    # "regions F, G and H shall receive no object"
+    receive_no = r"(?:receive|get|hold|take|contain)s?\s+no"
+    m.sub(rf"\bP(?P<p>\d+)\s+(?:{may}\s+)?{receive_no}\s*B(?P<b>\d+){PERIOD}", add)
     # "nothing goes on F, G or H", "no block may go on R"
     m.sub(
         rf"\b(?:no\s+B(?P<b>\d+)|nothing)\s+(?:{may}\s+)?(?:goes|go)\s+(?:on|in|onto|into|to)\s+P(?P<p>\d+){PERIOD}",
@@ -260,10 +256,12 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
     free = rf"{EMPTY}(?:\s+(?:of\s+)?B\d+)?"
     m.sub(rf"\bP(?P<p>\d+)\s+{stay}\s+{free}{PERIOD}", add)
     m.sub(rf"\b(?:keep|leave)\s+P(?P<p>\d+)\s+{free}{PERIOD}", add)
-    m.sub(rf"\bP(?P<p>\d+)\s+(?:is|are|stays?|remains?|{stay})\s+off\s+limits{PERIOD}", add)
+    m.sub(rf"\bP(?P<p>\d+)\s+(?:(?:is|are|stays?|remains?|{stay})\s+)?off\s+limits{PERIOD}", add)
     # "regions F, G and H must not be used (during this period)", "do not use F, G or H"
-    used = rf"\bP(?P<p>\d+)\s+(?:{may}\s+)?{NEG}\s+be\s+used{PERIOD}|\b{NEG}\s+use\s+P(?P<q>\d+){PERIOD}"
-    m.sub(used, add_used)
+    for_nothing = r"(?:\s+(?:for\s+)?(?:anything|any\s+(?:block|object|pillar)))?"
+    be_used = rf"(?:to\s+)?be\s+used{for_nothing}{PERIOD}"
+    m.sub(rf"\bP(?P<p>\d+)\s+(?:{may}\s+|(?:is|are)\s+)?{NEG}\s+{be_used}", add)
+    m.sub(rf"\b{NEG}\s+use\s+P(?P<p>\d+){for_nothing}{PERIOD}", add)
     m.sub(rf"\bno\s+P(?P<p>\d+)\s+(?:{may}\s+)?be\s+used{PERIOD}", add)  # "no other region may be used"
 
     return out + _read_only_on(m)

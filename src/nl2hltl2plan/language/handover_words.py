@@ -17,7 +17,7 @@ GERUND = (
 )
 DONE = (
     r"(?:placed|put|moved|transferred|delivered|carried|brought|taken|shifted|relocated|returned|sent|"
-    r"arranged|positioned|distributed|spread|done|handled|set|transfer|move|place|bring|carry|deposited|belongs?|"
+    r"arranged|positioned|distributed|spread|done|handled|set|transfer|move|place|bring|carry|deposited|belongs?|conveyed|returns|"
     r"dropped|go|goes|going|end\s+up|ends\s+up|land|lands)"
 )
 # a passive goal's or order's modal: "should", "is to", "can", "has to" ... ("be" follows, optional)
@@ -61,7 +61,7 @@ THEN = (
 # a place named again in other words: "the placement area, which consists of regions E, F and G"
 APPOSITION = (
     r"(?:\(|which\s+(?:is|are)\s+made\s+up\s+of|(?:which\s+(?:is|are|lies?|sits?)\s+|that\s+(?:is|are|lies?)\s+)?"
-    r"(?:to|on|at|in)|that\s+is|"
+    r"(?:(?:located|situated|lying)\s+)?(?:to|on|at|in)|that\s+is|"
     r"which\s+(?:is|are|consists\s+of|comprises|includes|lies|lie)|consisting\s+of|comprising|"
     r"made\s+up\s+of|namely|:)"
 )
@@ -86,7 +86,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\banytime\b|\bin\s+any\s+time\b", "at any time"),
     (
         r"\b(?:whenever\s+(?:you\s+(?:like|want|wish|please|can)|convenient|possible|it\s+suits\s+you)|"
-        r"at\s+(?:any|whatever)\s+(?:point(?:\s+in\s+time)?|moment|stage)|any\s+time\s+you\s+(?:like|want))\b",
+        r"at\s+(?:any|whatever)\s+(?:point(?:\s+in\s+time)?|moment|stage)|(?:at\s+)?any\s+time\s+you\s+(?:like|want))\b",
         "at any time",
     ),
     (r"\bat\s+any\s+time\s+at\s+any\s+time\b", "at any time"),
@@ -121,7 +121,31 @@ REWRITES: tuple[tuple[str, str], ...] = (
         r"\1 first",
     ),
     (r"\b(?:any|either|one)\s+of\s+(?=(?:the\s+)?(?:(?:goal|target)\s+)?(?:regions?|areas?|zones?)\b)", ""),
-    (r"\barrange\s+for\b", " "),  # "arrange for the blocks to be moved to ..."
+    (r"\barrange\s+for\b", " "),
+    (r"\s*(?:→|->|=>)\s*", " to "),  # "pillars -> E, F, G"
+    (r"\s*,?\s*\bwhereas\b", ", and"),
+    (r"\bat\s+(?:an?\s+)?(?:arbitrary|unspecified|any\s+given)\s+(?:time|point|moment)\b", "at any time"),
+    (r"\b(?:is|are)\s+(?:required|obliged|supposed|expected)\s+to\b", "must"),
+    (r"\bvisits?\b", "goes to"),
+    # an agent with a modal before the task: "the arms are required to transfer ...", "you will move ..."
+    (
+        rf"^\s*(?:you|we|the\s+(?:robot\s+)?arms|the\s+robots?)\s+(?:must|should|will|shall|need\s+to|have\s+to)\s+"
+        rf"(?={VERB}\b)",
+        "please ",
+    ),
+    # a rule announced: "the only ordering rule is that ...", "be careful about one thing:"
+    (
+        r"\b(?:the|one|an?|another)\s+(?:only\s+)?(?:other\s+)?(?:ordering\s+|order\s+)?"
+        r"(?:rule|constraint|requirement|restriction|condition)\s+is\s+(?:that\b|:)",
+        " ",
+    ),
+    (r"\b(?:be\s+careful|pay\s+attention)\s+(?:about|to)\s+(?:one|this|the\s+following)\s+thing\s*:", " "),
+    # "the blocks shall occupy regions H, I and J": go there (not "occupy R with the blocks")
+    (
+        r"\b((?:blocks|pillars|objects|cubes|items)\s+(?:(?:shall|should|must|will|are\s+to|need\s+to|have\s+to)\s+)?)"
+        r"occupy\s+(?=(?:the\s+)?(?:(?:goal|target)\s+)?regions?\b)",
+        r"\1go to ",
+    ),  # "arrange for the blocks to be moved to ..."
     (r"\b(?:simply|merely|just)\s+(?=(?:needs?|ha(?:s|ve))\s+to\b)", ""),  # "they simply need to be moved"
     # a topic and its pronoun: "as for the red and blue blocks, they ..." -> "the red and blue blocks ..."
     (r"^\s*as\s+(?:for|to|regards)\s+([a-z ]+?)\s*,\s*(?:they|it)\b", r"\1"),
