@@ -1508,8 +1508,10 @@ LEAD_SESSION9: dict[int, list[str]] = {
 # placed", "deposited", "belong in", "Objective:", "arrange for", "on I first and on G thereafter", "as for
 # X, they ...", "the arms are required to", "occupy regions", "->", "P for B" / "P: B" headings, "being
 # grasped", "the other regions are not to be used", "receive no object", "X and Y shall exchange their
-# positions", "whereas", "at an arbitrary time", "the only ordering rule is that"): each gives the written
-# spec.
+# positions", "whereas", "at an arbitrary time", "the only ordering rule is that", "having been placed",
+# "the desired outcome is that ... rest on", "single object per region", "accommodating", "no placement
+# outside", "whereby", "there is a rule about touching:", "should be swapped", "it does not matter when",
+# "gets its own region among", "for as long as this takes", "F/G/H: nothing"): each gives the written spec.
 H43_VARIANTS: dict[int, list[str]] = {
     1: [
         "Put the red block on the opposite side before the blue block, and move all three blocks to the "
@@ -1530,6 +1532,9 @@ H43_VARIANTS: dict[int, list[str]] = {
         "You must move all three blocks to the opposite side. The only ordering rule is that red goes before "
         "blue.",
         "Opposite side for all three blocks, red before blue.",
+        "Move: the 3 blocks -> the opposite side, with the red block having been placed before the blue "
+        "block.",
+        "The desired result is that the three blocks rest on the opposite side; red goes before blue.",
     ],
     2: [
         "I want the three blocks in regions H, I and J, with each region holding only one object.",
@@ -1544,6 +1549,8 @@ H43_VARIANTS: dict[int, list[str]] = {
         "The three blocks belong in regions H, I and J; each region holds one object.",
         "The three blocks shall occupy regions H, I and J, max one object per region.",
         "Blocks → regions H, I and J; at most one object per region.",
+        "Put the three blocks in regions H, I and J, each region accommodating a single object.",
+        "Here is the task: the three blocks go to regions H, I and J (single block per region).",
     ],
     3: [
         "Move the three pillars to regions E, F and G. No object may be put on any other region than the "
@@ -1562,6 +1569,9 @@ H43_VARIANTS: dict[int, list[str]] = {
         "The three pillars are to be conveyed to regions E, F and G, situated on the side of arm a and arm "
         "b. Regions H, I and J shall receive no object.",
         "Move the three pillars to regions E, F and G. The other regions are not to be used for anything.",
+        "Move the three pillars to regions E, F and G; no placement outside the target regions.",
+        "It is necessary to move the three pillars to regions E, F and G, whereby no object may be placed on "
+        "an area other than the target region.",
     ],
     4: [
         "Move the three blocks into the opposite regions. No arm may pick the blue block up until an arm has "
@@ -1579,6 +1589,9 @@ H43_VARIANTS: dict[int, list[str]] = {
         "The three blocks must be delivered to the opposite regions; be careful about one thing: the blue "
         "block remains untouched until the red block has been touched. Finally, return the yellow block to "
         "region G.",
+        "Move the three blocks to the opposite regions. There is a rule about touching: no arm may touch the "
+        "blue block until an arm has touched the red block. Thereafter, put the yellow block back on region "
+        "G.",
     ],
     5: [
         "Plan how to exchange the positions of the red block and the blue block, red before blue, and move "
@@ -1589,6 +1602,8 @@ H43_VARIANTS: dict[int, list[str]] = {
         "The yellow block goes to the opposite side at an arbitrary time.",
         "The red and blue blocks swap their places, red first, whereas the yellow block goes to the opposite "
         "side at any time.",
+        "The red and blue blocks should be swapped, red placed first. The yellow block also has to reach the "
+        "opposite side, but it does not matter when.",
     ],
     6: [
         "Could you place the three objects separately in region G, region H and region I? Please set the red "
@@ -1603,6 +1618,8 @@ H43_VARIANTS: dict[int, list[str]] = {
         "block has to go down before the blue block.",
         "The three blocks shall be placed separately in regions G, H and I, where the red block is required "
         "to be placed before the blue block.",
+        "Each of the three blocks gets its own region among G, H and I. When placing them, do the red block "
+        "before the blue block.",
     ],
     7: [
         "All three to region I, one after another; red before blue. Regions F, G and H stay empty meanwhile.",
@@ -1614,6 +1631,9 @@ H43_VARIANTS: dict[int, list[str]] = {
         "Region I: all three blocks, one after another, red before blue; F, G and H off limits.",
         "The three blocks shall be placed on region I in succession, red prior to blue; regions F, G and H "
         "receive no object during this period.",
+        "3 objects -> region I one after another (red before blue); F/G/H: nothing during this period.",
+        "Put the three blocks on region I one after another, red before blue. For as long as this takes, "
+        "regions F, G and H must not receive any object.",
     ],
     8: [
         "Come up with a plan to put the yellow block on region I and then on region G, and to move the red "
@@ -1643,6 +1663,9 @@ H43_NEAR_MISSES: dict[int, list[str]] = {
         "Opposite side for the red and blue blocks, red before blue.",
         "The arms are required to transfer the three blocks to the opposite side; the blue block is placed "
         "before the red block.",
+        "Move: the 3 blocks -> the opposite side, with the blue block having been placed before the red "
+        "block.",
+        "The desired result is that the red and blue blocks rest on the opposite side; red goes before blue.",
     ],
     2: [
         "I want the three blocks in regions H and I, with each goal region holding just one object.",
@@ -1652,6 +1675,7 @@ H43_NEAR_MISSES: dict[int, list[str]] = {
         "Each of the three blocks is to be deposited in one of the goal regions H, I and E.",
         "The three blocks shall occupy regions H, I and E, max one object per region.",
         "Blocks → regions H and I; at most one object per region.",
+        "Put the three blocks in regions H, I and E, each region accommodating a single object.",
     ],
     3: [
         "Move the three pillars to regions E, F and G. No object may be placed on any other area than region "
@@ -1665,6 +1689,8 @@ H43_NEAR_MISSES: dict[int, list[str]] = {
         "Move the three pillars to regions E, F and G. Regions H and I shall receive no object.",
         "Move the three pillars to regions E, F and G. The other regions may be used for anything.",
         "Pillars → E, F, G. Keep H, I empty.",
+        "It is necessary to move the three pillars to regions E, F and G, whereby no object may be placed on "
+        "region H.",
     ],
     4: [
         "Move the three blocks into the opposite regions. No arm may pick the red block up until an arm has "
@@ -1684,12 +1710,16 @@ H43_NEAR_MISSES: dict[int, list[str]] = {
         "The yellow block goes to the opposite side at any time.",
         "The red and yellow blocks shall exchange their positions, the red block being placed first. The "
         "yellow block goes to the opposite side at any time.",
+        "The red and yellow blocks should be swapped, red placed first. The blue block also has to reach the "
+        "opposite side, but it does not matter when.",
     ],
     6: [
         "Could you place the three objects separately in region G, region H and region I? Please put the "
         "blue block down before the red block.",
         "Place the three objects separately in region G, region H and region I. Put the red block down on "
         "region H before the blue block.",
+        "Each of the three blocks gets its own region among G, H and J. When placing them, do the red block "
+        "before the blue block.",
     ],
     7: [
         "Region I should receive the three blocks. Red has to come before blue, and while this happens, "
@@ -1699,6 +1729,7 @@ H43_NEAR_MISSES: dict[int, list[str]] = {
         "this happens, regions F, G and H must stay empty.",
         "Region I: all three blocks, one after another, blue before red; F, G and H off limits.",
         "Region I: all three blocks, one after another, red before blue; F and G off limits.",
+        "3 objects -> region I one after another (red before blue); F/G: nothing during this period.",
     ],
     8: [
         "The yellow block is to be placed on region G first and on region I thereafter; the red and blue "
@@ -1712,12 +1743,14 @@ H43_NEAR_MISSES: dict[int, list[str]] = {
 
 # Our fresh rounds in the styles h38 found weakest (terse, formal, explanatory), each run once on first
 # contact before the reader was changed for it (instance 0): round 1 (24 sentences): 10 gave the written
-# spec, 14 were refused, 0 another spec; round 2 (24): 11 / 13 / 0; round 3 (24): 2 / 22 / 0. After the
-# class fixes: 15 / 9 / 0, 19 / 5 / 0 and 19 / 5 / 0. Still refused: reasons and asides ("because ...",
-# "since ...", "has to wait:", "what I need is simple:", "stack nothing:"), telegraphic chains without a
-# preposition ("Yellow: I, then G", "Yellow -> I -> G", "G, H, I: one block each", "Blue block: not to be
-# touched before red block"), "respectively", "where the other one started" for an exchange. The test
-# asserts that each is read right or refused, never misread.
+# spec, 14 were refused, 0 another spec; round 2 (24): 11 / 13 / 0; round 3 (24): 2 / 22 / 0; round 4
+# (24): 7 / 17 / 0. After the class fixes: 15 / 9 / 0, 19 / 5 / 0, 19 / 5 / 0 and 20 / 4 / 0. Still
+# refused: reasons and asides ("because ...", "since ...", "has to wait:", "what I need is simple:",
+# "stack nothing:", "has two destinations in order:"), statements of the start ("all of the blocks start
+# on one side"), places defined in one sentence and used as "there" in the next, telegraphic chains
+# without a preposition ("Yellow: I, then G", "Yellow -> I -> G", "G, H, I: one block each", "Blue block:
+# not to be touched before red block", "yellow back to region G"), "respectively", "where the other one
+# started" for an exchange. The test asserts that each is read right or refused, never misread.
 H43_ROUNDS: dict[int, list[str]] = {
     1: [
         "Blocks: all three to the opposite side. Order: red, then blue.",
@@ -1736,6 +1769,11 @@ H43_ROUNDS: dict[int, list[str]] = {
         "placed before the blue block.",
         "What I need is simple: the three blocks should all end up on the opposite side, and the red one has "
         "to be put there before the blue one.",
+        "Transfer: 3 blocks -> opposite side. Red before blue.",
+        "The desired outcome is that the three blocks rest on the opposite side, with the red block having "
+        "been placed before the blue block.",
+        "All of the blocks start on one side of the table. Your job is to get them to the opposite side, and "
+        "the red block must be placed before the blue one.",
     ],
     2: [
         "Three blocks to H, I, J; one per region.",
@@ -1752,6 +1790,10 @@ H43_ROUNDS: dict[int, list[str]] = {
         "The three blocks shall occupy regions H, I and J, no region holding more than a single object.",
         "Please fill the goal regions H, I and J with the three blocks; because every goal region fits only "
         "one object, the blocks will end up in different regions.",
+        "Place 3 blocks into H, I, J (single object per region).",
+        "Regions H, I and J are to receive the three blocks, each region accommodating exactly one object.",
+        "The goal regions are H, I and J. Move the three blocks there; note that a goal region can only hold "
+        "one object.",
     ],
     3: [
         "Pillars to E, F, G. Nothing on other regions.",
@@ -1771,6 +1813,11 @@ H43_ROUNDS: dict[int, list[str]] = {
         "The pillars should go to the placement area by arm a and arm b, i.e. regions E, F and G. The other "
         "regions are not to be used for anything, so do not drop any object on an area other than the target "
         "region.",
+        "Move pillars to E/F/G; no placements outside the target regions.",
+        "The three pillars must be relocated to the placement area beside arm a and arm b, consisting of "
+        "regions E, F and G; placing objects anywhere other than the target region is not permitted.",
+        "Here is the task: the three pillars have to end up in regions E, F and G, on the side of arm a and "
+        "arm b. While doing this, no object may be placed on an area other than the target region.",
     ],
     4: [
         "Three blocks to the opposite regions. Blue untouched until red is touched. Last: yellow back to G.",
@@ -1796,6 +1843,13 @@ H43_ROUNDS: dict[int, list[str]] = {
         "You will move the three blocks to the opposite regions. Be careful about one thing: the blue block "
         "must stay untouched until an arm has touched the red block. At the very end, the yellow block goes "
         "back to region G.",
+        "Blocks to the opposite regions. Touch red before blue. Afterwards, yellow back to region G.",
+        "It is necessary to transfer the three blocks into the opposite regions, whereby the blue block "
+        "shall not be touched until the red block has been touched; thereafter the yellow block shall be "
+        "placed back on region G.",
+        "Move the three blocks across to the opposite regions. There is a rule about touching: the arms must "
+        "leave the blue block alone until one of them has touched the red block. Once everything is done, "
+        "put the yellow block back on region G.",
     ],
     5: [
         "Swap red and blue, red first. Yellow to the opposite side, any time.",
@@ -1813,6 +1867,11 @@ H43_ROUNDS: dict[int, list[str]] = {
         "while the yellow block shall be transferred to the opposite side at an arbitrary time.",
         "I want red and blue to end up where the other one started, and red should be placed before blue. "
         "Whenever it suits you, also move the yellow block to the opposite side.",
+        "Swap red/blue positions, red placed first; yellow -> opposite side at any time.",
+        "It is required that the red block and the blue block exchange positions, the red block being placed "
+        "before the blue block, and that the yellow block be moved to the opposite side at any time.",
+        "The red and blue blocks should end up swapped. Put the red one down first, then the blue one. The "
+        "yellow block also has to go to the opposite side, but it does not matter when.",
     ],
     6: [
         "Three blocks to G, H, I, one each. Red before blue.",
@@ -1830,6 +1889,11 @@ H43_ROUNDS: dict[int, list[str]] = {
         "to be placed before the blue block.",
         "Spread the three blocks across regions G, H and I, one per region. The only ordering rule is that "
         "the red block is placed earlier than the blue block.",
+        "3 blocks -> G, H, I separately. Red before blue.",
+        "The three blocks are to be distributed separately over regions G, H and I, the placement of the red "
+        "block preceding that of the blue block.",
+        "Each of the three blocks needs its own region among G, H and I. When placing them, do the red block "
+        "before the blue block.",
     ],
     7: [
         "All three to I, one after another, red before blue. F, G, H stay empty meanwhile.",
@@ -1847,6 +1911,11 @@ H43_ROUNDS: dict[int, list[str]] = {
         "and regions F, G and H shall receive no object during this period.",
         "Stack nothing: put the three blocks on region I one at a time, red before blue, and keep regions F, "
         "G and H free the whole time.",
+        "3 objects -> region I one after another (red before blue); F/G/H: nothing during this period.",
+        "The three objects shall be deposited on region I one after another, the red block ahead of the blue "
+        "block, and no object shall be placed on regions F, G and H throughout.",
+        "Put the three blocks onto region I, one after the other. Red must go before blue. For as long as "
+        "this takes, regions F, G and H must not receive any object.",
     ],
     8: [
         "Yellow: I, then G. Red and blue: any empty region, any time.",
@@ -1864,5 +1933,10 @@ H43_ROUNDS: dict[int, list[str]] = {
         "blocks shall be moved to any empty region at any time.",
         "The yellow block visits region I first and then region G. Meanwhile, at any time you like, the red "
         "and blue blocks have to be moved to any empty region.",
+        "Yellow block: region I, then region G. Red and blue blocks: any empty region, at any time.",
+        "The yellow block shall be placed first on region I and then on region G; the red block and the blue "
+        "block shall each be moved to any empty region at any time.",
+        "The yellow block has two destinations in order: region I and then region G. The red and blue blocks "
+        "just have to reach any empty region at some point.",
     ],
 }

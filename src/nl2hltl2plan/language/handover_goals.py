@@ -124,7 +124,7 @@ def goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
         lambda x: goal(blocks_of(m, x.group(2)), m.places[int(x.group(1))], x.group(0), x.group(3)),
     )
     m.sub(
-        rf"(?:^|(?<=,))\s*B(\d+){mods}\s*(?::\s*|,?\s*(?:to|into|onto)\s+)P(\d+){mods}(?:\s+first\b)?(?=\s*(?:$|,|\band\b))",
+        rf"(?:^|(?<=,))\s*B(\d+){mods}\s*(?::\s*|,?\s*(?:to|into|onto)\s+)P(\d+){mods}(?:\s+first\b)?(?=\s*(?:$|,|\band\b|\())",
         lambda x: matched(x, 1),
     )
     # "put one block in each of regions H, I and J": every block, one per region (as many as blocks)
@@ -204,6 +204,8 @@ def _read_exchanges(m: Marked, exchange: Callable[..., str]) -> None:
         rf"\b(?:the\s+)?(?:positions?|places?|locations?)\s+of\s+B(\d+)\s+{MODAL}(?:swapped|exchanged|switched|interchanged)",
         exchange,
     )
+    # "the red and blue blocks should be swapped" (after "the positions of ... should be swapped")
+    m.sub(rf"\bB(\d+)\s+{MODAL}(?:swapped|exchanged|switched|interchanged)(?:\s+around)?", exchange)
     # "... so that each ends up where the other was": what an exchange is
     m.sub(
         r"(?<=G\d)\s*,?\s*so\s+that\s+each\s+(?:one\s+)?(?:ends\s+up|is|goes|lands|sits)\s+(?:where|in\s+the\s+place)\s+"

@@ -204,15 +204,15 @@ def _mark_one_per_region(m: Marked) -> None:
     world's own rule (recorded, no formula)."""
     region = r"(?:goal\s+|target\s+)?(?:region|area|zone|place|spot|cell)"
     one = (
-        rf"(?:only\s+|just\s+|at\s+most\s+|no\s+more\s+than\s+|exactly\s+|max(?:imum)?\s+(?:of\s+)?)?(?:one|a\s+single|1)"
+        rf"(?:only\s+|just\s+|at\s+most\s+|no\s+more\s+than\s+|exactly\s+|max(?:imum)?\s+(?:of\s+)?)?(?:one|a\s+single|single|1)"
         rf"(?:\s+{NOUN})?"
         rf"(?:\s+of\s+(?:the\s+)?{NOUNS})?(?:\s+only)?"
     )
     hold = (
-        r"(?:placed|filled|holds?|takes?|gets?|receives?|contains?|ha(?:ve|s)|fits?|accepts?|place|put|"
+        r"(?:placed|filled|holds?|takes?|gets?|receives?|contains?|ha(?:ve|s)|fits?|accepts?|accommodates?|place|put|"
         r"ends?\s+up\s+with)"
     )
-    holding = r"(?:holding|taking|getting|receiving|having|containing|accepting)"
+    holding = r"(?:holding|taking|getting|receiving|having|containing|accepting|accommodating)"
     patterns: tuple[str, ...] = (
         # "each goal region can only hold one object", "each region only can be placed one object", "one
         # region only one object"
@@ -273,7 +273,7 @@ def _new_block(m: Marked, names: list[str], text: str) -> str:
 
 def _mark_blocks(m: Marked, scene: Scene, previous: str) -> None:
     colours = (
-        rf"\b(?:the\s+)?{COLOUR}(?:\s+{NOUN})?(?:\s+s\b)?(?:\s*(?:,|and|&|or)\s*(?:the\s+)?{COLOUR}(?:\s+{NOUN})?"
+        rf"\b(?:the\s+)?{COLOUR}(?:\s+{NOUN})?(?:\s+s\b)?(?:\s*(?:,|and|&|or|/)\s*(?:the\s+)?{COLOUR}(?:\s+{NOUN})?"
         rf"(?:\s+s\b)?)*(?:\s+{NOUNS})?\b"
     )
 

@@ -231,6 +231,7 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
     # verbless: "no object on any other region", "nothing on F, G or H in the meantime"
     m.sub(rf"\bno\s+B(?P<b>\d+)\s+(?:on|in|onto|into)\s+P(?P<p>\d+){PERIOD}", add)
     m.sub(rf"\bnothing\s+(?:on|in|onto|into)\s+P(?P<p>\d+){PERIOD}", add)
+    m.sub(rf"\bP(?P<p>\d+)\s*:\s*nothing{PERIOD}", add)  # "F/G/H: nothing during this period"
     modal = r"(?:(?:must|may|can|should|shall|will|is|are)\s+)?"
     m.sub(rf"\bB(?P<b>\d+)\s+{modal}{NEG}\s+(?:ever\s+)?(?:be\s+)?{DROP}{down}", add)
     m.sub(

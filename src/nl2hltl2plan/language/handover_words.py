@@ -17,13 +17,13 @@ GERUND = (
 )
 DONE = (
     r"(?:placed|put|moved|transferred|delivered|carried|brought|taken|shifted|relocated|returned|sent|"
-    r"arranged|positioned|distributed|spread|done|handled|set|transfer|move|place|bring|carry|deposited|belongs?|conveyed|returns|"
+    r"arranged|positioned|distributed|spread|done|handled|set|transfer|move|place|bring|carry|deposited|belongs?|conveyed|returns|rests?|"
     r"dropped|go|goes|going|end\s+up|ends\s+up|land|lands)"
 )
 # a passive goal's or order's modal: "should", "is to", "can", "has to" ... ("be" follows, optional)
 MODAL = (
     r"(?:(?:should|must|shall|will|can|may|could|would|has\s+to|have\s+to|needs?\s+to|ought\s+to|is\s+to|to|"
-    r"are\s+to|gets?|is|are|being)\s+)?(?:(?:all|each|both|first|only|also)\s+)?(?:be\s+)?"
+    r"are\s+to|gets?|is|are|being|having\s+been)\s+)?(?:(?:all|each|both|first|only|also)\s+)?(?:be\s+)?"
 )
 NEG = (
     r"(?:cannot|can\s+not|can\s+t|must\s+not|mustn\s+t|should\s+not|shouldn\s+t|may\s+not|do\s+not|"
@@ -41,7 +41,8 @@ PERIOD_WORDS = (
     r"(?:(?:during|in)\s+(?:this|that|the\s+same)\s+(?:whole\s+|entire\s+)?(?:period|time)|in\s+the\s+meantime|meanwhile|"
     r"while\s+doing\s+(?:so|this|that|it)|while\s+(?:this|that)\s+(?:happens|is\s+happening|goes\s+on|is\s+going\s+on)|"
     r"at\s+the\s+same\s+time|in\s+the\s+process|all\s+the\s+while|the\s+whole\s+time|"
-    r"throughout(?:\s+(?:this|the|that)\s+(?:process|period|time))?|until\s+then)"
+    r"throughout(?:\s+(?:this|the|that)\s+(?:process|period|time))?|until\s+then|"
+    r"for\s+as\s+long\s+as\s+(?:this|that|it)\s+takes)"
 )
 PERIOD = rf"(?:\s*,?\s*(?:{PERIOD_WORDS}|at\s+any\s+time|ever|at\s+all))?"
 EMPTY = r"(?:empty|free|clear|unoccupied|vacant)"
@@ -56,7 +57,7 @@ AFTER_ALL = (
 )
 THEN = (
     r"(?:then|after\s+that|afterwards?|next|subsequently|later|and\s+then|(?:and\s+)?from\s+there|"
-    r"after\s+which)"
+    r"after\s+which|thereafter)"
 )
 # a place named again in other words: "the placement area, which consists of regions E, F and G"
 APPOSITION = (
@@ -101,7 +102,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
     # framing that announces a rule: "there is one ordering requirement:", "with the rule that"
     (
         r"\bthere\s+(?:is|are)\s+(?:one|a|an|another|two|some)\s+(?:\w+\s+)?(?:requirement|restriction|constraint|"
-        r"condition|rule)s?\s*:",
+        r"condition|rule)s?(?:\s+(?:about|on|for|regarding)\s+\w+)?\s*:",
         " ",
     ),
     (r"\s*,?\s*\bwith\s+the\s+(?:rule|condition|constraint|requirement|restriction)\s+that\b", ","),
@@ -124,6 +125,21 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\barrange\s+for\b", " "),
     (r"\s*(?:→|->|=>)\s*", " to "),  # "pillars -> E, F, G"
     (r"\s*,?\s*\bwhereas\b", ", and"),
+    (r"\s*,?\s*\bwhereby\b", ","),
+    (rf"^\s*({VERB})\s*:", r"\1"),  # "Transfer: 3 blocks -> opposite side"
+    (
+        r"^\s*(?:here\s+is\s+(?:the|your|my)\s+(?:task|job|plan|instruction)|(?:the|your)\s+task\s+is\s+as\s+follows)\s*:",
+        "please",
+    ),
+    (r"\bthe\s+(?:desired\s+)?(?:outcome|result|end\s+state)\s+(?:is|should\s+be)\s+that\b", " "),
+    (r"\bit\s+is\s+(?:necessary|required|essential|important)\s+to\b", "please"),
+    (r"\bno\s+placements?\s+(?=outside|on|in|onto|anywhere)", "nothing placed "),
+    (r"\bend\s+up\s+(?=(?:swapped|exchanged|switched|interchanged)\b)", "be "),
+    (r"\s*,?\s*(?:but\s+)?it\s+does\s+not\s+matter\s+when\b", " at any time"),
+    (r"^\s*when\s+(?:placing|putting|moving)\s+(?:them|the\s+blocks)\s*,", " "),
+    (r"\b(?:needs?|gets?|has|have|takes?)\s+(?=its\s+own\s+(?:region|area|spot|place)\b)", "goes in "),
+    (r"\breach(?:es)?\b", "go to"),
+    (r"\b(?:also|too)\s+(?=(?:has|have|needs?|must|should|shall|will|can|may)\b)", ""),
     (r"\bat\s+(?:an?\s+)?(?:arbitrary|unspecified|any\s+given)\s+(?:time|point|moment)\b", "at any time"),
     (r"\b(?:is|are)\s+(?:required|obliged|supposed|expected)\s+to\b", "must"),
     (r"\bvisits?\b", "goes to"),
