@@ -25,7 +25,9 @@ general:
   target region" guard every goal of the sentence (or, in a sentence of its own, every goal so far)
   until it is met: `(!drop(R) & ...) U state` (a plan ends when its last goal is met, so this is
   "never" for the plan's whole run);
-- "each region holds one object", "separately": the world's own rule (a cell holds one block).
+- "each region holds one object", "separately": the world's own rule (a cell holds one block);
+- a clause whose goals another clause of the same sentence also gives is read once ("place the red
+  block on the opposite side before the blue block, and get all three blocks across").
 Clauses are kept in the sentence's order; "but" is read only before a rule. Every word is read or is
 a filler; anything else is refused, naming the words.
 """

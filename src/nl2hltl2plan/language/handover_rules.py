@@ -79,6 +79,7 @@ def read_orders(m: Marked) -> list[tuple[str, str]]:
         rf"(?:\s+(?:after\s+B(\d+)|second|next|last|afterwards?))?{end}",
         add_then,
     )
+
     def add_keeping_goal(x: re.Match[str]) -> str:  # the goal stays for the goal reader
         add_pair(x.group(2), x.group(4)) if x.group(3) == "before" else add_pair(x.group(4), x.group(2))
         return f" {x.group(1)} "

@@ -17,7 +17,8 @@ GERUND = (
 )
 DONE = (
     r"(?:placed|put|moved|transferred|delivered|carried|brought|taken|shifted|relocated|returned|sent|"
-    r"arranged|positioned|distributed|spread|done|handled|set|transfer|move|place|bring|carry|deposited|belongs?|conveyed|returns|rests?|"
+    r"arranged|positioned|distributed|spread|done|handled|set|transfer|move|place|bring|carry|deposited|"
+    r"conveyed|returns|belongs?|rests?|"
     r"dropped|go|goes|going|end\s+up|ends\s+up|land|lands)"
 )
 # a passive goal's or order's modal: "should", "is to", "can", "has to" ... ("be" follows, optional)
@@ -122,7 +123,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
         r"\1 first",
     ),
     (r"\b(?:any|either|one)\s+of\s+(?=(?:the\s+)?(?:(?:goal|target)\s+)?(?:regions?|areas?|zones?)\b)", ""),
-    (r"\barrange\s+for\b", " "),
+    (r"\barrange\s+for\b", " "),  # "arrange for the blocks to be moved to ..."
     (r"\s*(?:→|->|=>)\s*", " to "),  # "pillars -> E, F, G"
     (r"\s*,?\s*\bwhereas\b", ", and"),
     (r"\s*,?\s*\bwhereby\b", ","),
@@ -138,7 +139,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\s*,?\s*(?:but\s+)?it\s+does\s+not\s+matter\s+when\b", " at any time"),
     (r"^\s*when\s+(?:placing|putting|moving)\s+(?:them|the\s+blocks)\s*,", " "),
     (r"\b(?:needs?|gets?|has|have|takes?)\s+(?=its\s+own\s+(?:region|area|spot|place)\b)", "goes in "),
-    (r"\breach(?:es)?\b", "go to"),
+    (r"\breach(?:es)?\s+(?=(?:the|any|an?|regions?|[e-j])\b)", "go to "),
     (r"\b(?:also|too)\s+(?=(?:has|have|needs?|must|should|shall|will|can|may)\b)", ""),
     (r"\bat\s+(?:an?\s+)?(?:arbitrary|unspecified|any\s+given)\s+(?:time|point|moment)\b", "at any time"),
     (r"\b(?:is|are)\s+(?:required|obliged|supposed|expected)\s+to\b", "must"),
@@ -161,7 +162,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
         r"\b((?:blocks|pillars|objects|cubes|items)\s+(?:(?:shall|should|must|will|are\s+to|need\s+to|have\s+to)\s+)?)"
         r"occupy\s+(?=(?:the\s+)?(?:(?:goal|target)\s+)?regions?\b)",
         r"\1go to ",
-    ),  # "arrange for the blocks to be moved to ..."
+    ),
     (r"\b(?:simply|merely|just)\s+(?=(?:needs?|ha(?:s|ve))\s+to\b)", ""),  # "they simply need to be moved"
     # a topic and its pronoun: "as for the red and blue blocks, they ..." -> "the red and blue blocks ..."
     (r"^\s*as\s+(?:for|to|regards)\s+([a-z ]+?)\s*,\s*(?:they|it)\b", r"\1"),
