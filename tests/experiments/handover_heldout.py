@@ -1511,7 +1511,11 @@ LEAD_SESSION9: dict[int, list[str]] = {
 # positions", "whereas", "at an arbitrary time", "the only ordering rule is that", "having been placed",
 # "the desired outcome is that ... rest on", "single object per region", "accommodating", "no placement
 # outside", "whereby", "there is a rule about touching:", "should be swapped", "it does not matter when",
-# "gets its own region among", "for as long as this takes", "F/G/H: nothing"): each gives the written spec.
+# "gets its own region among", "for as long as this takes", "F/G/H: nothing", "note that", "it being
+# understood that", "being regions E, F and G", "blue only after red has been touched", "under the
+# condition that", "here is what should happen", "travel", "red <-> blue", "use R for B", "with F, G and H
+# kept free", "H, I and J get one block each", "yellow: back to G last", "yellow block on I, then on G"):
+# each gives the written spec.
 H43_VARIANTS: dict[int, list[str]] = {
     1: [
         "Put the red block on the opposite side before the blue block, and move all three blocks to the "
@@ -1535,6 +1539,8 @@ H43_VARIANTS: dict[int, list[str]] = {
         "Move: the 3 blocks -> the opposite side, with the red block having been placed before the blue "
         "block.",
         "The desired result is that the three blocks rest on the opposite side; red goes before blue.",
+        "Note that the three blocks are to be moved to the opposite side, and that red must be placed before "
+        "blue.",
     ],
     2: [
         "I want the three blocks in regions H, I and J, with each region holding only one object.",
@@ -1551,6 +1557,10 @@ H43_VARIANTS: dict[int, list[str]] = {
         "Blocks → regions H, I and J; at most one object per region.",
         "Put the three blocks in regions H, I and J, each region accommodating a single object.",
         "Here is the task: the three blocks go to regions H, I and J (single block per region).",
+        "Regions H, I and J receive one block each.",
+        "Use regions H, I and J for the three blocks, one block per region.",
+        "The three blocks shall be placed in regions H, I and J, it being understood that a region holds one "
+        "object.",
     ],
     3: [
         "Move the three pillars to regions E, F and G. No object may be put on any other region than the "
@@ -1572,6 +1582,9 @@ H43_VARIANTS: dict[int, list[str]] = {
         "Move the three pillars to regions E, F and G; no placement outside the target regions.",
         "It is necessary to move the three pillars to regions E, F and G, whereby no object may be placed on "
         "an area other than the target region.",
+        "Pillars: regions E, F and G. Other regions: forbidden.",
+        "Move the three pillars to the area beside arm a and arm b, being regions E, F and G. No object on "
+        "any other area than the target region.",
     ],
     4: [
         "Move the three blocks into the opposite regions. No arm may pick the blue block up until an arm has "
@@ -1592,6 +1605,13 @@ H43_VARIANTS: dict[int, list[str]] = {
         "Move the three blocks to the opposite regions. There is a rule about touching: no arm may touch the "
         "blue block until an arm has touched the red block. Thereafter, put the yellow block back on region "
         "G.",
+        "Three blocks to the opposite regions. Blue only after red has been touched. Yellow: back to region "
+        "G at the end.",
+        "Transfer the three blocks into the opposite regions under the condition that no arm touches the "
+        "blue block before an arm touches the red block. Upon finishing, return the yellow block to region "
+        "G.",
+        "Here is what should happen. The three blocks travel to the opposite regions; no arm may touch the "
+        "blue block until the red block has been touched. Finally the yellow block goes back to region G.",
     ],
     5: [
         "Plan how to exchange the positions of the red block and the blue block, red before blue, and move "
@@ -1604,6 +1624,7 @@ H43_VARIANTS: dict[int, list[str]] = {
         "side at any time.",
         "The red and blue blocks should be swapped, red placed first. The yellow block also has to reach the "
         "opposite side, but it does not matter when.",
+        "Red <-> blue, red first. The yellow block to the opposite side, at any time.",
     ],
     6: [
         "Could you place the three objects separately in region G, region H and region I? Please set the red "
@@ -1634,6 +1655,8 @@ H43_VARIANTS: dict[int, list[str]] = {
         "3 objects -> region I one after another (red before blue); F/G/H: nothing during this period.",
         "Put the three blocks on region I one after another, red before blue. For as long as this takes, "
         "regions F, G and H must not receive any object.",
+        "Region I gets the three blocks in turn, the red block before the blue block, with regions F, G and "
+        "H kept free during this period.",
     ],
     8: [
         "Come up with a plan to put the yellow block on region I and then on region G, and to move the red "
@@ -1644,6 +1667,8 @@ H43_VARIANTS: dict[int, list[str]] = {
         "they simply need to be moved to any empty region at any time.",
         "The yellow block visits region I first and then region G. The red and blue blocks go to any empty "
         "region at any time you like.",
+        "Two things: yellow block on region I, then on region G; the red and blue blocks to any empty region "
+        "at any time.",
     ],
 }
 
@@ -1676,6 +1701,8 @@ H43_NEAR_MISSES: dict[int, list[str]] = {
         "The three blocks shall occupy regions H, I and E, max one object per region.",
         "Blocks → regions H and I; at most one object per region.",
         "Put the three blocks in regions H, I and E, each region accommodating a single object.",
+        "Regions H, I and E receive one block each.",
+        "Use regions H and I for the three blocks, one block per region.",
     ],
     3: [
         "Move the three pillars to regions E, F and G. No object may be placed on any other area than region "
@@ -1691,6 +1718,7 @@ H43_NEAR_MISSES: dict[int, list[str]] = {
         "Pillars → E, F, G. Keep H, I empty.",
         "It is necessary to move the three pillars to regions E, F and G, whereby no object may be placed on "
         "region H.",
+        "Pillars: regions E, F and G. Region H: forbidden.",
     ],
     4: [
         "Move the three blocks into the opposite regions. No arm may pick the red block up until an arm has "
@@ -1704,6 +1732,10 @@ H43_NEAR_MISSES: dict[int, list[str]] = {
         "to the yellow block being picked up. At the end, the yellow block returns to region G.",
         "All three blocks go to the opposite regions. The red block may not be picked up by any arm prior to "
         "the blue block being picked up. At the end, the yellow block returns to region G.",
+        "Three blocks to the opposite regions. Red only after blue has been touched. Yellow: back to region "
+        "G at the end.",
+        "Three blocks to the opposite regions. Blue only after red has been touched. Yellow: back to region "
+        "H at the end.",
     ],
     5: [
         "The red block and the blue block shall exchange their positions, the blue block being placed first. "
@@ -1712,6 +1744,8 @@ H43_NEAR_MISSES: dict[int, list[str]] = {
         "yellow block goes to the opposite side at any time.",
         "The red and yellow blocks should be swapped, red placed first. The blue block also has to reach the "
         "opposite side, but it does not matter when.",
+        "Red <-> yellow, red first. The blue block to the opposite side, at any time.",
+        "Red <-> blue, blue first. The yellow block to the opposite side, at any time.",
     ],
     6: [
         "Could you place the three objects separately in region G, region H and region I? Please put the "
@@ -1730,6 +1764,8 @@ H43_NEAR_MISSES: dict[int, list[str]] = {
         "Region I: all three blocks, one after another, blue before red; F, G and H off limits.",
         "Region I: all three blocks, one after another, red before blue; F and G off limits.",
         "3 objects -> region I one after another (red before blue); F/G: nothing during this period.",
+        "Region I gets the three blocks in turn, the red block before the blue block, with regions F and G "
+        "kept free during this period.",
     ],
     8: [
         "The yellow block is to be placed on region G first and on region I thereafter; the red and blue "
@@ -1738,19 +1774,23 @@ H43_NEAR_MISSES: dict[int, list[str]] = {
         "they simply need to be moved to any empty region at any time.",
         "The yellow block visits region G first and then region I. The red and blue blocks go to any empty "
         "region at any time you like.",
+        "Two things: yellow block on region G, then on region I; the red and blue blocks to any empty region "
+        "at any time.",
     ],
 }
 
 # Our fresh rounds in the styles h38 found weakest (terse, formal, explanatory), each run once on first
 # contact before the reader was changed for it (instance 0): round 1 (24 sentences): 10 gave the written
 # spec, 14 were refused, 0 another spec; round 2 (24): 11 / 13 / 0; round 3 (24): 2 / 22 / 0; round 4
-# (24): 7 / 17 / 0. After the class fixes: 15 / 9 / 0, 19 / 5 / 0, 19 / 5 / 0 and 20 / 4 / 0. Still
-# refused: reasons and asides ("because ...", "since ...", "has to wait:", "what I need is simple:",
-# "stack nothing:", "has two destinations in order:"), statements of the start ("all of the blocks start
-# on one side"), places defined in one sentence and used as "there" in the next, telegraphic chains
-# without a preposition ("Yellow: I, then G", "Yellow -> I -> G", "G, H, I: one block each", "Blue block:
-# not to be touched before red block", "yellow back to region G"), "respectively", "where the other one
-# started" for an exchange. The test asserts that each is read right or refused, never misread.
+# (24): 7 / 17 / 0; round 5 (24): 6 / 18 / 0. After all the class fixes: 15 / 9 / 0, 19 / 5 / 0,
+# 19 / 5 / 0, 21 / 3 / 0 and 18 / 6 / 0. Still refused: reasons and asides ("because ...", "since ...",
+# "has to wait:", "what I need is simple:", "stack nothing:", "has two destinations in order:", "we are
+# trying to clear this side", "think of regions H, I and J as slots"), statements of the start ("all of
+# the blocks start on one side"), places defined in one sentence and used as "there" in the next,
+# telegraphic chains without a preposition ("Yellow: I, then G", "Yellow -> I -> G", "G, H, I: one block
+# each", "Blue block: not to be touched before red block", "red and blue blocks anywhere empty"),
+# "respectively", an exchange said as "where the other one started" or "take the blue block's spot". The
+# test asserts that each is read right or refused, never misread.
 H43_ROUNDS: dict[int, list[str]] = {
     1: [
         "Blocks: all three to the opposite side. Order: red, then blue.",
@@ -1774,6 +1814,11 @@ H43_ROUNDS: dict[int, list[str]] = {
         "been placed before the blue block.",
         "All of the blocks start on one side of the table. Your job is to get them to the opposite side, and "
         "the red block must be placed before the blue one.",
+        "Three blocks, all to the opposite side; red goes down before blue.",
+        "Please be advised that all three blocks are to be moved to the opposite side, and that the red "
+        "block must be placed before the blue block.",
+        "We are trying to clear this side of the table. Take every block over to the opposite side, and make "
+        "sure red lands there before blue does.",
     ],
     2: [
         "Three blocks to H, I, J; one per region.",
@@ -1794,6 +1839,11 @@ H43_ROUNDS: dict[int, list[str]] = {
         "Regions H, I and J are to receive the three blocks, each region accommodating exactly one object.",
         "The goal regions are H, I and J. Move the three blocks there; note that a goal region can only hold "
         "one object.",
+        "H, I and J get one block each.",
+        "The three blocks shall be positioned in regions H, I and J, it being understood that each goal "
+        "region can only hold one object.",
+        "Think of regions H, I and J as three slots that each take one object: put the three blocks into "
+        "those regions.",
     ],
     3: [
         "Pillars to E, F, G. Nothing on other regions.",
@@ -1818,6 +1868,11 @@ H43_ROUNDS: dict[int, list[str]] = {
         "regions E, F and G; placing objects anywhere other than the target region is not permitted.",
         "Here is the task: the three pillars have to end up in regions E, F and G, on the side of arm a and "
         "arm b. While doing this, no object may be placed on an area other than the target region.",
+        "Pillars: E, F and G. Other regions: never.",
+        "The three pillars should be moved to the placement area at the side of arm a and arm b, being "
+        "regions E, F and G, and no object should be placed on an area other than the target region.",
+        "The pillars belong on arm a and arm b's side, in regions E, F and G. Since the other regions must "
+        "stay free, no object may be placed on an area other than the target region.",
     ],
     4: [
         "Three blocks to the opposite regions. Blue untouched until red is touched. Last: yellow back to G.",
@@ -1850,6 +1905,13 @@ H43_ROUNDS: dict[int, list[str]] = {
         "Move the three blocks across to the opposite regions. There is a rule about touching: the arms must "
         "leave the blue block alone until one of them has touched the red block. Once everything is done, "
         "put the yellow block back on region G.",
+        "Opposite regions: three blocks. Blue only after red has been touched. Yellow: back to G last.",
+        "Transfer the three blocks into the opposite regions under the condition that no arm touches the "
+        "blue block before an arm touches the red block; upon finishing, return the yellow block to region "
+        "G.",
+        "Here's what should happen. The three blocks travel to the opposite regions. The arms can only touch "
+        "the blue block after the red block has been touched. After all of that, the yellow block is put "
+        "back on region G.",
     ],
     5: [
         "Swap red and blue, red first. Yellow to the opposite side, any time.",
@@ -1872,6 +1934,11 @@ H43_ROUNDS: dict[int, list[str]] = {
         "before the blue block, and that the yellow block be moved to the opposite side at any time.",
         "The red and blue blocks should end up swapped. Put the red one down first, then the blue one. The "
         "yellow block also has to go to the opposite side, but it does not matter when.",
+        "Red <-> blue (red first). Yellow to the opposite side, any time.",
+        "Interchange the positions of the red and blue blocks, placing red before blue; additionally, "
+        "transfer the yellow block to the opposite side at any time.",
+        "The red block should take the blue block's spot and the blue block the red block's spot, with red "
+        "being placed first. The yellow block goes across to the opposite side at any time.",
     ],
     6: [
         "Three blocks to G, H, I, one each. Red before blue.",
@@ -1894,6 +1961,11 @@ H43_ROUNDS: dict[int, list[str]] = {
         "block preceding that of the blue block.",
         "Each of the three blocks needs its own region among G, H and I. When placing them, do the red block "
         "before the blue block.",
+        "G, H, I - one block in each; red before blue.",
+        "The three blocks are to be placed individually on regions G, H and I, whereby the red block is to "
+        "be placed before the blue block.",
+        "Use regions G, H and I for the three blocks, one block per region, and make sure the red block is "
+        "down before the blue block.",
     ],
     7: [
         "All three to I, one after another, red before blue. F, G, H stay empty meanwhile.",
@@ -1916,6 +1988,11 @@ H43_ROUNDS: dict[int, list[str]] = {
         "block, and no object shall be placed on regions F, G and H throughout.",
         "Put the three blocks onto region I, one after the other. Red must go before blue. For as long as "
         "this takes, regions F, G and H must not receive any object.",
+        "Region I gets the three blocks in turn, red before blue, with F, G and H kept empty meanwhile.",
+        "Successively place the three objects on region I, the red block preceding the blue block, while "
+        "ensuring that no object is placed on region F, G or H during this period.",
+        "All three blocks need to visit region I, one after another. Red comes before blue. Meanwhile "
+        "nothing may be put on regions F, G and H.",
     ],
     8: [
         "Yellow: I, then G. Red and blue: any empty region, any time.",
@@ -1938,5 +2015,10 @@ H43_ROUNDS: dict[int, list[str]] = {
         "block shall each be moved to any empty region at any time.",
         "The yellow block has two destinations in order: region I and then region G. The red and blue blocks "
         "just have to reach any empty region at some point.",
+        "Yellow block on I, then on G; red and blue blocks anywhere empty, any time.",
+        "The yellow block is to be positioned first on region I and subsequently on region G, and the red "
+        "and blue blocks are to be relocated to any empty region at any time.",
+        "Two things: the yellow block goes to region I and after that to region G; and the red and blue "
+        "blocks go to any empty region, at any time.",
     ],
 }

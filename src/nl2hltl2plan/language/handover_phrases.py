@@ -186,7 +186,7 @@ def _mark_connectives(m: Marked) -> None:
     """'making sure (that)', 'ensure that', 'provided that' introduce what follows and add nothing."""
     m.sub(
         r"(?:\bwhile\s+)?\b(?:(?:making|make|be)\s+(?:sure|certain)|ensur(?:e|ing))\s+(?:that\s+)?|"
-        r"\b(?:such|so)\s+that\b(?!\s+each\b)|\b(?:provided|providing|on\s+condition)\s+that\b",
+        r"\b(?:such|so)\s+that\b(?!\s+each\b)|\b(?:provided|providing|(?:on|under)\s+(?:the\s+)?condition)\s+that\b",
         " ",
     )
 

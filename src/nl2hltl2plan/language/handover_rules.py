@@ -190,6 +190,9 @@ def read_touch_guards(m: Marked) -> list[tuple[str, str]]:
         rf"(?:\s+(?:is|has\s+been|gets)\s+{TOUCHED})?(?P<y2>)(?P<y3>){end}",
         rf"(?:\bA\s+)?(?:{may}\s+)?(?:{TOUCH}|{TOUCHING})\s+B(?P<y1>\d+)\s+(?:first\s*,?\s*)?before\s+(?:touching\s+|picking\s+up\s+|"
         rf"grabbing\s+|{TOUCH}\s+)?B(?P<x>\d+)(?P<y2>)(?P<y3>){end}",
+        # terse: "blue only after red has been touched" (Y's touch named, so X's is meant)
+        rf"\bB(?P<x>\d+)\s+only\s+(?:after|once)\s+(?:(?:A\s+)?(?:has\s+|have\s+)?{TOUCHED}\s+B(?P<y1>\d+)|B(?P<y2>\d+)\s+"
+        rf"(?:(?:has|have)\s+been|is|was|gets|got)\s+{TOUCHED}(?:\s+by\s+A)?)(?P<y3>){end}",
     ):
         m.sub(pattern, add)
     return out
@@ -232,7 +235,8 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
     # verbless: "no object on any other region", "nothing on F, G or H in the meantime"
     m.sub(rf"\bno\s+B(?P<b>\d+)\s+(?:on|in|onto|into)\s+P(?P<p>\d+){PERIOD}", add)
     m.sub(rf"\bnothing\s+(?:on|in|onto|into)\s+P(?P<p>\d+){PERIOD}", add)
-    m.sub(rf"\bP(?P<p>\d+)\s*:\s*nothing{PERIOD}", add)  # "F/G/H: nothing during this period"
+    # "F/G/H: nothing during this period", "other regions: never"
+    m.sub(rf"\bP(?P<p>\d+)\s*:\s*(?:nothing|never|none|forbidden|off\s+limits){PERIOD}", add)
     modal = r"(?:(?:must|may|can|should|shall|will|is|are)\s+)?"
     m.sub(rf"\bB(?P<b>\d+)\s+{modal}{NEG}\s+(?:ever\s+)?(?:be\s+)?{DROP}{down}", add)
     m.sub(
@@ -258,6 +262,7 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
     free = rf"{EMPTY}(?:\s+(?:of\s+)?B\d+)?"
     m.sub(rf"\bP(?P<p>\d+)\s+{stay}\s+{free}{PERIOD}", add)
     m.sub(rf"\b(?:keep|leave)\s+P(?P<p>\d+)\s+{free}{PERIOD}", add)
+    m.sub(rf"(?:\bwith\s+)?\bP(?P<p>\d+)\s+(?:kept|left)\s+{free}{PERIOD}", add)  # "with F, G, H kept empty"
     m.sub(rf"\bP(?P<p>\d+)\s+(?:(?:is|are|stays?|remains?|{stay})\s+)?off\s+limits{PERIOD}", add)
     # "regions F, G and H must not be used (during this period)", "do not use F, G or H"
     for_nothing = r"(?:\s+(?:for\s+)?(?:anything|any\s+(?:block|object|pillar)))?"

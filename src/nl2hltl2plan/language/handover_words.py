@@ -18,7 +18,7 @@ GERUND = (
 DONE = (
     r"(?:placed|put|moved|transferred|delivered|carried|brought|taken|shifted|relocated|returned|sent|"
     r"arranged|positioned|distributed|spread|done|handled|set|transfer|move|place|bring|carry|deposited|"
-    r"conveyed|returns|belongs?|rests?|"
+    r"conveyed|returns|belongs?|rests?|travels?|"
     r"dropped|go|goes|going|end\s+up|ends\s+up|land|lands)"
 )
 # a passive goal's or order's modal: "should", "is to", "can", "has to" ... ("be" follows, optional)
@@ -63,7 +63,7 @@ THEN = (
 # a place named again in other words: "the placement area, which consists of regions E, F and G"
 APPOSITION = (
     r"(?:\(|which\s+(?:is|are)\s+made\s+up\s+of|(?:which\s+(?:is|are|lies?|sits?)\s+|that\s+(?:is|are|lies?)\s+)?"
-    r"(?:(?:located|situated|lying)\s+)?(?:to|on|at|in)|that\s+is|"
+    r"(?:(?:located|situated|lying)\s+)?(?:to|on|at|in)|that\s+is|being|"
     r"which\s+(?:is|are|consists\s+of|comprises|includes|lies|lie)|consisting\s+of|comprising|"
     r"made\s+up\s+of|namely|:)"
 )
@@ -124,7 +124,26 @@ REWRITES: tuple[tuple[str, str], ...] = (
     ),
     (r"\b(?:any|either|one)\s+of\s+(?=(?:the\s+)?(?:(?:goal|target)\s+)?(?:regions?|areas?|zones?)\b)", ""),
     (r"\barrange\s+for\b", " "),  # "arrange for the blocks to be moved to ..."
-    (r"\s*(?:→|->|=>)\s*", " to "),  # "pillars -> E, F, G"
+    # "red <-> blue": an exchange; "pillars -> E, F, G": a goal
+    (
+        r"\b([a-z]+(?:\s+(?:block|one))?)\s*(?:<\s*-\s*>|↔)\s*([a-z]+(?:\s+(?:block|one))?)\b",
+        r"swap \1 with \2",
+    ),
+    (r"\s*(?:→|->|=>)\s*", " to "),
+    (r"\b(?:please\s+)?(?:be\s+advised|be\s+aware|note)\s+that\b", " "),
+    (r"\s*,?\s*\bit\s+being\s+understood\s+that\b", ","),
+    (
+        r"^\s*here\s*(?:s|is)\s+what\s+(?:should|must|has\s+to|needs\s+to|will)\s+(?:happen|be\s+done)\s*:?\s*$",
+        " ",
+    ),
+    (r"^\s*(?:two|three|a\s+few)\s+things\s*:", " "),
+    (r"\banywhere\s+(?:empty|free)\b", "any empty region"),
+    # "use regions G, H and I for the three blocks": put them there
+    (
+        r"\buse\s+(regions?\s+[e-j](?:\s*(?:,|and|or)\s*(?:region\s+)?[e-j])*)\s+for\s+"
+        r"(the\s+(?:three\s+)?(?:blocks|objects|pillars))\b",
+        r"put \2 in \1",
+    ),
     (r"\s*,?\s*\bwhereas\b", ", and"),
     (r"\s*,?\s*\bwhereby\b", ","),
     (rf"^\s*({VERB})\s*:", r"\1"),  # "Transfer: 3 blocks -> opposite side"
