@@ -1514,8 +1514,9 @@ LEAD_SESSION9: dict[int, list[str]] = {
 # "gets its own region among", "for as long as this takes", "F/G/H: nothing", "note that", "it being
 # understood that", "being regions E, F and G", "blue only after red has been touched", "under the
 # condition that", "here is what should happen", "travel", "red <-> blue", "use R for B", "with F, G and H
-# kept free", "H, I and J get one block each", "yellow: back to G last", "yellow block on I, then on G"):
-# each gives the written spec.
+# kept free", "H, I and J get one block each", "yellow: back to G last", "yellow block on I, then on G",
+# "on the other hand", "as for the order,", "once it is there,", "while doing so" before a touch rule, "end
+# up with one block each"): each gives the written spec.
 H43_VARIANTS: dict[int, list[str]] = {
     1: [
         "Put the red block on the opposite side before the blue block, and move all three blocks to the "
@@ -1612,6 +1613,8 @@ H43_VARIANTS: dict[int, list[str]] = {
         "G.",
         "Here is what should happen. The three blocks travel to the opposite regions; no arm may touch the "
         "blue block until the red block has been touched. Finally the yellow block goes back to region G.",
+        "Transfer the three blocks into the opposite regions; in the meantime, the blue block may only be "
+        "touched after the red block has been touched. Finally, put the yellow block back on region G.",
     ],
     5: [
         "Plan how to exchange the positions of the red block and the blue block, red before blue, and move "
@@ -1641,6 +1644,8 @@ H43_VARIANTS: dict[int, list[str]] = {
         "to be placed before the blue block.",
         "Each of the three blocks gets its own region among G, H and I. When placing them, do the red block "
         "before the blue block.",
+        "Regions G, H and I should end up with one block each; as for the order, the red block goes before "
+        "the blue block.",
     ],
     7: [
         "All three to region I, one after another; red before blue. Regions F, G and H stay empty meanwhile.",
@@ -1669,6 +1674,8 @@ H43_VARIANTS: dict[int, list[str]] = {
         "region at any time you like.",
         "Two things: yellow block on region I, then on region G; the red and blue blocks to any empty region "
         "at any time.",
+        "Put the yellow block on region I, and once it is there, put it on region G. The red and blue "
+        "blocks, on the other hand, also go to any empty region at any time.",
     ],
 }
 
@@ -1736,6 +1743,8 @@ H43_NEAR_MISSES: dict[int, list[str]] = {
         "G at the end.",
         "Three blocks to the opposite regions. Blue only after red has been touched. Yellow: back to region "
         "H at the end.",
+        "Transfer the three blocks into the opposite regions; in the meantime, the red block may only be "
+        "touched after the blue block has been touched. Finally, put the yellow block back on region G.",
     ],
     5: [
         "The red block and the blue block shall exchange their positions, the blue block being placed first. "
@@ -1754,6 +1763,8 @@ H43_NEAR_MISSES: dict[int, list[str]] = {
         "region H before the blue block.",
         "Each of the three blocks gets its own region among G, H and J. When placing them, do the red block "
         "before the blue block.",
+        "Regions G, H and I should end up with one block each; as for the order, the blue block goes before "
+        "the red block.",
     ],
     7: [
         "Region I should receive the three blocks. Red has to come before blue, and while this happens, "
@@ -1776,21 +1787,24 @@ H43_NEAR_MISSES: dict[int, list[str]] = {
         "region at any time you like.",
         "Two things: yellow block on region G, then on region I; the red and blue blocks to any empty region "
         "at any time.",
+        "Put the yellow block on region G, and once it is there, put it on region I. The red and blue "
+        "blocks, on the other hand, also go to any empty region at any time.",
     ],
 }
 
 # Our fresh rounds in the styles h38 found weakest (terse, formal, explanatory), each run once on first
 # contact before the reader was changed for it (instance 0): round 1 (24 sentences): 10 gave the written
 # spec, 14 were refused, 0 another spec; round 2 (24): 11 / 13 / 0; round 3 (24): 2 / 22 / 0; round 4
-# (24): 7 / 17 / 0; round 5 (24): 6 / 18 / 0. After all the class fixes: 15 / 9 / 0, 19 / 5 / 0,
-# 19 / 5 / 0, 21 / 3 / 0 and 18 / 6 / 0. Still refused: reasons and asides ("because ...", "since ...",
-# "has to wait:", "what I need is simple:", "stack nothing:", "has two destinations in order:", "we are
-# trying to clear this side", "think of regions H, I and J as slots"), statements of the start ("all of
-# the blocks start on one side"), places defined in one sentence and used as "there" in the next,
-# telegraphic chains without a preposition ("Yellow: I, then G", "Yellow -> I -> G", "G, H, I: one block
-# each", "Blue block: not to be touched before red block", "red and blue blocks anywhere empty"),
-# "respectively", an exchange said as "where the other one started" or "take the blue block's spot". The
-# test asserts that each is read right or refused, never misread.
+# (24): 7 / 17 / 0; round 5 (24): 6 / 18 / 0; round 6 (16, mostly explanatory): 8 / 8 / 0. After all the
+# class fixes: 15 / 9 / 0, 19 / 5 / 0, 19 / 5 / 0, 21 / 3 / 0, 18 / 6 / 0 and 14 / 2 / 0. Still refused:
+# reasons and asides ("because ...", "since ...", "to keep things tidy,", "has to wait:", "what I need is
+# simple:", "stack nothing:", "has two destinations in order:", "we are trying to clear this side",
+# "think of regions H, I and J as slots"), statements of the start ("all of the blocks start on one
+# side", "the blocks currently sit on one side"), places defined in one sentence and used as "there" in
+# the next, telegraphic chains without a preposition ("Yellow: I, then G", "Yellow -> I -> G", "G, H, I:
+# one block each", "Blue block: not to be touched before red block", "red and blue blocks anywhere
+# empty"), "respectively", an exchange said as "where the other one started" or "take the blue block's
+# spot". The test asserts that each is read right or refused, never misread.
 H43_ROUNDS: dict[int, list[str]] = {
     1: [
         "Blocks: all three to the opposite side. Order: red, then blue.",
@@ -1819,6 +1833,10 @@ H43_ROUNDS: dict[int, list[str]] = {
         "block must be placed before the blue block.",
         "We are trying to clear this side of the table. Take every block over to the opposite side, and make "
         "sure red lands there before blue does.",
+        "The blocks currently sit on one side, and they need to be moved to the opposite side. Please place "
+        "the red block before the blue block.",
+        "For this task, transfer all three blocks to the opposite side; the red one first, then the blue "
+        "one.",
     ],
     2: [
         "Three blocks to H, I, J; one per region.",
@@ -1844,6 +1862,9 @@ H43_ROUNDS: dict[int, list[str]] = {
         "region can only hold one object.",
         "Think of regions H, I and J as three slots that each take one object: put the three blocks into "
         "those regions.",
+        "Since each goal region can only be placed with one object, put the three blocks into regions H, I "
+        "and J, one per region.",
+        "The blocks are to be spread over regions H, I and J, and no two blocks may share a region.",
     ],
     3: [
         "Pillars to E, F, G. Nothing on other regions.",
@@ -1873,6 +1894,10 @@ H43_ROUNDS: dict[int, list[str]] = {
         "regions E, F and G, and no object should be placed on an area other than the target region.",
         "The pillars belong on arm a and arm b's side, in regions E, F and G. Since the other regions must "
         "stay free, no object may be placed on an area other than the target region.",
+        "The pillars have to be moved over to regions E, F and G, which are next to arm a and arm b. Objects "
+        "can only be placed on the target regions.",
+        "Bring the three pillars to regions E, F and G. To keep things tidy, no object may be placed on an "
+        "area other than the target region.",
     ],
     4: [
         "Three blocks to the opposite regions. Blue untouched until red is touched. Last: yellow back to G.",
@@ -1912,6 +1937,11 @@ H43_ROUNDS: dict[int, list[str]] = {
         "Here's what should happen. The three blocks travel to the opposite regions. The arms can only touch "
         "the blue block after the red block has been touched. After all of that, the yellow block is put "
         "back on region G.",
+        "First, transfer the three blocks into the opposite regions. While doing so, the blue block may only "
+        "be touched after the red block has been touched. Finally, put the yellow block back on region G.",
+        "The three blocks go to the opposite regions, with the constraint that an arm may touch the blue "
+        "block only once the red block has been touched. When everything else is finished, return the yellow "
+        "block to region G.",
     ],
     5: [
         "Swap red and blue, red first. Yellow to the opposite side, any time.",
@@ -1939,6 +1969,10 @@ H43_ROUNDS: dict[int, list[str]] = {
         "transfer the yellow block to the opposite side at any time.",
         "The red block should take the blue block's spot and the blue block the red block's spot, with red "
         "being placed first. The yellow block goes across to the opposite side at any time.",
+        "The red block and the blue block trade places, and the red block is placed first. In addition, the "
+        "yellow block is moved to the opposite side whenever you like.",
+        "To swap the red and blue blocks, place the red block before the blue block. The yellow block, on "
+        "the other hand, can go to the opposite side at any time.",
     ],
     6: [
         "Three blocks to G, H, I, one each. Red before blue.",
@@ -1966,6 +2000,10 @@ H43_ROUNDS: dict[int, list[str]] = {
         "be placed before the blue block.",
         "Use regions G, H and I for the three blocks, one block per region, and make sure the red block is "
         "down before the blue block.",
+        "The three blocks go separately to regions G, H and I. As for the order, the red block is placed "
+        "before the blue block.",
+        "Regions G, H and I should end up with one block each, and the red block must be placed before the "
+        "blue block.",
     ],
     7: [
         "All three to I, one after another, red before blue. F, G, H stay empty meanwhile.",
@@ -1993,6 +2031,10 @@ H43_ROUNDS: dict[int, list[str]] = {
         "ensuring that no object is placed on region F, G or H during this period.",
         "All three blocks need to visit region I, one after another. Red comes before blue. Meanwhile "
         "nothing may be put on regions F, G and H.",
+        "All three blocks have to be placed on region I one after another, red before blue. While this is "
+        "going on, nothing can be put on regions F, G and H.",
+        "The three objects are placed on region I one after another; the red block is placed before the blue "
+        "block, and in the meantime regions F, G and H stay empty.",
     ],
     8: [
         "Yellow: I, then G. Red and blue: any empty region, any time.",
@@ -2020,5 +2062,9 @@ H43_ROUNDS: dict[int, list[str]] = {
         "and blue blocks are to be relocated to any empty region at any time.",
         "Two things: the yellow block goes to region I and after that to region G; and the red and blue "
         "blocks go to any empty region, at any time.",
+        "The yellow block is first placed on region I and then on region G. The red and blue blocks, on the "
+        "other hand, go to any empty region at any time.",
+        "Move the yellow block to region I, and once it is there, move it on to region G. At any time, also "
+        "move the red and blue blocks to any empty region.",
     ],
 }

@@ -166,7 +166,7 @@ def _read_inverse(m: Marked, goal: GoalMaker, every: list[str], mods: str) -> No
     )
     # "H, I and J get one block each": every block, one per region (as many as blocks)
     m.sub(
-        rf"\bP(\d+)\s+{MODAL}(?:receive|get|take|hold)s?\s+(?:exactly\s+)?(?:one|a\s+single)\s+"
+        rf"\bP(\d+)\s+{MODAL}(?:(?:receive|get|take|hold)s?|ends?\s+up\s+with)\s+(?:exactly\s+)?(?:one|a\s+single)\s+"
         rf"(?:block|object|cube|pillar|item)\s+(?:each|apiece)(){mods}",
         lambda x: _fill(m, x, goal, every),
     )

@@ -171,6 +171,8 @@ def read_touch_guards(m: Marked) -> list[tuple[str, str]]:
     )
     until = r"(?:until|before|unless)"
     after = r"(?:only\s+)?(?:after|once|when)"
+    # "while doing so, X may only be touched after Y": a touch rule holds for the whole run anyway
+    m.sub(rf"\b(?:{PERIOD_WORDS})\s*,?\s*(?=[^,]*\b(?:{TOUCH}|{TOUCHED}|{TOUCHING})\b)", " ")
     for pattern in (
         rf"{no_touch}\s+{until}\s+{other}",
         rf"{not_touched}\s+{until}\s+{other}",

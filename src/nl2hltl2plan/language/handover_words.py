@@ -137,6 +137,9 @@ REWRITES: tuple[tuple[str, str], ...] = (
         " ",
     ),
     (r"^\s*(?:two|three|a\s+few)\s+things\s*:", " "),
+    (r"\s*,?\s*\bon\s+the\s+other\s+hand\b\s*,?", " "),
+    (r"^\s*as\s+(?:for|to|regards)\s+(?:the\s+)?(?:order|ordering|sequence)\s*,", " "),
+    (r"\b(?:once|when|after)\s+it\s+(?:is|gets|has\s+been\s+placed)\s+there\s*,", " then "),
     (r"\banywhere\s+(?:empty|free)\b", "any empty region"),
     # "use regions G, H and I for the three blocks": put them there
     (
@@ -159,7 +162,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"^\s*when\s+(?:placing|putting|moving)\s+(?:them|the\s+blocks)\s*,", " "),
     (r"\b(?:needs?|gets?|has|have|takes?)\s+(?=its\s+own\s+(?:region|area|spot|place)\b)", "goes in "),
     (r"\breach(?:es)?\s+(?=(?:the|any|an?|regions?|[e-j])\b)", "go to "),
-    (r"\b(?:also|too)\s+(?=(?:has|have|needs?|must|should|shall|will|can|may)\b)", ""),
+    (rf"\b(?:also|too)\s+(?=(?:has|have|needs?|must|should|shall|will|can|may|{VERB})\b)", ""),
     (r"\bat\s+(?:an?\s+)?(?:arbitrary|unspecified|any\s+given)\s+(?:time|point|moment)\b", "at any time"),
     (r"\b(?:is|are)\s+(?:required|obliged|supposed|expected)\s+to\b", "must"),
     (r"\bvisits?\b", "goes to"),
