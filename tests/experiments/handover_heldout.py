@@ -62,16 +62,22 @@ HELD_OUT: dict[int, list[str]] = {
 # region", "the area next to arm a and arm b, that is region E, F and G", "never place an object on ...",
 # "until Y has been touched, no arm may touch X", "once all of this is done", "the red block's and the
 # blue block's positions", "the red block being placed before", "should be placed first, before").
+# The 5 refused sentences of the lead's session-9 batches (LEAD_SESSION9 below) are here too, no longer
+# held out (h43): "X on P before Y" with X's goal restated, "any other area than the target region",
+# "with each goal region holding just one object", "put the red block down", "plan how to ...".
 SEEN_WHILE_FIXING: dict[int, list[str]] = {
     1: [
         "Bring all three blocks over to the opposite side, making sure the red one gets placed before the "
         "blue one.",
         "The red block goes down before the blue block; move three blocks to the opposite.",
+        "Place the red block on the opposite side before the blue block, and get all three blocks across to "
+        "the opposite regions.",
     ],
     2: [
         "Fill the goal regions H, I and J with the three blocks so that each region holds only one object.",
         "Move the three blocks to region H, region I and region J, with only one object allowed in each "
         "goal region.",
+        "I want the three blocks in regions H, I and J, with each goal region holding just one object.",
     ],
     3: [
         "Move the three pillars over to regions E, F and G, next to arm a and arm b. Do not place any "
@@ -82,6 +88,10 @@ SEEN_WHILE_FIXING: dict[int, list[str]] = {
         "and G. No object may be put on an area other than the target region.",
         "Move all three pillars to regions E, F and G; never place an object on an area other than the "
         "target region.",
+        "Please bring the three pillars to the placement area (regions E, F and G). No object may be placed "
+        "on any other area than the target region.",
+        "Plan how to move the three pillars to the placement area at the side of arm a and arm b, which is "
+        "region E, F and G. No object can be placed on an area other than the target region.",
     ],
     4: [
         "Transfer the three blocks into the opposite regions, but the blue block cannot be touched by any "
@@ -103,6 +113,8 @@ SEEN_WHILE_FIXING: dict[int, list[str]] = {
     6: [
         "Separately place the three objects to region G, region H and region I, and the red block should "
         "be placed first, before the blue block.",
+        "Could you place the three objects separately in region G, region H and region I? Please put the red "
+        "block down before the blue block.",
     ],
     7: [
         "One after another, put the three blocks on region I, and during this period nothing can be "
@@ -1368,5 +1380,691 @@ LEAD_HELD_OUT: dict[int, list[str]] = {
         "and blue blocks to any empty region.",
         "At any time, move the red block and the blue block into any empty region. Place the yellow block "
         "to region I, then place the yellow block to region G.",
+    ],
+}
+
+
+# Written by the lead in session 9 (batches 5, 6 and 7, 16 sentences each) and never shown to whoever wrote
+# the rules. First contact (instance 0): batch 5 at main before h38: 7 gave the written spec, 9 were
+# refused, 0 another spec; after h38: 14 / 2 / 0. Batch 6: before h38 9 / 7 / 0, after h38 14 / 2 / 0.
+# Batch 7 (written after h38 finished): 15 / 1 / 0. So 43 of 48 gave the spec and 5 were refused by name,
+# none misread. The 5 refused are now read (h43) and also sit in SEEN_WHILE_FIXING; the test asserts that
+# every sentence here is read right or refused, never misread.
+LEAD_SESSION9: dict[int, list[str]] = {
+    1: [
+        "Move all three blocks over to the opposite side. Red has to be placed before blue.",
+        "Place the red block on the opposite side before the blue block, and get all three blocks across to "
+        "the opposite regions.",
+        "Move the 3 blocks to the opposite side, red before blue.",
+        "Could you transfer the three blocks across to the opposite side? The red block needs to be placed "
+        "before the blue block.",
+        "Transfer the three blocks to the opposite side, and make sure that the red block is placed before "
+        "the blue block.",
+        "The red block must be put down before the blue block. Move the three blocks into the opposite "
+        "regions.",
+    ],
+    2: [
+        "Put the three blocks in regions H, I and J, one object per goal region.",
+        "Move the blocks into the goal regions H, I and J so that every region holds exactly one object.",
+        "Place the three blocks in region H, region I and region J, only one object per region.",
+        "I want the three blocks in regions H, I and J, with each goal region holding just one object.",
+        "Please put the three blocks into the goal regions, region H, region I and region J; each goal "
+        "region can take only one object.",
+        "Move the three blocks to regions H, I and J. Only one object can be placed in each goal region.",
+    ],
+    3: [
+        "Move the three pillars to regions E, F and G beside arm a and arm b, and don't put any object on an "
+        "area other than the target region.",
+        "Please bring the three pillars to the placement area (regions E, F and G). No object may be placed "
+        "on any other area than the target region.",
+        "Move the three pillars to region E, F and G next to arm a and arm b. Objects must not be placed on "
+        "any area except the target region.",
+        "The three pillars go to the placement area, regions E, F and G. Do not place any object on an area "
+        "other than the target region.",
+        "Plan how to move the three pillars to the placement area at the side of arm a and arm b, which is "
+        "region E, F and G. No object can be placed on an area other than the target region.",
+        "Move the three pillars to the regions E, F and G. An object may not be placed on any area other "
+        "than the target region.",
+    ],
+    4: [
+        "Move the three blocks to the opposite regions. The blue block must not be touched by any arm until "
+        "the red block has been touched by an arm. After all that, put the yellow block back in region G.",
+        "Transfer the three blocks to the opposite regions, and no arm can touch the blue block before an "
+        "arm has touched the red block. Then, after everything else, place the yellow block back to region "
+        "G.",
+        "Transfer the three blocks to the opposite regions. No arm may touch the blue block until the red "
+        "block has been touched. Afterwards, put the yellow block back to region G.",
+        "Move three blocks into the opposite regions; the blue block cannot be touched until an arm touches "
+        "the red block. When that is all done, place the yellow block back in region G.",
+        "Transfer the three blocks into the opposite regions. A robot arm may touch the blue block only "
+        "after a robot arm has touched the red block. After all of that, put the yellow block back to region "
+        "G.",
+        "Move the three blocks to the opposite regions, but do not let any arm touch the blue block until an "
+        "arm has touched the red block. After all of these, put the yellow block back into region G.",
+    ],
+    5: [
+        "Swap the positions of the red block and the blue block, placing the red block first. At any time, "
+        "move the yellow block to the opposite side.",
+        "Exchange the red and blue blocks' positions; the red block should be placed before the blue block. "
+        "The yellow block can be moved to the opposite side at any time.",
+        "Swap the red block and the blue block, with the red block placed before the blue block, and move "
+        "the yellow block to the opposite side at any time.",
+        "Please exchange the positions of the red and the blue block. Place the red block before the blue "
+        "block. Put the yellow block on the opposite side at any time.",
+        "Exchange the position of the red block and the blue block, and the red block should be placed "
+        "before the blue block. Put the yellow block on the opposite side at any time.",
+        "The red block should be placed before the blue block. Swap the positions of the red block and the "
+        "blue block, and at any time put the yellow block to the opposite side.",
+    ],
+    6: [
+        "Put the three blocks separately on region G, region H and region I, and place the red block before "
+        "the blue block.",
+        "The red block must be placed before the blue block. Place the three blocks separately into regions "
+        "G, H and I.",
+        "Red block before blue block. Put the three blocks separately onto regions G, H and I.",
+        "Could you place the three objects separately in region G, region H and region I? Please put the red "
+        "block down before the blue block.",
+        "Place the three objects separately to region G, region H and region I, and the red block should be "
+        "placed before the blue block.",
+        "Put the three blocks on regions G, H and I separately, and the red block has to be placed before "
+        "the blue block.",
+    ],
+    7: [
+        "Place the three blocks on region I one after another, placing the red block before the blue block. "
+        "During this period, nothing can be placed on region F, G or H.",
+        "One after another, place the three objects on region I. No object can be put on regions F, G and H "
+        "during this period, and the red block should be placed before the blue block.",
+        "Put the 3 objects on region I one after another, red before blue, and during this period nothing "
+        "may be placed on regions F, G and H.",
+        "The red block should be placed before the blue block. Place the three blocks one after the other on "
+        "region I; no object can be placed on region F, G or H during this period.",
+        "Please place the three blocks to region I one after another, the red block before the blue block. "
+        "During this period, no objects can be placed on region F, G and H.",
+        "Place the three objects to region I one after another. The red block should be placed before the "
+        "blue block. No objects can be placed on regions F, G and H during this period.",
+    ],
+    8: [
+        "First put the yellow block on region I, and then put it on region G. At any time, move the red "
+        "block and the blue block to any empty region.",
+        "Move the red and blue blocks to any empty region at any time, and place the yellow block on region "
+        "I first and then on region G.",
+        "Put the yellow block on region I and after that on region G. Move the red and the blue block to any "
+        "empty region at any time.",
+        "At any time, the red and blue blocks should be moved to any empty region. The yellow block goes "
+        "first to region I, then to region G.",
+        "Please place the yellow block to region I first, then place it to region G, and move the red block "
+        "and the blue block to any empty region at any time.",
+        "Move the red and blue blocks to any empty region at any time. The yellow block should be placed on "
+        "region I first and then on region G.",
+    ],
+}
+
+
+# Our own (h43), written along the phrase classes of the 5 refused session-9 sentences ("X on P before Y"
+# with X's goal restated, "any other area than the target region", "with each goal region holding just one
+# object", particle verbs "put ... down" / "pick ... up", "plan how to / find a way to" framing) and of the
+# refusals of our rounds below ("all three" without a noun, bare region lists "F, G, H", "region I receives
+# the blocks one after another", "upon completion", "provided that", "it is requested that", "to be
+# placed", "deposited", "belong in", "Objective:", "arrange for", "on I first and on G thereafter", "as for
+# X, they ...", "the arms are required to", "occupy regions", "->", "P for B" / "P: B" headings, "being
+# grasped", "the other regions are not to be used", "receive no object", "X and Y shall exchange their
+# positions", "whereas", "at an arbitrary time", "the only ordering rule is that", "having been placed",
+# "the desired outcome is that ... rest on", "single object per region", "accommodating", "no placement
+# outside", "whereby", "there is a rule about touching:", "should be swapped", "it does not matter when",
+# "gets its own region among", "for as long as this takes", "F/G/H: nothing", "note that", "it being
+# understood that", "being regions E, F and G", "blue only after red has been touched", "under the
+# condition that", "here is what should happen", "travel", "red <-> blue", "use R for B", "with F, G and H
+# kept free", "H, I and J get one block each", "yellow: back to G last", "yellow block on I, then on G",
+# "on the other hand", "as for the order,", "once it is there,", "while doing so" before a touch rule, "end
+# up with one block each"): each gives the written spec.
+H43_VARIANTS: dict[int, list[str]] = {
+    1: [
+        "Put the red block on the opposite side before the blue block, and move all three blocks to the "
+        "opposite side.",
+        "Place the blue block on the opposite side after the red block, and take all three blocks across to "
+        "the opposite regions.",
+        "Work out how to transfer the three blocks to the opposite side, with the red block placed before "
+        "the blue block.",
+        "Move all three to the opposite side, red before blue.",
+        "Objective: relocate the three blocks to the opposite side. Constraint: the red block is placed "
+        "before the blue block.",
+        "It is requested that the three blocks be transferred to the opposite side, the red block being "
+        "placed prior to the blue block.",
+        "Kindly arrange for all three blocks to be moved to the opposite side, with the red block placed "
+        "ahead of the blue block.",
+        "The arms are required to transfer the three blocks to the opposite side; the red block is placed "
+        "before the blue block.",
+        "You must move all three blocks to the opposite side. The only ordering rule is that red goes before "
+        "blue.",
+        "Opposite side for all three blocks, red before blue.",
+        "Move: the 3 blocks -> the opposite side, with the red block having been placed before the blue "
+        "block.",
+        "The desired result is that the three blocks rest on the opposite side; red goes before blue.",
+        "Note that the three blocks are to be moved to the opposite side, and that red must be placed before "
+        "blue.",
+    ],
+    2: [
+        "I want the three blocks in regions H, I and J, with each region holding only one object.",
+        "I would like the three blocks in region H, region I and region J, each goal region taking just one "
+        "block.",
+        "I need the three blocks in regions H, I and J, with every goal region containing exactly one "
+        "object.",
+        "We want the three blocks to be in regions H, I and J, with each region holding a single block.",
+        "Move all 3 into regions H, I and J, one object per region.",
+        "Each of the three blocks is to be deposited in one of the goal regions H, I and J, and no goal "
+        "region may contain more than one object.",
+        "The three blocks belong in regions H, I and J; each region holds one object.",
+        "The three blocks shall occupy regions H, I and J, max one object per region.",
+        "Blocks → regions H, I and J; at most one object per region.",
+        "Put the three blocks in regions H, I and J, each region accommodating a single object.",
+        "Here is the task: the three blocks go to regions H, I and J (single block per region).",
+        "Regions H, I and J receive one block each.",
+        "Use regions H, I and J for the three blocks, one block per region.",
+        "The three blocks shall be placed in regions H, I and J, it being understood that a region holds one "
+        "object.",
+    ],
+    3: [
+        "Move the three pillars to regions E, F and G. No object may be put on any other region than the "
+        "target regions.",
+        "Bring the three pillars to regions E, F and G, and no object can go on any other zone than the goal "
+        "region.",
+        "Move the three pillars to regions E, F and G; do not place any object on another area than the "
+        "target region.",
+        "Figure out how to move the three pillars to regions E, F and G. No object can be placed on an area "
+        "other than the target region.",
+        "Please find a way to move the three pillars to region E, F and G, without putting any object on an "
+        "area other than the target region.",
+        "Three pillars to regions E, F, G. No other region may be used.",
+        "Task: move the three pillars to regions E, F and G. No object on any other area than the target "
+        "region.",
+        "The three pillars are to be conveyed to regions E, F and G, situated on the side of arm a and arm "
+        "b. Regions H, I and J shall receive no object.",
+        "Move the three pillars to regions E, F and G. The other regions are not to be used for anything.",
+        "Move the three pillars to regions E, F and G; no placement outside the target regions.",
+        "It is necessary to move the three pillars to regions E, F and G, whereby no object may be placed on "
+        "an area other than the target region.",
+        "Pillars: regions E, F and G. Other regions: forbidden.",
+        "Move the three pillars to the area beside arm a and arm b, being regions E, F and G. No object on "
+        "any other area than the target region.",
+    ],
+    4: [
+        "Move the three blocks into the opposite regions. No arm may pick the blue block up until an arm has "
+        "picked the red block up. After all of these, put the yellow block back down on region G.",
+        "The three blocks shall be transferred to the opposite regions. No arm shall touch the blue block "
+        "before the red block has been touched. Upon completion, the yellow block shall be returned to "
+        "region G.",
+        "The three blocks are to be moved into the opposite regions, provided that no arm touches the blue "
+        "block until the red block has been touched. Subsequently, the yellow block is to be returned to "
+        "region G.",
+        "Move the three blocks to the opposite regions, the blue block staying untouched until the red block "
+        "has been touched. On completion of this, put the yellow block back to region G.",
+        "All three blocks go to the opposite regions. The blue block may not be picked up by any arm prior "
+        "to the red block being picked up. At the end, the yellow block returns to region G.",
+        "The three blocks must be delivered to the opposite regions; be careful about one thing: the blue "
+        "block remains untouched until the red block has been touched. Finally, return the yellow block to "
+        "region G.",
+        "Move the three blocks to the opposite regions. There is a rule about touching: no arm may touch the "
+        "blue block until an arm has touched the red block. Thereafter, put the yellow block back on region "
+        "G.",
+        "Three blocks to the opposite regions. Blue only after red has been touched. Yellow: back to region "
+        "G at the end.",
+        "Transfer the three blocks into the opposite regions under the condition that no arm touches the "
+        "blue block before an arm touches the red block. Upon finishing, return the yellow block to region "
+        "G.",
+        "Here is what should happen. The three blocks travel to the opposite regions; no arm may touch the "
+        "blue block until the red block has been touched. Finally the yellow block goes back to region G.",
+        "Transfer the three blocks into the opposite regions; in the meantime, the blue block may only be "
+        "touched after the red block has been touched. Finally, put the yellow block back on region G.",
+    ],
+    5: [
+        "Plan how to exchange the positions of the red block and the blue block, red before blue, and move "
+        "the yellow block to the opposite side at any time.",
+        "The red block and the blue block are to exchange positions, the red block to be placed before the "
+        "blue block. The yellow block is to be moved to the opposite side at any time.",
+        "The red block and the blue block shall exchange their positions, the red block being placed first. "
+        "The yellow block goes to the opposite side at an arbitrary time.",
+        "The red and blue blocks swap their places, red first, whereas the yellow block goes to the opposite "
+        "side at any time.",
+        "The red and blue blocks should be swapped, red placed first. The yellow block also has to reach the "
+        "opposite side, but it does not matter when.",
+        "Red <-> blue, red first. The yellow block to the opposite side, at any time.",
+    ],
+    6: [
+        "Could you place the three objects separately in region G, region H and region I? Please set the red "
+        "block down before the blue block.",
+        "Set the three blocks down separately on regions G, H and I, and lay the red block down before the "
+        "blue block.",
+        "Put down the three blocks separately on regions G, H and I. Put the red block down first, then the "
+        "blue block.",
+        "Lay the three blocks separately on regions G, H and I, laying the red block down before the blue "
+        "block.",
+        "Distribute the three blocks over regions G, H and I so that each region gets one block. The red "
+        "block has to go down before the blue block.",
+        "The three blocks shall be placed separately in regions G, H and I, where the red block is required "
+        "to be placed before the blue block.",
+        "Each of the three blocks gets its own region among G, H and I. When placing them, do the red block "
+        "before the blue block.",
+        "Regions G, H and I should end up with one block each; as for the order, the red block goes before "
+        "the blue block.",
+    ],
+    7: [
+        "All three to region I, one after another; red before blue. Regions F, G and H stay empty meanwhile.",
+        "Put all three on region I one after another, the red block before the blue block, and during this "
+        "period no object can be placed on regions F, G and H.",
+        "Region I should receive the three blocks one after another. Red has to come before blue, and while "
+        "this happens, regions F, G and H must stay empty.",
+        "All three to I, one after another, red before blue. F, G, H stay empty meanwhile.",
+        "Region I: all three blocks, one after another, red before blue; F, G and H off limits.",
+        "The three blocks shall be placed on region I in succession, red prior to blue; regions F, G and H "
+        "receive no object during this period.",
+        "3 objects -> region I one after another (red before blue); F/G/H: nothing during this period.",
+        "Put the three blocks on region I one after another, red before blue. For as long as this takes, "
+        "regions F, G and H must not receive any object.",
+        "Region I gets the three blocks in turn, the red block before the blue block, with regions F, G and "
+        "H kept free during this period.",
+    ],
+    8: [
+        "Come up with a plan to put the yellow block on region I and then on region G, and to move the red "
+        "and blue blocks to any empty region at any time.",
+        "The yellow block is to be placed on region I first and on region G thereafter; the red and blue "
+        "blocks are to be moved to any empty region at any time.",
+        "Take the yellow block to region I and, after that, to region G. As for the red and blue blocks, "
+        "they simply need to be moved to any empty region at any time.",
+        "The yellow block visits region I first and then region G. The red and blue blocks go to any empty "
+        "region at any time you like.",
+        "Two things: yellow block on region I, then on region G; the red and blue blocks to any empty region "
+        "at any time.",
+        "Put the yellow block on region I, and once it is there, put it on region G. The red and blue "
+        "blocks, on the other hand, also go to any empty region at any time.",
+    ],
+}
+
+# The same classes with one meaning changed (an order reversed, a region or a block changed, the
+# prohibition or a count changed, "one after another" dropped): each is refused or gives another spec.
+H43_NEAR_MISSES: dict[int, list[str]] = {
+    1: [
+        "Place the blue block on the opposite side before the red block, and get all three blocks across to "
+        "the opposite regions.",
+        "Place the red block on region H before the blue block, and get all three blocks across to the "
+        "opposite regions.",
+        "Place the red block on the opposite side before the blue block.",
+        "Move all two to the opposite side, red before blue.",
+        "Work out how to transfer the three blocks to the opposite side.",
+        "Kindly arrange for all three blocks to be moved to region H, with the red block placed ahead of the "
+        "blue block.",
+        "Opposite side for the red and blue blocks, red before blue.",
+        "The arms are required to transfer the three blocks to the opposite side; the blue block is placed "
+        "before the red block.",
+        "Move: the 3 blocks -> the opposite side, with the blue block having been placed before the red "
+        "block.",
+        "The desired result is that the red and blue blocks rest on the opposite side; red goes before blue.",
+    ],
+    2: [
+        "I want the three blocks in regions H and I, with each goal region holding just one object.",
+        "I want the red and blue blocks in regions H, I and J, with each goal region holding just one "
+        "object.",
+        "I want the three blocks in regions H, I and J, with each goal region holding two objects.",
+        "Each of the three blocks is to be deposited in one of the goal regions H, I and E.",
+        "The three blocks shall occupy regions H, I and E, max one object per region.",
+        "Blocks → regions H and I; at most one object per region.",
+        "Put the three blocks in regions H, I and E, each region accommodating a single object.",
+        "Regions H, I and E receive one block each.",
+        "Use regions H and I for the three blocks, one block per region.",
+    ],
+    3: [
+        "Move the three pillars to regions E, F and G. No object may be placed on any other area than region "
+        "H.",
+        "Plan how to move the three pillars to the placement area at the side of arm a and arm b, which is "
+        "region E, F and G.",
+        "Explain how to move the three pillars to regions E, F and G. No object can be placed on an area "
+        "other than the target region.",
+        "Three pillars to regions E, F, G. Region H may be used.",
+        "Three pillars to regions E, F, G. No object on H, I.",
+        "Move the three pillars to regions E, F and G. Regions H and I shall receive no object.",
+        "Move the three pillars to regions E, F and G. The other regions may be used for anything.",
+        "Pillars → E, F, G. Keep H, I empty.",
+        "It is necessary to move the three pillars to regions E, F and G, whereby no object may be placed on "
+        "region H.",
+        "Pillars: regions E, F and G. Region H: forbidden.",
+    ],
+    4: [
+        "Move the three blocks into the opposite regions. No arm may pick the red block up until an arm has "
+        "picked the blue block up. After all of these, put the yellow block back down on region G.",
+        "The three blocks are to be moved into the opposite regions, provided that no arm touches the red "
+        "block until the blue block has been touched. Subsequently, the yellow block is to be returned to "
+        "region G.",
+        "The three blocks shall be transferred to the opposite regions. Upon completion, the yellow block "
+        "shall be returned to region G.",
+        "All three blocks go to the opposite regions. The blue block may not be picked up by any arm prior "
+        "to the yellow block being picked up. At the end, the yellow block returns to region G.",
+        "All three blocks go to the opposite regions. The red block may not be picked up by any arm prior to "
+        "the blue block being picked up. At the end, the yellow block returns to region G.",
+        "Three blocks to the opposite regions. Red only after blue has been touched. Yellow: back to region "
+        "G at the end.",
+        "Three blocks to the opposite regions. Blue only after red has been touched. Yellow: back to region "
+        "H at the end.",
+        "Transfer the three blocks into the opposite regions; in the meantime, the red block may only be "
+        "touched after the blue block has been touched. Finally, put the yellow block back on region G.",
+    ],
+    5: [
+        "The red block and the blue block shall exchange their positions, the blue block being placed first. "
+        "The yellow block goes to the opposite side at any time.",
+        "The red and yellow blocks shall exchange their positions, the red block being placed first. The "
+        "yellow block goes to the opposite side at any time.",
+        "The red and yellow blocks should be swapped, red placed first. The blue block also has to reach the "
+        "opposite side, but it does not matter when.",
+        "Red <-> yellow, red first. The blue block to the opposite side, at any time.",
+        "Red <-> blue, blue first. The yellow block to the opposite side, at any time.",
+    ],
+    6: [
+        "Could you place the three objects separately in region G, region H and region I? Please put the "
+        "blue block down before the red block.",
+        "Place the three objects separately in region G, region H and region I. Put the red block down on "
+        "region H before the blue block.",
+        "Each of the three blocks gets its own region among G, H and J. When placing them, do the red block "
+        "before the blue block.",
+        "Regions G, H and I should end up with one block each; as for the order, the blue block goes before "
+        "the red block.",
+    ],
+    7: [
+        "Region I should receive the three blocks. Red has to come before blue, and while this happens, "
+        "regions F, G and H must stay empty.",
+        "All three to I, one after another, red before blue. F, G stay empty meanwhile.",
+        "Region I should receive the three blocks one after another. Blue has to come before red, and while "
+        "this happens, regions F, G and H must stay empty.",
+        "Region I: all three blocks, one after another, blue before red; F, G and H off limits.",
+        "Region I: all three blocks, one after another, red before blue; F and G off limits.",
+        "3 objects -> region I one after another (red before blue); F/G: nothing during this period.",
+        "Region I gets the three blocks in turn, the red block before the blue block, with regions F and G "
+        "kept free during this period.",
+    ],
+    8: [
+        "The yellow block is to be placed on region G first and on region I thereafter; the red and blue "
+        "blocks are to be moved to any empty region at any time.",
+        "Take the yellow block to region I and, after that, to region H. As for the red and blue blocks, "
+        "they simply need to be moved to any empty region at any time.",
+        "The yellow block visits region G first and then region I. The red and blue blocks go to any empty "
+        "region at any time you like.",
+        "Two things: yellow block on region G, then on region I; the red and blue blocks to any empty region "
+        "at any time.",
+        "Put the yellow block on region G, and once it is there, put it on region I. The red and blue "
+        "blocks, on the other hand, also go to any empty region at any time.",
+    ],
+}
+
+# Our fresh rounds in the styles h38 found weakest (terse, formal, explanatory), each run once on first
+# contact before the reader was changed for it (instance 0): round 1 (24 sentences): 10 gave the written
+# spec, 14 were refused, 0 another spec; round 2 (24): 11 / 13 / 0; round 3 (24): 2 / 22 / 0; round 4
+# (24): 7 / 17 / 0; round 5 (24): 6 / 18 / 0; round 6 (16, mostly explanatory): 8 / 8 / 0. After all the
+# class fixes: 15 / 9 / 0, 19 / 5 / 0, 19 / 5 / 0, 21 / 3 / 0, 18 / 6 / 0 and 14 / 2 / 0. Still refused:
+# reasons and asides ("because ...", "since ...", "to keep things tidy,", "has to wait:", "what I need is
+# simple:", "stack nothing:", "has two destinations in order:", "we are trying to clear this side",
+# "think of regions H, I and J as slots"), statements of the start ("all of the blocks start on one
+# side", "the blocks currently sit on one side"), places defined in one sentence and used as "there" in
+# the next, telegraphic chains without a preposition ("Yellow: I, then G", "Yellow -> I -> G", "G, H, I:
+# one block each", "Blue block: not to be touched before red block", "red and blue blocks anywhere
+# empty"), "respectively", an exchange said as "where the other one started" or "take the blue block's
+# spot". The test asserts that each is read right or refused, never misread.
+H43_ROUNDS: dict[int, list[str]] = {
+    1: [
+        "Blocks: all three to the opposite side. Order: red, then blue.",
+        "It is requested that the three blocks be transferred to the opposite side, the red block being "
+        "placed prior to the blue block.",
+        "The goal is to have all three blocks on the opposite side; because the blue block may only be "
+        "placed once the red block is there, place red first.",
+        "Objective: relocate the three blocks to the opposite side. Constraint: the red block is placed "
+        "before the blue block.",
+        "Kindly arrange for all three blocks to be moved to the opposite side, with the red block placed "
+        "ahead of the blue block.",
+        "Since the blocks start on one side, they all have to go across to the opposite side; place the red "
+        "one there before the blue one.",
+        "Opposite side: all blocks. Red precedes blue.",
+        "The arms are required to transfer every block to the opposite side, and the red block is to be "
+        "placed before the blue block.",
+        "What I need is simple: the three blocks should all end up on the opposite side, and the red one has "
+        "to be put there before the blue one.",
+        "Transfer: 3 blocks -> opposite side. Red before blue.",
+        "The desired outcome is that the three blocks rest on the opposite side, with the red block having "
+        "been placed before the blue block.",
+        "All of the blocks start on one side of the table. Your job is to get them to the opposite side, and "
+        "the red block must be placed before the blue one.",
+        "Three blocks, all to the opposite side; red goes down before blue.",
+        "Please be advised that all three blocks are to be moved to the opposite side, and that the red "
+        "block must be placed before the blue block.",
+        "We are trying to clear this side of the table. Take every block over to the opposite side, and make "
+        "sure red lands there before blue does.",
+        "The blocks currently sit on one side, and they need to be moved to the opposite side. Please place "
+        "the red block before the blue block.",
+        "For this task, transfer all three blocks to the opposite side; the red one first, then the blue "
+        "one.",
+    ],
+    2: [
+        "Three blocks to H, I, J; one per region.",
+        "The three blocks are to be placed in regions H, I and J respectively one per region, no region "
+        "receiving more than one object.",
+        "We need the three blocks to end up in the goal regions H, I and J. Since a region can only hold one "
+        "object, each block gets its own region.",
+        "Blocks into H, I, J. One object per region.",
+        "Each of the three blocks is to be deposited in one of the goal regions H, I and J, and no goal "
+        "region may contain more than one object.",
+        "The three blocks belong in regions H, I and J. A region can hold just one object, so put one block "
+        "in each.",
+        "Blocks to regions H/I/J, max one per region.",
+        "The three blocks shall occupy regions H, I and J, no region holding more than a single object.",
+        "Please fill the goal regions H, I and J with the three blocks; because every goal region fits only "
+        "one object, the blocks will end up in different regions.",
+        "Place 3 blocks into H, I, J (single object per region).",
+        "Regions H, I and J are to receive the three blocks, each region accommodating exactly one object.",
+        "The goal regions are H, I and J. Move the three blocks there; note that a goal region can only hold "
+        "one object.",
+        "H, I and J get one block each.",
+        "The three blocks shall be positioned in regions H, I and J, it being understood that each goal "
+        "region can only hold one object.",
+        "Think of regions H, I and J as three slots that each take one object: put the three blocks into "
+        "those regions.",
+        "Since each goal region can only be placed with one object, put the three blocks into regions H, I "
+        "and J, one per region.",
+        "The blocks are to be spread over regions H, I and J, and no two blocks may share a region.",
+    ],
+    3: [
+        "Pillars to E, F, G. Nothing on other regions.",
+        "The three pillars shall be relocated to regions E, F and G, which are adjacent to arms a and b; "
+        "objects shall not be placed on any region other than the target regions.",
+        "The pillars need to go to the area near arms a and b, that is regions E, F and G, and because the "
+        "other labelled regions are off limits, never put an object on an area other than the target region.",
+        "Three pillars to regions E, F, G. No other region may be used.",
+        "All three pillars are to be transferred to the placement area on the side of arm a and arm b, "
+        "namely regions E, F and G. Placing an object on any area other than the target region is "
+        "prohibited.",
+        "Move the pillars to E, F and G, the regions on the side of arm a and arm b. Keep in mind that no "
+        "object may ever be put on an area other than the target region.",
+        "Pillars → E, F, G. Keep H, I, J empty.",
+        "The three pillars are to be conveyed to regions E, F and G, located on the side of arm a and arm b. "
+        "At no time may an object be placed on an area other than the target region.",
+        "The pillars should go to the placement area by arm a and arm b, i.e. regions E, F and G. The other "
+        "regions are not to be used for anything, so do not drop any object on an area other than the target "
+        "region.",
+        "Move pillars to E/F/G; no placements outside the target regions.",
+        "The three pillars must be relocated to the placement area beside arm a and arm b, consisting of "
+        "regions E, F and G; placing objects anywhere other than the target region is not permitted.",
+        "Here is the task: the three pillars have to end up in regions E, F and G, on the side of arm a and "
+        "arm b. While doing this, no object may be placed on an area other than the target region.",
+        "Pillars: E, F and G. Other regions: never.",
+        "The three pillars should be moved to the placement area at the side of arm a and arm b, being "
+        "regions E, F and G, and no object should be placed on an area other than the target region.",
+        "The pillars belong on arm a and arm b's side, in regions E, F and G. Since the other regions must "
+        "stay free, no object may be placed on an area other than the target region.",
+        "The pillars have to be moved over to regions E, F and G, which are next to arm a and arm b. Objects "
+        "can only be placed on the target regions.",
+        "Bring the three pillars to regions E, F and G. To keep things tidy, no object may be placed on an "
+        "area other than the target region.",
+    ],
+    4: [
+        "Three blocks to the opposite regions. Blue untouched until red is touched. Last: yellow back to G.",
+        "The three blocks shall be transferred to the opposite regions. No arm shall touch the blue block "
+        "before the red block has been touched. Upon completion, the yellow block shall be returned to "
+        "region G.",
+        "First the three blocks go over to the opposite regions. The blue block has to wait: no arm may "
+        "touch it until some arm has touched the red block. When that is done, the yellow block goes back to "
+        "region G, where it started.",
+        "Three blocks: opposite regions. Blue block: not to be touched before red block. Then yellow back to "
+        "region G.",
+        "The three blocks are to be moved into the opposite regions, provided that no arm touches the blue "
+        "block until the red block has been touched. Subsequently, the yellow block is to be returned to "
+        "region G.",
+        "Start by moving the three blocks to the opposite regions. There is one restriction: the blue block "
+        "must not be picked up by any arm before the red block has been picked up. Once that is finished, "
+        "move the yellow block back to region G.",
+        "Opposite regions for all three blocks; red must be touched before blue; yellow returns to G at the "
+        "end.",
+        "All three blocks must be delivered to the opposite regions. The blue block may not be grasped by "
+        "any arm prior to the red block being grasped. Once the above is complete, the yellow block must be "
+        "placed back on region G.",
+        "You will move the three blocks to the opposite regions. Be careful about one thing: the blue block "
+        "must stay untouched until an arm has touched the red block. At the very end, the yellow block goes "
+        "back to region G.",
+        "Blocks to the opposite regions. Touch red before blue. Afterwards, yellow back to region G.",
+        "It is necessary to transfer the three blocks into the opposite regions, whereby the blue block "
+        "shall not be touched until the red block has been touched; thereafter the yellow block shall be "
+        "placed back on region G.",
+        "Move the three blocks across to the opposite regions. There is a rule about touching: the arms must "
+        "leave the blue block alone until one of them has touched the red block. Once everything is done, "
+        "put the yellow block back on region G.",
+        "Opposite regions: three blocks. Blue only after red has been touched. Yellow: back to G last.",
+        "Transfer the three blocks into the opposite regions under the condition that no arm touches the "
+        "blue block before an arm touches the red block; upon finishing, return the yellow block to region "
+        "G.",
+        "Here's what should happen. The three blocks travel to the opposite regions. The arms can only touch "
+        "the blue block after the red block has been touched. After all of that, the yellow block is put "
+        "back on region G.",
+        "First, transfer the three blocks into the opposite regions. While doing so, the blue block may only "
+        "be touched after the red block has been touched. Finally, put the yellow block back on region G.",
+        "The three blocks go to the opposite regions, with the constraint that an arm may touch the blue "
+        "block only once the red block has been touched. When everything else is finished, return the yellow "
+        "block to region G.",
+    ],
+    5: [
+        "Swap red and blue, red first. Yellow to the opposite side, any time.",
+        "The positions of the red block and the blue block shall be exchanged, with the red block placed "
+        "before the blue block; the yellow block shall be moved to the opposite side at any time.",
+        "The red and blue blocks should trade places, and since the red one goes down first, place it before "
+        "the blue one. The yellow block just needs to reach the opposite side at some point.",
+        "Exchange red and blue; red placed first. Yellow: opposite side, any time.",
+        "The red block and the blue block are to exchange positions, the red block to be placed before the "
+        "blue block. The yellow block is to be moved to the opposite side at any time.",
+        "Red and blue need to swap places. Because red must be placed before blue, start with red. The "
+        "yellow block can go to the opposite side whenever convenient.",
+        "Red and blue swap positions (red placed first); yellow to the opposite side whenever.",
+        "The red block and the blue block shall exchange their positions, the red block being placed first, "
+        "while the yellow block shall be transferred to the opposite side at an arbitrary time.",
+        "I want red and blue to end up where the other one started, and red should be placed before blue. "
+        "Whenever it suits you, also move the yellow block to the opposite side.",
+        "Swap red/blue positions, red placed first; yellow -> opposite side at any time.",
+        "It is required that the red block and the blue block exchange positions, the red block being placed "
+        "before the blue block, and that the yellow block be moved to the opposite side at any time.",
+        "The red and blue blocks should end up swapped. Put the red one down first, then the blue one. The "
+        "yellow block also has to go to the opposite side, but it does not matter when.",
+        "Red <-> blue (red first). Yellow to the opposite side, any time.",
+        "Interchange the positions of the red and blue blocks, placing red before blue; additionally, "
+        "transfer the yellow block to the opposite side at any time.",
+        "The red block should take the blue block's spot and the blue block the red block's spot, with red "
+        "being placed first. The yellow block goes across to the opposite side at any time.",
+        "The red block and the blue block trade places, and the red block is placed first. In addition, the "
+        "yellow block is moved to the opposite side whenever you like.",
+        "To swap the red and blue blocks, place the red block before the blue block. The yellow block, on "
+        "the other hand, can go to the opposite side at any time.",
+    ],
+    6: [
+        "Three blocks to G, H, I, one each. Red before blue.",
+        "The three objects shall be placed separately on regions G, H and I, the red block being placed "
+        "before the blue block.",
+        "Put the three blocks on regions G, H and I, one block per region; the order matters only for red "
+        "and blue: red has to be placed before blue.",
+        "G, H, I: one block each. Red before blue.",
+        "The three blocks are to be placed separately in regions G, H and I, and the red block must be "
+        "placed prior to the blue block.",
+        "Distribute the three blocks over regions G, H and I so that each region gets one block. The red "
+        "block has to go down before the blue block.",
+        "Regions G, H, I get the three blocks, one each; red placed before blue.",
+        "The three blocks shall be placed separately in regions G, H and I, where the red block is required "
+        "to be placed before the blue block.",
+        "Spread the three blocks across regions G, H and I, one per region. The only ordering rule is that "
+        "the red block is placed earlier than the blue block.",
+        "3 blocks -> G, H, I separately. Red before blue.",
+        "The three blocks are to be distributed separately over regions G, H and I, the placement of the red "
+        "block preceding that of the blue block.",
+        "Each of the three blocks needs its own region among G, H and I. When placing them, do the red block "
+        "before the blue block.",
+        "G, H, I - one block in each; red before blue.",
+        "The three blocks are to be placed individually on regions G, H and I, whereby the red block is to "
+        "be placed before the blue block.",
+        "Use regions G, H and I for the three blocks, one block per region, and make sure the red block is "
+        "down before the blue block.",
+        "The three blocks go separately to regions G, H and I. As for the order, the red block is placed "
+        "before the blue block.",
+        "Regions G, H and I should end up with one block each, and the red block must be placed before the "
+        "blue block.",
+    ],
+    7: [
+        "All three to I, one after another, red before blue. F, G, H stay empty meanwhile.",
+        "The three objects shall be placed on region I one after another, the red block before the blue "
+        "block; during this period no object shall be placed on regions F, G or H.",
+        "Region I should receive the three blocks one after another. Red has to come before blue, and while "
+        "this happens, regions F, G and H must stay empty.",
+        "Three blocks onto region I in turn; red before blue; no objects on F, G, H in the meantime.",
+        "The three objects are to be placed on region I one after another, with the red block preceding the "
+        "blue block; no object may be placed on regions F, G or H during this period.",
+        "Put each of the three blocks on region I in turn. The red block must come before the blue block, "
+        "and until then nothing should be put on region F, G or H.",
+        "Region I: all three blocks, one after another, red before blue; F, G, H off limits.",
+        "The three blocks shall be placed on region I in succession, the red block prior to the blue block, "
+        "and regions F, G and H shall receive no object during this period.",
+        "Stack nothing: put the three blocks on region I one at a time, red before blue, and keep regions F, "
+        "G and H free the whole time.",
+        "3 objects -> region I one after another (red before blue); F/G/H: nothing during this period.",
+        "The three objects shall be deposited on region I one after another, the red block ahead of the blue "
+        "block, and no object shall be placed on regions F, G and H throughout.",
+        "Put the three blocks onto region I, one after the other. Red must go before blue. For as long as "
+        "this takes, regions F, G and H must not receive any object.",
+        "Region I gets the three blocks in turn, red before blue, with F, G and H kept empty meanwhile.",
+        "Successively place the three objects on region I, the red block preceding the blue block, while "
+        "ensuring that no object is placed on region F, G or H during this period.",
+        "All three blocks need to visit region I, one after another. Red comes before blue. Meanwhile "
+        "nothing may be put on regions F, G and H.",
+        "All three blocks have to be placed on region I one after another, red before blue. While this is "
+        "going on, nothing can be put on regions F, G and H.",
+        "The three objects are placed on region I one after another; the red block is placed before the blue "
+        "block, and in the meantime regions F, G and H stay empty.",
+    ],
+    8: [
+        "Yellow: I, then G. Red and blue: any empty region, any time.",
+        "The yellow block shall first be placed on region I and subsequently on region G; the red and blue "
+        "blocks shall be moved to any empty region at any time.",
+        "The yellow block makes two stops: first region I, then region G. The red and blue blocks only need "
+        "to get to any empty region, whenever you like.",
+        "Yellow block to region I, then to region G. Red and blue blocks to any empty region at any time.",
+        "The yellow block is to be placed on region I first and on region G thereafter; the red and blue "
+        "blocks are to be moved to any empty region at any time.",
+        "Take the yellow block to region I and, after that, to region G. As for the red and blue blocks, "
+        "they simply need to be moved to any empty region at any time.",
+        "Yellow → I → G. Red, blue → any empty region, any time.",
+        "The yellow block shall be moved to region I and subsequently to region G, whereas the red and blue "
+        "blocks shall be moved to any empty region at any time.",
+        "The yellow block visits region I first and then region G. Meanwhile, at any time you like, the red "
+        "and blue blocks have to be moved to any empty region.",
+        "Yellow block: region I, then region G. Red and blue blocks: any empty region, at any time.",
+        "The yellow block shall be placed first on region I and then on region G; the red block and the blue "
+        "block shall each be moved to any empty region at any time.",
+        "The yellow block has two destinations in order: region I and then region G. The red and blue blocks "
+        "just have to reach any empty region at some point.",
+        "Yellow block on I, then on G; red and blue blocks anywhere empty, any time.",
+        "The yellow block is to be positioned first on region I and subsequently on region G, and the red "
+        "and blue blocks are to be relocated to any empty region at any time.",
+        "Two things: the yellow block goes to region I and after that to region G; and the red and blue "
+        "blocks go to any empty region, at any time.",
+        "The yellow block is first placed on region I and then on region G. The red and blue blocks, on the "
+        "other hand, go to any empty region at any time.",
+        "Move the yellow block to region I, and once it is there, move it on to region G. At any time, also "
+        "move the red and blue blocks to any empty region.",
     ],
 }

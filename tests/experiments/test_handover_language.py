@@ -7,7 +7,17 @@ import json
 
 import pytest
 from handover_axes import near_misses, sample
-from handover_heldout import FIXING_VARIANTS, HELD_OUT, LEAD_HELD_OUT, NEAR_MISSES, SEEN_WHILE_FIXING
+from handover_heldout import (
+    FIXING_VARIANTS,
+    H43_NEAR_MISSES,
+    H43_ROUNDS,
+    H43_VARIANTS,
+    HELD_OUT,
+    LEAD_HELD_OUT,
+    LEAD_SESSION9,
+    NEAR_MISSES,
+    SEEN_WHILE_FIXING,
+)
 from handover_rephrasings import REPHRASINGS
 
 from nl2hltl2plan.errors import HTTError
@@ -51,7 +61,7 @@ def test_held_out_rephrasings_give_the_same_specs(task_id, text):
     ("task_id", "text"),
     [
         (t, text)
-        for group in (SEEN_WHILE_FIXING, FIXING_VARIANTS)
+        for group in (SEEN_WHILE_FIXING, FIXING_VARIANTS, H43_VARIANTS)
         for t, texts in group.items()
         for text in texts
     ],
@@ -107,7 +117,8 @@ def test_a_different_meaning_gives_a_different_spec(task_id, text):
 
 
 @pytest.mark.parametrize(
-    ("task_id", "text"), [(t, text) for t, texts in NEAR_MISSES.items() for text in texts]
+    ("task_id", "text"),
+    [(t, text) for group in (NEAR_MISSES, H43_NEAR_MISSES) for t, texts in group.items() for text in texts],
 )
 def test_near_misses_are_refused_or_give_another_spec(task_id, text):
     try:
@@ -227,13 +238,25 @@ def test_bench_handover_plans_from_the_language_stage(tmp_path):
     assert "language_equal" in (tmp_path / "report.md").read_text()
 
 
-@pytest.mark.parametrize(
-    ("task_id", "text"), [(t, text) for t, texts in LEAD_HELD_OUT.items() for text in texts]
-)
-def test_unseen_rephrasings_are_read_right_or_refused_never_misread(task_id, text):
+def _read_right_or_refused(task_id: int, text: str) -> None:
     try:
         spec = _spec(task_id, text)
     except HTTError:
         return  # refused, naming the words it cannot use: honest, a failure for the benchmark
     equal, why = specs_equivalent(spec, TASKS[task_id].hierarchical())
-    assert equal, why
+    assert equal, (text, why)
+
+
+@pytest.mark.parametrize(
+    ("task_id", "text"), [(t, text) for t, texts in LEAD_HELD_OUT.items() for text in texts]
+)
+def test_unseen_rephrasings_are_read_right_or_refused_never_misread(task_id, text):
+    _read_right_or_refused(task_id, text)
+
+
+@pytest.mark.parametrize(("name", "batch"), [("lead session 9", LEAD_SESSION9), ("h43 rounds", H43_ROUNDS)])
+@pytest.mark.parametrize("task_id", sorted(TASKS))
+def test_later_batches_are_read_right_or_refused_never_misread(name, batch, task_id):
+    """One case per task and batch (the sentences of a task in one loop, to keep the file fast)."""
+    for text in batch.get(task_id, []):
+        _read_right_or_refused(task_id, text)

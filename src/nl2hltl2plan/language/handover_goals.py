@@ -60,6 +60,9 @@ class Goal:
         return " & ".join([*guards, body])
 
 
+GoalMaker = Callable[[list[str], Place, str, str], str]  # (blocks, place, text, modifiers) -> placeholder
+
+
 @dataclass
 class Clause:
     goals: list[Goal]
@@ -117,24 +120,14 @@ def goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
         rf"(?:back\s+)?{PREP}\s+P(\d+){mods}",
         lambda x: matched(x, 1),
     )
-    # a heading-like goal at the start of a sentence or after a comma: "pillars to E, F and G"
+    # a heading-like goal at the start of a sentence or after a comma: "pillars to E, F and G", "yellow:
+    # back to G last", "yellow block on I, then on G"
     m.sub(
-        rf"(?:^|(?<=,))\s*B(\d+){mods}\s*(?::\s*|,?\s*(?:to|into|onto)\s+)P(\d+){mods}(?:\s+first\b)?(?=\s*(?:$|,|\band\b))",
+        rf"(?:^|(?<=,))\s*B(\d+){mods}\s*(?::\s*(?:back\s+)?(?:(?:to|into|onto|on|in)\s+)?|,?\s*(?:back\s+)?"
+        rf"(?:to|into|onto|on|in)\s+)P(\d+){mods}(?:\s+first\b)?(?=\s*(?:$|,|\band\b|\(|last\b|finally\b|at\s+the\s+end\b))",
         lambda x: matched(x, 1),
     )
-    # "put one block in each of regions H, I and J": every block, one per region (as many as blocks)
-    m.sub(
-        rf"\b{VERB}\s+(?:one|a|a\s+single)\s+(?:block|object|cube|pillar|item)\s+(?:in|on|into|onto|to)\s+(?:each|every)\s+"
-        rf"(?:one\s+)?(?:of\s+)?P(\d+)(?P<b>){mods}",
-        lambda x: _fill(m, x, goal, scene.blocks),
-    )
-    # the inverse syntax "fill regions H, I and J with the three blocks": as many places as blocks
-    m.sub(rf"\b(?:fill|occupy|populate|load)\s+P(\d+)\s+with\s+B(\d+){mods}", lambda x: _fill(m, x, goal))
-    m.sub(
-        rf"\b(?:each\s+of\s+)?P(\d+)\s+{MODAL}(?:each\s+)?(?:receive|get|take|hold|contain)s?\s+(?:exactly\s+|just\s+)?"
-        rf"(?:one\s+of\s+)?B(\d+){mods}",
-        lambda x: _fill(m, x, goal),
-    )
+    _read_inverse(m, goal, scene.blocks, mods)
     m.sub(
         rf"(?:\bwith\s+)?\bB(\d+)\s+{MODAL}{DONE}{mods}(?:\s+first)?\s+(?:back\s+)?"
         rf"{PREP}\s+P(\d+){mods}",
@@ -163,9 +156,52 @@ def goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
     return [clauses[k] for k in order]
 
 
+def _read_inverse(m: Marked, goal: GoalMaker, every: list[str], mods: str) -> None:
+    """The place before the blocks: 'region I: all three blocks', 'the opposite regions for all three
+    blocks', 'H, I and J get one block each', 'fill regions H, I and J with the three blocks', 'each of
+    regions H, I and J should receive one of the blocks'."""
+    m.sub(
+        rf"(?:^|(?<=,))\s*P(\d+)\s*(?::|\bfor\b)\s*B(\d+){mods}(?=\s*(?:$|,|\band\b))",
+        lambda x: goal(blocks_of(m, x.group(2)), m.places[int(x.group(1))], x.group(0), x.group(3)),
+    )
+    # "H, I and J get one block each": every block, one per region (as many as blocks)
+    m.sub(
+        rf"\bP(\d+)\s+{MODAL}(?:(?:receive|get|take|hold)s?|ends?\s+up\s+with)\s+(?:exactly\s+)?(?:one|a\s+single)\s+"
+        rf"(?:block|object|cube|pillar|item)\s+(?:each|apiece)(){mods}",
+        lambda x: _fill(m, x, goal, every),
+    )
+    # "put one block in each of regions H, I and J": every block, one per region (as many as blocks)
+    m.sub(
+        rf"\b{VERB}\s+(?:one|a|a\s+single)\s+(?:block|object|cube|pillar|item)\s+(?:in|on|into|onto|to)\s+(?:each|every)\s+"
+        rf"(?:one\s+)?(?:of\s+)?P(\d+)(?P<b>){mods}",
+        lambda x: _fill(m, x, goal, every),
+    )
+    # the inverse syntax "fill regions H, I and J with the three blocks": as many places as blocks
+    m.sub(rf"\b(?:fill|occupy|populate|load)\s+P(\d+)\s+with\s+B(\d+){mods}", lambda x: _fill(m, x, goal))
+    m.sub(
+        rf"\b(?:each\s+of\s+)?P(\d+)\s+{MODAL}(?:each\s+)?(?:receive|get|take|hold|contain)s?\s+(?:exactly\s+|just\s+)?"
+        rf"(?:one\s+of\s+)?B(\d+){mods}",
+        lambda x: _fill(m, x, goal),
+    )
+
+
 def _read_exchanges(m: Marked, exchange: Callable[..., str]) -> None:
     """'exchange the positions of X and Y', 'swap X with Y', 'X and Y should trade places', 'the positions
     of X and Y should be swapped' (and '..., so that each ends up where the other was')."""
+    m.sub(  # "the red block and the blue block shall exchange their positions"
+        rf"\bB(\d+)\s+and\s+B(\d+)\s+(?:to\s+)?{MODAL}(?:exchange|swap|switch|trade)s?\s+(?:their\s+)?"
+        r"(?:positions|places|locations|spots)",
+        lambda x: exchange(x, x.group(2)),
+    )
+
+    def exchange_their(x: re.Match[str]) -> str:  # "their" must name the same two blocks
+        same = sorted(m.blocks[int(x.group(1))]) == sorted(m.blocks[int(x.group(2))])
+        return exchange(x) if same else x.group(0)
+
+    m.sub(
+        rf"\bB(\d+)\s+(?:to\s+)?{MODAL}(?:exchange|swap|switch|trade)s?\s+B(\d+)\s+(?:positions|places|locations|spots)",
+        exchange_their,
+    )
     m.sub(  # "swap the red block with the blue block"
         rf"\b{SWAP}\s+(?:the\s+)?(?:positions?\s+of\s+)?B(\d+)(?:\s+(?:s\s+)?(?:positions?|places?|locations?))?\s+(?:with|and)\s+"
         r"B(\d+)(?:\s+(?:s\s+)?(?:positions?|places?|locations?))?",
@@ -185,6 +221,8 @@ def _read_exchanges(m: Marked, exchange: Callable[..., str]) -> None:
         rf"\b(?:the\s+)?(?:positions?|places?|locations?)\s+of\s+B(\d+)\s+{MODAL}(?:swapped|exchanged|switched|interchanged)",
         exchange,
     )
+    # "the red and blue blocks should be swapped" (after "the positions of ... should be swapped")
+    m.sub(rf"\bB(\d+)\s+{MODAL}(?:swapped|exchanged|switched|interchanged)(?:\s+around)?", exchange)
     # "... so that each ends up where the other was": what an exchange is
     m.sub(
         r"(?<=G\d)\s*,?\s*so\s+that\s+each\s+(?:one\s+)?(?:ends\s+up|is|goes|lands|sits)\s+(?:where|in\s+the\s+place)\s+"
@@ -211,10 +249,13 @@ def _read_sources(m: Marked, scene: Scene) -> None:
 def _fill(
     m: Marked,
     x: re.Match[str],
-    goal: Callable[[list[str], Place, str, str], str],
+    goal: GoalMaker,
     every: list[str] | None = None,
 ) -> str:
     place, blocks = m.places[int(x.group(1))], every or blocks_of(m, x.group(2))
+    in_turn = re.search(r"one\s+after|one\s+by|one\s+at|in\s+turn", x.group(3)) is not None
+    if in_turn and every is None and place.kind == "regions":  # "region I receives the blocks one by one"
+        return goal(blocks, place, x.group(0).strip(), x.group(3))
     if place.kind != "regions" or len(set(place.regions)) != len(blocks):
         raise HTTError(f"'{x.group(0).strip()}': fill needs as many named regions as blocks")
     return goal(blocks, place, x.group(0).strip(), x.group(3))

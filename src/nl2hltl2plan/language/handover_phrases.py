@@ -23,7 +23,16 @@ from dataclasses import dataclass, field
 from typing import Literal
 
 from nl2hltl2plan.errors import HTTError, WorldError
-from nl2hltl2plan.language.handover_words import APPOSITION, EMPTY, NEG, REWRITES, SWAP, VERB, typo_table
+from nl2hltl2plan.language.handover_words import (
+    APPOSITION,
+    EMPTY,
+    GERUND,
+    NEG,
+    REWRITES,
+    SWAP,
+    VERB,
+    typo_table,
+)
 from nl2hltl2plan.worlds.handover_world import REGIONS, Layout, layout
 from nl2hltl2plan.worlds.world import Cell, World
 
@@ -156,6 +165,7 @@ def mark(sentence: str, scene: Scene, before: Marked | None = None) -> Marked:
     _mark_one_per_region(m)
     _mark_arms(m)
     _mark_blocks(m, scene, previous.last_one)
+    _join_particles(m)
     _mark_places(m, scene, previous.last_regions)
     named = [p.regions for p in m.places if p.kind == "regions"]
     m.last_regions = named[-1] if named else ()
@@ -163,11 +173,20 @@ def mark(sentence: str, scene: Scene, before: Marked | None = None) -> Marked:
     return m
 
 
+def _join_particles(m: Marked) -> None:
+    """A particle verb reads as the verb: 'put down the red block', 'put the red block (back) down (on G)'
+    as 'put the red block (back) (on G)', 'pick the blue block up' as 'pick up the blue block'."""
+    m.sub(rf"\b({VERB}|{GERUND})\s+down\b", r"\1")
+    m.sub(rf"\b({VERB}|{GERUND})\s+(B\d+)\s+(back\s+)?down\b", r"\1 \2 \3")
+    m.sub(r"\b(B\d+)\s+down\s+(?=(?:on|onto|in|into|at)\s)", r"\1 ")  # "..., the blue block down on H"
+    m.sub(r"\b(pick|picks|picking|picked)\s+(B\d+)\s+up\b", r"\1 up \2")
+
+
 def _mark_connectives(m: Marked) -> None:
-    """'making sure (that)', 'ensure that' introduce what follows and add nothing."""
+    """'making sure (that)', 'ensure that', 'provided that' introduce what follows and add nothing."""
     m.sub(
         r"(?:\bwhile\s+)?\b(?:(?:making|make|be)\s+(?:sure|certain)|ensur(?:e|ing))\s+(?:that\s+)?|"
-        r"\b(?:such|so)\s+that\b(?!\s+each\b)",
+        r"\b(?:such|so)\s+that\b(?!\s+each\b)|\b(?:provided|providing|(?:on|under)\s+(?:the\s+)?condition)\s+that\b",
         " ",
     )
 
@@ -185,18 +204,20 @@ def _mark_one_per_region(m: Marked) -> None:
     world's own rule (recorded, no formula)."""
     region = r"(?:goal\s+|target\s+)?(?:region|area|zone|place|spot|cell)"
     one = (
-        rf"(?:only\s+|just\s+|at\s+most\s+|no\s+more\s+than\s+|exactly\s+)?(?:one|a\s+single|1)(?:\s+{NOUN})?"
+        rf"(?:only\s+|just\s+|at\s+most\s+|no\s+more\s+than\s+|exactly\s+|max(?:imum)?\s+(?:of\s+)?)?(?:one|a\s+single|single|1)"
+        rf"(?:\s+{NOUN})?"
         rf"(?:\s+of\s+(?:the\s+)?{NOUNS})?(?:\s+only)?"
     )
     hold = (
-        r"(?:placed|filled|holds?|takes?|gets?|receives?|contains?|ha(?:ve|s)|fits?|accepts?|place|put|"
+        r"(?:placed|filled|holds?|takes?|gets?|receives?|contains?|ha(?:ve|s)|fits?|accepts?|accommodates?|place|put|"
         r"ends?\s+up\s+with)"
     )
+    holding = r"(?:holding|taking|getting|receiving|having|containing|accepting|accommodating)"
     patterns: tuple[str, ...] = (
         # "each goal region can only hold one object", "each region only can be placed one object", "one
         # region only one object"
-        rf"(?:,\s*(?:where|in\s+which)\s+)?\b(?:each|every|an?|any|one)\s+(?:of\s+(?:the|these|those)\s+)?{region}s?\s+(?:only\s+)?(?:can|may|should|must|will)?\s*(?:only\s+)?"
-        rf"(?:be\s+)?(?:{hold}\s+)?(?:only\s+)?(?:with\s+)?{one}\b",
+        rf"(?:,\s*(?:where|in\s+which)\s+|\bwith\s+)?\b(?:each|every|an?|any|one)\s+(?:of\s+(?:the|these|those)\s+)?{region}s?\s+(?:only\s+)?(?:can|may|should|must|will)?\s*(?:only\s+)?"
+        rf"(?:be\s+)?(?:{hold}\s+|{holding}\s+)?(?:only\s+)?(?:with\s+)?{one}\b",
         rf"(?:\bwith\s+)?\bno\s+{region}\s+(?:can|may|should|must|will)?\s*(?:be\s+)?"
         rf"(?:{hold}|receiving|getting|holding|having|taking)\s+(?:with\s+)?(?:more\s+than\s+"
         rf"(?:one|a\s+single|1)(?:\s+{NOUN})?|(?:two|2)\s+{NOUNS})\b",
@@ -252,7 +273,7 @@ def _new_block(m: Marked, names: list[str], text: str) -> str:
 
 def _mark_blocks(m: Marked, scene: Scene, previous: str) -> None:
     colours = (
-        rf"\b(?:the\s+)?{COLOUR}(?:\s+{NOUN})?(?:\s+s\b)?(?:\s*(?:,|and|&|or)\s*(?:the\s+)?{COLOUR}(?:\s+{NOUN})?"
+        rf"\b(?:the\s+)?{COLOUR}(?:\s+{NOUN})?(?:\s+s\b)?(?:\s*(?:,|and|&|or|/)\s*(?:the\s+)?{COLOUR}(?:\s+{NOUN})?"
         rf"(?:\s+s\b)?)*(?:\s+{NOUNS})?\b"
     )
 
@@ -304,6 +325,11 @@ def _mark_blocks(m: Marked, scene: Scene, previous: str) -> None:
     )
     # "three block" (a count with a singular noun), "be placed any object"
     m.sub(rf"\b(?:the\s+)?(two|three|four|\d+)\s+{NOUN}\b", all_blocks)
+    # "all three (to I)": a count with no noun, not a count of places or arms ("all three regions")
+    m.sub(
+        rf"\ball\s+(two|three|four|\d+)\b(?!\s*(?:of\b|{NOUN}|{NOUNS}|{PLACE_NOUN}|arms?\b|robots?\b|[a-z]*s\b))",
+        all_blocks,
+    )
     m.sub(
         rf"\b(be\s+(?:placed|put|dropped|set))\s+(?:any\s+{NOUN}|anything)\b",
         lambda match: match.group(1) + _new_block(m, scene.blocks, match.group(0)),
@@ -422,8 +448,8 @@ def _mark_target_complements(m: Marked) -> None:
     )
     complement = (
         rf"\b(?:the\s+|an?\s+)?(?:any\s+)?(?:other\s+)?(?:{PLACE_NOUN}|anywhere)\s+(?:{OTHER_THAN}|that\s+(?:is|are)\s+not)\s+"
-        rf"{targets}|\boutside\s+(?:of\s+)?{targets}|\b(?:any|all)\s+other\s+{PLACE_NOUN}\b|{non_target}|"
-        rf"\b(?:any\s+)?other\s+{PLACE_NOUN}\s+than\s+{targets}"
+        rf"{targets}|\boutside\s+(?:of\s+)?{targets}|\b(?:(?:any\s+|an\s+)?other|another)\s+{PLACE_NOUN}\s+than\s+{targets}|"
+        rf"\b(?:any|all)\s+other\s+{PLACE_NOUN}\b|{non_target}"
     )
 
     def other_than(match: re.Match[str]) -> str:  # "anywhere other than ...", "elsewhere": with its "on"
@@ -534,6 +560,9 @@ def _mark_region_lists(m: Marked, scene: Scene) -> None:
     letters = LETTER + r"(?:" + link + LETTER + r")*(?:\s*\))?"
     m.sub(rf"{lead}(?P<list>{letters})(?:\s+at\b(?=\s*,))?", regions)
     m.sub(rf"{bare}(?P<list>{letters})", regions)
+    # a bare list of two or more letters ("F, G, H stay empty"): regions anywhere (one letter may be "I")
+    listed = LETTER + r"(?:(?:\s*(?:,|\band\b|\bor\b|&|/))+\s*" + LETTER + r")+"
+    m.sub(rf"(?P<prep>)(?P<list>{listed})", regions)
 
 
 def _merge(m: Marked, i: int, j: int) -> str:

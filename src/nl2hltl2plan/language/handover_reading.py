@@ -25,7 +25,9 @@ general:
   target region" guard every goal of the sentence (or, in a sentence of its own, every goal so far)
   until it is met: `(!drop(R) & ...) U state` (a plan ends when its last goal is met, so this is
   "never" for the plan's whole run);
-- "each region holds one object", "separately": the world's own rule (a cell holds one block).
+- "each region holds one object", "separately": the world's own rule (a cell holds one block);
+- a clause whose goals another clause of the same sentence also gives is read once ("place the red
+  block on the opposite side before the blue block, and get all three blocks across").
 Clauses are kept in the sentence's order; "but" is read only before a rule. Every word is read or is
 a filler; anything else is refused, naming the words.
 """
@@ -94,7 +96,7 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
         orders += sentence_orders
         # "red goes first, blue after red": the order says what "first" means
         leaders = [b for b in read_leaders(m) if b not in [x for x, _ in sentence_orders]]
-        new = goal_clauses(m, scene)
+        new = _without_restated(goal_clauses(m, scene))
         if not new:  # "Step 2: the red block before the blue block": a step of rules only
             m.sub(r"^\s*then\b", " ")
         drop_but(m)
@@ -131,6 +133,23 @@ def _sentences(instruction: str) -> list[str]:
     text = re.sub(r"(^|[.;!?]\s+)(\d)\.\s", r"\1\2) ", instruction)
     text = re.sub(r"\b[iI]\.\s?[eE]\.", "that is", text)
     return [s for s in re.split(r"[.;!?]+(?:\s|$)", text) if s.strip()]
+
+
+def _without_restated(clauses: list[Clause]) -> list[Clause]:
+    """A sentence's clause whose every goal another clause of it also gives (same block, same place; no
+    step marker on either) restates it: 'place the red block on the opposite side before the blue
+    block, and get all three blocks to the opposite regions' moves red once."""
+
+    def key(g: Goal) -> tuple[str, str, tuple[str, ...], str]:
+        return (g.block, g.place.kind, g.regions, g.place.block)
+
+    out = list(clauses)
+    for c in clauses:
+        others = [d for d in out if d is not c and not d.marker]
+        given = {key(g) for d in others for g in d.goals}
+        if not c.marker and others and all(key(g) in given for g in c.goals):
+            out.remove(c)
+    return out
 
 
 def _refuse_leftovers(m: Marked, sentence: str) -> None:

@@ -79,6 +79,16 @@ def read_orders(m: Marked) -> list[tuple[str, str]]:
         rf"(?:\s+(?:after\s+B(\d+)|second|next|last|afterwards?))?{end}",
         add_then,
     )
+
+    def add_keeping_goal(x: re.Match[str]) -> str:  # the goal stays for the goal reader
+        add_pair(x.group(2), x.group(4)) if x.group(3) == "before" else add_pair(x.group(4), x.group(2))
+        return f" {x.group(1)} "
+
+    m.sub(  # "place the red block on the opposite side before the blue block"
+        rf"\b((?:{VERB}|{GERUND})\s+B(\d+)\s+(?:back\s+)?{PREP}\s+P\d+)\s*,?\s+(?:first\s*,?\s*)?(before|after)\s+"
+        rf"(?:you\s+(?:{VERB}\s+)?|{GERUND}\s+)?B(\d+){tail}{end}",
+        add_keeping_goal,
+    )
     for word, flip in ((r"before", False), (r"(?:after|once)", True)):
         m.sub(
             rf"\b(?:{VERB}|{GERUND}|do|handle)\s+B(\d+)\s+(?:first\s*,?\s*)?{word}\s+(?:you\s+(?:{VERB}\s+)?|{GERUND}\s+)?B(\d+){tail}",
@@ -146,7 +156,7 @@ def read_touch_guards(m: Marked) -> list[tuple[str, str]]:
     # Y's touch, active ("an arm touched Y"), passive ("Y has been touched") or elliptic ("... before Y")
     other = (
         rf"(?:(?:A\s+)?(?:has\s+|have\s+|had\s+)?(?:already\s+)?(?:{TOUCHED}|{TOUCHING})\s+B(?P<y1>\d+)|B(?P<y2>\d+)\s+"
-        rf"(?:(?:has|have|had)\s+(?:already\s+)?been|is|was|gets|got)\s+(?:already\s+)?{TOUCHED}(?:\s+by\s+A)?|"
+        rf"(?:(?:has|have|had)\s+(?:already\s+)?been|is|was|gets|got|being)\s+(?:already\s+)?{TOUCHED}(?:\s+by\s+A)?|"
         rf"B(?P<y3>\d+){end})"
     )
     may = _MAY
@@ -161,6 +171,8 @@ def read_touch_guards(m: Marked) -> list[tuple[str, str]]:
     )
     until = r"(?:until|before|unless)"
     after = r"(?:only\s+)?(?:after|once|when)"
+    # "while doing so, X may only be touched after Y": a touch rule holds for the whole run anyway
+    m.sub(rf"\b(?:{PERIOD_WORDS})\s*,?\s*(?=[^,]*\b(?:{TOUCH}|{TOUCHED}|{TOUCHING})\b)", " ")
     for pattern in (
         rf"{no_touch}\s+{until}\s+{other}",
         rf"{not_touched}\s+{until}\s+{other}",
@@ -170,7 +182,7 @@ def read_touch_guards(m: Marked) -> list[tuple[str, str]]:
         rf"\b(?:keep|hold)\s+A\s+(?:off|away\s+from)\s+B(?P<x>\d+)\s+{until}\s+{other}",
         rf"\bB(?P<x>\d+)\s+(?:is|are|stays?|remains?)\s+off\s+limits\s+{until}\s+{other}",
         rf"\bB(?P<x>\d+)\s+{MODAL}wait\s+{until}\s+{other}",
-        rf"\bB(?P<x>\d+)\s+{MODAL}(?:remain|stay|be\s+left|left)\s+untouched\s+{until}\s+{other}",
+        rf"\bB(?P<x>\d+)\s+{MODAL}(?:(?:remains?|stays?|remaining|staying|be\s+left|left)\s+)?untouched\s+{until}\s+{other}",
         rf"\b{after}\s+{other}\s*,?\s*(?:only\s+then\s+)?{may}\s+(?:A\s+)?{TOUCH}\s+B(?P<x>\d+)",
         rf"\b{after}\s+{other}\s*,?\s*(?:only\s+then\s+)?{may}\s+B(?P<x>\d+)\s+be\s+{TOUCHED}(?:\s+by\s+A)?",
         rf"(?:\bA\s+)?{may}\s+(?:only\s+)?{TOUCH}\s+B(?P<x>\d+)\s+{after}\s+{other}",
@@ -180,6 +192,9 @@ def read_touch_guards(m: Marked) -> list[tuple[str, str]]:
         rf"(?:\s+(?:is|has\s+been|gets)\s+{TOUCHED})?(?P<y2>)(?P<y3>){end}",
         rf"(?:\bA\s+)?(?:{may}\s+)?(?:{TOUCH}|{TOUCHING})\s+B(?P<y1>\d+)\s+(?:first\s*,?\s*)?before\s+(?:touching\s+|picking\s+up\s+|"
         rf"grabbing\s+|{TOUCH}\s+)?B(?P<x>\d+)(?P<y2>)(?P<y3>){end}",
+        # terse: "blue only after red has been touched" (Y's touch named, so X's is meant)
+        rf"\bB(?P<x>\d+)\s+only\s+(?:after|once)\s+(?:(?:A\s+)?(?:has\s+|have\s+)?{TOUCHED}\s+B(?P<y1>\d+)|B(?P<y2>\d+)\s+"
+        rf"(?:(?:has|have)\s+been|is|was|gets|got)\s+{TOUCHED}(?:\s+by\s+A)?)(?P<y3>){end}",
     ):
         m.sub(pattern, add)
     return out
@@ -200,13 +215,6 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
         out.append((blocks, None if explicit else place, explicit, match.group(0).strip()))
         return " "
 
-    def add_used(match: re.Match[str]) -> str:
-        place = m.places[int(match.group("p") or match.group("q"))]
-        if place.kind != "regions":
-            raise HTTError(f"cannot forbid '{place.text}': name the regions")
-        out.append(([], None, list(place.regions), match.group(0).strip()))
-        return " "
-
     down = rf"(?:\s+down)?\s+{PREP}\s+P(?P<p>\d+){PERIOD}"
     m.sub(
         rf"\b{PERIOD_WORDS}\s*,?\s*(?=no\s+B|nothing|B\d+\s+{MODAL}{NEG}|(?:A\s+)?{NEG}|keep|leave|P\d)", " "
@@ -218,6 +226,9 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
     receive = rf"(?:receive|get|hold|take|contain)s?\s+{thing}"
     m.sub(rf"\bno\s+P(?P<p>\d+)\s+(?:{may}\s+)?{receive}\b{PERIOD}", add)
     m.sub(rf"\bP(?P<p>\d+)\s+(?:{may}\s+)?{NEG}\s+{receive}\b{PERIOD}", add)
+    # "regions F, G and H shall receive no object"
+    receive_no = r"(?:receive|get|hold|take|contain)s?\s+no"
+    m.sub(rf"\bP(?P<p>\d+)\s+(?:{may}\s+)?{receive_no}\s*B(?P<b>\d+){PERIOD}", add)
     # "nothing goes on F, G or H", "no block may go on R"
     m.sub(
         rf"\b(?:no\s+B(?P<b>\d+)|nothing)\s+(?:{may}\s+)?(?:goes|go)\s+(?:on|in|onto|into|to)\s+P(?P<p>\d+){PERIOD}",
@@ -226,6 +237,8 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
     # verbless: "no object on any other region", "nothing on F, G or H in the meantime"
     m.sub(rf"\bno\s+B(?P<b>\d+)\s+(?:on|in|onto|into)\s+P(?P<p>\d+){PERIOD}", add)
     m.sub(rf"\bnothing\s+(?:on|in|onto|into)\s+P(?P<p>\d+){PERIOD}", add)
+    # "F/G/H: nothing during this period", "other regions: never"
+    m.sub(rf"\bP(?P<p>\d+)\s*:\s*(?:nothing|never|none|forbidden|off\s+limits){PERIOD}", add)
     modal = r"(?:(?:must|may|can|should|shall|will|is|are)\s+)?"
     m.sub(rf"\bB(?P<b>\d+)\s+{modal}{NEG}\s+(?:ever\s+)?(?:be\s+)?{DROP}{down}", add)
     m.sub(
@@ -251,10 +264,14 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
     free = rf"{EMPTY}(?:\s+(?:of\s+)?B\d+)?"
     m.sub(rf"\bP(?P<p>\d+)\s+{stay}\s+{free}{PERIOD}", add)
     m.sub(rf"\b(?:keep|leave)\s+P(?P<p>\d+)\s+{free}{PERIOD}", add)
-    m.sub(rf"\bP(?P<p>\d+)\s+(?:is|are|stays?|remains?|{stay})\s+off\s+limits{PERIOD}", add)
+    m.sub(rf"(?:\bwith\s+)?\bP(?P<p>\d+)\s+(?:kept|left)\s+{free}{PERIOD}", add)  # "with F, G, H kept empty"
+    m.sub(rf"\bP(?P<p>\d+)\s+(?:(?:is|are|stays?|remains?|{stay})\s+)?off\s+limits{PERIOD}", add)
     # "regions F, G and H must not be used (during this period)", "do not use F, G or H"
-    used = rf"\bP(?P<p>\d+)\s+(?:{may}\s+)?{NEG}\s+be\s+used{PERIOD}|\b{NEG}\s+use\s+P(?P<q>\d+){PERIOD}"
-    m.sub(used, add_used)
+    for_nothing = r"(?:\s+(?:for\s+)?(?:anything|any\s+(?:block|object|pillar)))?"
+    be_used = rf"(?:to\s+)?be\s+used{for_nothing}{PERIOD}"
+    m.sub(rf"\bP(?P<p>\d+)\s+(?:{may}\s+|(?:is|are)\s+)?{NEG}\s+{be_used}", add)
+    m.sub(rf"\b{NEG}\s+use\s+P(?P<p>\d+){for_nothing}{PERIOD}", add)
+    m.sub(rf"\bno\s+P(?P<p>\d+)\s+(?:{may}\s+)?be\s+used{PERIOD}", add)  # "no other region may be used"
 
     return out + _read_only_on(m)
 

@@ -5,23 +5,26 @@ rewrites that map a writer's variants (synonyms, British forms, common typos) on
 
 VERB = (
     r"(?:transfer|move|put|place|bring|carry|take|deliver|relocate|shift|get|set|send|return|distribute|"
-    r"spread|position|drop|arrange|want|need)"
+    r"spread|position|drop|arrange|want|need|lay|deposit)"
 )
 PREP = r"(?:to|into|onto|on|in|at|towards?|over\s+to|in\s+to|on\s+to|among|across|over)"
 MOD = (
     r"(?:separately|individually|one\s+after\s+another|one\s+by\s+one|one\s+at\s+a\s+time|in\s+turn|each|"
     r"all|at\s+any\s+time|any\s+time|whenever|in\s+any\s+order|as\s+well|too|across|over)"
 )
-GERUND = r"(?:placing|putting|moving|transferring|bringing|carrying|delivering|taking|getting|shifting)"
+GERUND = (
+    r"(?:placing|putting|moving|transferring|bringing|carrying|delivering|taking|getting|shifting|laying)"
+)
 DONE = (
     r"(?:placed|put|moved|transferred|delivered|carried|brought|taken|shifted|relocated|returned|sent|"
-    r"arranged|positioned|distributed|spread|done|handled|set|transfer|move|place|bring|carry|"
+    r"arranged|positioned|distributed|spread|done|handled|set|transfer|move|place|bring|carry|deposited|"
+    r"conveyed|returns|belongs?|rests?|travels?|"
     r"dropped|go|goes|going|end\s+up|ends\s+up|land|lands)"
 )
 # a passive goal's or order's modal: "should", "is to", "can", "has to" ... ("be" follows, optional)
 MODAL = (
-    r"(?:(?:should|must|shall|will|can|may|could|would|has\s+to|have\s+to|needs?\s+to|ought\s+to|is\s+to|"
-    r"are\s+to|gets?|is|are|being)\s+)?(?:(?:all|each|both|first|only|also)\s+)?(?:be\s+)?"
+    r"(?:(?:should|must|shall|will|can|may|could|would|has\s+to|have\s+to|needs?\s+to|ought\s+to|is\s+to|to|"
+    r"are\s+to|gets?|is|are|being|having\s+been)\s+)?(?:(?:all|each|both|first|only|also)\s+)?(?:be\s+)?"
 )
 NEG = (
     r"(?:cannot|can\s+not|can\s+t|must\s+not|mustn\s+t|should\s+not|shouldn\s+t|may\s+not|do\s+not|"
@@ -39,7 +42,8 @@ PERIOD_WORDS = (
     r"(?:(?:during|in)\s+(?:this|that|the\s+same)\s+(?:whole\s+|entire\s+)?(?:period|time)|in\s+the\s+meantime|meanwhile|"
     r"while\s+doing\s+(?:so|this|that|it)|while\s+(?:this|that)\s+(?:happens|is\s+happening|goes\s+on|is\s+going\s+on)|"
     r"at\s+the\s+same\s+time|in\s+the\s+process|all\s+the\s+while|the\s+whole\s+time|"
-    r"throughout(?:\s+(?:this|the|that)\s+(?:process|period|time))?|until\s+then)"
+    r"throughout(?:\s+(?:this|the|that)\s+(?:process|period|time))?|until\s+then|"
+    r"for\s+as\s+long\s+as\s+(?:this|that|it)\s+takes)"
 )
 PERIOD = rf"(?:\s*,?\s*(?:{PERIOD_WORDS}|at\s+any\s+time|ever|at\s+all))?"
 EMPTY = r"(?:empty|free|clear|unoccupied|vacant)"
@@ -50,16 +54,16 @@ AFTER_ALL = (
     rf"(?:once|when|after)\s+(?:you|we)\s*(?:'\s*re|'\s*ve\s+been|\s+are|\s+have\s+been)\s+(?:all\s+)?{DONE_STATE}|"
     r"after\s+(?:all\s+(?:of\s+)?(?:these|this|that|"
     r"the\s+above)|everything(?:\s+else)?)|finally|lastly|last\s+of\s+all|at\s+the\s+(?:very\s+)?end|in\s+the\s+end|"
-    r"as\s+(?:a|the)\s+(?:final|last)\s+step)"
+    r"as\s+(?:a|the)\s+(?:final|last)\s+step|(?:up)?on\s+(?:completion|finishing)(?:\s+of\s+(?:this|these|that|the\s+above|all\s+(?:of\s+)?(?:this|these|that)))?)"
 )
 THEN = (
     r"(?:then|after\s+that|afterwards?|next|subsequently|later|and\s+then|(?:and\s+)?from\s+there|"
-    r"after\s+which)"
+    r"after\s+which|thereafter)"
 )
 # a place named again in other words: "the placement area, which consists of regions E, F and G"
 APPOSITION = (
     r"(?:\(|which\s+(?:is|are)\s+made\s+up\s+of|(?:which\s+(?:is|are|lies?|sits?)\s+|that\s+(?:is|are|lies?)\s+)?"
-    r"(?:to|on|at|in)|that\s+is|"
+    r"(?:(?:located|situated|lying)\s+)?(?:to|on|at|in)|that\s+is|being|"
     r"which\s+(?:is|are|consists\s+of|comprises|includes|lies|lie)|consisting\s+of|comprising|"
     r"made\s+up\s+of|namely|:)"
 )
@@ -84,7 +88,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\banytime\b|\bin\s+any\s+time\b", "at any time"),
     (
         r"\b(?:whenever\s+(?:you\s+(?:like|want|wish|please|can)|convenient|possible|it\s+suits\s+you)|"
-        r"at\s+(?:any|whatever)\s+(?:point(?:\s+in\s+time)?|moment|stage)|any\s+time\s+you\s+(?:like|want))\b",
+        r"at\s+(?:any|whatever)\s+(?:point(?:\s+in\s+time)?|moment|stage)|(?:at\s+)?any\s+time\s+you\s+(?:like|want))\b",
         "at any time",
     ),
     (r"\bat\s+any\s+time\s+at\s+any\s+time\b", "at any time"),
@@ -99,12 +103,13 @@ REWRITES: tuple[tuple[str, str], ...] = (
     # framing that announces a rule: "there is one ordering requirement:", "with the rule that"
     (
         r"\bthere\s+(?:is|are)\s+(?:one|a|an|another|two|some)\s+(?:\w+\s+)?(?:requirement|restriction|constraint|"
-        r"condition|rule)s?\s*:",
+        r"condition|rule)s?(?:\s+(?:about|on|for|regarding)\s+\w+)?\s*:",
         " ",
     ),
     (r"\s*,?\s*\bwith\s+the\s+(?:rule|condition|constraint|requirement|restriction)\s+that\b", ","),
     (r"\bin\s+addition\b", " "),
-    (r"^\s*(?:order|ordering|sequence|constraint|rule)\s*:", " "),
+    (r"^\s*(?:order|ordering|sequence|constraints?|rules?|requirements?|restrictions?|conditions?)\s*:", " "),
+    (r"^\s*(?:objective|goal|task|aim|mission|instructions?)\s*:", "please"),
     (r"\bunder\s+no\s+circumstances\s+(?=(?:place|put|drop|set|touch|move)\b)", "never "),
     (r"\bat\s+some\s+(?:point|time)\b", "at any time"),
     (r"\bnothing\s+else\b", "nothing"),
@@ -117,10 +122,88 @@ REWRITES: tuple[tuple[str, str], ...] = (
         r"(?:the\s+)?(red|blue|yellow)(?:\s+(?:block|one))?",
         r"\1 first",
     ),
-    (r"\b(?:any|either)\s+of\s+(?=(?:the\s+)?(?:regions?|areas?|zones?)\b)", ""),
+    (r"\b(?:any|either|one)\s+of\s+(?=(?:the\s+)?(?:(?:goal|target)\s+)?(?:regions?|areas?|zones?)\b)", ""),
+    (r"\barrange\s+for\b", " "),  # "arrange for the blocks to be moved to ..."
+    # "red <-> blue": an exchange; "pillars -> E, F, G": a goal
+    (
+        r"\b([a-z]+(?:\s+(?:block|one))?)\s*(?:<\s*-\s*>|↔)\s*([a-z]+(?:\s+(?:block|one))?)\b",
+        r"swap \1 with \2",
+    ),
+    (r"\s*(?:→|->|=>)\s*", " to "),
+    (r"\b(?:please\s+)?(?:be\s+advised|be\s+aware|note)\s+that\b", " "),
+    (r"\s*,?\s*\bit\s+being\s+understood\s+that\b", ","),
+    (
+        r"^\s*here\s*(?:s|is)\s+what\s+(?:should|must|has\s+to|needs\s+to|will)\s+(?:happen|be\s+done)\s*:?\s*$",
+        " ",
+    ),
+    (r"^\s*(?:two|three|a\s+few)\s+things\s*:", " "),
+    (r"\s*,?\s*\bon\s+the\s+other\s+hand\b\s*,?", " "),
+    (r"^\s*as\s+(?:for|to|regards)\s+(?:the\s+)?(?:order|ordering|sequence)\s*,", " "),
+    (r"\b(?:once|when|after)\s+it\s+(?:is|gets|has\s+been\s+placed)\s+there\s*,", " then "),
+    (r"\banywhere\s+(?:empty|free)\b", "any empty region"),
+    # "use regions G, H and I for the three blocks": put them there
+    (
+        r"\buse\s+(regions?\s+[e-j](?:\s*(?:,|and|or)\s*(?:region\s+)?[e-j])*)\s+for\s+"
+        r"(the\s+(?:three\s+)?(?:blocks|objects|pillars))\b",
+        r"put \2 in \1",
+    ),
+    (r"\s*,?\s*\bwhereas\b", ", and"),
+    (r"\s*,?\s*\bwhereby\b", ","),
+    (rf"^\s*({VERB})\s*:", r"\1"),  # "Transfer: 3 blocks -> opposite side"
+    (
+        r"^\s*(?:here\s+is\s+(?:the|your|my)\s+(?:task|job|plan|instruction)|(?:the|your)\s+task\s+is\s+as\s+follows)\s*:",
+        "please",
+    ),
+    (r"\bthe\s+(?:desired\s+)?(?:outcome|result|end\s+state)\s+(?:is|should\s+be)\s+that\b", " "),
+    (r"\bit\s+is\s+(?:necessary|required|essential|important)\s+to\b", "please"),
+    (r"\bno\s+placements?\s+(?=outside|on|in|onto|anywhere)", "nothing placed "),
+    (r"\bend\s+up\s+(?=(?:swapped|exchanged|switched|interchanged)\b)", "be "),
+    (r"\s*,?\s*(?:but\s+)?it\s+does\s+not\s+matter\s+when\b", " at any time"),
+    (r"^\s*when\s+(?:placing|putting|moving)\s+(?:them|the\s+blocks)\s*,", " "),
+    (r"\b(?:needs?|gets?|has|have|takes?)\s+(?=its\s+own\s+(?:region|area|spot|place)\b)", "goes in "),
+    (r"\breach(?:es)?\s+(?=(?:the|any|an?|regions?|[e-j])\b)", "go to "),
+    (rf"\b(?:also|too)\s+(?=(?:has|have|needs?|must|should|shall|will|can|may|{VERB})\b)", ""),
+    (r"\bat\s+(?:an?\s+)?(?:arbitrary|unspecified|any\s+given)\s+(?:time|point|moment)\b", "at any time"),
+    (r"\b(?:is|are)\s+(?:required|obliged|supposed|expected)\s+to\b", "must"),
+    (r"\bvisits?\b", "goes to"),
+    # an agent with a modal before the task: "the arms are required to transfer ...", "you will move ..."
+    (
+        rf"^\s*(?:you|we|the\s+(?:robot\s+)?arms|the\s+robots?)\s+(?:must|should|will|shall|need\s+to|have\s+to)\s+"
+        rf"(?={VERB}\b)",
+        "please ",
+    ),
+    # a rule announced: "the only ordering rule is that ...", "be careful about one thing:"
+    (
+        r"\b(?:the|one|an?|another)\s+(?:only\s+)?(?:other\s+)?(?:ordering\s+|order\s+)?"
+        r"(?:rule|constraint|requirement|restriction|condition)\s+is\s+(?:that\b|:)",
+        " ",
+    ),
+    (r"\b(?:be\s+careful|pay\s+attention)\s+(?:about|to)\s+(?:one|this|the\s+following)\s+thing\s*:", " "),
+    # "the blocks shall occupy regions H, I and J": go there (not "occupy R with the blocks")
+    (
+        r"\b((?:blocks|pillars|objects|cubes|items)\s+(?:(?:shall|should|must|will|are\s+to|need\s+to|have\s+to)\s+)?)"
+        r"occupy\s+(?=(?:the\s+)?(?:(?:goal|target)\s+)?regions?\b)",
+        r"\1go to ",
+    ),
+    (r"\b(?:simply|merely|just)\s+(?=(?:needs?|ha(?:s|ve))\s+to\b)", ""),  # "they simply need to be moved"
+    # a topic and its pronoun: "as for the red and blue blocks, they ..." -> "the red and blue blocks ..."
+    (r"^\s*as\s+(?:for|to|regards)\s+([a-z ]+?)\s*,\s*(?:they|it)\b", r"\1"),
+    # "on region I first and on region G thereafter", "to region I and, after that, to region G"
+    (
+        r"\band\s+((?:on|onto|in|into|to)\s+(?:region\s+)?[e-j])\s+(?:thereafter|afterwards?|after\s+that|later)\b",
+        r", then \1",
+    ),
+    (r"(?:\s+and)?\s*,\s*(?:after\s+that|afterwards?|subsequently|thereafter)\s*,", ", then"),
     (
         r"\b(?:plan|find|give|compute)\s+(?:a\s+)?(?:solution|plan)\s+(?:that|which)\s+(move|put|place|transfer|bring)s\b",
         r"\1",
+    ),
+    # framing that asks for the plan of a task: "plan how to move ...", "find a way to move ..."
+    (
+        r"^\s*(?:please\s*,?\s*)?(?:(?:plan|figure\s+out|work\s+out|find\s+out|determine|decide|show\s+(?:me|us)|"
+        r"tell\s+(?:me|us))\s+how\s+to|(?:find|devise|come\s+up\s+with|work\s+out|make|create|produce|generate|"
+        r"write)\s+(?:a|the)\s+(?:way|plan|schedule|sequence\s+of\s+actions)\s+(?:to|for\s+the\s+arms\s+to))\b",
+        "please",
     ),
     (r"\b(?:manipulators|grippers|end\s+effectors|robotic\s+arms)\b", "arms"),
     (r"\b(?:manipulator|gripper|end\s+effector|robotic\s+arm)\b", "arm"),
@@ -141,7 +224,13 @@ REWRITES: tuple[tuple[str, str], ...] = (
         r"(?:regions?|positions?|places?|locations?|spots?|sides?)\b",
         " ",
     ),
-    (r"\bit\s+is\s+(?:required|necessary|important|essential)\s+that\b", " "),
+    (
+        r"\bit\s+is\s+(?:required|necessary|important|essential|requested|desired|expected|mandatory|imperative)\s+"
+        r"that\b",
+        " ",
+    ),
+    # "the goal is to have the blocks on ...": the state asked for, as a goal
+    (r"\b(please|to)\s+have\s+(?=(?:the|all|both|each|every)\b)", r"\1 get "),
     # a numbered step: the first, or one after the step before
     (r"^\s*(?:step\s+(?:1|one)\s*:?|1\s*[):]|\(\s*1\s*\))\s*", "first "),
     (r"^\s*(?:step\s+(?:[2-9]|two|three|four|five)\s*:?|[2-9]\s*[):]|\(\s*[2-9]\s*\))\s*", "then "),
