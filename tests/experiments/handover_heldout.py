@@ -2068,3 +2068,79 @@ H43_ROUNDS: dict[int, list[str]] = {
         "move the red and blue blocks to any empty region.",
     ],
 }
+
+# Written by the lead in session 9 after h43 had started (batch 8) and never shown to any helper. First
+# contact, on main with h38's rules: 15 gave the written spec, 1 was refused ("In the end, after all of
+# this, put ..."), 0 another spec; after h43's rules the same 15 / 1 / 0. The lead then read stacked
+# closing markers ("in the end, after all of this", "finally, after all of that") as one; that sentence
+# is read now and is no longer held out.
+LEAD_SESSION9_BATCH8: dict[int, list[str]] = {
+    1: [
+        "Get the three blocks over to the opposite side. The red one should be put there before the blue "
+        "one.",
+        "Transfer all the three blocks into the opposite regions; the red block is to be placed before "
+        "the blue block.",
+    ],
+    2: [
+        "Put three blocks in the goal regions H, I and J, and each goal region can hold only one object.",
+        "The three blocks need to go into region H, region I and region J, one object in each goal "
+        "region.",
+    ],
+    3: [
+        "Move the three pillars to the placement area (regions E, F, G) beside arm a and arm b; objects "
+        "can't be placed anywhere other than the target region.",
+        "Please move the three pillars to region E, F and G. No object should be placed on an area other "
+        "than the target region.",
+    ],
+    4: [
+        "Move all three blocks to the opposite regions. The blue block can't be touched by a robot arm "
+        "until a robot arm has touched the red block. After all of these, place the yellow block back to "
+        "region G.",
+        "Transfer three blocks into the opposite regions, and the robot arms cannot touch the blue block "
+        "until one of them has touched the red block. In the end, after all of this, put the yellow "
+        "block back to region G.",
+    ],
+    5: [
+        "Exchange the positions of the red and blue blocks, placing the red block before the blue block, "
+        "and at any time move the yellow block into the opposite side.",
+        "Swap the red block and the blue block. The red block should be placed before the blue block. "
+        "Also, at any time, put the yellow block to the opposite side.",
+    ],
+    6: [
+        "Please place the three blocks separately on region G, region H and region I. The red block "
+        "should be placed before the blue block.",
+        "Put the three objects to regions G, H and I separately; place the red block before the blue "
+        "block.",
+    ],
+    7: [
+        "Put the three blocks on region I one after another. During this period, no objects can be "
+        "placed on regions F, G and H. Place the red block before the blue block.",
+        "The red block should be placed before the blue block. The three objects should be placed to "
+        "region I one after another, and during this period no object can be placed on region F, G or H.",
+    ],
+    8: [
+        "First place the yellow block to region I, then place the yellow block to region G. At any time, "
+        "move the red and blue blocks to any empty region.",
+        "Put the yellow block on region I, then on region G, and at any time move the red block and the "
+        "blue block to any empty region.",
+    ],
+}
+
+
+# Stacked closing markers (the lead's fix above): variants that give the written spec, and near misses.
+STACKED_MARKERS: dict[int, list[str]] = {
+    4: [
+        "Move the three blocks to the opposite regions; no arm may touch the blue block until the red block "
+        "has been touched. Finally, after all of that, place the yellow block back to region G.",
+        "Move the three blocks to the opposite regions; no arm may touch the blue block until the red block "
+        "has been touched. Then, once all of this is done, place the yellow block back to region G.",
+    ],
+}
+STACKED_MARKER_NEAR_MISSES: dict[int, list[str]] = {
+    4: [
+        "Move the three blocks to the opposite regions; no arm may touch the blue block until the red block "
+        "has been touched. In the end, after all of this, place the yellow block back to region H.",
+        "Move the three blocks to the opposite regions. In the end, after all of this, place the yellow "
+        "block back to region G.",
+    ],
+}

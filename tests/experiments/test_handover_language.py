@@ -15,8 +15,11 @@ from handover_heldout import (
     HELD_OUT,
     LEAD_HELD_OUT,
     LEAD_SESSION9,
+    LEAD_SESSION9_BATCH8,
     NEAR_MISSES,
     SEEN_WHILE_FIXING,
+    STACKED_MARKER_NEAR_MISSES,
+    STACKED_MARKERS,
 )
 from handover_rephrasings import REPHRASINGS
 
@@ -61,7 +64,7 @@ def test_held_out_rephrasings_give_the_same_specs(task_id, text):
     ("task_id", "text"),
     [
         (t, text)
-        for group in (SEEN_WHILE_FIXING, FIXING_VARIANTS, H43_VARIANTS)
+        for group in (SEEN_WHILE_FIXING, FIXING_VARIANTS, H43_VARIANTS, STACKED_MARKERS)
         for t, texts in group.items()
         for text in texts
     ],
@@ -118,7 +121,12 @@ def test_a_different_meaning_gives_a_different_spec(task_id, text):
 
 @pytest.mark.parametrize(
     ("task_id", "text"),
-    [(t, text) for group in (NEAR_MISSES, H43_NEAR_MISSES) for t, texts in group.items() for text in texts],
+    [
+        (t, text)
+        for group in (NEAR_MISSES, H43_NEAR_MISSES, STACKED_MARKER_NEAR_MISSES)
+        for t, texts in group.items()
+        for text in texts
+    ],
 )
 def test_near_misses_are_refused_or_give_another_spec(task_id, text):
     try:
@@ -254,7 +262,14 @@ def test_unseen_rephrasings_are_read_right_or_refused_never_misread(task_id, tex
     _read_right_or_refused(task_id, text)
 
 
-@pytest.mark.parametrize(("name", "batch"), [("lead session 9", LEAD_SESSION9), ("h43 rounds", H43_ROUNDS)])
+@pytest.mark.parametrize(
+    ("name", "batch"),
+    [
+        ("lead session 9", LEAD_SESSION9),
+        ("lead session 9, batch 8", LEAD_SESSION9_BATCH8),
+        ("h43 rounds", H43_ROUNDS),
+    ],
+)
 @pytest.mark.parametrize("task_id", sorted(TASKS))
 def test_later_batches_are_read_right_or_refused_never_misread(name, batch, task_id):
     """One case per task and batch (the sentences of a task in one loop, to keep the file fast)."""

@@ -271,7 +271,9 @@ def _markers(m: Marked, clauses: list[Clause]) -> None:
         rf"(?:,\s*)?(?:\band\s+)?\b{THEN}{LEAD}G(\d+)",
         lambda x: set_marker(x, "then"),
     )
-    m.sub(rf"\b(?:then\s*,?\s*)?{AFTER_ALL}{LEAD}G(\d+)", lambda x: set_marker(x, "after_all"))
+    # stacked markers say it once: "in the end, after all of this, put ..."
+    m.sub(rf"\b(?:then\s*,?\s*)?(?:{AFTER_ALL}\s*,?\s*)*{AFTER_ALL}{LEAD}G(\d+)",
+          lambda x: set_marker(x, "after_all"))
     m.sub(  # "put the yellow block back on G at the end"
         r"\bG(\d+)\s*,?\s*(?:at\s+the\s+(?:very\s+)?end|in\s+the\s+end|lastly|finally|last|as\s+the\s+(?:last|final)\s+step)\b",
         lambda x: set_marker(x, "after_all"),
