@@ -2144,3 +2144,59 @@ STACKED_MARKER_NEAR_MISSES: dict[int, list[str]] = {
         "block back to region G.",
     ],
 }
+
+# Written by the lead in session 9 after every rule of the session was in (batch 9) and run once on the
+# final reader, never shown to anyone who wrote rules: 15 gave the written spec, 1 was refused by name
+# ("regions F, G and H can't have any object placed on them"), 0 another spec. Left as it is: held out.
+LEAD_SESSION9_BATCH9: dict[int, list[str]] = {
+    1: [
+        "Please move the three blocks to the opposite side; place the red block before you place the "
+        "blue block.",
+        "Red block before blue block: bring all three blocks to the opposite regions.",
+    ],
+    2: [
+        "Move the three blocks into region H, region I and region J. Each goal region may contain only "
+        "one object.",
+        "Please place the three blocks in the three goal regions H, I and J, with just one object in "
+        "each goal region.",
+    ],
+    3: [
+        "Please transfer the three pillars to the placement area (regions E, F and G) at the side of arm "
+        "a and arm b. Do not put objects on any area other than the target region.",
+        "Move the three pillars to region E, F and G. Objects must not be placed on any area other than "
+        "the target region.",
+    ],
+    4: [
+        "Please move the three blocks to the opposite regions. Until one of the robot arms has touched "
+        "the red block, the blue block must not be touched. After all of this, place the yellow block "
+        "back on region G.",
+        "Transfer the three blocks into the opposite regions, making sure no arm touches the blue block "
+        "until an arm has touched the red block. After that is all done, return the yellow block to "
+        "region G.",
+    ],
+    5: [
+        "Swap the positions of the red block and the blue block; the red block should be placed before "
+        "the blue block. Also move the yellow block to the opposite side at any time.",
+        "Exchange the positions of the red and blue blocks, putting the red block down before the blue "
+        "block. The yellow block should go to the opposite side at any time.",
+    ],
+    6: [
+        "Please put the three blocks separately into regions G, H and I, and place the red block before "
+        "the blue block.",
+        "Place the red block before the blue block, and place the three blocks separately on region G, "
+        "region H and region I.",
+    ],
+    7: [
+        "Place the three blocks on region I one after another, and place the red block before the blue "
+        "block. No objects may be placed on regions F, G and H during this period.",
+        "Please put the three objects to region I one after another. During this period, regions F, G "
+        "and H can't have any object placed on them. The red block should be placed before the blue "
+        "block.",
+    ],
+    8: [
+        "Put the yellow block on region I first and then on region G. Also, at any time, move the red "
+        "block and the blue block to any empty region.",
+        "Please move the red and the blue block to any empty region at any time, and place the yellow "
+        "block first on region I, then on region G.",
+    ],
+}

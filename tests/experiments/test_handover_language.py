@@ -16,6 +16,7 @@ from handover_heldout import (
     LEAD_HELD_OUT,
     LEAD_SESSION9,
     LEAD_SESSION9_BATCH8,
+    LEAD_SESSION9_BATCH9,
     NEAR_MISSES,
     SEEN_WHILE_FIXING,
     STACKED_MARKER_NEAR_MISSES,
@@ -267,6 +268,7 @@ def test_unseen_rephrasings_are_read_right_or_refused_never_misread(task_id, tex
     [
         ("lead session 9", LEAD_SESSION9),
         ("lead session 9, batch 8", LEAD_SESSION9_BATCH8),
+        ("lead session 9, batch 9", LEAD_SESSION9_BATCH9),
         ("h43 rounds", H43_ROUNDS),
     ],
 )
