@@ -5,6 +5,7 @@ minimised over one joint choice of instances; leaves that each take their own in
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -91,26 +92,31 @@ def _carries(h: Heuristic, node: Node, leaf: Leaf, memo: dict, fixed: tuple[str,
 
         if not legs:
             return 0
-        if held:
-            val = joint_min(legs, anchors, h.rr,
-                            lambda r, a: h.robot_walks(node, np.array(a, dtype=np.int64))[:, r])
-        else:  # a pure function of the legs and the candidate regions: cached across nodes
-            types = sorted({t for leg in legs for t in leg if isinstance(t, str)})
-            key = (tuple(legs), tuple(anchors(t) for t in types))
-            val = h.carry_cache.get(key, -1)
-            if val < 0:
-                if len(h.carry_cache) > CACHE_LIMIT:
-                    h.carry_cache.clear()
-                val = h.carry_cache[key] = joint_min(legs, anchors, h.rr, _no_robot)
+        # a pure function of the legs, the candidate regions and where the holders may stand (not
+        # of the other robots): cached across nodes
+        types = sorted({t for leg in legs for t in leg if isinstance(t, str)})
+        key = (tuple(legs), tuple(anchors(t) for t in types), _holders_at(node, held))
+        val = h.carry_cache.get(key, -1)
+        if val < 0:
+            if len(h.carry_cache) > CACHE_LIMIT:
+                h.carry_cache.clear()
+            val = h.carry_cache[key] = joint_min(legs, anchors, h.rr, _holders_walk(h, node))
         best = val if best is None else min(best, val)
         if not best:
             break
     return best or 0
 
 
+def _holders_at(node: Node, held: dict[str, int]) -> tuple[tuple[int, int, object], ...]:
+    """Where each robot holding one of the leaf's objects is and may stand (its carries' start)."""
+    reach = node.reach
+    return tuple((r, node.cell[r], reach[r] if reach is not None else None)
+                 for r in sorted(set(held.values())))
 
-def _no_robot(robot: int, anchors: tuple[int, ...]) -> np.ndarray:
-    raise AssertionError("no robot holds anything for these carries")
+
+def _holders_walk(h: Heuristic, node: Node) -> Callable[[int, tuple[int, ...]], np.ndarray]:
+    """Robot r's walk to each of some regions, at `node` (only legs that start at a holder ask)."""
+    return lambda r, anchors: h.robot_walks(node, np.array(anchors, dtype=np.int64))[:, r]
 
 
 def _path_legs(h: Heuristic, leaf: Leaf, path: tuple[int, ...],
