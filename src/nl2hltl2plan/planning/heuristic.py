@@ -42,11 +42,10 @@ import numpy as np
 
 from nl2hltl2plan.planning.bounds import (
     Choice,
-    Leg,
     least_over_bindings,
     spanning_walk,
 )
-from nl2hltl2plan.planning.carries import carry_total
+from nl2hltl2plan.planning.carries import PathLegs, carry_total
 from nl2hltl2plan.planning.leaves import DONE, Leaf
 from nl2hltl2plan.planning.makespan import leaf_chains, makespan_bound
 from nl2hltl2plan.planning.navigation import INF
@@ -93,7 +92,7 @@ class Heuristic:
         np.minimum(self.rr, self.rr.T, out=self.rr)
         self.after = self._after_matrix()
         self.carry_cache: dict[tuple, int] = {}  # carry minima of legs and regions (carries.py)
-        self.legs_cache: dict[tuple, tuple[list[Leg], frozenset[str]]] = {}  # a leaf path's carry legs
+        self.legs_cache: dict[tuple, PathLegs] = {}  # a leaf path's carry legs (carries.py)
         self._near_cache: dict[tuple[int, ...], np.ndarray] = {}
         self._pending_cache: dict[tuple, Pending] = {}
         self._per_rows = PerRows()  # per pending work: the approach-and-carry legs
