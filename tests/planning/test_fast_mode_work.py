@@ -39,8 +39,10 @@ def test_shared_pending_work_gives_the_bound_of_a_fresh_evaluation(seed):
         nodes += [child for node in nodes[-40:] for child in x.successors(node)][:120]
     for node in nodes:
         assert shared.evaluate(node) == Heuristic(x, required).evaluate(node)
-    # nodes whose objects are in one state share one entry
+    # nodes whose objects are in one state share one entry, and so do the robot-independent parts
+    # of its hand rules (per_pending.py)
     assert 0 < len(shared._pending_cache) < len(nodes)
+    assert 0 < len(shared._per_hands._hits) < len(nodes)
 
 
 def test_a_replay_stops_once_its_cost_reaches_the_bar():

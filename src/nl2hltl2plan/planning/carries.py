@@ -5,7 +5,8 @@ minimised over one joint choice of instances; leaves that each take their own in
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from collections.abc import Callable
+from typing import TYPE_CHECKING, NamedTuple
 
 import numpy as np
 
@@ -82,7 +83,7 @@ def _carries(h: Heuristic, node: Node, leaf: Leaf, memo: dict, fixed: tuple[str,
     held = {t: sim.holder[o] for t, o in node.bind[leaf.index] if sim.holder[o] >= 0}
     best = None
     for path in paths:
-        legs, picked = _path_legs(h, leaf, path, held)
+        legs, picked, types, holders = _path_legs(h, leaf, path, held)
 
         def anchors(t: str, picked: frozenset[str] = picked) -> tuple[int, ...]:
             if fixed is not None and t == fixed[0]:
@@ -91,30 +92,41 @@ def _carries(h: Heuristic, node: Node, leaf: Leaf, memo: dict, fixed: tuple[str,
 
         if not legs:
             return 0
-        if held:
-            val = joint_min(legs, anchors, h.rr,
-                            lambda r, a: h.robot_walks(node, np.array(a, dtype=np.int64))[:, r])
-        else:  # a pure function of the legs and the candidate regions: cached across nodes
-            types = sorted({t for leg in legs for t in leg if isinstance(t, str)})
-            key = (tuple(legs), tuple(anchors(t) for t in types))
-            val = h.carry_cache.get(key, -1)
-            if val < 0:
-                if len(h.carry_cache) > CACHE_LIMIT:
-                    h.carry_cache.clear()
-                val = h.carry_cache[key] = joint_min(legs, anchors, h.rr, _no_robot)
+        # a pure function of the legs, the candidate regions and where the holders may stand (not
+        # of the other robots): cached across nodes
+        key = (legs, tuple(anchors(t) for t in types), _holders_at(node, holders))
+        val = h.carry_cache.get(key, -1)
+        if val < 0:
+            if len(h.carry_cache) > CACHE_LIMIT:
+                h.carry_cache.clear()
+            val = h.carry_cache[key] = joint_min(list(legs), anchors, h.rr, _holders_walk(h, node))
         best = val if best is None else min(best, val)
         if not best:
             break
     return best or 0
 
 
+def _holders_at(node: Node, holders: tuple[int, ...]) -> tuple[tuple[int, int, object], ...]:
+    """Where each robot holding one of the leaf's objects is and may stand (its carries' start)."""
+    reach = node.reach
+    return tuple((r, node.cell[r], reach[r] if reach is not None else None) for r in holders)
 
-def _no_robot(robot: int, anchors: tuple[int, ...]) -> np.ndarray:
-    raise AssertionError("no robot holds anything for these carries")
+
+def _holders_walk(h: Heuristic, node: Node) -> Callable[[int, tuple[int, ...]], np.ndarray]:
+    """Robot r's walk to each of some regions, at `node` (only legs that start at a holder ask)."""
+    return lambda r, anchors: h.robot_walks(node, np.array(anchors, dtype=np.int64))[:, r]
 
 
-def _path_legs(h: Heuristic, leaf: Leaf, path: tuple[int, ...],
-               held: dict[str, int]) -> tuple[list[Leg], frozenset[str]]:
+class PathLegs(NamedTuple):
+    """The carries of one leaf path (`_path_legs`)."""
+
+    legs: tuple[Leg, ...]
+    picked: frozenset[str]  # the types the path picks up
+    types: list[str]  # the types the legs join (sorted)
+    holders: tuple[int, ...]  # the robots whose hands the legs start at (sorted)
+
+
+def _path_legs(h: Heuristic, leaf: Leaf, path: tuple[int, ...], held: dict[str, int]) -> PathLegs:
     """The carry legs of a leaf path and the types it picks up: a pure function of the path and
     of which robots hold which of its types, so computed once per such state, not once per node."""
     key = (leaf.index, path, tuple(sorted(held.items())))
@@ -124,5 +136,7 @@ def _path_legs(h: Heuristic, leaf: Leaf, path: tuple[int, ...],
         picked = frozenset(types[0] for verb, types in atoms if verb == "pickup")
         if len(h.legs_cache) > CACHE_LIMIT:
             h.legs_cache.clear()
-        hit = h.legs_cache[key] = (carry_legs(atoms, held), picked)
+        legs = tuple(carry_legs(atoms, held))
+        types = sorted({t for leg in legs for t in leg if isinstance(t, str)})
+        hit = h.legs_cache[key] = PathLegs(legs, picked, types, tuple(sorted(set(held.values()))))
     return hit

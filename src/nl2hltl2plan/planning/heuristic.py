@@ -43,16 +43,16 @@ import numpy as np
 
 from nl2hltl2plan.planning.bounds import (
     Choice,
-    Leg,
     least_over_bindings,
     spanning_walk,
 )
-from nl2hltl2plan.planning.carries import carry_total
+from nl2hltl2plan.planning.carries import PathLegs, carry_total
 from nl2hltl2plan.planning.leaves import DONE, Leaf
 from nl2hltl2plan.planning.makespan import leaf_chains, makespan_bound
 from nl2hltl2plan.planning.navigation import INF
 from nl2hltl2plan.planning.node import Node, bound
 from nl2hltl2plan.planning.opens import forced_closes, forced_opens
+from nl2hltl2plan.planning.per_pending import PerRows, approach_legs, hand_masks, robot_hand_mask
 from nl2hltl2plan.planning.relax import BIG, OTHER, PICKUP, PUT, EventRow, solve
 from nl2hltl2plan.planning.state import Expander
 from nl2hltl2plan.planning.tour import chain_walk, tour_walk
@@ -94,9 +94,11 @@ class Heuristic:
         np.minimum(self.rr, self.rr.T, out=self.rr)
         self.after = self._after_matrix()
         self.carry_cache: dict[tuple, int] = {}  # carry minima of legs and regions (carries.py)
-        self.legs_cache: dict[tuple, tuple[list[Leg], frozenset[str]]] = {}  # a leaf path's carry legs
+        self.legs_cache: dict[tuple, PathLegs] = {}  # a leaf path's carry legs (carries.py)
         self._near_cache: dict[tuple[int, ...], np.ndarray] = {}
         self._pending_cache: dict[tuple, Pending] = {}
+        self._per_rows = PerRows()  # per pending work: the approach-and-carry legs
+        self._per_hands = PerRows()  # per pending work: the events' hand rules
         self.root_evals = ROOT_EVALS
 
     def _near(self, anchors: tuple[int, ...]) -> np.ndarray:
@@ -448,31 +450,18 @@ class Heuristic:
         predecessor through one cell of the pickup's region to the put's region (a region-level step
         may reach the object at one end of its region and leave from the other); a held object's
         put keeps the holder's walk. These walks are disjoint parts of the robots' walks (an approach
-        has the hand empty, a carry full): summed, a bound. None when no pickup is carried."""
-        # pickup row -> the row of its put
-        legs = {row.carried: i for i, row in enumerate(rows)
-                if row.kind == PUT and row.carried >= 0 and row.anchors}
-        legs = {pick: put for pick, put in legs.items() if rows[pick].kind == PICKUP and rows[pick].anchors}
-        region_idx = self.nav.region_idx
-        cells_of = {pick: np.concatenate([region_idx[a] for a in rows[pick].anchors]) for pick in legs}
-        # an instance no cell reaches: no leg
-        cells_of = {pick: cells for pick, cells in cells_of.items() if len(cells)}
-        if not cells_of:
+        has the hand empty, a carry full): summed, a bound. None when no pickup is carried. The
+        walks from the pending events are computed once per pending work (`per_pending`)."""
+        legs = self._per_rows.get(rows, lambda: approach_legs(rows, cols, self.nav.region_idx, self._near))
+        if legs is None:
             return None
-        union = np.unique(np.concatenate(list(cells_of.values())))  # only the cells the pickups use
-        src = np.empty((cost.shape[1], len(union)), dtype=np.int64)
-        for j, anchors in enumerate(cols):
-            src[j] = self._near(anchors)[union] if anchors else 0
-        src[len(cols):] = self._robot_walks_to_cells(node, union)
-        np.minimum(src, BIG, out=src)
+        robots = np.minimum(self._robot_walks_to_cells(node, legs.union), BIG)
         out = np.where(cost >= BIG, BIG, 0)
-        for i, row in enumerate(rows):
-            if row.kind == PUT and row.carried < 0 and row.holder >= 0:
-                out[i] = cost[i]  # a held object's put: the holder's walk to it
-        for pick, cells in cells_of.items():
-            to_put = np.minimum(self._near(rows[legs[pick]].anchors)[cells], BIG)
-            walks = (src[:, np.searchsorted(union, cells)] + to_put[None, :]).min(axis=1)
-            out[pick] = np.where(cost[pick] >= BIG, BIG, np.minimum(walks, BIG))
+        for i in legs.held_puts:
+            out[i] = cost[i]  # a held object's put: the holder's walk to it
+        from_robots = np.minimum.reduceat(robots[:, legs.cells] + legs.to_put[None, :], legs.starts, axis=1)
+        walks = np.minimum(np.hstack([legs.from_cols, from_robots.T]), BIG)
+        out[legs.picks] = np.where(cost[legs.picks] >= BIG, BIG, walks)
         return out
 
     def _robot_walks_to_cells(self, node: Node, cells: np.ndarray) -> np.ndarray:
@@ -490,18 +479,11 @@ class Heuristic:
                     hands: dict[tuple[int, str], int]) -> None:
         """One hand: a pickup never follows a moment the hand is full until a pending put; an event
         that needs the hand to hold X (a put of X, an action done while holding X) follows only a
-        moment the hand may hold X. Optional events: hand unknown."""
-        robot = self._robot_hands(node, rows, hands)
-        n_opt = n_pred - n_ev
-        after = np.array([row.after for row in rows] + [-1] * n_opt + [hand for hand, _ in robot],
-                         dtype=np.int64)
-        full = np.array([row.full for row in rows] + [False] * n_opt + [stays for _, stays in robot],
-                        dtype=bool)
-        kind = np.array([row.kind for row in rows])
-        need = np.array([row.need for row in rows], dtype=np.int64)
-        bad = (kind == PICKUP)[:, None] & full[None, :]
-        bad |= (need >= 0)[:, None] & (after[None, :] != -1) & (after[None, :] != need[:, None])
-        cost[bad] = BIG
+        moment the hand may hold X. Optional events: hand unknown. The events' part is computed
+        once per pending work (`per_pending.hand_masks`)."""
+        masks = self._per_hands.get(rows, lambda: hand_masks(rows, n_pred - n_ev))
+        cost[:, :n_pred][masks.events] = BIG
+        cost[:, n_pred:][robot_hand_mask(masks, tuple(self._robot_hands(node, rows, hands)))] = BIG
 
     def robot_walks(self, node: Node, a_idx: np.ndarray) -> np.ndarray:
         """anchors x robots: the fewest steps from where each robot may stand to each anchor."""

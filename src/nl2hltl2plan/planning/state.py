@@ -261,10 +261,11 @@ class Expander:
             for s_verb, s_obj in needs:
                 cur = support_event(self, cur, robot, leaf.index, s_verb, s_obj) if cur is not None else None
             return None if cur is None else self.apply(cur, robot, leaf, atom_k, objs, q_next, stand)
+        if verb == "pickup" and not sim.flags[objs[0]] & PRESENT:
+            return None  # a slice still to come: the action would fail (no state copied to see it)
         anchor = self.nav.anchor(sim, objs[-1])
         if anchor < 0 or not len(self.nav.region_idx[anchor]):
             return None
-        touched = self.touched(sim, verb, objs, robot)
         child_sim = sim.copy()
         # the action's preconditions first (from some cell of the region), the walk only if it can
         child_sim.pos[robot] = self.nav.cells[int(self.nav.region_idx[anchor][0])]
@@ -273,6 +274,7 @@ class Expander:
         stand, d, reach = self.walk(node, robot, anchor, stand)
         if d >= INF:
             return None
+        touched = self.touched(sim, verb, objs, robot)  # in the state before the action
         child_sim.pos[robot] = self.nav.cells[stand]
         li = leaf.index
         ready = node.leaf_t[li]
