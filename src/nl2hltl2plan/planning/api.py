@@ -311,7 +311,8 @@ def _search(searcher: Searcher, x: Expander, budget: Budget) -> Node | None:
         best = seed
         if best is not None and budget.free_stands:  # the incumbent's cost on the grid: its best stand cells
             best = refine_stand_cells(x, best, searcher.obj)
-        if seed is not None and best is not None and not searcher.obj.proven(searcher.cost(best), root.f, 1.0):
+        if (seed is not None and best is not None
+                and not searcher.obj.proven(searcher.cost(best), root.f, 1.0)):
             # local search on the allocation first (unless the root's bound proves the seed
             # optimal already): a better incumbent also prunes the A*. It compares candidates at
             # their nearest stand cells, so it starts from the seed's nearest-cell plan (a refined
