@@ -307,19 +307,25 @@ def _search(searcher: Searcher, x: Expander, budget: Budget) -> Node | None:
             searcher.stats.proven_optimal, searcher.stats.stopped = True, StopReason.TRIVIAL
             return root
         searcher.score(root)  # the full bound at the root: the A*'s first lower bound
-        best = _seed(searcher, x, root, budget.light_seeds)
+        seed = _seed(searcher, x, root, budget.light_seeds)
+        best = seed
         if best is not None and budget.free_stands:  # the incumbent's cost on the grid: its best stand cells
             best = refine_stand_cells(x, best, searcher.obj)
-        if best is not None and not searcher.obj.proven(searcher.cost(best), root.f, 1.0):
+        if (seed is not None and best is not None
+                and not searcher.obj.proven(searcher.cost(best), root.f, 1.0)):
             # local search on the allocation first (unless the root's bound proves the seed
-            # optimal already): a better incumbent also prunes the A*
-            n = max(1, len(best.events()))
-            best = improve(x, best, searcher.obj, min(budget.improve_evals, max(1, IMPROVE_EVENTS // n)),
-                           searcher.check_time)
-            best = lns(x, best, searcher.obj, min(budget.lns_evals, max(1, LNS_EVENTS // n)),
-                       searcher.check_time)
+            # optimal already): a better incumbent also prunes the A*. It compares candidates at
+            # their nearest stand cells, so it starts from the seed's nearest-cell plan (a refined
+            # incumbent against nearest-cell candidates would reject orders that refine better)
+            n = max(1, len(seed.events()))
+            found = improve(x, seed, searcher.obj, min(budget.improve_evals, max(1, IMPROVE_EVENTS // n)),
+                            searcher.check_time)
+            found = lns(x, found, searcher.obj, min(budget.lns_evals, max(1, LNS_EVENTS // n)),
+                        searcher.check_time)
             if budget.free_stands:
-                best = refine_stand_cells(x, best, searcher.obj)
+                found = refine_stand_cells(x, found, searcher.obj)
+            if searcher.obj.value(found) < searcher.obj.value(best):
+                best = found
             searcher.found(best)
         start = with_free_stands(root) if budget.free_stands else root
         stall = None if budget.stall_work is None else Stall(budget.stall_work, STALL_SHARE, STALL_NEAR)
