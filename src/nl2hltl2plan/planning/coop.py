@@ -34,7 +34,7 @@ from collections import deque
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from functools import cached_property
-from typing import Any
+from typing import Any, TypeVar
 
 from nl2hltl2plan.errors import PlanningError
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
@@ -55,6 +55,8 @@ from nl2hltl2plan.worlds.world import Cell
 
 MAX_EXPANSIONS = 60_000
 CACHE_LIMIT = 200_000  # cached paths / tours per search object (cleared when full)
+K = TypeVar("K")
+V = TypeVar("V")
 
 
 @dataclass
@@ -103,6 +105,15 @@ class CoopResult:
         return out
 
 
+def _bounded(cache: dict[K, V], key: K, compute: Callable[[], V]) -> V:
+    """`cache[key]`, computed on first use; the cache is emptied when it holds CACHE_LIMIT entries."""
+    if key not in cache:
+        if len(cache) >= CACHE_LIMIT:
+            cache.clear()
+        cache[key] = compute()
+    return cache[key]
+
+
 class _Search:
     def __init__(self, hw: HandoverWorld, spec: HierarchicalSpec) -> None:
         self.hw = hw
@@ -119,12 +130,8 @@ class _Search:
 
     def path(self, arm: int, start: Cell, goal: Cell, blocked: frozenset[Cell]) -> tuple[Cell, ...] | None:
         """Shortest path inside the arm's reach avoiding `blocked` (cells entered, start excluded)."""
-        key = (arm, start, goal, blocked)
-        if key not in self._paths:
-            if len(self._paths) >= CACHE_LIMIT:
-                self._paths.clear()
-            self._paths[key] = self._shortest_path(arm, start, goal, blocked)
-        return self._paths[key]
+        return _bounded(self._paths, (arm, start, goal, blocked),
+                        lambda: self._shortest_path(arm, start, goal, blocked))
 
     def _shortest_path(self, arm: int, start: Cell, goal: Cell,
                        blocked: frozenset[Cell]) -> tuple[Cell, ...] | None:
@@ -230,12 +237,7 @@ class _Search:
 
     def _tour(self, src: Cell, needed: tuple[frozenset[Cell], ...]) -> int:
         """Shortest walk from `src` through one cell of every set, in the best order."""
-        key = (src, needed)
-        if key not in self._tours:
-            if len(self._tours) >= CACHE_LIMIT:
-                self._tours.clear()
-            self._tours[key] = self._shortest_tour(src, needed)
-        return self._tours[key]
+        return _bounded(self._tours, (src, needed), lambda: self._shortest_tour(src, needed))
 
     def _shortest_tour(self, src: Cell, needed: tuple[frozenset[Cell], ...]) -> int:
         unique = list(dict.fromkeys(needed))[:4]
