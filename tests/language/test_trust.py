@@ -61,6 +61,17 @@ def test_counts_and_cycles_are_input_errors():
         )
 
 
+def test_a_cyclic_order_is_named_before_a_state_request_error():
+    # translate._parsed_and_reread accounts the whole parse before it rereads the clauses as state
+    # requests, so the cycle is reported, not the request's own error ("holds 2 of them")
+    from nl2hltl2plan.language.translate import translate
+    from nl2hltl2plan.worlds import load_world
+
+    text = "put the mug in the sink before the apple, and put the apple in the sink before the mug"
+    with pytest.raises(HTTError, match="cyclic order in the instruction: mug before apple before mug"):
+        translate(text + ", and slice all the apples", load_world("FloorPlan1"), build=False)
+
+
 def test_plan_refuses_partial_instructions_unless_asked(capsys):
     text = "Put the plates in the lower rack and then make some tea"
     with pytest.raises(HTTError, match="'make' .action.: no base task does this"):

@@ -54,7 +54,7 @@ NO_CONSTRAINT = (
 )
 
 
-def _count_value(cats: set[str], word: str) -> int | None:
+def _count_value(cats: frozenset[str], word: str) -> int | None:
     if word.isdigit():
         return int(word)
     for c in cats:
@@ -355,7 +355,7 @@ def _until_guard(instruction: str, tok: tuple[str, int, int], parse: ParseUsage)
     return bool(parse.before) and re.search(r"\b(until|unless|before)\b", rest) is not None
 
 
-def _verb(w: str, cats: set[str], words: list[str], i: int, parse: ParseUsage) -> Unread | None:
+def _verb(w: str, cats: frozenset[str], words: list[str], i: int, parse: ParseUsage) -> Unread | None:
     if "verb_switch" in cats:
         after = words[i + 1 : i + 5]
         if "off" in after and "off" not in parse.states:
@@ -413,7 +413,7 @@ def _piece_of_whole(words: list[str], i: int) -> bool:
     return bool(named) and not set(named[0].entry.types) & SLICEABLE
 
 
-def _noun(w: str, cats: set[str]) -> Unread | None:
+def _noun(w: str, cats: frozenset[str]) -> Unread | None:
     if "person" in cats:
         return Unread(w, "place", "a person: no base task hands things to people")
     if "noun_unsupported" in cats:
@@ -425,7 +425,7 @@ def _count(
     instruction: str,
     toks: list[tuple[str, int, int]],
     i: int,
-    cats: set[str],
+    cats: frozenset[str],
     mentions: list[Mention],
     parse: ParseUsage,
     instances: Mapping[str, int] | None,

@@ -68,7 +68,10 @@ def stems(word: str) -> set[str]:
     return out
 
 
-def categories(word: str) -> set[str]:
+@lru_cache(maxsize=8192)  # asked for every token of every accounting pass, several passes per instruction
+def categories(word: str) -> frozenset[str]:
     """The content-word categories of one token ({} for a function word)."""
     forms = stems(word)
-    return {name for name, words in vocabulary().items() if forms & words and name != "implied_by_verb"}
+    return frozenset(
+        name for name, words in vocabulary().items() if forms & words and name != "implied_by_verb"
+    )

@@ -315,7 +315,9 @@ CONSTRAINT_VERBS = {
 }
 
 
-def unforbidden_verb(w: str, cats: set[str], words: list[str], i: int, c: ConstraintSpec) -> Unread | None:
+def unforbidden_verb(
+    w: str, cats: frozenset[str], words: list[str], i: int, c: ConstraintSpec
+) -> Unread | None:
     """A verb inside a negated clause that its constraint does not forbid (check 1 of `accounting`):
     "never turn on the microwave" needs toggle_on among the forbidden actions, "do not heat the cup" heat."""
     verbs = {a.verb for p in c.forbid if (a := Atom.read_pattern(p)) is not None}

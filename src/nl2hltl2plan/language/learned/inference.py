@@ -315,8 +315,8 @@ def structure_reading(
         text = with_verb(base_form(span.text), previous[0] if previous else None)
         try:
             p = grammar_first_reading(text, ctx)
-            if p.unparsed and resolved(text, previous) != text:
-                text = resolved(text, previous)
+            if p.unparsed and (again := resolved(text, previous)) != text:
+                text = again
                 p = grammar_first_reading(text, ctx)
         except Nl2Hltl2PlanError:
             return None
