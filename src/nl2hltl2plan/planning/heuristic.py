@@ -63,7 +63,7 @@ EMPTY = ""  # the hand right after a put
 NEAR_CACHE_LIMIT = 1_000  # per-anchor-set distance rows kept across nodes
 EVAL_WORK = 200  # an evaluation's fixed cost, in assignment-matrix cells (measured: ~1.5 ms vs ~7 us a cell)
 # the keys of a Pending's memo that hold its robot-independent parts (`_per_pending`)
-TEMPLATE, LEGS, HANDS = "template", "legs", "hands"
+TEMPLATE, LEGS, HANDS, TREE = "template", "legs", "hands", "tree"
 PENDING_CACHE_LIMIT = 20_000  # pending work kept per object state across nodes
 T = TypeVar("T")
 ROOT_EVALS = 64  # bound evaluations the root's search over instance choices spends (at most)
@@ -389,9 +389,8 @@ class Heuristic:
             walk = max(walk, solve(_with_last(compound, n_ev)))
         # the spanning tree over the events of one known region (an event with several candidate
         # regions would join far groups at no cost; leaving events out keeps it a bound)
-        fixed = [i for i, row in enumerate(rows) if len(row.anchors) == 1]
-        if len(fixed) > 1 or (fixed and walk == 0):
-            ev = np.minimum(pred[np.array(fixed)[:, None], fixed], BIG)
+        fixed, ev = _per_pending(pending, TREE, lambda: _known_region_steps(rows, pred))
+        if len(fixed) > 1 or (len(fixed) and walk == 0):
             walk = max(walk, spanning_walk(ev, np.minimum(robot[:, fixed].min(axis=0), BIG)))
         return walk
 
@@ -566,6 +565,12 @@ def _per_pending(pending: Pending, key: str, make: Callable[[], T]) -> T:
     if key not in pending.memo:
         pending.memo[key] = make()
     return pending.memo[key]
+
+
+def _known_region_steps(rows: list[EventRow], pred: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The events of one known region (the spanning tree's), and the walks between them (at most BIG)."""
+    fixed = np.array([i for i, row in enumerate(rows) if len(row.anchors) == 1], dtype=np.int64)
+    return fixed, np.minimum(pred[fixed[:, None], fixed], BIG)
 
 
 def _with_last(cost: np.ndarray, n_ev: int) -> np.ndarray:
