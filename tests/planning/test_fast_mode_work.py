@@ -14,7 +14,7 @@ from test_grid_optimum import PLACE_APPLE, PLACE_MUG, _random_world
 
 from nl2hltl2plan.planning import oracle_spec, plan
 from nl2hltl2plan.planning.extract import reaching, replay_from
-from nl2hltl2plan.planning.heuristic import Heuristic
+from nl2hltl2plan.planning.heuristic import HANDS, Heuristic
 from nl2hltl2plan.planning.model import build_problem, required_leaves
 from nl2hltl2plan.planning.navigation import Navigator
 from nl2hltl2plan.planning.objective import objective_for
@@ -42,7 +42,7 @@ def test_shared_pending_work_gives_the_bound_of_a_fresh_evaluation(seed):
     # nodes whose objects are in one state share one entry, and so do the robot-independent parts
     # of its hand rules (per_pending.py)
     assert 0 < len(shared._pending_cache) < len(nodes)
-    assert 0 < len(shared._per_hands._hits) < len(nodes)
+    assert 0 < sum(HANDS in pending.memo for pending in shared._pending_cache.values()) < len(nodes)
 
 
 def test_a_replay_stops_once_its_cost_reaches_the_bar():

@@ -37,7 +37,8 @@ once per such state (`Pending`, `Template`) and shared by every node in it.
 
 from __future__ import annotations
 
-from typing import NamedTuple
+from collections.abc import Callable
+from typing import NamedTuple, TypeVar
 
 import numpy as np
 
@@ -52,7 +53,7 @@ from nl2hltl2plan.planning.makespan import leaf_chains, makespan_bound
 from nl2hltl2plan.planning.navigation import INF
 from nl2hltl2plan.planning.node import Node, bound
 from nl2hltl2plan.planning.opens import forced_closes, forced_opens
-from nl2hltl2plan.planning.per_pending import PerRows, approach_legs, hand_masks, robot_hand_mask
+from nl2hltl2plan.planning.per_pending import approach_legs, hand_masks, robot_hand_mask
 from nl2hltl2plan.planning.relax import BIG, OTHER, PICKUP, PUT, EventRow, solve
 from nl2hltl2plan.planning.state import Expander
 from nl2hltl2plan.planning.tour import chain_walk, tour_walk
@@ -61,8 +62,10 @@ from nl2hltl2plan.worlds.simulator import PRESENT
 EMPTY = ""  # the hand right after a put
 NEAR_CACHE_LIMIT = 1_000  # per-anchor-set distance rows kept across nodes
 EVAL_WORK = 200  # an evaluation's fixed cost, in assignment-matrix cells (measured: ~1.5 ms vs ~7 us a cell)
-TEMPLATE = "template"  # the key of a Pending's memo that holds its Template
+# the keys of a Pending's memo that hold its robot-independent parts (`_per_pending`)
+TEMPLATE, LEGS, HANDS, TREE = "template", "legs", "hands", "tree"
 PENDING_CACHE_LIMIT = 20_000  # pending work kept per object state across nodes
+T = TypeVar("T")
 ROOT_EVALS = 64  # bound evaluations the root's search over instance choices spends (at most)
 
 
@@ -97,8 +100,6 @@ class Heuristic:
         self.legs_cache: dict[tuple, PathLegs] = {}  # a leaf path's carry legs (carries.py)
         self._near_cache: dict[tuple[int, ...], np.ndarray] = {}
         self._pending_cache: dict[tuple, Pending] = {}
-        self._per_rows = PerRows()  # per pending work: the approach-and-carry legs
-        self._per_hands = PerRows()  # per pending work: the events' hand rules
         self.root_evals = ROOT_EVALS
 
     def _near(self, anchors: tuple[int, ...]) -> np.ndarray:
@@ -356,10 +357,8 @@ class Heuristic:
     def _assignment(self, node: Node, pending: Pending, carry: int) -> int:
         """The largest of three bounds on the walking still needed: the assignment of distinct
         predecessors, the carries plus the pickups' approaches, and the spanning tree (bounds.py)."""
-        rows, hands = pending.rows, pending.hands
-        t = pending.memo.get(TEMPLATE)
-        if t is None:
-            t = pending.memo[TEMPLATE] = self._template(rows, pending.optional)
+        rows = pending.rows
+        t = _per_pending(pending, TEMPLATE, lambda: self._template(rows, pending.optional))
         n_ev, n_pred, cols, kind, pred = len(rows), len(t.cols), t.cols, t.kind, t.pred
         # rows: events (successors); columns: predecessor events (the template), then robots
         robot = np.minimum.reduceat(self.robot_walks(node, t.a_idx), t.a_starts, axis=0)  # events x robots
@@ -375,7 +374,7 @@ class Heuristic:
         cost = np.hstack([t.cost, walks])
         robot = robot.T  # robots x events
         self.work += cost.size + EVAL_WORK
-        self._hand_rules(node, rows, cost, n_ev, n_pred, hands)
+        self._hand_rules(node, pending, cost, n_ev, n_pred)
         walk = solve(_with_last(cost, n_ev))
         if self.light:
             return walk
@@ -385,14 +384,13 @@ class Heuristic:
         approach = cost.copy()
         approach[~alone] = np.where(approach[~alone] >= BIG, BIG, 0)
         walk = max(walk, carry + solve(_with_last(approach, n_ev)))
-        compound = self._approach_and_carry(node, rows, cols, cost)
+        compound = self._approach_and_carry(node, pending, cols, cost)
         if compound is not None:
             walk = max(walk, solve(_with_last(compound, n_ev)))
         # the spanning tree over the events of one known region (an event with several candidate
         # regions would join far groups at no cost; leaving events out keeps it a bound)
-        fixed = [i for i, row in enumerate(rows) if len(row.anchors) == 1]
-        if len(fixed) > 1 or (fixed and walk == 0):
-            ev = np.minimum(pred[np.array(fixed)[:, None], fixed], BIG)
+        fixed, ev = _per_pending(pending, TREE, lambda: _known_region_steps(rows, pred))
+        if len(fixed) > 1 or (len(fixed) and walk == 0):
             walk = max(walk, spanning_walk(ev, np.minimum(robot[:, fixed].min(axis=0), BIG)))
         return walk
 
@@ -444,7 +442,7 @@ class Heuristic:
             held_puts.append((i, -1 if carried >= 0 else holder))
         return Template(cols, empty, a_idx, a_starts, pred, cost, kind, held_puts)
 
-    def _approach_and_carry(self, node: Node, rows: list[EventRow], cols: list[tuple[int, ...]],
+    def _approach_and_carry(self, node: Node, pending: Pending, cols: list[tuple[int, ...]],
                             cost: np.ndarray) -> np.ndarray | None:
         """The assignment over the pickups of their approach and carry as one walk, from the
         predecessor through one cell of the pickup's region to the put's region (a region-level step
@@ -452,7 +450,8 @@ class Heuristic:
         put keeps the holder's walk. These walks are disjoint parts of the robots' walks (an approach
         has the hand empty, a carry full): summed, a bound. None when no pickup is carried. The
         walks from the pending events are computed once per pending work (`per_pending`)."""
-        legs = self._per_rows.get(rows, lambda: approach_legs(rows, cols, self.nav.region_idx, self._near))
+        legs = _per_pending(pending, LEGS,
+                            lambda: approach_legs(pending.rows, cols, self.nav.region_idx, self._near))
         if legs is None:
             return None
         robots = np.minimum(self._robot_walks_to_cells(node, legs.union), BIG)
@@ -475,15 +474,15 @@ class Heuristic:
                     out[r] = (dm[stand[:, None], cells] + np.array(reach[1])[:, None]).min(axis=0)
         return out
 
-    def _hand_rules(self, node: Node, rows: list[EventRow], cost: np.ndarray, n_ev: int, n_pred: int,
-                    hands: dict[tuple[int, str], int]) -> None:
+    def _hand_rules(self, node: Node, pending: Pending, cost: np.ndarray, n_ev: int, n_pred: int) -> None:
         """One hand: a pickup never follows a moment the hand is full until a pending put; an event
         that needs the hand to hold X (a put of X, an action done while holding X) follows only a
         moment the hand may hold X. Optional events: hand unknown. The events' part is computed
         once per pending work (`per_pending.hand_masks`)."""
-        masks = self._per_hands.get(rows, lambda: hand_masks(rows, n_pred - n_ev))
+        rows = pending.rows
+        masks = _per_pending(pending, HANDS, lambda: hand_masks(rows, n_pred - n_ev))
         cost[:, :n_pred][masks.events] = BIG
-        cost[:, n_pred:][robot_hand_mask(masks, tuple(self._robot_hands(node, rows, hands)))] = BIG
+        cost[:, n_pred:][robot_hand_mask(masks, tuple(self._robot_hands(node, rows, pending.hands)))] = BIG
 
     def robot_walks(self, node: Node, a_idx: np.ndarray) -> np.ndarray:
         """anchors x robots: the fewest steps from where each robot may stand to each anchor."""
@@ -558,6 +557,20 @@ def _merged(column: tuple[PathEvent, ...]) -> PathEvent:
                      carried.pop() if len(carried) == 1 else -1,
                      holders.pop() if len(holders) == 1 else -1,
                      hands.pop() if len(hands) == 1 else UNKNOWN_HAND)
+
+
+def _per_pending(pending: Pending, key: str, make: Callable[[], T]) -> T:
+    """A robot-independent part of `pending`, computed by `make` once and kept in its memo (every
+    node in that pending work shares it; a None kept too)."""
+    if key not in pending.memo:
+        pending.memo[key] = make()
+    return pending.memo[key]
+
+
+def _known_region_steps(rows: list[EventRow], pred: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The events of one known region (the spanning tree's), and the walks between them (at most BIG)."""
+    fixed = np.array([i for i, row in enumerate(rows) if len(row.anchors) == 1], dtype=np.int64)
+    return fixed, np.minimum(pred[fixed[:, None], fixed], BIG)
 
 
 def _with_last(cost: np.ndarray, n_ev: int) -> np.ndarray:

@@ -1,36 +1,16 @@
 """The parts of the bound's hand rules and approach-and-carry assignment (`heuristic.py`) that depend
 on a node's pending work alone (its events and their regions), not on where the robots are: computed
-once per pending work and kept beside it (`PerRows`), so a node computes only its robots' columns."""
+once per pending work and kept in its memo (`heuristic._per_pending`), so a node computes only its
+robots' columns."""
 
 from __future__ import annotations
 
 from collections.abc import Callable
-from typing import NamedTuple, TypeVar
+from typing import NamedTuple
 
 import numpy as np
 
 from nl2hltl2plan.planning.relax import BIG, PICKUP, PUT, EventRow
-
-T = TypeVar("T")
-PER_ROWS_LIMIT = 20_000  # pending works whose parts are kept
-
-
-class PerRows:
-    """A cache keyed by the identity of a pending work's event rows (a list shared, never changed, by
-    every node in that pending work); each entry keeps the list alive, so its id is never reused."""
-
-    def __init__(self) -> None:
-        self._hits: dict[int, tuple[list[EventRow], object]] = {}
-
-    def get(self, rows: list[EventRow], make: Callable[[], T]) -> T:
-        hit = self._hits.get(id(rows))
-        if hit is not None and hit[0] is rows:
-            return hit[1]  # type: ignore[return-value]
-        if len(self._hits) > PER_ROWS_LIMIT:
-            self._hits.clear()
-        value = make()
-        self._hits[id(rows)] = (rows, value)
-        return value
 
 
 class HandMasks(NamedTuple):

@@ -153,10 +153,18 @@ class Searcher:
             else:
                 heap.append(item)
         heapq.heapify(heap)
+        # the k least estimates of the finished children, negated (a max-heap: its top is the k-th)
+        top = [-item[0] for item in heapq.nsmallest(k, finished)]
+        heapq.heapify(top)
         while heap:
-            if len(finished) >= k and heapq.nsmallest(k, finished)[-1][0] < heap[0][0]:
+            if len(top) >= k and -top[0] < heap[0][0]:
                 break
+            n_finished = len(finished)
             self._finish(heapq.heappop(heap), finished, seen)
+            if len(finished) > n_finished and len(top) < k:
+                heapq.heappush(top, -finished[-1][0])
+            elif len(finished) > n_finished:
+                heapq.heappushpop(top, -finished[-1][0])
         finished.sort()
         return [child for _, _, _, child in finished[:k]]
 

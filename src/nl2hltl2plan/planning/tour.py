@@ -29,6 +29,7 @@ is at least its parent's).
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -46,20 +47,25 @@ MAX_CELLS = 160  # a stop with more candidate cells says little (it is near ever
 
 def tour_walk(h: Heuristic, node: Node, rows: list[EventRow]) -> int:
     """The least walking of paths out of the robots through one cell of each kept stop."""
-    stops = _stops(h, node, rows)
-    if not stops:
+    kept = _stops(h, node, rows)
+    if not kept:
         return 0
-    start = h._robot_walks_to_cells(node, np.concatenate(stops))  # robots x the stops' cells
-    return _forest(h.nav.dm, stops, start)
+    start = np.hstack([walks for _, walks in kept])  # robots x the stops' cells
+    return _forest(h.nav.dm, [cells for cells, _ in kept], start)
 
 
-def _stops(h: Heuristic, node: Node, rows: list[EventRow]) -> list[np.ndarray]:
-    """The cell sets of the stops kept: distinct, small, not holding a robot, farthest first."""
-    region_idx = h.nav.region_idx
+def _region_cells(h: Heuristic, anchors: Sequence[int]) -> np.ndarray:
+    """The cells of the union of `anchors`' regions (sorted)."""
+    return np.unique(np.concatenate([h.nav.region_idx[a] for a in anchors]))
+
+
+def _stops(h: Heuristic, node: Node, rows: list[EventRow]) -> list[tuple[np.ndarray, np.ndarray]]:
+    """The stops kept: distinct, small, not holding a robot, farthest first; each as its cells and
+    the robots' walks to them (robots x cells)."""
     by_anchors: dict[tuple[int, ...], np.ndarray] = {}
     for row in rows:
         if row.anchors and row.anchors not in by_anchors:
-            by_anchors[row.anchors] = np.unique(np.concatenate([region_idx[a] for a in row.anchors]))
+            by_anchors[row.anchors] = _region_cells(h, row.anchors)
     robot_cells = set(node.cell)
     if node.reach is not None:
         robot_cells |= {c for reach in node.reach if reach is not None for c in reach[0]}
@@ -67,19 +73,20 @@ def _stops(h: Heuristic, node: Node, rows: list[EventRow]) -> list[np.ndarray]:
     for anchors, cells in sorted(by_anchors.items()):
         if not len(cells) or len(cells) > MAX_CELLS or robot_cells & set(cells.tolist()):
             continue
-        far = int(h._robot_walks_to_cells(node, cells).min())
+        walks = h._robot_walks_to_cells(node, cells)
+        far = int(walks.min())
         if far >= INF:
             return []  # a stop no robot reaches: no claim
-        scored.append((-far, anchors, cells))
+        scored.append((-far, anchors, cells, walks))
     scored.sort(key=lambda item: (item[0], item[1]))
-    kept: list[np.ndarray] = []
-    for _, _, cells in scored:
+    kept: list[tuple[np.ndarray, np.ndarray]] = []
+    for _, _, cells, walks in scored:
         if len(kept) == MAX_STOPS:
             break
         as_set = set(cells.tolist())
-        if any(set(other.tolist()) <= as_set for other in kept):
+        if any(set(other.tolist()) <= as_set for other, _ in kept):
             continue  # visiting that kept stop visits this one too
-        kept.append(cells)
+        kept.append((cells, walks))
     return kept
 
 
@@ -144,7 +151,7 @@ def chain_walk(h: Heuristic, node: Node, rows: list[EventRow]) -> int:
     chain = _longest_chain(before, step, reach.min(axis=1))
     if len(node.cell) > 1:
         return _split_chain(step[np.ix_(chain, chain)], reach[chain])
-    cells = [np.unique(np.concatenate([h.nav.region_idx[a] for a in anchors[k]])) for k in chain]
+    cells = [_region_cells(h, anchors[k]) for k in chain]
     walk = h._robot_walks_to_cells(node, cells[0])[0]
     for prev, cur in zip(cells, cells[1:], strict=False):
         walk = (walk[:, None] + h.nav.dm[np.ix_(prev, cur)]).min(axis=0)

@@ -33,6 +33,8 @@ from nl2hltl2plan.suites.runner import (
     Row,
     Scenario,
     check_limits,
+    checked_row,
+    killed_row,
     run_scenarios,
     stderr_note,
 )
@@ -50,9 +52,7 @@ def _run_job(job: Callable[[Scenario], Row], scenario: Scenario) -> Row:
         row = job(scenario)
     except Exception as exc:  # every failure of a job is data for its row
         return {"status": "error", "reason": describe_exception(exc)}
-    if not isinstance(row, dict):
-        return {"status": "error", "reason": f"the job returned {type(row).__name__}, not a row"}
-    return row
+    return checked_row(row)
 
 
 def _ray() -> Any:
@@ -134,12 +134,7 @@ def _loop(
                 if now - started > hard_timeout_s:
                     ray.cancel(ref, force=True)
                     del running[ref]
-                    reason = f"killed after {hard_timeout_s:g} s"
-                    elapsed = round(now - started, 3)
-                    record(
-                        scenario,
-                        {"status": "timeout", "killed": True, "plan_time_s": elapsed, "reason": reason},
-                    )
+                    record(scenario, killed_row(now - started, hard_timeout_s))
     finally:
         for ref in running:  # interrupted: leave no task behind
             ray.cancel(ref, force=True)

@@ -113,6 +113,19 @@ def count_errored(rows: Iterable[Row]) -> int:
     return sum(1 for r in rows if is_errored(r))
 
 
+def checked_row(row: object) -> Row:
+    """The job's row, or an "error" row when the job returned something else (both engines)."""
+    if not isinstance(row, dict):
+        return {"status": "error", "reason": f"the job returned {type(row).__name__}, not a row"}
+    return row
+
+
+def killed_row(elapsed: float, hard_timeout_s: float) -> Row:
+    """The row of a scenario killed for running past `hard_timeout_s` (both engines)."""
+    return {"status": "timeout", "killed": True, "plan_time_s": round(elapsed, 3),
+            "reason": f"killed after {hard_timeout_s:g} s"}
+
+
 def _job_main(job_and_scenario: tuple[Callable[[Scenario], Row], Scenario]) -> Row:
     job, scenario = job_and_scenario
     return job(scenario)
@@ -222,13 +235,10 @@ def _loop(
                 row = child.result()
             except ChildError as exc:
                 row = {"status": "error", "reason": str(exc)}
-            if not isinstance(row, dict):
-                row = {"status": "error", "reason": f"the job returned {type(row).__name__}, not a row"}
-            record(scenario, row)
+            record(scenario, checked_row(row))
         for child, scenario in list(running.items()):
             elapsed = child.elapsed()
             if elapsed > hard_timeout_s:
                 child.kill()
                 del running[child]
-                record(scenario, {"status": "timeout", "killed": True, "plan_time_s": round(elapsed, 3),
-                                  "reason": f"killed after {hard_timeout_s:g} s"})
+                record(scenario, killed_row(elapsed, hard_timeout_s))
