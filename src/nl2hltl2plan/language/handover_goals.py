@@ -70,6 +70,7 @@ class Clause:
     marker: str = ""  # "", "first", "then", "after_all"
     leader: str = ""  # a block placed before the clause's other blocks ("swap red and blue, red first")
     together: bool = False
+    anytime: bool = False  # "at any time": in no order to the other goals, even as a numbered step
 
 
 def goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
@@ -83,7 +84,7 @@ def goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
         anytime = re.search(r"any\s+time|whenever", mods) is not None
         room = len({r for g in goals for r in g.regions}) >= len(goals) or place.kind == "start_of"
         together = len(goals) > 1 and place.kind != "away" and room and not (in_turn or anytime)
-        clauses.append(Clause(goals, text, together=together))
+        clauses.append(Clause(goals, text, together=together, anytime=anytime))
         return f" G{len(clauses) - 1} "
 
     def exchange(match: re.Match[str], other: str = "") -> str:
@@ -120,10 +121,10 @@ def goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
         rf"(?:back\s+)?{PREP}\s+P(\d+){mods}",
         lambda x: matched(x, 1),
     )
-    # a heading-like goal at the start of a sentence or after a comma: "pillars to E, F and G", "yellow:
-    # back to G last", "yellow block on I, then on G"
+    # a heading-like goal at the start of a sentence, after a comma or a step word: "pillars to E, F and
+    # G", "yellow: back to G last", "yellow block on I, then on G", "then yellow back to G"
     m.sub(
-        rf"(?:^|(?<=,))\s*B(\d+){mods}\s*(?::\s*(?:back\s+)?(?:(?:to|into|onto|on|in)\s+)?|,?\s*(?:back\s+)?"
+        rf"(?:^|(?<=,)|(?<=\bthen)|(?<=\bfinally)|(?<=\blastly))\s*B(\d+){mods}\s*(?::\s*(?:back\s+)?(?:(?:to|into|onto|on|in)\s+)?|,?\s*(?:back\s+)?"
         rf"(?:to|into|onto|on|in)\s+)P(\d+){mods}(?:\s+first\b)?(?=\s*(?:$|,|\band\b|\(|last\b|finally\b|at\s+the\s+end\b))",
         lambda x: matched(x, 1),
     )
@@ -282,6 +283,7 @@ def _markers(m: Marked, clauses: list[Clause]) -> None:
 
     def anytime(match: re.Match[str]) -> str:
         clauses[int(match.group(1))].together = False
+        clauses[int(match.group(1))].anytime = True
         return f" G{match.group(1)} "
 
     m.sub(r"\b(?:at\s+any\s+time|any\s+time|in\s+any\s+order)\s*,?\s*G(\d+)", anytime)
@@ -289,6 +291,9 @@ def _markers(m: Marked, clauses: list[Clause]) -> None:
     # any goal without a marker
     m.sub(rf"\b(?:{PERIOD_WORDS}|while)\s*,?\s*(?=G\d+|at\s+any\s+time)", " ")
     m.sub(r"(?:,\s*)?\band\s+(?=G\d+)", lambda _: " ")
+    for c in clauses:  # "Step 3: at any time, move ...": a numbered step that says "at any time" is in no order
+        if c.anytime and c.marker == "then":
+            c.marker = ""
 
 
 def _resolve(place: Place, block: str, scene: Scene) -> tuple[str, ...]:

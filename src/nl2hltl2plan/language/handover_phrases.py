@@ -313,6 +313,12 @@ def _mark_blocks(m: Marked, scene: Scene, previous: str) -> None:
     each = rf"\b(?:each|every|all)\s+(?:of\s+the\s+)?{count}(?:{NOUN}|{NOUNS})\b"  # not "any": one of them
     m.sub(colours, by_colour)
     m.sub(colours, by_colour)  # the phrases a repeated colour started
+    # a heading that lists blocks with commas: "red, blue: any empty region" (one group)
+    heading = re.match(r"\s*B(\d+)\s*,\s*B(\d+)\s*:", m.text)
+    if heading and not set(m.blocks[int(heading.group(1))]) & set(m.blocks[int(heading.group(2))]):
+        pair = [int(heading.group(1)), int(heading.group(2))]
+        text = " , ".join(m.block_text[k] for k in pair)
+        m.text = _new_block(m, [b for k in pair for b in m.blocks[k]], text) + ":" + m.text[heading.end() :]
     # "no block may be placed ...": the prohibitions read "no B"
     m.sub(rf"\bno\s+{NOUN}\b", lambda match: "no" + _new_block(m, scene.blocks, match.group(0)))
     # "a block may not be placed ...": a generic block in a prohibition is every block
@@ -560,6 +566,9 @@ def _mark_region_lists(m: Marked, scene: Scene) -> None:
     letters = LETTER + r"(?:" + link + LETTER + r")*(?:\s*\))?"
     m.sub(rf"{lead}(?P<list>{letters})(?:\s+at\b(?=\s*,))?", regions)
     m.sub(rf"{bare}(?P<list>{letters})", regions)
+    # telegraphic: "yellow: I, then G" (a letter after a block's heading, or after "then" ending a clause)
+    m.sub(rf"(?P<prep>\bB\d+\s*:\s*)(?P<list>{letters})(?=\s*(?:$|,))", regions)
+    m.sub(rf"(?P<prep>\bthen\s+)(?P<list>{LETTER})(?=\s*(?:$|,))", regions)
     # a bare list of two or more letters ("F, G, H stay empty"): regions anywhere (one letter may be "I")
     listed = LETTER + r"(?:(?:\s*(?:,|\band\b|\bor\b|&|/))+\s*" + LETTER + r")+"
     m.sub(rf"(?P<prep>)(?P<list>{listed})", regions)

@@ -226,6 +226,8 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
     receive = rf"(?:receive|get|hold|take|contain)s?\s+{thing}"
     m.sub(rf"\bno\s+P(?P<p>\d+)\s+(?:{may}\s+)?{receive}\b{PERIOD}", add)
     m.sub(rf"\bP(?P<p>\d+)\s+(?:{may}\s+)?{NEG}\s+{receive}\b{PERIOD}", add)
+    # "regions F, G and H cannot have any object placed on them"
+    m.sub(rf"\bP(?P<p>\d+)\s+(?:{may}\s+)?{NEG}\s+(?:have|get)\s+{thing}\s+{DROP}(?:\s+(?:on|in|onto|into)\s+(?:them|it))?{PERIOD}", add)
     # "regions F, G and H shall receive no object"
     receive_no = r"(?:receive|get|hold|take|contain)s?\s+no"
     m.sub(rf"\bP(?P<p>\d+)\s+(?:{may}\s+)?{receive_no}\s*B(?P<b>\d+){PERIOD}", add)
@@ -266,6 +268,8 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
     m.sub(rf"\b(?:keep|leave)\s+P(?P<p>\d+)\s+{free}{PERIOD}", add)
     m.sub(rf"(?:\bwith\s+)?\bP(?P<p>\d+)\s+(?:kept|left)\s+{free}{PERIOD}", add)  # "with F, G, H kept empty"
     m.sub(rf"\bP(?P<p>\d+)\s+(?:(?:is|are|stays?|remains?|{stay})\s+)?off\s+limits{PERIOD}", add)
+    # verbless, a clause of its own: "F, G, H empty meanwhile", "regions F, G and H: empty"
+    m.sub(rf"(?:^|(?<=,))\s*P(?P<p>\d+)\s*:?\s*(?:kept\s+|left\s+)?{EMPTY}{PERIOD}(?=\s*(?:$|,))", add)
     # "regions F, G and H must not be used (during this period)", "do not use F, G or H"
     for_nothing = r"(?:\s+(?:for\s+)?(?:anything|any\s+(?:block|object|pillar)))?"
     be_used = rf"(?:to\s+)?be\s+used{for_nothing}{PERIOD}"

@@ -43,7 +43,12 @@ PERIOD_WORDS = (
     r"while\s+doing\s+(?:so|this|that|it)|while\s+(?:this|that)\s+(?:happens|is\s+happening|goes\s+on|is\s+going\s+on)|"
     r"at\s+the\s+same\s+time|in\s+the\s+process|all\s+the\s+while|the\s+whole\s+time|"
     r"throughout(?:\s+(?:this|the|that)\s+(?:process|period|time))?|until\s+then|"
-    r"for\s+as\s+long\s+as\s+(?:this|that|it)\s+takes)"
+    r"for\s+as\s+long\s+as\s+(?:this|that|it)\s+takes|"
+    # "during the whole task", "for the duration of this task", "while you do this", "while this is done"
+    r"(?:during|throughout|for)\s+(?:this|that|the)\s+(?:whole\s+|entire\s+)?(?:task|process|job|operation|transfer)|"
+    r"for\s+the\s+(?:whole\s+|entire\s+)?duration(?:\s+of\s+(?:this|that|the)\s+(?:task|process|period|job|operation))?|"
+    r"while\s+(?:you|we|they|the\s+arms)\s+(?:are\s+)?(?:do|doing|carry\s+out|carrying\s+out|perform|performing)\s+"
+    r"(?:this|that|it|so)|while\s+(?:this|that|it)\s+(?:is|gets)\s+(?:being\s+)?done)"
 )
 PERIOD = rf"(?:\s*,?\s*(?:{PERIOD_WORDS}|at\s+any\s+time|ever|at\s+all))?"
 EMPTY = r"(?:empty|free|clear|unoccupied|vacant)"
@@ -54,6 +59,7 @@ AFTER_ALL = (
     rf"(?:once|when|after)\s+(?:you|we)\s*(?:'\s*re|'\s*ve\s+been|\s+are|\s+have\s+been)\s+(?:all\s+)?{DONE_STATE}|"
     r"after\s+(?:all\s+(?:of\s+)?(?:these|this|that|"
     r"the\s+above)|everything(?:\s+else)?)|finally|lastly|last\s+of\s+all|at\s+the\s+(?:very\s+)?end|in\s+the\s+end|"
+    r"after\s+(?:finish(?:ing)?|complet(?:e|ing)|doing|done)\s+(?:with\s+)?(?:all\s+(?:of\s+)?)?(?:this|these|that|everything|them)|"
     r"as\s+(?:a|the)\s+(?:final|last)\s+step|(?:up)?on\s+(?:completion|finishing)(?:\s+of\s+(?:this|these|that|the\s+above|all\s+(?:of\s+)?(?:this|these|that)))?)"
 )
 THEN = (
@@ -172,6 +178,24 @@ REWRITES: tuple[tuple[str, str], ...] = (
         rf"(?={VERB}\b)",
         "please ",
     ),
+    # the doer named formally: "the agent shall transfer ...", "the system must move ..."
+    (
+        rf"^\s*(?:the\s+)?(?:agent|agents|system|robot\s+system|planner|team|robot\s+team|operator)\s+"
+        rf"(?:must|should|will|shall|needs?\s+to|has\s+to|is\s+to|are\s+to)\s+(?={VERB}\b|exchange|swap|fill)",
+        "please ",
+    ),
+    # one modal for obligation: "is to be / has to be / needs to be / ought to be placed" -> "must be placed"
+    (r"\b(?:is|are|has|have|needs?|ought)\s+to\s+be\b", "must be"),
+    (r"\b(?:is|are)\s+not\s+to\s+be\b", "must not be"),
+    # "must stay / remain untouched", "is to be left untouched": not touched
+    (r"\b(?:must\s+|should\s+|shall\s+|will\s+)?(?:stay|remain|be\s+left|be\s+kept)\s+untouched\b", "must not be touched"),
+    (r"\bone\s+after\s+one\b", "one after another"),
+    (r"^\s*(?:steps|procedure|instructions|plan|to\s+do)\s*:\s*", " "),
+    # a reason clause: read as a clause of the instruction ("because regions F, G and H must stay clear, ...")
+    (r"^\s*(?:because|since)\s+", " "),
+    (r"\s*,\s*(?:because|since)\s+", ", and "),
+    (r"\s*,\s*so\s+(?!that\b|as\b|long\b|far\b|on\b)", ", "),
+    (r"\s*,?\s*(?:since|because|as)\s+(?:the|their)\s+order\s+does\s+not\s+matter\b", " in any order"),
     # a rule announced: "the only ordering rule is that ...", "be careful about one thing:"
     (
         r"\b(?:the|one|an?|another)\s+(?:only\s+)?(?:other\s+)?(?:ordering\s+|order\s+)?"
@@ -185,7 +209,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
         r"occupy\s+(?=(?:the\s+)?(?:(?:goal|target)\s+)?regions?\b)",
         r"\1go to ",
     ),
-    (r"\b(?:simply|merely|just)\s+(?=(?:needs?|ha(?:s|ve))\s+to\b)", ""),  # "they simply need to be moved"
+    (r"\b(?:simply|merely|just|only)\s+(?=(?:needs?|ha(?:s|ve))\s+to\b)|\b(?:simply|merely|just)\s+(?=must\b)", ""),  # "they simply need to be moved"
     # a topic and its pronoun: "as for the red and blue blocks, they ..." -> "the red and blue blocks ..."
     (r"^\s*as\s+(?:for|to|regards)\s+([a-z ]+?)\s*,\s*(?:they|it)\b", r"\1"),
     # "on region I first and on region G thereafter", "to region I and, after that, to region G"
@@ -280,18 +304,30 @@ REWRITES += tuple(
 TYPO_WORDS = (
     "block blocks region regions opposite place placed transfer before after yellow pillar pillars object "
     "objects separately another empty touch touched exchange position positions should until during period "
-    "please first other across"
+    "please first other across three placement separately touching picked finish finished after"
 ).split()
-REAL_WORDS = frozenset("pace paced touche fist firs pease pleas".split())
+REAL_WORDS = frozenset(
+    "pace paced touche fist firs pease pleas there thee tree piked finnish blacks placid daring packed pecked "
+    "pocked".split()
+)
+VOWELS = "aeiou"
+
+
+# short words, too short for the table's rules, in their commonest misspellings
+SHORT_TYPOS = {"thsi": "this", "tihs": "this", "teh": "the", "hte": "the", "adn": "and", "nad": "and", "taht": "that"}
 
 
 def typo_table() -> dict[str, str]:
-    """misspelling -> word, for the words of `TYPO_WORDS` (a misspelling that two words share is left out)."""
+    """misspelling -> word, for the words of `TYPO_WORDS` (a misspelling that two words share is left out):
+    a transposed, dropped or doubled letter (not the first), and in a word of six letters or more one vowel
+    for another."""
     seen: dict[str, set[str]] = {}
     for word in (w for w in TYPO_WORDS if len(w) >= 5):
         forms = {word[:i] + word[i + 1] + word[i] + word[i + 2 :] for i in range(1, len(word) - 1)}
         forms |= {word[:i] + word[i + 1 :] for i in range(1, len(word))}
         forms |= {word[:i] + word[i] + word[i:] for i in range(1, len(word))}
+        if len(word) >= 6:  # one vowel written for another: "seperately", "pleese"
+            forms |= {word[:i] + v + word[i + 1 :] for i in range(1, len(word)) if word[i] in VOWELS for v in VOWELS}
         for form in forms - set(TYPO_WORDS) - REAL_WORDS:
             seen.setdefault(form, set()).add(word)
-    return {form: next(iter(words)) for form, words in seen.items() if len(words) == 1}
+    return {form: next(iter(words)) for form, words in seen.items() if len(words) == 1} | SHORT_TYPOS
