@@ -177,6 +177,14 @@ def _read_inverse(m: Marked, goal: GoalMaker, every: list[str], mods: str) -> No
         rf"(?:one\s+)?(?:of\s+)?P(\d+)(?P<b>){mods}",
         lambda x: _fill(m, x, goal, every),
     )
+    # "put one of the three blocks in each of regions H, I and J": those blocks, one per region
+    m.sub(
+        rf"\b{VERB}\s+(?:one|a\s+single\s+one)\s+of\s+B(?P<b>\d+)\s+(?:in|on|into|onto|to)\s+(?:each|every)\s+(?:one\s+)?"
+        rf"(?:of\s+)?P(?P<p>\d+){mods}",
+        lambda x: _one_per_region(
+            goal, m.places[int(x.group("p"))], blocks_of(m, x.group("b")), x.group(0).strip(), x.group(3), False
+        ),
+    )
     # the inverse syntax "fill regions H, I and J with the three blocks": as many places as blocks
     m.sub(rf"\b(?:fill|occupy|populate|load)\s+P(\d+)\s+with\s+B(\d+){mods}", lambda x: _fill(m, x, goal))
     m.sub(
@@ -247,19 +255,19 @@ def _read_sources(m: Marked, scene: Scene) -> None:
     m.sub(r"\bB(\d+)\s+(?:away\s+)?from\s+P(\d+)", check)
 
 
-def _fill(
-    m: Marked,
-    x: re.Match[str],
-    goal: GoalMaker,
-    every: list[str] | None = None,
-) -> str:
-    place, blocks = m.places[int(x.group(1))], every or blocks_of(m, x.group(2))
-    in_turn = re.search(r"one\s+after|one\s+by|one\s+at|in\s+turn", x.group(3)) is not None
-    if in_turn and every is None and place.kind == "regions":  # "region I receives the blocks one by one"
-        return goal(blocks, place, x.group(0).strip(), x.group(3))
+def _fill(m: Marked, x: re.Match[str], goal: GoalMaker, every: list[str] | None = None) -> str:
+    """Groups 1, 2, 3 of `x`: the place, the blocks (else `every` block), the modifiers."""
+    blocks = every or blocks_of(m, x.group(2))
+    return _one_per_region(goal, m.places[int(x.group(1))], blocks, x.group(0).strip(), x.group(3), every is None)
+
+
+def _one_per_region(goal: GoalMaker, place: Place, blocks: list[str], text: str, mods: str, in_turn_ok: bool) -> str:
+    in_turn = re.search(r"one\s+after|one\s+by|one\s+at|in\s+turn", mods) is not None
+    if in_turn and in_turn_ok and place.kind == "regions":  # "region I receives the blocks one by one"
+        return goal(blocks, place, text, mods)
     if place.kind != "regions" or len(set(place.regions)) != len(blocks):
-        raise HTTError(f"'{x.group(0).strip()}': fill needs as many named regions as blocks")
-    return goal(blocks, place, x.group(0).strip(), x.group(3))
+        raise HTTError(f"'{text}': fill needs as many named regions as blocks")
+    return goal(blocks, place, text, mods)
 
 
 def _markers(m: Marked, clauses: list[Clause]) -> None:

@@ -164,13 +164,49 @@ def mark(sentence: str, scene: Scene, before: Marked | None = None) -> Marked:
     m = Marked(normalise(sentence))
     _mark_one_per_region(m)
     _mark_arms(m)
+    # "do not put anything on them": after a preposition of place, a pronoun names places (a cell holds
+    # one block, so nothing goes on a block); resolved once the places are marked
+    m.sub(r"\b(on|onto|in|into)\s+(each\s+of\s+)?(?:them|it)\b", r"\1 \2 PLACEREF")
     _mark_blocks(m, scene, previous.last_one)
     _join_particles(m)
     _mark_places(m, scene, previous.last_regions)
+    _mark_place_pronouns(m, previous.last_regions)
+    _mark_capacity(m)
     named = [p.regions for p in m.places if p.kind == "regions"]
     m.last_regions = named[-1] if named else ()
     _mark_connectives(m)
     return m
+
+
+def _mark_place_pronouns(m: Marked, named_before: tuple[str, ...]) -> None:
+    """'them' after 'on': the last place named before it in the sentence, else the last regions the
+    sentence before named; with neither it stays 'them' (unread, so refused)."""
+
+    def resolve(match: re.Match[str]) -> str:
+        before = re.findall(r"\bP(\d+)\b", m.text[: match.start()])
+        if before:
+            return _new_place(m, m.places[int(before[-1])])
+        if named_before:
+            return _new_place(m, Place("regions", named_before, text="them"))
+        return " them "
+
+    m.sub(r"\bPLACEREF\b", resolve)
+
+
+def _mark_capacity(m: Marked) -> None:
+    """'regions H, I and J can each hold only one block': the world's own rule (a cell holds one block),
+    said of named places (a pronoun after it, '..., so put one block in each of them', was resolved
+    before)."""
+
+    def note(match: re.Match[str]) -> str:
+        m.notes.append("one block per region (the world's rule: a cell holds one block)")
+        return " "
+
+    m.sub(
+        rf"\bP\d+\s+(?:(?:can|may|will|could)\s+)?(?:each\s+)?(?:only\s+)?(?:hold|take|fit|contain|accept)s?\s+"
+        rf"(?:only\s+|just\s+|at\s+most\s+)?(?:one|a\s+single|1)\s+{NOUN}(?:\s+(?:each|apiece))?\b",
+        note,
+    )
 
 
 def _join_particles(m: Marked) -> None:
@@ -324,6 +360,10 @@ def _mark_blocks(m: Marked, scene: Scene, previous: str) -> None:
     # "a block may not be placed ...": a generic block in a prohibition is every block
     negation = r"(?=\s+(?:may|must|can|should|shall|is)\s*(?:not|never)|\s+(?:cannot|never|mustn))"
     m.sub(rf"\b(?:a|an|any)\s+{NOUN}\b{negation}", lambda match: _new_block(m, scene.blocks, match.group(0)))
+    # "the object can not be put on ...": generic too, when no single block was named before it
+    if not previous and not any(len(m.blocks[int(k)]) == 1 for k in re.findall(r"\bB(\d+)\b", m.text)):
+        generic = rf"\b(?:the|each|every)\s+(?:block|object|item|piece|pillar|cube)\b{negation}"
+        m.sub(generic, lambda match: _new_block(m, scene.blocks, match.group(0)))
     # "never place an object on ...", "do not put anything on ...": a generic object after a negated verb
     m.sub(
         rf"\b({NEG}\s+(?:{VERB}|drop|leave|lay)|placing|putting|dropping|setting)\s+(?:(?:a|an|any)\s+{NOUN}|any\s+{NOUNS}|anything)\b",
