@@ -116,7 +116,7 @@ def goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
     _read_exchanges(m, exchange)
     _read_sources(m, scene)
     m.sub(
-        rf"(?:\bwhile\s+)?\b(?:{VERB}|{GERUND})\s+B(\d+){mods}(?:\s+first)?\s*,?\s+"
+        rf"(?:\bwhile\s+(?:you\s+|we\s+)?)?\b(?:{VERB}|{GERUND})\s+B(\d+){mods}(?:\s+first)?\s*,?\s+"
         rf"(?:to\s+(?:be\s+)?(?:{DONE}\s+)?|be\s+(?:{DONE}\s+)?|end\s+up\s+)?"
         rf"(?:back\s+)?{PREP}\s+P(\d+){mods}",
         lambda x: matched(x, 1),

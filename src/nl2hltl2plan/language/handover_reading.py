@@ -78,7 +78,8 @@ def is_handover(world: object) -> TypeGuard[World]:
 
 
 def translate_handover(instruction: str, world: World) -> LanguageResult:
-    """Instruction -> LanguageResult on a handover world (see the module docstring)."""
+    """Instruction -> LanguageResult on a handover world (see the module docstring); a line break in it ends
+    a step as a full stop does."""
     scene = Scene.of(world)
     clauses: list[Clause] = []
     orders: list[tuple[str, str]] = []
@@ -86,7 +87,8 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
     notes: list[str] = []
     pending: list[Prohibition] = []  # prohibitions stated before any goal
     previous: Marked | None = None  # the sentence before ("it", "these regions" in the next one)
-    for sentence in _sentences(instruction):
+    steps, instruction = _sentences(instruction), " ".join(instruction.split())
+    for sentence in steps:
         m = mark(sentence, scene, previous)
         previous = m
         notes += m.notes
@@ -129,10 +131,14 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
 
 
 def _sentences(instruction: str) -> list[str]:
-    """Split at '.', ';', '!' and '?', but not in 'i.e.' nor after a step's number ('1. Put ...')."""
-    text = re.sub(r"(^|[.;!?]\s+)(\d)\.\s", r"\1\2) ", instruction)
-    text = re.sub(r"\b[iI]\.\s?[eE]\.", "that is", text)
-    return [s for s in re.split(r"[.;!?]+(?:\s|$)", text) if s.strip()]
+    """Split at line breaks (a list of steps or bullets), '.', ';', '!' and '?', but not in 'i.e.' nor after a
+    step's number ('1. Put ...'); a bullet ('-', '*', '•') starting a line or sentence is dropped."""
+    out: list[str] = []
+    for line in instruction.splitlines():
+        text = re.sub(r"(^\s*|[.;!?]\s+)(\d)\.\s", r"\1\2) ", line)
+        text = re.sub(r"\b[iI]\.\s?[eE]\.", "that is", text)
+        out += [re.sub(r"^\s*[-*•·]\s+", "", s) for s in re.split(r"[.;!?]+(?:\s|$)", text)]
+    return [s for s in out if s.strip()]
 
 
 def _without_restated(clauses: list[Clause]) -> list[Clause]:

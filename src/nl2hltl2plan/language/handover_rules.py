@@ -46,7 +46,7 @@ def read_orders(m: Marked) -> list[tuple[str, str]]:
     has been placed, Y may be placed', 'do not place Y until X has been placed': X's goal before Y's."""
     out: list[tuple[str, str]] = []
     tail = rf"(?:\s+(?:is|has\s+been|gets|was|have\s+been|are)\s+{DONE}|\s+does)?"
-    done = rf"(?:(?:{DONE}|comes?|lands?|arrives?|goes|gets)\s+)?(?:down\s+|there\s+)?(?:first\s*,?\s*)?"
+    done = rf"(?:(?:{DONE}|comes?|lands?|arrives?|goes|gets?)\s+)?(?:down\s+|there\s+)?(?:first\s*,?\s*)?"
 
     def add(match: re.Match[str], flip: bool) -> str:
         a, b = one_block(m, match.group(1), "an order"), one_block(m, match.group(2), "an order")
@@ -133,6 +133,7 @@ def read_leaders(m: Marked) -> list[str]:
         out.append(names[0])
         return " "
 
+    m.sub(rf"\b(?:place|put|move|do|handle|take)\s+B(\d+)\s+(?:down\s+)?first\b(?=\s*(?:$|,|\band\b|\)))", add)
     m.sub(
         rf"(?:\b(?:with|placing|putting|moving|and)\s+)?\bB(\d+)\s+(?:down\s+)?{MODAL}(?:(?:placed|put|moved|set)\s+|goe?s?\s+|"
         r"comes?\s+|going\s+|coming\s+)?first\b(?=\s*(?:$|,|\band\b|\)))",
@@ -155,9 +156,9 @@ def read_touch_guards(m: Marked) -> list[tuple[str, str]]:
     end = r"(?=\s*(?:$|,|\band\b|\)))"
     # Y's touch, active ("an arm touched Y"), passive ("Y has been touched") or elliptic ("... before Y")
     other = (
-        rf"(?:(?:A\s+)?(?:has\s+|have\s+|had\s+)?(?:already\s+)?(?:{TOUCHED}|{TOUCHING})\s+B(?P<y1>\d+)|B(?P<y2>\d+)\s+"
+        rf"(?:(?:A\s+)?(?:has\s+|have\s+|had\s+)?(?:already\s+)?(?:{TOUCHED}|{TOUCHING}|{TOUCH})\s+B(?P<y1>\d+)|B(?P<y2>\d+)\s+"
         rf"(?:(?:has|have|had)\s+(?:already\s+)?been|is|was|gets|got|being)\s+(?:already\s+)?{TOUCHED}(?:\s+by\s+A)?|"
-        rf"B(?P<y3>\d+){end})"
+        rf"B(?P<y3>\d+){end})(?:\s+first{end})?"
     )
     may = _MAY
     no_touch = (
@@ -166,7 +167,7 @@ def read_touch_guards(m: Marked) -> list[tuple[str, str]]:
         r"\s+B(?P<x>\d+)"
     )
     not_touched = (
-        rf"\bB(?P<x>\d+)\s+(?:(?:is|are|must|may|can|should|shall|will)\s+)?{NEG}\s+(?:ever\s+)?(?:to\s+)?be\s+"
+        rf"\bB(?P<x>\d+)\s+(?:(?:is|are|must|may|can|should|shall|will)\s+)?{NEG}\s+(?:ever\s+)?(?:(?:to\s+)?be\s+)?"
         rf"{TOUCHED}(?:\s+by\s+A)?"
     )
     until = r"(?:until|before|unless)"
@@ -248,6 +249,7 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
         add,
     )
     m.sub(rf"\bnothing\s+(?:{may}\s+)?(?:be\s+|is\s+|gets\s+)?{DROP}{down}", add)
+    m.sub(rf"\b(?:put|place|drop|set|leave|lay)\s+nothing{down}", add)  # "put nothing on F, G or H"
     # "placing any object on R is not allowed"
     m.sub(
         rf"\b(?:placing|putting|dropping|setting)\s+B(?P<b>\d+){down}\s+(?:is|are)\s+(?:not\s+(?:allowed|permitted)|"
@@ -259,7 +261,7 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
     m.sub(rf"\bB(?P<b>\d+)\s+(?:is|are)\s+{banned}\s+(?:from\s+)?{PREP}\s+P(?P<p>\d+){PERIOD}", add)
     m.sub(rf"\bno\s+B(?P<b>\d+)\s+(?:is|are)\s+(?:allowed|permitted)\s+{PREP}\s+P(?P<p>\d+){PERIOD}", add)
     # "region F, G and H can not be placed any object (during this period)"
-    m.sub(rf"\bP(?P<p>\d+)\s+(?:{may}\s+)?{NEG}\s+be\s+{DROP}\s+(?:with\s+)?B(?P<b>\d+){PERIOD}", add)
+    m.sub(rf"\bP(?P<p>\d+)\s+(?:{may}\s+)?{NEG}\s+(?:be\s+)?{DROP}\s+(?:with\s+)?B(?P<b>\d+){PERIOD}", add)
     # "regions F, G and H must stay empty (meanwhile)", "keep F, G and H free": nothing is put there
     must = r"(?:(?:must|should|will|shall|has\s+to|have\s+to|needs?\s+to)\s+)?"
     stay = rf"{must}(?:stay|remain|be\s+kept|be\s+left)"

@@ -9,7 +9,7 @@ VERB = (
 )
 PREP = r"(?:to|into|onto|on|in|at|towards?|over\s+to|in\s+to|on\s+to|among|across|over)"
 MOD = (
-    r"(?:separately|individually|one\s+after\s+another|one\s+by\s+one|one\s+at\s+a\s+time|in\s+turn|each|"
+    r"(?:separately|separate|individually|one\s+after\s+another|one\s+by\s+one|one\s+at\s+a\s+time|in\s+turn|each|"
     r"all|at\s+any\s+time|any\s+time|whenever|in\s+any\s+order|as\s+well|too|across|over)"
 )
 GERUND = (
@@ -36,7 +36,10 @@ TOUCHED = (
     r"(?:touched|picked\s+up|picked|grasped|grabbed|handled|moved|lifted|touches|picks\s+up|grabs|moves)"
 )
 TOUCHING = r"(?:touching|picking\s+up|picking|grabbing|grasping|handling|lifting|moving)"
-DROP = r"(?:placed|put|dropped|set|left|laid)(?:\s+down)?"
+DROP = (
+    r"(?:placed|put|dropped|set|left|laid|deposited|positioned|moved|brought|carried|transferred|stored|"
+    r"place|drop)(?:\s+down)?"  # "place": a non-native passive ("region F can not place any object")
+)
 # "during this period": a prohibition's scope, the goals of its sentence (else all goals so far)
 PERIOD_WORDS = (
     r"(?:(?:during|in)\s+(?:this|that|the\s+same)\s+(?:whole\s+|entire\s+)?(?:period|time)|in\s+the\s+meantime|meanwhile|"
@@ -52,7 +55,10 @@ PERIOD_WORDS = (
 )
 PERIOD = rf"(?:\s*,?\s*(?:{PERIOD_WORDS}|at\s+any\s+time|ever|at\s+all))?"
 EMPTY = r"(?:empty|free|clear|unoccupied|vacant)"
-DONE_STATE = r"(?:done|finished|complete|completed|over)"
+DONE_STATE = (
+    r"(?:done|finished|complete|completed|over)"
+    r"(?:\s+with\s+(?:all\s+(?:of\s+)?)?(?:this|these|that|it|everything|them|the\s+above))?"  # "done with that"
+)
 AFTER_ALL = (
     r"(?:(?:once|when|after)\s+(?:all\s+(?:of\s+)?)?(?:this|these|that|it|everything(?:\s+else)?|the\s+above)(?:\s+all)?\s+"
     rf"(?:is|are|has\s+been|have\s+been)\s+(?:all\s+)?{DONE_STATE}|(?:once|when)\s+{DONE_STATE}|"
@@ -146,6 +152,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\s*,?\s*\bon\s+the\s+other\s+hand\b\s*,?", " "),
     (r"^\s*as\s+(?:for|to|regards)\s+(?:the\s+)?(?:order|ordering|sequence)\s*,", " "),
     (r"\b(?:once|when|after)\s+it\s+(?:is|gets|has\s+been\s+placed)\s+there\s*,", " then "),
+    (r"\b(?<!to\s)(?<!on\s)(?<!in\s)anywhere\s+(?:empty|free)\b", "to any empty region"),
     (r"\banywhere\s+(?:empty|free)\b", "any empty region"),
     # "use regions G, H and I for the three blocks": put them there
     (
@@ -190,6 +197,10 @@ REWRITES: tuple[tuple[str, str], ...] = (
     # "must stay / remain untouched", "is to be left untouched": not touched
     (r"\b(?:must\s+|should\s+|shall\s+|will\s+)?(?:stay|remain|be\s+left|be\s+kept)\s+untouched\b", "must not be touched"),
     (r"\bone\s+after\s+one\b", "one after another"),
+    (r"\b(that|it|there|what|here)\s+s\b", r"\1 is"),  # "a region that's not a target"
+    (r"(?<=,)\s*than\s+(?=(?:place|put|move|transfer|bring|take)\b)", " then "),  # "..., than place ...": a typo
+    (r"^\s*(?:with\s+that|that\s+said|having\s+said\s+that)\s*,", " "),
+    (r"\band\s+(?:because|since)\s+", "and "),
     (r"^\s*(?:steps|procedure|instructions|plan|to\s+do)\s*:\s*", " "),
     # a reason clause: read as a clause of the instruction ("because regions F, G and H must stay clear, ...")
     (r"^\s*(?:because|since)\s+", " "),
@@ -258,6 +269,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
     # a numbered step: the first, or one after the step before
     (r"^\s*(?:step\s+(?:1|one)\s*:?|1\s*[):]|\(\s*1\s*\))\s*", "first "),
     (r"^\s*(?:step\s+(?:[2-9]|two|three|four|five)\s*:?|[2-9]\s*[):]|\(\s*[2-9]\s*\))\s*", "then "),
+    (r"^\s*then\s*,?\s*then\b", "then"),  # "2) Then move it ...": the step's "then" said twice
     (r"\b(?:remember|be\s+sure|make\s+sure|do\s+not\s+forget|note|keep\s+in\s+mind)\s+(?:to|that)\b", " "),
     (r"\bprecedes?\b", "comes before"),
     (r"\bfollows?\b", "comes after"),
@@ -304,7 +316,7 @@ REWRITES += tuple(
 TYPO_WORDS = (
     "block blocks region regions opposite place placed transfer before after yellow pillar pillars object "
     "objects separately another empty touch touched exchange position positions should until during period "
-    "please first other across three placement separately touching picked finish finished after"
+    "please first other across three placement separately touching picked finish finished after target targets"
 ).split()
 REAL_WORDS = frozenset(
     "pace paced touche fist firs pease pleas there thee tree piked finnish blacks placid daring packed pecked "
