@@ -169,6 +169,7 @@ def mark(sentence: str, scene: Scene, before: Marked | None = None) -> Marked:
     m.sub(r"\b(on|onto|in|into)\s+(each\s+of\s+)?(?:them|it)\b", r"\1 \2 PLACEREF")
     _mark_blocks(m, scene, previous.last_one)
     _join_particles(m)
+    m.sub(rf"\b((?:{VERB}|{GERUND})\s+B\d+)\s+there\b", r"\1 to PLACEREF")  # "put the three blocks there"
     _mark_places(m, scene, previous.last_regions)
     _mark_place_pronouns(m, previous.last_regions)
     _mark_capacity(m)
@@ -179,18 +180,28 @@ def mark(sentence: str, scene: Scene, before: Marked | None = None) -> Marked:
 
 
 def _mark_place_pronouns(m: Marked, named_before: tuple[str, ...]) -> None:
-    """'them' after 'on': the last place named before it in the sentence, else the last regions the
-    sentence before named; with neither it stays 'them' (unread, so refused)."""
+    """'them' after 'on', 'there' after a moved block: the last place named before it in the sentence, else
+    the last regions the sentence before named; with neither it stays 'them' (unread, so refused). A place
+    named as a heading ('regions H, I and J: put the blocks there') or defined ('regions G, H and I are the
+    targets: place the blocks in them') is then read where the pronoun stands."""
+    if "PLACEREF" not in m.text:
+        return
+    m.sub(rf"\bP(\d+)\s+(?:is|are)\s+(?:the|our|your)\s+(?:targets?|goals?|destinations?|{TARGET}\s+{PLACE_NOUN})\s*:", r"P\1 :")
+    headings: list[str] = []
 
     def resolve(match: re.Match[str]) -> str:
         before = re.findall(r"\bP(\d+)\b", m.text[: match.start()])
         if before:
+            if re.search(rf"\bP{before[-1]}\s*:", m.text):
+                headings.append(before[-1])
             return _new_place(m, m.places[int(before[-1])])
         if named_before:
             return _new_place(m, Place("regions", named_before, text="them"))
         return " them "
 
     m.sub(r"\bPLACEREF\b", resolve)
+    for k in headings:
+        m.sub(rf"\bP{k}\s*:", " ")
 
 
 def _mark_capacity(m: Marked) -> None:
@@ -382,6 +393,16 @@ def _mark_blocks(m: Marked, scene: Scene, previous: str) -> None:
     )
     m.sub(each, all_blocks)
     m.sub(group, all_blocks)
+
+    def restated(match: re.Match[str]) -> str:  # "the blocks, all three of them,": the same blocks, counted
+        before = re.findall(r"\bB(\d+)\b", m.text[: match.start()])
+        if not before or m.blocks[int(before[-1])] != scene.blocks:
+            return match.group(0)
+        all_blocks(match)
+        m.blocks.pop(), m.block_text.pop()
+        return " "
+
+    m.sub(r"\s*,?\s*\ball\s+(two|three|four|\d+)\s+of\s+them\b", restated)
     _mark_pronouns(m, previous)
 
 

@@ -237,6 +237,7 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
         rf"\b(?:no\s+B(?P<b>\d+)|nothing)\s+(?:{may}\s+)?(?:goes|go)\s+(?:on|in|onto|into|to)\s+P(?P<p>\d+){PERIOD}",
         add,
     )
+    m.sub(rf"\b(?:put|place|drop|set|leave|lay)\s+nothing{down}", add)  # "put nothing on F, G or H"
     # verbless: "no object on any other region", "nothing on F, G or H in the meantime"
     m.sub(rf"\bno\s+B(?P<b>\d+)\s+(?:on|in|onto|into)\s+P(?P<p>\d+){PERIOD}", add)
     m.sub(rf"\bnothing\s+(?:on|in|onto|into)\s+P(?P<p>\d+){PERIOD}", add)
@@ -249,7 +250,6 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
         add,
     )
     m.sub(rf"\bnothing\s+(?:{may}\s+)?(?:be\s+|is\s+|gets\s+)?{DROP}{down}", add)
-    m.sub(rf"\b(?:put|place|drop|set|leave|lay)\s+nothing{down}", add)  # "put nothing on F, G or H"
     # "placing any object on R is not allowed"
     m.sub(
         rf"\b(?:placing|putting|dropping|setting)\s+B(?P<b>\d+){down}\s+(?:is|are)\s+(?:not\s+(?:allowed|permitted)|"
