@@ -227,8 +227,16 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
     receive = rf"(?:receive|get|hold|take|contain)s?\s+{thing}"
     m.sub(rf"\bno\s+P(?P<p>\d+)\s+(?:{may}\s+)?{receive}\b{PERIOD}", add)
     m.sub(rf"\bP(?P<p>\d+)\s+(?:{may}\s+)?{NEG}\s+{receive}\b{PERIOD}", add)
-    # "regions F, G and H cannot have any object placed on them"
-    m.sub(rf"\bP(?P<p>\d+)\s+(?:{may}\s+)?{NEG}\s+(?:have|get)\s+{thing}\s+{DROP}(?:\s+(?:on|in|onto|into)\s+(?:them|it))?{PERIOD}", add)
+    # "regions F, G and H cannot have any object placed (on them)": "them" was read as those regions
+    def add_same(match: re.Match[str]) -> str:
+        again = match.group("q")
+        return add(match) if again is None or m.places[int(again)] == m.places[int(match.group("p"))] else match.group(0)
+
+    m.sub(
+        rf"\bP(?P<p>\d+)\s+(?:{may}\s+)?{NEG}\s+(?:have|get)\s+{thing}\s+{DROP}(?:\s+(?:on|in|onto|into)\s+P(?P<q>\d+))?"
+        rf"{PERIOD}",
+        add_same,
+    )
     # "regions F, G and H shall receive no object"
     receive_no = r"(?:receive|get|hold|take|contain)s?\s+no"
     m.sub(rf"\bP(?P<p>\d+)\s+(?:{may}\s+)?{receive_no}\s*B(?P<b>\d+){PERIOD}", add)
