@@ -1,7 +1,7 @@
 """First contact of the handover reader on rephrasings by style (issue 24: held-out rephrasings of the
 eight Table III instructions must give the written specs).
 
-    PYTHONPATH=src python scripts/bench_handover_styles.py [--batch dev|dev2|validation] [--file F] [--verbose]
+    PYTHONPATH=src python scripts/bench_handover_styles.py [--batch dev|dev2|dev3|validation] [--file F] [--verbose]
     (default F: tests/experiments/handover_styles_session10.json)
 
 Each sentence of the batch is read on instance 0 of its task (`translate`, offline) and judged against the
@@ -39,7 +39,7 @@ def verdict(task_id: int, text: str) -> tuple[str, str]:
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--batch", default="dev", choices=["dev", "dev2", "validation"])
+    parser.add_argument("--batch", default="dev", choices=["dev", "dev2", "dev3", "validation"])
     parser.add_argument("--file", type=Path, default=DEFAULT)
     parser.add_argument("--verbose", action="store_true")
     args = parser.parse_args()
