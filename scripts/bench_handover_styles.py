@@ -1,7 +1,8 @@
 """First contact of the handover reader on rephrasings by style (issue 24: held-out rephrasings of the
 eight Table III instructions must give the written specs).
 
-    PYTHONPATH=src python scripts/bench_handover_styles.py [--batch dev|dev2|dev3|validation] [--file F] [--verbose]
+    PYTHONPATH=src python scripts/bench_handover_styles.py [--batch dev|dev2|dev3|validation] [--verbose]
+                                                           [--file F]
     (default F: tests/experiments/handover_styles_session10.json)
 
 Each sentence of the batch is read on instance 0 of its task (`translate`, offline) and judged against the
@@ -57,7 +58,8 @@ def main() -> None:
             if kind != "same":
                 misses.append(f"- {kind} ({style}, task {task}): {text!r}\n  {why[:300]}")
         total += counts
-        print(f"| {style} | {sum(counts.values())} | {counts['same']} | {counts['refused']} | {counts['other']} |")
+        row = [sum(counts.values()), counts["same"], counts["refused"], counts["other"]]
+        print(f"| {style} | " + " | ".join(map(str, row)) + " |")
     print(f"| all | {sum(total.values())} | {total['same']} | {total['refused']} | {total['other']} |")
     if args.verbose:
         print("\n" + "\n".join(misses))

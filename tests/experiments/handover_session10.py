@@ -9,112 +9,143 @@ from pathlib import Path
 STYLES = json.loads((Path(__file__).parent / "handover_styles_session10.json").read_text())
 
 # Development sentences still refused on purpose (each by name): statements of the scene or of a purpose
-# that name a place or a relation the reader does not model, and an "after" that may mean "then".
+# that name a place or a relation the reader does not model, an "after" that may mean "then", a block whose
+# goal is left to an ellipsis, a list of fragments without a verb or preposition, and "stack".
 STILL_REFUSED = {
     "To clear this side of the table, move all three blocks to the opposite side; the red block has to be "
     "placed before the blue block.",
-    "The red block is holding the blue one in place, so no arm may touch the blue block until the red block "
-    "has been touched. Move all three blocks to the opposite regions, and once that is done, put the yellow "
-    "block back on region G, where the red block is now.",
+    "The red block is holding the blue one in place, so no arm may touch the blue block until the red "
+    "block has been touched. Move all three blocks to the opposite regions, and once that is done, put the "
+    "yellow block back on region G, where the red block is now.",
     "Region I is the drop point, so place the three blocks there one after another, red before blue; "
     "because regions F, G and H must stay clear meanwhile, put nothing on them.",
-    "The yellow block needs to pass through region I, so put it on region I first and then on region G. The "
-    "red and blue blocks can go to any empty region at any time, since their order does not matter.",
+    "The yellow block needs to pass through region I, so put it on region I first and then on region G. "
+    "The red and blue blocks can go to any empty region at any time, since their order does not matter.",
     "Please first put yellow block to region I, after put yellow block to region G, and the red and blue "
     "block move to any empty region any time.",
     "3 blocks, opposite side, red before blue.",
-    "We have three goal regions, H, I and J, and three blocks, so put the three blocks in regions H, I and J "
-    "with one block per region.",
-    "The pillars are in the way on the far side, so bring the three pillars to regions E, F and G, and don't "
-    "put any object on a region other than the targets.",
-    "Move the three blocks to the opposite regions. The blue block must stay untouched until the red block has "
-    "been touched, because the red one is picked up first. After all of that is done, put the yellow block "
-    "back on region G.",
-    "The red and blue blocks are in the wrong places, so exchange their positions, with the red block placed "
-    "before the blue block. Because the yellow block's timing doesn't matter, move it to the opposite side at "
-    "any time.",
-    "The yellow block goes to region I first and then on to region G; this is the only ordering. The red and "
-    "blue blocks go to any empty region at any time.",
+    "We have three goal regions, H, I and J, and three blocks, so put the three blocks in regions H, I and "
+    "J with one block per region.",
+    "The pillars are in the way on the far side, so bring the three pillars to regions E, F and G, and "
+    "don't put any object on a region other than the targets.",
+    "Move the three blocks to the opposite regions. The blue block must stay untouched until the red block "
+    "has been touched, because the red one is picked up first. After all of that is done, put the yellow "
+    "block back on region G.",
+    "The red and blue blocks are in the wrong places, so exchange their positions, with the red block "
+    "placed before the blue block. Because the yellow block's timing doesn't matter, move it to the "
+    "opposite side at any time.",
+    "The yellow block goes to region I first and then on to region G; this is the only ordering. The red "
+    "and blue blocks go to any empty region at any time.",
+    "The red block is to be moved to the opposite side before the blue block, and the yellow block is to "
+    "be moved there as well.",
+    "- three blocks\n- regions H, I and J\n- one block per region",
+    "stack nothing on F, G or H meanwhile; put the 3 blocks on I one after another, red before blue",
 }
 
 NEAR_MISSES_S10: dict[int, list[str]] = {
     1: [
-        "The agent shall transfer all three blocks to the opposite side, the blue block being placed prior to "
+        "ok so move all 3 blocks to the opposite side, blue one before the red one pls",
+        "The agent shall transfer all three blocks to the opposite side, the blue block being placed prior "
+        "to the red block.",
+        "The three blocks are to be moved to the opposite side, and the blue block is to be placed before "
         "the red block.",
-        "The three blocks are to be moved to the opposite side, and the blue block is to be placed before the "
-        "red block.",
         "Bring the blocks across to the opposite side, all two of them, and the red one has to get there "
         "before the blue one.",
-        "Bring the blocks across to the opposite side, all three of them, and the blue one has to get there "
-        "before the red one.",
-        "The blue block must be placed before the red block; with that, move all three blocks to the opposite "
-        "side.",
+        "Bring the blocks across to the opposite side, all three of them, and the blue one has to get "
+        "there before the red one.",
+        "The blue block must be placed before the red block; with that, move all three blocks to the "
+        "opposite side.",
     ],
     2: [
+        "Regions H and I are to receive the three blocks, one block each.",
         "Regions H, I and J can each hold only one block, so put one of the red and blue blocks in each of "
         "them.",
         "One object per region, regions H, I and J: put the red and blue blocks there.",
         "1) put the three blocks into regions H and I\n2) one block per region",
     ],
     3: [
-        "The pillars have to go back to the side of arms a and b, regions E, F and G. Because regions H and I "
-        "must stay clear, do not place any object on them.",
+        "move the pillars over to E, F and G and don't put stuff on region H",
+        "The pillars have to go back to the side of arms a and b, regions E, F and G. Because regions H "
+        "and I must stay clear, do not place any object on them.",
         "The pillars have to go to regions E, F and G. Do not place any object on them.",
-        "Move three pillar to region E, F, G which is at side of arm a and arm b. The object can not put on "
-        "region H.",
-        "Move the three pillars from H, I and J over to E, F and G, and don't drop anything on a region that's "
-        "a target.",
+        "Move three pillar to region E, F, G which is at side of arm a and arm b. The object can not put "
+        "on region H.",
+        "Move the three pillars from H, I and J over to E, F and G, and don't drop anything on a region "
+        "that's a target.",
     ],
     4: [
-        "The three blocks are to be moved to the opposite regions; the red block is not to be touched until "
-        "the blue block has been picked up. After that, the yellow block is to be put back on region G.",
-        "Until the blue block has been touched, the red block must stay untouched. Move the three blocks to "
-        "the opposite regions, and after all of that put the yellow block back on region G.",
+        "The three blocks are to be placed on the opposite regions, with the red block not being touched "
+        "until the blue block has been touched. The yellow block is then to be returned to region G once "
+        "all of this is done.",
+        "The three blocks are to be placed on the opposite regions, with the blue block not being touched "
+        "until the red block has been touched. The yellow block is then to be returned to region H once "
+        "all of this is done.",
+        "Move the three blocks to the opposite regions and then put the yellow block back on region H "
+        "after all of that. The blue block must not be touched before the red block is touched.",
+        "1. Transfer the three blocks to the opposite regions.\n2. Rule: no arm touches the red block "
+        "until the blue block has been touched.\n3. Once everything is done, return the yellow block to "
+        "region G.",
+        "move the blocks to the opposite regions, but don't touch red till blue's been touched. after all "
+        "that, yellow goes back on G",
+        "The three blocks are to be moved to the opposite regions; the red block is not to be touched "
+        "until the blue block has been picked up. After that, the yellow block is to be put back on region "
+        "G.",
+        "Until the blue block has been touched, the red block must stay untouched. Move the three blocks "
+        "to the opposite regions, and after all of that put the yellow block back on region G.",
         "Blocks to opposite regions. Don't touch blue before red. Then yellow back to H.",
-        "Transfer three blocks into the opposit regions. The robot arm can't tuch the blue block untill an arm "
-        "has touched the red block. After all of thsi, put the yelow block back to region H.",
+        "Transfer three blocks into the opposit regions. The robot arm can't tuch the blue block untill an "
+        "arm has touched the red block. After all of thsi, put the yelow block back to region H.",
         "Blocks -> opposite regions; red not touched before blue. Finally: yellow -> G.",
-        "Carry the three blocks over to the opposite regions, and don't pick up the red one until the blue one "
-        "has been picked up. Once you're done with that, put the yellow block back on G.",
+        "Carry the three blocks over to the opposite regions, and don't pick up the red one until the blue "
+        "one has been picked up. Once you're done with that, put the yellow block back on G.",
         "Please transfer three block to opposite region. Robot arm can not touch red block until robot arm "
         "touch blue block first. After all these, please put yellow block back in region G.",
     ],
     5: [
-        "Step 1: swap the red block and the blue block, the red one going first. Step 2: move the yellow block "
-        "to the opposite side.",
-        "Because the blue block must be placed first, swap the red block and the blue block with blue going "
-        "before red. The yellow block only has to reach the opposite side, at any time.",
+        "The red and blue blocks are to have their positions exchanged, the blue one being placed before "
+        "the red one; the yellow block is to be moved to the opposite side at any time.",
+        "Goals:\n- swap the red and blue blocks (blue is placed first)\n- yellow block to the opposite "
+        "side, at any time",
+        "Step 1: swap the red block and the blue block, the red one going first. Step 2: move the yellow "
+        "block to the opposite side.",
+        "Because the blue block must be placed first, swap the red block and the blue block with blue "
+        "going before red. The yellow block only has to reach the opposite side, at any time.",
     ],
     6: [
-        "The red block should be palced before the blue block. Plaese place the three objects seperately to "
-        "region G, H and J.",
-        "Regions G, H and J are the targets: place the three blocks separately in them, and because red must "
-        "come first, place the red block before the blue block.",
-        "Red block should be place before blue block, please place three object separate into region G, H, J.",
+        "1) blue before red\n2) the three blocks go separately into regions G, H and I",
+        "The red block should be palced before the blue block. Plaese place the three objects seperately "
+        "to region G, H and J.",
+        "Regions G, H and J are the targets: place the three blocks separately in them, and because red "
+        "must come first, place the red block before the blue block.",
+        "Red block should be place before blue block, please place three object separate into region G, H, "
+        "J.",
     ],
     7: [
-        "During this whole task, regions F and G must stay empty. Put the three blocks on region I one after "
-        "another, red before blue.",
-        "The three blocks shall be placed on region I in succession, the red block preceding the blue block. "
-        "For the duration of this task, no object shall be placed on regions F, G or J.",
+        "During this whole task, regions F and G must stay empty. Put the three blocks on region I one "
+        "after another, red before blue.",
+        "The three blocks shall be placed on region I in succession, the red block preceding the blue "
+        "block. For the duration of this task, no object shall be placed on regions F, G or J.",
         "Put the three blocks on region I one at a time, red before blue. While you do this, don't put "
         "anything on regions F or G.",
         "Blocks onto I one by one, red before blue. F, G empty meanwhile.",
         "Please put the three objects to region I one after another. During this period, regions F and G "
         "can't have any object placed on them. The red block should be placed before the blue block.",
-        "Since F and G have to stay free, put nothing on regions F and G while you place the three blocks one "
-        "after another on region I, the red block before the blue block.",
+        "Since F and G have to stay free, put nothing on regions F and G while you place the three blocks "
+        "one after another on region I, the red block before the blue block.",
         "Red block should be placed before blue block. Please place three object one after another into "
         "region I, during this period region F, G can not place any object.",
     ],
     8: [
-        "1. Put the yellow block on region I. 2. Put the yellow block on region G. 3. Move the red and blue "
-        "blocks to any empty region.",
+        "The yellow block is first to be placed on region G and then on region I; the red and blue blocks "
+        "are to be placed on any empty region at any time.",
+        "yellow goes to G then I; red and blue can go anywhere empty whenever",
+        "1. Put the yellow block on region I. 2. Put the yellow block on region G. 3. Move the red and "
+        "blue blocks to any empty region.",
         "Yellow: G, then I. Red, blue: any empty region, any time.",
         "Yellow: I, then G. Red: any empty region, any time.",
-        "1) Move the yellow block to region I.\n2) Then move it to region G.\n3) Move the red and blue blocks "
-        "to any empty region.",
-        "Please first place the yellow block to region I, than place the yellow block to region H, and move "
-        "red and blue blocks to any empty region at any time.",
+        "1) Move the yellow block to region I.\n2) Then move it to region G.\n3) Move the red and blue "
+        "blocks to any empty region.",
+        "Please first place the yellow block to region I, than place the yellow block to region H, and "
+        "move red and blue blocks to any empty region at any time.",
     ],
 }

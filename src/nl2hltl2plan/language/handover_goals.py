@@ -113,6 +113,11 @@ def goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
         place, text = m.places[int(x.group(k + 2))], x.group(0).strip()
         return goal(blocks_of(m, x.group(k)), place, text, x.group(k + 1) + x.group(k + 3))
 
+    # "the yellow block must then be returned to G": the step word read at the clause's head
+    m.sub(
+        r"\b(B\d+\s+(?:must|should|shall|will|can|has\s+to|needs\s+to)\s+)(then|next|afterwards|finally|lastly)\s+",
+        r"\2 \1",
+    )
     _read_exchanges(m, exchange)
     _read_sources(m, scene)
     m.sub(
@@ -182,7 +187,7 @@ def _read_inverse(m: Marked, goal: GoalMaker, every: list[str], mods: str) -> No
         rf"\b{VERB}\s+(?:one|a\s+single\s+one)\s+of\s+B(?P<b>\d+)\s+(?:in|on|into|onto|to)\s+(?:each|every)\s+(?:one\s+)?"
         rf"(?:of\s+)?P(?P<p>\d+){mods}",
         lambda x: _one_per_region(
-            goal, m.places[int(x.group("p"))], blocks_of(m, x.group("b")), x.group(0).strip(), x.group(3), False
+            goal, m.places[int(x.group("p"))], blocks_of(m, x.group("b")), x.group(0), x.group(3), False
         ),
     )
     # the inverse syntax "fill regions H, I and J with the three blocks": as many places as blocks
@@ -230,6 +235,11 @@ def _read_exchanges(m: Marked, exchange: Callable[..., str]) -> None:
         rf"\b(?:the\s+)?(?:positions?|places?|locations?)\s+of\s+B(\d+)\s+{MODAL}(?:swapped|exchanged|switched|interchanged)",
         exchange,
     )
+    m.sub(  # "the red and blue blocks are to have their positions exchanged"
+        rf"\bB(\d+)\s+{MODAL}(?:have|get)\s+their\s+(?:positions|places|locations|spots)\s+"
+        r"(?:swapped|exchanged|switched|interchanged)",
+        exchange,
+    )
     # "the red and blue blocks should be swapped" (after "the positions of ... should be swapped")
     m.sub(rf"\bB(\d+)\s+{MODAL}(?:swapped|exchanged|switched|interchanged)(?:\s+around)?", exchange)
     # "... so that each ends up where the other was": what an exchange is
@@ -258,10 +268,13 @@ def _read_sources(m: Marked, scene: Scene) -> None:
 def _fill(m: Marked, x: re.Match[str], goal: GoalMaker, every: list[str] | None = None) -> str:
     """Groups 1, 2, 3 of `x`: the place, the blocks (else `every` block), the modifiers."""
     blocks = every or blocks_of(m, x.group(2))
-    return _one_per_region(goal, m.places[int(x.group(1))], blocks, x.group(0).strip(), x.group(3), every is None)
+    return _one_per_region(goal, m.places[int(x.group(1))], blocks, x.group(0), x.group(3), every is None)
 
 
-def _one_per_region(goal: GoalMaker, place: Place, blocks: list[str], text: str, mods: str, in_turn_ok: bool) -> str:
+def _one_per_region(
+    goal: GoalMaker, place: Place, blocks: list[str], text: str, mods: str, in_turn_ok: bool
+) -> str:
+    text = text.strip()
     in_turn = re.search(r"one\s+after|one\s+by|one\s+at|in\s+turn", mods) is not None
     if in_turn and in_turn_ok and place.kind == "regions":  # "region I receives the blocks one by one"
         return goal(blocks, place, text, mods)
@@ -283,6 +296,8 @@ def _markers(m: Marked, clauses: list[Clause]) -> None:
     # stacked markers say it once: "in the end, after all of this, put ..."
     m.sub(rf"\b(?:then\s*,?\s*)?(?:{AFTER_ALL}\s*,?\s*)*{AFTER_ALL}{LEAD}G(\d+)",
           lambda x: set_marker(x, "after_all"))
+    # "put the yellow block back on G once all of this is done"
+    m.sub(rf"\bG(\d+)\s*,?\s*{AFTER_ALL}(?=\s*(?:$|,))", lambda x: set_marker(x, "after_all"))
     m.sub(  # "put the yellow block back on G at the end"
         r"\bG(\d+)\s*,?\s*(?:at\s+the\s+(?:very\s+)?end|in\s+the\s+end|lastly|finally|last|as\s+the\s+(?:last|final)\s+step)\b",
         lambda x: set_marker(x, "after_all"),
@@ -299,7 +314,7 @@ def _markers(m: Marked, clauses: list[Clause]) -> None:
     # any goal without a marker
     m.sub(rf"\b(?:{PERIOD_WORDS}|while)\s*,?\s*(?=G\d+|at\s+any\s+time)", " ")
     m.sub(r"(?:,\s*)?\band\s+(?=G\d+)", lambda _: " ")
-    for c in clauses:  # "Step 3: at any time, move ...": a numbered step that says "at any time" is in no order
+    for c in clauses:  # "Step 3: at any time, move ...": a step that says "at any time" is in no order
         if c.anytime and c.marker == "then":
             c.marker = ""
 

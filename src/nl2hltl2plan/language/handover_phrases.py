@@ -25,8 +25,10 @@ from typing import Literal
 from nl2hltl2plan.errors import HTTError, WorldError
 from nl2hltl2plan.language.handover_words import (
     APPOSITION,
+    DONE,
     EMPTY,
     GERUND,
+    MODAL,
     NEG,
     REWRITES,
     SWAP,
@@ -169,7 +171,8 @@ def mark(sentence: str, scene: Scene, before: Marked | None = None) -> Marked:
     m.sub(r"\b(on|onto|in|into)\s+(each\s+of\s+)?(?:them|it)\b", r"\1 \2 PLACEREF")
     _mark_blocks(m, scene, previous.last_one)
     _join_particles(m)
-    m.sub(rf"\b((?:{VERB}|{GERUND})\s+B\d+)\s+there\b", r"\1 to PLACEREF")  # "put the three blocks there"
+    # "put the three blocks there", "the yellow block is to be moved there as well"
+    m.sub(rf"\b((?:{VERB}|{GERUND})\s+B\d+|B\d+\s+{MODAL}{DONE})\s+there\b", r"\1 to PLACEREF")
     _mark_places(m, scene, previous.last_regions)
     _mark_place_pronouns(m, previous.last_regions)
     _mark_capacity(m)
@@ -186,7 +189,8 @@ def _mark_place_pronouns(m: Marked, named_before: tuple[str, ...]) -> None:
     targets: place the blocks in them') is then read where the pronoun stands."""
     if "PLACEREF" not in m.text:
         return
-    m.sub(rf"\bP(\d+)\s+(?:is|are)\s+(?:the|our|your)\s+(?:targets?|goals?|destinations?|{TARGET}\s+{PLACE_NOUN})\s*:", r"P\1 :")
+    defined = rf"(?:is|are)\s+(?:the|our|your)\s+(?:targets?|goals?|destinations?|{TARGET}\s+{PLACE_NOUN})"
+    m.sub(rf"\bP(\d+)\s+{defined}\s*:", r"P\1 :")
     headings: list[str] = []
 
     def resolve(match: re.Match[str]) -> str:
@@ -275,6 +279,7 @@ def _mark_one_per_region(m: Marked) -> None:
         rf"(?:each|every)\s+{region}\b",
         rf"\b(?:with\s+)?{one}\s+(?:(?:is|being|may|can)\s+)?(?:allowed\s+|permitted\s+)?per\s+{region}\b",
         r"\bone\s+(?:each|apiece)\b",
+        rf"(?<=,)\s*(?:with\s+)?(?:one|a\s+single)\s+{NOUN}\s+(?:each|apiece)\b",  # "..., one block each"
         rf"\b(?:with\s+)?{one}\s+(?:per|in\s+each|on\s+each|for\s+each)\b(?!\s+of\b)",
         rf"\b(?:with\s+)?no\s+two\s+{NOUNS}\s+(?:(?:may|can|should|will)\s+)?(?:sharing|share|occupy|be\s+(?:in|on))\s+"
         rf"(?:a\s+|the\s+same\s+)?{region}\b",

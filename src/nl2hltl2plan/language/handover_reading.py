@@ -99,8 +99,8 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
         # "red goes first, blue after red": the order says what "first" means
         leaders = [b for b in read_leaders(m) if b not in [x for x, _ in sentence_orders]]
         new = _without_restated(goal_clauses(m, scene))
-        if not new:  # "Step 2: the red block before the blue block": a step of rules only
-            m.sub(r"^\s*then\b", " ")
+        if not new:  # "Step 2: the red block before the blue block", "1) red before blue": rules only
+            m.sub(r"^\s*(?:then|first)\b", " ")
         drop_but(m)
         _refuse_leftovers(m, sentence)
         scope = [g for c in new for g in c.goals] or [g for c in clauses for g in c.goals]

@@ -81,12 +81,15 @@ def read_orders(m: Marked) -> list[tuple[str, str]]:
     )
 
     def add_keeping_goal(x: re.Match[str]) -> str:  # the goal stays for the goal reader
-        add_pair(x.group(2), x.group(4)) if x.group(3) == "before" else add_pair(x.group(4), x.group(2))
-        return f" {x.group(1)} "
+        a = x.group("a1") or x.group("a2")
+        add_pair(a, x.group("b")) if x.group("w") == "before" else add_pair(x.group("b"), a)
+        return f" {x.group('goal')} "
 
-    m.sub(  # "place the red block on the opposite side before the blue block"
-        rf"\b((?:{VERB}|{GERUND})\s+B(\d+)\s+(?:back\s+)?{PREP}\s+P\d+)\s*,?\s+(?:first\s*,?\s*)?(before|after)\s+"
-        rf"(?:you\s+(?:{VERB}\s+)?|{GERUND}\s+)?B(\d+){tail}{end}",
+    # "place the red block on the opposite side before the blue block", "the red block is to be moved ..."
+    m.sub(
+        rf"\b(?P<goal>(?:{VERB}|{GERUND})\s+B(?P<a1>\d+)\s+(?:back\s+)?{PREP}\s+P\d+|B(?P<a2>\d+)\s+{MODAL}{DONE}\s+"
+        rf"(?:back\s+)?{PREP}\s+P\d+)\s*,?\s+(?:first\s*,?\s*)?(?P<w>before|after)\s+(?:you\s+(?:{VERB}\s+)?|{GERUND}\s+)?"
+        rf"B(?P<b>\d+){tail}{end}",
         add_keeping_goal,
     )
     for word, flip in ((r"before", False), (r"(?:after|once)", True)):
@@ -133,7 +136,7 @@ def read_leaders(m: Marked) -> list[str]:
         out.append(names[0])
         return " "
 
-    m.sub(rf"\b(?:place|put|move|do|handle|take)\s+B(\d+)\s+(?:down\s+)?first\b(?=\s*(?:$|,|\band\b|\)))", add)
+    m.sub(r"\b(?:place|put|move|do|handle|take)\s+B(\d+)\s+(?:down\s+)?first\b(?=\s*(?:$|,|\band\b|\)))", add)
     m.sub(
         rf"(?:\b(?:with|placing|putting|moving|and)\s+)?\bB(\d+)\s+(?:down\s+)?{MODAL}(?:(?:placed|put|moved|set)\s+|goe?s?\s+|"
         r"comes?\s+|going\s+|coming\s+)?first\b(?=\s*(?:$|,|\band\b|\)))",
@@ -167,8 +170,8 @@ def read_touch_guards(m: Marked) -> list[tuple[str, str]]:
         r"\s+B(?P<x>\d+)"
     )
     not_touched = (
-        rf"\bB(?P<x>\d+)\s+(?:(?:is|are|must|may|can|should|shall|will)\s+)?{NEG}\s+(?:ever\s+)?(?:(?:to\s+)?be\s+)?"
-        rf"{TOUCHED}(?:\s+by\s+A)?"
+        rf"(?:\bwith\s+)?\bB(?P<x>\d+)\s+(?:(?:is|are|must|may|can|should|shall|will)\s+)?{NEG}\s+(?:ever\s+)?"
+        rf"(?:(?:to\s+)?be\s+|being\s+)?{TOUCHED}(?:\s+by\s+A)?"
     )
     until = r"(?:until|before|unless)"
     after = r"(?:only\s+)?(?:after|once|when)"
@@ -227,10 +230,12 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
     receive = rf"(?:receive|get|hold|take|contain)s?\s+{thing}"
     m.sub(rf"\bno\s+P(?P<p>\d+)\s+(?:{may}\s+)?{receive}\b{PERIOD}", add)
     m.sub(rf"\bP(?P<p>\d+)\s+(?:{may}\s+)?{NEG}\s+{receive}\b{PERIOD}", add)
+
     # "regions F, G and H cannot have any object placed (on them)": "them" was read as those regions
     def add_same(match: re.Match[str]) -> str:
         again = match.group("q")
-        return add(match) if again is None or m.places[int(again)] == m.places[int(match.group("p"))] else match.group(0)
+        same = again is None or m.places[int(again)] == m.places[int(match.group("p"))]
+        return add(match) if same else match.group(0)
 
     m.sub(
         rf"\bP(?P<p>\d+)\s+(?:{may}\s+)?{NEG}\s+(?:have|get)\s+{thing}\s+{DROP}(?:\s+(?:on|in|onto|into)\s+P(?P<q>\d+))?"

@@ -57,7 +57,8 @@ PERIOD = rf"(?:\s*,?\s*(?:{PERIOD_WORDS}|at\s+any\s+time|ever|at\s+all))?"
 EMPTY = r"(?:empty|free|clear|unoccupied|vacant)"
 DONE_STATE = (
     r"(?:done|finished|complete|completed|over)"
-    r"(?:\s+with\s+(?:all\s+(?:of\s+)?)?(?:this|these|that|it|everything|them|the\s+above))?"  # "done with that"
+    # "done with that"
+    r"(?:\s+with\s+(?:all\s+(?:of\s+)?)?(?:this|these|that|it|everything|them|the\s+above))?"
 )
 AFTER_ALL = (
     r"(?:(?:once|when|after)\s+(?:all\s+(?:of\s+)?)?(?:this|these|that|it|everything(?:\s+else)?|the\s+above)(?:\s+all)?\s+"
@@ -120,8 +121,23 @@ REWRITES: tuple[tuple[str, str], ...] = (
     ),
     (r"\s*,?\s*\bwith\s+the\s+(?:rule|condition|constraint|requirement|restriction)\s+that\b", ","),
     (r"\bin\s+addition\b", " "),
-    (r"^\s*(?:order|ordering|sequence|constraints?|rules?|requirements?|restrictions?|conditions?)\s*:", " "),
-    (r"^\s*(?:objective|goal|task|aim|mission|instructions?)\s*:", "please"),
+    # a heading, also after a step's number: "Rule: ...", "2) Constraint: ...", "Goals:"
+    (
+        r"^(\s*(?:step\s+\w+\s*:?|\d\s*[):]|\(\s*\d\s*\))?\s*)(?:order|ordering|sequence|constraints?|rules?|"
+        r"requirements?|restrictions?|conditions?)\s*:",
+        r"\1",
+    ),
+    (
+        r"^(\s*(?:step\s+\w+\s*:?|\d\s*[):]|\(\s*\d\s*\))?\s*)(?:objectives?|goals?|tasks?|aims?|missions?|"
+        r"instructions?)\s*:",
+        r"\1 please",
+    ),
+    # casual openers and closers: "ok so ...", "... pls", "thanks"
+    (r"^\s*(?:(?:ok(?:ay)?|alright|right|so|well|hi|hello|hey)\b\s*,?\s*)+", " "),
+    (r"\b(?:pls|plz|thx|thanks|thank\s+you)\b", "please"),
+    (r"\btill\b", "until"),
+    (r"\b([a-z]+)\s+s\s+been\b", r"\1 has been"),  # "till red's been touched"
+    (r"\b(?:any\s+)?(?:stuff|things)\b(?=\s+(?:on|in|onto|into)\b)", "anything"),
     (r"\bunder\s+no\s+circumstances\s+(?=(?:place|put|drop|set|touch|move)\b)", "never "),
     (r"\bat\s+some\s+(?:point|time)\b", "at any time"),
     (r"\bnothing\s+else\b", "nothing"),
@@ -194,11 +210,17 @@ REWRITES: tuple[tuple[str, str], ...] = (
     # one modal for obligation: "is to be / has to be / needs to be / ought to be placed" -> "must be placed"
     (r"\b(?:is|are|has|have|needs?|ought)\s+to\s+be\b", "must be"),
     (r"\b(?:is|are)\s+not\s+to\s+be\b", "must not be"),
+    (r"\b(?:is|are)\s+(then|first|also|finally|next|afterwards|later)\s+to\s+be\b", r"must \1 be"),
+    (r"\b(?:is|are)\s+to\s+have\b", "must have"),
     # "must stay / remain untouched", "is to be left untouched": not touched
-    (r"\b(?:must\s+|should\s+|shall\s+|will\s+)?(?:stay|remain|be\s+left|be\s+kept)\s+untouched\b", "must not be touched"),
+    (
+        r"\b(?:must\s+|should\s+|shall\s+|will\s+)?(?:stay|remain|be\s+left|be\s+kept)\s+untouched\b",
+        "must not be touched",
+    ),
     (r"\bone\s+after\s+one\b", "one after another"),
     (r"\b(that|it|there|what|here)\s+s\b", r"\1 is"),  # "a region that's not a target"
-    (r"(?<=,)\s*than\s+(?=(?:place|put|move|transfer|bring|take)\b)", " then "),  # "..., than place ...": a typo
+    # "..., than place ...": a typo ("than" is never comparative between a comma and a verb)
+    (r"(?<=,)\s*than\s+(?=(?:place|put|move|transfer|bring|take)\b)", " then "),
     (r"^\s*(?:with\s+that|that\s+said|having\s+said\s+that)\s*,", " "),
     (r"\band\s+(?:because|since)\s+", "and "),
     (r"^\s*(?:steps|procedure|instructions|plan|to\s+do)\s*:\s*", " "),
@@ -220,7 +242,11 @@ REWRITES: tuple[tuple[str, str], ...] = (
         r"occupy\s+(?=(?:the\s+)?(?:(?:goal|target)\s+)?regions?\b)",
         r"\1go to ",
     ),
-    (r"\b(?:simply|merely|just|only)\s+(?=(?:needs?|ha(?:s|ve))\s+to\b)|\b(?:simply|merely|just)\s+(?=must\b)", ""),  # "they simply need to be moved"
+    # "they simply need to be moved", "the yellow block only has to reach ..."
+    (
+        r"\b(?:simply|merely|just|only)\s+(?=(?:needs?|ha(?:s|ve))\s+to\b)|\b(?:simply|merely|just)\s+(?=must\b)",
+        "",
+    ),
     # a topic and its pronoun: "as for the red and blue blocks, they ..." -> "the red and blue blocks ..."
     (r"^\s*as\s+(?:for|to|regards)\s+([a-z ]+?)\s*,\s*(?:they|it)\b", r"\1"),
     # "on region I first and on region G thereafter", "to region I and, after that, to region G"
@@ -269,8 +295,8 @@ REWRITES: tuple[tuple[str, str], ...] = (
     # a numbered step: the first, or one after the step before
     (r"^\s*(?:step\s+(?:1|one)\s*:?|1\s*[):]|\(\s*1\s*\))\s*", "first "),
     (r"^\s*(?:step\s+(?:[2-9]|two|three|four|five)\s*:?|[2-9]\s*[):]|\(\s*[2-9]\s*\))\s*", "then "),
-    (r"^\s*then\s*,?\s*then\b", "then"),
-    (r"\b(finally|lastly|then|next|afterwards|first)\s*:", r"\1"),  # "Finally: yellow -> G"  # "2) Then move it ...": the step's "then" said twice
+    (r"^\s*then\s*,?\s*then\b", "then"),  # "2) Then move it ...": the step's "then" said twice
+    (r"\b(finally|lastly|then|next|afterwards|first)\s*:", r"\1"),  # "Finally: yellow -> G"
     (r"\b(?:remember|be\s+sure|make\s+sure|do\s+not\s+forget|note|keep\s+in\s+mind)\s+(?:to|that)\b", " "),
     (r"\bprecedes?\b", "comes before"),
     (r"\bfollows?\b", "comes after"),
@@ -317,17 +343,27 @@ REWRITES += tuple(
 TYPO_WORDS = (
     "block blocks region regions opposite place placed transfer before after yellow pillar pillars object "
     "objects separately another empty touch touched exchange position positions should until during period "
-    "please first other across three placement separately touching picked finish finished after target targets"
+    "please first other across three placement separately touching picked finish finished after target "
+    "targets"
 ).split()
 REAL_WORDS = frozenset(
-    "pace paced touche fist firs pease pleas there thee tree piked finnish blacks placid daring packed pecked "
+    "pace paced touche fist firs pease pleas there thee tree piked finnish blacks placid daring packed "
+    "pecked "
     "pocked".split()
 )
 VOWELS = "aeiou"
 
 
 # short words, too short for the table's rules, in their commonest misspellings
-SHORT_TYPOS = {"thsi": "this", "tihs": "this", "teh": "the", "hte": "the", "adn": "and", "nad": "and", "taht": "that"}
+SHORT_TYPOS = {
+    "thsi": "this",
+    "tihs": "this",
+    "teh": "the",
+    "hte": "the",
+    "adn": "and",
+    "nad": "and",
+    "taht": "that",
+}
 
 
 def typo_table() -> dict[str, str]:
@@ -340,7 +376,8 @@ def typo_table() -> dict[str, str]:
         forms |= {word[:i] + word[i + 1 :] for i in range(1, len(word))}
         forms |= {word[:i] + word[i] + word[i:] for i in range(1, len(word))}
         if len(word) >= 6:  # one vowel written for another: "seperately", "pleese"
-            forms |= {word[:i] + v + word[i + 1 :] for i in range(1, len(word)) if word[i] in VOWELS for v in VOWELS}
+            vowels = [i for i in range(1, len(word)) if word[i] in VOWELS]
+            forms |= {word[:i] + v + word[i + 1 :] for i in vowels for v in VOWELS}
         for form in forms - set(TYPO_WORDS) - REAL_WORDS:
             seen.setdefault(form, set()).add(word)
     return {form: next(iter(words)) for form, words in seen.items() if len(words) == 1} | SHORT_TYPOS
