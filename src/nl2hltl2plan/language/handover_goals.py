@@ -11,8 +11,8 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 
 from nl2hltl2plan.errors import HTTError
-from nl2hltl2plan.language.handover_phrases import Marked, Place, Scene
 from nl2hltl2plan.language.handover_rules import blocks_of
+from nl2hltl2plan.language.handover_scene import Marked, Place, Scene
 from nl2hltl2plan.language.handover_words import (
     AFTER_ALL,
     DONE,

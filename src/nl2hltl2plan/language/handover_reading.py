@@ -42,7 +42,7 @@ import networkx as nx
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.handover_goals import Clause, Goal, crossed_exchanges, goal_clauses, lead
-from nl2hltl2plan.language.handover_phrases import FILLER, Marked, Place, Scene, drop_but, mark
+from nl2hltl2plan.language.handover_phrases import drop_but, mark
 from nl2hltl2plan.language.handover_rules import (
     Prohibition,
     read_leaders,
@@ -50,6 +50,7 @@ from nl2hltl2plan.language.handover_rules import (
     read_prohibitions,
     read_touch_guards,
 )
+from nl2hltl2plan.language.handover_scene import FILLER, Marked, Place, Scene
 from nl2hltl2plan.language.htt import HTT, HTTNode
 from nl2hltl2plan.language.result import LanguageResult
 from nl2hltl2plan.language.spec_builder import build_spec

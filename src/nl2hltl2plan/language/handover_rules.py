@@ -8,7 +8,7 @@ from __future__ import annotations
 import re
 
 from nl2hltl2plan.errors import HTTError
-from nl2hltl2plan.language.handover_phrases import Marked, Place
+from nl2hltl2plan.language.handover_scene import Marked, Place
 from nl2hltl2plan.language.handover_words import (
     DONE,
     DROP,
