@@ -40,10 +40,26 @@ STILL_REFUSED = {
     "be moved there as well.",
     "- three blocks\n- regions H, I and J\n- one block per region",
     "stack nothing on F, G or H meanwhile; put the 3 blocks on I one after another, red before blue",
+    # dev4: statements of purpose or of the scene ("on top of the plan", "each other's spots", "a drop-off",
+    # "two stops", "reserved")
+    "We want the pillars back at regions E, F and G. While moving them, keep every other region empty, "
+    "because those regions are reserved.",
+    "First move the three blocks to the opposite regions; note that the blue block cannot be touched until "
+    "the red one has been, since the red block is on top of the plan. When everything is over there, bring "
+    "the yellow block back to region G.",
+    "To get the red and blue blocks into each other's spots, swap them, red before blue. The yellow block "
+    "should just go to the opposite side at some point, whenever it is convenient.",
+    "Use region I as a drop-off: one after another, put the three blocks on region I, red before blue. "
+    "Regions F, G and H must stay empty the whole time, since they are blocked.",
+    "The yellow block has two stops: region I and then region G. The other two blocks, red and blue, just "
+    "need to go to any empty region at any time.",
 }
 
 NEAR_MISSES_S10: dict[int, list[str]] = {
     1: [
+        "Move 3 blocks to opposite side, blue before red.",
+        "All three blocks should end up on the opposite side. The blue one needs to be there before the "
+        "red one, so place blue first.",
         "ok so move all 3 blocks to the opposite side, blue one before the red one pls",
         "The agent shall transfer all three blocks to the opposite side, the blue block being placed prior "
         "to the red block.",
@@ -57,6 +73,9 @@ NEAR_MISSES_S10: dict[int, list[str]] = {
         "opposite side.",
     ],
     2: [
+        "There are three goal regions, H, I and J. Put the red and blue blocks into them; since a region "
+        "holds only one object, each gets one block.",
+        "Put the three block into the region H and I, one region is only for one block.",
         "Regions H and I are to receive the three blocks, one block each.",
         "Regions H, I and J can each hold only one block, so put one of the red and blue blocks in each of "
         "them.",
@@ -64,6 +83,9 @@ NEAR_MISSES_S10: dict[int, list[str]] = {
         "1) put the three blocks into regions H and I\n2) one block per region",
     ],
     3: [
+        "Pillars to regions E, F only.",
+        "Pillars to regions E, F, G.",
+        "Please to move the three pillars into region E, F and G. No object to put on region H.",
         "move the pillars over to E, F and G and don't put stuff on region H",
         "The pillars have to go back to the side of arms a and b, regions E, F and G. Because regions H "
         "and I must stay clear, do not place any object on them.",
@@ -74,6 +96,11 @@ NEAR_MISSES_S10: dict[int, list[str]] = {
         "that's a target.",
     ],
     4: [
+        "Opposite regions for all blocks. No touching red until blue is touched. Then yellow back on G.",
+        "Move three blocks to opposite regions. Red block is not allow to touch before blue block is "
+        "touched. After finishing all, put yellow block back on region G.",
+        "Move three blocks to opposite regions. Blue block is not allow to touch before red block is "
+        "touched. After finishing all, put yellow block back on region H.",
         "The three blocks are to be placed on the opposite regions, with the red block not being touched "
         "until the blue block has been touched. The yellow block is then to be returned to region G once "
         "all of this is done.",
@@ -102,6 +129,9 @@ NEAR_MISSES_S10: dict[int, list[str]] = {
         "touch blue block first. After all these, please put yellow block back in region G.",
     ],
     5: [
+        "Red <-> blue, blue first. Yellow: opposite side, anytime.",
+        "Please change the positions of red block and blue block, blue block first place. Yellow block go "
+        "to opposite side any time.",
         "The red and blue blocks are to have their positions exchanged, the blue one being placed before "
         "the red one; the yellow block is to be moved to the opposite side at any time.",
         "Goals:\n- swap the red and blue blocks (blue is placed first)\n- yellow block to the opposite "
@@ -112,6 +142,11 @@ NEAR_MISSES_S10: dict[int, list[str]] = {
         "going before red. The yellow block only has to reach the opposite side, at any time.",
     ],
     6: [
+        "G, H, J: one block each. Red before blue.",
+        "The red block must be placed before the blue one, as the order matters here. Put the three blocks "
+        "separately on regions G, H and J.",
+        "Please place the three blocks separately at region G, H and I, and the blue block place before "
+        "the red block.",
         "1) blue before red\n2) the three blocks go separately into regions G, H and I",
         "The red block should be palced before the blue block. Plaese place the three objects seperately "
         "to region G, H and J.",
@@ -121,6 +156,9 @@ NEAR_MISSES_S10: dict[int, list[str]] = {
         "J.",
     ],
     7: [
+        "All 3 onto I, one by one. Red, then blue. Keep F, G empty meanwhile.",
+        "Three blocks put on region I one after other, red block before blue block, in this time region F "
+        "and G no object.",
         "During this whole task, regions F and G must stay empty. Put the three blocks on region I one "
         "after another, red before blue.",
         "The three blocks shall be placed on region I in succession, the red block preceding the blue "
@@ -136,6 +174,10 @@ NEAR_MISSES_S10: dict[int, list[str]] = {
         "region I, during this period region F, G can not place any object.",
     ],
     8: [
+        "Yellow: G then I. Red + blue: any empty region, whenever.",
+        "Yellow: I then G. Red: any empty region, whenever.",
+        "First yellow block put on region I, then put on region H. Red block and blue block put on any "
+        "empty region any time.",
         "The yellow block is first to be placed on region G and then on region I; the red and blue blocks "
         "are to be placed on any empty region at any time.",
         "yellow goes to G then I; red and blue can go anywhere empty whenever",

@@ -107,7 +107,8 @@ def goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
 
     mods = rf"((?:\s*,?\s*{MOD})*)"
     # "one by one, put all three blocks on I": the modifier read where it usually stands, after the object
-    m.sub(rf"\b({MOD})\s*,?\s*({VERB}\s+B\d+)", r"\2 \1")
+    # (not "all": "after finishing all, put ...")
+    m.sub(rf"\b((?!all\b){MOD})\s*,?\s*({VERB}\s+B\d+)", r"\2 \1")
 
     def matched(x: re.Match[str], k: int) -> str:  # groups from k: blocks, modifiers, place, modifiers
         place, text = m.places[int(x.group(k + 2))], x.group(0).strip()
@@ -130,7 +131,7 @@ def goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
     # G", "yellow: back to G last", "yellow block on I, then on G", "then yellow back to G"
     m.sub(
         rf"(?:^|(?<=,)|(?<=\bthen)|(?<=\bfinally)|(?<=\blastly))\s*B(\d+){mods}\s*(?::\s*(?:back\s+)?(?:(?:to|into|onto|on|in)\s+)?|,?\s*(?:back\s+)?"
-        rf"(?:to|into|onto|on|in)\s+)P(\d+){mods}(?:\s+first\b)?(?=\s*(?:$|,|\band\b|\(|last\b|finally\b|at\s+the\s+end\b))",
+        rf"(?:to|into|onto|on|in)\s+)P(\d+){mods}(?:\s+first\b)?(?=\s*(?:$|,|\band\b|\(|last\b|finally\b|then\b|at\s+the\s+end\b))",
         lambda x: matched(x, 1),
     )
     _read_inverse(m, goal, scene.blocks, mods)
@@ -147,8 +148,8 @@ def goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
     )
     # the verb and the blocks shared with the clause just before: "to I, then to G", "on I first, then on G"
     m.sub(
-        rf"\bG(\d+)(?P<link>(?:\s+first\b)?\s*,?\s*(?:and\s+)?(?:{THEN}{LEAD}|followed\s+by\s+))(?:back\s+)?(?:{PREP}\s+)?"
-        rf"P(\d+){mods}",
+        rf"\bG(\d+)(?P<link>(?:\s+first\b)?\s*,?\s*(?:and\s+)?(?:{THEN}{LEAD}|followed\s+by\s+))(?:{VERB}\s+)?(?:back\s+)?"
+        rf"(?:{PREP}\s+)?P(\d+){mods}",
         lambda x: f" G{x.group(1)} then " + again(clauses[int(x.group(1))], x),
     )
     m.sub(  # "on I first and on G second": the second place named after the first
@@ -174,6 +175,11 @@ def _read_inverse(m: Marked, goal: GoalMaker, every: list[str], mods: str) -> No
     m.sub(
         rf"\bP(\d+)\s+{MODAL}(?:(?:receive|get|take|hold)s?|ends?\s+up\s+with)\s+(?:exactly\s+)?(?:one|a\s+single)\s+"
         rf"(?:block|object|cube|pillar|item)\s+(?:each|apiece)(){mods}",
+        lambda x: _fill(m, x, goal, every),
+    )
+    m.sub(  # "G, H, I: one block each"
+        rf"(?:^|(?<=,))\s*P(\d+)\s*:\s*(?:exactly\s+)?(?:one|a\s+single)\s+(?:block|object|cube|pillar|item)\s+"
+        rf"(?:each|apiece)(){mods}",
         lambda x: _fill(m, x, goal, every),
     )
     # "put one block in each of regions H, I and J": every block, one per region (as many as blocks)

@@ -77,6 +77,8 @@ def mark(sentence: str, scene: Scene, before: Marked | None = None) -> Marked:
     mark_places(m, scene, previous.last_regions)
     mark_place_pronouns(m, previous.last_regions)
     mark_capacity(m)
+    # "There are three goal regions, H, I and J.": places named for the next sentence ("put ... into them")
+    m.sub(r"^\s*there\s+(?:are|is)\s+P\d+\s*$", " ")
     named = [p.regions for p in m.places if p.kind == "regions"]
     m.last_regions = named[-1] if named else ()
     _mark_connectives(m)
@@ -138,6 +140,10 @@ def _mark_one_per_region(m: Marked) -> None:
         rf"(?:each|every)\s+{region}\b",
         rf"\b(?:with\s+)?{one}\s+(?:(?:is|being|may|can)\s+)?(?:allowed\s+|permitted\s+)?per\s+{region}\b",
         r"\bone\s+(?:each|apiece)\b",
+        # "each gets one block", "one region is only for one block"
+        rf"(?:,\s*)?\beach\s+(?:one\s+)?(?:gets|receives|takes|holds)\s+(?:exactly\s+)?(?:one|a\s+single)(?:\s+{NOUN})?\b",
+        rf"\b(?:each|every|one|a)\s+{region}\s+(?:is\s+)?(?:only\s+)?for\s+(?:only\s+)?(?:one|a\s+single|1)(?:\s+{NOUN})?"
+        r"(?:\s+only)?\b",
         rf"(?<=,)\s*(?:with\s+)?(?:one|a\s+single)\s+{NOUN}\s+(?:each|apiece)\b",  # "..., one block each"
         rf"\b(?:with\s+)?{one}\s+(?:per|in\s+each|on\s+each|for\s+each)\b(?!\s+of\b)",
         rf"\b(?:with\s+)?no\s+two\s+{NOUNS}\s+(?:(?:may|can|should|will)\s+)?(?:sharing|share|occupy|be\s+(?:in|on))\s+"

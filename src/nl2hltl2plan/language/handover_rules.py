@@ -138,6 +138,9 @@ def read_leaders(m: Marked) -> list[str]:
 
     m.sub(r"\b(?:place|put|move|do|handle|take)\s+B(\d+)\s+(?:down\s+)?first\b(?=\s*(?:$|,|\band\b|\)))", add)
     m.sub(
+        r"\bB(\d+)\s+first\s+(?:place|placed|put|goes|go)\b(?=\s*(?:$|,|\band\b|\)))", add
+    )  # "red block first place"
+    m.sub(
         rf"(?:\b(?:with|placing|putting|moving|and)\s+)?\bB(\d+)\s+(?:down\s+)?{MODAL}(?:(?:placed|put|moved|set)\s+|goe?s?\s+|"
         r"comes?\s+|going\s+|coming\s+)?first\b(?=\s*(?:$|,|\band\b|\)))",
         add,
@@ -152,7 +155,7 @@ def read_touch_guards(m: Marked) -> list[tuple[str, str]]:
     out: list[tuple[str, str]] = []
 
     def add(match: re.Match[str]) -> str:
-        y = next(match.group(g) for g in ("y1", "y2", "y3") if match.group(g) is not None)
+        y = next(match.group(g) for g in ("y1", "y2", "y3", "y4") if match.groupdict().get(g) is not None)
         out.append((one_block(m, match.group("x"), "a touch rule"), one_block(m, y, "a touch rule")))
         return " "
 
@@ -161,12 +164,12 @@ def read_touch_guards(m: Marked) -> list[tuple[str, str]]:
     other = (
         rf"(?:(?:A\s+)?(?:has\s+|have\s+|had\s+)?(?:already\s+)?(?:{TOUCHED}|{TOUCHING}|{TOUCH})\s+B(?P<y1>\d+)|B(?P<y2>\d+)\s+"
         rf"(?:(?:has|have|had)\s+(?:already\s+)?been|is|was|gets|got|being)\s+(?:already\s+)?{TOUCHED}(?:\s+by\s+A)?|"
-        rf"B(?P<y3>\d+){end})(?:\s+first{end})?"
+        rf"B(?P<y3>\d+){end}|B(?P<y4>\d+)\s+(?:has|have|had)\s+been{end})(?:\s+first{end})?"
     )
     may = _MAY
     no_touch = (
         rf"(?:(?:\bA\s+)?{NEG}\s+{TOUCH}|(?:\bwith\s+)?\bno\s+A\s+(?:{may}\s+)?(?:{TOUCH}|{TOUCHED}|{TOUCHING})|"
-        rf"\b(?:never|not|without)\s+{TOUCHING})"
+        rf"\b(?:never|not|without|no)\s+{TOUCHING})"
         r"\s+B(?P<x>\d+)"
     )
     not_touched = (
@@ -224,7 +227,10 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
         rf"\b{PERIOD_WORDS}\s*,?\s*(?=no\s+B|nothing|B\d+\s+{MODAL}{NEG}|(?:A\s+)?{NEG}|keep|leave|P\d)", " "
     )
     may = _MAY
-    m.sub(rf"\bno\s+B(?P<b>\d+)\s+(?:{may}\s+|is\s+|are\s+|gets\s+)?(?:ever\s+)?(?:be\s+)?{DROP}{down}", add)
+    m.sub(
+        rf"\bno\s+B(?P<b>\d+)\s+(?:{may}\s+|is\s+|are\s+|gets\s+|to\s+)?(?:ever\s+)?(?:be\s+)?{DROP}{down}",
+        add,
+    )
     # "no other region may receive an object", "regions F, G and H cannot receive any object"
     thing = r"(?:an?\s+|any\s+)?(?:(?:block|object|cube|pillar|item|piece)s?|anything)"
     receive = rf"(?:receive|get|hold|take|contain)s?\s+{thing}"
@@ -256,6 +262,7 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
     m.sub(rf"\bnothing\s+(?:on|in|onto|into)\s+P(?P<p>\d+){PERIOD}", add)
     # "F/G/H: nothing during this period", "other regions: never"
     m.sub(rf"\bP(?P<p>\d+)\s*:\s*(?:nothing|never|none|forbidden|off\s+limits){PERIOD}", add)
+    m.sub(rf"(?:^|(?<=,))\s*P(?P<p>\d+)\s*:?\s*(?:no\s+B(?P<b>\d+)|nothing|none){PERIOD}(?=\s*(?:$|,))", add)
     modal = r"(?:(?:must|may|can|should|shall|will|is|are)\s+)?"
     m.sub(rf"\bB(?P<b>\d+)\s+{modal}{NEG}\s+(?:ever\s+)?(?:be\s+)?{DROP}{down}", add)
     m.sub(
@@ -315,6 +322,19 @@ def _read_only_on(m: Marked) -> list[Prohibition]:
         )
         return " "
 
+    def goal_only(match: re.Match[str]) -> str:  # "move the pillars to E, F and G only": the goal stays
+        keep = m.places[int(match.group("p"))]
+        if keep.kind not in ("regions", "opposite"):
+            return match.group(0)
+        # all but the goal's own targets (per block for "the opposite side")
+        text = match.group(0).strip()
+        out.append((blocks_of(m, match.group("b")), Place("complement", keep.regions, text=text), [], text))
+        return f" {match.group('goal')} "
+
+    m.sub(
+        rf"(?P<goal>\b(?:(?:{VERB}|{GERUND})\s+)?B(?P<b>\d+)\s+{PREP}\s+P(?P<p>\d+))\s+only\b(?=\s*(?:$|,|\band\b))",
+        goal_only,
+    )
     target = r"(?:P(?P<p>\d+)|(?P<t>the\s+(?:target|goal)\s+(?:regions?|areas?|zones?)))"
     m.sub(
         rf"\bB(?P<b>\d+)\s+{_MAY}\s+(?:only\s+be\s+{DROP}|be\s+{DROP}\s+only)\s+{PREP}\s+{target}{PERIOD}",

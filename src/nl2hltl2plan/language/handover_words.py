@@ -67,6 +67,7 @@ AFTER_ALL = (
     r"after\s+(?:all\s+(?:of\s+)?(?:these|this|that|"
     r"the\s+above)|everything(?:\s+else)?)|finally|lastly|last\s+of\s+all|at\s+the\s+(?:very\s+)?end|in\s+the\s+end|"
     r"after\s+(?:finish(?:ing)?|complet(?:e|ing)|doing|done)\s+(?:with\s+)?(?:all\s+(?:of\s+)?)?(?:this|these|that|everything|them)|"
+    r"after\s+(?:finishing|completing)\s+(?:it\s+)?all|"
     r"as\s+(?:a|the)\s+(?:final|last)\s+step|(?:up)?on\s+(?:completion|finishing)(?:\s+of\s+(?:this|these|that|the\s+above|all\s+(?:of\s+)?(?:this|these|that)))?)"
 )
 THEN = (
@@ -217,7 +218,24 @@ REWRITES: tuple[tuple[str, str], ...] = (
         r"\b(?:must\s+|should\s+|shall\s+|will\s+)?(?:stay|remain|be\s+left|be\s+kept)\s+untouched\b",
         "must not be touched",
     ),
-    (r"\bone\s+after\s+one\b", "one after another"),
+    (r"\bone\s+after\s+(?:one|other)\b", "one after another"),
+    (r"\bplease\s+to\b", "please"),
+    (r"(?<=[a-z])\s*\+\s*(?=[a-z])", " and "),  # "red + blue"
+    # "while moving them, ...": the period of the goals
+    (
+        r"\bwhile\s+(?:you\s+(?:are\s+)?)?(?:moving|placing|transferring|carrying|bringing|doing)\s+"
+        r"(?:them|it|this|that|so|the\s+(?:blocks|pillars|objects))\b",
+        "meanwhile",
+    ),
+    (r"\s*,?\s*\b(?:as|since|because)\s+(?:the\s+)?order\s+(?:matters|is\s+important)(?:\s+here)?\b", " "),
+    # non-native: "the blue block is not allow to touch": not to be touched (a block is the subject: not "the
+    # arm is not allowed to touch the blue block")
+    (
+        r"(?:(?<=block\s)|(?<=blocks\s)|(?<=red\s)|(?<=blue\s)|(?<=yellow\s)|(?<=object\s)|(?<=pillar\s))"
+        r"(?:is|are)\s+not\s+allow(?:ed)?\s+to\s+(?:be\s+)?(?:touch(?:ed)?|grab(?:bed)?|pick(?:ed)?\s+up|lift(?:ed)?)\b",
+        "must not be touched",
+    ),
+    (r"\bchange\s+(?=(?:the\s+)?(?:positions?|places?)\s+of\b)", "exchange "),
     (r"\b(that|it|there|what|here)\s+s\b", r"\1 is"),  # "a region that's not a target"
     # "..., than place ...": a typo ("than" is never comparative between a comma and a verb)
     (r"(?<=,)\s*than\s+(?=(?:place|put|move|transfer|bring|take)\b)", " then "),
