@@ -1,7 +1,7 @@
 """First contact of the handover reader on rephrasings by style (issue 24: held-out rephrasings of the
 eight Table III instructions must give the written specs).
 
-    PYTHONPATH=src python scripts/bench_handover_styles.py [--batch dev|dev2|dev3|dev4|validation] [--verbose]
+    PYTHONPATH=src python scripts/bench_handover_styles.py [--batch dev|dev2|dev3|dev4|dev5|validation] [--verbose]
                                                            [--file F]
     (default F: tests/experiments/handover_styles_session10.json)
 
@@ -40,7 +40,7 @@ def verdict(task_id: int, text: str) -> tuple[str, str]:
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--batch", default="dev", choices=["dev", "dev2", "dev3", "dev4", "validation"])
+    parser.add_argument("--batch", default="dev", choices=["dev", "dev2", "dev3", "dev4", "dev5", "validation"])
     parser.add_argument("--file", type=Path, default=DEFAULT)
     parser.add_argument("--verbose", action="store_true")
     args = parser.parse_args()
