@@ -1,8 +1,8 @@
 """First contact of the handover reader on rephrasings by style (issue 24: held-out rephrasings of the
 eight Table III instructions must give the written specs).
 
-    PYTHONPATH=src python scripts/bench_handover_styles.py [--batch dev|dev2|dev3|dev4|dev5|validation] [--verbose]
-                                                           [--file F]
+    PYTHONPATH=src python scripts/bench_handover_styles.py [--batch NAME] [--verbose] [--file F]
+    (NAME: dev, dev2 ... dev5, validation; default dev)
     (default F: tests/experiments/handover_styles_session10.json)
 
 Each sentence of the batch is read on instance 0 of its task (`translate`, offline) and judged against the
@@ -40,11 +40,14 @@ def verdict(task_id: int, text: str) -> tuple[str, str]:
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--batch", default="dev", choices=["dev", "dev2", "dev3", "dev4", "dev5", "validation"])
+    parser.add_argument("--batch", default="dev", help="a batch of the file: dev, dev2 ... dev5, validation")
     parser.add_argument("--file", type=Path, default=DEFAULT)
     parser.add_argument("--verbose", action="store_true")
     args = parser.parse_args()
-    styles: dict[str, dict[str, str]] = json.loads(args.file.read_text())[args.batch]
+    batches = json.loads(args.file.read_text())
+    if args.batch not in batches or args.batch == "about":
+        raise SystemExit(f"no batch {args.batch!r} in {args.file}")
+    styles: dict[str, dict[str, str]] = batches[args.batch]
     commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True, text=True).stdout
     print(f"batch {args.batch} of {args.file.name}; commit {commit.strip()}; {platform.machine()} CPU\n")
     print("| style | sentences | same spec | refused | other spec |\n|---|---|---|---|---|")

@@ -28,6 +28,9 @@ STILL_REFUSED = {
     "J with one block per region.",
     "The pillars are in the way on the far side, so bring the three pillars to regions E, F and G, and "
     "don't put any object on a region other than the targets.",
+    "Move the three blocks to the opposite regions, but leave the blue block alone until the red block has "
+    "been picked up, because the red one has to be handled first. Once everything has been moved, put the "
+    "yellow block back on region G.",
     "Move the three blocks to the opposite regions. The blue block must stay untouched until the red block "
     "has been touched, because the red one is picked up first. After all of that is done, put the yellow "
     "block back on region G.",
@@ -53,10 +56,26 @@ STILL_REFUSED = {
     "Regions F, G and H must stay empty the whole time, since they are blocked.",
     "The yellow block has two stops: region I and then region G. The other two blocks, red and blue, just "
     "need to go to any empty region at any time.",
+    # dev5: reasons that carry what is not modelled ("should arrive first", "handled first", "has to wait",
+    # "has priority", "as they must stay clear", "visit region I before region G")
+    "The red block should arrive first, so move the red block to the opposite side before the blue block, "
+    "and bring the yellow block over too.",
+    "Exchange the positions of the red block and the blue block, placing red first since blue has to wait "
+    "for it. It doesn't matter when the yellow block goes to the opposite side.",
+    "Because the red block has priority, put it down before the blue block; the three blocks go separately "
+    "to regions G, H and I.",
+    "Put the three blocks on region I one after another, red before blue, and keep regions F, G and H "
+    "empty in the meantime, as they must stay clear.",
+    "Since the yellow block must visit region I before region G, put it on region I first, then on region "
+    "G. Red and blue can go to any empty region at any time.",
 }
 
 NEAR_MISSES_S10: dict[int, list[str]] = {
     1: [
+        "The operator requires that the three blocks be transferred to the opposite side; the blue block "
+        "is to precede the red block.",
+        "Please do the following:\n1. Move all three blocks to the opposite side.\n2. Place the blue block "
+        "before the red block.",
         "Move 3 blocks to opposite side, blue before red.",
         "All three blocks should end up on the opposite side. The blue one needs to be there before the "
         "red one, so place blue first.",
@@ -73,6 +92,9 @@ NEAR_MISSES_S10: dict[int, list[str]] = {
         "opposite side.",
     ],
     2: [
+        "The three blocks are to be distributed over regions H and I, each region receiving exactly one "
+        "block.",
+        "Instructions:\n1) Put the three blocks in regions H and I.\n2) Put only one block in each region.",
         "There are three goal regions, H, I and J. Put the red and blue blocks into them; since a region "
         "holds only one object, each gets one block.",
         "Put the three block into the region H and I, one region is only for one block.",
@@ -83,6 +105,11 @@ NEAR_MISSES_S10: dict[int, list[str]] = {
         "1) put the three blocks into regions H and I\n2) one block per region",
     ],
     3: [
+        "The three pillars shall be returned to the placement area comprising regions E, F and G. At no "
+        "point may any object be placed on regions H or I.",
+        "The pillars need to be on the side of arm c and arm d, that is regions E, F and G, and since the "
+        "other regions must not be used, never put an object on them.",
+        "1 - Move the three pillars to regions E, F and G.\n2 - Never place an object on regions H or I.",
         "Pillars to regions E, F only.",
         "Pillars to regions E, F, G.",
         "Please to move the three pillars into region E, F and G. No object to put on region H.",
@@ -96,6 +123,8 @@ NEAR_MISSES_S10: dict[int, list[str]] = {
         "that's a target.",
     ],
     4: [
+        "First: move the three blocks to the opposite regions, but do not touch the blue block until the "
+        "red block has been touched.\nSecond: after all of that, put the yellow block back on region H.",
         "Opposite regions for all blocks. No touching red until blue is touched. Then yellow back on G.",
         "Move three blocks to opposite regions. Red block is not allow to touch before blue block is "
         "touched. After finishing all, put yellow block back on region G.",
@@ -142,6 +171,8 @@ NEAR_MISSES_S10: dict[int, list[str]] = {
         "going before red. The yellow block only has to reach the opposite side, at any time.",
     ],
     6: [
+        "Step one: place the blue block before the red block.\nStep two: put the three blocks separately "
+        "in regions G, H and I.",
         "G, H, J: one block each. Red before blue.",
         "The red block must be placed before the blue one, as the order matters here. Put the three blocks "
         "separately on regions G, H and J.",
@@ -156,6 +187,8 @@ NEAR_MISSES_S10: dict[int, list[str]] = {
         "J.",
     ],
     7: [
+        "The three blocks shall be deposited on region I sequentially, the red block prior to the blue "
+        "block, and no object shall be deposited on regions F or G in the interim.",
         "All 3 onto I, one by one. Red, then blue. Keep F, G empty meanwhile.",
         "Three blocks put on region I one after other, red block before blue block, in this time region F "
         "and G no object.",
@@ -174,6 +207,8 @@ NEAR_MISSES_S10: dict[int, list[str]] = {
         "region I, during this period region F, G can not place any object.",
     ],
     8: [
+        "Step 1 - put the yellow block on region G.\nStep 2 - put the yellow block on region I.\nAlso, at "
+        "any time, move the red and blue blocks to any empty region.",
         "Yellow: G then I. Red + blue: any empty region, whenever.",
         "Yellow: I then G. Red: any empty region, whenever.",
         "First yellow block put on region I, then put on region H. Red block and blue block put on any "

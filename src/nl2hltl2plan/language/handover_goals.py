@@ -140,6 +140,12 @@ def goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
         rf"{PREP}\s+P(\d+){mods}",
         lambda x: matched(x, 1),
     )
+    # the state asked for: "the pillars need to be on regions E, F and G" (with a modal: "is on" is a state)
+    m.sub(
+        rf"(?:\bwith\s+)?\bB(\d+){mods}\s+(?:should|must|shall|will|needs?\s+to|has\s+to|have\s+to)\s+"
+        rf"(?:all\s+|each\s+|both\s+)?be\s+(?:back\s+)?(?:on|in|at|onto|into)\s+P(\d+){mods}",
+        lambda x: matched(x, 1),
+    )
     # a verb shared with the clause before: "put the red block in H, then the blue block in I"
     m.sub(
         rf"(?<=G\d)(?P<link>\s*,?\s*(?:and\s+)?(?:then\s+)?)B(\d+){mods}\s+(?:back\s+)?{PREP}\s+P(\d+)"

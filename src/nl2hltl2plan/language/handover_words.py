@@ -44,7 +44,7 @@ DROP = (
 PERIOD_WORDS = (
     r"(?:(?:during|in)\s+(?:this|that|the\s+same)\s+(?:whole\s+|entire\s+)?(?:period|time)|in\s+the\s+meantime|meanwhile|"
     r"while\s+doing\s+(?:so|this|that|it)|while\s+(?:this|that)\s+(?:happens|is\s+happening|goes\s+on|is\s+going\s+on)|"
-    r"at\s+the\s+same\s+time|in\s+the\s+process|all\s+the\s+while|the\s+whole\s+time|"
+    r"at\s+the\s+same\s+time|in\s+the\s+process|all\s+the\s+while|the\s+whole\s+time|in\s+the\s+interim|"
     r"throughout(?:\s+(?:this|the|that)\s+(?:process|period|time))?|until\s+then|"
     r"for\s+as\s+long\s+as\s+(?:this|that|it)\s+takes|"
     # "during the whole task", "for the duration of this task", "while you do this", "while this is done"
@@ -220,6 +220,16 @@ REWRITES: tuple[tuple[str, str], ...] = (
     ),
     (r"\bone\s+after\s+(?:one|other)\b", "one after another"),
     (r"\bplease\s+to\b", "please"),
+    # who asks: "the operator requires that the blocks be moved ..."; "please do the following:"
+    (
+        r"^\s*(?:the\s+)?(?:operator|user|client|customer|supervisor|lab|team|we|i)\s+(?:require|request|ask|want)s?\s+"
+        r"that\b",
+        " ",
+    ),
+    (
+        r"^\s*(?:please\s+)?(?:do|carry\s+out|perform|follow)\s+(?:the\s+following|these\s+steps)(?:\s+steps)?\s*:?",
+        " ",
+    ),
     (r"(?<=[a-z])\s*\+\s*(?=[a-z])", " and "),  # "red + blue"
     # "while moving them, ...": the period of the goals
     (
@@ -311,8 +321,9 @@ REWRITES: tuple[tuple[str, str], ...] = (
     # "the goal is to have the blocks on ...": the state asked for, as a goal
     (r"\b(please|to)\s+have\s+(?=(?:the|all|both|each|every)\b)", r"\1 get "),
     # a numbered step: the first, or one after the step before
-    (r"^\s*(?:step\s+(?:1|one)\s*:?|1\s*[):]|\(\s*1\s*\))\s*", "first "),
-    (r"^\s*(?:step\s+(?:[2-9]|two|three|four|five)\s*:?|[2-9]\s*[):]|\(\s*[2-9]\s*\))\s*", "then "),
+    (r"^\s*(?:step\s+(?:1|one)\s*[:-]?|1\s*[):-]|\(\s*1\s*\))\s*", "first "),
+    (r"^\s*(?:step\s+(?:[2-9]|two|three|four|five)\s*[:-]?|[2-9]\s*[):-]|\(\s*[2-9]\s*\))\s*", "then "),
+    (r"^\s*(?:second(?:ly)?|third(?:ly)?|fourth(?:ly)?)\s*[:,]", "then "),
     (r"^\s*then\s*,?\s*then\b", "then"),  # "2) Then move it ...": the step's "then" said twice
     (r"\b(finally|lastly|then|next|afterwards|first)\s*:", r"\1"),  # "Finally: yellow -> G"
     (r"\b(?:remember|be\s+sure|make\s+sure|do\s+not\s+forget|note|keep\s+in\s+mind)\s+(?:to|that)\b", " "),
