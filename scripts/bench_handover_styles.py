@@ -46,7 +46,7 @@ def main() -> None:
     args = parser.parse_args()
     batches = json.loads(args.file.read_text())
     if args.batch not in batches or args.batch == "about":
-        raise SystemExit(f"no batch {args.batch!r} in {args.file}")
+        parser.error(f"no batch {args.batch!r} in {args.file}")
     styles: dict[str, dict[str, str]] = batches[args.batch]
     commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True, text=True).stdout
     print(f"batch {args.batch} of {args.file.name}; commit {commit.strip()}; {platform.machine()} CPU\n")
