@@ -72,6 +72,10 @@ STILL_REFUSED = {
 
 NEAR_MISSES_S10: dict[int, list[str]] = {
     1: [
+        "All three blocks please move to the opposite side, but blue block must first be placed, then red "
+        "block.",
+        "Move the thee blocks to the opposite sied, and place the blue block bfore the red blok.",
+        "Get every block onto the opposite side, but the blue block goes down before the red block does.",
         "The operator requires that the three blocks be transferred to the opposite side; the blue block "
         "is to precede the red block.",
         "Please do the following:\n1. Move all three blocks to the opposite side.\n2. Place the blue block "
@@ -105,6 +109,8 @@ NEAR_MISSES_S10: dict[int, list[str]] = {
         "1) put the three blocks into regions H and I\n2) one block per region",
     ],
     3: [
+        "Move the three pilars to regions E, F and G. Dont place any objcet on regions H or I.",
+        "Take the three pillars to regions E, F and G and keep regions H and I free of objects until then.",
         "The three pillars shall be returned to the placement area comprising regions E, F and G. At no "
         "point may any object be placed on regions H or I.",
         "The pillars need to be on the side of arm c and arm d, that is regions E, F and G, and since the "
@@ -123,6 +129,12 @@ NEAR_MISSES_S10: dict[int, list[str]] = {
         "that's a target.",
     ],
     4: [
+        "Put the three blocks in the opposite regions. Keep your hands off the red block until the blue "
+        "block has been touched. When you're all done, move the yellow block back to region G.",
+        "Move three block into opposite region, the red block can not be touch until blue block be "
+        "touched. At last put yellow block back to region G.",
+        "Move three block into opposite region, the blue block can not be touch until red block be "
+        "touched. At last put yellow block back to region H.",
         "First: move the three blocks to the opposite regions, but do not touch the blue block until the "
         "red block has been touched.\nSecond: after all of that, put the yellow block back on region H.",
         "Opposite regions for all blocks. No touching red until blue is touched. Then yellow back on G.",
@@ -158,6 +170,10 @@ NEAR_MISSES_S10: dict[int, list[str]] = {
         "touch blue block first. After all these, please put yellow block back in region G.",
     ],
     5: [
+        "Exchange red block and blue block the positions, first place blue block. Yellow block to opposite "
+        "side any time is ok.",
+        "Swap the red and blue blocks, placing the blue one frist. Move the yelow block to the opposite "
+        "side at any tmie.",
         "Red <-> blue, blue first. Yellow: opposite side, anytime.",
         "Please change the positions of red block and blue block, blue block first place. Yellow block go "
         "to opposite side any time.",
@@ -171,6 +187,8 @@ NEAR_MISSES_S10: dict[int, list[str]] = {
         "going before red. The yellow block only has to reach the opposite side, at any time.",
     ],
     6: [
+        "Put the three blocks on regions G, H and J, a different region for each block, placing the red "
+        "block before the blue block.",
         "Step one: place the blue block before the red block.\nStep two: put the three blocks separately "
         "in regions G, H and I.",
         "G, H, J: one block each. Red before blue.",
@@ -187,6 +205,10 @@ NEAR_MISSES_S10: dict[int, list[str]] = {
         "J.",
     ],
     7: [
+        "One after another put three blocks to region I, red block before blue block, during this period "
+        "do not put object on region F, G.",
+        "Place the three blocks one after anohter on region I, the red blcok before the blue block, and "
+        "put nothign on regions F and G meanwhile.",
         "The three blocks shall be deposited on region I sequentially, the red block prior to the blue "
         "block, and no object shall be deposited on regions F or G in the interim.",
         "All 3 onto I, one by one. Red, then blue. Keep F, G empty meanwhile.",
@@ -207,6 +229,8 @@ NEAR_MISSES_S10: dict[int, list[str]] = {
         "region I, during this period region F, G can not place any object.",
     ],
     8: [
+        "Move the yellow block to region G first and to region I after that. Move the red and blue blocks "
+        "to empty regions whenever you like.",
         "Step 1 - put the yellow block on region G.\nStep 2 - put the yellow block on region I.\nAlso, at "
         "any time, move the red and blue blocks to any empty region.",
         "Yellow: G then I. Red + blue: any empty region, whenever.",

@@ -234,7 +234,7 @@ def _read_exchanges(m: Marked, exchange: Callable[..., str]) -> None:
         lambda x: exchange(x, x.group(2)),
     )
     m.sub(
-        rf"(?:\bwhile\s+)?\b{SWAP}\s+(?:the\s+)?(?:positions?\s+|places?\s+|locations?\s+|spots?\s+)?(?:of\s+)?B(\d+)(?:\s+(?:s\s+)?(?:positions?|places?|locations?))?(?:\s+(?:around|round|over|with\s+each\s+other|with\s+one\s+another))?",
+        rf"(?:\bwhile\s+)?\b{SWAP}\s+(?:the\s+)?(?:positions?\s+|places?\s+|locations?\s+|spots?\s+)?(?:of\s+)?B(\d+)(?:\s+(?:s\s+|the\s+|their\s+)?(?:positions?|places?|locations?))?(?:\s+(?:around|round|over|with\s+each\s+other|with\s+one\s+another))?",
         exchange,
     )
     m.sub(

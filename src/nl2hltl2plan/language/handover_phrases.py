@@ -57,6 +57,7 @@ def normalise(sentence: str) -> str:
     text = re.sub(r"[a-z]+", lambda w: TYPOS.get(w.group(0), w.group(0)), text)
     for pattern, replacement in REWRITES:
         text = re.sub(pattern, replacement, text)
+    text = re.sub(r"\bplease\b\s*,?", " ", text)  # politeness anywhere: "all three blocks please move to ..."
     return " ".join(text.split())
 
 
@@ -140,6 +141,7 @@ def _mark_one_per_region(m: Marked) -> None:
         rf"(?:each|every)\s+{region}\b",
         rf"\b(?:with\s+)?{one}\s+(?:(?:is|being|may|can)\s+)?(?:allowed\s+|permitted\s+)?per\s+{region}\b",
         r"\bone\s+(?:each|apiece)\b",
+        rf"(?:,\s*)?\b(?:an?\s+)?(?:different|separate|distinct)\s+{region}\s+(?:for|per)\s+(?:each|every)\s+{NOUN}\b",
         # "each gets one block", "one region is only for one block"
         rf"(?:,\s*)?\beach\s+(?:one\s+)?(?:gets|receives|takes|holds)\s+(?:exactly\s+)?(?:one|a\s+single)(?:\s+{NOUN})?\b",
         rf"\b(?:each|every|one|a)\s+{region}\s+(?:is\s+)?(?:only\s+)?for\s+(?:only\s+)?(?:one|a\s+single|1)(?:\s+{NOUN})?"
@@ -247,7 +249,8 @@ def _mark_blocks(m: Marked, scene: Scene, previous: str) -> None:
         m.sub(generic, lambda match: _new_block(m, scene.blocks, match.group(0)))
     # "never place an object on ...", "do not put anything on ...": a generic object after a negated verb
     m.sub(
-        rf"\b({NEG}\s+(?:{VERB}|drop|leave|lay)|placing|putting|dropping|setting)\s+(?:(?:a|an|any)\s+{NOUN}|any\s+{NOUNS}|anything)\b",
+        rf"\b({NEG}\s+(?:{VERB}|drop|leave|lay)|placing|putting|dropping|setting)\s+(?:(?:a|an|any)\s+{NOUN}|any\s+{NOUNS}|anything|"
+        rf"(?:objects?|items?|things?)(?=\s+(?:on|in|onto|into)\b))\b",
         lambda match: match.group(1) + _new_block(m, scene.blocks, match.group(0)),
     )
     # "three block" (a count with a singular noun), "be placed any object"

@@ -69,6 +69,8 @@ def read_orders(m: Marked) -> list[tuple[str, str]]:
     later = r"(?:after\s+B\d+|second|next|last|afterwards?)"
     then = rf"(?:{THEN}|followed\s+by|and(?=\s+(?:{VERB}\s+)?B\d+\s+{later}\b))"
 
+    m.sub(rf"\bB(\d+)\s+{MODAL}{DONE}\s*(?:first\s*)?,?\s*{then}\s+B(\d+){end}", lambda x: add(x, False))
+
     def add_then(x: re.Match[str]) -> str:  # "the red block first and the blue block after it": it = red
         if x.group(3) is not None and m.blocks[int(x.group(3))] != m.blocks[int(x.group(1))]:
             return x.group(0)
@@ -137,9 +139,9 @@ def read_leaders(m: Marked) -> list[str]:
         return " "
 
     m.sub(r"\b(?:place|put|move|do|handle|take)\s+B(\d+)\s+(?:down\s+)?first\b(?=\s*(?:$|,|\band\b|\)))", add)
-    m.sub(
-        r"\bB(\d+)\s+first\s+(?:place|placed|put|goes|go)\b(?=\s*(?:$|,|\band\b|\)))", add
-    )  # "red block first place"
+    # non-native: "red block first place", "..., first place red block"
+    m.sub(r"\bB(\d+)\s+first\s+(?:place|placed|put|goes|go)\b(?=\s*(?:$|,|\band\b|\)))", add)
+    m.sub(r"\bfirst\s+(?:place|put|move)\s+B(\d+)(?=\s*(?:$|,|\band\b|\)))", add)
     m.sub(
         rf"(?:\b(?:with|placing|putting|moving|and)\s+)?\bB(\d+)\s+(?:down\s+)?{MODAL}(?:(?:placed|put|moved|set)\s+|goe?s?\s+|"
         r"comes?\s+|going\s+|coming\s+)?first\b(?=\s*(?:$|,|\band\b|\)))",
@@ -163,7 +165,7 @@ def read_touch_guards(m: Marked) -> list[tuple[str, str]]:
     # Y's touch, active ("an arm touched Y"), passive ("Y has been touched") or elliptic ("... before Y")
     other = (
         rf"(?:(?:A\s+)?(?:has\s+|have\s+|had\s+)?(?:already\s+)?(?:{TOUCHED}|{TOUCHING}|{TOUCH})\s+B(?P<y1>\d+)|B(?P<y2>\d+)\s+"
-        rf"(?:(?:has|have|had)\s+(?:already\s+)?been|is|was|gets|got|being)\s+(?:already\s+)?{TOUCHED}(?:\s+by\s+A)?|"
+        rf"(?:(?:has|have|had)\s+(?:already\s+)?been|is|was|gets|got|being|be)\s+(?:already\s+)?{TOUCHED}(?:\s+by\s+A)?|"
         rf"B(?P<y3>\d+){end}|B(?P<y4>\d+)\s+(?:has|have|had)\s+been{end})(?:\s+first{end})?"
     )
     may = _MAY
@@ -174,7 +176,7 @@ def read_touch_guards(m: Marked) -> list[tuple[str, str]]:
     )
     not_touched = (
         rf"(?:\bwith\s+)?\bB(?P<x>\d+)\s+(?:(?:is|are|must|may|can|should|shall|will)\s+)?{NEG}\s+(?:ever\s+)?"
-        rf"(?:(?:to\s+)?be\s+|being\s+)?{TOUCHED}(?:\s+by\s+A)?"
+        rf"(?:(?:to\s+)?be\s+|being\s+)?(?:{TOUCHED}|(?<=be\s){TOUCH})(?:\s+by\s+A)?"
     )
     until = r"(?:until|before|unless)"
     after = r"(?:only\s+)?(?:after|once|when)"
@@ -186,7 +188,7 @@ def read_touch_guards(m: Marked) -> list[tuple[str, str]]:
         rf"\b{until}\s+{other}\s*,?\s*{no_touch}",
         rf"\b{until}\s+{other}\s*,?\s*{not_touched}",
         rf"\bleave\s+B(?P<x>\d+)\s+(?:alone|untouched|be)\s+{until}\s+{other}",
-        rf"\b(?:keep|hold)\s+A\s+(?:off|away\s+from)\s+B(?P<x>\d+)\s+{until}\s+{other}",
+        rf"\b(?:keep|hold)\s+(?:A|your\s+hands|hands)\s+(?:off|away\s+from)\s+B(?P<x>\d+)\s+{until}\s+{other}",
         rf"\bB(?P<x>\d+)\s+(?:is|are|stays?|remains?)\s+off\s+limits\s+{until}\s+{other}",
         rf"\bB(?P<x>\d+)\s+{MODAL}wait\s+{until}\s+{other}",
         rf"\bB(?P<x>\d+)\s+{MODAL}(?:(?:remains?|stays?|remaining|staying|be\s+left|left)\s+)?untouched\s+{until}\s+{other}",

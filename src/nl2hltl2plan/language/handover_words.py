@@ -68,7 +68,7 @@ AFTER_ALL = (
     r"the\s+above)|everything(?:\s+else)?)|finally|lastly|last\s+of\s+all|at\s+the\s+(?:very\s+)?end|in\s+the\s+end|"
     r"after\s+(?:finish(?:ing)?|complet(?:e|ing)|doing|done)\s+(?:with\s+)?(?:all\s+(?:of\s+)?)?(?:this|these|that|everything|them)|"
     r"after\s+(?:finishing|completing)\s+(?:it\s+)?all|"
-    r"as\s+(?:a|the)\s+(?:final|last)\s+step|(?:up)?on\s+(?:completion|finishing)(?:\s+of\s+(?:this|these|that|the\s+above|all\s+(?:of\s+)?(?:this|these|that)))?)"
+    r"as\s+(?:a|the)\s+(?:final|last)\s+step|at\s+last|(?:up)?on\s+(?:completion|finishing)(?:\s+of\s+(?:this|these|that|the\s+above|all\s+(?:of\s+)?(?:this|these|that)))?)"
 )
 THEN = (
     r"(?:then|after\s+that|afterwards?|next|subsequently|later|and\s+then|(?:and\s+)?from\s+there|"
@@ -220,6 +220,8 @@ REWRITES: tuple[tuple[str, str], ...] = (
     ),
     (r"\bone\s+after\s+(?:one|other)\b", "one after another"),
     (r"\bplease\s+to\b", "please"),
+    (r"\b(do|does|can|won|should|must|is|are)nt\b", r"\1 not"),  # "dont", "cant" without the apostrophe
+    (r"\b(any\s+time|whenever)\s+(?:is|are)\s+(?:ok|okay|fine)\b", r"\1"),
     # who asks: "the operator requires that the blocks be moved ..."; "please do the following:"
     (
         r"^\s*(?:the\s+)?(?:operator|user|client|customer|supervisor|lab|team|we|i)\s+(?:require|request|ask|want)s?\s+"
@@ -373,10 +375,10 @@ TYPO_WORDS = (
     "block blocks region regions opposite place placed transfer before after yellow pillar pillars object "
     "objects separately another empty touch touched exchange position positions should until during period "
     "please first other across three placement separately touching picked finish finished after target "
-    "targets"
+    "targets nothing anything meanwhile"
 ).split()
 REAL_WORDS = frozenset(
-    "pace paced touche fist firs pease pleas there thee tree piked finnish blacks placid daring packed "
+    "pace paced touche fist firs pease pleas there tree piked finnish blacks placid daring packed "
     "pecked "
     "pocked".split()
 )
@@ -386,6 +388,12 @@ VOWELS = "aeiou"
 # short words, too short for the table's rules, in their commonest misspellings
 SHORT_TYPOS = {
     "thsi": "this",
+    "sied": "side",
+    "sdie": "side",
+    "bcak": "back",
+    "bakc": "back",
+    "tmie": "time",
+    "tiem": "time",
     "tihs": "this",
     "teh": "the",
     "hte": "the",
