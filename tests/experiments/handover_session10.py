@@ -68,10 +68,14 @@ STILL_REFUSED = {
     "empty in the meantime, as they must stay clear.",
     "Since the yellow block must visit region I before region G, put it on region I first, then on region "
     "G. Red and blue can go to any empty region at any time.",
+    # dev7: "their" across sentences (refused on purpose, as "swap them" is)
+    "The red block has to be placed before the blue block. Swap their positions. The yellow block goes to "
+    "the opposite side at any time.",
 }
 
 NEAR_MISSES_S10: dict[int, list[str]] = {
     1: [
+        "Blue goes before red. With that rule, transfer all three blocks to the opposite side.",
         "All three blocks please move to the opposite side, but blue block must first be placed, then red "
         "block.",
         "Move the thee blocks to the opposite sied, and place the blue block bfore the red blok.",
@@ -96,6 +100,7 @@ NEAR_MISSES_S10: dict[int, list[str]] = {
         "opposite side.",
     ],
     2: [
+        "The blocks should each be placed in one of regions H and I, no two in the same region.",
         "The three blocks are to be distributed over regions H and I, each region receiving exactly one "
         "block.",
         "Instructions:\n1) Put the three blocks in regions H and I.\n2) Put only one block in each region.",
@@ -129,6 +134,8 @@ NEAR_MISSES_S10: dict[int, list[str]] = {
         "that's a target.",
     ],
     4: [
+        "All blocks are to be transferred to the opposite regions; the red block may only be touched once "
+        "the blue block has been touched; finally, the yellow block is to be put back on region G.",
         "Put the three blocks in the opposite regions. Keep your hands off the red block until the blue "
         "block has been touched. When you're all done, move the yellow block back to region G.",
         "Move three block into opposite region, the red block can not be touch until blue block be "
@@ -205,6 +212,8 @@ NEAR_MISSES_S10: dict[int, list[str]] = {
         "J.",
     ],
     7: [
+        "While this is being done, nothing may be placed on regions F and H: put the three blocks one "
+        "after another on region I, red before blue.",
         "One after another put three blocks to region I, red block before blue block, during this period "
         "do not put object on region F, G.",
         "Place the three blocks one after anohter on region I, the red blcok before the blue block, and "

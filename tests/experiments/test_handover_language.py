@@ -142,7 +142,11 @@ def test_near_misses_are_refused_or_give_another_spec(task_id, text):
 
 @pytest.mark.parametrize(
     ("batch", "style"),
-    [(batch, style) for batch in ("dev", "dev2", "dev3", "dev4", "dev5", "dev6") for style in STYLES[batch]],
+    [
+        (batch, style)
+        for batch in ("dev", "dev2", "dev3", "dev4", "dev5", "dev6", "dev7")
+        for style in STYLES[batch]
+    ],
 )
 def test_session10_styles_give_the_written_specs_or_are_refused_by_name(batch, style):
     """Our rephrasings by style (plain, terse, formal, explanatory, passive, numbered steps, non-native,

@@ -148,7 +148,7 @@ def _mark_one_per_region(m: Marked) -> None:
         r"(?:\s+only)?\b",
         rf"(?<=,)\s*(?:with\s+)?(?:one|a\s+single)\s+{NOUN}\s+(?:each|apiece)\b",  # "..., one block each"
         rf"\b(?:with\s+)?{one}\s+(?:per|in\s+each|on\s+each|for\s+each)\b(?!\s+of\b)",
-        rf"\b(?:with\s+)?no\s+two\s+{NOUNS}\s+(?:(?:may|can|should|will)\s+)?(?:sharing|share|occupy|be\s+(?:in|on))\s+"
+        rf"(?:,\s*)?\b(?:with\s+)?no\s+two(?:\s+{NOUNS})?\s+(?:(?:may|can|should|will)\s+)?(?:sharing|share|occupy|be\s+(?:in|on)|in|on)\s+"
         rf"(?:a\s+|the\s+same\s+)?{region}\b",
         rf"\beach\s+{NOUN}\s+(?:gets|has|takes|goes\s+(?:to|in|into))\s+(?:its\s+own|a\s+(?:different|separate))\s+{region}\b",
         rf"\b(?:do\s+not|never)\s+(?:put|place)\s+(?:more\s+than\s+(?:one|a\s+single)(?:\s+{NOUN})?|(?:two|2)\s+{NOUNS})\s+"

@@ -251,7 +251,11 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\b(that|it|there|what|here)\s+s\b", r"\1 is"),  # "a region that's not a target"
     # "..., than place ...": a typo ("than" is never comparative between a comma and a verb)
     (r"(?<=,)\s*than\s+(?=(?:place|put|move|transfer|bring|take)\b)", " then "),
-    (r"^\s*(?:with\s+that|that\s+said|having\s+said\s+that)\s*,", " "),
+    (
+        r"^\s*(?:with\s+(?:that|this)(?:\s+(?:rule|constraint|condition|requirement))?|that\s+said|"
+        r"having\s+said\s+that)\s*,",
+        " ",
+    ),
     (r"\band\s+(?:because|since)\s+", "and "),
     (r"^\s*(?:steps|procedure|instructions|plan|to\s+do)\s*:\s*", " "),
     # a reason clause: read as a clause of the instruction ("because regions F, G and H must stay clear, ...")
