@@ -70,11 +70,11 @@ def mark(sentence: str, scene: Scene, before: Marked | None = None) -> Marked:
     _mark_arms(m)
     # "do not put anything on them": after a preposition of place, a pronoun names places (a cell holds
     # one block, so nothing goes on a block); resolved once the places are marked
-    m.sub(r"\b(on|onto|in|into)\s+(each\s+of\s+)?(?:them|it)\b", r"\1 \2 PLACEREF")
+    m.sub(r"\b(on|onto|in|into)\s+(each\s+of\s+)?(them|it)\b", r"\1 \2 PLACEREF_\3")
     _mark_blocks(m, scene, previous.last_one)
     _join_particles(m)
     # "put the three blocks there", "the yellow block is to be moved there as well"
-    m.sub(rf"\b((?:{VERB}|{GERUND})\s+B\d+|B\d+\s+{MODAL}{DONE})\s+there\b", r"\1 to PLACEREF")
+    m.sub(rf"\b((?:{VERB}|{GERUND})\s+B\d+|B\d+\s+{MODAL}{DONE})\s+there\b", r"\1 PLACEREF_there")
     mark_places(m, scene, previous.last_regions)
     mark_place_pronouns(m, previous.last_regions)
     mark_capacity(m)

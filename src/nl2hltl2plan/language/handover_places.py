@@ -16,7 +16,8 @@ from nl2hltl2plan.language.handover_words import APPOSITION, EMPTY
 
 def mark_place_pronouns(m: Marked, named_before: tuple[str, ...]) -> None:
     """'them' after 'on', 'there' after a moved block: the last place named before it in the sentence, else
-    the last regions the sentence before named; with neither it stays 'them' (unread, so refused). A place
+    the last regions the sentence before named; with neither the word stays (unread, so refused; 'there'
+    may still be read as a word: 'the red one should be put there before the blue one'). A place
     named as a heading ('regions H, I and J: put the blocks there') or defined ('regions G, H and I are the
     targets: place the blocks in them') is then read where the pronoun stands."""
     if "PLACEREF" not in m.text:
@@ -26,16 +27,18 @@ def mark_place_pronouns(m: Marked, named_before: tuple[str, ...]) -> None:
     headings: list[str] = []
 
     def resolve(match: re.Match[str]) -> str:
+        word = match.group(1)
+        to = " to " if word == "there" else " "
         before = re.findall(r"\bP(\d+)\b", m.text[: match.start()])
         if before:
             if re.search(rf"\bP{before[-1]}\s*:", m.text):
                 headings.append(before[-1])
-            return _new_place(m, m.places[int(before[-1])])
+            return to + _new_place(m, m.places[int(before[-1])])
         if named_before:
-            return _new_place(m, Place("regions", named_before, text="them"))
-        return " them "
+            return to + _new_place(m, Place("regions", named_before, text=word))
+        return f" {word} "
 
-    m.sub(r"\bPLACEREF\b", resolve)
+    m.sub(r"\bPLACEREF_(them|it|there)\b", resolve)
     for k in headings:
         m.sub(rf"\bP{k}\s*:", " ")
 
