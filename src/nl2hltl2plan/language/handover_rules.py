@@ -326,9 +326,8 @@ def _read_only_on(m: Marked) -> list[Prohibition]:
 
     def goal_only(match: re.Match[str]) -> str:  # "move the pillars to E, F and G only": the goal stays
         keep = m.places[int(match.group("p"))]
-        if keep.kind not in ("regions", "opposite"):
+        if keep.kind != "regions":  # named regions only: a guard holds for every goal of the sentence
             return match.group(0)
-        # all but the goal's own targets (per block for "the opposite side")
         text = match.group(0).strip()
         out.append((blocks_of(m, match.group("b")), Place("complement", keep.regions, text=text), [], text))
         return f" {match.group('goal')} "

@@ -220,7 +220,8 @@ REWRITES: tuple[tuple[str, str], ...] = (
     ),
     (r"\bone\s+after\s+(?:one|other)\b", "one after another"),
     (r"\bplease\s+to\b", "please"),
-    (r"\b(do|does|can|won|should|must|is|are)nt\b", r"\1 not"),  # "dont", "cant" without the apostrophe
+    (r"\bwont\b", "will not"),
+    (r"\b(do|does|can|should|must|is|are)nt\b", r"\1 not"),  # "dont", "cant" without the apostrophe
     (r"\b(any\s+time|whenever)\s+(?:is|are)\s+(?:ok|okay|fine)\b", r"\1"),
     # who asks: "the operator requires that the blocks be moved ..."; "please do the following:"
     (
@@ -378,12 +379,11 @@ REWRITES += tuple(
 TYPO_WORDS = (
     "block blocks region regions opposite place placed transfer before after yellow pillar pillars object "
     "objects separately another empty touch touched exchange position positions should until during period "
-    "please first other across three placement separately touching picked finish finished after target "
-    "targets nothing anything meanwhile"
+    "please first other across three placement touching picked finish finished target targets nothing "
+    "anything meanwhile"
 ).split()
 REAL_WORDS = frozenset(
-    "pace paced touche fist firs pease pleas there tree piked finnish blacks placid daring packed "
-    "pecked "
+    "pace paced touche fist firs pease pleas there tree piked finnish blacks placid daring packed pecked "
     "pocked".split()
 )
 VOWELS = "aeiou"
