@@ -71,10 +71,17 @@ STILL_REFUSED = {
     # dev7: "their" across sentences (refused on purpose, as "swap them" is)
     "The red block has to be placed before the blue block. Swap their positions. The yellow block goes to "
     "the opposite side at any time.",
+    # dev8: "that way nothing is stacked" (a negation, so not dropped as framing), "stack"
+    "Every goal region takes a single block, so place the three blocks in regions H, I and J, one per "
+    "region; that way nothing is stacked.",
+    "Stack the three blocks nowhere but region I, one after another, red before blue, and put nothing on "
+    "regions F, G and H meanwhile.",
 }
 
 NEAR_MISSES_S10: dict[int, list[str]] = {
     1: [
+        "To keep things simple, move all three blocks to the opposite side, and because the blue block "
+        "must be there first, place it before the red block.",
         "Blue goes before red. With that rule, transfer all three blocks to the opposite side.",
         "All three blocks please move to the opposite side, but blue block must first be placed, then red "
         "block.",
@@ -114,6 +121,7 @@ NEAR_MISSES_S10: dict[int, list[str]] = {
         "1) put the three blocks into regions H and I\n2) one block per region",
     ],
     3: [
+        "Pillars (two) must go to region E, F, G; any object must not be placed to region H, I, J.",
         "Move the three pilars to regions E, F and G. Dont place any objcet on regions H or I.",
         "Take the three pillars to regions E, F and G and keep regions H and I free of objects until then.",
         "The three pillars shall be returned to the placement area comprising regions E, F and G. At no "
@@ -134,6 +142,10 @@ NEAR_MISSES_S10: dict[int, list[str]] = {
         "that's a target.",
     ],
     4: [
+        "Move the three blocks to the opposite regions; for safety, no arm may touch the red block until "
+        "the blue block has been touched. Once that is done, put the yellow block back on region G.",
+        "The three blocks should be transfer to opposite regions. Blue block must not be touched before "
+        "red block was touched. After all, yellow block must be put back to region H.",
         "All blocks are to be transferred to the opposite regions; the red block may only be touched once "
         "the blue block has been touched; finally, the yellow block is to be put back on region G.",
         "Put the three blocks in the opposite regions. Keep your hands off the red block until the blue "
@@ -177,6 +189,8 @@ NEAR_MISSES_S10: dict[int, list[str]] = {
         "touch blue block first. After all these, please put yellow block back in region G.",
     ],
     5: [
+        "Swap the red and blue blocks (blue goes down first) and, whenever you want, move the yellow block "
+        "across to the opposite side.",
         "Exchange red block and blue block the positions, first place blue block. Yellow block to opposite "
         "side any time is ok.",
         "Swap the red and blue blocks, placing the blue one frist. Move the yelow block to the opposite "
@@ -212,6 +226,8 @@ NEAR_MISSES_S10: dict[int, list[str]] = {
         "J.",
     ],
     7: [
+        "Because region F must stay empty meanwhile, put the three blocks one after another on region I, "
+        "red before blue, and put nothing on regions G and J.",
         "While this is being done, nothing may be placed on regions F and H: put the three blocks one "
         "after another on region I, red before blue.",
         "One after another put three blocks to region I, red block before blue block, during this period "
@@ -238,6 +254,8 @@ NEAR_MISSES_S10: dict[int, list[str]] = {
         "region I, during this period region F, G can not place any object.",
     ],
     8: [
+        "Yellow block must be placed to region G first and to region I after. Red and blue blocks must be "
+        "moved to any empty region at any time.",
         "Move the yellow block to region G first and to region I after that. Move the red and blue blocks "
         "to empty regions whenever you like.",
         "Step 1 - put the yellow block on region G.\nStep 2 - put the yellow block on region I.\nAlso, at "
@@ -257,5 +275,17 @@ NEAR_MISSES_S10: dict[int, list[str]] = {
         "blocks to any empty region.",
         "Please first place the yellow block to region I, than place the yellow block to region H, and "
         "move red and blue blocks to any empty region at any time.",
+    ],
+}
+
+# A reason that names a region is read, not dropped as framing: without its region the spec would differ.
+REASONS_READ: dict[int, list[str]] = {
+    7: [
+        "Because region F must stay empty meanwhile, put the three blocks one after another on region I, red "
+        "before blue, and put nothing on regions G and H.",
+    ],
+    3: [
+        "To keep things tidy, move the three pillars to regions E, F and G; since regions H, I and J must "
+        "stay free, put nothing on them.",
     ],
 }

@@ -23,7 +23,7 @@ from handover_heldout import (
     STACKED_MARKERS,
 )
 from handover_rephrasings import REPHRASINGS
-from handover_session10 import NEAR_MISSES_S10, STILL_REFUSED, STYLES
+from handover_session10 import NEAR_MISSES_S10, REASONS_READ, STILL_REFUSED, STYLES
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.translate import translate
@@ -167,6 +167,14 @@ def test_session10_validation_is_read_right_or_refused_never_misread(style):
     written spec, 16 were refused by name, 0 another spec: results/handover/generality_session10.md)."""
     for task, text in STYLES["validation"][style].items():
         _read_right_or_refused(int(task), text)
+
+
+@pytest.mark.parametrize(
+    ("task_id", "text"), [(t, text) for t, texts in REASONS_READ.items() for text in texts]
+)
+def test_a_reason_that_names_a_region_is_read_not_dropped(task_id, text):
+    equal, why = specs_equivalent(_spec(task_id, text), TASKS[task_id].hierarchical())
+    assert equal, why
 
 
 @pytest.mark.parametrize("task_id", sorted(NEAR_MISSES_S10))

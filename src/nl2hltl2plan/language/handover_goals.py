@@ -159,7 +159,7 @@ def goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
         lambda x: f" G{x.group(1)} then " + again(clauses[int(x.group(1))], x),
     )
     m.sub(  # "on I first and on G second": the second place named after the first
-        rf"\bG(\d+)(?P<link>\s+first\s*,?\s*and\s+)(?:back\s+)?{PREP}\s+P(\d+){mods}\s+(?:second|next|afterwards?|last)\b",
+        rf"\bG(\d+)(?P<link>\s+first\s*,?\s*and\s+)(?:back\s+)?{PREP}\s+P(\d+){mods}\s+(?:second|next|afterwards?|after|last)\b(?!\s+B)",
         lambda x: f" G{x.group(1)} then " + again(clauses[int(x.group(1))], x),
     )
     _markers(m, clauses)

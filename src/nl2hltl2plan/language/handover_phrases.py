@@ -55,10 +55,34 @@ def normalise(sentence: str) -> str:
     text = re.sub(r"([,()/:])", r" \1 ", text)
     text = re.sub(r"\b(\w+)'s\b", r"\1 s", text)  # red's -> red s (a possessive)
     text = re.sub(r"[a-z]+", lambda w: TYPOS.get(w.group(0), w.group(0)), text)
+    text = _drop_framing(text)
     for pattern, replacement in REWRITES:
         text = re.sub(pattern, replacement, text)
     text = re.sub(r"\bplease\b\s*,?", " ", text)  # politeness anywhere: "all three blocks please move to ..."
     return " ".join(text.split())
+
+
+# words that may carry a meaning here: a block, a place, an arm, a count, a negation, an order or a time
+_MEANING = re.compile(
+    r"\b(?:red|blue|yellow|blocks?|cubes?|pillars?|objects?|items?|pieces?|ones?|it|its|them|they|their|regions?|"
+    r"areas?|zones?|sides?|places?|spots?|positions?|cells?|locations?|opposite|[a-j]|arms?|robots?|one|two|three|"
+    r"four|both|all|each|every|\d+|not|no|never|nothing|none|cannot|without|before|after|first|then|until|once|"
+    r"last|next|finally|final|step|steps|end|start|beginning|later|earlier|second|third|previous|prior|following|"
+    r"afterwards?|order|while|during|meanwhile|time|any|empty|free|clear|exchange|swap|touch\w*)\b"
+)
+
+
+def _drop_framing(text: str) -> str:
+    """A purpose or reason that names nothing the reader could use ('to keep things simple, ...', 'for
+    safety, ...', '..., since that is faster') frames the sentence and is dropped; one that names a block,
+    a place, an arm, a count, a negation, an order or a time stays to be read (or refused)."""
+    lead = re.match(r"\s*(?:to|in\s+order\s+to|for|because|since|as)\s+([^,]{1,60}),", text)
+    if lead and not _MEANING.search(lead.group(1)):
+        text = text[lead.end() :]
+    tail = re.search(r",\s*(?:because|since|as|so\s+that|for)\s+([^,]+)$", text)
+    if tail and not _MEANING.search(tail.group(1)):
+        text = text[: tail.start()]
+    return text
 
 
 def mark(sentence: str, scene: Scene, before: Marked | None = None) -> Marked:

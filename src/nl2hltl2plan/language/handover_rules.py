@@ -144,7 +144,7 @@ def read_leaders(m: Marked) -> list[str]:
     m.sub(r"\bfirst\s+(?:place|put|move)\s+B(\d+)(?=\s*(?:$|,|\band\b|\)))", add)
     m.sub(
         rf"(?:\b(?:with|placing|putting|moving|and)\s+)?\bB(\d+)\s+(?:down\s+)?{MODAL}(?:(?:placed|put|moved|set)\s+|goe?s?\s+|"
-        r"comes?\s+|going\s+|coming\s+)?first\b(?=\s*(?:$|,|\band\b|\)))",
+        r"comes?\s+|going\s+|coming\s+)?(?:down\s+|there\s+)?first\b(?=\s*(?:$|,|\band\b|\)))",
         add,
     )
     return out

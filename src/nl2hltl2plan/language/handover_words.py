@@ -68,7 +68,7 @@ AFTER_ALL = (
     r"the\s+above)|everything(?:\s+else)?)|finally|lastly|last\s+of\s+all|at\s+the\s+(?:very\s+)?end|in\s+the\s+end|"
     r"after\s+(?:finish(?:ing)?|complet(?:e|ing)|doing|done)\s+(?:with\s+)?(?:all\s+(?:of\s+)?)?(?:this|these|that|everything|them)|"
     r"after\s+(?:finishing|completing)\s+(?:it\s+)?all|"
-    r"as\s+(?:a|the)\s+(?:final|last)\s+step|at\s+last|(?:up)?on\s+(?:completion|finishing)(?:\s+of\s+(?:this|these|that|the\s+above|all\s+(?:of\s+)?(?:this|these|that)))?)"
+    r"as\s+(?:a|the)\s+(?:final|last)\s+step|at\s+last|after\s+all(?=\s*,)|(?:up)?on\s+(?:completion|finishing)(?:\s+of\s+(?:this|these|that|the\s+above|all\s+(?:of\s+)?(?:this|these|that)))?)"
 )
 THEN = (
     r"(?:then|after\s+that|afterwards?|next|subsequently|later|and\s+then|(?:and\s+)?from\s+there|"
@@ -167,6 +167,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
     ),
     (r"^\s*(?:two|three|a\s+few)\s+things\s*:", " "),
     (r"\s*,?\s*\bon\s+the\s+other\s+hand\b\s*,?", " "),
+    (r"^\s*then\s+again\s*,", " "),  # "Then again, ...": "on the other hand", not a step
     (r"^\s*as\s+(?:for|to|regards)\s+(?:the\s+)?(?:order|ordering|sequence)\s*,", " "),
     (r"\b(?:once|when|after)\s+it\s+(?:is|gets|has\s+been\s+placed)\s+there\s*,", " then "),
     (r"\b(?<!to\s)(?<!on\s)(?<!in\s)anywhere\s+(?:empty|free)\b", "to any empty region"),
@@ -240,7 +241,20 @@ REWRITES: tuple[tuple[str, str], ...] = (
         r"(?:them|it|this|that|so|the\s+(?:blocks|pillars|objects))\b",
         "meanwhile",
     ),
-    (r"\s*,?\s*\b(?:as|since|because)\s+(?:the\s+)?order\s+(?:matters|is\s+important)(?:\s+here)?\b", " "),
+    # reasons that say nothing but that the order or the timing was meant
+    (
+        r"\s*,?\s*\b(?:as|since|because)\s+(?:(?:the\s+)?order\s+(?:matters|is\s+important)(?:\s+here)?|that\s+is\s+the\s+"
+        r"order\s+(?:we|i)\s+(?:need|want))\b",
+        " ",
+    ),
+    (
+        r"\s*,?\s*\b(?:as|since|because)\s+(?:their|its|the)\s+timing\s+(?:is\s+free|does\s+not\s+matter|is\s+up\s+to\s+you)\b",
+        " in any order",
+    ),
+    (
+        r"\b(blocks|pillars|objects|cubes|items)\s*\(\s*(two|three|four|\d)\s*\)",
+        r"\2 \1",
+    ),  # "pillars (three)"
     # non-native: "the blue block is not allow to touch": not to be touched (a block is the subject: not "the
     # arm is not allowed to touch the blue block")
     (
