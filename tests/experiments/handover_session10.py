@@ -76,10 +76,15 @@ STILL_REFUSED = {
     "region; that way nothing is stacked.",
     "Stack the three blocks nowhere but region I, one after another, red before blue, and put nothing on "
     "regions F, G and H meanwhile.",
+    # dev9: "there is no order for them" (a statement about an order, not read)
+    "Put the yellow block on region I, then on region G. Move the red and blue blocks to any empty region "
+    "at any time; there is no order for them.",
 }
 
 NEAR_MISSES_S10: dict[int, list[str]] = {
     1: [
+        "Can you get the three cubes to the opposite side? Make sure the blue cube is placed before the "
+        "red cube.",
         "To keep things simple, move all three blocks to the opposite side, and because the blue block "
         "must be there first, place it before the red block.",
         "Blue goes before red. With that rule, transfer all three blocks to the opposite side.",
@@ -107,6 +112,7 @@ NEAR_MISSES_S10: dict[int, list[str]] = {
         "opposite side.",
     ],
     2: [
+        "Pop the three blocks into regions H and I, one apiece.",
         "The blocks should each be placed in one of regions H and I, no two in the same region.",
         "The three blocks are to be distributed over regions H and I, each region receiving exactly one "
         "block.",
@@ -121,6 +127,10 @@ NEAR_MISSES_S10: dict[int, list[str]] = {
         "1) put the three blocks into regions H and I\n2) one block per region",
     ],
     3: [
+        "Carry the three pillars across to regions E, F and G, and on no account place an object on region "
+        "H.",
+        "Move the three pillars to regions E, F and G. Restriction: objects may only be placed on regions "
+        "E, F, G and H.",
         "Pillars (two) must go to region E, F, G; any object must not be placed to region H, I, J.",
         "Move the three pilars to regions E, F and G. Dont place any objcet on regions H or I.",
         "Take the three pillars to regions E, F and G and keep regions H and I free of objects until then.",
@@ -189,6 +199,8 @@ NEAR_MISSES_S10: dict[int, list[str]] = {
         "touch blue block first. After all these, please put yellow block back in region G.",
     ],
     5: [
+        "Switch the red and blue blocks round, blue first; the yellow block can be taken to the opposite "
+        "side whenever suits.",
         "Swap the red and blue blocks (blue goes down first) and, whenever you want, move the yellow block "
         "across to the opposite side.",
         "Exchange red block and blue block the positions, first place blue block. Yellow block to opposite "
@@ -226,6 +238,8 @@ NEAR_MISSES_S10: dict[int, list[str]] = {
         "J.",
     ],
     7: [
+        "Drop the three blocks on region I in turn, red before blue; regions F and G are to stay clear "
+        "throughout.",
         "Because region F must stay empty meanwhile, put the three blocks one after another on region I, "
         "red before blue, and put nothing on regions G and J.",
         "While this is being done, nothing may be placed on regions F and H: put the three blocks one "

@@ -5,7 +5,7 @@ rewrites that map a writer's variants (synonyms, British forms, common typos) on
 
 VERB = (
     r"(?:transfer|move|put|place|bring|carry|take|deliver|relocate|shift|get|set|send|return|distribute|"
-    r"spread|position|drop|arrange|want|need|lay|deposit)"
+    r"spread|position|drop|arrange|want|need|lay|deposit|pop)"
 )
 PREP = r"(?:to|into|onto|on|in|at|towards?|over\s+to|in\s+to|on\s+to|among|across|over)"
 MOD = (
@@ -101,7 +101,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\blet\s*'?\s*s\b|\blet\s+us\b|\bgo\s+ahead\s+and\b", "please"),
     (r"\banytime\b|\bin\s+any\s+time\b", "at any time"),
     (
-        r"\b(?:whenever\s+(?:you\s+(?:like|want|wish|please|can)|convenient|possible|it\s+suits\s+you)|"
+        r"\b(?:whenever\s+(?:you\s+(?:like|want|wish|please|can)|convenient|possible|(?:it\s+)?suits(?:\s+you)?)|"
         r"at\s+(?:any|whatever)\s+(?:point(?:\s+in\s+time)?|moment|stage)|(?:at\s+)?any\s+time\s+you\s+(?:like|want))\b",
         "at any time",
     ),
@@ -139,7 +139,10 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\btill\b", "until"),
     (r"\b([a-z]+)\s+s\s+been\b", r"\1 has been"),  # "till red's been touched"
     (r"\b(?:any\s+)?(?:stuff|things)\b(?=\s+(?:on|in|onto|into)\b)", "anything"),
-    (r"\bunder\s+no\s+circumstances\s+(?=(?:place|put|drop|set|touch|move)\b)", "never "),
+    (
+        r"\b(?:under\s+no\s+circumstances|on\s+no\s+account)\s+(?=(?:place|put|drop|set|touch|move)\b)",
+        "never ",
+    ),
     (r"\bat\s+some\s+(?:point|time)\b", "at any time"),
     (r"\bnothing\s+else\b", "nothing"),
     (r"\bno\s+other\s+(?=(?:blocks?|objects?|items?|cubes?|pillars?|pieces?)\b)", "no "),
@@ -214,6 +217,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\b(?:is|are)\s+not\s+to\s+be\b", "must not be"),
     (r"\b(?:is|are)\s+(then|first|also|finally|next|afterwards|later)\s+to\s+be\b", r"must \1 be"),
     (r"\b(?:is|are)\s+to\s+have\b", "must have"),
+    (r"\b(?:is|are)\s+to\s+(stay|remain)\b", r"must \1"),
     # "must stay / remain untouched", "is to be left untouched": not touched
     (
         r"\b(?:must\s+|should\s+|shall\s+|will\s+)?(?:stay|remain|be\s+left|be\s+kept)\s+untouched\b",
