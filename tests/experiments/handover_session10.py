@@ -238,6 +238,8 @@ NEAR_MISSES_S10: dict[int, list[str]] = {
         "J.",
     ],
     7: [
+        "1. Put the three blocks on region I one after another, red before blue.\n2) Because regions F and G "
+        "must stay clear meanwhile, put nothing on them.",
         "Drop the three blocks on region I in turn, red before blue; regions F and G are to stay clear "
         "throughout.",
         "Because region F must stay empty meanwhile, put the three blocks one after another on region I, "
@@ -292,9 +294,14 @@ NEAR_MISSES_S10: dict[int, list[str]] = {
     ],
 }
 
-# A reason that names a region is read, not dropped as framing: without its region the spec would differ.
+# A reason that names a region is read, not dropped as framing: without its region the spec would differ
+# (also after a step's number); a framing reason after a step's number is dropped.
 REASONS_READ: dict[int, list[str]] = {
     7: [
+        "1. Put the three blocks on region I one after another, red before blue.\n"
+        "2) Because regions F, G and H must stay clear meanwhile, put nothing on them.",
+        "1. Put the three blocks on region I one after another, red before blue.\n"
+        "2) For safety, put nothing on regions F, G and H meanwhile.",
         "Because region F must stay empty meanwhile, put the three blocks one after another on region I, red "
         "before blue, and put nothing on regions G and H.",
     ],

@@ -278,7 +278,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\band\s+(?:because|since)\s+", "and "),
     (r"^\s*(?:steps|procedure|instructions|plan|to\s+do)\s*:\s*", " "),
     # a reason clause: read as a clause of the instruction ("because regions F, G and H must stay clear, ...")
-    (r"^\s*(?:because|since)\s+", " "),
+    (r"^(\s*(?:step\s+\w+\s*[:-]?|\d\s*[):-]|\(\s*\d\s*\))?\s*)(?:because|since)\s+", r"\1 "),
     (r"\s*,\s*(?:because|since)\s+", ", and "),
     (r"\s*,\s*so\s+(?!that\b|as\b|long\b|far\b|on\b)", ", "),
     (r"\s*,?\s*(?:since|because|as)\s+(?:the|their)\s+order\s+does\s+not\s+matter\b", " in any order"),
