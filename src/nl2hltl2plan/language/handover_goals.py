@@ -306,8 +306,10 @@ def _markers(m: Marked, clauses: list[Clause]) -> None:
         lambda x: set_marker(x, "then"),
     )
     # stacked markers say it once: "in the end, after all of this, put ..."
-    m.sub(rf"\b(?:then\s*,?\s*)?(?:{AFTER_ALL}\s*,?\s*)*{AFTER_ALL}{LEAD}G(\d+)",
-          lambda x: set_marker(x, "after_all"))
+    m.sub(
+        rf"\b(?:then\s*,?\s*)?(?:{AFTER_ALL}\s*,?\s*)*{AFTER_ALL}{LEAD}G(\d+)",
+        lambda x: set_marker(x, "after_all"),
+    )
     # "put the yellow block back on G once all of this is done"
     m.sub(rf"\bG(\d+)\s*,?\s*{AFTER_ALL}(?=\s*(?:$|,))", lambda x: set_marker(x, "after_all"))
     m.sub(  # "put the yellow block back on G at the end"
