@@ -2148,6 +2148,7 @@ STACKED_MARKER_NEAR_MISSES: dict[int, list[str]] = {
 # Written by the lead in session 9 after every rule of the session was in (batch 9) and run once on the
 # final reader, never shown to anyone who wrote rules: 15 gave the written spec, 1 was refused by name
 # ("regions F, G and H can't have any object placed on them"), 0 another spec. Left as it is: held out.
+# Session 10 (h47): the refused sentence is read now (a prohibition with "them" naming its own regions).
 LEAD_SESSION9_BATCH9: dict[int, list[str]] = {
     1: [
         "Please move the three blocks to the opposite side; place the red block before you place the "

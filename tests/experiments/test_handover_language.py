@@ -23,6 +23,7 @@ from handover_heldout import (
     STACKED_MARKERS,
 )
 from handover_rephrasings import REPHRASINGS
+from handover_session10 import NEAR_MISSES_S10, REASONS_READ, STILL_REFUSED, STYLES
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.translate import translate
@@ -139,6 +140,55 @@ def test_near_misses_are_refused_or_give_another_spec(task_id, text):
     assert not equal
 
 
+@pytest.mark.parametrize(
+    ("batch", "style"),
+    [
+        (batch, style)
+        for batch in ("dev", "dev2", "dev3", "dev4", "dev5", "dev6", "dev7")
+        for style in STYLES[batch]
+    ],
+)
+def test_session10_styles_give_the_written_specs_or_are_refused_by_name(batch, style):
+    """Our rephrasings by style (plain, terse, formal, explanatory, passive, numbered steps, non-native,
+    typos, constraints first): each gives the written spec, but for `STILL_REFUSED`, refused by name."""
+    for task, text in STYLES[batch][style].items():
+        if text in STILL_REFUSED:
+            with pytest.raises(HTTError) as exc:
+                _spec(int(task), text)
+            assert "\n" not in str(exc.value)
+        else:
+            equal, why = specs_equivalent(_spec(int(task), text), TASKS[int(task)].hierarchical())
+            assert equal, (text, why)
+
+
+@pytest.mark.parametrize("style", sorted(STYLES["validation"]))
+def test_session10_validation_is_read_right_or_refused_never_misread(style):
+    """Our validation batch, written with `dev` and measured once on the frozen reader (56 of 72 gave the
+    written spec, 16 were refused by name, 0 another spec: results/handover/generality_session10.md)."""
+    for task, text in STYLES["validation"][style].items():
+        _read_right_or_refused(int(task), text)
+
+
+@pytest.mark.parametrize(
+    ("task_id", "text"), [(t, text) for t, texts in REASONS_READ.items() for text in texts]
+)
+def test_a_reason_that_names_a_region_is_read_not_dropped(task_id, text):
+    equal, why = specs_equivalent(_spec(task_id, text), TASKS[task_id].hierarchical())
+    assert equal, why
+
+
+@pytest.mark.parametrize("task_id", sorted(NEAR_MISSES_S10))
+def test_session10_near_misses_are_refused_or_give_another_spec(task_id):
+    for text in NEAR_MISSES_S10[task_id]:
+        try:
+            spec = _spec(task_id, text)
+        except HTTError as exc:
+            assert "\n" not in str(exc)
+            continue
+        equal, _ = specs_equivalent(spec, TASKS[task_id].hierarchical())
+        assert not equal, text
+
+
 @pytest.mark.parametrize(("task_id", "text"), [(t, text) for t, texts in sample().items() for text in texts])
 def test_combinations_of_the_axes_give_the_same_specs(task_id, text):
     """A fixed-seed sample of slot combinations (verb x group x "the opposite" x order sentence x ...)."""
@@ -196,6 +246,10 @@ def test_the_opposite_side_is_resolved_against_where_the_blocks_start():
             "exchanged",
         ),
         ("Move the red block to region H. Then swap the red block and the blue block.", "exchanged"),
+        # a place pronoun with no place named before it, a reason that states what is not modelled
+        ("Do not place any object on them. Move the three blocks to the opposite side.", "them"),
+        ("Because the red block is heavy, move the three blocks to the opposite side.", "heavy"),
+        ("Move the blocks to the opposite side, all two of them.", "names two blocks"),
     ],
 )
 def test_what_the_rules_cannot_read_is_refused_by_name(text, named):
@@ -263,17 +317,25 @@ def test_unseen_rephrasings_are_read_right_or_refused_never_misread(task_id, tex
     _read_right_or_refused(task_id, text)
 
 
+@pytest.mark.parametrize("task_id", sorted(TASKS))
+def test_h43_rounds_are_read_right_or_refused_never_misread(task_id):
+    """One case per task (the sentences of a task in one loop, to keep the file fast)."""
+    for text in H43_ROUNDS.get(task_id, []):
+        _read_right_or_refused(task_id, text)
+
+
 @pytest.mark.parametrize(
     ("name", "batch"),
     [
         ("lead session 9", LEAD_SESSION9),
         ("lead session 9, batch 8", LEAD_SESSION9_BATCH8),
         ("lead session 9, batch 9", LEAD_SESSION9_BATCH9),
-        ("h43 rounds", H43_ROUNDS),
     ],
 )
 @pytest.mark.parametrize("task_id", sorted(TASKS))
-def test_later_batches_are_read_right_or_refused_never_misread(name, batch, task_id):
-    """One case per task and batch (the sentences of a task in one loop, to keep the file fast)."""
+def test_the_leads_batches_give_the_written_specs(name, batch, task_id):
+    """All 80 sentences of the lead's session-9 batches are read now (the last refusal, batch 9's "regions F,
+    G and H can't have any object placed on them", since session 10): a reader change that loses one fails."""
     for text in batch.get(task_id, []):
-        _read_right_or_refused(task_id, text)
+        equal, why = specs_equivalent(_spec(task_id, text), TASKS[task_id].hierarchical())
+        assert equal, (text, why)

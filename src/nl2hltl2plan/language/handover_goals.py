@@ -11,8 +11,8 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 
 from nl2hltl2plan.errors import HTTError
-from nl2hltl2plan.language.handover_phrases import Marked, Place, Scene
 from nl2hltl2plan.language.handover_rules import blocks_of
+from nl2hltl2plan.language.handover_scene import Marked, Place, Scene
 from nl2hltl2plan.language.handover_words import (
     AFTER_ALL,
     DONE,
@@ -70,6 +70,7 @@ class Clause:
     marker: str = ""  # "", "first", "then", "after_all"
     leader: str = ""  # a block placed before the clause's other blocks ("swap red and blue, red first")
     together: bool = False
+    anytime: bool = False  # "at any time": in no order to the other goals, even as a numbered step
 
 
 def goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
@@ -83,7 +84,7 @@ def goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
         anytime = re.search(r"any\s+time|whenever", mods) is not None
         room = len({r for g in goals for r in g.regions}) >= len(goals) or place.kind == "start_of"
         together = len(goals) > 1 and place.kind != "away" and room and not (in_turn or anytime)
-        clauses.append(Clause(goals, text, together=together))
+        clauses.append(Clause(goals, text, together=together, anytime=anytime))
         return f" G{len(clauses) - 1} "
 
     def exchange(match: re.Match[str], other: str = "") -> str:
@@ -106,31 +107,43 @@ def goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
 
     mods = rf"((?:\s*,?\s*{MOD})*)"
     # "one by one, put all three blocks on I": the modifier read where it usually stands, after the object
-    m.sub(rf"\b({MOD})\s*,?\s*({VERB}\s+B\d+)", r"\2 \1")
+    # (not "all": "after finishing all, put ...")
+    m.sub(rf"\b((?!all\b){MOD})\s*,?\s*({VERB}\s+B\d+)", r"\2 \1")
 
     def matched(x: re.Match[str], k: int) -> str:  # groups from k: blocks, modifiers, place, modifiers
         place, text = m.places[int(x.group(k + 2))], x.group(0).strip()
         return goal(blocks_of(m, x.group(k)), place, text, x.group(k + 1) + x.group(k + 3))
 
+    # "the yellow block must then be returned to G": the step word read at the clause's head
+    m.sub(
+        r"\b(B\d+\s+(?:must|should|shall|will|can|has\s+to|needs\s+to)\s+)(then|next|afterwards|finally|lastly)\s+",
+        r"\2 \1",
+    )
     _read_exchanges(m, exchange)
     _read_sources(m, scene)
     m.sub(
-        rf"(?:\bwhile\s+)?\b(?:{VERB}|{GERUND})\s+B(\d+){mods}(?:\s+first)?\s*,?\s+"
+        rf"(?:\bwhile\s+(?:you\s+|we\s+)?)?\b(?:{VERB}|{GERUND})\s+B(\d+){mods}(?:\s+first)?\s*,?\s+"
         rf"(?:to\s+(?:be\s+)?(?:{DONE}\s+)?|be\s+(?:{DONE}\s+)?|end\s+up\s+)?"
         rf"(?:back\s+)?{PREP}\s+P(\d+){mods}",
         lambda x: matched(x, 1),
     )
-    # a heading-like goal at the start of a sentence or after a comma: "pillars to E, F and G", "yellow:
-    # back to G last", "yellow block on I, then on G"
+    # a heading-like goal at the start of a sentence, after a comma or a step word: "pillars to E, F and
+    # G", "yellow: back to G last", "yellow block on I, then on G", "then yellow back to G"
     m.sub(
-        rf"(?:^|(?<=,))\s*B(\d+){mods}\s*(?::\s*(?:back\s+)?(?:(?:to|into|onto|on|in)\s+)?|,?\s*(?:back\s+)?"
-        rf"(?:to|into|onto|on|in)\s+)P(\d+){mods}(?:\s+first\b)?(?=\s*(?:$|,|\band\b|\(|last\b|finally\b|at\s+the\s+end\b))",
+        rf"(?:^|(?<=,)|(?<=\bthen)|(?<=\bfinally)|(?<=\blastly))\s*B(\d+){mods}\s*(?::\s*(?:back\s+)?(?:(?:to|into|onto|on|in)\s+)?|,?\s*(?:back\s+)?"
+        rf"(?:to|into|onto|on|in)\s+)P(\d+){mods}(?:\s+first\b)?(?=\s*(?:$|,|\band\b|\(|last\b|finally\b|then\b|at\s+the\s+end\b))",
         lambda x: matched(x, 1),
     )
     _read_inverse(m, goal, scene.blocks, mods)
     m.sub(
         rf"(?:\bwith\s+)?\bB(\d+)\s+{MODAL}{DONE}{mods}(?:\s+first)?\s+(?:back\s+)?"
         rf"{PREP}\s+P(\d+){mods}",
+        lambda x: matched(x, 1),
+    )
+    # the state asked for: "the pillars need to be on regions E, F and G" (with a modal: "is on" is a state)
+    m.sub(
+        rf"(?:\bwith\s+)?\bB(\d+){mods}\s+(?:should|must|shall|will|needs?\s+to|has\s+to|have\s+to)\s+"
+        rf"(?:all\s+|each\s+|both\s+)?be\s+(?:back\s+)?(?:on|in|at|onto|into)\s+P(\d+){mods}",
         lambda x: matched(x, 1),
     )
     # a verb shared with the clause before: "put the red block in H, then the blue block in I"
@@ -141,12 +154,12 @@ def goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
     )
     # the verb and the blocks shared with the clause just before: "to I, then to G", "on I first, then on G"
     m.sub(
-        rf"\bG(\d+)(?P<link>(?:\s+first\b)?\s*,?\s*(?:and\s+)?(?:{THEN}{LEAD}|followed\s+by\s+))(?:back\s+)?(?:{PREP}\s+)?"
-        rf"P(\d+){mods}",
+        rf"\bG(\d+)(?P<link>(?:\s+first\b)?\s*,?\s*(?:and\s+)?(?:{THEN}{LEAD}|followed\s+by\s+))(?:{VERB}\s+)?(?:back\s+)?"
+        rf"(?:{PREP}\s+)?P(\d+){mods}",
         lambda x: f" G{x.group(1)} then " + again(clauses[int(x.group(1))], x),
     )
     m.sub(  # "on I first and on G second": the second place named after the first
-        rf"\bG(\d+)(?P<link>\s+first\s*,?\s*and\s+)(?:back\s+)?{PREP}\s+P(\d+){mods}\s+(?:second|next|afterwards?|last)\b",
+        rf"\bG(\d+)(?P<link>\s+first\s*,?\s*and\s+)(?:back\s+)?{PREP}\s+P(\d+){mods}\s+(?:second|next|afterwards?|after|last)\b(?!\s+B)",
         lambda x: f" G{x.group(1)} then " + again(clauses[int(x.group(1))], x),
     )
     _markers(m, clauses)
@@ -170,11 +183,24 @@ def _read_inverse(m: Marked, goal: GoalMaker, every: list[str], mods: str) -> No
         rf"(?:block|object|cube|pillar|item)\s+(?:each|apiece)(){mods}",
         lambda x: _fill(m, x, goal, every),
     )
+    m.sub(  # "G, H, I: one block each"
+        rf"(?:^|(?<=,))\s*P(\d+)\s*:\s*(?:exactly\s+)?(?:one|a\s+single)\s+(?:block|object|cube|pillar|item)\s+"
+        rf"(?:each|apiece)(){mods}",
+        lambda x: _fill(m, x, goal, every),
+    )
     # "put one block in each of regions H, I and J": every block, one per region (as many as blocks)
     m.sub(
         rf"\b{VERB}\s+(?:one|a|a\s+single)\s+(?:block|object|cube|pillar|item)\s+(?:in|on|into|onto|to)\s+(?:each|every)\s+"
         rf"(?:one\s+)?(?:of\s+)?P(\d+)(?P<b>){mods}",
         lambda x: _fill(m, x, goal, every),
+    )
+    # "put one of the three blocks in each of regions H, I and J": those blocks, one per region
+    m.sub(
+        rf"\b{VERB}\s+(?:one|a\s+single\s+one)\s+of\s+B(?P<b>\d+)\s+(?:in|on|into|onto|to)\s+(?:each|every)\s+(?:one\s+)?"
+        rf"(?:of\s+)?P(?P<p>\d+){mods}",
+        lambda x: _one_per_region(
+            goal, m.places[int(x.group("p"))], blocks_of(m, x.group("b")), x.group(0), x.group(3), False
+        ),
     )
     # the inverse syntax "fill regions H, I and J with the three blocks": as many places as blocks
     m.sub(rf"\b(?:fill|occupy|populate|load)\s+P(\d+)\s+with\s+B(\d+){mods}", lambda x: _fill(m, x, goal))
@@ -208,7 +234,7 @@ def _read_exchanges(m: Marked, exchange: Callable[..., str]) -> None:
         lambda x: exchange(x, x.group(2)),
     )
     m.sub(
-        rf"(?:\bwhile\s+)?\b{SWAP}\s+(?:the\s+)?(?:positions?\s+|places?\s+|locations?\s+|spots?\s+)?(?:of\s+)?B(\d+)(?:\s+(?:s\s+)?(?:positions?|places?|locations?))?(?:\s+(?:around|round|over|with\s+each\s+other|with\s+one\s+another))?",
+        rf"(?:\bwhile\s+)?\b{SWAP}\s+(?:the\s+)?(?:positions?\s+|places?\s+|locations?\s+|spots?\s+)?(?:of\s+)?B(\d+)(?:\s+(?:s\s+|the\s+|their\s+)?(?:positions?|places?|locations?))?(?:\s+(?:around|round|over|with\s+each\s+other|with\s+one\s+another))?",
         exchange,
     )
     m.sub(
@@ -219,6 +245,11 @@ def _read_exchanges(m: Marked, exchange: Callable[..., str]) -> None:
     m.sub(rf"\b{SWAP}\s+(?:the\s+places\s+)?where\s+B(\d+)\s+(?:are|stand|sit|lie)\b", exchange)
     m.sub(  # "the positions of the red and blue blocks should be swapped"
         rf"\b(?:the\s+)?(?:positions?|places?|locations?)\s+of\s+B(\d+)\s+{MODAL}(?:swapped|exchanged|switched|interchanged)",
+        exchange,
+    )
+    m.sub(  # "the red and blue blocks are to have their positions exchanged"
+        rf"\bB(\d+)\s+{MODAL}(?:have|get)\s+their\s+(?:positions|places|locations|spots)\s+"
+        r"(?:swapped|exchanged|switched|interchanged)",
         exchange,
     )
     # "the red and blue blocks should be swapped" (after "the positions of ... should be swapped")
@@ -246,19 +277,22 @@ def _read_sources(m: Marked, scene: Scene) -> None:
     m.sub(r"\bB(\d+)\s+(?:away\s+)?from\s+P(\d+)", check)
 
 
-def _fill(
-    m: Marked,
-    x: re.Match[str],
-    goal: GoalMaker,
-    every: list[str] | None = None,
+def _fill(m: Marked, x: re.Match[str], goal: GoalMaker, every: list[str] | None = None) -> str:
+    """Groups 1, 2, 3 of `x`: the place, the blocks (else `every` block), the modifiers."""
+    blocks = every or blocks_of(m, x.group(2))
+    return _one_per_region(goal, m.places[int(x.group(1))], blocks, x.group(0), x.group(3), every is None)
+
+
+def _one_per_region(
+    goal: GoalMaker, place: Place, blocks: list[str], text: str, mods: str, in_turn_ok: bool
 ) -> str:
-    place, blocks = m.places[int(x.group(1))], every or blocks_of(m, x.group(2))
-    in_turn = re.search(r"one\s+after|one\s+by|one\s+at|in\s+turn", x.group(3)) is not None
-    if in_turn and every is None and place.kind == "regions":  # "region I receives the blocks one by one"
-        return goal(blocks, place, x.group(0).strip(), x.group(3))
+    text = text.strip()
+    in_turn = re.search(r"one\s+after|one\s+by|one\s+at|in\s+turn", mods) is not None
+    if in_turn and in_turn_ok and place.kind == "regions":  # "region I receives the blocks one by one"
+        return goal(blocks, place, text, mods)
     if place.kind != "regions" or len(set(place.regions)) != len(blocks):
-        raise HTTError(f"'{x.group(0).strip()}': fill needs as many named regions as blocks")
-    return goal(blocks, place, x.group(0).strip(), x.group(3))
+        raise HTTError(f"'{text}': fill needs as many named regions as blocks")
+    return goal(blocks, place, text, mods)
 
 
 def _markers(m: Marked, clauses: list[Clause]) -> None:
@@ -272,8 +306,12 @@ def _markers(m: Marked, clauses: list[Clause]) -> None:
         lambda x: set_marker(x, "then"),
     )
     # stacked markers say it once: "in the end, after all of this, put ..."
-    m.sub(rf"\b(?:then\s*,?\s*)?(?:{AFTER_ALL}\s*,?\s*)*{AFTER_ALL}{LEAD}G(\d+)",
-          lambda x: set_marker(x, "after_all"))
+    m.sub(
+        rf"\b(?:then\s*,?\s*)?(?:{AFTER_ALL}\s*,?\s*)*{AFTER_ALL}{LEAD}G(\d+)",
+        lambda x: set_marker(x, "after_all"),
+    )
+    # "put the yellow block back on G once all of this is done"
+    m.sub(rf"\bG(\d+)\s*,?\s*{AFTER_ALL}(?=\s*(?:$|,))", lambda x: set_marker(x, "after_all"))
     m.sub(  # "put the yellow block back on G at the end"
         r"\bG(\d+)\s*,?\s*(?:at\s+the\s+(?:very\s+)?end|in\s+the\s+end|lastly|finally|last|as\s+the\s+(?:last|final)\s+step)\b",
         lambda x: set_marker(x, "after_all"),
@@ -282,6 +320,7 @@ def _markers(m: Marked, clauses: list[Clause]) -> None:
 
     def anytime(match: re.Match[str]) -> str:
         clauses[int(match.group(1))].together = False
+        clauses[int(match.group(1))].anytime = True
         return f" G{match.group(1)} "
 
     m.sub(r"\b(?:at\s+any\s+time|any\s+time|in\s+any\s+order)\s*,?\s*G(\d+)", anytime)
@@ -289,6 +328,9 @@ def _markers(m: Marked, clauses: list[Clause]) -> None:
     # any goal without a marker
     m.sub(rf"\b(?:{PERIOD_WORDS}|while)\s*,?\s*(?=G\d+|at\s+any\s+time)", " ")
     m.sub(r"(?:,\s*)?\band\s+(?=G\d+)", lambda _: " ")
+    for c in clauses:  # "Step 3: at any time, move ...": a step that says "at any time" is in no order
+        if c.anytime and c.marker == "then":
+            c.marker = ""
 
 
 def _resolve(place: Place, block: str, scene: Scene) -> tuple[str, ...]:

@@ -7,7 +7,8 @@ and J", "the opposite side", "any empty region", "the side of arm a and arm b", 
 is", "the area other than the target region") and arms (`A`: "the robot arm", "any of the arms").
 Then the rules of `language.handover_rules` and the clause patterns of `language.handover_reading`
 consume placeholders and words. Whatever a pass leaves unread is a refusal naming the words: nothing
-is silently dropped.
+is silently dropped. This module reads the blocks, arms, pronouns and the world's one-block-per-region
+rule; `handover_places` the places; `handover_scene` holds the layout and the placeholders' data.
 
 Places resolve against the instance: "the opposite" is, per block, the labelled regions on the other
 arms' side from where the block starts (arms a, b against c, d); "the side of arm a and arm b" the
@@ -19,129 +20,31 @@ them", "exchanging their positions": the two blocks named before in the sentence
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass, field
-from typing import Literal
 
-from nl2hltl2plan.errors import HTTError, WorldError
+from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.language.handover_places import mark_capacity, mark_place_pronouns, mark_places
+from nl2hltl2plan.language.handover_scene import (
+    COLOUR,
+    COUNTS,
+    GROUP_NOUNS,
+    NOUN,
+    NOUNS,
+    PLACE_NOUN,
+    Marked,
+    Scene,
+)
 from nl2hltl2plan.language.handover_words import (
-    APPOSITION,
-    EMPTY,
+    DONE,
     GERUND,
+    MODAL,
     NEG,
     REWRITES,
     SWAP,
     VERB,
     typo_table,
 )
-from nl2hltl2plan.worlds.handover_world import REGIONS, Layout, layout
-from nl2hltl2plan.worlds.world import Cell, World
 
-COLOURS = ("red", "blue", "yellow")
 _TOUCHED = r"(?:touched|picked|grasped|grabbed|handled|moved|lifted)"
-COUNTS = {"two": 2, "three": 3, "four": 4, "both": 2, "2": 2, "3": 3, "4": 4}
-NOUN = r"(?:block|cube|pillar|object|item|piece|one)"
-GROUP_NOUNS = r"(?:blocks|cubes|pillars|objects|items|pieces)"
-NOUNS = r"(?:blocks|cubes|pillars|objects|items|pieces|ones)"
-COLOUR = r"(?:red|blue|yellow)"
-LETTER = r"\b[e-j]\b"
-PLACE_NOUN = r"(?:regions?|areas?|zones?|places?|spots?|positions?|cells?|sides?|locations?)"
-# words that carry no meaning here (articles, politeness, modal verbs, the agent)
-FILLER = frozenset(
-    "please plan a an the solution to for you we should shall can could would will must kindly now "
-    "also so it is are be that i want need make sure this task , ( ) : and however additionally moreover "
-    "furthermore independently since".split()
-)
-
-
-@dataclass(frozen=True)
-class Place:
-    """A place phrase: labelled regions, per-block opposite side, any empty region, a block's start,
-    or (only in prohibitions) the labelled regions other than a goal's targets or, when `regions` is
-    given, other than those; a landmark ("next to arm a and arm b") only describes a place named beside
-    it and must agree with it."""
-
-    kind: Literal["regions", "opposite", "away", "start_of", "complement", "landmark"]
-    regions: tuple[str, ...] = ()
-    block: str = ""  # start_of: whose start
-    text: str = ""
-
-
-@dataclass
-class Scene:
-    """What the handover phrases need of a world: its layout and where each block starts."""
-
-    layout: Layout
-    starts: dict[str, Cell]  # "Red" -> cell
-
-    @classmethod
-    def of(cls, world: World) -> Scene:
-        config = world.name.split("-", 1)[1] if "-" in world.name else ""
-        try:
-            lay = layout(config)
-        except WorldError:
-            raise HTTError(f"{world.name} is not a handover world (square or line)") from None
-        starts = {
-            o.type[: -len("Block")]: o.interaction_cells[0]
-            for o in world.objects.values()
-            if o.type.endswith("Block") and o.interaction_cells
-        }
-        return cls(lay, starts)
-
-    @property
-    def blocks(self) -> list[str]:
-        return [c.capitalize() for c in COLOURS if c.capitalize() in self.starts]
-
-    def side(self, cell: Cell) -> int | None:
-        """0: only arms a/b reach the cell; 1: only c/d; None: both sides (a shared middle cell)."""
-        arms = set(self.layout.arms_reaching(cell))
-        if arms <= {0, 1}:
-            return 0
-        if arms <= {2, 3}:
-            return 1
-        return None
-
-    def opposite(self, block: str) -> tuple[str, ...]:
-        side = self.side(self.starts[block])
-        if side is None:
-            raise HTTError(
-                f"'the opposite' is unclear for the {block.lower()} block: it starts between the sides"
-            )
-        return tuple(
-            r for r in REGIONS if r in self.layout.regions and self.side(self.layout.regions[r]) == 1 - side
-        )
-
-    def arms_side(self, arms: list[int]) -> tuple[str, ...]:
-        return tuple(r for r in REGIONS if set(self.layout.arms_reaching(self.layout.regions[r])) & set(arms))
-
-    def start_region(self, block: str) -> str:
-        cell = self.starts[block]
-        if cell not in self.layout.region_at:
-            raise HTTError(f"the {block.lower()} block does not start on a labelled region")
-        return self.layout.region_at[cell]
-
-    def block(self, colour: str) -> str:
-        name = colour.capitalize()
-        if name not in self.starts:
-            raise HTTError(f"there is no {colour} block in this world; blocks: {', '.join(self.blocks)}")
-        return name
-
-
-@dataclass
-class Marked:
-    """A sentence with its phrases replaced by placeholders (`B0`, `P0`, `A`)."""
-
-    text: str
-    blocks: list[list[str]] = field(default_factory=list)  # B<k> -> block names
-    block_text: list[str] = field(default_factory=list)
-    places: list[Place] = field(default_factory=list)  # P<k>
-    notes: list[str] = field(default_factory=list)  # one-per-region statements, read as the world's rule
-    last_one: str = ""  # the last single block the sentence names (what "it" means in the next)
-    last_regions: tuple[str, ...] = ()  # the last regions it names ("regions other than these" in the next)
-
-    def sub(self, pattern: str, make) -> None:  # make(match) -> replacement text
-        self.text = re.sub(pattern, make, self.text)
-
-
 TYPOS = typo_table()
 
 
@@ -152,9 +55,35 @@ def normalise(sentence: str) -> str:
     text = re.sub(r"([,()/:])", r" \1 ", text)
     text = re.sub(r"\b(\w+)'s\b", r"\1 s", text)  # red's -> red s (a possessive)
     text = re.sub(r"[a-z]+", lambda w: TYPOS.get(w.group(0), w.group(0)), text)
+    text = _drop_framing(text)
     for pattern, replacement in REWRITES:
         text = re.sub(pattern, replacement, text)
+    text = re.sub(r"\bplease\b\s*,?", " ", text)  # politeness anywhere: "all three blocks please move to ..."
     return " ".join(text.split())
+
+
+# words that may carry a meaning here: a block, a place, an arm, a count, a negation, an order or a time
+_MEANING = re.compile(
+    r"\b(?:red|blue|yellow|blocks?|cubes?|pillars?|objects?|items?|pieces?|ones?|it|its|them|they|their|regions?|"
+    r"areas?|zones?|sides?|places?|spots?|positions?|cells?|locations?|opposite|[a-j]|arms?|robots?|one|two|three|"
+    r"four|both|all|each|every|\d+|not|no|never|nothing|none|cannot|without|before|after|first|then|until|once|"
+    r"last|next|finally|final|step|steps|end|start|beginning|later|earlier|second|third|previous|prior|following|"
+    r"afterwards?|order|while|during|meanwhile|time|any|empty|free|clear|exchange|swap|touch\w*)\b"
+)
+
+
+def _drop_framing(text: str) -> str:
+    """A purpose or reason that names nothing the reader could use ('to keep things simple, ...', 'for
+    safety, ...', '..., since that is faster') frames the sentence and is dropped; one that names a block,
+    a place, an arm, a count, a negation, an order or a time stays to be read (or refused)."""
+    step = r"\s*(?:step\s+\w+\s*[:-]?|\d\s*[):-]|\(\s*\d\s*\))?"  # "2) for safety, ..."
+    lead = re.match(rf"({step})\s*(?:to|in\s+order\s+to|for|because|since|as)\s+([^,]{{1,60}}),", text)
+    if lead and not _MEANING.search(lead.group(2)):
+        text = lead.group(1) + " " + text[lead.end() :]
+    tail = re.search(r",\s*(?:because|since|as|so\s+that|for)\s+([^,]+)$", text)
+    if tail and not _MEANING.search(tail.group(1)):
+        text = text[: tail.start()]
+    return text
 
 
 def mark(sentence: str, scene: Scene, before: Marked | None = None) -> Marked:
@@ -164,9 +93,18 @@ def mark(sentence: str, scene: Scene, before: Marked | None = None) -> Marked:
     m = Marked(normalise(sentence))
     _mark_one_per_region(m)
     _mark_arms(m)
+    # "do not put anything on them": after a preposition of place, a pronoun names places (a cell holds
+    # one block, so nothing goes on a block); resolved once the places are marked
+    m.sub(r"\b(on|onto|in|into)\s+(each\s+of\s+)?(them|it)\b", r"\1 \2 PLACEREF_\3")
     _mark_blocks(m, scene, previous.last_one)
     _join_particles(m)
-    _mark_places(m, scene, previous.last_regions)
+    # "put the three blocks there", "the yellow block is to be moved there as well"
+    m.sub(rf"\b((?:{VERB}|{GERUND})\s+B\d+|B\d+\s+{MODAL}{DONE})\s+there\b", r"\1 PLACEREF_there")
+    mark_places(m, scene, previous.last_regions)
+    mark_place_pronouns(m, previous.last_regions)
+    mark_capacity(m)
+    # "There are three goal regions, H, I and J.": places named for the next sentence ("put ... into them")
+    m.sub(r"^\s*there\s+(?:are|is)\s+P\d+\s*$", " ")
     named = [p.regions for p in m.places if p.kind == "regions"]
     m.last_regions = named[-1] if named else ()
     _mark_connectives(m)
@@ -221,15 +159,21 @@ def _mark_one_per_region(m: Marked) -> None:
         rf"(?:\bwith\s+)?\bno\s+{region}\s+(?:can|may|should|must|will)?\s*(?:be\s+)?"
         rf"(?:{hold}|receiving|getting|holding|having|taking)\s+(?:with\s+)?(?:more\s+than\s+"
         rf"(?:one|a\s+single|1)(?:\s+{NOUN})?|(?:two|2)\s+{NOUNS})\b",
-        rf"\b(?:with\s+|placing\s+|putting\s+|there\s+(?:can|may|should|must|will)\s+be\s+)?{one}\s+(?:(?:is|being|may|can|should|must|will)\s+)?"
+        rf"\b(?:with\s+|placing\s+|putting\s+|(?:put|place)\s+|there\s+(?:can|may|should|must|will)\s+be\s+)?{one}\s+(?:(?:is|being|may|can|should|must|will)\s+)?"
         r"(?:be\s+)?(?:allowed\s+|permitted\s+)?"
         rf"(?:(?:to\s+)?(?:occupy|go\s+(?:in|on|to|into)|sit\s+(?:in|on)|be\s+(?:placed\s+)?(?:in|on)|fits?\s+(?:in|on|into))\s+|"
         r"(?:per|in|on|for|to)\s+)"
         rf"(?:each|every)\s+{region}\b",
         rf"\b(?:with\s+)?{one}\s+(?:(?:is|being|may|can)\s+)?(?:allowed\s+|permitted\s+)?per\s+{region}\b",
         r"\bone\s+(?:each|apiece)\b",
+        rf"(?:,\s*)?\b(?:an?\s+)?(?:different|separate|distinct)\s+{region}\s+(?:for|per)\s+(?:each|every)\s+{NOUN}\b",
+        # "each gets one block", "one region is only for one block"
+        rf"(?:,\s*)?\beach\s+(?:one\s+)?(?:gets|receives|takes|holds)\s+(?:exactly\s+)?(?:one|a\s+single)(?:\s+{NOUN})?\b",
+        rf"\b(?:each|every|one|a)\s+{region}\s+(?:is\s+)?(?:only\s+)?for\s+(?:only\s+)?(?:one|a\s+single|1)(?:\s+{NOUN})?"
+        r"(?:\s+only)?\b",
+        rf"(?<=,)\s*(?:with\s+)?(?:one|a\s+single)\s+{NOUN}\s+(?:each|apiece)\b",  # "..., one block each"
         rf"\b(?:with\s+)?{one}\s+(?:per|in\s+each|on\s+each|for\s+each)\b(?!\s+of\b)",
-        rf"\b(?:with\s+)?no\s+two\s+{NOUNS}\s+(?:(?:may|can|should|will)\s+)?(?:sharing|share|occupy|be\s+(?:in|on))\s+"
+        rf"(?:,\s*)?\b(?:with\s+)?no\s+two(?:\s+{NOUNS})?\s+(?:(?:may|can|should|will)\s+)?(?:sharing|share|occupy|be\s+(?:in|on)|in|on)\s+"
         rf"(?:a\s+|the\s+same\s+)?{region}\b",
         rf"\beach\s+{NOUN}\s+(?:gets|has|takes|goes\s+(?:to|in|into))\s+(?:its\s+own|a\s+(?:different|separate))\s+{region}\b",
         rf"\b(?:do\s+not|never)\s+(?:put|place)\s+(?:more\s+than\s+(?:one|a\s+single)(?:\s+{NOUN})?|(?:two|2)\s+{NOUNS})\s+"
@@ -313,14 +257,25 @@ def _mark_blocks(m: Marked, scene: Scene, previous: str) -> None:
     each = rf"\b(?:each|every|all)\s+(?:of\s+the\s+)?{count}(?:{NOUN}|{NOUNS})\b"  # not "any": one of them
     m.sub(colours, by_colour)
     m.sub(colours, by_colour)  # the phrases a repeated colour started
+    # a heading that lists blocks with commas: "red, blue: any empty region" (one group)
+    heading = re.match(r"\s*B(\d+)\s*,\s*B(\d+)\s*:", m.text)
+    if heading and not set(m.blocks[int(heading.group(1))]) & set(m.blocks[int(heading.group(2))]):
+        pair = [int(heading.group(1)), int(heading.group(2))]
+        text = " , ".join(m.block_text[k] for k in pair)
+        m.text = _new_block(m, [b for k in pair for b in m.blocks[k]], text) + ":" + m.text[heading.end() :]
     # "no block may be placed ...": the prohibitions read "no B"
     m.sub(rf"\bno\s+{NOUN}\b", lambda match: "no" + _new_block(m, scene.blocks, match.group(0)))
     # "a block may not be placed ...": a generic block in a prohibition is every block
     negation = r"(?=\s+(?:may|must|can|should|shall|is)\s*(?:not|never)|\s+(?:cannot|never|mustn))"
     m.sub(rf"\b(?:a|an|any)\s+{NOUN}\b{negation}", lambda match: _new_block(m, scene.blocks, match.group(0)))
+    # "the object can not be put on ...": generic too, when no single block was named before it
+    if not previous and not any(len(m.blocks[int(k)]) == 1 for k in re.findall(r"\bB(\d+)\b", m.text)):
+        generic = rf"\b(?:the|each|every)\s+(?:block|object|item|piece|pillar|cube)\b{negation}"
+        m.sub(generic, lambda match: _new_block(m, scene.blocks, match.group(0)))
     # "never place an object on ...", "do not put anything on ...": a generic object after a negated verb
     m.sub(
-        rf"\b({NEG}\s+(?:{VERB}|drop|leave|lay)|placing|putting|dropping|setting)\s+(?:(?:a|an|any)\s+{NOUN}|any\s+{NOUNS}|anything)\b",
+        rf"\b({NEG}\s+(?:{VERB}|drop|leave|lay)|placing|putting|dropping|setting)\s+(?:(?:a|an|any)\s+{NOUN}|any\s+{NOUNS}|anything|"
+        rf"(?:objects?|items?|things?)(?=\s+(?:on|in|onto|into)\b))\b",
         lambda match: match.group(1) + _new_block(m, scene.blocks, match.group(0)),
     )
     # "three block" (a count with a singular noun), "be placed any object"
@@ -336,6 +291,16 @@ def _mark_blocks(m: Marked, scene: Scene, previous: str) -> None:
     )
     m.sub(each, all_blocks)
     m.sub(group, all_blocks)
+
+    def restated(match: re.Match[str]) -> str:  # "the blocks, all three of them,": the same blocks, counted
+        before = re.findall(r"\bB(\d+)\b", m.text[: match.start()])
+        if not before or m.blocks[int(before[-1])] != scene.blocks:
+            return match.group(0)
+        all_blocks(match)
+        m.blocks.pop(), m.block_text.pop()
+        return " "
+
+    m.sub(r"\s*,?\s*\ball\s+(two|three|four|\d+)\s+of\s+them\b", restated)
     _mark_pronouns(m, previous)
 
 
@@ -379,197 +344,3 @@ def _mark_pronouns(m: Marked, previous: str) -> None:
         m.text = m.text[heading.end() :]
     singles = [m.blocks[int(k)] for k in re.findall(r"\bB(\d+)\b", m.text) if len(m.blocks[int(k)]) == 1]
     m.last_one = singles[-1][0] if singles else ""
-
-
-def _new_place(m: Marked, place: Place) -> str:
-    m.places.append(place)
-    return f" P{len(m.places) - 1} "
-
-
-def _mark_places(m: Marked, scene: Scene, named_before: tuple[str, ...]) -> None:
-    _mark_target_complements(m)
-    _mark_starts(m, scene)
-    m.sub(
-        r"\b(?:the\s+)?(?:opposite(?:\s+(?:side|sides|end|regions?|areas?|zones?|ones?))?|(?:far|other|facing)\s+"
-        r"(?:side|sides|end|regions?|areas?|zones?))(?:\s+(?:regions?|areas?))?"
-        r"(?:\s+of\s+the\s+(?:table|workspace|work\s+area|board))?\b",
-        lambda match: _new_place(m, Place("opposite", text=match.group(0).strip())),
-    )
-    m.sub(
-        rf"\b(?:(?:any|an|some|a)\s+)?(?:other\s+)?{EMPTY}\s+{PLACE_NOUN}\b",
-        lambda match: _new_place(m, Place("away", text=match.group(0).strip())),
-    )
-    _mark_arm_sides(m, scene)
-    _mark_region_lists(m, scene)
-    # "the placement area (on the side of) P", "any region except P", "those regions": the place named
-    count = r"(?:(?:two|three|four|\d+)\s+)?"
-    named = rf"\b(?:the\s+)?{count}(?:{TARGET}\s+(?:regions?|areas?|zones?)|areas?|zones?|regions)"
-    m.sub(rf"{named}\s*,?\s*(?:{APPOSITION}\s*)?,?\s*(?=P\d)", " ")
-    m.sub(
-        rf"\b(?:(?:the|an?|any|all)\s+)?(?:other\s+)?{PLACE_NOUN}\s+{OTHER_THAN}\s+P(\d+)|\boutside\s+(?:of\s+)?P(\d+)",
-        lambda match: _complement_of(m, match),
-    )
-
-    def other_than_these(match: re.Match[str]) -> str:  # the labelled regions but the ones just named
-        lists = [p.regions for p in m.places if p.kind == "regions"] or [named_before]
-        if not lists[-1]:
-            return match.group(0)
-        return _new_place(m, Place("complement", lists[-1], text=match.group(0).strip()))
-
-    m.sub(
-        rf"\b(?:(?:the|any|all|an?)\s+)?(?:other\s+)?{PLACE_NOUN}\s+{OTHER_THAN}\s+(?:these|those|them|the\s+ones\s+(?:named|above))\b",
-        other_than_these,
-    )
-    m.sub(
-        rf"\b(?:those|these|the\s+same|said)\s+{PLACE_NOUN}\b",
-        lambda match: _new_place(m, m.places[-1]) if m.places else match.group(0),
-    )
-    # a place named twice ("region G (where the red block is)", "area (E, F, G) to the side of arm a",
-    # "next to arm a and arm b, that is region E, F and G"): both readings must agree
-    # ("from P to Q" names a source and a goal: not a place named twice)
-    apposition = rf"(?<!from)(?<=\S)(\s+)P(\d+)\s*,?\s*{APPOSITION}?\s*,?\s*P(\d+)\s*\)?"
-    while re.search(apposition, m.text):
-        m.sub(apposition, lambda match: match.group(1) + _merge(m, int(match.group(2)), int(match.group(3))))
-
-
-TARGET = r"(?:goal|target|placement|destination|assigned)"
-OTHER_THAN = r"(?:other\s+than|except(?:\s+for)?|besides|apart\s+from|but|outside(?:\s+of)?)"
-
-
-def _mark_target_complements(m: Marked) -> None:
-    """'an area other than the target region', 'anywhere else', 'any other region': in a prohibition,
-    every labelled region but the goals' targets."""
-    non_target = (
-        rf"\b(?:an?\s+|any\s+)?non\s+{TARGET}\s+{PLACE_NOUN}\b|\b(?:the\s+|all\s+(?:the\s+)?|any\s+(?:of\s+the\s+)?)?"
-        rf"(?:remaining|rest\s+of\s+the)\s+{PLACE_NOUN}\b"
-    )
-    targets = (
-        rf"(?:the\s+|their\s+|its\s+|an?\s+|one\s+of\s+the\s+)?(?:{TARGET}\s+{PLACE_NOUN}|targets?|goals?)\b"
-    )
-    complement = (
-        rf"\b(?:the\s+|an?\s+)?(?:any\s+)?(?:other\s+)?(?:{PLACE_NOUN}|anywhere)\s+(?:{OTHER_THAN}|that\s+(?:is|are)\s+not)\s+"
-        rf"{targets}|\boutside\s+(?:of\s+)?{targets}|\b(?:(?:any\s+|an\s+)?other|another)\s+{PLACE_NOUN}\s+than\s+{targets}|"
-        rf"\b(?:any|all)\s+other\s+{PLACE_NOUN}\b|{non_target}"
-    )
-
-    def other_than(match: re.Match[str]) -> str:  # "anywhere other than ...", "elsewhere": with its "on"
-        on = " on " if re.match(r"anywhere|elsewhere|outside", match.group(0)) else ""
-        return on + _new_place(m, Place("complement", text=match.group(0).strip()))
-
-    m.sub(complement + r"|\b(?:anywhere\s+else|elsewhere)\b", other_than)
-
-
-def _complement_of(m: Marked, match: re.Match[str]) -> str:
-    """'any region except E, F and G', 'outside E, F and G': the labelled regions but those."""
-    named = m.places[int(match.group(1) or match.group(2))]
-    if named.kind != "regions":
-        raise HTTError(f"cannot tell which regions '{match.group(0).strip()}' leaves out")
-    on = " on " if match.group(2) else ""
-    return on + _new_place(m, Place("complement", named.regions, text=match.group(0).strip()))
-
-
-def _mark_starts(m: Marked, scene: Scene) -> None:
-    """'where the red block is', 'the original position of the red block': the region it starts on."""
-
-    def start_of(match: re.Match[str], group: int = 1) -> str:
-        k = int(match.group(group))
-        if len(m.blocks[k]) != 1:
-            return match.group(0)
-        block = m.blocks[k][0]
-        return _new_place(m, Place("start_of", (scene.start_region(block),), block, match.group(0).strip()))
-
-    where = (
-        r"(?:\b(?:to|in|into|on|onto|at)\s+)?\(?\s*\bwhere\s+B(\d+)\s+(?:currently\s+|now\s+|initially\s+)?"
-        r"(?:is|was|lies|lay|sits|sat|stands|started|starts|locates|stays|rests)\s*"
-        r"(?:currently\s+|now\s+|"
-        r"initially\s+|at\s+first\s+)?(?:located|locating|lying|placed|sitting|standing|from)?\s*"
-        r"(?:currently|now|initially|at\s+first|at\s+the\s+start)?\s*\)?"
-    )
-
-    def where_of(match: re.Match[str]) -> str:  # "back (to) where the red block is": a place to go to
-        place = start_of(match)
-        return match.group(0) if place == match.group(0) else " to " + place
-
-    m.sub(where, where_of)
-    start = r"(?:original\s+|initial\s+|starting\s+|start\s+)?(?:position|place|spot|location|cell|region)"
-    m.sub(rf"\b(?:the\s+)?{start}\s+of\s+B(\d+)\s*(?=\W|$)", start_of)
-
-    # "to the blue block's position" (the possessive may be read with the block)
-    def possessive(match: re.Match[str]) -> str:
-        place = start_of(match, 2)
-        return match.group(0) if place == match.group(0) else match.group(1) + place
-
-    m.sub(rf"\b((?:to|into|onto|on|in|at)\s+)B(\d+)\s+(?:s\s+)?{start}\b", possessive)
-
-
-def _mark_arm_sides(m: Marked, scene: Scene) -> None:
-    """'the side of arm a and arm b' (a place), 'next to arm a and arm b' (a landmark beside a place)."""
-
-    def arms(match: re.Match[str]) -> str:
-        letters = re.findall(r"\b[a-d]\b", re.sub(r"side of|reach of", "", match.group(0)))
-        regions = scene.arms_side(["abcd".index(x) for x in letters])
-        side = (
-            "side" in match.group(0) or re.search(r"(?:area|region|zone)s?\s+of", match.group(0)) is not None
-        )
-        kind: Literal["regions", "landmark"] = "regions" if side else "landmark"
-        if re.match(r"on|of|at", match.group(0)) and kind == "landmark":  # "on arm a" names no place
-            return match.group(0)
-        return _new_place(m, Place(kind, regions, text=match.group(0).strip()))
-
-    m.sub(
-        r"\b(?:(?:the\s+)?sides?\s+of|(?:the\s+)?(?:goal\s+|target\s+|placement\s+)?(?:area|region|zone)s?\s+of|"
-        r"next\s+to|beside|by|near|close\s+to|in\s+front\s+of|within\s+reach\s+of|"
-        r"reachable\s+by|adjacent\s+to|on|of|at)\s+(?:the\s+)?arms?\s+[a-d](?:\s*(?:,|and|&)\s*(?:the\s+)?(?:arm\s+)?[a-d])*"
-        r"(?:(?:\s+s)?\s+sides?)?\b",
-        arms,
-    )
-    # "the a/b side", "the side of a and b" without the word "arm"
-    m.sub(
-        r"\b(?:the\s+)?(?:arms?\s+)?[a-d]\s*(?:/|&|and|,)\s*(?:arm\s+)?[a-d]\s+(?:arms?\s+)?(?:s\s+)?sides?\b",
-        lambda match: _new_place(
-            m, Place("regions", _sides(scene, match.group(0)), text=match.group(0).strip())
-        ),
-    )
-
-
-def _sides(scene: Scene, text: str) -> tuple[str, ...]:
-    return scene.arms_side(["abcd".index(x) for x in re.findall(r"\b[a-d]\b", text)])
-
-
-def _mark_region_lists(m: Marked, scene: Scene) -> None:
-    """'region H, I and J', 'the goal regions G/H/I', and bare letters after a preposition ('on I')."""
-
-    def regions(match: re.Match[str]) -> str:
-        letters = [x.upper() for x in re.findall(LETTER, match.group("list"))]
-        unknown = [x for x in letters if x not in scene.layout.regions]
-        if unknown:
-            raise HTTError(f"no region {', '.join(unknown)} in handover-{scene.layout.name}")
-        text = match.group(0)[len(match.group("prep") or "") :]
-        count = re.match(r"\s*(?:the\s+)?(two|three|four|\d+)\s", text)
-        if count and COUNTS.get(count.group(1)) != len(set(letters)):
-            raise HTTError(f"'{text.strip()}' says {count.group(1)} regions but names {len(set(letters))}")
-        place = _new_place(m, Place("regions", tuple(dict.fromkeys(letters)), text=text.strip()))
-        return (match.group("prep") or "") + place
-
-    link = rf"(?:\s*(?:,|\band\b|\bor\b|\bat\b|&|/|\(|\)))*\s*(?:\b(?:{TARGET}\s+)?{PLACE_NOUN}\s+)?"
-    lead = (
-        rf"(?P<prep>)\b(?:the\s+)?(?:(?:two|three|four|\d+)\s+)?(?:{TARGET}\s+)?"
-        rf"{PLACE_NOUN}\s*(?::\s*)?(?:\(\s*)?(?:at\s+)?(?:{PLACE_NOUN}\s+)?"
-    )
-    bare = r"(?P<prep>\b(?:to|into|onto|on|in|at|among|over|between|than|except|besides|from|outside)\s+)"
-    letters = LETTER + r"(?:" + link + LETTER + r")*(?:\s*\))?"
-    m.sub(rf"{lead}(?P<list>{letters})(?:\s+at\b(?=\s*,))?", regions)
-    m.sub(rf"{bare}(?P<list>{letters})", regions)
-    # a bare list of two or more letters ("F, G, H stay empty"): regions anywhere (one letter may be "I")
-    listed = LETTER + r"(?:(?:\s*(?:,|\band\b|\bor\b|&|/))+\s*" + LETTER + r")+"
-    m.sub(rf"(?P<prep>)(?P<list>{listed})", regions)
-
-
-def _merge(m: Marked, i: int, j: int) -> str:
-    if m.places[i].kind != "regions":  # keep the named regions; the other reading must agree with them
-        i, j = j, i
-    a, b = m.places[i], m.places[j]
-    agree = a.kind == "regions" and b.kind in ("regions", "start_of", "landmark")
-    if not agree or set(a.regions) != set(b.regions):
-        raise HTTError(f"'{a.text}' and '{b.text}' name different places")
-    return f" P{i} "

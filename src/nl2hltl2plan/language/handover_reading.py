@@ -42,7 +42,7 @@ import networkx as nx
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.handover_goals import Clause, Goal, crossed_exchanges, goal_clauses, lead
-from nl2hltl2plan.language.handover_phrases import FILLER, Marked, Place, Scene, drop_but, mark
+from nl2hltl2plan.language.handover_phrases import drop_but, mark
 from nl2hltl2plan.language.handover_rules import (
     Prohibition,
     read_leaders,
@@ -50,6 +50,7 @@ from nl2hltl2plan.language.handover_rules import (
     read_prohibitions,
     read_touch_guards,
 )
+from nl2hltl2plan.language.handover_scene import FILLER, Marked, Place, Scene
 from nl2hltl2plan.language.htt import HTT, HTTNode
 from nl2hltl2plan.language.result import LanguageResult
 from nl2hltl2plan.language.spec_builder import build_spec
@@ -78,7 +79,8 @@ def is_handover(world: object) -> TypeGuard[World]:
 
 
 def translate_handover(instruction: str, world: World) -> LanguageResult:
-    """Instruction -> LanguageResult on a handover world (see the module docstring)."""
+    """Instruction -> LanguageResult on a handover world (see the module docstring); a line break in it ends
+    a step as a full stop does."""
     scene = Scene.of(world)
     clauses: list[Clause] = []
     orders: list[tuple[str, str]] = []
@@ -86,7 +88,8 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
     notes: list[str] = []
     pending: list[Prohibition] = []  # prohibitions stated before any goal
     previous: Marked | None = None  # the sentence before ("it", "these regions" in the next one)
-    for sentence in _sentences(instruction):
+    steps, instruction = _sentences(instruction), " ".join(instruction.split())
+    for sentence in steps:
         m = mark(sentence, scene, previous)
         previous = m
         notes += m.notes
@@ -97,8 +100,8 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
         # "red goes first, blue after red": the order says what "first" means
         leaders = [b for b in read_leaders(m) if b not in [x for x, _ in sentence_orders]]
         new = _without_restated(goal_clauses(m, scene))
-        if not new:  # "Step 2: the red block before the blue block": a step of rules only
-            m.sub(r"^\s*then\b", " ")
+        if not new:  # "Step 2: the red block before the blue block", "1) red before blue": rules only
+            m.sub(r"^\s*(?:then|first)\b", " ")
         drop_but(m)
         _refuse_leftovers(m, sentence)
         scope = [g for c in new for g in c.goals] or [g for c in clauses for g in c.goals]
@@ -129,10 +132,14 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
 
 
 def _sentences(instruction: str) -> list[str]:
-    """Split at '.', ';', '!' and '?', but not in 'i.e.' nor after a step's number ('1. Put ...')."""
-    text = re.sub(r"(^|[.;!?]\s+)(\d)\.\s", r"\1\2) ", instruction)
-    text = re.sub(r"\b[iI]\.\s?[eE]\.", "that is", text)
-    return [s for s in re.split(r"[.;!?]+(?:\s|$)", text) if s.strip()]
+    """Split at line breaks (a list of steps or bullets), '.', ';', '!' and '?', but not in 'i.e.' nor after a
+    step's number ('1. Put ...'); a bullet ('-', '*', '•') starting a line or sentence is dropped."""
+    out: list[str] = []
+    for line in instruction.splitlines():
+        text = re.sub(r"(^\s*|[.;!?]\s+)(\d)\.\s", r"\1\2) ", line)
+        text = re.sub(r"\b[iI]\.\s?[eE]\.", "that is", text)
+        out += [re.sub(r"^\s*[-*•·]\s+", "", s) for s in re.split(r"[.;!?]+(?:\s|$)", text)]
+    return [s for s in out if s.strip()]
 
 
 def _without_restated(clauses: list[Clause]) -> list[Clause]:

@@ -8,7 +8,7 @@ from __future__ import annotations
 import re
 
 from nl2hltl2plan.errors import HTTError
-from nl2hltl2plan.language.handover_phrases import Marked, Place
+from nl2hltl2plan.language.handover_scene import Marked, Place
 from nl2hltl2plan.language.handover_words import (
     DONE,
     DROP,
@@ -46,7 +46,7 @@ def read_orders(m: Marked) -> list[tuple[str, str]]:
     has been placed, Y may be placed', 'do not place Y until X has been placed': X's goal before Y's."""
     out: list[tuple[str, str]] = []
     tail = rf"(?:\s+(?:is|has\s+been|gets|was|have\s+been|are)\s+{DONE}|\s+does)?"
-    done = rf"(?:(?:{DONE}|comes?|lands?|arrives?|goes|gets)\s+)?(?:down\s+|there\s+)?(?:first\s*,?\s*)?"
+    done = rf"(?:(?:{DONE}|comes?|lands?|arrives?|goes|gets?)\s+)?(?:down\s+|there\s+)?(?:first\s*,?\s*)?"
 
     def add(match: re.Match[str], flip: bool) -> str:
         a, b = one_block(m, match.group(1), "an order"), one_block(m, match.group(2), "an order")
@@ -69,6 +69,8 @@ def read_orders(m: Marked) -> list[tuple[str, str]]:
     later = r"(?:after\s+B\d+|second|next|last|afterwards?)"
     then = rf"(?:{THEN}|followed\s+by|and(?=\s+(?:{VERB}\s+)?B\d+\s+{later}\b))"
 
+    m.sub(rf"\bB(\d+)\s+{MODAL}{DONE}\s*(?:first\s*)?,?\s*{then}\s+B(\d+){end}", lambda x: add(x, False))
+
     def add_then(x: re.Match[str]) -> str:  # "the red block first and the blue block after it": it = red
         if x.group(3) is not None and m.blocks[int(x.group(3))] != m.blocks[int(x.group(1))]:
             return x.group(0)
@@ -81,12 +83,15 @@ def read_orders(m: Marked) -> list[tuple[str, str]]:
     )
 
     def add_keeping_goal(x: re.Match[str]) -> str:  # the goal stays for the goal reader
-        add_pair(x.group(2), x.group(4)) if x.group(3) == "before" else add_pair(x.group(4), x.group(2))
-        return f" {x.group(1)} "
+        a = x.group("a1") or x.group("a2")
+        add_pair(a, x.group("b")) if x.group("w") == "before" else add_pair(x.group("b"), a)
+        return f" {x.group('goal')} "
 
-    m.sub(  # "place the red block on the opposite side before the blue block"
-        rf"\b((?:{VERB}|{GERUND})\s+B(\d+)\s+(?:back\s+)?{PREP}\s+P\d+)\s*,?\s+(?:first\s*,?\s*)?(before|after)\s+"
-        rf"(?:you\s+(?:{VERB}\s+)?|{GERUND}\s+)?B(\d+){tail}{end}",
+    # "place the red block on the opposite side before the blue block", "the red block is to be moved ..."
+    m.sub(
+        rf"\b(?P<goal>(?:{VERB}|{GERUND})\s+B(?P<a1>\d+)\s+(?:back\s+)?{PREP}\s+P\d+|B(?P<a2>\d+)\s+{MODAL}{DONE}\s+"
+        rf"(?:back\s+)?{PREP}\s+P\d+)\s*,?\s+(?:first\s*,?\s*)?(?P<w>before|after)\s+(?:you\s+(?:{VERB}\s+)?|{GERUND}\s+)?"
+        rf"B(?P<b>\d+){tail}{end}",
         add_keeping_goal,
     )
     for word, flip in ((r"before", False), (r"(?:after|once)", True)):
@@ -133,9 +138,13 @@ def read_leaders(m: Marked) -> list[str]:
         out.append(names[0])
         return " "
 
+    m.sub(r"\b(?:place|put|move|do|handle|take)\s+B(\d+)\s+(?:down\s+)?first\b(?=\s*(?:$|,|\band\b|\)))", add)
+    # non-native: "red block first place", "..., first place red block"
+    m.sub(r"\bB(\d+)\s+first\s+(?:place|placed|put|goes|go)\b(?=\s*(?:$|,|\band\b|\)))", add)
+    m.sub(r"\bfirst\s+(?:place|put|move)\s+B(\d+)(?=\s*(?:$|,|\band\b|\)))", add)
     m.sub(
         rf"(?:\b(?:with|placing|putting|moving|and)\s+)?\bB(\d+)\s+(?:down\s+)?{MODAL}(?:(?:placed|put|moved|set)\s+|goe?s?\s+|"
-        r"comes?\s+|going\s+|coming\s+)?first\b(?=\s*(?:$|,|\band\b|\)))",
+        r"comes?\s+|going\s+|coming\s+)?(?:down\s+|there\s+)?first\b(?=\s*(?:$|,|\band\b|\)))",
         add,
     )
     return out
@@ -148,26 +157,26 @@ def read_touch_guards(m: Marked) -> list[tuple[str, str]]:
     out: list[tuple[str, str]] = []
 
     def add(match: re.Match[str]) -> str:
-        y = next(match.group(g) for g in ("y1", "y2", "y3") if match.group(g) is not None)
+        y = next(match.group(g) for g in ("y1", "y2", "y3", "y4") if match.groupdict().get(g) is not None)
         out.append((one_block(m, match.group("x"), "a touch rule"), one_block(m, y, "a touch rule")))
         return " "
 
     end = r"(?=\s*(?:$|,|\band\b|\)))"
     # Y's touch, active ("an arm touched Y"), passive ("Y has been touched") or elliptic ("... before Y")
     other = (
-        rf"(?:(?:A\s+)?(?:has\s+|have\s+|had\s+)?(?:already\s+)?(?:{TOUCHED}|{TOUCHING})\s+B(?P<y1>\d+)|B(?P<y2>\d+)\s+"
-        rf"(?:(?:has|have|had)\s+(?:already\s+)?been|is|was|gets|got|being)\s+(?:already\s+)?{TOUCHED}(?:\s+by\s+A)?|"
-        rf"B(?P<y3>\d+){end})"
+        rf"(?:(?:A\s+)?(?:has\s+|have\s+|had\s+)?(?:already\s+)?(?:{TOUCHED}|{TOUCHING}|{TOUCH})\s+B(?P<y1>\d+)|B(?P<y2>\d+)\s+"
+        rf"(?:(?:has|have|had)\s+(?:already\s+)?been|is|was|gets|got|being|be)\s+(?:already\s+)?{TOUCHED}(?:\s+by\s+A)?|"
+        rf"B(?P<y3>\d+){end}|B(?P<y4>\d+)\s+(?:has|have|had)\s+been{end})(?:\s+first{end})?"
     )
     may = _MAY
     no_touch = (
         rf"(?:(?:\bA\s+)?{NEG}\s+{TOUCH}|(?:\bwith\s+)?\bno\s+A\s+(?:{may}\s+)?(?:{TOUCH}|{TOUCHED}|{TOUCHING})|"
-        rf"\b(?:never|not|without)\s+{TOUCHING})"
+        rf"\b(?:never|not|without|no)\s+{TOUCHING})"
         r"\s+B(?P<x>\d+)"
     )
     not_touched = (
-        rf"\bB(?P<x>\d+)\s+(?:(?:is|are|must|may|can|should|shall|will)\s+)?{NEG}\s+(?:ever\s+)?(?:to\s+)?be\s+"
-        rf"{TOUCHED}(?:\s+by\s+A)?"
+        rf"(?:\bwith\s+)?\bB(?P<x>\d+)\s+(?:(?:is|are|must|may|can|should|shall|will)\s+)?{NEG}\s+(?:ever\s+)?"
+        rf"(?:(?:to\s+)?be\s+|being\s+)?(?:{TOUCHED}|(?<=be\s){TOUCH})(?:\s+by\s+A)?"
     )
     until = r"(?:until|before|unless)"
     after = r"(?:only\s+)?(?:after|once|when)"
@@ -179,7 +188,7 @@ def read_touch_guards(m: Marked) -> list[tuple[str, str]]:
         rf"\b{until}\s+{other}\s*,?\s*{no_touch}",
         rf"\b{until}\s+{other}\s*,?\s*{not_touched}",
         rf"\bleave\s+B(?P<x>\d+)\s+(?:alone|untouched|be)\s+{until}\s+{other}",
-        rf"\b(?:keep|hold)\s+A\s+(?:off|away\s+from)\s+B(?P<x>\d+)\s+{until}\s+{other}",
+        rf"\b(?:keep|hold)\s+(?:A|your\s+hands|hands)\s+(?:off|away\s+from)\s+B(?P<x>\d+)\s+{until}\s+{other}",
         rf"\bB(?P<x>\d+)\s+(?:is|are|stays?|remains?)\s+off\s+limits\s+{until}\s+{other}",
         rf"\bB(?P<x>\d+)\s+{MODAL}wait\s+{until}\s+{other}",
         rf"\bB(?P<x>\d+)\s+{MODAL}(?:(?:remains?|stays?|remaining|staying|be\s+left|left)\s+)?untouched\s+{until}\s+{other}",
@@ -220,12 +229,27 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
         rf"\b{PERIOD_WORDS}\s*,?\s*(?=no\s+B|nothing|B\d+\s+{MODAL}{NEG}|(?:A\s+)?{NEG}|keep|leave|P\d)", " "
     )
     may = _MAY
-    m.sub(rf"\bno\s+B(?P<b>\d+)\s+(?:{may}\s+|is\s+|are\s+|gets\s+)?(?:ever\s+)?(?:be\s+)?{DROP}{down}", add)
+    m.sub(
+        rf"\bno\s+B(?P<b>\d+)\s+(?:{may}\s+|is\s+|are\s+|gets\s+|to\s+)?(?:ever\s+)?(?:be\s+)?{DROP}{down}",
+        add,
+    )
     # "no other region may receive an object", "regions F, G and H cannot receive any object"
     thing = r"(?:an?\s+|any\s+)?(?:(?:block|object|cube|pillar|item|piece)s?|anything)"
     receive = rf"(?:receive|get|hold|take|contain)s?\s+{thing}"
     m.sub(rf"\bno\s+P(?P<p>\d+)\s+(?:{may}\s+)?{receive}\b{PERIOD}", add)
     m.sub(rf"\bP(?P<p>\d+)\s+(?:{may}\s+)?{NEG}\s+{receive}\b{PERIOD}", add)
+
+    # "regions F, G and H cannot have any object placed (on them)": "them" was read as those regions
+    def add_same(match: re.Match[str]) -> str:
+        again = match.group("q")
+        same = again is None or m.places[int(again)] == m.places[int(match.group("p"))]
+        return add(match) if same else match.group(0)
+
+    m.sub(
+        rf"\bP(?P<p>\d+)\s+(?:{may}\s+)?{NEG}\s+(?:have|get)\s+{thing}\s+{DROP}(?:\s+(?:on|in|onto|into)\s+P(?P<q>\d+))?"
+        rf"{PERIOD}",
+        add_same,
+    )
     # "regions F, G and H shall receive no object"
     receive_no = r"(?:receive|get|hold|take|contain)s?\s+no"
     m.sub(rf"\bP(?P<p>\d+)\s+(?:{may}\s+)?{receive_no}\s*B(?P<b>\d+){PERIOD}", add)
@@ -234,11 +258,13 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
         rf"\b(?:no\s+B(?P<b>\d+)|nothing)\s+(?:{may}\s+)?(?:goes|go)\s+(?:on|in|onto|into|to)\s+P(?P<p>\d+){PERIOD}",
         add,
     )
+    m.sub(rf"\b(?:put|place|drop|set|leave|lay)\s+nothing{down}", add)  # "put nothing on F, G or H"
     # verbless: "no object on any other region", "nothing on F, G or H in the meantime"
     m.sub(rf"\bno\s+B(?P<b>\d+)\s+(?:on|in|onto|into)\s+P(?P<p>\d+){PERIOD}", add)
     m.sub(rf"\bnothing\s+(?:on|in|onto|into)\s+P(?P<p>\d+){PERIOD}", add)
     # "F/G/H: nothing during this period", "other regions: never"
     m.sub(rf"\bP(?P<p>\d+)\s*:\s*(?:nothing|never|none|forbidden|off\s+limits){PERIOD}", add)
+    m.sub(rf"(?:^|(?<=,))\s*P(?P<p>\d+)\s*:?\s*(?:no\s+B(?P<b>\d+)|nothing|none){PERIOD}(?=\s*(?:$|,))", add)
     modal = r"(?:(?:must|may|can|should|shall|will|is|are)\s+)?"
     m.sub(rf"\bB(?P<b>\d+)\s+{modal}{NEG}\s+(?:ever\s+)?(?:be\s+)?{DROP}{down}", add)
     m.sub(
@@ -257,7 +283,7 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
     m.sub(rf"\bB(?P<b>\d+)\s+(?:is|are)\s+{banned}\s+(?:from\s+)?{PREP}\s+P(?P<p>\d+){PERIOD}", add)
     m.sub(rf"\bno\s+B(?P<b>\d+)\s+(?:is|are)\s+(?:allowed|permitted)\s+{PREP}\s+P(?P<p>\d+){PERIOD}", add)
     # "region F, G and H can not be placed any object (during this period)"
-    m.sub(rf"\bP(?P<p>\d+)\s+(?:{may}\s+)?{NEG}\s+be\s+{DROP}\s+(?:with\s+)?B(?P<b>\d+){PERIOD}", add)
+    m.sub(rf"\bP(?P<p>\d+)\s+(?:{may}\s+)?{NEG}\s+(?:be\s+)?{DROP}\s+(?:with\s+)?B(?P<b>\d+){PERIOD}", add)
     # "regions F, G and H must stay empty (meanwhile)", "keep F, G and H free": nothing is put there
     must = r"(?:(?:must|should|will|shall|has\s+to|have\s+to|needs?\s+to)\s+)?"
     stay = rf"{must}(?:stay|remain|be\s+kept|be\s+left)"
@@ -266,6 +292,8 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
     m.sub(rf"\b(?:keep|leave)\s+P(?P<p>\d+)\s+{free}{PERIOD}", add)
     m.sub(rf"(?:\bwith\s+)?\bP(?P<p>\d+)\s+(?:kept|left)\s+{free}{PERIOD}", add)  # "with F, G, H kept empty"
     m.sub(rf"\bP(?P<p>\d+)\s+(?:(?:is|are|stays?|remains?|{stay})\s+)?off\s+limits{PERIOD}", add)
+    # verbless, a clause of its own: "F, G, H empty meanwhile", "regions F, G and H: empty"
+    m.sub(rf"(?:^|(?<=,))\s*P(?P<p>\d+)\s*:?\s*(?:kept\s+|left\s+)?{EMPTY}{PERIOD}(?=\s*(?:$|,))", add)
     # "regions F, G and H must not be used (during this period)", "do not use F, G or H"
     for_nothing = r"(?:\s+(?:for\s+)?(?:anything|any\s+(?:block|object|pillar)))?"
     be_used = rf"(?:to\s+)?be\s+used{for_nothing}{PERIOD}"
@@ -296,6 +324,18 @@ def _read_only_on(m: Marked) -> list[Prohibition]:
         )
         return " "
 
+    def goal_only(match: re.Match[str]) -> str:  # "move the pillars to E, F and G only": the goal stays
+        keep = m.places[int(match.group("p"))]
+        if keep.kind != "regions":  # named regions only: a guard holds for every goal of the sentence
+            return match.group(0)
+        text = match.group(0).strip()
+        out.append((blocks_of(m, match.group("b")), Place("complement", keep.regions, text=text), [], text))
+        return f" {match.group('goal')} "
+
+    m.sub(
+        rf"(?P<goal>\b(?:(?:{VERB}|{GERUND})\s+)?B(?P<b>\d+)\s+{PREP}\s+P(?P<p>\d+))\s+only\b(?=\s*(?:$|,|\band\b))",
+        goal_only,
+    )
     target = r"(?:P(?P<p>\d+)|(?P<t>the\s+(?:target|goal)\s+(?:regions?|areas?|zones?)))"
     m.sub(
         rf"\bB(?P<b>\d+)\s+{_MAY}\s+(?:only\s+be\s+{DROP}|be\s+{DROP}\s+only)\s+{PREP}\s+{target}{PERIOD}",

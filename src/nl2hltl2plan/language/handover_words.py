@@ -5,11 +5,11 @@ rewrites that map a writer's variants (synonyms, British forms, common typos) on
 
 VERB = (
     r"(?:transfer|move|put|place|bring|carry|take|deliver|relocate|shift|get|set|send|return|distribute|"
-    r"spread|position|drop|arrange|want|need|lay|deposit)"
+    r"spread|position|drop|arrange|want|need|lay|deposit|pop)"
 )
 PREP = r"(?:to|into|onto|on|in|at|towards?|over\s+to|in\s+to|on\s+to|among|across|over)"
 MOD = (
-    r"(?:separately|individually|one\s+after\s+another|one\s+by\s+one|one\s+at\s+a\s+time|in\s+turn|each|"
+    r"(?:separately|separate|individually|one\s+after\s+another|one\s+by\s+one|one\s+at\s+a\s+time|in\s+turn|each|"
     r"all|at\s+any\s+time|any\s+time|whenever|in\s+any\s+order|as\s+well|too|across|over)"
 )
 GERUND = (
@@ -36,25 +36,39 @@ TOUCHED = (
     r"(?:touched|picked\s+up|picked|grasped|grabbed|handled|moved|lifted|touches|picks\s+up|grabs|moves)"
 )
 TOUCHING = r"(?:touching|picking\s+up|picking|grabbing|grasping|handling|lifting|moving)"
-DROP = r"(?:placed|put|dropped|set|left|laid)(?:\s+down)?"
+DROP = (
+    r"(?:placed|put|dropped|set|left|laid|deposited|positioned|moved|brought|carried|transferred|stored|"
+    r"place|drop)(?:\s+down)?"  # "place": a non-native passive ("region F can not place any object")
+)
 # "during this period": a prohibition's scope, the goals of its sentence (else all goals so far)
 PERIOD_WORDS = (
     r"(?:(?:during|in)\s+(?:this|that|the\s+same)\s+(?:whole\s+|entire\s+)?(?:period|time)|in\s+the\s+meantime|meanwhile|"
     r"while\s+doing\s+(?:so|this|that|it)|while\s+(?:this|that)\s+(?:happens|is\s+happening|goes\s+on|is\s+going\s+on)|"
-    r"at\s+the\s+same\s+time|in\s+the\s+process|all\s+the\s+while|the\s+whole\s+time|"
+    r"at\s+the\s+same\s+time|in\s+the\s+process|all\s+the\s+while|the\s+whole\s+time|in\s+the\s+interim|"
     r"throughout(?:\s+(?:this|the|that)\s+(?:process|period|time))?|until\s+then|"
-    r"for\s+as\s+long\s+as\s+(?:this|that|it)\s+takes)"
+    r"for\s+as\s+long\s+as\s+(?:this|that|it)\s+takes|"
+    # "during the whole task", "for the duration of this task", "while you do this", "while this is done"
+    r"(?:during|throughout|for)\s+(?:this|that|the)\s+(?:whole\s+|entire\s+)?(?:task|process|job|operation|transfer)|"
+    r"for\s+the\s+(?:whole\s+|entire\s+)?duration(?:\s+of\s+(?:this|that|the)\s+(?:task|process|period|job|operation))?|"
+    r"while\s+(?:you|we|they|the\s+arms)\s+(?:are\s+)?(?:do|doing|carry\s+out|carrying\s+out|perform|performing)\s+"
+    r"(?:this|that|it|so)|while\s+(?:this|that|it)\s+(?:is|gets)\s+(?:being\s+)?done)"
 )
 PERIOD = rf"(?:\s*,?\s*(?:{PERIOD_WORDS}|at\s+any\s+time|ever|at\s+all))?"
 EMPTY = r"(?:empty|free|clear|unoccupied|vacant)"
-DONE_STATE = r"(?:done|finished|complete|completed|over)"
+DONE_STATE = (
+    r"(?:done|finished|complete|completed|over)"
+    # "done with that"
+    r"(?:\s+with\s+(?:all\s+(?:of\s+)?)?(?:this|these|that|it|everything|them|the\s+above))?"
+)
 AFTER_ALL = (
     r"(?:(?:once|when|after)\s+(?:all\s+(?:of\s+)?)?(?:this|these|that|it|everything(?:\s+else)?|the\s+above)(?:\s+all)?\s+"
     rf"(?:is|are|has\s+been|have\s+been)\s+(?:all\s+)?{DONE_STATE}|(?:once|when)\s+{DONE_STATE}|"
     rf"(?:once|when|after)\s+(?:you|we)\s*(?:'\s*re|'\s*ve\s+been|\s+are|\s+have\s+been)\s+(?:all\s+)?{DONE_STATE}|"
     r"after\s+(?:all\s+(?:of\s+)?(?:these|this|that|"
     r"the\s+above)|everything(?:\s+else)?)|finally|lastly|last\s+of\s+all|at\s+the\s+(?:very\s+)?end|in\s+the\s+end|"
-    r"as\s+(?:a|the)\s+(?:final|last)\s+step|(?:up)?on\s+(?:completion|finishing)(?:\s+of\s+(?:this|these|that|the\s+above|all\s+(?:of\s+)?(?:this|these|that)))?)"
+    r"after\s+(?:finish(?:ing)?|complet(?:e|ing)|doing|done)\s+(?:with\s+)?(?:all\s+(?:of\s+)?)?(?:this|these|that|everything|them)|"
+    r"after\s+(?:finishing|completing)\s+(?:it\s+)?all|"
+    r"as\s+(?:a|the)\s+(?:final|last)\s+step|at\s+last|after\s+all(?=\s*,)|(?:up)?on\s+(?:completion|finishing)(?:\s+of\s+(?:this|these|that|the\s+above|all\s+(?:of\s+)?(?:this|these|that)))?)"
 )
 THEN = (
     r"(?:then|after\s+that|afterwards?|next|subsequently|later|and\s+then|(?:and\s+)?from\s+there|"
@@ -87,7 +101,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\blet\s*'?\s*s\b|\blet\s+us\b|\bgo\s+ahead\s+and\b", "please"),
     (r"\banytime\b|\bin\s+any\s+time\b", "at any time"),
     (
-        r"\b(?:whenever\s+(?:you\s+(?:like|want|wish|please|can)|convenient|possible|it\s+suits\s+you)|"
+        r"\b(?:whenever\s+(?:you\s+(?:like|want|wish|please|can)|convenient|possible|(?:it\s+)?suits(?:\s+you)?)|"
         r"at\s+(?:any|whatever)\s+(?:point(?:\s+in\s+time)?|moment|stage)|(?:at\s+)?any\s+time\s+you\s+(?:like|want))\b",
         "at any time",
     ),
@@ -108,9 +122,27 @@ REWRITES: tuple[tuple[str, str], ...] = (
     ),
     (r"\s*,?\s*\bwith\s+the\s+(?:rule|condition|constraint|requirement|restriction)\s+that\b", ","),
     (r"\bin\s+addition\b", " "),
-    (r"^\s*(?:order|ordering|sequence|constraints?|rules?|requirements?|restrictions?|conditions?)\s*:", " "),
-    (r"^\s*(?:objective|goal|task|aim|mission|instructions?)\s*:", "please"),
-    (r"\bunder\s+no\s+circumstances\s+(?=(?:place|put|drop|set|touch|move)\b)", "never "),
+    # a heading, also after a step's number: "Rule: ...", "2) Constraint: ...", "Goals:"
+    (
+        r"^(\s*(?:step\s+\w+\s*:?|\d\s*[):]|\(\s*\d\s*\))?\s*)(?:order|ordering|sequence|constraints?|rules?|"
+        r"requirements?|restrictions?|conditions?)\s*:",
+        r"\1",
+    ),
+    (
+        r"^(\s*(?:step\s+\w+\s*:?|\d\s*[):]|\(\s*\d\s*\))?\s*)(?:objectives?|goals?|tasks?|aims?|missions?|"
+        r"instructions?)\s*:",
+        r"\1 please",
+    ),
+    # casual openers and closers: "ok so ...", "... pls", "thanks"
+    (r"^\s*(?:(?:ok(?:ay)?|alright|right|so|well|hi|hello|hey)\b\s*,?\s*)+", " "),
+    (r"\b(?:pls|plz|thx|thanks|thank\s+you)\b", "please"),
+    (r"\btill\b", "until"),
+    (r"\b([a-z]+)\s+s\s+been\b", r"\1 has been"),  # "till red's been touched"
+    (r"\b(?:any\s+)?(?:stuff|things)\b(?=\s+(?:on|in|onto|into)\b)", "anything"),
+    (
+        r"\b(?:under\s+no\s+circumstances|on\s+no\s+account)\s+(?=(?:place|put|drop|set|touch|move)\b)",
+        "never ",
+    ),
     (r"\bat\s+some\s+(?:point|time)\b", "at any time"),
     (r"\bnothing\s+else\b", "nothing"),
     (r"\bno\s+other\s+(?=(?:blocks?|objects?|items?|cubes?|pillars?|pieces?)\b)", "no "),
@@ -138,8 +170,10 @@ REWRITES: tuple[tuple[str, str], ...] = (
     ),
     (r"^\s*(?:two|three|a\s+few)\s+things\s*:", " "),
     (r"\s*,?\s*\bon\s+the\s+other\s+hand\b\s*,?", " "),
+    (r"^\s*then\s+again\s*,", " "),  # "Then again, ...": "on the other hand", not a step
     (r"^\s*as\s+(?:for|to|regards)\s+(?:the\s+)?(?:order|ordering|sequence)\s*,", " "),
     (r"\b(?:once|when|after)\s+it\s+(?:is|gets|has\s+been\s+placed)\s+there\s*,", " then "),
+    (r"\b(?<!to\s)(?<!on\s)(?<!in\s)anywhere\s+(?:empty|free)\b", "to any empty region"),
     (r"\banywhere\s+(?:empty|free)\b", "any empty region"),
     # "use regions G, H and I for the three blocks": put them there
     (
@@ -172,6 +206,82 @@ REWRITES: tuple[tuple[str, str], ...] = (
         rf"(?={VERB}\b)",
         "please ",
     ),
+    # the doer named formally: "the agent shall transfer ...", "the system must move ..."
+    (
+        rf"^\s*(?:the\s+)?(?:agent|agents|system|robot\s+system|planner|team|robot\s+team|operator)\s+"
+        rf"(?:must|should|will|shall|needs?\s+to|has\s+to|is\s+to|are\s+to)\s+(?={VERB}\b|exchange|swap|fill)",
+        "please ",
+    ),
+    # one modal for obligation: "is to be / has to be / needs to be / ought to be placed" -> "must be placed"
+    (r"\b(?:is|are|has|have|needs?|ought)\s+to\s+be\b", "must be"),
+    (r"\b(?:is|are)\s+not\s+to\s+be\b", "must not be"),
+    (r"\b(?:is|are)\s+(then|first|also|finally|next|afterwards|later)\s+to\s+be\b", r"must \1 be"),
+    (r"\b(?:is|are)\s+to\s+have\b", "must have"),
+    (r"\b(?:is|are)\s+to\s+(stay|remain)\b", r"must \1"),
+    # "must stay / remain untouched", "is to be left untouched": not touched
+    (
+        r"\b(?:must\s+|should\s+|shall\s+|will\s+)?(?:stay|remain|be\s+left|be\s+kept)\s+untouched\b",
+        "must not be touched",
+    ),
+    (r"\bone\s+after\s+(?:one|other)\b", "one after another"),
+    (r"\bplease\s+to\b", "please"),
+    (r"\bwont\b", "will not"),
+    (r"\b(do|does|can|should|must|is|are)nt\b", r"\1 not"),  # "dont", "cant" without the apostrophe
+    (r"\b(any\s+time|whenever)\s+(?:is|are)\s+(?:ok|okay|fine)\b", r"\1"),
+    # who asks: "the operator requires that the blocks be moved ..."; "please do the following:"
+    (
+        r"^\s*(?:the\s+)?(?:operator|user|client|customer|supervisor|lab|team|we|i)\s+(?:require|request|ask|want)s?\s+"
+        r"that\b",
+        " ",
+    ),
+    (
+        r"^\s*(?:please\s+)?(?:do|carry\s+out|perform|follow)\s+(?:the\s+following|these\s+steps)(?:\s+steps)?\s*:?",
+        " ",
+    ),
+    (r"(?<=[a-z])\s*\+\s*(?=[a-z])", " and "),  # "red + blue"
+    # "while moving them, ...": the period of the goals
+    (
+        r"\bwhile\s+(?:you\s+(?:are\s+)?)?(?:moving|placing|transferring|carrying|bringing|doing)\s+"
+        r"(?:them|it|this|that|so|the\s+(?:blocks|pillars|objects))\b",
+        "meanwhile",
+    ),
+    # reasons that say nothing but that the order or the timing was meant
+    (
+        r"\s*,?\s*\b(?:as|since|because)\s+(?:(?:the\s+)?order\s+(?:matters|is\s+important)(?:\s+here)?|that\s+is\s+the\s+"
+        r"order\s+(?:we|i)\s+(?:need|want))\b",
+        " ",
+    ),
+    (
+        r"\s*,?\s*\b(?:as|since|because)\s+(?:their|its|the)\s+timing\s+(?:is\s+free|does\s+not\s+matter|is\s+up\s+to\s+you)\b",
+        " in any order",
+    ),
+    (
+        r"\b(blocks|pillars|objects|cubes|items)\s*\(\s*(two|three|four|\d)\s*\)",
+        r"\2 \1",
+    ),  # "pillars (three)"
+    # non-native: "the blue block is not allow to touch": not to be touched (a block is the subject: not "the
+    # arm is not allowed to touch the blue block")
+    (
+        r"(?:(?<=block\s)|(?<=blocks\s)|(?<=red\s)|(?<=blue\s)|(?<=yellow\s)|(?<=object\s)|(?<=pillar\s))"
+        r"(?:is|are)\s+not\s+allow(?:ed)?\s+to\s+(?:be\s+)?(?:touch(?:ed)?|grab(?:bed)?|pick(?:ed)?\s+up|lift(?:ed)?)\b",
+        "must not be touched",
+    ),
+    (r"\bchange\s+(?=(?:the\s+)?(?:positions?|places?)\s+of\b)", "exchange "),
+    (r"\b(that|it|there|what|here)\s+s\b", r"\1 is"),  # "a region that's not a target"
+    # "..., than place ...": a typo ("than" is never comparative between a comma and a verb)
+    (r"(?<=,)\s*than\s+(?=(?:place|put|move|transfer|bring|take)\b)", " then "),
+    (
+        r"^\s*(?:with\s+(?:that|this)(?:\s+(?:rule|constraint|condition|requirement))?|that\s+said|"
+        r"having\s+said\s+that)\s*,",
+        " ",
+    ),
+    (r"\band\s+(?:because|since)\s+", "and "),
+    (r"^\s*(?:steps|procedure|instructions|plan|to\s+do)\s*:\s*", " "),
+    # a reason clause: read as a clause of the instruction ("because regions F, G and H must stay clear, ...")
+    (r"^(\s*(?:step\s+\w+\s*[:-]?|\d\s*[):-]|\(\s*\d\s*\))?\s*)(?:because|since)\s+", r"\1 "),
+    (r"\s*,\s*(?:because|since)\s+", ", and "),
+    (r"\s*,\s*so\s+(?!that\b|as\b|long\b|far\b|on\b)", ", "),
+    (r"\s*,?\s*(?:since|because|as)\s+(?:the|their)\s+order\s+does\s+not\s+matter\b", " in any order"),
     # a rule announced: "the only ordering rule is that ...", "be careful about one thing:"
     (
         r"\b(?:the|one|an?|another)\s+(?:only\s+)?(?:other\s+)?(?:ordering\s+|order\s+)?"
@@ -185,7 +295,11 @@ REWRITES: tuple[tuple[str, str], ...] = (
         r"occupy\s+(?=(?:the\s+)?(?:(?:goal|target)\s+)?regions?\b)",
         r"\1go to ",
     ),
-    (r"\b(?:simply|merely|just)\s+(?=(?:needs?|ha(?:s|ve))\s+to\b)", ""),  # "they simply need to be moved"
+    # "they simply need to be moved", "the yellow block only has to reach ..."
+    (
+        r"\b(?:simply|merely|just|only)\s+(?=(?:needs?|ha(?:s|ve))\s+to\b)|\b(?:simply|merely|just)\s+(?=must\b)",
+        "",
+    ),
     # a topic and its pronoun: "as for the red and blue blocks, they ..." -> "the red and blue blocks ..."
     (r"^\s*as\s+(?:for|to|regards)\s+([a-z ]+?)\s*,\s*(?:they|it)\b", r"\1"),
     # "on region I first and on region G thereafter", "to region I and, after that, to region G"
@@ -232,8 +346,11 @@ REWRITES: tuple[tuple[str, str], ...] = (
     # "the goal is to have the blocks on ...": the state asked for, as a goal
     (r"\b(please|to)\s+have\s+(?=(?:the|all|both|each|every)\b)", r"\1 get "),
     # a numbered step: the first, or one after the step before
-    (r"^\s*(?:step\s+(?:1|one)\s*:?|1\s*[):]|\(\s*1\s*\))\s*", "first "),
-    (r"^\s*(?:step\s+(?:[2-9]|two|three|four|five)\s*:?|[2-9]\s*[):]|\(\s*[2-9]\s*\))\s*", "then "),
+    (r"^\s*(?:step\s+(?:1|one)\s*[:-]?|1\s*[):-]|\(\s*1\s*\))\s*", "first "),
+    (r"^\s*(?:step\s+(?:[2-9]|two|three|four|five)\s*[:-]?|[2-9]\s*[):-]|\(\s*[2-9]\s*\))\s*", "then "),
+    (r"^\s*(?:second(?:ly)?|third(?:ly)?|fourth(?:ly)?)\s*[:,]", "then "),
+    (r"^\s*then\s*,?\s*then\b", "then"),  # "2) Then move it ...": the step's "then" said twice
+    (r"\b(finally|lastly|then|next|afterwards|first)\s*:", r"\1"),  # "Finally: yellow -> G"
     (r"\b(?:remember|be\s+sure|make\s+sure|do\s+not\s+forget|note|keep\s+in\s+mind)\s+(?:to|that)\b", " "),
     (r"\bprecedes?\b", "comes before"),
     (r"\bfollows?\b", "comes after"),
@@ -280,18 +397,46 @@ REWRITES += tuple(
 TYPO_WORDS = (
     "block blocks region regions opposite place placed transfer before after yellow pillar pillars object "
     "objects separately another empty touch touched exchange position positions should until during period "
-    "please first other across"
+    "please first other across three placement touching picked finish finished target targets nothing "
+    "anything meanwhile"
 ).split()
-REAL_WORDS = frozenset("pace paced touche fist firs pease pleas".split())
+REAL_WORDS = frozenset(
+    "pace paced touche fist firs pease pleas there tree piked finnish blacks placid daring packed pecked "
+    "pocked".split()
+)
+VOWELS = "aeiou"
+
+
+# short words, too short for the table's rules, in their commonest misspellings
+SHORT_TYPOS = {
+    "thsi": "this",
+    "sied": "side",
+    "sdie": "side",
+    "bcak": "back",
+    "bakc": "back",
+    "tmie": "time",
+    "tiem": "time",
+    "tihs": "this",
+    "teh": "the",
+    "hte": "the",
+    "adn": "and",
+    "nad": "and",
+    "taht": "that",
+}
 
 
 def typo_table() -> dict[str, str]:
-    """misspelling -> word, for the words of `TYPO_WORDS` (a misspelling that two words share is left out)."""
+    """misspelling -> word, for the words of `TYPO_WORDS` (a misspelling that two words share is left out):
+    a transposed, dropped or doubled letter (not the first), and in a word of six letters or more one vowel
+    for another."""
     seen: dict[str, set[str]] = {}
     for word in (w for w in TYPO_WORDS if len(w) >= 5):
         forms = {word[:i] + word[i + 1] + word[i] + word[i + 2 :] for i in range(1, len(word) - 1)}
         forms |= {word[:i] + word[i + 1 :] for i in range(1, len(word))}
         forms |= {word[:i] + word[i] + word[i:] for i in range(1, len(word))}
+        if len(word) >= 6:  # one vowel written for another: "seperately", "pleese"
+            vowels = [i for i in range(1, len(word)) if word[i] in VOWELS]
+            forms |= {word[:i] + v + word[i + 1 :] for i in vowels for v in VOWELS}
         for form in forms - set(TYPO_WORDS) - REAL_WORDS:
             seen.setdefault(form, set()).add(word)
-    return {form: next(iter(words)) for form, words in seen.items() if len(words) == 1}
+    return {form: next(iter(words)) for form, words in seen.items() if len(words) == 1} | SHORT_TYPOS

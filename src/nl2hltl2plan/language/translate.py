@@ -104,13 +104,14 @@ def translate(
             f"the instruction is {len(instruction):,} characters long; the limit is "
             f"{MAX_INSTRUCTION_CHARS:,} (split it into several instructions)"
         )
+    lines = [" ".join(line.split()) for line in instruction.splitlines() if line.strip()]
     instruction = " ".join(instruction.split())
     if not instruction:
         raise HTTError("empty instruction")
     types = set(world.object_types()) if world is not None else None
     scene = world.name if world is not None else None
     if backend in PARSERS and handover_reading.is_handover(world):  # the four-arm worlds' own phrases
-        return handover_reading.translate_handover(instruction, world)
+        return handover_reading.translate_handover("\n".join(lines), world)  # a line break ends a step
     if backend in PARSERS:
         look = world_lookup(world) if isinstance(world, World) else None
         grounder = Grounder(types, scene or "the scene")

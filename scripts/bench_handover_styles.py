@@ -1,0 +1,72 @@
+"""First contact of the handover reader on rephrasings by style (issue 24: held-out rephrasings of the
+eight Table III instructions must give the written specs).
+
+    PYTHONPATH=src python scripts/bench_handover_styles.py [--batch NAME] [--verbose] [--file F]
+    (NAME: dev, dev2 ... dev5, validation; default dev)
+    (default F: tests/experiments/handover_styles_session10.json)
+
+Each sentence of the batch is read on instance 0 of its task (`translate`, offline) and judged against the
+task's written spec node by node (`specs_equivalent`): "same", "refused" (exit 2, named) or "other" (a
+different spec: a misreading). Prints a markdown table per style and, with --verbose, each sentence that
+is not "same" with the reason.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import platform
+import subprocess
+from collections import Counter
+from pathlib import Path
+
+from nl2hltl2plan.errors import Nl2Hltl2PlanError
+from nl2hltl2plan.language.translate import translate
+from nl2hltl2plan.suites.handover.handover_bench import instance, load_tasks, specs_equivalent
+
+DEFAULT = Path(__file__).resolve().parents[1] / "tests" / "experiments" / "handover_styles_session10.json"
+TASKS = {t.id: t for t in load_tasks()}
+
+
+def verdict(task_id: int, text: str) -> tuple[str, str]:
+    try:
+        result = translate(text, instance(TASKS[task_id], 0, 0).as_world())
+    except Nl2Hltl2PlanError as exc:
+        return "refused", str(exc)
+    assert result.spec is not None
+    equal, why = specs_equivalent(result.spec, TASKS[task_id].hierarchical())
+    return ("same", "") if equal else ("other", why)
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--batch", default="dev", help="a batch of the file: dev, dev2 ... dev5, validation")
+    parser.add_argument("--file", type=Path, default=DEFAULT)
+    parser.add_argument("--verbose", action="store_true")
+    args = parser.parse_args()
+    batches = json.loads(args.file.read_text())
+    if args.batch not in batches or args.batch == "about":
+        parser.error(f"no batch {args.batch!r} in {args.file}")
+    styles: dict[str, dict[str, str]] = batches[args.batch]
+    commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True, text=True).stdout
+    print(f"batch {args.batch} of {args.file.name}; commit {commit.strip()}; {platform.machine()} CPU\n")
+    print("| style | sentences | same spec | refused | other spec |\n|---|---|---|---|---|")
+    total: Counter[str] = Counter()
+    misses: list[str] = []
+    for style, texts in styles.items():
+        counts: Counter[str] = Counter()
+        for task, text in texts.items():
+            kind, why = verdict(int(task), text)
+            counts[kind] += 1
+            if kind != "same":
+                misses.append(f"- {kind} ({style}, task {task}): {text!r}\n  {why[:300]}")
+        total += counts
+        row = [sum(counts.values()), counts["same"], counts["refused"], counts["other"]]
+        print(f"| {style} | " + " | ".join(map(str, row)) + " |")
+    print(f"| all | {sum(total.values())} | {total['same']} | {total['refused']} | {total['other']} |")
+    if args.verbose:
+        print("\n" + "\n".join(misses))
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,256 @@
+"""Place phrases of a handover sentence (`handover_phrases.mark` calls these once the blocks are marked):
+labelled regions ("region H, I and J", "G/H/I", "on I"), "the opposite side" (per block), "any empty
+region", "where the red block is", the side of some arms, the complement of the targets or of named
+regions, a place named twice (both readings must agree) and place pronouns ("put nothing on them",
+"put the blocks there"). Each becomes a placeholder `P<k>` of the `Marked` sentence."""
+
+from __future__ import annotations
+
+import re
+from typing import Literal
+
+from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.language.handover_scene import COUNTS, LETTER, NOUN, PLACE_NOUN, Marked, Place, Scene
+from nl2hltl2plan.language.handover_words import APPOSITION, EMPTY
+
+
+def mark_place_pronouns(m: Marked, named_before: tuple[str, ...]) -> None:
+    """'them' after 'on', 'there' after a moved block: the last place named before it in the sentence, else
+    the last regions the sentence before named; with neither the word stays (unread, so refused; 'there'
+    may still be read as a word: 'the red one should be put there before the blue one'). A place
+    named as a heading ('regions H, I and J: put the blocks there') or defined ('regions G, H and I are the
+    targets: place the blocks in them') is then read where the pronoun stands."""
+    if "PLACEREF" not in m.text:
+        return
+    defined = rf"(?:is|are)\s+(?:the|our|your)\s+(?:targets?|goals?|destinations?|{TARGET}\s+{PLACE_NOUN})"
+    m.sub(rf"\bP(\d+)\s+{defined}\s*:", r"P\1 :")
+    headings: list[str] = []
+
+    def resolve(match: re.Match[str]) -> str:
+        word = match.group(1)
+        to = " to " if word == "there" else " "
+        before = re.findall(r"\bP(\d+)\b", m.text[: match.start()])
+        if before:
+            if re.search(rf"\bP{before[-1]}\s*:", m.text):
+                headings.append(before[-1])
+            return to + _new_place(m, m.places[int(before[-1])])
+        if named_before:
+            return to + _new_place(m, Place("regions", named_before, text=word))
+        return f" {word} "
+
+    m.sub(r"\bPLACEREF_(them|it|there)\b", resolve)
+    for k in headings:
+        m.sub(rf"\bP{k}\s*:", " ")
+
+
+def mark_capacity(m: Marked) -> None:
+    """'regions H, I and J can each hold only one block': the world's own rule (a cell holds one block),
+    said of named places (a pronoun after it, '..., so put one block in each of them', was resolved
+    before)."""
+
+    def note(match: re.Match[str]) -> str:
+        m.notes.append("one block per region (the world's rule: a cell holds one block)")
+        return " "
+
+    m.sub(
+        rf"\bP\d+\s+(?:(?:can|may|will|could)\s+)?(?:each\s+)?(?:only\s+)?(?:hold|take|fit|contain|accept)s?\s+"
+        rf"(?:only\s+|just\s+|at\s+most\s+)?(?:one|a\s+single|1)\s+{NOUN}(?:\s+(?:each|apiece))?\b",
+        note,
+    )
+
+
+def _new_place(m: Marked, place: Place) -> str:
+    m.places.append(place)
+    return f" P{len(m.places) - 1} "
+
+
+def mark_places(m: Marked, scene: Scene, named_before: tuple[str, ...]) -> None:
+    _mark_target_complements(m)
+    _mark_starts(m, scene)
+    m.sub(
+        r"\b(?:the\s+)?(?:opposite(?:\s+(?:side|sides|end|regions?|areas?|zones?|ones?))?|(?:far|other|facing)\s+"
+        r"(?:side|sides|end|regions?|areas?|zones?))(?:\s+(?:regions?|areas?))?"
+        r"(?:\s+of\s+the\s+(?:table|workspace|work\s+area|board))?\b",
+        lambda match: _new_place(m, Place("opposite", text=match.group(0).strip())),
+    )
+    m.sub(
+        rf"\b(?:(?:any|an|some|a)\s+)?(?:other\s+)?{EMPTY}\s+{PLACE_NOUN}\b",
+        lambda match: _new_place(m, Place("away", text=match.group(0).strip())),
+    )
+    _mark_arm_sides(m, scene)
+    _mark_region_lists(m, scene)
+    # "the placement area (on the side of) P", "any region except P", "those regions": the place named
+    count = r"(?:(?:two|three|four|\d+)\s+)?"
+    named = rf"\b(?:the\s+)?{count}(?:{TARGET}\s+(?:regions?|areas?|zones?)|areas?|zones?|regions)"
+    m.sub(rf"{named}\s*,?\s*(?:{APPOSITION}\s*)?,?\s*(?=P\d)", " ")
+    m.sub(
+        rf"\b(?:(?:the|an?|any|all)\s+)?(?:other\s+)?{PLACE_NOUN}\s+{OTHER_THAN}\s+P(\d+)|\boutside\s+(?:of\s+)?P(\d+)",
+        lambda match: _complement_of(m, match),
+    )
+
+    def other_than_these(match: re.Match[str]) -> str:  # the labelled regions but the ones just named
+        lists = [p.regions for p in m.places if p.kind == "regions"] or [named_before]
+        if not lists[-1]:
+            return match.group(0)
+        return _new_place(m, Place("complement", lists[-1], text=match.group(0).strip()))
+
+    m.sub(
+        rf"\b(?:(?:the|any|all|an?)\s+)?(?:other\s+)?{PLACE_NOUN}\s+{OTHER_THAN}\s+(?:these|those|them|the\s+ones\s+(?:named|above))\b",
+        other_than_these,
+    )
+    m.sub(
+        rf"\b(?:those|these|the\s+same|said)\s+{PLACE_NOUN}\b",
+        lambda match: _new_place(m, m.places[-1]) if m.places else match.group(0),
+    )
+    # a place named twice ("region G (where the red block is)", "area (E, F, G) to the side of arm a",
+    # "next to arm a and arm b, that is region E, F and G"): both readings must agree
+    # ("from P to Q" names a source and a goal: not a place named twice)
+    apposition = rf"(?<!from)(?<=\S)(\s+)P(\d+)\s*,?\s*{APPOSITION}?\s*,?\s*P(\d+)\s*\)?"
+    while re.search(apposition, m.text):
+        m.sub(apposition, lambda match: match.group(1) + _merge(m, int(match.group(2)), int(match.group(3))))
+
+
+TARGET = r"(?:goal|target|placement|destination|assigned)"
+OTHER_THAN = r"(?:other\s+than|except(?:\s+for)?|besides|apart\s+from|but|outside(?:\s+of)?)"
+
+
+def _mark_target_complements(m: Marked) -> None:
+    """'an area other than the target region', 'anywhere else', 'any other region': in a prohibition,
+    every labelled region but the goals' targets."""
+    non_target = (
+        rf"\b(?:an?\s+|any\s+)?non\s+{TARGET}\s+{PLACE_NOUN}\b|\b(?:the\s+|all\s+(?:the\s+)?|any\s+(?:of\s+the\s+)?)?"
+        rf"(?:remaining|rest\s+of\s+the)\s+{PLACE_NOUN}\b"
+    )
+    targets = (
+        rf"(?:the\s+|their\s+|its\s+|an?\s+|one\s+of\s+the\s+)?(?:{TARGET}\s+{PLACE_NOUN}|targets?|goals?)\b"
+    )
+    complement = (
+        rf"\b(?:the\s+|an?\s+)?(?:any\s+)?(?:other\s+)?(?:{PLACE_NOUN}|anywhere)\s+(?:{OTHER_THAN}|that\s+(?:is|are)\s+not)\s+"
+        rf"{targets}|\boutside\s+(?:of\s+)?{targets}|\b(?:(?:any\s+|an\s+)?other|another)\s+{PLACE_NOUN}\s+than\s+{targets}|"
+        rf"\b(?:any|all|every)\s+other\s+{PLACE_NOUN}\b|{non_target}"
+    )
+
+    def other_than(match: re.Match[str]) -> str:  # "anywhere other than ...", "elsewhere": with its "on"
+        on = " on " if re.match(r"anywhere|elsewhere|outside", match.group(0)) else ""
+        return on + _new_place(m, Place("complement", text=match.group(0).strip()))
+
+    m.sub(complement + r"|\b(?:anywhere\s+else|elsewhere)\b", other_than)
+
+
+def _complement_of(m: Marked, match: re.Match[str]) -> str:
+    """'any region except E, F and G', 'outside E, F and G': the labelled regions but those."""
+    named = m.places[int(match.group(1) or match.group(2))]
+    if named.kind != "regions":
+        raise HTTError(f"cannot tell which regions '{match.group(0).strip()}' leaves out")
+    on = " on " if match.group(2) else ""
+    return on + _new_place(m, Place("complement", named.regions, text=match.group(0).strip()))
+
+
+def _mark_starts(m: Marked, scene: Scene) -> None:
+    """'where the red block is', 'the original position of the red block': the region it starts on."""
+
+    def start_of(match: re.Match[str], group: int = 1) -> str:
+        k = int(match.group(group))
+        if len(m.blocks[k]) != 1:
+            return match.group(0)
+        block = m.blocks[k][0]
+        return _new_place(m, Place("start_of", (scene.start_region(block),), block, match.group(0).strip()))
+
+    where = (
+        r"(?:\b(?:to|in|into|on|onto|at)\s+)?\(?\s*\bwhere\s+B(\d+)\s+(?:currently\s+|now\s+|initially\s+)?"
+        r"(?:is|was|lies|lay|sits|sat|stands|started|starts|locates|stays|rests)\s*"
+        r"(?:currently\s+|now\s+|"
+        r"initially\s+|at\s+first\s+)?(?:located|locating|lying|placed|sitting|standing|from)?\s*"
+        r"(?:currently|now|initially|at\s+first|at\s+the\s+start)?\s*\)?"
+    )
+
+    def where_of(match: re.Match[str]) -> str:  # "back (to) where the red block is": a place to go to
+        place = start_of(match)
+        return match.group(0) if place == match.group(0) else " to " + place
+
+    m.sub(where, where_of)
+    start = r"(?:original\s+|initial\s+|starting\s+|start\s+)?(?:position|place|spot|location|cell|region)"
+    m.sub(rf"\b(?:the\s+)?{start}\s+of\s+B(\d+)\s*(?=\W|$)", start_of)
+
+    # "to the blue block's position" (the possessive may be read with the block)
+    def possessive(match: re.Match[str]) -> str:
+        place = start_of(match, 2)
+        return match.group(0) if place == match.group(0) else match.group(1) + place
+
+    m.sub(rf"\b((?:to|into|onto|on|in|at)\s+)B(\d+)\s+(?:s\s+)?{start}\b", possessive)
+
+
+def _mark_arm_sides(m: Marked, scene: Scene) -> None:
+    """'the side of arm a and arm b' (a place), 'next to arm a and arm b' (a landmark beside a place)."""
+
+    def arms(match: re.Match[str]) -> str:
+        letters = re.findall(r"\b[a-d]\b", re.sub(r"side of|reach of", "", match.group(0)))
+        regions = scene.arms_side(["abcd".index(x) for x in letters])
+        side = (
+            "side" in match.group(0) or re.search(r"(?:area|region|zone)s?\s+of", match.group(0)) is not None
+        )
+        kind: Literal["regions", "landmark"] = "regions" if side else "landmark"
+        if re.match(r"on|of|at", match.group(0)) and kind == "landmark":  # "on arm a" names no place
+            return match.group(0)
+        return _new_place(m, Place(kind, regions, text=match.group(0).strip()))
+
+    m.sub(
+        r"\b(?:(?:the\s+)?sides?\s+of|(?:the\s+)?(?:goal\s+|target\s+|placement\s+)?(?:area|region|zone)s?\s+of|"
+        r"next\s+to|beside|by|near|close\s+to|in\s+front\s+of|within\s+reach\s+of|"
+        r"reachable\s+by|adjacent\s+to|on|of|at)\s+(?:the\s+)?arms?\s+[a-d](?:\s*(?:,|and|&)\s*(?:the\s+)?(?:arm\s+)?[a-d])*"
+        r"(?:(?:\s+s)?\s+sides?)?\b",
+        arms,
+    )
+    # "the a/b side", "the side of a and b" without the word "arm"
+    m.sub(
+        r"\b(?:the\s+)?(?:arms?\s+)?[a-d]\s*(?:/|&|and|,)\s*(?:arm\s+)?[a-d]\s+(?:arms?\s+)?(?:s\s+)?sides?\b",
+        lambda match: _new_place(
+            m, Place("regions", _sides(scene, match.group(0)), text=match.group(0).strip())
+        ),
+    )
+
+
+def _sides(scene: Scene, text: str) -> tuple[str, ...]:
+    return scene.arms_side(["abcd".index(x) for x in re.findall(r"\b[a-d]\b", text)])
+
+
+def _mark_region_lists(m: Marked, scene: Scene) -> None:
+    """'region H, I and J', 'the goal regions G/H/I', and bare letters after a preposition ('on I')."""
+
+    def regions(match: re.Match[str]) -> str:
+        letters = [x.upper() for x in re.findall(LETTER, match.group("list"))]
+        unknown = [x for x in letters if x not in scene.layout.regions]
+        if unknown:
+            raise HTTError(f"no region {', '.join(unknown)} in handover-{scene.layout.name}")
+        text = match.group(0)[len(match.group("prep") or "") :]
+        count = re.match(r"\s*(?:the\s+)?(two|three|four|\d+)\s", text)
+        if count and COUNTS.get(count.group(1)) != len(set(letters)):
+            raise HTTError(f"'{text.strip()}' says {count.group(1)} regions but names {len(set(letters))}")
+        place = _new_place(m, Place("regions", tuple(dict.fromkeys(letters)), text=text.strip()))
+        return (match.group("prep") or "") + place
+
+    link = rf"(?:\s*(?:,|\band\b|\bor\b|\bat\b|&|/|\(|\)))*\s*(?:\b(?:{TARGET}\s+)?{PLACE_NOUN}\s+)?"
+    lead = (
+        rf"(?P<prep>)\b(?:the\s+)?(?:(?:two|three|four|\d+)\s+)?(?:{TARGET}\s+)?"
+        rf"{PLACE_NOUN}\s*(?::\s*)?(?:\(\s*)?(?:at\s+)?(?:{PLACE_NOUN}\s+)?"
+    )
+    bare = r"(?P<prep>\b(?:to|into|onto|on|in|at|among|over|between|than|except|besides|from|outside)\s+)"
+    letters = LETTER + r"(?:" + link + LETTER + r")*(?:\s*\))?"
+    m.sub(rf"{lead}(?P<list>{letters})(?:\s+at\b(?=\s*,))?", regions)
+    m.sub(rf"{bare}(?P<list>{letters})", regions)
+    # telegraphic: "yellow: I, then G" (a letter after a block's heading, or after "then" ending a clause)
+    m.sub(rf"(?P<prep>\bB\d+\s*:\s*)(?P<list>{letters})(?=\s*(?:$|,|\bthen\b))", regions)
+    m.sub(rf"(?P<prep>\bthen\s+)(?P<list>{LETTER})(?=\s*(?:$|,))", regions)
+    # a bare list of two or more letters ("F, G, H stay empty"): regions anywhere (one letter may be "I")
+    listed = LETTER + r"(?:(?:\s*(?:,|\band\b|\bor\b|&|/))+\s*" + LETTER + r")+"
+    m.sub(rf"(?P<prep>)(?P<list>{listed})", regions)
+
+
+def _merge(m: Marked, i: int, j: int) -> str:
+    if m.places[i].kind != "regions":  # keep the named regions; the other reading must agree with them
+        i, j = j, i
+    a, b = m.places[i], m.places[j]
+    agree = a.kind == "regions" and b.kind in ("regions", "start_of", "landmark")
+    if not agree or set(a.regions) != set(b.regions):
+        raise HTTError(f"'{a.text}' and '{b.text}' name different places")
+    return f" P{i} "
