@@ -15,8 +15,7 @@ from __future__ import annotations
 import random
 from dataclasses import dataclass
 
-from nl2hltl2plan.language.grounding import find_mentions
-from nl2hltl2plan.language.learned.compose import VERB_GERUND, VERB_PARTICIPLE
+from nl2hltl2plan.language.learned.compose import ON_TYPES, VERB_GERUND, VERB_PARTICIPLE, only_one, words_for
 from nl2hltl2plan.language.learned.data import Composition
 from nl2hltl2plan.language.learned.faithful import FaithfulExample, by_floor_plan
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter, transitive_reduction
@@ -75,22 +74,6 @@ NEW_REFS = RefPhrases(
     free_by_kind=True,
 )
 
-_ON = {"CounterTop", "DiningTable", "SideTable", "CoffeeTable", "Desk", "Bed", "Sofa", "ArmChair",
-       "Chair", "Dresser", "Shelf", "Ottoman", "TVStand", "Toilet", "StoveBurner", "Plate"}
-
-
-def _words_for(text: str, types: list[str] | None) -> str | None:
-    """The words of the clause that name one of `types` (its last such mention)."""
-    hits = [m.surface.lower() for m in find_mentions(text) if set(m.entry.types) & set(types or [])]
-    return hits[-1] if hits else None
-
-
-def _only_one(j: int, tasks: list[BaseTaskSpec]) -> bool:
-    """Whether task `j`'s object can name no other task's object or container (a reference is clear)."""
-    mine = set(tasks[j].object)
-    return not any(mine & set(t.object + (t.container or [])) for k, t in enumerate(tasks) if k != j)
-
-
 def _forms(clause: str) -> dict[str, str] | None:
     head, _, rest = clause.partition(" ")
     g, p = VERB_GERUND.get(head.lower()), VERB_PARTICIPLE.get(head.lower())
@@ -130,16 +113,16 @@ def _pick(
         return rng.choice(fam.last).format(**f), [j for j in range(i) if j not in free], [], False
     j = rng.randrange(i)
     t = tasks[j]
-    clear = _only_one(j, tasks) and forms[j]["vg"] not in ("turning", "looking", "picking")
-    o = _words_for(t.text, t.object) if clear else None
+    clear = only_one(j, tasks) and forms[j]["vg"] not in ("turning", "looking", "picking")
+    o = words_for(t.text, t.object) if clear else None
     verbs = {"g": forms[j]["vg"], "gp": forms[j]["vp"], "v": forms[j]["v"]}
     if choice == "ref" and o:
         return rng.choice(fam.ref).format(**f, **verbs, o=o), [j], [], False
     if choice == "ref_pre" and o:  # "prior to putting the pan, X": X comes before that earlier task
         return rng.choice(fam.ref_pre).format(**f, **verbs, o=o), [], [j], False
-    r = _words_for(t.text, t.receptacle)
+    r = words_for(t.text, t.receptacle)
     if choice == "ref_state" and o and r and t.kind != "examine_in_light":
-        q = "on" if (t.receptacle or [""])[0] in _ON else "in"
+        q = "on" if (t.receptacle or [""])[0] in ON_TYPES else "in"
         p = ("are " if o.endswith("s") else "is ") + q
         return rng.choice(fam.ref_state).format(**f, o=o, r=r, p=p, q=q), [j], [], False
     return None
