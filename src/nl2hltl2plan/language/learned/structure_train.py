@@ -3,7 +3,8 @@
 The clauses are ALFRED `train` annotations minus the excluded trials (`data.py`), labelled
 text-faithfully (`faithful.py`); the connectives are `compose.TRAIN_STYLE` only (the held-out style and
 the validation compositions' templates are never trained on). CRFsuite (L-BFGS, L1 + L2) fits the tags;
-the weights are exported to numpy (`StructureModel`).
+the weights are exported to numpy (`StructureModel`). The relation head (`relation_head.py`) is fitted on
+the spans that point back at an earlier one (REF / RPRE), with the gold spans.
 """
 
 from __future__ import annotations
