@@ -4,8 +4,9 @@
         [--save-rows DIR] [--rows DIR] [--show CLASS] [--long]
 
 Sets with ground truth (never test50, never the excluded trials): `faithful_seen`, `faithful_unseen`,
-`trainstyle_unseen`, `heldout_unseen`, the reference-style `refsdev_seen/unseen` and `refsheld_seen/unseen`
-(`suites.alfred.structure_validation.rows_of_set`; `NAME:SEED` composes one with another seed), `plain`
+`trainstyle_unseen`, `heldout_unseen`, the reference-style `refsdev_seen/unseen`, `refsheld_seen/unseen`
+and `refsnew_seen/unseen` (`suites.alfred.structure_validation.rows_of_set`; `NAME:SEED` composes one with
+another seed), `plain`
 (issue 23's user-style set), `users` and `users_heldout` (tests/language/data/styles/). A composed set
 depends on the lexicon (its text-faithful labels), so `--save-rows DIR` keeps the rows and `--rows DIR` scores
 another version of the code on exactly those rows (before/after on the same instructions).

@@ -224,3 +224,26 @@ def test_reference_compositions_order_by_the_task_they_name() -> None:
     assert free and all(c.before == [] for c in free)  # a free task, then a sentence with no temporal word
     b = compose_refs(items, 60, HELDOUT_REFS, seed=3)
     assert not {c.instruction for c in b if len(c.tasks) > 1} & {c.instruction for c in a}  # other phrases
+
+
+def test_the_new_family_names_a_task_to_come_before_and_frees_only_by_its_phrase() -> None:
+    from nl2hltl2plan.language.learned.compose_refs import NEW_REFS, compose_refs
+
+    items = []
+    pairs = [("Apple", "Fridge"), ("Mug", "Cabinet"), ("Tomato", "CounterTop"), ("SoapBar", "Toilet")]
+    for i, (obj, rec) in enumerate(pairs + [("Bowl", "Microwave")]):
+        e = _ex(f"Put the {obj.lower()} in the {rec.lower()}.", obj=obj, recep=rec, trial=f"t{i}")
+        items.append(FaithfulExample(e, text_task(e, ROOM)))  # type: ignore[arg-type]
+    prior = sorted_ = 0
+    for c in compose_refs(items, 300, NEW_REFS, seed=4):
+        for m in re.finditer(r"Prior to putting the (\w+), put the (\w+)", c.instruction):
+            earlier = next(t.id for t in c.tasks if f"put the {m.group(1)}" in t.text)
+            new = next(t.id for t in c.tasks if f"put the {m.group(2)}" in t.text)
+            prior += 1
+            assert (new, earlier) in c.before  # the new task comes before the one named earlier
+        for m in re.finditer(r"Whenever the (\w+) is sorted, put the (\w+)", c.instruction):
+            named = next(t.id for t in c.tasks if f"put the {m.group(1)}" in t.text)
+            new = next(t.id for t in c.tasks if f"put the {m.group(2)}" in t.text)
+            sorted_ += 1
+            assert (named, new) in c.before  # "whenever" here names a task: not free
+    assert prior and sorted_

@@ -474,7 +474,7 @@ LEADING: list[tuple[re.Pattern[str], str]] = [
     (re.compile(r"^(?:just\s+)?(?:before|prior\s+to)\s+(?P<ref>[^,]+),\s*", _F), BEFORE_REF),
     (
         re.compile(
-            r"^(?:please|now|next\s+up|you\s+should|you\s+need\s+to|you\s+must|we\s+need\s+to|"
+            r"^(?:please|let'?s|let\s+us|now|next\s+up|you\s+should|you\s+need\s+to|you\s+must|we\s+need\s+to|"
             r"i\s+want\s+you\s+to|can\s+you|could\s+you|go\s+and|also|additionally|in\s+addition|separately|and)\b\s*[,:]?\s*",
             _F,
         ),
@@ -484,7 +484,7 @@ LEADING: list[tuple[re.Pattern[str], str]] = [
 ]
 _FREE_T = (
     r"(?:at\s+any\s+time|in\s+any\s+order|any\s+order|in\s+any\s+sequence|anytime|any\s+time|whenever(?:\s+you\s+like)?|"
-    r"in\s+whatever\s+order|in\s+no\s+particular\s+order|in\s+parallel|simultaneously|concurrently|independently)"
+    r"in\s+whatever\s+order|whatever\s+order\s+(?:works|is\s+fine)|in\s+no\s+particular\s+order|in\s+parallel|simultaneously|concurrently|independently)"
 )
 TRAILING: list[tuple[re.Pattern[str], str]] = [
     (re.compile(rf"\s*,?\s*(?:also\s+)?{_FREE_T}\s*$", _F), FREE),

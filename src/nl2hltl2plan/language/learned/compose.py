@@ -19,11 +19,17 @@ from nl2hltl2plan.language.learned.faithful import FaithfulExample, by_floor_pla
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter
 
 # Relation of a span to what came before it (text order): START the first; SEQ after the current step;
-# PAR in the current step (no order with it: "and", "also", a sentence with no temporal word); ANY the
+# PAR in the current step (no order with it: "X and Y"); BARE a new sentence with no temporal word ("X.
+# Y.", "X. Also Y."): no order of its own (ANNOTATION_GUIDE.md), a step of its own that a later "then"
+# follows and "finally" comes after; ANY the
 # same, the order explicitly left open ("X and Y in any order"); FREE no order with anything (a chain of
 # its own); PRE a new step before the current one ("before you X, Y": Y is PRE); LAST ("finally Y")
 # after every earlier span not allowed in any order or at any time (benchmark/ANNOTATION_GUIDE.md).
-RELATIONS = ("START", "SEQ", "PAR", "ANY", "FREE", "PRE", "LAST")
+# Relations that point back: REF after one earlier span named by its object ("after putting the pan, Y"),
+# RPRE before one ("before you put the pan, Y", the pan's task earlier in the text), ALL after every
+# earlier span ("once everything else is done, Y"); which span REF / RPRE point at is the relation
+# head's (`relation_head.py`), the CRF only says that the span points back.
+RELATIONS = ("START", "SEQ", "PAR", "ANY", "FREE", "PRE", "LAST", "REF", "RPRE", "ALL", "BARE")
 
 VERB_PARTICIPLE = {
     "put": "put", "place": "placed", "pick": "picked", "take": "taken", "grab": "grabbed",
@@ -45,6 +51,74 @@ VERB_GERUND = {
 
 
 @dataclass(frozen=True)
+class RefJoiners:
+    """Sentences that name an earlier span: `{x}` the new span, and of the earlier one `{v}` its verb,
+    `{g}` its gerund, `{gp}` its participle, `{o}` its object words, `{r}` its destination words, `{p}`
+    "is in" / "are on" ..., `{q}` "in" / "on"."""
+
+    ref: tuple[str, ...]  # REF by the earlier task's verb and object
+    ref_state: tuple[str, ...]  # REF by where the earlier task put its object
+    ref_pre: tuple[str, ...]  # RPRE: the new span comes before the earlier one
+    after_all: tuple[str, ...]  # ALL
+
+
+# The training family (never the validation families of `compose_refs`: DEV_REFS, HELDOUT_REFS, NEW_REFS).
+TRAIN_REFS = RefJoiners(
+    ref=("After you {v} the {o}, {x}", "When {g} the {o} is complete, {x}", "Once the {o} task is done, {x}",
+         "After the {o} has been {gp}, {x}", "{x} after you've {gp} the {o}", "Following the {o}, {x}",
+         "Right after you {v} the {o}, {x}", "When you finish with the {o}, {x}",
+         "Once you finish {g} the {o}, {x}", "{x} once the {o} is taken care of", "Past the {o} step, {x}"),
+    ref_state=("After the {o} {p} the {r}, {x}", "Once the {o} has been put {q} the {r}, {x}",
+               "When you have the {o} {q} the {r}, {x}", "{x} when the {o} {p} the {r}",
+               "As soon as you see the {o} {q} the {r}, {x}"),
+    ref_pre=("Before you {v} the {o}, {x}", "Before {g} the {o}, {x}", "{x} before {g} the {o}",
+             "{x} before the {o} is {gp}", "Ahead of the {o}, {x}"),
+    after_all=("After everything else is done, {x}", "Once every other task is finished, {x}",
+               "When all the earlier tasks are done, {x}", "When the rest is finished, {x}",
+               "Once all of those are complete, {x}", "{x} after all the other tasks",
+               "After doing all of this, {x}", "{x} once everything before it is done"),
+)
+
+ON_TYPES = {"CounterTop", "DiningTable", "SideTable", "CoffeeTable", "Desk", "Bed", "Sofa", "ArmChair",
+            "Chair", "Dresser", "Shelf", "Ottoman", "TVStand", "Toilet", "StoveBurner", "Plate"}
+
+
+def words_for(text: str, types: list[str] | None) -> str | None:
+    """The words of the clause that name one of `types` (its last such mention)."""
+    from nl2hltl2plan.language.grounding import find_mentions
+
+    hits = [m.surface.lower() for m in find_mentions(text) if set(m.entry.types) & set(types or [])]
+    return hits[-1] if hits else None
+
+
+def only_one(j: int, tasks: list[BaseTaskSpec]) -> bool:
+    """Whether task `j`'s object can name no other task's object or container (a reference is clear)."""
+    mine = set(tasks[j].object)
+    return not any(mine & set(t.object + (t.container or [])) for k, t in enumerate(tasks) if k != j)
+
+
+def reference(
+    j: int, clauses: list[str], tasks: list[BaseTaskSpec], refs: RefJoiners, rng: random.Random
+) -> tuple[str, str] | None:
+    """A sentence for a later span that names the earlier span `j` (`{x}` left for the span) and its relation
+    (REF or RPRE); None when span `j` cannot be named clearly."""
+    verb = clauses[j].split(" ", 1)[0].lower()
+    t = tasks[j]
+    o = words_for(clauses[j], t.object) if only_one(j, tasks) else None
+    if not o or verb not in VERB_GERUND or verb in ("turn", "look", "pick"):
+        return None
+    names = {"v": verb, "g": VERB_GERUND[verb], "gp": VERB_PARTICIPLE[verb], "o": o, "x": "{x}"}
+    kind = rng.choice(["ref", "ref", "ref_state", "ref_pre"])
+    r = words_for(clauses[j], t.receptacle)
+    if kind == "ref_state" and r and t.kind != "examine_in_light":
+        q = "on" if (t.receptacle or [""])[0] in ON_TYPES else "in"
+        names |= {"r": r, "q": q, "p": ("are " if o.endswith("s") else "is ") + q}
+    elif kind == "ref_state":
+        kind = "ref"
+    return rng.choice(getattr(refs, kind)).format(**names), "RPRE" if kind == "ref_pre" else "REF"
+
+
+@dataclass(frozen=True)
 class Connectives:
     """One style family: openers of the first span, joiners of a later span by relation (`{x}` = the
     span, `{xp}` its participle form, `{xg}` its gerund form), whole-instruction endings that force one
@@ -56,6 +130,7 @@ class Connectives:
     endings: dict[str, tuple[str, ...]]
     pairs: tuple[tuple[str, tuple[str, str]], ...]
     free_openers: tuple[str, ...] = ()  # a first span free of every later one ("{x} at any time. ...")
+    refs: RefJoiners | None = None  # sentences that point back at an earlier span
 
 
 TRAIN_STYLE = Connectives(
@@ -74,9 +149,9 @@ TRAIN_STYLE = Connectives(
                 ". After doing that, {x}", ". Once it's done, {x}", "; after that {x}", ", and then {x}",
                 ". And then {x}", ". Once that is finished, {x}", "? Then {x}", "? After that, {x}",
                 "? And then {x}", ". Followed by {xg}"),
-        "PAR": (". {x}", " and {x}", ", and {x}", ". Also {x}", ". Also, {x}", ", and also {x}", ". And {x}",
-                ". In addition, {x}", ". Plus, {x}", ", as well as {xg}", ". Additionally, {x}",
-                "; and {x}", ", also {x}", "? Also {x}", "? And {x}"),
+        "PAR": (" and {x}", ", and {x}", ", and also {x}", ", as well as {xg}", "; and {x}", ", also {x}"),
+        "BARE": (". {x}", ". {x}", ". Also {x}", ". Also, {x}", ". And {x}", ". In addition, {x}",
+                 ". Plus, {x}", ". Additionally, {x}", "? Also {x}", "? And {x}"),
         "ANY": (" and {x} in any order", ", and {x}, in any order", " and {x}, in whatever order you like",
                 ", {x}, order doesn't matter"),
         "FREE": (". At any time, {x}", ". Whenever you like, {x}", ". Meanwhile, {x}",
@@ -116,6 +191,7 @@ TRAIN_STYLE = Connectives(
         ("After you're finished {0g}, {1}.", ("START", "SEQ")),
     ),
     free_openers=("{x} at any time", "{x} whenever you like", "At any time, {x}"),
+    refs=TRAIN_REFS,
 )
 
 HELDOUT_STYLE = Connectives(
@@ -189,6 +265,7 @@ class Synth:
     tasks: list[BaseTaskSpec]
     before: list[tuple[str, str]]
     scene: str
+    targets: list[int | None]  # the earlier span a REF / RPRE span points at
 
 
 class _Builder:
@@ -220,8 +297,11 @@ def _same_verb(a: str, b: str) -> bool:
     return verb in ELIDABLE and verb == b.split(" ", 1)[0].lower() and " " in b
 
 
-def _chain(style: Connectives, clauses: list[str], rng: random.Random) -> tuple[str, list, list[str]] | None:
-    """Spans joined one by one: an opener, then a joiner per later span, sometimes a forcing ending."""
+def _chain(
+    style: Connectives, clauses: list[str], tasks: list[BaseTaskSpec], rng: random.Random
+) -> tuple[str, list, list[str], list[int | None]] | None:
+    """Spans joined one by one: an opener, then a joiner per later span (sometimes a sentence that points
+    back at an earlier span, `style.refs`), sometimes a forcing ending."""
     forms = [_forms(c) or {"": c} for c in clauses]
     ending_rel = rng.choice([None, None, None, "SEQ", "ANY"]) if len(clauses) > 1 else None
     b = _Builder()
@@ -230,10 +310,18 @@ def _chain(style: Connectives, clauses: list[str], rng: random.Random) -> tuple[
     opener = rng.choice([o for o in openers if "{xg}" not in o or "g" in forms[0]])
     b.add(opener.replace("{x", "{0"), {"0" + k: v for k, v in forms[0].items()})
     rels = ["FREE" if free_first else "START"]
+    targets: list[int | None] = [None]
     for i in range(1, len(clauses)):
+        if style.refs and not ending_rel and rng.random() < 0.3 and (made := _pointing(i, clauses, tasks,
+                                                                                       style.refs, rng)):
+            b.add(". " + made[0].replace("{x}", "{" + str(i) + "}"), {str(i): clauses[i]})
+            rels.append(made[1])
+            targets.append(made[2])
+            continue
         last = i == len(clauses) - 1 and i > 1 and rng.random() < 0.4
         # ANY inside the instruction ("X and Y in any order. Finally Z") where the style has its joiners
-        choices = ["SEQ", "SEQ", "SEQ", "PAR", "FREE", "PRE"] + (["ANY"] if "ANY" in style.joiners else [])
+        choices = ["SEQ", "SEQ", "SEQ", "PAR", "FREE", "PRE"]
+        choices += [r for r in ("ANY", "BARE") if r in style.joiners]
         rel = ending_rel or ("LAST" if last else rng.choice(choices))
         if ending_rel:  # "A, B and C in any order" / "..., in that order": plain joiners only
             pool = [", {x}", " and {x}", ", and {x}", ", then {x}" if rel == "SEQ" else ", {x}"]
@@ -244,11 +332,25 @@ def _chain(style: Connectives, clauses: list[str], rng: random.Random) -> tuple[
             clause = {"": clauses[i].split(" ", 1)[1]}  # "put X in Y and Z in W": the verb left out
         b.add(rng.choice(pool).replace("{x", "{" + str(i)), {str(i) + k: v for k, v in clause.items()})
         rels.append(rel)
+        targets.append(None)
     b.add(rng.choice(style.endings[ending_rel]) if ending_rel else rng.choice([".", ".", "", "!"]), {})
-    return b.text, b.spans, rels
+    return b.text, b.spans, rels, targets
 
 
-def _pair(style: Connectives, clauses: list[str], rng: random.Random) -> tuple[str, list, list[str]] | None:
+def _pointing(
+    i: int, clauses: list[str], tasks: list[BaseTaskSpec], refs: RefJoiners, rng: random.Random
+) -> tuple[str, str, int | None] | None:
+    """A sentence for span `i` that points back (ALL, or REF / RPRE at a random earlier span)."""
+    if i > 1 and rng.random() < 0.25:
+        return rng.choice(refs.after_all), "ALL", None
+    j = rng.randrange(i)
+    made = reference(j, clauses, tasks, refs, rng)
+    return (made[0][:1].upper() + made[0][1:], made[1], j) if made else None
+
+
+def _pair(
+    style: Connectives, clauses: list[str], rng: random.Random
+) -> tuple[str, list, list[str], list[int | None]] | None:
     template, rels = rng.choice(style.pairs)
     forms = [_forms(c) for c in clauses]
     if any(f is None for f in forms):
@@ -256,7 +358,7 @@ def _pair(style: Connectives, clauses: list[str], rng: random.Random) -> tuple[s
     values = {str(i) + k: v for i, f in enumerate(forms) for k, v in (f or {}).items()}
     b = _Builder()
     b.add(template, values)
-    return b.text, b.spans, list(rels)
+    return b.text, b.spans, list(rels), [None, None]
 
 
 def _finish(text: str, rng: random.Random) -> str:
@@ -284,13 +386,16 @@ def synthesise(items: list[FaithfulExample], n: int, style: Connectives, seed: i
         if len({c.example.trial for c in chosen}) < len(chosen):
             continue
         clauses = [styled_clause(c.text, rng) for c in chosen]
-        made = _pair(style, clauses, rng) if k == 2 and rng.random() < 0.5 else _chain(style, clauses, rng)
+        if k == 2 and rng.random() < 0.5:
+            made = _pair(style, clauses, rng)
+        else:
+            made = _chain(style, clauses, [c.task for c in chosen], rng)
         if made is None:
             continue
-        text, spans, rels = made
+        text, spans, rels, targets = made
         lowered = _finish(text, rng)
         ids = [task_letter(i) for i in range(len(chosen))]
         tasks = [c.task.model_copy(update={"id": i, "text": ""}) for c, i in zip(chosen, ids, strict=True)]
-        before = [(ids[a], ids[b]) for a, b in before_pairs(rels)]
-        out.append(Synth(lowered, spans, rels, tasks, before, chosen[0].example.floor_plan))
+        before = [(ids[a], ids[b]) for a, b in before_pairs(rels, targets)]
+        out.append(Synth(lowered, spans, rels, tasks, before, chosen[0].example.floor_plan, targets))
     return out

@@ -15,8 +15,7 @@ from __future__ import annotations
 import random
 from dataclasses import dataclass
 
-from nl2hltl2plan.language.grounding import find_mentions
-from nl2hltl2plan.language.learned.compose import VERB_GERUND, VERB_PARTICIPLE
+from nl2hltl2plan.language.learned.compose import ON_TYPES, VERB_GERUND, VERB_PARTICIPLE, only_one, words_for
 from nl2hltl2plan.language.learned.data import Composition
 from nl2hltl2plan.language.learned.faithful import FaithfulExample, by_floor_plan
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter, transitive_reduction
@@ -35,6 +34,9 @@ class RefPhrases:
     seq: tuple[str, ...]  # after the clause just before
     last: tuple[str, ...]  # "finally": after every earlier task not allowed at any time
     # (and a sentence with no phrase at all: no order of its own)
+    ref_pre: tuple[str, ...] = ()  # BEFORE the earlier task whose object is {o} ("prior to {g} the {o}")
+    # free only by the phrase's kind (True), not by its words ("whenever the {o} is sorted" is a reference)
+    free_by_kind: bool = False
 
 
 DEV_REFS = RefPhrases(
@@ -57,28 +59,27 @@ HELDOUT_REFS = RefPhrases(
     last=("To finish, {x}", "In the end, {x}", "Last of all, {x}"),
 )
 
-_ON = {"CounterTop", "DiningTable", "SideTable", "CoffeeTable", "Desk", "Bed", "Sofa", "ArmChair",
-       "Chair", "Dresser", "Shelf", "Ottoman", "TVStand", "Toilet", "StoveBurner", "Plate"}
-
-
-def _words_for(text: str, types: list[str] | None) -> str | None:
-    """The words of the clause that name one of `types` (its last such mention)."""
-    hits = [m.surface.lower() for m in find_mentions(text) if set(m.entry.types) & set(types or [])]
-    return hits[-1] if hits else None
-
-
-def _only_one(j: int, tasks: list[BaseTaskSpec]) -> bool:
-    """Whether task `j`'s object can name no other task's object or container (a reference is clear)."""
-    mine = set(tasks[j].object)
-    return not any(mine & set(t.object + (t.container or [])) for k, t in enumerate(tasks) if k != j)
-
+# h49's held-out family (issue 28, round 4): written before the relation head was built, never trained or
+# tuned on, measured once at the end (`refsnew_seen/unseen`, results/language/unseen_h49.md).
+NEW_REFS = RefPhrases(
+    free_after=("{x} at any point", "{x} whenever it suits you"),
+    free_before=("Regardless of order, {x}", "At a moment of your choosing, {x}"),
+    ref=("With the {o} done, {x}", "{x}, but only once you've {gp} the {o}",
+         "Whenever the {o} is sorted, {x}"),
+    ref_state=("The moment the {o} {p} the {r}, {x}", "Right after the {o} ends up {q} the {r}, {x}"),
+    after_all=("Only after everything listed, {x}", "With all of the above out of the way, {x}"),
+    seq=("From there, {x}", "Up next, {x}", "After that's done, {x}"),
+    last=("Then, lastly, {x}", "As a final step, {x}", "Wrap up by {xg}"),
+    ref_pre=("Prior to {g} the {o}, {x}", "Make sure to {x} before you {v} the {o}"),
+    free_by_kind=True,
+)
 
 def _forms(clause: str) -> dict[str, str] | None:
     head, _, rest = clause.partition(" ")
     g, p = VERB_GERUND.get(head.lower()), VERB_PARTICIPLE.get(head.lower())
     if not g or not p:
         return None
-    return {"x": clause, "xg": f"{g} {rest}", "vg": g, "vp": p}
+    return {"x": clause, "xg": f"{g} {rest}", "vg": g, "vp": p, "v": head.lower()}
 
 
 def _clause(text: str) -> str:
@@ -93,32 +94,37 @@ def _sentence(piece: str) -> str:
 def _pick(
     i: int, forms: list[dict[str, str]], tasks: list[BaseTaskSpec], free: set[int], fam: RefPhrases,
     rng: random.Random,
-) -> tuple[str, list[int]] | None:
-    """The phrase of clause `i` (i > 0) and the earlier clauses it comes after (None: none fits)."""
+) -> tuple[str, list[int], list[int], bool] | None:
+    """The phrase of clause `i` (i > 0), the earlier clauses it comes after, those it comes before, and
+    whether its phrase leaves it free (None: none fits)."""
     f = {"x": forms[i]["x"], "xg": forms[i]["xg"]}
     kinds = ["free_after", "free_before", "ref", "ref", "ref_state", "after_all", "seq", "bare"]
+    kinds += ["ref_pre"] if fam.ref_pre else []  # (the older families draw exactly as before)
     choice = rng.choice(kinds + ["last"] * 2 if i == len(forms) - 1 else kinds)
     if choice in ("free_after", "free_before"):
-        return rng.choice(getattr(fam, choice)).format(**f), []
+        return rng.choice(getattr(fam, choice)).format(**f), [], [], True
     if choice == "bare":  # a sentence with no temporal word: no order of its own, but not free
-        return f["x"], []
+        return f["x"], [], [], False
     if choice == "seq":
-        return rng.choice(fam.seq).format(**f), [i - 1]
+        return rng.choice(fam.seq).format(**f), [i - 1], [], False
     if choice == "after_all":
-        return rng.choice(fam.after_all).format(**f), list(range(i))
+        return rng.choice(fam.after_all).format(**f), list(range(i)), [], False
     if choice == "last":
-        return rng.choice(fam.last).format(**f), [j for j in range(i) if j not in free]
+        return rng.choice(fam.last).format(**f), [j for j in range(i) if j not in free], [], False
     j = rng.randrange(i)
     t = tasks[j]
-    clear = _only_one(j, tasks) and forms[j]["vg"] not in ("turning", "looking", "picking")
-    o = _words_for(t.text, t.object) if clear else None
+    clear = only_one(j, tasks) and forms[j]["vg"] not in ("turning", "looking", "picking")
+    o = words_for(t.text, t.object) if clear else None
+    verbs = {"g": forms[j]["vg"], "gp": forms[j]["vp"], "v": forms[j]["v"]}
     if choice == "ref" and o:
-        return rng.choice(fam.ref).format(**f, g=forms[j]["vg"], gp=forms[j]["vp"], o=o), [j]
-    r = _words_for(t.text, t.receptacle)
+        return rng.choice(fam.ref).format(**f, **verbs, o=o), [j], [], False
+    if choice == "ref_pre" and o:  # "prior to putting the pan, X": X comes before that earlier task
+        return rng.choice(fam.ref_pre).format(**f, **verbs, o=o), [], [j], False
+    r = words_for(t.text, t.receptacle)
     if choice == "ref_state" and o and r and t.kind != "examine_in_light":
-        p = "on" if (t.receptacle or [""])[0] in _ON else "in"
-        p = ("are " if o.endswith("s") else "is ") + p
-        return rng.choice(fam.ref_state).format(**f, o=o, r=r, p=p), [j]
+        q = "on" if (t.receptacle or [""])[0] in ON_TYPES else "in"
+        p = ("are " if o.endswith("s") else "is ") + q
+        return rng.choice(fam.ref_state).format(**f, o=o, r=r, p=p, q=q), [j], [], False
     return None
 
 
@@ -168,10 +174,12 @@ def _compose(
                 break
         else:
             return None
-        phrase, after = picked
-        if any(w in phrase for w in ("any time", "any order", "whenever", "Any time", "whatever time",
-                                      "no particular order")):
+        phrase, after, before, free_kind = picked
+        if free_kind if fam.free_by_kind else any(
+            w in phrase for w in ("any time", "any order", "whenever", "Any time", "whatever time",
+                                  "no particular order")
+        ):
             free.add(i)
-        pairs += [(j, i) for j in after]
+        pairs += [(j, i) for j in after] + [(i, j) for j in before]
         sentences.append(_sentence(phrase))
     return ". ".join(sentences) + ".", pairs

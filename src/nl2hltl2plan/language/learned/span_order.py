@@ -1,13 +1,21 @@
 """Span relations (`compose.RELATIONS`) -> `before` pairs between spans, by text position.
 
 The spans are read left to right into chains of steps. START opens the first chain; SEQ opens a new
-step after the current one; PAR joins the current step (no order inside a step: "X and Y", "X. Also
-Y", two sentences with no temporal word); ANY joins it too, with the order explicitly left open ("X and
-Y in any order"); PRE opens a new step just before the current one ("before you X, Y": Y first); FREE
-opens a chain of its own (no order with anything so far). Every span of a step comes before every span
-of a later step of its chain. LAST ("finally Y", the benchmark's annotation guide) comes after every
-earlier span that is not allowed in any order or at any time: after every span of the last step of each
-chain that has no ANY span and is not FREE (the earlier steps are before it already).
+step after the current one; PAR joins the current step (no order inside a step: "X and Y"); ANY joins
+it too, with the order explicitly left open ("X and Y in any order"); PRE opens a new step just before
+the current one ("before you X, Y": Y first); FREE opens a chain of its own (no order with anything so
+far); BARE (a new sentence with no temporal word: "X. Y.", "X. Also Y.") opens a chain of its own too,
+unordered like FREE but not free of a later "finally". Every span of a step comes before every span of
+a later step of its chain. LAST ("finally Y", the benchmark's annotation guide) comes after every
+earlier span that is not allowed in any order or at any time: after every span of the last step of
+each chain that has no ANY span and is not FREE (the earlier steps are before it already). The
+relations that point back open a chain of their own: REF after the one earlier span its target names
+("after putting the pan, Y"), RPRE before it ("before you put the pan, Y"), ALL after every earlier
+span.
+
+Every pair goes from a span to a later one, except PRE's and RPRE's, which go from the new span (that
+nothing comes before yet) to earlier ones; a pair that would still close a cycle is dropped
+(`drop_cycles`), so the order is always a partial order.
 
 >>> before_pairs(["START", "SEQ", "PAR", "SEQ"])
 [(0, 1), (0, 2), (1, 3), (2, 3)]
@@ -19,13 +27,22 @@ chain that has no ANY span and is not FREE (the earlier steps are before it alre
 [(0, 2), (1, 2)]
 >>> before_pairs(["FREE", "PAR", "LAST"])
 [(1, 2)]
+>>> before_pairs(["START", "SEQ", "BARE", "LAST"])
+[(0, 1), (1, 3), (2, 3)]
+>>> before_pairs(["START", "SEQ", "FREE", "REF"], [None, None, None, 0])
+[(0, 1), (0, 3)]
+>>> before_pairs(["START", "FREE", "RPRE", "ALL"], [None, None, 0, None])
+[(0, 3), (1, 3), (2, 0), (2, 3)]
 """
 
 from __future__ import annotations
 
+POINTING = ("REF", "RPRE", "ALL")  # relations to a named earlier span, or to all of them
 
-def before_pairs(relations: list[str]) -> list[tuple[int, int]]:
-    """The transitively reduced `before` pairs (span indices) that the relations state."""
+
+def before_pairs(relations: list[str], targets: list[int | None] | None = None) -> list[tuple[int, int]]:
+    """The `before` pairs (span indices) that the relations (and, for REF / RPRE, the earlier span each
+    points at, `targets`) state; acyclic."""
     chains: list[list[list[int]]] = []
     current = 0  # the current step's index in the last chain
     free = {i for i, rel in enumerate(relations) if rel == "FREE"}  # allowed at any time
@@ -34,7 +51,7 @@ def before_pairs(relations: list[str]) -> list[tuple[int, int]]:
     for i, rel in enumerate(relations):
         if rel == "LAST" and chains:
             last.append(i)
-        elif not chains or rel in ("START", "FREE", "LAST"):
+        elif not chains or rel in ("START", "FREE", "LAST", "BARE") + POINTING:
             chains.append([[i]])
             current = 0
         elif rel in ("PAR", "ANY"):
@@ -45,7 +62,7 @@ def before_pairs(relations: list[str]) -> list[tuple[int, int]]:
         else:  # SEQ
             chains[-1].insert(current + 1, [i])
             current += 1
-    pairs = []
+    pairs = _pointed(relations, targets or [None] * len(relations))
     for steps in chains:
         for a, b in zip(steps, steps[1:], strict=False):
             pairs += [(x, y) for x in a for y in b]
@@ -56,4 +73,39 @@ def before_pairs(relations: list[str]) -> list[tuple[int, int]]:
             firm = [s for s in firm if s]
             if firm:  # the chain's last firm step: the earlier ones are before it already
                 pairs += [(x, y) for x in firm[-1]]
-    return sorted(set(pairs))
+    return sorted(drop_cycles(pairs))
+
+
+def _pointed(relations: list[str], targets: list[int | None]) -> list[tuple[int, int]]:
+    """The pairs of the relations that point back (a REF / RPRE without a valid target states none)."""
+    out = []
+    for i, (rel, j) in enumerate(zip(relations, targets, strict=True)):
+        if rel == "ALL":
+            out += [(x, i) for x in range(i)]
+        elif rel in ("REF", "RPRE") and j is not None and 0 <= j < i:
+            out.append((j, i) if rel == "REF" else (i, j))
+    return out
+
+
+def drop_cycles(pairs: list[tuple[int, int]]) -> set[tuple[int, int]]:
+    """The pairs in their order, each kept unless it closes a cycle with those kept before it."""
+    kept: set[tuple[int, int]] = set()
+    succ: dict[int, set[int]] = {}
+    for a, b in pairs:
+        if (a, b) in kept or a == b or _reaches(succ, b, a):
+            continue
+        kept.add((a, b))
+        succ.setdefault(a, set()).add(b)
+    return kept
+
+
+def _reaches(succ: dict[int, set[int]], src: int, dst: int) -> bool:
+    stack, seen = [src], {src}
+    while stack:
+        x = stack.pop()
+        if x == dst:
+            return True
+        for y in succ.get(x, set()) - seen:
+            seen.add(y)
+            stack.append(y)
+    return False

@@ -6,7 +6,9 @@ you've", "in any order"). Features are the word, its neighbours (3 each side), t
 sentence ("before you ..."), and the instruction's last words ("... in that order"), so that a
 connective far from the span's first word still labels it. Training uses CRFsuite (`python-crfsuite`,
 the `train` extra); the artifact holds only numpy arrays (feature strings, a weight matrix, the
-transition matrix) and inference is numpy Viterbi / forward-backward, so the core install reads it.
+transition matrix, the relation head's weights) and inference is numpy Viterbi / forward-backward, so the
+core install reads it. A span tagged REF / RPRE (it points back at one earlier span) gets that span from
+the relation head (`relation_head.py`).
 
     >>> m = StructureModel.load()
     >>> [(s.text, s.relation) for s in m.read("Put the mug in the sink, then put the apple in the fridge.")]
@@ -27,6 +29,7 @@ import numpy as np
 
 from nl2hltl2plan.errors import DataError
 from nl2hltl2plan.io import atomic_path
+from nl2hltl2plan.language.learned.relation_head import RelationHead, content_stem
 from nl2hltl2plan.language.learned.slot_model import preferred_path, user_path
 
 ARTIFACT = "structure_model.npz"
@@ -45,6 +48,48 @@ def _verbs() -> frozenset[str]:
 
 
 _VERBS = _verbs()
+# words that name every earlier task ("once everything else is done", "after all previous tasks")
+_ALL_WORDS = frozenset("all everything every previous above earlier other rest else preceding".split())
+
+
+# temporal words whose place in the sentence matters to its span ("X before putting the pan": RPRE)
+_TEMPORAL = frozenset(
+    "before after until first then finally lastly once when whenever while prior following next".split()
+)
+
+
+def _pointing_features(low: list[str]) -> list[list[str]]:
+    """Per token: whether it repeats a content word of an earlier sentence (`rep`: "with the pan done"
+    names the pan of an earlier task) and whether such a word comes later / earlier in its sentence
+    (`rep>` / `rep<`); where it lies against its sentence's commas; its sentence's temporal words
+    (`s:before`) and whether the sentence has a word that names every task (`sall`): features of
+    *pointing back* that do not depend on the connective's exact words."""
+    out: list[list[str]] = [[] for _ in low]
+    earlier: set[str] = set()
+    start = 0
+    for i, w in enumerate(low + ["."]):
+        if w not in (".", "!", "?", ";") and i < len(low):
+            continue
+        sent = range(start, i)
+        stems = [content_stem(low[k]) for k in sent]
+        commas = [k for k in sent if low[k] == ","]
+        rep = [k for k, st in zip(sent, stems, strict=True) if st and st in earlier]
+        tags = sorted({"s:" + low[k] for k in sent if low[k] in _TEMPORAL})
+        if any(low[k] in _ALL_WORDS for k in sent):
+            tags.append("sall")
+        for k in sent:
+            out[k] += tags
+            if k in rep:
+                out[k].append("rep")
+            if any(r > k for r in rep):
+                out[k].append("rep>")
+            if any(r < k for r in rep):
+                out[k].append("rep<")
+            if commas:
+                out[k].append("c<" if k < commas[0] else "c>" if k > commas[-1] else "c=")
+        earlier |= {st for st in stems if st}
+        start = i + 1
+    return out
 
 
 def features(words: list[str]) -> list[list[str]]:
@@ -61,6 +106,7 @@ def features(words: list[str]) -> list[list[str]]:
             sent_tail += [end] * (i + 1 - start)
             start = i + 1
     tail = "|".join(w for w in low[-4:] if w not in (".", "!"))
+    pointing = _pointing_features(low)
     out = []
     for i, w in enumerate(low):
         s = sent_start[i]
@@ -80,6 +126,9 @@ def features(words: list[str]) -> list[list[str]]:
             f.append("verb")
         if i + 1 < n and low[i + 1] in _VERBS:
             f.append("verb+1")
+        if w in _ALL_WORDS:
+            f.append("allw")
+        f += pointing[i]
         out.append(f)
     return out
 
@@ -99,6 +148,16 @@ def tags_of(text: str, spans: list[tuple[int, int]], relations: list[str]) -> tu
     return words, tags
 
 
+def token_ranges(text: str, spans: list[tuple[int, int]]) -> list[tuple[int, int]]:
+    """The character spans as token ranges (first token, last token + 1)."""
+    toks = tokenize(text)
+    out = []
+    for s, e in spans:
+        inside = [k for k, (_, a, b) in enumerate(toks) if s <= a and b <= e]
+        out.append((inside[0], inside[-1] + 1) if inside else (0, 0))
+    return out
+
+
 @dataclass(frozen=True)
 class Span:
     """One task span of an instruction: its text, where it is, its relation, the model's confidence."""
@@ -107,6 +166,7 @@ class Span:
     start: int
     end: int
     relation: str
+    target: int | None = None  # the earlier span a REF / RPRE span points at (the relation head's)
 
 
 @dataclass(frozen=True)
@@ -123,7 +183,15 @@ class Reading:
 class StructureModel:
     """CRF weights as numpy arrays: `index` feature -> row, `weights` (features x tags), `trans`."""
 
-    def __init__(self, tags: list[str], feature_names: list[str], weights: np.ndarray, trans: np.ndarray):
+    def __init__(
+        self,
+        tags: list[str],
+        feature_names: list[str],
+        weights: np.ndarray,
+        trans: np.ndarray,
+        head: RelationHead | None = None,
+    ):
+        self.head = head  # which earlier span a REF / RPRE span names (None: a model from before the head)
         self.tags = tags
         self.index = {f: i for i, f in enumerate(feature_names)}
         self.feature_names = feature_names
@@ -163,22 +231,29 @@ class StructureModel:
         return [self.tags[i] for i in best], float(np.exp(score.max() - log_z))
 
     def read(self, text: str) -> Reading:
-        """The instruction's task spans (text order) with their relations."""
+        """The instruction's task spans (text order) with their relations; a span that points back at one
+        earlier span gets its target from the relation head, whose confidence multiplies the reading's."""
         toks = tokenize(text)
-        tags, conf = self.tag([w for w, _, _ in toks])
-        spans: list[list] = []
-        for (_, a, b), tag in zip(toks, tags, strict=True):
+        words = [w for w, _, _ in toks]
+        tags, conf = self.tag(words)
+        spans: list[list] = []  # [first token, last token + 1, relation]
+        for k, tag in enumerate(tags):
             if tag.startswith("B-") or (tag == "I" and not spans):
-                spans.append([a, b, tag[2:] if tag.startswith("B-") else "SEQ"])
+                spans.append([k, k + 1, tag[2:] if tag.startswith("B-") else "SEQ"])
             elif tag == "I":  # an I after an O continues the span before it
-                spans[-1][1] = b
+                spans[-1][1] = k + 1
+        ranges = [(a, b) for a, b, _ in spans]
         out = []
-        for i, s in enumerate(spans):
+        for i, (a, b, rel) in enumerate(spans):
+            target = None
             if i == 0:  # the first span opens the order, unless it is free ("X at any time. Finally Y")
-                rel = "FREE" if s[2] == "FREE" else "START"
-            else:
-                rel = "SEQ" if s[2] == "START" else s[2]
-            out.append(Span(text[s[0] : s[1]], s[0], s[1], rel))
+                rel = "FREE" if rel == "FREE" else "START"
+            elif rel == "START" or (rel in ("REF", "RPRE") and self.head is None):
+                rel = "SEQ"
+            elif rel in ("REF", "RPRE") and self.head is not None:
+                target, p = self.head.target(words, ranges, i)
+                conf *= p
+            out.append(Span(text[toks[a][1] : toks[b - 1][2]], toks[a][1], toks[b - 1][2], rel, target))
         return Reading(out, conf)
 
     def save(self, path: Path) -> None:
@@ -188,6 +263,8 @@ class StructureModel:
             "weights": self.weights.astype(np.float32),
             "trans": self.trans.astype(np.float32),
         }
+        if self.head is not None:
+            arrays["head"] = np.append(self.head.weights, self.head.bias).astype(np.float32)
         with (  # a temporary file renamed over `path`: a kill leaves the old model, never a torn one
             atomic_path(path, "structure model") as tmp,
             zipfile.ZipFile(tmp, "w", compression=zipfile.ZIP_DEFLATED) as zf,
@@ -203,11 +280,13 @@ class StructureModel:
         src = path or default_structure_path()
         try:
             with np.load(src, allow_pickle=False) as z:  # type: ignore[arg-type]
+                head = z["head"].astype(np.float64) if "head" in z.files else None
                 return cls(
                     [str(t) for t in z["tags"]],
                     [str(f) for f in z["features"]],
                     z["weights"].astype(np.float64),
                     z["trans"].astype(np.float64),
+                    RelationHead(head[:-1], float(head[-1])) if head is not None else None,
                 )
         except (OSError, KeyError, ValueError) as exc:
             raise DataError(f"cannot read the structure model {src}: {exc}") from exc

@@ -3,7 +3,8 @@
 The clauses are ALFRED `train` annotations minus the excluded trials (`data.py`), labelled
 text-faithfully (`faithful.py`); the connectives are `compose.TRAIN_STYLE` only (the held-out style and
 the validation compositions' templates are never trained on). CRFsuite (L-BFGS, L1 + L2) fits the tags;
-the weights are exported to numpy (`StructureModel`).
+the weights are exported to numpy (`StructureModel`). The relation head (`relation_head.py`) is fitted on
+the spans that point back at an earlier one (REF / RPRE), with the gold spans.
 """
 
 from __future__ import annotations
@@ -13,23 +14,42 @@ from pathlib import Path
 
 import numpy as np
 
-from nl2hltl2plan.language.learned.compose import TRAIN_STYLE, synthesise
-from nl2hltl2plan.language.learned.structure import StructureModel, features, tags_of
+from nl2hltl2plan.language.learned.compose import TRAIN_STYLE, Synth, synthesise
+from nl2hltl2plan.language.learned.relation_head import RelationHead
+from nl2hltl2plan.language.learned.structure import StructureModel, features, tags_of, token_ranges, tokenize
 
 N_TRAIN = 10000
+HeadCase = tuple[list[str], list[tuple[int, int]], int, int]
 
 
-def training_sequences(n: int = N_TRAIN, seed: int = 0) -> list[tuple[list[list[str]], list[str]]]:
+def training_data(n: int = N_TRAIN, seed: int = 0) -> list[Synth]:
     from nl2hltl2plan.language.learned.train import text_faithful_items
 
+    return synthesise(text_faithful_items("train"), n, TRAIN_STYLE, seed)
+
+
+def training_sequences(data: list[Synth]) -> list[tuple[list[list[str]], list[str]]]:
+    """The CRF's (features, tags) per instruction."""
     out = []
-    for s in synthesise(text_faithful_items("train"), n, TRAIN_STYLE, seed):
+    for s in data:
         words, tags = tags_of(s.text, s.spans, s.relations)
         out.append((features(words), tags))
     return out
 
 
-def fit(seqs: list[tuple[list[list[str]], list[str]]], iterations: int = 120) -> StructureModel:
+def head_cases(data: list[Synth]) -> list[HeadCase]:
+    """The relation head's cases: each span that points at an earlier one, with the gold spans."""
+    out = []
+    for s in data:
+        words = [w for w, _, _ in tokenize(s.text)]
+        ranges = token_ranges(s.text, s.spans)
+        out += [(words, ranges, i, j) for i, j in enumerate(s.targets) if j is not None]
+    return out
+
+
+def fit(
+    seqs: list[tuple[list[list[str]], list[str]]], cases: list[HeadCase], iterations: int = 120
+) -> StructureModel:
     import pycrfsuite
 
     trainer = pycrfsuite.Trainer(verbose=False)
@@ -54,7 +74,7 @@ def fit(seqs: list[tuple[list[list[str]], list[str]]], iterations: int = 120) ->
     trans = np.zeros((len(tags), len(tags)), dtype=np.float64)
     for (a, b), w in info.transitions.items():
         trans[col[a], col[b]] = w
-    return StructureModel(tags, names, weights, trans)
+    return StructureModel(tags, names, weights, trans, RelationHead.fit(cases))
 
 
 def span_accuracy(model: StructureModel, n: int = 400, seed: int = 7) -> dict[str, float]:
@@ -73,7 +93,9 @@ def span_accuracy(model: StructureModel, n: int = 400, seed: int = 7) -> dict[st
             r = model.read(s.text)
             spans_ok += [(x.start, x.end) for x in r.spans] == s.spans
             rels = [x.relation for x in r.spans]
-            order_ok += len(rels) == len(s.relations) and before_pairs(rels) == before_pairs(s.relations)
+            order_ok += len(rels) == len(s.relations) and before_pairs(rels, [x.target for x in r.spans]) == (
+                before_pairs(s.relations, s.targets)
+            )
         out[f"{name}: spans"] = spans_ok / len(synth)
         out[f"{name}: spans+order"] = order_ok / len(synth)
     return out
@@ -83,7 +105,8 @@ def train_and_report(out: Path, seed: int = 0) -> str:
     import time
 
     t0 = time.monotonic()
-    model = fit(training_sequences(N_TRAIN, seed))
+    data = training_data(N_TRAIN, seed)
+    model = fit(training_sequences(data), head_cases(data))
     secs = time.monotonic() - t0
     model.save(out)
     shares = ", ".join(f"{k} {100 * v:.1f}%" for k, v in span_accuracy(model).items())

@@ -120,7 +120,7 @@ def combine_spans(
         ids_of_span.append(list(new.values()))
         if len(new) > 1:
             groups.append(list(new.values()))
-    for a, b in before_pairs([s.relation for s in reading.spans]):
+    for a, b in before_pairs([s.relation for s in reading.spans], [s.target for s in reading.spans]):
         before += [(x, y) for x in ids_of_span[a] for y in ids_of_span[b]]
     return tasks, sorted(set(before)), groups
 

@@ -9,7 +9,8 @@ Sets (never test50, never the excluded trials):
 - `trainstyle_unseen`: valid_unseen annotations with the training connectives (unseen clauses, scenes);
 - `faithful_seen` / `faithful_unseen`: `faithful.compose_faithful` (the earlier validation's 25
   templates) over valid_seen / valid_unseen;
-- `refsdev_seen` / `refsdev_unseen` / `refsheld_seen` / `refsheld_unseen`: `compose_refs.compose_refs`
+- `refsdev_seen` / `refsdev_unseen` / `refsheld_seen` / `refsheld_unseen` / `refsnew_seen` / `refsnew_unseen`:
+  `compose_refs.compose_refs`
   (the paper's multi-agent style: tasks named by their object, "at any time"; development and held-out
   phrase families).
 A name with `:SEED` composes the set with that seed (`faithful_unseen:21`).
@@ -61,7 +62,7 @@ CANDIDATES: dict[str, StructurePolicy | None] = {
 
 def rows_of_set(name: str, n: int) -> list[dict[str, Any]]:
     """The rows of a set; `NAME:SEED` composes it with another seed (e.g. `faithful_unseen:21`)."""
-    from nl2hltl2plan.language.learned.compose_refs import DEV_REFS, HELDOUT_REFS, compose_refs
+    from nl2hltl2plan.language.learned.compose_refs import DEV_REFS, HELDOUT_REFS, NEW_REFS, compose_refs
     from nl2hltl2plan.language.learned.train import text_faithful_items
     from nl2hltl2plan.suites.alfred.learned_validation import faithful_split, rows_of, validation_rows
 
@@ -71,7 +72,7 @@ def rows_of_set(name: str, n: int) -> list[dict[str, Any]]:
     if name.startswith("faithful_"):
         return validation_rows("valid_" + name.split("_")[1], n, int(seed_text or 0))
     if name.startswith("refs"):  # refsdev_unseen / refsheld_seen ...: `compose_refs` phrase families
-        family = HELDOUT_REFS if name.startswith("refsheld") else DEV_REFS
+        family = {"refsheld": HELDOUT_REFS, "refsnew": NEW_REFS}.get(name.split("_")[0], DEV_REFS)
         items = list(faithful_split("valid_" + name.split("_")[1]))
         return rows_of(compose_refs(items, n, family, int(seed_text or 0)))
     style = HELDOUT_STYLE if name.startswith("heldout") else TRAIN_STYLE
