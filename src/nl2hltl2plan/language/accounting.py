@@ -153,10 +153,12 @@ def _nouns(
     implied, implied_words = parse.implied(), parse.implied_words()
     slots = parse.slots()
     groups: dict[frozenset[str], list[list[Mention]]] = {}
+    implied_places: list[Mention] = []  # "the refrigerator" of a cooling task: still a place the task uses
     for phrase in _phrases(mentions, toks):
         if any(
             m.entry.canonical in implied or m.surface.lower().split()[-1] in implied_words for m in phrase
         ):
+            implied_places += phrase
             continue
         groups.setdefault(frozenset(m.entry.canonical for m in phrase), []).append(phrase)
     # A phrase whose head's own type fills the slot ("coffee table" -> CoffeeTable) is matched before one
@@ -179,7 +181,7 @@ def _nouns(
     out = []
     objects = {t for _, role, st in slots if role == "object" for t in st}
     for key, phrases in groups.items():
-        if key in matched or all(_locative(instruction, p[0], toks, places) for p in phrases):
+        if key in matched or all(_locative(instruction, p[0], toks, places, implied_places) for p in phrases):
             continue
         first = phrases[0][-1]
         what = "object" if any(t in objects for t in first.entry.types) else "place"
@@ -189,11 +191,20 @@ def _nouns(
     return out
 
 
-def _locative(instruction: str, m: Mention, toks: list[tuple[str, int, int]], places: list[Mention]) -> bool:
+def _locative(
+    instruction: str,
+    m: Mention,
+    toks: list[tuple[str, int, int]],
+    places: list[Mention],
+    implied: list[Mention],
+) -> bool:
     """A place named only to say where something is: "from the counter", or, next to the place the
-    task uses in the same clause, "the drawer by the stove", "the lamp on the desk"."""
-    i = m.start - 1
-    while i >= 0 and m.start - i <= 4 and (toks[i][0] in DETERMINERS or not categories(toks[i][0])):
+    task uses in the same clause, "the drawer by the stove", "the lamp on the desk", "between the sink
+    and the stove"; after "next to" / "by" / "between", the place may be one a treatment implies ("next to
+    the lettuce in the refrigerator" of a cooled apple)."""
+    start = _pair_start(toks, m.start)  # the second place of "between A and B" is read as A is
+    i = start - 1
+    while i >= 0 and start - i <= 4 and (toks[i][0] in DETERMINERS or not categories(toks[i][0])):
         if toks[i][0] in LOCATIVE:
             break
         i -= 1
@@ -206,10 +217,33 @@ def _locative(instruction: str, m: Mention, toks: list[tuple[str, int, int]], pl
         first -= 1  # "from in between the sink and ...", "out of", "from under the bed": where it is
     if toks[first][0] in ("from", "off", "out"):
         return True
-    clause = _clause_span(instruction, m.char_start)
+    clause = _clause_span(instruction, toks[start][1])
     if any("verb_take" in categories(w) for w, s, _ in toks if clause[0] <= s < clause[1]):
         return True
-    return any(clause[0] <= o.char_start < clause[1] and o.start != m.start for o in places)
+    near = places + implied if toks[i][0] in NEAR_WORDS else places
+    return any(clause[0] <= o.char_start < clause[1] and o.start not in (m.start, start) for o in near)
+
+
+NEAR_WORDS = frozenset("near beside by next between behind against".split())
+
+
+def _pair_start(toks: list[tuple[str, int, int]], start: int) -> int:
+    """For the place whose first word is at `start`: the first word of the place before it when the two
+    are joined as "between the sink and the stove"; else `start`."""
+    j = start - 1
+    while j >= 0 and toks[j][0] in DETERMINERS:
+        j -= 1
+    if j < 2 or toks[j][0] != "and":
+        return start
+    k = j - 1
+    while k >= 0 and j - k <= 4 and toks[k][0] not in ("between", ",", "and"):
+        k -= 1
+    if k < 0 or toks[k][0] != "between":
+        return start
+    first = k + 1
+    while first < j - 1 and toks[first][0] in DETERMINERS:
+        first += 1
+    return first
 
 
 def _walked_to(toks: list[tuple[str, int, int]], start: int) -> bool:

@@ -140,7 +140,7 @@ class _ItemReader:
             hit = match_prep(words, i + 1)
             self.cur_prep = THEN_TO
             return i + 1 + (hit[1] if hit is not None and hit[0] in G.DEST_PREPS else 0)
-        if w == "and" and self.cur_prep == "from" and self.source_pair:
+        if w == "and" and self.cur_prep in {"from", "between", "in between"} and self.source_pair:
             self._flush()  # "from between the sink and the toilet": both say where it is
             self.source_pair = False
             return i + 1
@@ -165,6 +165,11 @@ class _ItemReader:
             return i + hit[1]
         if hit is not None and not (hit[0] == "of" and self.cur):
             self._flush()
+            # "in the fridge between the lettuce and the potato": after a destination, the pair says where
+            # in it, not two more destinations
+            self.source_pair = hit[0] in {"between", "in between"} and any(
+                p in G.DEST_PREPS and p not in {"between", "in between"} for p, _ in self.item.pps
+            )
             self.cur_prep = hit[0]
             return i + hit[1]
         self.cur.append(self.toks[i])

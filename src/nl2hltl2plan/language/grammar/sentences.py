@@ -121,6 +121,16 @@ def relation_sentence(body: str) -> RelationSentence | None:
     return None
 
 
+# "Y after you to heat X" (a clause written as an infinitive, "To heat X.", put after a connective): the
+# "to" is the clause's own, "after you heat X"
+_CONNECTIVE_TO = re.compile(r"\b(after|before|until|once|when)\s+(you\s+)?to\s+(?=[a-z])", re.I)
+
+
+def without_connective_to(text: str) -> str:
+    """ "Y after you to heat X" -> "Y after you heat X" (the structure model reads it so too)."""
+    return _CONNECTIVE_TO.sub(lambda m: f"{m.group(1)} {m.group(2) or ''}", text)
+
+
 _UNTIL = re.compile(r"\b([Dd])(?:o not|on't) ([^.;!?]+?) until (?:you )?([^.;!?]+)")
 # "Once (you are) done (with the task to) X, Y" names what is done: "After X, Y" (not "Then Y")
 _DONE_WITH = re.compile(
@@ -187,6 +197,13 @@ _SHELF_OF = re.compile(
 )
 _STATE_ALT = "|".join(sorted(G.STATE_WORDS))
 _STATES_LISTED = re.compile(rf"\b({_STATE_ALT}),\s+(?=(?:{_STATE_ALT})\b)", re.IGNORECASE)
+# "a chilled and sliced tomato", "put washed and dried mugs ...": after an article or a placing verb, two
+# states joined by "and" describe one noun ("cut and cool the apple" stays two verbs)
+_STATES_JOINED = re.compile(
+    rf"\b((?:a|an|the|some|two|put|place|set|move|bring|take)\s+(?:{_STATE_ALT}))\s+and\s+"
+    rf"(?=(?:{_STATE_ALT}|dried)\s+[a-z])",
+    re.IGNORECASE,
+)
 
 
 def normalize(text: str) -> str:
@@ -194,9 +211,11 @@ def normalize(text: str) -> str:
     text = text.replace("\u2019", "'").replace("\u2018", "'").replace("\u201c", '"').replace("\u201d", '"')
     text = re.sub(r"(?<=[a-z])\.(?=[A-Za-z])", ". ", text)
     text = re.sub(r"\s*\([^)]*\)", "", text)  # parenthetical remarks: "(where the red block is now)"
+    text = without_connective_to(text)
     # "Do not Y until (you) X" states the order of "After X, Y" (ANNOTATION_GUIDE.md)
     text = _UNTIL.sub(lambda m: f"{'A' if m.group(1) == 'D' else 'a'}fter {m.group(3)}, {m.group(2)}", text)
     text = _STATES_LISTED.sub(r"\1 ", text)  # "a chilled, cut slice": one noun phrase, not two clauses
+    text = _STATES_JOINED.sub(r"\1 ", text)
     text = _OFF.sub(r"\1", text)  # "a rinsed off knife", "cool off a plate": the state, not a direction
     text = _BACK.sub(r", then back \1", text)  # "put it in the fridge, back in the microwave": a sequence
     text = _HAS_IN_IT.sub("with ", text)
