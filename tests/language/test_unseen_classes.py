@@ -14,6 +14,7 @@ KITCHEN = {
     "Apple", "Tomato", "Potato", "Lettuce", "Bread", "Egg", "Mug", "Cup", "Bowl", "Plate", "Pan", "Pot",
     "Fork", "Spoon", "Knife", "Ladle", "Fridge", "Microwave", "CounterTop", "SinkBasin", "Cabinet",
     "Drawer", "DiningTable", "StoveBurner", "GarbageCan", "CoffeeMachine", "Toilet", "Dresser", "Pencil",
+    "SoapBar", "Cloth", "TissueBox", "Newspaper", "DeskLamp", "FloorLamp",
 }  # fmt: skip
 
 
@@ -126,3 +127,46 @@ def test_two_verbs_joined_by_and_stay_verbs():
 def test_everyday_furniture_names(text, task):
     tasks, _, unread = read(text)
     assert tasks == [task] and not unread
+
+
+# ----- "the" typed for "then" before a verb and "it" ---------------------------------------------------
+def test_the_typed_for_then_before_a_verb_and_it():
+    tasks, _, unread = read("Cool some bread and the place it on the counter.")
+    assert tasks == ["cool_place Bread -> CounterTop"] and not unread
+
+
+def test_the_before_a_noun_stays_an_article():
+    """Near miss: "the mug in the sink" is a noun phrase (no "it" after the noun)."""
+    tasks, _, unread = read("Put the apple on the counter and the mug in the sink.")
+    assert tasks == ["place Apple -> CounterTop", "place Mug -> SinkBasin"] and not unread
+
+
+# ----- "a rinse off bar of soap": the annotators' adjective is the washed state ---------------------------
+def test_rinse_off_before_a_noun_is_the_washed_state():
+    tasks, _, unread = read("Put a rinse off bar of soap in to the cabinet.")
+    assert tasks == ["clean_place SoapBar -> Cabinet"] and not unread
+
+
+def test_wash_cloth_is_still_a_cloth():
+    """Near miss: "the wash cloth" is the lexicon's name of a cloth, not a washed one."""
+    assert read("Put the wash cloth in the cabinet.")[0] == ["place Cloth -> Cabinet"]
+
+
+# ----- "using the light from a floor lamp": the light of that lamp ----------------------------------------
+def test_light_from_a_named_lamp_is_that_lamp():
+    text = (
+        "Examine a newspaper by the light of the floor lamp. At any time, examine a box of tissues using the "
+        "light from a floor lamp."
+    )
+    tasks, _, unread = read(text)
+    assert tasks == [
+        "examine_in_light Newspaper under FloorLamp",
+        "examine_in_light TissueBox under FloorLamp",
+    ] and not unread
+
+
+def test_light_of_the_desk_lamp_is_the_desk_lamp():
+    """Near miss: the rule reads the lamp that is named, whichever it is."""
+    assert read("Examine the pencil using the light of the desk lamp.")[0] == [
+        "examine_in_light Pencil under DeskLamp"
+    ]

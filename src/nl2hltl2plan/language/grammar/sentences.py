@@ -168,6 +168,13 @@ _USE_LAMP = re.compile(
     r"(?P<obj>[^,.;!?]+?)(?=[,.;!?]|\s+(?:and|then)\b|$)",
     re.IGNORECASE,
 )
+# "cool some bread and the place it on the counter", "put two apples on a counter the cut them": "the"
+# typed for "then" (a verb and "it"/"them" follow it, so it opens no noun phrase)
+_THE_FOR_THEN = re.compile(r"\b(?<!of )the (?=([a-z]+) (?:it|them)\b)", re.IGNORECASE)
+# "examine the box using the light from a floor lamp": the light of that lamp
+_LIGHT_FROM = re.compile(r"\blight from (?=(?:the |a |an )?(?:[a-z]+ )?(?:lamp|light)\b)", re.IGNORECASE)
+# "a rinse off bar of soap", "the rinse soap": the rinsed one (ALFRED's annotators' adjective)
+_RINSE_ADJ = re.compile(r"\b(a|an|the)\s+rinse(?:\s+off)?\s+(?=[a-z])", re.IGNORECASE)
 # "put X in A, and once that's done put Y in B" / "... and when you're done put Y ...": inside a
 # sentence, the same as "then" (at its start the leading markers read it)
 _DONE_INSIDE = re.compile(
@@ -220,6 +227,9 @@ def normalize(text: str) -> str:
     text = _BACK.sub(r", then back \1", text)  # "put it in the fridge, back in the microwave": a sequence
     text = _HAS_IN_IT.sub("with ", text)
     text = _SHELF_OF.sub("", text)
+    text = _THE_FOR_THEN.sub(lambda m: "then " if m.group(1).lower() in G.VERBS else m.group(0), text)
+    text = _LIGHT_FROM.sub("light of ", text)
+    text = _RINSE_ADJ.sub(r"\1 rinsed ", text)
     text = _USE_LAMP.sub(lambda m: f"{m['verb']} {m['obj']} by the light of the {m['lamp']}", text)
     text = _FOLLOWED_TO.sub(r" and finally \1", text)
     text = _DONE_GERUND.sub(r"\1 ", text)
