@@ -170,3 +170,34 @@ def test_light_of_the_desk_lamp_is_the_desk_lamp():
     assert read("Examine the pencil using the light of the desk lamp.")[0] == [
         "examine_in_light Pencil under DeskLamp"
     ]
+
+
+# ----- a place named only as a landmark is no destination (issue 28: "next to the microwave") -------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Put the mug next to the microwave.",
+        "Put the apple next to the fridge.",
+        "Put the apple beside the stove.",
+    ],
+)
+def test_a_landmark_alone_is_no_destination(text):
+    """Before, the model's guess put the mug *in* the microwave (heated) and check 1 took the word as
+    naming it; now the instruction is refused, naming the missing destination."""
+    assert read(text)[2]  # refused: something is unread
+
+
+def test_landmark_check_names_a_guessed_destination():
+    from nl2hltl2plan.language.task_specs import BaseTaskSpec
+
+    guess = BaseTaskSpec(id="A", text="", kind="heat_place", object=["Mug"], receptacle=["Microwave"])
+    found = [str(u) for u in account("Put the mug next to the microwave.", [guess], [])]
+    assert any("landmark" in u and "microwave" in u for u in found)
+
+
+def test_a_landmark_beside_a_destination_is_fine():
+    """Near miss: the counter is the destination, the microwave says where on it."""
+    tasks, _, unread = read("Put the mug on the counter next to the microwave.")
+    assert tasks == ["place Mug -> CounterTop"] and not unread
+    tasks, _, unread = read("Put the knife in the sink next to the cup.")
+    assert tasks == ["place Knife -> SinkBasin"] and not unread

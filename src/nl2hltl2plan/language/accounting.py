@@ -42,6 +42,7 @@ from nl2hltl2plan.language.grounding import (
     lookup,
     tokens,
 )
+from nl2hltl2plan.language.landmarks import NEAR_WORDS, landmark_destinations, pair_start
 from nl2hltl2plan.language.negations import unforbidden_verb
 from nl2hltl2plan.language.parse_usage import IMPLIED_TYPES, ParseUsage
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, ConstraintSpec
@@ -93,6 +94,7 @@ def account(
     in_mention = {i for m in mentions for i in range(m.start, m.end)}
     out = _nouns(instruction, mentions, toks, parse)
     out += _invented(mentions, toks, parse)
+    out += landmark_destinations(mentions, toks, parse)
     out += _invented_kinds(toks, mentions, parse)
     out += _words(instruction, toks, in_mention, mentions, parse, instances, scene)
     out += _orders(toks, {i for i, t in enumerate(toks) if parse.constraint_at(t[1])} | in_mention, parse)
@@ -202,7 +204,7 @@ def _locative(
     task uses in the same clause, "the drawer by the stove", "the lamp on the desk", "between the sink
     and the stove"; after "next to" / "by" / "between", the place may be one a treatment implies ("next to
     the lettuce in the refrigerator" of a cooled apple)."""
-    start = _pair_start(toks, m.start)  # the second place of "between A and B" is read as A is
+    start = pair_start(toks, m.start)  # the second place of "between A and B" is read as A is
     i = start - 1
     while i >= 0 and start - i <= 4 and (toks[i][0] in DETERMINERS or not categories(toks[i][0])):
         if toks[i][0] in LOCATIVE:
@@ -222,28 +224,6 @@ def _locative(
         return True
     near = places + implied if toks[i][0] in NEAR_WORDS else places
     return any(clause[0] <= o.char_start < clause[1] and o.start not in (m.start, start) for o in near)
-
-
-NEAR_WORDS = frozenset("near beside by next between behind against".split())
-
-
-def _pair_start(toks: list[tuple[str, int, int]], start: int) -> int:
-    """For the place whose first word is at `start`: the first word of the place before it when the two
-    are joined as "between the sink and the stove"; else `start`."""
-    j = start - 1
-    while j >= 0 and toks[j][0] in DETERMINERS:
-        j -= 1
-    if j < 2 or toks[j][0] != "and":
-        return start
-    k = j - 1
-    while k >= 0 and j - k <= 4 and toks[k][0] not in ("between", ",", "and"):
-        k -= 1
-    if k < 0 or toks[k][0] != "between":
-        return start
-    first = k + 1
-    while first < j - 1 and toks[first][0] in DETERMINERS:
-        first += 1
-    return first
 
 
 def _walked_to(toks: list[tuple[str, int, int]], start: int) -> bool:
