@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import pytest
 
+from nl2hltl2plan.config import data_dir
 from nl2hltl2plan.language.accounting import account
 from nl2hltl2plan.language.learned.inference import parse_instruction
 from nl2hltl2plan.language.task_specs import transitive_closure
@@ -27,6 +28,7 @@ def read(text: str) -> tuple[list[str], set[tuple[str, str]], list[str]]:
     return [t.summary() for t in p.tasks], order, unread
 
 
+needs_data = pytest.mark.skipif(data_dir(required=False) is None, reason="needs ../shared/data")
 HEAT_APPLE = "heat_place Apple(sliced) -> Fridge"
 BREAD = "heat_place Bread(sliced) -> DiningTable"
 
@@ -201,3 +203,56 @@ def test_a_landmark_beside_a_destination_is_fine():
     assert tasks == ["place Mug -> CounterTop"] and not unread
     tasks, _, unread = read("Put the knife in the sink next to the cup.")
     assert tasks == ["place Knife -> SinkBasin"] and not unread
+
+
+# ----- a container reading the world cannot do is no reading -------------------------------------------
+def read_with_affordances(text: str) -> tuple[list[str], list[str]]:
+    from nl2hltl2plan.language.grounding import alfred_lookup
+
+    p = parse_instruction(text, KITCHEN, "kitchen", strict=False, affordances=alfred_lookup())
+    unread = list(p.unparsed) + [str(u) for u in account(text, p.tasks, p.before)]
+    return [t.summary() for t in p.tasks], unread
+
+
+@needs_data
+def test_a_mug_cannot_hold_an_apple():
+    """Before: "place_in_container Apple in Mug -> SinkBasin" (ALFRED's mug holds utensils only)."""
+    tasks, unread = read_with_affordances("Put the mug and the apple in the sink.")
+    assert not any("Apple in Mug" in t for t in tasks) and unread
+
+
+@needs_data
+def test_a_pan_holds_a_knife():
+    """Near miss: ALFRED's "put the pan and the knife in the sink" is the knife in the pan."""
+    tasks, unread = read_with_affordances("Put the pan and the knife in the sink.")
+    assert tasks == ["place_in_container Knife in Pan -> SinkBasin"] and not unread
+
+
+def test_nothing_holds_itself():
+    from nl2hltl2plan.language.grammar.draft_tasks import TaskBuilder
+
+    assert not TaskBuilder(None, strict=False).can_hold(["Mug"], ["Mug"], sliced=False)
+    assert TaskBuilder(None, strict=False).can_hold(["Mug"], ["Fork"], sliced=False)
+
+
+# ----- "X, but before you do that, Y" inside a sentence: Y first ---------------------------------------
+PUT_EGG, PUT_MUG = "place Egg -> Microwave", "place Mug -> SinkBasin"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Put the egg in the microwave but before you do that put the mug in the sink.",
+        "Put the egg in the microwave, but before doing so, put the mug in the sink.",
+        "Put the egg in the microwave, but first put the mug in the sink.",
+    ],
+)
+def test_but_before_that_inside_a_sentence_puts_it_first(text):
+    tasks, order, unread = read(text)
+    assert sorted(tasks) == sorted([PUT_EGG, PUT_MUG]) and order == {(PUT_MUG, PUT_EGG)} and not unread
+
+
+def test_first_then_but_before_that_is_not_a_contradiction():
+    """Near miss: "First X, but before that Y" keeps a reading (no contradictory order is invented)."""
+    tasks, order, _ = read("First put the egg in the microwave, but before that put the mug in the sink.")
+    assert sorted(tasks) == sorted([PUT_EGG, PUT_MUG])

@@ -171,6 +171,25 @@ _USE_LAMP = re.compile(
 # "cool some bread and the place it on the counter", "put two apples on a counter the cut them": "the"
 # typed for "then" (a verb and "it"/"them" follow it, so it opens no noun phrase)
 _THE_FOR_THEN = re.compile(r"\b(?<!of )the (?=([a-z]+) (?:it|them)\b)", re.IGNORECASE)
+# "X, but before you do that, Y" / "X, but first Y" inside a sentence: Y comes first ("Before that, Y.")
+_BUT_BEFORE = re.compile(
+    r"(?<=\w)\s*,?\s+but\s+(?:before\s+(?:that|this|(?:you\s+do|doing)\s+(?:that|this|so|it))|first)\s*,?\s+(?=[a-z])",
+    re.IGNORECASE,
+)
+_FIRST_OPENER = re.compile(r"^\s*(?:first|firstly|start|begin|to\s+(?:start|begin))\b", re.IGNORECASE)
+
+
+def _keeps_but_first(text: str, m: re.Match[str]) -> bool:
+    """Is "but first" better left to the sentence's other order words: the sentence opens with "first" /
+    "start by", or goes on with "then" / "finally" after it (the structure model reads those whole)?"""
+    start = max((x.end() for x in re.finditer(r"[.;!?]", text[: m.start()])), default=0)
+    rest = re.split(r"[.;!?]", text[m.end() :], maxsplit=1)[0]
+    return _FIRST_OPENER.match(text[start : m.start()]) is not None or _LATER_WORD.search(rest) is not None
+
+
+_LATER_WORD = re.compile(r"\b(?:then|finally|lastly|after\s+that|afterwards?|next)\b", re.IGNORECASE)
+
+
 # "examine the box using the light from a floor lamp": the light of that lamp
 _LIGHT_FROM = re.compile(r"\blight from (?=(?:the |a |an )?(?:[a-z]+ )?(?:lamp|light)\b)", re.IGNORECASE)
 # "a rinse off bar of soap", "the rinse soap": the rinsed one (ALFRED's annotators' adjective)
@@ -227,6 +246,7 @@ def normalize(text: str) -> str:
     text = _BACK.sub(r", then back \1", text)  # "put it in the fridge, back in the microwave": a sequence
     text = _HAS_IN_IT.sub("with ", text)
     text = _SHELF_OF.sub("", text)
+    text = _BUT_BEFORE.sub(lambda m: m.group(0) if _keeps_but_first(text, m) else ". Before that, ", text)
     text = _THE_FOR_THEN.sub(lambda m: "then " if m.group(1).lower() in G.VERBS else m.group(0), text)
     text = _LIGHT_FROM.sub("light of ", text)
     text = _RINSE_ADJ.sub(r"\1 rinsed ", text)
