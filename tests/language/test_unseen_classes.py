@@ -216,9 +216,10 @@ def read_with_affordances(text: str) -> tuple[list[str], list[str]]:
 
 @needs_data
 def test_a_mug_cannot_hold_an_apple():
-    """Before: "place_in_container Apple in Mug -> SinkBasin" (ALFRED's mug holds utensils only)."""
+    """Before: "place_in_container Apple in Mug -> SinkBasin" (ALFRED's mug holds utensils only); now the
+    two listed things each go to the sink."""
     tasks, unread = read_with_affordances("Put the mug and the apple in the sink.")
-    assert not any("Apple in Mug" in t for t in tasks) and unread
+    assert tasks == ["place Mug -> SinkBasin", "place Apple -> SinkBasin"] and not unread
 
 
 @needs_data
@@ -256,3 +257,37 @@ def test_first_then_but_before_that_is_not_a_contradiction():
     """Near miss: "First X, but before that Y" keeps a reading (no contradictory order is invented)."""
     tasks, order, _ = read("First put the egg in the microwave, but before that put the mug in the sink.")
     assert sorted(tasks) == sorted([PUT_EGG, PUT_MUG])
+
+
+# ----- "grab A and B and put them (both) in C": the plural pronoun is the list ---------------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "grab the apple and the tomato and put them in the fridge",
+        "grab the apple and the tomato and put both in the fridge",
+        "Pick up the apple and the tomato, and put them both in the fridge.",
+    ],
+)
+def test_a_plural_pronoun_after_a_taken_list_is_the_list(text):
+    """Before: the apple was only held and the tomato put away (exit 0), or "both in the fridge" was
+    counted as two fridges."""
+    tasks, _, unread = read(text)
+    assert tasks == ["place Apple -> Fridge", "place Tomato -> Fridge"] and not unread
+
+
+def test_a_singular_pronoun_after_one_taken_object_stays_one_task():
+    """Near miss: "grab the apple and put it in the fridge and take the mug and put it in the sink"."""
+    tasks, _, unread = read("Grab the apple and put it in the fridge and take the mug and put it in the sink")
+    assert tasks == ["place Apple -> Fridge", "place Mug -> SinkBasin"] and not unread
+
+
+def test_both_before_a_preposition_counts_no_place():
+    """ "put both in the fridge" is no count of fridges (it raised "holds only 1 fridge")."""
+    from nl2hltl2plan.language.task_specs import BaseTaskSpec
+
+    tasks = [
+        BaseTaskSpec(id="A", text="", kind="place", object=["Apple"], receptacle=["Fridge"]),
+        BaseTaskSpec(id="B", text="", kind="place", object=["Tomato"], receptacle=["Fridge"]),
+    ]
+    text = "grab the apple and the tomato and put both in the fridge"
+    assert account(text, tasks, [], instances={"Fridge": 1, "Apple": 1, "Tomato": 1}) == []

@@ -295,12 +295,17 @@ def _misspelt(words: list[str], types: frozenset[str]) -> bool:
 
 
 def _next_mention(mentions: list[Mention], words: list[str], i: int, within: int = 3) -> Mention | None:
-    """The noun a count word counts: the next mention, with only non-content words between."""
+    """The noun a count word counts: the next mention, with only non-content words between, and no
+    preposition ("put both in the fridge": "both" counts what was named before, not fridges)."""
     for m in mentions:
         if i < m.start <= i + within:
             between = words[i + 1 : m.start]
-            return m if all(w in DETERMINERS or not categories(w) for w in between) else None
+            counted = all(w in DETERMINERS or not categories(w) for w in between)
+            return m if counted and not set(between) & _PLACE_PREPS else None
     return None
+
+
+_PLACE_PREPS = (LOCATIVE - {"of"}) | {"to", "into", "onto"}
 
 
 def _words(

@@ -409,5 +409,9 @@ def merge_items(items: list[Item], b: TaskBuilder) -> list[Item]:
         return [Item(obj=xo, pps=dests or x.pps)]
     if xo.is_movable_receptacle() != yo.is_movable_receptacle():
         cont, content = (xo, yo) if xo.is_movable_receptacle() else (yo, xo)
-        return [Item(obj=content, pps=[("containing", cont), *dests])]
+        assert cont.entry is not None and content.entry is not None
+        # "the pan and the knife": the knife in the pan; "the mug and the apple": two things (a mug holds
+        # no apple)
+        if b.g is None or b.can_hold(b.g.resolve(cont.entry), b.g.resolve(content.entry), content.sliced):
+            return [Item(obj=content, pps=[("containing", cont), *dests])]
     return items

@@ -190,6 +190,15 @@ def _keeps_but_first(text: str, m: re.Match[str]) -> bool:
 _LATER_WORD = re.compile(r"\b(?:then|finally|lastly|after\s+that|afterwards?|next)\b", re.IGNORECASE)
 
 
+# "grab the apple and the tomato and put them (both) in the fridge": the plural pronoun is the list, so
+# "put the apple and the tomato in the fridge" (each one a task, as a listed object is)
+_TAKE_LIST_THEN_PUT = re.compile(
+    r"\b(?:grab|take|pick\s+up|get|collect|gather|fetch)\s+(?P<objs>[^,.;!?]+?\s+and\s+[^,.;!?]+?)\s*,?\s+"
+    r"(?:and\s+)?(?:then\s+)?(?P<verb>put|place|set|move|bring|carry|throw|drop|take)\s+"
+    r"(?:them(?:\s+(?:both|all))?|both(?:\s+of\s+them)?|all\s+of\s+them)\s+"
+    r"(?=(?:in|into|on|onto|to|inside|away|back|down)\b)",
+    re.IGNORECASE,
+)
 # "examine the box using the light from a floor lamp": the light of that lamp
 _LIGHT_FROM = re.compile(r"\blight from (?=(?:the |a |an )?(?:[a-z]+ )?(?:lamp|light)\b)", re.IGNORECASE)
 # "a rinse off bar of soap", "the rinse soap": the rinsed one (ALFRED's annotators' adjective)
@@ -246,6 +255,7 @@ def normalize(text: str) -> str:
     text = _BACK.sub(r", then back \1", text)  # "put it in the fridge, back in the microwave": a sequence
     text = _HAS_IN_IT.sub("with ", text)
     text = _SHELF_OF.sub("", text)
+    text = _TAKE_LIST_THEN_PUT.sub(lambda m: f"{m['verb']} {m['objs']} ", text)
     text = _BUT_BEFORE.sub(lambda m: m.group(0) if _keeps_but_first(text, m) else ". Before that, ", text)
     text = _THE_FOR_THEN.sub(lambda m: "then " if m.group(1).lower() in G.VERBS else m.group(0), text)
     text = _LIGHT_FROM.sub("light of ", text)
