@@ -291,3 +291,15 @@ def test_both_before_a_preposition_counts_no_place():
     ]
     text = "grab the apple and the tomato and put both in the fridge"
     assert account(text, tasks, [], instances={"Fridge": 1, "Apple": 1, "Tomato": 1}) == []
+
+
+# ----- "the apple or the tomato": a choice the text leaves open is no list ------------------------------
+def test_objects_joined_by_or_are_a_choice_not_a_list():
+    """Before: both were put in the fridge (exit 0)."""
+    tasks, _, unread = read("put the apple or the tomato in the fridge")
+    assert any("a choice between objects" in u for u in unread)
+
+
+def test_or_between_places_is_not_a_choice_of_objects():
+    """Near miss: "inside the safe or locker" offers places (the ALFRED annotations' style)."""
+    assert not any("a choice" in u for u in read("Put the egg in the fridge or microwave.")[2])

@@ -122,6 +122,9 @@ class DraftBuilder:
         if fr.ambiguous:
             unparsed.append(f"{c_text} (a list of destinations)")
             return True
+        if fr.choice:
+            unparsed.append(f"{c_text} (a choice between objects: say which one)")
+            return True
         if fr.cls == "light" and not any(
             (it.obj is not None and it.obj.is_lamp()) or any(np.is_lamp() for _, np in it.pps)
             for it in fr.items
