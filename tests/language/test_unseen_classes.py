@@ -303,3 +303,54 @@ def test_objects_joined_by_or_are_a_choice_not_a_list():
 def test_or_between_places_is_not_a_choice_of_objects():
     """Near miss: "inside the safe or locker" offers places (the ALFRED annotations' style)."""
     assert not any("a choice" in u for u in read("Put the egg in the fridge or microwave.")[2])
+
+
+# ----- "last" / "once everything else is done" before the other tasks are written -----------------------
+APPLE, MUG, EGG = "place Apple -> Fridge", "place Mug -> SinkBasin", "place Egg -> Microwave"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Put the apple in the fridge last. Put the mug in the sink and the egg in the microwave.",
+        "Put the apple in the fridge once everything else is done. Put the mug in the sink and the egg "
+        "in the microwave.",
+        "Once everything else is done, put the apple in the fridge. Put the mug in the sink and the egg "
+        "in the microwave.",
+    ],
+)
+def test_last_of_all_is_after_tasks_written_later_too(text):
+    """Before: refused ("'once' / 'last' (order): the base tasks are not ordered")."""
+    tasks, order, unread = read(text)
+    assert sorted(tasks) == sorted([APPLE, MUG, EGG]) and not unread
+    assert order == {(MUG, APPLE), (EGG, APPLE)}
+
+
+def test_once_all_that_is_done_still_means_what_came_before():
+    """Near miss: "once all that is done" names the tasks before it, not the one written after."""
+    tasks, order, unread = read(
+        "Put the mug in the sink. Once all that is done, put the apple in the fridge. Then put the egg in "
+        "the microwave."
+    )
+    assert (MUG, APPLE) in order and (EGG, APPLE) not in order and not unread
+
+
+def test_at_the_end_inside_a_sentence_is_an_order_word():
+    """ "Put the apple in the fridge at the end, and put the mug in the sink" was read with no order (exit
+    0); check 1 now names "at the end" when the reading has none. "At the end of the counter" is a place."""
+    from nl2hltl2plan.language.task_specs import BaseTaskSpec
+
+    a = BaseTaskSpec(id="A", text="", kind="place", object=["Apple"], receptacle=["Fridge"])
+    b = BaseTaskSpec(id="B", text="", kind="place", object=["Mug"], receptacle=["SinkBasin"])
+    text = "Put the apple in the fridge at the end, and put the mug in the sink."
+    assert any("at the end" in str(u) for u in account(text, [a, b], []))
+    assert account(text, [a, b], [("B", "A")]) == []
+    c = BaseTaskSpec(id="A", text="", kind="place", object=["Apple"], receptacle=["CounterTop"])
+    place = "Put the apple at the end of the counter and the mug in the sink."
+    assert not any("at the end" in str(u) for u in account(place, [c, b], []))
+
+
+# ----- "twice": no base task is done more than once -----------------------------------------------------
+def test_twice_is_a_count_no_task_carries():
+    assert any("'twice'" in u for u in read("put the apple in the fridge twice")[2])
+    assert not read("put the apple in the fridge")[2]

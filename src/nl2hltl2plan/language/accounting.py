@@ -342,6 +342,8 @@ def _words(
             unread = Unread(w, "negation", NO_CONSTRAINT)
         elif _count_value(cats, w) is not None or cats & {"quantifier_all", "quantifier_vague"}:
             unread = _count(instruction, toks, i, cats, mentions, parse, instances, scene)
+        elif "repetition" in cats:
+            unread = Unread(w, "count", "no base task is done more than once: say each time as its own task")
         if unread is not None:
             out.append(unread)
     return out
@@ -494,6 +496,7 @@ def _orders(toks: list[tuple[str, int, int]], in_mention: set[int], parse: Parse
     ]  # "next to the sink" names a place, not a step
     text = " ".join(plain)
     words += [p for p in ("in that order", "in this order") if f" {p} " in f" {text} "]
+    words += [p for p in ("at the end", "in the end") if re.search(rf"\b{p}\b(?! of\b)", text)]
     free = any("any_order" in c for c in cats)
     if not words or len(parse.tasks) < 2 or parse.before or free:
         return []

@@ -10,6 +10,7 @@ from nl2hltl2plan.language.grammar.clauses import Clause, expand_gapping, split_
 from nl2hltl2plan.language.grammar.draft_tasks import Draft, TaskBuilder, Unit
 from nl2hltl2plan.language.grammar.frames import (
     IN_SENTENCE,
+    OF_ALL,
     Frame,
     Item,
     dest_of,
@@ -252,8 +253,10 @@ class DraftBuilder:
             ):
                 pass
             else:
+                # "put the apple in the fridge last": after every other task, those written after it too
+                of_all = kind == G.FINALLY and len(sentence_units) == 1
                 for u in sentence_units:
-                    u.markers.append((kind, ref))
+                    u.markers.append((kind, OF_ALL if of_all else ref))
 
 
 def _continues(d: Draft, fr: Frame, it: Item, joiner: str) -> bool:

@@ -33,6 +33,7 @@ class Frame:
 
 SEQ_WORDS = {"then", "finally", "lastly", "afterwards", "afterward", "later"}  # not "next": "next to"
 IN_SENTENCE = "in sentence"  # a "finally" that joins clauses of one sentence
+OF_ALL = "of all"  # a "last" / "at the end" that ends a one-task sentence: after every other task
 THEN_TO = "then to"  # a further destination after a stop ("to the sink and finally the toilet")
 
 

@@ -84,7 +84,7 @@ def strip_leading(body: str) -> tuple[list[tuple[str, str]], str]:
         for pat, kind in G.LEADING:
             m = pat.match(body)
             if m and m.end() > 0:
-                ref = m.groupdict().get("ref") or ""
+                ref = m.groupdict().get("ref") or (m.group(0) if kind == G.AFTER_ALL else "")
                 if kind:
                     markers.append((kind, ref))
                 body = body[m.end() :]
