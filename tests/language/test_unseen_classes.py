@@ -354,3 +354,16 @@ def test_at_the_end_inside_a_sentence_is_an_order_word():
 def test_twice_is_a_count_no_task_carries():
     assert any("'twice'" in u for u in read("put the apple in the fridge twice")[2])
     assert not read("put the apple in the fridge")[2]
+
+
+def test_a_verb_that_names_the_place_names_a_destination():
+    """Near miss of the landmark check (alfred_multiagent): "refrigerate the bread" names the fridge as
+    where it goes, although "the refrigerator" itself is written only as a landmark of another task."""
+    from nl2hltl2plan.language.task_specs import BaseTaskSpec
+
+    bread = BaseTaskSpec(
+        id="A", text="", kind="cool_place", object=["Bread"], sliced=True, receptacle=["Fridge"]
+    )
+    pot = BaseTaskSpec(id="B", text="", kind="place", object=["Pot"], receptacle=["Cabinet"])
+    text = "Refrigerate a slice of bread. Move the pot to the cabinet next to the refrigerator."
+    assert not [u for u in account(text, [bread, pot], []) if "landmark" in str(u)]

@@ -8,7 +8,7 @@ the microwave" is fine: the counter is the destination, the microwave where on i
 
 from __future__ import annotations
 
-from nl2hltl2plan.language.content_words import DETERMINERS, Unread
+from nl2hltl2plan.language.content_words import DETERMINERS, Unread, stems, verb_places
 from nl2hltl2plan.language.grounding import Mention
 from nl2hltl2plan.language.parse_usage import ParseUsage
 
@@ -35,10 +35,16 @@ def near_word_before(toks: list[tuple[str, int, int]], start: int) -> bool:
 def landmark_destinations(
     mentions: list[Mention], toks: list[tuple[str, int, int]], parse: ParseUsage
 ) -> list[Unread]:
-    """Destinations (receptacle slots) that the instruction names only as landmarks."""
+    """Destinations (receptacle slots) that the instruction names only as landmarks (a verb that names
+    the place, "refrigerate the bread", names it as a destination)."""
+    in_mention = {i for m in mentions for i in range(m.start, m.end)}
+    places = verb_places()
+    by_verb = {
+        places[f] for i, (w, _, _) in enumerate(toks) if i not in in_mention for f in stems(w) if f in places
+    }
     out = []
     for task_id, role, types in parse.slots():
-        if role != "receptacle":
+        if role != "receptacle" or types & by_verb:
             continue
         naming = [m for m in mentions if types & set(m.entry.types) or m.entry.canonical in types]
         if naming and all(near_word_before(toks, m.start) for m in naming):
