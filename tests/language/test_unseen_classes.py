@@ -367,3 +367,16 @@ def test_a_verb_that_names_the_place_names_a_destination():
     pot = BaseTaskSpec(id="B", text="", kind="place", object=["Pot"], receptacle=["Cabinet"])
     text = "Refrigerate a slice of bread. Move the pot to the cabinet next to the refrigerator."
     assert not [u for u in account(text, [bread, pot], []) if "landmark" in str(u)]
+
+
+# ----- a condition is no task ("if it's dirty") -----------------------------------------------------------
+def test_a_condition_is_unread():
+    """Before: "put the mug in the sink unless it's dirty" put the mug in the sink, condition dropped."""
+    assert any("(condition)" in u for u in read("put the mug in the sink unless it's dirty")[2])
+    assert any("(condition)" in u for u in read("put the mug in the sink if it is dirty")[2])
+
+
+def test_unless_after_a_negation_is_its_guard_not_a_condition():
+    """Near miss: "do not X unless Y" is the negation's guard, judged with the negation."""
+    found = read("Do not put the apple in the fridge unless the mug is in the sink.")[2]
+    assert not any("(condition)" in u for u in found)

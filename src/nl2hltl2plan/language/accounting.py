@@ -344,6 +344,8 @@ def _words(
             unread = _count(instruction, toks, i, cats, mentions, parse, instances, scene)
         elif "repetition" in cats:
             unread = Unread(w, "count", "no base task is done more than once: say each time as its own task")
+        elif "condition" in cats and guard is None and not _after_negation(instruction, toks[i]):
+            unread = Unread(w, "condition", "no base task waits on a condition: say what to do")
         if unread is not None:
             out.append(unread)
     return out
@@ -361,6 +363,12 @@ def _locative_word(
         return False
     clause = _clause_span(instruction, toks[i][1])
     return any(clause[0] <= m.char_start < toks[j][1] for m in mentions)
+
+
+def _after_negation(instruction: str, tok: tuple[str, int, int]) -> bool:
+    """Does a negation come before the word in its sentence ("do not X unless Y": the negation's guard)?"""
+    start = max((m.end() for m in re.finditer(r"[.;!?]", instruction[: tok[1]])), default=0)
+    return any("negation" in categories(w) for w, _, _ in tokens(instruction[start : tok[1]]))
 
 
 def _free_order(instruction: str, tok: tuple[str, int, int]) -> bool:
