@@ -380,3 +380,15 @@ def test_unless_after_a_negation_is_its_guard_not_a_condition():
     """Near miss: "do not X unless Y" is the negation's guard, judged with the negation."""
     found = read("Do not put the apple in the fridge unless the mug is in the sink.")[2]
     assert not any("(condition)" in u for u in found)
+
+
+# ----- "the other mug" is another mug ------------------------------------------------------------------
+def test_the_other_mug_is_another_task():
+    """Before: "put a mug in the sink then the other mug in the cabinet" was one mug washed and put away."""
+    tasks, order, unread = read("put a mug in the sink then the other mug in the cabinet")
+    assert tasks == ["place Mug -> SinkBasin", "place Mug -> Cabinet"] and not unread
+
+
+def test_then_a_place_is_still_a_further_destination():
+    """Near miss: "put the mug in the sink, then in the cabinet" is one mug, washed on the way."""
+    assert read("put the mug in the sink, then in the cabinet")[0] == ["clean_place Mug -> Cabinet"]

@@ -354,7 +354,9 @@ def _placed(d: Draft) -> bool:
 
 
 def _indefinite(o: NP) -> bool:
-    return o.text.split()[:1] in (["a"], ["an"], ["another"])
+    """ "a tomato", "another mug", "the other mug": a referent other than the one before."""
+    words = o.text.lower().split()
+    return words[:1] in (["a"], ["an"], ["another"]) or words[:2] == ["the", "other"]
 
 
 def _restates(fr: Frame, it: Item) -> bool:
