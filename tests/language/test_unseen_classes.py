@@ -266,6 +266,7 @@ def test_first_then_but_before_that_is_not_a_contradiction():
         "grab the apple and the tomato and put them in the fridge",
         "grab the apple and the tomato and put both in the fridge",
         "Pick up the apple and the tomato, and put them both in the fridge.",
+        "take the apple and the tomato and leave them in the fridge",
     ],
 )
 def test_a_plural_pronoun_after_a_taken_list_is_the_list(text):

@@ -194,7 +194,7 @@ _LATER_WORD = re.compile(r"\b(?:then|finally|lastly|after\s+that|afterwards?|nex
 # "put the apple and the tomato in the fridge" (each one a task, as a listed object is)
 _TAKE_LIST_THEN_PUT = re.compile(
     r"\b(?:grab|take|pick\s+up|get|collect|gather|fetch)\s+(?P<objs>[^,.;!?]+?\s+and\s+[^,.;!?]+?)\s*,?\s+"
-    r"(?:and\s+)?(?:then\s+)?(?P<verb>put|place|set|move|bring|carry|throw|drop|take)\s+"
+    r"(?:and\s+)?(?:then\s+)?(?P<verb>put|place|set|move|bring|carry|throw|drop|take|leave|store|stack|return)\s+"
     r"(?:them(?:\s+(?:both|all))?|both(?:\s+of\s+them)?|all\s+of\s+them)\s+"
     r"(?=(?:in|into|on|onto|to|inside|away|back|down)\b)",
     re.IGNORECASE,
