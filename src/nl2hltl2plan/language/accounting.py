@@ -42,6 +42,7 @@ from nl2hltl2plan.language.grounding import (
     lookup,
     tokens,
 )
+from nl2hltl2plan.language.landmarks import NEAR_WORDS, landmark_destinations, pair_start
 from nl2hltl2plan.language.negations import unforbidden_verb
 from nl2hltl2plan.language.parse_usage import IMPLIED_TYPES, ParseUsage
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, ConstraintSpec
@@ -93,6 +94,7 @@ def account(
     in_mention = {i for m in mentions for i in range(m.start, m.end)}
     out = _nouns(instruction, mentions, toks, parse)
     out += _invented(mentions, toks, parse)
+    out += landmark_destinations(mentions, toks, parse)
     out += _invented_kinds(toks, mentions, parse)
     out += _words(instruction, toks, in_mention, mentions, parse, instances, scene)
     out += _orders(toks, {i for i, t in enumerate(toks) if parse.constraint_at(t[1])} | in_mention, parse)
@@ -153,10 +155,12 @@ def _nouns(
     implied, implied_words = parse.implied(), parse.implied_words()
     slots = parse.slots()
     groups: dict[frozenset[str], list[list[Mention]]] = {}
+    implied_places: list[Mention] = []  # "the refrigerator" of a cooling task: still a place the task uses
     for phrase in _phrases(mentions, toks):
         if any(
             m.entry.canonical in implied or m.surface.lower().split()[-1] in implied_words for m in phrase
         ):
+            implied_places += phrase
             continue
         groups.setdefault(frozenset(m.entry.canonical for m in phrase), []).append(phrase)
     # A phrase whose head's own type fills the slot ("coffee table" -> CoffeeTable) is matched before one
@@ -179,7 +183,7 @@ def _nouns(
     out = []
     objects = {t for _, role, st in slots if role == "object" for t in st}
     for key, phrases in groups.items():
-        if key in matched or all(_locative(instruction, p[0], toks, places) for p in phrases):
+        if key in matched or all(_locative(instruction, p[0], toks, places, implied_places) for p in phrases):
             continue
         first = phrases[0][-1]
         what = "object" if any(t in objects for t in first.entry.types) else "place"
@@ -189,11 +193,20 @@ def _nouns(
     return out
 
 
-def _locative(instruction: str, m: Mention, toks: list[tuple[str, int, int]], places: list[Mention]) -> bool:
+def _locative(
+    instruction: str,
+    m: Mention,
+    toks: list[tuple[str, int, int]],
+    places: list[Mention],
+    implied: list[Mention],
+) -> bool:
     """A place named only to say where something is: "from the counter", or, next to the place the
-    task uses in the same clause, "the drawer by the stove", "the lamp on the desk"."""
-    i = m.start - 1
-    while i >= 0 and m.start - i <= 4 and (toks[i][0] in DETERMINERS or not categories(toks[i][0])):
+    task uses in the same clause, "the drawer by the stove", "the lamp on the desk", "between the sink
+    and the stove"; after "next to" / "by" / "between", the place may be one a treatment implies ("next to
+    the lettuce in the refrigerator" of a cooled apple)."""
+    start = pair_start(toks, m.start)  # the second place of "between A and B" is read as A is
+    i = start - 1
+    while i >= 0 and start - i <= 4 and (toks[i][0] in DETERMINERS or not categories(toks[i][0])):
         if toks[i][0] in LOCATIVE:
             break
         i -= 1
@@ -206,10 +219,11 @@ def _locative(instruction: str, m: Mention, toks: list[tuple[str, int, int]], pl
         first -= 1  # "from in between the sink and ...", "out of", "from under the bed": where it is
     if toks[first][0] in ("from", "off", "out"):
         return True
-    clause = _clause_span(instruction, m.char_start)
+    clause = _clause_span(instruction, toks[start][1])
     if any("verb_take" in categories(w) for w, s, _ in toks if clause[0] <= s < clause[1]):
         return True
-    return any(clause[0] <= o.char_start < clause[1] and o.start != m.start for o in places)
+    near = places + implied if toks[i][0] in NEAR_WORDS else places
+    return any(clause[0] <= o.char_start < clause[1] and o.start not in (m.start, start) for o in near)
 
 
 def _walked_to(toks: list[tuple[str, int, int]], start: int) -> bool:
@@ -281,12 +295,17 @@ def _misspelt(words: list[str], types: frozenset[str]) -> bool:
 
 
 def _next_mention(mentions: list[Mention], words: list[str], i: int, within: int = 3) -> Mention | None:
-    """The noun a count word counts: the next mention, with only non-content words between."""
+    """The noun a count word counts: the next mention, with only non-content words between, and no
+    preposition ("put both in the fridge": "both" counts what was named before, not fridges)."""
     for m in mentions:
         if i < m.start <= i + within:
             between = words[i + 1 : m.start]
-            return m if all(w in DETERMINERS or not categories(w) for w in between) else None
+            counted = all(w in DETERMINERS or not categories(w) for w in between)
+            return m if counted and not set(between) & _PLACE_PREPS else None
     return None
+
+
+_PLACE_PREPS = (LOCATIVE - {"of"}) | {"to", "into", "onto"}
 
 
 def _words(
@@ -323,6 +342,10 @@ def _words(
             unread = Unread(w, "negation", NO_CONSTRAINT)
         elif _count_value(cats, w) is not None or cats & {"quantifier_all", "quantifier_vague"}:
             unread = _count(instruction, toks, i, cats, mentions, parse, instances, scene)
+        elif "repetition" in cats:
+            unread = Unread(w, "count", "no base task is done more than once: say each time as its own task")
+        elif "condition" in cats and guard is None and not _after_negation(instruction, toks[i]):
+            unread = Unread(w, "condition", "no base task waits on a condition: say what to do")
         if unread is not None:
             out.append(unread)
     return out
@@ -340,6 +363,12 @@ def _locative_word(
         return False
     clause = _clause_span(instruction, toks[i][1])
     return any(clause[0] <= m.char_start < toks[j][1] for m in mentions)
+
+
+def _after_negation(instruction: str, tok: tuple[str, int, int]) -> bool:
+    """Does a negation come before the word in its sentence ("do not X unless Y": the negation's guard)?"""
+    start = max((m.end() for m in re.finditer(r"[.;!?]", instruction[: tok[1]])), default=0)
+    return any("negation" in categories(w) for w, _, _ in tokens(instruction[start : tok[1]]))
 
 
 def _free_order(instruction: str, tok: tuple[str, int, int]) -> bool:
@@ -475,6 +504,7 @@ def _orders(toks: list[tuple[str, int, int]], in_mention: set[int], parse: Parse
     ]  # "next to the sink" names a place, not a step
     text = " ".join(plain)
     words += [p for p in ("in that order", "in this order") if f" {p} " in f" {text} "]
+    words += [p for p in ("at the end", "in the end") if re.search(rf"\b{p}\b(?! of\b)", text)]
     free = any("any_order" in c for c in cats)
     if not words or len(parse.tasks) < 2 or parse.before or free:
         return []

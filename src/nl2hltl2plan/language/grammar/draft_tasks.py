@@ -157,6 +157,24 @@ class TaskBuilder:
             out[role] = types
         return out
 
+    def can_hold(self, containers: list[str] | None, objects: list[str], sliced: bool) -> bool:
+        """Can one of the container types hold one of the object types? Not itself ("the mug in the mug"),
+        nor what its affordances say it does not accept (a mug holds utensils, not an apple); unknown
+        types can."""
+        cont = containers or []
+        if set(cont) & set(objects):
+            return False
+        look = self.look
+        if look is None:
+            return True
+        for c in cont:
+            a = look(c)
+            if a is None or any(
+                look(o) is None or o in a.accepts or (sliced and o + "Sliced" in a.accepts) for o in objects
+            ):
+                return True
+        return not cont
+
     # one draft -> BaseTaskSpec ------------------------------------------------------------------------
     def spec(self, d: Draft, text: str) -> BaseTaskSpec | None:
         """The base task a draft states, or None (with the reason in `unparsed`) when it states none."""
@@ -192,6 +210,12 @@ class TaskBuilder:
         )
         if fields is None or fields["object"] is None:
             self.unparsed.append(f"no object of the scene named in: {text}")
+            return None
+        held_in = fields["container"] if kind == "place_in_container" else None
+        if held_in is not None and not self.can_hold(held_in, fields["object"], r.sliced):
+            # "put the mug and the apple in the sink": two things to move, not an apple inside a mug
+            held, holder = "/".join(fields["object"]), "/".join(held_in)
+            self.unparsed.append(f"a {holder} cannot hold a {held} in: {text}")
             return None
         return BaseTaskSpec(
             kind=kind,

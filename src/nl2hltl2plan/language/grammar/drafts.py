@@ -10,6 +10,7 @@ from nl2hltl2plan.language.grammar.clauses import Clause, expand_gapping, split_
 from nl2hltl2plan.language.grammar.draft_tasks import Draft, TaskBuilder, Unit
 from nl2hltl2plan.language.grammar.frames import (
     IN_SENTENCE,
+    OF_ALL,
     Frame,
     Item,
     dest_of,
@@ -121,6 +122,9 @@ class DraftBuilder:
             return True
         if fr.ambiguous:
             unparsed.append(f"{c_text} (a list of destinations)")
+            return True
+        if fr.choice:
+            unparsed.append(f"{c_text} (a choice between objects: say which one)")
             return True
         if fr.cls == "light" and not any(
             (it.obj is not None and it.obj.is_lamp()) or any(np.is_lamp() for _, np in it.pps)
@@ -249,8 +253,10 @@ class DraftBuilder:
             ):
                 pass
             else:
+                # "put the apple in the fridge last": after every other task, those written after it too
+                of_all = kind == G.FINALLY and len(sentence_units) == 1
                 for u in sentence_units:
-                    u.markers.append((kind, ref))
+                    u.markers.append((kind, OF_ALL if of_all else ref))
 
 
 def _continues(d: Draft, fr: Frame, it: Item, joiner: str) -> bool:
@@ -348,7 +354,9 @@ def _placed(d: Draft) -> bool:
 
 
 def _indefinite(o: NP) -> bool:
-    return o.text.split()[:1] in (["a"], ["an"], ["another"])
+    """ "a tomato", "another mug", "the other mug": a referent other than the one before."""
+    words = o.text.lower().split()
+    return words[:1] in (["a"], ["an"], ["another"]) or words[:2] == ["the", "other"]
 
 
 def _restates(fr: Frame, it: Item) -> bool:
@@ -409,5 +417,9 @@ def merge_items(items: list[Item], b: TaskBuilder) -> list[Item]:
         return [Item(obj=xo, pps=dests or x.pps)]
     if xo.is_movable_receptacle() != yo.is_movable_receptacle():
         cont, content = (xo, yo) if xo.is_movable_receptacle() else (yo, xo)
-        return [Item(obj=content, pps=[("containing", cont), *dests])]
+        assert cont.entry is not None and content.entry is not None
+        # "the pan and the knife": the knife in the pan; "the mug and the apple": two things (a mug holds
+        # no apple)
+        if b.g is None or b.can_hold(b.g.resolve(cont.entry), b.g.resolve(content.entry), content.sliced):
+            return [Item(obj=content, pps=[("containing", cont), *dests])]
     return items

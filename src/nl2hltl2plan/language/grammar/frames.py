@@ -28,10 +28,12 @@ class Frame:
     light_on: bool = False  # "turn ... on/off"
     joiner: str = ""  # word that joined it to the previous clause ("then", "and", "to", ...)
     ambiguous: bool = False  # a list the parser cannot assign (several destinations)
+    choice: bool = False  # objects joined by "or" ("the apple or the tomato"): which one is not said
 
 
 SEQ_WORDS = {"then", "finally", "lastly", "afterwards", "afterward", "later"}  # not "next": "next to"
 IN_SENTENCE = "in sentence"  # a "finally" that joins clauses of one sentence
+OF_ALL = "of all"  # a "last" / "at the end" that ends a one-task sentence: after every other task
 THEN_TO = "then to"  # a further destination after a stop ("to the sink and finally the toilet")
 
 
@@ -39,7 +41,8 @@ def parse_frame(text: str, start: int = 0, joiner: str = "") -> Frame:
     """One clause -> its verb class, verb and items (each an object with its prepositional phrases)."""
     toks = tokens(text)
     cls, verb, i, light_on = _read_verb([w for w, _, _ in toks])
-    items = _ItemReader(text, toks, cls, light_on).read(i)
+    reader = _ItemReader(text, toks, cls, light_on)
+    items = reader.read(i)
     _join_further_destinations(items)
     # "to region G, H and I": bare noun phrases after an item with a destination continue that destination
     ambiguous = len(items) > 1 and items[-1].obj is not None and not items[-1].pps and bool(items[-2].pps)
@@ -54,6 +57,7 @@ def parse_frame(text: str, start: int = 0, joiner: str = "") -> Frame:
         light_on=light_on,
         joiner=joiner,
         ambiguous=ambiguous,
+        choice=reader.choice and len(items) > 1,
     )
 
 
@@ -99,6 +103,7 @@ class _ItemReader:
     cur: list[tuple[str, int, int]] = field(default_factory=list)  # the words of the current noun phrase
     cur_prep: str | None = None
     source_pair: bool = False  # after "from between": the next "and" joins two places, not two items
+    choice: bool = False  # an "or" started a new item
 
     def read(self, i: int) -> list[Item]:
         words = [w for w, _, _ in self.toks]
@@ -140,11 +145,12 @@ class _ItemReader:
             hit = match_prep(words, i + 1)
             self.cur_prep = THEN_TO
             return i + 1 + (hit[1] if hit is not None and hit[0] in G.DEST_PREPS else 0)
-        if w == "and" and self.cur_prep == "from" and self.source_pair:
+        if w == "and" and self.cur_prep in {"from", "between", "in between"} and self.source_pair:
             self._flush()  # "from between the sink and the toilet": both say where it is
             self.source_pair = False
             return i + 1
         if w in {",", "and"} or (w == "or" and self.cur_prep is None):
+            self.choice = self.choice or w == "or"
             self._flush()
             # a new list item starts when the next words are a noun phrase without preposition
             nxt = words[i + 1] if i + 1 < len(words) else ""
@@ -165,6 +171,11 @@ class _ItemReader:
             return i + hit[1]
         if hit is not None and not (hit[0] == "of" and self.cur):
             self._flush()
+            # "in the fridge between the lettuce and the potato": after a destination, the pair says where
+            # in it, not two more destinations
+            self.source_pair = hit[0] in {"between", "in between"} and any(
+                p in G.DEST_PREPS and p not in {"between", "in between"} for p, _ in self.item.pps
+            )
             self.cur_prep = hit[0]
             return i + hit[1]
         self.cur.append(self.toks[i])

@@ -8,7 +8,7 @@ import re
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.draft_tasks import TaskBuilder, Tasks, Unit
-from nl2hltl2plan.language.grammar.frames import IN_SENTENCE
+from nl2hltl2plan.language.grammar.frames import IN_SENTENCE, OF_ALL
 from nl2hltl2plan.language.grammar.phrases import parse_np
 from nl2hltl2plan.language.grammar.references import new_tasks_from_ref, ref_targets, self_state, stated_tasks
 from nl2hltl2plan.language.grammar.sentences import RelationSentence
@@ -45,21 +45,23 @@ def _marker_edges(k: int, tasks: Tasks, free: set[int], b: TaskBuilder, text: st
         prev = outer
     first_of_sentence = min(t for v in units if v.sentence == u.sentence for t in v.tasks)
     earlier = [t for t in range(len(tasks.specs)) if t < first_of_sentence]
+    others = [t for t in range(len(tasks.specs)) if t not in u.tasks]
     for kind, ref in u.markers:
         if kind == G.THEN and prev is not None:
             edges.update((a, b2) for a in prev.tasks for b2 in u.tasks)
         elif kind == G.FINALLY:
             # "..., and finally Y" inside a sentence: after its sibling clauses too
-            scope = list(range(min(u.tasks))) if ref == IN_SENTENCE else earlier
+            scope = list(range(min(u.tasks))) if ref == IN_SENTENCE else others if ref == OF_ALL else earlier
             edges.update((a, b2) for a in scope if a not in free for b2 in u.tasks)
-        elif kind == G.AFTER_ALL:
-            edges.update((a, b2) for a in earlier for b2 in u.tasks)
+        elif kind == G.AFTER_ALL:  # "once all that is done" / "once everything else is done" (all others)
+            scope = others if re.search(r"\b(?:else|other)\b", ref, re.I) else earlier
+            edges.update((a, b2) for a in scope for b2 in u.tasks)
         elif kind == G.BEFORE_PREV and outer is not None:  # "X. Before that, Y, then Z": Y, Z before X
             edges.update((b2, a) for a in outer.tasks for b2 in u.tasks)
         elif kind == G.IN_ORDER:  # "..., in that order": each named task after the one named before it
             own = sorted(t for v in units if v.sentence == u.sentence for t in v.tasks)
             edges.update(zip(own, own[1:], strict=False))
-        elif kind == G.AFTER_REF and (named := by_position(ref, earlier, prev)) is not None:
+        elif kind == G.AFTER_REF and (named := by_position(ref, earlier, prev, others)) is not None:
             edges.update((a, b2) for a in named for b2 in u.tasks)
         elif kind in {G.AFTER_REF, G.BEFORE_REF}:
             _ref_edges(kind == G.AFTER_REF, ref, u, tasks, b, text, edges)
@@ -67,12 +69,15 @@ def _marker_edges(k: int, tasks: Tasks, free: set[int], b: TaskBuilder, text: st
         edges.update((a, b2) for a in seq_prev.tasks for b2 in u.tasks)
 
 
-def by_position(ref: str, earlier: list[int], prev: Unit | None) -> list[int] | None:
+def by_position(ref: str, earlier: list[int], prev: Unit | None, others: list[int]) -> list[int] | None:
     """The tasks a reference by position names ("the first tasks", "the previous task", "everything
-    else": `G.GENERIC_REF`); None when it names tasks another way (by their objects)."""
+    else": `G.GENERIC_REF`); None when it names tasks another way (by their objects). "Everything else" /
+    "the other tasks" are all `others`, those written after it too."""
     m = G.GENERIC_REF.match(_normal(ref))
     if m is None:
         return None
+    if re.search(r"\b(?:else|other)\b", ref, re.I):
+        return others
     which, noun = (m.groupdict().get("which") or "").lower(), (m.groupdict().get("noun") or "").lower()
     singular = bool(noun) and not noun.endswith("s")
     if singular and which in G.ORDINALS:

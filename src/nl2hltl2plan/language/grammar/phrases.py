@@ -171,7 +171,9 @@ def parse_np(text: str) -> NP:
         all(w in G.PRONOUNS | DETERMINERS for w in words) and any(w in G.PRONOUNS for w in words)
     ):
         np.pronoun = any(w in G.PRONOUNS for w in words) or not content
-    _read_modifiers(np, words)
+    # "put a fork in the mug, move both to the counter": a bare "both" names the things already said
+    # (the fork and the mug), not a second fork
+    _read_modifiers(np, [w for w in words if w != "both"] if not content else words)
     real = [m for m in mentions if not m.entry.generic]
     if real:
         # the head is the first mention unless it is followed by "of" + another ("bar of soap" is one entry)

@@ -84,7 +84,7 @@ def strip_leading(body: str) -> tuple[list[tuple[str, str]], str]:
         for pat, kind in G.LEADING:
             m = pat.match(body)
             if m and m.end() > 0:
-                ref = m.groupdict().get("ref") or ""
+                ref = m.groupdict().get("ref") or (m.group(0) if kind == G.AFTER_ALL else "")
                 if kind:
                     markers.append((kind, ref))
                 body = body[m.end() :]
@@ -119,6 +119,16 @@ def relation_sentence(body: str) -> RelationSentence | None:
     if rel and not any(w in G.VERBS for w, _, _ in tokens(rel.group("a"))[:1]):
         return RelationSentence(rel.group("rel").lower(), rel.group("a"), rel.group("b"))
     return None
+
+
+# "Y after you to heat X" (a clause written as an infinitive, "To heat X.", put after a connective): the
+# "to" is the clause's own, "after you heat X"
+_CONNECTIVE_TO = re.compile(r"\b(after|before|until|once|when)\s+(you\s+)?to\s+(?=[a-z])", re.I)
+
+
+def without_connective_to(text: str) -> str:
+    """ "Y after you to heat X" -> "Y after you heat X" (the structure model reads it so too)."""
+    return _CONNECTIVE_TO.sub(lambda m: f"{m.group(1)} {m.group(2) or ''}", text)
 
 
 _UNTIL = re.compile(r"\b([Dd])(?:o not|on't) ([^.;!?]+?) until (?:you )?([^.;!?]+)")
@@ -158,6 +168,41 @@ _USE_LAMP = re.compile(
     r"(?P<obj>[^,.;!?]+?)(?=[,.;!?]|\s+(?:and|then)\b|$)",
     re.IGNORECASE,
 )
+# "cool some bread and the place it on the counter", "put two apples on a counter the cut them": "the"
+# typed for "then" (a verb and "it"/"them" follow it, so it opens no noun phrase)
+_THE_FOR_THEN = re.compile(r"\b(?<!of )the (?=([a-z]+) (?:it|them)\b)", re.IGNORECASE)
+# "X, but before you do that, Y" / "X, but first Y" inside a sentence: Y comes first ("Before that, Y.")
+_BUT_BEFORE = re.compile(
+    r"(?<=\w)\s*,?\s+but\s+(?:before\s+(?:that|this|(?:you\s+do|doing)\s+(?:that|this|so|it))|first)\s*,?\s+(?=[a-z])",
+    re.IGNORECASE,
+)
+_FIRST_OPENER = re.compile(r"^\s*(?:first|firstly|start|begin|to\s+(?:start|begin))\b", re.IGNORECASE)
+
+
+def _keeps_but_first(text: str, m: re.Match[str]) -> bool:
+    """Is "but first" better left to the sentence's other order words: the sentence opens with "first" /
+    "start by", or goes on with "then" / "finally" after it (the structure model reads those whole)?"""
+    start = max((x.end() for x in re.finditer(r"[.;!?]", text[: m.start()])), default=0)
+    rest = re.split(r"[.;!?]", text[m.end() :], maxsplit=1)[0]
+    return _FIRST_OPENER.match(text[start : m.start()]) is not None or _LATER_WORD.search(rest) is not None
+
+
+_LATER_WORD = re.compile(r"\b(?:then|finally|lastly|after\s+that|afterwards?|next)\b", re.IGNORECASE)
+
+
+# "grab the apple and the tomato and put them (both) in the fridge": the plural pronoun is the list, so
+# "put the apple and the tomato in the fridge" (each one a task, as a listed object is)
+_TAKE_LIST_THEN_PUT = re.compile(
+    r"\b(?:grab|take|pick\s+up|get|collect|gather|fetch)\s+(?P<objs>[^,.;!?]+?\s+and\s+[^,.;!?]+?)\s*,?\s+"
+    r"(?:and\s+)?(?:then\s+)?(?P<verb>put|place|set|move|bring|carry|throw|drop|take|leave|store|stack|return)\s+"
+    r"(?:them(?:\s+(?:both|all))?|both(?:\s+of\s+them)?|all\s+of\s+them)\s+"
+    r"(?=(?:in|into|on|onto|to|inside|away|back|down)\b)",
+    re.IGNORECASE,
+)
+# "examine the box using the light from a floor lamp": the light of that lamp
+_LIGHT_FROM = re.compile(r"\blight from (?=(?:the |a |an )?(?:[a-z]+ )?(?:lamp|light)\b)", re.IGNORECASE)
+# "a rinse off bar of soap", "the rinse soap": the rinsed one (ALFRED's annotators' adjective)
+_RINSE_ADJ = re.compile(r"\b(a|an|the)\s+rinse(?:\s+off)?\s+(?=[a-z])", re.IGNORECASE)
 # "put X in A, and once that's done put Y in B" / "... and when you're done put Y ...": inside a
 # sentence, the same as "then" (at its start the leading markers read it)
 _DONE_INSIDE = re.compile(
@@ -187,6 +232,13 @@ _SHELF_OF = re.compile(
 )
 _STATE_ALT = "|".join(sorted(G.STATE_WORDS))
 _STATES_LISTED = re.compile(rf"\b({_STATE_ALT}),\s+(?=(?:{_STATE_ALT})\b)", re.IGNORECASE)
+# "a chilled and sliced tomato", "put washed and dried mugs ...": after an article or a placing verb, two
+# states joined by "and" describe one noun ("cut and cool the apple" stays two verbs)
+_STATES_JOINED = re.compile(
+    rf"\b((?:a|an|the|some|two|put|place|set|move|bring|take)\s+(?:{_STATE_ALT}))\s+and\s+"
+    rf"(?=(?:{_STATE_ALT}|dried)\s+[a-z])",
+    re.IGNORECASE,
+)
 
 
 def normalize(text: str) -> str:
@@ -194,13 +246,20 @@ def normalize(text: str) -> str:
     text = text.replace("\u2019", "'").replace("\u2018", "'").replace("\u201c", '"').replace("\u201d", '"')
     text = re.sub(r"(?<=[a-z])\.(?=[A-Za-z])", ". ", text)
     text = re.sub(r"\s*\([^)]*\)", "", text)  # parenthetical remarks: "(where the red block is now)"
+    text = without_connective_to(text)
     # "Do not Y until (you) X" states the order of "After X, Y" (ANNOTATION_GUIDE.md)
     text = _UNTIL.sub(lambda m: f"{'A' if m.group(1) == 'D' else 'a'}fter {m.group(3)}, {m.group(2)}", text)
     text = _STATES_LISTED.sub(r"\1 ", text)  # "a chilled, cut slice": one noun phrase, not two clauses
+    text = _STATES_JOINED.sub(r"\1 ", text)
     text = _OFF.sub(r"\1", text)  # "a rinsed off knife", "cool off a plate": the state, not a direction
     text = _BACK.sub(r", then back \1", text)  # "put it in the fridge, back in the microwave": a sequence
     text = _HAS_IN_IT.sub("with ", text)
     text = _SHELF_OF.sub("", text)
+    text = _TAKE_LIST_THEN_PUT.sub(lambda m: f"{m['verb']} {m['objs']} ", text)
+    text = _BUT_BEFORE.sub(lambda m: m.group(0) if _keeps_but_first(text, m) else ". Before that, ", text)
+    text = _THE_FOR_THEN.sub(lambda m: "then " if m.group(1).lower() in G.VERBS else m.group(0), text)
+    text = _LIGHT_FROM.sub("light of ", text)
+    text = _RINSE_ADJ.sub(r"\1 rinsed ", text)
     text = _USE_LAMP.sub(lambda m: f"{m['verb']} {m['obj']} by the light of the {m['lamp']}", text)
     text = _FOLLOWED_TO.sub(r" and finally \1", text)
     text = _DONE_GERUND.sub(r"\1 ", text)

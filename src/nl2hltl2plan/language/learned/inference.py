@@ -23,6 +23,7 @@ from nl2hltl2plan.errors import Nl2Hltl2PlanError, WorldError
 from nl2hltl2plan.language.accounting import account
 from nl2hltl2plan.language.grammar import OfflineParse
 from nl2hltl2plan.language.grammar import parse_instruction as grammar_parse
+from nl2hltl2plan.language.grammar.sentences import without_connective_to
 from nl2hltl2plan.language.grounding import AffordanceLookup, find_mentions
 from nl2hltl2plan.language.learned.ranker import TypeRanker
 from nl2hltl2plan.language.learned.rescue import rewrite
@@ -306,7 +307,7 @@ def structure_reading(
 ) -> tuple[LearnedParse, float] | None:
     """The structure model's spans, each read by the grammar + slot model; None when a span does not
     read completely or the whole does not pass the word accounting."""
-    reading = structure.read(instruction)
+    reading = structure.read(without_connective_to(instruction))
     if not reading.spans:
         return None
     parsed, ambiguities = [], []

@@ -1,0 +1,78 @@
+"""Landmarks for check 1 (`accounting`): places named only to say where something goes *near*.
+
+"Put the mug next to the microwave" names no destination: the microwave is a landmark. A reading that
+puts the mug *in* the microwave (a model's guess, or a heating task its appliance seems to name) uses
+the word for something the text does not say, so check 1 names it. "Put the mug on the counter next to
+the microwave" is fine: the counter is the destination, the microwave where on it.
+"""
+
+from __future__ import annotations
+
+from nl2hltl2plan.language.content_words import DETERMINERS, Unread, stems, verb_places
+from nl2hltl2plan.language.grounding import Mention
+from nl2hltl2plan.language.parse_usage import ParseUsage
+
+# the words before a place that make it a landmark ("next to", "beside", "to the left of")
+NEAR_WORDS = frozenset("near beside besides by next between behind against".split())
+_NEAR_TWO = {
+    ("next", "to"), ("close", "to"), ("near", "to"), ("front", "of"), ("left", "of"), ("right", "of"),
+}  # fmt: skip
+
+
+def near_word_before(toks: list[tuple[str, int, int]], start: int) -> bool:
+    """Is the place whose first word is at `start` introduced by a word of nearness ("next to the", "by
+    a", "to the left of the")?"""
+    j = start - 1
+    while j >= 0 and toks[j][0] in DETERMINERS:
+        j -= 1
+    if j < 0:
+        return False
+    if toks[j][0] in NEAR_WORDS - {"next"}:
+        return True
+    return j >= 1 and (toks[j - 1][0], toks[j][0]) in _NEAR_TWO
+
+
+def landmark_destinations(
+    mentions: list[Mention], toks: list[tuple[str, int, int]], parse: ParseUsage
+) -> list[Unread]:
+    """Destinations (receptacle slots) that the instruction names only as landmarks (a verb that names
+    the place, "refrigerate the bread", names it as a destination)."""
+    in_mention = {i for m in mentions for i in range(m.start, m.end)}
+    places = verb_places()
+    by_verb = {
+        places[f] for i, (w, _, _) in enumerate(toks) if i not in in_mention for f in stems(w) if f in places
+    }
+    out = []
+    for task_id, role, types in parse.slots():
+        if role != "receptacle" or types & by_verb:
+            continue
+        naming = [m for m in mentions if types & set(m.entry.types) or m.entry.canonical in types]
+        if naming and all(near_word_before(toks, m.start) for m in naming):
+            m = naming[0]
+            out.append(
+                Unread(
+                    m.surface,
+                    "place",
+                    f"named only as a landmark, not as where task {task_id} puts it: say where (in, on ...)",
+                )
+            )
+    return out
+
+
+def pair_start(toks: list[tuple[str, int, int]], start: int) -> int:
+    """For the place whose first word is at `start`: the first word of the place before it when the two
+    are joined as "between the sink and the stove"; else `start`."""
+    j = start - 1
+    while j >= 0 and toks[j][0] in DETERMINERS:
+        j -= 1
+    if j < 2 or toks[j][0] != "and":
+        return start
+    k = j - 1
+    while k >= 0 and j - k <= 4 and toks[k][0] not in ("between", ",", "and"):
+        k -= 1
+    if k < 0 or toks[k][0] != "between":
+        return start
+    first = k + 1
+    while first < j - 1 and toks[first][0] in DETERMINERS:
+        first += 1
+    return first
