@@ -48,6 +48,7 @@ from nl2hltl2plan.planning.bounds import (
     spanning_walk,
 )
 from nl2hltl2plan.planning.carries import PathLegs, carry_total
+from nl2hltl2plan.planning.hands import hands_walk
 from nl2hltl2plan.planning.leaves import DONE, Leaf
 from nl2hltl2plan.planning.makespan import leaf_chains, makespan_bound
 from nl2hltl2plan.planning.navigation import INF
@@ -263,8 +264,9 @@ class Heuristic:
         if carry < 0:  # an object is held: the carries depend on where its holder stands
             carry = 0 if self.light else carry_total(self, node, pending.memo)
         walk = self._assignment(node, pending, carry) if rows else carry
-        if node.parent is None and not fixed and not self.light:  # once at the root (tour.py)
-            walk = max(walk, tour_walk(self, node, rows), chain_walk(self, node, rows))
+        if node.parent is None and not fixed and not self.light:  # once at the root (tour.py, hands.py)
+            walk = max(walk, tour_walk(self, node, rows), chain_walk(self, node, rows),
+                       hands_walk(self, node, rows))
         total = len(rows) + pending.extra_events + walk + pending.support
         if not self.makespan:
             return total, node.ms
