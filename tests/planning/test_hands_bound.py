@@ -17,7 +17,7 @@ from nl2hltl2plan.planning.hands import FREE, GIVE, TAKE, Stop, hand_forest
 def _two_carries(rule_take: int = TAKE, rule_give: int = GIVE) -> list[Stop]:
     """Two carries on a line: pick at 0..2, put at 30..32; pick at 3..5, put at 33..35."""
     spans = [(0, rule_take, 0), (30, rule_give, 0), (3, rule_take, 1), (33, rule_give, 1)]
-    return [Stop(np.arange(at, at + 3), rule, carry if rule != FREE else -1, (k,))
+    return [Stop(np.arange(at, at + 3), rule, carry if rule != FREE else -1, k)
             for k, (at, rule, carry) in enumerate(spans)]
 
 

@@ -44,12 +44,12 @@ FREE, TAKE, GIVE, EMPTY_TAKE = 0, 1, 2, 3  # a stop's hand rule: none, a carry's
 
 
 class Stop(NamedTuple):
-    """A kept event: the cells it may be done from, its hand rule, and its rows (for the orders)."""
+    """A kept event: the cells it may be done from, its hand rule, and its row (for the orders)."""
 
     cells: np.ndarray
     rule: int
     carry: int  # the carry it belongs to (TAKE, GIVE), else -1
-    rows: tuple[int, ...]
+    row: int
 
 
 def hands_walk(h: Heuristic, node: Node, rows: list[EventRow]) -> int:
@@ -84,7 +84,7 @@ def _stops(h: Heuristic, node: Node, rows: list[EventRow]) -> list[Stop]:
     stops: list[Stop] = []
     in_carry: set[int] = set()
     for c, (_, p, d, pick, put) in enumerate(carries[:MAX_CARRIES]):
-        stops += [Stop(pick, TAKE, c, (p,)), Stop(put, GIVE, c, (d,))]
+        stops += [Stop(pick, TAKE, c, p), Stop(put, GIVE, c, d)]
         in_carry |= {p, d}
     robot_cells = set(node.cell)
     if node.reach is not None:
@@ -103,7 +103,7 @@ def _stops(h: Heuristic, node: Node, rows: list[EventRow]) -> list[Stop]:
         as_set = set(here.tolist())
         if not taking and (robot_cells & as_set or any(set(s.cells.tolist()) <= as_set for s in stops)):
             continue  # free: a robot stands in it, or visiting a kept stop visits it
-        stops.append(Stop(here, EMPTY_TAKE if taking else FREE, -1, (i,)))
+        stops.append(Stop(here, EMPTY_TAKE if taking else FREE, -1, i))
     return stops
 
 
@@ -113,7 +113,7 @@ def _successors(h: Heuristic, rows: list[EventRow], stops: list[Stop]) -> list[i
     for a in stops:
         bits = 0
         for k, b in enumerate(stops):
-            ra, rb = rows[a.rows[0]], rows[b.rows[0]]
+            ra, rb = rows[a.row], rows[b.row]
             if (ra.leaf == rb.leaf and ra.pos < rb.pos) or h.after[ra.leaf, rb.leaf]:
                 bits |= 1 << k
         out.append(bits)

@@ -21,8 +21,10 @@ bounds on the walking (`bounds.py`: the carries, binding-consistent, plus the pi
 a spanning tree from the robots) and the pickups' approach and carry as one walk through one cell
 of the object's region are computed beside it and the largest is kept; every support open that every
 completion needs adds 1 (also one per event, of a family with disjoint openables, whose every
-candidate is closed in). At the root, two cell-level bounds on the walking join them (`tour.py`:
-paths out of the robots through the events' regions; events in their time order), and the bound is
+candidate is closed in), and one open after a forced close of the microwave when the heated object
+is then taken out. At the root, three cell-level bounds on the walking join them (`tour.py`: paths
+out of the robots through the events' regions; events in their time order; `hands.py`: such paths
+with one object in a hand at a time), and the bound is
 minimised over the instance choices as well (`bounds.least_over_bindings`).
 
 Completion time (`minmax`): `makespan.py`, from the same pending events (`relax.EventRow`); the
