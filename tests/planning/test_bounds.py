@@ -209,9 +209,10 @@ def test_an_instance_no_cell_can_reach_leaves_the_bound_finite():
     assert r.solved and r.proven_optimal and 0 < bound <= r.total_cost
 
 
-def test_the_microwave_must_be_closed_to_heat_once_for_two_tasks():
-    # the heat recipe puts the object in (the microwave is open then) and switches it on: one
-    # support close is forced, and one serves two heat tasks; the bound stays below the optimum
+def test_the_microwave_must_be_closed_to_heat_and_opened_again_once_for_two_tasks():
+    # the heat recipe puts the object in (the microwave is open then), switches it on and takes the
+    # object out: one support close and the open after it are forced, and they serve two heat tasks
+    # (both objects heated at once); the bound stays below the optimum
     from nl2hltl2plan.planning.opens import forced_closes
     from nl2hltl2plan.worlds.demo import demo_world
 
@@ -219,14 +220,18 @@ def test_the_microwave_must_be_closed_to_heat_once_for_two_tasks():
     heat = {"id": "A", "kind": "heat_place", "object": ["Apple"], "receptacle": ["DiningTable"]}
     heat2 = {"id": "B", "kind": "heat_place", "object": ["Mug"], "receptacle": ["CounterTop"]}
     cool = {"id": "C", "kind": "cool_place", "object": ["Tomato"], "receptacle": ["CounterTop"]}
-    for tasks, closes in (([heat], 1), ([heat, heat2], 1), ([cool], 0)):
+    for tasks, closes in (([heat], 2), ([heat, heat2], 2), ([cool], 0)):
         inst = gt(tasks)
         x, h = _setup(world, inst, [(0, 0)])
         assert forced_closes(x, h.required, x.root()) == closes
-    inst = gt([heat])
-    x, h = _setup(world, inst, [(0, 0)])
-    r = plan(world, oracle_spec(inst, world).spec, [(0, 0)], mode="exact")
-    assert r.proven_optimal and h.evaluate(x.root())[0] <= r.total_cost
+    for tasks in ([heat], [heat, heat2]):
+        inst = gt(tasks)
+        x, h = _setup(world, inst, [(0, 0)])
+        r = plan(world, oracle_spec(inst, world).spec, [(0, 0)], mode="exact")
+        assert r.proven_optimal and h.evaluate(x.root())[0] <= r.total_cost
+        # the optimal plan closes the microwave once and opens it twice (in, then out)
+        support = [e.atom for e in r.events if e.atom in ("open(Microwave)", "close(Microwave)")]
+        assert sorted(support) == ["close(Microwave)", "open(Microwave)", "open(Microwave)"]
 
 
 def test_spanning_walk_reads_each_pair_by_its_shorter_direction():

@@ -65,6 +65,7 @@ def test_a_chain_of_overlapping_regions_is_walked_cell_by_cell(monkeypatch):
     assert _root_bound(world, inst, [(0, 0)]) == 34
     monkeypatch.setattr(heuristic, "tour_walk", lambda *args: 0)
     monkeypatch.setattr(heuristic, "chain_walk", lambda *args: 0)  # one leaf's chain walks to 30 too
+    monkeypatch.setattr(heuristic, "hands_walk", lambda *args: 0)  # and the hands' walk (hands.py)
     assert _root_bound(world, inst, [(0, 0)]) == 22
 
 

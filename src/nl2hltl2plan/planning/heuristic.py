@@ -21,8 +21,10 @@ bounds on the walking (`bounds.py`: the carries, binding-consistent, plus the pi
 a spanning tree from the robots) and the pickups' approach and carry as one walk through one cell
 of the object's region are computed beside it and the largest is kept; every support open that every
 completion needs adds 1 (also one per event, of a family with disjoint openables, whose every
-candidate is closed in). At the root, two cell-level bounds on the walking join them (`tour.py`:
-paths out of the robots through the events' regions; events in their time order), and the bound is
+candidate is closed in), and one open after a forced close of the microwave when the heated object
+is then taken out. At the root, three cell-level bounds on the walking join them (`tour.py`: paths
+out of the robots through the events' regions; events in their time order; `hands.py`: such paths
+with one object in a hand at a time), and the bound is
 minimised over the instance choices as well (`bounds.least_over_bindings`).
 
 Completion time (`minmax`): `makespan.py`, from the same pending events (`relax.EventRow`); the
@@ -48,6 +50,7 @@ from nl2hltl2plan.planning.bounds import (
     spanning_walk,
 )
 from nl2hltl2plan.planning.carries import PathLegs, carry_total
+from nl2hltl2plan.planning.hands import hands_walk
 from nl2hltl2plan.planning.leaves import DONE, Leaf
 from nl2hltl2plan.planning.makespan import leaf_chains, makespan_bound
 from nl2hltl2plan.planning.navigation import INF
@@ -263,8 +266,9 @@ class Heuristic:
         if carry < 0:  # an object is held: the carries depend on where its holder stands
             carry = 0 if self.light else carry_total(self, node, pending.memo)
         walk = self._assignment(node, pending, carry) if rows else carry
-        if node.parent is None and not fixed and not self.light:  # once at the root (tour.py)
-            walk = max(walk, tour_walk(self, node, rows), chain_walk(self, node, rows))
+        if node.parent is None and not fixed and not self.light:  # once at the root (tour.py, hands.py)
+            walk = max(walk, tour_walk(self, node, rows), chain_walk(self, node, rows),
+                       hands_walk(self, node, rows))
         total = len(rows) + pending.extra_events + walk + pending.support
         if not self.makespan:
             return total, node.ms

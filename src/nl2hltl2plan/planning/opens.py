@@ -75,38 +75,61 @@ def _path_opens(x: Expander, node: Node, leaf: Leaf,
 
 
 def forced_closes(x: Expander, required: set[int], node: Node) -> int:
-    """Support closes every completion needs: an appliance that runs only closed (the microwave)
-    must be closed before a pending `toggle_on` of it when every path of the leaf first puts
-    something into it (the put leaves it open) or when every candidate is open now. One close per
-    such type at least (two heat tasks may share one close); none for a type a leaf closes itself."""
-    leaf_closes = {a.types[0] for lf in x.p.leaves if node.q[lf.index] != DONE
-                   for a in lf.atoms if a.verb == "close"}
+    """Support closes every completion needs, and the opens that follow them: an appliance that
+    runs only closed (the microwave) must be closed before a pending `toggle_on` of it when every
+    path of the leaf first puts something into it (the put leaves it open) or when every candidate
+    is open now. One close per such type at least (two heat tasks may share one close); none for a
+    type a leaf closes itself. When every path then takes out what it put in (or what lies in it),
+    the appliance, closed at the toggle, must be opened again before that pickup: one open more per
+    such type (after the close, so no open `forced_opens` counts), none for a type a leaf opens."""
+    pending = [lf for lf in x.p.leaves if node.q[lf.index] != DONE]
+    leaf_closes = {a.types[0] for lf in pending for a in lf.atoms if a.verb == "close"}
+    leaf_opens = {a.types[0] for lf in pending for a in lf.atoms if a.verb == "open"}
     types: set[str] = set()
-    for lf in x.p.leaves:
-        if node.q[lf.index] == DONE or lf.index not in required:
+    reopened: set[str] = set()
+    for lf in pending:
+        if lf.index not in required:
             continue
         paths = lf.paths.get(node.q[lf.index]) or []
         found = [_needs_close(x, node, lf, path) for path in paths]
-        if found and all(found) and len(set(found)) == 1:
-            types.add(found[0])
-    return len(types - leaf_closes)
+        if found and all(t for t, _ in found) and len({t for t, _ in found}) == 1:
+            types.add(found[0][0])
+            if all(reopen for _, reopen in found):
+                reopened.add(found[0][0])
+    return len(types - leaf_closes) + len((reopened & types) - leaf_closes - leaf_opens)
 
 
-def _needs_close(x: Expander, node: Node, leaf: Leaf, path: tuple[int, ...]) -> str:
-    """The run-closed appliance type this path must find closed after it is open, or ""."""
+def _needs_close(x: Expander, node: Node, leaf: Leaf, path: tuple[int, ...]) -> tuple[str, bool]:
+    """(The run-closed appliance type this path must find closed after it is open, or "";
+    whether the path then picks up from it something it put into it)."""
     filled: set[str] = set()
-    for k in path:
+    inside: dict[str, str] = {}  # an object type put into the appliance type
+    for pos, k in enumerate(path):
         atom = leaf.atoms[k]
         target = atom.types[-1]
+        if atom.verb == "put" and target in RUNS_CLOSED:
+            inside[atom.types[0]] = target
         if target not in RUNS_CLOSED:
             continue
         if atom.verb == "put":
             filled.add(target)
         elif atom.verb == "close":
-            return ""
+            return "", False
         elif atom.verb == "toggle_on":
             b = bound(node, leaf.index, target)
             cands = [b] if b >= 0 else x.by_type.get(target, [])
             if target in filled or (cands and all(node.sim.flags[o] & OPEN for o in cands)):
-                return target
-    return ""
+                return target, _takes_out(leaf, path[pos + 1:], target, inside)
+    return "", False
+
+
+def _takes_out(leaf: Leaf, rest: tuple[int, ...], appliance: str, inside: dict[str, str]) -> bool:
+    """Does the rest of the path pick up something the path put into `appliance`, before any open
+    or put of its own there?"""
+    for k in rest:
+        atom = leaf.atoms[k]
+        if atom.types[-1] == appliance and atom.verb in ("open", "put"):
+            return False
+        if atom.verb == "pickup" and inside.get(atom.types[0]) == appliance:
+            return True
+    return False
