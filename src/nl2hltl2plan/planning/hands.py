@@ -57,7 +57,7 @@ def hands_walk(h: Heuristic, node: Node, rows: list[EventRow]) -> int:
     stops = _stops(h, node, rows)
     if not stops:
         return 0
-    start = h._robot_walks_to_cells(node, np.concatenate([stop.cells for stop in stops]))
+    start = h.robot_walks_to_cells(node, np.concatenate([stop.cells for stop in stops]))
     return hand_forest(h.nav.dm, stops, start, _successors(h, rows, stops))
 
 
@@ -71,7 +71,7 @@ def _stops(h: Heuristic, node: Node, rows: list[EventRow]) -> list[Stop]:
         return cells if 0 < len(cells) <= MAX_CELLS else None
 
     cells = [cells_of(row) for row in rows]
-    nearest = [int(h._robot_walks_to_cells(node, c).min()) if c is not None else -1 for c in cells]
+    nearest = [int(h.robot_walks_to_cells(node, c).min()) if c is not None else -1 for c in cells]
     if any(c is not None and far >= INF for c, far in zip(cells, nearest, strict=True)):
         return []  # an event no robot reaches: no claim
     carries = []  # (walk to the pickup and on to the put, pickup's row, put's row)

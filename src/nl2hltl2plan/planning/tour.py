@@ -73,7 +73,7 @@ def _stops(h: Heuristic, node: Node, rows: list[EventRow]) -> list[tuple[np.ndar
     for anchors, cells in sorted(by_anchors.items()):
         if not len(cells) or len(cells) > MAX_CELLS or robot_cells & set(cells.tolist()):
             continue
-        walks = h._robot_walks_to_cells(node, cells)
+        walks = h.robot_walks_to_cells(node, cells)
         far = int(walks.min())
         if far >= INF:
             return []  # a stop no robot reaches: no claim
@@ -152,7 +152,7 @@ def chain_walk(h: Heuristic, node: Node, rows: list[EventRow]) -> int:
     if len(node.cell) > 1:
         return _split_chain(step[np.ix_(chain, chain)], reach[chain])
     cells = [_region_cells(h, anchors[k]) for k in chain]
-    walk = h._robot_walks_to_cells(node, cells[0])[0]
+    walk = h.robot_walks_to_cells(node, cells[0])[0]
     for prev, cur in zip(cells, cells[1:], strict=False):
         walk = (walk[:, None] + h.nav.dm[np.ix_(prev, cur)]).min(axis=0)
     return int(walk.min()) if walk.min() < INF else 0
