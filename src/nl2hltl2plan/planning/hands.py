@@ -33,13 +33,13 @@ import numpy as np
 from nl2hltl2plan.planning.navigation import INF
 from nl2hltl2plan.planning.node import Node
 from nl2hltl2plan.planning.relax import PICKUP, PUT, EventRow
+from nl2hltl2plan.planning.tour import MAX_CELLS, region_cells, standing_cells
 
 if TYPE_CHECKING:
     from nl2hltl2plan.planning.heuristic import Heuristic
 
 MAX_CARRIES = 6  # carries kept (two stops each)
 MAX_FREE = 2  # other stops kept (each doubles the subsets)
-MAX_CELLS = 160  # a region with more cells says little (it is near everything): left out
 FREE, TAKE, GIVE, EMPTY_TAKE = 0, 1, 2, 3  # a stop's hand rule: none, a carry's pickup or put, a lone pickup
 
 
@@ -62,12 +62,10 @@ def hands_walk(h: Heuristic, node: Node, rows: list[EventRow]) -> int:
 
 
 def _stops(h: Heuristic, node: Node, rows: list[EventRow]) -> list[Stop]:
-    region_idx = h.nav.region_idx
-
     def cells_of(row: EventRow) -> np.ndarray | None:
         if not row.anchors:
             return None
-        cells = np.unique(np.concatenate([region_idx[a] for a in row.anchors]))
+        cells = region_cells(h, row.anchors)
         return cells if 0 < len(cells) <= MAX_CELLS else None
 
     cells = [cells_of(row) for row in rows]
@@ -86,9 +84,7 @@ def _stops(h: Heuristic, node: Node, rows: list[EventRow]) -> list[Stop]:
     for c, (_, p, d, pick, put) in enumerate(carries[:MAX_CARRIES]):
         stops += [Stop(pick, TAKE, c, p), Stop(put, GIVE, c, d)]
         in_carry |= {p, d}
-    robot_cells = set(node.cell)
-    if node.reach is not None:
-        robot_cells |= {c for reach in node.reach if reach is not None for c in reach[0]}
+    robot_cells = standing_cells(node)
     lone = sorted((i for i in range(len(rows)) if i not in in_carry),
                   key=lambda i: (-nearest[i], i))
     n_carry_stops = len(stops)

@@ -54,9 +54,17 @@ def tour_walk(h: Heuristic, node: Node, rows: list[EventRow]) -> int:
     return _forest(h.nav.dm, [cells for cells, _ in kept], start)
 
 
-def _region_cells(h: Heuristic, anchors: Sequence[int]) -> np.ndarray:
+def region_cells(h: Heuristic, anchors: Sequence[int]) -> np.ndarray:
     """The cells of the union of `anchors`' regions (sorted)."""
     return np.unique(np.concatenate([h.nav.region_idx[a] for a in anchors]))
+
+
+def standing_cells(node: Node) -> set[int]:
+    """The cells the robots stand on, or may stand on (free stand cells: `node.reach`)."""
+    cells = set(node.cell)
+    if node.reach is not None:
+        cells |= {c for reach in node.reach if reach is not None for c in reach[0]}
+    return cells
 
 
 def _stops(h: Heuristic, node: Node, rows: list[EventRow]) -> list[tuple[np.ndarray, np.ndarray]]:
@@ -65,10 +73,8 @@ def _stops(h: Heuristic, node: Node, rows: list[EventRow]) -> list[tuple[np.ndar
     by_anchors: dict[tuple[int, ...], np.ndarray] = {}
     for row in rows:
         if row.anchors and row.anchors not in by_anchors:
-            by_anchors[row.anchors] = _region_cells(h, row.anchors)
-    robot_cells = set(node.cell)
-    if node.reach is not None:
-        robot_cells |= {c for reach in node.reach if reach is not None for c in reach[0]}
+            by_anchors[row.anchors] = region_cells(h, row.anchors)
+    robot_cells = standing_cells(node)
     scored = []
     for anchors, cells in sorted(by_anchors.items()):
         if not len(cells) or len(cells) > MAX_CELLS or robot_cells & set(cells.tolist()):
@@ -151,7 +157,7 @@ def chain_walk(h: Heuristic, node: Node, rows: list[EventRow]) -> int:
     chain = _longest_chain(before, step, reach.min(axis=1))
     if len(node.cell) > 1:
         return _split_chain(step[np.ix_(chain, chain)], reach[chain])
-    cells = [_region_cells(h, anchors[k]) for k in chain]
+    cells = [region_cells(h, anchors[k]) for k in chain]
     walk = h.robot_walks_to_cells(node, cells[0])[0]
     for prev, cur in zip(cells, cells[1:], strict=False):
         walk = (walk[:, None] + h.nav.dm[np.ix_(prev, cur)]).min(axis=0)
