@@ -72,11 +72,13 @@ def _stops(h: Heuristic, node: Node, rows: list[EventRow]) -> list[Stop]:
     nearest = [int(h.robot_walks_to_cells(node, c).min()) if c is not None else -1 for c in cells]
     if any(c is not None and far >= INF for c, far in zip(cells, nearest, strict=True)):
         return []  # an event no robot reaches: no claim
-    carries = []  # (walk to the pickup and on to the put, pickup's row, put's row)
+    carries = []  # (walk to the pickup and on to the put, pickup's row, put's row, their cells)
     for d, row in enumerate(rows):
         p = row.carried
+        if row.kind != PUT or p < 0 or rows[p].kind != PICKUP:
+            continue
         pick, put = cells[p], cells[d]
-        if row.kind == PUT and p >= 0 and rows[p].kind == PICKUP and pick is not None and put is not None:
+        if pick is not None and put is not None:
             carries.append((nearest[p] + int(h.nav.dm[np.ix_(pick, put)].min()), p, d, pick, put))
     carries.sort(key=lambda carry: (-carry[0], carry[1]))  # the carries that force the most walking first
     stops: list[Stop] = []
