@@ -22,9 +22,9 @@ walking), after merging stops with the same cell set and dropping a stop whose c
 robot's cell or another kept stop's cells (visiting that one visits it too).
 
 The tour ignores the events' order, the hands and the instance choices across leaves (a stop may
-be any candidate's cell); the chain (`chain_walk`) adds the order, `hands.py` the hands. Both are
-cheap enough at the root (`Heuristic._evaluate`: once, not per node), and they lift every node's
-bound (a child's bound is at least its parent's).
+be any candidate's cell); the chain (`chain_walk`) adds the order, `hands.py` the hands. All three
+are cheap enough at the root (`Heuristic._evaluate`: once, not per node), and they lift every
+node's bound (a child's bound is at least its parent's).
 """
 
 from __future__ import annotations
