@@ -12,7 +12,7 @@ from test_grid_optimum import PLACE_APPLE, PLACE_MUG
 from test_tour_bound import _line, _root_bound
 
 from nl2hltl2plan.planning import heuristic, oracle_spec, plan
-from nl2hltl2plan.planning.hands import FREE, GIVE, TAKE, Stop, hand_forest
+from nl2hltl2plan.planning.stops import FREE, GIVE, TAKE, Stop, hand_forest
 
 
 def _two_carries(rule_take: int = TAKE, rule_give: int = GIVE) -> list[Stop]:

@@ -29,7 +29,6 @@ node's bound (a child's bound is at least its parent's).
 
 from __future__ import annotations
 
-from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -37,12 +36,12 @@ import numpy as np
 from nl2hltl2plan.planning.navigation import INF
 from nl2hltl2plan.planning.node import Node
 from nl2hltl2plan.planning.relax import BIG, EventRow, solve
+from nl2hltl2plan.planning.stops import FREE, MAX_CELLS, Stop, hand_forest, region_cells, standing_cells
 
 if TYPE_CHECKING:
     from nl2hltl2plan.planning.heuristic import Heuristic
 
 MAX_STOPS = 7  # stops kept (the programme has 2^stops subsets)
-MAX_CELLS = 160  # a stop with more candidate cells says little (it is near everything): left out
 
 
 def tour_walk(h: Heuristic, node: Node, rows: list[EventRow]) -> int:
@@ -52,19 +51,6 @@ def tour_walk(h: Heuristic, node: Node, rows: list[EventRow]) -> int:
         return 0
     start = np.hstack([walks for _, walks in kept])  # robots x the stops' cells
     return _forest(h.nav.dm, [cells for cells, _ in kept], start)
-
-
-def region_cells(h: Heuristic, anchors: Sequence[int]) -> np.ndarray:
-    """The cells of the union of `anchors`' regions (sorted)."""
-    return np.unique(np.concatenate([h.nav.region_idx[a] for a in anchors]))
-
-
-def standing_cells(node: Node) -> set[int]:
-    """The cells the robots stand on, or may stand on (free stand cells: `node.reach`)."""
-    cells = set(node.cell)
-    if node.reach is not None:
-        cells |= {c for reach in node.reach if reach is not None for c in reach[0]}
-    return cells
 
 
 def _stops(h: Heuristic, node: Node, rows: list[EventRow]) -> list[tuple[np.ndarray, np.ndarray]]:
@@ -98,40 +84,9 @@ def _stops(h: Heuristic, node: Node, rows: list[EventRow]) -> list[tuple[np.ndar
 
 def _forest(dm: np.ndarray, stops: list[np.ndarray], start: np.ndarray) -> int:
     """Least summed walk of one path per robot (possibly empty) that together visit every stop:
-    `start` robots x (the stops' cells, concatenated)."""
-    n = len(stops)
-    full = (1 << n) - 1
-    offsets = np.cumsum([0] + [len(cells) for cells in stops])
-    steps = [[dm[np.ix_(a, b)] for b in stops] for a in stops]
-    best_path = np.full((len(start), 1 << n), INF, dtype=np.int64)  # robot x subset: one path
-    best_path[:, 0] = 0
-    for r in range(len(start)):
-        # end[mask][j]: per cell of stop j, the least walk from robot r through the stops of mask,
-        # ending at that cell (Held & Karp over subsets, one state per cell)
-        end: list[dict[int, np.ndarray]] = [{} for _ in range(1 << n)]
-        for j in range(n):
-            end[1 << j][j] = start[r, offsets[j]:offsets[j + 1]]
-        for mask in range(1, 1 << n):
-            for j, walk in end[mask].items():
-                best_path[r, mask] = min(best_path[r, mask], int(walk.min()))
-                for k in range(n):
-                    if mask >> k & 1:
-                        continue
-                    nxt = (walk[:, None] + steps[j][k]).min(axis=0)
-                    grown = mask | 1 << k
-                    old = end[grown].get(k)
-                    end[grown][k] = nxt if old is None else np.minimum(old, nxt)
-    # split the stops among the robots: cover[mask] = least walk of robots 0..r covering mask
-    cover = best_path[0].copy()
-    for r in range(1, len(start)):
-        nxt = cover.copy()
-        for mask in range(1, 1 << n):
-            sub = mask
-            while sub:
-                nxt[mask] = min(nxt[mask], cover[mask ^ sub] + best_path[r, sub])
-                sub = (sub - 1) & mask
-        cover = nxt
-    return int(cover[full]) if cover[full] < INF else 0
+    `start` robots x (the stops' cells, concatenated); no hands, no orders."""
+    free = [Stop(cells, FREE, -1, k) for k, cells in enumerate(stops)]
+    return hand_forest(dm, free, start, [0] * len(stops))
 
 
 def chain_walk(h: Heuristic, node: Node, rows: list[EventRow]) -> int:
