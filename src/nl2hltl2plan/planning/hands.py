@@ -9,12 +9,13 @@ no other pickup and no other put, and it picks nothing up while it holds somethi
 walk is a sequence of cells through one cell of each of its events' regions in which every carry's
 pickup is followed, before any other pickup or put, by that carry's put.
 
-The least total walk of paths out of the robots, each obeying the hands and the known orders
-(a leaf's events in their order; a leaf's events after those of the leaves it waits for), that
-together visit every kept stop, is a lower bound on the walking: Held & Karp over the subsets of
-stops with one state per cell of a stop's cells, where a subset may hold at most one *open* carry
-(its pickup visited, its put not yet), the hand that subset's path ends with; then a split among
-the robots by subsets of whole carries (one robot carries an object from its pickup to its put).
+The least total walk of paths out of the robots, each obeying the hands and the known orders (a
+leaf's events in their order; a leaf's events after those of the leaves it waits for), that
+together visit every kept stop, is a lower bound on the walking: Held & Karp (`stops.hand_forest`)
+over the subsets of stops with one state per cell of a stop's cells, where a subset may hold at
+most one *open* carry (its pickup visited, its put not yet), the hand that subset's path ends with;
+then a split among the robots by subsets of whole carries (one robot carries an object from its
+pickup to its put).
 
 Which events to keep is free, with one care: a carry is kept whole or dropped whole, or its
 pickup is kept alone as a pickup that needs an empty hand and leaves it empty (the robot may put

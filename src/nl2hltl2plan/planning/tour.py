@@ -13,13 +13,14 @@ time, and cell distances obey the triangle inequality.
 So: each robot's walk is a sequence of cells that visits, for every pending event, one cell of one
 of the event's candidate regions (the cell it acts from). Keeping only a few of these "stops"
 (events dropped from a walk never make it longer), the least total walk of paths out of the robots
-that visit every kept stop is a lower bound, computed exactly by dynamic programming over the
-subsets of stops (Held & Karp, with one state per cell of the stop's cell set; the generalised
-travelling-salesman path), its paths then split among the robots by a second dynamic programme over
-subsets (each robot's path starts where that robot stands; a robot may stay put). Which stops to
-keep is free; it keeps the few whose cells are farthest from every robot (the ones that force
-walking), after merging stops with the same cell set and dropping a stop whose cells include a
-robot's cell or another kept stop's cells (visiting that one visits it too).
+that visit every kept stop is a lower bound, computed exactly (`stops.hand_forest`, with no hands
+and no orders) by dynamic programming over the subsets of stops (Held & Karp, with one state per
+cell of the stop's cell set; the generalised travelling-salesman path), its paths then split among
+the robots by a second dynamic programme over subsets (each robot's path starts where that robot
+stands; a robot may stay put). Which stops to keep is free; it keeps the few whose cells are
+farthest from every robot (the ones that force walking), after merging stops with the same cell set
+and dropping a stop whose cells include a robot's cell or another kept stop's cells (visiting that
+one visits it too).
 
 The tour ignores the events' order, the hands and the instance choices across leaves (a stop may
 be any candidate's cell); the chain (`chain_walk`) adds the order, `hands.py` the hands. All three
