@@ -458,7 +458,7 @@ class Heuristic:
                             lambda: approach_legs(pending.rows, cols, self.nav.region_idx, self._near))
         if legs is None:
             return None
-        robots = np.minimum(self._robot_walks_to_cells(node, legs.union), BIG)
+        robots = np.minimum(self.robot_walks_to_cells(node, legs.union), BIG)
         out = np.where(cost >= BIG, BIG, 0)
         for i in legs.held_puts:
             out[i] = cost[i]  # a held object's put: the holder's walk to it
@@ -467,7 +467,7 @@ class Heuristic:
         out[legs.picks] = np.where(cost[legs.picks] >= BIG, BIG, walks)
         return out
 
-    def _robot_walks_to_cells(self, node: Node, cells: np.ndarray) -> np.ndarray:
+    def robot_walks_to_cells(self, node: Node, cells: np.ndarray) -> np.ndarray:
         """robots x `cells`: the fewest steps from where each robot may stand to each of them."""
         dm = self.nav.dm
         out = dm[np.array(node.cell, dtype=np.int64)[:, None], cells]

@@ -79,9 +79,9 @@ def forced_closes(x: Expander, required: set[int], node: Node) -> int:
     runs only closed (the microwave) must be closed before a pending `toggle_on` of it when every
     path of the leaf first puts something into it (the put leaves it open) or when every candidate
     is open now. One close per such type at least (two heat tasks may share one close); none for a
-    type a leaf closes itself. When every path then takes out what it put in (or what lies in it),
-    the appliance, closed at the toggle, must be opened again before that pickup: one open more per
-    such type (after the close, so no open `forced_opens` counts), none for a type a leaf opens."""
+    type a leaf closes itself. When every path then takes out what it put in, the appliance,
+    closed at the toggle, must be opened again before that pickup: one open more per such type
+    (after the close, so no open `forced_opens` counts), none for a type a leaf opens or closes."""
     pending = [lf for lf in x.p.leaves if node.q[lf.index] != DONE]
     leaf_closes = {a.types[0] for lf in pending for a in lf.atoms if a.verb == "close"}
     leaf_opens = {a.types[0] for lf in pending for a in lf.atoms if a.verb == "open"}

@@ -13,23 +13,23 @@ time, and cell distances obey the triangle inequality.
 So: each robot's walk is a sequence of cells that visits, for every pending event, one cell of one
 of the event's candidate regions (the cell it acts from). Keeping only a few of these "stops"
 (events dropped from a walk never make it longer), the least total walk of paths out of the robots
-that visit every kept stop is a lower bound, computed exactly by dynamic programming over the
-subsets of stops (Held & Karp, with one state per cell of the stop's cell set; the generalised
-travelling-salesman path), its paths then split among the robots by a second dynamic programme over
-subsets (each robot's path starts where that robot stands; a robot may stay put). Which stops to
-keep is free; it keeps the few whose cells are farthest from every robot (the ones that force
-walking), after merging stops with the same cell set and dropping a stop whose cells include a
-robot's cell or another kept stop's cells (visiting that one visits it too).
+that visit every kept stop is a lower bound, computed exactly (`stops.hand_forest`, with no hands
+and no orders) by dynamic programming over the subsets of stops (Held & Karp, with one state per
+cell of the stop's cell set; the generalised travelling-salesman path), its paths then split among
+the robots by a second dynamic programme over subsets (each robot's path starts where that robot
+stands; a robot may stay put). Which stops to keep is free; it keeps the few whose cells are
+farthest from every robot (the ones that force walking), after merging stops with the same cell set
+and dropping a stop whose cells include a robot's cell or another kept stop's cells (visiting that
+one visits it too).
 
 The tour ignores the events' order, the hands and the instance choices across leaves (a stop may
-be any candidate's cell); the chain (`chain_walk`) adds the order, `hands.py` the hands. Both are
-cheap enough at the root (`Heuristic._evaluate`: once, not per node), and they lift every node's
-bound (a child's bound is at least its parent's).
+be any candidate's cell); the chain (`chain_walk`) adds the order, `hands.py` the hands. All three
+are cheap enough at the root (`Heuristic._evaluate`: once, not per node), and they lift every
+node's bound (a child's bound is at least its parent's).
 """
 
 from __future__ import annotations
 
-from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -37,12 +37,12 @@ import numpy as np
 from nl2hltl2plan.planning.navigation import INF
 from nl2hltl2plan.planning.node import Node
 from nl2hltl2plan.planning.relax import BIG, EventRow, solve
+from nl2hltl2plan.planning.stops import FREE, MAX_CELLS, Stop, hand_forest, region_cells, standing_cells
 
 if TYPE_CHECKING:
     from nl2hltl2plan.planning.heuristic import Heuristic
 
 MAX_STOPS = 7  # stops kept (the programme has 2^stops subsets)
-MAX_CELLS = 160  # a stop with more candidate cells says little (it is near everything): left out
 
 
 def tour_walk(h: Heuristic, node: Node, rows: list[EventRow]) -> int:
@@ -54,26 +54,19 @@ def tour_walk(h: Heuristic, node: Node, rows: list[EventRow]) -> int:
     return _forest(h.nav.dm, [cells for cells, _ in kept], start)
 
 
-def _region_cells(h: Heuristic, anchors: Sequence[int]) -> np.ndarray:
-    """The cells of the union of `anchors`' regions (sorted)."""
-    return np.unique(np.concatenate([h.nav.region_idx[a] for a in anchors]))
-
-
 def _stops(h: Heuristic, node: Node, rows: list[EventRow]) -> list[tuple[np.ndarray, np.ndarray]]:
     """The stops kept: distinct, small, not holding a robot, farthest first; each as its cells and
     the robots' walks to them (robots x cells)."""
     by_anchors: dict[tuple[int, ...], np.ndarray] = {}
     for row in rows:
         if row.anchors and row.anchors not in by_anchors:
-            by_anchors[row.anchors] = _region_cells(h, row.anchors)
-    robot_cells = set(node.cell)
-    if node.reach is not None:
-        robot_cells |= {c for reach in node.reach if reach is not None for c in reach[0]}
+            by_anchors[row.anchors] = region_cells(h, row.anchors)
+    robot_cells = standing_cells(node)
     scored = []
     for anchors, cells in sorted(by_anchors.items()):
         if not len(cells) or len(cells) > MAX_CELLS or robot_cells & set(cells.tolist()):
             continue
-        walks = h._robot_walks_to_cells(node, cells)
+        walks = h.robot_walks_to_cells(node, cells)
         far = int(walks.min())
         if far >= INF:
             return []  # a stop no robot reaches: no claim
@@ -92,40 +85,9 @@ def _stops(h: Heuristic, node: Node, rows: list[EventRow]) -> list[tuple[np.ndar
 
 def _forest(dm: np.ndarray, stops: list[np.ndarray], start: np.ndarray) -> int:
     """Least summed walk of one path per robot (possibly empty) that together visit every stop:
-    `start` robots x (the stops' cells, concatenated)."""
-    n = len(stops)
-    full = (1 << n) - 1
-    offsets = np.cumsum([0] + [len(cells) for cells in stops])
-    steps = [[dm[np.ix_(a, b)] for b in stops] for a in stops]
-    best_path = np.full((len(start), 1 << n), INF, dtype=np.int64)  # robot x subset: one path
-    best_path[:, 0] = 0
-    for r in range(len(start)):
-        # end[mask][j]: per cell of stop j, the least walk from robot r through the stops of mask,
-        # ending at that cell (Held & Karp over subsets, one state per cell)
-        end: list[dict[int, np.ndarray]] = [{} for _ in range(1 << n)]
-        for j in range(n):
-            end[1 << j][j] = start[r, offsets[j]:offsets[j + 1]]
-        for mask in range(1, 1 << n):
-            for j, walk in end[mask].items():
-                best_path[r, mask] = min(best_path[r, mask], int(walk.min()))
-                for k in range(n):
-                    if mask >> k & 1:
-                        continue
-                    nxt = (walk[:, None] + steps[j][k]).min(axis=0)
-                    grown = mask | 1 << k
-                    old = end[grown].get(k)
-                    end[grown][k] = nxt if old is None else np.minimum(old, nxt)
-    # split the stops among the robots: cover[mask] = least walk of robots 0..r covering mask
-    cover = best_path[0].copy()
-    for r in range(1, len(start)):
-        nxt = cover.copy()
-        for mask in range(1, 1 << n):
-            sub = mask
-            while sub:
-                nxt[mask] = min(nxt[mask], cover[mask ^ sub] + best_path[r, sub])
-                sub = (sub - 1) & mask
-        cover = nxt
-    return int(cover[full]) if cover[full] < INF else 0
+    `start` robots x (the stops' cells, concatenated); no hands, no orders."""
+    free = [Stop(cells, FREE, -1, k) for k, cells in enumerate(stops)]
+    return hand_forest(dm, free, start, [0] * len(stops))
 
 
 def chain_walk(h: Heuristic, node: Node, rows: list[EventRow]) -> int:
@@ -151,8 +113,8 @@ def chain_walk(h: Heuristic, node: Node, rows: list[EventRow]) -> int:
     chain = _longest_chain(before, step, reach.min(axis=1))
     if len(node.cell) > 1:
         return _split_chain(step[np.ix_(chain, chain)], reach[chain])
-    cells = [_region_cells(h, anchors[k]) for k in chain]
-    walk = h._robot_walks_to_cells(node, cells[0])[0]
+    cells = [region_cells(h, anchors[k]) for k in chain]
+    walk = h.robot_walks_to_cells(node, cells[0])[0]
     for prev, cur in zip(cells, cells[1:], strict=False):
         walk = (walk[:, None] + h.nav.dm[np.ix_(prev, cur)]).min(axis=0)
     return int(walk.min()) if walk.min() < INF else 0
