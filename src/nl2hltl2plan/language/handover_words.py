@@ -384,9 +384,26 @@ REWRITES: tuple[tuple[str, str], ...] = (
     ),
     # the person addressed as the subject: "After all these are done, you put the yellow block back ..."
     (r"(^|,|\bthen)\s*(?:you|we)\s+(?=(?:put|place|move|bring|take|transfer|carry|set)\b)", r"\1 "),
+    # "each of regions H, I and J can only hold one block, so put the three blocks into them": the world's
+    # one-block rule, and the regions named for the goal that follows
+    (
+        r"^\s*each\s+of\s+(?:the\s+)?(regions\s+[e-j](?:\s*,\s*[e-j])*\s*,?\s*and\s+[e-j])\s+"
+        r"(?:(?:can|should|may|must|will|shall)\s+)?(?:only\s+)?(?:hold|take|contain|get|end\s+up\s+with)\s+"
+        r"(?:only\s+|exactly\s+)?(?:one|a\s+single)\s+(?:block|object)\s*,\s*(?:so\s+)?"
+        r"(.*?)\b(?:those\s+regions|them)\b",
+        r"\2 \1 , one block per region ",
+    ),
+    # a reason that says again that the places kept empty must stay so: "keep regions F, G and H empty in
+    # the meantime, as they must stay clear"
+    (
+        r"(\b(?:empty|clear|free|nothing)\b[^,]*),\s*(?:as|since|because)\s+they\s+(?:must|have\s+to|need\s+to)\s+"
+        r"(?:stay|remain|be\s+kept)\s+(?:empty|clear|free)\s*$",
+        r"\1",
+    ),
     # a heading that forbids places: "Forbidden meanwhile: regions F, G and H"
     (
-        rf"^\s*(?:forbidden|prohibited|off\s+limits|keep\s+(?:empty|clear|free))\s*({PERIOD_WORDS})?\s*:\s*",
+        rf"^\s*(?:forbidden|prohibited|off\s+limits|keep\s+(?:empty|clear|free))\s*({PERIOD_WORDS})?\s*:\s*"
+        r"(?=(?:the\s+)?(?:regions?\s+)?[e-j]\b)",
         r"\1 , nothing on ",
     ),
     # "regions H, I and J are reserved, so never put any object on them": the reason said as the rule it
