@@ -77,9 +77,9 @@ STILL_REFUSED = {
     # dev9: "there is no order for them" (a statement about an order, not read)
     "Put the yellow block on region I, then on region G. Move the red and blue blocks to any empty region "
     "at any time; there is no order for them.",
-    # dev10 (h50): reasons that state the scene or a purpose ("belong on", "knocking over"), a goal said twice ("visit region I before it ends at
-    # region G, so take it to I first"), and headings whose subject is left to the goal ("Timing: yellow at
-    # any time", "Target regions: G, H and I")
+    # dev10 (h50): reasons that state the scene or a purpose ("belong on", "knocking over"), a goal said
+    # twice ("visit region I before it ends at region G, so take it to I first"), and headings whose
+    # subject is left to the goal ("Timing: yellow at any time", "Target regions: G, H and I")
     "The blocks belong on the opposite side, so move all three of them there. Place the red block "
     "before the blue block so that the order is right.",
     "To avoid knocking the blue block over, don't touch it until the red block has been touched. Move "

@@ -464,7 +464,8 @@ REWRITES += tuple(
     for gerund, verb in (GERUND_VERBS | NEGATED_GERUNDS).items()
 )
 REWRITES += tuple(
-    (rf"\b(cannot|must\s+not|should\s+not|do\s+not)\s+{gerund}\b", rf"\1 {verb}")  # non-native "cannot touching"
+    # a negated modal before a gerund (non-native): "the arm cannot touching the blue block"
+    (rf"\b(cannot|must\s+not|should\s+not|do\s+not)\s+{gerund}\b", rf"\1 {verb}")
     for gerund, verb in (GERUND_VERBS | NEGATED_GERUNDS).items()
 )
 REWRITES += tuple(
