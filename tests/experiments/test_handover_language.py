@@ -176,6 +176,14 @@ def test_session10_validation_is_read_right_or_refused_never_misread(style):
         _read_right_or_refused(int(task), text)
 
 
+@pytest.mark.parametrize("style", sorted(STYLES["validation2"]))
+def test_session10_second_validation_is_read_right_or_refused_never_misread(style):
+    """h50's validation batch, written with `dev10` and measured once on the final reader (15 of 24 gave
+    the written spec, 9 were refused by name, 0 another spec)."""
+    for task, text in STYLES["validation2"][style].items():
+        _read_right_or_refused(int(task), text)
+
+
 @pytest.mark.parametrize(
     ("task_id", "text"), [(t, text) for t, texts in REASONS_READ.items() for text in texts]
 )
