@@ -506,8 +506,6 @@ SHORT_TYPOS = {
     "taht": "that",
     "bleu": "blue",
     "bule": "blue",
-    "yelow": "yellow",
-    "yllow": "yellow",
 }
 
 
