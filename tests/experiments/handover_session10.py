@@ -57,15 +57,13 @@ STILL_REFUSED = {
     "The yellow block has two stops: region I and then region G. The other two blocks, red and blue, just "
     "need to go to any empty region at any time.",
     # dev5: reasons that carry what is not modelled ("should arrive first", "handled first", "has to wait",
-    # "has priority", "as they must stay clear", "visit region I before region G")
+    # "has priority", "visit region I before region G")
     "The red block should arrive first, so move the red block to the opposite side before the blue block, "
     "and bring the yellow block over too.",
     "Exchange the positions of the red block and the blue block, placing red first since blue has to wait "
     "for it. It doesn't matter when the yellow block goes to the opposite side.",
     "Because the red block has priority, put it down before the blue block; the three blocks go separately "
     "to regions G, H and I.",
-    "Put the three blocks on region I one after another, red before blue, and keep regions F, G and H "
-    "empty in the meantime, as they must stay clear.",
     "Since the yellow block must visit region I before region G, put it on region I first, then on region "
     "G. Red and blue can go to any empty region at any time.",
     # dev7: "their" across sentences (refused on purpose, as "swap them" is)
@@ -79,6 +77,19 @@ STILL_REFUSED = {
     # dev9: "there is no order for them" (a statement about an order, not read)
     "Put the yellow block on region I, then on region G. Move the red and blue blocks to any empty region "
     "at any time; there is no order for them.",
+    # dev10 (h50): reasons that state the scene or a purpose ("belong on", "knocking over"), a goal said
+    # twice ("visit region I before it ends at region G, so take it to I first"), and headings whose
+    # subject is left to the goal ("Timing: yellow at any time", "Target regions: G, H and I")
+    "The blocks belong on the opposite side, so move all three of them there. Place the red block "
+    "before the blue block so that the order is right.",
+    "To avoid knocking the blue block over, don't touch it until the red block has been touched. Move "
+    "the three blocks to the opposite regions, and when they are all there, bring the yellow block "
+    "back to region G.",
+    "The yellow block has to visit region I before it ends at region G, so take it to I first and "
+    "then to G. The red and blue blocks just need to be in some empty region, at any time.",
+    "Goal: red and blue blocks swapped, yellow block on the opposite side. Order: red before blue. "
+    "Timing: yellow at any time.",
+    "Target regions: G, H and I, one block each. Order: red block first, then blue block.",
 }
 
 NEAR_MISSES_S10: dict[int, list[str]] = {
@@ -308,5 +319,94 @@ REASONS_READ: dict[int, list[str]] = {
     3: [
         "To keep things tidy, move the three pillars to regions E, F and G; since regions H, I and J must "
         "stay free, put nothing on them.",
+    ],
+}
+
+# dev10 (h50): near misses of the forms read for it and for the earlier refusals fixed with it (step
+# headings, 'Forbidden meanwhile:', 'would you mind', 'one block each into', 'are reserved, so never ... on
+# them', two blocks 'in the wrong places, so swap them', non-native counts and modals, a period first)
+NEAR_MISSES_DEV10: dict[int, list[str]] = {
+    1: [
+        "Transfer the three blocks into the opposite side. The bleu block should be placed before the red "
+        "block.",
+        "Please move all two block to opposite side, the red block need to be put before blue block.",
+    ],
+    2: [
+        "Each of regions H and I can only hold one block, so put the three blocks into those regions, one in "
+        "each.",
+        "Each of regions H, I and J can only hold one block, so put the red and blue blocks into them.",
+        "Each of regions H, I and J can only hold one block, so put the three blocks into region H.",
+        "Can you put one block each into regions H and I?",
+        "Can you put one block each into region H?",
+        "The three blocks shall be deposited in regions H and I, and no region shall contain more than "
+        "one block.",
+        "The three blocks shall be deposited in regions H, I and J, and no region shall contain more than "
+        "two blocks.",
+        "The three blocks should be placed into regions H and I, each region being given one block.",
+        "The three blocks should be placed into regions H, I and J, each region being given two blocks.",
+    ],
+    3: [
+        "Would you mind moving the three pillars to regions E and F? Please don't put anything on any "
+        "other region.",
+        "Would you mind moving the two pillars to regions E, F and G? Please don't put anything on any "
+        "other region.",
+        "The pillars need to return to regions E, F and G. Regions H and I are reserved, so never put any "
+        "object on them.",
+        "The pillars need to return to regions E, F and G. Regions H, I and J are reserved, so put an "
+        "object on them.",
+        "The pillars need to return to regions E, F and G. Regions H, I and J are reserved, so never put "
+        "any object on region H.",
+        "Task: move the three pillars to regions E, F and G. Forbidden: regions H and I.",
+    ],
+    4: [
+        "Move three blocks into opposite regions. Robot arm cannot touching red block until any robot arm "
+        "touch blue block. After all these done, you put yellow block back to region G.",
+        "Move three blocks into opposite regions. Robot arm cannot touching blue block until any robot "
+        "arm touch red block. After all these done, you put yellow block back to region H.",
+        "The blue block may not be touched before the red block has been touched. With that in mind, move "
+        "the three blocks to the opposite regions, and finally put the yellow block back on region H.",
+        "The blue block may not be touched before the red block has been touched. With that in mind, move "
+        "the three blocks to the opposite regions, and put the yellow block back on region G.",
+    ],
+    5: [
+        "The red and yellow blocks are in the wrong places, so swap them, red being placed first. The "
+        "yellow block goes to the opposite side at any time.",
+        "The red and blue blocks are in the wrong places, so swap them, blue being placed first. The "
+        "yellow block goes to the opposite side at any time.",
+        "The red and blue blocks are in the right places, so swap them, red being placed first. The "
+        "yellow block goes to the opposite side at any time.",
+        "The red and blue blocks are not in the wrong places, so swap them, red being placed first. The "
+        "yellow block goes to the opposite side at any time.",
+        "The red and blue blocks are in each other's places, so move them, red being placed first. The "
+        "yellow block goes to the opposite side at any time.",
+        "Can you exchange the red block and the blue block, placing the red one first? And could you also "
+        "move the yellow block to the opposite side afterwards?",
+    ],
+    7: [
+        "Put the three blocks on region I one after another, red before blue, and keep regions F and G empty "
+        "in the meantime, as they must stay clear.",
+        "Put the three blocks on region I one after another, red before blue, as they must stay clear.",
+        "Goal: all three blocks on region I, one after another. Order: red before blue. Forbidden "
+        "meanwhile: regions F and G.",
+        "Goal: all three blocks on region I, one after another. Order: blue before red. Forbidden "
+        "meanwhile: regions F, G and H.",
+        "All three blocks should be collected on region H, one after the other, red before blue. Regions "
+        "F, G and I are in use meanwhile, so do not place anything on them.",
+        "All three blocks should be collected on region I, one after the other, red before blue. Regions "
+        "F, G and H are in use meanwhile, so do not place anything on region F.",
+        "1. Put the blocks on region I one after another, the red block before the blue block.\n2. During "
+        "this period, place no objects on regions F and G.",
+        "1. Put the blocks on region I one after another, the red block before the blue block.\n2. During "
+        "this period, place objects on regions F, G and H.",
+    ],
+    8: [
+        "Step 1: yellow block to region G. Step 2: yellow block to region I. Any time: red and blue "
+        "blocks to any empty region.",
+        "Step 1: yellow block to region I. Step 2: yellow block to region G. Any time: red block to any "
+        "empty region.",
+        "Step 1: yellow block to region I. Step 2: yellow block to region G. Any time: red and blue "
+        "blocks to region H.",
+        "Step 1: yellow block to region I. Step 2: yellow block to region G. Step 3: red and blue blocks "
+        "to any empty region.",
     ],
 }

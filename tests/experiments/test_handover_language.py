@@ -23,7 +23,7 @@ from handover_heldout import (
     STACKED_MARKERS,
 )
 from handover_rephrasings import REPHRASINGS
-from handover_session10 import NEAR_MISSES_S10, REASONS_READ, STILL_REFUSED, STYLES
+from handover_session10 import NEAR_MISSES_DEV10, NEAR_MISSES_S10, REASONS_READ, STILL_REFUSED, STYLES
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.translate import translate
@@ -125,7 +125,13 @@ def test_a_different_meaning_gives_a_different_spec(task_id, text):
     ("task_id", "text"),
     [
         (t, text)
-        for group in (NEAR_MISSES, H43_NEAR_MISSES, STACKED_MARKER_NEAR_MISSES)
+        for group in (
+            NEAR_MISSES,
+            H43_NEAR_MISSES,
+            STACKED_MARKER_NEAR_MISSES,
+            NEAR_MISSES_S10,
+            NEAR_MISSES_DEV10,
+        )
         for t, texts in group.items()
         for text in texts
     ],
@@ -144,7 +150,7 @@ def test_near_misses_are_refused_or_give_another_spec(task_id, text):
     ("batch", "style"),
     [
         (batch, style)
-        for batch in ("dev", "dev2", "dev3", "dev4", "dev5", "dev6", "dev7")
+        for batch in ("dev", "dev2", "dev3", "dev4", "dev5", "dev6", "dev7", "dev8", "dev9", "dev10")
         for style in STYLES[batch]
     ],
 )
@@ -164,8 +170,17 @@ def test_session10_styles_give_the_written_specs_or_are_refused_by_name(batch, s
 @pytest.mark.parametrize("style", sorted(STYLES["validation"]))
 def test_session10_validation_is_read_right_or_refused_never_misread(style):
     """Our validation batch, written with `dev` and measured once on the frozen reader (56 of 72 gave the
-    written spec, 16 were refused by name, 0 another spec: results/handover/generality_session10.md)."""
+    written spec, 16 were refused by name, 0 another spec; 65 / 7 / 0 after h50's round, which fixed refusals
+    listed in results/handover/generality_session10.md)."""
     for task, text in STYLES["validation"][style].items():
+        _read_right_or_refused(int(task), text)
+
+
+@pytest.mark.parametrize("style", sorted(STYLES["validation2"]))
+def test_session10_second_validation_is_read_right_or_refused_never_misread(style):
+    """h50's validation batch, written with `dev10` and measured once on the final reader (15 of 24 gave
+    the written spec, 9 were refused by name, 0 another spec)."""
+    for task, text in STYLES["validation2"][style].items():
         _read_right_or_refused(int(task), text)
 
 
@@ -175,18 +190,6 @@ def test_session10_validation_is_read_right_or_refused_never_misread(style):
 def test_a_reason_that_names_a_region_is_read_not_dropped(task_id, text):
     equal, why = specs_equivalent(_spec(task_id, text), TASKS[task_id].hierarchical())
     assert equal, why
-
-
-@pytest.mark.parametrize("task_id", sorted(NEAR_MISSES_S10))
-def test_session10_near_misses_are_refused_or_give_another_spec(task_id):
-    for text in NEAR_MISSES_S10[task_id]:
-        try:
-            spec = _spec(task_id, text)
-        except HTTError as exc:
-            assert "\n" not in str(exc)
-            continue
-        equal, _ = specs_equivalent(spec, TASKS[task_id].hierarchical())
-        assert not equal, text
 
 
 @pytest.mark.parametrize(("task_id", "text"), [(t, text) for t, texts in sample().items() for text in texts])
@@ -250,6 +253,9 @@ def test_the_opposite_side_is_resolved_against_where_the_blocks_start():
         ("Do not place any object on them. Move the three blocks to the opposite side.", "them"),
         ("Because the red block is heavy, move the three blocks to the opposite side.", "heavy"),
         ("Move the blocks to the opposite side, all two of them.", "names two blocks"),
+        # a scene said without the rule it gives, a heading that forbids what is not a place
+        ("Move the three blocks to the opposite side. Regions H, I and J are reserved.", "reserved"),
+        ("Move the three blocks to the opposite side. Forbidden: the red block.", "forbidden"),
     ],
 )
 def test_what_the_rules_cannot_read_is_refused_by_name(text, named):

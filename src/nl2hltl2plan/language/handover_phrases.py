@@ -154,9 +154,9 @@ def _mark_one_per_region(m: Marked) -> None:
     patterns: tuple[str, ...] = (
         # "each goal region can only hold one object", "each region only can be placed one object", "one
         # region only one object"
-        rf"(?:,\s*(?:where|in\s+which)\s+|\bwith\s+)?\b(?:each|every|an?|any|one)\s+(?:of\s+(?:the|these|those)\s+)?{region}s?\s+(?:only\s+)?(?:can|may|should|must|will)?\s*(?:only\s+)?"
-        rf"(?:be\s+)?(?:{hold}\s+|{holding}\s+)?(?:only\s+)?(?:with\s+)?{one}\b",
-        rf"(?:\bwith\s+)?\bno\s+{region}\s+(?:can|may|should|must|will)?\s*(?:be\s+)?"
+        rf"(?:,\s*(?:where|in\s+which)\s+|\bwith\s+)?\b(?:each|every|an?|any|one)\s+(?:of\s+(?:the|these|those)\s+)?{region}s?\s+(?:only\s+)?(?:can|may|should|must|will|shall)?\s*(?:only\s+)?"
+        rf"(?:be\s+|being\s+)?(?:{hold}\s+|{holding}\s+|given\s+)?(?:only\s+)?(?:with\s+)?{one}\b",
+        rf"(?:\bwith\s+)?\bno\s+{region}\s+(?:can|may|should|must|will|shall)?\s*(?:be\s+)?"
         rf"(?:{hold}|receiving|getting|holding|having|taking)\s+(?:with\s+)?(?:more\s+than\s+"
         rf"(?:one|a\s+single|1)(?:\s+{NOUN})?|(?:two|2)\s+{NOUNS})\b",
         rf"\b(?:with\s+|placing\s+|putting\s+|(?:put|place)\s+|there\s+(?:can|may|should|must|will)\s+be\s+)?{one}\s+(?:(?:is|being|may|can|should|must|will)\s+)?"

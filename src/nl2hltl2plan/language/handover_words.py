@@ -5,7 +5,7 @@ rewrites that map a writer's variants (synonyms, British forms, common typos) on
 
 VERB = (
     r"(?:transfer|move|put|place|bring|carry|take|deliver|relocate|shift|get|set|send|return|distribute|"
-    r"spread|position|drop|arrange|want|need|lay|deposit|pop)"
+    r"spread|position|drop|arrange|want|need|lay|deposit|pop|collect|gather)"
 )
 PREP = r"(?:to|into|onto|on|in|at|towards?|over\s+to|in\s+to|on\s+to|among|across|over)"
 MOD = (
@@ -17,7 +17,8 @@ GERUND = (
 )
 DONE = (
     r"(?:placed|put|moved|transferred|delivered|carried|brought|taken|shifted|relocated|returned|sent|"
-    r"arranged|positioned|distributed|spread|done|handled|set|transfer|move|place|bring|carry|deposited|"
+    r"arranged|positioned|distributed|spread|done|handled|set|transfer|move|place|bring|carry|deposited|return|"
+    r"collected|gathered|"
     r"conveyed|returns|belongs?|rests?|travels?|"
     r"dropped|go|goes|going|end\s+up|ends\s+up|land|lands)"
 )
@@ -99,7 +100,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\b(?:i|we)\s+(?:want|need)\s+you\s+to\b", "please"),
     (r"\b(?:could|can|would|will)\s+you\s+(?:please\s+)?", "please "),
     (r"\blet\s*'?\s*s\b|\blet\s+us\b|\bgo\s+ahead\s+and\b", "please"),
-    (r"\banytime\b|\bin\s+any\s+time\b", "at any time"),
+    (r"\b(?:(?:at|in)\s+)?anytime\b|\bin\s+any\s+time\b", "at any time"),
     (
         r"\b(?:whenever\s+(?:you\s+(?:like|want|wish|please|can)|convenient|possible|(?:it\s+)?suits(?:\s+you)?)|"
         r"at\s+(?:any|whatever)\s+(?:point(?:\s+in\s+time)?|moment|stage)|(?:at\s+)?any\s+time\s+you\s+(?:like|want))\b",
@@ -271,7 +272,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
     # "..., than place ...": a typo ("than" is never comparative between a comma and a verb)
     (r"(?<=,)\s*than\s+(?=(?:place|put|move|transfer|bring|take)\b)", " then "),
     (
-        r"^\s*(?:with\s+(?:that|this)(?:\s+(?:rule|constraint|condition|requirement))?|that\s+said|"
+        r"^\s*(?:with\s+(?:that|this)(?:\s+(?:rule|constraint|condition|requirement)|\s+in\s+mind)?|that\s+said|"
         r"having\s+said\s+that)\s*,",
         " ",
     ),
@@ -346,15 +347,77 @@ REWRITES: tuple[tuple[str, str], ...] = (
     # "the goal is to have the blocks on ...": the state asked for, as a goal
     (r"\b(please|to)\s+have\s+(?=(?:the|all|both|each|every)\b)", r"\1 get "),
     # a numbered step: the first, or one after the step before
-    (r"^\s*(?:step\s+(?:1|one)\s*[:-]?|1\s*[):-]|\(\s*1\s*\))\s*", "first "),
-    (r"^\s*(?:step\s+(?:[2-9]|two|three|four|five)\s*[:-]?|[2-9]\s*[):-]|\(\s*[2-9]\s*\))\s*", "then "),
+    # (a comma after it, so that a step without a verb reads as "First, yellow block to I")
+    (r"^\s*(?:step\s+(?:1|one)\s*[:-]?|1\s*[):-]|\(\s*1\s*\))\s*", "first , "),
+    (r"^\s*(?:step\s+(?:[2-9]|two|three|four|five)\s*[:-]?|[2-9]\s*[):-]|\(\s*[2-9]\s*\))\s*", "then , "),
     (r"^\s*(?:second(?:ly)?|third(?:ly)?|fourth(?:ly)?)\s*[:,]", "then "),
-    (r"^\s*then\s*,?\s*then\b", "then"),  # "2) Then move it ...": the step's "then" said twice
+    (r"^\s*(first|then)\s*,?\s*\1\b\s*,?", r"\1 "),  # "2) Then move it ...": the step's "then" said twice
+    # a heading that gives the time of what follows: "Any time: red and blue blocks to any empty region"
+    (r"^\s*(?:at\s+)?any\s+time\s*:", "at any time ,"),
     (r"\b(finally|lastly|then|next|afterwards|first)\s*:", r"\1"),  # "Finally: yellow -> G"
     (r"\b(?:remember|be\s+sure|make\s+sure|do\s+not\s+forget|note|keep\s+in\s+mind)\s+(?:to|that)\b", " "),
     (r"\bprecedes?\b", "comes before"),
     (r"\bfollows?\b", "comes after"),
     (r"\b(?:nobody|no\s+one|none\s+of\s+the\s+(?:robot\s+)?arms)\b", "no arm"),
+    # "the red and blue blocks are in the wrong places, so swap them": the scene said as the swap it asks for
+    (
+        rf"^\s*((?:the\s+)?[a-z]+\s+and\s+(?:the\s+)?[a-z]+\s+(?:blocks|cubes|pieces|ones))\s+(?:are|were)\s+in\s+"
+        rf"(?:the\s+wrong|each\s+other\s*s?)\s+(?:places|spots|positions)\s*,\s*(?:so\s+)?({SWAP})\s+(?:them|their\s+positions)\b",
+        r"\2 \1",
+    ),
+    # "place no objects on regions F, G and H": nothing on them (every object here is a block or a pillar)
+    (
+        r"\b(put|place|drop|set|leave)\s+no\s+(?:objects?|blocks?|items?|things?|pillars?)\s+(?=(?:on|in|onto|into)\b)",
+        r"\1 nothing ",
+    ),
+    # a count before a singular noun (non-native): "all three block", "move 3 block"
+    (r"\b(two|three|four|both|all|[2-9])\s+(block|cube|pillar|object|piece|item)\b", r"\1 \2s"),
+    # "after all these done" (non-native, without "are")
+    (r"\b(after\s+all\s+(?:of\s+)?(?:these|this|that))\s+done\b", r"\1 are done"),
+    (r"\b(has|have|needs?)\s+to\s+get\s+to\b", r"\1 to go to"),  # "the yellow block has to get to ..."
+    # a prohibition that opens with its period: "2) During this period, place nothing on F" (after the
+    # step's "then"); the period goes to the end, where the prohibition's period is read
+    (
+        rf"^(\s*(?:first|then)\s*,?)?\s*({PERIOD_WORDS})\s*,\s*"
+        r"((?:(?:put|place|drop|set|leave)\s+(?:nothing|no)|nothing|do\s+not|never)\b[^:;]+)$",
+        r"\1 \3 \2",
+    ),
+    # the person addressed as the subject: "After all these are done, you put the yellow block back ..."
+    (r"(^|,|\bthen)\s*(?:you|we)\s+(?=(?:put|place|move|bring|take|transfer|carry|set)\b)", r"\1 "),
+    # "each of regions H, I and J can only hold one block, so put the three blocks into them": the world's
+    # one-block rule, and the regions named for the goal that follows
+    (
+        r"^\s*each\s+of\s+(?:the\s+)?(regions\s+[e-j](?:\s*,\s*[e-j])*\s*,?\s*and\s+[e-j])\s+"
+        r"(?:(?:can|should|may|must|will|shall)\s+)?(?:only\s+)?(?:hold|take|contain|get|end\s+up\s+with)\s+"
+        r"(?:only\s+|exactly\s+)?(?:one|a\s+single)\s+(?:block|object)\s*,\s*(?:so\s+)?"
+        r"(.*?)\b(?:those\s+regions|them)\b",
+        r"\2 \1 , one block per region ",
+    ),
+    # a reason that says again that the places kept empty must stay so: "keep regions F, G and H empty in
+    # the meantime, as they must stay clear"
+    (
+        r"(\b(?:empty|clear|free|nothing)\b[^,]*),\s*(?:as|since|because)\s+they\s+(?:must|have\s+to|need\s+to)\s+"
+        r"(?:stay|remain|be\s+kept)\s+(?:empty|clear|free)\s*$",
+        r"\1",
+    ),
+    # a heading that forbids places: "Forbidden meanwhile: regions F, G and H"
+    (
+        rf"^\s*(?:forbidden|prohibited|off\s+limits|keep\s+(?:empty|clear|free))\s*({PERIOD_WORDS})?\s*:\s*"
+        r"(?=(?:the\s+)?(?:regions?\s+)?[e-j]\b)",
+        r"\1 , nothing on ",
+    ),
+    # "regions H, I and J are reserved, so never put any object on them": the reason said as the rule it
+    # gives, read only where a prohibition on them follows
+    (
+        rf"\b(?:are|is)\s+(?:reserved|in\s+use|off\s+limits|blocked)\b(?=\s*(?:{PERIOD_WORDS})?\s*,\s*"
+        r"(?:do\s+not|never|put\s+nothing|place\s+nothing|nothing)\b[^,]*?\b(?:on|in|onto|into)\s+them\s*$)",
+        "must stay empty",
+    ),
+    # "put one block each into regions H, I and J": one block in each of them
+    (
+        r"\bone\s+(block|object|cube|pillar|piece|item)\s+each\s+(?:in|into|on|onto|to)\s+(?=(?:the\s+)?regions\b)",
+        r"one \1 in each of ",
+    ),
     (
         r"\b(?:do\s+not|don\s*'\s*t)\s+let\s+(?:any\s+|an?\s+|the\s+)?(?:robot\s+)?(?:arms?|robots?)\s+",
         "no arm may ",
@@ -372,6 +435,16 @@ REWRITES: tuple[tuple[str, str], ...] = (
     ),
 )
 
+# "would you mind moving ...": a request, read as the verb
+GERUND_VERBS = {
+    "moving": "move",
+    "transferring": "transfer",
+    "bringing": "bring",
+    "carrying": "carry",
+    "taking": "take",
+    "swapping": "swap",
+    "exchanging": "exchange",
+}
 # "avoid placing", "refrain from touching", "without putting": a negated verb
 NEGATED_GERUNDS = {
     "placing": "place",
@@ -385,6 +458,15 @@ NEGATED_GERUNDS = {
 REWRITES += tuple(
     (rf"\b(?:avoid|refrain\s+from)\s+{gerund}\b", f"do not {verb}")
     for gerund, verb in NEGATED_GERUNDS.items()
+)
+REWRITES += tuple(
+    (rf"\bplease\s+mind\s+{gerund}\b", f"please {verb}")  # "would you mind moving ..." (after "would you")
+    for gerund, verb in (GERUND_VERBS | NEGATED_GERUNDS).items()
+)
+REWRITES += tuple(
+    # a negated modal before a gerund (non-native): "the arm cannot touching the blue block"
+    (rf"\b(cannot|must\s+not|should\s+not|do\s+not)\s+{gerund}\b", rf"\1 {verb}")
+    for gerund, verb in (GERUND_VERBS | NEGATED_GERUNDS).items()
 )
 REWRITES += tuple(
     (rf"\s*,?\s*\b(?:without\s+(?:ever\s+)?|never\s+){gerund}\b", f" and never {verb}")
@@ -422,6 +504,8 @@ SHORT_TYPOS = {
     "adn": "and",
     "nad": "and",
     "taht": "that",
+    "bleu": "blue",
+    "bule": "blue",
 }
 
 
