@@ -18,21 +18,12 @@ import sys
 from pathlib import Path
 from typing import Any
 
-from nl2hltl2plan.errors import Nl2Hltl2PlanError
-from nl2hltl2plan.language.grounding import scene_types
-from nl2hltl2plan.language.learned.inference import (
-    DEFAULT_POLICY,
-    LearnedParse,
-    ParseContext,
-    grammar_complete,
-    grammar_first_reading,
-    load_model,
-    structure_reading,
-)
+from nl2hltl2plan.language.learned.inference import grammar_complete, load_model
+from nl2hltl2plan.language.learned.slot_model import SlotModel
 from nl2hltl2plan.language.learned.span_order import POINTING
-from nl2hltl2plan.language.learned.structure import load_structure
+from nl2hltl2plan.language.learned.structure import StructureModel, load_structure
 from nl2hltl2plan.language.learned.structured import same_reading
-from nl2hltl2plan.suites.alfred.structure_validation import _ok
+from nl2hltl2plan.suites.alfred.structure_validation import both_readings, converts
 
 # (rescue, override, override when the reading points back, doubt); the first is the shipped policy
 GRID = (
@@ -44,19 +35,15 @@ GRID = (
 )
 
 
-def record(row: dict[str, Any], model: Any, structure: Any) -> dict[str, Any]:
-    ctx = ParseContext(scene_types(row["scene"]), row["scene"], None, DEFAULT_POLICY, model)
-    try:
-        g = grammar_first_reading(row["instruction"], ctx)
-    except Nl2Hltl2PlanError:
-        g = LearnedParse(instruction=row["instruction"], unparsed=["refused"])
-    s = structure_reading(row["instruction"], ctx, structure)
+def record(row: dict[str, Any], model: SlotModel, structure: StructureModel) -> dict[str, Any]:
+    """What every rule of the grid needs to know of one row's two readings."""
+    g, s = both_readings(row, model, structure)
     rels = {x.relation for x in structure.read(row["instruction"]).spans}
     return {
-        "g_ok": _ok(g.model_copy(deep=True), row),
+        "g_ok": converts(g.model_copy(deep=True), row),
         "g_complete": grammar_complete(g),
         "m": s is not None,
-        "m_ok": s is not None and _ok(s[0].model_copy(deep=True), row),
+        "m_ok": s is not None and converts(s[0].model_copy(deep=True), row),
         "conf": s[1] if s else 0.0,
         "points": bool(rels & set(POINTING)),
         "same": s is not None and bool(g.tasks) and same_reading(s[0].tasks, s[0].before, g.tasks, g.before),
