@@ -177,6 +177,7 @@ _BUT_BEFORE = re.compile(
     re.IGNORECASE,
 )
 _FIRST_OPENER = re.compile(r"^\s*(?:first|firstly|start|begin|to\s+(?:start|begin))\b", re.IGNORECASE)
+_LATER_WORD = re.compile(r"\b(?:then|finally|lastly|after\s+that|afterwards?|next)\b", re.IGNORECASE)
 
 
 def _keeps_but_first(text: str, m: re.Match[str]) -> bool:
@@ -185,9 +186,6 @@ def _keeps_but_first(text: str, m: re.Match[str]) -> bool:
     start = sentence_start(text, m.start())
     rest = re.split(r"[.;!?]", text[m.end() :], maxsplit=1)[0]
     return _FIRST_OPENER.match(text[start : m.start()]) is not None or _LATER_WORD.search(rest) is not None
-
-
-_LATER_WORD = re.compile(r"\b(?:then|finally|lastly|after\s+that|afterwards?|next)\b", re.IGNORECASE)
 
 
 # "grab the apple and the tomato and put them (both) in the fridge": the plural pronoun is the list, so

@@ -50,8 +50,6 @@ def _verbs() -> frozenset[str]:
 _VERBS = _verbs()
 # words that name every earlier task ("once everything else is done", "after all previous tasks")
 _ALL_WORDS = frozenset("all everything every previous above earlier other rest else preceding".split())
-
-
 # temporal words whose place in the sentence matters to its span ("X before putting the pan": RPRE)
 _TEMPORAL = frozenset(
     "before after until first then finally lastly once when whenever while prior following next".split()
