@@ -10,9 +10,8 @@ Sets (never test50, never the excluded trials):
 - `faithful_seen` / `faithful_unseen`: `faithful.compose_faithful` (the earlier validation's 25
   templates) over valid_seen / valid_unseen;
 - `refsdev_seen` / `refsdev_unseen` / `refsheld_seen` / `refsheld_unseen` / `refsnew_seen` / `refsnew_unseen`:
-  `compose_refs.compose_refs`
-  (the paper's multi-agent style: tasks named by their object, "at any time"; development and held-out
-  phrase families).
+  `compose_refs.compose_refs` (the paper's multi-agent style: tasks named by their object, "at any time";
+  the development phrase family, the held-out one and the newer held-out one).
 A name with `:SEED` composes the set with that seed (`faithful_unseen:21`).
 
 For each instruction the grammar-first reading and the structure model's reading are computed once;
