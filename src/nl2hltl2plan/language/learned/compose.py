@@ -320,8 +320,10 @@ def _chain(
     rels = ["FREE" if free_first else "START"]
     targets: list[int | None] = [None]
     for i in range(1, len(clauses)):
-        if style.refs and not ending_rel and rng.random() < 0.3 and (made := _pointing(i, clauses, tasks,
-                                                                                       style.refs, rng)):
+        made = None
+        if style.refs and not ending_rel and rng.random() < 0.3:  # three in ten point back where they can
+            made = _pointing(i, clauses, tasks, style.refs, rng)
+        if made:
             b.add(". " + made[0].replace("{x}", "{" + str(i) + "}"), {str(i): clauses[i]})
             rels.append(made[1])
             targets.append(made[2])
