@@ -6,10 +6,10 @@
 Sets with ground truth (never test50, never the excluded trials): `faithful_seen`, `faithful_unseen`,
 `trainstyle_unseen`, `heldout_unseen`, the reference-style `refsdev_seen/unseen`, `refsheld_seen/unseen`
 and `refsnew_seen/unseen` (`suites.alfred.structure_validation.rows_of_set`; `NAME:SEED` composes one with
-another seed), `plain`
-(issue 23's user-style set), `users` and `users_heldout` (tests/language/data/styles/). A composed set
-depends on the lexicon (its text-faithful labels), so `--save-rows DIR` keeps the rows and `--rows DIR` scores
-another version of the code on exactly those rows (before/after on the same instructions).
+another seed), `plain` (issue 23's user-style set), `users` and `users_heldout` (tests/language/data/styles/).
+A composed set depends on the lexicon (its text-faithful labels), so `--save-rows DIR` keeps the rows and
+`--rows DIR` scores another version of the code on exactly those rows (before/after on the same
+instructions).
 
 Classes of a failure (the default offline backend, its reading after the top candidate of each
 ambiguous word, then check 1, `accounting.account`):

@@ -15,24 +15,17 @@ from __future__ import annotations
 import argparse
 import json
 import sys
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from nl2hltl2plan.errors import Nl2Hltl2PlanError
-from nl2hltl2plan.language.grounding import scene_types
-from nl2hltl2plan.language.learned.inference import (
-    DEFAULT_POLICY,
-    LearnedParse,
-    ParseContext,
-    grammar_complete,
-    grammar_first_reading,
-    load_model,
-    structure_reading,
-)
+from nl2hltl2plan.language.learned.inference import grammar_complete, load_model
+from nl2hltl2plan.language.learned.slot_model import SlotModel
 from nl2hltl2plan.language.learned.span_order import POINTING
-from nl2hltl2plan.language.learned.structure import load_structure
-from nl2hltl2plan.language.learned.structured import same_reading
-from nl2hltl2plan.suites.alfred.structure_validation import _ok
+from nl2hltl2plan.language.learned.structure import StructureModel, load_structure
+from nl2hltl2plan.language.learned.structured import StructurePolicy, decide, same_reading
+from nl2hltl2plan.language.task_specs import BaseTaskSpec
+from nl2hltl2plan.suites.alfred.structure_validation import both_readings, converts
 
 # (rescue, override, override when the reading points back, doubt); the first is the shipped policy
 GRID = (
@@ -44,36 +37,36 @@ GRID = (
 )
 
 
-def record(row: dict[str, Any], model: Any, structure: Any) -> dict[str, Any]:
-    ctx = ParseContext(scene_types(row["scene"]), row["scene"], None, DEFAULT_POLICY, model)
-    try:
-        g = grammar_first_reading(row["instruction"], ctx)
-    except Nl2Hltl2PlanError:
-        g = LearnedParse(instruction=row["instruction"], unparsed=["refused"])
-    s = structure_reading(row["instruction"], ctx, structure)
+@dataclass(frozen=True)
+class Record:
+    """What every rule of the grid needs to know of one row's two readings."""
+
+    grammar: tuple[list[BaseTaskSpec], list[tuple[str, str]], bool]  # tasks, before, complete
+    model: tuple[list[BaseTaskSpec], list[tuple[str, str]], float] | None  # tasks, before, confidence
+    grammar_ok: bool  # the grammar-first reading converts the row
+    model_ok: bool  # the structure model's reading converts it
+    points: bool  # the model's reading has a span that points back
+    same: bool  # both readings state the same tasks and order
+
+
+def record(row: dict[str, Any], model: SlotModel, structure: StructureModel) -> Record:
+    g, s = both_readings(row, model, structure)
     rels = {x.relation for x in structure.read(row["instruction"]).spans}
-    return {
-        "g_ok": _ok(g.model_copy(deep=True), row),
-        "g_complete": grammar_complete(g),
-        "m": s is not None,
-        "m_ok": s is not None and _ok(s[0].model_copy(deep=True), row),
-        "conf": s[1] if s else 0.0,
-        "points": bool(rels & set(POINTING)),
-        "same": s is not None and bool(g.tasks) and same_reading(s[0].tasks, s[0].before, g.tasks, g.before),
-    }
+    return Record(
+        grammar=(g.tasks, g.before, grammar_complete(g)),
+        model=(s[0].tasks, s[0].before, s[1]) if s else None,
+        grammar_ok=converts(g.model_copy(deep=True), row),
+        model_ok=s is not None and converts(s[0].model_copy(deep=True), row),
+        points=bool(rels & set(POINTING)),
+        same=s is not None and bool(g.tasks) and same_reading(s[0].tasks, s[0].before, g.tasks, g.before),
+    )
 
 
-def choice(r: dict[str, Any], rescue: float, override: float, pointing: float, doubt: float) -> bool:
-    """Whether the rule converts the instruction."""
-    if not r["m"]:
-        return r["g_ok"]
-    if not r["g_complete"]:
-        return r["m_ok"] if r["conf"] >= rescue else r["g_ok"]
-    if r["same"]:
-        return r["g_ok"]
-    if r["conf"] >= (pointing if r["points"] else override):
-        return r["m_ok"]
-    return False if r["conf"] < doubt else r["g_ok"]
+def converted(r: Record, rescue: float, override: float, pointing: float, doubt: float) -> bool:
+    """Whether the rule converts the instruction: `structured.decide` with the override threshold
+    `pointing` for a reading that points back."""
+    rule = StructurePolicy(rescue=rescue, override=pointing if r.points else override, doubt=doubt)
+    return {"grammar": r.grammar_ok, "model": r.model_ok, "neither": False}[decide(r.grammar, r.model, rule)]
 
 
 def main() -> int:
@@ -89,17 +82,17 @@ def main() -> int:
     }
     print("| rescue, override, override pointing back, doubt | " + " | ".join(sets) + " | all |")
     print("| --- |" + " --- |" * (len(sets) + 1))
-    shipped = {s: sum(choice(r, *GRID[0]) for r in recs[s]) for s in sets}
+    shipped = {s: sum(converted(r, *GRID[0]) for r in recs[s]) for s in sets}
     for rule in GRID:
-        got = {s: sum(choice(r, *rule) for r in recs[s]) for s in sets}
+        got = {s: sum(converted(r, *rule) for r in recs[s]) for s in sets}
         cells = [str(got[s]) if rule == GRID[0] else f"{got[s] - shipped[s]:+d}" for s in sets]
         total = sum(got.values()) - (0 if rule == GRID[0] else sum(shipped.values()))
         print(f"| {rule} | " + " | ".join(cells) + f" | {total if rule == GRID[0] else f'{total:+d}'} |")
     for s in sets:
-        back = [r for r in recs[s] if r["points"] and r["m"] and r["g_complete"] and not r["same"]]
+        back = [r for r in recs[s] if r.points and r.model and r.grammar[2] and not r.same]
         print(
             f"{s}: {len(back)} readings that point back differ from a complete grammar reading; the model "
-            f"right in {sum(r['m_ok'] for r in back)}, the grammar in {sum(r['g_ok'] for r in back)}"
+            f"right in {sum(r.model_ok for r in back)}, the grammar in {sum(r.grammar_ok for r in back)}"
         )
     return 0
 

@@ -40,10 +40,11 @@ from nl2hltl2plan.language.grounding import (
     find_mentions,
     lexicon,
     lookup,
+    sentence_start,
     tokens,
 )
 from nl2hltl2plan.language.landmarks import NEAR_WORDS, landmark_destinations, pair_start
-from nl2hltl2plan.language.negations import unforbidden_verb
+from nl2hltl2plan.language.negations import about_order, unforbidden_verb
 from nl2hltl2plan.language.parse_usage import IMPLIED_TYPES, ParseUsage
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, ConstraintSpec
 
@@ -337,7 +338,7 @@ def _words(
             "negation" in cats
             and guard is None
             and not _until_guard(instruction, toks[i], parse)
-            and not _free_order(instruction, toks[i])
+            and not about_order(instruction, toks[i])
         ):
             unread = Unread(w, "negation", NO_CONSTRAINT)
         elif _count_value(cats, w) is not None or cats & {"quantifier_all", "quantifier_vague"}:
@@ -367,15 +368,8 @@ def _locative_word(
 
 def _after_negation(instruction: str, tok: tuple[str, int, int]) -> bool:
     """Does a negation come before the word in its sentence ("do not X unless Y": the negation's guard)?"""
-    start = max((m.end() for m in re.finditer(r"[.;!?]", instruction[: tok[1]])), default=0)
+    start = sentence_start(instruction, tok[1])
     return any("negation" in categories(w) for w, _, _ in tokens(instruction[start : tok[1]]))
-
-
-def _free_order(instruction: str, tok: tuple[str, int, int]) -> bool:
-    """A negation about the order itself ("the order is not specified", "in no particular order")."""
-    start = max((m.end() for m in re.finditer(r"[.;!?]", instruction[: tok[1]])), default=0)
-    end = tok[2] + len(re.split(r"[.;!?]", instruction[tok[2] :], maxsplit=1)[0])
-    return re.search(r"\b(order|sequence)\b", instruction[start:end].lower()) is not None
 
 
 def _until_guard(instruction: str, tok: tuple[str, int, int], parse: ParseUsage) -> bool:

@@ -238,6 +238,11 @@ def tokens(text: str) -> list[tuple[str, int, int]]:
     return [(m.group(0), m.start(), m.end()) for m in _TOKEN.finditer(text.lower())]
 
 
+def sentence_start(text: str, at: int) -> int:
+    """Where the sentence around character `at` begins: just after the last ".", ";", "!" or "?" before it."""
+    return max((m.end() for m in re.finditer(r"[.;!?]", text[:at])), default=0)
+
+
 def _plurals(word: str) -> set[str]:
     out = {word + "s", word + "es", word + "'s"}
     if word.endswith("y") and len(word) > 2 and word[-2] not in "aeiou":

@@ -27,7 +27,7 @@ def near_word_before(toks: list[tuple[str, int, int]], start: int) -> bool:
         j -= 1
     if j < 0:
         return False
-    if toks[j][0] in NEAR_WORDS - {"next"}:
+    if toks[j][0] in NEAR_WORDS - {"next"}:  # "next" alone is an order word: only "next to" is nearness
         return True
     return j >= 1 and (toks[j - 1][0], toks[j][0]) in _NEAR_TWO
 

@@ -30,7 +30,14 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 from nl2hltl2plan.language.content_words import Unread, stems
-from nl2hltl2plan.language.grounding import AffordanceLookup, Grounder, Mention, find_mentions, tokens
+from nl2hltl2plan.language.grounding import (
+    AffordanceLookup,
+    Grounder,
+    Mention,
+    find_mentions,
+    sentence_start,
+    tokens,
+)
 from nl2hltl2plan.language.spec_builder import spec_name
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, ConstraintSpec
 from nl2hltl2plan.logic.atom import Atom
@@ -129,7 +136,7 @@ def read_negations(
         goes_on = w in ("or", "nor") and bool(found) and not instruction[found[-1].end : toks[i][1]].strip()
         if (
             (w not in CUES and not goes_on)
-            or _about_order(instruction, toks[i])
+            or about_order(instruction, toks[i])
             or _an_ordering(instruction, toks[i])
             or any(n.start <= toks[i][1] < n.end for n in found)
         ):
@@ -152,9 +159,9 @@ def _an_ordering(instruction: str, tok: tuple[str, int, int]) -> bool:
     return re.search(r"\b(until|till|before|unless) you\b", rest) is not None
 
 
-def _about_order(instruction: str, tok: tuple[str, int, int]) -> bool:
+def about_order(instruction: str, tok: tuple[str, int, int]) -> bool:
     """ "the order is not specified", "in no particular order": a negation about the order itself."""
-    start = max((m.end() for m in re.finditer(r"[.;!?]", instruction[: tok[1]])), default=0)
+    start = sentence_start(instruction, tok[1])
     end = tok[2] + len(re.split(r"[.;!?]", instruction[tok[2] :], maxsplit=1)[0])
     return re.search(r"\b(order|sequence)\b", instruction[start:end].lower()) is not None
 
@@ -232,7 +239,7 @@ def _previous_destination(
     text: str, toks: list[tuple[str, int, int]], i: int, mentions: list[Mention], grounder: Grounder
 ) -> list[str]:
     """The destination of the clause before the cue in its sentence ("put the keys on the sofa, not ...")."""
-    start = max((m.end() for m in re.finditer(r"[.;!?]", text[: toks[i][1]])), default=0)
+    start = sentence_start(text, toks[i][1])
     words = [w for w, _, _ in toks]
     before = [m for m in mentions if start <= m.char_start < toks[i][1]]
     for m in reversed(before):

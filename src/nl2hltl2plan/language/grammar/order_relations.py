@@ -54,7 +54,7 @@ def _marker_edges(k: int, tasks: Tasks, free: set[int], b: TaskBuilder, text: st
             scope = list(range(min(u.tasks))) if ref == IN_SENTENCE else others if ref == OF_ALL else earlier
             edges.update((a, b2) for a in scope if a not in free for b2 in u.tasks)
         elif kind == G.AFTER_ALL:  # "once all that is done" / "once everything else is done" (all others)
-            scope = others if re.search(r"\b(?:else|other)\b", ref, re.I) else earlier
+            scope = others if _names_the_others(ref) else earlier
             edges.update((a, b2) for a in scope for b2 in u.tasks)
         elif kind == G.BEFORE_PREV and outer is not None:  # "X. Before that, Y, then Z": Y, Z before X
             edges.update((b2, a) for a in outer.tasks for b2 in u.tasks)
@@ -69,6 +69,11 @@ def _marker_edges(k: int, tasks: Tasks, free: set[int], b: TaskBuilder, text: st
         edges.update((a, b2) for a in seq_prev.tasks for b2 in u.tasks)
 
 
+def _names_the_others(ref: str) -> bool:
+    """ "everything else", "the other tasks": every other task, also those written after the reference."""
+    return re.search(r"\b(?:else|other)\b", ref, re.I) is not None
+
+
 def by_position(ref: str, earlier: list[int], prev: Unit | None, others: list[int]) -> list[int] | None:
     """The tasks a reference by position names ("the first tasks", "the previous task", "everything
     else": `G.GENERIC_REF`); None when it names tasks another way (by their objects). "Everything else" /
@@ -76,7 +81,7 @@ def by_position(ref: str, earlier: list[int], prev: Unit | None, others: list[in
     m = G.GENERIC_REF.match(_normal(ref))
     if m is None:
         return None
-    if re.search(r"\b(?:else|other)\b", ref, re.I):
+    if _names_the_others(ref):
         return others
     which, noun = (m.groupdict().get("which") or "").lower(), (m.groupdict().get("noun") or "").lower()
     singular = bool(noun) and not noun.endswith("s")

@@ -7,7 +7,7 @@ from dataclasses import dataclass, field
 
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.phrases import tokens
-from nl2hltl2plan.language.grounding import find_mentions
+from nl2hltl2plan.language.grounding import find_mentions, sentence_start
 
 
 @dataclass
@@ -177,17 +177,15 @@ _BUT_BEFORE = re.compile(
     re.IGNORECASE,
 )
 _FIRST_OPENER = re.compile(r"^\s*(?:first|firstly|start|begin|to\s+(?:start|begin))\b", re.IGNORECASE)
+_LATER_WORD = re.compile(r"\b(?:then|finally|lastly|after\s+that|afterwards?|next)\b", re.IGNORECASE)
 
 
 def _keeps_but_first(text: str, m: re.Match[str]) -> bool:
     """Is "but first" better left to the sentence's other order words: the sentence opens with "first" /
     "start by", or goes on with "then" / "finally" after it (the structure model reads those whole)?"""
-    start = max((x.end() for x in re.finditer(r"[.;!?]", text[: m.start()])), default=0)
+    start = sentence_start(text, m.start())
     rest = re.split(r"[.;!?]", text[m.end() :], maxsplit=1)[0]
     return _FIRST_OPENER.match(text[start : m.start()]) is not None or _LATER_WORD.search(rest) is not None
-
-
-_LATER_WORD = re.compile(r"\b(?:then|finally|lastly|after\s+that|afterwards?|next)\b", re.IGNORECASE)
 
 
 # "grab the apple and the tomato and put them (both) in the fridge": the plural pronoun is the list, so

@@ -21,10 +21,10 @@ from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter
 # Relation of a span to what came before it (text order): START the first; SEQ after the current step;
 # PAR in the current step (no order with it: "X and Y"); BARE a new sentence with no temporal word ("X.
 # Y.", "X. Also Y."): no order of its own (ANNOTATION_GUIDE.md), a step of its own that a later "then"
-# follows and "finally" comes after; ANY the
-# same, the order explicitly left open ("X and Y in any order"); FREE no order with anything (a chain of
-# its own); PRE a new step before the current one ("before you X, Y": Y is PRE); LAST ("finally Y")
-# after every earlier span not allowed in any order or at any time (benchmark/ANNOTATION_GUIDE.md).
+# follows and "finally" comes after; ANY the same as PAR, the order explicitly left open ("X and Y in any
+# order"); FREE no order with anything (a chain of its own); PRE a new step before the current one
+# ("before you X, Y": Y is PRE); LAST ("finally Y") after every earlier span not allowed in any order or
+# at any time (benchmark/ANNOTATION_GUIDE.md).
 # Relations that point back: REF after one earlier span named by its object ("after putting the pan, Y"),
 # RPRE before one ("before you put the pan, Y", the pan's task earlier in the text), ALL after every
 # earlier span ("once everything else is done, Y"); which span REF / RPRE point at is the relation
@@ -81,6 +81,15 @@ TRAIN_REFS = RefJoiners(
 
 ON_TYPES = {"CounterTop", "DiningTable", "SideTable", "CoffeeTable", "Desk", "Bed", "Sofa", "ArmChair",
             "Chair", "Dresser", "Shelf", "Ottoman", "TVStand", "Toilet", "StoveBurner", "Plate"}
+# verbs whose particle "{v} the {o}" would drop ("turn on", "look at", "pick up"): no reference by them
+NO_REFERENCE_VERBS = ("turn", "look", "pick")
+
+
+def placed_words(t: BaseTaskSpec, o: str) -> dict[str, str]:
+    """Where task `t` leaves its object, for the object words `o`: `q` "on" / "in" its receptacle, `p`
+    "is on" / "are in" ..."""
+    q = "on" if (t.receptacle or [""])[0] in ON_TYPES else "in"
+    return {"q": q, "p": ("are " if o.endswith("s") else "is ") + q}
 
 
 def words_for(text: str, types: list[str] | None) -> str | None:
@@ -105,14 +114,13 @@ def reference(
     verb = clauses[j].split(" ", 1)[0].lower()
     t = tasks[j]
     o = words_for(clauses[j], t.object) if only_one(j, tasks) else None
-    if not o or verb not in VERB_GERUND or verb in ("turn", "look", "pick"):
+    if not o or verb not in VERB_GERUND or verb in NO_REFERENCE_VERBS:
         return None
     names = {"v": verb, "g": VERB_GERUND[verb], "gp": VERB_PARTICIPLE[verb], "o": o, "x": "{x}"}
     kind = rng.choice(["ref", "ref", "ref_state", "ref_pre"])
     r = words_for(clauses[j], t.receptacle)
     if kind == "ref_state" and r and t.kind != "examine_in_light":
-        q = "on" if (t.receptacle or [""])[0] in ON_TYPES else "in"
-        names |= {"r": r, "q": q, "p": ("are " if o.endswith("s") else "is ") + q}
+        names |= {"r": r, **placed_words(t, o)}
     elif kind == "ref_state":
         kind = "ref"
     return rng.choice(getattr(refs, kind)).format(**names), "RPRE" if kind == "ref_pre" else "REF"
@@ -312,8 +320,10 @@ def _chain(
     rels = ["FREE" if free_first else "START"]
     targets: list[int | None] = [None]
     for i in range(1, len(clauses)):
-        if style.refs and not ending_rel and rng.random() < 0.3 and (made := _pointing(i, clauses, tasks,
-                                                                                       style.refs, rng)):
+        made = None
+        if style.refs and not ending_rel and rng.random() < 0.3:  # three in ten point back where they can
+            made = _pointing(i, clauses, tasks, style.refs, rng)
+        if made:
             b.add(". " + made[0].replace("{x}", "{" + str(i) + "}"), {str(i): clauses[i]})
             rels.append(made[1])
             targets.append(made[2])

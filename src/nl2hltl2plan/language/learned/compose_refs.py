@@ -15,7 +15,14 @@ from __future__ import annotations
 import random
 from dataclasses import dataclass
 
-from nl2hltl2plan.language.learned.compose import ON_TYPES, VERB_GERUND, VERB_PARTICIPLE, only_one, words_for
+from nl2hltl2plan.language.learned.compose import (
+    NO_REFERENCE_VERBS,
+    VERB_GERUND,
+    VERB_PARTICIPLE,
+    only_one,
+    placed_words,
+    words_for,
+)
 from nl2hltl2plan.language.learned.data import Composition
 from nl2hltl2plan.language.learned.faithful import FaithfulExample, by_floor_plan
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter, transitive_reduction
@@ -113,7 +120,7 @@ def _pick(
         return rng.choice(fam.last).format(**f), [j for j in range(i) if j not in free], [], False
     j = rng.randrange(i)
     t = tasks[j]
-    clear = only_one(j, tasks) and forms[j]["vg"] not in ("turning", "looking", "picking")
+    clear = only_one(j, tasks) and forms[j]["vg"] not in [VERB_GERUND[v] for v in NO_REFERENCE_VERBS]
     o = words_for(t.text, t.object) if clear else None
     verbs = {"g": forms[j]["vg"], "gp": forms[j]["vp"], "v": forms[j]["v"]}
     if choice == "ref" and o:
@@ -122,9 +129,7 @@ def _pick(
         return rng.choice(fam.ref_pre).format(**f, **verbs, o=o), [], [j], False
     r = words_for(t.text, t.receptacle)
     if choice == "ref_state" and o and r and t.kind != "examine_in_light":
-        q = "on" if (t.receptacle or [""])[0] in ON_TYPES else "in"
-        p = ("are " if o.endswith("s") else "is ") + q
-        return rng.choice(fam.ref_state).format(**f, o=o, r=r, p=p, q=q), [j], [], False
+        return rng.choice(fam.ref_state).format(**f, o=o, r=r, **placed_words(t, o)), [j], [], False
     return None
 
 

@@ -32,6 +32,8 @@ _STOP = frozenset(
     "you your you've you're i me my we our up off out for so once when after before as do done did has "
     "have had".split()
 )
+# one training case: the instruction's words, its spans (token ranges), a span that points back, its target
+HeadCase = tuple[list[str], list[tuple[int, int]], int, int]
 _BASE = {v: k for k, v in VERB_PARTICIPLE.items()} | {v: k for k, v in VERB_GERUND.items()}
 _END = {".", "!", "?", ";"}
 
@@ -110,7 +112,7 @@ class RelationHead:
         return j, float(p[j])
 
     @classmethod
-    def fit(cls, cases: list[tuple[list[str], list[tuple[int, int]], int, int]]) -> RelationHead:
+    def fit(cls, cases: list[HeadCase]) -> RelationHead:
         """Fit on (words, spans, i, the gold target of span i): every earlier span is a candidate, the
         gold one positive (scikit-learn, lbfgs: deterministic)."""
         from sklearn.linear_model import LogisticRegression

@@ -4,14 +4,15 @@ span's temporal relation to the spans before it (`compose.RELATIONS`).
 Tags: `B-<REL>` starts a span, `I` continues it, `O` is a connective or filler word ("then", "once
 you've", "in any order"). Features are the word, its neighbours (3 each side), the first words of its
 sentence ("before you ..."), and the instruction's last words ("... in that order"), so that a
-connective far from the span's first word still labels it. Training uses CRFsuite (`python-crfsuite`,
+connective far from the span's first word still labels it, and features of pointing back that do not
+depend on the connective's words (`_pointing_features`). Training uses CRFsuite (`python-crfsuite`,
 the `train` extra); the artifact holds only numpy arrays (feature strings, a weight matrix, the
 transition matrix, the relation head's weights) and inference is numpy Viterbi / forward-backward, so the
 core install reads it. A span tagged REF / RPRE (it points back at one earlier span) gets that span from
 the relation head (`relation_head.py`).
 
     >>> m = StructureModel.load()
-    >>> [(s.text, s.relation) for s in m.read("Put the mug in the sink, then put the apple in the fridge.")]
+    >>> [(s.text, s.relation) for s in m.read("Put the mug in the sink. Then put the apple in the fridge.")]
     [('Put the mug in the sink', 'START'), ('put the apple in the fridge', 'SEQ')]
 """
 
@@ -50,8 +51,6 @@ def _verbs() -> frozenset[str]:
 _VERBS = _verbs()
 # words that name every earlier task ("once everything else is done", "after all previous tasks")
 _ALL_WORDS = frozenset("all everything every previous above earlier other rest else preceding".split())
-
-
 # temporal words whose place in the sentence matters to its span ("X before putting the pan": RPRE)
 _TEMPORAL = frozenset(
     "before after until first then finally lastly once when whenever while prior following next".split()

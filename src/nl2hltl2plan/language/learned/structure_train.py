@@ -15,11 +15,10 @@ from pathlib import Path
 import numpy as np
 
 from nl2hltl2plan.language.learned.compose import TRAIN_STYLE, Synth, synthesise
-from nl2hltl2plan.language.learned.relation_head import RelationHead
+from nl2hltl2plan.language.learned.relation_head import HeadCase, RelationHead
 from nl2hltl2plan.language.learned.structure import StructureModel, features, tags_of, token_ranges, tokenize
 
 N_TRAIN = 10000
-HeadCase = tuple[list[str], list[tuple[int, int]], int, int]
 
 
 def training_data(n: int = N_TRAIN, seed: int = 0) -> list[Synth]:

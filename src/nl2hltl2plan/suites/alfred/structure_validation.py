@@ -10,9 +10,8 @@ Sets (never test50, never the excluded trials):
 - `faithful_seen` / `faithful_unseen`: `faithful.compose_faithful` (the earlier validation's 25
   templates) over valid_seen / valid_unseen;
 - `refsdev_seen` / `refsdev_unseen` / `refsheld_seen` / `refsheld_unseen` / `refsnew_seen` / `refsnew_unseen`:
-  `compose_refs.compose_refs`
-  (the paper's multi-agent style: tasks named by their object, "at any time"; development and held-out
-  phrase families).
+  `compose_refs.compose_refs` (the paper's multi-agent style: tasks named by their object, "at any time";
+  the development phrase family, the held-out one and the newer held-out one).
 A name with `:SEED` composes the set with that seed (`faithful_unseen:21`).
 
 For each instruction the grammar-first reading and the structure model's reading are computed once;
@@ -41,7 +40,8 @@ from nl2hltl2plan.language.learned.inference import (
     load_model,
     structure_reading,
 )
-from nl2hltl2plan.language.learned.structure import load_structure
+from nl2hltl2plan.language.learned.slot_model import SlotModel
+from nl2hltl2plan.language.learned.structure import StructureModel, load_structure
 from nl2hltl2plan.language.learned.structured import StructurePolicy, decide
 from nl2hltl2plan.language.scoring import match
 from nl2hltl2plan.language.translate import apply_choices, top_candidates
@@ -84,7 +84,9 @@ def rows_of_set(name: str, n: int) -> list[dict[str, Any]]:
     ]
 
 
-def _ok(parse: LearnedParse, row: dict[str, Any]) -> bool:
+def converts(parse: LearnedParse, row: dict[str, Any]) -> bool:
+    """Whether a reading converts the row: complete, every word accounted for, and the benchmark's strict
+    match with the row's tasks and order."""
     if parse.unparsed or not parse.tasks:
         return False
     parse = apply_choices(parse, top_candidates(parse.ambiguities))
@@ -94,6 +96,18 @@ def _ok(parse: LearnedParse, row: dict[str, Any]) -> bool:
     except Exception:  # noqa: BLE001 - a cyclic order or a count error is a failure here
         return False
     return match(parse.tasks, parse.before, row["tasks"], row["before"], strict=True).order_ok
+
+
+def both_readings(
+    row: dict[str, Any], model: SlotModel, structure: StructureModel
+) -> tuple[LearnedParse, tuple[LearnedParse, float] | None]:
+    """The row's grammar-first reading and the structure model's (with its confidence; None: none)."""
+    ctx = ParseContext(scene_types(row["scene"]), row["scene"], None, DEFAULT_POLICY, model)
+    try:
+        g = grammar_first_reading(row["instruction"], ctx)
+    except Nl2Hltl2PlanError:  # a refusal (e.g. a contradictory order): a failure, whatever the model
+        g = LearnedParse(instruction=row["instruction"], unparsed=["refused"])
+    return g, structure_reading(row["instruction"], ctx, structure)
 
 
 def choose(g: LearnedParse, s: tuple[LearnedParse, float] | None, rule: StructurePolicy | None) -> str:
@@ -109,14 +123,9 @@ def score_set(rows: list[dict[str, Any]]) -> dict[str, dict[Any, list[int]]]:
     model, structure = load_model(), load_structure()
     out: dict[str, dict[Any, list[int]]] = {name: {} for name in CANDIDATES}
     for row in rows:
-        ctx = ParseContext(scene_types(row["scene"]), row["scene"], None, DEFAULT_POLICY, model)
-        try:
-            g = grammar_first_reading(row["instruction"], ctx)
-        except Nl2Hltl2PlanError:  # a refusal (e.g. a contradictory order): a failure, whatever the model
-            g = LearnedParse(instruction=row["instruction"], unparsed=["refused"])
-        s = structure_reading(row["instruction"], ctx, structure)
-        right = {"grammar": _ok(g.model_copy(deep=True), row), "neither": False}
-        right["model"] = s is not None and _ok(s[0].model_copy(deep=True), row)
+        g, s = both_readings(row, model, structure)
+        right = {"grammar": converts(g.model_copy(deep=True), row), "neither": False}
+        right["model"] = s is not None and converts(s[0].model_copy(deep=True), row)
         for name, rule in CANDIDATES.items():
             ok = right[choose(g, s, rule)]
             for key in (row["n_base"], "all"):
