@@ -189,8 +189,10 @@ class StructureModel:
         weights: np.ndarray,
         trans: np.ndarray,
         head: RelationHead | None = None,
+        data_sha: str = "",
     ):
         self.head = head  # which earlier span a REF / RPRE span names (None: a model from before the head)
+        self.data_sha = data_sha  # the training data's fingerprint (`structure_train.data_fingerprint`)
         self.tags = tags
         self.index = {f: i for i, f in enumerate(feature_names)}
         self.feature_names = feature_names
@@ -264,6 +266,8 @@ class StructureModel:
         }
         if self.head is not None:
             arrays["head"] = np.append(self.head.weights, self.head.bias).astype(np.float32)
+        if self.data_sha:
+            arrays["data_sha"] = np.array([self.data_sha])
         with (  # a temporary file renamed over `path`: a kill leaves the old model, never a torn one
             atomic_path(path, "structure model") as tmp,
             zipfile.ZipFile(tmp, "w", compression=zipfile.ZIP_DEFLATED) as zf,
@@ -286,6 +290,7 @@ class StructureModel:
                     z["weights"].astype(np.float64),
                     z["trans"].astype(np.float64),
                     RelationHead(head[:-1], float(head[-1])) if head is not None else None,
+                    str(z["data_sha"][0]) if "data_sha" in z.files else "",
                 )
         except (OSError, KeyError, ValueError) as exc:
             raise DataError(f"cannot read the structure model {src}: {exc}") from exc

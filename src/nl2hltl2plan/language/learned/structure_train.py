@@ -9,6 +9,7 @@ the spans that point back at an earlier one (REF / RPRE), with the gold spans.
 
 from __future__ import annotations
 
+import hashlib
 import tempfile
 from pathlib import Path
 
@@ -25,6 +26,13 @@ def training_data(n: int = N_TRAIN, seed: int = 0) -> list[Synth]:
     from nl2hltl2plan.language.learned.train import text_faithful_items
 
     return synthesise(text_faithful_items("train"), n, TRAIN_STYLE, seed)
+
+
+def data_fingerprint(data: list[Synth]) -> str:
+    """A digest of the training instructions and their labels, stored in the model: a test compares it
+    with today's training data, so a lexicon or composition change that leaves the committed model
+    stale (it no longer is what `nl2hltl2plan train language` builds) fails fast, without retraining."""
+    return hashlib.sha256("\n".join(map(repr, data)).encode()).hexdigest()
 
 
 def training_sequences(data: list[Synth]) -> list[tuple[list[list[str]], list[str]]]:
@@ -106,6 +114,7 @@ def train_and_report(out: Path, seed: int = 0) -> str:
     t0 = time.monotonic()
     data = training_data(N_TRAIN, seed)
     model = fit(training_sequences(data), head_cases(data))
+    model.data_sha = data_fingerprint(data)
     secs = time.monotonic() - t0
     model.save(out)
     shares = ", ".join(f"{k} {100 * v:.1f}%" for k, v in span_accuracy(model).items())

@@ -8,6 +8,7 @@ Trains on ALFRED train minus the excluded trials, reports slot accuracy on valid
 
 from __future__ import annotations
 
+import hashlib
 import time
 from pathlib import Path
 
@@ -32,11 +33,21 @@ def text_faithful_train() -> list[Example]:
     return [training_example(it) for it in text_faithful_items("train")]
 
 
+def data_fingerprint(examples: list[Example]) -> str:
+    """A digest of the slot model's training examples (texts and text-faithful labels), stored in its
+    meta: a test compares it with today's, so a lexicon change that leaves the committed model stale
+    fails fast. (The type ranker's cases come from the grammar's parses, too slow to recompute in a
+    test; a grammar change that alters only them is not caught.)"""
+    return hashlib.sha256("\n".join(map(repr, examples)).encode()).hexdigest()
+
+
 def train(seed: int = 0, labels: str = "text") -> SlotModel:
     """Fit on the train annotations: text-faithful labels (default) or ALFRED's, on those whose text
     states their task (`data.faithful`, the first version)."""
     if labels == "text":
-        model = SlotModel.fit(text_faithful_train(), seed=seed)
+        examples = text_faithful_train()
+        model = SlotModel.fit(examples, seed=seed)
+        model.meta["data_sha"] = data_fingerprint(examples)
     else:
         model = SlotModel.fit([e for e in load_examples()["train"] if faithful(e)], seed=seed)
     model.ranker = TypeRanker.fit(ranking_cases(model, load_examples()["train"]), seed=seed)

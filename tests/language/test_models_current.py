@@ -1,0 +1,44 @@
+"""The committed learned models are what `nl2hltl2plan train language` builds from today's code and data.
+
+Retraining takes minutes, so the check compares fingerprints of the training data instead: each model
+stores a digest of the instructions and labels it was fitted on. A lexicon, labelling or composition
+change that alters the training data fails here, naming the command that rebuilds the models (a stale
+model once read "X, then Y" as one task span while the rebuilt one did not).
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from nl2hltl2plan.language.learned import structure_train, train
+from nl2hltl2plan.language.learned.slot_model import SlotModel, packaged_path
+from nl2hltl2plan.language.learned.structure import ARTIFACT, StructureModel
+
+REBUILD = (
+    "stale: rebuild both models with "
+    "`PYTHONHASHSEED=0 nl2hltl2plan train language -o {slot} --structure-out {structure}`"
+)
+
+
+@pytest.fixture(scope="module")
+def hint() -> str:
+    return REBUILD.format(slot=packaged_path("slot_model.npz"), structure=packaged_path(ARTIFACT))
+
+
+def test_structure_model_was_trained_on_todays_data(hint: str) -> None:
+    model = StructureModel.load(packaged_path(ARTIFACT))
+    today = structure_train.data_fingerprint(structure_train.training_data())
+    assert model.data_sha == today, hint
+
+
+def test_slot_model_was_trained_on_todays_data(hint: str) -> None:
+    model = SlotModel.load(packaged_path("slot_model.npz"))
+    assert model.meta.get("data_sha") == train.data_fingerprint(train.text_faithful_train()), hint
+
+
+def test_fingerprint_sees_a_changed_label() -> None:
+    data = structure_train.training_data(n=20)
+    changed = list(data)
+    changed[3] = type(data[3])(**{**vars(data[3]), "relations": list(reversed(data[3].relations))})
+    assert changed[3].relations != data[3].relations
+    assert structure_train.data_fingerprint(changed) != structure_train.data_fingerprint(data)
