@@ -55,14 +55,15 @@ MAX_FREE = 2  # other stops kept (each doubles the subsets)
 
 def hands_walk(h: Heuristic, node: Node, rows: list[EventRow]) -> int:
     """The least walking of paths out of the robots through the kept stops, one hand each."""
-    stops = _stops(h, node, rows)
+    stops, walks = _stops(h, node, rows)
     if not stops:
         return 0
-    start = h.robot_walks_to_cells(node, np.concatenate([stop.cells for stop in stops]))
+    start = np.hstack([w for stop in stops if (w := walks[stop.row]) is not None])  # robots x stops' cells
     return hand_forest(h.nav.dm, stops, start, _successors(h, rows, stops))
 
 
-def _stops(h: Heuristic, node: Node, rows: list[EventRow]) -> list[Stop]:
+def _stops(h: Heuristic, node: Node, rows: list[EventRow]) -> tuple[list[Stop], list[np.ndarray | None]]:
+    """The kept stops, and per row the robots' walks to its cells (None: a row with no small region)."""
     def cells_of(row: EventRow) -> np.ndarray | None:
         if not row.anchors:
             return None
@@ -70,9 +71,10 @@ def _stops(h: Heuristic, node: Node, rows: list[EventRow]) -> list[Stop]:
         return cells if 0 < len(cells) <= MAX_CELLS else None
 
     cells = [cells_of(row) for row in rows]
-    nearest = [int(h.robot_walks_to_cells(node, c).min()) if c is not None else -1 for c in cells]
-    if any(c is not None and far >= INF for c, far in zip(cells, nearest, strict=True)):
-        return []  # an event no robot reaches: no claim
+    walks = [h.robot_walks_to_cells(node, c) if c is not None else None for c in cells]
+    nearest = [int(w.min()) if w is not None else -1 for w in walks]
+    if any(w is not None and far >= INF for w, far in zip(walks, nearest, strict=True)):
+        return [], walks  # an event no robot reaches: no claim
     carries = []  # (walk to the pickup and on to the put, pickup's row, put's row, their cells)
     for d, row in enumerate(rows):
         p = row.carried
@@ -103,7 +105,7 @@ def _stops(h: Heuristic, node: Node, rows: list[EventRow]) -> list[Stop]:
         if not taking and (robot_cells & as_set or any(set(s.cells.tolist()) <= as_set for s in stops)):
             continue  # free: a robot stands in it, or visiting a kept stop visits it
         stops.append(Stop(here, EMPTY_TAKE if taking else FREE, -1, i))
-    return stops
+    return stops, walks
 
 
 def _successors(h: Heuristic, rows: list[EventRow], stops: list[Stop]) -> list[int]:
