@@ -11,6 +11,7 @@ from __future__ import annotations
 import pytest
 
 from nl2hltl2plan.language.learned import structure_train, train
+from nl2hltl2plan.language.learned.data import data_fingerprint
 from nl2hltl2plan.language.learned.slot_model import SlotModel, packaged_path
 from nl2hltl2plan.language.learned.structure import ARTIFACT, StructureModel
 
@@ -27,13 +28,13 @@ def hint() -> str:
 
 def test_structure_model_was_trained_on_todays_data(hint: str) -> None:
     model = StructureModel.load(packaged_path(ARTIFACT))
-    today = structure_train.data_fingerprint(structure_train.training_data())
+    today = data_fingerprint(structure_train.training_data())
     assert model.data_sha == today, hint
 
 
 def test_slot_model_was_trained_on_todays_data(hint: str) -> None:
     model = SlotModel.load(packaged_path("slot_model.npz"))
-    assert model.meta.get("data_sha") == train.data_fingerprint(train.text_faithful_train()), hint
+    assert model.meta.get("data_sha") == data_fingerprint(train.text_faithful_train()), hint
 
 
 def test_fingerprint_sees_a_changed_label() -> None:
@@ -41,4 +42,4 @@ def test_fingerprint_sees_a_changed_label() -> None:
     changed = list(data)
     changed[3] = type(data[3])(**{**vars(data[3]), "relations": list(reversed(data[3].relations))})
     assert changed[3].relations != data[3].relations
-    assert structure_train.data_fingerprint(changed) != structure_train.data_fingerprint(data)
+    assert data_fingerprint(changed) != data_fingerprint(data)

@@ -8,7 +8,9 @@ and `valid_unseen`. Text-faithful labels and the synthetic multi-task validation
 
 from __future__ import annotations
 
+import hashlib
 import re
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from functools import lru_cache
 
@@ -103,6 +105,13 @@ class Composition:
     before: list[tuple[str, str]]
     template: str = ""
     trials: list[str] = field(default_factory=list)
+
+
+def data_fingerprint(items: Sequence[object]) -> str:
+    """A digest of training items (their reprs: dataclasses of strings, lists and numbers, the same under
+    every hash seed), stored in a model so that `tests/language/test_models_current.py` can tell, without
+    retraining, whether today's training data is still what the committed model was fitted on."""
+    return hashlib.sha256("\n".join(map(repr, items)).encode()).hexdigest()
 
 
 @lru_cache(maxsize=1)

@@ -192,7 +192,7 @@ class StructureModel:
         data_sha: str = "",
     ):
         self.head = head  # which earlier span a REF / RPRE span names (None: a model from before the head)
-        self.data_sha = data_sha  # the training data's fingerprint (`structure_train.data_fingerprint`)
+        self.data_sha = data_sha  # the training data's fingerprint (`data.data_fingerprint`)
         self.tags = tags
         self.index = {f: i for i, f in enumerate(feature_names)}
         self.feature_names = feature_names

@@ -9,13 +9,13 @@ the spans that point back at an earlier one (REF / RPRE), with the gold spans.
 
 from __future__ import annotations
 
-import hashlib
 import tempfile
 from pathlib import Path
 
 import numpy as np
 
 from nl2hltl2plan.language.learned.compose import TRAIN_STYLE, Synth, synthesise
+from nl2hltl2plan.language.learned.data import data_fingerprint
 from nl2hltl2plan.language.learned.relation_head import HeadCase, RelationHead
 from nl2hltl2plan.language.learned.structure import StructureModel, features, tags_of, token_ranges, tokenize
 
@@ -26,13 +26,6 @@ def training_data(n: int = N_TRAIN, seed: int = 0) -> list[Synth]:
     from nl2hltl2plan.language.learned.train import text_faithful_items
 
     return synthesise(text_faithful_items("train"), n, TRAIN_STYLE, seed)
-
-
-def data_fingerprint(data: list[Synth]) -> str:
-    """A digest of the training instructions and their labels, stored in the model: a test compares it
-    with today's training data, so a lexicon or composition change that leaves the committed model
-    stale (it no longer is what `nl2hltl2plan train language` builds) fails fast, without retraining."""
-    return hashlib.sha256("\n".join(map(repr, data)).encode()).hexdigest()
 
 
 def training_sequences(data: list[Synth]) -> list[tuple[list[list[str]], list[str]]]:

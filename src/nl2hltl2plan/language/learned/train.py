@@ -8,13 +8,12 @@ Trains on ALFRED train minus the excluded trials, reports slot accuracy on valid
 
 from __future__ import annotations
 
-import hashlib
 import time
 from pathlib import Path
 
 from nl2hltl2plan.domain.task_kinds import SLOTS
 from nl2hltl2plan.language.grounding import scene_types
-from nl2hltl2plan.language.learned.data import Example, faithful, load_examples
+from nl2hltl2plan.language.learned.data import Example, data_fingerprint, faithful, load_examples
 from nl2hltl2plan.language.learned.faithful import FaithfulExample, faithful_examples, training_example
 from nl2hltl2plan.language.learned.inference import parse_instruction
 from nl2hltl2plan.language.learned.ranker import RankCase, TypeRanker
@@ -31,14 +30,6 @@ def text_faithful_items(split: str) -> list[FaithfulExample]:
 def text_faithful_train() -> list[Example]:
     """The train annotations labelled as the text says (`faithful.training_example`)."""
     return [training_example(it) for it in text_faithful_items("train")]
-
-
-def data_fingerprint(examples: list[Example]) -> str:
-    """A digest of the slot model's training examples (texts and text-faithful labels), stored in its
-    meta: a test compares it with today's, so a lexicon change that leaves the committed model stale
-    fails fast. (The type ranker's cases come from the grammar's parses, too slow to recompute in a
-    test; a grammar change that alters only them is not caught.)"""
-    return hashlib.sha256("\n".join(map(repr, examples)).encode()).hexdigest()
 
 
 def train(seed: int = 0, labels: str = "text") -> SlotModel:
