@@ -201,17 +201,15 @@ _TAKE_LIST_THEN_PUT = re.compile(
 _LIGHT_FROM = re.compile(r"\blight from (?=(?:the |a |an )?(?:[a-z]+ )?(?:lamp|light)\b)", re.IGNORECASE)
 # "a rinse off bar of soap", "the rinse soap": the rinsed one (ALFRED's annotators' adjective)
 _RINSE_ADJ = re.compile(r"\b(a|an|the)\s+rinse(?:\s+off)?\s+(?=[a-z])", re.IGNORECASE)
-# "put X in A, and once that's done put Y in B" / "... and when you're done put Y ...": inside a
-# sentence, the same as "then" (at its start the leading markers read it)
-_DONE_INSIDE = re.compile(
-    r"(?<=\w)\s*,?\s+(?:and\s+)?(?:once|when|after)\s+(?:that's|that\s+is|it's|it\s+is|this\s+is|you're|"
-    r"you\s+are|you've|you\s+have)?\s*(?:done|finished|through)(?:\s+with\s+(?:that|it|this))?"
-    r"\s*,?\s+(?=[a-z])",
-    re.IGNORECASE,
-)
-# "put X in A, and after that put Y in B": inside a sentence, the same as "then"
-_AFTER_THAT_INSIDE = re.compile(
-    r"(?<=\w)\s*,?\s+(?:and\s+)?(?:after\s+(?:that|this)|afterwards?|following\s+that)\s*,?\s+(?=[a-z])",
+# Inside a sentence, a marker that the step before is done is "then" (at its start the leading markers
+# read it): "put X in A, and once that's done put Y in B", "... and when you're done put Y ...",
+# "put X in A, and after that put Y in B"
+_THEN_INSIDE = re.compile(
+    r"(?<=\w)\s*,?\s+(?:and\s+)?(?:"
+    r"(?:once|when|after)\s+(?:that's|that\s+is|it's|it\s+is|this\s+is|you're|you\s+are|you've|you\s+have)?"
+    r"\s*(?:done|finished|through)(?:\s+with\s+(?:that|it|this))?"
+    r"|after\s+(?:that|this)|afterwards?|following\s+that"
+    r")\s*,?\s+(?=[a-z])",
     re.IGNORECASE,
 )
 # "Y when you're done putting X in A": what is done is named, a reference ("Y after putting X in A")
@@ -261,8 +259,7 @@ def normalize(text: str) -> str:
     text = _USE_LAMP.sub(lambda m: f"{m['verb']} {m['obj']} by the light of the {m['lamp']}", text)
     text = _FOLLOWED_TO.sub(r" and finally \1", text)
     text = _DONE_GERUND.sub(r"\1 ", text)
-    text = _DONE_INSIDE.sub(", then ", text)
-    text = _AFTER_THAT_INSIDE.sub(", then ", text)
+    text = _THEN_INSIDE.sub(", then ", text)
     text = _DONE_WITH.sub(lambda m: "After " if m.group(1)[0].isupper() else "after ", text)
     return supply_put(re.sub(r"\s+", " ", text).strip())
 
