@@ -272,14 +272,10 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
         add,
     )
     m.sub(rf"\bnothing\s+(?:{may}\s+)?(?:be\s+|is\s+|gets\s+)?{DROP}{down}", add)
-    # "placing any object on R is not allowed"
-    m.sub(
-        rf"\b(?:placing|putting|dropping|setting)\s+B(?P<b>\d+){down}\s+(?:is|are)\s+(?:not\s+(?:allowed|permitted)|"
-        r"forbidden|prohibited|banned)",
-        add,
-    )
-    # "objects are not allowed on ...", "no object is allowed on ...", "objects are forbidden on ..."
     banned = r"(?:not\s+(?:allowed|permitted)|forbidden|prohibited|banned)"
+    # "placing any object on R is not allowed"
+    m.sub(rf"\b(?:placing|putting|dropping|setting)\s+B(?P<b>\d+){down}\s+(?:is|are)\s+{banned}", add)
+    # "objects are not allowed on ...", "no object is allowed on ...", "objects are forbidden on ..."
     m.sub(rf"\bB(?P<b>\d+)\s+(?:is|are)\s+{banned}\s+(?:from\s+)?{PREP}\s+P(?P<p>\d+){PERIOD}", add)
     m.sub(rf"\bno\s+B(?P<b>\d+)\s+(?:is|are)\s+(?:allowed|permitted)\s+{PREP}\s+P(?P<p>\d+){PERIOD}", add)
     # "region F, G and H can not be placed any object (during this period)"
