@@ -420,7 +420,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
         r"one \1 in each of ",
     ),
     (
-        r"\b(?:do\s+not|don\s*'\s*t)\s+let\s+(?:any\s+|an?\s+|the\s+)?(?:robot\s+)?(?:arms?|robots?)\s+",
+        r"\bdo\s+not\s+let\s+(?:any\s+|an?\s+|the\s+)?(?:robot\s+)?(?:arms?|robots?)\s+",
         "no arm may ",
     ),
     # "the regions across from where they are now": the opposite side
