@@ -28,6 +28,9 @@ from nl2hltl2plan.language.handover_words import (
     VERB,
 )
 
+# a clause's modifier that moves its blocks one at a time ("one by one", "in turn"), not all at once
+_IN_TURN = re.compile(r"one\s+after|one\s+by|one\s+at|in\s+turn")
+
 
 @dataclass
 class Goal:
@@ -81,7 +84,7 @@ def goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
     def goal(blocks: list[str], place: Place, text: str, mods: str) -> str:
         text = text.strip()
         goals = [Goal(b, place, _resolve(place, b, scene), text) for b in blocks]
-        in_turn = re.search(r"one\s+after|one\s+by|one\s+at|in\s+turn", mods) is not None
+        in_turn = _IN_TURN.search(mods) is not None
         anytime = re.search(r"any\s+time|whenever", mods) is not None
         room = len({r for g in goals for r in g.regions}) >= len(goals) or place.kind == "start_of"
         together = len(goals) > 1 and place.kind != "away" and room and not (in_turn or anytime)
@@ -288,7 +291,7 @@ def _one_per_region(
     goal: GoalMaker, place: Place, blocks: list[str], text: str, mods: str, in_turn_ok: bool
 ) -> str:
     text = text.strip()
-    in_turn = re.search(r"one\s+after|one\s+by|one\s+at|in\s+turn", mods) is not None
+    in_turn = _IN_TURN.search(mods) is not None
     if in_turn and in_turn_ok and place.kind == "regions":  # "region I receives the blocks one by one"
         return goal(blocks, place, text, mods)
     if place.kind != "regions" or len(set(place.regions)) != len(blocks):
