@@ -2,7 +2,7 @@
 eight Table III instructions must give the written specs).
 
     PYTHONPATH=src python scripts/bench_handover_styles.py [--batch NAME] [--verbose] [--file F]
-    (NAME: dev, dev2 ... dev5, validation; default dev)
+    (NAME: a batch of the file: dev, dev2 ... dev10, validation, validation2; default dev)
     (default F: tests/experiments/handover_styles_session10.json)
 
 Each sentence of the batch is read on instance 0 of its task (`translate`, offline) and judged against the
@@ -40,7 +40,7 @@ def verdict(task_id: int, text: str) -> tuple[str, str]:
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--batch", default="dev", help="a batch of the file: dev, dev2 ... dev5, validation")
+    parser.add_argument("--batch", default="dev", help="a batch (top-level key) of --file, e.g. dev10")
     parser.add_argument("--file", type=Path, default=DEFAULT)
     parser.add_argument("--verbose", action="store_true")
     args = parser.parse_args()

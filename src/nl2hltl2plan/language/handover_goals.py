@@ -23,9 +23,13 @@ from nl2hltl2plan.language.handover_words import (
     PERIOD_WORDS,
     PREP,
     SWAP,
+    SWAPPED,
     THEN,
     VERB,
 )
+
+# a clause's modifier that moves its blocks one at a time ("one by one", "in turn"), not all at once
+_IN_TURN = re.compile(r"one\s+after|one\s+by|one\s+at|in\s+turn")
 
 
 @dataclass
@@ -80,7 +84,7 @@ def goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
     def goal(blocks: list[str], place: Place, text: str, mods: str) -> str:
         text = text.strip()
         goals = [Goal(b, place, _resolve(place, b, scene), text) for b in blocks]
-        in_turn = re.search(r"one\s+after|one\s+by|one\s+at|in\s+turn", mods) is not None
+        in_turn = _IN_TURN.search(mods) is not None
         anytime = re.search(r"any\s+time|whenever", mods) is not None
         room = len({r for g in goals for r in g.regions}) >= len(goals) or place.kind == "start_of"
         together = len(goals) > 1 and place.kind != "away" and room and not (in_turn or anytime)
@@ -214,9 +218,10 @@ def _read_inverse(m: Marked, goal: GoalMaker, every: list[str], mods: str) -> No
 def _read_exchanges(m: Marked, exchange: Callable[..., str]) -> None:
     """'exchange the positions of X and Y', 'swap X with Y', 'X and Y should trade places', 'the positions
     of X and Y should be swapped' (and '..., so that each ends up where the other was')."""
+    trade = r"(?:exchange|swap|switch|trade)s?"  # "X and Y should trade places"
+    positions = r"(?:positions|places|locations|spots)"
     m.sub(  # "the red block and the blue block shall exchange their positions"
-        rf"\bB(\d+)\s+and\s+B(\d+)\s+(?:to\s+)?{MODAL}(?:exchange|swap|switch|trade)s?\s+(?:their\s+)?"
-        r"(?:positions|places|locations|spots)",
+        rf"\bB(\d+)\s+and\s+B(\d+)\s+(?:to\s+)?{MODAL}{trade}\s+(?:their\s+)?{positions}",
         lambda x: exchange(x, x.group(2)),
     )
 
@@ -225,7 +230,7 @@ def _read_exchanges(m: Marked, exchange: Callable[..., str]) -> None:
         return exchange(x) if same else x.group(0)
 
     m.sub(
-        rf"\bB(\d+)\s+(?:to\s+)?{MODAL}(?:exchange|swap|switch|trade)s?\s+B(\d+)\s+(?:positions|places|locations|spots)",
+        rf"\bB(\d+)\s+(?:to\s+)?{MODAL}{trade}\s+B(\d+)\s+{positions}",
         exchange_their,
     )
     m.sub(  # "swap the red block with the blue block"
@@ -238,22 +243,21 @@ def _read_exchanges(m: Marked, exchange: Callable[..., str]) -> None:
         exchange,
     )
     m.sub(
-        rf"(?:\bwhile\s+|\b(?:want|need|have)\s+)?\bB(\d+)\s+(?:to\s+)?{MODAL}(?:exchange|swap|switch|trade)s?\s+(?:their\s+)?"
+        rf"(?:\bwhile\s+|\b(?:want|need|have)\s+)?\bB(\d+)\s+(?:to\s+)?{MODAL}{trade}\s+(?:their\s+)?"
         r"(?:positions?|places?|locations?|spots?)",
         exchange,
     )
     m.sub(rf"\b{SWAP}\s+(?:the\s+places\s+)?where\s+B(\d+)\s+(?:are|stand|sit|lie)\b", exchange)
     m.sub(  # "the positions of the red and blue blocks should be swapped"
-        rf"\b(?:the\s+)?(?:positions?|places?|locations?)\s+of\s+B(\d+)\s+{MODAL}(?:swapped|exchanged|switched|interchanged)",
+        rf"\b(?:the\s+)?(?:positions?|places?|locations?)\s+of\s+B(\d+)\s+{MODAL}{SWAPPED}",
         exchange,
     )
     m.sub(  # "the red and blue blocks are to have their positions exchanged"
-        rf"\bB(\d+)\s+{MODAL}(?:have|get)\s+their\s+(?:positions|places|locations|spots)\s+"
-        r"(?:swapped|exchanged|switched|interchanged)",
+        rf"\bB(\d+)\s+{MODAL}(?:have|get)\s+their\s+{positions}\s+{SWAPPED}",
         exchange,
     )
     # "the red and blue blocks should be swapped" (after "the positions of ... should be swapped")
-    m.sub(rf"\bB(\d+)\s+{MODAL}(?:swapped|exchanged|switched|interchanged)(?:\s+around)?", exchange)
+    m.sub(rf"\bB(\d+)\s+{MODAL}{SWAPPED}(?:\s+around)?", exchange)
     # "... so that each ends up where the other was": what an exchange is
     m.sub(
         r"(?<=G\d)\s*,?\s*so\s+that\s+each\s+(?:one\s+)?(?:ends\s+up|is|goes|lands|sits)\s+(?:where|in\s+the\s+place)\s+"
@@ -287,7 +291,7 @@ def _one_per_region(
     goal: GoalMaker, place: Place, blocks: list[str], text: str, mods: str, in_turn_ok: bool
 ) -> str:
     text = text.strip()
-    in_turn = re.search(r"one\s+after|one\s+by|one\s+at|in\s+turn", mods) is not None
+    in_turn = _IN_TURN.search(mods) is not None
     if in_turn and in_turn_ok and place.kind == "regions":  # "region I receives the blocks one by one"
         return goal(blocks, place, text, mods)
     if place.kind != "regions" or len(set(place.regions)) != len(blocks):

@@ -20,9 +20,15 @@ them", "exchanging their positions": the two blocks named before in the sentence
 from __future__ import annotations
 
 import re
+from functools import partial
 
 from nl2hltl2plan.errors import HTTError
-from nl2hltl2plan.language.handover_places import mark_capacity, mark_place_pronouns, mark_places
+from nl2hltl2plan.language.handover_places import (
+    mark_capacity,
+    mark_place_pronouns,
+    mark_places,
+    note_one_per_region,
+)
 from nl2hltl2plan.language.handover_scene import (
     COLOUR,
     COUNTS,
@@ -181,10 +187,7 @@ def _mark_one_per_region(m: Marked) -> None:
         rf"(?:a|any|each|the\s+same)\s+{region}\b",
     )
 
-    def note(match: re.Match[str]) -> str:
-        m.notes.append("one block per region (the world's rule: a cell holds one block)")
-        return " "
-
+    note = partial(note_one_per_region, m)
     for pattern in patterns:
         m.sub(pattern, note)
     # "each into a different region among H, I and J", "in its own region: H, I or J"

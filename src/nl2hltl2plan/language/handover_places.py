@@ -7,6 +7,7 @@ regions, a place named twice (both readings must agree) and place pronouns ("put
 from __future__ import annotations
 
 import re
+from functools import partial
 from typing import Literal
 
 from nl2hltl2plan.errors import HTTError
@@ -43,19 +44,20 @@ def mark_place_pronouns(m: Marked, named_before: tuple[str, ...]) -> None:
         m.sub(rf"\bP{k}\s*:", " ")
 
 
+def note_one_per_region(m: Marked, match: re.Match[str]) -> str:
+    """A statement of the world's own rule (a cell holds one block): recorded, read to no formula."""
+    m.notes.append("one block per region (the world's rule: a cell holds one block)")
+    return " "
+
+
 def mark_capacity(m: Marked) -> None:
     """'regions H, I and J can each hold only one block': the world's own rule (a cell holds one block),
     said of named places (a pronoun after it, '..., so put one block in each of them', was resolved
     before)."""
-
-    def note(match: re.Match[str]) -> str:
-        m.notes.append("one block per region (the world's rule: a cell holds one block)")
-        return " "
-
     m.sub(
         rf"\bP\d+\s+(?:(?:can|may|will|could)\s+)?(?:each\s+)?(?:only\s+)?(?:hold|take|fit|contain|accept)s?\s+"
         rf"(?:only\s+|just\s+|at\s+most\s+)?(?:one|a\s+single|1)\s+{NOUN}(?:\s+(?:each|apiece))?\b",
-        note,
+        partial(note_one_per_region, m),
     )
 
 

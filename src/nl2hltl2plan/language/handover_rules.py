@@ -28,6 +28,8 @@ from nl2hltl2plan.language.handover_words import (
 
 Prohibition = tuple[list[str], Place | None, list[str], str]  # blocks, place, explicit regions, text
 _MAY = r"(?:can|may|should|must|will|shall|(?:is|are)\s+(?:allowed|permitted)\s+to)"
+_PUT = r"(?:put|place|drop|set|leave|lay)"  # the verb of a prohibition: "put nothing on F"
+_PLACING = r"(?:placing|putting|dropping|setting)"  # its subject: "placing any object on R is not allowed"
 
 
 def blocks_of(m: Marked, k: str) -> list[str]:
@@ -235,7 +237,8 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
     )
     # "no other region may receive an object", "regions F, G and H cannot receive any object"
     thing = r"(?:an?\s+|any\s+)?(?:(?:block|object|cube|pillar|item|piece)s?|anything)"
-    receive = rf"(?:receive|get|hold|take|contain)s?\s+{thing}"
+    receives = r"(?:receive|get|hold|take|contain)s?"
+    receive = rf"{receives}\s+{thing}"
     m.sub(rf"\bno\s+P(?P<p>\d+)\s+(?:{may}\s+)?{receive}\b{PERIOD}", add)
     m.sub(rf"\bP(?P<p>\d+)\s+(?:{may}\s+)?{NEG}\s+{receive}\b{PERIOD}", add)
 
@@ -251,14 +254,14 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
         add_same,
     )
     # "regions F, G and H shall receive no object"
-    receive_no = r"(?:receive|get|hold|take|contain)s?\s+no"
+    receive_no = rf"{receives}\s+no"
     m.sub(rf"\bP(?P<p>\d+)\s+(?:{may}\s+)?{receive_no}\s*B(?P<b>\d+){PERIOD}", add)
     # "nothing goes on F, G or H", "no block may go on R"
     m.sub(
         rf"\b(?:no\s+B(?P<b>\d+)|nothing)\s+(?:{may}\s+)?(?:goes|go)\s+(?:on|in|onto|into|to)\s+P(?P<p>\d+){PERIOD}",
         add,
     )
-    m.sub(rf"\b(?:put|place|drop|set|leave|lay)\s+nothing{down}", add)  # "put nothing on F, G or H"
+    m.sub(rf"\b{_PUT}\s+nothing{down}", add)  # "put nothing on F, G or H"
     # verbless: "no object on any other region", "nothing on F, G or H in the meantime"
     m.sub(rf"\bno\s+B(?P<b>\d+)\s+(?:on|in|onto|into)\s+P(?P<p>\d+){PERIOD}", add)
     m.sub(rf"\bnothing\s+(?:on|in|onto|into)\s+P(?P<p>\d+){PERIOD}", add)
@@ -268,18 +271,14 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
     modal = r"(?:(?:must|may|can|should|shall|will|is|are)\s+)?"
     m.sub(rf"\bB(?P<b>\d+)\s+{modal}{NEG}\s+(?:ever\s+)?(?:be\s+)?{DROP}{down}", add)
     m.sub(
-        rf"(?:(?:\bA\s+)?{NEG}|\bno\s+A\s+{may}?)\s+(?:put|place|drop|set|leave|lay)\s+B(?P<b>\d+){down}",
+        rf"(?:(?:\bA\s+)?{NEG}|\bno\s+A\s+{may}?)\s+{_PUT}\s+B(?P<b>\d+){down}",
         add,
     )
     m.sub(rf"\bnothing\s+(?:{may}\s+)?(?:be\s+|is\s+|gets\s+)?{DROP}{down}", add)
-    # "placing any object on R is not allowed"
-    m.sub(
-        rf"\b(?:placing|putting|dropping|setting)\s+B(?P<b>\d+){down}\s+(?:is|are)\s+(?:not\s+(?:allowed|permitted)|"
-        r"forbidden|prohibited|banned)",
-        add,
-    )
-    # "objects are not allowed on ...", "no object is allowed on ...", "objects are forbidden on ..."
     banned = r"(?:not\s+(?:allowed|permitted)|forbidden|prohibited|banned)"
+    # "placing any object on R is not allowed"
+    m.sub(rf"\b{_PLACING}\s+B(?P<b>\d+){down}\s+(?:is|are)\s+{banned}", add)
+    # "objects are not allowed on ...", "no object is allowed on ...", "objects are forbidden on ..."
     m.sub(rf"\bB(?P<b>\d+)\s+(?:is|are)\s+{banned}\s+(?:from\s+)?{PREP}\s+P(?P<p>\d+){PERIOD}", add)
     m.sub(rf"\bno\s+B(?P<b>\d+)\s+(?:is|are)\s+(?:allowed|permitted)\s+{PREP}\s+P(?P<p>\d+){PERIOD}", add)
     # "region F, G and H can not be placed any object (during this period)"
@@ -346,8 +345,6 @@ def _read_only_on(m: Marked) -> list[Prohibition]:
         rf"\b(?:(?:A\s+)?{_MAY}\s+)?only\s+(?:ever\s+)?(?:place|put|drop|set)\s+B(?P<b>\d+)\s+{PREP}\s+{target}{PERIOD}",
         add_only,
     )
-    m.sub(
-        rf"\b(?:placing|putting|dropping|setting)\s+B(?P<b>\d+)\s+only\s+{PREP}\s+{target}{PERIOD}", add_only
-    )
+    m.sub(rf"\b{_PLACING}\s+B(?P<b>\d+)\s+only\s+{PREP}\s+{target}{PERIOD}", add_only)
 
     return out

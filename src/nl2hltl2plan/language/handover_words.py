@@ -32,6 +32,7 @@ NEG = (
     r"does\s+not|don\s+t|doesn\s+t|(?:is|are)\s+not\s+allowed\s+to|never|not)"
 )
 SWAP = r"(?:exchang(?:e|ing)|swap(?:ping)?|switch(?:ing)?|interchang(?:e|ing)|trad(?:e|ing))"
+SWAPPED = r"(?:swapped|exchanged|switched|interchanged)"
 TOUCH = r"(?:touch|pick\s+up|pick|grasp|grab|handle|move|lift)"
 TOUCHED = (
     r"(?:touched|picked\s+up|picked|grasped|grabbed|handled|moved|lifted|touches|picks\s+up|grabs|moves)"
@@ -192,7 +193,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\bthe\s+(?:desired\s+)?(?:outcome|result|end\s+state)\s+(?:is|should\s+be)\s+that\b", " "),
     (r"\bit\s+is\s+(?:necessary|required|essential|important)\s+to\b", "please"),
     (r"\bno\s+placements?\s+(?=outside|on|in|onto|anywhere)", "nothing placed "),
-    (r"\bend\s+up\s+(?=(?:swapped|exchanged|switched|interchanged)\b)", "be "),
+    (rf"\bend\s+up\s+(?={SWAPPED}\b)", "be "),
     (r"\s*,?\s*(?:but\s+)?it\s+does\s+not\s+matter\s+when\b", " at any time"),
     (r"^\s*when\s+(?:placing|putting|moving)\s+(?:them|the\s+blocks)\s*,", " "),
     (r"\b(?:needs?|gets?|has|have|takes?)\s+(?=its\s+own\s+(?:region|area|spot|place)\b)", "goes in "),
@@ -419,7 +420,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
         r"one \1 in each of ",
     ),
     (
-        r"\b(?:do\s+not|don\s*'\s*t)\s+let\s+(?:any\s+|an?\s+|the\s+)?(?:robot\s+)?(?:arms?|robots?)\s+",
+        r"\bdo\s+not\s+let\s+(?:any\s+|an?\s+|the\s+)?(?:robot\s+)?(?:arms?|robots?)\s+",
         "no arm may ",
     ),
     # "the regions across from where they are now": the opposite side
