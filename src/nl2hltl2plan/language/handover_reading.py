@@ -36,7 +36,6 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass, field
-from typing import TypeGuard
 
 import networkx as nx
 
@@ -72,10 +71,6 @@ class Item:
         if self.goal is not None:
             return [self.goal]
         return [g for c in self.children for g in c.goals()]
-
-
-def is_handover(world: object) -> TypeGuard[World]:
-    return isinstance(world, World) and world.kind == "handover"
 
 
 def translate_handover(instruction: str, world: World) -> LanguageResult:
