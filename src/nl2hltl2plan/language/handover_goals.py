@@ -218,10 +218,12 @@ def _read_inverse(m: Marked, goal: GoalMaker, every: list[str], mods: str) -> No
 def _read_exchanges(m: Marked, exchange: Callable[..., str]) -> None:
     """'exchange the positions of X and Y', 'swap X with Y', 'X and Y should trade places', 'the positions
     of X and Y should be swapped' (and '..., so that each ends up where the other was')."""
-    trade = r"(?:exchange|swap|switch|trade)s?"  # "X and Y should trade places"
+    trade = r"(?:exchange|swap|switch|trade|change)s?"  # "X and Y should trade places"
     positions = r"(?:positions|places|locations|spots)"
-    m.sub(  # "the red block and the blue block shall exchange their positions"
-        rf"\bB(\d+)\s+and\s+B(\d+)\s+(?:to\s+)?{MODAL}{trade}\s+(?:their\s+)?{positions}",
+    each_other = r"(?:\s+(?:with\s+)?(?:each\s+other|one\s+another))"
+    m.sub(  # "the red block and the blue block shall exchange their positions (with each other)"
+        rf"\bB(\d+)\s+and\s+B(\d+)\s+(?:to\s+)?{MODAL}{trade}\s+(?:their\s+)?(?:{positions}{each_other}?|"
+        rf"(?:position|place|location|spot){each_other})",
         lambda x: exchange(x, x.group(2)),
     )
 
@@ -244,7 +246,7 @@ def _read_exchanges(m: Marked, exchange: Callable[..., str]) -> None:
     )
     m.sub(
         rf"(?:\bwhile\s+|\b(?:want|need|have)\s+)?\bB(\d+)\s+(?:to\s+)?{MODAL}{trade}\s+(?:their\s+)?"
-        r"(?:positions?|places?|locations?|spots?)",
+        rf"(?:positions?|places?|locations?|spots?){each_other}?",
         exchange,
     )
     m.sub(rf"\b{SWAP}\s+(?:the\s+places\s+)?where\s+B(\d+)\s+(?:are|stand|sit|lie)\b", exchange)

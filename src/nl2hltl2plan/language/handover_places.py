@@ -163,7 +163,7 @@ def _mark_starts(m: Marked, scene: Scene) -> None:
         r"(?:is|was|lies|lay|sits|sat|stands|started|starts|locates|stays|rests)\s*"
         r"(?:currently\s+|now\s+|"
         r"initially\s+|at\s+first\s+)?(?:located|locating|lying|placed|sitting|standing|from)?\s*"
-        r"(?:currently|now|initially|at\s+first|at\s+the\s+start)?\s*\)?"
+        r"(?:currently|(?:right\s+)?now|initially|at\s+first|at\s+the\s+start|at\s+the\s+moment)?\s*\)?"
     )
 
     def where_of(match: re.Match[str]) -> str:  # "back (to) where the red block is": a place to go to

@@ -94,7 +94,7 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
         orders += sentence_orders
         # "red goes first, blue after red": the order says what "first" means
         leaders = [b for b in read_leaders(m) if b not in [x for x, _ in sentence_orders]]
-        new = _without_restated(goal_clauses(m, scene))
+        new = _said_before(_without_restated(goal_clauses(m, scene)), clauses)
         if not new:  # "Step 2: the red block before the blue block", "1) red before blue": rules only
             m.sub(r"^\s*(?:then|first)\b", " ")
         drop_but(m)
@@ -151,6 +151,26 @@ def _without_restated(clauses: list[Clause]) -> list[Clause]:
         given = {key(g) for d in others for g in d.goals}
         if not c.marker and others and all(key(g) in given for g in c.goals):
             out.remove(c)
+    return out
+
+
+def _said_before(new: list[Clause], clauses: list[Clause]) -> list[Clause]:
+    """A clause that gives again goals an earlier sentence gave ('The pillars belong on E, F and G. Move them
+    there, ...') is read once; said again with another step marker or timing, it is refused (which one
+    holds?)."""
+
+    def key(c: Clause) -> set[tuple[str, str, tuple[str, ...], str]]:
+        return {(g.block, g.place.kind, g.regions, g.place.block) for g in c.goals}
+
+    out = []
+    for c in new:
+        same = [d for d in clauses if key(c) <= key(d)]
+        if not same:
+            out.append(c)
+            continue
+        d = same[-1]
+        if c.marker or d.marker or (c.together, c.anytime, c.leader) != (d.together, d.anytime, d.leader):
+            raise HTTError(f"'{c.text}' gives again a goal said before ('{d.text}') in another way: which holds?")
     return out
 
 

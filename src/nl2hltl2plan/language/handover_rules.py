@@ -145,7 +145,7 @@ def read_leaders(m: Marked) -> list[str]:
     m.sub(r"\bB(\d+)\s+first\s+(?:place|placed|put|goes|go)\b(?=\s*(?:$|,|\band\b|\)))", add)
     m.sub(r"\bfirst\s+(?:place|put|move)\s+B(\d+)(?=\s*(?:$|,|\band\b|\)))", add)
     m.sub(
-        rf"(?:\b(?:with|placing|putting|moving|and)\s+)?\bB(\d+)\s+(?:down\s+)?{MODAL}(?:(?:placed|put|moved|set)\s+|goe?s?\s+|"
+        rf"(?:\b(?:with|placing|putting|moving|and)\s+)?\bB(\d+)\s+(?:down\s+)?{MODAL}(?:(?:placed|put|moved|set|place)\s+|goe?s?\s+|"
         r"comes?\s+|going\s+|coming\s+)?(?:down\s+|there\s+)?first\b(?=\s*(?:$|,|\band\b|\)))",
         add,
     )
@@ -271,7 +271,7 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
     modal = r"(?:(?:must|may|can|should|shall|will|is|are)\s+)?"
     m.sub(rf"\bB(?P<b>\d+)\s+{modal}{NEG}\s+(?:ever\s+)?(?:be\s+)?{DROP}{down}", add)
     m.sub(
-        rf"(?:(?:\bA\s+)?{NEG}|\bno\s+A\s+{may}?)\s+{_PUT}\s+B(?P<b>\d+){down}",
+        rf"(?:(?:\bA\s+)?{NEG}|\bno\s+A\s+{may}?)\s+{_PUT}\s+(?:any\s+(?:one\s+)?of\s+)?B(?P<b>\d+){down}",
         add,
     )
     m.sub(rf"\bnothing\s+(?:{may}\s+)?(?:be\s+|is\s+|gets\s+)?{DROP}{down}", add)

@@ -47,7 +47,10 @@ PERIOD_WORDS = (
     r"(?:(?:during|in)\s+(?:this|that|the\s+same)\s+(?:whole\s+|entire\s+)?(?:period|time)|in\s+the\s+meantime|meanwhile|"
     r"while\s+doing\s+(?:so|this|that|it)|while\s+(?:this|that)\s+(?:happens|is\s+happening|goes\s+on|is\s+going\s+on)|"
     r"at\s+the\s+same\s+time|in\s+the\s+process|all\s+the\s+while|the\s+whole\s+time|in\s+the\s+interim|"
-    r"throughout(?:\s+(?:this|the|that)\s+(?:process|period|time))?|until\s+then|"
+    r"throughout(?:\s+(?:this|the|that)\s+(?:process|period|time))?|until\s+then|along\s+the\s+way|"
+    # "until you're done", "till done": until the goals are met (a plan ends when its last goal is met)
+    r"until\s+(?:(?:you|we|they)\s*(?:'\s*re|\s+are|\s+have\s+finished)\s+)?(?:all\s+)?(?:done|finished)|"
+    r"until\s+(?:it|this|that|everything)\s+is\s+(?:done|finished|complete)|"
     r"for\s+as\s+long\s+as\s+(?:this|that|it)\s+takes|"
     # "during the whole task", "for the duration of this task", "while you do this", "while this is done"
     r"(?:during|throughout|for)\s+(?:this|that|the)\s+(?:whole\s+|entire\s+)?(?:task|process|job|operation|transfer)|"
@@ -70,6 +73,9 @@ AFTER_ALL = (
     r"the\s+above)|everything(?:\s+else)?)|finally|lastly|last\s+of\s+all|at\s+the\s+(?:very\s+)?end|in\s+the\s+end|"
     r"after\s+(?:finish(?:ing)?|complet(?:e|ing)|doing|done)\s+(?:with\s+)?(?:all\s+(?:of\s+)?)?(?:this|these|that|everything|them)|"
     r"after\s+(?:finishing|completing)\s+(?:it\s+)?all|"
+    # "when the transfer is complete", "when all finish" (non-native): the work said so far is done
+    rf"(?:once|when|after)\s+(?:the|this|that)\s+(?:transfer|task|job|work|moving|transport)\s+(?:is|has\s+been)\s+{DONE_STATE}|"
+    r"(?:once|when|after)\s+(?:all|everything)\s+(?:is\s+|are\s+|has\s+|have\s+)?(?:finish(?:ed)?|done|complete(?:d)?)|"
     r"as\s+(?:a|the)\s+(?:final|last)\s+step|at\s+last|after\s+all(?=\s*,)|(?:up)?on\s+(?:completion|finishing)(?:\s+of\s+(?:this|these|that|the\s+above|all\s+(?:of\s+)?(?:this|these|that)))?)"
 )
 THEN = (
@@ -81,7 +87,7 @@ APPOSITION = (
     r"(?:\(|which\s+(?:is|are)\s+made\s+up\s+of|(?:which\s+(?:is|are|lies?|sits?)\s+|that\s+(?:is|are|lies?)\s+)?"
     r"(?:(?:located|situated|lying)\s+)?(?:to|on|at|in)|that\s+is|being|"
     r"which\s+(?:is|are|consists\s+of|comprises|includes|lies|lie)|consisting\s+of|comprising|"
-    r"made\s+up\s+of|namely|:)"
+    r"made\s+up\s+of|(?:that\s+is\s+|which\s+is\s+)?(?:formed|made|composed|covered)\s+(?:by|of)|namely|:)"
 )
 LEAD = r"\s*,?\s*(?:you\s+should\s+|please\s+|we\s+should\s+)?"
 
@@ -119,11 +125,11 @@ REWRITES: tuple[tuple[str, str], ...] = (
     # framing that announces a rule: "there is one ordering requirement:", "with the rule that"
     (
         r"\bthere\s+(?:is|are)\s+(?:one|a|an|another|two|some)\s+(?:\w+\s+)?(?:requirement|restriction|constraint|"
-        r"condition|rule)s?(?:\s+(?:about|on|for|regarding)\s+\w+)?\s*:",
+        r"condition|rule)s?(?:\s+(?:about|on|for|regarding)\s+\w+)?\s*(?::|,\s*namely(?:\s+that)?\b)",
         " ",
     ),
     (r"\s*,?\s*\bwith\s+the\s+(?:rule|condition|constraint|requirement|restriction)\s+that\b", ","),
-    (r"\bin\s+addition\b", " "),
+    (r"\bin\s+addition(?:\s+to\s+(?:that|this))?\b", " "),
     # a heading, also after a step's number: "Rule: ...", "2) Constraint: ...", "Goals:"
     (
         r"^(\s*(?:step\s+\w+\s*:?|\d\s*[):]|\(\s*\d\s*\))?\s*)(?:order|ordering|sequence|constraints?|rules?|"
@@ -171,6 +177,30 @@ REWRITES: tuple[tuple[str, str], ...] = (
         " ",
     ),
     (r"^\s*(?:two|three|a\s+few)\s+things\s*:", " "),
+    # framing that announces the task: "what I would like you to do is (to) ...", "what needs to happen is that"
+    (
+        r"^\s*what\s+(?:please|(?:i|we)\s*(?:'\s*d|would)?\s*(?:like|want|need)\s+(?:you\s+)?to)\s+do\s+is\s+(?:to\s+)?",
+        "please ",
+    ),
+    (r"^\s*what\s+(?:needs|has)\s+to\s+(?:happen|be\s+done)\s+is\s+(?:that\s+)?", " "),
+    # a heading verb that names an exchange: "Swap: red and blue blocks"
+    (r"^\s*(swap|exchange|switch)\s*:", r"\1"),
+    # a heading that gives the period of what follows: "Meanwhile: nothing on F, G or H"
+    (rf"^\s*({PERIOD_WORDS})\s*:\s*(.+)$", r"\2 \1"),
+    (r"(?<!\bin\s)\bany\s+order\b", "in any order"),
+    # the state asked for, said as where the blocks end up: "the blocks should end up spread over H, I and J"
+    (r"\bend\s+up\s+(?=(?:spread|distributed|split|placed|put)\b)", "be "),
+    # non-native: "red block placing is before blue block", "yellow block go back region G", "firstly",
+    # "after to region G" (after, then a preposition: afterwards)
+    (r"\b(?:placing|placement)\s+(?:is|comes)\s+before\b", "is placed before"),
+    (r"\b(go|goes|come|comes|put|move|return)\s+back\s+(?=regions?\b)", r"\1 back to "),
+    (r"\bfirstly\b", "first"),
+    (r",\s*after\s+(?=(?:to|on|onto|in|into)\s)", ", then "),
+    # a verbless step with "first" after its block: "yellow block first to region I, then to G"
+    (
+        r"(^|,)\s*((?:the\s+)?(?:red|blue|yellow)(?:\s+(?:block|cube|one))?)\s+first\s+(?=(?:to|on|onto|in|into)\s)",
+        r"\1 first , \2 ",
+    ),
     (r"\s*,?\s*\bon\s+the\s+other\s+hand\b\s*,?", " "),
     (r"^\s*then\s+again\s*,", " "),  # "Then again, ...": "on the other hand", not a step
     (r"^\s*as\s+(?:for|to|regards)\s+(?:the\s+)?(?:order|ordering|sequence)\s*,", " "),
@@ -194,7 +224,16 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\bit\s+is\s+(?:necessary|required|essential|important)\s+to\b", "please"),
     (r"\bno\s+placements?\s+(?=outside|on|in|onto|anywhere)", "nothing placed "),
     (rf"\bend\s+up\s+(?={SWAPPED}\b)", "be "),
-    (r"\s*,?\s*(?:but\s+)?it\s+does\s+not\s+matter\s+when\b", " at any time"),
+    (
+        r"\s*,?\s*(?:and\s+|but\s+)?it\s+does\s+not\s+matter\s+(?:when|at\s+what\s+(?:point|time|moment)|at\s+which\s+point)"
+        r"(?:\s+(?:that|this|it)\s+(?:happens|is\s+done))?",
+        " at any time",
+    ),
+    # non-native: "when is not important", "time is free": the timing is free
+    (
+        r"\s*,\s*(?:the\s+)?(?:when|time|timing)\s+(?:is\s+)?(?:not\s+important|free|does\s+not\s+matter)\s*(?=,|$)",
+        " at any time",
+    ),
     (r"^\s*when\s+(?:placing|putting|moving)\s+(?:them|the\s+blocks)\s*,", " "),
     (r"\b(?:needs?|gets?|has|have|takes?)\s+(?=its\s+own\s+(?:region|area|spot|place)\b)", "goes in "),
     (r"\breach(?:es)?\s+(?=(?:the|any|an?|regions?|[e-j])\b)", "go to "),
@@ -359,7 +398,9 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\b(?:remember|be\s+sure|make\s+sure|do\s+not\s+forget|note|keep\s+in\s+mind)\s+(?:to|that)\b", " "),
     (r"\bprecedes?\b", "comes before"),
     (r"\bfollows?\b", "comes after"),
-    (r"\b(?:nobody|no\s+one|none\s+of\s+the\s+(?:robot\s+)?arms)\b", "no arm"),
+    (r"\b(?:nobody|no\s+one|none\s+of\s+the\s+(?:robot\s+)?arms|neither\s+(?:of\s+the\s+)?(?:robot\s+)?arms?)\b", "no arm"),
+    # "none of the objects is ever put on R": no object is
+    (r"\bnone\s+of\s+(?:the\s+)?(?:objects|blocks|pillars|items|pieces|cubes)\s+(?=is|are|may|can|must|should|shall)\b", "no object "),
     # "the red and blue blocks are in the wrong places, so swap them": the scene said as the swap it asks for
     (
         rf"^\s*((?:the\s+)?[a-z]+\s+and\s+(?:the\s+)?[a-z]+\s+(?:blocks|cubes|pieces|ones))\s+(?:are|were)\s+in\s+"
