@@ -41,6 +41,7 @@ def read_statements(m: Marked, scene: Scene) -> None:
     _read_needs(m)
     _read_questions(m)
     _read_place_headings(m)
+    _read_verb_pairs(m)
     # terse: "transfer all blocks opposite": the bare adverb is the opposite side
     m.sub(
         rf"\b({VERB})\s+B(\d+)\s+P(\d+)(?=\s*(?:$|,))",
@@ -121,17 +122,25 @@ def _read_targets(m: Marked) -> None:
 
 
 def _read_needs(m: Marked) -> None:
-    """'we need the blocks on the other side, so carry all three of them across': one goal, said twice."""
+    """'we need the blocks on the other side, so carry all three of them across', 'the blocks belong on the
+    opposite side, so move all three of them there': one goal, said as a need or a target state, then
+    again as a command that names no other place and no other blocks."""
 
     def once(match: re.Match[str]) -> str:
-        again = match.group(3)
-        if again is not None and sorted(m.blocks[int(again)]) != sorted(m.blocks[int(match.group(1))]):
+        b, again, there = match.group("b") or match.group("b2"), match.group("again"), match.group("there")
+        if again is not None and sorted(m.blocks[int(again)]) != sorted(m.blocks[int(b)]):
             return match.group(0)
-        return f" put B{match.group(1)} on P{match.group(2)} "
+        if there is not None and m.places[int(there)] != m.places[int(match.group("p"))]:
+            return match.group(0)
+        return f" put B{b} on P{match.group('p')} "
 
+    need = (
+        r"(?:(?:we|i)\s+(?:need|want|would\s+like)\s+B(?P<b>\d+)\s+(?:to\s+be\s+)?|"
+        r"B(?P<b2>\d+)\s+(?:(?:should|must|need\s+to|has\s+to|have\s+to)\s+(?:be|end\s+up|go)|belongs?)\s+)"
+    )
     m.sub(
-        rf"^\s*(?:we|i)\s+(?:need|want|would\s+like)\s+B(\d+)\s+(?:to\s+be\s+)?{PREP}\s+P(\d+)\s*,\s*(?:so\s+|and\s+)?"
-        rf"(?:please\s+)?{VERB}\s+(?:B(\d+)\s+)?(?:over\s+there|across|over|there)(?=\s*(?:$|,))",
+        rf"^\s*{need}{PREP}\s+P(?P<p>\d+)\s*,\s*(?:so\s+|and\s+)?(?:please\s+)?{VERB}\s+(?:B(?P<again>\d+)\s+)?"
+        rf"(?:over\s+there|across|over|there|to\s+P(?P<there>\d+))(?=\s*(?:$|,))",
         once,
     )
 
@@ -149,4 +158,23 @@ def _read_place_headings(m: Marked) -> None:
     m.sub(
         r"^\s*(?:please\s+)?(?:targets?|destinations?|where)\s*:\s*P(\d+)\s*,\s*B(\d+)(?=\s*(?:$|,))",
         r" B\2 to P\1 ",
+    )
+
+
+def _read_verb_pairs(m: Marked) -> None:
+    """'take the pillars and bring them over to E, F and G': the first verb only picks up what the second
+    moves (the same blocks); 'arrange the blocks so that G, H and I each end up holding one of them': the
+    verb's object is what the state that follows places."""
+
+    def same(match: re.Match[str]) -> str:
+        if sorted(m.blocks[int(match.group(1))]) != sorted(m.blocks[int(match.group(2))]):
+            return match.group(0)
+        return " "
+
+    m.sub(rf"\b(?:take|pick\s+up|grab|lift)\s+B(\d+)\s*,?\s+and\s+(?={VERB}\s+B(\d+)\s)", same)
+    m.sub(
+        r"\b(?:arrange|distribute|spread|place|put)\s+B(\d+)\s+(?:so\s+that\s+)?(?=(?:each\s+of\s+)?P\d+\s+(?:each\s+)?"
+        r"(?:(?:should|will|must|can)\s+)?(?:end\s+up\s+(?:holding|with)|holds?|gets?|receives?|contains?)\s+"
+        r"(?:exactly\s+)?one\s+of\s+B(\d+)\b)",
+        same,
     )

@@ -188,7 +188,7 @@ def _read_inverse(m: Marked, goal: GoalMaker, every: list[str], mods: str) -> No
         lambda x: _fill(m, x, goal, every),
     )
     m.sub(  # "G, H, I: one block each"
-        rf"(?:^|(?<=,))\s*P(\d+)\s*:\s*(?:exactly\s+)?(?:one|a\s+single)\s+(?:block|object|cube|pillar|item)\s+"
+        rf"(?:^|(?<=,))\s*P(\d+)\s*[:,]\s*(?:exactly\s+)?(?:one|a\s+single)\s+(?:block|object|cube|pillar|item)\s+"
         rf"(?:each|apiece)(){mods}",
         lambda x: _fill(m, x, goal, every),
     )
@@ -209,7 +209,8 @@ def _read_inverse(m: Marked, goal: GoalMaker, every: list[str], mods: str) -> No
     # the inverse syntax "fill regions H, I and J with the three blocks": as many places as blocks
     m.sub(rf"\b(?:fill|occupy|populate|load)\s+P(\d+)\s+with\s+B(\d+){mods}", lambda x: _fill(m, x, goal))
     m.sub(
-        rf"\b(?:each\s+of\s+)?P(\d+)\s+{MODAL}(?:each\s+)?(?:receive|get|take|hold|contain)s?\s+(?:exactly\s+|just\s+)?"
+        rf"\b(?:each\s+of\s+)?P(\d+)\s+(?:each\s+)?{MODAL}(?:each\s+)?(?:(?:receive|get|take|hold|contain)s?|ends?\s+up\s+(?:holding|with))\s+"
+        rf"(?:exactly\s+|just\s+)?"
         rf"(?:one\s+of\s+)?B(\d+){mods}",
         lambda x: _fill(m, x, goal),
     )

@@ -151,6 +151,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
         r"\b(?:under\s+no\s+circumstances|on\s+no\s+account)\s+(?=(?:place|put|drop|set|touch|move)\b)",
         "never ",
     ),
+    (r"\bat\s+some\s+(?:point|time)\s+(?=before|after)\b", ""),  # "put down at some point before ...": before
     (r"\bat\s+some\s+(?:point|time)\b", "at any time"),
     (r"\bnothing\s+else\b", "nothing"),
     (r"\bno\s+other\s+(?=(?:blocks?|objects?|items?|cubes?|pillars?|pieces?)\b)", "no "),
