@@ -29,7 +29,10 @@ from nl2hltl2plan.language.handover_scene import NOUN, Marked, Scene
 from nl2hltl2plan.language.handover_words import PREP, VERB
 
 # when a scene statement holds: "now", "at the moment", "to begin with"
-_NOW = r"(?:\s+(?:at\s+the\s+moment|right\s+now|now|currently|at\s+present|at\s+first|initially|to\s+begin\s+with))?"
+_NOW = (
+    r"(?:\s+(?:at\s+the\s+moment|right\s+now|now|currently|at\s+present|at\s+first|initially|"
+    r"to\s+begin\s+with))?"
+)
 _LIE = r"(?:sitting|standing|lying|resting|located|placed)"
 _MODAL_Q = r"(?:could|can|would|will|should|may|shall)"
 
@@ -60,7 +63,8 @@ def _holds(m: Marked, scene: Scene, b: str, p: str) -> bool:
 
 
 def _refuse_scene(m: Marked, scene: Scene, b: str, text: str) -> HTTError:
-    starts = ", ".join(f"{x.lower()} on {scene.layout.region_at.get(scene.starts[x], '?')}" for x in m.blocks[int(b)])
+    where = scene.layout.region_at
+    starts = ", ".join(f"{x.lower()} on {where.get(scene.starts[x], '?')}" for x in m.blocks[int(b)])
     return HTTError(f"'{text.strip()}' does not hold in this scene ({starts}); say where the blocks go")
 
 

@@ -170,7 +170,7 @@ def _said_before(new: list[Clause], clauses: list[Clause]) -> list[Clause]:
             continue
         d = same[-1]
         if c.marker or d.marker or (c.together, c.anytime, c.leader) != (d.together, d.anytime, d.leader):
-            raise HTTError(f"'{c.text}' gives again a goal said before ('{d.text}') in another way: which holds?")
+            raise HTTError(f"'{c.text}' gives again a goal said before ('{d.text}') otherwise: which holds?")
     return out
 
 

@@ -178,7 +178,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
         " ",
     ),
     (r"^\s*(?:two|three|a\s+few)\s+things\s*:", " "),
-    # framing that announces the task: "what I would like you to do is (to) ...", "what needs to happen is that"
+    # framing that announces the task: "what I would like you to do is (to) ...", "what needs to happen is"
     (
         r"^\s*what\s+(?:please|(?:i|we)\s*(?:'\s*d|would)?\s*(?:like|want|need)\s+(?:you\s+)?to)\s+do\s+is\s+(?:to\s+)?",
         "please ",
@@ -399,9 +399,15 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\b(?:remember|be\s+sure|make\s+sure|do\s+not\s+forget|note|keep\s+in\s+mind)\s+(?:to|that)\b", " "),
     (r"\bprecedes?\b", "comes before"),
     (r"\bfollows?\b", "comes after"),
-    (r"\b(?:nobody|no\s+one|none\s+of\s+the\s+(?:robot\s+)?arms|neither\s+(?:of\s+the\s+)?(?:robot\s+)?arms?)\b", "no arm"),
+    (
+        r"\b(?:nobody|no\s+one|none\s+of\s+the\s+(?:robot\s+)?arms|neither\s+(?:of\s+the\s+)?(?:robot\s+)?arms?)\b",
+        "no arm",
+    ),
     # "none of the objects is ever put on R": no object is
-    (r"\bnone\s+of\s+(?:the\s+)?(?:objects|blocks|pillars|items|pieces|cubes)\s+(?=is|are|may|can|must|should|shall)\b", "no object "),
+    (
+        r"\bnone\s+of\s+(?:the\s+)?(?:objects|blocks|pillars|items|pieces|cubes)\s+(?=is|are|may|can|must|should|shall)\b",
+        "no object ",
+    ),
     # "the red and blue blocks are in the wrong places, so swap them": the scene said as the swap it asks for
     (
         rf"^\s*((?:the\s+)?[a-z]+\s+and\s+(?:the\s+)?[a-z]+\s+(?:blocks|cubes|pieces|ones))\s+(?:are|were)\s+in\s+"

@@ -1,0 +1,142 @@
+"""Session 11 (h51): the clause reader (`language.handover_clauses`: scene, target, need and question
+statements) and the word-table forms added with it, each with sentences it reads (task id -> sentences that
+must give the written spec) and near misses that change one meaning (another block, region or order, a
+constraint or marker left out, a scene the world contradicts): refused by name or another spec, never the
+written one."""
+
+READ = {
+    1: [
+        # a need, then a command that restates it ("carry them across": no other place, the same blocks)
+        "We need the blocks on the other side, so carry all three of them across, and the red block has to "
+        "arrive before the blue one.",
+        "The blocks belong on the opposite side, so move all three of them there; red before blue.",
+        # a bare "opposite" after the blocks (terse)
+        "Transfer all blocks opposite, red ahead of blue.",
+        # non-native: "red block placing is before blue block"
+        "Three block must transfer into opposite side, and red block placing is before blue block.",
+    ],
+    2: [
+        # a target statement, then the goal over "them" (the same regions), and the one-block rule
+        "Regions H, I and J are the targets and each can only hold one object, so the three blocks should "
+        "end up spread over them, one in each.",
+        "Put the three blocks on H, I and J. Only one block may occupy a region.",
+    ],
+    3: [
+        # a scene statement that holds (the pillars start on H, I and J), a descriptive place ("the
+        # placement area formed by ..."), "them" naming the one group of the sentence before, a goal
+        # given again in a later sentence ("move them there": read once), "along the way"
+        "The pillars sit on H, I and J but belong in the placement area formed by regions E, F and G. Move "
+        "them there, and don't set any of them down on a region that isn't a target along the way.",
+        # a relative scene clause, "take ... and bring them", framing ("what I would like you to do is")
+        "What I would like you to do is to take the three pillars, which are standing on regions H, I and J "
+        "at the moment, and bring them over to regions E, F and G; while you are doing that, please make "
+        "sure that none of the objects is ever put down on regions H, I or J.",
+    ],
+    4: [
+        # completion markers as step separators
+        "The blue block may only be touched once the red one has been touched. All three blocks need to go "
+        "to the opposite regions; when the transfer is complete, the yellow block goes back to G, where the "
+        "red block is now.",
+        "Please transfer the three blocks to opposite regions. Robot arm not touch blue block until red "
+        "block is touched by some arm. When all finish, yellow block go back region G.",
+        "What needs to happen is that all three blocks get transferred to the regions on the opposite side, "
+        "but there is one condition, namely that neither arm is allowed to touch the blue block until one "
+        "of them has touched the red block; and then, once all of that has been finished, the yellow block "
+        "should be put back on region G, where the red block is sitting right now.",
+    ],
+    5: [
+        "Swap: red and blue blocks (red first).\nYellow block: opposite side, any time.",
+        "Red block and blue block change their place each other, red block is place first. Yellow block "
+        "put in opposite side, when is not important.",
+        "I would like the red block and the blue block to trade places with each other, and it is important "
+        "that the red block is placed first, before the blue block; in addition to that, the yellow block "
+        "should be moved to the opposite side, and it does not matter at what point that happens.",
+    ],
+    6: [
+        "Could you put the three blocks on regions G, H and I, a separate region for each, and make sure "
+        "the red one is placed before the blue one?",
+        "I'd like you to arrange the three blocks so that regions G, H and I each end up holding one of "
+        "them, with the red block being put down at some point before the blue block is put down.",
+    ],
+    7: [
+        "Would you put the three blocks on region I one after the other, red before blue? And could you "
+        "keep regions F, G and H clear until you're done?",
+        "Target: region I, all three blocks, one after another.\nOrder: red, then blue.\nMeanwhile: nothing "
+        "on F, G or H.",
+        "Blocks onto I in turn, red before blue. F, G, H off limits till done.",
+    ],
+    8: [
+        # a question with its modal before the subject
+        "Can you move the yellow block to region I first and then on to region G? And whenever you like, "
+        "could the red and blue blocks each go to an empty region?",
+        "Yellow to I, then G. Red, blue: any empty region, any order.",
+        "Yellow block firstly to region I, after to region G. Red and blue block, to any empty region, time "
+        "is free.",
+    ],
+}
+
+NEAR_MISSES = {
+    1: [
+        # the restating command names other blocks: which goal is meant?
+        "We need the blocks on the other side, so carry the red block across, and the red block has to "
+        "arrive before the blue one.",
+        "Transfer all blocks opposite, blue ahead of red.",
+        "Three block must transfer into opposite side, and blue block placing is before red block.",
+        # the restating command names another place
+        "We need the blocks on the other side, so carry them to region H; red before blue.",
+    ],
+    2: [
+        # the target statement names other regions than the goal
+        "Regions G, H and I are the targets, so the three blocks should end up spread over regions H, I "
+        "and J, one in each.",
+    ],
+    3: [
+        # a scene statement the world contradicts (the pillars start on H, I and J)
+        "The pillars sit on E, F and G but belong in regions H, I and J. Move them there.",
+        "The pillars sit on E, F and G now. Move them to regions E, F and G.",
+        "Take the three pillars, which are standing on regions E, F and G at the moment, and bring them "
+        "over to regions E, F and G.",
+        # the second verb moves other blocks than the first picks up
+        "Take the red block and bring the three pillars over to regions E, F and G.",
+        # a goal given again, the second time one by one: which holds?
+        "The pillars belong in regions E, F and G. Move them there one by one.",
+        # the prohibition left out
+        "The pillars sit on H, I and J but belong in the placement area formed by regions E, F and G. Move "
+        "them there.",
+    ],
+    4: [
+        # the completion marker left out: yellow is no longer after the transfer
+        "The blue block may only be touched once the red one has been touched. All three blocks need to go "
+        "to the opposite regions; the yellow block goes back to G, where the red block is now.",
+        "Please transfer the three blocks to opposite regions. Robot arm not touch red block until blue "
+        "block is touched by some arm. When all finish, yellow block go back region G.",
+    ],
+    5: [
+        "Swap: red and blue blocks (blue first).\nYellow block: opposite side, any time.",
+        "Red block and blue block change their place each other, blue block is place first. Yellow block "
+        "put in opposite side, when is not important.",
+    ],
+    6: [
+        "Could you put the three blocks on regions G and H, a separate region for each, and make sure the "
+        "red one is placed before the blue one?",
+        "I'd like you to arrange the red block so that regions G, H and I each end up holding one of them, "
+        "with the red block being put down at some point before the blue block is put down.",
+        "I'd like you to arrange the three blocks so that regions G, H and I each end up holding one of "
+        "them, with the red block being put down at some point after the blue block is put down.",
+    ],
+    7: [
+        # a region left out of the prohibition, another target
+        "Would you put the three blocks on region I one after the other, red before blue? And could you "
+        "keep regions F and G clear until you're done?",
+        "Target: region H, all three blocks, one after another.\nOrder: red, then blue.\nMeanwhile: nothing "
+        "on F, G or I.",
+        "Blocks onto I in turn, red before blue. F, G off limits till done.",
+    ],
+    8: [
+        "Could the red and blue blocks each go to region H? Can you move the yellow block to region I first "
+        "and then on to region G?",
+        "Yellow block firstly to region G, after to region I. Red and blue block, to any empty region, time "
+        "is free.",
+        "Yellow to I, then G. Red: any empty region, any order.",
+    ],
+}
