@@ -12,6 +12,9 @@ READ = {
         "The blocks belong on the opposite side, so move all three of them there; red before blue.",
         # a bare "opposite" after the blocks (terse)
         "Transfer all blocks opposite, red ahead of blue.",
+        # (h47's dev, refused until this round: now read as a need and its restatement)
+        "The blocks belong on the opposite side, so move all three of them there. Place the red block "
+        "before the blue block so that the order is right.",
         # non-native: "red block placing is before blue block"
         "Three block must transfer into opposite side, and red block placing is before blue block.",
     ],
@@ -64,6 +67,11 @@ READ = {
         "Target: region I, all three blocks, one after another.\nOrder: red, then blue.\nMeanwhile: nothing "
         "on F, G or H.",
         "Blocks onto I in turn, red before blue. F, G, H off limits till done.",
+        # a target statement: "region I is the drop point", "use region I as a drop-off"
+        "Region I is the drop point, so place the three blocks there one after another, red before blue; "
+        "because regions F, G and H must stay clear meanwhile, put nothing on them.",
+        "Use region I as a drop-off: one after another, put the three blocks on region I, red before blue. "
+        "Regions F, G and H must stay empty the whole time.",
     ],
     8: [
         # a question with its modal before the subject
@@ -84,6 +92,8 @@ NEAR_MISSES = {
         "Three block must transfer into opposite side, and blue block placing is before red block.",
         # the restating command names another place
         "We need the blocks on the other side, so carry them to region H; red before blue.",
+        "The blocks belong on the opposite side, so move all three of them there. Place the blue block "
+        "before the red block so that the order is right.",
     ],
     2: [
         # the target statement names other regions than the goal
@@ -131,6 +141,11 @@ NEAR_MISSES = {
         "Target: region H, all three blocks, one after another.\nOrder: red, then blue.\nMeanwhile: nothing "
         "on F, G or I.",
         "Blocks onto I in turn, red before blue. F, G off limits till done.",
+        # the target statement names another region than the goal: refused, not dropped
+        "Region H is the drop point, so place the three blocks on region I one after another, red before "
+        "blue; put nothing on regions F, G and H meanwhile.",
+        "Use region I as a drop-off: one after another, put the three blocks on region I, blue before red. "
+        "Regions F, G and H must stay empty the whole time.",
     ],
     8: [
         "Could the red and blue blocks each go to region H? Can you move the yellow block to region I first "

@@ -105,8 +105,9 @@ def _read_scene(m: Marked, scene: Scene) -> None:
 
 
 def _read_targets(m: Marked) -> None:
-    """'regions H, I and J are the targets (and each can only hold one object), ...': dropped where a later
-    clause names the same regions (the note of the one-block rule is kept)."""
+    """'regions H, I and J are the targets (and each can only hold one object), ...', 'region I is the drop
+    point, so ...', 'use region I as a drop-off: ...': dropped where a later clause names the same regions
+    (the note of the one-block rule is kept)."""
 
     def drop(match: re.Match[str]) -> str:
         named = m.places[int(match.group(1))]
@@ -117,12 +118,16 @@ def _read_targets(m: Marked) -> None:
             m.notes.append("one block per region (the world's rule: a cell holds one block)")
         return " "
 
-    targets = r"(?:targets?|goals?|destinations?|(?:goal|target)\s+(?:regions?|areas?))"
+    targets = (
+        r"(?:targets?|goals?|destinations?|(?:goal|target)\s+(?:regions?|areas?)|(?:drop|collection|gathering)\s+"
+        r"(?:off|point|spot|area|region)s?)"
+    )
     rule = (
         rf"(?P<rule>\s*,?\s*and\s+each\s+(?:(?:can|may|will)\s+)?(?:only\s+)?(?:hold|take|fit|accept)s?\s+"
         rf"(?:only\s+)?(?:one|a\s+single)\s+{NOUN})?"
     )
-    m.sub(rf"^\s*P(\d+)\s+(?:are|is)\s+(?:the|our|your)\s+{targets}{rule}\s*,", drop)
+    m.sub(rf"^\s*P(\d+)\s+(?:are|is)\s+(?:the|our|your|a)\s+{targets}{rule}\s*[,:]", drop)
+    m.sub(rf"^\s*(?:please\s+)?use\s+P(\d+)\s+as\s+(?:the|our|your|a)\s+{targets}{rule}\s*[,:]", drop)
 
 
 def _read_needs(m: Marked) -> None:

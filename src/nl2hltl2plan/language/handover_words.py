@@ -289,8 +289,8 @@ REWRITES: tuple[tuple[str, str], ...] = (
     ),
     # reasons that say nothing but that the order or the timing was meant
     (
-        r"\s*,?\s*\b(?:as|since|because)\s+(?:(?:the\s+)?order\s+(?:matters|is\s+important)(?:\s+here)?|that\s+is\s+the\s+"
-        r"order\s+(?:we|i)\s+(?:need|want))\b",
+        r"\s*,?\s*\b(?:(?:as|since|because)\s+(?:(?:the\s+)?order\s+(?:matters|is\s+important)(?:\s+here)?|that\s+is\s+the\s+"
+        r"order\s+(?:we|i)\s+(?:need|want))|so\s+that\s+the\s+order\s+is\s+(?:right|correct|kept|respected))\b",
         " ",
     ),
     (
