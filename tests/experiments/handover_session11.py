@@ -17,12 +17,15 @@ READ = {
         "before the blue block so that the order is right.",
         # non-native: "red block placing is before blue block"
         "Three block must transfer into opposite side, and red block placing is before blue block.",
+        # a rule's label after a comma in a compressed heading
+        "Goal: all blocks to the opposite side, constraint: red before blue.",
     ],
     2: [
         # a target statement, then the goal over "them" (the same regions), and the one-block rule
         "Regions H, I and J are the targets and each can only hold one object, so the three blocks should "
         "end up spread over them, one in each.",
         "Put the three blocks on H, I and J. Only one block may occupy a region.",
+        "Goal: blocks on H, I and J, constraint: one block per region.",
     ],
     3: [
         # a scene statement that holds (the pillars start on H, I and J), a descriptive place ("the
@@ -34,6 +37,11 @@ READ = {
         "What I would like you to do is to take the three pillars, which are standing on regions H, I and J "
         "at the moment, and bring them over to regions E, F and G; while you are doing that, please make "
         "sure that none of the objects is ever put down on regions H, I or J.",
+        # "they" naming the one group of the sentence before; "nothing may ever be placed"
+        "The three pillars are on H, I and J right now; they belong on E, F and G. Never place an object on "
+        "H, I or J.",
+        "The pillars are currently on H, I and J. They should end up on E, F and G, and nothing may ever be "
+        "placed on H, I or J.",
     ],
     4: [
         # completion markers as step separators
@@ -46,6 +54,11 @@ READ = {
         "but there is one condition, namely that neither arm is allowed to touch the blue block until one "
         "of them has touched the red block; and then, once all of that has been finished, the yellow block "
         "should be put back on region G, where the red block is sitting right now.",
+        # a completion marker as a heading; "until red is" (the participle left out)
+        "- blocks to the opposite regions\n- do not touch blue before red\n- when the transfer is done: "
+        "yellow back to G",
+        "Task: blocks to the opposite regions. Rule: blue is not touched until red is. Afterwards: yellow "
+        "back on G.",
     ],
     5: [
         "Swap: red and blue blocks (red first).\nYellow block: opposite side, any time.",
@@ -54,6 +67,9 @@ READ = {
         "I would like the red block and the blue block to trade places with each other, and it is important "
         "that the red block is placed first, before the blue block; in addition to that, the yellow block "
         "should be moved to the opposite side, and it does not matter at what point that happens.",
+        # a sentence that goes on from the one before ("And ...")
+        "Please, could you exchange the red block and the blue block? The red one must be placed first. And "
+        "the yellow block to the opposite side whenever.",
     ],
     6: [
         "Could you put the three blocks on regions G, H and I, a separate region for each, and make sure "
@@ -89,6 +105,7 @@ NEAR_MISSES = {
         "We need the blocks on the other side, so carry the red block across, and the red block has to "
         "arrive before the blue one.",
         "Transfer all blocks opposite, blue ahead of red.",
+        "Goal: all blocks to the opposite side, constraint: blue before red.",
         "Three block must transfer into opposite side, and blue block placing is before red block.",
         # the restating command names another place
         "We need the blocks on the other side, so carry them to region H; red before blue.",
@@ -108,6 +125,8 @@ NEAR_MISSES = {
         "over to regions E, F and G.",
         # the second verb moves other blocks than the first picks up
         "Take the red block and bring the three pillars over to regions E, F and G.",
+        "The pillars are currently on E, F and G. They should end up on E, F and G, and nothing may ever be "
+        "placed on H, I or J.",
         # a goal given again, the second time one by one: which holds?
         "The pillars belong in regions E, F and G. Move them there one by one.",
         # the prohibition left out
@@ -120,6 +139,8 @@ NEAR_MISSES = {
         "to the opposite regions; the yellow block goes back to G, where the red block is now.",
         "Please transfer the three blocks to opposite regions. Robot arm not touch red block until blue "
         "block is touched by some arm. When all finish, yellow block go back region G.",
+        "Task: blocks to the opposite regions. Rule: red is not touched until blue is. Afterwards: yellow "
+        "back on G.",
     ],
     5: [
         "Swap: red and blue blocks (blue first).\nYellow block: opposite side, any time.",
@@ -153,5 +174,17 @@ NEAR_MISSES = {
         "Yellow block firstly to region G, after to region I. Red and blue block, to any empty region, time "
         "is free.",
         "Yellow to I, then G. Red: any empty region, any order.",
+    ],
+}
+
+# the same steps said out of the text's order: refused by name (the tree follows the text), never read
+# without the order
+OUT_OF_ORDER = {
+    8: [
+        "Finally: yellow to G. First: yellow to I. Red and blue to any empty region at any time.",
+        "Finally, put the yellow block on G. First, put the yellow block on I. Move red and blue to any "
+        "empty region at any time.",
+        "Put the yellow block on G at the end. First put it on I. Move red and blue to any empty region "
+        "at any time.",
     ],
 }

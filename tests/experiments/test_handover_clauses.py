@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import pytest
 from handover_session10 import STYLES
-from handover_session11 import NEAR_MISSES, READ
+from handover_session11 import NEAR_MISSES, OUT_OF_ORDER, READ
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.translate import translate
@@ -48,3 +48,9 @@ def test_dev11_styles_give_the_written_specs(style):
 def test_a_scene_statement_the_world_contradicts_is_refused_by_name():
     with pytest.raises(HTTError, match="does not hold in this scene"):
         _spec(3, "The pillars sit on E, F and G now. Move them to regions E, F and G.")
+
+
+@pytest.mark.parametrize(("task_id", "text"), [(t, x) for t, texts in OUT_OF_ORDER.items() for x in texts])
+def test_steps_said_out_of_order_are_refused_by_name(task_id, text):
+    with pytest.raises(HTTError, match="say the steps in order"):
+        _spec(task_id, text)

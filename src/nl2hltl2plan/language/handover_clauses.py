@@ -83,22 +83,26 @@ def _read_scene(m: Marked, scene: Scene) -> None:
 
     def main(match: re.Match[str]) -> str:
         b, p = match.group("b"), match.group("p") or match.group("p2")
+        timed = any(match.group(g) for g in ("now", "at", "t1", "t2"))
+        if match.group("p2") and not timed:  # "the blocks are on E, F and G" may state the goal
+            return match.group(0)
         if not _holds(m, scene, b, p):
             # with its time ("now", "at the moment") it states the scene, wrongly; without, "the blocks
             # rest on the opposite side" may state the goal: left to the goal readers
-            if match.group("p2") or match.group("now") or match.group("at"):
+            if timed:
                 raise _refuse_scene(m, scene, b, match.group(0))
             return match.group(0)
         # "the pillars sit on H, I and J but belong in E, F and G": the subject goes on to the next verb
         return f"{match.group('lead')} B{b} " if match.group("link") else match.group("lead")
 
-    # a clause of its own: "the pillars sit on H, I and J", "the red block is now on G" (with a plain
-    # "is/are", only with its time: "the blocks are on E, F and G" may state the goal)
+    # a clause of its own: "the pillars sit on H, I and J", "the red block is now on G", "the pillars are
+    # on H, I and J right now" (with a plain "is/are", only with its time)
+    now = r"(?:at\s+the\s+moment|right\s+now|now|currently|at\s+present)"
     m.sub(
         rf"(?P<lead>^|,|;)\s*B(?P<b>\d+)\s+(?P<now>(?:now|currently)\s+)?(?:(?:are|is)\s+(?:now\s+|currently\s+)?)?"
         rf"(?:(?:sits?|sitting|stands?|standing|lies?|lying|rests?|resting|starts?|located)\s+(?:on|in|at)\s+P(?P<p>\d+)"
         rf"(?P<at>{_NOW})|"
-        rf"(?:are|is)\s+(?:on|in|at)\s+P(?P<p2>\d+)\s+(?:at\s+the\s+moment|right\s+now|now|currently|at\s+present))"
+        rf"(?:are|is)\s+(?P<t1>{now}\s+)?(?:on|in|at)\s+P(?P<p2>\d+)(?P<t2>\s+{now})?)"
         rf"\s*(?:(?P<link>\bbut\b|\band\b)|(?=,|$))",
         main,
     )

@@ -330,7 +330,7 @@ def _mark_pronouns(m: Marked, previous: str, previous_group: tuple[str, ...]) ->
             return _new_block(m, m.blocks[fits[-1]], match.group(0))
         if previous and match.group(0) == "it":
             return _new_block(m, [previous], match.group(0))
-        if previous_group and match.group(0) == "them":
+        if previous_group and match.group(0) in ("them", "they"):
             return _new_block(m, list(previous_group), match.group(0))
         return match.group(0)
 

@@ -120,6 +120,7 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
     for x, y in touches:
         _first_goal(goals, x).touch_guard.append(y)
     _refuse_cyclic(orders)
+    _refuse_misplaced_markers(clauses)
     root = _tree(clauses)
     for x, y in orders:
         _order(root, _first_goal(goals, x), _first_goal(goals, y))
@@ -199,6 +200,18 @@ def _guard(
             regions = [r for r in scene.layout.regions if r not in g.regions]
         for r in regions:
             g.drop_guard.update({f"drop({r})"} if every else {f"put({b},{r})" for b in blocks})
+
+
+def _refuse_misplaced_markers(clauses: list[Clause]) -> None:
+    """'Finally, put yellow on G. First, put it on I.': a step said out of the text's order is not modelled
+    (the tree follows the text), so it is refused rather than read without its order: 'first' after other
+    goals that no 'then' follows, 'finally' / 'after all of these' before any goal."""
+    for k, c in enumerate(clauses):
+        follows = k + 1 < len(clauses) and clauses[k + 1].marker == "then"
+        if c.marker == "first" and k > 0 and not follows:
+            raise HTTError(f"'{c.text}' comes first, but is said after other goals: say the steps in order")
+        if c.marker == "after_all" and k == 0 and len(clauses) > 1:
+            raise HTTError(f"'{c.text}' comes last, but is said before other goals: say the steps in order")
 
 
 def _refuse_cyclic(orders: list[tuple[str, str]]) -> None:

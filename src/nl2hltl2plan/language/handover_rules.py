@@ -168,7 +168,7 @@ def read_touch_guards(m: Marked) -> list[tuple[str, str]]:
     other = (
         rf"(?:(?:A\s+)?(?:has\s+|have\s+|had\s+)?(?:already\s+)?(?:{TOUCHED}|{TOUCHING}|{TOUCH})\s+B(?P<y1>\d+)|B(?P<y2>\d+)\s+"
         rf"(?:(?:has|have|had)\s+(?:already\s+)?been|is|was|gets|got|being|be)\s+(?:already\s+)?{TOUCHED}(?:\s+by\s+A)?|"
-        rf"B(?P<y3>\d+){end}|B(?P<y4>\d+)\s+(?:has|have|had)\s+been{end})(?:\s+first{end})?"
+        rf"B(?P<y3>\d+){end}|B(?P<y4>\d+)\s+(?:(?:has|have|had)\s+been|is|was){end})(?:\s+first{end})?"
     )
     may = _MAY
     no_touch = (
@@ -274,7 +274,7 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
         rf"(?:(?:\bA\s+)?{NEG}|\bno\s+A\s+{may}?)\s+{_PUT}\s+(?:any\s+(?:one\s+)?of\s+)?B(?P<b>\d+){down}",
         add,
     )
-    m.sub(rf"\bnothing\s+(?:{may}\s+)?(?:be\s+|is\s+|gets\s+)?{DROP}{down}", add)
+    m.sub(rf"\bnothing\s+(?:{may}\s+)?(?:ever\s+)?(?:be\s+|is\s+|gets\s+)?(?:ever\s+)?{DROP}{down}", add)
     banned = r"(?:not\s+(?:allowed|permitted)|forbidden|prohibited|banned)"
     # "placing any object on R is not allowed"
     m.sub(rf"\b{_PLACING}\s+B(?P<b>\d+){down}\s+(?:is|are)\s+{banned}", add)

@@ -136,6 +136,12 @@ REWRITES: tuple[tuple[str, str], ...] = (
         r"requirements?|restrictions?|conditions?)\s*:",
         r"\1",
     ),
+    # a completion marker as a heading: "when the transfer is done: yellow back to G"
+    (rf"^\s*({AFTER_ALL})\s*:", r"\1 ,"),
+    # a sentence that goes on from the one before: "And the yellow block to the opposite side whenever."
+    (r"^\s*and\s*,?\s+", " "),
+    # a rule's label after a comma, in a compressed heading: "Goal: ..., constraint: red before blue"
+    (r",\s*(?:order|ordering|sequence|constraints?|rules?|requirements?|restrictions?|conditions?)\s*:", ","),
     (
         r"^(\s*(?:step\s+\w+\s*:?|\d\s*[):]|\(\s*\d\s*\))?\s*)(?:objectives?|goals?|tasks?|aims?|missions?|"
         r"instructions?)\s*:",
@@ -395,7 +401,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"^\s*(first|then)\s*,?\s*\1\b\s*,?", r"\1 "),  # "2) Then move it ...": the step's "then" said twice
     # a heading that gives the time of what follows: "Any time: red and blue blocks to any empty region"
     (r"^\s*(?:at\s+)?any\s+time\s*:", "at any time ,"),
-    (r"\b(finally|lastly|then|next|afterwards|first)\s*:", r"\1"),  # "Finally: yellow -> G"
+    (r"\b(finally|lastly|then|next|afterwards|first)\s*:", r"\1 ,"),  # "Finally: yellow -> G"
     (r"\b(?:remember|be\s+sure|make\s+sure|do\s+not\s+forget|note|keep\s+in\s+mind)\s+(?:to|that)\b", " "),
     (r"\bprecedes?\b", "comes before"),
     (r"\bfollows?\b", "comes after"),
