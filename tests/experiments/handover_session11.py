@@ -10,6 +10,8 @@ READ = {
         "We need the blocks on the other side, so carry all three of them across, and the red block has to "
         "arrive before the blue one.",
         "The blocks belong on the opposite side, so move all three of them there; red before blue.",
+        # "there" in the next sentence: the place a block may go to that the sentence before named last
+        "The blocks belong on the opposite side. Move them there, red before blue.",
         # a bare "opposite" after the blocks (terse)
         "Transfer all blocks opposite, red ahead of blue.",
         # (h47's dev, refused until this round: now read as a need and its restatement)
@@ -106,6 +108,7 @@ NEAR_MISSES = {
         "arrive before the blue one.",
         "Transfer all blocks opposite, blue ahead of red.",
         "Goal: all blocks to the opposite side, constraint: blue before red.",
+        "The blocks belong on the opposite side. Move them there, blue before red.",
         "Three block must transfer into opposite side, and blue block placing is before red block.",
         # the restating command names another place
         "We need the blocks on the other side, so carry them to region H; red before blue.",

@@ -108,13 +108,15 @@ def mark(sentence: str, scene: Scene, before: Marked | None = None) -> Marked:
     # "put the three blocks there", "the yellow block is to be moved there as well"
     m.sub(rf"\b((?:{VERB}|{GERUND})\s+B\d+|B\d+\s+{MODAL}{DONE})\s+there\b", r"\1 PLACEREF_there")
     mark_places(m, scene, previous.last_regions)
-    mark_place_pronouns(m, previous.last_regions)
+    mark_place_pronouns(m, previous.last_regions, previous.last_place)
     mark_capacity(m)
     read_statements(m, scene)
     # the regions named last in the sentence's order (not the order the passes marked them in)
     named = [m.places[int(k)] for k in re.findall(r"\bP(\d+)\b", m.text)]
     regions = [p.regions for p in named if p.kind == "regions"]
     m.last_regions = regions[-1] if regions else ()
+    goals = [p for p in named if p.kind in ("regions", "opposite", "away")]
+    m.last_place = goals[-1] if goals else None
     # "There are three goal regions, H, I and J.": places named for the next sentence ("put ... into them")
     m.sub(r"^\s*there\s+(?:are|is)\s+P\d+\s*$", " ")
     _mark_connectives(m)

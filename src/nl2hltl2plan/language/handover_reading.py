@@ -170,7 +170,9 @@ def _said_before(new: list[Clause], clauses: list[Clause]) -> list[Clause]:
             out.append(c)
             continue
         d = same[-1]
-        if c.marker or d.marker or (c.together, c.anytime, c.leader) != (d.together, d.anytime, d.leader):
+        # (one goal is never "at once": its `together` says nothing)
+        moved_apart = len(c.goals) > 1 and c.together != d.together
+        if c.marker or d.marker or moved_apart or (c.anytime, c.leader) != (d.anytime, d.leader):
             raise HTTError(f"'{c.text}' gives again a goal said before ('{d.text}') otherwise: which holds?")
     return out
 
