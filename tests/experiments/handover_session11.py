@@ -180,6 +180,52 @@ NEAR_MISSES = {
     ],
 }
 
+# found with dev12 (written after the clause reader): a scene statement that opens with its time, the
+# exchange said as the state it leaves, a record of labelled lines, a heading whose colon ends the line
+READ_DEV12 = {
+    1: ["hey, can you get all 3 blocks to the opposite side? red has to go before blue tho"],
+    2: ["Blocks: red, blue, yellow\nTargets: H, I, J\nRule: one block per region"],
+    3: [
+        "Right now the pillars stand on H, I and J; they need to go back to E, F and G. Nothing should be "
+        "put on H, I or J while this is going on.",
+        "1) Pillars to E, F, G.\n2) Never use H, I or J in between.",
+    ],
+    4: [
+        "- Transfer: three blocks to the opposite regions\n- Constraint: no touching blue until red has been "
+        "touched\n- Last step: yellow back on G"
+    ],
+    5: [
+        "The red and blue blocks should end up in each other's starting positions, with red placed first. "
+        "The yellow block needs to reach the opposite side too, whenever.",
+        "Exchange: red <-> blue, red placed first\nYellow: to the opposite side, at any time",
+    ],
+    6: ["Place the blocks on:\n- G, H and I (one each)\nOrder: red before blue"],
+    8: [
+        "The yellow block needs to go to I and after that to G. The red and blue blocks simply need to be "
+        "moved to some empty region, at whatever time.",
+        "Step 1: yellow -> I\nStep 2: yellow -> G\nAlso: red and blue -> any empty region, whenever",
+    ],
+}
+
+NEAR_MISSES_DEV12 = {
+    2: ["Blocks: red, blue\nTargets: H, I, J\nRule: one block per region"],
+    3: [
+        "Right now the pillars stand on E, F and G; they need to go back to E, F and G. Nothing should be "
+        "put on H, I or J while this is going on.",
+        "1) Pillars to E, F, G.\n2) Never use H or J in between.",
+    ],
+    4: [
+        "- Transfer: three blocks to the opposite regions\n- Constraint: no touching blue until red has been "
+        "touched\n- Yellow back on G"
+    ],
+    5: [
+        "The red and yellow blocks should end up in each other's starting positions, with red placed first. "
+        "The blue block needs to reach the opposite side too, whenever.",
+    ],
+    6: ["Place the blocks on:\n- G, H and J (one each)\nOrder: red before blue"],
+    8: ["Step 1: yellow -> G\nStep 2: yellow -> I\nAlso: red and blue -> any empty region, whenever"],
+}
+
 # the same steps said out of the text's order: refused by name (the tree follows the text), never read
 # without the order
 OUT_OF_ORDER = {

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import pytest
 from handover_session10 import STYLES
-from handover_session11 import NEAR_MISSES, OUT_OF_ORDER, READ
+from handover_session11 import NEAR_MISSES, NEAR_MISSES_DEV12, OUT_OF_ORDER, READ, READ_DEV12
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.translate import translate
@@ -21,13 +21,18 @@ def _spec(task_id: int, text: str) -> HierarchicalSpec:
     return result.spec
 
 
-@pytest.mark.parametrize(("task_id", "text"), [(t, x) for t, texts in READ.items() for x in texts])
+@pytest.mark.parametrize(
+    ("task_id", "text"), [(t, x) for r in (READ, READ_DEV12) for t, texts in r.items() for x in texts]
+)
 def test_clause_forms_give_the_written_specs(task_id, text):
     equal, why = specs_equivalent(_spec(task_id, text), TASKS[task_id].hierarchical())
     assert equal, why
 
 
-@pytest.mark.parametrize(("task_id", "text"), [(t, x) for t, texts in NEAR_MISSES.items() for x in texts])
+@pytest.mark.parametrize(
+    ("task_id", "text"),
+    [(t, x) for r in (NEAR_MISSES, NEAR_MISSES_DEV12) for t, texts in r.items() for x in texts],
+)
 def test_near_misses_of_the_clause_forms_are_refused_or_give_another_spec(task_id, text):
     try:
         spec = _spec(task_id, text)

@@ -48,9 +48,11 @@ def read_statements(m: Marked, scene: Scene) -> None:
     # terse: "transfer all blocks opposite": the bare adverb is the opposite side
     m.sub(
         rf"\b({VERB})\s+B(\d+)\s+P(\d+)(?=\s*(?:$|,))",
-        lambda x: f" {x.group(1)} B{x.group(2)} to P{x.group(3)} "
-        if m.places[int(x.group(3))].kind == "opposite" and m.places[int(x.group(3))].text == "opposite"
-        else x.group(0),
+        lambda x: (
+            f" {x.group(1)} B{x.group(2)} to P{x.group(3)} "
+            if m.places[int(x.group(3))].kind == "opposite" and m.places[int(x.group(3))].text == "opposite"
+            else x.group(0)
+        ),
     )
 
 
@@ -83,7 +85,7 @@ def _read_scene(m: Marked, scene: Scene) -> None:
 
     def main(match: re.Match[str]) -> str:
         b, p = match.group("b"), match.group("p") or match.group("p2")
-        timed = any(match.group(g) for g in ("now", "at", "t1", "t2"))
+        timed = any(match.group(g) for g in ("now0", "now", "at", "t1", "t2"))
         if match.group("p2") and not timed:  # "the blocks are on E, F and G" may state the goal
             return match.group(0)
         if not _holds(m, scene, b, p):
@@ -99,7 +101,8 @@ def _read_scene(m: Marked, scene: Scene) -> None:
     # on H, I and J right now" (with a plain "is/are", only with its time)
     now = r"(?:at\s+the\s+moment|right\s+now|now|currently|at\s+present)"
     m.sub(
-        rf"(?P<lead>^|,|;)\s*B(?P<b>\d+)\s+(?P<now>(?:now|currently)\s+)?(?:(?:are|is)\s+(?:now\s+|currently\s+)?)?"
+        rf"(?P<lead>^|,|;)\s*(?P<now0>(?:right\s+now|now|currently|at\s+the\s+moment|at\s+present)\s*,?\s*)?"
+        rf"B(?P<b>\d+)\s+(?P<now>(?:now|currently)\s+)?(?:(?:are|is)\s+(?:now\s+|currently\s+)?)?"
         rf"(?:(?:sits?|sitting|stands?|standing|lies?|lying|rests?|resting|starts?|located)\s+(?:on|in|at)\s+P(?P<p>\d+)"
         rf"(?P<at>{_NOW})|"
         rf"(?:are|is)\s+(?P<t1>{now}\s+)?(?:on|in|at)\s+P(?P<p2>\d+)(?P<t2>\s+{now})?)"

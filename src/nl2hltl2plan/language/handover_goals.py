@@ -259,6 +259,13 @@ def _read_exchanges(m: Marked, exchange: Callable[..., str]) -> None:
         rf"\bB(\d+)\s+{MODAL}(?:have|get)\s+their\s+{positions}\s+{SWAPPED}",
         exchange,
     )
+    # the exchange said as the state it leaves: "the red and blue blocks should end up in each other's
+    # (starting) positions"
+    m.sub(
+        rf"\bB(\d+)\s+{MODAL}(?:end\s+up|go|be|get)\s+(?:in|on|at|to|into)\s+each\s+other\s*s?\s+"
+        r"(?:starting\s+|original\s+|initial\s+|old\s+)?(?:positions|places|spots|regions|locations)",
+        exchange,
+    )
     # "the red and blue blocks should be swapped" (after "the positions of ... should be swapped")
     m.sub(rf"\bB(\d+)\s+{MODAL}{SWAPPED}(?:\s+around)?", exchange)
     # "... so that each ends up where the other was": what an exchange is

@@ -129,13 +129,32 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
 
 def _sentences(instruction: str) -> list[str]:
     """Split at line breaks (a list of steps or bullets), '.', ';', '!' and '?', but not in 'i.e.' nor after a
-    step's number ('1. Put ...'); a bullet ('-', '*', '•') starting a line or sentence is dropped."""
+    step's number ('1. Put ...'); a bullet ('-', '*', '•') starting a line or sentence is dropped. A heading
+    ending in a colon is joined to the line below it, and a record of labelled lines ('Blocks: ...' then
+    'Targets: ...') is read as one goal."""
     out: list[str] = []
+    # a record of labelled lines: "Blocks: red, blue, yellow" then "Targets: H, I, J" is one goal
+    instruction = re.sub(
+        r"(?im)^\s*(?:[-*•·]\s+)?(?:blocks?|objects?|pillars?|items?)\s*:\s*([^\n:]+?)\s*\n\s*(?:[-*•·]\s+)?"
+        r"(?:targets?|destinations?|goal\s+regions?|target\s+regions?|where)\s*:\s*([^\n:]+?)\s*$",
+        lambda x: _listed(x.group(1)) + " to " + x.group(2),
+        instruction,
+    )
+    # a heading that ends in a colon goes on in the bullet below it: "Place the blocks on:\n- G, H and I"
+    # (after a preposition the colon only ends the line)
+    bullet = r"[ \t]*\n\s*(?:[-*•·]|\d[.)])\s+"
+    instruction = re.sub(rf"(?m)\b(on|onto|in|into|to|at)\s*:{bullet}", r"\1 ", instruction)
+    instruction = re.sub(rf"(?m):{bullet}", ": ", instruction)
     for line in instruction.splitlines():
         text = re.sub(r"(^\s*|[.;!?]\s+)(\d)\.\s", r"\1\2) ", line)
         text = re.sub(r"\b[iI]\.\s?[eE]\.", "that is", text)
         out += [re.sub(r"^\s*[-*•·]\s+", "", s) for s in re.split(r"[.;!?]+(?:\s|$)", text)]
     return [s for s in out if s.strip()]
+
+
+def _listed(items: str) -> str:
+    """'red, blue, yellow' -> 'red, blue and yellow' (a record's list: its last comma is its 'and')."""
+    return items if re.search(r"\band\b", items) else re.sub(r",\s*([^,]+)$", r" and \1", items)
 
 
 def _without_restated(clauses: list[Clause]) -> list[Clause]:

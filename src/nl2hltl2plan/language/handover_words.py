@@ -47,7 +47,7 @@ PERIOD_WORDS = (
     r"(?:(?:during|in)\s+(?:this|that|the\s+same)\s+(?:whole\s+|entire\s+)?(?:period|time)|in\s+the\s+meantime|meanwhile|"
     r"while\s+doing\s+(?:so|this|that|it)|while\s+(?:this|that)\s+(?:happens|is\s+happening|goes\s+on|is\s+going\s+on)|"
     r"at\s+the\s+same\s+time|in\s+the\s+process|all\s+the\s+while|the\s+whole\s+time|in\s+the\s+interim|"
-    r"throughout(?:\s+(?:this|the|that)\s+(?:process|period|time))?|until\s+then|along\s+the\s+way|"
+    r"throughout(?:\s+(?:this|the|that)\s+(?:process|period|time))?|until\s+then|along\s+the\s+way|in\s+between|"
     # "until you're done", "till done": until the goals are met (a plan ends when its last goal is met)
     r"until\s+(?:(?:you|we|they)\s*(?:'\s*re|\s+are|\s+have\s+finished)\s+)?(?:all\s+)?(?:done|finished)|"
     r"until\s+(?:it|this|that|everything)\s+is\s+(?:done|finished|complete)|"
@@ -158,10 +158,13 @@ REWRITES: tuple[tuple[str, str], ...] = (
         "never ",
     ),
     (r"\bat\s+some\s+(?:point|time)\s+(?=before|after)\b", ""),  # "put down at some point before ...": before
-    (r"\bat\s+some\s+(?:point|time)\b", "at any time"),
+    (r"\bat\s+(?:some|whatever|whichever)\s+(?:point|time|moment)\b", "at any time"),
     (r"\bnothing\s+else\b", "nothing"),
     (r"\bno\s+other\s+(?=(?:blocks?|objects?|items?|cubes?|pillars?|pieces?)\b)", "no "),
     (r"\bthe\s+(?:last|final)\s+step\s+is\s+to\b", "finally"),
+    (r"^\s*(?:the\s+)?(?:last|final)\s+step\s*:", "finally ,"),  # "Last step: yellow back on G"
+    (r"^\s*(?:also|plus)\s*:", " "),  # "Also: red and blue -> any empty region"
+    (r"\s*,?\s*\b(?:tho|though)\s*$", " "),  # "red has to go before blue tho"
     (r"\bthe\s+first\s+step\s+is\s+to\b", "first"),
     (r"\bthe\s+(?:next|second)\s+step\s+is\s+to\b", "then"),
     (
@@ -191,7 +194,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
     ),
     (r"^\s*what\s+(?:needs|has)\s+to\s+(?:happen|be\s+done)\s+is\s+(?:that\s+)?", " "),
     # a heading verb that names an exchange: "Swap: red and blue blocks"
-    (r"^\s*(swap|exchange|switch)\s*:", r"\1"),
+    (r"^\s*(swap|exchange|switch)\s*:\s*(?:(?:swap|exchange|switch)\b)?", r"\1 "),
     # a heading that gives the period of what follows: "Meanwhile: nothing on F, G or H"
     (rf"^\s*({PERIOD_WORDS})\s*:\s*(.+)$", r"\2 \1"),
     (r"(?<!\bin\s)\bany\s+order\b", "in any order"),
