@@ -2,13 +2,13 @@
 eight Table III instructions must give the written specs).
 
     PYTHONPATH=src python scripts/bench_handover_styles.py [--batch NAME] [--verbose] [--file F]
-    (NAME: a batch of the file: dev, dev2 ... dev10, validation, validation2; default dev)
+    (NAME: a batch of the file: dev, dev2 ... dev12, validation, validation2, validation3; default dev)
     (default F: tests/experiments/handover_styles_session10.json)
 
 Each sentence of the batch is read on instance 0 of its task (`translate`, offline) and judged against the
 task's written spec node by node (`specs_equivalent`): "same", "refused" (exit 2, named) or "other" (a
-different spec: a misreading). Prints a markdown table per style and, with --verbose, each sentence that
-is not "same" with the reason.
+different spec: a misreading). Prints a markdown table per style, the mean time per sentence (reading and
+judging) and, with --verbose, each sentence that is not "same" with the reason.
 """
 
 from __future__ import annotations
@@ -17,6 +17,7 @@ import argparse
 import json
 import platform
 import subprocess
+import time
 from collections import Counter
 from pathlib import Path
 
@@ -53,6 +54,7 @@ def main() -> None:
     print("| style | sentences | same spec | refused | other spec |\n|---|---|---|---|---|")
     total: Counter[str] = Counter()
     misses: list[str] = []
+    start = time.perf_counter()
     for style, texts in styles.items():
         counts: Counter[str] = Counter()
         for task, text in texts.items():
@@ -64,6 +66,8 @@ def main() -> None:
         row = [sum(counts.values()), counts["same"], counts["refused"], counts["other"]]
         print(f"| {style} | " + " | ".join(map(str, row)) + " |")
     print(f"| all | {sum(total.values())} | {total['same']} | {total['refused']} | {total['other']} |")
+    per = (time.perf_counter() - start) / max(1, sum(total.values()))
+    print(f"\n{per * 1000:.0f} ms per sentence (reading and the node-by-node Spot check)")
     if args.verbose:
         print("\n" + "\n".join(misses))
 

@@ -216,14 +216,20 @@ NEAR_MISSES_DEV12 = {
     ],
     4: [
         "- Transfer: three blocks to the opposite regions\n- Constraint: no touching blue until red has been "
-        "touched\n- Yellow back on G"
+        "touched\n- Yellow back on G",
+        "Put the red block on the opposite side. Put the blue block there too. Put the yellow block there "
+        "too. Do not touch blue before red; after all of that, put yellow back on G.",
     ],
     5: [
         "The red and yellow blocks should end up in each other's starting positions, with red placed first. "
         "The blue block needs to reach the opposite side too, whenever.",
     ],
     6: ["Place the blocks on:\n- G, H and J (one each)\nOrder: red before blue"],
-    8: ["Step 1: yellow -> G\nStep 2: yellow -> I\nAlso: red and blue -> any empty region, whenever"],
+    8: [
+        "Step 1: yellow -> G\nStep 2: yellow -> I\nAlso: red and blue -> any empty region, whenever",
+        # "there" for other blocks than the sentence before moved: the same region, or each its own? refused
+        "The red block goes to any empty region. Put the blue block there too. Yellow to I, then G.",
+    ],
 }
 
 # the same steps said out of the text's order: refused by name (the tree follows the text), never read

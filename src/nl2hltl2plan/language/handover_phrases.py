@@ -108,7 +108,7 @@ def mark(sentence: str, scene: Scene, before: Marked | None = None) -> Marked:
     # "put the three blocks there", "the yellow block is to be moved there as well"
     m.sub(rf"\b((?:{VERB}|{GERUND})\s+B\d+|B\d+\s+{MODAL}{DONE})\s+there\b", r"\1 PLACEREF_there")
     mark_places(m, scene, previous.last_regions)
-    mark_place_pronouns(m, previous.last_regions, previous.last_place)
+    mark_place_pronouns(m, previous.last_regions, previous.last_place, previous.last_group)
     mark_capacity(m)
     read_statements(m, scene)
     # the regions named last in the sentence's order (not the order the passes marked them in)
