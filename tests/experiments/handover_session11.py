@@ -232,6 +232,71 @@ NEAR_MISSES_DEV12 = {
     ],
 }
 
+# found with dev13 (narrative, abbreviated, needs and passives)
+READ_DEV13 = {
+    1: [
+        "Here's the idea: the three blocks go across to the opposite side, the red one arriving before the "
+        "blue one.",
+        "Move all 3 blocks -> opp. side (red before blue).",
+    ],
+    2: [
+        "The blocks are going to H, I and J. Since each region only has room for one, every block gets a "
+        "region of its own.",
+        "Regions H, I and J need to be filled with the three blocks, one block in each.",
+    ],
+    4: [
+        "First the three blocks travel to the opposite regions, and the blue block stays untouched until "
+        "somebody has touched the red block. After that transfer, the yellow block returns to region G.",
+        "Blocks -> opposite regions; don't touch blue b4 red; then yellow -> G.",
+    ],
+    5: [
+        "The red block takes the blue block's place and the blue block takes the red block's place, red "
+        "going first. Meanwhile the yellow block heads to the opposite side at some point.",
+        "Swap red & blue (red 1st); yellow -> opposite side anytime.",
+    ],
+    6: [
+        "The three blocks need to be placed on regions G, H and I, a different region each, and the red "
+        "block needs to be placed before the blue block."
+    ],
+    7: [
+        "The three blocks are dropped on region I, one after the other, red ahead of blue; for the whole "
+        "task, regions F, G and H receive nothing."
+    ],
+    8: [
+        "The yellow block makes a stop at region I and then moves on to region G, while the red and blue "
+        "blocks each go to an empty region at any point.",
+        "Yellow -> I -> G. Red & blue -> any empty region, anytime.",
+    ],
+}
+
+NEAR_MISSES_DEV13 = {
+    1: [
+        "Here's the idea: the three blocks go across to the opposite side, the blue one arriving before the "
+        "red one."
+    ],
+    2: ["Regions H and I need to be filled with the three blocks, one block in each."],
+    4: [
+        "First the three blocks travel to the opposite regions, and the red block stays untouched until "
+        "somebody has touched the blue block. After that transfer, the yellow block returns to region G.",
+        "Blocks -> opposite regions; don't touch blue b4 red; yellow -> G.",
+    ],
+    5: [
+        "The red block takes the blue block's place and the blue block takes the red block's place, blue "
+        "going first. Meanwhile the yellow block heads to the opposite side at some point.",
+        "The red block takes the blue block's place. Meanwhile the yellow block heads to the opposite side "
+        "at some point.",
+    ],
+    7: [
+        "The three blocks are dropped on region I, one after the other, red ahead of blue; for the whole "
+        "task, regions F and G receive nothing."
+    ],
+    8: [
+        "Yellow -> G -> I. Red & blue -> any empty region, anytime.",
+        "The yellow block makes a stop at region G and then moves on to region I, while the red and blue "
+        "blocks each go to an empty region at any point.",
+    ],
+}
+
 # the same steps said out of the text's order: refused by name (the tree follows the text), never read
 # without the order
 OUT_OF_ORDER = {

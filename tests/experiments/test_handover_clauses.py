@@ -5,7 +5,15 @@ from __future__ import annotations
 
 import pytest
 from handover_session10 import STYLES
-from handover_session11 import NEAR_MISSES, NEAR_MISSES_DEV12, OUT_OF_ORDER, READ, READ_DEV12
+from handover_session11 import (
+    NEAR_MISSES,
+    NEAR_MISSES_DEV12,
+    NEAR_MISSES_DEV13,
+    OUT_OF_ORDER,
+    READ,
+    READ_DEV12,
+    READ_DEV13,
+)
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.translate import translate
@@ -22,7 +30,8 @@ def _spec(task_id: int, text: str) -> HierarchicalSpec:
 
 
 @pytest.mark.parametrize(
-    ("task_id", "text"), [(t, x) for r in (READ, READ_DEV12) for t, texts in r.items() for x in texts]
+    ("task_id", "text"),
+    [(t, x) for r in (READ, READ_DEV12, READ_DEV13) for t, texts in r.items() for x in texts],
 )
 def test_clause_forms_give_the_written_specs(task_id, text):
     equal, why = specs_equivalent(_spec(task_id, text), TASKS[task_id].hierarchical())
@@ -31,7 +40,12 @@ def test_clause_forms_give_the_written_specs(task_id, text):
 
 @pytest.mark.parametrize(
     ("task_id", "text"),
-    [(t, x) for r in (NEAR_MISSES, NEAR_MISSES_DEV12) for t, texts in r.items() for x in texts],
+    [
+        (t, x)
+        for r in (NEAR_MISSES, NEAR_MISSES_DEV12, NEAR_MISSES_DEV13)
+        for t, texts in r.items()
+        for x in texts
+    ],
 )
 def test_near_misses_of_the_clause_forms_are_refused_or_give_another_spec(task_id, text):
     try:

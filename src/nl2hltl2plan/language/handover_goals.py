@@ -206,6 +206,9 @@ def _read_inverse(m: Marked, goal: GoalMaker, every: list[str], mods: str) -> No
             goal, m.places[int(x.group("p"))], blocks_of(m, x.group("b")), x.group(0), x.group(3), False
         ),
     )
+    # "regions H, I and J need to be filled with the three blocks": the passive of the inverse syntax
+    filled = r"(?:filled|occupied|populated|loaded)"
+    m.sub(rf"\bP(\d+)\s+{MODAL}{filled}\s+with\s+B(\d+){mods}", lambda x: _fill(m, x, goal))
     # the inverse syntax "fill regions H, I and J with the three blocks": as many places as blocks
     m.sub(rf"\b(?:fill|occupy|populate|load)\s+P(\d+)\s+with\s+B(\d+){mods}", lambda x: _fill(m, x, goal))
     m.sub(

@@ -179,6 +179,11 @@ def _mark_one_per_region(m: Marked) -> None:
         rf"\b(?:with\s+)?{one}\s+(?:(?:is|being|may|can)\s+)?(?:allowed\s+|permitted\s+)?per\s+{region}\b",
         r"\bone\s+(?:each|apiece)\b",
         rf"(?:,\s*)?\b(?:an?\s+)?(?:different|separate|distinct)\s+{region}\s+(?:for|per)\s+(?:each|every)(?:\s+{NOUN})?\b",
+        rf"(?:,\s*)?\b(?:an?\s+)?(?:different|separate|distinct)\s+{region}\s+(?:each|apiece)\b",
+        # "each region only has room for one"; "every block gets a region of its own"
+        rf"(?:,\s*)?\b(?:each|every)\s+{region}\s+(?:only\s+)?(?:has|having)\s+(?:only\s+)?room\s+for\s+(?:only\s+)?(?:one|a\s+single)"
+        rf"(?:\s+{NOUN})?\b",
+        rf"\b(?:each|every)\s+{NOUN}\s+(?:gets|has|takes|goes\s+(?:to|in|into))\s+an?\s+{region}\s+of\s+its\s+own\b",
         # "only one block may occupy a region": any region, so each
         rf"\b(?:only|at\s+most|no\s+more\s+than)\s+(?:one|a\s+single|1)\s+{NOUN}\s+(?:may|can|is\s+allowed\s+to|should|will)\s+"
         rf"(?:occupy|fit\s+(?:in|on|into)|go\s+(?:in|on|into)|be\s+(?:placed\s+)?(?:in|on))\s+(?:a|any|each|every)\s+"

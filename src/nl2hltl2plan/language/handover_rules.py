@@ -48,7 +48,10 @@ def read_orders(m: Marked) -> list[tuple[str, str]]:
     has been placed, Y may be placed', 'do not place Y until X has been placed': X's goal before Y's."""
     out: list[tuple[str, str]] = []
     tail = rf"(?:\s+(?:is|has\s+been|gets|was|have\s+been|are)\s+{DONE}|\s+does)?"
-    done = rf"(?:(?:{DONE}|comes?|lands?|arrives?|goes|gets?)\s+)?(?:down\s+|there\s+)?(?:first\s*,?\s*)?"
+    done = (
+        rf"(?:(?:{DONE}|comes?|lands?|arrives?|goes|gets?|arriving|coming|landing|getting|going)\s+)?"
+        r"(?:down\s+|there\s+)?(?:first\s*,?\s*)?"
+    )
 
     def add(match: re.Match[str], flip: bool) -> str:
         a, b = one_block(m, match.group(1), "an order"), one_block(m, match.group(2), "an order")
@@ -254,6 +257,7 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
         add_same,
     )
     # "regions F, G and H shall receive no object"
+    m.sub(rf"\bP(?P<p>\d+)\s+(?:{may}\s+)?{receives}\s+nothing{PERIOD}", add)  # "F, G and H receive nothing"
     receive_no = rf"{receives}\s+no"
     m.sub(rf"\bP(?P<p>\d+)\s+(?:{may}\s+)?{receive_no}\s*B(?P<b>\d+){PERIOD}", add)
     # "nothing goes on F, G or H", "no block may go on R"

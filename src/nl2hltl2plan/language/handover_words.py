@@ -72,7 +72,7 @@ AFTER_ALL = (
     r"after\s+(?:all\s+(?:of\s+)?(?:these|this|that|"
     r"the\s+above)|everything(?:\s+else)?)|finally|lastly|last\s+of\s+all|at\s+the\s+(?:very\s+)?end|in\s+the\s+end|"
     r"after\s+(?:finish(?:ing)?|complet(?:e|ing)|doing|done)\s+(?:with\s+)?(?:all\s+(?:of\s+)?)?(?:this|these|that|everything|them)|"
-    r"after\s+(?:finishing|completing)\s+(?:it\s+)?all|"
+    r"after\s+(?:finishing|completing)\s+(?:it\s+)?all|after\s+(?:that|this|the)\s+(?:transfer|task|move)|"
     # "when the transfer is complete", "when all finish" (non-native): the work said so far is done
     rf"(?:once|when|after)\s+(?:the|this|that)\s+(?:transfer|task|job|work|moving|transport)\s+(?:is|has\s+been)\s+{DONE_STATE}|"
     r"(?:once|when|after)\s+(?:all|everything)\s+(?:is\s+|are\s+|has\s+|have\s+)?(?:finish(?:ed)?|done|complete(?:d)?)|"
@@ -179,7 +179,13 @@ REWRITES: tuple[tuple[str, str], ...] = (
         r"\b([a-z]+(?:\s+(?:block|one))?)\s*(?:<\s*-\s*>|↔)\s*([a-z]+(?:\s+(?:block|one))?)\b",
         r"swap \1 with \2",
     ),
+    # a chain of arrows is a sequence of stops: "yellow -> I -> G"
+    (r"\s*(?:→|->|=>)\s*([e-j])\s*(?:→|->|=>)\s*", r" to \1 , then to "),
     (r"\s*(?:→|->|=>)\s*", " to "),
+    # abbreviations: "b4", "1st", "opp. side" (the full stop of "opp." is kept from ending the sentence)
+    (r"\bb4\b", "before"),
+    (r"\b1\s*st\b", "first"),
+    (r"\bopp\b\.?", "opposite"),
     (r"\b(?:please\s+)?(?:be\s+advised|be\s+aware|note)\s+that\b", " "),
     (r"\s*,?\s*\bit\s+being\s+understood\s+that\b", ","),
     (
@@ -187,6 +193,17 @@ REWRITES: tuple[tuple[str, str], ...] = (
         " ",
     ),
     (r"^\s*(?:two|three|a\s+few)\s+things\s*:", " "),
+    (r"^\s*here\s*(?:s|is)\s+(?:the|my|our)\s+(?:idea|plan|deal|thing)\s*:", " "),
+    (r"\b(?:somebody|someone|anybody|anyone)\b", "an arm"),  # "until somebody has touched the red block"
+    # narrative verbs of moving: "makes a stop at I", "moves on to G", "takes the blue block's place"
+    (r"\b(?:makes?|making)\s+a\s+stop\s+(?:at|on|in)\b", "goes to"),
+    (r"\b(?:moves?|goes|go|continues?|travels?)\s+on\s+to\b", "to"),
+    (r"\b(?:heads?|heading)\s+(?=to\b|towards?\b)", "goes "),
+    (
+        r"\b(?:takes?|gets?|occup(?:y|ies))\s+(?=(?:the\s+)?(?:red|blue|yellow)\s+(?:block\s+|one\s+)?s\s+"
+        r"(?:place|position|spot)\b)",
+        "goes to ",
+    ),
     # framing that announces the task: "what I would like you to do is (to) ...", "what needs to happen is"
     (
         r"^\s*what\s+(?:please|(?:i|we)\s*(?:'\s*d|would)?\s*(?:like|want|need)\s+(?:you\s+)?to)\s+do\s+is\s+(?:to\s+)?",
