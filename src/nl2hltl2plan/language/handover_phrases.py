@@ -40,6 +40,7 @@ from nl2hltl2plan.language.handover_scene import (
     Marked,
     Scene,
 )
+from nl2hltl2plan.language.handover_typos import typo_table
 from nl2hltl2plan.language.handover_words import (
     DONE,
     GERUND,
@@ -48,7 +49,6 @@ from nl2hltl2plan.language.handover_words import (
     REWRITES,
     SWAP,
     VERB,
-    typo_table,
 )
 
 _TOUCHED = r"(?:touched|picked|grasped|grabbed|handled|moved|lifted)"
