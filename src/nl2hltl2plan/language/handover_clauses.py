@@ -14,7 +14,10 @@
 - a question inverts its modal ("could the red and blue blocks each go to an empty region?"): read as
   the statement ("the red and blue blocks could each go ...");
 - a labelled heading puts the place first ("Target: region I, all three blocks, one after another"):
-  read as "all three blocks to region I, one after another".
+  read as "all three blocks to region I, one after another";
+- a verb pair names the blocks twice ("take the pillars and bring them over to E, F and G", "arrange the
+  blocks so that G, H and I each end up holding one of them"): read once, when both name the same blocks;
+  a bare "opposite" after the blocks ("transfer all blocks opposite") is the opposite side.
 
 Each reader consumes only what it reads; the rest stays for the rules and goal readers, and whatever no
 reader uses is refused by the caller, naming it.
@@ -67,7 +70,10 @@ def _holds(m: Marked, scene: Scene, b: str, p: str) -> bool:
 def _refuse_scene(m: Marked, scene: Scene, b: str, text: str) -> HTTError:
     where = scene.layout.region_at
     starts = ", ".join(f"{x.lower()} on {where.get(scene.starts[x], '?')}" for x in m.blocks[int(b)])
-    return HTTError(f"'{text.strip()}' does not hold in this scene ({starts}); say where the blocks go")
+    said = re.sub(r"\bB(\d+)\b", lambda x: m.block_text[int(x.group(1))], text)
+    said = re.sub(r"\bP(\d+)\b", lambda x: m.places[int(x.group(1))].text, said)
+    said = " ".join(said.strip(" ,").split())
+    return HTTError(f"'{said}' does not hold in this scene ({starts}); say where the blocks go")
 
 
 def _read_scene(m: Marked, scene: Scene) -> None:
