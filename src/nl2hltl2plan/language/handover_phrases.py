@@ -324,8 +324,8 @@ def _mark_blocks(m: Marked, scene: Scene, previous: str, previous_group: tuple[s
 
 def _mark_pronouns(m: Marked, previous: str, previous_group: tuple[str, ...]) -> None:
     """'it' / 'them': the blocks of the nearest mention before (one block for 'it'; for 'it' with none
-    in its sentence, the last single block the sentence before named; for 'them' with none, the one group
-    of blocks the sentence before named)."""
+    in its sentence, the last single block the sentence before named; for 'them' / 'they' with none, the
+    one group of blocks the sentence before named)."""
 
     def resolve(match: re.Match[str]) -> str:
         head = m.text[: match.start()]

@@ -4,10 +4,11 @@
 `handover-square` / `handover-line` world and returns the same `LanguageResult` as the other
 worlds (HTT, base tasks, `before`, leaf formulas, the hierarchical spec) plus `constraints`: the
 guards and joint goals as text, sorted. Each sentence is normalised and its phrases are resolved
-against the instance's layout (`language.handover_phrases`, word tables in `handover_words`); its
-orders, touch guards and prohibitions are read first (`language.handover_rules`), then its goal
-clauses (`language.handover_goals`); this module builds the task tree and the spec. The rules, each
-general:
+against the instance's layout (`language.handover_phrases`, word tables in `handover_words`), and its
+statements that are not commands (scene, target, need, question) are read and checked
+(`language.handover_clauses`); its orders, touch guards and prohibitions are read first
+(`language.handover_rules`), then its goal clauses (`language.handover_goals`); this module builds the
+task tree and the spec. The rules, each general:
 
 - a goal clause "VERB BLOCKS [back] to PLACE" gives one leaf per block: `F(at(B,R1) | at(B,R2) ...)`
   (the opposite side: per block; any empty region: `away(B)`; where another block starts: `@B`);
@@ -183,7 +184,7 @@ def _said_before(new: list[Clause], clauses: list[Clause]) -> list[Clause]:
     def key(c: Clause) -> set[tuple[str, str, tuple[str, ...], str]]:
         return {(g.block, g.place.kind, g.regions, g.place.block) for g in c.goals}
 
-    out = []
+    out: list[Clause] = []
     for c in new:
         same = [d for d in clauses if key(c) <= key(d)]
         if not same:
