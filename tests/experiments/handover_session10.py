@@ -17,8 +17,6 @@ STILL_REFUSED = {
     "The red block is holding the blue one in place, so no arm may touch the blue block until the red "
     "block has been touched. Move all three blocks to the opposite regions, and once that is done, put the "
     "yellow block back on region G, where the red block is now.",
-    "Region I is the drop point, so place the three blocks there one after another, red before blue; "
-    "because regions F, G and H must stay clear meanwhile, put nothing on them.",
     "The yellow block needs to pass through region I, so put it on region I first and then on region G. "
     "The red and blue blocks can go to any empty region at any time, since their order does not matter.",
     "Please first put yellow block to region I, after put yellow block to region G, and the red and blue "
@@ -80,8 +78,6 @@ STILL_REFUSED = {
     # dev10 (h50): reasons that state the scene or a purpose ("belong on", "knocking over"), a goal said
     # twice ("visit region I before it ends at region G, so take it to I first"), and headings whose
     # subject is left to the goal ("Timing: yellow at any time", "Target regions: G, H and I")
-    "The blocks belong on the opposite side, so move all three of them there. Place the red block "
-    "before the blue block so that the order is right.",
     "To avoid knocking the blue block over, don't touch it until the red block has been touched. Move "
     "the three blocks to the opposite regions, and when they are all there, bring the yellow block "
     "back to region G.",

@@ -188,7 +188,7 @@ def _read_inverse(m: Marked, goal: GoalMaker, every: list[str], mods: str) -> No
         lambda x: _fill(m, x, goal, every),
     )
     m.sub(  # "G, H, I: one block each"
-        rf"(?:^|(?<=,))\s*P(\d+)\s*:\s*(?:exactly\s+)?(?:one|a\s+single)\s+(?:block|object|cube|pillar|item)\s+"
+        rf"(?:^|(?<=,))\s*P(\d+)\s*[:,]\s*(?:exactly\s+)?(?:one|a\s+single)\s+(?:block|object|cube|pillar|item)\s+"
         rf"(?:each|apiece)(){mods}",
         lambda x: _fill(m, x, goal, every),
     )
@@ -206,10 +206,14 @@ def _read_inverse(m: Marked, goal: GoalMaker, every: list[str], mods: str) -> No
             goal, m.places[int(x.group("p"))], blocks_of(m, x.group("b")), x.group(0), x.group(3), False
         ),
     )
+    # "regions H, I and J need to be filled with the three blocks": the passive of the inverse syntax
+    filled = r"(?:filled|occupied|populated|loaded)"
+    m.sub(rf"\bP(\d+)\s+{MODAL}{filled}\s+with\s+B(\d+){mods}", lambda x: _fill(m, x, goal))
     # the inverse syntax "fill regions H, I and J with the three blocks": as many places as blocks
     m.sub(rf"\b(?:fill|occupy|populate|load)\s+P(\d+)\s+with\s+B(\d+){mods}", lambda x: _fill(m, x, goal))
     m.sub(
-        rf"\b(?:each\s+of\s+)?P(\d+)\s+{MODAL}(?:each\s+)?(?:receive|get|take|hold|contain)s?\s+(?:exactly\s+|just\s+)?"
+        rf"\b(?:each\s+of\s+)?P(\d+)\s+(?:each\s+)?{MODAL}(?:each\s+)?(?:(?:receive|get|take|hold|contain)s?|ends?\s+up\s+(?:holding|with))\s+"
+        rf"(?:exactly\s+|just\s+)?"
         rf"(?:one\s+of\s+)?B(\d+){mods}",
         lambda x: _fill(m, x, goal),
     )
@@ -218,10 +222,12 @@ def _read_inverse(m: Marked, goal: GoalMaker, every: list[str], mods: str) -> No
 def _read_exchanges(m: Marked, exchange: Callable[..., str]) -> None:
     """'exchange the positions of X and Y', 'swap X with Y', 'X and Y should trade places', 'the positions
     of X and Y should be swapped' (and '..., so that each ends up where the other was')."""
-    trade = r"(?:exchange|swap|switch|trade)s?"  # "X and Y should trade places"
+    trade = r"(?:exchange|swap|switch|trade|change)s?"  # "X and Y should trade places"
     positions = r"(?:positions|places|locations|spots)"
-    m.sub(  # "the red block and the blue block shall exchange their positions"
-        rf"\bB(\d+)\s+and\s+B(\d+)\s+(?:to\s+)?{MODAL}{trade}\s+(?:their\s+)?{positions}",
+    each_other = r"(?:\s+(?:with\s+)?(?:each\s+other|one\s+another))"
+    m.sub(  # "the red block and the blue block shall exchange their positions (with each other)"
+        rf"\bB(\d+)\s+and\s+B(\d+)\s+(?:to\s+)?{MODAL}{trade}\s+(?:their\s+)?(?:{positions}{each_other}?|"
+        rf"(?:position|place|location|spot){each_other})",
         lambda x: exchange(x, x.group(2)),
     )
 
@@ -244,7 +250,7 @@ def _read_exchanges(m: Marked, exchange: Callable[..., str]) -> None:
     )
     m.sub(
         rf"(?:\bwhile\s+|\b(?:want|need|have)\s+)?\bB(\d+)\s+(?:to\s+)?{MODAL}{trade}\s+(?:their\s+)?"
-        r"(?:positions?|places?|locations?|spots?)",
+        rf"(?:positions?|places?|locations?|spots?){each_other}?",
         exchange,
     )
     m.sub(rf"\b{SWAP}\s+(?:the\s+places\s+)?where\s+B(\d+)\s+(?:are|stand|sit|lie)\b", exchange)
@@ -254,6 +260,13 @@ def _read_exchanges(m: Marked, exchange: Callable[..., str]) -> None:
     )
     m.sub(  # "the red and blue blocks are to have their positions exchanged"
         rf"\bB(\d+)\s+{MODAL}(?:have|get)\s+their\s+{positions}\s+{SWAPPED}",
+        exchange,
+    )
+    # the exchange said as the state it leaves: "the red and blue blocks should end up in each other's
+    # (starting) positions"
+    m.sub(
+        rf"\bB(\d+)\s+{MODAL}(?:end\s+up|go|be|get)\s+(?:in|on|at|to|into)\s+each\s+other\s*s?\s+"
+        r"(?:starting\s+|original\s+|initial\s+|old\s+)?(?:positions|places|spots|regions|locations)",
         exchange,
     )
     # "the red and blue blocks should be swapped" (after "the positions of ... should be swapped")

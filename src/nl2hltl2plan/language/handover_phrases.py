@@ -23,6 +23,7 @@ import re
 from functools import partial
 
 from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.language.handover_clauses import read_statements
 from nl2hltl2plan.language.handover_places import (
     mark_capacity,
     mark_place_pronouns,
@@ -39,6 +40,7 @@ from nl2hltl2plan.language.handover_scene import (
     Marked,
     Scene,
 )
+from nl2hltl2plan.language.handover_typos import typo_table
 from nl2hltl2plan.language.handover_words import (
     DONE,
     GERUND,
@@ -47,7 +49,6 @@ from nl2hltl2plan.language.handover_words import (
     REWRITES,
     SWAP,
     VERB,
-    typo_table,
 )
 
 _TOUCHED = r"(?:touched|picked|grasped|grabbed|handled|moved|lifted)"
@@ -101,18 +102,23 @@ def mark(sentence: str, scene: Scene, before: Marked | None = None) -> Marked:
     _mark_arms(m)
     # "do not put anything on them": after a preposition of place, a pronoun names places (a cell holds
     # one block, so nothing goes on a block); resolved once the places are marked
-    m.sub(r"\b(on|onto|in|into)\s+(each\s+of\s+)?(them|it)\b", r"\1 \2 PLACEREF_\3")
-    _mark_blocks(m, scene, previous.last_one)
+    m.sub(r"\b(on|onto|in|into|over|across|among|between)\s+(each\s+of\s+)?(them|it)\b", r"\1 \2 PLACEREF_\3")
+    _mark_blocks(m, scene, previous.last_one, previous.last_group)
     _join_particles(m)
     # "put the three blocks there", "the yellow block is to be moved there as well"
     m.sub(rf"\b((?:{VERB}|{GERUND})\s+B\d+|B\d+\s+{MODAL}{DONE})\s+there\b", r"\1 PLACEREF_there")
     mark_places(m, scene, previous.last_regions)
-    mark_place_pronouns(m, previous.last_regions)
+    mark_place_pronouns(m, previous.last_regions, previous.last_place, previous.last_group)
     mark_capacity(m)
+    read_statements(m, scene)
+    # the regions named last in the sentence's order (not the order the passes marked them in)
+    named = [m.places[int(k)] for k in re.findall(r"\bP(\d+)\b", m.text)]
+    regions = [p.regions for p in named if p.kind == "regions"]
+    m.last_regions = regions[-1] if regions else ()
+    goals = [p for p in named if p.kind in ("regions", "opposite", "away")]
+    m.last_place = goals[-1] if goals else None
     # "There are three goal regions, H, I and J.": places named for the next sentence ("put ... into them")
     m.sub(r"^\s*there\s+(?:are|is)\s+P\d+\s*$", " ")
-    named = [p.regions for p in m.places if p.kind == "regions"]
-    m.last_regions = named[-1] if named else ()
     _mark_connectives(m)
     return m
 
@@ -172,7 +178,16 @@ def _mark_one_per_region(m: Marked) -> None:
         rf"(?:each|every)\s+{region}\b",
         rf"\b(?:with\s+)?{one}\s+(?:(?:is|being|may|can)\s+)?(?:allowed\s+|permitted\s+)?per\s+{region}\b",
         r"\bone\s+(?:each|apiece)\b",
-        rf"(?:,\s*)?\b(?:an?\s+)?(?:different|separate|distinct)\s+{region}\s+(?:for|per)\s+(?:each|every)\s+{NOUN}\b",
+        rf"(?:,\s*)?\b(?:an?\s+)?(?:different|separate|distinct)\s+{region}\s+(?:for|per)\s+(?:each|every)(?:\s+{NOUN})?\b",
+        rf"(?:,\s*)?\b(?:an?\s+)?(?:different|separate|distinct)\s+{region}\s+(?:each|apiece)\b",
+        # "each region only has room for one"; "every block gets a region of its own"
+        rf"(?:,\s*)?\b(?:each|every)\s+{region}\s+(?:only\s+)?(?:has|having)\s+(?:only\s+)?room\s+for\s+(?:only\s+)?(?:one|a\s+single)"
+        rf"(?:\s+{NOUN})?\b",
+        rf"\b(?:each|every)\s+{NOUN}\s+(?:gets|has|takes|goes\s+(?:to|in|into))\s+an?\s+{region}\s+of\s+its\s+own\b",
+        # "only one block may occupy a region": any region, so each
+        rf"\b(?:only|at\s+most|no\s+more\s+than)\s+(?:one|a\s+single|1)\s+{NOUN}\s+(?:may|can|is\s+allowed\s+to|should|will)\s+"
+        rf"(?:occupy|fit\s+(?:in|on|into)|go\s+(?:in|on|into)|be\s+(?:placed\s+)?(?:in|on))\s+(?:a|any|each|every)\s+"
+        rf"(?:single\s+)?{region}\b",
         # "each gets one block", "one region is only for one block"
         rf"(?:,\s*)?\beach\s+(?:one\s+)?(?:gets|receives|takes|holds)\s+(?:exactly\s+)?(?:one|a\s+single)(?:\s+{NOUN})?\b",
         rf"\b(?:each|every|one|a)\s+{region}\s+(?:is\s+)?(?:only\s+)?for\s+(?:only\s+)?(?:one|a\s+single|1)(?:\s+{NOUN})?"
@@ -218,7 +233,7 @@ def _new_block(m: Marked, names: list[str], text: str) -> str:
     return f" B{len(m.blocks) - 1} "
 
 
-def _mark_blocks(m: Marked, scene: Scene, previous: str) -> None:
+def _mark_blocks(m: Marked, scene: Scene, previous: str, previous_group: tuple[str, ...] = ()) -> None:
     colours = (
         rf"\b(?:the\s+)?{COLOUR}(?:\s+{NOUN})?(?:\s+s\b)?(?:\s*(?:,|and|&|or|/)\s*(?:the\s+)?{COLOUR}(?:\s+{NOUN})?"
         rf"(?:\s+s\b)?)*(?:\s+{NOUNS})?\b"
@@ -304,12 +319,13 @@ def _mark_blocks(m: Marked, scene: Scene, previous: str) -> None:
         return " "
 
     m.sub(r"\s*,?\s*\ball\s+(two|three|four|\d+)\s+of\s+them\b", restated)
-    _mark_pronouns(m, previous)
+    _mark_pronouns(m, previous, previous_group)
 
 
-def _mark_pronouns(m: Marked, previous: str) -> None:
+def _mark_pronouns(m: Marked, previous: str, previous_group: tuple[str, ...]) -> None:
     """'it' / 'them': the blocks of the nearest mention before (one block for 'it'; for 'it' with none
-    in its sentence, the last single block the sentence before named)."""
+    in its sentence, the last single block the sentence before named; for 'them' / 'they' with none, the
+    one group of blocks the sentence before named)."""
 
     def resolve(match: re.Match[str]) -> str:
         head = m.text[: match.start()]
@@ -319,11 +335,11 @@ def _mark_pronouns(m: Marked, previous: str) -> None:
         fits = [k for k in before if match.group(0) != "it" or len(m.blocks[k]) == 1]
         if fits:
             return _new_block(m, m.blocks[fits[-1]], match.group(0))
-        return (
-            _new_block(m, [previous], match.group(0))
-            if previous and match.group(0) == "it"
-            else match.group(0)
-        )
+        if previous and match.group(0) == "it":
+            return _new_block(m, [previous], match.group(0))
+        if previous_group and match.group(0) in ("them", "they"):
+            return _new_block(m, list(previous_group), match.group(0))
+        return match.group(0)
 
     def pair(match: re.Match[str]) -> str:  # "while exchanging their positions": the two blocks named
         named = [b for k in re.findall(r"\bB(\d+)\b", m.text[: match.start()]) for b in m.blocks[int(k)]]
@@ -347,3 +363,5 @@ def _mark_pronouns(m: Marked, previous: str) -> None:
         m.text = m.text[heading.end() :]
     singles = [m.blocks[int(k)] for k in re.findall(r"\bB(\d+)\b", m.text) if len(m.blocks[int(k)]) == 1]
     m.last_one = singles[-1][0] if singles else ""
+    groups = {tuple(m.blocks[int(k)]) for k in re.findall(r"\bB(\d+)\b", m.text) if len(m.blocks[int(k)]) > 1}
+    m.last_group = groups.pop() if len(groups) == 1 else ()

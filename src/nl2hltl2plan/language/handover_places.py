@@ -12,15 +12,21 @@ from typing import Literal
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.handover_scene import COUNTS, LETTER, NOUN, PLACE_NOUN, Marked, Place, Scene
-from nl2hltl2plan.language.handover_words import APPOSITION, EMPTY
+from nl2hltl2plan.language.handover_words import APPOSITION, EMPTY, VERB
 
 
-def mark_place_pronouns(m: Marked, named_before: tuple[str, ...]) -> None:
+def mark_place_pronouns(
+    m: Marked,
+    named_before: tuple[str, ...],
+    place_before: Place | None = None,
+    group_before: tuple[str, ...] = (),
+) -> None:
     """'them' after 'on', 'there' after a moved block: the last place named before it in the sentence, else
-    the last regions the sentence before named; with neither the word stays (unread, so refused; 'there'
-    may still be read as a word: 'the red one should be put there before the blue one'). A place
-    named as a heading ('regions H, I and J: put the blocks there') or defined ('regions G, H and I are the
-    targets: place the blocks in them') is then read where the pronoun stands."""
+    the last regions the sentence before named, else the last place it named that a block may go to ('the
+    opposite side', 'any empty region') when the same blocks go there; with none the word stays (unread, so
+    refused; 'there' may still be read as a word: 'the red one should be put there before the blue one'). A
+    place named as a heading ('regions H, I and J: put the blocks there') or defined ('regions G, H and I are
+    the targets: place the blocks in them') is then read where the pronoun stands."""
     if "PLACEREF" not in m.text:
         return
     defined = rf"(?:is|are)\s+(?:the|our|your)\s+(?:targets?|goals?|destinations?|{TARGET}\s+{PLACE_NOUN})"
@@ -37,6 +43,13 @@ def mark_place_pronouns(m: Marked, named_before: tuple[str, ...]) -> None:
             return to + _new_place(m, m.places[int(before[-1])])
         if named_before:
             return to + _new_place(m, Place("regions", named_before, text=word))
+        # "the blocks belong on the opposite side. Move them there.": the same blocks to that place (not "the
+        # red one should be put there before the blue one", an order where "there" adds nothing; not "put the
+        # yellow block there too", where the opposite side is another block's)
+        moved = re.search(r"\b(?:" + VERB + r")\s+B(\d+)\s+$", m.text[: match.start()])
+        same = moved is not None and sorted(m.blocks[int(moved.group(1))]) == sorted(group_before)
+        if place_before is not None and same:
+            return to + _new_place(m, place_before)
         return f" {word} "
 
     m.sub(r"\bPLACEREF_(them|it|there)\b", resolve)
@@ -163,7 +176,7 @@ def _mark_starts(m: Marked, scene: Scene) -> None:
         r"(?:is|was|lies|lay|sits|sat|stands|started|starts|locates|stays|rests)\s*"
         r"(?:currently\s+|now\s+|"
         r"initially\s+|at\s+first\s+)?(?:located|locating|lying|placed|sitting|standing|from)?\s*"
-        r"(?:currently|now|initially|at\s+first|at\s+the\s+start)?\s*\)?"
+        r"(?:currently|(?:right\s+)?now|initially|at\s+first|at\s+the\s+start|at\s+the\s+moment)?\s*\)?"
     )
 
     def where_of(match: re.Match[str]) -> str:  # "back (to) where the red block is": a place to go to

@@ -4,10 +4,11 @@
 `handover-square` / `handover-line` world and returns the same `LanguageResult` as the other
 worlds (HTT, base tasks, `before`, leaf formulas, the hierarchical spec) plus `constraints`: the
 guards and joint goals as text, sorted. Each sentence is normalised and its phrases are resolved
-against the instance's layout (`language.handover_phrases`, word tables in `handover_words`); its
-orders, touch guards and prohibitions are read first (`language.handover_rules`), then its goal
-clauses (`language.handover_goals`); this module builds the task tree and the spec. The rules, each
-general:
+against the instance's layout (`language.handover_phrases`, word tables in `handover_words`), and its
+statements that are not commands (scene, target, need, question) are read and checked
+(`language.handover_clauses`); its orders, touch guards and prohibitions are read first
+(`language.handover_rules`), then its goal clauses (`language.handover_goals`); this module builds the
+task tree and the spec. The rules, each general:
 
 - a goal clause "VERB BLOCKS [back] to PLACE" gives one leaf per block: `F(at(B,R1) | at(B,R2) ...)`
   (the opposite side: per block; any empty region: `away(B)`; where another block starts: `@B`);
@@ -94,7 +95,7 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
         orders += sentence_orders
         # "red goes first, blue after red": the order says what "first" means
         leaders = [b for b in read_leaders(m) if b not in [x for x, _ in sentence_orders]]
-        new = _without_restated(goal_clauses(m, scene))
+        new = _said_before(_without_restated(goal_clauses(m, scene)), clauses)
         if not new:  # "Step 2: the red block before the blue block", "1) red before blue": rules only
             m.sub(r"^\s*(?:then|first)\b", " ")
         drop_but(m)
@@ -120,6 +121,7 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
     for x, y in touches:
         _first_goal(goals, x).touch_guard.append(y)
     _refuse_cyclic(orders)
+    _refuse_misplaced_markers(clauses)
     root = _tree(clauses)
     for x, y in orders:
         _order(root, _first_goal(goals, x), _first_goal(goals, y))
@@ -128,13 +130,33 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
 
 def _sentences(instruction: str) -> list[str]:
     """Split at line breaks (a list of steps or bullets), '.', ';', '!' and '?', but not in 'i.e.' nor after a
-    step's number ('1. Put ...'); a bullet ('-', '*', '•') starting a line or sentence is dropped."""
+    step's number ('1. Put ...'); a bullet ('-', '*', '•') starting a line or sentence is dropped. A heading
+    ending in a colon is joined to the line below it, and a record of labelled lines ('Blocks: ...' then
+    'Targets: ...') is read as one goal."""
     out: list[str] = []
+    # a record of labelled lines: "Blocks: red, blue, yellow" then "Targets: H, I, J" is one goal
+    instruction = re.sub(
+        r"(?im)^\s*(?:[-*•·]\s+)?(?:blocks?|objects?|pillars?|items?)\s*:\s*([^\n:]+?)\s*\n\s*(?:[-*•·]\s+)?"
+        r"(?:targets?|destinations?|goal\s+regions?|target\s+regions?|where)\s*:\s*([^\n:]+?)\s*$",
+        lambda x: _listed(x.group(1)) + " to " + x.group(2),
+        instruction,
+    )
+    # a heading that ends in a colon goes on in the bullet below it: "Place the blocks on:\n- G, H and I"
+    # (after a preposition the colon only ends the line)
+    bullet = r"[ \t]*\n\s*(?:[-*•·]|\d[.)])\s+"
+    instruction = re.sub(rf"(?m)\b(on|onto|in|into|to|at)\s*:{bullet}", r"\1 ", instruction)
+    instruction = re.sub(rf"(?m):{bullet}", ": ", instruction)
     for line in instruction.splitlines():
         text = re.sub(r"(^\s*|[.;!?]\s+)(\d)\.\s", r"\1\2) ", line)
         text = re.sub(r"\b[iI]\.\s?[eE]\.", "that is", text)
+        text = re.sub(r"\b(opp|approx|resp)\.(?=\s)", r"\1", text, flags=re.IGNORECASE)  # "opp. side"
         out += [re.sub(r"^\s*[-*•·]\s+", "", s) for s in re.split(r"[.;!?]+(?:\s|$)", text)]
     return [s for s in out if s.strip()]
+
+
+def _listed(items: str) -> str:
+    """'red, blue, yellow' -> 'red, blue and yellow' (a record's list: its last comma is its 'and')."""
+    return items if re.search(r"\band\b", items) else re.sub(r",\s*([^,]+)$", r" and \1", items)
 
 
 def _without_restated(clauses: list[Clause]) -> list[Clause]:
@@ -151,6 +173,28 @@ def _without_restated(clauses: list[Clause]) -> list[Clause]:
         given = {key(g) for d in others for g in d.goals}
         if not c.marker and others and all(key(g) in given for g in c.goals):
             out.remove(c)
+    return out
+
+
+def _said_before(new: list[Clause], clauses: list[Clause]) -> list[Clause]:
+    """A clause that gives again goals an earlier sentence gave ('The pillars belong on E, F and G. Move them
+    there, ...') is read once; said again with another step marker or timing, it is refused (which one
+    holds?)."""
+
+    def key(c: Clause) -> set[tuple[str, str, tuple[str, ...], str]]:
+        return {(g.block, g.place.kind, g.regions, g.place.block) for g in c.goals}
+
+    out: list[Clause] = []
+    for c in new:
+        same = [d for d in clauses if key(c) <= key(d)]
+        if not same:
+            out.append(c)
+            continue
+        d = same[-1]
+        # (one goal is never "at once": its `together` says nothing)
+        moved_apart = len(c.goals) > 1 and c.together != d.together
+        if c.marker or d.marker or moved_apart or (c.anytime, c.leader) != (d.anytime, d.leader):
+            raise HTTError(f"'{c.text}' gives again a goal said before ('{d.text}') otherwise: which holds?")
     return out
 
 
@@ -179,6 +223,18 @@ def _guard(
             regions = [r for r in scene.layout.regions if r not in g.regions]
         for r in regions:
             g.drop_guard.update({f"drop({r})"} if every else {f"put({b},{r})" for b in blocks})
+
+
+def _refuse_misplaced_markers(clauses: list[Clause]) -> None:
+    """'Finally, put yellow on G. First, put it on I.': a step said out of the text's order is not modelled
+    (the tree follows the text), so it is refused rather than read without its order: 'first' after other
+    goals that no 'then' follows, 'finally' / 'after all of these' before any goal."""
+    for k, c in enumerate(clauses):
+        follows = k + 1 < len(clauses) and clauses[k + 1].marker == "then"
+        if c.marker == "first" and k > 0 and not follows:
+            raise HTTError(f"'{c.text}' comes first, but is said after other goals: say the steps in order")
+        if c.marker == "after_all" and k == 0 and len(clauses) > 1:
+            raise HTTError(f"'{c.text}' comes last, but is said before other goals: say the steps in order")
 
 
 def _refuse_cyclic(orders: list[tuple[str, str]]) -> None:

@@ -48,7 +48,10 @@ def read_orders(m: Marked) -> list[tuple[str, str]]:
     has been placed, Y may be placed', 'do not place Y until X has been placed': X's goal before Y's."""
     out: list[tuple[str, str]] = []
     tail = rf"(?:\s+(?:is|has\s+been|gets|was|have\s+been|are)\s+{DONE}|\s+does)?"
-    done = rf"(?:(?:{DONE}|comes?|lands?|arrives?|goes|gets?)\s+)?(?:down\s+|there\s+)?(?:first\s*,?\s*)?"
+    done = (
+        rf"(?:(?:{DONE}|comes?|lands?|arrives?|goes|gets?|arriving|coming|landing|getting|going)\s+)?"
+        r"(?:down\s+|there\s+)?(?:first\s*,?\s*)?"
+    )
 
     def add(match: re.Match[str], flip: bool) -> str:
         a, b = one_block(m, match.group(1), "an order"), one_block(m, match.group(2), "an order")
@@ -145,7 +148,7 @@ def read_leaders(m: Marked) -> list[str]:
     m.sub(r"\bB(\d+)\s+first\s+(?:place|placed|put|goes|go)\b(?=\s*(?:$|,|\band\b|\)))", add)
     m.sub(r"\bfirst\s+(?:place|put|move)\s+B(\d+)(?=\s*(?:$|,|\band\b|\)))", add)
     m.sub(
-        rf"(?:\b(?:with|placing|putting|moving|and)\s+)?\bB(\d+)\s+(?:down\s+)?{MODAL}(?:(?:placed|put|moved|set)\s+|goe?s?\s+|"
+        rf"(?:\b(?:with|placing|putting|moving|and)\s+)?\bB(\d+)\s+(?:down\s+)?{MODAL}(?:(?:placed|put|moved|set|place)\s+|goe?s?\s+|"
         r"comes?\s+|going\s+|coming\s+)?(?:down\s+|there\s+)?first\b(?=\s*(?:$|,|\band\b|\)))",
         add,
     )
@@ -168,7 +171,7 @@ def read_touch_guards(m: Marked) -> list[tuple[str, str]]:
     other = (
         rf"(?:(?:A\s+)?(?:has\s+|have\s+|had\s+)?(?:already\s+)?(?:{TOUCHED}|{TOUCHING}|{TOUCH})\s+B(?P<y1>\d+)|B(?P<y2>\d+)\s+"
         rf"(?:(?:has|have|had)\s+(?:already\s+)?been|is|was|gets|got|being|be)\s+(?:already\s+)?{TOUCHED}(?:\s+by\s+A)?|"
-        rf"B(?P<y3>\d+){end}|B(?P<y4>\d+)\s+(?:has|have|had)\s+been{end})(?:\s+first{end})?"
+        rf"B(?P<y3>\d+){end}|B(?P<y4>\d+)\s+(?:(?:has|have|had)\s+been|is|was){end})(?:\s+first{end})?"
     )
     may = _MAY
     no_touch = (
@@ -254,6 +257,7 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
         add_same,
     )
     # "regions F, G and H shall receive no object"
+    m.sub(rf"\bP(?P<p>\d+)\s+(?:{may}\s+)?{receives}\s+nothing{PERIOD}", add)  # "F, G and H receive nothing"
     receive_no = rf"{receives}\s+no"
     m.sub(rf"\bP(?P<p>\d+)\s+(?:{may}\s+)?{receive_no}\s*B(?P<b>\d+){PERIOD}", add)
     # "nothing goes on F, G or H", "no block may go on R"
@@ -271,10 +275,10 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
     modal = r"(?:(?:must|may|can|should|shall|will|is|are)\s+)?"
     m.sub(rf"\bB(?P<b>\d+)\s+{modal}{NEG}\s+(?:ever\s+)?(?:be\s+)?{DROP}{down}", add)
     m.sub(
-        rf"(?:(?:\bA\s+)?{NEG}|\bno\s+A\s+{may}?)\s+{_PUT}\s+B(?P<b>\d+){down}",
+        rf"(?:(?:\bA\s+)?{NEG}|\bno\s+A\s+{may}?)\s+{_PUT}\s+(?:any\s+(?:one\s+)?of\s+)?B(?P<b>\d+){down}",
         add,
     )
-    m.sub(rf"\bnothing\s+(?:{may}\s+)?(?:be\s+|is\s+|gets\s+)?{DROP}{down}", add)
+    m.sub(rf"\bnothing\s+(?:{may}\s+)?(?:ever\s+)?(?:be\s+|is\s+|gets\s+)?(?:ever\s+)?{DROP}{down}", add)
     banned = r"(?:not\s+(?:allowed|permitted)|forbidden|prohibited|banned)"
     # "placing any object on R is not allowed"
     m.sub(rf"\b{_PLACING}\s+B(?P<b>\d+){down}\s+(?:is|are)\s+{banned}", add)

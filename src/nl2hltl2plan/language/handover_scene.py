@@ -113,6 +113,8 @@ class Marked:
     notes: list[str] = field(default_factory=list)  # one-per-region statements, read as the world's rule
     last_one: str = ""  # the last single block the sentence names (what "it" means in the next)
     last_regions: tuple[str, ...] = ()  # the last regions it names ("regions other than these" in the next)
+    last_group: tuple[str, ...] = ()  # its one group of several blocks, if one ("move them" in the next)
+    last_place: Place | None = None  # the last place a block may go to ("move them there" in the next)
 
     def sub(self, pattern: str, make) -> None:  # make(match) -> replacement text
         self.text = re.sub(pattern, make, self.text)

@@ -1,7 +1,8 @@
 """The word classes of the four-arm handover worlds' reader (`handover_reading`), as regular
 expressions: placing verbs and prepositions, modifiers, negations, touching and dropping verbs, the
 "during this period" and "after all of these" phrases, the polite lead-ins the reader skips, and the
-rewrites that map a writer's variants (synonyms, British forms, common typos) onto the forms read."""
+rewrites that map a writer's variants (synonyms, British forms, abbreviations) onto the forms read (typos
+are mended before, by `handover_typos`)."""
 
 VERB = (
     r"(?:transfer|move|put|place|bring|carry|take|deliver|relocate|shift|get|set|send|return|distribute|"
@@ -47,7 +48,10 @@ PERIOD_WORDS = (
     r"(?:(?:during|in)\s+(?:this|that|the\s+same)\s+(?:whole\s+|entire\s+)?(?:period|time)|in\s+the\s+meantime|meanwhile|"
     r"while\s+doing\s+(?:so|this|that|it)|while\s+(?:this|that)\s+(?:happens|is\s+happening|goes\s+on|is\s+going\s+on)|"
     r"at\s+the\s+same\s+time|in\s+the\s+process|all\s+the\s+while|the\s+whole\s+time|in\s+the\s+interim|"
-    r"throughout(?:\s+(?:this|the|that)\s+(?:process|period|time))?|until\s+then|"
+    r"throughout(?:\s+(?:this|the|that)\s+(?:process|period|time))?|until\s+then|along\s+the\s+way|in\s+between|"
+    # "until you're done", "till done": until the goals are met (a plan ends when its last goal is met)
+    r"until\s+(?:(?:you|we|they)\s*(?:'\s*re|\s+are|\s+have\s+finished)\s+)?(?:all\s+)?(?:done|finished)|"
+    r"until\s+(?:it|this|that|everything)\s+is\s+(?:done|finished|complete)|"
     r"for\s+as\s+long\s+as\s+(?:this|that|it)\s+takes|"
     # "during the whole task", "for the duration of this task", "while you do this", "while this is done"
     r"(?:during|throughout|for)\s+(?:this|that|the)\s+(?:whole\s+|entire\s+)?(?:task|process|job|operation|transfer)|"
@@ -69,7 +73,10 @@ AFTER_ALL = (
     r"after\s+(?:all\s+(?:of\s+)?(?:these|this|that|"
     r"the\s+above)|everything(?:\s+else)?)|finally|lastly|last\s+of\s+all|at\s+the\s+(?:very\s+)?end|in\s+the\s+end|"
     r"after\s+(?:finish(?:ing)?|complet(?:e|ing)|doing|done)\s+(?:with\s+)?(?:all\s+(?:of\s+)?)?(?:this|these|that|everything|them)|"
-    r"after\s+(?:finishing|completing)\s+(?:it\s+)?all|"
+    r"after\s+(?:finishing|completing)\s+(?:it\s+)?all|after\s+(?:that|this|the)\s+(?:transfer|task|move)|"
+    # "when the transfer is complete", "when all finish" (non-native): the work said so far is done
+    rf"(?:once|when|after)\s+(?:the|this|that)\s+(?:transfer|task|job|work|moving|transport)\s+(?:is|has\s+been)\s+{DONE_STATE}|"
+    r"(?:once|when|after)\s+(?:all|everything)\s+(?:is\s+|are\s+|has\s+|have\s+)?(?:finish(?:ed)?|done|complete(?:d)?)|"
     r"as\s+(?:a|the)\s+(?:final|last)\s+step|at\s+last|after\s+all(?=\s*,)|(?:up)?on\s+(?:completion|finishing)(?:\s+of\s+(?:this|these|that|the\s+above|all\s+(?:of\s+)?(?:this|these|that)))?)"
 )
 THEN = (
@@ -81,7 +88,7 @@ APPOSITION = (
     r"(?:\(|which\s+(?:is|are)\s+made\s+up\s+of|(?:which\s+(?:is|are|lies?|sits?)\s+|that\s+(?:is|are|lies?)\s+)?"
     r"(?:(?:located|situated|lying)\s+)?(?:to|on|at|in)|that\s+is|being|"
     r"which\s+(?:is|are|consists\s+of|comprises|includes|lies|lie)|consisting\s+of|comprising|"
-    r"made\s+up\s+of|namely|:)"
+    r"made\s+up\s+of|(?:that\s+is\s+|which\s+is\s+)?(?:formed|made|composed|covered)\s+(?:by|of)|namely|:)"
 )
 LEAD = r"\s*,?\s*(?:you\s+should\s+|please\s+|we\s+should\s+)?"
 
@@ -119,17 +126,23 @@ REWRITES: tuple[tuple[str, str], ...] = (
     # framing that announces a rule: "there is one ordering requirement:", "with the rule that"
     (
         r"\bthere\s+(?:is|are)\s+(?:one|a|an|another|two|some)\s+(?:\w+\s+)?(?:requirement|restriction|constraint|"
-        r"condition|rule)s?(?:\s+(?:about|on|for|regarding)\s+\w+)?\s*:",
+        r"condition|rule)s?(?:\s+(?:about|on|for|regarding)\s+\w+)?\s*(?::|,\s*namely(?:\s+that)?\b)",
         " ",
     ),
     (r"\s*,?\s*\bwith\s+the\s+(?:rule|condition|constraint|requirement|restriction)\s+that\b", ","),
-    (r"\bin\s+addition\b", " "),
+    (r"\bin\s+addition(?:\s+to\s+(?:that|this))?\b", " "),
     # a heading, also after a step's number: "Rule: ...", "2) Constraint: ...", "Goals:"
     (
         r"^(\s*(?:step\s+\w+\s*:?|\d\s*[):]|\(\s*\d\s*\))?\s*)(?:order|ordering|sequence|constraints?|rules?|"
         r"requirements?|restrictions?|conditions?)\s*:",
         r"\1",
     ),
+    # a completion marker as a heading: "when the transfer is done: yellow back to G"
+    (rf"^\s*({AFTER_ALL})\s*:", r"\1 ,"),
+    # a sentence that goes on from the one before: "And the yellow block to the opposite side whenever."
+    (r"^\s*and\s*,?\s+", " "),
+    # a rule's label after a comma, in a compressed heading: "Goal: ..., constraint: red before blue"
+    (r",\s*(?:order|ordering|sequence|constraints?|rules?|requirements?|restrictions?|conditions?)\s*:", ","),
     (
         r"^(\s*(?:step\s+\w+\s*:?|\d\s*[):]|\(\s*\d\s*\))?\s*)(?:objectives?|goals?|tasks?|aims?|missions?|"
         r"instructions?)\s*:",
@@ -145,10 +158,14 @@ REWRITES: tuple[tuple[str, str], ...] = (
         r"\b(?:under\s+no\s+circumstances|on\s+no\s+account)\s+(?=(?:place|put|drop|set|touch|move)\b)",
         "never ",
     ),
-    (r"\bat\s+some\s+(?:point|time)\b", "at any time"),
+    (r"\bat\s+some\s+(?:point|time)\s+(?=before|after)\b", ""),  # "put down at some point before ...": before
+    (r"\bat\s+(?:some|whatever|whichever)\s+(?:point|time|moment)\b", "at any time"),
     (r"\bnothing\s+else\b", "nothing"),
     (r"\bno\s+other\s+(?=(?:blocks?|objects?|items?|cubes?|pillars?|pieces?)\b)", "no "),
     (r"\bthe\s+(?:last|final)\s+step\s+is\s+to\b", "finally"),
+    (r"^\s*(?:the\s+)?(?:last|final)\s+step\s*:", "finally ,"),  # "Last step: yellow back on G"
+    (r"^\s*(?:also|plus)\s*:", " "),  # "Also: red and blue -> any empty region"
+    (r"\s*,?\s*\b(?:tho|though)\s*$", " "),  # "red has to go before blue tho"
     (r"\bthe\s+first\s+step\s+is\s+to\b", "first"),
     (r"\bthe\s+(?:next|second)\s+step\s+is\s+to\b", "then"),
     (
@@ -163,7 +180,13 @@ REWRITES: tuple[tuple[str, str], ...] = (
         r"\b([a-z]+(?:\s+(?:block|one))?)\s*(?:<\s*-\s*>|↔)\s*([a-z]+(?:\s+(?:block|one))?)\b",
         r"swap \1 with \2",
     ),
+    # a chain of arrows is a sequence of stops: "yellow -> I -> G"
+    (r"\s*(?:→|->|=>)\s*([e-j])\s*(?:→|->|=>)\s*", r" to \1 , then to "),
     (r"\s*(?:→|->|=>)\s*", " to "),
+    # abbreviations: "b4", "1st", "opp. side" (the full stop of "opp." is kept from ending the sentence)
+    (r"\bb4\b", "before"),
+    (r"\b1\s*st\b", "first"),
+    (r"\bopp\b\.?", "opposite"),
     (r"\b(?:please\s+)?(?:be\s+advised|be\s+aware|note)\s+that\b", " "),
     (r"\s*,?\s*\bit\s+being\s+understood\s+that\b", ","),
     (
@@ -171,6 +194,41 @@ REWRITES: tuple[tuple[str, str], ...] = (
         " ",
     ),
     (r"^\s*(?:two|three|a\s+few)\s+things\s*:", " "),
+    (r"^\s*here\s*(?:s|is)\s+(?:the|my|our)\s+(?:idea|plan|deal|thing)\s*:", " "),
+    (r"\b(?:somebody|someone|anybody|anyone)\b", "an arm"),  # "until somebody has touched the red block"
+    # narrative verbs of moving: "makes a stop at I", "moves on to G", "takes the blue block's place"
+    (r"\b(?:makes?|making)\s+a\s+stop\s+(?:at|on|in)\b", "goes to"),
+    (r"\b(?:moves?|goes|go|continues?|travels?)\s+on\s+to\b", "to"),
+    (r"\b(?:heads?|heading)\s+(?=to\b|towards?\b)", "goes "),
+    (
+        r"\b(?:takes?|gets?|occup(?:y|ies))\s+(?=(?:the\s+)?(?:red|blue|yellow)\s+(?:block\s+|one\s+)?s\s+"
+        r"(?:place|position|spot)\b)",
+        "goes to ",
+    ),
+    # framing that announces the task: "what I would like you to do is (to) ...", "what needs to happen is"
+    (
+        r"^\s*what\s+(?:please|(?:i|we)\s*(?:'\s*d|would)?\s*(?:like|want|need)\s+(?:you\s+)?to)\s+do\s+is\s+(?:to\s+)?",
+        "please ",
+    ),
+    (r"^\s*what\s+(?:needs|has)\s+to\s+(?:happen|be\s+done)\s+is\s+(?:that\s+)?", " "),
+    # a heading verb that names an exchange: "Swap: red and blue blocks"
+    (r"^\s*(swap|exchange|switch)\s*:\s*(?:(?:swap|exchange|switch)\b)?", r"\1 "),
+    # a heading that gives the period of what follows: "Meanwhile: nothing on F, G or H"
+    (rf"^\s*({PERIOD_WORDS})\s*:\s*(.+)$", r"\2 \1"),
+    (r"(?<!\bin\s)\bany\s+order\b", "in any order"),
+    # the state asked for, said as where the blocks end up: "the blocks should end up spread over H, I and J"
+    (r"\bend\s+up\s+(?=(?:spread|distributed|split|placed|put)\b)", "be "),
+    # non-native: "red block placing is before blue block", "yellow block go back region G", "firstly",
+    # "after to region G" (after, then a preposition: afterwards)
+    (r"\b(?:placing|placement)\s+(?:is|comes)\s+before\b", "is placed before"),
+    (r"\b(go|goes|come|comes|put|move|return)\s+back\s+(?=regions?\b)", r"\1 back to "),
+    (r"\bfirstly\b", "first"),
+    (r",\s*after\s+(?=(?:to|on|onto|in|into)\s)", ", then "),
+    # a verbless step with "first" after its block: "yellow block first to region I, then to G"
+    (
+        r"(^|,)\s*((?:the\s+)?(?:red|blue|yellow)(?:\s+(?:block|cube|one))?)\s+first\s+(?=(?:to|on|onto|in|into)\s)",
+        r"\1 first , \2 ",
+    ),
     (r"\s*,?\s*\bon\s+the\s+other\s+hand\b\s*,?", " "),
     (r"^\s*then\s+again\s*,", " "),  # "Then again, ...": "on the other hand", not a step
     (r"^\s*as\s+(?:for|to|regards)\s+(?:the\s+)?(?:order|ordering|sequence)\s*,", " "),
@@ -194,7 +252,16 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\bit\s+is\s+(?:necessary|required|essential|important)\s+to\b", "please"),
     (r"\bno\s+placements?\s+(?=outside|on|in|onto|anywhere)", "nothing placed "),
     (rf"\bend\s+up\s+(?={SWAPPED}\b)", "be "),
-    (r"\s*,?\s*(?:but\s+)?it\s+does\s+not\s+matter\s+when\b", " at any time"),
+    (
+        r"\s*,?\s*(?:and\s+|but\s+)?it\s+does\s+not\s+matter\s+(?:when|at\s+what\s+(?:point|time|moment)|at\s+which\s+point)"
+        r"(?:\s+(?:that|this|it)\s+(?:happens|is\s+done))?",
+        " at any time",
+    ),
+    # non-native: "when is not important", "time is free": the timing is free
+    (
+        r"\s*,\s*(?:the\s+)?(?:when|time|timing)\s+(?:is\s+)?(?:not\s+important|free|does\s+not\s+matter)\s*(?=,|$)",
+        " at any time",
+    ),
     (r"^\s*when\s+(?:placing|putting|moving)\s+(?:them|the\s+blocks)\s*,", " "),
     (r"\b(?:needs?|gets?|has|have|takes?)\s+(?=its\s+own\s+(?:region|area|spot|place)\b)", "goes in "),
     (r"\breach(?:es)?\s+(?=(?:the|any|an?|regions?|[e-j])\b)", "go to "),
@@ -249,8 +316,8 @@ REWRITES: tuple[tuple[str, str], ...] = (
     ),
     # reasons that say nothing but that the order or the timing was meant
     (
-        r"\s*,?\s*\b(?:as|since|because)\s+(?:(?:the\s+)?order\s+(?:matters|is\s+important)(?:\s+here)?|that\s+is\s+the\s+"
-        r"order\s+(?:we|i)\s+(?:need|want))\b",
+        r"\s*,?\s*\b(?:(?:as|since|because)\s+(?:(?:the\s+)?order\s+(?:matters|is\s+important)(?:\s+here)?|that\s+is\s+the\s+"
+        r"order\s+(?:we|i)\s+(?:need|want))|so\s+that\s+the\s+order\s+is\s+(?:right|correct|kept|respected))\b",
         " ",
     ),
     (
@@ -355,11 +422,19 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"^\s*(first|then)\s*,?\s*\1\b\s*,?", r"\1 "),  # "2) Then move it ...": the step's "then" said twice
     # a heading that gives the time of what follows: "Any time: red and blue blocks to any empty region"
     (r"^\s*(?:at\s+)?any\s+time\s*:", "at any time ,"),
-    (r"\b(finally|lastly|then|next|afterwards|first)\s*:", r"\1"),  # "Finally: yellow -> G"
+    (r"\b(finally|lastly|then|next|afterwards|first)\s*:", r"\1 ,"),  # "Finally: yellow -> G"
     (r"\b(?:remember|be\s+sure|make\s+sure|do\s+not\s+forget|note|keep\s+in\s+mind)\s+(?:to|that)\b", " "),
     (r"\bprecedes?\b", "comes before"),
     (r"\bfollows?\b", "comes after"),
-    (r"\b(?:nobody|no\s+one|none\s+of\s+the\s+(?:robot\s+)?arms)\b", "no arm"),
+    (
+        r"\b(?:nobody|no\s+one|none\s+of\s+the\s+(?:robot\s+)?arms|neither\s+(?:of\s+the\s+)?(?:robot\s+)?arms?)\b",
+        "no arm",
+    ),
+    # "none of the objects is ever put on R": no object is
+    (
+        r"\bnone\s+of\s+(?:the\s+)?(?:objects|blocks|pillars|items|pieces|cubes)\s+(?=is|are|may|can|must|should|shall)\b",
+        "no object ",
+    ),
     # "the red and blue blocks are in the wrong places, so swap them": the scene said as the swap it asks for
     (
         rf"^\s*((?:the\s+)?[a-z]+\s+and\s+(?:the\s+)?[a-z]+\s+(?:blocks|cubes|pieces|ones))\s+(?:are|were)\s+in\s+"
@@ -474,54 +549,3 @@ REWRITES += tuple(
     for gerund, verb in NEGATED_GERUNDS.items()
     if verb not in ("touch", "grab", "pick up")  # "without touching X before Y" is a touch rule
 )
-
-# Common typos of the words that carry the meaning: a transposed, dropped or doubled letter (not the
-# first) of a word of five letters or more; forms that are English words themselves are left alone.
-TYPO_WORDS = (
-    "block blocks region regions opposite place placed transfer before after yellow pillar pillars object "
-    "objects separately another empty touch touched exchange position positions should until during period "
-    "please first other across three placement touching picked finish finished target targets nothing "
-    "anything meanwhile"
-).split()
-REAL_WORDS = frozenset(
-    "pace paced touche fist firs pease pleas there tree piked finnish blacks placid daring packed pecked "
-    "pocked".split()
-)
-VOWELS = "aeiou"
-
-
-# short words, too short for the table's rules, in their commonest misspellings
-SHORT_TYPOS = {
-    "thsi": "this",
-    "sied": "side",
-    "sdie": "side",
-    "bcak": "back",
-    "bakc": "back",
-    "tmie": "time",
-    "tiem": "time",
-    "tihs": "this",
-    "teh": "the",
-    "hte": "the",
-    "adn": "and",
-    "nad": "and",
-    "taht": "that",
-    "bleu": "blue",
-    "bule": "blue",
-}
-
-
-def typo_table() -> dict[str, str]:
-    """misspelling -> word, for the words of `TYPO_WORDS` (a misspelling that two words share is left out):
-    a transposed, dropped or doubled letter (not the first), and in a word of six letters or more one vowel
-    for another."""
-    seen: dict[str, set[str]] = {}
-    for word in (w for w in TYPO_WORDS if len(w) >= 5):
-        forms = {word[:i] + word[i + 1] + word[i] + word[i + 2 :] for i in range(1, len(word) - 1)}
-        forms |= {word[:i] + word[i + 1 :] for i in range(1, len(word))}
-        forms |= {word[:i] + word[i] + word[i:] for i in range(1, len(word))}
-        if len(word) >= 6:  # one vowel written for another: "seperately", "pleese"
-            vowels = [i for i in range(1, len(word)) if word[i] in VOWELS]
-            forms |= {word[:i] + v + word[i + 1 :] for i in vowels for v in VOWELS}
-        for form in forms - set(TYPO_WORDS) - REAL_WORDS:
-            seen.setdefault(form, set()).add(word)
-    return {form: next(iter(words)) for form, words in seen.items() if len(words) == 1} | SHORT_TYPOS

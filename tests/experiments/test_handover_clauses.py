@@ -1,0 +1,75 @@
+"""The handover clause reader (session 11): the sentences of `handover_session11.READ` and the dev11 batch
+give the written specs; the near misses, each one meaning away from a read sentence, never do."""
+
+from __future__ import annotations
+
+import pytest
+from handover_session10 import STYLES
+from handover_session11 import (
+    NEAR_MISSES,
+    NEAR_MISSES_DEV12,
+    NEAR_MISSES_DEV13,
+    OUT_OF_ORDER,
+    READ,
+    READ_DEV12,
+    READ_DEV13,
+)
+
+from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.language.translate import translate
+from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
+from nl2hltl2plan.suites.handover.handover_bench import instance, load_tasks, specs_equivalent
+
+TASKS = {t.id: t for t in load_tasks()}
+
+
+def _spec(task_id: int, text: str) -> HierarchicalSpec:
+    result = translate(text, instance(TASKS[task_id], 0, 0).as_world())
+    assert result.spec is not None
+    return result.spec
+
+
+@pytest.mark.parametrize(
+    ("task_id", "text"),
+    [(t, x) for r in (READ, READ_DEV12, READ_DEV13) for t, texts in r.items() for x in texts],
+)
+def test_clause_forms_give_the_written_specs(task_id, text):
+    equal, why = specs_equivalent(_spec(task_id, text), TASKS[task_id].hierarchical())
+    assert equal, why
+
+
+@pytest.mark.parametrize(
+    ("task_id", "text"),
+    [
+        (t, x)
+        for r in (NEAR_MISSES, NEAR_MISSES_DEV12, NEAR_MISSES_DEV13)
+        for t, texts in r.items()
+        for x in texts
+    ],
+)
+def test_near_misses_of_the_clause_forms_are_refused_or_give_another_spec(task_id, text):
+    try:
+        spec = _spec(task_id, text)
+    except HTTError as exc:
+        assert "\n" not in str(exc)
+        return
+    equal, _ = specs_equivalent(spec, TASKS[task_id].hierarchical())
+    assert not equal
+
+
+@pytest.mark.parametrize("style", sorted(STYLES["dev11"]))
+def test_dev11_styles_give_the_written_specs(style):
+    for task, text in STYLES["dev11"][style].items():
+        equal, why = specs_equivalent(_spec(int(task), text), TASKS[int(task)].hierarchical())
+        assert equal, (text, why)
+
+
+def test_a_scene_statement_the_world_contradicts_is_refused_by_name():
+    with pytest.raises(HTTError, match="does not hold in this scene"):
+        _spec(3, "The pillars sit on E, F and G now. Move them to regions E, F and G.")
+
+
+@pytest.mark.parametrize(("task_id", "text"), [(t, x) for t, texts in OUT_OF_ORDER.items() for x in texts])
+def test_steps_said_out_of_order_are_refused_by_name(task_id, text):
+    with pytest.raises(HTTError, match="say the steps in order"):
+        _spec(task_id, text)
