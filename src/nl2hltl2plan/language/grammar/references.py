@@ -127,7 +127,10 @@ def new_tasks_from_ref(ref: str, b: TaskBuilder, text: str) -> list[BaseTaskSpec
     drafts: list[Draft] = []
     for c_text, _s, _e, _j in split_clauses(_YOU.sub("", ref)):  # "after you put ...": a clause of its own
         words = [w for w, _, _ in tokens(c_text)]
-        if words and words[0] not in G.VERBS:
+        if words and words[0] not in G.VERBS and words[0] in G.VERB_PAST:
+            # "after you have examined the keys under the lamp": the clause "examine the keys ..."
+            c_text = G.VERB_PAST[words[0]][1] + c_text.lstrip()[len(words[0]) :]
+        elif words and words[0] not in G.VERBS:
             continue
         fr = parse_frame(c_text, 0, "")
         for it in fr.items:

@@ -1,0 +1,131 @@
+"""Issue 28 / 23: connectives between tasks written in words the grammar had no rule for (found on
+held-out compositions: "as soon as you've X", "only after X should you Y", "ahead of that", "with that
+done", "to wrap up", "whenever convenient", "though first", courtesy openers and closers), each read
+through the default offline reader and check 1. One real sentence per rule and a near miss."""
+
+from __future__ import annotations
+
+import pytest
+
+from tests.language.test_unseen_classes import read
+
+MUG = "place Mug -> SinkBasin"
+APPLE = "place Apple -> Fridge"
+EGG = "place Egg -> Microwave"
+
+
+# ----- "Y as soon as you've X", "only after X should you Y": X first -----------------------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Put the apple in the fridge as soon as you've put the mug in the sink.",
+        "As soon as you've put the mug in the sink, put the apple in the fridge.",
+        "Only after you've put the mug in the sink should you put the apple in the fridge.",
+        "Right after you put the mug in the sink, put the apple in the fridge.",
+        "Put the apple in the fridge immediately after putting the mug in the sink.",
+    ],
+)
+def test_after_connectives_order_the_named_task_first(text):
+    tasks, order, unread = read(text)
+    assert sorted(tasks) == sorted([MUG, APPLE]) and order == {(MUG, APPLE)} and not unread
+
+
+def test_as_soon_as_possible_is_no_reference():
+    """Near miss: "as soon as possible" names no task to wait for."""
+    tasks, order, unread = read("Put the mug in the sink as soon as possible.")
+    assert tasks == [MUG] and not order and not unread
+
+
+def test_a_reference_in_the_perfect_states_its_own_task():
+    """ "as soon as you've examined the keys under the lamp": the examination is a task of its own."""
+    tasks, order, unread = read(
+        "Put the apple in the fridge as soon as you've examined a newspaper by the light of a floor lamp."
+    )
+    light = "examine_in_light Newspaper under FloorLamp"
+    assert sorted(tasks) == sorted([APPLE, light]) and order == {(light, APPLE)} and not unread
+
+
+def test_a_perfect_reference_to_an_earlier_task_adds_none():
+    """Near miss: the keys were examined by a task already stated: two tasks, not three."""
+    tasks, order, unread = read(
+        "Examine a newspaper under the floor lamp. After you've examined the newspaper, put the apple in the "
+        "fridge."
+    )
+    assert len(tasks) == 2 and len(order) == 1 and not unread
+
+
+# ----- sentence openers: then, before that, finally, free ------------------------------------------------
+@pytest.mark.parametrize(
+    "opener", ["With that done,", "Having done that,", "After you finish,", "After which,"]
+)
+def test_done_openers_order_after_the_sentence_before(opener):
+    tasks, order, unread = read(f"Put the mug in the sink. {opener} put the apple in the fridge.")
+    assert tasks == [MUG, APPLE] and order == {(MUG, APPLE)} and not unread
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Put the apple in the fridge. Ahead of that, put the mug in the sink.",
+        "Put the apple in the fridge, though first put the mug in the sink.",
+    ],
+)
+def test_ahead_of_that_and_though_first_put_the_task_before(text):
+    tasks, order, unread = read(text)
+    assert sorted(tasks) == sorted([MUG, APPLE]) and order == {(MUG, APPLE)} and not unread
+
+
+def test_then_is_still_after():
+    """Near miss of "ahead of that": the same sentences with "then" keep the written order."""
+    assert read("Put the apple in the fridge. Then put the mug in the sink.")[1] == {(APPLE, MUG)}
+
+
+@pytest.mark.parametrize("closer", ["And to wrap up,", "To conclude,", "As a last step,"])
+def test_wrap_up_orders_after_every_task_not_free(closer):
+    tasks, order, unread = read(
+        f"Put the mug in the sink. Whenever convenient, put the apple in the fridge. {closer} put the egg in "
+        "the microwave."
+    )
+    assert tasks == [MUG, APPLE, EGG] and order == {(MUG, EGG)} and not unread
+
+
+def test_at_whatever_point_frees_the_task():
+    tasks, order, unread = read(
+        "Put the mug in the sink. At whatever point suits you, put the apple in the fridge. Then put the egg "
+        "in the microwave."
+    )
+    assert order == {(APPLE, EGG)} and not unread
+
+
+# ----- courtesy: openers and closers that carry no order -------------------------------------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Kindly put the mug in the sink and put the apple in the fridge, the order is up to you.",
+        "Your first job: put the mug in the sink, put the apple in the fridge, the order is up to you.",
+        "Alright, put the mug in the sink and put the apple in the fridge in no particular order, cheers",
+    ],
+)
+def test_courtesy_words_are_read_and_the_order_stays_free(text):
+    tasks, order, unread = read(text)
+    assert sorted(tasks) == sorted([MUG, APPLE]) and not order and not unread
+
+
+def test_first_that_orders_is_still_an_order():
+    """Near miss: "first" that is not a heading orders its task before the others."""
+    tasks, order, unread = read("First put the mug in the sink, and put the apple in the fridge.")
+    assert order == {(MUG, APPLE)} and not unread
+
+
+def test_strictly_in_this_order_chains_the_tasks():
+    tasks, order, unread = read(
+        "Would you put the mug in the sink, put the apple in the fridge and put the egg in the microwave, "
+        "strictly in this order, thanks!"
+    )
+    assert tasks == [MUG, APPLE, EGG] and {(MUG, APPLE), (APPLE, EGG)} <= order and not unread
+
+
+def test_an_unread_ahead_is_named_by_check_1():
+    """ "ahead" is an order word: left unread with the tasks unordered, check 1 names it (never a guess)."""
+    _, order, unread = read("Put the mug in the sink and put the apple in the fridge ahead.")
+    assert not order and any("'ahead' (order)" in u for u in unread)
