@@ -129,3 +129,24 @@ def test_an_unread_ahead_is_named_by_check_1():
     """ "ahead" is an order word: left unread with the tasks unordered, check 1 names it (never a guess)."""
     _, order, unread = read("Put the mug in the sink and put the apple in the fridge ahead.")
     assert not order and any("'ahead' (order)" in u for u in unread)
+
+
+# ----- "W, then X. Before that, Y": Y goes in between ------------------------------------------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Put the mug in the sink, then put the apple in the fridge. Before that, put the egg in the "
+        "microwave.",
+        "Put the mug in the sink, then put the apple in the fridge, though first put the egg in the "
+        "microwave.",
+    ],
+)
+def test_before_that_inserts_the_task_before_the_last_step(text):
+    tasks, order, unread = read(text)
+    assert sorted(tasks) == sorted([MUG, APPLE, EGG]) and not unread
+    assert order == {(MUG, EGG), (EGG, APPLE), (MUG, APPLE)}
+
+
+def test_before_that_with_nothing_earlier_orders_only_the_two():
+    """Near miss: with no step before the one it precedes, "before that" adds no other pair."""
+    assert read("Put the mug in the sink. Before that, put the egg in the microwave.")[1] == {(EGG, MUG)}

@@ -58,6 +58,9 @@ def _marker_edges(k: int, tasks: Tasks, free: set[int], b: TaskBuilder, text: st
             edges.update((a, b2) for a in scope for b2 in u.tasks)
         elif kind == G.BEFORE_PREV and outer is not None:  # "X. Before that, Y, then Z": Y, Z before X
             edges.update((b2, a) for a in outer.tasks for b2 in u.tasks)
+            # "W, then X. Before that, Y": Y goes in between, after what X comes after (span_order's PRE)
+            earlier_steps = {w for w, a in edges if a in outer.tasks and w not in u.tasks}
+            edges.update((w, b2) for w in earlier_steps for b2 in u.tasks)
         elif kind == G.IN_ORDER:  # "..., in that order": each named task after the one named before it
             own = sorted(t for v in units if v.sentence == u.sentence for t in v.tasks)
             edges.update(zip(own, own[1:], strict=False))
