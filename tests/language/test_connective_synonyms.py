@@ -150,3 +150,19 @@ def test_before_that_inserts_the_task_before_the_last_step(text):
 def test_before_that_with_nothing_earlier_orders_only_the_two():
     """Near miss: with no step before the one it precedes, "before that" adds no other pair."""
     assert read("Put the mug in the sink. Before that, put the egg in the microwave.")[1] == {(EGG, MUG)}
+
+
+def test_ahead_of_a_named_task_is_before_it():
+    """ "Ahead of the apple, Y": before the task the object names, not before the sentence just read."""
+    tasks, order, unread = read(
+        "Put the apple in the fridge. Then put the mug in the sink. Ahead of the apple, put the egg in the "
+        "microwave."
+    )
+    assert (EGG, APPLE) in order and (EGG, MUG) in order and not unread
+
+
+def test_a_thank_you_sentence_is_courtesy():
+    tasks, order, unread = read(
+        "Put the mug in the sink and put the apple in the fridge in no particular order. Thank you."
+    )
+    assert sorted(tasks) == sorted([MUG, APPLE]) and not order and not unread

@@ -490,13 +490,13 @@ LEADING: list[tuple[re.Pattern[str], str]] = [
         ),
         AFTER_REF,
     ),
-    (re.compile(r"^(?:just\s+)?(?:before|prior\s+to)\s+(?P<ref>[^,]+),\s*", _F), BEFORE_REF),
+    (re.compile(r"^(?:just\s+)?(?:before|prior\s+to|ahead\s+of)\s+(?P<ref>[^,]+),\s*", _F), BEFORE_REF),
     (
         re.compile(
             r"^(?:please|let'?s|let\s+us|now|next\s+up|you\s+should|you\s+need\s+to|you\s+must|we\s+need\s+to|"
             r"i\s+want\s+you\s+to|can\s+you|could\s+you|would\s+you|will\s+you|kindly|go\s+and|also|additionally|"
             r"in\s+addition|separately|moreover|furthermore|besides|on\s+top\s+of\s+(?:that|this)(?=\s*,)|"
-            r"alright|all\s+right|ok(?:ay)?|and)\b\s*[,:]?\s*",
+            r"alright|all\s+right|ok(?:ay)?|(?:thanks|thank\s+you|cheers)(?=\s*(?:[,!]|$))|and)\b\s*[,:]?\s*",
             _F,
         ),
         "",
