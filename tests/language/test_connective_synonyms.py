@@ -7,7 +7,8 @@ from __future__ import annotations
 
 import pytest
 
-from tests.language.test_unseen_classes import read
+from nl2hltl2plan.language.grammar import parse_instruction
+from tests.language.test_unseen_classes import KITCHEN, read
 
 MUG = "place Mug -> SinkBasin"
 APPLE = "place Apple -> Fridge"
@@ -166,3 +167,61 @@ def test_a_thank_you_sentence_is_courtesy():
         "Put the mug in the sink and put the apple in the fridge in no particular order. Thank you."
     )
     assert sorted(tasks) == sorted([MUG, APPLE]) and not order and not unread
+
+
+# ----- "both" / "all" around a list names the listed things, not a count of one of them ------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Put both the mug and the apple on the counter.",
+        "Put the mug and the apple both on the counter.",
+        "Put the mug, the apple and the egg all on the counter.",
+    ],
+)
+def test_both_or_all_around_a_list_is_no_count(text):
+    tasks, _, unread = read(text)
+    assert all(t.startswith("place ") and "2x" not in t for t in tasks) and len(tasks) >= 2 and not unread
+
+
+@pytest.mark.parametrize(
+    ("text", "task"),
+    [
+        ("Put both mugs and the apple on the counter.", "place_two 2x Mug -> CounterTop"),
+        ("Put the mug in the sink and the two apples both in the fridge.", "place_two 2x Apple -> Fridge"),
+    ],
+)
+def test_both_before_a_plural_still_counts(text, task):
+    """Near miss: "both mugs" (no article) and "the two apples both" are still two."""
+    tasks, _, unread = read(text)
+    assert task in tasks and not unread
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Put the mug in the sink, and once it's there put the apple in the fridge.",
+        "Put the mug in the sink. When that is taken care of, put the apple in the fridge.",
+    ],
+)
+def test_the_step_before_is_in_place(text):
+    tasks, order, unread = read(text)
+    assert tasks == [MUG, APPLE] and order == {(MUG, APPLE)} and not unread
+
+
+# ----- "A and B. Then C": after both ----------------------------------------------------------------------
+def test_then_after_a_sentence_of_two_tasks_follows_both():
+    tasks, order, unread = read(
+        "Put the mug in the sink and put the apple in the fridge. Then put the egg in the microwave."
+    )
+    assert order == {(MUG, EGG), (APPLE, EGG)} and not unread
+
+
+def test_then_after_a_sentence_with_a_free_task_follows_its_last_clause_only():
+    """Near miss: a task the sentence frees ("at any time") is not made to precede the next step."""
+    p = parse_instruction(
+        "Put the mug in the sink at any time and put the apple in the fridge. Then put the egg in the "
+        "microwave.",
+        KITCHEN,
+        "kitchen",
+    )
+    assert p.before == [("B", "C")] and not p.unparsed

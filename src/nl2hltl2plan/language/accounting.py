@@ -309,6 +309,18 @@ def _next_mention(mentions: list[Mention], words: list[str], i: int, within: int
 _PLACE_PREPS = (LOCATIVE - {"of"}) | {"to", "into", "onto"}
 
 
+def _both_and(w: str, instruction: str, start: int, m: Mention) -> bool:
+    """ "both the mug and the apple": "both" names the pair of the list, not two mugs (as the grammar reads
+    it, `sentences._BOTH_BEFORE_LIST`)."""
+    between = instruction[start + len(w) : m.char_start]
+    det = r"\s+(?:the|a|an|my|your|this|that)\s"
+    return (
+        w == "both"
+        and re.match(det, between, re.I) is not None
+        and re.match(r"\s+and" + det, instruction[m.char_end :], re.I) is not None
+    )
+
+
 def _words(
     instruction: str,
     toks: list[tuple[str, int, int]],
@@ -458,6 +470,8 @@ def _count(
     w, start, _ = toks[i]
     m = _next_mention(mentions, [t[0] for t in toks], i)
     if m is None or re.search(r"[,.;:!?]", instruction[start : m.char_start]):
+        return None
+    if _both_and(w, instruction, start, m):
         return None
     types = set(m.entry.types)
     held = None

@@ -140,6 +140,16 @@ _CONNECTIVE_YOUVE = re.compile(r"\b(after|once|when|before|until)\s+you've\b", r
 _ONLY_AFTER_SHOULD = re.compile(
     r"\bonly\s+(after|once|when)\s+([^,.;!?]+?),?\s+(?:should|can|may|must|do|will)\s+you\s+(?=[a-z])", re.I
 )
+# "both the mug and the apple", "the mug and the apple both in the sink", "the cup and the bowl all in the
+# sink": the quantifier names the listed things, it is no count of the last one
+_BOTH_BEFORE_LIST = re.compile(
+    r"\bboth\s+(?=(?:the|a|an|my|your|this|that)\s+[^,.;!?]+?\s+and\s+(?:the|a|an|my|your|this|that)\s)", re.I
+)
+_BOTH_AFTER_LIST = re.compile(
+    r"(\band\s+(?:the|a|an|my|your|this|that)\s+[a-z]+(?:\s+[a-z]+)?)\s+(?:both|all)\s+"
+    r"(?=(?:in|into|on|onto|inside|to|back|away)\b)",
+    re.I,
+)
 _UNTIL = re.compile(r"\b([Dd])(?:o not|on't) ([^.;!?]+?) until (?:you )?([^.;!?]+)")
 # "Once (you are) done (with the task to) X, Y" names what is done: "After X, Y" (not "Then Y")
 _DONE_WITH = re.compile(
@@ -216,7 +226,8 @@ _RINSE_ADJ = re.compile(r"\b(a|an|the)\s+rinse(?:\s+off)?\s+(?=[a-z])", re.IGNOR
 _THEN_INSIDE = re.compile(
     r"(?<=\w)\s*,?\s+(?:and\s+)?(?:"
     r"(?:once|when|after)\s+(?:that's|that\s+is|it's|it\s+is|this\s+is|you're|you\s+are|you've|you\s+have)?"
-    r"\s*(?:done|finished|through)(?:\s+with\s+(?:that|it|this))?"
+    r"\s*(?:done|finished|through|there|in\s+place|handled|taken\s+care\s+of|out\s+of\s+the\s+way)"
+    r"(?:\s+with\s+(?:that|it|this))?"
     r"|after\s+(?:that|this)|afterwards?|following\s+that"
     r")\s*,?\s+(?=[a-z])",
     re.IGNORECASE,
@@ -254,6 +265,7 @@ def normalize(text: str) -> str:
     text = without_connective_to(text)
     text = _AS_SOON_AS.sub(lambda m: "Once" if m.group(0)[0] == "A" else "once", text)
     text = _CONNECTIVE_YOUVE.sub(r"\1 you have", text)
+    text = _BOTH_AFTER_LIST.sub(r"\1 ", _BOTH_BEFORE_LIST.sub("", text))
     text = _ONLY_AFTER_SHOULD.sub(lambda m: f"{'A' if m.group(0)[0] == 'O' else 'a'}fter {m[2]}, ", text)
     # "Do not Y until (you) X" states the order of "After X, Y" (ANNOTATION_GUIDE.md)
     text = _UNTIL.sub(lambda m: f"{'A' if m.group(1) == 'D' else 'a'}fter {m.group(3)}, {m.group(2)}", text)

@@ -423,7 +423,10 @@ _WHENEVER = (
     r"at\s+(?:any|whatever|some)\s+point(?:\s+(?:that\s+)?(?:suits\s+you|you\s+like|you\s+want|works\s+for\s+you))?|"
     r"at\s+your\s+(?:convenience|leisure)"
 )
-_DONE = r"(?:done|finished|finish|complete|completed|over|through|in\s+place)"
+_DONE = (
+    r"(?:done|finished|finish|complete|completed|over|through|in\s+place|handled|taken\s+care\s+of|"
+    r"out\s+of\s+the\s+way)"
+)
 LEADING: list[tuple[re.Pattern[str], str]] = [
     (
         re.compile(
@@ -431,7 +434,7 @@ LEADING: list[tuple[re.Pattern[str], str]] = [
             r"later(?:\s+on)?|following\s+(?:that|this)|thereafter|followed\s+by|"
             r"(?:with\s+)?(?:that|this)\s+(?:done|finished|completed|out\s+of\s+the\s+way)|"
             r"having\s+(?:done|finished|completed)\s+(?:that|this|so)|"
-            rf"(?:once|when|after)\s+(?:that|this|it|you)?\s*(?:is\s+|are\s+|have\s+|has\s+)?{_DONE}"
+            rf"(?:once|when|after)\s+(?:(?:that|this|it|you)(?:'s|'re|'ve)?)?\s*(?:is\s+|are\s+|have\s+|has\s+)?{_DONE}"
             r"(?:\s+(?:with\s+)?(?:that|this|it|so)\b)?|"
             r"after\s+(?:doing|finishing|completing)\s+(?:that|this|it))\b\s*[,:]?\s*",
             _F,
@@ -507,7 +510,7 @@ LEADING: list[tuple[re.Pattern[str], str]] = [
 ]
 _FREE_T = (
     r"(?:at\s+any\s+time|in\s+any\s+order|any\s+order|in\s+any\s+sequence|anytime|any\s+time|whenever(?:\s+you\s+like)?|"
-    r"in\s+whatever\s+order|whatever\s+order\s+(?:works|is\s+fine)|in\s+no\s+(?:particular|specific|set)\s+order|"
+    r"in\s+whatever\s+order(?:\s+you\s+(?:like|want|prefer))?|whatever\s+order\s+(?:works|is\s+fine)|in\s+no\s+(?:particular|specific|set)\s+order|"
     r"(?:the\s+)?order\s+is\s+(?:up\s+to\s+you|your\s+call|yours\s+to\s+choose)|in\s+parallel|simultaneously|concurrently|"
     r"independently|at\s+your\s+(?:convenience|leisure))"
 )
