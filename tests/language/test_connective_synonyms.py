@@ -8,6 +8,8 @@ from __future__ import annotations
 import pytest
 
 from nl2hltl2plan.language.grammar import parse_instruction
+from nl2hltl2plan.language.grammar.draft_tasks import TaskBuilder
+from nl2hltl2plan.language.grammar.references import new_tasks_from_ref
 from tests.language.test_unseen_classes import KITCHEN, read
 
 MUG = "place Mug -> SinkBasin"
@@ -225,3 +227,49 @@ def test_then_after_a_sentence_with_a_free_task_follows_its_last_clause_only():
         "kitchen",
     )
     assert p.before == [("B", "C")] and not p.unparsed
+
+
+# ----- a reference that states a placement; ordinal openers -----------------------------------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Put the apple in the fridge after the mug is in the sink.",
+        "Put the mug in the sink before the apple goes in the fridge.",
+        "Don't put the apple in the fridge until the mug is in the sink.",
+    ],
+)
+def test_a_reference_to_a_placed_object_states_the_placement(text):
+    tasks, order, unread = read(text)
+    assert sorted(tasks) == sorted([MUG, APPLE]) and order == {(MUG, APPLE)} and not unread
+
+
+def test_a_placed_reference_to_a_stated_task_adds_none():
+    """Near miss: the mug's task is stated already: the reference points at it, no third task."""
+    tasks, order, unread = read(
+        "Put the mug in the sink. Put the apple in the fridge after the mug is in the sink."
+    )
+    assert tasks == [MUG, APPLE] and order == {(MUG, APPLE)} and not unread
+
+
+def test_ordinal_openers_order_the_sentences():
+    tasks, order, unread = read(
+        "First, the mug goes in the sink. Second, the apple goes in the fridge. Third, the egg goes in the "
+        "microwave."
+    )
+    assert tasks == [MUG, APPLE, EGG] and {(MUG, APPLE), (APPLE, EGG)} <= order and not unread
+
+
+def test_an_ordinal_of_a_place_is_no_order():
+    """Near miss: "the second drawer" names a drawer; check 1 does not ask for an order."""
+    tasks, order, unread = read("Put the mug in the second drawer. Put the apple in the fridge.")
+    assert len(tasks) == 2 and not order and not unread
+
+
+def test_a_placed_reference_to_an_object_named_elsewhere_states_no_task():
+    """Near miss: the wine bottle is named in a sentence of its own: the reference is to that sentence's
+    task, so no placement is made up for it (an unread sentence stays unread, never a second guess)."""
+
+    text = "Put the bottle on the shelf whenever. Once the bottle is on the shelf, put the pan on the table."
+    assert new_tasks_from_ref("the bottle is on the shelf", TaskBuilder(None, False, None), text) == []
+    alone = "Once the bottle is on the shelf, put the pan on the table."
+    assert len(new_tasks_from_ref("the bottle is on the shelf", TaskBuilder(None, False, None), alone)) == 1

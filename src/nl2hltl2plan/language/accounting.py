@@ -505,11 +505,13 @@ _FREE_PHRASE = re.compile(r"\border is (?:up to you|your call)\b|\bno (?:particu
 
 
 def _not_a_step(words: list[str], i: int) -> bool:
-    """An order word that names no step: "next to the sink" (a place), "go ahead and", "your first job: X,
-    Y" (a heading of the list, read so by the grammar's openers)."""
+    """An order word that names no step: "next to the sink" (a place), "go ahead and", "the second drawer"
+    (an ordinal of a place), "your first job: X, Y" (a heading of the list, read so by the grammar's
+    openers)."""
     return (
         words[i : i + 2] == ["next", "to"]
         or words[i - 1 : i + 1] == ["go", "ahead"]
+        or (words[i] in ("first", "second", "third") and i > 0 and words[i - 1] in ("the", "a", "its"))
         or (words[i - 1 : i + 1] == ["your", "first"] and words[i + 1 : i + 2] in (["job"], ["task"]))
     )
 
