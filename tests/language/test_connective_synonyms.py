@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import pytest
 
+from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.grammar import parse_instruction
 from nl2hltl2plan.language.grammar.draft_tasks import TaskBuilder
 from nl2hltl2plan.language.grammar.references import new_tasks_from_ref
@@ -273,3 +274,67 @@ def test_a_placed_reference_to_an_object_named_elsewhere_states_no_task():
     assert new_tasks_from_ref("the bottle is on the shelf", TaskBuilder(None, False, None), text) == []
     alone = "Once the bottle is on the shelf, put the pan on the table."
     assert len(new_tasks_from_ref("the bottle is on the shelf", TaskBuilder(None, False, None), alone)) == 1
+
+
+# ----- wrong readings that were reported as success (issue 23) -------------------------------------------
+def test_a_trailing_reference_stops_before_then():
+    """ "Y after X-ing Z, and then W": W is a task of its own after Y, not part of the reference (it was
+    read "heat the apple in the egg")."""
+    tasks, order, unread = read(
+        "Put the mug in the sink after putting the apple in the fridge, and then the egg in the microwave."
+    )
+    assert sorted(tasks) == sorted([MUG, APPLE, EGG]) and not unread
+    assert {(APPLE, MUG), (MUG, EGG)} <= order
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Put the apple in the fridge, but not before putting the mug in the sink.",
+        "Put the apple in the fridge, but only after you put the mug in the sink.",
+    ],
+)
+def test_not_before_is_only_after(text):
+    tasks, order, unread = read(text)
+    assert sorted(tasks) == sorted([MUG, APPLE]) and order == {(MUG, APPLE)} and not unread
+
+
+def test_in_reverse_order_reverses_the_named_order():
+    tasks, order, unread = read(
+        "Put the apple in the fridge, the mug in the sink and the egg in the microwave, in reverse order."
+    )
+    assert {(EGG, MUG), (MUG, APPLE)} <= order and not unread
+
+
+def test_reverse_order_against_then_is_a_contradiction():
+    """Near miss: "then" and "in reverse order" in one sentence contradict each other: exit 2, no guess."""
+    with pytest.raises(HTTError, match="contradictory"):
+        read(
+            "Put the apple in the fridge, then the mug in the sink, then the egg in the microwave, in "
+            "reverse order."
+        )
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Put the apple in the fridge. The mug is in the sink.",
+        "The moment the mug is in the sink, put the apple in the fridge.",
+    ],
+)
+def test_a_clause_that_says_where_a_thing_is_states_no_task(text):
+    """ "The mug is in the sink" was read as "put the mug in the sink" by the grammar: a statement is no
+    request. (The offline backend's learned rescue may still read the unread clause; that is its policy.)"""
+    p = parse_instruction(text, KITCHEN, "kitchen")
+    assert "place Mug -> SinkBasin" not in [t.summary() for t in p.tasks]
+    assert any("mug is in the sink" in u for u in p.unparsed)
+
+
+@pytest.mark.parametrize(
+    "text",
+    ["Put the mug that is on the counter in the sink.", "Put the mug which is on the counter into the sink."],
+)
+def test_where_the_object_is_now_is_no_destination(text):
+    """ "the mug that is on the counter" was read as a mug put on the counter; near miss: "into" was right."""
+    tasks, _, unread = read(text)
+    assert tasks == [MUG] and not unread

@@ -62,9 +62,10 @@ def _marker_edges(k: int, tasks: Tasks, free: set[int], b: TaskBuilder, text: st
             # "W, then X. Before that, Y": Y goes in between, after what X comes after (span_order's PRE)
             earlier_steps = {w for w, a in edges if a in outer.tasks and w not in u.tasks}
             edges.update((w, b2) for w in earlier_steps for b2 in u.tasks)
-        elif kind == G.IN_ORDER:  # "..., in that order": each named task after the one named before it
+        elif kind in (G.IN_ORDER, G.IN_REVERSE):  # "..., in that order": each task after the one named before
             own = sorted(t for v in units if v.sentence == u.sentence for t in v.tasks)
-            edges.update(zip(own, own[1:], strict=False))
+            pairs = zip(own, own[1:], strict=False)
+            edges.update(pairs if kind == G.IN_ORDER else ((b2, a) for a, b2 in pairs))
         elif kind == G.AFTER_REF and (named := by_position(ref, earlier, prev, others)) is not None:
             edges.update((a, b2) for a in named for b2 in u.tasks)
         elif kind in {G.AFTER_REF, G.BEFORE_REF}:

@@ -101,6 +101,9 @@ def strip_trailing(body: str) -> tuple[list[tuple[str, str]], str]:
         changed = False
         for pat, kind in G.TRAILING:
             m = pat.search(body)
+            # "Y after X-ing Z, and then W": the reference ends before "then" (no trailing reference)
+            if m and kind == "ref" and re.search(r"\bthen\b", m.group("ref"), re.I):
+                continue
             if m and m.start() > 0:
                 if kind == "ref":
                     rel = m.group("rel").lower()
@@ -148,6 +151,15 @@ _BOTH_BEFORE_LIST = re.compile(
 _BOTH_AFTER_LIST = re.compile(
     r"(\band\s+(?:the|a|an|my|your|this|that)\s+[a-z]+(?:\s+[a-z]+)?)\s+(?:both|all)\s+"
     r"(?=(?:in|into|on|onto|inside|to|back|away)\b)",
+    re.I,
+)
+# "X, but not before Y-ing Z" / "X not until Y": X only after Y
+_NOT_BEFORE = re.compile(r",?\s+(?:but\s+)?not\s+(?:before|until)\s+", re.I)
+# "the mug that is on the counter": where the mug is now, a source ("the mug from the counter"), not where
+# it goes
+_WHERE_IT_IS = re.compile(
+    r"\b(?:that|which)(?:'s|\s+is|\s+are)\s+(?:(?:sitting|lying|standing|now)\s+)?(?:on|in|at|inside)\s+"
+    r"(?=(?:the|a|an)\s)",
     re.I,
 )
 _UNTIL = re.compile(r"\b([Dd])(?:o not|on't) ([^.;!?]+?) until (?:you )?([^.;!?]+)")
@@ -266,9 +278,11 @@ def normalize(text: str) -> str:
     text = _AS_SOON_AS.sub(lambda m: "Once" if m.group(0)[0] == "A" else "once", text)
     text = _CONNECTIVE_YOUVE.sub(r"\1 you have", text)
     text = _BOTH_AFTER_LIST.sub(r"\1 ", _BOTH_BEFORE_LIST.sub("", text))
+    text = _WHERE_IT_IS.sub("from ", text)
     text = _ONLY_AFTER_SHOULD.sub(lambda m: f"{'A' if m.group(0)[0] == 'O' else 'a'}fter {m[2]}, ", text)
     # "Do not Y until (you) X" states the order of "After X, Y" (ANNOTATION_GUIDE.md)
     text = _UNTIL.sub(lambda m: f"{'A' if m.group(1) == 'D' else 'a'}fter {m.group(3)}, {m.group(2)}", text)
+    text = _NOT_BEFORE.sub(", but only after ", text)
     text = _STATES_LISTED.sub(r"\1 ", text)  # "a chilled, cut slice": one noun phrase, not two clauses
     text = _STATES_JOINED.sub(r"\1 ", text)
     text = _OFF.sub(r"\1", text)  # "a rinsed off knife", "cool off a plate": the state, not a direction

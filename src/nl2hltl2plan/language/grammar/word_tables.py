@@ -417,6 +417,7 @@ THEN, FINALLY, FIRST, FREE, BEFORE_PREV, AFTER_ALL, AFTER_REF, BEFORE_REF, NOCON
     "none",
 )
 IN_ORDER = "in_order"  # "..., in that order": the sentence's tasks in the order they are named
+IN_REVERSE = "in_reverse"  # "..., in reverse order": the sentence's tasks last named first
 # "whenever convenient", "at whatever point suits you", "at your convenience": a free task
 _WHENEVER = (
     r"whenever(?:\s+(?:convenient|possible|you\s+(?:like|want|wish|can)|it\s+suits\s+you|you\s+get\s+(?:a|the)\s+chance))?|"
@@ -516,6 +517,7 @@ _FREE_T = (
     r"independently|at\s+your\s+(?:convenience|leisure))"
 )
 TRAILING: list[tuple[re.Pattern[str], str]] = [
+    (re.compile(r"\s*,?\s*(?:in\s+(?:the\s+)?reverse(?:\s+order)?|backwards)\s*$", _F), IN_REVERSE),
     # a closing courtesy: ", cheers", ", thanks!", ", thank you"
     (re.compile(r"\s*,?\s*(?:cheers|thanks(?:\s+a\s+lot)?|thank\s+you(?:\s+very\s+much)?|please)\s*$", _F),
      ""),
@@ -531,7 +533,8 @@ TRAILING: list[tuple[re.Pattern[str], str]] = [
     (
         re.compile(
             r"\s*,?\s*(?:(?:this\s+)?(?:should|must|has\s+to|have\s+to|needs?\s+to|can\s+only|is\s+to)\s+be\s+"
-            r"(?:done|completed|performed|finished|placed|put|moved|carried\s+out)\s+)?(?:(?:only|right|just|immediately)\s+)?"
+            r"(?:done|completed|performed|finished|placed|put|moved|carried\s+out)\s+)?(?:but\s+)?"
+            r"(?:(?:only|right|just|immediately)\s+)?"
             r"(?P<rel>after|before|once|when(?=\s+\w+ing\b))\s+(?P<ref>(?:\w+ing\b|the\s|you\s|having\s|all\s|every|each|"
             r"finishing|completing).+)$",
             _F,
