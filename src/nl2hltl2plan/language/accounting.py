@@ -309,6 +309,18 @@ def _next_mention(mentions: list[Mention], words: list[str], i: int, within: int
 _PLACE_PREPS = (LOCATIVE - {"of"}) | {"to", "into", "onto"}
 
 
+def _both_and(w: str, instruction: str, start: int, m: Mention) -> bool:
+    """ "both the mug and the apple": "both" names the pair of the list, not two mugs (as the grammar reads
+    it, `sentences._BOTH_BEFORE_LIST`)."""
+    between = instruction[start + len(w) : m.char_start]
+    det = r"\s+(?:the|a|an|my|your|this|that)\s"
+    return (
+        w == "both"
+        and re.match(det, between, re.I) is not None
+        and re.match(r"\s+and" + det, instruction[m.char_end :], re.I) is not None
+    )
+
+
 def _words(
     instruction: str,
     toks: list[tuple[str, int, int]],
@@ -459,6 +471,8 @@ def _count(
     m = _next_mention(mentions, [t[0] for t in toks], i)
     if m is None or re.search(r"[,.;:!?]", instruction[start : m.char_start]):
         return None
+    if _both_and(w, instruction, start, m):
+        return None
     types = set(m.entry.types)
     held = None
     if instances is not None:
@@ -486,6 +500,22 @@ def _count(
     return Unread(phrase, "count", f"the base tasks take {got}, not {n}")
 
 
+# "the order is up to you", "in no particular order": the order is left free without an any-order word
+_FREE_PHRASE = re.compile(r"\border is (?:up to you|your call)\b|\bno (?:particular|specific|set) order\b")
+
+
+def _not_a_step(words: list[str], i: int) -> bool:
+    """An order word that names no step: "next to the sink" (a place), "go ahead and", "the second drawer"
+    (an ordinal of a place), "your first job: X, Y" (a heading of the list, read so by the grammar's
+    openers)."""
+    return (
+        words[i : i + 2] == ["next", "to"]
+        or words[i - 1 : i + 1] == ["go", "ahead"]
+        or (words[i] in ("first", "second", "third") and i > 0 and words[i - 1] in ("the", "a", "its"))
+        or (words[i - 1 : i + 1] == ["your", "first"] and words[i + 1 : i + 2] in (["job"], ["task"]))
+    )
+
+
 def _orders(toks: list[tuple[str, int, int]], in_mention: set[int], parse: ParseUsage) -> list[Unread]:
     """Order words: with several base tasks and no word that frees the order, a sequence word needs an
     ordering between them."""
@@ -494,12 +524,12 @@ def _orders(toks: list[tuple[str, int, int]], in_mention: set[int], parse: Parse
     words = [
         w
         for i, w in enumerate(plain)
-        if i not in in_mention and "order" in categories(w) and plain[i : i + 2] != ["next", "to"]
-    ]  # "next to the sink" names a place, not a step
+        if i not in in_mention and "order" in categories(w) and not _not_a_step(plain, i)
+    ]
     text = " ".join(plain)
     words += [p for p in ("in that order", "in this order") if f" {p} " in f" {text} "]
     words += [p for p in ("at the end", "in the end") if re.search(rf"\b{p}\b(?! of\b)", text)]
-    free = any("any_order" in c for c in cats)
+    free = any("any_order" in c for c in cats) or _FREE_PHRASE.search(text) is not None
     if not words or len(parse.tasks) < 2 or parse.before or free:
         return []
     return [Unread(", ".join(dict.fromkeys(words)), "order", "the base tasks are not ordered")]

@@ -3,6 +3,7 @@ list of objects sharing one verb as a group) and temporal units (the tasks of on
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 
 from nl2hltl2plan.language.grammar import word_tables as G
@@ -19,7 +20,7 @@ from nl2hltl2plan.language.grammar.frames import (
     puts_into,
     same,
 )
-from nl2hltl2plan.language.grammar.phrases import NP
+from nl2hltl2plan.language.grammar.phrases import NP, tokens
 from nl2hltl2plan.language.grammar.sentences import Sentence
 
 
@@ -60,9 +61,11 @@ class DraftBuilder:
 
     def add_sentence(self, s: Sentence) -> None:
         """Read the clauses of one sentence into drafts and units, then apply the sentence's markers."""
-        clauses = expand_gapping(
-            split_clauses(s.body), self.last_verb, self.last_dest, gap_base=100 * s.index
-        )
+        said = split_clauses(s.body)
+        # "the knife is in the sink": a statement, not a request (before a verb is lent to it by gapping)
+        self.b.unparsed += [c[0] for c in said if _states_where(c[0])]
+        said = [c for c in said if not _states_where(c[0])]
+        clauses = expand_gapping(said, self.last_verb, self.last_dest, gap_base=100 * s.index)
         st = _SentenceState(s, len(self.out.units))
         for clause in clauses:
             self._add_clause(clause, st)
@@ -257,6 +260,18 @@ class DraftBuilder:
                 of_all = kind == G.FINALLY and len(sentence_units) == 1
                 for u in sentence_units:
                     u.markers.append((kind, OF_ALL if of_all else ref))
+
+
+_COPULA_PLACE = re.compile(
+    r"\b(?:is|are)\s+(?:now\s+|already\s+|still\s+)?(?:in|on|inside|into|onto|at|under|by)\s", re.IGNORECASE
+)
+
+
+def _states_where(c_text: str) -> bool:
+    """A clause with no verb of ours that says where a thing is ("the knife is in the sink", "the moment the
+    fork is on the table"): it states no task, and reading it as a placement would be a guess."""
+    words = tokens(c_text)
+    return bool(words) and words[0][0] not in G.VERBS and _COPULA_PLACE.search(c_text) is not None
 
 
 def _continues(d: Draft, fr: Frame, it: Item, joiner: str) -> bool:

@@ -11,7 +11,7 @@ from nl2hltl2plan.language.grammar.draft_tasks import TaskBuilder, Tasks, Unit
 from nl2hltl2plan.language.grammar.frames import IN_SENTENCE, OF_ALL
 from nl2hltl2plan.language.grammar.phrases import parse_np
 from nl2hltl2plan.language.grammar.references import new_tasks_from_ref, ref_targets, self_state, stated_tasks
-from nl2hltl2plan.language.grammar.sentences import RelationSentence
+from nl2hltl2plan.language.grammar.sentences import RelationSentence, split_sentences
 from nl2hltl2plan.language.semantic_check import find_cycle
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter, transitive_reduction
 
@@ -48,7 +48,8 @@ def _marker_edges(k: int, tasks: Tasks, free: set[int], b: TaskBuilder, text: st
     others = [t for t in range(len(tasks.specs)) if t not in u.tasks]
     for kind, ref in u.markers:
         if kind == G.THEN and prev is not None:
-            edges.update((a, b2) for a in prev.tasks for b2 in u.tasks)
+            after = [] if prev.sentence == u.sentence else _last_step(units, prev.sentence, free, edges, text)
+            edges.update((a, b2) for a in after or prev.tasks for b2 in u.tasks)
         elif kind == G.FINALLY:
             # "..., and finally Y" inside a sentence: after its sibling clauses too
             scope = list(range(min(u.tasks))) if ref == IN_SENTENCE else others if ref == OF_ALL else earlier
@@ -58,15 +59,35 @@ def _marker_edges(k: int, tasks: Tasks, free: set[int], b: TaskBuilder, text: st
             edges.update((a, b2) for a in scope for b2 in u.tasks)
         elif kind == G.BEFORE_PREV and outer is not None:  # "X. Before that, Y, then Z": Y, Z before X
             edges.update((b2, a) for a in outer.tasks for b2 in u.tasks)
-        elif kind == G.IN_ORDER:  # "..., in that order": each named task after the one named before it
+            # "W, then X. Before that, Y": Y goes in between, after what X comes after (span_order's PRE)
+            earlier_steps = {w for w, a in edges if a in outer.tasks and w not in u.tasks}
+            edges.update((w, b2) for w in earlier_steps for b2 in u.tasks)
+        elif kind in (G.IN_ORDER, G.IN_REVERSE):  # "..., in that order": each task after the one named before
             own = sorted(t for v in units if v.sentence == u.sentence for t in v.tasks)
-            edges.update(zip(own, own[1:], strict=False))
+            pairs = zip(own, own[1:], strict=False)
+            edges.update(pairs if kind == G.IN_ORDER else ((b2, a) for a, b2 in pairs))
         elif kind == G.AFTER_REF and (named := by_position(ref, earlier, prev, others)) is not None:
             edges.update((a, b2) for a in named for b2 in u.tasks)
         elif kind in {G.AFTER_REF, G.BEFORE_REF}:
             _ref_edges(kind == G.AFTER_REF, ref, u, tasks, b, text, edges)
     if u.seq_after_prev and seq_prev is not None:
         edges.update((a, b2) for a in seq_prev.tasks for b2 in u.tasks)
+
+
+_FREE_WORD = re.compile(
+    r"\b(?:any|anytime|whenever|whatever|meanwhile|simultaneously|parallel|independently)\b", re.I
+)
+
+
+def _last_step(units: list[Unit], sentence: int, free: set[int], edges: Edges, text: str) -> list[int]:
+    """The tasks of a sentence that "Then" in the next sentence comes after: those no other task of the
+    sentence comes after, unless free ("A and B. Then C": after both, as `span_order`'s step). Empty (the
+    last clause alone) when the sentence frees a task in its middle ("A at any time and B. Then C")."""
+    sentences = split_sentences(text)
+    if sentence >= len(sentences) or _FREE_WORD.search(sentences[sentence][0]):
+        return []
+    own = {t for v in units if v.sentence == sentence for t in v.tasks}
+    return sorted(t for t in own if t not in free and not any((t, o) in edges for o in own))
 
 
 def _names_the_others(ref: str) -> bool:

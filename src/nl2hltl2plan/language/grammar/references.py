@@ -121,13 +121,35 @@ def self_state(ref: str, specs: list[BaseTaskSpec]) -> None:
 _YOU = re.compile(r"^\s*you\s+(?:have\s+|had\s+)?", re.I)
 
 
+# "after the mug is in the sink", "before the apple goes in the fridge" ("goes" is gone by then,
+# `sentences.supply_put`): the placement that state needs
+_PLACED_STATE = re.compile(
+    r"^(?P<np>(?:the|a|an|your|my)\s+[^,]+?)\s+(?:(?:is|are|goes|go|gets|get|has\s+been|have\s+been|ends\s+up)\s+)?"
+    r"(?:(?:put|placed|set)\s+)?(?P<place>(?:in|into|on|onto|inside)\s+(?:the|a|an|your|my)\s)",
+    re.I,
+)
+
+
+def _placement(m: re.Match[str], text: str) -> str:
+    """ "the mug is in the sink" -> "put the mug in the sink", unless the object is named elsewhere in the
+    instruction too: then the reference is to that mention's task (a clause that may be unread)."""
+    head = m["np"].split()[-1]
+    if len(re.findall(rf"\b{re.escape(head)}\b", text, re.I)) > 1:
+        return m[0]
+    return f"put {m['np']} {m['place']}"
+
+
 def new_tasks_from_ref(ref: str, b: TaskBuilder, text: str) -> list[BaseTaskSpec]:
     """A reference that names no earlier task but states one ("after picking up the box and placing it on
-    the armchair"): parse it as clauses of its own."""
+    the armchair", "after the mug is in the sink"): parse it as clauses of its own."""
     drafts: list[Draft] = []
+    ref = _PLACED_STATE.sub(lambda m: _placement(m, text), ref.strip())
     for c_text, _s, _e, _j in split_clauses(_YOU.sub("", ref)):  # "after you put ...": a clause of its own
         words = [w for w, _, _ in tokens(c_text)]
-        if words and words[0] not in G.VERBS:
+        if words and words[0] not in G.VERBS and words[0] in G.VERB_PAST:
+            # "after you have examined the keys under the lamp": the clause "examine the keys ..."
+            c_text = G.VERB_PAST[words[0]][1] + c_text.lstrip()[len(words[0]) :]
+        elif words and words[0] not in G.VERBS:
             continue
         fr = parse_frame(c_text, 0, "")
         for it in fr.items:

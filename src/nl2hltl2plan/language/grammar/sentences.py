@@ -101,11 +101,14 @@ def strip_trailing(body: str) -> tuple[list[tuple[str, str]], str]:
         changed = False
         for pat, kind in G.TRAILING:
             m = pat.search(body)
+            # "Y after X-ing Z, and then W": the reference ends before "then" (no trailing reference)
+            if m and kind == "ref" and re.search(r"\bthen\b", m.group("ref"), re.I):
+                continue
             if m and m.start() > 0:
                 if kind == "ref":
                     rel = m.group("rel").lower()
                     trailing.append((G.BEFORE_REF if rel == "before" else G.AFTER_REF, m.group("ref")))
-                else:
+                elif kind:  # a courtesy ("cheers") has no kind: only dropped
                     trailing.append((kind, ""))
                 body = body[: m.start()]
                 changed = True
@@ -131,6 +134,34 @@ def without_connective_to(text: str) -> str:
     return _CONNECTIVE_TO.sub(lambda m: f"{m.group(1)} {m.group(2) or ''}", text)
 
 
+# "as soon as you've X" is "once you've X"
+_AS_SOON_AS = re.compile(r"\bas\s+soon\s+as\b(?!\s+(?:possible|you\s+can)\b)", re.I)
+# "once you've put X" after a connective: "once you have put X" (the form the references read)
+_CONNECTIVE_YOUVE = re.compile(r"\b(after|once|when|before|until)\s+you've\b", re.I)
+# "Only after you've X should you Y" (the clause after the connective, then an inverted "should you"):
+# "After you've X, Y"
+_ONLY_AFTER_SHOULD = re.compile(
+    r"\bonly\s+(after|once|when)\s+([^,.;!?]+?),?\s+(?:should|can|may|must|do|will)\s+you\s+(?=[a-z])", re.I
+)
+# "both the mug and the apple", "the mug and the apple both in the sink", "the cup and the bowl all in the
+# sink": the quantifier names the listed things, it is no count of the last one
+_BOTH_BEFORE_LIST = re.compile(
+    r"\bboth\s+(?=(?:the|a|an|my|your|this|that)\s+[^,.;!?]+?\s+and\s+(?:the|a|an|my|your|this|that)\s)", re.I
+)
+_BOTH_AFTER_LIST = re.compile(
+    r"(\band\s+(?:the|a|an|my|your|this|that)\s+[a-z]+(?:\s+[a-z]+)?)\s+(?:both|all)\s+"
+    r"(?=(?:in|into|on|onto|inside|to|back|away)\b)",
+    re.I,
+)
+# "X, but not before Y-ing Z" / "X not until Y": X only after Y
+_NOT_BEFORE = re.compile(r",?\s+(?:but\s+)?not\s+(?:before|until)\s+", re.I)
+# "the mug that is on the counter": where the mug is now, a source ("the mug from the counter"), not where
+# it goes
+_WHERE_IT_IS = re.compile(
+    r"\b(?:that|which)(?:'s|\s+is|\s+are)\s+(?:(?:sitting|lying|standing|now)\s+)?(?:on|in|at|inside)\s+"
+    r"(?=(?:the|a|an)\s)",
+    re.I,
+)
 _UNTIL = re.compile(r"\b([Dd])(?:o not|on't) ([^.;!?]+?) until (?:you )?([^.;!?]+)")
 # "Once (you are) done (with the task to) X, Y" names what is done: "After X, Y" (not "Then Y")
 _DONE_WITH = re.compile(
@@ -173,7 +204,7 @@ _USE_LAMP = re.compile(
 _THE_FOR_THEN = re.compile(r"\b(?<!of )the (?=([a-z]+) (?:it|them)\b)", re.IGNORECASE)
 # "X, but before you do that, Y" / "X, but first Y" inside a sentence: Y comes first ("Before that, Y.")
 _BUT_BEFORE = re.compile(
-    r"(?<=\w)\s*,?\s+but\s+(?:before\s+(?:that|this|(?:you\s+do|doing)\s+(?:that|this|so|it))|first)\s*,?\s+(?=[a-z])",
+    r"(?<=\w)\s*,?\s+(?:but|though|although)\s+(?:before\s+(?:that|this|(?:you\s+do|doing)\s+(?:that|this|so|it))|first)\s*,?\s+(?=[a-z])",
     re.IGNORECASE,
 )
 _FIRST_OPENER = re.compile(r"^\s*(?:first|firstly|start|begin|to\s+(?:start|begin))\b", re.IGNORECASE)
@@ -207,7 +238,8 @@ _RINSE_ADJ = re.compile(r"\b(a|an|the)\s+rinse(?:\s+off)?\s+(?=[a-z])", re.IGNOR
 _THEN_INSIDE = re.compile(
     r"(?<=\w)\s*,?\s+(?:and\s+)?(?:"
     r"(?:once|when|after)\s+(?:that's|that\s+is|it's|it\s+is|this\s+is|you're|you\s+are|you've|you\s+have)?"
-    r"\s*(?:done|finished|through)(?:\s+with\s+(?:that|it|this))?"
+    r"\s*(?:done|finished|through|there|in\s+place|handled|taken\s+care\s+of|out\s+of\s+the\s+way)"
+    r"(?:\s+with\s+(?:that|it|this))?"
     r"|after\s+(?:that|this)|afterwards?|following\s+that"
     r")\s*,?\s+(?=[a-z])",
     re.IGNORECASE,
@@ -243,8 +275,14 @@ def normalize(text: str) -> str:
     text = re.sub(r"(?<=[a-z])\.(?=[A-Za-z])", ". ", text)
     text = re.sub(r"\s*\([^)]*\)", "", text)  # parenthetical remarks: "(where the red block is now)"
     text = without_connective_to(text)
+    text = _AS_SOON_AS.sub(lambda m: "Once" if m.group(0)[0] == "A" else "once", text)
+    text = _CONNECTIVE_YOUVE.sub(r"\1 you have", text)
+    text = _BOTH_AFTER_LIST.sub(r"\1 ", _BOTH_BEFORE_LIST.sub("", text))
+    text = _WHERE_IT_IS.sub("from ", text)
+    text = _ONLY_AFTER_SHOULD.sub(lambda m: f"{'A' if m.group(0)[0] == 'O' else 'a'}fter {m[2]}, ", text)
     # "Do not Y until (you) X" states the order of "After X, Y" (ANNOTATION_GUIDE.md)
     text = _UNTIL.sub(lambda m: f"{'A' if m.group(1) == 'D' else 'a'}fter {m.group(3)}, {m.group(2)}", text)
+    text = _NOT_BEFORE.sub(", but only after ", text)
     text = _STATES_LISTED.sub(r"\1 ", text)  # "a chilled, cut slice": one noun phrase, not two clauses
     text = _STATES_JOINED.sub(r"\1 ", text)
     text = _OFF.sub(r"\1", text)  # "a rinsed off knife", "cool off a plate": the state, not a direction
@@ -340,10 +378,12 @@ def split_sentences(text: str) -> list[tuple[str, int]]:
 def after_ref(body: str) -> tuple[str, str] | None:
     """ "After placing the plunger, soap bottle, and towel, put ...": (reference, rest) split at the comma
     that is followed by a verb (references may contain commas)."""
-    m = re.match(r"^(?:only\s+)?(?:after|once|when|following|upon)\s+", body, flags=re.I)
+    m = re.match(
+        r"^(?:(?:only|right|just|immediately)\s+)?(?:after|once|when|following|upon)\s+", body, flags=re.I
+    )
     if not m or re.match(
         r"^(?:completing|finishing|doing|all|these|those|the\s+previous|the\s+above|both|"
-        r"everything|each|every|that|this|it|done|finished|complete|completed|over|through|you|we)\b",
+        r"everything|each|every|that|this|it|which|done|finished|complete|completed|over|through|you|we)\b",
         body[m.end() :],
         flags=re.I,
     ):

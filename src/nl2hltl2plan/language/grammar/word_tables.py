@@ -417,13 +417,27 @@ THEN, FINALLY, FIRST, FREE, BEFORE_PREV, AFTER_ALL, AFTER_REF, BEFORE_REF, NOCON
     "none",
 )
 IN_ORDER = "in_order"  # "..., in that order": the sentence's tasks in the order they are named
-_DONE = r"(?:done|finished|complete|completed|over|through|in\s+place)"
+IN_REVERSE = "in_reverse"  # "..., in reverse order": the sentence's tasks last named first
+# "whenever convenient", "at whatever point suits you", "at your convenience": a free task
+_WHENEVER = (
+    r"whenever(?:\s+(?:convenient|possible|you\s+(?:like|want|wish|can)|it\s+suits\s+you|you\s+get\s+(?:a|the)\s+chance))?|"
+    r"at\s+(?:any|whatever|some)\s+point(?:\s+(?:that\s+)?(?:suits\s+you|you\s+like|you\s+want|works\s+for\s+you))?|"
+    r"at\s+your\s+(?:convenience|leisure)"
+)
+_DONE = (
+    r"(?:done|finished|finish|complete|completed|over|through|in\s+place|handled|taken\s+care\s+of|"
+    r"out\s+of\s+the\s+way)"
+)
 LEADING: list[tuple[re.Pattern[str], str]] = [
     (
         re.compile(
             r"^(?:and\s+)?(?:then|next|afterwards?|after\s+that|after\s+this|after\s+which|subsequently|"
             r"later(?:\s+on)?|following\s+(?:that|this)|thereafter|followed\s+by|"
-            rf"(?:once|when|after)\s+(?:that|this|it|you)?\s*(?:is\s+|are\s+|have\s+|has\s+)?{_DONE}|"
+            r"(?:with\s+)?(?:that|this)\s+(?:done|finished|completed|out\s+of\s+the\s+way)|"
+            r"having\s+(?:done|finished|completed)\s+(?:that|this|so)|"
+            r"(?:second|third|fourth|fifth)(?:ly)?(?=\s*[,:])|"
+            rf"(?:once|when|after)\s+(?:(?:that|this|it|you)(?:'s|'re|'ve)?)?\s*(?:is\s+|are\s+|have\s+|has\s+)?{_DONE}"
+            r"(?:\s+(?:with\s+)?(?:that|this|it|so)\b)?|"
             r"after\s+(?:doing|finishing|completing)\s+(?:that|this|it))\b\s*[,:]?\s*",
             _F,
         ),
@@ -431,13 +445,14 @@ LEADING: list[tuple[re.Pattern[str], str]] = [
     ),
     (
         re.compile(
-            r"^(?:finally|lastly|last|in\s+the\s+end|at\s+the\s+end|to\s+finish(?:\s+up)?|eventually|"
-            r"as\s+a\s+final\s+step)\b\s*[,:]?\s*",
+            r"^(?:finally|lastly|last(?:\s+of\s+all)?|in\s+the\s+end|at\s+the\s+end|to\s+finish(?:\s+up)?|eventually|"
+            r"to\s+(?:wrap\s+(?:it\s+|things\s+|everything\s+)?up|conclude|end|close(?:\s+out)?)|"
+            r"as\s+(?:a|the)\s+(?:final|last)\s+(?:step|thing|task|job))\b\s*[,:]?\s*",
             _F,
         ),
         FINALLY,
     ),
-    (re.compile(r"^(?:finish|end)\s+(?:up\s+)?(?:by|with)\s+", _F), FINALLY),
+    (re.compile(r"^(?:finish|end|wrap\s+(?:things\s+)?up|conclude)\s+(?:up\s+)?(?:by|with)\s+", _F), FINALLY),
     (
         re.compile(
             r"^(?:first(?:ly)?(?:\s+of\s+all)?|to\s+(?:begin|start)(?:\s+with)?|initially|before\s+anything\s+else)"
@@ -450,14 +465,15 @@ LEADING: list[tuple[re.Pattern[str], str]] = [
     (
         re.compile(
             r"^(?:in\s+any\s+order|at\s+any\s+time|anytime|simultaneously|meanwhile|in\s+the\s+meantime|"
-            r"at\s+the\s+same\s+time|in\s+parallel|independently|concurrently|whenever(?:\s+you\s+like)?)\b\s*[,:]?\s*",
+            rf"at\s+the\s+same\s+time|in\s+parallel|independently|concurrently|{_WHENEVER})\b\s*[,:]?\s*",
             _F,
         ),
         FREE,
     ),
     (
         re.compile(
-            r"^(?:prior\s+to\s+(?:that|this)|before\s+(?:that|this|doing\s+(?:that|this|so))|beforehand)"
+            r"^(?:(?:prior|previous)\s+to\s+(?:that|this)|(?:before|ahead\s+of)\s+(?:that|this|doing\s+(?:that|this|so))|"
+            r"beforehand)"
             r"\b\s*[,:]?\s*",
             _F,
         ),
@@ -472,23 +488,39 @@ LEADING: list[tuple[re.Pattern[str], str]] = [
         AFTER_ALL,
     ),
     (re.compile(r"^(?:while|during|as)\b[^,]*,\s*", _F), NOCONSTRAINT),
-    (re.compile(r"^(?:only\s+)?(?:after|once|when|following|upon)\s+(?P<ref>[^,]+),\s*", _F), AFTER_REF),
-    (re.compile(r"^(?:just\s+)?(?:before|prior\s+to)\s+(?P<ref>[^,]+),\s*", _F), BEFORE_REF),
+    (
+        re.compile(
+            r"^(?:(?:only|right|just|immediately)\s+)?(?:after|once|when|following|upon)\s+(?P<ref>[^,]+),\s*",
+            _F,
+        ),
+        AFTER_REF,
+    ),
+    (re.compile(r"^(?:just\s+)?(?:before|prior\s+to|ahead\s+of)\s+(?P<ref>[^,]+),\s*", _F), BEFORE_REF),
     (
         re.compile(
             r"^(?:please|let'?s|let\s+us|now|next\s+up|you\s+should|you\s+need\s+to|you\s+must|we\s+need\s+to|"
-            r"i\s+want\s+you\s+to|can\s+you|could\s+you|go\s+and|also|additionally|in\s+addition|separately|and)\b\s*[,:]?\s*",
+            r"i\s+want\s+you\s+to|can\s+you|could\s+you|would\s+you|will\s+you|kindly|go\s+and|also|additionally|"
+            r"in\s+addition|separately|moreover|furthermore|besides|on\s+top\s+of\s+(?:that|this)(?=\s*,)|"
+            r"alright|all\s+right|ok(?:ay)?|(?:thanks|thank\s+you|cheers)(?=\s*(?:[,!]|$))|and)\b\s*[,:]?\s*",
             _F,
         ),
         "",
     ),
     (re.compile(r"^to\s+(?=[a-z])", _F), ""),
+    # "Your first job: X, Y, the order is up to you": a heading of the list, no order of its own
+    (re.compile(r"^(?:your|the)\s+first\s+(?:job|task|chore|errand)\s*:\s*", _F), ""),
 ]
 _FREE_T = (
     r"(?:at\s+any\s+time|in\s+any\s+order|any\s+order|in\s+any\s+sequence|anytime|any\s+time|whenever(?:\s+you\s+like)?|"
-    r"in\s+whatever\s+order|whatever\s+order\s+(?:works|is\s+fine)|in\s+no\s+particular\s+order|in\s+parallel|simultaneously|concurrently|independently)"
+    r"in\s+whatever\s+order(?:\s+you\s+(?:like|want|prefer))?|whatever\s+order\s+(?:works|is\s+fine)|in\s+no\s+(?:particular|specific|set)\s+order|"
+    r"(?:the\s+)?order\s+is\s+(?:up\s+to\s+you|your\s+call|yours\s+to\s+choose)|in\s+parallel|simultaneously|concurrently|"
+    r"independently|at\s+your\s+(?:convenience|leisure))"
 )
 TRAILING: list[tuple[re.Pattern[str], str]] = [
+    (re.compile(r"\s*,?\s*(?:in\s+(?:the\s+)?reverse(?:\s+order)?|backwards)\s*$", _F), IN_REVERSE),
+    # a closing courtesy: ", cheers", ", thanks!", ", thank you"
+    (re.compile(r"\s*,?\s*(?:cheers|thanks(?:\s+a\s+lot)?|thank\s+you(?:\s+very\s+much)?|please)\s*$", _F),
+     ""),
     (re.compile(rf"\s*,?\s*(?:also\s+)?{_FREE_T}\s*$", _F), FREE),
     (
         re.compile(
@@ -501,7 +533,8 @@ TRAILING: list[tuple[re.Pattern[str], str]] = [
     (
         re.compile(
             r"\s*,?\s*(?:(?:this\s+)?(?:should|must|has\s+to|have\s+to|needs?\s+to|can\s+only|is\s+to)\s+be\s+"
-            r"(?:done|completed|performed|finished|placed|put|moved|carried\s+out)\s+)?(?:only\s+)?"
+            r"(?:done|completed|performed|finished|placed|put|moved|carried\s+out)\s+)?(?:but\s+)?"
+            r"(?:(?:only|right|just|immediately)\s+)?"
             r"(?P<rel>after|before|once|when(?=\s+\w+ing\b))\s+(?P<ref>(?:\w+ing\b|the\s|you\s|having\s|all\s|every|each|"
             r"finishing|completing).+)$",
             _F,
@@ -519,7 +552,7 @@ TRAILING: list[tuple[re.Pattern[str], str]] = [
     (re.compile(r"\s*,?\s*(?:last|lastly|finally|at\s+the\s+end|in\s+the\s+end)\s*$", _F), FINALLY),
     (
         re.compile(
-            r"\s*,?\s*(?:in\s+(?:that|this|the\s+same|the\s+given|the\s+listed)\s+(?:order|sequence)|"
+            r"\s*,?\s*(?:(?:strictly|exactly|precisely)\s+)?(?:in\s+(?:that|this|the\s+same|the\s+given|the\s+listed)\s+(?:order|sequence)|"
             r"in\s+the\s+order\s+(?:given|listed|stated|named))(?:\s*,?\s*please)?\s*$",
             _F,
         ),
