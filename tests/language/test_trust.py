@@ -270,3 +270,16 @@ def test_the_word_accounting_prefers_the_phrase_that_names_the_slots_type():
     # "the shelf in the fridge" is a part of the fridge
     apple = [task("place", "Apple", "Fridge")]
     assert account("Put the apple on the top shelf in the fridge", apple, []) == []
+
+
+def test_a_destination_before_an_order_word_is_no_landmark_of_the_next_task():
+    # "in the drawer before the paper goes on the shelf": the drawer is the cloth's destination, not a
+    # description of where the shelf is; a task that drops it must leave "drawer" unread
+    cloth, paper = task("place", "Cloth", "Cabinet", id="A"), task("place", "ToiletPaper", "Shelf", id="B")
+    for text in (
+        "put the cloth in the cabinet; the cloth goes in the drawer before the toilet paper goes on the shelf",
+        "put the cloth in the cabinet, then the cloth in the drawer before you put the toilet paper on the shelf",
+    ):
+        assert "drawer" in [u.words for u in account(text, [cloth, paper], [("A", "B")])]
+    # near miss: a place that says where a thing is, inside one clause, stays a landmark
+    assert account("take the cloth from the drawer and put it in the cabinet", [cloth], []) == []

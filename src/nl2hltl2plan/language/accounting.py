@@ -237,9 +237,14 @@ def _walked_to(toks: list[tuple[str, int, int]], start: int) -> bool:
     return to and j >= 0 and bool(stems(toks[j][0]) & NAVIGATION)
 
 
+_CLAUSE_BOUND = re.compile(r"[.;!?]|\b(?:and|then|but|before|after|once|until|till|while|whenever)\b")
+
+
 def _clause_span(text: str, at: int) -> tuple[int, int]:
-    """The clause around character `at`: between full stops, semicolons, "and" and "then"."""
-    bounds = [0, *(x.start() for x in re.finditer(r"[.;!?]|\b(?:and|then)\b", text.lower())), len(text)]
+    """The clause around character `at`: between full stops, semicolons, "and", "then", "but" and the
+    order words that open a clause of another task ("the cloth in the drawer before the paper goes on the
+    shelf": the drawer is no description of where the shelf is)."""
+    bounds = [0, *(x.start() for x in _CLAUSE_BOUND.finditer(text.lower())), len(text)]
     start = max(b for b in bounds if b <= at)
     return start, min(b for b in bounds if b > at)
 
