@@ -283,3 +283,12 @@ def test_a_destination_before_an_order_word_is_no_landmark_of_the_next_task():
         assert "drawer" in [u.words for u in account(text, [cloth, paper], [("A", "B")])]
     # near miss: a place that says where a thing is, inside one clause, stays a landmark
     assert account("take the cloth from the drawer and put it in the cabinet", [cloth], []) == []
+
+
+@needs_data
+def test_a_named_object_is_never_swapped_for_another_that_fits_the_destination(capsys):
+    # FloorPlan303 has a baseball bat and a tennis racket; a desk takes only the racket
+    assert main(["plan", "put the baseball bat on the desk", "--world", "FloorPlan303"]) == 2
+    assert "Desk does not accept BaseballBat" in capsys.readouterr().err
+    assert main(["plan", "put the baseball bat on the bed", "--world", "FloorPlan303", "--json"]) == 0
+    assert json.loads(capsys.readouterr().out)["tasks"][0]["object"] == ["BaseballBat"]
