@@ -63,8 +63,8 @@ class DraftBuilder:
         """Read the clauses of one sentence into drafts and units, then apply the sentence's markers."""
         said = split_clauses(s.body)
         # "the knife is in the sink": a statement, not a request (before a verb is lent to it by gapping)
-        self.b.unparsed += [c[0] for c in said if _states_where(c[0])]
-        said = [c for c in said if not _states_where(c[0])]
+        self.b.unparsed += [c[0] for c in said if states_where(c[0])]
+        said = [c for c in said if not states_where(c[0])]
         clauses = expand_gapping(said, self.last_verb, self.last_dest, gap_base=100 * s.index)
         st = _SentenceState(s, len(self.out.units))
         for clause in clauses:
@@ -267,7 +267,7 @@ _COPULA_PLACE = re.compile(
 )
 
 
-def _states_where(c_text: str) -> bool:
+def states_where(c_text: str) -> bool:
     """A clause with no verb of ours that says where a thing is ("the knife is in the sink", "the moment the
     fork is on the table"): it states no task, and reading it as a placement would be a guess."""
     words = tokens(c_text)

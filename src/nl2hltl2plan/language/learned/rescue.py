@@ -17,6 +17,7 @@ import difflib
 import re
 from functools import cache
 
+from nl2hltl2plan.language.grammar.drafts import states_where
 from nl2hltl2plan.language.grammar.sentences import normalize
 from nl2hltl2plan.language.grounding import camel_words, find_mentions, lexicon
 from nl2hltl2plan.language.learned.slot_model import SlotModel, SlotPrediction
@@ -120,8 +121,8 @@ def rewrite(
     changed = False
     for clause in failed_clauses(unparsed):
         at = text.lower().find(clause.lower())
-        if at < 0 or not clause.strip():
-            continue
+        if at < 0 or not clause.strip() or states_where(clause):
+            continue  # "the mug is in the sink" says where it is: no request to read back
         pred = model.predict([clause], types)[0]
         if pred.kind[0][1] < min_kind or not _names_object(clause, pred):
             continue
