@@ -277,8 +277,10 @@ def test_a_destination_before_an_order_word_is_no_landmark_of_the_next_task():
     # description of where the shelf is; a task that drops it must leave "drawer" unread
     cloth, paper = task("place", "Cloth", "Cabinet", id="A"), task("place", "ToiletPaper", "Shelf", id="B")
     for text in (
-        "put the cloth in the cabinet; the cloth goes in the drawer before the toilet paper goes on the shelf",
-        "put the cloth in the cabinet, then the cloth in the drawer before you put the toilet paper on the shelf",
+        "put the cloth in the cabinet; the cloth goes in the drawer before the toilet paper goes on the"
+        " shelf",
+        "put the cloth in the cabinet, then the cloth in the drawer before you put the toilet paper on"
+        " the shelf",
     ):
         assert "drawer" in [u.words for u in account(text, [cloth, paper], [("A", "B")])]
     # near miss: a place that says where a thing is, inside one clause, stays a landmark
