@@ -1,0 +1,196 @@
+"""Spoken and instructor styles of the handover instructions, normalised before the reader's word tables
+(`handover_phrases.normalise` calls `unspoken` on the lower-cased, typo-mended sentence).
+
+Three general steps, each removing only words that carry no block, place, arm, count, negation, order or
+time (a word that might carry one is left for the reader, which reads it or refuses naming it):
+
+- discourse fillers and hedges: hesitations ("um", "uh", "er"), "you know", "basically", "yeah",
+  interjections that open a clause or tag its end ("okay so", "right,", "..., alright?", "oh and"),
+  "just" before a verb ("just drop them", never "just the red block"), a hedge on the whole request
+  ("i think", "if possible,", "it would be best if you could", "maybe" or "ideally" before a verb or rule);
+- self-corrections: a phrase said again after a hesitation or "i mean" / "sorry" ("the three, uh, the
+  three objects", "to i, er, region i") is read once, in its second wording; a correction that says
+  something else ("on g, i mean h") is refused, naming it: the reader never guesses which was meant;
+- second-person narration read as commands: "you'll put", "you want to place", "your job is to",
+  "what we're going to do is", "in this exercise you move", "you start by placing" (first),
+  "you may not / you're not allowed to" (do not), and a topic taken up by a pronoun ("the pillars, they
+  need to go ...").
+"""
+
+from __future__ import annotations
+
+import re
+
+from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.language.handover_words import GERUND_VERBS, NEGATED_GERUNDS, VERB
+
+# contractions spelled out first, so that each rule below has one form to match
+_CONTRACTIONS = (
+    (r"\bcan\s*'\s*t\b", "cannot"),
+    (r"\bwon\s*'\s*t\b", "will not"),
+    (r"n\s*'\s*t\b", " not"),
+    (r"\b(you|we|they|i)\s*'\s*ll\b", r"\1 will"),
+    (r"\b(you|we|they)\s*'\s*re\b", r"\1 are"),
+    (r"\b(you|we|they|i)\s*'\s*ve\b", r"\1 have"),
+    (r"\b(you|we|i)\s*'\s*d\b", r"\1 would"),
+    (r"\bi\s*'\s*m\b", "i am"),
+)
+_HESITATION = r"(?:u+h+m*|u+m+|e+r+m*|hmm+|mm+|ah+)"
+_INTERJECTION = r"(?:okay|ok|alright|all\s+right|right|so|well|now|oh|hi|hey|hello|listen|look|yeah|yep|yup)"
+_MARKER = r"(?:i\s+mean|i\s+meant|sorry|or\s+rather|no\s+wait|wait(?=\s*,)|~)"
+# words that a restated phrase may add or leave out without saying something else
+_RESTATED_FREELY = frozenset({"the", "region", "regions", ","})
+_VERB_AFTER_SUBJECT = r"(?:goes|go|comes|is|are|must|should|has|have|needs?|gets?|will|can|may)"
+_OPEN = r"(?:and|or|the|a|to|on|onto|in|into|of|at|is|are|be|,)"
+_GERUNDS = GERUND_VERBS | NEGATED_GERUNDS | {"placing": "place", "returning": "return"}
+_VERB_OR_RULE = rf"(?:{VERB}|exchange|swap|fill|touch|keep|leave|do\s+not|no|nothing|never|make|be)\b"
+
+# fillers and hedges that carry no meaning, each only in the place where it cannot carry one
+_FILLERS: tuple[tuple[str, str], ...] = (
+    (rf"\b{_HESITATION}\b", " , ~ , "),  # a soft correction marker: what follows may restate what went before
+    (r"(^|,)\s*you\s+know\s*(?=,|$)", r"\1"),
+    (r"\b(?:basically|literally|honestly|yeah|yep|yup)\b", " , "),
+    (r"\bkind\s+of\b(?=\s+(?:" + VERB + r")\b)", " "),
+    (r"\boh\b", " , "),
+    (r"\b(?:got\s+it|you\s+see|understood|all\s+good)\s*$", " "),
+    # a tag at the end of a clause ("..., right?", "..., okay") or interjections opening one
+    (rf",\s*{_INTERJECTION}\s*$", " "),
+    (rf"(^|,|\band\b)\s*(?:{_INTERJECTION}\s*(?:,\s*|\s+(?={_INTERJECTION}\b)|\s+(?=so\b)))+", r"\1 "),
+    (
+        r"^\s*(?:so|now|okay|ok|alright|well)\s+(?=what\b|here\b|the\b|all\b|first\b|your\b|you\b|we\b|in\b)",
+        " ",
+    ),
+    # "just drop all three blocks", "just make sure": "just" before a verb ("just the red block" is left)
+    (rf"\b(please|you|we|to|and)\s+like\s+(?=(?:{VERB}|swap|exchange)\b)", r"\1 "),  # "can you like swap ..."
+    (rf"\b(?:just|simply)\s+(?=(?:{VERB}|stick|make|drop|swap|exchange|keep)\b)", " "),
+    # a hedge on the whole request
+    (r"^\s*(?:i|we)\s+(?:think|guess|suppose|reckon|believe)\s+(?:that\s+)?", " "),
+    (r"^\s*if\s+(?:possible|you\s+can|you\s+could)\s*,", " "),
+    (r"\s*,?\s*\bif\s+(?:possible|you\s+can)\s*$", " "),
+    (r"\bit\s+would\s+be\s+(?:best|great|good|nice|ideal)\s+if\s+you\s+(?:could|would|can)\b", "please"),
+    (r"^\s*(?:i|we)\s+would\s+(?:probably\s+|maybe\s+)?have\s+you\s+", "please "),
+    (rf"\b(?:probably|maybe|perhaps|ideally|preferably)\s+(?={_VERB_OR_RULE}|should\b|must\b)", " "),
+    (r"\btry\s+not\s+to\b", "do not"),
+    (rf"\btry\s+to\s+(?={VERB}\b)", " "),
+    # a closer that adds nothing: "and that's all there is to it", "that's it"
+    (r"(?:^|,|\band\b)\s*that\s*(?:'\s*)?s\s+(?:all|it)(?:\s+there\s+is\s+to\s+it)?\s*$", " "),
+    (r"(?:^|,)\s*that\s*(?:'\s*)?s\s+the\s+only\s+thing\s*$", " "),
+    (
+        r"^\s*(?:the\s+)?(?:one\s+|only\s+)?thing\s+(?:to\s+(?:watch|remember|note)(?:\s+out\s+for)?\s+)?is\s*(?:that\b|,)",
+        " ",
+    ),
+    (r"^\s*(?:and\s+)?(?:remember|notice|note)\s*,", " "),
+    (r"^\s*(?:and\s+)?notice\s+that\b", " "),
+)
+
+# second-person narration and framing, read as the command it describes
+_SUBJECT = r"(?:you|we)"
+_WILL = (
+    r"(?:\s+will|\s+shall|\s+are\s+going\s+to|\s+get\s+to|\s+want\s+to|\s+need\s+to|\s+have\s+to|\s+must|\s+should|"
+    r"\s+can)?"
+)
+_NARRATION: tuple[tuple[str, str], ...] = (
+    (
+        r"^\s*(?:in|for)\s+this\s+(?:task|exercise|run|one|activity|lesson|part|round|session|step)\s*,?\s*",
+        " ",
+    ),
+    (r"^\s*here\s*,?\s+(?=(?:the|all|we|you)\b)", " "),
+    (
+        rf"\bwhat\s+{_SUBJECT}{_WILL}\s+(?:be\s+)?do(?:ing)?\s+(?:here\s+|now\s+|today\s+|next\s+)?is\s+(?:to\s+)?",
+        "please ",
+    ),
+    (r"\bwhat\s+(i|we)\s+(?:want|need|would\s+like)\s+is\s*,?\s*(?:for\s+)?", r"\1 want "),
+    (r"^\s*(?:so\s+)?(?:here\s+)?(?:we|you)\s+have\s+(?=(?:the\s+)?(?:three|two|\d)\s+)", "there are "),
+    # "once you have done that": once that is done
+    (
+        rf"\b(once|when|after)\s+{_SUBJECT}\s+(?:have\s+|are\s+)?(?:done|finished|completed)\s+"
+        r"((?:all\s+(?:of\s+)?)?(?:this|that|these|everything))\b",
+        r"\1 \2 is done",
+    ),
+    (rf"\b{_SUBJECT}\s+(?:start|begin)\s+by\s+", "first "),
+    (r"^\s*(?:start|begin)\s+by\s+", "first "),
+    # "you will be moving": the verb
+    *(
+        (rf"\b{_SUBJECT}{_WILL}\s+be\s+(?:(first|also|then)\s+)?{gerund}\b", rf"\1 {verb}")
+        for gerund, verb in _GERUNDS.items()
+    ),
+    (
+        rf"(^|,|;|\band\b|\bthen\b|\bfirst\b)\s*{_SUBJECT}(?:\s+will|\s+shall|\s+must|\s+may|\s+should)?\s+(?:not\s+|never\s+)"
+        rf"(?:be\s+)?(?:allowed\s+to\s+)?(?=(?:{VERB}|touch|place|drop|set|leave)\b)",
+        r"\1 do not ",
+    ),
+    (
+        rf"(^|,|;|\band\b|\bthen\b|\bfirst\b)\s*{_SUBJECT}\s+(?:cannot|can\s+not)\s+(?=(?:{VERB}|touch)\b)",
+        r"\1 do not ",
+    ),
+    (
+        rf"(^|,|;|\band\b|\bthen\b|\bfirst\b)\s*{_SUBJECT}{_WILL}\s+(?:(first|also|then|now)\s+)?"
+        rf"(?=(?!want\b|need\b)(?:{VERB}|exchange|swap|fill|touch)\b)",  # "we want them on ...": a need
+        r"\1 \2 ",
+    ),
+    # a topic taken up by a pronoun: "the pillars, they need to go ...", "the yellow block, that one ..."
+    (
+        r"(^|,|\band\b)\s*((?:the\s+)?(?:(?:all|three|two|red|blue|yellow|and|both)\s+){0,4}"
+        r"(?:blocks?|pillars?|objects?|ones?))\s*,\s*(?:they|it|that\s+one|those(?:\s+ones)?|these)\s+(?=\w)",
+        r"\1 \2 ",
+    ),
+    (r"\b(?:can|could)\s+we\s+", "please "),
+    (r"\b(?:stick|shove|plonk|chuck|bung)\b", "put"),
+)
+
+
+def unspoken(text: str) -> str:
+    """The sentence with its spoken fillers, hedges, repeated phrases and narration normalised away (see
+    the module docstring); a self-correction that says something else is refused."""
+    for pattern, replacement in _CONTRACTIONS:
+        text = re.sub(pattern, replacement, text)
+    for pattern, replacement in _FILLERS:
+        text = re.sub(pattern, replacement, text)
+    text = re.sub(r"(\s*,)+", " ,", _said_once(text))  # the commas left where fillers were
+    for pattern, replacement in _NARRATION:
+        text = re.sub(pattern, replacement, text)
+    text = re.sub(r"(\s*,)+", " ,", text)  # the commas left where fillers were
+    text = re.sub(r"^\s*,|,\s*$", " ", text)
+    text = re.sub(r"\b(the|a|and|to|on|in)\s+\1\b", r"\1", text)  # a stutter: "the the"
+    return " ".join(text.split())
+
+
+def _said_once(text: str) -> str:
+    """A phrase said again after a hesitation or a correction marker, in other words that add or drop only
+    `_RESTATED_FREELY`, is kept once (its second wording); after a marker ("i mean", "sorry") that is
+    followed by something else the sentence is refused; a hesitation followed by something else is dropped."""
+    while marker := re.search(rf"(?:\s*,)*\s*(?<!\w){_MARKER}(?!\w)(?:\s*,)*\s*", text):
+        before, after = text[: marker.start()].split(), text[marker.end() :].split()
+        if not before:  # "sorry, could you ...": politeness
+            text = " ".join(after)
+            continue
+        found = _restated(before, after)
+        if found is None and marker.group().strip(" ,") != "~":
+            raise HTTError(
+                f"a self-correction in {' '.join(before[-4:] + [marker.group().strip(' ,')] + after[:4])!r}: "
+                "say what is meant once"
+            )
+        if found is None:  # a hesitation inside a phrase ("on g, h and, uh, i") leaves no comma behind
+            text = " ".join(before + after if re.fullmatch(_OPEN, before[-1]) else before + [","] + after)
+            continue
+        cut, length = found
+        # "the red block, i mean the red block, goes ...": no comma between the subject and its verb
+        if after[length : length + 1] == [","] and re.fullmatch(
+            _VERB_AFTER_SUBJECT, "".join(after[length + 1 :][:1])
+        ):
+            after = after[:length] + after[length + 1 :]
+        text = " ".join(before[:cut] + after)
+    return text
+
+
+def _restated(before: list[str], after: list[str]) -> tuple[int, int] | None:
+    """Where the phrase that `after` begins by saying again starts in `before` (the longest such end of
+    `before`, compared without `_RESTATED_FREELY`), and how many words of `after` say it; or None."""
+    for n in range(min(8, len(before)), 0, -1):
+        said = [w for w in before[-n:] if w not in _RESTATED_FREELY]
+        if not said or before[-n] in _RESTATED_FREELY:
+            continue
+        content = [i for i, w in enumerate(after) if w not in _RESTATED_FREELY][: len(said)]
+        if [after[i] for i in content] == said:
+            return len(before) - n, content[-1] + 1
+    return None
