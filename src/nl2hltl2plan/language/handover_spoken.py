@@ -39,7 +39,7 @@ _HESITATION = r"(?:u+h+m*|u+m+|e+r+m*|hmm+|mm+|ah+)"
 _INTERJECTION = r"(?:okay|ok|alright|all\s+right|right|so|well|now|oh|hi|hey|hello|listen|look|yeah|yep|yup)"
 _MARKER = r"(?:i\s+mean|i\s+meant|sorry|or\s+rather|no\s+wait|wait(?=\s*,)|~)"
 # words that a restated phrase may add or leave out without saying something else
-_RESTATED_FREELY = frozenset({"the", "region", "regions", ","})
+_RESTATED_FREELY = frozenset({"the", "region", "regions", "block", "blocks", "one", "ones", ","})
 _VERB_AFTER_SUBJECT = r"(?:goes|go|comes|is|are|must|should|has|have|needs?|gets?|will|can|may)"
 _OPEN = r"(?:and|or|the|a|to|on|onto|in|into|of|at|is|are|be|,)"
 _GERUNDS = GERUND_VERBS | NEGATED_GERUNDS | {"placing": "place", "returning": "return"}
@@ -115,7 +115,7 @@ _NARRATION: tuple[tuple[str, str], ...] = (
         for gerund, verb in _GERUNDS.items()
     ),
     (
-        rf"(^|,|;|\band\b|\bthen\b|\bfirst\b)\s*{_SUBJECT}(?:\s+will|\s+shall|\s+must|\s+may|\s+should)?\s+(?:not\s+|never\s+)"
+        rf"(^|,|;|\band\b|\bthen\b|\bfirst\b)\s*{_SUBJECT}(?:\s+will|\s+shall|\s+must|\s+may|\s+should|\s+are)?\s+(?:not\s+|never\s+)"
         rf"(?:be\s+)?(?:allowed\s+to\s+)?(?=(?:{VERB}|touch|place|drop|set|leave)\b)",
         r"\1 do not ",
     ),
@@ -135,6 +135,13 @@ _NARRATION: tuple[tuple[str, str], ...] = (
         r"\1 \2 ",
     ),
     (r"\b(?:can|could)\s+we\s+", "please "),
+    # said twice in one clause: "then put the yellow block back on g afterwards"
+    (r"(\bthen\b[^,]*?)\s*,?\s*\bafterwards?\s*$", r"\1"),
+    # "..., each one on its own region": one block per region
+    (
+        r",\s*each(?:\s+one)?\s+(?:on|in|to|gets)\s+(?:its|their)\s+own\s+(?:region|spot|place)s?\b",
+        ", one per region",
+    ),
     (r"\b(?:stick|shove|plonk|chuck|bung)\b", "put"),
 )
 
@@ -192,5 +199,8 @@ def _restated(before: list[str], after: list[str]) -> tuple[int, int] | None:
             continue
         content = [i for i, w in enumerate(after) if w not in _RESTATED_FREELY][: len(said)]
         if [after[i] for i in content] == said:
-            return len(before) - n, content[-1] + 1
+            length = content[-1] + 1  # with the words that end the phrase ("the red one")
+            while after[length : length + 1] and after[length] in _RESTATED_FREELY - {","}:
+                length += 1
+            return len(before) - n, length
     return None
