@@ -7,8 +7,8 @@ one."""
 READ = {
     1: [
         # hesitations, "basically", "yeah", opening interjections and a closing tag
-        "Um, so, just move the three blocks over to the opposite side, okay, and, uh, the red block has to go "
-        "before the blue block.",
+        "Um, so, just move the three blocks over to the opposite side, okay, and, uh, the red block has to "
+        "go before the blue block.",
         "Okay so basically, yeah, move all three blocks to the opposite side, right? Red before blue.",
         # a phrase said again after "i mean", in other words ("block" / "one")
         "Yeah, move all three blocks to the opposite side, okay, and the red block, I mean the red one, goes "
@@ -17,11 +17,13 @@ READ = {
         "Move the three blocks to the opposite side and the red block has to be placed before the blue block "
         "and that's all there is to it.",
         # narration: "what we're going to do is", a framed rule ("the one thing to watch is that")
-        "Now, what we're going to do is move the three blocks to the opposite side. The one thing to watch is "
-        "that the red block has to be placed before the blue block.",
+        "Now, what we're going to do is move the three blocks to the opposite side. The one thing to watch "
+        "is that the red block has to be placed before the blue block.",
     ],
     2: [
         "Well, basically, the three blocks go on H, I and J, and, you know, only one block per region.",
+        "So the three blocks go into H, I and J, and you can't double up.",
+        "How about you put the three blocks on H, I and J, one each?",
         "In this task you'll put the three blocks on regions H, I and J. Keep in mind that each region can "
         "only hold one block.",
     ],
@@ -41,6 +43,11 @@ READ = {
         "If possible, could you transfer the three blocks to the opposite regions? Please don't touch the "
         "blue block until the red one has been touched, and then maybe put the yellow block back on G "
         "afterwards.",
+        # "hands off X until somebody's touched Y", "we're gonna"
+        "Alright, move all three blocks over to the opposite regions, but hands off the blue one until "
+        "somebody's touched the red one. Then put the yellow block back on G.",
+        "Move all three blocks to the opposite regions, hands off the blue block until the red block has "
+        "been touched, and then we're gonna put the yellow block back on G.",
         "You need to transfer the three blocks to the opposite regions. You may not touch the blue block "
         "until the red block has been touched. After you have done all of this, you put the yellow block "
         "back on region G.",
@@ -49,9 +56,14 @@ READ = {
         # "can you like swap", a topic taken up by "that one", "just needs to"
         "So, um, can you like swap the red and blue blocks? Red goes first. And the yellow block, that one "
         "just needs to get to the opposite side at some point, whenever.",
+        # the time before the subject, "gotta", "doesn't matter when" without "it"
+        "Swap red and blue, red first. At some point you also gotta move the yellow block to the opposite "
+        "side, doesn't matter when.",
+        "Why don't you swap red and blue, red first, and move the yellow block to the opposite side, doesn't "
+        "matter when?",
         # "what we want is for X to ..."
-        "Now what we want is for the red and blue blocks to swap places, and the red one is placed first. The "
-        "yellow block also has to end up on the opposite side, and it doesn't matter when.",
+        "Now what we want is for the red and blue blocks to swap places, and the red one is placed first. "
+        "The yellow block also has to end up on the opposite side, and it doesn't matter when.",
     ],
     6: [
         # a hesitation inside a list, a subject said again after "i mean"
@@ -99,9 +111,19 @@ NEAR_MISSES = {
         "block before the blue block.",
         "Okay, move all three blocks to the opposite side, and, uh, not yet the red block.",
     ],
+    2: [
+        "So the three blocks go into H, I and J, and you can double up.",  # not the one-block rule
+    ],
     3: [
         # "oh, and never ...": the rule after "oh" is kept (here on the target regions: no plan)
         "Right so, the pillars need to go over to E, F and G. Oh, and never put anything on E, F or G.",
+    ],
+    4: [
+        # "hands off" without "until": never touched (no plan), not the guard
+        "Move all three blocks over to the opposite regions. Hands off the blue one. Then put the yellow "
+        "block back on G.",
+        "Move all three blocks over to the opposite regions, hands off the red one until somebody's touched "
+        "the blue one, then put the yellow block back on G.",
     ],
     6: [
         "Place the three objects on G, H and I, I mean H, I and J, one per region, red before blue.",

@@ -34,6 +34,11 @@ _CONTRACTIONS = (
     (r"\b(you|we|they|i)\s*'\s*ve\b", r"\1 have"),
     (r"\b(you|we|i)\s*'\s*d\b", r"\1 would"),
     (r"\bi\s*'\s*m\b", "i am"),
+    # spoken spellings
+    (r"\bgonna\b", "going to"),
+    (r"\bwanna\b", "want to"),
+    (r"\bgotta\b", "have to"),
+    (r"\b(?:kinda|sorta)\b", " "),
 )
 _HESITATION = r"(?:u+h+m*|u+m+|e+r+m*|hmm+|mm+|ah+)"
 _INTERJECTION = r"(?:okay|ok|alright|all\s+right|right|so|well|now|oh|hi|hey|hello|listen|look|yeah|yep|yup)"
@@ -89,6 +94,7 @@ _WILL = (
     r"(?:\s+will|\s+shall|\s+are\s+going\s+to|\s+get\s+to|\s+want\s+to|\s+need\s+to|\s+have\s+to|\s+must|\s+should|"
     r"\s+can)?"
 )
+_ANCHOR = r"(^|,|;|\band\b|\bthen\b|\bfirst\b|\bat\s+(?:some|any)\s+(?:point|time)\b)"
 _NARRATION: tuple[tuple[str, str], ...] = (
     (
         r"^\s*(?:in|for)\s+this\s+(?:task|exercise|run|one|activity|lesson|part|round|session|step)\s*,?\s*",
@@ -115,26 +121,36 @@ _NARRATION: tuple[tuple[str, str], ...] = (
         for gerund, verb in _GERUNDS.items()
     ),
     (
-        rf"(^|,|;|\band\b|\bthen\b|\bfirst\b)\s*{_SUBJECT}(?:\s+will|\s+shall|\s+must|\s+may|\s+should|\s+are)?\s+(?:not\s+|never\s+)"
+        rf"{_ANCHOR}\s*{_SUBJECT}(?:\s+will|\s+shall|\s+must|\s+may|\s+should|\s+are)?\s+(?:not\s+|never\s+)"
         rf"(?:be\s+)?(?:allowed\s+to\s+)?(?=(?:{VERB}|touch|place|drop|set|leave)\b)",
         r"\1 do not ",
     ),
     (
-        rf"(^|,|;|\band\b|\bthen\b|\bfirst\b)\s*{_SUBJECT}\s+(?:cannot|can\s+not)\s+(?=(?:{VERB}|touch)\b)",
+        rf"{_ANCHOR}\s*{_SUBJECT}\s+(?:cannot|can\s+not)\s+(?=(?:{VERB}|touch)\b)",
         r"\1 do not ",
     ),
     (
-        rf"(^|,|;|\band\b|\bthen\b|\bfirst\b)\s*{_SUBJECT}{_WILL}\s+(?:(first|also|then|now)\s+)?"
+        rf"{_ANCHOR}\s*{_SUBJECT}(?:\s+(?:also|then|now|just))?{_WILL}\s+(?:(first|also|then|now)\s+)?"
         rf"(?=(?!want\b|need\b)(?:{VERB}|exchange|swap|fill|touch)\b)",  # "we want them on ...": a need
         r"\1 \2 ",
     ),
     # a topic taken up by a pronoun: "the pillars, they need to go ...", "the yellow block, that one ..."
     (
-        r"(^|,|\band\b)\s*((?:the\s+)?(?:(?:all|three|two|red|blue|yellow|and|both)\s+){0,4}"
+        r"(^|,)\s*(?:and\s+)?((?:the\s+)?(?:(?:all|three|two|red|blue|yellow|and|both)\s+){0,4}"
         r"(?:blocks?|pillars?|objects?|ones?))\s*,\s*(?:they|it|that\s+one|those(?:\s+ones)?|these)\s+(?=\w)",
         r"\1 \2 ",
     ),
     (r"\b(?:can|could)\s+we\s+", "please "),
+    (r"\b(?:how\s+about|why\s+do\s+not)\s+(?:you|we)\s+(?=(?:" + VERB + r"|swap|exchange)\b)", "please "),
+    # spoken idioms of the rules: "hands off X until ...", "you can't double up", "doesn't matter when"
+    # "until somebody's touched the red one": has touched
+    (r"\b([a-z]+)\s+s\s+(?=(?:touched|picked|grabbed|handled|lifted|done|finished)\b)", r"\1 has "),
+    (
+        r"\b(?:keep\s+(?:your|the|their)\s+)?hands\s+off\s+(?=(?:the\s+)?(?:red|blue|yellow)\b)",
+        "do not touch ",
+    ),
+    (r"\b(?:you\s+)?(?:cannot|can\s+not|do\s+not|no)\s+doubl(?:e|ing)\s+up\b", "one block per region"),
+    (r"(?<!\bit\s)\bdoes\s+not\s+matter\s+(?=when\b|at\s+what\b)", "it does not matter "),
     # said twice in one clause: "then put the yellow block back on g afterwards"
     (r"(\bthen\b[^,]*?)\s*,?\s*\bafterwards?\s*$", r"\1"),
     # "..., each one on its own region": one block per region
