@@ -22,6 +22,11 @@ READ = {
     ],
     2: [
         "Well, basically, the three blocks go on H, I and J, and, you know, only one block per region.",
+        # who is spoken to, and when; what the class should notice
+        "Alright class, in this exercise the three blocks go to H, I and J, and you'll notice each region "
+        "can only hold one block.",
+        "Today you're going to place the three blocks on regions H, I and J, one block per region.",
+        "Your task today: put the three blocks on H, I and J, and remember, one block per region.",
         "So the three blocks go into H, I and J, and you can't double up.",
         "How about you put the three blocks on H, I and J, one each?",
         "In this task you'll put the three blocks on regions H, I and J. Keep in mind that each region can "
@@ -113,6 +118,7 @@ NEAR_MISSES = {
     ],
     2: [
         "So the three blocks go into H, I and J, and you can double up.",  # not the one-block rule
+        "Okay everyone, you'll see the three blocks on H, I and J.",  # a scene, not a goal
     ],
     3: [
         # "oh, and never ...": the rule after "oh" is kept (here on the target regions: no plan)
@@ -144,10 +150,15 @@ NEAR_MISSES = {
 
 # a correction that says something else is refused as a correction, quoting it
 CORRECTIONS_REFUSED = {
+    # a correction that opens a sentence corrects the sentence before: never read as one more step
+    8: [
+        "Put the yellow block on I, then on G. No wait, put it on H. The red and blue blocks go to any empty "
+        "region at any time.",
+        "Put the yellow block on I. Sorry, put it on H, then on G. The red and blue blocks go to any empty "
+        "region at any time.",
+        "Put the yellow block on region I, sorry, region H, then on region G, and the red and blue blocks to "
+        "any empty region at any time.",
+    ],
     1: ["Move all three blocks to the opposite side, I mean the blue block, and red before blue."],
     6: ["Place the three objects on G, H and I, I mean H, I and J, one per region, red before blue."],
-    8: [
-        "Put the yellow block on region I, sorry, region H, then on region G, and the red and blue blocks to "
-        "any empty region at any time."
-    ],
 }

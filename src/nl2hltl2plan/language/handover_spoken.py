@@ -57,6 +57,7 @@ _FILLERS: tuple[tuple[str, str], ...] = (
     (r"\b(?:basically|literally|honestly|yeah|yep|yup)\b", " , "),
     (r"\bkind\s+of\b(?=\s+(?:" + VERB + r")\b)", " "),
     (r"\boh\b", " , "),
+    (r",\s*like\s*(?=,)", " "),  # "the blocks, like, go ..."
     (r"\b(?:got\s+it|you\s+see|understood|all\s+good)\s*$", " "),
     # a tag at the end of a clause ("..., right?", "..., okay") or interjections opening one
     (rf",\s*{_INTERJECTION}\s*$", " "),
@@ -70,6 +71,7 @@ _FILLERS: tuple[tuple[str, str], ...] = (
     (rf"\b(?:just|simply)\s+(?=(?:{VERB}|stick|make|drop|swap|exchange|keep)\b)", " "),
     # a hedge on the whole request
     (r"^\s*(?:i|we)\s+(?:think|guess|suppose|reckon|believe)\s+(?:that\s+)?", " "),
+    (r",\s*(?:i|we)\s+(?:guess|think|suppose|reckon)\s*$", " "),
     (r"^\s*if\s+(?:possible|you\s+can|you\s+could)\s*,", " "),
     (r"\s*,?\s*\bif\s+(?:possible|you\s+can)\s*$", " "),
     (r"\bit\s+would\s+be\s+(?:best|great|good|nice|ideal)\s+if\s+you\s+(?:could|would|can)\b", "please"),
@@ -84,8 +86,16 @@ _FILLERS: tuple[tuple[str, str], ...] = (
         r"^\s*(?:the\s+)?(?:one\s+|only\s+)?thing\s+(?:to\s+(?:watch|remember|note)(?:\s+out\s+for)?\s+)?is\s*(?:that\b|,)",
         " ",
     ),
-    (r"^\s*(?:and\s+)?(?:remember|notice|note)\s*,", " "),
-    (r"^\s*(?:and\s+)?notice\s+that\b", " "),
+    # what a teacher asks the class to notice: "remember, ...", "you'll notice each region ..."
+    (r"(^|,)\s*(?:and\s+)?(?:remember|notice|note)\s*,", r"\1 "),
+    (
+        r"(^|,|\band\b)\s*(?:you\s+(?:will|may|can|should|might)\s+)?(?:(?:notice|see)\s+that\b|notice\s+(?=(?:each|every|only|no|nothing|none)\b))",
+        r"\1 ",
+    ),  # not "you'll see the red block on g": a scene, not a rule
+    # who is spoken to, and when: "alright class,", "okay everyone,", "today you ...", "your task today:"
+    (rf"(^|,)\s*(?:{_INTERJECTION}\s+)?(?:class|everyone|everybody|folks|guys|team|people)\s*,", r"\1 "),
+    (r"^\s*(?:today|this\s+time|for\s+today)\s*,?\s*(?=(?:you|we)\b)", " "),
+    (r"\b(your|the|our)\s+(task|job|goal|exercise)\s+(?:today|this\s+time|here|for\s+today)\b", r"\1 \2"),
 )
 
 # second-person narration and framing, read as the command it describes
@@ -170,6 +180,8 @@ def unspoken(text: str) -> str:
     for pattern, replacement in _FILLERS:
         text = re.sub(pattern, replacement, text)
     text = re.sub(r"(\s*,)+", " ,", _said_once(text))  # the commas left where fillers were
+    for pattern, replacement in _FILLERS:  # again: an opener behind a hesitation ("hmm, okay, so ...")
+        text = re.sub(pattern, replacement, text)
     for pattern, replacement in _NARRATION:
         text = re.sub(pattern, replacement, text)
     text = re.sub(r"(\s*,)+", " ,", text)  # the commas left where fillers were
@@ -184,14 +196,18 @@ def _said_once(text: str) -> str:
     followed by something else the sentence is refused; a hesitation followed by something else is dropped."""
     while marker := re.search(rf"(?:\s*,)*\s*(?<!\w){_MARKER}(?!\w)(?:\s*,)*\s*", text):
         before, after = text[: marker.start()].split(), text[marker.end() :].split()
-        if not before:  # "sorry, could you ...": politeness
-            text = " ".join(after)
+        said = marker.group().strip(" ,")
+        if not before and (
+            said == "~" or (said == "sorry" and after[:1] in (["could"], ["can"], ["would"], ["please"]))
+        ):
+            text = " ".join(after)  # "sorry, could you ...": politeness
             continue
-        found = _restated(before, after)
-        if found is None and marker.group().strip(" ,") != "~":
+        found = (
+            _restated(before, after) if before else None
+        )  # "No wait, ...": a correction of what went before
+        if found is None and said != "~":
             raise HTTError(
-                f"a self-correction in {' '.join(before[-4:] + [marker.group().strip(' ,')] + after[:4])!r}: "
-                "say what is meant once"
+                f"a self-correction in {' '.join(before[-4:] + [said] + after[:4])!r}: say what is meant once"
             )
         if found is None:  # a hesitation inside a phrase ("on g, h and, uh, i") leaves no comma behind
             text = " ".join(before + after if re.fullmatch(_OPEN, before[-1]) else before + [","] + after)
