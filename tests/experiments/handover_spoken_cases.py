@@ -27,12 +27,17 @@ READ = {
         "can only hold one block.",
         "Today you're going to place the three blocks on regions H, I and J, one block per region.",
         "Your task today: put the three blocks on H, I and J, and remember, one block per region.",
+        # a voice transcript without punctuation
+        "so yeah put the uh three blocks on h i and j and you know only one block in each region okay",
+        "put like all three blocks on h i and j one per region",
         "So the three blocks go into H, I and J, and you can't double up.",
         "How about you put the three blocks on H, I and J, one each?",
         "In this task you'll put the three blocks on regions H, I and J. Keep in mind that each region can "
         "only hold one block.",
     ],
     3: [
+        # "you don't want to ...": a prohibition
+        "Move the three pillars to E, F and G, and you don't want to put anything on H, I or J.",
         # a topic taken up by "they"; "oh and"; "while you're doing it"
         "Right so, the pillars, yeah, they need to go over to E, F and G. Oh and don't put anything on H, I "
         "or J while you're doing it, okay?",
@@ -121,6 +126,9 @@ NEAR_MISSES = {
         "Okay everyone, you'll see the three blocks on H, I and J.",  # a scene, not a goal
     ],
     3: [
+        # a permission is not read as a command by the narration rules ("you may", "you get to")
+        "Move the three pillars to E, F and G, and you may put objects on H, I or J.",
+        "Move the three pillars to E, F and G; you get to put objects on H, I or J.",
         # "oh, and never ...": the rule after "oh" is kept (here on the target regions: no plan)
         "Right so, the pillars need to go over to E, F and G. Oh, and never put anything on E, F or G.",
     ],

@@ -58,6 +58,10 @@ _FILLERS: tuple[tuple[str, str], ...] = (
     (r"\bkind\s+of\b(?=\s+(?:" + VERB + r")\b)", " "),
     (r"\boh\b", " , "),
     (r",\s*like\s*(?=,)", " "),  # "the blocks, like, go ..."
+    (rf"\b({VERB})\s+like\s+(?=(?:the|all|both|every|each|three|two)\b)", r"\1 "),  # "put like all three ..."
+    # unpunctuated (a voice transcript): "and you know only one ...", "... okay" at the end
+    (r"\b(and|so|but)\s+you\s+know\b", r"\1"),
+    (r"(?<!\bis)(?<!\bare)(?<!\bbe)\s+(?:okay|ok|alright|yeah)\s*$", " "),
     (r"\b(?:got\s+it|you\s+see|understood|all\s+good)\s*$", " "),
     # a tag at the end of a clause ("..., right?", "..., okay") or interjections opening one
     (rf",\s*{_INTERJECTION}\s*$", " "),
@@ -100,10 +104,8 @@ _FILLERS: tuple[tuple[str, str], ...] = (
 
 # second-person narration and framing, read as the command it describes
 _SUBJECT = r"(?:you|we)"
-_WILL = (
-    r"(?:\s+will|\s+shall|\s+are\s+going\s+to|\s+get\s+to|\s+want\s+to|\s+need\s+to|\s+have\s+to|\s+must|\s+should|"
-    r"\s+can)?"
-)
+# (not "you can / may / get to put ...": a permission is not a command)
+_WILL = r"(?:\s+will|\s+shall|\s+are\s+going\s+to|\s+want\s+to|\s+need\s+to|\s+have\s+to|\s+must|\s+should)?"
 _ANCHOR = r"(^|,|;|\band\b|\bthen\b|\bfirst\b|\bat\s+(?:some|any)\s+(?:point|time)\b)"
 _NARRATION: tuple[tuple[str, str], ...] = (
     (
@@ -136,7 +138,7 @@ _NARRATION: tuple[tuple[str, str], ...] = (
         r"\1 do not ",
     ),
     (
-        rf"{_ANCHOR}\s*{_SUBJECT}\s+(?:cannot|can\s+not)\s+(?=(?:{VERB}|touch)\b)",
+        rf"{_ANCHOR}\s*{_SUBJECT}\s+(?:cannot|can\s+not|do\s+not\s+want\s+to|would\s+not\s+want\s+to)\s+(?=(?:{VERB}|touch)\b)",
         r"\1 do not ",
     ),
     (
