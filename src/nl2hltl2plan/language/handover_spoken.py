@@ -174,22 +174,30 @@ _NARRATION: tuple[tuple[str, str], ...] = (
 )
 
 
+# compiled once: with the reader's other tables they are more than `re`'s cache holds
+_STEPS = tuple(
+    tuple((re.compile(pattern), replacement) for pattern, replacement in table)
+    for table in (_CONTRACTIONS, _FILLERS, _NARRATION)
+)
+
+
 def unspoken(text: str) -> str:
     """The sentence with its spoken fillers, hedges, repeated phrases and narration normalised away (see
     the module docstring); a self-correction that says something else is refused."""
-    for pattern, replacement in _CONTRACTIONS:
-        text = re.sub(pattern, replacement, text)
-    for pattern, replacement in _FILLERS:
-        text = re.sub(pattern, replacement, text)
+    contractions, fillers, narration = _STEPS
+    text = _apply(fillers, _apply(contractions, text))
     text = re.sub(r"(\s*,)+", " ,", _said_once(text))  # the commas left where fillers were
-    for pattern, replacement in _FILLERS:  # again: an opener behind a hesitation ("hmm, okay, so ...")
-        text = re.sub(pattern, replacement, text)
-    for pattern, replacement in _NARRATION:
-        text = re.sub(pattern, replacement, text)
-    text = re.sub(r"(\s*,)+", " ,", text)  # the commas left where fillers were
+    text = _apply(narration, _apply(fillers, text))  # fillers again: an opener behind a hesitation
+    text = re.sub(r"(\s*,)+", " ,", text)
     text = re.sub(r"^\s*,|,\s*$", " ", text)
     text = re.sub(r"\b(the|a|and|to|on|in)\s+\1\b", r"\1", text)  # a stutter: "the the"
     return " ".join(text.split())
+
+
+def _apply(table: tuple[tuple[re.Pattern[str], str], ...], text: str) -> str:
+    for pattern, replacement in table:
+        text = pattern.sub(replacement, text)
+    return text
 
 
 def _said_once(text: str) -> str:
