@@ -41,6 +41,7 @@ READ = {
         # a topic taken up by "they"; "oh and"; "while you're doing it"
         "Right so, the pillars, yeah, they need to go over to E, F and G. Oh and don't put anything on H, I "
         "or J while you're doing it, okay?",
+        "So basically the pillars need to go to E, F and G, and I guess nothing should go on H, I or J.",
         # a hedge on the whole request, "try not to"
         "I think it would be best if you could move the three pillars to regions E, F and G, and please try "
         "not to put any object on H, I or J.",
@@ -71,6 +72,10 @@ READ = {
         "side, doesn't matter when.",
         "Why don't you swap red and blue, red first, and move the yellow block to the opposite side, doesn't "
         "matter when?",
+        "Okay so for this one you're gonna swap the red and blue blocks, red goes first, and at some point "
+        "you'll also take the yellow block to the opposite side.",
+        "Um, I was thinking, could you swap the red and the blue blocks, with red going first, and, er, get "
+        "the yellow one to the opposite side whenever?",
         # "what we want is for X to ..."
         "Now what we want is for the red and blue blocks to swap places, and the red one is placed first. "
         "The yellow block also has to end up on the opposite side, and it doesn't matter when.",
@@ -129,6 +134,8 @@ NEAR_MISSES = {
         # a permission is not read as a command by the narration rules ("you may", "you get to")
         "Move the three pillars to E, F and G, and you may put objects on H, I or J.",
         "Move the three pillars to E, F and G; you get to put objects on H, I or J.",
+        "So basically the pillars need to go to E, F and G, and I think nothing should go on H or I, not sure "
+        "about J.",
         # "oh, and never ...": the rule after "oh" is kept (here on the target regions: no plan)
         "Right so, the pillars need to go over to E, F and G. Oh, and never put anything on E, F or G.",
     ],

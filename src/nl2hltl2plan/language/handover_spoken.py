@@ -67,14 +67,15 @@ _FILLERS: tuple[tuple[str, str], ...] = (
     (rf",\s*{_INTERJECTION}\s*$", " "),
     (rf"(^|,|\band\b)\s*(?:{_INTERJECTION}\s*(?:,\s*|\s+(?={_INTERJECTION}\b)|\s+(?=so\b)))+", r"\1 "),
     (
-        r"^\s*(?:so|now|okay|ok|alright|well)\s+(?=what\b|here\b|the\b|all\b|first\b|your\b|you\b|we\b|in\b)",
+        r"^\s*(?:so|now|okay|ok|alright|well)\s+(?=what\b|here\b|the\b|all\b|first\b|your\b|you\b|we\b|in\b|for\b|today\b)",
         " ",
     ),
     # "just drop all three blocks", "just make sure": "just" before a verb ("just the red block" is left)
     (rf"\b(please|you|we|to|and)\s+like\s+(?=(?:{VERB}|swap|exchange)\b)", r"\1 "),  # "can you like swap ..."
     (rf"\b(?:just|simply)\s+(?=(?:{VERB}|stick|make|drop|swap|exchange|keep)\b)", " "),
     # a hedge on the whole request
-    (r"^\s*(?:i|we)\s+(?:think|guess|suppose|reckon|believe)\s+(?:that\s+)?", " "),
+    (r"(^|,|\band\b)\s*(?:i|we)\s+(?:think|guess|suppose|reckon|believe)\s+(?:that\s+)?", r"\1 "),
+    (r"^\s*(?:i|we)\s+(?:was|were)\s+(?:thinking|wondering)\s*,", " "),
     (r",\s*(?:i|we)\s+(?:guess|think|suppose|reckon)\s*$", " "),
     (r"^\s*if\s+(?:possible|you\s+can|you\s+could)\s*,", " "),
     (r"\s*,?\s*\bif\s+(?:possible|you\s+can)\s*$", " "),
