@@ -134,8 +134,8 @@ NEAR_MISSES = {
         # a permission is not read as a command by the narration rules ("you may", "you get to")
         "Move the three pillars to E, F and G, and you may put objects on H, I or J.",
         "Move the three pillars to E, F and G; you get to put objects on H, I or J.",
-        "So basically the pillars need to go to E, F and G, and I think nothing should go on H or I, not sure "
-        "about J.",
+        "So basically the pillars need to go to E, F and G, and I think nothing should go on H or I, not "
+        "sure about J.",
         # "oh, and never ...": the rule after "oh" is kept (here on the target regions: no plan)
         "Right so, the pillars need to go over to E, F and G. Oh, and never put anything on E, F or G.",
     ],
