@@ -70,8 +70,8 @@ _FILLERS: tuple[tuple[str, str], ...] = (
         r"^\s*(?:so|now|okay|ok|alright|well)\s+(?=what\b|here\b|the\b|all\b|first\b|your\b|you\b|we\b|in\b|for\b|today\b)",
         " ",
     ),
-    # "just drop all three blocks", "just make sure": "just" before a verb ("just the red block" is left)
     (rf"\b(please|you|we|to|and)\s+like\s+(?=(?:{VERB}|swap|exchange)\b)", r"\1 "),  # "can you like swap ..."
+    # "just drop all three blocks", "just make sure": "just" before a verb ("just the red block" is left)
     (rf"\b(?:just|simply)\s+(?=(?:{VERB}|stick|make|drop|swap|exchange|keep)\b)", " "),
     # a hedge on the whole request
     (r"(^|,|\band\b)\s*(?:i|we)\s+(?:think|guess|suppose|reckon|believe)\s+(?:that\s+)?", r"\1 "),
@@ -213,9 +213,8 @@ def _said_once(text: str) -> str:
         ):
             text = " ".join(after)  # "sorry, could you ...": politeness
             continue
-        found = (
-            _restated(before, after) if before else None
-        )  # "No wait, ...": a correction of what went before
+        # a correction that opens the sentence ("No wait, ...") corrects the one before: refused
+        found = _restated(before, after) if before else None
         if found is None and said != "~":
             raise HTTError(
                 f"a self-correction in {' '.join(before[-4:] + [said] + after[:4])!r}: say what is meant once"
