@@ -1,0 +1,248 @@
+"""Spoken and instructor styles of the handover instructions, normalised before the reader's word tables
+(`handover_phrases.normalise` calls `unspoken` on the lower-cased, typo-mended sentence).
+
+Three general steps, each removing only words that carry no block, place, arm, count, negation, order or
+time (a word that might carry one is left for the reader, which reads it or refuses naming it):
+
+- discourse fillers and hedges: hesitations ("um", "uh", "er"), "you know", "basically", "yeah",
+  interjections that open a clause or tag its end ("okay so", "right,", "..., alright?", "oh and"),
+  "just" before a verb ("just drop them", never "just the red block"), a hedge on the whole request
+  ("i think", "if possible,", "it would be best if you could", "maybe" or "ideally" before a verb or rule);
+- self-corrections: a phrase said again after a hesitation or "i mean" / "sorry" ("the three, uh, the
+  three objects", "to i, er, region i") is read once, in its second wording; a correction that says
+  something else ("on g, i mean h") is refused, naming it: the reader never guesses which was meant;
+- second-person narration read as commands: "you'll put", "you want to place", "your job is to",
+  "what we're going to do is", "in this exercise you move", "you start by placing" (first),
+  "you may not / you're not allowed to" (do not), and a topic taken up by a pronoun ("the pillars, they
+  need to go ...").
+"""
+
+from __future__ import annotations
+
+import re
+
+from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.language.handover_words import GERUND_VERBS, NEGATED_GERUNDS, VERB
+
+# contractions spelled out first, so that each rule below has one form to match
+_CONTRACTIONS = (
+    (r"\bcan\s*'\s*t\b", "cannot"),
+    (r"\bwon\s*'\s*t\b", "will not"),
+    (r"n\s*'\s*t\b", " not"),
+    (r"\b(you|we|they|i)\s*'\s*ll\b", r"\1 will"),
+    (r"\b(you|we|they)\s*'\s*re\b", r"\1 are"),
+    (r"\b(you|we|they|i)\s*'\s*ve\b", r"\1 have"),
+    (r"\b(you|we|i)\s*'\s*d\b", r"\1 would"),
+    (r"\bi\s*'\s*m\b", "i am"),
+    # spoken spellings
+    (r"\bgonna\b", "going to"),
+    (r"\bwanna\b", "want to"),
+    (r"\bgotta\b", "have to"),
+    (r"\b(?:kinda|sorta)\b", " "),
+)
+_HESITATION = r"(?:u+h+m*|u+m+|e+r+m*|hmm+|mm+|ah+)"
+_INTERJECTION = r"(?:okay|ok|alright|all\s+right|right|so|well|now|oh|hi|hey|hello|listen|look|yeah|yep|yup)"
+_MARKER = r"(?:i\s+mean|i\s+meant|sorry|or\s+rather|no\s+wait|wait(?=\s*,)|~)"
+# words that a restated phrase may add or leave out without saying something else
+_RESTATED_FREELY = frozenset({"the", "region", "regions", "block", "blocks", "one", "ones", ","})
+_VERB_AFTER_SUBJECT = r"(?:goes|go|comes|is|are|must|should|has|have|needs?|gets?|will|can|may)"
+_OPEN = r"(?:and|or|the|a|to|on|onto|in|into|of|at|is|are|be|,)"
+_GERUNDS = GERUND_VERBS | NEGATED_GERUNDS | {"placing": "place", "returning": "return"}
+_VERB_OR_RULE = rf"(?:{VERB}|exchange|swap|fill|touch|keep|leave|do\s+not|no|nothing|never|make|be)\b"
+
+# fillers and hedges that carry no meaning, each only in the place where it cannot carry one
+_FILLERS: tuple[tuple[str, str], ...] = (
+    (rf"\b{_HESITATION}\b", " , ~ , "),  # a soft correction marker: what follows may restate what went before
+    (r"(^|,)\s*you\s+know\s*(?=,|$)", r"\1"),
+    (r"\b(?:basically|literally|honestly|yeah|yep|yup)\b", " , "),
+    (r"\bkind\s+of\b(?=\s+(?:" + VERB + r")\b)", " "),
+    (r"\boh\b", " , "),
+    (r",\s*like\s*(?=,)", " "),  # "the blocks, like, go ..."
+    (rf"\b({VERB})\s+like\s+(?=(?:the|all|both|every|each|three|two)\b)", r"\1 "),  # "put like all three ..."
+    # unpunctuated (a voice transcript): "and you know only one ...", "... okay" at the end
+    (r"\b(and|so|but)\s+you\s+know\b", r"\1"),
+    (r"(?<!\bis)(?<!\bare)(?<!\bbe)\s+(?:okay|ok|alright|yeah)\s*$", " "),
+    (r"\b(?:got\s+it|you\s+see|understood|all\s+good)\s*$", " "),
+    # a tag at the end of a clause ("..., right?", "..., okay") or interjections opening one
+    (rf",\s*{_INTERJECTION}\s*$", " "),
+    (rf"(^|,|\band\b)\s*(?:{_INTERJECTION}\s*(?:,\s*|\s+(?={_INTERJECTION}\b)|\s+(?=so\b)))+", r"\1 "),
+    (
+        r"^\s*(?:so|now|okay|ok|alright|well)\s+(?=what\b|here\b|the\b|all\b|first\b|your\b|you\b|we\b|in\b|for\b|today\b)",
+        " ",
+    ),
+    (rf"\b(please|you|we|to|and)\s+like\s+(?=(?:{VERB}|swap|exchange)\b)", r"\1 "),  # "can you like swap ..."
+    # "just drop all three blocks", "just make sure": "just" before a verb ("just the red block" is left)
+    (rf"\b(?:just|simply)\s+(?=(?:{VERB}|stick|make|drop|swap|exchange|keep)\b)", " "),
+    # a hedge on the whole request
+    (r"(^|,|\band\b)\s*(?:i|we)\s+(?:think|guess|suppose|reckon|believe)\s+(?:that\s+)?", r"\1 "),
+    (r"^\s*(?:i|we)\s+(?:was|were)\s+(?:thinking|wondering)\s*,", " "),
+    (r",\s*(?:i|we)\s+(?:guess|think|suppose|reckon)\s*$", " "),
+    (r"^\s*if\s+(?:possible|you\s+can|you\s+could)\s*,", " "),
+    (r"\s*,?\s*\bif\s+(?:possible|you\s+can)\s*$", " "),
+    (r"\bit\s+would\s+be\s+(?:best|great|good|nice|ideal)\s+if\s+you\s+(?:could|would|can)\b", "please"),
+    (r"^\s*(?:i|we)\s+would\s+(?:probably\s+|maybe\s+)?have\s+you\s+", "please "),
+    (rf"\b(?:probably|maybe|perhaps|ideally|preferably)\s+(?={_VERB_OR_RULE}|should\b|must\b)", " "),
+    (r"\btry\s+not\s+to\b", "do not"),
+    (rf"\btry\s+to\s+(?={VERB}\b)", " "),
+    # a closer that adds nothing: "and that's all there is to it", "that's it"
+    (r"(?:^|,|\band\b)\s*that\s*(?:'\s*)?s\s+(?:all|it)(?:\s+there\s+is\s+to\s+it)?\s*$", " "),
+    (r"(?:^|,)\s*that\s*(?:'\s*)?s\s+the\s+only\s+thing\s*$", " "),
+    (
+        r"^\s*(?:the\s+)?(?:one\s+|only\s+)?thing\s+(?:to\s+(?:watch|remember|note)(?:\s+out\s+for)?\s+)?is\s*(?:that\b|,)",
+        " ",
+    ),
+    # what a teacher asks the class to notice: "remember, ...", "you'll notice each region ..."
+    (r"(^|,)\s*(?:and\s+)?(?:remember|notice|note)\s*,", r"\1 "),
+    (
+        r"(^|,|\band\b)\s*(?:you\s+(?:will|may|can|should|might)\s+)?(?:(?:notice|see)\s+that\b|notice\s+(?=(?:each|every|only|no|nothing|none)\b))",
+        r"\1 ",
+    ),  # not "you'll see the red block on g": a scene, not a rule
+    # who is spoken to, and when: "alright class,", "okay everyone,", "today you ...", "your task today:"
+    (rf"(^|,)\s*(?:{_INTERJECTION}\s+)?(?:class|everyone|everybody|folks|guys|team|people)\s*,", r"\1 "),
+    (r"^\s*(?:today|this\s+time|for\s+today)\s*,?\s*(?=(?:you|we)\b)", " "),
+    (r"\b(your|the|our)\s+(task|job|goal|exercise)\s+(?:today|this\s+time|here|for\s+today)\b", r"\1 \2"),
+)
+
+# second-person narration and framing, read as the command it describes
+_SUBJECT = r"(?:you|we)"
+# (not "you can / may / get to put ...": a permission is not a command)
+_WILL = r"(?:\s+will|\s+shall|\s+are\s+going\s+to|\s+want\s+to|\s+need\s+to|\s+have\s+to|\s+must|\s+should)?"
+_ANCHOR = r"(^|,|;|\band\b|\bthen\b|\bfirst\b|\bat\s+(?:some|any)\s+(?:point|time)\b)"
+_NARRATION: tuple[tuple[str, str], ...] = (
+    (
+        r"^\s*(?:in|for)\s+this\s+(?:task|exercise|run|one|activity|lesson|part|round|session|step)\s*,?\s*",
+        " ",
+    ),
+    (r"^\s*here\s*,?\s+(?=(?:the|all|we|you)\b)", " "),
+    (
+        rf"\bwhat\s+{_SUBJECT}{_WILL}\s+(?:be\s+)?do(?:ing)?\s+(?:here\s+|now\s+|today\s+|next\s+)?is\s+(?:to\s+)?",
+        "please ",
+    ),
+    (r"\bwhat\s+(i|we)\s+(?:want|need|would\s+like)\s+is\s*,?\s*(?:for\s+)?", r"\1 want "),
+    (r"^\s*(?:so\s+)?(?:here\s+)?(?:we|you)\s+have\s+(?=(?:the\s+)?(?:three|two|\d)\s+)", "there are "),
+    # "once you have done that": once that is done
+    (
+        rf"\b(once|when|after)\s+{_SUBJECT}\s+(?:have\s+|are\s+)?(?:done|finished|completed)\s+"
+        r"((?:all\s+(?:of\s+)?)?(?:this|that|these|everything))\b",
+        r"\1 \2 is done",
+    ),
+    (rf"\b{_SUBJECT}\s+(?:start|begin)\s+by\s+", "first "),
+    (r"^\s*(?:start|begin)\s+by\s+", "first "),
+    # "you will be moving": the verb
+    *(
+        (rf"\b{_SUBJECT}{_WILL}\s+be\s+(?:(first|also|then)\s+)?{gerund}\b", rf"\1 {verb}")
+        for gerund, verb in _GERUNDS.items()
+    ),
+    (
+        rf"{_ANCHOR}\s*{_SUBJECT}(?:\s+will|\s+shall|\s+must|\s+may|\s+should|\s+are)?\s+(?:not\s+|never\s+)"
+        rf"(?:be\s+)?(?:allowed\s+to\s+)?(?=(?:{VERB}|touch|place|drop|set|leave)\b)",
+        r"\1 do not ",
+    ),
+    (
+        rf"{_ANCHOR}\s*{_SUBJECT}\s+(?:cannot|can\s+not|do\s+not\s+want\s+to|would\s+not\s+want\s+to)\s+(?=(?:{VERB}|touch)\b)",
+        r"\1 do not ",
+    ),
+    (
+        rf"{_ANCHOR}\s*{_SUBJECT}(?:\s+(?:also|then|now|just))?{_WILL}\s+(?:(first|also|then|now)\s+)?"
+        rf"(?=(?!want\b|need\b)(?:{VERB}|exchange|swap|fill|touch)\b)",  # "we want them on ...": a need
+        r"\1 \2 ",
+    ),
+    # a topic taken up by a pronoun: "the pillars, they need to go ...", "the yellow block, that one ..."
+    (
+        r"(^|,)\s*(?:and\s+)?((?:the\s+)?(?:(?:all|three|two|red|blue|yellow|and|both)\s+){0,4}"
+        r"(?:blocks?|pillars?|objects?|ones?))\s*,\s*(?:they|it|that\s+one|those(?:\s+ones)?|these)\s+(?=\w)",
+        r"\1 \2 ",
+    ),
+    (r"\b(?:can|could)\s+we\s+", "please "),
+    (r"\b(?:how\s+about|why\s+do\s+not)\s+(?:you|we)\s+(?=(?:" + VERB + r"|swap|exchange)\b)", "please "),
+    # spoken idioms of the rules: "hands off X until ...", "you can't double up", "doesn't matter when"
+    # "until somebody's touched the red one": has touched
+    (r"\b([a-z]+)\s+s\s+(?=(?:touched|picked|grabbed|handled|lifted|done|finished)\b)", r"\1 has "),
+    (
+        r"\b(?:keep\s+(?:your|the|their)\s+)?hands\s+off\s+(?=(?:the\s+)?(?:red|blue|yellow)\b)",
+        "do not touch ",
+    ),
+    (r"\b(?:you\s+)?(?:cannot|can\s+not|do\s+not|no)\s+doubl(?:e|ing)\s+up\b", "one block per region"),
+    (r"(?<!\bit\s)\bdoes\s+not\s+matter\s+(?=when\b|at\s+what\b)", "it does not matter "),
+    # said twice in one clause: "then put the yellow block back on g afterwards"
+    (r"(\bthen\b[^,]*?)\s*,?\s*\bafterwards?\s*$", r"\1"),
+    # "..., each one on its own region": one block per region
+    (
+        r",\s*each(?:\s+one)?\s+(?:on|in|to|gets)\s+(?:its|their)\s+own\s+(?:region|spot|place)s?\b",
+        ", one per region",
+    ),
+    (r"\b(?:stick|shove|plonk|chuck|bung)\b", "put"),
+)
+
+
+# compiled once: with the reader's other tables they are more than `re`'s cache holds
+_STEPS = tuple(
+    tuple((re.compile(pattern), replacement) for pattern, replacement in table)
+    for table in (_CONTRACTIONS, _FILLERS, _NARRATION)
+)
+
+
+def unspoken(text: str) -> str:
+    """The sentence with its spoken fillers, hedges, repeated phrases and narration normalised away (see
+    the module docstring); a self-correction that says something else is refused."""
+    contractions, fillers, narration = _STEPS
+    text = _apply(fillers, _apply(contractions, text))
+    text = re.sub(r"(\s*,)+", " ,", _said_once(text))  # the commas left where fillers were
+    text = _apply(narration, _apply(fillers, text))  # fillers again: an opener behind a hesitation
+    text = re.sub(r"(\s*,)+", " ,", text)
+    text = re.sub(r"^\s*,|,\s*$", " ", text)
+    text = re.sub(r"\b(the|a|and|to|on|in)\s+\1\b", r"\1", text)  # a stutter: "the the"
+    return " ".join(text.split())
+
+
+def _apply(table: tuple[tuple[re.Pattern[str], str], ...], text: str) -> str:
+    for pattern, replacement in table:
+        text = pattern.sub(replacement, text)
+    return text
+
+
+def _said_once(text: str) -> str:
+    """A phrase said again after a hesitation or a correction marker, in other words that add or drop only
+    `_RESTATED_FREELY`, is kept once (its second wording); after a marker ("i mean", "sorry") that is
+    followed by something else the sentence is refused; a hesitation followed by something else is dropped."""
+    while marker := re.search(rf"(?:\s*,)*\s*(?<!\w){_MARKER}(?!\w)(?:\s*,)*\s*", text):
+        before, after = text[: marker.start()].split(), text[marker.end() :].split()
+        said = marker.group().strip(" ,")
+        if not before and (
+            said == "~" or (said == "sorry" and after[:1] in (["could"], ["can"], ["would"], ["please"]))
+        ):
+            text = " ".join(after)  # "sorry, could you ...": politeness
+            continue
+        # a correction that opens the sentence ("No wait, ...") corrects the one before: refused
+        found = _restated(before, after) if before else None
+        if found is None and said != "~":
+            raise HTTError(
+                f"a self-correction in {' '.join(before[-4:] + [said] + after[:4])!r}: say what is meant once"
+            )
+        if found is None:  # a hesitation inside a phrase ("on g, h and, uh, i") leaves no comma behind
+            text = " ".join(before + after if re.fullmatch(_OPEN, before[-1]) else before + [","] + after)
+            continue
+        cut, length = found
+        # "the red block, i mean the red block, goes ...": no comma between the subject and its verb
+        if after[length : length + 1] == [","] and re.fullmatch(
+            _VERB_AFTER_SUBJECT, "".join(after[length + 1 :][:1])
+        ):
+            after = after[:length] + after[length + 1 :]
+        text = " ".join(before[:cut] + after)
+    return text
+
+
+def _restated(before: list[str], after: list[str]) -> tuple[int, int] | None:
+    """Where the phrase that `after` begins by saying again starts in `before` (the longest such end of
+    `before`, compared without `_RESTATED_FREELY`), and how many words of `after` say it; or None."""
+    for n in range(min(8, len(before)), 0, -1):
+        said = [w for w in before[-n:] if w not in _RESTATED_FREELY]
+        if not said or before[-n] in _RESTATED_FREELY:
+            continue
+        content = [i for i, w in enumerate(after) if w not in _RESTATED_FREELY][: len(said)]
+        if [after[i] for i in content] == said:
+            length = content[-1] + 1  # with the words that end the phrase ("the red one")
+            while after[length : length + 1] and after[length] in _RESTATED_FREELY - {","}:
+                length += 1
+            return len(before) - n, length
+    return None
