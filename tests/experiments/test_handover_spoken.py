@@ -62,6 +62,9 @@ def test_a_correction_that_says_something_else_is_refused(task_id, text):
         ("you do not have to put red first", "you do not have to put red first"),  # not a command
         ("maybe the red block first", "maybe the red block first"),  # a hedge on a choice: kept
         ("oh , and never put anything on g", "and never put anything on g"),
+        # "'s" before a participle: "has" after somebody, "is" after what is done (a passive)
+        ("until somebody s touched the red one", "until somebody has touched the red one"),
+        ("once that s done , put yellow on g", "once that is done , put yellow on g"),
     ],
 )
 def test_unspoken_drops_only_words_without_a_meaning(text, expected):

@@ -156,7 +156,8 @@ _NARRATION: tuple[tuple[str, str], ...] = (
     (r"\b(?:can|could)\s+we\s+", "please "),
     (r"\b(?:how\s+about|why\s+do\s+not)\s+(?:you|we)\s+(?=(?:" + VERB + r"|swap|exchange)\b)", "please "),
     # spoken idioms of the rules: "hands off X until ...", "you can't double up", "doesn't matter when"
-    # "until somebody's touched the red one": has touched
+    # "until somebody's touched the red one": has touched; but "once that's done": that is done (passive)
+    (r"\b(that|this|it|everything|all|which)\s+s\s+(?=(?:done|finished)\b)", r"\1 is "),
     (r"\b([a-z]+)\s+s\s+(?=(?:touched|picked|grabbed|handled|lifted|done|finished)\b)", r"\1 has "),
     (
         r"\b(?:keep\s+(?:your|the|their)\s+)?hands\s+off\s+(?=(?:the\s+)?(?:red|blue|yellow)\b)",
