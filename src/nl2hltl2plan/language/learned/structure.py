@@ -9,8 +9,8 @@ connective's words: of pointing back (`_pointing_features`), of the word's shape
 (`_clause_features`: a clause that only names earlier objects is a reference, not a task). Training
 uses CRFsuite (`python-crfsuite`, the `train` extra); the artifact holds only numpy arrays (feature
 strings, a weight matrix, the transition matrix, the relation head's weights) and inference is numpy
-Viterbi / forward-backward, so the core install reads it. A span tagged REF / RPRE (it points back at one earlier span) gets that span from
-the relation head (`relation_head.py`).
+Viterbi / forward-backward, so the core install reads it. A span tagged REF / RPRE (it points back at
+one earlier span) gets that span from the relation head (`relation_head.py`).
 
     >>> m = StructureModel.load()
     >>> [(s.text, s.relation) for s in m.read("Put the mug in the sink. Then put the apple in the fridge.")]
