@@ -37,14 +37,16 @@ _BASE_FORM = {v: k for k, v in VERB_PARTICIPLE.items() if v != k} | {v: k for k,
 class StructurePolicy:
     """When the structure model's reading replaces the grammar's (see the module docstring)."""
 
-    # chosen on the development sets (scripts/structure_policy_grid.py --search): the most conversions
-    # with no set's wrong readings above the previous model's (results/language/unseen_h53.md)
+    # results/language/unseen_h53.md: a lower rescue threshold for the better-regularised model (it can
+    # only turn refusals into readings); lower override thresholds convert more on the development sets
+    # but fail the benchmark's floor test (tests/language/test_measure.py), so the grammar still decides
+    # wherever it reads everything
     rescue: float = 0.4  # the grammar could not read everything: the model's reading if this sure
-    override: float = 0.9  # both complete and different: the model's reading if this sure
-    doubt: float = 0.2  # ... and neither trusted (-> unparsed) when the model is less sure than this
+    override: float = 0.97  # both complete and different: the model's reading if this sure
+    doubt: float = 0.0  # ... and neither trusted (-> unparsed) when the model is less sure than this
     # the override threshold for a model reading with a span that points back (REF / RPRE / ALL: "when
     # you're done with the pan, Y"); None: `override`
-    override_pointing: float | None = 0.8
+    override_pointing: float | None = None
 
 
 def decide(
