@@ -8,8 +8,9 @@ model's reading is complete and right, its confidence, and whether it has a span
 RPRE, ALL). Then the conversions and the wrong readings (complete, wrong, reported as success) of
 `structured.StructurePolicy` rules: rescue threshold, override threshold (separately for readings that
 point back), `doubt` (-> unparsed), as differences from the shipped policy, per set; `--search` lists
-the rules of a whole grid under which no set has more wrong readings than under the shipped policy
-(results/language/unseen_h53.md). Rows come from `scripts/language_failures.py --save-rows DIR`.
+the rules of a whole grid under which no set has more wrong readings than under the shipped policy (or
+than `--wrong-limits` allows; results/language/unseen_h53.md). Rows come from
+`scripts/language_failures.py --save-rows DIR`.
 
     python scripts/structure_policy_grid.py --rows DIR --sets ... [--search]
 """
