@@ -67,16 +67,27 @@ TRAIN_REFS = RefJoiners(
     ref=("After you {v} the {o}, {x}", "When {g} the {o} is complete, {x}", "Once the {o} task is done, {x}",
          "After the {o} has been {gp}, {x}", "{x} after you've {gp} the {o}", "Following the {o}, {x}",
          "Right after you {v} the {o}, {x}", "When you finish with the {o}, {x}",
-         "Once you finish {g} the {o}, {x}", "{x} once the {o} is taken care of", "Past the {o} step, {x}"),
+         "Once you finish {g} the {o}, {x}", "{x} once the {o} is taken care of", "Past the {o} step, {x}",
+         "After you're finished {g} the {o}, {x}", "Once you've finished with the {o}, {x}",
+         "When you've {gp} the {o}, {x}", "Once you're done with the {o}, {x}",
+         "{x} once you've dealt with the {o}", "{x} after the {o} is {gp}",
+         "As soon as you finish {g} the {o}, {x}", "{x} as soon as the {o} is {gp}",
+         "When the {o} is finished, {x}"),
     ref_state=("After the {o} {p} the {r}, {x}", "Once the {o} has been put {q} the {r}, {x}",
                "When you have the {o} {q} the {r}, {x}", "{x} when the {o} {p} the {r}",
-               "As soon as you see the {o} {q} the {r}, {x}"),
+               "As soon as you see the {o} {q} the {r}, {x}", "After you've put the {o} {q} the {r}, {x}",
+               "{x} after the {o} {p} the {r}", "When you've got the {o} {q} the {r}, {x}"),
     ref_pre=("Before you {v} the {o}, {x}", "Before {g} the {o}, {x}", "{x} before {g} the {o}",
-             "{x} before the {o} is {gp}", "Ahead of the {o}, {x}"),
+             "{x} before the {o} is {gp}", "Ahead of the {o}, {x}", "Before you get to the {o}, {x}",
+             "Before starting on the {o}, {x}", "{x} before you touch the {o}", "{x} ahead of {g} the {o}"),
     after_all=("After everything else is done, {x}", "Once every other task is finished, {x}",
                "When all the earlier tasks are done, {x}", "When the rest is finished, {x}",
                "Once all of those are complete, {x}", "{x} after all the other tasks",
-               "After doing all of this, {x}", "{x} once everything before it is done"),
+               "After doing all of this, {x}", "{x} once everything before it is done",
+               "Once all that is done, {x}", "After the other tasks, {x}",
+               "{x} when you've done everything else", "After all the others are finished, {x}",
+               "When you've finished all of them, {x}", "{x} after everything else",
+               "Once the rest is complete, {x}"),
 )
 
 ON_TYPES = {"CounterTop", "DiningTable", "SideTable", "CoffeeTable", "Desk", "Bed", "Sofa", "ArmChair",
@@ -144,7 +155,9 @@ class Connectives:
 TRAIN_STYLE = Connectives(
     openers=("{x}", "{x}", "{x}", "First {x}", "First, {x}", "Start by {xg}", "Please {x}",
              "Could you {x}", "Can you {x}", "I'd like you to {x}", "Hey robot, {x}", "To begin, {x}",
-             "Go ahead and {x}", "I need you to {x}"),
+             "Go ahead and {x}", "I need you to {x}", "Okay, {x}", "Ok so {x}", "Hi, {x}",
+             "Robot, please {x}", "Step one: {x}", "Here's what I need: {x}", "I want you to {x}", "So, {x}",
+             "Task 1: {x}", "Hey, could you {x}", "Can u {x}", "pls {x}"),
     joiners={
         "SEQ": (", then {x}", ". Then {x}", " and then {x}", ". After that, {x}", ", after that {x}",
                 ", and after that {x}", ". Once that's done, {x}", ". Once you've done that, {x}",
@@ -156,25 +169,43 @@ TRAIN_STYLE = Connectives(
                 ". When that's finished, {x}", ", then go on to {x}", ". When done, {x}",
                 ". After doing that, {x}", ". Once it's done, {x}", "; after that {x}", ", and then {x}",
                 ". And then {x}", ". Once that is finished, {x}", "? Then {x}", "? After that, {x}",
-                "? And then {x}", ". Followed by {xg}"),
-        "PAR": (" and {x}", ", and {x}", ", and also {x}", ", as well as {xg}", "; and {x}", ", also {x}"),
+                "? And then {x}", ". Followed by {xg}", ". When that's complete, {x}",
+                ". After finishing that, {x}", ". As soon as that's done, {x}", ". Then go ahead and {x}",
+                ". Step two: {x}",
+                ". After it's finished, {x}", ", and once finished, {x}", ". Later, {x}", ". Second, {x}",
+                ". Now {x}", ". Right after, {x}", " and next {x}", ". Once complete, {x}",
+                ". When you've done that, {x}", ". After you've done that, {x}",
+                ", and after you're done {x}", ". Then u can {x}", " then {x}", ", next {x}"),
+        "PAR": (" and {x}", ", and {x}", ", and also {x}", ", as well as {xg}", "; and {x}", ", also {x}",
+                " as well as {xg}", ", and additionally {x}", " and then also {x}", " & {x}"),
         "BARE": (". {x}", ". {x}", ". Also {x}", ". Also, {x}", ". And {x}", ". In addition, {x}",
-                 ". Plus, {x}", ". Additionally, {x}", "? Also {x}", "? And {x}"),
+                 ". Plus, {x}", ". Additionally, {x}", "? Also {x}", "? And {x}", ". Oh and {x}",
+                 ". Another thing: {x}", ". Besides that, {x}", ". Oh, and also {x}", ". Also, please {x}"),
         "ANY": (" and {x} in any order", ", and {x}, in any order", " and {x}, in whatever order you like",
                 ", {x}, order doesn't matter"),
         "FREE": (". At any time, {x}", ". Whenever you like, {x}", ". Meanwhile, {x}",
                  ". At some point, {x}", ". Independently, {x}", ". Whenever you want, {x}",
                  ". Simultaneously, {x}", ". At the same time, {x}", ". In parallel, {x}",
-                 ". {x} at any time", ". {x} whenever you like", ". In any order, {x}"),
+                 ". {x} at any time", ". {x} whenever you like", ". In any order, {x}",
+                 ". Sometime, {x}", ". Whenever you get a chance, {x}", ". {x} at some point",
+                 ". {x} whenever you can", ". {x} any time you like", ". Separately, {x}"),
         "LAST": (". Finally, {x}", ", and finally {x}", ". Lastly, {x}", ". In the end, {x}",
-                 ", and lastly {x}", ". Finally {x}", ". Finish by {xg}"),
+                 ", and lastly {x}", ". Finally {x}", ". Finish by {xg}", ". Last, {x}",
+                 ". At the very end, {x}", ". End by {xg}", ". The last thing: {x}", ", and at the end {x}",
+                 ". Finally, please {x}"),
         "PRE": (". Before that, {x}", ", but before that {x}", ", but first {x}", ". But first, {x}",
-                ". Prior to that, {x}", ". Before doing so, {x}"),
+                ". Prior to that, {x}", ". Before doing so, {x}", ". But before you do that, {x}",
+                ". Before all that, {x}", ", but make sure you first {x}", ". First, though, {x}",
+                ". Before any of that, {x}", ". Before you do this, {x}", ", but before doing that, {x}"),
     },
     endings={
-        "SEQ": (", in that order.", " in that order.", ", one after the other."),
+        "SEQ": (", in that order.", " in that order.", ", one after the other.", ", in exactly that order.",
+                ", in the order given.", " - in that order.", ", in that exact order please.",
+                ". Do them in that order."),
         "ANY": (" in any order.", ", in any order.", ", in whatever order you like.",
-                ". The order does not matter.", ", order doesn't matter.", ". Any order is fine."),
+                ". The order does not matter.", ", order doesn't matter.", ". Any order is fine.",
+                ", any order works.", ", order is not important.", " in whichever order.",
+                ", doesn't matter which first.", ". Do them in any order."),
     },
     pairs=(
         ("Once you've {0p}, {1}.", ("START", "SEQ")),
@@ -197,6 +228,15 @@ TRAIN_STYLE = Connectives(
         ("{0} when you have {1p}.", ("START", "PRE")),
         ("Once you're done {0g}, {1}.", ("START", "SEQ")),
         ("After you're finished {0g}, {1}.", ("START", "SEQ")),
+        ("Once you have {0p}, {1}.", ("START", "SEQ")),
+        ("When finished {0g}, {1}.", ("START", "SEQ")),
+        ("{0}, but not before you {1}.", ("START", "PRE")),
+        ("{0} but first {1}.", ("START", "PRE")),
+        ("{0}, but {1} first.", ("START", "PRE")),
+        ("After you {0}, {1}.", ("START", "SEQ")),
+        ("When you've {0p}, go ahead and {1}.", ("START", "SEQ")),
+        ("{0} and, once that's done, {1}.", ("START", "SEQ")),
+        ("{0} only after {1g}.", ("START", "PRE")),
     ),
     free_openers=("{x} at any time", "{x} whenever you like", "At any time, {x}"),
     refs=TRAIN_REFS,
@@ -245,7 +285,23 @@ def _typo(word: str, rng: random.Random) -> str:
 
 
 _CONTRACT = ((r"\bdo not\b", "don't"), (r"\byou have\b", "you've"), (r"\byou are\b", "you're"),
-             (r"\bit is\b", "it's"), (r"\bthat is\b", "that's"))
+             (r"\bit is\b", "it's"), (r"\bthat is\b", "that's"), (r"\byou will\b", "you'll"),
+             (r"\bthat has\b", "that's"), (r"\bI would\b", "I'd"))
+
+
+def noisy(piece: str, rng: random.Random, p: float = 0.08) -> str:
+    """A connective with, sometimes, a typo in one of its own words (never inside a `{x}` slot): people
+    misspell "afterwards" as often as "microwave"."""
+    if rng.random() >= p:
+        return piece
+    parts = re.split(r"(\{[^}]+\})", piece)
+    spots = [(k, m.start(), m.end()) for k, part in enumerate(parts) if not part.startswith("{")
+             for m in re.finditer(r"[A-Za-z]{5,}", part)]
+    if not spots:
+        return piece
+    k, a, b = rng.choice(spots)
+    parts[k] = parts[k][:a] + _typo(parts[k][a:b], rng) + parts[k][b:]
+    return "".join(parts)
 
 
 def styled_clause(text: str, rng: random.Random) -> str:
@@ -316,7 +372,7 @@ def _chain(
     free_first = bool(style.free_openers) and len(clauses) > 1 and not ending_rel and rng.random() < 0.2
     openers = style.free_openers if free_first else style.openers
     opener = rng.choice([o for o in openers if "{xg}" not in o or "g" in forms[0]])
-    b.add(opener.replace("{x", "{0"), {"0" + k: v for k, v in forms[0].items()})
+    b.add(noisy(opener, rng).replace("{x", "{0"), {"0" + k: v for k, v in forms[0].items()})
     rels = ["FREE" if free_first else "START"]
     targets: list[int | None] = [None]
     for i in range(1, len(clauses)):
@@ -324,7 +380,7 @@ def _chain(
         if style.refs and not ending_rel and rng.random() < 0.3:  # three in ten point back where they can
             made = _pointing(i, clauses, tasks, style.refs, rng)
         if made:
-            b.add(". " + made[0].replace("{x}", "{" + str(i) + "}"), {str(i): clauses[i]})
+            b.add(". " + noisy(made[0], rng).replace("{x}", "{" + str(i) + "}"), {str(i): clauses[i]})
             rels.append(made[1])
             targets.append(made[2])
             continue
@@ -338,9 +394,11 @@ def _chain(
         else:
             pool = [j for j in style.joiners[rel] if "{xg}" not in j or "g" in forms[i]]
         clause = forms[i]
-        if pool[0] == ", {x}" and _same_verb(clauses[i - 1], clauses[i]) and rng.random() < 0.6:
+        joiner = rng.choice(pool)
+        elidable = pool[0] == ", {x}" or (rel == "PAR" and joiner in (" and {x}", ", and {x}"))
+        if elidable and _same_verb(clauses[i - 1], clauses[i]) and rng.random() < 0.6:
             clause = {"": clauses[i].split(" ", 1)[1]}  # "put X in Y and Z in W": the verb left out
-        b.add(rng.choice(pool).replace("{x", "{" + str(i)), {str(i) + k: v for k, v in clause.items()})
+        b.add(noisy(joiner, rng).replace("{x", "{" + str(i)), {str(i) + k: v for k, v in clause.items()})
         rels.append(rel)
         targets.append(None)
     b.add(rng.choice(style.endings[ending_rel]) if ending_rel else rng.choice([".", ".", "", "!"]), {})

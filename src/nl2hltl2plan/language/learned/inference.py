@@ -28,6 +28,7 @@ from nl2hltl2plan.language.grounding import AffordanceLookup, find_mentions
 from nl2hltl2plan.language.learned.ranker import TypeRanker
 from nl2hltl2plan.language.learned.rescue import rewrite
 from nl2hltl2plan.language.learned.slot_model import SlotModel, SlotPrediction
+from nl2hltl2plan.language.learned.span_order import POINTING
 from nl2hltl2plan.language.learned.structure import StructureModel, load_structure
 from nl2hltl2plan.language.learned.structured import (
     StructurePolicy,
@@ -304,9 +305,10 @@ def grammar_first_reading(instruction: str, ctx: ParseContext) -> LearnedParse:
 
 def structure_reading(
     instruction: str, ctx: ParseContext, structure: StructureModel
-) -> tuple[LearnedParse, float] | None:
-    """The structure model's spans, each read by the grammar + slot model; None when a span does not
-    read completely or the whole does not pass the word accounting."""
+) -> tuple[LearnedParse, float, bool] | None:
+    """The structure model's spans, each read by the grammar + slot model, its confidence and whether a
+    span points back at an earlier one; None when a span does not read completely or the whole does not
+    pass the word accounting."""
     reading = structure.read(without_connective_to(instruction))
     if not reading.spans:
         return None
@@ -333,7 +335,7 @@ def structure_reading(
     parse = LearnedParse(
         instruction=instruction, tasks=tasks, before=before, groups=groups, ambiguities=renamed
     )
-    return parse, reading.confidence
+    return parse, reading.confidence, any(x.relation in POINTING for x in reading.spans)
 
 
 def _renamed_ambiguities(
@@ -357,7 +359,8 @@ def _arbitrated(
     assert rule is not None
     s = structure_reading(instruction, ctx, structure)
     complete = grammar_complete(g)
-    choice = decide((g.tasks, g.before, complete), (s[0].tasks, s[0].before, s[1]) if s else None, rule)
+    model = (s[0].tasks, s[0].before, s[1]) if s else None
+    choice = decide((g.tasks, g.before, complete), model, rule, points=bool(s and s[2]))
     if choice == "model" and s is not None:
         return s[0]
     if choice == "neither" and s is not None:

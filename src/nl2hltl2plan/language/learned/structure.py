@@ -4,12 +4,13 @@ span's temporal relation to the spans before it (`compose.RELATIONS`).
 Tags: `B-<REL>` starts a span, `I` continues it, `O` is a connective or filler word ("then", "once
 you've", "in any order"). Features are the word, its neighbours (3 each side), the first words of its
 sentence ("before you ..."), and the instruction's last words ("... in that order"), so that a
-connective far from the span's first word still labels it, and features of pointing back that do not
-depend on the connective's words (`_pointing_features`). Training uses CRFsuite (`python-crfsuite`,
-the `train` extra); the artifact holds only numpy arrays (feature strings, a weight matrix, the
-transition matrix, the relation head's weights) and inference is numpy Viterbi / forward-backward, so the
-core install reads it. A span tagged REF / RPRE (it points back at one earlier span) gets that span from
-the relation head (`relation_head.py`).
+connective far from the span's first word still labels it, and features that do not depend on the
+connective's words: of pointing back (`_pointing_features`), of the word's shape and of its clause
+(`_clause_features`: a clause that only names earlier objects is a reference, not a task). Training
+uses CRFsuite (`python-crfsuite`, the `train` extra); the artifact holds only numpy arrays (feature
+strings, a weight matrix, the transition matrix, the relation head's weights) and inference is numpy
+Viterbi / forward-backward, so the core install reads it. A span tagged REF / RPRE (it points back at
+one earlier span) gets that span from the relation head (`relation_head.py`).
 
     >>> m = StructureModel.load()
     >>> [(s.text, s.relation) for s in m.read("Put the mug in the sink. Then put the apple in the fridge.")]
@@ -91,6 +92,77 @@ def _pointing_features(low: list[str]) -> list[list[str]]:
     return out
 
 
+# words that say an earlier task is over ("once you're done putting the pan", "when that's complete")
+_DONE_WORDS = frozenset("done finished finish complete completed through over ready dealt sorted".split())
+_CLAUSE_END = frozenset({",", ".", "!", "?", ";", ":"})
+
+
+def _shape(w: str) -> str:
+    """The word's shape, independent of its letters: a gerund, a participle, a number, punctuation."""
+    if not w[:1].isalnum():
+        return "sh=p"
+    if w.isdigit():
+        return "sh=n"
+    if len(w) > 4 and w.endswith("ing"):
+        return "sh=ing"
+    if len(w) > 3 and w.endswith("ed"):
+        return "sh=ed"
+    return "sh=w"
+
+
+@lru_cache(maxsize=1)
+def _object_words() -> frozenset[str]:
+    """The words of the lexicon's names of objects and places ("mug", "counter"), less the words that
+    name every task ("everything")."""
+    from nl2hltl2plan.language.grounding import lexicon
+
+    return frozenset(w for phrase in lexicon() for w in phrase if content_stem(w) and w not in _ALL_WORDS)
+
+
+def _clause_features(low: list[str]) -> list[list[str]]:
+    """Per token, of its clause (the words between two of , . ; : ! ?): whether the clause has a verb,
+    a word saying something is done, a temporal word, an object word (`_object_words`) repeated from an
+    earlier clause and one that is new, what follows it, and the kinds of the clauses before and after
+    it in its sentence. A clause with a temporal word whose object words all repeat earlier ones ("once
+    you're done putting the pan,") names an earlier task, it is no task of its own, whatever its words;
+    a clause with no verb ("your first job:") is no task either."""
+    nouns = _object_words()
+    out: list[list[str]] = [[] for _ in low]
+    earlier: set[str] = set()
+    start = 0
+    kinds: list[tuple[range, str, str]] = []  # each clause, its kind, the mark that ends it
+    for i, w in enumerate(low + ["."]):
+        if w not in _CLAUSE_END and i < len(low):
+            continue
+        clause = range(start, i)
+        stems = [content_stem(low[k]) if low[k] in nouns else None for k in clause]
+        found = [st for st in stems if st]
+        rep = any(st in earlier for st in found)
+        new = any(st not in earlier for st in found)
+        tags = ["cv" if any(low[k] in _VERBS for k in clause) else "cnov"]
+        if any(low[k] in _DONE_WORDS for k in clause):
+            tags.append("cdone")
+        if any(low[k] in _TEMPORAL for k in clause):
+            tags.append("ctemp")
+        tags.append("crep" + ("+new" if new else "") if rep else "cnew" if new else "cnone")
+        if "ctemp" in tags or "cdone" in tags:
+            tags.append(tags[-1] + "&t")
+        tags.append("cnext=" + (low[i] if i < len(low) else "<>"))
+        for pos, k in enumerate(clause):
+            out[k] += tags + ["cp=" + str(min(pos, 3)), "c0=" + low[start]]
+        kinds.append((clause, tags[-2], low[i] if i < len(low) else "."))
+        earlier |= set(found)
+        start = i + 1
+    # the kind of the clause before and after in the same sentence: the task after "having put the pan,"
+    # points back, whatever word opens that clause
+    for n, (clause, _, _) in enumerate(kinds):
+        prev = kinds[n - 1][1] if n and kinds[n - 1][2] in (",", ":") else "<s>"
+        nxt = kinds[n + 1][1] if n + 1 < len(kinds) and kinds[n][2] in (",", ":") else "</s>"
+        for k in clause:
+            out[k] += ["pc=" + prev, "nc=" + nxt]
+    return out
+
+
 def features(words: list[str]) -> list[list[str]]:
     """The CRF's string features for each token (identical in training and inference)."""
     low = [w.lower() for w in words]
@@ -105,7 +177,10 @@ def features(words: list[str]) -> list[list[str]]:
             sent_tail += [end] * (i + 1 - start)
             start = i + 1
     tail = "|".join(w for w in low[-4:] if w not in (".", "!"))
+    words_only = [w for w in low if w[:1].isalnum()]
+    last = words_only[-2:] if words_only else ["<>"]
     pointing = _pointing_features(low)
+    clauses = _clause_features(low)
     out = []
     for i, w in enumerate(low):
         s = sent_start[i]
@@ -127,7 +202,10 @@ def features(words: list[str]) -> list[list[str]]:
             f.append("verb+1")
         if w in _ALL_WORDS:
             f.append("allw")
-        f += pointing[i]
+        f += pointing[i] + clauses[i]
+        f += [_shape(w), "elast=" + last[-1], "elast2=" + "|".join(last)]
+        sent_words = [x for x in sent_tail[i].split("|") if x[:1].isalnum()]
+        f.append("slast=" + (sent_words[-1] if sent_words else "<>"))
         out.append(f)
     return out
 

@@ -55,7 +55,10 @@ def fit(
     trainer = pycrfsuite.Trainer(verbose=False)
     for feats, tags in seqs:
         trainer.append(feats, tags)
-    trainer.set_params({"c1": 0.05, "c2": 0.01, "max_iterations": iterations})
+    # a strong L2 term (0.3, was 0.01) spreads the weight over the features that carry over to unseen
+    # connectives (clause kinds, word shapes) instead of the training phrasings' words: held-out spans
+    # 69 -> 74.5 % right, and fewer wrong readings on every development set (results/language/unseen_h53.md)
+    trainer.set_params({"c1": 0.05, "c2": 0.3, "max_iterations": iterations})
     with tempfile.TemporaryDirectory() as tmp:
         path = str(Path(tmp) / "crf.bin")
         trainer.train(path)

@@ -10,9 +10,10 @@ that does not read completely makes the whole reading incomplete.
 - the grammar's reading is complete and the two agree -> the grammar's;
 - the grammar's reading is incomplete (it lists unread words) and the structure model's is complete,
   passes the word accounting (check 1) and is confident -> the structure model's;
-- both are complete and they disagree -> the structure model's when it is at least `override` sure;
-  when it is less sure than `doubt`, neither is trusted: no tasks, the disagreement goes to `unparsed`;
-  in between the grammar's.
+- both are complete and they disagree -> the structure model's when it is at least `override` sure
+  (`override_pointing` when its reading has a span that points back at an earlier one); when it is less
+  sure than `doubt`, neither is trusted: no tasks, the disagreement goes to `unparsed`; in between the
+  grammar's.
 """
 
 from __future__ import annotations
@@ -36,19 +37,27 @@ _BASE_FORM = {v: k for k, v in VERB_PARTICIPLE.items() if v != k} | {v: k for k,
 class StructurePolicy:
     """When the structure model's reading replaces the grammar's (see the module docstring)."""
 
-    rescue: float = 0.5  # the grammar could not read everything: the model's reading if this sure
+    # results/language/unseen_h53.md: a lower rescue threshold for the better-regularised model (it can
+    # only turn refusals into readings); lower override thresholds convert more on the development sets
+    # but fail the benchmark's floor test (tests/language/test_measure.py), so the grammar still decides
+    # wherever it reads everything
+    rescue: float = 0.4  # the grammar could not read everything: the model's reading if this sure
     override: float = 0.97  # both complete and different: the model's reading if this sure
     doubt: float = 0.0  # ... and neither trusted (-> unparsed) when the model is less sure than this
+    # the override threshold for a model reading with a span that points back (REF / RPRE / ALL: "when
+    # you're done with the pan, Y"); None: `override`
+    override_pointing: float | None = None
 
 
 def decide(
     grammar: tuple[list[BaseTaskSpec], list[tuple[str, str]], bool],
     model: tuple[list[BaseTaskSpec], list[tuple[str, str]], float] | None,
     rule: StructurePolicy,
+    points: bool = False,
 ) -> str:
     """Which reading to take: "grammar", "model" or "neither" (-> unparsed). `grammar`: its tasks, before
     pairs and whether it is complete; `model`: the structure model's complete reading and its confidence
-    (None: incomplete)."""
+    (None: incomplete); `points`: whether the model's reading has a span that points back."""
     if model is None:
         return "grammar"
     tasks, before, confidence = model
@@ -56,7 +65,8 @@ def decide(
         return "model" if confidence >= rule.rescue else "grammar"
     if same_reading(tasks, before, grammar[0], grammar[1]):
         return "grammar"
-    if confidence >= rule.override:
+    override = rule.override_pointing if points and rule.override_pointing is not None else rule.override
+    if confidence >= override:
         return "model"
     return "neither" if confidence < rule.doubt else "grammar"
 

@@ -100,7 +100,7 @@ def converts(parse: LearnedParse, row: dict[str, Any]) -> bool:
 
 def both_readings(
     row: dict[str, Any], model: SlotModel, structure: StructureModel
-) -> tuple[LearnedParse, tuple[LearnedParse, float] | None]:
+) -> tuple[LearnedParse, tuple[LearnedParse, float, bool] | None]:
     """The row's grammar-first reading and the structure model's (with its confidence; None: none)."""
     ctx = ParseContext(scene_types(row["scene"]), row["scene"], None, DEFAULT_POLICY, model)
     try:
@@ -110,12 +110,14 @@ def both_readings(
     return g, structure_reading(row["instruction"], ctx, structure)
 
 
-def choose(g: LearnedParse, s: tuple[LearnedParse, float] | None, rule: StructurePolicy | None) -> str:
+def choose(
+    g: LearnedParse, s: tuple[LearnedParse, float, bool] | None, rule: StructurePolicy | None
+) -> str:
     """Which reading `rule` takes (`structured.decide`); None: the grammar-first reading alone."""
     if rule is None:
         return "grammar"
     model = (s[0].tasks, s[0].before, s[1]) if s else None
-    return decide((g.tasks, g.before, grammar_complete(g)), model, rule)
+    return decide((g.tasks, g.before, grammar_complete(g)), model, rule, points=bool(s and s[2]))
 
 
 def score_set(rows: list[dict[str, Any]]) -> dict[str, dict[Any, list[int]]]:
