@@ -1,25 +1,27 @@
-"""The default offline backend on the benchmark (needs ../shared/data): floors on the measured rates."""
+"""The default offline backend on a composed validation set of ours (needs ../shared/data): floors on the
+measured rates. Never on test50: the benchmark's test set is measured once per round, by the lead, after
+every choice is frozen (docs/evaluation.md), so no test may look at it."""
 
 from __future__ import annotations
 
 import pytest
 
-from nl2hltl2plan.suites.alfred.conversion import evaluate, load_benchmark, offline_generator, table
+from nl2hltl2plan.suites.alfred.conversion import evaluate, offline_generator, table
+from nl2hltl2plan.suites.alfred.structure_validation import rows_of_set
 
 pytestmark = pytest.mark.data
 
 
-def test_offline_match_rates_on_the_benchmark(shared_data):
-    rows = load_benchmark()
+def test_offline_match_rates_on_a_validation_set_of_ours(shared_data):
+    # the benchmark generator's templates over ALFRED valid_unseen annotations (seed 201), 50 per count
+    rows = rows_of_set("faithful_unseen:201", 200)
     assert len(rows) == 200
     records = evaluate(rows, offline_generator)
     by_n = {n: [r for r in records if r["n_base"] == n] for n in (1, 2, 3, 4)}
     rate = {n: sum(r["ok"] for r in rs) / len(rs) for n, rs in by_n.items()}
-    # a refused or partial conversion (issue 23) is a failure: measured 88 / 72 / 48 / 48 % here
-    # (results/language_trust/report.md); keep a margin
-    assert rate[1] >= 0.82 and rate[2] >= 0.66 and rate[3] >= 0.42 and rate[4] >= 0.42, rate
-    assert sum(r["ok"] for r in records) / len(records) >= 0.6
-    clean = [r for r in records if r["clean"]]
-    assert len(clean) == 150 and sum(r["ok"] for r in clean) / len(clean) >= 0.66
+    # a refused or partial conversion (issue 23) is a failure: measured 96 / 86 / 74 / 86 % in session 11
+    # (results/language/session11_merged.md); keep a margin of about four instructions per count
+    assert rate[1] >= 0.88 and rate[2] >= 0.78 and rate[3] >= 0.66 and rate[4] >= 0.78, rate
+    assert sum(r["ok"] for r in records) / len(records) >= 0.8
     assert "| all | 200 |" in table(records)
     assert all(not r["error"] for r in records if r["ok"])
