@@ -79,6 +79,23 @@ def test_ahead_of_that_and_though_first_put_the_task_before(text):
     assert sorted(tasks) == sorted([MUG, APPLE]) and order == {(MUG, APPLE)} and not unread
 
 
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Put the apple in the fridge, and before that put the mug in the sink.",
+        "Put the apple in the fridge and before doing that, put the mug in the sink.",
+    ],
+)
+def test_and_before_that_inside_a_sentence_puts_the_task_before(text):
+    tasks, order, unread = read(text)
+    assert sorted(tasks) == sorted([MUG, APPLE]) and order == {(MUG, APPLE)} and not unread
+
+
+def test_and_then_keeps_the_written_order():
+    """Near miss of "and before that": the same sentence with "and then" keeps the written order."""
+    assert read("Put the apple in the fridge, and then put the mug in the sink.")[1] == {(APPLE, MUG)}
+
+
 def test_then_is_still_after():
     """Near miss of "ahead of that": the same sentences with "then" keep the written order."""
     assert read("Put the apple in the fridge. Then put the mug in the sink.")[1] == {(APPLE, MUG)}

@@ -4,10 +4,12 @@ rebuild the learned language models.
 Trains the slot model (`language.learned`) on ALFRED's train annotations (text-faithful labels) minus
 the benchmark's excluded trials, prints its slot accuracy on valid_seen / valid_unseen, and writes
 the artifacts (default: the user's cache, ~/.cache/nl2hltl2plan/models/, which the offline parser
-then prefers to the packaged models; the installed package is never written): the slot model, then the
-structure model (task spans and their relations, a CRF over synthetic compositions of the same
-annotations), with its span accuracy on compositions of valid_unseen. Each file is written to a
-temporary file and renamed: a kill leaves the previous model. Deterministic for a seed; about 3-4
+then prefers to the packaged models; the installed package is never written): the structure model
+(task spans and their relations, a CRF over synthetic compositions of the same annotations), with its
+span accuracy on compositions of valid_unseen, then the slot model, whose type ranker learns from the
+offline parser's readings with the structure model the parser prefers (the one just written, when it is
+written to the default or the packaged place: then one run rebuilds both, whatever was there before).
+Each file is written to a temporary file and renamed: a kill leaves the previous model. Deterministic for a seed; about 3-4
 minutes on 2 cores (needs the `train` extra).
 """
 
@@ -47,9 +49,9 @@ def run(args: argparse.Namespace) -> int:
     from nl2hltl2plan.language.learned.structure import user_structure_path
     from nl2hltl2plan.language.learned.train import train_and_report
 
-    jobs = [
-        ("slots", args.out or user_model_path(), train_and_report),
+    jobs = [  # the structure model first: the slot model's ranker reads with it
         ("structure", args.structure_out or user_structure_path(), structure_train.train_and_report),
+        ("slots", args.out or user_model_path(), train_and_report),
     ]
     for name, path, job in jobs:
         if args.only not in (None, name):

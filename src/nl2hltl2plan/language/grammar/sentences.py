@@ -202,9 +202,12 @@ _USE_LAMP = re.compile(
 # "cool some bread and the place it on the counter", "put two apples on a counter the cut them": "the"
 # typed for "then" (a verb and "it"/"them" follow it, so it opens no noun phrase)
 _THE_FOR_THEN = re.compile(r"\b(?<!of )the (?=([a-z]+) (?:it|them)\b)", re.IGNORECASE)
-# "X, but before you do that, Y" / "X, but first Y" inside a sentence: Y comes first ("Before that, Y.")
+# "X, but before you do that, Y" / "X, but first Y" / "X, and before that, Y" inside a sentence: Y comes
+# first ("Before that, Y."); "and first" is left alone ("rinse it and first ..." is no such marker)
+_BEFORE_THAT = r"before\s+(?:that|this|(?:you\s+do|doing)\s+(?:that|this|so|it))"
 _BUT_BEFORE = re.compile(
-    r"(?<=\w)\s*,?\s+(?:but|though|although)\s+(?:before\s+(?:that|this|(?:you\s+do|doing)\s+(?:that|this|so|it))|first)\s*,?\s+(?=[a-z])",
+    rf"(?<=\w)\s*,?\s+(?:(?:but|though|although)\s+(?:{_BEFORE_THAT}|first)|and\s+{_BEFORE_THAT})\s*,?\s+"
+    r"(?=[a-z])",
     re.IGNORECASE,
 )
 _FIRST_OPENER = re.compile(r"^\s*(?:first|firstly|start|begin|to\s+(?:start|begin))\b", re.IGNORECASE)
