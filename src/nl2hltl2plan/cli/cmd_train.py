@@ -9,8 +9,8 @@ then prefers to the packaged models; the installed package is never written): th
 span accuracy on compositions of valid_unseen, then the slot model, whose type ranker learns from the
 offline parser's readings with the structure model the parser prefers (the one just written, when it is
 written to the default or the packaged place: then one run rebuilds both, whatever was there before).
-Each file is written to a temporary file and renamed: a kill leaves the previous model. Deterministic for a seed; about 3-4
-minutes on 2 cores (needs the `train` extra).
+Each file is written to a temporary file and renamed: a kill leaves the previous model. Deterministic
+for a seed; about 3-4 minutes on 2 cores (needs the `train` extra).
 """
 
 from __future__ import annotations
