@@ -428,6 +428,9 @@ _DONE = (
     r"(?:done|finished|finish|complete|completed|over|through|in\s+place|handled|taken\s+care\s+of|"
     r"out\s+of\s+the\s+way)"
 )
+# the words that open a reference the task comes after ("after X, Y", "right after X, Y", "once X, Y");
+# `sentences.after_ref` splits such a reference from its task
+AFTER_OPENER = r"(?:(?:only|right|just|immediately)\s+)?(?:after|once|when|following|upon)\s+"
 LEADING: list[tuple[re.Pattern[str], str]] = [
     (
         re.compile(
@@ -488,13 +491,7 @@ LEADING: list[tuple[re.Pattern[str], str]] = [
         AFTER_ALL,
     ),
     (re.compile(r"^(?:while|during|as)\b[^,]*,\s*", _F), NOCONSTRAINT),
-    (
-        re.compile(
-            r"^(?:(?:only|right|just|immediately)\s+)?(?:after|once|when|following|upon)\s+(?P<ref>[^,]+),\s*",
-            _F,
-        ),
-        AFTER_REF,
-    ),
+    (re.compile(rf"^{AFTER_OPENER}(?P<ref>[^,]+),\s*", _F), AFTER_REF),
     (re.compile(r"^(?:just\s+)?(?:before|prior\s+to|ahead\s+of)\s+(?P<ref>[^,]+),\s*", _F), BEFORE_REF),
     (
         re.compile(
