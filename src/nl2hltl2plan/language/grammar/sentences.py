@@ -136,7 +136,8 @@ def without_connective_to(text: str) -> str:
 
 # "as soon as you've X" is "once you've X"
 _AS_SOON_AS = re.compile(r"\bas\s+soon\s+as\b(?!\s+(?:possible|you\s+can)\b)", re.I)
-# "once you've put X" after a connective: "once you have put X" (the form the references read)
+# "once you've put X" after a connective: "once you have put X" (the form the references read; no rule
+# after this one, nor the leading markers, sees "you've" after a connective)
 _CONNECTIVE_YOUVE = re.compile(r"\b(after|once|when|before|until)\s+you've\b", re.I)
 # "Only after you've X should you Y" (the clause after the connective, then an inverted "should you"):
 # "After you've X, Y"
@@ -236,7 +237,7 @@ _RINSE_ADJ = re.compile(r"\b(a|an|the)\s+rinse(?:\s+off)?\s+(?=[a-z])", re.IGNOR
 # "put X in A, and after that put Y in B"
 _THEN_INSIDE = re.compile(
     r"(?<=\w)\s*,?\s+(?:and\s+)?(?:"
-    r"(?:once|when|after)\s+(?:that's|that\s+is|it's|it\s+is|this\s+is|you're|you\s+are|you've|you\s+have)?"
+    r"(?:once|when|after)\s+(?:that's|that\s+is|it's|it\s+is|this\s+is|you're|you\s+are|you\s+have)?"
     r"\s*(?:done|finished|through|there|in\s+place|handled|taken\s+care\s+of|out\s+of\s+the\s+way)"
     r"(?:\s+with\s+(?:that|it|this))?"
     r"|after\s+(?:that|this)|afterwards?|following\s+that"

@@ -439,7 +439,7 @@ LEADING: list[tuple[re.Pattern[str], str]] = [
             r"(?:with\s+)?(?:that|this)\s+(?:done|finished|completed|out\s+of\s+the\s+way)|"
             r"having\s+(?:done|finished|completed)\s+(?:that|this|so)|"
             r"(?:second|third|fourth|fifth)(?:ly)?(?=\s*[,:])|"
-            rf"(?:once|when|after)\s+(?:(?:that|this|it|you)(?:'s|'re|'ve)?)?\s*(?:is\s+|are\s+|have\s+|has\s+)?{_DONE}"
+            rf"(?:once|when|after)\s+(?:(?:that|this|it|you)(?:'s|'re)?)?\s*(?:is\s+|are\s+|have\s+|has\s+)?{_DONE}"
             r"(?:\s+(?:with\s+)?(?:that|this|it|so)\b)?|"
             r"after\s+(?:doing|finishing|completing)\s+(?:that|this|it))\b\s*[,:]?\s*",
             _F,
