@@ -140,7 +140,7 @@ _AS_SOON_AS = re.compile(r"\bas\s+soon\s+as\b(?!\s+(?:possible|you\s+can)\b)", r
 # after this one, nor the leading markers, sees "you've" after a connective)
 _CONNECTIVE_YOUVE = re.compile(r"\b(after|once|when|before|until)\s+you've\b", re.I)
 # "Only after you've X should you Y" (the clause after the connective, then an inverted "should you"):
-# "After you've X, Y"
+# "After you have X, Y"
 _ONLY_AFTER_SHOULD = re.compile(
     r"\bonly\s+(after|once|when)\s+([^,.;!?]+?),?\s+(?:should|can|may|must|do|will)\s+you\s+(?=[a-z])", re.I
 )
