@@ -314,7 +314,7 @@ def _next_mention(mentions: list[Mention], words: list[str], i: int, within: int
 _PLACE_PREPS = (LOCATIVE - {"of"}) | {"to", "into", "onto"}
 
 
-def _both_and(w: str, instruction: str, start: int, m: Mention) -> bool:
+def _both_before_a_list(w: str, instruction: str, start: int, m: Mention) -> bool:
     """ "both the mug and the apple": "both" names the pair of the list, not two mugs (as the grammar reads
     it, `sentences._BOTH_BEFORE_LIST`)."""
     between = instruction[start + len(w) : m.char_start]
@@ -476,7 +476,7 @@ def _count(
     m = _next_mention(mentions, [t[0] for t in toks], i)
     if m is None or re.search(r"[,.;:!?]", instruction[start : m.char_start]):
         return None
-    if _both_and(w, instruction, start, m):
+    if _both_before_a_list(w, instruction, start, m):
         return None
     types = set(m.entry.types)
     held = None

@@ -62,10 +62,11 @@ class DraftBuilder:
     def add_sentence(self, s: Sentence) -> None:
         """Read the clauses of one sentence into drafts and units, then apply the sentence's markers."""
         said = split_clauses(s.body)
-        # "the knife is in the sink": a statement, not a request (before a verb is lent to it by gapping)
-        self.b.unparsed += [c[0] for c in said if states_where(c[0])]
-        said = [c for c in said if not states_where(c[0])]
-        clauses = expand_gapping(said, self.last_verb, self.last_dest, gap_base=100 * s.index)
+        # "the knife is in the sink": a statement, not a request (set aside before gapping lends it a verb)
+        statements = [c for c in said if states_where(c[0])]
+        self.b.unparsed += [c[0] for c in statements]
+        requests = [c for c in said if c not in statements]
+        clauses = expand_gapping(requests, self.last_verb, self.last_dest, gap_base=100 * s.index)
         st = _SentenceState(s, len(self.out.units))
         for clause in clauses:
             self._add_clause(clause, st)
@@ -267,11 +268,11 @@ _COPULA_PLACE = re.compile(
 )
 
 
-def states_where(c_text: str) -> bool:
+def states_where(clause: str) -> bool:
     """A clause with no verb of ours that says where a thing is ("the knife is in the sink", "the moment the
     fork is on the table"): it states no task, and reading it as a placement would be a guess."""
-    words = tokens(c_text)
-    return bool(words) and words[0][0] not in G.VERBS and _COPULA_PLACE.search(c_text) is not None
+    words = tokens(clause)
+    return bool(words) and words[0][0] not in G.VERBS and _COPULA_PLACE.search(clause) is not None
 
 
 def _continues(d: Draft, fr: Frame, it: Item, joiner: str) -> bool:

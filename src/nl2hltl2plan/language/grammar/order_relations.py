@@ -62,7 +62,7 @@ def _marker_edges(k: int, tasks: Tasks, free: set[int], b: TaskBuilder, text: st
             # "W, then X. Before that, Y": Y goes in between, after what X comes after (span_order's PRE)
             earlier_steps = {w for w, a in edges if a in outer.tasks and w not in u.tasks}
             edges.update((w, b2) for w in earlier_steps for b2 in u.tasks)
-        elif kind in (G.IN_ORDER, G.IN_REVERSE):  # "..., in that order": each task after the one named before
+        elif kind in (G.IN_ORDER, G.IN_REVERSE):  # "..., in that order" / "..., in reverse order"
             own = sorted(t for v in units if v.sentence == u.sentence for t in v.tasks)
             pairs = zip(own, own[1:], strict=False)
             edges.update(pairs if kind == G.IN_ORDER else ((b2, a) for a, b2 in pairs))
@@ -74,6 +74,8 @@ def _marker_edges(k: int, tasks: Tasks, free: set[int], b: TaskBuilder, text: st
         edges.update((a, b2) for a in seq_prev.tasks for b2 in u.tasks)
 
 
+# a word that may free a task of its sentence; it matches "any" as a determiner too ("put any mug in the
+# sink"), where nothing is freed
 _FREE_WORD = re.compile(
     r"\b(?:any|anytime|whenever|whatever|meanwhile|simultaneously|parallel|independently)\b", re.I
 )
@@ -82,7 +84,7 @@ _FREE_WORD = re.compile(
 def _last_step(units: list[Unit], sentence: int, free: set[int], edges: Edges, text: str) -> list[int]:
     """The tasks of a sentence that "Then" in the next sentence comes after: those no other task of the
     sentence comes after, unless free ("A and B. Then C": after both, as `span_order`'s step). Empty (the
-    last clause alone) when the sentence frees a task in its middle ("A at any time and B. Then C")."""
+    last clause alone) when the sentence has a `_FREE_WORD` anywhere ("A at any time and B. Then C")."""
     sentences = split_sentences(text)
     if sentence >= len(sentences) or _FREE_WORD.search(sentences[sentence][0]):
         return []

@@ -136,20 +136,20 @@ def without_connective_to(text: str) -> str:
 
 # "as soon as you've X" is "once you've X"
 _AS_SOON_AS = re.compile(r"\bas\s+soon\s+as\b(?!\s+(?:possible|you\s+can)\b)", re.I)
-# "once you've put X" after a connective: "once you have put X" (the form the references read)
+# "once you've put X" after a connective: "once you have put X" (the form the references read; no rule
+# after this one, nor the leading markers, sees "you've" after a connective)
 _CONNECTIVE_YOUVE = re.compile(r"\b(after|once|when|before|until)\s+you've\b", re.I)
 # "Only after you've X should you Y" (the clause after the connective, then an inverted "should you"):
-# "After you've X, Y"
+# "After you have X, Y"
 _ONLY_AFTER_SHOULD = re.compile(
     r"\bonly\s+(after|once|when)\s+([^,.;!?]+?),?\s+(?:should|can|may|must|do|will)\s+you\s+(?=[a-z])", re.I
 )
 # "both the mug and the apple", "the mug and the apple both in the sink", "the cup and the bowl all in the
 # sink": the quantifier names the listed things, it is no count of the last one
-_BOTH_BEFORE_LIST = re.compile(
-    r"\bboth\s+(?=(?:the|a|an|my|your|this|that)\s+[^,.;!?]+?\s+and\s+(?:the|a|an|my|your|this|that)\s)", re.I
-)
+_DET = r"(?:the|a|an|my|your|this|that)"  # the words that open a listed object's noun phrase
+_BOTH_BEFORE_LIST = re.compile(rf"\bboth\s+(?={_DET}\s+[^,.;!?]+?\s+and\s+{_DET}\s)", re.I)
 _BOTH_AFTER_LIST = re.compile(
-    r"(\band\s+(?:the|a|an|my|your|this|that)\s+[a-z]+(?:\s+[a-z]+)?)\s+(?:both|all)\s+"
+    rf"(\band\s+{_DET}\s+[a-z]+(?:\s+[a-z]+)?)\s+(?:both|all)\s+"
     r"(?=(?:in|into|on|onto|inside|to|back|away)\b)",
     re.I,
 )
@@ -240,7 +240,7 @@ _RINSE_ADJ = re.compile(r"\b(a|an|the)\s+rinse(?:\s+off)?\s+(?=[a-z])", re.IGNOR
 # "put X in A, and after that put Y in B"
 _THEN_INSIDE = re.compile(
     r"(?<=\w)\s*,?\s+(?:and\s+)?(?:"
-    r"(?:once|when|after)\s+(?:that's|that\s+is|it's|it\s+is|this\s+is|you're|you\s+are|you've|you\s+have)?"
+    r"(?:once|when|after)\s+(?:that's|that\s+is|it's|it\s+is|this\s+is|you're|you\s+are|you\s+have)?"
     r"\s*(?:done|finished|through|there|in\s+place|handled|taken\s+care\s+of|out\s+of\s+the\s+way)"
     r"(?:\s+with\s+(?:that|it|this))?"
     r"|after\s+(?:that|this)|afterwards?|following\s+that"
@@ -272,19 +272,26 @@ _STATES_JOINED = re.compile(
 )
 
 
+def _as_cased(word: str, replaced: str) -> str:
+    """`word` with a capital where the words it replaces start with one (the start of a sentence)."""
+    return word.capitalize() if replaced[:1].isupper() else word
+
+
 def normalize(text: str) -> str:
-    """Straight quotes, a space after a full stop, no parenthetical remarks, single spaces."""
+    """The text as the rules read it: straight quotes, a space after a full stop, no parenthetical remarks,
+    each phrasing above rewritten onto the one the rules read (its comment says which), single spaces and
+    the placement verb a terse request leaves out (`supply_put`)."""
     text = text.replace("\u2019", "'").replace("\u2018", "'").replace("\u201c", '"').replace("\u201d", '"')
     text = re.sub(r"(?<=[a-z])\.(?=[A-Za-z])", ". ", text)
     text = re.sub(r"\s*\([^)]*\)", "", text)  # parenthetical remarks: "(where the red block is now)"
     text = without_connective_to(text)
-    text = _AS_SOON_AS.sub(lambda m: "Once" if m.group(0)[0] == "A" else "once", text)
+    text = _AS_SOON_AS.sub(lambda m: _as_cased("once", m[0]), text)
     text = _CONNECTIVE_YOUVE.sub(r"\1 you have", text)
     text = _BOTH_AFTER_LIST.sub(r"\1 ", _BOTH_BEFORE_LIST.sub("", text))
     text = _WHERE_IT_IS.sub("from ", text)
-    text = _ONLY_AFTER_SHOULD.sub(lambda m: f"{'A' if m.group(0)[0] == 'O' else 'a'}fter {m[2]}, ", text)
+    text = _ONLY_AFTER_SHOULD.sub(lambda m: f"{_as_cased('after', m[0])} {m[2]}, ", text)
     # "Do not Y until (you) X" states the order of "After X, Y" (ANNOTATION_GUIDE.md)
-    text = _UNTIL.sub(lambda m: f"{'A' if m.group(1) == 'D' else 'a'}fter {m.group(3)}, {m.group(2)}", text)
+    text = _UNTIL.sub(lambda m: f"{_as_cased('after', m[1])} {m[3]}, {m[2]}", text)
     text = _NOT_BEFORE.sub(", but only after ", text)
     text = _STATES_LISTED.sub(r"\1 ", text)  # "a chilled, cut slice": one noun phrase, not two clauses
     text = _STATES_JOINED.sub(r"\1 ", text)
@@ -301,7 +308,7 @@ def normalize(text: str) -> str:
     text = _FOLLOWED_TO.sub(r" and finally \1", text)
     text = _DONE_GERUND.sub(r"\1 ", text)
     text = _THEN_INSIDE.sub(", then ", text)
-    text = _DONE_WITH.sub(lambda m: "After " if m.group(1)[0].isupper() else "after ", text)
+    text = _DONE_WITH.sub(lambda m: _as_cased("after ", m[1]), text)
     return supply_put(re.sub(r"\s+", " ", text).strip())
 
 
@@ -381,9 +388,7 @@ def split_sentences(text: str) -> list[tuple[str, int]]:
 def after_ref(body: str) -> tuple[str, str] | None:
     """ "After placing the plunger, soap bottle, and towel, put ...": (reference, rest) split at the comma
     that is followed by a verb (references may contain commas)."""
-    m = re.match(
-        r"^(?:(?:only|right|just|immediately)\s+)?(?:after|once|when|following|upon)\s+", body, flags=re.I
-    )
+    m = re.match(rf"^{G.AFTER_OPENER}", body, flags=re.I)
     if not m or re.match(
         r"^(?:completing|finishing|doing|all|these|those|the\s+previous|the\s+above|both|"
         r"everything|each|every|that|this|it|which|done|finished|complete|completed|over|through|you|we)\b",

@@ -428,6 +428,9 @@ _DONE = (
     r"(?:done|finished|finish|complete|completed|over|through|in\s+place|handled|taken\s+care\s+of|"
     r"out\s+of\s+the\s+way)"
 )
+# the words that open a reference the task comes after ("after X, Y", "right after X, Y", "once X, Y");
+# `sentences.after_ref` splits such a reference from its task
+AFTER_OPENER = r"(?:(?:only|right|just|immediately)\s+)?(?:after|once|when|following|upon)\s+"
 LEADING: list[tuple[re.Pattern[str], str]] = [
     (
         re.compile(
@@ -436,7 +439,7 @@ LEADING: list[tuple[re.Pattern[str], str]] = [
             r"(?:with\s+)?(?:that|this)\s+(?:done|finished|completed|out\s+of\s+the\s+way)|"
             r"having\s+(?:done|finished|completed)\s+(?:that|this|so)|"
             r"(?:second|third|fourth|fifth)(?:ly)?(?=\s*[,:])|"
-            rf"(?:once|when|after)\s+(?:(?:that|this|it|you)(?:'s|'re|'ve)?)?\s*(?:is\s+|are\s+|have\s+|has\s+)?{_DONE}"
+            rf"(?:once|when|after)\s+(?:(?:that|this|it|you)(?:'s|'re)?)?\s*(?:is\s+|are\s+|have\s+|has\s+)?{_DONE}"
             r"(?:\s+(?:with\s+)?(?:that|this|it|so)\b)?|"
             r"after\s+(?:doing|finishing|completing)\s+(?:that|this|it))\b\s*[,:]?\s*",
             _F,
@@ -488,13 +491,7 @@ LEADING: list[tuple[re.Pattern[str], str]] = [
         AFTER_ALL,
     ),
     (re.compile(r"^(?:while|during|as)\b[^,]*,\s*", _F), NOCONSTRAINT),
-    (
-        re.compile(
-            r"^(?:(?:only|right|just|immediately)\s+)?(?:after|once|when|following|upon)\s+(?P<ref>[^,]+),\s*",
-            _F,
-        ),
-        AFTER_REF,
-    ),
+    (re.compile(rf"^{AFTER_OPENER}(?P<ref>[^,]+),\s*", _F), AFTER_REF),
     (re.compile(r"^(?:just\s+)?(?:before|prior\s+to|ahead\s+of)\s+(?P<ref>[^,]+),\s*", _F), BEFORE_REF),
     (
         re.compile(
