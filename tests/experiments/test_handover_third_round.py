@@ -1,5 +1,6 @@
 """Session 11, third round (h55): a left-dislocated topic taken up by a pronoun, a scene statement that
-introduces the blocks, the commas of an unpunctuated dictation restored at its clause breaks, and a
+introduces the blocks, word-table forms ("be careful to", "when you have finished", "whenever's
+convenient", "right by arm a"), the commas of an unpunctuated dictation restored at its clause breaks, and a
 narrated command or prohibition after its period ("meanwhile you won't ..."). Each class has sentences that
 must give the written spec and near misses that must be refused (never the written spec)."""
 
@@ -40,6 +41,27 @@ READ = [
     # unpunctuated dictation: a clause begins where a colour follows a block, a region or "placed first"
     (5, "swap the red and blue blocks red placed first yellow to the opposite side at any time"),
     (8, "put yellow on i then on g red and blue to any empty region at any time"),
+    # word-table forms: "be careful to", "when you have finished", "whenever's convenient", "right by"
+    (
+        1,
+        "Move the three blocks to the opposite side. Be careful to put the red block down before the "
+        "blue block.",
+    ),
+    (
+        4,
+        "Transfer the three blocks to the opposite regions. Do not touch the blue block until the red block "
+        "has been touched. When you have finished, the yellow block goes back to region G.",
+    ),
+    (
+        5,
+        "Exchange the positions of the red and blue blocks, red placed first, and put the yellow block on "
+        "the opposite side whenever's convenient.",
+    ),
+    (
+        3,
+        "Move the three pillars to regions E, F and G, right by arm a and arm b. Place nothing on any "
+        "other region.",
+    ),
     # a narrated prohibition after its period
     (
         7,
@@ -64,6 +86,27 @@ REFUSED = [
         7,
         "You'll place the three objects on I one after another, red before blue. Meanwhile you can put "
         "objects on F, G or H.",
+    ),
+    # the same words with a meaning they do not drop: a negation, a landmark that contradicts the place
+    (
+        1,
+        "Move the three blocks to the opposite side. Be careful not to place the blue block before the "
+        "red block.",
+    ),
+    (
+        4,
+        "Transfer the three blocks to the opposite regions. Do not touch the blue block until the red block "
+        "has been touched. When you have not finished, put the yellow block back on region G.",
+    ),
+    (
+        5,
+        "Exchange the positions of the red and blue blocks, red placed first, and put the yellow block on "
+        "the opposite side whenever is not convenient.",
+    ),
+    (
+        3,
+        "Move the three pillars to regions H, I and J, right next to arm a and arm b. Place nothing on any "
+        "other region.",
     ),
     # a dictated order whose clause break is not at a colour: left unread
     (6, "place the three objects separately on g h and i red placed first blue after"),
