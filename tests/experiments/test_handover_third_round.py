@@ -143,6 +143,8 @@ def test_third_round_near_misses_are_refused(task_id, text):
         ("the three blocks , move it to h", "the three blocks , move it to h"),  # number disagrees
         ("exchange red and blue blocks red first", "exchange red and blue blocks , red first"),
         ("then to g red and blue to h", "then to g , red and blue to h"),
+        ("touched after that yellow back to g", "touched after that , yellow back to g"),
+        ("after that yellow block to g", "after that yellow block to g"),  # "that": maybe a determiner
         ("put a red block on g", "put a red block on g"),  # "a": the article
         ("put one red block on g", "put one red block on g"),  # "one": a count
         ("put red on g , blue on h", "put red on g , blue on h"),  # punctuated: left as it is

@@ -210,10 +210,19 @@ _CLAUSE_BREAK = re.compile(
 )
 
 
+# ... and after a step marker that a bare colour follows ("after that yellow back to g"; not "after that
+# yellow block", where "that" may be the determiner)
+_MARKER_BREAK = re.compile(
+    r"\b(after\s+(?:that|this)|afterwards)\s+(?=(?:red|blue|yellow)\b(?!\s+(?:blocks?|ones?|cubes?|pillars?)\b))"
+)
+
+
 def _clause_breaks(text: str) -> str:
     """The commas of a sentence dictated without any punctuation, restored at the clause breaks of
-    `_CLAUSE_BREAK`; a sentence with a comma, semicolon or colon is left as it is."""
-    return text if re.search(r"[,;:]", text) else _CLAUSE_BREAK.sub(r"\1 , ", text)
+    `_CLAUSE_BREAK` and `_MARKER_BREAK`; a sentence with a comma, semicolon or colon is left as it is."""
+    if re.search(r"[,;:]", text):
+        return text
+    return _MARKER_BREAK.sub(r"\1 , ", _CLAUSE_BREAK.sub(r"\1 , ", text))
 
 
 # a left-dislocated topic: blocks ("the three blocks", "the red one") or named regions ("regions f, g and h")
