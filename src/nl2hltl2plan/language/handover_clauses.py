@@ -4,7 +4,9 @@
 - a scene statement says where blocks are now: "the pillars sit on H, I and J (but belong in ...)",
   "take the three pillars, which are standing on regions H, I and J at the moment, and ...". It asks for
   nothing, so it gives no goal, but it is checked against the world: a statement the layout contradicts
-  is refused (the writer and the reader would disagree about the scene);
+  is refused (the writer and the reader would disagree about the scene). A statement that introduces the
+  blocks ("here we have three blocks", "there are three objects on the table") must name every block of
+  the scene, or it is refused; it gives no goal, and "them" in what follows is its group;
 - a target statement names the goal regions before the goal: "regions H, I and J are the targets (and
   each can only hold one object), so the blocks should end up spread over them". It is dropped only when
   a later clause of the sentence names the same regions; a region list left alone is refused;
@@ -77,6 +79,27 @@ def _refuse_scene(m: Marked, scene: Scene, b: str, text: str) -> HTTError:
 
 
 def _read_scene(m: Marked, scene: Scene) -> None:
+    def present(match: re.Match[str]) -> str:
+        group = m.blocks[int(match.group("b"))]
+        if sorted(group) != sorted(scene.starts):
+            said = " ".join(
+                match.group(0).replace(f"B{match.group('b')}", m.block_text[int(match.group("b"))]).split()
+            )
+            raise HTTError(
+                f"'{said.strip(' ,')}' does not hold in this scene (its blocks: "
+                f"{', '.join(x.lower() for x in sorted(scene.starts))}); say which blocks go where"
+            )
+        return match.group("lead")
+
+    # "here we have three blocks", "there are three pillars on the table": every block of the scene, or
+    # refused; a statement that asks nothing, it gives no goal ("them" in the next sentence is the group)
+    m.sub(
+        r"(?P<lead>^|,|;)\s*(?:so\s+)?(?:(?:here|there)\s+(?:we\s+have|you\s+have|are|is)|we\s+(?:have\s+got|have|got))"
+        r"\s+B(?P<b>\d+)\s*(?:(?:here|there|on\s+the\s+(?:table|workspace)|in\s+(?:the\s+)?(?:scene|workspace)|"
+        r"in\s+front\s+of\s+(?:you|us))\s*)?(?=,|;|$)",
+        present,
+    )
+
     def relative(match: re.Match[str]) -> str:
         if not _holds(m, scene, match.group(1), match.group(2)):
             raise _refuse_scene(m, scene, match.group(1), match.group(0))

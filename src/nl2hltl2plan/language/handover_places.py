@@ -199,18 +199,18 @@ def _mark_arm_sides(m: Marked, scene: Scene) -> None:
     """'the side of arm a and arm b' (a place), 'next to arm a and arm b' (a landmark beside a place)."""
 
     def arms(match: re.Match[str]) -> str:
-        letters = re.findall(r"\b[a-d]\b", re.sub(r"side of|reach of", "", match.group(0)))
+        said = re.sub(r"^(?:right|just|directly)\s+", "", match.group(0).strip())  # "right next to": next to
+        letters = re.findall(r"\b[a-d]\b", re.sub(r"side of|reach of", "", said))
         regions = scene.arms_side(["abcd".index(x) for x in letters])
-        side = (
-            "side" in match.group(0) or re.search(r"(?:area|region|zone)s?\s+of", match.group(0)) is not None
-        )
+        side = "side" in said or re.search(r"(?:area|region|zone)s?\s+of", said) is not None
         kind: Literal["regions", "landmark"] = "regions" if side else "landmark"
-        if re.match(r"on|of|at", match.group(0)) and kind == "landmark":  # "on arm a" names no place
+        if re.match(r"on|of|at", said) and kind == "landmark":  # "on arm a" names no place
             return match.group(0)
-        return _new_place(m, Place(kind, regions, text=match.group(0).strip()))
+        return _new_place(m, Place(kind, regions, text=said))
 
     m.sub(
-        r"\b(?:(?:the\s+)?sides?\s+of|(?:the\s+)?(?:goal\s+|target\s+|placement\s+)?(?:area|region|zone)s?\s+of|"
+        r"\b(?:(?:right|just|directly)\s+(?=next|beside|by|near|close|adjacent))?"
+        r"(?:(?:the\s+)?sides?\s+of|(?:the\s+)?(?:goal\s+|target\s+|placement\s+)?(?:area|region|zone)s?\s+of|"
         r"next\s+to|beside|by|near|close\s+to|in\s+front\s+of|within\s+reach\s+of|"
         r"reachable\s+by|adjacent\s+to|on|of|at)\s+(?:the\s+)?arms?\s+[a-d](?:\s*(?:,|and|&)\s*(?:the\s+)?(?:arm\s+)?[a-d])*"
         r"(?:(?:\s+s)?\s+sides?)?\b",

@@ -1,7 +1,7 @@
 """Spoken and instructor styles of the handover instructions, normalised before the reader's word tables
 (`handover_phrases.normalise` calls `unspoken` on the lower-cased, typo-mended sentence).
 
-Three general steps, each removing only words that carry no block, place, arm, count, negation, order or
+General steps, each removing only words that carry no block, place, arm, count, negation, order or
 time (a word that might carry one is left for the reader, which reads it or refuses naming it):
 
 - discourse fillers and hedges: hesitations ("um", "uh", "er"), "you know", "basically", "yeah",
@@ -13,8 +13,14 @@ time (a word that might carry one is left for the reader, which reads it or refu
   something else ("on g, i mean h") is refused, naming it: the reader never guesses which was meant;
 - second-person narration read as commands: "you'll put", "you want to place", "your job is to",
   "what we're going to do is", "in this exercise you move", "you start by placing" (first),
-  "you may not / you're not allowed to" (do not), and a topic taken up by a pronoun ("the pillars, they
-  need to go ...").
+  "you may not / you're not allowed to" (do not), also after the time or period said first ("meanwhile
+  you won't place ...", "during this period you will not ...");
+- left dislocation: a topic set off before its clause and taken up in it by a pronoun of its number ("the
+  three blocks, I need them on ...", "the blue block, don't touch it until ...", "regions F, G and H,
+  nothing may go on them") is put in the pronoun's place; otherwise it is left, and refused by name;
+- unpunctuated dictation: where no comma, semicolon or colon is written, a clause break is restored where
+  a colour follows a block, a region letter or "placed first" ("swap the red and blue blocks red placed
+  first yellow to ...").
 """
 
 from __future__ import annotations
@@ -107,7 +113,12 @@ _FILLERS: tuple[tuple[str, str], ...] = (
 _SUBJECT = r"(?:you|we)"
 # (not "you can / may / get to put ...": a permission is not a command)
 _WILL = r"(?:\s+will|\s+shall|\s+are\s+going\s+to|\s+want\s+to|\s+need\s+to|\s+have\s+to|\s+must|\s+should)?"
-_ANCHOR = r"(^|,|;|\band\b|\bthen\b|\bfirst\b|\bat\s+(?:some|any)\s+(?:point|time)\b)"
+# where a narrated command may start: a clause's start, a step word, or its time or period said first
+# ("meanwhile you won't place ...", "during this period you will not place ...")
+_ANCHOR = (
+    r"(^|,|;|\band\b|\bthen\b|\bfirst\b|\bat\s+(?:some|any)\s+(?:point|time)\b|\bmeanwhile\b|"
+    r"\bin\s+the\s+meantime\b|\bthroughout\b|\bduring\s+(?:this|that|the\s+whole)\s+(?:period|time)\b)"
+)
 _NARRATION: tuple[tuple[str, str], ...] = (
     (
         r"^\s*(?:in|for)\s+this\s+(?:task|exercise|run|one|activity|lesson|part|round|session|step)\s*,?\s*",
@@ -147,12 +158,6 @@ _NARRATION: tuple[tuple[str, str], ...] = (
         rf"(?=(?!want\b|need\b)(?:{VERB}|exchange|swap|fill|touch)\b)",  # "we want them on ...": a need
         r"\1 \2 ",
     ),
-    # a topic taken up by a pronoun: "the pillars, they need to go ...", "the yellow block, that one ..."
-    (
-        r"(^|,)\s*(?:and\s+)?((?:the\s+)?(?:(?:all|three|two|red|blue|yellow|and|both)\s+){0,4}"
-        r"(?:blocks?|pillars?|objects?|ones?))\s*,\s*(?:they|it|that\s+one|those(?:\s+ones)?|these)\s+(?=\w)",
-        r"\1 \2 ",
-    ),
     (r"\b(?:can|could)\s+we\s+", "please "),
     (r"\b(?:how\s+about|why\s+do\s+not)\s+(?:you|we)\s+(?=(?:" + VERB + r"|swap|exchange)\b)", "please "),
     # spoken idioms of the rules: "hands off X until ...", "you can't double up", "doesn't matter when"
@@ -187,13 +192,66 @@ def unspoken(text: str) -> str:
     """The sentence with its spoken fillers, hedges, repeated phrases and narration normalised away (see
     the module docstring); a self-correction that says something else is refused."""
     contractions, fillers, narration = _STEPS
-    text = _apply(fillers, _apply(contractions, text))
+    text = _apply(fillers, _apply(contractions, _clause_breaks(text)))
     text = re.sub(r"(\s*,)+", " ,", _said_once(text))  # the commas left where fillers were
     text = _apply(narration, _apply(fillers, text))  # fillers again: an opener behind a hesitation
-    text = re.sub(r"(\s*,)+", " ,", text)
+    text = _resumed(re.sub(r"(\s*,)+", " ,", text))
     text = re.sub(r"^\s*,|,\s*$", " ", text)
     text = re.sub(r"\b(the|a|and|to|on|in)\s+\1\b", r"\1", text)  # a stutter: "the the"
     return " ".join(text.split())
+
+
+# dictated without punctuation: where a phrase that ends on a block, a region letter or "placed first" meets a
+# colour, a new clause begins ("exchange the red and blue blocks red placed first yellow to ...", "then to
+# g red and blue to any empty region"); "a" is the article, "one" a count, never a phrase's end here
+_CLAUSE_BREAK = re.compile(
+    r"\b((?:blocks?|pillars?|objects?|ones|side|regions?|[b-j])|(?:placed|put|moved|goes|going)\s+first)"
+    r"\s+(?=(?:the\s+)?(?:red|blue|yellow)\b)"
+)
+
+
+# ... and after a step marker that a bare colour follows ("after that yellow back to g"; not "after that
+# yellow block", where "that" may be the determiner)
+_MARKER_BREAK = re.compile(
+    r"\b(after\s+(?:that|this)|afterwards)\s+(?=(?:red|blue|yellow)\b(?!\s+(?:blocks?|ones?|cubes?|pillars?)\b))"
+)
+
+
+def _clause_breaks(text: str) -> str:
+    """The commas of a sentence dictated without any punctuation, restored at the clause breaks of
+    `_CLAUSE_BREAK` and `_MARKER_BREAK`; a sentence with a comma, semicolon or colon is left as it is."""
+    if re.search(r"[,;:]", text):
+        return text
+    return _MARKER_BREAK.sub(r"\1 , ", _CLAUSE_BREAK.sub(r"\1 , ", text))
+
+
+# a left-dislocated topic: blocks ("the three blocks", "the red one") or named regions ("regions f, g and h")
+_TOPIC = (
+    r"(?:the\s+)?(?:(?:all|three|two|red|blue|yellow|and|both)\s+){0,4}(?:blocks?|pillars?|objects?|ones?)"
+    r"|regions\s+[a-z](?:\s*,\s*[a-z])*\s+(?:and|or)\s+[a-z]|region\s+[a-z]"
+    r"|each\s+(?:of\s+(?:those|these|the)\s+regions|region)|(?:any|every)\s+other\s+region"
+)
+_DISLOCATED = re.compile(
+    rf"(^|[,;:])\s*(?P<conj>and\s+)?(?P<topic>{_TOPIC})\s*,\s*(?!(?:and|or|but|then|so)\b)"
+    r"(?P<before>[^,;:]*?)\b(?P<pro>they|them|it|that\s+one|th(?:o|e)se(?:\s+ones)?|their\s+(?:positions|places))\b"
+)
+
+
+def _resumed(text: str) -> str:
+    """A topic set off before its clause and taken up there by a pronoun that agrees with it in number
+    ("the three blocks , i want them moved ...", "the blue block , do not touch it until ...") is put back in
+    the pronoun's place; a pronoun of the other number, or none in the next clause, leaves the text as it is
+    (then refused by name: "the red block , the blue block ..." is a list, not a topic)."""
+
+    def put_back(match: re.Match[str]) -> str:
+        topic, pronoun = match.group("topic"), match.group("pro")
+        plural = bool(re.search(r"s$|\band\b|\bor\b|\bboth\b", topic)) and not topic.startswith("each")
+        if plural != (pronoun not in ("it", "that one")):
+            return match.group(0)
+        said = f"the {pronoun.split()[1]} of {topic}" if pronoun.startswith("their") else topic
+        return f"{match.group(1)} {match.group('conj') or ''}{match.group('before')}{said}"
+
+    return _DISLOCATED.sub(put_back, text)
 
 
 def _apply(table: tuple[tuple[re.Pattern[str], str], ...], text: str) -> str:

@@ -69,7 +69,7 @@ DONE_STATE = (
 AFTER_ALL = (
     r"(?:(?:once|when|after)\s+(?:all\s+(?:of\s+)?)?(?:this|these|that|it|everything(?:\s+else)?|the\s+above)(?:\s+all)?\s+"
     rf"(?:is|are|has\s+been|have\s+been)\s+(?:all\s+)?{DONE_STATE}|(?:once|when)\s+{DONE_STATE}|"
-    rf"(?:once|when|after)\s+(?:you|we)\s*(?:'\s*re|'\s*ve\s+been|\s+are|\s+have\s+been)\s+(?:all\s+)?{DONE_STATE}|"
+    rf"(?:once|when|after)\s+(?:you|we)\s*(?:'\s*re|'\s*ve(?:\s+been)?|\s+are|\s+have(?:\s+been)?)\s+(?:all\s+)?{DONE_STATE}|"
     r"after\s+(?:all\s+(?:of\s+)?(?:these|this|that|"
     r"the\s+above)|everything(?:\s+else)?)|finally|lastly|last\s+of\s+all|at\s+the\s+(?:very\s+)?end|in\s+the\s+end|"
     r"after\s+(?:finish(?:ing)?|complet(?:e|ing)|doing|done)\s+(?:with\s+)?(?:all\s+(?:of\s+)?)?(?:this|these|that|everything|them)|"
@@ -110,7 +110,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\blet\s*'?\s*s\b|\blet\s+us\b|\bgo\s+ahead\s+and\b", "please"),
     (r"\b(?:(?:at|in)\s+)?anytime\b|\bin\s+any\s+time\b", "at any time"),
     (
-        r"\b(?:whenever\s+(?:you\s+(?:like|want|wish|please|can)|convenient|possible|(?:it\s+)?suits(?:\s+you)?)|"
+        r"\b(?:whenever\s+(?:you\s+(?:like|want|wish|please|can)|(?:is\s+|s\s+)?convenient|possible|(?:it\s+)?suits(?:\s+you)?)|"
         r"at\s+(?:any|whatever)\s+(?:point(?:\s+in\s+time)?|moment|stage)|(?:at\s+)?any\s+time\s+you\s+(?:like|want))\b",
         "at any time",
     ),
@@ -423,7 +423,10 @@ REWRITES: tuple[tuple[str, str], ...] = (
     # a heading that gives the time of what follows: "Any time: red and blue blocks to any empty region"
     (r"^\s*(?:at\s+)?any\s+time\s*:", "at any time ,"),
     (r"\b(finally|lastly|then|next|afterwards|first)\s*:", r"\1 ,"),  # "Finally: yellow -> G"
-    (r"\b(?:remember|be\s+sure|make\s+sure|do\s+not\s+forget|note|keep\s+in\s+mind)\s+(?:to|that)\b", " "),
+    (
+        r"\b(?:remember|be\s+(?:sure|careful)|make\s+sure|do\s+not\s+forget|note|keep\s+in\s+mind)\s+(?:to|that)\b",
+        " ",
+    ),
     (r"\bprecedes?\b", "comes before"),
     (r"\bfollows?\b", "comes after"),
     (
