@@ -81,7 +81,7 @@ def test_train_writes_to_the_user_cache_by_default(monkeypatch: pytest.MonkeyPat
     monkeypatch.setattr(structure_train, "train_and_report", record)
     assert main(["train", "language"]) == 0
     models = tmp_path / "nl2hltl2plan" / "models"
-    assert written == [models / "slot_model.npz", models / "structure_model.npz"]
+    assert written == [models / "structure_model.npz", models / "slot_model.npz"]  # the structure first
     assert slot_model.packaged_model_path() not in written
     written.clear()
     assert main(["train", "language", "--only", "structure"]) == 0
