@@ -354,3 +354,31 @@ def test_where_the_object_is_now_is_no_destination(text):
     """ "the mug that is on the counter" was read as a mug put on the counter; near miss: "into" was right."""
     tasks, _, unread = read(text)
     assert tasks == [MUG] and not unread
+
+
+def test_and_last_mid_sentence_puts_the_task_after_every_other():
+    tasks, order, unread = read(
+        "Put the egg in the microwave, then the mug in the sink, and last the apple in the fridge."
+    )
+    assert order == {(EGG, MUG), (MUG, APPLE), (EGG, APPLE)} and not unread
+
+
+def test_the_last_as_an_adjective_is_no_order_word():
+    """Near miss of "and last": "the last" names a thing, and the sentence's order stays free."""
+    assert read("Put the egg in the microwave and the mug in the last cabinet.")[1] == set()
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Put the egg in the microwave, the mug in the sink and the apple in the fridge, one after the other.",
+        "put the egg in the microwave, the mug in the sink and the apple in the fridge one after another",
+    ],
+)
+def test_one_after_the_other_after_a_list_is_the_order_of_mention(text):
+    assert read(text)[1:] == ({(EGG, MUG), (MUG, APPLE), (EGG, APPLE)}, [])
+
+
+def test_after_the_other_mug_orders_nothing():
+    """Near miss of "one after the other": "after the other mug" names a thing, not a sequence."""
+    assert read("Put the egg in the microwave after the other mug.")[2]

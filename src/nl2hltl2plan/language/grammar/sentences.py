@@ -214,6 +214,20 @@ _FIRST_OPENER = re.compile(r"^\s*(?:first|firstly|start|begin|to\s+(?:start|begi
 _LATER_WORD = re.compile(r"\b(?:then|finally|lastly|after\s+that|afterwards?|next)\b", re.IGNORECASE)
 
 
+# "X, Y and Z, one after the other": a sequence in the order they are named, "in that order" (read before
+# "after the other" can be taken for a reference to a task)
+_ONE_AFTER_THE_OTHER = re.compile(
+    r"\s*,?\s*one\s+after\s+(?:the\s+other|another)(?=\s*(?:[.;!?]|$))", re.IGNORECASE
+)
+# "X, then Y, and last Z": "last" after a comma or "and", before a noun phrase or a verb, is the adverb
+# "lastly" (the grammar's word for it); "the last shelf" is left alone
+_LAST_ADVERB = re.compile(
+    r"(,\s*(?:and\s+)?|\band\s+)last(?:\s+of\s+all)?\s*,?\s+(?=(?:the|a|an|your|my|put|place|move|set|take|"
+    r"bring|leave|drop|throw|heat|cool|chill|wash|rinse|clean|slice|cut|examine|look)\b)",
+    re.IGNORECASE,
+)
+
+
 def _keeps_but_first(text: str, m: re.Match[str]) -> bool:
     """Is "but first" better left to the sentence's other order words: the sentence opens with "first" /
     "start by", or goes on with "then" / "finally" after it (the structure model reads those whole)?"""
@@ -306,6 +320,8 @@ def normalize(text: str) -> str:
     text = _RINSE_ADJ.sub(r"\1 rinsed ", text)
     text = _USE_LAMP.sub(lambda m: f"{m['verb']} {m['obj']} by the light of the {m['lamp']}", text)
     text = _FOLLOWED_TO.sub(r" and finally \1", text)
+    text = _LAST_ADVERB.sub(r"\1lastly ", text)
+    text = _ONE_AFTER_THE_OTHER.sub(", in that order", text)
     text = _DONE_GERUND.sub(r"\1 ", text)
     text = _THEN_INSIDE.sub(", then ", text)
     text = _DONE_WITH.sub(lambda m: _as_cased("after ", m[1]), text)
