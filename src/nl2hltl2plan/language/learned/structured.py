@@ -57,12 +57,13 @@ def decide(
     grammar: tuple[list[BaseTaskSpec], list[tuple[str, str]], bool],
     model: tuple[list[BaseTaskSpec], list[tuple[str, str]], float] | None,
     rule: StructurePolicy,
+    instruction: str,
     points: bool = False,
-    instruction: str = "",
 ) -> str:
     """Which reading to take: "grammar", "model" or "neither" (-> unparsed). `grammar`: its tasks, before
     pairs and whether it is complete; `model`: the structure model's complete reading and its confidence
-    (None: incomplete); `points`: whether the model's reading has a span that points back."""
+    (None: incomplete); `instruction`: the words both read; `points`: whether the model's reading has a
+    span that points back."""
     if model is None:
         return "grammar"
     tasks, before, confidence = model
