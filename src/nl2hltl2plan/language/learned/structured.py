@@ -92,15 +92,29 @@ def against_the_words(
     if any((b, a) in m_order for a, b in g_order):
         return True
     said = {c for w, _, _ in tokens(instruction) for c in categories(w)}
+    # an appliance counts where it is a place the thing goes, not where something already is
+    mentions = find_mentions(instruction)
+    places = {t for m in mentions if not _IS_AT.search(instruction[: m.char_start]) for t in m.entry.types}
     g_kinds = {t.kind for t in grammar[0]}
     return any(
-        t.kind in IMPLIED_TYPES and f"verb_{t.kind}" not in said and t.kind not in g_kinds for t in model[0]
+        t.kind in IMPLIED_TYPES
+        and f"verb_{t.kind}" not in said
+        and not places & IMPLIED_TYPES[t.kind]
+        and t.kind not in g_kinds
+        for t in model[0]
     )
 
 
+_IS_AT = re.compile(
+    r"\b(?:is|are)\s+(?:now\s+|already\s+|still\s+)?(?:in|on|inside|at)\s+(?:the\s+|a\s+)?$", re.I
+)
+
+
 def _named_order(tasks: list[BaseTaskSpec], before: list[tuple[str, str]]) -> set[tuple[str, str]]:
-    """The order between tasks named by what they are (two readings number their tasks differently)."""
-    name = {t.id: t.summary() for t in tasks}
+    """The order between tasks named by what they are (two readings number their tasks differently); a
+    task named twice ("put a clean cloth on the counter" at the start and at the end) is left out."""
+    names = [t.summary() for t in tasks]
+    name = {t.id: n for t, n in zip(tasks, names, strict=True) if names.count(n) == 1}
     return {(name[a], name[b]) for a, b in transitive_closure(before, list(name)) if a in name and b in name}
 
 
