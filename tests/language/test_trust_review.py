@@ -50,6 +50,11 @@ def test_a_done_word_with_an_object_is_no_then(backend):
     )
     near = "Put the egg in the microwave. After you finish, put the apple in the fridge."
     assert reading(near, backend) == ([EGG, APPLE], {(EGG, APPLE)})
+    # "done with the mug" is no place where something is (check 1 let the mug go as a location)
+    done_with = "Put the egg in the microwave. When you are done with the mug, put the apple in the fridge."
+    refused(done_with, backend, "mug")
+    near = "Put the mug in the sink. When you are done with the mug, put the apple in the fridge."
+    assert reading(near, backend) == ([MUG, APPLE], {(MUG, APPLE)})
 
 
 # 2, 3. "after the mug on the counter is removed" states no placement; "... is in the sink" puts it there
