@@ -110,3 +110,9 @@ def test_then_and_a_free_order_is_a_contradiction(backend):
     )
     near = "Put the apple in the fridge and put the mug in the sink, the order is yours to choose."
     assert reading(near, backend) == ([APPLE, MUG], set())
+    # the paper's tabletop task 4, politely: "in any order" frees the group of the last clause
+    tasks, order = reading(
+        "Put the apple in the fridge, and then put the mug and the egg in the sink in any order.", backend
+    )
+    egg = "place Egg -> SinkBasin"
+    assert tasks == [APPLE, MUG, egg] and order == {(APPLE, MUG), (APPLE, egg)}

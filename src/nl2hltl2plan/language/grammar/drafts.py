@@ -277,9 +277,11 @@ _ORDER_IS_FREE = re.compile(
 def _refuse_free_and_ordered(sentence: Sentence, units: list[Unit]) -> None:
     """ "A and then B, the order is yours to choose": the closing phrase frees the clause that "then" (or
     "finally") has just ordered; which one the user means is a guess, so it is refused as "then ... in
-    reverse order" is. ("A, then B, and C and D in any order" frees the last clauses only.)"""
+    reverse order" is. ("A, then B, and C and D in any order" frees the last clauses only, and "A, and
+    then B and C in any order" the group of the last clause.)"""
     last = units[-1]
     ordered = len(units) > 1 and (last.seq_after_prev or any(kind == G.FINALLY for kind, _ in last.markers))
+    ordered = ordered and len(last.tasks) == 1
     if (
         ordered
         and any(kind == G.FREE for kind, _ in sentence.trailing)
