@@ -58,6 +58,7 @@ class Record:
     model_ok: bool  # the structure model's reading converts it
     points: bool  # the model's reading has a span that points back
     same: bool  # both readings state the same tasks and order
+    instruction: str
 
 
 def record(row: dict[str, Any], model: SlotModel, structure: StructureModel) -> Record:
@@ -70,6 +71,7 @@ def record(row: dict[str, Any], model: SlotModel, structure: StructureModel) -> 
         model_ok=s is not None and converts(s[0].model_copy(deep=True), row),
         points=bool(rels & set(POINTING)),
         same=s is not None and bool(g.tasks) and same_reading(s[0].tasks, s[0].before, g.tasks, g.before),
+        instruction=row["instruction"],
     )
 
 
@@ -77,7 +79,7 @@ def outcome(r: Record, rescue: float, override: float, pointing: float, doubt: f
     """"ok" (converted), "wrong" (a complete reading that is wrong: success reported for a wrong plan)
     or "refused", under `structured.decide` with these thresholds."""
     rule = StructurePolicy(rescue=rescue, override=override, doubt=doubt, override_pointing=pointing)
-    choice = decide(r.grammar, r.model, rule, points=r.points)
+    choice = decide(r.grammar, r.model, rule, r.instruction, points=r.points)
     if choice == "neither" or (choice == "grammar" and not r.grammar[2]):
         return "refused"
     right = r.grammar_ok if choice == "grammar" else r.model_ok

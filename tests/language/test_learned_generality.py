@@ -78,9 +78,9 @@ def test_a_reading_that_points_back_overrides_the_grammar_at_its_own_threshold()
     rule = StructurePolicy(rescue=0.4, override=0.9, doubt=0.2, override_pointing=0.8)
     free, ordered = ([a, b], []), ([a, b], [("A", "B")])
     # "Put the rag in a cabinet. When you're finished with the rag, ...": the model reads the reference
-    assert decide((*free, True), (*ordered, 0.85), rule, points=True) == "model"
+    assert decide((*free, True), (*ordered, 0.85), rule, "", points=True) == "model"
     # near miss: the same confidence without a span that points back leaves the grammar's reading
-    assert decide((*free, True), (*ordered, 0.85), rule, points=False) == "grammar"
-    assert decide((*free, True), (*ordered, 0.1), rule, points=True) == "neither"  # neither sure: unparsed
+    assert decide((*free, True), (*ordered, 0.85), rule, "", points=False) == "grammar"
+    assert decide((*free, True), (*ordered, 0.1), rule, "", points=True) == "neither"  # neither sure
     same = StructurePolicy(override=0.9, override_pointing=None)  # no threshold of its own: `override`
-    assert decide((*free, True), (*ordered, 0.85), same, points=True) == "grammar"
+    assert decide((*free, True), (*ordered, 0.85), same, "", points=True) == "grammar"

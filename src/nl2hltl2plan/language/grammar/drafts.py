@@ -6,6 +6,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field
 
+from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.clauses import Clause, expand_gapping, split_clauses
 from nl2hltl2plan.language.grammar.draft_tasks import Draft, TaskBuilder, Unit
@@ -241,6 +242,7 @@ class DraftBuilder:
         sentence_units = units[st.first_unit :]
         if not sentence_units:
             return
+        _refuse_free_and_ordered(st.sentence, sentence_units)
         for kind, ref in st.sentence.markers:
             for u in sentence_units:
                 u.markers.append((kind, ref))
@@ -261,6 +263,34 @@ class DraftBuilder:
                 of_all = kind == G.FINALLY and len(sentence_units) == 1
                 for u in sentence_units:
                     u.markers.append((kind, OF_ALL if of_all else ref))
+
+
+# a closing phrase that leaves the order of the sentence's tasks to the robot (not "at any time", which
+# frees one task's time)
+_ORDER_IS_FREE = re.compile(
+    r"\b(?:(?:any|whatever|no\s+(?:particular|specific|set))\s+(?:order|sequence)|order\s+is\s+(?:up\s+to\s+you|"
+    r"your\s+call|yours\s+to\s+choose)|in\s+parallel|simultaneously|concurrently)\W*$",
+    re.IGNORECASE,
+)
+
+
+def _refuse_free_and_ordered(sentence: Sentence, units: list[Unit]) -> None:
+    """ "A and then B, the order is yours to choose": the closing phrase frees the clause that "then" (or
+    "finally") has just ordered; which one the user means is a guess, so it is refused as "then ... in
+    reverse order" is. ("A, then B, and C and D in any order" frees the last clauses only, and "A, and
+    then B and C in any order" the group of the last clause.)"""
+    last = units[-1]
+    ordered = len(units) > 1 and (last.seq_after_prev or any(kind == G.FINALLY for kind, _ in last.markers))
+    ordered = ordered and len(last.tasks) == 1
+    if (
+        ordered
+        and any(kind == G.FREE for kind, _ in sentence.trailing)
+        and _ORDER_IS_FREE.search(sentence.text)
+    ):
+        raise HTTError(
+            f"contradictory ordering in the instruction: {sentence.text.strip()!r} orders its tasks and "
+            "leaves their order free; say which"
+        )
 
 
 _COPULA_PLACE = re.compile(

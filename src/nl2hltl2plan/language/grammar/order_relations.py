@@ -74,10 +74,12 @@ def _marker_edges(k: int, tasks: Tasks, free: set[int], b: TaskBuilder, text: st
         edges.update((a, b2) for a in seq_prev.tasks for b2 in u.tasks)
 
 
-# a word that may free a task of its sentence; it matches "any" as a determiner too ("put any mug in the
-# sink"), where nothing is freed
+# a word that may free a task of its sentence; "any" and "whatever" only before a time or an order ("put
+# any mug in the sink" frees nothing)
 _FREE_WORD = re.compile(
-    r"\b(?:any|anytime|whenever|whatever|meanwhile|simultaneously|parallel|independently)\b", re.I
+    r"\b(?:(?:any|whatever)\s+(?:time|order|point|sequence)|anytime|whenever|meanwhile|simultaneously|parallel|"
+    r"independently)\b",
+    re.I,
 )
 
 

@@ -122,12 +122,18 @@ _YOU = re.compile(r"^\s*you\s+(?:have\s+|had\s+)?", re.I)
 
 
 # "after the mug is in the sink", "before the apple goes in the fridge" ("goes" is gone by then,
-# `sentences.supply_put`): the placement that state needs
+# `sentences.supply_put`): the placement that state needs. The verb may be missing only where no other
+# verb follows: "the mug on the counter is removed" states no placement.
+_STATE_VERB = r"(?:is|are|was|were|goes|go|gets|get|got|has\s+been|have\s+been|ends\s+up)"
 _PLACED_STATE = re.compile(
-    r"^(?P<np>(?:the|a|an|your|my)\s+[^,]+?)\s+(?:(?:is|are|goes|go|gets|get|has\s+been|have\s+been|ends\s+up)\s+)?"
-    r"(?:(?:put|placed|set)\s+)?(?P<place>(?:in|into|on|onto|inside)\s+(?:the|a|an|your|my)\s)",
+    rf"^(?P<np>(?:the|a|an|your|my)\s+[^,]+?)\s+(?:{_STATE_VERB}\s+(?:(?:put|placed|set)\s+)?|(?:put|placed|set)\s+|"
+    rf"(?![^,]*\b(?:{_STATE_VERB}|been|removed|taken)\b))"
+    r"(?P<place>(?:in|into|on|onto|inside)\s+(?:the|a|an|your|my)\s)",
     re.I,
 )
+
+
+_LOCATED = re.compile(r"\s(?:in|on|inside|at|from|near|by|beside|under|next\s+to)\s", re.I)
 
 
 def _placement(m: re.Match[str], text: str) -> str:
@@ -136,6 +142,8 @@ def _placement(m: re.Match[str], text: str) -> str:
     head = m["np"].split()[-1]
     if len(re.findall(rf"\b{re.escape(head)}\b", text, re.I)) > 1:
         return m[0]
+    if _LOCATED.search(m["np"]):  # "the mug on the counter is in the sink": the sink is where it goes
+        return f"move {m['np']} to {m['place'].split(maxsplit=1)[1]}"
     return f"put {m['np']} {m['place']}"
 
 

@@ -440,7 +440,8 @@ LEADING: list[tuple[re.Pattern[str], str]] = [
             r"having\s+(?:done|finished|completed)\s+(?:that|this|so)|"
             r"(?:second|third|fourth|fifth)(?:ly)?(?=\s*[,:])|"
             rf"(?:once|when|after)\s+(?:(?:that|this|it|you)(?:'s|'re)?)?\s*(?:is\s+|are\s+|have\s+|has\s+)?{_DONE}"
-            r"(?:\s+(?:with\s+)?(?:that|this|it|so)\b)?|"
+            # not before an object: "after you finish the mug, ..." is a reference, not "then"
+            r"(?:\s+(?:with\s+)?(?:that|this|it|so)\b)?(?!\s+(?:with|the|a|an|my|your|all|every|each|both|any)\b)|"
             r"after\s+(?:doing|finishing|completing)\s+(?:that|this|it))\b\s*[,:]?\s*",
             _F,
         ),
@@ -497,7 +498,7 @@ LEADING: list[tuple[re.Pattern[str], str]] = [
         re.compile(
             r"^(?:please|let'?s|let\s+us|now|next\s+up|you\s+should|you\s+need\s+to|you\s+must|we\s+need\s+to|"
             r"i\s+want\s+you\s+to|can\s+you|could\s+you|would\s+you|will\s+you|kindly|go\s+and|also|additionally|"
-            r"in\s+addition|separately|moreover|furthermore|besides|on\s+top\s+of\s+(?:that|this)(?=\s*,)|"
+            r"in\s+addition|separately|moreover|furthermore|besides(?=\s*,)|on\s+top\s+of\s+(?:that|this)(?=\s*,)|"
             r"alright|all\s+right|ok(?:ay)?|(?:thanks|thank\s+you|cheers)(?=\s*(?:[,!]|$))|and)\b\s*[,:]?\s*",
             _F,
         ),

@@ -360,7 +360,7 @@ def _arbitrated(
     s = structure_reading(instruction, ctx, structure)
     complete = grammar_complete(g)
     model = (s[0].tasks, s[0].before, s[1]) if s else None
-    choice = decide((g.tasks, g.before, complete), model, rule, points=bool(s and s[2]))
+    choice = decide((g.tasks, g.before, complete), model, rule, instruction, points=bool(s and s[2]))
     if choice == "model" and s is not None:
         return s[0]
     if choice == "neither" and s is not None:

@@ -10,7 +10,9 @@ that does not read completely makes the whole reading incomplete.
 - the grammar's reading is complete and the two agree -> the grammar's;
 - the grammar's reading is incomplete (it lists unread words) and the structure model's is complete,
   passes the word accounting (check 1) and is confident -> the structure model's;
-- both are complete and they disagree -> the structure model's when it is at least `override` sure
+- both are complete and they disagree -> the grammar's where the model's reverses an order the grammar
+  read or adds a heating, cooling or washing that no word names (`against_the_words`); else the
+  structure model's when it is at least `override` sure
   (`override_pointing` when its reading has a span that points back at an earlier one); when it is less
   sure than `doubt`, neither is trusted: no tasks, the disagreement goes to `unparsed`; in between the
   grammar's.
@@ -23,12 +25,14 @@ from dataclasses import dataclass
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.language.accounting import account
-from nl2hltl2plan.language.grounding import find_mentions
+from nl2hltl2plan.language.content_words import categories
+from nl2hltl2plan.language.grounding import find_mentions, tokens
 from nl2hltl2plan.language.learned.compose import ELIDABLE, VERB_GERUND, VERB_PARTICIPLE
 from nl2hltl2plan.language.learned.span_order import before_pairs
 from nl2hltl2plan.language.learned.structure import Reading
+from nl2hltl2plan.language.parse_usage import IMPLIED_TYPES
 from nl2hltl2plan.language.scoring import match
-from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter
+from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter, transitive_closure
 
 _BASE_FORM = {v: k for k, v in VERB_PARTICIPLE.items() if v != k} | {v: k for k, v in VERB_GERUND.items()}
 
@@ -53,11 +57,13 @@ def decide(
     grammar: tuple[list[BaseTaskSpec], list[tuple[str, str]], bool],
     model: tuple[list[BaseTaskSpec], list[tuple[str, str]], float] | None,
     rule: StructurePolicy,
+    instruction: str,
     points: bool = False,
 ) -> str:
     """Which reading to take: "grammar", "model" or "neither" (-> unparsed). `grammar`: its tasks, before
     pairs and whether it is complete; `model`: the structure model's complete reading and its confidence
-    (None: incomplete); `points`: whether the model's reading has a span that points back."""
+    (None: incomplete); `instruction`: the words both read; `points`: whether the model's reading has a
+    span that points back."""
     if model is None:
         return "grammar"
     tasks, before, confidence = model
@@ -65,10 +71,51 @@ def decide(
         return "model" if confidence >= rule.rescue else "grammar"
     if same_reading(tasks, before, grammar[0], grammar[1]):
         return "grammar"
+    if against_the_words(instruction, (tasks, before), (grammar[0], grammar[1])):
+        return "grammar"
     override = rule.override_pointing if points and rule.override_pointing is not None else rule.override
     if confidence >= override:
         return "model"
     return "neither" if confidence < rule.doubt else "grammar"
+
+
+def against_the_words(
+    instruction: str,
+    model: tuple[list[BaseTaskSpec], list[tuple[str, str]]],
+    grammar: tuple[list[BaseTaskSpec], list[tuple[str, str]]],
+) -> bool:
+    """Whether the model's reading contradicts what the grammar read from the words: it puts two tasks the
+    other way round ("Having done so, Y" read as Y first), or it heats, cools or washes a thing where no
+    word says so and the grammar does not ("The mug is in the sink, put it in the microwave" as a washing;
+    check 1 takes the sink for the washing's appliance)."""
+    g_order, m_order = _named_order(*grammar), _named_order(*model)
+    if any((b, a) in m_order for a, b in g_order):
+        return True
+    said = {c for w, _, _ in tokens(instruction) for c in categories(w)}
+    # an appliance counts where it is a place the thing goes, not where something already is
+    mentions = find_mentions(instruction)
+    places = {t for m in mentions if not _IS_AT.search(instruction[: m.char_start]) for t in m.entry.types}
+    g_kinds = {t.kind for t in grammar[0]}
+    return any(
+        t.kind in IMPLIED_TYPES
+        and f"verb_{t.kind}" not in said
+        and not places & IMPLIED_TYPES[t.kind]
+        and t.kind not in g_kinds
+        for t in model[0]
+    )
+
+
+_IS_AT = re.compile(
+    r"\b(?:is|are)\s+(?:now\s+|already\s+|still\s+)?(?:in|on|inside|at)\s+(?:the\s+|a\s+)?$", re.I
+)
+
+
+def _named_order(tasks: list[BaseTaskSpec], before: list[tuple[str, str]]) -> set[tuple[str, str]]:
+    """The order between tasks named by what they are (two readings number their tasks differently); a
+    task named twice ("put a clean cloth on the counter" at the start and at the end) is left out."""
+    names = [t.summary() for t in tasks]
+    name = {t.id: n for t, n in zip(tasks, names, strict=True) if names.count(n) == 1}
+    return {(name[a], name[b]) for a, b in transitive_closure(before, list(name)) if a in name and b in name}
 
 
 def base_form(span: str) -> str:

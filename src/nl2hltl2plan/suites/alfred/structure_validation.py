@@ -117,7 +117,8 @@ def choose(
     if rule is None:
         return "grammar"
     model = (s[0].tasks, s[0].before, s[1]) if s else None
-    return decide((g.tasks, g.before, grammar_complete(g)), model, rule, points=bool(s and s[2]))
+    complete = grammar_complete(g)
+    return decide((g.tasks, g.before, complete), model, rule, g.instruction, points=bool(s and s[2]))
 
 
 def score_set(rows: list[dict[str, Any]]) -> dict[str, dict[Any, list[int]]]:
