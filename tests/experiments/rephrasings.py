@@ -106,8 +106,8 @@ DEV_S11: dict[int, list[str]] = {
         "the blue plate, order doesn't matter",
         "the red apple belongs on the blue plate, the orange belongs on the yellow plate and the green apple "
         "belongs on the pink plate, any order",
-        "okay just put the orange on the yellow plate, the green apple on the pink plate and the red apple on "
-        "the blue plate, whatever order",
+        "okay just put the orange on the yellow plate, the green apple on the pink plate and the red apple "
+        "on the blue plate, whatever order",
         "red apple -> blue plate; green apple -> pink plate; orange -> yellow plate; any order"],
     3: ["carrot -> blue plate, orange -> yellow plate, green apple -> green plate, red apple -> pink plate "
         "(any order)",
