@@ -3,8 +3,8 @@ order, and the exit status of `nl2hltl2plan plan TEXT --world tabletop` for each
 
     python scripts/tabletop_styles.py --batch DEV_S11 [--per-sentence]
 
-Prints `batch: same N/M, exit codes {...}`; --per-sentence adds one line per wording (never for VALID_S11
-while rules are being written).
+Prints `batch: same N/M, wrong W (exit 0 with other tasks or order), exit codes {...}`; --per-sentence
+adds one line per wording (never for VALID_S11 while rules are being written).
 """
 
 from __future__ import annotations
@@ -42,7 +42,7 @@ def main() -> None:
     args = parser.parse_args()
     batch: dict[int, list[str]] = getattr(rephrasings, args.batch)
     tasks = {t.id: t for t in load_tasks()}
-    same, total, codes = 0, 0, Counter()
+    same, wrong, total, codes = 0, 0, 0, Counter()
     for task_id, texts in batch.items():
         reference = signature(tasks[task_id].instruction)
         for text in texts:
@@ -50,11 +50,11 @@ def main() -> None:
             rc = subprocess.run(
                 ["nl2hltl2plan", "plan", text, "--world", "tabletop"], capture_output=True, check=False
             ).returncode
-            same, total = same + ok, total + 1
+            same, wrong, total = same + ok, wrong + (rc == 0 and not ok), total + 1
             codes[rc] += 1
             if args.per_sentence:
                 print(f"{'same' if ok else 'DIFF'} rc={rc} task {task_id}: {text}")
-    print(f"{args.batch}: same {same}/{total}, exit codes {dict(sorted(codes.items()))}")
+    print(f"{args.batch}: same {same}/{total}, wrong {wrong}, exit codes {dict(sorted(codes.items()))}")
 
 
 if __name__ == "__main__":
