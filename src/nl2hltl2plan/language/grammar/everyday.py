@@ -13,17 +13,27 @@ words that carry no object, place, count, negation or order in the place where i
   one, is the number of placements listed after it; "..., so please put them there" after placements
   stated as belonging repeats them and is dropped;
 - a free-order remark about the last group ("the order of those two doesn't matter") is the plain
-  "order doesn't matter", which the rules read as freeing the order inside the last group only.
+  "order doesn't matter", which the rules read as freeing the order inside the last group only; closing
+  a one-sentence request (", order doesn't matter", "; any order"), it is ", in any order". After
+  several sentences its scope is left to the rules, which read it or refuse it.
 """
 
 from __future__ import annotations
 
 import re
 
-_HESITATION = re.compile(r"(?:^|(?<=[\s,]))(?:u+h+m*|u+m+|e+r+m+|e+r+|hmm+|mm+)(?=[\s,.;!?]|$)", re.I)
+_HESITATION = re.compile(
+    r"(?:^|(?<=[\s,]))(?:u+h+m*|u+m+|e+r+m+|e+r+|hmm+|mm+|basically)(?=[\s,.;!?]|$)", re.I
+)
+# (the rules read an opener at the very start themselves, "ok so put ...": there it is taken only before
+# a comma, "so, um, the ...")
 _OPENER = re.compile(
-    r"(^|[,;:.]\s*|\band\s+)(?:(?:ok|okay|alright|all\s+right|right|so|well|basically|now)\b\s*,?\s*)+"
+    r"([,;:.]\s*|\band\s+)(?:(?:ok|okay|alright|all\s+right|so|well)\b\s*,?\s*|right\s*,\s*)+"
     r"(?=[a-z])",
+    re.I,
+)
+_START_OPENER = re.compile(
+    r"^\s*(?:(?:ok|okay|alright|all\s+right|so|well|right)\b\s*,?\s*)*(?:ok|okay|alright|all\s+right|so|well|right)\s*,\s*",
     re.I,
 )
 _LIKE = re.compile(r",\s*like\s*,", re.I)
@@ -69,11 +79,13 @@ def everyday(text: str) -> str:
     text = _HESITATION.sub(" ", text)
     text = re.sub(r"(\s*,)+", ",", text)  # the commas left where fillers were
     text = _LIKE.sub(",", _TAG.sub("", text))
-    text = _OPENER.sub(r"\1", text)
+    text = _START_OPENER.sub("", _OPENER.sub(r"\1", text))
     text = _JUST.sub("", text)
     text = re.sub(r"\band\s*,\s*", "and ", re.sub(r"^\s*,\s*", "", text))
     text = _without_need_heading(text)
-    text = _CLOSING_FREE_ORDER.sub(", in any order", _LAST_GROUP_ORDER.sub("order ", text))
+    text = _LAST_GROUP_ORDER.sub("order ", text)
+    if not re.search(r"[.!?]\s+\S", text):  # in one sentence: what the remark is about is plain
+        text = _CLOSING_FREE_ORDER.sub(", in any order", text)
     return re.sub(r"\s+", " ", text).strip()
 
 
