@@ -84,6 +84,11 @@ def test_words_that_carry_meaning_are_kept():
     # a remark in brackets that orders the tasks is not the free-order remark
     assert "any order" not in everyday("egg -> fridge, mug -> sink (in that order)")
     assert everyday("the order of those two doesn't matter") == "order doesn't matter"
+    # "right after" orders, "so that" gives a purpose: neither is an opener
+    assert everyday("put the egg in the fridge. right after, put the mug in the sink").endswith(
+        "right after, put the mug in the sink"
+    )
+    assert "so that" in everyday("put the egg in the fridge, so that it stays cold")
 
 
 def test_an_ordering_remark_in_brackets_is_never_read_as_free():

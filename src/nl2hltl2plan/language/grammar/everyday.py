@@ -28,7 +28,7 @@ _HESITATION = re.compile(
 # (the rules read an opener at the very start themselves, "ok so put ...": there it is taken only before
 # a comma, "so, um, the ...")
 _OPENER = re.compile(
-    r"([,;:.]\s*|\band\s+)(?:(?:ok|okay|alright|all\s+right|so|well)\b\s*,?\s*|right\s*,\s*)+"
+    r"([,;:.]\s*|\band\s+)(?:(?:ok|okay|alright|all\s+right|so(?!\s+(?:that|as)\b)|well)\b\s*,?\s*|right\s*,\s*)+"
     r"(?=[a-z])",
     re.I,
 )
