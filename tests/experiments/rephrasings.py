@@ -85,3 +85,78 @@ STYLES: dict[str, dict[int, list[str]]] = {
             "orange in the yellow plate."],
     },
 }
+
+# Issue 28 (h57): everyday styles, written before the rules for them. DEV_S11 is for developing the
+# rules; VALID_S11 (other voices) is measured once before and once after, never read per sentence between.
+# Styles: terse arrow notation, spoken fillers and hedges, goals stated as belonging or need, and a
+# trailing free-order remark after an ordered first part.
+DEV_S11: dict[int, list[str]] = {
+    1: ["green apple -> blue plate, orange -> yellow plate",
+        "ok so just put the green apple on the blue plate and, um, the orange on the yellow one",
+        "the orange belongs in the yellow plate and the green apple belongs in the blue plate, so please put "
+        "them there",
+        "two things need plates: the green apple goes on the blue plate and the orange goes on the yellow "
+        "plate",
+        "uh, could you, like, put the orange on the yellow plate and the green apple on the blue plate?",
+        "orange -> yellow plate; green apple -> blue plate"],
+    2: ["green apple -> pink plate, orange -> yellow plate, red apple -> blue plate (any order)",
+        "each fruit gets its own plate: the green apple goes on the pink plate, the orange on the yellow "
+        "plate and the red apple on the blue plate",
+        "so, um, the green apple on the pink plate, the orange on the yellow plate and, uh, the red apple on "
+        "the blue plate, order doesn't matter",
+        "the red apple belongs on the blue plate, the orange belongs on the yellow plate and the green apple "
+        "belongs on the pink plate, any order",
+        "okay just put the orange on the yellow plate, the green apple on the pink plate and the red apple "
+        "on the blue plate, whatever order",
+        "red apple -> blue plate; green apple -> pink plate; orange -> yellow plate; any order"],
+    3: ["carrot -> blue plate, orange -> yellow plate, green apple -> green plate, red apple -> pink plate "
+        "(any order)",
+        "four things need plates: the carrot goes on the blue plate, the orange on the yellow plate, the "
+        "green apple on the green plate and the red apple on the pink plate",
+        "so basically the carrot on the blue plate, the orange on the yellow plate, um, the green apple on "
+        "the green plate and the red apple on the pink plate, in any order",
+        "the carrot belongs on the blue plate and the orange belongs on the yellow plate; the green apple "
+        "belongs on the green plate and the red apple belongs on the pink plate. any order",
+        "alright, just put the red apple on the pink plate, the green apple on the green plate, the orange "
+        "on the yellow plate and the carrot on the blue plate, order doesn't matter",
+        "carrot -> blue plate; orange -> yellow plate; green apple -> green plate; red apple -> pink plate"],
+    4: ["first: green apple and orange -> yellow plate. then: carrot and red apple -> blue plate",
+        "first the green apple and the orange on the yellow plate, and after that put the carrot and the red "
+        "apple on the blue plate, order doesn't matter",
+        "ok so first, um, put the green apple and the orange on the yellow plate, and then the carrot and "
+        "the red apple on the blue plate",
+        "green apple and orange -> yellow plate first, then carrot and red apple -> blue plate (any order)",
+        "the green apple and the orange belong in the yellow plate, so put them there first. after that the "
+        "carrot and the red apple go in the blue plate, in any order",
+        "first put the orange and the green apple on the yellow plate, then the red apple and the carrot on "
+        "the blue plate, the order of those two doesn't matter"],
+}
+
+VALID_S11: dict[int, list[str]] = {
+    1: ["blue plate <- green apple, yellow plate <- orange",
+        "hmm, so, the green apple, put it on the blue plate, and the orange on the yellow plate, yeah",
+        "the green apple should be on the blue plate and the orange should be on the yellow plate",
+        "orange -> yellow plate and green apple -> blue plate please"],
+    2: ["orange -> yellow plate, red apple -> blue plate, green apple -> pink plate, in any order",
+        "er, just pop the red apple on the blue plate, the green apple on the pink plate and the orange on "
+        "the yellow plate, any order is fine",
+        "three fruits need plates: the green apple goes to the pink plate, the orange to the yellow plate "
+        "and the red apple to the blue plate. any order",
+        "the orange belongs on the yellow plate, the red apple on the blue plate and the green apple on the "
+        "pink plate; whatever order you like"],
+    3: ["orange -> yellow plate; carrot -> blue plate; red apple -> pink plate; green apple -> green plate "
+        "(order doesn't matter)",
+        "right, um, carrot on the blue plate, orange on the yellow plate, green apple on the green plate and "
+        "red apple on the pink plate, any order",
+        "every item gets its own plate: the carrot goes on the blue plate, the red apple on the pink plate, "
+        "the orange on the yellow plate and the green apple on the green plate",
+        "the green apple belongs on the green plate, the carrot on the blue plate, the red apple on the pink "
+        "plate and the orange on the yellow plate, in any order"],
+    4: ["first: orange and green apple -> yellow plate; then: red apple and carrot -> blue plate",
+        "so, uh, start with the green apple and the orange on the yellow plate, and after that, um, the "
+        "carrot and the red apple on the blue plate",
+        "first the orange and the green apple go on the yellow plate, then put the red apple and the carrot "
+        "on the blue plate, the order doesn't matter",
+        "the green apple and the orange belong on the yellow plate first; then the carrot and the red apple "
+        "belong on the blue plate, any order"],
+}

@@ -33,6 +33,7 @@ from nl2hltl2plan.language.content_words import (
     stems,
     verb_places,
 )
+from nl2hltl2plan.language.grammar.everyday import everyday
 from nl2hltl2plan.language.grounding import (
     SLICEABLE,
     Mention,
@@ -81,6 +82,7 @@ def account(
     words (`ConstraintSpec.text`, found in the instruction) hold it and the constraint forbids that
     verb's action; the things a constraint forbids actions on count like a task's slots. Raises
     HTTError for a count of zero, a count above what the scene holds, and a cyclic order in the text."""
+    instruction = everyday(instruction)  # fillers, notation and headings that carry nothing (issue 28)
     lowered = instruction.lower()
     spans = [(at, at + len(c.text), c) for c in constraints if (at := lowered.find(c.text.lower())) >= 0]
     parse = ParseUsage(tasks, before, constraints, spans)

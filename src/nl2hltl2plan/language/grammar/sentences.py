@@ -6,6 +6,7 @@ import re
 from dataclasses import dataclass, field
 
 from nl2hltl2plan.language.grammar import word_tables as G
+from nl2hltl2plan.language.grammar.everyday import everyday
 from nl2hltl2plan.language.grammar.phrases import tokens
 from nl2hltl2plan.language.grounding import find_mentions, sentence_start
 
@@ -297,6 +298,7 @@ def normalize(text: str) -> str:
     the placement verb a terse request leaves out (`supply_put`)."""
     text = text.replace("\u2019", "'").replace("\u2018", "'").replace("\u201c", '"').replace("\u201d", '"')
     text = re.sub(r"(?<=[a-z])\.(?=[A-Za-z])", ". ", text)
+    text = everyday(text)  # terse, spoken and need styles (issue 28)
     text = re.sub(r"\s*\([^)]*\)", "", text)  # parenthetical remarks: "(where the red block is now)"
     text = without_connective_to(text)
     text = _AS_SOON_AS.sub(lambda m: _as_cased("once", m[0]), text)

@@ -1,0 +1,61 @@
+"""Everyday-style tabletop rephrasings (issue 28): how many give the original wording's tasks and closed
+order, and the exit status of `nl2hltl2plan plan TEXT --world tabletop` for each.
+
+    python scripts/tabletop_styles.py --batch DEV_S11 [--per-sentence]
+
+Prints `batch: same N/M, wrong W (exit 0 with other tasks or order), exit codes {...}`; --per-sentence
+adds one line per wording (never for VALID_S11 while rules are being written).
+"""
+
+from __future__ import annotations
+
+import argparse
+import subprocess
+import sys
+from collections import Counter
+from pathlib import Path
+
+from nl2hltl2plan.language.task_specs import transitive_closure
+from nl2hltl2plan.language.translate import translate
+from nl2hltl2plan.suites.tabletop.tabletop_bench import load_tasks
+from nl2hltl2plan.worlds.tabletop_world import tabletop_world
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests" / "experiments"))
+import rephrasings  # noqa: E402
+
+
+def signature(instruction: str) -> tuple[list, list] | None:
+    """Base tasks and closed order, as tests/experiments/test_tabletop.py reads them; None on a refusal."""
+    try:
+        r = translate(instruction, tabletop_world())
+    except Exception:  # a refusal counts as not the same; its exit code is measured separately
+        return None
+    key = {t.id: (t.kind, tuple(t.object), tuple(t.receptacle or ())) for t in r.tasks}
+    closure = transitive_closure(r.before, list(key))
+    return sorted(key.values()), sorted((key[a], key[b]) for a, b in closure)
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--batch", required=True)
+    parser.add_argument("--per-sentence", action="store_true")
+    args = parser.parse_args()
+    batch: dict[int, list[str]] = getattr(rephrasings, args.batch)
+    tasks = {t.id: t for t in load_tasks()}
+    same, wrong, total, codes = 0, 0, 0, Counter()
+    for task_id, texts in batch.items():
+        reference = signature(tasks[task_id].instruction)
+        for text in texts:
+            ok = signature(text) == reference
+            rc = subprocess.run(
+                ["nl2hltl2plan", "plan", text, "--world", "tabletop"], capture_output=True, check=False
+            ).returncode
+            same, wrong, total = same + ok, wrong + (rc == 0 and not ok), total + 1
+            codes[rc] += 1
+            if args.per_sentence:
+                print(f"{'same' if ok else 'DIFF'} rc={rc} task {task_id}: {text}")
+    print(f"{args.batch}: same {same}/{total}, wrong {wrong}, exit codes {dict(sorted(codes.items()))}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,101 @@
+"""Everyday styles normalised before the grammar's rules (issue 28), each step removing or rewriting only
+words that carry no object, place, count, negation or order in the place where it applies:
+
+- terse notation: "green apple -> blue plate" is "green apple onto blue plate" (the placement verb is
+  then supplied as for any verbless placement), "first: A" / "then: B" lose the colon, and a
+  parenthetical free-order remark "(any order)" is kept as ", in any order" (other parentheticals are
+  dropped later by `normalize`);
+- spoken fillers and hedges: hesitations ("um", "uh", "er"), an interjection opening the request or a
+  clause ("ok so", "alright,", "so basically"), ", like," between commas, a tag at the end (", yeah"),
+  and "just" before a placement verb ("just put ..."; "just the orange" is left, and read or refused);
+- goals stated as need or belonging: a heading before a colon that says the listed things need places
+  ("four things need plates:", "each fruit gets its own plate:") is dropped when its count, if it says
+  one, is the number of placements listed after it; "..., so please put them there" after placements
+  stated as belonging repeats them and is dropped;
+- a free-order remark about the last group ("the order of those two doesn't matter") is the plain
+  "order doesn't matter", which the rules read as freeing the order inside the last group only; closing
+  a one-sentence request (", order doesn't matter", "; any order"), it is ", in any order". After
+  several sentences its scope is left to the rules, which read it or refuse it.
+"""
+
+from __future__ import annotations
+
+import re
+
+_HESITATION = re.compile(
+    r"(?:^|(?<=[\s,]))(?:u+h+m*|u+m+|e+r+m+|e+r+|hmm+|mm+|basically)(?=[\s,.;!?]|$)", re.I
+)
+# (the rules read an opener at the very start themselves, "ok so put ...": there it is taken only before
+# a comma, "so, um, the ...")
+_OPENER = re.compile(
+    r"([,;:.]\s*|\band\s+)(?:(?:ok|okay|alright|all\s+right|so(?!\s+(?:that|as)\b)|well)\b\s*,?\s*|right\s*,\s*)+"
+    r"(?=[a-z])",
+    re.I,
+)
+_START_OPENER = re.compile(
+    r"^\s*(?:(?:ok|okay|alright|all\s+right|so|well|right)\b\s*,?\s*)*(?:ok|okay|alright|all\s+right|so|well|right)\s*,\s*",
+    re.I,
+)
+_LIKE = re.compile(r",\s*like\s*,", re.I)
+_TAG = re.compile(r",\s*(?:yeah|yep|ok|okay|alright|right)\s*(?=[.!?]?\s*$)", re.I)
+_JUST = re.compile(r"\bjust\s+(?=(?:put|place|move|pop|drop|set|stick|leave)\b)", re.I)
+_ARROW = re.compile(r"\s*->\s*")
+_STEP_COLON = re.compile(r"\b(first|then|next|after\s+that|finally|lastly)\s*:\s*", re.I)
+_FREE_ORDER = r"(?:in\s+)?(?:any|whatever)\s+order(?:\s+(?:is\s+fine|you\s+like|works))?"
+_PAREN_FREE_ORDER = re.compile(
+    rf"\s*\(\s*(?:{_FREE_ORDER}|(?:the\s+)?order\s+(?:does\s*n[o']?t|does\s+not)\s+matter)\s*\)", re.I
+)
+_LAST_GROUP_ORDER = re.compile(
+    r"\b(?:the\s+)?order\s+of\s+(?:those|these|them|the\s+last)(?:\s+(?:two|three|four|ones?))?\s+"
+    r"(?=(?:does\s*n[o']?t|does\s+not)\s+matter\b)",
+    re.I,
+)
+_NUMBERS = {"two": 2, "three": 3, "four": 4, "five": 5, "six": 6}
+_NEED_HEADING = re.compile(
+    r"^\s*(?:(?P<count>two|three|four|five|six|\d)\s+|each\s+|every\s+)?[a-z]+\s+"
+    r"(?:needs?|gets?)\s+(?:(?:a|its|their)\s+(?:own\s+)?)?(?:plates?|places?|spots?|homes?)\s*:\s*",
+    re.I,
+)
+_PLACEMENT = re.compile(r"\b(?:in|into|on|onto|to)\s+the\s+", re.I)
+_PUT_THEM_THERE = re.compile(
+    r",?\s*(?:and\s+)?so\s+(?:please\s+)?(?:put|place|move)\s+(?:them|it|those)\s+there(?=\s*[.;!?]?\s*$)",
+    re.I,
+)
+_BELONGS = re.compile(r"\bbelongs?\s+(?:in|on|to)\b", re.I)
+# a free-order remark closing the request, after a comma or as its own clause: ", order doesn't matter",
+# "; any order" (read as the ", in any order" that the rules read)
+_CLOSING_FREE_ORDER = re.compile(
+    rf"\s*[,;.]\s*(?:(?:the\s+)?order\s+(?:does\s*n[o']?t|does\s+not)\s+matter|{_FREE_ORDER})\s*[.!]?\s*$",
+    re.I,
+)
+
+
+def everyday(text: str) -> str:
+    """The text with the everyday styles above rewritten onto the forms the grammar reads."""
+    text = _PAREN_FREE_ORDER.sub(", in any order", text)
+    text = _STEP_COLON.sub(r"\1 ", _ARROW.sub(" onto ", text))
+    if _BELONGS.search(text):
+        text = _PUT_THEM_THERE.sub("", text)
+    text = _HESITATION.sub(" ", text)
+    text = re.sub(r"(\s*,)+", ",", text)  # the commas left where fillers were
+    text = _LIKE.sub(",", _TAG.sub("", text))
+    text = _START_OPENER.sub("", _OPENER.sub(r"\1", text))
+    text = _JUST.sub("", text)
+    text = re.sub(r"\band\s*,\s*", "and ", re.sub(r"^\s*,\s*", "", text))
+    text = _without_need_heading(text)
+    text = _LAST_GROUP_ORDER.sub("order ", text)
+    if not re.search(r"[.!?]\s+\S", text):  # in one sentence: what the remark is about is plain
+        text = _CLOSING_FREE_ORDER.sub(", in any order", text)
+    return re.sub(r"\s+", " ", text).strip()
+
+
+def _without_need_heading(text: str) -> str:
+    """A heading "four things need plates:" dropped when the placements after it are as many as it says."""
+    m = _NEED_HEADING.match(text)
+    if not m:
+        return text
+    count = m["count"]
+    listed = len(_PLACEMENT.findall(text[m.end() :]))
+    if count and (_NUMBERS.get(count.lower()) or int(count)) != listed:
+        return text
+    return text[m.end() :]
