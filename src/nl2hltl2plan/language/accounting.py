@@ -196,6 +196,11 @@ def _nouns(
     return out
 
 
+# a "with" after these opens the task a thing is in ("done with the mug"); clauses end at these words
+_DONE_WORDS = frozenset({"done", "finished", "through", "over"})
+_CLAUSE_BOUND = re.compile(r"[.;!?]|\b(?:and|then|but|before|after|once|until|till|while|whenever)\b")
+
+
 def _locative(
     instruction: str,
     m: Mention,
@@ -231,9 +236,6 @@ def _locative(
     return any(clause[0] <= o.char_start < clause[1] and o.start not in (m.start, start) for o in near)
 
 
-_DONE_WORDS = frozenset({"done", "finished", "through", "over"})
-
-
 def _walked_to(toks: list[tuple[str, int, int]], start: int) -> bool:
     """ "go to the counter, grab the bread ...": where the robot walks (the place's first word at
     `start`) is a step of the task, not a destination."""
@@ -244,13 +246,9 @@ def _walked_to(toks: list[tuple[str, int, int]], start: int) -> bool:
     return to and j >= 0 and bool(stems(toks[j][0]) & NAVIGATION)
 
 
-_CLAUSE_BOUND = re.compile(r"[.;!?]|\b(?:and|then|but|before|after|once|until|till|while|whenever)\b")
-
-
 def _clause_span(text: str, at: int) -> tuple[int, int]:
     """The clause around character `at`: between full stops, semicolons, "and", "then", "but" and the
-    order words that open a clause of another task ("the cloth in the drawer before the paper goes on the
-    shelf": the drawer is no description of where the shelf is)."""
+    order words that open another task's clause ("the cloth in the drawer before the paper goes ...")."""
     bounds = [0, *(x.start() for x in _CLAUSE_BOUND.finditer(text.lower())), len(text)]
     start = max(b for b in bounds if b <= at)
     return start, min(b for b in bounds if b > at)
