@@ -7,14 +7,12 @@ must give the written spec and near misses that must be refused (never the writt
 from __future__ import annotations
 
 import pytest
+from handover_specs import TASKS
+from handover_specs import spec_of as _spec
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.handover_spoken import unspoken
-from nl2hltl2plan.language.translate import translate
-from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
-from nl2hltl2plan.suites.handover.handover_bench import instance, load_tasks, specs_equivalent
-
-TASKS = {t.id: t for t in load_tasks()}
+from nl2hltl2plan.suites.handover.handover_bench import specs_equivalent
 
 READ = [
     # topics: blocks (plural "them", "their positions"; singular "it"), region lists, "each of those regions"
@@ -111,12 +109,6 @@ REFUSED = [
     # a dictated order whose clause break is not at a colour: left unread
     (6, "place the three objects separately on g h and i red placed first blue after"),
 ]
-
-
-def _spec(task_id: int, text: str) -> HierarchicalSpec:
-    result = translate(text, instance(TASKS[task_id], 0, 0).as_world())
-    assert result.spec is not None
-    return result.spec
 
 
 @pytest.mark.parametrize(("task_id", "text"), READ)

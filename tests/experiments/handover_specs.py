@@ -1,0 +1,29 @@
+"""A handover sentence read for the tests: the spec it gives on an instance of its Table III task, and
+the checks that compare it with the task's written spec node by node (Spot equivalence)."""
+
+from __future__ import annotations
+
+from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.language.translate import translate
+from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
+from nl2hltl2plan.suites.handover.handover_bench import instance, load_tasks, specs_equivalent
+
+TASKS = {t.id: t for t in load_tasks()}
+
+
+def spec_of(task_id: int, text: str, k: int = 0) -> HierarchicalSpec:
+    """The spec `text` gives on instance `k` of task `task_id` (HTTError when it is refused)."""
+    result = translate(text, instance(TASKS[task_id], 0, k).as_world())
+    assert result.spec is not None
+    return result.spec
+
+
+def assert_not_the_written_spec(task_id: int, text: str) -> None:
+    """A near miss is refused with a one-line error, or gives another spec: never the written one."""
+    try:
+        spec = spec_of(task_id, text)
+    except HTTError as exc:
+        assert "\n" not in str(exc)
+        return
+    equal, _ = specs_equivalent(spec, TASKS[task_id].hierarchical())
+    assert not equal
