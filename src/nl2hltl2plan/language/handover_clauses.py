@@ -33,17 +33,16 @@ from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.handover_scene import NOUN, Marked, Scene
 from nl2hltl2plan.language.handover_words import PREP, VERB
 
-# when a scene statement holds: "now", "at the moment", "to begin with"
-_NOW = (
-    r"(?:\s+(?:at\s+the\s+moment|right\s+now|now|currently|at\s+present|at\s+first|initially|"
-    r"to\s+begin\s+with))?"
-)
+# when a scene statement holds: "now", "at the moment"; `_NOW` (after the verb) also "initially", "at first"
+_NOW_WORDS = r"(?:at\s+the\s+moment|right\s+now|now|currently|at\s+present)"
+_NOW = rf"(?:\s+(?:{_NOW_WORDS}|at\s+first|initially|to\s+begin\s+with))?"
 _LIE = r"(?:sitting|standing|lying|resting|located|placed)"
 _MODAL_Q = r"(?:could|can|would|will|should|may|shall)"
 
 
 def read_statements(m: Marked, scene: Scene) -> None:
-    """Read the sentence's scene, target, need and question clauses in place (see the module docstring)."""
+    """Read the sentence's scene, target, need and question clauses, place headings, verb pairs and a bare
+    "opposite" in place (see the module docstring)."""
     _read_scene(m, scene)
     _read_targets(m)
     _read_needs(m)
@@ -128,13 +127,12 @@ def _read_scene(m: Marked, scene: Scene) -> None:
 
     # a clause of its own: "the pillars sit on H, I and J", "the red block is now on G", "the pillars are
     # on H, I and J right now" (with a plain "is/are", only with its time)
-    now = r"(?:at\s+the\s+moment|right\s+now|now|currently|at\s+present)"
     m.sub(
-        rf"(?P<lead>^|,|;)\s*(?P<now0>(?:right\s+now|now|currently|at\s+the\s+moment|at\s+present)\s*,?\s*)?"
+        rf"(?P<lead>^|,|;)\s*(?P<now0>{_NOW_WORDS}\s*,?\s*)?"
         rf"B(?P<b>\d+)\s+(?P<now>(?:now|currently)\s+)?(?:(?:are|is)\s+(?:now\s+|currently\s+)?)?"
         rf"(?:(?:sits?|sitting|stands?|standing|lies?|lying|rests?|resting|starts?|located)\s+(?:on|in|at)\s+P(?P<p>\d+)"
         rf"(?P<at>{_NOW})|"
-        rf"(?:are|is)\s+(?P<t1>{now}\s+)?(?:on|in|at)\s+P(?P<p2>\d+)(?P<t2>\s+{now})?)"
+        rf"(?:are|is)\s+(?P<t1>{_NOW_WORDS}\s+)?(?:on|in|at)\s+P(?P<p2>\d+)(?P<t2>\s+{_NOW_WORDS})?)"
         rf"\s*(?:(?P<link>\bbut\b|\band\b)|(?=,|$))",
         main,
     )
