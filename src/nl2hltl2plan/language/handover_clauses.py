@@ -68,24 +68,25 @@ def _holds(m: Marked, scene: Scene, b: str, p: str) -> bool:
     return place.kind == "regions" and all(r in place.regions for r in regions)
 
 
+def _said(m: Marked, text: str) -> str:
+    """A marked clause in the writer's words (for an error that names it)."""
+    said = re.sub(r"\bB(\d+)\b", lambda x: m.block_text[int(x.group(1))], text)
+    said = re.sub(r"\bP(\d+)\b", lambda x: m.places[int(x.group(1))].text, said)
+    return " ".join(said.strip(" ,").split())
+
+
 def _refuse_scene(m: Marked, scene: Scene, b: str, text: str) -> HTTError:
     where = scene.layout.region_at
     starts = ", ".join(f"{x.lower()} on {where.get(scene.starts[x], '?')}" for x in m.blocks[int(b)])
-    said = re.sub(r"\bB(\d+)\b", lambda x: m.block_text[int(x.group(1))], text)
-    said = re.sub(r"\bP(\d+)\b", lambda x: m.places[int(x.group(1))].text, said)
-    said = " ".join(said.strip(" ,").split())
-    return HTTError(f"'{said}' does not hold in this scene ({starts}); say where the blocks go")
+    return HTTError(f"'{_said(m, text)}' does not hold in this scene ({starts}); say where the blocks go")
 
 
 def _read_scene(m: Marked, scene: Scene) -> None:
     def present(match: re.Match[str]) -> str:
         group = m.blocks[int(match.group("b"))]
         if sorted(group) != sorted(scene.starts):
-            said = " ".join(
-                match.group(0).replace(f"B{match.group('b')}", m.block_text[int(match.group("b"))]).split()
-            )
             raise HTTError(
-                f"'{said.strip(' ,')}' does not hold in this scene (its blocks: "
+                f"'{_said(m, match.group(0))}' does not hold in this scene (its blocks: "
                 f"{', '.join(x.lower() for x in sorted(scene.starts))}); say which blocks go where"
             )
         return match.group("lead")
