@@ -53,7 +53,7 @@ _MARKER = r"(?:i\s+mean|i\s+meant|sorry|or\s+rather|no\s+wait|wait(?=\s*,)|~)"
 _RESTATED_FREELY = frozenset({"the", "region", "regions", "block", "blocks", "one", "ones", ","})
 _VERB_AFTER_SUBJECT = r"(?:goes|go|comes|is|are|must|should|has|have|needs?|gets?|will|can|may)"
 _OPEN = r"(?:and|or|the|a|to|on|onto|in|into|of|at|is|are|be|,)"
-_GERUNDS = GERUND_VERBS | NEGATED_GERUNDS | {"placing": "place", "returning": "return"}
+_GERUNDS = GERUND_VERBS | NEGATED_GERUNDS | {"returning": "return"}  # the one the tables lack
 _VERB_OR_RULE = rf"(?:{VERB}|exchange|swap|fill|touch|keep|leave|do\s+not|no|nothing|never|make|be)\b"
 
 # fillers and hedges that carry no meaning, each only in the place where it cannot carry one
