@@ -91,6 +91,9 @@ APPOSITION = (
     r"made\s+up\s+of|(?:that\s+is\s+|which\s+is\s+)?(?:formed|made|composed|covered)\s+(?:by|of)|namely|:)"
 )
 LEAD = r"\s*,?\s*(?:you\s+should\s+|please\s+|we\s+should\s+)?"
+# a heading's label of a rule ("Rule:", "Constraint:"), and the step number a heading may follow ("2)")
+_RULE_LABEL = r"(?:order|ordering|sequence|constraints?|rules?|requirements?|restrictions?|conditions?)"
+_STEP_NUMBER = r"\s*(?:step\s+\w+\s*:?|\d\s*[):]|\(\s*\d\s*\))?\s*"
 
 # Rewrites applied to the lower-cased sentence before any phrase is read: each maps a variant onto the
 # form the patterns read and changes no meaning ("prior to" -> "before", "whilst" -> "while").
@@ -132,22 +135,14 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\s*,?\s*\bwith\s+the\s+(?:rule|condition|constraint|requirement|restriction)\s+that\b", ","),
     (r"\bin\s+addition(?:\s+to\s+(?:that|this))?\b", " "),
     # a heading, also after a step's number: "Rule: ...", "2) Constraint: ...", "Goals:"
-    (
-        r"^(\s*(?:step\s+\w+\s*:?|\d\s*[):]|\(\s*\d\s*\))?\s*)(?:order|ordering|sequence|constraints?|rules?|"
-        r"requirements?|restrictions?|conditions?)\s*:",
-        r"\1",
-    ),
+    (rf"^({_STEP_NUMBER}){_RULE_LABEL}\s*:", r"\1"),
     # a completion marker as a heading: "when the transfer is done: yellow back to G"
     (rf"^\s*({AFTER_ALL})\s*:", r"\1 ,"),
     # a sentence that goes on from the one before: "And the yellow block to the opposite side whenever."
     (r"^\s*and\s*,?\s+", " "),
     # a rule's label after a comma, in a compressed heading: "Goal: ..., constraint: red before blue"
-    (r",\s*(?:order|ordering|sequence|constraints?|rules?|requirements?|restrictions?|conditions?)\s*:", ","),
-    (
-        r"^(\s*(?:step\s+\w+\s*:?|\d\s*[):]|\(\s*\d\s*\))?\s*)(?:objectives?|goals?|tasks?|aims?|missions?|"
-        r"instructions?)\s*:",
-        r"\1 please",
-    ),
+    (rf",\s*{_RULE_LABEL}\s*:", ","),
+    (rf"^({_STEP_NUMBER})(?:objectives?|goals?|tasks?|aims?|missions?|instructions?)\s*:", r"\1 please"),
     # casual openers and closers: "ok so ...", "... pls", "thanks"
     (r"^\s*(?:(?:ok(?:ay)?|alright|right|so|well|hi|hello|hey)\b\s*,?\s*)+", " "),
     (r"\b(?:pls|plz|thx|thanks|thank\s+you)\b", "please"),
