@@ -102,10 +102,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"^\s*(?:your|the|my)\s+(?:job|task|goal|mission|assignment)\s*(?:is\s+to\b|:)", "please"),
     (r"(?<=s)'(?=\s|$)", ""),  # the blocks' positions -> the blocks positions
     (r"\bwhilst\b", "while"),
-    (r"\bcan\s*'\s*t\b", "cannot"),
-    (r"\bwon\s*'\s*t\b", "will not"),
     (r"\bshan\s*'\s*t\b", "shall not"),
-    (r"n\s*'\s*t\b", " not"),
     (r"\bamongst\b", "among"),
     (r"\b(?:i|we)\s*(?:'\s*d|would)\s+like\s+(?:you\s+)?to\b", "please"),
     (r"\b(?:i|we)\s+(?:want|need)\s+you\s+to\b", "please"),
