@@ -49,8 +49,8 @@ PERIOD_WORDS = (
     r"while\s+doing\s+(?:so|this|that|it)|while\s+(?:this|that)\s+(?:happens|is\s+happening|goes\s+on|is\s+going\s+on)|"
     r"at\s+the\s+same\s+time|in\s+the\s+process|all\s+the\s+while|the\s+whole\s+time|in\s+the\s+interim|"
     r"throughout(?:\s+(?:this|the|that)\s+(?:process|period|time))?|until\s+then|along\s+the\s+way|in\s+between|"
-    # "until you're done", "till done": until the goals are met (a plan ends when its last goal is met)
-    r"until\s+(?:(?:you|we|they)\s*(?:'\s*re|\s+are|\s+have\s+finished)\s+)?(?:all\s+)?(?:done|finished)|"
+    # "until you are done", "till done": until the goals are met (a plan ends when its last goal is met)
+    r"until\s+(?:(?:you|we|they)\s+(?:are|have\s+finished)\s+)?(?:all\s+)?(?:done|finished)|"
     r"until\s+(?:it|this|that|everything)\s+is\s+(?:done|finished|complete)|"
     r"for\s+as\s+long\s+as\s+(?:this|that|it)\s+takes|"
     # "during the whole task", "for the duration of this task", "while you do this", "while this is done"
@@ -69,7 +69,7 @@ DONE_STATE = (
 AFTER_ALL = (
     r"(?:(?:once|when|after)\s+(?:all\s+(?:of\s+)?)?(?:this|these|that|it|everything(?:\s+else)?|the\s+above)(?:\s+all)?\s+"
     rf"(?:is|are|has\s+been|have\s+been)\s+(?:all\s+)?{DONE_STATE}|(?:once|when)\s+{DONE_STATE}|"
-    rf"(?:once|when|after)\s+(?:you|we)\s*(?:'\s*re|'\s*ve(?:\s+been)?|\s+are|\s+have(?:\s+been)?)\s+(?:all\s+)?{DONE_STATE}|"
+    rf"(?:once|when|after)\s+(?:you|we)\s+(?:are|have(?:\s+been)?)\s+(?:all\s+)?{DONE_STATE}|"
     r"after\s+(?:all\s+(?:of\s+)?(?:these|this|that|"
     r"the\s+above)|everything(?:\s+else)?)|finally|lastly|last\s+of\s+all|at\s+the\s+(?:very\s+)?end|in\s+the\s+end|"
     r"after\s+(?:finish(?:ing)?|complet(?:e|ing)|doing|done)\s+(?:with\s+)?(?:all\s+(?:of\s+)?)?(?:this|these|that|everything|them)|"
