@@ -104,7 +104,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\bwhilst\b", "while"),
     (r"\bshan\s*'\s*t\b", "shall not"),
     (r"\bamongst\b", "among"),
-    (r"\b(?:i|we)\s*(?:'\s*d|would)\s+like\s+(?:you\s+)?to\b", "please"),
+    (r"\b(?:i|we)\s*would\s+like\s+(?:you\s+)?to\b", "please"),
     (r"\b(?:i|we)\s+(?:want|need)\s+you\s+to\b", "please"),
     (r"\b(?:could|can|would|will)\s+you\s+(?:please\s+)?", "please "),
     (r"\blet\s*'?\s*s\b|\blet\s+us\b|\bgo\s+ahead\s+and\b", "please"),
@@ -122,7 +122,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\b(?:earlier\s+than|prior\s+to|ahead\s+of|in\s+advance\s+of|sooner\s+than)\b", "before"),
     (r"\blater\s+than\b", "after"),
     (r"\buntil\s+after\b", "until"),
-    (r"\b(?:i|we)\s*(?:'\s*d|would)\s+like\b", "want"),
+    (r"\b(?:i|we)\s*would\s+like\b", "want"),
     # framing that announces a rule: "there is one ordering requirement:", "with the rule that"
     (
         r"\bthere\s+(?:is|are)\s+(?:one|a|an|another|two|some)\s+(?:\w+\s+)?(?:requirement|restriction|constraint|"
@@ -199,7 +199,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
     ),
     # framing that announces the task: "what I would like you to do is (to) ...", "what needs to happen is"
     (
-        r"^\s*what\s+(?:please|(?:i|we)\s*(?:'\s*d|would)?\s*(?:like|want|need)\s+(?:you\s+)?to)\s+do\s+is\s+(?:to\s+)?",
+        r"^\s*what\s+(?:please|(?:i|we)\s*(?:would\s*)?(?:like|want|need)\s+(?:you\s+)?to)\s+do\s+is\s+(?:to\s+)?",
         "please ",
     ),
     (r"^\s*what\s+(?:needs|has)\s+to\s+(?:happen|be\s+done)\s+is\s+(?:that\s+)?", " "),
