@@ -84,7 +84,7 @@ def main() -> None:
         total += batch_total
         rows = [row(name, batch_total)] if args.batch == "all" else [row(s, c) for s, c in per_style.items()]
         print("\n".join(rows))
-    print(row("all", total).replace("| all |", "| **all** |") if args.batch == "all" else row("all", total))
+    print(row("**all**" if args.batch == "all" else "all", total))
     per = (time.perf_counter() - start) / max(1, sum(total.values()))
     print(f"\n{per * 1000:.0f} ms per sentence (reading and the node-by-node Spot check)")
     if args.verbose:

@@ -11,6 +11,11 @@ from nl2hltl2plan.suites.handover.handover_bench import instance, load_tasks, sp
 TASKS = {t.id: t for t in load_tasks()}
 
 
+def cases(*tables: dict[int, list[str]]) -> list[tuple[int, str]]:
+    """(task, sentence) pairs of tables {task: [sentences]}, in order: the tests' parameters."""
+    return [(task, text) for table in tables for task, texts in table.items() for text in texts]
+
+
 def spec_of(task_id: int, text: str, k: int = 0) -> HierarchicalSpec:
     """The spec `text` gives on instance `k` of task `task_id` (HTTError when it is refused)."""
     result = translate(text, instance(TASKS[task_id], 0, k).as_world())

@@ -14,7 +14,7 @@ from handover_session11 import (
     READ_DEV12,
     READ_DEV13,
 )
-from handover_specs import TASKS, assert_not_the_written_spec
+from handover_specs import TASKS, assert_not_the_written_spec, cases
 from handover_specs import spec_of as _spec
 
 from nl2hltl2plan.errors import HTTError
@@ -23,7 +23,7 @@ from nl2hltl2plan.suites.handover.handover_bench import specs_equivalent
 
 @pytest.mark.parametrize(
     ("task_id", "text"),
-    [(t, x) for r in (READ, READ_DEV12, READ_DEV13) for t, texts in r.items() for x in texts],
+    cases(READ, READ_DEV12, READ_DEV13),
 )
 def test_clause_forms_give_the_written_specs(task_id, text):
     equal, why = specs_equivalent(_spec(task_id, text), TASKS[task_id].hierarchical())
@@ -32,12 +32,7 @@ def test_clause_forms_give_the_written_specs(task_id, text):
 
 @pytest.mark.parametrize(
     ("task_id", "text"),
-    [
-        (t, x)
-        for r in (NEAR_MISSES, NEAR_MISSES_DEV12, NEAR_MISSES_DEV13)
-        for t, texts in r.items()
-        for x in texts
-    ],
+    cases(NEAR_MISSES, NEAR_MISSES_DEV12, NEAR_MISSES_DEV13),
 )
 def test_near_misses_of_the_clause_forms_are_refused_or_give_another_spec(task_id, text):
     assert_not_the_written_spec(task_id, text)
@@ -55,7 +50,7 @@ def test_a_scene_statement_the_world_contradicts_is_refused_by_name():
         _spec(3, "The pillars sit on E, F and G now. Move them to regions E, F and G.")
 
 
-@pytest.mark.parametrize(("task_id", "text"), [(t, x) for t, texts in OUT_OF_ORDER.items() for x in texts])
+@pytest.mark.parametrize(("task_id", "text"), cases(OUT_OF_ORDER))
 def test_steps_said_out_of_order_are_refused_by_name(task_id, text):
     with pytest.raises(HTTError, match="say the steps in order"):
         _spec(task_id, text)

@@ -24,7 +24,7 @@ from handover_heldout import (
 )
 from handover_rephrasings import REPHRASINGS
 from handover_session10 import NEAR_MISSES_DEV10, NEAR_MISSES_S10, REASONS_READ, STILL_REFUSED, STYLES
-from handover_specs import TASKS, assert_not_the_written_spec
+from handover_specs import TASKS, assert_not_the_written_spec, cases
 from handover_specs import spec_of as _spec
 
 from nl2hltl2plan.errors import HTTError
@@ -39,15 +39,13 @@ def test_table3_instructions_give_the_written_specs(task_id):
     assert equal, why
 
 
-@pytest.mark.parametrize(
-    ("task_id", "text"), [(t, text) for t, texts in REPHRASINGS.items() for text in texts]
-)
+@pytest.mark.parametrize(("task_id", "text"), cases(REPHRASINGS))
 def test_rephrasings_give_the_same_specs(task_id, text):
     equal, why = specs_equivalent(_spec(task_id, text), TASKS[task_id].hierarchical())
     assert equal, why
 
 
-@pytest.mark.parametrize(("task_id", "text"), [(t, text) for t, texts in HELD_OUT.items() for text in texts])
+@pytest.mark.parametrize(("task_id", "text"), cases(HELD_OUT))
 def test_held_out_rephrasings_give_the_same_specs(task_id, text):
     """Written after the rules, kept apart from REPHRASINGS: 13 of 17 gave the spec at first, the other 4
     were refused (exit 2, never a different spec) until the phrases they use were added generally."""
@@ -57,12 +55,7 @@ def test_held_out_rephrasings_give_the_same_specs(task_id, text):
 
 @pytest.mark.parametrize(
     ("task_id", "text"),
-    [
-        (t, text)
-        for group in (SEEN_WHILE_FIXING, FIXING_VARIANTS, H43_VARIANTS, STACKED_MARKERS)
-        for t, texts in group.items()
-        for text in texts
-    ],
+    cases(SEEN_WHILE_FIXING, FIXING_VARIANTS, H43_VARIANTS, STACKED_MARKERS),
 )
 def test_rephrasings_seen_while_fixing_give_the_same_specs(task_id, text):
     """The refused sentences of the lead's held-out sets (issue 24) and our variants along each axis a
@@ -116,18 +109,7 @@ def test_a_different_meaning_gives_a_different_spec(task_id, text):
 
 @pytest.mark.parametrize(
     ("task_id", "text"),
-    [
-        (t, text)
-        for group in (
-            NEAR_MISSES,
-            H43_NEAR_MISSES,
-            STACKED_MARKER_NEAR_MISSES,
-            NEAR_MISSES_S10,
-            NEAR_MISSES_DEV10,
-        )
-        for t, texts in group.items()
-        for text in texts
-    ],
+    cases(NEAR_MISSES, H43_NEAR_MISSES, STACKED_MARKER_NEAR_MISSES, NEAR_MISSES_S10, NEAR_MISSES_DEV10),
 )
 def test_near_misses_are_refused_or_give_another_spec(task_id, text):
     assert_not_the_written_spec(task_id, text)
@@ -171,24 +153,20 @@ def test_session10_second_validation_is_read_right_or_refused_never_misread(styl
         _read_right_or_refused(int(task), text)
 
 
-@pytest.mark.parametrize(
-    ("task_id", "text"), [(t, text) for t, texts in REASONS_READ.items() for text in texts]
-)
+@pytest.mark.parametrize(("task_id", "text"), cases(REASONS_READ))
 def test_a_reason_that_names_a_region_is_read_not_dropped(task_id, text):
     equal, why = specs_equivalent(_spec(task_id, text), TASKS[task_id].hierarchical())
     assert equal, why
 
 
-@pytest.mark.parametrize(("task_id", "text"), [(t, text) for t, texts in sample().items() for text in texts])
+@pytest.mark.parametrize(("task_id", "text"), cases(sample()))
 def test_combinations_of_the_axes_give_the_same_specs(task_id, text):
     """A fixed-seed sample of slot combinations (verb x group x "the opposite" x order sentence x ...)."""
     equal, why = specs_equivalent(_spec(task_id, text), TASKS[task_id].hierarchical())
     assert equal, why
 
 
-@pytest.mark.parametrize(
-    ("task_id", "text"), [(t, text) for t, texts in near_misses().items() for text in texts]
-)
+@pytest.mark.parametrize(("task_id", "text"), cases(near_misses()))
 def test_combinations_with_one_meaning_changed_give_another_spec(task_id, text):
     equal, _ = specs_equivalent(_spec(task_id, text), TASKS[task_id].hierarchical())
     assert not equal
@@ -303,9 +281,7 @@ def _read_right_or_refused(task_id: int, text: str) -> None:
     assert equal, (text, why)
 
 
-@pytest.mark.parametrize(
-    ("task_id", "text"), [(t, text) for t, texts in LEAD_HELD_OUT.items() for text in texts]
-)
+@pytest.mark.parametrize(("task_id", "text"), cases(LEAD_HELD_OUT))
 def test_unseen_rephrasings_are_read_right_or_refused_never_misread(task_id, text):
     _read_right_or_refused(task_id, text)
 

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import pytest
 from handover_session10 import STYLES
-from handover_specs import TASKS, assert_not_the_written_spec
+from handover_specs import TASKS, assert_not_the_written_spec, cases
 from handover_specs import spec_of as _spec
 from handover_spoken_cases import CORRECTIONS_REFUSED, NEAR_MISSES, READ
 
@@ -16,20 +16,18 @@ from nl2hltl2plan.language.handover_spoken import unspoken
 from nl2hltl2plan.suites.handover.handover_bench import specs_equivalent
 
 
-@pytest.mark.parametrize(("task_id", "text"), [(t, x) for t, texts in READ.items() for x in texts])
+@pytest.mark.parametrize(("task_id", "text"), cases(READ))
 def test_spoken_forms_give_the_written_specs(task_id, text):
     equal, why = specs_equivalent(_spec(task_id, text), TASKS[task_id].hierarchical())
     assert equal, why
 
 
-@pytest.mark.parametrize(("task_id", "text"), [(t, x) for t, texts in NEAR_MISSES.items() for x in texts])
+@pytest.mark.parametrize(("task_id", "text"), cases(NEAR_MISSES))
 def test_a_filler_that_carries_a_meaning_is_never_dropped(task_id, text):
     assert_not_the_written_spec(task_id, text)
 
 
-@pytest.mark.parametrize(
-    ("task_id", "text"), [(t, x) for t, texts in CORRECTIONS_REFUSED.items() for x in texts]
-)
+@pytest.mark.parametrize(("task_id", "text"), cases(CORRECTIONS_REFUSED))
 def test_a_correction_that_says_something_else_is_refused(task_id, text):
     with pytest.raises(HTTError, match="self-correction"):
         _spec(task_id, text)

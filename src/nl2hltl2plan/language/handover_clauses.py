@@ -33,17 +33,16 @@ from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.handover_scene import NOUN, Marked, Scene
 from nl2hltl2plan.language.handover_words import PREP, VERB
 
-# when a scene statement holds: "now", "at the moment", "to begin with"
-_NOW = (
-    r"(?:\s+(?:at\s+the\s+moment|right\s+now|now|currently|at\s+present|at\s+first|initially|"
-    r"to\s+begin\s+with))?"
-)
+# when a scene statement holds: "now", "at the moment"; `_NOW` (after the verb) also "initially", "at first"
+_NOW_WORDS = r"(?:at\s+the\s+moment|right\s+now|now|currently|at\s+present)"
+_NOW = rf"(?:\s+(?:{_NOW_WORDS}|at\s+first|initially|to\s+begin\s+with))?"
 _LIE = r"(?:sitting|standing|lying|resting|located|placed)"
 _MODAL_Q = r"(?:could|can|would|will|should|may|shall)"
 
 
 def read_statements(m: Marked, scene: Scene) -> None:
-    """Read the sentence's scene, target, need and question clauses in place (see the module docstring)."""
+    """Read the sentence's scene, target, need and question clauses, place headings, verb pairs and a bare
+    "opposite" in place (see the module docstring)."""
     _read_scene(m, scene)
     _read_targets(m)
     _read_needs(m)
@@ -69,24 +68,25 @@ def _holds(m: Marked, scene: Scene, b: str, p: str) -> bool:
     return place.kind == "regions" and all(r in place.regions for r in regions)
 
 
+def _said(m: Marked, text: str) -> str:
+    """A marked clause in the writer's words (for an error that names it)."""
+    said = re.sub(r"\bB(\d+)\b", lambda x: m.block_text[int(x.group(1))], text)
+    said = re.sub(r"\bP(\d+)\b", lambda x: m.places[int(x.group(1))].text, said)
+    return " ".join(said.strip(" ,").split())
+
+
 def _refuse_scene(m: Marked, scene: Scene, b: str, text: str) -> HTTError:
     where = scene.layout.region_at
     starts = ", ".join(f"{x.lower()} on {where.get(scene.starts[x], '?')}" for x in m.blocks[int(b)])
-    said = re.sub(r"\bB(\d+)\b", lambda x: m.block_text[int(x.group(1))], text)
-    said = re.sub(r"\bP(\d+)\b", lambda x: m.places[int(x.group(1))].text, said)
-    said = " ".join(said.strip(" ,").split())
-    return HTTError(f"'{said}' does not hold in this scene ({starts}); say where the blocks go")
+    return HTTError(f"'{_said(m, text)}' does not hold in this scene ({starts}); say where the blocks go")
 
 
 def _read_scene(m: Marked, scene: Scene) -> None:
     def present(match: re.Match[str]) -> str:
         group = m.blocks[int(match.group("b"))]
         if sorted(group) != sorted(scene.starts):
-            said = " ".join(
-                match.group(0).replace(f"B{match.group('b')}", m.block_text[int(match.group("b"))]).split()
-            )
             raise HTTError(
-                f"'{said.strip(' ,')}' does not hold in this scene (its blocks: "
+                f"'{_said(m, match.group(0))}' does not hold in this scene (its blocks: "
                 f"{', '.join(x.lower() for x in sorted(scene.starts))}); say which blocks go where"
             )
         return match.group("lead")
@@ -128,13 +128,12 @@ def _read_scene(m: Marked, scene: Scene) -> None:
 
     # a clause of its own: "the pillars sit on H, I and J", "the red block is now on G", "the pillars are
     # on H, I and J right now" (with a plain "is/are", only with its time)
-    now = r"(?:at\s+the\s+moment|right\s+now|now|currently|at\s+present)"
     m.sub(
-        rf"(?P<lead>^|,|;)\s*(?P<now0>(?:right\s+now|now|currently|at\s+the\s+moment|at\s+present)\s*,?\s*)?"
+        rf"(?P<lead>^|,|;)\s*(?P<now0>{_NOW_WORDS}\s*,?\s*)?"
         rf"B(?P<b>\d+)\s+(?P<now>(?:now|currently)\s+)?(?:(?:are|is)\s+(?:now\s+|currently\s+)?)?"
         rf"(?:(?:sits?|sitting|stands?|standing|lies?|lying|rests?|resting|starts?|located)\s+(?:on|in|at)\s+P(?P<p>\d+)"
         rf"(?P<at>{_NOW})|"
-        rf"(?:are|is)\s+(?P<t1>{now}\s+)?(?:on|in|at)\s+P(?P<p2>\d+)(?P<t2>\s+{now})?)"
+        rf"(?:are|is)\s+(?P<t1>{_NOW_WORDS}\s+)?(?:on|in|at)\s+P(?P<p2>\d+)(?P<t2>\s+{_NOW_WORDS})?)"
         rf"\s*(?:(?P<link>\bbut\b|\band\b)|(?=,|$))",
         main,
     )

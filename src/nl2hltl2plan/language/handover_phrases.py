@@ -54,18 +54,21 @@ from nl2hltl2plan.language.handover_words import (
 
 _TOUCHED = r"(?:touched|picked|grasped|grabbed|handled|moved|lifted)"
 TYPOS = typo_table()
+# compiled once: with the reader's other tables they are more than `re`'s cache holds
+_REWRITES = tuple((re.compile(pattern), replacement) for pattern, replacement in REWRITES)
 
 
 def normalise(sentence: str) -> str:
-    """Lower case, punctuation spaced out, typos mended and `REWRITES` applied."""
+    """Lower case, punctuation spaced out, typos mended, spoken styles normalised (`handover_spoken`),
+    framing dropped and `REWRITES` applied."""
     text = sentence.lower().replace("’", "'")
     text = re.sub(r"(?<=[a-z])-(?=[a-z])", " ", text)  # one-by-one -> one by one
     text = re.sub(r"([,()/:])", r" \1 ", text)
     text = re.sub(r"\b(\w+)'s\b", r"\1 s", text)  # red's -> red s (a possessive)
     text = re.sub(r"[a-z]+", lambda w: TYPOS.get(w.group(0), w.group(0)), text)
     text = _drop_framing(unspoken(text))
-    for pattern, replacement in REWRITES:
-        text = re.sub(pattern, replacement, text)
+    for pattern, replacement in _REWRITES:
+        text = pattern.sub(replacement, text)
     text = re.sub(r"\bplease\b\s*,?", " ", text)  # politeness anywhere: "all three blocks please move to ..."
     return " ".join(text.split())
 
@@ -234,7 +237,7 @@ def _new_block(m: Marked, names: list[str], text: str) -> str:
     return f" B{len(m.blocks) - 1} "
 
 
-def _mark_blocks(m: Marked, scene: Scene, previous: str, previous_group: tuple[str, ...] = ()) -> None:
+def _mark_blocks(m: Marked, scene: Scene, previous: str, previous_group: tuple[str, ...]) -> None:
     colours = (
         rf"\b(?:the\s+)?{COLOUR}(?:\s+{NOUN})?(?:\s+s\b)?(?:\s*(?:,|and|&|or|/)\s*(?:the\s+)?{COLOUR}(?:\s+{NOUN})?"
         rf"(?:\s+s\b)?)*(?:\s+{NOUNS})?\b"

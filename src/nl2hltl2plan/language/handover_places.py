@@ -18,8 +18,8 @@ from nl2hltl2plan.language.handover_words import APPOSITION, EMPTY, VERB
 def mark_place_pronouns(
     m: Marked,
     named_before: tuple[str, ...],
-    place_before: Place | None = None,
-    group_before: tuple[str, ...] = (),
+    place_before: Place | None,
+    group_before: tuple[str, ...],
 ) -> None:
     """'them' after 'on', 'there' after a moved block: the last place named before it in the sentence, else
     the last regions the sentence before named, else the last place it named that a block may go to ('the

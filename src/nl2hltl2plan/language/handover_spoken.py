@@ -53,7 +53,7 @@ _MARKER = r"(?:i\s+mean|i\s+meant|sorry|or\s+rather|no\s+wait|wait(?=\s*,)|~)"
 _RESTATED_FREELY = frozenset({"the", "region", "regions", "block", "blocks", "one", "ones", ","})
 _VERB_AFTER_SUBJECT = r"(?:goes|go|comes|is|are|must|should|has|have|needs?|gets?|will|can|may)"
 _OPEN = r"(?:and|or|the|a|to|on|onto|in|into|of|at|is|are|be|,)"
-_GERUNDS = GERUND_VERBS | NEGATED_GERUNDS | {"placing": "place", "returning": "return"}
+_GERUNDS = GERUND_VERBS | NEGATED_GERUNDS | {"returning": "return"}  # the one the tables lack
 _VERB_OR_RULE = rf"(?:{VERB}|exchange|swap|fill|touch|keep|leave|do\s+not|no|nothing|never|make|be)\b"
 
 # fillers and hedges that carry no meaning, each only in the place where it cannot carry one
@@ -187,15 +187,17 @@ _STEPS = tuple(
     for table in (_CONTRACTIONS, _FILLERS, _NARRATION)
 )
 
+_COMMAS = re.compile(r"(\s*,)+")  # a run of commas, each with the space before it
+
 
 def unspoken(text: str) -> str:
     """The sentence with its spoken fillers, hedges, repeated phrases and narration normalised away (see
     the module docstring); a self-correction that says something else is refused."""
     contractions, fillers, narration = _STEPS
     text = _apply(fillers, _apply(contractions, _clause_breaks(text)))
-    text = re.sub(r"(\s*,)+", " ,", _said_once(text))  # the commas left where fillers were
+    text = _COMMAS.sub(" ,", _said_once(text))  # the commas left where fillers were
     text = _apply(narration, _apply(fillers, text))  # fillers again: an opener behind a hesitation
-    text = _resumed(re.sub(r"(\s*,)+", " ,", text))
+    text = _resumed(_COMMAS.sub(" ,", text))
     text = re.sub(r"^\s*,|,\s*$", " ", text)
     text = re.sub(r"\b(the|a|and|to|on|in)\s+\1\b", r"\1", text)  # a stutter: "the the"
     return " ".join(text.split())

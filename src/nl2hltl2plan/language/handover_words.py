@@ -49,8 +49,8 @@ PERIOD_WORDS = (
     r"while\s+doing\s+(?:so|this|that|it)|while\s+(?:this|that)\s+(?:happens|is\s+happening|goes\s+on|is\s+going\s+on)|"
     r"at\s+the\s+same\s+time|in\s+the\s+process|all\s+the\s+while|the\s+whole\s+time|in\s+the\s+interim|"
     r"throughout(?:\s+(?:this|the|that)\s+(?:process|period|time))?|until\s+then|along\s+the\s+way|in\s+between|"
-    # "until you're done", "till done": until the goals are met (a plan ends when its last goal is met)
-    r"until\s+(?:(?:you|we|they)\s*(?:'\s*re|\s+are|\s+have\s+finished)\s+)?(?:all\s+)?(?:done|finished)|"
+    # "until you are done", "till done": until the goals are met (a plan ends when its last goal is met)
+    r"until\s+(?:(?:you|we|they)\s+(?:are|have\s+finished)\s+)?(?:all\s+)?(?:done|finished)|"
     r"until\s+(?:it|this|that|everything)\s+is\s+(?:done|finished|complete)|"
     r"for\s+as\s+long\s+as\s+(?:this|that|it)\s+takes|"
     # "during the whole task", "for the duration of this task", "while you do this", "while this is done"
@@ -69,7 +69,7 @@ DONE_STATE = (
 AFTER_ALL = (
     r"(?:(?:once|when|after)\s+(?:all\s+(?:of\s+)?)?(?:this|these|that|it|everything(?:\s+else)?|the\s+above)(?:\s+all)?\s+"
     rf"(?:is|are|has\s+been|have\s+been)\s+(?:all\s+)?{DONE_STATE}|(?:once|when)\s+{DONE_STATE}|"
-    rf"(?:once|when|after)\s+(?:you|we)\s*(?:'\s*re|'\s*ve(?:\s+been)?|\s+are|\s+have(?:\s+been)?)\s+(?:all\s+)?{DONE_STATE}|"
+    rf"(?:once|when|after)\s+(?:you|we)\s+(?:are|have(?:\s+been)?)\s+(?:all\s+)?{DONE_STATE}|"
     r"after\s+(?:all\s+(?:of\s+)?(?:these|this|that|"
     r"the\s+above)|everything(?:\s+else)?)|finally|lastly|last\s+of\s+all|at\s+the\s+(?:very\s+)?end|in\s+the\s+end|"
     r"after\s+(?:finish(?:ing)?|complet(?:e|ing)|doing|done)\s+(?:with\s+)?(?:all\s+(?:of\s+)?)?(?:this|these|that|everything|them)|"
@@ -91,6 +91,9 @@ APPOSITION = (
     r"made\s+up\s+of|(?:that\s+is\s+|which\s+is\s+)?(?:formed|made|composed|covered)\s+(?:by|of)|namely|:)"
 )
 LEAD = r"\s*,?\s*(?:you\s+should\s+|please\s+|we\s+should\s+)?"
+# a heading's label of a rule ("Rule:", "Constraint:"), and the step number a heading may follow ("2)")
+_RULE_LABEL = r"(?:order|ordering|sequence|constraints?|rules?|requirements?|restrictions?|conditions?)"
+_STEP_NUMBER = r"\s*(?:step\s+\w+\s*:?|\d\s*[):]|\(\s*\d\s*\))?\s*"
 
 # Rewrites applied to the lower-cased sentence before any phrase is read: each maps a variant onto the
 # form the patterns read and changes no meaning ("prior to" -> "before", "whilst" -> "while").
@@ -99,12 +102,9 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"^\s*(?:your|the|my)\s+(?:job|task|goal|mission|assignment)\s*(?:is\s+to\b|:)", "please"),
     (r"(?<=s)'(?=\s|$)", ""),  # the blocks' positions -> the blocks positions
     (r"\bwhilst\b", "while"),
-    (r"\bcan\s*'\s*t\b", "cannot"),
-    (r"\bwon\s*'\s*t\b", "will not"),
     (r"\bshan\s*'\s*t\b", "shall not"),
-    (r"n\s*'\s*t\b", " not"),
     (r"\bamongst\b", "among"),
-    (r"\b(?:i|we)\s*(?:'\s*d|would)\s+like\s+(?:you\s+)?to\b", "please"),
+    (r"\b(?:i|we)\s*would\s+like\s+(?:you\s+)?to\b", "please"),
     (r"\b(?:i|we)\s+(?:want|need)\s+you\s+to\b", "please"),
     (r"\b(?:could|can|would|will)\s+you\s+(?:please\s+)?", "please "),
     (r"\blet\s*'?\s*s\b|\blet\s+us\b|\bgo\s+ahead\s+and\b", "please"),
@@ -122,7 +122,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\b(?:earlier\s+than|prior\s+to|ahead\s+of|in\s+advance\s+of|sooner\s+than)\b", "before"),
     (r"\blater\s+than\b", "after"),
     (r"\buntil\s+after\b", "until"),
-    (r"\b(?:i|we)\s*(?:'\s*d|would)\s+like\b", "want"),
+    (r"\b(?:i|we)\s*would\s+like\b", "want"),
     # framing that announces a rule: "there is one ordering requirement:", "with the rule that"
     (
         r"\bthere\s+(?:is|are)\s+(?:one|a|an|another|two|some)\s+(?:\w+\s+)?(?:requirement|restriction|constraint|"
@@ -132,22 +132,14 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\s*,?\s*\bwith\s+the\s+(?:rule|condition|constraint|requirement|restriction)\s+that\b", ","),
     (r"\bin\s+addition(?:\s+to\s+(?:that|this))?\b", " "),
     # a heading, also after a step's number: "Rule: ...", "2) Constraint: ...", "Goals:"
-    (
-        r"^(\s*(?:step\s+\w+\s*:?|\d\s*[):]|\(\s*\d\s*\))?\s*)(?:order|ordering|sequence|constraints?|rules?|"
-        r"requirements?|restrictions?|conditions?)\s*:",
-        r"\1",
-    ),
+    (rf"^({_STEP_NUMBER}){_RULE_LABEL}\s*:", r"\1"),
     # a completion marker as a heading: "when the transfer is done: yellow back to G"
     (rf"^\s*({AFTER_ALL})\s*:", r"\1 ,"),
     # a sentence that goes on from the one before: "And the yellow block to the opposite side whenever."
     (r"^\s*and\s*,?\s+", " "),
     # a rule's label after a comma, in a compressed heading: "Goal: ..., constraint: red before blue"
-    (r",\s*(?:order|ordering|sequence|constraints?|rules?|requirements?|restrictions?|conditions?)\s*:", ","),
-    (
-        r"^(\s*(?:step\s+\w+\s*:?|\d\s*[):]|\(\s*\d\s*\))?\s*)(?:objectives?|goals?|tasks?|aims?|missions?|"
-        r"instructions?)\s*:",
-        r"\1 please",
-    ),
+    (rf",\s*{_RULE_LABEL}\s*:", ","),
+    (rf"^({_STEP_NUMBER})(?:objectives?|goals?|tasks?|aims?|missions?|instructions?)\s*:", r"\1 please"),
     # casual openers and closers: "ok so ...", "... pls", "thanks"
     (r"^\s*(?:(?:ok(?:ay)?|alright|right|so|well|hi|hello|hey)\b\s*,?\s*)+", " "),
     (r"\b(?:pls|plz|thx|thanks|thank\s+you)\b", "please"),
@@ -207,7 +199,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
     ),
     # framing that announces the task: "what I would like you to do is (to) ...", "what needs to happen is"
     (
-        r"^\s*what\s+(?:please|(?:i|we)\s*(?:'\s*d|would)?\s*(?:like|want|need)\s+(?:you\s+)?to)\s+do\s+is\s+(?:to\s+)?",
+        r"^\s*what\s+(?:please|(?:i|we)\s*(?:would\s*)?(?:like|want|need)\s+(?:you\s+)?to)\s+do\s+is\s+(?:to\s+)?",
         "please ",
     ),
     (r"^\s*what\s+(?:needs|has)\s+to\s+(?:happen|be\s+done)\s+is\s+(?:that\s+)?", " "),
