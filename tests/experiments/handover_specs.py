@@ -32,3 +32,9 @@ def assert_not_the_written_spec(task_id: int, text: str) -> None:
         return
     equal, _ = specs_equivalent(spec, TASKS[task_id].hierarchical())
     assert not equal
+
+
+def assert_written_spec(task_id: int, text: str, k: int = 0) -> None:
+    """`text` gives the task's written spec, node by node (the failure says which node differs)."""
+    equal, why = specs_equivalent(spec_of(task_id, text, k), TASKS[task_id].hierarchical())
+    assert equal, why

@@ -199,14 +199,20 @@ def test_slot_model_beats_the_majority_baseline_on_held_out_scenes(shared_data: 
     assert hits["majority"] / n <= 0.3, hits
 
 
-def test_reference_compositions_order_by_the_task_they_name() -> None:
-    from nl2hltl2plan.language.learned.compose_refs import DEV_REFS, HELDOUT_REFS, compose_refs
-
-    items = []
+def _five_placements() -> list[FaithfulExample]:
+    """Five one-placement examples of different objects, the material of the reference compositions."""
     pairs = [("Apple", "Fridge"), ("Mug", "Cabinet"), ("Tomato", "CounterTop"), ("SoapBar", "Toilet")]
+    items = []
     for i, (obj, rec) in enumerate(pairs + [("Bowl", "Microwave")]):
         e = _ex(f"Put the {obj.lower()} in the {rec.lower()}.", obj=obj, recep=rec, trial=f"t{i}")
         items.append(FaithfulExample(e, text_task(e, ROOM)))  # type: ignore[arg-type]
+    return items
+
+
+def test_reference_compositions_order_by_the_task_they_name() -> None:
+    from nl2hltl2plan.language.learned.compose_refs import DEV_REFS, HELDOUT_REFS, compose_refs
+
+    items = _five_placements()
     a = compose_refs(items, 60, DEV_REFS, seed=3)
     assert [c.instruction for c in a] == [c.instruction for c in compose_refs(items, 60, DEV_REFS, seed=3)]
     assert sorted({len(c.tasks) for c in a}) == [1, 2, 3, 4, 5]
@@ -229,11 +235,7 @@ def test_reference_compositions_order_by_the_task_they_name() -> None:
 def test_the_new_family_names_a_task_to_come_before_and_frees_only_by_its_phrase() -> None:
     from nl2hltl2plan.language.learned.compose_refs import NEW_REFS, compose_refs
 
-    items = []
-    pairs = [("Apple", "Fridge"), ("Mug", "Cabinet"), ("Tomato", "CounterTop"), ("SoapBar", "Toilet")]
-    for i, (obj, rec) in enumerate(pairs + [("Bowl", "Microwave")]):
-        e = _ex(f"Put the {obj.lower()} in the {rec.lower()}.", obj=obj, recep=rec, trial=f"t{i}")
-        items.append(FaithfulExample(e, text_task(e, ROOM)))  # type: ignore[arg-type]
+    items = _five_placements()
     prior = sorted_ = 0
     for c in compose_refs(items, 300, NEW_REFS, seed=4):
         for m in re.finditer(r"Prior to putting the (\w+), put the (\w+)", c.instruction):
