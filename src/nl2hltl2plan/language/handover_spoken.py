@@ -28,6 +28,7 @@ from __future__ import annotations
 import re
 
 from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.language.grammar.everyday import HESITATION
 from nl2hltl2plan.language.handover_words import GERUND_VERBS, NEGATED_GERUNDS, VERB
 
 # contractions spelled out first, so that each rule below has one form to match
@@ -46,7 +47,7 @@ _CONTRACTIONS = (
     (r"\bgotta\b", "have to"),
     (r"\b(?:kinda|sorta)\b", " "),
 )
-_HESITATION = r"(?:u+h+m*|u+m+|e+r+m*|hmm+|mm+|ah+)"
+_HESITATION = rf"(?:{HESITATION}|ah+)"
 _INTERJECTION = r"(?:okay|ok|alright|all\s+right|right|so|well|now|oh|hi|hey|hello|listen|look|yeah|yep|yup)"
 _MARKER = r"(?:i\s+mean|i\s+meant|sorry|or\s+rather|no\s+wait|wait(?=\s*,)|~)"
 # words that a restated phrase may add or leave out without saying something else

@@ -22,9 +22,9 @@ from __future__ import annotations
 
 import re
 
-_HESITATION = re.compile(
-    r"(?:^|(?<=[\s,]))(?:u+h+m*|u+m+|e+r+m+|e+r+|hmm+|mm+|basically)(?=[\s,.;!?]|$)", re.I
-)
+# hesitations, the one list of them (the handover reader's spoken step uses it too)
+HESITATION = r"(?:u+h+m*|u+m+|e+r+m*|hmm+|mm+)"
+_HESITATION = re.compile(rf"(?:^|(?<=[\s,]))(?:{HESITATION}|basically)(?=[\s,.;!?]|$)", re.I)
 # (the rules read an opener at the very start themselves, "ok so put ...": there it is taken only before
 # a comma, "so, um, the ...")
 _OPENER = re.compile(
