@@ -46,6 +46,7 @@ from nl2hltl2plan.language.grounding import (
 )
 from nl2hltl2plan.language.landmarks import NEAR_WORDS, landmark_destinations, pair_start
 from nl2hltl2plan.language.negations import about_order, unforbidden_verb
+from nl2hltl2plan.language.order_words import check_cycles, unordered_steps
 from nl2hltl2plan.language.parse_usage import IMPLIED_TYPES, ParseUsage
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, ConstraintSpec
 
@@ -100,8 +101,10 @@ def account(
     out += landmark_destinations(mentions, toks, parse)
     out += _invented_kinds(toks, mentions, parse)
     out += _words(instruction, toks, in_mention, mentions, parse, instances, scene)
-    out += _orders(toks, {i for i, t in enumerate(toks) if parse.constraint_at(t[1])} | in_mention, parse)
-    _check_cycles(instruction, toks, mentions, parse)
+    out += unordered_steps(
+        toks, {i for i, t in enumerate(toks) if parse.constraint_at(t[1])} | in_mention, parse
+    )
+    check_cycles(instruction, toks, mentions, parse)
     return out
 
 
@@ -508,72 +511,6 @@ def _count(
         return None
     got = " + ".join(map(str, counts)) or "none"
     return Unread(phrase, "count", f"the base tasks take {got}, not {n}")
-
-
-# "the order is up to you", "in no particular order": the order is left free without an any-order word
-_FREE_PHRASE = re.compile(r"\border is (?:up to you|your call)\b|\bno (?:particular|specific|set) order\b")
-
-
-def _not_a_step(words: list[str], i: int) -> bool:
-    """An order word that names no step: "next to the sink" (a place), "go ahead and", "the second drawer"
-    (an ordinal of a place), "your first job: X, Y" (a heading of the list, read so by the grammar's
-    openers)."""
-    return (
-        words[i : i + 2] == ["next", "to"]
-        or words[i - 1 : i + 1] == ["go", "ahead"]
-        or (words[i] in ("first", "second", "third") and i > 0 and words[i - 1] in ("the", "a", "its"))
-        or (words[i - 1 : i + 1] == ["your", "first"] and words[i + 1 : i + 2] in (["job"], ["task"]))
-    )
-
-
-def _orders(toks: list[tuple[str, int, int]], in_mention: set[int], parse: ParseUsage) -> list[Unread]:
-    """Order words: with several base tasks and no word that frees the order, a sequence word needs an
-    ordering between them."""
-    cats = [categories(w) for i, (w, _, _) in enumerate(toks) if i not in in_mention]
-    plain = [w for w, _, _ in toks]
-    words = [
-        w
-        for i, w in enumerate(plain)
-        if i not in in_mention and "order" in categories(w) and not _not_a_step(plain, i)
-    ]
-    text = " ".join(plain)
-    words += [p for p in ("in that order", "in this order") if f" {p} " in f" {text} "]
-    words += [p for p in ("at the end", "in the end") if re.search(rf"\b{p}\b(?! of\b)", text)]
-    free = any("any_order" in c for c in cats) or _FREE_PHRASE.search(text) is not None
-    if not words or len(parse.tasks) < 2 or parse.before or free:
-        return []
-    return [Unread(", ".join(dict.fromkeys(words)), "order", "the base tasks are not ordered")]
-
-
-def _check_cycles(
-    instruction: str, toks: list[tuple[str, int, int]], mentions: list[Mention], parse: ParseUsage
-) -> None:
-    """'X ... before the Y' / 'X ... after the Y' between object nouns of one sentence: a cycle is an
-    input error."""
-    objects = {t for _, role, st in parse.slots() if role == "object" for t in st}
-    objs = [m for m in mentions if set(m.entry.types) & objects or not objects]
-    g = nx.DiGraph()
-    for i, (w, _, _) in enumerate(toks):
-        if w not in ("before", "after"):
-            continue
-        j = i + 1
-        while j < len(toks) and toks[j][0] in DETERMINERS:
-            j += 1
-        right = [m for m in objs if m.start == j]
-        left = [
-            m for m in objs if m.end <= i and not re.search(r"[.;!?]", instruction[m.char_end : toks[i][1]])
-        ]
-        if not left or not right:
-            continue
-        a, b = left[-1].entry.canonical, right[0].entry.canonical
-        if a != b:
-            g.add_edge(*((a, b) if w == "before" else (b, a)))
-    try:
-        cycle = nx.find_cycle(g)
-    except nx.NetworkXNoCycle:
-        return
-    names = [camel_words(a) for a, _ in cycle] + [camel_words(cycle[0][0])]
-    raise HTTError(f"cyclic order in the instruction: {' before '.join(names)}")
 
 
 def take_every_instance(

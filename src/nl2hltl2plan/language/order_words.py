@@ -1,0 +1,109 @@
+"""Order words in word accounting (`accounting.account`): a sequence word needs an ordering between the
+base tasks, a phrase that frees an order needs an unordered pair, and "X before Y ... Y before X" is a
+cycle (an input error).
+
+>>> from nl2hltl2plan.language.grounding import tokens
+>>> from nl2hltl2plan.language.parse_usage import ParseUsage
+>>> from nl2hltl2plan.language.task_specs import BaseTaskSpec
+>>> two = [BaseTaskSpec(id=i, kind="place", object=["Mug"], receptacle=["Sink"]) for i in "AB"]
+>>> text = "put a mug in the sink, then another - either order is ok"
+>>> [u.words for u in unordered_steps(tokens(text), set(), ParseUsage(two, [("A", "B")]))]
+['either order']
+"""
+
+from __future__ import annotations
+
+import re
+
+import networkx as nx
+
+from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.language.content_words import DETERMINERS, Unread, categories
+from nl2hltl2plan.language.grounding import Mention, camel_words
+from nl2hltl2plan.language.parse_usage import ParseUsage
+from nl2hltl2plan.language.task_specs import transitive_closure
+
+# "the order is up to you", "in no particular order": the order is left free without an any-order word
+_FREE_PHRASE = re.compile(r"\border is (?:up to you|your call)\b|\bno (?:particular|specific|set) order\b")
+
+
+def _not_a_step(words: list[str], i: int) -> bool:
+    """An order word that names no step: "next to the sink" (a place), "go ahead and", "the second drawer"
+    (an ordinal of a place), "your first job: X, Y" (a heading of the list, read so by the grammar's
+    openers)."""
+    return (
+        words[i : i + 2] == ["next", "to"]
+        or words[i - 1 : i + 1] == ["go", "ahead"]
+        or (words[i] in ("first", "second", "third") and i > 0 and words[i - 1] in ("the", "a", "its"))
+        or (words[i - 1 : i + 1] == ["your", "first"] and words[i + 1 : i + 2] in (["job"], ["task"]))
+    )
+
+
+def unordered_steps(
+    toks: list[tuple[str, int, int]], in_mention: set[int], parse: ParseUsage
+) -> list[Unread]:
+    """Order words: with several base tasks and no word that frees the order, a sequence word needs an
+    ordering between them; a phrase that frees an order ("in either order", "meanwhile") needs a pair of
+    base tasks the parse leaves unordered."""
+    cats = [categories(w) for i, (w, _, _) in enumerate(toks) if i not in in_mention]
+    plain = [w for w, _, _ in toks]
+    words = [
+        w
+        for i, w in enumerate(plain)
+        if i not in in_mention and "order" in categories(w) and not _not_a_step(plain, i)
+    ]
+    text = " ".join(plain)
+    words += [p for p in ("in that order", "in this order") if f" {p} " in f" {text} "]
+    words += [p for p in ("at the end", "in the end") if re.search(rf"\b{p}\b(?! of\b)", text)]
+    free = any("any_order" in c for c in cats) or _FREE_PHRASE.search(text) is not None
+    if len(parse.tasks) >= 2 and (freeing := _FREES_A_PAIR.search(text)) and _totally_ordered(parse):
+        return [Unread(freeing.group(0), "order", "it leaves an order free, but every base task is ordered")]
+    if not words or len(parse.tasks) < 2 or parse.before or free:
+        return []
+    return [Unread(", ".join(dict.fromkeys(words)), "order", "the base tasks are not ordered")]
+
+
+# phrases that free the order of some pair of tasks ("then B - either order is ok" frees nothing when the
+# parse orders every pair: the phrase was not read)
+_FREES_A_PAIR = re.compile(
+    r"\b(?:(?:in )?(?:any|either|whichever|whatever) (?:order|sequence)|no (?:particular|specific|set) order"
+    r"|order (?:does ?n[o']?t matter|is (?:up to you|free|your call))|simultaneously|concurrently|meanwhile"
+    r"|at the same time|at any (?:time|point)|any ?time)\b"
+)
+
+
+def _totally_ordered(parse: ParseUsage) -> bool:
+    ids = [t.id for t in parse.tasks]
+    closure = transitive_closure(list(parse.before), ids)
+    return all((a, b) in closure or (b, a) in closure for k, a in enumerate(ids) for b in ids[k + 1 :])
+
+
+def check_cycles(
+    instruction: str, toks: list[tuple[str, int, int]], mentions: list[Mention], parse: ParseUsage
+) -> None:
+    """'X ... before the Y' / 'X ... after the Y' between object nouns of one sentence: a cycle is an
+    input error."""
+    objects = {t for _, role, st in parse.slots() if role == "object" for t in st}
+    objs = [m for m in mentions if set(m.entry.types) & objects or not objects]
+    g = nx.DiGraph()
+    for i, (w, _, _) in enumerate(toks):
+        if w not in ("before", "after"):
+            continue
+        j = i + 1
+        while j < len(toks) and toks[j][0] in DETERMINERS:
+            j += 1
+        right = [m for m in objs if m.start == j]
+        left = [
+            m for m in objs if m.end <= i and not re.search(r"[.;!?]", instruction[m.char_end : toks[i][1]])
+        ]
+        if not left or not right:
+            continue
+        a, b = left[-1].entry.canonical, right[0].entry.canonical
+        if a != b:
+            g.add_edge(*((a, b) if w == "before" else (b, a)))
+    try:
+        cycle = nx.find_cycle(g)
+    except nx.NetworkXNoCycle:
+        return
+    names = [camel_words(a) for a, _ in cycle] + [camel_words(cycle[0][0])]
+    raise HTTError(f"cyclic order in the instruction: {' before '.join(names)}")
