@@ -45,6 +45,22 @@ def test_every_content_word_is_used_or_named():
     assert [u.category for u in negated] == ["negation"]
 
 
+def test_a_treatment_needs_a_word_or_its_appliance_as_a_stop():
+    """An LLM that reads "the mug is in the sink" as a washing: the sink says where the mug is, not that it
+    is washed; "microwave" as a noun is no verb."""
+    washed = [task("clean_place", "Mug", "Microwave")]
+    said = account("The mug is in the sink, put it in the microwave.", washed, [])
+    assert [(u.words, u.category) for u in said] == [("clean_place", "invented")]
+    chilled = [task("cool_place", "Apple", "DiningTable")]
+    assert account("Take the apple out of the fridge and put it on the table.", chilled, []) != []
+    heated = [task("heat_place", "Potato", "CounterTop")]
+    assert account("The potato that is in the microwave goes on the counter.", heated, []) != []
+    # the appliance as a stop, or the treatment's verb, names it
+    assert account("Put the mug in the sink, then in the microwave.", washed, []) == []
+    assert account("Put the potato from the sink into the microwave, then on the counter.", heated, []) == []
+    assert account("Microwave the potato and put it on the counter.", heated, []) == []
+
+
 def test_counts_and_cycles_are_input_errors():
     cups = [task("place_two", "Cup", "DishwasherUpperRack", count=2)]
     with pytest.raises(HTTError, match="holds only 2"):

@@ -121,7 +121,9 @@ def test_then_and_a_free_order_is_a_contradiction(backend):
 # a free-order phrase after a dash was swallowed by the last clause, and its ordering read from "then"
 def test_a_free_order_phrase_needs_an_unordered_pair(backend):
     refused("Apple in the fridge, then mug in the sink - either order is fine.", backend, "either order")
-    refused("Put the apple in the fridge, then the mug in the sink; the order does not matter.", backend, "order")
+    refused(
+        "Put the apple in the fridge, then the mug in the sink; the order does not matter.", backend, "order"
+    )
     tasks, order = reading(
         "Put the apple in the fridge first, then the mug and the egg in the sink, in either order.", backend
     )

@@ -285,12 +285,14 @@ def _invented_kinds(
     """A heat / cool / clean task or a slice needs a word for it: a verb or state word ("chilled"), or
     its appliance named as a stop ("put the apple in the microwave, then on the counter")."""
     cats: set[str] = set()
+    in_mention = {i for m in mentions for i in range(m.start, m.end)}
     for w, _, _ in toks:
         cats |= categories(w)
-    named = {m.entry.canonical for m in mentions}
+    verbs = {c for i, (w, _, _) in enumerate(toks) if i not in in_mention for c in categories(w)}
+    named = {m.entry.canonical for m in mentions if _a_stop(m, toks)}
     out = []
     for t in parse.tasks:
-        word = f"verb_{t.kind}" in cats or named & IMPLIED_TYPES.get(t.kind, set())
+        word = f"verb_{t.kind}" in verbs or named & IMPLIED_TYPES.get(t.kind, set())
         if t.kind in IMPLIED_TYPES and not word:
             out.append(
                 Unread(t.kind, "invented", f"task {t.id}'s treatment is named nowhere in the instruction")
@@ -300,6 +302,25 @@ def _invented_kinds(
                 Unread("sliced", "invented", f"task {t.id}'s slice is named nowhere in the instruction")
             )
     return out
+
+
+_WHERE_IT_IS = frozenset({"is", "are", "was", "were", "sits", "sitting", "lies", "lying", "stays", "'s"})
+_PREPOSITIONS = LOCATIVE | {"to", "into", "onto"}
+
+
+def _a_stop(m: Mention, toks: list[tuple[str, int, int]]) -> bool:
+    """An appliance named as a stop of the task ("put the mug in the sink"), not as where a thing is or
+    comes from ("the mug is in the sink", "take the apple out of the fridge"): only a stop names a
+    treatment."""
+    i = m.start - 1
+    while i >= 0 and m.start - i <= 4 and toks[i][0] not in _PREPOSITIONS:
+        if toks[i][0] not in DETERMINERS and categories(toks[i][0]):
+            break
+        i -= 1
+    if i < 0 or toks[i][0] not in _PREPOSITIONS:
+        return True
+    before = toks[i - 1][0] if i > 0 else ""
+    return toks[i][0] not in ("from", "off") and before not in _WHERE_IT_IS | {"out", "from"}
 
 
 def _misspelt(words: list[str], types: frozenset[str]) -> bool:
