@@ -61,6 +61,20 @@ def test_a_treatment_needs_a_word_or_its_appliance_as_a_stop():
     assert account("Microwave the potato and put it on the counter.", heated, []) == []
 
 
+def test_a_treatment_said_after_the_placing_is_not_the_task():
+    text = "put the tomato in the fridge, then slice it"
+    sliced = task("place", "Tomato", "Fridge", id="A", sliced=True, text=text)
+    assert [(u.words, u.category) for u in account(text, [sliced], [])] == [("then slice", "order")]
+    heated = task("heat_place", "Apple", "CounterTop", id="A")
+    assert [u.words for u in account("put the apple on the counter and then heat it", [heated], [])] == [
+        "then heat"
+    ]
+    # the usual order, and cooling in the fridge that is also the destination
+    assert account("slice the tomato, then put it in the fridge", [sliced], []) == []
+    cooled = task("cool_place", "Apple", "Fridge", id="A")
+    assert account("put the apple in the fridge, then chill it", [cooled], []) == []
+
+
 def test_counts_and_cycles_are_input_errors():
     cups = [task("place_two", "Cup", "DishwasherUpperRack", count=2)]
     with pytest.raises(HTTError, match="holds only 2"):

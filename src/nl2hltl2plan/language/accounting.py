@@ -23,7 +23,7 @@ from collections.abc import Mapping, Sequence
 
 import networkx as nx
 
-from nl2hltl2plan.domain.task_kinds import slots_of
+from nl2hltl2plan.domain.task_kinds import APPLIANCE, slots_of
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.content_words import (
     DETERMINERS,
@@ -100,6 +100,7 @@ def account(
     out += _invented(mentions, toks, parse)
     out += landmark_destinations(mentions, toks, parse)
     out += _invented_kinds(toks, mentions, parse)
+    out += _treated_after_placing(instruction, mentions, parse)
     out += _words(instruction, toks, in_mention, mentions, parse, instances, scene)
     out += unordered_steps(
         toks, {i for i, t in enumerate(toks) if parse.constraint_at(t[1])} | in_mention, parse
@@ -301,6 +302,27 @@ def _invented_kinds(
             out.append(
                 Unread("sliced", "invented", f"task {t.id}'s slice is named nowhere in the instruction")
             )
+    return out
+
+
+_THEN_VERB = re.compile(r"\b(?:then|afterwards|after that|next|later)\s*,?\s+(?:you\s+)?(?:can\s+)?([a-z]+)")
+
+
+def _treated_after_placing(instruction: str, mentions: list[Mention], parse: ParseUsage) -> list[Unread]:
+    """A task's slice or treatment comes before its placing; "put the tomato in the fridge, then slice
+    it" says the opposite, so a sliced tomato in the fridge is not what it asks."""
+    out = []
+    lowered = instruction.lower()
+    for t in parse.tasks:
+        wanted = {f"verb_{t.kind}"} | ({"verb_sliced"} if t.sliced else set())
+        places = set(t.receptacle or ()) - {APPLIANCE.get(t.kind, "")}
+        at = lowered.find(t.text.lower()) if t.text else -1  # the task's own words, else the whole text
+        start, end = (at, at + len(t.text)) if at >= 0 else (0, len(lowered))
+        placed = [m.char_end for m in mentions if set(m.entry.types) & places and start <= m.char_start < end]
+        for then in _THEN_VERB.finditer(lowered, start, end):
+            if placed and then.start() > max(placed) and categories(then.group(1)) & wanted:
+                why = f"task {t.id}'s treatment comes before its placing"
+                out.append(Unread(then.group(0), "order", why))
     return out
 
 
