@@ -189,8 +189,10 @@ def test_an_llm_answer_of_constraints_only_has_nothing_to_do(stub):
     from nl2hltl2plan.language.llm.client import LLMClient
     from nl2hltl2plan.language.translate import translate
 
-    answer: dict = {"tasks": [], "constraints": [
-        {"text": "never open the microwave", "verb": "open", "object": "microwave"}]}
+    answer: dict = {
+        "tasks": [],
+        "constraints": [{"text": "never open the microwave", "verb": "open", "object": "microwave"}],
+    }
     stub.answer = lambda body: json.dumps(answer)
     client = LLMClient(LLMSettings(base_url=stub.base_url, api_key="k", max_retries=0, cache_dir=None))
     with pytest.raises(HTTError, match="nothing to do: .* only says what not to do"):
@@ -219,3 +221,24 @@ def test_benchmark_records_keep_the_constraints_for_the_planning_workers():
     rec = language_record(gt, PipelineOptions(), None)
     spec = HierarchicalSpec.from_json({"levels": rec.levels, "constraints": rec.constraints})
     assert rec.conversion_ok and [c.text for c in spec.constraints] == ["never touch the tomato"]
+
+
+def test_it_and_there_in_a_negation_stand_for_the_thing_and_the_place_named_before():
+    """ "don't put it in the sink" forbids putting the mug there, not "putting the sink" somewhere."""
+    assert read("wash the mug but don't put it in the sink")[1] == [
+        ("don't put it in the sink", ["put(Mug,SinkBasin)"], "")
+    ]
+    assert read("put the apple on the counter but don't put the mug there")[1] == [
+        ("don't put the mug there", ["put(Mug,CounterTop)"], "")
+    ]
+    assert read("never put it in the sink")[1] == []  # "it" with nothing before: unread, so refused
+
+
+@needs_data
+def test_a_place_named_only_as_the_source_is_no_destination(capsys):
+    assert main(["plan", "take the mug out of the sink", "--world", "FloorPlan1", "--llm", "offline"]) == 2
+    assert "no destination for the 'the mug'" in capsys.readouterr().err
+    # an LLM's reading "put the mug in the sink" is judged invented by check 1
+    sink = [BaseTaskSpec(kind="place", object=["Mug"], receptacle=["SinkBasin"])]
+    assert [u.category for u in account("take the mug out of the sink", sink, [])] == ["invented"]
+    assert account("take the mug out of the cabinet and put it in the sink", sink, []) == []

@@ -264,14 +264,16 @@ def _invented(mentions: list[Mention], toks: list[tuple[str, int, int]], parse: 
     named = {places[f] for w, _, _ in toks for f in stems(w) if f in places}
     if any(c.startswith("state_lights_") for w, _, _ in toks for c in categories(w)):
         named.add("LightSwitch")  # "make the kitchen dark" names the room's lights
+    sources: set[str] = set()  # named only as where a thing is or comes from: "take the mug out of the sink"
     for m in mentions:
-        named |= set(m.entry.types) | {m.entry.canonical}
+        (named if _a_stop(m, toks) else sources).update({*m.entry.types, m.entry.canonical})
     implied = parse.implied()
     out = []
     spelt = [w for w, _, _ in toks if len(w) >= 5]
     for task_id, role, types in parse.slots():
-        lowered = {t.lower() for t in named}
-        if types & named or {t.lower() for t in types} & lowered or _misspelt(spelt, types):
+        said = named if role == "receptacle" else named | sources
+        lowered = {t.lower() for t in said}
+        if types & said or {t.lower() for t in types} & lowered or _misspelt(spelt, types):
             continue
         if role == "receptacle" and types & implied:
             continue
@@ -328,6 +330,7 @@ def _treated_after_placing(instruction: str, mentions: list[Mention], parse: Par
 
 _WHERE_IT_IS = frozenset({"is", "are", "was", "were", "sits", "sitting", "lies", "lying", "stays", "'s"})
 _PREPOSITIONS = LOCATIVE | {"to", "into", "onto"}
+_STATE_REFERENCE = frozenset({"after", "until", "till", "once", "when", "before", "whenever", "unless"})
 
 
 def _a_stop(m: Mention, toks: list[tuple[str, int, int]]) -> bool:
@@ -342,7 +345,9 @@ def _a_stop(m: Mention, toks: list[tuple[str, int, int]]) -> bool:
     if i < 0 or toks[i][0] not in _PREPOSITIONS:
         return True
     before = toks[i - 1][0] if i > 0 else ""
-    return toks[i][0] not in ("from", "off") and before not in _WHERE_IT_IS | {"out", "from"}
+    if before in _WHERE_IT_IS:  # "after / until the mug is in the sink": a placement it refers to
+        return bool({w for w, _, _ in toks[max(0, i - 6) : i - 1]} & _STATE_REFERENCE)
+    return toks[i][0] not in ("from", "off") and before not in ("out", "from")
 
 
 def _misspelt(words: list[str], types: frozenset[str]) -> bool:

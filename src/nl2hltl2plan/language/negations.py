@@ -196,9 +196,18 @@ def _read_clause(
             return None
     if verb is None or not inside:
         return None
+    if _PRONOUNS & set(words[j + 1 : inside[0].start]):  # "don't put it in the sink": it is a thing
+        antecedent = _previous_object(text, toks, i, mentions)
+        if antecedent is None:
+            return None
+        inside = [antecedent, *inside]
     things, where = _objects_and_places(inside, words, grounder)
     if things is None:
         return None
+    if verb == "put" and not where and "there" in words[j + 1 : cut]:  # "don't put the knife there"
+        where = _previous_destination(text, toks, i, mentions, grounder)
+        if not where:
+            return None
     if verb in ("put", "pickup") and where:
         places = where
     elif where:  # "never open the fridge on the left": the extra place is not read
@@ -233,6 +242,21 @@ def _objects_and_places(
         is_place = any(w in PREPS for w in before) and things
         (places if is_place else things).extend(types)
     return (things or None), places
+
+
+_PRONOUNS = frozenset({"it", "them", "this", "that", "these", "those"})
+
+
+def _previous_object(
+    text: str, toks: list[tuple[str, int, int]], i: int, mentions: list[Mention]
+) -> Mention | None:
+    """The last thing (not a place after a preposition) named in the cue's sentence before it: what "it"
+    stands for in "wash the mug but don't put it in the sink"."""
+    start = sentence_start(text, toks[i][1])
+    words = [w for w, _, _ in toks]
+    before = [m for m in mentions if start <= m.char_start < toks[i][1] and not m.entry.generic]
+    things = [m for m in before if not any(w in PREPS for w in words[max(0, m.start - 3) : m.start])]
+    return things[-1] if things else None
 
 
 def _previous_destination(
