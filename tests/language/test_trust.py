@@ -75,6 +75,17 @@ def test_a_treatment_said_after_the_placing_is_not_the_task():
     assert account("put the apple in the fridge, then chill it", [cooled], []) == []
 
 
+def test_back_with_no_place_and_repeats_are_unread():
+    laptop = [task("place", "Laptop", "Sofa", id="A")]
+    said = account("move the laptop to the sofa and then bring it back", laptop, [])
+    assert [(u.words, u.category) for u in said] == [("back", "place")]
+    said = account("put the laptop on the sofa three times", laptop, [])
+    assert [(u.words, u.category) for u in said] == [("three times", "count")]
+    # "back" to a named place, or to where the sentence says the thing came from
+    assert account("put the laptop back on the sofa", laptop, []) == []
+    assert account("take the laptop from the sofa and put it back", laptop, []) == []
+
+
 def test_counts_and_cycles_are_input_errors():
     cups = [task("place_two", "Cup", "DishwasherUpperRack", count=2)]
     with pytest.raises(HTTError, match="holds only 2"):

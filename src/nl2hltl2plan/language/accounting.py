@@ -101,6 +101,7 @@ def account(
     out += landmark_destinations(mentions, toks, parse)
     out += _invented_kinds(toks, mentions, parse)
     out += _treated_after_placing(instruction, mentions, parse)
+    out += _returns_and_repeats(instruction)
     out += _words(instruction, toks, in_mention, mentions, parse, instances, scene)
     out += unordered_steps(
         toks, {i for i, t in enumerate(toks) if parse.constraint_at(t[1])} | in_mention, parse
@@ -267,11 +268,12 @@ def _invented(mentions: list[Mention], toks: list[tuple[str, int, int]], parse: 
     sources: set[str] = set()  # named only as where a thing is or comes from: "take the mug out of the sink"
     for m in mentions:
         (named if _a_stop(m, toks) else sources).update({*m.entry.types, m.entry.canonical})
+    put_back = any(w == "back" for w, _, _ in toks)  # "wash the cloth from the cabinet, put it back"
     implied = parse.implied()
     out = []
     spelt = [w for w, _, _ in toks if len(w) >= 5]
     for task_id, role, types in parse.slots():
-        said = named if role == "receptacle" else named | sources
+        said = named if role == "receptacle" and not put_back else named | sources
         lowered = {t.lower() for t in said}
         if types & said or {t.lower() for t in types} & lowered or _misspelt(spelt, types):
             continue
@@ -305,6 +307,29 @@ def _invented_kinds(
                 Unread("sliced", "invented", f"task {t.id}'s slice is named nowhere in the instruction")
             )
     return out
+
+
+# "bring it back", "then back again": to where it was, which no base task names; "three times"
+_RETURN = re.compile(r"\bback(?: again)?\b(?=\s*(?:$|[.,;!?)]|(?:and|then|again|afterwards|later|here)\b))")
+_SOURCE = re.compile(r"\b(?:from|out of|off)\b")
+_TIMES = re.compile(
+    r"\b(?:\d+|two|three|four|five|six|seven|eight|nine|ten|several|many|multiple|a few) times\b"
+)
+
+
+def _returns_and_repeats(instruction: str) -> list[Unread]:
+    """ "Back" with no place after it names one only where the sentence said where the thing came from
+    ("wash the cloth from the cabinet, put it back")."""
+    lowered = instruction.lower()
+    out = [
+        Unread(m.group(0), "place", "no base task returns a thing to where it was: name the place")
+        for m in _RETURN.finditer(lowered)
+        if not _SOURCE.search(lowered, sentence_start(instruction, m.start()), m.start())
+    ]
+    return out + [
+        Unread(m.group(0), "count", "no base task is done more than once: say each time as its own task")
+        for m in _TIMES.finditer(lowered)
+    ]
 
 
 _THEN_VERB = re.compile(r"\b(?:then|afterwards|after that|next|later)\s*,?\s+(?:you\s+)?(?:can\s+)?([a-z]+)")
