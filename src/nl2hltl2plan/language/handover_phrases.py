@@ -180,7 +180,7 @@ def _mark_one_per_region(m: Marked) -> None:
         rf"(?:(?:to\s+)?(?:occupy|go\s+(?:in|on|to|into)|sit\s+(?:in|on)|be\s+(?:placed\s+)?(?:in|on)|fits?\s+(?:in|on|into))\s+|"
         r"(?:per|in|on|for|to)\s+)"
         rf"(?:each|every)\s+{region}\b",
-        rf"\b(?:with\s+)?{one}\s+(?:(?:is|being|may|can)\s+)?(?:allowed\s+|permitted\s+)?per\s+{region}\b",
+        rf"\b(?:with\s+)?{one}\s+(?:(?:is|being|may|can)\s+)?(?:allowed\s+|permitted\s+)?(?:per|to\s+a)\s+{region}\b",
         r"\bone\s+(?:each|apiece)\b",
         rf"(?:,\s*)?\b(?:an?\s+)?(?:different|separate|distinct)\s+{region}\s+(?:for|per)\s+(?:each|every)(?:\s+{NOUN})?\b",
         rf"(?:,\s*)?\b(?:an?\s+)?(?:different|separate|distinct)\s+{region}\s+(?:each|apiece)\b",
@@ -277,6 +277,7 @@ def _mark_blocks(m: Marked, scene: Scene, previous: str, previous_group: tuple[s
         return _new_block(m, scene.blocks, match.group(0))
 
     each = rf"\b(?:each|every|all)\s+(?:of\s+the\s+)?{count}(?:{NOUN}|{NOUNS})\b"  # not "any": one of them
+    counts = _counts_after_nouns(m)
     m.sub(colours, by_colour)
     m.sub(colours, by_colour)  # the phrases a repeated colour started
     # a heading that lists blocks with commas: "red, blue: any empty region" (one group)
@@ -314,7 +315,9 @@ def _mark_blocks(m: Marked, scene: Scene, previous: str, previous_group: tuple[s
     m.sub(each, all_blocks)
     m.sub(group, all_blocks)
 
-    def restated(match: re.Match[str]) -> str:  # "the blocks, all three of them,": the same blocks, counted
+    _check_counts_after_nouns(m, counts)
+
+    def restated(match: re.Match[str]) -> str:  # "... so move all three of them there": the blocks, counted
         before = re.findall(r"\bB(\d+)\b", m.text[: match.start()])
         if not before or m.blocks[int(before[-1])] != scene.blocks:
             return match.group(0)
@@ -324,6 +327,48 @@ def _mark_blocks(m: Marked, scene: Scene, previous: str, previous_group: tuple[s
 
     m.sub(r"\s*,?\s*\ball\s+(two|three|four|\d+)\s+of\s+them\b", restated)
     _mark_pronouns(m, previous, previous_group)
+
+
+# a count set off after its noun: "the blocks, all three (of them), go ...", "pillars (all three) -> ...",
+# "the red and blue blocks, both of them, ..."; not a part ("the blocks, two of them, ...": which two?)
+_COUNT_AFTER_NOUN = re.compile(
+    rf"\b({NOUNS}|{COLOUR})\s*(?:,|\(|—|–|-)\s*"
+    r"(all\s+(?:of\s+them|(?:two|three|four|\d)(?:\s+of\s+them)?)|the\s+(?:two|three|four|\d)\s+of\s+them|"
+    r"both(?:\s+of\s+them)?|each\s+of\s+the\s+(?:two|three|four|\d)|every\s+one\s+of\s+them)\s*"
+    r"(?:,|\)|—|–|-|(?=(?:go|goes|to|on|onto|in|into|should|must|are|will|can|need|have|swap|exchange|trade)\b))"
+)
+
+
+def _counts_after_nouns(m: Marked) -> list[str]:
+    """Each count set off after its noun, replaced by a token `Q<k>` (the k-th count's words) that
+    `_check_counts_after_nouns` checks against the blocks the noun names once they are marked."""
+    counts: list[str] = []
+
+    def token(match: re.Match[str]) -> str:
+        counts.append(match.group(2))
+        return f"{match.group(1)} Q{len(counts) - 1} "
+
+    m.text = _COUNT_AFTER_NOUN.sub(token, m.text)
+    return counts
+
+
+def _check_counts_after_nouns(m: Marked, counts: list[str]) -> None:
+    """'the blocks, all three,' names the blocks once, counted: the count must be theirs ('the pillars,
+    both of them,' with three pillars, or 'the red block, all three of them,' is refused)."""
+
+    def counted(match: re.Match[str]) -> str:
+        blocks, said = m.blocks[int(match.group(1))], counts[int(match.group(2))]
+        number = next((COUNTS[w] for w in said.split() if w in COUNTS), None)
+        if len(blocks) < 2 or number not in (None, len(blocks)):
+            raise HTTError(
+                f"'{m.block_text[int(match.group(1))]}, {said}' counts {number or 'all'} of "
+                f"{len(blocks)} block(s): which blocks?"
+            )
+        return f" B{match.group(1)} "
+
+    m.sub(r"\bB(\d+)\s+Q(\d+)\b", counted)
+    if left := re.search(r"\bQ(\d+)\b", m.text):
+        raise HTTError(f"'{counts[int(left.group(1))]}' counts no blocks named before it")
 
 
 def _mark_pronouns(m: Marked, previous: str, previous_group: tuple[str, ...]) -> None:

@@ -126,6 +126,7 @@ def mark_places(m: Marked, scene: Scene, named_before: tuple[str, ...]) -> None:
 
 
 TARGET = r"(?:goal|target|placement|destination|assigned)"
+_REGION = r"(?:region|area|zone|spot|place|cell|location)"
 OTHER_THAN = r"(?:other\s+than|except(?:\s+for)?|besides|apart\s+from|but|outside(?:\s+of)?)"
 
 
@@ -142,7 +143,9 @@ def _mark_target_complements(m: Marked) -> None:
     complement = (
         rf"\b(?:the\s+|an?\s+)?(?:any\s+)?(?:other\s+)?(?:{PLACE_NOUN}|anywhere)\s+(?:{OTHER_THAN}|that\s+(?:is|are)\s+not)\s+"
         rf"{targets}|\boutside\s+(?:of\s+)?{targets}|\b(?:(?:any\s+|an\s+)?other|another)\s+{PLACE_NOUN}\s+than\s+{targets}|"
-        rf"\b(?:any|all|every)\s+other\s+{PLACE_NOUN}\b|{non_target}"
+        rf"\b(?:any|all|every)\s+other\s+{PLACE_NOUN}\b|{non_target}|"
+        # "on another region", "on the other regions" (not "the other side": the opposite)
+        rf"\b(?:another\s+{_REGION}|(?:the\s+)?other\s+{_REGION}s)\b"
     )
 
     def other_than(match: re.Match[str]) -> str:  # "anywhere other than ...", "elsewhere": with its "on"

@@ -42,6 +42,7 @@ import networkx as nx
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.handover_goals import Clause, Goal, crossed_exchanges, goal_clauses, lead
+from nl2hltl2plan.language.handover_letters import unframed
 from nl2hltl2plan.language.handover_phrases import drop_but, mark
 from nl2hltl2plan.language.handover_rules import (
     Prohibition,
@@ -84,7 +85,7 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
     notes: list[str] = []
     pending: list[Prohibition] = []  # prohibitions stated before any goal
     previous: Marked | None = None  # the sentence before ("it", "these regions" in the next one)
-    steps, instruction = _sentences(instruction), " ".join(instruction.split())
+    steps, instruction = unframed(_sentences(instruction)), " ".join(instruction.split())
     for sentence in steps:
         m = mark(sentence, scene, previous)
         previous = m

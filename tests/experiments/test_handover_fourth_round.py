@@ -1,0 +1,109 @@
+"""Issue 24, fourth round (h60): the letter around a command (greetings and sign-offs), a count set off
+after its noun ("the blocks, all three, ..."), "shan't", a time said before a scene statement ("right now,
+the red block is on G"), "another region" / "the other regions" in a prohibition, "during this", "one to a
+region", enumerated steps in words and letters, verbless fragments and labelled records. Each class has
+sentences of our own that must give the written spec and near misses that must be refused (never the
+written spec)."""
+
+from __future__ import annotations
+
+import pytest
+from handover_specs import assert_written_spec
+from handover_specs import spec_of as _spec
+
+from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.language.handover_letters import unframed
+from nl2hltl2plan.language.handover_spoken import unspoken
+
+READ = [
+    # a greeting before the first command, a sign-off (with a name) after the last one
+    (6, "Good morning everyone! Place the three objects on G, H and I, one per region, with red before blue. "
+     "Many thanks,\nSam"),
+    (8, "Hey there: first put the yellow block on region I, then on region G; the red and blue blocks go to "
+     "any empty region at any time. Cheers, team"),
+    # "shan't" is "shall not" (the spoken step would leave "sha not")
+    (7, "Put the three objects on region I one after another, red before blue; you shan't place anything on "
+     "F, G or H meanwhile."),
+    # a time before a scene statement keeps it a statement of the scene
+    (4, "At this point the red block sits on region G. Move the three blocks to the opposite regions, but "
+     "don't touch the blue block until the red one has been touched. After all of this, return the yellow "
+     "block to region G."),
+    # a count set off after its noun, by commas or parentheses
+    (1, "Move the blocks (all three) across to the opposite side, red before blue."),
+    (5, "Swap the red and blue blocks, both of them, with red placed first, and move the yellow block to the "
+     "opposite side at any time."),
+    (6, "Put the objects, every one of them, on G, H and I, one to a region; red goes before blue."),
+    # "another region" in a prohibition: every labelled region but the targets
+    (3, "Move the three pillars to regions E, F and G, and never put an object on another region."),
+]
+
+REFUSED = [
+    # a greeting that names one arm says who acts; a "signature" that names a block
+    (6, "Hi arm a, place the three objects on G, H and I, one per region, red before blue."),
+    (2, "Put the three blocks on H, I and J, one per region. Thanks, Yellow"),
+    # a scene statement after its time that the layout contradicts
+    (4, "Right now the red block is on region H. Move the three blocks to the opposite regions, but don't "
+     "touch the blue block until the red one has been touched. After all of this, return the yellow block "
+     "to region G."),
+    # a count that is not the noun's (three pillars), or a part of the group ("two of them": which two?)
+    (3, "The pillars, both of them, go to regions E, F and G; no object goes on any other region meanwhile."),
+    (1, "The blocks, two of them, go to the opposite side, red before blue."),
+    # "another region" as a goal says nowhere in particular
+    (1, "Move the red block to another region, and the three blocks to the opposite side, red before blue."),
+    # "after this" is no period; "shan't" before an order negates it; "one to two regions" is no rule
+    (7, "Place the objects on region I one after another, red before blue; regions F, G and H stay empty "
+     "after this."),
+    (1, "Move the three blocks to the opposite side; the red block shan't be placed before the blue block."),
+    (2, "Put the three blocks on H, I and J, one to two regions."),
+]
+
+
+@pytest.mark.parametrize(("task_id", "text"), READ)
+def test_fourth_round_forms_give_the_written_specs(task_id, text):
+    assert_written_spec(task_id, text)
+
+
+@pytest.mark.parametrize(("task_id", "text"), REFUSED)
+def test_fourth_round_near_misses_are_refused(task_id, text):
+    with pytest.raises(HTTError) as caught:
+        _spec(task_id, text)
+    assert "\n" not in str(caught.value)
+
+
+@pytest.mark.parametrize(
+    ("sentences", "expected"),
+    [
+        (["Dear robots, move the red block to G", "Kind regards"], ["move the red block to G"]),
+        (["Morning folks - move the red block to G", "Thanks in advance"], ["move the red block to G"]),
+        (["Hi robots", "Move the red block to G, cheers"], ["Move the red block to G"]),
+        (["Move the red block to G", "Best", "Ana"], ["Move the red block to G"]),
+    ],
+)
+def test_greetings_and_sign_offs_at_the_edges_are_dropped(sentences, expected):
+    assert unframed(sentences) == expected
+
+
+@pytest.mark.parametrize(
+    "sentences",
+    [
+        ["Move the red block to G", "Thanks", "Move it to H"],  # not at an edge
+        ["Hi arm b, move the red block to G"],  # names who acts
+        ["Move the red block to G", "Thanks, Blue"],  # a name the reader knows
+        ["Hey all three blocks go to G"],  # "all" is the blocks' count here
+    ],
+)
+def test_other_greetings_and_thanks_are_left_to_the_reader(sentences):
+    assert unframed(sentences) == sentences
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("right now , the red block is on g", "currently the red block is on g"),
+        ("as things stand the red one sits on region g", "currently the red one sits on region g"),
+        ("right now , move the blocks to h", "move the blocks to h"),  # no statement: a filler
+        ("we shan't place anything on f", "do not place anything on f"),
+    ],
+)
+def test_scene_times_and_shant_in_words(text, expected):
+    assert unspoken(text) == expected
