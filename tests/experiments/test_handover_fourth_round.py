@@ -8,7 +8,7 @@ written spec)."""
 from __future__ import annotations
 
 import pytest
-from handover_specs import assert_written_spec
+from handover_specs import assert_not_the_written_spec, assert_written_spec
 from handover_specs import spec_of as _spec
 
 from nl2hltl2plan.errors import HTTError
@@ -35,6 +35,18 @@ READ = [
     (6, "Put the objects, every one of them, on G, H and I, one to a region; red goes before blue."),
     # "another region" in a prohibition: every labelled region but the targets
     (3, "Move the three pillars to regions E, F and G, and never put an object on another region."),
+    # enumerated steps in words and letters
+    (8, "Stage 1: put the yellow block on region I. Stage 2: move it on to region G. Red and blue go to any "
+     "empty region at any time."),
+    (6, "a) Place the three objects on G, H and I, one per region. b) Red is placed before blue."),
+    (4, "First thing: carry the three blocks to the opposite regions without touching blue before red has "
+     "been touched. Second thing: the yellow block goes back to G."),
+    # labelled records, in sentences or on lines, in either order; a place heading with its modifier
+    (2, "Where: regions H, I and J, one block each. What: the three blocks."),
+    (3, "Target area: regions E, F and G beside arms a and b\nObjects: the three pillars\nRule: no object "
+     "on any other region"),
+    (7, "Target: region I, all three objects in turn. Order: red before blue. Meanwhile: nothing on F, G or "
+     "H."),
 ]
 
 REFUSED = [
@@ -55,6 +67,16 @@ REFUSED = [
      "after this."),
     (1, "Move the three blocks to the opposite side; the red block shan't be placed before the blue block."),
     (2, "Put the three blocks on H, I and J, one to two regions."),
+    # steps numbered out of the text's order; "(e)" is region E, not a list's letter
+    (8, "Step 2: yellow block to region G. Step 1: yellow block to region I. Red and blue blocks to any "
+     "empty region at any time."),
+    (6, "(e) Place the three objects on G, H and I, one per region. (f) Red before blue."),
+]
+
+# records that say something else: read as they say, never as the written spec
+OTHER = [
+    (6, "Objects: red and blue. Regions: G, H and I, one each. Order: red before blue."),
+    (2, "Blocks: all three\nTargets: H and I"),
 ]
 
 
@@ -68,6 +90,11 @@ def test_fourth_round_near_misses_are_refused(task_id, text):
     with pytest.raises(HTTError) as caught:
         _spec(task_id, text)
     assert "\n" not in str(caught.value)
+
+
+@pytest.mark.parametrize(("task_id", "text"), OTHER)
+def test_records_that_say_something_else_do_not_give_the_written_spec(task_id, text):
+    assert_not_the_written_spec(task_id, text)
 
 
 @pytest.mark.parametrize(

@@ -200,7 +200,8 @@ def _read_questions(m: Marked) -> None:
 def _read_place_headings(m: Marked) -> None:
     """'Target: region I, all three blocks, one after another': the blocks to the place."""
     m.sub(
-        r"^\s*(?:please\s+)?(?:targets?|destinations?|where)\s*:\s*P(\d+)\s*,\s*B(\d+)(?=\s*(?:$|,))",
+        r"^\s*(?:please\s+)?(?:targets?|destinations?|where)\s*:\s*P(\d+)\s*,\s*B(\d+)"
+        r"(?=\s*(?:$|,|one\s+(?:after\s+another|by\s+one|at\s+a\s+time)|in\s+turn|separately|at\s+any\s+time))",
         r" B\2 to P\1 ",
     )
 

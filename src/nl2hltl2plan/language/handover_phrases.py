@@ -48,6 +48,7 @@ from nl2hltl2plan.language.handover_words import (
     MODAL,
     NEG,
     REWRITES,
+    STEP_NUMBER,
     SWAP,
     VERB,
 )
@@ -87,8 +88,7 @@ def _drop_framing(text: str) -> str:
     """A purpose or reason that names nothing the reader could use ('to keep things simple, ...', 'for
     safety, ...', '..., since that is faster') frames the sentence and is dropped; one that names a block,
     a place, an arm, a count, a negation, an order or a time stays to be read (or refused)."""
-    step = r"\s*(?:step\s+\w+\s*[:-]?|\d\s*[):-]|\(\s*\d\s*\))?"  # "2) for safety, ..."
-    lead = re.match(rf"({step})\s*(?:to|in\s+order\s+to|for|because|since|as)\s+([^,]{{1,60}}),", text)
+    lead = re.match(rf"({STEP_NUMBER})\s*(?:to|in\s+order\s+to|for|because|since|as)\s+([^,]{{1,60}}),", text)
     if lead and not _MEANING.search(lead.group(2)):
         text = lead.group(1) + " " + text[lead.end() :]
     tail = re.search(r",\s*(?:because|since|as|so\s+that|for)\s+([^,]+)$", text)

@@ -135,13 +135,10 @@ def _sentences(instruction: str) -> list[str]:
     ending in a colon is joined to the line below it, and a record of labelled lines ('Blocks: ...' then
     'Targets: ...') is read as one goal."""
     out: list[str] = []
-    # a record of labelled lines: "Blocks: red, blue, yellow" then "Targets: H, I, J" is one goal
-    instruction = re.sub(
-        r"(?im)^\s*(?:[-*•·]\s+)?(?:blocks?|objects?|pillars?|items?)\s*:\s*([^\n:]+?)\s*\n\s*(?:[-*•·]\s+)?"
-        r"(?:targets?|destinations?|goal\s+regions?|target\s+regions?|where)\s*:\s*([^\n:]+?)\s*$",
-        lambda x: _listed(x.group(1)) + " to " + x.group(2),
-        instruction,
-    )
+    # a record of labelled fields, on lines or in sentences, in either order: "Blocks: red, blue, yellow"
+    # then "Targets: H, I, J" (or "Regions: G, H and I. Objects: all three.") is one goal
+    for record in _RECORDS:
+        instruction = record.sub(_record_as_goal, instruction)
     # a heading that ends in a colon goes on in the bullet below it: "Place the blocks on:\n- G, H and I"
     # (after a preposition the colon only ends the line)
     bullet = r"[ \t]*\n\s*(?:[-*•·]|\d[.)])\s+"
@@ -153,6 +150,25 @@ def _sentences(instruction: str) -> list[str]:
         text = re.sub(r"\b(opp|approx|resp)\.(?=\s)", r"\1", text, flags=re.IGNORECASE)  # "opp. side"
         out += [re.sub(r"^\s*[-*•·]\s+", "", s) for s in re.split(r"[.;!?]+(?:\s|$)", text)]
     return [s for s in out if s.strip()]
+
+
+_BLOCKS_FIELD = (
+    r"\s*(?:[-*•·]\s+)?(?:blocks?|objects?|pillars?|items?|pieces?|cubes?|what)\s*:\s*(?P<blocks>[^\n:.;]+?)\s*"
+)
+_PLACES_FIELD = (
+    r"\s*(?:[-*•·]\s+)?(?:targets?|destinations?|(?:goal|target|placement)\s+(?:regions?|areas?)|target\s+area|"
+    r"where(?:\s+to)?|regions?|places?)\s*:\s*(?P<places>[^\n:.;]+?)\s*"
+)
+_FIELD_BREAK = r"(?:[.;]?[ \t]*\n|[.;][ \t]+)"  # a line break or a sentence's end between two fields
+_FIELD_END = r"(?=[.;!?]?[ \t]*(?:\n|$)|[.;!?][ \t])"
+_RECORDS = tuple(
+    re.compile(rf"(?im)(?P<start>^|[.;!?][ \t]+){first}{_FIELD_BREAK}{second}{_FIELD_END}")
+    for first, second in ((_BLOCKS_FIELD, _PLACES_FIELD), (_PLACES_FIELD, _BLOCKS_FIELD))
+)
+
+
+def _record_as_goal(fields: re.Match[str]) -> str:
+    return f"{fields['start']}{_listed(fields['blocks'])} to {fields['places']}"
 
 
 def _listed(items: str) -> str:

@@ -93,7 +93,19 @@ APPOSITION = (
 LEAD = r"\s*,?\s*(?:you\s+should\s+|please\s+|we\s+should\s+)?"
 # a heading's label of a rule ("Rule:", "Constraint:"), and the step number a heading may follow ("2)")
 _RULE_LABEL = r"(?:order|ordering|sequence|constraints?|rules?|requirements?|restrictions?|conditions?)"
-_STEP_NUMBER = r"\s*(?:step\s+\w+\s*:?|\d\s*[):]|\(\s*\d\s*\))?\s*"
+# an enumerated step: "Step 2", "Stage two", "Second step", "2)", "(2)", "(b)", "b)" (a list's letters a-d,
+# never a region's); the first of them, and the ones after it
+_STEP_WORD = r"(?:step|stage|phase|part)"
+_ORDINAL_STEP = rf"(?:the\s+)?(?:first|second|third|fourth|fifth|next)\s+(?:{_STEP_WORD}|point|thing)\b"
+FIRST_STEP = (
+    rf"(?:{_STEP_WORD}\s+(?:1|one)\b\s*[:,-]?|(?:the\s+)?first\s+(?:{_STEP_WORD}|point|thing)\b\s*[:,-]?|1\s*[):-]|"
+    r"\(\s*1\s*\)|\(\s*a\s*\)|a\s*\))"
+)
+LATER_STEP = (
+    rf"(?:{_STEP_WORD}\s+(?:[2-9]|two|three|four|five)\b\s*[:,-]?|(?:the\s+)?(?:second|third|fourth|fifth|next)\s+"
+    rf"(?:{_STEP_WORD}|point|thing)\b\s*[:,-]?|[2-9]\s*[):-]|\(\s*[2-9]\s*\)|\(\s*[b-d]\s*\)|[b-d]\s*\))"
+)
+STEP_NUMBER = rf"\s*(?:{FIRST_STEP}|{LATER_STEP}|{_STEP_WORD}\s+\w+\s*[:-]?)?\s*"
 
 # Rewrites applied to the lower-cased sentence before any phrase is read: each maps a variant onto the
 # form the patterns read and changes no meaning ("prior to" -> "before", "whilst" -> "while").
@@ -131,14 +143,14 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\s*,?\s*\bwith\s+the\s+(?:rule|condition|constraint|requirement|restriction)\s+that\b", ","),
     (r"\bin\s+addition(?:\s+to\s+(?:that|this))?\b", " "),
     # a heading, also after a step's number: "Rule: ...", "2) Constraint: ...", "Goals:"
-    (rf"^({_STEP_NUMBER}){_RULE_LABEL}\s*:", r"\1"),
+    (rf"^({STEP_NUMBER}){_RULE_LABEL}\s*:", r"\1"),
     # a completion marker as a heading: "when the transfer is done: yellow back to G"
     (rf"^\s*({AFTER_ALL})\s*:", r"\1 ,"),
     # a sentence that goes on from the one before: "And the yellow block to the opposite side whenever."
     (r"^\s*and\s*,?\s+", " "),
     # a rule's label after a comma, in a compressed heading: "Goal: ..., constraint: red before blue"
     (rf",\s*{_RULE_LABEL}\s*:", ","),
-    (rf"^({_STEP_NUMBER})(?:objectives?|goals?|tasks?|aims?|missions?|instructions?)\s*:", r"\1 please"),
+    (rf"^({STEP_NUMBER})(?:objectives?|goals?|tasks?|aims?|missions?|instructions?)\s*:", r"\1 please"),
     # casual openers and closers: "ok so ...", "... pls", "thanks"
     (r"^\s*(?:(?:ok(?:ay)?|alright|right|so|well|hi|hello|hey)\b\s*,?\s*)+", " "),
     (r"\b(?:pls|plz|thx|thanks|thank\s+you)\b", "please"),
@@ -338,7 +350,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\band\s+(?:because|since)\s+", "and "),
     (r"^\s*(?:steps|procedure|instructions|plan|to\s+do)\s*:\s*", " "),
     # a reason clause: read as a clause of the instruction ("because regions F, G and H must stay clear, ...")
-    (r"^(\s*(?:step\s+\w+\s*[:-]?|\d\s*[):-]|\(\s*\d\s*\))?\s*)(?:because|since)\s+", r"\1 "),
+    (rf"^({STEP_NUMBER})(?:because|since)\s+", r"\1 "),
     (r"\s*,\s*(?:because|since)\s+", ", and "),
     (r"\s*,\s*so\s+(?!that\b|as\b|long\b|far\b|on\b)", ", "),
     (r"\s*,?\s*(?:since|because|as)\s+(?:the|their)\s+order\s+does\s+not\s+matter\b", " in any order"),
@@ -407,8 +419,8 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\b(please|to)\s+have\s+(?=(?:the|all|both|each|every)\b)", r"\1 get "),
     # a numbered step: the first, or one after the step before
     # (a comma after it, so that a step without a verb reads as "First, yellow block to I")
-    (r"^\s*(?:step\s+(?:1|one)\s*[:-]?|1\s*[):-]|\(\s*1\s*\))\s*", "first , "),
-    (r"^\s*(?:step\s+(?:[2-9]|two|three|four|five)\s*[:-]?|[2-9]\s*[):-]|\(\s*[2-9]\s*\))\s*", "then , "),
+    (rf"^\s*{FIRST_STEP}\s*", "first , "),
+    (rf"^\s*{LATER_STEP}\s*", "then , "),
     (r"^\s*(?:second(?:ly)?|third(?:ly)?|fourth(?:ly)?)\s*[:,]", "then "),
     (r"^\s*(first|then)\s*,?\s*\1\b\s*,?", r"\1 "),  # "2) Then move it ...": the step's "then" said twice
     # a heading that gives the time of what follows: "Any time: red and blue blocks to any empty region"
