@@ -47,6 +47,12 @@ READ = [
      "on any other region"),
     (7, "Target: region I, all three objects in turn. Order: red before blue. Meanwhile: nothing on F, G or "
      "H."),
+    # verbless bullets: places first before what may not go there, a pair before its exchange; a dash or a
+    # parenthesis after a region list
+    (7, "- all three objects → region I, one after another\n- red before blue\n- F, G, H: nothing placed"),
+    (5, "- red and blue: swap places (red first)\n- yellow: opposite side, whenever"),
+    (6, "• objects: G, H, I — one per region\n• red first, then blue"),
+    (6, "Objects: G, H, I (one per region). Red before blue."),
 ]
 
 REFUSED = [
@@ -71,12 +77,16 @@ REFUSED = [
     (8, "Step 2: yellow block to region G. Step 1: yellow block to region I. Red and blue blocks to any "
      "empty region at any time."),
     (6, "(e) Place the three objects on G, H and I, one per region. (f) Red before blue."),
+    # a verb the heading does not read; region I left out of a list is never dropped as the pronoun "I"
+    (7, "- all three objects → region I, one after another\n- red before blue\n- F, G, H: nothing removed"),
+    (6, "Put the three objects on G, H, also I. Red before blue."),
 ]
 
 # records that say something else: read as they say, never as the written spec
 OTHER = [
     (6, "Objects: red and blue. Regions: G, H and I, one each. Order: red before blue."),
     (2, "Blocks: all three\nTargets: H and I"),
+    (5, "- red and yellow: swap places (red first)\n- blue: opposite side, whenever"),
 ]
 
 

@@ -64,6 +64,7 @@ def normalise(sentence: str) -> str:
     framing dropped and `REWRITES` applied."""
     text = sentence.lower().replace("’", "'")
     text = re.sub(r"(?<=[a-z])-(?=[a-z])", " ", text)  # one-by-one -> one by one
+    text = _DASH.sub(lambda dash: _dash_as_comma(text, dash), text)
     text = re.sub(r"([,()/:])", r" \1 ", text)
     text = re.sub(r"\b(\w+)'s\b", r"\1 s", text)  # red's -> red s (a possessive)
     text = re.sub(r"[a-z]+", lambda w: TYPOS.get(w.group(0), w.group(0)), text)
@@ -72,6 +73,15 @@ def normalise(sentence: str) -> str:
         text = pattern.sub(replacement, text)
     text = re.sub(r"\bplease\b\s*,?", " ", text)  # politeness anywhere: "all three blocks please move to ..."
     return " ".join(text.split())
+
+
+_DASH = re.compile(r"\s*[—–]\s*|\s+-+\s+")
+
+
+def _dash_as_comma(text: str, dash: re.Match[str]) -> str:
+    """A dash sets off a phrase, as a comma does; not after a step's number ("1 - move ...", "step two -
+    put ...": at most two words before it)."""
+    return dash[0] if len(text[: dash.start()].split()) <= 2 else " , "
 
 
 # words that may carry a meaning here: a block, a place, an arm, a count, a negation, an order or a time
@@ -112,6 +122,10 @@ def mark(sentence: str, scene: Scene, before: Marked | None = None) -> Marked:
     # "put the three blocks there", "the yellow block is to be moved there as well"
     m.sub(rf"\b((?:{VERB}|{GERUND})\s+B\d+|B\d+\s+{MODAL}{DONE})\s+there\b", r"\1 PLACEREF_there")
     mark_places(m, scene, previous.last_regions)
+    # "i" that ends a clause is region I that no place phrase took in ("g , h , also i"), never the pronoun
+    # (a filler word, which a verb follows): refused, not dropped
+    if re.search(r"\bi\s*(?=$|[,;:()])", m.text):
+        raise HTTError(f"'i' in {sentence.strip()!r} is not read as a place: say 'region I'")
     mark_place_pronouns(m, previous.last_regions, previous.last_place, previous.last_group)
     mark_capacity(m)
     read_statements(m, scene)

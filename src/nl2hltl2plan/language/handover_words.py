@@ -482,6 +482,17 @@ REWRITES: tuple[tuple[str, str], ...] = (
         r"(?:stay|remain|be\s+kept)\s+(?:empty|clear|free)\s*$",
         r"\1",
     ),
+    # verbless headings: "F, G, H: nothing placed meanwhile" (the places first); "red and blue: swap places"
+    (
+        r"^\s*((?:regions?\s+)?[e-j](?:\s*(?:,|and|or)\s*[e-j])*)\s*:\s*(?:nothing|no\s+(?:objects?|blocks?))"
+        r"(?:\s+(?:(?:is|are|gets?|may\s+be|can\s+be)\s+)?(?:placed|put|dropped|allowed|goes))?\b",
+        r"nothing on \1",
+    ),
+    (
+        r"^\s*((?:the\s+)?(?:red|blue|yellow)(?:\s+(?:and|&)\s+(?:the\s+)?(?:red|blue|yellow))(?:\s+(?:blocks|ones))?)\s*:\s*"
+        rf"{SWAP}\s+(?:(?:their|the)\s+)?(?:places|positions|spots)\b",
+        r"swap \1",
+    ),
     # a heading that forbids places: "Forbidden meanwhile: regions F, G and H"
     (
         rf"^\s*(?:forbidden|prohibited|off\s+limits|keep\s+(?:empty|clear|free))\s*({PERIOD_WORDS})?\s*:\s*"
