@@ -53,6 +53,21 @@ READ = [
     (5, "- red and blue: swap places (red first)\n- yellow: opposite side, whenever"),
     (6, "• objects: G, H, I — one per region\n• red first, then blue"),
     (6, "Objects: G, H, I (one per region). Red before blue."),
+    # headings of procedures and presentations: labels of the whole text, of a rule (with a modifier or
+    # its period), of what it is about ("Scope:", "You will need:": every block of the scene), the verb
+    # after a blocks' heading; "check that", "to conclude", "while you're at it", "leaving X untouched"
+    (3, "Scope: the three pillars. Action: take them to regions E, F and G beside arms a and b. Warning: no "
+     "object may go on any other region."),
+    (7, "Important: red before blue. Work instructions: put the three objects on region I one after "
+     "another. Rule for the whole task: regions F, G and H stay empty."),
+    (4, "Carry the three blocks to the opposite regions, keeping the blue block untouched until the red one "
+     "has been touched. To conclude, the yellow block goes back to G."),
+    (6, "Set the three objects out on G, H and I, 1 each. Check that red is placed before blue."),
+    (8, "Here's what needs doing: yellow block to region I, then to region G. Red and blue blocks: move to "
+     "any empty region at any time."),
+    (2, "Here's what I want: the three blocks on H, I and J, one per region. All done."),
+    (7, "Put the three objects on region I one after another, red before blue, and while you're at it, keep "
+     "F, G and H empty."),
 ]
 
 REFUSED = [
@@ -80,6 +95,16 @@ REFUSED = [
     # a verb the heading does not read; region I left out of a list is never dropped as the pronoun "I"
     (7, "- all three objects → region I, one after another\n- red before blue\n- F, G, H: nothing removed"),
     (6, "Put the three objects on G, H, also I. Red before blue."),
+    # a scope that is not the whole scene; "leaving X alone", "to start", "check whether": not read
+    (1, "You will need: the red and blue blocks. Method: move each block to the opposite side, red before "
+     "blue."),
+    (4, "Carry the three blocks to the opposite regions, leaving the blue block alone until the red one has "
+     "been touched. To conclude, the yellow block goes back to G."),
+    (4, "Carry the three blocks to the opposite regions, leaving the blue block untouched until the red one "
+     "has been touched. To start, the yellow block goes back to G."),
+    (6, "Set the three objects out on G, H and I, 1 each. Check whether red is placed before blue."),
+    (7, "Put the three objects on region I one after another, red before blue, and during it, keep F, G and "
+     "H empty."),
 ]
 
 # records that say something else: read as they say, never as the written spec
@@ -87,6 +112,7 @@ OTHER = [
     (6, "Objects: red and blue. Regions: G, H and I, one each. Order: red before blue."),
     (2, "Blocks: all three\nTargets: H and I"),
     (5, "- red and yellow: swap places (red first)\n- blue: opposite side, whenever"),
+    (1, "Scope: the three blocks. Action: move them to the opposite side. Warning: blue before red."),
 ]
 
 
@@ -103,7 +129,7 @@ def test_fourth_round_near_misses_are_refused(task_id, text):
 
 
 @pytest.mark.parametrize(("task_id", "text"), OTHER)
-def test_records_that_say_something_else_do_not_give_the_written_spec(task_id, text):
+def test_records_and_headings_that_say_something_else_do_not_give_the_written_spec(task_id, text):
     assert_not_the_written_spec(task_id, text)
 
 

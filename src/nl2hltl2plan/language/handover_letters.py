@@ -1,6 +1,6 @@
 """The letter around a handover instruction: a greeting before the command ("Dear team,", "Hi robots!",
 "Good morning everyone.") and a sign-off after it ("Thanks!", "Cheers", "Best regards, Ana", "Thanks in
-advance"). They address and thank the robots and carry no block, place, count, order or time, so
+advance", "Done."). They address and thank the robots and carry no block, place, count, order or time, so
 `unframed` drops them, but only at the instruction's edges: a greeting before the first command, a
 sign-off after the last one (with the writer's name after it). A greeting that names one arm ("Hi arm
 a,") says who is to act and is left to be refused; so is a "thanks" in the middle of the instruction
@@ -34,7 +34,8 @@ _THANKS = (
 _REGARDS = (
     r"(?:(?:best|kind|warm|warmest)\s+)?regards|best(?:\s+wishes)?|all\s+the\s+best|sincerely|"
     r"yours(?:\s+(?:truly|sincerely|faithfully))?|much\s+appreciated|(?:i\s+)?appreciate\s+it|"
-    r"have\s+a\s+(?:nice|good|great)\s+(?:day|one|evening)|talk\s+(?:soon|later)|bye"
+    r"have\s+a\s+(?:nice|good|great)\s+(?:day|one|evening)|talk\s+(?:soon|later)|bye|"
+    r"(?:all\s+)?done|that\s*(?:'\s*)?s\s+(?:it|all)|the\s+end|over\s+and\s+out"
 )
 # a whole sentence of sign-off, with the writer's name after it ("Best, Ana")
 _CLOSING = re.compile(rf"^\s*(?i:{_THANKS}|{_REGARDS})(?:\s*[,\-–—]?\s*(?P<name>[A-Z][a-z]+))?\s*[,.!]*\s*$")

@@ -90,7 +90,8 @@ _MEANING = re.compile(
     r"areas?|zones?|sides?|places?|spots?|positions?|cells?|locations?|opposite|[a-j]|arms?|robots?|one|two|three|"
     r"four|both|all|each|every|\d+|not|no|never|nothing|none|cannot|without|before|after|first|then|until|once|"
     r"last|next|finally|final|step|steps|end|start|beginning|later|earlier|second|third|previous|prior|following|"
-    r"afterwards?|order|while|during|meanwhile|time|any|empty|free|clear|exchange|swap|touch\w*)\b"
+    r"afterwards?|order|while|during|meanwhile|time|any|empty|free|clear|exchange|swap|touch\w*|finish\w*|"
+    r"conclu\w+|wrap\w*|complet\w*)\b"
 )
 
 
@@ -145,6 +146,7 @@ def _join_particles(m: Marked) -> None:
     """A particle verb reads as the verb: 'put down the red block', 'put the red block (back) down (on G)'
     as 'put the red block (back) (on G)', 'pick the blue block up' as 'pick up the blue block'."""
     m.sub(rf"\b({VERB}|{GERUND})\s+down\b", r"\1")
+    m.sub(r"\b(set|lay|laid|spread)\s+(B\d+)\s+out\b", r"\1 \2")  # "set the objects out on G, H and I"
     m.sub(rf"\b({VERB}|{GERUND})\s+(B\d+)\s+(back\s+)?down\b", r"\1 \2 \3")
     m.sub(r"\b(B\d+)\s+down\s+(?=(?:on|onto|in|into|at)\s)", r"\1 ")  # "..., the blue block down on H"
     m.sub(r"\b(pick|picks|picking|picked)\s+(B\d+)\s+up\b", r"\1 up \2")
@@ -195,7 +197,7 @@ def _mark_one_per_region(m: Marked) -> None:
         r"(?:per|in|on|for|to)\s+)"
         rf"(?:each|every)\s+{region}\b",
         rf"\b(?:with\s+)?{one}\s+(?:(?:is|being|may|can)\s+)?(?:allowed\s+|permitted\s+)?(?:per|to\s+a)\s+{region}\b",
-        r"\bone\s+(?:each|apiece)\b",
+        r"\b(?:one|1)\s+(?:each|apiece)\b",
         rf"(?:,\s*)?\b(?:an?\s+)?(?:different|separate|distinct)\s+{region}\s+(?:for|per)\s+(?:each|every)(?:\s+{NOUN})?\b",
         rf"(?:,\s*)?\b(?:an?\s+)?(?:different|separate|distinct)\s+{region}\s+(?:each|apiece)\b",
         # "each region only has room for one"; "every block gets a region of its own"

@@ -47,7 +47,8 @@ DROP = (
 PERIOD_WORDS = (
     r"(?:(?:during|in)\s+(?:this|that|the\s+same)\s+(?:whole\s+|entire\s+)?(?:period|time)|in\s+the\s+meantime|meanwhile|"
     r"while\s+doing\s+(?:so|this|that|it)|while\s+(?:this|that)\s+(?:happens|is\s+happening|goes\s+on|is\s+going\s+on)|"
-    r"during\s+(?:all\s+)?(?:this|that|it)(?=\s*(?:$|,|;))|at\s+the\s+same\s+time|in\s+the\s+process|all\s+the\s+while|the\s+whole\s+time|in\s+the\s+interim|"
+    r"during\s+(?:all\s+)?(?:this|that)(?=\s*(?:$|,|;))|at\s+the\s+same\s+time|"
+    r"in\s+the\s+process|all\s+the\s+while|the\s+whole\s+time|in\s+the\s+interim|"
     r"throughout(?:\s+(?:this|the|that)\s+(?:process|period|time))?|until\s+then|along\s+the\s+way|in\s+between|"
     # "until you are done", "till done": until the goals are met (a plan ends when its last goal is met)
     r"until\s+(?:(?:you|we|they)\s+(?:are|have\s+finished)\s+)?(?:all\s+)?(?:done|finished)|"
@@ -77,7 +78,7 @@ AFTER_ALL = (
     # "when the transfer is complete", "when all finish" (non-native): the work said so far is done
     rf"(?:once|when|after)\s+(?:the|this|that)\s+(?:transfer|task|job|work|moving|transport)\s+(?:is|has\s+been)\s+{DONE_STATE}|"
     r"(?:once|when|after)\s+(?:all|everything)\s+(?:is\s+|are\s+|has\s+|have\s+)?(?:finish(?:ed)?|done|complete(?:d)?)|"
-    r"as\s+(?:a|the)\s+(?:final|last)\s+step|at\s+last|after\s+all(?=\s*,)|(?:up)?on\s+(?:completion|finishing)(?:\s+of\s+(?:this|these|that|the\s+above|all\s+(?:of\s+)?(?:this|these|that)))?)"
+    r"as\s+(?:a|the)\s+(?:final|last)\s+step|to\s+(?:finish|end|conclude|wrap\s+up|close)(?:\s+(?:off|up))?(?=\s*,)|at\s+last|after\s+all(?=\s*,)|(?:up)?on\s+(?:completion|finishing)(?:\s+of\s+(?:this|these|that|the\s+above|all\s+(?:of\s+)?(?:this|these|that)))?)"
 )
 THEN = (
     r"(?:then|after\s+that|afterwards?|next|subsequently|later|and\s+then|(?:and\s+)?from\s+there|"
@@ -92,7 +93,11 @@ APPOSITION = (
 )
 LEAD = r"\s*,?\s*(?:you\s+should\s+|please\s+|we\s+should\s+)?"
 # a heading's label of a rule ("Rule:", "Constraint:"), and the step number a heading may follow ("2)")
-_RULE_LABEL = r"(?:order|ordering|sequence|constraints?|rules?|requirements?|restrictions?|conditions?)"
+_RULE_LABEL = (
+    r"(?:(?:sequence|sequencing|order|ordering|timing|safety|placement|additional|extra|main|key|special)\s+)?"
+    r"(?:order|ordering|sequence|constraints?|rules?|requirements?|restrictions?|conditions?|caution|warning|"
+    r"important|nb|notice|attention|reminder)"
+)
 # an enumerated step: "Step 2", "Stage two", "Second step", "2)", "(2)", "(b)", "b)" (a list's letters a-d,
 # never a region's); the first of them, and the ones after it
 _STEP_WORD = r"(?:step|stage|phase|part)"
@@ -111,9 +116,14 @@ STEP_NUMBER = rf"\s*(?:{FIRST_STEP}|{LATER_STEP}|{_STEP_WORD}\s+\w+\s*[:-]?)?\s*
 # form the patterns read and changes no meaning ("prior to" -> "before", "whilst" -> "while").
 REWRITES: tuple[tuple[str, str], ...] = (
     (r"\bi\s*\.\s*e\s*\.?(?=\s|,|$)", " that is "),
+    # what the instruction is about, said as a heading: "Scope: the three pillars", "You will need: three
+    # blocks" (read as the scene statement "we have ...": it must name every block of the scene)
+    (r"^\s*(?:scope|you\s+(?:will\s+)?need|what\s+you\s+need|materials|equipment)\s*:\s*", "we have "),
     (r"^\s*(?:your|the|my)\s+(?:job|task|goal|mission|assignment)\s*(?:is\s+to\b|:)", "please"),
     (r"(?<=s)'(?=\s|$)", ""),  # the blocks' positions -> the blocks positions
     (r"\bwhilst\b", "while"),
+    # before "it" is read as a block: "while you're at it" is the period of the goals
+    (r"\bwhile\s+(?:you|we)\s+are\s+at\s+it\b", "meanwhile"),
     (r"\bamongst\b", "among"),
     (r"\b(?:i|we)\s*would\s+like\s+(?:you\s+)?to\b", "please"),
     (r"\b(?:i|we)\s+(?:want|need)\s+you\s+to\b", "please"),
@@ -154,7 +164,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
     # casual openers and closers: "ok so ...", "... pls", "thanks"
     (r"^\s*(?:(?:ok(?:ay)?|alright|right|so|well|hi|hello|hey)\b\s*,?\s*)+", " "),
     (r"\b(?:pls|plz|thx|thanks|thank\s+you)\b", "please"),
-    (r"\btill\b", "until"),
+    (r"\b(?:till|til)\b", "until"),
     (r"\b([a-z]+)\s+s\s+been\b", r"\1 has been"),  # "till red's been touched"
     (r"\b(?:any\s+)?(?:stuff|things)\b(?=\s+(?:on|in|onto|into)\b)", "anything"),
     (
@@ -197,7 +207,13 @@ REWRITES: tuple[tuple[str, str], ...] = (
         " ",
     ),
     (r"^\s*(?:two|three|a\s+few)\s+things\s*:", " "),
-    (r"^\s*here\s*(?:s|is)\s+(?:the|my|our)\s+(?:idea|plan|deal|thing)\s*:", " "),
+    # a presentative heading: "here's the job:", "here's what needs doing:", "here's what I want:"
+    (
+        r"^\s*here\s*(?:s|is)\s+(?:(?:the|my|our|your)\s+(?:idea|plan|deal|thing|job|task|brief|request)|"
+        r"what\s+(?:needs\s+(?:doing|to\s+be\s+done|to\s+happen)|to\s+do|you\s+(?:do|will\s+do)))\s*:",
+        " ",
+    ),
+    (r"^\s*here\s*(?:s|is)\s+what\s+(i|we)\s+(?:want|need|would\s+like)\s*:", r"\1 want "),
     (r"\b(?:somebody|someone|anybody|anyone)\b", "an arm"),  # "until somebody has touched the red block"
     # narrative verbs of moving: "makes a stop at I", "moves on to G", "takes the blue block's place"
     (r"\b(?:makes?|making)\s+a\s+stop\s+(?:at|on|in)\b", "goes to"),
@@ -348,7 +364,19 @@ REWRITES: tuple[tuple[str, str], ...] = (
         " ",
     ),
     (r"\band\s+(?:because|since)\s+", "and "),
-    (r"^\s*(?:steps|procedure|instructions|plan|to\s+do)\s*:\s*", " "),
+    # a label of the whole instruction: "Procedure:", "Operator instructions:", "Action:"
+    (
+        r"^\s*(?:(?:operator|operating|work|standard|general)\s+)?(?:steps|procedure|instructions?|plan|to\s*do|"
+        r"method|actions?)\s*:\s*",
+        " ",
+    ),
+    # a rule's label with its period: "Restriction for the duration: F, G and H remain empty"
+    (rf"^\s*{_RULE_LABEL}\s+({PERIOD_WORDS})\s*:\s*(.+)$", r"\2 \1"),
+    # "..., leaving the blue block untouched until ...": not touched
+    (
+        r"\b(?:leaving|leave|keeping|keep)\s+((?:the\s+)?(?:red|blue|yellow)(?:\s+(?:block|one|cube))?)\s+untouched\b",
+        r"\1 must not be touched",
+    ),
     # a reason clause: read as a clause of the instruction ("because regions F, G and H must stay clear, ...")
     (rf"^({STEP_NUMBER})(?:because|since)\s+", r"\1 "),
     (r"\s*,\s*(?:because|since)\s+", ", and "),
@@ -427,7 +455,8 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"^\s*(?:at\s+)?any\s+time\s*:", "at any time ,"),
     (r"\b(finally|lastly|then|next|afterwards|first)\s*:", r"\1 ,"),  # "Finally: yellow -> G"
     (
-        r"\b(?:remember|be\s+(?:sure|careful)|make\s+sure|do\s+not\s+forget|note|keep\s+in\s+mind)\s+(?:to|that)\b",
+        r"\b(?:(?:remember|be\s+(?:sure|careful)|make\s+sure|do\s+not\s+forget|note|keep\s+in\s+mind)\s+(?:to|that)|"
+        r"(?:verify|check|confirm)\s+that)\b",
         " ",
     ),
     (r"\bprecedes?\b", "comes before"),
