@@ -153,7 +153,9 @@ def _join_particles(m: Marked) -> None:
 
 
 def _mark_connectives(m: Marked) -> None:
-    """'making sure (that)', 'ensure that', 'provided that' introduce what follows and add nothing."""
+    """'making sure (that)', 'ensure that', 'provided that' introduce what follows and add nothing; nor
+    does 'but' before a negated command ('move ... but don't touch ...', read before the rule is)."""
+    m.sub(r"(?:,\s*)?\bbut\s+(?=(?:do\s+not|never)\b)", " , ")
     m.sub(
         r"(?:\bwhile\s+)?\b(?:(?:making|make|be)\s+(?:sure|certain)|ensur(?:e|ing))\s+(?:that\s+)?|"
         r"\b(?:such|so)\s+that\b(?!\s+each\b)|\b(?:provided|providing|(?:on|under)\s+(?:the\s+)?condition)\s+that\b",
@@ -346,9 +348,10 @@ def _mark_blocks(m: Marked, scene: Scene, previous: str, previous_group: tuple[s
 
 
 # a count set off after its noun: "the blocks, all three (of them), go ...", "pillars (all three) -> ...",
-# "the red and blue blocks, both of them, ..."; not a part ("the blocks, two of them, ...": which two?)
+# "the red and blue blocks, both of them, ...", unpunctuated before a verb ("the pillars all three go to
+# ..."); not a part ("the blocks, two of them, ...": which two?)
 _COUNT_AFTER_NOUN = re.compile(
-    rf"\b({NOUNS}|{COLOUR})\s*(?:,|\(|—|–|-)\s*"
+    rf"\b({NOUNS}|{COLOUR})\s*(?:,|\(|—|–|-)?\s*"
     r"(all\s+(?:of\s+them|(?:two|three|four|\d)(?:\s+of\s+them)?)|the\s+(?:two|three|four|\d)\s+of\s+them|"
     r"both(?:\s+of\s+them)?|each\s+of\s+the\s+(?:two|three|four|\d)|every\s+one\s+of\s+them)\s*"
     r"(?:,|\)|—|–|-|(?=(?:go|goes|to|on|onto|in|into|should|must|are|will|can|need|have|swap|exchange|trade)\b))"

@@ -242,7 +242,20 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\b(?:placing|placement)\s+(?:is|comes)\s+before\b", "is placed before"),
     (r"\b(go|goes|come|comes|put|move|return)\s+back\s+(?=regions?\b)", r"\1 back to "),
     (r"\bfirstly\b", "first"),
-    (r",\s*after\s+(?=(?:to|on|onto|in|into)\s)", ", then "),
+    (rf",\s*after\s+(?=(?:to|on|onto|in|into|{VERB})\s)", ", then "),
+    # a verbless dictated step: "first yellow to region i then region g"
+    (
+        r"(^|,)\s*(first|then|next|finally)\s+(?=(?:the\s+)?(?:red|blue|yellow)(?:\s+(?:block|one|cube))?\s+"
+        r"(?:to|on|onto|in|into)\s)",
+        r"\1 \2 , ",
+    ),
+    (r"\bthen\s+(?=regions?\s+[e-j]\b)", "then to "),
+    # a verbless heading: "three objects, three regions: G, H and I" (the regions' count is checked)
+    (
+        r"^\s*((?:the\s+)?(?:two|three|four|\d)\s+(?:blocks|objects|pillars|items|cubes|pieces))\s*,\s*"
+        r"(?=(?:the\s+)?(?:two|three|four|\d)\s+(?:(?:goal|target)\s+)?regions\s*:)",
+        r"put \1 on ",
+    ),
     # a verbless step with "first" after its block: "yellow block first to region I, then to G"
     (
         r"(^|,)\s*((?:the\s+)?(?:red|blue|yellow)(?:\s+(?:block|cube|one))?)\s+first\s+(?=(?:to|on|onto|in|into)\s)",
