@@ -19,6 +19,8 @@ STILL_REFUSED = {
     "yellow block back on region G, where the red block is now.",
     "The yellow block needs to pass through region I, so put it on region I first and then on region G. "
     "The red and blue blocks can go to any empty region at any time, since their order does not matter.",
+    "Please first put yellow block to region I, after put yellow block to region G, and the red and blue "
+    "block move to any empty region any time.",
     "3 blocks, opposite side, red before blue.",
     "We have three goal regions, H, I and J, and three blocks, so put the three blocks in regions H, I and "
     "J with one block per region.",

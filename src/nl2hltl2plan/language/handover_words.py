@@ -242,7 +242,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\b(?:placing|placement)\s+(?:is|comes)\s+before\b", "is placed before"),
     (r"\b(go|goes|come|comes|put|move|return)\s+back\s+(?=regions?\b)", r"\1 back to "),
     (r"\bfirstly\b", "first"),
-    (rf",\s*after\s+(?=(?:to|on|onto|in|into|{VERB})\s)", ", then "),
+    (r",\s*after\s+(?=(?:to|on|onto|in|into)\s)", ", then "),
     # a verbless dictated step: "first yellow to region i then region g"
     (
         r"(^|,)\s*(first|then|next|finally)\s+(?=(?:the\s+)?(?:red|blue|yellow)(?:\s+(?:block|one|cube))?\s+"
