@@ -12,7 +12,7 @@ from handover_specs import assert_not_the_written_spec, assert_written_spec
 from handover_specs import spec_of as _spec
 
 from nl2hltl2plan.errors import HTTError
-from nl2hltl2plan.language.handover_letters import unframed
+from nl2hltl2plan.language.handover_frame import unframed
 from nl2hltl2plan.language.handover_spoken import unspoken
 
 READ = [

@@ -41,8 +41,8 @@ from dataclasses import dataclass, field
 import networkx as nx
 
 from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.language.handover_frame import unframed
 from nl2hltl2plan.language.handover_goals import Clause, Goal, crossed_exchanges, goal_clauses, lead
-from nl2hltl2plan.language.handover_letters import unframed
 from nl2hltl2plan.language.handover_phrases import drop_but, mark
 from nl2hltl2plan.language.handover_rules import (
     Prohibition,

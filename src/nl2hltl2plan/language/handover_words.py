@@ -101,7 +101,6 @@ _RULE_LABEL = (
 # an enumerated step: "Step 2", "Stage two", "Second step", "2)", "(2)", "(b)", "b)" (a list's letters a-d,
 # never a region's); the first of them, and the ones after it
 _STEP_WORD = r"(?:step|stage|phase|part)"
-_ORDINAL_STEP = rf"(?:the\s+)?(?:first|second|third|fourth|fifth|next)\s+(?:{_STEP_WORD}|point|thing)\b"
 FIRST_STEP = (
     rf"(?:{_STEP_WORD}\s+(?:1|one)\b\s*[:,-]?|(?:the\s+)?first\s+(?:{_STEP_WORD}|point|thing)\b\s*[:,-]?|1\s*[):-]|"
     r"\(\s*1\s*\)|\(\s*a\s*\)|a\s*\))"
@@ -116,9 +115,6 @@ STEP_NUMBER = rf"\s*(?:{FIRST_STEP}|{LATER_STEP}|{_STEP_WORD}\s+\w+\s*[:-]?)?\s*
 # form the patterns read and changes no meaning ("prior to" -> "before", "whilst" -> "while").
 REWRITES: tuple[tuple[str, str], ...] = (
     (r"\bi\s*\.\s*e\s*\.?(?=\s|,|$)", " that is "),
-    # what the instruction is about, said as a heading: "Scope: the three pillars", "You will need: three
-    # blocks" (read as the scene statement "we have ...": it must name every block of the scene)
-    (r"^\s*(?:scope|you\s+(?:will\s+)?need|what\s+you\s+need|materials|equipment)\s*:\s*", "we have "),
     (r"^\s*(?:your|the|my)\s+(?:job|task|goal|mission|assignment)\s*(?:is\s+to\b|:)", "please"),
     (r"(?<=s)'(?=\s|$)", ""),  # the blocks' positions -> the blocks positions
     (r"\bwhilst\b", "while"),
@@ -207,13 +203,6 @@ REWRITES: tuple[tuple[str, str], ...] = (
         " ",
     ),
     (r"^\s*(?:two|three|a\s+few)\s+things\s*:", " "),
-    # a presentative heading: "here's the job:", "here's what needs doing:", "here's what I want:"
-    (
-        r"^\s*here\s*(?:s|is)\s+(?:(?:the|my|our|your)\s+(?:idea|plan|deal|thing|job|task|brief|request)|"
-        r"what\s+(?:needs\s+(?:doing|to\s+be\s+done|to\s+happen)|to\s+do|you\s+(?:do|will\s+do)))\s*:",
-        " ",
-    ),
-    (r"^\s*here\s*(?:s|is)\s+what\s+(i|we)\s+(?:want|need|would\s+like)\s*:", r"\1 want "),
     (r"\b(?:somebody|someone|anybody|anyone)\b", "an arm"),  # "until somebody has touched the red block"
     # narrative verbs of moving: "makes a stop at I", "moves on to G", "takes the blue block's place"
     (r"\b(?:makes?|making)\s+a\s+stop\s+(?:at|on|in)\b", "goes to"),
@@ -377,12 +366,6 @@ REWRITES: tuple[tuple[str, str], ...] = (
         " ",
     ),
     (r"\band\s+(?:because|since)\s+", "and "),
-    # a label of the whole instruction: "Procedure:", "Operator instructions:", "Action:"
-    (
-        r"^\s*(?:(?:operator|operating|work|standard|general)\s+)?(?:steps|procedure|instructions?|plan|to\s*do|"
-        r"method|actions?)\s*:\s*",
-        " ",
-    ),
     # a rule's label with its period: "Restriction for the duration: F, G and H remain empty"
     (rf"^\s*{_RULE_LABEL}\s+({PERIOD_WORDS})\s*:\s*(.+)$", r"\2 \1"),
     # "..., leaving the blue block untouched until ...": not touched

@@ -1,10 +1,15 @@
-"""The letter around a handover instruction: a greeting before the command ("Dear team,", "Hi robots!",
-"Good morning everyone.") and a sign-off after it ("Thanks!", "Cheers", "Best regards, Ana", "Thanks in
-advance", "Done."). They address and thank the robots and carry no block, place, count, order or time, so
-`unframed` drops them, but only at the instruction's edges: a greeting before the first command, a
-sign-off after the last one (with the writer's name after it). A greeting that names one arm ("Hi arm
-a,") says who is to act and is left to be refused; so is a "thanks" in the middle of the instruction
-that the word tables do not read, and a signature that is a word the reader knows ("Thanks, Red").
+"""The frame around a handover instruction's commands, which `unframed` and `FRAME` drop: a letter's
+greeting before the command ("Dear team,", "Hi robots!", "Good morning everyone.") and sign-off after it
+("Thanks!", "Cheers", "Best regards, Ana", "Thanks in advance", "Done."), and the labels that announce
+the command ("Procedure:", "Operator instructions:", "Here's the job:", "Here's what needs doing:").
+They address, thank and announce, and carry no block, place, count, order or time. A greeting or
+sign-off is dropped only at the instruction's edges: a greeting before the first command, a sign-off
+after the last one (with the writer's name after it). A greeting that names one arm ("Hi arm a,") says
+who is to act and is left to be refused; so is a "thanks" in the middle of the instruction that the
+word tables do not read, and a signature that is a word the reader knows ("Thanks, Red"). Two labels
+say something and are rewritten rather than dropped: "Here's what I want:" (a need: "I want ...") and
+"Scope:" / "You will need:" (the blocks the instruction is about, read as the scene statement "we have
+...", which must name every block of the scene).
 
     >>> unframed(["Dear team, put the red block on G", "Thanks so much", "Ana"])
     ['put the red block on G']
@@ -48,7 +53,9 @@ _KNOWN = re.compile(r"(?i)^(?:red|blue|yellow|[a-j]|one|two|three|both|all|first
 
 def _closing(sentence: str) -> bool:
     match = _CLOSING.match(sentence)
-    return bool(match) and not (match.group("name") and _KNOWN.match(match.group("name")))
+    if match is None:
+        return False
+    return not (match.group("name") and _KNOWN.match(match.group("name")))
 
 
 def _signature(sentence: str) -> bool:
@@ -73,3 +80,24 @@ def unframed(sentences: list[str]) -> list[str]:
     if out:
         out[-1] = _TRAILING_THANKS.sub("", out[-1])
     return [s for s in out if s.strip()]
+
+
+# labels and presentative headings of the lower-cased sentence ("here's" is "here s" by then), applied by
+# `handover_phrases.normalise` before the word tables' rewrites
+FRAME: tuple[tuple[re.Pattern[str], str], ...] = tuple(
+    (re.compile(pattern), replacement)
+    for pattern, replacement in (
+        (r"^\s*(?:scope|you\s+(?:will\s+)?need|what\s+you\s+need|materials|equipment)\s*:\s*", "we have "),
+        (
+            r"^\s*here\s*(?:s|is)\s+(?:(?:the|my|our|your)\s+(?:idea|plan|deal|thing|job|task|brief|request)|"
+            r"what\s+(?:needs\s+(?:doing|to\s+be\s+done|to\s+happen)|to\s+do|you\s+(?:do|will\s+do)))\s*:",
+            " ",
+        ),
+        (r"^\s*here\s*(?:s|is)\s+what\s+(i|we)\s+(?:want|need|would\s+like)\s*:", r"\1 want "),
+        (
+            r"^\s*(?:(?:operator|operating|work|standard|general)\s+)?(?:steps|procedure|instructions?|plan|"
+            r"to\s*do|method|actions?)\s*:\s*",
+            " ",
+        ),
+    )
+)
