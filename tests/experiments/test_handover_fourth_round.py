@@ -74,6 +74,21 @@ READ = [
      "has been touched and after all of that put the yellow one back on g"),
     (8, "first yellow to region i then region g and red and blue to any empty region at any time"),
     (6, "Three objects, three regions: G, H and I, one each. Red before blue."),
+    # registers (handover_registers): academic nouns, narrative subjects and periods, emphasis
+    (1, "The objective is the relocation of all three blocks to the opposite side, with the red block placed "
+     "prior to the blue block."),
+    (3, "The three pillars are to be moved to regions E, F and G beside arms a and b; placements on any "
+     "region other than these are forbidden."),
+    (4, "The arms carry the three blocks to the opposite regions; do not touch the blue block until you have "
+     "touched the red block. After that, the yellow block goes back to G."),
+    (5, "The red and blue blocks trade places, red placed first, and somewhere along the way the yellow "
+     "block goes to the opposite side."),
+    (7, "The three objects must be placed on region I one after another, red before blue, while regions F, "
+     "G and H stay empty."),
+    (2, "Put the three blocks on H, I and J. Only one block can go on each one."),
+    (8, "The yellow block must be put on I and then on G; the red and blue blocks are each to be moved to an "
+     "arbitrary empty region at any time."),
+    (2, "Three blocks onto H, I and J, one per region, no exceptions."),
 ]
 
 REFUSED = [
@@ -119,6 +134,16 @@ REFUSED = [
      "region any time."),
     (3, "the pillars both go to e f g by the arms a and b and don't put anything on the other regions"),
     (6, "Three objects, three regions: G and H, one each. Red before blue."),
+    # the same registers with a meaning changed or a word they do not read
+    (1, "The objective is the relocation of the red block to the opposite side, with the red block placed "
+     "prior to the blue block."),
+    (3, "The three pillars are to be moved to regions E, F and G beside arms a and b; placements on any "
+     "region other than these are welcome."),
+    (4, "The arms carry the three blocks to the opposite regions; do not touch the blue block until you have "
+     "moved the red block. After that, the yellow block goes back to G."),
+    (7, "The three objects must be placed on region I one after another, red before blue, while regions F, "
+     "G and H stay full."),
+    (2, "Put the three blocks on H, I and J. Only one block can go on each block."),
 ]
 
 # records that say something else: read as they say, never as the written spec

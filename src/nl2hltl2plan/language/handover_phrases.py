@@ -31,6 +31,7 @@ from nl2hltl2plan.language.handover_places import (
     mark_places,
     note_one_per_region,
 )
+from nl2hltl2plan.language.handover_registers import REGISTERS
 from nl2hltl2plan.language.handover_scene import (
     COLOUR,
     COUNTS,
@@ -70,7 +71,7 @@ def normalise(sentence: str) -> str:
     text = re.sub(r"\b(\w+)'s\b", r"\1 s", text)  # red's -> red s (a possessive)
     text = re.sub(r"[a-z]+", lambda w: TYPOS.get(w.group(0), w.group(0)), text)
     text = _drop_framing(unspoken(text))
-    for pattern, replacement in FRAME + _REWRITES:
+    for pattern, replacement in FRAME + REGISTERS + _REWRITES:
         text = pattern.sub(replacement, text)
     text = re.sub(r"\bplease\b\s*,?", " ", text)  # politeness anywhere: "all three blocks please move to ..."
     return " ".join(text.split())
@@ -193,12 +194,14 @@ def _mark_one_per_region(m: Marked) -> None:
         rf"(?:be\s+|being\s+)?(?:{hold}\s+|{holding}\s+|given\s+)?(?:only\s+)?(?:with\s+)?{one}\b",
         rf"(?:\bwith\s+)?\bno\s+{region}\s+(?:can|may|should|must|will|shall)?\s*(?:be\s+)?"
         rf"(?:{hold}|receiving|getting|holding|having|taking)\s+(?:with\s+)?(?:more\s+than\s+"
-        rf"(?:one|a\s+single|1)(?:\s+{NOUN})?|(?:two|2)\s+{NOUNS})\b",
+        rf"(?:one|a\s+single|1)(?:\s+{NOUN}|\s+of\s+them)?|(?:two|2)\s+{NOUNS})\b",
         rf"\b(?:with\s+|placing\s+|putting\s+|(?:put|place)\s+|there\s+(?:can|may|should|must|will)\s+be\s+)?{one}\s+(?:(?:is|being|may|can|should|must|will)\s+)?"
         r"(?:be\s+)?(?:allowed\s+|permitted\s+)?"
         rf"(?:(?:to\s+)?(?:occupy|go\s+(?:in|on|to|into)|sit\s+(?:in|on)|be\s+(?:placed\s+)?(?:in|on)|fits?\s+(?:in|on|into))\s+|"
         r"(?:per|in|on|for|to)\s+)"
         rf"(?:each|every)\s+{region}\b",
+        # "only one block can go on each one": "each one" after a place's preposition is each place
+        rf"\b{one}\s+(?:(?:can|may|should|must|will)\s+)?(?:go|fit|be)\s+(?:on|in|into)\s+each\s+one\b",
         rf"\b(?:with\s+)?{one}\s+(?:(?:is|being|may|can)\s+)?(?:allowed\s+|permitted\s+)?(?:per|to\s+a)\s+{region}\b",
         r"\b(?:one|1)\s+(?:each|apiece)\b",
         rf"(?:,\s*)?\b(?:an?\s+)?(?:different|separate|distinct)\s+{region}\s+(?:for|per)\s+(?:each|every)(?:\s+{NOUN})?\b",

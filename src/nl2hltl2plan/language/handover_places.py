@@ -145,7 +145,7 @@ def _mark_target_complements(m: Marked) -> None:
         rf"{targets}|\boutside\s+(?:of\s+)?{targets}|\b(?:(?:any\s+|an\s+)?other|another)\s+{PLACE_NOUN}\s+than\s+{targets}|"
         rf"\b(?:any|all|every)\s+other\s+{PLACE_NOUN}\b|{non_target}|"
         # "on another region", "on the other regions" (not "the other side": the opposite)
-        rf"\b(?:(?<!after\s)another\s+{_REGION}|(?:the\s+)?other\s+{_REGION}s)\b"
+        rf"\b(?:(?<!after\s)another\s+{_REGION}|(?:the\s+)?other\s+(?:{_REGION}|place)s)\b"
     )
 
     def other_than(match: re.Match[str]) -> str:  # "anywhere other than ...", "elsewhere": with its "on"

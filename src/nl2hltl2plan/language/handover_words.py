@@ -232,19 +232,6 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\b(go|goes|come|comes|put|move|return)\s+back\s+(?=regions?\b)", r"\1 back to "),
     (r"\bfirstly\b", "first"),
     (r",\s*after\s+(?=(?:to|on|onto|in|into)\s)", ", then "),
-    # a verbless dictated step: "first yellow to region i then region g"
-    (
-        r"(^|,)\s*(first|then|next|finally)\s+(?=(?:the\s+)?(?:red|blue|yellow)(?:\s+(?:block|one|cube))?\s+"
-        r"(?:to|on|onto|in|into)\s)",
-        r"\1 \2 , ",
-    ),
-    (r"\bthen\s+(?=regions?\s+[e-j]\b)", "then to "),
-    # a verbless heading: "three objects, three regions: G, H and I" (the regions' count is checked)
-    (
-        r"^\s*((?:the\s+)?(?:two|three|four|\d)\s+(?:blocks|objects|pillars|items|cubes|pieces))\s*,\s*"
-        r"(?=(?:the\s+)?(?:two|three|four|\d)\s+(?:(?:goal|target)\s+)?regions\s*:)",
-        r"put \1 on ",
-    ),
     # a verbless step with "first" after its block: "yellow block first to region I, then to G"
     (
         r"(^|,)\s*((?:the\s+)?(?:red|blue|yellow)(?:\s+(?:block|cube|one))?)\s+first\s+(?=(?:to|on|onto|in|into)\s)",
@@ -368,11 +355,6 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\band\s+(?:because|since)\s+", "and "),
     # a rule's label with its period: "Restriction for the duration: F, G and H remain empty"
     (rf"^\s*{_RULE_LABEL}\s+({PERIOD_WORDS})\s*:\s*(.+)$", r"\2 \1"),
-    # "..., leaving the blue block untouched until ...": not touched
-    (
-        r"\b(?:leaving|leave|keeping|keep)\s+((?:the\s+)?(?:red|blue|yellow)(?:\s+(?:block|one|cube))?)\s+untouched\b",
-        r"\1 must not be touched",
-    ),
     # a reason clause: read as a clause of the instruction ("because regions F, G and H must stay clear, ...")
     (rf"^({STEP_NUMBER})(?:because|since)\s+", r"\1 "),
     (r"\s*,\s*(?:because|since)\s+", ", and "),
@@ -506,17 +488,6 @@ REWRITES: tuple[tuple[str, str], ...] = (
         r"(\b(?:empty|clear|free|nothing)\b[^,]*),\s*(?:as|since|because)\s+they\s+(?:must|have\s+to|need\s+to)\s+"
         r"(?:stay|remain|be\s+kept)\s+(?:empty|clear|free)\s*$",
         r"\1",
-    ),
-    # verbless headings: "F, G, H: nothing placed meanwhile" (the places first); "red and blue: swap places"
-    (
-        r"^\s*((?:regions?\s+)?[e-j](?:\s*(?:,|and|or)\s*[e-j])*)\s*:\s*(?:nothing|no\s+(?:objects?|blocks?))"
-        r"(?:\s+(?:(?:is|are|gets?|may\s+be|can\s+be)\s+)?(?:placed|put|dropped|allowed|goes))?\b",
-        r"nothing on \1",
-    ),
-    (
-        r"^\s*((?:the\s+)?(?:red|blue|yellow)(?:\s+(?:and|&)\s+(?:the\s+)?(?:red|blue|yellow))(?:\s+(?:blocks|ones))?)\s*:\s*"
-        rf"{SWAP}\s+(?:(?:their|the)\s+)?(?:places|positions|spots)\b",
-        r"swap \1",
     ),
     # a heading that forbids places: "Forbidden meanwhile: regions F, G and H"
     (
