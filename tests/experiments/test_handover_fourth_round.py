@@ -89,6 +89,12 @@ READ = [
     (8, "The yellow block must be put on I and then on G; the red and blue blocks are each to be moved to an "
      "arbitrary empty region at any time."),
     (2, "Three blocks onto H, I and J, one per region, no exceptions."),
+    # one block per bullet to the same regions, under the one-block rule: at once, as one clause says it
+    (6, "- red: G, H or I\n- blue: G, H or I\n- yellow: G, H or I\n- one per region, red before blue"),
+    (6, "red -> G/H/I, blue -> G/H/I, yellow -> G/H/I; one per region; red before blue"),
+    # a later step said inside the sentence
+    (8, "First step, put the yellow block on region I, second step, put it on region G. Red and blue go to "
+     "any empty region at any time."),
 ]
 
 REFUSED = [
@@ -152,6 +158,9 @@ OTHER = [
     (2, "Blocks: all three\nTargets: H and I"),
     (5, "- red and yellow: swap places (red first)\n- blue: opposite side, whenever"),
     (1, "Scope: the three blocks. Action: move them to the opposite side. Warning: blue before red."),
+    # per-block goals without the one-block rule, or to different region sets: no "at once"
+    (6, "red -> G/H/I, blue -> G/H/I, yellow -> G/H/I; red before blue"),
+    (6, "red -> G/H/I, blue -> G/H, yellow -> G/H/I; one per region; red before blue"),
 ]
 
 

@@ -110,6 +110,7 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
         clauses = crossed_exchanges(clauses + new, orders)
         for block in leaders:
             lead(clauses, block)
+    clauses = _distributed(clauses, notes)
     orders += [(c.leader, g.block) for c in clauses if c.leader for g in c.goals if g.block != c.leader]
     if not clauses:
         raise HTTError(f"no goal for a block in {instruction!r} (say where each block goes)")
@@ -213,6 +214,24 @@ def _said_before(new: list[Clause], clauses: list[Clause]) -> list[Clause]:
         if c.marker or d.marker or moved_apart or (c.anytime, c.leader) != (d.anytime, d.leader):
             raise HTTError(f"'{c.text}' gives again a goal said before ('{d.text}') otherwise: which holds?")
     return out
+
+
+def _distributed(clauses: list[Clause], notes: list[str]) -> list[Clause]:
+    """'red -> G, H or I; blue -> G, H or I; yellow -> G, H or I; one per region': goals of one block each,
+    all to one set of as many regions as there are goals, under the one-block rule, ask for the blocks
+    there at once, as 'the three blocks to G, H and I, one per region' does: one clause."""
+    regions = {g.regions for c in clauses for g in c.goals if g.place.kind == "regions"}
+    plain = all(len(c.goals) == 1 and not (c.marker or c.anytime or c.together or c.leader) for c in clauses)
+    ruled = any(n.startswith("one block per region") for n in notes)
+    blocks = {c.goals[0].block for c in clauses}
+    if not (plain and ruled and len(regions) == 1 and len(clauses) > 1):
+        return clauses
+    if not all(c.goals[0].place.kind == "regions" for c in clauses):
+        return clauses
+    if not len(blocks) == len(clauses) == len(next(iter(regions))):
+        return clauses
+    text = "; ".join(c.text for c in clauses)
+    return [Clause(goals=[c.goals[0] for c in clauses], text=text, together=True)]
 
 
 def _refuse_leftovers(m: Marked, sentence: str) -> None:

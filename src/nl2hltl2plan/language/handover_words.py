@@ -427,6 +427,11 @@ REWRITES: tuple[tuple[str, str], ...] = (
     # (a comma after it, so that a step without a verb reads as "First, yellow block to I")
     (rf"^\s*{FIRST_STEP}\s*", "first , "),
     (rf"^\s*{LATER_STEP}\s*", "then , "),
+    # a later step inside the sentence: "first step, put yellow on I, second step, put it on G"
+    (
+        rf",\s*(?:{_STEP_WORD}\s+(?:[2-9]|two|three|four|five)|(?:second|third|next)\s+{_STEP_WORD})\b\s*[:,-]?",
+        ", then , ",
+    ),
     (r"^\s*(?:second(?:ly)?|third(?:ly)?|fourth(?:ly)?)\s*[:,]", "then "),
     (r"^\s*(first|then)\s*,?\s*\1\b\s*,?", r"\1 "),  # "2) Then move it ...": the step's "then" said twice
     # a heading that gives the time of what follows: "Any time: red and blue blocks to any empty region"
