@@ -10,7 +10,8 @@ consume placeholders and words. Whatever a pass leaves unread is a refusal namin
 is silently dropped. This module reads the blocks, arms, pronouns and the world's one-block-per-region
 rule; `handover_places` the places; `handover_scene` holds the layout and the placeholders' data.
 
-Places resolve against the instance: "the opposite" is, per block, the labelled regions on the other
+A count set off after its noun ("the blocks, all three, ...") must be the noun's count. Places resolve
+against the instance: "the opposite" is, per block, the labelled regions on the other
 arms' side from where the block starts (arms a, b against c, d); "the side of arm a and arm b" the
 labelled regions those arms reach; "where the red block is" the region red starts on. A landmark
 ("next to arm a and arm b") only describes a place named beside it, and must agree with it; "swap

@@ -3,7 +3,8 @@
 `translate_handover(instruction, world)` reads an instruction about the blocks and regions of a
 `handover-square` / `handover-line` world and returns the same `LanguageResult` as the other
 worlds (HTT, base tasks, `before`, leaf formulas, the hierarchical spec) plus `constraints`: the
-guards and joint goals as text, sorted. Each sentence is normalised and its phrases are resolved
+guards and joint goals as text, sorted. The frame around the commands (a greeting, a sign-off:
+`language.handover_frame`) is dropped; each sentence is normalised and its phrases are resolved
 against the instance's layout (`language.handover_phrases`, word tables in `handover_words`), and its
 statements that are not commands (scene, target, need, question) are read and checked
 (`language.handover_clauses`); its orders, touch guards and prohibitions are read first
@@ -28,7 +29,9 @@ task tree and the spec. The rules, each general:
   "never" for the plan's whole run);
 - "each region holds one object", "separately": the world's own rule (a cell holds one block);
 - a clause whose goals another clause of the same sentence also gives is read once ("place the red
-  block on the opposite side before the blue block, and get all three blocks across").
+  block on the opposite side before the blue block, and get all three blocks across");
+- goals of one block per clause to one set of as many regions, under the one-block rule ("red -> G/H/I,
+  blue -> G/H/I, yellow -> G/H/I; one per region"), are read at once, as one clause says it.
 Clauses are kept in the sentence's order; "but" is read only before a rule. Every word is read or is
 a filler; anything else is refused, naming the words.
 """
@@ -132,9 +135,9 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
 
 def _sentences(instruction: str) -> list[str]:
     """Split at line breaks (a list of steps or bullets), '.', ';', '!' and '?', but not in 'i.e.' nor after a
-    step's number ('1. Put ...'); a bullet ('-', '*', '•') starting a line or sentence is dropped. A heading
-    ending in a colon is joined to the line below it, and a record of labelled lines ('Blocks: ...' then
-    'Targets: ...') is read as one goal."""
+    step's number ('1. Put ...', also after a colon); a bullet ('-', '*', '•') starting a line or sentence is
+    dropped. A heading ending in a colon is joined to the line below it, and a record of labelled fields,
+    on lines or in sentences and in either order ('Blocks: ...' and 'Targets: ...'), is read as one goal."""
     out: list[str] = []
     # a record of labelled fields, on lines or in sentences, in either order: "Blocks: red, blue, yellow"
     # then "Targets: H, I, J" (or "Regions: G, H and I. Objects: all three.") is one goal
