@@ -4,6 +4,8 @@
 General steps, each removing only words that carry no block, place, arm, count, negation, order or
 time (a word that might carry one is left for the reader, which reads it or refuses naming it):
 
+- contractions spelled out ("shan't" before the general "n't"); a time said before a scene statement
+  ("right now, the red block is on g") kept as "currently" for the scene reader, not dropped as fillers;
 - discourse fillers and hedges: hesitations ("um", "uh", "er"), "you know", "basically", "yeah",
   interjections that open a clause or tag its end ("okay so", "right,", "..., alright?", "oh and"),
   "just" before a verb ("just drop them", never "just the red block"), a hedge on the whole request
