@@ -198,9 +198,12 @@ def _read_questions(m: Marked) -> None:
 
 
 def _read_place_headings(m: Marked) -> None:
-    """'Target: region I, all three blocks, one after another': the blocks to the place."""
+    """'Target: region I, all three blocks, one after another': the blocks to the place; 'Red and blue
+    blocks: relocate to any empty region': the verb after the blocks' heading."""
+    m.sub(rf"^\s*B(\d+)\s*:\s*({VERB})\s+(?=(?:to|onto|on|into|in)\s+P\d)", r" \2 B\1 ")
     m.sub(
-        r"^\s*(?:please\s+)?(?:targets?|destinations?|where)\s*:\s*P(\d+)\s*,\s*B(\d+)(?=\s*(?:$|,))",
+        r"^\s*(?:please\s+)?(?:targets?|destinations?|where)\s*:\s*P(\d+)\s*,\s*B(\d+)"
+        r"(?=\s*(?:$|,|one\s+(?:after\s+another|by\s+one|at\s+a\s+time)|in\s+turn|separately|at\s+any\s+time))",
         r" B\2 to P\1 ",
     )
 

@@ -150,12 +150,12 @@ def goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
         rf"(?:all\s+|each\s+|both\s+)?be\s+(?:back\s+)?(?:on|in|at|onto|into)\s+P(\d+){mods}",
         lambda x: matched(x, 1),
     )
-    # a verb shared with the clause before: "put the red block in H, then the blue block in I"
-    m.sub(
-        rf"(?<=G\d)(?P<link>\s*,?\s*(?:and\s+)?(?:then\s+)?)B(\d+){mods}\s+(?:back\s+)?{PREP}\s+P(\d+)"
-        rf"{mods}",
-        lambda x: x.group("link") + matched(x, 2),
+    # a verb shared with the clause before: "put the red block in H, then the blue block in I" (again after
+    # the clauses that share the blocks too: "to I then to G and red and blue to any empty region")
+    shared_verb = (
+        rf"(?<=G\d)(?P<link>\s*,?\s*(?:and\s+)?(?:then\s+)?)B(\d+){mods}\s+(?:back\s+)?{PREP}\s+P(\d+){mods}"
     )
+    m.sub(shared_verb, lambda x: x.group("link") + matched(x, 2))
     # the verb and the blocks shared with the clause just before: "to I, then to G", "on I first, then on G"
     m.sub(
         rf"\bG(\d+)(?P<link>(?:\s+first\b)?\s*,?\s*(?:and\s+)?(?:{THEN}{LEAD}|followed\s+by\s+))(?:{VERB}\s+)?(?:back\s+)?"
@@ -166,6 +166,7 @@ def goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
         rf"\bG(\d+)(?P<link>\s+first\s*,?\s*and\s+)(?:back\s+)?{PREP}\s+P(\d+){mods}\s+(?:second|next|afterwards?|after|last)\b(?!\s+B)",
         lambda x: f" G{x.group(1)} then " + again(clauses[int(x.group(1))], x),
     )
+    m.sub(shared_verb, lambda x: x.group("link") + matched(x, 2))
     _markers(m, clauses)
     order = [int(k) for k in re.findall(r"\bG(\d+)\b", m.text)]  # the sentence's order, not the patterns'
     if sorted(order) != list(range(len(clauses))):  # a clause lost or read twice: never guess

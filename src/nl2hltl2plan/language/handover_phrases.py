@@ -10,7 +10,8 @@ consume placeholders and words. Whatever a pass leaves unread is a refusal namin
 is silently dropped. This module reads the blocks, arms, pronouns and the world's one-block-per-region
 rule; `handover_places` the places; `handover_scene` holds the layout and the placeholders' data.
 
-Places resolve against the instance: "the opposite" is, per block, the labelled regions on the other
+A count set off after its noun ("the blocks, all three, ...") must be the noun's count. Places resolve
+against the instance: "the opposite" is, per block, the labelled regions on the other
 arms' side from where the block starts (arms a, b against c, d); "the side of arm a and arm b" the
 labelled regions those arms reach; "where the red block is" the region red starts on. A landmark
 ("next to arm a and arm b") only describes a place named beside it, and must agree with it; "swap
@@ -24,12 +25,14 @@ from functools import partial
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.handover_clauses import read_statements
+from nl2hltl2plan.language.handover_frame import FRAME
 from nl2hltl2plan.language.handover_places import (
     mark_capacity,
     mark_place_pronouns,
     mark_places,
     note_one_per_region,
 )
+from nl2hltl2plan.language.handover_registers import REGISTERS
 from nl2hltl2plan.language.handover_scene import (
     COLOUR,
     COUNTS,
@@ -48,6 +51,7 @@ from nl2hltl2plan.language.handover_words import (
     MODAL,
     NEG,
     REWRITES,
+    STEP_NUMBER,
     SWAP,
     VERB,
 )
@@ -63,14 +67,24 @@ def normalise(sentence: str) -> str:
     framing dropped and `REWRITES` applied."""
     text = sentence.lower().replace("’", "'")
     text = re.sub(r"(?<=[a-z])-(?=[a-z])", " ", text)  # one-by-one -> one by one
+    text = _DASH.sub(lambda dash: _dash_as_comma(text, dash), text)
     text = re.sub(r"([,()/:])", r" \1 ", text)
     text = re.sub(r"\b(\w+)'s\b", r"\1 s", text)  # red's -> red s (a possessive)
     text = re.sub(r"[a-z]+", lambda w: TYPOS.get(w.group(0), w.group(0)), text)
     text = _drop_framing(unspoken(text))
-    for pattern, replacement in _REWRITES:
+    for pattern, replacement in FRAME + REGISTERS + _REWRITES:
         text = pattern.sub(replacement, text)
     text = re.sub(r"\bplease\b\s*,?", " ", text)  # politeness anywhere: "all three blocks please move to ..."
     return " ".join(text.split())
+
+
+_DASH = re.compile(r"\s*[—–]\s*|\s+-+\s+")
+
+
+def _dash_as_comma(text: str, dash: re.Match[str]) -> str:
+    """A dash sets off a phrase, as a comma does; not after a step's number ("1 - move ...", "step two -
+    put ...": at most two words before it)."""
+    return dash[0] if len(text[: dash.start()].split()) <= 2 else " , "
 
 
 # words that may carry a meaning here: a block, a place, an arm, a count, a negation, an order or a time
@@ -79,7 +93,8 @@ _MEANING = re.compile(
     r"areas?|zones?|sides?|places?|spots?|positions?|cells?|locations?|opposite|[a-j]|arms?|robots?|one|two|three|"
     r"four|both|all|each|every|\d+|not|no|never|nothing|none|cannot|without|before|after|first|then|until|once|"
     r"last|next|finally|final|step|steps|end|start|beginning|later|earlier|second|third|previous|prior|following|"
-    r"afterwards?|order|while|during|meanwhile|time|any|empty|free|clear|exchange|swap|touch\w*)\b"
+    r"afterwards?|order|while|during|meanwhile|time|any|empty|free|clear|exchange|swap|touch\w*|finish\w*|"
+    r"conclu\w+|wrap\w*|complet\w*)\b"
 )
 
 
@@ -87,8 +102,7 @@ def _drop_framing(text: str) -> str:
     """A purpose or reason that names nothing the reader could use ('to keep things simple, ...', 'for
     safety, ...', '..., since that is faster') frames the sentence and is dropped; one that names a block,
     a place, an arm, a count, a negation, an order or a time stays to be read (or refused)."""
-    step = r"\s*(?:step\s+\w+\s*[:-]?|\d\s*[):-]|\(\s*\d\s*\))?"  # "2) for safety, ..."
-    lead = re.match(rf"({step})\s*(?:to|in\s+order\s+to|for|because|since|as)\s+([^,]{{1,60}}),", text)
+    lead = re.match(rf"({STEP_NUMBER})\s*(?:to|in\s+order\s+to|for|because|since|as)\s+([^,]{{1,60}}),", text)
     if lead and not _MEANING.search(lead.group(2)):
         text = lead.group(1) + " " + text[lead.end() :]
     tail = re.search(r",\s*(?:because|since|as|so\s+that|for)\s+([^,]+)$", text)
@@ -112,6 +126,10 @@ def mark(sentence: str, scene: Scene, before: Marked | None = None) -> Marked:
     # "put the three blocks there", "the yellow block is to be moved there as well"
     m.sub(rf"\b((?:{VERB}|{GERUND})\s+B\d+|B\d+\s+{MODAL}{DONE})\s+there\b", r"\1 PLACEREF_there")
     mark_places(m, scene, previous.last_regions)
+    # "i" that ends a clause is region I that no place phrase took in ("g , h , also i"), never the pronoun
+    # (a filler word, which a verb follows): refused, not dropped
+    if re.search(r"\bi\s*(?=$|[,;:()])", m.text):
+        raise HTTError(f"'i' in {sentence.strip()!r} is not read as a place: say 'region I'")
     mark_place_pronouns(m, previous.last_regions, previous.last_place, previous.last_group)
     mark_capacity(m)
     read_statements(m, scene)
@@ -131,13 +149,16 @@ def _join_particles(m: Marked) -> None:
     """A particle verb reads as the verb: 'put down the red block', 'put the red block (back) down (on G)'
     as 'put the red block (back) (on G)', 'pick the blue block up' as 'pick up the blue block'."""
     m.sub(rf"\b({VERB}|{GERUND})\s+down\b", r"\1")
+    m.sub(r"\b(set|lay|laid|spread)\s+(B\d+)\s+out\b", r"\1 \2")  # "set the objects out on G, H and I"
     m.sub(rf"\b({VERB}|{GERUND})\s+(B\d+)\s+(back\s+)?down\b", r"\1 \2 \3")
     m.sub(r"\b(B\d+)\s+down\s+(?=(?:on|onto|in|into|at)\s)", r"\1 ")  # "..., the blue block down on H"
     m.sub(r"\b(pick|picks|picking|picked)\s+(B\d+)\s+up\b", r"\1 up \2")
 
 
 def _mark_connectives(m: Marked) -> None:
-    """'making sure (that)', 'ensure that', 'provided that' introduce what follows and add nothing."""
+    """'making sure (that)', 'ensure that', 'provided that' introduce what follows and add nothing; nor
+    does 'but' before a negated command ('move ... but don't touch ...', read before the rule is)."""
+    m.sub(r"(?:,\s*)?\bbut\s+(?=(?:do\s+not|never)\b)", " , ")
     m.sub(
         r"(?:\bwhile\s+)?\b(?:(?:making|make|be)\s+(?:sure|certain)|ensur(?:e|ing))\s+(?:that\s+)?|"
         r"\b(?:such|so)\s+that\b(?!\s+each\b)|\b(?:provided|providing|(?:on|under)\s+(?:the\s+)?condition)\s+that\b",
@@ -174,14 +195,16 @@ def _mark_one_per_region(m: Marked) -> None:
         rf"(?:be\s+|being\s+)?(?:{hold}\s+|{holding}\s+|given\s+)?(?:only\s+)?(?:with\s+)?{one}\b",
         rf"(?:\bwith\s+)?\bno\s+{region}\s+(?:can|may|should|must|will|shall)?\s*(?:be\s+)?"
         rf"(?:{hold}|receiving|getting|holding|having|taking)\s+(?:with\s+)?(?:more\s+than\s+"
-        rf"(?:one|a\s+single|1)(?:\s+{NOUN})?|(?:two|2)\s+{NOUNS})\b",
+        rf"(?:one|a\s+single|1)(?:\s+{NOUN}|\s+of\s+them)?|(?:two|2)\s+{NOUNS})\b",
         rf"\b(?:with\s+|placing\s+|putting\s+|(?:put|place)\s+|there\s+(?:can|may|should|must|will)\s+be\s+)?{one}\s+(?:(?:is|being|may|can|should|must|will)\s+)?"
         r"(?:be\s+)?(?:allowed\s+|permitted\s+)?"
         rf"(?:(?:to\s+)?(?:occupy|go\s+(?:in|on|to|into)|sit\s+(?:in|on)|be\s+(?:placed\s+)?(?:in|on)|fits?\s+(?:in|on|into))\s+|"
         r"(?:per|in|on|for|to)\s+)"
         rf"(?:each|every)\s+{region}\b",
-        rf"\b(?:with\s+)?{one}\s+(?:(?:is|being|may|can)\s+)?(?:allowed\s+|permitted\s+)?per\s+{region}\b",
-        r"\bone\s+(?:each|apiece)\b",
+        # "only one block can go on each one": "each one" after a place's preposition is each place
+        rf"\b{one}\s+(?:(?:can|may|should|must|will)\s+)?(?:go|fit|be)\s+(?:on|in|into)\s+each\s+one\b",
+        rf"\b(?:with\s+)?{one}\s+(?:(?:is|being|may|can)\s+)?(?:allowed\s+|permitted\s+)?(?:per|to\s+a)\s+{region}\b",
+        r"\b(?:one|1)\s+(?:each|apiece)\b",
         rf"(?:,\s*)?\b(?:an?\s+)?(?:different|separate|distinct)\s+{region}\s+(?:for|per)\s+(?:each|every)(?:\s+{NOUN})?\b",
         rf"(?:,\s*)?\b(?:an?\s+)?(?:different|separate|distinct)\s+{region}\s+(?:each|apiece)\b",
         # "each region only has room for one"; "every block gets a region of its own"
@@ -277,6 +300,7 @@ def _mark_blocks(m: Marked, scene: Scene, previous: str, previous_group: tuple[s
         return _new_block(m, scene.blocks, match.group(0))
 
     each = rf"\b(?:each|every|all)\s+(?:of\s+the\s+)?{count}(?:{NOUN}|{NOUNS})\b"  # not "any": one of them
+    counts = _counts_after_nouns(m)
     m.sub(colours, by_colour)
     m.sub(colours, by_colour)  # the phrases a repeated colour started
     # a heading that lists blocks with commas: "red, blue: any empty region" (one group)
@@ -314,7 +338,9 @@ def _mark_blocks(m: Marked, scene: Scene, previous: str, previous_group: tuple[s
     m.sub(each, all_blocks)
     m.sub(group, all_blocks)
 
-    def restated(match: re.Match[str]) -> str:  # "the blocks, all three of them,": the same blocks, counted
+    _check_counts_after_nouns(m, counts)
+
+    def restated(match: re.Match[str]) -> str:  # "... so move all three of them there": the blocks, counted
         before = re.findall(r"\bB(\d+)\b", m.text[: match.start()])
         if not before or m.blocks[int(before[-1])] != scene.blocks:
             return match.group(0)
@@ -324,6 +350,49 @@ def _mark_blocks(m: Marked, scene: Scene, previous: str, previous_group: tuple[s
 
     m.sub(r"\s*,?\s*\ball\s+(two|three|four|\d+)\s+of\s+them\b", restated)
     _mark_pronouns(m, previous, previous_group)
+
+
+# a count set off after its noun: "the blocks, all three (of them), go ...", "pillars (all three) -> ...",
+# "the red and blue blocks, both of them, ...", unpunctuated before a verb ("the pillars all three go to
+# ..."); not a part ("the blocks, two of them, ...": which two?)
+_COUNT_AFTER_NOUN = re.compile(
+    rf"\b({NOUNS}|{COLOUR})\s*(?:,|\(|—|–|-)?\s*"
+    r"(all\s+(?:of\s+them|(?:two|three|four|\d)(?:\s+of\s+them)?)|the\s+(?:two|three|four|\d)\s+of\s+them|"
+    r"both(?:\s+of\s+them)?|each\s+of\s+the\s+(?:two|three|four|\d)|every\s+one\s+of\s+them)\s*"
+    r"(?:,|\)|—|–|-|(?=(?:go|goes|to|on|onto|in|into|should|must|are|will|can|need|have|swap|exchange|trade)\b))"
+)
+
+
+def _counts_after_nouns(m: Marked) -> list[str]:
+    """Each count set off after its noun, replaced by a token `Q<k>` (the k-th count's words) that
+    `_check_counts_after_nouns` checks against the blocks the noun names once they are marked."""
+    counts: list[str] = []
+
+    def token(match: re.Match[str]) -> str:
+        counts.append(match.group(2))
+        return f"{match.group(1)} Q{len(counts) - 1} "
+
+    m.text = _COUNT_AFTER_NOUN.sub(token, m.text)
+    return counts
+
+
+def _check_counts_after_nouns(m: Marked, counts: list[str]) -> None:
+    """'the blocks, all three,' names the blocks once, counted: the count must be theirs ('the pillars,
+    both of them,' with three pillars, or 'the red block, all three of them,' is refused)."""
+
+    def counted(match: re.Match[str]) -> str:
+        blocks, said = m.blocks[int(match.group(1))], counts[int(match.group(2))]
+        number = next((COUNTS[w] for w in said.split() if w in COUNTS), None)
+        if len(blocks) < 2 or number not in (None, len(blocks)):
+            raise HTTError(
+                f"'{m.block_text[int(match.group(1))]}, {said}' counts {number or 'all'} of "
+                f"{len(blocks)} block(s): which blocks?"
+            )
+        return f" B{match.group(1)} "
+
+    m.sub(r"\bB(\d+)\s+Q(\d+)\b", counted)
+    if left := re.search(r"\bQ(\d+)\b", m.text):
+        raise HTTError(f"'{counts[int(left.group(1))]}' counts no blocks named before it")
 
 
 def _mark_pronouns(m: Marked, previous: str, previous_group: tuple[str, ...]) -> None:

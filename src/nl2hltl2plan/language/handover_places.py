@@ -126,6 +126,7 @@ def mark_places(m: Marked, scene: Scene, named_before: tuple[str, ...]) -> None:
 
 
 TARGET = r"(?:goal|target|placement|destination|assigned)"
+_REGION = r"(?:region|area|zone|spot|cell|location)"
 OTHER_THAN = r"(?:other\s+than|except(?:\s+for)?|besides|apart\s+from|but|outside(?:\s+of)?)"
 
 
@@ -142,7 +143,9 @@ def _mark_target_complements(m: Marked) -> None:
     complement = (
         rf"\b(?:the\s+|an?\s+)?(?:any\s+)?(?:other\s+)?(?:{PLACE_NOUN}|anywhere)\s+(?:{OTHER_THAN}|that\s+(?:is|are)\s+not)\s+"
         rf"{targets}|\boutside\s+(?:of\s+)?{targets}|\b(?:(?:any\s+|an\s+)?other|another)\s+{PLACE_NOUN}\s+than\s+{targets}|"
-        rf"\b(?:any|all|every)\s+other\s+{PLACE_NOUN}\b|{non_target}"
+        rf"\b(?:any|all|every)\s+other\s+{PLACE_NOUN}\b|{non_target}|"
+        # "on another region", "on the other regions" (not "the other side": the opposite)
+        rf"\b(?:(?<!after\s)another\s+{_REGION}|(?:the\s+)?other\s+(?:{_REGION}|place)s)\b"
     )
 
     def other_than(match: re.Match[str]) -> str:  # "anywhere other than ...", "elsewhere": with its "on"
@@ -254,7 +257,7 @@ def _mark_region_lists(m: Marked, scene: Scene) -> None:
     m.sub(rf"{lead}(?P<list>{letters})(?:\s+at\b(?=\s*,))?", regions)
     m.sub(rf"{bare}(?P<list>{letters})", regions)
     # telegraphic: "yellow: I, then G" (a letter after a block's heading, or after "then" ending a clause)
-    m.sub(rf"(?P<prep>\bB\d+\s*:\s*)(?P<list>{letters})(?=\s*(?:$|,|\bthen\b))", regions)
+    m.sub(rf"(?P<prep>\bB\d+\s*:\s*)(?P<list>{letters})(?=\s*(?:$|,|\(|\bthen\b))", regions)
     m.sub(rf"(?P<prep>\bthen\s+)(?P<list>{LETTER})(?=\s*(?:$|,))", regions)
     # a bare list of two or more letters ("F, G, H stay empty"): regions anywhere (one letter may be "I")
     listed = LETTER + r"(?:(?:\s*(?:,|\band\b|\bor\b|&|/))+\s*" + LETTER + r")+"

@@ -3,7 +3,8 @@
 `translate_handover(instruction, world)` reads an instruction about the blocks and regions of a
 `handover-square` / `handover-line` world and returns the same `LanguageResult` as the other
 worlds (HTT, base tasks, `before`, leaf formulas, the hierarchical spec) plus `constraints`: the
-guards and joint goals as text, sorted. Each sentence is normalised and its phrases are resolved
+guards and joint goals as text, sorted. The frame around the commands (a greeting, a sign-off:
+`language.handover_frame`) is dropped; each sentence is normalised and its phrases are resolved
 against the instance's layout (`language.handover_phrases`, word tables in `handover_words`), and its
 statements that are not commands (scene, target, need, question) are read and checked
 (`language.handover_clauses`); its orders, touch guards and prohibitions are read first
@@ -28,7 +29,9 @@ task tree and the spec. The rules, each general:
   "never" for the plan's whole run);
 - "each region holds one object", "separately": the world's own rule (a cell holds one block);
 - a clause whose goals another clause of the same sentence also gives is read once ("place the red
-  block on the opposite side before the blue block, and get all three blocks across").
+  block on the opposite side before the blue block, and get all three blocks across");
+- goals of one block per clause to one set of as many regions, under the one-block rule ("red -> G/H/I,
+  blue -> G/H/I, yellow -> G/H/I; one per region"), are read at once, as one clause says it.
 Clauses are kept in the sentence's order; "but" is read only before a rule. Every word is read or is
 a filler; anything else is refused, naming the words.
 """
@@ -41,6 +44,7 @@ from dataclasses import dataclass, field
 import networkx as nx
 
 from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.language.handover_frame import unframed
 from nl2hltl2plan.language.handover_goals import Clause, Goal, crossed_exchanges, goal_clauses, lead
 from nl2hltl2plan.language.handover_phrases import drop_but, mark
 from nl2hltl2plan.language.handover_rules import (
@@ -84,7 +88,7 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
     notes: list[str] = []
     pending: list[Prohibition] = []  # prohibitions stated before any goal
     previous: Marked | None = None  # the sentence before ("it", "these regions" in the next one)
-    steps, instruction = _sentences(instruction), " ".join(instruction.split())
+    steps, instruction = unframed(_sentences(instruction)), " ".join(instruction.split())
     for sentence in steps:
         m = mark(sentence, scene, previous)
         previous = m
@@ -109,6 +113,7 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
         clauses = crossed_exchanges(clauses + new, orders)
         for block in leaders:
             lead(clauses, block)
+    clauses = _distributed(clauses, notes)
     orders += [(c.leader, g.block) for c in clauses if c.leader for g in c.goals if g.block != c.leader]
     if not clauses:
         raise HTTError(f"no goal for a block in {instruction!r} (say where each block goes)")
@@ -130,28 +135,44 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
 
 def _sentences(instruction: str) -> list[str]:
     """Split at line breaks (a list of steps or bullets), '.', ';', '!' and '?', but not in 'i.e.' nor after a
-    step's number ('1. Put ...'); a bullet ('-', '*', '•') starting a line or sentence is dropped. A heading
-    ending in a colon is joined to the line below it, and a record of labelled lines ('Blocks: ...' then
-    'Targets: ...') is read as one goal."""
+    step's number ('1. Put ...', also after a colon); a bullet ('-', '*', '•') starting a line or sentence is
+    dropped. A heading ending in a colon is joined to the line below it, and a record of labelled fields,
+    on lines or in sentences and in either order ('Blocks: ...' and 'Targets: ...'), is read as one goal."""
     out: list[str] = []
-    # a record of labelled lines: "Blocks: red, blue, yellow" then "Targets: H, I, J" is one goal
-    instruction = re.sub(
-        r"(?im)^\s*(?:[-*•·]\s+)?(?:blocks?|objects?|pillars?|items?)\s*:\s*([^\n:]+?)\s*\n\s*(?:[-*•·]\s+)?"
-        r"(?:targets?|destinations?|goal\s+regions?|target\s+regions?|where)\s*:\s*([^\n:]+?)\s*$",
-        lambda x: _listed(x.group(1)) + " to " + x.group(2),
-        instruction,
-    )
+    # a record of labelled fields, on lines or in sentences, in either order: "Blocks: red, blue, yellow"
+    # then "Targets: H, I, J" (or "Regions: G, H and I. Objects: all three.") is one goal
+    for record in _RECORDS:
+        instruction = record.sub(_record_as_goal, instruction)
     # a heading that ends in a colon goes on in the bullet below it: "Place the blocks on:\n- G, H and I"
     # (after a preposition the colon only ends the line)
     bullet = r"[ \t]*\n\s*(?:[-*•·]|\d[.)])\s+"
     instruction = re.sub(rf"(?m)\b(on|onto|in|into|to|at)\s*:{bullet}", r"\1 ", instruction)
     instruction = re.sub(rf"(?m):{bullet}", ": ", instruction)
     for line in instruction.splitlines():
-        text = re.sub(r"(^\s*|[.;!?]\s+)(\d)\.\s", r"\1\2) ", line)
+        text = re.sub(r"(^\s*|[.;!?:]\s+)(\d)\.\s", r"\1\2) ", line)
         text = re.sub(r"\b[iI]\.\s?[eE]\.", "that is", text)
         text = re.sub(r"\b(opp|approx|resp)\.(?=\s)", r"\1", text, flags=re.IGNORECASE)  # "opp. side"
         out += [re.sub(r"^\s*[-*•·]\s+", "", s) for s in re.split(r"[.;!?]+(?:\s|$)", text)]
     return [s for s in out if s.strip()]
+
+
+_BLOCKS_FIELD = (
+    r"\s*(?:[-*•·]\s+)?(?:blocks?|objects?|pillars?|items?|pieces?|cubes?|what)\s*:\s*(?P<blocks>[^\n:.;]+?)\s*"
+)
+_PLACES_FIELD = (
+    r"\s*(?:[-*•·]\s+)?(?:targets?|destinations?|(?:goal|target|placement)\s+(?:regions?|areas?)|target\s+area|"
+    r"where(?:\s+to)?|regions?|places?)\s*:\s*(?P<places>[^\n:.;]+?)\s*"
+)
+_FIELD_BREAK = r"(?:[.;]?[ \t]*\n|[.;][ \t]+)"  # a line break or a sentence's end between two fields
+_FIELD_END = r"(?=[.;!?]?[ \t]*(?:\n|$)|[.;!?][ \t])"
+_RECORDS = tuple(
+    re.compile(rf"(?im)(?P<start>^|[.;!?][ \t]+){first}{_FIELD_BREAK}{second}{_FIELD_END}")
+    for first, second in ((_BLOCKS_FIELD, _PLACES_FIELD), (_PLACES_FIELD, _BLOCKS_FIELD))
+)
+
+
+def _record_as_goal(fields: re.Match[str]) -> str:
+    return f"{fields['start']}{_listed(fields['blocks'])} to {fields['places']}"
 
 
 def _listed(items: str) -> str:
@@ -196,6 +217,24 @@ def _said_before(new: list[Clause], clauses: list[Clause]) -> list[Clause]:
         if c.marker or d.marker or moved_apart or (c.anytime, c.leader) != (d.anytime, d.leader):
             raise HTTError(f"'{c.text}' gives again a goal said before ('{d.text}') otherwise: which holds?")
     return out
+
+
+def _distributed(clauses: list[Clause], notes: list[str]) -> list[Clause]:
+    """'red -> G, H or I; blue -> G, H or I; yellow -> G, H or I; one per region': goals of one block each,
+    all to one set of as many regions as there are goals, under the one-block rule, ask for the blocks
+    there at once, as 'the three blocks to G, H and I, one per region' does: one clause."""
+    regions = {g.regions for c in clauses for g in c.goals if g.place.kind == "regions"}
+    plain = all(len(c.goals) == 1 and not (c.marker or c.anytime or c.together or c.leader) for c in clauses)
+    ruled = any(n.startswith("one block per region") for n in notes)
+    blocks = {c.goals[0].block for c in clauses}
+    if not (plain and ruled and len(regions) == 1 and len(clauses) > 1):
+        return clauses
+    if not all(c.goals[0].place.kind == "regions" for c in clauses):
+        return clauses
+    if not len(blocks) == len(clauses) == len(next(iter(regions))):
+        return clauses
+    text = "; ".join(c.text for c in clauses)
+    return [Clause(goals=[c.goals[0] for c in clauses], text=text, together=True)]
 
 
 def _refuse_leftovers(m: Marked, sentence: str) -> None:

@@ -4,6 +4,8 @@
 General steps, each removing only words that carry no block, place, arm, count, negation, order or
 time (a word that might carry one is left for the reader, which reads it or refuses naming it):
 
+- contractions spelled out ("shan't" before the general "n't"); a time said before a scene statement
+  ("right now, the red block is on g") kept as "currently" for the scene reader, not dropped as fillers;
 - discourse fillers and hedges: hesitations ("um", "uh", "er"), "you know", "basically", "yeah",
   interjections that open a clause or tag its end ("okay so", "right,", "..., alright?", "oh and"),
   "just" before a verb ("just drop them", never "just the red block"), a hedge on the whole request
@@ -35,6 +37,7 @@ from nl2hltl2plan.language.handover_words import GERUND_VERBS, NEGATED_GERUNDS, 
 _CONTRACTIONS = (
     (r"\bcan\s*'\s*t\b", "cannot"),
     (r"\bwon\s*'\s*t\b", "will not"),
+    (r"\bshan\s*'\s*t\b", "shall not"),  # before the rule below, which would leave "sha not"
     (r"n\s*'\s*t\b", " not"),
     (r"\b(you|we|they|i)\s*'\s*ll\b", r"\1 will"),
     (r"\b(you|we|they)\s*'\s*re\b", r"\1 are"),
@@ -57,8 +60,17 @@ _OPEN = r"(?:and|or|the|a|to|on|onto|in|into|of|at|is|are|be|,)"
 _GERUNDS = GERUND_VERBS | NEGATED_GERUNDS | {"returning": "return"}  # the one the tables lack
 _VERB_OR_RULE = rf"(?:{VERB}|exchange|swap|fill|touch|keep|leave|do\s+not|no|nothing|never|make|be)\b"
 
+# a time said before a scene statement ("right now, the red block is on g"): kept for the scene reader as
+# "currently" (else "right" and "now" are dropped as interjections and the statement reads as a goal)
+_SCENE_TIME = (
+    r"(^|,)\s*(?:right\s+now|just\s+now|now|at\s+(?:the|this)\s+(?:moment|point|time)|at\s+present|presently|"
+    r"currently|as\s+(?:things|it)\s+stands?|as\s+of\s+(?:now|right\s+now)|for\s+now)\s*,?\s*"
+    r"(?=[^,;]*?\b(?:is|are|sits?|sitting|lies?|lying|stands?|standing|rests?|resting)\s+(?:(?:now|currently|still)\s+)?"
+    r"(?:on|in|at)\b)"
+)
 # fillers and hedges that carry no meaning, each only in the place where it cannot carry one
 _FILLERS: tuple[tuple[str, str], ...] = (
+    (_SCENE_TIME, r"\1 currently "),
     (rf"\b{_HESITATION}\b", " , ~ , "),  # a soft correction marker: what follows may restate what went before
     (r"(^|,)\s*you\s+know\s*(?=,|$)", r"\1"),
     (r"\b(?:basically|literally|honestly|yeah|yep|yup)\b", " , "),
@@ -236,6 +248,8 @@ _TOPIC = (
 )
 _DISLOCATED = re.compile(
     rf"(^|[,;:])\s*(?P<conj>and\s+)?(?P<topic>{_TOPIC})\s*,\s*(?!(?:and|or|but|then|so)\b)"
+    # (not a count set off after the noun: "the blocks, all three of them, go ...")
+    r"(?!\s*(?:all\s+(?:\w+\s+)?|both\s+|the\s+\w+\s+|every\s+one\s+)of\s+them\b)"
     r"(?P<before>[^,;:]*?)\b(?P<pro>they|them|it|that\s+one|th(?:o|e)se(?:\s+ones)?|their\s+(?:positions|places))\b"
 )
 

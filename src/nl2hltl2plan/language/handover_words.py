@@ -47,7 +47,8 @@ DROP = (
 PERIOD_WORDS = (
     r"(?:(?:during|in)\s+(?:this|that|the\s+same)\s+(?:whole\s+|entire\s+)?(?:period|time)|in\s+the\s+meantime|meanwhile|"
     r"while\s+doing\s+(?:so|this|that|it)|while\s+(?:this|that)\s+(?:happens|is\s+happening|goes\s+on|is\s+going\s+on)|"
-    r"at\s+the\s+same\s+time|in\s+the\s+process|all\s+the\s+while|the\s+whole\s+time|in\s+the\s+interim|"
+    r"during\s+(?:all\s+)?(?:this|that)(?=\s*(?:$|,|;))|at\s+the\s+same\s+time|"
+    r"in\s+the\s+process|all\s+the\s+while|the\s+whole\s+time|in\s+the\s+interim|"
     r"throughout(?:\s+(?:this|the|that)\s+(?:process|period|time))?|until\s+then|along\s+the\s+way|in\s+between|"
     # "until you are done", "till done": until the goals are met (a plan ends when its last goal is met)
     r"until\s+(?:(?:you|we|they)\s+(?:are|have\s+finished)\s+)?(?:all\s+)?(?:done|finished)|"
@@ -77,7 +78,7 @@ AFTER_ALL = (
     # "when the transfer is complete", "when all finish" (non-native): the work said so far is done
     rf"(?:once|when|after)\s+(?:the|this|that)\s+(?:transfer|task|job|work|moving|transport)\s+(?:is|has\s+been)\s+{DONE_STATE}|"
     r"(?:once|when|after)\s+(?:all|everything)\s+(?:is\s+|are\s+|has\s+|have\s+)?(?:finish(?:ed)?|done|complete(?:d)?)|"
-    r"as\s+(?:a|the)\s+(?:final|last)\s+step|at\s+last|after\s+all(?=\s*,)|(?:up)?on\s+(?:completion|finishing)(?:\s+of\s+(?:this|these|that|the\s+above|all\s+(?:of\s+)?(?:this|these|that)))?)"
+    r"as\s+(?:a|the)\s+(?:final|last)\s+step|to\s+(?:finish|end|conclude|wrap\s+up|close)(?:\s+(?:off|up))?(?=\s*,)|at\s+last|after\s+all(?=\s*,)|(?:up)?on\s+(?:completion|finishing)(?:\s+of\s+(?:this|these|that|the\s+above|all\s+(?:of\s+)?(?:this|these|that)))?)"
 )
 THEN = (
     r"(?:then|after\s+that|afterwards?|next|subsequently|later|and\s+then|(?:and\s+)?from\s+there|"
@@ -92,8 +93,23 @@ APPOSITION = (
 )
 LEAD = r"\s*,?\s*(?:you\s+should\s+|please\s+|we\s+should\s+)?"
 # a heading's label of a rule ("Rule:", "Constraint:"), and the step number a heading may follow ("2)")
-_RULE_LABEL = r"(?:order|ordering|sequence|constraints?|rules?|requirements?|restrictions?|conditions?)"
-_STEP_NUMBER = r"\s*(?:step\s+\w+\s*:?|\d\s*[):]|\(\s*\d\s*\))?\s*"
+_RULE_LABEL = (
+    r"(?:(?:sequence|sequencing|order|ordering|timing|safety|placement|additional|extra|main|key|special)\s+)?"
+    r"(?:order|ordering|sequence|constraints?|rules?|requirements?|restrictions?|conditions?|caution|warning|"
+    r"important|nb|notice|attention|reminder)"
+)
+# an enumerated step: "Step 2", "Stage two", "Second step", "2)", "(2)", "(b)", "b)" (a list's letters a-d,
+# never a region's); the first of them, and the ones after it
+_STEP_WORD = r"(?:step|stage|phase|part)"
+FIRST_STEP = (
+    rf"(?:{_STEP_WORD}\s+(?:1|one)\b\s*[:,-]?|(?:the\s+)?first\s+(?:{_STEP_WORD}|point|thing)\b\s*[:,-]?|1\s*[):-]|"
+    r"\(\s*1\s*\)|\(\s*a\s*\)|a\s*\))"
+)
+LATER_STEP = (
+    rf"(?:{_STEP_WORD}\s+(?:[2-9]|two|three|four|five)\b\s*[:,-]?|(?:the\s+)?(?:second|third|fourth|fifth|next)\s+"
+    rf"(?:{_STEP_WORD}|point|thing)\b\s*[:,-]?|[2-9]\s*[):-]|\(\s*[2-9]\s*\)|\(\s*[b-d]\s*\)|[b-d]\s*\))"
+)
+STEP_NUMBER = rf"\s*(?:{FIRST_STEP}|{LATER_STEP}|{_STEP_WORD}\s+\w+\s*[:-]?)?\s*"
 
 # Rewrites applied to the lower-cased sentence before any phrase is read: each maps a variant onto the
 # form the patterns read and changes no meaning ("prior to" -> "before", "whilst" -> "while").
@@ -102,7 +118,8 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"^\s*(?:your|the|my)\s+(?:job|task|goal|mission|assignment)\s*(?:is\s+to\b|:)", "please"),
     (r"(?<=s)'(?=\s|$)", ""),  # the blocks' positions -> the blocks positions
     (r"\bwhilst\b", "while"),
-    (r"\bshan\s*'\s*t\b", "shall not"),
+    # before "it" is read as a block: "while you're at it" is the period of the goals
+    (r"\bwhile\s+(?:you|we)\s+are\s+at\s+it\b", "meanwhile"),
     (r"\bamongst\b", "among"),
     (r"\b(?:i|we)\s*would\s+like\s+(?:you\s+)?to\b", "please"),
     (r"\b(?:i|we)\s+(?:want|need)\s+you\s+to\b", "please"),
@@ -132,18 +149,18 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\s*,?\s*\bwith\s+the\s+(?:rule|condition|constraint|requirement|restriction)\s+that\b", ","),
     (r"\bin\s+addition(?:\s+to\s+(?:that|this))?\b", " "),
     # a heading, also after a step's number: "Rule: ...", "2) Constraint: ...", "Goals:"
-    (rf"^({_STEP_NUMBER}){_RULE_LABEL}\s*:", r"\1"),
+    (rf"^({STEP_NUMBER}){_RULE_LABEL}\s*:", r"\1"),
     # a completion marker as a heading: "when the transfer is done: yellow back to G"
     (rf"^\s*({AFTER_ALL})\s*:", r"\1 ,"),
     # a sentence that goes on from the one before: "And the yellow block to the opposite side whenever."
     (r"^\s*and\s*,?\s+", " "),
     # a rule's label after a comma, in a compressed heading: "Goal: ..., constraint: red before blue"
     (rf",\s*{_RULE_LABEL}\s*:", ","),
-    (rf"^({_STEP_NUMBER})(?:objectives?|goals?|tasks?|aims?|missions?|instructions?)\s*:", r"\1 please"),
+    (rf"^({STEP_NUMBER})(?:objectives?|goals?|tasks?|aims?|missions?|instructions?)\s*:", r"\1 please"),
     # casual openers and closers: "ok so ...", "... pls", "thanks"
     (r"^\s*(?:(?:ok(?:ay)?|alright|right|so|well|hi|hello|hey)\b\s*,?\s*)+", " "),
     (r"\b(?:pls|plz|thx|thanks|thank\s+you)\b", "please"),
-    (r"\btill\b", "until"),
+    (r"\b(?:till|til)\b", "until"),
     (r"\b([a-z]+)\s+s\s+been\b", r"\1 has been"),  # "till red's been touched"
     (r"\b(?:any\s+)?(?:stuff|things)\b(?=\s+(?:on|in|onto|into)\b)", "anything"),
     (
@@ -186,7 +203,6 @@ REWRITES: tuple[tuple[str, str], ...] = (
         " ",
     ),
     (r"^\s*(?:two|three|a\s+few)\s+things\s*:", " "),
-    (r"^\s*here\s*(?:s|is)\s+(?:the|my|our)\s+(?:idea|plan|deal|thing)\s*:", " "),
     (r"\b(?:somebody|someone|anybody|anyone)\b", "an arm"),  # "until somebody has touched the red block"
     # narrative verbs of moving: "makes a stop at I", "moves on to G", "takes the blue block's place"
     (r"\b(?:makes?|making)\s+a\s+stop\s+(?:at|on|in)\b", "goes to"),
@@ -337,9 +353,10 @@ REWRITES: tuple[tuple[str, str], ...] = (
         " ",
     ),
     (r"\band\s+(?:because|since)\s+", "and "),
-    (r"^\s*(?:steps|procedure|instructions|plan|to\s+do)\s*:\s*", " "),
+    # a rule's label with its period: "Restriction for the duration: F, G and H remain empty"
+    (rf"^\s*{_RULE_LABEL}\s+({PERIOD_WORDS})\s*:\s*(.+)$", r"\2 \1"),
     # a reason clause: read as a clause of the instruction ("because regions F, G and H must stay clear, ...")
-    (r"^(\s*(?:step\s+\w+\s*[:-]?|\d\s*[):-]|\(\s*\d\s*\))?\s*)(?:because|since)\s+", r"\1 "),
+    (rf"^({STEP_NUMBER})(?:because|since)\s+", r"\1 "),
     (r"\s*,\s*(?:because|since)\s+", ", and "),
     (r"\s*,\s*so\s+(?!that\b|as\b|long\b|far\b|on\b)", ", "),
     (r"\s*,?\s*(?:since|because|as)\s+(?:the|their)\s+order\s+does\s+not\s+matter\b", " in any order"),
@@ -408,15 +425,21 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\b(please|to)\s+have\s+(?=(?:the|all|both|each|every)\b)", r"\1 get "),
     # a numbered step: the first, or one after the step before
     # (a comma after it, so that a step without a verb reads as "First, yellow block to I")
-    (r"^\s*(?:step\s+(?:1|one)\s*[:-]?|1\s*[):-]|\(\s*1\s*\))\s*", "first , "),
-    (r"^\s*(?:step\s+(?:[2-9]|two|three|four|five)\s*[:-]?|[2-9]\s*[):-]|\(\s*[2-9]\s*\))\s*", "then , "),
+    (rf"^\s*{FIRST_STEP}\s*", "first , "),
+    (rf"^\s*{LATER_STEP}\s*", "then , "),
+    # a later step inside the sentence: "first step, put yellow on I, second step, put it on G"
+    (
+        rf",\s*(?:{_STEP_WORD}\s+(?:[2-9]|two|three|four|five)|(?:second|third|next)\s+{_STEP_WORD})\b\s*[:,-]?",
+        ", then , ",
+    ),
     (r"^\s*(?:second(?:ly)?|third(?:ly)?|fourth(?:ly)?)\s*[:,]", "then "),
     (r"^\s*(first|then)\s*,?\s*\1\b\s*,?", r"\1 "),  # "2) Then move it ...": the step's "then" said twice
     # a heading that gives the time of what follows: "Any time: red and blue blocks to any empty region"
     (r"^\s*(?:at\s+)?any\s+time\s*:", "at any time ,"),
     (r"\b(finally|lastly|then|next|afterwards|first)\s*:", r"\1 ,"),  # "Finally: yellow -> G"
     (
-        r"\b(?:remember|be\s+(?:sure|careful)|make\s+sure|do\s+not\s+forget|note|keep\s+in\s+mind)\s+(?:to|that)\b",
+        r"\b(?:(?:remember|be\s+(?:sure|careful)|make\s+sure|do\s+not\s+forget|note|keep\s+in\s+mind)\s+(?:to|that)|"
+        r"(?:verify|check|confirm)\s+that)\b",
         " ",
     ),
     (r"\bprecedes?\b", "comes before"),

@@ -1,0 +1,81 @@
+"""Writers' registers beyond the plain command, rewritten onto the forms the handover reader reads
+(`handover_phrases.normalise` applies `REGISTERS` to the lower-cased sentence, after the frame and before
+the word tables' `REWRITES`). Each rewrite changes no meaning:
+
+- academic: the goal as a noun ("the objective is the transfer of X to P" -> "transfer X to P", "the
+  relocation / movement of" -> "move", "placements on R are prohibited" -> "nothing may be placed on R",
+  "an arbitrary empty region", "are each to be moved");
+- narrative: the arms as the subject of a placing verb ("the arms (will) carry the blocks ..."), "before /
+  until you touch Y" (before Y is touched), "while you do it", "somewhere along the way" (at any time),
+  "..., while regions F, G and H remain empty" (a rule that holds meanwhile), "leaving X untouched";
+- telegraphic and bulleted: a verbless step after "first" ("first yellow to region i then region g"),
+  "then region G", "three objects, three regions: G, H and I" (the regions' count is still checked),
+  the places before what may not go there ("F, G, H: nothing placed"), a pair before its exchange ("red
+  and blue: swap places");
+- emphasis: "no exceptions".
+"""
+
+from __future__ import annotations
+
+import re
+
+from nl2hltl2plan.language.handover_words import SWAP
+
+_BLOCK = r"(?:the\s+)?(?:red|blue|yellow)(?:\s+(?:block|one|cube))?"
+_LETTERS = r"[e-j](?:\s*(?:,|and|or)\s*[e-j])*"
+
+_RULES: tuple[tuple[str, str], ...] = (
+    # academic: the goal as a noun
+    (r"^\s*the\s+(?:objective|aim|purpose|goal)\s+is\s+(?:that\b|the\s+(?=\w+\s+of\b))", " "),
+    (r"\b(?:the\s+)?transfer\s+of\s+(?=(?:the|all|both|each|every)\b)", "transfer "),
+    (r"\b(?:the\s+)?(?:relocation|movement)\s+of\s+(?=(?:the|all|both|each|every)\b)", "move "),
+    (r"\ban?\s+arbitrary\s+(?=(?:empty|free|unoccupied)\s)", "any "),
+    (r"\b(?:is|are)\s+(each|all|both)\s+to\s+be\b", r"must \1 be"),
+    (
+        r"\b(?:any\s+)?placements?\s+((?:on|in|onto)\s+[^,;]+?)\s+(?:are|is)\s+"
+        r"(?:prohibited|forbidden|not\s+allowed|not\s+permitted|banned)\b",
+        r"nothing may be placed \1",
+    ),
+    # narrative
+    (
+        r"\b(?:the\s+)?(?:robot\s+)?(?:arms|robots)\s+(?:will\s+|shall\s+|should\s+|must\s+)?"
+        r"(?=(?:carry|move|take|put|place|bring|transfer|set|deliver|relocate|shift)\b)",
+        " ",
+    ),
+    (
+        r"\b(before|until)\s+(?:you|we)\s+(?:have\s+)?(?:touch|touched|pick\s+up|picked\s+up|grab|grabbed)\b",
+        r"\1 touching",
+    ),
+    # (before "it" is read as a block)
+    (r"\b(while\s+(?:you|we|they)\s+(?:are\s+)?(?:do|doing|perform|performing))\s+it\b", r"\1 this"),
+    (r"\b(?:somewhere|at\s+some\s+point)\s+along\s+the\s+way\b", "at any time"),
+    (
+        rf",\s*while\s+(?=(?:regions?\s+)?{_LETTERS}\s+(?:remain|stay|are\s+kept)\s+"
+        r"(?:empty|clear|free|unoccupied|vacant)\b)",
+        ", ",
+    ),
+    (rf"\b(?:leaving|leave|keeping|keep)\s+({_BLOCK})\s+untouched\b", r"\1 must not be touched"),
+    # telegraphic and bulleted
+    (rf"(^|,)\s*(first|then|next|finally)\s+(?={_BLOCK}\s+(?:to|on|onto|in|into)\s)", r"\1 \2 , "),
+    (r"\bthen\s+(?=regions?\s+[e-j]\b)", "then to "),
+    (
+        r"^\s*((?:the\s+)?(?:two|three|four|\d)\s+(?:blocks|objects|pillars|items|cubes|pieces))\s*,\s*"
+        r"(?=(?:the\s+)?(?:two|three|four|\d)\s+(?:(?:goal|target)\s+)?regions\s*:)",
+        r"put \1 on ",
+    ),
+    (
+        rf"^\s*((?:regions?\s+)?{_LETTERS})\s*:\s*(?:nothing|no\s+(?:objects?|blocks?))"
+        r"(?:\s+(?:(?:is|are|gets?|may\s+be|can\s+be)\s+)?(?:placed|put|dropped|allowed|goes))?\b",
+        r"nothing on \1",
+    ),
+    (
+        r"^\s*((?:the\s+)?(?:red|blue|yellow)\s+(?:and|&)\s+(?:the\s+)?(?:red|blue|yellow)(?:\s+(?:blocks|ones))?)\s*:\s*"
+        rf"{SWAP}\s+(?:(?:their|the)\s+)?(?:places|positions|spots)\b",
+        r"swap \1",
+    ),
+    # emphasis
+    (r"\s*,?\s*\b(?:no\s+exceptions|without\s+exception)\b", " "),
+)
+
+# compiled once: with the reader's other tables they are more than `re`'s cache holds
+REGISTERS = tuple((re.compile(pattern), replacement) for pattern, replacement in _RULES)
