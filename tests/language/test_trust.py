@@ -84,6 +84,9 @@ def test_back_with_no_place_and_repeats_are_unread():
     # "back" to a named place, or to where the sentence says the thing came from
     assert account("put the laptop back on the sofa", laptop, []) == []
     assert account("take the laptop from the sofa and put it back", laptop, []) == []
+    cups = [task("place_two", "Cup", "DishwasherUpperRack", id="A", count=2)]
+    said = account("put the cups in the upper rack but leave one out", cups, [])
+    assert [(u.words, u.category) for u in said] == [("leave one out", "negation")]
 
 
 def test_counts_and_cycles_are_input_errors():

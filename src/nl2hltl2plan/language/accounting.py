@@ -311,6 +311,7 @@ def _invented_kinds(
 
 # "bring it back", "then back again": to where it was, which no base task names; "three times"
 _RETURN = re.compile(r"\bback(?: again)?\b(?=\s*(?:$|[.,;!?)]|(?:and|then|again|afterwards|later|here)\b))")
+_LEFT_OUT = re.compile(r"\bleave (?:\w+ ){0,3}out\b(?! of)")  # "leave one out": an exception, as "except one"
 _SOURCE = re.compile(r"\b(?:from|out of|off)\b")
 _TIMES = re.compile(
     r"\b(?:\d+|two|three|four|five|six|seven|eight|nine|ten|several|many|multiple|a few) times\b"
@@ -326,6 +327,7 @@ def _returns_and_repeats(instruction: str) -> list[Unread]:
         for m in _RETURN.finditer(lowered)
         if not _SOURCE.search(lowered, sentence_start(instruction, m.start()), m.start())
     ]
+    out += [Unread(m.group(0), "negation", NO_CONSTRAINT) for m in _LEFT_OUT.finditer(lowered)]
     return out + [
         Unread(m.group(0), "count", "no base task is done more than once: say each time as its own task")
         for m in _TIMES.finditer(lowered)
