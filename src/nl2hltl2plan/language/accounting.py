@@ -101,6 +101,7 @@ def account(
     out += landmark_destinations(mentions, toks, parse)
     out += _invented_kinds(toks, mentions, parse)
     out += _treated_after_placing(instruction, mentions, parse)
+    out += _closed_after_placing(instruction, mentions, parse)
     out += _returns_and_repeats(instruction)
     out += _words(instruction, toks, in_mention, mentions, parse, instances, scene)
     out += unordered_steps(
@@ -353,6 +354,22 @@ def _treated_after_placing(instruction: str, mentions: list[Mention], parse: Par
                 why = f"task {t.id}'s treatment comes before its placing"
                 out.append(Unread(then.group(0), "order", why))
     return out
+
+
+def _closed_after_placing(instruction: str, mentions: list[Mention], parse: ParseUsage) -> list[Unread]:
+    """A placing task leaves its receptacle open: "put the knife in the drawer and close it" is not done
+    unless a task closes it."""
+    places = {r for t in parse.tasks for r in t.receptacle or ()}
+    first = min((m.char_end for m in mentions if set(m.entry.types) & places), default=None)
+    if first is None or "closed" in parse.states:
+        return []
+    return [
+        Unread(shut.group(0), "action", "no base task closes it: the plan leaves it open")
+        for shut in _CLOSE.finditer(instruction.lower(), first)
+    ]
+
+
+_CLOSE = re.compile(r"\b(?:close|shut)\b(?! (?:to|by)\b)")
 
 
 _WHERE_IT_IS = frozenset({"is", "are", "was", "were", "sits", "sitting", "lies", "lying", "stays", "'s"})
