@@ -72,7 +72,8 @@ def test_a_treatment_said_after_the_placing_is_not_the_task():
     knife = [task("place", "Knife", "Drawer", id="A")]
     said = account("put the knife in the drawer and close it", knife, [])
     assert [(u.words, u.category) for u in said] == [("close", "action")]
-    assert account("put the knife in the drawer close to the stove", knife, []) == []
+    near = account("put the knife in the drawer close to the stove", knife, [])
+    assert "close" not in [u.words for u in near]
     # the usual order, and cooling in the fridge that is also the destination
     assert account("slice the tomato, then put it in the fridge", [sliced], []) == []
     cooled = task("cool_place", "Apple", "Fridge", id="A")
