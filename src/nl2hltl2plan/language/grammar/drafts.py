@@ -11,6 +11,7 @@ from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.clauses import Clause, expand_gapping, split_clauses
 from nl2hltl2plan.language.grammar.draft_tasks import Draft, TaskBuilder, Unit
 from nl2hltl2plan.language.grammar.frames import (
+    APPLIANCE_OF,
     IN_SENTENCE,
     OF_ALL,
     Frame,
@@ -23,6 +24,7 @@ from nl2hltl2plan.language.grammar.frames import (
 )
 from nl2hltl2plan.language.grammar.phrases import NP, tokens
 from nl2hltl2plan.language.grammar.sentences import Sentence
+from nl2hltl2plan.language.grammar.subordinate import treatment_after
 
 
 @dataclass
@@ -80,6 +82,12 @@ class DraftBuilder:
 
     def _add_clause(self, clause: Clause, st: _SentenceState) -> None:
         """One clause -> its frame; its items continue the last draft or start new ones (one unit)."""
+        treated = treatment_after(clause.text) if clause.joiner == "after" and st.drafts else None
+        if treated is not None:
+            # "put the tomato in the fridge after heating it in the microwave": the state of the task before
+            # (its appliance is where that state is made, no destination)
+            self.out.drafts[st.drafts[-1]].frames.append((treated, Item(treated.items[0].obj)))
+            return
         fr = parse_frame(clause.text, st.sentence.offset + clause.start, clause.joiner)
         if fr.cls not in {"none", "other"}:
             self.last_verb = clause.text.split()[0]
@@ -416,9 +424,6 @@ def _restates(fr: Frame, it: Item) -> bool:
     if any(p in G.DEST_PREPS and np.is_receptacle() for p, np in it.pps) and fr.cls != "pick":
         return True
     return _indefinite(o)
-
-
-APPLIANCE_OF = {"heat": "Microwave", "cool": "Fridge", "clean": "SinkBasin"}
 
 
 def _in_its_appliance(d: Draft) -> bool:

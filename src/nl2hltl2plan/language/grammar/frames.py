@@ -31,6 +31,8 @@ class Frame:
     choice: bool = False  # objects joined by "or" ("the apple or the tomato"): which one is not said
 
 
+# where each treatment is done ("heat the potato in the microwave")
+APPLIANCE_OF = {"heat": "Microwave", "cool": "Fridge", "clean": "SinkBasin"}
 SEQ_WORDS = {"then", "finally", "lastly", "afterwards", "afterward", "later"}  # not "next": "next to"
 IN_SENTENCE = "in sentence"  # a "finally" that joins clauses of one sentence
 OF_ALL = "of all"  # a "last" / "at the end" that ends a one-task sentence: after every other task

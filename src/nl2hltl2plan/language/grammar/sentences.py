@@ -8,6 +8,7 @@ from dataclasses import dataclass, field
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.everyday import everyday
 from nl2hltl2plan.language.grammar.phrases import tokens
+from nl2hltl2plan.language.grammar.subordinate import treated_before, treatment_of_it
 from nl2hltl2plan.language.grounding import find_mentions, sentence_start
 
 
@@ -104,6 +105,9 @@ def strip_trailing(body: str) -> tuple[list[tuple[str, str]], str]:
             m = pat.search(body)
             # "Y after X-ing Z, and then W": the reference ends before "then" (no trailing reference)
             if m and kind == "ref" and re.search(r"\bthen\b", m.group("ref"), re.I):
+                continue
+            # "Y after heating it in the microwave": the treatment of Y's own object, no reference
+            if m and kind == "ref" and m.group("rel").lower() == "after" and treatment_of_it(m.group("ref")):
                 continue
             if m and m.start() > 0:
                 if kind == "ref":
@@ -262,9 +266,10 @@ _THEN_INSIDE = re.compile(
     r")\s*,?\s+(?=[a-z])",
     re.IGNORECASE,
 )
-# "Y when you're done putting X in A": what is done is named, a reference ("Y after putting X in A")
+# "Y when you're done putting X in A", "Y when done heating it": what is done is named, a reference ("Y
+# after putting X in A")
 _DONE_GERUND = re.compile(
-    r"\b(after|once|when)\s+you(?:'re|\s+are|'ve|\s+have)?\s+(?:done|finished|through)\s+(?:with\s+)?"
+    r"\b(after|once|when)\s+(?:you(?:'re|\s+are|'ve|\s+have)?\s+)?(?:done|finished|through)\s+(?:with\s+)?"
     r"(?=[a-z]+ing\b)",
     re.IGNORECASE,
 )
@@ -324,6 +329,7 @@ def normalize(text: str) -> str:
     text = _FOLLOWED_TO.sub(r" and finally \1", text)
     text = _LAST_ADVERB.sub(r"\1lastly ", text)
     text = _ONE_AFTER_THE_OTHER.sub(", in that order", text)
+    text = treated_before(text)  # before `_DONE_GERUND`: "when done heating it" is no reference
     text = _DONE_GERUND.sub(r"\1 ", text)
     text = _THEN_INSIDE.sub(", then ", text)
     text = _DONE_WITH.sub(lambda m: _as_cased("after ", m[1]), text)
