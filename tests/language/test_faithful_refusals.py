@@ -72,3 +72,34 @@ def test_a_treatment_at_another_place_is_not_the_tasks_state():
     not the potato task's state (the re-reader may take them as a task of their own)."""
     tasks, _, _ = read("Set the potato on the counter once you have warmed it up on the stove.")
     assert "heat_place Potato -> CounterTop" not in tasks
+
+
+# ----- a knife listed with a slice in a container's content is the tool that cut it -----------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Carry a bowl with an apple slice and a knife in it to the counter.",
+        "Set a bowl holding a knife and a slice of apple on the counter.",
+    ],
+)
+def test_knife_beside_a_slice_in_a_container_is_the_tool(text):
+    tasks, _, unread = read(text)
+    assert tasks == ["place_in_container Apple(sliced) in Bowl -> CounterTop"] and not unread
+
+
+def test_knife_beside_a_whole_thing_is_not_taken_for_a_tool():
+    """Near miss: with no slice, nothing says the knife cut the apple (the apple is not its content)."""
+    tasks, _, _ = read("Carry a bowl with an apple and a knife in it to the counter.")
+    assert not any("Apple" in t and "sliced" in t for t in tasks)
+
+
+# ----- "the cabinet closest to the stove": the stove is a landmark, not the destination ---------------------
+def test_closest_to_names_a_landmark():
+    tasks, _, _ = read("Put the ladle in the drawer closest to the stove.")
+    assert tasks == ["place Ladle -> Drawer"]
+
+
+def test_only_a_landmark_is_no_destination():
+    """Near miss: "closest to the microwave" says where near, not in what: no task goes into it."""
+    tasks, _, unread = read("Put the ladle closest to the microwave.")
+    assert not any("Microwave" in t for t in tasks) and unread

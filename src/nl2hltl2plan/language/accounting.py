@@ -34,7 +34,6 @@ from nl2hltl2plan.language.content_words import (
     verb_places,
 )
 from nl2hltl2plan.language.grammar.everyday import everyday
-from nl2hltl2plan.language.grammar.subordinate import treatment_connectives
 from nl2hltl2plan.language.grounding import (
     SLICEABLE,
     Mention,
@@ -532,11 +531,10 @@ def _orders(toks: list[tuple[str, int, int]], in_mention: set[int], parse: Parse
     ordering between them."""
     cats = [categories(w) for i, (w, _, _) in enumerate(toks) if i not in in_mention]
     plain = [w for w, _, _ in toks]
-    treated = treatment_connectives(plain)  # "Y when done heating it": a state of Y's object, no order
     words = [
         w
         for i, w in enumerate(plain)
-        if i not in in_mention | treated and "order" in categories(w) and not _not_a_step(plain, i)
+        if i not in in_mention and "order" in categories(w) and not _not_a_step(plain, i)
     ]
     text = " ".join(plain)
     words += [p for p in ("in that order", "in this order") if f" {p} " in f" {text} "]

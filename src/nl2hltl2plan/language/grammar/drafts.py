@@ -195,13 +195,33 @@ class DraftBuilder:
         def canonical(it: Item) -> str:
             return it.obj.entry.canonical if it.obj is not None and it.obj.entry is not None else ""
 
-        if not any(canonical(it) in G.SLICEABLE for it in fr.items):
-            return fr.items
-        knives = [it for it in fr.items if canonical(it) in G.KNIVES]
+        items = self._content_without_slicing_knife(fr)
+        if not any(canonical(it) in G.SLICEABLE for it in items):
+            return items
+        knives = [it for it in items if canonical(it) in G.KNIVES]
         for it in knives:
             assert it.obj is not None
             self.b.issues.append(f"{it.obj.text!r} in {fr.text!r} is read as the tool that slices")
-        return [it for it in fr.items if it not in knives]
+        return [it for it in items if it not in knives]
+
+    def _content_without_slicing_knife(self, fr: Frame) -> list[Item]:
+        """ "a pan with a tomato slice and a knife in it", "a pot containing a knife and a slice of potato":
+        a knife listed with a slice in a container's content is the tool that cut it; the slice is the
+        content (the items after the container continue its content list)."""
+        items = fr.items
+        if len(items) != 2 or items[1].obj is None or any(p in G.WITH_PREPS for p, _ in items[1].pps):
+            return items
+        holder, listed = items[0], items[1].obj
+        held = [(k, np) for k, (p, np) in enumerate(holder.pps) if p in G.WITH_PREPS]
+        if len(held) != 1:
+            return items
+        k, content = held[0]
+        knife, cut = (listed, content) if _is_knife(listed) else (content, listed)
+        if not _is_knife(knife) or cut is None or not cut.sliced or not _canonical_in(cut, G.SLICEABLE):
+            return items
+        holder.pps[k] = (holder.pps[k][0], cut)
+        self.b.issues.append(f"{knife.text!r} in {fr.text!r} is read as the tool that slices")
+        return [holder]
 
     def _group_of(self, clause: Clause, fr: Frame, st: _SentenceState) -> int:
         """The group of the clause's tasks: an elided-verb list, a heading, a list of objects; else -1."""
@@ -384,6 +404,14 @@ def joins(d: Draft, fr: Frame, it: Item) -> bool:
 
 # where an object is washed, heated, chilled: a placement there rarely ends a task of that state
 _APPLIANCE = {"clean": "SinkBasin", "heat": "Microwave", "cool": "Fridge"}
+
+
+def _canonical_in(np: NP | None, types: set[str] | frozenset[str]) -> bool:
+    return np is not None and np.entry is not None and np.entry.canonical in types
+
+
+def _is_knife(np: NP | None) -> bool:
+    return _canonical_in(np, G.KNIVES)
 
 
 def _done(d: Draft) -> bool:

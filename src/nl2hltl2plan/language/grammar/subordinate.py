@@ -4,10 +4,11 @@ it in the microwave" is one task, `heat_place Tomato -> Fridge`, not a reference
 `treated_before` (a step of `sentences.normalize`) writes such a clause as "after heating it in the
 microwave"; the sentence keeps it (no trailing reference is stripped, `treatment_of_it`), the clause
 splitter cuts it off with the joiner "after", and `drafts` gives its state to the task of the clause before
-(`treatment_after`); check 1 counts its connective as no order word (`treatment_connectives`). Only a
-treatment (heat, chill, wash, slice) of "it" or of nothing named, at no place but its own appliance, is
-read so: "after heating the apple" names another task, "after heating it on the stove" a place no
-treatment here uses (both stay references).
+(`treatment_after`). Only a treatment (heat, chill, wash, slice) of "it" or of nothing named, at no
+place but its own appliance, is read so: "after heating the apple" names another task, "after heating it
+on the stove" a place no treatment here uses (both stay references). Check 1 still takes the connective
+for an order word: in a sentence of several tasks and no order, "after" needs an order and the
+instruction is refused.
 """
 
 from __future__ import annotations
@@ -81,25 +82,3 @@ def treated_before(text: str) -> str:
         return f" after {gerund}" if gerund else m[0]
 
     return _DONE_FIRST.sub(sub, text)
-
-
-_CONNECTIVE_OPENERS = frozenset({"you", "you've", "you're", "have", "had", "are", "done", "finished", "with"})
-
-
-def treatment_connectives(words: list[str]) -> set[int]:
-    """The indices of "after" / "once" / "when" in an instruction's words (no punctuation) that open such
-    a treatment ("... when done heating it ..."): they order no tasks. The treatment ends before the next
-    verb that is no gerund ("... heating it put the apple ...")."""
-    out = set()
-    for i, w in enumerate(words):
-        if w not in {"after", "once", "when"}:
-            continue
-        j = i + 1
-        while j < len(words) and words[j] in _CONNECTIVE_OPENERS:
-            j += 1
-        k = j + 1
-        while k < len(words) and not (words[k] in G.VERBS and not words[k].endswith("ing")):
-            k += 1
-        if j < len(words) and _as_gerund(words[j], " " + " ".join(words[j + 1 : k])):
-            out.add(i)
-    return out
