@@ -103,3 +103,22 @@ def test_only_a_landmark_is_no_destination():
     """Near miss: "closest to the microwave" says where near, not in what: no task goes into it."""
     tasks, _, unread = read("Put the ladle closest to the microwave.")
     assert not any("Microwave" in t for t in tasks) and unread
+
+
+# ----- "put the plate on the table, put the box in it": "it" is the container the task moved ---------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Carry the bowl to the counter and drop the egg into it.",
+        "Pick up a bowl, set it on the counter, put an egg in it.",
+    ],
+)
+def test_putting_a_thing_into_the_moved_container(text):
+    tasks, _, unread = read(text)
+    assert tasks == ["place_in_container Egg in Bowl -> CounterTop"] and not unread
+
+
+def test_into_it_needs_a_container_that_moves():
+    """Near miss: a fork holds nothing, so "put the spoon in it" has no destination and stays refused."""
+    tasks, _, unread = read("Put the fork in the sink, put the spoon in it.")
+    assert not any("Spoon" in t for t in tasks) and unread

@@ -304,5 +304,12 @@ def puts_into(holder: NP | None, fr: Frame, it: Item) -> bool:
         and not o.pronoun
         and holder.is_movable_receptacle()
         and not o.is_movable_receptacle()
-        and same(dest_of(it, fr.cls), holder)
+        and (same(dest_of(it, fr.cls), holder) or _into_it(it))
     )
+
+
+def _into_it(it: Item) -> bool:
+    """ "put the plate on the table, put the tissue box in it": its only place is "in / on it", the
+    thing the task moved so far."""
+    places = [(p, np) for p, np in it.pps if p in G.DEST_PREPS]
+    return len(places) == 1 and places[0][0] in {"in", "into", "on", "onto", "inside"} and places[0][1].pronoun
