@@ -8,6 +8,7 @@ from __future__ import annotations
 import pytest
 
 from nl2hltl2plan.language.accounting import account
+from nl2hltl2plan.language.grammar.parser import parse_instruction as grammar_parse
 from nl2hltl2plan.language.learned.inference import parse_instruction
 from nl2hltl2plan.language.task_specs import transitive_closure
 
@@ -122,3 +123,33 @@ def test_into_it_needs_a_container_that_moves():
     """Near miss: a fork holds nothing, so "put the spoon in it" has no destination and stays refused."""
     tasks, _, unread = read("Put the fork in the sink, put the spoon in it.")
     assert not any("Spoon" in t for t in tasks) and unread
+
+
+# ----- "on the table, left of the tomato": the side of a landmark after a place says where on it -----------
+def test_side_of_a_landmark_after_a_place():
+    tasks, _, unread = read("Set a warm cup on the round table, left of the apple.")
+    assert tasks == ["heat_place Cup -> DiningTable"] and not unread
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Leave a rinsed apple on the counter, right of the bread.",
+        "Leave a rinsed apple on the counter right of the egg.",
+    ],
+)
+def test_side_of_a_landmark_in_the_grammar(text):
+    p = grammar_parse(text, KITCHEN, "kitchen")
+    assert [t.summary() for t in p.tasks] == ["clean_place Apple -> CounterTop"] and not p.unparsed
+
+
+def test_the_left_of_a_place_is_still_that_place():
+    """Near miss: "on the left of the counter" names the counter's side, the counter is the place."""
+    assert read("Leave a rinsed apple on the left of the counter.")[0] == ["clean_place Apple -> CounterTop"]
+
+
+def test_o_before_an_article_is_on():
+    """The grammar itself reads the typo (the slot model may guess such a clause, but not in a list)."""
+    p = grammar_parse("Set two mugs o the counter and a bowl in the sink.", KITCHEN, "kitchen")
+    assert [t.summary() for t in p.tasks] == ["place_two 2x Mug -> CounterTop", "place Bowl -> SinkBasin"]
+    assert not p.unparsed

@@ -312,4 +312,5 @@ def _into_it(it: Item) -> bool:
     """ "put the plate on the table, put the tissue box in it": its only place is "in / on it", the
     thing the task moved so far."""
     places = [(p, np) for p, np in it.pps if p in G.DEST_PREPS]
-    return len(places) == 1 and places[0][0] in {"in", "into", "on", "onto", "inside"} and places[0][1].pronoun
+    into = {"in", "into", "on", "onto", "inside"}
+    return len(places) == 1 and places[0][0] in into and places[0][1].pronoun

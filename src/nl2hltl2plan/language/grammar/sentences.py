@@ -233,6 +233,17 @@ _LAST_ADVERB = re.compile(
 )
 
 
+# "on the small table, left of the tomato", "on the counter right of the sink": a side of a landmark after
+# a place is where on it, "to the left of" ("on the left of the counter" is the counter's side: left as is)
+_SIDE_OF = re.compile(
+    r"\b(?P<pre>(?!(?:the|a|an|to|on|in|at)\b)[a-z]+)(?P<sep>\s*,\s*|\s+)(?P<side>left|right)\s+of\s+"
+    r"(?=(?:the|a|an)\s)",
+    re.IGNORECASE,
+)
+# "place two bottles o the toilet": "o" before an article is "on" typed without its "n"
+_O_FOR_ON = re.compile(r"(?<=[a-z] )o (?=(?:the|a|an) )", re.IGNORECASE)
+
+
 def _keeps_but_first(text: str, m: re.Match[str]) -> bool:
     """Is "but first" better left to the sentence's other order words: the sentence opens with "first" /
     "start by", or goes on with "then" / "finally" after it (the structure model reads those whole)?"""
@@ -304,6 +315,8 @@ def normalize(text: str) -> str:
     text = text.replace("\u2019", "'").replace("\u2018", "'").replace("\u201c", '"').replace("\u201d", '"')
     text = re.sub(r"(?<=[a-z])\.(?=[A-Za-z])", ". ", text)
     text = everyday(text)  # terse, spoken and need styles (issue 28)
+    text = _O_FOR_ON.sub("on ", text)
+    text = _SIDE_OF.sub(r"\g<pre>\g<sep>to the \g<side> of ", text)
     text = re.sub(r"\s*\([^)]*\)", "", text)  # parenthetical remarks: "(where the red block is now)"
     text = without_connective_to(text)
     text = _AS_SOON_AS.sub(lambda m: _as_cased("once", m[0]), text)
