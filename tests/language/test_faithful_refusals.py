@@ -153,3 +153,26 @@ def test_o_before_an_article_is_on():
     p = grammar_parse("Set two mugs o the counter and a bowl in the sink.", KITCHEN, "kitchen")
     assert [t.summary() for t in p.tasks] == ["place_two 2x Mug -> CounterTop", "place Bowl -> SinkBasin"]
     assert not p.unparsed
+
+
+# ----- "a" names another one: after "a bowl with a spoon in it" is placed, "a dirty spoon" is another one
+def test_indefinite_content_after_a_placed_container_is_another_task():
+    p = grammar_parse(
+        "Set a bowl with a spoon in it on the counter, then rinse a dirty spoon to put in the drawer.",
+        KITCHEN,
+        "kitchen",
+    )
+    assert [t.summary() for t in p.tasks] == [
+        "place_in_container Spoon in Bowl -> CounterTop", "clean_place Spoon -> Drawer",
+    ]  # fmt: skip
+    assert p.before == [("A", "B")] and not p.unparsed
+
+
+def test_the_same_content_named_again_is_no_new_task():
+    """Near miss: "the spoon" (definite) is the spoon in the bowl, no second task."""
+    p = grammar_parse(
+        "Set a bowl with a spoon in it on the counter, then rinse the spoon to put in the drawer.",
+        KITCHEN,
+        "kitchen",
+    )
+    assert len(p.tasks) == 1

@@ -387,6 +387,8 @@ def joins(d: Draft, fr: Frame, it: Item) -> bool:
         return True
     if o.sliced and o.entry is None and o.head in {"", "slice", "piece"}:
         return True
+    if _placed(d) and _indefinite(o) and _restates(fr, it):
+        return False  # "put a glass with a fork in it on the table, then wash a dirty fork": another fork
     for (
         _,
         it2,
