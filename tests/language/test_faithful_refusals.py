@@ -176,3 +176,15 @@ def test_the_same_content_named_again_is_no_new_task():
         "kitchen",
     )
     assert len(p.tasks) == 1
+
+
+# ----- "a pot a potato slice in it": a container and its content, the "with" left out ----------------------
+def test_content_in_it_without_with():
+    tasks, _, unread = read("Carry a white bowl an egg in it to the counter.")
+    assert tasks == ["place_in_container Egg in Bowl -> CounterTop"] and not unread
+
+
+def test_two_things_without_a_container_are_not_a_content():
+    """Near miss: a fork holds nothing, so "the fork the spoon in it" is no container with its content."""
+    p = grammar_parse("Put the fork the spoon in it in the sink.", KITCHEN, "kitchen")
+    assert not any(t.kind == "place_in_container" for t in p.tasks)

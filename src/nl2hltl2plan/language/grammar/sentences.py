@@ -7,7 +7,7 @@ from dataclasses import dataclass, field
 
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.everyday import everyday
-from nl2hltl2plan.language.grammar.phrases import tokens
+from nl2hltl2plan.language.grammar.phrases import match_prep, parse_np, tokens
 from nl2hltl2plan.language.grammar.subordinate import treated_before, treatment_of_it
 from nl2hltl2plan.language.grounding import find_mentions, sentence_start
 
@@ -244,6 +244,28 @@ _SIDE_OF = re.compile(
 _O_FOR_ON = re.compile(r"(?<=[a-z] )o (?=(?:the|a|an) )", re.IGNORECASE)
 
 
+# "put a metal pot a potato slice in it on the table": a container, then what is "in it", its "with" left
+# out ("a pot with a potato slice in it")
+_CONTENT_IN_IT = re.compile(
+    r"\b(?P<holder>(?:a|an|the)\s+(?:[a-z]+\s+){0,2}?[a-z]+)\s+"
+    r"(?=(?P<content>(?:a|an|the)\s+[a-z]+(?:\s+[a-z]+){0,2})\s+in\s+(?:it|them)\b)",
+    re.IGNORECASE,
+)
+
+
+def _with_left_out(m: re.Match[str]) -> str:
+    """ "a metal pot " -> "a metal pot with " where the holder names a movable container and what follows
+    is one noun phrase (no preposition, no verb) of a thing."""
+    holder, content = parse_np(m["holder"]), m["content"]
+    words = [w for w, _, _ in tokens(content)]
+    one_np = all(
+        match_prep(words, k) is None and (w not in G.VERBS or w in G.SLICE_NOUNS) for k, w in enumerate(words)
+    )
+    if holder.is_movable_receptacle() and one_np and find_mentions(content):
+        return f"{m['holder']} with "
+    return m[0]
+
+
 def _keeps_but_first(text: str, m: re.Match[str]) -> bool:
     """Is "but first" better left to the sentence's other order words: the sentence opens with "first" /
     "start by", or goes on with "then" / "finally" after it (the structure model reads those whole)?"""
@@ -317,6 +339,7 @@ def normalize(text: str) -> str:
     text = everyday(text)  # terse, spoken and need styles (issue 28)
     text = _O_FOR_ON.sub("on ", text)
     text = _SIDE_OF.sub(r"\g<pre>\g<sep>to the \g<side> of ", text)
+    text = _CONTENT_IN_IT.sub(_with_left_out, text)
     text = re.sub(r"\s*\([^)]*\)", "", text)  # parenthetical remarks: "(where the red block is now)"
     text = without_connective_to(text)
     text = _AS_SOON_AS.sub(lambda m: _as_cased("once", m[0]), text)
