@@ -188,3 +188,15 @@ def test_two_things_without_a_container_are_not_a_content():
     """Near miss: a fork holds nothing, so "the fork the spoon in it" is no container with its content."""
     p = grammar_parse("Put the fork the spoon in it in the sink.", KITCHEN, "kitchen")
     assert not any(t.kind == "place_in_container" for t in p.tasks)
+
+
+# ----- "cushion one and two": two things counted off by number are two of them -----------------------------
+def test_numbered_pair_is_two():
+    tasks, _, unread = read("Move mug one and two to the counter.")
+    assert tasks == ["place_two 2x Mug -> CounterTop"] and not unread
+
+
+def test_numbered_words_that_name_no_object_stay_unread():
+    """Near miss: "steps one and two" name no object, nothing is counted."""
+    p = grammar_parse("Do steps one and two.", KITCHEN, "kitchen")
+    assert not p.tasks and p.unparsed

@@ -266,6 +266,17 @@ def _with_left_out(m: re.Match[str]) -> str:
     return m[0]
 
 
+# "arrange cushion one and two on the couch": two things counted off by number are two of them
+_NUMBERED_PAIR = re.compile(r"\b(?P<noun>[a-z]+) (?:one|1) and (?:two|2)\b", re.IGNORECASE)
+
+
+def _two_of(m: re.Match[str]) -> str:
+    noun = m["noun"]
+    if not find_mentions(noun) or noun.lower() in G.VERBS:
+        return m[0]
+    return f"two {noun if noun.endswith('s') else noun + 's'}"
+
+
 def _keeps_but_first(text: str, m: re.Match[str]) -> bool:
     """Is "but first" better left to the sentence's other order words: the sentence opens with "first" /
     "start by", or goes on with "then" / "finally" after it (the structure model reads those whole)?"""
@@ -340,6 +351,7 @@ def normalize(text: str) -> str:
     text = _O_FOR_ON.sub("on ", text)
     text = _SIDE_OF.sub(r"\g<pre>\g<sep>to the \g<side> of ", text)
     text = _CONTENT_IN_IT.sub(_with_left_out, text)
+    text = _NUMBERED_PAIR.sub(_two_of, text)
     text = re.sub(r"\s*\([^)]*\)", "", text)  # parenthetical remarks: "(where the red block is now)"
     text = without_connective_to(text)
     text = _AS_SOON_AS.sub(lambda m: _as_cased("once", m[0]), text)
