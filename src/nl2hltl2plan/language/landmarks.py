@@ -16,6 +16,7 @@ from nl2hltl2plan.language.parse_usage import ParseUsage
 NEAR_WORDS = frozenset("near beside besides by next between behind against".split())
 _NEAR_TWO = {
     ("next", "to"), ("close", "to"), ("near", "to"), ("front", "of"), ("left", "of"), ("right", "of"),
+    ("closest", "to"), ("nearest", "to"), ("closer", "to"),
 }  # fmt: skip
 
 

@@ -13,8 +13,8 @@ from nl2hltl2plan.language.grammar.phrases import match_prep, parse_np, tokens
 def _is_verb_at(words: list[tuple[str, int, int]], i: int) -> bool:
     """Does a verb clause start at word `i` (a verb first in the sentence or after a joiner)?"""
     w = words[i][0]
-    if w not in G.VERBS:
-        return False
+    if w not in G.VERBS or (w in G.SLICE_NOUNS and words[i + 1 : i + 2] and words[i + 1][0] == "of"):
+        return False  # "a knife and slice of potato": a noun
     if i == 0:
         return True
     prev = words[i - 1][0]

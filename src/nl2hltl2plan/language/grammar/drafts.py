@@ -11,6 +11,7 @@ from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.clauses import Clause, expand_gapping, split_clauses
 from nl2hltl2plan.language.grammar.draft_tasks import Draft, TaskBuilder, Unit
 from nl2hltl2plan.language.grammar.frames import (
+    APPLIANCE_OF,
     IN_SENTENCE,
     OF_ALL,
     Frame,
@@ -23,6 +24,7 @@ from nl2hltl2plan.language.grammar.frames import (
 )
 from nl2hltl2plan.language.grammar.phrases import NP, tokens
 from nl2hltl2plan.language.grammar.sentences import Sentence
+from nl2hltl2plan.language.grammar.subordinate import treatment_after
 
 
 @dataclass
@@ -80,6 +82,12 @@ class DraftBuilder:
 
     def _add_clause(self, clause: Clause, st: _SentenceState) -> None:
         """One clause -> its frame; its items continue the last draft or start new ones (one unit)."""
+        treated = treatment_after(clause.text) if clause.joiner == "after" and st.drafts else None
+        if treated is not None:
+            # "put the tomato in the fridge after heating it in the microwave": the state of the task before
+            # (its appliance is where that state is made, no destination)
+            self.out.drafts[st.drafts[-1]].frames.append((treated, Item(treated.items[0].obj)))
+            return
         fr = parse_frame(clause.text, st.sentence.offset + clause.start, clause.joiner)
         if fr.cls not in {"none", "other"}:
             self.last_verb = clause.text.split()[0]
@@ -187,13 +195,33 @@ class DraftBuilder:
         def canonical(it: Item) -> str:
             return it.obj.entry.canonical if it.obj is not None and it.obj.entry is not None else ""
 
-        if not any(canonical(it) in G.SLICEABLE for it in fr.items):
-            return fr.items
-        knives = [it for it in fr.items if canonical(it) in G.KNIVES]
+        items = self._content_without_slicing_knife(fr)
+        if not any(canonical(it) in G.SLICEABLE for it in items):
+            return items
+        knives = [it for it in items if canonical(it) in G.KNIVES]
         for it in knives:
             assert it.obj is not None
             self.b.issues.append(f"{it.obj.text!r} in {fr.text!r} is read as the tool that slices")
-        return [it for it in fr.items if it not in knives]
+        return [it for it in items if it not in knives]
+
+    def _content_without_slicing_knife(self, fr: Frame) -> list[Item]:
+        """ "a pan with a tomato slice and a knife in it", "a pot containing a knife and a slice of potato":
+        a knife listed with a slice in a container's content is the tool that cut it; the slice is the
+        content (the items after the container continue its content list)."""
+        items = fr.items
+        if len(items) != 2 or items[1].obj is None or any(p in G.WITH_PREPS for p, _ in items[1].pps):
+            return items
+        holder, listed = items[0], items[1].obj
+        held = [(k, np) for k, (p, np) in enumerate(holder.pps) if p in G.WITH_PREPS]
+        if len(held) != 1:
+            return items
+        k, content = held[0]
+        knife, cut = (listed, content) if _is_knife(listed) else (content, listed)
+        if not _is_knife(knife) or cut is None or not cut.sliced or not _canonical_in(cut, G.SLICEABLE):
+            return items
+        holder.pps[k] = (holder.pps[k][0], cut)
+        self.b.issues.append(f"{knife.text!r} in {fr.text!r} is read as the tool that slices")
+        return [holder]
 
     def _group_of(self, clause: Clause, fr: Frame, st: _SentenceState) -> int:
         """The group of the clause's tasks: an elided-verb list, a heading, a list of objects; else -1."""
@@ -359,6 +387,8 @@ def joins(d: Draft, fr: Frame, it: Item) -> bool:
         return True
     if o.sliced and o.entry is None and o.head in {"", "slice", "piece"}:
         return True
+    if _placed(d) and _indefinite(o) and _restates(fr, it):
+        return False  # "put a glass with a fork in it on the table, then wash a dirty fork": another fork
     for (
         _,
         it2,
@@ -376,6 +406,14 @@ def joins(d: Draft, fr: Frame, it: Item) -> bool:
 
 # where an object is washed, heated, chilled: a placement there rarely ends a task of that state
 _APPLIANCE = {"clean": "SinkBasin", "heat": "Microwave", "cool": "Fridge"}
+
+
+def _canonical_in(np: NP | None, types: set[str] | frozenset[str]) -> bool:
+    return np is not None and np.entry is not None and np.entry.canonical in types
+
+
+def _is_knife(np: NP | None) -> bool:
+    return _canonical_in(np, G.KNIVES)
 
 
 def _done(d: Draft) -> bool:
@@ -416,9 +454,6 @@ def _restates(fr: Frame, it: Item) -> bool:
     if any(p in G.DEST_PREPS and np.is_receptacle() for p, np in it.pps) and fr.cls != "pick":
         return True
     return _indefinite(o)
-
-
-APPLIANCE_OF = {"heat": "Microwave", "cool": "Fridge", "clean": "SinkBasin"}
 
 
 def _in_its_appliance(d: Draft) -> bool:

@@ -31,6 +31,8 @@ class Frame:
     choice: bool = False  # objects joined by "or" ("the apple or the tomato"): which one is not said
 
 
+# where each treatment is done ("heat the potato in the microwave")
+APPLIANCE_OF = {"heat": "Microwave", "cool": "Fridge", "clean": "SinkBasin"}
 SEQ_WORDS = {"then", "finally", "lastly", "afterwards", "afterward", "later"}  # not "next": "next to"
 IN_SENTENCE = "in sentence"  # a "finally" that joins clauses of one sentence
 OF_ALL = "of all"  # a "last" / "at the end" that ends a one-task sentence: after every other task
@@ -302,5 +304,13 @@ def puts_into(holder: NP | None, fr: Frame, it: Item) -> bool:
         and not o.pronoun
         and holder.is_movable_receptacle()
         and not o.is_movable_receptacle()
-        and same(dest_of(it, fr.cls), holder)
+        and (same(dest_of(it, fr.cls), holder) or _into_it(it))
     )
+
+
+def _into_it(it: Item) -> bool:
+    """ "put the plate on the table, put the tissue box in it": its only place is "in / on it", the
+    thing the task moved so far."""
+    places = [(p, np) for p, np in it.pps if p in G.DEST_PREPS]
+    into = {"in", "into", "on", "onto", "inside"}
+    return len(places) == 1 and places[0][0] in into and places[0][1].pronoun

@@ -7,7 +7,8 @@ from dataclasses import dataclass, field
 
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.everyday import everyday
-from nl2hltl2plan.language.grammar.phrases import tokens
+from nl2hltl2plan.language.grammar.phrases import match_prep, parse_np, tokens
+from nl2hltl2plan.language.grammar.subordinate import treated_before, treatment_of_it
 from nl2hltl2plan.language.grounding import find_mentions, sentence_start
 
 
@@ -104,6 +105,9 @@ def strip_trailing(body: str) -> tuple[list[tuple[str, str]], str]:
             m = pat.search(body)
             # "Y after X-ing Z, and then W": the reference ends before "then" (no trailing reference)
             if m and kind == "ref" and re.search(r"\bthen\b", m.group("ref"), re.I):
+                continue
+            # "Y after heating it in the microwave": the treatment of Y's own object, no reference
+            if m and kind == "ref" and m.group("rel").lower() == "after" and treatment_of_it(m.group("ref")):
                 continue
             if m and m.start() > 0:
                 if kind == "ref":
@@ -229,6 +233,50 @@ _LAST_ADVERB = re.compile(
 )
 
 
+# "on the small table, left of the tomato", "on the counter right of the sink": a side of a landmark after
+# a place is where on it, "to the left of" ("on the left of the counter" is the counter's side: left as is)
+_SIDE_OF = re.compile(
+    r"\b(?P<pre>(?!(?:the|a|an|to|on|in|at)\b)[a-z]+)(?P<sep>\s*,\s*|\s+)(?P<side>left|right)\s+of\s+"
+    r"(?=(?:the|a|an)\s)",
+    re.IGNORECASE,
+)
+# "place two bottles o the toilet": "o" before an article is "on" typed without its "n"
+_O_FOR_ON = re.compile(r"(?<=[a-z] )o (?=(?:the|a|an) )", re.IGNORECASE)
+
+
+# "put a metal pot a potato slice in it on the table": a container, then what is "in it", its "with" left
+# out ("a pot with a potato slice in it")
+_CONTENT_IN_IT = re.compile(
+    r"\b(?P<holder>(?:a|an|the)\s+(?:[a-z]+\s+){0,2}?[a-z]+)\s+"
+    r"(?=(?P<content>(?:a|an|the)\s+[a-z]+(?:\s+[a-z]+){0,2})\s+in\s+(?:it|them)\b)",
+    re.IGNORECASE,
+)
+
+
+def _with_left_out(m: re.Match[str]) -> str:
+    """ "a metal pot " -> "a metal pot with " where the holder names a movable container and what follows
+    is one noun phrase (no preposition, no verb) of a thing."""
+    holder, content = parse_np(m["holder"]), m["content"]
+    words = [w for w, _, _ in tokens(content)]
+    one_np = all(
+        match_prep(words, k) is None and (w not in G.VERBS or w in G.SLICE_NOUNS) for k, w in enumerate(words)
+    )
+    if holder.is_movable_receptacle() and one_np and find_mentions(content):
+        return f"{m['holder']} with "
+    return m[0]
+
+
+# "arrange cushion one and two on the couch": two things counted off by number are two of them
+_NUMBERED_PAIR = re.compile(r"\b(?P<noun>[a-z]+) (?:one|1) and (?:two|2)\b", re.IGNORECASE)
+
+
+def _two_of(m: re.Match[str]) -> str:
+    noun = m["noun"]
+    if not find_mentions(noun) or noun.lower() in G.VERBS:
+        return m[0]
+    return f"two {noun if noun.endswith('s') else noun + 's'}"
+
+
 def _keeps_but_first(text: str, m: re.Match[str]) -> bool:
     """Is "but first" better left to the sentence's other order words: the sentence opens with "first" /
     "start by", or goes on with "then" / "finally" after it (the structure model reads those whole)?"""
@@ -262,9 +310,10 @@ _THEN_INSIDE = re.compile(
     r")\s*,?\s+(?=[a-z])",
     re.IGNORECASE,
 )
-# "Y when you're done putting X in A": what is done is named, a reference ("Y after putting X in A")
+# "Y when you're done putting X in A", "Y when done heating it": what is done is named, a reference ("Y
+# after putting X in A")
 _DONE_GERUND = re.compile(
-    r"\b(after|once|when)\s+you(?:'re|\s+are|'ve|\s+have)?\s+(?:done|finished|through)\s+(?:with\s+)?"
+    r"\b(after|once|when)\s+(?:you(?:'re|\s+are|'ve|\s+have)?\s+)?(?:done|finished|through)\s+(?:with\s+)?"
     r"(?=[a-z]+ing\b)",
     re.IGNORECASE,
 )
@@ -299,6 +348,10 @@ def normalize(text: str) -> str:
     text = text.replace("\u2019", "'").replace("\u2018", "'").replace("\u201c", '"').replace("\u201d", '"')
     text = re.sub(r"(?<=[a-z])\.(?=[A-Za-z])", ". ", text)
     text = everyday(text)  # terse, spoken and need styles (issue 28)
+    text = _O_FOR_ON.sub("on ", text)
+    text = _SIDE_OF.sub(r"\g<pre>\g<sep>to the \g<side> of ", text)
+    text = _CONTENT_IN_IT.sub(_with_left_out, text)
+    text = _NUMBERED_PAIR.sub(_two_of, text)
     text = re.sub(r"\s*\([^)]*\)", "", text)  # parenthetical remarks: "(where the red block is now)"
     text = without_connective_to(text)
     text = _AS_SOON_AS.sub(lambda m: _as_cased("once", m[0]), text)
@@ -324,6 +377,7 @@ def normalize(text: str) -> str:
     text = _FOLLOWED_TO.sub(r" and finally \1", text)
     text = _LAST_ADVERB.sub(r"\1lastly ", text)
     text = _ONE_AFTER_THE_OTHER.sub(", in that order", text)
+    text = treated_before(text)  # before `_DONE_GERUND`: "when done heating it" is no reference
     text = _DONE_GERUND.sub(r"\1 ", text)
     text = _THEN_INSIDE.sub(", then ", text)
     text = _DONE_WITH.sub(lambda m: _as_cased("after ", m[1]), text)

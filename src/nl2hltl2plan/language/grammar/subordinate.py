@@ -1,0 +1,84 @@
+"""Subordinate clauses that treat the task's own object: "put the tomato in the fridge when done heating
+it in the microwave" is one task, `heat_place Tomato -> Fridge`, not a reference to another task.
+
+`treated_before` (a step of `sentences.normalize`) writes such a clause as "after heating it in the
+microwave"; the sentence keeps it (no trailing reference is stripped, `treatment_of_it`), the clause
+splitter cuts it off with the joiner "after", and `drafts` gives its state to the task of the clause before
+(`treatment_after`). Only a treatment (heat, chill, wash, slice) of "it" or of nothing named, at no
+place but its own appliance, is read so: "after heating the apple" names another task, "after heating it
+on the stove" a place no treatment here uses (both stay references). Check 1 still takes the connective
+for an order word: in a sentence of several tasks and no order, "after" needs an order and the
+instruction is refused.
+"""
+
+from __future__ import annotations
+
+import re
+
+from nl2hltl2plan.language.grammar import word_tables as G
+from nl2hltl2plan.language.grammar.clauses import split_clauses
+from nl2hltl2plan.language.grammar.frames import APPLIANCE_OF, Frame, parse_frame
+
+TREATMENTS = frozenset({*APPLIANCE_OF, "slice"})
+
+
+def treats_it(fr: Frame) -> bool:
+    """Is the clause a treatment of "it" / "them" or of nothing named ("heating it in the microwave",
+    "rinsing it off", "slicing"), at no place but that treatment's appliance?"""
+    if fr.cls not in TREATMENTS or len(fr.items) != 1:
+        return False
+    it = fr.items[0]
+    if it.obj is not None and not it.obj.pronoun:
+        return False
+    return all(
+        p in G.DEST_PREPS and np.entry is not None and np.entry.canonical == APPLIANCE_OF.get(fr.cls)
+        for p, np in it.pps
+    )
+
+
+def treatment_after(clause: str) -> Frame | None:
+    """The frame of a clause "after heating it in the microwave" (the splitter's clause that the joiner
+    "after" opens) when it is such a treatment; else None."""
+    fr = parse_frame(re.sub(r"^after\s+", "", clause, flags=re.IGNORECASE))
+    return fr if treats_it(fr) else None
+
+
+def treatment_of_it(text: str) -> bool:
+    """Do the words open with such a treatment ("heating it, place the mug ...": its first clause)?"""
+    clauses = split_clauses(text)
+    return bool(clauses) and treats_it(parse_frame(clauses[0][0]))
+
+
+def _as_gerund(verb: str, rest: str) -> str | None:
+    """ "rinsed" + " it off" -> "rinsing": the gerund of a treatment verb (any form) when the words from it
+    on open a treatment of "it"; else None."""
+    cls, base = G.VERBS.get(verb.lower()) or G.VERB_PAST.get(verb.lower()) or ("", "")
+    if cls not in TREATMENTS:
+        return None
+    gerund = next((s for s, (_, b) in G.VERBS.items() if b == base and s.endswith("ing")), base)
+    return gerund if treatment_of_it(gerund + rest) else None
+
+
+# a connective that says the treatment is done before the clause it follows, inside a sentence (the
+# leading "After heating it, Y" is a reference `sentences.after_ref` reads): "after / once (you have)
+# (done / finished)", "when (you are) done / finished", "when you have"
+_DONE_FIRST = re.compile(
+    r"(?<=\w)(?:\s*,)?\s+(?:"
+    r"(?:after|once)\s+(?:you(?:'ve|\s+have|\s+had)?\s+)?(?:(?:done|finished)\s+(?:with\s+)?)?"
+    r"|when\s+(?:you(?:'re|\s+are|'ve|\s+have)\s+)?(?:done|finished)\s+(?:with\s+)?"
+    r"|when\s+you(?:'ve|\s+have)\s+"
+    r")(?P<verb>[a-z]+)\b",
+    re.IGNORECASE,
+)
+
+
+def treated_before(text: str) -> str:
+    """ "Y when done heating it in the microwave" / "Y once you've rinsed it" -> "Y after heating it in
+    the microwave" / "Y after rinsing it", where the words are such a treatment (see above)."""
+
+    def sub(m: re.Match[str]) -> str:
+        rest = re.split(r"[.;!?]", text[m.end() :], maxsplit=1)[0]
+        gerund = _as_gerund(m["verb"], rest)
+        return f" after {gerund}" if gerund else m[0]
+
+    return _DONE_FIRST.sub(sub, text)
