@@ -23,7 +23,7 @@ from collections.abc import Mapping, Sequence
 
 import networkx as nx
 
-from nl2hltl2plan.domain.task_kinds import APPLIANCE, slots_of
+from nl2hltl2plan.domain.task_kinds import slots_of
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.content_words import (
     DETERMINERS,
@@ -45,17 +45,18 @@ from nl2hltl2plan.language.grounding import (
     tokens,
 )
 from nl2hltl2plan.language.landmarks import NEAR_WORDS, landmark_destinations, pair_start
-from nl2hltl2plan.language.negations import about_order, unforbidden_verb
+from nl2hltl2plan.language.negations import NO_CONSTRAINT, about_order, unforbidden_verb
 from nl2hltl2plan.language.order_words import check_cycles, unordered_steps
 from nl2hltl2plan.language.parse_usage import IMPLIED_TYPES, ParseUsage
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, ConstraintSpec
+from nl2hltl2plan.language.unsupported_steps import (
+    closed_after_placing,
+    returns_and_repeats,
+    treated_after_placing,
+)
 
 OPENED_FOR_ITSELF = frozenset({"Book", "Laptop", "Blinds"})  # opened to be open, not to reach inside
 NAVIGATION = frozenset({"go", "walk", "head", "come", "run", "move", "turn"})  # "move to the sink", no object
-NO_CONSTRAINT = (
-    "a negated request that no constraint of the spec carries (only actions on things of the world, and "
-    "their heating, cooling or cleaning, can be forbidden)"
-)
 
 
 def _count_value(cats: frozenset[str], word: str) -> int | None:
@@ -100,9 +101,8 @@ def account(
     out += _invented(mentions, toks, parse)
     out += landmark_destinations(mentions, toks, parse)
     out += _invented_kinds(toks, mentions, parse)
-    out += _treated_after_placing(instruction, mentions, parse)
-    out += _closed_after_placing(instruction, mentions, parse)
-    out += _returns_and_repeats(instruction)
+    out += treated_after_placing(instruction, mentions, parse)
+    out += closed_after_placing(instruction, mentions, parse) + returns_and_repeats(instruction)
     out += _words(instruction, toks, in_mention, mentions, parse, instances, scene)
     out += unordered_steps(
         toks, {i for i, t in enumerate(toks) if parse.constraint_at(t[1])} | in_mention, parse
@@ -308,68 +308,6 @@ def _invented_kinds(
                 Unread("sliced", "invented", f"task {t.id}'s slice is named nowhere in the instruction")
             )
     return out
-
-
-# "bring it back", "then back again": to where it was, which no base task names; "three times"
-_RETURN = re.compile(r"\bback(?: again)?\b(?=\s*(?:$|[.,;!?)]|(?:and|then|again|afterwards|later|here)\b))")
-_LEFT_OUT = re.compile(r"\bleave (?:\w+ ){0,3}out\b(?! of)")  # "leave one out": an exception, as "except one"
-_SOURCE = re.compile(r"\b(?:from|out of|off)\b")
-_TIMES = re.compile(
-    r"\b(?:\d+|two|three|four|five|six|seven|eight|nine|ten|several|many|multiple|a few) times\b"
-)
-
-
-def _returns_and_repeats(instruction: str) -> list[Unread]:
-    """ "Back" with no place after it names one only where the sentence said where the thing came from
-    ("wash the cloth from the cabinet, put it back")."""
-    lowered = instruction.lower()
-    out = [
-        Unread(m.group(0), "place", "no base task returns a thing to where it was: name the place")
-        for m in _RETURN.finditer(lowered)
-        if not _SOURCE.search(lowered, sentence_start(instruction, m.start()), m.start())
-    ]
-    out += [Unread(m.group(0), "negation", NO_CONSTRAINT) for m in _LEFT_OUT.finditer(lowered)]
-    return out + [
-        Unread(m.group(0), "count", "no base task is done more than once: say each time as its own task")
-        for m in _TIMES.finditer(lowered)
-    ]
-
-
-_THEN_VERB = re.compile(r"\b(?:then|afterwards|after that|next|later)\s*,?\s+(?:you\s+)?(?:can\s+)?([a-z]+)")
-
-
-def _treated_after_placing(instruction: str, mentions: list[Mention], parse: ParseUsage) -> list[Unread]:
-    """A task's slice or treatment comes before its placing; "put the tomato in the fridge, then slice
-    it" says the opposite, so a sliced tomato in the fridge is not what it asks."""
-    out = []
-    lowered = instruction.lower()
-    for t in parse.tasks:
-        wanted = {f"verb_{t.kind}"} | ({"verb_sliced"} if t.sliced else set())
-        places = set(t.receptacle or ()) - {APPLIANCE.get(t.kind, "")}
-        at = lowered.find(t.text.lower()) if t.text else -1  # the task's own words, else the whole text
-        start, end = (at, at + len(t.text)) if at >= 0 else (0, len(lowered))
-        placed = [m.char_end for m in mentions if set(m.entry.types) & places and start <= m.char_start < end]
-        for then in _THEN_VERB.finditer(lowered, start, end):
-            if placed and then.start() > max(placed) and categories(then.group(1)) & wanted:
-                why = f"task {t.id}'s treatment comes before its placing"
-                out.append(Unread(then.group(0), "order", why))
-    return out
-
-
-def _closed_after_placing(instruction: str, mentions: list[Mention], parse: ParseUsage) -> list[Unread]:
-    """A placing task leaves its receptacle open: "put the knife in the drawer and close it" is not done
-    unless a task closes it."""
-    places = {r for t in parse.tasks for r in t.receptacle or ()}
-    first = min((m.char_end for m in mentions if set(m.entry.types) & places), default=None)
-    if first is None or "closed" in parse.states:
-        return []
-    return [
-        Unread(shut.group(0), "action", "no base task closes it: the plan leaves it open")
-        for shut in _CLOSE.finditer(instruction.lower(), first)
-    ]
-
-
-_CLOSE = re.compile(r"\b(?:close|shut)\b(?! (?:to|by)\b)")
 
 
 _WHERE_IT_IS = frozenset({"is", "are", "was", "were", "sits", "sitting", "lies", "lying", "stays", "'s"})

@@ -83,6 +83,12 @@ ALL_VERBS = ("pickup", "open", "close", "toggle_on", "toggle_off", "slice", "bre
 STATE_VERBS = ("heat", "cool", "clean")  # an object becomes hot / cold / clean
 
 
+NO_CONSTRAINT = (
+    "a negated request that no constraint of the spec carries (only actions on things of the world, and "
+    "their heating, cooling or cleaning, can be forbidden)"
+)
+
+
 @dataclass
 class Negation:
     """One negated clause of the instruction: its character span, the constraint it states and the
@@ -369,5 +375,7 @@ def unforbidden_verb(
 def nothing_to_do(instruction: str, constraints: list[ConstraintSpec]) -> str:
     """The refusal of an instruction that only says what not to do (there is no task to plan)."""
     said = "; ".join(c.describe() for c in constraints)
-    return (f"nothing to do: {instruction!r} only says what not to do ({said}); state a task too, "
-            "e.g. 'put the mug in the sink, but never open the fridge'")
+    return (
+        f"nothing to do: {instruction!r} only says what not to do ({said}); state a task too, "
+        "e.g. 'put the mug in the sink, but never open the fridge'"
+    )
