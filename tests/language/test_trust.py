@@ -94,6 +94,14 @@ def test_back_with_no_place_and_repeats_are_unread():
     assert [(u.words, u.category) for u in said] == [("leave one out", "negation")]
 
 
+def test_every_content_after_with_is_a_thing_to_move():
+    """Found by h58: "a bowl with an apple and a knife in it" read as the knife in the bowl."""
+    knife = [task("place_in_container", "Knife", "CounterTop", id="A", container=["Bowl"])]
+    said = account("carry a bowl with an apple and a knife in it to the counter", knife, [])
+    assert [(u.words, u.category) for u in said] == [("apple", "place")]
+    assert account("carry a bowl with a knife in it to the counter", knife, []) == []
+
+
 def test_counts_and_cycles_are_input_errors():
     cups = [task("place_two", "Cup", "DishwasherUpperRack", count=2)]
     with pytest.raises(HTTError, match="holds only 2"):

@@ -235,11 +235,17 @@ def _locative(
         return True
     if toks[i][0] == "with" and i > 0 and toks[i - 1][0] in _DONE_WORDS:
         return False  # "when you are done with the mug": a task the mug is in, not where a thing is
+    if toks[i][0] == "with" and _CONTENT_END.match(" ".join(w for w, _, _ in toks[m.end : m.end + 8])):
+        return False  # "a bowl with an apple and a knife in it": contents, each one a thing to move
     clause = _clause_span(instruction, toks[start][1])
     if any("verb_take" in categories(w) for w, s, _ in toks if clause[0] <= s < clause[1]):
         return True
     near = places + implied if toks[i][0] in NEAR_WORDS else places
     return any(clause[0] <= o.char_start < clause[1] and o.start not in (m.start, start) for o in near)
+
+
+# "with an apple and a knife in it": what follows "with" is contents
+_CONTENT_END = re.compile(r"(?:\w+ ){0,5}(?:(?:in|inside|on) (?:it|them)|inside)\b")
 
 
 def _walked_to(toks: list[tuple[str, int, int]], start: int) -> bool:
