@@ -160,3 +160,42 @@ VALID_S11: dict[int, list[str]] = {
         "the green apple and the orange belong on the yellow plate first; then the carrot and the red apple "
         "belong on the blue plate, any order"],
 }
+
+# Issue 28 (h61): validation rephrasings written before the rules for the styles below, in four styles
+# that the sets above do not use: a modal passive ("needs to be placed"), take-and-set with a pronoun
+# ("take X and set it on ..."), the receptacle fronted ("onto the blue plate goes ..."), and the end state
+# ("make sure X ends up on ..."). Measured once before and once after (scripts/tabletop_styles.py --batch
+# VALID_H61), never read per sentence between; the expected signature is each task's ground truth.
+VALID_H61: dict[int, list[str]] = {
+    1: ["The green apple needs to be placed on the blue plate, and the orange needs to be placed on the "
+        "yellow plate.",
+        "Take the green apple and set it down on the blue plate; take the orange and set it down on the "
+        "yellow plate.",
+        "Onto the blue plate goes the green apple, and onto the yellow plate goes the orange.",
+        "Make sure the green apple ends up on the blue plate and the orange ends up on the yellow plate."],
+    2: ["The green apple is to be put on the pink plate, the orange on the yellow plate and the red apple on "
+        "the blue plate; the order is your call.",
+        "Grab the red apple and lay it on the blue plate, grab the orange and lay it on the yellow plate, and "
+        "grab the green apple and lay it on the pink plate, no particular order.",
+        "On the pink plate put the green apple, on the yellow plate the orange, and on the blue plate the red "
+        "apple, whichever order you prefer.",
+        "By the end, the green apple should sit on the pink plate, the orange on the yellow plate and the red "
+        "apple on the blue plate; how you order it is up to you."],
+    3: ["The carrot must be put on the blue plate, the orange on the yellow plate, the green apple on the "
+        "green plate and the red apple on the pink plate. Do them in any sequence.",
+        "Pick up the carrot and drop it on the blue plate, pick up the orange and drop it on the yellow "
+        "plate, pick up the green apple and drop it on the green plate, pick up the red apple and drop it on "
+        "the pink plate; any order is okay.",
+        "For the blue plate the carrot, for the yellow plate the orange, for the green plate the green apple "
+        "and for the pink plate the red apple; order is free.",
+        "When you're finished, I want to see the carrot on the blue plate, the orange on the yellow plate, "
+        "the green apple on the green plate and the red apple on the pink plate. Any order."],
+    4: ["The green apple and the orange have to be placed on the yellow plate first; only after that should "
+        "the carrot and the red apple be placed on the blue plate, in either order.",
+        "Take the green apple and the orange and set them on the yellow plate. When both are on it, take the "
+        "carrot and the red apple and set them on the blue plate, in either order.",
+        "On the yellow plate, first put the green apple and the orange. Next, on the blue plate, put the "
+        "carrot and the red apple in any order.",
+        "Make sure the green apple and the orange are on the yellow plate before the carrot or the red apple "
+        "goes on the blue plate; those last two can go in any order."],
+}
