@@ -39,8 +39,8 @@ REPHRASINGS: dict[int, list[str]] = {
     ],
 }
 
-# Styles the offline parser does not yet read correctly (kept as expected failures for the parser work):
-# a subordinate clause that states the order ("before placing ...", "once ... are in ...").
+# A subordinate clause that states the order ("before placing ...", "once ... are in ..."), once refused
+# (read since h61: each object listed in a reference's clause is a task of its own).
 HARDER: dict[int, list[str]] = {
     4: ["Before placing the carrot and red apple in the blue plate, place the green apple and orange in the "
         "yellow plate.",
@@ -175,12 +175,12 @@ VALID_H61: dict[int, list[str]] = {
         "Make sure the green apple ends up on the blue plate and the orange ends up on the yellow plate."],
     2: ["The green apple is to be put on the pink plate, the orange on the yellow plate and the red apple on "
         "the blue plate; the order is your call.",
-        "Grab the red apple and lay it on the blue plate, grab the orange and lay it on the yellow plate, and "
-        "grab the green apple and lay it on the pink plate, no particular order.",
-        "On the pink plate put the green apple, on the yellow plate the orange, and on the blue plate the red "
-        "apple, whichever order you prefer.",
-        "By the end, the green apple should sit on the pink plate, the orange on the yellow plate and the red "
-        "apple on the blue plate; how you order it is up to you."],
+        "Grab the red apple and lay it on the blue plate, grab the orange and lay it on the yellow plate, "
+        "and grab the green apple and lay it on the pink plate, no particular order.",
+        "On the pink plate put the green apple, on the yellow plate the orange, and on the blue plate the "
+        "red apple, whichever order you prefer.",
+        "By the end, the green apple should sit on the pink plate, the orange on the yellow plate and the "
+        "red apple on the blue plate; how you order it is up to you."],
     3: ["The carrot must be put on the blue plate, the orange on the yellow plate, the green apple on the "
         "green plate and the red apple on the pink plate. Do them in any sequence.",
         "Pick up the carrot and drop it on the blue plate, pick up the orange and drop it on the yellow "
@@ -198,4 +198,41 @@ VALID_H61: dict[int, list[str]] = {
         "carrot and the red apple in any order.",
         "Make sure the green apple and the orange are on the yellow plate before the carrot or the red apple "
         "goes on the blue plate; those last two can go in any order."],
+}
+
+# Issue 28 (h61): the classes the reader refused in the lead's sets, with variants, for developing the rules
+# (read per sentence): a counted header with a colon list, a topic header whose plate "it" names, "the
+# yellow one" for a plate named before, and the receptacle as subject ("the yellow plate gets ...").
+DEV_H61: dict[int, list[str]] = {
+    1: ["ok so just put the green apple on the blue plate and, um, the orange on the yellow one",
+        "Two placements: the green apple on the blue plate and the orange on the yellow plate.",
+        "The blue plate gets the green apple and the yellow plate gets the orange.",
+        "See to it that the orange sits on the yellow plate and the green apple sits on the blue plate.",
+        "In the yellow plate put the orange, and in the blue plate put the green apple."],
+    2: ["Place three fruits: the green apple on the pink plate, the orange on the yellow plate, the red "
+        "apple on the blue plate. Any order works.",
+        "put the green apple on the pink plate, the orange on the yellow one and the red apple on the blue "
+        "one, any order",
+        "The pink plate should get the green apple, the yellow plate the orange and the blue plate the red "
+        "apple, in any order.",
+        "The red apple has to be put on the blue plate, the green apple on the pink plate and the orange on "
+        "the yellow plate, in any order.",
+        "We'd like to see the green apple on the pink plate, the orange on the yellow plate and the red "
+        "apple on the blue plate, any order."],
+    3: ["Put four items on plates: the carrot on the blue plate, the orange on the yellow plate, the green "
+        "apple on the green plate and the red apple on the pink plate, in any order.",
+        "The carrot should be placed on the blue plate, the orange on the yellow plate, the green apple on "
+        "the green plate and the red apple on the pink plate, any order.",
+        "Onto the blue plate goes the carrot, onto the yellow plate the orange, onto the green plate the "
+        "green apple and onto the pink plate the red apple, in any order."],
+    4: ["Start with the yellow plate: put the green apple and the orange on it. Then put the carrot and the "
+        "red apple on the blue plate in any order.",
+        "The yellow plate has to get the green apple and the orange before anything goes on the blue plate; "
+        "after that, the carrot and the red apple go on the blue plate in whatever order.",
+        "First the yellow plate: the green apple and the orange go on it. Then the blue plate: the carrot "
+        "and the red apple, any order.",
+        "Ensure the orange and the green apple end up on the yellow plate before the red apple or the carrot "
+        "goes on the blue plate.",
+        "The orange and the green apple must be placed in the yellow plate first, and only then should the "
+        "carrot and the red apple be put in the blue plate."],
 }

@@ -160,8 +160,15 @@ def new_tasks_from_ref(ref: str, b: TaskBuilder, text: str) -> list[BaseTaskSpec
         elif words and words[0] not in G.VERBS:
             continue
         fr = parse_frame(c_text, 0, "")
-        for it in fr.items:
-            if drafts and (joins(drafts[-1], fr, it) or incomplete(drafts[-1])):
+        # "before you put the apple and the carrot on the plate": each listed object is a task of its own,
+        # with the destination stated after the last one ("the mug or the cup" is left: which one is not said)
+        listed = fr.items and not re.search(r"\bor\b", c_text, re.I)
+        shared = [(p, np) for p, np in fr.items[-1].pps if p in G.DEST_PREPS] if listed else []
+        for it in fr.items[:-1]:
+            if it.obj is not None and not any(p in G.DEST_PREPS for p, _ in it.pps):
+                it.pps.extend(shared)
+        for k, it in enumerate(fr.items):
+            if k == 0 and drafts and (joins(drafts[-1], fr, it) or incomplete(drafts[-1])):
                 drafts[-1].frames.append((fr, it))
             else:
                 drafts.append(Draft(frames=[(fr, it)], start=0, end=0))

@@ -1,0 +1,87 @@
+"""Issue 28 (h61): requests restated around their places or end states (language/grammar/restated.py),
+read as plain placements in a kitchen, each with a near miss whose words must still be read or refused,
+never guessed."""
+
+from __future__ import annotations
+
+import pytest
+
+from nl2hltl2plan.language.accounting import account
+from nl2hltl2plan.language.grammar import parse_instruction
+from nl2hltl2plan.language.grammar.restated import restated
+from nl2hltl2plan.language.task_specs import transitive_closure
+
+KITCHEN = {"Apple", "Egg", "Mug", "Cup", "Fridge", "SinkBasin", "CounterTop", "DiningTable", "SideTable"}
+EGG, MUG, APPLE, CUP = (
+    "place Egg -> Fridge",
+    "place Mug -> SinkBasin",
+    "place Apple -> Fridge",
+    "place Cup -> SinkBasin",
+)
+
+
+def read(text: str) -> tuple[list[str], set[tuple[str, str]], list[str]]:
+    """Tasks, closed order, and what the grammar or the word accounting leaves unread."""
+    r = parse_instruction(text, KITCHEN, "kitchen", affordances=lambda t: None)
+    name = {t.id: t.summary() for t in r.tasks}
+    order = {(name[a], name[b]) for a, b in transitive_closure(r.before, list(name))}
+    unread = list(r.unparsed) + [u.words for u in account(text, r.tasks, r.before)]
+    return sorted(name.values()), order, unread
+
+
+READ = [
+    # "the side one": the head noun of the earlier place
+    ("put the egg on the dining table and the mug on the side one",
+     ["place Egg -> DiningTable", "place Mug -> SideTable"], set()),
+    # a counted header whose count is the number of placements listed
+    ("Put two things away: the egg in the fridge and the mug in the sink.", [EGG, MUG], set()),
+    # a topic header: "it" is the topic; a list of objects alone goes on the topic
+    ("Start with the fridge: put the egg and the apple in it. Then the sink: the mug and the cup.",
+     [APPLE, CUP, EGG, MUG], {(a, b) for a in (EGG, APPLE) for b in (MUG, CUP)}),
+    # the place as subject, also with the verb left out after the first
+    ("The fridge gets the egg and the sink gets the mug.", [EGG, MUG], set()),
+    ("The fridge should get the egg, the sink the mug.", [EGG, MUG], set()),
+    # the place put first
+    ("Into the fridge goes the egg, and into the sink goes the mug.", [EGG, MUG], set()),
+    ("In the fridge, the egg; in the sink, the mug.", [EGG, MUG], set()),
+    # a passive or end-state goal
+    ("The egg needs to be placed in the fridge.", [EGG], set()),
+    ("Make sure the egg ends up in the fridge and the mug is in the sink.", [EGG, MUG], set()),
+    # "before X or Y goes in Z" waits for both
+    ("Put the egg in the fridge before the mug or the cup goes in the sink.",
+     [CUP, EGG, MUG], {(EGG, MUG), (EGG, CUP)}),
+]
+
+
+@pytest.mark.parametrize(("text", "tasks", "order"), READ)
+def test_restated_requests_are_read(text, tasks, order):
+    got_tasks, got_order, unread = read(text)
+    assert (got_tasks, got_order, unread) == (tasks, order, []), text
+
+
+NEAR_MISSES = [
+    # the count does not match the placements listed: the header is not dropped
+    "Put three things away: the egg in the fridge and the mug in the sink.",
+    # "the big one" names nothing the scene knows
+    "put the mug in the sink and the egg in the big one",
+    # "after the mug or the cup": which one is not said
+    "Put the egg in the fridge after the mug or the cup goes in the sink.",
+    # a place that is no scene object as subject or put first
+    "The robot gets the egg.",
+    "In the kitchen, put the mug in the sink.",
+    # a state outside "make sure" describes where a thing is, it is no goal
+    "The mug is in the sink. Put the egg in the fridge.",
+]
+
+
+@pytest.mark.parametrize("text", NEAR_MISSES)
+def test_near_misses_are_refused_not_guessed(text):
+    _, _, unread = read(text)
+    assert unread, text
+
+
+def test_rewrites_leave_other_text_alone():
+    left = ("In the kitchen, put the mug in the sink.", "The mug is in the sink.", "The robot gets the egg.")
+    for text in left:
+        assert restated(text) == text
+    assert restated("The fridge gets the egg.") == "put the egg on the fridge."
