@@ -85,3 +85,34 @@ def test_rewrites_leave_other_text_alone():
     for text in left:
         assert restated(text) == text
     assert restated("The fridge gets the egg.") == "put the egg on the fridge."
+
+
+# Issue 28 (h61): reference and free-order phrasings of unseen instructions (refsheld dev seeds)
+REFERENCES = [
+    # a perfect participle names the earlier task: no second task about the mug
+    ("Put the mug in the sink. Put the egg in the fridge. Having put the mug, put the apple in the fridge.",
+     [APPLE, EGG, MUG], {(MUG, APPLE)}),
+    ("Having put the mug in the sink, put the egg in the fridge.", [EGG, MUG], {(MUG, EGG)}),
+    # free-order openers and "at whatever time"
+    ("Put the mug in the sink. In no particular order, put the egg in the fridge. Then put the apple in the "
+     "fridge.", [APPLE, EGG, MUG], {(EGG, APPLE)}),
+    ("Put the mug in the sink. Any time, put the egg in the fridge.", [EGG, MUG], set()),
+    ("Put the mug in the sink. Put the egg in the fridge at whatever time.", [EGG, MUG], set()),
+]
+
+
+def test_at_whatever_time_reads_as_at_any_time():
+    text = "Put the mug in the sink {}. Then put the egg in the fridge. Then put the apple in the fridge."
+    assert read(text.format("at whatever time")) == read(text.format("at any time"))
+
+
+@pytest.mark.parametrize(("text", "tasks", "order"), REFERENCES)
+def test_reference_and_free_order_phrasings(text, tasks, order):
+    got_tasks, got_order, unread = read(text)
+    assert (got_tasks, got_order, unread) == (tasks, order, []), text
+
+
+def test_having_an_object_is_no_reference():
+    """ "Having a mug in hand, ..." holds something; it names no earlier task, so it is never read as one."""
+    _, order, unread = read("Put the egg in the fridge. Having a mug in hand, put the apple in the fridge.")
+    assert unread or order == set()
