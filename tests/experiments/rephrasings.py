@@ -208,7 +208,8 @@ DEV_H61: dict[int, list[str]] = {
         "Two placements: the green apple on the blue plate and the orange on the yellow plate.",
         "The blue plate gets the green apple and the yellow plate gets the orange.",
         "See to it that the orange sits on the yellow plate and the green apple sits on the blue plate.",
-        "In the yellow plate put the orange, and in the blue plate put the green apple."],
+        "In the yellow plate put the orange, and in the blue plate put the green apple.",
+        "Onto the yellow plate: the orange. Onto the blue plate: the green apple."],
     2: ["Place three fruits: the green apple on the pink plate, the orange on the yellow plate, the red "
         "apple on the blue plate. Any order works.",
         "put the green apple on the pink plate, the orange on the yellow one and the red apple on the blue "

@@ -44,6 +44,7 @@ READ = [
     # the place put first
     ("Into the fridge goes the egg, and into the sink goes the mug.", [EGG, MUG], set()),
     ("In the fridge, the egg; in the sink, the mug.", [EGG, MUG], set()),
+    ("In the fridge: the egg and the apple. In the sink: the mug.", [APPLE, EGG, MUG], set()),
     # a passive or end-state goal
     ("The egg needs to be placed in the fridge.", [EGG], set()),
     ("Make sure the egg ends up in the fridge and the mug is in the sink.", [EGG, MUG], set()),

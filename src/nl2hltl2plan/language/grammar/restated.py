@@ -57,7 +57,7 @@ _PLACE_OBJECT_PAIR = re.compile(
 )
 _FRONTED_PLACE = re.compile(
     rf"(?P<lead>{_CLAUSE_START}|,\s*(?:and\s+)?|\s+and\s+)(?P<order>{_ORDER}\s*,?\s+)?"
-    rf"(?P<prep>{_PLACE}|for)\s+(?P<place>the\s+[a-z]+(?:\s+[a-z]+)??)\s*,?\s+(?P<order2>first\s+)?"
+    rf"(?P<prep>{_PLACE}|for)\s+(?P<place>the\s+[a-z]+(?:\s+[a-z]+)??)\s*[,:]?\s+(?P<order2>first\s+)?"
     r"(?:(?:goes|go|put|place|set|lay)\s+)?(?P<objs>(?:the|a|an)\s+[^,.;!?]+?)"
     r"(?=\s*[,.;!?]|\s+(?:in\s+any|in\s+whatever|in\s+either)\b|\s+and\s+(?:on|onto|in|into|for)\s+the\b|$)",
     re.I,
