@@ -46,7 +46,8 @@ _TOPIC_HEADER = re.compile(
 )
 _GETS = r"(?:(?:should|must|will|has\s+to|have\s+to|needs?\s+to)\s+(?:get|receive)|gets|receives)"
 _SUBJECT_PLACE = re.compile(
-    rf"(?:{_CLAUSE_START}|(?<=,)\s*(?:and\s+)?|\s+and\s+)(?P<place>the\s+[a-z]+(?:\s+[a-z]+)?)\s+{_GETS}\s+(?P<objs>(?:the|a|an)\s+[^,.;!?]+?)"
+    rf"(?:{_CLAUSE_START}|(?<=,)\s*(?:and\s+)?|\s+and\s+)(?P<place>the\s+[a-z]+(?:\s+[a-z]+)?)\s+{_GETS}\s+"
+    r"(?P<objs>(?:the|a|an)\s+[^,.;!?]+?)"
     r"(?=\s+(?:before|after|until|once|when|then|first)\b|\s*[,.;!?]|\s+and\s+the\s+[a-z]+(?:\s+[a-z]+)?\s+"
     rf"{_GETS}|$)",
     re.I,
@@ -77,10 +78,12 @@ _END_STATE_OPENER = re.compile(
     r"^\s*(?:by|at|in)\s+the\s+end|^\s*(?:when|once)\s+you(?:'re|\s+are)\s+(?:finished|done)", re.I
 )
 _CLAUSE_GOES = re.compile(
-    r"\b(?P<rel>before|after|until|once|when)\s+(?P<objs>(?:the|a|an)\s+[^,.;!?]+?|anything|everything|any\s+of\s+them)"
+    r"\b(?P<rel>before|after|until|once|when)\s+"
+    r"(?P<objs>(?:the|a|an)\s+[^,.;!?]+?|anything|everything|any\s+of\s+them)"
     rf"\s+(?:goes|go|is\s+put|are\s+put|gets?\s+put|lands?)\s+(?P<prep>{_PLACE})\s+(?=the\s)",
     re.I,
 )
+_ALTERNATIVES = re.compile(r"\s+or\s+(?=(?:the|a|an)\s)", re.I)  # "the carrot or the red apple"
 _INVERTED_AFTER = re.compile(
     r"\b(?:only\s+)?(?P<rel>after\s+(?:that|this)|then|afterwards)\s*,?\s+(?:should|must|can|may|will)\s+"
     rf"(?P<objs>(?:the|a|an)\s+[^,.;!?]+?)\s+(?:be\s+(?:placed|put|set|moved)|go)\s+(?={_PLACE}\s)",
@@ -230,9 +233,8 @@ def _you_put(m: re.Match[str]) -> str:
     objs = m["objs"]
     if re.match(r"(?:the|a|an)\s", objs, re.I) and not _is_named(objs):
         return m[0]
-    alternatives = re.compile(r"\s+or\s+(?=(?:the|a|an)\s)", re.I)
-    if alternatives.search(objs):
+    if _ALTERNATIVES.search(objs):
         if m["rel"].lower() not in {"before", "until"}:
             return m[0]
-        objs = alternatives.sub(" and ", objs)
+        objs = _ALTERNATIVES.sub(" and ", objs)
     return f"{m['rel']} you put {objs} {m['prep']} "

@@ -432,7 +432,8 @@ _DONE = (
 # `sentences.after_ref` splits such a reference from its task
 # ("having put the mug, Y": a perfect participle, not "having a mug in hand")
 AFTER_OPENER = (
-    r"(?:(?:only|right|just|immediately)\s+)?(?:after|once|when|following|upon|having(?!\s+(?:a|an|the|some|no|to)\b))\s+"
+    r"(?:(?:only|right|just|immediately)\s+)?"
+    r"(?:after|once|when|following|upon|having(?!\s+(?:a|an|the|some|no|to)\b))\s+"
 )
 LEADING: list[tuple[re.Pattern[str], str]] = [
     (
