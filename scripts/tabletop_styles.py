@@ -24,15 +24,19 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests" / "experime
 import rephrasings  # noqa: E402
 
 
+def _closed(tasks, before) -> tuple[list, list]:
+    key = {t.id: (t.kind, tuple(t.object), tuple(t.receptacle or ())) for t in tasks}
+    closure = transitive_closure(before, list(key))
+    return sorted(key.values()), sorted((key[a], key[b]) for a, b in closure)
+
+
 def signature(instruction: str) -> tuple[list, list] | None:
     """Base tasks and closed order, as tests/experiments/test_tabletop.py reads them; None on a refusal."""
     try:
         r = translate(instruction, tabletop_world())
     except Exception:  # a refusal counts as not the same; its exit code is measured separately
         return None
-    key = {t.id: (t.kind, tuple(t.object), tuple(t.receptacle or ())) for t in r.tasks}
-    closure = transitive_closure(r.before, list(key))
-    return sorted(key.values()), sorted((key[a], key[b]) for a, b in closure)
+    return _closed(r.tasks, r.before)
 
 
 def main() -> None:
@@ -44,7 +48,8 @@ def main() -> None:
     tasks = {t.id: t for t in load_tasks()}
     same, wrong, total, codes = 0, 0, 0, Counter()
     for task_id, texts in batch.items():
-        reference = signature(tasks[task_id].instruction)
+        gt = tasks[task_id].gt_instance()
+        reference = _closed(gt.tasks, gt.before)  # the task's ground truth, not a parse of its wording
         for text in texts:
             ok = signature(text) == reference
             rc = subprocess.run(

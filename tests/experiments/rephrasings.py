@@ -39,8 +39,8 @@ REPHRASINGS: dict[int, list[str]] = {
     ],
 }
 
-# Styles the offline parser does not yet read correctly (kept as expected failures for the parser work):
-# a subordinate clause that states the order ("before placing ...", "once ... are in ...").
+# A subordinate clause that states the order ("before placing ...", "once ... are in ..."), once refused
+# (read since h61: each object listed in a reference's clause is a task of its own).
 HARDER: dict[int, list[str]] = {
     4: ["Before placing the carrot and red apple in the blue plate, place the green apple and orange in the "
         "yellow plate.",
@@ -159,4 +159,81 @@ VALID_S11: dict[int, list[str]] = {
         "on the blue plate, the order doesn't matter",
         "the green apple and the orange belong on the yellow plate first; then the carrot and the red apple "
         "belong on the blue plate, any order"],
+}
+
+# Issue 28 (h61): validation rephrasings written before the rules for the styles below, in four styles
+# that the sets above do not use: a modal passive ("needs to be placed"), take-and-set with a pronoun
+# ("take X and set it on ..."), the receptacle fronted ("onto the blue plate goes ..."), and the end state
+# ("make sure X ends up on ..."). Measured once before and once after (scripts/tabletop_styles.py --batch
+# VALID_H61), never read per sentence between; the expected signature is each task's ground truth.
+VALID_H61: dict[int, list[str]] = {
+    1: ["The green apple needs to be placed on the blue plate, and the orange needs to be placed on the "
+        "yellow plate.",
+        "Take the green apple and set it down on the blue plate; take the orange and set it down on the "
+        "yellow plate.",
+        "Onto the blue plate goes the green apple, and onto the yellow plate goes the orange.",
+        "Make sure the green apple ends up on the blue plate and the orange ends up on the yellow plate."],
+    2: ["The green apple is to be put on the pink plate, the orange on the yellow plate and the red apple on "
+        "the blue plate; the order is your call.",
+        "Grab the red apple and lay it on the blue plate, grab the orange and lay it on the yellow plate, "
+        "and grab the green apple and lay it on the pink plate, no particular order.",
+        "On the pink plate put the green apple, on the yellow plate the orange, and on the blue plate the "
+        "red apple, whichever order you prefer.",
+        "By the end, the green apple should sit on the pink plate, the orange on the yellow plate and the "
+        "red apple on the blue plate; how you order it is up to you."],
+    3: ["The carrot must be put on the blue plate, the orange on the yellow plate, the green apple on the "
+        "green plate and the red apple on the pink plate. Do them in any sequence.",
+        "Pick up the carrot and drop it on the blue plate, pick up the orange and drop it on the yellow "
+        "plate, pick up the green apple and drop it on the green plate, pick up the red apple and drop it on "
+        "the pink plate; any order is okay.",
+        "For the blue plate the carrot, for the yellow plate the orange, for the green plate the green apple "
+        "and for the pink plate the red apple; order is free.",
+        "When you're finished, I want to see the carrot on the blue plate, the orange on the yellow plate, "
+        "the green apple on the green plate and the red apple on the pink plate. Any order."],
+    4: ["The green apple and the orange have to be placed on the yellow plate first; only after that should "
+        "the carrot and the red apple be placed on the blue plate, in either order.",
+        "Take the green apple and the orange and set them on the yellow plate. When both are on it, take the "
+        "carrot and the red apple and set them on the blue plate, in either order.",
+        "On the yellow plate, first put the green apple and the orange. Next, on the blue plate, put the "
+        "carrot and the red apple in any order.",
+        "Make sure the green apple and the orange are on the yellow plate before the carrot or the red apple "
+        "goes on the blue plate; those last two can go in any order."],
+}
+
+# Issue 28 (h61): the classes the reader refused in the lead's sets, with variants, for developing the rules
+# (read per sentence): a counted header with a colon list, a topic header whose plate "it" names, "the
+# yellow one" for a plate named before, and the receptacle as subject ("the yellow plate gets ...").
+DEV_H61: dict[int, list[str]] = {
+    1: ["ok so just put the green apple on the blue plate and, um, the orange on the yellow one",
+        "Two placements: the green apple on the blue plate and the orange on the yellow plate.",
+        "The blue plate gets the green apple and the yellow plate gets the orange.",
+        "See to it that the orange sits on the yellow plate and the green apple sits on the blue plate.",
+        "In the yellow plate put the orange, and in the blue plate put the green apple.",
+        "Onto the yellow plate: the orange. Onto the blue plate: the green apple."],
+    2: ["Place three fruits: the green apple on the pink plate, the orange on the yellow plate, the red "
+        "apple on the blue plate. Any order works.",
+        "put the green apple on the pink plate, the orange on the yellow one and the red apple on the blue "
+        "one, any order",
+        "The pink plate should get the green apple, the yellow plate the orange and the blue plate the red "
+        "apple, in any order.",
+        "The red apple has to be put on the blue plate, the green apple on the pink plate and the orange on "
+        "the yellow plate, in any order.",
+        "We'd like to see the green apple on the pink plate, the orange on the yellow plate and the red "
+        "apple on the blue plate, any order."],
+    3: ["Put four items on plates: the carrot on the blue plate, the orange on the yellow plate, the green "
+        "apple on the green plate and the red apple on the pink plate, in any order.",
+        "The carrot should be placed on the blue plate, the orange on the yellow plate, the green apple on "
+        "the green plate and the red apple on the pink plate, any order.",
+        "Onto the blue plate goes the carrot, onto the yellow plate the orange, onto the green plate the "
+        "green apple and onto the pink plate the red apple, in any order."],
+    4: ["Start with the yellow plate: put the green apple and the orange on it. Then put the carrot and the "
+        "red apple on the blue plate in any order.",
+        "The yellow plate has to get the green apple and the orange before anything goes on the blue plate; "
+        "after that, the carrot and the red apple go on the blue plate in whatever order.",
+        "First the yellow plate: the green apple and the orange go on it. Then the blue plate: the carrot "
+        "and the red apple, any order.",
+        "Ensure the orange and the green apple end up on the yellow plate before the red apple or the carrot "
+        "goes on the blue plate.",
+        "The orange and the green apple must be placed in the yellow plate first, and only then should the "
+        "carrot and the red apple be put in the blue plate."],
 }

@@ -22,6 +22,8 @@ from __future__ import annotations
 
 import re
 
+from nl2hltl2plan.language.grammar.restated import restated
+
 # hesitations, the one list of them (the handover reader's spoken step uses it too)
 HESITATION = r"(?:u+h+m*|u+m+|e+r+m*|hmm+|mm+)"
 _HESITATION = re.compile(rf"(?:^|(?<=[\s,]))(?:{HESITATION}|basically)(?=[\s,.;!?]|$)", re.I)
@@ -86,7 +88,7 @@ def everyday(text: str) -> str:
     text = _LAST_GROUP_ORDER.sub("order ", text)
     if not re.search(r"[.!?]\s+\S", text):  # in one sentence: what the remark is about is plain
         text = _CLOSING_FREE_ORDER.sub(", in any order", text)
-    return re.sub(r"\s+", " ", text).strip()
+    return restated(re.sub(r"\s+", " ", text).strip())  # places and end states restated (restated.py)
 
 
 def _without_need_heading(text: str) -> str:

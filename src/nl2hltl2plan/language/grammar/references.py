@@ -8,8 +8,8 @@ from nl2hltl2plan.domain.task_kinds import Kind
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.clauses import split_clauses
 from nl2hltl2plan.language.grammar.draft_tasks import Draft, TaskBuilder
-from nl2hltl2plan.language.grammar.drafts import incomplete, joins
-from nl2hltl2plan.language.grammar.frames import parse_frame
+from nl2hltl2plan.language.grammar.drafts import incomplete, joins, merge_items
+from nl2hltl2plan.language.grammar.frames import Frame, parse_frame
 from nl2hltl2plan.language.grammar.phrases import NP, parse_np, tokens
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
 
@@ -160,8 +160,9 @@ def new_tasks_from_ref(ref: str, b: TaskBuilder, text: str) -> list[BaseTaskSpec
         elif words and words[0] not in G.VERBS:
             continue
         fr = parse_frame(c_text, 0, "")
-        for it in fr.items:
-            if drafts and (joins(drafts[-1], fr, it) or incomplete(drafts[-1])):
+        _share_listed_destination(fr, c_text, b)
+        for k, it in enumerate(fr.items):
+            if k == 0 and drafts and (joins(drafts[-1], fr, it) or incomplete(drafts[-1])):
                 drafts[-1].frames.append((fr, it))
             else:
                 drafts.append(Draft(frames=[(fr, it)], start=0, end=0))
@@ -173,6 +174,23 @@ def new_tasks_from_ref(ref: str, b: TaskBuilder, text: str) -> list[BaseTaskSpec
             out.append(spec)
     b.unparsed = saved
     return out
+
+
+def _share_listed_destination(fr: Frame, clause: str, b: TaskBuilder) -> None:
+    """ "before you put the apple and the carrot on the plate": each listed object is a task of its own,
+    with the destination stated after the last one, as in a clause of the instruction (`merge_items`: a
+    container and its content stay one); not "the mug or the cup" (which one is not said) nor a list
+    with a knife and something sliced (the knife is the tool)."""
+    if len(fr.items) < 2 or re.search(r"\bor\b", clause, re.I):
+        return
+    names = {it.obj.entry.canonical for it in fr.items if it.obj is not None and it.obj.entry is not None}
+    if names & set(G.KNIVES) and names & set(G.SLICEABLE):
+        return
+    shared = [(p, np) for p, np in fr.items[-1].pps if p in G.DEST_PREPS]
+    for it in fr.items[:-1]:
+        if it.obj is not None and not any(p in G.DEST_PREPS for p, _ in it.pps):
+            it.pps.extend(shared)
+    fr.items = merge_items(fr.items, b)
 
 
 _STATES = {"clean_place", "heat_place", "cool_place"}

@@ -436,7 +436,11 @@ _DONE = (
 )
 # the words that open a reference the task comes after ("after X, Y", "right after X, Y", "once X, Y");
 # `sentences.after_ref` splits such a reference from its task
-AFTER_OPENER = r"(?:(?:only|right|just|immediately)\s+)?(?:after|once|when|following|upon)\s+"
+# ("having put the mug, Y": a perfect participle, not "having a mug in hand")
+AFTER_OPENER = (
+    r"(?:(?:only|right|just|immediately)\s+)?"
+    r"(?:after|once|when|following|upon|having(?!\s+(?:a|an|the|some|no|to)\b))\s+"
+)
 LEADING: list[tuple[re.Pattern[str], str]] = [
     (
         re.compile(
@@ -474,7 +478,8 @@ LEADING: list[tuple[re.Pattern[str], str]] = [
     (re.compile(r"^(?:begin|start)\s+(?:by|with)\s+", _F), FIRST),
     (
         re.compile(
-            r"^(?:in\s+any\s+order|at\s+any\s+time|anytime|simultaneously|meanwhile|in\s+the\s+meantime|"
+            r"^(?:in\s+any\s+order|at\s+any\s+time|any\s*time|at\s+whatever\s+time|simultaneously|meanwhile|"
+            r"in\s+the\s+meantime|in\s+no\s+(?:particular|specific|set)\s+order|in\s+whatever\s+order|"
             rf"at\s+the\s+same\s+time|in\s+parallel|independently|concurrently|{_WHENEVER})\b\s*[,:]?\s*",
             _F,
         ),
@@ -515,7 +520,8 @@ LEADING: list[tuple[re.Pattern[str], str]] = [
     (re.compile(r"^(?:your|the)\s+first\s+(?:job|task|chore|errand)\s*:\s*", _F), ""),
 ]
 _FREE_T = (
-    r"(?:at\s+any\s+time|in\s+any\s+order|any\s+order|in\s+any\s+sequence|anytime|any\s+time|whenever(?:\s+you\s+like)?|"
+    r"(?:at\s+any\s+time|at\s+whatever\s+time|in\s+any\s+order|any\s+order|in\s+any\s+sequence|anytime|any\s+time|"
+    r"whenever(?:\s+you\s+like)?|"
     r"in\s+whatever\s+order(?:\s+you\s+(?:like|want|prefer))?|whatever\s+order\s+(?:works|is\s+fine)|in\s+no\s+(?:particular|specific|set)\s+order|"
     r"(?:the\s+)?order\s+is\s+(?:up\s+to\s+you|your\s+call|yours\s+to\s+choose)|in\s+parallel|simultaneously|concurrently|"
     r"independently|at\s+your\s+(?:convenience|leisure))"

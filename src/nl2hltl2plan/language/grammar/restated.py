@@ -1,0 +1,240 @@
+"""Requests restated around their places or end states (issue 28), rewritten onto the plain "put X on Y"
+before the grammar's rules. Each rule rewrites only words whose object and place phrases the scene's
+lexicon names (`find_mentions`), so a sentence about anything else is left as it is:
+
+- "the yellow one": "one" stands for the head noun of the nearest earlier noun phrase in the same role
+  (a place after a place word, an object otherwise), kept only when "yellow plate" names something;
+- a header before a colon that counts the placements listed after it ("Place three fruits: the green
+  apple on the pink plate, ...") keeps only its verb, when the count, if it says one, is the number of
+  placements listed in that sentence;
+- a topic header ("Start with the yellow plate: put the green apple on it.", "Then the blue plate: the
+  carrot and the red apple, any order"): "it" in the clause is the topic; a clause of objects alone is
+  put on the topic; the order word stays ("start with" is "first");
+- the place as subject: "the yellow plate (has to) get(s) the green apple" is "put the green apple on
+  the yellow plate", and in the same sentence ", the blue plate the red apple" is one more;
+- the place fronted: "onto the blue plate goes the green apple", "on the pink plate put the green apple,
+  on the yellow plate the orange", "for the blue plate the carrot";
+- goals stated as a passive or an end state: "needs to be placed", "must be put", "ends up", "should
+  sit" before a place are "goes" (which `supply_put` reads), "make sure X is on Y" is "X goes on Y",
+  "I want to see X on Y" is "I want X on Y", an opening "By the end," is dropped (no earlier task);
+- an ordered clause about what goes where: "before anything goes on the blue plate" is "before you put
+  anything on the blue plate", "only after that should X be placed on Y" is "after that, put X on Y".
+"""
+
+from __future__ import annotations
+
+import re
+
+from nl2hltl2plan.language.grounding import Mention, find_mentions
+
+_PLACE = r"(?:on|onto|in|into|inside)"
+_NP = r"(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+){0,2}?"  # a short noun phrase; checked against the lexicon
+_ORDER = r"(?:(?:start|begin)\s+with|first(?:ly)?|then|next|after\s+that|finally|lastly)"
+_NUMBERS = {"two": 2, "three": 3, "four": 4, "five": 5, "six": 6}
+_CLAUSE_START = r"(?:^|(?<=[.;!?])\s+)"
+
+_ONE = re.compile(r"\b(?P<det>the|a)\s+(?P<adj>[a-z]+)\s+one\b(?!\s+(?:of|after|by)\b)", re.I)
+_COUNTED_HEADER = re.compile(
+    rf"{_CLAUSE_START}(?:(?P<verb>place|put|set|move|arrange|lay)\s+)?"
+    r"(?:(?P<count>two|three|four|five|six|\d)|these|the\s+following)\s+[a-z]+(?:\s+[a-z]+){0,3}?\s*:\s*",
+    re.I,
+)
+_TOPIC_HEADER = re.compile(
+    rf"{_CLAUSE_START}(?:(?P<order>{_ORDER})\s*,?\s+)?(?P<topic>the\s+[a-z]+(?:\s+[a-z]+){{0,2}}?)\s*:\s*"
+    r"(?P<clause>[^.;!?:]+)",
+    re.I,
+)
+_GETS = r"(?:(?:should|must|will|has\s+to|have\s+to|needs?\s+to)\s+(?:get|receive)|gets|receives)"
+_SUBJECT_PLACE = re.compile(
+    rf"(?:{_CLAUSE_START}|(?<=,)\s*(?:and\s+)?|\s+and\s+)(?P<place>the\s+[a-z]+(?:\s+[a-z]+)?)\s+{_GETS}\s+"
+    r"(?P<objs>(?:the|a|an)\s+[^,.;!?]+?)"
+    r"(?=\s+(?:before|after|until|once|when|then|first)\b|\s*[,.;!?]|\s+and\s+the\s+[a-z]+(?:\s+[a-z]+)?\s+"
+    rf"{_GETS}|$)",
+    re.I,
+)
+# ", the blue plate the red apple" after a place-as-subject clause: two noun phrases side by side
+_PLACE_OBJECT_PAIR = re.compile(
+    rf"(?P<join>,\s*(?:and\s+)?|\s+and\s+)(?P<place>{_NP})\s+(?P<obj>{_NP})(?=\s*[,.;!?]|\s+and\s|$)", re.I
+)
+_FRONTED_PLACE = re.compile(
+    rf"(?P<lead>{_CLAUSE_START}|,\s*(?:and\s+)?|\s+and\s+)(?P<order>{_ORDER}\s*,?\s+)?"
+    rf"(?P<prep>{_PLACE}|for)\s+(?P<place>the\s+[a-z]+(?:\s+[a-z]+)??)\s*[,:]?\s+(?P<order2>first\s+)?"
+    r"(?:(?:goes|go|put|place|set|lay)\s+)?(?P<objs>(?:the|a|an)\s+[^,.;!?]+?)"
+    r"(?=\s*[,.;!?]|\s+(?:in\s+any|in\s+whatever|in\s+either)\b|\s+and\s+(?:on|onto|in|into|for)\s+the\b|$)",
+    re.I,
+)
+_PASSIVE_GOAL = re.compile(
+    r"\s+(?:(?:needs?|has|have|is|are)\s+to\s+be\s+(?:placed|put|set|moved|laid|dropped)|"
+    r"(?:must|should|will|shall|can)\s+be\s+(?:placed|put|set|moved|laid|dropped)|"
+    r"(?:(?:should|must|has\s+to|have\s+to|needs?\s+to|will)\s+)?(?:ends?\s+up|sits?|rests?)|"
+    r"(?:should|must|has\s+to|have\s+to|needs?\s+to|will)\s+(?:end\s+up|sit|rest))\s+"
+    rf"(?={_PLACE}\s)",
+    re.I,
+)
+_MAKE_SURE = re.compile(r"\b(?:make\s+sure|ensure|see\s+to\s+it)(?:\s+that)?\s+(?P<rest>[^.;!?]+)", re.I)
+_IS_ON = re.compile(rf"\s+(?:is|are)\s+(?={_PLACE}\s)", re.I)
+_WANT_TO_SEE = re.compile(r"\b((?:I|we)(?:'d|\s+would)?\s+(?:like|want|love|need))\s+to\s+see\b", re.I)
+_END_STATE_OPENER = re.compile(
+    r"^\s*(?:by|at|in)\s+the\s+end|^\s*(?:when|once)\s+you(?:'re|\s+are)\s+(?:finished|done)", re.I
+)
+_CLAUSE_GOES = re.compile(
+    r"\b(?P<rel>before|after|until|once|when)\s+"
+    r"(?P<objs>(?:the|a|an)\s+[^,.;!?]+?|anything|everything|any\s+of\s+them)"
+    rf"\s+(?:goes|go|is\s+put|are\s+put|gets?\s+put|lands?)\s+(?P<prep>{_PLACE})\s+(?=the\s)",
+    re.I,
+)
+_ALTERNATIVES = re.compile(r"\s+or\s+(?=(?:the|a|an)\s)", re.I)  # "the carrot or the red apple"
+_INVERTED_AFTER = re.compile(
+    r"\b(?:only\s+)?(?P<rel>after\s+(?:that|this)|then|afterwards)\s*,?\s+(?:should|must|can|may|will)\s+"
+    rf"(?P<objs>(?:the|a|an)\s+[^,.;!?]+?)\s+(?:be\s+(?:placed|put|set|moved)|go)\s+(?={_PLACE}\s)",
+    re.I,
+)
+
+
+def restated(text: str) -> str:
+    """The text with the restated requests above written as plain placements."""
+    text = _ONE.sub(lambda m: _one_named(text, m), text)
+    text = _COUNTED_HEADER.sub(lambda m: _without_header(text, m), text)
+    text = _TOPIC_HEADER.sub(_topic_clause, text)
+    text = _subject_places(text)
+    text = _FRONTED_PLACE.sub(_fronted, text)
+    text = _WANT_TO_SEE.sub(r"\1", text)
+    text = _MAKE_SURE.sub(lambda m: _IS_ON.sub(lambda i: _goes(m["rest"], i), m["rest"]), text)
+    text = _PASSIVE_GOAL.sub(lambda m: _goes(text, m), text)
+    text = _CLAUSE_GOES.sub(_you_put, text)
+    text = _INVERTED_AFTER.sub(_after_then_put, text)
+    opener = _END_STATE_OPENER.match(text)
+    if opener and text[opener.end() :].lstrip().startswith(","):
+        text = text[opener.end() :].lstrip(" ,")
+    return text
+
+
+def _is_named(phrase: str, whole: bool = False) -> bool:
+    """Does the phrase start with (or, with `whole`, consist of) a name the lexicon knows?"""
+    phrase = phrase.strip()
+    found = find_mentions(phrase)
+    if not found:
+        return False
+    head = found[0]
+    if whole:
+        alone = len(found) == 1 and phrase[head.char_end :].strip() == ""
+        return alone and _det_only(phrase[: head.char_start])
+    return _det_only(phrase[: head.char_start])
+
+
+def _det_only(words: str) -> bool:
+    return re.fullmatch(r"\s*(?:(?:the|a|an)\s+)?", words, re.I) is not None
+
+
+def _in_place_role(text: str, at: int) -> bool:
+    return re.search(rf"\b{_PLACE}\s+(?:the\s+|a\s+)?$", text[:at], re.I) is not None
+
+
+def _one_named(text: str, m: re.Match[str]) -> str:
+    """ "the yellow one" -> "the yellow plate" from the nearest earlier noun phrase in the same role."""
+    role = _in_place_role(text, m.start())
+    earlier: list[Mention] = [
+        x for x in find_mentions(text[: m.start()]) if _in_place_role(text, x.char_start) == role
+    ]
+    if not earlier:
+        return m[0]
+    candidate = f"{m['adj']} {earlier[-1].surface.split()[-1]}"
+    return f"{m['det']} {candidate}" if _is_named(candidate, whole=True) else m[0]
+
+
+def _without_header(text: str, m: re.Match[str]) -> str:
+    """The header's verb alone when the count fits the placements listed in its sentence."""
+    sentence = re.split(r"[.;!?]", text[m.end() :], maxsplit=1)[0]
+    placements = re.findall(rf"\b{_PLACE}\s+the\s+", sentence, re.I)
+    count = m["count"]
+    if count and (_NUMBERS.get(count.lower()) or int(count)) != len(placements):
+        return m[0]
+    if len(placements) < 2 or not _is_named(sentence):
+        return m[0]
+    lead = m[0][: len(m[0]) - len(m[0].lstrip())]
+    return f"{lead}{m['verb'] or 'put'} "
+
+
+def _topic_clause(m: re.Match[str]) -> str:
+    """ "Start with the yellow plate: put the green apple on it" -> "First put the green apple on the
+    yellow plate"; a clause of objects alone is put on the topic."""
+    topic, clause = m["topic"], m["clause"]
+    if not _is_named(topic, whole=True):
+        return m[0]
+    lead = m[0][: len(m[0]) - len(m[0].lstrip())]
+    order = (m["order"] or "").lower()
+    order = "first " if order.startswith(("start", "begin")) else (f"{order}, " if order else "")
+    pronoun = re.search(r"\b(?:it|them)\b", clause, re.I)
+    if pronoun:
+        body = clause[: pronoun.start()] + _lower_article(topic) + clause[pronoun.end() :]
+    else:
+        objs, rest = re.match(r"([^,]*)(.*)", clause).groups()  # type: ignore[union-attr]
+        if not _is_named(objs) or re.search(rf"\b{_PLACE}\b", objs, re.I):
+            return m[0]
+        body = f"put {objs.strip()} on {_lower_article(topic)}{rest}"
+    return f"{lead}{order}{body}"
+
+
+def _subject_places(text: str) -> str:
+    """ "the yellow plate gets X, the blue plate Y" -> "put X on the yellow plate, put Y on the blue
+    plate"."""
+    found = [
+        m
+        for m in _SUBJECT_PLACE.finditer(text)
+        if _is_named(m["place"], whole=True) and _is_named(m["objs"])
+    ]
+    out, pos = [], 0
+    for k, m in enumerate(found):
+        lead = m[0][: m.start("place") - m.start()]  # "and " or the space before the clause
+        out.append(f"{text[pos : m.start()]}{lead}put {m['objs']} on {_lower_article(m['place'])}")
+        sentence_end = re.search(r"[.;!?]|$", text[m.end() :])
+        end = m.end() + (sentence_end.start() if sentence_end else 0)
+        end = min(end, found[k + 1].start()) if k + 1 < len(found) else end
+        out.append(_PLACE_OBJECT_PAIR.sub(_pair_put, text[m.end() : end]))
+        pos = end
+    return "".join(out) + text[pos:]
+
+
+def _pair_put(p: re.Match[str]) -> str:
+    """ ", the blue plate the red apple" after a place-as-subject clause: "put the red apple on ..."."""
+    if _is_named(p["place"], whole=True) and _is_named(p["obj"], whole=True):
+        return f"{p['join']}put {p['obj']} on {_lower_article(p['place'])}"
+    return p[0]
+
+
+def _fronted(m: re.Match[str]) -> str:
+    """ "on the pink plate put the green apple" -> "put the green apple on the pink plate"."""
+    if not (_is_named(m["place"], whole=True) and _is_named(m["objs"])):
+        return m[0]
+    prep = "on" if m["prep"].lower() == "for" else m["prep"].lower()
+    order = (m["order"] or m["order2"] or "").strip(" ,")
+    return f"{m['lead']}{order + ' ' if order else ''}put {m['objs']} {prep} {_lower_article(m['place'])}"
+
+
+def _lower_article(phrase: str) -> str:
+    """ "The blue plate" moved inside a sentence: "the blue plate"."""
+    return re.sub(r"^(The|A|An)\b", lambda a: a[0].lower(), phrase)
+
+
+def _goes(text: str, m: re.Match[str]) -> str:
+    """ " goes " where an object is named right before the goal's verb."""
+    before = find_mentions(text[: m.start()])
+    return " goes " if before and before[-1].char_end == m.start() else m[0]
+
+
+def _after_then_put(m: re.Match[str]) -> str:
+    """ "only after that should X be placed on Y" -> "after that, put X on Y"."""
+    return f"{m['rel']}, put {m['objs']} " if _is_named(m["objs"]) else m[0]
+
+
+def _you_put(m: re.Match[str]) -> str:
+    """ "before anything goes on Y" -> "before you put anything on Y"; "before X or Z goes on Y" waits for
+    both, so it is "before you put X and Z on Y" ("after X or Z" is left: which one is not said)."""
+    objs = m["objs"]
+    if re.match(r"(?:the|a|an)\s", objs, re.I) and not _is_named(objs):
+        return m[0]
+    if _ALTERNATIVES.search(objs):
+        if m["rel"].lower() not in {"before", "until"}:
+            return m[0]
+        objs = _ALTERNATIVES.sub(" and ", objs)
+    return f"{m['rel']} you put {objs} {m['prep']} "
