@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import pytest
 
+from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.accounting import account
 from nl2hltl2plan.language.grammar import parse_instruction
 from nl2hltl2plan.language.grammar.restated import restated
@@ -51,6 +52,14 @@ READ = [
     # "before X or Y goes in Z" waits for both
     ("Put the egg in the fridge before the mug or the cup goes in the sink.",
      [CUP, EGG, MUG], {(EGG, MUG), (EGG, CUP)}),
+    # the lead's (session 12): a bare place as subject, "lands", "load X with", an instructor's opener,
+    # and a closing "I don't mind the order"
+    ("Fridge gets the egg, sink gets the mug.", [EGG, MUG], set()),
+    ("Make sure the egg lands in the fridge.", [EGG], set()),
+    ("Load the fridge with the egg and the apple, then put the mug in the sink.",
+     [APPLE, EGG, MUG], {(EGG, MUG), (APPLE, MUG)}),
+    ("You'll want to put the egg in the fridge and the mug in the sink; I don't mind the order.",
+     [EGG, MUG], set()),
 ]
 
 
@@ -72,6 +81,8 @@ NEAR_MISSES = [
     "In the kitchen, put the mug in the sink.",
     # a state outside "make sure" describes where a thing is, it is no goal
     "The mug is in the sink. Put the egg in the fridge.",
+    # "fill the mug with water": water is nothing the scene has
+    "Fill the mug with water.",
 ]
 
 
@@ -79,6 +90,11 @@ NEAR_MISSES = [
 def test_near_misses_are_refused_not_guessed(text):
     _, _, unread = read(text)
     assert unread, text
+
+
+def test_a_closing_free_order_after_then_is_a_contradiction():
+    with pytest.raises(HTTError, match="contradictory ordering"):
+        read("Put the egg in the fridge, then the mug in the sink; I don't mind the order.")
 
 
 def test_rewrites_leave_other_text_alone():

@@ -43,8 +43,8 @@ def unordered_steps(
     toks: list[tuple[str, int, int]], in_mention: set[int], parse: ParseUsage
 ) -> list[Unread]:
     """Order words: with several base tasks and no word that frees the order, a sequence word needs an
-    ordering between them; a phrase that frees an order ("in either order", "meanwhile") needs a pair of
-    base tasks the parse leaves unordered."""
+    ordering between them; a phrase that frees an order ("in either order", "the order is up to you")
+    needs a pair of base tasks the parse leaves unordered."""
     cats = [categories(w) for i, (w, _, _) in enumerate(toks) if i not in in_mention]
     plain = [w for w, _, _ in toks]
     words = [
@@ -64,11 +64,11 @@ def unordered_steps(
 
 
 # phrases that free the order of some pair of tasks ("then B - either order is ok" frees nothing when the
-# parse orders every pair: the phrase was not read)
+# parse orders every pair: the phrase was not read); "at any time" / "meanwhile" free one task from the
+# tasks before it, and a later "after this" may still order it, so they are not among them
 _FREES_A_PAIR = re.compile(
     r"\b(?:(?:in )?(?:any|either|whichever|whatever) (?:order|sequence)|no (?:particular|specific|set) order"
-    r"|order (?:does ?n[o']?t matter|is (?:up to you|free|your call))|simultaneously|concurrently|meanwhile"
-    r"|at the same time|at any (?:time|point)|any ?time)\b"
+    r"|order (?:does ?n[o']?t matter|is (?:up to you|free|your call)))\b"
 )
 
 

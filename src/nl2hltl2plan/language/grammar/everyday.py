@@ -65,9 +65,12 @@ _PUT_THEM_THERE = re.compile(
 )
 _BELONGS = re.compile(r"\bbelongs?\s+(?:in|on|to)\b", re.I)
 # a free-order remark closing the request, after a comma or as its own clause: ", order doesn't matter",
-# "; any order" (read as the ", in any order" that the rules read)
+# "; any order", "; I don't care about the order", "the order is your call" (read as the ", in any order"
+# that the rules read)
 _CLOSING_FREE_ORDER = re.compile(
-    rf"\s*[,;.]\s*(?:(?:the\s+)?order\s+(?:does\s*n[o']?t|does\s+not)\s+matter|{_FREE_ORDER})\s*[.!]?\s*$",
+    rf"\s*[,;.]\s*(?:(?:the\s+)?order\s+(?:does\s*n[o']?t|does\s+not)\s+matter|{_FREE_ORDER}"
+    r"|(?:i|we)\s+(?:do\s*n[o']?t|do\s+not)\s+(?:care|mind)(?:\s+about)?\s+(?:the\s+)?order"
+    r"|(?:the\s+)?order\s+is\s+(?:your\s+call|free|yours\s+to\s+choose))\s*[.!]?\s*$",
     re.I,
 )
 

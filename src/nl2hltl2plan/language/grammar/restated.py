@@ -10,12 +10,13 @@ lexicon names (`find_mentions`), so a sentence about anything else is left as it
 - a topic header ("Start with the yellow plate: put the green apple on it.", "Then the blue plate: the
   carrot and the red apple, any order"): "it" in the clause is the topic; a clause of objects alone is
   put on the topic; the order word stays ("start with" is "first");
-- the place as subject: "the yellow plate (has to) get(s) the green apple" is "put the green apple on
+- the place as subject: "(the) yellow plate (has to) get(s) the green apple" is "put the green apple on
   the yellow plate", and in the same sentence ", the blue plate the red apple" is one more;
+- "load / fill / stock the yellow plate with X and Y" is "put X and Y on the yellow plate";
 - the place fronted: "onto the blue plate goes the green apple", "on the pink plate put the green apple,
   on the yellow plate the orange", "for the blue plate the carrot";
 - goals stated as a passive or an end state: "needs to be placed", "must be put", "ends up", "should
-  sit" before a place are "goes" (which `supply_put` reads), "make sure X is on Y" is "X goes on Y",
+  sit", "lands" before a place are "goes" (which `supply_put` reads), "make sure X is on Y" is "X goes on Y",
   "I want to see X on Y" is "I want X on Y", an opening "By the end," is dropped (no earlier task);
 - an ordered clause about what goes where: "before anything goes on the blue plate" is "before you put
   anything on the blue plate", "only after that should X be placed on Y" is "after that, put X on Y".
@@ -46,7 +47,7 @@ _TOPIC_HEADER = re.compile(
 )
 _GETS = r"(?:(?:should|must|will|has\s+to|have\s+to|needs?\s+to)\s+(?:get|receive)|gets|receives)"
 _SUBJECT_PLACE = re.compile(
-    rf"(?:{_CLAUSE_START}|(?<=,)\s*(?:and\s+)?|\s+and\s+)(?P<place>the\s+[a-z]+(?:\s+[a-z]+)?)\s+{_GETS}\s+"
+    rf"(?:{_CLAUSE_START}|(?<=,)\s*(?:and\s+)?|\s+and\s+)(?P<place>(?:the\s+)?[a-z]+(?:\s+[a-z]+)?)\s+{_GETS}\s+"
     r"(?P<objs>(?:the|a|an)\s+[^,.;!?]+?)"
     r"(?=\s+(?:before|after|until|once|when|then|first)\b|\s*[,.;!?]|\s+and\s+the\s+[a-z]+(?:\s+[a-z]+)?\s+"
     rf"{_GETS}|$)",
@@ -66,8 +67,8 @@ _FRONTED_PLACE = re.compile(
 _PASSIVE_GOAL = re.compile(
     r"\s+(?:(?:needs?|has|have|is|are)\s+to\s+be\s+(?:placed|put|set|moved|laid|dropped)|"
     r"(?:must|should|will|shall|can)\s+be\s+(?:placed|put|set|moved|laid|dropped)|"
-    r"(?:(?:should|must|has\s+to|have\s+to|needs?\s+to|will)\s+)?(?:ends?\s+up|sits?|rests?)|"
-    r"(?:should|must|has\s+to|have\s+to|needs?\s+to|will)\s+(?:end\s+up|sit|rest))\s+"
+    r"(?:(?:should|must|has\s+to|have\s+to|needs?\s+to|will)\s+)?(?:ends?\s+up|sits?|rests?|lands?)|"
+    r"(?:should|must|has\s+to|have\s+to|needs?\s+to|will)\s+(?:end\s+up|sit|rest|land))\s+"
     rf"(?={_PLACE}\s)",
     re.I,
 )
@@ -81,6 +82,12 @@ _CLAUSE_GOES = re.compile(
     r"\b(?P<rel>before|after|until|once|when)\s+"
     r"(?P<objs>(?:the|a|an)\s+[^,.;!?]+?|anything|everything|any\s+of\s+them)"
     rf"\s+(?:goes|go|is\s+put|are\s+put|gets?\s+put|lands?)\s+(?P<prep>{_PLACE})\s+(?=the\s)",
+    re.I,
+)
+# "load the yellow plate with the green apple and the orange": the things go on the place
+_LOAD_WITH = re.compile(
+    r"\b(?:load|fill|stock)\s+(?P<place>the\s+[a-z]+(?:\s+[a-z]+)?)\s+with\s+(?P<objs>(?:the|a|an)\s+[^,.;!?]+?)"
+    r"(?=\s+(?:first|then|next|before|after|once|when)\b|\s*[,.;!?]|$)",
     re.I,
 )
 _ALTERNATIVES = re.compile(r"\s+or\s+(?=(?:the|a|an)\s)", re.I)  # "the carrot or the red apple"
@@ -98,6 +105,7 @@ def restated(text: str) -> str:
     text = _TOPIC_HEADER.sub(_topic_clause, text)
     text = _subject_places(text)
     text = _FRONTED_PLACE.sub(_fronted, text)
+    text = _LOAD_WITH.sub(_loaded, text)
     text = _WANT_TO_SEE.sub(r"\1", text)
     text = _MAKE_SURE.sub(lambda m: _IS_ON.sub(lambda i: _goes(m["rest"], i), m["rest"]), text)
     text = _PASSIVE_GOAL.sub(lambda m: _goes(text, m), text)
@@ -209,6 +217,13 @@ def _fronted(m: re.Match[str]) -> str:
     prep = "on" if m["prep"].lower() == "for" else m["prep"].lower()
     order = (m["order"] or m["order2"] or "").strip(" ,")
     return f"{m['lead']}{order + ' ' if order else ''}put {m['objs']} {prep} {_lower_article(m['place'])}"
+
+
+def _loaded(m: re.Match[str]) -> str:
+    """ "load the yellow plate with X and Y" -> "put X and Y on the yellow plate"."""
+    if not (_is_named(m["place"], whole=True) and _is_named(m["objs"])):
+        return m[0]
+    return f"put {m['objs']} on {m['place']}"
 
 
 def _lower_article(phrase: str) -> str:
