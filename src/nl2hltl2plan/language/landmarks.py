@@ -15,7 +15,8 @@ from nl2hltl2plan.language.parse_usage import ParseUsage
 # the words before a place that make it a landmark ("next to", "beside", "to the left of")
 NEAR_WORDS = frozenset("near beside besides by next between behind against".split())
 _NEAR_TWO = {
-    ("next", "to"), ("close", "to"), ("near", "to"), ("front", "of"), ("left", "of"), ("right", "of"),
+    ("next", "to"), ("close", "to"), ("closest", "to"), ("nearest", "to"), ("closer", "to"), ("near", "to"),
+    ("front", "of"), ("left", "of"), ("right", "of"),
 }  # fmt: skip
 
 

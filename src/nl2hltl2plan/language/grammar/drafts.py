@@ -20,6 +20,7 @@ from nl2hltl2plan.language.grammar.frames import (
     parse_frame,
     puts_into,
     same,
+    two_places,
 )
 from nl2hltl2plan.language.grammar.phrases import NP, tokens
 from nl2hltl2plan.language.grammar.sentences import Sentence
@@ -130,6 +131,9 @@ class DraftBuilder:
             return True
         if fr.choice:
             unparsed.append(f"{c_text} (a choice between objects: say which one)")
+            return True
+        if places := next((w for it in fr.items if (w := two_places(it))), ""):
+            unparsed.append(f"{c_text} (two places it could go: {places}; say which)")
             return True
         if fr.cls == "light" and not any(
             (it.obj is not None and it.obj.is_lamp()) or any(np.is_lamp() for _, np in it.pps)

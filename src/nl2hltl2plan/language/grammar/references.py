@@ -9,7 +9,7 @@ from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.clauses import split_clauses
 from nl2hltl2plan.language.grammar.draft_tasks import Draft, TaskBuilder
 from nl2hltl2plan.language.grammar.drafts import incomplete, joins
-from nl2hltl2plan.language.grammar.frames import parse_frame
+from nl2hltl2plan.language.grammar.frames import parse_frame, two_places
 from nl2hltl2plan.language.grammar.phrases import NP, parse_np, tokens
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
 
@@ -151,6 +151,7 @@ def new_tasks_from_ref(ref: str, b: TaskBuilder, text: str) -> list[BaseTaskSpec
     """A reference that names no earlier task but states one ("after picking up the box and placing it on
     the armchair", "after the mug is in the sink"): parse it as clauses of its own."""
     drafts: list[Draft] = []
+    unread: list[str] = []
     ref = _PLACED_STATE.sub(lambda m: _placement(m, text), ref.strip())
     for c_text, _s, _e, _j in split_clauses(_YOU.sub("", ref)):  # "after you put ...": a clause of its own
         words = [w for w, _, _ in tokens(c_text)]
@@ -160,6 +161,9 @@ def new_tasks_from_ref(ref: str, b: TaskBuilder, text: str) -> list[BaseTaskSpec
         elif words and words[0] not in G.VERBS:
             continue
         fr = parse_frame(c_text, 0, "")
+        if places := next((w for it in fr.items if (w := two_places(it))), ""):
+            unread.append(f"{c_text} (two places it could go: {places}; say which)")
+            continue
         for it in fr.items:
             if drafts and (joins(drafts[-1], fr, it) or incomplete(drafts[-1])):
                 drafts[-1].frames.append((fr, it))
@@ -171,7 +175,7 @@ def new_tasks_from_ref(ref: str, b: TaskBuilder, text: str) -> list[BaseTaskSpec
         spec = b.spec(d, ref)
         if spec is not None:
             out.append(spec)
-    b.unparsed = saved
+    b.unparsed = saved + unread
     return out
 
 
@@ -184,7 +188,24 @@ def _differ(new: BaseTaskSpec, old: BaseTaskSpec) -> bool:
         return True
     if new.receptacle and old.receptacle and not set(new.receptacle) & set(old.receptacle):
         return True
+    if (new.kind == "place_two") != (old.kind == "place_two"):
+        return True  # "after you put two bars of soap in a cabinet" is not "put a bar of soap in a cabinet"
     return new.kind in _STATES and old.kind in _STATES and new.kind != old.kind
+
+
+# where a treatment is done: a reference that puts its object there states the treatment, not a task
+_APPLIANCE = {"clean_place": "SinkBasin", "heat_place": "Microwave", "cool_place": "Fridge"}
+
+
+def restated_own_tasks(ref: str, b: TaskBuilder, text: str) -> list[BaseTaskSpec]:
+    """A reference that names only its own clause's task but states a whole task ("put the soap on the
+    toilet before you put wet soap on the toilet"): a task cannot come before itself, so the reference
+    is a second task. A reference that only treats the object ("after refrigerating the pan", "after
+    heating it in the microwave") states no task of its own: none."""
+    new = new_tasks_from_ref(ref, b, text)
+    if any(_APPLIANCE.get(n.kind) in (n.receptacle or []) for n in new):
+        return []
+    return new
 
 
 def stated_tasks(ref: str, named: list[BaseTaskSpec], b: TaskBuilder, text: str) -> list[BaseTaskSpec]:
