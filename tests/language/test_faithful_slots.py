@@ -88,3 +88,44 @@ def test_a_reference_that_only_treats_the_object_stays_a_state():
     assert summaries(tasks) == ["heat_place Mug -> Cabinet"] and not order and not unread
     tasks, order, unread = read("After refrigerating the pan, put it on the counter.")
     assert summaries(tasks) == ["cool_place Pan -> CounterTop"] and not order and not unread
+
+
+# ----- "section" is a slice, as a verb and as a noun -------------------------------------------------
+def test_section_slices():
+    tasks, _, unread = read("Put two potatoes in the sink and section them.")
+    assert summaries(tasks) == ["place_two 2x Potato(sliced) -> SinkBasin"] and not unread
+    tasks, _, unread = read("Drop a warm tomato section in the garbage can.")
+    assert summaries(tasks) == ["heat_place Tomato(sliced) -> GarbageCan"] and not unread
+
+
+def test_a_section_of_a_place_slices_nothing():
+    """Near miss: the section of a fridge is where in it."""
+    tasks, _, unread = read("Put the egg in the bottom section of the fridge.")
+    assert summaries(tasks) == ["place Egg -> Fridge"] and not unread
+
+
+# ----- "the coffee maker mug spot": the spot of the coffee maker, not a mug --------------------------
+def test_a_compound_ending_in_a_spot_names_the_place_that_has_it():
+    tasks, _, unread = read("Set the mug down in the coffee machine mug spot.")
+    assert summaries(tasks) == ["place Mug -> CoffeeMachine"] and not unread
+
+
+def test_a_compound_names_its_last_noun_otherwise():
+    """Near miss: "the glass bowl" is a bowl."""
+    tasks, _, _ = read("Put the glass bowl in the cabinet.")
+    assert summaries(tasks) == ["place Bowl -> Cabinet"]
+
+
+# ----- "refrigerate X in a bowl": the bowl holds it in the fridge ------------------------------------
+def test_a_treatment_in_a_movable_container_keeps_it_in_the_appliance():
+    tasks, _, unread = read("Refrigerate the potato slice in a bowl.")
+    assert summaries(tasks) == ["place_in_container Potato(sliced) in Bowl -> Fridge"] and not unread
+    tasks, _, unread = read("Warm an egg up in a bowl.")
+    assert summaries(tasks) == ["place_in_container Egg in Bowl -> Microwave"] and not unread
+
+
+def test_a_treatment_that_then_leaves_the_appliance_is_refused():
+    """Near miss: the apple leaves the fridge in the bowl; no task kind keeps both the chilling and the
+    bowl, so the word 'chill' is named rather than dropped."""
+    tasks, _, unread = read("Chill the apple in a bowl, then put it on the counter.")
+    assert any("chill" in u for u in unread), tasks

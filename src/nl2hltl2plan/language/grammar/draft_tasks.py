@@ -353,12 +353,22 @@ def _read_destination(r: _Reading, fr: Frame, it: Item) -> None:
     movable = [np for np in recs if np.is_movable_receptacle()]
     fixed = [np for np in recs if not np.is_movable_receptacle()]
     obj = r.obj
+    held = obj is not None and not obj.is_movable_receptacle()
+    if fr.cls in _APPLIANCE_NP and movable and not fixed and held:
+        # "refrigerate a tomato slice in a bowl": the bowl holds it in the fridge, it is no destination
+        r.container = movable[0]
+        r.dests += [r.container, parse_np(_APPLIANCE_NP[fr.cls])]
+        return
     if obj is not None and r.container is None and not obj.is_movable_receptacle() and movable and fixed:
         # "place the spoon in a cup to the counter", "place the watch on the table on a plate"
         r.container = movable[0]
         r.dests.append(r.container)
         dst = fixed[-1]
     r.dests.append(dst)
+
+
+# the appliance a verb of heating or cooling does its work in
+_APPLIANCE_NP = {"heat": "microwave", "cool": "fridge"}
 
 
 def _unholdable(obj: NP) -> bool:

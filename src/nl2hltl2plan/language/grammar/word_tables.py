@@ -70,7 +70,7 @@ _VERBS: dict[str, tuple[str, ...]] = {
     "clean": ("wash", "rinse", "clean", "scrub", "wet", "cleanse", "moisten"),
     "heat": ("heat", "warm", "cook", "microwave", "bake", "toast", "boil", "reheat"),
     "cool": ("chill", "cool", "refrigerate", "freeze", "frost"),
-    "slice": ("slice", "cut", "chop", "dice"),
+    "slice": ("slice", "cut", "chop", "dice", "section"),
     "fill": ("fill",),
     "light": ("turn", "switch", "lit", "light", "toggle", "power", "illuminate"),
     "examine": (
@@ -388,7 +388,10 @@ for _w in ("sliced", "cut", "chopped", "diced"):
 # and a knife in the trash"), as in ALFRED's slicing tasks, whose goal is the slice
 SLICEABLE = grounding.SLICEABLE
 KNIVES = {"Knife", "ButterKnife"}
-SLICE_NOUNS = {"slice", "slices", "piece", "pieces", "wedge", "wedges", "chunk", "chunks", "bit", "bits"}
+SLICE_NOUNS = {
+    "slice", "slices", "piece", "pieces", "wedge", "wedges", "chunk", "chunks", "bit", "bits", "section",
+    "sections",
+}  # fmt: skip
 WATER_WORDS = {"water"}
 
 # counts
