@@ -129,3 +129,18 @@ def test_a_treatment_that_then_leaves_the_appliance_is_refused():
     bowl, so the word 'chill' is named rather than dropped."""
     tasks, _, unread = read("Chill the apple in a bowl, then put it on the counter.")
     assert any("chill" in u for u in unread), tasks
+
+
+# ----- a verb of slicing says where the thing is cut, not where it goes -------------------------------
+def test_slicing_in_a_place_states_no_destination():
+    for text in ("Cut the potato in the pan into slices.", "Slice up the tomato inside the bowl."):
+        tasks, _, unread = read(text)
+        assert not tasks and unread, (text, tasks)
+
+
+def test_slicing_into_a_place_or_then_placing_still_reads():
+    """Near misses: "into" is a direction; a place where it is cut is no destination left unread."""
+    tasks, _, unread = read("Slice the potato into the pan.")
+    assert summaries(tasks) == ["place Potato(sliced) -> Pan"] and not unread
+    tasks, _, unread = read("Cut the lettuce on the counter, then put it in the fridge.")
+    assert summaries(tasks) == ["place Lettuce(sliced) -> Fridge"] and not unread

@@ -230,7 +230,7 @@ def _locative(
     if toks[i][0] == "with" and i > 0 and toks[i - 1][0] in _DONE_WORDS:
         return False  # "when you are done with the mug": a task the mug is in, not where a thing is
     clause = _clause_span(instruction, toks[start][1])
-    if any("verb_take" in categories(w) for w, s, _ in toks if clause[0] <= s < clause[1]):
+    if any({"verb_take", "verb_sliced"} & categories(w) for w, s, _ in toks if clause[0] <= s < clause[1]):
         return True
     near = places + implied if toks[i][0] in NEAR_WORDS else places
     return any(clause[0] <= o.char_start < clause[1] and o.start not in (m.start, start) for o in near)

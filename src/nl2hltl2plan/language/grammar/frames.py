@@ -249,8 +249,8 @@ DIRECTIONAL = {
 def dest_of(item: Item, cls: str = "") -> NP | None:
     """The destination of one clause item: the receptacle after to/into/onto/in/on... With a verb of taking
     (`cls` "pick") only a direction counts ("take the towel to the hamper"); "pick up the card on the
-    couch" says where the card is."""
-    if cls == "pick":
+    couch" says where the card is; so does a verb of slicing ("slice the apple in the pot")."""
+    if cls in {"pick", "slice"}:
         item = Item(item.obj, [(p, np) for p, np in item.pps if p in DIRECTIONAL])
     last = [np for p, np in item.pps if p == THEN_TO]
     if last:
