@@ -6,6 +6,7 @@ must not fire; a text that is truly ambiguous must be refused, naming the proble
 from __future__ import annotations
 
 from nl2hltl2plan.language.accounting import account
+from nl2hltl2plan.language.grammar import parse_instruction as grammar_parse
 from nl2hltl2plan.language.learned.inference import parse_instruction
 from nl2hltl2plan.language.task_specs import transitive_closure
 
@@ -144,3 +145,24 @@ def test_slicing_into_a_place_or_then_placing_still_reads():
     assert summaries(tasks) == ["place Potato(sliced) -> Pan"] and not unread
     tasks, _, unread = read("Cut the lettuce on the counter, then put it in the fridge.")
     assert summaries(tasks) == ["place Lettuce(sliced) -> Fridge"] and not unread
+
+
+# ----- a clause the tasks do not cover is named, not glued to the clause before ------------------------
+def test_a_request_to_perform_something_unnamed_is_refused():
+    tasks, _, unread = read("Wash the cloth and put it in the drawer, and finally to perform an action fast.")
+    assert any("perform" in u for u in unread), tasks
+
+
+def test_in_any_order_over_what_reads_as_one_task_is_not_one_task():
+    """The grammar alone refuses it; the whole reader gives two tasks or refuses, never one task."""
+    text = "Rinse a cloth and put it in the drawer and rinse the cloth and put it in the drawer in any order."
+    g = grammar_parse(text, KITCHEN, "kitchen")
+    assert any("in any order" in u for u in g.unparsed)
+    tasks, order, unread = read(text)
+    assert unread or (summaries(tasks) == ["clean_place Cloth -> Drawer"] * 2 and not order)
+
+
+def test_in_any_order_over_a_list_is_a_free_group():
+    """Near miss: two objects listed for one verb are two tasks whose order is free."""
+    g = grammar_parse("Put the fork and the spoon in the drawer in any order.", KITCHEN, "kitchen")
+    assert len(g.tasks) == 2 and not g.unparsed and not g.before

@@ -247,6 +247,9 @@ class DraftBuilder:
         if not sentence_units:
             return
         _refuse_free_and_ordered(st.sentence, sentence_units)
+        if _one_task_in_any_order(st.sentence, sentence_units, self.out.drafts):
+            why = "('in any order', but its clauses read as one task)"
+            self.b.unparsed.append(f"{st.sentence.text.strip()} {why}")
         for kind, ref in st.sentence.markers:
             for u in sentence_units:
                 u.markers.append((kind, ref))
@@ -295,6 +298,17 @@ def _refuse_free_and_ordered(sentence: Sentence, units: list[Unit]) -> None:
             f"contradictory ordering in the instruction: {sentence.text.strip()!r} orders its tasks and "
             "leaves their order free; say which"
         )
+
+
+_ANY_ORDER = re.compile(r"\b(?:any|whatever|no\s+(?:particular|specific|set))\s+(?:order|sequence)\W*$", re.I)
+
+
+def _one_task_in_any_order(sentence: Sentence, units: list[Unit], drafts: list[Draft]) -> bool:
+    """ "Rinse a cup and put it away and rinse the cup and put it away in any order": the order of what is
+    one task cannot be free; the clauses were joined into one task that the writer meant as several."""
+    if len(units) != 1 or len(units[0].tasks) != 1 or not _ANY_ORDER.search(sentence.text):
+        return False
+    return len(drafts[units[0].tasks[0]].frames) > 1
 
 
 _COPULA_PLACE = re.compile(
