@@ -166,3 +166,28 @@ def test_in_any_order_over_a_list_is_a_free_group():
     """Near miss: two objects listed for one verb are two tasks whose order is free."""
     g = grammar_parse("Put the fork and the spoon in the drawer in any order.", KITCHEN, "kitchen")
     assert len(g.tasks) == 2 and not g.unparsed and not g.before
+
+
+# ----- "to go back on X" and "when done heating": where it goes next, and a treatment of its own ----------
+def test_to_go_back_on_a_place_is_the_next_destination():
+    tasks, _, unread = read("Put the pot in the fridge to go back on the stove.")
+    assert summaries(tasks) == ["cool_place Pot -> StoveBurner"] and not unread
+
+
+def test_a_robot_going_back_to_a_place_moves_nothing():
+    """Near miss: "go back to" is where the robot walks."""
+    tasks, _, unread = read("Go back to the counter and put the mug in the sink.")
+    assert summaries(tasks) == ["place Mug -> SinkBasin"] and not unread
+
+
+def test_when_done_treating_it_is_the_clause_own_treatment():
+    tasks, order, unread = read("Set the egg in the fridge when done heating in the microwave.")
+    assert summaries(tasks) == ["heat_place Egg -> Fridge"] and not order and not unread
+    tasks, order, unread = read("Put the plate in the cabinet once you finish washing it.")
+    assert summaries(tasks) == ["clean_place Plate -> Cabinet"] and not order and not unread
+
+
+def test_when_done_treating_another_object_is_not_the_clause_own():
+    """Near miss: washing the plate is not a treatment of the mug."""
+    tasks, _, unread = read("Put the mug in the sink once you finish washing the plate.")
+    assert unread or "place Mug -> SinkBasin" in summaries(tasks) and len(tasks) == 2

@@ -16,6 +16,7 @@ from nl2hltl2plan.language.grammar.references import (
     restated_own_tasks,
     self_state,
     stated_tasks,
+    treats_own,
 )
 from nl2hltl2plan.language.grammar.sentences import RelationSentence, split_sentences
 from nl2hltl2plan.language.semantic_check import find_cycle
@@ -156,6 +157,9 @@ def _ref_edges(after: bool, ref: str, u: Unit, tasks: Tasks, b: TaskBuilder, tex
     if any(
         key and any(key == (np.key if (np := nps[t]) is not None else None) for t in u.tasks) for key in keys
     ):
+        return
+    if len(u.tasks) == 1 and treats_own(ref):
+        self_state(ref, [specs[t] for t in u.tasks])
         return
     new = new_tasks_from_ref(ref, b, text)
     _add_ref_tasks(new, after, u, tasks, edges)

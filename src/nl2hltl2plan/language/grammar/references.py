@@ -110,12 +110,34 @@ _STATE_KINDS: dict[str, Kind] = {
 def self_state(ref: str, specs: list[BaseTaskSpec]) -> None:
     """ "After refrigerating the pan, pick up a pan ... and put it on the table": the reference is a state
     change of the task itself, not an order."""
-    words = [w for w, _, _ in tokens(ref)]
+    words = _treatment_words(ref)
     cls = G.VERBS.get(words[0], ("", ""))[0] if words else ""
     kind = _STATE_KINDS.get(cls)
     for s in specs:
         if kind and s.kind in {"place", "place_two"} and s.count == 1:
             s.kind = kind
+
+
+def treats_own(ref: str) -> bool:
+    """ "when done heating in the microwave", "once you finish washing it": a treatment that names no object
+    (a pronoun, or only the appliance it is done in) is one of the clause's own task."""
+    words = _treatment_words(ref)
+    if not words or _STATE_KINDS.get(G.VERBS.get(words[0], ("", ""))[0]) is None:
+        return False
+    rest = [w for w in words[1:] if w not in G.PARTICLES]
+    if not rest or rest[0] in G.PRONOUNS:
+        return True
+    np = parse_np(" ".join(rest[1:]))
+    appliance = np.entry is not None and np.entry.canonical in _APPLIANCE.values()
+    return rest[0] in {"in", "inside", "at"} and appliance
+
+
+def _treatment_words(ref: str) -> list[str]:
+    """The words of a reference from its verb on ("you finish heating it" -> heating it)."""
+    words = [w for w, _, _ in tokens(_YOU.sub("", ref))]
+    while words and words[0] in {"finish", "finished", "done", "through", "with"}:
+        words = words[1:]
+    return words
 
 
 _YOU = re.compile(r"^\s*you\s+(?:have\s+|had\s+)?", re.I)

@@ -179,6 +179,9 @@ _OFF = re.compile(
 
 
 _BACK = re.compile(r",\s+back (in|into|on|onto|to)\b", re.IGNORECASE)
+# "place the pan in the fridge to go back on the stove": the pan goes back there next (a robot goes to
+# a place, not on or in it)
+_TO_GO_BACK = re.compile(r"\s+to go back (in|into|on|onto)\b", re.IGNORECASE)
 
 
 # "a mug that's got a pencil in it": a container, as "a mug with a pencil in it"
@@ -264,7 +267,7 @@ _THEN_INSIDE = re.compile(
 )
 # "Y when you're done putting X in A": what is done is named, a reference ("Y after putting X in A")
 _DONE_GERUND = re.compile(
-    r"\b(after|once|when)\s+you(?:'re|\s+are|'ve|\s+have)?\s+(?:done|finished|through)\s+(?:with\s+)?"
+    r"\b(after|once|when)\s+(?:you(?:'re|\s+are|'ve|\s+have)?\s+)?(?:done|finished|through)\s+(?:with\s+)?"
     r"(?=[a-z]+ing\b)",
     re.IGNORECASE,
 )
@@ -312,7 +315,8 @@ def normalize(text: str) -> str:
     text = _STATES_LISTED.sub(r"\1 ", text)  # "a chilled, cut slice": one noun phrase, not two clauses
     text = _STATES_JOINED.sub(r"\1 ", text)
     text = _OFF.sub(r"\1", text)  # "a rinsed off knife", "cool off a plate": the state, not a direction
-    text = _BACK.sub(r", then back \1", text)  # "put it in the fridge, back in the microwave": a sequence
+    text = _BACK.sub(r", then back \1", _TO_GO_BACK.sub(r", back \1", text))  # "put it in the fridge, back in
+    # the microwave": a sequence
     text = _HAS_IN_IT.sub("with ", text)
     text = _SHELF_OF.sub("", text)
     text = _TAKE_LIST_THEN_PUT.sub(lambda m: f"{m['verb']} {m['objs']} ", text)
