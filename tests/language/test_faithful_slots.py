@@ -191,3 +191,22 @@ def test_when_done_treating_another_object_is_not_the_clause_own():
     """Near miss: washing the plate is not a treatment of the mug."""
     tasks, _, unread = read("Put the mug in the sink once you finish washing the plate.")
     assert unread or "place Mug -> SinkBasin" in summaries(tasks) and len(tasks) == 2
+
+
+# ----- a thing named after "with" is moved too, or named as unread: never dropped silently -------------
+def test_a_carried_thing_after_with_is_never_dropped():
+    for text in (
+        "Place a fork with an egg inside a pot.",
+        "Put a plate with a potato slice and a fork on it in the fridge.",
+    ):
+        tasks, _, unread = read(text)
+        used = {o for t in tasks for o in t.split(" ")}
+        assert unread or {"Egg", "Potato(sliced)"} & used, (text, tasks)
+
+
+def test_a_fixed_thing_after_with_is_a_landmark():
+    """Near misses: a place "with" a thing no robot moves, and a content that the task uses."""
+    tasks, _, unread = read("Put the egg on the counter with the coffee machine.")
+    assert summaries(tasks) == ["place Egg -> CounterTop"] and not unread
+    tasks, _, unread = read("Put the bowl with the spoon in it in the sink.")
+    assert summaries(tasks) == ["place_in_container Spoon in Bowl -> SinkBasin"] and not unread

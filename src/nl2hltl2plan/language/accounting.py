@@ -44,7 +44,7 @@ from nl2hltl2plan.language.grounding import (
     sentence_start,
     tokens,
 )
-from nl2hltl2plan.language.landmarks import NEAR_WORDS, landmark_destinations, pair_start
+from nl2hltl2plan.language.landmarks import NEAR_WORDS, carried, landmark_destinations, pair_start
 from nl2hltl2plan.language.negations import about_order, unforbidden_verb
 from nl2hltl2plan.language.parse_usage import IMPLIED_TYPES, ParseUsage
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, ConstraintSpec
@@ -227,7 +227,7 @@ def _locative(
         first -= 1  # "from in between the sink and ...", "out of", "from under the bed": where it is
     if toks[first][0] in ("from", "off", "out"):
         return True
-    if toks[i][0] == "with" and i > 0 and toks[i - 1][0] in _DONE_WORDS:
+    if toks[i][0] == "with" and ((i > 0 and toks[i - 1][0] in _DONE_WORDS) or carried(m)):
         return False  # "when you are done with the mug": a task the mug is in, not where a thing is
     clause = _clause_span(instruction, toks[start][1])
     if any({"verb_take", "verb_sliced"} & categories(w) for w, s, _ in toks if clause[0] <= s < clause[1]):
