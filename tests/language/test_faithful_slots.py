@@ -210,3 +210,16 @@ def test_a_fixed_thing_after_with_is_a_landmark():
     assert summaries(tasks) == ["place Egg -> CounterTop"] and not unread
     tasks, _, unread = read("Put the bowl with the spoon in it in the sink.")
     assert summaries(tasks) == ["place_in_container Spoon in Bowl -> SinkBasin"] and not unread
+
+
+# ----- one task has one treatment: two named for one object are refused, not one dropped --------------
+def test_two_treatments_of_one_object_are_refused():
+    text = "Put a heated egg in the fridge. Then cool and heat a potato and put it on the counter."
+    tasks, _, unread = read(text)
+    assert any("two treatments" in u for u in unread), tasks
+
+
+def test_one_treatment_and_water_is_one_treatment():
+    """Near miss: a mug of water heated is a heating task."""
+    tasks, _, unread = read("Heat a mug of water in the microwave and put it in the cabinet.")
+    assert summaries(tasks) == ["heat_place Mug -> Cabinet"] and not unread

@@ -197,6 +197,10 @@ class TaskBuilder:
         if r.light is None and final is None:
             self.unparsed.append(f"no destination for the {obj.text or obj.key!r} in: {text}")
             return None
+        said = _treatments_said(d)
+        if len(said) > 1:  # "chill then warm a tomato": one task has one treatment; which is meant is a guess
+            self.unparsed.append(f"two treatments ({' and '.join(sorted(said))}) of one object in: {text}")
+            return None
         kind = _kind_of(r)
         fields = self.ground(
             kind,
@@ -227,6 +231,14 @@ class TaskBuilder:
             receptacle=fields["receptacle"],
             light=fields["light"],
         )
+
+
+def _treatments_said(d: Draft) -> set[str]:
+    """The treatments (heat, cool, clean) that the draft's verbs and state words say; water and the
+    appliances passed on the way are not counted."""
+    said = {fr.cls for fr, _ in d.frames}
+    said |= {s for _, it in d.frames if it.obj is not None for s in it.obj.states}
+    return said & {"heat", "cool", "clean"}
 
 
 def _sliceable(types: list[str]) -> bool:
