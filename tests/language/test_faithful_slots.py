@@ -223,3 +223,10 @@ def test_one_treatment_and_water_is_one_treatment():
     """Near miss: a mug of water heated is a heating task."""
     tasks, _, unread = read("Heat a mug of water in the microwave and put it in the cabinet.")
     assert summaries(tasks) == ["heat_place Mug -> Cabinet"] and not unread
+
+
+def test_a_restated_task_on_a_place_the_scene_lacks_is_no_guess():
+    """Near miss: "the gizmo" names no place of the scene, so the reference is not read as a second task
+    whose place a model would have to guess."""
+    tasks, _, unread = read("Put a bar of soap on the counter after you put two bars of soap on the gizmo.")
+    assert summaries(tasks) == ["place SoapBar -> CounterTop"] and any("two bars of soap" in u for u in unread)

@@ -210,7 +210,7 @@ def _differ(new: BaseTaskSpec, old: BaseTaskSpec) -> bool:
         return True
     if new.receptacle and old.receptacle and not set(new.receptacle) & set(old.receptacle):
         return True
-    if (new.kind == "place_two") != (old.kind == "place_two"):
+    if new.receptacle and (new.kind == "place_two") != (old.kind == "place_two"):
         return True  # "after you put two bars of soap in a cabinet" is not "put a bar of soap in a cabinet"
     return new.kind in _STATES and old.kind in _STATES and new.kind != old.kind
 
@@ -225,8 +225,8 @@ def restated_own_tasks(ref: str, b: TaskBuilder, text: str) -> list[BaseTaskSpec
     is a second task. A reference that only treats the object ("after refrigerating the pan", "after
     heating it in the microwave") states no task of its own: none."""
     new = new_tasks_from_ref(ref, b, text)
-    if any(_APPLIANCE.get(n.kind) in (n.receptacle or []) for n in new):
-        return []
+    if any(_APPLIANCE.get(n.kind) in (n.receptacle or []) or not (n.receptacle or n.light) for n in new):
+        return []  # a place the words do not name in the scene ("on the flusher") is no second task
     return new
 
 
