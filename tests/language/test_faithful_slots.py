@@ -229,4 +229,5 @@ def test_a_restated_task_on_a_place_the_scene_lacks_is_no_guess():
     """Near miss: "the gizmo" names no place of the scene, so the reference is not read as a second task
     whose place a model would have to guess."""
     tasks, _, unread = read("Put a bar of soap on the counter after you put two bars of soap on the gizmo.")
-    assert summaries(tasks) == ["place SoapBar -> CounterTop"] and any("two bars of soap" in u for u in unread)
+    assert summaries(tasks) == ["place SoapBar -> CounterTop"]
+    assert any("two bars of soap" in u for u in unread)
