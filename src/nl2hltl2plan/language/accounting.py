@@ -228,7 +228,7 @@ def _locative(
     if toks[first][0] in ("from", "off", "out"):
         return True
     if toks[i][0] == "with" and ((i > 0 and toks[i - 1][0] in _DONE_WORDS) or carried(m)):
-        return False  # "when you are done with the mug": a task the mug is in, not where a thing is
+        return False  # "done with the mug": a task it is in; "a pan with a tomato": a thing to move too
     clause = _clause_span(instruction, toks[start][1])
     if any({"verb_take", "verb_sliced"} & categories(w) for w, s, _ in toks if clause[0] <= s < clause[1]):
         return True

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import re
 
-from nl2hltl2plan.domain.task_kinds import Kind
+from nl2hltl2plan.domain.task_kinds import APPLIANCE, Kind
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.clauses import split_clauses
 from nl2hltl2plan.language.grammar.draft_tasks import Draft, TaskBuilder
@@ -128,7 +128,7 @@ def treats_own(ref: str) -> bool:
     if not rest or rest[0] in G.PRONOUNS:
         return True
     np = parse_np(" ".join(rest[1:]))
-    appliance = np.entry is not None and np.entry.canonical in _APPLIANCE.values()
+    appliance = np.entry is not None and np.entry.canonical in APPLIANCE.values()
     return rest[0] in {"in", "inside", "at"} and appliance
 
 
@@ -215,17 +215,13 @@ def _differ(new: BaseTaskSpec, old: BaseTaskSpec) -> bool:
     return new.kind in _STATES and old.kind in _STATES and new.kind != old.kind
 
 
-# where a treatment is done: a reference that puts its object there states the treatment, not a task
-_APPLIANCE = {"clean_place": "SinkBasin", "heat_place": "Microwave", "cool_place": "Fridge"}
-
-
 def restated_own_tasks(ref: str, b: TaskBuilder, text: str) -> list[BaseTaskSpec]:
     """A reference that names only its own clause's task but states a whole task ("put the soap on the
     toilet before you put wet soap on the toilet"): a task cannot come before itself, so the reference
     is a second task. A reference that only treats the object ("after refrigerating the pan", "after
     heating it in the microwave") states no task of its own: none."""
     new = new_tasks_from_ref(ref, b, text)
-    if any(_APPLIANCE.get(n.kind) in (n.receptacle or []) or not (n.receptacle or n.light) for n in new):
+    if any(APPLIANCE.get(n.kind) in (n.receptacle or []) or not (n.receptacle or n.light) for n in new):
         return []  # a place the words do not name in the scene ("on the flusher") is no second task
     return new
 
