@@ -44,7 +44,7 @@ from nl2hltl2plan.language.grounding import (
     sentence_start,
     tokens,
 )
-from nl2hltl2plan.language.landmarks import NEAR_WORDS, landmark_destinations, pair_start
+from nl2hltl2plan.language.landmarks import NEAR_WORDS, carried, landmark_destinations, pair_start
 from nl2hltl2plan.language.negations import NO_CONSTRAINT, about_order, unforbidden_verb
 from nl2hltl2plan.language.order_words import check_cycles, unordered_steps
 from nl2hltl2plan.language.parse_usage import IMPLIED_TYPES, ParseUsage
@@ -233,19 +233,13 @@ def _locative(
         first -= 1  # "from in between the sink and ...", "out of", "from under the bed": where it is
     if toks[first][0] in ("from", "off", "out"):
         return True
-    if toks[i][0] == "with" and i > 0 and toks[i - 1][0] in _DONE_WORDS:
-        return False  # "when you are done with the mug": a task the mug is in, not where a thing is
-    if toks[i][0] == "with" and _CONTENT_END.match(" ".join(w for w, _, _ in toks[m.end : m.end + 8])):
-        return False  # "a bowl with an apple and a knife in it": contents, each one a thing to move
+    if toks[i][0] == "with" and ((i > 0 and toks[i - 1][0] in _DONE_WORDS) or carried(m)):
+        return False  # "done with the mug": a task it is in; "a pan with a tomato": a thing to move too
     clause = _clause_span(instruction, toks[start][1])
-    if any("verb_take" in categories(w) for w, s, _ in toks if clause[0] <= s < clause[1]):
+    if any({"verb_take", "verb_sliced"} & categories(w) for w, s, _ in toks if clause[0] <= s < clause[1]):
         return True
     near = places + implied if toks[i][0] in NEAR_WORDS else places
     return any(clause[0] <= o.char_start < clause[1] and o.start not in (m.start, start) for o in near)
-
-
-# "with an apple and a knife in it": what follows "with" is contents
-_CONTENT_END = re.compile(r"(?:\w+ ){0,5}(?:(?:in|inside|on) (?:it|them)|inside)\b")
 
 
 def _walked_to(toks: list[tuple[str, int, int]], start: int) -> bool:

@@ -20,7 +20,8 @@ from importlib import resources
 DETERMINERS = {"the", "a", "an", "that", "this", "those", "these", "its", "their", "my", "your", "of"}
 # a place named after an object and one of these describes where the object is ("the apple on the table")
 LOCATIVE = frozenset(
-    "on in at inside near beside by behind under next from off below above beneath underneath across "
+    "on in at inside near beside by behind under next closest nearest closer from off below above beneath "
+    "underneath across "
     "against between around along with of".split()
 )
 

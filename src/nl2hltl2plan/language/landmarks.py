@@ -9,14 +9,14 @@ the microwave" is fine: the counter is the destination, the microwave where on i
 from __future__ import annotations
 
 from nl2hltl2plan.language.content_words import DETERMINERS, Unread, stems, verb_places
-from nl2hltl2plan.language.grounding import Mention
+from nl2hltl2plan.language.grounding import RECEPTACLES, Mention, alfred_lookup
 from nl2hltl2plan.language.parse_usage import ParseUsage
 
 # the words before a place that make it a landmark ("next to", "beside", "to the left of")
 NEAR_WORDS = frozenset("near beside besides by next between behind against".split())
 _NEAR_TWO = {
-    ("next", "to"), ("close", "to"), ("near", "to"), ("front", "of"), ("left", "of"), ("right", "of"),
-    ("closest", "to"), ("nearest", "to"), ("closer", "to"),
+    ("next", "to"), ("close", "to"), ("closest", "to"), ("nearest", "to"), ("closer", "to"), ("near", "to"),
+    ("front", "of"), ("left", "of"), ("right", "of"),
 }  # fmt: skip
 
 
@@ -58,6 +58,16 @@ def landmark_destinations(
                 )
             )
     return out
+
+
+def carried(m: Mention) -> bool:
+    """A thing named after "with" that is no place ("a pan with a tomato slice in it", "a knife with an
+    apple"): something the task moves too, never only where something is ("the dresser with the
+    television" is a landmark: no robot moves a television). Without ALFRED's facts: what is no receptacle."""
+    look = alfred_lookup()
+    if look is None:
+        return RECEPTACLES.isdisjoint(m.entry.types)
+    return any((a := look(t)) is not None and a.pickupable for t in m.entry.types)
 
 
 def pair_start(toks: list[tuple[str, int, int]], start: int) -> int:

@@ -42,8 +42,14 @@ class ParseUsage:
 
     @property
     def kinds(self) -> set[str]:
-        """The kinds of task, a toast counting as heating (in the toaster)."""
-        return {t.kind for t in self.tasks} | {"heat_place" for t in self.tasks if t.state == "toasted"}
+        """The kinds of task, a toast counting as heating (in the toaster), and a container left in the
+        fridge or the microwave ("refrigerate the slice in a bowl") as cooling or heating its content."""
+        in_appliance = {
+            k for t in self.tasks for k in ("heat_place", "cool_place")
+            if t.kind == "place_in_container" and t.receptacle == [APPLIANCE[k]]
+        }  # fmt: skip
+        toasted = {"heat_place" for t in self.tasks if t.state == "toasted"}
+        return {t.kind for t in self.tasks} | toasted | in_appliance
 
     @property
     def sliced(self) -> bool:

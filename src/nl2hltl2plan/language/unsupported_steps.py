@@ -43,7 +43,9 @@ def returns_and_repeats(instruction: str) -> list[Unread]:
     ]
 
 
-_THEN_VERB = re.compile(r"\b(?:then|afterwards|after that|next|later)\s*,?\s+(?:you\s+)?(?:can\s+)?([a-z]+)")
+_THEN_VERB = re.compile(
+    r"\b(?:then|afterwards|after that|next|later|before)\s*,?\s+(?:you\s+)?(?:can\s+)?([a-z]+)"
+)
 
 
 def treated_after_placing(instruction: str, mentions: list[Mention], parse: ParseUsage) -> list[Unread]:
@@ -57,11 +59,24 @@ def treated_after_placing(instruction: str, mentions: list[Mention], parse: Pars
         at = lowered.find(t.text.lower()) if t.text else -1  # the task's own words, else the whole text
         start, end = (at, at + len(t.text)) if at >= 0 else (0, len(lowered))
         placed = [m.char_end for m in mentions if set(m.entry.types) & places and start <= m.char_start < end]
-        for then in _THEN_VERB.finditer(lowered, start, end):
-            if placed and then.start() > max(placed) and categories(then.group(1)) & wanted:
-                why = f"task {t.id}'s treatment comes before its placing"
-                out.append(Unread(then.group(0), "order", why))
+        sentence_end = next((k for k in range(end, len(lowered)) if lowered[k] in ".;!?"), len(lowered))
+        for then in _THEN_VERB.finditer(lowered, start, sentence_end):
+            if not (placed and then.start() > max(placed) and categories(then.group(1)) & wanted):
+                continue
+            after = lowered[then.end() : then.end() + 40]
+            if _PRONOUN.match(after) or any(
+                m.char_start >= then.end()
+                and set(m.entry.types) & set(t.object)
+                and m.char_start < then.end() + 40
+                for m in mentions
+            ):
+                out.append(
+                    Unread(then.group(0), "order", f"task {t.id}'s treatment comes before its placing")
+                )
     return out
+
+
+_PRONOUN = re.compile(r"\s+(?:it|them|this|that|these|those)\b")
 
 
 def closed_after_placing(instruction: str, mentions: list[Mention], parse: ParseUsage) -> list[Unread]:

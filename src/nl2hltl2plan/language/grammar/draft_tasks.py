@@ -197,6 +197,10 @@ class TaskBuilder:
         if r.light is None and final is None:
             self.unparsed.append(f"no destination for the {obj.text or obj.key!r} in: {text}")
             return None
+        said = _treatments_said(d)
+        if len(said) > 1:  # "chill then warm a tomato": one task has one treatment; which is meant is a guess
+            self.unparsed.append(f"two treatments ({' and '.join(sorted(said))}) of one object in: {text}")
+            return None
         kind = _kind_of(r)
         fields = self.ground(
             kind,
@@ -227,6 +231,14 @@ class TaskBuilder:
             receptacle=fields["receptacle"],
             light=fields["light"],
         )
+
+
+def _treatments_said(d: Draft) -> set[str]:
+    """The treatments (heat, cool, clean) that the draft's verbs and state words say; water and the
+    appliances passed on the way are not counted."""
+    said = {fr.cls for fr, _ in d.frames}
+    said |= {s for _, it in d.frames if it.obj is not None for s in it.obj.states}
+    return said & {"heat", "cool", "clean"}
 
 
 def _sliceable(types: list[str]) -> bool:
@@ -353,12 +365,22 @@ def _read_destination(r: _Reading, fr: Frame, it: Item) -> None:
     movable = [np for np in recs if np.is_movable_receptacle()]
     fixed = [np for np in recs if not np.is_movable_receptacle()]
     obj = r.obj
+    held = obj is not None and not obj.is_movable_receptacle()
+    if fr.cls in _APPLIANCE_NP and movable and not fixed and held:
+        # "refrigerate a tomato slice in a bowl": the bowl holds it in the fridge, it is no destination
+        r.container = movable[0]
+        r.dests += [r.container, parse_np(_APPLIANCE_NP[fr.cls])]
+        return
     if obj is not None and r.container is None and not obj.is_movable_receptacle() and movable and fixed:
         # "place the spoon in a cup to the counter", "place the watch on the table on a plate"
         r.container = movable[0]
         r.dests.append(r.container)
         dst = fixed[-1]
     r.dests.append(dst)
+
+
+# the appliance a verb of heating or cooling does its work in
+_APPLIANCE_NP = {"heat": "microwave", "cool": "fridge"}
 
 
 def _unholdable(obj: NP) -> bool:

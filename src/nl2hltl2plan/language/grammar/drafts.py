@@ -21,6 +21,7 @@ from nl2hltl2plan.language.grammar.frames import (
     parse_frame,
     puts_into,
     same,
+    two_places,
 )
 from nl2hltl2plan.language.grammar.phrases import NP, tokens
 from nl2hltl2plan.language.grammar.sentences import Sentence
@@ -138,6 +139,9 @@ class DraftBuilder:
             return True
         if fr.choice:
             unparsed.append(f"{c_text} (a choice between objects: say which one)")
+            return True
+        if places := next((w for it in fr.items if (w := two_places(it))), ""):
+            unparsed.append(f"{c_text} (two places it could go: {places}; say which)")
             return True
         if fr.cls == "light" and not any(
             (it.obj is not None and it.obj.is_lamp()) or any(np.is_lamp() for _, np in it.pps)
@@ -271,6 +275,9 @@ class DraftBuilder:
         if not sentence_units:
             return
         _refuse_free_and_ordered(st.sentence, sentence_units)
+        if _one_task_in_any_order(st.sentence, sentence_units, self.out.drafts):
+            why = "('in any order', but its clauses read as one task)"
+            self.b.unparsed.append(f"{st.sentence.text.strip()} {why}")
         for kind, ref in st.sentence.markers:
             for u in sentence_units:
                 u.markers.append((kind, ref))
@@ -319,6 +326,17 @@ def _refuse_free_and_ordered(sentence: Sentence, units: list[Unit]) -> None:
             f"contradictory ordering in the instruction: {sentence.text.strip()!r} orders its tasks and "
             "leaves their order free; say which"
         )
+
+
+_ANY_ORDER = re.compile(r"\b(?:any|whatever|no\s+(?:particular|specific|set))\s+(?:order|sequence)\W*$", re.I)
+
+
+def _one_task_in_any_order(sentence: Sentence, units: list[Unit], drafts: list[Draft]) -> bool:
+    """ "Rinse a cup and put it away and rinse the cup and put it away in any order": the order of what is
+    one task cannot be free; the clauses were joined into one task that the writer meant as several."""
+    if len(units) != 1 or len(units[0].tasks) != 1 or not _ANY_ORDER.search(sentence.text):
+        return False
+    return len(drafts[units[0].tasks[0]].frames) > 1
 
 
 _COPULA_PLACE = re.compile(

@@ -251,8 +251,8 @@ DIRECTIONAL = {
 def dest_of(item: Item, cls: str = "") -> NP | None:
     """The destination of one clause item: the receptacle after to/into/onto/in/on... With a verb of taking
     (`cls` "pick") only a direction counts ("take the towel to the hamper"); "pick up the card on the
-    couch" says where the card is."""
-    if cls == "pick":
+    couch" says where the card is; so does a verb of slicing ("slice the apple in the pot")."""
+    if cls in {"pick", "slice"}:
         item = Item(item.obj, [(p, np) for p, np in item.pps if p in DIRECTIONAL])
     last = [np for p, np in item.pps if p == THEN_TO]
     if last:
@@ -276,6 +276,23 @@ def dest_of(item: Item, cls: str = "") -> NP | None:
         if p in DIRECTIONAL:
             return np
     return dests[0][1]
+
+
+_PLACING = {"in", "into", "inside", "on", "onto"}
+
+
+def two_places(item: Item) -> str:
+    """ "put the CDs on the desk closest to the window in the safe": after its destination the item names
+    another fixed place with a plain "in"/"on", not a step on the way ("to the sink and then the toilet")
+    and not where on it ("on top of the dishwasher", "at the end of the counter"); which of the two is
+    where the thing goes is a guess. The two places' words; "" when there are not two."""
+    if any(p in DIRECTIONAL or p == THEN_TO for p, _ in item.pps):
+        return ""
+    places = [(p, np) for p, np in item.pps if p in G.DEST_PREPS and p not in UNDER and is_fixed(np)]
+    if len(places) < 2 or places[0][0] not in _PLACING:
+        return ""
+    later = [np for p, np in places[1:] if p in _PLACING and not same(np, places[0][1])]
+    return f"{places[0][1].text} / {later[-1].text}" if later else ""
 
 
 def is_fixed(np: NP) -> bool:

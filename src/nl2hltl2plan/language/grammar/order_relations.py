@@ -10,7 +10,14 @@ from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.draft_tasks import TaskBuilder, Tasks, Unit
 from nl2hltl2plan.language.grammar.frames import IN_SENTENCE, OF_ALL
 from nl2hltl2plan.language.grammar.phrases import parse_np
-from nl2hltl2plan.language.grammar.references import new_tasks_from_ref, ref_targets, self_state, stated_tasks
+from nl2hltl2plan.language.grammar.references import (
+    new_tasks_from_ref,
+    ref_targets,
+    restated_own_tasks,
+    self_state,
+    stated_tasks,
+    treats_own,
+)
 from nl2hltl2plan.language.grammar.sentences import RelationSentence, split_sentences
 from nl2hltl2plan.language.semantic_check import find_cycle
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter, transitive_reduction
@@ -135,7 +142,10 @@ def _ref_edges(after: bool, ref: str, u: Unit, tasks: Tasks, b: TaskBuilder, tex
         _add_ref_tasks(stated, after, u, tasks, edges)
         return
     if not targets and own and all(t in u.tasks for t in own):
-        self_state(ref, [specs[t] for t in u.tasks])
+        if again := restated_own_tasks(ref, b, text):
+            _add_ref_tasks(again, after, u, tasks, edges)
+        else:
+            self_state(ref, [specs[t] for t in u.tasks])
         return
     targets = [t for t in targets if t not in u.tasks]
     for t in targets:
@@ -147,6 +157,9 @@ def _ref_edges(after: bool, ref: str, u: Unit, tasks: Tasks, b: TaskBuilder, tex
     if any(
         key and any(key == (np.key if (np := nps[t]) is not None else None) for t in u.tasks) for key in keys
     ):
+        return
+    if len(u.tasks) == 1 and treats_own(ref):
+        self_state(ref, [specs[t] for t in u.tasks])
         return
     new = new_tasks_from_ref(ref, b, text)
     _add_ref_tasks(new, after, u, tasks, edges)

@@ -157,6 +157,10 @@ def tokens(text: str) -> list[tuple[str, int, int]]:
 
 
 # ----- noun phrases ----------------------------------------------------------------------------------
+# a word after a compound's last noun that makes it the place for that thing ("the mug location")
+_SPOT = re.compile(r"\s*(?:location|spot|place|area|holder|slot|position)s?\b", re.I)
+
+
 def parse_np(text: str) -> NP:
     """A noun phrase: its head (a lexicon entry, else its own words), pronoun, states, slices, count."""
     np = NP(text=text.strip())
@@ -181,6 +185,8 @@ def parse_np(text: str) -> NP:
         for nxt in real[1:]:  # a compound names its last noun: "a glass bowl" is a bowl
             if text[m.char_end : nxt.char_start].strip() or nxt.entry.phrase == "container":
                 break  # but "a soap container" holds soap: the soap's
+            if _SPOT.match(text[nxt.char_end :]):
+                break  # "the coffee maker mug spot" is a spot of the coffee maker, for a mug
             m = nxt
         np.entry, np.plural = m.entry, m.plural
         surface = text[m.char_start : m.char_end].lower()

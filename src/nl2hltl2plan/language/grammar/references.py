@@ -4,12 +4,12 @@ from __future__ import annotations
 
 import re
 
-from nl2hltl2plan.domain.task_kinds import Kind
+from nl2hltl2plan.domain.task_kinds import APPLIANCE, Kind
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.clauses import split_clauses
 from nl2hltl2plan.language.grammar.draft_tasks import Draft, TaskBuilder
 from nl2hltl2plan.language.grammar.drafts import incomplete, joins, merge_items
-from nl2hltl2plan.language.grammar.frames import Frame, parse_frame
+from nl2hltl2plan.language.grammar.frames import Frame, parse_frame, two_places
 from nl2hltl2plan.language.grammar.phrases import NP, parse_np, tokens
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
 
@@ -110,12 +110,34 @@ _STATE_KINDS: dict[str, Kind] = {
 def self_state(ref: str, specs: list[BaseTaskSpec]) -> None:
     """ "After refrigerating the pan, pick up a pan ... and put it on the table": the reference is a state
     change of the task itself, not an order."""
-    words = [w for w, _, _ in tokens(ref)]
+    words = _treatment_words(ref)
     cls = G.VERBS.get(words[0], ("", ""))[0] if words else ""
     kind = _STATE_KINDS.get(cls)
     for s in specs:
         if kind and s.kind in {"place", "place_two"} and s.count == 1:
             s.kind = kind
+
+
+def treats_own(ref: str) -> bool:
+    """ "when done heating in the microwave", "once you finish washing it": a treatment that names no object
+    (a pronoun, or only the appliance it is done in) is one of the clause's own task."""
+    words = _treatment_words(ref)
+    if not words or _STATE_KINDS.get(G.VERBS.get(words[0], ("", ""))[0]) is None:
+        return False
+    rest = [w for w in words[1:] if w not in G.PARTICLES]
+    if not rest or rest[0] in G.PRONOUNS:
+        return True
+    np = parse_np(" ".join(rest[1:]))
+    appliance = np.entry is not None and np.entry.canonical in APPLIANCE.values()
+    return rest[0] in {"in", "inside", "at"} and appliance
+
+
+def _treatment_words(ref: str) -> list[str]:
+    """The words of a reference from its verb on ("you finish heating it" -> heating it)."""
+    words = [w for w, _, _ in tokens(_YOU.sub("", ref))]
+    while words and words[0] in {"finish", "finished", "done", "through", "with"}:
+        words = words[1:]
+    return words
 
 
 _YOU = re.compile(r"^\s*you\s+(?:have\s+|had\s+)?", re.I)
@@ -151,6 +173,7 @@ def new_tasks_from_ref(ref: str, b: TaskBuilder, text: str) -> list[BaseTaskSpec
     """A reference that names no earlier task but states one ("after picking up the box and placing it on
     the armchair", "after the mug is in the sink"): parse it as clauses of its own."""
     drafts: list[Draft] = []
+    unread: list[str] = []
     ref = _PLACED_STATE.sub(lambda m: _placement(m, text), ref.strip())
     for c_text, _s, _e, _j in split_clauses(_YOU.sub("", ref)):  # "after you put ...": a clause of its own
         words = [w for w, _, _ in tokens(c_text)]
@@ -160,6 +183,9 @@ def new_tasks_from_ref(ref: str, b: TaskBuilder, text: str) -> list[BaseTaskSpec
         elif words and words[0] not in G.VERBS:
             continue
         fr = parse_frame(c_text, 0, "")
+        if places := next((w for it in fr.items if (w := two_places(it))), ""):
+            unread.append(f"{c_text} (two places it could go: {places}; say which)")
+            continue
         _share_listed_destination(fr, c_text, b)
         for k, it in enumerate(fr.items):
             if k == 0 and drafts and (joins(drafts[-1], fr, it) or incomplete(drafts[-1])):
@@ -172,7 +198,7 @@ def new_tasks_from_ref(ref: str, b: TaskBuilder, text: str) -> list[BaseTaskSpec
         spec = b.spec(d, ref)
         if spec is not None:
             out.append(spec)
-    b.unparsed = saved
+    b.unparsed = saved + unread
     return out
 
 
@@ -202,7 +228,20 @@ def _differ(new: BaseTaskSpec, old: BaseTaskSpec) -> bool:
         return True
     if new.receptacle and old.receptacle and not set(new.receptacle) & set(old.receptacle):
         return True
+    if new.receptacle and (new.kind == "place_two") != (old.kind == "place_two"):
+        return True  # "after you put two bars of soap in a cabinet" is not "put a bar of soap in a cabinet"
     return new.kind in _STATES and old.kind in _STATES and new.kind != old.kind
+
+
+def restated_own_tasks(ref: str, b: TaskBuilder, text: str) -> list[BaseTaskSpec]:
+    """A reference that names only its own clause's task but states a whole task ("put the soap on the
+    toilet before you put wet soap on the toilet"): a task cannot come before itself, so the reference
+    is a second task. A reference that only treats the object ("after refrigerating the pan", "after
+    heating it in the microwave") states no task of its own: none."""
+    new = new_tasks_from_ref(ref, b, text)
+    if any(APPLIANCE.get(n.kind) in (n.receptacle or []) or not (n.receptacle or n.light) for n in new):
+        return []  # a place the words do not name in the scene ("on the flusher") is no second task
+    return new
 
 
 def stated_tasks(ref: str, named: list[BaseTaskSpec], b: TaskBuilder, text: str) -> list[BaseTaskSpec]:

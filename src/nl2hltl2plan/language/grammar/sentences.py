@@ -183,6 +183,9 @@ _OFF = re.compile(
 
 
 _BACK = re.compile(r",\s+back (in|into|on|onto|to)\b", re.IGNORECASE)
+# "place the pan in the fridge to go back on the stove": the pan goes back there next (a robot goes to
+# a place, not on or in it)
+_TO_GO_BACK = re.compile(r"\s+to go back (in|into|on|onto)\b", re.IGNORECASE)
 
 
 # "a mug that's got a pencil in it": a container, as "a mug with a pencil in it"
@@ -365,7 +368,8 @@ def normalize(text: str) -> str:
     text = _STATES_LISTED.sub(r"\1 ", text)  # "a chilled, cut slice": one noun phrase, not two clauses
     text = _STATES_JOINED.sub(r"\1 ", text)
     text = _OFF.sub(r"\1", text)  # "a rinsed off knife", "cool off a plate": the state, not a direction
-    text = _BACK.sub(r", then back \1", text)  # "put it in the fridge, back in the microwave": a sequence
+    text = _BACK.sub(r", then back \1", _TO_GO_BACK.sub(r", back \1", text))  # "put it in the fridge, back in
+    # the microwave": a sequence
     text = _HAS_IN_IT.sub("with ", text)
     text = _SHELF_OF.sub("", text)
     text = _TAKE_LIST_THEN_PUT.sub(lambda m: f"{m['verb']} {m['objs']} ", text)

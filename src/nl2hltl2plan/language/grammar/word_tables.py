@@ -70,7 +70,7 @@ _VERBS: dict[str, tuple[str, ...]] = {
     "clean": ("wash", "rinse", "clean", "scrub", "wet", "cleanse", "moisten"),
     "heat": ("heat", "warm", "cook", "microwave", "bake", "toast", "boil", "reheat"),
     "cool": ("chill", "cool", "refrigerate", "freeze", "frost"),
-    "slice": ("slice", "cut", "chop", "dice"),
+    "slice": ("slice", "cut", "chop", "dice", "section"),
     "fill": ("fill",),
     "light": ("turn", "switch", "lit", "light", "toggle", "power", "illuminate"),
     "examine": (
@@ -212,6 +212,9 @@ PREPOSITIONS: list[tuple[str, ...]] = sorted(
             "in front of",
             "next to",
             "close to",
+            "closest to",
+            "nearest to",
+            "closer to",
             "out of",
             "inside of",
             "on to",
@@ -326,28 +329,10 @@ DEST_PREPS = {
     "between",
     "among",
 }
-NEAR_PREPS = {
-    "near",
-    "by",
-    "beside",
-    "besides",
-    "next to",
-    "close to",
-    "against",
-    "in front of",
-    "behind",
-    "above",
-    "over",
-    "near to",
-    "closest to",
-    "nearest to",
-    "closer to",
-    "to the left of",
-    "to the right of",
-    "across",
-    "around",
-    "toward",
-    "towards",
+NEAR_PREPS = {  # a place after these is a landmark: "the cabinet closest to the stove" (the stove says which)
+    *"near by beside besides against behind above over across around toward towards".split(),
+    *("next to", "close to", "closest to", "nearest to", "closer to", "near to", "in front of"),
+    *("to the left of", "to the right of"),
 }
 WITH_PREPS = {"with", "containing", "holding", "along with", "together with", "filled with", "full of"}
 LIGHT_PREPS = {
@@ -388,7 +373,10 @@ for _w in ("sliced", "cut", "chopped", "diced"):
 # and a knife in the trash"), as in ALFRED's slicing tasks, whose goal is the slice
 SLICEABLE = grounding.SLICEABLE
 KNIVES = {"Knife", "ButterKnife"}
-SLICE_NOUNS = {"slice", "slices", "piece", "pieces", "wedge", "wedges", "chunk", "chunks", "bit", "bits"}
+SLICE_NOUNS = {
+    "slice", "slices", "piece", "pieces", "wedge", "wedges", "chunk", "chunks", "bit", "bits", "section",
+    "sections",
+}  # fmt: skip
 WATER_WORDS = {"water"}
 
 # counts
