@@ -1,0 +1,155 @@
+"""Wishes, goals stated as the final state and completion clauses of the handover instructions, rewritten
+onto the commands the reader reads (`handover_phrases.normalise` calls `unwished` on the lower-cased
+sentence after `handover_spoken.unspoken`, whose contractions it relies on: "i'd" is "i would", "that's"
+is "that s"). Each rewrite changes no meaning; what it does not match is left for the reader, which reads
+it or refuses it by name:
+
+- wishes and indirect requests before a verb: "would it be possible to", "would you be able to", "i was
+  hoping you could", "let's", "have the arms"; a wish with the object and its participle ("i'd like the
+  three blocks moved to", "let's get the blocks placed on", "have the red block put ...") as the command
+  ("move the three blocks to"); a past-tense wish ("it would be great if the yellow block went to I") as
+  the command ("move the yellow block to I");
+- a goal stated as the final state: "by the end / in the end / when you're finished," is "at the end,"
+  (a last step after other commands, nothing on its own); "the end result should be X on P" and "what I
+  want to see at the end: X on P" are "at the end, X should be on P"; "should be sitting on" is "should
+  be on"; "should have swapped places" is "should swap places"; "on the way there" in a prohibition is
+  "at any point";
+- a completion clause: "when that's all done," is "when that is all done,"; "once they're all over,"
+  and "once everything is in place," are "once that is done,";
+- "with blue left alone until red has been touched" is "blue must not be touched until ...";
+- order words at the end of a clause: "place the red block first and the blue block later" is "place
+  the red block before the blue block";
+- kept-empty regions: "free of objects" is "empty"; "while keeping regions F, G and H empty" is "while
+  regions F, G and H stay empty"; "never more than one object in a region" is "one object per region".
+"""
+
+from __future__ import annotations
+
+import re
+
+from nl2hltl2plan.language.handover_words import VERB
+
+# a participle after its object in a wish ("i'd like the blocks moved to ..."), with its verb
+_PARTICIPLES = {
+    "moved": "move",
+    "put": "put",
+    "placed": "place",
+    "taken": "take",
+    "brought": "bring",
+    "transferred": "transfer",
+    "set": "set",
+    "carried": "carry",
+    "returned": "return",
+    "delivered": "deliver",
+    "relocated": "relocate",
+    "shifted": "shift",
+    "dropped": "drop",
+    "positioned": "position",
+    "swapped": "swap",
+    "exchanged": "exchange",
+}
+_PARTICIPLE = "(?:" + "|".join(_PARTICIPLES) + ")"
+_START = r"(^|,|;|\band\b)\s*"
+# a noun phrase of blocks: it starts with a determiner, a count or a colour and has no clause break,
+# no "of" (the academic "the relocation of ..." is another rule's) and no verb of its own
+_OBJECTS = r"((?:the|all|both|each|every|three|two|red|blue|yellow)\b(?:(?!\bof\b|\bis\b|\bare\b)[^,;:])*?)"
+_BLOCK = r"(?:the\s+)?(?:red|blue|yellow)(?:\s+(?:block|one|cube|object|pillar))?"
+_LETTERS = r"[e-j](?:\s*(?:,|and|or)\s*[e-j])*"
+
+_WISH_BEFORE_VERB = (
+    r"(?:(?:would|could|is)\s+it\s+be\s+(?:possible|ok|okay|alright)\s+(?:for\s+you\s+)?to|"
+    r"(?:would|could|will)\s+you\s+be\s+able\s+to|"
+    r"(?:i|we)\s+(?:was|were|am|are)\s+hoping\s+(?:that\s+)?you\s+(?:could|would|can|might|will)|"
+    r"let\s+(?:s|us)|"
+    r"(?:have|get)\s+(?:the\s+)?(?:robot\s+)?(?:arms|robots)(?:\s+to)?)"
+)
+_WISH_WITH_PARTICIPLE = (
+    r"(?:(?:i|we)\s+(?:would\s+(?:like|love|prefer)|want|need|wish)|let\s+(?:s|us)\s+(?:get|have)|get|have)"
+)
+_GOOD = r"(?:great|nice|good|ideal|lovely|helpful|best|perfect|wonderful)"
+_FINISHED = r"(?:finished|done|through|complete|completed)"
+
+_RULES: tuple[tuple[str, str], ...] = (
+    # a goal stated as the final state
+    (
+        rf"{_START}(?:by\s+the\s+end|in\s+the\s+end|(?:when|once)\s+(?:you|we|they)\s+are\s+{_FINISHED})\s*,",
+        r"\1 at the end ,",
+    ),
+    (
+        r"^\s*(?:(?:the\s+)?(?:end\s+(?:result|state)|final\s+(?:result|state|layout|arrangement)|outcome)\s+"
+        r"(?:should|must|will)\s+be|what\s+(?:i|we)\s+(?:want|would\s+like|need|expect)\s+to\s+see\s+"
+        r"(?:at\s+the\s+end|in\s+the\s+end|afterwards)\s*(?::|is))\s*"
+        + _OBJECTS
+        + r"\s+(?:(?:placed|put|sitting|resting|located|standing|lying)\s+)?(on|onto|in|at)\b",
+        r"at the end , \1 should be \2",
+    ),
+    (r"\b(be|are|is|stay|remain)\s+(?:sitting|resting|lying|standing|sat)\s+(?=(?:on|in|at|upon)\b)", r"\1 "),
+    (r"\b(should|must|will)\s+have\s+been\s+(?=" + _PARTICIPLE + r"\b)", r"\1 be "),
+    (r"\b(should|must|will)\s+have\s+(?:swapped|exchanged|switched|traded)\s+(places|positions|spots)\b", r"\1 swap \2"),
+    (r"(\b(?:no|nothing|not|never)\b[^,;]*?)\s+(?:on|along)\s+the\s+way(?:\s+there)?\b", r"\1 at any point"),
+    # a completion clause, onto the forms the word tables read ("once that is done,"): "that's" is "that s";
+    # "they" are the blocks just moved; "in place" or "there" is done
+    (r"\b(once|when|after)\s+(that|this|it|everything)\s+s\b", r"\1 \2 is"),
+    (
+        r"\b(once|when|after)\s+(?:they|everything)\s+(?:are|is|have\s+been|has\s+been)\s+(?:all\s+)?"
+        r"(?:over|there|in\s+place)\s*,",
+        r"\1 that is done ,",
+    ),
+    # a block left alone until another is touched
+    (
+        rf",?\s*\b(?:with|leaving|leave|keeping|keep)\s+({_BLOCK})\s+(?:left\s+)?(?:alone|untouched|not\s+touched)"
+        r"\s+(until|before)\b",
+        r" , \1 must not be touched \2",
+    ),
+    # order words at the end of a clause
+    (
+        rf"({_BLOCK})\s+first\s*,?\s*(?:and\s+)?(?:then\s+)?({_BLOCK})\s+(?:later|afterwards?|after\s+that|next|second|last)\b",
+        r"\1 before \2",
+    ),
+    (rf"({_BLOCK})\s+(?:later|last|second)\s*,?\s*(?:and\s+)?({_BLOCK})\s+first\b", r"\2 before \1"),
+    # regions kept empty; one object per region
+    (r"\b(?:free|clear|empty)\s+of\s+(?:objects|blocks|pillars|anything|everything|items|things)\b", "empty"),
+    (
+        rf",?\s*\bwhile\s+(?:keeping|you\s+keep|we\s+keep)\s+((?:regions?\s+)?{_LETTERS})\s+"
+        r"(empty|clear|free|unoccupied|vacant)\b",
+        r" , while \1 stay \2",
+    ),
+    (
+        r"\b(?:never|no|not)\s+more\s+than\s+one\s+(?:object|block|pillar|item)?\s*(?:in|on|per)\s+"
+        r"(?:a|any|each|every|one)\s+region\b",
+        "one object per region",
+    ),
+)
+_COMPILED = tuple((re.compile(pattern), replacement) for pattern, replacement in _RULES)
+_WISH_VERB = re.compile(rf"{_START}{_WISH_BEFORE_VERB}\s+(?=(?:{VERB}|swap|exchange|keep|make)\b)")
+_WISH_PARTICIPLE = re.compile(rf"{_START}{_WISH_WITH_PARTICIPLE}\s+{_OBJECTS}\s+({_PARTICIPLE})\b")
+_PAST_WISH = re.compile(
+    rf"{_START}it\s+would\s+be\s+{_GOOD}\s+if\s+{_OBJECTS}\s+"
+    rf"(?:went|moved|got\s+({_PARTICIPLE})|(?:were|was)\s+({_PARTICIPLE}))\b"
+)
+
+
+def _as_command(match: re.Match[str]) -> str:
+    return f"{match[1]} {_PARTICIPLES[match[3]]} {match[2]}"
+
+
+def _past_as_command(match: re.Match[str]) -> str:
+    participle = match[3] or match[4]
+    return f"{match[1]} {_PARTICIPLES[participle] if participle else 'move'} {match[2]}"
+
+
+def unwished(text: str) -> str:
+    """The lower-cased sentence with its wishes, final-state goals and completion clauses said as commands
+    (see the module docstring).
+
+    >>> unwished("would it be possible to move the three blocks to h , i and j")
+    ' move the three blocks to h , i and j'
+    >>> unwished("i would like the three pillars moved to e , f and g")
+    ' move the three pillars to e , f and g'
+    """
+    text = _WISH_VERB.sub(r"\1 ", text)
+    text = _WISH_PARTICIPLE.sub(_as_command, text)
+    text = _PAST_WISH.sub(_past_as_command, text)
+    for pattern, replacement in _COMPILED:
+        text = pattern.sub(replacement, text)
+    return text
