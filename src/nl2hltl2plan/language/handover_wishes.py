@@ -78,15 +78,27 @@ _RULES: tuple[tuple[str, str], ...] = (
     (
         r"^\s*(?:(?:the\s+)?(?:end\s+(?:result|state)|final\s+(?:result|state|layout|arrangement)|outcome)\s+"
         r"(?:should|must|will)\s+be|what\s+(?:i|we)\s+(?:want|would\s+like|need|expect)\s+to\s+see\s+"
-        r"(?:at\s+the\s+end|in\s+the\s+end|afterwards)\s*(?::|is))\s*"
+        r"(?:at\s+the\s+end|in\s+the\s+end|afterwards)\s*(?::|is)|(?:the\s+)?(?:goal|aim|objective|target)\s+is"
+        r"(?:\s+to\s+have)?)\s*"
         + _OBJECTS
         + r"\s+(?:(?:placed|put|sitting|resting|located|standing|lying)\s+)?(on|onto|in|at)\b",
         r"at the end , \1 should be \2",
     ),
     (r"\b(be|are|is|stay|remain)\s+(?:sitting|resting|lying|standing|sat)\s+(?=(?:on|in|at|upon)\b)", r"\1 "),
     (r"\b(should|must|will)\s+have\s+been\s+(?=" + _PARTICIPLE + r"\b)", r"\1 be "),
-    (r"\b(should|must|will)\s+have\s+(?:swapped|exchanged|switched|traded)\s+(places|positions|spots)\b", r"\1 swap \2"),
+    (
+        r"\b(should|must|will)\s+have\s+(?:swapped|exchanged|switched|traded)\s+(places|positions|spots)\b",
+        r"\1 swap \2",
+    ),
     (r"(\b(?:no|nothing|not|never)\b[^,;]*?)\s+(?:on|along)\s+the\s+way(?:\s+there)?\b", r"\1 at any point"),
+    (r"(\b(?:no|nothing|not|never)\b[^,;]*?)\s+until\s+then\s*$", r"\1 meanwhile"),
+    (r",\s*with\s+(?=(?:nothing|no\s+(?:objects?|blocks?))\s+(?:put|placed|set|going|allowed)\b)", ", "),
+    # a block's next place after "then": "(and) then finish on / end up on / go on to region G"
+    (
+        r"\bthen\s+(?:finish(?:es)?|ends?\s+up|go(?:es)?|moves?|carr(?:y|ies)\s+on|continues?)\s+(?:on\s+)?(?:on|to|onto|in|at)\s+"
+        r"(?=(?:regions?\s+)?[e-j]\b)",
+        "then ",
+    ),
     # a completion clause, onto the forms the word tables read ("once that is done,"): "that's" is "that s";
     # "they" are the blocks just moved; "in place" or "there" is done
     (r"\b(once|when|after)\s+(that|this|it|everything)\s+s\b", r"\1 \2 is"),
@@ -123,6 +135,8 @@ _RULES: tuple[tuple[str, str], ...] = (
 _COMPILED = tuple((re.compile(pattern), replacement) for pattern, replacement in _RULES)
 _WISH_VERB = re.compile(rf"{_START}{_WISH_BEFORE_VERB}\s+(?=(?:{VERB}|swap|exchange|keep|make)\b)")
 _WISH_PARTICIPLE = re.compile(rf"{_START}{_WISH_WITH_PARTICIPLE}\s+{_OBJECTS}\s+({_PARTICIPLE})\b")
+# "..., and the yellow block went to ...": the same wish goes on
+_AND_WENT = re.compile(rf"(,|\band\b)\s*{_OBJECTS}\s+went\b")
 _PAST_WISH = re.compile(
     rf"{_START}it\s+would\s+be\s+{_GOOD}\s+if\s+{_OBJECTS}\s+"
     rf"(?:went|moved|got\s+({_PARTICIPLE})|(?:were|was)\s+({_PARTICIPLE}))\b"
@@ -149,7 +163,9 @@ def unwished(text: str) -> str:
     """
     text = _WISH_VERB.sub(r"\1 ", text)
     text = _WISH_PARTICIPLE.sub(_as_command, text)
-    text = _PAST_WISH.sub(_past_as_command, text)
+    text, wishes = _PAST_WISH.subn(_past_as_command, text)
+    if wishes:
+        text = _AND_WENT.sub(r"\1 move \2", text)
     for pattern, replacement in _COMPILED:
         text = pattern.sub(replacement, text)
     return text
