@@ -60,7 +60,8 @@ READ = [
 REFUSED = [
     (6, "Have arm a place the three objects on G, H and I, one per region, red before blue."),  # one arm
     (1, "Let's not move the three blocks to the opposite side, red before blue."),
-    (1, "It would be great if the three blocks went to the opposite side, red before blue, but I'm not sure."),
+    (1, "It would be great if the three blocks went to the opposite side, red before blue, but I'm not "
+     "sure."),
     (2, "I'd like the three blocks moved to H, I and J, two per region."),
     (8, "The yellow block went to region I. Red and blue go to any empty region at any time."),  # no wish
     (2, "The end result should be the three blocks on H, I and K, one per region."),  # no region K
