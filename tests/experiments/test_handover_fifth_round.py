@@ -55,6 +55,13 @@ READ = [
     (7, "Place the three objects on region I one after another, red before blue, while you keep F, G and H "
      "clear of blocks."),
     (2, "Put the three blocks on H, I and J, no more than one block on any region."),
+    (2, "Put the three blocks on H, I and J; there should never be more than one object in a region."),
+    # more forms of the same classes
+    (5, "Swap the red and blue blocks with red placed first, and move the yellow block to the opposite side "
+     "at your convenience."),
+    (1, "By the time you're done, the three blocks should be on the opposite side, red placed before blue."),
+    (4, "Move the three blocks to the opposite regions without touching blue before red has been touched. "
+     "When all of them are over, the yellow one goes back to G."),
 ]
 
 REFUSED = [
@@ -77,6 +84,7 @@ REFUSED = [
     (6, "Place the red block first and the blue block on H later. Put the three objects on G, H and I, one "
      "per region."),
     (2, "Put the three blocks on H, I and J, never more than two blocks in a region."),
+    (2, "Put the three blocks on H, I and J; there should never be more than two objects in a region."),
     (8, "Yellow should visit region I and then finish on region K; red and blue should each end up on any "
      "empty region, whenever."),
 ]

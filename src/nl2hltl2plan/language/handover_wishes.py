@@ -9,16 +9,20 @@ it or refuses it by name:
   three blocks moved to", "let's get the blocks placed on", "have the red block put ...") as the command
   ("move the three blocks to"); a past-tense wish ("it would be great if the yellow block went to I") as
   the command ("move the yellow block to I");
-- a goal stated as the final state: "by the end / in the end / when you're finished," is "at the end,"
-  (a last step after other commands, nothing on its own); "the end result should be X on P" and "what I
-  want to see at the end: X on P" are "at the end, X should be on P"; "should be sitting on" is "should
-  be on"; "should have swapped places" is "should swap places"; "on the way there" in a prohibition is
-  "at any point";
-- a completion clause: "when that's all done," is "when that is all done,"; "once they're all over,"
-  and "once everything is in place," are "once that is done,";
+- a goal stated as the final state: "by the end / in the end / when (by the time) you're finished," is
+  "at the end," (a last step after other commands, nothing on its own); "the end result should be X on
+  P", "the goal is X placed on P" and "what I want to see at the end: X on P" are "at the end, X should
+  be on P"; "should be sitting on" is "should be on"; "should have swapped places" is "should swap
+  places"; "on the way there" and "until then" in a prohibition are "at any point" and "meanwhile";
+  "with nothing put on ..." is "nothing put on ...";
+- a block's next place after "then": "(and) then finish on / end up on / go on to region G" is "then
+  region G";
+- a completion clause: "when that's all done," is "when that is all done,"; "once they're all over
+  / across," and "once everything is in place," are "once that is done,";
 - "with blue left alone until red has been touched" is "blue must not be touched until ...";
 - order words at the end of a clause: "place the red block first and the blue block later" is "place
   the red block before the blue block";
+- "at your convenience" is "whenever convenient";
 - kept-empty regions: "free of objects" is "empty"; "while keeping regions F, G and H empty" is "while
   regions F, G and H stay empty"; "never more than one object in a region" is "one object per region".
 """
@@ -72,7 +76,8 @@ _FINISHED = r"(?:finished|done|through|complete|completed)"
 _RULES: tuple[tuple[str, str], ...] = (
     # a goal stated as the final state
     (
-        rf"{_START}(?:by\s+the\s+end|in\s+the\s+end|(?:when|once)\s+(?:you|we|they)\s+are\s+{_FINISHED})\s*,",
+        rf"{_START}(?:by\s+the\s+end|in\s+the\s+end|(?:when|once|by\s+the\s+time)\s+(?:you|we|they)\s+are\s+"
+        rf"{_FINISHED})\s*,",
         r"\1 at the end ,",
     ),
     (
@@ -103,8 +108,8 @@ _RULES: tuple[tuple[str, str], ...] = (
     # "they" are the blocks just moved; "in place" or "there" is done
     (r"\b(once|when|after)\s+(that|this|it|everything)\s+s\b", r"\1 \2 is"),
     (
-        r"\b(once|when|after)\s+(?:they|everything)\s+(?:are|is|have\s+been|has\s+been)\s+(?:all\s+)?"
-        r"(?:over|there|in\s+place)\s*,",
+        r"\b(once|when|after)\s+(?:they|all\s+of\s+them|everything)\s+(?:are|is|have\s+been|has\s+been)\s+"
+        r"(?:all\s+)?(?:over|across|there|in\s+place)\s*,",
         r"\1 that is done ,",
     ),
     # a block left alone until another is touched
@@ -119,6 +124,7 @@ _RULES: tuple[tuple[str, str], ...] = (
         r"\1 before \2",
     ),
     (rf"({_BLOCK})\s+(?:later|last|second)\s*,?\s*(?:and\s+)?({_BLOCK})\s+first\b", r"\2 before \1"),
+    (r"\bat\s+your\s+(?:convenience|leisure)\b", "whenever convenient"),
     # regions kept empty; one object per region
     (r"\b(?:free|clear|empty)\s+of\s+(?:objects|blocks|pillars|anything|everything|items|things)\b", "empty"),
     (
@@ -127,7 +133,7 @@ _RULES: tuple[tuple[str, str], ...] = (
         r" , while \1 stay \2",
     ),
     (
-        r"\b(?:never|no|not)\s+more\s+than\s+one\s+(?:object|block|pillar|item)?\s*(?:in|on|per)\s+"
+        r"\b(?:there\s+(?:should|must|can|may|will)\s+(?:never|not)\s+be\s+|(?:never|no|not)\s+)more\s+than\s+one\s+(?:object|block|pillar|item)?\s*(?:in|on|per)\s+"
         r"(?:a|any|each|every|one)\s+region\b",
         "one object per region",
     ),
