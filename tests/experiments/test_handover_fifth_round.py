@@ -62,6 +62,11 @@ READ = [
     (1, "By the time you're done, the three blocks should be on the opposite side, red placed before blue."),
     (4, "Move the three blocks to the opposite regions without touching blue before red has been touched. "
      "When all of them are over, the yellow one goes back to G."),
+    # one block per region said as a prohibition of two, or with the place first (non-native); "after this,"
+    (2, "Put the three blocks on H, I and J, one on each, you can't have two on the same region."),
+    (2, "Put the three block into region H, I, J, in each region only one block."),
+    (4, "Move three blocks to opposite regions. Before red block is touched, blue block can not be touched. "
+     "After this, put yellow block back to region G."),
 ]
 
 REFUSED = [
@@ -85,6 +90,11 @@ REFUSED = [
      "per region."),
     (2, "Put the three blocks on H, I and J, never more than two blocks in a region."),
     (2, "Put the three blocks on H, I and J; there should never be more than two objects in a region."),
+    (2, "Put the three blocks on H, I and J, you can't have three on the same region."),
+    (2, "Put the three blocks on H, I and J, you can't have two on region H."),
+    (2, "Put the three block into region H, I, J, in each region two blocks."),
+    (4, "Move three blocks to opposite regions. Before red block is touched, blue block can not be touched. "
+     "After this one, put yellow block back to region G."),
     (8, "Yellow should visit region I and then finish on region K; red and blue should each end up on any "
      "empty region, whenever."),
 ]

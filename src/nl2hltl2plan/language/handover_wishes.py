@@ -17,14 +17,17 @@ it or refuses it by name:
   "with nothing put on ..." is "nothing put on ...";
 - a block's next place after "then": "(and) then finish on / end up on / go on to region G" is "then
   region G";
-- a completion clause: "when that's all done," is "when that is all done,"; "once they're all over
-  / across," and "once everything is in place," are "once that is done,";
+- a completion clause: "when that's all done," is "when that is all done,"; "after this," is "after
+  that,"; "once they're all over / across," and "once everything is in place," are "once that is done,";
 - "with blue left alone until red has been touched" is "blue must not be touched until ...";
 - order words at the end of a clause: "place the red block first and the blue block later" is "place
   the red block before the blue block";
 - "at your convenience" is "whenever convenient";
 - kept-empty regions: "free of objects" is "empty"; "while keeping regions F, G and H empty" is "while
-  regions F, G and H stay empty"; "never more than one object in a region" is "one object per region".
+  regions F, G and H stay empty";
+- one block per region: "never more than one object in a region" and "you can't have two on the same
+  region" are "one object per region"; "in each region only one block" is "only one block in each
+  region".
 """
 
 from __future__ import annotations
@@ -112,6 +115,7 @@ _RULES: tuple[tuple[str, str], ...] = (
         r"(?:all\s+)?(?:over|across|there|in\s+place)\s*,",
         r"\1 that is done ,",
     ),
+    (r"\bafter\s+this\s*,", "after that ,"),
     # a block left alone until another is touched
     (
         rf",?\s*\b(?:with|leaving|leave|keeping|keep)\s+({_BLOCK})\s+(?:left\s+)?(?:alone|untouched|not\s+touched)"
@@ -136,6 +140,16 @@ _RULES: tuple[tuple[str, str], ...] = (
         r"\b(?:there\s+(?:should|must|can|may|will)\s+(?:never|not)\s+be\s+|(?:never|no|not)\s+)more\s+than\s+one\s+(?:object|block|pillar|item)?\s*(?:in|on|per)\s+"
         r"(?:a|any|each|every|one)\s+region\b",
         "one object per region",
+    ),
+    (
+        r"\b(?:(?:you|we|they)\s+)?(?:cannot|can\s+not|must\s+not|should\s+not|may\s+not|do\s+not|never)\s+"
+        r"(?:have|put|place|set|leave)\s+two\s+(?:(?:objects|blocks|pillars)\s+)?(?:on|in)\s+"
+        r"(?:the\s+same|one|a\s+single)\s+region\b",
+        "one object per region",
+    ),
+    (
+        r"\bin\s+(?:each|every)\s+region\s+(?:only\s+|just\s+)?one\s+(block|object|pillar)\b",
+        r"only one \1 in each region",
     ),
 )
 _COMPILED = tuple((re.compile(pattern), replacement) for pattern, replacement in _RULES)
