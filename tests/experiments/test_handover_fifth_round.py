@@ -35,8 +35,8 @@ READ = [
      "on the opposite side at any time."),
     (4, "Move the three blocks to the opposite regions without touching blue before red has been touched. "
      "When you're done, the yellow block should be back on G."),
-    (7, "The aim is to have the three objects on region I one by one, red before blue, and nothing may be "
-     "put on F, G or H until then."),
+    (7, "The aim is to have the three objects on region I one by one, red before blue, with nothing put on "
+     "F, G or H until then."),
     (8, "The yellow block goes to I first, then carries on to G; the red and blue blocks go to any empty "
      "region at any time."),
     # completion clauses
@@ -154,6 +154,7 @@ def test_wishes_and_final_states_in_words(text, expected):
         "i would like the red block on g",  # no participle: left to the word tables
         "at the end , put the red block on g",  # already a last step
         "place the red block first and the blue block on h later",
+        "place the red block first and the blue block next to it",
     ],
 )
 def test_other_forms_are_left_to_the_reader(text):

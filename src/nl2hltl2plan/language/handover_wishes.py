@@ -13,8 +13,8 @@ it or refuses it by name:
   "at the end," (a last step after other commands, nothing on its own); "the end result should be X on
   P", "the goal is X placed on P" and "what I want to see at the end: X on P" are "at the end, X should
   be on P"; "should be sitting on" is "should be on"; "should have swapped places" is "should swap
-  places"; "on the way there" and "until then" in a prohibition are "at any point" and "meanwhile";
-  "with nothing put on ..." is "nothing put on ...";
+  places"; "on the way there" in a prohibition is "at any point"; "with nothing put on ... (until then)"
+  is "nothing put on ... (meanwhile)";
 - a block's next place after "then": "(and) then finish on / end up on / go on to region G" is "then
   region G";
 - a completion clause: "when that's all done," is "when that is all done,"; "after this," is "after
@@ -99,7 +99,13 @@ _RULES: tuple[tuple[str, str], ...] = (
         r"\1 swap \2",
     ),
     (r"(\b(?:no|nothing|not|never)\b[^,;]*?)\s+(?:on|along)\s+the\s+way(?:\s+there)?\b", r"\1 at any point"),
-    (r"(\b(?:no|nothing|not|never)\b[^,;]*?)\s+until\s+then\s*$", r"\1 meanwhile"),
+    # "..., with nothing put on F until then": until the goal of its sentence is reached, i.e. meanwhile (in
+    # a sentence of its own, "until then" may name an earlier step: left to the reader)
+    (
+        r",\s*with\s+((?:nothing|no\s+(?:objects?|blocks?))\s+(?:put|placed|set|going|allowed)\b[^,;]*?)\s+"
+        r"until\s+then\s*$",
+        r", \1 meanwhile",
+    ),
     (r",\s*with\s+(?=(?:nothing|no\s+(?:objects?|blocks?))\s+(?:put|placed|set|going|allowed)\b)", ", "),
     # a block's next place after "then": "(and) then finish on / end up on / go on to region G"
     (
@@ -124,7 +130,7 @@ _RULES: tuple[tuple[str, str], ...] = (
     ),
     # order words at the end of a clause
     (
-        rf"({_BLOCK})\s+first\s*,?\s*(?:and\s+)?(?:then\s+)?({_BLOCK})\s+(?:later|afterwards?|after\s+that|next|second|last)\b",
+        rf"({_BLOCK})\s+first\s*,?\s*(?:and\s+)?(?:then\s+)?({_BLOCK})\s+(?:later|afterwards?|after\s+that|next|second|last)\b(?!\s*(?:to|of)\b)",
         r"\1 before \2",
     ),
     (rf"({_BLOCK})\s+(?:later|last|second)\s*,?\s*(?:and\s+)?({_BLOCK})\s+first\b", r"\2 before \1"),
