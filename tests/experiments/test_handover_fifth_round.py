@@ -67,6 +67,25 @@ READ = [
     (2, "Put the three block into region H, I, J, in each region only one block."),
     (4, "Move three blocks to opposite regions. Before red block is touched, blue block can not be touched. "
      "After this, put yellow block back to region G."),
+    # after dev19: a polite tag, "possibly", "hoping the arms could", a swap wished in the past, "let's
+    # have X go", "we'd like F to stay empty", "should have stayed empty", "first and end up on", "never
+    # two on the same region", "X going down first and Y later"
+    (1, "Could you get all three blocks to the opposite side? Red goes down before blue, if that's okay."),
+    (3, "Could you possibly have the arms take the three pillars to E, F and G by arms a and b? Nothing may "
+     "go on any other region."),
+    (6, "I was hoping the arms could put the three objects on G, H and I, one per region, red before blue."),
+    (5, "It would be nice if red and blue swapped positions, with red placed first; the yellow block goes to "
+     "the opposite side at any time."),
+    (8, "Let's have the yellow block go to region I first and then on to G. Red and blue go to any empty "
+     "region at any time."),
+    (7, "Put the three objects on region I one at a time, red before blue; we'd like F, G and H to stay "
+     "empty during this period."),
+    (7, "All three objects should be placed on region I one after another, red before blue, and F, G and H "
+     "should have stayed empty throughout."),
+    (8, "The yellow block should be on region I first and end up on region G; red and blue go to any empty "
+     "region at any time."),
+    (2, "Three blocks onto H, I and J; never two on the same region."),
+    (6, "Put the three objects on G, H and I, one per region, with red going down first and blue later."),
 ]
 
 REFUSED = [
@@ -93,6 +112,13 @@ REFUSED = [
     (2, "Put the three blocks on H, I and J, you can't have three on the same region."),
     (2, "Put the three blocks on H, I and J, you can't have two on region H."),
     (2, "Put the three block into region H, I, J, in each region two blocks."),
+    (1, "Could you get all three blocks to the opposite side? Red goes down before blue, if that's not "
+     "hard."),
+    (6, "I was hoping arm a could put the three objects on G, H and I, one per region, red before blue."),
+    (7, "Put the three objects on region I one at a time, red before blue; we'd like F, G and K to stay "
+     "empty during this period."),
+    (8, "The yellow block should be on region I first and end up on region K; red and blue go to any empty "
+     "region at any time."),
     (4, "Move three blocks to opposite regions. Before red block is touched, blue block can not be touched. "
      "After this one, put yellow block back to region G."),
     (8, "Yellow should visit region I and then finish on region K; red and blue should each end up on any "
@@ -104,6 +130,7 @@ OTHER = [
     (6, "Place the blue block first and the red block later. Put the three objects on G, H and I, one per "
      "region."),
     (1, "It would be great if the three blocks went to the opposite side, blue before red."),
+    (6, "Put the three objects on G, H and I, one per region, with blue going down first and red later."),
     (8, "Yellow should visit region I and then finish on region H; red and blue should each end up on any "
      "empty region, whenever."),
 ]
