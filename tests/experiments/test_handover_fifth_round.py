@@ -86,6 +86,10 @@ READ = [
      "region at any time."),
     (2, "Three blocks onto H, I and J; never two on the same region."),
     (6, "Put the three objects on G, H and I, one per region, with red going down first and blue later."),
+    # near misses of the third and fourth rounds (unread then), read by this round's rules
+    (6, "place the three objects separately on g h and i red placed first blue after"),
+    (4, "Carry the three blocks to the opposite regions, leaving the blue block alone until the red one has "
+     "been touched. To conclude, the yellow block goes back to G."),
 ]
 
 REFUSED = [
@@ -131,6 +135,7 @@ OTHER = [
      "region."),
     (1, "It would be great if the three blocks went to the opposite side, blue before red."),
     (6, "Put the three objects on G, H and I, one per region, with blue going down first and red later."),
+    (6, "place the three objects separately on g h and i blue placed first red after"),
     (8, "Yellow should visit region I and then finish on region H; red and blue should each end up on any "
      "empty region, whenever."),
 ]
