@@ -73,8 +73,8 @@ _WISH_BEFORE_VERB = (
     r"(?:i|we)\s+(?:was|were|am|are)\s+hoping\s+(?:that\s+)?(?:you|the\s+(?:robot\s+)?arms|the\s+robots)\s+"
     r"(?:could|would|can|might|will)|"
     r"let\s+(?:s|us)|"
-    r"(?:(?:could|would|can|will)\s+you\s+(?:possibly\s+|please\s+|kindly\s+)?)?(?:have|get)\s+(?:the\s+)?(?:robot\s+)?"
-    r"(?:arms|robots)(?:\s+to)?)"
+    r"(?:(?:could|would|can|will)\s+you\s+(?:possibly\s+|please\s+|kindly\s+)?)?"
+    r"(?:have|get)\s+(?:the\s+)?(?:robot\s+)?(?:arms|robots)(?:\s+to)?)"
 )
 _WISH_WITH_PARTICIPLE = (
     r"(?:(?:i|we)\s+(?:would\s+(?:like|love|prefer)|want|need|wish)|let\s+(?:s|us)\s+(?:get|have)|get|have)"
@@ -117,11 +117,11 @@ _RULES: tuple[tuple[str, str], ...] = (
         r", \1 meanwhile",
     ),
     (r",\s*with\s+(?=(?:nothing|no\s+(?:objects?|blocks?))\s+(?:put|placed|set|going|allowed)\b)", ", "),
-    # a block's next place after "then": "(and) then finish on / end up on / go on to region G"
+    # a block's next place after "then" or "first and": "then finish on / end up on / go on to region G"
     (
-        r"\b(?:then|(?<=first\s)and(?:\s+then)?)\s+(?:finish(?:es)?|ends?\s+up|go(?:es)?|moves?|carr(?:y|ies)\s+on|continues?)\s+"
-        r"(?:on\s+)?(?:on|to|onto|in|at)\s+"
-        r"(?=(?:regions?\s+)?[e-j]\b)",
+        r"\b(?:then|(?<=first\s)and(?:\s+then)?)\s+"
+        r"(?:finish(?:es)?|ends?\s+up|go(?:es)?|moves?|carr(?:y|ies)\s+on|continues?)\s+"
+        r"(?:on\s+)?(?:on|to|onto|in|at)\s+(?=(?:regions?\s+)?[e-j]\b)",
         "then ",
     ),
     # a completion clause, onto the forms the word tables read ("once that is done,"): "that's" is "that s";
@@ -163,8 +163,8 @@ _RULES: tuple[tuple[str, str], ...] = (
         r" , while \1 stay \2",
     ),
     (
-        r"\b(?:there\s+(?:should|must|can|may|will)\s+(?:never|not)\s+be\s+|(?:never|no|not)\s+)more\s+than\s+one\s+(?:object|block|pillar|item)?\s*(?:in|on|per)\s+"
-        r"(?:a|any|each|every|one)\s+region\b",
+        r"\b(?:there\s+(?:should|must|can|may|will)\s+(?:never|not)\s+be\s+|(?:never|no|not)\s+)"
+        r"more\s+than\s+one\s+(?:object|block|pillar|item)?\s*(?:in|on|per)\s+(?:a|any|each|every|one)\s+region\b",
         "one object per region",
     ),
     (
