@@ -122,11 +122,9 @@ REFUSED = [
     # a verb the heading does not read; region I left out of a list is never dropped as the pronoun "I"
     (7, "- all three objects → region I, one after another\n- red before blue\n- F, G, H: nothing removed"),
     (6, "Put the three objects on G, H, also I. Red before blue."),
-    # a scope that is not the whole scene; "leaving X alone", "to start", "check whether": not read
+    # a scope that is not the whole scene; "to start", "check whether": not read
     (1, "You will need: the red and blue blocks. Method: move each block to the opposite side, red before "
      "blue."),
-    (4, "Carry the three blocks to the opposite regions, leaving the blue block alone until the red one has "
-     "been touched. To conclude, the yellow block goes back to G."),
     (4, "Carry the three blocks to the opposite regions, leaving the blue block untouched until the red one "
      "has been touched. To start, the yellow block goes back to G."),
     (6, "Set the three objects out on G, H and I, 1 each. Check whether red is placed before blue."),

@@ -105,8 +105,6 @@ REFUSED = [
         "Move the three pillars to regions H, I and J, right next to arm a and arm b. Place nothing on any "
         "other region.",
     ),
-    # a dictated order whose clause break is not at a colour: left unread
-    (6, "place the three objects separately on g h and i red placed first blue after"),
 ]
 
 

@@ -45,6 +45,7 @@ from nl2hltl2plan.language.handover_scene import (
 )
 from nl2hltl2plan.language.handover_spoken import unspoken
 from nl2hltl2plan.language.handover_typos import typo_table
+from nl2hltl2plan.language.handover_wishes import unwished
 from nl2hltl2plan.language.handover_words import (
     DONE,
     GERUND,
@@ -64,14 +65,15 @@ _REWRITES = tuple((re.compile(pattern), replacement) for pattern, replacement in
 
 def normalise(sentence: str) -> str:
     """Lower case, punctuation spaced out, typos mended, spoken styles normalised (`handover_spoken`),
-    framing dropped and `REWRITES` applied."""
+    wishes and final-state goals said as commands (`handover_wishes`), framing dropped and `REWRITES`
+    applied."""
     text = sentence.lower().replace("’", "'")
     text = re.sub(r"(?<=[a-z])-(?=[a-z])", " ", text)  # one-by-one -> one by one
     text = _DASH.sub(lambda dash: _dash_as_comma(text, dash), text)
     text = re.sub(r"([,()/:])", r" \1 ", text)
     text = re.sub(r"\b(\w+)'s\b", r"\1 s", text)  # red's -> red s (a possessive)
     text = re.sub(r"[a-z]+", lambda w: TYPOS.get(w.group(0), w.group(0)), text)
-    text = _drop_framing(unspoken(text))
+    text = _drop_framing(unwished(unspoken(text)))
     for pattern, replacement in FRAME + REGISTERS + _REWRITES:
         text = pattern.sub(replacement, text)
     text = re.sub(r"\bplease\b\s*,?", " ", text)  # politeness anywhere: "all three blocks please move to ..."

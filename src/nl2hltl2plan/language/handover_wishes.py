@@ -1,0 +1,225 @@
+"""Wishes, goals stated as the final state and completion clauses of the handover instructions, rewritten
+onto the commands the reader reads (`handover_phrases.normalise` calls `unwished` on the lower-cased
+sentence after `handover_spoken.unspoken`, whose contractions it relies on: "i'd" is "i would", "that's"
+is "that s"). Each rewrite changes no meaning; what it does not match is left for the reader, which reads
+it or refuses it by name:
+
+- wishes and indirect requests before a verb: "would it be possible to", "would you be able to", "i was
+  hoping you (the arms) could", "let's", "(could you possibly) have the arms"; a wish with the object and
+  its participle ("i'd like the three blocks moved to", "let's get the blocks placed on", "have the red
+  block put ...") or "go" ("let's have the yellow block go to I") as the command ("move the three blocks
+  to"); a past-tense wish ("it would be great if the yellow block went to I", "... if red and blue
+  swapped places") as the command ("move the yellow block to I", "swap red and blue"); "we'd like F, G
+  and H to stay empty" as "F, G and H must stay empty"; a polite tag at the end ("if that's okay")
+  dropped;
+- a goal stated as the final state: "by the end / in the end / when (by the time) you're finished," is
+  "at the end," (a last step after other commands, nothing on its own); "the end result should be X on
+  P", "the goal is X placed on P" and "what I want to see at the end: X on P" are "at the end, X should
+  be on P"; "should be sitting on" is "should be on"; "should have stayed empty" is "should stay empty";
+  "should have swapped places" is "should swap places"; "on the way there" in a prohibition is "at any
+  point"; "with nothing put on ... (until then)" is "nothing put on ... (meanwhile)";
+- a block's next place after "then" or "first and": "(and) then finish on / end up on / go on to region
+  G", "on I first and end up on G" are "then region G";
+- a completion clause: "when that's all done," is "when that is all done,"; "after this," is "after
+  that,"; "once they're all over / across," and "once everything is in place," are "once that is done,";
+- "with blue left alone until red has been touched" is "blue must not be touched until ...";
+- order words at the end of a clause: "place the red block first and the blue block later (after)",
+  "red going down first and blue later" are "... the red block before the blue block";
+- "at your convenience" is "whenever convenient";
+- kept-empty regions: "free of objects" is "empty"; "while keeping regions F, G and H empty" is "while
+  regions F, G and H stay empty";
+- one block per region: "never more than one object in a region", "you can't have two on the same
+  region" and "never two on the same region" are "one object per region"; "in each region only one
+  block" is "only one block in each region".
+"""
+
+from __future__ import annotations
+
+import re
+
+from nl2hltl2plan.language.handover_words import VERB
+
+# a participle after its object in a wish ("i'd like the blocks moved to ..."), with its verb
+_PARTICIPLES = {
+    "moved": "move",
+    "put": "put",
+    "placed": "place",
+    "taken": "take",
+    "brought": "bring",
+    "transferred": "transfer",
+    "set": "set",
+    "carried": "carry",
+    "returned": "return",
+    "delivered": "deliver",
+    "relocated": "relocate",
+    "shifted": "shift",
+    "dropped": "drop",
+    "positioned": "position",
+    "swapped": "swap",
+    "exchanged": "exchange",
+}
+_PARTICIPLE = "(?:" + "|".join(_PARTICIPLES) + ")"
+_START = r"(^|,|;|\band\b)\s*"
+# a noun phrase of blocks: it starts with a determiner, a count or a colour and has no clause break,
+# no "of" (the academic "the relocation of ..." is another rule's) and no verb of its own
+_OBJECTS = r"((?:the|all|both|each|every|three|two|red|blue|yellow)\b(?:(?!\bof\b|\bis\b|\bare\b)[^,;:])*?)"
+_BLOCK = r"(?:the\s+)?(?:red|blue|yellow)(?:\s+(?:block|one|cube|object|pillar))?"
+_LETTERS = r"[e-j](?:\s*(?:,|and|or)\s*[e-j])*"
+_PUT_DOWN = r"(?:(?:going|goes|go|placed|put|set)(?:\s+down)?)"
+
+_WISH_BEFORE_VERB = (
+    r"(?:(?:would|could|is)\s+it\s+be\s+(?:possible|ok|okay|alright)\s+(?:for\s+you\s+)?to|"
+    r"(?:would|could|will)\s+you\s+be\s+able\s+to|"
+    r"(?:i|we)\s+(?:was|were|am|are)\s+hoping\s+(?:that\s+)?(?:you|the\s+(?:robot\s+)?arms|the\s+robots)\s+"
+    r"(?:could|would|can|might|will)|"
+    r"let\s+(?:s|us)|"
+    r"(?:(?:could|would|can|will)\s+you\s+(?:possibly\s+|please\s+|kindly\s+)?)?"
+    r"(?:have|get)\s+(?:the\s+)?(?:robot\s+)?(?:arms|robots)(?:\s+to)?)"
+)
+_WISH_WITH_PARTICIPLE = (
+    r"(?:(?:i|we)\s+(?:would\s+(?:like|love|prefer)|want|need|wish)|let\s+(?:s|us)\s+(?:get|have)|get|have)"
+)
+_GOOD = r"(?:great|nice|good|ideal|lovely|helpful|best|perfect|wonderful)"
+_FINISHED = r"(?:finished|done|through|complete|completed)"
+
+_RULES: tuple[tuple[str, str], ...] = (
+    # a goal stated as the final state
+    (
+        rf"{_START}(?:by\s+the\s+end|in\s+the\s+end|(?:when|once|by\s+the\s+time)\s+(?:you|we|they)\s+are\s+"
+        rf"{_FINISHED})\s*,",
+        r"\1 at the end ,",
+    ),
+    (
+        r"^\s*(?:(?:the\s+)?(?:end\s+(?:result|state)|final\s+(?:result|state|layout|arrangement)|outcome)\s+"
+        r"(?:should|must|will)\s+be|what\s+(?:i|we)\s+(?:want|would\s+like|need|expect)\s+to\s+see\s+"
+        r"(?:at\s+the\s+end|in\s+the\s+end|afterwards)\s*(?::|is)|(?:the\s+)?(?:goal|aim|objective|target)\s+is"
+        r"(?:\s+to\s+have)?)\s*"
+        + _OBJECTS
+        + r"\s+(?:(?:placed|put|sitting|resting|located|standing|lying)\s+)?(on|onto|in|at)\b",
+        r"at the end , \1 should be \2",
+    ),
+    (r"\b(be|are|is|stay|remain)\s+(?:sitting|resting|lying|standing|sat)\s+(?=(?:on|in|at|upon)\b)", r"\1 "),
+    (r"\b(should|must|will)\s+have\s+been\s+(?=" + _PARTICIPLE + r"\b)", r"\1 be "),
+    (
+        r"\b(should|must|will)\s+have\s+(?:stayed|remained|been\s+kept)\s+(?=(?:empty|clear|free|unoccupied)\b)",
+        r"\1 stay ",
+    ),
+    (
+        r"\b(should|must|will)\s+have\s+(?:swapped|exchanged|switched|traded)\s+(places|positions|spots)\b",
+        r"\1 swap \2",
+    ),
+    (r"(\b(?:no|nothing|not|never)\b[^,;]*?)\s+(?:on|along)\s+the\s+way(?:\s+there)?\b", r"\1 at any point"),
+    # "..., with nothing put on F until then": until the goal of its sentence is reached, i.e. meanwhile (in
+    # a sentence of its own, "until then" may name an earlier step: left to the reader)
+    (
+        r",\s*with\s+((?:nothing|no\s+(?:objects?|blocks?))\s+(?:put|placed|set|going|allowed)\b[^,;]*?)\s+"
+        r"until\s+then\s*$",
+        r", \1 meanwhile",
+    ),
+    (r",\s*with\s+(?=(?:nothing|no\s+(?:objects?|blocks?))\s+(?:put|placed|set|going|allowed)\b)", ", "),
+    # a block's next place after "then" or "first and": "then finish on / end up on / go on to region G"
+    (
+        r"\b(?:then|(?<=first\s)and(?:\s+then)?)\s+"
+        r"(?:finish(?:es)?|ends?\s+up|go(?:es)?|moves?|carr(?:y|ies)\s+on|continues?)\s+"
+        r"(?:on\s+)?(?:on|to|onto|in|at)\s+(?=(?:regions?\s+)?[e-j]\b)",
+        "then ",
+    ),
+    # a completion clause, onto the forms the word tables read ("once that is done,"): "that's" is "that s";
+    # "they" are the blocks just moved; "in place" or "there" is done
+    (r"\b(once|when|after)\s+(that|this|it|everything)\s+s\b", r"\1 \2 is"),
+    (
+        r"\b(once|when|after)\s+(?:they|all\s+of\s+them|everything)\s+(?:are|is|have\s+been|has\s+been)\s+"
+        r"(?:all\s+)?(?:over|across|there|in\s+place)\s*,",
+        r"\1 that is done ,",
+    ),
+    (r"\bafter\s+this\s*,", "after that ,"),
+    # a block left alone until another is touched
+    (
+        rf",?\s*\b(?:with|leaving|leave|keeping|keep)\s+({_BLOCK})\s+(?:left\s+)?(?:alone|untouched|not\s+touched)"
+        r"\s+(until|before)\b",
+        r" , \1 must not be touched \2",
+    ),
+    # order words at the end of a clause
+    (
+        rf"({_BLOCK})\s+(?:{_PUT_DOWN}\s+)?first\s*,?\s*(?:and\s+)?(?:then\s+)?({_BLOCK})\s+"
+        r"(?:later|afterwards?|after\s+that|after(?=\s*(?:,|;|$))|next|second|last)\b(?!\s*(?:to|of)\b)",
+        r"\1 before \2",
+    ),
+    (rf"({_BLOCK})\s+(?:later|last|second)\s*,?\s*(?:and\s+)?({_BLOCK})\s+first\b", r"\2 before \1"),
+    (r"\bat\s+your\s+(?:convenience|leisure)\b", "whenever convenient"),
+    # a polite tag at the end ("okay" may be gone already: `unspoken` drops it at a clause's end)
+    (r"\s*,?\s*\bif\s+(?:that\s+(?:s|is)(?:\s+(?:okay|ok|alright|fine))?|you\s+do\s+not\s+mind)\s*$", " "),
+    (r"\b(could|would|can|will)\s+you\s+(?:possibly|perhaps|kindly)\b", r"\1 you"),
+    (
+        rf"\b(?:i|we)\s+(?:would\s+like|want|need)\s+((?:regions?\s+)?{_LETTERS})\s+to\s+(?:stay|remain|be\s+kept)\s+"
+        r"(?=(?:empty|clear|free|unoccupied|vacant)\b)",
+        r"\1 must stay ",
+    ),
+    # regions kept empty; one object per region
+    (r"\b(?:free|clear|empty)\s+of\s+(?:objects|blocks|pillars|anything|everything|items|things)\b", "empty"),
+    (
+        rf",?\s*\bwhile\s+(?:keeping|you\s+keep|we\s+keep)\s+((?:regions?\s+)?{_LETTERS})\s+"
+        r"(empty|clear|free|unoccupied|vacant)\b",
+        r" , while \1 stay \2",
+    ),
+    (
+        r"\b(?:there\s+(?:should|must|can|may|will)\s+(?:never|not)\s+be\s+|(?:never|no|not)\s+)"
+        r"more\s+than\s+one\s+(?:object|block|pillar|item)?\s*(?:in|on|per)\s+(?:a|any|each|every|one)\s+region\b",
+        "one object per region",
+    ),
+    (
+        r"\b(?:(?:you|we|they)\s+)?(?:cannot|can\s+not|must\s+not|should\s+not|may\s+not|do\s+not|never)\s+"
+        r"(?:(?:have|put|place|set|leave)\s+)?two\s+(?:(?:objects|blocks|pillars)\s+)?(?:on|in)\s+"
+        r"(?:the\s+same|one|a\s+single)\s+region\b",
+        "one object per region",
+    ),
+    (
+        r"\bin\s+(?:each|every)\s+region\s+(?:only\s+|just\s+)?one\s+(block|object|pillar)\b",
+        r"only one \1 in each region",
+    ),
+)
+_COMPILED = tuple((re.compile(pattern), replacement) for pattern, replacement in _RULES)
+_WISH_VERB = re.compile(rf"{_START}{_WISH_BEFORE_VERB}\s+(?=(?:{VERB}|swap|exchange|keep|make)\b)")
+_WISH_PARTICIPLE = re.compile(rf"{_START}{_WISH_WITH_PARTICIPLE}\s+{_OBJECTS}\s+({_PARTICIPLE})\b")
+# "..., and the yellow block went to ...": the same wish goes on
+_AND_WENT = re.compile(rf"(,|\band\b)\s*{_OBJECTS}\s+went\b")
+_PAST_WISH = re.compile(
+    rf"{_START}it\s+would\s+be\s+{_GOOD}\s+if\s+{_OBJECTS}\s+"
+    rf"(?:went|moved|got\s+({_PARTICIPLE})|(?:were|was)\s+({_PARTICIPLE})|"
+    r"(?P<swapped>(?:swapped|exchanged|switched|traded)\s+(?:places|positions|spots)))\b"
+)
+# "let's have the yellow block go to I": the block's move
+_WISH_GO = re.compile(
+    rf"{_START}(?:let\s+(?:s|us)\s+(?:have|get)|have|get)\s+{_OBJECTS}\s+(?:go|move|travel)\b"
+)
+
+
+def _as_command(match: re.Match[str]) -> str:
+    return f"{match[1]} {_PARTICIPLES[match[3]]} {match[2]}"
+
+
+def _past_as_command(match: re.Match[str]) -> str:
+    participle = match[3] or match[4]
+    if match["swapped"]:
+        return f"{match[1]} swap {match[2]}"  # "... if X and Y swapped places"
+    return f"{match[1]} {_PARTICIPLES[participle] if participle else 'move'} {match[2]}"
+
+
+def unwished(text: str) -> str:
+    """The lower-cased sentence with its wishes, final-state goals and completion clauses said as commands
+    (see the module docstring).
+
+    >>> unwished("would it be possible to move the three blocks to h , i and j")
+    ' move the three blocks to h , i and j'
+    >>> unwished("i would like the three pillars moved to e , f and g")
+    ' move the three pillars to e , f and g'
+    """
+    text = _WISH_VERB.sub(r"\1 ", text)
+    text = _WISH_PARTICIPLE.sub(_as_command, text)
+    text = _WISH_GO.sub(r"\1 move \2", text)
+    text, wishes = _PAST_WISH.subn(_past_as_command, text)
+    if wishes:
+        text = _AND_WENT.sub(r"\1 move \2", text)
+    for pattern, replacement in _COMPILED:
+        text = pattern.sub(replacement, text)
+    return text
