@@ -94,3 +94,31 @@ def test_words_that_carry_meaning_are_kept():
 def test_an_ordering_remark_in_brackets_is_never_read_as_free():
     tasks, order, unread = read("egg -> fridge, mug -> sink (in that order)")
     assert order == {(EGG, MUG)} or unread
+
+
+# the lead's (session 12): contractions typed without the apostrophe, a reference to every task before
+# inside a sentence, a misspelt first word of a two-word name, "doesn't matter which first"
+LEAD_S12 = [
+    ("put the egg in the fridge, and when thats done put the mug in the sink", [EGG, MUG], {(EGG, MUG)}),
+    (
+        "put the egg in the fridge, the apple in the fridge, and after both of those put the mug in the sink",
+        [APPLE, EGG, MUG],
+        {(EGG, MUG), (APPLE, MUG)},
+    ),
+    ("put the egg in the fridge and the mug in the sink, doesn't matter which first", [EGG, MUG], set()),
+    ("put the mug on the countr top", ["place Mug -> CounterTop"], set()),
+]
+
+
+@pytest.mark.parametrize("text, tasks, order", LEAD_S12)
+def test_lead_session12_styles_are_read(text, tasks, order):
+    assert read(text) == (tasks, order, [])
+
+
+def test_only_a_two_word_name_with_one_close_spelling_is_corrected():
+    assert everyday("put the laptop on the coffe table") == "put the laptop on the coffee table"
+    # a known word, or a first word close to no name, is left as it is
+    assert everyday("put the mug on the side table") == "put the mug on the side table"
+    assert everyday("put the mug on the xyzzy table") == "put the mug on the xyzzy table"
+    # "its", "lets" and "well" are words: never taken for contractions
+    assert everyday("put the mug in its box") == "put the mug in its box"

@@ -20,9 +20,12 @@ words that carry no object, place, count, negation or order in the place where i
 
 from __future__ import annotations
 
+import difflib
 import re
+from functools import cache
 
 from nl2hltl2plan.language.grammar.restated import restated
+from nl2hltl2plan.language.grounding import lexicon
 
 # hesitations, the one list of them (the handover reader's spoken step uses it too)
 HESITATION = r"(?:u+h+m*|u+m+|e+r+m*|hmm+|mm+)"
@@ -70,13 +73,42 @@ _BELONGS = re.compile(r"\bbelongs?\s+(?:in|on|to)\b", re.I)
 _CLOSING_FREE_ORDER = re.compile(
     rf"\s*[,;.]\s*(?:(?:the\s+)?order\s+(?:does\s*n[o']?t|does\s+not)\s+matter|{_FREE_ORDER}"
     r"|(?:i|we)\s+(?:do\s*n[o']?t|do\s+not)\s+(?:care|mind)(?:\s+about)?\s+(?:the\s+)?order"
+    r"|(?:it\s+)?does\s*n[o']?t\s+matter\s+which(?:\s+one)?(?:\s+(?:goes|comes|is\s+done))?\s+first"
     r"|(?:the\s+)?order\s+is\s+(?:your\s+call|free|yours\s+to\s+choose))\s*[.!]?\s*$",
     re.I,
 )
 
 
+# contractions typed without the apostrophe ("when thats done", "dont"); not "its", "lets", "well", "were"
+_BARE_CONTRACTION = {
+    "thats": "that's", "whats": "what's", "dont": "don't", "doesnt": "doesn't", "didnt": "didn't",
+    "cant": "can't", "wont": "won't", "isnt": "isn't", "arent": "aren't", "youre": "you're",
+    "theyre": "they're", "shouldnt": "shouldn't", "wouldnt": "wouldn't", "couldnt": "couldn't",
+    "youve": "you've", "ive": "I've",
+}  # fmt: skip
+_BARE = re.compile(rf"\b({'|'.join(_BARE_CONTRACTION)})\b", re.I)
+# "A, B, and after both of those put C": a reference to every task before, which the rules read where it
+# opens a sentence and ends at a comma ("A, B. After both of those, put C")
+_REFERENCE_TO_ALL = re.compile(
+    r"(?P<lead>(?<=\w)\s*,?\s+(?:and\s+)?|^\s*|(?<=[.!?])\s+)"
+    r"(?P<ref>(?:after|once|when)\s+(?:both|all|each)\s+of\s+(?:those|these|them)"
+    r"(?:\s+(?:are|is)\s+(?:done|finished))?)\s*,?\s+",
+    re.I,
+)
+
+
+def _reference_sentence(m: re.Match[str]) -> str:
+    """The reference opens a sentence of its own and ends at a comma."""
+    ref = m["ref"][0].upper() + m["ref"][1:]
+    inside = m.start() > 0 and m.string[m.start() - 1].isalnum()  # after a clause of the same sentence
+    return f". {ref}, " if inside else f"{m['lead']}{ref}, "
+
+
 def everyday(text: str) -> str:
     """The text with the everyday styles above rewritten onto the forms the grammar reads."""
+    text = _BARE.sub(lambda m: _BARE_CONTRACTION[m[1].lower()], text)
+    text = _TWO_WORD_NAME.sub(_spelt_name, text)
+    text = _REFERENCE_TO_ALL.sub(_reference_sentence, text)
     text = _PAREN_FREE_ORDER.sub(", in any order", text)
     text = _STEP_COLON.sub(r"\1 ", _ARROW.sub(" onto ", text))
     if _BELONGS.search(text):
@@ -92,6 +124,30 @@ def everyday(text: str) -> str:
     if not re.search(r"[.!?]\s+\S", text):  # in one sentence: what the remark is about is plain
         text = _CLOSING_FREE_ORDER.sub(", in any order", text)
     return restated(re.sub(r"\s+", " ", text).strip())  # places and end states restated (restated.py)
+
+
+_TWO_WORD_NAME = re.compile(r"\b([a-z]{4,})\s+([a-z]{3,})\b", re.I)
+
+
+@cache
+def _two_word_names() -> dict[str, set[str]]:
+    """The lexicon's two-word names by their second word: "table" -> {"coffee", "side", ...}."""
+    out: dict[str, set[str]] = {}
+    for key in lexicon():
+        if len(key) == 2:
+            out.setdefault(key[1], set()).add(key[0])
+    return out
+
+
+def _spelt_name(m: re.Match[str]) -> str:
+    """ "coffe table" -> "coffee table": a first word one letter off a two-word name of the lexicon whose
+    second word is right, and no word the lexicon knows on its own."""
+    first, second = m[1], m[2]
+    known = _two_word_names().get(second.lower(), set())
+    if not known or first.lower() in known or (first.lower(),) in lexicon():
+        return m[0]
+    close = difflib.get_close_matches(first.lower(), sorted(known), n=2, cutoff=0.85)
+    return f"{close[0]} {second}" if len(close) == 1 else m[0]
 
 
 def _without_need_heading(text: str) -> str:
