@@ -60,6 +60,10 @@ READ = [
      [APPLE, EGG, MUG], {(EGG, MUG), (APPLE, MUG)}),
     ("You'll want to put the egg in the fridge and the mug in the sink; I don't mind the order.",
      [EGG, MUG], set()),
+    # records, the receptacle on either side; a closing "Any order." after sentences that order nothing
+    ("Fridge: egg. Apple: fridge.", [APPLE, EGG], set()),
+    ("Put the egg in the fridge. Put the apple in the fridge. Put the mug in the sink. Any order.",
+     [APPLE, EGG, MUG], set()),
 ]
 
 
@@ -83,6 +87,10 @@ NEAR_MISSES = [
     "The mug is in the sink. Put the egg in the fridge.",
     # "fill the mug with water": water is nothing the scene has
     "Fill the mug with water.",
+    # both sides hold things (a mug is a receptacle too): which goes where is not said
+    "Mug: sink.",
+    # "Any order." after a sentence that orders another: which order is meant is not said
+    "Put the egg in the fridge. Then put the apple in the fridge. Put the mug in the sink. Any order.",
 ]
 
 

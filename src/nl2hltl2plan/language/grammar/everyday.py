@@ -123,9 +123,18 @@ def everyday(text: str) -> str:
     text = _LAST_GROUP_ORDER.sub("order ", text)
     if not re.search(r"[.!?]\s+\S", text):  # in one sentence: what the remark is about is plain
         text = _CLOSING_FREE_ORDER.sub(", in any order", text)
+    elif (last := _LAST_SENTENCE_FREE.search(text)) and not _ORDER_WORD.search(text[: last.start()]):
+        text = text[: last.start()] + "."  # "A. B. C. Any order.": no sentence orders another
     return restated(re.sub(r"\s+", " ", text).strip())  # places and end states restated (restated.py)
 
 
+_LAST_SENTENCE_FREE = re.compile(
+    r"[.!?]\s+(?:in\s+)?(?:any|whatever|either)\s+(?:order|sequence)(?:\s+(?:is\s+fine|works|you\s+like))?\s*[.!]?\s*$",
+    re.I,
+)
+_ORDER_WORD = re.compile(
+    r"\b(?:then|first|firstly|next|after|afterwards|before|finally|lastly|once|when|until|later)\b", re.I
+)
 _TWO_WORD_NAME = re.compile(r"\b([a-z]{4,})\s+([a-z]{3,})\b", re.I)
 
 

@@ -13,6 +13,8 @@ lexicon names (`find_mentions`), so a sentence about anything else is left as it
 - the place as subject: "(the) yellow plate (has to) get(s) the green apple" is "put the green apple on
   the yellow plate", and in the same sentence ", the blue plate the red apple" is one more;
 - "load / fill / stock the yellow plate with X and Y" is "put X and Y on the yellow plate";
+- a record "Blue plate: carrot." (or "Carrot: blue plate.") is "put the carrot on the blue plate" when
+  exactly one side is a receptacle;
 - the place fronted: "onto the blue plate goes the green apple", "on the pink plate put the green apple,
   on the yellow plate the orange", "for the blue plate the carrot";
 - goals stated as a passive or an end state: "needs to be placed", "must be put", "ends up", "should
@@ -26,7 +28,7 @@ from __future__ import annotations
 
 import re
 
-from nl2hltl2plan.language.grounding import Mention, find_mentions
+from nl2hltl2plan.language.grounding import RECEPTACLES, Mention, find_mentions
 
 _PLACE = r"(?:on|onto|in|into|inside)"
 _NP = r"(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+){0,2}?"  # a short noun phrase; checked against the lexicon
@@ -84,6 +86,12 @@ _CLAUSE_GOES = re.compile(
     rf"\s+(?:goes|go|is\s+put|are\s+put|gets?\s+put|lands?)\s+(?P<prep>{_PLACE})\s+(?=the\s)",
     re.I,
 )
+# "Blue plate: carrot." / "Carrot: blue plate." records, one placement each
+_RECORD = re.compile(
+    rf"{_CLAUSE_START}(?P<a>(?:the\s+)?[a-z]+(?:\s+[a-z]+)?)\s*:\s*(?P<b>(?:the\s+)?[a-z]+(?:\s+[a-z]+)?)"
+    r"\s*(?=[.;]|$)",
+    re.I,
+)
 # "load the yellow plate with the green apple and the orange": the things go on the place
 _LOAD_WITH = re.compile(
     r"\b(?:load|fill|stock)\s+(?P<place>the\s+[a-z]+(?:\s+[a-z]+)?)\s+with\s+(?P<objs>(?:the|a|an)\s+[^,.;!?]+?)"
@@ -106,6 +114,7 @@ def restated(text: str) -> str:
     text = _subject_places(text)
     text = _FRONTED_PLACE.sub(_fronted, text)
     text = _LOAD_WITH.sub(_loaded, text)
+    text = _RECORD.sub(_record_put, text)
     text = _WANT_TO_SEE.sub(r"\1", text)
     text = _MAKE_SURE.sub(lambda m: _IS_ON.sub(lambda i: _goes(m["rest"], i), m["rest"]), text)
     text = _PASSIVE_GOAL.sub(lambda m: _goes(text, m), text)
@@ -224,6 +233,23 @@ def _loaded(m: re.Match[str]) -> str:
     if not (_is_named(m["place"], whole=True) and _is_named(m["objs"])):
         return m[0]
     return f"put {m['objs']} on {m['place']}"
+
+
+def _record_put(m: re.Match[str]) -> str:
+    """ "Blue plate: carrot." -> "put the carrot on blue plate.": the side that is a receptacle is the
+    place, when exactly one side is (a mug holds things too: "Mug: sink." is left)."""
+    if not (_is_named(m["a"], whole=True) and _is_named(m["b"], whole=True)):
+        return m[0]
+    holds = [not RECEPTACLES.isdisjoint(find_mentions(side)[0].entry.types) for side in (m["a"], m["b"])]
+    if holds.count(True) != 1:
+        return m[0]
+    place, thing = (m["a"], m["b"]) if holds[0] else (m["b"], m["a"])
+    lead = m[0][: len(m[0]) - len(m[0].lstrip())]
+    return f"{lead}put {_with_article(thing)} on {_with_article(place)}"
+
+
+def _with_article(phrase: str) -> str:
+    return phrase if re.match(r"(?:the|a|an)\s", phrase, re.I) else f"the {phrase.lower()}"
 
 
 def _lower_article(phrase: str) -> str:
