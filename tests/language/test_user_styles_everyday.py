@@ -107,6 +107,8 @@ LEAD_S12 = [
     ),
     ("put the egg in the fridge and the mug in the sink, doesn't matter which first", [EGG, MUG], set()),
     ("put the mug on the countr top", ["place Mug -> CounterTop"], set()),
+    ("Could the robot put the egg in the fridge, please?", [EGG], set()),
+    ("1. Egg to the fridge. 2. Mug to the sink. Any order is fine.", [EGG, MUG], set()),
 ]
 
 
@@ -122,3 +124,9 @@ def test_only_a_two_word_name_with_one_close_spelling_is_corrected():
     assert everyday("put the mug on the xyzzy table") == "put the mug on the xyzzy table"
     # "its", "lets" and "well" are words: never taken for contractions
     assert everyday("put the mug in its box") == "put the mug in its box"
+
+
+def test_a_numbered_list_without_a_free_order_remark_is_not_guessed():
+    """ "1. X. 2. Y." may mean a sequence: without "any order" the numbers stay, and are refused."""
+    assert read("1. Egg to the fridge. 2. Mug to the sink.")[2]
+

@@ -107,6 +107,8 @@ def _reference_sentence(m: re.Match[str]) -> str:
 def everyday(text: str) -> str:
     """The text with the everyday styles above rewritten onto the forms the grammar reads."""
     text = _BARE.sub(lambda m: _BARE_CONTRACTION[m[1].lower()], text)
+    if _FREE_REMARK.search(text):  # "1. X. 2. Y. Any order is fine.": the numbers only list the steps
+        text = _NUMBERED.sub(lambda m: m["lead"], text)
     text = _TWO_WORD_NAME.sub(_spelt_name, text)
     text = _REFERENCE_TO_ALL.sub(_reference_sentence, text)
     text = _PAREN_FREE_ORDER.sub(", in any order", text)
@@ -134,6 +136,13 @@ _LAST_SENTENCE_FREE = re.compile(
 )
 _ORDER_WORD = re.compile(
     r"\b(?:then|first|firstly|next|after|afterwards|before|finally|lastly|once|when|until|later)\b", re.I
+)
+# "1. X. 2. Y." / "1) X 2) Y": list numbers; without a free-order remark they stay, and are refused as
+# counts of nothing (a numbered list may mean a sequence)
+_NUMBERED = re.compile(r"(?P<lead>^|(?<=[.;!?:])\s+|\n)\s*\d{1,2}\s*[.)]\s+(?=[a-z])", re.I)
+_FREE_REMARK = re.compile(
+    r"\b(?:(?:in\s+)?(?:any|whatever|either)\s+(?:order|sequence)|order\s+(?:does\s*n[o']?t|does\s+not)\s+matter)\b",
+    re.I,
 )
 _TWO_WORD_NAME = re.compile(r"\b([a-z]{4,})\s+([a-z]{3,})\b", re.I)
 

@@ -497,6 +497,7 @@ LEADING: list[tuple[re.Pattern[str], str]] = [
         re.compile(
             r"^(?:please|let'?s|let\s+us|now|next\s+up|you\s+should|you\s+must|we\s+need\s+to|"
             r"you(?:'ll|\s+will|'d|\s+would)?\s+(?:want|need|have)\s+to|you'?ve\s+got\s+to|"
+            r"(?:can|could|would|will)\s+(?:the|a)\s+robots?|"
             r"i\s+want\s+you\s+to|can\s+you|could\s+you|would\s+you|will\s+you|kindly|go\s+and|also|additionally|"
             r"in\s+addition|separately|moreover|furthermore|besides(?=\s*,)|on\s+top\s+of\s+(?:that|this)(?=\s*,)|"
             r"alright|all\s+right|ok(?:ay)?|(?:thanks|thank\s+you|cheers)(?=\s*(?:[,!]|$))|and)\b\s*[,:]?\s*",
