@@ -1,0 +1,112 @@
+"""Issue 24, sixth round (h63): a question the writer answers ("Where do the three objects go? G, H and I."),
+a goal's timing said in a sentence of its own ("Yellow can go at any time.") (`language/handover_answers.py`)
+and a prohibition that opens with its period after "and" or without a comma ("and in the meantime put
+nothing on F"). Each class has sentences of our own that must give the written spec and near misses that
+must be refused or give another spec (never the written one)."""
+
+from __future__ import annotations
+
+import pytest
+from handover_specs import assert_not_the_written_spec, assert_written_spec
+from handover_specs import spec_of as _spec
+
+from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.language.handover_answers import answered, timing_joined
+
+READ = [
+    # a question the writer answers
+    (6, "Where do the three objects go? G, H and I. Which block first? Red, then blue."),
+    (6, "Where should the three objects go? To G, H and I, one each. In what order? Red, then blue."),
+    (2, "Where do the three blocks go? H, I and J, one per region."),
+    (1, "Where do the three blocks go? To the opposite side. Which one goes down first? Red, then blue."),
+    # a goal's timing in a sentence of its own, after the clause that names the block
+    (5, "Swap red and blue, red placed first. Move the yellow block to the opposite side. Yellow can go at "
+     "any time."),
+    (5, "Swap red and blue, red placed first. Move the yellow block to the opposite side. It doesn't matter "
+     "when yellow goes."),
+    (5, "Swap red and blue, red placed first, and move the yellow block to the opposite side. The yellow "
+     "block can be moved whenever you like."),
+    (8, "First place the yellow block on region I, then on region G. Move red and blue to any empty region. "
+     "Red and blue can go at any time."),
+    # a prohibition that opens with its period, after "and" or without its comma
+    (7, "Place the three objects on region I one after another, red before blue, and in the meantime put "
+     "nothing on F, G or H."),
+    (7, "Place the three objects on region I one after another, red before blue, and meanwhile put nothing "
+     "on F, G or H."),
+    (7, "Place the three objects on region I one after another, red before blue. In the meantime put "
+     "nothing on F, G or H."),
+]
+
+REFUSED = [
+    # a question with no answer, or an answer that is no place
+    (6, "Where do the three objects go? Which block first? Red, then blue."),
+    (6, "Where do the three objects go? Somewhere nice. Red before blue."),
+    # a pronoun (which goal?), a goal that is not the last clause before, a block the clause does not name
+    (5, "Swap red and blue, red placed first. Move the yellow block to the opposite side. It can go at any "
+     "time."),
+    (5, "Move the yellow block to the opposite side. Swap red and blue, red placed first. Yellow can go at "
+     "any time."),
+    (8, "First place the yellow block on region I, then on region G. Move red and blue to any empty region. "
+     "Red can go at any time."),
+    (7, "Place the three objects on region I one after another, red before blue, and in the meantime put "
+     "nothing on region K."),
+]
+
+OTHER = [
+    # "Red." alone: red before both others
+    (6, "Where do the three objects go? G, H and I. Which block first? Red."),
+    # the answer's order the other way round
+    (6, "Where do the three objects go? G, H and I. In what order? Blue, then red."),
+    # something put there meanwhile
+    (7, "Place the three objects on region I one after another, red before blue, and in the meantime put "
+     "the yellow block on F."),
+]
+
+
+@pytest.mark.parametrize(("task_id", "text"), READ)
+def test_sixth_round_forms_give_the_written_specs(task_id, text):
+    assert_written_spec(task_id, text)
+
+
+@pytest.mark.parametrize(("task_id", "text"), REFUSED)
+def test_sixth_round_near_misses_are_refused(task_id, text):
+    with pytest.raises(HTTError) as caught:
+        _spec(task_id, text)
+    assert "\n" not in str(caught.value)
+
+
+@pytest.mark.parametrize(("task_id", "text"), OTHER)
+def test_sixth_round_forms_that_say_something_else_do_not_give_the_written_spec(task_id, text):
+    assert_not_the_written_spec(task_id, text)
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("Where do the blocks go? H, I and J.", "the blocks go to H, I and J."),
+        ("Where does the yellow block go? On region I.", "the yellow block go On region I."),
+        ("Which goes first? The red block, then the blue one.", "The red block first, then the blue one."),
+        ("In which order? Red before blue.", "Red before blue."),
+        ("Where do they go?", "Where do they go?"),  # no answer
+        ("Which block first? Maybe red.", "Which block first? Maybe red."),  # not an answer of blocks
+    ],
+)
+def test_answered_questions_in_words(text, expected):
+    assert answered(text) == expected
+
+
+@pytest.mark.parametrize(
+    ("sentences", "expected"),
+    [
+        (["Put yellow on G", "Yellow can go at any time"], ["Put yellow on G at any time"]),
+        (["Put red on H and then put yellow on G", "It does not matter when yellow is moved"],
+         ["Put red on H and then put yellow on G at any time"]),
+        (["Put yellow on G, then red on H", "Yellow can go at any time"],  # the last clause is red's
+         ["Put yellow on G, then red on H", "Yellow can go at any time"]),
+        (["Put yellow on G first", "Yellow can go at any time"],  # an order word: which is meant?
+         ["Put yellow on G first", "Yellow can go at any time"]),
+        (["Yellow can go at any time"], ["Yellow can go at any time"]),  # no goal before it
+    ],
+)
+def test_timing_said_apart_in_words(sentences, expected):
+    assert timing_joined(sentences) == expected
