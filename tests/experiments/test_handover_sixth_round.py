@@ -1,8 +1,10 @@
 """Issue 24, sixth round (h63): a question the writer answers ("Where do the three objects go? G, H and I."),
-a goal's timing said in a sentence of its own ("Yellow can go at any time.") (`language/handover_answers.py`)
-and a prohibition that opens with its period after "and" or without a comma ("and in the meantime put
-nothing on F"). Each class has sentences of our own that must give the written spec and near misses that
-must be refused or give another spec (never the written one)."""
+a goal's timing said in a sentence of its own ("Yellow can go at any time.") (`language/handover_answers.py`),
+a prohibition that opens with its period after "and" or without a comma ("and in the meantime put
+nothing on F"), "other than these three" (regions), "right next to the arms" without their letters,
+"placed one after another" after a goal and a topic said first in unpunctuated speech ("so the three
+blocks i need them on ..."). Each class has sentences of our own that must give the written spec and
+near misses that must be refused or give another spec (never the written one)."""
 
 from __future__ import annotations
 
@@ -35,6 +37,23 @@ READ = [
      "on F, G or H."),
     (7, "Place the three objects on region I one after another, red before blue. In the meantime put "
      "nothing on F, G or H."),
+    # "other than these three": the regions just named, counted
+    (3, "Move the three pillars to E, F and G beside arms a and b. No object may be placed on any region "
+     "other than these three."),
+    (3, "The three pillars shall go to regions E, F and G. Put nothing on any region other than those three "
+     "regions."),
+    # "next to the arms" without their letters: a landmark that the named regions lie within
+    (3, "Move the three pillars to E, F and G right next to the arms. Nothing on any other region."),
+    (3, "Move the three pillars to E, F and G near the robot arms; no object may be placed on any other "
+     "region."),
+    # a goal's manner as its participle after a comma
+    (7, "The three objects should be on region I, placed one after another. Red before blue. Nothing on F, "
+     "G or H during this period."),
+    (7, "Put the three objects on region I, placed one by one, red before blue, nothing on F, G or H "
+     "meanwhile."),
+    # a topic said first in speech without punctuation, taken up by a pronoun
+    (2, "so the three blocks I need them on h i and j one per region"),
+    (6, "okay so the three objects we want them on g h and i red before blue"),
 ]
 
 REFUSED = [
@@ -50,6 +69,20 @@ REFUSED = [
      "Red can go at any time."),
     (7, "Place the three objects on region I one after another, red before blue, and in the meantime put "
      "nothing on region K."),
+    # a count that is not the regions just named
+    (3, "Move the three pillars to E, F and G beside arms a and b. No object may be placed on any region "
+     "other than these two."),
+    # the arms without a place named beside them; "the side of the arms" (which side?)
+    (3, "Move the three pillars next to the arms. Nothing on any other region."),
+    (3, "Move the three pillars to the side of the arms. Nothing on any other region."),
+    # a manner that is no order of the goals; a second place in the participle
+    (7, "The three objects should be on region I, placed all at once. Red before blue. Nothing on F, G or "
+     "H during this period."),
+    (7, "The three objects should be on region I, placed one after another on region G. Red before blue. "
+     "Nothing on F, G or H during this period."),
+    # a pronoun of the other number, or none, after the topic
+    (2, "so the three blocks I need it on h i and j one per region"),
+    (2, "so the three blocks I need on h i and j one per region"),
 ]
 
 OTHER = [
