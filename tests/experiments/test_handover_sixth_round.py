@@ -21,6 +21,15 @@ READ = [
     (6, "Where should the three objects go? To G, H and I, one each. In what order? Red, then blue."),
     (2, "Where do the three blocks go? H, I and J, one per region."),
     (1, "Where do the three blocks go? To the opposite side. Which one goes down first? Red, then blue."),
+    (2, "Which objects? All three blocks. Where to? Regions H, I and J. How many per region? Only one."),
+    (8, "Where does the yellow block go? First to region I, then to region G. What about red and blue? Any "
+     "empty region, at any time."),
+    (7, "Where do the three objects go? All onto region I, one after another. The order? Red, then blue. In "
+     "the meantime? Nothing on F, G or H."),
+    (3, "What's the task? Move the three pillars to E, F and G beside arms a and b. Is anything allowed on "
+     "the other regions? No, nothing at all."),
+    (4, "What first? Move the three blocks to the opposite regions; don't touch blue until red has been "
+     "touched. And then? Put yellow back on G."),
     # a goal's timing in a sentence of its own, after the clause that names the block
     (5, "Swap red and blue, red placed first. Move the yellow block to the opposite side. Yellow can go at "
      "any time."),
@@ -60,6 +69,12 @@ REFUSED = [
     # a question with no answer, or an answer that is no place
     (6, "Where do the three objects go? Which block first? Red, then blue."),
     (6, "Where do the three objects go? Somewhere nice. Red before blue."),
+    (2, "Which blocks? The three blocks. Where to? Somewhere."),
+    (3, "Move the three pillars to E, F and G beside arms a and b. Is anything allowed on the other regions? "
+     "Maybe."),
+    (8, "Where does the yellow block go? First region I, then region K. And red and blue? Any empty region, "
+     "at any time."),
+    (2, "How many per region? Two. Put the three blocks on H, I and J."),
     # a pronoun (which goal?), a goal that is not the last clause before, a block the clause does not name
     (5, "Swap red and blue, red placed first. Move the yellow block to the opposite side. It can go at any "
      "time."),
@@ -90,6 +105,9 @@ OTHER = [
     (6, "Where do the three objects go? G, H and I. Which block first? Red."),
     # the answer's order the other way round
     (6, "Where do the three objects go? G, H and I. In what order? Blue, then red."),
+    # the steps asked for the other way round: the step words are kept
+    (4, "What first? Put yellow back on G. And then? Move the three blocks to the opposite regions; don't "
+     "touch blue until red has been touched."),
     # something put there meanwhile
     (7, "Place the three objects on region I one after another, red before blue, and in the meantime put "
      "the yellow block on F."),
@@ -120,6 +138,13 @@ def test_sixth_round_forms_that_say_something_else_do_not_give_the_written_spec(
         ("Where does the yellow block go? On region I.", "the yellow block go On region I."),
         ("Which goes first? The red block, then the blue one.", "The red block first, then the blue one."),
         ("In which order? Red before blue.", "Red before blue."),
+        ("Which blocks? Red and blue. Where to? G and H.", "Red and blue go to G and H."),
+        ("And yellow? To region I.", "yellow go To region I."),
+        ("What first? Move red to G. And then? Blue to H.", "first, Move red to G. then, Blue to H."),
+        ("Any rules? Don't touch blue.", "Don't touch blue."),
+        ("How many per region? Just one.", "one per region."),
+        ("Anything allowed on F? No, nothing.", "nothing on F."),
+        ("Anything allowed on F? Yes.", "Anything allowed on F? Yes."),  # not a "no"
         ("Where do they go?", "Where do they go?"),  # no answer
         ("Which block first? Maybe red.", "Which block first? Maybe red."),  # not an answer of blocks
     ],

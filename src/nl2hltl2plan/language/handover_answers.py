@@ -3,8 +3,14 @@
 
 - a question the writer answers at once (`answered`, on the instruction's text): "Where do the three
   objects go? G, H and I." is "the three objects go to G, H and I."; "Which block first? Red, then blue."
-  is "red first, then blue."; "In what order? Red, then blue." is "red before blue.". A question with no
-  answer, or with an answer that is not a place or blocks, stays as it is (and is refused by its words);
+  is "red first, then blue."; "In what order? / Order? Red, then blue." is "red before blue."; "Which
+  blocks? The three blocks. Where to? H, I and J." is "the three blocks go to H, I and J"; "And yellow? To
+  the opposite side." is "yellow go to the opposite side"; "How many per region? Just one." is "one per
+  region"; "Anything allowed on the other regions? No, nothing." is "nothing on the other regions"; a step
+  or period asked for ("What first?", "And after that?", "Meanwhile?") is said before its answer ("first,
+  ..."); a prompt that only asks for the next sentence ("What needs doing?", "What's the job?", "Any
+  rule?") is dropped. A question with no answer, or with an answer that is not a place, blocks or "no",
+  stays as it is (and is refused by its words);
 - a goal's timing said in a sentence of its own (`timing_joined`, on the sentences): "Move the yellow
   block to the opposite side. Yellow can go at any time." (or "It doesn't matter when yellow goes.") is
   "Move the yellow block to the opposite side at any time". Only where the last clause of the sentence
@@ -35,15 +41,52 @@ _WHICH_FIRST = re.compile(
     rf"(?:\s*,?\s*(?:and\s+)?then\s+(?P<then>{_BLOCK}))?{_END}"
 )
 _WHAT_ORDER = re.compile(
-    rf"(?im){_START}(?:in\s+)?(?:what|which)\s+order\s*\?[ \t]+(?P<first>{_BLOCK})\s*,?\s*"
+    rf"(?im){_START}(?:(?:in\s+)?(?:what|which)\s+|any\s+|the\s+)?order\s*\?[ \t]+(?P<first>{_BLOCK})\s*,?\s*"
     rf"(?:(?:and\s+)?then|before)\s+(?P<then>{_BLOCK}){_END}"
 )
 
 
+_ANSWER = r"(?P<answer>[^?.!;\n]+?)"
+_OBJECTS = r"(?P<objects>[^?.!;\n]+?)"
+# "Which blocks? The three blocks. Where to? H, I and J.": the blocks asked for, then their place
+_WHICH_WHERE = re.compile(
+    rf"(?im){_START}(?:which|what)\s+(?:blocks?|objects?|pillars?|things?|moves?|goes)\s*\?[ \t]+{_OBJECTS}"
+    rf"[.;][ \t]+where(?:\s+to)?\s*\?[ \t]+{_ANSWER}{_END}"
+)
+# "And yellow? To the opposite side.": blocks asked about, answered by a place
+_AND_BLOCKS = re.compile(
+    rf"(?im){_START}(?:and\s+)?(?:what\s+about\s+)?(?P<objects>{_BLOCKS})\s*\?[ \t]+"
+    rf"(?P<answer>(?:{_PLACE_START}|any\s+empty|the\s+opposite|regions?\s)[^?.!;\n]*?){_END}"
+)
+# a prompt that only asks for the next sentence ("What needs doing?", "Any rule?", "Order?")
+_PROMPT = re.compile(
+    rf"(?im){_START}(?:so\s+)?(?:what\s+(?:needs|has|is)\s+(?:to\s+be\s+)?(?:doing|done)|"
+    r"what(?:\s+is|\s*['’]s)\s+the\s+(?:job|task|plan)|any\s+(?:rules?|constraints?|order)|(?:the\s+)?order)"
+    r"\s*\?[ \t]+(?=\S)"
+)
+# a step or period asked for ("What first?", "And after that?", "Meanwhile?"): said before its answer
+_STEP = re.compile(
+    rf"(?im){_START}(?:and\s+)?(?:what\s+)?(?P<step>first|next|then|after\s+that|meanwhile|in\s+the\s+meantime)"
+    r"\s*\?[ \t]+(?=\S)"
+)
+_HOW_MANY = re.compile(
+    rf"(?im){_START}how\s+many\s+(?:per|on\s+each|in\s+each)\s+region\s*\?[ \t]+(?:just\s+|only\s+)?"
+    rf"(?:one|1)(?:\s+each)?{_END}"
+)
+_ANYTHING_ALLOWED = re.compile(
+    rf"(?im){_START}(?:is\s+)?(?:anything|any\s+(?:object|block|pillar)s?)\s+(?:allowed|permitted)\s+"
+    rf"(?P<place>(?:on|in)\s+[^?.!;\n]+?)\s*\?[ \t]+no\s*(?:,\s*)?(?:nothing|none|never)?"
+    rf"(?:\s+at\s+all)?{_END}"
+)
+
+
 def _where(match: re.Match[str]) -> str:
-    answer = match["answer"].strip()
+    # "All onto region I": the place; "First region I, then region G": the first of the block's places
+    answer = re.sub(rf"(?i)^all\s+(?={_PLACE_START})", "", match["answer"].strip())
+    first = re.match(r"(?i)first\s+", answer)
+    answer = answer[first.end() :] if first else answer
     to = "" if re.match(_PLACE_START, answer, flags=re.IGNORECASE) else "to "
-    return f"{match['start']}{match['objects']} go {to}{answer}"
+    return f"{match['start']}{match['objects']} go {'first ' if first else ''}{to}{answer}"
 
 
 def _which_first(match: re.Match[str]) -> str:
@@ -57,9 +100,14 @@ def answered(instruction: str) -> str:
     >>> answered("Where do the three objects go? G, H and I. Which block first? Red, then blue.")
     'the three objects go to G, H and I. Red first, then blue.'
     """
-    instruction = _WHERE.sub(_where, instruction)
+    instruction = _WHERE.sub(_where, _WHICH_WHERE.sub(_where, instruction))
+    instruction = _AND_BLOCKS.sub(_where, instruction)
     instruction = _WHICH_FIRST.sub(_which_first, instruction)
-    return _WHAT_ORDER.sub(lambda m: f"{m['start']}{m['first']} before {m['then']}", instruction)
+    instruction = _WHAT_ORDER.sub(lambda m: f"{m['start']}{m['first']} before {m['then']}", instruction)
+    instruction = _HOW_MANY.sub(lambda m: f"{m['start']}one per region", instruction)
+    instruction = _ANYTHING_ALLOWED.sub(lambda m: f"{m['start']}nothing {m['place']}", instruction)
+    instruction = _STEP.sub(lambda m: f"{m['start']}{m['step']}, ", instruction)
+    return _PROMPT.sub(lambda m: m["start"], instruction)
 
 
 _ANY_TIME = r"(?:at\s+any\s+(?:time|point|moment)|any\s*time|whenever(?:\s+you\s+(?:like|want))?)"
