@@ -63,6 +63,9 @@ READ = [
     # a topic said first in speech without punctuation, taken up by a pronoun
     (2, "so the three blocks I need them on h i and j one per region"),
     (6, "okay so the three objects we want them on g h and i red before blue"),
+    # one block on each of the regions just named
+    (2, "Put the three blocks on H, I and J, exactly one block in each region."),
+    (6, "Place the three objects on G, H and I, one object on each of these regions, red before blue."),
 ]
 
 REFUSED = [
@@ -98,6 +101,7 @@ REFUSED = [
     # a pronoun of the other number, or none, after the topic
     (2, "so the three blocks I need it on h i and j one per region"),
     (2, "so the three blocks I need on h i and j one per region"),
+    (2, "Put the three blocks on H, I and J, two blocks on each of those regions."),
 ]
 
 OTHER = [

@@ -31,7 +31,8 @@ it or refuses it by name:
 - kept-empty regions: "free of objects" is "empty"; "while keeping regions F, G and H empty" is "while
   regions F, G and H stay empty";
 - one block per region: "never more than one object in a region", "you can't have two on the same
-  region" and "never two on the same region" are "one object per region"; "in each region only one
+  region", "never two on the same region" and "one block on each of those regions" are "one object per
+  region"; "in each region only one
   block" is "only one block in each region".
 """
 
@@ -180,6 +181,11 @@ _RULES: tuple[tuple[str, str], ...] = (
         r"(?:(?:have|put|place|set|leave)\s+)?two\s+(?:(?:objects|blocks|pillars)\s+)?(?:on|in)\s+"
         r"(?:the\s+same|one|a\s+single)\s+region\b",
         "one object per region",
+    ),
+    (
+        r"(,\s*)(?:only\s+|just\s+|exactly\s+)?one\s+(?:block|object|pillar)\s+(?:on|in|to)\s+each\s+"
+        r"(?:of\s+(?:those|these|the)\s+regions|region)\b",
+        r"\1one object per region",  # after a comma ("put one block in each region" is read as is)
     ),
     (
         r"\bin\s+(?:each|every)\s+region\s+(?:only\s+|just\s+)?one\s+(block|object|pillar)\b",
