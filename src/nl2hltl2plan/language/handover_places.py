@@ -107,10 +107,16 @@ def mark_places(m: Marked, scene: Scene, named_before: tuple[str, ...]) -> None:
         lists = [p.regions for p in m.places if p.kind == "regions"] or [named_before]
         if not lists[-1]:
             return match.group(0)
+        said = match["count"]  # "other than these three": the count must be the regions just named
+        if said and _COUNTS.get(said, said) != str(len(lists[-1])):
+            named = len(lists[-1])
+            raise HTTError(f"'{match.group(0).strip()}' counts {said}, but {named} regions were named")
         return _new_place(m, Place("complement", lists[-1], text=match.group(0).strip()))
 
+    these = rf"(?:these|those)(?:\s+(?P<count>two|three|four|\d))?(?:\s+{PLACE_NOUN})?"
     m.sub(
-        rf"\b(?:(?:the|any|all|an?)\s+)?(?:other\s+)?{PLACE_NOUN}\s+{OTHER_THAN}\s+(?:these|those|them|the\s+ones\s+(?:named|above))\b",
+        rf"\b(?:(?:the|any|all|an?)\s+)?(?:other\s+)?{PLACE_NOUN}\s+{OTHER_THAN}\s+"
+        rf"(?:{these}|them|the\s+ones\s+(?:named|above))\b",
         other_than_these,
     )
     m.sub(
@@ -126,6 +132,7 @@ def mark_places(m: Marked, scene: Scene, named_before: tuple[str, ...]) -> None:
 
 
 TARGET = r"(?:goal|target|placement|destination|assigned)"
+_COUNTS = {"two": "2", "three": "3", "four": "4"}
 _REGION = r"(?:region|area|zone|spot|cell|location)"
 OTHER_THAN = r"(?:other\s+than|except(?:\s+for)?|besides|apart\s+from|but|outside(?:\s+of)?)"
 
@@ -219,6 +226,15 @@ def _mark_arm_sides(m: Marked, scene: Scene) -> None:
         r"(?:(?:\s+s)?\s+sides?)?\b",
         arms,
     )
+    # "(right) next to the arms" without their letters (marked "A" by then): a landmark of every arm's
+    # reach, which only describes a place named beside it (not "the side of the arms": which side?)
+    m.sub(
+        r"\b(?:(?:right|just|directly)\s+)?(?:next\s+to|beside|near|close\s+to|within\s+reach\s+of|"
+        r"reachable\s+by|adjacent\s+to)\s+A\b",
+        lambda match: _new_place(
+            m, Place("landmark", scene.arms_side([0, 1, 2, 3]), text=match.group(0).strip(), within=True)
+        ),
+    )
     # "the a/b side", "the side of a and b" without the word "arm"
     m.sub(
         r"\b(?:the\s+)?(?:arms?\s+)?[a-d]\s*(?:/|&|and|,)\s*(?:arm\s+)?[a-d]\s+(?:arms?\s+)?(?:s\s+)?sides?\b",
@@ -269,6 +285,7 @@ def _merge(m: Marked, i: int, j: int) -> str:
         i, j = j, i
     a, b = m.places[i], m.places[j]
     agree = a.kind == "regions" and b.kind in ("regions", "start_of", "landmark")
-    if not agree or set(a.regions) != set(b.regions):
+    same = set(a.regions) <= set(b.regions) if b.within else set(a.regions) == set(b.regions)
+    if not agree or not same:
         raise HTTError(f"'{a.text}' and '{b.text}' name different places")
     return f" P{i} "

@@ -44,6 +44,7 @@ from dataclasses import dataclass, field
 import networkx as nx
 
 from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.language.handover_answers import answered, timing_joined
 from nl2hltl2plan.language.handover_frame import unframed
 from nl2hltl2plan.language.handover_goals import Clause, Goal, crossed_exchanges, goal_clauses, lead
 from nl2hltl2plan.language.handover_phrases import drop_but, mark
@@ -88,7 +89,8 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
     notes: list[str] = []
     pending: list[Prohibition] = []  # prohibitions stated before any goal
     previous: Marked | None = None  # the sentence before ("it", "these regions" in the next one)
-    steps, instruction = unframed(_sentences(instruction)), " ".join(instruction.split())
+    steps = timing_joined(unframed(_sentences(answered(instruction))))
+    instruction = " ".join(instruction.split())
     for sentence in steps:
         m = mark(sentence, scene, previous)
         previous = m

@@ -40,6 +40,7 @@ class Place:
     regions: tuple[str, ...] = ()
     block: str = ""  # start_of: whose start
     text: str = ""
+    within: bool = False  # a landmark that the place named beside it lies within ("next to the arms")
 
 
 @dataclass

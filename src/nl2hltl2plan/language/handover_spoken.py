@@ -237,7 +237,16 @@ def _clause_breaks(text: str) -> str:
     `_CLAUSE_BREAK` and `_MARKER_BREAK`; a sentence with a comma, semicolon or colon is left as it is."""
     if re.search(r"[,;:]", text):
         return text
+    text = _TOPIC_BREAK.sub(r"\1 , ", text)
     return _MARKER_BREAK.sub(r"\1 , ", _CLAUSE_BREAK.sub(r"\1 , ", text))
+
+
+# ... and after a topic said first, where its clause's subject and a pronoun that takes it up follow ("so
+# the three blocks i need them on ..."); `_resumed` then puts the topic back in the pronoun's place
+_TOPIC_BREAK = re.compile(
+    r"^(\s*(?:(?:so|okay|ok|right|now|well|um|uh)\s+)*(?:the\s+)?"
+    r"(?:(?:all|three|two|red|blue|yellow|and|both)\s+){0,4}(?:blocks?|pillars?|objects?))\s+(?=(?:i|we|you)(?:['’]d)?\s+(?:\S+\s+){1,3}?(?:them|it)\b)"
+)
 
 
 # a left-dislocated topic: blocks ("the three blocks", "the red one") or named regions ("regions f, g and h")

@@ -26,10 +26,13 @@ it or refuses it by name:
 - order words at the end of a clause: "place the red block first and the blue block later (after)",
   "red going down first and blue later" are "... the red block before the blue block";
 - "at your convenience" is "whenever convenient";
+- a goal's manner as its participle after a comma: "..., placed one after another" is "..., one after
+  another";
 - kept-empty regions: "free of objects" is "empty"; "while keeping regions F, G and H empty" is "while
   regions F, G and H stay empty";
 - one block per region: "never more than one object in a region", "you can't have two on the same
-  region" and "never two on the same region" are "one object per region"; "in each region only one
+  region", "never two on the same region" and "one block on each of those regions" are "one object per
+  region"; "in each region only one
   block" is "only one block in each region".
 """
 
@@ -146,6 +149,12 @@ _RULES: tuple[tuple[str, str], ...] = (
         r"\1 before \2",
     ),
     (rf"({_BLOCK})\s+(?:later|last|second)\s*,?\s*(?:and\s+)?({_BLOCK})\s+first\b", r"\2 before \1"),
+    # "(should be on region I), placed one after another": the participle of the goal's own move
+    (
+        r",\s*(?:placed|put|set|moved|dropped|laid|going|brought)(?:\s+(?:down|there))?\s+(?=(?:one\s+after\s+"
+        r"(?:another|the\s+other)|one\s+by\s+one|one\s+at\s+a\s+time|in\s+turn|sequentially)\s*(?:,|;|$))",
+        ", ",
+    ),
     (r"\bat\s+your\s+(?:convenience|leisure)\b", "whenever convenient"),
     # a polite tag at the end ("okay" may be gone already: `unspoken` drops it at a clause's end)
     (r"\s*,?\s*\bif\s+(?:that\s+(?:s|is)(?:\s+(?:okay|ok|alright|fine))?|you\s+do\s+not\s+mind)\s*$", " "),
@@ -172,6 +181,11 @@ _RULES: tuple[tuple[str, str], ...] = (
         r"(?:(?:have|put|place|set|leave)\s+)?two\s+(?:(?:objects|blocks|pillars)\s+)?(?:on|in)\s+"
         r"(?:the\s+same|one|a\s+single)\s+region\b",
         "one object per region",
+    ),
+    (
+        r"(,\s*)(?:only\s+|just\s+|exactly\s+)?one\s+(?:block|object|pillar)\s+(?:on|in|to)\s+each\s+"
+        r"(?:of\s+(?:those|these|the)\s+regions|region)\b",
+        r"\1one object per region",  # after a comma ("put one block in each region" is read as is)
     ),
     (
         r"\bin\s+(?:each|every)\s+region\s+(?:only\s+|just\s+)?one\s+(block|object|pillar)\b",

@@ -470,9 +470,10 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\b(after\s+all\s+(?:of\s+)?(?:these|this|that))\s+done\b", r"\1 are done"),
     (r"\b(has|have|needs?)\s+to\s+get\s+to\b", r"\1 to go to"),  # "the yellow block has to get to ..."
     # a prohibition that opens with its period: "2) During this period, place nothing on F" (after the
-    # step's "then"); the period goes to the end, where the prohibition's period is read
+    # step's "then"; after a comma and "and"; "in the meantime put nothing on F" without its comma); the
+    # period goes to the end, where the prohibition's period is read
     (
-        rf"^(\s*(?:first|then)\s*,?)?\s*({PERIOD_WORDS})\s*,\s*"
+        rf"(^\s*(?:(?:first|then)\s*,?)?|,\s*(?:and\s+)?)\s*({PERIOD_WORDS})\s*,?\s*"
         r"((?:(?:put|place|drop|set|leave)\s+(?:nothing|no)|nothing|do\s+not|never)\b[^:;]+)$",
         r"\1 \3 \2",
     ),
