@@ -5,12 +5,10 @@ never guessed."""
 from __future__ import annotations
 
 import pytest
+from grammar_readings import Reading, sorted_reading
 
 from nl2hltl2plan.errors import HTTError
-from nl2hltl2plan.language.accounting import account
-from nl2hltl2plan.language.grammar import parse_instruction
 from nl2hltl2plan.language.grammar.restated import restated
-from nl2hltl2plan.language.task_specs import transitive_closure
 
 KITCHEN = {"Apple", "Egg", "Mug", "Cup", "Fridge", "SinkBasin", "CounterTop", "DiningTable", "SideTable"}
 EGG, MUG, APPLE, CUP = (
@@ -21,13 +19,8 @@ EGG, MUG, APPLE, CUP = (
 )
 
 
-def read(text: str) -> tuple[list[str], set[tuple[str, str]], list[str]]:
-    """Tasks, closed order, and what the grammar or the word accounting leaves unread."""
-    r = parse_instruction(text, KITCHEN, "kitchen", affordances=lambda t: None)
-    name = {t.id: t.summary() for t in r.tasks}
-    order = {(name[a], name[b]) for a, b in transitive_closure(r.before, list(name))}
-    unread = list(r.unparsed) + [u.words for u in account(text, r.tasks, r.before)]
-    return sorted(name.values()), order, unread
+def read(text: str) -> Reading:
+    return sorted_reading(text, KITCHEN)
 
 
 READ = [
