@@ -12,7 +12,13 @@ the word tables' `REWRITES`). Each rewrite changes no meaning:
   "then region G", "three objects, three regions: G, H and I" (the regions' count is still checked),
   the places before what may not go there ("F, G, H: nothing placed"), a pair before its exchange ("red
   and blue: swap places");
-- emphasis: "no exceptions".
+- emphasis: "no exceptions";
+- asides: a timing or order remark in parentheses ("(at any time)", "(whenever)", "(one after another, red
+  before blue)", "(in any order)") is set off by commas instead, so it attaches to the clause before it as
+  the same words after a comma do; "in that order" after a clause that already orders its steps with
+  "then" repeats that order and is dropped (without "then" it stays unread: which order?);
+- modal "is to" before a verb of holding ("each region is to hold only one block": must hold), and "X
+  gets to P" (goes to P) where a place follows.
 """
 
 from __future__ import annotations
@@ -23,6 +29,12 @@ from nl2hltl2plan.language.handover_words import SWAP
 
 _BLOCK = r"(?:the\s+)?(?:red|blue|yellow)(?:\s+(?:block|one|cube))?"
 _LETTERS = r"[e-j](?:\s*(?:,|and|or)\s*[e-j])*"
+# one timing or order remark: "at any time", "whenever", "one after another", "red before blue", "red first"
+_REMARK = (
+    r"(?:(?:at\s+)?any\s*time|at\s+any\s+(?:point|moment)|whenever|in\s+any\s+order|one\s+(?:after|by)\s+"
+    r"(?:another|the\s+other|one)|one\s+at\s+a\s+time|in\s+turn|"
+    rf"{_BLOCK}\s+(?:(?:goes|placed|put|comes)\s+)?(?:before|after)\s+{_BLOCK}|{_BLOCK}\s+(?:(?:goes|placed|put)\s+)?first)"
+)
 
 _RULES: tuple[tuple[str, str], ...] = (
     # academic: the goal as a noun
@@ -75,6 +87,12 @@ _RULES: tuple[tuple[str, str], ...] = (
     ),
     # emphasis
     (r"\s*,?\s*\b(?:no\s+exceptions|without\s+exception)\b", " "),
+    # asides: a parenthesised timing or order remark reads as one set off by commas
+    (rf"\(\s*({_REMARK}(?:\s*(?:,|and)\s*{_REMARK})*)\s*\)", r", \1 ,"),
+    (r"(\bthen\b[^,;()]*?)\s*(?:,\s*)?(?:\(\s*)?\bin\s+(?:that|this|the\s+same)\s+order\b(?:\s*\))?", r"\1"),
+    # modal "is to" before a verb of holding; "gets to" a place
+    (r"\b(?:is|are)\s+to\s+(?=(?:hold|contain|carry|take|receive|accept|have)\b)", "must "),
+    (r"\b(?:gets|got)\s+(?=(?:to|onto|into|over\s+to|across\s+to)\s+(?:the|regions?|any|[e-j])\b)", "goes "),
 )
 
 # compiled once: with the reader's other tables they are more than `re`'s cache holds
