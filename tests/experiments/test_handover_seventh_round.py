@@ -29,6 +29,9 @@ READ = [
     (2, "The three blocks go onto H, I and J; every region is to hold exactly one block."),
     (6, "The three objects are to be placed on G, H and I, each region is to take only one object, and red "
      "is to be placed before blue."),
+    # "is to take" before a goal's blocks is the goal itself, not a rule
+    (3, "What I want you to do is to take the three pillars over to regions E, F and G beside arms a and b, "
+     "and nothing may be placed on any other region."),
     # "gets to" a place
     (5, "Exchange red and blue, red first, and see that the yellow block gets to the opposite side at any "
      "time."),

@@ -91,7 +91,12 @@ _RULES: tuple[tuple[str, str], ...] = (
     (rf"\(\s*({_REMARK}(?:\s*(?:,|and)\s*{_REMARK})*)\s*\)", r", \1 ,"),
     (r"(\bthen\b[^,;()]*?)\s*(?:,\s*)?(?:\(\s*)?\bin\s+(?:that|this|the\s+same)\s+order\b(?:\s*\))?", r"\1"),
     # modal "is to" before a verb of holding; "gets to" a place
-    (r"\b(?:is|are)\s+to\s+(?=(?:hold|contain|carry|take|receive|accept|have)\b)", "must "),
+    # ("is to take the pillars ..." is a goal: "take" and "carry" hold only before a count of one)
+    (
+        r"\b(?:is|are)\s+to\s+(?=(?:hold|contain|receive|accept)\b|(?:take|carry)\s+(?:(?:only|just|exactly|at\s+most)\s+)?"
+        r"(?:one|a\s+single|no\s+more\s+than)\b)",
+        "must ",
+    ),
     (r"\b(?:gets|got)\s+(?=(?:to|onto|into|over\s+to|across\s+to)\s+(?:the|regions?|any|[e-j])\b)", "goes "),
 )
 
