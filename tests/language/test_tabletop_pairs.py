@@ -90,6 +90,7 @@ def test_a_wording_the_grammar_reads_never_reaches_the_fallback(monkeypatch):
         "carrot: blue plate, banana: pink plate",  # an object the world lacks
         "carrot: blue plate, orange: yellow plate, then green apple: pink plate first",  # "first" misplaced
         "the carrot from the blue plate: yellow plate",  # a move, not a placement
+        "carrot: blue plate, orange: yellow plate first",  # which one first is not said
     ],
 )
 def test_near_misses_stay_refused(text):
@@ -100,6 +101,7 @@ def test_read_pairs_refuses_what_check_1_would_not_see():
     assert read_pairs("orange: blue plate, then orange: blue plate", TYPES) is None  # named twice
     assert read_pairs("blue plate", TYPES) is None  # a plate and no object
     assert read_pairs("carrot: blue plate; orange", TYPES) is None  # an object with no plate
+    assert read_pairs("to begin, carrot: blue plate, orange: yellow plate", TYPES) is None  # no "then"
 
 
 def test_other_worlds_never_get_the_fallback():

@@ -121,11 +121,14 @@ def read_pairs(text: str, types: set[str]) -> Reading | None:
 
 
 def _ordered_groups(text: str) -> list[str] | None:
-    """The text cut at its "then"s; "first" may open only the first group. None: no text left."""
+    """The text cut at its "then"s; "first" may open only the first group, and only when a "then"
+    follows. None: no text left, or a "first" with no "then"."""
     parts = [p for p in _THEN.split(text) if p.strip(" ,.;:!?")]
     if not parts:
         return None
     opened = _FIRST.search(parts[0])
+    if opened is not None and len(parts) == 1:
+        return None  # "first" with no "then" after it: which tasks come first is not said
     if opened is not None:
         parts[0] = parts[0][: opened.start()] + " " + parts[0][opened.end() :]
     return parts
