@@ -35,7 +35,8 @@ _FREE_ORDER = re.compile(
 )
 # where one ordered group ends and the next begins
 _THEN = re.compile(r"\b(?:and\s+)?(?:then|after\s+that|afterwards|once\s+that(?:'s|\s+is)\s+done)\b")
-# how the first group may open (only at its start, or right after its first placement)
+# how the first group is marked: "first" / "to begin" at its start, or "first" closing it or its heading
+# ("yellow plate first: ...")
 _FIRST = re.compile(r"^\W*(?:first(?:ly)?|to\s+(?:begin|start))\b|\bfirst\b(?=\W*$|\s*:)")
 # words that state some other order, relation, count or negation: the fallback never guesses at them
 _REFUSED = re.compile(
