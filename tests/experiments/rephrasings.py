@@ -237,3 +237,39 @@ DEV_H61: dict[int, list[str]] = {
         "The orange and the green apple must be placed in the yellow plate first, and only then should the "
         "carrot and the red apple be put in the blue plate."],
 }
+
+# Issue 28 (h65): held-out rephrasings in styles the sets above do not use, written before the
+# framing-independent tabletop reading (language/tabletop_pairs.py): a colon or "=" notation, the plate
+# as the place "for" or "where" an object goes, pairing and matching verbs, "end up"/"land" goals, and the
+# plate as the subject of "takes". Measured once before and once after (scripts/tabletop_styles.py --batch
+# VALID_H65), never read per sentence between; the expected signature is each task's ground truth.
+VALID_H65: dict[int, list[str]] = {
+    1: ["green apple: blue plate. orange: yellow plate.",
+        "The blue plate is for the green apple and the yellow plate is for the orange.",
+        "Match the green apple with the blue plate and the orange with the yellow plate.",
+        "I'd like the green apple to end up on the blue plate, and the orange should end up on the yellow "
+        "plate."],
+    2: ["pink plate = green apple, yellow plate = orange, blue plate = red apple; no particular order",
+        "Red apple to the blue plate, green apple to the pink plate, orange to the yellow plate, sequence "
+        "doesn't matter.",
+        "The pink plate is where the green apple goes, the yellow plate is where the orange goes and the "
+        "blue plate is where the red apple goes, in any order.",
+        "Could the green apple land on the pink plate, the orange on the yellow plate and the red apple on "
+        "the blue plate? Any order."],
+    3: ["carrot: blue plate, orange: yellow plate, green apple: green plate, red apple: pink plate. any "
+        "order.",
+        "Pair the carrot with the blue plate, the orange with the yellow plate, the green apple with the "
+        "green plate and the red apple with the pink plate.",
+        "The blue plate takes the carrot, the yellow plate takes the orange, the green plate takes the green "
+        "apple and the pink plate takes the red apple, in any order.",
+        "Let the carrot end up on the blue plate, the orange on the yellow plate, the green apple on the "
+        "green plate and the red apple on the pink plate, whatever the order."],
+    4: ["Yellow plate first: green apple and orange. Once that's done, blue plate: carrot and red apple, "
+        "any order.",
+        "First the yellow plate takes the green apple and the orange; after that the blue plate takes the "
+        "carrot and the red apple, in any order.",
+        "To begin, the green apple and the orange should end up on the yellow plate. Once that's done, the "
+        "carrot and the red apple should end up on the blue plate, in any order.",
+        "First match the green apple and the orange with the yellow plate, then match the carrot and the "
+        "red apple with the blue plate."],
+}

@@ -120,13 +120,20 @@ def translate(
         rest, negations = read_negations(instruction, grounder, look)
         if negations and not rest.strip(" ,.;!?"):
             raise HTTError(nothing_to_do(instruction, [n.spec for n in negations]))
-        res = _parse(backend, rest, grounder, strict, look, world)
+        try:
+            res = _parse(backend, rest, grounder, strict, look, world)
+        except HTTError:
+            if (paired := _tabletop_fallback(instruction, negations, world, backend)) is None:
+                raise
+            res = paired
         if negations:
             res = _keep_negations(res, instruction, negations, grounder)
         picked = dict(choices or {})
         if ask is not None and res.ambiguities:
             picked.update(ask(res.ambiguities))
         res = account_words(apply_choices(res, picked), world)
+        if res.partial and (paired := _tabletop_fallback(instruction, negations, world, backend)) is not None:
+            res = paired
         with _refused_as_not_understood(res, world):
             return _finish(res, world, backend, client, ltl, actions, build)
     if client is None:
@@ -136,6 +143,18 @@ def translate(
         res = account_words(cross_check(res, types, scene), world)
         with _refused_as_not_understood(res, world):
             return _finish(res, world, backend, client, ltl, actions, build)
+
+
+def _tabletop_fallback(
+    instruction: str, negations: list[Negation], world: SceneLike | None, backend: str
+) -> LanguageResult | None:
+    """The tabletop world's pairs reading (`tabletop_pairs`) of an instruction the grammar refused or
+    read only in part; None elsewhere, with a negation, or when that reading fails check 1 too."""
+    if negations or not isinstance(world, World) or world.kind != "tabletop":
+        return None
+    from nl2hltl2plan.language.tabletop_pairs import tabletop_fallback
+
+    return tabletop_fallback(instruction, world, backend)
 
 
 def _keep_negations(
