@@ -102,6 +102,15 @@ def test_every_content_after_with_is_a_thing_to_move():
     assert account("carry a bowl with a knife in it to the counter", knife, []) == []
 
 
+def test_names_across_punctuation_are_two_things():
+    """Found by h65: "carrot: blue plate, orange: yellow plate" read as the carrot task alone passed check 1,
+    which joined "orange: yellow plate" into one name."""
+    carrot = [task("place", "Carrot", "BluePlate", id="A")]
+    said = account("to begin, carrot: blue plate, orange: yellow plate", carrot, [])
+    assert [u.words for u in said] == ["orange", "yellow plate"]
+    assert account("put the carrot on the blue plate", carrot, []) == []
+
+
 def test_counts_and_cycles_are_input_errors():
     cups = [task("place_two", "Cup", "DishwasherUpperRack", count=2)]
     with pytest.raises(HTTError, match="holds only 2"):

@@ -132,12 +132,15 @@ def _is_verb(m: Mention, toks: list[tuple[str, int, int]]) -> bool:
     return single and nxt in ("on", "off", "the", "it", "a")
 
 
-def _phrases(mentions: list[Mention], toks: list[tuple[str, int, int]]) -> list[list[Mention]]:
+def _phrases(
+    instruction: str, mentions: list[Mention], toks: list[tuple[str, int, int]]
+) -> list[list[Mention]]:
     """Mentions that name one thing together: compounds ("dresser drawer", "soap container"), "X of Y"
-    ("two bottles of lotion", "the light of the floor lamp") and parts ("the shelf in the fridge")."""
+    ("two bottles of lotion", "the light of the floor lamp") and parts ("the shelf in the fridge"); never
+    across punctuation ("orange: yellow plate" names two things)."""
     out: list[list[Mention]] = []
     for m in mentions:
-        if out:
+        if out and not re.search(r"[,:;.!?()]|\s-\s", instruction[out[-1][-1].char_end : m.char_start]):
             gap = [w for w, _, _ in toks[out[-1][-1].end : m.start]]
             part = out[-1][-1].surface.lower().split()[-1] in PART_NOUNS and gap[:1] in (["in"], ["inside"])
             if not gap or ((gap[0] == "of" or part) and _modifiers(gap[1:])):
@@ -165,7 +168,7 @@ def _nouns(
     slots = parse.slots()
     groups: dict[frozenset[str], list[list[Mention]]] = {}
     implied_places: list[Mention] = []  # "the refrigerator" of a cooling task: still a place the task uses
-    for phrase in _phrases(mentions, toks):
+    for phrase in _phrases(instruction, mentions, toks):
         if any(
             m.entry.canonical in implied or m.surface.lower().split()[-1] in implied_words for m in phrase
         ):
