@@ -91,6 +91,8 @@ def test_a_wording_the_grammar_reads_never_reaches_the_fallback(monkeypatch):
         "carrot: blue plate, orange: yellow plate, then green apple: pink plate first",  # "first" misplaced
         "the carrot from the blue plate: yellow plate",  # a move, not a placement
         "carrot: blue plate, orange: yellow plate first",  # which one first is not said
+        "the blue plate had the carrot, now the orange",  # how things were (the lead's probe), no request
+        "the carrot is already on the blue plate. orange: yellow plate",  # a statement of where it is
     ],
 )
 def test_near_misses_stay_refused(text):

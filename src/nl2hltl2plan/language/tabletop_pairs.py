@@ -46,6 +46,12 @@ _REFUSED = re.compile(
     r"keep|leave|empty|clear|stack)\b|\d"
 )
 _SENTENCE = re.compile(r"[.;!?]+")
+# a sentence that says how things are or were ("the blue plate had the carrot") asks for nothing, unless
+# it says what to do too ("make sure the carrot is on the blue plate")
+_STATEMENT = re.compile(r"\b(?:is|are|was|were|had|has|have|already|currently|still)\b")
+_REQUEST = re.compile(
+    r"\b(?:make\s+sure|ensure|want|needs?|should|must|please|put|place|set|move|gets?|go|goes|lands?|ends?\s+up)\b"
+)
 
 
 def _mention_pattern(types: set[str]) -> re.Pattern[str]:
@@ -99,7 +105,8 @@ def read_pairs(text: str, types: set[str]) -> Reading | None:
     for group in groups:
         ids: list[str] = []
         for sentence in _SENTENCE.split(group):
-            if _REFUSED.search(pattern.sub(" ", sentence)):
+            rest = pattern.sub(" ", sentence)
+            if _REFUSED.search(rest) or (_STATEMENT.search(rest) and not _REQUEST.search(rest)):
                 return None
             found = [m.group(0) for m in pattern.finditer(sentence)]
             if any(" ".join(f.split()) not in by_words for f in found):
