@@ -222,11 +222,7 @@ def _locative(
     and the stove"; after "next to" / "by" / "between", the place may be one a treatment implies ("next to
     the lettuce in the refrigerator" of a cooled apple)."""
     start = pair_start(toks, m.start)  # the second place of "between A and B" is read as A is
-    i = start - 1
-    while i >= 0 and start - i <= 4 and (toks[i][0] in DETERMINERS or not categories(toks[i][0])):
-        if toks[i][0] in LOCATIVE:
-            break
-        i -= 1
+    i = _preposition_before(toks, start, LOCATIVE)
     if _walked_to(toks, m.start):
         return True
     if i < 0 or toks[i][0] not in LOCATIVE:
@@ -243,6 +239,17 @@ def _locative(
         return True
     near = places + implied if toks[i][0] in NEAR_WORDS else places
     return any(clause[0] <= o.char_start < clause[1] and o.start not in (m.start, start) for o in near)
+
+
+def _preposition_before(toks: list[tuple[str, int, int]], start: int, preps: frozenset[str]) -> int:
+    """The index of the preposition before the phrase whose first word is at `start`, over up to four
+    determiners or plain words; else of the word where the scan stopped (-1 at the start)."""
+    i = start - 1
+    while i >= 0 and start - i <= 4 and toks[i][0] not in preps:
+        if toks[i][0] not in DETERMINERS and categories(toks[i][0]):
+            break
+        i -= 1
+    return i
 
 
 def _walked_to(toks: list[tuple[str, int, int]], start: int) -> bool:
@@ -322,11 +329,7 @@ def _a_stop(m: Mention, toks: list[tuple[str, int, int]]) -> bool:
     """An appliance named as a stop of the task ("put the mug in the sink"), not as where a thing is or
     comes from ("the mug is in the sink", "take the apple out of the fridge"): only a stop names a
     treatment."""
-    i = m.start - 1
-    while i >= 0 and m.start - i <= 4 and toks[i][0] not in _PREPOSITIONS:
-        if toks[i][0] not in DETERMINERS and categories(toks[i][0]):
-            break
-        i -= 1
+    i = _preposition_before(toks, m.start, _PREPOSITIONS)
     if i < 0 or toks[i][0] not in _PREPOSITIONS:
         return True
     before = toks[i - 1][0] if i > 0 else ""
