@@ -37,3 +37,26 @@ def test_a_task_without_destination_is_reported_not_guessed() -> None:
     tasks, b = _tasks("Pick up the apple")
     assert tasks.specs == []
     assert b.unparsed == ["no destination for the 'the apple' in: Pick up the apple"]
+
+
+def _scene_tasks(text: str, types: set[str]) -> Tasks:
+    from nl2hltl2plan.language.grounding import Grounder, alfred_lookup
+
+    b = TaskBuilder(Grounder(types), strict=False, look=alfred_lookup())
+    drafting = DraftBuilder(b)
+    for s in read_sentences(text).sentences:
+        drafting.add_sentence(s)
+    return build_tasks(drafting.out.drafts, drafting.out.units, b, text)
+
+
+def test_two_phrases_for_one_type_one_of_them_its_name_are_two_types() -> None:
+    # FloorPlan419's types: "towel" alone is the HandTowel, but beside "the hand towel" it is another thing
+    # of the scene (a Towel only hangs on its holder in ALFRED, so on a table it is the Cloth)
+    types = {"HandTowel", "Towel", "Cloth", "SideTable", "SoapBar", "SoapBottle", "ToiletPaper"}
+    got = _scene_tasks("put the towel and the hand towel on the side table", types)
+    assert sorted((s.object[0], s.count) for s in got.specs) == [("Cloth", 1), ("HandTowel", 1)]
+    got = _scene_tasks("put the soap and the soap bar on the side table", types)
+    assert sorted(s.object[0] for s in got.specs) == ["SoapBar", "SoapBottle"]
+    # two phrases of which neither names the type stay two of one type
+    (spec,) = _scene_tasks("put an empty roll and a full roll of toilet paper on the side table", types).specs
+    assert (spec.object, spec.count) == (["ToiletPaper"], 2)

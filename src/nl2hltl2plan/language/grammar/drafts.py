@@ -4,7 +4,7 @@ list of objects sharing one verb as a group) and temporal units (the tasks of on
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.grammar import word_tables as G
@@ -26,6 +26,7 @@ from nl2hltl2plan.language.grammar.frames import (
 from nl2hltl2plan.language.grammar.phrases import NP, tokens
 from nl2hltl2plan.language.grammar.sentences import Sentence
 from nl2hltl2plan.language.grammar.subordinate import treatment_after
+from nl2hltl2plan.language.grounding import Grounder, camel_words
 
 
 @dataclass
@@ -489,6 +490,31 @@ def incomplete(d: Draft) -> bool:
     return True
 
 
+def named_apart(x: NP, y: NP, g: Grounder) -> bool:
+    """ "the towel and the hand towel" where the scene has a HandTowel and a Towel: two phrases that ground
+    to one type, one of them that type's name, are two objects of two types, not two of one, when the other
+    phrase can stand for another type of the scene. The phrase naming the type keeps it; the other takes its
+    next type in the scene (the entries are narrowed in place)."""
+    assert x.entry is not None and y.entry is not None
+    first = g.resolve(x.entry)
+    name = camel_words(first[0]).split() if len(first) == 1 else []
+    naming = [np for np in (x, y) if name and _has_words(np.text.lower().split(), name)]
+    if len(naming) != 1:
+        return False
+    other = y if naming[0] is x else x
+    assert other.entry is not None and naming[0].entry is not None
+    rest = tuple(t for t in g.candidates(other.entry) if t != first[0])
+    if not rest:
+        return False
+    naming[0].entry = replace(naming[0].entry, types=(first[0],), all_=False)
+    other.entry = replace(other.entry, types=rest, all_=False)
+    return True
+
+
+def _has_words(words: list[str], sub: list[str]) -> bool:
+    return any(words[k : k + len(sub)] == sub for k in range(len(words) - len(sub) + 1))
+
+
 def merge_items(items: list[Item], b: TaskBuilder) -> list[Item]:
     """Two objects that one clause lists for one destination: a container and its content ("a bowl and a
     pencil"), or two objects of the same type ("an empty roll and a full roll of toilet paper")."""
@@ -512,6 +538,8 @@ def merge_items(items: list[Item], b: TaskBuilder) -> list[Item]:
     if own and any(is_fixed(np) and not same(np, own[-1]) for _, np in dests):
         return items  # "the mug in the sink and the egg in the fridge": each goes its own way
     if b.g is not None and set(b.g.resolve(xo.entry)) == set(b.g.resolve(yo.entry)) and b.g.resolve(xo.entry):
+        if named_apart(xo, yo, b.g):
+            return items
         xo.count = 2
         return [Item(obj=xo, pps=dests or x.pps)]
     if xo.is_movable_receptacle() != yo.is_movable_receptacle():
