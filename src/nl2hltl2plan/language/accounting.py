@@ -227,6 +227,8 @@ def _locative(
         return True
     if i < 0 or toks[i][0] not in LOCATIVE:
         return False
+    if re.search(r"[,;:.!?]", instruction[toks[i][2] : toks[start][1]]):
+        return False  # "in the drawer, also the ladle": a preposition's phrase never reaches over punctuation
     first = i
     while first > 0 and toks[first - 1][0] in LOCATIVE | {"out"}:
         first -= 1  # "from in between the sink and ...", "out of", "from under the bed": where it is
