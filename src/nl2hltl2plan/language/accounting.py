@@ -392,7 +392,9 @@ def _words(
             continue
         guard = parse.constraint_at(toks[i][1])
         if guard is None:
-            unread = _verb(w, cats, words, i, parse)
+            # what an "it" after the verb may be: the last thing named before it that is opened for itself
+            said = [m.surface for m in mentions if m.end <= i and set(m.entry.types) & OPENED_FOR_ITSELF]
+            unread = _verb(w, cats, words, i, parse, said[-1] if said else "")
         else:
             unread = unforbidden_verb(w, cats, words, i, guard)
         if unread is None and not _locative_word(instruction, i, toks, mentions):
@@ -441,7 +443,9 @@ def _until_guard(instruction: str, tok: tuple[str, int, int], parse: ParseUsage)
     return bool(parse.before) and re.search(r"\b(until|unless|before)\b", rest) is not None
 
 
-def _verb(w: str, cats: frozenset[str], words: list[str], i: int, parse: ParseUsage) -> Unread | None:
+def _verb(
+    w: str, cats: frozenset[str], words: list[str], i: int, parse: ParseUsage, last_named: str = ""
+) -> Unread | None:
     if "verb_switch" in cats:
         after = words[i + 1 : i + 5]
         if "off" in after and "off" not in parse.states:
@@ -451,7 +455,10 @@ def _verb(w: str, cats: frozenset[str], words: list[str], i: int, parse: ParseUs
         return None
     if "verb_break" in cats and "broken" not in parse.states:
         return Unread(w, "action", "no base task breaks something")
-    if w in ("open", "close", "shut") and (thing := _opened_thing(words[i + 1 : i + 4], parse)):
+    after = words[i + 1 : i + 4]
+    if after[:1] in (["it"], ["them"]) and last_named:
+        after = last_named.split()  # "put the laptop on the table and open it": the laptop
+    if w in ("open", "close", "shut") and (thing := _opened_thing(after, parse)):
         return Unread(f"{w} the {camel_words(thing).lower()}", "action", f"no base task {w}s it")
     for state in ("off", "on"):
         if f"state_lights_{state}" in cats and state not in parse.light_states:
