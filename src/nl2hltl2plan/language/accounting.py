@@ -526,6 +526,8 @@ def _count(
 ) -> Unread | None:
     """A count before a noun: the task on that noun takes exactly so many (every one for "all")."""
     w, start, _ = toks[i]
+    if i + 1 < len(toks) and toks[i + 1][0] in _TIME_UNITS:
+        return Unread(f"{w} {toks[i + 1][0]}", "count", "no base task takes a time or a duration")
     m = _next_mention(mentions, [t[0] for t in toks], i)
     if m is None or re.search(r"[,.;:!?]", instruction[start : m.char_start]):
         return None
@@ -556,6 +558,12 @@ def _count(
         return None
     got = " + ".join(map(str, counts)) or "none"
     return Unread(phrase, "count", f"the base tasks take {got}, not {n}")
+
+
+# "for two minutes", "at 5 pm": a count of time, which no base task has
+_TIME_UNITS = frozenset(
+    "second seconds sec secs minute minutes min mins hour hours hr hrs pm am o'clock oclock".split()
+)
 
 
 def take_every_instance(
