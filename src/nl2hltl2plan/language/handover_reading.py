@@ -153,6 +153,7 @@ def _sentences(instruction: str) -> list[str]:
     for line in instruction.splitlines():
         text = re.sub(r"(^\s*|[.;!?:]\s+)(\d)\.\s", r"\1\2) ", line)
         text = re.sub(r"\b[iI]\.\s?[eE]\.", "that is", text)
+        text = re.sub(r"\b[nN]\.\s?[bB]\.?\s*:?", "NB:", text)  # "N.B. red goes first": a note's label
         text = re.sub(r"\b(opp|approx|resp)\.(?=\s)", r"\1", text, flags=re.IGNORECASE)  # "opp. side"
         out += [re.sub(r"^\s*[-*•·]\s+", "", s) for s in re.split(r"[.;!?]+(?:\s|$)", text)]
     return [s for s in out if s.strip()]

@@ -28,6 +28,10 @@ import re
 from nl2hltl2plan.language.handover_words import SWAP
 
 _BLOCK = r"(?:the\s+)?(?:red|blue|yellow)(?:\s+(?:block|one|cube))?"
+# the whole team, addressed: never one arm by name
+_TEAM = (
+    r"(?:(?:the\s+)?(?:robots|robot\s+arms|arms)|team|everyone|everybody|folks|guys|crew|you\s+(?:two|all|guys))"
+)
 _LETTERS = r"[e-j](?:\s*(?:,|and|or)\s*[e-j])*"
 # one timing or order remark: "at any time", "whenever", "one after another", "red before blue", "red first"
 _REMARK = (
@@ -98,6 +102,25 @@ _RULES: tuple[tuple[str, str], ...] = (
         "must ",
     ),
     (r"\b(?:gets|got)\s+(?=(?:to|onto|into|over\s+to|across\s+to)\s+(?:the|regions?|any|[e-j])\b)", "goes "),
+    # notes and addresses: "note that ...", "keep in mind that ..." ask for attention and say nothing;
+    # the whole team addressed between commas ("then, robots, put ...") says nothing either (one arm by
+    # name, "arm a,", says who acts, and is left to be refused)
+    (
+        r"(^|,|;|\band\b)\s*(?:(?:please|also)\s+)?(?:note|remember|keep\s+in\s+mind|bear\s+in\s+mind|be\s+aware|mind)\s+"
+        r"that\b",
+        r"\1 ",
+    ),
+    (rf"(?:^|,)\s*{_TEAM}\s*(?=,)", " "),
+    (rf",\s*{_TEAM}\s*$", " "),
+    # progressive narration: "nothing is being placed on F" (is placed), "no region is getting two blocks"
+    (
+        r"\b(is|are)\s+being\s+(?=(?:placed|put|set|dropped|moved|touched|handled|grabbed|picked\s+up)\b)",
+        r"\1 ",
+    ),
+    *(
+        (rf"\bis\s+{gerund}\b", third_person)
+        for gerund, third_person in (("getting", "gets"), ("touching", "touches"), ("holding", "holds"))
+    ),
 )
 
 # compiled once: with the reader's other tables they are more than `re`'s cache holds

@@ -152,14 +152,22 @@ _NARRATION: tuple[tuple[str, str], ...] = (
     ),
     (rf"\b{_SUBJECT}\s+(?:start|begin)\s+by\s+", "first "),
     (r"^\s*(?:start|begin)\s+by\s+", "first "),
-    # "you will be moving": the verb
+    # "you will be moving", "we are moving", "we are not placing": the verb
     *(
         (rf"\b{_SUBJECT}{_WILL}\s+be\s+(?:(first|also|then)\s+)?{gerund}\b", rf"\1 {verb}")
         for gerund, verb in _GERUNDS.items()
     ),
+    *(
+        (rf"\b{_SUBJECT}\s+are\s+(?:(first|also|then|now)\s+)?{gerund}\b", rf"\1 {verb}")
+        for gerund, verb in _GERUNDS.items()
+    ),
+    *(
+        (rf"\b{_SUBJECT}\s+are\s+(?:not|never)\s+{gerund}\b", f"do not {verb}")
+        for gerund, verb in _GERUNDS.items()
+    ),
     (
         rf"{_ANCHOR}\s*{_SUBJECT}(?:\s+will|\s+shall|\s+must|\s+may|\s+should|\s+are)?\s+(?:not\s+|never\s+)"
-        rf"(?:be\s+)?(?:allowed\s+to\s+)?(?=(?:{VERB}|touch|place|drop|set|leave)\b)",
+        rf"(?:be\s+)?(?:allowed\s+to\s+|going\s+to\s+)?(?=(?:{VERB}|touch|place|drop|set|leave)\b)",
         r"\1 do not ",
     ),
     (

@@ -1,0 +1,81 @@
+"""Issue 24, eighth round (h69): a note's label before a rule ("Careful: ...", "Note: ...", "Heads up:
+...", "N.B. ...", "Please note that ..."), the whole team addressed inside a clause or step ("Then,
+robots, put ..."), progressive narration ("nothing is being placed on F", "nobody is touching X until
+...", "we are putting ...") and "you are not going to VERB" (`language/handover_registers.py`,
+`handover_spoken.py`, `handover_words.py`). Each class has sentences of our own that must give the
+written spec and near misses that must be refused or give another spec (never the written one)."""
+
+from __future__ import annotations
+
+import pytest
+from handover_specs import assert_not_the_written_spec, assert_written_spec
+from handover_specs import spec_of as _spec
+
+from nl2hltl2plan.errors import HTTError
+
+READ = [
+    # a note's label before a rule or a goal
+    (1, "Get all three blocks over to the opposite side. Be careful: red has to go down before blue."),
+    (2, "Place the three blocks on H, I and J. Please note: only one block per region."),
+    (7, "Put the three objects on region I, one after another, red before blue. Heads-up: nothing goes on "
+     "F, G or H during this period."),
+    (5, "Swap red and blue, with red placed first. N.B. the yellow block goes to the opposite side at any "
+     "time."),
+    (8, "Yellow block to region I first, then to region G. Keep in mind that red and blue go to any empty "
+     "region at any time."),
+    # the whole team addressed inside a clause or a step
+    (4, "Take the three blocks to the opposite regions and, robots, leave the blue block alone until the red "
+     "block has been touched. After all of that, everyone, put the yellow block back on G."),
+    (6, "Then, team, place the three objects separately on G, H and I, red before blue."),
+    # progressive narration
+    (3, "The arms are bringing the three pillars to E, F and G beside arms a and b, and no object is being "
+     "put on any other region."),
+    (4, "We are taking the three blocks to the opposite regions, and nobody is touching the blue block until "
+     "the red block has been touched. Once that's all done, we are returning the yellow block to G."),
+    # "you are not going to VERB"
+    (2, "You're going to place the three blocks on H, I and J, and you're not going to put two blocks on "
+     "one region."),
+]
+
+REFUSED = [
+    # a note that says what the reader does not model, or names a region the world lacks
+    (1, "Move all three blocks to the opposite side, red before blue. Tip: use arm c for the red block."),
+    (8, "Put the yellow block on region I, then on region G. Please note that red and blue go to region K "
+     "at any time."),
+    # one arm by name says who acts: not read as an address
+    (4, "Move the three blocks to the opposite regions, and don't touch the blue block until the red block "
+     "has been touched. Then, arm a, put the yellow block back on region G."),
+    (4, "Move the three blocks to the opposite regions, and don't touch the blue block until the red block "
+     "has been touched. After that, arms a and b, put the yellow block back on region G."),
+    (7, "We're placing the three objects on region I one after another, red before blue, and nothing is "
+     "being placed on regions F, G or K during this period."),
+]
+
+OTHER = [
+    # the noted order the other way round
+    (1, "Move all three blocks to the opposite side. Note: the blue block goes down before the red block."),
+    (6, "Place the three objects on regions G, H and I, one per region, and, team, place the blue one before "
+     "the red one."),
+    # the touch guard the other way round; one region left out of the prohibition
+    (4, "We're moving the three blocks to the opposite regions, and nobody is touching the red block until "
+     "the blue block has been touched. After all of this, we're putting the yellow block back on region G."),
+    (7, "You're going to place the three objects on region I one after another, red before blue, and you're "
+     "not going to place anything on regions F or G during this period."),
+]
+
+
+@pytest.mark.parametrize(("task_id", "text"), READ)
+def test_eighth_round_forms_give_the_written_specs(task_id, text):
+    assert_written_spec(task_id, text)
+
+
+@pytest.mark.parametrize(("task_id", "text"), REFUSED)
+def test_eighth_round_near_misses_are_refused(task_id, text):
+    with pytest.raises(HTTError) as caught:
+        _spec(task_id, text)
+    assert "\n" not in str(caught.value)
+
+
+@pytest.mark.parametrize(("task_id", "text"), OTHER)
+def test_eighth_round_forms_that_say_something_else_do_not_give_the_written_spec(task_id, text):
+    assert_not_the_written_spec(task_id, text)
