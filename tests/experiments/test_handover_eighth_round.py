@@ -1,7 +1,9 @@
 """Issue 24, eighth round (h69): a note's label before a rule ("Careful: ...", "Note: ...", "Heads up:
 ...", "N.B. ...", "Please note that ..."), the whole team addressed inside a clause or step ("Then,
 robots, put ..."), progressive narration ("nothing is being placed on F", "nobody is touching X until
-...", "we are putting ...") and "you are not going to VERB" (`language/handover_registers.py`,
+...", "we are putting ..."), "you are not going to VERB", a user story's role ("As the operator, I want
+..."), a need after a step word ("After that, I want X back on G") and manner adverbs ("carefully",
+"gently") (`language/handover_registers.py`,
 `handover_spoken.py`, `handover_words.py`). Each class has sentences of our own that must give the
 written spec and near misses that must be refused or give another spec (never the written one)."""
 
@@ -35,6 +37,13 @@ READ = [
     # "you are not going to VERB"
     (2, "You're going to place the three blocks on H, I and J, and you're not going to put two blocks on "
      "one region."),
+    # a user story's role; a need after a step word; manner adverbs
+    (3, "As the lab technician, I need the three pillars moved to E, F and G beside arms a and b, and "
+     "nothing placed on any other region."),
+    (4, "Move the three blocks to the opposite regions, and don't touch the blue block until the red block "
+     "has been touched. Then I want the yellow block back on region G."),
+    (7, "Slowly place the three objects on region I one after another, red before blue, and cautiously keep "
+     "F, G and H empty during this period."),
 ]
 
 REFUSED = [
@@ -49,6 +58,13 @@ REFUSED = [
      "has been touched. After that, arms a and b, put the yellow block back on region G."),
     (7, "We're placing the three objects on region I one after another, red before blue, and nothing is "
      "being placed on regions F, G or K during this period."),
+    # a role that is no person; a manner word outside the list ("immediately" may say when)
+    (1, "As the red block, I want to go to the opposite side before the blue block, and move all three "
+     "blocks there."),
+    (1, "Immediately move all three blocks to the opposite side, red before blue."),
+    # a permission is not a command
+    (8, "Put the yellow block on region I and then on region G, and feel free to move the red and blue "
+     "blocks to any empty region at any time."),
 ]
 
 OTHER = [
@@ -61,6 +77,8 @@ OTHER = [
      "the blue block has been touched. After all of this, we're putting the yellow block back on region G."),
     (7, "You're going to place the three objects on region I one after another, red before blue, and you're "
      "not going to place anything on regions F or G during this period."),
+    (6, "Carefully place the three objects on regions G, H and I, one per region, and quickly place the blue "
+     "one before the red one."),
 ]
 
 

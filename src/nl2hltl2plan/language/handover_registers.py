@@ -25,12 +25,23 @@ from __future__ import annotations
 
 import re
 
-from nl2hltl2plan.language.handover_words import SWAP
+from nl2hltl2plan.language.handover_words import AFTER_ALL, SWAP, THEN
 
 _BLOCK = r"(?:the\s+)?(?:red|blue|yellow)(?:\s+(?:block|one|cube))?"
 # the whole team, addressed: never one arm by name
 _TEAM = (
     r"(?:(?:the\s+)?(?:robots|robot\s+arms|arms)|team|everyone|everybody|folks|guys|crew|you\s+(?:two|all|guys))"
+)
+# who asks, in a user story ("As the cell operator, ...")
+_ROLE = (
+    r"(?:user|operator|supervisor|manager|engineer|customer|client|owner|lead|technician|planner|worker|"
+    r"researcher|scientist|teacher|student|admin|administrator|person|member)"
+)
+# how a step is done, never what, where, how many or when ("quickly" is no deadline: a plan is as short as
+# it can be anyway)
+_MANNER = (
+    r"(?:carefully|gently|neatly|quickly|swiftly|smoothly|calmly|safely|slowly|steadily|precisely|securely|"
+    r"properly|cleanly|softly|tidily|efficiently|nicely|delicately|cautiously)"
 )
 _LETTERS = r"[e-j](?:\s*(?:,|and|or)\s*[e-j])*"
 # one timing or order remark: "at any time", "whenever", "one after another", "red before blue", "red first"
@@ -117,6 +128,13 @@ _RULES: tuple[tuple[str, str], ...] = (
         r"\b(is|are)\s+being\s+(?=(?:placed|put|set|dropped|moved|touched|handled|grabbed|picked\s+up)\b)",
         r"\1 ",
     ),
+    # a user story's role ("As the operator, I want ...") says who asks, never what is asked
+    (rf"^\s*as\s+(?:an?|the)\s+(?:[a-z]+\s+){{0,2}}?{_ROLE}\s*,", " "),
+    # a need after a step word ("After that, I want the yellow block back on G"): the need is the step's
+    # goal, so the step word reads it as it reads a verb ("I want you to ..." is left to the word tables)
+    (rf"((?:^|,|;)\s*(?:{THEN}|{AFTER_ALL})\s*,?\s*)(?:i|we)\s+(?=(?:want|need)\b(?!\s+you\b))", r"\1"),
+    # a manner adverb says how, never what, where, how many or when
+    (rf"\b{_MANNER}\b", " "),
     *(
         (rf"\bis\s+{gerund}\b", third_person)
         for gerund, third_person in (("getting", "gets"), ("touching", "touches"), ("holding", "holds"))
