@@ -3,7 +3,8 @@
 robots, put ..."), progressive narration ("nothing is being placed on F", "nobody is touching X until
 ...", "we are putting ..."), "you are not going to VERB", a user story's role ("As the operator, I want
 ..."), a need after a step word ("After that, I want X back on G") and manner adverbs ("carefully",
-"gently") (`language/handover_registers.py`,
+"gently"), the plan said as what one would do ("you'd move ...", "you wouldn't put ...") and an open
+checklist box ("[ ] ...") as a bullet (`language/handover_registers.py`, `handover_reading.py`,
 `handover_spoken.py`, `handover_words.py`). Each class has sentences of our own that must give the
 written spec and near misses that must be refused or give another spec (never the written one)."""
 
@@ -44,6 +45,11 @@ READ = [
      "has been touched. Then I want the yellow block back on region G."),
     (7, "Slowly place the three objects on region I one after another, red before blue, and cautiously keep "
      "F, G and H empty during this period."),
+    # the plan said as what one would do; open checklist boxes
+    (2, "Ideally you would put the three blocks on H, I and J, and you would never put two blocks on one "
+     "region."),
+    (4, "[ ] take the three blocks to the opposite regions\n[ ] hands off the blue block until the red block "
+     "has been touched\n[ ] after all of that, yellow back on G"),
 ]
 
 REFUSED = [
@@ -62,6 +68,9 @@ REFUSED = [
     (1, "As the red block, I want to go to the opposite side before the blue block, and move all three "
      "blocks there."),
     (1, "Immediately move all three blocks to the opposite side, red before blue."),
+    # a ticked box says what is done, not what to do
+    (5, "[x] swap the red and blue blocks, red placed first\n[ ] yellow block to the opposite side, at any "
+     "time"),
     # a permission is not a command
     (8, "Put the yellow block on region I and then on region G, and feel free to move the red and blue "
      "blocks to any empty region at any time."),
@@ -79,6 +88,8 @@ OTHER = [
      "not going to place anything on regions F or G during this period."),
     (6, "Carefully place the three objects on regions G, H and I, one per region, and quickly place the blue "
      "one before the red one."),
+    (1, "You would move all three blocks to the opposite side, and you would place the blue block before the "
+     "red block."),
 ]
 
 

@@ -100,7 +100,10 @@ _FILLERS: tuple[tuple[str, str], ...] = (
     (r"\s*,?\s*\bif\s+(?:possible|you\s+can)\s*$", " "),
     (r"\bit\s+would\s+be\s+(?:best|great|good|nice|ideal)\s+if\s+you\s+(?:could|would|can)\b", "please"),
     (r"^\s*(?:i|we)\s+would\s+(?:probably\s+|maybe\s+)?have\s+you\s+", "please "),
-    (rf"\b(?:probably|maybe|perhaps|ideally|preferably)\s+(?={_VERB_OR_RULE}|should\b|must\b)", " "),
+    (
+        rf"\b(?:probably|maybe|perhaps|ideally|preferably)\s+(?={_VERB_OR_RULE}|should\b|must\b|(?:you|we)\s)",
+        " ",
+    ),
     (r"\btry\s+not\s+to\b", "do not"),
     (rf"\btry\s+to\s+(?={VERB}\b)", " "),
     # a closer that adds nothing: "and that's all there is to it", "that's it"
@@ -125,7 +128,11 @@ _FILLERS: tuple[tuple[str, str], ...] = (
 # second-person narration and framing, read as the command it describes
 _SUBJECT = r"(?:you|we)"
 # (not "you can / may / get to put ...": a permission is not a command)
-_WILL = r"(?:\s+will|\s+shall|\s+are\s+going\s+to|\s+want\s+to|\s+need\s+to|\s+have\s+to|\s+must|\s+should)?"
+# ("you would move ...": the plan said as what one would do; "you would like ..." is a wish, read elsewhere)
+_WILL = (
+    r"(?:\s+will|\s+shall|\s+would(?!\s+like\b)|\s+are\s+going\s+to|\s+want\s+to|\s+need\s+to|\s+have\s+to|"
+    r"\s+must|\s+should)?"
+)
 # where a narrated command may start: a clause's start, a step word, or its time or period said first
 # ("meanwhile you won't place ...", "during this period you will not place ...")
 _ANCHOR = (
@@ -166,7 +173,7 @@ _NARRATION: tuple[tuple[str, str], ...] = (
         for gerund, verb in _GERUNDS.items()
     ),
     (
-        rf"{_ANCHOR}\s*{_SUBJECT}(?:\s+will|\s+shall|\s+must|\s+may|\s+should|\s+are)?\s+(?:not\s+|never\s+)"
+        rf"{_ANCHOR}\s*{_SUBJECT}(?:\s+will|\s+shall|\s+would|\s+must|\s+may|\s+should|\s+are)?\s+(?:not\s+|never\s+)"
         rf"(?:be\s+)?(?:allowed\s+to\s+|going\s+to\s+)?(?=(?:{VERB}|touch|place|drop|set|leave)\b)",
         r"\1 do not ",
     ),
