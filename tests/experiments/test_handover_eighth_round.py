@@ -1,12 +1,16 @@
-"""Issue 24, eighth round (h69): a note's label before a rule ("Careful: ...", "Note: ...", "Heads up:
-...", "N.B. ...", "Please note that ..."), the whole team addressed inside a clause or step ("Then,
-robots, put ..."), progressive narration ("nothing is being placed on F", "nobody is touching X until
-...", "we are putting ..."), "you are not going to VERB", a user story's role ("As the operator, I want
-..."), a need after a step word ("After that, I want X back on G") and manner adverbs ("carefully",
-"gently"), the plan said as what one would do ("you'd move ...", "you wouldn't put ...") and an open
-checklist box ("[ ] ...") as a bullet (`language/handover_registers.py`, `handover_reading.py`,
-`handover_spoken.py`, `handover_words.py`). Each class has sentences of our own that must give the
-written spec and near misses that must be refused or give another spec (never the written one)."""
+"""Issue 24, eighth round (h69). Forms read in this round, each with sentences of our own that must give
+the written spec and near misses that must be refused or give another spec (never the written one):
+
+- a note's label before a rule ("Careful: ...", "Note: ...", "Heads up: ...", "N.B. ...", "Please note
+  that ...") and a reminder of a prohibition ("remember not to put ...", "be sure not to touch ...");
+- the whole team addressed inside a clause or step ("Then, robots, put ..."); never one arm by name;
+- progressive narration ("nothing is being placed on F", "nobody is touching X until ...", "we are
+  putting ..."), "you are not going to VERB", the plan said as what one would do ("you'd move ...");
+- a user story's role ("As the operator, I want ..."), a need after a step word ("After that, I want X
+  back on G"), manner adverbs that every plan already meets ("carefully", "quickly"; "gently" stays
+  refused), polite tags ("if you don't mind", "when you get a chance");
+- particle verbs ("drop X off on G", "keep off X until ...") and an open checklist box ("[ ] ...").
+"""
 
 from __future__ import annotations
 
@@ -43,11 +47,16 @@ READ = [
      "nothing placed on any other region."),
     (4, "Move the three blocks to the opposite regions, and don't touch the blue block until the red block "
      "has been touched. Then I want the yellow block back on region G."),
-    (7, "Slowly place the three objects on region I one after another, red before blue, and cautiously keep "
+    (7, "Swiftly place the three objects on region I one after another, red before blue, and cautiously keep "
      "F, G and H empty during this period."),
     # the plan said as what one would do; open checklist boxes
     (2, "Ideally you would put the three blocks on H, I and J, and you would never put two blocks on one "
      "region."),
+    # reminders, polite tags, particle verbs
+    (3, "Bring the three pillars to E, F and G beside arms a and b, if that's okay, and be sure not to put "
+     "anything on any other region."),
+    (4, "When you have a minute, move the three blocks to the opposite regions and stay away from the blue "
+     "block until the red block has been touched. Then drop the yellow block back off on G."),
     (4, "[ ] take the three blocks to the opposite regions\n[ ] hands off the blue block until the red block "
      "has been touched\n[ ] after all of that, yellow back on G"),
 ]
@@ -68,6 +77,11 @@ REFUSED = [
     (1, "As the red block, I want to go to the opposite side before the blue block, and move all three "
      "blocks there."),
     (1, "Immediately move all three blocks to the opposite side, red before blue."),
+    # a way of moving that the planner does not model
+    (6, "Gently place the three objects on regions G, H and I, one per region, red before blue."),
+    # a condition is no polite tag
+    (6, "If the red block is on G, place the three objects on regions G, H and I, one per region, red before "
+     "blue."),
     # a ticked box says what is done, not what to do
     (5, "[x] swap the red and blue blocks, red placed first\n[ ] yellow block to the opposite side, at any "
      "time"),
@@ -88,6 +102,8 @@ OTHER = [
      "not going to place anything on regions F or G during this period."),
     (6, "Carefully place the three objects on regions G, H and I, one per region, and quickly place the blue "
      "one before the red one."),
+    (3, "Take the three pillars to regions E, F and G beside arms a and b, and remember not to put any "
+     "object on regions H and I."),
     (1, "You would move all three blocks to the opposite side, and you would place the blue block before the "
      "red block."),
 ]

@@ -37,11 +37,12 @@ _ROLE = (
     r"(?:user|operator|supervisor|manager|engineer|customer|client|owner|lead|technician|planner|worker|"
     r"researcher|scientist|teacher|student|admin|administrator|person|member)"
 )
-# how a step is done, never what, where, how many or when ("quickly" is no deadline: a plan is as short as
-# it can be anyway)
+# a manner that every plan already has: checked free of collisions (carefully, safely), as short as it can
+# be (quickly, efficiently), each block on its cell (precisely); a way of moving that the planner does not
+# model ("gently", "slowly", "smoothly") is left unread, and refused by name
 _MANNER = (
-    r"(?:carefully|gently|neatly|quickly|swiftly|smoothly|calmly|safely|slowly|steadily|precisely|securely|"
-    r"properly|cleanly|softly|tidily|efficiently|nicely|delicately|cautiously)"
+    r"(?:carefully|cautiously|safely|securely|quickly|swiftly|speedily|promptly|efficiently|properly|correctly|"
+    r"precisely|accurately)"
 )
 _LETTERS = r"[e-j](?:\s*(?:,|and|or)\s*[e-j])*"
 # one timing or order remark: "at any time", "whenever", "one after another", "red before blue", "red first"
@@ -113,14 +114,8 @@ _RULES: tuple[tuple[str, str], ...] = (
         "must ",
     ),
     (r"\b(?:gets|got)\s+(?=(?:to|onto|into|over\s+to|across\s+to)\s+(?:the|regions?|any|[e-j])\b)", "goes "),
-    # notes and addresses: "note that ...", "keep in mind that ..." ask for attention and say nothing;
-    # the whole team addressed between commas ("then, robots, put ...") says nothing either (one arm by
-    # name, "arm a,", says who acts, and is left to be refused)
-    (
-        r"(^|,|;|\band\b)\s*(?:(?:please|also)\s+)?(?:note|remember|keep\s+in\s+mind|bear\s+in\s+mind|be\s+aware|mind)\s+"
-        r"that\b",
-        r"\1 ",
-    ),
+    # the whole team addressed between commas ("then, robots, put ...") says nothing (one arm by name, "arm
+    # a,", says who acts, and is left to be refused)
     (rf"(?:^|,)\s*{_TEAM}\s*(?=,)", " "),
     (rf",\s*{_TEAM}\s*$", " "),
     # progressive narration: "nothing is being placed on F" (is placed), "no region is getting two blocks"
@@ -133,7 +128,7 @@ _RULES: tuple[tuple[str, str], ...] = (
     # a need after a step word ("After that, I want the yellow block back on G"): the need is the step's
     # goal, so the step word reads it as it reads a verb ("I want you to ..." is left to the word tables)
     (rf"((?:^|,|;)\s*(?:{THEN}|{AFTER_ALL})\s*,?\s*)(?:i|we)\s+(?=(?:want|need)\b(?!\s+you\b))", r"\1"),
-    # a manner adverb says how, never what, where, how many or when
+    # a manner adverb that every plan already meets
     (rf"\b{_MANNER}\b", " "),
     *(
         (rf"\bis\s+{gerund}\b", third_person)

@@ -51,6 +51,11 @@ _CONTRACTIONS = (
     (r"\b(?:kinda|sorta)\b", " "),
 )
 _HESITATION = rf"(?:{HESITATION}|ah+)"
+_POLITE_TAG = (
+    r"(?:if\s+you\s+(?:do\s+not|would\s+not)\s+mind|if\s+(?:that|it|this)\s+(?:is|s|would\s+be)\s+"
+    r"(?:okay|ok|alright|all\s+right|fine)|if\s+you\s+would(?:\s+be\s+so\s+kind)?|if\s+you\s+please|"
+    r"when\s+you\s+(?:get|have|find)\s+(?:a|the)\s+(?:chance|moment|minute|second)|when\s+you\s+have\s+time)"
+)
 _INTERJECTION = r"(?:okay|ok|alright|all\s+right|right|so|well|now|oh|hi|hey|hello|listen|look|yeah|yep|yup)"
 _MARKER = r"(?:i\s+mean|i\s+meant|sorry|or\s+rather|no\s+wait|wait(?=\s*,)|~)"
 # words that a restated phrase may add or leave out without saying something else
@@ -98,6 +103,9 @@ _FILLERS: tuple[tuple[str, str], ...] = (
     (r",\s*(?:i|we)\s+(?:guess|think|suppose|reckon)\s*$", " "),
     (r"^\s*if\s+(?:possible|you\s+can|you\s+could)\s*,", " "),
     (r"\s*,?\s*\bif\s+(?:possible|you\s+can)\s*$", " "),
+    # a polite tag that opens or closes a clause: "if you don't mind", "if that's okay", "if you would (be
+    # so kind)", "when you get a chance" (no time of any goal: the plan is as short as it can be anyway)
+    (rf"(^|,)\s*{_POLITE_TAG}\s*(?=,|$)", r"\1 "),
     (r"\bit\s+would\s+be\s+(?:best|great|good|nice|ideal)\s+if\s+you\s+(?:could|would|can)\b", "please"),
     (r"^\s*(?:i|we)\s+would\s+(?:probably\s+|maybe\s+)?have\s+you\s+", "please "),
     (
@@ -194,6 +202,10 @@ _NARRATION: tuple[tuple[str, str], ...] = (
     (r"\b([a-z]+)\s+s\s+(?=(?:touched|picked|grabbed|handled|lifted|done|finished)\b)", r"\1 has "),
     (
         r"\b(?:keep\s+(?:your|the|their)\s+)?hands\s+off\s+(?=(?:the\s+)?(?:red|blue|yellow)\b)",
+        "do not touch ",
+    ),
+    (
+        r"\b(?:keep|stay)\s+(?:off|away\s+from|clear\s+of)\s+(?=(?:the\s+)?(?:red|blue|yellow)\b)",
         "do not touch ",
     ),
     (r"\b(?:you\s+)?(?:cannot|can\s+not|do\s+not|no)\s+doubl(?:e|ing)\s+up\b", "one block per region"),

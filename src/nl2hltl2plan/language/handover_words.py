@@ -439,9 +439,11 @@ REWRITES: tuple[tuple[str, str], ...] = (
     # a heading that gives the time of what follows: "Any time: red and blue blocks to any empty region"
     (r"^\s*(?:at\s+)?any\s+time\s*:", "at any time ,"),
     (r"\b(finally|lastly|then|next|afterwards|first)\s*:", r"\1 ,"),  # "Finally: yellow -> G"
+    # a reminder of a prohibition is the prohibition: "remember not to put ...", "be sure not to touch ..."
+    (r"\b(?:remember|be\s+(?:sure|careful|certain)|make\s+sure|take\s+care)\s+not\s+to\b", "do not"),
     (
-        r"\b(?:(?:remember|be\s+(?:sure|careful)|make\s+sure|do\s+not\s+forget|note|keep\s+in\s+mind)\s+(?:to|that)|"
-        r"(?:verify|check|confirm)\s+that)\b",
+        r"\b(?:(?:remember|be\s+(?:sure|careful)|make\s+sure|do\s+not\s+forget|note|(?:keep|bear)\s+in\s+mind|be\s+aware)\s+"
+        r"(?:to|that)|(?:verify|check|confirm)\s+that)\b",
         " ",
     ),
     (r"\bprecedes?\b", "comes before"),
