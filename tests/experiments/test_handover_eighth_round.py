@@ -9,7 +9,9 @@ the written spec and near misses that must be refused or give another spec (neve
 - a user story's role ("As the operator, I want ..."), a need after a step word ("After that, I want X
   back on G"), manner adverbs that every plan already meets ("carefully", "quickly"; "gently" stays
   refused), polite tags ("if you don't mind", "when you get a chance");
-- particle verbs ("drop X off on G", "keep off X until ...") and an open checklist box ("[ ] ...").
+- particle verbs ("drop X off on G", "keep off X until ...") and an open checklist box ("[ ] ...");
+- a clause added with "plus", "on top of that", "as well as keeping"; what is said "before you start" or
+  "first things first" comes first; a sentence that only cheers ("Great!", "Here we go!") is dropped.
 """
 
 from __future__ import annotations
@@ -52,6 +54,11 @@ READ = [
     # the plan said as what one would do; open checklist boxes
     (2, "Ideally you would put the three blocks on H, I and J, and you would never put two blocks on one "
      "region."),
+    # "plus", "on top of that"; "before you start"; cheers
+    (7, "Cool, here we go! Put the three objects on region I one after another, red before blue. On top of "
+     "that, nothing may be placed on F, G or H during this period."),
+    (5, "Before you begin, know that red must be placed before blue. Exchange the red and blue blocks, plus "
+     "take the yellow block to the opposite side at any time."),
     # reminders, polite tags, particle verbs
     (3, "Bring the three pillars to E, F and G beside arms a and b, if that's okay, and be sure not to put "
      "anything on any other region."),
@@ -79,6 +86,8 @@ REFUSED = [
     (1, "Immediately move all three blocks to the opposite side, red before blue."),
     # a way of moving that the planner does not model
     (6, "Gently place the three objects on regions G, H and I, one per region, red before blue."),
+    # "on top of that" as a place
+    (8, "Put the red block on top of that, and move the yellow block to region I and then to region G."),
     # a condition is no polite tag
     (6, "If the red block is on G, place the three objects on regions G, H and I, one per region, red before "
      "blue."),
@@ -102,6 +111,12 @@ OTHER = [
      "not going to place anything on regions F or G during this period."),
     (6, "Carefully place the three objects on regions G, H and I, one per region, and quickly place the blue "
      "one before the red one."),
+    # what is done before the work starts is a first step
+    (4, "Before you start, move the red block to region G. Move the three blocks to the opposite regions, "
+     "and don't touch the blue block until the red block has been touched. After all of that, put the "
+     "yellow block back on region G."),
+    (1, "Move all three blocks to the opposite side, plus the blue block has to be placed before the red "
+     "block."),
     (3, "Take the three pillars to regions E, F and G beside arms a and b, and remember not to put any "
      "object on regions H and I."),
     (1, "You would move all three blocks to the opposite side, and you would place the blue block before the "

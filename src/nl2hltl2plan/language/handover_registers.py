@@ -25,7 +25,7 @@ from __future__ import annotations
 
 import re
 
-from nl2hltl2plan.language.handover_words import AFTER_ALL, SWAP, THEN
+from nl2hltl2plan.language.handover_words import AFTER_ALL, GERUND_VERBS, NEGATED_GERUNDS, SWAP, THEN, VERB
 
 _BLOCK = r"(?:the\s+)?(?:red|blue|yellow)(?:\s+(?:block|one|cube))?"
 # the whole team, addressed: never one arm by name
@@ -44,6 +44,7 @@ _MANNER = (
     r"(?:carefully|cautiously|safely|securely|quickly|swiftly|speedily|promptly|efficiently|properly|correctly|"
     r"precisely|accurately)"
 )
+_VERBS = rf"(?:{VERB}|swap|exchange|keep|leave|put|place)\b"
 _LETTERS = r"[e-j](?:\s*(?:,|and|or)\s*[e-j])*"
 # one timing or order remark: "at any time", "whenever", "one after another", "red before blue", "red first"
 _REMARK = (
@@ -128,6 +129,23 @@ _RULES: tuple[tuple[str, str], ...] = (
     # a need after a step word ("After that, I want the yellow block back on G"): the need is the step's
     # goal, so the step word reads it as it reads a verb ("I want you to ..." is left to the word tables)
     (rf"((?:^|,|;)\s*(?:{THEN}|{AFTER_ALL})\s*,?\s*)(?:i|we)\s+(?=(?:want|need)\b(?!\s+you\b))", r"\1"),
+    # a clause added with "plus", "on top of that", "as well as" (before a verb): "and"
+    (
+        rf"(?:,\s*|^\s*)plus\s*,?\s*(?=(?:the|do|never|no|nothing|red|blue|yellow|only|each|one)\b|{_VERBS})",
+        ", and ",
+    ),
+    (r"(^|,|\band\b)\s*on\s+top\s+of\s+(?:that|this|all\s+that)\s*,", r"\1 "),
+    *(
+        (rf",\s*as\s+well\s+as\s+{gerund}\b", f", and {verb}")
+        for gerund, verb in (GERUND_VERBS | NEGATED_GERUNDS | {"keeping": "keep", "leaving": "leave"}).items()
+    ),
+    # what comes before the work comes first: "Before you start(,|:) ..." / "First things first: ..." (a rule
+    # said there is a rule of the whole instruction; "before you start, know that ..." introduces one)
+    (
+        r"^\s*(?:before\s+(?:you|we)\s+(?:start|begin)(?:\s+(?:the\s+)?(?:job|task|work))?|first\s+things\s+first)"
+        r"\s*[:,]?",
+        "first ,",
+    ),
     # a manner adverb that every plan already meets
     (rf"\b{_MANNER}\b", " "),
     *(

@@ -442,7 +442,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
     # a reminder of a prohibition is the prohibition: "remember not to put ...", "be sure not to touch ..."
     (r"\b(?:remember|be\s+(?:sure|careful|certain)|make\s+sure|take\s+care)\s+not\s+to\b", "do not"),
     (
-        r"\b(?:(?:remember|be\s+(?:sure|careful)|make\s+sure|do\s+not\s+forget|note|(?:keep|bear)\s+in\s+mind|be\s+aware)\s+"
+        r"\b(?:(?:remember|be\s+(?:sure|careful)|make\s+sure|do\s+not\s+forget|note|(?:keep|bear)\s+in\s+mind|be\s+aware|know)\s+"
         r"(?:to|that)|(?:verify|check|confirm)\s+that)\b",
         " ",
     ),
