@@ -11,7 +11,8 @@ the written spec and near misses that must be refused or give another spec (neve
   refused), polite tags ("if you don't mind", "when you get a chance");
 - particle verbs ("drop X off on G", "keep off X until ...") and an open checklist box ("[ ] ...");
 - a clause added with "plus", "on top of that", "as well as keeping"; what is said "before you start" or
-  "first things first" comes first; a sentence that only cheers ("Great!", "Here we go!") is dropped.
+  "first things first" comes first; a sentence that only cheers ("Great!", "Here we go!") is dropped;
+- office English ("kindly", "do the needful", "itself") and a requirement's identifier ("R1:", "REQ-2:").
 """
 
 from __future__ import annotations
@@ -59,6 +60,10 @@ READ = [
      "that, nothing may be placed on F, G or H during this period."),
     (5, "Before you begin, know that red must be placed before blue. Exchange the red and blue blocks, plus "
      "take the yellow block to the opposite side at any time."),
+    # office English; requirement identifiers
+    (4, "Kindly move the three blocks to the opposite regions and do the needful so that blue is not touched "
+     "until red has been touched. Once all that is done, kindly return yellow to G itself."),
+    (2, "REQ-1: the three blocks go onto H, I and J. REQ-2: each region holds one block only."),
     # reminders, polite tags, particle verbs
     (3, "Bring the three pillars to E, F and G beside arms a and b, if that's okay, and be sure not to put "
      "anything on any other region."),
@@ -88,6 +93,8 @@ REFUSED = [
     (6, "Gently place the three objects on regions G, H and I, one per region, red before blue."),
     # "on top of that" as a place
     (8, "Put the red block on top of that, and move the yellow block to region I and then to region G."),
+    # "do the needful" alone asks for nothing
+    (6, "Kindly do the needful."),
     # a condition is no polite tag
     (6, "If the red block is on G, place the three objects on regions G, H and I, one per region, red before "
      "blue."),
@@ -115,6 +122,8 @@ OTHER = [
     (4, "Before you start, move the red block to region G. Move the three blocks to the opposite regions, "
      "and don't touch the blue block until the red block has been touched. After all of that, put the "
      "yellow block back on region G."),
+    (6, "R1: the three objects are placed on regions G, H and I, one per region. R2: blue is placed before "
+     "red."),
     (1, "Move all three blocks to the opposite side, plus the blue block has to be placed before the red "
      "block."),
     (3, "Take the three pillars to regions E, F and G beside arms a and b, and remember not to put any "

@@ -146,6 +146,14 @@ _RULES: tuple[tuple[str, str], ...] = (
         r"\s*[:,]?",
         "first ,",
     ),
+    # office English: "kindly" is "please" (dropped wherever it stands, so a step word still reaches its verb:
+    # "after all that is done, kindly put ..."), "do the needful" asks for what the rest says, and "itself" /
+    # "themselves" after a noun only stresses it
+    (r"\bkindly\b", "please"),
+    (r"(?:\band\s+)?\bdo\s+the\s+needful\b(?:\s+and\b)?", " "),
+    (r"(?<=[a-z])\s+(?:itself|themselves)\b", " "),
+    # a requirement's identifier before it ("R1:", "REQ-2:"): requirements are listed, not ordered
+    (r"^\s*(?:r|rq|req|requirement|item)\s*-?\s*\d+\s*:", " "),
     # a manner adverb that every plan already meets
     (rf"\b{_MANNER}\b", " "),
     *(
