@@ -12,7 +12,10 @@ the written spec and near misses that must be refused or give another spec (neve
 - particle verbs ("drop X off on G", "keep off X until ...") and an open checklist box ("[ ] ...");
 - a clause added with "plus", "on top of that", "as well as keeping"; what is said "before you start" or
   "first things first" comes first; a sentence that only cheers ("Great!", "Here we go!") is dropped;
-- office English ("kindly", "do the needful", "itself") and a requirement's identifier ("R1:", "REQ-2:").
+- office English ("kindly", "do the needful", "itself") and a requirement's identifier ("R1:", "REQ-2:");
+- "let X VERB" ("let nothing be placed on F", "don't let anyone touch X until ..."), a group in other words
+  ("the whole lot of blocks", "every single block", "the trio of objects"), a range of region letters
+  ("regions H through J") and "slot" for a region.
 """
 
 from __future__ import annotations
@@ -64,6 +67,11 @@ READ = [
     (4, "Kindly move the three blocks to the opposite regions and do the needful so that blue is not touched "
      "until red has been touched. Once all that is done, kindly return yellow to G itself."),
     (2, "REQ-1: the three blocks go onto H, I and J. REQ-2: each region holds one block only."),
+    # "let"; a group in other words; a range of regions; "slot"
+    (7, "Let the trio of objects go on region I one after another, red before blue, and let nothing be "
+     "placed on regions F through H during this period."),
+    (4, "Move the whole lot of blocks to the opposite regions, but don't let anybody touch the blue block "
+     "until the red block has been touched. After all of that, return the yellow block to slot G."),
     # reminders, polite tags, particle verbs
     (3, "Bring the three pillars to E, F and G beside arms a and b, if that's okay, and be sure not to put "
      "anything on any other region."),
@@ -95,6 +103,9 @@ REFUSED = [
     (8, "Put the red block on top of that, and move the yellow block to region I and then to region G."),
     # "do the needful" alone asks for nothing
     (6, "Kindly do the needful."),
+    # a range the wrong way round, or past the world's regions
+    (2, "Put the three blocks on regions J through H, one block per region."),
+    (2, "Put the three blocks on regions H to K, one block per region."),
     # a condition is no polite tag
     (6, "If the red block is on G, place the three objects on regions G, H and I, one per region, red before "
      "blue."),
@@ -124,6 +135,9 @@ OTHER = [
      "yellow block back on region G."),
     (6, "R1: the three objects are placed on regions G, H and I, one per region. R2: blue is placed before "
      "red."),
+    (1, "Move all three blocks to the opposite side, and let the blue block go down before the red block."),
+    (7, "Place the three objects on region I one after another, red before blue, and put nothing on "
+     "regions F to G during this period."),
     (1, "Move all three blocks to the opposite side, plus the blue block has to be placed before the red "
      "block."),
     (3, "Take the three pillars to regions E, F and G beside arms a and b, and remember not to put any "

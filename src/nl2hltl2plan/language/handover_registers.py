@@ -24,6 +24,7 @@ the word tables' `REWRITES`). Each rewrite changes no meaning:
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 
 from nl2hltl2plan.language.handover_words import AFTER_ALL, GERUND_VERBS, NEGATED_GERUNDS, SWAP, THEN, VERB
 
@@ -45,6 +46,12 @@ _MANNER = (
     r"precisely|accurately)"
 )
 _VERBS = rf"(?:{VERB}|swap|exchange|keep|leave|put|place)\b"
+# what "let" commands: a block, a group, a region or nothing, then the verb it does in its base form
+_SUBJECT_NP = (
+    r"(?:the|no|nothing|none|red|blue|yellow|all|each|every|both)\b(?:\s+(?!(?:go|be|hold|come|stay|remain|land|"
+    r"end|sit|get)\b)[a-z]+){0,5}?"
+)
+_BARE_VERB = r"(?:go|be|hold|come|stay|remain|land|end\s+up|sit|get)"
 _LETTERS = r"[e-j](?:\s*(?:,|and|or)\s*[e-j])*"
 # one timing or order remark: "at any time", "whenever", "one after another", "red before blue", "red first"
 _REMARK = (
@@ -53,7 +60,16 @@ _REMARK = (
     rf"{_BLOCK}\s+(?:(?:goes|placed|put|comes)\s+)?(?:before|after)\s+{_BLOCK}|{_BLOCK}\s+(?:(?:goes|placed|put)\s+)?first)"
 )
 
-_RULES: tuple[tuple[str, str], ...] = (
+def _letters_between(match: re.Match[str]) -> str:
+    """'regions h through j' -> 'regions h , i and j' (a range the wrong way round is left as written)."""
+    first, last = match[1], match[2]
+    if first >= last:
+        return match[0]
+    letters = [chr(c) for c in range(ord(first), ord(last) + 1)]
+    return "regions " + " , ".join(letters[:-1]) + " and " + letters[-1]
+
+
+_RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     # academic: the goal as a noun
     (r"^\s*the\s+(?:objective|aim|purpose|goal)\s+is\s+(?:that\b|the\s+(?=\w+\s+of\b))", " "),
     (r"\b(?:the\s+)?transfer\s+of\s+(?=(?:the|all|both|each|every)\b)", "transfer "),
@@ -154,6 +170,25 @@ _RULES: tuple[tuple[str, str], ...] = (
     (r"(?<=[a-z])\s+(?:itself|themselves)\b", " "),
     # a requirement's identifier before it ("R1:", "REQ-2:"): requirements are listed, not ordered
     (r"^\s*(?:r|rq|req|requirement|item)\s*-?\s*\d+\s*:", " "),
+    # "let X VERB" commands X's verb: "let the red block go down before blue" (must go down), "let nothing be
+    # placed on F" (nothing must be placed); "don't let anyone touch X" (do not touch X); "letting red go
+    # down first" (red going down first)
+    (
+        r"\b(?:do\s+not|never)\s+let\s+(?:anyone|anybody|any\s+(?:robot\s+)?arm|the\s+(?:robot\s+)?arms)\s+(?=touch\b)",
+        "do not ",
+    ),
+    (rf"\blet\s+({_SUBJECT_NP})\s+(?={_BARE_VERB}\b)", r"\1 must "),
+    (rf"\bletting\s+({_SUBJECT_NP})\s+go\b", r"\1 going"),
+    # a group said in other words: "the whole lot of blocks" (all the blocks), "every single block", "each
+    # one of the pillars", "the trio of objects" (the three objects)
+    (r"\bthe\s+whole\s+lot\s+of\s+(?=(?:the\s+)?(?:blocks|objects|pillars|items|cubes)\b)", "all the "),
+    (r"\b(every|each)\s+single\s+", r"\1 "),
+    (r"\beach\s+one\s+of\s+(?=the\b)", "each of "),
+    (r"\bthe\s+(?:trio|threesome)\s+of\s+", "the three "),
+    # a range of region letters ("regions H through J", "regions E to G"): each letter from the first to the
+    # last (a letter the world lacks is refused later, by name); "slot" is a region
+    (r"\bregions\s+([e-j])\s+(?:through|thru|to)\s+([e-j])\b", _letters_between),
+    (r"\bslot(s?)\b", r"region\1"),
     # a manner adverb that every plan already meets
     (rf"\b{_MANNER}\b", " "),
     *(
