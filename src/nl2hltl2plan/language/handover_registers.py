@@ -18,7 +18,17 @@ the word tables' `REWRITES`). Each rewrite changes no meaning:
   the same words after a comma do; "in that order" after a clause that already orders its steps with
   "then" repeats that order and is dropped (without "then" it stays unread: which order?);
 - modal "is to" before a verb of holding ("each region is to hold only one block": must hold), and "X
-  gets to P" (goes to P) where a place follows.
+  gets to P" (goes to P) where a place follows;
+- addresses and frames: the whole team addressed between commas ("then, robots, put ..."; one arm by name
+  is left unread), a user story's role ("As the operator, ..."), a requirement's identifier ("R1:"),
+  office English ("kindly", "do the needful", an emphatic "itself");
+- progressive narration ("nothing is being placed", "no region is getting two blocks"), a need after a
+  step word ("after that, I want X back on G"), "let X VERB" (X must VERB; "don't let anyone touch X");
+- connectives: "plus", "on top of that", "as well as keeping" (and); "before you start" and "first
+  things first" (first);
+- manner adverbs that every plan already meets ("carefully", "quickly"; "gently" is left unread), a group
+  said in other words ("the whole lot of blocks", "every single block", "the trio of objects"), a range
+  of region letters ("regions H through J") and "slot" for a region.
 """
 
 from __future__ import annotations
