@@ -15,7 +15,10 @@ the written spec and near misses that must be refused or give another spec (neve
 - office English ("kindly", "do the needful", "itself") and a requirement's identifier ("R1:", "REQ-2:");
 - "let X VERB" ("let nothing be placed on F", "don't let anyone touch X until ..."), a group in other words
   ("the whole lot of blocks", "every single block", "the trio of objects"), a range of region letters
-  ("regions H through J") and "slot" for a region.
+  ("regions H through J") and "slot" for a region;
+- "first off" / "to start with" (the step comes first), "bear in mind" without "that", "at no point"
+  (never; "at no point may a region hold ..."), "no restrictions on when" (at any time). A negated order
+  ("under no circumstances place blue before red") stays refused.
 """
 
 from __future__ import annotations
@@ -72,6 +75,11 @@ READ = [
      "placed on regions F through H during this period."),
     (4, "Move the whole lot of blocks to the opposite regions, but don't let anybody touch the blue block "
      "until the red block has been touched. After all of that, return the yellow block to slot G."),
+    # discourse ordinals; "bear in mind"; "at no point"; "no restrictions on when"
+    (3, "First off, take the three pillars to regions E, F and G beside arms a and b. Bear in mind, at no "
+     "point put anything on any other region."),
+    (8, "To start with, put the yellow block on region I, then on region G, and move the red and blue blocks "
+     "to any empty region - no restrictions on when."),
     # reminders, polite tags, particle verbs
     (3, "Bring the three pillars to E, F and G beside arms a and b, if that's okay, and be sure not to put "
      "anything on any other region."),
@@ -106,6 +114,9 @@ REFUSED = [
     # a range the wrong way round, or past the world's regions
     (2, "Put the three blocks on regions J through H, one block per region."),
     (2, "Put the three blocks on regions H to K, one block per region."),
+    # a negated order
+    (6, "Place the three objects on regions G, H and I, one per region, and under no circumstances place "
+     "the blue one before the red one."),
     # a condition is no polite tag
     (6, "If the red block is on G, place the three objects on regions G, H and I, one per region, red before "
      "blue."),
@@ -138,6 +149,8 @@ OTHER = [
     (1, "Move all three blocks to the opposite side, and let the blue block go down before the red block."),
     (7, "Place the three objects on region I one after another, red before blue, and put nothing on "
      "regions F to G during this period."),
+    (5, "First off, move the yellow block to the opposite side. Then swap the red and blue blocks, red "
+     "placed first."),
     (1, "Move all three blocks to the opposite side, plus the blue block has to be placed before the red "
      "block."),
     (3, "Take the three pillars to regions E, F and G beside arms a and b, and remember not to put any "

@@ -199,6 +199,8 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     # last (a letter the world lacks is refused later, by name); "slot" is a region
     (r"\bregions\s+([e-j])\s+(?:through|thru|to)\s+([e-j])\b", _letters_between),
     (r"\bslot(s?)\b", r"region\1"),
+    # the first thing said: "first off", "to start (with)" (as "to begin with": the step comes first)
+    (r"(^|,)\s*(?:first\s+off|to\s+start(?:\s+with)?|to\s+start\s+off)\s*(?=,)", r"\1 to begin with "),
     # a manner adverb that every plan already meets
     (rf"\b{_MANNER}\b", " "),
     *(
