@@ -273,7 +273,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
         r"\s*,\s*(?:the\s+)?(?:when|time|timing)\s+(?:is\s+)?(?:not\s+important|free|does\s+not\s+matter)\s*(?=,|$)",
         " at any time",
     ),
-    # "..., no restrictions on when": the timing is free (after a goal that already says so, said twice)
+    # "..., no restrictions on when": the timing is free (read once where "at any time" comes just before it)
     (
         r"(\bat\s+any\s+time\s*)?,\s*(?:with\s+)?no\s+(?:restrictions?|constraints?|limits?)\s+on\s+"
         r"(?:when|the\s+timing|timing|the\s+time)\s*(?=,|$)",
