@@ -4,9 +4,11 @@ greeting before the command ("Dear team,", "Hi robots!", "Good morning everyone.
 the command ("Procedure:", "Operator instructions:", "Here's the job:", "Here's what needs doing:").
 They address, thank and announce, and carry no block, place, count, order or time. A greeting or
 sign-off is dropped only at the instruction's edges: a greeting before the first command, a sign-off
-after the last one (with the writer's name after it). A greeting that names one arm ("Hi arm a,") says
-who is to act and is left to be refused; so is a "thanks" in the middle of the instruction that the
-word tables do not read, and a signature that is a word the reader knows ("Thanks, Red"). Two labels
+after the last one (with the writer's name after it). A sentence that only cheers or starts the work
+("Great!", "Okay, awesome!", "Here we go!") is dropped wherever it stands. A greeting that names one
+arm ("Hi arm a,") says who is to act and is left to be refused; so is a "thanks" in the middle of the
+instruction that the word tables do not read, and a signature that is a word the reader knows ("Thanks,
+Red"). Two labels
 say something and are rewritten rather than dropped: "Here's what I want:" (a need: "I want ...") and
 "Scope:" / "You will need:" (the blocks the instruction is about, read as the scene statement "we have
 ...", which must name every block of the scene).
@@ -47,6 +49,13 @@ _CLOSING = re.compile(rf"^\s*(?i:{_THANKS}|{_REGARDS})(?:\s*[,\-–—]?\s*(?P<n
 _NAME = re.compile(r"^\s*[A-Z][a-z]+\s*$")
 # a thanks that ends the last sentence: "..., cheers"
 _TRAILING_THANKS = re.compile(rf"(?i)\s*,\s*{_THANKS}\s*[.!]*\s*$")
+# a sentence that only cheers or starts the work ("Great!", "Okay, awesome!", "Alright, here we go!")
+_CHEER = (
+    r"(?:great|awesome|cool|sweet|perfect|nice|excellent|wonderful|fantastic|brilliant|super|lovely|good|"
+    r"okay|ok|alright|all\s+right|right|yay|woo+hoo+|"
+    r"let\s*(?:'\s*)?s\s+(?:go|do\s+(?:this|it)|get\s+(?:started|going)|begin|start)|here\s+we\s+go)"
+)
+_EXCLAMATION = re.compile(rf"(?i)^\s*(?:{_CHEER}\s*[,!.]*\s*)+$")
 # a name that the reader would read as something (a colour, a region or arm letter)
 _KNOWN = re.compile(r"(?i)^(?:red|blue|yellow|[a-j]|one|two|three|both|all|first|then|last)$")
 
@@ -79,7 +88,7 @@ def unframed(sentences: list[str]) -> list[str]:
             break
     if out:
         out[-1] = _TRAILING_THANKS.sub("", out[-1])
-    return [s for s in out if s.strip()]
+    return [s for s in out if s.strip() and not _EXCLAMATION.match(s)]
 
 
 # labels and presentative headings of the lower-cased sentence ("here's" is "here s" by then), applied by

@@ -149,9 +149,11 @@ def mark(sentence: str, scene: Scene, before: Marked | None = None) -> Marked:
 
 def _join_particles(m: Marked) -> None:
     """A particle verb reads as the verb: 'put down the red block', 'put the red block (back) down (on G)'
-    as 'put the red block (back) (on G)', 'pick the blue block up' as 'pick up the blue block'."""
+    as 'put the red block (back) (on G)', 'drop the red block off on G' as 'drop the red block on G', 'pick
+    the blue block up' as 'pick up the blue block'."""
     m.sub(rf"\b({VERB}|{GERUND})\s+down\b", r"\1")
     m.sub(r"\b(set|lay|laid|spread)\s+(B\d+)\s+out\b", r"\1 \2")  # "set the objects out on G, H and I"
+    m.sub(r"\b(drop|drops|dropping|dropped)\s+(?:off\s+(B\d+)|(B\d+)\s+(back\s+)?off)\b", r"\1 \2\3 \4")
     m.sub(rf"\b({VERB}|{GERUND})\s+(B\d+)\s+(back\s+)?down\b", r"\1 \2 \3")
     m.sub(r"\b(B\d+)\s+down\s+(?=(?:on|onto|in|into|at)\s)", r"\1 ")  # "..., the blue block down on H"
     m.sub(r"\b(pick|picks|picking|picked)\s+(B\d+)\s+up\b", r"\1 up \2")

@@ -153,7 +153,10 @@ def _sentences(instruction: str) -> list[str]:
     for line in instruction.splitlines():
         text = re.sub(r"(^\s*|[.;!?:]\s+)(\d)\.\s", r"\1\2) ", line)
         text = re.sub(r"\b[iI]\.\s?[eE]\.", "that is", text)
+        text = re.sub(r"\b[nN]\.\s?[bB]\.?\s*:?", "NB:", text)  # "N.B. red goes first": a note's label
         text = re.sub(r"\b(opp|approx|resp)\.(?=\s)", r"\1", text, flags=re.IGNORECASE)  # "opp. side"
+        # an open checklist box is a bullet (a ticked one says what is done, and is left unread)
+        text = re.sub(r"^\s*(?:\[\s*\]|☐)\s*", "- ", text)
         out += [re.sub(r"^\s*[-*•·]\s+", "", s) for s in re.split(r"[.;!?]+(?:\s|$)", text)]
     return [s for s in out if s.strip()]
 

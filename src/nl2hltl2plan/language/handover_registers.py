@@ -18,16 +18,50 @@ the word tables' `REWRITES`). Each rewrite changes no meaning:
   the same words after a comma do; "in that order" after a clause that already orders its steps with
   "then" repeats that order and is dropped (without "then" it stays unread: which order?);
 - modal "is to" before a verb of holding ("each region is to hold only one block": must hold), and "X
-  gets to P" (goes to P) where a place follows.
+  gets to P" (goes to P) where a place follows;
+- addresses and frames: the whole team addressed between commas ("then, robots, put ..."; one arm by name
+  is left unread), a user story's role ("As the operator, ..."), a requirement's identifier ("R1:"),
+  office English ("kindly", "do the needful", an emphatic "itself");
+- progressive narration ("nothing is being placed", "no region is getting two blocks"), a need after a
+  step word ("after that, I want X back on G"), "let X VERB" (X must VERB; "don't let anyone touch X");
+- connectives: "plus", "on top of that", "as well as keeping" (and); "before you start" and "first
+  things first" (first);
+- manner adverbs that every plan already meets ("carefully", "quickly"; "gently" is left unread), a group
+  said in other words ("the whole lot of blocks", "every single block", "the trio of objects"), a range
+  of region letters ("regions H through J") and "slot" for a region.
 """
 
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 
-from nl2hltl2plan.language.handover_words import SWAP
+from nl2hltl2plan.language.handover_words import AFTER_ALL, GERUND_VERBS, NEGATED_GERUNDS, SWAP, THEN, VERB
 
 _BLOCK = r"(?:the\s+)?(?:red|blue|yellow)(?:\s+(?:block|one|cube))?"
+# the whole team, addressed: never one arm by name
+_TEAM = (
+    r"(?:(?:the\s+)?(?:robots|robot\s+arms|arms)|team|everyone|everybody|folks|guys|crew|you\s+(?:two|all|guys))"
+)
+# who asks, in a user story ("As the cell operator, ...")
+_ROLE = (
+    r"(?:user|operator|supervisor|manager|engineer|customer|client|owner|lead|technician|planner|worker|"
+    r"researcher|scientist|teacher|student|admin|administrator|person|member)"
+)
+# a manner that every plan already has: checked free of collisions (carefully, safely), as short as it can
+# be (quickly, efficiently), each block on its cell (precisely); a way of moving that the planner does not
+# model ("gently", "slowly", "smoothly") is left unread, and refused by name
+_MANNER = (
+    r"(?:carefully|cautiously|safely|securely|quickly|swiftly|speedily|promptly|efficiently|properly|correctly|"
+    r"precisely|accurately)"
+)
+_VERBS = rf"(?:{VERB}|swap|exchange|keep|leave|put|place)\b"
+# what "let" commands: a block, a group, a region or nothing, then the verb it does in its base form
+_SUBJECT_NP = (
+    r"(?:the|no|nothing|none|red|blue|yellow|all|each|every|both)\b(?:\s+(?!(?:go|be|hold|come|stay|remain|land|"
+    r"end|sit|get)\b)[a-z]+){0,5}?"
+)
+_BARE_VERB = r"(?:go|be|hold|come|stay|remain|land|end\s+up|sit|get)"
 _LETTERS = r"[e-j](?:\s*(?:,|and|or)\s*[e-j])*"
 # one timing or order remark: "at any time", "whenever", "one after another", "red before blue", "red first"
 _REMARK = (
@@ -36,7 +70,16 @@ _REMARK = (
     rf"{_BLOCK}\s+(?:(?:goes|placed|put|comes)\s+)?(?:before|after)\s+{_BLOCK}|{_BLOCK}\s+(?:(?:goes|placed|put)\s+)?first)"
 )
 
-_RULES: tuple[tuple[str, str], ...] = (
+def _letters_between(match: re.Match[str]) -> str:
+    """'regions h through j' -> 'regions h , i and j' (a range the wrong way round is left as written)."""
+    first, last = match[1], match[2]
+    if first >= last:
+        return match[0]
+    letters = [chr(c) for c in range(ord(first), ord(last) + 1)]
+    return "regions " + " , ".join(letters[:-1]) + " and " + letters[-1]
+
+
+_RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     # academic: the goal as a noun
     (r"^\s*the\s+(?:objective|aim|purpose|goal)\s+is\s+(?:that\b|the\s+(?=\w+\s+of\b))", " "),
     (r"\b(?:the\s+)?transfer\s+of\s+(?=(?:the|all|both|each|every)\b)", "transfer "),
@@ -98,6 +141,72 @@ _RULES: tuple[tuple[str, str], ...] = (
         "must ",
     ),
     (r"\b(?:gets|got)\s+(?=(?:to|onto|into|over\s+to|across\s+to)\s+(?:the|regions?|any|[e-j])\b)", "goes "),
+    # the whole team addressed between commas ("then, robots, put ...") says nothing (one arm by name, "arm
+    # a,", says who acts, and is left to be refused)
+    (rf"(?:^|,)\s*{_TEAM}\s*(?=,)", " "),
+    (rf",\s*{_TEAM}\s*$", " "),
+    # progressive narration: "nothing is being placed on F" (is placed), "no region is getting two blocks"
+    (
+        r"\b(is|are)\s+being\s+(?=(?:placed|put|set|dropped|moved|touched|handled|grabbed|picked\s+up)\b)",
+        r"\1 ",
+    ),
+    # a user story's role ("As the operator, I want ...") says who asks, never what is asked
+    (rf"^\s*as\s+(?:an?|the)\s+(?:[a-z]+\s+){{0,2}}?{_ROLE}\s*,", " "),
+    # a need after a step word ("After that, I want the yellow block back on G"): the need is the step's
+    # goal, so the step word reads it as it reads a verb ("I want you to ..." is left to the word tables)
+    (rf"((?:^|,|;)\s*(?:{THEN}|{AFTER_ALL})\s*,?\s*)(?:i|we)\s+(?=(?:want|need)\b(?!\s+you\b))", r"\1"),
+    # a clause added with "plus", "on top of that", "as well as" (before a verb): "and"
+    (
+        rf"(?:,\s*|^\s*)plus\s*,?\s*(?=(?:the|do|never|no|nothing|red|blue|yellow|only|each|one)\b|{_VERBS})",
+        ", and ",
+    ),
+    (r"(^|,|\band\b)\s*on\s+top\s+of\s+(?:that|this|all\s+that)\s*,", r"\1 "),
+    *(
+        (rf",\s*as\s+well\s+as\s+{gerund}\b", f", and {verb}")
+        for gerund, verb in (GERUND_VERBS | NEGATED_GERUNDS | {"keeping": "keep", "leaving": "leave"}).items()
+    ),
+    # what comes before the work comes first: "Before you start(,|:) ..." / "First things first: ..." (a rule
+    # said there is a rule of the whole instruction; "before you start, know that ..." introduces one)
+    (
+        r"^\s*(?:before\s+(?:you|we)\s+(?:start|begin)(?:\s+(?:the\s+)?(?:job|task|work))?|first\s+things\s+first)"
+        r"\s*[:,]?",
+        "first ,",
+    ),
+    # office English: "kindly" is "please" (dropped wherever it stands, so a step word still reaches its verb:
+    # "after all that is done, kindly put ..."), "do the needful" asks for what the rest says, and "itself" /
+    # "themselves" after a noun only stresses it
+    (r"\bkindly\b", "please"),
+    (r"(?:\band\s+)?\bdo\s+the\s+needful\b(?:\s+and\b)?", " "),
+    (r"(?<=[a-z])\s+(?:itself|themselves)\b", " "),
+    # a requirement's identifier before it ("R1:", "REQ-2:"): requirements are listed, not ordered
+    (r"^\s*(?:r|rq|req|requirement|item)\s*-?\s*\d+\s*:", " "),
+    # "let X VERB" commands X's verb: "let the red block go down before blue" (must go down), "let nothing be
+    # placed on F" (nothing must be placed); "don't let anyone touch X" (do not touch X); "letting red go
+    # down first" (red going down first)
+    (
+        r"\b(?:do\s+not|never)\s+let\s+(?:anyone|anybody|any\s+(?:robot\s+)?arm|the\s+(?:robot\s+)?arms)\s+(?=touch\b)",
+        "do not ",
+    ),
+    (rf"\blet\s+({_SUBJECT_NP})\s+(?={_BARE_VERB}\b)", r"\1 must "),
+    (rf"\bletting\s+({_SUBJECT_NP})\s+go\b", r"\1 going"),
+    # a group said in other words: "the whole lot of blocks" (all the blocks), "every single block", "each
+    # one of the pillars", "the trio of objects" (the three objects)
+    (r"\bthe\s+whole\s+lot\s+of\s+(?=(?:the\s+)?(?:blocks|objects|pillars|items|cubes)\b)", "all the "),
+    (r"\b(every|each)\s+single\s+", r"\1 "),
+    (r"\beach\s+one\s+of\s+(?=the\b)", "each of "),
+    (r"\bthe\s+(?:trio|threesome)\s+of\s+", "the three "),
+    # a range of region letters ("regions H through J", "regions E to G"): each letter from the first to the
+    # last (a letter the world lacks is refused later, by name); "slot" is a region
+    (r"\bregions\s+([e-j])\s+(?:through|thru|to)\s+([e-j])\b", _letters_between),
+    (r"\bslot(s?)\b", r"region\1"),
+    # the first thing said: "first off", "to start (with)" (as "to begin with": the step comes first)
+    (r"(^|,)\s*(?:first\s+off|to\s+start(?:\s+with)?|to\s+start\s+off)\s*(?=,)", r"\1 to begin with "),
+    # a manner adverb that every plan already meets
+    (rf"\b{_MANNER}\b", " "),
+    *(
+        (rf"\bis\s+{gerund}\b", third_person)
+        for gerund, third_person in (("getting", "gets"), ("touching", "touches"), ("holding", "holds"))
+    ),
 )
 
 # compiled once: with the reader's other tables they are more than `re`'s cache holds

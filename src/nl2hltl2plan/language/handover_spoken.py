@@ -51,6 +51,11 @@ _CONTRACTIONS = (
     (r"\b(?:kinda|sorta)\b", " "),
 )
 _HESITATION = rf"(?:{HESITATION}|ah+)"
+_POLITE_TAG = (
+    r"(?:if\s+you\s+(?:do\s+not|would\s+not)\s+mind|if\s+(?:that|it|this)\s+(?:is|s|would\s+be)\s+"
+    r"(?:okay|ok|alright|all\s+right|fine)|if\s+you\s+would(?:\s+be\s+so\s+kind)?|if\s+you\s+please|"
+    r"when\s+you\s+(?:get|have|find)\s+(?:a|the)\s+(?:chance|moment|minute|second)|when\s+you\s+have\s+time)"
+)
 _INTERJECTION = r"(?:okay|ok|alright|all\s+right|right|so|well|now|oh|hi|hey|hello|listen|look|yeah|yep|yup)"
 _MARKER = r"(?:i\s+mean|i\s+meant|sorry|or\s+rather|no\s+wait|wait(?=\s*,)|~)"
 # words that a restated phrase may add or leave out without saying something else
@@ -98,9 +103,15 @@ _FILLERS: tuple[tuple[str, str], ...] = (
     (r",\s*(?:i|we)\s+(?:guess|think|suppose|reckon)\s*$", " "),
     (r"^\s*if\s+(?:possible|you\s+can|you\s+could)\s*,", " "),
     (r"\s*,?\s*\bif\s+(?:possible|you\s+can)\s*$", " "),
+    # a polite tag that opens or closes a clause: "if you don't mind", "if that's okay", "if you would (be
+    # so kind)", "when you get a chance" (no time of any goal: the plan is as short as it can be anyway)
+    (rf"(^|,)\s*{_POLITE_TAG}\s*(?=,|$)", r"\1 "),
     (r"\bit\s+would\s+be\s+(?:best|great|good|nice|ideal)\s+if\s+you\s+(?:could|would|can)\b", "please"),
     (r"^\s*(?:i|we)\s+would\s+(?:probably\s+|maybe\s+)?have\s+you\s+", "please "),
-    (rf"\b(?:probably|maybe|perhaps|ideally|preferably)\s+(?={_VERB_OR_RULE}|should\b|must\b)", " "),
+    (
+        rf"\b(?:probably|maybe|perhaps|ideally|preferably)\s+(?={_VERB_OR_RULE}|should\b|must\b|(?:you|we)\s)",
+        " ",
+    ),
     (r"\btry\s+not\s+to\b", "do not"),
     (rf"\btry\s+to\s+(?={VERB}\b)", " "),
     # a closer that adds nothing: "and that's all there is to it", "that's it"
@@ -125,7 +136,11 @@ _FILLERS: tuple[tuple[str, str], ...] = (
 # second-person narration and framing, read as the command it describes
 _SUBJECT = r"(?:you|we)"
 # (not "you can / may / get to put ...": a permission is not a command)
-_WILL = r"(?:\s+will|\s+shall|\s+are\s+going\s+to|\s+want\s+to|\s+need\s+to|\s+have\s+to|\s+must|\s+should)?"
+# ("you would move ...": the plan said as what one would do; "you would like ..." is a wish, read elsewhere)
+_WILL = (
+    r"(?:\s+will|\s+shall|\s+would(?!\s+like\b)|\s+are\s+going\s+to|\s+want\s+to|\s+need\s+to|\s+have\s+to|"
+    r"\s+must|\s+should)?"
+)
 # where a narrated command may start: a clause's start, a step word, or its time or period said first
 # ("meanwhile you won't place ...", "during this period you will not place ...")
 _ANCHOR = (
@@ -152,14 +167,22 @@ _NARRATION: tuple[tuple[str, str], ...] = (
     ),
     (rf"\b{_SUBJECT}\s+(?:start|begin)\s+by\s+", "first "),
     (r"^\s*(?:start|begin)\s+by\s+", "first "),
-    # "you will be moving": the verb
+    # "you will be moving", "we are moving", "we are not placing": the verb
     *(
         (rf"\b{_SUBJECT}{_WILL}\s+be\s+(?:(first|also|then)\s+)?{gerund}\b", rf"\1 {verb}")
         for gerund, verb in _GERUNDS.items()
     ),
+    *(
+        (rf"\b{_SUBJECT}\s+are\s+(?:(first|also|then|now)\s+)?{gerund}\b", rf"\1 {verb}")
+        for gerund, verb in _GERUNDS.items()
+    ),
+    *(
+        (rf"\b{_SUBJECT}\s+are\s+(?:not|never)\s+{gerund}\b", f"do not {verb}")
+        for gerund, verb in _GERUNDS.items()
+    ),
     (
-        rf"{_ANCHOR}\s*{_SUBJECT}(?:\s+will|\s+shall|\s+must|\s+may|\s+should|\s+are)?\s+(?:not\s+|never\s+)"
-        rf"(?:be\s+)?(?:allowed\s+to\s+)?(?=(?:{VERB}|touch|place|drop|set|leave)\b)",
+        rf"{_ANCHOR}\s*{_SUBJECT}(?:\s+will|\s+shall|\s+would|\s+must|\s+may|\s+should|\s+are)?\s+(?:not\s+|never\s+)"
+        rf"(?:be\s+)?(?:allowed\s+to\s+|going\s+to\s+)?(?=(?:{VERB}|touch|place|drop|set|leave)\b)",
         r"\1 do not ",
     ),
     (
@@ -179,6 +202,10 @@ _NARRATION: tuple[tuple[str, str], ...] = (
     (r"\b([a-z]+)\s+s\s+(?=(?:touched|picked|grabbed|handled|lifted|done|finished)\b)", r"\1 has "),
     (
         r"\b(?:keep\s+(?:your|the|their)\s+)?hands\s+off\s+(?=(?:the\s+)?(?:red|blue|yellow)\b)",
+        "do not touch ",
+    ),
+    (
+        r"\b(?:keep|stay)\s+(?:off|away\s+from|clear\s+of)\s+(?=(?:the\s+)?(?:red|blue|yellow)\b)",
         "do not touch ",
     ),
     (r"\b(?:you\s+)?(?:cannot|can\s+not|do\s+not|no)\s+doubl(?:e|ing)\s+up\b", "one block per region"),

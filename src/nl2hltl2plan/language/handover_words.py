@@ -96,7 +96,9 @@ LEAD = r"\s*,?\s*(?:you\s+should\s+|please\s+|we\s+should\s+)?"
 _RULE_LABEL = (
     r"(?:(?:sequence|sequencing|order|ordering|timing|safety|placement|additional|extra|main|key|special)\s+)?"
     r"(?:order|ordering|sequence|constraints?|rules?|requirements?|restrictions?|conditions?|caution|warning|"
-    r"important|nb|notice|attention|reminder)"
+    r"important|nb|notice|attention|reminder|"
+    # a note's label: it asks for attention and says nothing itself ("Careful: ...", "Please note: ...")
+    r"(?:be\s+)?careful|(?:please\s+)?note|heads\s+up|remember|tip|fyi|ps)"
 )
 # an enumerated step: "Step 2", "Stage two", "Second step", "2)", "(2)", "(b)", "b)" (a list's letters a-d,
 # never a region's); the first of them, and the ones after it
@@ -164,7 +166,8 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\b([a-z]+)\s+s\s+been\b", r"\1 has been"),  # "till red's been touched"
     (r"\b(?:any\s+)?(?:stuff|things)\b(?=\s+(?:on|in|onto|into)\b)", "anything"),
     (
-        r"\b(?:under\s+no\s+circumstances|on\s+no\s+account)\s+(?=(?:place|put|drop|set|touch|move)\b)",
+        r"\b(?:under\s+no\s+circumstances|on\s+no\s+account|at\s+no\s+(?:time|point|stage|moment))\s+"
+        r"(?=(?:place|put|drop|set|touch|move)\b)",
         "never ",
     ),
     (r"\bat\s+some\s+(?:point|time)\s+(?=before|after)\b", ""),  # "put down at some point before ...": before
@@ -268,6 +271,12 @@ REWRITES: tuple[tuple[str, str], ...] = (
     # non-native: "when is not important", "time is free": the timing is free
     (
         r"\s*,\s*(?:the\s+)?(?:when|time|timing)\s+(?:is\s+)?(?:not\s+important|free|does\s+not\s+matter)\s*(?=,|$)",
+        " at any time",
+    ),
+    # "..., no restrictions on when": the timing is free (read once where "at any time" comes just before it)
+    (
+        r"(\bat\s+any\s+time\s*)?,\s*(?:with\s+)?no\s+(?:restrictions?|constraints?|limits?)\s+on\s+"
+        r"(?:when|the\s+timing|timing|the\s+time)\s*(?=,|$)",
         " at any time",
     ),
     (r"^\s*when\s+(?:placing|putting|moving)\s+(?:them|the\s+blocks)\s*,", " "),
@@ -408,6 +417,12 @@ REWRITES: tuple[tuple[str, str], ...] = (
         r"(an?\s+\w+|any\s+\w+|objects|blocks|nothing|anything)\s+be\b",
         r"\2 \1 never be",
     ),
+    # "at no point may a region hold two blocks": no region may hold two blocks
+    (
+        r"\b(?:under\s+no\s+circumstances|at\s+no\s+(?:time|point))\s+(should|may|can|must|shall|will)\s+"
+        r"(?:an?|any)\s+(region|area|zone)\s+(?=(?:hold|contain|receive|get|take|have)\b)",
+        r"no \2 \1 ",
+    ),
     (r"\bpreceding\b", "before"),
     (r"\b(?<!the\s)following\b", "after"),
     # where the blocks start adds nothing to where they go: "from their current regions"
@@ -437,9 +452,11 @@ REWRITES: tuple[tuple[str, str], ...] = (
     # a heading that gives the time of what follows: "Any time: red and blue blocks to any empty region"
     (r"^\s*(?:at\s+)?any\s+time\s*:", "at any time ,"),
     (r"\b(finally|lastly|then|next|afterwards|first)\s*:", r"\1 ,"),  # "Finally: yellow -> G"
+    # a reminder of a prohibition is the prohibition: "remember not to put ...", "be sure not to touch ..."
+    (r"\b(?:remember|be\s+(?:sure|careful|certain)|make\s+sure|take\s+care)\s+not\s+to\b", "do not"),
     (
-        r"\b(?:(?:remember|be\s+(?:sure|careful)|make\s+sure|do\s+not\s+forget|note|keep\s+in\s+mind)\s+(?:to|that)|"
-        r"(?:verify|check|confirm)\s+that)\b",
+        r"\b(?:(?:remember|be\s+(?:sure|careful)|make\s+sure|do\s+not\s+forget|note|(?:keep|bear)\s+in\s+mind|be\s+aware|know)\s+"
+        r"(?:to|that)|(?:verify|check|confirm)\s+that|(?:keep|bear)\s+in\s+mind)\b",
         " ",
     ),
     (r"\bprecedes?\b", "comes before"),
