@@ -123,3 +123,23 @@ def test_a_numbered_list_without_a_free_order_remark_is_not_guessed():
     """ "1. X. 2. Y." may mean a sequence: without "any order" the numbers stay, and are refused."""
     assert read("1. Egg to the fridge. 2. Mug to the sink.")[2]
 
+
+
+# lead, session 13: a second object for the same place, said after it ("... and the tomato too")
+@pytest.mark.parametrize(
+    "text",
+    [
+        "put the egg in the fridge and the apple too",
+        "put the egg in the fridge, also the apple",
+        "put the egg in the fridge, the apple as well",
+    ],
+)
+def test_a_second_object_for_the_same_place_is_read(text):
+    assert read(text) == ([APPLE, EGG], set(), [])
+
+
+def test_a_second_object_with_its_own_place_or_order_is_not_moved():
+    assert everyday("put the mug in the sink and the egg in the fridge too") == (
+        "put the mug in the sink and the egg in the fridge too"
+    )
+    assert everyday("put the mug in the sink, then the egg too") == "put the mug in the sink, then the egg too"

@@ -123,11 +123,27 @@ def everyday(text: str) -> str:
     text = re.sub(r"\band\s*,\s*", "and ", re.sub(r"^\s*,\s*", "", text))
     text = _without_need_heading(text)
     text = _LAST_GROUP_ORDER.sub("order ", text)
+    text = _ALSO_THERE.sub(lambda m: f"{m['head']} and {m['y'] or m['y2']} {m['dest']}", text)
     if not re.search(r"[.!?]\s+\S", text):  # in one sentence: what the remark is about is plain
         text = _CLOSING_FREE_ORDER.sub(", in any order", text)
     elif (last := _LAST_SENTENCE_FREE.search(text)) and not _ORDER_WORD.search(text[: last.start()]):
         text = text[: last.start()] + "."  # "A. B. C. Any order.": no sentence orders another
     return restated(re.sub(r"\s+", " ", text).strip())  # places and end states restated (restated.py)
+
+
+# "put the apple in the fridge and the tomato too", "..., also the ladle", "the pencil as well": a second
+# object for the same place (read as "put the apple and the tomato in the fridge"); the second phrase names
+# no place of its own
+_WORD = r"(?!(?:in|into|on|onto|to|inside|and|also|plus|too|as|then)\b)[a-z]+"
+_NP = rf"(?:the|a|an|my|your|that|this)\s+{_WORD}(?:\s+{_WORD}){{0,2}}"
+_ALSO_THERE = re.compile(
+    rf"(?P<head>\b(?:put|place|move|set|stick|pop|drop|throw|toss|leave)\s+{_NP})\s+"
+    rf"(?P<dest>(?:in|into|on|onto|inside|to)\s+{_NP})\s*,?\s+"
+    rf"(?:(?:and\s+)?(?:also|plus)\s+(?P<y>{_NP})(?:\s*,?\s+(?:too|as\s+well|also))?"
+    rf"|(?:and\s+)?(?P<y2>{_NP})\s*,?\s+(?:too|as\s+well|also))"
+    r"\s*(?=[.;!?]|$)",
+    re.I,
+)
 
 
 _LAST_SENTENCE_FREE = re.compile(
