@@ -51,8 +51,13 @@ from nl2hltl2plan.language.parse_usage import IMPLIED_TYPES, ParseUsage
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, ConstraintSpec
 from nl2hltl2plan.language.unsupported_steps import (
     closed_after_placing,
+    first_and_last,
+    other_instances,
+    plural_counts,
     returns_and_repeats,
+    started,
     treated_after_placing,
+    vague_words,
 )
 
 OPENED_FOR_ITSELF = frozenset({"Book", "Laptop", "Blinds"})  # opened to be open, not to reach inside
@@ -98,11 +103,15 @@ def account(
     ]
     in_mention = {i for m in mentions for i in range(m.start, m.end)}
     out = _nouns(instruction, mentions, toks, parse)
-    out += _invented(mentions, toks, parse)
+    out += _invented(mentions, toks, parse, in_mention)
     out += landmark_destinations(mentions, toks, parse)
     out += _invented_kinds(toks, mentions, parse)
     out += treated_after_placing(instruction, mentions, parse)
-    out += closed_after_placing(instruction, mentions, parse) + returns_and_repeats(instruction)
+    out += closed_after_placing(instruction, mentions, parse)
+    out += returns_and_repeats(instruction, mentions, parse) + other_instances(instruction, mentions, parse)
+    out += vague_words(instruction, mentions) + started(instruction, parse)
+    out += plural_counts(instruction, mentions, parse, instances)
+    out += first_and_last(instruction, mentions, parse)
     out += _words(instruction, toks, in_mention, mentions, parse, instances, scene)
     out += unordered_steps(
         toks, {i for i, t in enumerate(toks) if parse.constraint_at(t[1])} | in_mention, parse
@@ -207,7 +216,7 @@ def _nouns(
 
 # a "with" after these opens the task a thing is in ("done with the mug"); clauses end at these words
 _DONE_WORDS = frozenset({"done", "finished", "through", "over"})
-_CLAUSE_BOUND = re.compile(r"[.;!?]|\b(?:and|then|but|before|after|once|until|till|while|whenever)\b")
+_CLAUSE_BOUND = re.compile(r"[.;!?]|\b(?:and|or|then|but|before|after|once|until|till|while|whenever)\b")
 
 
 def _locative(
@@ -243,13 +252,19 @@ def _locative(
 
 def _preposition_before(toks: list[tuple[str, int, int]], start: int, preps: frozenset[str]) -> int:
     """The index of the preposition before the phrase whose first word is at `start`, over up to four
-    determiners or plain words; else of the word where the scan stopped (-1 at the start)."""
+    determiners or plain words; else of the word where the scan stopped (-1 at the start). The scan
+    stops at a preposition of a destination too: in "from the counter to the table" the table's is "to"."""
     i = start - 1
     while i >= 0 and start - i <= 4 and toks[i][0] not in preps:
-        if toks[i][0] not in DETERMINERS and categories(toks[i][0]):
+        if _to_a_destination(toks, i) or (toks[i][0] not in DETERMINERS and categories(toks[i][0])):
             break
         i -= 1
     return i
+
+
+def _to_a_destination(toks: list[tuple[str, int, int]], i: int) -> bool:
+    """ "to" / "into" / "onto" at `i` opens a destination, unless it ends "next to", "close to", "up to"."""
+    return toks[i][0] in _DESTINATION and (i == 0 or toks[i - 1][0] not in LOCATIVE | {"close", "up"})
 
 
 def _walked_to(toks: list[tuple[str, int, int]], start: int) -> bool:
@@ -263,15 +278,19 @@ def _walked_to(toks: list[tuple[str, int, int]], start: int) -> bool:
 
 
 def _clause_span(text: str, at: int) -> tuple[int, int]:
-    """The clause around character `at`: between full stops, semicolons, "and", "then", "but" and the
+    """The clause around character `at`: between full stops, semicolons, "and", "or", "then", "but" and the
     order words that open another task's clause ("the cloth in the drawer before the paper goes ...")."""
     bounds = [0, *(x.start() for x in _CLAUSE_BOUND.finditer(text.lower())), len(text)]
     start = max(b for b in bounds if b <= at)
     return start, min(b for b in bounds if b > at)
 
 
-def _invented(mentions: list[Mention], toks: list[tuple[str, int, int]], parse: ParseUsage) -> list[Unread]:
-    """Slots of base tasks that no word of the instruction names (a guess, not a reading)."""
+def _invented(
+    mentions: list[Mention], toks: list[tuple[str, int, int]], parse: ParseUsage, in_mention: set[int]
+) -> list[Unread]:
+    """Slots of base tasks that no word of the instruction names (a guess, not a reading). A misspelt
+    name counts only for a word that names nothing as written (`in_mention`: the words of a named thing):
+    the "plate" of "the yellow plate" is no misspelling of the blue plate."""
     places = verb_places()
     named = {places[f] for w, _, _ in toks for f in stems(w) if f in places}
     if any(c.startswith("state_lights_") for w, _, _ in toks for c in categories(w)):
@@ -282,7 +301,7 @@ def _invented(mentions: list[Mention], toks: list[tuple[str, int, int]], parse: 
     put_back = any(w == "back" for w, _, _ in toks)  # "wash the cloth from the cabinet, put it back"
     implied = parse.implied()
     out = []
-    spelt = [w for w, _, _ in toks if len(w) >= 5]
+    spelt = [w for i, (w, _, _) in enumerate(toks) if len(w) >= 5 and i not in in_mention]
     for task_id, role, types in parse.slots():
         said = named if role == "receptacle" and not put_back else named | sources
         lowered = {t.lower() for t in said}
@@ -321,7 +340,8 @@ def _invented_kinds(
 
 
 _WHERE_IT_IS = frozenset({"is", "are", "was", "were", "sits", "sitting", "lies", "lying", "stays", "'s"})
-_PREPOSITIONS = LOCATIVE | {"to", "into", "onto"}
+_DESTINATION = frozenset({"to", "into", "onto"})
+_PREPOSITIONS = LOCATIVE | _DESTINATION
 _STATE_REFERENCE = frozenset({"after", "until", "till", "once", "when", "before", "whenever", "unless"})
 
 
@@ -535,6 +555,9 @@ def _count(
     if n is not None and held is not None and n > held:
         raise HTTError(f"{phrase!r}: {scene} holds only {held} {camel_words(m.entry.canonical)}")
     counts = [max(1, t.count) for t in parse.tasks if set(t.object) & types]
+    if not counts and "quantifier_all" in cats and held is not None and held > 1:
+        if any(set(t.receptacle or ()) & types for t in parse.tasks):  # "a pillow on each armchair"
+            return Unread(phrase, "count", f"one task for each of {held} places: say each as its own task")
     if not counts:  # a count of places ("one of the drawers"), or of a noun the noun check reports
         return None
     if "quantifier_all" in cats:
