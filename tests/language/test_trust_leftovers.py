@@ -103,19 +103,6 @@ def test_each_of_several_places_needs_a_task_each():
     assert unread("put a pillow on each armchair", pillow, instances={"Pillow": 2, "ArmChair": 1}) == []
 
 
-def test_a_plural_with_no_count_names_every_one_of_its_type():
-    """ "the apples" where the scene holds three is all three, not the two a plural is read as; a class of
-    types ("the utensils") and a counted plural keep their reading."""
-    two = [task("place_two", "Apple", "Fridge", count=2)]
-    said = unread("put the apples in the fridge", two, instances={"Apple": 3, "Fridge": 1})
-    assert said == [("apples", "count")]
-    assert unread("put the apples in the fridge", two, instances={"Apple": 2, "Fridge": 1}) == []
-    assert unread("put two apples in the fridge", two, instances={"Apple": 3, "Fridge": 1}) == []
-    spoons = [task("place_two", "Spoon", "DishwasherLowerRack", count=2)]
-    held = {"Spoon": 2, "Fork": 2, "Knife": 1, "DishwasherLowerRack": 1}
-    assert unread("put the utensils in the lower rack", spoons, instances=held) == []
-
-
 def test_first_and_last_need_the_task_at_that_end():
     tasks = [
         task("place", "Apple", "Fridge"),

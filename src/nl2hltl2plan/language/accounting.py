@@ -53,7 +53,6 @@ from nl2hltl2plan.language.unsupported_steps import (
     closed_after_placing,
     first_and_last,
     other_instances,
-    plural_counts,
     returns_and_repeats,
     started,
     treated_after_placing,
@@ -110,7 +109,6 @@ def account(
     out += closed_after_placing(instruction, mentions, parse)
     out += returns_and_repeats(instruction, mentions, parse) + other_instances(instruction, mentions, parse)
     out += vague_words(instruction, mentions) + started(instruction, parse)
-    out += plural_counts(instruction, mentions, parse, instances)
     out += first_and_last(instruction, mentions, parse)
     out += _words(instruction, toks, in_mention, mentions, parse, instances, scene)
     out += unordered_steps(

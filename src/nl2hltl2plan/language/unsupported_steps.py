@@ -13,7 +13,6 @@ from __future__ import annotations
 
 import re
 from collections import Counter
-from collections.abc import Mapping
 
 from nl2hltl2plan.domain.task_kinds import APPLIANCE
 from nl2hltl2plan.language.content_words import Unread, categories
@@ -208,31 +207,6 @@ def started(instruction: str, parse: ParseUsage) -> list[Unread]:
         Unread(m.group(0), "action", "no base task switches it on")
         for m in _START.finditer(instruction.lower())
     ]
-
-
-def plural_counts(
-    instruction: str, mentions: list[Mention], parse: ParseUsage, instances: Mapping[str, int] | None
-) -> list[Unread]:
-    """ "Put the apples in the fridge" where the scene holds three: a plural of one type with no count
-    names all of them, so tasks that take fewer (a plural read as two) leave some out."""
-    if instances is None:
-        return []
-    out = []
-    for m in mentions:
-        said = instruction[max(0, m.char_start - 30) : m.char_start].lower().split()[-3:]
-        if not m.plural or m.entry.all_ or any(w.isdigit() or _COUNTED & categories(w) for w in said):
-            continue  # a counted plural, or a class of types ("the utensils": two, as the paper reads)
-        types = {t for t in m.entry.types if instances.get(t)}
-        types = set(sorted(types, key=m.entry.types.index)[:1])
-        taking = [max(1, t.count) for t in parse.tasks if set(t.object) & types and not t.sliced]
-        held = sum(instances[t] for t in types)
-        if taking and sum(taking) < held:
-            why = f"the scene holds {held}, the base tasks take {sum(taking)}: say how many, or all"
-            out.append(Unread(m.surface, "count", why))
-    return out
-
-
-_COUNTED = frozenset({f"count_{n}" for n in range(13)} | {"quantifier_all", "quantifier_vague"})
 
 
 _FIRST_OR_LAST = re.compile(r"\s+(?:(?:goes|comes|should go|has to go|must go)\s+)?(first|last)\b")
