@@ -1,9 +1,10 @@
 """Steps of an instruction that no base task does, judged in word accounting (`accounting.account`):
 a slice or treatment said after the placing ("put the tomato in the fridge, then slice it"), closing
 after a placing ("... and close it"), returning a thing to where it was ("bring it back"), repeating a
-task ("three times") and leaving things out ("leave one out").
+task ("three times"), leaving things out ("leave one out"), telling two things of one type apart ("the
+other apple"), switching a machine on ("start it"), an object's task said to come first or last; and
+what no spec says at all (`vague_words`): questions, vague amounts and places, times, waiting on a state.
 
->>> from nl2hltl2plan.language.task_specs import BaseTaskSpec
 >>> from nl2hltl2plan.language.parse_usage import ParseUsage
 >>> [u.words for u in returns_and_repeats("bring it back", [], ParseUsage([], [], [], []))]
 ['back']
@@ -13,6 +14,8 @@ from __future__ import annotations
 
 import re
 from collections import Counter
+
+import networkx as nx
 
 from nl2hltl2plan.domain.task_kinds import APPLIANCE
 from nl2hltl2plan.language.content_words import Unread, categories
@@ -215,10 +218,9 @@ _FIRST_OR_LAST = re.compile(r"\s+(?:(?:goes|comes|should go|has to go|must go)\s
 def first_and_last(instruction: str, mentions: list[Mention], parse: ParseUsage) -> list[Unread]:
     """ "..., then the tomato, but the egg first": the one task on the egg must come before every other
     task ("last": after every other); an order that does not say so left the words unread."""
-    after = {a: set() for a in (t.id for t in parse.tasks)}
-    for a, b in parse.before:
-        after.setdefault(a, set()).add(b)
-    closure = {a: _reachable(a, after) for a in after}
+    order = nx.DiGraph(list(parse.before))
+    order.add_nodes_from(t.id for t in parse.tasks)
+    closure = {a: nx.descendants(order, a) for a in order}
     out = []
     for m in mentions:
         said = _FIRST_OR_LAST.match(instruction.lower(), m.char_end)
@@ -236,14 +238,3 @@ def first_and_last(instruction: str, mentions: list[Mention], parse: ParseUsage)
                 Unread(f"{m.surface} {said.group(1)}", "order", f"task {ids[0]} is not {said.group(1)}")
             )
     return out
-
-
-def _reachable(start: str, after: dict[str, set[str]]) -> set[str]:
-    seen: set[str] = set()
-    todo = list(after.get(start, ()))
-    while todo:
-        x = todo.pop()
-        if x not in seen:
-            seen.add(x)
-            todo += after.get(x, ())
-    return seen
