@@ -77,6 +77,7 @@ PROBES = [  # text | its reading (kind object receptacle [count]) | the unread w
     "make sure the fridge is closed after putting the apple in it | place Apple Fridge | closed | action",
     "put the apple in the fridge or on the table | place Apple DiningTable | fridge | place",
     "put the mug in the coffee machine and start it | place Mug CoffeeMachine | start it | action",
+    "slice the tomato and put a few slices in the fridge | place_two Tomato Fridge 2 | a few slices | count",
 ]
 
 

@@ -148,6 +148,10 @@ _VAGUE_AMOUNT = re.compile(
     r"\b(?:some|most|half|every other|a (?:bunch|number|handful|lot) of|lots of|plenty of)\b(?: of)?"
 )
 _THE_REST = re.compile(r"\bthe (?:rest|remaining(?: ones)?|others)\b")
+_VAGUE_PIECES = re.compile(  # "a few slices": pieces are no mention, so the count check never sees them
+    r"\b(?:some|most|half|a few|few|several|many|multiple|a couple of)(?: of)?(?: the)? "
+    r"(?:slices|pieces|bits|chunks)\b"
+)
 # "put it away", "anywhere but the sofa", "somewhere": where is not said
 _VAGUE_PLACE = re.compile(
     r"\b(?:(?:put|tidy|store|stow|pack|clear)\s+(?:\w+\s+){0,3}?away|anywhere|somewhere|elsewhere|everywhere|"
@@ -185,7 +189,10 @@ def vague_words(instruction: str, mentions: list[Mention]) -> list[Unread]:
         named = next((x for x in mentions if m.end() <= x.char_start <= m.end() + 12), None)
         if named is not None and (named.plural or m.group(0) == "every other"):
             out.append(Unread(lowered[m.start() : named.char_end], "count", "a vague count: say how many"))
-    out += [Unread(m.group(0), "count", "a vague count: say how many") for m in _THE_REST.finditer(lowered)]
+    out += [
+        Unread(m.group(0), "count", "a vague count: say how many")
+        for m in (*_THE_REST.finditer(lowered), *_VAGUE_PIECES.finditer(lowered))
+    ]
     out += [
         Unread(m.group(0), "place", "a vague place: name it")
         for m in _VAGUE_PLACE.finditer(lowered)
