@@ -93,6 +93,8 @@ def test_a_request_to_the_user_and_plain_steps_stay_read():
     apple = [task("place", "Apple", "Fridge")]
     assert unread("can you put the apple in the fridge?", apple) == []
     assert unread("put some lettuce in the fridge", [task("place", "Lettuce", "Fridge")]) == []
+    bread = [task("place", "Bread", "DiningTable")]  # "or rather" corrects the place: no choice of two
+    assert unread("put the bread in the fridge, or rather on the table", bread) == []
     chilled = [task("cool_place", "Apple", "Fridge")]
     assert unread("once the apple is cold, put it in the fridge", chilled) == []
 

@@ -214,7 +214,10 @@ def _nouns(
 
 # a "with" after these opens the task a thing is in ("done with the mug"); clauses end at these words
 _DONE_WORDS = frozenset({"done", "finished", "through", "over"})
-_CLAUSE_BOUND = re.compile(r"[.;!?]|\b(?:and|or|then|but|before|after|once|until|till|while|whenever)\b")
+_CLAUSE_BOUND = re.compile(  # "or rather" corrects the place before it (the grammar reads the correction)
+    r"[.;!?]|\b(?:and|or(?! rather| better| actually| instead)|then|but|before|after|once|until|till|while"
+    r"|whenever)\b"
+)
 
 
 def _locative(
