@@ -163,14 +163,14 @@ _TIME = re.compile(
     rf"\b(?:(?:for|in|within|after)\s+{_NUMBER}\s+(?:seconds?|minutes?|mins?|hours?)"
     r"|for a (?:while|bit|moment)|(?:at|for|by|until)\s+\d{1,2}(?::\d\d)?(?:\s*(?:am|pm|o'clock))?)\b"
 )
-# "when the microwave is free", "if the fridge is open": a state no task brings about
+# "when the microwave is free", "once the drawer is empty": a state no task brings about
 _STATE_CONDITION = re.compile(
     r"\b(?:when|whenever|once|while|as soon as|until)\s+(?:the|a|an|my|your|it|they)\b[^,.;!?]{0,30}?\b"
     r"(?:is|are|gets|becomes)\s+(?:not\s+)?(?:free|empty|full|open|opened|closed|shut|ready|available|dirty|busy|"
     r"occupied|wet|dry|off|on)\b(?!\s+(?:the|a|an|top)\b)"
 )
 _QUESTION = re.compile(
-    r"^\s*(?:is|are|was|were|does|did|has|have|where|what|which|who|whose|why|how many|how much)\b"
+    r"^\s*(?:is|are|was|were|does|did|where|what|which|who|whose|why|how many|how much)\b"
 )
 
 
