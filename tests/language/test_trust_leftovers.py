@@ -40,7 +40,7 @@ def test_back_names_the_source_only_when_a_task_returns_the_thing_there():
 
 def test_a_place_after_to_is_a_destination_not_where_the_thing_is():
     """ "from the counter to the table": the table is where it goes (the scan stops at "to"), while
-    "next to the dishwasher" still says where the drawer is."""
+    "next to the sink" still says where the drawer is."""
     on_counter = [task("place", "Plate", "CounterTop")]
     assert ("table", "place") in unread("move the plate from the counter to the table", on_counter)
     in_drawer = [task("place", "PepperShaker", "Drawer")]
