@@ -72,6 +72,7 @@ PROBES = [  # text | its reading (kind object receptacle [count]) | the unread w
     "heat the potato for two minutes, then put it on the table | heat_place Potato DiningTable"
     " | for two minutes | count",
     "put the alarm clock on the desk and set it for 7 | place AlarmClock Desk | for 7 | count",
+    "put the apple in the fridge before 5 pm | place Apple Fridge | before 5 pm | count",
     "when the microwave is free, heat the potato | heat_place Potato CounterTop | when the microwave is free"
     " | condition",
     "make sure the fridge is closed after putting the apple in it | place Apple Fridge | closed | action",

@@ -161,7 +161,8 @@ _PLACE_AFTER = re.compile(r"[^,.;!?]*?\b(?:in|into|on|onto|inside|under|to)\b")
 _NUMBER = r"(?:\d+|a|an|one|two|three|four|five|six|ten|fifteen|twenty|thirty|a few|a couple of)"
 _TIME = re.compile(
     rf"\b(?:(?:for|in|within|after)\s+{_NUMBER}\s+(?:seconds?|minutes?|mins?|hours?)"
-    r"|for a (?:while|bit|moment)|(?:at|for|by|until)\s+\d{1,2}(?::\d\d)?(?:\s*(?:am|pm|o'clock))?)\b"
+    r"|for a (?:while|bit|moment)|(?:at|for|by|until)\s+\d{1,2}(?::\d\d)?(?:\s*(?:am|pm|o'clock))?"
+    r"|(?:before|after|around)\s+\d{1,2}(?::\d\d(?:\s*[ap]m)?|\s*(?:am|pm|o'clock)))\b"
 )
 # "when the microwave is free", "once the drawer is empty": a state no task brings about
 _STATE_CONDITION = re.compile(
@@ -169,9 +170,7 @@ _STATE_CONDITION = re.compile(
     r"(?:is|are|gets|becomes)\s+(?:not\s+)?(?:free|empty|full|open|opened|closed|shut|ready|available|dirty|busy|"
     r"occupied|wet|dry|off|on)\b(?!\s+(?:the|a|an|top)\b)"
 )
-_QUESTION = re.compile(
-    r"^\s*(?:is|are|was|were|does|did|where|what|which|who|whose|why|how many|how much)\b"
-)
+_QUESTION = re.compile(r"^\s*(?:is|are|was|were|does|did|where|what|which|who|whose|why|how many|how much)\b")
 
 
 def vague_words(instruction: str, mentions: list[Mention]) -> list[Unread]:
