@@ -40,7 +40,6 @@ from nl2hltl2plan.language.grounding import (
     camel_words,
     find_mentions,
     lexicon,
-    lookup,
     sentence_start,
     tokens,
 )
@@ -50,12 +49,17 @@ from nl2hltl2plan.language.order_words import check_cycles, unordered_steps
 from nl2hltl2plan.language.parse_usage import IMPLIED_TYPES, ParseUsage
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, ConstraintSpec
 from nl2hltl2plan.language.unsupported_steps import (
+    OPENED_FOR_ITSELF,
     closed_after_placing,
+    first_and_last,
+    opened_for_itself,
+    other_instances,
     returns_and_repeats,
+    started,
     treated_after_placing,
+    vague_words,
 )
 
-OPENED_FOR_ITSELF = frozenset({"Book", "Laptop", "Blinds"})  # opened to be open, not to reach inside
 NAVIGATION = frozenset({"go", "walk", "head", "come", "run", "move", "turn"})  # "move to the sink", no object
 
 
@@ -98,11 +102,14 @@ def account(
     ]
     in_mention = {i for m in mentions for i in range(m.start, m.end)}
     out = _nouns(instruction, mentions, toks, parse)
-    out += _invented(mentions, toks, parse)
+    out += _invented(mentions, toks, parse, in_mention)
     out += landmark_destinations(mentions, toks, parse)
     out += _invented_kinds(toks, mentions, parse)
     out += treated_after_placing(instruction, mentions, parse)
-    out += closed_after_placing(instruction, mentions, parse) + returns_and_repeats(instruction)
+    out += closed_after_placing(instruction, mentions, parse)
+    out += returns_and_repeats(instruction, mentions, parse) + other_instances(instruction, mentions, parse)
+    out += vague_words(instruction, mentions) + started(instruction, parse)
+    out += first_and_last(instruction, mentions, parse)
     out += _words(instruction, toks, in_mention, mentions, parse, instances, scene)
     out += unordered_steps(
         toks, {i for i, t in enumerate(toks) if parse.constraint_at(t[1])} | in_mention, parse
@@ -207,7 +214,10 @@ def _nouns(
 
 # a "with" after these opens the task a thing is in ("done with the mug"); clauses end at these words
 _DONE_WORDS = frozenset({"done", "finished", "through", "over"})
-_CLAUSE_BOUND = re.compile(r"[.;!?]|\b(?:and|then|but|before|after|once|until|till|while|whenever)\b")
+_CLAUSE_BOUND = re.compile(  # "or rather" corrects the place before it (the grammar reads the correction)
+    r"[.;!?]|\b(?:and|or(?! rather| better| actually| instead)|then|but|before|after|once|until|till|while"
+    r"|whenever)\b"
+)
 
 
 def _locative(
@@ -245,13 +255,19 @@ def _locative(
 
 def _preposition_before(toks: list[tuple[str, int, int]], start: int, preps: frozenset[str]) -> int:
     """The index of the preposition before the phrase whose first word is at `start`, over up to four
-    determiners or plain words; else of the word where the scan stopped (-1 at the start)."""
+    determiners or plain words; else of the word where the scan stopped (-1 at the start). The scan
+    stops at a preposition of a destination too: in "from the counter to the table" the table's is "to"."""
     i = start - 1
     while i >= 0 and start - i <= 4 and toks[i][0] not in preps:
-        if toks[i][0] not in DETERMINERS and categories(toks[i][0]):
+        if _to_a_destination(toks, i) or (toks[i][0] not in DETERMINERS and categories(toks[i][0])):
             break
         i -= 1
     return i
+
+
+def _to_a_destination(toks: list[tuple[str, int, int]], i: int) -> bool:
+    """ "to" / "into" / "onto" at `i` opens a destination, unless it ends "next to", "close to", "up to"."""
+    return toks[i][0] in _DESTINATION and (i == 0 or toks[i - 1][0] not in LOCATIVE | {"close", "up"})
 
 
 def _walked_to(toks: list[tuple[str, int, int]], start: int) -> bool:
@@ -265,15 +281,19 @@ def _walked_to(toks: list[tuple[str, int, int]], start: int) -> bool:
 
 
 def _clause_span(text: str, at: int) -> tuple[int, int]:
-    """The clause around character `at`: between full stops, semicolons, "and", "then", "but" and the
+    """The clause around character `at`: between full stops, semicolons, "and", "or", "then", "but" and the
     order words that open another task's clause ("the cloth in the drawer before the paper goes ...")."""
     bounds = [0, *(x.start() for x in _CLAUSE_BOUND.finditer(text.lower())), len(text)]
     start = max(b for b in bounds if b <= at)
     return start, min(b for b in bounds if b > at)
 
 
-def _invented(mentions: list[Mention], toks: list[tuple[str, int, int]], parse: ParseUsage) -> list[Unread]:
-    """Slots of base tasks that no word of the instruction names (a guess, not a reading)."""
+def _invented(
+    mentions: list[Mention], toks: list[tuple[str, int, int]], parse: ParseUsage, in_mention: set[int]
+) -> list[Unread]:
+    """Slots of base tasks that no word of the instruction names (a guess, not a reading). A misspelt
+    name counts only for a word that names nothing as written (`in_mention`: the words of a named thing):
+    the "plate" of "the yellow plate" is no misspelling of the blue plate."""
     places = verb_places()
     named = {places[f] for w, _, _ in toks for f in stems(w) if f in places}
     if any(c.startswith("state_lights_") for w, _, _ in toks for c in categories(w)):
@@ -284,7 +304,7 @@ def _invented(mentions: list[Mention], toks: list[tuple[str, int, int]], parse: 
     put_back = any(w == "back" for w, _, _ in toks)  # "wash the cloth from the cabinet, put it back"
     implied = parse.implied()
     out = []
-    spelt = [w for w, _, _ in toks if len(w) >= 5]
+    spelt = [w for i, (w, _, _) in enumerate(toks) if len(w) >= 5 and i not in in_mention]
     for task_id, role, types in parse.slots():
         said = named if role == "receptacle" and not put_back else named | sources
         lowered = {t.lower() for t in said}
@@ -323,7 +343,8 @@ def _invented_kinds(
 
 
 _WHERE_IT_IS = frozenset({"is", "are", "was", "were", "sits", "sitting", "lies", "lying", "stays", "'s"})
-_PREPOSITIONS = LOCATIVE | {"to", "into", "onto"}
+_DESTINATION = frozenset({"to", "into", "onto"})
+_PREPOSITIONS = LOCATIVE | _DESTINATION
 _STATE_REFERENCE = frozenset({"after", "until", "till", "once", "when", "before", "whenever", "unless"})
 
 
@@ -458,7 +479,7 @@ def _verb(
     after = words[i + 1 : i + 4]
     if after[:1] in (["it"], ["them"]) and last_named:
         after = last_named.split()  # "put the laptop on the table and open it": the laptop
-    if w in ("open", "close", "shut") and (thing := _opened_thing(after, parse)):
+    if w in ("open", "close", "shut") and (thing := opened_for_itself(after, parse)):
         return Unread(f"{w} the {camel_words(thing).lower()}", "action", f"no base task {w}s it")
     for state in ("off", "on"):
         if f"state_lights_{state}" in cats and state not in parse.light_states:
@@ -483,19 +504,6 @@ def _verb(
     if "verb_sliced" in cats and not parse.sliced and not _piece_of_whole(words, i):
         return Unread(w, "action", "no task takes a slice")
     return None
-
-
-def _opened_thing(after: list[str], parse: ParseUsage) -> str | None:
-    """The object an "open" / "close" names when it is opened for its own sake (a book, a laptop, the
-    blinds: never a container on the way) and no task opens or closes it."""
-    rest = " ".join(after[1:] if after and after[0] in DETERMINERS else after)
-    entry = lookup(rest.split()[0]) if rest else None
-    if entry is None or not set(entry.types) & OPENED_FOR_ITSELF:
-        return None
-    done = {
-        t for x in parse.tasks if x.kind == "set_state" and x.state in ("open", "closed") for t in x.object
-    }
-    return None if set(entry.types) & done else entry.canonical
 
 
 def _piece_of_whole(words: list[str], i: int) -> bool:
@@ -526,8 +534,6 @@ def _count(
 ) -> Unread | None:
     """A count before a noun: the task on that noun takes exactly so many (every one for "all")."""
     w, start, _ = toks[i]
-    if i + 1 < len(toks) and toks[i + 1][0] in _TIME_UNITS:
-        return Unread(f"{w} {toks[i + 1][0]}", "count", "no base task takes a time or a duration")
     m = _next_mention(mentions, [t[0] for t in toks], i)
     if m is None or re.search(r"[,.;:!?]", instruction[start : m.char_start]):
         return None
@@ -546,6 +552,9 @@ def _count(
     if n is not None and held is not None and n > held:
         raise HTTError(f"{phrase!r}: {scene} holds only {held} {camel_words(m.entry.canonical)}")
     counts = [max(1, t.count) for t in parse.tasks if set(t.object) & types]
+    if not counts and "quantifier_all" in cats and held is not None and held > 1:
+        if any(set(t.receptacle or ()) & types for t in parse.tasks):  # "a pillow on each armchair"
+            return Unread(phrase, "count", f"one task for each of {held} places: say each as its own task")
     if not counts:  # a count of places ("one of the drawers"), or of a noun the noun check reports
         return None
     if "quantifier_all" in cats:
@@ -558,12 +567,6 @@ def _count(
         return None
     got = " + ".join(map(str, counts)) or "none"
     return Unread(phrase, "count", f"the base tasks take {got}, not {n}")
-
-
-# "for two minutes", "at 5 pm": a count of time, which no base task has
-_TIME_UNITS = frozenset(
-    "second seconds sec secs minute minutes min mins hour hours hr hrs pm am o'clock oclock".split()
-)
 
 
 def take_every_instance(

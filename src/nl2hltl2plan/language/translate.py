@@ -292,12 +292,13 @@ def _parse(
         every = take_every_instance(instruction, parsed.tasks, reader.counts)
         parsed = parsed.model_copy(update={"tasks": every})
     if not parsed.tasks:
-        # the words that make it so (a negation, a skill no task has, a person), named first
+        # the words that make it so (a negation, a skill no task has, a person, a condition, a
+        # repetition, a return to where a thing was), named first
         named = [
             str(u)
             for u in account(instruction, [], [])
-            if u.category in ("negation", "action")
-            or u.reason.startswith(("a person", "no object of this world"))
+            if u.category in ("negation", "action", "condition", "count")
+            or u.reason.startswith(("a person", "no object of this world", "no base task returns"))
         ]
         why = "; ".join(named + parsed.unparsed) or "no task verb found"
         hint = suggestion_text(instruction, world if isinstance(world, World) else None)

@@ -1,20 +1,25 @@
 """Steps of an instruction that no base task does, judged in word accounting (`accounting.account`):
 a slice or treatment said after the placing ("put the tomato in the fridge, then slice it"), closing
 after a placing ("... and close it"), returning a thing to where it was ("bring it back"), repeating a
-task ("three times") and leaving things out ("leave one out").
+task ("three times"), leaving things out ("leave one out"), telling two things of one type apart ("the
+other apple"), switching a machine on ("start it"), an object's task said to come first or last; and
+what no spec says at all (`vague_words`): questions, vague amounts and places, times, waiting on a state.
 
->>> from nl2hltl2plan.language.task_specs import BaseTaskSpec
->>> [u.words for u in returns_and_repeats("move the laptop to the sofa and then bring it back")]
+>>> from nl2hltl2plan.language.parse_usage import ParseUsage
+>>> [u.words for u in returns_and_repeats("bring it back", [], ParseUsage([], [], [], []))]
 ['back']
 """
 
 from __future__ import annotations
 
 import re
+from collections import Counter
+
+import networkx as nx
 
 from nl2hltl2plan.domain.task_kinds import APPLIANCE
-from nl2hltl2plan.language.content_words import Unread, categories
-from nl2hltl2plan.language.grounding import Mention, sentence_start
+from nl2hltl2plan.language.content_words import DETERMINERS, Unread, categories
+from nl2hltl2plan.language.grounding import Mention, lookup, sentence_start
 from nl2hltl2plan.language.negations import NO_CONSTRAINT
 from nl2hltl2plan.language.parse_usage import ParseUsage
 
@@ -27,20 +32,32 @@ _TIMES = re.compile(
 )
 
 
-def returns_and_repeats(instruction: str) -> list[Unread]:
+def returns_and_repeats(instruction: str, mentions: list[Mention], parse: ParseUsage) -> list[Unread]:
     """ "Back" with no place after it names one only where the sentence said where the thing came from
-    ("wash the cloth from the cabinet, put it back")."""
+    and a task puts it there ("wash the cloth from the cabinet, put it back"); "move the plate from the
+    counter to the table and back" has no task that returns the plate to the counter."""
     lowered = instruction.lower()
     out = [
         Unread(m.group(0), "place", "no base task returns a thing to where it was: name the place")
         for m in _RETURN.finditer(lowered)
-        if not _SOURCE.search(lowered, sentence_start(instruction, m.start()), m.start())
+        if not _returned(lowered, sentence_start(instruction, m.start()), m.start(), mentions, parse)
     ]
     out += [Unread(m.group(0), "negation", NO_CONSTRAINT) for m in _LEFT_OUT.finditer(lowered)]
     return out + [
         Unread(m.group(0), "count", "no base task is done more than once: say each time as its own task")
         for m in _TIMES.finditer(lowered)
     ]
+
+
+def _returned(lowered: str, start: int, end: int, mentions: list[Mention], parse: ParseUsage) -> bool:
+    """Does a task put something into a place the words between `start` and `end` name as a source
+    ("from the cabinet", "out of the fridge")?"""
+    places = {r for t in parse.tasks for r in t.receptacle or ()}
+    for source in _SOURCE.finditer(lowered, start, end):
+        named = next((m for m in mentions if source.end() <= m.char_start < end), None)
+        if named is not None and set(named.entry.types) & places:
+            return True
+    return False
 
 
 _THEN_VERB = re.compile(
@@ -92,4 +109,154 @@ def closed_after_placing(instruction: str, mentions: list[Mention], parse: Parse
     ]
 
 
-_CLOSE = re.compile(r"\b(?:close|shut)\b(?! (?:to|by)\b)")
+_CLOSE = re.compile(r"\b(?:close|closed|shut)\b(?! (?:to|by)\b)")
+
+
+_OTHER = re.compile(r"\b(?:the other|another)\b")
+
+
+def other_instances(instruction: str, mentions: list[Mention], parse: ParseUsage) -> list[Unread]:
+    """ "Put the apple in the fridge and the other apple on the counter": two tasks on one type, which
+    the spec (type-level atoms) cannot keep to two different things, so one apple could do both. "The
+    other" / "another" before such a thing, or standing for it ("one apple in the fridge and the other
+    on the counter"), is unread; a landmark ("next to the other food") names a thing no two tasks take."""
+    taken = Counter(t for task in parse.tasks for t in set(task.object))
+    shared = {t for t, n in taken.items() if n > 1}
+    if not shared:
+        return []
+    out = []
+    lowered = instruction.lower()
+    for m in _OTHER.finditer(lowered):
+        rest = lowered[m.end() :]
+        named = next((x for x in mentions if m.end() <= x.char_start <= m.end() + 20), None)
+        if named is not None and not _PLACE_OR_STOP.search(lowered[m.end() : named.char_start]):
+            the_shared = bool(set(named.entry.types) & shared)  # "the other apple"
+        else:
+            the_shared = _STANDS_FOR.match(rest) is not None  # "the other on the counter", "another one"
+        if the_shared:
+            out.append(Unread(m.group(0), "object", _TWO_OF_A_TYPE))
+    return out
+
+
+_PLACE_OR_STOP = re.compile(r"[,.;:!?]|\b(?:in|on|to|into|onto|at|of)\b")
+_STANDS_FOR = re.compile(r"\s*(?:[,.;:!?]|$|(?:ones?|in|on|into|onto|to|at|goes|go|should|is|needs)\b)")
+_TWO_OF_A_TYPE = "two tasks take this type: the spec cannot require two different ones (one could do both)"
+
+
+# "some apples", "half of the mugs", "every other mug", "the rest": how many is not said
+_VAGUE_AMOUNT = re.compile(
+    r"\b(?:some|most|half|every other|a (?:bunch|number|handful|lot) of|lots of|plenty of)\b(?: of)?"
+)
+_THE_REST = re.compile(r"\bthe (?:rest|remaining(?: ones)?|others)\b")
+_VAGUE_PIECES = re.compile(  # "a few slices": pieces are no mention, so the count check never sees them
+    r"\b(?:some|most|half|a few|few|several|many|multiple|a couple of)(?: of)?(?: the)? "
+    r"(?:slices|pieces|bits|chunks)\b"
+)
+# "put it away", "anywhere but the sofa", "somewhere": where is not said
+_VAGUE_PLACE = re.compile(
+    r"\b(?:(?:put|tidy|store|stow|pack|clear)\s+(?:\w+\s+){0,3}?away|anywhere|somewhere|elsewhere|everywhere|"
+    r"wherever)\b"
+)
+_PLACE_AFTER = re.compile(r"[^,.;!?]*?\b(?:in|into|on|onto|inside|under|to)\b")
+_NUMBER = r"(?:\d+|a|an|one|two|three|four|five|six|ten|fifteen|twenty|thirty|a few|a couple of)"
+_TIME = re.compile(
+    rf"\b(?:(?:for|in|within|after)\s+{_NUMBER}\s+(?:seconds?|minutes?|mins?|hours?)"
+    r"|for a (?:while|bit|moment)|(?:at|for|by|until)\s+\d{1,2}(?::\d\d)?(?:\s*(?:am|pm|o'clock))?"
+    r"|(?:before|after|around)\s+\d{1,2}(?::\d\d(?:\s*[ap]m)?|\s*(?:am|pm|o'clock)))\b"
+)
+# "when the microwave is free", "once the drawer is empty": a state no task brings about
+_STATE_CONDITION = re.compile(
+    r"\b(?:when|whenever|once|while|as soon as|until)\s+(?:the|a|an|my|your|it|they)\b[^,.;!?]{0,30}?\b"
+    r"(?:is|are|gets|becomes)\s+(?:not\s+)?(?:free|empty|full|open|opened|closed|shut|ready|available|dirty|busy|"
+    r"occupied|wet|dry|off|on)\b(?!\s+(?:the|a|an|top)\b)"
+)
+_QUESTION = re.compile(r"^\s*(?:is|are|was|were|does|did|where|what|which|who|whose|why|how many|how much)\b")
+
+
+def vague_words(instruction: str, mentions: list[Mention]) -> list[Unread]:
+    """What no base task can take: a question ("is the apple in the fridge?"), a vague amount of a plural
+    ("some apples", "the rest"), a vague place ("put it away", "anywhere but the sofa"), a duration or a
+    clock time ("for two minutes", "set it for 7") and waiting on a state ("when the microwave is
+    free")."""
+    lowered = instruction.lower()
+    out = [
+        Unread(q.strip(), "action", "a question, not a request: say what to do")
+        for q in re.findall(r"[^.;!?]*[.;!?]?", lowered)
+        if q.strip() and _QUESTION.match(q)
+    ]
+    for m in _VAGUE_AMOUNT.finditer(lowered):
+        named = next((x for x in mentions if m.end() <= x.char_start <= m.end() + 12), None)
+        if named is not None and (named.plural or m.group(0) == "every other"):
+            out.append(Unread(lowered[m.start() : named.char_end], "count", "a vague count: say how many"))
+    out += [
+        Unread(m.group(0), "count", "a vague count: say how many")
+        for m in (*_THE_REST.finditer(lowered), *_VAGUE_PIECES.finditer(lowered))
+    ]
+    out += [
+        Unread(m.group(0), "place", "a vague place: name it")
+        for m in _VAGUE_PLACE.finditer(lowered)
+        if not (m.group(0).endswith("away") and _PLACE_AFTER.match(lowered, m.end()))  # "away in a cabinet"
+    ]
+    out += [Unread(m.group(0), "count", "no base task takes a time") for m in _TIME.finditer(lowered)]
+    return out + [
+        Unread(m.group(0), "condition", "no base task waits on a state: say what to do")
+        for m in _STATE_CONDITION.finditer(lowered)
+    ]
+
+
+_START = re.compile(r"\b(?:start|run|operate|activate)\s+(?:it|them|the\s+\w+)\b(?![^,.;!?]*\bunder\b)")
+
+
+def started(instruction: str, parse: ParseUsage) -> list[Unread]:
+    """ "Put the mug in the coffee machine and start it": switching a machine on, which no task does
+    unless one switches something on ("run the mug under the water" rinses it)."""
+    if "on" in parse.states:
+        return []
+    return [
+        Unread(m.group(0), "action", "no base task switches it on")
+        for m in _START.finditer(instruction.lower())
+    ]
+
+
+_FIRST_OR_LAST = re.compile(r"\s+(?:(?:goes|comes|should go|has to go|must go)\s+)?(first|last)\b")
+
+
+def first_and_last(instruction: str, mentions: list[Mention], parse: ParseUsage) -> list[Unread]:
+    """ "..., then the tomato, but the egg first": the one task on the egg must come before every other
+    task ("last": after every other); an order that does not say so left the words unread."""
+    order = nx.DiGraph(list(parse.before))
+    order.add_nodes_from(t.id for t in parse.tasks)
+    closure = {a: nx.descendants(order, a) for a in order}
+    out = []
+    for m in mentions:
+        said = _FIRST_OR_LAST.match(instruction.lower(), m.char_end)
+        ids = [t.id for t in parse.tasks if set(t.object) & set(m.entry.types)]
+        if said is None or len(ids) != 1 or len(parse.tasks) < 2:
+            continue
+        others = {t.id for t in parse.tasks} - {ids[0]}
+        ordered = (
+            others <= closure[ids[0]]
+            if said.group(1) == "first"
+            else all(ids[0] in closure[o] for o in others)
+        )
+        if not ordered:
+            out.append(
+                Unread(f"{m.surface} {said.group(1)}", "order", f"task {ids[0]} is not {said.group(1)}")
+            )
+    return out
+
+
+OPENED_FOR_ITSELF = frozenset({"Book", "Laptop", "Blinds"})  # opened to be open, not to reach inside
+
+
+def opened_for_itself(after: list[str], parse: ParseUsage) -> str | None:
+    """The object an "open" / "close" names when it is opened for its own sake (a book, a laptop, the
+    blinds: never a container on the way) and no task opens or closes it."""
+    rest = " ".join(after[1:] if after and after[0] in DETERMINERS else after)
+    entry = lookup(rest.split()[0]) if rest else None
+    if entry is None or not set(entry.types) & OPENED_FOR_ITSELF:
+        return None
+    done = {
+        t for x in parse.tasks if x.kind == "set_state" and x.state in ("open", "closed") for t in x.object
+    }
+    return None if set(entry.types) & done else entry.canonical
