@@ -214,6 +214,8 @@ def first_person_as_team(sentence: str) -> str:
         out += [sentence[last : match.start()], "we"]
         last = match.end()
     text = "".join(out) + sentence[last:]
+    # "after all of that we'll put ...": the step's phrase set off, as before any command
+    text = re.sub(r"(?i)\b(after\s+all\s+(?:of\s+)?(?:that|these|this))\s+(?=we\b)", r"\1, ", text)
     return re.sub(r"(?i)\bwe\s*['’]m\b", "we're", re.sub(r"(?i)\bwe\s+am\b", "we are", text))
 
 
