@@ -104,6 +104,8 @@ def _unframed_sentence(sentence: str) -> str:
 
 # -- reported speech ---------------------------------------------------------------------------------
 _SPEAKER = r"(?P<speaker>(?:the|our|my|your)\s+[a-z]+|he|she|they|someone|(?-i:[A-Z][a-z]+))"
+# what a speaker wrote: "Kim's message", "the foreman's note"
+_WRITING = r"(?:\s*['’]s\s+(?:message|note|e-?mail|text|memo|reply|notes))?"
 _RECIPIENT = r"(?:us|me|you|them|everyone|everybody|(?:all\s+)?(?:the\s+)?(?:arms|robots|team|crew))"
 _SAY = r"(?:said|says|say|mentioned|explained|insisted|added|stated|wrote|writes)"
 _ASK = r"(?:told|tells|asked|asks|wants|wanted|instructed|instructs|reminded|reminds|needs|needed)"
@@ -115,7 +117,13 @@ _REPORTED_COMMAND = re.compile(
 )
 # "X said (that) CLAUSE", "X says: CLAUSE", "X told us (that) CLAUSE": the clause
 _REPORTED_CLAUSE = re.compile(
-    rf"(?i)(?P<start>^|,\s*|\band\s+){_SPEAKER}\s+(?:{_SAY}|told\s+{_RECIPIENT})(?:\s+that\b|\s*:)?\s+"
+    rf"(?i)(?P<start>^|,\s*|\band\s+){_SPEAKER}{_WRITING}\s+(?:{_SAY}|told\s+{_RECIPIENT})(?:\s+that\b|\s*:)?\s+"
+)
+# the source said before what it says: "According to the supervisor, ...", "Per Dana, ...", "As the manager
+# put it, ...", "Quote from the lead: ..."
+_SOURCE = re.compile(
+    rf"(?i)(?P<start>^)\s*(?:according\s+to|per|as|(?:a\s+)?(?:quote|message|note|word)\s+from)\s+{_SPEAKER}"
+    r"(?:\s*,|\s+(?:put\s+it|said|says|wrote)\s*,|\s*:)\s*"
 )
 # "and said / and told us (that) CLAUSE" (the speaker said before): the clause
 _AND_SAID = re.compile(rf"(?i)\band\s+(?:{_SAY}|told\s+{_RECIPIENT})(?:\s+that\b)?\s+")
@@ -178,6 +186,7 @@ def unreported(sentence: str) -> str:
         reported = True
         return match.group("start") + "we want "
 
+    sentence = _SOURCE.sub(clause, sentence)
     sentence = _REPORTED_COMMAND.sub(command, sentence)
     sentence = _REPORTED_CLAUSE.sub(clause, sentence)
     sentence = _WANTED.sub(wanted, sentence)
@@ -205,7 +214,7 @@ def first_person_as_team(sentence: str) -> str:
     """'I' as the speaker who will do the work is the team ('we'), which the reader reads as commands.
 
     >>> first_person_as_team("I'm moving red to regions H and I. I'll wait.")
-    "we're moving red to regions H and I. we'll wait."
+    "we are moving red to regions H and I. we'll wait."
     """
     out, last = [], 0
     for match in _I.finditer(sentence):
@@ -216,7 +225,9 @@ def first_person_as_team(sentence: str) -> str:
     text = "".join(out) + sentence[last:]
     # "after all of that we'll put ...": the step's phrase set off, as before any command
     text = re.sub(r"(?i)\b(after\s+all\s+(?:of\s+)?(?:that|these|this))\s+(?=we\b)", r"\1, ", text)
-    return re.sub(r"(?i)\bwe\s*['’]m\b", "we're", re.sub(r"(?i)\bwe\s+am\b", "we are", text))
+    text = re.sub(r"(?i)\bwe\s*['’]m\b", "we are", re.sub(r"(?i)\bwe\s+am\b", "we are", text))
+    # "we are going to move": we will move (a plan said as what is about to happen)
+    return re.sub(r"(?i)\bwe\s*(?:['’]re|\s+are)\s+going\s+to\s+", "we will ", text)
 
 
 def plain(sentences: list[str]) -> list[str]:
