@@ -18,7 +18,7 @@ from nl2hltl2plan.language.handover_words import MEANING
 
 READ = [
     # empty headers, acknowledgements, radio calls, fillers
-    (1, "Memo. Re: tomorrow morning. Move all three blocks to the opposite side; red goes before blue."),
+    (1, "Memo. Re: today's job. Move all three blocks to the opposite side; red goes before blue."),
     (2, "Copy that. Put the three blocks on regions H, I and J, one block per region. Over and out."),
     (6, "Okay robot, um, place the three objects on regions G, H and I separately, red before blue."),
     (8, "Update: first put the yellow block on region I, then on region G. Red and blue go to any empty region "
@@ -34,6 +34,10 @@ READ = [
     (4, "Roger. I'll move the three blocks to the opposite regions, and I won't touch the blue block until "
      "I've touched the red block. After all of these, I'll put the yellow block back on region G."),
     (2, "I'm putting the three blocks on regions H, I and J, one block per region."),
+    # the source said first, a speaker's writing
+    (1, "According to the supervisor, all three blocks go to the opposite side, and red goes before blue."),
+    (8, "Kim's message said: first put the yellow block on region I, then on region G, and move the red and "
+     "blue blocks to any empty region at any time."),
 ]
 
 REFUSED = [
@@ -47,6 +51,11 @@ REFUSED = [
     # a question reported is no command; a block does not speak
     (2, "She asked whether we could put the three blocks on regions H, I and J, one block per region."),
     (1, "The red block said to move all three blocks to the opposite side, red before blue."),
+    (2, "Nobody said to put the three blocks on regions H, I and J, one block per region."),
+    # what is done is no command; a time to do it at is not a frame
+    (2, "I have put the three blocks on regions H, I and J, one block per region."),
+    (1, "Move all three blocks to the opposite side, red before blue. Tomorrow."),
+    (2, "Put the red block on H, the blue block on I, and so on."),
 ]
 
 OTHER = [
@@ -88,8 +97,8 @@ def test_no_frame_word_is_a_content_word():
 
 
 def test_a_fragment_is_empty_only_without_content_words():
-    assert empty("Roger") and empty("Base to all arms, come in") and empty("Re: this afternoon")
-    assert not empty("Hey arm a") and not empty("Re: regions H and I") and not empty("Trial 4")
+    assert empty("Roger") and empty("Base to all arms, come in") and empty("Re: today's job")
+    assert not empty("Hey arm a") and not empty("Re: regions H and I") and not empty("Trial 4") and not empty("Re: this afternoon")
     assert not empty("Noted, not now") and not empty("Stand by")  # a negation; words the frame does not know
     assert plain(["Roger", "Will do"]) == []
     assert plain(["Regions G, H and I will be empty"]) == ["Regions G, H and I will be empty"]

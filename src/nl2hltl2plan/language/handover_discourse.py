@@ -5,7 +5,7 @@ spec can use are dropped, and reported speech and first-person narration become 
   end) is dropped when it holds no content word at all (no block, place, arm letter, count, negation, order,
   time or placing verb: `handover_words.MEANING`, `VERB`, `content_words.txt`) and every word of it is a
   function word or a frame word of `handover_frame_words.txt` (a greeting, an acknowledgement, a memo's or
-  message's header, a date, a radio call, a filler). "Roger.", "Will do.", "Re: this afternoon.", "Base to
+  message's header, "today's", a radio call, a filler; a time to do the job at, "tomorrow", is kept). "Roger.", "Will do.", "Re: today's job.", "Base to
   arms, come in.", "Okay robot, ..." go; "Subject: pillar move." (a block and a verb), "Tip: use arm c"
   (an arm), "Optional: ..." (a word the frame does not know) stay, to be read or refused.
 - Reported speech: a speaker who names nothing ("the supervisor", "she", "Kim") and a verb of saying or
@@ -71,7 +71,7 @@ def _content_word(word: str) -> bool:
 def empty(fragment: str) -> bool:
     """True when the fragment says nothing a spec can use (see the module docstring).
 
-    >>> empty("Re: this afternoon"), empty("Copy that"), empty("pillar move"), empty("Optional")
+    >>> empty("Re: today's job"), empty("Copy that"), empty("pillar move"), empty("Optional")
     (True, True, False, False)
     """
     single, phrases = _frame()
@@ -144,10 +144,15 @@ _BACKSHIFT = tuple(
 )
 
 
+_NOBODY = frozenset("nobody noone none nothing neither never no".split())
+
+
 def _person(speaker: str) -> bool:
     """A speaker is a person who names nothing the reader reads: a pronoun, a name ("Kim"), a role ("the
     supervisor"); never a block, place or arm ("the red block said ...")."""
     words = speaker.lower().split()
+    if words[-1] in _NOBODY:  # "Nobody said to ...": no one asks for it
+        return False
     if speaker.lower() in ("he", "she", "they", "someone"):  # "they said": people, not blocks
         return True
     if MEANING.search(speaker.lower()) or _ACTION.search(speaker.lower()):
