@@ -5,9 +5,9 @@ spec can use are dropped, and reported speech and first-person narration become 
   end) is dropped when it holds no content word at all (no block, place, arm letter, count, negation, order,
   time or placing verb: `handover_words.MEANING`, `VERB`, `content_words.txt`) and every word of it is a
   function word or a frame word of `handover_frame_words.txt` (a greeting, an acknowledgement, a memo's or
-  message's header, "today's", a radio call, a filler; a time to do the job at, "tomorrow", is kept). "Roger.", "Will do.", "Re: today's job.", "Base to
+  message's header, "today's", a radio call, a filler). "Roger.", "Will do.", "Re: today's job.", "Base to
   arms, come in.", "Okay robot, ..." go; "Subject: pillar move." (a block and a verb), "Tip: use arm c"
-  (an arm), "Optional: ..." (a word the frame does not know) stay, to be read or refused.
+  (an arm), "Optional: ..." and "Tomorrow." (words the frame does not know) stay, to be read or refused.
 - Reported speech: a speaker who names nothing ("the supervisor", "she", "Kim") and a verb of saying or
   asking ("said (that)", "says:", "told us to", "asked the arms to", "wants us to") before a command or a
   rule leave the command ("She asked us to put ..." -> "put ..."); in the past tense, the rule's modal is

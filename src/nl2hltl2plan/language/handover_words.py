@@ -489,7 +489,10 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\b(after\s+all\s+(?:of\s+)?(?:these|this|that))\s+done\b", r"\1 are done"),
     (r"\bafter\s+all\s+that\b", "after all of that"),  # "and after all that, put ..."
     # "nobody is to touch X until ...": may not (a rule, as "nobody may touch")
-    (r"\b(nobody|no\s+one|no\s+arm|no\s+robot)\s+(?:is|was)\s+to\s+(?=touch|pick|grab|handle|lift)", r"\1 may "),
+    (
+        r"\b(nobody|no\s+one|no\s+arm|no\s+robot)\s+(?:is|was)\s+to\s+(?=touch|pick|grab|handle|lift)",
+        r"\1 may ",
+    ),
     # "..., never more than one block per region": the world's rule
     (r"\bnever\s+more\s+than\s+(?=one\b)", "no more than "),
     # "please note the red block goes first": a rule, as "note:" is
