@@ -13,8 +13,7 @@ from handover_specs import spec_of as _spec
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.content_words import vocabulary
-from nl2hltl2plan.language.handover_discourse import empty, frame_words, plain
-from nl2hltl2plan.language.handover_words import MEANING
+from nl2hltl2plan.language.handover_discourse import MEANING, empty, frame_words, plain
 
 READ = [
     # empty headers, acknowledgements, radio calls, fillers

@@ -3,7 +3,7 @@ spec can use are dropped, and reported speech and first-person narration become 
 
 - A fragment (a whole sentence, a label before a colon, a phrase set off by a comma at a sentence's start or
   end) is dropped when it holds no content word at all (no block, place, arm letter, count, negation, order,
-  time or placing verb: `handover_words.MEANING`, `VERB`, `content_words.txt`) and every word of it is a
+  time or placing verb: `MEANING`, `VERB`, `content_words.txt`) and every word of it is a
   function word or a frame word of `handover_frame_words.txt` (a greeting, an acknowledgement, a memo's or
   message's header, "today's", a radio call, a filler). "Roger.", "Will do.", "Re: today's job.", "Base to
   arms, come in.", "Okay robot, ..." go; "Subject: pillar move." (a block and a verb), "Tip: use arm c"
@@ -32,7 +32,17 @@ from functools import lru_cache
 from importlib import resources
 
 from nl2hltl2plan.language.content_words import vocabulary
-from nl2hltl2plan.language.handover_words import DONE, GERUND, MEANING, SWAP, TOUCH, VERB
+from nl2hltl2plan.language.handover_words import DONE, GERUND, SWAP, TOUCH, VERB
+
+# words that may carry a meaning here: a block, a place, an arm, a count, a negation, an order or a time
+MEANING = re.compile(
+    r"\b(?:red|blue|yellow|blocks?|cubes?|pillars?|objects?|items?|pieces?|ones?|it|its|them|they|their|regions?|"
+    r"areas?|zones?|sides?|places?|spots?|positions?|cells?|locations?|opposite|[a-j]|arms?|robots?|one|two|three|"
+    r"four|both|all|each|every|\d+|not|no|never|nothing|none|cannot|without|before|after|first|then|until|once|"
+    r"last|next|finally|final|step|steps|end|start|beginning|later|earlier|second|third|previous|prior|following|"
+    r"afterwards?|order|while|during|meanwhile|time|any|empty|free|clear|exchange|swap|touch\w*|finish\w*|"
+    r"conclu\w+|wrap\w*|complet\w*)\b"
+)
 
 
 @lru_cache(maxsize=1)

@@ -25,6 +25,7 @@ from functools import partial
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.handover_clauses import read_statements
+from nl2hltl2plan.language.handover_discourse import MEANING
 from nl2hltl2plan.language.handover_frame import FRAME
 from nl2hltl2plan.language.handover_places import (
     mark_capacity,
@@ -49,7 +50,6 @@ from nl2hltl2plan.language.handover_wishes import unwished
 from nl2hltl2plan.language.handover_words import (
     DONE,
     GERUND,
-    MEANING,
     MODAL,
     NEG,
     REWRITES,

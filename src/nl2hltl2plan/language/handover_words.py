@@ -4,8 +4,6 @@ expressions: placing verbs and prepositions, modifiers, negations, touching and 
 rewrites that map a writer's variants (synonyms, British forms, abbreviations) onto the forms read (typos
 are mended before, by `handover_typos`)."""
 
-import re
-
 VERB = (
     r"(?:transfer|move|put|place|bring|carry|take|deliver|relocate|shift|get|set|send|return|distribute|"
     r"spread|position|drop|arrange|want|need|lay|deposit|pop|collect|gather)"
@@ -596,15 +594,4 @@ REWRITES += tuple(
     (rf"\s*,?\s*\b(?:without\s+(?:ever\s+)?|never\s+){gerund}\b", f" and never {verb}")
     for gerund, verb in NEGATED_GERUNDS.items()
     if verb not in ("touch", "grab", "pick up")  # "without touching X before Y" is a touch rule
-)
-
-
-# words that may carry a meaning here: a block, a place, an arm, a count, a negation, an order or a time
-MEANING = re.compile(
-    r"\b(?:red|blue|yellow|blocks?|cubes?|pillars?|objects?|items?|pieces?|ones?|it|its|them|they|their|regions?|"
-    r"areas?|zones?|sides?|places?|spots?|positions?|cells?|locations?|opposite|[a-j]|arms?|robots?|one|two|three|"
-    r"four|both|all|each|every|\d+|not|no|never|nothing|none|cannot|without|before|after|first|then|until|once|"
-    r"last|next|finally|final|step|steps|end|start|beginning|later|earlier|second|third|previous|prior|following|"
-    r"afterwards?|order|while|during|meanwhile|time|any|empty|free|clear|exchange|swap|touch\w*|finish\w*|"
-    r"conclu\w+|wrap\w*|complet\w*)\b"
 )
