@@ -35,6 +35,9 @@ READ = [
     (2, "I'm putting the three blocks on regions H, I and J, one block per region."),
     # the source said first, a speaker's writing
     (1, "According to the supervisor, all three blocks go to the opposite side, and red goes before blue."),
+    (3, "Word from the lead is to move the three pillars to regions E, F and G beside arms a and b, and to "
+     "put nothing on any other region."),
+    (1, "Boss is asking us to move all three blocks to the opposite side, and she says red goes before blue."),
     (8, "Kim's message said: first put the yellow block on region I, then on region G, and move the red and "
      "blue blocks to any empty region at any time."),
 ]
@@ -50,6 +53,7 @@ REFUSED = [
     # a question reported is no command; a block does not speak
     (2, "She asked whether we could put the three blocks on regions H, I and J, one block per region."),
     (1, "The red block said to move all three blocks to the opposite side, red before blue."),
+    (2, "Boss is asking whether to put the three blocks on regions H, I and J, one block per region."),
     (2, "Nobody said to put the three blocks on regions H, I and J, one block per region."),
     # what is done is no command; a time to do it at is not a frame
     (2, "I have put the three blocks on regions H, I and J, one block per region."),

@@ -118,7 +118,10 @@ _SPEAKER = r"(?P<speaker>(?:the|our|my|your)\s+[a-z]+|he|she|they|someone|(?-i:[
 _WRITING = r"(?:\s*['’]s\s+(?:message|note|e-?mail|text|memo|reply|notes))?"
 _RECIPIENT = r"(?:us|me|you|them|everyone|everybody|(?:all\s+)?(?:the\s+)?(?:arms|robots|team|crew))"
 _SAY = r"(?:said|says|say|mentioned|explained|insisted|added|stated|wrote|writes)"
-_ASK = r"(?:told|tells|asked|asks|wants|wanted|instructed|instructs|reminded|reminds|needs|needed)"
+_ASK = (
+    r"(?:told|tells|asked|asks|wants|wanted|instructed|instructs|reminded|reminds|needs|needed|"
+    r"(?:is|was|are|were)\s+(?:asking|telling))"
+)
 _TELL_ON = rf"(?:\s+to\s+tell\s+{_RECIPIENT})?"  # "Sam told me to tell you to ..."
 # "X said / says (to us) to VERB", "X told us to VERB", "X said not to VERB": the command
 _REPORTED_COMMAND = re.compile(
@@ -130,16 +133,17 @@ _REPORTED_CLAUSE = re.compile(
     rf"(?i)(?P<start>^|,\s*|\band\s+){_SPEAKER}{_WRITING}\s+(?:{_SAY}|told\s+{_RECIPIENT})(?:\s+that\b|\s*:)?\s+"
 )
 # the source said before what it says: "According to the supervisor, ...", "Per Dana, ...", "As the manager
-# put it, ...", "Quote from the lead: ..."
+# put it, ...", "Quote from the lead: ...", "Word from the lead is to ...", "Just heard from Priya: ..."
 _SOURCE = re.compile(
-    rf"(?i)(?P<start>^)\s*(?:according\s+to|per|as|(?:a\s+)?(?:quote|message|note|word)\s+from)\s+{_SPEAKER}"
-    r"(?:\s*,|\s+(?:put\s+it|said|says|wrote)\s*,|\s*:)\s*"
+    rf"(?i)(?P<start>^)\s*(?:according\s+to|per|as|(?:a\s+)?(?:quote|message|note|word)\s+from|"
+    rf"(?:just\s+)?heard\s+from)\s+{_SPEAKER}"
+    r"(?:\s*,|\s+(?:put\s+it|said|says|wrote)\s*,|\s*:|\s+is\s+(?:that\s+|to\s+(?=\w)))\s*"
 )
 # "and said / and told us (that) CLAUSE" (the speaker said before): the clause
 _AND_SAID = re.compile(rf"(?i)\band\s+(?:{_SAY}|told\s+{_RECIPIENT})(?:\s+that\b)?\s+")
 # "she wanted the yellow block put back on G": a need
 _WANTED = re.compile(
-    rf"(?i)(?P<start>^|,\s*|\band\s+){_SPEAKER}\s+(?:wants|wanted|needs|needed)\s+(?!{_RECIPIENT}\b)"
+    rf"(?i)(?P<start>^|,\s*|\band\s+){_SPEAKER}\s+(?:wants?|wanted|needs?|needed)\s+(?!{_RECIPIENT}\b|to\b)"
 )
 # the past tense of reported speech, back in the present
 _BACKSHIFT = tuple(
