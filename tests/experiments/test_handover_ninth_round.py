@@ -33,11 +33,15 @@ READ = [
     (4, "Roger. I'll move the three blocks to the opposite regions, and I won't touch the blue block until "
      "I've touched the red block. After all of these, I'll put the yellow block back on region G."),
     (2, "I'm putting the three blocks on regions H, I and J, one block per region."),
+    # the base reader took this "I" for region I and gave another spec (exit 0)
+    (8, "I'll first put the yellow block on region I, then on region G, and I'll move the red and blue "
+     "blocks to any empty region at any time."),
     # the source said first, a speaker's writing
     (1, "According to the supervisor, all three blocks go to the opposite side, and red goes before blue."),
     (3, "Word from the lead is to move the three pillars to regions E, F and G beside arms a and b, and to "
      "put nothing on any other region."),
-    (1, "Boss is asking us to move all three blocks to the opposite side, and she says red goes before blue."),
+    (1, "Boss is asking us to move all three blocks to the opposite side, and she says red goes before "
+     "blue."),
     (8, "Kim's message said: first put the yellow block on region I, then on region G, and move the red and "
      "blue blocks to any empty region at any time."),
 ]
@@ -103,6 +107,8 @@ def test_a_fragment_is_empty_only_without_content_words():
     assert empty("Roger") and empty("Base to all arms, come in") and empty("Re: today's job")
     assert not empty("Hey arm a") and not empty("Re: regions H and I") and not empty("Trial 4")
     assert not empty("Re: this afternoon")  # a time to do the job at
+    assert empty("Control to arms") and empty("Memo to the team") and empty("Attention all arms")
+    assert not empty("by the arms") and not empty("to the arms")  # the arms as a place
     assert not empty("Noted, not now") and not empty("Stand by")  # a negation; words the frame does not know
     assert plain(["Roger", "Will do"]) == []
     assert plain(["Regions G, H and I will be empty"]) == ["Regions G, H and I will be empty"]

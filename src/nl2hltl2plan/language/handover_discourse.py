@@ -67,8 +67,22 @@ def _frame() -> tuple[frozenset[str], re.Pattern[str]]:
 
 
 _ACTION = re.compile(rf"\b(?:{VERB}|{GERUND}|{DONE}|{SWAP}|{TOUCH})\b")
-# the team as a whole, addressed ("base to arms", "okay robot"): one arm by its letter says who acts
+# the team as a whole, addressed ("okay robot", "attention all arms"): one arm by its letter says who acts,
+# and after a preposition the arms are a place ("by the arms", "to the arms")
 _ADDRESSEE = re.compile(r"\b(?:all\s+)?(?:the\s+)?(?:arms|robots?)\b(?!\s+[a-j]\b)")
+_PLACE_BEFORE = re.compile(
+    r"\b(?:by|near|beside|at|on|in|from|behind|of|with|to|next|towards?|around|between|for)\s+(?:(?:all|the)\s+)*$"
+)
+
+
+def _without_addressees(text: str) -> str:
+    return _ADDRESSEE.sub(lambda m: m[0] if _PLACE_BEFORE.search(text[: m.start()]) else " ", text)
+
+
+# a call's header: "base to arms", "memo to the team" (the caller first, then "to" and the team)
+_CALL = re.compile(
+    r"^(\s*(?!to\b|the\b)[a-z]+)\s+to\s+(?=(?:all\s+)?(?:the\s+)?(?:arms|robots?|team|crew)\b)"
+)
 
 
 def _content_word(word: str) -> bool:
@@ -86,7 +100,8 @@ def empty(fragment: str) -> bool:
     """
     single, phrases = _frame()
     text = re.sub(r"#\s*\d+\b", " ", fragment.lower().replace("’", "'"))  # "#212": a ticket's number
-    text = _ADDRESSEE.sub(" ", phrases.sub(" ", re.sub(r"'", " ", text)))
+    text = " ".join(phrases.sub(" ", re.sub(r"'", " ", text)).split())
+    text = _without_addressees(_CALL.sub(r"\1 ", text))
     if MEANING.search(text) or _ACTION.search(text):
         return False
     words = re.findall(r"[a-z0-9]+", text)
