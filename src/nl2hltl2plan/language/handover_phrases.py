@@ -25,6 +25,7 @@ from functools import partial
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.handover_clauses import read_statements
+from nl2hltl2plan.language.handover_discourse import MEANING
 from nl2hltl2plan.language.handover_frame import FRAME
 from nl2hltl2plan.language.handover_places import (
     mark_capacity,
@@ -89,26 +90,15 @@ def _dash_as_comma(text: str, dash: re.Match[str]) -> str:
     return dash[0] if len(text[: dash.start()].split()) <= 2 else " , "
 
 
-# words that may carry a meaning here: a block, a place, an arm, a count, a negation, an order or a time
-_MEANING = re.compile(
-    r"\b(?:red|blue|yellow|blocks?|cubes?|pillars?|objects?|items?|pieces?|ones?|it|its|them|they|their|regions?|"
-    r"areas?|zones?|sides?|places?|spots?|positions?|cells?|locations?|opposite|[a-j]|arms?|robots?|one|two|three|"
-    r"four|both|all|each|every|\d+|not|no|never|nothing|none|cannot|without|before|after|first|then|until|once|"
-    r"last|next|finally|final|step|steps|end|start|beginning|later|earlier|second|third|previous|prior|following|"
-    r"afterwards?|order|while|during|meanwhile|time|any|empty|free|clear|exchange|swap|touch\w*|finish\w*|"
-    r"conclu\w+|wrap\w*|complet\w*)\b"
-)
-
-
 def _drop_framing(text: str) -> str:
     """A purpose or reason that names nothing the reader could use ('to keep things simple, ...', 'for
     safety, ...', '..., since that is faster') frames the sentence and is dropped; one that names a block,
     a place, an arm, a count, a negation, an order or a time stays to be read (or refused)."""
     lead = re.match(rf"({STEP_NUMBER})\s*(?:to|in\s+order\s+to|for|because|since|as)\s+([^,]{{1,60}}),", text)
-    if lead and not _MEANING.search(lead.group(2)):
+    if lead and not MEANING.search(lead.group(2)):
         text = lead.group(1) + " " + text[lead.end() :]
     tail = re.search(r",\s*(?:because|since|as|so\s+that|for)\s+([^,]+)$", text)
-    if tail and not _MEANING.search(tail.group(1)):
+    if tail and not MEANING.search(tail.group(1)):
         text = text[: tail.start()]
     return text
 

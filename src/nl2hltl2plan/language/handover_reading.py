@@ -45,6 +45,7 @@ import networkx as nx
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.handover_answers import answered, timing_joined
+from nl2hltl2plan.language.handover_discourse import plain
 from nl2hltl2plan.language.handover_frame import unframed
 from nl2hltl2plan.language.handover_goals import Clause, Goal, crossed_exchanges, goal_clauses, lead
 from nl2hltl2plan.language.handover_phrases import drop_but, mark
@@ -89,7 +90,7 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
     notes: list[str] = []
     pending: list[Prohibition] = []  # prohibitions stated before any goal
     previous: Marked | None = None  # the sentence before ("it", "these regions" in the next one)
-    steps = timing_joined(unframed(_sentences(answered(instruction))))
+    steps = timing_joined(plain(unframed(_sentences(answered(instruction)))))
     instruction = " ".join(instruction.split())
     for sentence in steps:
         m = mark(sentence, scene, previous)

@@ -485,6 +485,16 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\b(two|three|four|both|all|[2-9])\s+(block|cube|pillar|object|piece|item)\b", r"\1 \2s"),
     # "after all these done" (non-native, without "are")
     (r"\b(after\s+all\s+(?:of\s+)?(?:these|this|that))\s+done\b", r"\1 are done"),
+    (r"\bafter\s+all\s+that\b", "after all of that"),  # "and after all that, put ..."
+    # "nobody is to touch X until ...": may not (a rule, as "nobody may touch")
+    (
+        r"\b(nobody|no\s+one|no\s+arm|no\s+robot)\s+(?:is|was)\s+to\s+(?=touch|pick|grab|handle|lift)",
+        r"\1 may ",
+    ),
+    # "..., never more than one block per region": the world's rule
+    (r"\bnever\s+more\s+than\s+(?=one\b)", "no more than "),
+    # "please note the red block goes first": a rule, as "note:" is
+    (r"^\s*(?:please\s+)?note\s+(?:that\s+)?(?=the\b)", " "),
     (r"\b(has|have|needs?)\s+to\s+get\s+to\b", r"\1 to go to"),  # "the yellow block has to get to ..."
     # a prohibition that opens with its period: "2) During this period, place nothing on F" (after the
     # step's "then"; after a comma and "and"; "in the meantime put nothing on F" without its comma); the

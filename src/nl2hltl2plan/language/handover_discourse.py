@@ -1,0 +1,277 @@
+"""Discourse around a handover instruction's commands, made general: the fragments that carry nothing a
+spec can use are dropped, and reported speech and first-person narration become the commands they report.
+
+- A fragment (a whole sentence, a label before a colon, a phrase set off by a comma at a sentence's start or
+  end) is dropped when it holds no content word at all (no block, place, arm letter, count, negation, order,
+  time or placing verb: `MEANING`, `VERB`, `content_words.txt`) and every word of it is a
+  function word or a frame word of `handover_frame_words.txt` (a greeting, an acknowledgement, a memo's or
+  message's header, "today's", a radio call, a filler). "Roger.", "Will do.", "Re: today's job.", "Base to
+  arms, come in.", "Okay robot, ..." go; "Subject: pillar move." (a block and a verb), "Tip: use arm c"
+  (an arm), "Optional: ..." and "Tomorrow." (words the frame does not know) stay, to be read or refused.
+- Reported speech: a speaker who names nothing ("the supervisor", "she", "Kim") and a verb of saying or
+  asking ("said (that)", "says:", "told us to", "asked the arms to", "wants us to") before a command or a
+  rule leave the command ("She asked us to put ..." -> "put ..."); in the past tense, the rule's modal is
+  put back in the present ("had to" -> "must", "was to" -> "is to", "could" -> "can", "had been touched" ->
+  "has been touched"). "she wanted X put back on G" is a need ("we want X put back on G").
+- First-person narration: "I'll / I will / I'm / I won't / I've ..." is read as "we ...", which the reader
+  reads as the team's commands ("we will move ..." -> "move ..."); "I" after a list of region letters or
+  after "region" is the region, never the pronoun.
+
+    >>> plain(["Roger", "I'll put the red block on G", "Will do"])
+    ["we'll put the red block on G"]
+    >>> plain(["She said the red block had to go first"])
+    ['the red block must go first']
+    >>> plain(["Subject: pillar move", "Tip: use arm c"])
+    ['pillar move', 'Tip: use arm c']
+"""
+
+from __future__ import annotations
+
+import re
+from functools import lru_cache
+from importlib import resources
+
+from nl2hltl2plan.language.content_words import vocabulary
+from nl2hltl2plan.language.handover_words import DONE, GERUND, SWAP, TOUCH, VERB
+
+# words that may carry a meaning here: a block, a place, an arm, a count, a negation, an order or a time
+MEANING = re.compile(
+    r"\b(?:red|blue|yellow|blocks?|cubes?|pillars?|objects?|items?|pieces?|ones?|it|its|them|they|their|regions?|"
+    r"areas?|zones?|sides?|places?|spots?|positions?|cells?|locations?|opposite|[a-j]|arms?|robots?|one|two|three|"
+    r"four|both|all|each|every|\d+|not|no|never|nothing|none|cannot|without|before|after|first|then|until|once|"
+    r"last|next|finally|final|step|steps|end|start|beginning|later|earlier|second|third|previous|prior|following|"
+    r"afterwards?|order|while|during|meanwhile|time|any|empty|free|clear|exchange|swap|touch\w*|finish\w*|"
+    r"conclu\w+|wrap\w*|complet\w*)\b"
+)
+
+
+@lru_cache(maxsize=1)
+def frame_words() -> dict[str, frozenset[str]]:
+    """category -> words (phrases joined by '_'), from `handover_frame_words.txt`."""
+    out: dict[str, frozenset[str]] = {}
+    text = resources.files("nl2hltl2plan.language").joinpath("handover_frame_words.txt").read_text()
+    for raw in text.splitlines():
+        line = raw.split("#", 1)[0].strip()
+        if line:
+            name, _, words = line.partition(":")
+            out[name.strip()] = frozenset(words.split())
+    return out
+
+
+@lru_cache(maxsize=1)
+def _frame() -> tuple[frozenset[str], re.Pattern[str]]:
+    words = frame_words()
+    single = frozenset(w for name, ws in words.items() if name != "phrase" for w in ws)
+    phrases = sorted((p.replace("_", r"\s+") for p in words["phrase"]), key=len, reverse=True)
+    return single, re.compile(rf"\b(?:{'|'.join(phrases)})\b")
+
+
+_ACTION = re.compile(rf"\b(?:{VERB}|{GERUND}|{DONE}|{SWAP}|{TOUCH})\b")
+# the team as a whole, addressed ("okay robot", "attention all arms"): one arm by its letter says who acts,
+# and after a preposition the arms are a place ("by the arms", "to the arms")
+_ADDRESSEE = re.compile(r"\b(?:all\s+)?(?:the\s+)?(?:arms|robots?)\b(?!\s+[a-j]\b)")
+_PLACE_BEFORE = re.compile(
+    r"\b(?:by|near|beside|at|on|in|from|behind|of|with|to|next|towards?|around|between|for)\s+(?:(?:all|the)\s+)*$"
+)
+
+
+def _without_addressees(text: str) -> str:
+    return _ADDRESSEE.sub(lambda m: m[0] if _PLACE_BEFORE.search(text[: m.start()]) else " ", text)
+
+
+# a call's header: "base to arms", "memo to the team" (the caller first, then "to" and the team)
+_CALL = re.compile(
+    r"^(\s*(?!to\b|the\b)[a-z]+)\s+to\s+(?=(?:all\s+)?(?:the\s+)?(?:arms|robots?|team|crew)\b)"
+)
+
+
+def _content_word(word: str) -> bool:
+    # an inflection's stem of at least four letters ("called": call; "noted" is not "not")
+    stems = {word[: -len(end)] for end in ("s", "ed") if word.endswith(end) and len(word) - len(end) >= 4}
+    forms = {word} | stems
+    return any(f in ws for ws in vocabulary().values() for f in forms)
+
+
+def empty(fragment: str) -> bool:
+    """True when the fragment says nothing a spec can use (see the module docstring).
+
+    >>> empty("Re: today's job"), empty("Copy that"), empty("pillar move"), empty("Optional")
+    (True, True, False, False)
+    """
+    single, phrases = _frame()
+    text = re.sub(r"#\s*\d+\b", " ", fragment.lower().replace("’", "'"))  # "#212": a ticket's number
+    text = " ".join(phrases.sub(" ", re.sub(r"'", " ", text)).split())
+    text = _without_addressees(_CALL.sub(r"\1 ", text))
+    if MEANING.search(text) or _ACTION.search(text):
+        return False
+    words = re.findall(r"[a-z0-9]+", text)
+    return all(w in single and not _content_word(w) for w in words)
+
+
+_LABEL = re.compile(r"^\s*([^:]{1,60}?)\s*:\s*(?=\S)")
+_LEAD = re.compile(r"^\s*([^,:]{1,40}?)\s*,\s*(?=\S)")
+_TAIL = re.compile(r",\s*([^,:]{1,40}?)\s*$")
+
+
+def _unframed_sentence(sentence: str) -> str:
+    """The sentence without its empty labels ("Re: ...:", "Copy that: ..."), its empty leading phrases
+    ("Okay robot, ...", "Hey arms, uh, ...") and an empty phrase at its end ("..., over")."""
+    while True:
+        head = _LABEL.match(sentence) or _LEAD.match(sentence)
+        if head is None or not empty(head.group(1)):
+            break
+        sentence = sentence[head.end() :]
+    tail = _TAIL.search(sentence)
+    if tail and empty(tail.group(1)):
+        sentence = sentence[: tail.start()]
+    return sentence
+
+
+# -- reported speech ---------------------------------------------------------------------------------
+_SPEAKER = r"(?P<speaker>(?:the|our|my|your)\s+[a-z]+|he|she|they|someone|(?-i:[A-Z][a-z]+))"
+# what a speaker wrote: "Kim's message", "the foreman's note"
+_WRITING = r"(?:\s*['’]s\s+(?:message|note|e-?mail|text|memo|reply|notes))?"
+_RECIPIENT = r"(?:us|me|you|them|everyone|everybody|(?:all\s+)?(?:the\s+)?(?:arms|robots|team|crew))"
+_SAY = r"(?:said|says|say|mentioned|explained|insisted|added|stated|wrote|writes)"
+_ASK = (
+    r"(?:told|tells|asked|asks|wants|wanted|instructed|instructs|reminded|reminds|needs|needed|"
+    r"(?:is|was|are|were)\s+(?:asking|telling))"
+)
+_TELL_ON = rf"(?:\s+to\s+tell\s+{_RECIPIENT})?"  # "Sam told me to tell you to ..."
+# "X said / says (to us) to VERB", "X told us to VERB", "X said not to VERB": the command
+_REPORTED_COMMAND = re.compile(
+    rf"(?i)(?P<start>^|,\s*|\band\s+){_SPEAKER}\s+(?:{_SAY}(?:\s+to\s+{_RECIPIENT})?|{_ASK}\s+{_RECIPIENT}{_TELL_ON})"
+    rf"\s+(?P<neg>not\s+)?to\s+"
+)
+# "X said (that) CLAUSE", "X says: CLAUSE", "X told us (that) CLAUSE": the clause
+_REPORTED_CLAUSE = re.compile(
+    rf"(?i)(?P<start>^|,\s*|\band\s+){_SPEAKER}{_WRITING}\s+(?:{_SAY}|told\s+{_RECIPIENT})(?:\s+that\b|\s*:)?\s+"
+)
+# the source said before what it says: "According to the supervisor, ...", "Per Dana, ...", "As the manager
+# put it, ...", "Quote from the lead: ...", "Word from the lead is to ...", "Just heard from Priya: ..."
+_SOURCE = re.compile(
+    rf"(?i)(?P<start>^)\s*(?:according\s+to|per|as|(?:a\s+)?(?:quote|message|note|word)\s+from|"
+    rf"(?:just\s+)?heard\s+from)\s+{_SPEAKER}"
+    r"(?:\s*,|\s+(?:put\s+it|said|says|wrote)\s*,|\s*:|\s+is\s+(?:that\s+|to\s+(?=\w)))\s*"
+)
+# "and said / and told us (that) CLAUSE" (the speaker said before): the clause
+_AND_SAID = re.compile(rf"(?i)\band\s+(?:{_SAY}|told\s+{_RECIPIENT})(?:\s+that\b)?\s+")
+# "she wanted the yellow block put back on G": a need
+_WANTED = re.compile(
+    rf"(?i)(?P<start>^|,\s*|\band\s+){_SPEAKER}\s+(?:wants?|wanted|needs?|needed)\s+(?!{_RECIPIENT}\b|to\b)"
+)
+# the past tense of reported speech, back in the present
+_BACKSHIFT = tuple(
+    (re.compile(rf"(?i)\b{pattern}\b"), replacement)
+    for pattern, replacement in (
+        (r"had\s+to", "must"),
+        (r"was\s+to", "is to"),
+        (r"were\s+to", "are to"),
+        (r"could", "can"),
+        (r"had\s+(?=been\b|touched\b|picked\b|grabbed\b|handled\b|moved\b|lifted\b|placed\b)", "has "),
+    )
+)
+
+
+_NOBODY = frozenset("nobody noone none nothing neither never no".split())
+
+
+def _person(speaker: str) -> bool:
+    """A speaker is a person who names nothing the reader reads: a pronoun, a name ("Kim"), a role ("the
+    supervisor"); never a block, place or arm ("the red block said ...")."""
+    words = speaker.lower().split()
+    if words[-1] in _NOBODY:  # "Nobody said to ...": no one asks for it
+        return False
+    if speaker.lower() in ("he", "she", "they", "someone"):  # "they said": people, not blocks
+        return True
+    if MEANING.search(speaker.lower()) or _ACTION.search(speaker.lower()):
+        return False
+    if words[-1] in frame_words()["function"] or words[-1] in ("who", "which", "everything", "nothing"):
+        return False  # "What needs to happen is ...": no speaker
+    return not any(_content_word(w) for w in words)
+
+
+def unreported(sentence: str) -> str:
+    """The command or rule that a reported sentence reports (see the module docstring).
+
+    >>> unreported("The supervisor said to move the red block to G and told us the blue one had to wait")
+    'move the red block to G and the blue one must wait'
+    """
+    reported = False
+
+    def command(match: re.Match[str]) -> str:
+        nonlocal reported
+        if not _person(match.group("speaker")):
+            return match.group(0)
+        reported = True
+        return match.group("start") + ("do not " if match.group("neg") else "")
+
+    def clause(match: re.Match[str]) -> str:
+        nonlocal reported
+        if not _person(match.group("speaker")):
+            return match.group(0)
+        reported = True
+        return match.group("start")
+
+    def wanted(match: re.Match[str]) -> str:
+        nonlocal reported
+        if not _person(match.group("speaker")):
+            return match.group(0)
+        reported = True
+        return match.group("start") + "we want "
+
+    sentence = _SOURCE.sub(clause, sentence)
+    sentence = _REPORTED_COMMAND.sub(command, sentence)
+    sentence = _REPORTED_CLAUSE.sub(clause, sentence)
+    sentence = _WANTED.sub(wanted, sentence)
+    if not reported:
+        return sentence
+    sentence = _AND_SAID.sub("and ", sentence)
+    sentence = re.sub(r"(?i)\band\s+that\s+", "and ", sentence)
+    # "told us to move ... and (not) to put ...": the second command
+    second = re.compile(rf"(?i)\band\s+(not\s+)?to\s+(?={VERB}\b)")
+    sentence = second.sub(lambda m: "and do not " if m[1] else "and ", sentence)
+    for pattern, replacement in _BACKSHIFT:
+        sentence = pattern.sub(replacement, sentence)
+    return sentence
+
+
+# -- first-person narration ----------------------------------------------------------------------------
+# "I" as the pronoun: before a verb of will or being; never after "region" or a list of region letters
+_I = re.compile(
+    r"(?<![A-Za-z])I(?=\s*['’](?:ll|m|ve|d)\b|\s+(?:will|won't|won’t|shall|am|have|would|must|should|need|can|cannot|want)\b)"
+)
+_REGION_BEFORE = re.compile(r"(?i)(?:\bregions?|\b[A-J]\s*(?:,|\band|\bor)|\b(?:on|to|onto|into|at|in))\s*$")
+
+
+def first_person_as_team(sentence: str) -> str:
+    """'I' as the speaker who will do the work is the team ('we'), which the reader reads as commands.
+
+    >>> first_person_as_team("I'm moving red to regions H and I. I'll wait.")
+    "we are moving red to regions H and I. we'll wait."
+    """
+    out, last = [], 0
+    for match in _I.finditer(sentence):
+        if _REGION_BEFORE.search(sentence[: match.start()]):
+            continue
+        out += [sentence[last : match.start()], "we"]
+        last = match.end()
+    text = "".join(out) + sentence[last:]
+    # "after all of that we'll put ...": the step's phrase set off, as before any command
+    text = re.sub(r"(?i)\b(after\s+all\s+(?:of\s+)?(?:that|these|this))\s+(?=we\b)", r"\1, ", text)
+    text = re.sub(r"(?i)\bwe\s*['’]m\b", "we are", re.sub(r"(?i)\bwe\s+am\b", "we are", text))
+    # "we are going to move": we will move (a plan said as what is about to happen)
+    return re.sub(r"(?i)\bwe\s*(?:['’]re|\s+are)\s+going\s+to\s+", "we will ", text)
+
+
+def plain(sentences: list[str]) -> list[str]:
+    """The sentences with empty fragments dropped, reported speech and first-person narration said as the
+    team's commands (see the module docstring)."""
+    out = []
+    for sentence in sentences:
+        if empty(sentence):
+            continue
+        text = _unframed_sentence(first_person_as_team(unreported(_unframed_sentence(sentence))))
+        if text.strip() and not empty(text):
+            out.append(text)
+    return out
