@@ -53,8 +53,10 @@ def test_a_lamp_switched_on_again_is_another_task():
 
 def test_an_object_thrown_away_is_placed_so_another_one_is_another_task():
     kitchen = {"Apple", "GarbageCan", "CounterTop", "Microwave"}
-    tasks, unread = read("Heat an apple and throw it away, and put a cooked apple slice on a counter.", kitchen)
-    assert tasks == ["heat_place Apple -> GarbageCan", "heat_place Apple(sliced) -> CounterTop"] and not unread
+    text = "Heat an apple and throw it away, and put a cooked apple slice on a counter."
+    tasks, unread = read(text, kitchen)
+    assert tasks == ["heat_place Apple -> GarbageCan", "heat_place Apple(sliced) -> CounterTop"]
+    assert not unread
     # near miss: the thing picked up and then thrown away is one task
     assert read("Pick up the apple, throw it away.", kitchen) == (["place Apple -> GarbageCan"], [])
 
@@ -62,11 +64,29 @@ def test_an_object_thrown_away_is_placed_so_another_one_is_another_task():
 def test_a_reference_to_a_lamp_names_its_task_by_the_thing_held():
     bedroom = {"Newspaper", "CreditCard", "FloorLamp", "DeskLamp"}
     text = (
-        "Examine a newspaper by the light of a floor lamp after you turn on the floor lamp with the newspaper "
-        "at hand. At any time, look at a credit card under a tall lamp."
+        "Examine a newspaper by the light of a floor lamp after you turn on the floor lamp with the "
+        "newspaper at hand. At any time, look at a credit card under a tall lamp."
     )
     p = parse_instruction(text, bedroom, "scene", strict=False)
     by_id = {t.id: t.object[0] for t in p.tasks}
     # the reference restates the newspaper's own task (a second one, before it), never the credit card's
     assert sorted(by_id.values()) == ["CreditCard", "Newspaper", "Newspaper"]
     assert all(by_id[a] == by_id[b] == "Newspaper" for a, b in p.before), p.before
+
+
+def test_a_sentence_that_names_one_task_first_or_last_orders_it_against_all_others():
+    kitchen = {"Knife", "Fork", "Mug", "Drawer", "SinkBasin", "Cabinet", "Apple"}
+    two = "Put the knife in the drawer and the fork in the sink."
+    for tail in ("Do the fork first.", "Start with the fork."):
+        p = parse_instruction(f"{two} {tail}", kitchen, "scene", strict=False)
+        obj = {t.id: t.object[0] for t in p.tasks}
+        assert [(obj[a], obj[b]) for a, b in p.before] == [("Fork", "Knife")] and not p.unparsed, tail
+    three = "Put the knife in the drawer, the fork in the sink and the mug in the cabinet. The mug last."
+    p = parse_instruction(three, kitchen, "scene", strict=False)
+    obj = {t.id: t.object[0] for t in p.tasks}
+    assert sorted((obj[a], obj[b]) for a, b in p.before) == [("Fork", "Mug"), ("Knife", "Mug")]
+    # near misses: an object no task has is refused; "start with X on Y" is that placement, first
+    assert read("Put the knife in the drawer. Do the apple first.", kitchen)[1]
+    text = "Start with the apple in the drawer, then the mug in the sink."
+    p = parse_instruction(text, kitchen, "s", strict=False)
+    assert [t.summary() for t in p.tasks] == ["place Apple -> Drawer", "place Mug -> SinkBasin"] and p.before

@@ -581,6 +581,14 @@ ORDINALS = {"first": 0, "second": 1, "third": 2, "fourth": 3}
 # to you"; content_words.free_order_phrase) in a sentence that opens with no verb ("Any order." alone does
 # not say what it frees, and is left to the rules)
 NO_ORDER_SENTENCE = re.compile(rf"\b{free_order_phrase('clause')}\b", _F)
+# "Do the fork first.", "The mug last.", "Start with the fork.": the task of one named object before (after)
+# every other task
+FIRST_LAST_SENTENCE = re.compile(
+    r"^(?:(?:please\s+)?(?:do|handle|deal\s+with)\s+)?(?P<a>(?:the|that|this)\s+[a-z][a-z\s]*?)\s+"
+    r"(?P<rel>first|last)(?:\s*,?\s*(?:please|though))?$"
+    r"|^(?:please\s+)?(?:start|begin)\s+with\s+(?P<start>(?:the|that|this)\s+[a-z][a-z\s]*?)(?:\s*,?\s*please)?$",
+    _F,
+)
 # "A should be placed before B" with bare noun phrases: a relation between tasks named by their objects
 REL_SENTENCE = re.compile(
     r"^(?P<a>.+?)\s+(?:should|must|has\s+to|needs?\s+to|is\s+to)\s+(?:be\s+)?(?:placed|put|moved|done|handled|"
