@@ -420,7 +420,7 @@ def supply_put(text: str) -> str:
     text = _WISH.sub(lambda m: "" if _verb_follows(text, m.end()) else "put ", text)
     text = _TO_GO.sub(lambda m: " " if _names_object_before(text, m.start()) else m.group(0), text)
     # "start with the apple on the plate" is "first put ..."; "Start with the fork." alone names a task of
-    # another sentence (`relation_sentence`)
+    # another sentence (`first_last_sentence`)
     text = _START_WITH.sub(lambda m: "first put " if _PLACE_AFTER.match(text, m.end()) else m[0], text)
     out, pos = [], 0
     for sentence, start in split_sentences(text):
