@@ -1,7 +1,7 @@
 """Why the language stage fails on the validation sets: every failure put in one class.
 
     python scripts/language_failures.py [--sets faithful_unseen,heldout_unseen,...] [--n 400]
-        [--save-rows DIR] [--rows DIR] [--show CLASS] [--long]
+        [--save-rows DIR] [--rows DIR] [--show CLASS] [--long] [--outcomes FILE]
 
 Sets with ground truth (never test50, never the excluded trials): `faithful_seen`, `faithful_unseen`,
 `trainstyle_unseen`, `heldout_unseen`, the reference-style `refsdev_seen/unseen`, `refsheld_seen/unseen`
@@ -9,7 +9,8 @@ and `refsnew_seen/unseen` (`suites.alfred.structure_validation.rows_of_set`; `NA
 another seed), `plain` (issue 23's user-style set), `users` and `users_heldout` (tests/language/data/styles/).
 A composed set depends on the lexicon (its text-faithful labels), so `--save-rows DIR` keeps the rows and
 `--rows DIR` scores another version of the code on exactly those rows (before/after on the same
-instructions).
+instructions); `--outcomes FILE` writes each row's class and why (JSON lines) to compare two versions row
+by row.
 
 Classes of a failure (the default offline backend, its reading after the top candidate of each
 ambiguous word, then check 1, `accounting.account`):
@@ -101,10 +102,16 @@ def classify(row: dict[str, Any]) -> tuple[str, str]:
     return "slot: kind/count/sliced/type", why
 
 
-def report_set(name: str, data: list[dict[str, Any]], show: str | None) -> None:
+def report_set(
+    name: str, data: list[dict[str, Any]], show: str | None, outcomes: list[dict[str, Any]] | None = None
+) -> None:
     per: dict[Any, Counter[str]] = defaultdict(Counter)
-    for row in data:
+    for k, row in enumerate(data):
         cls, why = classify(row)
+        if outcomes is not None:
+            outcomes.append(
+                {"set": name, "row": k, "instruction": row["instruction"], "class": cls, "why": why}
+            )
         for key in (row["n_base"], "all"):
             per[key][cls] += 1
         if show and cls == show:
@@ -176,14 +183,20 @@ def main() -> int:
     ap.add_argument("--rows", type=Path, default=None, help="read the rows saved in DIR instead")
     ap.add_argument("--show", default=None, help="print the instructions of this class on stderr")
     ap.add_argument("--long", action="store_true", help="also the alfred_multiagent long instructions")
+    ap.add_argument(
+        "--outcomes", type=Path, default=None, help="write every row's class and why to FILE (JSON lines)"
+    )
     args = ap.parse_args()
+    outcomes: list[dict[str, Any]] | None = [] if args.outcomes else None
     for name in [s for s in args.sets.split(",") if s]:
         saved = args.rows / f"{name}.json" if args.rows else None
         data = json.loads(saved.read_text()) if saved and saved.exists() else rows(name, args.n)
         if args.save_rows:
             args.save_rows.mkdir(parents=True, exist_ok=True)
             (args.save_rows / f"{name}.json").write_text(json.dumps(data))
-        report_set(name, data, args.show)
+        report_set(name, data, args.show, outcomes)
+    if args.outcomes and outcomes is not None:
+        args.outcomes.write_text("".join(json.dumps(o) + "\n" for o in outcomes))
     if args.long:
         report_long()
     return 0

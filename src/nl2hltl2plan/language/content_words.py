@@ -13,8 +13,9 @@ True
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
-from functools import lru_cache
+from functools import cache, lru_cache
 from importlib import resources
 
 DETERMINERS = {"the", "a", "an", "that", "this", "those", "these", "its", "their", "my", "your", "of"}
@@ -49,6 +50,57 @@ def vocabulary() -> dict[str, frozenset[str]]:
             name, _, words = line.partition(":")
             out[name.strip()] = frozenset(words.split())
     return out
+
+
+@cache
+def free_order_phrase(kind: str | None = None) -> str:
+    """The phrases of `free_order.txt` (of one kind, "adverb" or "clause", or all) as one regular
+    expression (no context, no flags: each reader puts its own context around it and matches
+    case-insensitively).
+
+    >>> import re
+    >>> bool(re.fullmatch(free_order_phrase(), "the order does not matter", re.I))
+    True
+    >>> bool(re.fullmatch(free_order_phrase("clause"), "in either order", re.I))
+    False
+    """
+    text = resources.files("nl2hltl2plan.language").joinpath("free_order.txt").read_text()
+    lines = [line.partition(":") for line in text.splitlines() if line.strip() and not line.startswith("#")]
+    return "(?:" + "|".join(_phrase_pattern(p.strip()) for k, _, p in lines if kind in (None, k)) + ")"
+
+
+def _phrase_pattern(phrase: str) -> str:
+    """One line of `free_order.txt` as a regular expression: "(a|b)" one of, "[x]" optional."""
+    toks = re.findall(r"[()\[\]|]|[^\s()\[\]|]+", phrase)
+    pos = 0
+
+    def alternatives(close: str) -> str:
+        nonlocal pos
+        options = [sequence()]
+        while pos < len(toks) and toks[pos] == "|":
+            pos += 1
+            options.append(sequence())
+        if close:
+            pos += 1  # the closing bracket
+        return "|".join(options)
+
+    def sequence() -> str:
+        nonlocal pos
+        out, started = "", False  # started: a word that is not optional is written
+        while pos < len(toks) and toks[pos] not in ")]|":
+            tok, pos = toks[pos], pos + 1
+            item = f"(?:{alternatives(']' if tok == '[' else ')')})" if tok in "([" else _word(tok)
+            if tok == "[":
+                out += f"(?:\\s+{item})?" if started else f"(?:{item}\\s+)?"
+            else:
+                out, started = out + (f"\\s+{item}" if started else item), True
+        return out
+
+    return alternatives("")
+
+
+def _word(word: str) -> str:
+    return re.escape(word).replace("n't", "\\s*n[o']?t")
 
 
 @lru_cache(maxsize=1)

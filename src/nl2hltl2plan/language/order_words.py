@@ -18,13 +18,16 @@ import re
 import networkx as nx
 
 from nl2hltl2plan.errors import HTTError
-from nl2hltl2plan.language.content_words import DETERMINERS, Unread, categories
+from nl2hltl2plan.language.content_words import DETERMINERS, Unread, categories, free_order_phrase
 from nl2hltl2plan.language.grounding import Mention, camel_words
 from nl2hltl2plan.language.parse_usage import ParseUsage
 from nl2hltl2plan.language.task_specs import transitive_closure
 
-# "the order is up to you", "in no particular order": the order is left free without an any-order word
-_FREE_PHRASE = re.compile(r"\border is (?:up to you|your call)\b|\bno (?:particular|specific|set) order\b")
+# a phrase that frees the order of some pair of tasks ("in either order", "the order is up to you",
+# "in no particular order"; content_words.free_order_phrase): "then B - either order is ok" frees nothing
+# when the parse orders every pair (the phrase was not read); "at any time" / "meanwhile" free one task from
+# the tasks before it, and a later "after this" may still order it, so they are `any_order` words instead
+_FREE_PHRASE = re.compile(rf"\b{free_order_phrase()}\b")
 
 
 def _not_a_step(words: list[str], i: int) -> bool:
@@ -55,21 +58,13 @@ def unordered_steps(
     text = " ".join(plain)
     words += [p for p in ("in that order", "in this order") if f" {p} " in f" {text} "]
     words += [p for p in ("at the end", "in the end") if re.search(rf"\b{p}\b(?! of\b)", text)]
-    free = any("any_order" in c for c in cats) or _FREE_PHRASE.search(text) is not None
-    if len(parse.tasks) >= 2 and (freeing := _FREES_A_PAIR.search(text)) and _totally_ordered(parse):
+    freeing = _FREE_PHRASE.search(text)
+    free = any("any_order" in c for c in cats) or freeing is not None
+    if len(parse.tasks) >= 2 and freeing and _totally_ordered(parse):
         return [Unread(freeing.group(0), "order", "it leaves an order free, but every base task is ordered")]
     if not words or len(parse.tasks) < 2 or parse.before or free:
         return []
     return [Unread(", ".join(dict.fromkeys(words)), "order", "the base tasks are not ordered")]
-
-
-# phrases that free the order of some pair of tasks ("then B - either order is ok" frees nothing when the
-# parse orders every pair: the phrase was not read); "at any time" / "meanwhile" free one task from the
-# tasks before it, and a later "after this" may still order it, so they are not among them
-_FREES_A_PAIR = re.compile(
-    r"\b(?:(?:in )?(?:any|either|whichever|whatever) (?:order|sequence)|no (?:particular|specific|set) order"
-    r"|order (?:does ?n[o']?t matter|is (?:up to you|free|your call)))\b"
-)
 
 
 def _totally_ordered(parse: ParseUsage) -> bool:

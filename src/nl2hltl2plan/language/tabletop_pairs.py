@@ -20,19 +20,16 @@ import re
 from collections import Counter
 
 from nl2hltl2plan.language.accounting import account
+from nl2hltl2plan.language.content_words import free_order_phrase
 from nl2hltl2plan.language.grounding import camel_words
 from nl2hltl2plan.language.htt_build import build_htt
 from nl2hltl2plan.language.result import LanguageResult
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter
 from nl2hltl2plan.worlds.world import World
 
-# a remark that leaves the order free ("in any order", "the order doesn't matter"): read, then removed
-_FREE_ORDER = re.compile(
-    r"\b(?:in\s+)?(?:any|whatever|either|whichever)(?:\s+the)?\s+order(?:\s+(?:is\s+(?:fine|ok(?:ay)?)|"
-    r"you\s+(?:like|prefer)))?\b|\bno\s+particular\s+order\b|"
-    r"\b(?:the\s+)?(?:order|sequence)(?:\s+of\s+those\s+two)?\s+(?:doesn't|does\s+not)\s+matter\b|"
-    r"\b(?:the\s+)?order\s+is\s+(?:free|up\s+to\s+you|your\s+call)\b"
-)
+# a remark that leaves the order free ("in any order", "the order doesn't matter"; the shared list,
+# content_words.free_order_phrase): read, then removed
+_FREE_ORDER = re.compile(rf"\b{free_order_phrase()}\b")
 # where one ordered group ends and the next begins
 _THEN = re.compile(r"\b(?:and\s+)?(?:then|after\s+that|afterwards|once\s+that(?:'s|\s+is)\s+done)\b")
 # how the first group is marked: "first" / "to begin" at its start, or "first" closing it or its heading

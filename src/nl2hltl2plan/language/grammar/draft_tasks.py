@@ -149,6 +149,7 @@ class TaskBuilder:
         roles = Roles(got["object"], got["receptacle"], got["container"], got["light"]).narrow(
             self.look, kind, sliced
         )
+        self._no_holder(got, nps, sliced)
         out: dict[str, list[str] | None] = {}
         for role in nps:
             types, np = getattr(roles, role), nps[role]
@@ -156,6 +157,17 @@ class TaskBuilder:
                 types = types[:1]
             out[role] = types
         return out
+
+    def _no_holder(self, got: dict[str, list[str] | None], nps: dict[str, NP | None], sliced: bool) -> None:
+        """A word of several types ("bar": a soap bar or a towel bar) as the place of a thing none of its
+        types can hold ("put the mug on the bar" where the only bar is soap) is unread, not the first type."""
+        held = got["container"] or got["object"] or []
+        place, np = got["receptacle"], nps.get("receptacle")
+        several = np is not None and np.entry is not None and len(np.entry.types) > 1
+        if self.look is None or np is None or not several or not place or not held:
+            return
+        if not any(self.can_hold([p], held, sliced and not got["container"]) for p in place):
+            self.unparsed.append(f"nothing named {np.text!r} here can hold the {held[0]}")
 
     def can_hold(self, containers: list[str] | None, objects: list[str], sliced: bool) -> bool:
         """Can one of the container types hold one of the object types? Not itself ("the mug in the mug"),

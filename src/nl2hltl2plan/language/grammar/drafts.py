@@ -383,6 +383,9 @@ def joins(d: Draft, fr: Frame, it: Item) -> bool:
     cur = d.obj
     if fr.joiner == "after" or fr.joiner == "before":
         return False
+    if fr.cls == "light" and any(f.cls == "light" for f, _ in d.frames):
+        return False  # a lamp switched on again ("turn on the desk lamp, and turn on the floor lamp with the
+        # statue in hand"): one task has one light, so this is another task
     if o is None or o.empty:
         if fr.cls == "fill" and dest_of(it, fr.cls) is not None:
             return False  # "fill water in the bathtub": not about the current object
@@ -439,8 +442,8 @@ def _done(d: Draft) -> bool:
     """Has draft `d` reached its end: an object examined under a lamp, or put down at a final place (not
     the appliance of a state it still needs: a cooked tomato put into the sink is done, a mug is not)?"""
     fr, it = d.frames[-1]
-    if fr.cls in {"light", "examine"} or fr.light_on:
-        return True
+    if fr.cls in {"light", "examine", "trash"} or fr.light_on:
+        return True  # ("throw it away": the garbage can is a final place)
     dest = dest_of(it, fr.cls)
     if dest is None or dest.entry is None or dest.entry.canonical not in _APPLIANCE.values():
         return dest is not None
@@ -453,7 +456,7 @@ def _done(d: Draft) -> bool:
 def _placed(d: Draft) -> bool:
     """Has draft `d` put its object somewhere (its last clause names a destination)?"""
     fr, it = d.frames[-1]
-    return dest_of(it, fr.cls) is not None
+    return dest_of(it, fr.cls) is not None or fr.cls == "trash"
 
 
 def _indefinite(o: NP) -> bool:

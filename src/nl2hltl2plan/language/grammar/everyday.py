@@ -24,6 +24,7 @@ import difflib
 import re
 from functools import cache
 
+from nl2hltl2plan.language.content_words import free_order_phrase
 from nl2hltl2plan.language.grammar.restated import restated
 from nl2hltl2plan.language.grounding import lexicon
 
@@ -46,10 +47,9 @@ _TAG = re.compile(r",\s*(?:yeah|yep|ok|okay|alright|right)\s*(?=[.!?]?\s*$)", re
 _JUST = re.compile(r"\bjust\s+(?=(?:put|place|move|pop|drop|set|stick|leave)\b)", re.I)
 _ARROW = re.compile(r"\s*->\s*")
 _STEP_COLON = re.compile(r"\b(first|then|next|after\s+that|finally|lastly)\s*:\s*", re.I)
-_FREE_ORDER = r"(?:in\s+)?(?:any|whatever)\s+order(?:\s+(?:is\s+fine|you\s+like|works))?"
-_PAREN_FREE_ORDER = re.compile(
-    rf"\s*\(\s*(?:{_FREE_ORDER}|(?:the\s+)?order\s+(?:does\s*n[o']?t|does\s+not)\s+matter)\s*\)", re.I
-)
+# a free-order phrase ("any order", "the order doesn't matter"; content_words.free_order_phrase) in brackets
+_FREE_ORDER = free_order_phrase()
+_PAREN_FREE_ORDER = re.compile(rf"\s*\(\s*{_FREE_ORDER}\s*\)", re.I)
 _LAST_GROUP_ORDER = re.compile(
     r"\b(?:the\s+)?order\s+of\s+(?:those|these|them|the\s+last)(?:\s+(?:two|three|four|ones?))?\s+"
     r"(?=(?:does\s*n[o']?t|does\s+not)\s+matter\b)",
@@ -70,13 +70,7 @@ _BELONGS = re.compile(r"\bbelongs?\s+(?:in|on|to)\b", re.I)
 # a free-order remark closing the request, after a comma or as its own clause: ", order doesn't matter",
 # "; any order", "; I don't care about the order", "the order is your call" (read as the ", in any order"
 # that the rules read)
-_CLOSING_FREE_ORDER = re.compile(
-    rf"\s*[,;.]\s*(?:(?:the\s+)?order\s+(?:does\s*n[o']?t|does\s+not)\s+matter|{_FREE_ORDER}"
-    r"|(?:i|we)\s+(?:do\s*n[o']?t|do\s+not)\s+(?:care|mind)(?:\s+about)?\s+(?:the\s+)?order"
-    r"|(?:it\s+)?does\s*n[o']?t\s+matter\s+which(?:\s+one)?(?:\s+(?:goes|comes|is\s+done))?\s+first"
-    r"|(?:the\s+)?order\s+is\s+(?:your\s+call|free|yours\s+to\s+choose))\s*[.!]?\s*$",
-    re.I,
-)
+_CLOSING_FREE_ORDER = re.compile(rf"\s*[,;.]\s*{_FREE_ORDER}\s*[.!]?\s*$", re.I)
 
 
 # contractions typed without the apostrophe ("when thats done", "dont"); not "its", "lets", "well", "were"
@@ -146,20 +140,14 @@ _ALSO_THERE = re.compile(
 )
 
 
-_LAST_SENTENCE_FREE = re.compile(
-    r"[.!?]\s+(?:in\s+)?(?:any|whatever|either)\s+(?:order|sequence)(?:\s+(?:is\s+fine|works|you\s+like))?\s*[.!]?\s*$",
-    re.I,
-)
+_LAST_SENTENCE_FREE = re.compile(rf"[.!?]\s+{_FREE_ORDER}\s*[.!]?\s*$", re.I)
 _ORDER_WORD = re.compile(
     r"\b(?:then|first|firstly|next|after|afterwards|before|finally|lastly|once|when|until|later)\b", re.I
 )
 # "1. X. 2. Y." / "1) X 2) Y": list numbers; without a free-order remark they stay, and are refused as
 # counts of nothing (a numbered list may mean a sequence)
 _NUMBERED = re.compile(r"(?P<lead>^|(?<=[.;!?:])\s+|\n)\s*\d{1,2}\s*[.)]\s+(?=[a-z])", re.I)
-_FREE_REMARK = re.compile(
-    r"\b(?:(?:in\s+)?(?:any|whatever|either)\s+(?:order|sequence)|order\s+(?:does\s*n[o']?t|does\s+not)\s+matter)\b",
-    re.I,
-)
+_FREE_REMARK = re.compile(rf"\b{_FREE_ORDER}\b", re.I)
 _TWO_WORD_NAME = re.compile(r"\b([a-z]{4,})\s+([a-z]{3,})\b", re.I)
 
 

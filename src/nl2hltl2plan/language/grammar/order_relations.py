@@ -194,6 +194,12 @@ def _sentence_edges(relations: list[RelationSentence], tasks: Tasks, b: TaskBuil
     """Relation sentences between objects ("the red block should be placed before the blue block")."""
     for rel in relations:
         ta, _ = ref_targets(rel.a, tasks.specs, tasks.nps)
+        if rel.kind in ("first", "last"):  # "Do the fork first.": the fork's task before every other one
+            if not ta:
+                b.unparsed.append(f"{rel.a} {rel.kind}")
+            others = [y for y in range(len(tasks.specs)) if y not in ta]
+            edges.update((x, y) if rel.kind == "first" else (y, x) for x in ta for y in others)
+            continue
         tb, _ = ref_targets(rel.b, tasks.specs, tasks.nps)
         if not ta or not tb:
             b.unparsed.append(f"{rel.a} {rel.kind} {rel.b}")

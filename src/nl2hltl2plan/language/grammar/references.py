@@ -38,6 +38,8 @@ def ref_targets(
             or (not np.entry and any(w in {"lamp", "light"} for w in words))
         ):
             hit = [i for i in candidates if specs[i].kind == "examine_in_light"]
+            if (held := _held_np(words)) is not None:  # "turn on the lamp with the newspaper at hand"
+                hit = _hits_by_object(held, specs, nps, hit)
         elif np.entry is not None or np.head:
             hit = _hits_by_object(np, specs, nps, candidates)
             if not hit and np.entry is not None:  # "after putting items to the lower rack": by destination
@@ -58,6 +60,16 @@ def ref_targets(
         else:
             missing.append(part)
     return sorted(set(found)), missing
+
+
+def _held_np(words: list[str]) -> NP | None:
+    """The thing held in a reference to a lamp ("turning on the lamp while holding the keys", "... with the
+    newspaper at hand"): it says which task under a lamp is meant."""
+    k = next((k for k, w in enumerate(words) if w in {"with", "holding", "carrying"}), None)
+    if k is None:
+        return None
+    np = _ref_np(words[k + 1 :])
+    return np if np.entry is not None and not np.is_lamp() else None
 
 
 def _ref_np(words: list[str]) -> NP:

@@ -34,7 +34,7 @@ class Sentence:
 class RelationSentence:
     """ "The red block should be placed before the blue block": an order between tasks named by objects."""
 
-    kind: str  # "before" or "after"
+    kind: str  # "before" or "after"; "first" / "last": `a` before / after every other task (`b` empty)
     a: str
     b: str
 
@@ -53,7 +53,7 @@ def read_sentences(text: str) -> Sentences:
     out = Sentences()
     for index, (sentence, start) in enumerate(split_sentences(text)):
         markers, body = strip_leading(sentence)
-        rel = relation_sentence(body)
+        rel = first_last_sentence(sentence) or relation_sentence(body)
         if rel is not None:
             out.relations.append(rel)
             continue
@@ -126,6 +126,14 @@ def relation_sentence(body: str) -> RelationSentence | None:
     rel = G.REL_SENTENCE.match(body)
     if rel and not any(w in G.VERBS for w, _, _ in tokens(rel.group("a"))[:1]):
         return RelationSentence(rel.group("rel").lower(), rel.group("a"), rel.group("b"))
+    return None
+
+
+def first_last_sentence(sentence: str) -> RelationSentence | None:
+    """ "Do the fork first." / "Start with the fork." / "The mug last.": the task of one object named by
+    another sentence comes before (after) every other task."""
+    if one := G.FIRST_LAST_SENTENCE.match(sentence.strip(" .!")):
+        return RelationSentence((one["rel"] or "first").lower(), one["a"] or one["start"], "")
     return None
 
 
@@ -402,6 +410,7 @@ _TO_GO = re.compile(
     re.I,
 )
 _START_WITH = re.compile(r"\b(?:start|begin)\s+with\s+(?=(?:the|a|an)\s)", re.I)
+_PLACE_AFTER = re.compile(r"[^.;!?]*\b(?:in|into|on|onto|to)\s", re.I)
 _PLACE_PREPS = ("in", "into", "to", "onto", "on")
 
 
@@ -410,7 +419,9 @@ def supply_put(text: str) -> str:
     a verb, or whose words before the place name no object, is left as it is."""
     text = _WISH.sub(lambda m: "" if _verb_follows(text, m.end()) else "put ", text)
     text = _TO_GO.sub(lambda m: " " if _names_object_before(text, m.start()) else m.group(0), text)
-    text = _START_WITH.sub("first put ", text)
+    # "start with the apple on the plate" is "first put ..."; "Start with the fork." alone names a task of
+    # another sentence (`first_last_sentence`)
+    text = _START_WITH.sub(lambda m: "first put " if _PLACE_AFTER.match(text, m.end()) else m[0], text)
     out, pos = [], 0
     for sentence, start in split_sentences(text):
         _, body = strip_leading(sentence)

@@ -8,6 +8,7 @@ from __future__ import annotations
 import re
 
 from nl2hltl2plan.language import grounding
+from nl2hltl2plan.language.content_words import free_order_phrase
 
 # ----- verbs ---------------------------------------------------------------------------------------
 # class: place (move something somewhere), pick (take hold), clean/heat/cool/slice (change state),
@@ -576,10 +577,16 @@ GENERIC_REF = re.compile(
 )
 ORDINALS = {"first": 0, "second": 1, "third": 2, "fourth": 3}
 
-# sentences that only say "no particular order" (no task, no constraint)
-NO_ORDER_SENTENCE = re.compile(
-    r"\b(?:order|sequence)\b.*\b(?:not\s+specified|not\s+matter|doesn't\s+matter|does\s+not\s+matter|free(?:ly)?|"
-    r"any|arbitrary|up\s+to\s+you|not\s+important|irrelevant)\b",
+# sentences that only say the order is free (no task, no constraint): a free-order clause ("the order is up
+# to you"; content_words.free_order_phrase) in a sentence that opens with no verb ("Any order." alone does
+# not say what it frees, and is left to the rules)
+NO_ORDER_SENTENCE = re.compile(rf"\b{free_order_phrase('clause')}\b", _F)
+# "Do the fork first.", "The mug last.", "Start with the fork.": the task of one named object before (after)
+# every other task
+FIRST_LAST_SENTENCE = re.compile(
+    r"^(?:(?:please\s+)?(?:do|handle|deal\s+with)\s+)?(?P<a>(?:the|that|this)\s+[a-z][a-z\s]*?)\s+"
+    r"(?P<rel>first|last)(?:\s*,?\s*(?:please|though))?$"
+    r"|^(?:please\s+)?(?:start|begin)\s+with\s+(?P<start>(?:the|that|this)\s+[a-z][a-z\s]*?)(?:\s*,?\s*please)?$",
     _F,
 )
 # "A should be placed before B" with bare noun phrases: a relation between tasks named by their objects
