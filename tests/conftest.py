@@ -4,11 +4,19 @@ are skipped with a message where it is absent."""
 from __future__ import annotations
 
 import os
+import sys
 import tempfile
 
-import pytest
+# Keep compiled modules between processes and runs even where PYTHONDONTWRITEBYTECODE is set (it is on
+# our shared machine): else each test worker compiles every test module again (pytest's assertion
+# rewriting: about 3 s of a worker's start), and every command a test starts compiles the package. The
+# __pycache__ folders are git-ignored; Python and pytest write them atomically, so workers may race.
+sys.dont_write_bytecode = False
+os.environ.pop("PYTHONDONTWRITEBYTECODE", None)
 
-from nl2hltl2plan.config import data_dir
+import pytest  # noqa: E402
+
+from nl2hltl2plan.config import data_dir  # noqa: E402
 
 # The user's cache (LLM answers, a retrained language model that the loader prefers) must not change
 # what the tests see: every test, and every command a test starts, gets an empty cache of its own.

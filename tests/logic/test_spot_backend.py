@@ -134,3 +134,29 @@ def test_invalid_time_limits_are_refused(bad):
     big = sb.parse(" & ".join(f"F q{i}" for i in range(9)))
     with pytest.raises(FormulaError, match="time limit must be a finite number"):
         sb.dfa(big, timeout_s=bad)
+
+
+def test_the_formula_caches_answer_as_spot_does_and_share_nothing_mutable():
+    """`equivalent`, `atoms` and `sc_ltl_problems` remember their answers per Spot formula (h70): the
+    cached answer equals a fresh one from Spot, and a caller that edits a returned list edits a copy."""
+    import spot
+
+    pairs = [("F(a & F b)", "F(a & F b)"), ("F a & F b", "F b & F a"), ("F(a & F b)", "F(b & F a)"),
+             ("F a | F b", "F(a | b)"), ("a U b", "F b")]  # fmt: skip
+    for _ in range(2):  # the second round answers from the caches
+        for x, y in pairs:
+            fx, fy = sb.parse(x), sb.parse(y)
+            assert sb.equivalent(fx, fy) == bool(spot.are_equivalent(spot.formula(x), spot.formula(y)))
+            names = {str(g) for g in spot.atomic_prop_collect(spot.formula(x))}
+            assert isinstance(fx.atoms, tuple) and set(fx.atoms) == names
+    assert sb.equivalent(sb.parse("F a & F b"), sb.parse("F b & F a"))
+    assert not sb.equivalent(sb.parse("F(a & F b)"), sb.parse("F(b & F a)"))
+    problems = sb.sc_ltl_problems(sb.parse("G a"))
+    assert problems and "G (always)" in problems[0]
+    problems.append("edited by a caller")
+    assert sb.sc_ltl_problems(sb.parse("G a")) == problems[:-1]
+    assert sb.sc_ltl_problems(sb.parse("F a")) == []
+    for text in ("G a", "!F a", "F(a & X b)"):  # the same as the functions without their caches
+        f = sb.parse(text)
+        assert tuple(sb.sc_ltl_problems(f)) == sb._sc_ltl_problems.__wrapped__(f._f)
+        assert f.atoms == sb._atoms.__wrapped__(f._f)

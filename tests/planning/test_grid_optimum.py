@@ -49,14 +49,19 @@ def _random_world(rng: random.Random) -> World:
     return World.create("grid", free, objs, kind="demo")
 
 
-def _walk(world: World, start: Cell, regions: list[tuple[Cell, ...]]) -> int:
-    """Fewest steps from start through one cell of each region in turn: every combination of stand
-    cells, enumerated (numpy broadcasting), with the world's BFS distances."""
-    if not regions:
-        return 0
+def _distances(world: World) -> tuple[np.ndarray, dict[Cell, int]]:
+    """The world's BFS distances between all its cells as a matrix, and each cell's index in it."""
     cells = world.cells
     d = np.array([[world.distances_from(a).get(b, 10**6) for b in cells] for a in cells])
-    idx = {c: i for i, c in enumerate(cells)}
+    return d, {c: i for i, c in enumerate(cells)}
+
+
+def _walk(distances: tuple[np.ndarray, dict[Cell, int]], start: Cell, regions: list[tuple[Cell, ...]]) -> int:
+    """Fewest steps from start through one cell of each region in turn: every combination of stand
+    cells, enumerated (numpy broadcasting), with the world's BFS distances (`_distances`)."""
+    if not regions:
+        return 0
+    d, idx = distances
     total = d[idx[start], [idx[c] for c in regions[0]]]
     for prev, cur in itertools.pairwise(regions):
         step = d[np.ix_([idx[c] for c in prev], [idx[c] for c in cur])]
@@ -67,6 +72,7 @@ def _walk(world: World, start: Cell, regions: list[tuple[Cell, ...]]) -> int:
 def brute_force(world: World, tasks: list[tuple[str, str]], starts: list[Cell]) -> int:
     """Least moves + actions for place tasks (pickup O, put O on R), each done by one robot."""
     best = 10**9
+    distances = _distances(world)  # once per world, not once per walk
     for owners in itertools.product(range(len(starts)), repeat=len(tasks)):
         for objs in itertools.product(*[world.instances(o) for o, _ in tasks]):
             if len({o.id for o in objs}) < len(objs):
@@ -75,7 +81,7 @@ def brute_force(world: World, tasks: list[tuple[str, str]], starts: list[Cell]) 
                 cost = 2 * len(tasks)
                 for r, start in enumerate(starts):
                     mine = [k for k in range(len(tasks)) if owners[k] == r]
-                    cost += min((_walk(world, start, [reg for k in order for reg in (
+                    cost += min((_walk(distances, start, [reg for k in order for reg in (
                         objs[k].interaction_cells, recs[k].interaction_cells)])
                         for order in itertools.permutations(mine)), default=0)
                 best = min(best, cost)

@@ -68,15 +68,7 @@ class Formula:
 
     @property
     def atoms(self) -> tuple[str, ...]:
-        names: set[str] = set()
-
-        def visit(g: spot.formula) -> bool:
-            if g.kind() == spot.op_ap:
-                names.add(g.ap_name())
-            return False
-
-        self._f.traverse(visit)
-        return tuple(sorted(names))
+        return _atoms(self._f)
 
     def substitute(self, mapping: dict[str, Formula]) -> Formula:
         """Replace atoms by formulas (used to flatten a hierarchical spec)."""
@@ -102,6 +94,21 @@ class Formula:
 
     def __hash__(self) -> int:
         return hash(self.text)
+
+
+# Caches keyed by Spot formulas: these are immutable and hash-consed (equal formulas hash alike), a
+# cached key stays alive (so its id is never reused), and every cached answer is immutable.
+@lru_cache(maxsize=8192)
+def _atoms(f: spot.formula) -> tuple[str, ...]:
+    names: set[str] = set()
+
+    def visit(g: spot.formula) -> bool:
+        if g.kind() == spot.op_ap:
+            names.add(g.ap_name())
+        return False
+
+    f.traverse(visit)
+    return tuple(sorted(names))
 
 
 def parse(text: str) -> Formula:
@@ -156,6 +163,11 @@ def true() -> Formula:
 
 def sc_ltl_problems(f: Formula) -> list[str]:
     """Why `f` is not sc-LTL (positive normal form over F, U, X, &, |; negation on atoms only)."""
+    return list(_sc_ltl_problems(f._f))
+
+
+@lru_cache(maxsize=8192)
+def _sc_ltl_problems(f: spot.formula) -> tuple[str, ...]:
     problems: list[str] = []
 
     def visit(g: spot.formula) -> bool:
@@ -178,10 +190,10 @@ def sc_ltl_problems(f: Formula) -> list[str]:
             problems.append(f"operator {g.kindstr()} is not part of sc-LTL: {g.to_str()}")
         return False
 
-    f._f.traverse(visit)
-    if not problems and not f._f.is_syntactic_guarantee():
-        problems.append(f"not syntactically co-safe: {f.text}")
-    return problems
+    f.traverse(visit)
+    if not problems and not f.is_syntactic_guarantee():
+        problems.append(f"not syntactically co-safe: {f.to_str()}")
+    return tuple(problems)
 
 
 def precedence_form(f: Formula) -> tuple[list[str], list[tuple[str, str]]] | None:
@@ -211,7 +223,12 @@ def precedence_form(f: Formula) -> tuple[list[str], list[tuple[str, str]]] | Non
 
 def equivalent(a: Formula, b: Formula) -> bool:
     """LTL language equivalence (for sc-LTL formulas: same good prefixes)."""
-    return bool(spot.are_equivalent(a._f, b._f))
+    return _equivalent(a._f, b._f)
+
+
+@lru_cache(maxsize=4096)  # comparing many readings with one written spec repeats the same pairs
+def _equivalent(a: spot.formula, b: spot.formula) -> bool:
+    return bool(spot.are_equivalent(a, b))
 
 
 # ----------------------------------------------------------------------------------------------
