@@ -273,3 +273,43 @@ VALID_H65: dict[int, list[str]] = {
         "First match the green apple and the orange with the yellow plate, then match the carrot and the "
         "red apple with the blue plate."],
 }
+
+# Issue 28 (h68): held-out rephrasings written before any h68 rule, in four writers' voices the sets above
+# do not use (a non-native speaker, a child, a terse engineer, a long-winded polite person) and framings
+# they do not (a goal state or numbered-step record, a "|" list, "I want that X is on Y", a correction
+# "no wait", asides, "lastly" inside a free-order list). Measured once before and once at the end
+# (scripts/tabletop_styles.py --batch VALID_H68), never read per sentence between; the expected signature
+# is each task's ground truth.
+VALID_H68: dict[int, list[str]] = {
+    1: ["Please you put green apple to blue plate, and orange to yellow plate.",
+        "put the green apple on the pink plate. no wait, the blue plate! and the orange on the yellow plate",
+        "Goal state: green apple on blue plate, orange on yellow plate.",
+        "If it isn't too much trouble, I would be very grateful if you could kindly place the green apple on "
+        "the blue plate and, while you are at it, the orange on the yellow plate. Thank you so much!"],
+    2: ["Green apple must go in pink plate, orange in yellow plate, red apple in blue plate. Which order, is "
+        "not important.",
+        "put the green apple on the pink plate and the orange on the yellow plate and the red apple on the "
+        "blue plate and you can do it in any order you want",
+        "pink plate: green apple | yellow plate: orange | blue plate: red apple. Order: any.",
+        "Would you be so kind as to put the green apple onto the pink plate, the orange onto the yellow "
+        "plate, and the red apple onto the blue plate? Please feel free to do them in whichever order is "
+        "most convenient for you."],
+    3: ["I want that carrot is on blue plate, orange is on yellow plate, green apple is on green plate and "
+        "red apple is on pink plate. Order you can choose.",
+        "the carrot goes on the blue plate. the orange goes on the yellow plate. the green apple goes on the "
+        "green plate because they are both green! and the red apple goes on the pink plate.",
+        "Carrot to blue plate, orange to yellow plate, green apple to green plate, red apple to pink plate. "
+        "No ordering constraints.",
+        "Hello! When you have a moment, could you please arrange things for me: the carrot should be placed "
+        "on the blue plate, the orange on the yellow plate, the green apple on the green plate and, lastly, "
+        "the red apple on the pink plate. The order really doesn't matter to me at all."],
+    4: ["First you put green apple and orange in yellow plate. After finish this, you put carrot and red "
+        "apple in blue plate, any order is ok.",
+        "first the green apple and the orange go on the yellow plate. then when thats done put the carrot "
+        "and the red apple on the blue plate. you can do those two any way you want",
+        "Step 1: green apple, orange -> yellow plate. Step 2: carrot, red apple -> blue plate. Within each "
+        "step, any order.",
+        "I'd appreciate it if you could start by putting the green apple and the orange on the yellow plate. "
+        "Once you have finished with those, please go ahead and put the carrot and the red apple on the "
+        "blue plate, in whichever order you prefer, of course."],
+}
