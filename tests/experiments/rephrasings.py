@@ -313,3 +313,86 @@ VALID_H68: dict[int, list[str]] = {
         "Once you have finished with those, please go ahead and put the carrot and the red apple on the "
         "blue plate, in whichever order you prefer, of course."],
 }
+
+# Issue 28 (h68): rephrasings for developing h68's rules (read per sentence), in voices neither VALID_H68
+# nor the older sets use: text messages, a teacher's handout, a logistics operator, a formal letter, and
+# someone thinking aloud (corrections, asides, afterthoughts). Task 4's first wording is the lead's
+# refused example.
+DEV_H68: dict[int, list[str]] = {
+    1: ["pls green apple on blue plate & orange on yellow plate thx",
+        "1) Place the green apple on the blue plate. 2) Place the orange on the yellow plate. You may do "
+        "these in any order.",
+        "Deliver the green apple to the blue plate and the orange to the yellow plate.",
+        "Kindly see that the green apple is put upon the blue plate and the orange upon the yellow plate.",
+        "put the orange on the blue plate, sorry, the yellow plate, and the green apple on the blue plate",
+        "Final layout: blue plate has the green apple, yellow plate has the orange.",
+        "The blue plate is for the green apple; the yellow plate is for the orange."],
+    2: ["green apple on pink plate, orange on yellow plate, red apple on blue plate. whatever order u want",
+        "Here is what I need: the green apple on the pink plate, the orange on the yellow plate, the red "
+        "apple on the blue plate. Any order will do.",
+        "Route: green apple to pink plate, orange to yellow plate, red apple to blue plate. Sequence: any.",
+        "I should like the green apple to be on the pink plate, the orange on the yellow plate and the red "
+        "apple on the blue plate; the order is of no consequence.",
+        "the green apple, which is a bit bruised, goes on the pink plate, the orange on the yellow plate, "
+        "and the red apple on the blue plate, any order"],
+    3: ["carrot->blue plate, orange->yellow plate, green apple->green plate, red apple->pink plate. any "
+        "order ok",
+        "Your job is to put each item on its plate: carrot on the blue plate, orange on the yellow plate, "
+        "green apple on the green plate, red apple on the pink plate. The order is not important.",
+        "Load the blue plate with the carrot, the yellow plate with the orange, the green plate with the "
+        "green apple and the pink plate with the red apple, in any sequence.",
+        "It would please me greatly if the carrot were set on the blue plate, the orange on the yellow "
+        "plate, the green apple on the green plate and the red apple on the pink plate, in whatever order "
+        "suits you.",
+        "carrot on the blue plate, orange on the yellow plate, green apple on the green plate, oh and red "
+        "apple on the pink plate. no particular order"],
+    4: ["What I need first is the green apple and the orange on the yellow plate, and after that the carrot "
+        "and the red apple on the blue plate, in any order",
+        "1st green apple & orange on yellow plate, then carrot & red apple on blue plate (any order)",
+        "Phase one: green apple and orange onto the yellow plate. Phase two: carrot and red apple onto the "
+        "blue plate, either order.",
+        "Would you first see to it that the green apple and the orange are on the yellow plate? Thereafter, "
+        "the carrot and the red apple may go on the blue plate, in either order.",
+        "Start with the yellow plate, it gets the green apple and the orange. After that, the blue plate "
+        "gets the carrot and the red apple, whichever order."],
+}
+
+# Issue 28 (h68): a second development batch in five more voices (a chef on the pass, a formal email, a
+# programmer's notation, a grandparent on the phone, a coach), written before any h68 rule as well.
+DEV2_H68: dict[int, list[str]] = {
+    1: ["Green apple, blue plate. Orange, yellow plate. Go!",
+        "Dear robot, I am writing to ask that you place the green apple on the blue plate and the orange on "
+        "the yellow plate. Best regards.",
+        "place(green apple, blue plate); place(orange, yellow plate);",
+        "Now dear, the green apple, the nice shiny one, goes on the blue plate, and the orange goes on the "
+        "yellow plate, alright?",
+        "Alright team, green apple to the blue plate, orange to the yellow plate, let's go!"],
+    2: ["Pink plate: green apple. Yellow plate: orange. Blue plate: red apple. Any order, chop chop.",
+        "Could you please arrange the following: green apple on the pink plate; orange on the yellow plate; "
+        "red apple on the blue plate. The sequence is entirely up to you.",
+        "set green apple -> pink plate, orange -> yellow plate, red apple -> blue plate; order: unspecified",
+        "Oh and could you be a dear and put the green apple on the pink plate, the orange on the yellow "
+        "plate and the red apple on the blue plate? Doesn't matter which you do first.",
+        "Three moves, any order: green apple on the pink plate, orange on the yellow plate, red apple on the "
+        "blue plate."],
+    3: ["Carrot goes blue plate, orange goes yellow plate, green apple goes green plate, red apple goes pink "
+        "plate. Order's your choice.",
+        "Please find below the placements I need: the carrot on the blue plate, the orange on the yellow "
+        "plate, the green apple on the green plate and the red apple on the pink plate. These may be done "
+        "in any order.",
+        "Postcondition: carrot on blue plate, orange on yellow plate, green apple on green plate, red apple "
+        "on pink plate. Ordering: none.",
+        "Let me see... the carrot on the blue plate, the orange on the yellow plate, the green apple on the "
+        "green plate, and, oh yes, the red apple on the pink plate. However you like, dear.",
+        "Four placements, no particular order: carrot blue plate, orange yellow plate, green apple green "
+        "plate, red apple pink plate."],
+    4: ["First course: green apple and orange on the yellow plate. Second course: carrot and red apple on "
+        "the blue plate, any order.",
+        "Please begin by placing the green apple and the orange on the yellow plate. Subsequently, the "
+        "carrot and the red apple should be placed on the blue plate, in any order.",
+        "yellow plate <- {green apple, orange}; then blue plate <- {carrot, red apple}",
+        "Before you do anything else, pop the green apple and the orange on the yellow plate, dear. When "
+        "you've done that, the carrot and the red apple go on the blue plate, whichever way round.",
+        "Round one: green apple and orange onto the yellow plate. Round two: carrot and red apple onto the "
+        "blue plate. Order within each round is up to you."],
+}

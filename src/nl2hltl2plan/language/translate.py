@@ -120,18 +120,20 @@ def translate(
         rest, negations = read_negations(instruction, grounder, look)
         if negations and not rest.strip(" ,.;!?"):
             raise HTTError(nothing_to_do(instruction, [n.spec for n in negations]))
+        _refuse_tabletop_statements(instruction, world)
         try:
             res = _parse(backend, rest, grounder, strict, look, world)
-        except HTTError:
+            if negations:
+                res = _keep_negations(res, instruction, negations, grounder)
+            picked = dict(choices or {})
+            if ask is not None and res.ambiguities:
+                picked.update(ask(res.ambiguities))
+            res = account_words(apply_choices(res, picked), world)
+        except (HTTError, WorldError) as refused:
+            # the tabletop reading (checked by check 1 on the words it read), or the refusal as it was
             if (paired := _tabletop_fallback(instruction, negations, world, backend)) is None:
-                raise
+                raise _with_what_the_world_has(refused, instruction, world) from None
             res = paired
-        if negations:
-            res = _keep_negations(res, instruction, negations, grounder)
-        picked = dict(choices or {})
-        if ask is not None and res.ambiguities:
-            picked.update(ask(res.ambiguities))
-        res = account_words(apply_choices(res, picked), world)
         if res.partial and (paired := _tabletop_fallback(instruction, negations, world, backend)) is not None:
             res = paired
         with _refused_as_not_understood(res, world):
@@ -155,6 +157,32 @@ def _tabletop_fallback(
     from nl2hltl2plan.language.tabletop_pairs import tabletop_fallback
 
     return tabletop_fallback(instruction, world, backend)
+
+
+def _refuse_tabletop_statements(instruction: str, world: SceneLike | None) -> None:
+    """In the tabletop world, a clause that says where something is ("the carrot is on the blue plate")
+    with no wish or goal before it is no task: refused, naming it (`tabletop_wording.stated_not_asked`)."""
+    if not isinstance(world, World) or world.kind != "tabletop":
+        return
+    from nl2hltl2plan.language.grounding import camel_words
+    from nl2hltl2plan.language.tabletop_wording import stated_not_asked
+
+    stated = stated_not_asked(instruction, [camel_words(t) for t in world.object_types()])
+    if stated is not None:
+        raise HTTError(
+            f"'{stated}' says where something is, not what to do: ask for it (\"put ...\", \"make sure ... "
+            "is on ...\") or leave it out"
+        )
+
+
+def _with_what_the_world_has(refused: Exception, instruction: str, world: SceneLike | None) -> Exception:
+    """A refusal in the tabletop world ("no Apple in tabletop") with the objects it has for a word that
+    names several of them alone ("tabletop has the green apple and the red apple")."""
+    if not isinstance(world, World) or world.kind != "tabletop":
+        return refused
+    from nl2hltl2plan.language.tabletop_pairs import world_has
+
+    return type(refused)(f"{refused}{world_has(instruction, world)}")
 
 
 def _keep_negations(
