@@ -124,26 +124,26 @@ def plain_words(text: str, kinds: dict[str, bool], heads: dict[str, list[str]]) 
     text = _THE_FOLLOWING.sub("these", _FILLER.sub(" ", polite_frames(text)))
     text = _PAIR_VERB.sub("match", text)
     text = _APPOSITION.sub(lambda m: m[0] if _names_a_word(m["words"], kinds) else ",", text)
-    text = _corrected(text, kinds)
+    text = corrected(text, kinds)
     return _plurals_named(text, kinds, heads)
 
 
-def mention_pattern(names: Iterable[str]) -> re.Pattern[str]:
+def mention_pattern(names: Iterable[str], flags: int = 0) -> re.Pattern[str]:
     """Each name by its words ("green apple"), longest first, with a plural allowed so that a plural is
     seen (and refused) rather than missed."""
     ordered = sorted(names, key=len, reverse=True)
     alternatives = "|".join(r"\s+".join(map(re.escape, n.split())) + "s?" for n in ordered)
-    return re.compile(rf"\b(?:{alternatives})\b")
+    return re.compile(rf"\b(?:{alternatives})\b", flags)
 
 
-def _corrected(text: str, kinds: dict[str, bool]) -> str:
+def corrected(text: str, kinds: dict[str, bool]) -> str:
     """A name followed by a correction marker and a name of the same kind (a plate for a plate, an object
     for an object) is replaced by it: "on the blue plate, sorry, the yellow plate" -> "on the yellow
-    plate"."""
-    found = list(mention_pattern(kinds).finditer(text))
+    plate" (case kept; the names are found in any case)."""
+    found = list(mention_pattern(kinds, re.IGNORECASE).finditer(text))
     for first, second in reversed(list(zip(found, found[1:], strict=False))):
-        same_kind = kinds.get(_name(first[0])) == kinds.get(_name(second[0]))
-        if same_kind and _CORRECTION.match(text[first.end() : second.start()]):
+        same_kind = kinds.get(_name(first[0].lower())) == kinds.get(_name(second[0].lower()))
+        if same_kind and _CORRECTION.match(text[first.end() : second.start()].lower()):
             text = text[: first.start()] + text[second.start() :]
     return text
 

@@ -117,10 +117,9 @@ def translate(
     if backend in PARSERS:
         look = world_lookup(world) if isinstance(world, World) else None
         grounder = Grounder(types, scene or "the scene")
-        rest, negations = read_negations(instruction, grounder, look)
+        rest, negations = read_negations(_tabletop_prepared(instruction, world), grounder, look)
         if negations and not rest.strip(" ,.;!?"):
             raise HTTError(nothing_to_do(instruction, [n.spec for n in negations]))
-        _refuse_tabletop_statements(instruction, world)
         try:
             res = _parse(backend, rest, grounder, strict, look, world)
             if negations:
@@ -159,20 +158,23 @@ def _tabletop_fallback(
     return tabletop_fallback(instruction, world, backend)
 
 
-def _refuse_tabletop_statements(instruction: str, world: SceneLike | None) -> None:
-    """In the tabletop world, a clause that says where something is ("the carrot is on the blue plate")
-    with no wish or goal before it is no task: refused, naming it (`tabletop_wording.stated_not_asked`)."""
+def _tabletop_prepared(instruction: str, world: SceneLike | None) -> str:
+    """In the tabletop world: a clause that says where something is ("the carrot is on the blue plate")
+    with no wish or goal before it is no task, and is refused by name; a correction ("the blue plate,
+    sorry, the yellow plate") is applied before any reading (`tabletop_wording`)."""
     if not isinstance(world, World) or world.kind != "tabletop":
-        return
+        return instruction
     from nl2hltl2plan.language.grounding import camel_words
-    from nl2hltl2plan.language.tabletop_wording import stated_not_asked
+    from nl2hltl2plan.language.tabletop_wording import corrected, stated_not_asked
 
-    stated = stated_not_asked(instruction, [camel_words(t) for t in world.object_types()])
+    kinds = {camel_words(t): t.endswith("Plate") for t in world.object_types()}
+    stated = stated_not_asked(instruction, kinds)
     if stated is not None:
         raise HTTError(
             f"'{stated}' says where something is, not what to do: ask for it (\"put ...\", \"make sure ... "
             "is on ...\") or leave it out"
         )
+    return corrected(instruction, kinds)
 
 
 def _with_what_the_world_has(refused: Exception, instruction: str, world: SceneLike | None) -> Exception:
