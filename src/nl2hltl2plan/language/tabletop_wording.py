@@ -118,8 +118,9 @@ def polite_frames(text: str) -> str:
 
 def plain_words(text: str, kinds: dict[str, bool], heads: dict[str, list[str]]) -> str:
     """The lowercased text with ordinals spelt out, politeness that carries nothing removed, the verb
-    "pair" read as "match", corrections applied and plurals named. `kinds`: each object or plate name (in words) -> is it a plate; `heads`: a
-    head noun that several objects share ("apple") -> their names."""
+    "pair" read as "match", corrections applied and plurals named. `kinds`: each object or plate name
+    (in words) -> is it a plate; `heads`: a head noun that several objects share ("apple") -> their
+    names."""
     text = re.sub(r"\b(1st|2nd|3rd|4th)\b", lambda m: _ORDINALS[m[1]], text.lower())
     text = _THE_FOLLOWING.sub("these", _FILLER.sub(" ", polite_frames(text)))
     text = _PAIR_VERB.sub("match", text)
