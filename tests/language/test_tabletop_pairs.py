@@ -128,6 +128,7 @@ def test_other_worlds_never_get_the_fallback():
         "the carrot sits on the blue plate",
         "the carrot is on the blue plate, please put the orange on the yellow plate",  # said before the wish
         "the blue plate had the carrot, now the orange",
+        "Could you put the orange on the yellow plate? The carrot is fine where it is.",
     ],
 )
 def test_a_statement_of_where_things_are_is_refused_by_name(text):

@@ -28,7 +28,11 @@ _STATE_VERB = (
 _STATE_ADVERB = (
     r"(?:\s+(?:already|currently|still|now|just|right|sitting|lying|resting|placed|put|set|laid|kept))*"
 )
-_LOCATIVE = r"\s+(?:on|in|onto|into|upon|inside|at)\b"
+# where it is: on or in a place, or "fine where it is" / "good as it is" / "fine there"
+_LOCATIVE = (
+    r"(?:\s+(?:on|in|onto|into|upon|inside|at)\b|\s+(?:fine|ok|okay|good|alright|all\s+right)\s+"
+    r"(?:where\s+(?:it|they)\s+(?:is|are)|as\s+(?:it|they)\s+(?:is|are)|there)\b)"
+)
 _HOLDS = r"\s+(?:has|had|holds|held|contains|contained|carries|carried)\s+(?=(?:the|a|an|both|two)\b)"
 # a wish, goal or reference said before a state clause makes it something to bring about
 _GOAL_FRAME = re.compile(
