@@ -396,3 +396,35 @@ DEV2_H68: dict[int, list[str]] = {
         "Round one: green apple and orange onto the yellow plate. Round two: carrot and red apple onto the "
         "blue plate. Order within each round is up to you."],
 }
+
+# Issue 28 (h68): a third development batch, four more voices (a teenager texting, a lab protocol, a
+# voice-assistant transcript with no punctuation, questions about what is possible).
+DEV3_H68: dict[int, list[str]] = {
+    1: ["yo robot can u like put the green apple on the blue plate and the orange on the yellow plate lol",
+        "Procedure: transfer the green apple to the blue plate; transfer the orange to the yellow plate.",
+        "okay robot green apple on the blue plate orange on the yellow plate thanks",
+        "Is it possible for you to put the green apple on the blue plate and the orange on the yellow "
+        "plate?"],
+    2: ["green apple on pink plate, orange on yellow plate, red apple on blue plate, idc about the order",
+        "Transfer the green apple to the pink plate, the orange to the yellow plate and the red apple to the "
+        "blue plate. Order of transfers: arbitrary.",
+        "put the green apple on the pink plate the orange on the yellow plate and the red apple on the blue "
+        "plate in any order",
+        "Can you get the green apple onto the pink plate, the orange onto the yellow plate and the red apple "
+        "onto the blue plate? I don't mind the order."],
+    3: ["ok so carrot goes on blue plate, orange on yellow plate, green apple on green plate, red apple on "
+        "pink plate, whatever order works",
+        "Samples and destinations: carrot - blue plate; orange - yellow plate; green apple - green plate; "
+        "red apple - pink plate. No order required.",
+        "carrot blue plate orange yellow plate green apple green plate red apple pink plate any order",
+        "Would it be possible to have the carrot on the blue plate, the orange on the yellow plate, the "
+        "green apple on the green plate and the red apple on the pink plate? Any order is fine by me."],
+    4: ["first green apple n orange on the yellow plate, then carrot n red apple on the blue plate, order "
+        "dont matter for those",
+        "Stage 1: transfer the green apple and the orange to the yellow plate. Stage 2: transfer the carrot "
+        "and the red apple to the blue plate (order within a stage is arbitrary).",
+        "first the green apple and the orange on the yellow plate then the carrot and the red apple on the "
+        "blue plate",
+        "Can you do the yellow plate first, with the green apple and the orange, and then the blue plate "
+        "with the carrot and the red apple, in any order?"],
+}

@@ -82,7 +82,8 @@ def test_a_wording_the_grammar_reads_never_reaches_the_fallback(monkeypatch):
         "carrot: blue plate, carrot: pink plate",  # one object, two plates
         "the carrot or the orange: blue plate",  # a choice
         "blue plate, yellow plate: carrot",  # two plates for one object
-        "carrot: blue plate before orange: yellow plate",  # an order form not in the set
+        "carrot: blue plate; before that, orange: yellow plate",  # "before" that refers back
+        "carrot: blue plate before orange: yellow plate; those last two can go in any order",  # not last 2
         "the carrot should not end up on the blue plate",  # a negation
         "the carrots: blue plate",  # a plural (a count)
         "carrot near the blue plate",  # a relation that is no placement
@@ -213,3 +214,15 @@ def test_labels_ordinals_and_first_before_the_names_order_the_groups(text):
 )
 def test_lists_headings_asides_and_free_order_remarks_leave_the_tasks_unordered(text):
     assert _reading(text) == ([("Carrot", "BluePlate"), ("Orange", "YellowPlate")], [])
+
+
+def test_a_before_inside_a_clause_orders_what_follows_it_after_each_thing_it_names():
+    pairs, order = _reading(
+        "Make sure the green apple is on the yellow plate before the carrot or the orange goes on the blue "
+        "plate; those last two can go in any order."
+    )
+    assert pairs == [("Carrot", "BluePlate"), ("GreenApple", "YellowPlate"), ("Orange", "BluePlate")]
+    assert order == [
+        (("GreenApple", "YellowPlate"), ("Carrot", "BluePlate")),
+        (("GreenApple", "YellowPlate"), ("Orange", "BluePlate")),
+    ]

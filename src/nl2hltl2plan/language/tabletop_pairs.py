@@ -28,6 +28,7 @@ from nl2hltl2plan.language.htt_build import build_htt
 from nl2hltl2plan.language.result import LanguageResult
 from nl2hltl2plan.language.tabletop_wording import (
     free_order,
+    last_group_free,
     mention_pattern,
     plain_words,
     stated_not_asked,
@@ -51,6 +52,10 @@ _THEN = re.compile(
 _FIRST = re.compile(
     r"\b(?:first(?:ly)?|to\s+(?:begin|start)|(?:start|begin)(?:\s+(?:with|by))?|"
     r"before\s+(?:you\s+do\s+)?anything\s+else)\b"
+)
+# "A before B" inside a clause (not "Before B, A", not "before that")
+_BEFORE = re.compile(
+    r"(?<=[a-z])\s+before\s+(?!(?:that|this|those|these|it|which|then|anything|everything)\b)"
 )
 _FIRST_CLOSING = re.compile(r"\bfirst\b(?=\W*$|\s*:)")
 # words that state some other order, relation, count or negation: the fallback never guesses at them
@@ -127,8 +132,9 @@ def read_pairs(text: str, types: set[str]) -> Reading | None:
     plain = plain_words(text, kinds, _shared_heads(by_words))
     if stated_not_asked(plain, by_words) is not None:
         return None
+    plain, last_free = last_group_free(plain)
     unordered, free = free_order(plain)
-    stepped = steps_read(unordered, free)
+    stepped = steps_read(unordered, free or last_free is not None)
     pattern = mention_pattern(by_words)
     groups = None if stepped is None else _ordered_groups(stepped, pattern)
     if stepped is None or groups is None:
@@ -151,6 +157,8 @@ def read_pairs(text: str, types: set[str]) -> Reading | None:
     objects = [t.object[0] for t in tasks]
     if not tasks or len(set(objects)) != len(objects) or any(not g for g in group_ids):
         return None
+    if last_free is not None and (len(group_ids) < 2 or len(group_ids[-1]) != last_free):
+        return None  # "those last two can go in any order" must name the last group, and only it
     before = [(a, b) for i, g in enumerate(group_ids) for h in group_ids[i + 1 :] for a in g for b in h]
     return tasks, before, group_ids, stepped
 
@@ -183,19 +191,36 @@ def _heading_fits(head: str, placements: int) -> bool:
 
 
 def _ordered_groups(text: str, pattern: re.Pattern[str]) -> list[str] | None:
-    """The text cut at its "then"s; a first-marker may open the first group (before its first name) or
-    close it, and only when a "then" follows. None: no text left, or a "first" with no "then"."""
-    parts = [p for p in _THEN.split(text) if p.strip(" ,.;:!?")]
+    """The text cut at its "then"s; a first-marker may open the first group (before its first name),
+    close it, or, when the group names one plate, stand anywhere in it; and only when a "then" follows.
+    None: no text left, or a "first" with no "then"."""
+    parts = [q for p in _THEN.split(text) for q in _before_split(p, pattern) if q.strip(" ,.;:!?")]
     if not parts:
         return None
+    names = [_name(f) for f in pattern.findall(parts[0])]
     name = pattern.search(parts[0])
     opened = _FIRST.search(parts[0], 0, name.start() if name else len(parts[0]))
     opened = opened or _FIRST_CLOSING.search(parts[0])
+    if opened is None and len({n for n in names if n.endswith("plate")}) == 1:
+        opened = _FIRST.search(parts[0])  # one plate in the group: "do the yellow plate first, with ..."
     if opened is not None and len(parts) == 1:
         return None  # "first" with no "then" after it: which tasks come first is not said
     if opened is not None:
         parts[0] = parts[0][: opened.start()] + " " + parts[0][opened.end() :]
     return parts
+
+
+def _before_split(part: str, pattern: re.Pattern[str]) -> list[str]:
+    """ "A on P before B or C goes on Q": A's group, then B's and C's ("or" after "before" waits for each
+    of them). Only a "before" inside a clause, not one that opens it ("Before X, Y" puts Y first) or
+    refers back ("before that")."""
+    pieces = _BEFORE.split(part)
+    for i in range(1, len(pieces)):
+        names = list(pattern.finditer(pieces[i]))
+        for left, right in reversed(list(zip(names, names[1:], strict=False))):
+            if re.fullmatch(r"\s+or\s+(?:the\s+|a\s+|an\s+)?", pieces[i][left.end() : right.start()]):
+                pieces[i] = pieces[i][: left.end()] + " and " + pieces[i][left.end() + 4 :].lstrip()
+    return pieces
 
 
 def _shared_heads(by_words: dict[str, str]) -> dict[str, list[str]]:

@@ -61,11 +61,13 @@ def stated_not_asked(text: str, names: Iterable[str]) -> str | None:
 
 
 # ---- free-order remarks ---------------------------------------------------------------------------------
+_NOT = r"(?:doesn't|doesnt|does\s+not|don't|dont|do\s+not)"
 _INDIFFERENT = (
-    r"(?:(?:really\s+|entirely\s+|totally\s+)?(?:doesn't|does\s+not|don't|do\s+not)\s+matter(?:\s+to\s+me)?(?:\s+at\s+all)?|"
-    r"(?:is|'s)\s+(?:entirely\s+|totally\s+)?(?:free|fine|ok(?:ay)?|open|unspecified|irrelevant|unimportant|"
-    r"not\s+important|of\s+no\s+(?:consequence|importance)|up\s+to\s+you|your\s+(?:call|choice)|"
-    r"yours\s+to\s+choose))"
+    rf"(?:(?:really\s+|entirely\s+|totally\s+)?{_NOT}\s+matter(?:\s+to\s+me)?(?:\s+at\s+all)?|"
+    r"(?:is|'s)\s+(?:entirely\s+|totally\s+)?(?:free|fine|ok(?:ay)?|open|unspecified|arbitrary|irrelevant|"
+    r"unimportant|not\s+(?:important|required|needed)|of\s+no\s+(?:consequence|importance)|up\s+to\s+you|"
+    r"your\s+(?:call|choice)|yours\s+to\s+choose))"
+    r"(?:\s+(?:by|with|to|for)\s+(?:me|us|those|these|them|each(?:\s+[a-z]+)?))?"  # "fine by me", "for those"
 )
 _ORDER_NOUN = r"(?:order(?:ing)?|sequence)"
 _FREE_ORDER = re.compile(
@@ -73,19 +75,37 @@ _FREE_ORDER = re.compile(
         [
             # "in any order", "whatever order you like", "in either order", "any order works"
             rf"\b(?:in\s+)?(?:any|whatever|either|whichever)(?:\s+the)?\s+{_ORDER_NOUN}"
-            r"(?:\s+(?:is\s+(?:fine|ok(?:ay)?)|works|will\s+do|you\s+(?:like|prefer|want)|suits\s+you))?\b",
-            rf"\b(?:in\s+)?no\s+particular\s+{_ORDER_NOUN}\b",
+            r"(?:\s+(?:is\s+(?:fine|ok(?:ay)?)(?:\s+(?:by|with)\s+(?:me|us))?|works|will\s+do|"
+            r"you\s+(?:like|prefer|want)|suits\s+you))?\b",
+            # "no particular order", "no order required", "no ordering constraints"
+            rf"\b(?:in\s+)?no\s+(?:particular\s+|specific\s+|set\s+|fixed\s+)?{_ORDER_NOUN}"
+            r"(?:\s+(?:is\s+)?(?:required|needed|necessary|constraints?|requirements?))?\b",
             # "the order doesn't matter", "order within each round is up to you", "the order is of no
             # consequence", "order: unspecified", "ordering: none", "sequence: any"
             rf"\b(?:the\s+)?{_ORDER_NOUN}(?:\s+of\s+(?:those|these|them|the\s+last)(?:\s+(?:two|three|ones?))?|"
             rf"\s+(?:with)?in\s+each\s+[a-z]+)?\s*(?:{_INDIFFERENT}|:\s*(?:any|none|free|unspecified)\b)",
             # "it doesn't matter which you do first"
-            r"\b(?:it\s+)?(?:doesn't|does\s+not)\s+matter\s+which(?:\s+one)?"
+            rf"\b(?:it\s+)?{_NOT}\s+matter\s+which(?:\s+one)?"
             r"(?:\s+(?:you\s+do|goes|comes|is\s+done))?\s+first\b",
             r"\b(?:however|whichever\s+way(?:\s+round)?)\s+(?:you\s+(?:like|want|prefer)|round)\b|\bwhichever\s+way\s+round\b",
         ]
     )
 )
+
+
+# a free-order remark about the last group alone: "those last two can go in any order"
+_LAST_GROUP_FREE = re.compile(
+    r"\b(?:and\s+)?(?:those|these|the)\s+(?:last\s+)?(?P<n>two|three|four)(?:\s+ones)?\s+(?:can|may|could)\s+"
+    r"(?:go|be\s+(?:done|placed|put))\s+in\s+(?:any|either|whatever)\s+order\b"
+)
+
+
+def last_group_free(text: str) -> tuple[str, int | None]:
+    """`text` without a free-order remark about its last group, and how many things the remark names."""
+    m = _LAST_GROUP_FREE.search(text)
+    if m is None:
+        return text, None
+    return text[: m.start()] + " " + text[m.end() :], _NUMBER_WORDS[m["n"]]
 
 
 def free_order(text: str) -> tuple[str, bool]:
