@@ -184,7 +184,8 @@ def _with_what_the_world_has(refused: Exception, instruction: str, world: SceneL
         return refused
     from nl2hltl2plan.language.tabletop_pairs import world_has
 
-    return type(refused)(f"{refused}{world_has(instruction, world)}")
+    has = world_has(instruction, world)
+    return type(refused)(f"{refused}{has}") if has else refused
 
 
 def _keep_negations(
