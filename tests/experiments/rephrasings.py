@@ -273,3 +273,158 @@ VALID_H65: dict[int, list[str]] = {
         "First match the green apple and the orange with the yellow plate, then match the carrot and the "
         "red apple with the blue plate."],
 }
+
+# Issue 28 (h68): held-out rephrasings written before any h68 rule, in four writers' voices the sets above
+# do not use (a non-native speaker, a child, a terse engineer, a long-winded polite person) and framings
+# they do not (a goal state or numbered-step record, a "|" list, "I want that X is on Y", a correction
+# "no wait", asides, "lastly" inside a free-order list). Measured once before and once at the end
+# (scripts/tabletop_styles.py --batch VALID_H68), never read per sentence between; the expected signature
+# is each task's ground truth.
+VALID_H68: dict[int, list[str]] = {
+    1: ["Please you put green apple to blue plate, and orange to yellow plate.",
+        "put the green apple on the pink plate. no wait, the blue plate! and the orange on the yellow plate",
+        "Goal state: green apple on blue plate, orange on yellow plate.",
+        "If it isn't too much trouble, I would be very grateful if you could kindly place the green apple on "
+        "the blue plate and, while you are at it, the orange on the yellow plate. Thank you so much!"],
+    2: ["Green apple must go in pink plate, orange in yellow plate, red apple in blue plate. Which order, is "
+        "not important.",
+        "put the green apple on the pink plate and the orange on the yellow plate and the red apple on the "
+        "blue plate and you can do it in any order you want",
+        "pink plate: green apple | yellow plate: orange | blue plate: red apple. Order: any.",
+        "Would you be so kind as to put the green apple onto the pink plate, the orange onto the yellow "
+        "plate, and the red apple onto the blue plate? Please feel free to do them in whichever order is "
+        "most convenient for you."],
+    3: ["I want that carrot is on blue plate, orange is on yellow plate, green apple is on green plate and "
+        "red apple is on pink plate. Order you can choose.",
+        "the carrot goes on the blue plate. the orange goes on the yellow plate. the green apple goes on the "
+        "green plate because they are both green! and the red apple goes on the pink plate.",
+        "Carrot to blue plate, orange to yellow plate, green apple to green plate, red apple to pink plate. "
+        "No ordering constraints.",
+        "Hello! When you have a moment, could you please arrange things for me: the carrot should be placed "
+        "on the blue plate, the orange on the yellow plate, the green apple on the green plate and, lastly, "
+        "the red apple on the pink plate. The order really doesn't matter to me at all."],
+    4: ["First you put green apple and orange in yellow plate. After finish this, you put carrot and red "
+        "apple in blue plate, any order is ok.",
+        "first the green apple and the orange go on the yellow plate. then when thats done put the carrot "
+        "and the red apple on the blue plate. you can do those two any way you want",
+        "Step 1: green apple, orange -> yellow plate. Step 2: carrot, red apple -> blue plate. Within each "
+        "step, any order.",
+        "I'd appreciate it if you could start by putting the green apple and the orange on the yellow plate. "
+        "Once you have finished with those, please go ahead and put the carrot and the red apple on the "
+        "blue plate, in whichever order you prefer, of course."],
+}
+
+# Issue 28 (h68): rephrasings for developing h68's rules (read per sentence), in voices neither VALID_H68
+# nor the older sets use: text messages, a teacher's handout, a logistics operator, a formal letter, and
+# someone thinking aloud (corrections, asides, afterthoughts). Task 4's first wording is the lead's
+# refused example.
+DEV_H68: dict[int, list[str]] = {
+    1: ["pls green apple on blue plate & orange on yellow plate thx",
+        "1) Place the green apple on the blue plate. 2) Place the orange on the yellow plate. You may do "
+        "these in any order.",
+        "Deliver the green apple to the blue plate and the orange to the yellow plate.",
+        "Kindly see that the green apple is put upon the blue plate and the orange upon the yellow plate.",
+        "put the orange on the blue plate, sorry, the yellow plate, and the green apple on the blue plate",
+        "Final layout: blue plate has the green apple, yellow plate has the orange.",
+        "The blue plate is for the green apple; the yellow plate is for the orange."],
+    2: ["green apple on pink plate, orange on yellow plate, red apple on blue plate. whatever order u want",
+        "Here is what I need: the green apple on the pink plate, the orange on the yellow plate, the red "
+        "apple on the blue plate. Any order will do.",
+        "Route: green apple to pink plate, orange to yellow plate, red apple to blue plate. Sequence: any.",
+        "I should like the green apple to be on the pink plate, the orange on the yellow plate and the red "
+        "apple on the blue plate; the order is of no consequence.",
+        "the green apple, which is a bit bruised, goes on the pink plate, the orange on the yellow plate, "
+        "and the red apple on the blue plate, any order"],
+    3: ["carrot->blue plate, orange->yellow plate, green apple->green plate, red apple->pink plate. any "
+        "order ok",
+        "Your job is to put each item on its plate: carrot on the blue plate, orange on the yellow plate, "
+        "green apple on the green plate, red apple on the pink plate. The order is not important.",
+        "Load the blue plate with the carrot, the yellow plate with the orange, the green plate with the "
+        "green apple and the pink plate with the red apple, in any sequence.",
+        "It would please me greatly if the carrot were set on the blue plate, the orange on the yellow "
+        "plate, the green apple on the green plate and the red apple on the pink plate, in whatever order "
+        "suits you.",
+        "carrot on the blue plate, orange on the yellow plate, green apple on the green plate, oh and red "
+        "apple on the pink plate. no particular order"],
+    4: ["What I need first is the green apple and the orange on the yellow plate, and after that the carrot "
+        "and the red apple on the blue plate, in any order",
+        "1st green apple & orange on yellow plate, then carrot & red apple on blue plate (any order)",
+        "Phase one: green apple and orange onto the yellow plate. Phase two: carrot and red apple onto the "
+        "blue plate, either order.",
+        "Would you first see to it that the green apple and the orange are on the yellow plate? Thereafter, "
+        "the carrot and the red apple may go on the blue plate, in either order.",
+        "Start with the yellow plate, it gets the green apple and the orange. After that, the blue plate "
+        "gets the carrot and the red apple, whichever order."],
+}
+
+# Issue 28 (h68): a second development batch in five more voices (a chef on the pass, a formal email, a
+# programmer's notation, a grandparent on the phone, a coach), written before any h68 rule as well.
+DEV2_H68: dict[int, list[str]] = {
+    1: ["Green apple, blue plate. Orange, yellow plate. Go!",
+        "Dear robot, I am writing to ask that you place the green apple on the blue plate and the orange on "
+        "the yellow plate. Best regards.",
+        "place(green apple, blue plate); place(orange, yellow plate);",
+        "Now dear, the green apple, the nice shiny one, goes on the blue plate, and the orange goes on the "
+        "yellow plate, alright?",
+        "Alright team, green apple to the blue plate, orange to the yellow plate, let's go!"],
+    2: ["Pink plate: green apple. Yellow plate: orange. Blue plate: red apple. Any order, chop chop.",
+        "Could you please arrange the following: green apple on the pink plate; orange on the yellow plate; "
+        "red apple on the blue plate. The sequence is entirely up to you.",
+        "set green apple -> pink plate, orange -> yellow plate, red apple -> blue plate; order: unspecified",
+        "Oh and could you be a dear and put the green apple on the pink plate, the orange on the yellow "
+        "plate and the red apple on the blue plate? Doesn't matter which you do first.",
+        "Three moves, any order: green apple on the pink plate, orange on the yellow plate, red apple on the "
+        "blue plate."],
+    3: ["Carrot goes blue plate, orange goes yellow plate, green apple goes green plate, red apple goes pink "
+        "plate. Order's your choice.",
+        "Please find below the placements I need: the carrot on the blue plate, the orange on the yellow "
+        "plate, the green apple on the green plate and the red apple on the pink plate. These may be done "
+        "in any order.",
+        "Postcondition: carrot on blue plate, orange on yellow plate, green apple on green plate, red apple "
+        "on pink plate. Ordering: none.",
+        "Let me see... the carrot on the blue plate, the orange on the yellow plate, the green apple on the "
+        "green plate, and, oh yes, the red apple on the pink plate. However you like, dear.",
+        "Four placements, no particular order: carrot blue plate, orange yellow plate, green apple green "
+        "plate, red apple pink plate."],
+    4: ["First course: green apple and orange on the yellow plate. Second course: carrot and red apple on "
+        "the blue plate, any order.",
+        "Please begin by placing the green apple and the orange on the yellow plate. Subsequently, the "
+        "carrot and the red apple should be placed on the blue plate, in any order.",
+        "yellow plate <- {green apple, orange}; then blue plate <- {carrot, red apple}",
+        "Before you do anything else, pop the green apple and the orange on the yellow plate, dear. When "
+        "you've done that, the carrot and the red apple go on the blue plate, whichever way round.",
+        "Round one: green apple and orange onto the yellow plate. Round two: carrot and red apple onto the "
+        "blue plate. Order within each round is up to you."],
+}
+
+# Issue 28 (h68): a third development batch, four more voices (a teenager texting, a lab protocol, a
+# voice-assistant transcript with no punctuation, questions about what is possible).
+DEV3_H68: dict[int, list[str]] = {
+    1: ["yo robot can u like put the green apple on the blue plate and the orange on the yellow plate lol",
+        "Procedure: transfer the green apple to the blue plate; transfer the orange to the yellow plate.",
+        "okay robot green apple on the blue plate orange on the yellow plate thanks",
+        "Is it possible for you to put the green apple on the blue plate and the orange on the yellow "
+        "plate?"],
+    2: ["green apple on pink plate, orange on yellow plate, red apple on blue plate, idc about the order",
+        "Transfer the green apple to the pink plate, the orange to the yellow plate and the red apple to the "
+        "blue plate. Order of transfers: arbitrary.",
+        "put the green apple on the pink plate the orange on the yellow plate and the red apple on the blue "
+        "plate in any order",
+        "Can you get the green apple onto the pink plate, the orange onto the yellow plate and the red apple "
+        "onto the blue plate? I don't mind the order."],
+    3: ["ok so carrot goes on blue plate, orange on yellow plate, green apple on green plate, red apple on "
+        "pink plate, whatever order works",
+        "Samples and destinations: carrot - blue plate; orange - yellow plate; green apple - green plate; "
+        "red apple - pink plate. No order required.",
+        "carrot blue plate orange yellow plate green apple green plate red apple pink plate any order",
+        "Would it be possible to have the carrot on the blue plate, the orange on the yellow plate, the "
+        "green apple on the green plate and the red apple on the pink plate? Any order is fine by me."],
+    4: ["first green apple n orange on the yellow plate, then carrot n red apple on the blue plate, order "
+        "dont matter for those",
+        "Stage 1: transfer the green apple and the orange to the yellow plate. Stage 2: transfer the carrot "
+        "and the red apple to the blue plate (order within a stage is arbitrary).",
+        "first the green apple and the orange on the yellow plate then the carrot and the red apple on the "
+        "blue plate",
+        "Can you do the yellow plate first, with the green apple and the orange, and then the blue plate "
+        "with the carrot and the red apple, in any order?"],
+}

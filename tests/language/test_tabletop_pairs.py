@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import pytest
 
-from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.errors import HTTError, WorldError
 from nl2hltl2plan.language.tabletop_pairs import read_pairs
 from nl2hltl2plan.language.task_specs import transitive_closure
 from nl2hltl2plan.language.translate import translate
@@ -82,7 +82,8 @@ def test_a_wording_the_grammar_reads_never_reaches_the_fallback(monkeypatch):
         "carrot: blue plate, carrot: pink plate",  # one object, two plates
         "the carrot or the orange: blue plate",  # a choice
         "blue plate, yellow plate: carrot",  # two plates for one object
-        "carrot: blue plate before orange: yellow plate",  # an order form not in the set
+        "carrot: blue plate; before that, orange: yellow plate",  # "before" that refers back
+        "carrot: blue plate before orange: yellow plate; those last two can go in any order",  # not last 2
         "the carrot should not end up on the blue plate",  # a negation
         "the carrots: blue plate",  # a plural (a count)
         "carrot near the blue plate",  # a relation that is no placement
@@ -93,6 +94,11 @@ def test_a_wording_the_grammar_reads_never_reaches_the_fallback(monkeypatch):
         "carrot: blue plate, orange: yellow plate first",  # which one first is not said
         "the blue plate had the carrot, now the orange",  # how things were (the lead's probe), no request
         "the carrot is already on the blue plate. orange: yellow plate",  # a statement of where it is
+        "put the three apples on the blue plate",  # a count the world does not have
+        "Step 2: carrot: blue plate. Step 1: orange: yellow plate.",  # labels out of turn
+        "1) carrot: blue plate 2) orange: yellow plate",  # list numbers, no word on their order
+        "Three moves: carrot: blue plate, orange: yellow plate",  # a heading's count that is not theirs
+        "put the carrot next to the blue plate, then the orange on the yellow plate",  # "next to"
     ],
 )
 def test_near_misses_stay_refused(text):
@@ -112,3 +118,124 @@ def test_other_worlds_never_get_the_fallback():
 
     kitchen = load_world("FloorPlan1")
     assert tabletop_fallback("carrot: blue plate, orange: yellow plate", kitchen, "offline") is None
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "the carrot is on the blue plate",
+        "The carrot's on the blue plate.",
+        "the carrot has been put on the blue plate",
+        "the carrot sits on the blue plate",
+        "the carrot is on the blue plate, please put the orange on the yellow plate",  # said before the wish
+        "the blue plate had the carrot, now the orange",
+        "Could you put the orange on the yellow plate? The carrot is fine where it is.",
+    ],
+)
+def test_a_statement_of_where_things_are_is_refused_by_name(text):
+    with pytest.raises(HTTError, match="says where something is"):
+        translate(text, WORLD, build=False)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "The blue plate is for the carrot.",  # a purpose, no state
+        "Make sure the carrot is on the blue plate.",
+        "I want that carrot is on blue plate.",
+        "Final layout: blue plate has the carrot.",
+    ],
+)
+def test_a_state_under_a_wish_or_goal_is_a_task(text):
+    assert _reading(text) == ([("Carrot", "BluePlate")], [])
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "put the apples on the blue plate",
+        "Both apples go on the blue plate.",
+        "the two apples: blue plate",
+    ],
+)
+def test_the_plural_of_a_shared_head_noun_names_every_such_object(text):
+    assert _reading(text) == ([("GreenApple", "BluePlate"), ("RedApple", "BluePlate")], [])
+
+
+def test_an_object_word_that_names_several_is_refused_with_what_the_world_has():
+    with pytest.raises(WorldError, match="tabletop has the green apple and the red apple"):
+        translate("put the apple on the blue plate", WORLD, build=False)
+
+
+@pytest.mark.parametrize(
+    ("text", "pairs"),
+    [
+        ("put the orange on the blue plate, sorry, the yellow plate", [("Orange", "YellowPlate")]),
+        ("the carrot on the pink plate. No wait, the blue plate!", [("Carrot", "BluePlate")]),
+        ("put the carrot, I mean the orange, on the blue plate", [("Orange", "BluePlate")]),
+    ],
+)
+def test_a_correction_keeps_the_second_name(text, pairs):
+    assert _reading(text) == (pairs, [])
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Phase one: carrot and orange onto the yellow plate. Phase two: green apple onto the blue plate.",
+        "1st carrot & orange on yellow plate, then green apple on blue plate",
+        "What I need first is the carrot and the orange on the yellow plate, and after that the green apple "
+        "on the blue plate",
+        "Before anything else, the carrot and the orange go on the yellow plate. When you've done that, "
+        "the green apple goes on the blue plate.",
+    ],
+)
+def test_labels_ordinals_and_first_before_the_names_order_the_groups(text):
+    pairs, order = _reading(text)
+    assert pairs == [("Carrot", "YellowPlate"), ("GreenApple", "BluePlate"), ("Orange", "YellowPlate")]
+    assert order == [
+        (("Carrot", "YellowPlate"), ("GreenApple", "BluePlate")),
+        (("Orange", "YellowPlate"), ("GreenApple", "BluePlate")),
+    ]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "1) Place the carrot on the blue plate. 2) Place the orange on the yellow plate. You may do these in "
+        "any order.",
+        "Here is what I need: the carrot on the blue plate, the orange on the yellow plate. The order is of "
+        "no consequence.",
+        "Two moves, no particular order: carrot blue plate, orange yellow plate.",
+        "It would please me if the carrot were set on the blue plate and the orange on the yellow plate.",
+        "Now dear, the carrot, the long one, goes on the blue plate, and the orange goes on the yellow plate",
+        "Pair the carrot with the blue plate and the orange with the yellow plate.",
+    ],
+)
+def test_lists_headings_asides_and_free_order_remarks_leave_the_tasks_unordered(text):
+    assert _reading(text) == ([("Carrot", "BluePlate"), ("Orange", "YellowPlate")], [])
+
+
+def test_a_before_inside_a_clause_orders_what_follows_it_after_each_thing_it_names():
+    pairs, order = _reading(
+        "Make sure the green apple is on the yellow plate before the carrot or the orange goes on the blue "
+        "plate; those last two can go in any order."
+    )
+    assert pairs == [("Carrot", "BluePlate"), ("GreenApple", "YellowPlate"), ("Orange", "BluePlate")]
+    assert order == [
+        (("GreenApple", "YellowPlate"), ("Carrot", "BluePlate")),
+        (("GreenApple", "YellowPlate"), ("Orange", "BluePlate")),
+    ]
+
+
+def test_a_free_order_remark_that_frees_no_pair_the_thens_leave_is_not_dropped():
+    # "then" orders the two; "either order is ok" says they are free: never one reading of the two in silence
+    assert _reading("Green apple on blue plate, then orange on yellow plate - either order is ok.") in (
+        None,
+        ([("GreenApple", "BluePlate"), ("Orange", "YellowPlate")], []),
+    )
+    # the remark frees a pair inside a group: the groups stay ordered
+    pairs, order = _reading(
+        "Green apple and orange on the yellow plate first, then the carrot on the blue plate, in any order"
+    ) or ([], [])
+    assert (("GreenApple", "YellowPlate"), ("Carrot", "BluePlate")) in order

@@ -346,6 +346,7 @@ _WHERE_IT_IS = frozenset({"is", "are", "was", "were", "sits", "sitting", "lies",
 _DESTINATION = frozenset({"to", "into", "onto"})
 _PREPOSITIONS = LOCATIVE | _DESTINATION
 _STATE_REFERENCE = frozenset({"after", "until", "till", "once", "when", "before", "whenever", "unless"})
+_WISH = frozenset({"want", "wants", "sure", "ensure", "should", "must", "need", "needs"})
 
 
 def _a_stop(m: Mention, toks: list[tuple[str, int, int]]) -> bool:
@@ -356,8 +357,9 @@ def _a_stop(m: Mention, toks: list[tuple[str, int, int]]) -> bool:
     if i < 0 or toks[i][0] not in _PREPOSITIONS:
         return True
     before = toks[i - 1][0] if i > 0 else ""
-    if before in _WHERE_IT_IS:  # "after / until the mug is in the sink": a placement it refers to
-        return bool({w for w, _, _ in toks[max(0, i - 6) : i - 1]} & _STATE_REFERENCE)
+    if before in _WHERE_IT_IS:  # "after / until the mug is in the sink": a placement it refers to;
+        # "I want that the carrot is on the plate": one it asks for
+        return bool({w for w, _, _ in toks[max(0, i - 6) : i - 1]} & (_STATE_REFERENCE | _WISH))
     return toks[i][0] not in ("from", "off") and before not in ("out", "from")
 
 

@@ -92,6 +92,8 @@ def _phrase_pattern(phrase: str) -> str:
             item = f"(?:{alternatives(']' if tok == '[' else ')')})" if tok in "([" else _word(tok)
             if tok == "[":
                 out += f"(?:\\s+{item})?" if started else f"(?:{item}\\s+)?"
+            elif tok == ":":  # a label's colon follows its word: "ordering: none"
+                out += "\\s*:"
             else:
                 out, started = out + (f"\\s+{item}" if started else item), True
         return out

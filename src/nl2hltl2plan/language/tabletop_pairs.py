@@ -4,10 +4,12 @@ refuses an instruction in the tabletop world.
 The tabletop world has one kind of task: an object goes on a plate. Whatever the phrasing ("the blue
 plate gets the carrot", "carrot: blue plate", "the carrot should end up on the blue plate"), each
 object mention is paired with the plate mention beside it, the object first or the plate first as the
-sentence starts. The order is read from a small set of forms only: no order word (or a free-order
-remark) leaves the tasks unordered; "first ... then / after that / once that's done ..." orders the
-groups; any other order, relation or count word refuses. The caller (`translate`) still runs check 1
-(`accounting.account`) on the reading and keeps the grammar's refusal unless every word is used.
+sentence starts. The words around the names are read first (`tabletop_wording`: statements, free-order
+remarks, corrections, plurals, step labels). The order is read from a small set of forms only: no order
+word (or a free-order remark) leaves the tasks unordered; "first ... then / after that / once that's
+done ..." (or "Step 1: ... Step 2: ...") orders the groups; any other order, relation or count word
+refuses. Check 1 (`accounting.account`) then judges the words read, and the grammar's refusal stands
+unless every word is used.
 
 >>> [(t.object, t.receptacle) for t in read_pairs("carrot: blue plate", {"Carrot", "BluePlate"})[0]]
 [(['Carrot'], ['BluePlate'])]
@@ -19,58 +21,80 @@ from __future__ import annotations
 import re
 from collections import Counter
 
+from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.accounting import account
-from nl2hltl2plan.language.content_words import free_order_phrase
 from nl2hltl2plan.language.grounding import camel_words
 from nl2hltl2plan.language.htt_build import build_htt
 from nl2hltl2plan.language.result import LanguageResult
+from nl2hltl2plan.language.tabletop_wording import (
+    free_order,
+    last_group_free,
+    mention_pattern,
+    plain_words,
+    stated_not_asked,
+    steps_read,
+)
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter
 from nl2hltl2plan.worlds.world import World
 
-# a remark that leaves the order free ("in any order", "the order doesn't matter"; the shared list,
-# content_words.free_order_phrase): read, then removed
-_FREE_ORDER = re.compile(rf"\b{free_order_phrase()}\b")
-# where one ordered group ends and the next begins
-_THEN = re.compile(r"\b(?:and\s+)?(?:then|after\s+that|afterwards|once\s+that(?:'s|\s+is)\s+done)\b")
-# how the first group is marked: "first" / "to begin" at its start, or "first" closing it or its heading
-# ("yellow plate first: ...")
-_FIRST = re.compile(r"^\W*(?:first(?:ly)?|to\s+(?:begin|start))\b|\bfirst\b(?=\W*$|\s*:)")
+_DONE = r"(?:done|finished|complete[d]?)"
+_THAT = r"(?:that|this|those|these|them|it)"
+# where one ordered group ends and the next begins: "then", "after that", "once that's done", "when
+# you've done that", "subsequently", "next" (not "next to")
+_THEN = re.compile(
+    r"\b(?:(?:and\s+)?then|after\s+(?:that|this|those|these|which)|afterwards?|thereafter|subsequently|"
+    r"next(?!\s+to\b)|second(?:ly)?|"
+    rf"(?:once|when|after)\s+(?:{_THAT}(?:'s|s|\s+is|\s+are|'re)\s+{_DONE}|"
+    rf"you(?:'ve|\s+have|'re|\s+are)\s+{_DONE}(?:\s+(?:with\s+)?{_THAT})?|{_DONE}))\b"
+)
+# how the first group is marked: "first" / "to begin" / "start with" / "before anything else" before its
+# first name ("What I need first is ..."), or "first" closing it or its heading ("yellow plate first: ...")
+_FIRST = re.compile(
+    r"\b(?:first(?:ly)?|to\s+(?:begin|start)|(?:start|begin)(?:\s+(?:with|by))?|"
+    r"before\s+(?:you\s+do\s+)?anything\s+else)\b"
+)
+# "A before B" inside a clause (not "Before B, A", not "before that")
+_BEFORE = re.compile(
+    r"(?<=[a-z])\s+before\s+(?!(?:that|this|those|these|it|which|then|anything|everything)\b)"
+)
+_FIRST_CLOSING = re.compile(r"\bfirst\b(?=\W*$|\s*:)")
 # words that state some other order, relation, count or negation: the fallback never guesses at them
 _REFUSED = re.compile(
     r"\b(?:not|no|never|don't|dont|n't|without|except|unless|until|before|after|while|when|once|first|"
-    r"last|finally|next|second|third|then|from|off|out|away|back|near|beside|besides|by|behind|"
+    r"last|lastly|finally|next|second|third|then|from|off|out|away|back|near|beside|besides|by|behind|"
     r"under|between|instead|either|or|but|only|both|all|each|every|one|two|three|four|remove|swap|"
     r"keep|leave|empty|clear|stack)\b|\d"
 )
 _SENTENCE = re.compile(r"[.;!?]+")
-# a sentence that says how things are or were ("the blue plate had the carrot") asks for nothing, unless
-# it says what to do too ("make sure the carrot is on the blue plate")
-_STATEMENT = re.compile(r"\b(?:is|are|was|were|had|has|have|already|currently|still)\b")
-_REQUEST = re.compile(
-    r"\b(?:make\s+sure|ensure|want|needs?|should|must|please|put|place|set|move|gets?|go|goes|lands?|ends?\s+up)\b"
+# a heading before a colon that names no object or plate: "Here is what I need:", "Postcondition:",
+# "Your job is to put each item on its plate:", "Three moves:" (its count must be the placements listed)
+_HEADING = re.compile(r"^(?P<head>[^:]*):")
+_GENERIC_QUANTITY = re.compile(
+    r"\b(?:each|every|all(?:\s+the)?)\s+(?:item|thing|fruit|object|piece|one)s?\b|"
+    r"\b(?P<count>two|three|four)\s+(?:[a-z]+\s+)?(?:items?|things?|fruits?|objects?|placements?|moves?|"
+    r"pieces?|tasks?)\b"
 )
+_COUNTS = {"two": 2, "three": 3, "four": 4}
 
-
-def _mention_pattern(types: set[str]) -> re.Pattern[str]:
-    """Each object and plate type by its words ("green apple", "blue plate"), longest first, with a
-    plural allowed so that a plural is seen (and refused) rather than missed."""
-    names = sorted((camel_words(t) for t in types), key=len, reverse=True)
-    alternatives = "|".join(r"\s+".join(map(re.escape, n.split())) + "s?" for n in names)
-    return re.compile(rf"\b(?:{alternatives})\b")
+Reading = tuple[list[BaseTaskSpec], list[tuple[str, str]], list[list[str]], str]
 
 
 def tabletop_fallback(instruction: str, world: World, backend: str) -> LanguageResult | None:
     """The pairs reading of an instruction the grammar refused in the tabletop world, as a result for
     `translate` to finish; None (the grammar's refusal stands) in any other world, when the text is not
-    one of the forms `read_pairs` knows, or when check 1 finds a content word the reading does not use."""
+    one of the forms `read_pairs` knows, or when check 1 finds a content word the reading does not use
+    (in the words read: corrections applied, plurals named, free-order remarks and step labels read)."""
     if world.kind != "tabletop":
         return None
     read = read_pairs(instruction, set(world.object_types()))
     if read is None:
         return None
-    tasks, before, groups = read
+    tasks, before, groups, words_read = read
     instances = Counter(o.type for o in world.objects.values() if o.present)
-    if account(instruction, tasks, before, instances, world.name):
+    try:
+        if account(words_read, tasks, before, instances, world.name):
+            return None
+    except HTTError:  # a count or order check 1 rejects in the words read: the grammar's refusal stands
         return None
     htt, task_node, leaf_task = build_htt(instruction, tasks, before, groups if len(groups) > 1 else None)
     return LanguageResult(
@@ -85,30 +109,42 @@ def tabletop_fallback(instruction: str, world: World, backend: str) -> LanguageR
     )
 
 
-Reading = tuple[list[BaseTaskSpec], list[tuple[str, str]], list[list[str]]]
+def world_has(instruction: str, world: World) -> str:
+    """What the world has for a head noun that several of its objects share, where the instruction uses
+    it: " (tabletop has the green apple and the red apple)", or ""."""
+    by_words = {camel_words(t): t for t in world.object_types()}
+    heads, modifiers = _shared_heads(by_words), {w for n in by_words for w in n.split()[:-1]}
+    words = re.findall(r"[a-z]+", instruction.lower())
+    alone = {w.removesuffix("s") for i, w in enumerate(words) if i == 0 or words[i - 1] not in modifiers}
+    used = [h for h in heads if h in alone]
+    if not used:
+        return ""
+    said = "; ".join(" and ".join(f"the {n}" for n in heads[h]) for h in used)
+    return f" ({world.name} has {said})"
 
 
 def read_pairs(text: str, types: set[str]) -> Reading | None:
-    """Place tasks (object -> plate), their order and their ordered groups (task ids), or None when the
-    text is not one of the forms this reading knows, an object is named twice, or an object or plate
-    stays unpaired."""
+    """Place tasks (object -> plate), their order, their ordered groups (task ids) and the words read
+    (for check 1), or None when the text is not one of the forms this reading knows, states where
+    something is, names an object twice, or leaves an object or plate unpaired."""
     by_words = {camel_words(t): t for t in types}
-    pattern = _mention_pattern(types)
-    groups = _ordered_groups(_FREE_ORDER.sub(" ", text.lower()))
-    if groups is None:
+    kinds = {w: _is_plate(t) for w, t in by_words.items()}
+    plain = plain_words(text, kinds, _shared_heads(by_words))
+    if stated_not_asked(plain, by_words) is not None:
+        return None
+    plain, last_free = last_group_free(plain)
+    unordered, free = free_order(plain)
+    stepped = steps_read(unordered, free or last_free is not None)
+    pattern = mention_pattern(by_words)
+    groups = None if stepped is None else _ordered_groups(stepped, pattern)
+    if stepped is None or groups is None:
         return None
     tasks: list[BaseTaskSpec] = []
     group_ids: list[list[str]] = []
     for group in groups:
         ids: list[str] = []
         for sentence in _SENTENCE.split(group):
-            rest = pattern.sub(" ", sentence)
-            if _REFUSED.search(rest) or (_STATEMENT.search(rest) and not _REQUEST.search(rest)):
-                return None
-            found = [m.group(0) for m in pattern.finditer(sentence)]
-            if any(" ".join(f.split()) not in by_words for f in found):
-                return None  # a plural: a count this reading does not take
-            pairs = _paired([by_words[" ".join(f.split())] for f in found])
+            pairs = _sentence_pairs(sentence, pattern, by_words)
             if pairs is None:
                 return None
             for obj, plate in pairs:
@@ -121,22 +157,85 @@ def read_pairs(text: str, types: set[str]) -> Reading | None:
     objects = [t.object[0] for t in tasks]
     if not tasks or len(set(objects)) != len(objects) or any(not g for g in group_ids):
         return None
+    if last_free is not None and (len(group_ids) < 2 or len(group_ids[-1]) != last_free):
+        return None  # "those last two can go in any order" must name the last group, and only it
+    if free and all(len(g) < 2 for g in group_ids):
+        return None  # "A, then B - either order is ok": the remark frees no pair the "then"s leave unordered
     before = [(a, b) for i, g in enumerate(group_ids) for h in group_ids[i + 1 :] for a in g for b in h]
-    return tasks, before, group_ids
+    return tasks, before, group_ids, stepped
 
 
-def _ordered_groups(text: str) -> list[str] | None:
-    """The text cut at its "then"s; "first" may open only the first group, and only when a "then"
-    follows. None: no text left, or a "first" with no "then"."""
-    parts = [p for p in _THEN.split(text) if p.strip(" ,.;:!?")]
+def _sentence_pairs(
+    sentence: str, pattern: re.Pattern[str], by_words: dict[str, str]
+) -> list[tuple[str, str]] | None:
+    """The (object, plate) pairs of one sentence of a group, after its heading; None when a word outside
+    the names states an order, relation, count or negation, or a name is a plural."""
+    heading = _HEADING.match(sentence)
+    if heading and not pattern.search(heading["head"]):
+        listed = [_name(f) for f in pattern.findall(sentence[heading.end() :])]
+        pairs = _paired([by_words[f] for f in listed if f in by_words]) or []
+        if not _heading_fits(heading["head"], len(pairs)):
+            return None
+        sentence = sentence[heading.end() :]
+    found = [_name(f) for f in pattern.findall(sentence)]
+    if _REFUSED.search(pattern.sub(" ", sentence)) or any(f not in by_words for f in found):
+        return None  # an order, relation, count or negation word, or a plural (a count not taken here)
+    return _paired([by_words[f] for f in found])
+
+
+def _heading_fits(head: str, placements: int) -> bool:
+    """A heading may quantify the things listed after it ("each item", "three moves"), with their count;
+    any other order, count or negation word in it refuses."""
+    for m in _GENERIC_QUANTITY.finditer(head):
+        if m["count"] and _COUNTS[m["count"]] != placements:
+            return False
+    return _REFUSED.search(_GENERIC_QUANTITY.sub(" ", head)) is None
+
+
+def _ordered_groups(text: str, pattern: re.Pattern[str]) -> list[str] | None:
+    """The text cut at its "then"s; a first-marker may open the first group (before its first name),
+    close it, or, when the group names one plate, stand anywhere in it; and only when a "then" follows.
+    None: no text left, or a "first" with no "then"."""
+    parts = [q for p in _THEN.split(text) for q in _before_split(p, pattern) if q.strip(" ,.;:!?")]
     if not parts:
         return None
-    opened = _FIRST.search(parts[0])
+    names = [_name(f) for f in pattern.findall(parts[0])]
+    name = pattern.search(parts[0])
+    opened = _FIRST.search(parts[0], 0, name.start() if name else len(parts[0]))
+    opened = opened or _FIRST_CLOSING.search(parts[0])
+    if opened is None and len({n for n in names if n.endswith("plate")}) == 1:
+        opened = _FIRST.search(parts[0])  # one plate in the group: "do the yellow plate first, with ..."
     if opened is not None and len(parts) == 1:
         return None  # "first" with no "then" after it: which tasks come first is not said
     if opened is not None:
         parts[0] = parts[0][: opened.start()] + " " + parts[0][opened.end() :]
     return parts
+
+
+def _before_split(part: str, pattern: re.Pattern[str]) -> list[str]:
+    """ "A on P before B or C goes on Q": A's group, then B's and C's ("or" after "before" waits for each
+    of them). Only a "before" inside a clause, not one that opens it ("Before X, Y" puts Y first) or
+    refers back ("before that")."""
+    pieces = _BEFORE.split(part)
+    for i in range(1, len(pieces)):
+        names = list(pattern.finditer(pieces[i]))
+        for left, right in reversed(list(zip(names, names[1:], strict=False))):
+            if re.fullmatch(r"\s+or\s+(?:the\s+|a\s+|an\s+)?", pieces[i][left.end() : right.start()]):
+                pieces[i] = pieces[i][: left.end()] + " and " + pieces[i][left.end() + 4 :].lstrip()
+    return pieces
+
+
+def _shared_heads(by_words: dict[str, str]) -> dict[str, list[str]]:
+    """Head nouns that several objects share ("apple": green apple, red apple); plates are not counted."""
+    heads: dict[str, list[str]] = {}
+    for words, t in sorted(by_words.items()):
+        if not _is_plate(t):
+            heads.setdefault(words.split()[-1], []).append(words)
+    return {h: names for h, names in heads.items() if len(names) > 1}
+
+
+def _name(found: str) -> str:
+    return " ".join(found.split())
 
 
 def _paired(types_in_order: list[str]) -> list[tuple[str, str]] | None:

@@ -117,21 +117,22 @@ def translate(
     if backend in PARSERS:
         look = world_lookup(world) if isinstance(world, World) else None
         grounder = Grounder(types, scene or "the scene")
-        rest, negations = read_negations(instruction, grounder, look)
+        rest, negations = read_negations(_tabletop_prepared(instruction, world), grounder, look)
         if negations and not rest.strip(" ,.;!?"):
             raise HTTError(nothing_to_do(instruction, [n.spec for n in negations]))
         try:
             res = _parse(backend, rest, grounder, strict, look, world)
-        except HTTError:
+            if negations:
+                res = _keep_negations(res, instruction, negations, grounder)
+            picked = dict(choices or {})
+            if ask is not None and res.ambiguities:
+                picked.update(ask(res.ambiguities))
+            res = account_words(apply_choices(res, picked), world)
+        except (HTTError, WorldError) as refused:
+            # the tabletop reading (checked by check 1 on the words it read), or the refusal as it was
             if (paired := _tabletop_fallback(instruction, negations, world, backend)) is None:
-                raise
+                raise _with_what_the_world_has(refused, instruction, world) from None
             res = paired
-        if negations:
-            res = _keep_negations(res, instruction, negations, grounder)
-        picked = dict(choices or {})
-        if ask is not None and res.ambiguities:
-            picked.update(ask(res.ambiguities))
-        res = account_words(apply_choices(res, picked), world)
         if res.partial and (paired := _tabletop_fallback(instruction, negations, world, backend)) is not None:
             res = paired
         with _refused_as_not_understood(res, world):
@@ -155,6 +156,36 @@ def _tabletop_fallback(
     from nl2hltl2plan.language.tabletop_pairs import tabletop_fallback
 
     return tabletop_fallback(instruction, world, backend)
+
+
+def _tabletop_prepared(instruction: str, world: SceneLike | None) -> str:
+    """In the tabletop world: a clause that says where something is ("the carrot is on the blue plate")
+    with no wish or goal before it is no task, and is refused by name; a correction ("the blue plate,
+    sorry, the yellow plate") is applied before any reading (`tabletop_wording`)."""
+    if not isinstance(world, World) or world.kind != "tabletop":
+        return instruction
+    from nl2hltl2plan.language.grounding import camel_words
+    from nl2hltl2plan.language.tabletop_wording import corrected, stated_not_asked
+
+    kinds = {camel_words(t): t.endswith("Plate") for t in world.object_types()}
+    stated = stated_not_asked(instruction, kinds)
+    if stated is not None:
+        raise HTTError(
+            f"'{stated}' says where something is, not what to do: ask for it (\"put ...\", \"make sure ... "
+            "is on ...\") or leave it out"
+        )
+    return corrected(instruction, kinds)
+
+
+def _with_what_the_world_has(refused: Exception, instruction: str, world: SceneLike | None) -> Exception:
+    """A refusal in the tabletop world ("no Apple in tabletop") with the objects it has for a word that
+    names several of them alone ("tabletop has the green apple and the red apple")."""
+    if not isinstance(world, World) or world.kind != "tabletop":
+        return refused
+    from nl2hltl2plan.language.tabletop_pairs import world_has
+
+    has = world_has(instruction, world)
+    return type(refused)(f"{refused}{has}") if has else refused
 
 
 def _keep_negations(

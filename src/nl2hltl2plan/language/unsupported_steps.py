@@ -170,7 +170,12 @@ _STATE_CONDITION = re.compile(
     r"(?:is|are|gets|becomes)\s+(?:not\s+)?(?:free|empty|full|open|opened|closed|shut|ready|available|dirty|busy|"
     r"occupied|wet|dry|off|on)\b(?!\s+(?:the|a|an|top)\b)"
 )
-_QUESTION = re.compile(r"^\s*(?:is|are|was|were|does|did|where|what|which|who|whose|why|how many|how much)\b")
+# "is the apple in the fridge", "what is in the fridge", "which plate should it go on?"; not "what I need
+# is ...", a need said as a pseudo-cleft
+_QUESTION = re.compile(
+    r"^\s*(?:(?:is|are|was|were|does|did|how many|how much)\b|(?:where|what|which|who|whose|why)\s+"
+    r"(?:(?:is|are|was|were|do|does|did|can|could|should|would|will|has|have)\b|.*\?\s*$))"
+)
 
 
 def vague_words(instruction: str, mentions: list[Mention]) -> list[Unread]:

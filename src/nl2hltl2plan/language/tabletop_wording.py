@@ -1,0 +1,211 @@
+"""The tabletop reading's wording rules (issue 28): what a tabletop instruction says besides its object
+and plate names, read before `tabletop_pairs` pairs them.
+
+- statements: a clause that says where something is or was ("the carrot is on the blue plate", "the
+  blue plate had the carrot") is a task only under a wish or goal said before it in its sentence ("make
+  sure", "I want", "should", "Final layout:", "once"); `stated_not_asked` finds the first one that is not;
+- free-order remarks ("in any order", "the order is of no consequence", "whichever way round"): read,
+  then removed; they leave the order inside each group free (the groups keep theirs);
+- corrections: "the blue plate, sorry, the yellow plate" keeps the second name, "no wait" too;
+- plurals: "the apples" / "both apples" name every object the world has with that head noun, when the
+  count, if one is said, is theirs;
+- labels and numbers: "Step 1: ... Step 2: ..." (or "Round one", "First course") order the steps; bare
+  list numbers ("1) ... 2) ...") only list, and are read only beside a free-order remark;
+- politeness that carries nothing: "it would please me if", "I would be grateful if you could", "let me
+  see", "chop chop".
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterable
+
+from nl2hltl2plan.language.content_words import free_order_phrase
+
+# ---- statements ---------------------------------------------------------------------------------------
+_STATE_VERB = (
+    r"(?:'s|\s+(?:is|are|was|were|has\s+been|have\s+been|had\s+been|sits|lies|rests|stays|remains|sat|lay|stood|"
+    r"went|landed|ended\s+up))"
+)
+_STATE_ADVERB = (
+    r"(?:\s+(?:already|currently|still|now|just|right|sitting|lying|resting|placed|put|set|laid|kept))*"
+)
+# where it is: on or in a place, or "fine where it is" / "good as it is" / "fine there"
+_LOCATIVE = (
+    r"(?:\s+(?:on|in|onto|into|upon|inside|at)\b|\s+(?:fine|ok|okay|good|alright|all\s+right)\s+"
+    r"(?:where\s+(?:it|they)\s+(?:is|are)|as\s+(?:it|they)\s+(?:is|are)|there)\b)"
+)
+_HOLDS = r"\s+(?:has|had|holds|held|contains|contained|carries|carried)\s+(?=(?:the|a|an|both|two)\b)"
+# a wish, goal or reference said before a state clause makes it something to bring about
+_GOAL_FRAME = re.compile(
+    r"\b(?:please|make\s+sure|ensure|see\s+(?:to\s+it\s+)?that|want|wish|like|love|need|needs|should|must|"
+    r"have\s+to|has\s+to|hope|expect|ask|goal|target|final|desired|end\s+state|result|postcondition|"
+    r"by\s+the\s+end|at\s+the\s+end|in\s+the\s+end|once|when|after|before|until|as\s+soon\s+as)\b"
+)
+_SENTENCE_END = re.compile(r"[.;!?]")
+
+
+def stated_not_asked(text: str, names: Iterable[str]) -> str | None:
+    """The first clause of `text` that states where a named thing is, was or has been put with no wish or
+    goal before it in its sentence ("the carrot is on the blue plate, please put ..."); None when there is
+    none. `names`: the world's object and plate names, in words ("blue plate")."""
+    lowered = polite_frames(text.lower())
+    mention = mention_pattern(names).pattern.removesuffix(r"\b")
+    state = re.compile(
+        rf"{mention}(?:\s+(?:both|all|too|also))?{_STATE_VERB}{_STATE_ADVERB}{_LOCATIVE}|{mention}{_HOLDS}"
+    )
+    for m in state.finditer(lowered):
+        starts = [e.end() for e in _SENTENCE_END.finditer(lowered, 0, m.start())]
+        if not _GOAL_FRAME.search(lowered, starts[-1] if starts else 0, m.start()):
+            clause_end = re.compile(r"[,.;!?]|$").search(lowered, m.end())
+            return lowered[m.start() : clause_end.start() if clause_end else None].strip()
+    return None
+
+
+# ---- free-order remarks ---------------------------------------------------------------------------------
+# the shared list (free_order.txt), anywhere in the text: "in any order", "the order is up to you"
+_FREE_ORDER = re.compile(rf"\b{free_order_phrase()}\b")
+
+
+# a free-order remark about the last group alone: "those last two can go in any order"
+_LAST_GROUP_FREE = re.compile(
+    r"\b(?:and\s+)?(?:those|these|the)\s+(?:last\s+)?(?P<n>two|three|four)(?:\s+ones)?\s+(?:can|may|could)\s+"
+    r"(?:go|be\s+(?:done|placed|put))\s+in\s+(?:any|either|whatever)\s+order\b"
+)
+
+
+def last_group_free(text: str) -> tuple[str, int | None]:
+    """`text` without a free-order remark about its last group, and how many things the remark names."""
+    m = _LAST_GROUP_FREE.search(text)
+    if m is None:
+        return text, None
+    return text[: m.start()] + " " + text[m.end() :], _NUMBER_WORDS[m["n"]]
+
+
+def free_order(text: str) -> tuple[str, bool]:
+    """`text` (lowercased) without its free-order remarks, and whether it had one."""
+    out, n = _FREE_ORDER.subn(" ", text)
+    return out, n > 0
+
+
+# ---- corrections, plurals, politeness ---------------------------------------------------------------------
+_CORRECTION = re.compile(
+    r"^[\s,.;:!\-]*(?:(?:no|sorry|wait|oops|whoops|actually|rather|or\s+rather|i\s+mean[t]?|make\s+that|"
+    r"correction|scratch\s+that|my\s+mistake|my\s+bad)\b[\s,.;:!\-]*)+(?:the\s+|a\s+|an\s+)?$"
+)
+_POLITE = re.compile(
+    r"\b(?:it\s+would\s+(?:please|delight|help)\s+me|(?:i|we)(?:'d|\s+would)\s+(?:be\s+(?:very\s+|so\s+|most\s+|"
+    r"really\s+)?(?:grateful|glad|happy|thankful|obliged|delighted)|(?:really\s+)?appreciate\s+it))"
+    r"(?:\s+(?:greatly|a\s+lot|very\s+much|so\s+much))?\s+if(?:\s+you\s+(?:could|would|can|will))?\b"
+)
+_FILLER = re.compile(
+    r"^\W*(?:let\s+me\s+see|let's\s+see)\b|\bchop\s+chop\b|\bfind\s+(?:below|attached|enclosed)\b"
+)
+_THE_FOLLOWING = re.compile(r"\b(?:the\s+)?following(?=\s*:)")  # a list's heading: "arrange the following:"
+# an aside that only describes the thing before it: "the green apple, the nice shiny one, goes ..."
+_APPOSITION = re.compile(r",\s*the\s+(?P<words>(?:[a-z]+\s+){1,3})one\s*,")
+_ORDINALS = {"1st": "first", "2nd": "second", "3rd": "third", "4th": "fourth"}
+# "pair" as the verb of a placement ("pair the carrot with the blue plate"), not the count "a pair of"
+_PAIR_VERB = re.compile(r"\bpair(?:\s+up)?(?=\s+(?:the|a|an)\s)")
+
+
+def polite_frames(text: str) -> str:
+    """ "it would please me greatly if X were on Y" -> "please X were on Y": a wish, read as one."""
+    return _POLITE.sub("please", text)
+
+
+def plain_words(text: str, kinds: dict[str, bool], heads: dict[str, list[str]]) -> str:
+    """The lowercased text with ordinals spelt out, politeness that carries nothing removed, the verb
+    "pair" read as "match", corrections applied and plurals named. `kinds`: each object or plate name
+    (in words) -> is it a plate; `heads`: a head noun that several objects share ("apple") -> their
+    names."""
+    text = re.sub(r"\b(1st|2nd|3rd|4th)\b", lambda m: _ORDINALS[m[1]], text.lower())
+    text = _THE_FOLLOWING.sub("these", _FILLER.sub(" ", polite_frames(text)))
+    text = _PAIR_VERB.sub("match", text)
+    text = _APPOSITION.sub(lambda m: m[0] if _names_a_word(m["words"], kinds) else ",", text)
+    text = corrected(text, kinds)
+    return _plurals_named(text, kinds, heads)
+
+
+def mention_pattern(names: Iterable[str], flags: int = 0) -> re.Pattern[str]:
+    """Each name by its words ("green apple"), longest first, with a plural allowed so that a plural is
+    seen (and refused) rather than missed."""
+    ordered = sorted(names, key=len, reverse=True)
+    alternatives = "|".join(r"\s+".join(map(re.escape, n.split())) + "s?" for n in ordered)
+    return re.compile(rf"\b(?:{alternatives})\b", flags)
+
+
+def corrected(text: str, kinds: dict[str, bool]) -> str:
+    """A name followed by a correction marker and a name of the same kind (a plate for a plate, an object
+    for an object) is replaced by it: "on the blue plate, sorry, the yellow plate" -> "on the yellow
+    plate" (case kept; the names are found in any case)."""
+    found = list(mention_pattern(kinds, re.IGNORECASE).finditer(text))
+    for first, second in reversed(list(zip(found, found[1:], strict=False))):
+        same_kind = kinds.get(_name(first[0].lower())) == kinds.get(_name(second[0].lower()))
+        if same_kind and _CORRECTION.match(text[first.end() : second.start()].lower()):
+            text = text[: first.start()] + text[second.start() :]
+    return text
+
+
+def _plurals_named(text: str, kinds: dict[str, bool], heads: dict[str, list[str]]) -> str:
+    """ "the apples" / "both apples" / "the two apples" -> "the green apple and the red apple" when the
+    world has several objects with that head noun and the count, if one is said, is theirs; a plural
+    after a modifier ("green apples") or with another count is left (and refused)."""
+    if not heads:
+        return text
+    modifiers = {w for n in kinds for w in n.split()[:-1]}
+    counts = {"both": 2, "two": 2, "three": 3, "four": 4}
+    plural = re.compile(
+        r"\b(?:(?:all\s+(?:of\s+)?)?(?:the\s+)?(?P<count>both|two|three|four)\s+(?:of\s+the\s+)?|"
+        rf"all\s+(?:of\s+)?the\s+|the\s+|all\s+)?(?P<head>{'|'.join(map(re.escape, heads))})s\b"
+    )
+
+    def named(m: re.Match[str]) -> str:
+        before = text[: m.start("head")].split()
+        said = counts.get(m["count"] or "")
+        if (before and before[-1] in modifiers) or (said is not None and said != len(heads[m["head"]])):
+            return m[0]
+        return " and ".join(f"the {n}" for n in heads[m["head"]])
+
+    return plural.sub(named, text)
+
+
+def _names_a_word(words: str, kinds: dict[str, bool]) -> bool:
+    """Does an aside use a word of a name ("the green one" could be another thing: it is left)?"""
+    return not {w for n in kinds for w in n.split()}.isdisjoint(words.split())
+
+
+def _name(found: str) -> str:
+    return " ".join(found.split())
+
+
+# ---- step labels and list numbers ----------------------------------------------------------------------
+_NUMBER_WORDS = {"one": 1, "two": 2, "three": 3, "four": 4, "first": 1, "second": 2, "third": 3, "fourth": 4}
+_STEP_NOUN = r"(?:step|phase|stage|part|round|course|batch)"
+_LABEL = re.compile(
+    rf"(?:^|(?<=[.;!?:,]))\s*(?:{_STEP_NOUN}\s*(?P<n1>\d|one|two|three|four|first|second|third|fourth)|"
+    rf"(?P<n2>first|second|third|fourth)\s+{_STEP_NOUN})\s*[:.)\-]\s*"
+)
+_LIST_NUMBER = re.compile(r"(?:^|(?<=[\s.;!?]))\(?(?P<n>\d)[.)]\s+")
+
+
+def steps_read(text: str, free: bool) -> str | None:
+    """Step labels as "first" / "then" (numbered 1, 2, ... in turn); bare list numbers removed beside a
+    free-order remark (`free`). None: labels out of turn, or list numbers with no remark to say whether
+    they order the steps."""
+    labels = list(_LABEL.finditer(text))
+    if [_step_number(m["n1"] or m["n2"]) for m in labels] != list(range(1, len(labels) + 1)):
+        return None
+    for m in reversed(labels):
+        word = " first " if m.start() == labels[0].start() else " then "
+        text = text[: m.start()] + word + text[m.end() :]
+    numbers = list(_LIST_NUMBER.finditer(text))
+    if not numbers:
+        return text
+    if not free or [int(m["n"]) for m in numbers] != list(range(1, len(numbers) + 1)):
+        return None
+    return _LIST_NUMBER.sub(" ", text)
+
+
+def _step_number(word: str) -> int:
+    return int(word) if word.isdigit() else _NUMBER_WORDS[word]
