@@ -42,8 +42,13 @@ class Unread:
 @lru_cache(maxsize=1)
 def vocabulary() -> dict[str, frozenset[str]]:
     """category -> words, from `content_words.txt`."""
+    return word_categories("content_words.txt")
+
+
+def word_categories(filename: str) -> dict[str, frozenset[str]]:
+    """category -> words of one of this package's `category: word word ...` files (a comment after '#')."""
     out: dict[str, frozenset[str]] = {}
-    text = resources.files("nl2hltl2plan.language").joinpath("content_words.txt").read_text()
+    text = resources.files("nl2hltl2plan.language").joinpath(filename).read_text()
     for raw in text.splitlines():
         line = raw.split("#", 1)[0].strip()
         if line:

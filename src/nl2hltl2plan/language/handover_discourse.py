@@ -29,9 +29,8 @@ from __future__ import annotations
 
 import re
 from functools import lru_cache
-from importlib import resources
 
-from nl2hltl2plan.language.content_words import vocabulary
+from nl2hltl2plan.language.content_words import vocabulary, word_categories
 from nl2hltl2plan.language.handover_words import DONE, GERUND, SWAP, TOUCH, VERB
 
 # words that may carry a meaning here: a block, a place, an arm, a count, a negation, an order or a time
@@ -48,14 +47,7 @@ MEANING = re.compile(
 @lru_cache(maxsize=1)
 def frame_words() -> dict[str, frozenset[str]]:
     """category -> words (phrases joined by '_'), from `handover_frame_words.txt`."""
-    out: dict[str, frozenset[str]] = {}
-    text = resources.files("nl2hltl2plan.language").joinpath("handover_frame_words.txt").read_text()
-    for raw in text.splitlines():
-        line = raw.split("#", 1)[0].strip()
-        if line:
-            name, _, words = line.partition(":")
-            out[name.strip()] = frozenset(words.split())
-    return out
+    return word_categories("handover_frame_words.txt")
 
 
 @lru_cache(maxsize=1)
