@@ -20,6 +20,7 @@ from __future__ import annotations
 import difflib
 import re
 from collections.abc import Mapping, Sequence
+from functools import lru_cache
 
 import networkx as nx
 
@@ -365,8 +366,12 @@ def _a_stop(m: Mention, toks: list[tuple[str, int, int]]) -> bool:
 
 def _misspelt(words: list[str], types: frozenset[str]) -> bool:
     """A word one letter off a lexicon word of one of the types ("laddle" for the ladle)."""
-    names = sorted({w for key, (entry, _) in lexicon().items() if set(entry.types) & types for w in key})
-    return any(difflib.get_close_matches(w, names, n=1, cutoff=0.85) for w in words)
+    return any(difflib.get_close_matches(w, _lexicon_words(types), n=1, cutoff=0.85) for w in words)
+
+
+@lru_cache(maxsize=512)
+def _lexicon_words(types: frozenset[str]) -> tuple[str, ...]:  # once per type set: _misspelt runs per slot
+    return tuple(sorted({w for key, (e, _) in lexicon().items() if set(e.types) & types for w in key}))
 
 
 def _next_mention(mentions: list[Mention], words: list[str], i: int, within: int = 3) -> Mention | None:

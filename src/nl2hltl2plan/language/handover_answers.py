@@ -22,18 +22,20 @@ from __future__ import annotations
 
 import re
 
+from nl2hltl2plan.language.handover_scene import COLOUR
 from nl2hltl2plan.language.handover_words import VERB
 
-_COLOUR = r"(?:red|blue|yellow)"
-_BLOCK = rf"(?:the\s+)?{_COLOUR}(?:\s+(?:block|one|cube|object|pillar))?"
+_BLOCK = rf"(?:the\s+)?{COLOUR}(?:\s+(?:block|one|cube|object|pillar))?"
 _BLOCKS = rf"{_BLOCK}(?:\s*(?:,|and)\s*{_BLOCK})*(?:\s+(?:blocks|cubes|objects|pillars))?"
 _START = r"(?P<start>^|[.;!?][ \t]+)"
 _END = r"(?=[ \t]*(?:[.;!]|$))"
 _PLACE_START = r"(?:to|on|onto|into|in|at|over\s+to|across\s+to)\b"
+_ANSWER = r"(?P<answer>[^?.!;\n]+?)"
+_OBJECTS = r"(?P<objects>[^?.!;\n]+?)"
 
 _WHERE = re.compile(
-    rf"(?im){_START}where\s+(?:do|does|should|must|will|shall)\s+(?P<objects>[^?.!;\n]+?)\s+go(?:\s+to)?\s*\?"
-    rf"[ \t]+(?P<answer>[^?.!;\n]+?){_END}"
+    rf"(?im){_START}where\s+(?:do|does|should|must|will|shall)\s+{_OBJECTS}\s+go(?:\s+to)?\s*\?"
+    rf"[ \t]+{_ANSWER}{_END}"
 )
 _WHICH_FIRST = re.compile(
     rf"(?im){_START}which\s+(?:block|one|object|pillar|cube)?\s*(?:goes|is\s+placed|is\s+put|comes|should\s+go)?"
@@ -45,9 +47,6 @@ _WHAT_ORDER = re.compile(
     rf"(?:(?:and\s+)?then|before)\s+(?P<then>{_BLOCK}){_END}"
 )
 
-
-_ANSWER = r"(?P<answer>[^?.!;\n]+?)"
-_OBJECTS = r"(?P<objects>[^?.!;\n]+?)"
 # "Which blocks? The three blocks. Where to? H, I and J.": the blocks asked for, then their place
 _WHICH_WHERE = re.compile(
     rf"(?im){_START}(?:which|what)\s+(?:blocks?|objects?|pillars?|things?|moves?|goes)\s*\?[ \t]+{_OBJECTS}"
@@ -128,7 +127,7 @@ _ORDER_WORD = re.compile(r"(?i)\b(?:first|before|after|then|last|later|next|seco
 
 
 def _colours(text: str) -> set[str]:
-    return set(re.findall(_COLOUR, text.lower()))
+    return set(re.findall(COLOUR, text.lower()))
 
 
 def timing_joined(sentences: list[str]) -> list[str]:
