@@ -23,6 +23,7 @@ from collections import Counter
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.accounting import account
+from nl2hltl2plan.language.grammar.restated import count_fits
 from nl2hltl2plan.language.grounding import camel_words
 from nl2hltl2plan.language.htt_build import build_htt
 from nl2hltl2plan.language.result import LanguageResult
@@ -74,7 +75,6 @@ _GENERIC_QUANTITY = re.compile(
     r"\b(?P<count>two|three|four)\s+(?:[a-z]+\s+)?(?:items?|things?|fruits?|objects?|placements?|moves?|"
     r"pieces?|tasks?)\b"
 )
-_COUNTS = {"two": 2, "three": 3, "four": 4}
 
 Reading = tuple[list[BaseTaskSpec], list[tuple[str, str]], list[list[str]], str]
 
@@ -187,7 +187,7 @@ def _heading_fits(head: str, placements: int) -> bool:
     """A heading may quantify the things listed after it ("each item", "three moves"), with their count;
     any other order, count or negation word in it refuses."""
     for m in _GENERIC_QUANTITY.finditer(head):
-        if m["count"] and _COUNTS[m["count"]] != placements:
+        if not count_fits(m["count"], placements):
             return False
     return _REFUSED.search(_GENERIC_QUANTITY.sub(" ", head)) is None
 

@@ -25,7 +25,7 @@ import re
 from functools import cache
 
 from nl2hltl2plan.language.content_words import free_order_phrase
-from nl2hltl2plan.language.grammar.restated import restated
+from nl2hltl2plan.language.grammar.restated import count_fits, restated
 from nl2hltl2plan.language.grounding import lexicon
 
 # hesitations, the one list of them (the handover reader's spoken step uses it too)
@@ -55,7 +55,6 @@ _LAST_GROUP_ORDER = re.compile(
     r"(?=(?:does\s*n[o']?t|does\s+not)\s+matter\b)",
     re.I,
 )
-_NUMBERS = {"two": 2, "three": 3, "four": 4, "five": 5, "six": 6}
 _NEED_HEADING = re.compile(
     r"^\s*(?:(?P<count>two|three|four|five|six|\d)\s+|each\s+|every\s+)?[a-z]+\s+"
     r"(?:needs?|gets?)\s+(?:(?:a|its|their)\s+(?:own\s+)?)?(?:plates?|places?|spots?|homes?)\s*:\s*",
@@ -177,8 +176,6 @@ def _without_need_heading(text: str) -> str:
     m = _NEED_HEADING.match(text)
     if not m:
         return text
-    count = m["count"]
-    listed = len(_PLACEMENT.findall(text[m.end() :]))
-    if count and (_NUMBERS.get(count.lower()) or int(count)) != listed:
+    if not count_fits(m["count"], len(_PLACEMENT.findall(text[m.end() :]))):
         return text
     return text[m.end() :]

@@ -33,7 +33,7 @@ from nl2hltl2plan.language.grounding import RECEPTACLES, Mention, find_mentions
 _PLACE = r"(?:on|onto|in|into|inside)"
 _NP = r"(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+){0,2}?"  # a short noun phrase; checked against the lexicon
 _ORDER = r"(?:(?:start|begin)\s+with|first(?:ly)?|then|next|after\s+that|finally|lastly)"
-_NUMBERS = {"two": 2, "three": 3, "four": 4, "five": 5, "six": 6}
+NUMBER_WORDS = {"two": 2, "three": 3, "four": 4, "five": 5, "six": 6}
 _CLAUSE_START = r"(?:^|(?<=[.;!?])\s+)"
 
 _ONE = re.compile(r"\b(?P<det>the|a)\s+(?P<adj>[a-z]+)\s+one\b(?!\s+(?:of|after|by)\b)", re.I)
@@ -159,12 +159,17 @@ def _one_named(text: str, m: re.Match[str]) -> str:
     return f"{m['det']} {candidate}" if _is_named(candidate, whole=True) else m[0]
 
 
+def count_fits(count: str | None, listed: int) -> bool:
+    """A heading's count ("four things need plates:", "3 moves:"; a word or digits) is the number of things
+    listed after it; a heading without one fits any list."""
+    return not count or (NUMBER_WORDS.get(count.lower()) or int(count)) == listed
+
+
 def _without_header(text: str, m: re.Match[str]) -> str:
     """The header's verb alone when the count fits the placements listed in its sentence."""
     sentence = re.split(r"[.;!?]", text[m.end() :], maxsplit=1)[0]
     placements = re.findall(rf"\b{_PLACE}\s+the\s+", sentence, re.I)
-    count = m["count"]
-    if count and (_NUMBERS.get(count.lower()) or int(count)) != len(placements):
+    if not count_fits(m["count"], len(placements)):
         return m[0]
     if len(placements) < 2 or not _is_named(sentence):
         return m[0]
