@@ -5,9 +5,14 @@ spec can use are dropped, and reported speech and first-person narration become 
   end) is dropped when it holds no content word at all (no block, place, arm letter, count, negation, order,
   time or placing verb: `MEANING`, `VERB`, `content_words.txt`) and every word of it is a
   function word or a frame word of `handover_frame_words.txt` (a greeting, an acknowledgement, a memo's or
-  message's header, "today's", a radio call, a filler). "Roger.", "Will do.", "Re: today's job.", "Base to
-  arms, come in.", "Okay robot, ..." go; "Subject: pillar move." (a block and a verb), "Tip: use arm c"
-  (an arm), "Optional: ..." and "Tomorrow." (words the frame does not know) stay, to be read or refused.
+  message's header, "today's", a radio call, a filler, a greeting or sign-off). "Roger.", "Will do.", "Re:
+  today's job.", "Base to arms, come in.", "Okay robot, ...", "Good morning - ...", "Thanks a lot!" go;
+  "Subject: pillar move." (a block and a verb), "Tip: use arm c" (an arm), "Optional: ..." and "Tomorrow."
+  (words the frame does not know) stay, to be read or refused. Some frame words count only in one place:
+  a label's words before a colon ("Steps:", "Procedure:", "Here's the idea:"), a greeting's time of day
+  at a fragment's start ("Morning folks", not "this morning"), a whole sentence that ends a message
+  ("Done.", "The end.", not "Done: move ..."). A sign-off's writer ("Best, Ana"; "Thanks," then "Ana") is
+  dropped with it when the name is no word the reader knows ("Thanks, Red" stays).
 - Reported speech: a speaker who names nothing ("the supervisor", "she", "Kim") and a verb of saying or
   asking ("said (that)", "says:", "told us to", "asked the arms to", "wants us to") before a command or a
   rule leave the command ("She asked us to put ..." -> "put ..."); in the past tense, the rule's modal is
@@ -50,12 +55,23 @@ def frame_words() -> dict[str, frozenset[str]]:
     return word_categories("handover_frame_words.txt")
 
 
+# categories whose words are frame words only in one place of a fragment (see the words file)
+_PLACED = ("phrase", "opening", "label", "alone")
+
+
+def _words_as_pattern(words: frozenset[str]) -> str:
+    return "|".join(sorted((w.replace("_", r"\s+") for w in words), key=len, reverse=True))
+
+
 @lru_cache(maxsize=1)
-def _frame() -> tuple[frozenset[str], re.Pattern[str]]:
+def _frame() -> tuple[frozenset[str], re.Pattern[str], re.Pattern[str], re.Pattern[str], frozenset[str]]:
+    """The frame's single words, its phrases, its opening words, its label words and its whole fragments."""
     words = frame_words()
-    single = frozenset(w for name, ws in words.items() if name != "phrase" for w in ws)
-    phrases = sorted((p.replace("_", r"\s+") for p in words["phrase"]), key=len, reverse=True)
-    return single, re.compile(rf"\b(?:{'|'.join(phrases)})\b")
+    single = frozenset(w for name, ws in words.items() if name not in _PLACED for w in ws)
+    phrases = re.compile(rf"\b(?:{_words_as_pattern(words['phrase'])})\b")
+    opening = re.compile(rf"^\s*(?:good\s+)?(?:{_words_as_pattern(words['opening'])})\b")
+    label = re.compile(rf"\b(?:{_words_as_pattern(words['label'])})\b")
+    return single, phrases, opening, label, frozenset(w.replace("_", " ") for w in words["alone"])
 
 
 _ACTION = re.compile(rf"\b(?:{VERB}|{GERUND}|{DONE}|{SWAP}|{TOUCH})\b")
@@ -84,15 +100,24 @@ def _content_word(word: str) -> bool:
     return any(f in ws for ws in vocabulary().values() for f in forms)
 
 
-def empty(fragment: str) -> bool:
-    """True when the fragment says nothing a spec can use (see the module docstring).
+def empty(fragment: str, label: bool = False, whole: bool = False) -> bool:
+    """True when the fragment says nothing a spec can use (see the module docstring); a `label` (before a
+    colon) may also hold the words that announce the work ("Steps", "Here's the idea"), and a `whole`
+    sentence may also be one that ends the message ("Done.").
 
     >>> empty("Re: today's job"), empty("Copy that"), empty("pillar move"), empty("Optional")
     (True, True, False, False)
+    >>> empty("Good morning, team"), empty("this morning"), empty("Procedure", label=True), empty("Procedure")
+    (True, False, True, False)
     """
-    single, phrases = _frame()
+    single, phrases, opening, label_words, alone = _frame()
     text = re.sub(r"#\s*\d+\b", " ", fragment.lower().replace("’", "'"))  # "#212": a ticket's number
-    text = " ".join(phrases.sub(" ", re.sub(r"'", " ", text)).split())
+    text = " ".join(re.sub(r"[^a-z0-9#]+", " ", text).split())
+    if whole and text in alone:
+        return True
+    text = " ".join(phrases.sub(" ", opening.sub(" ", text)).split())
+    if label:
+        text = label_words.sub(" ", text)
     text = _without_addressees(_CALL.sub(r"\1 ", text))
     if MEANING.search(text) or _ACTION.search(text):
         return False
@@ -101,7 +126,8 @@ def empty(fragment: str) -> bool:
 
 
 _LABEL = re.compile(r"^\s*([^:]{1,60}?)\s*:\s*(?=\S)")
-_LEAD = re.compile(r"^\s*([^,:]{1,40}?)\s*,\s*(?=\S)")
+# (a dash sets a leading phrase off as a comma does: "Morning folks - ...")
+_LEAD = re.compile(r"^\s*([^,:]{1,40}?)\s*(?:,|\s[-–—]+\s|[–—])\s*(?=\S)")
 _TAIL = re.compile(r",\s*([^,:]{1,40}?)\s*$")
 
 
@@ -109,8 +135,9 @@ def _unframed_sentence(sentence: str) -> str:
     """The sentence without its empty labels ("Re: ...:", "Copy that: ..."), its empty leading phrases
     ("Okay robot, ...", "Hey arms, uh, ...") and an empty phrase at its end ("..., over")."""
     while True:
-        head = _LABEL.match(sentence) or _LEAD.match(sentence)
-        if head is None or not empty(head.group(1)):
+        label = _LABEL.match(sentence)
+        head = label if label and empty(label.group(1), label=True) else _LEAD.match(sentence)
+        if head is None or not empty(head.group(1), label=head is label):
             break
         sentence = sentence[head.end() :]
     tail = _TAIL.search(sentence)
@@ -256,14 +283,35 @@ def first_person_as_team(sentence: str) -> str:
     return re.sub(r"(?i)\bwe\s*(?:['’]re|\s+are)\s+going\s+to\s+", "we will ", text)
 
 
+# a writer's name: one capitalised word that the reader reads as nothing ("Ana"; not "Red", not "Arm")
+_NAME = re.compile(r"^\s*(?-i:[A-Z][a-z]+)\s*[.!]*\s*$")
+
+
+def _name(text: str) -> bool:
+    word = text.strip(" .!").lower()
+    known = MEANING.search(word) or _ACTION.search(word) or _content_word(word)
+    return bool(_NAME.match(text)) and not known
+
+
+def _unsigned(sentences: list[str]) -> list[str]:
+    """The sentences without the writer's name that signs the empty sign-off ending them: "Best, Ana", or
+    "Thanks," and then "Ana" on a line of its own."""
+    if len(sentences) > 1 and _name(sentences[-1]) and empty(sentences[-2], whole=True):
+        return sentences[:-1]
+    signed = re.fullmatch(r"(.+),([^,]+)", sentences[-1]) if sentences else None
+    if signed and _name(signed[2]) and empty(signed[1]):
+        return sentences[:-1]
+    return sentences
+
+
 def plain(sentences: list[str]) -> list[str]:
-    """The sentences with empty fragments dropped, reported speech and first-person narration said as the
-    team's commands (see the module docstring)."""
+    """The sentences with empty fragments and a sign-off's name dropped, reported speech and first-person
+    narration said as the team's commands (see the module docstring)."""
     out = []
-    for sentence in sentences:
-        if empty(sentence):
+    for sentence in _unsigned(sentences):
+        if empty(sentence, whole=True):
             continue
         text = _unframed_sentence(first_person_as_team(unreported(_unframed_sentence(sentence))))
-        if text.strip() and not empty(text):
+        if text.strip() and not empty(text, whole=True):
             out.append(text)
     return out

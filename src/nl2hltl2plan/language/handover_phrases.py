@@ -26,7 +26,6 @@ from functools import partial
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.handover_clauses import read_statements
 from nl2hltl2plan.language.handover_discourse import MEANING
-from nl2hltl2plan.language.handover_frame import FRAME
 from nl2hltl2plan.language.handover_places import (
     mark_capacity,
     mark_place_pronouns,
@@ -75,7 +74,7 @@ def normalise(sentence: str) -> str:
     text = re.sub(r"\b(\w+)'s\b", r"\1 s", text)  # red's -> red s (a possessive)
     text = re.sub(r"[a-z]+", lambda w: TYPOS.get(w.group(0), w.group(0)), text)
     text = _drop_framing(unwished(unspoken(text)))
-    for pattern, replacement in FRAME + REGISTERS + _REWRITES:
+    for pattern, replacement in REGISTERS + _REWRITES:
         text = pattern.sub(replacement, text)
     text = re.sub(r"\bplease\b\s*,?", " ", text)  # politeness anywhere: "all three blocks please move to ..."
     return " ".join(text.split())

@@ -3,11 +3,11 @@
 `translate_handover(instruction, world)` reads an instruction about the blocks and regions of a
 `handover-square` / `handover-line` world and returns the same `LanguageResult` as the other
 worlds (HTT, base tasks, `before`, leaf formulas, the hierarchical spec) plus `constraints`: the
-guards and joint goals as text, sorted. The frame around the commands (a greeting, a sign-off:
-`language.handover_frame`) is dropped; each sentence is normalised and its phrases are resolved
-against the instance's layout (`language.handover_phrases`, word tables in `handover_words`), and its
-statements that are not commands (scene, target, need, question) are read and checked
-(`language.handover_clauses`); its orders, touch guards and prohibitions are read first
+guards and joint goals as text, sorted. The frame around the commands (a greeting, a sign-off, a
+label, reported speech: `language.handover_discourse`) is dropped; each sentence is normalised and its
+phrases are resolved against the instance's layout (`language.handover_phrases`, word tables in
+`handover_words`), and its statements that are not commands (scene, target, need, question) are read
+and checked (`language.handover_clauses`); its orders, touch guards and prohibitions are read first
 (`language.handover_rules`), then its goal clauses (`language.handover_goals`); this module builds the
 task tree and the spec. The rules, each general:
 
@@ -46,7 +46,6 @@ import networkx as nx
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.handover_answers import answered, timing_joined
 from nl2hltl2plan.language.handover_discourse import plain
-from nl2hltl2plan.language.handover_frame import unframed
 from nl2hltl2plan.language.handover_goals import Clause, Goal, crossed_exchanges, goal_clauses, lead
 from nl2hltl2plan.language.handover_phrases import drop_but, mark
 from nl2hltl2plan.language.handover_rules import (
@@ -90,7 +89,7 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
     notes: list[str] = []
     pending: list[Prohibition] = []  # prohibitions stated before any goal
     previous: Marked | None = None  # the sentence before ("it", "these regions" in the next one)
-    steps = timing_joined(plain(unframed(_sentences(answered(instruction)))))
+    steps = timing_joined(plain(_sentences(answered(instruction))))
     instruction = " ".join(instruction.split())
     for sentence in steps:
         m = mark(sentence, scene, previous)

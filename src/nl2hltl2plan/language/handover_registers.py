@@ -1,5 +1,5 @@
 """Writers' registers beyond the plain command, rewritten onto the forms the handover reader reads
-(`handover_phrases.normalise` applies `REGISTERS` to the lower-cased sentence, after the frame and before
+(`handover_phrases.normalise` applies `REGISTERS` to the lower-cased sentence, before
 the word tables' `REWRITES`). Each rewrite changes no meaning:
 
 - academic: the goal as a noun ("the objective is the transfer of X to P" -> "transfer X to P", "the
@@ -80,6 +80,10 @@ def _letters_between(match: re.Match[str]) -> str:
 
 
 _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
+    # labels that say something ("here's" is "here s" by then): the blocks the instruction is about, as the
+    # scene statement "we have ..." (which must name every block of the scene), and a need
+    (r"^\s*(?:scope|you\s+(?:will\s+)?need|what\s+you\s+need|materials|equipment)\s*:\s*", "we have "),
+    (r"^\s*here\s*(?:s|is)\s+what\s+(i|we)\s+(?:want|need|would\s+like)\s*:", r"\1 want "),
     # academic: the goal as a noun
     (r"^\s*the\s+(?:objective|aim|purpose|goal)\s+is\s+(?:that\b|the\s+(?=\w+\s+of\b))", " "),
     (r"\b(?:the\s+)?transfer\s+of\s+(?=(?:the|all|both|each|every)\b)", "transfer "),
