@@ -1,11 +1,12 @@
 """Discourse around a handover instruction's commands, made general: the fragments that carry nothing a
 spec can use are dropped, and reported speech and first-person narration become the commands they report.
 
-- A fragment (a whole sentence, a label before a colon, a phrase set off by a comma at a sentence's start or
-  end) is dropped when it holds no content word at all (no block, place, arm letter, count, negation, order,
-  time or placing verb: `MEANING`, `VERB`, `content_words.txt`) and every word of it is a
-  function word or a frame word of `handover_frame_words.txt` (a greeting, an acknowledgement, a memo's or
-  message's header, "today's", a radio call, a filler, a greeting or sign-off). "Roger.", "Will do.", "Re:
+- A fragment (a whole sentence, a label before a colon, a phrase set off by a comma or dash at a sentence's
+  start, by commas inside it or by a comma at its end: "then, robots, put ...") is dropped when it holds
+  no content word at all (no block, place, arm letter, count, negation, order, time or placing verb:
+  `MEANING`, `VERB`, `content_words.txt`) and every word of it is a function word or a frame word of
+  `handover_frame_words.txt` (a greeting, an acknowledgement, a memo's or message's header, "today's", a
+  radio call, a filler, a cheer, a sign-off). "Roger.", "Will do.", "Re:
   today's job.", "Base to arms, come in.", "Okay robot, ...", "Good morning - ...", "Thanks a lot!" go;
   "Subject: pillar move." (a block and a verb), "Tip: use arm c" (an arm), "Optional: ..." and "Tomorrow."
   (words the frame does not know) stay, to be read or refused. Some frame words count only in one place:
@@ -143,7 +144,16 @@ def _unframed_sentence(sentence: str) -> str:
     tail = _TAIL.search(sentence)
     if tail and empty(tail.group(1)):
         sentence = sentence[: tail.start()]
-    return sentence
+    # and a phrase set off by commas inside it ("then, robots, put ..."); a hesitation ("the three, uh, the
+    # three objects") stays, for `handover_spoken` to tell a phrase said again from a correction
+    return _INNER.sub(lambda m: "," if empty(m[1]) and not _hesitation(m[1]) else m[0], sentence)
+
+
+def _hesitation(fragment: str) -> bool:
+    return set(re.findall(r"[a-z]+", fragment.lower())) <= frame_words()["filler"]
+
+
+_INNER = re.compile(r",\s*([^,:;]{1,40}?)\s*(?=,)")
 
 
 # -- reported speech ---------------------------------------------------------------------------------

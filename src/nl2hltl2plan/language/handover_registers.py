@@ -19,8 +19,7 @@ the word tables' `REWRITES`). Each rewrite changes no meaning:
   "then" repeats that order and is dropped (without "then" it stays unread: which order?);
 - modal "is to" before a verb of holding ("each region is to hold only one block": must hold), and "X
   gets to P" (goes to P) where a place follows;
-- addresses and frames: the whole team addressed between commas ("then, robots, put ..."; one arm by name
-  is left unread), a user story's role ("As the operator, ..."), a requirement's identifier ("R1:"),
+- frames: a user story's role ("As the operator, ..."), a requirement's identifier ("R1:"),
   office English ("kindly", "do the needful", an emphatic "itself");
 - progressive narration ("nothing is being placed", "no region is getting two blocks"), a need after a
   step word ("after that, I want X back on G"), "let X VERB" (X must VERB; "don't let anyone touch X");
@@ -39,10 +38,6 @@ from collections.abc import Callable
 from nl2hltl2plan.language.handover_words import AFTER_ALL, GERUND_VERBS, NEGATED_GERUNDS, SWAP, THEN, VERB
 
 _BLOCK = r"(?:the\s+)?(?:red|blue|yellow)(?:\s+(?:block|one|cube))?"
-# the whole team, addressed: never one arm by name
-_TEAM = (
-    r"(?:(?:the\s+)?(?:robots|robot\s+arms|arms)|team|everyone|everybody|folks|guys|crew|you\s+(?:two|all|guys))"
-)
 # who asks, in a user story ("As the cell operator, ...")
 _ROLE = (
     r"(?:user|operator|supervisor|manager|engineer|customer|client|owner|lead|technician|planner|worker|"
@@ -145,10 +140,6 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
         "must ",
     ),
     (r"\b(?:gets|got)\s+(?=(?:to|onto|into|over\s+to|across\s+to)\s+(?:the|regions?|any|[e-j])\b)", "goes "),
-    # the whole team addressed between commas ("then, robots, put ...") says nothing (one arm by name, "arm
-    # a,", says who acts, and is left to be refused)
-    (rf"(?:^|,)\s*{_TEAM}\s*(?=,)", " "),
-    (rf",\s*{_TEAM}\s*$", " "),
     # progressive narration: "nothing is being placed on F" (is placed), "no region is getting two blocks"
     (
         r"\b(is|are)\s+being\s+(?=(?:placed|put|set|dropped|moved|touched|handled|grabbed|picked\s+up)\b)",

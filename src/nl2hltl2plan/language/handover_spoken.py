@@ -6,7 +6,7 @@ time (a word that might carry one is left for the reader, which reads it or refu
 
 - contractions spelled out ("shan't" before the general "n't"); a time said before a scene statement
   ("right now, the red block is on g") kept as "currently" for the scene reader, not dropped as fillers;
-- discourse fillers and hedges: hesitations ("um", "uh", "er"), "you know", "basically", "yeah",
+- discourse fillers and hedges: hesitations ("um", "uh", "er"), "basically", "yeah",
   interjections that open a clause or tag its end ("okay so", "right,", "..., alright?", "oh and"),
   "just" before a verb ("just drop them", never "just the red block"), a hedge on the whole request
   ("i think", "if possible,", "it would be best if you could", "maybe" or "ideally" before a verb or rule);
@@ -77,7 +77,6 @@ _SCENE_TIME = (
 _FILLERS: tuple[tuple[str, str], ...] = (
     (_SCENE_TIME, r"\1 currently "),
     (rf"\b{_HESITATION}\b", " , ~ , "),  # a soft correction marker: what follows may restate what went before
-    (r"(^|,)\s*you\s+know\s*(?=,|$)", r"\1"),
     (r"\b(?:basically|literally|honestly|yeah|yep|yup)\b", " , "),
     (r"\bkind\s+of\b(?=\s+(?:" + VERB + r")\b)", " "),
     (r"\boh\b", " , "),
@@ -127,8 +126,8 @@ _FILLERS: tuple[tuple[str, str], ...] = (
         r"(^|,|\band\b)\s*(?:you\s+(?:will|may|can|should|might)\s+)?(?:(?:notice|see)\s+that\b|notice\s+(?=(?:each|every|only|no|nothing|none)\b))",
         r"\1 ",
     ),  # not "you'll see the red block on g": a scene, not a rule
-    # who is spoken to, and when: "alright class,", "okay everyone,", "today you ...", "your task today:"
-    (rf"(^|,)\s*(?:{_INTERJECTION}\s+)?(?:class|everyone|everybody|folks|guys|team|people)\s*,", r"\1 "),
+    # when ("today you ...", "your task today:"; who is spoken to, "alright class,", is a frame word of
+    # `handover_discourse`)
     (r"^\s*(?:today|this\s+time|for\s+today)\s*,?\s*(?=(?:you|we)\b)", " "),
     (r"\b(your|the|our)\s+(task|job|goal|exercise)\s+(?:today|this\s+time|here|for\s+today)\b", r"\1 \2"),
 )
