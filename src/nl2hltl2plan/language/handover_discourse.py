@@ -6,14 +6,19 @@ spec can use are dropped, and reported speech and first-person narration become 
   no content word at all (no block, place, arm letter, count, negation, order, time or placing verb:
   `MEANING`, `VERB`, `content_words.txt`) and every word of it is a function word or a frame word of
   `handover_frame_words.txt` (a greeting, an acknowledgement, a memo's or message's header, "today's", a
-  radio call, a filler, a cheer, a sign-off). "Roger.", "Will do.", "Re:
-  today's job.", "Base to arms, come in.", "Okay robot, ...", "Good morning - ...", "Thanks a lot!" go;
+  radio call, a filler, a cheer, a sign-off). "Roger.", "Will do.", "Re: today's job.", "Base to arms,
+  come in.", "Okay robot, ...", "Good morning - ...", "Thanks a lot!" go;
   "Subject: pillar move." (a block and a verb), "Tip: use arm c" (an arm), "Optional: ..." and "Tomorrow."
   (words the frame does not know) stay, to be read or refused. Some frame words count only in one place:
   a label's words before a colon ("Steps:", "Procedure:", "Here's the idea:"), a greeting's time of day
   at a fragment's start ("Morning folks", not "this morning"), a whole sentence that ends a message
-  ("Done.", "The end.", not "Done: move ..."). A sign-off's writer ("Best, Ana"; "Thanks," then "Ana") is
-  dropped with it when the name is no word the reader knows ("Thanks, Red" stays).
+  ("Done.", "The end.", not "Done: move ..."), a record's kind with its identifier or a date in the
+  instruction's first sentence ("Run 5, setup B.", "Ticket #48.", "3 Dec, trial 2."; later, "Run 2:" may
+  number a step, and stays). A sign-off's writer ("Best, Ana"; "Thanks," then "Ana") is dropped with it
+  when the name is no word the reader knows ("Thanks, Red" stays); so is a voice assistant or person
+  called after a greeting ("Hey Google, ...", "OK Kim, ...").
+- Relayed commands: "tell / ask / have / get the arms (not) to VERB ..." (after a name called, "Alexa,
+  tell the arms to ...") is the command "(do not) VERB ...".
 - Reported speech: a speaker who names nothing ("the supervisor", "she", "Kim") and a verb of saying or
   asking ("said (that)", "says:", "told us to", "asked the arms to", "wants us to") before a command or a
   rule leave the command ("She asked us to put ..." -> "put ..."); in the past tense, the rule's modal is
@@ -21,7 +26,10 @@ spec can use are dropped, and reported speech and first-person narration become 
   "has been touched"). "she wanted X put back on G" is a need ("we want X put back on G").
 - First-person narration: "I'll / I will / I'm / I won't / I've ..." is read as "we ...", which the reader
   reads as the team's commands ("we will move ..." -> "move ..."); "I" after a list of region letters or
-  after "region" is the region, never the pronoun.
+  after "region" is the region, never the pronoun. The team named as the subject of what it is about to
+  do is "we" too ("Today our arms are going to move ...", "the robots will put ...", "they won't touch
+  the blue block": "they" only before a placing or touching verb and its object), and a passive's future
+  "is going to be placed" is "will be placed".
 
     >>> plain(["Roger", "I'll put the red block on G", "Will do"])
     ["we'll put the red block on G"]
@@ -35,6 +43,7 @@ from __future__ import annotations
 
 import re
 from functools import lru_cache
+from typing import NamedTuple
 
 from nl2hltl2plan.language.content_words import vocabulary, word_categories
 from nl2hltl2plan.language.handover_words import DONE, GERUND, SWAP, TOUCH, VERB
@@ -57,22 +66,38 @@ def frame_words() -> dict[str, frozenset[str]]:
 
 
 # categories whose words are frame words only in one place of a fragment (see the words file)
-_PLACED = ("phrase", "opening", "label", "alone")
+_PLACED = ("phrase", "opening", "label", "alone", "month")
 
 
 def _words_as_pattern(words: frozenset[str]) -> str:
     return "|".join(sorted((w.replace("_", r"\s+") for w in words), key=len, reverse=True))
 
 
+class _Frame(NamedTuple):
+    single: frozenset[str]  # frame words anywhere
+    phrases: re.Pattern[str]
+    opening: re.Pattern[str]  # a greeting's time of day, opening the fragment
+    label: re.Pattern[str]  # words that announce the work before a colon
+    alone: frozenset[str]  # whole sentences that end a message
+    records: re.Pattern[str]  # a record's kind with its identifier, a date
+
+
 @lru_cache(maxsize=1)
-def _frame() -> tuple[frozenset[str], re.Pattern[str], re.Pattern[str], re.Pattern[str], frozenset[str]]:
-    """The frame's single words, its phrases, its opening words, its label words and its whole fragments."""
+def _frame() -> _Frame:
     words = frame_words()
-    single = frozenset(w for name, ws in words.items() if name not in _PLACED for w in ws)
-    phrases = re.compile(rf"\b(?:{_words_as_pattern(words['phrase'])})\b")
-    opening = re.compile(rf"^\s*(?:good\s+)?(?:{_words_as_pattern(words['opening'])})\b")
-    label = re.compile(rf"\b(?:{_words_as_pattern(words['label'])})\b")
-    return single, phrases, opening, label, frozenset(w.replace("_", " ") for w in words["alone"])
+    months = _words_as_pattern(words["month"])
+    day = r"\d{1,2}(?:st|nd|rd|th)?"
+    return _Frame(
+        single=frozenset(w for name, ws in words.items() if name not in _PLACED for w in ws),
+        phrases=re.compile(rf"\b(?:{_words_as_pattern(words['phrase'])})\b"),
+        opening=re.compile(rf"^\s*(?:good\s+)?(?:{_words_as_pattern(words['opening'])})\b"),
+        label=re.compile(rf"\b(?:{_words_as_pattern(words['label'])})\b"),
+        alone=frozenset(w.replace("_", " ") for w in words["alone"]),
+        records=re.compile(
+            rf"\b(?:{_words_as_pattern(words['record'])})\s+(?:no\s+|number\s+)?#?\s*(?:\d+|[a-z])\b|"
+            rf"\b{day}\s+(?:{months})\b(?:\s+\d{{4}})?|\b(?:{months})\s+{day}\b(?:\s+\d{{4}})?"
+        ),
+    )
 
 
 _ACTION = re.compile(rf"\b(?:{VERB}|{GERUND}|{DONE}|{SWAP}|{TOUCH})\b")
@@ -101,29 +126,33 @@ def _content_word(word: str) -> bool:
     return any(f in ws for ws in vocabulary().values() for f in forms)
 
 
-def empty(fragment: str, label: bool = False, whole: bool = False) -> bool:
+def empty(fragment: str, label: bool = False, whole: bool = False, header: bool = False) -> bool:
     """True when the fragment says nothing a spec can use (see the module docstring); a `label` (before a
-    colon) may also hold the words that announce the work ("Steps", "Here's the idea"), and a `whole`
-    sentence may also be one that ends the message ("Done.").
+    colon) may also hold the words that announce the work ("Steps", "Here's the idea"), a `whole`
+    sentence may also be one that ends the message ("Done."), and the instruction's `header` (its first
+    sentence) may name its record ("Run 6", "Ticket #48", "3 Dec"; later ones may number steps).
 
     >>> empty("Re: today's job"), empty("Copy that"), empty("pillar move"), empty("Optional")
     (True, True, False, False)
     >>> empty("Good morning, team"), empty("this morning"), empty("Procedure", label=True), empty("Procedure")
     (True, False, True, False)
     """
-    single, phrases, opening, label_words, alone = _frame()
+    frame = _frame()
     text = re.sub(r"#\s*\d+\b", " ", fragment.lower().replace("’", "'"))  # "#212": a ticket's number
     text = " ".join(re.sub(r"[^a-z0-9#]+", " ", text).split())
-    if whole and text in alone:
+    if whole and text in frame.alone:
         return True
-    text = " ".join(phrases.sub(" ", opening.sub(" ", text)).split())
+    text = frame.opening.sub(" ", text)
+    if header:
+        text = frame.records.sub(" ", text)
+    text = " ".join(frame.phrases.sub(" ", text).split())
     if label:
-        text = label_words.sub(" ", text)
+        text = frame.label.sub(" ", text)
     text = _without_addressees(_CALL.sub(r"\1 ", text))
     if MEANING.search(text) or _ACTION.search(text):
         return False
     words = re.findall(r"[a-z0-9]+", text)
-    return all(w in single and not _content_word(w) for w in words)
+    return all(w in frame.single and not _content_word(w) for w in words)
 
 
 _LABEL = re.compile(r"^\s*([^:]{1,60}?)\s*:\s*(?=\S)")
@@ -132,15 +161,18 @@ _LEAD = re.compile(r"^\s*([^,:]{1,40}?)\s*(?:,|\s[-–—]+\s|[–—])\s*(?=\S)
 _TAIL = re.compile(r",\s*([^,:]{1,40}?)\s*$")
 
 
-def _unframed_sentence(sentence: str) -> str:
+def _unframed_sentence(sentence: str, header: bool = False) -> str:
     """The sentence without its empty labels ("Re: ...:", "Copy that: ..."), its empty leading phrases
     ("Okay robot, ...", "Hey arms, uh, ...") and an empty phrase at its end ("..., over")."""
     while True:
         label = _LABEL.match(sentence)
-        head = label if label and empty(label.group(1), label=True) else _LEAD.match(sentence)
-        if head is None or not empty(head.group(1), label=head is label):
+        head = label if label and empty(label.group(1), label=True, header=header) else _LEAD.match(sentence)
+        if head is None:
+            break
+        if not (empty(head.group(1), label=head is label, header=header) or _called(head.group(1))):
             break
         sentence = sentence[head.end() :]
+    sentence = _unrelayed(sentence)
     tail = _TAIL.search(sentence)
     if tail and empty(tail.group(1)):
         sentence = sentence[: tail.start()]
@@ -151,6 +183,28 @@ def _unframed_sentence(sentence: str) -> str:
 
 def _hesitation(fragment: str) -> bool:
     return set(re.findall(r"[a-z]+", fragment.lower())) <= frame_words()["filler"]
+
+
+# a voice assistant or a person called by name after a greeting or an acknowledgement ("Hey Google", "OK
+# Kim"), who passes the command on: "Alexa, tell the arms to ...", "ask the robots to ...", "have the arms
+# ..." (a name called alone, "Siri, swap ...", may be a word the reader does not know: left unread)
+_CALL_WORD = re.compile(r"(?i)^\s*(?:hey|hi|hello|yo|ok|okay)\s+(\S+)\s*$")
+_RELAYED = re.compile(
+    r"(?i)^\s*(?:(?P<name>[A-Za-z]+)\s*,\s*)?(?:please\s+)?(?:tell|ask|instruct|get|have)\s+(?:the|all|our)\s+"
+    r"(?:robot\s+)?(?:arms|robots|team)\s+(?:(?P<not>not\s+)?to\s+)?(?=[a-z])"
+)
+
+
+def _unrelayed(sentence: str) -> str:
+    relayed = _RELAYED.match(sentence)
+    if relayed is None or (relayed["name"] and not _name(relayed["name"])):
+        return sentence
+    return ("do not " if relayed["not"] else "") + sentence[relayed.end() :]
+
+
+def _called(fragment: str) -> bool:
+    called = _CALL_WORD.match(fragment)
+    return called is not None and _name(called[1])
 
 
 _INNER = re.compile(r",\s*([^,:;]{1,40}?)\s*(?=,)")
@@ -273,12 +327,33 @@ _I = re.compile(
 _REGION_BEFORE = re.compile(r"(?i)(?:\bregions?|\b[A-J]\s*(?:,|\band|\bor)|\b(?:on|to|onto|into|at|in))\s*$")
 
 
+# the team named as the subject of what it is about to do: "our arms are going to move ...", "the robots will
+# put ...", "they won't touch ..." (where a clause starts; "they" only before a verb with its object: blocks
+# "will move to G", arms "will move the red block")
+_FUTURE = r"(?:\s*['’]re|\s+are)(?:\s+not)?\s+going\s+to\b|\s+(?:will|shall|won['’]t)\b"
+_CLAUSE_START = r"(?:^|(?<=[,;:])|(?<=\band)|(?<=\bthen)|(?<=\btoday)|(?<=\bnow)|(?<=\bnext)|(?<=\btime))"
+_TEAM_AS_WE = re.compile(
+    rf"(?i){_CLAUSE_START}\s*(?:(?:our|the|these|both|all\s+(?:the\s+)?)\s+)?(?:robot\s+)?(?:arms|robots)(?={_FUTURE})"
+)
+_THEY_AS_WE = re.compile(
+    rf"(?i){_CLAUSE_START}\s*they(?=(?:{_FUTURE})(?:\s+not)?\s+(?:{VERB}|{SWAP}|{TOUCH})\s+"
+    r"(?:the|all|both|each|every|any|anything|red|blue|yellow|three|two|it|them|one|no|nothing)\b)"
+)
+# the future of a passive ("the red block is going to be placed", "nothing is going to be put"): will be
+_GOING_TO_BE = re.compile(r"(?i)\b(?:is|are|['’]s|['’]re)\s+going\s+to\s+be\b")
+
+
 def first_person_as_team(sentence: str) -> str:
-    """'I' as the speaker who will do the work is the team ('we'), which the reader reads as commands.
+    """'I' as the speaker who will do the work is the team ('we'), which the reader reads as commands; so
+    are the arms or robots named as the subject of what they are about to do.
 
     >>> first_person_as_team("I'm moving red to regions H and I. I'll wait.")
     "we are moving red to regions H and I. we'll wait."
+    >>> first_person_as_team("Today our arms are going to move the blocks, and they won't touch red")
+    "Today we will move the blocks, and we won't touch red"
     """
+    sentence = _GOING_TO_BE.sub(" will be", sentence)
+    sentence = _THEY_AS_WE.sub(" we", _TEAM_AS_WE.sub(" we", sentence))
     out, last = [], 0
     for match in _I.finditer(sentence):
         if _REGION_BEFORE.search(sentence[: match.start()]):
@@ -290,7 +365,8 @@ def first_person_as_team(sentence: str) -> str:
     text = re.sub(r"(?i)\b(after\s+all\s+(?:of\s+)?(?:that|these|this))\s+(?=we\b)", r"\1, ", text)
     text = re.sub(r"(?i)\bwe\s*['’]m\b", "we are", re.sub(r"(?i)\bwe\s+am\b", "we are", text))
     # "we are going to move": we will move (a plan said as what is about to happen)
-    return re.sub(r"(?i)\bwe\s*(?:['’]re|\s+are)\s+going\s+to\s+", "we will ", text)
+    text = re.sub(r"(?i)\bwe\s*(?:['’]re|\s+are)\s+going\s+to\s+", "we will ", text)
+    return " ".join(text.split())
 
 
 # a writer's name: one capitalised word that the reader reads as nothing ("Ana"; not "Red", not "Arm")
@@ -318,10 +394,11 @@ def plain(sentences: list[str]) -> list[str]:
     """The sentences with empty fragments and a sign-off's name dropped, reported speech and first-person
     narration said as the team's commands (see the module docstring)."""
     out = []
-    for sentence in _unsigned(sentences):
-        if empty(sentence, whole=True):
+    for k, sentence in enumerate(_unsigned(sentences)):
+        if empty(sentence, whole=True, header=k == 0):
             continue
-        text = _unframed_sentence(first_person_as_team(unreported(_unframed_sentence(sentence))))
-        if text.strip() and not empty(text, whole=True):
+        text = _unframed_sentence(sentence, header=k == 0)
+        text = _unframed_sentence(first_person_as_team(unreported(text)), header=k == 0)
+        if text.strip() and not empty(text, whole=True, header=k == 0):
             out.append(text)
     return out

@@ -113,6 +113,9 @@ def mark(sentence: str, scene: Scene, before: Marked | None = None) -> Marked:
     # one block, so nothing goes on a block); resolved once the places are marked
     m.sub(r"\b(on|onto|in|into|over|across|among|between)\s+(each\s+of\s+)?(them|it)\b", r"\1 \2 PLACEREF_\3")
     _mark_blocks(m, scene, previous.last_one, previous.last_group)
+    # "after the red block (after it), the blue block goes on I": the order said before its clause, put after
+    # it (one clause, with its own block, and no other order word)
+    m.sub(rf"^\s*(after|before)\s+(B\d+)\s*,\s*({_ONE_CLAUSE}\bB\d+\b{_ONE_CLAUSE})$", r"\3 \1 \2")
     _join_particles(m)
     # "put the three blocks there", "the yellow block is to be moved there as well"
     m.sub(rf"\b((?:{VERB}|{GERUND})\s+B\d+|B\d+\s+{MODAL}{DONE})\s+there\b", r"\1 PLACEREF_there")
@@ -134,6 +137,9 @@ def mark(sentence: str, scene: Scene, before: Marked | None = None) -> Marked:
     m.sub(r"^\s*there\s+(?:are|is)\s+P\d+\s*$", " ")
     _mark_connectives(m)
     return m
+
+
+_ONE_CLAUSE = r"(?:(?!\b(?:after|before|then|and)\b)[^,;:])*"
 
 
 def _join_particles(m: Marked) -> None:

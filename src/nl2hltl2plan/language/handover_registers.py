@@ -79,6 +79,14 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     # scene statement "we have ..." (which must name every block of the scene), and a need
     (r"^\s*(?:scope|you\s+(?:will\s+)?need|what\s+you\s+need|materials|equipment)\s*:\s*", "we have "),
     (r"^\s*here\s*(?:s|is)\s+what\s+(i|we)\s+(?:want|need|would\s+like)\s*:", r"\1 want "),
+    # one block's place said as a choice: "red block: one of H, I or J" is "red block: H, I or J" (after two
+    # blocks, "one of" may mean one region for both: left unread)
+    (
+        r"(?<!\band\s)(?<!\bor\s)(?<!,\s)\b((?:red|blue|yellow)\b(?:\s+(?!and\b|or\b|red\b|blue\b|yellow\b)[a-z]+){0,2}?"
+        r"\s*:?\s*)one\s+of\s+"
+        r"(?=(?:the\s+)?(?:regions?\s+)?[e-j]\b)",
+        r"\1",
+    ),
     # academic: the goal as a noun
     (r"^\s*the\s+(?:objective|aim|purpose|goal)\s+is\s+(?:that\b|the\s+(?=\w+\s+of\b))", " "),
     (r"\b(?:the\s+)?transfer\s+of\s+(?=(?:the|all|both|each|every)\b)", "transfer "),

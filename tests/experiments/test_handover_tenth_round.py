@@ -1,0 +1,110 @@
+"""Issue 24, tenth round (h75): the frame words of `handover_discourse` in their one place (a record's
+header in the first sentence, a label's words before a colon), relayed commands, the team named as the
+subject of what it is about to do, an order said before its clause ("After it, ..."), and "one of" a
+region list for one block. The development batch `dev32` must give the written specs (but for the
+sentences refused on purpose); near misses must be refused or read as their words say.
+"""
+
+from __future__ import annotations
+
+import pytest
+from handover_session10 import STYLES
+from handover_specs import assert_not_the_written_spec, assert_written_spec
+from handover_specs import spec_of as _spec
+
+from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.language.handover_discourse import empty, first_person_as_team, plain
+
+# dev32 sentences refused on purpose: a name called alone ("Siri" may be any word), a problem stated
+# with a negation ("blocks not on targets"), an order as a participle after a block's heading
+STILL_REFUSED = {
+    "Siri, swap the red and blue blocks, red placed first, and move the yellow block to the opposite side at "
+    "any time.",
+    "Issue: blocks not on targets. Fix: put the three blocks on regions H, I and J, one block per region.",
+    "Red block: region G, H or I, placed before blue. Blue block: region G, H or I. Yellow block: region G, "
+    "H or I. One block per region.",
+}
+
+REFUSED = [
+    # a record's number after the first sentence may number a step
+    (8, "Day 2: put the yellow block on region G. Day 1: put it on region I. Red and blue go to any empty "
+     "region at any time."),
+    (8, "Run 1. Put the yellow block on region I. Run 2. Put it on region G. Red and blue go to any empty "
+     "region at any time."),
+    # a relay that is not at the sentence's start, or that forbids the goal
+    (1, "Then, tell the arms to move all three blocks to the opposite side, red before blue."),
+    (2, "Tell the arms not to put the three blocks on regions H, I and J, one block per region."),
+    # words the frame does not know; a name the reader reads
+    (4, "Otherwise, move the three blocks to the opposite regions. Don't touch blue until red has been "
+     "touched. After all of that, put the yellow block back on region G."),
+    (6, "Hey Red, place the three objects on regions G, H and I, one each, red before blue."),
+    # "they" of the blocks, not the team; "one of" after two blocks (one region for both?)
+    (1, "Our arms are going to move all three blocks to the opposite side. They will move to it before the "
+     "blue block."),
+    (2, "Red and blue: one of H, I or J. Yellow block: one of H, I or J. One block per region."),
+    (3, "Trial 3 of 5. Move the three pillars to regions E, F and G beside arms a and b. No object may go on "
+     "any other region."),
+]
+
+OTHER = [
+    # the order the other way round, in the narrated future or before its clause
+    (1, "Today our arms are going to move all three blocks to the opposite side, and the blue block is going "
+     "to be placed before the red block."),
+    (7, "The red block goes on region I. Before it, the blue block goes on region I. The yellow block also "
+     "goes on region I. Nothing goes on regions F, G or H during this period."),
+    # one block's choice of regions differs: no "at once"
+    (2, "Red block: one of H, I or J. Blue block: one of H, I or J. Yellow block: H or I. One block per "
+     "region."),
+]
+
+READ = [
+    (2, "Put the red block on one of regions H, I or J, the blue block on one of regions H, I or J and the "
+     "yellow block on one of regions H, I or J, one block per region."),
+    (5, "OK Kim, tell the arms to swap the red and blue blocks, red placed first, and to move the yellow "
+     "block to the opposite side at any time."),
+    (3, "The robots will move the three pillars to regions E, F and G beside arms a and b, and they won't "
+     "put any object on any other region."),
+]
+
+
+@pytest.mark.parametrize("style", sorted(STYLES["dev32"]))
+def test_dev32_gives_the_written_specs_or_is_refused_by_name(style):
+    for task, text in STYLES["dev32"][style].items():
+        if text in STILL_REFUSED:
+            with pytest.raises(HTTError):
+                _spec(int(task), text)
+        else:
+            assert_written_spec(int(task), text)
+
+
+@pytest.mark.parametrize(("task_id", "text"), READ)
+def test_tenth_round_forms_give_the_written_specs(task_id, text):
+    assert_written_spec(task_id, text)
+
+
+@pytest.mark.parametrize(("task_id", "text"), REFUSED)
+def test_tenth_round_near_misses_are_refused(task_id, text):
+    with pytest.raises(HTTError) as caught:
+        _spec(task_id, text)
+    assert "\n" not in str(caught.value)
+
+
+@pytest.mark.parametrize(("task_id", "text"), OTHER)
+def test_tenth_round_sentences_that_say_something_else_do_not_give_the_written_spec(task_id, text):
+    assert_not_the_written_spec(task_id, text)
+
+
+def test_records_count_only_in_the_first_sentence():
+    assert empty("Run 5, setup B", header=True) and empty("3 Dec, trial 2", header=True)
+    assert not empty("Run 5, setup B") and not empty("Day 2", label=True)
+    assert not empty("Run 3 blocks", header=True)  # a count of blocks, not a record's number
+    assert plain(["Ticket #48", "Summary: move the red block to G"]) == ["move the red block to G"]
+
+
+def test_the_team_named_as_subject_is_we():
+    narrated = first_person_as_team("then the arms will put the red block on G")
+    assert narrated == "then we will put the red block on G"
+    assert first_person_as_team("they will move to G") == "they will move to G"  # the blocks
+    assert first_person_as_team("regions by the arms are going to be empty") == (
+        "regions by the arms will be empty"
+    )
