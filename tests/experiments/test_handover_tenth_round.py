@@ -15,9 +15,15 @@ from handover_specs import spec_of as _spec
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.handover_discourse import empty, first_person_as_team, plain
 
-# dev32 sentences refused on purpose: a name called alone ("Siri" may be any word), a problem stated
-# with a negation ("blocks not on targets"), an order as a participle after a block's heading
+# dev32 and dev33 sentences refused on purpose: a name called alone ("Siri" may be any word), a problem
+# stated with a negation ("blocks not on targets"), an order as a participle after a block's heading, a
+# label that names an order ("Last round:"), "by the end" before other goals (the last step said first?)
 STILL_REFUSED = {
+    "How to play: transfer the three blocks to the opposite regions. Rule: nobody touches the blue block "
+    "until the red block has been touched. Last round: after all of these, put the yellow block back on "
+    "region G.",
+    "By the end, the red and blue blocks will have swapped positions, red placed first, and the yellow block "
+    "will have been moved to the opposite side at any time.",
     "Siri, swap the red and blue blocks, red placed first, and move the yellow block to the opposite side at "
     "any time.",
     "Issue: blocks not on targets. Fix: put the three blocks on regions H, I and J, one block per region.",
@@ -42,6 +48,8 @@ REFUSED = [
     (1, "Our arms are going to move all three blocks to the opposite side. They will move to it before the "
      "blue block."),
     (2, "Red and blue: one of H, I or J. Yellow block: one of H, I or J. One block per region."),
+    (8, "Job 1. First put the yellow block on region I, then on region G. Job 2. Move the red and blue "
+     "blocks to any empty region at any time."),
     (3, "Trial 3 of 5. Move the three pillars to regions E, F and G beside arms a and b. No object may go on "
      "any other region."),
 ]
@@ -52,6 +60,11 @@ OTHER = [
      "to be placed before the red block."),
     (7, "The red block goes on region I. Before it, the blue block goes on region I. The yellow block also "
      "goes on region I. Nothing goes on regions F, G or H during this period."),
+    (6, "Work order 106. Items: the three objects. Destination: regions G, H and I, separately. Sequence: "
+     "blue before red."),
+    (4, "First, the three blocks will have been moved to the opposite regions, and the red block will not "
+     "have been touched until the blue block has been touched. After all of these, the yellow block will "
+     "have been put back on region G."),
     # one block's choice of regions differs: no "at once"
     (2, "Red block: one of H, I or J. Blue block: one of H, I or J. Yellow block: H or I. One block per "
      "region."),
@@ -67,9 +80,9 @@ READ = [
 ]
 
 
-@pytest.mark.parametrize("style", sorted(STYLES["dev32"]))
-def test_dev32_gives_the_written_specs_or_is_refused_by_name(style):
-    for task, text in STYLES["dev32"][style].items():
+@pytest.mark.parametrize(("batch", "style"), [(b, s) for b in ("dev32", "dev33") for s in sorted(STYLES[b])])
+def test_tenth_round_batches_give_the_written_specs_or_are_refused_by_name(batch, style):
+    for task, text in STYLES[batch][style].items():
         if text in STILL_REFUSED:
             with pytest.raises(HTTError):
                 _spec(int(task), text)

@@ -339,8 +339,15 @@ _THEY_AS_WE = re.compile(
     rf"(?i){_CLAUSE_START}\s*they(?=(?:{_FUTURE})(?:\s+not)?\s+(?:{VERB}|{SWAP}|{TOUCH})\s+"
     r"(?:the|all|both|each|every|any|anything|red|blue|yellow|three|two|it|them|one|no|nothing)\b)"
 )
-# the future of a passive ("the red block is going to be placed", "nothing is going to be put"): will be
-_GOING_TO_BE = re.compile(r"(?i)\b(?:is|are|['’]s|['’]re)\s+going\s+to\s+be\b")
+# the future of a passive ("the red block is going to be placed", "nothing is going to be put") and its
+# perfect ("will (not) have been touched": the state the plan reaches) are "will (not) be"
+_GOING_TO_BE = re.compile(
+    r"(?i)\b(?:is|are|['’]s|['’]re)\s+going\s+to\s+be\b|\bwill(\s+not)?\s+have\s+been\b"
+)
+
+
+def _future(match: re.Match[str]) -> str:
+    return f"will{match[1] or ''} be" if match[0].lower().startswith("will") else " will be"
 
 
 def first_person_as_team(sentence: str) -> str:
@@ -352,7 +359,7 @@ def first_person_as_team(sentence: str) -> str:
     >>> first_person_as_team("Today our arms are going to move the blocks, and they won't touch red")
     "Today we will move the blocks, and we won't touch red"
     """
-    sentence = _GOING_TO_BE.sub(" will be", sentence)
+    sentence = _GOING_TO_BE.sub(_future, sentence)
     sentence = _THEY_AS_WE.sub(" we", _TEAM_AS_WE.sub(" we", sentence))
     out, last = [], 0
     for match in _I.finditer(sentence):
