@@ -1,8 +1,9 @@
 """Issue 24, tenth round (h75): the frame words of `handover_discourse` in their one place (a record's
 header in the first sentence, a label's words before a colon), relayed commands, the team named as the
-subject of what it is about to do, an order said before its clause ("After it, ..."), and "one of" a
-region list for one block. The development batch `dev32` must give the written specs (but for the
-sentences refused on purpose); near misses must be refused or read as their words say.
+subject of what it is about to do, an order said before its clause ("After it, ..."), "one of" a region
+list for one block, quoted commands, markdown's bold and postscripts. The development batches
+`dev32`-`dev34` must give the written specs (but for the sentences refused on purpose); near misses must
+be refused or read as their words say.
 """
 
 from __future__ import annotations
@@ -39,6 +40,8 @@ REFUSED = [
      "region at any time."),
     # a relay that is not at the sentence's start, or that forbids the goal
     (1, "Then, tell the arms to move all three blocks to the opposite side, red before blue."),
+    (1, 'The instruction reads: "Move all three blocks to the opposite side." The note said not to place the '
+     "red block before the blue block."),
     (2, "Tell the arms not to put the three blocks on regions H, I and J, one block per region."),
     # words the frame does not know; a name the reader reads
     (4, "Otherwise, move the three blocks to the opposite regions. Don't touch blue until red has been "
@@ -65,6 +68,11 @@ OTHER = [
     (4, "First, the three blocks will have been moved to the opposite regions, and the red block will not "
      "have been touched until the blue block has been touched. After all of these, the yellow block will "
      "have been put back on region G."),
+    # quoted, in markdown or after a postscript, with another meaning
+    (1, 'The note says: "Move all three blocks to the opposite side, blue before red."'),
+    (2, "The sticky note says: 'Put the three blocks on regions H, I and J, one block per region'. P.S. "
+     "nothing on region G."),
+    (6, "**Task:** place the three objects separately on regions G, H and I.\n**Order:** blue before red."),
     # one block's choice of regions differs: no "at once"
     (2, "Red block: one of H, I or J. Blue block: one of H, I or J. Yellow block: H or I. One block per "
      "region."),
@@ -80,7 +88,9 @@ READ = [
 ]
 
 
-@pytest.mark.parametrize(("batch", "style"), [(b, s) for b in ("dev32", "dev33") for s in sorted(STYLES[b])])
+@pytest.mark.parametrize(
+    ("batch", "style"), [(b, s) for b in ("dev32", "dev33", "dev34") for s in sorted(STYLES[b])]
+)
 def test_tenth_round_batches_give_the_written_specs_or_are_refused_by_name(batch, style):
     for task, text in STYLES[batch][style].items():
         if text in STILL_REFUSED:

@@ -211,11 +211,11 @@ _INNER = re.compile(r",\s*([^,:;]{1,40}?)\s*(?=,)")
 
 
 # -- reported speech ---------------------------------------------------------------------------------
-_SPEAKER = r"(?P<speaker>(?:the|our|my|your)\s+[a-z]+|he|she|they|someone|(?-i:[A-Z][a-z]+))"
+_SPEAKER = r"(?P<speaker>(?:the|our|my|your)\s+(?:[a-z]+\s+)?[a-z]+|he|she|they|someone|(?-i:[A-Z][a-z]+))"
 # what a speaker wrote: "Kim's message", "the foreman's note"
 _WRITING = r"(?:\s*['’]s\s+(?:message|note|e-?mail|text|memo|reply|notes))?"
 _RECIPIENT = r"(?:us|me|you|them|everyone|everybody|(?:all\s+)?(?:the\s+)?(?:arms|robots|team|crew))"
-_SAY = r"(?:said|says|say|mentioned|explained|insisted|added|stated|wrote|writes)"
+_SAY = r"(?:said|says|say|mentioned|explained|insisted|added|stated|wrote|writes|reads|read)"
 _ASK = (
     r"(?:told|tells|asked|asks|wants|wanted|instructed|instructs|reminded|reminds|needs|needed|"
     r"(?:is|was|are|were)\s+(?:asking|telling))"

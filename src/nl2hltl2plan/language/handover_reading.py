@@ -150,15 +150,28 @@ def _sentences(instruction: str) -> list[str]:
     bullet = r"[ \t]*\n\s*(?:[-*•·]|\d[.)])\s+"
     instruction = re.sub(rf"(?m)\b(on|onto|in|into|to|at)\s*:{bullet}", r"\1 ", instruction)
     instruction = re.sub(rf"(?m):{bullet}", ": ", instruction)
+    instruction = _unquoted(re.sub(r"\*\*|__", "", instruction))  # markdown's bold: "**Goal:** ..."
     for line in instruction.splitlines():
         text = re.sub(r"(^\s*|[.;!?:]\s+)(\d)\.\s", r"\1\2) ", line)
         text = re.sub(r"\b[iI]\.\s?[eE]\.", "that is", text)
         text = re.sub(r"\b[nN]\.\s?[bB]\.?\s*:?", "NB:", text)  # "N.B. red goes first": a note's label
+        text = re.sub(r"\b(?:[pP]\.\s?)+[sS]\.\s*:?", "PS:", text)  # "P.S. red goes first": a postscript
         text = re.sub(r"\b(opp|approx|resp)\.(?=\s)", r"\1", text, flags=re.IGNORECASE)  # "opp. side"
         # an open checklist box is a bullet (a ticked one says what is done, and is left unread)
         text = re.sub(r"^\s*(?:\[\s*\]|☐)\s*", "- ", text)
         out += [re.sub(r"^\s*[-*•·]\s+", "", s) for s in re.split(r"[.;!?]+(?:\s|$)", text)]
     return [s for s in out if s.strip()]
+
+
+def _unquoted(instruction: str) -> str:
+    """The instruction without the quotation marks around a command quoted whole ('The note says: "Put
+    ..."'): double quotes anywhere; a single quote that opens the instruction or follows a colon, and then
+    one that closes a word ("blocks' places": the possessive's mark, which the reader drops anyway)."""
+    text = re.sub(r"[\"“”]", "", instruction)
+    if re.search(r"(?:^|:)\s*['‘]", text):
+        text = re.sub(r"((?:^|:)\s*)['‘](?=\w)", r"\1", text)
+        text = re.sub(r"(?<=[\w.!?])['’](?=[.!?,;]?(?:\s|$))", "", text)
+    return text
 
 
 _BLOCKS_FIELD = (
