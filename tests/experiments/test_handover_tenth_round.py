@@ -1,8 +1,9 @@
 """Issue 24, tenth round (h75): the frame words of `handover_discourse` in their one place (a record's
 header in the first sentence, a label's words before a colon), relayed commands, the team named as the
 subject of what it is about to do, an order said before its clause ("After it, ..."), "one of" a region
-list for one block, quoted commands, markdown's bold and postscripts. The development batches
-`dev32`-`dev34` must give the written specs (but for the sentences refused on purpose); near misses must
+list for one block, quoted commands, markdown's bold, postscripts, commands received ("we were asked
+to ...", "plan how the arms ..."). The development batches
+`dev32`-`dev35` must give the written specs (but for the sentences refused on purpose); near misses must
 be refused or read as their words say.
 """
 
@@ -40,6 +41,11 @@ REFUSED = [
      "region at any time."),
     # a relay that is not at the sentence's start, or that forbids the goal
     (1, "Then, tell the arms to move all three blocks to the opposite side, red before blue."),
+    # a command received as a prohibition or a question; an explanation asked for; a record's range
+    (1, "We were asked not to move all three blocks to the opposite side, red before blue."),
+    (2, "We were asked whether to put the three blocks on regions H, I and J, one block per region."),
+    (1, "Explain how the arms move all three blocks to the opposite side, red before blue."),
+    (2, "Question 1 of 3. Put the three blocks on regions H, I and J, one block per region."),
     (1, 'The instruction reads: "Move all three blocks to the opposite side." The note said not to place the '
      "red block before the blue block."),
     (2, "Tell the arms not to put the three blocks on regions H, I and J, one block per region."),
@@ -68,6 +74,11 @@ OTHER = [
     (4, "First, the three blocks will have been moved to the opposite regions, and the red block will not "
      "have been touched until the blue block has been touched. After all of these, the yellow block will "
      "have been put back on region G."),
+    # received or asked for, with another order or guard
+    (1, "Plan how the arms move all three blocks to the opposite side, blue before red."),
+    (4, "We were told to transfer the three blocks to the opposite regions and not to touch the red block "
+     "until the blue block has been touched. After all of these, we were told to put the yellow block back "
+     "on region G."),
     # quoted, in markdown or after a postscript, with another meaning
     (1, 'The note says: "Move all three blocks to the opposite side, blue before red."'),
     (2, "The sticky note says: 'Put the three blocks on regions H, I and J, one block per region'. P.S. "
@@ -89,7 +100,7 @@ READ = [
 
 
 @pytest.mark.parametrize(
-    ("batch", "style"), [(b, s) for b in ("dev32", "dev33", "dev34") for s in sorted(STYLES[b])]
+    ("batch", "style"), [(b, s) for b in ("dev32", "dev33", "dev34", "dev35") for s in sorted(STYLES[b])]
 )
 def test_tenth_round_batches_give_the_written_specs_or_are_refused_by_name(batch, style):
     for task, text in STYLES[batch][style].items():

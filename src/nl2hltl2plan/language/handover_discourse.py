@@ -17,8 +17,9 @@ spec can use are dropped, and reported speech and first-person narration become 
   number a step, and stays). A sign-off's writer ("Best, Ana"; "Thanks," then "Ana") is dropped with it
   when the name is no word the reader knows ("Thanks, Red" stays); so is a voice assistant or person
   called after a greeting ("Hey Google, ...", "OK Kim, ...").
-- Relayed commands: "tell / ask / have / get the arms (not) to VERB ..." (after a name called, "Alexa,
-  tell the arms to ...") is the command "(do not) VERB ...".
+- Relayed and received commands: "tell / ask / have / get the arms (not) to VERB ..." (after a name
+  called, "Alexa, tell the arms to ...") is the command "(do not) VERB ..."; so are "we were asked / have
+  been told (not) to VERB", "our instructions are to VERB" and an exam's "plan how the arms VERB".
 - Reported speech: a speaker who names nothing ("the supervisor", "she", "Kim") and a verb of saying or
   asking ("said (that)", "says:", "told us to", "asked the arms to", "wants us to") before a command or a
   rule leave the command ("She asked us to put ..." -> "put ..."); in the past tense, the rule's modal is
@@ -66,7 +67,7 @@ def frame_words() -> dict[str, frozenset[str]]:
 
 
 # categories whose words are frame words only in one place of a fragment (see the words file)
-_PLACED = ("phrase", "opening", "label", "alone", "month")
+_PLACED = ("phrase", "opening", "label", "alone", "month", "score")
 
 
 def _words_as_pattern(words: frozenset[str]) -> str:
@@ -79,7 +80,7 @@ class _Frame(NamedTuple):
     opening: re.Pattern[str]  # a greeting's time of day, opening the fragment
     label: re.Pattern[str]  # words that announce the work before a colon
     alone: frozenset[str]  # whole sentences that end a message
-    records: re.Pattern[str]  # a record's kind with its identifier, a date
+    records: re.Pattern[str]  # a record's kind with its identifier, a date, a question's marks
 
 
 @lru_cache(maxsize=1)
@@ -95,7 +96,8 @@ def _frame() -> _Frame:
         alone=frozenset(w.replace("_", " ") for w in words["alone"]),
         records=re.compile(
             rf"\b(?:{_words_as_pattern(words['record'])})\s+(?:no\s+|number\s+)?#?\s*(?:\d+|[a-z])\b|"
-            rf"\b{day}\s+(?:{months})\b(?:\s+\d{{4}})?|\b(?:{months})\s+{day}\b(?:\s+\d{{4}})?"
+            rf"\b{day}\s+(?:{months})\b(?:\s+\d{{4}})?|\b(?:{months})\s+{day}\b(?:\s+\d{{4}})?|"
+            rf"\b\d+\s+(?:{_words_as_pattern(words['score'])})\b"
         ),
     )
 
@@ -237,6 +239,14 @@ _SOURCE = re.compile(
     rf"(?:just\s+)?heard\s+from)\s+{_SPEAKER}"
     r"(?:\s*,|\s+(?:put\s+it|said|says|wrote)\s*,|\s*:|\s+is\s+(?:that\s+|to\s+(?=\w)))\s*"
 )
+# the command received, said by the team that is to do it: "we were asked to ...", "we have been told not to
+# ...", "our instructions are to ...", "plan how the arms move ..." (an exam's or a brief's question)
+_RECEIVED = re.compile(
+    r"(?i)(?P<start>^|,\s*|\band\s+)(?:(?:we|the\s+(?:arms|robots|team))\s+(?:were|are|have\s+been|['’]ve\s+been)\s+"
+    r"(?:asked|told|instructed|requested|directed)\s+|(?:our|the|my|your)\s+(?:instructions|orders)\s+(?:are|were)\s+|"
+    r"(?:plan|work\s+out|figure\s+out)\s+how\s+(?:the\s+(?:arms|robots)|we|you|to)\s+(?:can\s+|could\s+|should\s+)?)"
+    r"(?P<neg>not\s+)?(?:to\s+)?(?=[a-z])"
+)
 # "and said / and told us (that) CLAUSE" (the speaker said before): the clause
 _AND_SAID = re.compile(rf"(?i)\band\s+(?:{_SAY}|told\s+{_RECIPIENT})(?:\s+that\b)?\s+")
 # "she wanted the yellow block put back on G": a need
@@ -303,6 +313,12 @@ def unreported(sentence: str) -> str:
         reported = True
         return match.group("start") + "we want "
 
+    def received(match: re.Match[str]) -> str:
+        nonlocal reported
+        reported = True
+        return match.group("start") + ("do not " if match.group("neg") else "")
+
+    sentence = _RECEIVED.sub(received, sentence)
     sentence = _SOURCE.sub(clause, sentence)
     sentence = _REPORTED_COMMAND.sub(command, sentence)
     sentence = _REPORTED_CLAUSE.sub(clause, sentence)
@@ -312,7 +328,7 @@ def unreported(sentence: str) -> str:
     sentence = _AND_SAID.sub("and ", sentence)
     sentence = re.sub(r"(?i)\band\s+that\s+", "and ", sentence)
     # "told us to move ... and (not) to put ...": the second command
-    second = re.compile(rf"(?i)\band\s+(not\s+)?to\s+(?={VERB}\b)")
+    second = re.compile(rf"(?i)\band\s+(not\s+)?to\s+(?=(?:{VERB}|{SWAP}|{TOUCH})\b)")
     sentence = second.sub(lambda m: "and do not " if m[1] else "and ", sentence)
     for pattern, replacement in _BACKSHIFT:
         sentence = pattern.sub(replacement, sentence)
