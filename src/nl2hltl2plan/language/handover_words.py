@@ -117,8 +117,7 @@ STEP_NUMBER = rf"\s*(?:{FIRST_STEP}|{LATER_STEP}|{_STEP_WORD}\s+\w+\s*[:-]?)?\s*
 # form the patterns read and changes no meaning ("prior to" -> "before", "whilst" -> "while").
 REWRITES: tuple[tuple[str, str], ...] = (
     (r"\bi\s*\.\s*e\s*\.?(?=\s|,|$)", " that is "),
-    # (also after a step said first: "after all of these, the plan is to put ...")
-    (
+    (  # (also after a step said first: "after all of these, the plan is to put ...")
         r"(^|,)\s*(?:your|the|my|our)\s+(?:job|task|goal|mission|assignment|plan)\s*(?:is\s+to\b|:)",
         r"\1 please",
     ),
