@@ -2,8 +2,8 @@
 header in the first sentence, a label's words before a colon), relayed commands, the team named as the
 subject of what it is about to do, an order said before its clause ("After it, ..."), "one of" a region
 list for one block, quoted commands, markdown's bold, postscripts, commands received ("we were asked
-to ...", "plan how the arms ..."). The development batches
-`dev32`-`dev35` must give the written specs (but for the sentences refused on purpose); near misses must
+to ...", "plan how the arms ...", "let me ..."), asides ("btw"). The development batches
+`dev32`-`dev36` must give the written specs (but for the sentences refused on purpose); near misses must
 be refused or read as their words say.
 """
 
@@ -46,6 +46,8 @@ REFUSED = [
     (2, "We were asked whether to put the three blocks on regions H, I and J, one block per region."),
     (1, "Explain how the arms move all three blocks to the opposite side, red before blue."),
     (2, "Question 1 of 3. Put the three blocks on regions H, I and J, one block per region."),
+    (3, "Let me move the three pillars to regions E, F and G beside arms a and b. Let me see, any other "
+     "region is fine too."),
     (1, 'The instruction reads: "Move all three blocks to the opposite side." The note said not to place the '
      "red block before the blue block."),
     (2, "Tell the arms not to put the three blocks on regions H, I and J, one block per region."),
@@ -74,7 +76,9 @@ OTHER = [
     (4, "First, the three blocks will have been moved to the opposite regions, and the red block will not "
      "have been touched until the blue block has been touched. After all of these, the yellow block will "
      "have been put back on region G."),
-    # received or asked for, with another order or guard
+    # received, asked for or narrated, with another order or guard
+    (1, "Let me move all three blocks to the opposite side, with the blue block placed before the red "
+     "block."),
     (1, "Plan how the arms move all three blocks to the opposite side, blue before red."),
     (4, "We were told to transfer the three blocks to the opposite regions and not to touch the red block "
      "until the blue block has been touched. After all of these, we were told to put the yellow block back "
@@ -100,7 +104,8 @@ READ = [
 
 
 @pytest.mark.parametrize(
-    ("batch", "style"), [(b, s) for b in ("dev32", "dev33", "dev34", "dev35") for s in sorted(STYLES[b])]
+    ("batch", "style"),
+    [(b, s) for b in ("dev32", "dev33", "dev34", "dev35", "dev36") for s in sorted(STYLES[b])],
 )
 def test_tenth_round_batches_give_the_written_specs_or_are_refused_by_name(batch, style):
     for task, text in STYLES[batch][style].items():

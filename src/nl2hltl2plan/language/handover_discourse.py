@@ -29,8 +29,9 @@ spec can use are dropped, and reported speech and first-person narration become 
   reads as the team's commands ("we will move ..." -> "move ..."); "I" after a list of region letters or
   after "region" is the region, never the pronoun. The team named as the subject of what it is about to
   do is "we" too ("Today our arms are going to move ...", "the robots will put ...", "they won't touch
-  the blue block": "they" only before a placing or touching verb and its object), and a passive's future
-  "is going to be placed" is "will be placed".
+  the blue block": "they" only before a placing or touching verb and its object), "let me (not) move" is
+  "we will (not) move", and a passive's future "is going to be placed" is "will be placed". An aside's
+  abbreviation ("btw", "fyi") that opens a sentence is dropped without a comma too.
 
     >>> plain(["Roger", "I'll put the red block on G", "Will do"])
     ["we'll put the red block on G"]
@@ -174,7 +175,7 @@ def _unframed_sentence(sentence: str, header: bool = False) -> str:
         if not (empty(head.group(1), label=head is label, header=header) or _called(head.group(1))):
             break
         sentence = sentence[head.end() :]
-    sentence = _unrelayed(sentence)
+    sentence = _unrelayed(_ASIDE.sub("", sentence))
     tail = _TAIL.search(sentence)
     if tail and empty(tail.group(1)):
         sentence = sentence[: tail.start()]
@@ -202,6 +203,10 @@ def _unrelayed(sentence: str) -> str:
     if relayed is None or (relayed["name"] and not _name(relayed["name"])):
         return sentence
     return ("do not " if relayed["not"] else "") + sentence[relayed.end() :]
+
+
+# an aside's abbreviation that opens the sentence, with or without a comma ("btw red goes first")
+_ASIDE = re.compile(rf"(?i)^\s*(?:{'|'.join(sorted(frame_words()['aside']))})\b[\s,:]*(?=\S)")
 
 
 def _called(fragment: str) -> bool:
@@ -355,6 +360,8 @@ _THEY_AS_WE = re.compile(
     rf"(?i){_CLAUSE_START}\s*they(?=(?:{_FUTURE})(?:\s+not)?\s+(?:{VERB}|{SWAP}|{TOUCH})\s+"
     r"(?:the|all|both|each|every|any|anything|red|blue|yellow|three|two|it|them|one|no|nothing)\b)"
 )
+# "let me (not) move ...": the speaker's plan, as "I'll (not) move ..."
+_LET_ME = re.compile(rf"(?i)\blet\s+(?:me|us)\s+(not\s+)?(?=(?:first\s+)?(?:{VERB}|{SWAP}|{TOUCH})\b)")
 # the future of a passive ("the red block is going to be placed", "nothing is going to be put") and its
 # perfect ("will (not) have been touched": the state the plan reaches) are "will (not) be"
 _GOING_TO_BE = re.compile(
@@ -376,6 +383,7 @@ def first_person_as_team(sentence: str) -> str:
     "Today we will move the blocks, and we won't touch red"
     """
     sentence = _GOING_TO_BE.sub(_future, sentence)
+    sentence = _LET_ME.sub(lambda m: "we will not " if m[1] else "we will ", sentence)
     sentence = _THEY_AS_WE.sub(" we", _TEAM_AS_WE.sub(" we", sentence))
     out, last = [], 0
     for match in _I.finditer(sentence):
