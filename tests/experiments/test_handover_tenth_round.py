@@ -1,10 +1,10 @@
 """Issue 24, tenth round (h75): the frame words of `handover_discourse` in their one place (a record's
 header in the first sentence, a label's words before a colon), relayed commands, the team named as the
 subject of what it is about to do, an order said before its clause ("After it, ..."), "one of" a region
-list for one block, quoted commands, markdown's bold, postscripts, commands received ("we were asked
-to ...", "plan how the arms ...", "let me ..."), asides ("btw"). The development batches
-`dev32`-`dev36` must give the written specs (but for the sentences refused on purpose); near misses must
-be refused or read as their words say.
+list for one block, quoted commands, markdown's bold, postscripts, commands received ("we were asked to
+...", "plan how the arms ...", "let me ..."), asides ("btw"), bug reports' labels. The development
+batches `dev32`-`dev37` must give the written specs (but for the sentences refused on purpose); near
+misses must be refused or read as their words say.
 """
 
 from __future__ import annotations
@@ -21,6 +21,10 @@ from nl2hltl2plan.language.handover_discourse import empty, first_person_as_team
 # stated with a negation ("blocks not on targets"), an order as a participle after a block's heading, a
 # label that names an order ("Last round:"), "by the end" before other goals (the last step said first?)
 STILL_REFUSED = {
+    "Bug #301. Reproduce: move all three blocks to the opposite side. Expected: the red block is placed "
+    "before the blue block. Actual: not yet run.",
+    "First the red block: region G, H or I. After it, the blue block: region G, H or I. The yellow block: "
+    "region G, H or I. One block per region.",
     "How to play: transfer the three blocks to the opposite regions. Rule: nobody touches the blue block "
     "until the red block has been touched. Last round: after all of these, put the yellow block back on "
     "region G.",
@@ -46,6 +50,9 @@ REFUSED = [
     (2, "We were asked whether to put the three blocks on regions H, I and J, one block per region."),
     (1, "Explain how the arms move all three blocks to the opposite side, red before blue."),
     (2, "Question 1 of 3. Put the three blocks on regions H, I and J, one block per region."),
+    # what happened is no requirement
+    (1, "Bug 3. Reproduce: move all three blocks to the opposite side. Actual: the red block was placed "
+     "after the blue block."),
     (3, "Let me move the three pillars to regions E, F and G beside arms a and b. Let me see, any other "
      "region is fine too."),
     (1, 'The instruction reads: "Move all three blocks to the opposite side." The note said not to place the '
@@ -76,6 +83,11 @@ OTHER = [
     (4, "First, the three blocks will have been moved to the opposite regions, and the red block will not "
      "have been touched until the blue block has been touched. After all of these, the yellow block will "
      "have been put back on region G."),
+    # a bug report's expectation, a block's heading with another order
+    (1, "Bug #301. Reproduce: move all three blocks to the opposite side. Expected: the blue block is placed "
+     "before the red block."),
+    (7, "Red block: onto region I. Blue block: onto region I, before the red one. Yellow block: onto "
+     "region I too. Meanwhile nothing on regions F, G or H."),
     # received, asked for or narrated, with another order or guard
     (1, "Let me move all three blocks to the opposite side, with the blue block placed before the red "
      "block."),
@@ -105,7 +117,7 @@ READ = [
 
 @pytest.mark.parametrize(
     ("batch", "style"),
-    [(b, s) for b in ("dev32", "dev33", "dev34", "dev35", "dev36") for s in sorted(STYLES[b])],
+    [(b, s) for b in ("dev32", "dev33", "dev34", "dev35", "dev36", "dev37") for s in sorted(STYLES[b])],
 )
 def test_tenth_round_batches_give_the_written_specs_or_are_refused_by_name(batch, style):
     for task, text in STYLES[batch][style].items():

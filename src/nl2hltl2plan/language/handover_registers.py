@@ -27,7 +27,13 @@ the word tables' `REWRITES`). Each rewrite changes no meaning:
   things first" (first);
 - manner adverbs that every plan already meets ("carefully", "quickly"; "gently" is left unread), a group
   said in other words ("the whole lot of blocks", "every single block", "the trio of objects"), a range
-  of region letters ("regions H through J") and "slot" for a region.
+  of region letters ("regions H through J") and "slot" for a region;
+- steps said block by block: one block's place as a choice ("red block: one of H, I or J"; after two
+  blocks "one of" may mean one region for both, and is left unread), a block's heading before its
+  place's preposition ("blue block: onto region I, after the red one": the block goes there); "still
+  need(s) to" is "need(s) to";
+- labels that say something: "Scope:" / "You will need:" (the blocks, as the scene statement "we have
+  ..."), "Here's what I want:" (a need).
 """
 
 from __future__ import annotations
@@ -82,10 +88,16 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     # one block's place said as a choice: "red block: one of H, I or J" is "red block: H, I or J" (after two
     # blocks, "one of" may mean one region for both: left unread)
     (
-        r"(?<!\band\s)(?<!\bor\s)(?<!,\s)\b((?:red|blue|yellow)\b(?:\s+(?!and\b|or\b|red\b|blue\b|yellow\b)[a-z]+){0,2}?"
-        r"\s*:?\s*)one\s+of\s+"
+        r"(?<!\band\s)(?<!\bor\s)(?<!,\s)\b((?:red|blue|yellow)\b"
+        r"(?:\s+(?!and\b|or\b|red\b|blue\b|yellow\b)[a-z]+){0,2}?\s*:?\s*)one\s+of\s+"
         r"(?=(?:the\s+)?(?:regions?\s+)?[e-j]\b)",
         r"\1",
+    ),
+    # a block's heading before a preposition ("blue block: onto region i, ..."): the block goes there
+    (
+        r"^(\s*(?:the\s+)?(?:red|blue|yellow)\s+(?:block|pillar|cube|object))\s*:\s*"
+        r"(?=(?:onto|on|to|into|in)\s)",
+        r"\1 goes ",
     ),
     # "the pillars still need to go ...": what is still to be done is what is to be done
     (r"\bstill\s+(?=(?:needs?|has|have|must)\s+(?:to\b|be\b))", " "),
