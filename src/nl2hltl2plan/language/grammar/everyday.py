@@ -1,6 +1,7 @@
 """Everyday styles normalised before the grammar's rules (issue 28), each step removing or rewriting only
 words that carry no object, place, count, negation or order in the place where it applies:
 
+- misspelt names of things ("tomatoe", "coffe table") as the lexicon writes them (`spelling.respelt`);
 - terse notation: "green apple -> blue plate" is "green apple onto blue plate" (the placement verb is
   then supplied as for any verbless placement), "first: A" / "then: B" lose the colon, and a
   parenthetical free-order remark "(any order)" is kept as ", in any order" (other parentheticals are
@@ -20,13 +21,11 @@ words that carry no object, place, count, negation or order in the place where i
 
 from __future__ import annotations
 
-import difflib
 import re
-from functools import cache
 
 from nl2hltl2plan.language.content_words import free_order_phrase
 from nl2hltl2plan.language.grammar.restated import count_fits, restated
-from nl2hltl2plan.language.grounding import lexicon
+from nl2hltl2plan.language.spelling import respelt
 
 # hesitations, the one list of them (the handover reader's spoken step uses it too)
 HESITATION = r"(?:u+h+m*|u+m+|e+r+m*|hmm+|mm+)"
@@ -102,7 +101,7 @@ def everyday(text: str) -> str:
     text = _BARE.sub(lambda m: _BARE_CONTRACTION[m[1].lower()], text)
     if _FREE_REMARK.search(text):  # "1. X. 2. Y. Any order is fine.": the numbers only list the steps
         text = _NUMBERED.sub(lambda m: m["lead"], text)
-    text = _TWO_WORD_NAME.sub(_spelt_name, text)
+    text = respelt(text)  # misspelt names of things (language/spelling.py)
     text = _REFERENCE_TO_ALL.sub(_reference_sentence, text)
     text = _PAREN_FREE_ORDER.sub(", in any order", text)
     text = _STEP_COLON.sub(r"\1 ", _ARROW.sub(" onto ", text))
@@ -147,28 +146,6 @@ _ORDER_WORD = re.compile(
 # counts of nothing (a numbered list may mean a sequence)
 _NUMBERED = re.compile(r"(?P<lead>^|(?<=[.;!?:])\s+|\n)\s*\d{1,2}\s*[.)]\s+(?=[a-z])", re.I)
 _FREE_REMARK = re.compile(rf"\b{_FREE_ORDER}\b", re.I)
-_TWO_WORD_NAME = re.compile(r"\b([a-z]{4,})\s+([a-z]{3,})\b", re.I)
-
-
-@cache
-def _two_word_names() -> dict[str, set[str]]:
-    """The lexicon's two-word names by their second word: "table" -> {"coffee", "side", ...}."""
-    out: dict[str, set[str]] = {}
-    for key in lexicon():
-        if len(key) == 2:
-            out.setdefault(key[1], set()).add(key[0])
-    return out
-
-
-def _spelt_name(m: re.Match[str]) -> str:
-    """ "coffe table" -> "coffee table": a first word one letter off a two-word name of the lexicon whose
-    second word is right, and no word the lexicon knows on its own."""
-    first, second = m[1], m[2]
-    known = _two_word_names().get(second.lower(), set())
-    if not known or first.lower() in known or (first.lower(),) in lexicon():
-        return m[0]
-    close = difflib.get_close_matches(first.lower(), sorted(known), n=2, cutoff=0.85)
-    return f"{close[0]} {second}" if len(close) == 1 else m[0]
 
 
 def _without_need_heading(text: str) -> str:

@@ -1,0 +1,72 @@
+"""Misspelt names of things (language/spelling.py): read as the lexicon's words by the grammar, and never
+passed over by check 1; real English words that look like names stay as they are."""
+
+from __future__ import annotations
+
+import pytest
+
+from nl2hltl2plan.language.accounting import account
+from nl2hltl2plan.language.grammar import parse_instruction
+from nl2hltl2plan.language.spelling import respelt, spelt_name
+from nl2hltl2plan.language.task_specs import BaseTaskSpec
+
+KITCHEN = {"Tomato", "Bread", "Mug", "Kettle", "Lettuce", "Fridge", "CounterTop", "SinkBasin", "StoveBurner"}
+
+
+@pytest.mark.parametrize(
+    "word, name",
+    [
+        ("tomatoe", "tomato"),  # a letter too many
+        ("microwve", "microwave"),  # a letter left out
+        ("cabnet", "cabinet"),
+        ("kettel", "kettle"),  # two neighbours swapped
+        ("Frige", "fridge"),
+        # English words close to a name are what they say: "ridge" is not the fridge
+        ("ridge", None),
+        ("dressed", None),
+        ("status", None),
+        ("garage", None),
+        ("fridge", None),  # a name the lexicon knows
+        ("tomatoes", None),  # and its plural
+        ("lapdog", None),  # close to no name
+    ],
+)
+def test_a_misspelt_name_is_the_closest_name_unless_english_knows_the_word(word, name):
+    assert spelt_name(word) == name
+
+
+def test_respelt_keeps_the_capital_and_the_rest_of_the_text():
+    assert respelt("Put the Tomatoe in the coffe machine, then wash it") == (
+        "Put the Tomato in the coffee machine, then wash it"
+    )
+
+
+@pytest.mark.parametrize(
+    "text, tasks",
+    [
+        # the misspelt object once hid the first task: the whole sentence was read as "chill the bread"
+        (
+            "put the tomatoe in the fridge and then the bread on the counter",
+            ["place Tomato -> Fridge", "place Bread -> CounterTop"],
+        ),
+        (
+            "put the bread in the fridge and then the tomatoe on the counter",
+            ["place Bread -> Fridge", "place Tomato -> CounterTop"],
+        ),
+        (
+            "put the kettel on the stove and then the mug in the sink",
+            ["place Kettle -> StoveBurner", "place Mug -> SinkBasin"],
+        ),
+    ],
+)
+def test_the_grammar_reads_a_misspelt_object_in_a_list_of_tasks(text, tasks):
+    r = parse_instruction(text, KITCHEN, "kitchen")
+    assert ([t.summary() for t in r.tasks], r.before, r.unparsed) == (tasks, [("A", "B")], [])
+
+
+def test_check_one_names_a_misspelt_object_that_the_reading_leaves_out():
+    chill_bread = BaseTaskSpec(
+        id="A", kind="cool_place", object=["Bread"], receptacle=["CounterTop"]
+    )  # what a re-read of the whole sentence once returned
+    text = "put the tomatoe in the fridge and then the bread on the counter"
+    assert "tomato" in [u.words for u in account(text, [chill_bread], [])]
