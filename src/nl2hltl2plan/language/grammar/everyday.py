@@ -25,6 +25,7 @@ import re
 
 from nl2hltl2plan.language.content_words import free_order_phrase
 from nl2hltl2plan.language.grammar.restated import count_fits, restated
+from nl2hltl2plan.language.grounding import find_mentions
 from nl2hltl2plan.language.spelling import respelt
 
 # hesitations, the one list of them (the handover reader's spoken step uses it too)
@@ -76,8 +77,9 @@ _BARE_CONTRACTION = {
     "thats": "that's", "whats": "what's", "dont": "don't", "doesnt": "doesn't", "didnt": "didn't",
     "cant": "can't", "wont": "won't", "isnt": "isn't", "arent": "aren't", "youre": "you're",
     "theyre": "they're", "shouldnt": "shouldn't", "wouldnt": "wouldn't", "couldnt": "couldn't",
-    "youve": "you've", "ive": "I've",
+    "youve": "you've", "ive": "I've", "ur": "your",
 }  # fmt: skip
+_UR_DONE = re.compile(r"\bur\s+(?=(?:done|finished|through)\b)", re.I)  # "ur done": "you're"; else "your"
 _BARE = re.compile(rf"\b({'|'.join(_BARE_CONTRACTION)})\b", re.I)
 # "A, B, and after both of those put C": a reference to every task before, which the rules read where it
 # opens a sentence and ends at a comma ("A, B. After both of those, put C")
@@ -98,7 +100,7 @@ def _reference_sentence(m: re.Match[str]) -> str:
 
 def everyday(text: str) -> str:
     """The text with the everyday styles above rewritten onto the forms the grammar reads."""
-    text = _BARE.sub(lambda m: _BARE_CONTRACTION[m[1].lower()], text)
+    text = _BARE.sub(lambda m: _BARE_CONTRACTION[m[1].lower()], _UR_DONE.sub("you're ", text))
     if _FREE_REMARK.search(text):  # "1. X. 2. Y. Any order is fine.": the numbers only list the steps
         text = _NUMBERED.sub(lambda m: m["lead"], text)
     text = respelt(text)  # misspelt names of things (language/spelling.py)
@@ -107,6 +109,7 @@ def everyday(text: str) -> str:
     text = _STEP_COLON.sub(r"\1 ", _ARROW.sub(" onto ", text))
     if _BELONGS.search(text):
         text = _PUT_THEM_THERE.sub("", text)
+    text = _THING_FIRST.sub(lambda m: f"{m['lead']}take {m['np']}, ", _THERE.sub(_there_named, text))
     text = _HESITATION.sub(" ", text)
     text = re.sub(r"(\s*,)+", ",", text)  # the commas left where fillers were
     text = _LIKE.sub(",", _TAG.sub("", text))
@@ -146,6 +149,51 @@ _ORDER_WORD = re.compile(
 # counts of nothing (a numbered list may mean a sequence)
 _NUMBERED = re.compile(r"(?P<lead>^|(?<=[.;!?:])\s+|\n)\s*\d{1,2}\s*[.)]\s+(?=[a-z])", re.I)
 _FREE_REMARK = re.compile(rf"\b{_FREE_ORDER}\b", re.I)
+
+
+# "put the egg (in) there too", "then the egg in there": "there" is the last destination named before it
+# ("put the bread in the fridge, then put the egg in there too"); with none before, it stays, and is read
+# or refused as it is
+_THERE = re.compile(
+    r"(?P<head>\b(?:put|place|set|stick|pop|drop|leave|store|move)\s+(?:it|them|(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)"
+    r"|(?:(?<=\bthen\s)|(?<=\band\s))(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)"
+    r"\s+(?:(?:in|into|inside|on|onto)\s+)?there\b(?=\s*(?:too|as\s+well|also)?\s*(?:[,.;!?]|$|and\b|then\b))",
+    re.I,
+)
+_NEGATED = re.compile(r"(?:\bnot|n't|\bnever|\bno)\s+(?:\w+\s+)?$", re.I)
+_DESTINATION_PHRASE = re.compile(
+    r"(?<!next )(?<!close )\b(?P<prep>in|into|inside|on|onto|to)\s+"
+    r"(?P<np>(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)",
+    re.I,
+)
+
+
+def _there_named(m: re.Match[str]) -> str:
+    """ "put the egg in there": the last destination named before it, written out; else as it is (and
+    after a negation, "don't put the knife there", which the constraint reader reads as it is)."""
+    if _NEGATED.search(m.string[: m.start()]):
+        return m[0]
+    places = [
+        d for d in _DESTINATION_PHRASE.finditer(m.string[: m.start()])
+        if find_mentions(d["np"]) and not find_mentions(d["np"])[-1].entry.generic
+    ]  # fmt: skip
+    if not places:
+        return m[0]
+    last = places[-1]
+    mention = find_mentions(last["np"])[-1]
+    det = last["np"].split()[0].lower()
+    prep = "in" if last["prep"].lower() == "to" else last["prep"].lower()
+    return f"{m['head']} {prep} {'the' if det == 'a' or det == 'an' else det} {mention.surface}"
+
+
+# "the mug that's on the counter, put it in the sink": the thing named first, then what to do with "it"
+# (a fronted object with where it is): "take the mug that's on the counter, put it in the sink"
+_THING_FIRST = re.compile(
+    r"(?P<lead>^\s*|[.;!?]\s+)(?P<np>(?:the|a|an|that|this)\s+[a-z]+(?:\s+[a-z]+)?\s+"
+    r"(?:that's|that\s+is|which\s+is|that\s+are|which\s+are)\s+(?:sitting\s+|lying\s+)?(?:on|in|inside|at)\s+"
+    r"(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)\s*,\s*(?=[a-z]+\s+(?:it|them)\b)",
+    re.I,
+)
 
 
 def _without_need_heading(text: str) -> str:
