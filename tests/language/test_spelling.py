@@ -7,7 +7,7 @@ import pytest
 
 from nl2hltl2plan.language.accounting import account
 from nl2hltl2plan.language.grammar import parse_instruction
-from nl2hltl2plan.language.spelling import respelt, spelt_name
+from nl2hltl2plan.language.spelling import respelt, spelt_name, spelt_word
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
 
 KITCHEN = {"Tomato", "Bread", "Mug", "Kettle", "Lettuce", "Fridge", "CounterTop", "SinkBasin", "StoveBurner"}
@@ -70,3 +70,25 @@ def test_check_one_names_a_misspelt_object_that_the_reading_leaves_out():
     )  # what a re-read of the whole sentence once returned
     text = "put the tomatoe in the fridge and then the bread on the counter"
     assert "tomato" in [u.words for u in account(text, [chill_bread], [])]
+
+
+@pytest.mark.parametrize(
+    "word, english",
+    [
+        ("woould", "would"),
+        ("cleean", "clean"),
+        ("slcie", "slice"),  # two neighbours swapped
+        ("alriight", "alright"),
+        ("finsihed", None),  # an order word is never made from a misspelling: its scope is no guess
+        ("firrst", None),
+        ("colour", None),  # a British spelling is English
+        ("wilco", None),  # a word of the project's own lists (the handover radio words)
+        ("woud", None),  # one edit from several words: which is meant is a guess
+    ],
+)
+def test_another_misspelt_word_is_the_one_english_word_one_edit_away(word, english):
+    assert spelt_word(word) == english
+
+
+def test_a_contraction_is_no_misspelling():
+    assert respelt("it doesn't matter, woould you") == "it doesn't matter, would you"

@@ -1,12 +1,17 @@
-"""Misspelt names of things: "tomatoe", "microwve", "coffe table" read as the lexicon's words (issue 28).
+"""Misspelt words: "tomatoe", "microwve", "coffe table" read as the lexicon's names, "woould", "cleean" as
+English writes them (issue 28).
 
 One rule, used by the grammar (through `grammar.everyday`) and by check 1 (which reads the same rewritten
-text, so a misspelt name the reading does not use is named, never passed over): a word of five letters
-or more that the lexicon does not know is the lexicon word it is closest to (difflib ratio >= 0.85, or
-two neighbouring letters swapped; one best match) when English does not know it either. The English
-test (pyspellchecker's frequency list) keeps real words that look like names as they are: "ridge" is
-not the fridge, "dressed" not the dresser, "status" not the statue. The list loads only when a word
-passes the first test.
+text, so a misspelt name that a reading does not use is named, never passed over):
+- a word of five letters or more that the lexicon does not know is the lexicon word it is closest to
+  (difflib ratio >= 0.85, or two neighbouring letters swapped; one best match) when English does not
+  know it either: "ridge" is not the fridge, "dressed" not the dresser, "status" not the statue;
+- any other word of four letters or more that neither the lexicon, the project's word lists nor English
+  knows (a British spelling is English) is the English word one edit away, when exactly one is and it
+  names an action, a state or a count, or is a word of politeness ("woould", "cleean", "slcie"); never
+  an order word or a word that builds a structure ("when finsihed", "containign" stay unread: their
+  scope is no guess).
+English is pyspellchecker's frequency list; it loads only when a word passes the first tests.
 """
 
 from __future__ import annotations
@@ -14,11 +19,16 @@ from __future__ import annotations
 import difflib
 import re
 from functools import cache, lru_cache
+from importlib import resources
 
+from nl2hltl2plan.language.content_words import categories
 from nl2hltl2plan.language.grounding import lexicon
 
 CUTOFF = 0.85  # one letter off in a five-letter word (4/5 matched is 0.8: "plate"/"place" stay apart)
-_WORD = re.compile(r"[A-Za-z]{5,}")
+_WORD = re.compile(r"(?<![A-Za-z'])[A-Za-z]{4,}(?![A-Za-z'])")  # not a part of "doesn't"
+_POLITE = frozenset({"would", "could", "kindly", "please", "alright", "okay"})
+# the project's own word lists: their words are read as written ("wilco" is no "wilcox")
+_WORD_LISTS = ("content_words.txt", "free_order.txt", "handover_frame_words.txt")
 
 
 @cache
@@ -30,8 +40,11 @@ def _name_words() -> tuple[str, ...]:
 
 @cache
 def _known_words() -> frozenset[str]:
-    """Every word the lexicon knows in any form (plurals included): these are never respelt."""
-    return frozenset(w for key in lexicon() for w in key)
+    """Every word the lexicon knows in any form (plurals included), and every word of the project's word
+    lists: these are never respelt."""
+    listed = (resources.files("nl2hltl2plan.language").joinpath(f).read_text() for f in _WORD_LISTS)
+    words = {w for t in listed for w in re.findall(r"[a-z]+", t.lower())}
+    return frozenset(w for key in lexicon() for w in key) | words
 
 
 @cache
@@ -72,13 +85,42 @@ def _score(low: str, name: str) -> float:
     return difflib.SequenceMatcher(None, low, name).ratio()
 
 
+@lru_cache(maxsize=4096)
+def spelt_word(word: str) -> str | None:
+    """The English word that `word` misspells ("woould", "alriight", "cleean"): a word of four letters or
+    more that neither the lexicon, the project's word lists nor English knows and that is one edit (a
+    letter more, less, changed, or two neighbours swapped) from exactly one English word, which
+    `_respellable` allows; else None. Names are `spelt_name`'s."""
+    low = word.lower()
+    if len(low) < 4 or low in _known_words() or _english().known(_american(low)):
+        return None
+    close = _english().known(_english().edit_distance_1(low))
+    return next(iter(close)) if len(close) == 1 and _respellable(next(iter(close))) else None
+
+
+def _respellable(word: str) -> bool:
+    """A word a misspelling may become: one that names an action, a state or a count (check 1's
+    categories), or a word of politeness ("would", "kindly"); never an order word, whose scope the
+    grammar would then guess, nor a word that builds a structure ("containing")."""
+    found = categories(word)
+    return word in _POLITE or bool(found) and not found & {"order", "any_order"}
+
+
+def _american(low: str) -> list[str]:
+    """The word and its American spellings ("colour", "neighbours", "normalised"): the word list is
+    American, and a British spelling is no misspelling."""
+    out = [low, low.replace("our", "or"), re.sub(r"is(e|ed|es|ing|ation)$", r"iz\1", low)]
+    return [*out, re.sub(r"ll(ed|ing)$", r"l\1", low)]
+
+
 def respelt(text: str) -> str:
-    """`text` with each misspelt name written as the lexicon writes it (a capital kept)."""
+    """`text` with each misspelt name written as the lexicon writes it, and each other misspelt word as
+    English writes it (a capital kept)."""
 
     def fix(m: re.Match[str]) -> str:
-        name = spelt_name(m[0])
-        if name is None:
+        word = spelt_name(m[0]) or spelt_word(m[0])
+        if word is None:
             return m[0]
-        return name.capitalize() if m[0][0].isupper() else name
+        return word.capitalize() if m[0][0].isupper() else word
 
     return _WORD.sub(fix, text)
