@@ -92,3 +92,8 @@ def test_another_misspelt_word_is_the_one_english_word_one_edit_away(word, engli
 
 def test_a_contraction_is_no_misspelling():
     assert respelt("it doesn't matter, woould you") == "it doesn't matter, would you"
+
+
+def test_a_four_letter_word_is_a_name_only_by_a_swap():
+    assert [spelt_name(w) for w in ("lmap", "snik", "dsek")] == ["lamp", "sink", "desk"]
+    assert spelt_name("plae") is None  # "place" or "plate": a letter left out of a short word is a guess

@@ -3,9 +3,10 @@ English writes them (issue 28).
 
 One rule, used by the grammar (through `grammar.everyday`) and by check 1 (which reads the same rewritten
 text, so a misspelt name that a reading does not use is named, never passed over):
-- a word of five letters or more that the lexicon does not know is the lexicon word it is closest to
-  (difflib ratio >= 0.85, or two neighbouring letters swapped; one best match) when English does not
-  know it either: "ridge" is not the fridge, "dressed" not the dresser, "status" not the statue;
+- a word of four letters or more that the lexicon does not know is the lexicon word it is closest to
+  (difflib ratio >= 0.85, or two neighbouring letters swapped, the only way for a four-letter word: "lmap";
+  one best match) when English does not know it either: "ridge" is not the fridge, "dressed" not the
+  dresser, "status" not the statue;
 - any other word of four letters or more that neither the lexicon, the project's word lists nor English
   knows (a British spelling is English) is the English word one edit away, when exactly one is and it
   names an action, a state or a count, or is a word of politeness ("woould", "cleean", "slcie"); never
@@ -59,7 +60,7 @@ def spelt_name(word: str) -> str | None:
     """The lexicon word that `word` misspells, or None (a known word, a real English word, too short,
     or no single closest name)."""
     low = word.lower()
-    if len(low) < 5 or low in _known_words():
+    if len(low) < 4 or low in _known_words():
         return None
     scored = sorted(((_score(low, w), w) for w in _close(low)), reverse=True)
     if not scored or (len(scored) > 1 and scored[1][0] == scored[0][0]):
@@ -74,6 +75,8 @@ def _close(low: str) -> list[str]:
     scores a swap as two edits)."""
     swapped = {low[:i] + low[i + 1] + low[i] + low[i + 2 :] for i in range(len(low) - 1)}
     names = _name_words()
+    if len(low) == 4:  # "plae" may be "place" as well as "plate": a short word is a name only by a swap
+        return sorted(swapped & set(names))
     return sorted({*difflib.get_close_matches(low, names, n=3, cutoff=CUTOFF), *(swapped & set(names))})
 
 
