@@ -1,7 +1,10 @@
 """Everyday styles normalised before the grammar's rules (issue 28), each step removing or rewriting only
 words that carry no object, place, count, negation or order in the place where it applies:
 
-- misspelt names of things ("tomatoe", "coffe table") as the lexicon writes them (`spelling.respelt`);
+- misspelt words ("tomatoe", "coffe table", "woould") as the lexicon or English writes them
+  (`spelling.respelt`), and texting forms: "ur done" is "you're done", another "ur" is "your";
+- places and things said first: "put the egg (in) there" names the last destination before it, and "the
+  mug that's on the counter, put it in the sink" takes the mug first;
 - terse notation: "green apple -> blue plate" is "green apple onto blue plate" (the placement verb is
   then supplied as for any verbless placement), "first: A" / "then: B" lose the colon, and a
   parenthetical free-order remark "(any order)" is kept as ", in any order" (other parentheticals are
@@ -180,10 +183,8 @@ def _there_named(m: re.Match[str]) -> str:
     if not places:
         return m[0]
     last = places[-1]
-    mention = find_mentions(last["np"])[-1]
-    det = last["np"].split()[0].lower()
-    prep = "in" if last["prep"].lower() == "to" else last["prep"].lower()
-    return f"{m['head']} {prep} {'the' if det == 'a' or det == 'an' else det} {mention.surface}"
+    prep = "in" if last["prep"].lower() == "to" else last["prep"].lower()  # "walk to the sink ... in there"
+    return f"{m['head']} {prep} the {find_mentions(last['np'])[-1].surface}"
 
 
 # "the mug that's on the counter, put it in the sink": the thing named first, then what to do with "it"
