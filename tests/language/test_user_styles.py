@@ -187,16 +187,18 @@ def test_check_one_accepts_what_is_used_and_names_the_rest(text, tasks, before, 
 
 
 @pytest.mark.data
-def test_user_style_set_converts():
+@pytest.mark.parametrize("name, least", [("users", 50), ("users_casual", 235)])
+def test_user_style_set_converts(name, least):
+    """No line of a user-style set is read wrong; a line that must be refused is; 90 % of the rest convert."""
     import trust_sets
 
-    path = Path(__file__).parent / "data" / "styles" / "users.txt"
+    path = Path(__file__).parent / "data" / "styles" / f"{name}.txt"
     lines = [ln for ln in path.read_text().splitlines() if ln.strip() and not ln.startswith("#")]
     gts = [
-        trust_sets.GTInstance.model_validate(trust_sets.parse_line(ln, "users", k))
-        for k, ln in enumerate(lines)
+        trust_sets.GTInstance.model_validate(trust_sets.parse_line(ln, name, k)) for k, ln in enumerate(lines)
     ]
-    outcomes = [trust_sets.outcome(gt) for gt in gts]
-    assert len(gts) >= 50
-    assert [gt.instruction for gt, (what, _) in zip(gts, outcomes, strict=True) if what == "wrong"] == []
-    assert sum(what == "converted" for what, _ in outcomes) >= 0.9 * len(gts)
+    outcomes = [trust_sets.outcome(gt)[0] for gt in gts]
+    assert len(gts) >= least
+    assert [gt.instruction for gt, what in zip(gts, outcomes, strict=True) if what == "wrong"] == []
+    feasible = [what for gt, what in zip(gts, outcomes, strict=True) if gt.feasible]
+    assert feasible.count("converted") >= 0.9 * len(feasible)

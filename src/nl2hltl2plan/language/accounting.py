@@ -17,7 +17,6 @@ backend made of them.
 
 from __future__ import annotations
 
-import difflib
 import re
 from collections.abc import Mapping, Sequence
 from functools import lru_cache
@@ -245,6 +244,8 @@ def _locative(
         first -= 1  # "from in between the sink and ...", "out of", "from under the bed": where it is
     if toks[first][0] in ("from", "off", "out"):
         return True
+    if i >= 2 and toks[i - 1][0] in ("it", "them") and "verb_any" in categories(toks[i - 2][0]):
+        return False  # "put it in the microwave": where it goes, never where something is
     if toks[i][0] == "with" and ((i > 0 and toks[i - 1][0] in _DONE_WORDS) or carried(m)):
         return False  # "done with the mug": a task it is in; "a pan with a tomato": a thing to move too
     clause = _clause_span(instruction, toks[start][1])
@@ -292,9 +293,10 @@ def _clause_span(text: str, at: int) -> tuple[int, int]:
 def _invented(
     mentions: list[Mention], toks: list[tuple[str, int, int]], parse: ParseUsage, in_mention: set[int]
 ) -> list[Unread]:
-    """Slots of base tasks that no word of the instruction names (a guess, not a reading). A misspelt
-    name counts only for a word that names nothing as written (`in_mention`: the words of a named thing):
-    the "plate" of "the yellow plate" is no misspelling of the blue plate."""
+    """Slots of base tasks that no word of the instruction names (a guess, not a reading). A word of a
+    name ("standing" of "standing lamp") names it only where it names nothing as written (`in_mention`:
+    the words of a named thing): the "plate" of "the yellow plate" never stands for the blue plate. A
+    misspelt name names its slot once `everyday` has respelt it (`language.spelling`)."""
     places = verb_places()
     named = {places[f] for w, _, _ in toks for f in stems(w) if f in places}
     if any(c.startswith("state_lights_") for w, _, _ in toks for c in categories(w)):
@@ -305,11 +307,11 @@ def _invented(
     put_back = any(w == "back" for w, _, _ in toks)  # "wash the cloth from the cabinet, put it back"
     implied = parse.implied()
     out = []
-    spelt = [w for i, (w, _, _) in enumerate(toks) if len(w) >= 5 and i not in in_mention]
+    loose = {w for i, (w, _, _) in enumerate(toks) if len(w) >= 5 and i not in in_mention}
     for task_id, role, types in parse.slots():
         said = named if role == "receptacle" and not put_back else named | sources
         lowered = {t.lower() for t in said}
-        if types & said or {t.lower() for t in types} & lowered or _misspelt(spelt, types):
+        if types & said or {t.lower() for t in types} & lowered or loose & _lexicon_words(types):
             continue
         if role == "receptacle" and types & implied:
             continue
@@ -364,14 +366,9 @@ def _a_stop(m: Mention, toks: list[tuple[str, int, int]]) -> bool:
     return toks[i][0] not in ("from", "off") and before not in ("out", "from")
 
 
-def _misspelt(words: list[str], types: frozenset[str]) -> bool:
-    """A word one letter off a lexicon word of one of the types ("laddle" for the ladle)."""
-    return any(difflib.get_close_matches(w, _lexicon_words(types), n=1, cutoff=0.85) for w in words)
-
-
 @lru_cache(maxsize=512)
-def _lexicon_words(types: frozenset[str]) -> tuple[str, ...]:  # once per type set: _misspelt runs per slot
-    return tuple(sorted({w for key, (e, _) in lexicon().items() if set(e.types) & types for w in key}))
+def _lexicon_words(types: frozenset[str]) -> frozenset[str]:  # once per type set: it is asked per slot
+    return frozenset(w for key, (e, _) in lexicon().items() if set(e.types) & types for w in key)
 
 
 def _next_mention(mentions: list[Mention], words: list[str], i: int, within: int = 3) -> Mention | None:

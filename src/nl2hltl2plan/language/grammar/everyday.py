@@ -1,6 +1,10 @@
 """Everyday styles normalised before the grammar's rules (issue 28), each step removing or rewriting only
 words that carry no object, place, count, negation or order in the place where it applies:
 
+- misspelt words ("tomatoe", "coffe table", "woould") as the lexicon or English writes them
+  (`spelling.respelt`), and texting forms: "ur done" is "you're done", another "ur" is "your";
+- places and things said first: "put the egg (in) there" names the last destination before it, and "the
+  mug that's on the counter, put it in the sink" takes the mug first;
 - terse notation: "green apple -> blue plate" is "green apple onto blue plate" (the placement verb is
   then supplied as for any verbless placement), "first: A" / "then: B" lose the colon, and a
   parenthetical free-order remark "(any order)" is kept as ", in any order" (other parentheticals are
@@ -20,13 +24,12 @@ words that carry no object, place, count, negation or order in the place where i
 
 from __future__ import annotations
 
-import difflib
 import re
-from functools import cache
 
 from nl2hltl2plan.language.content_words import free_order_phrase
 from nl2hltl2plan.language.grammar.restated import count_fits, restated
-from nl2hltl2plan.language.grounding import lexicon
+from nl2hltl2plan.language.grounding import find_mentions
+from nl2hltl2plan.language.spelling import respelt
 
 # hesitations, the one list of them (the handover reader's spoken step uses it too)
 HESITATION = r"(?:u+h+m*|u+m+|e+r+m*|hmm+|mm+)"
@@ -77,8 +80,9 @@ _BARE_CONTRACTION = {
     "thats": "that's", "whats": "what's", "dont": "don't", "doesnt": "doesn't", "didnt": "didn't",
     "cant": "can't", "wont": "won't", "isnt": "isn't", "arent": "aren't", "youre": "you're",
     "theyre": "they're", "shouldnt": "shouldn't", "wouldnt": "wouldn't", "couldnt": "couldn't",
-    "youve": "you've", "ive": "I've",
+    "youve": "you've", "ive": "I've", "ur": "your",
 }  # fmt: skip
+_UR_DONE = re.compile(r"\bur\s+(?=(?:done|finished|through)\b)", re.I)  # "ur done": "you're"; else "your"
 _BARE = re.compile(rf"\b({'|'.join(_BARE_CONTRACTION)})\b", re.I)
 # "A, B, and after both of those put C": a reference to every task before, which the rules read where it
 # opens a sentence and ends at a comma ("A, B. After both of those, put C")
@@ -99,15 +103,16 @@ def _reference_sentence(m: re.Match[str]) -> str:
 
 def everyday(text: str) -> str:
     """The text with the everyday styles above rewritten onto the forms the grammar reads."""
-    text = _BARE.sub(lambda m: _BARE_CONTRACTION[m[1].lower()], text)
+    text = _BARE.sub(lambda m: _BARE_CONTRACTION[m[1].lower()], _UR_DONE.sub("you're ", text))
     if _FREE_REMARK.search(text):  # "1. X. 2. Y. Any order is fine.": the numbers only list the steps
         text = _NUMBERED.sub(lambda m: m["lead"], text)
-    text = _TWO_WORD_NAME.sub(_spelt_name, text)
+    text = respelt(text)  # misspelt names of things (language/spelling.py)
     text = _REFERENCE_TO_ALL.sub(_reference_sentence, text)
     text = _PAREN_FREE_ORDER.sub(", in any order", text)
     text = _STEP_COLON.sub(r"\1 ", _ARROW.sub(" onto ", text))
     if _BELONGS.search(text):
         text = _PUT_THEM_THERE.sub("", text)
+    text = _THING_FIRST.sub(lambda m: f"{m['lead']}take {m['np']}, ", _THERE.sub(_there_named, text))
     text = _HESITATION.sub(" ", text)
     text = re.sub(r"(\s*,)+", ",", text)  # the commas left where fillers were
     text = _LIKE.sub(",", _TAG.sub("", text))
@@ -147,28 +152,49 @@ _ORDER_WORD = re.compile(
 # counts of nothing (a numbered list may mean a sequence)
 _NUMBERED = re.compile(r"(?P<lead>^|(?<=[.;!?:])\s+|\n)\s*\d{1,2}\s*[.)]\s+(?=[a-z])", re.I)
 _FREE_REMARK = re.compile(rf"\b{_FREE_ORDER}\b", re.I)
-_TWO_WORD_NAME = re.compile(r"\b([a-z]{4,})\s+([a-z]{3,})\b", re.I)
 
 
-@cache
-def _two_word_names() -> dict[str, set[str]]:
-    """The lexicon's two-word names by their second word: "table" -> {"coffee", "side", ...}."""
-    out: dict[str, set[str]] = {}
-    for key in lexicon():
-        if len(key) == 2:
-            out.setdefault(key[1], set()).add(key[0])
-    return out
+# "put the egg (in) there too", "then the egg in there": "there" is the last destination named before it
+# ("put the bread in the fridge, then put the egg in there too"); with none before, it stays, and is read
+# or refused as it is
+_THERE = re.compile(
+    r"(?P<head>\b(?:put|place|set|stick|pop|drop|leave|store|move)\s+(?:it|them|(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)"
+    r"|(?:(?<=\bthen\s)|(?<=\band\s))(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)"
+    r"\s+(?:(?:in|into|inside|on|onto)\s+)?there\b(?=\s*(?:too|as\s+well|also)?\s*(?:[,.;!?]|$|and\b|then\b))",
+    re.I,
+)
+_NEGATED = re.compile(r"(?:\bnot|n't|\bnever|\bno)\s+(?:\w+\s+)?$", re.I)
+_DESTINATION_PHRASE = re.compile(
+    r"(?<!next )(?<!close )\b(?P<prep>in|into|inside|on|onto|to)\s+"
+    r"(?P<np>(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)",
+    re.I,
+)
 
 
-def _spelt_name(m: re.Match[str]) -> str:
-    """ "coffe table" -> "coffee table": a first word one letter off a two-word name of the lexicon whose
-    second word is right, and no word the lexicon knows on its own."""
-    first, second = m[1], m[2]
-    known = _two_word_names().get(second.lower(), set())
-    if not known or first.lower() in known or (first.lower(),) in lexicon():
+def _there_named(m: re.Match[str]) -> str:
+    """ "put the egg in there": the last destination named before it, written out; else as it is (and
+    after a negation, "don't put the knife there", which the constraint reader reads as it is)."""
+    if _NEGATED.search(m.string[: m.start()]):
         return m[0]
-    close = difflib.get_close_matches(first.lower(), sorted(known), n=2, cutoff=0.85)
-    return f"{close[0]} {second}" if len(close) == 1 else m[0]
+    places = [
+        d for d in _DESTINATION_PHRASE.finditer(m.string[: m.start()])
+        if find_mentions(d["np"]) and not find_mentions(d["np"])[-1].entry.generic
+    ]  # fmt: skip
+    if not places:
+        return m[0]
+    last = places[-1]
+    prep = "in" if last["prep"].lower() == "to" else last["prep"].lower()  # "walk to the sink ... in there"
+    return f"{m['head']} {prep} the {find_mentions(last['np'])[-1].surface}"
+
+
+# "the mug that's on the counter, put it in the sink": the thing named first, then what to do with "it"
+# (a fronted object with where it is): "take the mug that's on the counter, put it in the sink"
+_THING_FIRST = re.compile(
+    r"(?P<lead>^\s*|[.;!?]\s+)(?P<np>(?:the|a|an|that|this)\s+[a-z]+(?:\s+[a-z]+)?\s+"
+    r"(?:that's|that\s+is|which\s+is|that\s+are|which\s+are)\s+(?:sitting\s+|lying\s+)?(?:on|in|inside|at)\s+"
+    r"(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)\s*,\s*(?=[a-z]+\s+(?:it|them)\b)",
+    re.I,
+)
 
 
 def _without_need_heading(text: str) -> str:

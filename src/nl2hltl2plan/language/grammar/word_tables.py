@@ -69,7 +69,7 @@ _VERBS: dict[str, tuple[str, ...]] = {
         "carrying",
     ),
     "clean": ("wash", "rinse", "clean", "scrub", "wet", "cleanse", "moisten"),
-    "heat": ("heat", "warm", "cook", "microwave", "bake", "toast", "boil", "reheat"),
+    "heat": ("heat", "warm", "cook", "microwave", "bake", "toast", "boil", "reheat", "nuke"),
     "cool": ("chill", "cool", "refrigerate", "freeze", "frost"),
     "slice": ("slice", "cut", "chop", "dice", "section"),
     "fill": ("fill",),
@@ -364,6 +364,7 @@ for _w in (
     "toasted",
     "boiled",
     "reheated",
+    "nuked",
 ):
     STATE_WORDS[_w] = "heat"
 for _w in ("chilled", "cold", "cooled", "refrigerated", "frozen", "cool", "iced"):

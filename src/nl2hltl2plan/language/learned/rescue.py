@@ -13,7 +13,6 @@ only when the grammar then reads more tasks.
 
 from __future__ import annotations
 
-import difflib
 import re
 from functools import cache
 
@@ -76,19 +75,17 @@ def canonical(pred: SlotPrediction) -> str | None:
 
 
 def _names_object(clause: str, pred: SlotPrediction, slot: str = "object") -> bool:
-    """The clause names (a lexicon phrase for) the predicted object (or `slot`), or misspells one of its
-    words by a letter ("laddle"): the model found, not invented, it."""
+    """The clause names (a lexicon phrase for) the predicted object (or `slot`), or a word of five letters
+    or more of one of its phrases ("the standing liht": FloorLamp's "standing lamp"): the model found, not
+    invented, it. A misspelt name ("laddle") is the lexicon's word already (`language.spelling`, through
+    `normalize`)."""
     top = pred.slots.get(slot) or []
     if not top:
         return False
-    named = {t for m in find_mentions(clause) for t in m.entry.types}
-    if top[0][0] in named:
+    if top[0][0] in {t for m in find_mentions(clause) for t in m.entry.types}:
         return True
     words = _words_of(top[0][0])
-    return any(
-        len(w) >= 5 and difflib.get_close_matches(w, words, n=1, cutoff=0.85)
-        for w in re.findall(r"[a-z]+", clause.lower())
-    )
+    return any(len(w) >= 5 and w in words for w in re.findall(r"[a-z]+", clause.lower()))
 
 
 def _names_place(clause: str, pred: SlotPrediction) -> bool:
@@ -108,9 +105,9 @@ def _verb_places(word: str) -> set[str]:
 
 
 @cache
-def _words_of(type_name: str) -> list[str]:
-    """The words of the lexicon phrases that name a type (for near-spellings)."""
-    return sorted({w for phrase, (entry, _) in lexicon().items() if type_name in entry.types for w in phrase})
+def _words_of(type_name: str) -> frozenset[str]:
+    """The words of the lexicon phrases that name a type."""
+    return frozenset(w for phrase, (e, _) in lexicon().items() if type_name in e.types for w in phrase)
 
 
 def rewrite(

@@ -1,0 +1,129 @@
+"""Misspelt words: "tomatoe", "microwve", "coffe table" read as the lexicon's names, "woould", "cleean" as
+English writes them (issue 28).
+
+One rule, used by the grammar (through `grammar.everyday`) and by check 1 (which reads the same rewritten
+text, so a misspelt name that a reading does not use is named, never passed over):
+- a word of four letters or more that the lexicon does not know is the lexicon word it is closest to
+  (difflib ratio >= 0.85, or two neighbouring letters swapped, the only way for a four-letter word: "lmap";
+  one best match) when English does not know it either: "ridge" is not the fridge, "dressed" not the
+  dresser, "status" not the statue;
+- any other word of four letters or more that neither the lexicon, the project's word lists nor English
+  knows (a British spelling is English) is the English word one edit away, when exactly one is and it
+  names an action, a state or a count, or is a word of politeness ("woould", "cleean", "slcie"); never
+  an order word or a word that builds a structure ("when finsihed", "containign" stay unread: their
+  scope is no guess).
+English is pyspellchecker's frequency list; it loads only when a word passes the first tests.
+"""
+
+from __future__ import annotations
+
+import difflib
+import re
+from functools import cache, lru_cache
+from importlib import resources
+
+from nl2hltl2plan.language.content_words import categories
+from nl2hltl2plan.language.grounding import lexicon
+
+CUTOFF = 0.85  # one letter off in a five-letter word (4/5 matched is 0.8: "plate"/"place" stay apart)
+_WORD = re.compile(r"(?<![A-Za-z'])[A-Za-z]{4,}(?![A-Za-z'])")  # not a part of "doesn't"
+_POLITE = frozenset({"would", "could", "kindly", "please", "alright", "okay"})
+# the project's own word lists: their words are read as written ("wilco" is no "wilcox")
+_WORD_LISTS = ("content_words.txt", "free_order.txt", "handover_frame_words.txt")
+
+
+@cache
+def _name_words() -> tuple[str, ...]:
+    """Every word of the lexicon's phrases in their singular form ("coffee", "table", "microwave")."""
+    words = {w for key, (_, plural) in lexicon().items() if not plural for w in key}
+    return tuple(sorted(w for w in words if len(w) >= 4))
+
+
+@cache
+def _known_words() -> frozenset[str]:
+    """Every word the lexicon knows in any form (plurals included), and every word of the project's word
+    lists: these are never respelt."""
+    listed = (resources.files("nl2hltl2plan.language").joinpath(f).read_text() for f in _WORD_LISTS)
+    words = {w for t in listed for w in re.findall(r"[a-z]+", t.lower())}
+    return frozenset(w for key in lexicon() for w in key) | words
+
+
+@cache
+def _english():  # type: ignore[no-untyped-def]  # pyspellchecker has no type hints
+    from spellchecker import SpellChecker
+
+    return SpellChecker(distance=1)
+
+
+@lru_cache(maxsize=4096)
+def spelt_name(word: str) -> str | None:
+    """The lexicon word that `word` misspells, or None (a known word, a real English word, too short,
+    or no single closest name)."""
+    low = word.lower()
+    if len(low) < 4 or low in _known_words():
+        return None
+    scored = sorted(((_score(low, w), w) for w in _close(low)), reverse=True)
+    if not scored or (len(scored) > 1 and scored[1][0] == scored[0][0]):
+        return None
+    if low in _english():
+        return None
+    return scored[0][1]
+
+
+def _close(low: str) -> list[str]:
+    """Names within the cutoff, and names two swapped neighbouring letters away ("kettel": difflib
+    scores a swap as two edits)."""
+    swapped = {low[:i] + low[i + 1] + low[i] + low[i + 2 :] for i in range(len(low) - 1)}
+    names = _name_words()
+    if len(low) == 4:  # "plae" may be "place" as well as "plate": a short word is a name only by a swap
+        return sorted(swapped & set(names))
+    return sorted({*difflib.get_close_matches(low, names, n=3, cutoff=CUTOFF), *(swapped & set(names))})
+
+
+def _score(low: str, name: str) -> float:
+    """How close: a swap of neighbours counts as one letter off."""
+    differ = len(low) == len(name) and sum(a != b for a, b in zip(low, name, strict=True))
+    if differ == 2 and sorted(low) == sorted(name):
+        return 1 - 1 / len(name)
+    return difflib.SequenceMatcher(None, low, name).ratio()
+
+
+@lru_cache(maxsize=4096)
+def spelt_word(word: str) -> str | None:
+    """The English word that `word` misspells ("woould", "alriight", "cleean"): a word of four letters or
+    more that neither the lexicon, the project's word lists nor English knows and that is one edit (a
+    letter more, less, changed, or two neighbours swapped) from exactly one English word, which
+    `_respellable` allows; else None. Names are `spelt_name`'s."""
+    low = word.lower()
+    if len(low) < 4 or low in _known_words() or _english().known(_american(low)):
+        return None
+    close = _english().known(_english().edit_distance_1(low))
+    return next(iter(close)) if len(close) == 1 and _respellable(next(iter(close))) else None
+
+
+def _respellable(word: str) -> bool:
+    """A word a misspelling may become: one that names an action, a state or a count (check 1's
+    categories), or a word of politeness ("would", "kindly"); never an order word, whose scope the
+    grammar would then guess, nor a word that builds a structure ("containing")."""
+    found = categories(word)
+    return word in _POLITE or bool(found) and not found & {"order", "any_order"}
+
+
+def _american(low: str) -> list[str]:
+    """The word and its American spellings ("colour", "neighbours", "normalised"): the word list is
+    American, and a British spelling is no misspelling."""
+    out = [low, low.replace("our", "or"), re.sub(r"is(e|ed|es|ing|ation)$", r"iz\1", low)]
+    return [*out, re.sub(r"ll(ed|ing)$", r"l\1", low)]
+
+
+def respelt(text: str) -> str:
+    """`text` with each misspelt name written as the lexicon writes it, and each other misspelt word as
+    English writes it (a capital kept)."""
+
+    def fix(m: re.Match[str]) -> str:
+        word = spelt_name(m[0]) or spelt_word(m[0])
+        if word is None:
+            return m[0]
+        return word.capitalize() if m[0][0].isupper() else word
+
+    return _WORD.sub(fix, text)
