@@ -10,6 +10,8 @@ import pytest
 
 from nl2hltl2plan.config import data_dir
 from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.language.accounting import account
+from nl2hltl2plan.language.task_specs import BaseTaskSpec
 from nl2hltl2plan.language.translate import translate
 from nl2hltl2plan.worlds import load_world
 from nl2hltl2plan.worlds.world import World
@@ -116,3 +118,17 @@ def test_sitting_is_no_base_task(backend):
 def test_the_same_of_a_type_the_scene_holds_once_is_that_one(backend):
     text = "put the apple in the garbage can, then put the egg in the same garbage can"
     assert _summaries(text, "FloorPlan4", backend) == ["place Apple -> GarbageCan", "place Egg -> GarbageCan"]
+
+
+def test_the_same_place_is_judged_against_the_scene():
+    text = "put the ladle in a drawer and the spatula in the same drawer"
+    tasks = [
+        BaseTaskSpec(id="A", kind="place", object=["Ladle"], receptacle=["Drawer"]),
+        BaseTaskSpec(id="B", kind="place", object=["Spatula"], receptacle=["Drawer"]),
+    ]
+    def same(instances: dict[str, int] | None) -> bool:
+        return any(u.words == "the same" for u in account(text, tasks, [], instances))
+
+    assert same({"Drawer": 6, "Ladle": 1, "Spatula": 2})
+    assert not same({"Drawer": 1, "Ladle": 1, "Spatula": 2})
+    assert not same(None)  # scene unknown: not judged

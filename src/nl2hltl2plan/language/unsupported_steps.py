@@ -138,8 +138,9 @@ def other_instances(
         named = next((x for x in mentions if m.end() <= x.char_start <= m.end() + 20), None)
         if named is not None and not _PLACE_OR_STOP.search(lowered[m.end() : named.char_start]):
             the_shared = bool(set(named.entry.types) & shared)  # "the other apple"
-            if m.group(0) == "the same" and instances is not None:
-                the_shared = any(instances.get(t, 0) > 1 for t in set(named.entry.types) & shared)
+            if m.group(0) == "the same":  # unknown scene (None): not judged, as counts are not
+                held = instances or {}
+                the_shared = any(held.get(t, 0) > 1 for t in set(named.entry.types) & shared)
         else:
             the_shared = _STANDS_FOR.match(rest) is not None  # "the other on the counter", "another one"
         if the_shared:
