@@ -51,6 +51,7 @@ from nl2hltl2plan.language.task_specs import BaseTaskSpec, ConstraintSpec
 from nl2hltl2plan.language.unsupported_steps import (
     OPENED_FOR_ITSELF,
     closed_after_placing,
+    corrections,
     first_and_last,
     opened_for_itself,
     other_instances,
@@ -107,8 +108,11 @@ def account(
     out += _invented_kinds(toks, mentions, parse)
     out += treated_after_placing(instruction, mentions, parse)
     out += closed_after_placing(instruction, mentions, parse)
-    out += returns_and_repeats(instruction, mentions, parse) + other_instances(instruction, mentions, parse)
+    out += returns_and_repeats(instruction, mentions, parse) + other_instances(
+        instruction, mentions, parse, instances
+    )
     out += vague_words(instruction, mentions) + started(instruction, parse)
+    out += corrections(instruction, mentions, parse)
     out += first_and_last(instruction, mentions, parse)
     out += _words(instruction, toks, in_mention, mentions, parse, instances, scene)
     out += unordered_steps(
@@ -133,10 +137,19 @@ def unfilled_slots(tasks: Sequence[BaseTaskSpec]) -> list[Unread]:
 
 
 def _is_verb(m: Mention, toks: list[tuple[str, int, int]]) -> bool:
-    """A lexicon word used as a verb: "switch" in "switch off the light", "switch the lamp on"."""
-    nxt = toks[m.end][0] if m.end < len(toks) else ""
-    single = m.end - m.start == 1 and "verb_switch" in categories(toks[m.start][0])
-    return single and nxt in ("on", "off", "the", "it", "a")
+    """A lexicon word used as a verb: "switch" in "switch off the light", "switch the lamp on"; a verb
+    that also names a thing, where a command starts ("spray the counter": no spray bottle is named)."""
+    if m.end - m.start != 1:
+        return False
+    word, nxt = toks[m.start][0], toks[m.end][0] if m.end < len(toks) else ""
+    if "verb_switch" in categories(word):
+        return nxt in ("on", "off", "the", "it", "a")
+    prev = toks[m.start - 1][0] if m.start else ""
+    return "verb_unsupported" in categories(word) and nxt in _OBJECT_START and prev in _COMMAND_START
+
+
+_OBJECT_START = frozenset({"the", "a", "an", "it", "them", "this", "that", "my", "your", "some"})
+_COMMAND_START = frozenset({"", "and", "then", "please", "also", "to", "first", "now", "pls"})
 
 
 def _phrases(

@@ -14,12 +14,13 @@ from __future__ import annotations
 
 import re
 from collections import Counter
+from collections.abc import Mapping
 
 import networkx as nx
 
 from nl2hltl2plan.domain.task_kinds import APPLIANCE
 from nl2hltl2plan.language.content_words import DETERMINERS, Unread, categories
-from nl2hltl2plan.language.grounding import Mention, lookup, sentence_start
+from nl2hltl2plan.language.grounding import Mention, lookup, sentence_start, tokens
 from nl2hltl2plan.language.negations import NO_CONSTRAINT
 from nl2hltl2plan.language.parse_usage import ParseUsage
 
@@ -112,15 +113,21 @@ def closed_after_placing(instruction: str, mentions: list[Mention], parse: Parse
 _CLOSE = re.compile(r"\b(?:close|closed|shut)\b(?! (?:to|by)\b)")
 
 
-_OTHER = re.compile(r"\b(?:the other|another)\b")
+_OTHER = re.compile(r"\b(?:the other|another|a different|the same)\b")
 
 
-def other_instances(instruction: str, mentions: list[Mention], parse: ParseUsage) -> list[Unread]:
+def other_instances(
+    instruction: str, mentions: list[Mention], parse: ParseUsage, instances: Mapping[str, int] | None = None
+) -> list[Unread]:
     """ "Put the apple in the fridge and the other apple on the counter": two tasks on one type, which
     the spec (type-level atoms) cannot keep to two different things, so one apple could do both. "The
-    other" / "another" before such a thing, or standing for it ("one apple in the fridge and the other
-    on the counter"), is unread; a landmark ("next to the other food") names a thing no two tasks take."""
+    other" / "another" / "a different" / "the same" before such a thing (an object or a place: "the pen
+    in the other drawer"), or standing for it ("one apple in the fridge and the other on the counter"),
+    is unread; a landmark ("next to the other food") names a thing no two tasks take. "The same" of a
+    type the scene (`instances`) holds once is that one."""
     taken = Counter(t for task in parse.tasks for t in set(task.object))
+    # "a drawer ... the other drawer", "the same drawer": places are type-level atoms too
+    taken.update(t for task in parse.tasks for t in set(task.receptacle or ()))
     shared = {t for t, n in taken.items() if n > 1}
     if not shared:
         return []
@@ -131,6 +138,9 @@ def other_instances(instruction: str, mentions: list[Mention], parse: ParseUsage
         named = next((x for x in mentions if m.end() <= x.char_start <= m.end() + 20), None)
         if named is not None and not _PLACE_OR_STOP.search(lowered[m.end() : named.char_start]):
             the_shared = bool(set(named.entry.types) & shared)  # "the other apple"
+            if m.group(0) == "the same":  # unknown scene (None): not judged, as counts are not
+                held = instances or {}
+                the_shared = any(held.get(t, 0) > 1 for t in set(named.entry.types) & shared)
         else:
             the_shared = _STANDS_FOR.match(rest) is not None  # "the other on the counter", "another one"
         if the_shared:
@@ -140,7 +150,10 @@ def other_instances(instruction: str, mentions: list[Mention], parse: ParseUsage
 
 _PLACE_OR_STOP = re.compile(r"[,.;:!?]|\b(?:in|on|to|into|onto|at|of)\b")
 _STANDS_FOR = re.compile(r"\s*(?:[,.;:!?]|$|(?:ones?|in|on|into|onto|to|at|goes|go|should|is|needs)\b)")
-_TWO_OF_A_TYPE = "two tasks take this type: the spec cannot require two different ones (one could do both)"
+_TWO_OF_A_TYPE = (
+    "two tasks take this type: the spec cannot require two different ones, or the same one (any one of"
+    " the type does)"
+)
 
 
 # "some apples", "half of the mugs", "every other mug", "the rest": how many is not said
@@ -265,3 +278,34 @@ def opened_for_itself(after: list[str], parse: ParseUsage) -> str | None:
         t for x in parse.tasks if x.kind == "set_state" and x.state in ("open", "closed") for t in x.object
     }
     return None if set(entry.types) & done else entry.canonical
+
+
+CORRECTION = "a correction said in passing that the reading does not follow: say it once, as meant"
+
+
+def corrections(instruction: str, mentions: list[Mention], parse: ParseUsage) -> list[Unread]:
+    """Corrections said in passing that the reading does not follow (`_correction_not_taken`)."""
+    toks = tokens(instruction)
+    return [
+        Unread(" ".join(w for w, _, _ in toks[max(i - 1, 0) : i + 1]), "correction", CORRECTION)
+        for i, (w, _, _) in enumerate(toks)
+        if "correction" in categories(w) and _correction_not_taken(instruction, toks, i, mentions, parse)
+    ]
+
+
+def _correction_not_taken(
+    instruction: str, toks: list[tuple[str, int, int]], i: int, mentions: list[Mention], parse: ParseUsage
+) -> bool:
+    """Does the word take back the thing named before it in its sentence ("..., I mean", "or rather",
+    "scratch that", "..., actually the cabinet") while a task still uses that thing ("in the fridge, I
+    mean the microwave" read as chilling in the fridge)? "I'd rather" and a leading "Actually, ..." take
+    nothing back."""
+    w, prev, nxt = toks[i][0], toks[i - 1][0] if i else "", toks[i + 1][0] if i + 1 < len(toks) else ""
+    if (w == "mean" and (prev != "i" or nxt in ("it", "that"))) or (w == "rather" and prev != "or"):
+        return False
+    if w == "scratch" and nxt != "that":
+        return False
+    start = sentence_start(instruction, toks[i][1])
+    taken = [m for m in mentions if start <= m.char_start < toks[i][1]]
+    used = {t for _, _, st in parse.slots() for t in st} | parse.implied()
+    return bool(taken) and bool(set(taken[-1].entry.types) & used)
