@@ -27,7 +27,8 @@ from typing import TYPE_CHECKING, Literal, Protocol, Self, TypeVar, get_args
 
 from nl2hltl2plan.domain.task_kinds import SLOTS, State
 from nl2hltl2plan.errors import HTTError, LLMError, WorldError
-from nl2hltl2plan.language.accounting import account, take_every_instance, unfilled_slots
+from nl2hltl2plan.language.accounting import account, unfilled_slots
+from nl2hltl2plan.language.counts import take_every_instance
 from nl2hltl2plan.language.grounding import AffordanceLookup, Grounder, world_lookup
 from nl2hltl2plan.language.htt_build import build_htt
 from nl2hltl2plan.language.llm.client import LLMClient

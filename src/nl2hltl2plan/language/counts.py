@@ -1,0 +1,120 @@
+"""Counts against the scene (check 1, issue 23): a count before a noun must be the count of the task on
+that noun ("put two mugs ...": a `place_two` of 2), never zero and never more than the scene holds; "all
+the mugs" / "every mug" takes every instance the scene holds."""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Mapping, Sequence
+
+from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.language.content_words import DETERMINERS, LOCATIVE, Unread, categories
+from nl2hltl2plan.language.grounding import Mention, camel_words, find_mentions, tokens
+from nl2hltl2plan.language.parse_usage import ParseUsage
+from nl2hltl2plan.language.task_specs import BaseTaskSpec
+
+
+def count_value(cats: frozenset[str], word: str) -> int | None:
+    if word.isdigit():
+        return int(word)
+    for c in cats:
+        if c.startswith("count_"):
+            return int(c.removeprefix("count_"))
+    return None
+
+
+def _next_mention(mentions: list[Mention], words: list[str], i: int, within: int = 3) -> Mention | None:
+    """The noun a count word counts: the next mention, with only non-content words between, and no
+    preposition ("put both in the fridge": "both" counts what was named before, not fridges)."""
+    for m in mentions:
+        if i < m.start <= i + within:
+            between = words[i + 1 : m.start]
+            counted = all(w in DETERMINERS or not categories(w) for w in between)
+            return m if counted and not set(between) & _PLACE_PREPS else None
+    return None
+
+
+_PLACE_PREPS = (LOCATIVE - {"of"}) | {"to", "into", "onto"}
+
+
+def _both_before_a_list(w: str, instruction: str, start: int, m: Mention) -> bool:
+    """ "both the mug and the apple": "both" names the pair of the list, not two mugs (as the grammar reads
+    it, `sentences._BOTH_BEFORE_LIST`)."""
+    between = instruction[start + len(w) : m.char_start]
+    det = r"\s+(?:the|a|an|my|your|this|that)\s"
+    return (
+        w == "both"
+        and re.match(det, between, re.I) is not None
+        and re.match(r"\s+and" + det, instruction[m.char_end :], re.I) is not None
+    )
+
+
+def count_unread(
+    instruction: str,
+    toks: list[tuple[str, int, int]],
+    i: int,
+    cats: frozenset[str],
+    mentions: list[Mention],
+    parse: ParseUsage,
+    instances: Mapping[str, int] | None,
+    scene: str,
+) -> Unread | None:
+    """A count before a noun: the task on that noun takes exactly so many (every one for "all")."""
+    w, start, _ = toks[i]
+    m = _next_mention(mentions, [t[0] for t in toks], i)
+    if m is None or re.search(r"[,.;:!?]", instruction[start : m.char_start]):
+        return None
+    if _both_before_a_list(w, instruction, start, m):
+        return None
+    types = set(m.entry.types)
+    held = None
+    if instances is not None:
+        present = [t for t in m.entry.types if instances.get(t)]
+        types = set(present if m.entry.all_ else present[:1]) or types
+        held = sum(instances.get(t, 0) for t in types)
+    n = count_value(cats, w)
+    phrase = instruction[start : m.char_end]
+    if n == 0:
+        raise HTTError(f"a count of zero ({phrase!r}): there is nothing to do; say how many")
+    if n is not None and held is not None and n > held:
+        raise HTTError(f"{phrase!r}: {scene} holds only {held} {camel_words(m.entry.canonical)}")
+    counts = [max(1, t.count) for t in parse.tasks if set(t.object) & types]
+    if not counts and "quantifier_all" in cats and held is not None and held > 1:
+        if any(set(t.receptacle or ()) & types for t in parse.tasks):  # "a pillow on each armchair"
+            return Unread(phrase, "count", f"one task for each of {held} places: say each as its own task")
+    if not counts:  # a count of places ("one of the drawers"), or of a noun the noun check reports
+        return None
+    if "quantifier_all" in cats:
+        n = held
+        if n is None:
+            return None
+    elif "quantifier_vague" in cats:
+        return Unread(phrase, "count", "a vague count: say how many")
+    if n in counts or (n == 2 and w in ("both", "pair", "couple") and len(counts) >= 2):
+        return None
+    got = " + ".join(map(str, counts)) or "none"
+    return Unread(phrase, "count", f"the base tasks take {got}, not {n}")
+
+
+def take_every_instance(
+    instruction: str, tasks: Sequence[BaseTaskSpec], instances: Mapping[str, int]
+) -> list[BaseTaskSpec]:
+    """ "all the mugs" / "every mug" / "each mug": the task on that noun takes every instance the scene
+    holds (a `place` of several becomes `place_two` with that count; of one, a `place`)."""
+    toks = tokens(instruction)
+    words = [w for w, _, _ in toks]
+    mentions = [m for m in find_mentions(instruction) if not m.entry.generic]
+    out = [t.model_copy() for t in tasks]
+    for i, w in enumerate(words):
+        if "quantifier_all" not in categories(w):
+            continue
+        m = _next_mention(mentions, words, i)
+        if m is None or re.search(r"[,.;:!?]", instruction[toks[i][1] : m.char_start]):
+            continue
+        for k, t in enumerate(out):
+            held = sum(instances.get(o, 0) for o in t.object if o in m.entry.types)
+            if held < 1 or t.count == held:
+                continue
+            kind = ("place_two" if held > 1 else "place") if t.kind in ("place", "place_two") else t.kind
+            out[k] = t.model_copy(update={"kind": kind, "count": held})
+    return out
