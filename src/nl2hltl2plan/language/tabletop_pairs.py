@@ -28,6 +28,7 @@ from nl2hltl2plan.language.grounding import camel_words
 from nl2hltl2plan.language.htt_build import build_htt
 from nl2hltl2plan.language.result import LanguageResult
 from nl2hltl2plan.language.tabletop_wording import (
+    corrected,
     free_order,
     last_group_free,
     mention_pattern,
@@ -77,6 +78,40 @@ _GENERIC_QUANTITY = re.compile(
 )
 
 Reading = tuple[list[BaseTaskSpec], list[tuple[str, str]], list[list[str]], str]
+
+
+class TabletopReader:
+    """The tabletop world's hook (`world_readers.WorldReader`): statements refused and corrections applied
+    before the grammar reads (`prepared`), the pairs reading of what it refuses (`reread`), and the objects
+    a word could mean beside a refusal (`refusal`)."""
+
+    def __init__(self, world: World) -> None:
+        self.world = world
+
+    def own_reading(self, instruction: str) -> LanguageResult | None:
+        return None  # the shared grammar reads first
+
+    def prepared(self, instruction: str) -> str:
+        """A clause that says where something is ("the carrot is on the blue plate") with no wish or goal
+        before it is no task, and is refused by name; a correction ("the blue plate, sorry, the yellow
+        plate") is applied before any reading (`tabletop_wording`)."""
+        kinds = {camel_words(t): _is_plate(t) for t in self.world.object_types()}
+        stated = stated_not_asked(instruction, kinds)
+        if stated is not None:
+            raise HTTError(
+                f"'{stated}' says where something is, not what to do: ask for it (\"put ...\", \"make sure "
+                "... is on ...\") or leave it out"
+            )
+        return corrected(instruction, kinds)
+
+    def reread(self, instruction: str, backend: str) -> LanguageResult | None:
+        return tabletop_fallback(instruction, self.world, backend)
+
+    def refusal(self, refused: Exception, instruction: str) -> Exception:
+        """A refusal ("no Apple in tabletop") with the objects the world has for a word that names
+        several of them alone ("tabletop has the green apple and the red apple")."""
+        has = world_has(instruction, self.world)
+        return type(refused)(f"{refused}{has}") if has else refused
 
 
 def tabletop_fallback(instruction: str, world: World, backend: str) -> LanguageResult | None:
