@@ -23,6 +23,7 @@ from collections import Counter
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.accounting import account
+from nl2hltl2plan.language.content_words import vocabulary
 from nl2hltl2plan.language.grammar.restated import count_fits
 from nl2hltl2plan.language.grounding import camel_words
 from nl2hltl2plan.language.htt_build import build_htt
@@ -60,13 +61,28 @@ _BEFORE = re.compile(
     r"(?<=[a-z])\s+before\s+(?!(?:that|this|those|these|it|which|then|anything|everything)\b)"
 )
 _FIRST_CLOSING = re.compile(r"\bfirst\b(?=\W*$|\s*:)")
-# words that state some other order, relation, count or negation: the fallback never guesses at them
-_REFUSED = re.compile(
-    r"\b(?:not|no|never|don't|dont|n't|without|except|unless|until|before|after|while|when|once|first|"
-    r"last|lastly|finally|next|second|third|then|from|off|out|away|back|near|beside|besides|by|behind|"
-    r"under|between|instead|either|or|but|only|both|all|each|every|one|two|three|four|remove|swap|"
-    r"keep|leave|empty|clear|stack)\b|\d"
+# words that state some other order, relation, count or negation: the fallback never guesses at them. They
+# are the shared categories of check 1 (`content_words.txt`), and the words the pairs reading has no place
+# for though those categories do not refuse them: a place relative to another thing ("near", "behind",
+# "from", "off"), a connective that changes which pairs hold ("or", "but", "only", "instead", "either"),
+# the verb of another action ("remove", "swap", "stack"), and "while" (a free-order word to check 1, but
+# here it joins two clauses this reading does not relate: "while you are at it", "while holding")
+_REFUSED_CATEGORIES = ("negation", "order", "condition", "quantifier_all", "quantifier_vague", "repetition")
+_NOT_PAIRED = (
+    "from off out away back near beside besides by behind under between instead either or but only while "
+    "remove swap keep leave empty clear stack"
 )
+
+
+def _refused_words() -> re.Pattern[str]:
+    shared = vocabulary()
+    words = {w for c, ws in shared.items() if c in _REFUSED_CATEGORIES or c.startswith("count_") for w in ws}
+    words |= set(_NOT_PAIRED.split())
+    alternatives = "|".join(map(re.escape, sorted(words, key=len, reverse=True)))
+    return re.compile(rf"\b(?:{alternatives})\b|\d")  # a digit: a count or a step number
+
+
+_REFUSED = _refused_words()
 _SENTENCE = re.compile(r"[.;!?]+")
 # a heading before a colon that names no object or plate: "Here is what I need:", "Postcondition:",
 # "Your job is to put each item on its plate:", "Three moves:" (its count must be the placements listed)

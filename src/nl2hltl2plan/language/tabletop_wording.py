@@ -12,7 +12,7 @@ and plate names, read before `tabletop_pairs` pairs them.
 - labels and numbers: "Step 1: ... Step 2: ..." (or "Round one", "First course") order the steps; bare
   list numbers ("1) ... 2) ...") only list, and are read only beside a free-order remark;
 - politeness that carries nothing: "it would please me if", "I would be grateful if you could", "let me
-  see", "chop chop".
+  see", "chop chop", "go ahead and".
 """
 
 from __future__ import annotations
@@ -99,7 +99,8 @@ _POLITE = re.compile(
     r"(?:\s+(?:greatly|a\s+lot|very\s+much|so\s+much))?\s+if(?:\s+you\s+(?:could|would|can|will))?\b"
 )
 _FILLER = re.compile(
-    r"^\W*(?:let\s+me\s+see|let's\s+see)\b|\bchop\s+chop\b|\bfind\s+(?:below|attached|enclosed)\b"
+    r"^\W*(?:let\s+me\s+see|let's\s+see)\b|\bchop\s+chop\b|\bfind\s+(?:below|attached|enclosed)\b|"
+    r"\bgo\s+ahead\s+and\b"
 )
 _THE_FOLLOWING = re.compile(r"\b(?:the\s+)?following(?=\s*:)")  # a list's heading: "arrange the following:"
 # an aside that only describes the thing before it: "the green apple, the nice shiny one, goes ..."
