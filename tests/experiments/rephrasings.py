@@ -448,7 +448,8 @@ VALID_H74: dict[int, list[str]] = {
         "apple on the blue plate. The sequence of placement is at the robot's discretion.",
         "Your quest, brave robot: deliver the green apple to the pink plate, the orange to the yellow plate "
         "and the red apple to the blue plate, in an order of your choosing.",
-        "To do (any order):\n- green apple -> pink plate\n- orange -> yellow plate\n- red apple -> blue plate",
+        "To do (any order):\n- green apple -> pink plate\n- orange -> yellow plate\n"
+        "- red apple -> blue plate",
         "Let's get the green apple onto the pink plate, the orange onto the yellow plate and the red apple "
         "onto the blue plate. No need to follow any particular order.",
         "Be a love and put the red apple on the blue plate, the orange on the yellow plate and the green "
@@ -463,13 +464,14 @@ VALID_H74: dict[int, list[str]] = {
         "the green plate and the red apple on the pink plate. Any sequence works for me.",
         "You will put the carrot on the blue plate, the orange on the yellow plate, the green apple on the "
         "green plate and the red apple on the pink plate, in whichever order you see fit."],
-    4: ["Priority 1: green apple and orange on the yellow plate. Priority 2: carrot and red apple on the blue "
-        "plate. Within a priority, any order.",
+    4: ["Priority 1: green apple and orange on the yellow plate. Priority 2: carrot and red apple on the "
+        "blue plate. Within a priority, any order.",
         "The robot shall first place the green apple and the orange on the yellow plate and shall thereafter "
         "place the carrot and the red apple on the blue plate, in either order.",
-        "Your first quest: bring the green apple and the orange to the yellow plate. Your second quest: bring "
-        "the carrot and the red apple to the blue plate.",
+        "Your first quest: bring the green apple and the orange to the yellow plate. Your second quest: "
+        "bring the carrot and the red apple to the blue plate.",
         "Sweetie, the yellow plate comes first: the green apple and the orange go on it. Only when that's "
         "done do the carrot and the red apple go on the blue plate, either one first.",
-        "Do in this order:\n1. green apple and orange -> yellow plate\n2. carrot and red apple -> blue plate"],
+        "Do in this order:\n1. green apple and orange -> yellow plate\n"
+        "2. carrot and red apple -> blue plate"],
 }

@@ -23,7 +23,7 @@ from collections import Counter
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.accounting import account
-from nl2hltl2plan.language.content_words import vocabulary
+from nl2hltl2plan.language.content_words import Unread, vocabulary
 from nl2hltl2plan.language.grammar.restated import count_fits
 from nl2hltl2plan.language.grounding import camel_words
 from nl2hltl2plan.language.htt_build import build_htt
@@ -31,8 +31,11 @@ from nl2hltl2plan.language.result import LanguageResult
 from nl2hltl2plan.language.tabletop_wording import (
     corrected,
     free_order,
+    frees_every_step,
     last_group_free,
+    last_item_unmarked,
     mention_pattern,
+    numbered_steps,
     plain_words,
     stated_not_asked,
     steps_read,
@@ -110,7 +113,8 @@ class TabletopReader:
     def prepared(self, instruction: str) -> str:
         """A clause that says where something is ("the carrot is on the blue plate") with no wish or goal
         before it is no task, and is refused by name; a correction ("the blue plate, sorry, the yellow
-        plate") is applied before any reading (`tabletop_wording`)."""
+        plate") is applied, and a numbered list's numbers read as "first" / "then" (`numbered_steps`), before
+        any reading (`tabletop_wording`)."""
         kinds = {camel_words(t): _is_plate(t) for t in self.world.object_types()}
         stated = stated_not_asked(instruction, kinds)
         if stated is not None:
@@ -118,7 +122,7 @@ class TabletopReader:
                 f"'{stated}' says where something is, not what to do: ask for it (\"put ...\", \"make sure "
                 "... is on ...\") or leave it out"
             )
-        return corrected(instruction, kinds)
+        return numbered_steps(corrected(instruction, kinds))
 
     def reread(self, instruction: str, backend: str) -> LanguageResult | None:
         return tabletop_fallback(instruction, self.world, backend)
@@ -128,6 +132,24 @@ class TabletopReader:
         several of them alone ("tabletop has the green apple and the red apple")."""
         has = world_has(instruction, self.world)
         return type(refused)(f"{refused}{has}") if has else refused
+
+    def unused(self, res: LanguageResult) -> list[Unread]:
+        """Each object or plate the instruction names (outside its negated clauses) that no base task
+        uses: nothing lies on a plate or beside a named thing at the start, so a name read as a landmark
+        ("the green apple on the pink plate orange on the yellow plate ...") was not understood."""
+        text = res.instruction.lower()
+        for c in res.constraint_specs:
+            text = text.replace(c.text.lower(), " ")
+        by_words = {camel_words(t): t for t in self.world.object_types()}
+        used = {t for task in res.tasks for t in (*task.object, *(task.receptacle or []))}
+        out: dict[str, Unread] = {}
+        for found in mention_pattern(by_words).finditer(text):
+            name = _name(found[0])
+            type_ = by_words.get(name) or by_words.get(name.removesuffix("s"))
+            if type_ is not None and type_ not in used:
+                kind = "place" if _is_plate(type_) else "object"
+                out[name] = Unread(name, kind, f"no base task uses it ({type_})")
+        return list(out.values())
 
 
 def tabletop_fallback(instruction: str, world: World, backend: str) -> LanguageResult | None:
@@ -184,8 +206,9 @@ def read_pairs(text: str, types: set[str]) -> Reading | None:
     if stated_not_asked(plain, by_words) is not None:
         return None
     plain, last_free = last_group_free(plain)
-    unordered, free = free_order(plain)
-    stepped = steps_read(unordered, free or last_free is not None)
+    unordered, remarks = free_order(plain)
+    free, listed = bool(remarks), frees_every_step(remarks)
+    stepped = steps_read(last_item_unmarked(unordered) if listed else unordered, listed)
     pattern = mention_pattern(by_words)
     groups = None if stepped is None else _ordered_groups(stepped, pattern)
     if stepped is None or groups is None:

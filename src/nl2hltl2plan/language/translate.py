@@ -28,6 +28,7 @@ from typing import TYPE_CHECKING, Literal, Protocol, Self, TypeVar, get_args
 from nl2hltl2plan.domain.task_kinds import SLOTS, State
 from nl2hltl2plan.errors import HTTError, LLMError, WorldError
 from nl2hltl2plan.language.accounting import account, take_every_instance, unfilled_slots
+from nl2hltl2plan.language.courtesy import without_courtesy
 from nl2hltl2plan.language.grounding import AffordanceLookup, Grounder, world_lookup
 from nl2hltl2plan.language.htt_build import build_htt
 from nl2hltl2plan.language.llm.client import LLMClient
@@ -114,6 +115,7 @@ def translate(
     if backend in PARSERS and (own := reader.own_reading("\n".join(lines))) is not None:
         return own  # a line break ends a step
     if backend in PARSERS:
+        instruction = without_courtesy(instruction)  # "if you don't mind": no condition, no negation
         look = world_lookup(world) if isinstance(world, World) else None
         grounder = Grounder(types, scene or "the scene")
         rest, negations = read_negations(reader.prepared(instruction), grounder, look)
@@ -163,13 +165,13 @@ def _keep_negations(
 
 def account_words(res: LanguageResult, world: SceneLike | None) -> LanguageResult:
     """Check 1 (`accounting.account`), the same for every backend: each content word the base tasks
-    do not use, each slot no word names, and each slot left empty (`unfilled_slots`) goes to `unparsed`
-    with its reason (the result is then partial). Counts the scene cannot satisfy and cyclic orders
-    raise HTTError."""
+    do not use, each slot no word names, each slot left empty (`unfilled_slots`) and what the world's
+    reader adds (`WorldReader.unused`) goes to `unparsed` with its reason (the result is then partial).
+    Counts the scene cannot satisfy and cyclic orders raise HTTError."""
     instances = scene_instances(world) if isinstance(world, World) else None
     scene = world.name if world is not None else "the scene"
     unread = account(res.instruction, res.tasks, res.before, instances, scene, res.constraint_specs)
-    unread += unfilled_slots(res.tasks)
+    unread += unfilled_slots(res.tasks) + world_reader(world).unused(res)
     words = [str(u) for u in unread]
     return res.model_copy(update={"unparsed": [*res.unparsed, *words]}) if words else res
 

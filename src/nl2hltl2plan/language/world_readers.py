@@ -1,6 +1,6 @@
 """Each world's own reading around the shared grammar: one hook per kind of world (`World.kind`).
 
-`translate` asks `world_reader(world)` at four points of the offline reading, and knows no world by name:
+`translate` asks `world_reader(world)` at five points of the offline reading, and knows no world by name:
 
 - `own_reading`: the world reads the whole instruction itself (the handover worlds, `handover_reading`);
 - `prepared`: the text as the shared grammar is to read it, or a refusal (the tabletop world refuses a
@@ -8,7 +8,9 @@
 - `reread`: the world's reading of an instruction the grammar refused or read only in part (the tabletop
   world's pairs reading); it reads no negation, so it is asked only of an instruction without one;
 - `refusal`: the grammar's refusal with what the world adds to it (the tabletop world names the objects a
-  word could mean).
+  word could mean);
+- `unused`: what check 1 adds for the world, for every backend (the tabletop world: a named object or
+  plate that no base task uses, since nothing there can be a landmark).
 
 A world kind with no reading of its own gets `SharedGrammar`, which changes nothing. A world's reader is
 imported only when that world is read (the handover reader's pattern tables cost ~25 ms to load).
@@ -23,6 +25,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Protocol
 
+from nl2hltl2plan.language.content_words import Unread
 from nl2hltl2plan.language.result import LanguageResult
 from nl2hltl2plan.worlds.world import World
 
@@ -48,6 +51,11 @@ class WorldReader(Protocol):
         """The grammar's refusal of `instruction`, with what the world adds to it."""
         ...
 
+    def unused(self, res: LanguageResult) -> list[Unread]:
+        """What check 1 is to add for this world: words of the instruction the reading leaves unused
+        that only this world knows to be content (every backend's reading is judged so)."""
+        ...
+
 
 class SharedGrammar:
     """The reader of a world with no reading of its own: the shared grammar as it is."""
@@ -63,6 +71,9 @@ class SharedGrammar:
 
     def refusal(self, refused: Exception, instruction: str) -> Exception:
         return refused
+
+    def unused(self, res: LanguageResult) -> list[Unread]:
+        return []
 
 
 class _HandoverReader(SharedGrammar):
