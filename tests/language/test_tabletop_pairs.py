@@ -60,20 +60,24 @@ def test_first_then_orders_the_groups_and_nothing_within_them():
     ]
 
 
-def test_a_wording_the_grammar_reads_never_reaches_the_fallback(monkeypatch):
+def test_the_grammar_reading_stands_the_pairs_reading_checks_it_or_reads_what_it_refused(monkeypatch):
     from nl2hltl2plan.language import tabletop_pairs
 
-    def refuse(*args):
-        raise AssertionError("the fallback was called")
+    asked: list[str] = []
 
-    monkeypatch.setattr(tabletop_pairs, "tabletop_fallback", refuse)
+    def cannot_read(text, *args):
+        asked.append(text)
+        return None
+
+    monkeypatch.setattr(tabletop_pairs, "tabletop_fallback", cannot_read)
     text = "Put the carrot on the blue plate, then the orange on the yellow plate."
     assert _reading(text) == (
         [("Carrot", "BluePlate"), ("Orange", "YellowPlate")],
         [(("Carrot", "BluePlate"), ("Orange", "YellowPlate"))],
     )
-    with pytest.raises(AssertionError, match="fallback"):
-        _reading("carrot: blue plate, orange: yellow plate")
+    assert asked == [text]  # asked once, for a second opinion
+    assert _reading("carrot: blue plate, orange: yellow plate") is None  # the grammar's refusal stands
+    assert asked[1:] == ["carrot: blue plate, orange: yellow plate"]
 
 
 @pytest.mark.parametrize(
@@ -306,3 +310,16 @@ def test_courtesy_frames_are_no_condition_or_negation_in_any_world():
         res = translate(text, demo_world(), build=False)
         assert not res.unparsed and not res.constraint_specs, text
         assert [(t.object, t.receptacle) for t in res.tasks] == [(["Apple"], ["Fridge"])]
+
+
+def test_a_full_reading_the_pairs_reading_contradicts_is_not_taken():
+    from nl2hltl2plan.language.tabletop_pairs import TabletopReader
+
+    reader = TabletopReader(WORLD)
+    text = "First put the carrot on the blue plate, then the orange on the yellow plate."
+    res = translate(text, WORLD, build=False)
+    assert reader.doubted(res, "offline") is res  # the two readings agree
+    unordered = res.model_copy(update={"before": []})  # a grammar that lost the "then"
+    doubted = reader.doubted(unordered, "offline")
+    assert doubted.partial and "read two ways" in doubted.unparsed[-1]
+    assert "A before B" in doubted.unparsed[-1]

@@ -40,7 +40,7 @@ from nl2hltl2plan.language.tabletop_wording import (
     stated_not_asked,
     steps_read,
 )
-from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter
+from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter, transitive_closure
 from nl2hltl2plan.worlds.world import World
 
 _DONE = r"(?:done|finished|complete[d]?)"
@@ -133,6 +133,18 @@ class TabletopReader:
         has = world_has(instruction, self.world)
         return type(refused)(f"{refused}{has}") if has else refused
 
+    def doubted(self, res: LanguageResult, backend: str) -> LanguageResult:
+        """The grammar's full reading, made partial where the pairs reading reads the instruction too and
+        gives other placements or another order: two readings that differ are never a guess."""
+        paired = tabletop_fallback(res.instruction, self.world, backend)
+        if paired is None or _signature(paired) == _signature(res):
+            return res
+        why = (
+            f"'the placements and their order' (order): read two ways, {_described(res)} (the grammar) or "
+            f"{_described(paired)} (object and plate paired); say it another way"
+        )
+        return res.model_copy(update={"unparsed": [*res.unparsed, why]})
+
     def unused(self, res: LanguageResult) -> list[Unread]:
         """Each object or plate the instruction names (outside its negated clauses) that no base task
         uses: nothing lies on a plate or beside a named thing at the start, so a name read as a landmark
@@ -180,6 +192,21 @@ def tabletop_fallback(instruction: str, world: World, backend: str) -> LanguageR
         task_node=task_node,
         leaf_task=leaf_task,
     )
+
+
+def _signature(res: LanguageResult) -> tuple[list[tuple[str, ...]], list[tuple[tuple[str, ...], ...]]]:
+    """A reading's placements and closed order, by placement (task ids left out)."""
+    key = {t.id: (*t.object, *(t.receptacle or [])) for t in res.tasks}
+    closure = transitive_closure(res.before, list(key))
+    return sorted(key.values()), sorted((key[a], key[b]) for a, b in closure)
+
+
+def _described(res: LanguageResult) -> str:
+    """ "A green apple on the yellow plate, B carrot on the blue plate; A before B" """
+    plates = {t.id: " and the ".join(camel_words(p) for p in t.receptacle or []) for t in res.tasks}
+    names = [f"{t.id} {camel_words(t.object[0])} on the {plates[t.id]}" for t in res.tasks]
+    orders = ", ".join(f"{a} before {b}" for a, b in res.before) or "no order"
+    return f"{', '.join(names)}; {orders}"
 
 
 def world_has(instruction: str, world: World) -> str:

@@ -138,8 +138,11 @@ def translate(
             if (again := reread()) is None:
                 raise reader.refusal(refused, instruction) from None
             res = again
-        if res.partial and (again := reread()) is not None:
-            res = again
+        else:  # the grammar's reading: the world's own reading replaces it where partial, or may doubt it
+            if res.partial and (again := reread()) is not None:
+                res = again
+            elif not res.partial and not negations:
+                res = reader.doubted(res, backend)
         with _refused_as_not_understood(res, world):
             return _finish(res, world, backend, client, ltl, actions, build)
     if client is None:

@@ -1,6 +1,6 @@
 """Each world's own reading around the shared grammar: one hook per kind of world (`World.kind`).
 
-`translate` asks `world_reader(world)` at five points of the offline reading, and knows no world by name:
+`translate` asks `world_reader(world)` at six points of the offline reading, and knows no world by name:
 
 - `own_reading`: the world reads the whole instruction itself (the handover worlds, `handover_reading`);
 - `prepared`: the text as the shared grammar is to read it, or a refusal (the tabletop world refuses a
@@ -9,6 +9,8 @@
   world's pairs reading); it reads no negation, so it is asked only of an instruction without one;
 - `refusal`: the grammar's refusal with what the world adds to it (the tabletop world names the objects a
   word could mean);
+- `doubted`: the grammar's full reading with what the world's own reading says against it (the tabletop
+  world: its pairs reading, where it reads the instruction too and differs, makes the result partial);
 - `unused`: what check 1 adds for the world, for every backend (the tabletop world: a named object or
   plate that no base task uses, since nothing there can be a landmark).
 
@@ -51,6 +53,11 @@ class WorldReader(Protocol):
         """The grammar's refusal of `instruction`, with what the world adds to it."""
         ...
 
+    def doubted(self, res: LanguageResult, backend: str) -> LanguageResult:
+        """The grammar's full reading (of an instruction with no negation), with what the world's own
+        reading says against it in `unparsed` (two readings that differ: neither is taken)."""
+        ...
+
     def unused(self, res: LanguageResult) -> list[Unread]:
         """What check 1 is to add for this world: words of the instruction the reading leaves unused
         that only this world knows to be content (every backend's reading is judged so)."""
@@ -71,6 +78,9 @@ class SharedGrammar:
 
     def refusal(self, refused: Exception, instruction: str) -> Exception:
         return refused
+
+    def doubted(self, res: LanguageResult, backend: str) -> LanguageResult:
+        return res
 
     def unused(self, res: LanguageResult) -> list[Unread]:
         return []
