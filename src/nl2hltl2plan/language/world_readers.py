@@ -1,6 +1,7 @@
 """Each world's own reading around the shared grammar: one hook per kind of world (`World.kind`).
 
-`translate` asks `world_reader(world)` at six points of the offline reading, and knows no world by name:
+`translate` asks `world_reader(world)` at six points (all but `unused` in the offline backends only),
+and knows no world by name:
 
 - `own_reading`: the world reads the whole instruction itself (the handover worlds, `handover_reading`);
 - `prepared`: the text as the shared grammar is to read it, or a refusal (the tabletop world refuses a
