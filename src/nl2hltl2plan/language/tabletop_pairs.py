@@ -41,7 +41,6 @@ from nl2hltl2plan.language.tabletop_wording import (
     steps_read,
 )
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter, transitive_closure
-from nl2hltl2plan.language.world_readers import SharedGrammar
 from nl2hltl2plan.worlds.world import World
 
 _DONE = r"(?:done|finished|complete[d]?)"
@@ -100,7 +99,7 @@ _GENERIC_QUANTITY = re.compile(
 Reading = tuple[list[BaseTaskSpec], list[tuple[str, str]], list[list[str]], str]
 
 
-class TabletopReader(SharedGrammar):
+class TabletopReader:
     """The tabletop world's hook (`world_readers.WorldReader`; the shared grammar reads first): statements
     refused, corrections and numbered lists read before the grammar reads (`prepared`), the pairs reading
     of what it refuses or reads in part (`reread`) and as a check of what it reads in full (`doubted`), the
@@ -109,6 +108,9 @@ class TabletopReader(SharedGrammar):
 
     def __init__(self, world: World) -> None:
         self.world = world
+
+    def own_reading(self, instruction: str) -> LanguageResult | None:
+        return None  # the shared grammar reads first (world_readers imports this module: no base class)
 
     def prepared(self, instruction: str) -> str:
         """A clause that says where something is ("the carrot is on the blue plate") with no wish or goal
