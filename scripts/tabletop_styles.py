@@ -3,8 +3,10 @@ order, and the exit status of `nl2hltl2plan plan TEXT --world tabletop` for each
 
     python scripts/tabletop_styles.py --batch DEV_S11 [--per-sentence]
 
-Prints `batch: same N/M, wrong W (exit 0 with other tasks or order), exit codes {...}`; --per-sentence
-adds one line per wording (never for VALID_S11 while rules are being written).
+Prints `batch: same N/M, exit 0 and same E/M, wrong W (exit 0 with other tasks or order), exit codes
+{...}`: "same" compares the reading's tasks and closed order with the ground truth, partial readings
+included (the command refuses those, exit 2); "exit 0 and same" is what a user gets. --per-sentence adds
+one line per wording (never for a held-out batch while rules are being written).
 """
 
 from __future__ import annotations
@@ -46,7 +48,7 @@ def main() -> None:
     args = parser.parse_args()
     batch: dict[int, list[str]] = getattr(rephrasings, args.batch)
     tasks = {t.id: t for t in load_tasks()}
-    same, wrong, total, codes = 0, 0, 0, Counter()
+    same, exact, wrong, total, codes = 0, 0, 0, 0, Counter()
     for task_id, texts in batch.items():
         gt = tasks[task_id].gt_instance()
         reference = _closed(gt.tasks, gt.before)  # the task's ground truth, not a parse of its wording
@@ -56,10 +58,14 @@ def main() -> None:
                 ["nl2hltl2plan", "plan", text, "--world", "tabletop"], capture_output=True, check=False
             ).returncode
             same, wrong, total = same + ok, wrong + (rc == 0 and not ok), total + 1
+            exact += ok and rc == 0
             codes[rc] += 1
             if args.per_sentence:
                 print(f"{'same' if ok else 'DIFF'} rc={rc} task {task_id}: {text}")
-    print(f"{args.batch}: same {same}/{total}, wrong {wrong}, exit codes {dict(sorted(codes.items()))}")
+    print(
+        f"{args.batch}: same {same}/{total}, exit 0 and same {exact}/{total}, wrong {wrong}, exit codes "
+        f"{dict(sorted(codes.items()))}"
+    )
 
 
 if __name__ == "__main__":

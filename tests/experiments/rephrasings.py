@@ -428,3 +428,50 @@ DEV3_H68: dict[int, list[str]] = {
         "Can you do the yellow plate first, with the green apple and the orange, and then the blue plate "
         "with the carrot and the red apple, in any order?"],
 }
+
+# Issue 28 (h74): held-out rephrasings written before any h74 rule, in voices the sets above do not use (a
+# contract's "shall", a game master's quest, a checklist on separate lines, radio talk, a parent to a
+# child, a "let's"/"we're going to" plan, an exam's task sheet, priority labels, a future-tense briefing)
+# and framings they do not (a numbered list headed "in this order", "whichever you fancy first", "either
+# one first", "Constraint: none on the order"). Measured once before and once at the end
+# (scripts/tabletop_styles.py --batch VALID_H74), never read per sentence between; the expected signature
+# is each task's ground truth.
+VALID_H74: dict[int, list[str]] = {
+    1: ["Plating instructions: green apple on the blue plate, orange on the yellow plate.",
+        "The robot shall place the green apple on the blue plate and shall place the orange on the yellow "
+        "plate.",
+        "Robot, this is base. Green apple to blue plate, orange to yellow plate. Over.",
+        "Okay sweetie, can you put the green apple on the blue plate for me, and the orange on the yellow "
+        "plate? Good job!",
+        "- [ ] green apple on blue plate\n- [ ] orange on yellow plate"],
+    2: ["The robot shall place the green apple on the pink plate, the orange on the yellow plate and the red "
+        "apple on the blue plate. The sequence of placement is at the robot's discretion.",
+        "Your quest, brave robot: deliver the green apple to the pink plate, the orange to the yellow plate "
+        "and the red apple to the blue plate, in an order of your choosing.",
+        "To do (any order):\n- green apple -> pink plate\n- orange -> yellow plate\n"
+        "- red apple -> blue plate",
+        "Let's get the green apple onto the pink plate, the orange onto the yellow plate and the red apple "
+        "onto the blue plate. No need to follow any particular order.",
+        "Be a love and put the red apple on the blue plate, the orange on the yellow plate and the green "
+        "apple on the pink plate, whichever you fancy first."],
+    3: ["Base to robot: carrot to blue plate, orange to yellow plate, green apple to green plate, red apple "
+        "to pink plate. Order at your discretion. Over.",
+        "Task: move the carrot to the blue plate, the orange to the yellow plate, the green apple to the "
+        "green plate and the red apple to the pink plate. Constraint: none on the order.",
+        "Arrange the carrot on the blue plate, the orange on the yellow plate, the green apple on the green "
+        "plate and the red apple on the pink plate, in no set order.",
+        "We're going to put the carrot on the blue plate, the orange on the yellow plate, the green apple on "
+        "the green plate and the red apple on the pink plate. Any sequence works for me.",
+        "You will put the carrot on the blue plate, the orange on the yellow plate, the green apple on the "
+        "green plate and the red apple on the pink plate, in whichever order you see fit."],
+    4: ["Priority 1: green apple and orange on the yellow plate. Priority 2: carrot and red apple on the "
+        "blue plate. Within a priority, any order.",
+        "The robot shall first place the green apple and the orange on the yellow plate and shall thereafter "
+        "place the carrot and the red apple on the blue plate, in either order.",
+        "Your first quest: bring the green apple and the orange to the yellow plate. Your second quest: "
+        "bring the carrot and the red apple to the blue plate.",
+        "Sweetie, the yellow plate comes first: the green apple and the orange go on it. Only when that's "
+        "done do the carrot and the red apple go on the blue plate, either one first.",
+        "Do in this order:\n1. green apple and orange -> yellow plate\n"
+        "2. carrot and red apple -> blue plate"],
+}

@@ -69,7 +69,14 @@ def free_order_phrase(kind: str | None = None) -> str:
     >>> bool(re.fullmatch(free_order_phrase("clause"), "in either order", re.I))
     False
     """
-    text = resources.files("nl2hltl2plan.language").joinpath("free_order.txt").read_text()
+    return phrase_list_pattern("free_order.txt", kind)
+
+
+@cache
+def phrase_list_pattern(filename: str, kind: str | None = None) -> str:
+    """The phrases of one of this package's `kind: phrase` files (the syntax of `free_order.txt`), of one
+    kind or all, as one regular expression with no context and no flags."""
+    text = resources.files("nl2hltl2plan.language").joinpath(filename).read_text()
     lines = [line.partition(":") for line in text.splitlines() if line.strip() and not line.startswith("#")]
     return "(?:" + "|".join(_phrase_pattern(p.strip()) for k, _, p in lines if kind in (None, k)) + ")"
 

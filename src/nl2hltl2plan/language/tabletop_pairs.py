@@ -23,19 +23,24 @@ from collections import Counter
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.accounting import account
+from nl2hltl2plan.language.content_words import Unread, vocabulary
 from nl2hltl2plan.language.grammar.restated import count_fits
 from nl2hltl2plan.language.grounding import camel_words
 from nl2hltl2plan.language.htt_build import build_htt
 from nl2hltl2plan.language.result import LanguageResult
 from nl2hltl2plan.language.tabletop_wording import (
+    corrected,
     free_order,
+    frees_every_step,
     last_group_free,
+    last_item_unmarked,
     mention_pattern,
+    numbered_steps,
     plain_words,
     stated_not_asked,
     steps_read,
 )
-from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter
+from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter, transitive_closure
 from nl2hltl2plan.worlds.world import World
 
 _DONE = r"(?:done|finished|complete[d]?)"
@@ -59,13 +64,28 @@ _BEFORE = re.compile(
     r"(?<=[a-z])\s+before\s+(?!(?:that|this|those|these|it|which|then|anything|everything)\b)"
 )
 _FIRST_CLOSING = re.compile(r"\bfirst\b(?=\W*$|\s*:)")
-# words that state some other order, relation, count or negation: the fallback never guesses at them
-_REFUSED = re.compile(
-    r"\b(?:not|no|never|don't|dont|n't|without|except|unless|until|before|after|while|when|once|first|"
-    r"last|lastly|finally|next|second|third|then|from|off|out|away|back|near|beside|besides|by|behind|"
-    r"under|between|instead|either|or|but|only|both|all|each|every|one|two|three|four|remove|swap|"
-    r"keep|leave|empty|clear|stack)\b|\d"
+# words that state some other order, relation, count or negation: the fallback never guesses at them. They
+# are the shared categories of check 1 (`content_words.txt`), and the words the pairs reading has no place
+# for though those categories do not refuse them: a place relative to another thing ("near", "behind",
+# "from", "off"), a connective that changes which pairs hold ("or", "but", "only", "instead", "either"),
+# the verb of another action ("remove", "swap", "stack"), and "while" (a free-order word to check 1, but
+# here it joins two clauses this reading does not relate: "while you are at it", "while holding")
+_REFUSED_CATEGORIES = ("negation", "order", "condition", "quantifier_all", "quantifier_vague", "repetition")
+_NOT_PAIRED = (
+    "from off out away back near beside besides by behind under between instead either or but only while "
+    "remove swap keep leave empty clear stack"
 )
+
+
+def _refused_words() -> re.Pattern[str]:
+    shared = vocabulary()
+    words = {w for c, ws in shared.items() if c in _REFUSED_CATEGORIES or c.startswith("count_") for w in ws}
+    words |= set(_NOT_PAIRED.split())
+    alternatives = "|".join(map(re.escape, sorted(words, key=len, reverse=True)))
+    return re.compile(rf"\b(?:{alternatives})\b|\d")  # a digit: a count or a step number
+
+
+_REFUSED = _refused_words()
 _SENTENCE = re.compile(r"[.;!?]+")
 # a heading before a colon that names no object or plate: "Here is what I need:", "Postcondition:",
 # "Your job is to put each item on its plate:", "Three moves:" (its count must be the placements listed)
@@ -77,6 +97,73 @@ _GENERIC_QUANTITY = re.compile(
 )
 
 Reading = tuple[list[BaseTaskSpec], list[tuple[str, str]], list[list[str]], str]
+
+
+class TabletopReader:
+    """The tabletop world's hook (`world_readers.WorldReader`; the shared grammar reads first): statements
+    refused, corrections and numbered lists read before the grammar reads (`prepared`), the pairs reading
+    of what it refuses or reads in part (`reread`) and as a check of what it reads in full (`doubted`), the
+    objects a word could mean beside a refusal (`refusal`), and every named thing a reading leaves unused
+    (`unused`)."""
+
+    def __init__(self, world: World) -> None:
+        self.world = world
+
+    def own_reading(self, instruction: str) -> LanguageResult | None:
+        return None  # the shared grammar reads first (world_readers imports this module: no base class)
+
+    def prepared(self, instruction: str) -> str:
+        """A clause that says where something is ("the carrot is on the blue plate") with no wish or goal
+        before it is no task, and is refused by name; a correction ("the blue plate, sorry, the yellow
+        plate") is applied, and a numbered list's numbers read as "first" / "then" (`numbered_steps`), before
+        any reading (`tabletop_wording`)."""
+        kinds = {camel_words(t): _is_plate(t) for t in self.world.object_types()}
+        stated = stated_not_asked(instruction, kinds)
+        if stated is not None:
+            raise HTTError(
+                f"'{stated}' says where something is, not what to do: ask for it (\"put ...\", \"make sure "
+                "... is on ...\") or leave it out"
+            )
+        return numbered_steps(corrected(instruction, kinds))
+
+    def reread(self, instruction: str, backend: str) -> LanguageResult | None:
+        return tabletop_fallback(instruction, self.world, backend)
+
+    def refusal(self, refused: Exception, instruction: str) -> Exception:
+        """A refusal ("no Apple in tabletop") with the objects the world has for a word that names
+        several of them alone ("tabletop has the green apple and the red apple")."""
+        has = world_has(instruction, self.world)
+        return type(refused)(f"{refused}{has}") if has else refused
+
+    def doubted(self, res: LanguageResult, backend: str) -> LanguageResult:
+        """The grammar's full reading, made partial where the pairs reading reads the instruction too and
+        gives other placements or another order: two readings that differ are never a guess."""
+        paired = tabletop_fallback(res.instruction, self.world, backend)
+        if paired is None or _signature(paired) == _signature(res):
+            return res
+        why = (
+            f"'the placements and their order' (order): read two ways, {_described(res)} (the grammar) or "
+            f"{_described(paired)} (object and plate paired); say it another way"
+        )
+        return res.model_copy(update={"unparsed": [*res.unparsed, why]})
+
+    def unused(self, res: LanguageResult) -> list[Unread]:
+        """Each object or plate the instruction names (outside its negated clauses) that no base task
+        uses: nothing lies on a plate or beside a named thing at the start, so a name read as a landmark
+        ("the green apple on the pink plate orange on the yellow plate ...") was not understood."""
+        text = res.instruction.lower()
+        for c in res.constraint_specs:
+            text = text.replace(c.text.lower(), " ")
+        by_words = {camel_words(t): t for t in self.world.object_types()}
+        used = {t for task in res.tasks for t in (*task.object, *(task.receptacle or []))}
+        out: dict[str, Unread] = {}
+        for found in mention_pattern(by_words).finditer(text):
+            name = _name(found[0])
+            type_ = by_words.get(name) or by_words.get(name.removesuffix("s"))
+            if type_ is not None and type_ not in used:
+                kind = "place" if _is_plate(type_) else "object"
+                out[name] = Unread(name, kind, f"no base task uses it ({type_})")
+        return list(out.values())
 
 
 def tabletop_fallback(instruction: str, world: World, backend: str) -> LanguageResult | None:
@@ -109,6 +196,21 @@ def tabletop_fallback(instruction: str, world: World, backend: str) -> LanguageR
     )
 
 
+def _signature(res: LanguageResult) -> tuple[list[tuple[str, ...]], list[tuple[tuple[str, ...], ...]]]:
+    """A reading's placements and closed order, by placement (task ids left out)."""
+    key = {t.id: (*t.object, *(t.receptacle or [])) for t in res.tasks}
+    closure = transitive_closure(res.before, list(key))
+    return sorted(key.values()), sorted((key[a], key[b]) for a, b in closure)
+
+
+def _described(res: LanguageResult) -> str:
+    """ "A green apple on the yellow plate, B carrot on the blue plate; A before B" """
+    plates = {t.id: " and the ".join(camel_words(p) for p in t.receptacle or []) for t in res.tasks}
+    names = [f"{t.id} {camel_words(t.object[0])} on the {plates[t.id]}" for t in res.tasks]
+    orders = ", ".join(f"{a} before {b}" for a, b in res.before) or "no order"
+    return f"{', '.join(names)}; {orders}"
+
+
 def world_has(instruction: str, world: World) -> str:
     """What the world has for a head noun that several of its objects share, where the instruction uses
     it: " (tabletop has the green apple and the red apple)", or ""."""
@@ -133,8 +235,9 @@ def read_pairs(text: str, types: set[str]) -> Reading | None:
     if stated_not_asked(plain, by_words) is not None:
         return None
     plain, last_free = last_group_free(plain)
-    unordered, free = free_order(plain)
-    stepped = steps_read(unordered, free or last_free is not None)
+    unordered, remarks = free_order(plain)
+    free, listed = bool(remarks), frees_every_step(remarks)
+    stepped = steps_read(last_item_unmarked(unordered) if listed else unordered, listed)
     pattern = mention_pattern(by_words)
     groups = None if stepped is None else _ordered_groups(stepped, pattern)
     if stepped is None or groups is None:

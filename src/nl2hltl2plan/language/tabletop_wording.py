@@ -9,10 +9,11 @@ and plate names, read before `tabletop_pairs` pairs them.
 - corrections: "the blue plate, sorry, the yellow plate" keeps the second name, "no wait" too;
 - plurals: "the apples" / "both apples" name every object the world has with that head noun, when the
   count, if one is said, is theirs;
-- labels and numbers: "Step 1: ... Step 2: ..." (or "Round one", "First course") order the steps; bare
-  list numbers ("1) ... 2) ...") only list, and are read only beside a free-order remark;
+- labels and numbers: "Step 1: ... Step 2: ..." (or "Round one", "First course") and a numbered list
+  ("1) ... 2) ...") order the steps; beside a remark that frees the whole list ("in any order", not
+  "within each step, any order") the numbers only list, and "lastly" / "finally" only mark its last item;
 - politeness that carries nothing: "it would please me if", "I would be grateful if you could", "let me
-  see", "chop chop".
+  see", "chop chop", "go ahead and".
 """
 
 from __future__ import annotations
@@ -63,8 +64,14 @@ def stated_not_asked(text: str, names: Iterable[str]) -> str | None:
 
 
 # ---- free-order remarks ---------------------------------------------------------------------------------
-# the shared list (free_order.txt), anywhere in the text: "in any order", "the order is up to you"
-_FREE_ORDER = re.compile(rf"\b{free_order_phrase()}\b")
+# the shared list (free_order.txt), anywhere in the text: "in any order", "the order is up to you", also
+# with a comma between its words ("Which order, is not important", "Within each step, any order")
+_FREE_ORDER = re.compile(r"\b" + free_order_phrase().replace(r"\s+", r",?\s+") + r"\b")
+# a remark about the order inside each step ("within each step, any order"), which leaves the steps' own
+_WITHIN_STEPS = re.compile(r"\bwithin\b")
+# under a remark that frees the whole list, "lastly" / "finally" only mark its last item ("..., and, lastly,
+# the red apple on the pink plate. The order doesn't matter.")
+_LAST_LISTED = re.compile(r"\b(?:lastly|finally)\b\s*,?")
 
 
 # a free-order remark about the last group alone: "those last two can go in any order"
@@ -82,10 +89,19 @@ def last_group_free(text: str) -> tuple[str, int | None]:
     return text[: m.start()] + " " + text[m.end() :], _NUMBER_WORDS[m["n"]]
 
 
-def free_order(text: str) -> tuple[str, bool]:
-    """`text` (lowercased) without its free-order remarks, and whether it had one."""
-    out, n = _FREE_ORDER.subn(" ", text)
-    return out, n > 0
+def free_order(text: str) -> tuple[str, list[str]]:
+    """`text` (lowercased) without its free-order remarks, and the remarks."""
+    return _FREE_ORDER.sub(" ", text), [m[0] for m in _FREE_ORDER.finditer(text)]
+
+
+def frees_every_step(remarks: list[str]) -> bool:
+    """Does one of the remarks free the whole list, not only the order inside each step?"""
+    return any(_WITHIN_STEPS.search(r) is None for r in remarks)
+
+
+def last_item_unmarked(text: str) -> str:
+    """`text` without "lastly" / "finally", for a list whose order a remark frees."""
+    return _LAST_LISTED.sub(" ", text)
 
 
 # ---- corrections, plurals, politeness ---------------------------------------------------------------------
@@ -99,7 +115,8 @@ _POLITE = re.compile(
     r"(?:\s+(?:greatly|a\s+lot|very\s+much|so\s+much))?\s+if(?:\s+you\s+(?:could|would|can|will))?\b"
 )
 _FILLER = re.compile(
-    r"^\W*(?:let\s+me\s+see|let's\s+see)\b|\bchop\s+chop\b|\bfind\s+(?:below|attached|enclosed)\b"
+    r"^\W*(?:let\s+me\s+see|let's\s+see)\b|\bchop\s+chop\b|\bfind\s+(?:below|attached|enclosed)\b|"
+    r"\bgo\s+ahead\s+and\b"
 )
 _THE_FOLLOWING = re.compile(r"\b(?:the\s+)?following(?=\s*:)")  # a list's heading: "arrange the following:"
 # an aside that only describes the thing before it: "the green apple, the nice shiny one, goes ..."
@@ -189,22 +206,46 @@ _LABEL = re.compile(
 _LIST_NUMBER = re.compile(r"(?:^|(?<=[\s.;!?]))\(?(?P<n>\d)[.)]\s+")
 
 
-def steps_read(text: str, free: bool) -> str | None:
-    """Step labels as "first" / "then" (numbered 1, 2, ... in turn); bare list numbers removed beside a
-    free-order remark (`free`). None: labels out of turn, or list numbers with no remark to say whether
-    they order the steps."""
+def steps_read(text: str, listed: bool) -> str | None:
+    """Step labels, and bare list numbers, as "first" / "then" (numbered 1, 2, ... in turn); bare list
+    numbers beside a remark that frees the whole list (`listed`: "1) ... 2) ... in any order") only list,
+    and are removed. None: labels or numbers out of turn."""
     labels = list(_LABEL.finditer(text))
     if [_step_number(m["n1"] or m["n2"]) for m in labels] != list(range(1, len(labels) + 1)):
         return None
-    for m in reversed(labels):
-        word = " first " if m.start() == labels[0].start() else " then "
-        text = text[: m.start()] + word + text[m.end() :]
+    text = _as_steps(text, labels)
+    return list_numbers_read(text, listed)
+
+
+def list_numbers_read(text: str, listed: bool) -> str | None:
+    """A numbered list's numbers ("1) ... 2) ...") as "first" / "then", or removed when a remark frees the
+    whole list (`listed`); None when they are not 1, 2, ... in turn."""
     numbers = list(_LIST_NUMBER.finditer(text))
-    if not numbers:
-        return text
-    if not free or [int(m["n"]) for m in numbers] != list(range(1, len(numbers) + 1)):
+    if [int(m["n"]) for m in numbers] != list(range(1, len(numbers) + 1)):
         return None
-    return _LIST_NUMBER.sub(" ", text)
+    if not listed:
+        return _as_steps(text, numbers)
+    for m in reversed(numbers):  # each item its own sentence: "1) A on P 2) B on Q" is two placements
+        text = text[: m.start()] + ("" if m.start() == numbers[0].start() else ". ") + text[m.end() :]
+    return text
+
+
+def numbered_steps(text: str) -> str:
+    """`text` with the numbers of a numbered list of two or more steps read (`list_numbers_read`: as
+    "first" / "then", or removed beside a remark that frees the whole list), so that every reader orders
+    the steps as the numbers do; the text as it is with no such list."""
+    if len(_LIST_NUMBER.findall(text)) < 2:
+        return text
+    read = list_numbers_read(text, frees_every_step(free_order(text.lower())[1]))
+    return " ".join(read.split()) if read is not None else text
+
+
+def _as_steps(text: str, marks: list[re.Match[str]]) -> str:
+    """Each step's label or number as "first" (the first one) or "then"."""
+    for m in reversed(marks):
+        word = " first " if m.start() == marks[0].start() else " then "
+        text = text[: m.start()] + word + text[m.end() :]
+    return text
 
 
 def _step_number(word: str) -> int:

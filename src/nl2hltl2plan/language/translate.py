@@ -29,6 +29,7 @@ from nl2hltl2plan.domain.task_kinds import SLOTS, State
 from nl2hltl2plan.errors import HTTError, LLMError, WorldError
 from nl2hltl2plan.language.accounting import account, unfilled_slots
 from nl2hltl2plan.language.counts import take_every_instance
+from nl2hltl2plan.language.courtesy import without_courtesy
 from nl2hltl2plan.language.grounding import AffordanceLookup, Grounder, world_lookup
 from nl2hltl2plan.language.htt_build import build_htt
 from nl2hltl2plan.language.llm.client import LLMClient
@@ -47,6 +48,7 @@ from nl2hltl2plan.language.spec_builder import GenerateLTL, build_spec
 from nl2hltl2plan.language.state_tasks import StateReader, guessed_slot, light_orders, reread, state_orderings
 from nl2hltl2plan.language.suggest import not_understood, suggestion_text
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter
+from nl2hltl2plan.language.world_readers import world_reader
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec, LeafOrFormula
 from nl2hltl2plan.logic.relations import compile_relations
 from nl2hltl2plan.worlds.tasks import can_take_state, demand_of
@@ -110,17 +112,20 @@ def translate(
         raise HTTError("empty instruction")
     types = set(world.object_types()) if world is not None else None
     scene = world.name if world is not None else None
-    if backend in PARSERS and isinstance(world, World) and world.kind == "handover":
-        # the four-arm worlds' own reader, imported only for them (its pattern tables cost ~25 ms to load)
-        from nl2hltl2plan.language import handover_reading
-
-        return handover_reading.translate_handover("\n".join(lines), world)  # a line break ends a step
+    reader = world_reader(world)  # the world's own reading around the shared grammar, if it has one
+    if backend in PARSERS and (own := reader.own_reading("\n".join(lines))) is not None:
+        return own  # a line break ends a step
     if backend in PARSERS:
+        instruction = without_courtesy(instruction)  # "if you don't mind": no condition, no negation
         look = world_lookup(world) if isinstance(world, World) else None
         grounder = Grounder(types, scene or "the scene")
-        rest, negations = read_negations(_tabletop_prepared(instruction, world), grounder, look)
+        rest, negations = read_negations(reader.prepared(instruction), grounder, look)
         if negations and not rest.strip(" ,.;!?"):
             raise HTTError(nothing_to_do(instruction, [n.spec for n in negations]))
+
+        def reread() -> LanguageResult | None:  # a world's rereading reads no negation: not asked then
+            return None if negations else reader.reread(instruction, backend)
+
         try:
             res = _parse(backend, rest, grounder, strict, look, world)
             if negations:
@@ -130,12 +135,15 @@ def translate(
                 picked.update(ask(res.ambiguities))
             res = account_words(apply_choices(res, picked), world)
         except (HTTError, WorldError) as refused:
-            # the tabletop reading (checked by check 1 on the words it read), or the refusal as it was
-            if (paired := _tabletop_fallback(instruction, negations, world, backend)) is None:
-                raise _with_what_the_world_has(refused, instruction, world) from None
-            res = paired
-        if res.partial and (paired := _tabletop_fallback(instruction, negations, world, backend)) is not None:
-            res = paired
+            # the world's rereading (checked by check 1 on the words it read), or the refusal as it was
+            if (again := reread()) is None:
+                raise reader.refusal(refused, instruction) from None
+            res = again
+        else:  # the grammar's reading: the world's own reading replaces it where partial, or may doubt it
+            if res.partial and (again := reread()) is not None:
+                res = again
+            elif not res.partial and not negations:
+                res = reader.doubted(res, backend)
         with _refused_as_not_understood(res, world):
             return _finish(res, world, backend, client, ltl, actions, build)
     if client is None:
@@ -145,48 +153,6 @@ def translate(
         res = account_words(cross_check(res, types, scene), world)
         with _refused_as_not_understood(res, world):
             return _finish(res, world, backend, client, ltl, actions, build)
-
-
-def _tabletop_fallback(
-    instruction: str, negations: list[Negation], world: SceneLike | None, backend: str
-) -> LanguageResult | None:
-    """The tabletop world's pairs reading (`tabletop_pairs`) of an instruction the grammar refused or
-    read only in part; None elsewhere, with a negation, or when that reading fails check 1 too."""
-    if negations or not isinstance(world, World) or world.kind != "tabletop":
-        return None
-    from nl2hltl2plan.language.tabletop_pairs import tabletop_fallback
-
-    return tabletop_fallback(instruction, world, backend)
-
-
-def _tabletop_prepared(instruction: str, world: SceneLike | None) -> str:
-    """In the tabletop world: a clause that says where something is ("the carrot is on the blue plate")
-    with no wish or goal before it is no task, and is refused by name; a correction ("the blue plate,
-    sorry, the yellow plate") is applied before any reading (`tabletop_wording`)."""
-    if not isinstance(world, World) or world.kind != "tabletop":
-        return instruction
-    from nl2hltl2plan.language.grounding import camel_words
-    from nl2hltl2plan.language.tabletop_wording import corrected, stated_not_asked
-
-    kinds = {camel_words(t): t.endswith("Plate") for t in world.object_types()}
-    stated = stated_not_asked(instruction, kinds)
-    if stated is not None:
-        raise HTTError(
-            f"'{stated}' says where something is, not what to do: ask for it (\"put ...\", \"make sure ... "
-            "is on ...\") or leave it out"
-        )
-    return corrected(instruction, kinds)
-
-
-def _with_what_the_world_has(refused: Exception, instruction: str, world: SceneLike | None) -> Exception:
-    """A refusal in the tabletop world ("no Apple in tabletop") with the objects it has for a word that
-    names several of them alone ("tabletop has the green apple and the red apple")."""
-    if not isinstance(world, World) or world.kind != "tabletop":
-        return refused
-    from nl2hltl2plan.language.tabletop_pairs import world_has
-
-    has = world_has(instruction, world)
-    return type(refused)(f"{refused}{has}") if has else refused
 
 
 def _keep_negations(
@@ -203,13 +169,13 @@ def _keep_negations(
 
 def account_words(res: LanguageResult, world: SceneLike | None) -> LanguageResult:
     """Check 1 (`accounting.account`), the same for every backend: each content word the base tasks
-    do not use, each slot no word names, and each slot left empty (`unfilled_slots`) goes to `unparsed`
-    with its reason (the result is then partial). Counts the scene cannot satisfy and cyclic orders
-    raise HTTError."""
+    do not use, each slot no word names, each slot left empty (`unfilled_slots`) and what the world's
+    reader adds (`WorldReader.unused`) goes to `unparsed` with its reason (the result is then partial).
+    Counts the scene cannot satisfy and cyclic orders raise HTTError."""
     instances = scene_instances(world) if isinstance(world, World) else None
     scene = world.name if world is not None else "the scene"
     unread = account(res.instruction, res.tasks, res.before, instances, scene, res.constraint_specs)
-    unread += unfilled_slots(res.tasks)
+    unread += unfilled_slots(res.tasks) + world_reader(world).unused(res)
     words = [str(u) for u in unread]
     return res.model_copy(update={"unparsed": [*res.unparsed, *words]}) if words else res
 

@@ -1,0 +1,119 @@
+"""Each world's own reading around the shared grammar: one hook per kind of world (`World.kind`).
+
+`translate` asks `world_reader(world)` at six points (all but `unused` in the offline backends only),
+and knows no world by name:
+
+- `own_reading`: the world reads the whole instruction itself (the handover worlds, `handover_reading`);
+- `prepared`: the text as the shared grammar is to read it, or a refusal (the tabletop world refuses a
+  statement of where something is and applies corrections first, `tabletop_pairs`);
+- `reread`: the world's reading of an instruction the grammar refused or read only in part (the tabletop
+  world's pairs reading); it reads no negation, so it is asked only of an instruction without one;
+- `refusal`: the grammar's refusal with what the world adds to it (the tabletop world names the objects a
+  word could mean);
+- `doubted`: the grammar's full reading with what the world's own reading says against it (the tabletop
+  world: its pairs reading, where it reads the instruction too and differs, makes the result partial);
+- `unused`: what check 1 adds for the world, for every backend (the tabletop world: a named object or
+  plate that no base task uses, since nothing there can be a landmark).
+
+A world kind with no reading of its own gets `SharedGrammar`, which changes nothing. A world's reader is
+imported only when that world is read (the handover reader's pattern tables cost ~25 ms to load).
+
+>>> from nl2hltl2plan.worlds.demo import demo_world
+>>> world_reader(demo_world()).prepared("put the apple in the fridge")
+'put the apple in the fridge'
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Protocol
+
+from nl2hltl2plan.language.content_words import Unread
+from nl2hltl2plan.language.result import LanguageResult
+from nl2hltl2plan.worlds.world import World
+
+
+class WorldReader(Protocol):
+    """The reading one world adds to the shared grammar (see the module docstring)."""
+
+    def own_reading(self, instruction: str) -> LanguageResult | None:
+        """The world's whole reading (a line break in `instruction` ends a step), or None: the shared
+        grammar reads it."""
+        ...
+
+    def prepared(self, instruction: str) -> str:
+        """The instruction as the shared grammar is to read it; raises HTTError to refuse it."""
+        ...
+
+    def reread(self, instruction: str, backend: str) -> LanguageResult | None:
+        """The world's reading of an instruction (with no negation) that the grammar refused or read in
+        part, or None: the grammar's result stands."""
+        ...
+
+    def refusal(self, refused: Exception, instruction: str) -> Exception:
+        """The grammar's refusal of `instruction`, with what the world adds to it."""
+        ...
+
+    def doubted(self, res: LanguageResult, backend: str) -> LanguageResult:
+        """The grammar's full reading (of an instruction with no negation), with what the world's own
+        reading says against it in `unparsed` (two readings that differ: neither is taken)."""
+        ...
+
+    def unused(self, res: LanguageResult) -> list[Unread]:
+        """What check 1 is to add for this world: words of the instruction the reading leaves unused
+        that only this world knows to be content (every backend's reading is judged so)."""
+        ...
+
+
+class SharedGrammar:
+    """The reader of a world with no reading of its own: the shared grammar as it is."""
+
+    def own_reading(self, instruction: str) -> LanguageResult | None:
+        return None
+
+    def prepared(self, instruction: str) -> str:
+        return instruction
+
+    def reread(self, instruction: str, backend: str) -> LanguageResult | None:
+        return None
+
+    def refusal(self, refused: Exception, instruction: str) -> Exception:
+        return refused
+
+    def doubted(self, res: LanguageResult, backend: str) -> LanguageResult:
+        return res
+
+    def unused(self, res: LanguageResult) -> list[Unread]:
+        return []
+
+
+class _HandoverReader(SharedGrammar):
+    """The four-arm handover worlds read every instruction themselves (`handover_reading`)."""
+
+    def __init__(self, world: World) -> None:
+        self.world = world
+
+    def own_reading(self, instruction: str) -> LanguageResult | None:
+        from nl2hltl2plan.language.handover_reading import translate_handover
+
+        return translate_handover(instruction, self.world)
+
+
+def _tabletop_reader(world: World) -> WorldReader:
+    from nl2hltl2plan.language.tabletop_pairs import TabletopReader
+
+    return TabletopReader(world)
+
+
+# World.kind -> its reader; a kind not listed reads with the shared grammar alone
+_READERS: dict[str, Callable[[World], WorldReader]] = {
+    "handover": _HandoverReader,
+    "tabletop": _tabletop_reader,
+}
+
+
+def world_reader(world: object) -> WorldReader:
+    """The reader of `world` (a `World`, or a scene known only by its types: the shared grammar)."""
+    if isinstance(world, World) and world.kind in _READERS:
+        return _READERS[world.kind](world)
+    return SharedGrammar()
