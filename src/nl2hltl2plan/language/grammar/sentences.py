@@ -34,9 +34,11 @@ class Sentence:
 class RelationSentence:
     """ "The red block should be placed before the blue block": an order between tasks named by objects."""
 
-    kind: str  # "before" or "after"; "first" / "last": `a` before / after every other task (`b` empty)
+    kind: str  # "before" or "after"; "first" / "last": `a` before / after every other task (`b` empty);
+    # "in_order" / "in_reverse": the tasks stated before sentence `sentence` ("Do them in that order.")
     a: str
     b: str
+    sentence: int = -1
 
 
 @dataclass
@@ -61,6 +63,9 @@ def read_sentences(text: str) -> Sentences:
         body = body.strip(" ,")
         if not body:
             continue
+        if _DO_THEM.match(body) and [kind for kind, _ in trailing] in ([G.IN_ORDER], [G.IN_REVERSE]):
+            out.relations.append(RelationSentence(trailing[0][0], "", "", index))
+            continue
         rel = relation_sentence(body)
         if rel is not None:
             out.relations.append(rel)
@@ -69,6 +74,14 @@ def read_sentences(text: str) -> Sentences:
             continue
         out.sentences.append(Sentence(index, sentence, start, body, markers, trailing))
     return out
+
+
+# "Do them in that order.": a sentence whose order is about the tasks stated before it
+_DO_THEM = re.compile(
+    r"^(?:(?:please|now)\s+)?(?:do|perform|complete|handle|carry\s+out)\s+(?:them|these|those|it\s+all|"
+    r"all\s+of\s+(?:them|these|those|it)|everything|the\s+(?:tasks|steps|jobs))(?:\s+please)?$",
+    re.IGNORECASE,
+)
 
 
 def strip_leading(body: str) -> tuple[list[tuple[str, str]], str]:
@@ -111,14 +124,37 @@ def strip_trailing(body: str) -> tuple[list[tuple[str, str]], str]:
                 continue
             if m and m.start() > 0:
                 if kind == "ref":
-                    rel = m.group("rel").lower()
-                    trailing.append((G.BEFORE_REF if rel == "before" else G.AFTER_REF, m.group("ref")))
+                    trailing += _trailing_refs(m.group("rel"), m.group("ref"))
                 elif kind:  # a courtesy ("cheers") has no kind: only dropped
                     trailing.append((kind, ""))
                 body = body[: m.start()]
                 changed = True
                 break
     return trailing, body
+
+
+# "Y before X, but after Z" / "Y after X and before Z": a second connective after the first reference opens
+# a reference of its own, about the same main clause Y (not about X, the nearer clause)
+_NEXT_REF = re.compile(
+    r"\s*,?\s+(?:but|and|yet)\s+(?:(?:only|right|just|immediately)\s+)?"
+    r"(?P<rel>after|before|once|prior\s+to|following)\s+(?=\S)",
+    re.I,
+)
+
+
+def _trailing_refs(rel: str, ref: str) -> list[tuple[str, str]]:
+    """The trailing references of one main clause: "before you put the egg in the fridge, but after the
+    tomato goes in the sink" -> a BEFORE_REF and an AFTER_REF, each for the clause the sentence states."""
+    out: list[tuple[str, str]] = []
+    for part in reversed(list(_NEXT_REF.finditer(ref))):
+        out.append((_ref_kind(part["rel"]), ref[part.end() :]))
+        ref = ref[: part.start()]
+    return [(_ref_kind(rel), ref), *reversed(out)]
+
+
+def _ref_kind(rel: str) -> str:
+    """The marker of a connective: "before" / "prior to" -> BEFORE_REF; "after" / "once" -> AFTER_REF."""
+    return G.BEFORE_REF if rel.lower().split()[0] in {"before", "prior"} else G.AFTER_REF
 
 
 def relation_sentence(body: str) -> RelationSentence | None:
@@ -321,6 +357,13 @@ _THEN_INSIDE = re.compile(
     r")\s*,?\s+(?=[a-z])",
     re.IGNORECASE,
 )
+# "A. B. Do these in either order, then C": C after all of them (the sentence ends at the free order)
+_FREED_THEN = re.compile(
+    r"\b((?:do|handle|complete|finish)\s+(?:these|those|them|both(?:\s+of\s+them)?|all\s+of\s+(?:them|these|those)|"
+    r"the\s+(?:two|three|four)(?:\s+(?:tasks|things|jobs))?)\s+in\s+(?:any|either|whatever)\s+order)\s*,?\s+"
+    r"(?:and\s+)?(?:then|after\s+that|afterwards?)\s*,?\s+(?=[a-z])",
+    re.IGNORECASE,
+)
 # "Y when you're done putting X in A", "Y when done heating it": what is done is named, a reference ("Y
 # after putting X in A")
 _DONE_GERUND = re.compile(
@@ -344,6 +387,52 @@ _STATES_JOINED = re.compile(
     rf"\b((?:a|an|the|some|two|put|place|set|move|bring|take)\s+(?:{_STATE_ALT}))\s+and\s+"
     rf"(?=(?:{_STATE_ALT}|dried)\s+[a-z])",
     re.IGNORECASE,
+)
+
+
+# "put X in A, and once the mug is done put Y in B" / "..., and before you put Z in C put Y in B": a
+# subordinate clause inside a sentence that opens the next main clause; it starts a sentence of its own
+# ("Once the mug is done, put Y in B."), which the leading references read
+_AND_SUBORDINATE = re.compile(r"(?<=\w)\s*,?\s+and\s+(?=(?:once|after|before|when)\s)", re.IGNORECASE)
+# words after which a verb is the subordinate clause's own ("after you put ...", "once it is put ...")
+_SUBJECT_OR_AUX = frozenset(
+    {"you", "we", "i", "it", "they", "to", "is", "are", "was", "were", "be", "been", "has", "have", "had",
+     "and", "or", "then", "that", "this", "not"}
+)
+
+
+def _subordinate_first(text: str) -> str:
+    """ "X, and once the mug is done put Y" -> "X. Once the mug is done, put Y" (see above), where a main
+    clause (an imperative verb, not the subordinate clause's own) follows the subordinate clause before the
+    sentence ends."""
+    out, pos = [], 0
+    for m in _AND_SUBORDINATE.finditer(text):
+        end = re.search(r"[.;!?]|$", text[m.end() :])
+        words = tokens(text[m.end() : m.end() + (end.start() if end else 0)])
+        main = next(
+            (w for k, w in enumerate(words[2:], 2)
+             if w[0] in G.VERBS and G.VERBS[w[0]][1] == w[0] and words[k - 1][0] not in _SUBJECT_OR_AUX),
+            None,
+        )
+        if main is None or words[1][0] in {"that", "this", "it", "everything", "all", "both"}:
+            continue
+        sub_end = m.end() + main[1]
+        sub = text[m.end() : sub_end].rstrip(" ,")
+        out.append(f"{text[pos : m.start()]}. {sub[0].upper()}{sub[1:]}, ")
+        pos = sub_end
+    return "".join(out) + text[pos:]
+
+
+# "put the egg in the fridge and the apple in the fridge, the egg before the apple" / "..., but do the egg
+# first": an order between tasks named by their objects, closing a sentence, is a sentence of its own (a
+# relation sentence, `relation_sentence` / `first_last_sentence`)
+_NP_WORDS = r"(?:the|that|this)\s+[a-z]+(?:\s+[a-z]+)?"
+_CLOSING_RELATION = re.compile(
+    rf",\s+(?:but\s+)?(?P<a>{_NP_WORDS})\s+(?P<rel>before|after)\s+(?P<b>{_NP_WORDS})\s*(?=[.;!?]|$)",
+    re.IGNORECASE,
+)
+_CLOSING_FIRST = re.compile(
+    rf",\s+(?:but\s+)?(?P<s>(?:(?:do|handle)\s+)?{_NP_WORDS}\s+(?:first|last))\s*(?=[.;!?]|$)", re.IGNORECASE
 )
 
 
@@ -388,11 +477,16 @@ def normalize(text: str) -> str:
     text = _USE_LAMP.sub(lambda m: f"{m['verb']} {m['obj']} by the light of the {m['lamp']}", text)
     text = _FOLLOWED_TO.sub(r" and finally \1", text)
     text = _LAST_ADVERB.sub(r"\1lastly ", text)
+    text = re.sub(r";\s+(?=and\s)", ", ", text)  # "Next, D; and E": E goes with D, a sentence goes on
     text = _ONE_AFTER_THE_OTHER.sub(", in that order", text)
     text = treated_before(text)  # before `_DONE_GERUND`: "when done heating it" is no reference
     text = _DONE_GERUND.sub(r"\1 ", text)
+    text = _FREED_THEN.sub(r"\1. Once all that is done, ", text)
     text = _THEN_INSIDE.sub(", then ", text)
     text = _DONE_WITH.sub(lambda m: _as_cased("after ", m[1]), text)
+    text = _subordinate_first(text)
+    text = _CLOSING_RELATION.sub(lambda m: f". {m['a']} should be done {m['rel']} {m['b']}", text)
+    text = _CLOSING_FIRST.sub(lambda m: f". {m['s']}", text)
     return supply_put(re.sub(r"\s+", " ", text).strip())
 
 
