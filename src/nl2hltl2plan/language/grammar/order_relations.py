@@ -33,6 +33,9 @@ def relate(
     """The `before` pairs (task ids, which this step assigns). A reference that names no task but states one
     ("after picking up the box") adds that task to `tasks`; what cannot be resolved goes to `b.unparsed`."""
     edges: Edges = set()
+    for spec in tasks.specs:  # "put the potato in the microwave last and the apple in the fridge first"
+        if left := _ORDER_WORD_LEFT.search(spec.text):
+            b.unparsed.append(f"{spec.text!r} ({left[1]!r}: an order word inside a clause, not read)")
     free = {t for u in tasks.units if any(kind == G.FREE for kind, _ in u.markers) for t in u.tasks}
     steps = sentence_steps(tasks.units)
     # "A and B in any order, and finally C": "finally" comes after no task whose order is left open
@@ -44,6 +47,10 @@ def relate(
     _first_edges(tasks.units, steps, free, edges)
     _sentence_edges(relations, tasks, b, edges)
     return _order(edges, tasks)
+
+
+# an order adverb that ends a task's own words: no marker read it
+_ORDER_WORD_LEFT = re.compile(r"\b(first|last|lastly|finally|next|afterwards?|beforehand)\W*$", re.I)
 
 
 def _marker_edges(

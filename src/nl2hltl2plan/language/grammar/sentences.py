@@ -7,6 +7,14 @@ from dataclasses import dataclass, field
 
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.everyday import everyday
+from nl2hltl2plan.language.grammar.order_phrases import (
+    after_the_step,
+    clause_refs,
+    closing_orders,
+    not_before_as_after,
+    not_one_reference,
+    subordinate_first,
+)
 from nl2hltl2plan.language.grammar.phrases import match_prep, parse_np, tokens
 from nl2hltl2plan.language.grammar.subordinate import treated_before, treatment_of_it
 from nl2hltl2plan.language.grounding import find_mentions, sentence_start
@@ -92,7 +100,7 @@ def strip_leading(body: str) -> tuple[list[tuple[str, str]], str]:
         changed = False
         split = after_ref(body)
         if split is not None:
-            markers.append((G.AFTER_REF, split[0]))
+            markers += clause_refs("after", split[0])
             body = split[1]
             changed = True
             continue
@@ -100,7 +108,9 @@ def strip_leading(body: str) -> tuple[list[tuple[str, str]], str]:
             m = pat.match(body)
             if m and m.end() > 0:
                 ref = m.groupdict().get("ref") or (m.group(0) if kind == G.AFTER_ALL else "")
-                if kind:
+                if kind in (G.AFTER_REF, G.BEFORE_REF):  # "After X and before Y, Z": both about Z
+                    markers += clause_refs("after" if kind == G.AFTER_REF else "before", ref)
+                elif kind:
                     markers.append((kind, ref))
                 body = body[m.end() :]
                 changed = True
@@ -116,15 +126,16 @@ def strip_trailing(body: str) -> tuple[list[tuple[str, str]], str]:
         changed = False
         for pat, kind in G.TRAILING:
             m = pat.search(body)
-            # "Y after X-ing Z, and then W": the reference ends before "then" (no trailing reference)
-            if m and kind == "ref" and re.search(r"\bthen\b", m.group("ref"), re.I):
+            # "Y after X-ing Z, and then W": the reference ends before "then" (no trailing reference); "Y
+            # after X, and W after Z": a clause of its own with its own reference follows (none either)
+            if m and kind == "ref" and not_one_reference(m["ref"]):
                 continue
             # "Y after heating it in the microwave": the treatment of Y's own object, no reference
             if m and kind == "ref" and m.group("rel").lower() == "after" and treatment_of_it(m.group("ref")):
                 continue
             if m and m.start() > 0:
                 if kind == "ref":
-                    trailing += _trailing_refs(m.group("rel"), m.group("ref"))
+                    trailing += clause_refs(m.group("rel"), m.group("ref"))
                 elif kind:  # a courtesy ("cheers") has no kind: only dropped
                     trailing.append((kind, ""))
                 body = body[: m.start()]
@@ -133,32 +144,19 @@ def strip_trailing(body: str) -> tuple[list[tuple[str, str]], str]:
     return trailing, body
 
 
-# "Y before X, but after Z" / "Y after X and before Z": a second connective after the first reference opens
-# a reference of its own, about the same main clause Y (not about X, the nearer clause)
-_NEXT_REF = re.compile(
-    r"\s*,?\s+(?:but|and|yet)\s+(?:(?:only|right|just|immediately)\s+)?"
-    r"(?P<rel>after|before|once|prior\s+to|following)\s+(?=\S)",
-    re.I,
+# "Do the candle before the soap.": an order between the tasks of two named objects
+_DO_BEFORE = re.compile(
+    r"^(?:please\s+)?(?:do|handle)\s+(?P<a>(?:the|that|this)\s+[a-z]+(?:\s+[a-z]+)?)\s+(?P<rel>before|after)\s+"
+    r"(?P<b>(?:the|that|this)\s+[a-z]+(?:\s+[a-z]+)?)$",
+    re.IGNORECASE,
 )
 
 
-def _trailing_refs(rel: str, ref: str) -> list[tuple[str, str]]:
-    """The trailing references of one main clause: "before you put the egg in the fridge, but after the
-    tomato goes in the sink" -> a BEFORE_REF and an AFTER_REF, each for the clause the sentence states."""
-    out: list[tuple[str, str]] = []
-    for part in reversed(list(_NEXT_REF.finditer(ref))):
-        out.append((_ref_kind(part["rel"]), ref[part.end() :]))
-        ref = ref[: part.start()]
-    return [(_ref_kind(rel), ref), *reversed(out)]
-
-
-def _ref_kind(rel: str) -> str:
-    """The marker of a connective: "before" / "prior to" -> BEFORE_REF; "after" / "once" -> AFTER_REF."""
-    return G.BEFORE_REF if rel.lower().split()[0] in {"before", "prior"} else G.AFTER_REF
-
-
 def relation_sentence(body: str) -> RelationSentence | None:
-    """ "The red block should be placed before the blue block" (a sentence that starts with no verb)."""
+    """ "The red block should be placed before the blue block" (a sentence that starts with no verb), "Do the
+    candle before the soap"."""
+    if one := _DO_BEFORE.match(body):
+        return RelationSentence(one["rel"].lower(), one["a"], one["b"])
     rel = G.REL_SENTENCE.match(body)
     if rel and not any(w in G.VERBS for w, _, _ in tokens(rel.group("a"))[:1]):
         return RelationSentence(rel.group("rel").lower(), rel.group("a"), rel.group("b"))
@@ -353,15 +351,8 @@ _THEN_INSIDE = re.compile(
     r"(?:once|when|after)\s+(?:that's|that\s+is|it's|it\s+is|this\s+is|you're|you\s+are|you\s+have)?"
     r"\s*(?:done|finished|through|there|in\s+place|handled|taken\s+care\s+of|out\s+of\s+the\s+way)"
     r"(?:\s+with\s+(?:that|it|this))?"
-    r"|after\s+(?:that|this)|afterwards?|following\s+that"
+    r"|after\s+(?:that|this)|afterwards?|following\s+that|only\s+then"
     r")\s*,?\s+(?=[a-z])",
-    re.IGNORECASE,
-)
-# "A. B. Do these in either order, then C": C after all of them (the sentence ends at the free order)
-_FREED_THEN = re.compile(
-    r"\b((?:do|handle|complete|finish)\s+(?:these|those|them|both(?:\s+of\s+them)?|all\s+of\s+(?:them|these|those)|"
-    r"the\s+(?:two|three|four)(?:\s+(?:tasks|things|jobs))?)\s+in\s+(?:any|either|whatever)\s+order)\s*,?\s+"
-    r"(?:and\s+)?(?:then|after\s+that|afterwards?)\s*,?\s+(?=[a-z])",
     re.IGNORECASE,
 )
 # "Y when you're done putting X in A", "Y when done heating it": what is done is named, a reference ("Y
@@ -390,52 +381,6 @@ _STATES_JOINED = re.compile(
 )
 
 
-# "put X in A, and once the mug is done put Y in B" / "..., and before you put Z in C put Y in B": a
-# subordinate clause inside a sentence that opens the next main clause; it starts a sentence of its own
-# ("Once the mug is done, put Y in B."), which the leading references read
-_AND_SUBORDINATE = re.compile(r"(?<=\w)\s*,?\s+and\s+(?=(?:once|after|before|when)\s)", re.IGNORECASE)
-# words after which a verb is the subordinate clause's own ("after you put ...", "once it is put ...")
-_SUBJECT_OR_AUX = frozenset(
-    {"you", "we", "i", "it", "they", "to", "is", "are", "was", "were", "be", "been", "has", "have", "had",
-     "and", "or", "then", "that", "this", "not"}
-)
-
-
-def _subordinate_first(text: str) -> str:
-    """ "X, and once the mug is done put Y" -> "X. Once the mug is done, put Y" (see above), where a main
-    clause (an imperative verb, not the subordinate clause's own) follows the subordinate clause before the
-    sentence ends."""
-    out, pos = [], 0
-    for m in _AND_SUBORDINATE.finditer(text):
-        end = re.search(r"[.;!?]|$", text[m.end() :])
-        words = tokens(text[m.end() : m.end() + (end.start() if end else 0)])
-        main = next(
-            (w for k, w in enumerate(words[2:], 2)
-             if w[0] in G.VERBS and G.VERBS[w[0]][1] == w[0] and words[k - 1][0] not in _SUBJECT_OR_AUX),
-            None,
-        )
-        if main is None or words[1][0] in {"that", "this", "it", "everything", "all", "both"}:
-            continue
-        sub_end = m.end() + main[1]
-        sub = text[m.end() : sub_end].rstrip(" ,")
-        out.append(f"{text[pos : m.start()]}. {sub[0].upper()}{sub[1:]}, ")
-        pos = sub_end
-    return "".join(out) + text[pos:]
-
-
-# "put the egg in the fridge and the apple in the fridge, the egg before the apple" / "..., but do the egg
-# first": an order between tasks named by their objects, closing a sentence, is a sentence of its own (a
-# relation sentence, `relation_sentence` / `first_last_sentence`)
-_NP_WORDS = r"(?:the|that|this)\s+[a-z]+(?:\s+[a-z]+)?"
-_CLOSING_RELATION = re.compile(
-    rf",\s+(?:but\s+)?(?P<a>{_NP_WORDS})\s+(?P<rel>before|after)\s+(?P<b>{_NP_WORDS})\s*(?=[.;!?]|$)",
-    re.IGNORECASE,
-)
-_CLOSING_FIRST = re.compile(
-    rf",\s+(?:but\s+)?(?P<s>(?:(?:do|handle)\s+)?{_NP_WORDS}\s+(?:first|last))\s*(?=[.;!?]|$)", re.IGNORECASE
-)
-
-
 def _as_cased(word: str, replaced: str) -> str:
     """`word` with a capital where the words it replaces start with one (the start of a sentence)."""
     return word.capitalize() if replaced[:1].isupper() else word
@@ -461,6 +406,7 @@ def normalize(text: str) -> str:
     text = _ONLY_AFTER_SHOULD.sub(lambda m: f"{_as_cased('after', m[0])} {m[2]}, ", text)
     # "Do not Y until (you) X" states the order of "After X, Y" (ANNOTATION_GUIDE.md)
     text = _UNTIL.sub(lambda m: f"{_as_cased('after', m[1])} {m[3]}, {m[2]}", text)
+    text = not_before_as_after(text)
     text = _NOT_BEFORE.sub(", but only after ", text)
     text = _STATES_LISTED.sub(r"\1 ", text)  # "a chilled, cut slice": one noun phrase, not two clauses
     text = _STATES_JOINED.sub(r"\1 ", text)
@@ -481,12 +427,10 @@ def normalize(text: str) -> str:
     text = _ONE_AFTER_THE_OTHER.sub(", in that order", text)
     text = treated_before(text)  # before `_DONE_GERUND`: "when done heating it" is no reference
     text = _DONE_GERUND.sub(r"\1 ", text)
-    text = _FREED_THEN.sub(r"\1. Once all that is done, ", text)
+    text = after_the_step(text)
     text = _THEN_INSIDE.sub(", then ", text)
     text = _DONE_WITH.sub(lambda m: _as_cased("after ", m[1]), text)
-    text = _subordinate_first(text)
-    text = _CLOSING_RELATION.sub(lambda m: f". {m['a']} should be done {m['rel']} {m['b']}", text)
-    text = _CLOSING_FIRST.sub(lambda m: f". {m['s']}", text)
+    text = closing_orders(subordinate_first(text))
     return supply_put(re.sub(r"\s+", " ", text).strip())
 
 
