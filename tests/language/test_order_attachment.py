@@ -146,3 +146,61 @@ def test_in_that_order_orders_every_task_named(text):
 def test_a_closing_order_between_named_tasks(text):
     tasks, order, unread = read(text)
     assert sorted(tasks) == sorted([SINK_EGG, APPLE]) and order == {(APPLE, SINK_EGG)} and not unread
+
+
+# ----- negated orders, leading compound references, "only then", "after those two" ---------------------
+def test_do_not_put_before_is_after():
+    _, order, unread = read("do not put the egg in the fridge before the apple is in the fridge")
+    assert order == {(APPLE, EGG)} and not unread
+
+
+def test_two_leading_references_are_both_about_the_clause():
+    _, order, unread = read(
+        "after you put the mug in the sink and before you put the egg in the fridge, put the apple in the "
+        "fridge"
+    )
+    assert order == chain(MUG, APPLE, EGG) and not unread
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "put the apple in the fridge, then, after putting the egg in the sink, put the fork in a drawer",
+        "put the apple in the fridge, and then after putting the egg in the sink put the fork in a drawer",
+    ],
+)
+def test_then_before_a_reference_keeps_its_then(text):
+    _, order, unread = read(text)
+    assert order == {(APPLE, FORK), (SINK_EGG, FORK)} and not unread
+
+
+@pytest.mark.parametrize(
+    ("text", "order"),
+    [
+        ("put the apple in the fridge, and only then put the fork in a drawer", {(APPLE, FORK)}),
+        (
+            "put the apple in the fridge, then the egg in the sink, and after those two the fork in a "
+            "drawer",
+            chain(APPLE, SINK_EGG, FORK),
+        ),
+        (
+            "put the apple in the fridge and put the egg in the sink, and once both are done put the fork "
+            "in a drawer",
+            {(APPLE, FORK), (SINK_EGG, FORK)},
+        ),
+        (
+            "put the egg in the sink and put the apple in the fridge. Do the apple before the egg.",
+            {(APPLE, SINK_EGG)},
+        ),
+    ],
+)
+def test_more_ways_to_say_then(text, order):
+    _, got, unread = read(text)
+    assert got == order and not unread
+
+
+def test_an_order_word_left_inside_a_clause_is_unread():
+    _, _, unread = read(
+        "put the potato in the microwave last and the apple in the fridge first. put the egg in the sink"
+    )
+    assert any("'last'" in u for u in unread)

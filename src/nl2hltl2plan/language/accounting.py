@@ -546,6 +546,8 @@ def _count(
         return None
     if _both_before_a_list(w, instruction, start, m):
         return None
+    if i > 0 and toks[i - 1][0] in ("those", "these"):  # "after those two, the fork": tasks, not forks
+        return None
     types = set(m.entry.types)
     held = None
     if instances is not None:
