@@ -64,8 +64,8 @@ def count_unread(
     m = _next_mention(mentions, [t[0] for t in toks], i)
     if m is None or re.search(r"[,.;:!?]", instruction[start : m.char_start]):
         return None
-    if _both_before_a_list(w, instruction, start, m):
-        return None
+    if _both_before_a_list(w, instruction, start, m) or (i > 0 and toks[i - 1][0] in ("those", "these")):
+        return None  # "both the mug and the apple"; "after those two, the fork": tasks, not forks
     types = set(m.entry.types)
     held = None
     if instances is not None:

@@ -36,6 +36,11 @@ def _is_verb_at(words: list[tuple[str, int, int]], i: int) -> bool:
     return False
 
 
+def _ends_an_order(words: list[tuple[str, int, int]], j: int) -> bool:
+    """Is word `j` the "order" of "in any order" / "in either order" (the clause's own words, no joiner)?"""
+    return words[j][0] == "order" and j > 0 and words[j - 1][0] in {"any", "either", "whatever"}
+
+
 def split_clauses(sentence: str) -> list[tuple[str, int, int, str]]:
     """(clause text, start, end, joiner) for each verb clause of a sentence."""
     words = tokens(sentence)
@@ -44,7 +49,9 @@ def split_clauses(sentence: str) -> list[tuple[str, int, int, str]]:
         if _is_verb_at(words, i):
             j = i - 1
             joiner = ""
-            while j >= 0 and (words[j][0] == "," or words[j][0] in G.CLAUSE_JOINERS):
+            while j >= 0 and (words[j][0] in G.CLAUSE_JOINERS or words[j][0] == ",") and not _ends_an_order(
+                words, j
+            ):
                 if words[j][0] in G.SEQ_JOINERS and not (joiner and G.SEQ_JOINERS[words[j][0]] == "first"):
                     # "X first and then Y": "first" ends the clause before, "then" joins this one
                     joiner = G.SEQ_JOINERS[words[j][0]]

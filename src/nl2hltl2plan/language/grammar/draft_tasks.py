@@ -50,6 +50,7 @@ class Unit:
     sentence: int
     markers: list[tuple[str, str]] = field(default_factory=list)  # (kind, ref text)
     seq_after_prev: bool = False  # joined to the previous clause by "then" inside a sentence
+    joiner: str = ""  # the word that joins it to the clause before ("and", "then"; "" for a comma alone)
 
 
 @dataclass

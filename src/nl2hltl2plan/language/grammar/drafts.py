@@ -113,7 +113,7 @@ class DraftBuilder:
         group = self._group_of(clause, fr, st)
         new_tasks = [t for it in fr.items if (t := self._add_item(fr, it, clause, joiner, group, st)) >= 0]
         if new_tasks:
-            unit = Unit(tasks=new_tasks, sentence=st.sentence.index)
+            unit = Unit(tasks=new_tasks, sentence=st.sentence.index, joiner=joiner)
             if joiner == "then" and st.prev_clause_tasks:
                 unit.seq_after_prev = True
             if joiner == "first":

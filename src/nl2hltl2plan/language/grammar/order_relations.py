@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import re
 
+import networkx as nx
+
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.draft_tasks import TaskBuilder, Tasks, Unit
@@ -31,20 +33,35 @@ def relate(
     """The `before` pairs (task ids, which this step assigns). A reference that names no task but states one
     ("after picking up the box") adds that task to `tasks`; what cannot be resolved goes to `b.unparsed`."""
     edges: Edges = set()
+    for spec in tasks.specs:  # "put the potato in the microwave last and the apple in the fridge first"
+        if left := _ORDER_WORD_LEFT.search(spec.text):
+            b.unparsed.append(f"{spec.text!r} ({left[1]!r}: an order word inside a clause, not read)")
     free = {t for u in tasks.units if any(kind == G.FREE for kind, _ in u.markers) for t in u.tasks}
+    steps = sentence_steps(tasks.units)
+    # "A and B in any order, and finally C": "finally" comes after no task whose order is left open
+    # (ANNOTATION_GUIDE.md), as with "A and B in any order. Finally C."
+    loose = free | _any_order_steps(tasks, steps)
     for k in range(len(tasks.units)):
-        _marker_edges(k, tasks, free, b, text, edges)
-    _first_edges(tasks.units, free, edges)
+        _marker_edges(k, tasks, (free, loose), b, text, edges)
+        _step_edges(k, tasks, steps, free, edges)
+    _first_edges(tasks.units, steps, free, edges)
     _sentence_edges(relations, tasks, b, edges)
     return _order(edges, tasks)
 
 
-def _marker_edges(k: int, tasks: Tasks, free: set[int], b: TaskBuilder, text: str, edges: Edges) -> None:
-    """The edges that the markers of unit `k` state ("Then", "Finally", "after all that", "before that")."""
+# an order adverb that ends a task's own words: no marker read it
+_ORDER_WORD_LEFT = re.compile(r"\b(first|last|lastly|finally|next|afterwards?|beforehand)\W*$", re.I)
+
+
+def _marker_edges(
+    k: int, tasks: Tasks, frees: tuple[set[int], set[int]], b: TaskBuilder, text: str, edges: Edges
+) -> None:
+    """The edges that the markers of unit `k` state ("Then", "Finally", "after all that", "before that");
+    `frees`: the tasks allowed at any time, and those with the tasks whose order is left open."""
+    free, loose = frees
     units = tasks.units
     u = units[k]
     prev = units[k - 1] if k > 0 else None
-    seq_prev = prev
     # sentence markers refer to the clause before the sentence, not to a sibling clause of the sentence
     cands = [v for v in units[:k] if v.sentence != u.sentence]
     outer = cands[-1] if cands else None  # the clause before the sentence
@@ -60,7 +77,7 @@ def _marker_edges(k: int, tasks: Tasks, free: set[int], b: TaskBuilder, text: st
         elif kind == G.FINALLY:
             # "..., and finally Y" inside a sentence: after its sibling clauses too
             scope = list(range(min(u.tasks))) if ref == IN_SENTENCE else others if ref == OF_ALL else earlier
-            edges.update((a, b2) for a in scope if a not in free for b2 in u.tasks)
+            edges.update((a, b2) for a in scope if a not in loose for b2 in u.tasks)
         elif kind == G.AFTER_ALL:  # "once all that is done" / "once everything else is done" (all others)
             scope = others if _names_the_others(ref) else earlier
             edges.update((a, b2) for a in scope for b2 in u.tasks)
@@ -75,10 +92,76 @@ def _marker_edges(k: int, tasks: Tasks, free: set[int], b: TaskBuilder, text: st
             edges.update(pairs if kind == G.IN_ORDER else ((b2, a) for a, b2 in pairs))
         elif kind == G.AFTER_REF and (named := by_position(ref, earlier, prev, others)) is not None:
             edges.update((a, b2) for a in named for b2 in u.tasks)
+        elif kind == G.BEFORE_REF and (named := by_position(ref, earlier, prev, others)) is not None:
+            edges.update((b2, a) for a in named for b2 in u.tasks)  # "Before all that, Y"
         elif kind in {G.AFTER_REF, G.BEFORE_REF}:
             _ref_edges(kind == G.AFTER_REF, ref, u, tasks, b, text, edges)
-    if u.seq_after_prev and seq_prev is not None:
-        edges.update((a, b2) for a in seq_prev.tasks for b2 in u.tasks)
+
+
+def sentence_steps(units: list[Unit]) -> list[int]:
+    """The step of each unit. Every sentence opens a step, and so does a clause joined to the one before by
+    "then" ("..., then", "and once that's done", "and finally"): "A and B, then C and D" is the steps {A, B}
+    and {C, D}, so C and D come after both A and B, as in "A and B. Then C and D.". Before such a "then",
+    clauses joined by a comma alone are steps of their own: "A, B, then C" is a sequence, "A, B and C, then
+    D" a list ("and" closes it)."""
+    said = [k == 0 or u.sentence != units[k - 1].sentence or _follows_a_step(u) for k, u in enumerate(units)]
+    opens = list(said)
+    for k, u in enumerate(units):
+        nxt = next((j for j in range(k + 1, len(units)) if said[j]), len(units))
+        if (
+            not said[k]
+            and not u.joiner
+            and nxt < len(units)
+            and units[nxt].sentence == u.sentence
+            and not any(units[j].joiner for j in range(k + 1, nxt))
+        ):
+            opens[k] = True
+    out: list[int] = []
+    for k in range(len(units)):
+        out.append(out[-1] + 1 if out and opens[k] else out[-1] if out else 0)
+    return out
+
+
+def _follows_a_step(u: Unit) -> bool:
+    """Is the unit joined to the clauses before it in its sentence by "then" or "finally"?"""
+    return u.seq_after_prev or (G.FINALLY, IN_SENTENCE) in u.markers
+
+
+def _step_edges(k: int, tasks: Tasks, steps: list[int], free: set[int], edges: Edges) -> None:
+    """ "A and B, then C": unit `k` after the step before its own, inside one sentence: after every task of
+    that step that no word lets happen at any time ("A at any time and B, then C": after B; after the
+    last clause when every task is so and "then" joins them)."""
+    units, u, step = tasks.units, tasks.units[k], steps[k]
+    opener = steps.index(step)
+    if opener == 0 or units[opener - 1].sentence != u.sentence:  # the sentence's first step
+        return
+    if (G.FINALLY, IN_SENTENCE) in units[opener].markers:  # "finally" states its own order
+        return
+    if k != opener and any(t in free for t in u.tasks):  # "A, then B, and C at any time"
+        return
+    before = [t for j in range(opener) if steps[j] == step - 1 for t in units[j].tasks]
+    after = [t for t in before if t not in free and not _ANY_TIME.search(tasks.specs[t].text)]
+    if not after and units[opener].seq_after_prev:  # "A at any time, then B": after A all the same
+        after = units[opener - 1].tasks
+    edges.update((a, b2) for a in after for b2 in u.tasks)
+
+
+def _any_order_steps(tasks: Tasks, steps: list[int]) -> set[int]:
+    """The tasks of the steps whose words leave their order open ("A, and B in any order, and ...")."""
+    units = tasks.units
+    open_steps = {
+        steps[k] for k, u in enumerate(units) if any(_ANY_ORDER.search(tasks.specs[t].text) for t in u.tasks)
+    }
+    return {t for k, u in enumerate(units) if steps[k] in open_steps for t in u.tasks}
+
+
+_ANY_ORDER = re.compile(r"\b(?:any|either|whatever|no\s+particular)\s+order\b", re.I)
+# words that let one task happen at any time ("in any order" frees an order, not a task)
+_ANY_TIME = re.compile(
+    r"\b(?:(?:any|whatever)\s+(?:time|point)|anytime|whenever|meanwhile|simultaneously|parallel|independently|"
+    r"at\s+(?:some|your)\s+(?:point|convenience|leisure))\b",
+    re.I,
+)
 
 
 # a word that may free a task of its sentence; "any" and "whatever" only before a time or an order ("put
@@ -176,23 +259,35 @@ def _add_ref_tasks(new: list[BaseTaskSpec], after: bool, u: Unit, tasks: Tasks, 
         edges.update((t, b2) if after else (b2, t) for b2 in u.tasks)
 
 
-def _first_edges(units: list[Unit], free: set[int], edges: Edges) -> None:
-    """ "First X" with no sequencing word right after: X before every later task not allowed at any time."""
+def _first_edges(units: list[Unit], steps: list[int], free: set[int], edges: Edges) -> None:
+    """ "First X" with no sequencing word right after: X before every later task not allowed at any time,
+    and not stated before X ("First X. Before all that, Y": Y first). In a sentence of several steps it is
+    about the first step, and not before the other tasks of that step ("first A and B, then C": A and B
+    first, in any order; "first A, then B and C": B not before C)."""
+    stated = nx.transitive_closure(nx.DiGraph(list(edges)))
     for k, u in enumerate(units):
-        if any(kind == G.FIRST for kind, _ in u.markers):
-            nxt = units[k + 1] if k + 1 < len(units) else None
-            if nxt is not None and (
-                nxt.seq_after_prev
-                or any(kind in {G.THEN, G.AFTER_ALL, G.AFTER_REF} for kind, _ in nxt.markers)
-            ):
-                continue
-            later = [t for v in units[k + 1 :] for t in v.tasks if t not in free]
-            edges.update((a, b2) for a in u.tasks for b2 in later)
+        own = [steps[j] for j, v in enumerate(units) if v.sentence == u.sentence]  # its sentence's steps
+        if steps[k] != own[0] or not any(kind == G.FIRST for kind, _ in u.markers):
+            continue
+        nxt = units[k + 1] if k + 1 < len(units) else None
+        if nxt is not None and (
+            nxt.seq_after_prev or any(kind in {G.THEN, G.AFTER_ALL, G.AFTER_REF} for kind, _ in nxt.markers)
+        ):
+            continue
+        step = steps[k] if own[-1] != own[0] else -1
+        later = [t for j in range(k + 1, len(units)) if steps[j] != step for t in units[j].tasks]
+        later = [t for t in later if t not in free and not any(stated.has_edge(t, a) for a in u.tasks)]
+        edges.update((a, b2) for a in u.tasks for b2 in later)
 
 
 def _sentence_edges(relations: list[RelationSentence], tasks: Tasks, b: TaskBuilder, edges: Edges) -> None:
     """Relation sentences between objects ("the red block should be placed before the blue block")."""
     for rel in relations:
+        if rel.kind in (G.IN_ORDER, G.IN_REVERSE):  # "Do them in that order.": the tasks stated before
+            told = sorted(t for u in tasks.units if u.sentence < rel.sentence for t in u.tasks)
+            pairs = list(zip(told, told[1:], strict=False))
+            edges.update(pairs if rel.kind == G.IN_ORDER else ((b2, a) for a, b2 in pairs))
+            continue
         ta, _ = ref_targets(rel.a, tasks.specs, tasks.nps)
         if rel.kind in ("first", "last"):  # "Do the fork first.": the fork's task before every other one
             if not ta:

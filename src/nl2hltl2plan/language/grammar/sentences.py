@@ -7,6 +7,14 @@ from dataclasses import dataclass, field
 
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.everyday import everyday
+from nl2hltl2plan.language.grammar.order_phrases import (
+    after_the_step,
+    clause_refs,
+    closing_orders,
+    not_before_as_after,
+    not_one_reference,
+    subordinate_first,
+)
 from nl2hltl2plan.language.grammar.phrases import match_prep, parse_np, tokens
 from nl2hltl2plan.language.grammar.subordinate import treated_before, treatment_of_it
 from nl2hltl2plan.language.grounding import find_mentions, sentence_start
@@ -34,9 +42,11 @@ class Sentence:
 class RelationSentence:
     """ "The red block should be placed before the blue block": an order between tasks named by objects."""
 
-    kind: str  # "before" or "after"; "first" / "last": `a` before / after every other task (`b` empty)
+    kind: str  # "before" or "after"; "first" / "last": `a` before / after every other task (`b` empty);
+    # "in_order" / "in_reverse": the tasks stated before sentence `sentence` ("Do them in that order.")
     a: str
     b: str
+    sentence: int = -1
 
 
 @dataclass
@@ -61,6 +71,9 @@ def read_sentences(text: str) -> Sentences:
         body = body.strip(" ,")
         if not body:
             continue
+        if _DO_THEM.match(body) and [kind for kind, _ in trailing] in ([G.IN_ORDER], [G.IN_REVERSE]):
+            out.relations.append(RelationSentence(trailing[0][0], "", "", index))
+            continue
         rel = relation_sentence(body)
         if rel is not None:
             out.relations.append(rel)
@@ -71,6 +84,14 @@ def read_sentences(text: str) -> Sentences:
     return out
 
 
+# "Do them in that order.": a sentence whose order is about the tasks stated before it
+_DO_THEM = re.compile(
+    r"^(?:(?:please|now)\s+)?(?:do|perform|complete|handle|carry\s+out)\s+(?:them|these|those|it\s+all|"
+    r"all\s+of\s+(?:them|these|those|it)|everything|the\s+(?:tasks|steps|jobs))(?:\s+please)?$",
+    re.IGNORECASE,
+)
+
+
 def strip_leading(body: str) -> tuple[list[tuple[str, str]], str]:
     """Leading order markers ("Then,", "Finally,", "After placing the statue,", "First,") and the rest."""
     markers: list[tuple[str, str]] = []
@@ -79,7 +100,7 @@ def strip_leading(body: str) -> tuple[list[tuple[str, str]], str]:
         changed = False
         split = after_ref(body)
         if split is not None:
-            markers.append((G.AFTER_REF, split[0]))
+            markers += clause_refs("after", split[0])
             body = split[1]
             changed = True
             continue
@@ -87,7 +108,9 @@ def strip_leading(body: str) -> tuple[list[tuple[str, str]], str]:
             m = pat.match(body)
             if m and m.end() > 0:
                 ref = m.groupdict().get("ref") or (m.group(0) if kind == G.AFTER_ALL else "")
-                if kind:
+                if kind in (G.AFTER_REF, G.BEFORE_REF):  # "After X and before Y, Z": both about Z
+                    markers += clause_refs("after" if kind == G.AFTER_REF else "before", ref)
+                elif kind:
                     markers.append((kind, ref))
                 body = body[m.end() :]
                 changed = True
@@ -103,16 +126,16 @@ def strip_trailing(body: str) -> tuple[list[tuple[str, str]], str]:
         changed = False
         for pat, kind in G.TRAILING:
             m = pat.search(body)
-            # "Y after X-ing Z, and then W": the reference ends before "then" (no trailing reference)
-            if m and kind == "ref" and re.search(r"\bthen\b", m.group("ref"), re.I):
+            # "Y after X-ing Z, and then W": the reference ends before "then" (no trailing reference); "Y
+            # after X, and W after Z": a clause of its own with its own reference follows (none either)
+            if m and kind == "ref" and not_one_reference(m["ref"]):
                 continue
             # "Y after heating it in the microwave": the treatment of Y's own object, no reference
             if m and kind == "ref" and m.group("rel").lower() == "after" and treatment_of_it(m.group("ref")):
                 continue
             if m and m.start() > 0:
                 if kind == "ref":
-                    rel = m.group("rel").lower()
-                    trailing.append((G.BEFORE_REF if rel == "before" else G.AFTER_REF, m.group("ref")))
+                    trailing += clause_refs(m.group("rel"), m.group("ref"))
                 elif kind:  # a courtesy ("cheers") has no kind: only dropped
                     trailing.append((kind, ""))
                 body = body[: m.start()]
@@ -121,8 +144,19 @@ def strip_trailing(body: str) -> tuple[list[tuple[str, str]], str]:
     return trailing, body
 
 
+# "Do the candle before the soap.": an order between the tasks of two named objects
+_DO_BEFORE = re.compile(
+    r"^(?:please\s+)?(?:do|handle)\s+(?P<a>(?:the|that|this)\s+[a-z]+(?:\s+[a-z]+)?)\s+(?P<rel>before|after)\s+"
+    r"(?P<b>(?:the|that|this)\s+[a-z]+(?:\s+[a-z]+)?)$",
+    re.IGNORECASE,
+)
+
+
 def relation_sentence(body: str) -> RelationSentence | None:
-    """ "The red block should be placed before the blue block" (a sentence that starts with no verb)."""
+    """ "The red block should be placed before the blue block" (a sentence that starts with no verb), "Do the
+    candle before the soap"."""
+    if one := _DO_BEFORE.match(body):
+        return RelationSentence(one["rel"].lower(), one["a"], one["b"])
     rel = G.REL_SENTENCE.match(body)
     if rel and not any(w in G.VERBS for w, _, _ in tokens(rel.group("a"))[:1]):
         return RelationSentence(rel.group("rel").lower(), rel.group("a"), rel.group("b"))
@@ -317,7 +351,7 @@ _THEN_INSIDE = re.compile(
     r"(?:once|when|after)\s+(?:that's|that\s+is|it's|it\s+is|this\s+is|you're|you\s+are|you\s+have)?"
     r"\s*(?:done|finished|through|there|in\s+place|handled|taken\s+care\s+of|out\s+of\s+the\s+way)"
     r"(?:\s+with\s+(?:that|it|this))?"
-    r"|after\s+(?:that|this)|afterwards?|following\s+that"
+    r"|after\s+(?:that|this)|afterwards?|following\s+that|only\s+then"
     r")\s*,?\s+(?=[a-z])",
     re.IGNORECASE,
 )
@@ -372,6 +406,7 @@ def normalize(text: str) -> str:
     text = _ONLY_AFTER_SHOULD.sub(lambda m: f"{_as_cased('after', m[0])} {m[2]}, ", text)
     # "Do not Y until (you) X" states the order of "After X, Y" (ANNOTATION_GUIDE.md)
     text = _UNTIL.sub(lambda m: f"{_as_cased('after', m[1])} {m[3]}, {m[2]}", text)
+    text = not_before_as_after(text)
     text = _NOT_BEFORE.sub(", but only after ", text)
     text = _STATES_LISTED.sub(r"\1 ", text)  # "a chilled, cut slice": one noun phrase, not two clauses
     text = _STATES_JOINED.sub(r"\1 ", text)
@@ -388,11 +423,14 @@ def normalize(text: str) -> str:
     text = _USE_LAMP.sub(lambda m: f"{m['verb']} {m['obj']} by the light of the {m['lamp']}", text)
     text = _FOLLOWED_TO.sub(r" and finally \1", text)
     text = _LAST_ADVERB.sub(r"\1lastly ", text)
+    text = re.sub(r";\s+(?=and\s)", ", ", text)  # "Next, D; and E": E goes with D, a sentence goes on
     text = _ONE_AFTER_THE_OTHER.sub(", in that order", text)
     text = treated_before(text)  # before `_DONE_GERUND`: "when done heating it" is no reference
     text = _DONE_GERUND.sub(r"\1 ", text)
+    text = after_the_step(text)
     text = _THEN_INSIDE.sub(", then ", text)
     text = _DONE_WITH.sub(lambda m: _as_cased("after ", m[1]), text)
+    text = closing_orders(subordinate_first(text))
     return supply_put(re.sub(r"\s+", " ", text).strip())
 
 

@@ -554,7 +554,8 @@ TRAILING: list[tuple[re.Pattern[str], str]] = [
     (re.compile(r"\s*,?\s*(?:last|lastly|finally|at\s+the\s+end|in\s+the\s+end)\s*$", _F), FINALLY),
     (
         re.compile(
-            r"\s*,?\s*(?:(?:strictly|exactly|precisely)\s+)?(?:in\s+(?:that|this|the\s+same|the\s+given|the\s+listed)\s+(?:order|sequence)|"
+            r"\s*,?\s*(?:(?:strictly|exactly|precisely)\s+)?(?:in\s+(?:(?:strictly|exactly|precisely)\s+)?"
+            r"(?:that|this|the\s+same|the\s+given|the\s+listed)\s+(?:exact\s+)?(?:order|sequence)|"
             r"in\s+the\s+order\s+(?:given|listed|stated|named))(?:\s*,?\s*please)?\s*$",
             _F,
         ),

@@ -1,0 +1,145 @@
+"""Order phrasings rewritten onto the forms the sentence rules read (a step of `sentences.normalize`), and
+the references that several connectives after one clause state (`clause_refs`): which clause an order word
+is about (issue 23)."""
+
+from __future__ import annotations
+
+import re
+
+from nl2hltl2plan.language.grammar import word_tables as G
+from nl2hltl2plan.language.grammar.phrases import tokens
+from nl2hltl2plan.language.grounding import sentence_start
+
+# "Y before X, but after Z" / "Y after X and before Z": a second connective after the first reference opens
+# a reference of its own, about the same main clause Y (not about X, the nearer clause)
+_NEXT_REF = re.compile(
+    r"\s*,?\s+(?:but|and|yet)\s+(?:(?:only|right|just|immediately)\s+)?"
+    r"(?P<rel>after|before|once|prior\s+to|following)\s+(?=\S)",
+    re.I,
+)
+# "Y after X, and W after Z": a clause of its own, with its own reference, after the first reference
+_SECOND_CLAUSE = re.compile(
+    r",\s+and\s+(?!(?:only|right|just|immediately|after|before|once|prior|following)\b)[^,]*?\s"
+    r"(?:after|before|once)\s",
+    re.I,
+)
+
+
+def not_one_reference(ref: str) -> bool:
+    """Does a trailing reference run on into "then" or into a clause with a reference of its own?"""
+    return re.search(r"\bthen\b", ref, re.I) is not None or _SECOND_CLAUSE.search(ref) is not None
+
+
+def clause_refs(rel: str, ref: str) -> list[tuple[str, str]]:
+    """The references of one main clause, leading or trailing: "before you put the egg in the fridge, but
+    after the tomato goes in the sink" -> a BEFORE_REF and an AFTER_REF, each about the clause stated."""
+    out: list[tuple[str, str]] = []
+    for part in reversed(list(_NEXT_REF.finditer(ref))):
+        out.append((_ref_kind(part["rel"]), ref[part.end() :]))
+        ref = ref[: part.start()]
+    return [(_ref_kind(rel), ref), *reversed(out)]
+
+
+def _ref_kind(rel: str) -> str:
+    """The marker of a connective: "before" / "prior to" -> BEFORE_REF; "after" / "once" -> AFTER_REF."""
+    return G.BEFORE_REF if rel.lower().split()[0] in {"before", "prior"} else G.AFTER_REF
+
+
+# "Do not put Y in B before X": the same order as "until" for a task's own verb ("do not open the fridge
+# before ..." forbids an action, a constraint that `negations` reads)
+_NOT_BEFORE_TASK = re.compile(
+    r"\b([Dd])(?:o not|on't) ((?:put|place|move|set|heat|cool|chill|wash|rinse|clean|slice|cut|bring|take|"
+    r"throw|drop)\b[^.;!?]+?) (?:before|prior to) (?:you )?([^.;!?]+)"
+)
+
+
+def not_before_as_after(text: str) -> str:
+    """ "Do not put X in A before Y" -> "After Y, put X in A"."""
+    return _NOT_BEFORE_TASK.sub(lambda m: f"{'After' if m[1] == 'D' else 'after'} {m[3]}, {m[2]}", text)
+
+
+# "A. B. Do these in either order, then C": C after all of them (the sentence ends at the free order)
+_FREED_THEN = re.compile(
+    r"\b((?:do|handle|complete|finish)\s+(?:these|those|them|both(?:\s+of\s+them)?|all\s+of\s+(?:them|these|those)|"
+    r"the\s+(?:two|three|four)(?:\s+(?:tasks|things|jobs))?)\s+in\s+(?:any|either|whatever)\s+order)\s*,?\s+"
+    r"(?:and\s+)?(?:then|after\s+that|afterwards?)\s*,?\s+(?=[a-z])",
+    re.IGNORECASE,
+)
+# "A, then B, and after those two C" / "A and B, and once both are done C": after every task before
+_AFTER_THOSE = re.compile(
+    r"(?<=\w)\s*,?\s+(?:and\s+)?(?:(?:after|once)\s+(?:those|these|the)\s+(?:two|three|four)"
+    r"(?:\s+(?:are|have\s+been)\s+(?:done|finished))?|once\s+both\s+(?:of\s+(?:them|those)\s+)?"
+    r"(?:are|have\s+been)\s+(?:done|finished)|after\s+both(?:\s+of\s+(?:them|those))?)\s*,?\s+(?=[a-z])",
+    re.IGNORECASE,
+)
+
+
+def after_the_step(text: str) -> str:
+    """ "..., do these in either order, then C" / "..., and after those two C" -> "... Once all that is done,
+    C" (C after every task before it)."""
+    text = _FREED_THEN.sub(r"\1. Once all that is done, ", text)
+    return _AFTER_THOSE.sub(". Once all that is done, ", text)
+
+
+# "put X in A, and once the mug is done put Y in B" / "..., and before you put Z in C put Y in B": a
+# subordinate clause inside a sentence that opens the next main clause; it starts a sentence of its own
+# ("Once the mug is done, put Y in B."), which the leading references read
+_AND_SUBORDINATE = re.compile(
+    r"(?<=\w)(?:\s*,?\s+and\s+(?P<then>then\s*,?\s+)?|\s*,?\s+(?P<then2>then)\s*,\s*)"
+    r"(?=(?:once|after|before|when)\s)",
+    re.IGNORECASE,
+)
+# words after which a verb is the subordinate clause's own ("after you put ...", "once it is put ...")
+_SUBJECT_OR_AUX = frozenset(
+    {"you", "we", "i", "it", "they", "to", "is", "are", "was", "were", "be", "been", "has", "have", "had",
+     "and", "or", "then", "that", "this", "not"}
+)
+
+
+_NO_CLAUSE = frozenset({"that", "this", "it", "everything", "all", "both"})  # "once that's done": "then"
+_LEADS = re.compile(r"\s*(?:(?:only|right|just)\s+)?(?:after|before|once|when|until|while)\b", re.IGNORECASE)
+
+
+def subordinate_first(text: str) -> str:
+    """ "X, and once the mug is done put Y" -> "X. Once the mug is done, put Y" (see above), where a main
+    clause (an imperative verb, not the subordinate clause's own) follows the subordinate clause before the
+    sentence ends."""
+    out, pos = [], 0
+    for m in _AND_SUBORDINATE.finditer(text):
+        end = re.search(r"[.;!?]|$", text[m.end() :])
+        words = tokens(text[m.end() : m.end() + (end.start() if end else 0)])
+        main = next(
+            (w for k, w in enumerate(words[2:], 2)
+             if w[0] in G.VERBS and G.VERBS[w[0]][1] == w[0] and words[k - 1][0] not in _SUBJECT_OR_AUX),
+            None,
+        )
+        opener = text[sentence_start(text, m.start()) : m.start()]
+        if main is None or words[1][0] in _NO_CLAUSE or _LEADS.match(opener):
+            continue  # "after X and before Y, Z": both are about Z
+        sub_end = m.end() + main[1]
+        sub = text[m.end() : sub_end].rstrip(" ,")
+        then = "Then, " if m["then"] or m["then2"] else ""  # "X, then, after Y, Z": Z after X too
+        out.append(f"{text[pos : m.start()]}. {then}{sub[0].upper() if not then else sub[0]}{sub[1:]}, ")
+        pos = sub_end
+    return "".join(out) + text[pos:]
+
+
+# "put the egg in the fridge and the apple in the fridge, the egg before the apple" / "..., but do the egg
+# first": an order between tasks named by their objects, closing a sentence, is a sentence of its own (a
+# relation sentence, `relation_sentence` / `first_last_sentence`)
+_NP_WORDS = r"(?:the|that|this)\s+[a-z]+(?:\s+[a-z]+)?"
+_CLOSING_RELATION = re.compile(
+    rf",\s+(?:but\s+)?(?P<a>{_NP_WORDS})\s+(?P<rel>before|after)\s+(?P<b>{_NP_WORDS})\s*(?=[.;!?]|$)",
+    re.IGNORECASE,
+)
+_CLOSING_FIRST = re.compile(
+    rf",\s+(?:but\s+)?(?P<s>(?:(?:do|handle)\s+)?{_NP_WORDS}\s+(?:first|last))\s*(?=[.;!?]|$)", re.IGNORECASE
+)
+
+
+
+
+def closing_orders(text: str) -> str:
+    """ "..., the egg before the apple" / "..., but do the egg first" -> a sentence of its own."""
+    text = _CLOSING_RELATION.sub(lambda m: f". {m['a']} should be done {m['rel']} {m['b']}", text)
+    return _CLOSING_FIRST.sub(lambda m: f". {m['s']}", text)
