@@ -132,3 +132,13 @@ def test_the_same_place_is_judged_against_the_scene():
     assert same({"Drawer": 6, "Ladle": 1, "Spatula": 2})
     assert not same({"Drawer": 1, "Ladle": 1, "Spatula": 2})
     assert not same(None)  # scene unknown: not judged
+
+
+# "the towel ... and the hand towel ..." in two clauses was two HandTowels (exit 1: the scene has one)
+@BOTH
+def test_a_phrase_naming_the_type_keeps_it_across_clauses(backend):
+    text = "put the towel on the towel holder and the hand towel on the hand towel holder"
+    assert _summaries(text, "FloorPlan402", backend) == [
+        "place Towel -> TowelHolder",
+        "place HandTowel -> HandTowelHolder",
+    ]

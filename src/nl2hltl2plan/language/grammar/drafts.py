@@ -514,6 +514,21 @@ def named_apart(x: NP, y: NP, g: Grounder) -> bool:
     return True
 
 
+def name_apart_across(drafts: list[Draft], g: Grounder | None) -> None:
+    """`named_apart` across the tasks of an instruction: "put the towel on the towel holder and the hand
+    towel on the hand towel holder" names a Towel and a HandTowel, as "the towel and the hand towel" does
+    in one clause."""
+    objs = [o for d in drafts if not d.tool and (o := d.obj) is not None and o.entry is not None]
+    if g is None:
+        return
+    for k, x in enumerate(objs):
+        for y in objs[k + 1 :]:
+            assert x.entry is not None and y.entry is not None
+            first = g.resolve(x.entry)
+            if first and len(first) == 1 and g.resolve(y.entry) == first and named_apart(x, y, g):
+                break
+
+
 def _has_words(words: list[str], sub: list[str]) -> bool:
     return any(words[k : k + len(sub)] == sub for k in range(len(words) - len(sub) + 1))
 

@@ -26,7 +26,7 @@ from __future__ import annotations
 from pydantic import BaseModel, Field
 
 from nl2hltl2plan.language.grammar.draft_tasks import TaskBuilder, build_tasks
-from nl2hltl2plan.language.grammar.drafts import DraftBuilder
+from nl2hltl2plan.language.grammar.drafts import DraftBuilder, name_apart_across
 from nl2hltl2plan.language.grammar.order_relations import relate
 from nl2hltl2plan.language.grammar.sentences import normalize, read_sentences
 from nl2hltl2plan.language.grounding import AffordanceLookup, Grounder, alfred_lookup
@@ -72,6 +72,7 @@ def parse_instruction(
     for sentence in read.sentences:
         drafting.add_sentence(sentence)
     drafts = drafting.out
+    name_apart_across(drafts.drafts, grounder)
     tasks = build_tasks(drafts.drafts, drafts.units, b, text)
     before = relate(tasks, read.relations, b, text)
     groups = {g: members for g, members in tasks.groups.items() if len(members) > 1}
