@@ -36,9 +36,9 @@ def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item
 def pytest_collection_finish(session: pytest.Session) -> None:
     """Less garbage-collector work per test process: everything imported and collected so far (Spot,
     matplotlib, the package, ~3,000 test items) lives to the end, so it is frozen out of the collector's
-    scans, and a young collection runs every 20,000 allocations instead of 700. A full suite spent about
-    6 % of its CPU in the collector, mostly rescanning those long-lived objects. Objects are still
-    collected; only when is different."""
+    scans, and a young collection runs every 20,000 allocations instead of 700. The planning and
+    experiment tests spent about 6 % of their CPU in the collector, mostly rescanning those long-lived
+    objects (results/reliability/test_suite_time.md). Objects are still collected; only when differs."""
     gc.collect()
     gc.freeze()
     gc.set_threshold(20_000, 20, 50)
