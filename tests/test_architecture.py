@@ -57,12 +57,13 @@ def import_graph(root: Path = SRC) -> nx.DiGraph:
     paths = {module_name(p, root): p for p in root.rglob("*.py")}
     graph = nx.DiGraph()
     graph.add_nodes_from(paths)
+    modules = set(paths)
     for name, path in paths.items():
         tree = ast.parse(path.read_text())
         skip = _type_checking_nodes(tree)
         for node in ast.walk(tree):
             if isinstance(node, ast.Import | ast.ImportFrom) and id(node) not in skip:
-                for target in imported(node, name, path.name == "__init__.py", set(paths)):
+                for target in imported(node, name, path.name == "__init__.py", modules):
                     if target in paths and target != name:
                         graph.add_edge(name, target)
     return graph

@@ -8,6 +8,8 @@ model once read "X, then Y" as one task span while the rebuilt one did not).
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+
 import pytest
 
 from nl2hltl2plan.language.learned import structure_train, train
@@ -19,6 +21,19 @@ REBUILD = (
     "stale: rebuild both models with "
     "`PYTHONHASHSEED=0 nl2hltl2plan train language -o {slot} --structure-out {structure}`"
 )
+
+
+@pytest.fixture(scope="module", autouse=True)
+def train_items_read_once() -> Iterator[None]:
+    """Both models' training data start from the same labelled train annotations (a second each): read
+    them once for this module. The items are frozen dataclasses and every call gets a list of its own."""
+    read = train.text_faithful_items
+    items = read("train")
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(
+            train, "text_faithful_items", lambda split: list(items) if split == "train" else read(split)
+        )
+        yield
 
 
 @pytest.fixture(scope="module")
