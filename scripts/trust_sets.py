@@ -25,6 +25,7 @@ import argparse
 import json
 import sys
 from collections import Counter
+from functools import cache
 from pathlib import Path
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
@@ -32,6 +33,7 @@ from nl2hltl2plan.language.scoring import match
 from nl2hltl2plan.language.translate import apply_choices, top_candidates, translate
 from nl2hltl2plan.worlds import load_world
 from nl2hltl2plan.worlds.tasks import GTInstance
+from nl2hltl2plan.worlds.world import World
 
 TRUST = Path(__file__).resolve().parent.parent / "tests" / "language" / "data" / "trust"
 
@@ -129,9 +131,16 @@ def build() -> None:
         print(f"{src.with_suffix('.jsonl')}: {len(rows)} instructions")
 
 
+@cache
+def _world(scene: str) -> World:
+    """One world per floor plan: `translate` only reads it (building one takes a numpy distance pass per
+    object, and the sets load the same few floor plans hundreds of times)."""
+    return load_world(scene)
+
+
 def outcome(gt: GTInstance, backend: str = "offline") -> tuple[str, str]:
     """(refused | partial | converted | wrong, detail) for one line, as `plan` would treat it."""
-    world = load_world(gt.scene)
+    world = _world(gt.scene)
     try:
         res = translate(gt.instruction, world, backend, build=False, actions="none")
     except Nl2Hltl2PlanError as exc:
