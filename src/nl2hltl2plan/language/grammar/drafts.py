@@ -515,17 +515,20 @@ def named_apart(x: NP, y: NP, g: Grounder) -> bool:
 
 
 def name_apart_across(drafts: list[Draft], g: Grounder | None) -> None:
-    """`named_apart` across the tasks of an instruction: "put the towel on the towel holder and the hand
-    towel on the hand towel holder" names a Towel and a HandTowel, as "the towel and the hand towel" does
-    in one clause."""
+    """`named_apart` across the tasks of an instruction, where one phrase is a compound of the other's
+    head ("put the towel on the towel holder and the hand towel on the hand towel holder": a Towel and a
+    HandTowel, as "the towel and the hand towel" in one clause). Two names of one type ("a clean rag",
+    "a cleaned cloth") are two things of that type."""
     objs = [o for d in drafts if not d.tool and (o := d.obj) is not None and o.entry is not None]
     if g is None:
         return
     for k, x in enumerate(objs):
         for y in objs[k + 1 :]:
             assert x.entry is not None and y.entry is not None
+            xs, ys = x.text.lower().split(), y.text.lower().split()
+            compound = xs != ys and (xs[-1:] == ys[-1:]) and (set(xs) < set(ys) or set(ys) < set(xs))
             first = g.resolve(x.entry)
-            if first and len(first) == 1 and g.resolve(y.entry) == first and named_apart(x, y, g):
+            if compound and len(first) == 1 and g.resolve(y.entry) == first and named_apart(x, y, g):
                 break
 
 
