@@ -142,3 +142,28 @@ def test_a_phrase_naming_the_type_keeps_it_across_clauses(backend):
         "place Towel -> TowelHolder",
         "place HandTowel -> HandTowelHolder",
     ]
+
+
+# "... and the bread on the counter after the apple is in the fridge" was a second apple put in the
+# fridge (the reference read as a task); "after the egg is in the sink, and put the bread ..." ordered the
+# bread before the apple (the reference ran on into the command)
+@BOTH
+@pytest.mark.parametrize(
+    "text",
+    [
+        "put the apple in the fridge after the egg is in the sink, and the bread on the counter after the"
+        " apple is in the fridge",
+        "put the apple in the fridge after the egg is in the sink, and put the bread on the counter",
+    ],
+)
+def test_a_state_reference_is_no_task_and_ends_before_a_command(backend, text):
+    try:
+        res = translate(text, _world("FloorPlan1"), backend)
+    except HTTError:
+        return
+    name = {t.id: t.summary() for t in res.tasks}
+    order = {(name[a], name[b]) for a, b in res.before}
+    three = ["place Apple -> Fridge", "place Bread -> CounterTop", "place Egg -> SinkBasin"]
+    assert res.partial or (
+        sorted(name.values()) == three and ("place Bread -> CounterTop", "place Apple -> Fridge") not in order
+    ), (sorted(name.values()), order)

@@ -55,6 +55,7 @@ from nl2hltl2plan.language.unsupported_steps import (
     first_and_last,
     opened_for_itself,
     other_instances,
+    repeated_tasks,
     returns_and_repeats,
     started,
     treated_after_placing,
@@ -103,7 +104,7 @@ def account(
         instruction, mentions, parse, instances
     )
     out += vague_words(instruction, mentions) + started(instruction, parse)
-    out += corrections(instruction, mentions, parse)
+    out += corrections(instruction, mentions, parse) + repeated_tasks(instruction, mentions, parse)
     out += first_and_last(instruction, mentions, parse)
     out += _words(instruction, toks, in_mention, mentions, parse, instances, scene)
     out += unordered_steps(

@@ -50,6 +50,42 @@ def returns_and_repeats(instruction: str, mentions: list[Mention], parse: ParseU
     ]
 
 
+def repeated_tasks(instruction: str, mentions: list[Mention], parse: ParseUsage) -> list[Unread]:
+    """Two tasks that are the same task need the thing named as a thing to act on as often: "... after
+    the apple is in the fridge" refers to a placing, it asks for no second apple in the fridge."""
+    same: Counter[tuple[str, ...]] = Counter(
+        (t.kind, *t.object, "|", *(t.receptacle or ()), str(t.sliced), *(t.container or ()))
+        for t in parse.tasks
+    )
+    out = []
+    lowered = instruction.lower()
+    for key, n in same.items():
+        if n < 2:
+            continue
+        objects = set(key[1 : key.index("|")])
+        named = [m for m in mentions if set(m.entry.types) & objects]
+        acted_on = [m for m in named if not _state_reference(lowered, m)]
+        if len(acted_on) < n and len(named) > len(acted_on):
+            surface = next(m.surface for m in named if _state_reference(lowered, m))
+            out.append(Unread(surface, "object", _SAID_ONCE))
+    return out
+
+
+_SAID_ONCE = "a task said once is read twice (once where the words only refer to it): say it once"
+_REFERENCE_BEFORE = re.compile(
+    r"\b(?:after|once|when|whenever|until|till|before|as soon as)\s+(?:the|a|an|your|my)?\s*$"
+)
+_STATE_AFTER = re.compile(r"\s+(?:is|are|was|were|has been|have been|gets|goes|'s)\b")
+
+
+def _state_reference(lowered: str, m: Mention) -> bool:
+    """ "after the apple is in the fridge": the thing named in a reference to a state, not acted on."""
+    return bool(
+        _REFERENCE_BEFORE.search(lowered[max(0, m.char_start - 30) : m.char_start])
+        and _STATE_AFTER.match(lowered, m.char_end)
+    )
+
+
 def _returned(lowered: str, start: int, end: int, mentions: list[Mention], parse: ParseUsage) -> bool:
     """Does a task put something into a place the words between `start` and `end` name as a source
     ("from the cabinet", "out of the fridge")?"""
