@@ -167,3 +167,16 @@ def test_a_state_reference_is_no_task_and_ends_before_a_command(backend, text):
     assert res.partial or (
         sorted(name.values()) == three and ("place Bread -> CounterTop", "place Apple -> Fridge") not in order
     ), (sorted(name.values()), order)
+
+
+# "the second egg", "the left apple" were any egg, any apple
+@BOTH
+@pytest.mark.parametrize("text", ["put the second egg in the fridge", "put the left apple in the sink"])
+def test_words_that_pick_one_of_several_things_are_refused(backend, text):
+    assert "picks one of several" in _refused(text, "FloorPlan4", backend)
+
+
+@BOTH
+def test_a_place_picked_among_several_is_read_as_its_type(backend):
+    text = "put the spoon in the second drawer"
+    assert _summaries(text, "FloorPlan4", backend) == ["place Spoon -> Drawer"]

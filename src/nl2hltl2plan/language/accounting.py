@@ -53,6 +53,7 @@ from nl2hltl2plan.language.unsupported_steps import (
     closed_after_placing,
     corrections,
     first_and_last,
+    one_of_several,
     opened_for_itself,
     other_instances,
     repeated_tasks,
@@ -105,6 +106,7 @@ def account(
     )
     out += vague_words(instruction, mentions) + started(instruction, parse)
     out += corrections(instruction, mentions, parse) + repeated_tasks(instruction, mentions, parse)
+    out += one_of_several(instruction, mentions, parse, instances)
     out += first_and_last(instruction, mentions, parse)
     out += _words(instruction, toks, in_mention, mentions, parse, instances, scene)
     out += unordered_steps(

@@ -50,6 +50,30 @@ def returns_and_repeats(instruction: str, mentions: list[Mention], parse: ParseU
     ]
 
 
+def one_of_several(
+    instruction: str, mentions: list[Mention], parse: ParseUsage, instances: Mapping[str, int] | None
+) -> list[Unread]:
+    """ "Put the second egg in the fridge", "the left apple": words that pick one of several things of a
+    type the scene holds, which the spec (type-level atoms: any egg does) cannot keep to. Judged only
+    where the scene is known; a place so picked ("the top drawer") is read as the place's type."""
+    if instances is None:
+        return []
+    objects = {t for task in parse.tasks for t in task.object}
+    out = []
+    for m in _PICKS_ONE.finditer(instruction.lower()):
+        named = next((x for x in mentions if x.char_start == m.end()), None)
+        if named is not None and any(instances.get(t, 0) > 1 for t in set(named.entry.types) & objects):
+            out.append(Unread(f"{m.group(1)} {named.surface}", "object", _PICKED))
+    return out
+
+
+_PICKS_ONE = re.compile(
+    r"\bthe\s+(second|third|fourth|fifth|left|right|leftmost|rightmost|middle|nearest|closest|farthest|"
+    r"furthest|biggest|smallest|larger|smaller|bigger)\s+"
+)
+_PICKED = "picks one of several things of its type: the spec's atoms name types (any one does)"
+
+
 def repeated_tasks(instruction: str, mentions: list[Mention], parse: ParseUsage) -> list[Unread]:
     """Two tasks that are the same task need the thing named as a thing to act on as often: "... after
     the apple is in the fridge" refers to a placing, it asks for no second apple in the fridge."""
