@@ -146,7 +146,7 @@ def test_a_phrase_naming_the_type_keeps_it_across_clauses(backend):
 
 # "... and the bread on the counter after the apple is in the fridge" was a second apple put in the
 # fridge (the reference read as a task); "after the egg is in the sink, and put the bread ..." ordered the
-# bread before the apple (the reference ran on into the command)
+# bread before the apple (the reference ran on into the command: now a sentence of its own)
 @BOTH
 @pytest.mark.parametrize(
     "text",
@@ -180,3 +180,13 @@ def test_words_that_pick_one_of_several_things_are_refused(backend, text):
 def test_a_place_picked_among_several_is_read_as_its_type(backend):
     text = "put the spoon in the second drawer"
     assert _summaries(text, "FloorPlan4", backend) == ["place Spoon -> Drawer"]
+
+
+@BOTH
+def test_a_command_after_a_state_reference_is_a_sentence_of_its_own(backend):
+    text = "put the apple in the fridge after the egg is in the sink, and put the bread on the counter"
+    res = translate(text, _world("FloorPlan1"), backend)
+    name = {t.id: t.summary() for t in res.tasks}
+    assert not res.partial and {(name[a], name[b]) for a, b in res.before} == {
+        ("place Egg -> SinkBasin", "place Apple -> Fridge")
+    }

@@ -26,20 +26,25 @@ _SECOND_CLAUSE = re.compile(
 
 
 def not_one_reference(ref: str) -> bool:
-    """Does a trailing reference run on into "then", into a clause with a reference of its own, or, from a
-    state ("after the egg is in the sink"), into a command ("..., and put the bread on the counter")?"""
-    if re.search(r"\bthen\b", ref, re.I) is not None or _SECOND_CLAUSE.search(ref) is not None:
-        return True
-    state = _STATE_THEN_COMMAND.match(ref)
-    return state is not None and state["verb"].lower() in G.VERBS
+    """Does a trailing reference run on into "then" or into a clause with a reference of its own?"""
+    return re.search(r"\bthen\b", ref, re.I) is not None or _SECOND_CLAUSE.search(ref) is not None
 
 
-# "the egg is in the sink, and put ...": a state said of a thing, then a command of its own
+# "A after the egg is in the sink, and put the bread ...": a reference to a state ends where a command of
+# its own begins; that command is a sentence of its own (its order is not A's)
 _STATE_THEN_COMMAND = re.compile(
-    r"^(?:the|a|an|your|my)\s+[^,]*?\b(?:is|are|has\s+been|have\s+been|was|were)\b[^,]*?,?\s+and\s+"
-    r"(?:(?:please|also)\s+)?(?P<verb>[a-z]+)\b",
+    r"(?<=\w )(?P<ref>(?:after|once|when|until|till|before)\s+(?:the|a|an|your|my)\s+[^,.;!?]*?\b"
+    r"(?:is|are|has\s+been|have\s+been)\b[^,.;!?]*?),?\s+and\s+(?=(?:(?:please|also)\s+)?(?P<verb>[a-z]+)\b)",
     re.I,
 )
+
+
+def command_after_state(text: str) -> str:
+    """ "A after the egg is in the sink, and put the bread ..." -> "A after the egg is in the sink. put the
+    bread ..." (a state said of a thing takes no command into its reference)."""
+    return _STATE_THEN_COMMAND.sub(
+        lambda m: f"{m['ref']}. " if m["verb"].lower() in G.VERBS else m[0], text
+    )
 
 
 def clause_refs(rel: str, ref: str) -> list[tuple[str, str]]:

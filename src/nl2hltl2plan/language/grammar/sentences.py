@@ -11,6 +11,7 @@ from nl2hltl2plan.language.grammar.order_phrases import (
     after_the_step,
     clause_refs,
     closing_orders,
+    command_after_state,
     not_before_as_after,
     not_one_reference,
     subordinate_first,
@@ -407,6 +408,7 @@ def normalize(text: str) -> str:
     # "Do not Y until (you) X" states the order of "After X, Y" (ANNOTATION_GUIDE.md)
     text = _UNTIL.sub(lambda m: f"{_as_cased('after', m[1])} {m[3]}, {m[2]}", text)
     text = not_before_as_after(text)
+    text = command_after_state(text)
     text = _NOT_BEFORE.sub(", but only after ", text)
     text = _STATES_LISTED.sub(r"\1 ", text)  # "a chilled, cut slice": one noun phrase, not two clauses
     text = _STATES_JOINED.sub(r"\1 ", text)
