@@ -25,6 +25,7 @@ words that carry no object, place, count, negation or order in the place where i
 from __future__ import annotations
 
 import re
+from functools import lru_cache
 
 from nl2hltl2plan.language.content_words import free_order_phrase
 from nl2hltl2plan.language.grammar.restated import count_fits, restated
@@ -101,8 +102,10 @@ def _reference_sentence(m: re.Match[str]) -> str:
     return f". {ref}, " if inside else f"{m['lead']}{ref}, "
 
 
+@lru_cache(maxsize=1024)  # check 1 asks again for every reading it judges (about five per instruction)
 def everyday(text: str) -> str:
-    """The text with the everyday styles above rewritten onto the forms the grammar reads."""
+    """The text with the everyday styles above rewritten onto the forms the grammar reads (a pure function
+    of the text)."""
     text = _BARE.sub(lambda m: _BARE_CONTRACTION[m[1].lower()], _UR_DONE.sub("you're ", text))
     if _FREE_REMARK.search(text):  # "1. X. 2. Y. Any order is fine.": the numbers only list the steps
         text = _NUMBERED.sub(lambda m: m["lead"], text)
