@@ -6,6 +6,7 @@ other apple"), switching a machine on ("start it"), an object's task said to com
 what no spec says at all (`vague_words`): questions, vague amounts and places, times, waiting on a state.
 
 >>> from nl2hltl2plan.language.parse_usage import ParseUsage
+from nl2hltl2plan.language.task_specs import BaseTaskSpec
 >>> [u.words for u in returns_and_repeats("bring it back", [], ParseUsage([], [], [], []))]
 ['back']
 """
@@ -23,6 +24,7 @@ from nl2hltl2plan.language.content_words import DETERMINERS, Unread, categories
 from nl2hltl2plan.language.grounding import Mention, lookup, sentence_start, tokens
 from nl2hltl2plan.language.negations import NO_CONSTRAINT
 from nl2hltl2plan.language.parse_usage import ParseUsage
+from nl2hltl2plan.language.task_specs import BaseTaskSpec
 
 # "bring it back", "then back again": to where it was, which no base task names; "three times"
 _RETURN = re.compile(r"\bback(?: again)?\b(?=\s*(?:$|[.,;!?)]|(?:and|then|again|afterwards|later|here)\b))")
@@ -77,21 +79,17 @@ _PICKED = "picks one of several things of its type: the spec's atoms name types 
 def repeated_tasks(instruction: str, mentions: list[Mention], parse: ParseUsage) -> list[Unread]:
     """Two tasks that are the same task need the thing named as a thing to act on as often: "... after
     the apple is in the fridge" refers to a placing, it asks for no second apple in the fridge."""
-    same: Counter[tuple[str, ...]] = Counter(
-        (t.kind, *t.object, "|", *(t.receptacle or ()), str(t.sliced), *(t.container or ()))
-        for t in parse.tasks
-    )
+    same: dict[tuple[object, ...], list[BaseTaskSpec]] = {}
+    for t in parse.tasks:
+        key = (t.kind, tuple(t.object), tuple(t.receptacle or ()), t.sliced, tuple(t.container or ()))
+        same.setdefault(key, []).append(t)
     out = []
     lowered = instruction.lower()
-    for key, n in same.items():
-        if n < 2:
-            continue
-        objects = set(key[1 : key.index("|")])
-        named = [m for m in mentions if set(m.entry.types) & objects]
-        acted_on = [m for m in named if not _state_reference(lowered, m)]
-        if len(acted_on) < n and len(named) > len(acted_on):
-            surface = next(m.surface for m in named if _state_reference(lowered, m))
-            out.append(Unread(surface, "object", _SAID_ONCE))
+    for tasks in (ts for ts in same.values() if len(ts) > 1):
+        named = [m for m in mentions if set(m.entry.types) & set(tasks[0].object)]
+        references = [m for m in named if _state_reference(lowered, m)]
+        if references and len(named) - len(references) < len(tasks):
+            out.append(Unread(references[0].surface, "object", _SAID_ONCE))
     return out
 
 
