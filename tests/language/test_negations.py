@@ -14,7 +14,7 @@ from nl2hltl2plan.cli.main import main
 from nl2hltl2plan.config import data_dir
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.accounting import account
-from nl2hltl2plan.language.grounding import Grounder
+from nl2hltl2plan.language.grounding import Grounder, alfred_lookup
 from nl2hltl2plan.language.negations import read_negations
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, ConstraintSpec
 from nl2hltl2plan.logic.constraints import Constraint
@@ -232,6 +232,22 @@ def test_it_and_there_in_a_negation_stand_for_the_thing_and_the_place_named_befo
         ("don't put the mug there", ["put(Mug,CounterTop)"], "")
     ]
     assert read("never put it in the sink")[1] == []  # "it" with nothing before: unread, so refused
+
+
+@needs_data
+def test_not_followed_by_a_place_forbids_the_thing_going_there():
+    """ "put the tomato in the fridge, not the microwave": the microwave is the place the thing must not go
+    (it was read as "the microwave must not go in the fridge"); a word that may be a thing stays a thing."""
+    look = alfred_lookup()
+    grounder = Grounder(KITCHEN | {"Tomato", "Bowl", "Cabinet"})
+
+    def forbids(text: str) -> list[list[str]]:
+        return [n.spec.forbid for n in read_negations(text, grounder, look)[1]]
+
+    assert forbids("put the tomato in the fridge, not the microwave") == [["put(Tomato,Microwave)"]]
+    assert forbids("put the mug in the sink, not the cabinet") == [["put(Mug,Cabinet)"]]
+    assert forbids("put the apple in the fridge, not the bowl") == [["put(Bowl,Fridge)"]]
+    assert forbids("put the apple in the fridge, not the tomato") == [["put(Tomato,Fridge)"]]
 
 
 @needs_data

@@ -200,6 +200,9 @@ def _read_clause(
         verb, places = "put", _previous_destination(text, toks, i, mentions, grounder)
         if not places:
             return None
+        contrast = _contrasted_place(text, toks, i, inside, mentions, grounder, look)
+        if contrast is not None:  # "put the tomato in the fridge, not the microwave"
+            return _negation(text, toks, i, end_tok, end_tok, "put", *contrast)
     if verb is None or not inside:
         return None
     if _PRONOUNS & set(words[j + 1 : inside[0].start]):  # "don't put it in the sink": it is a thing
@@ -218,12 +221,48 @@ def _read_clause(
         places = where
     elif where:  # "never open the fridge on the left": the extra place is not read
         return None
+    return _negation(text, toks, i, end_tok, cut, verb, things, places, look)
+
+
+def _negation(
+    text: str,
+    toks: list[tuple[str, int, int]],
+    i: int,
+    end_tok: int,
+    cut: int,
+    verb: str,
+    things: Sequence[str],
+    places: Sequence[str],
+    look: AffordanceLookup | None = None,
+) -> Negation | None:
     forbid = patterns(verb, things, places, look)
     start = _clause_start(text, toks, i)
     end = toks[end_tok - 1][2] if end_tok > i else toks[i][2]
     clause = text[toks[_first_word(toks, i)][1] : end]
     until_words = text[toks[cut][2] : end].strip() if cut < end_tok else ""
     return Negation(start, end, ConstraintSpec(text=clause, forbid=forbid), until_words) if forbid else None
+
+
+def _contrasted_place(
+    text: str,
+    toks: list[tuple[str, int, int]],
+    i: int,
+    inside: list[Mention],
+    mentions: list[Mention],
+    grounder: Grounder,
+    look: AffordanceLookup | None,
+) -> tuple[list[str], list[str], AffordanceLookup | None] | None:
+    """ "..., not the microwave" after a placing: the thing must not go to that place, when every type the
+    words name is a place nothing carries (a microwave, never a bowl: "not the bowl" may be a thing)."""
+    if look is None or len(inside) != 1:
+        return None
+    types = grounder.resolve(inside[0].entry)
+    affs = [look(t) for t in types]
+    if not types or any(a is None or a.pickupable or not a.receptacle for a in affs):
+        return None
+    thing = _previous_object(text, toks, i, mentions)
+    things = grounder.resolve(thing.entry) if thing is not None else []
+    return (things, types, look) if things else None
 
 
 def _verb_of(word: str) -> str | None:
