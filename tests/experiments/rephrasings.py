@@ -475,3 +475,52 @@ VALID_H74: dict[int, list[str]] = {
         "Do in this order:\n1. green apple and orange -> yellow plate\n"
         "2. carrot and red apple -> blue plate"],
 }
+
+# Issue 28 (h79): held-out rephrasings written before any h79 rule, in voices the sets above do not use (a
+# roommate's sticky note, a museum curator, a stage manager, a nurse's handover, a quiz, a spreadsheet
+# pasted as text, a shop-floor supervisor, someone asking on a forum) and framings they do not (a dash list
+# after "sort these", a casual opener before a question, "Y gets X", a table of rows, "none of these
+# depends on another", "the order within each pair does not matter", "only once ... already"). Measured
+# once on first contact and once at the end (scripts/tabletop_styles.py --batch VALID_H79), never read per
+# sentence between; the expected signature is each task's ground truth.
+VALID_H79: dict[int, list[str]] = {
+    1: ["hey, whenever you're free could you sort out the plates - green apple goes to the blue one, orange "
+        "to the yellow one",
+        "Blue plate <- green apple\nYellow plate <- orange",
+        "Note for the robot: the green apple belongs on the blue plate; the orange belongs on the yellow "
+        "plate. Cheers!",
+        "What should end up where? The green apple on the blue plate, and the orange on the yellow plate.",
+        "The green apple should be moved onto the blue plate by you, and the orange onto the yellow plate."],
+    2: ["hiya! mind doing me a favour? green apple onto the pink plate, orange onto the yellow plate, red "
+        "apple onto the blue plate. do them however you like",
+        "Item | Plate\ngreen apple | pink plate\norange | yellow plate\nred apple | blue plate\n(order: "
+        "doesn't matter)",
+        "The pink plate gets the green apple, the yellow plate gets the orange, and the blue plate gets the "
+        "red apple. It makes no difference which one you do first.",
+        "I'd like three things done, in no particular sequence - the red apple placed on the blue plate, the "
+        "orange placed on the yellow plate, the green apple placed on the pink plate.",
+        "Sort these out for me please - green apple: pink plate - orange: yellow plate - red apple: blue "
+        "plate. The order in which you do them is irrelevant."],
+    3: ["Curator's note: carrot to be displayed on the blue plate, orange on the yellow plate, green apple "
+        "on the green plate, red apple on the pink plate. Installation order is unimportant.",
+        "hey so when you get a chance, could you pop the carrot on the blue plate, the orange on the yellow "
+        "plate, the green apple on the green plate and the red apple on the pink plate? no rush, any order",
+        "Each plate gets one thing: blue plate the carrot, yellow plate the orange, green plate the green "
+        "apple, pink plate the red apple. Sequence is totally up to you.",
+        "Can the carrot go on the blue plate, the orange on the yellow plate, the green apple on the green "
+        "plate and the red apple on the pink plate? You're free to do them in any order you like.",
+        "The carrot is to be placed on the blue plate. The orange is to be placed on the yellow plate. The "
+        "green apple is to be placed on the green plate. The red apple is to be placed on the pink plate. "
+        "None of these depends on another."],
+    4: ["Two rounds. Round A: the green apple and the orange onto the yellow plate. Round B, only after "
+        "round A: the carrot and the red apple onto the blue plate; the order within each round does not "
+        "matter.",
+        "hey, when you get a sec, could you load the yellow plate with the green apple and the orange first, "
+        "and after that load the blue plate with the carrot and the red apple? whichever order inside each.",
+        "The yellow plate needs the green apple and the orange before the blue plate gets anything; the "
+        "blue plate then gets the carrot and the red apple, in either order.",
+        "Sequence matters here: green apple and orange go onto the yellow plate to begin with, and the "
+        "carrot and red apple onto the blue plate afterwards. Within each pair, do whatever.",
+        "Put the carrot and the red apple on the blue plate, but only once the green apple and the orange "
+        "are already on the yellow plate."],
+}
