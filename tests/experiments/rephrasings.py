@@ -524,3 +524,45 @@ VALID_H79: dict[int, list[str]] = {
         "Put the carrot and the red apple on the blue plate, but only once the green apple and the orange "
         "are already on the yellow plate."],
 }
+
+# Issue 28 (h79): rephrasings for developing h79's form-independent reading (read per sentence): the three
+# shapes the lead's closing note named (a list with a colon or dash per pair after "sort these", a casual
+# opener, an explicit freedom statement), h74's "I want that X is on Y" past the third pair, and forms the
+# reading is to take whatever their framing: questions, passives, "Y gets X", tables, notes.
+DEV_H79: dict[int, list[str]] = {
+    1: ["Please sort these: - green apple: blue plate - orange: yellow plate",
+        "hey, when you get a sec, could you put the green apple on the blue plate and the orange on the "
+        "yellow plate?",
+        "The green apple is to be put on the blue plate by the robot, and the orange on the yellow plate.",
+        "blue plate gets green apple, yellow plate gets orange",
+        "green apple | blue plate\norange | yellow plate",
+        "Reminder: green apple on the blue plate, orange on the yellow plate. Thanks!",
+        "Would you mind putting the orange on the yellow plate and the green apple on the blue plate?"],
+    2: ["Please sort these: - green apple: pink plate - orange: yellow plate - red apple: blue plate. The "
+        "order within each pair does not matter.",
+        "hey, when you get a sec, could you put the green apple on the pink plate, the orange on the yellow "
+        "plate and the red apple on the blue plate? the order does not matter",
+        "Organise these for me - green apple - pink plate, orange - yellow plate, red apple - blue plate. "
+        "Doesn't matter which comes first.",
+        "The green apple gets placed on the pink plate, the orange on the yellow plate, the red apple on the "
+        "blue plate. You can pick the order.",
+        "pink plate: green apple\nyellow plate: orange\nblue plate: red apple\nany order is fine"],
+    3: ["I want that carrot is on blue plate, orange is on yellow plate, green apple is on green plate and "
+        "red apple is on pink plate.",
+        "Please sort these: - carrot: blue plate - orange: yellow plate - green apple: green plate - red "
+        "apple: pink plate",
+        "hey, when you get a sec, could you do the carrot on the blue plate, the orange on the yellow plate, "
+        "the green apple on the green plate and the red apple on the pink plate? order doesn't matter",
+        "The blue plate gets the carrot, the yellow plate the orange, the green plate the green apple and the "
+        "pink plate the red apple. The order in which you do this is irrelevant.",
+        "Everything should be on its plate: carrot on blue, well, on the blue plate, orange on the yellow "
+        "plate, green apple on the green plate, red apple on the pink plate. Any order."],
+    4: ["Please sort these: - green apple: yellow plate - orange: yellow plate. Then: - carrot: blue plate "
+        "- red apple: blue plate. The order within each pair does not matter.",
+        "hey, when you get a sec, could you first put the green apple and the orange on the yellow plate, "
+        "then the carrot and the red apple on the blue plate? the order within each pair doesn't matter",
+        "The green apple and the orange go on the yellow plate first; the carrot and the red apple go on the "
+        "blue plate after that. Within each pair the order is up to you.",
+        "Yellow plate first (green apple, orange), then blue plate (carrot, red apple), any order inside "
+        "each."],
+}

@@ -37,8 +37,10 @@ from nl2hltl2plan.language.tabletop_wording import (
     mention_pattern,
     numbered_steps,
     plain_words,
+    remarks_read,
     stated_not_asked,
     steps_read,
+    wished_states_plain,
 )
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter, transitive_closure
 from nl2hltl2plan.worlds.world import World
@@ -124,7 +126,7 @@ class TabletopReader:
                 f"'{stated}' says where something is, not what to do: ask for it (\"put ...\", \"make sure "
                 "... is on ...\") or leave it out"
             )
-        return numbered_steps(corrected(instruction, kinds))
+        return numbered_steps(corrected(remarks_read(instruction, kinds), kinds))
 
     def reread(self, instruction: str, backend: str) -> LanguageResult | None:
         return tabletop_fallback(instruction, self.world, backend)
@@ -239,7 +241,7 @@ def read_pairs(text: str, types: set[str]) -> Reading | None:
     free, listed = bool(remarks), frees_every_step(remarks)
     stepped = steps_read(last_item_unmarked(unordered) if listed else unordered, listed)
     pattern = mention_pattern(by_words)
-    groups = None if stepped is None else _ordered_groups(stepped, pattern)
+    groups = None if stepped is None else _ordered_groups(_trailing_then_fronted(stepped, pattern), pattern)
     if stepped is None or groups is None:
         return None
     tasks: list[BaseTaskSpec] = []
@@ -265,7 +267,7 @@ def read_pairs(text: str, types: set[str]) -> Reading | None:
     if free and all(len(g) < 2 for g in group_ids):
         return None  # "A, then B - either order is ok": the remark frees no pair the "then"s leave unordered
     before = [(a, b) for i, g in enumerate(group_ids) for h in group_ids[i + 1 :] for a in g for b in h]
-    return tasks, before, group_ids, stepped
+    return tasks, before, group_ids, wished_states_plain(stepped, by_words)
 
 
 def _sentence_pairs(
@@ -313,6 +315,26 @@ def _ordered_groups(text: str, pattern: re.Pattern[str]) -> list[str] | None:
     if opened is not None:
         parts[0] = parts[0][: opened.start()] + " " + parts[0][opened.end() :]
     return parts
+
+
+_BOUNDARY = re.compile(r"[.;!?\n]")
+
+
+def _trailing_then_fronted(text: str, pattern: re.Pattern[str]) -> str:
+    """A "then" that closes its sentence ("the carrot goes on the blue plate after that.") put before it,
+    where it orders that sentence's placements after the ones before; a sentence with a comma is left
+    (which of its parts comes after is not said), and so refused."""
+    for m in reversed(list(_THEN.finditer(text))):
+        end = _BOUNDARY.search(text, m.end())
+        if text[m.end() : end.start() if end else len(text)].strip(" ,"):
+            continue
+        starts = [b.end() for b in _BOUNDARY.finditer(text, 0, m.start())]
+        start = starts[-1] if starts else 0
+        sentence = text[start : m.start()]
+        if "," in sentence or not pattern.search(sentence) or _THEN.search(sentence) or _FIRST.search(sentence):
+            continue
+        text = f"{text[:start]} {m[0]} {sentence.strip()}{text[m.end() :]}"
+    return text
 
 
 def _before_split(part: str, pattern: re.Pattern[str]) -> list[str]:

@@ -13,7 +13,15 @@ and plate names, read before `tabletop_pairs` pairs them.
   ("1) ... 2) ...") order the steps; beside a remark that frees the whole list ("in any order", not
   "within each step, any order") the numbers only list, and "lastly" / "finally" only mark its last item;
 - politeness that carries nothing: "it would please me if", "I would be grateful if you could", "let me
-  see", "chop chop", "go ahead and".
+  see", "chop chop", "go ahead and";
+- clauses that name no object or plate, read by what their words are rather than by a list of phrasings
+  (`remarks_read`): a clause made only of greetings, courtesy and the user's own time ("hey", "when you
+  get a sec", "mind doing me a favour?", "no rush") is removed; a list's heading made of a verb of tidying
+  and a word for the things ("Please sort these:", "organise this for me") is removed; a clause that
+  speaks of the order (or of which comes first, or of what depends on what) and says it is free ("the
+  order in which you do them is irrelevant", "it makes no difference which one you do first", "none of
+  these depends on another") becomes "in any order", or "within each group in any order" when it speaks
+  of each group ("the order within each pair does not matter").
 """
 
 from __future__ import annotations
@@ -61,6 +69,29 @@ def stated_not_asked(text: str, names: Iterable[str]) -> str | None:
             clause_end = re.compile(r"[,.;!?]|$").search(lowered, m.end())
             return lowered[m.start() : clause_end.start() if clause_end else None].strip()
     return None
+
+
+# a wish said before a state clause (no reference to a placement: "once", "when", "after" order the tasks)
+_WISH_FRAME = re.compile(
+    r"\b(?:please|make\s+sure|ensure|see\s+(?:to\s+it\s+)?that|want|wish|like|love|need|needs|should|must|"
+    r"have\s+to|has\s+to|hope|expect|goal|target|final|desired|end\s+state|postcondition)\b"
+)
+_REFERENCE = re.compile(r"\b(?:once|when|whenever|after|before|until|till|as\s+soon\s+as|if|unless)\b")
+
+
+def wished_states_plain(text: str, names: Iterable[str]) -> str:
+    """`text` (lowercased) with the verb of each state clause under a wish dropped, where its sentence
+    refers to no other placement ("I want that the carrot is on the blue plate, the orange is on the
+    yellow plate" -> "... the orange on the yellow plate"): each such clause is asked for, however far
+    from its wish (check 1 looks six words back)."""
+    mention = mention_pattern(names).pattern.removesuffix(r"\b")
+    state = re.compile(rf"(?P<name>{mention})(?:\s+(?:both|all|too|also))?{_STATE_VERB}{_STATE_ADVERB}(?={_LOCATIVE})")
+    out = []
+    for sentence in re.split(r"(?<=[.;!?\n])", text):
+        if _WISH_FRAME.search(sentence) and not _REFERENCE.search(sentence):
+            sentence = state.sub(lambda m: m["name"], sentence)
+        out.append(sentence)
+    return "".join(out)
 
 
 # ---- free-order remarks ---------------------------------------------------------------------------------
@@ -138,6 +169,7 @@ def plain_words(text: str, kinds: dict[str, bool], heads: dict[str, list[str]]) 
     names."""
     text = re.sub(r"\b(1st|2nd|3rd|4th)\b", lambda m: _ORDINALS[m[1]], text.lower())
     text = _THE_FOLLOWING.sub("these", _FILLER.sub(" ", polite_frames(text)))
+    text = remarks_read(text, kinds)
     text = _PAIR_VERB.sub("match", text)
     text = _APPOSITION.sub(lambda m: m[0] if _names_a_word(m["words"], kinds) else ",", text)
     text = corrected(text, kinds)
@@ -250,3 +282,96 @@ def _as_steps(text: str, marks: list[re.Match[str]]) -> str:
 
 def _step_number(word: str) -> int:
     return int(word) if word.isdigit() else _NUMBER_WORDS[word]
+
+
+# ---- clauses that name nothing: courtesy, list headings, freedom statements --------------------------------
+# (read word by word, whatever their phrasing: every word must belong to the clause's kind)
+_SENTENCE_PIECE = re.compile(r"[^.;:!?()\n]+")
+_CLAUSE = re.compile(r"[^,.;:!?()\n]+?(?=\s+-\s+|[,.;:!?()\n]|$)")
+_COURTESY_WORDS = frozenset(
+    "hey hi hiya hello yo ok okay so alright right well um uh erm please thanks thank cheers kindly dear "
+    "sweetie mate buddy robot when whenever if you you're youre u get got have find a an some sec second "
+    "moment minute chance free time spare are can could would will mind doing me favour favor like just "
+    "quick".split()
+)
+_UNHURRIED = re.compile(r"\bno\s+(?:rush|hurry|worries|pressure)\b")
+_TIDY_VERB = r"(?:sort|organi[sz]e|arrange|tidy|handle|do|set\s+up|lay\s+out)"
+_THE_THINGS = r"(?:these|this|them|things|stuff|everything|the\s+(?:items|things|fruits?|plates|following))"
+_HEADING_FRAME = re.compile(
+    rf"^{_TIDY_VERB}\s+(?:(?:out|up)\s+)?{_THE_THINGS}(?:\s+(?:out|up))?(?:\s+for\s+(?:me|us))?$"
+)
+# a freedom statement: what it is about (the order, which comes first, what depends on what) ...
+_ORDER_TOPIC = re.compile(
+    r"\b(?:order(?:ing)?|sequenc(?:e|ing)|which\b[a-z'\s]{0,24}?\bfirst)\b"
+)
+_INDEPENDENT = re.compile(
+    r"\b(?:none|neither|no\s+one)\s+of\s+(?:these|them|those|the\s+\w+)\s+depends?\s+on\s+(?:another|any\s+other|"
+    r"the\s+others?|each\s+other|one\s+another)\b|\b(?:they|these|those|them)\s+(?:are|'re)\s+(?:all\s+)?"
+    r"independent(?:\s+of\s+(?:each\s+other|one\s+another))?\b"
+)
+# ... and what it says of it
+_FREE_PREDICATE = re.compile(
+    r"\b(?:(?:does|do|did|will|would|should)(?:\s+not|n't|nt)\s+matter|no\s+matter|matters\s+not|irrelevant|"
+    r"unimportant|not\s+important|of\s+no\s+(?:consequence|importance)|up\s+to\s+you|(?:your|the\s+robot's)\s+"
+    r"(?:call|choice|decision|pick)|(?:are|'re|is|'s)\s+free|free\s+to\s+(?:choose|pick|decide)|"
+    r"(?:can|may|get\s+to)\s+(?:choose|pick|decide)|any|whatever|whichever|arbitrary|flexible|optional|"
+    r"not\s+(?:specified|fixed|set|required|needed)|unspecified|no\s+particular|(?:i|we)\s+(?:don't|do\s+not)\s+"
+    r"(?:care|mind)|(?:makes?|is)\s+no\s+difference|do\s+(?:whatever|as\s+you\s+(?:like|please)))\b"
+)
+_EACH_GROUP = re.compile(
+    r"\b(?:within|inside|in|for)\s+(?:each|every|a|the\s+same)(?:\s+(?:pair|group|step|round|plate|batch|set|"
+    r"stage|phase|part|one|course))?\b"
+)
+_FREEDOM_FILLER = frozenset(
+    "the in which you do them they these those this it that of for me us to is are be at all really totally "
+    "entirely quite completely here and so just it's its can may will how place placement placements put "
+    "one ones a way round i we honestly pretty much first go goes what done like want prefer wish choose pick fine "
+    "ok okay good".split()
+)
+_NEGATION = re.compile(r"\b(?:not|never|no|none|n't)\b|n't\b")
+
+
+def remarks_read(text: str, names: Iterable[str]) -> str:
+    """`text` with each sentence, or else each clause, that names no object or plate read by its words
+    (see the module docstring): courtesy and list headings removed, freedom statements said as "in any
+    order" or "within each group in any order". Any other clause is left as it is, for the readers."""
+    mention = mention_pattern(names)
+    for pieces in (_SENTENCE_PIECE, _CLAUSE):
+        low, out, at = text.lower(), [], 0
+        for piece in pieces.finditer(low):
+            words = piece[0].strip(" -")
+            if not words or mention.search(words):
+                continue
+            read = _clause_read(words)
+            if read is not None:
+                out.append(text[at : piece.start()] + (f" {read} " if read else " "))
+                at = piece.end()
+        text = "".join(out) + text[at:]
+    return text
+
+
+def _clause_read(clause: str) -> str | None:
+    """ "" for courtesy or a list heading, a free-order phrase for a freedom statement, None otherwise."""
+    words = re.findall(r"[a-z']+", _UNHURRIED.sub(" ", clause))
+    if words and all(w in _COURTESY_WORDS for w in words):
+        return ""
+    while words and words[0] in _COURTESY_WORDS:  # "could you sort these out for me please"
+        words.pop(0)
+    if words and words[-1] == "please":
+        words.pop()
+    if _HEADING_FRAME.match(" ".join(words)):
+        return ""
+    return _freedom_read(clause)
+
+
+def _freedom_read(clause: str) -> str | None:
+    """ "in any order" / "within each group in any order" for a clause that speaks of the order and says
+    it is free; None when it says anything else (a negation outside the free phrase, another word)."""
+    whole = _INDEPENDENT.search(clause)
+    if whole is None and not (_ORDER_TOPIC.search(clause) and _FREE_PREDICATE.search(clause)):
+        if not (_EACH_GROUP.search(clause) and _FREE_PREDICATE.search(clause)):
+            return None
+    rest = _EACH_GROUP.sub(" ", _FREE_PREDICATE.sub(" ", _ORDER_TOPIC.sub(" ", _INDEPENDENT.sub(" ", clause))))
+    if _NEGATION.search(rest) or not set(re.findall(r"[a-z']+", rest)) <= _FREEDOM_FILLER:
+        return None
+    return "within each group in any order" if _EACH_GROUP.search(clause) else "in any order"
