@@ -342,12 +342,12 @@ def remarks_read(text: str, names: Iterable[str]) -> str:
             words = piece[0].strip(" -")
             if not words or mention.search(words):
                 continue
-            read = _clause_read(words)
+            read = None if _FREE_ORDER.fullmatch(words) else _clause_read(words)  # a listed remark stays
             if read is not None:
-                out.append(text[at : piece.start()] + (f" {read} " if read else " "))
+                out.append(text[at : piece.start()] + (f" {read}" if read else ""))
                 at = piece.end()
         text = "".join(out) + text[at:]
-    return text
+    return re.sub(r"[ \t]+([,.;:!?])", r"\1", re.sub(r"[ \t]+", " ", text)).strip()
 
 
 def _clause_read(clause: str) -> str | None:
