@@ -553,8 +553,8 @@ DEV_H79: dict[int, list[str]] = {
         "apple: pink plate",
         "hey, when you get a sec, could you do the carrot on the blue plate, the orange on the yellow plate, "
         "the green apple on the green plate and the red apple on the pink plate? order doesn't matter",
-        "The blue plate gets the carrot, the yellow plate the orange, the green plate the green apple and the "
-        "pink plate the red apple. The order in which you do this is irrelevant.",
+        "The blue plate gets the carrot, the yellow plate the orange, the green plate the green apple and "
+        "the pink plate the red apple. The order in which you do this is irrelevant.",
         "Everything should be on its plate: carrot on blue, well, on the blue plate, orange on the yellow "
         "plate, green apple on the green plate, red apple on the pink plate. Any order."],
     4: ["Please sort these: - green apple: yellow plate - orange: yellow plate. Then: - carrot: blue plate "
@@ -565,4 +565,34 @@ DEV_H79: dict[int, list[str]] = {
         "blue plate after that. Within each pair the order is up to you.",
         "Yellow plate first (green apple, orange), then blue plate (carrot, red apple), any order inside "
         "each."],
+}
+
+# Issue 28 (h79): a second development batch over more forms: plates by colour alone, a "finally" step,
+# questions and answers, a forum post, "X precedes Y", texting abbreviations, "sort" with names.
+DEV2_H79: dict[int, list[str]] = {
+    1: ["green apple -> blue, orange -> yellow",
+        "Where does the green apple go? On the blue plate. And the orange? On the yellow plate.",
+        "pls put green apple on blue plate n orange on yellow plate thx",
+        "Hi all, first post here. I need my robot to put the green apple on the blue plate and the orange "
+        "on the yellow plate. Thanks in advance!",
+        "Sort the green apple onto the blue plate and the orange onto the yellow plate.",
+        "Put the green apple on the blue plate and the orange on the yellow."],
+    2: ["Item | Plate\ngreen apple | pink\norange | yellow\nred apple | blue\nany order",
+        "Could you sort these out for me? green apple to the pink plate, orange to the yellow plate, red "
+        "apple to the blue plate. Which one goes first is up to you.",
+        "The pink plate gets the green apple, the yellow plate gets the orange, and the blue plate gets the "
+        "red apple. It does not matter which one you start with.",
+        "green apple - pink plate\norange - yellow plate\nred apple - blue plate\n(no particular order)"],
+    3: ["hey! when you have a minute, carrot on blue, orange on yellow, green apple on green, red apple on "
+        "pink. whatever order",
+        "Would it be possible to put the carrot on the blue plate, the orange on the yellow plate, the green "
+        "apple on the green plate and the red apple on the pink plate? The order is completely up to you.",
+        "None of these depend on each other: carrot on the blue plate, orange on the yellow plate, green "
+        "apple on the green plate, red apple on the pink plate."],
+    4: ["First the green apple and the orange on the yellow plate, and finally the carrot and the red apple "
+        "on the blue plate. The order within each pair does not matter.",
+        "Green apple and orange onto the yellow plate must precede carrot and red apple onto the blue plate.",
+        "yellow plate: green apple, orange (first)\nblue plate: carrot, red apple (after that)",
+        "hey, when you get a sec: green apple and orange on the yellow plate first, then carrot and red "
+        "apple on the blue plate, any order within each pair"],
 }

@@ -51,7 +51,7 @@ _THAT = r"(?:that|this|those|these|them|it)"
 # you've done that", "subsequently", "next" (not "next to")
 _THEN = re.compile(
     r"\b(?:(?:and\s+)?then|after\s+(?:that|this|those|these|which)|afterwards?|thereafter|subsequently|"
-    r"next(?!\s+to\b)|second(?:ly)?|"
+    r"next(?!\s+to\b)|second(?:ly)?|(?:and\s+)?(?:finally|lastly)|"
     rf"(?:once|when|after)\s+(?:{_THAT}(?:'s|s|\s+is|\s+are|'re)\s+{_DONE}|"
     rf"you(?:'ve|\s+have|'re|\s+are)\s+{_DONE}(?:\s+(?:with\s+)?{_THAT})?|{_DONE}))\b"
 )
@@ -97,6 +97,10 @@ _GENERIC_QUANTITY = re.compile(
     r"\b(?P<count>two|three|four)\s+(?:[a-z]+\s+)?(?:items?|things?|fruits?|objects?|placements?|moves?|"
     r"pieces?|tasks?)\b"
 )
+
+# verbs that order one placement after another, which check 1's order words do not list: no reading of
+# the tabletop world takes them ("the green apple on the yellow plate must precede the carrot ...")
+_RELATION_VERB = re.compile(r"\bpreced(?:e|es|ed|ing)\b")
 
 Reading = tuple[list[BaseTaskSpec], list[tuple[str, str]], list[list[str]], str]
 
@@ -165,6 +169,9 @@ class TabletopReader:
             if type_ is not None and type_ not in used:
                 kind = "place" if _is_plate(type_) else "object"
                 out[name] = Unread(name, kind, f"no base task uses it ({type_})")
+        for found in _RELATION_VERB.finditer(res.instruction.lower()):
+            why = "an order between placements that this reading does not take"
+            out[found[0]] = Unread(found[0], "order", why)
         return list(out.values())
 
 
@@ -234,7 +241,7 @@ def read_pairs(text: str, types: set[str]) -> Reading | None:
     by_words = {camel_words(t): t for t in types}
     kinds = {w: _is_plate(t) for w, t in by_words.items()}
     plain = plain_words(text, kinds, _shared_heads(by_words))
-    if stated_not_asked(plain, by_words) is not None:
+    if stated_not_asked(plain, by_words) is not None or _RELATION_VERB.search(plain):
         return None
     plain, last_free = last_group_free(plain)
     unordered, remarks = free_order(plain)
@@ -331,7 +338,8 @@ def _trailing_then_fronted(text: str, pattern: re.Pattern[str]) -> str:
         starts = [b.end() for b in _BOUNDARY.finditer(text, 0, m.start())]
         start = starts[-1] if starts else 0
         sentence = text[start : m.start()]
-        if "," in sentence or not pattern.search(sentence) or _THEN.search(sentence) or _FIRST.search(sentence):
+        marked = _THEN.search(sentence) or _FIRST.search(sentence)
+        if "," in sentence or not pattern.search(sentence) or marked:
             continue
         text = f"{text[:start]} {m[0]} {sentence.strip()}{text[m.end() :]}"
     return text
@@ -372,6 +380,7 @@ def _paired(types_in_order: list[str]) -> list[tuple[str, str]] | None:
             runs[-1].append(t)
         else:
             runs.append([t])
+    runs = [r[:1] if _is_plate(r[0]) and len(set(r)) == 1 else r for r in runs]  # "on blue, the blue plate"
     if len(runs) % 2 or any(_is_plate(r[0]) and len(r) != 1 for r in runs):
         return None
     plate_first = bool(runs) and _is_plate(runs[0][0])

@@ -85,7 +85,9 @@ def wished_states_plain(text: str, names: Iterable[str]) -> str:
     yellow plate" -> "... the orange on the yellow plate"): each such clause is asked for, however far
     from its wish (check 1 looks six words back)."""
     mention = mention_pattern(names).pattern.removesuffix(r"\b")
-    state = re.compile(rf"(?P<name>{mention})(?:\s+(?:both|all|too|also))?{_STATE_VERB}{_STATE_ADVERB}(?={_LOCATIVE})")
+    state = re.compile(
+        rf"(?P<name>{mention})(?:\s+(?:both|all|too|also))?{_STATE_VERB}{_STATE_ADVERB}(?={_LOCATIVE})"
+    )
     out = []
     for sentence in re.split(r"(?<=[.;!?\n])", text):
         if _WISH_FRAME.search(sentence) and not _REFERENCE.search(sentence):
@@ -171,9 +173,58 @@ def plain_words(text: str, kinds: dict[str, bool], heads: dict[str, list[str]]) 
     text = _THE_FOLLOWING.sub("these", _FILLER.sub(" ", polite_frames(text)))
     text = remarks_read(text, kinds)
     text = _PAIR_VERB.sub("match", text)
+    text = _tidied_as_put(text, kinds)
+    text = answers_joined(plates_by_colour(text, kinds), kinds)
     text = _APPOSITION.sub(lambda m: m[0] if _names_a_word(m["words"], kinds) else ",", text)
     text = corrected(text, kinds)
     return _plurals_named(text, kinds, heads)
+
+
+def _tidied_as_put(text: str, kinds: dict[str, bool]) -> str:
+    """ "sort the green apple onto the blue plate": a verb of tidying before a named object is the one
+    action of this world, placing it."""
+    objects = mention_pattern([n for n, plate in kinds.items() if not plate]).pattern
+    return re.sub(rf"\b{_TIDY_VERB}(?:\s+(?:out|up))?(?=\s+(?:the\s+)?{objects})", "put", text)
+
+
+def plates_by_colour(text: str, kinds: dict[str, bool]) -> str:
+    """A plate said by its colour alone ("green apple -> blue", "the orange on the yellow") named in full:
+    a colour word of a plate's name that starts no name and is followed by no noun of its own ("the
+    green apple", "the yellow one", "the blue and yellow plates" are left)."""
+    colours = {n.split()[0]: n for n, plate in kinds.items() if plate and len(n.split()) == 2}
+    heads = {w for n in kinds for w in n.split()[1:]} | {"one", "ones", "and", "or", "plates", "plated"}
+    alone = re.compile(rf"\b(?:{'|'.join(map(re.escape, colours))})\b(?!\s*(?:{'|'.join(sorted(heads))})\b)")
+    out, at = [], 0
+    for name in [*mention_pattern(kinds).finditer(text), None]:
+        end = name.start() if name is not None else len(text)
+        out.append(alone.sub(lambda m: colours[m[0]], text[at:end]))
+        if name is not None:
+            out.append(name[0])
+            at = name.end()
+    return "".join(out)
+
+
+_ASKED_WHERE = re.compile(
+    r"^(?P<lead>\s*(?:and\s+)?(?:(?:where|how\s+about|what\s+about)\s+(?:(?:does|do|should|will|would|must|can)\s+)?)?)"
+)
+
+
+def answers_joined(text: str, kinds: dict[str, bool]) -> str:
+    """A question that names objects and no plate, answered by the sentence after it that names a plate
+    and no object, as one placement: "where does the green apple go? on the blue plate." -> "the green
+    apple go on the blue plate."."""
+    pattern = mention_pattern(kinds)
+    sentences = re.split(r"(?<=[.;!?])(?![.;!?])", text)
+    out: list[str] = []
+    for sentence in sentences:
+        plates = {kinds.get(_name(f).removesuffix("s")) for f in pattern.findall(sentence)}
+        asked = out[-1] if out else ""
+        if asked.rstrip().endswith("?") and plates == {True}:
+            if {kinds.get(_name(f).removesuffix("s")) for f in pattern.findall(asked)} == {False}:
+                out[-1] = _ASKED_WHERE.sub("", asked.rstrip()[:-1]) + " " + sentence.lstrip()
+                continue
+        out.append(sentence)
+    return "".join(out)
 
 
 def mention_pattern(names: Iterable[str], flags: int = 0) -> re.Pattern[str]:
@@ -302,7 +353,7 @@ _HEADING_FRAME = re.compile(
 )
 # a freedom statement: what it is about (the order, which comes first, what depends on what) ...
 _ORDER_TOPIC = re.compile(
-    r"\b(?:order(?:ing)?|sequenc(?:e|ing)|which\b[a-z'\s]{0,24}?\bfirst)\b"
+    r"\b(?:order(?:ing)?|sequenc(?:e|ing)|which\b[a-z'\s]{0,24}?\b(?:first|(?:start|begin)(?:\s+with)?))\b"
 )
 _INDEPENDENT = re.compile(
     r"\b(?:none|neither|no\s+one)\s+of\s+(?:these|them|those|the\s+\w+)\s+depends?\s+on\s+(?:another|any\s+other|"
@@ -325,8 +376,8 @@ _EACH_GROUP = re.compile(
 _FREEDOM_FILLER = frozenset(
     "the in which you do them they these those this it that of for me us to is are be at all really totally "
     "entirely quite completely here and so just it's its can may will how place placement placements put "
-    "one ones a way round i we honestly pretty much first go goes what done like want prefer wish choose pick fine "
-    "ok okay good".split()
+    "one ones a way round i we honestly pretty much first go goes what done like want prefer wish choose "
+    "pick fine ok okay good".split()
 )
 _NEGATION = re.compile(r"\b(?:not|never|no|none|n't)\b|n't\b")
 
@@ -371,7 +422,9 @@ def _freedom_read(clause: str) -> str | None:
     if whole is None and not (_ORDER_TOPIC.search(clause) and _FREE_PREDICATE.search(clause)):
         if not (_EACH_GROUP.search(clause) and _FREE_PREDICATE.search(clause)):
             return None
-    rest = _EACH_GROUP.sub(" ", _FREE_PREDICATE.sub(" ", _ORDER_TOPIC.sub(" ", _INDEPENDENT.sub(" ", clause))))
+    rest = clause
+    for said in (_INDEPENDENT, _ORDER_TOPIC, _FREE_PREDICATE, _EACH_GROUP):
+        rest = said.sub(" ", rest)
     if _NEGATION.search(rest) or not set(re.findall(r"[a-z']+", rest)) <= _FREEDOM_FILLER:
         return None
     return "within each group in any order" if _EACH_GROUP.search(clause) else "in any order"
