@@ -37,7 +37,6 @@ from nl2hltl2plan.language.tabletop_wording import (
     mention_pattern,
     numbered_steps,
     plain_words,
-    remarks_read,
     stated_not_asked,
     steps_read,
     wished_states_plain,
@@ -102,6 +101,12 @@ _GENERIC_QUANTITY = re.compile(
 # the tabletop world takes them ("the green apple on the yellow plate must precede the carrot ...")
 _RELATION_VERB = re.compile(r"\bpreced(?:e|es|ed|ing)\b")
 
+# "the order matters" / "sequence is important": an order is meant, but only the mention order says which
+_ORDER_MATTERS = re.compile(
+    r"\b(?:order(?:ing)?|sequence)\b(?:(?![.;!?]|\bnot\b|n't)[^.;!?]){0,30}?\b(?:matters|(?:does|do)\s+matter|"
+    r"is\s+important|counts)\b"
+)
+
 Reading = tuple[list[BaseTaskSpec], list[tuple[str, str]], list[list[str]], str]
 
 
@@ -130,7 +135,7 @@ class TabletopReader:
                 f"'{stated}' says where something is, not what to do: ask for it (\"put ...\", \"make sure "
                 "... is on ...\") or leave it out"
             )
-        return numbered_steps(corrected(remarks_read(instruction, kinds), kinds))
+        return numbered_steps(corrected(instruction, kinds))
 
     def reread(self, instruction: str, backend: str) -> LanguageResult | None:
         return tabletop_fallback(instruction, self.world, backend)
@@ -169,6 +174,9 @@ class TabletopReader:
             if type_ is not None and type_ not in used:
                 kind = "place" if _is_plate(type_) else "object"
                 out[name] = Unread(name, kind, f"no base task uses it ({type_})")
+        for found in _ORDER_MATTERS.finditer(res.instruction.lower()):
+            why = "it says that the order matters, not which order: say it with first / then"
+            out[found[0]] = Unread(found[0], "order", why)
         for found in _RELATION_VERB.finditer(res.instruction.lower()):
             why = "an order between placements that this reading does not take"
             out[found[0]] = Unread(found[0], "order", why)
@@ -241,7 +249,8 @@ def read_pairs(text: str, types: set[str]) -> Reading | None:
     by_words = {camel_words(t): t for t in types}
     kinds = {w: _is_plate(t) for w, t in by_words.items()}
     plain = plain_words(text, kinds, _shared_heads(by_words))
-    if stated_not_asked(plain, by_words) is not None or _RELATION_VERB.search(plain):
+    unread_order = _RELATION_VERB.search(plain) or _ORDER_MATTERS.search(plain)  # an order not taken here
+    if stated_not_asked(plain, by_words) is not None or unread_order:
         return None
     plain, last_free = last_group_free(plain)
     unordered, remarks = free_order(plain)
@@ -308,7 +317,10 @@ def _ordered_groups(text: str, pattern: re.Pattern[str]) -> list[str] | None:
     """The text cut at its "then"s; a first-marker may open the first group (before its first name),
     close it, or, when the group names one plate, stand anywhere in it; and only when a "then" follows.
     None: no text left, or a "first" with no "then"."""
-    parts = [q for p in _THEN.split(text) for q in _before_split(p, pattern) if q.strip(" ,.;:!?")]
+    split = _THEN.split(text)
+    if len(split) > 1 and not split[0].strip(" ,.;:!?-"):
+        return None  # "when you're done, put ...": after what is not said
+    parts = [q for p in split for q in _before_split(p, pattern) if q.strip(" ,.;:!?")]
     if not parts:
         return None
     names = [_name(f) for f in pattern.findall(parts[0])]

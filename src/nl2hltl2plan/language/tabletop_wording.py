@@ -204,27 +204,36 @@ def plates_by_colour(text: str, kinds: dict[str, bool]) -> str:
     return "".join(out)
 
 
+# a question that asks where objects go: "where does the green apple go?", "and the orange?", "what about
+# the carrot?" (not "where is the carrot?": that asks where it is)
 _ASKED_WHERE = re.compile(
-    r"^(?P<lead>\s*(?:and\s+)?(?:(?:where|how\s+about|what\s+about)\s+(?:(?:does|do|should|will|would|must|can)\s+)?)?)"
+    r"^\s*(?:and\s+)?(?:(?:where\s+(?:does|do|should|will|would|must|can)|what\s+about|how\s+about)\s+)?"
+    r"(?P<objects>[a-z\s,']+?)(?:\s+(?:go|goes|belong|belongs|end\s+up|land))?\s*\?\s*$"
 )
 
 
 def answers_joined(text: str, kinds: dict[str, bool]) -> str:
-    """A question that names objects and no plate, answered by the sentence after it that names a plate
-    and no object, as one placement: "where does the green apple go? on the blue plate." -> "the green
-    apple go on the blue plate."."""
+    """A question that asks where objects go (`_ASKED_WHERE`), answered by the sentence after it that
+    names a plate and no object, as one placement: "where does the green apple go? on the blue plate."
+    -> "the green apple on the blue plate."."""
     pattern = mention_pattern(kinds)
-    sentences = re.split(r"(?<=[.;!?])(?![.;!?])", text)
+
+    def named(words: str) -> set[bool | None]:
+        return {kinds.get(_name(f).removesuffix("s")) for f in pattern.findall(words)}
+
     out: list[str] = []
-    for sentence in sentences:
-        plates = {kinds.get(_name(f).removesuffix("s")) for f in pattern.findall(sentence)}
-        asked = out[-1] if out else ""
-        if asked.rstrip().endswith("?") and plates == {True}:
-            if {kinds.get(_name(f).removesuffix("s")) for f in pattern.findall(asked)} == {False}:
-                out[-1] = _ASKED_WHERE.sub("", asked.rstrip()[:-1]) + " " + sentence.lstrip()
-                continue
-        out.append(sentence)
+    for sentence in re.split(r"(?<=[.;!?])(?![.;!?])", text):
+        asked = _ASKED_WHERE.match(out[-1]) if out and named(sentence) == {True} else None
+        if asked and named(asked["objects"]) == {False} and _only_names(asked["objects"], pattern):
+            out[-1] = f" {asked['objects']} {sentence.lstrip()}"
+        else:
+            out.append(sentence)
     return "".join(out)
+
+
+def _only_names(words: str, pattern: re.Pattern[str]) -> bool:
+    """Are `words` names joined by "the", "a", "and" and commas alone ("the carrot and the orange")?"""
+    return not re.sub(r"\b(?:the|and|a|an)\b|[\s,]", "", pattern.sub(" ", words))
 
 
 def mention_pattern(names: Iterable[str], flags: int = 0) -> re.Pattern[str]:
