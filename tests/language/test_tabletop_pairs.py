@@ -323,3 +323,75 @@ def test_a_full_reading_the_pairs_reading_contradicts_is_not_taken():
     doubted = reader.doubted(unordered, "offline")
     assert doubted.partial and "read two ways" in doubted.unparsed[-1]
     assert "A before B" in doubted.unparsed[-1]
+
+
+APPLE_BLUE_ORANGE_YELLOW = ([("GreenApple", "BluePlate"), ("Orange", "YellowPlate")], [])
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Please sort these: - green apple: blue plate - orange: yellow plate",
+        "could you organise this for me - orange - yellow plate, green apple - blue plate",
+        "hey, whenever you're free, the green apple to the blue plate and the orange to the yellow plate",
+        "yo, mind doing me a favour? green apple on blue plate, orange on yellow plate. no rush",
+        "green apple on the blue plate, orange on the yellow plate. The order in which you do them is irrelevant.",
+        "green apple on the blue plate, orange on the yellow plate; it makes no difference which one comes first",
+        "Orange: yellow plate. Green apple: blue plate. None of these depends on another.",
+    ],
+)
+def test_clauses_that_name_nothing_are_read_by_their_words(text):
+    """Courtesy, a list's heading and a freedom statement, whatever their phrasing (`remarks_read`)."""
+    assert _reading(text) == APPLE_BLUE_ORANGE_YELLOW
+
+
+def test_a_freedom_statement_about_each_group_leaves_the_groups_ordered():
+    text = (
+        "sort these: green apple - yellow plate, orange - yellow plate. then: carrot - blue plate, red apple "
+        "- blue plate. the order inside each pair is up to you."
+    )
+    pairs, order = _reading(text)
+    first, second = pairs[1:3], [pairs[0], pairs[3]]
+    assert first == [("GreenApple", "YellowPlate"), ("Orange", "YellowPlate")]
+    assert order == sorted((a, b) for a in first for b in second)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "the order matters: the orange on the yellow plate, the green apple on the blue plate",
+        "green apple on the blue plate and orange on the yellow plate; the order is not up to you",
+        "the green apple on the blue plate must precede the orange on the yellow plate",
+        "where is the green apple? on the blue plate. put the orange on the yellow plate",
+        "hey, when you're done, put the orange on the yellow plate and the green apple on the blue plate",
+    ],
+)
+def test_order_words_no_reading_takes_are_refused(text):
+    """An order that is said but not which one, a relation verb, a question about where a thing is, a
+    "when you're done" with nothing before it: refused, never read as no order."""
+    assert _reading(text) is None
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "green apple -> blue, orange -> yellow",
+        "Put the green apple on the blue plate and the orange on the yellow.",
+        "Where does the green apple go? On the blue plate. And the orange? On the yellow plate.",
+        "Sort the green apple onto the blue plate and the orange onto the yellow plate.",
+        "put the green apple on the blue plate and the orange on the pink, no wait, the yellow",
+        "I want that green apple is on blue plate, carrot is not needed, orange is on yellow plate.",
+    ],
+)
+def test_plates_by_colour_answers_and_wishes_far_from_their_verb(text):
+    """A plate named by its colour alone, a question about where an object goes answered by a plate,
+    "sort" before an object, and a state under a wish said more than six words before it."""
+    expected = None if "not needed" in text else APPLE_BLUE_ORANGE_YELLOW
+    assert _reading(text) == expected
+
+
+def test_a_sentence_final_then_orders_its_own_sentence_after_the_one_before():
+    pairs, order = _reading(
+        "The green apple goes on the blue plate first. The orange goes on the yellow plate after that."
+    )
+    assert order == [(("GreenApple", "BluePlate"), ("Orange", "YellowPlate"))]

@@ -101,10 +101,12 @@ _GENERIC_QUANTITY = re.compile(
 # the tabletop world takes them ("the green apple on the yellow plate must precede the carrot ...")
 _RELATION_VERB = re.compile(r"\bpreced(?:e|es|ed|ing)\b")
 
-# "the order matters" / "sequence is important": an order is meant, but only the mention order says which
+# "the order matters" / "sequence is important" / "the order is not up to you": an order is meant, but only
+# the mention order says which
 _ORDER_MATTERS = re.compile(
     r"\b(?:order(?:ing)?|sequence)\b(?:(?![.;!?]|\bnot\b|n't)[^.;!?]){0,30}?\b(?:matters|(?:does|do)\s+matter|"
-    r"is\s+important|counts)\b"
+    r"is\s+important|counts)\b|\b(?:order(?:ing)?|sequence)\s+(?:is|isn't)\s+(?:not\s+)?(?<=n't\s|not\s)(?:up\s+to\s+"
+    r"you|free|arbitrary|optional|your\s+(?:call|choice))\b"
 )
 
 Reading = tuple[list[BaseTaskSpec], list[tuple[str, str]], list[list[str]], str]

@@ -413,7 +413,7 @@ def remarks_read(text: str, names: Iterable[str]) -> str:
 def _clause_read(clause: str) -> str | None:
     """ "" for courtesy or a list heading, a free-order phrase for a freedom statement, None otherwise."""
     words = re.findall(r"[a-z']+", _UNHURRIED.sub(" ", clause))
-    if words and all(w in _COURTESY_WORDS for w in words):
+    if all(w in _COURTESY_WORDS for w in words):  # "no rush" alone too
         return ""
     while words and words[0] in _COURTESY_WORDS:  # "could you sort these out for me please"
         words.pop(0)
