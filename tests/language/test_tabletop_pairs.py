@@ -335,8 +335,8 @@ APPLE_BLUE_ORANGE_YELLOW = ([("GreenApple", "BluePlate"), ("Orange", "YellowPlat
         "could you organise this for me - orange - yellow plate, green apple - blue plate",
         "hey, whenever you're free, the green apple to the blue plate and the orange to the yellow plate",
         "yo, mind doing me a favour? green apple on blue plate, orange on yellow plate. no rush",
-        "green apple on the blue plate, orange on the yellow plate. The order in which you do them is irrelevant.",
-        "green apple on the blue plate, orange on the yellow plate; it makes no difference which one comes first",
+        "green apple on the blue plate, orange on the yellow plate. The order you do them in is irrelevant.",
+        "green apple on the blue plate, orange on the yellow plate; it makes no difference which comes first",
         "Orange: yellow plate. Green apple: blue plate. None of these depends on another.",
     ],
 )
