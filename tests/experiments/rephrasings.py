@@ -596,3 +596,34 @@ DEV2_H79: dict[int, list[str]] = {
         "hey, when you get a sec: green apple and orange on the yellow plate first, then carrot and red "
         "apple on the blue plate, any order within each pair"],
 }
+
+# Issue 28 (h79): a third development batch: openers and headings of other kinds, freedom said in other
+# words, and the order said of plates rather than of objects ("once the yellow plate is done").
+DEV3_H79: dict[int, list[str]] = {
+    1: ["hey there! quick favour: green apple on the blue plate and orange on the yellow plate",
+        "Here's the plan: the green apple goes to the blue plate, the orange goes to the yellow plate.",
+        "so, um, if you could, the green apple on the blue plate and the orange on the yellow plate",
+        "whenever you can, green apple to blue plate and orange to yellow plate, ta"],
+    2: ["Feel free to do them in any order: green apple on pink plate, orange on yellow plate, red apple "
+        "on blue plate.",
+        "green apple on the pink plate, orange on the yellow plate, red apple on the blue plate. I don't "
+        "mind which goes first.",
+        "TODO: green apple -> pink plate; orange -> yellow plate; red apple -> blue plate. Order isn't "
+        "important.",
+        "Can you make it so the green apple is on the pink plate, the orange is on the yellow plate and the "
+        "red apple is on the blue plate? Doesn't matter what order."],
+    3: ["carrot on the blue plate, orange on the yellow plate, green apple on the green plate, red apple "
+        "on the pink plate - the order's up to you",
+        "Instructions: carrot to blue plate, orange to yellow plate, green apple to green plate, red apple "
+        "to pink plate. No specific order needed.",
+        "at some point today, could you put the carrot on the blue plate, the orange on the yellow plate, "
+        "the green apple on the green plate and the red apple on the pink plate? any sequence is fine"],
+    4: ["Do the yellow plate before the blue plate: green apple and orange on the yellow plate, carrot "
+        "and red apple on the blue plate.",
+        "Start with the yellow plate (green apple and orange), then do the blue plate (carrot and red "
+        "apple). Within each plate the order is free.",
+        "Green apple and orange on the yellow plate. Once the yellow plate is done, carrot and red apple on "
+        "the blue plate, in either order.",
+        "hey, when you get a sec: yellow plate gets green apple and orange first, blue plate gets carrot and "
+        "red apple after, any order within each"],
+}

@@ -259,7 +259,8 @@ def read_pairs(text: str, types: set[str]) -> Reading | None:
     free, listed = bool(remarks), frees_every_step(remarks)
     stepped = steps_read(last_item_unmarked(unordered) if listed else unordered, listed)
     pattern = mention_pattern(by_words)
-    groups = None if stepped is None else _ordered_groups(_trailing_then_fronted(stepped, pattern), pattern)
+    stepped = None if stepped is None else _trailing_then_fronted(stepped, pattern)
+    groups = None if stepped is None else _ordered_groups(stepped, pattern)
     if stepped is None or groups is None:
         return None
     tasks: list[BaseTaskSpec] = []
@@ -338,24 +339,27 @@ def _ordered_groups(text: str, pattern: re.Pattern[str]) -> list[str] | None:
     return parts
 
 
-_BOUNDARY = re.compile(r"[.;!?\n]")
+_CLAUSE_END = re.compile(r"[,.;!?\n]")
+# a "then" that closes its clause: "the carrot goes on the blue plate after that.", "... red apple after,"
+_TRAILING_THEN = re.compile(
+    rf"(?:(?P<first>\bfirst\b)|{_THEN.pattern}|\b(?:after|later|last)\b)(?=\s*(?:[,.;!?\n]|$))"
+)
 
 
 def _trailing_then_fronted(text: str, pattern: re.Pattern[str]) -> str:
-    """A "then" that closes its sentence ("the carrot goes on the blue plate after that.") put before it,
-    where it orders that sentence's placements after the ones before; a sentence with a comma is left
-    (which of its parts comes after is not said), and so refused."""
-    for m in reversed(list(_THEN.finditer(text))):
-        end = _BOUNDARY.search(text, m.end())
-        if text[m.end() : end.start() if end else len(text)].strip(" ,"):
-            continue
-        starts = [b.end() for b in _BOUNDARY.finditer(text, 0, m.start())]
+    """A "then" or "first" that closes its clause put before it ("the carrot goes on the blue plate after
+    that" -> "then the carrot goes on the blue plate"), where the clause names one plate (so that its
+    placements are one step: "A on P and B on Q after that" does not say whether B alone comes after)
+    and, for a "then", something is named before it."""
+    for m in reversed(list(_TRAILING_THEN.finditer(text))):
+        starts = [b.end() for b in _CLAUSE_END.finditer(text, 0, m.start())]
         start = starts[-1] if starts else 0
-        sentence = text[start : m.start()]
-        marked = _THEN.search(sentence) or _FIRST.search(sentence)
-        if "," in sentence or not pattern.search(sentence) or marked:
+        clause = text[start : m.start()]
+        plates = {_name(f) for f in pattern.findall(clause) if _name(f).endswith("plate")}
+        marked = _THEN.search(clause) or _FIRST.search(clause)
+        if len(plates) != 1 or marked or not (m["first"] or pattern.search(text, 0, start)):
             continue
-        text = f"{text[:start]} {m[0]} {sentence.strip()}{text[m.end() :]}"
+        text = f"{text[:start]} {'first' if m['first'] else 'then'} {clause.strip()}{text[m.end() :]}"
     return text
 
 
