@@ -395,3 +395,34 @@ def test_a_sentence_final_then_orders_its_own_sentence_after_the_one_before():
         "The green apple goes on the blue plate first. The orange goes on the yellow plate after that."
     )
     assert order == [(("GreenApple", "BluePlate"), ("Orange", "YellowPlate"))]
+
+
+@pytest.mark.parametrize(
+    "text, ordered",
+    [
+        ("Do the yellow plate before the blue plate: green apple and orange on the yellow plate, carrot "
+         "and red apple on the blue plate.", True),
+        ("The blue plate after the yellow plate. Carrot and red apple on the blue plate, green apple and "
+         "orange on the yellow plate.", True),
+        ("Do the yellow plate before the blue plate: green apple and orange on the yellow plate, carrot on "
+         "the blue plate, red apple on the pink plate.", None),
+        ("Do the yellow plate before the blue plate: first green apple and orange on the yellow plate, then "
+         "carrot and red apple on the blue plate.", True),
+    ],
+)
+def test_an_order_said_of_plates_orders_their_placements(text, ordered):
+    """Every placement on the first plate before every one on the second (the same order said again of
+    the placements is read by the grammar); a plate the order leaves out is refused."""
+    reading = _reading(text)
+    if ordered is None:
+        assert reading is None
+        return
+    pairs, order = reading
+    yellow = [p for p in pairs if p[1] == "YellowPlate"]
+    blue = [p for p in pairs if p[1] == "BluePlate"]
+    assert len(pairs) == 4 and order == sorted((a, b) for a in yellow for b in blue)
+
+
+def test_make_it_so_is_a_wish():
+    text = "Can you make it so the green apple is on the blue plate and the orange is on the yellow plate?"
+    assert _reading(text) == APPLE_BLUE_ORANGE_YELLOW

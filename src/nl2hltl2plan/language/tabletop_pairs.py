@@ -260,7 +260,10 @@ def read_pairs(text: str, types: set[str]) -> Reading | None:
     stepped = steps_read(last_item_unmarked(unordered) if listed else unordered, listed)
     pattern = mention_pattern(by_words)
     stepped = None if stepped is None else _trailing_then_fronted(stepped, pattern)
-    groups = None if stepped is None else _ordered_groups(stepped, pattern)
+    plates_first, rest = _plate_order(stepped or "", pattern)
+    if plates_first and (_THEN.search(rest) or _FIRST.search(rest) or _BEFORE.search(rest)):
+        return None  # the order said of plates and again of placements
+    groups = None if stepped is None else _ordered_groups(rest, pattern)
     if stepped is None or groups is None:
         return None
     tasks: list[BaseTaskSpec] = []
@@ -278,9 +281,13 @@ def read_pairs(text: str, types: set[str]) -> Reading | None:
                     BaseTaskSpec(id=ids[-1], text=words, kind="place", object=[obj], receptacle=[plate])
                 )
         group_ids.append(ids)
+    if plates_first:
+        group_ids = [[t.id for t in tasks if camel_words(t.receptacle[0]) == p] for p in plates_first]
     objects = [t.object[0] for t in tasks]
     if not tasks or len(set(objects)) != len(objects) or any(not g for g in group_ids):
         return None
+    if sum(map(len, group_ids)) != len(tasks):
+        return None  # a plate with placements that the order of the plates leaves out
     if last_free is not None and (len(group_ids) < 2 or len(group_ids[-1]) != last_free):
         return None  # "those last two can go in any order" must name the last group, and only it
     if free and all(len(g) < 2 for g in group_ids):
@@ -361,6 +368,35 @@ def _trailing_then_fronted(text: str, pattern: re.Pattern[str]) -> str:
             continue
         text = f"{text[:start]} {'first' if m['first'] else 'then'} {clause.strip()}{text[m.end() :]}"
     return text
+
+
+# the words besides plate names of an order said of plates alone ("do the yellow plate before the blue
+# plate", "start with the yellow plate, then the blue plate", "the blue plate after the yellow plate")
+_PLATE_ORDER_WORDS = frozenset(
+    "do the fill load start begin with and then first before after next please you could can".split()
+)
+
+
+def _plate_order(text: str, pattern: re.Pattern[str]) -> tuple[list[str], str]:
+    """The plates (in words) in the order that a clause naming two or more plates and nothing else says,
+    and the text without that clause; no plates and the text as it is when there is no such clause."""
+    for piece in re.finditer(r"[^.;:!?\n]+", text):
+        found = list(pattern.finditer(piece[0]))
+        plates = [_name(f[0]) for f in found]
+        words = set(re.findall(r"[a-z']+", pattern.sub(" ", piece[0])))
+        if len(plates) < 2 or len(set(plates)) != len(plates) or not all(p.endswith("plate") for p in plates):
+            continue
+        if not words <= _PLATE_ORDER_WORDS:
+            continue
+        gaps = [piece[0][a.end() : b.start()] for a, b in zip(found, found[1:], strict=False)]
+        if all(re.search(r"\b(?:before|then|next)\b", g) for g in gaps):
+            order = plates
+        elif len(gaps) == 1 and re.search(r"\bafter\b", gaps[0]) and "first" not in words:
+            order = plates[::-1]
+        else:
+            continue
+        return order, text[: piece.start()] + " " + text[piece.end() :]
+    return [], text
 
 
 def _before_split(part: str, pattern: re.Pattern[str]) -> list[str]:

@@ -49,6 +49,7 @@ _HOLDS = r"\s+(?:has|had|holds|held|contains|contained|carries|carried)\s+(?=(?:
 _GOAL_FRAME = re.compile(
     r"\b(?:please|make\s+sure|ensure|see\s+(?:to\s+it\s+)?that|want|wish|like|love|need|needs|should|must|"
     r"have\s+to|has\s+to|hope|expect|ask|goal|target|final|desired|end\s+state|result|postcondition|"
+    r"(?:make|have|get)\s+it\s+so|"
     r"by\s+the\s+end|at\s+the\s+end|in\s+the\s+end|once|when|after|before|until|as\s+soon\s+as)\b"
 )
 _SENTENCE_END = re.compile(r"[.;!?]")
@@ -74,7 +75,8 @@ def stated_not_asked(text: str, names: Iterable[str]) -> str | None:
 # a wish said before a state clause (no reference to a placement: "once", "when", "after" order the tasks)
 _WISH_FRAME = re.compile(
     r"\b(?:please|make\s+sure|ensure|see\s+(?:to\s+it\s+)?that|want|wish|like|love|need|needs|should|must|"
-    r"have\s+to|has\s+to|hope|expect|goal|target|final|desired|end\s+state|postcondition)\b"
+    r"have\s+to|has\s+to|hope|expect|goal|target|final|desired|end\s+state|postcondition|"
+    r"(?:make|have|get)\s+it\s+so)\b"
 )
 _REFERENCE = re.compile(r"\b(?:once|when|whenever|after|before|until|till|as\s+soon\s+as|if|unless)\b")
 
@@ -166,13 +168,15 @@ def polite_frames(text: str) -> str:
 
 def plain_words(text: str, kinds: dict[str, bool], heads: dict[str, list[str]]) -> str:
     """The lowercased text with ordinals spelt out, politeness that carries nothing removed, the verb
-    "pair" read as "match", corrections applied and plurals named. `kinds`: each object or plate name
-    (in words) -> is it a plate; `heads`: a head noun that several objects share ("apple") -> their
-    names."""
+    "pair" read as "match", "make it so" as "make sure", clauses that name nothing read (`remarks_read`),
+    a tidying verb before an object as "put", plates said by colour named, questions joined with their
+    answers, corrections applied and plurals named. `kinds`: each object or plate name (in words) -> is
+    it a plate; `heads`: a head noun that several objects share ("apple") -> their names."""
     text = re.sub(r"\b(1st|2nd|3rd|4th)\b", lambda m: _ORDINALS[m[1]], text.lower())
     text = _THE_FOLLOWING.sub("these", _FILLER.sub(" ", polite_frames(text)))
     text = remarks_read(text, kinds)
     text = _PAIR_VERB.sub("match", text)
+    text = re.sub(r"\b(?:make|have|get)\s+it\s+so(?:\s+that)?\b", "make sure", text)  # the same goal
     text = _tidied_as_put(text, kinds)
     text = answers_joined(plates_by_colour(text, kinds), kinds)
     text = _APPOSITION.sub(lambda m: m[0] if _names_a_word(m["words"], kinds) else ",", text)
