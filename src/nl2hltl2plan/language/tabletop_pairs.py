@@ -32,6 +32,7 @@ from nl2hltl2plan.language.tabletop_wording import (
     corrected,
     free_order,
     frees_every_step,
+    labels_out_of_turn,
     last_group_free,
     last_item_unmarked,
     mention_pattern,
@@ -176,6 +177,8 @@ class TabletopReader:
             if type_ is not None and type_ not in used:
                 kind = "place" if _is_plate(type_) else "object"
                 out[name] = Unread(name, kind, f"no base task uses it ({type_})")
+        if (labels := labels_out_of_turn(res.instruction.lower())) is not None:
+            out[labels] = Unread(labels, "order", "steps numbered out of turn")
         for found in _ORDER_MATTERS.finditer(res.instruction.lower()):
             why = "it says that the order matters, not which order: say it with first / then"
             out[found[0]] = Unread(found[0], "order", why)

@@ -299,6 +299,9 @@ _LABEL = re.compile(
     rf"(?:^|(?<=[.;!?:,]))\s*(?:{_STEP_NOUN}\s*(?P<n1>\d|one|two|three|four|first|second|third|fourth)|"
     rf"(?P<n2>first|second|third|fourth)\s+{_STEP_NOUN})\s*[:.)\-]\s*"
 )
+_NOUN_LABEL = re.compile(
+    r"(?:^|(?<=[.;!?:,]))\s*(?P<noun>[a-z]+)\s+(?P<n1>\d|one|two|three|four)(?P<n2>)\s*[:.)\-]\s*"
+)
 _LIST_NUMBER = re.compile(r"(?:^|(?<=[\s.;!?]))\(?(?P<n>\d)[.)]\s+")
 
 
@@ -306,11 +309,33 @@ def steps_read(text: str, listed: bool) -> str | None:
     """Step labels, and bare list numbers, as "first" / "then" (numbered 1, 2, ... in turn); bare list
     numbers beside a remark that frees the whole list (`listed`: "1) ... 2) ... in any order") only list,
     and are removed. None: labels or numbers out of turn."""
-    labels = list(_LABEL.finditer(text))
+    labels = _labels(text)
     if [_step_number(m["n1"] or m["n2"]) for m in labels] != list(range(1, len(labels) + 1)):
         return None
     text = _as_steps(text, labels)
     return list_numbers_read(text, listed)
+
+
+def _labels(text: str) -> list[re.Match[str]]:
+    """The step labels of `text`: "Step 1:", "First course:", or any one noun numbered ("Priority 1: ...
+    Priority 2: ...")."""
+    labels = list(_LABEL.finditer(text))
+    if not labels:
+        labels = list(_NOUN_LABEL.finditer(text))
+        if len(labels) < 2 or len({m["noun"] for m in labels}) != 1:
+            return []
+    return labels
+
+
+def labels_out_of_turn(text: str) -> str | None:
+    """The labels or list numbers of `text` (lowercased) when they are not 1, 2, ... in turn ("Part 2: ...
+    Part 1: ..."): no reading may order the steps by where they are written."""
+    numbers = [m[0].strip() for m in (*_labels(text), *_LIST_NUMBER.finditer(text))]
+    turns = [_step_number(m["n1"] or m["n2"]) for m in _labels(text)]
+    listed = [int(m["n"]) for m in _LIST_NUMBER.finditer(text)]
+    if turns == list(range(1, len(turns) + 1)) and listed in ([], list(range(1, len(listed) + 1))):
+        return None
+    return ", ".join(numbers)
 
 
 def list_numbers_read(text: str, listed: bool) -> str | None:
@@ -382,15 +407,15 @@ _FREE_PREDICATE = re.compile(
     r"not\s+(?:specified|fixed|set|required|needed)|unspecified|no\s+particular|(?:i|we)\s+(?:don't|do\s+not)\s+"
     r"(?:care|mind)|(?:makes?|is)\s+no\s+difference|do\s+(?:whatever|as\s+you\s+(?:like|please)))\b"
 )
+# "within each pair", "inside each", "within a priority", "for every plate": what a freedom statement is about
 _EACH_GROUP = re.compile(
-    r"\b(?:within|inside|in|for)\s+(?:each|every|a|the\s+same)(?:\s+(?:pair|group|step|round|plate|batch|set|"
-    r"stage|phase|part|one|course))?\b"
+    r"\b(?:(?:within|inside)\s+(?:each|every|a|one|the\s+same)|(?:in|for)\s+(?:each|every))(?:\s+(?!order\b)[a-z]+)?\b"
 )
 _FREEDOM_FILLER = frozenset(
     "the in which you do them they these those this it that of for me us to is are be at all really totally "
     "entirely quite completely here and so just it's its can may will how place placement placements put "
     "one ones a way round i we honestly pretty much first go goes what done like want prefer wish choose "
-    "pick fine ok okay good".split()
+    "pick fine ok okay good works work suits suit".split()
 )
 _NEGATION = re.compile(r"\b(?:not|never|no|none|n't)\b|n't\b")
 
