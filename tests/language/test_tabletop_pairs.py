@@ -426,3 +426,31 @@ def test_an_order_said_of_plates_orders_their_placements(text, ordered):
 def test_make_it_so_is_a_wish():
     text = "Can you make it so the green apple is on the blue plate and the orange is on the yellow plate?"
     assert _reading(text) == APPLE_BLUE_ORANGE_YELLOW
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Once the green apple and the orange are in the yellow plate, put the carrot and the red apple in the "
+        "blue plate.",
+        "Green apple and orange on the yellow plate. Once they're there, carrot and red apple on the blue "
+        "plate.",
+        "Green apple and orange on the yellow plate. Only when that's done do the carrot and the red apple go "
+        "on the blue plate.",
+        "Priority 1: green apple and orange on the yellow plate. Priority 2: carrot and red apple on the blue "
+        "plate. Within a priority, any order.",
+        "hey, when you get a sec: yellow plate gets green apple and orange first, blue plate gets carrot and "
+        "red apple after, any order within each",
+    ],
+)
+def test_the_order_of_two_steps_whatever_words_say_it(text):
+    """A clause waiting for placements it states, a pronoun for the step before, any noun numbered in
+    turn as a label, and a "first" / "after" closing each step's clause."""
+    pairs, order = _reading(text)
+    yellow = [p for p in pairs if p[1] == "YellowPlate"]
+    blue = [p for p in pairs if p[1] == "BluePlate"]
+    assert len(yellow) == len(blue) == 2 and order == sorted((a, b) for a in yellow for b in blue)
+
+
+def test_steps_numbered_out_of_turn_are_refused():
+    assert _reading("Part 2: green apple on the blue plate. Part 1: orange on the yellow plate.") is None

@@ -49,10 +49,12 @@ _DONE = r"(?:done|finished|complete[d]?)"
 _THAT = r"(?:that|this|those|these|them|it)"
 # where one ordered group ends and the next begins: "then", "after that", "once that's done", "when
 # you've done that", "subsequently", "next" (not "next to")
+_THERE = r"(?:there|on\s+it|in\s+it|on\s+there|in\s+place|placed|down)"
 _THEN = re.compile(
-    r"\b(?:(?:and\s+)?then|after\s+(?:that|this|those|these|which)|afterwards?|thereafter|subsequently|"
+    r"\b(?:only\s+)?(?:(?:and\s+)?then|after\s+(?:that|this|those|these|which)|afterwards?|thereafter|subsequently|"
     r"next(?!\s+to\b)|second(?:ly)?|(?:and\s+)?(?:finally|lastly)|"
-    rf"(?:once|when|after)\s+(?:{_THAT}(?:'s|s|\s+is|\s+are|'re)\s+{_DONE}|"
+    rf"(?:once|when|after|as\s+soon\s+as)\s+(?:{_THAT}(?:'s|s|\s+is|\s+are|'re)\s+{_DONE}|"
+    rf"(?:they|both|{_THAT}|both\s+of\s+them|all\s+of\s+them)(?:'re|'s|\s+are|\s+is)\s+(?:both\s+|all\s+)?{_THERE}|"
     rf"you(?:'ve|\s+have|'re|\s+are)\s+{_DONE}(?:\s+(?:with\s+)?{_THAT})?|{_DONE}))\b"
 )
 # how the first group is marked: "first" / "to begin" / "start with" / "before anything else" before its
@@ -262,7 +264,8 @@ def read_pairs(text: str, types: set[str]) -> Reading | None:
     free, listed = bool(remarks), frees_every_step(remarks)
     stepped = steps_read(last_item_unmarked(unordered) if listed else unordered, listed)
     pattern = mention_pattern(by_words)
-    stepped = None if stepped is None else _trailing_then_fronted(stepped, pattern)
+    if stepped is not None:  # a clause waiting for placements, and a "then" closing its clause, put first
+        stepped = _trailing_then_fronted(_reference_fronted(stepped, pattern), pattern)
     plates_first, rest = _plate_order(stepped or "", pattern)
     if plates_first and (_THEN.search(rest) or _FIRST.search(rest) or _BEFORE.search(rest)):
         return None  # the order said of plates and again of placements
@@ -347,6 +350,32 @@ def _ordered_groups(text: str, pattern: re.Pattern[str]) -> list[str] | None:
     if opened is not None:
         parts[0] = parts[0][: opened.start()] + " " + parts[0][opened.end() :]
     return parts
+
+
+# "once the green apple and the orange are on the yellow plate, ...": a placement the rest waits for
+_REFERENCE_FIRST = re.compile(
+    r"^\W*(?:only\s+)?(?:once|when|after|as\s+soon\s+as)\s+(?P<clause>[^,.;:!?]+?)\s*"
+    r"(?:,\s*(?:then\s+)?|\s+then\s+)"
+)
+_STATE_WORDS = frozenset(
+    "the and both all is are 's 're has have been already on in onto into sitting placed".split()
+)
+_STATE_VERBS = re.compile(r"\b(?:is|are|has|have|been|already|sitting|placed)\b|'s\b|'re\b")
+
+
+def _reference_fronted(text: str, pattern: re.Pattern[str]) -> str:
+    """A text that opens with a clause waiting for placements it states ("Once the green apple and the
+    orange are in the yellow plate, put ...") as those placements first and the rest then; the text as
+    it is otherwise (a clause with any other word, or none stating where a named object is)."""
+    m = _REFERENCE_FIRST.match(text)
+    if m is None:
+        return text
+    names = [_name(f) for f in pattern.findall(m["clause"])]
+    words = set(re.findall(r"[a-z']+", pattern.sub(" ", m["clause"])))
+    stated = _STATE_VERBS.search(pattern.sub(" ", m["clause"]))
+    if not names or not names[-1].endswith("plate") or not words <= _STATE_WORDS or stated is None:
+        return text
+    return f"first {_STATE_VERBS.sub(' ', m['clause'])}, then {text[m.end() :]}"
 
 
 _CLAUSE_END = re.compile(r"[,.;!?\n]")
