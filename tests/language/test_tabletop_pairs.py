@@ -431,14 +431,14 @@ def test_make_it_so_is_a_wish():
 @pytest.mark.parametrize(
     "text",
     [
-        "Once the green apple and the orange are in the yellow plate, put the carrot and the red apple in the "
-        "blue plate.",
+        "Once the green apple and the orange are in the yellow plate, put the carrot and the red apple in "
+        "the blue plate.",
         "Green apple and orange on the yellow plate. Once they're there, carrot and red apple on the blue "
         "plate.",
-        "Green apple and orange on the yellow plate. Only when that's done do the carrot and the red apple go "
-        "on the blue plate.",
-        "Priority 1: green apple and orange on the yellow plate. Priority 2: carrot and red apple on the blue "
-        "plate. Within a priority, any order.",
+        "Green apple and orange on the yellow plate. Only when that's done do the carrot and the red apple "
+        "go on the blue plate.",
+        "Priority 1: green apple and orange on the yellow plate. Priority 2: carrot and red apple on the "
+        "blue plate. Within a priority, any order.",
         "hey, when you get a sec: yellow plate gets green apple and orange first, blue plate gets carrot and "
         "red apple after, any order within each",
     ],
