@@ -627,3 +627,25 @@ DEV3_H79: dict[int, list[str]] = {
         "hey, when you get a sec: yellow plate gets green apple and orange first, blue plate gets carrot and "
         "red apple after, any order within each"],
 }
+
+# Issue 28 (h79): a fourth development batch: the three shapes the lead named, combined and varied (line
+# breaks, no commas, "+" for "and", a heading that asks a question).
+DEV4_H79: dict[int, list[str]] = {
+    1: ["Could you please sort these for me: green apple - blue plate; orange - yellow plate",
+        "Hey when you get a sec could you put the green apple on the blue plate and the orange on the "
+        "yellow plate"],
+    2: ["Please sort these:\n- green apple: pink plate\n- orange: yellow plate\n- red apple: blue plate",
+        "hey, when you get a sec, could you sort these? - green apple: pink plate - orange: yellow plate - "
+        "red apple: blue plate (order doesn't matter)"],
+    3: ["Hey! When you get a chance could you sort the plates: carrot goes on blue, orange on yellow, "
+        "green apple on green, red apple on pink. Order doesn't matter.",
+        "sort these please: carrot -> blue plate, orange -> yellow plate, green apple -> green plate, red "
+        "apple -> pink plate. the order does not matter"],
+    4: ["Please sort these: first - green apple: yellow plate, orange: yellow plate; then - carrot: blue "
+        "plate, red apple: blue plate. The order within each pair does not matter.",
+        "hey when you get a sec could you first do the yellow plate (green apple + orange) and then the "
+        "blue plate (carrot + red apple)? order within each pair does not matter",
+        "hey, when you get a sec, could you put the green apple and the orange on the yellow plate, and "
+        "once that's done the carrot and red apple on the blue plate? the order within each pair does not "
+        "matter"],
+}

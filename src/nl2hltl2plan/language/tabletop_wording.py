@@ -175,7 +175,7 @@ def plain_words(text: str, kinds: dict[str, bool], heads: dict[str, list[str]]) 
     text = re.sub(r"\b(1st|2nd|3rd|4th)\b", lambda m: _ORDINALS[m[1]], text.lower())
     text = _THE_FOLLOWING.sub("these", _FILLER.sub(" ", polite_frames(text)))
     text = remarks_read(text, kinds)
-    text = _PAIR_VERB.sub("match", text)
+    text = _PAIR_VERB.sub("match", text).replace("+", " and ")
     text = re.sub(r"\b(?:make|have|get)\s+it\s+so(?:\s+that)?\b", "make sure", text)  # the same goal
     text = _tidied_as_put(text, kinds)
     text = answers_joined(plates_by_colour(text, kinds), kinds)
@@ -379,9 +379,8 @@ _SENTENCE_PIECE = re.compile(r"[^.;:!?()\n]+")
 _CLAUSE = re.compile(r"[^,.;:!?()\n]+?(?=\s+-\s+|[,.;:!?()\n]|$)")
 _COURTESY_WORDS = frozenset(
     "hey hi hiya hello yo ok okay so alright right well um uh erm please thanks thank cheers kindly dear "
-    "sweetie mate buddy robot when whenever if you you're youre u get got have find a an some sec second "
-    "moment minute chance free time spare are can could would will mind doing me favour favor like just "
-    "quick".split()
+    "sweetie mate buddy robot when whenever if you you're youre u get got have find a an some spare are can "
+    "could would will mind doing me favour favor like just quick pls plz thx ty ta".split()
 )
 _UNHURRIED = re.compile(r"\bno\s+(?:rush|hurry|worries|pressure)\b")
 _TIDY_VERB = r"(?:sort|organi[sz]e|arrange|tidy|handle|do|set\s+up|lay\s+out)"
@@ -425,6 +424,7 @@ def remarks_read(text: str, names: Iterable[str]) -> str:
     (see the module docstring): courtesy and list headings removed, freedom statements said as "in any
     order" or "within each group in any order". Any other clause is left as it is, for the readers."""
     mention = mention_pattern(names)
+    text = _SENTENCE_PIECE.sub(lambda m: _opener_dropped(m[0]), text)
     for pieces in (_SENTENCE_PIECE, _CLAUSE):
         low, out, at = text.lower(), [], 0
         for piece in pieces.finditer(low):
@@ -439,10 +439,34 @@ def remarks_read(text: str, names: Iterable[str]) -> str:
     return re.sub(r"[ \t]+([,.;:!?])", r"\1", re.sub(r"[ \t]+", " ", text)).strip()
 
 
+_YOUR_TIME = frozenset("sec second moment minute chance time free".split())
+_YOU = frozenset({"you", "you're", "youre", "u"})
+
+
+def _courtesy(words: list[str]) -> bool:
+    """Are `words` courtesy alone? A word for time only beside "you" ("when you get a sec", "whenever
+    you're free"; "second" alone is a step)."""
+    said = set(words)
+    return said <= _COURTESY_WORDS | _YOUR_TIME and (not _YOUR_TIME & said or bool(_YOU & said))
+
+
+def _opener_dropped(sentence: str) -> str:
+    """A sentence without the courtesy words it opens with when they speak of the user's time ("hey when
+    you get a sec could you put ...": no comma sets them apart)."""
+    words = list(re.finditer(r"[A-Za-z']+", sentence))
+    run = 0
+    while run < len(words) and words[run][0].lower() in _COURTESY_WORDS | _YOUR_TIME:
+        run += 1
+    said = [w[0].lower() for w in words[:run]]
+    if run == len(words) or not (_YOUR_TIME & set(said) and _courtesy(said)):  # not "Second course:"
+        return sentence
+    return sentence[: words[0].start()] + sentence[words[run].start() :]
+
+
 def _clause_read(clause: str) -> str | None:
     """ "" for courtesy or a list heading, a free-order phrase for a freedom statement, None otherwise."""
     words = re.findall(r"[a-z']+", _UNHURRIED.sub(" ", clause))
-    if all(w in _COURTESY_WORDS for w in words):  # "no rush" alone too
+    if _courtesy(words):  # "no rush" alone too
         return ""
     while words and words[0] in _COURTESY_WORDS:  # "could you sort these out for me please"
         words.pop(0)
