@@ -649,3 +649,39 @@ DEV4_H79: dict[int, list[str]] = {
         "once that's done the carrot and red apple on the blue plate? the order within each pair does not "
         "matter"],
 }
+
+# Issue 28 (h79): a fifth development batch, fifteen sentences written at once in as many voices (a
+# briefing, a forum post, "respectively", idioms: "first things first", "once that's sorted").
+DEV5_H79: dict[int, list[str]] = {
+    1: [
+        "OK robot, here's the deal: the green apple belongs with the blue plate and the orange belongs "
+        "with the yellow plate.",
+        "Just so you know what I want: green apple -> blue plate and orange -> yellow plate, cheers",
+        "The green apple should be on the blue plate and the orange on the yellow plate when you're "
+        "finished.",
+        "Assign the green apple to the blue plate and the orange to the yellow plate.",
+        "Get the green apple onto the blue plate, and get the orange onto the yellow plate, in whichever "
+        "order."],
+    2: [
+        "pink plate <- green apple, yellow plate <- orange, blue plate <- red apple; order irrelevant",
+        "Could the red apple go on the blue plate, the green apple on the pink plate and the orange on "
+        "the yellow plate? Any order you want is fine by me.",
+        "I'd like you to sort the fruit: the green apple goes on the pink plate, the orange goes on the "
+        "yellow plate and the red apple goes on the blue plate. Sequence doesn't matter."],
+    3: [
+        "The carrot, the orange, the green apple and the red apple go on the blue, yellow, green and pink"
+        " plates respectively, in any order.",
+        "hey, quick one: carrot on blue plate, orange on yellow plate, green apple on green plate, red "
+        "apple on pink plate. any order's fine",
+        "Here's what needs doing, in no set order: carrot on the blue plate; orange on the yellow plate; "
+        "green apple on the green plate; red apple on the pink plate."],
+    4: [
+        "First things first: green apple and orange on the yellow plate. After that's sorted, carrot and "
+        "red apple on the blue plate, any order.",
+        "To start, the yellow plate gets the green apple and the orange. Then the blue plate gets the "
+        "carrot and the red apple. Within each plate, the order doesn't matter.",
+        "Load the yellow plate first - green apple and orange - and then the blue plate - carrot and red "
+        "apple. Either order within each.",
+        "Green apple and orange onto the yellow plate, then, and only then, carrot and red apple onto the"
+        " blue plate."],
+}

@@ -176,12 +176,27 @@ def plain_words(text: str, kinds: dict[str, bool], heads: dict[str, list[str]]) 
     text = _THE_FOLLOWING.sub("these", _FILLER.sub(" ", polite_frames(text)))
     text = remarks_read(text, kinds)
     text = _PAIR_VERB.sub("match", text).replace("+", " and ")
+    text = _BY_THE_END.sub("", _FIRST_THINGS.sub("first", text))
+    text = _DONE_WORDS.sub(r"\g<that> is done", text)
     text = re.sub(r"\b(?:make|have|get)\s+it\s+so(?:\s+that)?\b", "make sure", text)  # the same goal
     text = _tidied_as_put(text, kinds)
     text = answers_joined(plates_by_colour(text, kinds), kinds)
     text = _APPOSITION.sub(lambda m: m[0] if _names_a_word(m["words"], kinds) else ",", text)
     text = corrected(text, kinds)
     return _plurals_named(text, kinds, heads)
+
+
+# "... when you're finished.": the end state, not an order ("when you're done, put ..." opens a step)
+_BY_THE_END = re.compile(
+    r",?\s*\b(?:when|once|by\s+the\s+time)\s+you(?:'re|\s+are|'ve|\s+have)\s+(?:all\s+)?(?:done|finished|through)"
+    r"(?=\s*(?:[.;!?]|$))"
+)
+# "once that's sorted / taken care of / out of the way": a step done (said as "done", which check 1 knows)
+_DONE_WORDS = re.compile(
+    r"\b(?P<that>that|this|those|these|it|they)(?:'s|s|\s+is|\s+are|'re)\s+(?:sorted|handled|through|over|"
+    r"taken\s+care\s+of|out\s+of\s+the\s+way)\b"
+)
+_FIRST_THINGS = re.compile(r"\bfirst\s+things\s+first\b")
 
 
 def _tidied_as_put(text: str, kinds: dict[str, bool]) -> str:
@@ -402,7 +417,7 @@ _FREE_PREDICATE = re.compile(
     r"\b(?:(?:does|do|did|will|would|should)(?:\s+not|n't|nt)\s+matter|no\s+matter|matters\s+not|irrelevant|"
     r"unimportant|not\s+important|of\s+no\s+(?:consequence|importance)|up\s+to\s+you|(?:your|the\s+robot's)\s+"
     r"(?:call|choice|decision|pick)|(?:are|'re|is|'s)\s+free|free\s+to\s+(?:choose|pick|decide)|"
-    r"(?:can|may|get\s+to)\s+(?:choose|pick|decide)|any|whatever|whichever|arbitrary|flexible|optional|"
+    r"(?:can|may|get\s+to)\s+(?:choose|pick|decide)|any|either|whatever|whichever|arbitrary|flexible|optional|"
     r"not\s+(?:specified|fixed|set|required|needed)|unspecified|no\s+particular|(?:i|we)\s+(?:don't|do\s+not)\s+"
     r"(?:care|mind)|(?:makes?|is)\s+no\s+difference|do\s+(?:whatever|as\s+you\s+(?:like|please)))\b"
 )
@@ -414,7 +429,7 @@ _FREEDOM_FILLER = frozenset(
     "the in which you do them they these those this it that of for me us to is are be at all really totally "
     "entirely quite completely here and so just it's its can may will how place placement placements put "
     "one ones a way round i we honestly pretty much first go goes what done like want prefer wish choose "
-    "pick fine ok okay good works work suits suit".split()
+    "pick fine ok okay good works work suits suit by with".split()
 )
 _NEGATION = re.compile(r"\b(?:not|never|no|none|n't)\b|n't\b")
 
@@ -463,12 +478,15 @@ def _opener_dropped(sentence: str) -> str:
     return sentence[: words[0].start()] + sentence[words[run].start() :]
 
 
+_ASKING = frozenset("i i'd we we'd want need would to".split())  # "I'd like you to sort the fruit:"
+
+
 def _clause_read(clause: str) -> str | None:
     """ "" for courtesy or a list heading, a free-order phrase for a freedom statement, None otherwise."""
     words = re.findall(r"[a-z']+", _UNHURRIED.sub(" ", clause))
     if _courtesy(words):  # "no rush" alone too
         return ""
-    while words and words[0] in _COURTESY_WORDS:  # "could you sort these out for me please"
+    while words and words[0] in _COURTESY_WORDS | _ASKING:  # "could you sort these out for me please"
         words.pop(0)
     if words and words[-1] == "please":
         words.pop()
