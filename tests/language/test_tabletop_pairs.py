@@ -454,3 +454,9 @@ def test_the_order_of_two_steps_whatever_words_say_it(text):
 
 def test_steps_numbered_out_of_turn_are_refused():
     assert _reading("Part 2: green apple on the blue plate. Part 1: orange on the yellow plate.") is None
+
+
+def test_respectively_pairs_the_nth_object_with_the_nth_plate():
+    text = "The green apple and the orange go on the blue and yellow plates respectively."
+    assert _reading(text) == APPLE_BLUE_ORANGE_YELLOW
+    assert _reading("The green apple and the orange go on the blue plate respectively.") is None

@@ -180,7 +180,7 @@ def plain_words(text: str, kinds: dict[str, bool], heads: dict[str, list[str]]) 
     text = _DONE_WORDS.sub(r"\g<that> is done", text)
     text = re.sub(r"\b(?:make|have|get)\s+it\s+so(?:\s+that)?\b", "make sure", text)  # the same goal
     text = _tidied_as_put(text, kinds)
-    text = answers_joined(plates_by_colour(text, kinds), kinds)
+    text = answers_joined(plates_by_colour(respectively_paired(text, kinds), kinds), kinds)
     text = _APPOSITION.sub(lambda m: m[0] if _names_a_word(m["words"], kinds) else ",", text)
     text = corrected(text, kinds)
     return _plurals_named(text, kinds, heads)
@@ -204,6 +204,32 @@ def _tidied_as_put(text: str, kinds: dict[str, bool]) -> str:
     action of this world, placing it."""
     objects = mention_pattern([n for n, plate in kinds.items() if not plate]).pattern
     return re.sub(rf"\b{_TIDY_VERB}(?:\s+(?:out|up))?(?=\s+(?:the\s+)?{objects})", "put", text)
+
+
+_RESPECTIVELY_WORDS = frozenset(
+    "the and go goes put place move set on onto in into to should must plates please belong belongs".split()
+)
+
+
+def respectively_paired(text: str, kinds: dict[str, bool]) -> str:
+    """ "the carrot and the orange go on the blue and yellow plates respectively" -> "put the carrot on
+    the blue plate, the orange on the yellow plate": the n-th object with the n-th plate, where the
+    clause names as many objects as plates (by colour or in full) and nothing else but placing words."""
+    objects = mention_pattern([n for n, plate in kinds.items() if not plate]).pattern
+    colours = {n.split()[0]: n for n, plate in kinds.items() if plate and len(n.split()) == 2}
+    plate = rf"\b(?:{'|'.join(map(re.escape, colours))})(?:\s+plate)?\b"
+
+    def paired(m: re.Match[str]) -> str:
+        said = re.findall(rf"{objects}|{plate}", m["clause"])
+        things = [_name(w) for w in said if _name(w) in kinds and not kinds[_name(w)]]
+        plates = [colours[_name(w).split()[0]] for w in said if _name(w) not in things]
+        rest = set(re.findall(r"[a-z']+", re.sub(rf"{objects}|{plate}", " ", m["clause"])))
+        one_each = len(things) == len(plates) > 1 and [_name(w) for w in said[: len(things)]] == things
+        if not one_each or not rest <= _RESPECTIVELY_WORDS:
+            return m[0]
+        return "put " + ", ".join(f"the {o} on the {p}" for o, p in zip(things, plates, strict=True))
+
+    return re.sub(r"(?P<clause>[^.;:!?]*?),?\s+respectively\b", paired, text)
 
 
 def plates_by_colour(text: str, kinds: dict[str, bool]) -> str:
