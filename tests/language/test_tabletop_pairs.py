@@ -459,4 +459,5 @@ def test_steps_numbered_out_of_turn_are_refused():
 def test_respectively_pairs_the_nth_object_with_the_nth_plate():
     text = "The green apple and the orange go on the blue and yellow plates respectively."
     assert _reading(text) == APPLE_BLUE_ORANGE_YELLOW
-    assert _reading("The green apple, the orange and the carrot go on the blue and yellow plates respectively.") is None
+    three = "The green apple, the orange and the carrot go on the blue and yellow plates respectively."
+    assert _reading(three) is None

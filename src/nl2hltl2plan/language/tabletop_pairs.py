@@ -288,7 +288,8 @@ def read_pairs(text: str, types: set[str]) -> Reading | None:
                 )
         group_ids.append(ids)
     if plates_first:
-        group_ids = [[t.id for t in tasks if camel_words((t.receptacle or [""])[0]) == p] for p in plates_first]
+        on = {t.id: camel_words((t.receptacle or [""])[0]) for t in tasks}
+        group_ids = [[i for i, plate in on.items() if plate == p] for p in plates_first]
     objects = [t.object[0] for t in tasks]
     if not tasks or len(set(objects)) != len(objects) or any(not g for g in group_ids):
         return None
