@@ -461,3 +461,19 @@ def test_respectively_pairs_the_nth_object_with_the_nth_plate():
     assert _reading(text) == APPLE_BLUE_ORANGE_YELLOW
     three = "The green apple, the orange and the carrot go on the blue and yellow plates respectively."
     assert _reading(three) is None
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "The blue plate comes first: the green apple goes on it. Then the orange on the yellow plate.",
+        "Start with the blue plate: put the green apple on that plate. Then the orange on the yellow plate.",
+    ],
+)
+def test_a_plate_said_again_as_it_is_the_plate_named_before(text):
+    """ "on it" / "on that plate" after a plate names that plate (only plates hold things here), and a
+    plate said before and after its objects is one topic."""
+    assert _reading(text) == (
+        [("GreenApple", "BluePlate"), ("Orange", "YellowPlate")],
+        [(("GreenApple", "BluePlate"), ("Orange", "YellowPlate"))],
+    )

@@ -468,6 +468,8 @@ def _paired(types_in_order: list[str]) -> list[tuple[str, str]] | None:
         else:
             runs.append([t])
     runs = [r[:1] if _is_plate(r[0]) and len(set(r)) == 1 else r for r in runs]  # "on blue, the blue plate"
+    if len(runs) == 3 and _is_plate(runs[0][0]) and runs[0] == runs[2]:
+        runs = runs[1:]  # a topic: "the yellow plate comes first: the green apple and the orange go on it"
     if len(runs) % 2 or any(_is_plate(r[0]) and len(r) != 1 for r in runs):
         return None
     plate_first = bool(runs) and _is_plate(runs[0][0])

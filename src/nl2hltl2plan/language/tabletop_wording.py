@@ -181,6 +181,7 @@ def plain_words(text: str, kinds: dict[str, bool], heads: dict[str, list[str]]) 
     text = re.sub(r"\b(?:make|have|get)\s+it\s+so(?:\s+that)?\b", "make sure", text)  # the same goal
     text = _tidied_as_put(text, kinds)
     text = answers_joined(plates_by_colour(respectively_paired(text, kinds), kinds), kinds)
+    text = _plate_referred(text, kinds)
     text = _APPOSITION.sub(lambda m: m[0] if _names_a_word(m["words"], kinds) else ",", text)
     text = corrected(text, kinds)
     return _plurals_named(text, kinds, heads)
@@ -230,6 +231,24 @@ def respectively_paired(text: str, kinds: dict[str, bool]) -> str:
         return "put " + ", ".join(f"the {o} on the {p}" for o, p in zip(things, plates, strict=True))
 
     return re.sub(r"(?P<clause>[^.;:!?]*?),?\s+respectively\b", paired, text)
+
+
+_ON_IT = re.compile(
+    r"\b(?P<to>on|onto|in|into|to)\s+(?:it|that\s+(?:plate|one)|this\s+(?:plate|one)|the\s+same\s+(?:plate|one))\b"
+)
+
+
+def _plate_referred(text: str, kinds: dict[str, bool]) -> str:
+    """ "on it" / "on that plate" / "on the same plate" as the plate named last before it (in this world
+    only a plate holds things: "the yellow plate comes first: the green apple and the orange go on it");
+    left where no plate is named before it."""
+    plates = mention_pattern([n for n, plate in kinds.items() if plate])
+
+    def referred(m: re.Match[str]) -> str:
+        before = [_name(p) for p in plates.findall(text, 0, m.start()) if _name(p) in kinds]
+        return f"{m['to']} the {before[-1]}" if before else m[0]
+
+    return _ON_IT.sub(referred, text)
 
 
 def plates_by_colour(text: str, kinds: dict[str, bool]) -> str:
@@ -431,7 +450,8 @@ _HEADING_FRAME = re.compile(
 )
 # a freedom statement: what it is about (the order, which comes first, what depends on what) ...
 _ORDER_TOPIC = re.compile(
-    r"\b(?:order(?:ing)?|sequenc(?:e|ing)|which\b[a-z'\s]{0,24}?\b(?:first|(?:start|begin)(?:\s+with)?))\b"
+    r"\b(?:order(?:ing)?|sequenc(?:e|ing)|which\b[a-z'\s]{0,24}?\b(?:first|(?:start|begin)(?:\s+with)?)|"
+    r"(?:either|any|whichever)(?:\s+one|\s+of\s+them)?\s+(?:(?:can\s+)?(?:go|goes|come|comes)\s+)?first)\b"
 )
 _INDEPENDENT = re.compile(
     r"\b(?:none|neither|no\s+one)\s+of\s+(?:these|them|those|the\s+\w+)\s+depends?\s+on\s+(?:another|any\s+other|"
