@@ -5,10 +5,11 @@ The tabletop world has one kind of task: an object goes on a plate. Whatever the
 plate gets the carrot", "carrot: blue plate", "the carrot should end up on the blue plate"), each
 object mention is paired with the plate mention beside it, the object first or the plate first as the
 sentence starts. The words around the names are read first (`tabletop_wording`: statements, free-order
-remarks, corrections, plurals, step labels). The order is read from a small set of forms only: no order
-word (or a free-order remark) leaves the tasks unordered; "first ... then / after that / once that's
-done ..." (or "Step 1: ... Step 2: ...") orders the groups; any other order, relation or count word
-refuses. Check 1 (`accounting.account`) then judges the words read, and the grammar's refusal stands
+remarks, corrections, plurals, step labels, and the clauses that name nothing, read by their words).
+The order is read from a small set of forms only: no order word (or a free-order remark) leaves the
+tasks unordered; "first ... then / after that / once that's done ..." (or "Step 1: ... Step 2: ...",
+a "then" closing its clause, a clause waiting for placements it states, an order said of plates alone)
+orders the groups; any other order, relation or count word refuses. Check 1 (`accounting.account`) then judges the words read, and the grammar's refusal stands
 unless every word is used.
 
 >>> [(t.object, t.receptacle) for t in read_pairs("carrot: blue plate", {"Carrot", "BluePlate"})[0]]
