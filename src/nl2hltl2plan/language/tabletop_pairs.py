@@ -9,8 +9,8 @@ remarks, corrections, plurals, step labels, and the clauses that name nothing, r
 The order is read from a small set of forms only: no order word (or a free-order remark) leaves the
 tasks unordered; "first ... then / after that / once that's done ..." (or "Step 1: ... Step 2: ...",
 a "then" closing its clause, a clause waiting for placements it states, an order said of plates alone)
-orders the groups; any other order, relation or count word refuses. Check 1 (`accounting.account`) then judges the words read, and the grammar's refusal stands
-unless every word is used.
+orders the groups; any other order, relation or count word refuses. Check 1 (`accounting.account`)
+then judges the words read, and the grammar's refusal stands unless every word is used.
 
 >>> [(t.object, t.receptacle) for t in read_pairs("carrot: blue plate", {"Carrot", "BluePlate"})[0]]
 [(['Carrot'], ['BluePlate'])]
