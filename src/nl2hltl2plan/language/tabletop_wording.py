@@ -21,7 +21,11 @@ and plate names, read before `tabletop_pairs` pairs them.
   speaks of the order (or of which comes first, or of what depends on what) and says it is free ("the
   order in which you do them is irrelevant", "it makes no difference which one you do first", "none of
   these depends on another") becomes "in any order", or "within each group in any order" when it speaks
-  of each group ("the order within each pair does not matter").
+  of each group ("the order within each pair does not matter");
+- what the world's closed vocabulary settles: a plate said by its colour alone, "on it" (the plate named
+  before), "respectively", a question about where an object goes joined with the plate that answers it,
+  a tidying verb before an object ("sort the carrot onto ...") as placing it, and a state clause under a
+  wish asked for however far from the wish (`wished_states_plain`, for check 1).
 """
 
 from __future__ import annotations
@@ -477,7 +481,7 @@ _FREEDOM_FILLER = frozenset(
     "one ones a way round i we honestly pretty much first go goes what done like want prefer wish choose "
     "pick fine ok okay good works work suits suit by with".split()
 )
-_NEGATION = re.compile(r"\b(?:not|never|no|none|n't)\b|n't\b")
+_NEGATION = re.compile(r"\b(?:not|never|no|none)\b|n't\b")
 
 
 def remarks_read(text: str, names: Iterable[str]) -> str:
