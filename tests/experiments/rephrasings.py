@@ -475,3 +475,213 @@ VALID_H74: dict[int, list[str]] = {
         "Do in this order:\n1. green apple and orange -> yellow plate\n"
         "2. carrot and red apple -> blue plate"],
 }
+
+# Issue 28 (h79): held-out rephrasings written before any h79 rule, in voices the sets above do not use (a
+# roommate's sticky note, a museum curator, a stage manager, a nurse's handover, a quiz, a spreadsheet
+# pasted as text, a shop-floor supervisor, someone asking on a forum) and framings they do not (a dash list
+# after "sort these", a casual opener before a question, "Y gets X", a table of rows, "none of these
+# depends on another", "the order within each pair does not matter", "only once ... already"). Measured
+# once on first contact and once at the end (scripts/tabletop_styles.py --batch VALID_H79), never read per
+# sentence between; the expected signature is each task's ground truth.
+VALID_H79: dict[int, list[str]] = {
+    1: ["hey, whenever you're free could you sort out the plates - green apple goes to the blue one, orange "
+        "to the yellow one",
+        "Blue plate <- green apple\nYellow plate <- orange",
+        "Note for the robot: the green apple belongs on the blue plate; the orange belongs on the yellow "
+        "plate. Cheers!",
+        "What should end up where? The green apple on the blue plate, and the orange on the yellow plate.",
+        "The green apple should be moved onto the blue plate by you, and the orange onto the yellow plate."],
+    2: ["hiya! mind doing me a favour? green apple onto the pink plate, orange onto the yellow plate, red "
+        "apple onto the blue plate. do them however you like",
+        "Item | Plate\ngreen apple | pink plate\norange | yellow plate\nred apple | blue plate\n(order: "
+        "doesn't matter)",
+        "The pink plate gets the green apple, the yellow plate gets the orange, and the blue plate gets the "
+        "red apple. It makes no difference which one you do first.",
+        "I'd like three things done, in no particular sequence - the red apple placed on the blue plate, the "
+        "orange placed on the yellow plate, the green apple placed on the pink plate.",
+        "Sort these out for me please - green apple: pink plate - orange: yellow plate - red apple: blue "
+        "plate. The order in which you do them is irrelevant."],
+    3: ["Curator's note: carrot to be displayed on the blue plate, orange on the yellow plate, green apple "
+        "on the green plate, red apple on the pink plate. Installation order is unimportant.",
+        "hey so when you get a chance, could you pop the carrot on the blue plate, the orange on the yellow "
+        "plate, the green apple on the green plate and the red apple on the pink plate? no rush, any order",
+        "Each plate gets one thing: blue plate the carrot, yellow plate the orange, green plate the green "
+        "apple, pink plate the red apple. Sequence is totally up to you.",
+        "Can the carrot go on the blue plate, the orange on the yellow plate, the green apple on the green "
+        "plate and the red apple on the pink plate? You're free to do them in any order you like.",
+        "The carrot is to be placed on the blue plate. The orange is to be placed on the yellow plate. The "
+        "green apple is to be placed on the green plate. The red apple is to be placed on the pink plate. "
+        "None of these depends on another."],
+    4: ["Two rounds. Round A: the green apple and the orange onto the yellow plate. Round B, only after "
+        "round A: the carrot and the red apple onto the blue plate; the order within each round does not "
+        "matter.",
+        "hey, when you get a sec, could you load the yellow plate with the green apple and the orange first, "
+        "and after that load the blue plate with the carrot and the red apple? whichever order inside each.",
+        "The yellow plate needs the green apple and the orange before the blue plate gets anything; the "
+        "blue plate then gets the carrot and the red apple, in either order.",
+        "Sequence matters here: green apple and orange go onto the yellow plate to begin with, and the "
+        "carrot and red apple onto the blue plate afterwards. Within each pair, do whatever.",
+        "Put the carrot and the red apple on the blue plate, but only once the green apple and the orange "
+        "are already on the yellow plate."],
+}
+
+# Issue 28 (h79): rephrasings for developing h79's form-independent reading (read per sentence): the three
+# shapes the lead's closing note named (a list with a colon or dash per pair after "sort these", a casual
+# opener, an explicit freedom statement), h74's "I want that X is on Y" past the third pair, and forms the
+# reading is to take whatever their framing: questions, passives, "Y gets X", tables, notes.
+DEV_H79: dict[int, list[str]] = {
+    1: ["Please sort these: - green apple: blue plate - orange: yellow plate",
+        "hey, when you get a sec, could you put the green apple on the blue plate and the orange on the "
+        "yellow plate?",
+        "The green apple is to be put on the blue plate by the robot, and the orange on the yellow plate.",
+        "blue plate gets green apple, yellow plate gets orange",
+        "green apple | blue plate\norange | yellow plate",
+        "Reminder: green apple on the blue plate, orange on the yellow plate. Thanks!",
+        "Would you mind putting the orange on the yellow plate and the green apple on the blue plate?"],
+    2: ["Please sort these: - green apple: pink plate - orange: yellow plate - red apple: blue plate. The "
+        "order within each pair does not matter.",
+        "hey, when you get a sec, could you put the green apple on the pink plate, the orange on the yellow "
+        "plate and the red apple on the blue plate? the order does not matter",
+        "Organise these for me - green apple - pink plate, orange - yellow plate, red apple - blue plate. "
+        "Doesn't matter which comes first.",
+        "The green apple gets placed on the pink plate, the orange on the yellow plate, the red apple on the "
+        "blue plate. You can pick the order.",
+        "pink plate: green apple\nyellow plate: orange\nblue plate: red apple\nany order is fine"],
+    3: ["I want that carrot is on blue plate, orange is on yellow plate, green apple is on green plate and "
+        "red apple is on pink plate.",
+        "Please sort these: - carrot: blue plate - orange: yellow plate - green apple: green plate - red "
+        "apple: pink plate",
+        "hey, when you get a sec, could you do the carrot on the blue plate, the orange on the yellow plate, "
+        "the green apple on the green plate and the red apple on the pink plate? order doesn't matter",
+        "The blue plate gets the carrot, the yellow plate the orange, the green plate the green apple and "
+        "the pink plate the red apple. The order in which you do this is irrelevant.",
+        "Everything should be on its plate: carrot on blue, well, on the blue plate, orange on the yellow "
+        "plate, green apple on the green plate, red apple on the pink plate. Any order."],
+    4: ["Please sort these: - green apple: yellow plate - orange: yellow plate. Then: - carrot: blue plate "
+        "- red apple: blue plate. The order within each pair does not matter.",
+        "hey, when you get a sec, could you first put the green apple and the orange on the yellow plate, "
+        "then the carrot and the red apple on the blue plate? the order within each pair doesn't matter",
+        "The green apple and the orange go on the yellow plate first; the carrot and the red apple go on the "
+        "blue plate after that. Within each pair the order is up to you.",
+        "Yellow plate first (green apple, orange), then blue plate (carrot, red apple), any order inside "
+        "each."],
+}
+
+# Issue 28 (h79): a second development batch over more forms: plates by colour alone, a "finally" step,
+# questions and answers, a forum post, "X precedes Y", texting abbreviations, "sort" with names.
+DEV2_H79: dict[int, list[str]] = {
+    1: ["green apple -> blue, orange -> yellow",
+        "Where does the green apple go? On the blue plate. And the orange? On the yellow plate.",
+        "pls put green apple on blue plate n orange on yellow plate thx",
+        "Hi all, first post here. I need my robot to put the green apple on the blue plate and the orange "
+        "on the yellow plate. Thanks in advance!",
+        "Sort the green apple onto the blue plate and the orange onto the yellow plate.",
+        "Put the green apple on the blue plate and the orange on the yellow."],
+    2: ["Item | Plate\ngreen apple | pink\norange | yellow\nred apple | blue\nany order",
+        "Could you sort these out for me? green apple to the pink plate, orange to the yellow plate, red "
+        "apple to the blue plate. Which one goes first is up to you.",
+        "The pink plate gets the green apple, the yellow plate gets the orange, and the blue plate gets the "
+        "red apple. It does not matter which one you start with.",
+        "green apple - pink plate\norange - yellow plate\nred apple - blue plate\n(no particular order)"],
+    3: ["hey! when you have a minute, carrot on blue, orange on yellow, green apple on green, red apple on "
+        "pink. whatever order",
+        "Would it be possible to put the carrot on the blue plate, the orange on the yellow plate, the green "
+        "apple on the green plate and the red apple on the pink plate? The order is completely up to you.",
+        "None of these depend on each other: carrot on the blue plate, orange on the yellow plate, green "
+        "apple on the green plate, red apple on the pink plate."],
+    4: ["First the green apple and the orange on the yellow plate, and finally the carrot and the red apple "
+        "on the blue plate. The order within each pair does not matter.",
+        "Green apple and orange onto the yellow plate must precede carrot and red apple onto the blue plate.",
+        "yellow plate: green apple, orange (first)\nblue plate: carrot, red apple (after that)",
+        "hey, when you get a sec: green apple and orange on the yellow plate first, then carrot and red "
+        "apple on the blue plate, any order within each pair"],
+}
+
+# Issue 28 (h79): a third development batch: openers and headings of other kinds, freedom said in other
+# words, and the order said of plates rather than of objects ("once the yellow plate is done").
+DEV3_H79: dict[int, list[str]] = {
+    1: ["hey there! quick favour: green apple on the blue plate and orange on the yellow plate",
+        "Here's the plan: the green apple goes to the blue plate, the orange goes to the yellow plate.",
+        "so, um, if you could, the green apple on the blue plate and the orange on the yellow plate",
+        "whenever you can, green apple to blue plate and orange to yellow plate, ta"],
+    2: ["Feel free to do them in any order: green apple on pink plate, orange on yellow plate, red apple "
+        "on blue plate.",
+        "green apple on the pink plate, orange on the yellow plate, red apple on the blue plate. I don't "
+        "mind which goes first.",
+        "TODO: green apple -> pink plate; orange -> yellow plate; red apple -> blue plate. Order isn't "
+        "important.",
+        "Can you make it so the green apple is on the pink plate, the orange is on the yellow plate and the "
+        "red apple is on the blue plate? Doesn't matter what order."],
+    3: ["carrot on the blue plate, orange on the yellow plate, green apple on the green plate, red apple "
+        "on the pink plate - the order's up to you",
+        "Instructions: carrot to blue plate, orange to yellow plate, green apple to green plate, red apple "
+        "to pink plate. No specific order needed.",
+        "at some point today, could you put the carrot on the blue plate, the orange on the yellow plate, "
+        "the green apple on the green plate and the red apple on the pink plate? any sequence is fine"],
+    4: ["Do the yellow plate before the blue plate: green apple and orange on the yellow plate, carrot "
+        "and red apple on the blue plate.",
+        "Start with the yellow plate (green apple and orange), then do the blue plate (carrot and red "
+        "apple). Within each plate the order is free.",
+        "Green apple and orange on the yellow plate. Once the yellow plate is done, carrot and red apple on "
+        "the blue plate, in either order.",
+        "hey, when you get a sec: yellow plate gets green apple and orange first, blue plate gets carrot and "
+        "red apple after, any order within each"],
+}
+
+# Issue 28 (h79): a fourth development batch: the three shapes the lead named, combined and varied (line
+# breaks, no commas, "+" for "and", a heading that asks a question).
+DEV4_H79: dict[int, list[str]] = {
+    1: ["Could you please sort these for me: green apple - blue plate; orange - yellow plate",
+        "Hey when you get a sec could you put the green apple on the blue plate and the orange on the "
+        "yellow plate"],
+    2: ["Please sort these:\n- green apple: pink plate\n- orange: yellow plate\n- red apple: blue plate",
+        "hey, when you get a sec, could you sort these? - green apple: pink plate - orange: yellow plate - "
+        "red apple: blue plate (order doesn't matter)"],
+    3: ["Hey! When you get a chance could you sort the plates: carrot goes on blue, orange on yellow, "
+        "green apple on green, red apple on pink. Order doesn't matter.",
+        "sort these please: carrot -> blue plate, orange -> yellow plate, green apple -> green plate, red "
+        "apple -> pink plate. the order does not matter"],
+    4: ["Please sort these: first - green apple: yellow plate, orange: yellow plate; then - carrot: blue "
+        "plate, red apple: blue plate. The order within each pair does not matter.",
+        "hey when you get a sec could you first do the yellow plate (green apple + orange) and then the "
+        "blue plate (carrot + red apple)? order within each pair does not matter",
+        "hey, when you get a sec, could you put the green apple and the orange on the yellow plate, and "
+        "once that's done the carrot and red apple on the blue plate? the order within each pair does not "
+        "matter"],
+}
+
+# Issue 28 (h79): a fifth development batch, fifteen sentences written at once in as many voices (a
+# briefing, a forum post, "respectively", idioms: "first things first", "once that's sorted").
+DEV5_H79: dict[int, list[str]] = {
+    1: [
+        "OK robot, here's the deal: the green apple belongs with the blue plate and the orange belongs "
+        "with the yellow plate.",
+        "Just so you know what I want: green apple -> blue plate and orange -> yellow plate, cheers",
+        "The green apple should be on the blue plate and the orange on the yellow plate when you're "
+        "finished.",
+        "Assign the green apple to the blue plate and the orange to the yellow plate.",
+        "Get the green apple onto the blue plate, and get the orange onto the yellow plate, in whichever "
+        "order."],
+    2: [
+        "pink plate <- green apple, yellow plate <- orange, blue plate <- red apple; order irrelevant",
+        "Could the red apple go on the blue plate, the green apple on the pink plate and the orange on "
+        "the yellow plate? Any order you want is fine by me.",
+        "I'd like you to sort the fruit: the green apple goes on the pink plate, the orange goes on the "
+        "yellow plate and the red apple goes on the blue plate. Sequence doesn't matter."],
+    3: [
+        "The carrot, the orange, the green apple and the red apple go on the blue, yellow, green and pink"
+        " plates respectively, in any order.",
+        "hey, quick one: carrot on blue plate, orange on yellow plate, green apple on green plate, red "
+        "apple on pink plate. any order's fine",
+        "Here's what needs doing, in no set order: carrot on the blue plate; orange on the yellow plate; "
+        "green apple on the green plate; red apple on the pink plate."],
+    4: [
+        "First things first: green apple and orange on the yellow plate. After that's sorted, carrot and "
+        "red apple on the blue plate, any order.",
+        "To start, the yellow plate gets the green apple and the orange. Then the blue plate gets the "
+        "carrot and the red apple. Within each plate, the order doesn't matter.",
+        "Load the yellow plate first - green apple and orange - and then the blue plate - carrot and red "
+        "apple. Either order within each.",
+        "Green apple and orange onto the yellow plate, then, and only then, carrot and red apple onto the"
+        " blue plate."],
+}

@@ -323,3 +323,157 @@ def test_a_full_reading_the_pairs_reading_contradicts_is_not_taken():
     doubted = reader.doubted(unordered, "offline")
     assert doubted.partial and "read two ways" in doubted.unparsed[-1]
     assert "A before B" in doubted.unparsed[-1]
+
+
+APPLE_BLUE_ORANGE_YELLOW = ([("GreenApple", "BluePlate"), ("Orange", "YellowPlate")], [])
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Please sort these: - green apple: blue plate - orange: yellow plate",
+        "could you organise this for me - orange - yellow plate, green apple - blue plate",
+        "hey, whenever you're free, the green apple to the blue plate and the orange to the yellow plate",
+        "yo, mind doing me a favour? green apple on blue plate, orange on yellow plate. no rush",
+        "green apple on the blue plate, orange on the yellow plate. The order you do them in is irrelevant.",
+        "green apple on the blue plate, orange on the yellow plate; it makes no difference which comes first",
+        "Orange: yellow plate. Green apple: blue plate. None of these depends on another.",
+    ],
+)
+def test_clauses_that_name_nothing_are_read_by_their_words(text):
+    """Courtesy, a list's heading and a freedom statement, whatever their phrasing (`remarks_read`)."""
+    assert _reading(text) == APPLE_BLUE_ORANGE_YELLOW
+
+
+def test_a_freedom_statement_about_each_group_leaves_the_groups_ordered():
+    text = (
+        "sort these: green apple - yellow plate, orange - yellow plate. then: carrot - blue plate, red apple "
+        "- blue plate. the order inside each pair is up to you."
+    )
+    pairs, order = _reading(text)
+    first, second = pairs[1:3], [pairs[0], pairs[3]]
+    assert first == [("GreenApple", "YellowPlate"), ("Orange", "YellowPlate")]
+    assert order == sorted((a, b) for a in first for b in second)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "the order matters: the orange on the yellow plate, the green apple on the blue plate",
+        "green apple on the blue plate and orange on the yellow plate; the order is not up to you",
+        "the green apple on the blue plate must precede the orange on the yellow plate",
+        "where is the green apple? on the blue plate. put the orange on the yellow plate",
+        "hey, when you're done, put the orange on the yellow plate and the green apple on the blue plate",
+    ],
+)
+def test_order_words_no_reading_takes_are_refused(text):
+    """An order that is said but not which one, a relation verb, a question about where a thing is, a
+    "when you're done" with nothing before it: refused, never read as no order."""
+    assert _reading(text) is None
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "green apple -> blue, orange -> yellow",
+        "Put the green apple on the blue plate and the orange on the yellow.",
+        "Where does the green apple go? On the blue plate. And the orange? On the yellow plate.",
+        "Sort the green apple onto the blue plate and the orange onto the yellow plate.",
+        "put the green apple on the blue plate and the orange on the pink, no wait, the yellow",
+        "I want that green apple is on blue plate, carrot is not needed, orange is on yellow plate.",
+    ],
+)
+def test_plates_by_colour_answers_and_wishes_far_from_their_verb(text):
+    """A plate named by its colour alone, a question about where an object goes answered by a plate,
+    "sort" before an object, and a state under a wish said more than six words before it."""
+    expected = None if "not needed" in text else APPLE_BLUE_ORANGE_YELLOW
+    assert _reading(text) == expected
+
+
+def test_a_sentence_final_then_orders_its_own_sentence_after_the_one_before():
+    pairs, order = _reading(
+        "The green apple goes on the blue plate first. The orange goes on the yellow plate after that."
+    )
+    assert order == [(("GreenApple", "BluePlate"), ("Orange", "YellowPlate"))]
+
+
+@pytest.mark.parametrize(
+    "text, ordered",
+    [
+        ("Do the yellow plate before the blue plate: green apple and orange on the yellow plate, carrot "
+         "and red apple on the blue plate.", True),
+        ("The blue plate after the yellow plate. Carrot and red apple on the blue plate, green apple and "
+         "orange on the yellow plate.", True),
+        ("Do the yellow plate before the blue plate: green apple and orange on the yellow plate, carrot on "
+         "the blue plate, red apple on the pink plate.", None),
+        ("Do the yellow plate before the blue plate: first green apple and orange on the yellow plate, then "
+         "carrot and red apple on the blue plate.", True),
+    ],
+)
+def test_an_order_said_of_plates_orders_their_placements(text, ordered):
+    """Every placement on the first plate before every one on the second (the same order said again of
+    the placements is read by the grammar); a plate the order leaves out is refused."""
+    reading = _reading(text)
+    if ordered is None:
+        assert reading is None
+        return
+    pairs, order = reading
+    yellow = [p for p in pairs if p[1] == "YellowPlate"]
+    blue = [p for p in pairs if p[1] == "BluePlate"]
+    assert len(pairs) == 4 and order == sorted((a, b) for a in yellow for b in blue)
+
+
+def test_make_it_so_is_a_wish():
+    text = "Can you make it so the green apple is on the blue plate and the orange is on the yellow plate?"
+    assert _reading(text) == APPLE_BLUE_ORANGE_YELLOW
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Once the green apple and the orange are in the yellow plate, put the carrot and the red apple in "
+        "the blue plate.",
+        "Green apple and orange on the yellow plate. Once they're there, carrot and red apple on the blue "
+        "plate.",
+        "Green apple and orange on the yellow plate. Only when that's done do the carrot and the red apple "
+        "go on the blue plate.",
+        "Priority 1: green apple and orange on the yellow plate. Priority 2: carrot and red apple on the "
+        "blue plate. Within a priority, any order.",
+        "hey, when you get a sec: yellow plate gets green apple and orange first, blue plate gets carrot and "
+        "red apple after, any order within each",
+    ],
+)
+def test_the_order_of_two_steps_whatever_words_say_it(text):
+    """A clause waiting for placements it states, a pronoun for the step before, any noun numbered in
+    turn as a label, and a "first" / "after" closing each step's clause."""
+    pairs, order = _reading(text)
+    yellow = [p for p in pairs if p[1] == "YellowPlate"]
+    blue = [p for p in pairs if p[1] == "BluePlate"]
+    assert len(yellow) == len(blue) == 2 and order == sorted((a, b) for a in yellow for b in blue)
+
+
+def test_steps_numbered_out_of_turn_are_refused():
+    assert _reading("Part 2: green apple on the blue plate. Part 1: orange on the yellow plate.") is None
+
+
+def test_respectively_pairs_the_nth_object_with_the_nth_plate():
+    text = "The green apple and the orange go on the blue and yellow plates respectively."
+    assert _reading(text) == APPLE_BLUE_ORANGE_YELLOW
+    three = "The green apple, the orange and the carrot go on the blue and yellow plates respectively."
+    assert _reading(three) is None
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "The blue plate comes first: the green apple goes on it. Then the orange on the yellow plate.",
+        "Start with the blue plate: put the green apple on that plate. Then the orange on the yellow plate.",
+    ],
+)
+def test_a_plate_said_again_as_it_is_the_plate_named_before(text):
+    """ "on it" / "on that plate" after a plate names that plate (only plates hold things here), and a
+    plate said before and after its objects is one topic."""
+    assert _reading(text) == (
+        [("GreenApple", "BluePlate"), ("Orange", "YellowPlate")],
+        [(("GreenApple", "BluePlate"), ("Orange", "YellowPlate"))],
+    )

@@ -5,11 +5,12 @@ The tabletop world has one kind of task: an object goes on a plate. Whatever the
 plate gets the carrot", "carrot: blue plate", "the carrot should end up on the blue plate"), each
 object mention is paired with the plate mention beside it, the object first or the plate first as the
 sentence starts. The words around the names are read first (`tabletop_wording`: statements, free-order
-remarks, corrections, plurals, step labels). The order is read from a small set of forms only: no order
-word (or a free-order remark) leaves the tasks unordered; "first ... then / after that / once that's
-done ..." (or "Step 1: ... Step 2: ...") orders the groups; any other order, relation or count word
-refuses. Check 1 (`accounting.account`) then judges the words read, and the grammar's refusal stands
-unless every word is used.
+remarks, corrections, plurals, step labels, and the clauses that name nothing, read by their words).
+The order is read from a small set of forms only: no order word (or a free-order remark) leaves the
+tasks unordered; "first ... then / after that / once that's done ..." (or "Step 1: ... Step 2: ...",
+a "then" closing its clause, a clause waiting for placements it states, an order said of plates alone)
+orders the groups; any other order, relation or count word refuses. Check 1 (`accounting.account`)
+then judges the words read, and the grammar's refusal stands unless every word is used.
 
 >>> [(t.object, t.receptacle) for t in read_pairs("carrot: blue plate", {"Carrot", "BluePlate"})[0]]
 [(['Carrot'], ['BluePlate'])]
@@ -32,6 +33,7 @@ from nl2hltl2plan.language.tabletop_wording import (
     corrected,
     free_order,
     frees_every_step,
+    labels_out_of_turn,
     last_group_free,
     last_item_unmarked,
     mention_pattern,
@@ -39,6 +41,7 @@ from nl2hltl2plan.language.tabletop_wording import (
     plain_words,
     stated_not_asked,
     steps_read,
+    wished_states_plain,
 )
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter, transitive_closure
 from nl2hltl2plan.worlds.world import World
@@ -47,10 +50,12 @@ _DONE = r"(?:done|finished|complete[d]?)"
 _THAT = r"(?:that|this|those|these|them|it)"
 # where one ordered group ends and the next begins: "then", "after that", "once that's done", "when
 # you've done that", "subsequently", "next" (not "next to")
+_THERE = r"(?:there|on\s+it|in\s+it|on\s+there|in\s+place|placed|down)"
 _THEN = re.compile(
-    r"\b(?:(?:and\s+)?then|after\s+(?:that|this|those|these|which)|afterwards?|thereafter|subsequently|"
-    r"next(?!\s+to\b)|second(?:ly)?|"
-    rf"(?:once|when|after)\s+(?:{_THAT}(?:'s|s|\s+is|\s+are|'re)\s+{_DONE}|"
+    r"\b(?:only\s+)?(?:(?:and\s+)?then|after\s+(?:that|this|those|these|which)|afterwards?|thereafter|subsequently|"
+    r"next(?!\s+to\b)|second(?:ly)?|(?:and\s+)?(?:finally|lastly)|"
+    rf"(?:once|when|after|as\s+soon\s+as)\s+(?:{_THAT}(?:'s|s|\s+is|\s+are|'re)\s+{_DONE}|"
+    rf"(?:they|both|{_THAT}|both\s+of\s+them|all\s+of\s+them)(?:'re|'s|\s+are|\s+is)\s+(?:both\s+|all\s+)?{_THERE}|"
     rf"you(?:'ve|\s+have|'re|\s+are)\s+{_DONE}(?:\s+(?:with\s+)?{_THAT})?|{_DONE}))\b"
 )
 # how the first group is marked: "first" / "to begin" / "start with" / "before anything else" before its
@@ -94,6 +99,18 @@ _GENERIC_QUANTITY = re.compile(
     r"\b(?:each|every|all(?:\s+the)?)\s+(?:item|thing|fruit|object|piece|one)s?\b|"
     r"\b(?P<count>two|three|four)\s+(?:[a-z]+\s+)?(?:items?|things?|fruits?|objects?|placements?|moves?|"
     r"pieces?|tasks?)\b"
+)
+
+# verbs that order one placement after another, which check 1's order words do not list: no reading of
+# the tabletop world takes them ("the green apple on the yellow plate must precede the carrot ...")
+_RELATION_VERB = re.compile(r"\bpreced(?:e|es|ed|ing)\b")
+
+# "the order matters" / "sequence is important" / "the order is not up to you": an order is meant, but only
+# the mention order says which
+_ORDER_MATTERS = re.compile(
+    r"\b(?:order(?:ing)?|sequence)\b(?:(?![.;!?]|\bnot\b|n't)[^.;!?]){0,30}?\b(?:matters|(?:does|do)\s+matter|"
+    r"is\s+important|counts)\b|\b(?:order(?:ing)?|sequence)\s+(?:is|isn't)\s+(?:not\s+)?(?<=n't\s|not\s)(?:up\s+to\s+"
+    r"you|free|arbitrary|optional|your\s+(?:call|choice))\b"
 )
 
 Reading = tuple[list[BaseTaskSpec], list[tuple[str, str]], list[list[str]], str]
@@ -163,6 +180,14 @@ class TabletopReader:
             if type_ is not None and type_ not in used:
                 kind = "place" if _is_plate(type_) else "object"
                 out[name] = Unread(name, kind, f"no base task uses it ({type_})")
+        if (labels := labels_out_of_turn(res.instruction.lower())) is not None:
+            out[labels] = Unread(labels, "order", "steps numbered out of turn")
+        for found in _ORDER_MATTERS.finditer(res.instruction.lower()):
+            why = "it says that the order matters, not which order: say it with first / then"
+            out[found[0]] = Unread(found[0], "order", why)
+        for found in _RELATION_VERB.finditer(res.instruction.lower()):
+            why = "an order between placements that this reading does not take"
+            out[found[0]] = Unread(found[0], "order", why)
         return list(out.values())
 
 
@@ -232,14 +257,20 @@ def read_pairs(text: str, types: set[str]) -> Reading | None:
     by_words = {camel_words(t): t for t in types}
     kinds = {w: _is_plate(t) for w, t in by_words.items()}
     plain = plain_words(text, kinds, _shared_heads(by_words))
-    if stated_not_asked(plain, by_words) is not None:
+    unread_order = _RELATION_VERB.search(plain) or _ORDER_MATTERS.search(plain)  # an order not taken here
+    if stated_not_asked(plain, by_words) is not None or unread_order:
         return None
     plain, last_free = last_group_free(plain)
     unordered, remarks = free_order(plain)
     free, listed = bool(remarks), frees_every_step(remarks)
     stepped = steps_read(last_item_unmarked(unordered) if listed else unordered, listed)
     pattern = mention_pattern(by_words)
-    groups = None if stepped is None else _ordered_groups(stepped, pattern)
+    if stepped is not None:  # a clause waiting for placements, and a "then" closing its clause, put first
+        stepped = _trailing_then_fronted(_reference_fronted(stepped, pattern), pattern)
+    plates_first, rest = _plate_order(stepped or "", pattern)
+    if plates_first and (_THEN.search(rest) or _FIRST.search(rest) or _BEFORE.search(rest)):
+        return None  # the order said of plates and again of placements
+    groups = None if stepped is None else _ordered_groups(rest, pattern)
     if stepped is None or groups is None:
         return None
     tasks: list[BaseTaskSpec] = []
@@ -257,15 +288,20 @@ def read_pairs(text: str, types: set[str]) -> Reading | None:
                     BaseTaskSpec(id=ids[-1], text=words, kind="place", object=[obj], receptacle=[plate])
                 )
         group_ids.append(ids)
+    if plates_first:
+        on = {t.id: camel_words((t.receptacle or [""])[0]) for t in tasks}
+        group_ids = [[i for i, plate in on.items() if plate == p] for p in plates_first]
     objects = [t.object[0] for t in tasks]
     if not tasks or len(set(objects)) != len(objects) or any(not g for g in group_ids):
         return None
+    if sum(map(len, group_ids)) != len(tasks):
+        return None  # a plate with placements that the order of the plates leaves out
     if last_free is not None and (len(group_ids) < 2 or len(group_ids[-1]) != last_free):
         return None  # "those last two can go in any order" must name the last group, and only it
     if free and all(len(g) < 2 for g in group_ids):
         return None  # "A, then B - either order is ok": the remark frees no pair the "then"s leave unordered
     before = [(a, b) for i, g in enumerate(group_ids) for h in group_ids[i + 1 :] for a in g for b in h]
-    return tasks, before, group_ids, stepped
+    return tasks, before, group_ids, wished_states_plain(stepped, by_words)
 
 
 def _sentence_pairs(
@@ -299,7 +335,10 @@ def _ordered_groups(text: str, pattern: re.Pattern[str]) -> list[str] | None:
     """The text cut at its "then"s; a first-marker may open the first group (before its first name),
     close it, or, when the group names one plate, stand anywhere in it; and only when a "then" follows.
     None: no text left, or a "first" with no "then"."""
-    parts = [q for p in _THEN.split(text) for q in _before_split(p, pattern) if q.strip(" ,.;:!?")]
+    split = _THEN.split(text)
+    if len(split) > 1 and not split[0].strip(" ,.;:!?-"):
+        return None  # "when you're done, put ...": after what is not said
+    parts = [q for p in split for q in _before_split(p, pattern) if q.strip(" ,.;:!?")]
     if not parts:
         return None
     names = [_name(f) for f in pattern.findall(parts[0])]
@@ -313,6 +352,85 @@ def _ordered_groups(text: str, pattern: re.Pattern[str]) -> list[str] | None:
     if opened is not None:
         parts[0] = parts[0][: opened.start()] + " " + parts[0][opened.end() :]
     return parts
+
+
+# "once the green apple and the orange are on the yellow plate, ...": a placement the rest waits for
+_REFERENCE_FIRST = re.compile(
+    r"^\W*(?:only\s+)?(?:once|when|after|as\s+soon\s+as)\s+(?P<clause>[^,.;:!?]+?)\s*"
+    r"(?:,\s*(?:then\s+)?|\s+then\s+)"
+)
+_STATE_WORDS = frozenset(
+    "the and both all is are 's 're has have been already on in onto into sitting placed".split()
+)
+_STATE_VERBS = re.compile(r"\b(?:is|are|has|have|been|already|sitting|placed)\b|'s\b|'re\b")
+
+
+def _reference_fronted(text: str, pattern: re.Pattern[str]) -> str:
+    """A text that opens with a clause waiting for placements it states ("Once the green apple and the
+    orange are in the yellow plate, put ...") as those placements first and the rest then; the text as
+    it is otherwise (a clause with any other word, or none stating where a named object is)."""
+    m = _REFERENCE_FIRST.match(text)
+    if m is None:
+        return text
+    names = [_name(f) for f in pattern.findall(m["clause"])]
+    words = set(re.findall(r"[a-z']+", pattern.sub(" ", m["clause"])))
+    stated = _STATE_VERBS.search(pattern.sub(" ", m["clause"]))
+    if not names or not names[-1].endswith("plate") or not words <= _STATE_WORDS or stated is None:
+        return text
+    return f"first {_STATE_VERBS.sub(' ', m['clause'])}, then {text[m.end() :]}"
+
+
+_CLAUSE_END = re.compile(r"[,.;!?\n]")
+# a "then" that closes its clause: "the carrot goes on the blue plate after that.", "... red apple after,"
+_TRAILING_THEN = re.compile(
+    rf"(?:(?P<first>\bfirst\b)|{_THEN.pattern}|\b(?:after|later|last)\b)(?=\s*(?:[,.;!?\n]|$))"
+)
+
+
+def _trailing_then_fronted(text: str, pattern: re.Pattern[str]) -> str:
+    """A "then" or "first" that closes its clause put before it ("the carrot goes on the blue plate after
+    that" -> "then the carrot goes on the blue plate"), where the clause names one plate (so that its
+    placements are one step: "A on P and B on Q after that" does not say whether B alone comes after)
+    and, for a "then", something is named before it."""
+    for m in reversed(list(_TRAILING_THEN.finditer(text))):
+        starts = [b.end() for b in _CLAUSE_END.finditer(text, 0, m.start())]
+        start = starts[-1] if starts else 0
+        clause = text[start : m.start()]
+        plates = {_name(f) for f in pattern.findall(clause) if _name(f).endswith("plate")}
+        marked = _THEN.search(clause) or _FIRST.search(clause)
+        if len(plates) != 1 or marked or not (m["first"] or pattern.search(text, 0, start)):
+            continue
+        text = f"{text[:start]} {'first' if m['first'] else 'then'} {clause.strip()}{text[m.end() :]}"
+    return text
+
+
+# the words besides plate names of an order said of plates alone ("do the yellow plate before the blue
+# plate", "start with the yellow plate, then the blue plate", "the blue plate after the yellow plate")
+_PLATE_ORDER_WORDS = frozenset(
+    "do the fill load start begin with and then first before after next please you could can".split()
+)
+
+
+def _plate_order(text: str, pattern: re.Pattern[str]) -> tuple[list[str], str]:
+    """The plates (in words) in the order that a clause naming two or more plates and nothing else says,
+    and the text without that clause; no plates and the text as it is when there is no such clause."""
+    for piece in re.finditer(r"[^.;:!?\n]+", text):
+        found = list(pattern.finditer(piece[0]))
+        plates = [_name(f[0]) for f in found]
+        words = set(re.findall(r"[a-z']+", pattern.sub(" ", piece[0])))
+        if len(plates) < 2 or len(set(plates)) != len(plates) or not all(p.endswith("plate") for p in plates):
+            continue
+        if not words <= _PLATE_ORDER_WORDS:
+            continue
+        gaps = [piece[0][a.end() : b.start()] for a, b in zip(found, found[1:], strict=False)]
+        if all(re.search(r"\b(?:before|then|next)\b", g) for g in gaps):
+            order = plates
+        elif len(gaps) == 1 and re.search(r"\bafter\b", gaps[0]) and "first" not in words:
+            order = plates[::-1]
+        else:
+            continue
+        return order, text[: piece.start()] + " " + text[piece.end() :]
+    return [], text
 
 
 def _before_split(part: str, pattern: re.Pattern[str]) -> list[str]:
@@ -350,6 +468,9 @@ def _paired(types_in_order: list[str]) -> list[tuple[str, str]] | None:
             runs[-1].append(t)
         else:
             runs.append([t])
+    runs = [r[:1] if _is_plate(r[0]) and len(set(r)) == 1 else r for r in runs]  # "on blue, the blue plate"
+    if len(runs) == 3 and _is_plate(runs[0][0]) and runs[0] == runs[2]:
+        runs = runs[1:]  # a topic: "the yellow plate comes first: the green apple and the orange go on it"
     if len(runs) % 2 or any(_is_plate(r[0]) and len(r) != 1 for r in runs):
         return None
     plate_first = bool(runs) and _is_plate(runs[0][0])

@@ -13,7 +13,19 @@ and plate names, read before `tabletop_pairs` pairs them.
   ("1) ... 2) ...") order the steps; beside a remark that frees the whole list ("in any order", not
   "within each step, any order") the numbers only list, and "lastly" / "finally" only mark its last item;
 - politeness that carries nothing: "it would please me if", "I would be grateful if you could", "let me
-  see", "chop chop", "go ahead and".
+  see", "chop chop", "go ahead and";
+- clauses that name no object or plate, read by what their words are rather than by a list of phrasings
+  (`remarks_read`): a clause made only of greetings, courtesy and the user's own time ("hey", "when you
+  get a sec", "mind doing me a favour?", "no rush") is removed; a list's heading made of a verb of tidying
+  and a word for the things ("Please sort these:", "organise this for me") is removed; a clause that
+  speaks of the order (or of which comes first, or of what depends on what) and says it is free ("the
+  order in which you do them is irrelevant", "it makes no difference which one you do first", "none of
+  these depends on another") becomes "in any order", or "within each group in any order" when it speaks
+  of each group ("the order within each pair does not matter");
+- what the world's closed vocabulary settles: a plate said by its colour alone, "on it" (the plate named
+  before), "respectively", a question about where an object goes joined with the plate that answers it,
+  a tidying verb before an object ("sort the carrot onto ...") as placing it, and a state clause under a
+  wish asked for however far from the wish (`wished_states_plain`, for check 1).
 """
 
 from __future__ import annotations
@@ -41,6 +53,7 @@ _HOLDS = r"\s+(?:has|had|holds|held|contains|contained|carries|carried)\s+(?=(?:
 _GOAL_FRAME = re.compile(
     r"\b(?:please|make\s+sure|ensure|see\s+(?:to\s+it\s+)?that|want|wish|like|love|need|needs|should|must|"
     r"have\s+to|has\s+to|hope|expect|ask|goal|target|final|desired|end\s+state|result|postcondition|"
+    r"(?:make|have|get)\s+it\s+so|"
     r"by\s+the\s+end|at\s+the\s+end|in\s+the\s+end|once|when|after|before|until|as\s+soon\s+as)\b"
 )
 _SENTENCE_END = re.compile(r"[.;!?]")
@@ -61,6 +74,32 @@ def stated_not_asked(text: str, names: Iterable[str]) -> str | None:
             clause_end = re.compile(r"[,.;!?]|$").search(lowered, m.end())
             return lowered[m.start() : clause_end.start() if clause_end else None].strip()
     return None
+
+
+# a wish said before a state clause (no reference to a placement: "once", "when", "after" order the tasks)
+_WISH_FRAME = re.compile(
+    r"\b(?:please|make\s+sure|ensure|see\s+(?:to\s+it\s+)?that|want|wish|like|love|need|needs|should|must|"
+    r"have\s+to|has\s+to|hope|expect|goal|target|final|desired|end\s+state|postcondition|"
+    r"(?:make|have|get)\s+it\s+so)\b"
+)
+_REFERENCE = re.compile(r"\b(?:once|when|whenever|after|before|until|till|as\s+soon\s+as|if|unless)\b")
+
+
+def wished_states_plain(text: str, names: Iterable[str]) -> str:
+    """`text` (lowercased) with the verb of each state clause under a wish dropped, where its sentence
+    refers to no other placement ("I want that the carrot is on the blue plate, the orange is on the
+    yellow plate" -> "... the orange on the yellow plate"): each such clause is asked for, however far
+    from its wish (check 1 looks six words back)."""
+    mention = mention_pattern(names).pattern.removesuffix(r"\b")
+    state = re.compile(
+        rf"(?P<name>{mention})(?:\s+(?:both|all|too|also))?{_STATE_VERB}{_STATE_ADVERB}(?={_LOCATIVE})"
+    )
+    out = []
+    for sentence in re.split(r"(?<=[.;!?\n])", text):
+        if _WISH_FRAME.search(sentence) and not _REFERENCE.search(sentence):
+            sentence = state.sub(lambda m: m["name"], sentence)
+        out.append(sentence)
+    return "".join(out)
 
 
 # ---- free-order remarks ---------------------------------------------------------------------------------
@@ -133,15 +172,136 @@ def polite_frames(text: str) -> str:
 
 def plain_words(text: str, kinds: dict[str, bool], heads: dict[str, list[str]]) -> str:
     """The lowercased text with ordinals spelt out, politeness that carries nothing removed, the verb
-    "pair" read as "match", corrections applied and plurals named. `kinds`: each object or plate name
-    (in words) -> is it a plate; `heads`: a head noun that several objects share ("apple") -> their
-    names."""
+    "pair" read as "match", "make it so" as "make sure", clauses that name nothing read (`remarks_read`),
+    a tidying verb before an object as "put", plates said by colour named, questions joined with their
+    answers, corrections applied and plurals named. `kinds`: each object or plate name (in words) -> is
+    it a plate; `heads`: a head noun that several objects share ("apple") -> their names."""
     text = re.sub(r"\b(1st|2nd|3rd|4th)\b", lambda m: _ORDINALS[m[1]], text.lower())
     text = _THE_FOLLOWING.sub("these", _FILLER.sub(" ", polite_frames(text)))
-    text = _PAIR_VERB.sub("match", text)
+    text = remarks_read(text, kinds)
+    text = _PAIR_VERB.sub("match", text).replace("+", " and ")
+    text = _BY_THE_END.sub("", _FIRST_THINGS.sub("first", text))
+    text = _DONE_WORDS.sub(r"\g<that> is done", text)
+    text = re.sub(r"\b(?:make|have|get)\s+it\s+so(?:\s+that)?\b", "make sure", text)  # the same goal
+    text = _tidied_as_put(text, kinds)
+    text = answers_joined(plates_by_colour(respectively_paired(text, kinds), kinds), kinds)
+    text = _plate_referred(text, kinds)
     text = _APPOSITION.sub(lambda m: m[0] if _names_a_word(m["words"], kinds) else ",", text)
     text = corrected(text, kinds)
     return _plurals_named(text, kinds, heads)
+
+
+# "... when you're finished.": the end state, not an order ("when you're done, put ..." opens a step)
+_BY_THE_END = re.compile(
+    r",?\s*\b(?:when|once|by\s+the\s+time)\s+you(?:'re|\s+are|'ve|\s+have)\s+(?:all\s+)?(?:done|finished|through)"
+    r"(?=\s*(?:[.;!?]|$))"
+)
+# "once that's sorted / taken care of / out of the way": a step done (said as "done", which check 1 knows)
+_DONE_WORDS = re.compile(
+    r"\b(?P<that>that|this|those|these|it|they)(?:'s|s|\s+is|\s+are|'re)\s+(?:sorted|handled|through|over|"
+    r"taken\s+care\s+of|out\s+of\s+the\s+way)\b"
+)
+_FIRST_THINGS = re.compile(r"\bfirst\s+things\s+first\b")
+
+
+def _tidied_as_put(text: str, kinds: dict[str, bool]) -> str:
+    """ "sort the green apple onto the blue plate": a verb of tidying before a named object is the one
+    action of this world, placing it."""
+    objects = mention_pattern([n for n, plate in kinds.items() if not plate]).pattern
+    return re.sub(rf"\b{_TIDY_VERB}(?:\s+(?:out|up))?(?=\s+(?:the\s+)?{objects})", "put", text)
+
+
+_RESPECTIVELY_WORDS = frozenset(
+    "the and go goes put place move set on onto in into to should must plates please belong belongs".split()
+)
+
+
+def respectively_paired(text: str, kinds: dict[str, bool]) -> str:
+    """ "the carrot and the orange go on the blue and yellow plates respectively" -> "put the carrot on
+    the blue plate, the orange on the yellow plate": the n-th object with the n-th plate, where the
+    clause names as many objects as plates (by colour or in full) and nothing else but placing words."""
+    objects = mention_pattern([n for n, plate in kinds.items() if not plate]).pattern
+    colours = {n.split()[0]: n for n, plate in kinds.items() if plate and len(n.split()) == 2}
+    plate = rf"\b(?:{'|'.join(map(re.escape, colours))})(?:\s+plate)?\b"
+
+    def paired(m: re.Match[str]) -> str:
+        said = re.findall(rf"{objects}|{plate}", m["clause"])
+        things = [_name(w) for w in said if _name(w) in kinds and not kinds[_name(w)]]
+        plates = [colours[_name(w).split()[0]] for w in said if _name(w) not in things]
+        rest = set(re.findall(r"[a-z']+", re.sub(rf"{objects}|{plate}", " ", m["clause"])))
+        one_each = len(things) == len(plates) > 1 and [_name(w) for w in said[: len(things)]] == things
+        if not one_each or not rest <= _RESPECTIVELY_WORDS:
+            return m[0]
+        return "put " + ", ".join(f"the {o} on the {p}" for o, p in zip(things, plates, strict=True))
+
+    return re.sub(r"(?P<clause>[^.;:!?]*?),?\s+respectively\b", paired, text)
+
+
+_ON_IT = re.compile(
+    r"\b(?P<to>on|onto|in|into|to)\s+(?:it|that\s+(?:plate|one)|this\s+(?:plate|one)|the\s+same\s+(?:plate|one))\b"
+)
+
+
+def _plate_referred(text: str, kinds: dict[str, bool]) -> str:
+    """ "on it" / "on that plate" / "on the same plate" as the plate named last before it (in this world
+    only a plate holds things: "the yellow plate comes first: the green apple and the orange go on it");
+    left where no plate is named before it."""
+    plates = mention_pattern([n for n, plate in kinds.items() if plate])
+
+    def referred(m: re.Match[str]) -> str:
+        before = [_name(p) for p in plates.findall(text, 0, m.start()) if _name(p) in kinds]
+        return f"{m['to']} the {before[-1]}" if before else m[0]
+
+    return _ON_IT.sub(referred, text)
+
+
+def plates_by_colour(text: str, kinds: dict[str, bool]) -> str:
+    """A plate said by its colour alone ("green apple -> blue", "the orange on the yellow") named in full:
+    a colour word of a plate's name that starts no name and is followed by no noun of its own ("the
+    green apple", "the yellow one", "the blue and yellow plates" are left)."""
+    colours = {n.split()[0]: n for n, plate in kinds.items() if plate and len(n.split()) == 2}
+    heads = {w for n in kinds for w in n.split()[1:]} | {"one", "ones", "and", "or", "plates", "plated"}
+    alone = re.compile(rf"\b(?:{'|'.join(map(re.escape, colours))})\b(?!\s*(?:{'|'.join(sorted(heads))})\b)")
+    out, at = [], 0
+    for name in [*mention_pattern(kinds).finditer(text), None]:
+        end = name.start() if name is not None else len(text)
+        out.append(alone.sub(lambda m: colours[m[0]], text[at:end]))
+        if name is not None:
+            out.append(name[0])
+            at = name.end()
+    return "".join(out)
+
+
+# a question that asks where objects go: "where does the green apple go?", "and the orange?", "what about
+# the carrot?" (not "where is the carrot?": that asks where it is)
+_ASKED_WHERE = re.compile(
+    r"^\s*(?:and\s+)?(?:(?:where\s+(?:does|do|should|will|would|must|can)|what\s+about|how\s+about)\s+)?"
+    r"(?P<objects>[a-z\s,']+?)(?:\s+(?:go|goes|belong|belongs|end\s+up|land))?\s*\?\s*$"
+)
+
+
+def answers_joined(text: str, kinds: dict[str, bool]) -> str:
+    """A question that asks where objects go (`_ASKED_WHERE`), answered by the sentence after it that
+    names a plate and no object, as one placement: "where does the green apple go? on the blue plate."
+    -> "the green apple on the blue plate."."""
+    pattern = mention_pattern(kinds)
+
+    def named(words: str) -> set[bool | None]:
+        return {kinds.get(_name(f).removesuffix("s")) for f in pattern.findall(words)}
+
+    out: list[str] = []
+    for sentence in re.split(r"(?<=[.;!?])(?![.;!?])", text):
+        asked = _ASKED_WHERE.match(out[-1]) if out and named(sentence) == {True} else None
+        if asked and named(asked["objects"]) == {False} and _only_names(asked["objects"], pattern):
+            out[-1] = f" {asked['objects']} {sentence.lstrip()}"
+        else:
+            out.append(sentence)
+    return "".join(out)
+
+
+def _only_names(words: str, pattern: re.Pattern[str]) -> bool:
+    """Are `words` names joined by "the", "a", "and" and commas alone ("the carrot and the orange")?"""
+    return not re.sub(r"\b(?:the|and|a|an)\b|[\s,]", "", pattern.sub(" ", words))
 
 
 def mention_pattern(names: Iterable[str], flags: int = 0) -> re.Pattern[str]:
@@ -203,6 +363,9 @@ _LABEL = re.compile(
     rf"(?:^|(?<=[.;!?:,]))\s*(?:{_STEP_NOUN}\s*(?P<n1>\d|one|two|three|four|first|second|third|fourth)|"
     rf"(?P<n2>first|second|third|fourth)\s+{_STEP_NOUN})\s*[:.)\-]\s*"
 )
+_NOUN_LABEL = re.compile(
+    r"(?:^|(?<=[.;!?:,]))\s*(?P<noun>[a-z]+)\s+(?P<n1>\d|one|two|three|four)(?P<n2>)\s*[:.)\-]\s*"
+)
 _LIST_NUMBER = re.compile(r"(?:^|(?<=[\s.;!?]))\(?(?P<n>\d)[.)]\s+")
 
 
@@ -210,11 +373,33 @@ def steps_read(text: str, listed: bool) -> str | None:
     """Step labels, and bare list numbers, as "first" / "then" (numbered 1, 2, ... in turn); bare list
     numbers beside a remark that frees the whole list (`listed`: "1) ... 2) ... in any order") only list,
     and are removed. None: labels or numbers out of turn."""
-    labels = list(_LABEL.finditer(text))
+    labels = _labels(text)
     if [_step_number(m["n1"] or m["n2"]) for m in labels] != list(range(1, len(labels) + 1)):
         return None
     text = _as_steps(text, labels)
     return list_numbers_read(text, listed)
+
+
+def _labels(text: str) -> list[re.Match[str]]:
+    """The step labels of `text`: "Step 1:", "First course:", or any one noun numbered ("Priority 1: ...
+    Priority 2: ...")."""
+    labels = list(_LABEL.finditer(text))
+    if not labels:
+        labels = list(_NOUN_LABEL.finditer(text))
+        if len(labels) < 2 or len({m["noun"] for m in labels}) != 1:
+            return []
+    return labels
+
+
+def labels_out_of_turn(text: str) -> str | None:
+    """The labels or list numbers of `text` (lowercased) when they are not 1, 2, ... in turn ("Part 2: ...
+    Part 1: ..."): no reading may order the steps by where they are written."""
+    numbers = [m[0].strip() for m in (*_labels(text), *_LIST_NUMBER.finditer(text))]
+    turns = [_step_number(m["n1"] or m["n2"]) for m in _labels(text)]
+    listed = [int(m["n"]) for m in _LIST_NUMBER.finditer(text)]
+    if turns == list(range(1, len(turns) + 1)) and listed in ([], list(range(1, len(listed) + 1))):
+        return None
+    return ", ".join(numbers)
 
 
 def list_numbers_read(text: str, listed: bool) -> str | None:
@@ -250,3 +435,126 @@ def _as_steps(text: str, marks: list[re.Match[str]]) -> str:
 
 def _step_number(word: str) -> int:
     return int(word) if word.isdigit() else _NUMBER_WORDS[word]
+
+
+# ---- clauses that name nothing: courtesy, list headings, freedom statements --------------------------------
+# (read word by word, whatever their phrasing: every word must belong to the clause's kind)
+_SENTENCE_PIECE = re.compile(r"[^.;:!?()\n]+")
+_CLAUSE = re.compile(r"[^,.;:!?()\n]+?(?=\s+-\s+|[,.;:!?()\n]|$)")
+_COURTESY_WORDS = frozenset(
+    "hey hi hiya hello yo ok okay so alright right well um uh erm please thanks thank cheers kindly dear "
+    "sweetie mate buddy robot when whenever if you you're youre u get got have find a an some spare are can "
+    "could would will mind doing me favour favor like just quick pls plz thx ty ta".split()
+)
+_UNHURRIED = re.compile(r"\bno\s+(?:rush|hurry|worries|pressure)\b")
+_TIDY_VERB = r"(?:sort|organi[sz]e|arrange|tidy|handle|do|set\s+up|lay\s+out)"
+_THE_THINGS = r"(?:these|this|them|things|stuff|everything|the\s+(?:items|things|fruits?|plates|following))"
+_HEADING_FRAME = re.compile(
+    rf"^{_TIDY_VERB}\s+(?:(?:out|up)\s+)?{_THE_THINGS}(?:\s+(?:out|up))?(?:\s+for\s+(?:me|us))?$"
+)
+# a freedom statement: what it is about (the order, which comes first, what depends on what) ...
+_ORDER_TOPIC = re.compile(
+    r"\b(?:order(?:ing)?|sequenc(?:e|ing)|which\b[a-z'\s]{0,24}?\b(?:first|(?:start|begin)(?:\s+with)?)|"
+    r"(?:either|any|whichever)(?:\s+one|\s+of\s+them)?\s+(?:(?:can\s+)?(?:go|goes|come|comes)\s+)?first)\b"
+)
+_INDEPENDENT = re.compile(
+    r"\b(?:none|neither|no\s+one)\s+of\s+(?:these|them|those|the\s+\w+)\s+depends?\s+on\s+(?:another|any\s+other|"
+    r"the\s+others?|each\s+other|one\s+another)\b|\b(?:they|these|those|them)\s+(?:are|'re)\s+(?:all\s+)?"
+    r"independent(?:\s+of\s+(?:each\s+other|one\s+another))?\b"
+)
+# ... and what it says of it
+_FREE_PREDICATE = re.compile(
+    r"\b(?:(?:does|do|did|will|would|should)(?:\s+not|n't|nt)\s+matter|no\s+matter|matters\s+not|irrelevant|"
+    r"unimportant|not\s+important|of\s+no\s+(?:consequence|importance)|up\s+to\s+you|(?:your|the\s+robot's)\s+"
+    r"(?:call|choice|decision|pick)|(?:are|'re|is|'s)\s+free|free\s+to\s+(?:choose|pick|decide)|"
+    r"(?:can|may|get\s+to)\s+(?:choose|pick|decide)|any|either|whatever|whichever|arbitrary|flexible|optional|"
+    r"not\s+(?:specified|fixed|set|required|needed)|unspecified|no\s+particular|(?:i|we)\s+(?:don't|do\s+not)\s+"
+    r"(?:care|mind)|(?:makes?|is)\s+no\s+difference|do\s+(?:whatever|as\s+you\s+(?:like|please)))\b"
+)
+# "within each pair", "inside each", "within a priority", "for every plate": what a freedom statement is about
+_EACH_GROUP = re.compile(
+    r"\b(?:(?:within|inside)\s+(?:each|every|a|one|the\s+same)|(?:in|for)\s+(?:each|every))(?:\s+(?!order\b)[a-z]+)?\b"
+)
+_FREEDOM_FILLER = frozenset(
+    "the in which you do them they these those this it that of for me us to is are be at all really totally "
+    "entirely quite completely here and so just it's its can may will how place placement placements put "
+    "one ones a way round i we honestly pretty much first go goes what done like want prefer wish choose "
+    "pick fine ok okay good works work suits suit by with".split()
+)
+_NEGATION = re.compile(r"\b(?:not|never|no|none)\b|n't\b")
+
+
+def remarks_read(text: str, names: Iterable[str]) -> str:
+    """`text` with each sentence, or else each clause, that names no object or plate read by its words
+    (see the module docstring): courtesy and list headings removed, freedom statements said as "in any
+    order" or "within each group in any order". Any other clause is left as it is, for the readers."""
+    mention = mention_pattern(names)
+    text = _SENTENCE_PIECE.sub(lambda m: _opener_dropped(m[0]), text)
+    for pieces in (_SENTENCE_PIECE, _CLAUSE):
+        low, out, at = text.lower(), [], 0
+        for piece in pieces.finditer(low):
+            words = piece[0].strip(" -")
+            if not words or mention.search(words):
+                continue
+            read = None if _FREE_ORDER.fullmatch(words) else _clause_read(words)  # a listed remark stays
+            if read is not None:
+                out.append(text[at : piece.start()] + (f" {read}" if read else ""))
+                at = piece.end()
+        text = "".join(out) + text[at:]
+    return re.sub(r"[ \t]+([,.;:!?])", r"\1", re.sub(r"[ \t]+", " ", text)).strip()
+
+
+_YOUR_TIME = frozenset("sec second moment minute chance time free".split())
+_YOU = frozenset({"you", "you're", "youre", "u"})
+
+
+def _courtesy(words: list[str]) -> bool:
+    """Are `words` courtesy alone? A word for time only beside "you" ("when you get a sec", "whenever
+    you're free"; "second" alone is a step)."""
+    said = set(words)
+    return said <= _COURTESY_WORDS | _YOUR_TIME and (not _YOUR_TIME & said or bool(_YOU & said))
+
+
+def _opener_dropped(sentence: str) -> str:
+    """A sentence without the courtesy words it opens with when they speak of the user's time ("hey when
+    you get a sec could you put ...": no comma sets them apart)."""
+    words = list(re.finditer(r"[A-Za-z']+", sentence))
+    run = 0
+    while run < len(words) and words[run][0].lower() in _COURTESY_WORDS | _YOUR_TIME:
+        run += 1
+    said = [w[0].lower() for w in words[:run]]
+    if run == len(words) or not (_YOUR_TIME & set(said) and _courtesy(said)):  # not "Second course:"
+        return sentence
+    return sentence[: words[0].start()] + sentence[words[run].start() :]
+
+
+_ASKING = frozenset("i i'd we we'd want need would to".split())  # "I'd like you to sort the fruit:"
+
+
+def _clause_read(clause: str) -> str | None:
+    """ "" for courtesy or a list heading, a free-order phrase for a freedom statement, None otherwise."""
+    words = re.findall(r"[a-z']+", _UNHURRIED.sub(" ", clause))
+    if _courtesy(words):  # "no rush" alone too
+        return ""
+    while words and words[0] in _COURTESY_WORDS | _ASKING:  # "could you sort these out for me please"
+        words.pop(0)
+    if words and words[-1] == "please":
+        words.pop()
+    if _HEADING_FRAME.match(" ".join(words)):
+        return ""
+    return _freedom_read(clause)
+
+
+def _freedom_read(clause: str) -> str | None:
+    """ "in any order" / "within each group in any order" for a clause that speaks of the order and says
+    it is free; None when it says anything else (a negation outside the free phrase, another word)."""
+    whole = _INDEPENDENT.search(clause)
+    if whole is None and not (_ORDER_TOPIC.search(clause) and _FREE_PREDICATE.search(clause)):
+        if not (_EACH_GROUP.search(clause) and _FREE_PREDICATE.search(clause)):
+            return None
+    rest = clause
+    for said in (_INDEPENDENT, _ORDER_TOPIC, _FREE_PREDICATE, _EACH_GROUP):
+        rest = said.sub(" ", rest)
+    if _NEGATION.search(rest) or not set(re.findall(r"[a-z']+", rest)) <= _FREEDOM_FILLER:
+        return None
+    return "within each group in any order" if _EACH_GROUP.search(clause) else "in any order"
