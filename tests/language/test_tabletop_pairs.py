@@ -477,3 +477,14 @@ def test_a_plate_said_again_as_it_is_the_plate_named_before(text):
         [("GreenApple", "BluePlate"), ("Orange", "YellowPlate")],
         [(("GreenApple", "BluePlate"), ("Orange", "YellowPlate"))],
     )
+
+
+def test_a_plate_said_again_after_its_objects_is_the_same_topic_in_a_longer_text():
+    """A plate named again right after its objects ("... with the green apple on it") is the topic said
+    again, also when another plate and its objects follow; a text that starts with an object pairs as it
+    always did ("the orange on the blue plate" is a second placing on it)."""
+    text = "Make sure the blue plate ends up with the green apple on it and the yellow plate with the orange."
+    assert _reading(text) == ([("GreenApple", "BluePlate"), ("Orange", "YellowPlate")], [])
+    same_plate = ([("GreenApple", "BluePlate"), ("Orange", "BluePlate")], [])
+    assert _reading("The blue plate gets the green apple and the blue plate gets the orange.") == same_plate
+    assert _reading("put the green apple on the blue plate, the orange on the blue plate") == same_plate

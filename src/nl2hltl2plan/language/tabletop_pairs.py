@@ -469,8 +469,7 @@ def _paired(types_in_order: list[str]) -> list[tuple[str, str]] | None:
         else:
             runs.append([t])
     runs = [r[:1] if _is_plate(r[0]) and len(set(r)) == 1 else r for r in runs]  # "on blue, the blue plate"
-    if len(runs) == 3 and _is_plate(runs[0][0]) and runs[0] == runs[2]:
-        runs = runs[1:]  # a topic: "the yellow plate comes first: the green apple and the orange go on it"
+    runs = _topics_said_once(runs)
     if len(runs) % 2 or any(_is_plate(r[0]) and len(r) != 1 for r in runs):
         return None
     plate_first = bool(runs) and _is_plate(runs[0][0])
@@ -478,6 +477,23 @@ def _paired(types_in_order: list[str]) -> list[tuple[str, str]] | None:
     for i in range(0, len(runs), 2):
         objects, plate = (runs[i + 1], runs[i][0]) if plate_first else (runs[i], runs[i + 1][0])
         out += [(o, plate) for o in objects]
+    return out
+
+
+def _topics_said_once(runs: list[list[str]]) -> list[list[str]]:
+    """In a text that starts with a plate, a plate named again right after its objects is the same topic,
+    not the next one ("the yellow plate comes first: the green apple and the orange go on it", "the blue
+    plate ends up with the green apple on it and the yellow plate with the orange")."""
+    if not runs or not _is_plate(runs[0][0]):
+        return runs
+    out: list[list[str]] = []
+    for run in runs:
+        if _is_plate(run[0]) and len(out) >= 2 and _is_plate(out[-2][0]) and run[0] == out[-2][-1]:
+            run = run[1:]
+        if run and out and _is_plate(out[-1][0]) == _is_plate(run[0]):
+            out[-1] = out[-1] + run
+        elif run:
+            out.append(run)
     return out
 
 
