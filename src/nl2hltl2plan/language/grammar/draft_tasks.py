@@ -8,6 +8,7 @@ from nl2hltl2plan.domain.task_kinds import Kind
 from nl2hltl2plan.errors import WorldError
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.frames import (
+    APPLIANCE_OF,
     THEN_TO,
     UNDER,
     Frame,
@@ -215,6 +216,14 @@ class TaskBuilder:
             self.unparsed.append(f"two treatments ({' and '.join(sorted(said))}) of one object in: {text}")
             return None
         kind = _kind_of(r)
+        untreated = said - _treated_where(final)
+        if kind == "place_in_container" and untreated:
+            # "place a chilled head of lettuce on a plate on a counter": no base task both treats a thing
+            # and puts it in a container ("refrigerate a slice in a bowl" ends in the fridge: that is the
+            # chilling); dropping the treatment would be a guess
+            treated = f"a {min(untreated)}ed thing in a container"
+            self.unparsed.append(f"{treated} (no base task does both) in: {text}")
+            return None
         fields = self.ground(
             kind,
             r.sliced,
@@ -431,6 +440,12 @@ def _settle_container(r: _Reading, obj: NP) -> NP | None:
                 r.states.append(st)
     r.container = container
     return final
+
+
+def _treated_where(place: NP | None) -> set[str]:
+    """The treatment that leaving a thing in `place` makes (the fridge chills it), if any."""
+    canonical = place.entry.canonical if place is not None and place.entry is not None else None
+    return {st for st, appliance in APPLIANCE_OF.items() if appliance == canonical}
 
 
 _STATE_KINDS: dict[str, Kind] = {"heat": "heat_place", "cool": "cool_place", "clean": "clean_place"}

@@ -295,6 +295,21 @@ def two_places(item: Item) -> str:
     return f"{places[0][1].text} / {later[-1].text}" if later else ""
 
 
+_TREATING = frozenset({"heat", "cool", "clean", "slice"})
+
+
+def treats_next_object(fr: Frame, nxt: str, start: int, joiner: str) -> bool:
+    """Is `fr` a bare treatment verb whose object is the one of the clause `nxt` right after it ("put the
+    egg in the sink, then chill then warm a tomato": the tomato is chilled, not the egg)?"""
+    if fr.cls not in _TREATING or joiner not in {"then", "and"} or len(fr.items) != 1:
+        return False
+    it = fr.items[0]
+    if (it.obj is not None and not it.obj.empty) or it.pps:
+        return False
+    first = parse_frame(nxt, start, joiner).items[:1]
+    return any(i.obj is not None and not i.obj.empty and not i.obj.pronoun for i in first)
+
+
 def is_fixed(np: NP) -> bool:
     """A receptacle that stays where it is (a table, the fridge), not a lamp."""
     return np.is_receptacle() and not np.is_movable_receptacle() and not np.is_lamp() and not np.pronoun
