@@ -100,3 +100,10 @@ def test_another_one_is_a_second_task_of_the_type():
 def test_two_places_are_not_guessed_by_the_model():
     tasks, unread = read("Put the spoon on the table closest to the window in the drawer.")
     assert not tasks and any("say which" in u for u in unread)
+
+
+def test_a_fruit_no_world_has_is_never_dropped():
+    """ "the apple or the pear": the pear is no object of any world; the reading is refused, never the
+    apple alone."""
+    tasks, unread = read("Put the apple or the pear in the fridge.")
+    assert not tasks and any("pear" in u for u in unread)

@@ -265,9 +265,8 @@ class ParseContext:
     model: SlotModel
 
 
-# the grammar's refusals of words that say two things ("two places it could go: ...; say which", "a choice
-# between objects: say which one")
-_ASKS_WHICH = re.compile(r"; say which\)$|: say which one\)$")
+# the grammar's refusal of a thing that names two places to go ("two places it could go: ...; say which")
+_ASKS_WHICH = re.compile(r"; say which\)$")
 
 
 def grammar_first_reading(instruction: str, ctx: ParseContext) -> LearnedParse:
@@ -279,7 +278,7 @@ def grammar_first_reading(instruction: str, ctx: ParseContext) -> LearnedParse:
     drafts = list(g.tasks)
     unparsed = list(g.unparsed)
     # no clause the grammar reads: the whole text may still be one task, unless the grammar found two
-    # readings of it ("on the desk ... in the safe": which place is a guess the model must not make)
+    # places it could go ("on the desk ... in the safe": which one is a guess the model must not make)
     whole = not drafts and bool(instruction.strip()) and not any(_ASKS_WHICH.search(u) for u in g.unparsed)
     if whole:
         drafts = [BaseTaskSpec(id=task_letter(0), text=instruction.strip(), kind="place", object=[])]
