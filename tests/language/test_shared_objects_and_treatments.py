@@ -107,3 +107,27 @@ def test_a_fruit_no_world_has_is_never_dropped():
     apple alone."""
     tasks, unread = read("Put the apple or the pear in the fridge.")
     assert not tasks and any("pear" in u for u in unread)
+
+
+# ----- "slice then cool the tomato": a bare "slice" slices the object named after it ---------------------
+def test_bare_slice_before_the_object_slices_it():
+    tasks, unread = read("Slice then cool the tomato and put it on the table.")
+    assert tasks == ["cool_place Tomato(sliced) -> DiningTable"] and not unread
+
+
+def test_cut_and_put_slices_the_bread():
+    tasks, unread = read("Put the knife in the drawer, then cut and put the bread on the counter.")
+    assert tasks == ["place Knife -> Drawer", "place Bread(sliced) -> CounterTop"] and not unread
+
+
+# ----- the appliance of a treatment is no destination the slot model may fill in --------------------------
+def test_treatment_with_no_destination_stays_refused():
+    """ "cool it" says where it is chilled, not where it goes: no reading leaves it in the fridge."""
+    tasks, unread = read("Put the mug in the sink. Then slice a tomato and cool it.")
+    assert tasks == ["place Mug -> SinkBasin"] and any("tomato" in u for u in unread)
+
+
+def test_a_verb_that_names_the_destination_is_still_read():
+    """Near miss: "throw the apple away" says where it goes."""
+    tasks, unread = read("Throw the apple away.", KITCHEN | {"GarbageCan"})
+    assert tasks == ["place Apple -> GarbageCan"] and not unread

@@ -280,6 +280,7 @@ class _Reading:
     count: int = 1
     examine: bool = False
     dests: list[NP] = field(default_factory=list)
+    slice_next: bool = False  # "slice then cool the tomato": a bare "slice" before the object is named
 
 
 def _read_frame(r: _Reading, fr: Frame, it: Item) -> None:
@@ -291,6 +292,7 @@ def _read_frame(r: _Reading, fr: Frame, it: Item) -> None:
         r.states.append("clean")
     if fr.cls == "slice":
         r.sliced = r.sliced or r.obj is not None or (o is not None and not o.pronoun)
+        r.slice_next = r.obj is None and o is None and not it.pps
     if fr.cls == "examine":
         r.examine = True
     if o is not None and o.is_lamp() and fr.cls in {"light", "examine"}:
@@ -313,6 +315,7 @@ def _read_object(r: _Reading, o: NP) -> None:
     if not o.pronoun and not o.empty:
         if r.obj is None:
             r.obj = o
+            r.sliced = r.sliced or r.slice_next
         elif r.container is None and r.dests and same(o, r.dests[-1]) and o.is_movable_receptacle():
             r.container = o  # "put a card in a bowl and put the bowl on the desk"
         elif same(o, r.container):
