@@ -131,3 +131,16 @@ def test_a_verb_that_names_the_destination_is_still_read():
     """Near miss: "throw the apple away" says where it goes."""
     tasks, unread = read("Throw the apple away.", KITCHEN | {"GarbageCan"})
     assert tasks == ["place Apple -> GarbageCan"] and not unread
+
+
+# ----- "fill X with water" in the sink is what rinsing does in these worlds (the faucet fills it) -----------
+def test_filling_with_water_is_the_rinse():
+    tasks, unread = read(
+        "Fill up a mug with water and take it to the coffee machine.", KITCHEN | {"CoffeeMachine"}
+    )
+    assert tasks == ["clean_place Mug -> CoffeeMachine"] and not unread
+
+
+def test_filling_with_no_place_or_another_liquid_is_refused():
+    assert read("Fill the mug with water.")[1]
+    assert read("Fill the mug with coffee and put it on the table.")[1]
