@@ -120,17 +120,12 @@ def test_cut_and_put_slices_the_bread():
     assert tasks == ["place Knife -> Drawer", "place Bread(sliced) -> CounterTop"] and not unread
 
 
-# ----- the appliance of a treatment is no destination the slot model may fill in --------------------------
-def test_treatment_with_no_destination_stays_refused():
-    """ "cool it" says where it is chilled, not where it goes: no reading leaves it in the fridge."""
-    tasks, unread = read("Put the mug in the sink. Then slice a tomato and cool it.")
-    assert tasks == ["place Mug -> SinkBasin"] and any("tomato" in u for u in unread)
-
-
-def test_a_verb_that_names_the_destination_is_still_read():
-    """Near miss: "throw the apple away" says where it goes."""
-    tasks, unread = read("Throw the apple away.", KITCHEN | {"GarbageCan"})
-    assert tasks == ["place Apple -> GarbageCan"] and not unread
+# ----- two treatments with no destination: refused as two treatments, never one of them kept ---------------
+def test_two_treatments_without_a_destination_are_refused():
+    """ "chill a tomato and heat it" names no place either; the slot model's rescue may fill a place in
+    (the appliance), but never drop one of the two treatments."""
+    tasks, unread = read("Put the mug in the sink. Then chill a tomato and heat it.")
+    assert tasks == ["place Mug -> SinkBasin"] and any("two treatments" in u for u in unread)
 
 
 # ----- "fill X with water" in the sink is what rinsing does in these worlds (the faucet fills it) -----------
@@ -144,3 +139,11 @@ def test_filling_with_water_is_the_rinse():
 def test_filling_with_no_place_or_another_liquid_is_refused():
     assert read("Fill the mug with water.")[1]
     assert read("Fill the mug with coffee and put it on the table.")[1]
+
+
+# ----- a knife with a place of its own is moved, not the tool that slices ---------------------------------
+def test_knife_sent_elsewhere_is_a_task():
+    tasks, unread = read(
+        "Put a washed piece of lettuce in a bin and a knife in the fridge.", KITCHEN | {"GarbageCan"}
+    )
+    assert tasks == ["clean_place Lettuce(sliced) -> GarbageCan", "place Knife -> Fridge"] and not unread

@@ -208,12 +208,12 @@ class TaskBuilder:
         final = _settle_container(r, obj)
         if r.light is None and r.examine:
             r.light = parse_np("lamp")
-        if r.light is None and final is None:
-            self.unparsed.append(f"no destination for the {obj.text or obj.key!r} in: {text}")
-            return None
         said = _treatments_said(d)
         if len(said) > 1:  # "chill then warm a tomato": one task has one treatment; which is meant is a guess
             self.unparsed.append(f"two treatments ({' and '.join(sorted(said))}) of one object in: {text}")
+            return None  # (before a missing destination: no reading of the clause may drop one of them)
+        if r.light is None and final is None:
+            self.unparsed.append(f"no destination for the {obj.text or obj.key!r} in: {text}")
             return None
         kind = _kind_of(r)
         untreated = said - _treated_where(final)

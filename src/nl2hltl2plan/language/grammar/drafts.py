@@ -203,10 +203,15 @@ class DraftBuilder:
         def canonical(it: Item) -> str:
             return it.obj.entry.canonical if it.obj is not None and it.obj.entry is not None else ""
 
+        def place_of(it: Item) -> str:
+            return dst.text.lower() if (dst := dest_of(it)) is not None else ""
+
         items = self._content_without_slicing_knife(fr)
         if not any(canonical(it) in G.SLICEABLE for it in items):
             return items
-        knives = [it for it in items if canonical(it) in G.KNIVES]
+        cut_to = {place_of(it) for it in items if canonical(it) in G.SLICEABLE} | {""}
+        # "the apple in the bin and the knife in the fridge": a knife sent somewhere of its own is moved
+        knives = [it for it in items if canonical(it) in G.KNIVES and place_of(it) in cut_to]
         for it in knives:
             assert it.obj is not None
             self.b.issues.append(f"{it.obj.text!r} in {fr.text!r} is read as the tool that slices")
@@ -250,8 +255,7 @@ class DraftBuilder:
         drafts = self.out.drafts
         d = drafts[st.drafts[-1]] if st.drafts else None
         if d is not None and d.obj is not None and it.obj is not None and _another_of_it(it.obj, d):
-            # "put a toilet paper on the counter, then put another one in the cabinet": one more thing of
-            # the same kind, a task of its own
+            # "put a toilet paper on the counter, then another one in the cabinet": a task of its own
             it.obj = replace(d.obj, text=it.obj.text)
             d = None
         nxt = st.next_clause

@@ -27,7 +27,6 @@ _IN_CLAUSE = re.compile(
     r"cannot hold the .*? to look at it): (?P<clause>.+)$"
 )
 _NOTE = re.compile(r"^(?P<clause>.+?) \((?:a list of destinations|more than two objects[^)]*)\)$")
-_TREATMENT_APPLIANCES = frozenset({"Fridge", "Microwave", "SinkBasin"})
 _TREAT = {"heat_place": "heat", "cool_place": "chill", "clean_place": "rinse"}
 
 
@@ -90,13 +89,11 @@ def _names_object(clause: str, pred: SlotPrediction, slot: str = "object") -> bo
 
 
 def _names_place(clause: str, pred: SlotPrediction) -> bool:
-    """The clause names the predicted receptacle, or its verb implies it ("throw the apple away"); the
-    appliance a treatment is done in is no destination ("slice a tomato and cool it" names none)."""
+    """The clause names the predicted receptacle, or its verb implies it ("throw the apple away")."""
     top = pred.slots.get("receptacle") or []
     if not top:
         return False
     implied = {place for w in re.findall(r"[a-z]+", clause.lower()) for place in _verb_places(w)}
-    implied -= _TREATMENT_APPLIANCES
     return top[0][0] in implied or _names_object(clause, pred, "receptacle")
 
 
