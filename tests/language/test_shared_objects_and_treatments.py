@@ -147,3 +147,22 @@ def test_knife_sent_elsewhere_is_a_task():
         "Put a washed piece of lettuce in a bin and a knife in the fridge.", KITCHEN | {"GarbageCan"}
     )
     assert tasks == ["clean_place Lettuce(sliced) -> GarbageCan", "place Knife -> Fridge"] and not unread
+
+
+# ----- "A and B, both before C": the quantifier sums up the list, the reference is the list's -------------
+def test_both_before_orders_the_whole_list():
+    p = parse_instruction(
+        "Put the mug in the sink and the apple in the fridge, both before you put the egg in the pot.",
+        KITCHEN | {"Pot"},
+        "s",
+        strict=False,
+    )
+    assert sorted(p.before) == [("A", "C"), ("B", "C")]
+
+
+def test_both_with_no_list_before_it_is_not_dropped():
+    """Near miss: one clause in its sentence: "both" has nothing of its own sentence to sum up."""
+    _, unread = read(
+        "Put the mug in the sink. Put the apple in the fridge, both before you put the egg in the pot."
+    )
+    assert unread
