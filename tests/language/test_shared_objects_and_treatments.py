@@ -166,3 +166,8 @@ def test_both_with_no_list_before_it_is_not_dropped():
         "Put the mug in the sink. Put the apple in the fridge, both before you put the egg in the pot."
     )
     assert unread
+
+
+def test_states_listed_before_filled_are_one_noun_phrase():
+    tasks, unread = read("Put a cleaned, filled bowl of water in the cabinet, left of the microwave.")
+    assert tasks == ["clean_place Bowl -> Cabinet"] and not unread

@@ -384,7 +384,8 @@ _SHELF_OF = re.compile(
     re.IGNORECASE,
 )
 _STATE_ALT = "|".join(sorted(G.STATE_WORDS))
-_STATES_LISTED = re.compile(rf"\b({_STATE_ALT}),\s+(?=(?:{_STATE_ALT})\b)", re.IGNORECASE)
+# "a chilled, cut slice", "a cleaned, filled bowl of water": states listed before one noun
+_STATES_LISTED = re.compile(rf"\b({_STATE_ALT}),\s+(?=(?:{_STATE_ALT}|filled)\b)", re.IGNORECASE)
 # "a chilled and sliced tomato", "put washed and dried mugs ...": after an article or a placing verb, two
 # states joined by "and" describe one noun ("cut and cool the apple" stays two verbs)
 _STATES_JOINED = re.compile(
