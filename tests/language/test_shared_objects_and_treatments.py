@@ -171,3 +171,12 @@ def test_both_with_no_list_before_it_is_not_dropped():
 def test_states_listed_before_filled_are_one_noun_phrase():
     tasks, unread = read("Put a cleaned, filled bowl of water in the cabinet, left of the microwave.")
     assert tasks == ["clean_place Bowl -> Cabinet"] and not unread
+
+
+def test_bare_treatment_verb_before_the_same_object_named_again():
+    """Near miss: "get the mug, chill, and return the mug": the same mug, one task."""
+    tasks, unread = read(
+        "Get the mug from the coffee maker, chill, and return the mug to the coffee maker.",
+        KITCHEN | {"CoffeeMachine"},
+    )
+    assert tasks == ["cool_place Mug -> CoffeeMachine"] and not unread

@@ -21,7 +21,7 @@ from nl2hltl2plan.language.grammar.frames import (
     parse_frame,
     puts_into,
     same,
-    treats_next_object,
+    treats_another_object,
     two_places,
 )
 from nl2hltl2plan.language.grammar.phrases import NP, tokens
@@ -258,12 +258,12 @@ class DraftBuilder:
             # "put a toilet paper on the counter, then another one in the cabinet": a task of its own
             it.obj = replace(d.obj, text=it.obj.text)
             d = None
-        nxt = st.next_clause
+        nxt, at = st.next_clause, st.sentence.offset
         if (
             d is not None
             and len(fr.items) == 1
             and _continues(d, fr, it, joiner)
-            and not (nxt and treats_next_object(fr, nxt.text, st.sentence.offset + nxt.start, nxt.joiner))
+            and not (nxt and treats_another_object(fr, nxt.text, at + nxt.start, nxt.joiner, d.obj))
         ):
             d.frames.append((fr, it))
             d.end = fr.end
