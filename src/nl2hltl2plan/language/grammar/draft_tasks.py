@@ -8,6 +8,7 @@ from nl2hltl2plan.domain.task_kinds import Kind
 from nl2hltl2plan.errors import WorldError
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.frames import (
+    APPLIANCE_OF,
     THEN_TO,
     UNDER,
     Frame,
@@ -207,14 +208,22 @@ class TaskBuilder:
         final = _settle_container(r, obj)
         if r.light is None and r.examine:
             r.light = parse_np("lamp")
-        if r.light is None and final is None:
-            self.unparsed.append(f"no destination for the {obj.text or obj.key!r} in: {text}")
-            return None
         said = _treatments_said(d)
         if len(said) > 1:  # "chill then warm a tomato": one task has one treatment; which is meant is a guess
             self.unparsed.append(f"two treatments ({' and '.join(sorted(said))}) of one object in: {text}")
+            return None  # (before a missing destination: no reading of the clause may drop one of them)
+        if r.light is None and final is None:
+            self.unparsed.append(f"no destination for the {obj.text or obj.key!r} in: {text}")
             return None
         kind = _kind_of(r)
+        untreated = said - _treated_where(final)
+        if kind == "place_in_container" and untreated:
+            # "place a chilled head of lettuce on a plate on a counter": no base task both treats a thing
+            # and puts it in a container ("refrigerate a slice in a bowl" ends in the fridge: that is the
+            # chilling); dropping the treatment would be a guess
+            treated = f"a {min(untreated)}ed thing in a container"
+            self.unparsed.append(f"{treated} (no base task does both) in: {text}")
+            return None
         fields = self.ground(
             kind,
             r.sliced,
@@ -271,6 +280,7 @@ class _Reading:
     count: int = 1
     examine: bool = False
     dests: list[NP] = field(default_factory=list)
+    slice_next: bool = False  # "slice then cool the tomato": a bare "slice" before the object is named
 
 
 def _read_frame(r: _Reading, fr: Frame, it: Item) -> None:
@@ -282,6 +292,7 @@ def _read_frame(r: _Reading, fr: Frame, it: Item) -> None:
         r.states.append("clean")
     if fr.cls == "slice":
         r.sliced = r.sliced or r.obj is not None or (o is not None and not o.pronoun)
+        r.slice_next = r.obj is None and o is None and not it.pps
     if fr.cls == "examine":
         r.examine = True
     if o is not None and o.is_lamp() and fr.cls in {"light", "examine"}:
@@ -304,6 +315,7 @@ def _read_object(r: _Reading, o: NP) -> None:
     if not o.pronoun and not o.empty:
         if r.obj is None:
             r.obj = o
+            r.sliced = r.sliced or r.slice_next
         elif r.container is None and r.dests and same(o, r.dests[-1]) and o.is_movable_receptacle():
             r.container = o  # "put a card in a bowl and put the bowl on the desk"
         elif same(o, r.container):
@@ -431,6 +443,12 @@ def _settle_container(r: _Reading, obj: NP) -> NP | None:
                 r.states.append(st)
     r.container = container
     return final
+
+
+def _treated_where(place: NP | None) -> set[str]:
+    """The treatment that leaving a thing in `place` makes (the fridge chills it), if any."""
+    canonical = place.entry.canonical if place is not None and place.entry is not None else None
+    return {st for st, appliance in APPLIANCE_OF.items() if appliance == canonical}
 
 
 _STATE_KINDS: dict[str, Kind] = {"heat": "heat_place", "cool": "cool_place", "clean": "clean_place"}

@@ -21,6 +21,7 @@ from nl2hltl2plan.language.grammar.frames import (
     parse_frame,
     puts_into,
     same,
+    treats_another_object,
     two_places,
 )
 from nl2hltl2plan.language.grammar.phrases import NP, tokens
@@ -50,6 +51,7 @@ class _SentenceState:
     context: list[tuple[str, NP]] = field(default_factory=list)
     context_group: int = -1
     pending_joiner: str = ""
+    next_clause: Clause | None = None  # the clause after the one being read
 
 
 class DraftBuilder:
@@ -73,7 +75,8 @@ class DraftBuilder:
         requests = [c for c in said if c not in statements]
         clauses = expand_gapping(requests, self.last_verb, self.last_dest, gap_base=100 * s.index)
         st = _SentenceState(s, len(self.out.units))
-        for clause in clauses:
+        for k, clause in enumerate(clauses):
+            st.next_clause = clauses[k + 1] if k + 1 < len(clauses) else None
             self._add_clause(clause, st)
         self._apply_markers(st)
 
@@ -200,10 +203,15 @@ class DraftBuilder:
         def canonical(it: Item) -> str:
             return it.obj.entry.canonical if it.obj is not None and it.obj.entry is not None else ""
 
+        def place_of(it: Item) -> str:
+            return dst.text.lower() if (dst := dest_of(it)) is not None else ""
+
         items = self._content_without_slicing_knife(fr)
         if not any(canonical(it) in G.SLICEABLE for it in items):
             return items
-        knives = [it for it in items if canonical(it) in G.KNIVES]
+        cut_to = {place_of(it) for it in items if canonical(it) in G.SLICEABLE} | {""}
+        # "the apple in the bin and the knife in the fridge": a knife sent somewhere of its own is moved
+        knives = [it for it in items if canonical(it) in G.KNIVES and place_of(it) in cut_to]
         for it in knives:
             assert it.obj is not None
             self.b.issues.append(f"{it.obj.text!r} in {fr.text!r} is read as the tool that slices")
@@ -246,7 +254,17 @@ class DraftBuilder:
         """Attach one clause item to the sentence's last draft (-1) or start a new draft (its index)."""
         drafts = self.out.drafts
         d = drafts[st.drafts[-1]] if st.drafts else None
-        if d is not None and len(fr.items) == 1 and _continues(d, fr, it, joiner):
+        if d is not None and d.obj is not None and it.obj is not None and _another_of_it(it.obj, d):
+            # "put a toilet paper on the counter, then another one in the cabinet": a task of its own
+            it.obj = replace(d.obj, text=it.obj.text)
+            d = None
+        nxt, at = st.next_clause, st.sentence.offset
+        if (
+            d is not None
+            and len(fr.items) == 1
+            and _continues(d, fr, it, joiner)
+            and not (nxt and treats_another_object(fr, nxt.text, at + nxt.start, nxt.joiner, d.obj))
+        ):
             d.frames.append((fr, it))
             d.end = fr.end
             return -1
@@ -284,6 +302,8 @@ class DraftBuilder:
                 u.markers.append((kind, ref))
         for kind, ref in st.sentence.trailing:
             if kind in {G.THEN, G.FINALLY} and len(sentence_units) > 1:
+                # "A and B afterwards": B after the clause before it, as "A, then B"
+                sentence_units[-1].seq_after_prev |= kind == G.THEN
                 sentence_units[-1].markers.append((kind, IN_SENTENCE if kind == G.FINALLY else ref))
             elif kind == G.FREE and len(sentence_units) == 1 and len(sentence_units[0].tasks) > 1:
                 pass  # "move the phone and the bat to the bed in any order": order inside the group is free
@@ -365,6 +385,11 @@ def _continues(d: Draft, fr: Frame, it: Item, joiner: str) -> bool:
     ):
         return True
     return incomplete(d) and d.obj is None
+
+
+def _another_of_it(o: NP, d: Draft) -> bool:
+    """Is `o` "another one" / "another" after draft `d` has put its thing somewhere?"""
+    return o.pronoun and o.text.lower() in {"another", "another one"} and not incomplete(d)
 
 
 # ----- text helpers ----------------------------------------------------------------------------------

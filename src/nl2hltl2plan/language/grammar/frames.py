@@ -295,6 +295,22 @@ def two_places(item: Item) -> str:
     return f"{places[0][1].text} / {later[-1].text}" if later else ""
 
 
+_TREATING = frozenset({"heat", "cool", "clean", "slice"})
+
+
+def treats_another_object(fr: Frame, nxt: str, start: int, joiner: str, current: NP | None) -> bool:
+    """Is `fr` a bare treatment verb of the object of the clause `nxt` right after it, another one than
+    `current` ("put the egg in the sink, then chill then warm a tomato": the tomato is chilled, not the
+    egg; "get the mug, chill, and return the mug": the mug)?"""
+    if fr.cls not in _TREATING or joiner not in {"then", "and"} or len(fr.items) != 1 or current is None:
+        return False
+    it = fr.items[0]
+    if (it.obj is not None and not it.obj.empty) or it.pps:
+        return False
+    o = next((i.obj for i in parse_frame(nxt, start, joiner).items[:1]), None)
+    return o is not None and not o.empty and not o.pronoun and not same(o, current)
+
+
 def is_fixed(np: NP) -> bool:
     """A receptacle that stays where it is (a table, the fridge), not a lamp."""
     return np.is_receptacle() and not np.is_movable_receptacle() and not np.is_lamp() and not np.pronoun

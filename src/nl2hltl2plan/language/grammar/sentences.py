@@ -201,6 +201,18 @@ _BOTH_AFTER_LIST = re.compile(
     r"(?=(?:in|into|on|onto|inside|to|back|away)\b)",
     re.I,
 )
+# "A and B, both before C" / "..., all of them after C": the quantifier says the reference is the whole
+# list's, as a reference closing a sentence already is
+_ALL_OF_THEM_BEFORE = re.compile(
+    r",\s*(?:both|all|each)(?:\s+of\s+(?:them|these|those))?\s+(?=(?:before|after|once|until|when)\b)", re.I
+)
+
+
+def _lists_before(text: str, at: int) -> bool:
+    """Does the sentence that runs up to `at` join two things with "and" (what "both" / "all" sum up)?"""
+    return re.search(r"\band\b", re.split(r"[.;!?]", text[:at])[-1], re.I) is not None
+
+
 # "X, but not before Y-ing Z" / "X not until Y": X only after Y
 _NOT_BEFORE = re.compile(r",?\s+(?:but\s+)?not\s+(?:before|until)\s+", re.I)
 # "the mug that is on the counter": where the mug is now, a source ("the mug from the counter"), not where
@@ -372,7 +384,8 @@ _SHELF_OF = re.compile(
     re.IGNORECASE,
 )
 _STATE_ALT = "|".join(sorted(G.STATE_WORDS))
-_STATES_LISTED = re.compile(rf"\b({_STATE_ALT}),\s+(?=(?:{_STATE_ALT})\b)", re.IGNORECASE)
+# "a chilled, cut slice", "a cleaned, filled bowl of water": states listed before one noun
+_STATES_LISTED = re.compile(rf"\b({_STATE_ALT}),\s+(?=(?:{_STATE_ALT}|filled)\b)", re.IGNORECASE)
 # "a chilled and sliced tomato", "put washed and dried mugs ...": after an article or a placing verb, two
 # states joined by "and" describe one noun ("cut and cool the apple" stays two verbs)
 _STATES_JOINED = re.compile(
@@ -403,6 +416,7 @@ def normalize(text: str) -> str:
     text = _AS_SOON_AS.sub(lambda m: _as_cased("once", m[0]), text)
     text = _CONNECTIVE_YOUVE.sub(r"\1 you have", text)
     text = _BOTH_AFTER_LIST.sub(r"\1 ", _BOTH_BEFORE_LIST.sub("", text))
+    text = _ALL_OF_THEM_BEFORE.sub(lambda m: " " if _lists_before(text, m.start()) else m[0], text)
     text = _WHERE_IT_IS.sub("from ", text)
     text = _ONLY_AFTER_SHOULD.sub(lambda m: f"{_as_cased('after', m[0])} {m[2]}, ", text)
     # "Do not Y until (you) X" states the order of "After X, Y" (ANNOTATION_GUIDE.md)

@@ -14,6 +14,7 @@ reported as an `Ambiguity` with the candidates ranked.
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
@@ -264,6 +265,10 @@ class ParseContext:
     model: SlotModel
 
 
+# the grammar's refusal of a thing that names two places to go ("two places it could go: ...; say which")
+_ASKS_WHICH = re.compile(r"; say which\)$")
+
+
 def grammar_first_reading(instruction: str, ctx: ParseContext) -> LearnedParse:
     """The grammar's structure, its clauses' slots filled and ordered by the slot model."""
     scene_types, policy, model = ctx.scene_types, ctx.policy, ctx.model
@@ -272,8 +277,10 @@ def grammar_first_reading(instruction: str, ctx: ParseContext) -> LearnedParse:
         g = _rescued(g, instruction, ctx)
     drafts = list(g.tasks)
     unparsed = list(g.unparsed)
-    whole = not drafts and bool(instruction.strip())
-    if whole:  # no clause the grammar reads: the whole text may still be one task
+    # no clause the grammar reads: the whole text may still be one task, unless the grammar found two
+    # places it could go ("on the desk ... in the safe": which one is a guess the model must not make)
+    whole = not drafts and bool(instruction.strip()) and not any(_ASKS_WHICH.search(u) for u in g.unparsed)
+    if whole:
         drafts = [BaseTaskSpec(id=task_letter(0), text=instruction.strip(), kind="place", object=[])]
     preds = model.predict([d.text or instruction for d in drafts], scene_types)
     ambiguities: list[Ambiguity] = []
