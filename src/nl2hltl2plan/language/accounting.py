@@ -142,7 +142,8 @@ def _is_verb(m: Mention, toks: list[tuple[str, int, int]]) -> bool:
     return "verb_unsupported" in categories(word) and nxt in _OBJECT_START and prev in _COMMAND_START
 
 
-_OBJECT_START = frozenset({"the", "a", "an", "it", "them", "this", "that", "my", "your", "some"})
+# what opens the object of a verb: a determiner (not "of": "a spray of water" names a thing) or a pronoun
+_OBJECT_START = frozenset(DETERMINERS - {"of"} | {"it", "them", "some"})
 _COMMAND_START = frozenset({"", "and", "then", "please", "also", "to", "first", "now", "pls"})
 
 
