@@ -22,6 +22,8 @@ import re
 from collections.abc import Iterable
 
 from nl2hltl2plan.language.content_words import free_order_phrase
+from nl2hltl2plan.language.grounding import sentence_start
+from nl2hltl2plan.language.statements import asked_before
 
 # ---- statements ---------------------------------------------------------------------------------------
 _STATE_VERB = (
@@ -37,13 +39,9 @@ _LOCATIVE = (
     r"(?:where\s+(?:it|they)\s+(?:is|are)|as\s+(?:it|they)\s+(?:is|are)|there)\b)"
 )
 _HOLDS = r"\s+(?:has|had|holds|held|contains|contained|carries|carried)\s+(?=(?:the|a|an|both|two)\b)"
-# a wish, goal or reference said before a state clause makes it something to bring about
-_GOAL_FRAME = re.compile(
-    r"\b(?:please|make\s+sure|ensure|see\s+(?:to\s+it\s+)?that|want|wish|like|love|need|needs|should|must|"
-    r"have\s+to|has\s+to|hope|expect|ask|goal|target|final|desired|end\s+state|result|postcondition|"
-    r"by\s+the\s+end|at\s+the\s+end|in\s+the\s+end|once|when|after|before|until|as\s+soon\s+as)\b"
-)
-_SENTENCE_END = re.compile(r"[.;!?]")
+# "please" before a state clause asks for it too: the polite frames below are read as it ("it would please
+# me if X were on Y": "please X were on Y"); the other wishes, goals and references are `statements`'
+_PLEASE = re.compile(r"\bplease\b")
 
 
 def stated_not_asked(text: str, names: Iterable[str]) -> str | None:
@@ -56,8 +54,9 @@ def stated_not_asked(text: str, names: Iterable[str]) -> str | None:
         rf"{mention}(?:\s+(?:both|all|too|also))?{_STATE_VERB}{_STATE_ADVERB}{_LOCATIVE}|{mention}{_HOLDS}"
     )
     for m in state.finditer(lowered):
-        starts = [e.end() for e in _SENTENCE_END.finditer(lowered, 0, m.start())]
-        if not _GOAL_FRAME.search(lowered, starts[-1] if starts else 0, m.start()):
+        if not asked_before(lowered, m.start()) and not _PLEASE.search(
+            lowered, sentence_start(lowered, m.start()), m.start()
+        ):
             clause_end = re.compile(r"[,.;!?]|$").search(lowered, m.end())
             return lowered[m.start() : clause_end.start() if clause_end else None].strip()
     return None

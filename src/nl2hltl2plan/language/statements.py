@@ -1,0 +1,25 @@
+"""Is a clause that says where a thing is ("the carrot is on the blue plate") asked for, or said of a state
+that another clause refers to, rather than stated? The one test of it (`asked_before`), with its words in
+`state_words.txt`, for check 1 (`accounting`: a place so named is a stop of a task) and the tabletop reader
+(`tabletop_wording`: such a clause is a task).
+
+>>> asked_before("I want that the carrot is on the blue plate", 25)
+True
+>>> asked_before("I want this. The carrot is on the blue plate", 25)
+False
+"""
+
+from __future__ import annotations
+
+import re
+
+from nl2hltl2plan.language.content_words import phrase_list_pattern
+from nl2hltl2plan.language.grounding import sentence_start
+
+# a wish or goal, or a reference to a state, anywhere before the clause in its sentence
+_ASKED = re.compile(rf"\b{phrase_list_pattern('state_words.txt')}\b", re.I)
+
+
+def asked_before(text: str, at: int) -> bool:
+    """Is a wish, a goal or a reference to a state said in the sentence of character `at`, before it?"""
+    return _ASKED.search(text, sentence_start(text, at), at) is not None
