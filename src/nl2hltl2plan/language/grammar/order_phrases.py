@@ -9,6 +9,7 @@ import re
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.phrases import tokens
 from nl2hltl2plan.language.grounding import sentence_start
+from nl2hltl2plan.language.statements import REFERENCE
 
 # "Y before X, but after Z" / "Y after X and before Z": a second connective after the first reference opens
 # a reference of its own, about the same main clause Y (not about X, the nearer clause)
@@ -33,7 +34,7 @@ def not_one_reference(ref: str) -> bool:
 # "A after the egg is in the sink, and put the bread ...": a reference to a state ends where a command of
 # its own begins; that command is a sentence of its own (its order is not A's)
 _STATE_THEN_COMMAND = re.compile(
-    r"(?<=\w )(?P<ref>(?:after|once|when|until|till|before)\s+(?:the|a|an|your|my)\s+[^,.;!?]*?\b"
+    rf"(?<=\w )(?P<ref>{REFERENCE}\s+(?:the|a|an|your|my)\s+[^,.;!?]*?\b"
     r"(?:is|are|has\s+been|have\s+been)\b[^,.;!?]*?),?\s+and\s+(?=(?:(?:please|also)\s+)?(?P<verb>[a-z]+)\b)",
     re.I,
 )
