@@ -85,12 +85,16 @@ _BARE_CONTRACTION = {
 }  # fmt: skip
 _UR_DONE = re.compile(r"\bur\s+(?=(?:done|finished|through)\b)", re.I)  # "ur done": "you're"; else "your"
 _BARE = re.compile(rf"\b({'|'.join(_BARE_CONTRACTION)})\b", re.I)
-# "A, B, and after both of those put C": a reference to every task before, which the rules read where it
-# opens a sentence and ends at a comma ("A, B. After both of those, put C")
+# "A, B, and after both of those put C", "A, then B, and after those two C", "A and B, and once both are done
+# C": a reference to every task before, which the rules read where it opens a sentence and ends at a comma
+# ("A, B. After both of those, put C"); the one list of these references
 _REFERENCE_TO_ALL = re.compile(
     r"(?P<lead>(?<=\w)\s*,?\s+(?:and\s+)?|^\s*|(?<=[.!?])\s+)"
     r"(?P<ref>(?:after|once|when)\s+(?:both|all|each)\s+of\s+(?:those|these|them)"
-    r"(?:\s+(?:are|is)\s+(?:done|finished))?)\s*,?\s+",
+    r"(?:\s+(?:are|is)\s+(?:done|finished))?"
+    r"|(?:after|once)\s+(?:those|these|the)\s+(?:two|three|four)(?:\s+(?:are|have\s+been)\s+(?:done|finished))?"
+    r"|once\s+both\s+(?:of\s+(?:them|those)\s+)?(?:are|have\s+been)\s+(?:done|finished)"
+    r"|after\s+both(?:\s+of\s+(?:them|those))?)\s*,?\s+",
     re.I,
 )
 

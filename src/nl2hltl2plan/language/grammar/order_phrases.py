@@ -83,20 +83,12 @@ _FREED_THEN = re.compile(
     r"(?:and\s+)?(?:then|after\s+that|afterwards?)\s*,?\s+(?=[a-z])",
     re.IGNORECASE,
 )
-# "A, then B, and after those two C" / "A and B, and once both are done C": after every task before
-_AFTER_THOSE = re.compile(
-    r"(?<=\w)\s*,?\s+(?:and\s+)?(?:(?:after|once)\s+(?:those|these|the)\s+(?:two|three|four)"
-    r"(?:\s+(?:are|have\s+been)\s+(?:done|finished))?|once\s+both\s+(?:of\s+(?:them|those)\s+)?"
-    r"(?:are|have\s+been)\s+(?:done|finished)|after\s+both(?:\s+of\s+(?:them|those))?)\s*,?\s+(?=[a-z])",
-    re.IGNORECASE,
-)
 
 
 def after_the_step(text: str) -> str:
-    """ "..., do these in either order, then C" / "..., and after those two C" -> "... Once all that is done,
-    C" (C after every task before it)."""
-    text = _FREED_THEN.sub(r"\1. Once all that is done, ", text)
-    return _AFTER_THOSE.sub(". Once all that is done, ", text)
+    """ "..., do these in either order, then C" -> "... Once all that is done, C" (C after every task before
+    it; "..., and after those two C" is `everyday`'s reference to every task before)."""
+    return _FREED_THEN.sub(r"\1. Once all that is done, ", text)
 
 
 # "put X in A, and once the mug is done put Y in B" / "..., and before you put Z in C put Y in B": a
