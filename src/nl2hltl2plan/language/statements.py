@@ -17,6 +17,11 @@ import re
 from nl2hltl2plan.language.content_words import phrase_list_pattern
 from nl2hltl2plan.language.grounding import sentence_start
 
+# a relative clause that says where a thing is now ("the mug that's on the counter", "which is sitting in"):
+# a source, never a destination or a task (`grammar.sentences`, `grammar.everyday`); no context, no flags
+RELATIVE_PLACE = (
+    r"(?:that|which)(?:'s|\s+is|\s+are)\s+(?:(?:sitting|lying|standing|now)\s+)?(?:on|in|at|inside)"
+)
 # a connective that refers to a state ("after the apple is in the fridge"), no context and no flags
 REFERENCE = phrase_list_pattern("state_words.txt", "reference")
 # a wish or goal, or a reference to a state, anywhere before the clause in its sentence

@@ -31,6 +31,7 @@ from nl2hltl2plan.language.content_words import free_order_phrase
 from nl2hltl2plan.language.grammar.restated import count_fits, restated
 from nl2hltl2plan.language.grounding import find_mentions
 from nl2hltl2plan.language.spelling import respelt
+from nl2hltl2plan.language.statements import RELATIVE_PLACE
 
 # hesitations, the one list of them (the handover reader's spoken step uses it too)
 HESITATION = r"(?:u+h+m*|u+m+|e+r+m*|hmm+|mm+)"
@@ -197,8 +198,7 @@ def _there_named(m: re.Match[str]) -> str:
 # "the mug that's on the counter, put it in the sink": the thing named first, then what to do with "it"
 # (a fronted object with where it is): "take the mug that's on the counter, put it in the sink"
 _THING_FIRST = re.compile(
-    r"(?P<lead>^\s*|[.;!?]\s+)(?P<np>(?:the|a|an|that|this)\s+[a-z]+(?:\s+[a-z]+)?\s+"
-    r"(?:that's|that\s+is|which\s+is|that\s+are|which\s+are)\s+(?:sitting\s+|lying\s+)?(?:on|in|inside|at)\s+"
+    rf"(?P<lead>^\s*|[.;!?]\s+)(?P<np>(?:the|a|an|that|this)\s+[a-z]+(?:\s+[a-z]+)?\s+{RELATIVE_PLACE}\s+"
     r"(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)\s*,\s*(?=[a-z]+\s+(?:it|them)\b)",
     re.I,
 )
