@@ -47,7 +47,7 @@ from nl2hltl2plan.language.landmarks import NEAR_WORDS, carried, landmark_destin
 from nl2hltl2plan.language.negations import NO_CONSTRAINT, about_order, unforbidden_verb
 from nl2hltl2plan.language.order_words import check_cycles, unordered_steps
 from nl2hltl2plan.language.parse_usage import IMPLIED_TYPES, ParseUsage
-from nl2hltl2plan.language.statements import asked_before
+from nl2hltl2plan.language.statements import asked_before, says_where
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, ConstraintSpec
 from nl2hltl2plan.language.unsupported_steps import (
     OPENED_FOR_ITSELF,
@@ -358,7 +358,6 @@ def _invented_kinds(
     return out
 
 
-_WHERE_IT_IS = frozenset({"is", "are", "was", "were", "sits", "sitting", "lies", "lying", "stays", "'s"})
 _DESTINATION = frozenset({"to", "into", "onto"})
 _PREPOSITIONS = LOCATIVE | _DESTINATION
 
@@ -371,9 +370,9 @@ def _a_stop(instruction: str, m: Mention, toks: list[tuple[str, int, int]]) -> b
     if i < 0 or toks[i][0] not in _PREPOSITIONS:
         return True
     before = toks[i - 1][0] if i > 0 else ""
-    if before in _WHERE_IT_IS:  # "after / until the mug is in the sink": a placement it refers to;
-        # "I want that the carrot is on the plate": one it asks for
-        return asked_before(instruction, toks[i - 1][1])
+    if says_where(instruction, toks[i][1]):  # "after / until the mug is in the sink": a placement it refers
+        # to; "I want that the carrot is on the plate": one it asks for
+        return asked_before(instruction, toks[i][1])
     return toks[i][0] not in ("from", "off") and before not in ("out", "from")
 
 

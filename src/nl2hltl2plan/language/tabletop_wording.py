@@ -23,16 +23,9 @@ from collections.abc import Iterable
 
 from nl2hltl2plan.language.content_words import free_order_phrase
 from nl2hltl2plan.language.grounding import sentence_start
-from nl2hltl2plan.language.statements import asked_before
+from nl2hltl2plan.language.statements import WHERE_VERB, asked_before
 
 # ---- statements ---------------------------------------------------------------------------------------
-_STATE_VERB = (
-    r"(?:'s|\s+(?:is|are|was|were|has\s+been|have\s+been|had\s+been|sits|lies|rests|stays|remains|sat|lay|stood|"
-    r"went|landed|ended\s+up))"
-)
-_STATE_ADVERB = (
-    r"(?:\s+(?:already|currently|still|now|just|right|sitting|lying|resting|placed|put|set|laid|kept))*"
-)
 # where it is: on or in a place, or "fine where it is" / "good as it is" / "fine there"
 _LOCATIVE = (
     r"(?:\s+(?:on|in|onto|into|upon|inside|at)\b|\s+(?:fine|ok|okay|good|alright|all\s+right)\s+"
@@ -51,7 +44,7 @@ def stated_not_asked(text: str, names: Iterable[str]) -> str | None:
     lowered = polite_frames(text.lower())
     mention = mention_pattern(names).pattern.removesuffix(r"\b")
     state = re.compile(
-        rf"{mention}(?:\s+(?:both|all|too|also))?{_STATE_VERB}{_STATE_ADVERB}{_LOCATIVE}|{mention}{_HOLDS}"
+        rf"{mention}(?:\s+(?:both|all|too|also))?{WHERE_VERB}{_LOCATIVE}|{mention}{_HOLDS}"
     )
     for m in state.finditer(lowered):
         if not asked_before(lowered, m.start()) and not _PLEASE.search(
