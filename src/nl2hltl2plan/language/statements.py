@@ -23,11 +23,16 @@ def _words(kind: str) -> str:
 
 
 # the verb that says where a thing is, was or has been put, and the words that may follow it before the place
-# ("'s", " is", " has been", " is already sitting"; `WHERE_VERB` with a placing's participle too, " was put"):
-# each alternative starts with its own space, so that "'s" follows its noun; no flags
-_VERB = rf"(?:'s|\s+{_words('where')})"
-WHERE_COPULA = rf"{_VERB}(?:\s+(?:{_words('where_adverb')}|{_words('posture')}))*"
-WHERE_VERB = rf"{_VERB}(?:\s+(?:{_words('where_adverb')}|{_words('posture')}|{_words('where_participle')}))*"
+# (" is", " has been", " is already sitting"); `WHERE_VERB`, the tabletop reader's, takes "'s" and a placing's
+# participle too ("the carrot's on", " was put"): check 1 reads "the mug that's on the counter, put it ..."
+# and "were set on" as naming a stop. Each alternative starts with its own space (or "'s", after its noun);
+# no flags
+_ADVERBS = rf"(?:\s+(?:{_words('where_adverb')}|{_words('posture')}))*"
+WHERE_COPULA = rf"\s+{_words('where')}{_ADVERBS}"
+WHERE_VERB = (
+    rf"(?:'s|\s+{_words('where')})(?:\s+(?:{_words('where_adverb')}|{_words('posture')}|"
+    rf"{_words('where_participle')}))*"
+)
 _WHERE_BEFORE = re.compile(rf"(?:{WHERE_COPULA}|\s+{_words('posture')})\s*$", re.I)
 # a relative clause that says where a thing is now ("the mug that's on the counter", "which is sitting in"):
 # a source, never a destination or a task (`grammar.sentences`, `grammar.everyday`); no context, no flags
