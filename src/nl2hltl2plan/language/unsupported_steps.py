@@ -22,7 +22,7 @@ import networkx as nx
 from nl2hltl2plan.domain.task_kinds import APPLIANCE
 from nl2hltl2plan.language.content_words import DETERMINERS, Unread, categories
 from nl2hltl2plan.language.grounding import Mention, lookup, sentence_start, tokens
-from nl2hltl2plan.language.negations import NO_CONSTRAINT
+from nl2hltl2plan.language.negations import NO_CONSTRAINT, PRONOUNS
 from nl2hltl2plan.language.parse_usage import ParseUsage
 from nl2hltl2plan.language.statements import REFERENCE
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
@@ -151,7 +151,7 @@ def treated_after_placing(instruction: str, mentions: list[Mention], parse: Pars
     return out
 
 
-_PRONOUN = re.compile(r"\s+(?:it|them|this|that|these|those)\b")
+_PRONOUN = re.compile(rf"\s+(?:{'|'.join(sorted(PRONOUNS))})\b")
 
 
 def closed_after_placing(instruction: str, mentions: list[Mention], parse: ParseUsage) -> list[Unread]:
