@@ -88,21 +88,24 @@ _UR_DONE = re.compile(r"\bur\s+(?=(?:done|finished|through)\b)", re.I)  # "ur do
 _BARE = re.compile(rf"\b({'|'.join(_BARE_CONTRACTION)})\b", re.I)
 # "A, B, and after both of those put C", "A, then B, and after those two C", "A and B, and once both are done
 # C": a reference to every task before, which the rules read where it opens a sentence and ends at a comma
-# ("A, B. After both of those, put C"); the one list of these references
+# ("A, B. After both of those, put C"); the one list of these references. The short forms ("after both",
+# "after those two") only inside a sentence: "After both are there, ..." opens a clause of its own
 _REFERENCE_TO_ALL = re.compile(
-    r"(?P<lead>(?<=\w)\s*,?\s+(?:and\s+)?|^\s*|(?<=[.!?])\s+)"
+    r"(?:(?P<lead>(?<=\w)\s*,?\s+(?:and\s+)?|^\s*|(?<=[.!?])\s+)"
     r"(?P<ref>(?:after|once|when)\s+(?:both|all|each)\s+of\s+(?:those|these|them)"
-    r"(?:\s+(?:are|is)\s+(?:done|finished))?"
-    r"|(?:after|once)\s+(?:those|these|the)\s+(?:two|three|four)(?:\s+(?:are|have\s+been)\s+(?:done|finished))?"
+    r"(?:\s+(?:are|is)\s+(?:done|finished))?)"
+    r"|(?<=\w)\s*,?\s+(?:and\s+)?(?P<short>(?:after|once)\s+(?:those|these|the)\s+(?:two|three|four)"
+    r"(?:\s+(?:are|have\s+been)\s+(?:done|finished))?"
     r"|once\s+both\s+(?:of\s+(?:them|those)\s+)?(?:are|have\s+been)\s+(?:done|finished)"
-    r"|after\s+both(?:\s+of\s+(?:them|those))?)\s*,?\s+",
+    r"|after\s+both(?:\s+of\s+(?:them|those))?)(?=\s*,?\s+[a-z]))\s*,?\s+",
     re.I,
 )
 
 
 def _reference_sentence(m: re.Match[str]) -> str:
     """The reference opens a sentence of its own and ends at a comma."""
-    ref = m["ref"][0].upper() + m["ref"][1:]
+    said = m["ref"] or m["short"]
+    ref = said[0].upper() + said[1:]
     inside = m.start() > 0 and m.string[m.start() - 1].isalnum()  # after a clause of the same sentence
     return f". {ref}, " if inside else f"{m['lead']}{ref}, "
 
