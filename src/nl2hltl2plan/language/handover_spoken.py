@@ -102,7 +102,7 @@ _FILLERS: tuple[tuple[str, str], ...] = (
     # a polite tag that opens or closes a clause: "if you don't mind", "if that's okay", "if you would (be
     # so kind)", "when you get a chance" (no time of any goal: the plan is as short as it can be anyway)
     (rf"(^|,)\s*{_POLITE_TAG}\s*(?=,|$)", r"\1 "),
-    (r"\bit\s+would\s+be\s+(?:best|great|good|nice|ideal)\s+if\s+you\s+(?:could|would|can)\b", "please"),
+    (rf"\b{phrase_list_pattern('courtesy.txt', 'wish')}\b", "please"),  # courtesy.txt's polite wishes
     (r"^\s*(?:i|we)\s+would\s+(?:probably\s+|maybe\s+)?have\s+you\s+", "please "),
     (
         rf"\b(?:probably|maybe|perhaps|ideally|preferably)\s+(?={_VERB_OR_RULE}|should\b|must\b|(?:you|we)\s)",

@@ -21,7 +21,7 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable
 
-from nl2hltl2plan.language.content_words import free_order_phrase
+from nl2hltl2plan.language.content_words import free_order_phrase, phrase_list_pattern
 from nl2hltl2plan.language.grounding import sentence_start
 from nl2hltl2plan.language.statements import WHERE_VERB, asked_before
 
@@ -101,11 +101,7 @@ _CORRECTION = re.compile(
     r"^[\s,.;:!\-]*(?:(?:no|sorry|wait|oops|whoops|actually|rather|or\s+rather|i\s+mean[t]?|make\s+that|"
     r"correction|scratch\s+that|my\s+mistake|my\s+bad)\b[\s,.;:!\-]*)+(?:the\s+|a\s+|an\s+)?$"
 )
-_POLITE = re.compile(
-    r"\b(?:it\s+would\s+(?:please|delight|help)\s+me|(?:i|we)(?:'d|\s+would)\s+(?:be\s+(?:very\s+|so\s+|most\s+|"
-    r"really\s+)?(?:grateful|glad|happy|thankful|obliged|delighted)|(?:really\s+)?appreciate\s+it))"
-    r"(?:\s+(?:greatly|a\s+lot|very\s+much|so\s+much))?\s+if(?:\s+you\s+(?:could|would|can|will))?\b"
-)
+_POLITE = re.compile(rf"\b{phrase_list_pattern('courtesy.txt', 'wish')}\b")  # courtesy.txt's polite wishes
 _FILLER = re.compile(
     r"^\W*(?:let\s+me\s+see|let's\s+see)\b|\bchop\s+chop\b|\bfind\s+(?:below|attached|enclosed)\b|"
     r"\bgo\s+ahead\s+and\b"
