@@ -47,6 +47,7 @@ from nl2hltl2plan.language.landmarks import NEAR_WORDS, carried, landmark_destin
 from nl2hltl2plan.language.negations import NO_CONSTRAINT, about_order, unforbidden_verb
 from nl2hltl2plan.language.order_words import check_cycles, unordered_steps
 from nl2hltl2plan.language.parse_usage import IMPLIED_TYPES, ParseUsage
+from nl2hltl2plan.language.statements import asked_before, says_where
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, ConstraintSpec
 from nl2hltl2plan.language.unsupported_steps import (
     OPENED_FOR_ITSELF,
@@ -96,9 +97,9 @@ def account(
     ]
     in_mention = {i for m in mentions for i in range(m.start, m.end)}
     out = _nouns(instruction, mentions, toks, parse)
-    out += _invented(mentions, toks, parse, in_mention)
+    out += _invented(instruction, mentions, toks, parse, in_mention)
     out += landmark_destinations(mentions, toks, parse)
-    out += _invented_kinds(toks, mentions, parse)
+    out += _invented_kinds(instruction, toks, mentions, parse)
     out += treated_after_placing(instruction, mentions, parse)
     out += closed_after_placing(instruction, mentions, parse)
     out += returns_and_repeats(instruction, mentions, parse) + other_instances(
@@ -142,7 +143,8 @@ def _is_verb(m: Mention, toks: list[tuple[str, int, int]]) -> bool:
     return "verb_unsupported" in categories(word) and nxt in _OBJECT_START and prev in _COMMAND_START
 
 
-_OBJECT_START = frozenset({"the", "a", "an", "it", "them", "this", "that", "my", "your", "some"})
+# what opens the object of a verb: a determiner (not "of": "a spray of water" names a thing) or a pronoun
+_OBJECT_START = frozenset(DETERMINERS - {"of"} | {"it", "them", "some"})
 _COMMAND_START = frozenset({"", "and", "then", "please", "also", "to", "first", "now", "pls"})
 
 
@@ -298,7 +300,11 @@ def _clause_span(text: str, at: int) -> tuple[int, int]:
 
 
 def _invented(
-    mentions: list[Mention], toks: list[tuple[str, int, int]], parse: ParseUsage, in_mention: set[int]
+    instruction: str,
+    mentions: list[Mention],
+    toks: list[tuple[str, int, int]],
+    parse: ParseUsage,
+    in_mention: set[int],
 ) -> list[Unread]:
     """Slots of base tasks that no word of the instruction names (a guess, not a reading). A word of a
     name ("standing" of "standing lamp") names it only where it names nothing as written (`in_mention`:
@@ -310,7 +316,7 @@ def _invented(
         named.add("LightSwitch")  # "make the kitchen dark" names the room's lights
     sources: set[str] = set()  # named only as where a thing is or comes from: "take the mug out of the sink"
     for m in mentions:
-        (named if _a_stop(m, toks) else sources).update({*m.entry.types, m.entry.canonical})
+        (named if _a_stop(instruction, m, toks) else sources).update({*m.entry.types, m.entry.canonical})
     put_back = any(w == "back" for w, _, _ in toks)  # "wash the cloth from the cabinet, put it back"
     implied = parse.implied()
     out = []
@@ -328,7 +334,7 @@ def _invented(
 
 
 def _invented_kinds(
-    toks: list[tuple[str, int, int]], mentions: list[Mention], parse: ParseUsage
+    instruction: str, toks: list[tuple[str, int, int]], mentions: list[Mention], parse: ParseUsage
 ) -> list[Unread]:
     """A heat / cool / clean task or a slice needs a word for it: a verb or state word ("chilled"), or
     its appliance named as a stop ("put the apple in the microwave, then on the counter")."""
@@ -337,7 +343,7 @@ def _invented_kinds(
     for w, _, _ in toks:
         cats |= categories(w)
     verbs = {c for i, (w, _, _) in enumerate(toks) if i not in in_mention for c in categories(w)}
-    named = {m.entry.canonical for m in mentions if _a_stop(m, toks)}
+    named = {m.entry.canonical for m in mentions if _a_stop(instruction, m, toks)}
     out = []
     for t in parse.tasks:
         word = f"verb_{t.kind}" in verbs or named & IMPLIED_TYPES.get(t.kind, set())
@@ -352,14 +358,11 @@ def _invented_kinds(
     return out
 
 
-_WHERE_IT_IS = frozenset({"is", "are", "was", "were", "sits", "sitting", "lies", "lying", "stays", "'s"})
 _DESTINATION = frozenset({"to", "into", "onto"})
 _PREPOSITIONS = LOCATIVE | _DESTINATION
-_STATE_REFERENCE = frozenset({"after", "until", "till", "once", "when", "before", "whenever", "unless"})
-_WISH = frozenset({"want", "wants", "sure", "ensure", "should", "must", "need", "needs"})
 
 
-def _a_stop(m: Mention, toks: list[tuple[str, int, int]]) -> bool:
+def _a_stop(instruction: str, m: Mention, toks: list[tuple[str, int, int]]) -> bool:
     """An appliance named as a stop of the task ("put the mug in the sink"), not as where a thing is or
     comes from ("the mug is in the sink", "take the apple out of the fridge"): only a stop names a
     treatment."""
@@ -367,9 +370,9 @@ def _a_stop(m: Mention, toks: list[tuple[str, int, int]]) -> bool:
     if i < 0 or toks[i][0] not in _PREPOSITIONS:
         return True
     before = toks[i - 1][0] if i > 0 else ""
-    if before in _WHERE_IT_IS:  # "after / until the mug is in the sink": a placement it refers to;
-        # "I want that the carrot is on the plate": one it asks for
-        return bool({w for w, _, _ in toks[max(0, i - 6) : i - 1]} & (_STATE_REFERENCE | _WISH))
+    if says_where(instruction, toks[i][1]):  # "after / until the mug is in the sink": a placement it refers
+        # to; "I want that the carrot is on the plate": one it asks for
+        return asked_before(instruction, toks[i][1])
     return toks[i][0] not in ("from", "off") and before not in ("out", "from")
 
 

@@ -17,7 +17,8 @@ import re
 from nl2hltl2plan.language.content_words import phrase_list_pattern
 
 # a frame with the comma after it, where its clause ends (a comma, a sentence's end or the text's end)
-_FRAME = re.compile(rf"(?:,\s*)?\b{phrase_list_pattern('courtesy.txt')}\b(?=\s*(?:[,.;:!?]|$))\s*,?", re.I)
+_FRAMES = f"(?:{phrase_list_pattern('courtesy.txt', 'clause')}|{phrase_list_pattern('courtesy.txt', 'time')})"
+_FRAME = re.compile(rf"(?:,\s*)?\b{_FRAMES}\b(?=\s*(?:[,.;:!?]|$))\s*,?", re.I)
 
 
 def without_courtesy(text: str) -> str:

@@ -30,6 +30,7 @@ from __future__ import annotations
 import re
 
 from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.language.content_words import phrase_list_pattern
 from nl2hltl2plan.language.grammar.everyday import HESITATION
 from nl2hltl2plan.language.handover_words import GERUND_VERBS, NEGATED_GERUNDS, VERB
 
@@ -51,11 +52,7 @@ _CONTRACTIONS = (
     (r"\b(?:kinda|sorta)\b", " "),
 )
 _HESITATION = rf"(?:{HESITATION}|ah+)"
-_POLITE_TAG = (
-    r"(?:if\s+you\s+(?:do\s+not|would\s+not)\s+mind|if\s+(?:that|it|this)\s+(?:is|s|would\s+be)\s+"
-    r"(?:okay|ok|alright|all\s+right|fine)|if\s+you\s+would(?:\s+be\s+so\s+kind)?|if\s+you\s+please|"
-    r"when\s+you\s+(?:get|have|find)\s+(?:a|the)\s+(?:chance|moment|minute|second)|when\s+you\s+have\s+time)"
-)
+_POLITE_TAG = phrase_list_pattern("courtesy.txt", "clause")  # the courtesy frames (`courtesy.txt`)
 _INTERJECTION = r"(?:okay|ok|alright|all\s+right|right|so|well|now|oh|hi|hey|hello|listen|look|yeah|yep|yup)"
 _MARKER = r"(?:i\s+mean|i\s+meant|sorry|or\s+rather|no\s+wait|wait(?=\s*,)|~)"
 # words that a restated phrase may add or leave out without saying something else
@@ -105,7 +102,7 @@ _FILLERS: tuple[tuple[str, str], ...] = (
     # a polite tag that opens or closes a clause: "if you don't mind", "if that's okay", "if you would (be
     # so kind)", "when you get a chance" (no time of any goal: the plan is as short as it can be anyway)
     (rf"(^|,)\s*{_POLITE_TAG}\s*(?=,|$)", r"\1 "),
-    (r"\bit\s+would\s+be\s+(?:best|great|good|nice|ideal)\s+if\s+you\s+(?:could|would|can)\b", "please"),
+    (rf"\b{phrase_list_pattern('courtesy.txt', 'wish')}\b", "please"),  # courtesy.txt's polite wishes
     (r"^\s*(?:i|we)\s+would\s+(?:probably\s+|maybe\s+)?have\s+you\s+", "please "),
     (
         rf"\b(?:probably|maybe|perhaps|ideally|preferably)\s+(?={_VERB_OR_RULE}|should\b|must\b|(?:you|we)\s)",

@@ -205,7 +205,7 @@ def _read_clause(
             return _negation(text, toks, i, end_tok, end_tok, "put", *contrast)
     if verb is None or not inside:
         return None
-    if _PRONOUNS & set(words[j + 1 : inside[0].start]):  # "don't put it in the sink": it is a thing
+    if PRONOUNS & set(words[j + 1 : inside[0].start]):  # "don't put it in the sink": it is a thing
         antecedent = _previous_object(text, toks, i, mentions)
         if antecedent is None:
             return None
@@ -289,7 +289,7 @@ def _objects_and_places(
     return (things or None), places
 
 
-_PRONOUNS = frozenset({"it", "them", "this", "that", "these", "those"})
+PRONOUNS = frozenset({"it", "them", "this", "that", "these", "those"})  # that stand for a thing named before
 
 
 def _previous_object(

@@ -33,30 +33,20 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable
 
-from nl2hltl2plan.language.content_words import free_order_phrase
+from nl2hltl2plan.language.content_words import free_order_phrase, phrase_list_pattern
+from nl2hltl2plan.language.grounding import sentence_start
+from nl2hltl2plan.language.statements import WHERE_VERB, asked_before
 
 # ---- statements ---------------------------------------------------------------------------------------
-_STATE_VERB = (
-    r"(?:'s|\s+(?:is|are|was|were|has\s+been|have\s+been|had\s+been|sits|lies|rests|stays|remains|sat|lay|stood|"
-    r"went|landed|ended\s+up))"
-)
-_STATE_ADVERB = (
-    r"(?:\s+(?:already|currently|still|now|just|right|sitting|lying|resting|placed|put|set|laid|kept))*"
-)
 # where it is: on or in a place, or "fine where it is" / "good as it is" / "fine there"
 _LOCATIVE = (
     r"(?:\s+(?:on|in|onto|into|upon|inside|at)\b|\s+(?:fine|ok|okay|good|alright|all\s+right)\s+"
     r"(?:where\s+(?:it|they)\s+(?:is|are)|as\s+(?:it|they)\s+(?:is|are)|there)\b)"
 )
 _HOLDS = r"\s+(?:has|had|holds|held|contains|contained|carries|carried)\s+(?=(?:the|a|an|both|two)\b)"
-# a wish, goal or reference said before a state clause makes it something to bring about
-_GOAL_FRAME = re.compile(
-    r"\b(?:please|make\s+sure|ensure|see\s+(?:to\s+it\s+)?that|want|wish|like|love|need|needs|should|must|"
-    r"have\s+to|has\s+to|hope|expect|ask|goal|target|final|desired|end\s+state|result|postcondition|"
-    r"(?:make|have|get)\s+it\s+so|"
-    r"by\s+the\s+end|at\s+the\s+end|in\s+the\s+end|once|when|after|before|until|as\s+soon\s+as)\b"
-)
-_SENTENCE_END = re.compile(r"[.;!?]")
+# "please" before a state clause asks for it too: the polite frames below are read as it ("it would please
+# me if X were on Y": "please X were on Y"); the other wishes, goals and references are `statements`'
+_PLEASE = re.compile(r"\bplease\b")
 
 
 def stated_not_asked(text: str, names: Iterable[str]) -> str | None:
@@ -66,11 +56,12 @@ def stated_not_asked(text: str, names: Iterable[str]) -> str | None:
     lowered = polite_frames(text.lower())
     mention = mention_pattern(names).pattern.removesuffix(r"\b")
     state = re.compile(
-        rf"{mention}(?:\s+(?:both|all|too|also))?{_STATE_VERB}{_STATE_ADVERB}{_LOCATIVE}|{mention}{_HOLDS}"
+        rf"{mention}(?:\s+(?:both|all|too|also))?{WHERE_VERB}{_LOCATIVE}|{mention}{_HOLDS}"
     )
     for m in state.finditer(lowered):
-        starts = [e.end() for e in _SENTENCE_END.finditer(lowered, 0, m.start())]
-        if not _GOAL_FRAME.search(lowered, starts[-1] if starts else 0, m.start()):
+        if not asked_before(lowered, m.start()) and not _PLEASE.search(
+            lowered, sentence_start(lowered, m.start()), m.start()
+        ):
             clause_end = re.compile(r"[,.;!?]|$").search(lowered, m.end())
             return lowered[m.start() : clause_end.start() if clause_end else None].strip()
     return None
@@ -148,11 +139,7 @@ _CORRECTION = re.compile(
     r"^[\s,.;:!\-]*(?:(?:no|sorry|wait|oops|whoops|actually|rather|or\s+rather|i\s+mean[t]?|make\s+that|"
     r"correction|scratch\s+that|my\s+mistake|my\s+bad)\b[\s,.;:!\-]*)+(?:the\s+|a\s+|an\s+)?$"
 )
-_POLITE = re.compile(
-    r"\b(?:it\s+would\s+(?:please|delight|help)\s+me|(?:i|we)(?:'d|\s+would)\s+(?:be\s+(?:very\s+|so\s+|most\s+|"
-    r"really\s+)?(?:grateful|glad|happy|thankful|obliged|delighted)|(?:really\s+)?appreciate\s+it))"
-    r"(?:\s+(?:greatly|a\s+lot|very\s+much|so\s+much))?\s+if(?:\s+you\s+(?:could|would|can|will))?\b"
-)
+_POLITE = re.compile(rf"\b{phrase_list_pattern('courtesy.txt', 'wish')}\b")  # courtesy.txt's polite wishes
 _FILLER = re.compile(
     r"^\W*(?:let\s+me\s+see|let's\s+see)\b|\bchop\s+chop\b|\bfind\s+(?:below|attached|enclosed)\b|"
     r"\bgo\s+ahead\s+and\b"

@@ -22,8 +22,9 @@ import networkx as nx
 from nl2hltl2plan.domain.task_kinds import APPLIANCE
 from nl2hltl2plan.language.content_words import DETERMINERS, Unread, categories
 from nl2hltl2plan.language.grounding import Mention, lookup, sentence_start, tokens
-from nl2hltl2plan.language.negations import NO_CONSTRAINT
+from nl2hltl2plan.language.negations import NO_CONSTRAINT, PRONOUNS
 from nl2hltl2plan.language.parse_usage import ParseUsage
+from nl2hltl2plan.language.statements import REFERENCE
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
 
 # "bring it back", "then back again": to where it was, which no base task names; "three times"
@@ -94,9 +95,7 @@ def repeated_tasks(instruction: str, mentions: list[Mention], parse: ParseUsage)
 
 
 _SAID_ONCE = "a task said once is read twice (once where the words only refer to it): say it once"
-_REFERENCE_BEFORE = re.compile(
-    r"\b(?:after|once|when|whenever|until|till|before|as soon as)\s+(?:the|a|an|your|my)?\s*$"
-)
+_REFERENCE_BEFORE = re.compile(rf"\b{REFERENCE}\s+(?:the|a|an|your|my)?\s*$")
 _STATE_AFTER = re.compile(r"\s+(?:is|are|was|were|has been|have been|gets|goes|'s)\b")
 
 
@@ -152,7 +151,7 @@ def treated_after_placing(instruction: str, mentions: list[Mention], parse: Pars
     return out
 
 
-_PRONOUN = re.compile(r"\s+(?:it|them|this|that|these|those)\b")
+_PRONOUN = re.compile(rf"\s+(?:{'|'.join(sorted(PRONOUNS))})\b")
 
 
 def closed_after_placing(instruction: str, mentions: list[Mention], parse: ParseUsage) -> list[Unread]:

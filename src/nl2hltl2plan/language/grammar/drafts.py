@@ -28,6 +28,7 @@ from nl2hltl2plan.language.grammar.phrases import NP, tokens
 from nl2hltl2plan.language.grammar.sentences import Sentence
 from nl2hltl2plan.language.grammar.subordinate import treatment_after
 from nl2hltl2plan.language.grounding import Grounder, camel_words
+from nl2hltl2plan.language.statements import WHERE_COPULA
 
 
 @dataclass
@@ -360,9 +361,7 @@ def _one_task_in_any_order(sentence: Sentence, units: list[Unit], drafts: list[D
     return len(drafts[units[0].tasks[0]].frames) > 1
 
 
-_COPULA_PLACE = re.compile(
-    r"\b(?:is|are)\s+(?:now\s+|already\s+|still\s+)?(?:in|on|inside|into|onto|at|under|by)\s", re.IGNORECASE
-)
+_COPULA_PLACE = re.compile(rf"\b{WHERE_COPULA}\s+(?:in|on|inside|into|onto|at|under|by)\s", re.IGNORECASE)
 
 
 def states_where(clause: str) -> bool:

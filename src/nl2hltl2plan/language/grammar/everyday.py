@@ -31,6 +31,7 @@ from nl2hltl2plan.language.content_words import free_order_phrase
 from nl2hltl2plan.language.grammar.restated import count_fits, restated
 from nl2hltl2plan.language.grounding import find_mentions
 from nl2hltl2plan.language.spelling import respelt
+from nl2hltl2plan.language.statements import RELATIVE_PLACE
 
 # hesitations, the one list of them (the handover reader's spoken step uses it too)
 HESITATION = r"(?:u+h+m*|u+m+|e+r+m*|hmm+|mm+)"
@@ -85,19 +86,26 @@ _BARE_CONTRACTION = {
 }  # fmt: skip
 _UR_DONE = re.compile(r"\bur\s+(?=(?:done|finished|through)\b)", re.I)  # "ur done": "you're"; else "your"
 _BARE = re.compile(rf"\b({'|'.join(_BARE_CONTRACTION)})\b", re.I)
-# "A, B, and after both of those put C": a reference to every task before, which the rules read where it
-# opens a sentence and ends at a comma ("A, B. After both of those, put C")
+# "A, B, and after both of those put C", "A, then B, and after those two C", "A and B, and once both are done
+# C": a reference to every task before, which the rules read where it opens a sentence and ends at a comma
+# ("A, B. After both of those, put C"); the one list of these references. The short forms ("after both",
+# "after those two") only inside a sentence: "After both are there, ..." opens a clause of its own
 _REFERENCE_TO_ALL = re.compile(
-    r"(?P<lead>(?<=\w)\s*,?\s+(?:and\s+)?|^\s*|(?<=[.!?])\s+)"
+    r"(?:(?P<lead>(?<=\w)\s*,?\s+(?:and\s+)?|^\s*|(?<=[.!?])\s+)"
     r"(?P<ref>(?:after|once|when)\s+(?:both|all|each)\s+of\s+(?:those|these|them)"
-    r"(?:\s+(?:are|is)\s+(?:done|finished))?)\s*,?\s+",
+    r"(?:\s+(?:are|is)\s+(?:done|finished))?)"
+    r"|(?<=\w)\s*,?\s+(?:and\s+)?(?P<short>(?:after|once)\s+(?:those|these|the)\s+(?:two|three|four)"
+    r"(?:\s+(?:are|have\s+been)\s+(?:done|finished))?"
+    r"|once\s+both\s+(?:of\s+(?:them|those)\s+)?(?:are|have\s+been)\s+(?:done|finished)"
+    r"|after\s+both(?:\s+of\s+(?:them|those))?)(?=\s*,?\s+[a-z]))\s*,?\s+",
     re.I,
 )
 
 
 def _reference_sentence(m: re.Match[str]) -> str:
     """The reference opens a sentence of its own and ends at a comma."""
-    ref = m["ref"][0].upper() + m["ref"][1:]
+    said = m["ref"] or m["short"]
+    ref = said[0].upper() + said[1:]
     inside = m.start() > 0 and m.string[m.start() - 1].isalnum()  # after a clause of the same sentence
     return f". {ref}, " if inside else f"{m['lead']}{ref}, "
 
@@ -193,8 +201,7 @@ def _there_named(m: re.Match[str]) -> str:
 # "the mug that's on the counter, put it in the sink": the thing named first, then what to do with "it"
 # (a fronted object with where it is): "take the mug that's on the counter, put it in the sink"
 _THING_FIRST = re.compile(
-    r"(?P<lead>^\s*|[.;!?]\s+)(?P<np>(?:the|a|an|that|this)\s+[a-z]+(?:\s+[a-z]+)?\s+"
-    r"(?:that's|that\s+is|which\s+is|that\s+are|which\s+are)\s+(?:sitting\s+|lying\s+)?(?:on|in|inside|at)\s+"
+    rf"(?P<lead>^\s*|[.;!?]\s+)(?P<np>(?:the|a|an|that|this)\s+[a-z]+(?:\s+[a-z]+)?\s+{RELATIVE_PLACE}\s+"
     r"(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)\s*,\s*(?=[a-z]+\s+(?:it|them)\b)",
     re.I,
 )

@@ -9,6 +9,7 @@ import re
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.phrases import tokens
 from nl2hltl2plan.language.grounding import sentence_start
+from nl2hltl2plan.language.statements import REFERENCE
 
 # "Y before X, but after Z" / "Y after X and before Z": a second connective after the first reference opens
 # a reference of its own, about the same main clause Y (not about X, the nearer clause)
@@ -33,7 +34,7 @@ def not_one_reference(ref: str) -> bool:
 # "A after the egg is in the sink, and put the bread ...": a reference to a state ends where a command of
 # its own begins; that command is a sentence of its own (its order is not A's)
 _STATE_THEN_COMMAND = re.compile(
-    r"(?<=\w )(?P<ref>(?:after|once|when|until|till|before)\s+(?:the|a|an|your|my)\s+[^,.;!?]*?\b"
+    rf"(?<=\w )(?P<ref>{REFERENCE}\s+(?:the|a|an|your|my)\s+[^,.;!?]*?\b"
     r"(?:is|are|has\s+been|have\s+been)\b[^,.;!?]*?),?\s+and\s+(?=(?:(?:please|also)\s+)?(?P<verb>[a-z]+)\b)",
     re.I,
 )
@@ -82,20 +83,12 @@ _FREED_THEN = re.compile(
     r"(?:and\s+)?(?:then|after\s+that|afterwards?)\s*,?\s+(?=[a-z])",
     re.IGNORECASE,
 )
-# "A, then B, and after those two C" / "A and B, and once both are done C": after every task before
-_AFTER_THOSE = re.compile(
-    r"(?<=\w)\s*,?\s+(?:and\s+)?(?:(?:after|once)\s+(?:those|these|the)\s+(?:two|three|four)"
-    r"(?:\s+(?:are|have\s+been)\s+(?:done|finished))?|once\s+both\s+(?:of\s+(?:them|those)\s+)?"
-    r"(?:are|have\s+been)\s+(?:done|finished)|after\s+both(?:\s+of\s+(?:them|those))?)\s*,?\s+(?=[a-z])",
-    re.IGNORECASE,
-)
 
 
 def after_the_step(text: str) -> str:
-    """ "..., do these in either order, then C" / "..., and after those two C" -> "... Once all that is done,
-    C" (C after every task before it)."""
-    text = _FREED_THEN.sub(r"\1. Once all that is done, ", text)
-    return _AFTER_THOSE.sub(". Once all that is done, ", text)
+    """ "..., do these in either order, then C" -> "... Once all that is done, C" (C after every task before
+    it; "..., and after those two C" is `everyday`'s reference to every task before)."""
+    return _FREED_THEN.sub(r"\1. Once all that is done, ", text)
 
 
 # "put X in A, and once the mug is done put Y in B" / "..., and before you put Z in C put Y in B": a

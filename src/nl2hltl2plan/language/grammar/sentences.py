@@ -19,6 +19,7 @@ from nl2hltl2plan.language.grammar.order_phrases import (
 from nl2hltl2plan.language.grammar.phrases import match_prep, parse_np, tokens
 from nl2hltl2plan.language.grammar.subordinate import treated_before, treatment_of_it
 from nl2hltl2plan.language.grounding import find_mentions, sentence_start
+from nl2hltl2plan.language.statements import RELATIVE_PLACE
 
 
 @dataclass
@@ -217,11 +218,7 @@ def _lists_before(text: str, at: int) -> bool:
 _NOT_BEFORE = re.compile(r",?\s+(?:but\s+)?not\s+(?:before|until)\s+", re.I)
 # "the mug that is on the counter": where the mug is now, a source ("the mug from the counter"), not where
 # it goes
-_WHERE_IT_IS = re.compile(
-    r"\b(?:that|which)(?:'s|\s+is|\s+are)\s+(?:(?:sitting|lying|standing|now)\s+)?(?:on|in|at|inside)\s+"
-    r"(?=(?:the|a|an)\s)",
-    re.I,
-)
+_WHERE_IT_IS = re.compile(rf"\b{RELATIVE_PLACE}\s+(?=(?:the|a|an)\s)", re.I)
 _UNTIL = re.compile(r"\b([Dd])(?:o not|on't) ([^.;!?]+?) until (?:you )?([^.;!?]+)")
 # "Once (you are) done (with the task to) X, Y" names what is done: "After X, Y" (not "Then Y")
 _DONE_WITH = re.compile(
