@@ -20,6 +20,7 @@ import json
 import sys
 import time
 from pathlib import Path
+from typing import Any
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.language.learned.data import load_examples
@@ -46,8 +47,10 @@ def measure_slots(encoder: SentenceEncoder, scales: list[float]) -> list[str]:
     t0 = time.monotonic()
     models = {"TF-IDF (today)": SlotModel.fit(train, seed=0)}
     print(f"fitted today's slot model in {time.monotonic() - t0:.0f} s", file=sys.stderr)
+    cache: dict[str, Any] = {}  # one embedding per text, shared by every scale
     for scale in scales:
         feats = EncoderFeatures(encoder, scale=scale)
+        feats.cache = cache
         t0 = time.monotonic()
         feats.embed([e.text for e in train] + [it.text for items in splits.values() for it in items])
         print(f"embedded {len(feats.cache)} texts in {time.monotonic() - t0:.0f} s", file=sys.stderr)

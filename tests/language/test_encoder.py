@@ -184,3 +184,33 @@ def test_the_installed_all_minilm_wheel_gives_its_known_similarities() -> None:
     assert v.shape == (3, 384)
     assert float(v[0] @ v[1]) == pytest.approx(0.755, abs=0.005)
     assert float(v[0] @ v[2]) < 0.5
+
+
+def test_the_ranker_learns_from_extra_features_when_given_them() -> None:
+    """The hook the encoder's features use (`TypeRanker.extra`): a feature that says which candidate the
+    annotator meant is learned and used, with the same clauses and the same slot-model probabilities."""
+    pytest.importorskip("sklearn")
+    from nl2hltl2plan.language.learned.ranker import RankCase, TypeRanker
+
+    def meant(clause: str, candidate: str) -> dict[str, float]:
+        return {"meant": float(candidate == ("SideTable" if "lamp" in clause else "DiningTable"))}
+
+    cases = [
+        RankCase(f"put the {obj} on the table", (("DiningTable", 0.5), ("SideTable", 0.5)), label)
+        for obj, label in [("lamp", "SideTable"), ("plate", "DiningTable")] * 20
+    ]
+    plain, extra = TypeRanker.fit(cases), TypeRanker.fit(cases, extra=meant)
+    clause = "put the lamp and the plate on the table"  # both words: only the extra feature can tell
+    assert extra.order(clause, [("DiningTable", 0.5), ("SideTable", 0.5)])[0][0] == "SideTable"
+    assert plain.extra is None and "meant" not in plain.weights
+
+
+def test_type_names_read_as_words() -> None:
+    from nl2hltl2plan.language.learned.encoder_features import type_phrase
+
+    assert [type_phrase(t) for t in ("SideTable", "TVStand", "CD", "Bathtub")] == [
+        "side table",
+        "tv stand",
+        "cd",
+        "bathtub",
+    ]

@@ -16,6 +16,8 @@ for a seed; about 3-4 minutes on 2 cores (needs the `train` extra).
 from __future__ import annotations
 
 import argparse
+from collections.abc import Callable
+from functools import partial
 from pathlib import Path
 from typing import Any
 
@@ -39,6 +41,10 @@ def register(sub: Any) -> None:
     lang.add_argument("--only", choices=["slots", "structure"], default=None,
                       help="train only one of the two models")
     lang.add_argument("--seed", type=seed, default=0, help="random seed, 0..2^32-1 (default 0)")
+    lang.add_argument("--encoder", action="store_true",
+                      help="the slot model (not the structure model) also reads the pretrained "
+                      "encoder's sentence embeddings (all-MiniLM-L6-v2, the `encoder` extra; "
+                      "measured, not the default: docs/learned.md)")
     lang.set_defaults(func=run)
 
 
@@ -49,9 +55,10 @@ def run(args: argparse.Namespace) -> int:
     from nl2hltl2plan.language.learned.structure import user_structure_path
     from nl2hltl2plan.language.learned.train import train_and_report
 
-    jobs = [  # the structure model first: the slot model's ranker reads with it
+    # the structure model first: the slot model's ranker reads with it
+    jobs: list[tuple[str, Path, Callable[..., str]]] = [
         ("structure", args.structure_out or user_structure_path(), structure_train.train_and_report),
-        ("slots", args.out or user_model_path(), train_and_report),
+        ("slots", args.out or user_model_path(), partial(train_and_report, encoder=args.encoder)),
     ]
     for name, path, job in jobs:
         if args.only not in (None, name):

