@@ -214,3 +214,46 @@ def test_type_names_read_as_words() -> None:
         "cd",
         "bathtub",
     ]
+
+
+def test_a_slot_model_trained_on_other_encoder_weights_is_refused() -> None:
+    from nl2hltl2plan.language.learned.encoder_features import EncoderFeatures
+
+    with pytest.raises(DataError) as err:
+        EncoderFeatures.for_model({"encoder_sha256": "0" * 64, "encoder_scale": "1"})
+    assert "0" * 64 in str(err.value) and enc.WEIGHTS_SHA256 in str(err.value)
+    assert "train language --encoder" in str(err.value)
+
+
+def test_the_slot_model_reads_dense_columns_after_its_tf_idf_ones() -> None:
+    """`SlotModel.dense` (the encoder's hook): the fitted heads use a dense column that alone tells two
+    receptacles apart where the words do not."""
+    pytest.importorskip("sklearn")
+    from nl2hltl2plan.language.learned.data import Example
+    from nl2hltl2plan.language.learned.slot_model import SlotModel
+
+    fridge = {f"put the thing away {i}" for i in range(0, 60, 2)} | {"put the thing away soon"}
+
+    def dense(texts: list[str]) -> np.ndarray:  # a stand-in for the encoder: 1 for the Fridge texts
+        return np.array([[1.0 if t in fridge else -1.0] for t in texts], dtype=np.float32)
+
+    def example(i: int) -> Example:
+        a, b = i % 2, (i // 2) % 2  # the receptacle follows the parity; the other heads need two classes
+        return Example(
+            f"put the thing away {i}",
+            f"t{i}",
+            "train",
+            "FloorPlan1",
+            ["place", "stack"][b],
+            ["Apple", "Mug"][b],
+            ["Bowl", "Pan"][b],
+            ["Fridge", "Sink"][a],
+            ["DeskLamp", "FloorLamp"][b],
+            bool(b),
+        )
+
+    model = SlotModel.fit([example(i) for i in range(60)], dense=dense)
+    idx, _ = model.features("put the thing away 5")
+    assert idx[-1] == sum(len(v.idf) for v in model.vectorizers)  # the dense column comes last
+    marked, plain = model.predict(["put the thing away soon", "put the thing away later"])
+    assert marked.slots["receptacle"][0][0] == "Fridge" and plain.slots["receptacle"][0][0] == "Sink"
