@@ -274,3 +274,22 @@ def test_train_with_the_encoder_refuses_tampered_weights_in_one_line(
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1 and f"{wheel_file}!{enc.MODEL_ZIP}!model.safetensors" in err
     assert "Traceback" not in err and not out.exists()
+
+
+def test_the_default_parse_loads_neither_the_encoder_nor_its_libraries() -> None:
+    """The default path stays light: a parse with the committed models imports no encoder code, no
+    tokenizers / safetensors and no torch (a fresh interpreter, so other tests' imports do not count)."""
+    import subprocess
+    import sys
+
+    code = (
+        "import sys\n"
+        "from nl2hltl2plan.language.learned import parse_instruction\n"
+        "r = parse_instruction('Put a mug in the sink.', {'Mug', 'SinkBasin', 'Sink'}, 'FloorPlan1')\n"
+        "assert r.tasks, r\n"
+        "bad = {'nl2hltl2plan.language.learned.encoder', 'tokenizers', 'safetensors', 'torch'}\n"
+        "print(sorted(bad & set(sys.modules)))\n"
+    )
+    run = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=False)
+    assert run.returncode == 0, run.stderr
+    assert run.stdout.strip() == "[]"
