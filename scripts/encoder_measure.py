@@ -27,7 +27,7 @@ from nl2hltl2plan.language.learned.data import load_examples
 from nl2hltl2plan.language.learned.encoder import SentenceEncoder
 from nl2hltl2plan.language.learned.encoder_features import EncoderFeatures
 from nl2hltl2plan.language.learned.inference import load_model
-from nl2hltl2plan.language.learned.ranker import RankCase, TypeRanker
+from nl2hltl2plan.language.learned.ranker import ExtraFeatures, RankCase, TypeRanker
 from nl2hltl2plan.language.learned.slot_model import SlotModel
 from nl2hltl2plan.language.learned.train import (
     ranking_cases,
@@ -86,11 +86,12 @@ def measure_ranker(encoder: SentenceEncoder, cache: Path | None, folds: int = 5)
     cases, groups = train_cases(cache)
     plain = load_model().without_ranker()
     valid = {s: ranking_cases(plain, load_examples()[s]) for s in ("valid_seen", "valid_unseen")}
-    variants = {
-        "slot model alone": None,
-        "ranker (today)": EncoderFeatures(encoder),  # unused: `extra` is None for it below
-        "ranker + encoder cosine": EncoderFeatures(encoder),
-        "ranker + encoder cosine + type x dims": EncoderFeatures(encoder, dims=True),
+    # name -> (a ranker is fitted, its extra features)
+    variants: dict[str, tuple[bool, ExtraFeatures | None]] = {
+        "slot model alone": (False, None),
+        "ranker (today)": (True, None),
+        "ranker + encoder cosine": (True, EncoderFeatures(encoder).rank_features),
+        "ranker + encoder cosine + type x dims": (True, EncoderFeatures(encoder, dims=True).rank_features),
     }
     lines = [
         f"| model | train, group {folds}-fold by family ({len(cases)}) | "
@@ -98,13 +99,12 @@ def measure_ranker(encoder: SentenceEncoder, cache: Path | None, folds: int = 5)
         + " |",
         "| --- | --- | --- | --- |",
     ]
-    for name, feats in variants.items():
-        extra = feats.rank_features if feats and "encoder" in name else None
+    for name, (fitted, extra) in variants.items():
         right = 0
         for train_idx, test_idx in GroupKFold(folds).split(cases, groups=groups):
-            ranker = TypeRanker.fit([cases[i] for i in train_idx], seed=0, extra=extra) if feats else None
+            ranker = TypeRanker.fit([cases[i] for i in train_idx], seed=0, extra=extra) if fitted else None
             right += top_share([cases[i] for i in test_idx], ranker)
-        full = TypeRanker.fit(cases, seed=0, extra=extra) if feats else None
+        full = TypeRanker.fit(cases, seed=0, extra=extra) if fitted else None
         cells = [f"{right} ({100 * right / len(cases):.1f} %)"]
         for v in valid.values():
             r = top_share(v, full)

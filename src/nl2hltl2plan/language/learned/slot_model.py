@@ -314,10 +314,7 @@ class SlotModel:
         # such a file loads the encoder (the `encoder` extra), so the default path never does
         from nl2hltl2plan.language.learned.encoder_features import EncoderFeatures
 
-        feats = EncoderFeatures.for_model(meta)
-        if ranker is not None and meta.get("ranker_encoder") == "cosine":
-            ranker.extra = feats.rank_features
-        return cls(vecs, heads, meta, ranker, dense=feats.slot_features)
+        return cls(vecs, heads, meta, ranker, dense=EncoderFeatures.for_model(meta).slot_features)
 
 
 def _ranked(classes: Any, p: Any, types: set[str] | None) -> list[tuple[str, float]]:
