@@ -1,5 +1,5 @@
-"""`nl2hltl2plan train language [-o PATH] [--structure-out PATH] [--only slots|structure] [--seed S]`:
-rebuild the learned language models.
+"""`nl2hltl2plan train language [-o PATH] [--structure-out PATH] [--only slots|structure] [--seed S]
+[--encoder]`: rebuild the learned language models.
 
 Trains the slot model (`language.learned`) on ALFRED's train annotations (text-faithful labels) minus
 the benchmark's excluded trials, prints its slot accuracy on valid_seen / valid_unseen, and writes
@@ -10,12 +10,16 @@ span accuracy on compositions of valid_unseen, then the slot model, whose type r
 offline parser's readings with the structure model the parser prefers (the one just written, when it is
 written to the default or the packaged place: then one run rebuilds both, whatever was there before).
 Each file is written to a temporary file and renamed: a kill leaves the previous model. Deterministic
-for a seed; about 3-4 minutes on 2 cores (needs the `train` extra).
+for a seed; about 3-4 minutes on 2 cores (needs the `train` extra). `--encoder` adds the pretrained
+encoder's sentence embeddings to the slot model (the `encoder` extra and its wheel; measured and not the
+default: docs/learned.md); it takes about 15 minutes on a busy 2-core machine.
 """
 
 from __future__ import annotations
 
 import argparse
+from collections.abc import Callable
+from functools import partial
 from pathlib import Path
 from typing import Any
 
@@ -39,6 +43,10 @@ def register(sub: Any) -> None:
     lang.add_argument("--only", choices=["slots", "structure"], default=None,
                       help="train only one of the two models")
     lang.add_argument("--seed", type=seed, default=0, help="random seed, 0..2^32-1 (default 0)")
+    lang.add_argument("--encoder", action="store_true",
+                      help="the slot model (not the structure model) also reads the pretrained "
+                      "encoder's sentence embeddings (all-MiniLM-L6-v2, the `encoder` extra; "
+                      "measured, not the default: docs/learned.md)")
     lang.set_defaults(func=run)
 
 
@@ -49,9 +57,11 @@ def run(args: argparse.Namespace) -> int:
     from nl2hltl2plan.language.learned.structure import user_structure_path
     from nl2hltl2plan.language.learned.train import train_and_report
 
-    jobs = [  # the structure model first: the slot model's ranker reads with it
+    # the structure model first: the slot model's ranker reads with it
+    jobs: list[tuple[str, Path, Callable[..., str]]] = [
         ("structure", args.structure_out or user_structure_path(), structure_train.train_and_report),
-        ("slots", args.out or user_model_path(), train_and_report),
+        ("slots", args.out or user_model_path(), partial(train_and_report, encoder=True) if args.encoder
+         else train_and_report),
     ]
     for name, path, job in jobs:
         if args.only not in (None, name):

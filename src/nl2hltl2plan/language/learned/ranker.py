@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import math
 import re
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
@@ -45,19 +46,29 @@ def _words(clause: str) -> set[str]:
     return set(re.findall(r"[a-z]+", clause.lower()))
 
 
-def features(words: set[str], candidate: str, prob: float) -> dict[str, float]:
+ExtraFeatures = Callable[[str, str], dict[str, float]]  # (clause, candidate) -> more features
+
+
+def features(
+    words: set[str], candidate: str, prob: float, extra: dict[str, float] | None = None
+) -> dict[str, float]:
     """A candidate's features: its type, its type with each word of the clause (`_words`), the model's
-    log-prob."""
+    log-prob, and any `extra` ones (the pretrained encoder's, `encoder_features.py`, when measured)."""
     out = {f"{candidate}|": 1.0, "logq": math.log(max(prob, _FLOOR))}
     out.update({f"{candidate}|{w}": 1.0 for w in words})
+    out.update(extra or {})
     return out
 
 
 class TypeRanker:
     """feature -> weight; `order` needs only the dictionary, `fit` scikit-learn."""
 
-    def __init__(self, weights: dict[str, float]) -> None:
+    def __init__(self, weights: dict[str, float], extra: ExtraFeatures | None = None) -> None:
         self.weights = weights
+        self.extra = extra
+
+    def _features(self, clause: str, words: set[str], candidate: str, prob: float) -> dict[str, float]:
+        return features(words, candidate, prob, self.extra(clause, candidate) if self.extra else None)
 
     def order(self, clause: str, candidates: list[tuple[str, float]]) -> list[tuple[str, float]]:
         """The candidates (type, slot-model probability) re-ranked, with softmax confidences."""
@@ -66,7 +77,7 @@ class TypeRanker:
         total = sum(q for _, q in candidates) or 1.0
         words = _words(clause)
         scores = [
-            sum(self.weights.get(f, 0.0) * v for f, v in features(words, t, q / total).items())
+            sum(self.weights.get(f, 0.0) * v for f, v in self._features(clause, words, t, q / total).items())
             for t, q in candidates
         ]
         top = max(scores)
@@ -76,7 +87,9 @@ class TypeRanker:
         return sorted(ranked, key=lambda tq: -tq[1])
 
     @classmethod
-    def fit(cls, cases: list[RankCase], seed: int = 0, c: float = C) -> TypeRanker:
+    def fit(
+        cls, cases: list[RankCase], seed: int = 0, c: float = C, extra: ExtraFeatures | None = None
+    ) -> TypeRanker:
         """A logistic regression on (case, candidate) rows, label = the candidate is the annotation's type."""
         try:
             from sklearn.feature_extraction import DictVectorizer
@@ -84,17 +97,18 @@ class TypeRanker:
         except ImportError as exc:
             raise DataError("training the type ranker needs scikit-learn: pip install scikit-learn") from exc
         rows, labels = [], []
+        blank = cls({}, extra)
         for case in cases:
             words = _words(case.clause)
             for t, q in case.candidates:
-                rows.append(features(words, t, q))
+                rows.append(blank._features(case.clause, words, t, q))
                 labels.append(int(t == case.label))
         if len(set(labels)) < 2:
             raise DataError("no ambiguous words with a known type to train the type ranker on")
         vec = DictVectorizer()
         clf = LogisticRegression(C=c, max_iter=2000, random_state=seed).fit(vec.fit_transform(rows), labels)
         names = vec.get_feature_names_out()
-        return cls({str(n): float(w) for n, w in zip(names, clf.coef_[0], strict=True) if w != 0.0})
+        return cls({str(n): float(w) for n, w in zip(names, clf.coef_[0], strict=True) if w != 0.0}, extra)
 
     def arrays(self) -> dict[str, np.ndarray]:
         names = sorted(self.weights)

@@ -16,6 +16,7 @@ import math
 import re
 import zipfile
 from collections import Counter
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from importlib import resources
 from pathlib import Path
@@ -61,6 +62,7 @@ def default_model_path() -> Path:
     """The slot model `SlotModel.load()` reads (`preferred_path`)."""
     return preferred_path(ARTIFACT)
 FORMAT = 3
+DenseFeatures = Callable[[list[str]], np.ndarray]  # texts -> (texts, d): the pretrained encoder's, measured
 HEADS = ("kind", *SLOTS, "sliced")
 
 
@@ -155,20 +157,24 @@ class SlotModel:
         heads: dict[str, Head],
         meta: dict[str, Any],
         ranker: TypeRanker | None = None,
+        dense: DenseFeatures | None = None,
     ) -> None:
         self.vectorizers = vectorizers
         self.heads = heads
         self.meta = meta
         self.ranker = ranker  # orders the several scene types a word fits (`ranker.py`)
+        self.dense = dense  # more features after the TF-IDF ones (`encoder_features.py`); None by default
 
     def without_ranker(self) -> SlotModel:
         """The same slot model with no type ranker (its candidates keep the slot model's order)."""
-        return SlotModel(self.vectorizers, self.heads, self.meta)
+        return SlotModel(self.vectorizers, self.heads, self.meta, dense=self.dense)
 
     @classmethod
-    def fit(cls, examples: list[Example], seed: int = 0, c: float = 8.0) -> SlotModel:
+    def fit(
+        cls, examples: list[Example], seed: int = 0, c: float = 8.0, dense: DenseFeatures | None = None
+    ) -> SlotModel:
         try:
-            from scipy.sparse import hstack
+            from scipy.sparse import csr_matrix, hstack
             from sklearn.feature_extraction.text import TfidfVectorizer
             from sklearn.linear_model import LogisticRegression
         except ImportError as exc:
@@ -190,6 +196,8 @@ class SlotModel:
             mats.append(v.fit_transform(texts))
             vocab = {str(k): int(i) for k, i in v.vocabulary_.items()}
             vecs.append(Vectorizer(analyzer, lo, hi, vocab, v.idf_.astype(np.float32)))
+        if dense is not None:
+            mats.append(csr_matrix(dense(texts)))
         x = hstack(mats, format="csr")
         heads: dict[str, Head] = {}
         for head in HEADS:
@@ -201,7 +209,8 @@ class SlotModel:
                 clf.coef_.astype(np.float32),
                 clf.intercept_.astype(np.float32),
             )
-        model = cls(vecs, heads, {"format": FORMAT, "seed": seed, "C": c, "n_train": len(examples)})
+        meta: dict[str, Any] = {"format": FORMAT, "seed": seed, "C": c, "n_train": len(examples)}
+        model = cls(vecs, heads, meta, dense=dense)
         model.check_features(texts[:: max(1, len(texts) // 200)], x[:: max(1, len(texts) // 200)])
         return model
 
@@ -220,6 +229,9 @@ class SlotModel:
             idx, val = v.transform(text)
             parts.append((idx + offset, val))
             offset += len(v.idf)
+        if self.dense is not None:
+            extra = self.dense([text])[0]
+            parts.append((offset + np.arange(len(extra)), extra.astype(np.float32)))
         return np.concatenate([p[0] for p in parts]), np.concatenate([p[1] for p in parts])
 
     def predict(self, texts: list[str], types: set[str] | None = None) -> list[SlotPrediction]:
@@ -295,7 +307,14 @@ class SlotModel:
             h: Head([str(c) for c in d[f"head_{h}_classes"]], d[f"head_{h}_coef"], d[f"head_{h}_intercept"])
             for h in HEADS
         }
-        return cls(vecs, heads, meta, TypeRanker.from_arrays(d))
+        ranker = TypeRanker.from_arrays(d)
+        if "encoder_sha256" not in meta:
+            return cls(vecs, heads, meta, ranker)
+        # a model trained with the pretrained encoder's features (`train language --encoder`): only
+        # such a file loads the encoder (the `encoder` extra), so the default path never does
+        from nl2hltl2plan.language.learned.encoder_features import EncoderFeatures
+
+        return cls(vecs, heads, meta, ranker, dense=EncoderFeatures.for_model(meta).slot_features)
 
 
 def _ranked(classes: Any, p: Any, types: set[str] | None) -> list[tuple[str, float]]:

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import time
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from nl2hltl2plan.domain.task_kinds import SLOTS
 from nl2hltl2plan.language.grounding import scene_types
@@ -18,6 +19,11 @@ from nl2hltl2plan.language.learned.faithful import FaithfulExample, faithful_exa
 from nl2hltl2plan.language.learned.inference import parse_instruction
 from nl2hltl2plan.language.learned.ranker import RankCase, TypeRanker
 from nl2hltl2plan.language.learned.slot_model import SlotModel, SlotPrediction
+
+if TYPE_CHECKING:
+    from nl2hltl2plan.language.learned.encoder_features import EncoderFeatures
+
+ENCODER_SCALE = 1.0  # the embedding's weight against the TF-IDF columns (scripts/encoder_measure.py)
 
 
 def text_faithful_items(split: str) -> list[FaithfulExample]:
@@ -32,17 +38,31 @@ def text_faithful_train() -> list[Example]:
     return [training_example(it) for it in text_faithful_items("train")]
 
 
-def train(seed: int = 0, labels: str = "text") -> SlotModel:
+def train(seed: int = 0, labels: str = "text", encoder: EncoderFeatures | None = None) -> SlotModel:
     """Fit on the train annotations: text-faithful labels (default) or ALFRED's, on those whose text
-    states their task (`data.faithful`, the first version)."""
+    states their task (`data.faithful`, the first version). With `encoder`, the slot model also reads
+    the pretrained encoder's sentence embeddings (`encoder_features.py`; measured, not the default)."""
     if labels == "text":
         examples = text_faithful_train()
-        model = SlotModel.fit(examples, seed=seed)
+        dense = None
+        if encoder is not None:
+            encoder.embed([e.text for e in examples])  # one batched pass instead of one text at a time
+            dense = encoder.slot_features
+        model = SlotModel.fit(examples, seed=seed, dense=dense)
         model.meta["data_sha"] = data_fingerprint(examples)
+        model.meta.update(encoder.describe() if encoder else {})
     else:
         model = SlotModel.fit([e for e in load_examples()["train"] if faithful(e)], seed=seed)
     model.ranker = TypeRanker.fit(ranking_cases(model, load_examples()["train"]), seed=seed)
     return model
+
+
+def encoder_features() -> EncoderFeatures:
+    """The pretrained encoder's features as `train language --encoder` uses them (the `encoder` extra)."""
+    from nl2hltl2plan.language.learned.encoder import SentenceEncoder
+    from nl2hltl2plan.language.learned.encoder_features import EncoderFeatures
+
+    return EncoderFeatures(SentenceEncoder.load(), scale=ENCODER_SCALE)
 
 
 def ranking_cases(model: SlotModel, examples: list[Example]) -> list[RankCase]:
@@ -102,9 +122,9 @@ def text_slot_accuracy(model: SlotModel, items: list[FaithfulExample]) -> dict[s
     return {k: v / len(items) for k, v in totals.items()} if items else {}
 
 
-def train_and_report(out: Path, seed: int = 0) -> str:
+def train_and_report(out: Path, seed: int = 0, encoder: bool = False) -> str:
     t0 = time.monotonic()
-    model = train(seed)
+    model = train(seed, encoder=encoder_features() if encoder else None)
     secs = time.monotonic() - t0
     model.save(out)
     data = load_examples()
