@@ -41,7 +41,6 @@ from nl2hltl2plan.language.tabletop_wording import (
     plain_words,
     stated_not_asked,
     steps_read,
-    wished_states_plain,
 )
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter, transitive_closure
 from nl2hltl2plan.worlds.world import World
@@ -301,7 +300,7 @@ def read_pairs(text: str, types: set[str]) -> Reading | None:
     if free and all(len(g) < 2 for g in group_ids):
         return None  # "A, then B - either order is ok": the remark frees no pair the "then"s leave unordered
     before = [(a, b) for i, g in enumerate(group_ids) for h in group_ids[i + 1 :] for a in g for b in h]
-    return tasks, before, group_ids, wished_states_plain(stepped, by_words)
+    return tasks, before, group_ids, stepped
 
 
 def _sentence_pairs(

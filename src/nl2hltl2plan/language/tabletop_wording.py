@@ -24,8 +24,8 @@ and plate names, read before `tabletop_pairs` pairs them.
   of each group ("the order within each pair does not matter");
 - what the world's closed vocabulary settles: a plate said by its colour alone, "on it" (the plate named
   before), "respectively", a question about where an object goes joined with the plate that answers it,
-  a tidying verb before an object ("sort the carrot onto ...") as placing it, and a state clause under a
-  wish asked for however far from the wish (`wished_states_plain`, for check 1).
+  and a tidying verb before an object ("sort the carrot onto ...") as placing it (a state clause under a
+  wish is asked for however far from the wish: `statements.asked_before`, which check 1 shares).
 """
 
 from __future__ import annotations
@@ -65,32 +65,6 @@ def stated_not_asked(text: str, names: Iterable[str]) -> str | None:
             clause_end = re.compile(r"[,.;!?]|$").search(lowered, m.end())
             return lowered[m.start() : clause_end.start() if clause_end else None].strip()
     return None
-
-
-# a wish said before a state clause (no reference to a placement: "once", "when", "after" order the tasks)
-_WISH_FRAME = re.compile(
-    r"\b(?:please|make\s+sure|ensure|see\s+(?:to\s+it\s+)?that|want|wish|like|love|need|needs|should|must|"
-    r"have\s+to|has\s+to|hope|expect|goal|target|final|desired|end\s+state|postcondition|"
-    r"(?:make|have|get)\s+it\s+so)\b"
-)
-_REFERENCE = re.compile(r"\b(?:once|when|whenever|after|before|until|till|as\s+soon\s+as|if|unless)\b")
-
-
-def wished_states_plain(text: str, names: Iterable[str]) -> str:
-    """`text` (lowercased) with the verb of each state clause under a wish dropped, where its sentence
-    refers to no other placement ("I want that the carrot is on the blue plate, the orange is on the
-    yellow plate" -> "... the orange on the yellow plate"): each such clause is asked for, however far
-    from its wish (check 1 looks six words back)."""
-    mention = mention_pattern(names).pattern.removesuffix(r"\b")
-    state = re.compile(
-        rf"(?P<name>{mention})(?:\s+(?:both|all|too|also))?{_STATE_VERB}{_STATE_ADVERB}(?={_LOCATIVE})"
-    )
-    out = []
-    for sentence in re.split(r"(?<=[.;!?\n])", text):
-        if _WISH_FRAME.search(sentence) and not _REFERENCE.search(sentence):
-            sentence = state.sub(lambda m: m["name"], sentence)
-        out.append(sentence)
-    return "".join(out)
 
 
 # ---- free-order remarks ---------------------------------------------------------------------------------
