@@ -69,6 +69,15 @@ NEAR_MISSES = [
         "placed on regions F, G or H meanwhile?",
     ),
     (2, "So the three blocks we need on H, I and J, one block per region."),
+    # fronted places and guards: a region left out, the guard reversed, a place with no verb of motion
+    (3, "On regions H and I, nothing may be placed. Move the three pillars to regions E, F and G."),
+    (
+        4,
+        "Not until the blue block has been touched may the red block be touched. Move the three blocks "
+        "to the opposite regions, and after all of that, put the yellow block back on region G.",
+    ),
+    (1, "On the opposite side, the three blocks. Red before blue."),
+    (5, "Swap the red and yellow blocks, red first. The blue block goes to the opposite side at any time."),
     # a list of blocks before a verb with no object: subject, topic or the arms addressed?
     (1, "The three blocks, move to the opposite side; the red block is put down ahead of the blue block."),
     # "first" with no clause before it nor a block after
@@ -100,7 +109,12 @@ def test_a_fronted_place_and_a_passive_guard_are_said_in_plain_words():
     assert _restated(4, "The blue block is touched by no arm before the red block has been touched") == (
         "no arm may touch the blue block until the red block has been touched"
     )
-    assert _restated(7, "Regions F, G and H: nothing placed meanwhile") is None  # a rule needs its goal
+    assert _restated(7, "Regions F, G and H: nothing placed meanwhile") == (
+        "no object may be placed on regions F, G and H"  # a sentence of its own: it guards every goal
+    )
+    assert _restated(4, "Not until the red block has been touched may the blue block be touched") == (
+        "no arm may touch the blue block until the red block has been touched"
+    )
 
 
 def test_words_that_carry_a_meaning_the_cues_do_not_model_are_refused():

@@ -34,14 +34,16 @@ _PHRASES: tuple[tuple[str, str], ...] = (
      "AFTERALL"),
     (r"(?:when|once) (?:that|this|all of this|all that|all this|everything) (?:is|has been) (?:all )?"
      r"(?:done|completed|finished)", "AFTERALL"),
+    (r"(?:once|when) (?:everything|all (?:of )?(?:them|the blocks)) (?:is|are|has been|have been) "
+     r"(?:done|moved|in place|over there|across)", "AFTERALL"),
     (r"(?:and )?after that|afterwards|thereafter|(?:and )?then|next", "THEN"),
     (r"ahead of|prior to|earlier than|before", "BEFORE"),
     (r"until|till", "UNTIL"),
     (r"after", "AFTER"),
     (r"during (?:this|the) (?:period|task)|meanwhile|in the meantime|throughout(?: the (?:job|task))?|"
      r"the whole time|(?:for as long as|while) (?:this|that) (?:is )?(?:goes|going) on|ever", "PERIOD"),
-    (r"(?:swap|swaps|swapped|exchange|exchanges|exchanged|trade|trades|switch|switches)(?: (?:their|the))? "
-     r"(?:positions?|places?)(?: of)?", "EXCHANGE"),
+    (r"(?:swap|swaps|swapped|exchange|exchanges|exchanged|trade|trades|switch|switches)(?: (?:are|is))?"
+     r"(?: (?:their|the))?(?: (?:positions?|places?)(?: of)?)?", "EXCHANGE"),
     (r"(?:the )?(?:placing order|order of placing|order of placement|placement order)", "ORDERHEAD"),
     (r"untouched", "NEG TOUCH"),
     (r"(?:has|have) been", "PERFECT"),  # "until red has been touched"; never a goal's ("have been put")
@@ -60,6 +62,7 @@ _WORDS = {
     "NEG": "no not never nothing without none",
     "KEEP": "keep keeping kept stay stays remain remains leave leaving left empty free clear receive",
     "FIRST": "first",
+    "POS": "positions position spots",
     "WANT": "need needs want wanted",
     "ANY": "anything object objects",
     "THERE": "there",
@@ -164,6 +167,7 @@ class _Reading:
         self.step = ""
         self.group: list[str] = []  # blocks said alone, waiting for their place
         self.place: list[Place] = []  # places said alone, waiting for their blocks
+        self.place_towards = False  # said with a preposition of direction ("onto region I, ...")
         self.mods: set[str] = set()  # a chunk of its own: "at any time", "one after another"
         self.ok = True
 
@@ -205,11 +209,14 @@ class _Reading:
         if len(c.blocks) > 1:
             return False
         blocks = self.blocks(c.blocks[0]) if c.blocks else []
+        if blocks and blocks == self.group:  # "the red and blue blocks, put them on ...": the topic taken up
+            self.group = []
         if not blocks:
             if self.group and not c.has("MOVE"):  # "the three blocks, move to ...": subject, topic, address?
                 blocks, self.group = self.group, []
             elif len(places) == 1 and not c.has("MOVE") and not rest:
                 self.place = places  # "regions H, I and J: the three blocks go there"
+                self.place_towards = c.towards
                 return True
             elif self.goals and len(self.goals[-1].blocks) == 1 and rest[:1] == ["THEN"] and len(places) == 1:
                 blocks = self.goals[-1].blocks  # "... to region I, and after that to region G"
@@ -241,6 +248,11 @@ class _Reading:
 
     def _blocks_only(self, c: _Chunk) -> bool:
         cues = [x for x in c.cues if x != "MOVE"]
+        if self.place and len(c.blocks) == 1 and (c.has("THERE") or c.has("MOVE") and self.place_towards):
+            # "regions H, I and J: the blocks go there"; "onto region I, one after another, go the blocks"
+            rest = [x for x in cues if x != "THERE" and not _BLOCK.fullmatch(x)]
+            place, self.place = self.place, []
+            return self._goal_steps(self.blocks(c.blocks[0]), place, rest)
         if cues == [f"B{c.blocks[0]}"] and len(c.blocks) == 1:
             if self.place:  # "region I: ... the three blocks go there"
                 return False
@@ -249,15 +261,11 @@ class _Reading:
                 return False
             self.group = blocks
             return True
-        if c.has("THERE") and len(c.blocks) == 1 and self.place and not c.has("BEFORE", "AFTER", "UNTIL"):
-            rest = [x for x in cues if x not in ("THERE",) and not _BLOCK.fullmatch(x)]
-            place, self.place = self.place, []
-            return self._goal_steps(self.blocks(c.blocks[0]), place, rest)
         return self._order(c)
 
     def _exchange(self, c: _Chunk) -> bool:
         names = [b for k in c.blocks for b in self.blocks(k)]
-        extra = [x for x in c.cues if x not in ("EXCHANGE", "MOVE") and not _BLOCK.fullmatch(x)]
+        extra = [x for x in c.cues if x not in ("EXCHANGE", "MOVE", "POS") and not _BLOCK.fullmatch(x)]
         if c.places or len(names) != 2 or len(set(names)) != 2 or extra:
             return False
         self.swaps.append((names[0], names[1]))
@@ -304,6 +312,8 @@ class _Reading:
         goes_first = {f"{a} BEFORE B{b}" for a in ("B TOUCH", "TOUCH B") for b in ("", " TOUCH")}
         if negated and shape in waits:
             self.touches.append((x, y))
+        elif negated and shape == "UNTIL B TOUCH B TOUCH":  # "not until red has been touched may blue be"
+            self.touches.append((y, x))
         elif not negated and shape in goes_first:
             self.touches.append((y, x))
         else:
@@ -314,19 +324,21 @@ class _Reading:
     def _negated(self, c: _Chunk) -> bool:
         if c.has("TOUCH"):
             return self._touch(c, negated=True)
-        if c.cues.count("NEG") != 1 or not c.places or c.has("BEFORE", "AFTER", "UNTIL", "EXCHANGE", "THEN"):
+        if c.cues.count("NEG") != 1 or c.has("BEFORE", "AFTER", "UNTIL", "EXCHANGE", "THEN"):
             return False
         if any(self.blocks(k) != self.scene.blocks for k in c.blocks):
             return False  # a prohibition on some blocks only is the form reader's
-        return self._forbid(c)
+        if not c.places and self.place:  # "on regions F, G and H, nothing may be placed"
+            places, self.place = self.place, []
+            return self._forbid(c, places)
+        return self._forbid(c, [self.m.places[k] for k in c.places])
 
     def _kept(self, c: _Chunk) -> bool:
         if c.blocks or not c.places or c.has("BEFORE", "AFTER", "UNTIL", "THEN", "FIRST"):
             return False
-        return self._forbid(c)
+        return self._forbid(c, [self.m.places[k] for k in c.places])
 
-    def _forbid(self, c: _Chunk) -> bool:
-        places = [self.m.places[k] for k in c.places]
+    def _forbid(self, c: _Chunk, places: list[Place]) -> bool:
         kinds = ("regions", "complement")
         if len(places) != 1 or places[0].kind not in kinds or c.has("ANYTIME", "SEQ", "FIRST", "EXCHANGE"):
             return False
@@ -362,8 +374,6 @@ class _Reading:
             self.goals[0].marker = self.step
         if self.leader and not self.followed:
             return None  # "red first" with no clause before it nor "blue after"
-        if self.forbidden and not (self.goals or self.swaps):
-            return None
         goals = [self._goal_text(g) for g in self.goals]
         if any(p is None for p in goals):
             return None
@@ -377,8 +387,10 @@ class _Reading:
             for place in self.forbidden:
                 text += f", and no object may be placed on {_forbidden_text(place)} during this period"
             sentences.append(text)
-        elif self.m.notes or self.forbidden:
+        elif self.m.notes:
             return None
+        else:  # a prohibition in a sentence of its own guards every goal (as the form reader reads it)
+            sentences += [f"no object may be placed on {_forbidden_text(p)}" for p in self.forbidden]
         sentences += [f"the {x.lower()} block should be placed before the {y.lower()} block"
                       for x, y in self.orders]
         sentences += [
