@@ -56,11 +56,13 @@ _WORDS = {
     "MOVE": "move moved moves moving put puts putting place placed places placing go goes going gone carry "
     "carried carries carrying transfer transferred transfers transferring bring brought brings get gets got "
     "take taken takes set sets setting deliver delivered send sent shift shifted relocate relocated end ends "
-    "up down over across come comes distribute distributed return returned returns back lay laid travel",
+    "up down over across come comes distribute distributed return returned returns back lay laid travel "
+    "receive receives",
     "TOUCH": "touch touched touches touching pick picked picking grasp grasped grab grabbed handle handled "
     "lift lifted",
     "NEG": "no not never nothing without none",
-    "KEEP": "keep keeping kept stay stays remain remains leave leaving left empty free clear receive",
+    "KEEP": "keep keeping kept stay stays remain remains leave leaving left",
+    "CLEAR": "empty free clear unoccupied",
     "FIRST": "first",
     "POS": "positions position spots",
     "WANT": "need needs want wanted",
@@ -186,7 +188,7 @@ class _Reading:
             return self._exchange(c)
         if c.has("TOUCH"):
             return self._touch(c, negated=False)
-        if c.has("KEEP"):
+        if c.has("KEEP", "CLEAR"):
             return self._kept(c)
         if c.places:
             return self._goal(c)
@@ -324,7 +326,7 @@ class _Reading:
     def _negated(self, c: _Chunk) -> bool:
         if c.has("TOUCH"):
             return self._touch(c, negated=True)
-        if c.cues.count("NEG") != 1 or c.has("BEFORE", "AFTER", "UNTIL", "EXCHANGE", "THEN"):
+        if c.cues.count("NEG") != 1 or c.has("BEFORE", "AFTER", "UNTIL", "EXCHANGE", "THEN", "KEEP", "CLEAR"):
             return False
         if any(self.blocks(k) != self.scene.blocks for k in c.blocks):
             return False  # a prohibition on some blocks only is the form reader's
@@ -334,7 +336,11 @@ class _Reading:
         return self._forbid(c, [self.m.places[k] for k in c.places])
 
     def _kept(self, c: _Chunk) -> bool:
+        """'keep regions F, G and H empty', 'F, G and H must stay clear', 'F, G, H empty meanwhile' (without
+        a verb of keeping, a modal or a period, 'F, G, H empty' may say how they are now: refused)."""
         if c.blocks or not c.places or c.has("BEFORE", "AFTER", "UNTIL", "THEN", "FIRST"):
+            return False
+        if not c.has("CLEAR") or not (c.has("KEEP", "PERIOD") or c.modal):
             return False
         return self._forbid(c, [self.m.places[k] for k in c.places])
 
