@@ -78,6 +78,23 @@ NEAR_MISSES = [
     ),
     (1, "On the opposite side, the three blocks. Red before blue."),
     (5, "Swap the red and yellow blocks, red first. The blue block goes to the opposite side at any time."),
+    # steps said with "begin by / with" and "finish by", legal register: the order reversed
+    (
+        8,
+        "Begin by putting the yellow block on region G and finish by putting it on region I; the red and "
+        "blue blocks go to any empty region at any time.",
+    ),
+    (6, "Begin with the blue block, then the red block, placing the three objects on regions G, H and I."),
+    (
+        4,
+        "Start by moving all three blocks to the opposite regions, touching the blue block before the red "
+        "block, and finish by putting the yellow block back on region G.",
+    ),
+    (
+        1,
+        "The Operator shall cause the three blocks to be transferred to the opposite side, the blue block "
+        "being placed prior to the red block.",
+    ),
     # a list of blocks before a verb with no object: subject, topic or the arms addressed?
     (1, "The three blocks, move to the opposite side; the red block is put down ahead of the blue block."),
     # "first" with no clause before it nor a block after

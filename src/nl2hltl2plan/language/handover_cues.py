@@ -37,16 +37,21 @@ _PHRASES: tuple[tuple[str, str], ...] = (
     (r"(?:once|when) (?:everything|all (?:of )?(?:them|the blocks)) (?:is|are|has been|have been) "
      r"(?:done|moved|in place|over there|across)", "AFTERALL"),
     (r"(?:and )?after that|afterwards|thereafter|(?:and )?then|next", "THEN"),
+    (r"(?:begin|start) with", "FIRST"),  # "begin with the red block, then the blue block"
+    (r"upon completion(?: of (?:the foregoing|this|that|all (?:of )?(?:this|that)))?", "AFTERALL"),
+    (r"(?:finish|end) (?:by|with)", "FINISH"),  # after the sentence's goal before it, else after all
+    (r"for the duration(?: (?:thereof|of (?:this|that|it)))?|until (?:you|we|they) (?:are )?(?:finish|done)",
+     "PERIOD"),
     (r"ahead of|prior to|earlier than|before", "BEFORE"),
     (r"until|till", "UNTIL"),
     (r"after", "AFTER"),
     (r"during (?:this|the) (?:period|task)|meanwhile|in the meantime|throughout(?: the (?:job|task))?|"
      r"the whole time|(?:for as long as|while) (?:this|that) (?:is )?(?:goes|going) on|ever", "PERIOD"),
-    (r"(?:swap|swaps|swapped|exchange|exchanges|exchanged|trade|trades|switch|switches)(?: (?:are|is))?"
-     r"(?: (?:their|the))?(?: (?:positions?|places?)(?: of)?)?", "EXCHANGE"),
+    (r"(?:swap|swaps|swapped|swapping|exchange|exchanges|exchanged|exchanging|trade|trades|switch|switches)"
+     r"(?: (?:are|is))?(?: (?:their|the))?(?: (?:positions?|places?)(?: of)?)?", "EXCHANGE"),
     (r"(?:the )?(?:placing order|order of placing|order of placement|placement order)", "ORDERHEAD"),
     (r"untouched", "NEG TOUCH"),
-    (r"(?:has|have) been", "PERFECT"),  # "until red has been touched"; never a goal's ("have been put")
+    (r"(?:has|have|having) been", "PERFECT"),  # "until red has been touched", never a goal ("have been put")
     (r"(?:has|have) to|is it possible (?:to|that)|it is possible to", " "),  # a modal
     (r"and so (?:on|forth)|etc|et cetera", "ETC"),  # more of the same: what?
     (r"(?:by )?no (?:A|arm)", "NEG ARM"),
@@ -57,13 +62,14 @@ _WORDS = {
     "carried carries carrying transfer transferred transfers transferring bring brought brings get gets got "
     "take taken takes set sets setting deliver delivered send sent shift shifted relocate relocated end ends "
     "up down over across come comes distribute distributed return returned returns back lay laid travel "
-    "receive receives",
+    "deposit deposited",
     "TOUCH": "touch touched touches touching pick picked picking grasp grasped grab grabbed handle handled "
     "lift lifted",
     "NEG": "no not never nothing without none",
     "KEEP": "keep keeping kept stay stays remain remains leave leaving left",
     "CLEAR": "empty free clear unoccupied",
     "FIRST": "first",
+    "RECEIVE": "receive receives",  # only with a negation: "regions F, G and H receive nothing"
     "POS": "positions position spots",
     "WANT": "need needs want wanted",
     "ANY": "anything object objects",
@@ -77,10 +83,12 @@ _EMPTY = frozenset(
     "this that these those you we us our your please "
     "like just also so as well here make sure possible okay ok "
     "and or what how job task arms robot robots kindly mind you all of there's checklist things todo list "
-    "steps tasks notes".split()
+    "steps tasks notes cause operator".split()
 )
 _BLOCK = re.compile(r"B\d+")
-_SPLIT = r"([,;:()]|\bwhile\b|\bwhilst\b|\bwith\b|(?=\bwithout\b))"  # kept: a colon ends a heading
+# chunks end at punctuation, "while", "with", before "without", and at "and" but in a list of blocks ("B0 and
+# B1"); the separators are kept: a colon ends a heading
+_SPLIT = r"([,;:()]|\bwhile\b|\bwhilst\b|\bwith\b|(?=\bwithout\b)|(?<!B\d )\band\b)"
 _TOWARDS = frozenset("to onto into towards toward".split())
 _MODAL = frozenset("should must shall will would could can may might".split())
 
@@ -128,7 +136,7 @@ def _tokens(text: str) -> str:
     """The sentence with its multi-word cues as single tokens."""
     for pattern, token in _PHRASES:
         text = re.sub(rf"(?<![\w]){pattern}(?![\w])", f" {token} ", text)
-    return text
+    return " ".join(text.split())
 
 
 def _chunk(text: str) -> _Chunk | None:
@@ -203,7 +211,7 @@ class _Reading:
             places = places[:1]  # "to regions E, F and G, on the side of arms a and b": one place said twice
         if any(p.kind not in ("regions", "opposite", "away") for p in places):
             return False
-        if c.has("BEFORE", "AFTER", "UNTIL", "ORDERHEAD", "THERE", "ARM", "ANY"):
+        if c.has("BEFORE", "AFTER", "UNTIL", "ORDERHEAD", "THERE", "ARM", "ANY", "RECEIVE"):
             return False
         if c.has("WANT") and (not c.blocks or c.cues.index("WANT") > c.cues.index(f"B{c.blocks[0]}")):
             return False  # "the three blocks we need on H, I and J": a noun and its relative clause
@@ -230,7 +238,7 @@ class _Reading:
         return self._goal_steps(blocks, places, rest)
 
     def _goal_steps(self, blocks: list[str], places: list[Place], rest: list[str]) -> bool:
-        mods = {"ANYTIME", "SEQ", "FIRST", "THEN", "AFTERALL"}
+        mods = {"ANYTIME", "SEQ", "FIRST", "THEN", "AFTERALL", "FINISH"}
         if any(x not in mods for x in rest) or len(set(rest)) != len(rest):
             return False
         if len(places) == 2:  # "goes first to region I and after that to region G": one block, two steps
@@ -239,9 +247,11 @@ class _Reading:
             self.goals += [_Goal(blocks, [places[0]], "first"), _Goal(blocks, [places[1]], "then")]
             self.last_moved = blocks
             return True
+        if "FINISH" in rest:  # "begin by X and finish by Y": Y after X; "..., finish by Y" alone: after all
+            rest = [("THEN" if self.goals else "AFTERALL") if x == "FINISH" else x for x in rest]
         marker = "after_all" if "AFTERALL" in rest else "then" if "THEN" in rest else ""
-        if "FIRST" in rest:
-            if marker or (len(blocks) > 1):
+        if "FIRST" in rest:  # the step said first ("first move the three blocks ...")
+            if marker:
                 return False
             marker = "first"
         self.goals.append(_Goal(blocks, places, marker, "ANYTIME" in rest, "SEQ" in rest))
