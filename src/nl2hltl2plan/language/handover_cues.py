@@ -51,7 +51,8 @@ _PHRASES: tuple[tuple[str, str], ...] = (
      r"(?: (?:are|is))?(?: (?:their|the))?(?: (?:positions?|places?)(?: of)?)?", "EXCHANGE"),
     (r"(?:the )?(?:placing order|order of placing|order of placement|placement order)", "ORDERHEAD"),
     (r"untouched", "NEG TOUCH"),
-    (r"(?:has|have|having) been", "PERFECT"),  # "until red has been touched", never a goal ("have been put")
+    (r"(?:has|have|having) been|(?:has|have|had)(?= (?:touched|picked|grasped|grabbed|handled|lifted)\b)",
+     "PERFECT"),  # "until red has been touched", never a goal ("have been put")
     (r"(?:has|have) to|is it possible (?:to|that)|it is possible to", " "),  # a modal
     (r"and so (?:on|forth)|etc|et cetera", "ETC"),  # more of the same: what?
     (r"(?:by )?no (?:A|arm)", "NEG ARM"),
@@ -103,6 +104,7 @@ class _Chunk:
     towards: bool = False
     modal: bool = False
     heading: bool = False
+    after_with: bool = False  # "to the opposite side with the three blocks": the blocks taken there
 
     def has(self, *cls: str) -> bool:
         return any(c in self.cues for c in cls)
@@ -127,6 +129,7 @@ def restate(m: Marked, scene: Scene) -> str | None:
         if c is None:
             return None
         c.heading = k > 0 and parts[k - 1] == ":"
+        c.after_with = k > 0 and parts[k - 1] == "with"
         if (c.blocks or c.places or c.cues) and not reading.take(c):
             return None
     return reading.said()
@@ -222,9 +225,10 @@ class _Reading:
         if blocks and blocks == self.group:  # "the red and blue blocks, put them on ...": the topic taken up
             self.group = []
         if not blocks:
-            if self.group and not c.has("MOVE"):  # "the three blocks, move to ...": subject, topic, address?
+            # "the three blocks, move to ...": subject, topic or the arms addressed?
+            if self.group and (c.heading or not c.has("MOVE")):
                 blocks, self.group = self.group, []
-            elif len(places) == 1 and not c.has("MOVE") and not rest:
+            elif len(places) == 1 and not rest:
                 self.place = places  # "regions H, I and J: the three blocks go there"
                 self.place_towards = c.towards
                 return True
@@ -260,7 +264,8 @@ class _Reading:
 
     def _blocks_only(self, c: _Chunk) -> bool:
         cues = [x for x in c.cues if x != "MOVE"]
-        if self.place and len(c.blocks) == 1 and (c.has("THERE") or c.has("MOVE") and self.place_towards):
+        taken = c.has("THERE") or self.place_towards and (c.has("MOVE") or c.after_with)
+        if self.place and len(c.blocks) == 1 and taken:
             # "regions H, I and J: the blocks go there"; "onto region I, one after another, go the blocks"
             rest = [x for x in cues if x != "THERE" and not _BLOCK.fullmatch(x)]
             place, self.place = self.place, []
@@ -320,8 +325,9 @@ class _Reading:
             return False
         shape = _shape([x for x in c.cues if x not in ("ARM", "NEG", "PERIOD", "PERFECT")])
         x, y = singles[0][0], singles[1][0]
-        waits = {f"{a} {b} B TOUCH" for a in ("B TOUCH", "TOUCH B") for b in ("UNTIL", "BEFORE")}
-        goes_first = {f"{a} BEFORE B{b}" for a in ("B TOUCH", "TOUCH B") for b in ("", " TOUCH")}
+        touched = ("B TOUCH", "TOUCH B")
+        waits = {f"{a} {rel} {b}" for a in touched for rel in ("UNTIL", "BEFORE") for b in touched}
+        goes_first = {f"{a} BEFORE {b}" for a in touched for b in (*touched, "B")}
         if negated and shape in waits:
             self.touches.append((x, y))
         elif negated and shape == "UNTIL B TOUCH B TOUCH":  # "not until red has been touched may blue be"
