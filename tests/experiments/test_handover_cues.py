@@ -1,8 +1,9 @@
 """Issue 24, h78: the form-independent reading of a handover sentence (`language/handover_cues.py`), the
 fallback where the form reader refuses. The development batch `dev38` (fronted objects and passives,
-checklists, questions) must give the written specs, `dev39`-`dev41` the written spec or a refusal; near misses that change one meaning (an order or a guard
-reversed, a region or a timing left out, a scene said without a verb, a report of what was done, "and so
-on", a pronoun of the other number) must be refused or give another spec.
+checklists, questions) must give the written specs, `dev39`-`dev41` the written spec or a refusal; near
+misses that change one meaning (an order or a guard reversed, a region or a timing left out, a scene said
+without a verb, a report of what was done, "and so on", a pronoun of the other number) must be refused or
+give another spec.
 """
 
 from __future__ import annotations
