@@ -199,6 +199,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\bb4\b", "before"),
     (r"\b1\s*st\b", "first"),
     (r"\bopp\b\.?", "opposite"),
+    (r"\b(?:please\s+)?(?:be\s+advised|be\s+aware|note)\s+that\b", " "),
     (r"\s*,?\s*\bit\s+being\s+understood\s+that\b", ","),
     (
         r"^\s*here\s*(?:s|is)\s+what\s+(?:should|must|has\s+to|needs\s+to|will)\s+(?:happen|be\s+done)\s*:?\s*$",
@@ -320,6 +321,12 @@ REWRITES: tuple[tuple[str, str], ...] = (
         " ",
     ),
     (r"(?<=[a-z])\s*\+\s*(?=[a-z])", " and "),  # "red + blue"
+    # "while moving them, ...": the period of the goals
+    (
+        r"\bwhile\s+(?:you\s+(?:are\s+)?)?(?:moving|placing|transferring|carrying|bringing|doing)\s+"
+        r"(?:them|it|this|that|so|the\s+(?:blocks|pillars|objects))\b",
+        "meanwhile",
+    ),
     # reasons that say nothing but that the order or the timing was meant
     (
         r"\s*,?\s*\b(?:(?:as|since|because)\s+(?:(?:the\s+)?order\s+(?:matters|is\s+important)(?:\s+here)?|that\s+is\s+the\s+"
@@ -355,6 +362,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (rf"^\s*{_RULE_LABEL}\s+({PERIOD_WORDS})\s*:\s*(.+)$", r"\2 \1"),
     # a reason clause: read as a clause of the instruction ("because regions F, G and H must stay clear, ...")
     (rf"^({STEP_NUMBER})(?:because|since)\s+", r"\1 "),
+    (r"\s*,\s*(?:because|since)\s+", ", and "),
     (r"\s*,\s*so\s+(?!that\b|as\b|long\b|far\b|on\b)", ", "),
     (r"\s*,?\s*(?:since|because|as)\s+(?:the|their)\s+order\s+does\s+not\s+matter\b", " in any order"),
     # a rule announced: "the only ordering rule is that ...", "be careful about one thing:"
@@ -447,6 +455,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
         " ",
     ),
     (r"\bprecedes?\b", "comes before"),
+    (r"\bfollows?\b", "comes after"),
     (
         r"\b(?:nobody|no\s+one|none\s+of\s+the\s+(?:robot\s+)?arms|neither\s+(?:of\s+the\s+)?(?:robot\s+)?arms?)\b",
         "no arm",
