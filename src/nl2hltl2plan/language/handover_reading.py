@@ -33,7 +33,9 @@ task tree and the spec. The rules, each general:
 - goals of one block per clause to one set of as many regions, under the one-block rule ("red -> G/H/I,
   blue -> G/H/I, yellow -> G/H/I; one per region"), are read at once, as one clause says it.
 Clauses are kept in the sentence's order; "but" is read only before a rule. Every word is read or is
-a filler; anything else is refused, naming the words.
+a filler; anything else is refused, naming the words. Where these forms refuse, the form-independent
+reading of `handover_cues` says each refused sentence again from what its words name and relate, and the
+instruction is read once more (`_restated`).
 """
 
 from __future__ import annotations
