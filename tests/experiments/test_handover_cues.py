@@ -167,6 +167,16 @@ def test_a_fronted_place_and_a_passive_guard_are_said_in_plain_words():
     )
 
 
+def test_a_cue_is_a_whole_word():
+    # "never" is a negation, not "n" and "ever"; "however" and "still" hold no cue ("ever", "till")
+    assert (
+        _restated(7, "Never put anything on regions F, G and H")
+        == "no object may be placed on regions F, G and H"
+    )
+    assert _restated(7, "However, put nothing on regions F, G and H") is None
+    assert _restated(7, "Still put nothing on regions F, G and H") is None
+
+
 def test_words_that_carry_a_meaning_the_cues_do_not_model_are_refused():
     assert _restated(1, "3 blocks, opposite side") is None  # where they go, or where they are?
     assert _restated(1, "Move the three blocks to the opposite side unless red is there") is None

@@ -138,7 +138,7 @@ def restate(m: Marked, scene: Scene) -> str | None:
 def _tokens(text: str) -> str:
     """The sentence with its multi-word cues as single tokens."""
     for pattern, token in _PHRASES:
-        text = re.sub(rf"(?<![\w]){pattern}(?![\w])", f" {token} ", text)
+        text = re.sub(rf"(?<![\w])(?:{pattern})(?![\w])", f" {token} ", text)
     return " ".join(text.split())
 
 
