@@ -1,6 +1,6 @@
 """Issue 24, h78: the form-independent reading of a handover sentence (`language/handover_cues.py`), the
 fallback where the form reader refuses. The development batch `dev38` (fronted objects and passives,
-checklists, questions) must give the written specs, `dev39`-`dev41` the written spec or a refusal; near
+checklists, questions) must give the written specs, `dev39`-`dev42` the written spec or a refusal; near
 misses that change one meaning (an order or a guard reversed, a region or a timing left out, a scene said
 without a verb, a report of what was done, "and so on", a pronoun of the other number) must be refused or
 give another spec.
@@ -110,6 +110,12 @@ NEAR_MISSES = [
         "Onto region I with the three blocks, one after another, red before blue, and regions F and H kept "
         "empty meanwhile.",
     ),
+    # a completion clause "as soon as all of that is done" after a guard reversed
+    (
+        4,
+        "Get the three blocks over to the opposite regions, without touching the red block until the blue "
+        "block has been touched; as soon as all of that is done, put the yellow block back on region G.",
+    ),
     # a list of blocks before a verb with no object: subject, topic or the arms addressed?
     (1, "The three blocks, move to the opposite side; the red block is put down ahead of the blue block."),
     # "first" with no clause before it nor a block after
@@ -124,7 +130,7 @@ def test_development_batches_give_the_written_specs(batch, style):
 
 
 @pytest.mark.parametrize(
-    ("batch", "style"), [(b, s) for b in ("dev39", "dev40", "dev41") for s in sorted(STYLES[b])]
+    ("batch", "style"), [(b, s) for b in ("dev39", "dev40", "dev41", "dev42") for s in sorted(STYLES[b])]
 )
 def test_later_development_batches_are_read_right_or_refused(batch, style):
     for task, text in STYLES[batch][style].items():

@@ -32,7 +32,7 @@ _PHRASES: tuple[tuple[str, str], ...] = (
     (r"one after (?:another|the other)|one by one|one at a time|in turn", "SEQ"),
     (r"after all (?:of )?(?:that|this|these|of them)|last of all|at the (?:very )?end|in the end|finally",
      "AFTERALL"),
-    (r"(?:when|once) (?:that|this|all of this|all that|all this|everything) (?:is|has been) (?:all )?"
+    (r"(?:when|once|as soon as) (?:that|this|all (?:of )?(?:this|that)|everything) (?:is|has been) (?:all )?"
      r"(?:done|completed|finished)", "AFTERALL"),
     (r"(?:once|when) (?:everything|all (?:of )?(?:them|the blocks)) (?:is|are|has been|have been) "
      r"(?:done|moved|in place|over there|across)", "AFTERALL"),
