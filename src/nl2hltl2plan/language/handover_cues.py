@@ -182,7 +182,6 @@ class _Reading:
         self.place: list[Place] = []  # places said alone, waiting for their blocks
         self.place_towards = False  # said with a preposition of direction ("onto region I, ...")
         self.mods: set[str] = set()  # a chunk of its own: "at any time", "one after another"
-        self.ok = True
 
     def blocks(self, k: int) -> list[str]:
         return list(self.m.blocks[k])

@@ -102,15 +102,16 @@ def _restated(instruction: str, world: World) -> LanguageResult | None:
     scene = Scene.of(world)
     said: list[str] = []
     previous: Marked | None = None
+    sentences = timing_joined(plain(_sentences(answered(instruction))))
     try:
-        for sentence in timing_joined(plain(_sentences(answered(instruction)))):
+        for sentence in sentences:
             previous = mark(sentence, scene, previous)
             again = restate(previous, scene)
             alone = _spec_or_none(sentence, world)
             if again is not None and alone is not None and alone != _spec_or_none(again, world):
                 return None  # the two readings disagree
             said.append(sentence if alone is not None or again is None else again)
-        if said == timing_joined(plain(_sentences(answered(instruction)))):
+        if said == sentences:  # nothing said again: the form reader's refusal stands
             return None
         result = _read_forms(". ".join(said) + ".", world)
     except HTTError:
