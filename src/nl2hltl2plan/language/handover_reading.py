@@ -33,7 +33,9 @@ task tree and the spec. The rules, each general:
 - goals of one block per clause to one set of as many regions, under the one-block rule ("red -> G/H/I,
   blue -> G/H/I, yellow -> G/H/I; one per region"), are read at once, as one clause says it.
 Clauses are kept in the sentence's order; "but" is read only before a rule. Every word is read or is
-a filler; anything else is refused, naming the words.
+a filler; anything else is refused, naming the words. Where these forms refuse, the form-independent
+reading of `handover_cues` says each refused sentence again from what its words name and relate, and the
+instruction is read once more (`_restated`).
 """
 
 from __future__ import annotations
@@ -45,6 +47,7 @@ import networkx as nx
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.handover_answers import answered, timing_joined
+from nl2hltl2plan.language.handover_cues import restate
 from nl2hltl2plan.language.handover_discourse import plain
 from nl2hltl2plan.language.handover_goals import Clause, Goal, crossed_exchanges, goal_clauses, lead
 from nl2hltl2plan.language.handover_phrases import drop_but, mark
@@ -81,7 +84,55 @@ class Item:
 
 def translate_handover(instruction: str, world: World) -> LanguageResult:
     """Instruction -> LanguageResult on a handover world (see the module docstring); a line break in it ends
-    a step as a full stop does."""
+    a step as a full stop does. Where the form reader refuses, each sentence it cannot read alone is said
+    again from its cues (`handover_cues.restate`) and the whole is read once more (`_restated`)."""
+    try:
+        return _read_forms(instruction, world)
+    except HTTError as refusal:
+        result = _restated(instruction, world)
+        if result is None:
+            raise refusal from None
+        return result
+
+
+def _restated(instruction: str, world: World) -> LanguageResult | None:
+    """The instruction read with every sentence that the form reader refuses alone said again from its cues;
+    a sentence both readers read alone must give the same spec both ways (else None: refused). The result
+    keeps the instruction's own words."""
+    scene = Scene.of(world)
+    said: list[str] = []
+    previous: Marked | None = None
+    sentences = timing_joined(plain(_sentences(answered(instruction))))
+    try:
+        for sentence in sentences:
+            previous = mark(sentence, scene, previous)
+            again = restate(previous, scene)
+            alone = _spec_or_none(sentence, world)
+            if again is not None and alone is not None and alone != _spec_or_none(again, world):
+                return None  # the two readings disagree
+            said.append(sentence if alone is not None or again is None else again)
+        if said == sentences:  # nothing said again: the form reader's refusal stands
+            return None
+        result = _read_forms(". ".join(said) + ".", world)
+    except HTTError:
+        return None
+    text = " ".join(instruction.split())
+    first = result.htt.nodes[0]
+    root = first.model_copy(update={"text": text}) if first.text == result.instruction else first
+    htt = result.htt.model_copy(update={"instruction": text, "nodes": [root, *result.htt.nodes[1:]]})
+    return result.model_copy(update={"instruction": text, "htt": htt})
+
+
+def _spec_or_none(sentence: str, world: World) -> str | None:
+    """The sentence's reading alone, words aside: its tree, leaf formulas and constraints."""
+    try:
+        r = _read_forms(sentence, world)
+    except HTTError:
+        return None
+    return repr(([(n.id, n.children) for n in r.htt.nodes], r.htt.relations, r.leaf_specs, r.constraints))
+
+
+def _read_forms(instruction: str, world: World) -> LanguageResult:
     scene = Scene.of(world)
     clauses: list[Clause] = []
     orders: list[tuple[str, str]] = []

@@ -198,12 +198,7 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     # a requirement's identifier before it ("R1:", "REQ-2:"): requirements are listed, not ordered
     (r"^\s*(?:r|rq|req|requirement|item)\s*-?\s*\d+\s*:", " "),
     # "let X VERB" commands X's verb: "let the red block go down before blue" (must go down), "let nothing be
-    # placed on F" (nothing must be placed); "don't let anyone touch X" (do not touch X); "letting red go
-    # down first" (red going down first)
-    (
-        r"\b(?:do\s+not|never)\s+let\s+(?:anyone|anybody|any\s+(?:robot\s+)?arm|the\s+(?:robot\s+)?arms)\s+(?=touch\b)",
-        "do not ",
-    ),
+    # placed on F" (nothing must be placed); "letting red go down first" (red going down first)
     (rf"\blet\s+({_SUBJECT_NP})\s+(?={_BARE_VERB}\b)", r"\1 must "),
     (rf"\bletting\s+({_SUBJECT_NP})\s+go\b", r"\1 going"),
     # a group said in other words: "the whole lot of blocks" (all the blocks), "every single block", "each

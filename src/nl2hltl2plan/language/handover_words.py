@@ -127,7 +127,6 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\bwhile\s+(?:you|we)\s+are\s+at\s+it\b", "meanwhile"),
     (r"\bamongst\b", "among"),
     (r"\b(?:i|we)\s*would\s+like\s+(?:you\s+)?to\b", "please"),
-    (r"\b(?:i|we)\s+(?:want|need)\s+you\s+to\b", "please"),
     (r"\b(?:could|can|would|will)\s+you\s+(?:please\s+)?", "please "),
     (r"\blet\s*'?\s*s\b|\blet\s+us\b|\bgo\s+ahead\s+and\b", "please"),
     (r"\b(?:(?:at|in)\s+)?anytime\b|\bin\s+any\s+time\b", "at any time"),
@@ -157,8 +156,6 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (rf"^({STEP_NUMBER}){_RULE_LABEL}\s*:", r"\1"),
     # a completion marker as a heading: "when the transfer is done: yellow back to G"
     (rf"^\s*({AFTER_ALL})\s*:", r"\1 ,"),
-    # a sentence that goes on from the one before: "And the yellow block to the opposite side whenever."
-    (r"^\s*and\s*,?\s+", " "),
     # a rule's label after a comma, in a compressed heading: "Goal: ..., constraint: red before blue"
     (rf",\s*{_RULE_LABEL}\s*:", ","),
     (rf"^({STEP_NUMBER})(?:objectives?|goals?|tasks?|aims?|missions?|instructions?)\s*:", r"\1 please"),
@@ -303,17 +300,13 @@ REWRITES: tuple[tuple[str, str], ...] = (
     ),
     # one modal for obligation: "is to be / has to be / needs to be / ought to be placed" -> "must be placed"
     (r"\b(?:is|are|has|have|needs?|ought)\s+to\s+be\b", "must be"),
-    (r"\b(?:is|are)\s+not\s+to\s+be\b", "must not be"),
     (r"\b(?:is|are)\s+(then|first|also|finally|next|afterwards|later)\s+to\s+be\b", r"must \1 be"),
-    (r"\b(?:is|are)\s+to\s+have\b", "must have"),
-    (r"\b(?:is|are)\s+to\s+(stay|remain)\b", r"must \1"),
     # "must stay / remain untouched", "is to be left untouched": not touched
     (
         r"\b(?:must\s+|should\s+|shall\s+|will\s+)?(?:stay|remain|be\s+left|be\s+kept)\s+untouched\b",
         "must not be touched",
     ),
     (r"\bone\s+after\s+(?:one|other)\b", "one after another"),
-    (r"\bplease\s+to\b", "please"),
     (r"\bwont\b", "will not"),
     (r"\b(do|does|can|should|must|is|are)nt\b", r"\1 not"),  # "dont", "cant" without the apostrophe
     (r"\b(any\s+time|whenever)\s+(?:is|are)\s+(?:ok|okay|fine)\b", r"\1"),
@@ -411,7 +404,6 @@ REWRITES: tuple[tuple[str, str], ...] = (
     ),
     (r"\b(?:manipulators|grippers|end\s+effectors|robotic\s+arms)\b", "arms"),
     (r"\b(?:manipulator|gripper|end\s+effector|robotic\s+arm)\b", "arm"),
-    (r"\bbe\s+in\s+place\b", "be placed"),
     (r"\bin\s+(?:an|the|such\s+an)\s+order\s+(?:where|in\s+which|that|such\s+that)\b", ","),
     (r"\s*,?\s*\bsubject\s+to\s+the\s+(?:constraint|condition|rule|requirement)\s+that\b", ","),
     # "under no circumstances should an object be put on R": an object should never be put on R
@@ -488,7 +480,6 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\b(two|three|four|both|all|[2-9])\s+(block|cube|pillar|object|piece|item)\b", r"\1 \2s"),
     # "after all these done" (non-native, without "are")
     (r"\b(after\s+all\s+(?:of\s+)?(?:these|this|that))\s+done\b", r"\1 are done"),
-    (r"\bafter\s+all\s+that\b", "after all of that"),  # "and after all that, put ..."
     # "nobody is to touch X until ...": may not (a rule, as "nobody may touch")
     (
         r"\b(nobody|no\s+one|no\s+arm|no\s+robot)\s+(?:is|was)\s+to\s+(?=touch|pick|grab|handle|lift)",
