@@ -35,7 +35,7 @@ from nl2hltl2plan.language.learned.train import (
     text_faithful_train,
     text_slot_accuracy,
 )
-from nl2hltl2plan.suites.alfred.rank_check import family, top_share
+from nl2hltl2plan.suites.alfred.rank_check import family_cases, top_share
 
 COLUMNS = ("kind", "object", "receptacle", "container", "light", "sliced", "all")
 
@@ -68,13 +68,7 @@ def train_cases(cache: Path | None) -> tuple[list[RankCase], list[str]]:
     if cache and cache.exists():
         rows = json.loads(cache.read_text())
         return [RankCase(r[0], tuple((t, q) for t, q in r[1]), r[2]) for r in rows[0]], rows[1]
-    plain = load_model().without_ranker()
-    cases: list[RankCase] = []
-    groups: list[str] = []
-    for e in load_examples()["train"]:
-        found = ranking_cases(plain, [e])
-        cases += found
-        groups += [family(e)] * len(found)
+    cases, groups = family_cases()
     if cache:
         cache.write_text(json.dumps([[[c.clause, c.candidates, c.label] for c in cases], groups]))
     return cases, groups

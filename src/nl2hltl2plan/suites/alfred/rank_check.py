@@ -39,13 +39,9 @@ def top_share(cases: list[RankCase], ranker: TypeRanker | None) -> int:
     return right
 
 
-def cross_validation(folds: int = 5, seed: int = 0) -> tuple[int, int, int]:
-    """(cases, right by the slot model alone, right by a ranker fitted on the other folds' families)."""
-    try:
-        from sklearn.model_selection import GroupKFold
-    except ImportError as exc:
-        raise DataError("the ranking check needs scikit-learn: pip install scikit-learn") from exc
-
+def family_cases() -> tuple[list[RankCase], list[str]]:
+    """The ranking cases of ALFRED's train annotations (the slot model alone's candidates), each with its
+    task family (`family`), for folds that hold whole families out."""
     plain = load_model().without_ranker()
     cases: list[RankCase] = []
     groups: list[str] = []
@@ -53,6 +49,17 @@ def cross_validation(folds: int = 5, seed: int = 0) -> tuple[int, int, int]:
         found = ranking_cases(plain, [e])
         cases += found
         groups += [family(e)] * len(found)
+    return cases, groups
+
+
+def cross_validation(folds: int = 5, seed: int = 0) -> tuple[int, int, int]:
+    """(cases, right by the slot model alone, right by a ranker fitted on the other folds' families)."""
+    try:
+        from sklearn.model_selection import GroupKFold
+    except ImportError as exc:
+        raise DataError("the ranking check needs scikit-learn: pip install scikit-learn") from exc
+
+    cases, groups = family_cases()
     alone = ranked = 0
     for train_idx, test_idx in GroupKFold(folds).split(cases, groups=groups):
         ranker = TypeRanker.fit([cases[i] for i in train_idx], seed=seed)
