@@ -23,6 +23,7 @@ from nl2hltl2plan.language.grammar.frames import (
     same,
     treats_another_object,
     two_places,
+    two_places_unread,
 )
 from nl2hltl2plan.language.grammar.phrases import NP, tokens
 from nl2hltl2plan.language.grammar.sentences import Sentence
@@ -146,7 +147,7 @@ class DraftBuilder:
             unparsed.append(f"{c_text} (a choice between objects: say which one)")
             return True
         if places := next((w for it in fr.items if (w := two_places(it))), ""):
-            unparsed.append(f"{c_text} (two places it could go: {places}; say which)")
+            unparsed.append(two_places_unread(c_text, places))
             return True
         if fr.cls == "light" and not any(
             (it.obj is not None and it.obj.is_lamp()) or any(np.is_lamp() for _, np in it.pps)

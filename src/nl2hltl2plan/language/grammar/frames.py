@@ -281,6 +281,15 @@ def dest_of(item: Item, cls: str = "") -> NP | None:
 _PLACING = {"in", "into", "inside", "on", "onto"}
 
 
+TWO_PLACES = "two places it could go"
+
+
+def two_places_unread(clause: str, places: str) -> str:
+    """The grammar's refusal of a thing given two places to go; the learned model must not pick one
+    (`learned.inference` looks for `TWO_PLACES`)."""
+    return f"{clause} ({TWO_PLACES}: {places}; say which)"
+
+
 def two_places(item: Item) -> str:
     """ "put the CDs on the desk closest to the window in the safe": after its destination the item names
     another fixed place with a plain "in"/"on", not a step on the way ("to the sink and then the toilet")

@@ -9,7 +9,7 @@ from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.clauses import split_clauses
 from nl2hltl2plan.language.grammar.draft_tasks import Draft, TaskBuilder
 from nl2hltl2plan.language.grammar.drafts import incomplete, joins, merge_items
-from nl2hltl2plan.language.grammar.frames import Frame, parse_frame, two_places
+from nl2hltl2plan.language.grammar.frames import Frame, parse_frame, two_places, two_places_unread
 from nl2hltl2plan.language.grammar.phrases import NP, parse_np, tokens
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
 
@@ -196,7 +196,7 @@ def new_tasks_from_ref(ref: str, b: TaskBuilder, text: str) -> list[BaseTaskSpec
             continue
         fr = parse_frame(c_text, 0, "")
         if places := next((w for it in fr.items if (w := two_places(it))), ""):
-            unread.append(f"{c_text} (two places it could go: {places}; say which)")
+            unread.append(two_places_unread(c_text, places))
             continue
         _share_listed_destination(fr, c_text, b)
         for k, it in enumerate(fr.items):

@@ -14,7 +14,6 @@ reported as an `Ambiguity` with the candidates ranked.
 
 from __future__ import annotations
 
-import re
 from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
@@ -24,6 +23,7 @@ from nl2hltl2plan.errors import Nl2Hltl2PlanError, WorldError
 from nl2hltl2plan.language.accounting import account
 from nl2hltl2plan.language.grammar import OfflineParse
 from nl2hltl2plan.language.grammar import parse_instruction as grammar_parse
+from nl2hltl2plan.language.grammar.frames import TWO_PLACES
 from nl2hltl2plan.language.grammar.sentences import without_connective_to
 from nl2hltl2plan.language.grounding import AffordanceLookup, find_mentions
 from nl2hltl2plan.language.learned.ranker import TypeRanker
@@ -265,10 +265,6 @@ class ParseContext:
     model: SlotModel
 
 
-# the grammar's refusal of a thing that names two places to go ("two places it could go: ...; say which")
-_ASKS_WHICH = re.compile(r"; say which\)$")
-
-
 def grammar_first_reading(instruction: str, ctx: ParseContext) -> LearnedParse:
     """The grammar's structure, its clauses' slots filled and ordered by the slot model."""
     scene_types, policy, model = ctx.scene_types, ctx.policy, ctx.model
@@ -279,7 +275,7 @@ def grammar_first_reading(instruction: str, ctx: ParseContext) -> LearnedParse:
     unparsed = list(g.unparsed)
     # no clause the grammar reads: the whole text may still be one task, unless the grammar found two
     # places it could go ("on the desk ... in the safe": which one is a guess the model must not make)
-    whole = not drafts and bool(instruction.strip()) and not any(_ASKS_WHICH.search(u) for u in g.unparsed)
+    whole = not drafts and bool(instruction.strip()) and not any(TWO_PLACES in u for u in g.unparsed)
     if whole:
         drafts = [BaseTaskSpec(id=task_letter(0), text=instruction.strip(), kind="place", object=[])]
     preds = model.predict([d.text or instruction for d in drafts], scene_types)
