@@ -120,6 +120,16 @@ NEAR_MISSES = [
     (1, "The three blocks, move to the opposite side; the red block is put down ahead of the blue block."),
     # "first" with no clause before it nor a block after
     (6, "Red first. The three objects go to regions G, H and I, one apiece."),
+    # necessity, prohibition and framing words (h82): the order, the guard or a region changed
+    (1, "The idea is to move the three blocks to the opposite side, and the blue block is to be placed "
+     "before the red block."),
+    (4, "It is necessary to move the three blocks to the opposite regions. It is forbidden to touch the red "
+     "block until the blue block has been touched. After all of that, it is necessary to put the yellow "
+     "block back on region G."),
+    (3, "What I need is for the three pillars to be moved to regions E, F and G; it is forbidden to place "
+     "any object on regions H and I."),
+    (7, "What matters is that the red block is placed before the blue block. Stack the three blocks on "
+     "region I one after another, but nothing may be placed on regions F and G meanwhile."),
 ]
 
 
@@ -130,7 +140,8 @@ def test_development_batches_give_the_written_specs(batch, style):
 
 
 @pytest.mark.parametrize(
-    ("batch", "style"), [(b, s) for b in ("dev39", "dev40", "dev41", "dev42") for s in sorted(STYLES[b])]
+    ("batch", "style"),
+    [(b, s) for b in ("dev39", "dev40", "dev41", "dev42", "dev43") for s in sorted(STYLES[b])],
 )
 def test_later_development_batches_are_read_right_or_refused(batch, style):
     for task, text in STYLES[batch][style].items():
@@ -187,3 +198,23 @@ def test_words_that_carry_a_meaning_the_cues_do_not_model_are_refused():
     assert _restated(1, "3 blocks, opposite side") is None  # where they go, or where they are?
     assert _restated(1, "Move the three blocks to the opposite side unless red is there") is None
     assert _restated(2, "Put the red block on H, the blue block on I, and so on") is None
+
+
+def test_necessity_and_prohibition_words_are_modals_and_negations():
+    assert _restated(1, "It is necessary that the three blocks go to the opposite side") == (
+        "move the three blocks to the opposite side"
+    )
+    assert _restated(7, "It is forbidden to place any object on regions F, G and H") == (
+        "no object may be placed on regions F, G and H"
+    )
+    assert _restated(1, "It is not necessary to move the three blocks to the opposite side") is None
+    assert _restated(7, "Put any object on regions F, G and H") is None  # "any object" is no goal
+
+
+def test_but_adds_a_prohibition_only():
+    said = _restated(3, "Move the three pillars to regions E, F and G, but no object may go elsewhere")
+    assert said == (
+        "move the three blocks to regions E, F and G, and no object may be placed on any other region during "
+        "this period"
+    )
+    assert _restated(1, "Move the three blocks to the opposite side, but the red block first") is None

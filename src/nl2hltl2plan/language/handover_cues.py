@@ -54,6 +54,12 @@ _PHRASES: tuple[tuple[str, str], ...] = (
     (r"(?:has|have|having) been|(?:has|have|had)(?= (?:touched|picked|grasped|grabbed|handled|lifted)\b)",
      "PERFECT"),  # "until red has been touched", never a goal ("have been put")
     (r"(?:has|have) to|is it possible (?:to|that)|it is possible to", " "),  # a modal
+    # necessity, permission and framing said around the content: a modal ("it is required that X" is "X must")
+    (r"it is (?:necessary|required|essential|important|imperative) (?:to|that)|"
+     r"(?:the|my|our) (?:idea|plan|aim|intention) (?:here )?is (?:to|that)|"
+     r"what (?:i|we) (?:need|want) is(?: for| that)?|what (?:matters|counts) is(?: that)?", "must"),
+    (r"(?:it is )?(?:forbidden|prohibited|not (?:allowed|permitted))(?: to)?", "NEG"),  # a prohibition
+    (r"any objects?", "ANY"),  # "it is forbidden to place any object on ...": with a negation, no object
     (r"and so (?:on|forth)|etc|et cetera", "ETC"),  # more of the same: what?
     (r"(?:by )?no (?:A|arm)", "NEG ARM"),
     (r"(?:by )?(?:any|one) (?:of the )?(?:A|arm)|by A|A", "ARM"),
@@ -63,7 +69,7 @@ _WORDS = {
     "carried carries carrying transfer transferred transfers transferring bring brought brings get gets got "
     "take taken takes set sets setting deliver delivered send sent shift shifted relocate relocated end ends "
     "up down over across come comes distribute distributed return returned returns back lay laid travel "
-    "deposit deposited",
+    "deposit deposited stack stacked stacking",
     "TOUCH": "touch touched touches touching pick picked picking grasp grasped grab grabbed handle handled "
     "lift lifted",
     "NEG": "no not never nothing without none",
@@ -144,7 +150,10 @@ def _tokens(text: str) -> str:
 
 def _chunk(text: str) -> _Chunk | None:
     out = _Chunk()
-    for word in text.split():
+    words = text.split()
+    if words[:1] == ["but"] and words[1:2] and _CLASS.get(words[1]) == "NEG":
+        words = words[1:]  # "..., but no arm may touch ...": a contrast that adds a prohibition
+    for word in words:
         if re.fullmatch(r"B\d+", word):
             out.blocks.append(int(word[1:]))
             out.cues.append(word)
