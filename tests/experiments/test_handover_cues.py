@@ -218,3 +218,16 @@ def test_but_adds_a_prohibition_only():
         "this period"
     )
     assert _restated(1, "Move the three blocks to the opposite side, but the red block first") is None
+
+
+@pytest.mark.parametrize(
+    ("task_id", "text"),
+    [
+        (8, "First put the yellow block on region I, and finally put it on region G. Move the red and blue "
+         "blocks to any empty region at any time."),
+        (4, "First move the three blocks to the opposite regions, and finally put the yellow block back on "
+         "region G. No arm may touch the blue block until the red block has been touched."),
+    ],
+)
+def test_first_and_finally_with_nothing_between_are_two_steps(task_id, text):
+    assert_written_spec(task_id, text)  # the nested tree of "first X, then Y" (was a flat tree for task 8)

@@ -122,6 +122,9 @@ REWRITES: tuple[tuple[str, str], ...] = (
         r"\1 please",
     ),
     (r"(?<=s)'(?=\s|$)", ""),  # the blocks' positions -> the blocks positions
+    # "first X, and finally Y" with nothing between: a pair of steps, as "first X, and then Y" (the last of
+    # all the goals only where more than one goal comes before it)
+    (r"\bfirst\b([^,.;:]*),\s*(?:and\s+)?(?:finally|lastly)\b", r"first\1, and then"),
     (r"\bwhilst\b", "while"),
     # before "it" is read as a block: "while you're at it" is the period of the goals
     (r"\bwhile\s+(?:you|we)\s+are\s+at\s+it\b", "meanwhile"),
