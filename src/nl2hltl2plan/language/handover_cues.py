@@ -54,9 +54,9 @@ _PHRASES: tuple[tuple[str, str], ...] = (
     (r"(?:has|have|having) been|(?:has|have|had)(?= (?:touched|picked|grasped|grabbed|handled|lifted)\b)",
      "PERFECT"),  # "until red has been touched", never a goal ("have been put")
     (r"(?:has|have) to|is it possible (?:to|that)|it is possible to", " "),  # a modal
-    # necessity, permission and framing said around the content: a modal ("it is required that X" is "X must")
-    (r"it is (?:necessary|required|essential|important|imperative) (?:to|that)|"
-     r"(?:the|my|our) (?:idea|plan|aim|intention) (?:here )?is (?:to|that)|"
+    # framing said around the content is a modal: "the idea is to move X" is "move X", "what matters is that
+    # red is placed before blue" is "red must be placed before blue" ("it is required that" is a rewrite)
+    (r"(?:the|my|our) (?:idea|plan|aim|intention) (?:here )?is (?:to|that)|"
      r"what (?:i|we) (?:need|want) is(?: for| that)?|what (?:matters|counts) is(?: that)?", "must"),
     (r"(?:it is )?(?:forbidden|prohibited|not (?:allowed|permitted))(?: to)?", "NEG"),  # a prohibition
     (r"any objects?", "ANY"),  # "it is forbidden to place any object on ...": with a negation, no object
