@@ -231,3 +231,11 @@ def test_but_adds_a_prohibition_only():
 )
 def test_first_and_finally_with_nothing_between_are_two_steps(task_id, text):
     assert_written_spec(task_id, text)  # the nested tree of "first X, then Y" (was a flat tree for task 8)
+
+
+def test_a_region_kept_clear_of_objects_or_of_one_block():
+    start = "The red block should be placed before the blue block. Place the three blocks on region I one "
+    assert_written_spec(7, start + "after another, and keep regions F, G and H empty of new objects meanwhile.")
+    # of one block only: a prohibition on that block (was read as one on every object)
+    clear_of_red = "after another, and keep regions F, G and H clear of the red block meanwhile."
+    assert_not_the_written_spec(7, start + clear_of_red)

@@ -59,6 +59,7 @@ _PHRASES: tuple[tuple[str, str], ...] = (
     (r"(?:the|my|our) (?:idea|plan|aim|intention) (?:here )?is (?:to|that)|"
      r"what (?:i|we) (?:need|want) is(?: for| that)?|what (?:matters|counts) is(?: that)?", "must"),
     (r"(?:it is )?(?:forbidden|prohibited|not (?:allowed|permitted))(?: to)?", "NEG"),  # a prohibition
+    (r"(?:empty|free|clear) of (?:new |any |other )?", "CLEAR"),  # "empty of new objects": of every block
     (r"any objects?", "ANY"),  # "it is forbidden to place any object on ...": with a negation, no object
     (r"and so (?:on|forth)|etc|et cetera", "ETC"),  # more of the same: what?
     (r"(?:by )?no (?:A|arm)", "NEG ARM"),
@@ -362,8 +363,10 @@ class _Reading:
     def _kept(self, c: _Chunk) -> bool:
         """'keep regions F, G and H empty', 'F, G and H must stay clear', 'F, G, H empty meanwhile' (without
         a verb of keeping, a modal or a period, 'F, G, H empty' may say how they are now: refused)."""
-        if c.blocks or not c.places or c.has("BEFORE", "AFTER", "UNTIL", "THEN", "FIRST"):
+        if not c.places or c.has("BEFORE", "AFTER", "UNTIL", "THEN", "FIRST"):
             return False
+        if any(self.blocks(k) != self.scene.blocks for k in c.blocks):
+            return False  # "keep F clear of the red block": a prohibition on some blocks only
         if not c.has("CLEAR") or not (c.has("KEEP", "PERIOD") or c.modal):
             return False
         return self._forbid(c, [self.m.places[k] for k in c.places])
