@@ -235,7 +235,8 @@ def test_first_and_finally_with_nothing_between_are_two_steps(task_id, text):
 
 def test_a_region_kept_clear_of_objects_or_of_one_block():
     start = "The red block should be placed before the blue block. Place the three blocks on region I one "
-    assert_written_spec(7, start + "after another, and keep regions F, G and H empty of new objects meanwhile.")
+    empty_of_new = "after another, and keep regions F, G and H empty of new objects while we do that."
+    assert_written_spec(7, start + empty_of_new)
     # of one block only: a prohibition on that block (was read as one on every object)
     clear_of_red = "after another, and keep regions F, G and H clear of the red block meanwhile."
     assert_not_the_written_spec(7, start + clear_of_red)
