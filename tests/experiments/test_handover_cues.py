@@ -240,3 +240,8 @@ def test_a_region_kept_clear_of_objects_or_of_one_block():
     # of one block only: a prohibition on that block (was read as one on every object)
     clear_of_red = "after another, and keep regions F, G and H clear of the red block meanwhile."
     assert_not_the_written_spec(7, start + clear_of_red)
+
+
+def test_the_other_regions_as_a_heading_wait_for_their_prohibition():
+    assert _restated(3, "Other regions: no objects placed") == "no object may be placed on any other region"
+    assert _restated(3, "Other regions: the three pillars go there") is None  # no place a block can go to

@@ -221,6 +221,10 @@ class _Reading:
         places = [self.m.places[k] for k in c.places]
         if len(places) == 2 and (places[0].kind, places[0].regions) == (places[1].kind, places[1].regions):
             places = places[:1]  # "to regions E, F and G, on the side of arms a and b": one place said twice
+        if [p.kind for p in places] == ["complement"] and c.cues == [f"P{c.places[0]}"]:
+            # "other regions: no objects placed": the place waits for its prohibition
+            self.place, self.place_towards = places, False
+            return True
         if any(p.kind not in ("regions", "opposite", "away") for p in places):
             return False
         if c.has("BEFORE", "AFTER", "UNTIL", "ORDERHEAD", "THERE", "ARM", "ANY", "RECEIVE"):
