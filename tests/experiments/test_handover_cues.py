@@ -1,5 +1,6 @@
 """Issue 24, h78: the form-independent reading of a handover sentence (`language/handover_cues.py`), the
-fallback where the form reader refuses. The development batch `dev38` (fronted objects and passives,
+fallback where the form reader refuses (h82: `dev43`, `dev44`, and the held-out `validation13` and
+`validation14`, read right or refused). The development batch `dev38` (fronted objects and passives,
 checklists, questions) must give the written specs, `dev39`-`dev42` the written spec or a refusal; near
 misses that change one meaning (an order or a guard reversed, a region or a timing left out, a scene said
 without a verb, a report of what was done, "and so on", a pronoun of the other number) must be refused or
@@ -141,9 +142,18 @@ def test_development_batches_give_the_written_specs(batch, style):
 
 @pytest.mark.parametrize(
     ("batch", "style"),
-    [(b, s) for b in ("dev39", "dev40", "dev41", "dev42", "dev43") for s in sorted(STYLES[b])],
+    [(b, s) for b in ("dev39", "dev40", "dev41", "dev42", "dev43", "dev44") for s in sorted(STYLES[b])],
 )
 def test_later_development_batches_are_read_right_or_refused(batch, style):
+    for task, text in STYLES[batch][style].items():
+        _read_right_or_refused(int(task), text)
+
+
+@pytest.mark.parametrize(
+    ("batch", "style"), [(b, s) for b in ("validation13", "validation14") for s in sorted(STYLES[b])]
+)
+def test_held_out_batches_are_read_right_or_refused(batch, style):
+    """h78's and h82's held-out batches, each measured at first contact and at the end of its round."""
     for task, text in STYLES[batch][style].items():
         _read_right_or_refused(int(task), text)
 
