@@ -129,6 +129,8 @@ NEAR_MISSES = [
      "block back on region G."),
     (3, "What I need is for the three pillars to be moved to regions E, F and G; it is forbidden to place "
      "any object on regions H and I."),
+    (7, "Place the three blocks on region I one after another, red before blue, and it is forbidden to place "
+     "any object on regions F and G during this period."),
     (7, "What matters is that the red block is placed before the blue block. Stack the three blocks on "
      "region I one after another, but nothing may be placed on regions F and G meanwhile."),
 ]
@@ -255,3 +257,11 @@ def test_a_region_kept_clear_of_objects_or_of_one_block():
 def test_the_other_regions_as_a_heading_wait_for_their_prohibition():
     assert _restated(3, "Other regions: no objects placed") == "no object may be placed on any other region"
     assert _restated(3, "Other regions: the three pillars go there") is None  # no place a block can go to
+
+
+def test_it_is_forbidden_to_is_a_prohibition_before_it_is_read_as_a_block():
+    assert_written_spec(
+        7,
+        "Place the three blocks on region I one after another, red before blue, and it is forbidden to place "
+        "any object on regions F, G and H during this period.",
+    )

@@ -264,6 +264,8 @@ REWRITES: tuple[tuple[str, str], ...] = (
     ),
     (r"\bthe\s+(?:desired\s+)?(?:outcome|result|end\s+state)\s+(?:is|should\s+be)\s+that\b", " "),
     (r"\bit\s+is\s+(?:necessary|required|essential|important)\s+to\b", "please"),
+    # a prohibition, before its "it" is read as a block: "it is forbidden to place any object on F"
+    (r"\bit\s+is\s+(?:forbidden|prohibited|not\s+allowed|not\s+permitted)\s+to\b", "do not"),
     (r"\bno\s+placements?\s+(?=outside|on|in|onto|anywhere)", "nothing placed "),
     (rf"\bend\s+up\s+(?={SWAPPED}\b)", "be "),
     (
