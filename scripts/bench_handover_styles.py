@@ -2,7 +2,7 @@
 eight Table III instructions must give the written specs).
 
     PYTHONPATH=src python scripts/bench_handover_styles.py [--batch NAME] [--verbose] [--file F]
-    (NAME: a batch of the file: dev, dev2 ... dev42, validation, validation2 ... validation13, or 'all' for a
+    (NAME: a batch of the file: dev, dev2 ... dev44, validation, validation2 ... validation14, or 'all' for a
     row per batch; default dev)
     (default F: tests/experiments/handover_styles_session10.json)
 

@@ -40,7 +40,6 @@ STILL_REFUSED = {
     "The red block is to be moved to the opposite side before the blue block, and the yellow block is to "
     "be moved there as well.",
     "- three blocks\n- regions H, I and J\n- one block per region",
-    "stack nothing on F, G or H meanwhile; put the 3 blocks on I one after another, red before blue",
     # dev4: statements of purpose or of the scene ("on top of the plan", "each other's spots", "a drop-off",
     # "two stops", "reserved")
     "We want the pillars back at regions E, F and G. While moving them, keep every other region empty, "

@@ -1,5 +1,6 @@
 """Issue 24, h78: the form-independent reading of a handover sentence (`language/handover_cues.py`), the
-fallback where the form reader refuses. The development batch `dev38` (fronted objects and passives,
+fallback where the form reader refuses (h82: `dev43`, `dev44`, and the held-out `validation13` and
+`validation14`, read right or refused). The development batch `dev38` (fronted objects and passives,
 checklists, questions) must give the written specs, `dev39`-`dev42` the written spec or a refusal; near
 misses that change one meaning (an order or a guard reversed, a region or a timing left out, a scene said
 without a verb, a report of what was done, "and so on", a pronoun of the other number) must be refused or
@@ -120,6 +121,18 @@ NEAR_MISSES = [
     (1, "The three blocks, move to the opposite side; the red block is put down ahead of the blue block."),
     # "first" with no clause before it nor a block after
     (6, "Red first. The three objects go to regions G, H and I, one apiece."),
+    # necessity, prohibition and framing words (h82): the order, the guard or a region changed
+    (1, "The idea is to move the three blocks to the opposite side, and the blue block is to be placed "
+     "before the red block."),
+    (4, "It is necessary to move the three blocks to the opposite regions. It is forbidden to touch the red "
+     "block until the blue block has been touched. After all of that, it is necessary to put the yellow "
+     "block back on region G."),
+    (3, "What I need is for the three pillars to be moved to regions E, F and G; it is forbidden to place "
+     "any object on regions H and I."),
+    (7, "Place the three blocks on region I one after another, red before blue, and it is forbidden to place "
+     "any object on regions F and G during this period."),
+    (7, "What matters is that the red block is placed before the blue block. Stack the three blocks on "
+     "region I one after another, but nothing may be placed on regions F and G meanwhile."),
 ]
 
 
@@ -130,9 +143,19 @@ def test_development_batches_give_the_written_specs(batch, style):
 
 
 @pytest.mark.parametrize(
-    ("batch", "style"), [(b, s) for b in ("dev39", "dev40", "dev41", "dev42") for s in sorted(STYLES[b])]
+    ("batch", "style"),
+    [(b, s) for b in ("dev39", "dev40", "dev41", "dev42", "dev43", "dev44") for s in sorted(STYLES[b])],
 )
 def test_later_development_batches_are_read_right_or_refused(batch, style):
+    for task, text in STYLES[batch][style].items():
+        _read_right_or_refused(int(task), text)
+
+
+@pytest.mark.parametrize(
+    ("batch", "style"), [(b, s) for b in ("validation13", "validation14") for s in sorted(STYLES[b])]
+)
+def test_held_out_batches_are_read_right_or_refused(batch, style):
+    """h78's and h82's held-out batches, each measured at first contact and at the end of its round."""
     for task, text in STYLES[batch][style].items():
         _read_right_or_refused(int(task), text)
 
@@ -187,3 +210,58 @@ def test_words_that_carry_a_meaning_the_cues_do_not_model_are_refused():
     assert _restated(1, "3 blocks, opposite side") is None  # where they go, or where they are?
     assert _restated(1, "Move the three blocks to the opposite side unless red is there") is None
     assert _restated(2, "Put the red block on H, the blue block on I, and so on") is None
+
+
+def test_necessity_and_prohibition_words_are_modals_and_negations():
+    assert _restated(1, "It is necessary that the three blocks go to the opposite side") == (
+        "move the three blocks to the opposite side"
+    )
+    assert _restated(7, "It is forbidden to place any object on regions F, G and H") == (
+        "no object may be placed on regions F, G and H"
+    )
+    assert _restated(1, "It is not necessary to move the three blocks to the opposite side") is None
+    assert _restated(7, "Put any object on regions F, G and H") is None  # "any object" is no goal
+
+
+def test_but_adds_a_prohibition_only():
+    said = _restated(3, "Move the three pillars to regions E, F and G, but no object may go elsewhere")
+    assert said == (
+        "move the three blocks to regions E, F and G, and no object may be placed on any other region during "
+        "this period"
+    )
+    assert _restated(1, "Move the three blocks to the opposite side, but the red block first") is None
+
+
+@pytest.mark.parametrize(
+    ("task_id", "text"),
+    [
+        (8, "First put the yellow block on region I, and finally put it on region G. Move the red and blue "
+         "blocks to any empty region at any time."),
+        (4, "First move the three blocks to the opposite regions, and finally put the yellow block back on "
+         "region G. No arm may touch the blue block until the red block has been touched."),
+    ],
+)
+def test_first_and_finally_with_nothing_between_are_two_steps(task_id, text):
+    assert_written_spec(task_id, text)  # the nested tree of "first X, then Y" (was a flat tree for task 8)
+
+
+def test_a_region_kept_clear_of_objects_or_of_one_block():
+    start = "The red block should be placed before the blue block. Place the three blocks on region I one "
+    empty_of_new = "after another, and keep regions F, G and H empty of new objects while we do that."
+    assert_written_spec(7, start + empty_of_new)
+    # of one block only: a prohibition on that block (was read as one on every object)
+    clear_of_red = "after another, and keep regions F, G and H clear of the red block meanwhile."
+    assert_not_the_written_spec(7, start + clear_of_red)
+
+
+def test_the_other_regions_as_a_heading_wait_for_their_prohibition():
+    assert _restated(3, "Other regions: no objects placed") == "no object may be placed on any other region"
+    assert _restated(3, "Other regions: the three pillars go there") is None  # no place a block can go to
+
+
+def test_it_is_forbidden_to_is_a_prohibition_before_it_is_read_as_a_block():
+    assert_written_spec(
+        7,
+        "Place the three blocks on region I one after another, red before blue, and it is forbidden to place "
+        "any object on regions F, G and H during this period.",
+    )

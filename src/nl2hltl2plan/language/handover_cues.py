@@ -54,6 +54,13 @@ _PHRASES: tuple[tuple[str, str], ...] = (
     (r"(?:has|have|having) been|(?:has|have|had)(?= (?:touched|picked|grasped|grabbed|handled|lifted)\b)",
      "PERFECT"),  # "until red has been touched", never a goal ("have been put")
     (r"(?:has|have) to|is it possible (?:to|that)|it is possible to", " "),  # a modal
+    # framing said around the content is a modal: "the idea is to move X" is "move X", "what matters is that
+    # red is placed before blue" is "red must be placed before blue" ("it is required that" is a rewrite)
+    (r"(?:the|my|our) (?:idea|plan|aim|intention) (?:here )?is (?:to|that)|"
+     r"what (?:i|we) (?:need|want) is(?: for| that)?|what (?:matters|counts) is(?: that)?", "must"),
+    (r"(?:it is )?(?:forbidden|prohibited|not (?:allowed|permitted))(?: to)?", "NEG"),  # a prohibition
+    (r"(?:empty|free|clear) of (?:new |any |other )?", "CLEAR"),  # "empty of new objects": of every block
+    (r"any objects?", "ANY"),  # "it is forbidden to place any object on ...": with a negation, no object
     (r"and so (?:on|forth)|etc|et cetera", "ETC"),  # more of the same: what?
     (r"(?:by )?no (?:A|arm)", "NEG ARM"),
     (r"(?:by )?(?:any|one) (?:of the )?(?:A|arm)|by A|A", "ARM"),
@@ -63,7 +70,7 @@ _WORDS = {
     "carried carries carrying transfer transferred transfers transferring bring brought brings get gets got "
     "take taken takes set sets setting deliver delivered send sent shift shifted relocate relocated end ends "
     "up down over across come comes distribute distributed return returned returns back lay laid travel "
-    "deposit deposited",
+    "deposit deposited stack stacked stacking",
     "TOUCH": "touch touched touches touching pick picked picking grasp grasped grab grabbed handle handled "
     "lift lifted",
     "NEG": "no not never nothing without none",
@@ -144,7 +151,10 @@ def _tokens(text: str) -> str:
 
 def _chunk(text: str) -> _Chunk | None:
     out = _Chunk()
-    for word in text.split():
+    words = text.split()
+    if words[:1] == ["but"] and words[1:2] and _CLASS.get(words[1]) == "NEG":
+        words = words[1:]  # "..., but no arm may touch ...": a contrast that adds a prohibition
+    for word in words:
         if re.fullmatch(r"B\d+", word):
             out.blocks.append(int(word[1:]))
             out.cues.append(word)
@@ -211,6 +221,10 @@ class _Reading:
         places = [self.m.places[k] for k in c.places]
         if len(places) == 2 and (places[0].kind, places[0].regions) == (places[1].kind, places[1].regions):
             places = places[:1]  # "to regions E, F and G, on the side of arms a and b": one place said twice
+        if [p.kind for p in places] == ["complement"] and c.cues == [f"P{c.places[0]}"]:
+            # "other regions: no objects placed": the place waits for its prohibition
+            self.place, self.place_towards = places, False
+            return True
         if any(p.kind not in ("regions", "opposite", "away") for p in places):
             return False
         if c.has("BEFORE", "AFTER", "UNTIL", "ORDERHEAD", "THERE", "ARM", "ANY", "RECEIVE"):
@@ -353,8 +367,10 @@ class _Reading:
     def _kept(self, c: _Chunk) -> bool:
         """'keep regions F, G and H empty', 'F, G and H must stay clear', 'F, G, H empty meanwhile' (without
         a verb of keeping, a modal or a period, 'F, G, H empty' may say how they are now: refused)."""
-        if c.blocks or not c.places or c.has("BEFORE", "AFTER", "UNTIL", "THEN", "FIRST"):
+        if not c.places or c.has("BEFORE", "AFTER", "UNTIL", "THEN", "FIRST"):
             return False
+        if any(self.blocks(k) != self.scene.blocks for k in c.blocks):
+            return False  # "keep F clear of the red block": a prohibition on some blocks only
         if not c.has("CLEAR") or not (c.has("KEEP", "PERIOD") or c.modal):
             return False
         return self._forbid(c, [self.m.places[k] for k in c.places])

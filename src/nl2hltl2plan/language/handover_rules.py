@@ -290,7 +290,7 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
     # "regions F, G and H must stay empty (meanwhile)", "keep F, G and H free": nothing is put there
     must = r"(?:(?:must|should|will|shall|has\s+to|have\s+to|needs?\s+to)\s+)?"
     stay = rf"{must}(?:stay|remain|be\s+kept|be\s+left)"
-    free = rf"{EMPTY}(?:\s+(?:of\s+)?B\d+)?"
+    free = rf"{EMPTY}(?:\s+(?:of\s+)?B(?P<b>\d+))?"  # "clear of the red block": of that block only
     m.sub(rf"\bP(?P<p>\d+)\s+{stay}\s+{free}{PERIOD}", add)
     m.sub(rf"\b(?:keep|leave)\s+P(?P<p>\d+)\s+{free}{PERIOD}", add)
     m.sub(rf"(?:\bwith\s+)?\bP(?P<p>\d+)\s+(?:kept|left)\s+{free}{PERIOD}", add)  # "with F, G, H kept empty"

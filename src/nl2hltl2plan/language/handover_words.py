@@ -122,6 +122,9 @@ REWRITES: tuple[tuple[str, str], ...] = (
         r"\1 please",
     ),
     (r"(?<=s)'(?=\s|$)", ""),  # the blocks' positions -> the blocks positions
+    # "first X, and finally Y" with nothing between: a pair of steps, as "first X, and then Y" (the last of
+    # all the goals only where more than one goal comes before it)
+    (r"\bfirst\b([^,.;:]*),\s*(?:and\s+)?(?:finally|lastly)\b", r"first\1, and then"),
     (r"\bwhilst\b", "while"),
     # before "it" is read as a block: "while you're at it" is the period of the goals
     (r"\bwhile\s+(?:you|we)\s+are\s+at\s+it\b", "meanwhile"),
@@ -261,6 +264,8 @@ REWRITES: tuple[tuple[str, str], ...] = (
     ),
     (r"\bthe\s+(?:desired\s+)?(?:outcome|result|end\s+state)\s+(?:is|should\s+be)\s+that\b", " "),
     (r"\bit\s+is\s+(?:necessary|required|essential|important)\s+to\b", "please"),
+    # a prohibition, before its "it" is read as a block: "it is forbidden to place any object on F"
+    (r"\bit\s+is\s+(?:forbidden|prohibited|not\s+allowed|not\s+permitted)\s+to\b", "do not"),
     (r"\bno\s+placements?\s+(?=outside|on|in|onto|anywhere)", "nothing placed "),
     (rf"\bend\s+up\s+(?={SWAPPED}\b)", "be "),
     (
