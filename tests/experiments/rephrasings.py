@@ -715,7 +715,8 @@ VALID_H83: dict[int, list[str]] = {
         "apple onto the green plate, red apple onto the pink plate.",
         "The blue plate is for the carrot, the yellow plate is for the orange, the green plate is for the "
         "green apple and the pink plate is for the red apple. Order is not important.",
-        "cn u put carrot on blue plate, orange on yellow plate, green apple on green plate, red apple on pink "
+        "cn u put carrot on blue plate, orange on yellow plate, green apple on green plate, red "
+        "apple on pink "
         "plate. any order thx"],
     4: ["Phase one: the green apple and the orange on the yellow plate, either order. Phase two: the carrot "
         "and the red apple on the blue plate, either order.",
@@ -726,4 +727,36 @@ VALID_H83: dict[int, list[str]] = {
         "Fill the yellow plate with the green apple and the orange, and when that's done, fill the blue "
         "plate with the carrot and the red apple.",
         "ok first thing green apple and orange onto yellow plate, next carrot and red apple onto blue plate"],
+}
+
+# Issue 28 (h83): rephrasings for developing h83's rules (read per sentence): symbols for "goes to", fillers,
+# sign-offs and subject lines, "lives on" / "is for", "until", and voices from chat, notes and lists.
+DEV_H83: dict[int, list[str]] = {
+    1: ["Remember: the orange on the yellow plate and the green apple on the blue plate.",
+        "so like, uh, the green apple on the blue plate and the orange on the yellow plate",
+        "- orange \u2192 yellow plate\n- green apple \u2192 blue plate",
+        "Hi! Please put the green apple on the blue plate and the orange on the yellow plate. Thanks, Jo",
+        "The blue plate is for the green apple and the yellow plate is for the orange."],
+    2: ["Re: tidying\nPlease put the red apple on the blue plate, the orange on the yellow plate "
+        "and the green "
+        "apple on the pink plate, any order. Regards, Kim",
+        "red apple \u2192 blue plate; orange \u2192 yellow plate; green apple \u2192 pink plate (any order)",
+        "u can put the green apple on the pink plate, the orange on the yellow plate and the red "
+        "apple on the "
+        "blue plate in any order",
+        "Your task: orange on the yellow plate, red apple on the blue plate, green apple on the pink plate. "
+        "Any order."],
+    3: ["The carrot lives on the blue plate, the orange on the yellow plate, the green apple on the green "
+        "plate and the red apple on the pink plate; any order.",
+        "Could the carrot go onto the blue plate, the orange onto the yellow plate, the green apple onto the "
+        "green plate and the red apple onto the pink plate? Any order is fine, thanks!",
+        "um carrot on blue plate orange on yellow plate green apple on green plate red apple on pink plate "
+        "any order"],
+    4: ["Leave the blue plate alone until the green apple and the orange are on the yellow plate; then put "
+        "the carrot and the red apple on the blue plate.",
+        "Stage one: the green apple and the orange onto the yellow plate. Stage two: the carrot and the red "
+        "apple onto the blue plate.",
+        "first green apple and orange onto yellow plate, then carrot and red apple onto blue plate",
+        "Fill the yellow plate with the orange and the green apple, then fill the blue plate with the red "
+        "apple and the carrot."],
 }
