@@ -530,3 +530,9 @@ def test_a_colour_with_one_names_the_only_thing_of_that_colour():
     assert _reading(text) == _ORANGE_GREEN
     # "the green one": the green apple or the green plate, never guessed
     assert _reading("Put the orange on the yellow one and the carrot on the green one.") is None
+
+
+def test_one_thing_per_plate_is_a_heading_the_pairs_must_keep():
+    text = "Each plate gets one thing: yellow plate the orange, blue plate the green apple. Any order."
+    assert _reading(text) == _ORANGE_GREEN
+    assert _reading("Each plate gets one thing: yellow plate the orange, yellow plate the green apple.") is None
