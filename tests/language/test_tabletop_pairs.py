@@ -535,4 +535,5 @@ def test_a_colour_with_one_names_the_only_thing_of_that_colour():
 def test_one_thing_per_plate_is_a_heading_the_pairs_must_keep():
     text = "Each plate gets one thing: yellow plate the orange, blue plate the green apple. Any order."
     assert _reading(text) == _ORANGE_GREEN
-    assert _reading("Each plate gets one thing: yellow plate the orange, yellow plate the green apple.") is None
+    two_on_one = "Each plate gets one thing: yellow plate the orange, yellow plate the green apple."
+    assert _reading(two_on_one) is None
