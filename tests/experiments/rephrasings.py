@@ -685,3 +685,78 @@ DEV5_H79: dict[int, list[str]] = {
         "Green apple and orange onto the yellow plate, then, and only then, carrot and red apple onto the"
         " blue plate."],
 }
+
+# Issue 28 (h83): held-out rephrasings, written and committed before any h83 rule, in voices no older batch
+# uses (a parent to a child, a voice transcript with fillers, a bullet list with arrows, an e-mail with a
+# subject and a sign-off, a text message with abbreviations, a recipe, "X lives on Y", "the plate is for X",
+# phases, "don't touch ... until ...", "fill the plate with ..."); measured once on first contact and once at
+# the end (scripts/tabletop_styles.py --batch VALID_H83), never read per sentence between.
+VALID_H83: dict[int, list[str]] = {
+    1: ["Don't forget: green apple on the blue plate and orange on the yellow plate.",
+        "ok so um put the green apple on the blue plate and uh the orange on the yellow plate",
+        "Could we have the green apple on the blue plate and the orange on the yellow plate, please?",
+        "\u2022 green apple \u2192 blue plate\n\u2022 orange \u2192 yellow plate",
+        "Kiddo, the green apple lives on the blue plate and the orange lives on the yellow plate, can you "
+        "fix that?"],
+    2: ["Subject: plates\nHi robot, please move the green apple to the pink plate, the orange to the yellow "
+        "plate and the red apple to the blue plate. Do them in whatever order suits you. Best, Sam",
+        "Your job: red apple on the blue plate, green apple on the pink plate, orange on the yellow plate; "
+        "the sequence is your call.",
+        "If you could drop the orange onto the yellow plate, the red apple onto the blue plate and the green "
+        "apple onto the pink plate, that'd be great - any order is fine.",
+        "green apple \u2192 pink plate, orange \u2192 yellow plate, red apple \u2192 blue plate. order: any",
+        "The green apple lives on the pink plate, the orange on the yellow plate and the red apple on the "
+        "blue plate. Tidy them up in any order."],
+    3: ["Recipe for a tidy table: carrot on the blue plate, orange on the yellow plate, green apple on the "
+        "green plate, red apple on the pink plate. Mix up the order as you please.",
+        "Quick one: could the carrot land on the blue plate, the orange on the yellow plate, the green apple "
+        "on the green plate and the red apple on the pink plate? Any order works.",
+        "Four moves, no particular order: carrot onto the blue plate, orange onto the yellow plate, green "
+        "apple onto the green plate, red apple onto the pink plate.",
+        "The blue plate is for the carrot, the yellow plate is for the orange, the green plate is for the "
+        "green apple and the pink plate is for the red apple. Order is not important.",
+        "cn u put carrot on blue plate, orange on yellow plate, green apple on green plate, red "
+        "apple on pink "
+        "plate. any order thx"],
+    4: ["Phase one: the green apple and the orange on the yellow plate, either order. Phase two: the carrot "
+        "and the red apple on the blue plate, either order.",
+        "Don't touch the blue plate until the green apple and the orange are on the yellow plate. Then put "
+        "the carrot and the red apple on the blue plate.",
+        "The green apple and the orange go on the yellow plate first; only then do the carrot and the red "
+        "apple go on the blue plate.",
+        "Fill the yellow plate with the green apple and the orange, and when that's done, fill the blue "
+        "plate with the carrot and the red apple.",
+        "ok first thing green apple and orange onto yellow plate, next carrot and red apple onto blue plate"],
+}
+
+# Issue 28 (h83): rephrasings for developing h83's rules (read per sentence): symbols for "goes to", fillers,
+# sign-offs and subject lines, "lives on" / "is for", "until", and voices from chat, notes and lists.
+DEV_H83: dict[int, list[str]] = {
+    1: ["Remember: the orange on the yellow plate and the green apple on the blue plate.",
+        "so like, uh, the green apple on the blue plate and the orange on the yellow plate",
+        "- orange \u2192 yellow plate\n- green apple \u2192 blue plate",
+        "Hi! Please put the green apple on the blue plate and the orange on the yellow plate. Thanks, Jo",
+        "The blue plate is for the green apple and the yellow plate is for the orange."],
+    2: ["Re: tidying\nPlease put the red apple on the blue plate, the orange on the yellow plate "
+        "and the green "
+        "apple on the pink plate, any order. Regards, Kim",
+        "red apple \u2192 blue plate; orange \u2192 yellow plate; green apple \u2192 pink plate (any order)",
+        "u can put the green apple on the pink plate, the orange on the yellow plate and the red "
+        "apple on the "
+        "blue plate in any order",
+        "Your task: orange on the yellow plate, red apple on the blue plate, green apple on the pink plate. "
+        "Any order."],
+    3: ["The carrot lives on the blue plate, the orange on the yellow plate, the green apple on the green "
+        "plate and the red apple on the pink plate; any order.",
+        "Could the carrot go onto the blue plate, the orange onto the yellow plate, the green apple onto the "
+        "green plate and the red apple onto the pink plate? Any order is fine, thanks!",
+        "um carrot on blue plate orange on yellow plate green apple on green plate red apple on pink plate "
+        "any order"],
+    4: ["Leave the blue plate alone until the green apple and the orange are on the yellow plate; then put "
+        "the carrot and the red apple on the blue plate.",
+        "Stage one: the green apple and the orange onto the yellow plate. Stage two: the carrot and the red "
+        "apple onto the blue plate.",
+        "first green apple and orange onto yellow plate, then carrot and red apple onto blue plate",
+        "Fill the yellow plate with the orange and the green apple, then fill the blue plate with the red "
+        "apple and the carrot."],
+}

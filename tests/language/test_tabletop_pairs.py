@@ -488,3 +488,52 @@ def test_a_plate_said_again_after_its_objects_is_the_same_topic_in_a_longer_text
     same_plate = ([("GreenApple", "BluePlate"), ("Orange", "BluePlate")], [])
     assert _reading("The blue plate gets the green apple and the blue plate gets the orange.") == same_plate
     assert _reading("put the green apple on the blue plate, the orange on the blue plate") == same_plate
+
+
+_ORANGE_GREEN = ([("GreenApple", "BluePlate"), ("Orange", "YellowPlate")], [])
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Re: tidying\nPlease put the orange on the yellow plate and the green apple on the blue plate.",
+        "Please put the orange on the yellow plate and the green apple on the blue plate. Regards,\nKim",
+        "Don't forget to put the orange on the yellow plate and the green apple on the blue plate.",
+        "If you could move the orange to the yellow plate and the green apple to the blue plate, "
+        "that would be "
+        "lovely.",
+        "The orange lives on the yellow plate and the green apple lives on the blue plate, can you fix that?",
+        "The orange lives on the yellow plate and the green apple on the blue plate. Tidy them up "
+        "in any order.",
+    ],
+)
+def test_a_letters_frame_a_reminder_and_a_polite_condition_carry_no_task(text):
+    assert _reading(text) == _ORANGE_GREEN
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # a subject line that says an order, or a sign-off whose "name" is an object, is no frame
+        "Re: first the yellow plate\nPut the orange on the yellow plate and the green apple on the "
+        "blue plate.",
+        # a condition that is no courtesy ("if you can X, Y"): not read as a request
+        "If you can put the orange on the yellow plate, put the green apple on the blue plate.",
+    ],
+)
+def test_frames_that_say_more_than_courtesy_are_not_dropped(text):
+    assert _reading(text) is None
+
+
+def test_a_colour_with_one_names_the_only_thing_of_that_colour():
+    text = "could you sort out the plates - orange goes to the yellow one, green apple to the blue one"
+    assert _reading(text) == _ORANGE_GREEN
+    # "the green one": the green apple or the green plate, never guessed
+    assert _reading("Put the orange on the yellow one and the carrot on the green one.") is None
+
+
+def test_one_thing_per_plate_is_a_heading_the_pairs_must_keep():
+    text = "Each plate gets one thing: yellow plate the orange, blue plate the green apple. Any order."
+    assert _reading(text) == _ORANGE_GREEN
+    two_on_one = "Each plate gets one thing: yellow plate the orange, yellow plate the green apple."
+    assert _reading(two_on_one) is None

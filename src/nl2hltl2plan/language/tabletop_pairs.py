@@ -99,6 +99,11 @@ _GENERIC_QUANTITY = re.compile(
     r"\b(?P<count>two|three|four)\s+(?:[a-z]+\s+)?(?:items?|things?|fruits?|objects?|placements?|moves?|"
     r"pieces?|tasks?)\b"
 )
+# "each plate gets one thing": one placement per plate, which the pairs listed after it must keep
+_ONE_PER_PLATE = re.compile(
+    r"\b(?:each|every)\s+plate\s+(?:gets|takes|holds|receives|has)\s+(?:just\s+|exactly\s+)?(?:one|a\s+single|"
+    r"a)\s+(?:item|thing|fruit|object|piece)\b"
+)
 
 # verbs that order one placement after another, which check 1's order words do not list: no reading of
 # the tabletop world takes them ("the green apple on the yellow plate must precede the carrot ...")
@@ -300,7 +305,7 @@ def read_pairs(text: str, types: set[str]) -> Reading | None:
     if free and all(len(g) < 2 for g in group_ids):
         return None  # "A, then B - either order is ok": the remark frees no pair the "then"s leave unordered
     before = [(a, b) for i, g in enumerate(group_ids) for h in group_ids[i + 1 :] for a in g for b in h]
-    return tasks, before, group_ids, stepped
+    return tasks, before, group_ids, _ONE_PER_PLATE.sub(" ", stepped)  # kept by its heading, not counted
 
 
 def _sentence_pairs(
@@ -312,7 +317,10 @@ def _sentence_pairs(
     if heading and not pattern.search(heading["head"]):
         listed = [_name(f) for f in pattern.findall(sentence[heading.end() :])]
         pairs = _paired([by_words[f] for f in listed if f in by_words]) or []
-        if not _heading_fits(heading["head"], len(pairs)):
+        one_each = _ONE_PER_PLATE.search(heading["head"])
+        if one_each and len({plate for _, plate in pairs}) != len(pairs):
+            return None  # "each plate gets one thing" and then two things on one plate
+        if not _heading_fits(_ONE_PER_PLATE.sub(" ", heading["head"]), len(pairs)):
             return None
         sentence = sentence[heading.end() :]
     found = [_name(f) for f in pattern.findall(sentence)]

@@ -118,6 +118,25 @@ _FILLER = re.compile(
     r"^\W*(?:let\s+me\s+see|let's\s+see)\b|\bchop\s+chop\b|\bfind\s+(?:below|attached|enclosed)\b|"
     r"\bgo\s+ahead\s+and\b"
 )
+# a letter's frame: a subject line ("Subject: plates", "Re: tidying") that names nothing and says no order
+# and a sign-off ("Best, Sam", "Thanks,\nJo") closing the text: neither is part of the request
+# (its line break is gone by then: it ends where the letter's first sentence begins, with a capital)
+_HEADER_LINE = re.compile(r"^\s*(?i:subject|re|fwd?|topic|title)\s*:(?P<words>[^.:;!?]*?)\s+(?=[A-Z])")
+_SIGN_OFF = re.compile(
+    r"(?<=[.!?\n])\s*(?i:best|regards|kind\s+regards|best\s+regards|best\s+wishes|cheers|thanks|thank\s+you|"
+    r"many\s+thanks|love|yours|sincerely|ta)\s*,?\s*(?P<name>[A-Z][a-z]+)\W*$"
+)
+_SAYS_ORDER = re.compile(
+    r"\b(?:order|sequence|first|then|before|after|until|next|last|not|no|never)\b|n't|\d"
+)
+# "don't forget (to)": a reminder, which asks as "please" asks (not a negation)
+_REMINDER = re.compile(r"\b(?:don'?t|do\s+not)\s+forget(?:\s+to)?\b")
+# "if you could X, that would be great": a polite frame around a request, not a condition
+_IF_YOU_COULD = re.compile(
+    r"(?:^|(?<=[.!?]\s))(?P<pre>\W*)if\s+you\s+(?:could|would|can)(?:\s+please)?\b(?P<body>[^.;!?]*?),?\s*"
+    r"\b(?:that|it)(?:'d|\s+would|'ll|\s+will|'s|\s+is)\s+be\s+(?:so\s+|really\s+|very\s+)?(?:great|lovely|nice|"
+    r"wonderful|perfect|awesome|amazing|brilliant|fantastic|helpful|ideal|super|(?:much\s+)?appreciated)\b"
+)
 _THE_FOLLOWING = re.compile(r"\b(?:the\s+)?following(?=\s*:)")  # a list's heading: "arrange the following:"
 # an aside that only describes the thing before it: "the green apple, the nice shiny one, goes ..."
 _APPOSITION = re.compile(r",\s*the\s+(?P<words>(?:[a-z]+\s+){1,3})one\s*,")
@@ -137,7 +156,9 @@ def plain_words(text: str, kinds: dict[str, bool], heads: dict[str, list[str]]) 
     a tidying verb before an object as "put", plates said by colour named, questions joined with their
     answers, corrections applied and plurals named. `kinds`: each object or plate name (in words) -> is
     it a plate; `heads`: a head noun that several objects share ("apple") -> their names."""
-    text = re.sub(r"\b(1st|2nd|3rd|4th)\b", lambda m: _ORDINALS[m[1]], text.lower())
+    text = _letter_frame_dropped(text, kinds).lower()
+    text = re.sub(r"\b(1st|2nd|3rd|4th)\b", lambda m: _ORDINALS[m[1]], text)
+    text = _IF_YOU_COULD.sub(r"\g<pre>please\g<body>", _REMINDER.sub("please", text))
     text = _THE_FOLLOWING.sub("these", _FILLER.sub(" ", polite_frames(text)))
     text = remarks_read(text, kinds)
     text = _PAIR_VERB.sub("match", text).replace("+", " and ")
@@ -150,6 +171,19 @@ def plain_words(text: str, kinds: dict[str, bool], heads: dict[str, list[str]]) 
     text = _APPOSITION.sub(lambda m: m[0] if _names_a_word(m["words"], kinds) else ",", text)
     text = corrected(text, kinds)
     return _plurals_named(text, kinds, heads)
+
+
+def _letter_frame_dropped(text: str, kinds: dict[str, bool]) -> str:
+    """`text` without a subject line that names nothing and says no order, and without a sign-off whose
+    name is no object or plate (the case of the name is read: before lowercasing)."""
+    header = _HEADER_LINE.match(text)
+    words = header["words"].lower() if header else ""
+    if header and not mention_pattern(kinds).search(words) and not _SAYS_ORDER.search(words):
+        text = text[header.end() :]
+    sign_off = _SIGN_OFF.search(text)
+    if sign_off and not any(sign_off["name"].lower() in name.split() for name in kinds):
+        text = text[: sign_off.start()]
+    return text
 
 
 # "... when you're finished.": the end state, not an order ("when you're done, put ..." opens a step)
@@ -219,8 +253,13 @@ def _plate_referred(text: str, kinds: dict[str, bool]) -> str:
 def plates_by_colour(text: str, kinds: dict[str, bool]) -> str:
     """A plate said by its colour alone ("green apple -> blue", "the orange on the yellow") named in full:
     a colour word of a plate's name that starts no name and is followed by no noun of its own ("the
-    green apple", "the yellow one", "the blue and yellow plates" are left)."""
+    green apple", "the blue and yellow plates" are left); "the yellow one" names the plate when no other
+    name starts with "yellow" (not "the green one": the green apple or the green plate)."""
     colours = {n.split()[0]: n for n, plate in kinds.items() if plate and len(n.split()) == 2}
+    only_plate = [c for c in colours if sum(n.split()[0] == c for n in kinds) == 1]
+    if only_plate:
+        one = re.compile(rf"\b(?:the\s+)?(?P<c>{'|'.join(map(re.escape, only_plate))})\s+one\b")
+        text = one.sub(lambda m: f"the {colours[m['c']]}", text)
     heads = {w for n in kinds for w in n.split()[1:]} | {"one", "ones", "and", "or", "plates", "plated"}
     alone = re.compile(rf"\b(?:{'|'.join(map(re.escape, colours))})\b(?!\s*(?:{'|'.join(sorted(heads))})\b)")
     out, at = [], 0
@@ -408,8 +447,10 @@ _COURTESY_WORDS = frozenset(
     "could would will mind doing me favour favor like just quick pls plz thx ty ta".split()
 )
 _UNHURRIED = re.compile(r"\bno\s+(?:rush|hurry|worries|pressure)\b")
-_TIDY_VERB = r"(?:sort|organi[sz]e|arrange|tidy|handle|do|set\s+up|lay\s+out)"
-_THE_THINGS = r"(?:these|this|them|things|stuff|everything|the\s+(?:items|things|fruits?|plates|following))"
+_TIDY_VERB = r"(?:sort|organi[sz]e|arrange|tidy|handle|do|fix|set\s+up|lay\s+out)"
+_THE_THINGS = (
+    r"(?:these|this|that|them|things|stuff|everything|the\s+(?:items|things|fruits?|plates|following))"
+)
 _HEADING_FRAME = re.compile(
     rf"^{_TIDY_VERB}\s+(?:(?:out|up)\s+)?{_THE_THINGS}(?:\s+(?:out|up))?(?:\s+for\s+(?:me|us))?$"
 )
@@ -501,8 +542,11 @@ def _clause_read(clause: str) -> str | None:
         words.pop(0)
     if words and words[-1] == "please":
         words.pop()
-    if _HEADING_FRAME.match(" ".join(words)):
+    said = " ".join(words)
+    if _HEADING_FRAME.match(said):
         return ""
+    if _HEADING_FRAME.match(_FREE_ORDER.sub(" ", said).strip()) and _FREE_ORDER.search(said):
+        return "in any order"  # "tidy them up in any order": the heading and a freedom remark
     return _freedom_read(clause)
 
 
