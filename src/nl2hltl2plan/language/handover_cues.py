@@ -142,10 +142,16 @@ def restate(m: Marked, scene: Scene) -> str | None:
     return reading.said()
 
 
+# each cue as a whole-word pattern, compiled once
+_PHRASE_CUES = tuple(
+    (re.compile(rf"(?<![\w])(?:{pattern})(?![\w])"), f" {token} ") for pattern, token in _PHRASES
+)
+
+
 def _tokens(text: str) -> str:
     """The sentence with its multi-word cues as single tokens."""
-    for pattern, token in _PHRASES:
-        text = re.sub(rf"(?<![\w])(?:{pattern})(?![\w])", f" {token} ", text)
+    for cue, token in _PHRASE_CUES:
+        text = cue.sub(token, text)
     return " ".join(text.split())
 
 

@@ -188,14 +188,15 @@ def _there_named(m: re.Match[str]) -> str:
     if _NEGATED.search(m.string[: m.start()]):
         return m[0]
     places = [
-        d for d in _DESTINATION_PHRASE.finditer(m.string[: m.start()])
-        if find_mentions(d["np"]) and not find_mentions(d["np"])[-1].entry.generic
-    ]  # fmt: skip
+        (d["prep"].lower(), named[-1])
+        for d in _DESTINATION_PHRASE.finditer(m.string[: m.start()])
+        if (named := find_mentions(d["np"])) and not named[-1].entry.generic
+    ]
     if not places:
         return m[0]
-    last = places[-1]
-    prep = "in" if last["prep"].lower() == "to" else last["prep"].lower()  # "walk to the sink ... in there"
-    return f"{m['head']} {prep} the {find_mentions(last['np'])[-1].surface}"
+    prep, place = places[-1]
+    prep = "in" if prep == "to" else prep  # "walk to the sink ... in there"
+    return f"{m['head']} {prep} the {place.surface}"
 
 
 # "the mug that's on the counter, put it in the sink": the thing named first, then what to do with "it"
