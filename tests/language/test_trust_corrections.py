@@ -67,6 +67,18 @@ def test_what_a_correction_word_does_not_take_back_stays_read(backend):
     ]
 
 
+# the lead's user set 9 (session 16): "put the book on the desk lamp... sorry, look at the book under the desk
+# lamp" was two examinations, reported solved: an own mistake that opens its sentence takes back the sentence
+# before, so a reading that still does it is refused; an apology that opens the text takes nothing back
+@BOTH
+@pytest.mark.parametrize("marker", ["... sorry,", ". Oops,", ". Sorry,"])
+def test_an_own_mistake_opening_a_sentence_takes_back_the_one_before(backend, marker):
+    text = f"put the book on the bed{marker} put the book in the box"
+    assert "correction" in _refused(text, "FloorPlan317", backend)
+    if backend == "offline":  # (the grammar alone leaves a leading remark unread, as above)
+        assert _summaries("sorry, put the book in the box", "FloorPlan317", backend) == ["place Book -> Box"]
+
+
 # "spray the counter" was the spray bottle put on the counter
 @BOTH
 def test_a_verb_that_also_names_a_thing_is_a_verb_where_a_command_starts(backend):

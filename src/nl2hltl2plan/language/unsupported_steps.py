@@ -363,6 +363,10 @@ def _correction_not_taken(
     if w == "scratch" and nxt != "that":
         return False
     start = sentence_start(instruction, toks[i][1])
+    if w in ("sorry", "oops") and start and not instruction[start : toks[i][1]].strip(" ,"):
+        # opening its sentence, an own mistake takes back the sentence before ("put the book on the desk
+        # lamp... sorry, look at the book under it"); "Actually, ..." opening a sentence adds instead
+        start = sentence_start(instruction, len(instruction[:start].rstrip(" .;!?")))
     taken = [m for m in mentions if start <= m.char_start < toks[i][1]]
     used = {t for _, _, st in parse.slots() for t in st} | parse.implied()
     return bool(taken) and bool(set(taken[-1].entry.types) & used)
