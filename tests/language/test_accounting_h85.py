@@ -1,0 +1,68 @@
+"""Check 1 (`accounting.account`) on words its reading uses: a second task's own treatment after an order
+word, "a mug of water" (the rinse), "get me the salt and put it ..." (for whom, not where), and a place
+named again as where another task's place stands ("the pan on the stove")."""
+
+from __future__ import annotations
+
+from nl2hltl2plan.language.accounting import account
+from nl2hltl2plan.language.task_specs import BaseTaskSpec
+
+
+def task(kind: str, obj: str, rec: str, tid: str = "A", text: str = "", **kw: object) -> BaseTaskSpec:
+    return BaseTaskSpec(kind=kind, object=[obj], receptacle=[rec], id=tid, text=text, **kw)  # type: ignore[arg-type]
+
+
+def unread(text: str, tasks: list[BaseTaskSpec], before: list[tuple[str, str]] | None = None) -> list[str]:
+    return [u.words for u in account(text, tasks, before or [])]
+
+
+def test_a_treatment_after_then_that_opens_another_task_is_that_tasks_own():
+    text = "First place a heated tomato in a sink, then cook a tomato and put it into the sink."
+    a = task("heat_place", "Tomato", "SinkBasin", "A", "place a heated tomato in a sink")
+    b = task("heat_place", "Tomato", "SinkBasin", "B", "cook a tomato and put it into the sink")
+    assert unread(text, [a, b], [("A", "B")]) == []
+    # one task placed, then treated: still the opposite of what the task does
+    whole = task("heat_place", "Apple", "Fridge", "A", "put the apple in the fridge, then heat it")
+    assert unread("put the apple in the fridge, then heat it", [whole]) == ["then heat"]
+    # the other task does another treatment: "cook" is no words of it
+    cooled = task("cool_place", "Tomato", "SinkBasin", "B", "cook a tomato and put it into the sink")
+    assert "then cook" in unread(text, [a, cooled], [("A", "B")])
+
+
+def test_a_container_of_water_names_the_rinse():
+    rinsed = [task("clean_place", "Mug", "CoffeeMachine")]
+    assert unread("Put a mug of water in the coffee maker.", rinsed) == []
+    assert unread("put a bowl full of water in the cupboard", [task("clean_place", "Bowl", "Cabinet")]) == []
+    # water with another word, or no water at all, names no rinse
+    said = unread("Put a mug with water in the cabinet.", [task("clean_place", "Mug", "Cabinet")])
+    assert said == ["clean_place"]
+    assert unread("put a mug in the cabinet", [task("clean_place", "Mug", "Cabinet")]) == ["clean_place"]
+
+
+def test_get_me_names_for_whom_when_a_task_places_the_thing():
+    salt = [task("place", "SaltShaker", "DiningTable")]
+    assert unread("get me the salt and put it on the table", salt) == []
+    assert unread("grab me a salt shaker and put it on the table", salt) == []
+    # "bring me" hands it to the person, which no task does
+    assert unread("bring me the salt and put it on the table", salt) == ["me"]
+    # the thing after "me" is not what the task places
+    pepper = [task("place", "PepperShaker", "DiningTable")]
+    assert "me" in unread("get me the salt and put the pepper on the table", pepper)
+
+
+def test_a_thing_that_is_one_tasks_place_says_where_it_is_in_another_clause():
+    """The pans fill three slots, one of them a place (the knife's container): "on the stove" says where
+    that pan is, though the matching gives the pans' words to a chilled pan's object slot."""
+    text = (
+        "Move fork into mug, move both on counter and put the knife to the pan on the stove, move the pan "
+        "into the sink in any order. Once both are done, chill a pan and put it on a counter. At any time, "
+        "put a cleaned pan on a counter top."
+    )
+    fork = BaseTaskSpec(
+        kind="place_in_container", object=["Fork"], receptacle=["CounterTop"], container=["Mug"], id="A"
+    )
+    knife = BaseTaskSpec(
+        kind="place_in_container", object=["Knife"], receptacle=["SinkBasin"], container=["Pan"], id="B"
+    )
+    pans = [task("cool_place", "Pan", "CounterTop", "C"), task("clean_place", "Pan", "CounterTop", "D")]
+    assert unread(text, [fork, knife, *pans], [("A", "C"), ("B", "C")]) == []
