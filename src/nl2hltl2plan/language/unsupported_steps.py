@@ -153,7 +153,9 @@ def treated_after_placing(instruction: str, mentions: list[Mention], parse: Pars
     return out
 
 
-def _treats_its_own(then: re.Match[str], task: BaseTaskSpec, tasks: Sequence[BaseTaskSpec], text: str) -> bool:
+def _treats_its_own(
+    then: re.Match[str], task: BaseTaskSpec, tasks: Sequence[BaseTaskSpec], text: str
+) -> bool:
     """Is the treatment verb after an order word the first words of another task that has this treatment
     ("place a heated tomato in the sink, then cook a tomato and put it in the sink": two tasks)?"""
     verb = then.group(1)
