@@ -66,3 +66,39 @@ def test_a_thing_that_is_one_tasks_place_says_where_it_is_in_another_clause():
     )
     pans = [task("cool_place", "Pan", "CounterTop", "C"), task("clean_place", "Pan", "CounterTop", "D")]
     assert unread(text, [fork, knife, *pans], [("A", "C"), ("B", "C")]) == []
+
+
+def test_an_order_said_of_named_things_must_be_the_readings_order():
+    """ "Prior to putting the pillows, put a vase in the safe": the vase's task first; a reading that
+    orders them the other way (or not at all) leaves the words unread."""
+    pillows = task("place_two", "Pillow", "Sofa", "A", count=2)
+    vase = task("place", "Vase", "Safe", "B")
+    text = "Put two pillows on a couch. Prior to putting the pillows, put a vase in a safe."
+    assert unread(text, [pillows, vase], [("B", "A")]) == []
+    assert unread(text, [pillows, vase], [("A", "B")]) == ["Prior to putting the pillows"]
+    later = "put the vase in the safe after you put the pillows on the couch"
+    assert unread(later, [vase, pillows], [("A", "B")]) == []
+    assert unread(later, [vase, pillows], [("B", "A")]) == ["after you put the pillows"]
+    # a clause opened after a comma: "then, after putting the pencil on the desk, put the book on the bed"
+    pen, pencil, book = (
+        task("place", o, r, i)
+        for o, r, i in [("Pen", "Drawer", "A"), ("Pencil", "Desk", "B"), ("Book", "Bed", "C")]
+    )
+    text = "put the pen in the drawer, then, after putting the pencil on the desk, put the book on the bed"
+    assert unread(text, [pen, pencil, book], [("A", "C"), ("B", "C")]) == []
+    assert unread(text, [pen, pencil, book], [("A", "B"), ("C", "B")]) == ["after putting the pencil"]
+
+
+def test_an_order_under_a_negation_or_of_a_step_is_not_judged_here():
+    egg, apple = task("place", "Egg", "Fridge", "A"), task("place", "Apple", "Fridge", "B")
+    text = "do not put the egg in the fridge before the apple is in the fridge"
+    assert unread(text, [egg, apple], [("B", "A")]) == []
+    pillow, paper = task("place", "Pillow", "ArmChair", "A"), task("place", "Newspaper", "Sofa", "B")
+    assert (
+        unread(
+            "put the pillow on the armchair and after that the newspaper on the sofa",
+            [pillow, paper],
+            [("A", "B")],
+        )
+        == []
+    )

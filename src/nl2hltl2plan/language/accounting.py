@@ -45,7 +45,7 @@ from nl2hltl2plan.language.grounding import (
 )
 from nl2hltl2plan.language.landmarks import NEAR_WORDS, carried, landmark_destinations, pair_start
 from nl2hltl2plan.language.negations import NO_CONSTRAINT, about_order, unforbidden_verb
-from nl2hltl2plan.language.order_words import check_cycles, unordered_steps
+from nl2hltl2plan.language.order_words import check_cycles, misordered, unordered_steps
 from nl2hltl2plan.language.parse_usage import IMPLIED_TYPES, ParseUsage
 from nl2hltl2plan.language.statements import asked_before, says_where
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, ConstraintSpec
@@ -113,6 +113,7 @@ def account(
     out += unordered_steps(
         toks, {i for i, t in enumerate(toks) if parse.constraint_at(t[1])} | in_mention, parse
     )
+    out += misordered(instruction, toks, mentions, parse)
     check_cycles(instruction, toks, mentions, parse)
     return out
 

@@ -102,3 +102,91 @@ def check_cycles(
         return
     names = [camel_words(a) for a, _ in cycle] + [camel_words(cycle[0][0])]
     raise HTTError(f"cyclic order in the instruction: {' before '.join(names)}")
+
+
+def misordered(
+    instruction: str, toks: list[tuple[str, int, int]], mentions: list[Mention], parse: ParseUsage
+) -> list[Unread]:
+    """An order said of named things that the reading does not keep: "Prior to putting the pillows, put
+    a vase in the safe" needs the vase's task before the pillows' task, "Y after you put the X" the X's
+    before Y's. The connective ("before", "prior to", "after", "once") opens a clause whose object is
+    named right after it (over "you", "you've", one verb and determiners); the other clause is the rest of
+    the sentence before the comma that closes it, or before the connective."""
+    objects = {o for t in parse.tasks for o in [*t.object, *(t.container or [])]}
+    closure = transitive_closure(list(parse.before), [t.id for t in parse.tasks])
+    out = []
+    for i, (word, start, _) in enumerate(toks):
+        after_word = word in _AFTER_WORDS
+        if not (after_word or word == "before" or (word == "prior" and _next(toks, i) == "to")):
+            continue
+        named = _named_after(toks, i + (2 if word == "prior" else 1), mentions)
+        if named is None or not set(named.entry.types) & objects:
+            continue
+        sentence = _sentence_span(instruction, start)
+        before_it = instruction[sentence[0] : start]
+        if any("negation" in categories(w) for w in re.findall(r"[\w']+", before_it.lower())):
+            continue  # "do not put X before Y": X after Y (the negation's reading)
+        if _LEADS.fullmatch(
+            before_it.rsplit(",", 1)[-1].lower()
+        ):  # "Prior to putting the pillows, put a vase ...": the clause after the comma
+            comma = instruction.find(",", named.char_end, sentence[1])
+            other = (comma, sentence[1]) if comma >= 0 else (sentence[1], sentence[1])
+        else:  # "put a vase in the safe before you put the pillows": the clause before it
+            other = (sentence[0], start)
+        said = [m for m in mentions if other[0] <= m.char_start < other[1] and set(m.entry.types) & objects]
+        firsts = _tasks_of(parse, set(named.entry.types))
+        seconds = _tasks_of(parse, {t for m in said for t in m.entry.types}) - firsts
+        if not firsts or not seconds:
+            continue
+        pairs = (
+            {(a, b) for a in firsts for b in seconds}
+            if after_word
+            else {(b, a) for a in firsts for b in seconds}
+        )
+        if not pairs & closure:
+            words = instruction[start : named.char_end]
+            out.append(Unread(words, "order", "the reading does not order the tasks as these words say"))
+    return out
+
+
+_AFTER_WORDS = frozenset({"after", "once"})
+_SUBJECT = frozenset(
+    {"you", "you've", "you're", "we", "we've", "i", "i've", "have", "having", "done", "finished"}
+)
+
+
+def _next(toks: list[tuple[str, int, int]], i: int) -> str:
+    return toks[i + 1][0] if i + 1 < len(toks) else ""
+
+
+def _named_after(toks: list[tuple[str, int, int]], j: int, mentions: list[Mention]) -> Mention | None:
+    """The thing named right after a connective at token `j`: over a subject, one verb and determiners."""
+    while j < len(toks) and toks[j][0] in _SUBJECT:
+        j += 1
+    starts = {m.start: m for m in mentions}
+    if j < len(toks) and j not in starts and _a_verb(toks[j][0]):
+        j += 1  # the verb ("putting", "you put", "chilling"); never "that" of "after that the mug
+    while j < len(toks) and toks[j][0] in DETERMINERS - _DEMONSTRATIVES:
+        j += 1
+    return starts.get(j)
+
+
+_DEMONSTRATIVES = frozenset({"that", "this", "those", "these"})  # "after that the mug ...": that step
+
+
+def _a_verb(word: str) -> bool:
+    return word.endswith("ing") or any(c.startswith("verb_") for c in categories(word))
+
+
+# what may stand between a clause's start (the sentence's, or a comma's) and a connective that opens it
+_LEADS = re.compile(r"\s*(?:(?:and|then|but|so|right|just|only)\s*)*")
+
+
+def _sentence_span(text: str, at: int) -> tuple[int, int]:
+    start = max((k + 1 for k in range(at) if text[k] in ".;!?"), default=0)
+    end = next((k for k in range(at, len(text)) if text[k] in ".;!?"), len(text))
+    return start, end
+
+
+def _tasks_of(parse: ParseUsage, types: set[str]) -> set[str]:
+    return {t.id for t in parse.tasks if set(t.object) & types or set(t.container or []) & types}
