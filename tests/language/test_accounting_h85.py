@@ -102,3 +102,20 @@ def test_an_order_under_a_negation_or_of_a_step_is_not_judged_here():
         )
         == []
     )
+
+
+def test_the_thing_and_place_after_once_pick_the_task_it_refers_to():
+    """ "Once the soap is on the toilet, put a rag on the counter": after the task that puts soap on
+    the toilet, not after another soap's task; "the moment" orders as "once"."""
+    bottle = task("place", "SoapBottle", "Toilet", "A")
+    bars = task("place_two", "SoapBar", "Cabinet", "B", count=2)
+    rag = task("place", "Cloth", "CounterTop", "C")
+    text = "Move a soap bottle to the toilet. Put two bars of soap in a cabinet. Once the soap is on the toilet, put a rag on the counter."
+    assert unread(text, [bottle, bars, rag], [("A", "C")]) == []
+    assert unread(text, [bottle, bars, rag], [("B", "C")]) == ["Once the soap"]
+    cards, clock = (
+        task("place_two", "CreditCard", "Safe", "A", count=2),
+        task("examine_in_light", "AlarmClock", "", "B"),
+    )
+    moment = "Place two credit cards in the safe. The moment the credit cards are in the safe, look at the clock under the lamp."
+    assert "The moment the credit cards" in unread(moment, [cards, clock])

@@ -108,55 +108,43 @@ def misordered(
     instruction: str, toks: list[tuple[str, int, int]], mentions: list[Mention], parse: ParseUsage
 ) -> list[Unread]:
     """An order said of named things that the reading does not keep: "Prior to putting the pillows, put
-    a vase in the safe" needs the vase's task before the pillows' task, "Y after you put the X" the X's
-    before Y's. The connective ("before", "prior to", "after", "once") opens a clause whose object is
-    named right after it (over "you", "you've", one verb and determiners); the other clause is the rest of
-    the sentence before the comma that closes it, or before the connective."""
+    a vase in the safe" needs the vase's task before the pillows' task, "Y after you put the X" and "the
+    moment the X is in the P, Y" the X's before Y's. The connective opens a clause whose object is named
+    right after it (over "you", "you've", one verb and determiners); the other clause is the rest of the
+    sentence after the comma that closes it, or before the connective."""
     objects = {o for t in parse.tasks for o in [*t.object, *(t.container or [])]}
     closure = transitive_closure(list(parse.before), [t.id for t in parse.tasks])
-    out = []
-    for i, (word, start, _) in enumerate(toks):
-        after_word = word in _AFTER_WORDS
-        if not (after_word or word == "before" or (word == "prior" and _next(toks, i) == "to")):
-            continue
-        named = _named_after(toks, i + (2 if word == "prior" else 1), mentions)
+    lowered, out = instruction.lower(), []
+    for conn in _CONNECTIVE.finditer(lowered):
+        j = next((k for k, t in enumerate(toks) if t[1] >= conn.end()), len(toks))
+        named = _named_after(toks, j, mentions)
         if named is None or not set(named.entry.types) & objects:
             continue
-        sentence = _sentence_span(instruction, start)
-        before_it = instruction[sentence[0] : start]
-        if any("negation" in categories(w) for w in re.findall(r"[\w']+", before_it.lower())):
+        sentence = _sentence_span(instruction, conn.start())
+        before_it = lowered[sentence[0] : conn.start()]
+        if any("negation" in categories(w) for w in re.findall(r"[\w']+", before_it)):
             continue  # "do not put X before Y": X after Y (the negation's reading)
-        if _LEADS.fullmatch(
-            before_it.rsplit(",", 1)[-1].lower()
-        ):  # "Prior to putting the pillows, put a vase ...": the clause after the comma
-            comma = instruction.find(",", named.char_end, sentence[1])
-            other = (comma, sentence[1]) if comma >= 0 else (sentence[1], sentence[1])
-        else:  # "put a vase in the safe before you put the pillows": the clause before it
-            other = (sentence[0], start)
-        said = [m for m in mentions if other[0] <= m.char_start < other[1] and set(m.entry.types) & objects]
-        firsts = _tasks_of(parse, set(named.entry.types))
-        seconds = _tasks_of(parse, {t for m in said for t in m.entry.types}) - firsts
+        comma = instruction.find(",", named.char_end, sentence[1])
+        if _LEADS.fullmatch(before_it.rsplit(",", 1)[-1]):  # "Prior to X, Y": Y after the comma
+            other, clause = (comma, sentence[1]) if comma >= 0 else sentence[1:] * 2, (conn.start(), comma)
+        else:  # "Y before you put the X": Y before the connective
+            other, clause = (sentence[0], conn.start()), (conn.start(), sentence[1])
+        firsts = _tasks_of(parse, named, mentions, clause)
+        seconds = _tasks_in(instruction, parse, other, mentions, objects) - firsts
         if not firsts or not seconds:
             continue
-        pairs = (
-            {(a, b) for a in firsts for b in seconds}
-            if after_word
-            else {(b, a) for a in firsts for b in seconds}
-        )
+        after = conn.group(1) != "before" and not conn.group(0).startswith("prior")
+        pairs = {(a, b) if after else (b, a) for a in firsts for b in seconds}
         if not pairs & closure:
-            words = instruction[start : named.char_end]
+            words = instruction[conn.start() : named.char_end]
             out.append(Unread(words, "order", "the reading does not order the tasks as these words say"))
     return out
 
 
-_AFTER_WORDS = frozenset({"after", "once"})
+_CONNECTIVE = re.compile(r"\b(?:(before|after|once)|prior to|the moment|as soon as)\b")
 _SUBJECT = frozenset(
     {"you", "you've", "you're", "we", "we've", "i", "i've", "have", "having", "done", "finished"}
 )
-
-
-def _next(toks: list[tuple[str, int, int]], i: int) -> str:
-    return toks[i + 1][0] if i + 1 < len(toks) else ""
 
 
 def _named_after(toks: list[tuple[str, int, int]], j: int, mentions: list[Mention]) -> Mention | None:
@@ -165,7 +153,7 @@ def _named_after(toks: list[tuple[str, int, int]], j: int, mentions: list[Mentio
         j += 1
     starts = {m.start: m for m in mentions}
     if j < len(toks) and j not in starts and _a_verb(toks[j][0]):
-        j += 1  # the verb ("putting", "you put", "chilling"); never "that" of "after that the mug
+        j += 1  # the verb ("putting", "you put", "chilling")
     while j < len(toks) and toks[j][0] in DETERMINERS - _DEMONSTRATIVES:
         j += 1
     return starts.get(j)
@@ -188,5 +176,27 @@ def _sentence_span(text: str, at: int) -> tuple[int, int]:
     return start, end
 
 
-def _tasks_of(parse: ParseUsage, types: set[str]) -> set[str]:
-    return {t.id for t in parse.tasks if set(t.object) & types or set(t.container or []) & types}
+def _tasks_of(
+    parse: ParseUsage, named: Mention, mentions: list[Mention], clause: tuple[int, int]
+) -> set[str]:
+    """The tasks of the thing named after a connective: of its type, and, where the clause names a place
+    one of them uses ("once the soap is on the toilet"), those that use it."""
+    types = set(named.entry.types)
+    ids = {t.id for t in parse.tasks if set(t.object) & types or set(t.container or []) & types}
+    places = {p for m in mentions if named.char_end <= m.char_start < clause[1] for p in m.entry.types}
+    there = {t.id for t in parse.tasks if t.id in ids and set(t.receptacle or []) & places}
+    return there or ids
+
+
+def _tasks_in(
+    instruction: str, parse: ParseUsage, span: tuple[int, int], mentions: list[Mention], objects: set[str]
+) -> set[str]:
+    """The tasks said in a clause: those whose own words lie in it, else those of the things it names."""
+    lowered = instruction.lower()
+    said = {t for m in mentions if span[0] <= m.char_start < span[1] for t in m.entry.types} & objects
+    own = set()
+    for t in parse.tasks:
+        at = lowered.find(t.text.lower()) if t.text else -1
+        if at >= 0 and at < span[1] and at + len(t.text) > span[0] and set(t.object) & said:
+            own.add(t.id)
+    return own or {t.id for t in parse.tasks if set(t.object) & said or set(t.container or []) & said}
