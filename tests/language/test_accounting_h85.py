@@ -110,12 +110,18 @@ def test_the_thing_and_place_after_once_pick_the_task_it_refers_to():
     bottle = task("place", "SoapBottle", "Toilet", "A")
     bars = task("place_two", "SoapBar", "Cabinet", "B", count=2)
     rag = task("place", "Cloth", "CounterTop", "C")
-    text = "Move a soap bottle to the toilet. Put two bars of soap in a cabinet. Once the soap is on the toilet, put a rag on the counter."
+    text = (
+        "Move a soap bottle to the toilet. Put two bars of soap in a cabinet. Once the soap is on the "
+        "toilet, put a rag on the counter."
+    )
     assert unread(text, [bottle, bars, rag], [("A", "C")]) == []
     assert unread(text, [bottle, bars, rag], [("B", "C")]) == ["Once the soap"]
     cards, clock = (
         task("place_two", "CreditCard", "Safe", "A", count=2),
         task("examine_in_light", "AlarmClock", "", "B"),
     )
-    moment = "Place two credit cards in the safe. The moment the credit cards are in the safe, look at the clock under the lamp."
+    moment = (
+        "Place two credit cards in the safe. The moment the credit cards are in the safe, look at the "
+        "clock under the lamp."
+    )
     assert "The moment the credit cards" in unread(moment, [cards, clock])
