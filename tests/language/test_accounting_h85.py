@@ -125,3 +125,13 @@ def test_the_thing_and_place_after_once_pick_the_task_it_refers_to():
         "clock under the lamp."
     )
     assert "The moment the credit cards" in unread(moment, [cards, clock])
+
+
+def test_an_ordinal_of_a_place_after_a_preposition_is_no_step():
+    plate, salt = task("clean_place", "Plate", "CounterTop", "A"), task("place", "SaltShaker", "Drawer", "B")
+    text = "Put a clean plate on the counter. Place salt in second drawer to the left of stove."
+    assert unread(text, [plate, salt]) == []
+    # "second" as a step, with the two tasks unordered, is unread
+    assert unread("put the clean plate on the counter and second the salt in the drawer", [plate, salt]) == [
+        "second"
+    ]

@@ -30,16 +30,21 @@ from nl2hltl2plan.language.task_specs import transitive_closure
 _FREE_PHRASE = re.compile(rf"\b{free_order_phrase()}\b")
 
 
-def _not_a_step(words: list[str], i: int) -> bool:
+def _not_a_step(words: list[str], i: int, in_mention: set[int]) -> bool:
     """An order word that names no step: "next to the sink" (a place), "go ahead and", "the second drawer"
-    (an ordinal of a place), "your first job: X, Y" (a heading of the list, read so by the grammar's
-    openers)."""
+    and "in second drawer" (an ordinal of a place), "your first job: X, Y" (a heading of the list, read so
+    by the grammar's openers)."""
+    ordinal = words[i] in ("first", "second", "third")
     return (
         words[i : i + 2] == ["next", "to"]
         or words[i - 1 : i + 1] == ["go", "ahead"]
-        or (words[i] in ("first", "second", "third") and i > 0 and words[i - 1] in ("the", "a", "its"))
+        or (ordinal and i > 0 and words[i - 1] in ("the", "a", "its"))
+        or (ordinal and i + 1 in in_mention and i > 0 and words[i - 1] in _PLACE_PREPOSITIONS)
         or (words[i - 1 : i + 1] == ["your", "first"] and words[i + 1 : i + 2] in (["job"], ["task"]))
     )
+
+
+_PLACE_PREPOSITIONS = frozenset({"in", "into", "on", "onto", "inside", "from", "to"})
 
 
 def unordered_steps(
@@ -53,7 +58,7 @@ def unordered_steps(
     words = [
         w
         for i, w in enumerate(plain)
-        if i not in in_mention and "order" in categories(w) and not _not_a_step(plain, i)
+        if i not in in_mention and "order" in categories(w) and not _not_a_step(plain, i, in_mention)
     ]
     text = " ".join(plain)
     words += [p for p in ("in that order", "in this order") if f" {p} " in f" {text} "]
