@@ -90,6 +90,12 @@ def test_an_order_said_of_named_things_must_be_the_readings_order():
 
 
 def test_an_order_under_a_negation_or_of_a_step_is_not_judged_here():
+    """A negation's sentence, "after that the newspaper" (that step), and "Once finished, move the
+    plunger" (the plunger is the main clause's) are judged by the other checks, not this one."""
+    soap, plunger = task("place", "SoapBar", "CounterTop", "A"), task("place", "Plunger", "Cabinet", "B")
+    rag = task("place", "Cloth", "Dresser", "C")
+    finished = "Place soap on a counter. Once finished, move the plunger to the cabinet, and put a rag on the dresser."
+    assert unread(finished, [soap, plunger, rag], [("A", "B"), ("A", "C")]) == []
     egg, apple = task("place", "Egg", "Fridge", "A"), task("place", "Apple", "Fridge", "B")
     text = "do not put the egg in the fridge before the apple is in the fridge"
     assert unread(text, [egg, apple], [("B", "A")]) == []

@@ -125,6 +125,8 @@ def misordered(
         named = _named_after(toks, j, mentions)
         if named is None or not set(named.entry.types) & objects:
             continue
+        if re.search(r"[,;:.!?]", instruction[conn.end() : named.char_start]):
+            continue  # "Once finished, move the plunger": the plunger is the main clause's
         sentence = _sentence_span(instruction, conn.start())
         before_it = lowered[sentence[0] : conn.start()]
         if any("negation" in categories(w) for w in re.findall(r"[\w']+", before_it)):
