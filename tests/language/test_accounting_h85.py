@@ -94,7 +94,8 @@ def test_an_order_under_a_negation_or_of_a_step_is_not_judged_here():
     plunger" (the plunger is the main clause's) are judged by the other checks, not this one."""
     soap, plunger = task("place", "SoapBar", "CounterTop", "A"), task("place", "Plunger", "Cabinet", "B")
     rag = task("place", "Cloth", "Dresser", "C")
-    finished = "Place soap on a counter. Once finished, move the plunger to the cabinet, and put a rag on the dresser."
+    rest = "move the plunger to the cabinet, and put a rag on the dresser."
+    finished = f"Place soap on a counter. Once finished, {rest}"
     assert unread(finished, [soap, plunger, rag], [("A", "B"), ("A", "C")]) == []
     egg, apple = task("place", "Egg", "Fridge", "A"), task("place", "Apple", "Fridge", "B")
     text = "do not put the egg in the fridge before the apple is in the fridge"
