@@ -1,5 +1,6 @@
 """Order words in word accounting (`accounting.account`): a sequence word needs an ordering between the
-base tasks, a phrase that frees an order needs an unordered pair, and "X before Y ... Y before X" is a
+base tasks, a phrase that frees an order needs an unordered pair, an order said of named things ("prior
+to putting the pillows, put a vase ...") must be the parse's order, and "X before Y ... Y before X" is a
 cycle (an input error).
 
 >>> from nl2hltl2plan.language.grounding import tokens
