@@ -9,7 +9,7 @@ cycle (an input error).
 >>> two = [BaseTaskSpec(id=i, kind="place", object=["Mug"], receptacle=["Sink"]) for i in "AB"]
 >>> text = "put a mug in the sink, then another - either order is ok"
 >>> [u.words for u in unordered_steps(tokens(text), set(), ParseUsage(two, [("A", "B")]))]
-['either order']
+['either order is ok']
 """
 
 from __future__ import annotations

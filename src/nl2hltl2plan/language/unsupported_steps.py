@@ -6,7 +6,7 @@ other apple"), switching a machine on ("start it"), an object's task said to com
 what no spec says at all (`vague_words`): questions, vague amounts and places, times, waiting on a state.
 
 >>> from nl2hltl2plan.language.parse_usage import ParseUsage
-from nl2hltl2plan.language.task_specs import BaseTaskSpec
+>>> from nl2hltl2plan.language.task_specs import BaseTaskSpec
 >>> [u.words for u in returns_and_repeats("bring it back", [], ParseUsage([], [], [], []))]
 ['back']
 """
