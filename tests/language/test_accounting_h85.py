@@ -76,6 +76,8 @@ def test_an_order_said_of_named_things_must_be_the_readings_order():
     text = "Put two pillows on a couch. Prior to putting the pillows, put a vase in a safe."
     assert unread(text, [pillows, vase], [("B", "A")]) == []
     assert unread(text, [pillows, vase], [("A", "B")]) == ["Prior to putting the pillows"]
+    ahead = "put a vase in a safe ahead of putting the pillows on the couch"
+    assert unread(ahead, [pillows, vase], [("A", "B")]) == ["ahead of putting the pillows"]
     later = "put the vase in the safe after you put the pillows on the couch"
     assert unread(later, [vase, pillows], [("A", "B")]) == []
     assert unread(later, [vase, pillows], [("B", "A")]) == ["after you put the pillows"]

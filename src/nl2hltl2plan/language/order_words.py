@@ -141,7 +141,7 @@ def misordered(
         seconds = _tasks_in(instruction, parse, other, mentions, objects) - firsts
         if not firsts or not seconds:
             continue
-        after = conn.group(1) != "before" and not conn.group(0).startswith("prior")
+        after = conn.group("before") is None
         pairs = {(a, b) if after else (b, a) for a in firsts for b in seconds}
         if not pairs & closure:
             words = instruction[conn.start() : named.char_end]
@@ -149,7 +149,9 @@ def misordered(
     return out
 
 
-_CONNECTIVE = re.compile(r"\b(?:(before|after|once)|prior to|the moment|as soon as)\b")
+_CONNECTIVE = re.compile(
+    r"\b(?:(?P<before>before|prior to|ahead of)|after|once|following|the moment|as soon as)\b"
+)
 _SUBJECT = frozenset(
     {"you", "you've", "you're", "we", "we've", "i", "i've", "have", "having", "done", "finished"}
 )
