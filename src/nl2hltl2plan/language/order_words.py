@@ -132,9 +132,11 @@ def misordered(
         before_it = lowered[sentence[0] : conn.start()]
         if any("negation" in categories(w) for w in re.findall(r"[\w']+", before_it)):
             continue  # "do not put X before Y": X after Y (the negation's reading)
-        comma = instruction.find(",", named.char_end, sentence[1])
         if _LEADS.fullmatch(before_it.rsplit(",", 1)[-1]):  # "Prior to X, Y": Y after the comma
-            other, clause = (comma, sentence[1]) if comma >= 0 else sentence[1:] * 2, (conn.start(), comma)
+            comma = instruction.find(",", named.char_end, sentence[1])
+            if comma < 0:
+                continue  # no other clause in the sentence
+            other, clause = (comma, sentence[1]), (conn.start(), comma)
         else:  # "Y before you put the X": Y before the connective
             other, clause = (sentence[0], conn.start()), (conn.start(), sentence[1])
         firsts = _tasks_of(parse, named, mentions, clause)
