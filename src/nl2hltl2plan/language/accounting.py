@@ -45,7 +45,7 @@ from nl2hltl2plan.language.grounding import (
 )
 from nl2hltl2plan.language.landmarks import NEAR_WORDS, carried, landmark_destinations, pair_start
 from nl2hltl2plan.language.negations import NO_CONSTRAINT, about_order, unforbidden_verb
-from nl2hltl2plan.language.order_words import check_cycles, unordered_steps
+from nl2hltl2plan.language.order_words import check_cycles, misordered, unordered_steps
 from nl2hltl2plan.language.parse_usage import IMPLIED_TYPES, ParseUsage
 from nl2hltl2plan.language.statements import asked_before, says_where
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, ConstraintSpec
@@ -113,6 +113,7 @@ def account(
     out += unordered_steps(
         toks, {i for i, t in enumerate(toks) if parse.constraint_at(t[1])} | in_mention, parse
     )
+    out += misordered(instruction, toks, mentions, parse)
     check_cycles(instruction, toks, mentions, parse)
     return out
 
@@ -207,7 +208,16 @@ def _nouns(
     pairs = [sorted(e) for e in nx.max_weight_matching(g, maxcardinality=True)]
     slot_of = {i: k - len(keys) for i, k in pairs}
     matched = {keys[i] for i in slot_of}
-    places = [m for i, k in slot_of.items() if slots[k][1] != "object" for p in groups[keys[i]] for m in p]
+    # a group fills one slot, but its type may be a place of another task too ("the knife to the pan on
+    # the stove, move the pan into the sink ... chill a pan": the pan of the first task is a place)
+    place_types = {t for _, role, st in slots if role != "object" for t in st}
+    places = [
+        m
+        for i, k in slot_of.items()
+        for p in groups[keys[i]]
+        for m in p
+        if slots[k][1] != "object" or m.entry.canonical in place_types
+    ]
     out = []
     objects = {t for _, role, st in slots if role == "object" for t in st}
     for key, phrases in groups.items():
@@ -346,7 +356,8 @@ def _invented_kinds(
     named = {m.entry.canonical for m in mentions if _a_stop(instruction, m, toks)}
     out = []
     for t in parse.tasks:
-        word = f"verb_{t.kind}" in verbs or named & IMPLIED_TYPES.get(t.kind, set())
+        word = f"verb_{t.kind}" in verbs or bool(named & IMPLIED_TYPES.get(t.kind, set()))
+        word = word or (t.kind == "clean_place" and _of_water(instruction, mentions, t))
         if t.kind in IMPLIED_TYPES and not word:
             out.append(
                 Unread(t.kind, "invented", f"task {t.id}'s treatment is named nowhere in the instruction")
@@ -358,6 +369,15 @@ def _invented_kinds(
     return out
 
 
+def _of_water(instruction: str, mentions: list[Mention], task: BaseTaskSpec) -> bool:
+    """A rinse named by what it leaves: "a mug of water" is a mug filled with water at the sink, as "fill
+    the mug with water" is (the rinse)."""
+    return any(
+        set(m.entry.types) & set(task.object) and _OF_WATER.match(instruction, m.char_end) for m in mentions
+    )
+
+
+_OF_WATER = re.compile(r"\s+(?:full\s+)?of\s+water\b", re.I)
 _DESTINATION = frozenset({"to", "into", "onto"})
 _PREPOSITIONS = LOCATIVE | _DESTINATION
 
@@ -407,7 +427,7 @@ def _words(
         else:
             unread = unforbidden_verb(w, cats, words, i, guard)
         if unread is None and not _locative_word(instruction, i, toks, mentions):
-            unread = _noun(w, cats)
+            unread = None if _beneficiary(toks, i, mentions, parse) else _noun(w, cats)
         if (
             "negation" in cats
             and guard is None
@@ -438,6 +458,22 @@ def _locative_word(
         return False
     clause = _clause_span(instruction, toks[i][1])
     return any(clause[0] <= m.char_start < toks[j][1] for m in mentions)
+
+
+def _beneficiary(
+    toks: list[tuple[str, int, int]], i: int, mentions: list[Mention], parse: ParseUsage
+) -> bool:
+    """The person of "get me the salt and put it on the table": for whom, not where to, when a task
+    places the thing named right after it (with no such task, "get me the salt" is unread as it was)."""
+    if toks[i][0] not in ("me", "us") or i == 0 or toks[i - 1][0] not in _GET_FOR:
+        return False
+    after = next((m for m in mentions if m.start > i), None)
+    gap = [w for w, _, _ in toks[i + 1 : after.start]] if after else ["-"]
+    objects = {o for _, role, st in parse.slots() if role == "object" for o in st}
+    return after is not None and set(gap) <= DETERMINERS and bool(set(after.entry.types) & objects)
+
+
+_GET_FOR = frozenset({"get", "grab", "fetch"})  # never "bring", "hand", "give": to the person
 
 
 def _after_negation(instruction: str, tok: tuple[str, int, int]) -> bool:

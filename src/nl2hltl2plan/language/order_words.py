@@ -1,5 +1,6 @@
 """Order words in word accounting (`accounting.account`): a sequence word needs an ordering between the
-base tasks, a phrase that frees an order needs an unordered pair, and "X before Y ... Y before X" is a
+base tasks, a phrase that frees an order needs an unordered pair, an order said of named things ("prior
+to putting the pillows, put a vase ...") must be the parse's order, and "X before Y ... Y before X" is a
 cycle (an input error).
 
 >>> from nl2hltl2plan.language.grounding import tokens
@@ -8,7 +9,7 @@ cycle (an input error).
 >>> two = [BaseTaskSpec(id=i, kind="place", object=["Mug"], receptacle=["Sink"]) for i in "AB"]
 >>> text = "put a mug in the sink, then another - either order is ok"
 >>> [u.words for u in unordered_steps(tokens(text), set(), ParseUsage(two, [("A", "B")]))]
-['either order']
+['either order is ok']
 """
 
 from __future__ import annotations
@@ -30,16 +31,21 @@ from nl2hltl2plan.language.task_specs import transitive_closure
 _FREE_PHRASE = re.compile(rf"\b{free_order_phrase()}\b")
 
 
-def _not_a_step(words: list[str], i: int) -> bool:
+def _not_a_step(words: list[str], i: int, in_mention: set[int]) -> bool:
     """An order word that names no step: "next to the sink" (a place), "go ahead and", "the second drawer"
-    (an ordinal of a place), "your first job: X, Y" (a heading of the list, read so by the grammar's
-    openers)."""
+    and "in second drawer" (an ordinal of a place), "your first job: X, Y" (a heading of the list, read so
+    by the grammar's openers)."""
+    ordinal = words[i] in ("first", "second", "third")
     return (
         words[i : i + 2] == ["next", "to"]
         or words[i - 1 : i + 1] == ["go", "ahead"]
-        or (words[i] in ("first", "second", "third") and i > 0 and words[i - 1] in ("the", "a", "its"))
+        or (ordinal and i > 0 and words[i - 1] in ("the", "a", "its"))
+        or (ordinal and i + 1 in in_mention and i > 0 and words[i - 1] in _PLACE_PREPOSITIONS)
         or (words[i - 1 : i + 1] == ["your", "first"] and words[i + 1 : i + 2] in (["job"], ["task"]))
     )
+
+
+_PLACE_PREPOSITIONS = frozenset({"in", "into", "on", "onto", "inside", "from", "to"})
 
 
 def unordered_steps(
@@ -53,7 +59,7 @@ def unordered_steps(
     words = [
         w
         for i, w in enumerate(plain)
-        if i not in in_mention and "order" in categories(w) and not _not_a_step(plain, i)
+        if i not in in_mention and "order" in categories(w) and not _not_a_step(plain, i, in_mention)
     ]
     text = " ".join(plain)
     words += [p for p in ("in that order", "in this order") if f" {p} " in f" {text} "]
@@ -102,3 +108,107 @@ def check_cycles(
         return
     names = [camel_words(a) for a, _ in cycle] + [camel_words(cycle[0][0])]
     raise HTTError(f"cyclic order in the instruction: {' before '.join(names)}")
+
+
+def misordered(
+    instruction: str, toks: list[tuple[str, int, int]], mentions: list[Mention], parse: ParseUsage
+) -> list[Unread]:
+    """An order said of named things that the reading does not keep: "Prior to putting the pillows, put
+    a vase in the safe" needs the vase's task before the pillows' task, "Y after you put the X" and "the
+    moment the X is in the P, Y" the X's before Y's. The connective opens a clause whose object is named
+    right after it (over "you", "you've", one verb and determiners); the other clause is the rest of the
+    sentence after the comma that closes it, or before the connective."""
+    objects = {o for t in parse.tasks for o in [*t.object, *(t.container or [])]}
+    closure = transitive_closure(list(parse.before), [t.id for t in parse.tasks])
+    lowered, out = instruction.lower(), []
+    for conn in _CONNECTIVE.finditer(lowered):
+        j = next((k for k, t in enumerate(toks) if t[1] >= conn.end()), len(toks))
+        named = _named_after(toks, j, mentions)
+        if named is None or not set(named.entry.types) & objects:
+            continue
+        if re.search(r"[,;:.!?]", instruction[conn.end() : named.char_start]):
+            continue  # "Once finished, move the plunger": the plunger is the main clause's
+        sentence = _sentence_span(instruction, conn.start())
+        before_it = lowered[sentence[0] : conn.start()]
+        if any("negation" in categories(w) for w in re.findall(r"[\w']+", before_it)):
+            continue  # "do not put X before Y": X after Y (the negation's reading)
+        if _LEADS.fullmatch(before_it.rsplit(",", 1)[-1]):  # "Prior to X, Y": Y after the comma
+            comma = instruction.find(",", named.char_end, sentence[1])
+            if comma < 0:
+                continue  # no other clause in the sentence
+            other, clause = (comma, sentence[1]), (conn.start(), comma)
+        else:  # "Y before you put the X": Y before the connective
+            other, clause = (sentence[0], conn.start()), (conn.start(), sentence[1])
+        firsts = _tasks_of(parse, named, mentions, clause)
+        seconds = _tasks_in(instruction, parse, other, mentions, objects) - firsts
+        if not firsts or not seconds:
+            continue
+        after = conn.group("before") is None
+        pairs = {(a, b) if after else (b, a) for a in firsts for b in seconds}
+        if not pairs & closure:
+            words = instruction[conn.start() : named.char_end]
+            out.append(Unread(words, "order", "the reading does not order the tasks as these words say"))
+    return out
+
+
+_CONNECTIVE = re.compile(
+    r"\b(?:(?P<before>before|prior to|ahead of)|after|once|following|the moment|as soon as)\b"
+)
+_SUBJECT = frozenset(
+    {"you", "you've", "you're", "we", "we've", "i", "i've", "have", "having", "done", "finished"}
+)
+
+
+def _named_after(toks: list[tuple[str, int, int]], j: int, mentions: list[Mention]) -> Mention | None:
+    """The thing named right after a connective at token `j`: over a subject, one verb and determiners."""
+    while j < len(toks) and toks[j][0] in _SUBJECT:
+        j += 1
+    starts = {m.start: m for m in mentions}
+    if j < len(toks) and j not in starts and _a_verb(toks[j][0]):
+        j += 1  # the verb ("putting", "you put", "chilling")
+    while j < len(toks) and toks[j][0] in DETERMINERS - _DEMONSTRATIVES:
+        j += 1
+    return starts.get(j)
+
+
+_DEMONSTRATIVES = frozenset({"that", "this", "those", "these"})  # "after that the mug ...": that step
+
+
+def _a_verb(word: str) -> bool:
+    return word.endswith("ing") or any(c.startswith("verb_") for c in categories(word))
+
+
+# what may stand between a clause's start (the sentence's, or a comma's) and a connective that opens it
+_LEADS = re.compile(r"\s*(?:(?:and|then|but|so|right|just|only)\s*)*")
+
+
+def _sentence_span(text: str, at: int) -> tuple[int, int]:
+    start = max((k + 1 for k in range(at) if text[k] in ".;!?"), default=0)
+    end = next((k for k in range(at, len(text)) if text[k] in ".;!?"), len(text))
+    return start, end
+
+
+def _tasks_of(
+    parse: ParseUsage, named: Mention, mentions: list[Mention], clause: tuple[int, int]
+) -> set[str]:
+    """The tasks of the thing named after a connective: of its type, and, where the clause names a place
+    one of them uses ("once the soap is on the toilet"), those that use it."""
+    types = set(named.entry.types)
+    ids = {t.id for t in parse.tasks if set(t.object) & types or set(t.container or []) & types}
+    places = {p for m in mentions if named.char_end <= m.char_start < clause[1] for p in m.entry.types}
+    there = {t.id for t in parse.tasks if t.id in ids and set(t.receptacle or []) & places}
+    return there or ids
+
+
+def _tasks_in(
+    instruction: str, parse: ParseUsage, span: tuple[int, int], mentions: list[Mention], objects: set[str]
+) -> set[str]:
+    """The tasks said in a clause: those whose own words lie in it, else those of the things it names."""
+    lowered = instruction.lower()
+    said = {t for m in mentions if span[0] <= m.char_start < span[1] for t in m.entry.types} & objects
+    own = set()
+    for t in parse.tasks:
+        at = lowered.find(t.text.lower()) if t.text else -1
+        if at >= 0 and at < span[1] and at + len(t.text) > span[0] and set(t.object) & said:
+            own.add(t.id)
+    return own or {t.id for t in parse.tasks if set(t.object) & said or set(t.container or []) & said}

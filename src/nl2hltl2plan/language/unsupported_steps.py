@@ -6,7 +6,7 @@ other apple"), switching a machine on ("start it"), an object's task said to com
 what no spec says at all (`vague_words`): questions, vague amounts and places, times, waiting on a state.
 
 >>> from nl2hltl2plan.language.parse_usage import ParseUsage
-from nl2hltl2plan.language.task_specs import BaseTaskSpec
+>>> from nl2hltl2plan.language.task_specs import BaseTaskSpec
 >>> [u.words for u in returns_and_repeats("bring it back", [], ParseUsage([], [], [], []))]
 ['back']
 """
@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import re
 from collections import Counter
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 
 import networkx as nx
 
@@ -138,6 +138,8 @@ def treated_after_placing(instruction: str, mentions: list[Mention], parse: Pars
         for then in _THEN_VERB.finditer(lowered, start, sentence_end):
             if not (placed and then.start() > max(placed) and categories(then.group(1)) & wanted):
                 continue
+            if _treats_its_own(then, t, parse.tasks, lowered):
+                continue  # "..., then cook a tomato and put it in the sink": another task's own treatment
             after = lowered[then.end() : then.end() + 40]
             if _PRONOUN.match(after) or any(
                 m.char_start >= then.end()
@@ -149,6 +151,24 @@ def treated_after_placing(instruction: str, mentions: list[Mention], parse: Pars
                     Unread(then.group(0), "order", f"task {t.id}'s treatment comes before its placing")
                 )
     return out
+
+
+def _treats_its_own(
+    then: re.Match[str], task: BaseTaskSpec, tasks: Sequence[BaseTaskSpec], text: str
+) -> bool:
+    """Is the treatment verb after an order word the first words of another task that has this treatment
+    ("place a heated tomato in the sink, then cook a tomato and put it in the sink": two tasks)?"""
+    verb = then.group(1)
+    for u in tasks:
+        if u is task or not u.text or not categories(verb) & ({f"verb_{u.kind}"} | _SLICED[u.sliced]):
+            continue
+        at = text.find(u.text.lower())  # not found where `everyday` rewrote a phrase ("rinse off")
+        if (at <= then.start(1) < at + len(u.text)) if at >= 0 else u.text.lower().split()[0] == verb:
+            return True
+    return False
+
+
+_SLICED = {True: {"verb_sliced"}, False: set()}
 
 
 _PRONOUN = re.compile(rf"\s+(?:{'|'.join(sorted(PRONOUNS))})\b")
