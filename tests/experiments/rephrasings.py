@@ -760,3 +760,55 @@ DEV_H83: dict[int, list[str]] = {
         "Fill the yellow plate with the orange and the green apple, then fill the blue plate with the red "
         "apple and the carrot."],
 }
+
+# Issue 28 (h87): held-out rephrasings, written and committed before any h87 rule, in voices no older batch
+# uses (archaic "pray ... upon", a diner's order, JSON, a yoga teacher, a pirate, a chat message with an
+# @-mention and an emoji code, a bureaucrat's "hereby", a game-show host, meeting action items, a stand-up
+# note, "picture this when you're done", a rhyme, a tutorial, a military objective list) and framings they
+# do not ("followed by", "wait until", "move on to", "how you get there is up to you", "in this step");
+# measured once on first contact and once at the end (scripts/tabletop_styles.py --batch VALID_H87), never
+# read per sentence between.
+VALID_H87: dict[int, list[str]] = {
+    1: ["Pray, set the green apple upon the blue plate, and the orange upon the yellow plate.",
+        "I'll have the green apple on the blue plate and the orange on the yellow plate, thanks.",
+        '{"green apple": "blue plate", "orange": "yellow plate"}',
+        "Gently lift the green apple and rest it on the blue plate, and gently rest the orange on the "
+        "yellow plate. Nice and slow.",
+        "Arr, stow the green apple on the blue plate and the orange on the yellow plate, matey!",
+        "@robot can you put the green apple on the blue plate and the orange on the yellow plate :pray:"],
+    2: ["It is hereby requested that the green apple be placed on the pink plate, the orange on the yellow "
+        "plate and the red apple on the blue plate, in no prescribed order.",
+        "Tonight's challenge: green apple to the pink plate, orange to the yellow plate, red apple to the "
+        "blue plate - tackle them in any order you like!",
+        "Action items (unordered): green apple onto pink plate; orange onto yellow plate; red apple onto "
+        "blue plate.",
+        "Per today's stand-up, the green apple needs to go on the pink plate, the orange on the yellow plate "
+        "and the red apple on the blue plate. Feel free to tackle these in any order.",
+        "Picture this when you're done: green apple on the pink plate, orange on the yellow plate, red apple "
+        "on the blue plate. How you get there is up to you.",
+        "Green apple to the pink, orange to the yellow, red apple to the blue - any order, fellow!"],
+    3: ["The customer wants the carrot on the blue plate, the orange on the yellow plate, the green apple on "
+        "the green plate and the red apple on the pink plate - any order.",
+        '{"carrot": "blue plate", "orange": "yellow plate", "green apple": "green plate", "red apple": '
+        '"pink plate"}',
+        "Pray place the carrot upon the blue plate, the orange upon the yellow, the green apple upon the "
+        "green, and the red apple upon the pink; the order thereof is of no import.",
+        "In this step, you'll put the carrot on the blue plate, the orange on the yellow plate, the green "
+        "apple on the green plate and the red apple on the pink plate. You can go in any order.",
+        "No hurry at all - carrot on the blue plate, orange on the yellow plate, green apple on the green "
+        "plate, red apple on the pink plate, in whatever order feels natural.",
+        "@robot quick ask :) carrot -> blue plate, orange -> yellow plate, green apple -> green plate, red "
+        "apple -> pink plate. order is whatever"],
+    4: ["Objective one: green apple and orange onto the yellow plate. Objective two: carrot and red apple "
+        "onto the blue plate, in either order.",
+        "The green apple and the orange go on the yellow plate, followed by the carrot and the red apple on "
+        "the blue plate.",
+        "Start off by putting the green apple and the orange on the yellow plate. Once you've finished with "
+        "the yellow plate, move on to the blue plate: carrot and red apple, whichever order.",
+        "Firstly, set the green apple and the orange upon the yellow plate; thereafter, the carrot and the "
+        "red apple upon the blue plate, in whichever order thou wilt.",
+        "The carrot and the red apple go on the blue plate, but wait until the green apple and the orange "
+        "are on the yellow plate.",
+        "First, ye load the yellow plate with the green apple and the orange. Then ye load the blue plate "
+        "with the carrot and the red apple, arr!"],
+}
