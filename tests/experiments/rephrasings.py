@@ -812,3 +812,45 @@ VALID_H87: dict[int, list[str]] = {
         "First, ye load the yellow plate with the green apple and the orange. Then ye load the blue plate "
         "with the carrot and the red apple, arr!"],
 }
+
+# Issue 28 (h87): rephrasings for developing h87's rules (read per sentence), in voices VALID_H87 does not
+# use (a film director, a tour guide, a cowboy, a tweet with hashtags, a shouted sign, "do the needful", a
+# haiku-like terse voice, a bartender) and the shapes older held-out batches left refused, in other words
+# (a question heading, a bracketed "order:" remark on its own line, lettered labels, "before ... gets
+# anything", a freedom said with "as you please", a heading with "one", a negated "until", "shall first").
+DEV_H87: dict[int, list[str]] = {
+    1: ["Action! The green apple goes on the blue plate, the orange on the yellow plate. Cut!",
+        "Howdy partner, rustle that green apple onto the blue plate and the orange onto the yellow plate.",
+        "PLEASE PLACE THE GREEN APPLE ON THE BLUE PLATE AND THE ORANGE ON THE YELLOW PLATE",
+        "Kindly do the needful: green apple on the blue plate, orange on the yellow plate.",
+        "Where do things go? Green apple on the blue plate, orange on the yellow plate.",
+        "Could I trouble you to put the green apple on the blue plate and the orange on the yellow plate?"],
+    2: ["On your left, the pink plate, which will hold the green apple; the yellow plate takes the orange and "
+        "the blue plate the red apple. Any order at all.",
+        "green apple on pink plate, orange on yellow plate, red apple on blue plate #tidy #anyorder",
+        "Fruit | Plate\ngreen apple | pink plate\norange | yellow plate\nred apple | blue plate\n(sequence: "
+        "up to you)",
+        "Green apple, pink plate; orange, yellow plate; red apple, blue plate. Shuffle the order as you like.",
+        "One more thing: the green apple on the pink plate, the orange on the yellow plate, the red apple on "
+        "the blue plate, any order."],
+    3: ["Pour me - I mean, place the carrot on the blue plate, the orange on the yellow plate, the green "
+        "apple on the green plate and the red apple on the pink plate, any order.",
+        "What goes where: carrot on the blue plate, orange on the yellow plate, green apple on the green "
+        "plate, red apple on the pink plate. Order as you please.",
+        "Could you be a sweetheart and put the carrot on the blue plate, the orange on the yellow plate, the "
+        "green apple on the green plate and the red apple on the pink plate? Any order.",
+        "Four quick ones, any order: carrot onto the blue plate, orange onto the yellow plate, green apple "
+        "onto the green plate, red apple onto the pink plate."],
+    4: ["Part A: green apple and orange onto the yellow plate. Part B: carrot and red apple onto the blue "
+        "plate.",
+        "The yellow plate gets the green apple and the orange before the blue plate gets anything; then the "
+        "blue plate gets the carrot and the red apple.",
+        "Leave the blue plate empty until the green apple and the orange are on the yellow plate, then put "
+        "the carrot and the red apple on the blue plate.",
+        "The robot shall first place the green apple and the orange on the yellow plate and shall then "
+        "place the carrot and the red apple on the blue plate.",
+        "Nothing goes on the blue plate until the green apple and the orange are on the yellow plate; after "
+        "that, the carrot and the red apple go on the blue plate.",
+        "You shall first put the green apple and the orange on the yellow plate, and you shall then put the "
+        "carrot and the red apple on the blue plate."],
+}

@@ -200,6 +200,8 @@ CARROT_ORANGE_THEN_APPLE = (
     "text",
     [
         "Phase one: carrot and orange onto the yellow plate. Phase two: green apple onto the blue plate.",
+        "Part A: carrot and orange onto the yellow plate. Part B: green apple onto the blue plate.",
+        "Objective I) carrot and orange on the yellow plate. Objective II) green apple on the blue plate.",
         "1st carrot & orange on yellow plate, then green apple on blue plate",
         "What I need first is the carrot and the orange on the yellow plate, and after that the green apple "
         "on the blue plate",
@@ -452,8 +454,15 @@ def test_the_order_of_two_steps_whatever_words_say_it(text):
     assert len(yellow) == len(blue) == 2 and order == sorted((a, b) for a in yellow for b in blue)
 
 
-def test_steps_numbered_out_of_turn_are_refused():
-    assert _reading("Part 2: green apple on the blue plate. Part 1: orange on the yellow plate.") is None
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Part 2: green apple on the blue plate. Part 1: orange on the yellow plate.",
+        "Part B: green apple on the blue plate. Part A: orange on the yellow plate.",
+    ],
+)
+def test_steps_numbered_out_of_turn_are_refused(text):
+    assert _reading(text) is None
 
 
 def test_respectively_pairs_the_nth_object_with_the_nth_plate():

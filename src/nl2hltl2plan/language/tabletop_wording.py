@@ -358,13 +358,19 @@ def _name(found: str) -> str:
 
 # ---- step labels and list numbers ----------------------------------------------------------------------
 _NUMBER_WORDS = {"one": 1, "two": 2, "three": 3, "four": 4, "first": 1, "second": 2, "third": 3, "fourth": 4}
+# a label's place in turn: a digit, a number word or an ordinal, or (with a colon or bracket after it, so
+# that an article or "I" is not one) a letter or a roman numeral ("Part A:", "Phase II)")
+_LETTERS = {"a": 1, "b": 2, "c": 3, "d": 4, "i": 1, "ii": 2, "iii": 3, "iv": 4}
 _STEP_NOUN = r"(?:step|phase|stage|part|round|course|batch)"
+_TURN = r"(?:(?P<n1>\d|one|two|three|four|first|second|third|fourth)\s*[:.)\-]|(?P<l1>[a-d]|i{1,3}|iv)\s*[:)])"
 _LABEL = re.compile(
-    rf"(?:^|(?<=[.;!?:,]))\s*(?:{_STEP_NOUN}\s*(?P<n1>\d|one|two|three|four|first|second|third|fourth)|"
-    rf"(?P<n2>first|second|third|fourth)\s+{_STEP_NOUN})\s*[:.)\-]\s*"
+    rf"(?:^|(?<=[.;!?:,]))\s*(?:{_STEP_NOUN}\s*{_TURN}|(?P<n2>first|second|third|fourth)\s+{_STEP_NOUN}\s*[:.)\-])\s*",
+    re.IGNORECASE,
 )
 _NOUN_LABEL = re.compile(
-    r"(?:^|(?<=[.;!?:,]))\s*(?P<noun>[a-z]+)\s+(?P<n1>\d|one|two|three|four)(?P<n2>)\s*[:.)\-]\s*"
+    r"(?:^|(?<=[.;!?:,]))\s*(?P<noun>[a-z]+)\s+(?:(?P<n1>\d|one|two|three|four)\s*[:.)\-]|(?P<l1>[a-d]|i{1,3}|iv)"
+    r"\s*[:)])(?P<n2>)\s*",
+    re.IGNORECASE,
 )
 _LIST_NUMBER = re.compile(r"(?:^|(?<=[\s.;!?]))\(?(?P<n>\d)[.)]\s+")
 
@@ -374,7 +380,7 @@ def steps_read(text: str, listed: bool) -> str | None:
     numbers beside a remark that frees the whole list (`listed`: "1) ... 2) ... in any order") only list,
     and are removed. None: labels or numbers out of turn."""
     labels = _labels(text)
-    if [_step_number(m["n1"] or m["n2"]) for m in labels] != list(range(1, len(labels) + 1)):
+    if [_turn(m) for m in labels] != list(range(1, len(labels) + 1)):
         return None
     text = _as_steps(text, labels)
     return list_numbers_read(text, listed)
@@ -386,7 +392,7 @@ def _labels(text: str) -> list[re.Match[str]]:
     labels = list(_LABEL.finditer(text))
     if not labels:
         labels = list(_NOUN_LABEL.finditer(text))
-        if len(labels) < 2 or len({m["noun"] for m in labels}) != 1:
+        if len(labels) < 2 or len({m["noun"].lower() for m in labels}) != 1:
             return []
     return labels
 
@@ -395,7 +401,7 @@ def labels_out_of_turn(text: str) -> str | None:
     """The labels or list numbers of `text` (lowercased) when they are not 1, 2, ... in turn ("Part 2: ...
     Part 1: ..."): no reading may order the steps by where they are written."""
     numbers = [m[0].strip() for m in (*_labels(text), *_LIST_NUMBER.finditer(text))]
-    turns = [_step_number(m["n1"] or m["n2"]) for m in _labels(text)]
+    turns = [_turn(m) for m in _labels(text)]
     listed = [int(m["n"]) for m in _LIST_NUMBER.finditer(text)]
     if turns == list(range(1, len(turns) + 1)) and listed in ([], list(range(1, len(listed) + 1))):
         return None
@@ -416,9 +422,13 @@ def list_numbers_read(text: str, listed: bool) -> str | None:
 
 
 def numbered_steps(text: str) -> str:
-    """`text` with the numbers of a numbered list of two or more steps read (`list_numbers_read`: as
-    "first" / "then", or removed beside a remark that frees the whole list), so that every reader orders
-    the steps as the numbers do; the text as it is with no such list."""
+    """`text` with its step labels read as "first" / "then" when there are two or more in turn ("Part A:
+    ... Part B: ..."), and the numbers of a numbered list of two or more steps read (`list_numbers_read`:
+    as "first" / "then", or removed beside a remark that frees the whole list), so that every reader
+    orders the steps as the labels and numbers do; the text as it is with no such list."""
+    labels = _labels(text)
+    if len(labels) >= 2 and [_turn(m) for m in labels] == list(range(1, len(labels) + 1)):
+        text = " ".join(_as_steps(text, labels).split())
     if len(_LIST_NUMBER.findall(text)) < 2:
         return text
     read = list_numbers_read(text, frees_every_step(free_order(text.lower())[1]))
@@ -433,7 +443,11 @@ def _as_steps(text: str, marks: list[re.Match[str]]) -> str:
     return text
 
 
-def _step_number(word: str) -> int:
+def _turn(label: re.Match[str]) -> int:
+    """A label's place in turn: "Step 2:" -> 2, "Part B:" -> 2."""
+    if label["l1"]:
+        return _LETTERS[label["l1"].lower()]
+    word = (label["n1"] or label["n2"]).lower()
     return int(word) if word.isdigit() else _NUMBER_WORDS[word]
 
 
