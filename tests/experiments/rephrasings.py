@@ -825,12 +825,13 @@ DEV_H87: dict[int, list[str]] = {
         "Kindly do the needful: green apple on the blue plate, orange on the yellow plate.",
         "Where do things go? Green apple on the blue plate, orange on the yellow plate.",
         "Could I trouble you to put the green apple on the blue plate and the orange on the yellow plate?"],
-    2: ["On your left, the pink plate, which will hold the green apple; the yellow plate takes the orange and "
-        "the blue plate the red apple. Any order at all.",
+    2: ["On your left, the pink plate, which will hold the green apple; the yellow plate takes the orange "
+        "and the blue plate the red apple. Any order at all.",
         "green apple on pink plate, orange on yellow plate, red apple on blue plate #tidy #anyorder",
         "Fruit | Plate\ngreen apple | pink plate\norange | yellow plate\nred apple | blue plate\n(sequence: "
         "up to you)",
-        "Green apple, pink plate; orange, yellow plate; red apple, blue plate. Shuffle the order as you like.",
+        "Green apple, pink plate; orange, yellow plate; red apple, blue plate. Shuffle the order as you "
+        "like.",
         "One more thing: the green apple on the pink plate, the orange on the yellow plate, the red apple on "
         "the blue plate, any order."],
     3: ["Pour me - I mean, place the carrot on the blue plate, the orange on the yellow plate, the green "

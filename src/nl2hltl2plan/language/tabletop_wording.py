@@ -362,9 +362,12 @@ _NUMBER_WORDS = {"one": 1, "two": 2, "three": 3, "four": 4, "first": 1, "second"
 # that an article or "I" is not one) a letter or a roman numeral ("Part A:", "Phase II)")
 _LETTERS = {"a": 1, "b": 2, "c": 3, "d": 4, "i": 1, "ii": 2, "iii": 3, "iv": 4}
 _STEP_NOUN = r"(?:step|phase|stage|part|round|course|batch)"
-_TURN = r"(?:(?P<n1>\d|one|two|three|four|first|second|third|fourth)\s*[:.)\-]|(?P<l1>[a-d]|i{1,3}|iv)\s*[:)])"
+_TURN = (
+    r"(?:(?P<n1>\d|one|two|three|four|first|second|third|fourth)\s*[:.)\-]|(?P<l1>[a-d]|i{1,3}|iv)\s*[:)])"
+)
 _LABEL = re.compile(
-    rf"(?:^|(?<=[.;!?:,]))\s*(?:{_STEP_NOUN}\s*{_TURN}|(?P<n2>first|second|third|fourth)\s+{_STEP_NOUN}\s*[:.)\-])\s*",
+    rf"(?:^|(?<=[.;!?:,]))\s*(?:{_STEP_NOUN}\s*{_TURN}|(?P<n2>first|second|third|fourth)\s+{_STEP_NOUN}"
+    r"\s*[:.)\-])\s*",
     re.IGNORECASE,
 )
 _NOUN_LABEL = re.compile(
