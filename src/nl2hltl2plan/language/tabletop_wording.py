@@ -33,7 +33,7 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable
 
-from nl2hltl2plan.language.content_words import free_order_phrase, phrase_list_pattern
+from nl2hltl2plan.language.content_words import free_order_phrase, phrase_list_pattern, phrase_words
 from nl2hltl2plan.language.grounding import sentence_start
 from nl2hltl2plan.language.statements import WHERE_VERB, asked_before
 
@@ -113,29 +113,28 @@ _CORRECTION = re.compile(
     r"^[\s,.;:!\-]*(?:(?:no|sorry|wait|oops|whoops|actually|rather|or\s+rather|i\s+mean[t]?|make\s+that|"
     r"correction|scratch\s+that|my\s+mistake|my\s+bad)\b[\s,.;:!\-]*)+(?:the\s+|a\s+|an\s+)?$"
 )
-_POLITE = re.compile(rf"\b{phrase_list_pattern('courtesy.txt', 'wish')}\b")  # courtesy.txt's polite wishes
-_FILLER = re.compile(
-    r"^\W*(?:let\s+me\s+see|let's\s+see)\b|\bchop\s+chop\b|\bfind\s+(?:below|attached|enclosed)\b|"
-    r"\bgo\s+ahead\s+and\b"
-)
+
+
+def _courtesy(kind: str) -> str:
+    """The phrases of one kind of `courtesy.txt`, as one regular expression."""
+    return phrase_list_pattern("courtesy.txt", kind)
+
+
+_POLITE = re.compile(rf"\b{_courtesy('wish')}\b")  # polite wishes: "it would please me if"
+_FILLER = re.compile(rf"^\W*{_courtesy('opening')}\b|\b{_courtesy('filler')}\b")  # carry nothing
 # a letter's frame: a subject line ("Subject: plates", "Re: tidying") that names nothing and says no order
 # and a sign-off ("Best, Sam", "Thanks,\nJo") closing the text: neither is part of the request
 # (its line break is gone by then: it ends where the letter's first sentence begins, with a capital)
 _HEADER_LINE = re.compile(r"^\s*(?i:subject|re|fwd?|topic|title)\s*:(?P<words>[^.:;!?]*?)\s+(?=[A-Z])")
-_SIGN_OFF = re.compile(
-    r"(?<=[.!?\n])\s*(?i:best|regards|kind\s+regards|best\s+regards|best\s+wishes|cheers|thanks|thank\s+you|"
-    r"many\s+thanks|love|yours|sincerely|ta)\s*,?\s*(?P<name>[A-Z][a-z]+)\W*$"
-)
+_SIGN_OFF = re.compile(rf"(?<=[.!?\n])\s*(?i:{_courtesy('sign_off')})\s*,?\s*(?P<name>[A-Z][a-z]+)\W*$")
 _SAYS_ORDER = re.compile(
     r"\b(?:order|sequence|first|then|before|after|until|next|last|not|no|never)\b|n't|\d"
 )
 # "don't forget (to)": a reminder, which asks as "please" asks (not a negation)
-_REMINDER = re.compile(r"\b(?:don'?t|do\s+not)\s+forget(?:\s+to)?\b")
+_REMINDER = re.compile(rf"\b{_courtesy('reminder')}\b")
 # "if you could X, that would be great": a polite frame around a request, not a condition
 _IF_YOU_COULD = re.compile(
-    r"(?:^|(?<=[.!?]\s))(?P<pre>\W*)if\s+you\s+(?:could|would|can)(?:\s+please)?\b(?P<body>[^.;!?]*?),?\s*"
-    r"\b(?:that|it)(?:'d|\s+would|'ll|\s+will|'s|\s+is)\s+be\s+(?:so\s+|really\s+|very\s+)?(?:great|lovely|nice|"
-    r"wonderful|perfect|awesome|amazing|brilliant|fantastic|helpful|ideal|super|(?:much\s+)?appreciated)\b"
+    rf"(?:^|(?<=[.!?]\s))(?P<pre>\W*){_courtesy('request')}\b(?P<body>[^.;!?]*?),?\s*\b{_courtesy('thanks')}\b"
 )
 _THE_FOLLOWING = re.compile(r"\b(?:the\s+)?following(?=\s*:)")  # a list's heading: "arrange the following:"
 # an aside that only describes the thing before it: "the green apple, the nice shiny one, goes ..."
@@ -458,12 +457,8 @@ def _turn(label: re.Match[str]) -> int:
 # (read word by word, whatever their phrasing: every word must belong to the clause's kind)
 _SENTENCE_PIECE = re.compile(r"[^.;:!?()\n]+")
 _CLAUSE = re.compile(r"[^,.;:!?()\n]+?(?=\s+-\s+|[,.;:!?()\n]|$)")
-_COURTESY_WORDS = frozenset(
-    "hey hi hiya hello yo ok okay so alright right well um uh erm please thanks thank cheers kindly dear "
-    "sweetie mate buddy robot when whenever if you you're youre u get got have find a an some spare are can "
-    "could would will mind doing me favour favor like just quick pls plz thx ty ta".split()
-)
-_UNHURRIED = re.compile(r"\bno\s+(?:rush|hurry|worries|pressure)\b")
+_COURTESY_WORDS = phrase_words("courtesy.txt", "courtesy_word")
+_UNHURRIED = re.compile(rf"\b{_courtesy('unhurried')}\b")
 _TIDY_VERB = r"(?:sort|organi[sz]e|arrange|tidy|handle|do|fix|set\s+up|lay\s+out)"
 _THE_THINGS = (
     r"(?:these|this|that|them|things|stuff|everything|the\s+(?:items|things|fruits?|plates|following))"
@@ -523,7 +518,7 @@ def remarks_read(text: str, names: Iterable[str]) -> str:
     return re.sub(r"[ \t]+([,.;:!?])", r"\1", re.sub(r"[ \t]+", " ", text)).strip()
 
 
-_YOUR_TIME = frozenset("sec second moment minute chance time free".split())
+_YOUR_TIME = phrase_words("courtesy.txt", "your_time")
 _YOU = frozenset({"you", "you're", "youre", "u"})
 
 
