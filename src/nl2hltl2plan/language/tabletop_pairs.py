@@ -29,6 +29,7 @@ from nl2hltl2plan.language.grammar.restated import count_fits
 from nl2hltl2plan.language.grounding import camel_words
 from nl2hltl2plan.language.htt_build import build_htt
 from nl2hltl2plan.language.result import LanguageResult
+from nl2hltl2plan.language.tabletop_waits import plate_waits_read
 from nl2hltl2plan.language.tabletop_wording import (
     corrected,
     free_order,
@@ -145,7 +146,7 @@ class TabletopReader:
                 f"'{stated}' says where something is, not what to do: ask for it (\"put ...\", \"make sure "
                 "... is on ...\") or leave it out"
             )
-        return numbered_steps(corrected(instruction, kinds))
+        return numbered_steps(plate_waits_read(corrected(instruction, kinds), kinds))
 
     def reread(self, instruction: str, backend: str) -> LanguageResult | None:
         return tabletop_fallback(instruction, self.world, backend)

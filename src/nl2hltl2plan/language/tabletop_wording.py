@@ -36,6 +36,7 @@ from collections.abc import Iterable
 from nl2hltl2plan.language.content_words import free_order_phrase, phrase_list_pattern, phrase_words
 from nl2hltl2plan.language.grounding import sentence_start
 from nl2hltl2plan.language.statements import WHERE_VERB, asked_before
+from nl2hltl2plan.language.tabletop_waits import plate_waits_read
 
 # ---- statements ---------------------------------------------------------------------------------------
 # where it is: on or in a place, or "fine where it is" / "good as it is" / "fine there"
@@ -115,26 +116,26 @@ _CORRECTION = re.compile(
 )
 
 
-def _courtesy(kind: str) -> str:
+def _polite(kind: str) -> str:
     """The phrases of one kind of `courtesy.txt`, as one regular expression."""
     return phrase_list_pattern("courtesy.txt", kind)
 
 
-_POLITE = re.compile(rf"\b{_courtesy('wish')}\b")  # polite wishes: "it would please me if"
-_FILLER = re.compile(rf"^\W*{_courtesy('opening')}\b|\b{_courtesy('filler')}\b")  # carry nothing
+_POLITE = re.compile(rf"\b{_polite('wish')}\b")  # polite wishes: "it would please me if"
+_FILLER = re.compile(rf"^\W*{_polite('opening')}\b|\b{_polite('filler')}\b")  # carry nothing
 # a letter's frame: a subject line ("Subject: plates", "Re: tidying") that names nothing and says no order
 # and a sign-off ("Best, Sam", "Thanks,\nJo") closing the text: neither is part of the request
 # (its line break is gone by then: it ends where the letter's first sentence begins, with a capital)
 _HEADER_LINE = re.compile(r"^\s*(?i:subject|re|fwd?|topic|title)\s*:(?P<words>[^.:;!?]*?)\s+(?=[A-Z])")
-_SIGN_OFF = re.compile(rf"(?<=[.!?\n])\s*(?i:{_courtesy('sign_off')})\s*,?\s*(?P<name>[A-Z][a-z]+)\W*$")
+_SIGN_OFF = re.compile(rf"(?<=[.!?\n])\s*(?i:{_polite('sign_off')})\s*,?\s*(?P<name>[A-Z][a-z]+)\W*$")
 _SAYS_ORDER = re.compile(
     r"\b(?:order|sequence|first|then|before|after|until|next|last|not|no|never)\b|n't|\d"
 )
 # "don't forget (to)": a reminder, which asks as "please" asks (not a negation)
-_REMINDER = re.compile(rf"\b{_courtesy('reminder')}\b")
+_REMINDER = re.compile(rf"\b{_polite('reminder')}\b")
 # "if you could X, that would be great": a polite frame around a request, not a condition
 _IF_YOU_COULD = re.compile(
-    rf"(?:^|(?<=[.!?]\s))(?P<pre>\W*){_courtesy('request')}\b(?P<body>[^.;!?]*?),?\s*\b{_courtesy('thanks')}\b"
+    rf"(?:^|(?<=[.!?]\s))(?P<pre>\W*){_polite('request')}\b(?P<body>[^.;!?]*?),?\s*\b{_polite('thanks')}\b"
 )
 _THE_FOLLOWING = re.compile(r"\b(?:the\s+)?following(?=\s*:)")  # a list's heading: "arrange the following:"
 # an aside that only describes the thing before it: "the green apple, the nice shiny one, goes ..."
@@ -155,7 +156,7 @@ def plain_words(text: str, kinds: dict[str, bool], heads: dict[str, list[str]]) 
     a tidying verb before an object as "put", plates said by colour named, questions joined with their
     answers, corrections applied and plurals named. `kinds`: each object or plate name (in words) -> is
     it a plate; `heads`: a head noun that several objects share ("apple") -> their names."""
-    text = _letter_frame_dropped(text, kinds).lower()
+    text = plate_waits_read(_letter_frame_dropped(text, kinds).lower(), kinds)
     text = re.sub(r"\b(1st|2nd|3rd|4th)\b", lambda m: _ORDINALS[m[1]], text)
     text = _IF_YOU_COULD.sub(r"\g<pre>please\g<body>", _REMINDER.sub("please", text))
     text = _THE_FOLLOWING.sub("these", _FILLER.sub(" ", polite_frames(text)))
@@ -458,7 +459,7 @@ def _turn(label: re.Match[str]) -> int:
 _SENTENCE_PIECE = re.compile(r"[^.;:!?()\n]+")
 _CLAUSE = re.compile(r"[^,.;:!?()\n]+?(?=\s+-\s+|[,.;:!?()\n]|$)")
 _COURTESY_WORDS = phrase_words("courtesy.txt", "courtesy_word")
-_UNHURRIED = re.compile(rf"\b{_courtesy('unhurried')}\b")
+_UNHURRIED = re.compile(rf"\b{_polite('unhurried')}\b")
 _TIDY_VERB = r"(?:sort|organi[sz]e|arrange|tidy|handle|do|fix|set\s+up|lay\s+out)"
 _THE_THINGS = (
     r"(?:these|this|that|them|things|stuff|everything|the\s+(?:items|things|fruits?|plates|following))"
