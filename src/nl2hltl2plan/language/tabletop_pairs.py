@@ -158,16 +158,33 @@ class TabletopReader:
         return type(refused)(f"{refused}{has}") if has else refused
 
     def doubted(self, res: LanguageResult, backend: str) -> LanguageResult:
-        """The grammar's full reading, made partial where the pairs reading reads the instruction too and
-        gives other placements or another order: two readings that differ are never a guess."""
+        """The grammar's full reading, or the pairs reading where it reads the instruction too, gives other
+        placements or another order, and check 1 on the words it read accepts it and rejects the grammar's
+        reading ("The robot shall first place A on P and shall then place B on Q": the grammar pairs A with
+        Q and leaves "first" and "then" unused); made partial where neither is rejected: two readings that
+        differ are never a guess."""
         paired = tabletop_fallback(res.instruction, self.world, backend)
         if paired is None or _signature(paired) == _signature(res):
             return res
+        if self._rejected_on_words_paired(res):
+            return paired
         why = (
             f"'the placements and their order' (order): read two ways, {_described(res)} (the grammar) or "
             f"{_described(paired)} (object and plate paired); say it another way"
         )
         return res.model_copy(update={"unparsed": [*res.unparsed, why]})
+
+    def _rejected_on_words_paired(self, res: LanguageResult) -> bool:
+        """Does check 1 reject the grammar's reading on the words the pairs reading read (its wording rules
+        applied), which the pairs reading passed?"""
+        read = read_pairs(res.instruction, set(self.world.object_types()))
+        if read is None:
+            return False
+        instances = Counter(o.type for o in self.world.objects.values() if o.present)
+        try:
+            return bool(account(read[3], res.tasks, res.before, instances, self.world.name))
+        except HTTError:  # a count or order check 1 rejects outright
+            return True
 
     def unused(self, res: LanguageResult) -> list[Unread]:
         """Each object or plate the instruction names (outside its negated clauses) that no base task
