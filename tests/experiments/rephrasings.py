@@ -855,3 +855,40 @@ DEV_H87: dict[int, list[str]] = {
         "You shall first put the green apple and the orange on the yellow plate, and you shall then put the "
         "carrot and the red apple on the blue plate."],
 }
+
+# Issue 28 (h87): a second development batch, sixteen sentences written at once in voices no batch uses (a
+# sports coach's play call, a flight attendant, a librarian, a kindergarten song, a ship's captain, a
+# hurried parent, a game tutorial, a scientist's notebook, a sceptic, a poet, a customer complaint, a
+# magician), measured before any rule for them.
+DEV2_H87: dict[int, list[str]] = {
+    1: ["Ladies and gentlemen, please ensure the green apple is stowed on the blue plate and the orange on "
+        "the yellow plate.",
+        "Shh, quietly now: the green apple to the blue plate, the orange to the yellow plate.",
+        "Green apple, find your blue plate! Orange, find your yellow plate!",
+        "Helm, set the green apple on the blue plate and the orange on the yellow plate. Make it so."],
+    2: ["Okay, quick, quick: green apple on the pink plate, orange on the yellow plate, red apple on the "
+        "blue plate - I don't care how, just do it.",
+        "Tutorial: drag the green apple to the pink plate, the orange to the yellow plate and the red apple "
+        "to the blue plate. You can do these in any order.",
+        "Observation plan: green apple placed on pink plate; orange placed on yellow plate; red apple placed "
+        "on blue plate. Order randomised.",
+        "I bet you can't put the green apple on the pink plate, the orange on the yellow plate and the red "
+        "apple on the blue plate. Any order, go on."],
+    3: ["The carrot for the blue plate, the orange for the yellow plate, the green apple for the green plate "
+        "and the red apple for the pink plate - in any order.",
+        "My complaint: the carrot is not on the blue plate. Put the carrot on the blue plate, the orange "
+        "on the yellow plate, the green apple on the green plate and the red apple on the pink plate, any "
+        "order.",
+        "And for my next trick: carrot onto the blue plate, orange onto the yellow plate, green apple onto "
+        "the green plate, red apple onto the pink plate, in any order whatsoever.",
+        "Here's a little job for you: put the carrot on the blue plate, the orange on the yellow plate, the "
+        "green apple on the green plate and the red apple on the pink plate. Any order is grand."],
+    4: ["Play one: green apple and orange to the yellow plate. Play two: carrot and red apple to the blue "
+        "plate.",
+        "Green apple and orange on the yellow plate - that's the first job. The second job: carrot and red "
+        "apple on the blue plate, any order.",
+        "Right, so before you go near the blue plate, put the green apple and the orange on the yellow "
+        "plate. Then the carrot and the red apple go on the blue plate.",
+        "The yellow plate is first in line: it gets the green apple and the orange. The blue plate is next: "
+        "it gets the carrot and the red apple."],
+}
