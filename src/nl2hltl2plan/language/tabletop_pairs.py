@@ -98,7 +98,7 @@ _HEADING = re.compile(r"^(?P<head>[^:]*):")
 _GENERIC_QUANTITY = re.compile(
     r"\b(?:each|every|all(?:\s+the)?)\s+(?:item|thing|fruit|object|piece|one)s?\b|"
     r"\b(?P<count>two|three|four)\s+(?:[a-z]+\s+)?(?:items?|things?|fruits?|objects?|placements?|moves?|"
-    r"pieces?|tasks?)\b"
+    r"pieces?|tasks?|ones|jobs|errands|chores)\b"
 )
 # "each plate gets one thing": one placement per plate, which the pairs listed after it must keep
 _ONE_PER_PLATE = re.compile(

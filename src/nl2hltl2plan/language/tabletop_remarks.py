@@ -18,7 +18,13 @@ from __future__ import annotations
 
 import re
 
-from nl2hltl2plan.language.content_words import free_order_phrase, phrase_list_pattern, phrase_words
+from nl2hltl2plan.language.content_words import (
+    categories,
+    free_order_phrase,
+    phrase_list_pattern,
+    phrase_words,
+)
+from nl2hltl2plan.language.statements import asked_before
 
 # the shared list (free_order.txt), anywhere in the text: "in any order", "the order is up to you", also
 # with a comma between its words ("Which order, is not important", "Within each step, any order")
@@ -81,6 +87,9 @@ def remarks_read(text: str, mention: re.Pattern[str]) -> str:
             if not words or mention.search(words):
                 continue
             read = None if FREE_ORDER.fullmatch(words) else _clause_read(words)  # a listed remark stays
+            if read is None:
+                at_edge = not _WORD.search(low[: piece.start()]) or not _WORD.search(low[piece.end() :])
+                read = frame_read(words, at_edge, low.startswith("?", piece.end()))
             if read is not None:
                 out.append(text[at : piece.start()] + (f" {read}" if read else ""))
                 at = piece.end()
@@ -113,6 +122,48 @@ def _opener_dropped(sentence: str) -> str:
 
 
 _ASKING = frozenset("i i'd we we'd want need would to".split())  # "I'd like you to sort the fruit:"
+# a clause that only urges, closes or announces ("make it so", "off you go", "quick one")
+_URGING = re.compile(
+    rf"^(?:{phrase_list_pattern('courtesy.txt', 'urging')}|{phrase_list_pattern('courtesy.txt', 'aside')})$"
+)
+# a frame at either end of the text: a short clause that names nothing and has no word that could say an
+# action, order, count, negation, condition, place or manner (check 1's categories, and the words below):
+# it greets, addresses or titles ("Arr", "Howdy partner", "Helm", "Tonight's challenge") and asks nothing
+# (not a question; not a goal's heading, "Final layout:", which asks for the states listed after it:
+# `statements.asked_before`)
+_FRAME_MOST_WORDS = 3
+_WORD = re.compile(r"\w")
+_MEANINGFUL = frozenset(
+    "order ordered ordering sequence sequential sequentially respectively reverse reversed backwards "
+    "alternate alternately together separately same only again also too except unless until while when if "
+    "left right top bottom above below over under near beside between behind front back side middle centre "
+    "center edge corner away off out down inside outside other others another else more less most least many "
+    "much few several some any all both each every either neither no not never nothing none first then next "
+    "last later before after now soon yet still already once twice plate plates empty full optional maybe "
+    "perhaps possibly ideally preferably bonus extra instead alternatively undo reset today tonight tomorrow "
+    "priority important urgent warning caution".split()
+)
+# a question that names nothing and asks where things go, answered by the list after it ("What should end
+# up where?", "Where do things go?")
+_WHERE = frozenset({"where", "what"})
+_GOES = frozenset("go goes end ends up belong belongs land lands".split())
+_ASKED_PLACES = _WHERE | _GOES | frozenset(
+    "which do does should must will would things thing stuff everything each item items it they all of these "
+    "them the".split()
+)
+
+
+def frame_read(clause: str, at_edge: bool, asked: bool) -> str | None:
+    """ "" for a frame at the text's start or end (`at_edge`), or a question (`asked`) that names nothing and
+    asks where things go; None for any other clause."""
+    words = re.findall(r"[a-z']+", clause)
+    if asked and set(words) <= _ASKED_PLACES and _WHERE & set(words) and _GOES & set(words):
+        return ""
+    short = 0 < len(words) <= _FRAME_MOST_WORDS and not re.search(r"\d", clause)
+    meaningful = any(categories(w) or w in _MEANINGFUL for w in words)
+    if at_edge and short and not asked and not meaningful and not asked_before(clause, len(clause)):
+        return ""
+    return None
 
 
 def _clause_read(clause: str) -> str | None:
@@ -125,7 +176,7 @@ def _clause_read(clause: str) -> str | None:
     if words and words[-1] == "please":
         words.pop()
     said = " ".join(words)
-    if _HEADING_FRAME.match(said):
+    if _HEADING_FRAME.match(said) or _URGING.match(said):
         return ""
     if _HEADING_FRAME.match(FREE_ORDER.sub(" ", said).strip()) and FREE_ORDER.search(said):
         return "in any order"  # "tidy them up in any order": the heading and a freedom remark

@@ -1,4 +1,5 @@
-"""A plate that waits (`tabletop_waits`): read as an order where that is all it says, refused otherwise."""
+"""A plate that waits (`tabletop_waits`) and a frame that names nothing (`tabletop_remarks.frame_read`): read
+where that is all they say, refused otherwise."""
 
 from __future__ import annotations
 
@@ -66,3 +67,35 @@ def test_a_plate_that_waits_orders_its_placements_after_what_it_waits_for(text):
 )
 def test_a_plate_that_waits_and_says_more_is_not_read_as_an_order(text):
     assert _order(text) is None
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Helm, set the green apple on the blue plate and the orange on the yellow plate. Make it so.",
+        "Ahoy matey: the green apple on the blue plate, the orange on the yellow plate.",
+        "Where should things end up? The green apple on the blue plate, the orange on the yellow plate.",
+        "Quick one: green apple on the blue plate, orange on the yellow plate. Off you go!",
+    ],
+)
+def test_a_frame_that_names_and_says_nothing_is_no_part_of_the_request(text):
+    """A short clause at either end that greets, addresses, titles or urges (no word of check 1's and no
+    word of order, place or manner), and a question heading that asks where things go."""
+    assert _order(text) == []
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "In reverse: the green apple on the blue plate, the orange on the yellow plate.",
+        "Where are things? The green apple on the blue plate, the orange on the yellow plate.",
+    ],
+)
+def test_a_clause_that_could_say_more_is_no_frame(text):
+    """An order, and a question about where things are: not a frame, refused."""
+    assert _order(text) is None
+
+
+def test_a_goal_heading_is_no_frame():
+    """ "Final layout:" asks for the states listed after it (removed, they would be refused as stated)."""
+    assert _order("Final layout: blue plate has the green apple, yellow plate has the orange.") == []
