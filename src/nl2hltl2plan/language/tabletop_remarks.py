@@ -6,7 +6,11 @@ these:", "organise this for me") is removed; a clause that speaks of the order (
 or of what depends on what) and says it is free ("the order in which you do them is irrelevant", "it makes
 no difference which one you do first", "none of these depends on another") becomes "in any order", or
 "within each group in any order" when it speaks of each group ("the order within each pair does not
-matter"). The courtesy words are `courtesy.txt`'s (`courtesy_word`, `your_time`, `unhurried`).
+matter"); a frame at either end of the text (a short clause with no word that could say an action, order,
+count, negation, place, manner or goal: "Helm,", "Howdy partner,", a title), a clause that only urges or
+announces ("make it so", "quick one") and a question heading that asks where things go ("What goes
+where?") are removed. The courtesy words are `courtesy.txt`'s (`courtesy_word`, `your_time`, `unhurried`,
+`urging`, `aside`).
 
 >>> import re
 >>> remarks_read("hey, carrot on the blue plate. no rush. it makes no difference which comes first",
@@ -75,10 +79,11 @@ _FREEDOM_FILLER = frozenset(
 _NEGATION = re.compile(r"\b(?:not|never|no|none)\b|n't\b")
 
 
-def remarks_read(text: str, mention: re.Pattern[str]) -> str:
+def remarks_read(text: str, mention: re.Pattern[str], name_words: frozenset[str] = frozenset()) -> str:
     """`text` with each sentence, or else each clause, that names no object or plate read by its words
-    (see the module docstring): courtesy and list headings removed, freedom statements said as "in any
-    order" or "within each group in any order". Any other clause is left as it is, for the readers."""
+    (see the module docstring): courtesy, list headings and frames (`frame_read`; none with a word of a name
+    in `name_words`: "the yellow" is a plate) removed, freedom statements said as "in any order" or "within
+    each group in any order". Any other clause is left as it is, for the readers."""
     text = _SENTENCE_PIECE.sub(lambda m: _opener_dropped(m[0]), text)
     for pieces in (_SENTENCE_PIECE, _CLAUSE):
         low, out, at = text.lower(), [], 0
@@ -89,7 +94,8 @@ def remarks_read(text: str, mention: re.Pattern[str]) -> str:
             read = None if FREE_ORDER.fullmatch(words) else _clause_read(words)  # a listed remark stays
             if read is None:
                 at_edge = not _WORD.search(low[: piece.start()]) or not _WORD.search(low[piece.end() :])
-                read = frame_read(words, at_edge, low.startswith("?", piece.end()))
+                asked = low.startswith("?", piece.end())
+                read = frame_read(words, at_edge, asked) if name_words.isdisjoint(words.split()) else None
             if read is not None:
                 out.append(text[at : piece.start()] + (f" {read}" if read else ""))
                 at = piece.end()
@@ -141,7 +147,10 @@ _MEANINGFUL = frozenset(
     "much few several some any all both each every either neither no not never nothing none first then next "
     "last later before after now soon yet still already once twice plate plates empty full optional maybe "
     "perhaps possibly ideally preferably bonus extra instead alternatively undo reset today tonight tomorrow "
-    "priority important urgent warning caution".split()
+    "priority important urgent warning caution begin beginning start starting initially finally lastly "
+    "afterwards afterward thereafter subsequently second secondly third fourth meanwhile done finished "
+    "complete wait hold stop keep leave sorry oops whoops actually rather mean meant scratch correction "
+    "mistake bad instead".split()
 )
 # a question that names nothing and asks where things go, answered by the list after it ("What should end
 # up where?", "Where do things go?")
