@@ -99,3 +99,20 @@ def test_a_clause_that_could_say_more_is_no_frame(text):
 def test_a_goal_heading_is_no_frame():
     """ "Final layout:" asks for the states listed after it (removed, they would be refused as stated)."""
     assert _order("Final layout: blue plate has the green apple, yellow plate has the orange.") == []
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Quick ask: the carrot on the blue plate, the orange on the yellow plate. Just do it.",
+        "carrot | blue plate\norange | yellow plate\n(ordering: up to you)",
+        "the carrot on the blue plate and the orange on the yellow plate, whichever you like first",
+        "Two things, in any order - the carrot on the blue plate, the orange on the yellow plate.",
+    ],
+)
+def test_announcements_order_labels_and_dash_headings_leave_the_pairs_unordered(text):
+    assert _order(text) == []
+
+
+def test_a_dash_heading_must_count_the_placements_after_it():
+    assert _order("Three things - the carrot on the blue plate, the orange on the yellow plate.") is None

@@ -94,7 +94,7 @@ _REFUSED = _refused_words()
 _SENTENCE = re.compile(r"[.;!?]+")
 # a heading before a colon that names no object or plate: "Here is what I need:", "Postcondition:",
 # "Your job is to put each item on its plate:", "Three moves:" (its count must be the placements listed)
-_HEADING = re.compile(r"^(?P<head>[^:]*):")
+_HEADING = re.compile(r"^(?P<head>[^:]*?)(?::|\s+-\s+)")  # "Three moves:", "I'd like three things done -"
 _GENERIC_QUANTITY = re.compile(
     r"\b(?:each|every|all(?:\s+the)?)\s+(?:item|thing|fruit|object|piece|one)s?\b|"
     r"\b(?P<count>two|three|four)\s+(?:[a-z]+\s+)?(?:items?|things?|fruits?|objects?|placements?|moves?|"

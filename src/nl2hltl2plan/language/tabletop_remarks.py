@@ -49,7 +49,7 @@ _HEADING_FRAME = re.compile(
 )
 # a freedom statement: what it is about (the order, which comes first, what depends on what) ...
 _ORDER_TOPIC = re.compile(
-    r"\b(?:order(?:ing)?|sequenc(?:e|ing)|which\b[a-z'\s]{0,24}?\b(?:first|(?:start|begin)(?:\s+with)?)|"
+    r"\b(?:order(?:ing)?|sequenc(?:e|ing)|which(?:ever)?\b[a-z'\s]{0,24}?\b(?:first|(?:start|begin)(?:\s+with)?)|"
     r"(?:either|any|whichever)(?:\s+one|\s+of\s+them)?\s+(?:(?:can\s+)?(?:go|goes|come|comes)\s+)?first)\b"
 )
 _INDEPENDENT = re.compile(
@@ -74,7 +74,7 @@ _FREEDOM_FILLER = frozenset(
     "the in which you do them they these those this it that of for me us to is are be at all really totally "
     "entirely quite completely here and so just it's its can may will how place placement placements put "
     "one ones a way round i we honestly pretty much first go goes what done like want prefer wish choose "
-    "pick fine ok okay good works work suits suit by with".split()
+    "pick fine ok okay good works work suits suit by with fancy".split()
 )
 _NEGATION = re.compile(r"\b(?:not|never|no|none)\b|n't\b")
 
@@ -84,7 +84,7 @@ def remarks_read(text: str, mention: re.Pattern[str], name_words: frozenset[str]
     (see the module docstring): courtesy, list headings and frames (`frame_read`; none with a word of a name
     in `name_words`: "the yellow" is a plate) removed, freedom statements said as "in any order" or "within
     each group in any order". Any other clause is left as it is, for the readers."""
-    text = _SENTENCE_PIECE.sub(lambda m: _opener_dropped(m[0]), text)
+    text = _ORDER_LABEL.sub(" the order is ", _SENTENCE_PIECE.sub(lambda m: _opener_dropped(m[0]), text))
     for pieces in (_SENTENCE_PIECE, _CLAUSE):
         low, out, at = text.lower(), [], 0
         for piece in pieces.finditer(low):
@@ -127,6 +127,8 @@ def _opener_dropped(sentence: str) -> str:
     return sentence[: words[0].start()] + sentence[words[run].start() :]
 
 
+# "(order: doesn't matter)", "Sequence: up to you": a label with its value, read as one statement
+_ORDER_LABEL = re.compile(r"(?:^|(?<=[(\n.;!?]))\s*(?:order(?:ing)?|sequence)\s*:\s*(?=[a-z])", re.IGNORECASE)
 _ASKING = frozenset("i i'd we we'd want need would to".split())  # "I'd like you to sort the fruit:"
 # a clause that only urges, closes or announces ("make it so", "off you go", "quick one")
 _URGING = re.compile(
@@ -178,14 +180,14 @@ def frame_read(clause: str, at_edge: bool, asked: bool) -> str | None:
 def _clause_read(clause: str) -> str | None:
     """ "" for courtesy or a list heading, a free-order phrase for a freedom statement, None otherwise."""
     words = re.findall(r"[a-z']+", _UNHURRIED.sub(" ", clause))
-    if _courtesy(words):  # "no rush" alone too
+    if _courtesy(words) or _URGING.match(" ".join(words)):  # "no rush" alone too; "quick one"
         return ""
     while words and words[0] in _COURTESY_WORDS | _ASKING:  # "could you sort these out for me please"
         words.pop(0)
     if words and words[-1] == "please":
         words.pop()
     said = " ".join(words)
-    if _HEADING_FRAME.match(said) or _URGING.match(said):
+    if _HEADING_FRAME.match(said) or _URGING.match(said):  # "please, just do it"
         return ""
     if _HEADING_FRAME.match(FREE_ORDER.sub(" ", said).strip()) and FREE_ORDER.search(said):
         return "in any order"  # "tidy them up in any order": the heading and a freedom remark
