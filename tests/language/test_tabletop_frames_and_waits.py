@@ -108,6 +108,8 @@ def test_a_goal_heading_is_no_frame():
         "carrot | blue plate\norange | yellow plate\n(ordering: up to you)",
         "the carrot on the blue plate and the orange on the yellow plate, whichever you like first",
         "Two things, in any order - the carrot on the blue plate, the orange on the yellow plate.",
+        "Plan for a neatly sorted table: carrot on the blue plate, orange on the yellow plate.",
+        "Carrot on the blue plate, orange on the yellow plate. Change the order however you like.",
     ],
 )
 def test_announcements_order_labels_and_dash_headings_leave_the_pairs_unordered(text):

@@ -64,7 +64,8 @@ _FREE_PREDICATE = re.compile(
     r"(?:call|choice|decision|pick)|(?:are|'re|is|'s)\s+free|free\s+to\s+(?:choose|pick|decide)|"
     r"(?:can|may|get\s+to)\s+(?:choose|pick|decide)|any|either|whatever|whichever|arbitrary|flexible|optional|"
     r"not\s+(?:specified|fixed|set|required|needed)|unspecified|no\s+particular|(?:i|we)\s+(?:don't|do\s+not)\s+"
-    r"(?:care|mind)|(?:makes?|is)\s+no\s+difference|do\s+(?:whatever|as\s+you\s+(?:like|please)))\b"
+    r"(?:care|mind)|(?:makes?|is)\s+no\s+difference|do\s+(?:whatever|as\s+you\s+(?:like|please))|"
+    r"(?:as|however|whichever\s+way)\s+you\s+(?:like|please|wish|want|prefer|see\s+fit))\b"
 )
 # "within each pair", "inside each", "within a priority", "for every plate": what a freedom statement is about
 _EACH_GROUP = re.compile(
@@ -74,7 +75,7 @@ _FREEDOM_FILLER = frozenset(
     "the in which you do them they these those this it that of for me us to is are be at all really totally "
     "entirely quite completely here and so just it's its can may will how place placement placements put "
     "one ones a way round i we honestly pretty much first go goes what done like want prefer wish choose "
-    "pick fine ok okay good works work suits suit by with fancy".split()
+    "pick fine ok okay good works work suits suit by with fancy mix up shuffle change vary switch".split()
 )
 _NEGATION = re.compile(r"\b(?:not|never|no|none)\b|n't\b")
 
@@ -95,7 +96,9 @@ def remarks_read(text: str, mention: re.Pattern[str], name_words: frozenset[str]
             if read is None:
                 at_edge = not _WORD.search(low[: piece.start()]) or not _WORD.search(low[piece.end() :])
                 asked = low.startswith("?", piece.end())
-                read = frame_read(words, at_edge, asked) if name_words.isdisjoint(words.split()) else None
+                titled = low.startswith(":", piece.end()) and not _WORD.search(low[: piece.start()])
+                named = not name_words.isdisjoint(words.split())
+                read = None if named else frame_read(words, at_edge, asked, titled)
             if read is not None:
                 out.append(text[at : piece.start()] + (f" {read}" if read else ""))
                 at = piece.end()
@@ -140,6 +143,12 @@ _URGING = re.compile(
 # (not a question; not a goal's heading, "Final layout:", which asks for the states listed after it:
 # `statements.asked_before`)
 _FRAME_MOST_WORDS = 3
+_TITLE_MOST_WORDS = 6
+# a title may speak of tidying, which in this world is the placing the list after it asks for
+_TIDYING = frozenset(
+    "tidy tidying tidied sort sorting sorted arrange arranging arranged organise organize organising "
+    "organizing organised organized".split()
+)
 _WORD = re.compile(r"\w")
 _MEANINGFUL = frozenset(
     "order ordered ordering sequence sequential sequentially respectively reverse reversed backwards "
@@ -164,14 +173,16 @@ _ASKED_PLACES = _WHERE | _GOES | frozenset(
 )
 
 
-def frame_read(clause: str, at_edge: bool, asked: bool) -> str | None:
-    """ "" for a frame at the text's start or end (`at_edge`), or a question (`asked`) that names nothing and
-    asks where things go; None for any other clause."""
+def frame_read(clause: str, at_edge: bool, asked: bool, titled: bool = False) -> str | None:
+    """ "" for a frame at the text's start or end (`at_edge`; a title before the text's first colon,
+    `titled`, may be longer and may speak of tidying: "Recipe for a tidy table:"), or a question (`asked`)
+    that names nothing and asks where things go; None for any other clause."""
     words = re.findall(r"[a-z']+", clause)
     if asked and set(words) <= _ASKED_PLACES and _WHERE & set(words) and _GOES & set(words):
         return ""
-    short = 0 < len(words) <= _FRAME_MOST_WORDS and not re.search(r"\d", clause)
-    meaningful = any(categories(w) or w in _MEANINGFUL for w in words)
+    most = _TITLE_MOST_WORDS if titled else _FRAME_MOST_WORDS
+    short = 0 < len(words) <= most and not re.search(r"\d", clause)
+    meaningful = any((categories(w) and not (titled and w in _TIDYING)) or w in _MEANINGFUL for w in words)
     if at_edge and short and not asked and not meaningful and not asked_before(clause, len(clause)):
         return ""
     return None
