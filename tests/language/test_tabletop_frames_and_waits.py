@@ -118,3 +118,8 @@ def test_announcements_order_labels_and_dash_headings_leave_the_pairs_unordered(
 
 def test_a_dash_heading_must_count_the_placements_after_it():
     assert _order("Three things - the carrot on the blue plate, the orange on the yellow plate.") is None
+
+
+def test_a_then_between_a_named_subject_and_its_verb_opens_its_clause():
+    text = "The green apple and the orange go on the yellow plate; the carrot then goes on the blue plate."
+    assert _order(text) == YELLOW_THEN_BLUE

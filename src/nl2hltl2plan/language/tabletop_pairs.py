@@ -289,6 +289,7 @@ def read_pairs(text: str, types: set[str]) -> Reading | None:
     pattern = mention_pattern(by_words)
     if stepped is not None:  # a clause waiting for placements, and a "then" closing its clause, put first
         stepped = _trailing_then_fronted(_reference_fronted(stepped, pattern), pattern)
+        stepped = _then_after_subject_fronted(stepped, pattern)
     plates_first, rest = _plate_order(stepped or "", pattern)
     if plates_first and (_THEN.search(rest) or _FIRST.search(rest) or _BEFORE.search(rest)):
         return None  # the order said of plates and again of placements
@@ -410,6 +411,22 @@ _CLAUSE_END = re.compile(r"[,.;!?\n]")
 _TRAILING_THEN = re.compile(
     rf"(?:(?P<first>\bfirst\b)|{_THEN.pattern}|\b(?:after|later|last)\b)(?=\s*(?:[,.;!?\n]|$))"
 )
+
+
+# the verbs a "then" may stand before in "the blue plate then gets ...", "the carrot then goes ..."
+_SUBJECT_VERB = r"(?:gets?|goes|go|takes?|receives?|holds?|should|must|can|will|may|needs?|has|have|is|are)"
+
+
+def _then_after_subject_fronted(text: str, pattern: re.Pattern[str]) -> str:
+    """A "then" between a clause's named subject and its verb put before the clause ("; the blue plate then
+    gets the carrot" -> "; then the blue plate gets the carrot"), so that it cuts the groups where the
+    clause starts; not before another name ("the carrot then the orange" orders the two)."""
+    subject = rf"(?P<subject>(?:the\s+)?{pattern.pattern})"
+    return re.sub(
+        rf"(?P<start>(?:^|[,.;:!?])\s*(?:and\s+)?)(?:then\s+)?{subject}\s+then\s+(?={_SUBJECT_VERB}\b)",
+        r"\g<start>then \g<subject> ",
+        text,
+    )
 
 
 def _trailing_then_fronted(text: str, pattern: re.Pattern[str]) -> str:
