@@ -892,3 +892,38 @@ DEV2_H87: dict[int, list[str]] = {
         "The yellow plate is first in line: it gets the green apple and the orange. The blue plate is next: "
         "it gets the carrot and the red apple."],
 }
+
+# Issue 28 (h87): a third development batch, sixteen sentences written at once after the rules above, in
+# voices no batch uses (a text adventure, a drill sergeant, a court order, an HR memo, a wedding planner, a
+# DJ, "TL;DR", a dog trainer, a mechanic, a fortune teller), measured once before any rule for them.
+DEV3_H87: dict[int, list[str]] = {
+    1: ["> put green apple on blue plate\n> put orange on yellow plate",
+        "Listen up! Green apple, blue plate. Orange, yellow plate. Move it!",
+        "The court hereby orders that the green apple be placed on the blue plate and the orange on the "
+        "yellow plate.",
+        "TL;DR: green apple on the blue plate, orange on the yellow plate."],
+    2: ["Memo to all robots: please place the green apple on the pink plate, the orange on the yellow plate "
+        "and the red apple on the blue plate. Sequence at your discretion.",
+        "For the big day we need the green apple on the pink plate, the orange on the yellow plate and the "
+        "red apple on the blue plate - any order, darling.",
+        "Spin it! Green apple to the pink plate, orange to the yellow plate, red apple to the blue plate, "
+        "mix it up any order!",
+        "Good robot! Now pop the green apple on the pink plate, the orange on the yellow plate and the red "
+        "apple on the blue plate. Any order. Good job!"],
+    3: ["Job card: carrot - blue plate, orange - yellow plate, green apple - green plate, red apple - pink "
+        "plate. Order not critical.",
+        "I see the carrot on the blue plate, the orange on the yellow plate, the green apple on the green "
+        "plate and the red apple on the pink plate in your future - make it happen, in any order.",
+        "FYI we want the carrot on the blue plate, the orange on the yellow plate, the green apple on the "
+        "green plate and the red apple on the pink plate. Order irrelevant.",
+        "Please, in no special order: carrot to the blue plate, orange to the yellow plate, green apple to "
+        "the green plate, red apple to the pink plate."],
+    4: ["> put green apple on yellow plate\n> put orange on yellow plate\n> wait\n> put carrot on blue plate"
+        "\n> put red apple on blue plate",
+        "Listen up! First the green apple and the orange go on the yellow plate. Then, and only then, the "
+        "carrot and the red apple go on the blue plate!",
+        "Memo: priority goes to the yellow plate (green apple, orange); the blue plate (carrot, red apple) "
+        "follows.",
+        "Load the yellow plate with the green apple and the orange; once it's loaded, load the blue plate "
+        "with the carrot and the red apple."],
+}

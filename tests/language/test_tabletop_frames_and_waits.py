@@ -123,3 +123,31 @@ def test_a_dash_heading_must_count_the_placements_after_it():
 def test_a_then_between_a_named_subject_and_its_verb_opens_its_clause():
     text = "The green apple and the orange go on the yellow plate; the carrot then goes on the blue plate."
     assert _order(text) == YELLOW_THEN_BLUE
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "> put green apple on yellow plate\n> wait\n> put carrot on blue plate",
+        "Memo: priority goes to the yellow plate (green apple); the blue plate (carrot) follows.",
+        "The green apple on the yellow plate and the carrot on the blue plate. Pause.",
+    ],
+)
+def test_an_order_said_by_a_wait_a_priority_or_what_follows_is_never_dropped(text):
+    """Words that say an order though check 1 lists none of them: refused, never read as no order."""
+    assert _order(text) is None
+
+
+@pytest.mark.parametrize(
+    "text, order",
+    [
+        ("First the green apple and the orange go on the yellow plate. Then, and only then, the carrot goes "
+         "on the blue plate.", YELLOW_THEN_BLUE),
+        ("Load the yellow plate with the green apple and the orange; once it's loaded, load the blue plate "
+         "with the carrot.", YELLOW_THEN_BLUE),
+        ("Job card: carrot - blue plate, orange - yellow plate. Order not critical.", []),
+        ("Please, in no special order: carrot to the blue plate, orange to the yellow plate.", []),
+    ],
+)
+def test_orders_and_freedoms_said_in_other_words(text, order):
+    assert _order(text) == order

@@ -52,7 +52,8 @@ _THAT = r"(?:that|this|those|these|them|it)"
 # you've done that", "subsequently", "next" (not "next to")
 _THERE = r"(?:there|on\s+it|in\s+it|on\s+there|in\s+place|placed|down)"
 _THEN = re.compile(
-    r"\b(?:only\s+)?(?:(?:and\s+)?then|after\s+(?:that|this|those|these|which)|afterwards?|thereafter|subsequently|"
+    r"\b(?:only\s+)?(?:then,?\s+and\s+only\s+then|(?:and\s+)?then|after\s+(?:that|this|those|these|which)|"
+    r"afterwards?|thereafter|subsequently|"
     r"next(?!\s+to\b)|second(?:ly)?|(?:and\s+)?(?:finally|lastly)|"
     rf"(?:once|when|after|as\s+soon\s+as)\s+(?:{_THAT}(?:'s|s|\s+is|\s+are|'re)\s+{_DONE}|"
     rf"(?:they|both|{_THAT}|both\s+of\s+them|all\s+of\s+them)(?:'re|'s|\s+are|\s+is)\s+(?:both\s+|all\s+)?{_THERE}|"
@@ -78,7 +79,7 @@ _FIRST_CLOSING = re.compile(r"\bfirst\b(?=\W*$|\s*:)")
 _REFUSED_CATEGORIES = ("negation", "order", "condition", "quantifier_all", "quantifier_vague", "repetition")
 _NOT_PAIRED = (
     "from off out away back near beside besides by behind under between instead either or but only while "
-    "remove swap keep leave empty clear stack"
+    "remove swap keep leave empty clear stack wait pause follows followed following"
 )
 
 
@@ -109,6 +110,9 @@ _ONE_PER_PLATE = re.compile(
 # verbs that order one placement after another, which check 1's order words do not list: no reading of
 # the tabletop world takes them ("the green apple on the yellow plate must precede the carrot ...")
 _RELATION_VERB = re.compile(r"\bpreced(?:e|es|ed|ing)\b")
+# words that say an order which check 1's order words do not list: a reading with no order leaves them
+# unused ("put A on P > wait > put B on Q", "P has priority; Q follows"; not "no need to follow an order")
+_ORDER_SAID = re.compile(r"\b(?:wait(?:s|ing)?|pause|follow(?:s|ed|ing)|priorit(?:y|ies|i[sz]e[sd]?))\b")
 
 # "the order matters" / "sequence is important" / "the order is not up to you": an order is meant, but only
 # the mention order says which
@@ -209,6 +213,9 @@ class TabletopReader:
             out[found[0]] = Unread(found[0], "order", why)
         for found in _RELATION_VERB.finditer(res.instruction.lower()):
             why = "an order between placements that this reading does not take"
+            out[found[0]] = Unread(found[0], "order", why)
+        for found in _ORDER_SAID.finditer(res.instruction.lower()) if not res.before else ():
+            why = "it says an order (a wait, what follows, a priority) and the reading has none"
             out[found[0]] = Unread(found[0], "order", why)
         return list(out.values())
 

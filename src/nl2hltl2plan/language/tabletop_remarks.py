@@ -60,10 +60,10 @@ _INDEPENDENT = re.compile(
 # ... and what it says of it
 _FREE_PREDICATE = re.compile(
     r"\b(?:(?:does|do|did|will|would|should)(?:\s+not|n't|nt)\s+matter|no\s+matter|matters\s+not|irrelevant|"
-    r"unimportant|not\s+important|of\s+no\s+(?:consequence|importance)|up\s+to\s+you|(?:your|the\s+robot's)\s+"
+    r"unimportant|not\s+(?:important|critical|crucial|essential|vital|relevant|significant)|of\s+no\s+(?:consequence|importance)|up\s+to\s+you|(?:your|the\s+robot's)\s+"
     r"(?:call|choice|decision|pick)|(?:are|'re|is|'s)\s+free|free\s+to\s+(?:choose|pick|decide)|"
     r"(?:can|may|get\s+to)\s+(?:choose|pick|decide)|any|either|whatever|whichever|arbitrary|flexible|optional|"
-    r"not\s+(?:specified|fixed|set|required|needed)|unspecified|no\s+particular|(?:i|we)\s+(?:don't|do\s+not)\s+"
+    r"not\s+(?:specified|fixed|set|required|needed)|unspecified|no\s+(?:particular|special|specific|set|fixed|given|prescribed)|(?:i|we)\s+(?:don't|do\s+not)\s+"
     r"(?:care|mind)|(?:makes?|is)\s+no\s+difference|do\s+(?:whatever|as\s+you\s+(?:like|please))|"
     r"(?:as|however|whichever\s+way)\s+you\s+(?:like|please|wish|want|prefer|see\s+fit))\b"
 )
@@ -94,7 +94,9 @@ def remarks_read(text: str, mention: re.Pattern[str], name_words: frozenset[str]
                 continue
             read = None if FREE_ORDER.fullmatch(words) else _clause_read(words)  # a listed remark stays
             if read is None:
-                at_edge = not _WORD.search(low[: piece.start()]) or not _WORD.search(low[piece.end() :])
+                before, after = low[: piece.start()], low[piece.end() :]
+                set_apart = before.rstrip()[-1:] in _APART and after.lstrip()[:1] in _APART  # not ") follows"
+                at_edge = set_apart and (not _WORD.search(before) or not _WORD.search(after))
                 asked = low.startswith("?", piece.end())
                 titled = low.startswith(":", piece.end()) and not _WORD.search(low[: piece.start()])
                 named = not name_words.isdisjoint(words.split())
@@ -150,6 +152,7 @@ _TIDYING = frozenset(
     "organizing organised organized".split()
 )
 _WORD = re.compile(r"\w")
+_APART = ("", ",", ".", "!", "?", ";", ":")  # what sets a frame apart: punctuation or the text's edge
 _MEANINGFUL = frozenset(
     "order ordered ordering sequence sequential sequentially respectively reverse reversed backwards "
     "alternate alternately together separately same only again also too except unless until while when if "
@@ -161,7 +164,7 @@ _MEANINGFUL = frozenset(
     "priority important urgent warning caution begin beginning start starting initially finally lastly "
     "afterwards afterward thereafter subsequently second secondly third fourth meanwhile done finished "
     "complete wait hold stop keep leave sorry oops whoops actually rather mean meant scratch correction "
-    "mistake bad instead".split()
+    "mistake bad instead wait waits pause follow follows followed following priority".split()
 )
 # a question that names nothing and asks where things go, answered by the list after it ("What should end
 # up where?", "Where do things go?")

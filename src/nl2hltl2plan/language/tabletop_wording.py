@@ -187,7 +187,7 @@ _BY_THE_END = re.compile(
 # "once that's sorted / taken care of / out of the way": a step done (said as "done", which check 1 knows)
 _DONE_WORDS = re.compile(
     r"\b(?P<that>that|this|those|these|it|they)(?:'s|s|\s+is|\s+are|'re)\s+(?:sorted|handled|through|over|"
-    r"taken\s+care\s+of|out\s+of\s+the\s+way)\b"
+    r"taken\s+care\s+of|out\s+of\s+the\s+way|loaded|filled|full|ready)\b"
 )
 _FIRST_THINGS = re.compile(r"\bfirst\s+things\s+first\b")
 
