@@ -79,7 +79,8 @@ def test_a_plate_that_waits_and_says_more_is_not_read_as_an_order(text):
     ],
 )
 def test_a_frame_that_names_and_says_nothing_is_no_part_of_the_request(text):
-    """A short clause at either end that greets, addresses, titles or urges (no word of check 1's and no
+    """A short clause that opens the text and greets, addresses or titles, or one that urges (no word of
+    check 1's and no
     word of order, place or manner), and a question heading that asks where things go."""
     assert _order(text) == []
 
@@ -88,6 +89,8 @@ def test_a_frame_that_names_and_says_nothing_is_no_part_of_the_request(text):
     "text",
     [
         "In reverse: the green apple on the blue plate, the orange on the yellow plate.",
+        "Alphabetically: the orange on the yellow plate, the carrot on the blue plate.",
+        "The orange on the yellow plate, the carrot on the blue plate. By size, obviously.",
         "Where are things? The green apple on the blue plate, the orange on the yellow plate.",
     ],
 )
@@ -108,7 +111,7 @@ def test_a_goal_heading_is_no_frame():
         "carrot | blue plate\norange | yellow plate\n(ordering: up to you)",
         "the carrot on the blue plate and the orange on the yellow plate, whichever you like first",
         "Two things, in any order - the carrot on the blue plate, the orange on the yellow plate.",
-        "Plan for a neatly sorted table: carrot on the blue plate, orange on the yellow plate.",
+        "Plan for a sorted table: carrot on the blue plate, orange on the yellow plate.",
         "Carrot on the blue plate, orange on the yellow plate. Change the order however you like.",
     ],
 )

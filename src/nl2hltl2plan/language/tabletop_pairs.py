@@ -79,7 +79,7 @@ _FIRST_CLOSING = re.compile(r"\bfirst\b(?=\W*$|\s*:)")
 _REFUSED_CATEGORIES = ("negation", "order", "condition", "quantifier_all", "quantifier_vague", "repetition")
 _NOT_PAIRED = (
     "from off out away back near beside besides by behind under between instead either or but only while "
-    "remove swap keep leave empty clear stack wait pause follows followed following"
+    "remove swap keep leave empty clear stack"
 )
 
 
@@ -111,8 +111,15 @@ _ONE_PER_PLATE = re.compile(
 # the tabletop world takes them ("the green apple on the yellow plate must precede the carrot ...")
 _RELATION_VERB = re.compile(r"\bpreced(?:e|es|ed|ing)\b")
 # words that say an order which check 1's order words do not list: a reading with no order leaves them
-# unused ("put A on P > wait > put B on Q", "P has priority; Q follows"; not "no need to follow an order")
-_ORDER_SAID = re.compile(r"\b(?:wait(?:s|ing)?|pause|follow(?:s|ed|ing)|priorit(?:y|ies|i[sz]e[sd]?))\b")
+# unused, and the pairs reading refuses them ("put A on P > wait > put B on Q", "P has priority; Q follows",
+# "alphabetically", "by size", "biggest first"; not "no need to follow an order"); a priority only the former
+# ("Priority 1: ... Priority 2: ..." are labels)
+_ORDER_SAID = re.compile(
+    r"\b(?:wait(?:s|ing)?|pause|follow(?:s|ed|ing)|alphabetic(?:al(?:ly)?)?|"
+    r"(?:anti-?|counter-?)?clockwise|by\s+(?:size|colou?r|height|weight|name|type)|(?:left|right)\s+to\s+"
+    r"(?:right|left)|(?:bigg|small|larg|tall|short|heavi|light)est\s+(?:first|last)|in\s+turn)\b"
+)
+_PRIORITY = re.compile(r"\bpriorit(?:y|ies|i[sz]e[sd]?)\b")
 
 # "the order matters" / "sequence is important" / "the order is not up to you": an order is meant, but only
 # the mention order says which
@@ -214,7 +221,8 @@ class TabletopReader:
         for found in _RELATION_VERB.finditer(res.instruction.lower()):
             why = "an order between placements that this reading does not take"
             out[found[0]] = Unread(found[0], "order", why)
-        for found in _ORDER_SAID.finditer(res.instruction.lower()) if not res.before else ():
+        said = [*_ORDER_SAID.finditer(res.instruction.lower()), *_PRIORITY.finditer(res.instruction.lower())]
+        for found in said if not res.before else ():
             why = "it says an order (a wait, what follows, a priority) and the reading has none"
             out[found[0]] = Unread(found[0], "order", why)
         return list(out.values())
@@ -286,7 +294,7 @@ def read_pairs(text: str, types: set[str]) -> Reading | None:
     by_words = {camel_words(t): t for t in types}
     kinds = {w: _is_plate(t) for w, t in by_words.items()}
     plain = plain_words(text, kinds, _shared_heads(by_words))
-    unread_order = _RELATION_VERB.search(plain) or _ORDER_MATTERS.search(plain)  # an order not taken here
+    unread_order = _RELATION_VERB.search(plain) or _ORDER_MATTERS.search(plain) or _ORDER_SAID.search(plain)
     if stated_not_asked(plain, by_words) is not None or unread_order:
         return None
     plain, last_free = last_group_free(plain)

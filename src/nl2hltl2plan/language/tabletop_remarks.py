@@ -6,7 +6,7 @@ these:", "organise this for me") is removed; a clause that speaks of the order (
 or of what depends on what) and says it is free ("the order in which you do them is irrelevant", "it makes
 no difference which one you do first", "none of these depends on another") becomes "in any order", or
 "within each group in any order" when it speaks of each group ("the order within each pair does not
-matter"); a frame at either end of the text (a short clause with no word that could say an action, order,
+matter"); a frame that opens the text (a short clause with no word that could say an action, order,
 count, negation, place, manner or goal: "Helm,", "Howdy partner,", a title), a clause that only urges or
 announces ("make it so", "quick one") and a question heading that asks where things go ("What goes
 where?") are removed. The courtesy words are `courtesy.txt`'s (`courtesy_word`, `your_time`, `unhurried`,
@@ -96,11 +96,11 @@ def remarks_read(text: str, mention: re.Pattern[str], name_words: frozenset[str]
             if read is None:
                 before, after = low[: piece.start()], low[piece.end() :]
                 set_apart = before.rstrip()[-1:] in _APART and after.lstrip()[:1] in _APART  # not ") follows"
-                at_edge = set_apart and (not _WORD.search(before) or not _WORD.search(after))
+                at_start = set_apart and not _WORD.search(before)  # a closing word may say an order
                 asked = low.startswith("?", piece.end())
                 titled = low.startswith(":", piece.end()) and not _WORD.search(low[: piece.start()])
                 named = not name_words.isdisjoint(words.split())
-                read = None if named else frame_read(words, at_edge, asked, titled)
+                read = None if named else frame_read(words, at_start, asked, titled)
             if read is not None:
                 out.append(text[at : piece.start()] + (f" {read}" if read else ""))
                 at = piece.end()
@@ -139,12 +139,14 @@ _ASKING = frozenset("i i'd we we'd want need would to".split())  # "I'd like you
 _URGING = re.compile(
     rf"^(?:{phrase_list_pattern('courtesy.txt', 'urging')}|{phrase_list_pattern('courtesy.txt', 'aside')})$"
 )
-# a frame at either end of the text: a short clause that names nothing and has no word that could say an
+# a frame that opens the text: a short clause that names nothing and has no word that could say an
 # action, order, count, negation, condition, place or manner (check 1's categories, and the words below):
 # it greets, addresses or titles ("Arr", "Howdy partner", "Helm", "Tonight's challenge") and asks nothing
 # (not a question; not a goal's heading, "Final layout:", which asks for the states listed after it:
 # `statements.asked_before`)
 _FRAME_MOST_WORDS = 3
+# an adverb, a superlative or a direction may say how to order ("Alphabetically:", "Biggest first", "By size")
+_HOW = re.compile(r"(?:ly|est|wards?|wise)$")
 _TITLE_MOST_WORDS = 6
 # a title may speak of tidying, which in this world is the placing the list after it asks for
 _TIDYING = frozenset(
@@ -164,7 +166,8 @@ _MEANINGFUL = frozenset(
     "priority important urgent warning caution begin beginning start starting initially finally lastly "
     "afterwards afterward thereafter subsequently second secondly third fourth meanwhile done finished "
     "complete wait hold stop keep leave sorry oops whoops actually rather mean meant scratch correction "
-    "mistake bad instead wait waits pause follow follows followed following priority".split()
+    "mistake bad instead wait waits pause follow follows followed following priority by size colour color "
+    "height weight alphabetical".split()
 )
 # a question that names nothing and asks where things go, answered by the list after it ("What should end
 # up where?", "Where do things go?")
@@ -176,8 +179,8 @@ _ASKED_PLACES = _WHERE | _GOES | frozenset(
 )
 
 
-def frame_read(clause: str, at_edge: bool, asked: bool, titled: bool = False) -> str | None:
-    """ "" for a frame at the text's start or end (`at_edge`; a title before the text's first colon,
+def frame_read(clause: str, at_start: bool, asked: bool, titled: bool = False) -> str | None:
+    """ "" for a frame that opens the text (`at_start`; a title before the text's first colon,
     `titled`, may be longer and may speak of tidying: "Recipe for a tidy table:"), or a question (`asked`)
     that names nothing and asks where things go; None for any other clause."""
     words = re.findall(r"[a-z']+", clause)
@@ -185,8 +188,11 @@ def frame_read(clause: str, at_edge: bool, asked: bool, titled: bool = False) ->
         return ""
     most = _TITLE_MOST_WORDS if titled else _FRAME_MOST_WORDS
     short = 0 < len(words) <= most and not re.search(r"\d", clause)
-    meaningful = any((categories(w) and not (titled and w in _TIDYING)) or w in _MEANINGFUL for w in words)
-    if at_edge and short and not asked and not meaningful and not asked_before(clause, len(clause)):
+    tidying = _TIDYING if titled else frozenset()
+    meaningful = any(
+        (categories(w) and w not in tidying) or w in _MEANINGFUL or _HOW.search(w) for w in words
+    )
+    if at_start and short and not asked and not meaningful and not asked_before(clause, len(clause)):
         return ""
     return None
 
