@@ -134,6 +134,7 @@ def test_a_then_between_a_named_subject_and_its_verb_opens_its_clause():
         "> put green apple on yellow plate\n> wait\n> put carrot on blue plate",
         "Memo: priority goes to the yellow plate (green apple); the blue plate (carrot) follows.",
         "The green apple on the yellow plate and the carrot on the blue plate. Pause.",
+        "Ok: carrot on the blue plate. Orange on the yellow plate. Sequentially.",
     ],
 )
 def test_an_order_said_by_a_wait_a_priority_or_what_follows_is_never_dropped(text):

@@ -117,7 +117,8 @@ _RELATION_VERB = re.compile(r"\bpreced(?:e|es|ed|ing)\b")
 _ORDER_SAID = re.compile(
     r"\b(?:wait(?:s|ing)?|pause|follow(?:s|ed|ing)|alphabetic(?:al(?:ly)?)?|"
     r"(?:anti-?|counter-?)?clockwise|by\s+(?:size|colou?r|height|weight|name|type)|(?:left|right)\s+to\s+"
-    r"(?:right|left)|(?:bigg|small|larg|tall|short|heavi|light)est\s+(?:first|last)|in\s+turn)\b"
+    r"(?:right|left)|(?:bigg|small|larg|tall|short|heavi|light)est\s+(?:first|last)|in\s+turn|"
+    r"sequential(?:ly)?|in\s+sequence|one\s+(?:after|by)\s+(?:the\s+)?(?:other|one))\b"
 )
 _PRIORITY = re.compile(r"\bpriorit(?:y|ies|i[sz]e[sd]?)\b")
 
@@ -223,7 +224,7 @@ class TabletopReader:
             out[found[0]] = Unread(found[0], "order", why)
         said = [*_ORDER_SAID.finditer(res.instruction.lower()), *_PRIORITY.finditer(res.instruction.lower())]
         for found in said if not res.before else ():
-            why = "it says an order (a wait, what follows, a priority) and the reading has none"
+            why = "it says an order (a wait, what follows, a priority, a sorting) and the reading has none"
             out[found[0]] = Unread(found[0], "order", why)
         return list(out.values())
 
