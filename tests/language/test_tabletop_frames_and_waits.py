@@ -155,3 +155,15 @@ def test_an_order_said_by_a_wait_a_priority_or_what_follows_is_never_dropped(tex
 )
 def test_orders_and_freedoms_said_in_other_words(text, order):
     assert _order(text) == order
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Plan A: put the carrot on the blue plate. Plan B: put the orange on the yellow plate.",
+        "Option 1: put the carrot on the blue plate. Option 2: put the orange on the yellow plate.",
+    ],
+)
+def test_labels_that_name_alternatives_are_no_steps(text):
+    """Which alternative is meant is not said: refused, never read as steps or as both."""
+    assert _order(text) is None

@@ -121,6 +121,12 @@ _ORDER_SAID = re.compile(
     r"sequential(?:ly)?|in\s+sequence|one\s+(?:after|by)\s+(?:the\s+)?(?:other|one))\b"
 )
 _PRIORITY = re.compile(r"\bpriorit(?:y|ies|i[sz]e[sd]?)\b")
+# labels that name alternatives, not steps ("Plan A: ... Plan B: ...", "Option 1: ..."): which one is meant
+# is not said, and doing both is no reading of them
+_ALTERNATIVES = re.compile(
+    r"\b(?:option|plan|alternative|choice|scenario|variant|version|possibility)\s+(?:[a-d]|\d|one|two|three|"
+    r"four|i{1,3}|iv)\b"
+)
 
 # "the order matters" / "sequence is important" / "the order is not up to you": an order is meant, but only
 # the mention order says which
@@ -222,6 +228,8 @@ class TabletopReader:
         for found in _RELATION_VERB.finditer(res.instruction.lower()):
             why = "an order between placements that this reading does not take"
             out[found[0]] = Unread(found[0], "order", why)
+        for found in _ALTERNATIVES.finditer(res.instruction.lower()):
+            out[found[0]] = Unread(found[0], "condition", "alternatives: which one is meant is not said")
         said = [*_ORDER_SAID.finditer(res.instruction.lower()), *_PRIORITY.finditer(res.instruction.lower())]
         for found in said if not res.before else ():
             why = "it says an order (a wait, what follows, a priority, a sorting) and the reading has none"
@@ -296,7 +304,7 @@ def read_pairs(text: str, types: set[str]) -> Reading | None:
     kinds = {w: _is_plate(t) for w, t in by_words.items()}
     plain = plain_words(text, kinds, _shared_heads(by_words))
     unread_order = _RELATION_VERB.search(plain) or _ORDER_MATTERS.search(plain) or _ORDER_SAID.search(plain)
-    if stated_not_asked(plain, by_words) is not None or unread_order:
+    if stated_not_asked(plain, by_words) is not None or unread_order or _ALTERNATIVES.search(text.lower()):
         return None
     plain, last_free = last_group_free(plain)
     unordered, remarks = free_order(plain)

@@ -167,7 +167,7 @@ _MEANINGFUL = frozenset(
     "afterwards afterward thereafter subsequently second secondly third fourth meanwhile done finished "
     "complete wait hold stop keep leave sorry oops whoops actually rather mean meant scratch correction "
     "mistake bad instead wait waits pause follow follows followed following priority by size colour color "
-    "height weight alphabetical".split()
+    "height weight alphabetical option options alternative alternatives or".split()
 )
 # a question that names nothing and asks where things go, answered by the list after it ("What should end
 # up where?", "Where do things go?")

@@ -369,6 +369,8 @@ _NOUN_LABEL = re.compile(
     re.IGNORECASE,
 )
 _LIST_NUMBER = re.compile(r"(?:^|(?<=[\s.;!?]))\(?(?P<n>\d)[.)]\s+")
+# "Plan A: ... Plan B: ...", "Option 1: ...": alternatives, no steps (`tabletop_pairs` refuses them)
+_ALTERNATIVE_NOUNS = frozenset("option plan alternative choice scenario variant version possibility".split())
 
 
 def steps_read(text: str, listed: bool) -> str | None:
@@ -387,7 +389,7 @@ def _labels(text: str) -> list[re.Match[str]]:
     Priority 2: ...")."""
     labels = list(_LABEL.finditer(text))
     if not labels:
-        labels = list(_NOUN_LABEL.finditer(text))
+        labels = [m for m in _NOUN_LABEL.finditer(text) if m["noun"].lower() not in _ALTERNATIVE_NOUNS]
         if len(labels) < 2 or len({m["noun"].lower() for m in labels}) != 1:
             return []
     return labels
