@@ -98,7 +98,7 @@ def remarks_read(text: str, mention: re.Pattern[str], name_words: frozenset[str]
                 set_apart = before.rstrip()[-1:] in _APART and after.lstrip()[:1] in _APART  # not ") follows"
                 at_start = set_apart and not _WORD.search(before)  # a closing word may say an order
                 asked = low.startswith("?", piece.end())
-                titled = low.startswith(":", piece.end()) and not _WORD.search(low[: piece.start()])
+                titled = low.startswith(":", piece.end()) and not _WORD.search(before)
                 named = not name_words.isdisjoint(words.split())
                 read = None if named else frame_read(words, at_start, asked, titled)
             if read is not None:
@@ -145,9 +145,9 @@ _URGING = re.compile(
 # (not a question; not a goal's heading, "Final layout:", which asks for the states listed after it:
 # `statements.asked_before`)
 _FRAME_MOST_WORDS = 3
+_TITLE_MOST_WORDS = 6
 # an adverb, a superlative or a direction may say how to order ("Alphabetically:", "Biggest first", "By size")
 _HOW = re.compile(r"(?:ly|est|wards?|wise)$")
-_TITLE_MOST_WORDS = 6
 # a title may speak of tidying, which in this world is the placing the list after it asks for
 _TIDYING = frozenset(
     "tidy tidying tidied sort sorting sorted arrange arranging arranged organise organize organising "
@@ -165,9 +165,9 @@ _MEANINGFUL = frozenset(
     "perhaps possibly ideally preferably bonus extra instead alternatively undo reset today tonight tomorrow "
     "priority important urgent warning caution begin beginning start starting initially finally lastly "
     "afterwards afterward thereafter subsequently second secondly third fourth meanwhile done finished "
-    "complete wait hold stop keep leave sorry oops whoops actually rather mean meant scratch correction "
-    "mistake bad instead wait waits pause follow follows followed following priority by size colour color "
-    "height weight alphabetical option options alternative alternatives or".split()
+    "complete wait waits hold stop keep leave pause follow follows followed following sorry oops whoops "
+    "actually rather mean meant scratch correction mistake bad by size colour color height weight "
+    "alphabetical option options alternative alternatives or".split()
 )
 # a question that names nothing and asks where things go, answered by the list after it ("What should end
 # up where?", "Where do things go?")
