@@ -760,3 +760,170 @@ DEV_H83: dict[int, list[str]] = {
         "Fill the yellow plate with the orange and the green apple, then fill the blue plate with the red "
         "apple and the carrot."],
 }
+
+# Issue 28 (h87): held-out rephrasings, written and committed before any h87 rule, in voices no older batch
+# uses (archaic "pray ... upon", a diner's order, JSON, a yoga teacher, a pirate, a chat message with an
+# @-mention and an emoji code, a bureaucrat's "hereby", a game-show host, meeting action items, a stand-up
+# note, "picture this when you're done", a rhyme, a tutorial, a military objective list) and framings they
+# do not ("followed by", "wait until", "move on to", "how you get there is up to you", "in this step");
+# measured once on first contact and once at the end (scripts/tabletop_styles.py --batch VALID_H87), never
+# read per sentence between.
+VALID_H87: dict[int, list[str]] = {
+    1: ["Pray, set the green apple upon the blue plate, and the orange upon the yellow plate.",
+        "I'll have the green apple on the blue plate and the orange on the yellow plate, thanks.",
+        '{"green apple": "blue plate", "orange": "yellow plate"}',
+        "Gently lift the green apple and rest it on the blue plate, and gently rest the orange on the "
+        "yellow plate. Nice and slow.",
+        "Arr, stow the green apple on the blue plate and the orange on the yellow plate, matey!",
+        "@robot can you put the green apple on the blue plate and the orange on the yellow plate :pray:"],
+    2: ["It is hereby requested that the green apple be placed on the pink plate, the orange on the yellow "
+        "plate and the red apple on the blue plate, in no prescribed order.",
+        "Tonight's challenge: green apple to the pink plate, orange to the yellow plate, red apple to the "
+        "blue plate - tackle them in any order you like!",
+        "Action items (unordered): green apple onto pink plate; orange onto yellow plate; red apple onto "
+        "blue plate.",
+        "Per today's stand-up, the green apple needs to go on the pink plate, the orange on the yellow plate "
+        "and the red apple on the blue plate. Feel free to tackle these in any order.",
+        "Picture this when you're done: green apple on the pink plate, orange on the yellow plate, red apple "
+        "on the blue plate. How you get there is up to you.",
+        "Green apple to the pink, orange to the yellow, red apple to the blue - any order, fellow!"],
+    3: ["The customer wants the carrot on the blue plate, the orange on the yellow plate, the green apple on "
+        "the green plate and the red apple on the pink plate - any order.",
+        '{"carrot": "blue plate", "orange": "yellow plate", "green apple": "green plate", "red apple": '
+        '"pink plate"}',
+        "Pray place the carrot upon the blue plate, the orange upon the yellow, the green apple upon the "
+        "green, and the red apple upon the pink; the order thereof is of no import.",
+        "In this step, you'll put the carrot on the blue plate, the orange on the yellow plate, the green "
+        "apple on the green plate and the red apple on the pink plate. You can go in any order.",
+        "No hurry at all - carrot on the blue plate, orange on the yellow plate, green apple on the green "
+        "plate, red apple on the pink plate, in whatever order feels natural.",
+        "@robot quick ask :) carrot -> blue plate, orange -> yellow plate, green apple -> green plate, red "
+        "apple -> pink plate. order is whatever"],
+    4: ["Objective one: green apple and orange onto the yellow plate. Objective two: carrot and red apple "
+        "onto the blue plate, in either order.",
+        "The green apple and the orange go on the yellow plate, followed by the carrot and the red apple on "
+        "the blue plate.",
+        "Start off by putting the green apple and the orange on the yellow plate. Once you've finished with "
+        "the yellow plate, move on to the blue plate: carrot and red apple, whichever order.",
+        "Firstly, set the green apple and the orange upon the yellow plate; thereafter, the carrot and the "
+        "red apple upon the blue plate, in whichever order thou wilt.",
+        "The carrot and the red apple go on the blue plate, but wait until the green apple and the orange "
+        "are on the yellow plate.",
+        "First, ye load the yellow plate with the green apple and the orange. Then ye load the blue plate "
+        "with the carrot and the red apple, arr!"],
+}
+
+# Issue 28 (h87): rephrasings for developing h87's rules (read per sentence), in voices VALID_H87 does not
+# use (a film director, a tour guide, a cowboy, a tweet with hashtags, a shouted sign, "do the needful", a
+# haiku-like terse voice, a bartender) and the shapes older held-out batches left refused, in other words
+# (a question heading, a bracketed "order:" remark on its own line, lettered labels, "before ... gets
+# anything", a freedom said with "as you please", a heading with "one", a negated "until", "shall first").
+DEV_H87: dict[int, list[str]] = {
+    1: ["Action! The green apple goes on the blue plate, the orange on the yellow plate. Cut!",
+        "Howdy partner, rustle that green apple onto the blue plate and the orange onto the yellow plate.",
+        "PLEASE PLACE THE GREEN APPLE ON THE BLUE PLATE AND THE ORANGE ON THE YELLOW PLATE",
+        "Kindly do the needful: green apple on the blue plate, orange on the yellow plate.",
+        "Where do things go? Green apple on the blue plate, orange on the yellow plate.",
+        "Could I trouble you to put the green apple on the blue plate and the orange on the yellow plate?"],
+    2: ["On your left, the pink plate, which will hold the green apple; the yellow plate takes the orange "
+        "and the blue plate the red apple. Any order at all.",
+        "green apple on pink plate, orange on yellow plate, red apple on blue plate #tidy #anyorder",
+        "Fruit | Plate\ngreen apple | pink plate\norange | yellow plate\nred apple | blue plate\n(sequence: "
+        "up to you)",
+        "Green apple, pink plate; orange, yellow plate; red apple, blue plate. Shuffle the order as you "
+        "like.",
+        "One more thing: the green apple on the pink plate, the orange on the yellow plate, the red apple on "
+        "the blue plate, any order."],
+    3: ["Pour me - I mean, place the carrot on the blue plate, the orange on the yellow plate, the green "
+        "apple on the green plate and the red apple on the pink plate, any order.",
+        "What goes where: carrot on the blue plate, orange on the yellow plate, green apple on the green "
+        "plate, red apple on the pink plate. Order as you please.",
+        "Could you be a sweetheart and put the carrot on the blue plate, the orange on the yellow plate, the "
+        "green apple on the green plate and the red apple on the pink plate? Any order.",
+        "Four quick ones, any order: carrot onto the blue plate, orange onto the yellow plate, green apple "
+        "onto the green plate, red apple onto the pink plate."],
+    4: ["Part A: green apple and orange onto the yellow plate. Part B: carrot and red apple onto the blue "
+        "plate.",
+        "The yellow plate gets the green apple and the orange before the blue plate gets anything; then the "
+        "blue plate gets the carrot and the red apple.",
+        "Leave the blue plate empty until the green apple and the orange are on the yellow plate, then put "
+        "the carrot and the red apple on the blue plate.",
+        "The robot shall first place the green apple and the orange on the yellow plate and shall then "
+        "place the carrot and the red apple on the blue plate.",
+        "Nothing goes on the blue plate until the green apple and the orange are on the yellow plate; after "
+        "that, the carrot and the red apple go on the blue plate.",
+        "You shall first put the green apple and the orange on the yellow plate, and you shall then put the "
+        "carrot and the red apple on the blue plate."],
+}
+
+# Issue 28 (h87): a second development batch, sixteen sentences written at once in voices no batch uses (a
+# sports coach's play call, a flight attendant, a librarian, a kindergarten song, a ship's captain, a
+# hurried parent, a game tutorial, a scientist's notebook, a sceptic, a poet, a customer complaint, a
+# magician), measured before any rule for them.
+DEV2_H87: dict[int, list[str]] = {
+    1: ["Ladies and gentlemen, please ensure the green apple is stowed on the blue plate and the orange on "
+        "the yellow plate.",
+        "Shh, quietly now: the green apple to the blue plate, the orange to the yellow plate.",
+        "Green apple, find your blue plate! Orange, find your yellow plate!",
+        "Helm, set the green apple on the blue plate and the orange on the yellow plate. Make it so."],
+    2: ["Okay, quick, quick: green apple on the pink plate, orange on the yellow plate, red apple on the "
+        "blue plate - I don't care how, just do it.",
+        "Tutorial: drag the green apple to the pink plate, the orange to the yellow plate and the red apple "
+        "to the blue plate. You can do these in any order.",
+        "Observation plan: green apple placed on pink plate; orange placed on yellow plate; red apple placed "
+        "on blue plate. Order randomised.",
+        "I bet you can't put the green apple on the pink plate, the orange on the yellow plate and the red "
+        "apple on the blue plate. Any order, go on."],
+    3: ["The carrot for the blue plate, the orange for the yellow plate, the green apple for the green plate "
+        "and the red apple for the pink plate - in any order.",
+        "My complaint: the carrot is not on the blue plate. Put the carrot on the blue plate, the orange "
+        "on the yellow plate, the green apple on the green plate and the red apple on the pink plate, any "
+        "order.",
+        "And for my next trick: carrot onto the blue plate, orange onto the yellow plate, green apple onto "
+        "the green plate, red apple onto the pink plate, in any order whatsoever.",
+        "Here's a little job for you: put the carrot on the blue plate, the orange on the yellow plate, the "
+        "green apple on the green plate and the red apple on the pink plate. Any order is grand."],
+    4: ["Play one: green apple and orange to the yellow plate. Play two: carrot and red apple to the blue "
+        "plate.",
+        "Green apple and orange on the yellow plate - that's the first job. The second job: carrot and red "
+        "apple on the blue plate, any order.",
+        "Right, so before you go near the blue plate, put the green apple and the orange on the yellow "
+        "plate. Then the carrot and the red apple go on the blue plate.",
+        "The yellow plate is first in line: it gets the green apple and the orange. The blue plate is next: "
+        "it gets the carrot and the red apple."],
+}
+
+# Issue 28 (h87): a third development batch, sixteen sentences written at once after the rules above, in
+# voices no batch uses (a text adventure, a drill sergeant, a court order, an HR memo, a wedding planner, a
+# DJ, "TL;DR", a dog trainer, a mechanic, a fortune teller), measured once before any rule for them.
+DEV3_H87: dict[int, list[str]] = {
+    1: ["> put green apple on blue plate\n> put orange on yellow plate",
+        "Listen up! Green apple, blue plate. Orange, yellow plate. Move it!",
+        "The court hereby orders that the green apple be placed on the blue plate and the orange on the "
+        "yellow plate.",
+        "TL;DR: green apple on the blue plate, orange on the yellow plate."],
+    2: ["Memo to all robots: please place the green apple on the pink plate, the orange on the yellow plate "
+        "and the red apple on the blue plate. Sequence at your discretion.",
+        "For the big day we need the green apple on the pink plate, the orange on the yellow plate and the "
+        "red apple on the blue plate - any order, darling.",
+        "Spin it! Green apple to the pink plate, orange to the yellow plate, red apple to the blue plate, "
+        "mix it up any order!",
+        "Good robot! Now pop the green apple on the pink plate, the orange on the yellow plate and the red "
+        "apple on the blue plate. Any order. Good job!"],
+    3: ["Job card: carrot - blue plate, orange - yellow plate, green apple - green plate, red apple - pink "
+        "plate. Order not critical.",
+        "I see the carrot on the blue plate, the orange on the yellow plate, the green apple on the green "
+        "plate and the red apple on the pink plate in your future - make it happen, in any order.",
+        "FYI we want the carrot on the blue plate, the orange on the yellow plate, the green apple on the "
+        "green plate and the red apple on the pink plate. Order irrelevant.",
+        "Please, in no special order: carrot to the blue plate, orange to the yellow plate, green apple to "
+        "the green plate, red apple to the pink plate."],
+    4: ["> put green apple on yellow plate\n> put orange on yellow plate\n> wait\n> put carrot on blue plate"
+        "\n> put red apple on blue plate",
+        "Listen up! First the green apple and the orange go on the yellow plate. Then, and only then, the "
+        "carrot and the red apple go on the blue plate!",
+        "Memo: priority goes to the yellow plate (green apple, orange); the blue plate (carrot, red apple) "
+        "follows.",
+        "Load the yellow plate with the green apple and the orange; once it's loaded, load the blue plate "
+        "with the carrot and the red apple."],
+}

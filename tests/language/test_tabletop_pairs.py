@@ -200,6 +200,8 @@ CARROT_ORANGE_THEN_APPLE = (
     "text",
     [
         "Phase one: carrot and orange onto the yellow plate. Phase two: green apple onto the blue plate.",
+        "Part A: carrot and orange onto the yellow plate. Part B: green apple onto the blue plate.",
+        "Objective I) carrot and orange on the yellow plate. Objective II) green apple on the blue plate.",
         "1st carrot & orange on yellow plate, then green apple on blue plate",
         "What I need first is the carrot and the orange on the yellow plate, and after that the green apple "
         "on the blue plate",
@@ -319,10 +321,26 @@ def test_a_full_reading_the_pairs_reading_contradicts_is_not_taken():
     text = "First put the carrot on the blue plate, then the orange on the yellow plate."
     res = translate(text, WORLD, build=False)
     assert reader.doubted(res, "offline") is res  # the two readings agree
-    unordered = res.model_copy(update={"before": []})  # a grammar that lost the "then"
-    doubted = reader.doubted(unordered, "offline")
+    plates = [t.receptacle for t in res.tasks][::-1]
+    swapped = [t.model_copy(update={"receptacle": p}) for t, p in zip(res.tasks, plates, strict=True)]
+    crossed = res.model_copy(update={"tasks": swapped})  # paired across: check 1 finds no word left unused
+    doubted = reader.doubted(crossed, "offline")
     assert doubted.partial and "read two ways" in doubted.unparsed[-1]
     assert "A before B" in doubted.unparsed[-1]
+
+
+def test_a_full_reading_that_check_1_rejects_on_the_words_paired_gives_way_to_the_pairs_reading():
+    from nl2hltl2plan.language.tabletop_pairs import TabletopReader
+
+    reader = TabletopReader(WORLD)
+    text = "First put the carrot on the blue plate, then the orange on the yellow plate."
+    res = translate(text, WORLD, build=False)
+    unordered = res.model_copy(update={"before": []})  # lost the "then": check 1 finds "first", "then" unused
+    taken = reader.doubted(unordered, "offline")
+    assert not taken.partial and [(t.object, t.receptacle) for t in taken.tasks] == [
+        (t.object, t.receptacle) for t in res.tasks
+    ]
+    assert taken.before == res.before == [("A", "B")]
 
 
 APPLE_BLUE_ORANGE_YELLOW = ([("GreenApple", "BluePlate"), ("Orange", "YellowPlate")], [])
@@ -452,8 +470,15 @@ def test_the_order_of_two_steps_whatever_words_say_it(text):
     assert len(yellow) == len(blue) == 2 and order == sorted((a, b) for a in yellow for b in blue)
 
 
-def test_steps_numbered_out_of_turn_are_refused():
-    assert _reading("Part 2: green apple on the blue plate. Part 1: orange on the yellow plate.") is None
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Part 2: green apple on the blue plate. Part 1: orange on the yellow plate.",
+        "Part B: green apple on the blue plate. Part A: orange on the yellow plate.",
+    ],
+)
+def test_steps_numbered_out_of_turn_are_refused(text):
+    assert _reading(text) is None
 
 
 def test_respectively_pairs_the_nth_object_with_the_nth_plate():

@@ -81,6 +81,13 @@ def phrase_list_pattern(filename: str, kind: str | None = None) -> str:
     return "(?:" + "|".join(_phrase_pattern(p.strip()) for k, _, p in lines if kind in (None, k)) + ")"
 
 
+def phrase_words(filename: str, kind: str) -> frozenset[str]:
+    """Every word the phrases of one kind of a `kind: phrase` file use (for a kind that lists words)."""
+    text = resources.files("nl2hltl2plan.language").joinpath(filename).read_text()
+    lines = [line.partition(":") for line in text.splitlines() if line.strip() and not line.startswith("#")]
+    return frozenset(w for k, _, p in lines if k == kind for w in re.findall(r"[^\s()\[\]|]+", p))
+
+
 def _phrase_pattern(phrase: str) -> str:
     """One line of `free_order.txt` as a regular expression: "(a|b)" one of, "[x]" optional."""
     toks = re.findall(r"[()\[\]|]|[^\s()\[\]|]+", phrase)

@@ -29,6 +29,7 @@ from nl2hltl2plan.language.grammar.restated import count_fits
 from nl2hltl2plan.language.grounding import camel_words
 from nl2hltl2plan.language.htt_build import build_htt
 from nl2hltl2plan.language.result import LanguageResult
+from nl2hltl2plan.language.tabletop_waits import plate_waits_read
 from nl2hltl2plan.language.tabletop_wording import (
     corrected,
     free_order,
@@ -51,7 +52,8 @@ _THAT = r"(?:that|this|those|these|them|it)"
 # you've done that", "subsequently", "next" (not "next to")
 _THERE = r"(?:there|on\s+it|in\s+it|on\s+there|in\s+place|placed|down)"
 _THEN = re.compile(
-    r"\b(?:only\s+)?(?:(?:and\s+)?then|after\s+(?:that|this|those|these|which)|afterwards?|thereafter|subsequently|"
+    r"\b(?:only\s+)?(?:then,?\s+and\s+only\s+then|(?:and\s+)?then|after\s+(?:that|this|those|these|which)|"
+    r"afterwards?|thereafter|subsequently|"
     r"next(?!\s+to\b)|second(?:ly)?|(?:and\s+)?(?:finally|lastly)|"
     rf"(?:once|when|after|as\s+soon\s+as)\s+(?:{_THAT}(?:'s|s|\s+is|\s+are|'re)\s+{_DONE}|"
     rf"(?:they|both|{_THAT}|both\s+of\s+them|all\s+of\s+them)(?:'re|'s|\s+are|\s+is)\s+(?:both\s+|all\s+)?{_THERE}|"
@@ -93,11 +95,11 @@ _REFUSED = _refused_words()
 _SENTENCE = re.compile(r"[.;!?]+")
 # a heading before a colon that names no object or plate: "Here is what I need:", "Postcondition:",
 # "Your job is to put each item on its plate:", "Three moves:" (its count must be the placements listed)
-_HEADING = re.compile(r"^(?P<head>[^:]*):")
+_HEADING = re.compile(r"^(?P<head>[^:]*?)(?::|\s+-\s+)")  # "Three moves:", "I'd like three things done -"
 _GENERIC_QUANTITY = re.compile(
     r"\b(?:each|every|all(?:\s+the)?)\s+(?:item|thing|fruit|object|piece|one)s?\b|"
     r"\b(?P<count>two|three|four)\s+(?:[a-z]+\s+)?(?:items?|things?|fruits?|objects?|placements?|moves?|"
-    r"pieces?|tasks?)\b"
+    r"pieces?|tasks?|ones|jobs|errands|chores)\b"
 )
 # "each plate gets one thing": one placement per plate, which the pairs listed after it must keep
 _ONE_PER_PLATE = re.compile(
@@ -108,6 +110,23 @@ _ONE_PER_PLATE = re.compile(
 # verbs that order one placement after another, which check 1's order words do not list: no reading of
 # the tabletop world takes them ("the green apple on the yellow plate must precede the carrot ...")
 _RELATION_VERB = re.compile(r"\bpreced(?:e|es|ed|ing)\b")
+# words that say an order which check 1's order words do not list: a reading with no order leaves them
+# unused, and the pairs reading refuses them ("put A on P > wait > put B on Q", "P has priority; Q follows",
+# "alphabetically", "by size", "biggest first"; not "no need to follow an order"); a priority only the former
+# ("Priority 1: ... Priority 2: ..." are labels)
+_ORDER_SAID = re.compile(
+    r"\b(?:wait(?:s|ing)?|pause|follow(?:s|ed|ing)|alphabetic(?:al(?:ly)?)?|"
+    r"(?:anti-?|counter-?)?clockwise|by\s+(?:size|colou?r|height|weight|name|type)|(?:left|right)\s+to\s+"
+    r"(?:right|left)|(?:bigg|small|larg|tall|short|heavi|light)est\s+(?:first|last)|in\s+turn|"
+    r"sequential(?:ly)?|in\s+sequence|one\s+(?:after|by)\s+(?:the\s+)?(?:other|one))\b"
+)
+_PRIORITY = re.compile(r"\bpriorit(?:y|ies|i[sz]e[sd]?)\b")
+# labels that name alternatives, not steps ("Plan A: ... Plan B: ...", "Option 1: ..."): which one is meant
+# is not said, and doing both is no reading of them
+_ALTERNATIVES = re.compile(
+    r"\b(?:option|plan|alternative|choice|scenario|variant|version|possibility)\s+(?:[a-d]|\d|one|two|three|"
+    r"four|i{1,3}|iv)\b"
+)
 
 # "the order matters" / "sequence is important" / "the order is not up to you": an order is meant, but only
 # the mention order says which
@@ -145,7 +164,7 @@ class TabletopReader:
                 f"'{stated}' says where something is, not what to do: ask for it (\"put ...\", \"make sure "
                 "... is on ...\") or leave it out"
             )
-        return numbered_steps(corrected(instruction, kinds))
+        return numbered_steps(plate_waits_read(corrected(instruction, kinds), kinds))
 
     def reread(self, instruction: str, backend: str) -> LanguageResult | None:
         return tabletop_fallback(instruction, self.world, backend)
@@ -157,16 +176,33 @@ class TabletopReader:
         return type(refused)(f"{refused}{has}") if has else refused
 
     def doubted(self, res: LanguageResult, backend: str) -> LanguageResult:
-        """The grammar's full reading, made partial where the pairs reading reads the instruction too and
-        gives other placements or another order: two readings that differ are never a guess."""
+        """The grammar's full reading, or the pairs reading where it reads the instruction too, gives other
+        placements or another order, and check 1 on the words it read accepts it and rejects the grammar's
+        reading ("The robot shall first place A on P and shall then place B on Q": the grammar pairs A with
+        Q and leaves "first" and "then" unused); made partial where neither is rejected: two readings that
+        differ are never a guess."""
         paired = tabletop_fallback(res.instruction, self.world, backend)
         if paired is None or _signature(paired) == _signature(res):
             return res
+        if self._rejected_on_words_paired(res):
+            return paired
         why = (
             f"'the placements and their order' (order): read two ways, {_described(res)} (the grammar) or "
             f"{_described(paired)} (object and plate paired); say it another way"
         )
         return res.model_copy(update={"unparsed": [*res.unparsed, why]})
+
+    def _rejected_on_words_paired(self, res: LanguageResult) -> bool:
+        """Does check 1 reject the grammar's reading on the words the pairs reading read (its wording rules
+        applied), which the pairs reading passed?"""
+        read = read_pairs(res.instruction, set(self.world.object_types()))
+        if read is None:
+            return False
+        instances = Counter(o.type for o in self.world.objects.values() if o.present)
+        try:
+            return bool(account(read[3], res.tasks, res.before, instances, self.world.name))
+        except HTTError:  # a count or order check 1 rejects outright
+            return True
 
     def unused(self, res: LanguageResult) -> list[Unread]:
         """Each object or plate the instruction names (outside its negated clauses) that no base task
@@ -191,6 +227,12 @@ class TabletopReader:
             out[found[0]] = Unread(found[0], "order", why)
         for found in _RELATION_VERB.finditer(res.instruction.lower()):
             why = "an order between placements that this reading does not take"
+            out[found[0]] = Unread(found[0], "order", why)
+        for found in _ALTERNATIVES.finditer(res.instruction.lower()):
+            out[found[0]] = Unread(found[0], "condition", "alternatives: which one is meant is not said")
+        said = [*_ORDER_SAID.finditer(res.instruction.lower()), *_PRIORITY.finditer(res.instruction.lower())]
+        for found in said if not res.before else ():
+            why = "it says an order (a wait, what follows, a priority, a sorting) and the reading has none"
             out[found[0]] = Unread(found[0], "order", why)
         return list(out.values())
 
@@ -261,8 +303,8 @@ def read_pairs(text: str, types: set[str]) -> Reading | None:
     by_words = {camel_words(t): t for t in types}
     kinds = {w: _is_plate(t) for w, t in by_words.items()}
     plain = plain_words(text, kinds, _shared_heads(by_words))
-    unread_order = _RELATION_VERB.search(plain) or _ORDER_MATTERS.search(plain)  # an order not taken here
-    if stated_not_asked(plain, by_words) is not None or unread_order:
+    unread_order = _RELATION_VERB.search(plain) or _ORDER_MATTERS.search(plain) or _ORDER_SAID.search(plain)
+    if stated_not_asked(plain, by_words) is not None or unread_order or _ALTERNATIVES.search(text.lower()):
         return None
     plain, last_free = last_group_free(plain)
     unordered, remarks = free_order(plain)
@@ -271,6 +313,7 @@ def read_pairs(text: str, types: set[str]) -> Reading | None:
     pattern = mention_pattern(by_words)
     if stepped is not None:  # a clause waiting for placements, and a "then" closing its clause, put first
         stepped = _trailing_then_fronted(_reference_fronted(stepped, pattern), pattern)
+        stepped = _then_after_subject_fronted(stepped, pattern)
     plates_first, rest = _plate_order(stepped or "", pattern)
     if plates_first and (_THEN.search(rest) or _FIRST.search(rest) or _BEFORE.search(rest)):
         return None  # the order said of plates and again of placements
@@ -392,6 +435,22 @@ _CLAUSE_END = re.compile(r"[,.;!?\n]")
 _TRAILING_THEN = re.compile(
     rf"(?:(?P<first>\bfirst\b)|{_THEN.pattern}|\b(?:after|later|last)\b)(?=\s*(?:[,.;!?\n]|$))"
 )
+
+
+# the verbs a "then" may stand before in "the blue plate then gets ...", "the carrot then goes ..."
+_SUBJECT_VERB = r"(?:gets?|goes|go|takes?|receives?|holds?|should|must|can|will|may|needs?|has|have|is|are)"
+
+
+def _then_after_subject_fronted(text: str, pattern: re.Pattern[str]) -> str:
+    """A "then" between a clause's named subject and its verb put before the clause ("; the blue plate then
+    gets the carrot" -> "; then the blue plate gets the carrot"), so that it cuts the groups where the
+    clause starts; not before another name ("the carrot then the orange" orders the two)."""
+    subject = rf"(?P<subject>(?:the\s+)?{pattern.pattern})"
+    return re.sub(
+        rf"(?P<start>(?:^|[,.;:!?])\s*(?:and\s+)?)(?:then\s+)?{subject}\s+then\s+(?={_SUBJECT_VERB}\b)",
+        r"\g<start>then \g<subject> ",
+        text,
+    )
 
 
 def _trailing_then_fronted(text: str, pattern: re.Pattern[str]) -> str:

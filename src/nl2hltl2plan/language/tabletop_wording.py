@@ -14,14 +14,8 @@ and plate names, read before `tabletop_pairs` pairs them.
   "within each step, any order") the numbers only list, and "lastly" / "finally" only mark its last item;
 - politeness that carries nothing: "it would please me if", "I would be grateful if you could", "let me
   see", "chop chop", "go ahead and";
-- clauses that name no object or plate, read by what their words are rather than by a list of phrasings
-  (`remarks_read`): a clause made only of greetings, courtesy and the user's own time ("hey", "when you
-  get a sec", "mind doing me a favour?", "no rush") is removed; a list's heading made of a verb of tidying
-  and a word for the things ("Please sort these:", "organise this for me") is removed; a clause that
-  speaks of the order (or of which comes first, or of what depends on what) and says it is free ("the
-  order in which you do them is irrelevant", "it makes no difference which one you do first", "none of
-  these depends on another") becomes "in any order", or "within each group in any order" when it speaks
-  of each group ("the order within each pair does not matter");
+- clauses that name no object or plate (courtesy, list headings, freedom statements), read by what their
+  words are rather than by a list of phrasings (`tabletop_remarks.remarks_read`);
 - what the world's closed vocabulary settles: a plate said by its colour alone, "on it" (the plate named
   before), "respectively", a question about where an object goes joined with the plate that answers it,
   and a tidying verb before an object ("sort the carrot onto ...") as placing it (a state clause under a
@@ -33,9 +27,11 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable
 
-from nl2hltl2plan.language.content_words import free_order_phrase, phrase_list_pattern
+from nl2hltl2plan.language.content_words import phrase_list_pattern
 from nl2hltl2plan.language.grounding import sentence_start
 from nl2hltl2plan.language.statements import WHERE_VERB, asked_before
+from nl2hltl2plan.language.tabletop_remarks import FREE_ORDER, TIDY_VERB, remarks_read
+from nl2hltl2plan.language.tabletop_waits import plate_waits_read
 
 # ---- statements ---------------------------------------------------------------------------------------
 # where it is: on or in a place, or "fine where it is" / "good as it is" / "fine there"
@@ -68,9 +64,7 @@ def stated_not_asked(text: str, names: Iterable[str]) -> str | None:
 
 
 # ---- free-order remarks ---------------------------------------------------------------------------------
-# the shared list (free_order.txt), anywhere in the text: "in any order", "the order is up to you", also
-# with a comma between its words ("Which order, is not important", "Within each step, any order")
-_FREE_ORDER = re.compile(r"\b" + free_order_phrase().replace(r"\s+", r",?\s+") + r"\b")
+_FREE_ORDER = FREE_ORDER  # the shared list (free_order.txt), anywhere in the text (`tabletop_remarks`)
 # a remark about the order inside each step ("within each step, any order"), which leaves the steps' own
 _WITHIN_STEPS = re.compile(r"\bwithin\b")
 # under a remark that frees the whole list, "lastly" / "finally" only mark its last item ("..., and, lastly,
@@ -113,29 +107,28 @@ _CORRECTION = re.compile(
     r"^[\s,.;:!\-]*(?:(?:no|sorry|wait|oops|whoops|actually|rather|or\s+rather|i\s+mean[t]?|make\s+that|"
     r"correction|scratch\s+that|my\s+mistake|my\s+bad)\b[\s,.;:!\-]*)+(?:the\s+|a\s+|an\s+)?$"
 )
-_POLITE = re.compile(rf"\b{phrase_list_pattern('courtesy.txt', 'wish')}\b")  # courtesy.txt's polite wishes
-_FILLER = re.compile(
-    r"^\W*(?:let\s+me\s+see|let's\s+see)\b|\bchop\s+chop\b|\bfind\s+(?:below|attached|enclosed)\b|"
-    r"\bgo\s+ahead\s+and\b"
-)
+
+
+def _polite(kind: str) -> str:
+    """The phrases of one kind of `courtesy.txt`, as one regular expression."""
+    return phrase_list_pattern("courtesy.txt", kind)
+
+
+_POLITE = re.compile(rf"\b{_polite('wish')}\b")  # polite wishes: "it would please me if"
+_FILLER = re.compile(rf"^\W*{_polite('opening')}\b|\b{_polite('filler')}\b")  # carry nothing
 # a letter's frame: a subject line ("Subject: plates", "Re: tidying") that names nothing and says no order
 # and a sign-off ("Best, Sam", "Thanks,\nJo") closing the text: neither is part of the request
 # (its line break is gone by then: it ends where the letter's first sentence begins, with a capital)
 _HEADER_LINE = re.compile(r"^\s*(?i:subject|re|fwd?|topic|title)\s*:(?P<words>[^.:;!?]*?)\s+(?=[A-Z])")
-_SIGN_OFF = re.compile(
-    r"(?<=[.!?\n])\s*(?i:best|regards|kind\s+regards|best\s+regards|best\s+wishes|cheers|thanks|thank\s+you|"
-    r"many\s+thanks|love|yours|sincerely|ta)\s*,?\s*(?P<name>[A-Z][a-z]+)\W*$"
-)
+_SIGN_OFF = re.compile(rf"(?<=[.!?\n])\s*(?i:{_polite('sign_off')})\s*,?\s*(?P<name>[A-Z][a-z]+)\W*$")
 _SAYS_ORDER = re.compile(
     r"\b(?:order|sequence|first|then|before|after|until|next|last|not|no|never)\b|n't|\d"
 )
 # "don't forget (to)": a reminder, which asks as "please" asks (not a negation)
-_REMINDER = re.compile(r"\b(?:don'?t|do\s+not)\s+forget(?:\s+to)?\b")
+_REMINDER = re.compile(rf"\b{_polite('reminder')}\b")
 # "if you could X, that would be great": a polite frame around a request, not a condition
 _IF_YOU_COULD = re.compile(
-    r"(?:^|(?<=[.!?]\s))(?P<pre>\W*)if\s+you\s+(?:could|would|can)(?:\s+please)?\b(?P<body>[^.;!?]*?),?\s*"
-    r"\b(?:that|it)(?:'d|\s+would|'ll|\s+will|'s|\s+is)\s+be\s+(?:so\s+|really\s+|very\s+)?(?:great|lovely|nice|"
-    r"wonderful|perfect|awesome|amazing|brilliant|fantastic|helpful|ideal|super|(?:much\s+)?appreciated)\b"
+    rf"(?:^|(?<=[.!?]\s))(?P<pre>\W*){_polite('request')}\b(?P<body>[^.;!?]*?),?\s*\b{_polite('thanks')}\b"
 )
 _THE_FOLLOWING = re.compile(r"\b(?:the\s+)?following(?=\s*:)")  # a list's heading: "arrange the following:"
 # an aside that only describes the thing before it: "the green apple, the nice shiny one, goes ..."
@@ -156,11 +149,11 @@ def plain_words(text: str, kinds: dict[str, bool], heads: dict[str, list[str]]) 
     a tidying verb before an object as "put", plates said by colour named, questions joined with their
     answers, corrections applied and plurals named. `kinds`: each object or plate name (in words) -> is
     it a plate; `heads`: a head noun that several objects share ("apple") -> their names."""
-    text = _letter_frame_dropped(text, kinds).lower()
+    text = plate_waits_read(_letter_frame_dropped(text, kinds).lower(), kinds)
     text = re.sub(r"\b(1st|2nd|3rd|4th)\b", lambda m: _ORDINALS[m[1]], text)
     text = _IF_YOU_COULD.sub(r"\g<pre>please\g<body>", _REMINDER.sub("please", text))
     text = _THE_FOLLOWING.sub("these", _FILLER.sub(" ", polite_frames(text)))
-    text = remarks_read(text, kinds)
+    text = remarks_read(text, mention_pattern(kinds), frozenset(w for name in kinds for w in name.split()))
     text = _PAIR_VERB.sub("match", text).replace("+", " and ")
     text = _BY_THE_END.sub("", _FIRST_THINGS.sub("first", text))
     text = _DONE_WORDS.sub(r"\g<that> is done", text)
@@ -194,7 +187,7 @@ _BY_THE_END = re.compile(
 # "once that's sorted / taken care of / out of the way": a step done (said as "done", which check 1 knows)
 _DONE_WORDS = re.compile(
     r"\b(?P<that>that|this|those|these|it|they)(?:'s|s|\s+is|\s+are|'re)\s+(?:sorted|handled|through|over|"
-    r"taken\s+care\s+of|out\s+of\s+the\s+way)\b"
+    r"taken\s+care\s+of|out\s+of\s+the\s+way|loaded|filled|full|ready)\b"
 )
 _FIRST_THINGS = re.compile(r"\bfirst\s+things\s+first\b")
 
@@ -203,7 +196,7 @@ def _tidied_as_put(text: str, kinds: dict[str, bool]) -> str:
     """ "sort the green apple onto the blue plate": a verb of tidying before a named object is the one
     action of this world, placing it."""
     objects = mention_pattern([n for n, plate in kinds.items() if not plate]).pattern
-    return re.sub(rf"\b{_TIDY_VERB}(?:\s+(?:out|up))?(?=\s+(?:the\s+)?{objects})", "put", text)
+    return re.sub(rf"\b{TIDY_VERB}(?:\s+(?:out|up))?(?=\s+(?:the\s+)?{objects})", "put", text)
 
 
 _RESPECTIVELY_WORDS = frozenset(
@@ -358,15 +351,26 @@ def _name(found: str) -> str:
 
 # ---- step labels and list numbers ----------------------------------------------------------------------
 _NUMBER_WORDS = {"one": 1, "two": 2, "three": 3, "four": 4, "first": 1, "second": 2, "third": 3, "fourth": 4}
+# a label's place in turn: a digit, a number word or an ordinal, or (with a colon or bracket after it, so
+# that an article or "I" is not one) a letter or a roman numeral ("Part A:", "Phase II)")
+_LETTERS = {"a": 1, "b": 2, "c": 3, "d": 4, "i": 1, "ii": 2, "iii": 3, "iv": 4}
 _STEP_NOUN = r"(?:step|phase|stage|part|round|course|batch)"
+_TURN = (
+    r"(?:(?P<n1>\d|one|two|three|four|first|second|third|fourth)\s*[:.)\-]|(?P<l1>[a-d]|i{1,3}|iv)\s*[:)])"
+)
 _LABEL = re.compile(
-    rf"(?:^|(?<=[.;!?:,]))\s*(?:{_STEP_NOUN}\s*(?P<n1>\d|one|two|three|four|first|second|third|fourth)|"
-    rf"(?P<n2>first|second|third|fourth)\s+{_STEP_NOUN})\s*[:.)\-]\s*"
+    rf"(?:^|(?<=[.;!?:,]))\s*(?:{_STEP_NOUN}\s*{_TURN}|(?P<n2>first|second|third|fourth)\s+{_STEP_NOUN}"
+    r"\s*[:.)\-])\s*",
+    re.IGNORECASE,
 )
 _NOUN_LABEL = re.compile(
-    r"(?:^|(?<=[.;!?:,]))\s*(?P<noun>[a-z]+)\s+(?P<n1>\d|one|two|three|four)(?P<n2>)\s*[:.)\-]\s*"
+    r"(?:^|(?<=[.;!?:,]))\s*(?P<noun>[a-z]+)\s+(?:(?P<n1>\d|one|two|three|four)\s*[:.)\-]|(?P<l1>[a-d]|i{1,3}|iv)"
+    r"\s*[:)])(?P<n2>)\s*",
+    re.IGNORECASE,
 )
 _LIST_NUMBER = re.compile(r"(?:^|(?<=[\s.;!?]))\(?(?P<n>\d)[.)]\s+")
+# "Plan A: ... Plan B: ...", "Option 1: ...": alternatives, no steps (`tabletop_pairs` refuses them)
+_ALTERNATIVE_NOUNS = frozenset("option plan alternative choice scenario variant version possibility".split())
 
 
 def steps_read(text: str, listed: bool) -> str | None:
@@ -374,7 +378,7 @@ def steps_read(text: str, listed: bool) -> str | None:
     numbers beside a remark that frees the whole list (`listed`: "1) ... 2) ... in any order") only list,
     and are removed. None: labels or numbers out of turn."""
     labels = _labels(text)
-    if [_step_number(m["n1"] or m["n2"]) for m in labels] != list(range(1, len(labels) + 1)):
+    if [_turn(m) for m in labels] != list(range(1, len(labels) + 1)):
         return None
     text = _as_steps(text, labels)
     return list_numbers_read(text, listed)
@@ -385,8 +389,8 @@ def _labels(text: str) -> list[re.Match[str]]:
     Priority 2: ...")."""
     labels = list(_LABEL.finditer(text))
     if not labels:
-        labels = list(_NOUN_LABEL.finditer(text))
-        if len(labels) < 2 or len({m["noun"] for m in labels}) != 1:
+        labels = [m for m in _NOUN_LABEL.finditer(text) if m["noun"].lower() not in _ALTERNATIVE_NOUNS]
+        if len(labels) < 2 or len({m["noun"].lower() for m in labels}) != 1:
             return []
     return labels
 
@@ -395,7 +399,7 @@ def labels_out_of_turn(text: str) -> str | None:
     """The labels or list numbers of `text` (lowercased) when they are not 1, 2, ... in turn ("Part 2: ...
     Part 1: ..."): no reading may order the steps by where they are written."""
     numbers = [m[0].strip() for m in (*_labels(text), *_LIST_NUMBER.finditer(text))]
-    turns = [_step_number(m["n1"] or m["n2"]) for m in _labels(text)]
+    turns = [_turn(m) for m in _labels(text)]
     listed = [int(m["n"]) for m in _LIST_NUMBER.finditer(text)]
     if turns == list(range(1, len(turns) + 1)) and listed in ([], list(range(1, len(listed) + 1))):
         return None
@@ -416,9 +420,13 @@ def list_numbers_read(text: str, listed: bool) -> str | None:
 
 
 def numbered_steps(text: str) -> str:
-    """`text` with the numbers of a numbered list of two or more steps read (`list_numbers_read`: as
-    "first" / "then", or removed beside a remark that frees the whole list), so that every reader orders
-    the steps as the numbers do; the text as it is with no such list."""
+    """`text` with its step labels read as "first" / "then" when there are two or more in turn ("Part A:
+    ... Part B: ..."), and the numbers of a numbered list of two or more steps read (`list_numbers_read`:
+    as "first" / "then", or removed beside a remark that frees the whole list), so that every reader
+    orders the steps as the labels and numbers do; the text as it is with no such list."""
+    labels = _labels(text)
+    if len(labels) >= 2 and [_turn(m) for m in labels] == list(range(1, len(labels) + 1)):
+        text = " ".join(_as_steps(text, labels).split())
     if len(_LIST_NUMBER.findall(text)) < 2:
         return text
     read = list_numbers_read(text, frees_every_step(free_order(text.lower())[1]))
@@ -433,133 +441,9 @@ def _as_steps(text: str, marks: list[re.Match[str]]) -> str:
     return text
 
 
-def _step_number(word: str) -> int:
+def _turn(label: re.Match[str]) -> int:
+    """A label's place in turn: "Step 2:" -> 2, "Part B:" -> 2."""
+    if label["l1"]:
+        return _LETTERS[label["l1"].lower()]
+    word = (label["n1"] or label["n2"]).lower()
     return int(word) if word.isdigit() else _NUMBER_WORDS[word]
-
-
-# ---- clauses that name nothing: courtesy, list headings, freedom statements --------------------------------
-# (read word by word, whatever their phrasing: every word must belong to the clause's kind)
-_SENTENCE_PIECE = re.compile(r"[^.;:!?()\n]+")
-_CLAUSE = re.compile(r"[^,.;:!?()\n]+?(?=\s+-\s+|[,.;:!?()\n]|$)")
-_COURTESY_WORDS = frozenset(
-    "hey hi hiya hello yo ok okay so alright right well um uh erm please thanks thank cheers kindly dear "
-    "sweetie mate buddy robot when whenever if you you're youre u get got have find a an some spare are can "
-    "could would will mind doing me favour favor like just quick pls plz thx ty ta".split()
-)
-_UNHURRIED = re.compile(r"\bno\s+(?:rush|hurry|worries|pressure)\b")
-_TIDY_VERB = r"(?:sort|organi[sz]e|arrange|tidy|handle|do|fix|set\s+up|lay\s+out)"
-_THE_THINGS = (
-    r"(?:these|this|that|them|things|stuff|everything|the\s+(?:items|things|fruits?|plates|following))"
-)
-_HEADING_FRAME = re.compile(
-    rf"^{_TIDY_VERB}\s+(?:(?:out|up)\s+)?{_THE_THINGS}(?:\s+(?:out|up))?(?:\s+for\s+(?:me|us))?$"
-)
-# a freedom statement: what it is about (the order, which comes first, what depends on what) ...
-_ORDER_TOPIC = re.compile(
-    r"\b(?:order(?:ing)?|sequenc(?:e|ing)|which\b[a-z'\s]{0,24}?\b(?:first|(?:start|begin)(?:\s+with)?)|"
-    r"(?:either|any|whichever)(?:\s+one|\s+of\s+them)?\s+(?:(?:can\s+)?(?:go|goes|come|comes)\s+)?first)\b"
-)
-_INDEPENDENT = re.compile(
-    r"\b(?:none|neither|no\s+one)\s+of\s+(?:these|them|those|the\s+\w+)\s+depends?\s+on\s+(?:another|any\s+other|"
-    r"the\s+others?|each\s+other|one\s+another)\b|\b(?:they|these|those|them)\s+(?:are|'re)\s+(?:all\s+)?"
-    r"independent(?:\s+of\s+(?:each\s+other|one\s+another))?\b"
-)
-# ... and what it says of it
-_FREE_PREDICATE = re.compile(
-    r"\b(?:(?:does|do|did|will|would|should)(?:\s+not|n't|nt)\s+matter|no\s+matter|matters\s+not|irrelevant|"
-    r"unimportant|not\s+important|of\s+no\s+(?:consequence|importance)|up\s+to\s+you|(?:your|the\s+robot's)\s+"
-    r"(?:call|choice|decision|pick)|(?:are|'re|is|'s)\s+free|free\s+to\s+(?:choose|pick|decide)|"
-    r"(?:can|may|get\s+to)\s+(?:choose|pick|decide)|any|either|whatever|whichever|arbitrary|flexible|optional|"
-    r"not\s+(?:specified|fixed|set|required|needed)|unspecified|no\s+particular|(?:i|we)\s+(?:don't|do\s+not)\s+"
-    r"(?:care|mind)|(?:makes?|is)\s+no\s+difference|do\s+(?:whatever|as\s+you\s+(?:like|please)))\b"
-)
-# "within each pair", "inside each", "within a priority", "for every plate": what a freedom statement is about
-_EACH_GROUP = re.compile(
-    r"\b(?:(?:within|inside)\s+(?:each|every|a|one|the\s+same)|(?:in|for)\s+(?:each|every))(?:\s+(?!order\b)[a-z]+)?\b"
-)
-_FREEDOM_FILLER = frozenset(
-    "the in which you do them they these those this it that of for me us to is are be at all really totally "
-    "entirely quite completely here and so just it's its can may will how place placement placements put "
-    "one ones a way round i we honestly pretty much first go goes what done like want prefer wish choose "
-    "pick fine ok okay good works work suits suit by with".split()
-)
-_NEGATION = re.compile(r"\b(?:not|never|no|none)\b|n't\b")
-
-
-def remarks_read(text: str, names: Iterable[str]) -> str:
-    """`text` with each sentence, or else each clause, that names no object or plate read by its words
-    (see the module docstring): courtesy and list headings removed, freedom statements said as "in any
-    order" or "within each group in any order". Any other clause is left as it is, for the readers."""
-    mention = mention_pattern(names)
-    text = _SENTENCE_PIECE.sub(lambda m: _opener_dropped(m[0]), text)
-    for pieces in (_SENTENCE_PIECE, _CLAUSE):
-        low, out, at = text.lower(), [], 0
-        for piece in pieces.finditer(low):
-            words = piece[0].strip(" -")
-            if not words or mention.search(words):
-                continue
-            read = None if _FREE_ORDER.fullmatch(words) else _clause_read(words)  # a listed remark stays
-            if read is not None:
-                out.append(text[at : piece.start()] + (f" {read}" if read else ""))
-                at = piece.end()
-        text = "".join(out) + text[at:]
-    return re.sub(r"[ \t]+([,.;:!?])", r"\1", re.sub(r"[ \t]+", " ", text)).strip()
-
-
-_YOUR_TIME = frozenset("sec second moment minute chance time free".split())
-_YOU = frozenset({"you", "you're", "youre", "u"})
-
-
-def _courtesy(words: list[str]) -> bool:
-    """Are `words` courtesy alone? A word for time only beside "you" ("when you get a sec", "whenever
-    you're free"; "second" alone is a step)."""
-    said = set(words)
-    return said <= _COURTESY_WORDS | _YOUR_TIME and (not _YOUR_TIME & said or bool(_YOU & said))
-
-
-def _opener_dropped(sentence: str) -> str:
-    """A sentence without the courtesy words it opens with when they speak of the user's time ("hey when
-    you get a sec could you put ...": no comma sets them apart)."""
-    words = list(re.finditer(r"[A-Za-z']+", sentence))
-    run = 0
-    while run < len(words) and words[run][0].lower() in _COURTESY_WORDS | _YOUR_TIME:
-        run += 1
-    said = [w[0].lower() for w in words[:run]]
-    if run == len(words) or not (_YOUR_TIME & set(said) and _courtesy(said)):  # not "Second course:"
-        return sentence
-    return sentence[: words[0].start()] + sentence[words[run].start() :]
-
-
-_ASKING = frozenset("i i'd we we'd want need would to".split())  # "I'd like you to sort the fruit:"
-
-
-def _clause_read(clause: str) -> str | None:
-    """ "" for courtesy or a list heading, a free-order phrase for a freedom statement, None otherwise."""
-    words = re.findall(r"[a-z']+", _UNHURRIED.sub(" ", clause))
-    if _courtesy(words):  # "no rush" alone too
-        return ""
-    while words and words[0] in _COURTESY_WORDS | _ASKING:  # "could you sort these out for me please"
-        words.pop(0)
-    if words and words[-1] == "please":
-        words.pop()
-    said = " ".join(words)
-    if _HEADING_FRAME.match(said):
-        return ""
-    if _HEADING_FRAME.match(_FREE_ORDER.sub(" ", said).strip()) and _FREE_ORDER.search(said):
-        return "in any order"  # "tidy them up in any order": the heading and a freedom remark
-    return _freedom_read(clause)
-
-
-def _freedom_read(clause: str) -> str | None:
-    """ "in any order" / "within each group in any order" for a clause that speaks of the order and says
-    it is free; None when it says anything else (a negation outside the free phrase, another word)."""
-    whole = _INDEPENDENT.search(clause)
-    if whole is None and not (_ORDER_TOPIC.search(clause) and _FREE_PREDICATE.search(clause)):
-        if not (_EACH_GROUP.search(clause) and _FREE_PREDICATE.search(clause)):
-            return None
-    rest = clause
-    for said in (_INDEPENDENT, _ORDER_TOPIC, _FREE_PREDICATE, _EACH_GROUP):
-        rest = said.sub(" ", rest)
-    if _NEGATION.search(rest) or not set(re.findall(r"[a-z']+", rest)) <= _FREEDOM_FILLER:
-        return None
-    return "within each group in any order" if _EACH_GROUP.search(clause) else "in any order"

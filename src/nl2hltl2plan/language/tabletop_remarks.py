@@ -1,0 +1,229 @@
+"""The tabletop reading's clauses that name nothing (issue 28), read by what their words are rather than
+by a list of phrasings (`remarks_read`, asked by `tabletop_wording.plain_words`): a clause made only of
+greetings, courtesy and the user's own time ("hey", "when you get a sec", "mind doing me a favour?", "no
+rush") is removed; a list's heading made of a verb of tidying and a word for the things ("Please sort
+these:", "organise this for me") is removed; a clause that speaks of the order (or of which comes first,
+or of what depends on what) and says it is free ("the order in which you do them is irrelevant", "it makes
+no difference which one you do first", "none of these depends on another") becomes "in any order", or
+"within each group in any order" when it speaks of each group ("the order within each pair does not
+matter"); a frame that opens the text (a short clause with no word that could say an action, order,
+count, negation, place, manner or goal: "Helm,", "Howdy partner,", a title), a clause that only urges or
+announces ("make it so", "quick one") and a question heading that asks where things go ("What goes
+where?") are removed. The courtesy words are `courtesy.txt`'s (`courtesy_word`, `your_time`, `unhurried`,
+`urging`, `aside`).
+
+>>> import re
+>>> remarks_read("hey, carrot on the blue plate. no rush. it makes no difference which comes first",
+...              re.compile("carrot"))
+', carrot on the blue plate.. in any order'
+"""
+
+from __future__ import annotations
+
+import re
+
+from nl2hltl2plan.language.content_words import (
+    categories,
+    free_order_phrase,
+    phrase_list_pattern,
+    phrase_words,
+)
+from nl2hltl2plan.language.statements import asked_before
+
+# the shared list (free_order.txt), anywhere in the text: "in any order", "the order is up to you", also
+# with a comma between its words ("Which order, is not important", "Within each step, any order")
+FREE_ORDER = re.compile(r"\b" + free_order_phrase().replace(r"\s+", r",?\s+") + r"\b")
+
+# ---- clauses that name nothing: courtesy, list headings, freedom statements --------------------------------
+# (read word by word, whatever their phrasing: every word must belong to the clause's kind)
+_SENTENCE_PIECE = re.compile(r"[^.;:!?()\n]+")
+_CLAUSE = re.compile(r"[^,.;:!?()\n]+?(?=\s+-\s+|[,.;:!?()\n]|$)")
+_COURTESY_WORDS = phrase_words("courtesy.txt", "courtesy_word")
+_UNHURRIED = re.compile(rf"\b{phrase_list_pattern('courtesy.txt', 'unhurried')}\b")
+TIDY_VERB = r"(?:sort|organi[sz]e|arrange|tidy|handle|do|fix|set\s+up|lay\s+out)"
+_THE_THINGS = (
+    r"(?:these|this|that|them|things|stuff|everything|the\s+(?:items|things|fruits?|plates|following))"
+)
+_HEADING_FRAME = re.compile(
+    rf"^{TIDY_VERB}\s+(?:(?:out|up)\s+)?{_THE_THINGS}(?:\s+(?:out|up))?(?:\s+for\s+(?:me|us))?$"
+)
+# a freedom statement: what it is about (the order, which comes first, what depends on what) ...
+_ORDER_TOPIC = re.compile(
+    r"\b(?:order(?:ing)?|sequenc(?:e|ing)|which(?:ever)?\b[a-z'\s]{0,24}?\b(?:first|(?:start|begin)(?:\s+with)?)|"
+    r"(?:either|any|whichever)(?:\s+one|\s+of\s+them)?\s+(?:(?:can\s+)?(?:go|goes|come|comes)\s+)?first)\b"
+)
+_INDEPENDENT = re.compile(
+    r"\b(?:none|neither|no\s+one)\s+of\s+(?:these|them|those|the\s+\w+)\s+depends?\s+on\s+(?:another|any\s+other|"
+    r"the\s+others?|each\s+other|one\s+another)\b|\b(?:they|these|those|them)\s+(?:are|'re)\s+(?:all\s+)?"
+    r"independent(?:\s+of\s+(?:each\s+other|one\s+another))?\b"
+)
+# ... and what it says of it
+_FREE_PREDICATE = re.compile(
+    r"\b(?:(?:does|do|did|will|would|should)(?:\s+not|n't|nt)\s+matter|no\s+matter|matters\s+not|irrelevant|"
+    r"unimportant|not\s+(?:important|critical|crucial|essential|vital|relevant|significant)|of\s+no\s+(?:consequence|importance)|up\s+to\s+you|(?:your|the\s+robot's)\s+"
+    r"(?:call|choice|decision|pick)|(?:are|'re|is|'s)\s+free|free\s+to\s+(?:choose|pick|decide)|"
+    r"(?:can|may|get\s+to)\s+(?:choose|pick|decide)|any|either|whatever|whichever|arbitrary|flexible|optional|"
+    r"not\s+(?:specified|fixed|set|required|needed)|unspecified|no\s+(?:particular|special|specific|set|fixed|given|prescribed)|(?:i|we)\s+(?:don't|do\s+not)\s+"
+    r"(?:care|mind)|(?:makes?|is)\s+no\s+difference|do\s+(?:whatever|as\s+you\s+(?:like|please))|"
+    r"(?:as|however|whichever\s+way)\s+you\s+(?:like|please|wish|want|prefer|see\s+fit))\b"
+)
+# "within each pair", "inside each", "within a priority", "for every plate": what a freedom statement is about
+_EACH_GROUP = re.compile(
+    r"\b(?:(?:within|inside)\s+(?:each|every|a|one|the\s+same)|(?:in|for)\s+(?:each|every))(?:\s+(?!order\b)[a-z]+)?\b"
+)
+_FREEDOM_FILLER = frozenset(
+    "the in which you do them they these those this it that of for me us to is are be at all really totally "
+    "entirely quite completely here and so just it's its can may will how place placement placements put "
+    "one ones a way round i we honestly pretty much first go goes what done like want prefer wish choose "
+    "pick fine ok okay good works work suits suit by with fancy mix up shuffle change vary switch".split()
+)
+_NEGATION = re.compile(r"\b(?:not|never|no|none)\b|n't\b")
+
+
+def remarks_read(text: str, mention: re.Pattern[str], name_words: frozenset[str] = frozenset()) -> str:
+    """`text` with each sentence, or else each clause, that names no object or plate read by its words
+    (see the module docstring): courtesy, list headings and frames (`frame_read`; none with a word of a name
+    in `name_words`: "the yellow" is a plate) removed, freedom statements said as "in any order" or "within
+    each group in any order". Any other clause is left as it is, for the readers."""
+    text = _ORDER_LABEL.sub(" the order is ", _SENTENCE_PIECE.sub(lambda m: _opener_dropped(m[0]), text))
+    for pieces in (_SENTENCE_PIECE, _CLAUSE):
+        low, out, at = text.lower(), [], 0
+        for piece in pieces.finditer(low):
+            words = piece[0].strip(" -")
+            if not words or mention.search(words):
+                continue
+            read = None if FREE_ORDER.fullmatch(words) else _clause_read(words)  # a listed remark stays
+            if read is None:
+                before, after = low[: piece.start()], low[piece.end() :]
+                set_apart = before.rstrip()[-1:] in _APART and after.lstrip()[:1] in _APART  # not ") follows"
+                at_start = set_apart and not _WORD.search(before)  # a closing word may say an order
+                asked = low.startswith("?", piece.end())
+                titled = low.startswith(":", piece.end()) and not _WORD.search(before)
+                named = not name_words.isdisjoint(words.split())
+                read = None if named else frame_read(words, at_start, asked, titled)
+            if read is not None:
+                out.append(text[at : piece.start()] + (f" {read}" if read else ""))
+                at = piece.end()
+        text = "".join(out) + text[at:]
+    return re.sub(r"[ \t]+([,.;:!?])", r"\1", re.sub(r"[ \t]+", " ", text)).strip()
+
+
+_YOUR_TIME = phrase_words("courtesy.txt", "your_time")
+_YOU = frozenset({"you", "you're", "youre", "u"})
+
+
+def _courtesy(words: list[str]) -> bool:
+    """Are `words` courtesy alone? A word for time only beside "you" ("when you get a sec", "whenever
+    you're free"; "second" alone is a step)."""
+    said = set(words)
+    return said <= _COURTESY_WORDS | _YOUR_TIME and (not _YOUR_TIME & said or bool(_YOU & said))
+
+
+def _opener_dropped(sentence: str) -> str:
+    """A sentence without the courtesy words it opens with when they speak of the user's time ("hey when
+    you get a sec could you put ...": no comma sets them apart)."""
+    words = list(re.finditer(r"[A-Za-z']+", sentence))
+    run = 0
+    while run < len(words) and words[run][0].lower() in _COURTESY_WORDS | _YOUR_TIME:
+        run += 1
+    said = [w[0].lower() for w in words[:run]]
+    if run == len(words) or not (_YOUR_TIME & set(said) and _courtesy(said)):  # not "Second course:"
+        return sentence
+    return sentence[: words[0].start()] + sentence[words[run].start() :]
+
+
+# "(order: doesn't matter)", "Sequence: up to you": a label with its value, read as one statement
+_ORDER_LABEL = re.compile(r"(?:^|(?<=[(\n.;!?]))\s*(?:order(?:ing)?|sequence)\s*:\s*(?=[a-z])", re.IGNORECASE)
+_ASKING = frozenset("i i'd we we'd want need would to".split())  # "I'd like you to sort the fruit:"
+# a clause that only urges, closes or announces ("make it so", "off you go", "quick one")
+_URGING = re.compile(
+    rf"^(?:{phrase_list_pattern('courtesy.txt', 'urging')}|{phrase_list_pattern('courtesy.txt', 'aside')})$"
+)
+# a frame that opens the text: a short clause that names nothing and has no word that could say an
+# action, order, count, negation, condition, place or manner (check 1's categories, and the words below):
+# it greets, addresses or titles ("Arr", "Howdy partner", "Helm", "Tonight's challenge") and asks nothing
+# (not a question; not a goal's heading, "Final layout:", which asks for the states listed after it:
+# `statements.asked_before`)
+_FRAME_MOST_WORDS = 3
+_TITLE_MOST_WORDS = 6
+# an adverb, a superlative or a direction may say how to order ("Alphabetically:", "Biggest first", "By size")
+_HOW = re.compile(r"(?:ly|est|wards?|wise)$")
+# a title may speak of tidying, which in this world is the placing the list after it asks for
+_TIDYING = frozenset(
+    "tidy tidying tidied sort sorting sorted arrange arranging arranged organise organize organising "
+    "organizing organised organized".split()
+)
+_WORD = re.compile(r"\w")
+_APART = ("", ",", ".", "!", "?", ";", ":")  # what sets a frame apart: punctuation or the text's edge
+_MEANINGFUL = frozenset(
+    "order ordered ordering sequence sequential sequentially respectively reverse reversed backwards "
+    "alternate alternately together separately same only again also too except unless until while when if "
+    "left right top bottom above below over under near beside between behind front back side middle centre "
+    "center edge corner away off out down inside outside other others another else more less most least many "
+    "much few several some any all both each every either neither no not never nothing none first then next "
+    "last later before after now soon yet still already once twice plate plates empty full optional maybe "
+    "perhaps possibly ideally preferably bonus extra instead alternatively undo reset today tonight tomorrow "
+    "priority important urgent warning caution begin beginning start starting initially finally lastly "
+    "afterwards afterward thereafter subsequently second secondly third fourth meanwhile done finished "
+    "complete wait waits hold stop keep leave pause follow follows followed following sorry oops whoops "
+    "actually rather mean meant scratch correction mistake bad by size colour color height weight "
+    "alphabetical option options alternative alternatives or".split()
+)
+# a question that names nothing and asks where things go, answered by the list after it ("What should end
+# up where?", "Where do things go?")
+_WHERE = frozenset({"where", "what"})
+_GOES = frozenset("go goes end ends up belong belongs land lands".split())
+_ASKED_PLACES = _WHERE | _GOES | frozenset(
+    "which do does should must will would things thing stuff everything each item items it they all of these "
+    "them the".split()
+)
+
+
+def frame_read(clause: str, at_start: bool, asked: bool, titled: bool = False) -> str | None:
+    """ "" for a frame that opens the text (`at_start`; a title before the text's first colon,
+    `titled`, may be longer and may speak of tidying: "Recipe for a tidy table:"), or a question (`asked`)
+    that names nothing and asks where things go; None for any other clause."""
+    words = re.findall(r"[a-z']+", clause)
+    if asked and set(words) <= _ASKED_PLACES and _WHERE & set(words) and _GOES & set(words):
+        return ""
+    most = _TITLE_MOST_WORDS if titled else _FRAME_MOST_WORDS
+    short = 0 < len(words) <= most and not re.search(r"\d", clause)
+    tidying = _TIDYING if titled else frozenset()
+    meaningful = any(
+        (categories(w) and w not in tidying) or w in _MEANINGFUL or _HOW.search(w) for w in words
+    )
+    if at_start and short and not asked and not meaningful and not asked_before(clause, len(clause)):
+        return ""
+    return None
+
+
+def _clause_read(clause: str) -> str | None:
+    """ "" for courtesy or a list heading, a free-order phrase for a freedom statement, None otherwise."""
+    words = re.findall(r"[a-z']+", _UNHURRIED.sub(" ", clause))
+    if _courtesy(words) or _URGING.match(" ".join(words)):  # "no rush" alone too; "quick one"
+        return ""
+    while words and words[0] in _COURTESY_WORDS | _ASKING:  # "could you sort these out for me please"
+        words.pop(0)
+    if words and words[-1] == "please":
+        words.pop()
+    said = " ".join(words)
+    if _HEADING_FRAME.match(said) or _URGING.match(said):  # "please, just do it"
+        return ""
+    if _HEADING_FRAME.match(FREE_ORDER.sub(" ", said).strip()) and FREE_ORDER.search(said):
+        return "in any order"  # "tidy them up in any order": the heading and a freedom remark
+    return _freedom_read(clause)
+
+
+def _freedom_read(clause: str) -> str | None:
+    """ "in any order" / "within each group in any order" for a clause that speaks of the order and says
+    it is free; None when it says anything else (a negation outside the free phrase, another word)."""
+    whole = _INDEPENDENT.search(clause)
+    if whole is None and not (_ORDER_TOPIC.search(clause) and _FREE_PREDICATE.search(clause)):
+        if not (_EACH_GROUP.search(clause) and _FREE_PREDICATE.search(clause)):
+            return None
+    rest = clause
+    for said in (_INDEPENDENT, _ORDER_TOPIC, _FREE_PREDICATE, _EACH_GROUP):
+        rest = said.sub(" ", rest)
+    if _NEGATION.search(rest) or not set(re.findall(r"[a-z']+", rest)) <= _FREEDOM_FILLER:
+        return None
+    return "within each group in any order" if _EACH_GROUP.search(clause) else "in any order"
