@@ -396,6 +396,15 @@ def _a_stop(instruction: str, m: Mention, toks: list[tuple[str, int, int]]) -> b
     return toks[i][0] not in ("from", "off") and before not in ("out", "from")
 
 
+def _says_where_it_is(instruction: str, toks: list[tuple[str, int, int]], i: int) -> bool:
+    """Is word `i` a posture before a place's preposition ("sitting on", "lying in"): where a thing is?"""
+    nxt = toks[i + 1] if i + 1 < len(toks) else None
+    return nxt is not None and nxt[0] in _WHERE_PREPOSITIONS and says_where(instruction, nxt[1])
+
+
+_WHERE_PREPOSITIONS = frozenset({"on", "in", "at", "inside", "atop", "upon"})
+
+
 @lru_cache(maxsize=512)
 def _lexicon_words(types: frozenset[str]) -> frozenset[str]:  # once per type set: it is asked per slot
     return frozenset(w for key, (e, _) in lexicon().items() if set(e.types) & types for w in key)
@@ -420,6 +429,8 @@ def _words(
         if not cats and not w.isdigit():
             continue
         guard = parse.constraint_at(toks[i][1])
+        if _says_where_it_is(instruction, toks, i):
+            continue  # "the apple should be sitting on the plate": where it is, not the action of sitting
         if guard is None:
             # what an "it" after the verb may be: the last thing named before it that is opened for itself
             said = [m.surface for m in mentions if m.end <= i and set(m.entry.types) & OPENED_FOR_ITSELF]

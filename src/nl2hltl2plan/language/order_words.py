@@ -68,9 +68,19 @@ def unordered_steps(
     free = any("any_order" in c for c in cats) or freeing is not None
     if len(parse.tasks) >= 2 and freeing and _totally_ordered(parse):
         return [Unread(freeing.group(0), "order", "it leaves an order free, but every base task is ordered")]
-    if not words or len(parse.tasks) < 2 or parse.before or free:
+    if not words or len(parse.tasks) < 2 or parse.before or (free and not _per_group(text, freeing)):
         return []
     return [Unread(", ".join(dict.fromkeys(words)), "order", "the base tasks are not ordered")]
+
+
+def _per_group(text: str, freeing: re.Match[str] | None) -> bool:
+    """Does the phrase free the order within each group only ("each pair in either order", "within each
+    step in any order")? Then the order words between the groups still need an order."""
+    before = text[max(0, freeing.start() - 24) : freeing.end()] if freeing is not None else ""
+    return _EACH.search(before) is not None
+
+
+_EACH = re.compile(r"\b(?:each|every|within)\b")
 
 
 def _totally_ordered(parse: ParseUsage) -> bool:

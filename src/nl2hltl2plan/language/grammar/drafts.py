@@ -170,16 +170,20 @@ class DraftBuilder:
         return False
 
     def _share_destinations(self, fr: Frame, st: _SentenceState) -> None:
-        """Items without a destination take the heading's (context) or the one stated last in the list."""
+        """Items without a destination take the heading's (context) or the next one stated in the list."""
         if st.context:
             for it in fr.items:
                 if it.obj is not None and not any(p in G.DEST_PREPS for p, _ in it.pps):
                     it.pps.extend(st.context)
-        # multi-object clause items sharing one destination at the end: copy it to the others
+        # multi-object clause items sharing a destination stated after them: "the apple and the egg in the
+        # fridge, and the mug in the sink" puts the apple in the fridge, the next place said, not the last
         if len(fr.items) > 1:
-            shared = [(p, np) for p, np in fr.items[-1].pps if p in G.DEST_PREPS]
-            for it in fr.items[:-1]:
-                if not any(p in G.DEST_PREPS for p, _ in it.pps):
+            shared: list[tuple[str, NP]] = []
+            for it in reversed(fr.items):
+                own = [(p, np) for p, np in it.pps if p in G.DEST_PREPS]
+                if own:
+                    shared = own
+                elif it is not fr.items[-1]:
                     it.pps.extend(shared)
             fr.items = self._without_slicing_knife(fr)
             fr.items = merge_items(fr.items, self.b)

@@ -70,7 +70,8 @@ _PASSIVE_GOAL = re.compile(
     r"\s+(?:(?:needs?|has|have|is|are)\s+to\s+be\s+(?:placed|put|set|moved|laid|dropped)|"
     r"(?:must|should|will|shall|can)\s+be\s+(?:placed|put|set|moved|laid|dropped)|"
     r"(?:(?:should|must|has\s+to|have\s+to|needs?\s+to|will)\s+)?(?:ends?\s+up|sits?|rests?|lands?)|"
-    r"(?:should|must|has\s+to|have\s+to|needs?\s+to|will)\s+(?:end\s+up|sit|rest|land))\s+"
+    r"(?:should|must|has\s+to|have\s+to|needs?\s+to|will)\s+(?:end\s+up|sit|rest|land)|"
+    r"(?:should|must|has\s+to|have\s+to|needs?\s+to|will)\s+be\s+(?:sitting|resting|lying|standing))\s+"
     rf"(?={_PLACE}\s)",
     re.I,
 )
