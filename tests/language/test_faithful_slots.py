@@ -268,3 +268,17 @@ def test_a_position_counted_from_a_side_picks_the_noun_after_it():
     # near miss: "from the top shelf" with no position counted is where the mug is
     tasks, _, unread = read("Take the mug from the top shelf and put it in the sink.")
     assert summaries(tasks) == ["place Mug -> SinkBasin"] and not unread
+
+
+# ----- a reference that names a thing no task moves is not matched by its place alone -------------------
+def test_a_reference_to_an_unknown_thing_is_not_matched_by_its_place():
+    tasks, _, unread = read(
+        "Once done with the task to put the tray in the fridge, put a heated tomato in the fridge."
+    )
+    assert any("could not tell which task" in u for u in unread), (tasks, unread)
+    # near miss: a generic word ("the things") is matched by its place
+    tasks, order, unread = read(
+        "Put a heated tomato in the fridge. After putting the things in the fridge, "
+        "put a washed mug in the sink."
+    )
+    assert not unread and len(order) == 1, (tasks, order, unread)
