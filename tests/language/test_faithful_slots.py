@@ -62,7 +62,7 @@ def test_a_part_of_a_piece_of_furniture_is_the_destination():
     """ "a drawer in the desk", "the coffee maker on the counter": the second place says which one."""
     tasks, _, unread = read("Put the fork in a drawer in the counter.")
     assert summaries(tasks) == ["place Fork -> Drawer"] and not unread
-    tasks, _, unread = read("Put a washed mug on the coffee maker on the counter.")
+    tasks, _, unread = read("Put a washed mug on the coffee maker on the counter top.")
     assert summaries(tasks) == ["clean_place Mug -> CoffeeMachine"] and not unread
 
 
@@ -73,6 +73,8 @@ def test_two_places_the_types_cannot_order_are_refused():
         "Put the apple in the fridge on the second shelf.",
         "Put the fork in the drawer in the cabinet.",
         "Put the apple on the desk and on the counter.",
+        "Put the apple in the fridge or on the table.",
+        "Put the apple in the fridge while you put the egg in the sink.",
         "Put the apple on the counter on the left side of the desk.",
     ):
         tasks, _, unread = read(text)

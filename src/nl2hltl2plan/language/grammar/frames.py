@@ -343,18 +343,21 @@ def _standing_place_first(item: Item, text: str) -> None:
 def _one_phrase(text: str, a: NP, b: NP) -> bool:
     """Do the places `a` and `b` follow each other in one phrase: no joiner or verb between them ("on the
     bed and on the nightstand" lists two places, "in the microwave to be placed on the counter" goes on),
-    and `b` is a whole thing, not a side or part of one
-    ("on the night stand on the left side of the bed", "in the front of the coffee machine")?"""
+    and `b` is a whole thing, not a side or part of one ("on the night stand on the left side of the bed",
+    "in the front of the coffee machine"; "the counter top" is a whole thing)?"""
     low = text.lower()
     i = low.find(a.text.lower())
     j = low.find(b.text.lower(), i + len(a.text)) if i >= 0 else -1
     if j < 0:
         return False
-    between = [w for w, _, _ in tokens(low[i + len(a.text) : j])]
+    # the words from the first place to the second ("the fridge or" is one noun phrase to the reader)
+    between = [w for w, _, _ in tokens(low[i:j])]
     joined = set(between) & {"and", "or", "then", ",", "as", "while", "so", "followed"} or any(
         w in G.VERBS or w == "be" for w in between
     )
-    return not joined and not {w for w, _, _ in tokens(b.text)} & _SIDE_WORDS
+    b_words = [w for w, _, _ in tokens(b.text)]
+    side_of = any(w in _SIDE_WORDS and b_words[k + 1 : k + 2] == ["of"] for k, w in enumerate(b_words))
+    return not joined and not side_of
 
 
 _SIDE_WORDS = frozenset(
