@@ -322,9 +322,9 @@ def _standing_place_first(item: Item, text: str) -> None:
     """ "wash the fork on the table in the sink", "put the goblet in the refrigerator on the table": of two
     fixed places with a plain "in"/"on", the first stands on the floor and the second is no part of it (a
     table is never in a sink), so the first says where the thing is and the second where it goes. Where
-    the first is a part of a piece of furniture or an appliance and the second stands on the floor ("in a
-    drawer in the dresser", "on the coffee maker on the counter"), the second says which one the first is.
-    Otherwise (`two_places`) which one is meant is not said."""
+    the first is a part of a piece of furniture or the coffee maker and the second stands on the floor ("in
+    a drawer in the dresser", "on the coffee maker on the counter"), the second says which one the first
+    is ("of", no destination). Otherwise `two_places` refuses: which one is meant is not said."""
     if any(p in DIRECTIONAL or p == THEN_TO for p, _ in item.pps):
         return
     places = [k for k, (p, n) in enumerate(item.pps) if p in G.DEST_PREPS and p not in UNDER and is_fixed(n)]
