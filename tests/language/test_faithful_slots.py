@@ -45,14 +45,40 @@ def test_closest_to_alone_is_still_no_destination():
     assert not tasks or unread
 
 
-# ----- two fixed places said with plain "in"/"on": which one is the destination is a guess ------------
-def test_two_places_for_one_object_are_refused():
+# ----- two fixed places said with plain "in"/"on": the types say which one is the destination -------
+def test_a_place_that_stands_on_the_floor_says_where_the_thing_is():
+    """A desk is never in a safe, a counter never in a sink: the first place is where the thing is."""
     for text in (
         "Place the two CDs on the desk next to the lamp in the safe.",
         "Read the paper under a lamp before you place the two CDs on the desk next to the lamp in the safe.",
     ):
         tasks, _, unread = read(text)
-        assert any("two places it could go" in u for u in unread), (text, tasks)
+        assert "place_two 2x CD -> Safe" in summaries(tasks) and not unread, (text, tasks, unread)
+    tasks, _, unread = read("Put the apple in the fridge on the counter.")
+    assert summaries(tasks) == ["place Apple -> CounterTop"] and not unread
+
+
+def test_a_part_of_a_piece_of_furniture_is_the_destination():
+    """ "a drawer in the desk", "the coffee maker on the counter": the second place says which one."""
+    tasks, _, unread = read("Put the fork in a drawer in the counter.")
+    assert summaries(tasks) == ["place Fork -> Drawer"] and not unread
+    tasks, _, unread = read("Put a washed mug on the coffee maker on the counter top.")
+    assert summaries(tasks) == ["clean_place Mug -> CoffeeMachine"] and not unread
+
+
+def test_two_places_the_types_cannot_order_are_refused():
+    """Near misses: a shelf may be inside the fridge, a drawer inside a cabinet, a list names two places,
+    and a side of the bed is no place of its own."""
+    for text in (
+        "Put the apple in the fridge on the second shelf.",
+        "Put the fork in the drawer in the cabinet.",
+        "Put the apple on the desk and on the counter.",
+        "Put the apple in the fridge or on the table.",
+        "Put the apple in the fridge while you put the egg in the sink.",
+        "Put the apple on the counter on the left side of the desk.",
+    ):
+        tasks, _, unread = read(text)
+        assert unread, (text, tasks)
 
 
 def test_where_on_a_place_is_not_a_second_place():
@@ -231,3 +257,30 @@ def test_a_restated_task_on_a_place_the_scene_lacks_is_no_guess():
     tasks, _, unread = read("Put a bar of soap on the counter after you put two bars of soap on the gizmo.")
     assert summaries(tasks) == ["place SoapBar -> CounterTop"]
     assert any("'two bars" in u and "(count)" in u for u in unread)  # ("bars" alone is a lexicon name)
+
+
+# ----- "the second from the bottom shelf": a position counted from a side picks one of the shelves ------
+def test_a_position_counted_from_a_side_picks_the_noun_after_it():
+    for text in (
+        "Put the mug on the second from the bottom shelf.",
+        "Put the mug on the shelf second from the top.",
+    ):
+        tasks, _, unread = read(text)
+        assert summaries(tasks) == ["place Mug -> Shelf"] and not unread, (text, tasks, unread)
+    # near miss: "from the top shelf" with no position counted is where the mug is
+    tasks, _, unread = read("Take the mug from the top shelf and put it in the sink.")
+    assert summaries(tasks) == ["place Mug -> SinkBasin"] and not unread
+
+
+# ----- a reference that names a thing no task moves is not matched by its place alone -------------------
+def test_a_reference_to_an_unknown_thing_is_not_matched_by_its_place():
+    tasks, _, unread = read(
+        "Once done with the task to put the tray in the fridge, put a heated tomato in the fridge."
+    )
+    assert any("could not tell which task" in u for u in unread), (tasks, unread)
+    # near miss: a generic word ("the things") is matched by its place
+    tasks, order, unread = read(
+        "Put a heated tomato in the fridge. After putting the things in the fridge, "
+        "put a washed mug in the sink."
+    )
+    assert not unread and len(order) == 1, (tasks, order, unread)

@@ -393,6 +393,8 @@ def _a_stop(instruction: str, m: Mention, toks: list[tuple[str, int, int]]) -> b
     if says_where(instruction, toks[i][1]):  # "after / until the mug is in the sink": a placement it refers
         # to; "I want that the carrot is on the plate": one it asks for
         return asked_before(instruction, toks[i][1])
+    if toks[i][0] == "from" and before in _COUNTED:  # "on the second from the bottom shelf": which shelf
+        return True
     return toks[i][0] not in ("from", "off") and before not in ("out", "from")
 
 
@@ -403,6 +405,7 @@ def _says_where_it_is(instruction: str, toks: list[tuple[str, int, int]], i: int
 
 
 _WHERE_PREPOSITIONS = frozenset({"on", "in", "at", "inside", "atop", "upon"})
+_COUNTED = frozenset({"first", "second", "third", "fourth", "last", "2nd", "3rd"})
 
 
 @lru_cache(maxsize=512)

@@ -46,6 +46,8 @@ def parse_frame(text: str, start: int = 0, joiner: str = "") -> Frame:
     reader = _ItemReader(text, toks, cls, light_on)
     items = reader.read(i)
     _join_further_destinations(items)
+    for it in items:
+        _standing_place_first(it, text)
     # "to region G, H and I": bare noun phrases after an item with a destination continue that destination
     ambiguous = len(items) > 1 and items[-1].obj is not None and not items[-1].pps and bool(items[-2].pps)
     _share_colour_nouns(items)
@@ -302,6 +304,65 @@ def two_places(item: Item) -> str:
         return ""
     later = [np for p, np in places[1:] if p in _PLACING and not same(np, places[0][1])]
     return f"{places[0][1].text} / {later[-1].text}" if later else ""
+
+
+# Places that stand on the floor: never inside or on top of another place
+_STANDING = frozenset(
+    {"DiningTable", "CounterTop", "SideTable", "CoffeeTable", "Desk", "Dresser", "Bed", "Sofa", "ArmChair"}
+    | {"Ottoman", "Fridge", "StoveBurner"}
+)
+# parts of a piece of furniture or of an appliance ("the shelf in the fridge", "a drawer in the desk")
+_PARTS = frozenset({"Drawer", "Shelf", "ShelvingUnit", "Cabinet"})
+# what sits in or on a piece of furniture: its parts and the coffee maker ("the coffee maker on the counter";
+# not the microwave: "cook it in the microwave to be placed on the counter" goes on to the counter)
+_SITS_ON_FURNITURE = _PARTS | {"CoffeeMachine"}
+
+
+def _standing_place_first(item: Item, text: str) -> None:
+    """ "wash the fork on the table in the sink", "put the goblet in the refrigerator on the table": of two
+    fixed places with a plain "in"/"on", the first stands on the floor and the second is no part of it (a
+    table is never in a sink), so the first says where the thing is and the second where it goes. Where
+    the first is a part of a piece of furniture or the coffee maker and the second stands on the floor ("in
+    a drawer in the dresser", "on the coffee maker on the counter"), the second says which one the first
+    is ("of", no destination). Otherwise `two_places` refuses: which one is meant is not said."""
+    if any(p in DIRECTIONAL or p == THEN_TO for p, _ in item.pps):
+        return
+    places = [k for k, (p, n) in enumerate(item.pps) if p in G.DEST_PREPS and p not in UNDER and is_fixed(n)]
+    if len(places) != 2:
+        return
+    (p1, a), (p2, b) = item.pps[places[0]], item.pps[places[1]]
+    types_a, types_b = set(a.entry.types) if a.entry else set(), set(b.entry.types) if b.entry else set()
+    if not ({p1, p2} <= _PLACING and types_a and types_b) or types_a & types_b or not _one_phrase(text, a, b):
+        return
+    if types_a <= _STANDING and not types_b & _PARTS:
+        item.pps[places[0]] = ("from", a)
+    elif types_a <= _SITS_ON_FURNITURE and types_b <= _STANDING:  # "in a drawer in the dresser"
+        item.pps[places[1]] = ("of", b)
+
+
+def _one_phrase(text: str, a: NP, b: NP) -> bool:
+    """Do the places `a` and `b` follow each other in one phrase: no joiner or verb between them ("on the
+    bed and on the nightstand" lists two places, "in the microwave to be placed on the counter" goes on),
+    and `b` is a whole thing, not a side or part of one ("on the night stand on the left side of the bed",
+    "in the front of the coffee machine"; "the counter top" is a whole thing)?"""
+    low = text.lower()
+    i = low.find(a.text.lower())
+    j = low.find(b.text.lower(), i + len(a.text)) if i >= 0 else -1
+    if j < 0:
+        return False
+    # the words from the first place to the second ("the fridge or" is one noun phrase to the reader)
+    between = [w for w, _, _ in tokens(low[i:j])]
+    joined = set(between) & {"and", "or", "then", ",", "as", "while", "so", "followed"} or any(
+        w in G.VERBS or w == "be" for w in between
+    )
+    b_words = [w for w, _, _ in tokens(b.text)]
+    side_of = any(w in _SIDE_WORDS and b_words[k + 1 : k + 2] == ["of"] for k, w in enumerate(b_words))
+    return not joined and not side_of
+
+
+_SIDE_WORDS = frozenset(
+    {"side", "left", "right", "front", "back", "end", "edge", "corner", "top", "middle", "part"}
+)
 
 
 _TREATING = frozenset({"heat", "cool", "clean", "slice"})

@@ -42,7 +42,8 @@ def ref_targets(
                 hit = _hits_by_object(held, specs, nps, hit)
         elif np.entry is not None or np.head:
             hit = _hits_by_object(np, specs, nps, candidates)
-            if not hit and np.entry is not None:  # "after putting items to the lower rack": by destination
+            if not hit and np.entry is not None and not _names_a_thing_before_place(words):
+                # "after putting items to the lower rack": by destination
                 hit = [i for i in candidates if np.entry.canonical in (specs[i].receptacle or [])]
                 found.extend(hit)
             if not hit and np.head:
@@ -60,6 +61,19 @@ def ref_targets(
         else:
             missing.append(part)
     return sorted(set(found)), missing
+
+
+def _names_a_thing_before_place(words: list[str]) -> bool:
+    """Does a reference name a thing of its own before its place ("put the tray in the fridge": a tray no
+    task moves), so that the place alone must not say which task is meant?"""
+    k = next((k for k, w in enumerate(words) if w in _PLACE_PREPS), None)
+    if k is None:
+        return False
+    np = _ref_np(words[:k])
+    return bool(np.head) and not np.generic and not np.pronoun
+
+
+_PLACE_PREPS = frozenset({"in", "into", "on", "onto", "to", "inside"})
 
 
 def _held_np(words: list[str]) -> NP | None:

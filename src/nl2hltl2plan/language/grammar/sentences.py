@@ -380,6 +380,18 @@ _SHELF_OF = re.compile(
     r"microwave|safe)\b)",
     re.IGNORECASE,
 )
+# "the second from the bottom shelf", "the drawer second from the top": a position counted from a side is
+# said after the noun it picks ("the second shelf from the bottom"), as the rules read it
+_COUNTED_FROM_BEFORE = re.compile(
+    r"\b(?P<det>the|a)\s+(?P<nth>(?:first|second|third|fourth|last|top|bottom|\d(?:st|nd|rd|th)))\s+"
+    r"(?P<side>from\s+the\s+(?:top|bottom|left|right|end|front|back))\s+(?P<noun>[a-z]+)\b",
+    re.IGNORECASE,
+)
+_COUNTED_FROM_AFTER = re.compile(
+    r"\b(?P<det>the|a)\s+(?P<noun>[a-z]+)\s+(?P<nth>(?:first|second|third|fourth|last|\d(?:st|nd|rd|th)))\s+"
+    r"(?P<side>from\s+the\s+(?:top|bottom|left|right|end|front|back))\b",
+    re.IGNORECASE,
+)
 _STATE_ALT = "|".join(sorted(G.STATE_WORDS))
 # "a chilled, cut slice", "a cleaned, filled bowl of water": states listed before one noun
 _STATES_LISTED = re.compile(rf"\b({_STATE_ALT}),\s+(?=(?:{_STATE_ALT}|filled)\b)", re.IGNORECASE)
@@ -427,6 +439,8 @@ def normalize(text: str) -> str:
     text = _BACK.sub(r", then back \1", _TO_GO_BACK.sub(r", back \1", text))  # "put it in the fridge, back in
     # the microwave": a sequence
     text = _HAS_IN_IT.sub("with ", text)
+    text = _COUNTED_FROM_BEFORE.sub(r"\g<det> \g<nth> \g<noun> \g<side>", text)
+    text = _COUNTED_FROM_AFTER.sub(r"\g<det> \g<nth> \g<noun> \g<side>", text)
     text = _SHELF_OF.sub("", text)
     text = _TAKE_LIST_THEN_PUT.sub(lambda m: f"{m['verb']} {m['objs']} ", text)
     text = _BUT_BEFORE.sub(lambda m: m.group(0) if _keeps_but_first(text, m) else ". Before that, ", text)
