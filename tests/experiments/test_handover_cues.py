@@ -144,7 +144,11 @@ def test_development_batches_give_the_written_specs(batch, style):
 
 @pytest.mark.parametrize(
     ("batch", "style"),
-    [(b, s) for b in ("dev39", "dev40", "dev41", "dev42", "dev43", "dev44") for s in sorted(STYLES[b])],
+    [
+        (b, s)
+        for b in ("dev39", "dev40", "dev41", "dev42", "dev43", "dev44", "dev50")
+        for s in sorted(STYLES[b])
+    ],
 )
 def test_later_development_batches_are_read_right_or_refused(batch, style):
     for task, text in STYLES[batch][style].items():
@@ -265,3 +269,20 @@ def test_it_is_forbidden_to_is_a_prohibition_before_it_is_read_as_a_block():
         "Place the three blocks on region I one after another, red before blue, and it is forbidden to place "
         "any object on regions F, G and H during this period.",
     )
+
+
+def test_an_arm_named_with_with_and_an_exchange_said_with_with():
+    # "with any arm" names who touches (not a chunk of its own); "swap X with Y" names the exchange's pair
+    assert _restated(4, "Not touching the blue block with any arm until the red block has been touched") == (
+        "no arm may touch the blue block until the red block has been touched"
+    )
+    swapped = "swap the positions of the red and blue blocks"
+    assert _restated(5, "swap the red block with the blue block") == swapped
+    assert _restated(5, "swap red <-> blue") == swapped
+    # the guard reversed, or a block of the exchange changed: not the written spec
+    assert_not_the_written_spec(
+        4,
+        "Moving the three blocks to the opposite regions. Not touching the red block with any arm until the "
+        "blue block has been touched. Finally, putting the yellow block back on region G.",
+    )
+    assert_not_the_written_spec(5, "red before blue; swap red <-> yellow; anytime: blue -> opposite side")

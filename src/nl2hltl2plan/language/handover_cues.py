@@ -59,11 +59,12 @@ _PHRASES: tuple[tuple[str, str], ...] = (
     (r"(?:the|my|our) (?:idea|plan|aim|intention) (?:here )?is (?:to|that)|"
      r"what (?:i|we) (?:need|want) is(?: for| that)?|what (?:matters|counts) is(?: that)?", "must"),
     (r"(?:it is )?(?:forbidden|prohibited|not (?:allowed|permitted))(?: to)?", "NEG"),  # a prohibition
-    (r"(?:empty|free|clear) of (?:new |any |other )?", "CLEAR"),  # "empty of new objects": of every block
+    (r"(?:empty|free|clear) of(?: new| any| other)?", "CLEAR"),  # "empty of new objects": of every block
     (r"any objects?", "ANY"),  # "it is forbidden to place any object on ...": with a negation, no object
     (r"and so (?:on|forth)|etc|et cetera", "ETC"),  # more of the same: what?
     (r"(?:by )?no (?:A|arm)", "NEG ARM"),
-    (r"(?:by )?(?:any|one) (?:of the )?(?:A|arm)|by A|A", "ARM"),
+    # "touched by / with any arm"
+    (r"(?:by |with )?(?:any|one) (?:of the )?(?:A|arm)|(?:by|with) A|A", "ARM"),
 )
 _WORDS = {
     "MOVE": "move moved moves moving put puts putting place placed places placing go goes going gone carry "
@@ -91,12 +92,13 @@ _EMPTY = frozenset(
     "this that these those you we us our your please "
     "like just also so as well here make sure possible okay ok "
     "and or what how job task arms robot robots kindly mind you all of there's checklist things todo list "
-    "steps tasks notes cause operator".split()
+    "steps tasks notes cause operator "
+    "with".split()  # left in a chunk only as an exchange's "with" ("swap B0 with B1": `_SPLIT`)
 )
 _BLOCK = re.compile(r"B\d+")
-# chunks end at punctuation, "while", "with", before "without", and at "and" but in a list of blocks ("B0 and
-# B1"); the separators are kept: a colon ends a heading
-_SPLIT = r"([,;:()]|\bwhile\b|\bwhilst\b|\bwith\b|(?=\bwithout\b)|(?<!B\d )\band\b)"
+# chunks end at punctuation, "while", "with" (but "swap B0 with B1": the exchange's pair), before "without",
+# and at "and" but in a list of blocks ("B0 and B1"); the separators are kept: a colon ends a heading
+_SPLIT = r"([,;:()]|\bwhile\b|\bwhilst\b|(?<!EXCHANGE B\d )\bwith\b|(?=\bwithout\b)|(?<!B\d )\band\b)"
 _TOWARDS = frozenset("to onto into towards toward".split())
 _MODAL = frozenset("should must shall will would could can may might".split())
 
@@ -150,6 +152,7 @@ _PHRASE_CUES = tuple(
 
 def _tokens(text: str) -> str:
     """The sentence with its multi-word cues as single tokens."""
+    text = " ".join(text.split())  # the phrase layer's marks come with spaces around them ("with  A")
     for cue, token in _PHRASE_CUES:
         text = cue.sub(token, text)
     return " ".join(text.split())
@@ -158,7 +161,7 @@ def _tokens(text: str) -> str:
 def _chunk(text: str) -> _Chunk | None:
     out = _Chunk()
     words = text.split()
-    if words[:1] == ["but"] and words[1:2] and _CLASS.get(words[1]) == "NEG":
+    if words[:1] == ["but"] and words[1:2] and "NEG" in (words[1], _CLASS.get(words[1])):
         words = words[1:]  # "..., but no arm may touch ...": a contrast that adds a prohibition
     for word in words:
         if re.fullmatch(r"B\d+", word):
