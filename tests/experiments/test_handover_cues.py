@@ -146,7 +146,7 @@ def test_development_batches_give_the_written_specs(batch, style):
     ("batch", "style"),
     [
         (b, s)
-        for b in ("dev39", "dev40", "dev41", "dev42", "dev43", "dev44", "dev50")
+        for b in ("dev39", "dev40", "dev41", "dev42", "dev43", "dev44", "dev50", "dev51")
         for s in sorted(STYLES[b])
     ],
 )
@@ -286,3 +286,43 @@ def test_an_arm_named_with_with_and_an_exchange_said_with_with():
         "blue block has been touched. Finally, putting the yellow block back on region G.",
     )
     assert_not_the_written_spec(5, "red before blue; swap red <-> yellow; anytime: blue -> opposite side")
+
+
+def test_the_arms_addressed_as_you_and_steps_said_initially_and_subsequently():
+    assert _restated(4, "None of you touches the blue block until one of you has touched the red block") == (
+        "no arm may touch the blue block until the red block has been touched"
+    )
+    assert _restated(8, "Initially put the yellow block on region I, subsequently on region G") == (
+        "first move the yellow block to region I, and then move the yellow block to region G"
+    )
+    assert _restated(8, "The yellow block is initially on region I") is None  # a scene, not a step
+    assert_not_the_written_spec(
+        4,
+        "Arms, take the three blocks to the opposite regions. None of you touches the red block until one of "
+        "you has touched the blue block. After all that, put the yellow block back on region G.",
+    )
+    assert_not_the_written_spec(
+        8,
+        "Initially put the yellow block on region G, subsequently on region I. Whenever convenient, send the "
+        "red and blue blocks to any empty region.",
+    )
+
+
+def test_hedges_and_intensifiers_carry_no_meaning_but_a_hedged_negation_is_refused():
+    assert_written_spec(
+        1,
+        "I think the three blocks should probably go to the opposite side, and ideally the red block gets "
+        "placed before the blue block.",
+    )
+    assert_not_the_written_spec(
+        6,
+        "Ideally the blue block is placed before the red block. I'd put the three objects on regions G, H "
+        "and I, one each.",
+    )
+    assert_written_spec(
+        3,
+        "Move the three pillars to regions E, F and G, on the side of arms a and b, and it is very important "
+        "that no object is placed on any other region.",
+    )
+    with pytest.raises(HTTError, match="perhaps"):
+        _spec(1, "Move the three blocks to the opposite side, perhaps not the red block first.")

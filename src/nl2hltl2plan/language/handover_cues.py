@@ -36,7 +36,9 @@ _PHRASES: tuple[tuple[str, str], ...] = (
      r"(?:done|completed|finished)", "AFTERALL"),
     (r"(?:once|when) (?:everything|all (?:of )?(?:them|the blocks)) (?:is|are|has been|have been) "
      r"(?:done|moved|in place|over there|across)", "AFTERALL"),
-    (r"(?:and )?after that|afterwards|thereafter|(?:and )?then|next", "THEN"),
+    (r"(?:and )?after that|afterwards|thereafter|subsequently|(?:and )?then|next", "THEN"),
+    # "initially put ...": the step said first (never "where it is initially": a scene, no verb after it)
+    (r"initially(?= (?:put|place|move|take|bring|send|carry|transfer|set)\b)", "FIRST"),
     (r"(?:begin|start) with", "FIRST"),  # "begin with the red block, then the blue block"
     (r"upon completion(?: of (?:the foregoing|this|that|all (?:of )?(?:this|that)))?", "AFTERALL"),
     (r"(?:finish|end) (?:by|with)", "FINISH"),  # after the sentence's goal before it, else after all
@@ -62,7 +64,8 @@ _PHRASES: tuple[tuple[str, str], ...] = (
     (r"(?:empty|free|clear) of(?: new| any| other)?", "CLEAR"),  # "empty of new objects": of every block
     (r"any objects?", "ANY"),  # "it is forbidden to place any object on ...": with a negation, no object
     (r"and so (?:on|forth)|etc|et cetera", "ETC"),  # more of the same: what?
-    (r"(?:by )?no (?:A|arm)", "NEG ARM"),
+    (r"(?:by )?no (?:A|arm)|none of you", "NEG ARM"),  # "none of you touches ...": the arms addressed
+    (r"(?:any|one|either|some) of you", "ARM"),
     # "touched by / with any arm"
     (r"(?:by |with )?(?:any|one) (?:of the )?(?:A|arm)|(?:by|with) A|A", "ARM"),
 )

@@ -96,7 +96,7 @@ _FILLERS: tuple[tuple[str, str], ...] = (
     # a hedge on the whole request
     (r"(^|,|\band\b)\s*(?:i|we)\s+(?:think|guess|suppose|reckon|believe)\s+(?:that\s+)?", r"\1 "),
     (r"^\s*(?:i|we)\s+(?:was|were)\s+(?:thinking|wondering)\s*,", " "),
-    (r",\s*(?:i|we)\s+(?:guess|think|suppose|reckon)\s*$", " "),
+    (r",\s*(?:i|we)\s+(?:guess|think|suppose|reckon|believe|would\s+say)\s*$", " "),
     (r"^\s*if\s+(?:possible|you\s+can|you\s+could)\s*,", " "),
     (r"\s*,?\s*\bif\s+(?:possible|you\s+can)\s*$", " "),
     # a polite tag that opens or closes a clause: "if you don't mind", "if that's okay", "if you would (be
@@ -104,9 +104,18 @@ _FILLERS: tuple[tuple[str, str], ...] = (
     (rf"(^|,)\s*{_POLITE_TAG}\s*(?=,|$)", r"\1 "),
     (rf"\b{phrase_list_pattern('courtesy.txt', 'wish')}\b", "please"),  # courtesy.txt's polite wishes
     (r"^\s*(?:i|we)\s+would\s+(?:probably\s+|maybe\s+)?have\s+you\s+", "please "),
+    # a hedge adverb in a clause with a verb ("should probably go", "ideally the red block gets placed ..."):
+    # it softens a request; in a fragment without one ("maybe the red block first?") it may ask or suggest,
+    # and before "not" it may negate what follows: left there, and refused by name
     (
-        rf"\b(?:probably|maybe|perhaps|ideally|preferably)\s+(?={_VERB_OR_RULE}|should\b|must\b|(?:you|we)\s)",
+        rf"\b(?:probably|maybe|perhaps|ideally|preferably)\b(?!\s+not\b)"
+        rf"(?=[^,;:?]*\b(?:{_VERB_OR_RULE}|go|goes|gets?|should|must|needs?|(?:is|are|be)\s+\w+ed)\b)",
         " ",
+    ),
+    # "(it's) best if X": X is wished for, as "it would be best if you could" is
+    (
+        r"(^|,|\band\b)\s*(?:(?:it\s+is|it\s+would\s+be)\s+)?best\s+(?:if|that)\s+(?=no\b|nothing\b|the\b|you\b)",
+        r"\1 ",
     ),
     (r"\btry\s+not\s+to\b", "do not"),
     (rf"\btry\s+to\s+(?={VERB}\b)", " "),

@@ -112,6 +112,8 @@ LATER_STEP = (
     rf"(?:{_STEP_WORD}|point|thing)\b\s*[:,-]?|[2-9]\s*[):-]|\(\s*[2-9]\s*\)|\(\s*[b-d]\s*\)|[b-d]\s*\))"
 )
 STEP_NUMBER = rf"\s*(?:{FIRST_STEP}|{LATER_STEP}|{_STEP_WORD}\s+\w+\s*[:-]?)?\s*"
+# an intensifier before a word of necessity adds no meaning ("it is very important that ...")
+_INTENSIFIER = r"(?:(?:very|really|extremely|absolutely|vitally|critically|most|quite)\s+)?"
 
 # Rewrites applied to the lower-cased sentence before any phrase is read: each maps a variant onto the
 # form the patterns read and changes no meaning ("prior to" -> "before", "whilst" -> "while").
@@ -263,7 +265,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
         "please",
     ),
     (r"\bthe\s+(?:desired\s+)?(?:outcome|result|end\s+state)\s+(?:is|should\s+be)\s+that\b", " "),
-    (r"\bit\s+is\s+(?:necessary|required|essential|important)\s+to\b", "please"),
+    (rf"\bit\s+is\s+{_INTENSIFIER}(?:necessary|required|essential|important)\s+to\b", "please"),
     # a prohibition, before its "it" is read as a block: "it is forbidden to place any object on F"
     (r"\bit\s+is\s+(?:forbidden|prohibited|not\s+allowed|not\s+permitted)\s+to\b", "do not"),
     (r"\bno\s+placements?\s+(?=outside|on|in|onto|anywhere)", "nothing placed "),
@@ -432,8 +434,8 @@ REWRITES: tuple[tuple[str, str], ...] = (
         " ",
     ),
     (
-        r"\bit\s+is\s+(?:required|necessary|important|essential|requested|desired|expected|mandatory|imperative)\s+"
-        r"that\b",
+        rf"\bit\s+is\s+{_INTENSIFIER}(?:required|necessary|important|essential|requested|desired|expected|mandatory|"
+        r"imperative)\s+that\b",
         " ",
     ),
     # "the goal is to have the blocks on ...": the state asked for, as a goal
