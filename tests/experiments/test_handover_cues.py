@@ -326,3 +326,15 @@ def test_hedges_and_intensifiers_carry_no_meaning_but_a_hedged_negation_is_refus
     )
     with pytest.raises(HTTError, match="perhaps"):
         _spec(1, "Move the three blocks to the opposite side, perhaps not the red block first.")
+
+
+def test_the_courtesy_words_are_one_list_for_the_handover_reader():
+    from nl2hltl2plan.language.handover_discourse import frame_words
+
+    # `courtesy.txt`'s words are read as "please" anywhere and are frame words of a message
+    assert {"please", "kindly", "pls", "plz", "thx", "thanks", "thank"} <= frame_words()["thanks"]
+    assert_written_spec(
+        1,
+        "Kindly move the three blocks to the opposite side, thx. The red block should be placed before the "
+        "blue block pls. Thank you!",
+    )

@@ -89,12 +89,13 @@ _WORDS = {
 }
 _CLASS = {w: cls for cls, words in _WORDS.items() for w in words.split()}
 # words that carry no meaning in this world: articles, auxiliaries, modals, pronouns, prepositions,
-# politeness and question words
+# politeness and question words (the courtesy words of `courtesy.txt` never reach here: `handover_phrases`
+# reads them as "please" and drops it)
 _EMPTY = frozenset(
     "a an the is are be being do does on in by of from at for "
-    "this that these those you we us our your please "
+    "this that these those you we us our your "
     "like just also so as well here make sure possible okay ok "
-    "and or what how job task arms robot robots kindly mind you all of there's checklist things todo list "
+    "and or what how job task arms robot robots mind you all of there's checklist things todo list "
     "steps tasks notes cause operator "
     "with".split()  # left in a chunk only as an exchange's "with" ("swap B0 with B1": `_SPLIT`)
 )

@@ -45,6 +45,7 @@ from __future__ import annotations
 
 import re
 from functools import lru_cache
+from importlib import resources
 from typing import NamedTuple
 
 from nl2hltl2plan.language.content_words import vocabulary, word_categories
@@ -63,8 +64,13 @@ MEANING = re.compile(
 
 @lru_cache(maxsize=1)
 def frame_words() -> dict[str, frozenset[str]]:
-    """category -> words (phrases joined by '_'), from `handover_frame_words.txt`."""
-    return word_categories("handover_frame_words.txt")
+    """category -> words (phrases joined by '_'), from `handover_frame_words.txt`; its thanks take in the
+    courtesy words of `courtesy.txt` (one list of them for the handover reader)."""
+    words = word_categories("handover_frame_words.txt")
+    lines = resources.files("nl2hltl2plan.language").joinpath("courtesy.txt").read_text().splitlines()
+    said = " ".join(line.partition(":")[2] for line in lines if line.startswith("word:"))
+    courtesy = re.findall(r"[a-z]+", said)
+    return {**words, "thanks": words["thanks"] | frozenset(courtesy)}
 
 
 # categories whose words are frame words only in one place of a fragment (see the words file)

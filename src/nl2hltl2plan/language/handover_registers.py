@@ -41,6 +41,7 @@ from __future__ import annotations
 import re
 from collections.abc import Callable
 
+from nl2hltl2plan.language.content_words import phrase_list_pattern
 from nl2hltl2plan.language.handover_words import AFTER_ALL, GERUND_VERBS, NEGATED_GERUNDS, SWAP, THEN, VERB
 
 _BLOCK = r"(?:the\s+)?(?:red|blue|yellow)(?:\s+(?:block|one|cube))?"
@@ -189,10 +190,11 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
         r"\s*[:,]?",
         "first ,",
     ),
-    # office English: "kindly" is "please" (dropped wherever it stands, so a step word still reaches its verb:
-    # "after all that is done, kindly put ..."), "do the needful" asks for what the rest says, and "itself" /
-    # "themselves" after a noun only stresses it
-    (r"\bkindly\b", "please"),
+    # a courtesy word (`courtesy.txt`: "kindly", "pls", "thx", "thank you") is "please" (dropped wherever it
+    # stands, so a step word still reaches its verb: "after all that is done, kindly put ...")
+    (rf"\b{phrase_list_pattern('courtesy.txt', 'word')}\b", "please"),
+    # office English: "do the needful" asks for what the rest says, and "itself" / "themselves" after a noun
+    # only stresses it
     (r"(?:\band\s+)?\bdo\s+the\s+needful\b(?:\s+and\b)?", " "),
     (r"(?<=[a-z])\s+(?:itself|themselves)\b", " "),
     # a requirement's identifier before it ("R1:", "REQ-2:"): requirements are listed, not ordered

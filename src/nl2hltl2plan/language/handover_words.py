@@ -164,9 +164,8 @@ REWRITES: tuple[tuple[str, str], ...] = (
     # a rule's label after a comma, in a compressed heading: "Goal: ..., constraint: red before blue"
     (rf",\s*{_RULE_LABEL}\s*:", ","),
     (rf"^({STEP_NUMBER})(?:objectives?|goals?|tasks?|aims?|missions?|instructions?)\s*:", r"\1 please"),
-    # casual openers and closers: "ok so ...", "... pls", "thanks"
+    # casual openers: "ok so ..." (a closer, "... pls", "thanks", is a courtesy word: `handover_registers`)
     (r"^\s*(?:(?:ok(?:ay)?|alright|right|so|well|hi|hello|hey)\b\s*,?\s*)+", " "),
-    (r"\b(?:pls|plz|thx|thanks|thank\s+you)\b", "please"),
     (r"\b(?:till|til)\b", "until"),
     (r"\b([a-z]+)\s+s\s+been\b", r"\1 has been"),  # "till red's been touched"
     (r"\b(?:any\s+)?(?:stuff|things)\b(?=\s+(?:on|in|onto|into)\b)", "anything"),
