@@ -7,7 +7,7 @@ the word tables' `REWRITES`). Each rewrite changes no meaning:
   "an arbitrary empty region", "are each to be moved");
 - narrative: the arms as the subject of a placing verb ("the arms (will) carry the blocks ..."), "before /
   until you touch Y" (before Y is touched), "while you do it", "somewhere along the way" (at any time),
-  "..., while regions F, G and H remain empty" (a rule that holds meanwhile), "leaving X untouched";
+  "leaving X untouched" ("..., while regions F, G and H remain empty" is the cue reader's kept-empty place);
 - telegraphic and bulleted: a verbless step after "first" ("first yellow to region i then region g"),
   "then region G", "three objects, three regions: G, H and I" (the regions' count is still checked),
   the places before what may not go there ("F, G, H: nothing placed"), a pair before its exchange ("red
@@ -126,11 +126,6 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     # (before "it" is read as a block)
     (r"\b(while\s+(?:you|we|they)\s+(?:are\s+)?(?:do|doing|perform|performing))\s+it\b", r"\1 this"),
     (r"\b(?:somewhere|at\s+some\s+point)\s+along\s+the\s+way\b", "at any time"),
-    (
-        rf",\s*while\s+(?=(?:regions?\s+)?{_LETTERS}\s+(?:remain|stay|are\s+kept)\s+"
-        r"(?:empty|clear|free|unoccupied|vacant)\b)",
-        ", ",
-    ),
     (rf"\b(?:leaving|leave|keeping|keep)\s+({_BLOCK})\s+untouched\b", r"\1 must not be touched"),
     # telegraphic and bulleted
     (rf"(^|,)\s*(first|then|next|finally)\s+(?={_BLOCK}\s+(?:to|on|onto|in|into)\s)", r"\1 \2 , "),

@@ -162,7 +162,6 @@ _NARRATION: tuple[tuple[str, str], ...] = (
         rf"\bwhat\s+{_SUBJECT}{_WILL}\s+(?:be\s+)?do(?:ing)?\s+(?:here\s+|now\s+|today\s+|next\s+)?is\s+(?:to\s+)?",
         "please ",
     ),
-    (r"\bwhat\s+(i|we)\s+(?:want|need|would\s+like)\s+is\s*,?\s*(?:for\s+)?", r"\1 want "),
     (r"^\s*(?:so\s+)?(?:here\s+)?(?:we|you)\s+have\s+(?=(?:the\s+)?(?:three|two|\d)\s+)", "there are "),
     # "once you have done that": once that is done
     (

@@ -132,9 +132,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\bwhile\s+(?:you|we)\s+are\s+at\s+it\b", "meanwhile"),
     (r"\bamongst\b", "among"),
     (r"\b(?:i|we)\s*would\s+like\s+(?:you\s+)?to\b", "please"),
-    (r"\b(?:could|can|would|will)\s+you\s+(?:please\s+)?", "please "),
     (r"\blet\s*'?\s*s\b|\blet\s+us\b|\bgo\s+ahead\s+and\b", "please"),
-    (r"\b(?:(?:at|in)\s+)?anytime\b|\bin\s+any\s+time\b", "at any time"),
     (
         r"\b(?:whenever\s+(?:you\s+(?:like|want|wish|please|can)|(?:is\s+|s\s+)?convenient|possible|(?:it\s+)?suits(?:\s+you)?)|"
         r"at\s+(?:any|whatever)\s+(?:point(?:\s+in\s+time)?|moment|stage)|(?:at\s+)?any\s+time\s+you\s+(?:like|want))\b",
@@ -450,8 +448,6 @@ REWRITES: tuple[tuple[str, str], ...] = (
     ),
     (r"^\s*(?:second(?:ly)?|third(?:ly)?|fourth(?:ly)?)\s*[:,]", "then "),
     (r"^\s*(first|then)\s*,?\s*\1\b\s*,?", r"\1 "),  # "2) Then move it ...": the step's "then" said twice
-    # a heading that gives the time of what follows: "Any time: red and blue blocks to any empty region"
-    (r"^\s*(?:at\s+)?any\s+time\s*:", "at any time ,"),
     (r"\b(finally|lastly|then|next|afterwards|first)\s*:", r"\1 ,"),  # "Finally: yellow -> G"
     # a reminder of a prohibition is the prohibition: "remember not to put ...", "be sure not to touch ..."
     (r"\b(?:remember|be\s+(?:sure|careful|certain)|make\s+sure|take\s+care)\s+not\s+to\b", "do not"),
@@ -496,14 +492,6 @@ REWRITES: tuple[tuple[str, str], ...] = (
     # "please note the red block goes first": a rule, as "note:" is
     (r"^\s*(?:please\s+)?note\s+(?:that\s+)?(?=the\b)", " "),
     (r"\b(has|have|needs?)\s+to\s+get\s+to\b", r"\1 to go to"),  # "the yellow block has to get to ..."
-    # a prohibition that opens with its period: "2) During this period, place nothing on F" (after the
-    # step's "then"; after a comma and "and"; "in the meantime put nothing on F" without its comma); the
-    # period goes to the end, where the prohibition's period is read
-    (
-        rf"(^\s*(?:(?:first|then)\s*,?)?|,\s*(?:and\s+)?)\s*({PERIOD_WORDS})\s*,?\s*"
-        r"((?:(?:put|place|drop|set|leave)\s+(?:nothing|no)|nothing|do\s+not|never)\b[^:;]+)$",
-        r"\1 \3 \2",
-    ),
     # the person addressed as the subject: "After all these are done, you put the yellow block back ..."
     (r"(^|,|\bthen)\s*(?:you|we)\s+(?=(?:put|place|move|bring|take|transfer|carry|set)\b)", r"\1 "),
     # "each of regions H, I and J can only hold one block, so put the three blocks into them": the world's
