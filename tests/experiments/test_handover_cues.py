@@ -146,7 +146,7 @@ def test_development_batches_give_the_written_specs(batch, style):
     ("batch", "style"),
     [
         (b, s)
-        for b in ("dev39", "dev40", "dev41", "dev42", "dev43", "dev44", "dev50", "dev51")
+        for b in ("dev39", "dev40", "dev41", "dev42", "dev43", "dev44", "dev50", "dev51", "dev52")
         for s in sorted(STYLES[b])
     ],
 )
@@ -337,4 +337,30 @@ def test_the_courtesy_words_are_one_list_for_the_handover_reader():
         1,
         "Kindly move the three blocks to the opposite side, thx. The red block should be placed before the "
         "blue block pls. Thank you!",
+    )
+
+
+def test_a_pictograph_ends_a_sentence_and_a_hashtag_is_a_label():
+    assert_written_spec(
+        5,
+        "Red block before blue block 🔴🔵 Swap the red and blue blocks 🔄 Yellow block to the opposite "
+        "side at any time ⏰ #handover",
+    )
+    # the order reversed, or a pictograph inside a clause (it ends the clause there): not the written spec
+    assert_not_the_written_spec(
+        5, "Blue before red 🔵🔴 Swap the red and blue blocks 🔄 Yellow block to the opposite side anytime"
+    )
+    assert_not_the_written_spec(1, "Move the three blocks 🙂 to the opposite side. Red before blue.")
+
+
+def test_be_so_good_as_to_is_a_polite_request():
+    assert_written_spec(
+        1,
+        "Would you be so good as to move the three blocks to the opposite side, placing the red block before "
+        "the blue block?",
+    )
+    assert_not_the_written_spec(
+        1,
+        "Would you be so good as to move the three blocks to the opposite side, placing the blue block "
+        "before the red block?",
     )

@@ -41,6 +41,7 @@ instruction is read once more (`_restated`).
 from __future__ import annotations
 
 import re
+import unicodedata
 from dataclasses import dataclass, field
 
 import networkx as nx
@@ -186,6 +187,21 @@ def _read_forms(instruction: str, world: World) -> LanguageResult:
     return _result(world.name, instruction, root, goals, notes)
 
 
+def _without_emoji_and_tags(text: str) -> str:
+    """A pictograph (an emoji, a symbol of Unicode's 'other symbol' class, with its joiners and variation
+    selectors) ends a sentence as a full stop does ("Move the blocks 🙂 Red first"); a hashtag ("#robots")
+    is the message's label and carries no task (a number after '#', "#3", stays)."""
+    text = re.sub(r"(?<![\w#])#[A-Za-z]\w*", " ", text)
+    if not any(_pictograph(c) for c in text):
+        return text
+    out = "".join(". " if _pictograph(c) else "" if c in "\u200d\ufe0f" else c for c in text)
+    return re.sub(r"(?:\.\s*){2,}", ". ", out)  # a run of pictographs is one break
+
+
+def _pictograph(c: str) -> bool:
+    return unicodedata.category(c) in ("So", "Sk")
+
+
 def _sentences(instruction: str) -> list[str]:
     """Split at line breaks (a list of steps or bullets), '.', ';', '!' and '?', but not in 'i.e.' nor after a
     step's number ('1. Put ...', also after a colon); a bullet ('-', '*', '•') starting a line or sentence is
@@ -210,6 +226,7 @@ def _sentences(instruction: str) -> list[str]:
         text = re.sub(r"\b(opp|approx|resp)\.(?=\s)", r"\1", text, flags=re.IGNORECASE)  # "opp. side"
         # an open checklist box is a bullet (a ticked one says what is done, and is left unread)
         text = re.sub(r"^\s*(?:\[\s*\]|☐)\s*", "- ", text)
+        text = _without_emoji_and_tags(text)
         out += [re.sub(r"^\s*[-*•·]\s+", "", s) for s in re.split(r"[.;!?]+(?:\s|$)", text)]
     return [s for s in out if s.strip()]
 
