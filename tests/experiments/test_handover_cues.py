@@ -364,3 +364,13 @@ def test_be_so_good_as_to_is_a_polite_request():
         "Would you be so good as to move the three blocks to the opposite side, placing the blue block "
         "before the red block?",
     )
+
+
+def test_the_one_block_per_region_rule_said_alone_with_its_verb():
+    assert _restated(2, "Keeping to one block per region") == "one block per region"
+    assert_written_spec(
+        2, "(a) Place the three blocks on regions H, I and J. (b) Place no more than one block on each region"
+    )
+    # with an order beside it, the rule is not dropped: refused
+    assert _restated(6, "Red before blue, one block per region") is None
+    assert_not_the_written_spec(2, "Putting the three blocks on H and I. Keeping to one block per region")

@@ -210,6 +210,8 @@ class _Reading:
         return list(self.m.blocks[k])
 
     def take(self, c: _Chunk) -> bool:
+        if self.m.notes and not (c.blocks or c.places) and c.cues and set(c.cues) <= {"MOVE", "KEEP"}:
+            return True  # the verb of the one-per-region rule: "place no more than one block on each region"
         if c.cues and set(c.cues) <= {"FIRST", "THEN"}:  # a step's number ("1)", "then,") before its clause
             if self.step or self.goals or self.orders or self.touches or self.swaps:
                 return False
@@ -437,8 +439,10 @@ class _Reading:
             for place in self.forbidden:
                 text += f", and no object may be placed on {_forbidden_text(place)} during this period"
             sentences.append(text)
-        elif self.m.notes:
-            return None
+        elif self.m.notes:  # the world's rule said alone ("keeping to one block per region")
+            if self.orders or self.touches or self.forbidden or self.mods:
+                return None
+            sentences.append("one block per region")
         else:  # a prohibition in a sentence of its own guards every goal (as the form reader reads it)
             sentences += [f"no object may be placed on {_forbidden_text(p)}" for p in self.forbidden]
         sentences += [f"the {x.lower()} block should be placed before the {y.lower()} block"
