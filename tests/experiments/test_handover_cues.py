@@ -374,3 +374,12 @@ def test_the_one_block_per_region_rule_said_alone_with_its_verb():
     # with an order beside it, the rule is not dropped: refused
     assert _restated(6, "Red before blue, one block per region") is None
     assert_not_the_written_spec(2, "Putting the three blocks on H and I. Keeping to one block per region")
+
+
+def test_hesitations_are_the_shared_list():
+    from nl2hltl2plan.language.handover_discourse import frame_words
+
+    # `grammar.everyday.HESITATION` is the one list: the frame words keep none of their own, and a long
+    # "ummm" or "errr" is a hesitation as "um" is
+    assert not {"um", "uh", "er", "erm", "hmm"} & frame_words()["filler"]
+    assert_written_spec(1, "Ummm. Move the three blocks to the opposite side. Errr, red before blue.")
