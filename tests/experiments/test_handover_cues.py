@@ -146,7 +146,7 @@ def test_development_batches_give_the_written_specs(batch, style):
     ("batch", "style"),
     [
         (b, s)
-        for b in ("dev39", "dev40", "dev41", "dev42", "dev43", "dev44", "dev50", "dev51", "dev52")
+        for b in ("dev39", "dev40", "dev41", "dev42", "dev43", "dev44", "dev50", "dev51", "dev52", "dev53")
         for s in sorted(STYLES[b])
     ],
 )
@@ -383,3 +383,26 @@ def test_hesitations_are_the_shared_list():
     # "ummm" or "errr" is a hesitation as "um" is
     assert not {"um", "uh", "er", "erm", "hmm"} & frame_words()["filler"]
     assert_written_spec(1, "Ummm. Move the three blocks to the opposite side. Errr, red before blue.")
+
+
+def test_a_when_clause_gives_the_goal_the_rest_constrains_or_the_first_step():
+    moved = "the three blocks to the opposite side"
+    said = _restated(1, f"When you move {moved}, place the red block before the blue block")
+    assert said == f"move {moved}. the red block should be placed before the blue block"
+    assert _restated(8, "When you have put the yellow block on region I, put it on region G") == (
+        "first move the yellow block to region I, and then move the yellow block to region G"
+    )
+    # two goals in a present "when" clause and its main clause: when is the second one done? refused
+    assert _restated(6, "When you move the red block to region G, move the blue block to region H") is None
+    assert_not_the_written_spec(
+        8,
+        "When you have put the yellow block on region G, put it on region I. Move the red and blue blocks to "
+        "any empty region at any time.",
+    )
+
+
+def test_slashes_list_letters_and_separate_clauses_the_form_reader_refuses():
+    assert_written_spec(6, "red before blue / three objects to G/H/I, one each")
+    assert_written_spec(2, "blocks (x3) to H/I/J, one per region")
+    assert_not_the_written_spec(6, "blue before red / three objects to G/H/I, one each")
+    assert_not_the_written_spec(2, "blocks (x2) to H/I/J, one per region")

@@ -36,6 +36,10 @@ _PHRASES: tuple[tuple[str, str], ...] = (
      r"(?:done|completed|finished)", "AFTERALL"),
     (r"(?:once|when) (?:everything|all (?:of )?(?:them|the blocks)) (?:is|are|has been|have been) "
      r"(?:done|moved|in place|over there|across)", "AFTERALL"),
+    # "when you have put X on I, put it on G": X first, then the other goal; "when you move X to P, place red
+    # before blue": the goal the rest of the sentence constrains (`_Reading.said` checks both)
+    (r"(?:when|once|after|as soon as) (?:you|we) (?:have|had)", "WHENDONE"),
+    (r"when (?:you|we)", "WHEN"),
     (r"(?:and )?after that|afterwards|thereafter|subsequently|(?:and )?then|next", "THEN"),
     # "initially put ...": the step said first (never "where it is initially": a scene, no verb after it)
     (r"initially(?= (?:put|place|move|take|bring|send|carry|transfer|set)\b)", "FIRST"),
@@ -205,11 +209,14 @@ class _Reading:
         self.place: list[Place] = []  # places said alone, waiting for their blocks
         self.place_towards = False  # said with a preposition of direction ("onto region I, ...")
         self.mods: set[str] = set()  # a chunk of its own: "at any time", "one after another"
+        self.when = ""  # "WHEN" / "WHENDONE": a goal said in a "when you (have) ..." clause
 
     def blocks(self, k: int) -> list[str]:
         return list(self.m.blocks[k])
 
     def take(self, c: _Chunk) -> bool:
+        if c.has("WHEN", "WHENDONE"):
+            return self._when(c)
         if self.m.notes and not (c.blocks or c.places) and c.cues and set(c.cues) <= {"MOVE", "KEEP"}:
             return True  # the verb of the one-per-region rule: "place no more than one block on each region"
         if c.cues and set(c.cues) <= {"FIRST", "THEN"}:  # a step's number ("1)", "then,") before its clause
@@ -230,6 +237,16 @@ class _Reading:
         if c.blocks:
             return self._blocks_only(c)
         return self._modifiers(c)
+
+    def _when(self, c: _Chunk) -> bool:
+        """'when you (have) V X ...' opening the chunk: its goal or exchange, once in a sentence."""
+        said = len(self.goals) + len(self.swaps)
+        if self.when or c.cues[0] not in ("WHEN", "WHENDONE") or said and c.cues[0] == "WHENDONE":
+            return False
+        self.when, c.cues = c.cues[0], c.cues[1:]
+        if c.has("WHEN", "WHENDONE") or not self.take(c):
+            return False
+        return len(self.goals) + len(self.swaps) == said + 1
 
     # ----- goals --------------------------------------------------------------------------------------
     def _goal(self, c: _Chunk) -> bool:
@@ -408,7 +425,7 @@ class _Reading:
 
     # ----- the restatement --------------------------------------------------------------------------
     def said(self) -> str | None:
-        if self.group or self.place:
+        if self.group or self.place or not self._when_read():
             return None
         if self.mods - {"PERIOD"}:  # a timing said in a chunk of its own belongs to the sentence's one goal
             if len(self.goals) != 1 or self.swaps or "AFTERALL" in self.mods and self.goals[0].marker:
@@ -452,6 +469,17 @@ class _Reading:
             for x, y in self.touches
         ]
         return ". ".join(sentences) if sentences else None
+
+    def _when_read(self) -> bool:
+        """'when you V X, <order / guard / prohibition>': X is the sentence's one goal (with a second goal the
+        time between them is unsaid); 'when you have V-ed X, V Y': X first, then Y, the only two goals."""
+        if self.when == "WHEN":
+            return len(self.goals) + len(self.swaps) == 1
+        if self.when == "WHENDONE":
+            if len(self.goals) != 2 or self.swaps or any(g.marker or g.anytime for g in self.goals):
+                return False
+            self.goals[0].marker, self.goals[1].marker = "first", "then"
+        return True
 
     def _goal_text(self, g: _Goal) -> str | None:
         where = _place_text(g.places[0]) if len(g.places) == 1 else None

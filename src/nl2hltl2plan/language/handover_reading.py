@@ -103,7 +103,7 @@ def _restated(instruction: str, world: World) -> LanguageResult | None:
     scene = Scene.of(world)
     said: list[str] = []
     previous: Marked | None = None
-    sentences = timing_joined(plain(_sentences(answered(instruction))))
+    sentences = _slashes_split(timing_joined(plain(_sentences(answered(instruction)))), world)
     try:
         for sentence in sentences:
             previous = mark(sentence, scene, previous)
@@ -122,6 +122,16 @@ def _restated(instruction: str, world: World) -> LanguageResult | None:
     root = first.model_copy(update={"text": text}) if first.text == result.instruction else first
     htt = result.htt.model_copy(update={"instruction": text, "nodes": [root, *result.htt.nodes[1:]]})
     return result.model_copy(update={"instruction": text, "htt": htt})
+
+
+def _slashes_split(sentences: list[str], world: World) -> list[str]:
+    """A sentence the form reader refuses alone is split at slashes with spaces around them, as at
+    semicolons ("3 blocks to the opposite side / red before blue"); one it reads stays whole."""
+    out: list[str] = []
+    for sentence in sentences:
+        parts = re.split(r"\s+/\s+", sentence)
+        out += parts if len(parts) > 1 and _spec_or_none(sentence, world) is None else [sentence]
+    return out
 
 
 def _spec_or_none(sentence: str, world: World) -> str | None:
@@ -198,6 +208,16 @@ def _without_emoji_and_tags(text: str) -> str:
     return re.sub(r"(?:\.\s*){2,}", ". ", out)  # a run of pictographs is one break
 
 
+def _slashes_read(text: str) -> str:
+    """Letters joined by slashes list regions or arms ("H/I/J" is "H, I and J", "arms a/b" "arms a and b");
+    a count after its noun is the noun's count ("blocks (x3)" is "3 blocks"). (A slash between clauses is read
+    by the fallback: `_slashes_split`.)"""
+    letters = r"\b[A-Ja-j](?:\s*/\s*[A-Ja-j]\b)+"
+    text = re.sub(letters, lambda m: _listed(re.sub(r"\s*/\s*", ", ", m[0])), text)
+    text = re.sub(r"\b(blocks|pillars|objects|cubes|items)\s*\(?\s*[x×]\s*(\d)\b\s*\)?", r"\2 \1", text)
+    return text
+
+
 def _pictograph(c: str) -> bool:
     return unicodedata.category(c) in ("So", "Sk")
 
@@ -226,7 +246,7 @@ def _sentences(instruction: str) -> list[str]:
         text = re.sub(r"\b(opp|approx|resp)\.(?=\s)", r"\1", text, flags=re.IGNORECASE)  # "opp. side"
         # an open checklist box is a bullet (a ticked one says what is done, and is left unread)
         text = re.sub(r"^\s*(?:\[\s*\]|☐)\s*", "- ", text)
-        text = _without_emoji_and_tags(text)
+        text = _slashes_read(_without_emoji_and_tags(text))
         out += [re.sub(r"^\s*[-*•·]\s+", "", s) for s in re.split(r"[.;!?]+(?:\s|$)", text)]
     return [s for s in out if s.strip()]
 
