@@ -406,3 +406,9 @@ def test_slashes_list_letters_and_separate_clauses_the_form_reader_refuses():
     assert_written_spec(2, "blocks (x3) to H/I/J, one per region")
     assert_not_the_written_spec(6, "blue before red / three objects to G/H/I, one each")
     assert_not_the_written_spec(2, "blocks (x2) to H/I/J, one per region")
+
+
+def test_dont_forget_as_a_heading_is_a_note_label_not_a_negation():
+    said = "the three blocks go to the opposite side, and the {} block goes before the {} block."
+    assert_written_spec(1, "Don't forget: " + said.format("red", "blue"))
+    assert_not_the_written_spec(1, "Don't forget: " + said.format("blue", "red"))

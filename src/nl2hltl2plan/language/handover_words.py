@@ -98,7 +98,7 @@ _RULE_LABEL = (
     r"(?:order|ordering|sequence|constraints?|rules?|requirements?|restrictions?|conditions?|caution|warning|"
     r"important|nb|notice|attention|reminder|"
     # a note's label: it asks for attention and says nothing itself ("Careful: ...", "Please note: ...")
-    r"(?:be\s+)?careful|(?:please\s+)?note|heads\s+up|remember|tip|fyi|ps)"
+    r"(?:be\s+)?careful|(?:please\s+)?note|heads\s+up|remember|do\s+not\s+forget|tip|fyi|ps)"
 )
 # an enumerated step: "Step 2", "Stage two", "Second step", "2)", "(2)", "(b)", "b)" (a list's letters a-d,
 # never a region's); the first of them, and the ones after it
