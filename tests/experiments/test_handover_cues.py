@@ -146,7 +146,7 @@ def test_development_batches_give_the_written_specs(batch, style):
     ("batch", "style"),
     [
         (b, s)
-        for b in ("dev39", "dev40", "dev41", "dev42", "dev43", "dev44", "dev50", "dev51", "dev52", "dev53")
+        for b in ("dev39", "dev40", "dev41", "dev42", "dev43", "dev44", *(f"dev{k}" for k in range(50, 55)))
         for s in sorted(STYLES[b])
     ],
 )
@@ -412,3 +412,11 @@ def test_dont_forget_as_a_heading_is_a_note_label_not_a_negation():
     said = "the three blocks go to the opposite side, and the {} block goes before the {} block."
     assert_written_spec(1, "Don't forget: " + said.format("red", "blue"))
     assert_not_the_written_spec(1, "Don't forget: " + said.format("blue", "red"))
+
+
+def test_a_command_label_asks_for_what_follows():
+    said = "Execute: transfer three blocks to opposite side. Constraint: {} block before {} block."
+    assert_written_spec(1, said.format("red", "blue"))
+    assert_not_the_written_spec(1, said.format("blue", "red"))
+    with pytest.raises(HTTError):
+        _spec(1, "Do not " + said.format("red", "blue").lower())

@@ -188,6 +188,9 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     # a courtesy word (`courtesy.txt`: "kindly", "pls", "thx", "thank you") is "please" (dropped wherever it
     # stands, so a step word still reaches its verb: "after all that is done, kindly put ...")
     (rf"\b{phrase_list_pattern('courtesy.txt', 'word')}\b", "please"),
+    # a command's label: "Execute: transfer ...", "Then perform: ...", "Execute at any time: ..." (a verb with
+    # no object of its own before a colon asks for what follows)
+    (r"\b(?:execute|perform|carry\s+out)\s*(at\s+any\s+time\s*)?:", r"please \1 ,"),
     # office English: "do the needful" asks for what the rest says, and "itself" / "themselves" after a noun
     # only stresses it
     (r"(?:\band\s+)?\bdo\s+the\s+needful\b(?:\s+and\b)?", " "),
