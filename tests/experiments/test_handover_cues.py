@@ -420,3 +420,12 @@ def test_a_command_label_asks_for_what_follows():
     assert_not_the_written_spec(1, said.format("blue", "red"))
     with pytest.raises(HTTError):
         _spec(1, "Do not " + said.format("red", "blue").lower())
+
+
+def test_a_preamble_that_names_nothing_is_dropped_but_a_condition_is_not():
+    rest = "the three blocks need to end up on regions H, I and J, and each region should hold one block."
+    preamble = "What we are trying to achieve here is quite simple really: "
+    assert_written_spec(2, preamble + rest)
+    assert_not_the_written_spec(2, preamble + rest.replace("H, I and J", "H and I"))
+    with pytest.raises(HTTError):
+        _spec(2, "Unless somebody objects by the time you read this: " + rest)
