@@ -1,10 +1,11 @@
 """Issue 24, h78: the form-independent reading of a handover sentence (`language/handover_cues.py`), the
 fallback where the form reader refuses (h82: `dev43`, `dev44`, and the held-out `validation13` and
-`validation14`, read right or refused). The development batch `dev38` (fronted objects and passives,
-checklists, questions) must give the written specs, `dev39`-`dev42` the written spec or a refusal; near
-misses that change one meaning (an order or a guard reversed, a region or a timing left out, a scene said
-without a verb, a report of what was done, "and so on", a pronoun of the other number) must be refused or
-give another spec.
+`validation14`, read right or refused; h86: `dev50`-`dev54` and the held-out `validation15`, and the
+general cues of that round, each with a near miss). The development batch `dev38` (fronted objects and
+passives, checklists, questions) must give the written specs, `dev39`-`dev42` the written spec or a
+refusal; near misses that change one meaning (an order or a guard reversed, a region or a timing left out,
+a scene said without a verb, a report of what was done, "and so on", a pronoun of the other number) must
+be refused or give another spec.
 """
 
 from __future__ import annotations
@@ -156,10 +157,11 @@ def test_later_development_batches_are_read_right_or_refused(batch, style):
 
 
 @pytest.mark.parametrize(
-    ("batch", "style"), [(b, s) for b in ("validation13", "validation14") for s in sorted(STYLES[b])]
+    ("batch", "style"),
+    [(b, s) for b in ("validation13", "validation14", "validation15") for s in sorted(STYLES[b])],
 )
 def test_held_out_batches_are_read_right_or_refused(batch, style):
-    """h78's and h82's held-out batches, each measured at first contact and at the end of its round."""
+    """h78's, h82's and h86's held-out batches, each measured at first contact and at the end of its round."""
     for task, text in STYLES[batch][style].items():
         _read_right_or_refused(int(task), text)
 
