@@ -431,3 +431,17 @@ def test_a_preamble_that_names_nothing_is_dropped_but_a_condition_is_not():
     assert_not_the_written_spec(2, preamble + rest.replace("H, I and J", "H and I"))
     with pytest.raises(HTTError):
         _spec(2, "Unless somebody objects by the time you read this: " + rest)
+
+
+def test_would_you_mind_is_read_from_its_cues():
+    # no rewrite of its own (the modal and "mind" carry no task): the gerund is the placing verb
+    assert_written_spec(
+        7,
+        "The red block should be placed before the blue block. Would you mind placing the three blocks on "
+        "region I one after another, and not placing anything on regions F, G and H meanwhile?",
+    )
+    assert_not_the_written_spec(
+        7,
+        "The red block should be placed before the blue block. Would you mind placing the three blocks on "
+        "region I one after another, and not placing anything on regions F and G meanwhile?",
+    )

@@ -570,10 +570,6 @@ REWRITES += tuple(
     for gerund, verb in NEGATED_GERUNDS.items()
 )
 REWRITES += tuple(
-    (rf"\bplease\s+mind\s+{gerund}\b", f"please {verb}")  # "would you mind moving ..." (after "would you")
-    for gerund, verb in (GERUND_VERBS | NEGATED_GERUNDS).items()
-)
-REWRITES += tuple(
     # a negated modal before a gerund (non-native): "the arm cannot touching the blue block"
     (rf"\b(cannot|must\s+not|should\s+not|do\s+not)\s+{gerund}\b", rf"\1 {verb}")
     for gerund, verb in (GERUND_VERBS | NEGATED_GERUNDS).items()
