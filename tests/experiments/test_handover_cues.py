@@ -445,3 +445,60 @@ def test_would_you_mind_is_read_from_its_cues():
         "The red block should be placed before the blue block. Would you mind placing the three blocks on "
         "region I one after another, and not placing anything on regions F and G meanwhile?",
     )
+
+
+@pytest.mark.parametrize(
+    ("task_id", "text"),
+    [
+        # forms whose own rewrites are gone (h86): the general reading gives the written spec
+        (
+            1,
+            "I would like you to move the three blocks to the opposite side. I would like the "
+            "red block placed before the blue block.",
+        ),
+        (
+            5,
+            "The red block should be placed before the blue block. Swap the red and blue "
+            "blocks. The yellow block goes to the opposite side, whenever is ok.",
+        ),
+        (
+            1,
+            "Here, the three blocks go to the opposite side, and the red block is placed "
+            "before the blue block.",
+        ),
+        (
+            2,
+            "put the three blocks on regions H, I and J one block per region okay",
+        ),
+        (
+            1,
+            "The transfer of the three blocks to the opposite side, with the red block placed "
+            "before the blue block.",
+        ),
+        (
+            7,
+            "The red block should be placed before the blue block. Place the three blocks on "
+            "region I one after another, and put no objects on regions F, G and H meanwhile.",
+        ),
+        (
+            8,
+            "Yellow block: region I, then region G. The red and blue blocks go to any empty "
+            "region at any time.",
+        ),
+    ],
+)
+def test_forms_without_a_rewrite_of_their_own_are_read_in_general(task_id, text):
+    assert_written_spec(task_id, text)
+
+
+def test_forms_without_a_rewrite_of_their_own_near_misses():
+    assert_not_the_written_spec(
+        7,
+        "The red block should be placed before the blue block. Place the three blocks on "
+        "region I one after another, and put no objects on regions F and G meanwhile.",
+    )
+    assert_not_the_written_spec(
+        8,
+        "Yellow block: region G, then region I. The red and blue blocks go to any empty "
+        "region at any time.",
+    )

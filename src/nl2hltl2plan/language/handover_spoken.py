@@ -79,9 +79,8 @@ _FILLERS: tuple[tuple[str, str], ...] = (
     (r"\boh\b", " , "),
     (r",\s*like\s*(?=,)", " "),  # "the blocks, like, go ..."
     (rf"\b({VERB})\s+like\s+(?=(?:the|all|both|every|each|three|two)\b)", r"\1 "),  # "put like all three ..."
-    # unpunctuated (a voice transcript): "and you know only one ...", "... okay" at the end
+    # unpunctuated (a voice transcript): "and you know only one ..." (an "okay" at the end is a frame word)
     (r"\b(and|so|but)\s+you\s+know\b", r"\1"),
-    (r"(?<!\bis)(?<!\bare)(?<!\bbe)\s+(?:okay|ok|alright|yeah)\s*$", " "),
     (r"\b(?:got\s+it|you\s+see|understood|all\s+good)\s*$", " "),
     # a tag at the end of a clause ("..., right?", "..., okay") or interjections opening one
     (rf",\s*{_INTERJECTION}\s*$", " "),
@@ -157,7 +156,6 @@ _NARRATION: tuple[tuple[str, str], ...] = (
         r"^\s*(?:in|for)\s+this\s+(?:task|exercise|run|one|activity|lesson|part|round|session|step)\s*,?\s*",
         " ",
     ),
-    (r"^\s*here\s*,?\s+(?=(?:the|all|we|you)\b)", " "),
     (
         rf"\bwhat\s+{_SUBJECT}{_WILL}\s+(?:be\s+)?do(?:ing)?\s+(?:here\s+|now\s+|today\s+|next\s+)?is\s+(?:to\s+)?",
         "please ",

@@ -131,7 +131,6 @@ REWRITES: tuple[tuple[str, str], ...] = (
     # before "it" is read as a block: "while you're at it" is the period of the goals
     (r"\bwhile\s+(?:you|we)\s+are\s+at\s+it\b", "meanwhile"),
     (r"\bamongst\b", "among"),
-    (r"\b(?:i|we)\s*would\s+like\s+(?:you\s+)?to\b", "please"),
     (r"\blet\s*'?\s*s\b|\blet\s+us\b|\bgo\s+ahead\s+and\b", "please"),
     (
         r"\b(?:whenever\s+(?:you\s+(?:like|want|wish|please|can)|(?:is\s+|s\s+)?convenient|possible|(?:it\s+)?suits(?:\s+you)?)|"
@@ -313,7 +312,6 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\bone\s+after\s+(?:one|other)\b", "one after another"),
     (r"\bwont\b", "will not"),
     (r"\b(do|does|can|should|must|is|are)nt\b", r"\1 not"),  # "dont", "cant" without the apostrophe
-    (r"\b(any\s+time|whenever)\s+(?:is|are)\s+(?:ok|okay|fine)\b", r"\1"),
     # who asks: "the operator requires that the blocks be moved ..."; "please do the following:"
     (
         r"^\s*(?:the\s+)?(?:operator|user|client|customer|supervisor|lab|team|we|i)\s+(?:require|request|ask|want)s?\s+"
@@ -472,11 +470,6 @@ REWRITES: tuple[tuple[str, str], ...] = (
         rf"^\s*((?:the\s+)?[a-z]+\s+and\s+(?:the\s+)?[a-z]+\s+(?:blocks|cubes|pieces|ones))\s+(?:are|were)\s+in\s+"
         rf"(?:the\s+wrong|each\s+other\s*s?)\s+(?:places|spots|positions)\s*,\s*(?:so\s+)?({SWAP})\s+(?:them|their\s+positions)\b",
         r"\2 \1",
-    ),
-    # "place no objects on regions F, G and H": nothing on them (every object here is a block or a pillar)
-    (
-        r"\b(put|place|drop|set|leave)\s+no\s+(?:objects?|blocks?|items?|things?|pillars?)\s+(?=(?:on|in|onto|into)\b)",
-        r"\1 nothing ",
     ),
     # a count before a singular noun (non-native): "all three block", "move 3 block"
     (r"\b(two|three|four|both|all|[2-9])\s+(block|cube|pillar|object|piece|item)\b", r"\1 \2s"),
