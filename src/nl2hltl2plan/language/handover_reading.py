@@ -219,7 +219,7 @@ def _slashes_read(text: str) -> str:
 
 
 def _pictograph(c: str) -> bool:
-    return unicodedata.category(c) in ("So", "Sk")
+    return ord(c) > 0x7F and unicodedata.category(c) in ("So", "Sk")  # not "^" or "`" (ASCII, class Sk)
 
 
 def _sentences(instruction: str) -> list[str]:
