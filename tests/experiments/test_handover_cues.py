@@ -1,10 +1,11 @@
 """Issue 24, h78: the form-independent reading of a handover sentence (`language/handover_cues.py`), the
 fallback where the form reader refuses (h82: `dev43`, `dev44`, and the held-out `validation13` and
-`validation14`, read right or refused). The development batch `dev38` (fronted objects and passives,
-checklists, questions) must give the written specs, `dev39`-`dev42` the written spec or a refusal; near
-misses that change one meaning (an order or a guard reversed, a region or a timing left out, a scene said
-without a verb, a report of what was done, "and so on", a pronoun of the other number) must be refused or
-give another spec.
+`validation14`, read right or refused; h86: `dev50`-`dev54` and the held-out `validation15`, and the
+general cues of that round, each with a near miss). The development batch `dev38` (fronted objects and
+passives, checklists, questions) must give the written specs, `dev39`-`dev42` the written spec or a
+refusal; near misses that change one meaning (an order or a guard reversed, a region or a timing left out,
+a scene said without a verb, a report of what was done, "and so on", a pronoun of the other number) must
+be refused or give another spec.
 """
 
 from __future__ import annotations
@@ -144,7 +145,11 @@ def test_development_batches_give_the_written_specs(batch, style):
 
 @pytest.mark.parametrize(
     ("batch", "style"),
-    [(b, s) for b in ("dev39", "dev40", "dev41", "dev42", "dev43", "dev44") for s in sorted(STYLES[b])],
+    [
+        (b, s)
+        for b in ("dev39", "dev40", "dev41", "dev42", "dev43", "dev44", *(f"dev{k}" for k in range(50, 55)))
+        for s in sorted(STYLES[b])
+    ],
 )
 def test_later_development_batches_are_read_right_or_refused(batch, style):
     for task, text in STYLES[batch][style].items():
@@ -152,10 +157,11 @@ def test_later_development_batches_are_read_right_or_refused(batch, style):
 
 
 @pytest.mark.parametrize(
-    ("batch", "style"), [(b, s) for b in ("validation13", "validation14") for s in sorted(STYLES[b])]
+    ("batch", "style"),
+    [(b, s) for b in ("validation13", "validation14", "validation15") for s in sorted(STYLES[b])],
 )
 def test_held_out_batches_are_read_right_or_refused(batch, style):
-    """h78's and h82's held-out batches, each measured at first contact and at the end of its round."""
+    """h78's, h82's and h86's held-out batches, each measured at first contact and at the end of its round."""
     for task, text in STYLES[batch][style].items():
         _read_right_or_refused(int(task), text)
 
@@ -264,4 +270,235 @@ def test_it_is_forbidden_to_is_a_prohibition_before_it_is_read_as_a_block():
         7,
         "Place the three blocks on region I one after another, red before blue, and it is forbidden to place "
         "any object on regions F, G and H during this period.",
+    )
+
+
+def test_an_arm_named_with_with_and_an_exchange_said_with_with():
+    # "with any arm" names who touches (not a chunk of its own); "swap X with Y" names the exchange's pair
+    assert _restated(4, "Not touching the blue block with any arm until the red block has been touched") == (
+        "no arm may touch the blue block until the red block has been touched"
+    )
+    swapped = "swap the positions of the red and blue blocks"
+    assert _restated(5, "swap the red block with the blue block") == swapped
+    assert _restated(5, "swap red <-> blue") == swapped
+    # the guard reversed, or a block of the exchange changed: not the written spec
+    assert_not_the_written_spec(
+        4,
+        "Moving the three blocks to the opposite regions. Not touching the red block with any arm until the "
+        "blue block has been touched. Finally, putting the yellow block back on region G.",
+    )
+    assert_not_the_written_spec(5, "red before blue; swap red <-> yellow; anytime: blue -> opposite side")
+
+
+def test_the_arms_addressed_as_you_and_steps_said_initially_and_subsequently():
+    assert _restated(4, "None of you touches the blue block until one of you has touched the red block") == (
+        "no arm may touch the blue block until the red block has been touched"
+    )
+    assert _restated(8, "Initially put the yellow block on region I, subsequently on region G") == (
+        "first move the yellow block to region I, and then move the yellow block to region G"
+    )
+    assert _restated(8, "The yellow block is initially on region I") is None  # a scene, not a step
+    assert_not_the_written_spec(
+        4,
+        "Arms, take the three blocks to the opposite regions. None of you touches the red block until one of "
+        "you has touched the blue block. After all that, put the yellow block back on region G.",
+    )
+    assert_not_the_written_spec(
+        8,
+        "Initially put the yellow block on region G, subsequently on region I. Whenever convenient, send the "
+        "red and blue blocks to any empty region.",
+    )
+
+
+def test_hedges_and_intensifiers_carry_no_meaning_but_a_hedged_negation_is_refused():
+    assert_written_spec(
+        1,
+        "I think the three blocks should probably go to the opposite side, and ideally the red block gets "
+        "placed before the blue block.",
+    )
+    assert_not_the_written_spec(
+        6,
+        "Ideally the blue block is placed before the red block. I'd put the three objects on regions G, H "
+        "and I, one each.",
+    )
+    assert_written_spec(
+        3,
+        "Move the three pillars to regions E, F and G, on the side of arms a and b, and it is very important "
+        "that no object is placed on any other region.",
+    )
+    with pytest.raises(HTTError, match="perhaps"):
+        _spec(1, "Move the three blocks to the opposite side, perhaps not the red block first.")
+
+
+def test_the_courtesy_words_are_one_list_for_the_handover_reader():
+    from nl2hltl2plan.language.handover_discourse import frame_words
+
+    # `courtesy.txt`'s words are read as "please" anywhere and are frame words of a message
+    assert {"please", "kindly", "pls", "plz", "thx", "thanks", "thank"} <= frame_words()["thanks"]
+    assert_written_spec(
+        1,
+        "Kindly move the three blocks to the opposite side, thx. The red block should be placed before the "
+        "blue block pls. Thank you!",
+    )
+
+
+def test_a_pictograph_ends_a_sentence_and_a_hashtag_is_a_label():
+    assert_written_spec(
+        5,
+        "Red block before blue block 🔴🔵 Swap the red and blue blocks 🔄 Yellow block to the opposite "
+        "side at any time ⏰ #handover",
+    )
+    # the order reversed, or a pictograph inside a clause (it ends the clause there): not the written spec
+    assert_not_the_written_spec(
+        5, "Blue before red 🔵🔴 Swap the red and blue blocks 🔄 Yellow block to the opposite side anytime"
+    )
+    assert_not_the_written_spec(1, "Move the three blocks 🙂 to the opposite side. Red before blue.")
+
+
+def test_be_so_good_as_to_is_a_polite_request():
+    assert_written_spec(
+        1,
+        "Would you be so good as to move the three blocks to the opposite side, placing the red block before "
+        "the blue block?",
+    )
+    assert_not_the_written_spec(
+        1,
+        "Would you be so good as to move the three blocks to the opposite side, placing the blue block "
+        "before the red block?",
+    )
+
+
+def test_the_one_block_per_region_rule_said_alone_with_its_verb():
+    assert _restated(2, "Keeping to one block per region") == "one block per region"
+    assert_written_spec(
+        2, "(a) Place the three blocks on regions H, I and J. (b) Place no more than one block on each region"
+    )
+    # with an order beside it, the rule is not dropped: refused
+    assert _restated(6, "Red before blue, one block per region") is None
+    assert_not_the_written_spec(2, "Putting the three blocks on H and I. Keeping to one block per region")
+
+
+def test_hesitations_are_the_shared_list():
+    from nl2hltl2plan.language.handover_discourse import frame_words
+
+    # `grammar.everyday.HESITATION` is the one list: the frame words keep none of their own, and a long
+    # "ummm" or "errr" is a hesitation as "um" is
+    assert not {"um", "uh", "er", "erm", "hmm"} & frame_words()["filler"]
+    assert_written_spec(1, "Ummm. Move the three blocks to the opposite side. Errr, red before blue.")
+
+
+def test_a_when_clause_gives_the_goal_the_rest_constrains_or_the_first_step():
+    moved = "the three blocks to the opposite side"
+    said = _restated(1, f"When you move {moved}, place the red block before the blue block")
+    assert said == f"move {moved}. the red block should be placed before the blue block"
+    assert _restated(8, "When you have put the yellow block on region I, put it on region G") == (
+        "first move the yellow block to region I, and then move the yellow block to region G"
+    )
+    # two goals in a present "when" clause and its main clause: when is the second one done? refused
+    assert _restated(6, "When you move the red block to region G, move the blue block to region H") is None
+    assert_not_the_written_spec(
+        8,
+        "When you have put the yellow block on region G, put it on region I. Move the red and blue blocks to "
+        "any empty region at any time.",
+    )
+
+
+def test_slashes_list_letters_and_separate_clauses_the_form_reader_refuses():
+    assert_written_spec(6, "red before blue / three objects to G/H/I, one each")
+    assert_written_spec(2, "blocks (x3) to H/I/J, one per region")
+    assert_not_the_written_spec(6, "blue before red / three objects to G/H/I, one each")
+    assert_not_the_written_spec(2, "blocks (x2) to H/I/J, one per region")
+
+
+def test_dont_forget_as_a_heading_is_a_note_label_not_a_negation():
+    said = "the three blocks go to the opposite side, and the {} block goes before the {} block."
+    assert_written_spec(1, "Don't forget: " + said.format("red", "blue"))
+    assert_not_the_written_spec(1, "Don't forget: " + said.format("blue", "red"))
+
+
+def test_a_command_label_asks_for_what_follows():
+    said = "Execute: transfer three blocks to opposite side. Constraint: {} block before {} block."
+    assert_written_spec(1, said.format("red", "blue"))
+    assert_not_the_written_spec(1, said.format("blue", "red"))
+    with pytest.raises(HTTError):
+        _spec(1, "Do not " + said.format("red", "blue").lower())
+
+
+def test_a_preamble_that_names_nothing_is_dropped_but_a_condition_is_not():
+    rest = "the three blocks need to end up on regions H, I and J, and each region should hold one block."
+    preamble = "What we are trying to achieve here is quite simple really: "
+    assert_written_spec(2, preamble + rest)
+    assert_not_the_written_spec(2, preamble + rest.replace("H, I and J", "H and I"))
+    with pytest.raises(HTTError):
+        _spec(2, "Unless somebody objects by the time you read this: " + rest)
+
+
+def test_would_you_mind_is_read_from_its_cues():
+    # no rewrite of its own (the modal and "mind" carry no task): the gerund is the placing verb
+    assert_written_spec(
+        7,
+        "The red block should be placed before the blue block. Would you mind placing the three blocks on "
+        "region I one after another, and not placing anything on regions F, G and H meanwhile?",
+    )
+    assert_not_the_written_spec(
+        7,
+        "The red block should be placed before the blue block. Would you mind placing the three blocks on "
+        "region I one after another, and not placing anything on regions F and G meanwhile?",
+    )
+
+
+@pytest.mark.parametrize(
+    ("task_id", "text"),
+    [
+        # forms whose own rewrites are gone (h86): the general reading gives the written spec
+        (
+            1,
+            "I would like you to move the three blocks to the opposite side. I would like the "
+            "red block placed before the blue block.",
+        ),
+        (
+            5,
+            "The red block should be placed before the blue block. Swap the red and blue "
+            "blocks. The yellow block goes to the opposite side, whenever is ok.",
+        ),
+        (
+            1,
+            "Here, the three blocks go to the opposite side, and the red block is placed "
+            "before the blue block.",
+        ),
+        (
+            2,
+            "put the three blocks on regions H, I and J one block per region okay",
+        ),
+        (
+            1,
+            "The transfer of the three blocks to the opposite side, with the red block placed "
+            "before the blue block.",
+        ),
+        (
+            7,
+            "The red block should be placed before the blue block. Place the three blocks on "
+            "region I one after another, and put no objects on regions F, G and H meanwhile.",
+        ),
+        (
+            8,
+            "Yellow block: region I, then region G. The red and blue blocks go to any empty "
+            "region at any time.",
+        ),
+    ],
+)
+def test_forms_without_a_rewrite_of_their_own_are_read_in_general(task_id, text):
+    assert_written_spec(task_id, text)
+
+
+def test_forms_without_a_rewrite_of_their_own_near_misses():
+    assert_not_the_written_spec(
+        7,
+        "The red block should be placed before the blue block. Place the three blocks on "
+        "region I one after another, and put no objects on regions F and G meanwhile.",
+    )
+    assert_not_the_written_spec(
+        8,
+        "Yellow block: region G, then region I. The red and blue blocks go to any empty "
+        "region at any time.",
     )

@@ -36,7 +36,13 @@ _PHRASES: tuple[tuple[str, str], ...] = (
      r"(?:done|completed|finished)", "AFTERALL"),
     (r"(?:once|when) (?:everything|all (?:of )?(?:them|the blocks)) (?:is|are|has been|have been) "
      r"(?:done|moved|in place|over there|across)", "AFTERALL"),
-    (r"(?:and )?after that|afterwards|thereafter|(?:and )?then|next", "THEN"),
+    # "when you have put X on I, put it on G": X first, then the other goal; "when you move X to P, place red
+    # before blue": the goal the rest of the sentence constrains (`_Reading.said` checks both)
+    (r"(?:when|once|after|as soon as) (?:you|we) (?:have|had)", "WHENDONE"),
+    (r"when (?:you|we)", "WHEN"),
+    (r"(?:and )?after that|afterwards|thereafter|subsequently|(?:and )?then|next", "THEN"),
+    # "initially put ...": the step said first (never "where it is initially": a scene, no verb after it)
+    (r"initially(?= (?:put|place|move|take|bring|send|carry|transfer|set)\b)", "FIRST"),
     (r"(?:begin|start) with", "FIRST"),  # "begin with the red block, then the blue block"
     (r"upon completion(?: of (?:the foregoing|this|that|all (?:of )?(?:this|that)))?", "AFTERALL"),
     (r"(?:finish|end) (?:by|with)", "FINISH"),  # after the sentence's goal before it, else after all
@@ -59,11 +65,13 @@ _PHRASES: tuple[tuple[str, str], ...] = (
     (r"(?:the|my|our) (?:idea|plan|aim|intention) (?:here )?is (?:to|that)|"
      r"what (?:i|we) (?:need|want) is(?: for| that)?|what (?:matters|counts) is(?: that)?", "must"),
     (r"(?:it is )?(?:forbidden|prohibited|not (?:allowed|permitted))(?: to)?", "NEG"),  # a prohibition
-    (r"(?:empty|free|clear) of (?:new |any |other )?", "CLEAR"),  # "empty of new objects": of every block
+    (r"(?:empty|free|clear) of(?: new| any| other)?", "CLEAR"),  # "empty of new objects": of every block
     (r"any objects?", "ANY"),  # "it is forbidden to place any object on ...": with a negation, no object
     (r"and so (?:on|forth)|etc|et cetera", "ETC"),  # more of the same: what?
-    (r"(?:by )?no (?:A|arm)", "NEG ARM"),
-    (r"(?:by )?(?:any|one) (?:of the )?(?:A|arm)|by A|A", "ARM"),
+    (r"(?:by )?no (?:A|arm)|none of you", "NEG ARM"),  # "none of you touches ...": the arms addressed
+    (r"(?:any|one|either|some) of you", "ARM"),
+    # "touched by / with any arm"
+    (r"(?:by |with )?(?:any|one) (?:of the )?(?:A|arm)|(?:by|with) A|A", "ARM"),
 )
 _WORDS = {
     "MOVE": "move moved moves moving put puts putting place placed places placing go goes going gone carry "
@@ -85,18 +93,20 @@ _WORDS = {
 }
 _CLASS = {w: cls for cls, words in _WORDS.items() for w in words.split()}
 # words that carry no meaning in this world: articles, auxiliaries, modals, pronouns, prepositions,
-# politeness and question words
+# politeness and question words (the courtesy words of `courtesy.txt` never reach here: `handover_phrases`
+# reads them as "please" and drops it)
 _EMPTY = frozenset(
     "a an the is are be being do does on in by of from at for "
-    "this that these those you we us our your please "
+    "this that these those you we us our your "
     "like just also so as well here make sure possible okay ok "
-    "and or what how job task arms robot robots kindly mind you all of there's checklist things todo list "
-    "steps tasks notes cause operator".split()
+    "and or what how job task arms robot robots mind you all of there's checklist things todo list "
+    "steps tasks notes cause operator "
+    "with".split()  # left in a chunk only as an exchange's "with" ("swap B0 with B1": `_SPLIT`)
 )
 _BLOCK = re.compile(r"B\d+")
-# chunks end at punctuation, "while", "with", before "without", and at "and" but in a list of blocks ("B0 and
-# B1"); the separators are kept: a colon ends a heading
-_SPLIT = r"([,;:()]|\bwhile\b|\bwhilst\b|\bwith\b|(?=\bwithout\b)|(?<!B\d )\band\b)"
+# chunks end at punctuation, "while", "with" (but "swap B0 with B1": the exchange's pair), before "without",
+# and at "and" but in a list of blocks ("B0 and B1"); the separators are kept: a colon ends a heading
+_SPLIT = r"([,;:()]|\bwhile\b|\bwhilst\b|(?<!EXCHANGE B\d )\bwith\b|(?=\bwithout\b)|(?<!B\d )\band\b)"
 _TOWARDS = frozenset("to onto into towards toward".split())
 _MODAL = frozenset("should must shall will would could can may might".split())
 
@@ -150,6 +160,7 @@ _PHRASE_CUES = tuple(
 
 def _tokens(text: str) -> str:
     """The sentence with its multi-word cues as single tokens."""
+    text = " ".join(text.split())  # the phrase layer's marks come with spaces around them ("with  A")
     for cue, token in _PHRASE_CUES:
         text = cue.sub(token, text)
     return " ".join(text.split())
@@ -158,7 +169,7 @@ def _tokens(text: str) -> str:
 def _chunk(text: str) -> _Chunk | None:
     out = _Chunk()
     words = text.split()
-    if words[:1] == ["but"] and words[1:2] and _CLASS.get(words[1]) == "NEG":
+    if words[:1] == ["but"] and words[1:2] and "NEG" in (words[1], _CLASS.get(words[1])):
         words = words[1:]  # "..., but no arm may touch ...": a contrast that adds a prohibition
     for word in words:
         if re.fullmatch(r"B\d+", word):
@@ -198,11 +209,16 @@ class _Reading:
         self.place: list[Place] = []  # places said alone, waiting for their blocks
         self.place_towards = False  # said with a preposition of direction ("onto region I, ...")
         self.mods: set[str] = set()  # a chunk of its own: "at any time", "one after another"
+        self.when = ""  # "WHEN" / "WHENDONE": a goal said in a "when you (have) ..." clause
 
     def blocks(self, k: int) -> list[str]:
         return list(self.m.blocks[k])
 
     def take(self, c: _Chunk) -> bool:
+        if c.has("WHEN", "WHENDONE"):
+            return self._when(c)
+        if self.m.notes and not (c.blocks or c.places) and c.cues and set(c.cues) <= {"MOVE", "KEEP"}:
+            return True  # the verb of the one-per-region rule: "place no more than one block on each region"
         if c.cues and set(c.cues) <= {"FIRST", "THEN"}:  # a step's number ("1)", "then,") before its clause
             if self.step or self.goals or self.orders or self.touches or self.swaps:
                 return False
@@ -221,6 +237,16 @@ class _Reading:
         if c.blocks:
             return self._blocks_only(c)
         return self._modifiers(c)
+
+    def _when(self, c: _Chunk) -> bool:
+        """'when you (have) V X ...' opening the chunk: its goal or exchange, once in a sentence."""
+        said = len(self.goals) + len(self.swaps)
+        if self.when or c.cues[0] not in ("WHEN", "WHENDONE") or said and c.cues[0] == "WHENDONE":
+            return False
+        self.when, c.cues = c.cues[0], c.cues[1:]
+        if c.has("WHEN", "WHENDONE") or not self.take(c):
+            return False
+        return len(self.goals) + len(self.swaps) == said + 1
 
     # ----- goals --------------------------------------------------------------------------------------
     def _goal(self, c: _Chunk) -> bool:
@@ -399,7 +425,7 @@ class _Reading:
 
     # ----- the restatement --------------------------------------------------------------------------
     def said(self) -> str | None:
-        if self.group or self.place:
+        if self.group or self.place or not self._when_read():
             return None
         if self.mods - {"PERIOD"}:  # a timing said in a chunk of its own belongs to the sentence's one goal
             if len(self.goals) != 1 or self.swaps or "AFTERALL" in self.mods and self.goals[0].marker:
@@ -430,8 +456,10 @@ class _Reading:
             for place in self.forbidden:
                 text += f", and no object may be placed on {_forbidden_text(place)} during this period"
             sentences.append(text)
-        elif self.m.notes:
-            return None
+        elif self.m.notes:  # the world's rule said alone ("keeping to one block per region")
+            if self.orders or self.touches or self.forbidden or self.mods:
+                return None
+            sentences.append("one block per region")
         else:  # a prohibition in a sentence of its own guards every goal (as the form reader reads it)
             sentences += [f"no object may be placed on {_forbidden_text(p)}" for p in self.forbidden]
         sentences += [f"the {x.lower()} block should be placed before the {y.lower()} block"
@@ -441,6 +469,17 @@ class _Reading:
             for x, y in self.touches
         ]
         return ". ".join(sentences) if sentences else None
+
+    def _when_read(self) -> bool:
+        """'when you V X, <order / guard / prohibition>': X is the sentence's one goal (with a second goal the
+        time between them is unsaid); 'when you have V-ed X, V Y': X first, then Y, the only two goals."""
+        if self.when == "WHEN":
+            return len(self.goals) + len(self.swaps) == 1
+        if self.when == "WHENDONE":
+            if len(self.goals) != 2 or self.swaps or any(g.marker or g.anytime for g in self.goals):
+                return False
+            self.goals[0].marker, self.goals[1].marker = "first", "then"
+        return True
 
     def _goal_text(self, g: _Goal) -> str | None:
         where = _place_text(g.places[0]) if len(g.places) == 1 else None

@@ -45,9 +45,11 @@ from __future__ import annotations
 
 import re
 from functools import lru_cache
+from importlib import resources
 from typing import NamedTuple
 
 from nl2hltl2plan.language.content_words import vocabulary, word_categories
+from nl2hltl2plan.language.grammar.everyday import HESITATION
 from nl2hltl2plan.language.handover_words import DONE, GERUND, SWAP, TOUCH, VERB
 
 # words that may carry a meaning here: a block, a place, an arm, a count, a negation, an order or a time
@@ -63,8 +65,13 @@ MEANING = re.compile(
 
 @lru_cache(maxsize=1)
 def frame_words() -> dict[str, frozenset[str]]:
-    """category -> words (phrases joined by '_'), from `handover_frame_words.txt`."""
-    return word_categories("handover_frame_words.txt")
+    """category -> words (phrases joined by '_'), from `handover_frame_words.txt`; its thanks take in the
+    courtesy words of `courtesy.txt` (one list of them for the handover reader)."""
+    words = word_categories("handover_frame_words.txt")
+    lines = resources.files("nl2hltl2plan.language").joinpath("courtesy.txt").read_text().splitlines()
+    said = " ".join(line.partition(":")[2] for line in lines if line.startswith("word:"))
+    courtesy = re.findall(r"[a-z]+", said)
+    return {**words, "thanks": words["thanks"] | frozenset(courtesy)}
 
 
 # categories whose words are frame words only in one place of a fragment (see the words file)
@@ -155,7 +162,7 @@ def empty(fragment: str, label: bool = False, whole: bool = False, header: bool 
     if MEANING.search(text) or _ACTION.search(text):
         return False
     words = re.findall(r"[a-z0-9]+", text)
-    return all(w in frame.single and not _content_word(w) for w in words)
+    return all((w in frame.single or _HESITATION.fullmatch(w)) and not _content_word(w) for w in words)
 
 
 _LABEL = re.compile(r"^\s*([^:]{1,60}?)\s*:\s*(?=\S)")
@@ -185,7 +192,11 @@ def _unframed_sentence(sentence: str, header: bool = False) -> str:
 
 
 def _hesitation(fragment: str) -> bool:
-    return set(re.findall(r"[a-z]+", fragment.lower())) <= frame_words()["filler"]
+    filler = frame_words()["filler"]
+    return all(w in filler or _HESITATION.fullmatch(w) for w in re.findall(r"[a-z]+", fragment.lower()))
+
+
+_HESITATION = re.compile(HESITATION)  # "um", "uh", "er", "hmm": the shared list
 
 
 # a voice assistant or a person called by name after a greeting or an acknowledgement ("Hey Google", "OK

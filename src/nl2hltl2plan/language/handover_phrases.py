@@ -99,7 +99,20 @@ def _drop_framing(text: str) -> str:
     tail = re.search(r",\s*(?:because|since|as|so\s+that|for)\s+([^,]+)$", text)
     if tail and not MEANING.search(tail.group(1)):
         text = text[: tail.start()]
+    # a preamble of four words or more before a colon that names nothing either, nor any verb, condition or
+    # exception ("so here is what i would like to happen today: ...", "what we are after is simple:")
+    head = re.match(r"\s*([^:,;]{1,80}):", text)
+    if head and len(head.group(1).split()) >= 4 and not _NAMES.search(_I_SAYS.sub(" ", head.group(1))):
+        text = text[head.end() :]
     return text
+
+
+# what a preamble may not hold: a meaning word, a placing verb, a condition, an exception or a warning
+_NAMES = re.compile(
+    rf"{MEANING.pattern}|\b(?:{VERB}|{SWAP}|if|unless|except|only|instead|avoid|but|careful|sure|make|keep|"
+    r"leave|do|does|don|stop|wait|hold|go|goes|step|rule|order|note|remember|important)\b"
+)
+_I_SAYS = re.compile(r"\bi\s+(?=would|need|want|am|have|think|wish|hope|was|will|d|m)\b")
 
 
 def mark(sentence: str, scene: Scene, before: Marked | None = None) -> Marked:

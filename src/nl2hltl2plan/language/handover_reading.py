@@ -41,6 +41,7 @@ instruction is read once more (`_restated`).
 from __future__ import annotations
 
 import re
+import unicodedata
 from dataclasses import dataclass, field
 
 import networkx as nx
@@ -102,7 +103,7 @@ def _restated(instruction: str, world: World) -> LanguageResult | None:
     scene = Scene.of(world)
     said: list[str] = []
     previous: Marked | None = None
-    sentences = timing_joined(plain(_sentences(answered(instruction))))
+    sentences = _slashes_split(timing_joined(plain(_sentences(answered(instruction)))), world)
     try:
         for sentence in sentences:
             previous = mark(sentence, scene, previous)
@@ -121,6 +122,16 @@ def _restated(instruction: str, world: World) -> LanguageResult | None:
     root = first.model_copy(update={"text": text}) if first.text == result.instruction else first
     htt = result.htt.model_copy(update={"instruction": text, "nodes": [root, *result.htt.nodes[1:]]})
     return result.model_copy(update={"instruction": text, "htt": htt})
+
+
+def _slashes_split(sentences: list[str], world: World) -> list[str]:
+    """A sentence the form reader refuses alone is split at slashes with spaces around them, as at
+    semicolons ("3 blocks to the opposite side / red before blue"); one it reads stays whole."""
+    out: list[str] = []
+    for sentence in sentences:
+        parts = re.split(r"\s+/\s+", sentence)
+        out += parts if len(parts) > 1 and _spec_or_none(sentence, world) is None else [sentence]
+    return out
 
 
 def _spec_or_none(sentence: str, world: World) -> str | None:
@@ -186,6 +197,31 @@ def _read_forms(instruction: str, world: World) -> LanguageResult:
     return _result(world.name, instruction, root, goals, notes)
 
 
+def _without_emoji_and_tags(text: str) -> str:
+    """A pictograph (an emoji, a symbol of Unicode's 'other symbol' class, with its joiners and variation
+    selectors) ends a sentence as a full stop does ("Move the blocks 🙂 Red first"); a hashtag ("#robots")
+    is the message's label and carries no task (a number after '#', "#3", stays)."""
+    text = re.sub(r"(?<![\w#])#[A-Za-z]\w*", " ", text)
+    if not any(_pictograph(c) for c in text):
+        return text
+    out = "".join(". " if _pictograph(c) else "" if c in "\u200d\ufe0f" else c for c in text)
+    return re.sub(r"(?:\.\s*){2,}", ". ", out)  # a run of pictographs is one break
+
+
+def _slashes_read(text: str) -> str:
+    """Letters joined by slashes list regions or arms ("H/I/J" is "H, I and J", "arms a/b" "arms a and b");
+    a count after its noun is the noun's count ("blocks (x3)" is "3 blocks"). (A slash between clauses is read
+    by the fallback: `_slashes_split`.)"""
+    letters = r"\b[A-Ja-j](?:\s*/\s*[A-Ja-j]\b)+"
+    text = re.sub(letters, lambda m: _listed(re.sub(r"\s*/\s*", ", ", m[0])), text)
+    text = re.sub(r"\b(blocks|pillars|objects|cubes|items)\s*\(?\s*[x×]\s*(\d)\b\s*\)?", r"\2 \1", text)
+    return text
+
+
+def _pictograph(c: str) -> bool:
+    return ord(c) > 0x7F and unicodedata.category(c) in ("So", "Sk")  # not "^" or "`" (ASCII, class Sk)
+
+
 def _sentences(instruction: str) -> list[str]:
     """Split at line breaks (a list of steps or bullets), '.', ';', '!' and '?', but not in 'i.e.' nor after a
     step's number ('1. Put ...', also after a colon); a bullet ('-', '*', '•') starting a line or sentence is
@@ -210,6 +246,7 @@ def _sentences(instruction: str) -> list[str]:
         text = re.sub(r"\b(opp|approx|resp)\.(?=\s)", r"\1", text, flags=re.IGNORECASE)  # "opp. side"
         # an open checklist box is a bullet (a ticked one says what is done, and is left unread)
         text = re.sub(r"^\s*(?:\[\s*\]|☐)\s*", "- ", text)
+        text = _slashes_read(_without_emoji_and_tags(text))
         out += [re.sub(r"^\s*[-*•·]\s+", "", s) for s in re.split(r"[.;!?]+(?:\s|$)", text)]
     return [s for s in out if s.strip()]
 

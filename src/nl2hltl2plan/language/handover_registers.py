@@ -2,14 +2,14 @@
 (`handover_phrases.normalise` applies `REGISTERS` to the lower-cased sentence, before
 the word tables' `REWRITES`). Each rewrite changes no meaning:
 
-- academic: the goal as a noun ("the objective is the transfer of X to P" -> "transfer X to P", "the
-  relocation / movement of" -> "move", "placements on R are prohibited" -> "nothing may be placed on R",
-  "an arbitrary empty region", "are each to be moved");
+- academic: the goal as a noun ("the objective is the transfer of X to P" -> "transfer of X to P", which
+  the cue reader reads; "the relocation / movement of" -> "move", "placements on R are prohibited" ->
+  "nothing may be placed on R", "an arbitrary empty region", "are each to be moved");
 - narrative: the arms as the subject of a placing verb ("the arms (will) carry the blocks ..."), "before /
   until you touch Y" (before Y is touched), "while you do it", "somewhere along the way" (at any time),
-  "..., while regions F, G and H remain empty" (a rule that holds meanwhile), "leaving X untouched";
+  "leaving X untouched" ("..., while regions F, G and H remain empty" is the cue reader's kept-empty place);
 - telegraphic and bulleted: a verbless step after "first" ("first yellow to region i then region g"),
-  "then region G", "three objects, three regions: G, H and I" (the regions' count is still checked),
+  "three objects, three regions: G, H and I" (the regions' count is still checked),
   the places before what may not go there ("F, G, H: nothing placed"), a pair before its exchange ("red
   and blue: swap places");
 - emphasis: "no exceptions";
@@ -41,6 +41,7 @@ from __future__ import annotations
 import re
 from collections.abc import Callable
 
+from nl2hltl2plan.language.content_words import phrase_list_pattern
 from nl2hltl2plan.language.handover_words import AFTER_ALL, GERUND_VERBS, NEGATED_GERUNDS, SWAP, THEN, VERB
 
 _BLOCK = r"(?:the\s+)?(?:red|blue|yellow)(?:\s+(?:block|one|cube))?"
@@ -103,7 +104,6 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     (r"\bstill\s+(?=(?:needs?|has|have|must)\s+(?:to\b|be\b))", " "),
     # academic: the goal as a noun
     (r"^\s*the\s+(?:objective|aim|purpose|goal)\s+is\s+(?:that\b|the\s+(?=\w+\s+of\b))", " "),
-    (r"\b(?:the\s+)?transfer\s+of\s+(?=(?:the|all|both|each|every)\b)", "transfer "),
     (r"\b(?:the\s+)?(?:relocation|movement)\s+of\s+(?=(?:the|all|both|each|every)\b)", "move "),
     (r"\ban?\s+arbitrary\s+(?=(?:empty|free|unoccupied)\s)", "any "),
     (r"\b(?:is|are)\s+(each|all|both)\s+to\s+be\b", r"must \1 be"),
@@ -125,15 +125,9 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     # (before "it" is read as a block)
     (r"\b(while\s+(?:you|we|they)\s+(?:are\s+)?(?:do|doing|perform|performing))\s+it\b", r"\1 this"),
     (r"\b(?:somewhere|at\s+some\s+point)\s+along\s+the\s+way\b", "at any time"),
-    (
-        rf",\s*while\s+(?=(?:regions?\s+)?{_LETTERS}\s+(?:remain|stay|are\s+kept)\s+"
-        r"(?:empty|clear|free|unoccupied|vacant)\b)",
-        ", ",
-    ),
     (rf"\b(?:leaving|leave|keeping|keep)\s+({_BLOCK})\s+untouched\b", r"\1 must not be touched"),
     # telegraphic and bulleted
     (rf"(^|,)\s*(first|then|next|finally)\s+(?={_BLOCK}\s+(?:to|on|onto|in|into)\s)", r"\1 \2 , "),
-    (r"\bthen\s+(?=regions?\s+[e-j]\b)", "then to "),
     (
         r"^\s*((?:the\s+)?(?:two|three|four|\d)\s+(?:blocks|objects|pillars|items|cubes|pieces))\s*,\s*"
         r"(?=(?:the\s+)?(?:two|three|four|\d)\s+(?:(?:goal|target)\s+)?regions\s*:)",
@@ -189,10 +183,14 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
         r"\s*[:,]?",
         "first ,",
     ),
-    # office English: "kindly" is "please" (dropped wherever it stands, so a step word still reaches its verb:
-    # "after all that is done, kindly put ..."), "do the needful" asks for what the rest says, and "itself" /
-    # "themselves" after a noun only stresses it
-    (r"\bkindly\b", "please"),
+    # a courtesy word (`courtesy.txt`: "kindly", "pls", "thx", "thank you") is "please" (dropped wherever it
+    # stands, so a step word still reaches its verb: "after all that is done, kindly put ...")
+    (rf"\b{phrase_list_pattern('courtesy.txt', 'word')}\b", "please"),
+    # a command's label: "Execute: transfer ...", "Then perform: ...", "Execute at any time: ..." (a verb with
+    # no object of its own before a colon asks for what follows)
+    (r"\b(?:execute|perform|carry\s+out)\s*(at\s+any\s+time\s*)?:", r"please \1 ,"),
+    # office English: "do the needful" asks for what the rest says, and "itself" / "themselves" after a noun
+    # only stresses it
     (r"(?:\band\s+)?\bdo\s+the\s+needful\b(?:\s+and\b)?", " "),
     (r"(?<=[a-z])\s+(?:itself|themselves)\b", " "),
     # a requirement's identifier before it ("R1:", "REQ-2:"): requirements are listed, not ordered

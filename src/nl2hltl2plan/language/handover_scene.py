@@ -21,9 +21,10 @@ NOUNS = r"(?:blocks|cubes|pillars|objects|items|pieces|ones)"
 COLOUR = r"(?:red|blue|yellow)"
 LETTER = r"\b[e-j]\b"
 PLACE_NOUN = r"(?:regions?|areas?|zones?|places?|spots?|positions?|cells?|sides?|locations?)"
-# words that carry no meaning here (articles, politeness, modal verbs, the agent)
+# words that carry no meaning here (articles, modal verbs, the agent; the courtesy words of `courtesy.txt` are
+# dropped before: `handover_phrases.normalise`)
 FILLER = frozenset(
-    "please plan a an the solution to for you we should shall can could would will must kindly now "
+    "plan a an the solution to for you we should shall can could would will must now "
     "also so it is are be that i want need make sure this task , ( ) : and however additionally moreover "
     "furthermore independently since".split()
 )

@@ -79,9 +79,8 @@ _FILLERS: tuple[tuple[str, str], ...] = (
     (r"\boh\b", " , "),
     (r",\s*like\s*(?=,)", " "),  # "the blocks, like, go ..."
     (rf"\b({VERB})\s+like\s+(?=(?:the|all|both|every|each|three|two)\b)", r"\1 "),  # "put like all three ..."
-    # unpunctuated (a voice transcript): "and you know only one ...", "... okay" at the end
+    # unpunctuated (a voice transcript): "and you know only one ..." (an "okay" at the end is a frame word)
     (r"\b(and|so|but)\s+you\s+know\b", r"\1"),
-    (r"(?<!\bis)(?<!\bare)(?<!\bbe)\s+(?:okay|ok|alright|yeah)\s*$", " "),
     (r"\b(?:got\s+it|you\s+see|understood|all\s+good)\s*$", " "),
     # a tag at the end of a clause ("..., right?", "..., okay") or interjections opening one
     (rf",\s*{_INTERJECTION}\s*$", " "),
@@ -96,7 +95,7 @@ _FILLERS: tuple[tuple[str, str], ...] = (
     # a hedge on the whole request
     (r"(^|,|\band\b)\s*(?:i|we)\s+(?:think|guess|suppose|reckon|believe)\s+(?:that\s+)?", r"\1 "),
     (r"^\s*(?:i|we)\s+(?:was|were)\s+(?:thinking|wondering)\s*,", " "),
-    (r",\s*(?:i|we)\s+(?:guess|think|suppose|reckon)\s*$", " "),
+    (r",\s*(?:i|we)\s+(?:guess|think|suppose|reckon|believe|would\s+say)\s*$", " "),
     (r"^\s*if\s+(?:possible|you\s+can|you\s+could)\s*,", " "),
     (r"\s*,?\s*\bif\s+(?:possible|you\s+can)\s*$", " "),
     # a polite tag that opens or closes a clause: "if you don't mind", "if that's okay", "if you would (be
@@ -104,9 +103,18 @@ _FILLERS: tuple[tuple[str, str], ...] = (
     (rf"(^|,)\s*{_POLITE_TAG}\s*(?=,|$)", r"\1 "),
     (rf"\b{phrase_list_pattern('courtesy.txt', 'wish')}\b", "please"),  # courtesy.txt's polite wishes
     (r"^\s*(?:i|we)\s+would\s+(?:probably\s+|maybe\s+)?have\s+you\s+", "please "),
+    # a hedge adverb in a clause with a verb ("should probably go", "ideally the red block gets placed ..."):
+    # it softens a request; in a fragment without one ("maybe the red block first?") it may ask or suggest,
+    # and before "not" it may negate what follows: left there, and refused by name
     (
-        rf"\b(?:probably|maybe|perhaps|ideally|preferably)\s+(?={_VERB_OR_RULE}|should\b|must\b|(?:you|we)\s)",
+        rf"\b(?:probably|maybe|perhaps|ideally|preferably)\b(?!\s+not\b)"
+        rf"(?=[^,;:?]*\b(?:{_VERB_OR_RULE}|go|goes|gets?|should|must|needs?|(?:is|are|be)\s+\w+ed)\b)",
         " ",
+    ),
+    # "(it's) best if X": X is wished for, as "it would be best if you could" is
+    (
+        r"(^|,|\band\b)\s*(?:(?:it\s+is|it\s+would\s+be)\s+)?best\s+(?:if|that)\s+(?=no\b|nothing\b|the\b|you\b)",
+        r"\1 ",
     ),
     (r"\btry\s+not\s+to\b", "do not"),
     (rf"\btry\s+to\s+(?={VERB}\b)", " "),
@@ -148,12 +156,10 @@ _NARRATION: tuple[tuple[str, str], ...] = (
         r"^\s*(?:in|for)\s+this\s+(?:task|exercise|run|one|activity|lesson|part|round|session|step)\s*,?\s*",
         " ",
     ),
-    (r"^\s*here\s*,?\s+(?=(?:the|all|we|you)\b)", " "),
     (
         rf"\bwhat\s+{_SUBJECT}{_WILL}\s+(?:be\s+)?do(?:ing)?\s+(?:here\s+|now\s+|today\s+|next\s+)?is\s+(?:to\s+)?",
         "please ",
     ),
-    (r"\bwhat\s+(i|we)\s+(?:want|need|would\s+like)\s+is\s*,?\s*(?:for\s+)?", r"\1 want "),
     (r"^\s*(?:so\s+)?(?:here\s+)?(?:we|you)\s+have\s+(?=(?:the\s+)?(?:three|two|\d)\s+)", "there are "),
     # "once you have done that": once that is done
     (

@@ -98,7 +98,7 @@ _RULE_LABEL = (
     r"(?:order|ordering|sequence|constraints?|rules?|requirements?|restrictions?|conditions?|caution|warning|"
     r"important|nb|notice|attention|reminder|"
     # a note's label: it asks for attention and says nothing itself ("Careful: ...", "Please note: ...")
-    r"(?:be\s+)?careful|(?:please\s+)?note|heads\s+up|remember|tip|fyi|ps)"
+    r"(?:be\s+)?careful|(?:please\s+)?note|heads\s+up|remember|do\s+not\s+forget|tip|fyi|ps)"
 )
 # an enumerated step: "Step 2", "Stage two", "Second step", "2)", "(2)", "(b)", "b)" (a list's letters a-d,
 # never a region's); the first of them, and the ones after it
@@ -112,6 +112,8 @@ LATER_STEP = (
     rf"(?:{_STEP_WORD}|point|thing)\b\s*[:,-]?|[2-9]\s*[):-]|\(\s*[2-9]\s*\)|\(\s*[b-d]\s*\)|[b-d]\s*\))"
 )
 STEP_NUMBER = rf"\s*(?:{FIRST_STEP}|{LATER_STEP}|{_STEP_WORD}\s+\w+\s*[:-]?)?\s*"
+# an intensifier before a word of necessity adds no meaning ("it is very important that ...")
+_INTENSIFIER = r"(?:(?:very|really|extremely|absolutely|vitally|critically|most|quite)\s+)?"
 
 # Rewrites applied to the lower-cased sentence before any phrase is read: each maps a variant onto the
 # form the patterns read and changes no meaning ("prior to" -> "before", "whilst" -> "while").
@@ -129,10 +131,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
     # before "it" is read as a block: "while you're at it" is the period of the goals
     (r"\bwhile\s+(?:you|we)\s+are\s+at\s+it\b", "meanwhile"),
     (r"\bamongst\b", "among"),
-    (r"\b(?:i|we)\s*would\s+like\s+(?:you\s+)?to\b", "please"),
-    (r"\b(?:could|can|would|will)\s+you\s+(?:please\s+)?", "please "),
     (r"\blet\s*'?\s*s\b|\blet\s+us\b|\bgo\s+ahead\s+and\b", "please"),
-    (r"\b(?:(?:at|in)\s+)?anytime\b|\bin\s+any\s+time\b", "at any time"),
     (
         r"\b(?:whenever\s+(?:you\s+(?:like|want|wish|please|can)|(?:is\s+|s\s+)?convenient|possible|(?:it\s+)?suits(?:\s+you)?)|"
         r"at\s+(?:any|whatever)\s+(?:point(?:\s+in\s+time)?|moment|stage)|(?:at\s+)?any\s+time\s+you\s+(?:like|want))\b",
@@ -162,9 +161,8 @@ REWRITES: tuple[tuple[str, str], ...] = (
     # a rule's label after a comma, in a compressed heading: "Goal: ..., constraint: red before blue"
     (rf",\s*{_RULE_LABEL}\s*:", ","),
     (rf"^({STEP_NUMBER})(?:objectives?|goals?|tasks?|aims?|missions?|instructions?)\s*:", r"\1 please"),
-    # casual openers and closers: "ok so ...", "... pls", "thanks"
+    # casual openers: "ok so ..." (a closer, "... pls", "thanks", is a courtesy word: `handover_registers`)
     (r"^\s*(?:(?:ok(?:ay)?|alright|right|so|well|hi|hello|hey)\b\s*,?\s*)+", " "),
-    (r"\b(?:pls|plz|thx|thanks|thank\s+you)\b", "please"),
     (r"\b(?:till|til)\b", "until"),
     (r"\b([a-z]+)\s+s\s+been\b", r"\1 has been"),  # "till red's been touched"
     (r"\b(?:any\s+)?(?:stuff|things)\b(?=\s+(?:on|in|onto|into)\b)", "anything"),
@@ -263,7 +261,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
         "please",
     ),
     (r"\bthe\s+(?:desired\s+)?(?:outcome|result|end\s+state)\s+(?:is|should\s+be)\s+that\b", " "),
-    (r"\bit\s+is\s+(?:necessary|required|essential|important)\s+to\b", "please"),
+    (rf"\bit\s+is\s+{_INTENSIFIER}(?:necessary|required|essential|important)\s+to\b", "please"),
     # a prohibition, before its "it" is read as a block: "it is forbidden to place any object on F"
     (r"\bit\s+is\s+(?:forbidden|prohibited|not\s+allowed|not\s+permitted)\s+to\b", "do not"),
     (r"\bno\s+placements?\s+(?=outside|on|in|onto|anywhere)", "nothing placed "),
@@ -314,7 +312,6 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\bone\s+after\s+(?:one|other)\b", "one after another"),
     (r"\bwont\b", "will not"),
     (r"\b(do|does|can|should|must|is|are)nt\b", r"\1 not"),  # "dont", "cant" without the apostrophe
-    (r"\b(any\s+time|whenever)\s+(?:is|are)\s+(?:ok|okay|fine)\b", r"\1"),
     # who asks: "the operator requires that the blocks be moved ..."; "please do the following:"
     (
         r"^\s*(?:the\s+)?(?:operator|user|client|customer|supervisor|lab|team|we|i)\s+(?:require|request|ask|want)s?\s+"
@@ -432,8 +429,8 @@ REWRITES: tuple[tuple[str, str], ...] = (
         " ",
     ),
     (
-        r"\bit\s+is\s+(?:required|necessary|important|essential|requested|desired|expected|mandatory|imperative)\s+"
-        r"that\b",
+        rf"\bit\s+is\s+{_INTENSIFIER}(?:required|necessary|important|essential|requested|desired|expected|mandatory|"
+        r"imperative)\s+that\b",
         " ",
     ),
     # "the goal is to have the blocks on ...": the state asked for, as a goal
@@ -449,8 +446,6 @@ REWRITES: tuple[tuple[str, str], ...] = (
     ),
     (r"^\s*(?:second(?:ly)?|third(?:ly)?|fourth(?:ly)?)\s*[:,]", "then "),
     (r"^\s*(first|then)\s*,?\s*\1\b\s*,?", r"\1 "),  # "2) Then move it ...": the step's "then" said twice
-    # a heading that gives the time of what follows: "Any time: red and blue blocks to any empty region"
-    (r"^\s*(?:at\s+)?any\s+time\s*:", "at any time ,"),
     (r"\b(finally|lastly|then|next|afterwards|first)\s*:", r"\1 ,"),  # "Finally: yellow -> G"
     # a reminder of a prohibition is the prohibition: "remember not to put ...", "be sure not to touch ..."
     (r"\b(?:remember|be\s+(?:sure|careful|certain)|make\s+sure|take\s+care)\s+not\s+to\b", "do not"),
@@ -476,11 +471,6 @@ REWRITES: tuple[tuple[str, str], ...] = (
         rf"(?:the\s+wrong|each\s+other\s*s?)\s+(?:places|spots|positions)\s*,\s*(?:so\s+)?({SWAP})\s+(?:them|their\s+positions)\b",
         r"\2 \1",
     ),
-    # "place no objects on regions F, G and H": nothing on them (every object here is a block or a pillar)
-    (
-        r"\b(put|place|drop|set|leave)\s+no\s+(?:objects?|blocks?|items?|things?|pillars?)\s+(?=(?:on|in|onto|into)\b)",
-        r"\1 nothing ",
-    ),
     # a count before a singular noun (non-native): "all three block", "move 3 block"
     (r"\b(two|three|four|both|all|[2-9])\s+(block|cube|pillar|object|piece|item)\b", r"\1 \2s"),
     # "after all these done" (non-native, without "are")
@@ -495,14 +485,6 @@ REWRITES: tuple[tuple[str, str], ...] = (
     # "please note the red block goes first": a rule, as "note:" is
     (r"^\s*(?:please\s+)?note\s+(?:that\s+)?(?=the\b)", " "),
     (r"\b(has|have|needs?)\s+to\s+get\s+to\b", r"\1 to go to"),  # "the yellow block has to get to ..."
-    # a prohibition that opens with its period: "2) During this period, place nothing on F" (after the
-    # step's "then"; after a comma and "and"; "in the meantime put nothing on F" without its comma); the
-    # period goes to the end, where the prohibition's period is read
-    (
-        rf"(^\s*(?:(?:first|then)\s*,?)?|,\s*(?:and\s+)?)\s*({PERIOD_WORDS})\s*,?\s*"
-        r"((?:(?:put|place|drop|set|leave)\s+(?:nothing|no)|nothing|do\s+not|never)\b[^:;]+)$",
-        r"\1 \3 \2",
-    ),
     # the person addressed as the subject: "After all these are done, you put the yellow block back ..."
     (r"(^|,|\bthen)\s*(?:you|we)\s+(?=(?:put|place|move|bring|take|transfer|carry|set)\b)", r"\1 "),
     # "each of regions H, I and J can only hold one block, so put the three blocks into them": the world's
@@ -579,10 +561,6 @@ NEGATED_GERUNDS = {
 REWRITES += tuple(
     (rf"\b(?:avoid|refrain\s+from)\s+{gerund}\b", f"do not {verb}")
     for gerund, verb in NEGATED_GERUNDS.items()
-)
-REWRITES += tuple(
-    (rf"\bplease\s+mind\s+{gerund}\b", f"please {verb}")  # "would you mind moving ..." (after "would you")
-    for gerund, verb in (GERUND_VERBS | NEGATED_GERUNDS).items()
 )
 REWRITES += tuple(
     # a negated modal before a gerund (non-native): "the arm cannot touching the blue block"
