@@ -12,8 +12,10 @@ from nl2hltl2plan.language.grammar.order_phrases import (
     clause_refs,
     closing_orders,
     command_after_state,
+    leading_connective,
     not_before_as_after,
     not_one_reference,
+    one_last_step,
     subordinate_first,
 )
 from nl2hltl2plan.language.grammar.phrases import match_prep, parse_np, tokens
@@ -117,7 +119,11 @@ def strip_leading(body: str) -> tuple[list[tuple[str, str]], str]:
                 body = body[m.end() :]
                 changed = True
                 break
-    return markers, body
+        if not changed and (said := leading_connective(body)) is not None:  # a phrase no table names
+            markers.append(said[:2])
+            body = body[said[2] :]
+            changed = True
+    return one_last_step(markers), body
 
 
 def strip_trailing(body: str) -> tuple[list[tuple[str, str]], str]:

@@ -512,8 +512,8 @@ LEADING: list[tuple[re.Pattern[str], str]] = [
     (re.compile(r"^(?:your|the)\s+first\s+(?:job|task|chore|errand)\s*:\s*", _F), ""),
 ]
 _FREE_T = (
-    r"(?:at\s+any\s+time|at\s+whatever\s+time|in\s+any\s+order|any\s+order|in\s+any\s+sequence|anytime|any\s+time|"
-    r"whenever(?:\s+you\s+like)?|"
+    rf"(?:at\s+any\s+time|at\s+whatever\s+time|in\s+any\s+order|any\s+order|in\s+any\s+sequence|anytime|any\s+time|"
+    rf"{_WHENEVER}|"
     r"in\s+whatever\s+order(?:\s+you\s+(?:like|want|prefer))?|whatever\s+order\s+(?:works|is\s+fine)|in\s+no\s+(?:particular|specific|set)\s+order|"
     r"(?:the\s+)?order\s+is\s+(?:up\s+to\s+you|your\s+call|yours\s+to\s+choose)|in\s+parallel|simultaneously|concurrently|"
     r"independently|at\s+your\s+(?:convenience|leisure))"
