@@ -218,3 +218,31 @@ def one_last_step(markers: list[tuple[str, str]]) -> list[tuple[str, str]]:
     if G.FINALLY in kinds and G.THEN in kinds and kinds.index(G.THEN) < kinds.index(G.FINALLY):
         return [(kind, ref) for kind, ref in markers if kind != G.THEN]
     return markers
+
+
+# "With the bat done, Y" / "Whenever the vase is sorted, Y" / "With the mug out of the way, Y": a thing's
+# task said to be finished opens a reference, as "Once the bat is done, Y" does (the words that say a step
+# is finished: done, sorted, handled, taken care of ...)
+_FINISHED = (
+    r"(?:done|finished|complete|completed|sorted(?:\s+out)?|handled|settled|taken\s+care\s+of|dealt\s+with|"
+    r"out\s+of\s+the\s+way|squared\s+away|in\s+place)"
+)
+_WITH_DONE = re.compile(
+    rf"(?:(?<=^)|(?<=[.;!?]\s))(?P<lead>with|whenever)\s+(?P<np>(?:the|your|that|this)\s+[a-z]+"
+    r"(?:\s+(?!(?:is|are|has|have|gets?)\b)[a-z]+)?)\s+"
+    rf"(?:(?P<verb>is|are|has\s+been|have\s+been|gets|get)\s+)?{_FINISHED}\s*,\s*",
+    re.I,
+)
+
+
+def finished_thing(text: str) -> str:
+    """ "With the bat done, Y" / "Whenever the vase is sorted, Y" -> "Once the bat is done, Y" ("whenever"
+    with no state is a freedom, `word_tables._WHENEVER`; "with the bat" alone is no reference)."""
+
+    def once(m: re.Match[str]) -> str:
+        if m["lead"].lower() == "with" and m["verb"]:  # "with the mug is done": not the absolute form
+            return m[0]
+        plural = (m["verb"] or "").lower() in {"are", "have been", "get"}
+        return f"{'O' if m['lead'][0].isupper() else 'o'}nce {m['np']} {'are' if plural else 'is'} done, "
+
+    return _WITH_DONE.sub(once, text)

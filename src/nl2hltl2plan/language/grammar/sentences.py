@@ -12,6 +12,7 @@ from nl2hltl2plan.language.grammar.order_phrases import (
     clause_refs,
     closing_orders,
     command_after_state,
+    finished_thing,
     leading_connective,
     not_before_as_after,
     not_one_reference,
@@ -449,7 +450,7 @@ def normalize(text: str) -> str:
     text = after_the_step(text)
     text = _THEN_INSIDE.sub(", then ", text)
     text = _DONE_WITH.sub(lambda m: _as_cased("after ", m[1]), text)
-    text = closing_orders(subordinate_first(text))
+    text = closing_orders(subordinate_first(finished_thing(text)))
     return supply_put(re.sub(r"\s+", " ", text).strip())
 
 
