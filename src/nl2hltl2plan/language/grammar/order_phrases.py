@@ -9,6 +9,7 @@ import re
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.phrases import tokens
 from nl2hltl2plan.language.grounding import sentence_start
+from nl2hltl2plan.language.order_words import WITH_DONE
 from nl2hltl2plan.language.statements import REFERENCE
 
 # "Y before X, but after Z" / "Y after X and before Z": a second connective after the first reference opens
@@ -220,21 +221,6 @@ def one_last_step(markers: list[tuple[str, str]]) -> list[tuple[str, str]]:
     return markers
 
 
-# "With the bat done, Y" / "Whenever the vase is sorted, Y" / "With the mug out of the way, Y": a thing's
-# task said to be finished opens a reference, as "Once the bat is done, Y" does (the words that say a step
-# is finished: done, sorted, handled, taken care of ...)
-_FINISHED = (
-    r"(?:done|finished|complete|completed|sorted(?:\s+out)?|handled|settled|taken\s+care\s+of|dealt\s+with|"
-    r"out\s+of\s+the\s+way|squared\s+away|in\s+place)"
-)
-_WITH_DONE = re.compile(
-    rf"(?:(?<=^)|(?<=[.;!?]\s))(?P<lead>with|whenever)\s+(?P<np>(?:the|your|that|this)\s+[a-z]+"
-    r"(?:\s+(?!(?:is|are|has|have|gets?)\b)[a-z]+)?)\s+"
-    rf"(?:(?P<verb>is|are|has\s+been|have\s+been|gets|get)\s+)?{_FINISHED}\s*,\s*",
-    re.I,
-)
-
-
 def finished_thing(text: str) -> str:
     """ "With the bat done, Y" / "Whenever the vase is sorted, Y" -> "Once the bat is done, Y" ("whenever"
     with no state is a freedom, `word_tables._WHENEVER`; "with the bat" alone is no reference)."""
@@ -245,4 +231,4 @@ def finished_thing(text: str) -> str:
         plural = (m["verb"] or "").lower() in {"are", "have been", "get"}
         return f"{'O' if m['lead'][0].isupper() else 'o'}nce {m['np']} {'are' if plural else 'is'} done, "
 
-    return _WITH_DONE.sub(once, text)
+    return WITH_DONE.sub(once, text)
