@@ -443,7 +443,7 @@ def normalize(text: str) -> str:
     text = _USE_LAMP.sub(lambda m: f"{m['verb']} {m['obj']} by the light of the {m['lamp']}", text)
     text = _FOLLOWED_TO.sub(r" and finally \1", text)
     text = _LAST_ADVERB.sub(r"\1lastly ", text)
-    text = re.sub(r";\s+(?=and\s)", ", ", text)  # "Next, D; and E": E goes with D, a sentence goes on
+    text = re.sub(r";\s+(?=(?:and|also|plus)\s)", ", ", text)  # "Next, D; and E" / "D; also E": E goes with D
     text = _ONE_AFTER_THE_OTHER.sub(", in that order", text)
     text = treated_before(text)  # before `_DONE_GERUND`: "when done heating it" is no reference
     text = _DONE_GERUND.sub(r"\1 ", text)
