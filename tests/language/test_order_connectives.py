@@ -84,3 +84,13 @@ def test_finished_words_mark_only_the_state_of_a_named_thing():
     text = "Put the vase in the safe. Whenever the vase is sorted, sort the mail."
     assert finished_words(text) == {text.index("sorted")}
     assert finished_words("Sort the mail whenever you like.") == set()
+
+
+@pytest.mark.parametrize("lead", ["Ahead of that", "Before that"])
+@pytest.mark.parametrize("then", ["Then", "Having done that,", "After that,"])
+def test_then_after_a_step_put_before_continues_the_time_line(lead, then):
+    """ "X. Ahead of that, Y. Then Z": Y, X, Z (Z after X too, not only after Y)."""
+    tasks, order, unread = read(
+        f"Put the mug in the sink. {lead}, put the egg in the microwave. {then} put the apple in the fridge."
+    )
+    assert len(tasks) == 3 and order == {(EGG, MUG), (MUG, APPLE), (EGG, APPLE)} and not unread
