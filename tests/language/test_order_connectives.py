@@ -94,3 +94,23 @@ def test_then_after_a_step_put_before_continues_the_time_line(lead, then):
         f"Put the mug in the sink. {lead}, put the egg in the microwave. {then} put the apple in the fridge."
     )
     assert len(tasks) == 3 and order == {(EGG, MUG), (MUG, APPLE), (EGG, APPLE)} and not unread
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Put the mug in the sink. The moment the mug is in the sink, put the apple in the fridge.",
+        "Put the apple in the fridge the instant you have put the mug in the sink.",
+    ],
+)
+def test_the_moment_a_clause_holds_is_a_reference(text):
+    tasks, order, unread = read(text)
+    assert sorted(tasks) == sorted([MUG, APPLE]) and order == {(MUG, APPLE)} and not unread
+
+
+def test_at_the_moment_is_no_reference():
+    """Near miss: "at the moment" (now) and "the second mug" name no time."""
+    from nl2hltl2plan.language.grammar.order_phrases import the_moment
+
+    text = "At the moment the mug is dirty. Put the second mug in the sink, wait a minute."
+    assert the_moment(text) == text

@@ -232,3 +232,17 @@ def finished_thing(text: str) -> str:
         return f"{'O' if m['lead'][0].isupper() else 'o'}nce {m['np']} {'are' if plural else 'is'} done, "
 
     return WITH_DONE.sub(once, text)
+
+
+# "The moment the apple is on the table, Y" / "Y the instant you've put the mug away": "as soon as", a
+# reference ("once"); only where a clause follows (a subject), so "at the moment" / "wait a minute" stay
+_THE_MOMENT = re.compile(
+    r"(?:(?<=^)|(?<=\s))(?<!at\s)(?<!a\s)(?P<the>the)\s+(?:very\s+)?(?:moment|instant|minute|second)\s+"
+    r"(?=(?:the|your|you|you've|you're|it|it's|they|they're|we|i|that|this|both|all|each|every)\s)",
+    re.I,
+)
+
+
+def the_moment(text: str) -> str:
+    """ "The moment the apple is on the table, Y" -> "Once the apple is on the table, Y"."""
+    return _THE_MOMENT.sub(lambda m: "Once " if m["the"][0] == "T" else "once ", text)

@@ -18,6 +18,7 @@ from nl2hltl2plan.language.grammar.order_phrases import (
     not_one_reference,
     one_last_step,
     subordinate_first,
+    the_moment,
 )
 from nl2hltl2plan.language.grammar.phrases import match_prep, parse_np, tokens
 from nl2hltl2plan.language.grammar.subordinate import treated_before, treatment_of_it
@@ -417,7 +418,7 @@ def normalize(text: str) -> str:
     text = _NUMBERED_PAIR.sub(_two_of, text)
     text = re.sub(r"\s*\([^)]*\)", "", text)  # parenthetical remarks: "(where the red block is now)"
     text = without_connective_to(text)
-    text = _AS_SOON_AS.sub(lambda m: _as_cased("once", m[0]), text)
+    text = _AS_SOON_AS.sub(lambda m: _as_cased("once", m[0]), the_moment(text))
     text = _CONNECTIVE_YOUVE.sub(r"\1 you have", text)
     text = _BOTH_AFTER_LIST.sub(r"\1 ", _BOTH_BEFORE_LIST.sub("", text))
     text = _ALL_OF_THEM_BEFORE.sub(lambda m: " " if _lists_before(text, m.start()) else m[0], text)
