@@ -45,7 +45,7 @@ from nl2hltl2plan.language.grounding import (
 )
 from nl2hltl2plan.language.landmarks import NEAR_WORDS, carried, landmark_destinations, pair_start
 from nl2hltl2plan.language.negations import NO_CONSTRAINT, about_order, unforbidden_verb
-from nl2hltl2plan.language.order_words import check_cycles, misordered, unordered_steps
+from nl2hltl2plan.language.order_words import check_cycles, finished_words, misordered, unordered_steps
 from nl2hltl2plan.language.parse_usage import IMPLIED_TYPES, ParseUsage
 from nl2hltl2plan.language.statements import asked_before, says_where
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, ConstraintSpec
@@ -425,8 +425,9 @@ def _words(
     """Verbs, counts, negations and unsupported nouns outside the lexicon's mentions."""
     out: list[Unread] = []
     words = [w for w, _, _ in toks]
+    finished = finished_words(instruction)  # "whenever the vase is sorted,": a step done, no request
     for i, w in enumerate(words):
-        if i in in_mention:
+        if i in in_mention or toks[i][1] in finished:
             continue
         cats = categories(w)
         if not cats and not w.isdigit():

@@ -24,6 +24,27 @@ from nl2hltl2plan.language.grounding import Mention, camel_words
 from nl2hltl2plan.language.parse_usage import ParseUsage
 from nl2hltl2plan.language.task_specs import transitive_closure
 
+# "With the bat done, Y" / "Whenever the vase is sorted, Y" / "With the mug out of the way, Y": a thing's
+# task said to be finished opens a reference, as "Once the bat is done, Y" does (the words that say a step
+# is finished: done, sorted, handled, taken care of ...; `grammar.order_phrases.finished_thing` reads it)
+_FINISHED = (
+    r"(?:done|finished|complete|completed|sorted(?:\s+out)?|handled|settled|taken\s+care\s+of|dealt\s+with|"
+    r"out\s+of\s+the\s+way|squared\s+away|in\s+place)"
+)
+WITH_DONE = re.compile(
+    rf"(?:(?<=^)|(?<=[.;!?]\s))(?P<lead>with|whenever)\s+(?P<np>(?:the|your|that|this)\s+[a-z]+"
+    r"(?:\s+(?!(?:is|are|has|have|gets?)\b)[a-z]+)?)\s+"
+    rf"(?:(?P<verb>is|are|has\s+been|have\s+been|gets|get)\s+)?(?P<done>{_FINISHED})\s*,\s*",
+    re.I,
+)
+
+
+def finished_words(text: str) -> set[int]:
+    """Where the words that say a thing's task is finished begin ("sorted" of "whenever the vase is sorted,"):
+    a state of the step, not a request to sort it."""
+    return {m.start("done") for m in WITH_DONE.finditer(text)}
+
+
 # a phrase that frees the order of some pair of tasks ("in either order", "the order is up to you",
 # "in no particular order"; content_words.free_order_phrase): "then B - either order is ok" frees nothing
 # when the parse orders every pair (the phrase was not read); "at any time" / "meanwhile" free one task from

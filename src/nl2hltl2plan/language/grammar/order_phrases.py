@@ -9,6 +9,7 @@ import re
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.phrases import tokens
 from nl2hltl2plan.language.grounding import sentence_start
+from nl2hltl2plan.language.order_words import WITH_DONE
 from nl2hltl2plan.language.statements import REFERENCE
 
 # "Y before X, but after Z" / "Y after X and before Z": a second connective after the first reference opens
@@ -153,3 +154,95 @@ def closing_orders(text: str) -> str:
     """ "..., the egg before the apple" / "..., but do the egg first" -> a sentence of its own."""
     text = _CLOSING_RELATION.sub(lambda m: f". {m['a']} should be done {m['rel']} {m['b']}", text)
     return _CLOSING_FIRST.sub(lambda m: f". {m['s']}", text)
+
+
+# A leading connective no table names ("From there,", "Up next,", "At a moment of your choosing,", "With
+# all of the above out of the way,"): read by what its words say. Each word is either a signal of one
+# order (a sequence, a freedom, a last or first step, a reference to everything before, a step done) or a
+# word that says none (a preposition, an article, "point", "way"). A phrase with a word of neither kind,
+# or with signals of two orders, is not read (its words stay unread, and check 1 refuses them).
+_SIGNALS = {
+    "seq": {"next", "there", "here", "thereafter", "afterwards", "afterward", "subsequently", "later", "then",
+            "after", "following", "onwards", "onward"},
+    "free": {"any", "anytime", "whenever", "whatever", "whichever", "choosing", "choice", "convenience",
+             "leisure", "regardless", "irrespective", "meanwhile", "simultaneously", "concurrently",
+             "parallel", "free", "freely"},
+    "last": {"final", "finally", "last", "lastly", "end", "ending", "conclusion", "close", "closing"},
+    "first": {"first", "firstly", "initially", "beginning", "start", "outset"},
+    "all": {"all", "everything", "above", "listed", "mentioned", "previous", "preceding", "earlier", "rest",
+            "both", "else"},
+    "done": {"done", "finished", "complete", "completed", "over", "way", "handled", "sorted", "settled",
+             "dealt", "behind", "through", "care"},
+}
+_NEUTRAL = frozenset(
+    "from up with of the that that's this it it's is are has have been be out on at a an to your you "
+    "you're you've we in by for point moment time stage step steps thing things task tasks one ones order "
+    "sequence just right now so only once when as and taken matter no like want wish suits prefer "
+    "choose".split()
+)
+_LEADING_PHRASE = re.compile(r"^(?P<phrase>[a-z' ]{2,70}?)\s*,\s*(?=[a-z])", re.I)
+
+
+def leading_connective(body: str) -> tuple[str, str, int] | None:
+    """The order a leading phrase says, read by its words: (kind, reference, where the clause starts)."""
+    m = _LEADING_PHRASE.match(body)
+    if m is None:
+        return None
+    words = m["phrase"].lower().split()
+    said = {kind for w in words for kind, signal in _SIGNALS.items() if w in signal}
+    if len(words) > 9 or not said or any(w not in _NEUTRAL and not any(w in s for s in _SIGNALS.values())
+                                         for w in words):
+        return None
+    kind = _connective_kind(said, words)
+    return (kind, m["phrase"] if kind == G.AFTER_ALL else "", m.end()) if kind else None
+
+
+def _connective_kind(said: set[str], words: list[str]) -> str | None:
+    """One order from the signals, or None where they say two ("then, at any time")."""
+    if said == {"free"}:
+        return G.FREE
+    if said == {"last"}:
+        return G.FINALLY
+    if said == {"first"}:
+        return G.FIRST
+    if "all" in said and said <= {"all", "done", "seq"} and ("done" in said or "after" in words):
+        return G.AFTER_ALL  # "with all of the above out of the way", "after everything listed"
+    if said <= {"seq", "done"} and ("seq" in said or {"that", "this", "that's", "it"} & set(words)):
+        return G.THEN  # "from there", "up next", "with that out of the way"
+    return None
+
+
+def one_last_step(markers: list[tuple[str, str]]) -> list[tuple[str, str]]:
+    """ "Then, lastly, Y" / "And then finally Y": one connective, the last step (after every task not left
+    free, ANNOTATION_GUIDE.md), not also "after the clause before" (which may be a free one)."""
+    kinds = [kind for kind, _ in markers]
+    if G.FINALLY in kinds and G.THEN in kinds and kinds.index(G.THEN) < kinds.index(G.FINALLY):
+        return [(kind, ref) for kind, ref in markers if kind != G.THEN]
+    return markers
+
+
+def finished_thing(text: str) -> str:
+    """ "With the bat done, Y" / "Whenever the vase is sorted, Y" -> "Once the bat is done, Y" ("whenever"
+    with no state is a freedom, `word_tables._WHENEVER`; "with the bat" alone is no reference)."""
+
+    def once(m: re.Match[str]) -> str:
+        if m["lead"].lower() == "with" and m["verb"]:  # "with the mug is done": not the absolute form
+            return m[0]
+        plural = (m["verb"] or "").lower() in {"are", "have been", "get"}
+        return f"{'O' if m['lead'][0].isupper() else 'o'}nce {m['np']} {'are' if plural else 'is'} done, "
+
+    return WITH_DONE.sub(once, text)
+
+
+# "The moment the apple is on the table, Y" / "Y the instant you've put the mug away": "as soon as", a
+# reference ("once"); only where a clause follows (a subject), so "at the moment" / "wait a minute" stay
+_THE_MOMENT = re.compile(
+    r"(?:(?<=^)|(?<=\s))(?<!at\s)(?<!a\s)(?P<the>the)\s+(?:very\s+)?(?:moment|instant|minute|second)\s+"
+    r"(?=(?:the|your|you|you've|you're|it|it's|they|they're|we|i|that|this|both|all|each|every)\s)",
+    re.I,
+)
+
+
+def the_moment(text: str) -> str:
+    """ "The moment the apple is on the table, Y" -> "Once the apple is on the table, Y"."""
+    return _THE_MOMENT.sub(lambda m: "Once " if m["the"][0] == "T" else "once ", text)

@@ -73,7 +73,8 @@ def _marker_edges(
     for kind, ref in u.markers:
         if kind == G.THEN and prev is not None:
             after = [] if prev.sentence == u.sentence else _last_step(units, prev.sentence, free, edges, text)
-            edges.update((a, b2) for a in after or prev.tasks for b2 in u.tasks)
+            after = (after or prev.tasks) + _put_before(units, prev)
+            edges.update((a, b2) for a in after for b2 in u.tasks)
         elif kind == G.FINALLY:
             # "..., and finally Y" inside a sentence: after its sibling clauses too
             scope = list(range(min(u.tasks))) if ref == IN_SENTENCE else others if ref == OF_ALL else earlier
@@ -171,6 +172,15 @@ _FREE_WORD = re.compile(
     r"independently)\b",
     re.I,
 )
+
+
+def _put_before(units: list[Unit], prev: Unit) -> list[int]:
+    """ "X. Ahead of that, Y. Then Z": Z continues the time line (Y, X, Z), so it comes after X too, the
+    clause that Y was put before; nothing when `prev` is not a "before that" sentence."""
+    if not any(kind == G.BEFORE_PREV for kind, _ in prev.markers):
+        return []
+    outer = [v for v in units[: units.index(prev)] if v.sentence != prev.sentence]
+    return outer[-1].tasks if outer else []
 
 
 def _last_step(units: list[Unit], sentence: int, free: set[int], edges: Edges, text: str) -> list[int]:

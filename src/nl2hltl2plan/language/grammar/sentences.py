@@ -12,9 +12,13 @@ from nl2hltl2plan.language.grammar.order_phrases import (
     clause_refs,
     closing_orders,
     command_after_state,
+    finished_thing,
+    leading_connective,
     not_before_as_after,
     not_one_reference,
+    one_last_step,
     subordinate_first,
+    the_moment,
 )
 from nl2hltl2plan.language.grammar.phrases import match_prep, parse_np, tokens
 from nl2hltl2plan.language.grammar.subordinate import treated_before, treatment_of_it
@@ -117,7 +121,11 @@ def strip_leading(body: str) -> tuple[list[tuple[str, str]], str]:
                 body = body[m.end() :]
                 changed = True
                 break
-    return markers, body
+        if not changed and (said := leading_connective(body)) is not None:  # a phrase no table names
+            markers.append(said[:2])
+            body = body[said[2] :]
+            changed = True
+    return one_last_step(markers), body
 
 
 def strip_trailing(body: str) -> tuple[list[tuple[str, str]], str]:
@@ -422,7 +430,7 @@ def normalize(text: str) -> str:
     text = _NUMBERED_PAIR.sub(_two_of, text)
     text = re.sub(r"\s*\([^)]*\)", "", text)  # parenthetical remarks: "(where the red block is now)"
     text = without_connective_to(text)
-    text = _AS_SOON_AS.sub(lambda m: _as_cased("once", m[0]), text)
+    text = _AS_SOON_AS.sub(lambda m: _as_cased("once", m[0]), the_moment(text))
     text = _CONNECTIVE_YOUVE.sub(r"\1 you have", text)
     text = _BOTH_AFTER_LIST.sub(r"\1 ", _BOTH_BEFORE_LIST.sub("", text))
     text = _ALL_OF_THEM_BEFORE.sub(lambda m: " " if _lists_before(text, m.start()) else m[0], text)
@@ -450,14 +458,14 @@ def normalize(text: str) -> str:
     text = _USE_LAMP.sub(lambda m: f"{m['verb']} {m['obj']} by the light of the {m['lamp']}", text)
     text = _FOLLOWED_TO.sub(r" and finally \1", text)
     text = _LAST_ADVERB.sub(r"\1lastly ", text)
-    text = re.sub(r";\s+(?=and\s)", ", ", text)  # "Next, D; and E": E goes with D, a sentence goes on
+    text = re.sub(r";\s+(?=(?:and|also|plus)\s)", ", ", text)  # "Next, D; and E" / "D; also E": E goes with D
     text = _ONE_AFTER_THE_OTHER.sub(", in that order", text)
     text = treated_before(text)  # before `_DONE_GERUND`: "when done heating it" is no reference
     text = _DONE_GERUND.sub(r"\1 ", text)
     text = after_the_step(text)
     text = _THEN_INSIDE.sub(", then ", text)
     text = _DONE_WITH.sub(lambda m: _as_cased("after ", m[1]), text)
-    text = closing_orders(subordinate_first(text))
+    text = closing_orders(subordinate_first(finished_thing(text)))
     return supply_put(re.sub(r"\s+", " ", text).strip())
 
 

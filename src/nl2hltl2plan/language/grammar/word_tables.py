@@ -434,7 +434,7 @@ AFTER_OPENER = (
 LEADING: list[tuple[re.Pattern[str], str]] = [
     (
         re.compile(
-            r"^(?:and\s+)?(?:then|next|afterwards?|after\s+that|after\s+this|after\s+which|subsequently|"
+            r"^(?:and\s+)?(?:then|next|afterwards?|after\s+that(?!')|after\s+this(?!')|after\s+which|subsequently|"
             r"later(?:\s+on)?|following\s+(?:that|this)|thereafter|followed\s+by|"
             r"(?:with\s+)?(?:that|this)\s+(?:done|finished|completed|out\s+of\s+the\s+way)|"
             r"having\s+(?:done|finished|completed)\s+(?:that|this|so)|"
@@ -512,8 +512,8 @@ LEADING: list[tuple[re.Pattern[str], str]] = [
     (re.compile(r"^(?:your|the)\s+first\s+(?:job|task|chore|errand)\s*:\s*", _F), ""),
 ]
 _FREE_T = (
-    r"(?:at\s+any\s+time|at\s+whatever\s+time|in\s+any\s+order|any\s+order|in\s+any\s+sequence|anytime|any\s+time|"
-    r"whenever(?:\s+you\s+like)?|"
+    rf"(?:at\s+any\s+time|at\s+whatever\s+time|in\s+any\s+order|any\s+order|in\s+any\s+sequence|anytime|any\s+time|"
+    rf"{_WHENEVER}|"
     r"in\s+whatever\s+order(?:\s+you\s+(?:like|want|prefer))?|whatever\s+order\s+(?:works|is\s+fine)|in\s+no\s+(?:particular|specific|set)\s+order|"
     r"(?:the\s+)?order\s+is\s+(?:up\s+to\s+you|your\s+call|yours\s+to\s+choose)|in\s+parallel|simultaneously|concurrently|"
     r"independently|at\s+your\s+(?:convenience|leisure))"
@@ -572,7 +572,8 @@ GENERIC_REF = re.compile(
     r"(?:(?:two|three|four|few|couple\s+of)\s+)?"
     rf"(?P<noun>{_TASK_NOUN})(?:\s+(?:above|before|so\s+far|mentioned|listed))?"
     r"(?:\s+(?:is|are|have\s+been|has\s+been)\s+(?:done|finished|complete|completed|over))?$"
-    r"|^(?:everything|all)(?:\s+(?:else|of\s+(?:that|this|those|these|the\s+above)|above|that|this|before|so\s+far))?"
+    r"|^(?:everything|all)(?:\s+(?:else|of\s+(?:that|this|those|these|the\s+above)|above|that|this|before|so\s+far|"
+    r"(?:listed|mentioned|named|stated|given)(?:\s+(?:above|before|so\s+far))?))?"
     r"(?:\s+(?:is|are|has\s+been)\s+(?:done|finished|complete|completed|over))?$"
     r"|^the\s+(?:rest|above)$",
     _F,
