@@ -175,16 +175,12 @@ class DraftBuilder:
             for it in fr.items:
                 if it.obj is not None and not any(p in G.DEST_PREPS for p, _ in it.pps):
                     it.pps.extend(st.context)
-        # multi-object clause items sharing a destination stated after them: "the apple and the egg in the
-        # fridge, and the mug in the sink" puts the apple in the fridge, the next place said, not the last
-        if len(fr.items) > 1:
-            shared: list[tuple[str, NP]] = []
-            for it in reversed(fr.items):
+        if len(fr.items) > 1:  # "the apple and the egg in the fridge, and the mug in the sink": next place
+            shared = [(p, np) for p, np in fr.items[-1].pps if p in G.DEST_PREPS]
+            for it in reversed(fr.items[:-1]):
                 own = [(p, np) for p, np in it.pps if p in G.DEST_PREPS]
-                if own:
-                    shared = own
-                elif it is not fr.items[-1]:
-                    it.pps.extend(shared)
+                shared = own or shared
+                it.pps.extend([] if own else shared)
             fr.items = self._without_slicing_knife(fr)
             fr.items = merge_items(fr.items, self.b)
 
