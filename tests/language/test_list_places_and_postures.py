@@ -1,4 +1,4 @@
-"""The lead's held-out sets of session 16: three readings found wrong or refused.
+"""The lead's held-out sets and probes of session 16: readings found wrong or refused.
 
 - "put the apple and the egg in the fridge, and the mug in the sink" put the apple in the sink (an item
   without a place took the list's last place, not the next one said), reported solved;
@@ -75,3 +75,17 @@ def test_a_freedom_within_each_group_leaves_the_order_between_groups_to_be_read(
     except HTTError:
         return
     assert res.partial and any("before" in u for u in res.unparsed), [t.summary() for t in res.tasks]
+
+
+# the lead's probes of session 16: "the salt and pepper shakers" was a salt shaker and two pepper shakers
+@needs_data
+@BOTH
+def test_a_plural_head_shared_by_a_list_names_one_of_each(backend):
+    assert _summaries("put the salt and pepper shakers in a cabinet", "FloorPlan14", backend) == [
+        "place SaltShaker -> Cabinet",
+        "place PepperShaker -> Cabinet",
+    ]
+    assert _summaries("put the salt shaker and the pepper shakers in a cabinet", "FloorPlan14", backend) == [
+        "place SaltShaker -> Cabinet",
+        "place_two 2x PepperShaker -> Cabinet",
+    ]

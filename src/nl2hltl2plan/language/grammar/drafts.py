@@ -25,7 +25,7 @@ from nl2hltl2plan.language.grammar.frames import (
     two_places,
     two_places_unread,
 )
-from nl2hltl2plan.language.grammar.phrases import NP, tokens
+from nl2hltl2plan.language.grammar.phrases import NP, one_of_each_under_a_shared_plural, tokens
 from nl2hltl2plan.language.grammar.sentences import Sentence
 from nl2hltl2plan.language.grammar.subordinate import treatment_after
 from nl2hltl2plan.language.grounding import Grounder, camel_words
@@ -181,6 +181,7 @@ class DraftBuilder:
                 own = [(p, np) for p, np in it.pps if p in G.DEST_PREPS]
                 shared = own or shared
                 it.pps.extend([] if own else shared)
+            one_of_each_under_a_shared_plural([it.obj for it in fr.items])
             fr.items = self._without_slicing_knife(fr)
             fr.items = merge_items(fr.items, self.b)
 

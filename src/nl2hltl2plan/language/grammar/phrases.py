@@ -6,7 +6,14 @@ import re
 from dataclasses import dataclass, field
 
 from nl2hltl2plan.language.grammar import word_tables as G
-from nl2hltl2plan.language.grounding import LAMPS, MOVABLE_RECEPTACLES, RECEPTACLES, Entry, find_mentions
+from nl2hltl2plan.language.grounding import (
+    LAMPS,
+    MOVABLE_RECEPTACLES,
+    RECEPTACLES,
+    Entry,
+    camel_words,
+    find_mentions,
+)
 
 _WORD = re.compile(r"[A-Za-z0-9]+(?:'[A-Za-z]+)?|,")
 DETERMINERS = {
@@ -249,3 +256,16 @@ def match_prep(words: list[str], i: int) -> tuple[str, int] | None:
         if tuple(words[i : i + len(p)]) == p:
             return " ".join(p), len(p)
     return None
+
+
+def one_of_each_under_a_shared_plural(nps: list[NP | None]) -> None:
+    """ "the salt and pepper shakers": a plural whose head noun the thing listed before it leaves out names
+    one of each (a salt shaker and a pepper shaker), not two pepper shakers."""
+    for prev, np in zip(nps, nps[1:], strict=False):
+        if prev is None or np is None or prev.entry is None or np.entry is None or not np.plural:
+            continue
+        head = camel_words(np.entry.canonical).lower().split()[-1]  # "shaker"
+        said = camel_words(prev.entry.canonical).lower()
+        if said != camel_words(np.entry.canonical).lower() and said.endswith(f" {head}"):
+            if head not in prev.text.lower() and np.count == 2:
+                np.count = 1
