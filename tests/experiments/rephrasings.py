@@ -927,3 +927,52 @@ DEV3_H87: dict[int, list[str]] = {
         "Load the yellow plate with the green apple and the orange; once it's loaded, load the blue plate "
         "with the carrot and the red apple."],
 }
+
+# Issue 28 (h90): held-out rephrasings written and committed before any h90 rule, in voices no batch above
+# uses (a telegram, a text with "pls"/"thx", a carnival barker, an inverted "on X, the Y", a spy briefing, a
+# recipe card, a sports commentator, a teacher's homework, a self-answered question list, teen slang, a
+# grandmother's letter, a news headline, a programmer's mapping, a station announcement, a hurried
+# "before I head out", a project plan's phases, a video game's levels, a house rule, a "must be ... before
+# ... touches", a chef, "do X and then Y"). Measured on first contact without --per-sentence and once at
+# the end; the expected signature is each task's ground truth.
+VALID_H90: dict[int, list[str]] = {
+    1: ["GREEN APPLE TO BLUE PLATE STOP ORANGE TO YELLOW PLATE STOP",
+        "pls put green apple on blue plate n orange on yellow plate thx",
+        "Step right up! The green apple lands on the blue plate and the orange lands on the yellow plate!",
+        "On the blue plate, the green apple; on the yellow plate, the orange.",
+        "Your mission, should you choose to accept it: the green apple on the blue plate, the orange on the "
+        "yellow plate."],
+    2: ["Recipe: 1 green apple, on the pink plate. 1 orange, on the yellow plate. 1 red apple, on the blue "
+        "plate. Assemble in any order.",
+        "And the green apple goes on the pink plate! The orange to the yellow plate! The red apple to the "
+        "blue plate! Any order, folks, it's all legal!",
+        "Homework for today: put the green apple on the pink plate, the orange on the yellow plate, and the "
+        "red apple on the blue plate. Do them in whatever order suits you.",
+        "Green apple? Pink plate. Orange? Yellow plate. Red apple? Blue plate. Order? Doesn't matter.",
+        "no cap, just yeet the green apple onto the pink plate, the orange onto the yellow plate and the red "
+        "apple onto the blue plate, order doesn't matter fr"],
+    3: ["Dearest robot, would you be so kind as to set the carrot on the blue plate, the orange on the "
+        "yellow plate, the green apple on the green plate and the red apple on the pink plate? In any order "
+        "you wish. With love, Grandma",
+        "Breaking: carrot heads to blue plate, orange to yellow plate, green apple to green plate, red apple "
+        "to pink plate; order left open.",
+        "Mapping (order-free): carrot => blue plate; orange => yellow plate; green apple => green plate; red "
+        "apple => pink plate",
+        "Attention please: the carrot is to be placed on the blue plate, the orange on the yellow plate, the "
+        "green apple on the green plate and the red apple on the pink plate. Order of placement: "
+        "unrestricted.",
+        "Quick favour before I head out: carrot on the blue plate, orange on the yellow plate, green apple "
+        "on the green plate, red apple on the pink plate. Do them in any sequence."],
+    4: ["Phase 1 (do this before anything else): green apple and orange on the yellow plate. Phase 2: "
+        "carrot and red apple on the blue plate, order within the phase is free.",
+        "Level 1: green apple and orange onto the yellow plate. Level 2: carrot and red apple onto the blue "
+        "plate. Don't start level 2 before level 1 is cleared.",
+        "House rule: the yellow plate is filled first (green apple, orange), and only then does anything go "
+        "on the blue plate (carrot, red apple).",
+        "The green apple and the orange must be on the yellow plate before the carrot or the red apple "
+        "touches the blue plate.",
+        "Chef says: yellow plate first, with the green apple and the orange; when the yellow plate is done, "
+        "the blue plate gets the carrot and the red apple.",
+        "Do the yellow plate (green apple, orange) and then the blue plate (carrot, red apple); within a "
+        "plate, any order."],
+}
