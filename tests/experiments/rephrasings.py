@@ -976,3 +976,36 @@ VALID_H90: dict[int, list[str]] = {
         "Do the yellow plate (green apple, orange) and then the blue plate (carrot, red apple); within a "
         "plate, any order."],
 }
+
+# Issue 28 (h90): rephrasings for developing h90's rules (read per sentence): the shapes VALID_H87 and
+# VALID_H79 left refused, in other words (an end state described "when you're done", a freedom said as "of
+# no consequence" / "your call", "when you're done with PLATE, go on to PLATE", a positive "wait / hold off
+# until", a label that refers back to an earlier label), in voices no batch uses (an interior designer, a
+# lab protocol, a babysitter's note, a referee, a librarian's checklist, a surveyor).
+DEV_H90: dict[int, list[str]] = {
+    1: ["Here's how the table should look at the end: green apple on the blue plate, orange on the yellow "
+        "plate. How you get there is your call.",
+        "Design brief: the green apple rests on the blue plate and the orange rests on the yellow plate."],
+    2: ["When you're finished, the table should look like this: green apple on the pink plate, orange on "
+        "the yellow plate, red apple on the blue plate. The route there is up to you.",
+        "Place the green apple on the pink plate, the orange on the yellow plate and the red apple on the "
+        "blue plate; the sequence is of no consequence.",
+        "Put the green apple on the pink plate, the orange on the yellow plate and the red apple on the blue "
+        "plate. Which one comes first is of no importance."],
+    3: ["End state: carrot on the blue plate, orange on the yellow plate, green apple on the green plate, "
+        "red apple on the pink plate. The order of the moves is your call.",
+        "Set the carrot upon the blue plate, the orange upon the yellow, the green apple upon the green and "
+        "the red apple upon the pink; the order is of no importance."],
+    4: ["Begin by putting the green apple and the orange on the yellow plate. When you're done with the "
+        "yellow plate, go on to the blue plate: carrot and red apple, either order.",
+        "Put the carrot and the red apple on the blue plate, but hold off until the green apple and the "
+        "orange are on the yellow plate.",
+        "Put the carrot and the red apple on the blue plate, but wait until the green apple and the orange "
+        "are already on the yellow plate.",
+        "Step one: the green apple and the orange onto the yellow plate. Step two, only after step one: the "
+        "carrot and the red apple onto the blue plate.",
+        "Batch one: green apple and orange on the yellow plate. Batch two, after batch one: carrot and red "
+        "apple on the blue plate.",
+        "Fill the yellow plate with the green apple and the orange. Once you're through with the yellow "
+        "plate, move on to the blue plate and fill it with the carrot and the red apple."],
+}
