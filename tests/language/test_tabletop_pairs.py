@@ -408,6 +408,19 @@ def test_plates_by_colour_answers_and_wishes_far_from_their_verb(text):
     assert _reading(text) == expected
 
 
+def test_a_colour_after_a_word_of_place_is_a_plate_even_before_and():
+    """ "on the green and the red apple on the pink": the green plate, not the green and red apples."""
+    text = "Put the carrot on the blue plate and the green apple on the green and the red apple on the pink."
+    assert _reading(text) == (
+        [("Carrot", "BluePlate"), ("GreenApple", "GreenPlate"), ("RedApple", "PinkPlate")],
+        [],
+    )
+    assert _reading("Put the green and the red apple on the pink plate.") == (
+        [("GreenApple", "PinkPlate"), ("RedApple", "PinkPlate")],
+        [],
+    )
+
+
 def test_a_sentence_final_then_orders_its_own_sentence_after_the_one_before():
     pairs, order = _reading(
         "The green apple goes on the blue plate first. The orange goes on the yellow plate after that."

@@ -253,6 +253,14 @@ def plates_by_colour(text: str, kinds: dict[str, bool]) -> str:
     if only_plate:
         one = re.compile(rf"\b(?:the\s+)?(?P<c>{'|'.join(map(re.escape, only_plate))})\s+one\b")
         text = one.sub(lambda m: f"the {colours[m['c']]}", text)
+    objects = mention_pattern([n for n, plate in kinds.items() if not plate]).pattern
+    # "on the green and the red apple on the pink": after a word of place, a colour is where something
+    # goes, a plate, even before "and" when an object follows ("the green and red apples" elsewhere)
+    placed = re.compile(
+        rf"\b(?P<at>(?:on|onto|upon|in|into|to)\s+(?:the\s+)?)(?P<c>{'|'.join(map(re.escape, colours))})"
+        rf"(?=\s+and\s+(?:the\s+)?{objects})"
+    )
+    text = placed.sub(lambda m: f"{m['at']}{colours[m['c']]}", text)
     heads = {w for n in kinds for w in n.split()[1:]} | {"one", "ones", "and", "or", "plates", "plated"}
     alone = re.compile(rf"\b(?:{'|'.join(map(re.escape, colours))})\b(?!\s*(?:{'|'.join(sorted(heads))})\b)")
     out, at = [], 0
