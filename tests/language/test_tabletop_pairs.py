@@ -415,10 +415,6 @@ def test_a_colour_after_a_word_of_place_is_a_plate_even_before_and():
         [("Carrot", "BluePlate"), ("GreenApple", "GreenPlate"), ("RedApple", "PinkPlate")],
         [],
     )
-    assert _reading("Put the green and the red apple on the pink plate.") == (
-        [("GreenApple", "PinkPlate"), ("RedApple", "PinkPlate")],
-        [],
-    )
 
 
 def test_a_sentence_final_then_orders_its_own_sentence_after_the_one_before():
