@@ -106,6 +106,8 @@ def test_the_grammar_reading_stands_the_pairs_reading_checks_it_or_reads_what_it
         "If you don't mind the mess, carrot: blue plate",  # a condition, not a courtesy frame
         "Three moves: carrot: blue plate, orange: yellow plate",  # a heading's count that is not theirs
         "put the carrot next to the blue plate, then the orange on the yellow plate",  # "next to"
+        "Put the carrot on the blue plate, but wait until the carrot is on the yellow plate.",  # named twice
+        "Put the carrot on the blue plate, but wait until you are ready.",  # a wait for no placement
     ],
 )
 def test_near_misses_stay_refused(text):
@@ -468,11 +470,16 @@ def test_make_it_so_is_a_wish():
         "blue plate. Within a priority, any order.",
         "hey, when you get a sec: yellow plate gets green apple and orange first, blue plate gets carrot and "
         "red apple after, any order within each",
+        "Put the carrot and the red apple on the blue plate, but hold off until the green apple and the "
+        "orange are on the yellow plate.",
+        "Batch one: green apple and orange on the yellow plate. Batch two, after batch one: carrot and red "
+        "apple on the blue plate.",
     ],
 )
 def test_the_order_of_two_steps_whatever_words_say_it(text):
     """A clause waiting for placements it states, a pronoun for the step before, any noun numbered in
-    turn as a label, and a "first" / "after" closing each step's clause."""
+    turn as a label, a "first" / "after" closing each step's clause, a wait said after the placements
+    that wait, and a label that names the label before it."""
     pairs, order = _reading(text)
     yellow = [p for p in pairs if p[1] == "YellowPlate"]
     blue = [p for p in pairs if p[1] == "BluePlate"]

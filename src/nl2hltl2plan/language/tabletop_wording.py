@@ -381,10 +381,37 @@ _LIST_NUMBER = re.compile(r"(?:^|(?<=[\s.;!?]))\(?(?P<n>\d)[.)]\s+")
 _ALTERNATIVE_NOUNS = frozenset("option plan alternative choice scenario variant version possibility".split())
 
 
+# "Round B, only after round A:", "Batch two (after batch one):": a label that names the label before it
+# says the order the labels say already
+_REFERS_BACK = re.compile(
+    rf"(?P<label>(?P<noun>{_STEP_NOUN})\s+(?P<t>\w+))\s*(?:,|\()\s*(?:but\s+)?(?:only\s+)?(?:after|once|"
+    r"following)\s+(?P<noun2>[a-z]+)\s+(?P<b>\w+)(?:\s+is\s+(?:done|finished|complete))?\s*\)?\s*(?=[:.)\-])",
+    re.IGNORECASE,
+)
+
+
+def _place_in_turn(word: str) -> int | None:
+    word = word.lower()
+    return int(word) if word.isdigit() else _NUMBER_WORDS.get(word, _LETTERS.get(word))
+
+
+def label_references_dropped(text: str) -> str:
+    """ "Round B, only after round A:" -> "Round B:" where the label it names is the one just before it in
+    turn; any other such reference is left (and refused where it is read)."""
+
+    def dropped(m: re.Match[str]) -> str:
+        turn, back = _place_in_turn(m["t"]), _place_in_turn(m["b"])
+        same_noun = m["noun"].lower() == m["noun2"].lower()
+        return m["label"] if same_noun and turn is not None and back == turn - 1 else m[0]
+
+    return _REFERS_BACK.sub(dropped, text)
+
+
 def steps_read(text: str, listed: bool) -> str | None:
     """Step labels, and bare list numbers, as "first" / "then" (numbered 1, 2, ... in turn); bare list
     numbers beside a remark that frees the whole list (`listed`: "1) ... 2) ... in any order") only list,
     and are removed. None: labels or numbers out of turn."""
+    text = label_references_dropped(text)
     labels = _labels(text)
     if [_turn(m) for m in labels] != list(range(1, len(labels) + 1)):
         return None
@@ -432,6 +459,7 @@ def numbered_steps(text: str) -> str:
     ... Part B: ..."), and the numbers of a numbered list of two or more steps read (`list_numbers_read`:
     as "first" / "then", or removed beside a remark that frees the whole list), so that every reader
     orders the steps as the labels and numbers do; the text as it is with no such list."""
+    text = label_references_dropped(text)
     labels = _labels(text)
     if len(labels) >= 2 and [_turn(m) for m in labels] == list(range(1, len(labels) + 1)):
         text = " ".join(_as_steps(text, labels).split())
