@@ -54,8 +54,8 @@ _PLATE = re.compile(r"\b[a-z]+\s+plate\b", re.IGNORECASE)
 
 def plate_waits_read(text: str, kinds: dict[str, bool]) -> str:
     """`text` with a plate that waits read as an order (see the module docstring): "once STATE, REST" (also
-    for "REST, but wait until STATE") or "FIRST. then REST"; the text as it is where the clause says more than that order. `kinds`: each
-    object or plate name (in words) -> is it a plate."""
+    for "REST, but wait until STATE") or "FIRST. then REST"; the text as it is where the clause says more
+    than that order. `kinds`: each object or plate name (in words) -> is it a plate."""
     wait = _WAIT.match(text)
     if wait is not None:
         plate = _plate(wait["plate"], kinds)
