@@ -226,6 +226,10 @@ def test_labels_ordinals_and_first_before_the_names_order_the_groups(text):
         "It would please me if the carrot were set on the blue plate and the orange on the yellow plate.",
         "Now dear, the carrot, the long one, goes on the blue plate, and the orange goes on the yellow plate",
         "Pair the carrot with the blue plate and the orange with the yellow plate.",
+        "When you're finished, the table should look like this: carrot on the blue plate, orange on the "
+        "yellow plate. How you get there is your call.",
+        "End state: carrot on the blue plate, orange on the yellow plate. The order of the moves is of no "
+        "import.",
     ],
 )
 def test_lists_headings_asides_and_free_order_remarks_leave_the_tasks_unordered(text):

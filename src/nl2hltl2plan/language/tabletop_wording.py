@@ -150,6 +150,7 @@ def plain_words(text: str, kinds: dict[str, bool], heads: dict[str, list[str]]) 
     answers, corrections applied and plurals named. `kinds`: each object or plate name (in words) -> is
     it a plate; `heads`: a head noun that several objects share ("apple") -> their names."""
     text = plate_waits_read(_letter_frame_dropped(text, kinds).lower(), kinds)
+    text = end_state_heading_read(text, kinds)
     text = re.sub(r"\b(1st|2nd|3rd|4th)\b", lambda m: _ORDINALS[m[1]], text)
     text = _IF_YOU_COULD.sub(r"\g<pre>please\g<body>", _REMINDER.sub("please", text))
     text = _THE_FOLLOWING.sub("these", _FILLER.sub(" ", polite_frames(text)))
@@ -176,6 +177,30 @@ def _letter_frame_dropped(text: str, kinds: dict[str, bool]) -> str:
     sign_off = _SIGN_OFF.search(text)
     if sign_off and not any(sign_off["name"].lower() in name.split() for name in kinds):
         text = text[: sign_off.start()]
+    return text
+
+
+# a heading that describes the end state the list after it shows ("Here's how the table should look at the
+# end:", "Picture this when you're done:", "End state:"): words of the end, of a picture, and nothing else
+_END_WORDS = frozenset("end final finally finished done through result outcome afterwards".split())
+_PICTURE_WORDS = frozenset("look looks picture imagine state layout setup arrangement see".split())
+_END_FRAME_WORDS = _END_WORDS | _PICTURE_WORDS | frozenset(
+    "here's here is how what the table it everything things should must will would to like this at in by "
+    "when once you're youre you are you've have i i'd we we'd want like".split()
+)
+_HEADING = re.compile(r"^(?P<words>[^:.;!?\n]+):")
+
+
+def end_state_heading_read(text: str, kinds: dict[str, bool]) -> str:
+    """`text` (lowercased) with a heading that opens it and describes the end state ("when you're done,
+    the table should look like this:") read as "final layout:", a goal's heading that asks for the states
+    listed after it; the text as it is otherwise (a "when you're done" before a request opens a step)."""
+    heading = _HEADING.match(text)
+    if heading is None or mention_pattern(kinds).search(heading["words"]):
+        return text
+    words = set(re.findall(r"[a-z']+", heading["words"]))
+    if words <= _END_FRAME_WORDS and words & _END_WORDS and words & _PICTURE_WORDS:
+        return "final layout:" + text[heading.end() :]
     return text
 
 
