@@ -108,6 +108,9 @@ def test_the_grammar_reading_stands_the_pairs_reading_checks_it_or_reads_what_it
         "put the carrot next to the blue plate, then the orange on the yellow plate",  # "next to"
         "Put the carrot on the blue plate, but wait until the carrot is on the yellow plate.",  # named twice
         "Put the carrot on the blue plate, but wait until you are ready.",  # a wait for no placement
+        # done with a plate that is not the step just said
+        "Put the green apple on the yellow plate. Once you're done with the blue plate, move on to the pink "
+        "plate: carrot.",
     ],
 )
 def test_near_misses_stay_refused(text):
@@ -478,6 +481,8 @@ def test_make_it_so_is_a_wish():
         "orange are on the yellow plate.",
         "Batch one: green apple and orange on the yellow plate. Batch two, after batch one: carrot and red "
         "apple on the blue plate.",
+        "Fill the yellow plate with the green apple and the orange. Once you're through with the yellow "
+        "plate, move on to the blue plate and fill it with the carrot and the red apple.",
     ],
 )
 def test_the_order_of_two_steps_whatever_words_say_it(text):

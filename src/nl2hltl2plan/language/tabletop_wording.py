@@ -161,7 +161,7 @@ def plain_words(text: str, kinds: dict[str, bool], heads: dict[str, list[str]]) 
     text = re.sub(r"\b(?:make|have|get)\s+it\s+so(?:\s+that)?\b", "make sure", text)  # the same goal
     text = _tidied_as_put(text, kinds)
     text = answers_joined(plates_by_colour(respectively_paired(text, kinds), kinds), kinds)
-    text = _plate_referred(text, kinds)
+    text = _moving_on_read(_plate_referred(text, kinds), kinds)
     text = _APPOSITION.sub(lambda m: m[0] if _names_a_word(m["words"], kinds) else ",", text)
     text = corrected(text, kinds)
     return _plurals_named(text, kinds, heads)
@@ -250,6 +250,34 @@ def respectively_paired(text: str, kinds: dict[str, bool]) -> str:
     return re.sub(r"(?P<clause>[^.;:!?]*?),?\s+respectively\b", paired, text)
 
 
+# "fill it with X": only a plate is filled here
+_FILL_IT = re.compile(r"\b(?P<verb>fill|load|stack)\s+(?:it|that\s+(?:plate|one))(?:\s+up)?\s+with\b")
+# "once you're done / through with the yellow plate": the step on that plate; "move on to the blue plate":
+# the next step's plate
+_DONE_WITH = re.compile(
+    r"\b(?:when|once|after)\s+you(?:'re|\s+are|'ve|\s+have)\s+(?:all\s+)?(?:done|finished|through)\s+with\s+"
+    r"(?:the\s+)?(?P<plate>[a-z]+\s+plate)\b"
+)
+_MOVE_ON = re.compile(
+    r"\b(?:move|go|head|proceed)\s+on\s+to\s+(?:the\s+)?(?P<plate>[a-z]+\s+plate)(?P<and>\s+and\b)?"
+)
+
+
+def _moving_on_read(text: str, kinds: dict[str, bool]) -> str:
+    """ "once you're done with the yellow plate, move on to the blue plate: carrot and red apple" -> "once
+    that is done, the blue plate: carrot and red apple": done with the plate named last before it (the
+    step just said), then the next plate ("move on to the blue plate and fill it with ..." -> "fill the
+    blue plate with ..."); left where the plate done with is not the one named last."""
+    plates = mention_pattern([n for n, plate in kinds.items() if plate])
+
+    def done(m: re.Match[str]) -> str:
+        before = [_name(p) for p in plates.findall(text, 0, m.start()) if _name(p) in kinds]
+        return "once that is done" if before and before[-1] == _name(m["plate"]) else m[0]
+
+    text = _DONE_WITH.sub(done, text)
+    return _MOVE_ON.sub(lambda m: "" if m["and"] else f"the {_name(m['plate'])}", text)
+
+
 _ON_IT = re.compile(
     r"\b(?P<to>on|onto|in|into|to)\s+(?:it|that\s+(?:plate|one)|this\s+(?:plate|one)|the\s+same\s+(?:plate|one))\b"
 )
@@ -265,7 +293,11 @@ def _plate_referred(text: str, kinds: dict[str, bool]) -> str:
         before = [_name(p) for p in plates.findall(text, 0, m.start()) if _name(p) in kinds]
         return f"{m['to']} the {before[-1]}" if before else m[0]
 
-    return _ON_IT.sub(referred, text)
+    def filled(m: re.Match[str]) -> str:
+        before = [_name(p) for p in plates.findall(text, 0, m.start()) if _name(p) in kinds]
+        return f"{m['verb']} the {before[-1]} with" if before else m[0]
+
+    return _ON_IT.sub(referred, _FILL_IT.sub(filled, text))
 
 
 def plates_by_colour(text: str, kinds: dict[str, bool]) -> str:
