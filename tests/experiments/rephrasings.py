@@ -1009,3 +1009,40 @@ DEV_H90: dict[int, list[str]] = {
         "Fill the yellow plate with the green apple and the orange. Once you're through with the yellow "
         "plate, move on to the blue plate and fill it with the carrot and the red apple."],
 }
+
+# Issue 28 (h90): a second development batch, written at once after the rules for DEV_H90, in voices no
+# batch uses ("Simon says", a weather report, an auctioneer, a cooking show, a robot's log, a sign in a
+# shop, a coach at half-time, a detective, a wedding toast, a sailor's log, a quiz master, a mum's voice
+# note), measured once before any rule for it.
+DEV2_H90: dict[int, list[str]] = {
+    1: ["Simon says: green apple on the blue plate, orange on the yellow plate.",
+        "Today's forecast: a green apple landing on the blue plate and an orange settling on the yellow "
+        "plate.",
+        "Log entry: task received - green apple to the blue plate, orange to the yellow plate.",
+        "Voice note from mum: love, can you pop the green apple on the blue plate and the orange on the "
+        "yellow plate? Ta."],
+    2: ["Going once, going twice: green apple to the pink plate, orange to the yellow plate, red apple to "
+        "the blue plate - in any order!",
+        "Today on the show we plate the green apple on the pink plate, the orange on the yellow plate and "
+        "the red apple on the blue plate; plate them in any order.",
+        "Elementary: the green apple belongs on the pink plate, the orange on the yellow plate and the red "
+        "apple on the blue plate. Which you place first is immaterial.",
+        "Captain's log: the green apple goes on the pink plate, the orange on the yellow plate, the red "
+        "apple on the blue plate. Order unimportant."],
+    3: ["Sign: please put the carrot on the blue plate, the orange on the yellow plate, the green apple on "
+        "the green plate and the red apple on the pink plate. Any order.",
+        "Half-time talk: carrot to the blue plate, orange to the yellow plate, green apple to the green "
+        "plate, red apple to the pink plate. Do it in the order that suits you.",
+        "Raise a glass and put the carrot on the blue plate, the orange on the yellow plate, the green apple "
+        "on the green plate and the red apple on the pink plate - the order is entirely yours.",
+        "For ten points: carrot on the blue plate, orange on the yellow plate, green apple on the green "
+        "plate, red apple on the pink plate, in any order you choose."],
+    4: ["Simon says: first the green apple and the orange on the yellow plate, and only then the carrot and "
+        "the red apple on the blue plate.",
+        "Once the yellow plate holds the green apple and the orange, the blue plate can take the carrot and "
+        "the red apple.",
+        "Yellow plate before blue plate: the green apple and the orange go on the yellow one, the carrot and "
+        "the red apple on the blue one.",
+        "Get the green apple and the orange onto the yellow plate; only when you're done with the yellow "
+        "plate should the carrot and the red apple go onto the blue plate."],
+}
