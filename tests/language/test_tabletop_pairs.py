@@ -233,6 +233,8 @@ def test_labels_ordinals_and_first_before_the_names_order_the_groups(text):
         "yellow plate. How you get there is your call.",
         "End state: carrot on the blue plate, orange on the yellow plate. The order of the moves is of no "
         "import.",
+        "Elementary: the carrot belongs on the blue plate, the orange on the yellow plate. Which you place "
+        "first is immaterial.",
     ],
 )
 def test_lists_headings_asides_and_free_order_remarks_leave_the_tasks_unordered(text):

@@ -62,6 +62,7 @@ _INDEPENDENT = re.compile(
 # ... and what it says of it
 _FREE_PREDICATE = re.compile(
     r"\b(?:(?:does|do|did|will|would|should)(?:\s+not|n't|nt)\s+matter|no\s+matter|matters\s+not|irrelevant|"
+    r"immaterial|inconsequential|"
     r"unimportant|not\s+(?:important|critical|crucial|essential|vital|relevant|significant)|of\s+no\s+(?:consequence|importance|import)|up\s+to\s+you|(?:your|the\s+robot's)\s+"
     r"(?:call|choice|decision|pick)|(?:are|'re|is|'s)\s+free|free\s+to\s+(?:choose|pick|decide)|"
     r"(?:can|may|get\s+to)\s+(?:choose|pick|decide)|any|either|whatever|whichever|arbitrary|flexible|optional|"
