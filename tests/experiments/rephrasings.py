@@ -1046,3 +1046,37 @@ DEV2_H90: dict[int, list[str]] = {
         "Get the green apple and the orange onto the yellow plate; only when you're done with the yellow "
         "plate should the carrot and the red apple go onto the blue plate."],
 }
+
+# Issue 28 (h90): a third development batch, written at once after the rules for DEV_H90 and DEV2_H90 and
+# before any rule for it, in voices no batch uses (a pilot's checklist, an audio guide, a herald, a
+# concierge, a commit message, a gardener, a horoscope, a nurse at rounds), measured once before any rule.
+DEV3_H90: dict[int, list[str]] = {
+    1: ["Checklist: green apple - blue plate, check. Orange - yellow plate, check.",
+        "Hear ye, hear ye: the green apple shall go upon the blue plate, the orange upon the yellow plate!",
+        "fix: move green apple to blue plate; move orange to yellow plate",
+        "As your concierge I'd suggest the green apple on the blue plate and the orange on the yellow "
+        "plate."],
+    2: ["Press play. The green apple goes to the pink plate, the orange to the yellow plate and the red "
+        "apple to the blue plate. The order is yours to choose.",
+        "Plant the green apple in the pink plate, the orange in the yellow plate and the red apple in the "
+        "blue plate; it makes no odds which goes first.",
+        "Your stars today: green apple on the pink plate, orange on the yellow plate, red apple on the blue "
+        "plate. Any order brings luck.",
+        "Rounds: green apple onto the pink plate, orange onto the yellow plate, red apple onto the blue "
+        "plate, no set sequence."],
+    3: ["Checklist, any order: carrot - blue plate; orange - yellow plate; green apple - green plate; red "
+        "apple - pink plate.",
+        "Hear ye: carrot upon the blue plate, orange upon the yellow plate, green apple upon the green "
+        "plate, red apple upon the pink plate, in what order thou wilt.",
+        "feat: put carrot on blue plate, orange on yellow plate, green apple on green plate, red apple on "
+        "pink plate (order-independent)",
+        "I'd recommend the carrot on the blue plate, the orange on the yellow plate, the green apple on the "
+        "green plate and the red apple on the pink plate, in whichever order is easiest."],
+    4: ["Checklist: 1. green apple and orange - yellow plate. 2. carrot and red apple - blue plate.",
+        "Hear ye: first the green apple and the orange upon the yellow plate, and thereafter the carrot and "
+        "the red apple upon the blue plate!",
+        "Plant the green apple and the orange in the yellow plate first; when you're done with the yellow "
+        "plate, plant the carrot and the red apple in the blue plate.",
+        "The yellow plate's turn comes first: green apple and orange. Then it's the blue plate's turn: "
+        "carrot and red apple."],
+}
