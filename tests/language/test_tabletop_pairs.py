@@ -235,6 +235,8 @@ def test_labels_ordinals_and_first_before_the_names_order_the_groups(text):
         "import.",
         "Elementary: the carrot belongs on the blue plate, the orange on the yellow plate. Which you place "
         "first is immaterial.",
+        "Put the carrot on the blue plate and the orange on the yellow plate; it makes no odds which goes "
+        "first.",
     ],
 )
 def test_lists_headings_asides_and_free_order_remarks_leave_the_tasks_unordered(text):
@@ -485,6 +487,7 @@ def test_make_it_so_is_a_wish():
         "apple on the blue plate.",
         "Fill the yellow plate with the green apple and the orange. Once you're through with the yellow "
         "plate, move on to the blue plate and fill it with the carrot and the red apple.",
+        "Checklist: 1. green apple and orange - yellow plate. 2. carrot and red apple - blue plate.",
     ],
 )
 def test_the_order_of_two_steps_whatever_words_say_it(text):

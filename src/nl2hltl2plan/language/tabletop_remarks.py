@@ -67,7 +67,7 @@ _FREE_PREDICATE = re.compile(
     r"(?:call|choice|decision|pick)|(?:are|'re|is|'s)\s+free|free\s+to\s+(?:choose|pick|decide)|"
     r"(?:can|may|get\s+to)\s+(?:choose|pick|decide)|any|either|whatever|whichever|arbitrary|flexible|optional|"
     r"not\s+(?:specified|fixed|set|required|needed)|unspecified|no\s+(?:particular|special|specific|set|fixed|given|prescribed)|(?:i|we)\s+(?:don't|do\s+not)\s+"
-    r"(?:care|mind)|(?:makes?|is)\s+no\s+difference|do\s+(?:whatever|as\s+you\s+(?:like|please))|"
+    r"(?:care|mind)|(?:makes?|is)\s+no\s+(?:difference|odds)|do\s+(?:whatever|as\s+you\s+(?:like|please))|"
     r"(?:as|however|whichever\s+way)\s+you\s+(?:like|please|wish|want|prefer|see\s+fit))\b"
 )
 # "within each pair", "inside each", "within a priority", "for every plate": what a freedom statement is about
@@ -203,6 +203,8 @@ def frame_read(clause: str, at_start: bool, asked: bool, titled: bool = False) -
 
 def _clause_read(clause: str) -> str | None:
     """ "" for courtesy or a list heading, a free-order phrase for a freedom statement, None otherwise."""
+    if not re.search(r"[a-z]", clause):  # a list number ("1."), not courtesy: the steps' readers read it
+        return None
     words = re.findall(r"[a-z']+", _UNHURRIED.sub(" ", clause))
     if _courtesy(words) or _URGING.match(" ".join(words)):  # "no rush" alone too; "quick one"
         return ""
