@@ -1,7 +1,7 @@
 """Everyday-style tabletop rephrasings (issue 28): how many give the original wording's tasks and closed
 order, and the exit status of `nl2hltl2plan plan TEXT --world tabletop` for each.
 
-    python scripts/tabletop_styles.py --batch DEV_S11 [--per-sentence]
+    python scripts/tabletop_styles.py --batch DEV_S11 [--per-sentence]    (STYLES: every style at once)
 
 Prints `batch: same N/M, exit 0 and same E/M, wrong W (exit 0 with other tasks or order), exit codes
 {...}`: "same" compares the reading's tasks and closed order with the ground truth, partial readings
@@ -41,15 +41,26 @@ def signature(instruction: str) -> tuple[list, list] | None:
     return _closed(r.tasks, r.before)
 
 
+def _rows(batch: dict) -> list[tuple[int, list[str]]]:
+    """A batch's (task id, wordings) rows; a batch of styles (STYLES: style -> task id -> wordings) gives
+    each style's rows in turn."""
+    if all(isinstance(v, dict) for v in batch.values()):
+        return [row for style in batch.values() for row in style.items()]
+    return list(batch.items())
+
+
 def main() -> None:
     parser = argparse.ArgumentParser()
     parser.add_argument("--batch", required=True)
     parser.add_argument("--per-sentence", action="store_true")
     args = parser.parse_args()
-    batch: dict[int, list[str]] = getattr(rephrasings, args.batch)
+    batch = getattr(rephrasings, args.batch, None)
+    if not isinstance(batch, dict):
+        print(f"error: no batch {args.batch!r} in tests/experiments/rephrasings.py", file=sys.stderr)
+        sys.exit(2)
     tasks = {t.id: t for t in load_tasks()}
     same, exact, wrong, total, codes = 0, 0, 0, 0, Counter()
-    for task_id, texts in batch.items():
+    for task_id, texts in _rows(batch):
         gt = tasks[task_id].gt_instance()
         reference = _closed(gt.tasks, gt.before)  # the task's ground truth, not a parse of its wording
         for text in texts:

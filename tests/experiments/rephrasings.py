@@ -927,3 +927,156 @@ DEV3_H87: dict[int, list[str]] = {
         "Load the yellow plate with the green apple and the orange; once it's loaded, load the blue plate "
         "with the carrot and the red apple."],
 }
+
+# Issue 28 (h90): held-out rephrasings written and committed before any h90 rule, in voices no batch above
+# uses (a telegram, a text with "pls"/"thx", a carnival barker, an inverted "on X, the Y", a spy briefing, a
+# recipe card, a sports commentator, a teacher's homework, a self-answered question list, teen slang, a
+# grandmother's letter, a news headline, a programmer's mapping, a station announcement, a hurried
+# "before I head out", a project plan's phases, a video game's levels, a house rule, a "must be ... before
+# ... touches", a chef, "do X and then Y"). Measured on first contact without --per-sentence and once at
+# the end; the expected signature is each task's ground truth.
+VALID_H90: dict[int, list[str]] = {
+    1: ["GREEN APPLE TO BLUE PLATE STOP ORANGE TO YELLOW PLATE STOP",
+        "pls put green apple on blue plate n orange on yellow plate thx",
+        "Step right up! The green apple lands on the blue plate and the orange lands on the yellow plate!",
+        "On the blue plate, the green apple; on the yellow plate, the orange.",
+        "Your mission, should you choose to accept it: the green apple on the blue plate, the orange on the "
+        "yellow plate."],
+    2: ["Recipe: 1 green apple, on the pink plate. 1 orange, on the yellow plate. 1 red apple, on the blue "
+        "plate. Assemble in any order.",
+        "And the green apple goes on the pink plate! The orange to the yellow plate! The red apple to the "
+        "blue plate! Any order, folks, it's all legal!",
+        "Homework for today: put the green apple on the pink plate, the orange on the yellow plate, and the "
+        "red apple on the blue plate. Do them in whatever order suits you.",
+        "Green apple? Pink plate. Orange? Yellow plate. Red apple? Blue plate. Order? Doesn't matter.",
+        "no cap, just yeet the green apple onto the pink plate, the orange onto the yellow plate and the red "
+        "apple onto the blue plate, order doesn't matter fr"],
+    3: ["Dearest robot, would you be so kind as to set the carrot on the blue plate, the orange on the "
+        "yellow plate, the green apple on the green plate and the red apple on the pink plate? In any order "
+        "you wish. With love, Grandma",
+        "Breaking: carrot heads to blue plate, orange to yellow plate, green apple to green plate, red apple "
+        "to pink plate; order left open.",
+        "Mapping (order-free): carrot => blue plate; orange => yellow plate; green apple => green plate; red "
+        "apple => pink plate",
+        "Attention please: the carrot is to be placed on the blue plate, the orange on the yellow plate, the "
+        "green apple on the green plate and the red apple on the pink plate. Order of placement: "
+        "unrestricted.",
+        "Quick favour before I head out: carrot on the blue plate, orange on the yellow plate, green apple "
+        "on the green plate, red apple on the pink plate. Do them in any sequence."],
+    4: ["Phase 1 (do this before anything else): green apple and orange on the yellow plate. Phase 2: "
+        "carrot and red apple on the blue plate, order within the phase is free.",
+        "Level 1: green apple and orange onto the yellow plate. Level 2: carrot and red apple onto the blue "
+        "plate. Don't start level 2 before level 1 is cleared.",
+        "House rule: the yellow plate is filled first (green apple, orange), and only then does anything go "
+        "on the blue plate (carrot, red apple).",
+        "The green apple and the orange must be on the yellow plate before the carrot or the red apple "
+        "touches the blue plate.",
+        "Chef says: yellow plate first, with the green apple and the orange; when the yellow plate is done, "
+        "the blue plate gets the carrot and the red apple.",
+        "Do the yellow plate (green apple, orange) and then the blue plate (carrot, red apple); within a "
+        "plate, any order."],
+}
+
+# Issue 28 (h90): rephrasings for developing h90's rules (read per sentence): the shapes VALID_H87 and
+# VALID_H79 left refused, in other words (an end state described "when you're done", a freedom said as "of
+# no consequence" / "your call", "when you're done with PLATE, go on to PLATE", a positive "wait / hold off
+# until", a label that refers back to an earlier label), in voices no batch uses (an interior designer, a
+# lab protocol, a babysitter's note, a referee, a librarian's checklist, a surveyor).
+DEV_H90: dict[int, list[str]] = {
+    1: ["Here's how the table should look at the end: green apple on the blue plate, orange on the yellow "
+        "plate. How you get there is your call.",
+        "Design brief: the green apple rests on the blue plate and the orange rests on the yellow plate."],
+    2: ["When you're finished, the table should look like this: green apple on the pink plate, orange on "
+        "the yellow plate, red apple on the blue plate. The route there is up to you.",
+        "Place the green apple on the pink plate, the orange on the yellow plate and the red apple on the "
+        "blue plate; the sequence is of no consequence.",
+        "Put the green apple on the pink plate, the orange on the yellow plate and the red apple on the blue "
+        "plate. Which one comes first is of no importance."],
+    3: ["End state: carrot on the blue plate, orange on the yellow plate, green apple on the green plate, "
+        "red apple on the pink plate. The order of the moves is your call.",
+        "Set the carrot upon the blue plate, the orange upon the yellow, the green apple upon the green and "
+        "the red apple upon the pink; the order is of no importance."],
+    4: ["Begin by putting the green apple and the orange on the yellow plate. When you're done with the "
+        "yellow plate, go on to the blue plate: carrot and red apple, either order.",
+        "Put the carrot and the red apple on the blue plate, but hold off until the green apple and the "
+        "orange are on the yellow plate.",
+        "Put the carrot and the red apple on the blue plate, but wait until the green apple and the orange "
+        "are already on the yellow plate.",
+        "Step one: the green apple and the orange onto the yellow plate. Step two, only after step one: the "
+        "carrot and the red apple onto the blue plate.",
+        "Batch one: green apple and orange on the yellow plate. Batch two, after batch one: carrot and red "
+        "apple on the blue plate.",
+        "Fill the yellow plate with the green apple and the orange. Once you're through with the yellow "
+        "plate, move on to the blue plate and fill it with the carrot and the red apple."],
+}
+
+# Issue 28 (h90): a second development batch, written at once after the rules for DEV_H90, in voices no
+# batch uses ("Simon says", a weather report, an auctioneer, a cooking show, a robot's log, a sign in a
+# shop, a coach at half-time, a detective, a wedding toast, a sailor's log, a quiz master, a mum's voice
+# note), measured once before any rule for it.
+DEV2_H90: dict[int, list[str]] = {
+    1: ["Simon says: green apple on the blue plate, orange on the yellow plate.",
+        "Today's forecast: a green apple landing on the blue plate and an orange settling on the yellow "
+        "plate.",
+        "Log entry: task received - green apple to the blue plate, orange to the yellow plate.",
+        "Voice note from mum: love, can you pop the green apple on the blue plate and the orange on the "
+        "yellow plate? Ta."],
+    2: ["Going once, going twice: green apple to the pink plate, orange to the yellow plate, red apple to "
+        "the blue plate - in any order!",
+        "Today on the show we plate the green apple on the pink plate, the orange on the yellow plate and "
+        "the red apple on the blue plate; plate them in any order.",
+        "Elementary: the green apple belongs on the pink plate, the orange on the yellow plate and the red "
+        "apple on the blue plate. Which you place first is immaterial.",
+        "Captain's log: the green apple goes on the pink plate, the orange on the yellow plate, the red "
+        "apple on the blue plate. Order unimportant."],
+    3: ["Sign: please put the carrot on the blue plate, the orange on the yellow plate, the green apple on "
+        "the green plate and the red apple on the pink plate. Any order.",
+        "Half-time talk: carrot to the blue plate, orange to the yellow plate, green apple to the green "
+        "plate, red apple to the pink plate. Do it in the order that suits you.",
+        "Raise a glass and put the carrot on the blue plate, the orange on the yellow plate, the green apple "
+        "on the green plate and the red apple on the pink plate - the order is entirely yours.",
+        "For ten points: carrot on the blue plate, orange on the yellow plate, green apple on the green "
+        "plate, red apple on the pink plate, in any order you choose."],
+    4: ["Simon says: first the green apple and the orange on the yellow plate, and only then the carrot and "
+        "the red apple on the blue plate.",
+        "Once the yellow plate holds the green apple and the orange, the blue plate can take the carrot and "
+        "the red apple.",
+        "Yellow plate before blue plate: the green apple and the orange go on the yellow one, the carrot and "
+        "the red apple on the blue one.",
+        "Get the green apple and the orange onto the yellow plate; only when you're done with the yellow "
+        "plate should the carrot and the red apple go onto the blue plate."],
+}
+
+# Issue 28 (h90): a third development batch, written at once after the rules for DEV_H90 and DEV2_H90 and
+# before any rule for it, in voices no batch uses (a pilot's checklist, an audio guide, a herald, a
+# concierge, a commit message, a gardener, a horoscope, a nurse at rounds), measured once before any rule.
+DEV3_H90: dict[int, list[str]] = {
+    1: ["Checklist: green apple - blue plate, check. Orange - yellow plate, check.",
+        "Hear ye, hear ye: the green apple shall go upon the blue plate, the orange upon the yellow plate!",
+        "fix: move green apple to blue plate; move orange to yellow plate",
+        "As your concierge I'd suggest the green apple on the blue plate and the orange on the yellow "
+        "plate."],
+    2: ["Press play. The green apple goes to the pink plate, the orange to the yellow plate and the red "
+        "apple to the blue plate. The order is yours to choose.",
+        "Plant the green apple in the pink plate, the orange in the yellow plate and the red apple in the "
+        "blue plate; it makes no odds which goes first.",
+        "Your stars today: green apple on the pink plate, orange on the yellow plate, red apple on the blue "
+        "plate. Any order brings luck.",
+        "Rounds: green apple onto the pink plate, orange onto the yellow plate, red apple onto the blue "
+        "plate, no set sequence."],
+    3: ["Checklist, any order: carrot - blue plate; orange - yellow plate; green apple - green plate; red "
+        "apple - pink plate.",
+        "Hear ye: carrot upon the blue plate, orange upon the yellow plate, green apple upon the green "
+        "plate, red apple upon the pink plate, in what order thou wilt.",
+        "feat: put carrot on blue plate, orange on yellow plate, green apple on green plate, red apple on "
+        "pink plate (order-independent)",
+        "I'd recommend the carrot on the blue plate, the orange on the yellow plate, the green apple on the "
+        "green plate and the red apple on the pink plate, in whichever order is easiest."],
+    4: ["Checklist: 1. green apple and orange - yellow plate. 2. carrot and red apple - blue plate.",
+        "Hear ye: first the green apple and the orange upon the yellow plate, and thereafter the carrot and "
+        "the red apple upon the blue plate!",
+        "Plant the green apple and the orange in the yellow plate first; when you're done with the yellow "
+        "plate, plant the carrot and the red apple in the blue plate.",
+        "The yellow plate's turn comes first: green apple and orange. Then it's the blue plate's turn: "
+        "carrot and red apple."],
+}

@@ -106,6 +106,11 @@ def test_the_grammar_reading_stands_the_pairs_reading_checks_it_or_reads_what_it
         "If you don't mind the mess, carrot: blue plate",  # a condition, not a courtesy frame
         "Three moves: carrot: blue plate, orange: yellow plate",  # a heading's count that is not theirs
         "put the carrot next to the blue plate, then the orange on the yellow plate",  # "next to"
+        "Put the carrot on the blue plate, but wait until the carrot is on the yellow plate.",  # named twice
+        "Put the carrot on the blue plate, but wait until you are ready.",  # a wait for no placement
+        # done with a plate that is not the step just said
+        "Put the green apple on the yellow plate. Once you're done with the blue plate, move on to the pink "
+        "plate: carrot.",
     ],
 )
 def test_near_misses_stay_refused(text):
@@ -224,6 +229,14 @@ def test_labels_ordinals_and_first_before_the_names_order_the_groups(text):
         "It would please me if the carrot were set on the blue plate and the orange on the yellow plate.",
         "Now dear, the carrot, the long one, goes on the blue plate, and the orange goes on the yellow plate",
         "Pair the carrot with the blue plate and the orange with the yellow plate.",
+        "When you're finished, the table should look like this: carrot on the blue plate, orange on the "
+        "yellow plate. How you get there is your call.",
+        "End state: carrot on the blue plate, orange on the yellow plate. The order of the moves is of no "
+        "import.",
+        "Elementary: the carrot belongs on the blue plate, the orange on the yellow plate. Which you place "
+        "first is immaterial.",
+        "Put the carrot on the blue plate and the orange on the yellow plate; it makes no odds which goes "
+        "first.",
     ],
 )
 def test_lists_headings_asides_and_free_order_remarks_leave_the_tasks_unordered(text):
@@ -408,6 +421,15 @@ def test_plates_by_colour_answers_and_wishes_far_from_their_verb(text):
     assert _reading(text) == expected
 
 
+def test_a_colour_after_a_word_of_place_is_a_plate_even_before_and():
+    """ "on the green and the red apple on the pink": the green plate, not the green and red apples."""
+    text = "Put the carrot on the blue plate and the green apple on the green and the red apple on the pink."
+    assert _reading(text) == (
+        [("Carrot", "BluePlate"), ("GreenApple", "GreenPlate"), ("RedApple", "PinkPlate")],
+        [],
+    )
+
+
 def test_a_sentence_final_then_orders_its_own_sentence_after_the_one_before():
     pairs, order = _reading(
         "The green apple goes on the blue plate first. The orange goes on the yellow plate after that."
@@ -459,11 +481,19 @@ def test_make_it_so_is_a_wish():
         "blue plate. Within a priority, any order.",
         "hey, when you get a sec: yellow plate gets green apple and orange first, blue plate gets carrot and "
         "red apple after, any order within each",
+        "Put the carrot and the red apple on the blue plate, but hold off until the green apple and the "
+        "orange are on the yellow plate.",
+        "Batch one: green apple and orange on the yellow plate. Batch two, after batch one: carrot and red "
+        "apple on the blue plate.",
+        "Fill the yellow plate with the green apple and the orange. Once you're through with the yellow "
+        "plate, move on to the blue plate and fill it with the carrot and the red apple.",
+        "Checklist: 1. green apple and orange - yellow plate. 2. carrot and red apple - blue plate.",
     ],
 )
 def test_the_order_of_two_steps_whatever_words_say_it(text):
     """A clause waiting for placements it states, a pronoun for the step before, any noun numbered in
-    turn as a label, and a "first" / "after" closing each step's clause."""
+    turn as a label, a "first" / "after" closing each step's clause, a wait said after the placements
+    that wait, and a label that names the label before it."""
     pairs, order = _reading(text)
     yellow = [p for p in pairs if p[1] == "YellowPlate"]
     blue = [p for p in pairs if p[1] == "BluePlate"]

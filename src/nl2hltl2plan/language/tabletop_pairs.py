@@ -62,7 +62,7 @@ _THEN = re.compile(
 # how the first group is marked: "first" / "to begin" / "start with" / "before anything else" before its
 # first name ("What I need first is ..."), or "first" closing it or its heading ("yellow plate first: ...")
 _FIRST = re.compile(
-    r"\b(?:first(?:ly)?|to\s+(?:begin|start)|(?:start|begin)(?:\s+(?:with|by))?|"
+    r"\b(?:first(?:ly)?|to\s+(?:begin|start)|(?:start|begin)(?:\s+off)?(?:\s+(?:with|by))?|"
     r"before\s+(?:you\s+do\s+)?anything\s+else)\b"
 )
 # "A before B" inside a clause (not "Before B, A", not "before that")

@@ -50,7 +50,9 @@ _HEADING_FRAME = re.compile(
 # a freedom statement: what it is about (the order, which comes first, what depends on what) ...
 _ORDER_TOPIC = re.compile(
     r"\b(?:order(?:ing)?|sequenc(?:e|ing)|which(?:ever)?\b[a-z'\s]{0,24}?\b(?:first|(?:start|begin)(?:\s+with)?)|"
-    r"(?:either|any|whichever)(?:\s+one|\s+of\s+them)?\s+(?:(?:can\s+)?(?:go|goes|come|comes)\s+)?first)\b"
+    r"(?:either|any|whichever)(?:\s+one|\s+of\s+them)?\s+(?:(?:can\s+)?(?:go|goes|come|comes)\s+)?first|"
+    # the way to the end state: in this world what is left to choose on the way is the order
+    r"how\s+you\s+get\s+(?:there|it\s+done)|(?:the\s+)?(?:route|path|way)\s+(?:there|you\s+take))\b"
 )
 _INDEPENDENT = re.compile(
     r"\b(?:none|neither|no\s+one)\s+of\s+(?:these|them|those|the\s+\w+)\s+depends?\s+on\s+(?:another|any\s+other|"
@@ -60,11 +62,12 @@ _INDEPENDENT = re.compile(
 # ... and what it says of it
 _FREE_PREDICATE = re.compile(
     r"\b(?:(?:does|do|did|will|would|should)(?:\s+not|n't|nt)\s+matter|no\s+matter|matters\s+not|irrelevant|"
-    r"unimportant|not\s+(?:important|critical|crucial|essential|vital|relevant|significant)|of\s+no\s+(?:consequence|importance)|up\s+to\s+you|(?:your|the\s+robot's)\s+"
+    r"immaterial|inconsequential|"
+    r"unimportant|not\s+(?:important|critical|crucial|essential|vital|relevant|significant)|of\s+no\s+(?:consequence|importance|import)|up\s+to\s+you|(?:your|the\s+robot's)\s+"
     r"(?:call|choice|decision|pick)|(?:are|'re|is|'s)\s+free|free\s+to\s+(?:choose|pick|decide)|"
     r"(?:can|may|get\s+to)\s+(?:choose|pick|decide)|any|either|whatever|whichever|arbitrary|flexible|optional|"
     r"not\s+(?:specified|fixed|set|required|needed)|unspecified|no\s+(?:particular|special|specific|set|fixed|given|prescribed)|(?:i|we)\s+(?:don't|do\s+not)\s+"
-    r"(?:care|mind)|(?:makes?|is)\s+no\s+difference|do\s+(?:whatever|as\s+you\s+(?:like|please))|"
+    r"(?:care|mind)|(?:makes?|is)\s+no\s+(?:difference|odds)|do\s+(?:whatever|as\s+you\s+(?:like|please))|"
     r"(?:as|however|whichever\s+way)\s+you\s+(?:like|please|wish|want|prefer|see\s+fit))\b"
 )
 # "within each pair", "inside each", "within a priority", "for every plate": what a freedom statement is about
@@ -75,7 +78,8 @@ _FREEDOM_FILLER = frozenset(
     "the in which you do them they these those this it that of for me us to is are be at all really totally "
     "entirely quite completely here and so just it's its can may will how place placement placements put "
     "one ones a way round i we honestly pretty much first go goes what done like want prefer wish choose "
-    "pick fine ok okay good works work suits suit by with fancy mix up shuffle change vary switch".split()
+    "pick fine ok okay good works work suits suit by with fancy mix up shuffle change vary switch thereof "
+    "move moves steps tasks jobs".split()
 )
 _NEGATION = re.compile(r"\b(?:not|never|no|none)\b|n't\b")
 
@@ -199,6 +203,8 @@ def frame_read(clause: str, at_start: bool, asked: bool, titled: bool = False) -
 
 def _clause_read(clause: str) -> str | None:
     """ "" for courtesy or a list heading, a free-order phrase for a freedom statement, None otherwise."""
+    if not re.search(r"[a-z]", clause):  # a list number ("1."), not courtesy: the steps' readers read it
+        return None
     words = re.findall(r"[a-z']+", _UNHURRIED.sub(" ", clause))
     if _courtesy(words) or _URGING.match(" ".join(words)):  # "no rush" alone too; "quick one"
         return ""

@@ -1,6 +1,7 @@
 """A plate that waits (issue 28): "Don't touch the blue plate until the green apple and the orange are on
 the yellow plate; then put the carrot and the red apple on the blue plate", "Nothing goes on the blue plate
-until ...", "The yellow plate gets the green apple and the orange before the blue plate gets anything;
+until ...", "Put the carrot on the blue plate, but wait until the orange is on the yellow plate",
+"The yellow plate gets the green apple and the orange before the blue plate gets anything;
 then ...".
 
 Such a clause says that every placement on one plate waits for what the rest of its sentence states. In
@@ -42,18 +43,30 @@ _BEFORE_ANYTHING = re.compile(
     r"(?P<plate2>[a-z]+\s+plate))\s*(?:[,.;:!?]+\s*)(?:and\s+)?(?:then\b|after\s+that\b)?\s*,?\s*(?P<rest>.*)$",
     re.IGNORECASE | re.DOTALL,
 )
+# "REST, but wait / hold off until STATE.": the placements said first wait for the state said after them
+_WAIT_AFTER = re.compile(
+    r"^(?P<rest>[^.;:!?]+?)\s*(?:,\s*but|;\s*but|,|;|\s+but)\s+(?:please\s+)?(?:wait|hold\s+off|hold\s+on)"
+    r"\s+until\s+(?P<state>[^,.;:!?]+?)\s*[.!]?\s*$",
+    re.IGNORECASE | re.DOTALL,
+)
 _PLATE = re.compile(r"\b[a-z]+\s+plate\b", re.IGNORECASE)
 
 
 def plate_waits_read(text: str, kinds: dict[str, bool]) -> str:
-    """`text` with a plate that waits read as an order (see the module docstring): "once STATE, REST" or
-    "FIRST. then REST"; the text as it is where the clause says more than that order. `kinds`: each
-    object or plate name (in words) -> is it a plate."""
+    """`text` with a plate that waits read as an order (see the module docstring): "once STATE, REST" (also
+    for "REST, but wait until STATE") or "FIRST. then REST"; the text as it is where the clause says more
+    than that order. `kinds`: each object or plate name (in words) -> is it a plate."""
     wait = _WAIT.match(text)
     if wait is not None:
         plate = _plate(wait["plate"], kinds)
         if plate and _only_on(wait["rest"], plate, kinds) and plate not in _plates(wait["state"], kinds):
             return f"once {wait['state']}, {wait['rest']}"
+    after = _WAIT_AFTER.match(text)
+    if after is not None:
+        plates, waited_for = _plates(after["rest"], kinds), _plates(after["state"], kinds)
+        named_twice = _names(after["rest"], kinds) & _names(after["state"], kinds)
+        if plates and waited_for and not named_twice:
+            return f"once {after['state']}, {after['rest']}."
     before = _BEFORE_ANYTHING.match(text)
     if before is not None:
         plate = _plate(before["plate"] or before["plate2"], kinds)
@@ -69,6 +82,11 @@ def _plate(words: str, kinds: dict[str, bool]) -> str | None:
 
 def _plates(text: str, kinds: dict[str, bool]) -> set[str]:
     return {n for m in _PLATE.finditer(text) if (n := " ".join(m[0].lower().split())) in kinds}
+
+
+def _names(text: str, kinds: dict[str, bool]) -> set[str]:
+    """The objects and plates `text` names."""
+    return {n for n in kinds if re.search(rf"\b{re.escape(n)}\b", text, re.IGNORECASE)}
 
 
 def _only_on(rest: str, plate: str, kinds: dict[str, bool]) -> bool:

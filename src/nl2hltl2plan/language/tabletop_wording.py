@@ -150,6 +150,7 @@ def plain_words(text: str, kinds: dict[str, bool], heads: dict[str, list[str]]) 
     answers, corrections applied and plurals named. `kinds`: each object or plate name (in words) -> is
     it a plate; `heads`: a head noun that several objects share ("apple") -> their names."""
     text = plate_waits_read(_letter_frame_dropped(text, kinds).lower(), kinds)
+    text = end_state_heading_read(text, kinds)
     text = re.sub(r"\b(1st|2nd|3rd|4th)\b", lambda m: _ORDINALS[m[1]], text)
     text = _IF_YOU_COULD.sub(r"\g<pre>please\g<body>", _REMINDER.sub("please", text))
     text = _THE_FOLLOWING.sub("these", _FILLER.sub(" ", polite_frames(text)))
@@ -160,7 +161,7 @@ def plain_words(text: str, kinds: dict[str, bool], heads: dict[str, list[str]]) 
     text = re.sub(r"\b(?:make|have|get)\s+it\s+so(?:\s+that)?\b", "make sure", text)  # the same goal
     text = _tidied_as_put(text, kinds)
     text = answers_joined(plates_by_colour(respectively_paired(text, kinds), kinds), kinds)
-    text = _plate_referred(text, kinds)
+    text = _moving_on_read(_plate_referred(text, kinds), kinds)
     text = _APPOSITION.sub(lambda m: m[0] if _names_a_word(m["words"], kinds) else ",", text)
     text = corrected(text, kinds)
     return _plurals_named(text, kinds, heads)
@@ -176,6 +177,30 @@ def _letter_frame_dropped(text: str, kinds: dict[str, bool]) -> str:
     sign_off = _SIGN_OFF.search(text)
     if sign_off and not any(sign_off["name"].lower() in name.split() for name in kinds):
         text = text[: sign_off.start()]
+    return text
+
+
+# a heading that describes the end state the list after it shows ("Here's how the table should look at the
+# end:", "Picture this when you're done:", "End state:"): words of the end, of a picture, and nothing else
+_END_WORDS = frozenset("end final finally finished done through result outcome afterwards".split())
+_PICTURE_WORDS = frozenset("look looks picture imagine state layout setup arrangement see".split())
+_END_FRAME_WORDS = _END_WORDS | _PICTURE_WORDS | frozenset(
+    "here's here is how what the table it everything things should must will would to like this at in by "
+    "when once you're youre you are you've have i i'd we we'd want like".split()
+)
+_HEADING = re.compile(r"^(?P<words>[^:.;!?\n]+):")
+
+
+def end_state_heading_read(text: str, kinds: dict[str, bool]) -> str:
+    """`text` (lowercased) with a heading that opens it and describes the end state ("when you're done,
+    the table should look like this:") read as "final layout:", a goal's heading that asks for the states
+    listed after it; the text as it is otherwise (a "when you're done" before a request opens a step)."""
+    heading = _HEADING.match(text)
+    if heading is None or mention_pattern(kinds).search(heading["words"]):
+        return text
+    words = set(re.findall(r"[a-z']+", heading["words"]))
+    if words <= _END_FRAME_WORDS and words & _END_WORDS and words & _PICTURE_WORDS:
+        return "final layout:" + text[heading.end() :]
     return text
 
 
@@ -225,6 +250,34 @@ def respectively_paired(text: str, kinds: dict[str, bool]) -> str:
     return re.sub(r"(?P<clause>[^.;:!?]*?),?\s+respectively\b", paired, text)
 
 
+# "fill it with X": only a plate is filled here
+_FILL_IT = re.compile(r"\b(?P<verb>fill|load|stack)\s+(?:it|that\s+(?:plate|one))(?:\s+up)?\s+with\b")
+# "once you're done / through with the yellow plate": the step on that plate; "move on to the blue plate":
+# the next step's plate
+_DONE_WITH = re.compile(
+    r"\b(?:when|once|after)\s+you(?:'re|\s+are|'ve|\s+have)\s+(?:all\s+)?(?:done|finished|through)\s+with\s+"
+    r"(?:the\s+)?(?P<plate>[a-z]+\s+plate)\b"
+)
+_MOVE_ON = re.compile(
+    r"\b(?:move|go|head|proceed)\s+on\s+to\s+(?:the\s+)?(?P<plate>[a-z]+\s+plate)(?P<and>\s+and\b)?"
+)
+
+
+def _moving_on_read(text: str, kinds: dict[str, bool]) -> str:
+    """ "once you're done with the yellow plate, move on to the blue plate: carrot and red apple" -> "once
+    that is done, the blue plate: carrot and red apple": done with the plate named last before it (the
+    step just said), then the next plate ("move on to the blue plate and fill it with ..." -> "fill the
+    blue plate with ..."); left where the plate done with is not the one named last."""
+    plates = mention_pattern([n for n, plate in kinds.items() if plate])
+
+    def done(m: re.Match[str]) -> str:
+        before = [_name(p) for p in plates.findall(text, 0, m.start()) if _name(p) in kinds]
+        return "once that is done" if before and before[-1] == _name(m["plate"]) else m[0]
+
+    text = _DONE_WITH.sub(done, text)
+    return _MOVE_ON.sub(lambda m: "" if m["and"] else f"the {_name(m['plate'])}", text)
+
+
 _ON_IT = re.compile(
     r"\b(?P<to>on|onto|in|into|to)\s+(?:it|that\s+(?:plate|one)|this\s+(?:plate|one)|the\s+same\s+(?:plate|one))\b"
 )
@@ -240,7 +293,11 @@ def _plate_referred(text: str, kinds: dict[str, bool]) -> str:
         before = [_name(p) for p in plates.findall(text, 0, m.start()) if _name(p) in kinds]
         return f"{m['to']} the {before[-1]}" if before else m[0]
 
-    return _ON_IT.sub(referred, text)
+    def filled(m: re.Match[str]) -> str:
+        before = [_name(p) for p in plates.findall(text, 0, m.start()) if _name(p) in kinds]
+        return f"{m['verb']} the {before[-1]} with" if before else m[0]
+
+    return _ON_IT.sub(referred, _FILL_IT.sub(filled, text))
 
 
 def plates_by_colour(text: str, kinds: dict[str, bool]) -> str:
@@ -253,6 +310,14 @@ def plates_by_colour(text: str, kinds: dict[str, bool]) -> str:
     if only_plate:
         one = re.compile(rf"\b(?:the\s+)?(?P<c>{'|'.join(map(re.escape, only_plate))})\s+one\b")
         text = one.sub(lambda m: f"the {colours[m['c']]}", text)
+    objects = mention_pattern([n for n, plate in kinds.items() if not plate]).pattern
+    # "on the green and the red apple on the pink": after a word of place, a colour is where something
+    # goes, a plate, even before "and" when an object follows ("the green and red apples" elsewhere)
+    placed = re.compile(
+        rf"\b(?P<at>(?:on|onto|upon|in|into|to)\s+(?:the\s+)?)(?P<c>{'|'.join(map(re.escape, colours))})"
+        rf"(?=\s+and\s+(?:the\s+)?{objects})"
+    )
+    text = placed.sub(lambda m: f"{m['at']}{colours[m['c']]}", text)
     heads = {w for n in kinds for w in n.split()[1:]} | {"one", "ones", "and", "or", "plates", "plated"}
     alone = re.compile(rf"\b(?:{'|'.join(map(re.escape, colours))})\b(?!\s*(?:{'|'.join(sorted(heads))})\b)")
     out, at = [], 0
@@ -373,10 +438,37 @@ _LIST_NUMBER = re.compile(r"(?:^|(?<=[\s.;!?]))\(?(?P<n>\d)[.)]\s+")
 _ALTERNATIVE_NOUNS = frozenset("option plan alternative choice scenario variant version possibility".split())
 
 
+# "Round B, only after round A:", "Batch two (after batch one):": a label that names the label before it
+# says the order the labels say already
+_REFERS_BACK = re.compile(
+    rf"(?P<label>(?P<noun>{_STEP_NOUN})\s+(?P<t>\w+))\s*(?:,|\()\s*(?:but\s+)?(?:only\s+)?(?:after|once|"
+    r"following)\s+(?P<noun2>[a-z]+)\s+(?P<b>\w+)(?:\s+is\s+(?:done|finished|complete))?\s*\)?\s*(?=[:.)\-])",
+    re.IGNORECASE,
+)
+
+
+def _place_in_turn(word: str) -> int | None:
+    word = word.lower()
+    return int(word) if word.isdigit() else _NUMBER_WORDS.get(word, _LETTERS.get(word))
+
+
+def label_references_dropped(text: str) -> str:
+    """ "Round B, only after round A:" -> "Round B:" where the label it names is the one just before it in
+    turn; any other such reference is left (and refused where it is read)."""
+
+    def dropped(m: re.Match[str]) -> str:
+        turn, back = _place_in_turn(m["t"]), _place_in_turn(m["b"])
+        same_noun = m["noun"].lower() == m["noun2"].lower()
+        return m["label"] if same_noun and turn is not None and back == turn - 1 else m[0]
+
+    return _REFERS_BACK.sub(dropped, text)
+
+
 def steps_read(text: str, listed: bool) -> str | None:
     """Step labels, and bare list numbers, as "first" / "then" (numbered 1, 2, ... in turn); bare list
     numbers beside a remark that frees the whole list (`listed`: "1) ... 2) ... in any order") only list,
     and are removed. None: labels or numbers out of turn."""
+    text = label_references_dropped(text)
     labels = _labels(text)
     if [_turn(m) for m in labels] != list(range(1, len(labels) + 1)):
         return None
@@ -424,6 +516,7 @@ def numbered_steps(text: str) -> str:
     ... Part B: ..."), and the numbers of a numbered list of two or more steps read (`list_numbers_read`:
     as "first" / "then", or removed beside a remark that frees the whole list), so that every reader
     orders the steps as the labels and numbers do; the text as it is with no such list."""
+    text = label_references_dropped(text)
     labels = _labels(text)
     if len(labels) >= 2 and [_turn(m) for m in labels] == list(range(1, len(labels) + 1)):
         text = " ".join(_as_steps(text, labels).split())
