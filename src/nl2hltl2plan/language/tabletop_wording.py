@@ -139,8 +139,18 @@ _PAIR_VERB = re.compile(r"\bpair(?:\s+up)?(?=\s+(?:the|a|an)\s)")
 
 
 def polite_frames(text: str) -> str:
-    """ "it would please me greatly if X were on Y" -> "please X were on Y": a wish, read as one."""
-    return _POLITE.sub("please", text)
+    """ "it would please me greatly if X were on Y" -> "please X were on Y": a wish, read as one; in its
+    sentence, "X went on Y" (the wish's past subjunctive: "I'd appreciate it if X went on Y") is "X were set
+    on Y"."""
+    return re.sub(r"[^.;!?]+", _wish_read, text)
+
+
+def _wish_read(sentence: re.Match[str]) -> str:
+    said = sentence.group(0)
+    return _WENT.sub("were set", _POLITE.sub("please", said)) if _POLITE.search(said) else said
+
+
+_WENT = re.compile(r"\bwent(?=\s+(?:on|onto|in|into|to)\s)")
 
 
 def plain_words(text: str, kinds: dict[str, bool], heads: dict[str, list[str]]) -> str:
