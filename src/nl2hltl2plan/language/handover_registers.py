@@ -104,7 +104,31 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     (r"\bstill\s+(?=(?:needs?|has|have|must)\s+(?:to\b|be\b))", " "),
     # academic: the goal as a noun
     (r"^\s*the\s+(?:objective|aim|purpose|goal)\s+is\s+(?:that\b|the\s+(?=\w+\s+of\b))", " "),
+    # a step named by its noun after an order word is the step: "red before (the) placement of blue"
+    (
+        r"\b(before|after|then)\s+(?:the\s+)?(?:placement|positioning|placing|movement|relocation|transfer)\s+of\s+"
+        r"(?=(?:the|all|both|red|blue|yellow)\b)",
+        r"\1 ",
+    ),
     (r"\b(?:the\s+)?(?:relocation|movement)\s+of\s+(?=(?:the|all|both|each|every)\b)", "move "),
+    # "placement / return / transfer of X": the verb; "with placement of X before Y" adds that step
+    (r"\bwith\s+(?:the\s+)?placement\s+of\s+(?=(?:the|all|both|red|blue|yellow)\b)", ", and place "),
+    (
+        r"\b(?:the\s+)?(placement|positioning|return|transfer)\s+of\s+"
+        r"(?=(?:the|all|both|each|every|red|blue|yellow)\b)",
+        lambda m: {"placement": "place", "positioning": "place"}.get(m[1], m[1]) + " ",
+    ),
+    (r"\b(?:an?\s+|the\s+)?(exchange|swap)\s+of\s+(?=the\s+positions?\b)", r"\1 "),
+    # "no placement of (any) objects on R": nothing placed on R
+    (
+        r"\bno\s+placements?\s+of\s+(?:any\s+)?(?:objects?|blocks?|items?|anything)\s+(?=(?:on|in|onto)\b)",
+        "nothing placed ",
+    ),
+    (
+        r"\bwith\s+an?\s+(?:limit|maximum)\s+of\s+"
+        r"(?=one\s+(?:block|object|item)s?\s+(?:per|on\s+each|in\s+each)\b)",
+        "with ",
+    ),
     (r"\ban?\s+arbitrary\s+(?=(?:empty|free|unoccupied)\s)", "any "),
     (r"\b(?:is|are)\s+(each|all|both)\s+to\s+be\b", r"must \1 be"),
     (

@@ -198,6 +198,15 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\s*(?:→|->|=>)\s*", " to "),
     # abbreviations: "b4", "1st", "opp. side" (the full stop of "opp." is kept from ending the sentence)
     (r"\bb4\b", "before"),
+    # texting: "2" for "to" before a place or an arm ("2 the opposite side", "2 regions e , f n g", "next 2
+    # arms"; a count of regions names as many letters), "n" for "and", "1" for "one" as a pronoun
+    (
+        r"\b2\s+(?=(?:the|any|arms?|region\s+[e-j]|regions\s+[e-j]\s*(?:,|and|n)\s*[e-j]\s*(?:,|and|n)|[e-j])\b)",
+        "to ",
+    ),
+    (r"(?<=[a-z,])\s+n\s+(?=[a-z])", " and "),
+    (r"\b(red|blue|yellow|the)\s+1\b", r"\1 one"),
+    (r"\b1\s+(?=(?:on|in|per)\s+each\b|each\b)", "one "),
     (r"\b1\s*st\b", "first"),
     (r"\bopp\b\.?", "opposite"),
     (r"\b(?:please\s+)?(?:be\s+advised|be\s+aware|note)\s+that\b", " "),
