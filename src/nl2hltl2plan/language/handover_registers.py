@@ -114,9 +114,9 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     # "placement / return / transfer of X": the verb; "with placement of X before Y" adds that step
     (r"\bwith\s+(?:the\s+)?placement\s+of\s+(?=(?:the|all|both|red|blue|yellow)\b)", ", and place "),
     (
-        r"\b(?:the\s+)?(placement|positioning|return|transfer)\s+of\s+"
+        r"\b(?:the\s+)?(placement|positioning|return|transfer|delivery)\s+of\s+"
         r"(?=(?:the|all|both|each|every|red|blue|yellow)\b)",
-        lambda m: {"placement": "place", "positioning": "place"}.get(m[1], m[1]) + " ",
+        lambda m: {"placement": "place", "positioning": "place", "delivery": "deliver"}.get(m[1], m[1]) + " ",
     ),
     (r"\b(?:an?\s+|the\s+)?(exchange|swap)\s+of\s+(?=the\s+positions?\b)", r"\1 "),
     # "no placement of (any) objects on R": nothing placed on R
