@@ -1,0 +1,81 @@
+"""Issue 24, h89: voices related to the held-out validation15's (nominal steps, "would you mind / might I
+ask" questions, texting abbreviations, clauses in reversed order). Each reading gives the written spec;
+its near miss (an order reversed, a guard or a region changed) is refused or gives another spec.
+"""
+
+from __future__ import annotations
+
+import pytest
+from handover_specs import assert_not_the_written_spec, assert_written_spec
+
+READINGS = [
+    (
+        5,
+        "Placement of the red block before placement of the blue block; an exchange of the positions of the "
+        "red and blue blocks; and, at any time, transfer of the yellow block to the opposite side.",
+    ),
+    (
+        3,
+        "Delivery of the three pillars to regions E, F and G beside arms a and b; no placement of any object "
+        "on any other region.",
+    ),
+    (
+        1,
+        "Would you mind moving the three blocks to the opposite side? Might I ask that the red block be "
+        "placed before the blue block?",
+    ),
+    (3, "pls move the 3 pillars 2 regions E, F n G next 2 arms a n b, nothin on any other region"),
+    (7, "red b4 blue pls. put the 3 objects on I 1 after another n put nothin on F, G n H meanwhile"),
+    (2, "Only one block on each region, and the three blocks on regions H, I and J."),
+    (
+        4,
+        "Put the yellow block back on region G after all of this: move the three blocks to the opposite "
+        "regions, and no arm may touch the blue block until the red block has been touched.",
+    ),
+    (
+        4,
+        "After all of that, put the yellow block back on region G; but first move the three blocks to the "
+        "opposite regions, and do not touch the blue block until the red block has been touched.",
+    ),
+]
+
+NEAR_MISSES = [
+    (
+        5,
+        "Placement of the blue block before placement of the red block; an exchange of the positions of the "
+        "red and blue blocks; and, at any time, transfer of the yellow block to the opposite side.",
+    ),
+    (
+        3,
+        "Delivery of the three pillars to regions E, F and G beside arms a and b; no placement of any object "
+        "on regions H and I.",
+    ),
+    (
+        1,
+        "Would you mind moving the three blocks to the opposite side? Might I ask that the blue block be "
+        "placed before the red block?",
+    ),
+    (3, "pls move the 3 pillars 2 regions E, F n G next 2 arms a n b, nothin on regions H n I"),
+    (7, "blue b4 red pls. put the 3 objects on I 1 after another n put nothin on F, G n H meanwhile"),
+    (2, "Only one block on each region, and the three blocks on regions H and I."),
+    (
+        4,
+        "Put the yellow block back on region G after all of this: move the three blocks to the opposite "
+        "regions, and no arm may touch the red block until the blue block has been touched.",
+    ),
+    (
+        4,
+        "After all of that, put the yellow block back on region H; but first move the three blocks to the "
+        "opposite regions, and do not touch the blue block until the red block has been touched.",
+    ),
+]
+
+
+@pytest.mark.parametrize(("task_id", "text"), READINGS)
+def test_the_voices_give_the_written_spec(task_id, text):
+    assert_written_spec(task_id, text)
+
+
+@pytest.mark.parametrize(("task_id", "text"), NEAR_MISSES)
+def test_their_near_misses_do_not(task_id, text):
+    assert_not_the_written_spec(task_id, text)
