@@ -37,6 +37,23 @@ READINGS = [
         "After all of that, put the yellow block back on region G; but first move the three blocks to the "
         "opposite regions, and do not touch the blue block until the red block has been touched.",
     ),
+    # h86's unread development refusals
+    (2, "Put the three blocks in H, I and J. Only one block in each one."),
+    (
+        3,
+        "The three pillars should go to regions E, F and G, beside arms a and b, and I'd rather nothing went "
+        "on any other region.",
+    ),
+    (
+        3,
+        "Move the three pillars to regions E, F and G (the ones beside arms a and b), and nothing goes on "
+        "any other region.",
+    ),
+    (
+        4,
+        "Move the three blocks to the opposite regions. No arm touches the blue block until the red block "
+        "has been touched. Then, after all of that, make sure the yellow block is back on region G.",
+    ),
 ]
 
 NEAR_MISSES = [
@@ -67,6 +84,22 @@ NEAR_MISSES = [
         4,
         "After all of that, put the yellow block back on region H; but first move the three blocks to the "
         "opposite regions, and do not touch the blue block until the red block has been touched.",
+    ),
+    (2, "Put the three blocks in H and I. Only one block in each one."),
+    (
+        3,
+        "The three pillars should go to regions E, F and G, beside arms a and b, and I'd rather nothing went "
+        "on regions H and I.",
+    ),
+    (
+        3,
+        "Move the three pillars to regions E, F and G (the ones beside arms a and b), and nothing goes on "
+        "region H.",
+    ),
+    (
+        4,
+        "Move the three blocks to the opposite regions. No arm touches the blue block until the red block "
+        "has been touched. Then, after all of that, make sure the yellow block is back on region H.",
     ),
 ]
 

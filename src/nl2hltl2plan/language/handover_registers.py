@@ -111,6 +111,21 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
         r"\1 ",
     ),
     (r"\b(?:the\s+)?(?:relocation|movement)\s+of\s+(?=(?:the|all|both|each|every)\b)", "move "),
+    # a block's state named as the goal: "make sure the yellow block is back on region G" (put it back there)
+    (
+        r"\b(?:make\s+sure|ensure)\s+(?:that\s+)?((?:the\s+)?(?:red|blue|yellow)(?:\s+(?:block|one|object))?)\s+"
+        r"is\s+back\s+(?=(?:on|in|onto)\b)",
+        r"put \1 back ",
+    ),
+    # "I'd rather nothing went on R": a prohibition said as a wish (nothing may go on R)
+    (
+        r"\b(?:i|we)\s+would\s+rather\s+(nothing|no\s+(?:object|block|item)s?)\s+went\s+(?=(?:on|onto|in|into|to)\b)",
+        r"\1 may go ",
+    ),
+    # the places said again in an aside: "regions E, F and G (the ones beside arms a and b)"
+    (r"\(\s*the\s+ones\s+((?:beside|next\s+to|by|near)\s+arms?\b[^()]*?)\s*\)", r"\1"),
+    # "one block in each one": each of the places (a block holds no block)
+    (r"\b(one\s+(?:block|object|item)\s+(?:in|on)\s+each)\s+one\b", r"\1 region"),
     # "placement / return / transfer of X": the verb; "with placement of X before Y" adds that step
     (r"\bwith\s+(?:the\s+)?placement\s+of\s+(?=(?:the|all|both|red|blue|yellow)\b)", ", and place "),
     (
