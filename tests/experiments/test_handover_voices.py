@@ -112,3 +112,18 @@ def test_the_voices_give_the_written_spec(task_id, text):
 @pytest.mark.parametrize(("task_id", "text"), NEAR_MISSES)
 def test_their_near_misses_do_not(task_id, text):
     assert_not_the_written_spec(task_id, text)
+
+
+def test_an_announced_number_of_things_must_be_the_number_said():
+    rules = (
+        " The red block has to be placed before the blue block. And the three objects need to be placed on "
+        "regions G, H and I, with one object on each region."
+    )
+    assert_written_spec(6, "There are two things to keep in mind." + rules)
+    assert_written_spec(6, "There are a few things to keep in mind." + rules)
+    assert_not_the_written_spec(6, "There are three things to keep in mind." + rules)
+    assert_written_spec(
+        5,
+        "Swap the red and blue blocks, red before blue, and the yellow block goes to the "
+        "opposite side at any time that works.",
+    )

@@ -275,7 +275,25 @@ def _sentences(instruction: str) -> list[str]:
         for pattern, replacement in _REORDERED:
             text = pattern.sub(replacement, text)
         out += [re.sub(r"^\s*[-*•·]\s+", "", s) for s in re.split(r"[.;!?]+(?:\s|$)", text)]
-    return [s for s in out if s.strip()]
+    return _without_announcement([s for s in out if s.strip()])
+
+
+# "There are a few things to keep in mind." before the things: it names no block, place or order; a
+# number of things must be the number of sentences after it (else it stays, to be refused by name)
+_ANNOUNCED = re.compile(
+    r"^\s*there\s+(?:are|is)\s+(a\s+few|a\s+couple\s+of|some|several|two|three|four)\s+"
+    r"(?:things|points|rules|requirements|conditions)(?:\s+here|\s+to\s+(?:keep|bear)\s+in\s+mind|\s+to\s+"
+    r"(?:remember|note))?\s*:?\s*$",
+    re.IGNORECASE,
+)
+_NUMBERS = {"two": 2, "three": 3, "four": 4}
+
+
+def _without_announcement(sentences: list[str]) -> list[str]:
+    said = _ANNOUNCED.match(sentences[0]) if sentences else None
+    if said is None or _NUMBERS.get(said[1].lower(), len(sentences) - 1) != len(sentences) - 1:
+        return sentences
+    return sentences[1:]
 
 
 def _unquoted(instruction: str) -> str:

@@ -138,6 +138,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
         "at any time",
     ),
     (r"\bat\s+any\s+time\s+at\s+any\s+time\b", "at any time"),
+    (r"\bat\s+any\s+time\s+that\s+(?:works|suits)(?:\s+(?:for\s+)?you)?\b", "at any time"),
     (
         r"\b(?:sequentially|in\s+sequence|successively|in\s+succession|consecutively|one\s+after\s+the\s+other)\b",
         "one after another",
