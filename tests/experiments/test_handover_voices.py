@@ -127,3 +127,32 @@ def test_an_announced_number_of_things_must_be_the_number_said():
         "Swap the red and blue blocks, red before blue, and the yellow block goes to the "
         "opposite side at any time that works.",
     )
+
+
+@pytest.mark.parametrize(
+    ("task_id", "text", "near_miss"),
+    [
+        (
+            6,
+            "The red block must come before the blue block as you place the three objects on regions G, H "
+            "and I, one on each.",
+            "The blue block must come before the red block as you place the three objects on regions G, H "
+            "and I, one on each.",
+        ),
+        (
+            8,
+            "Putting the yellow block on region I first and then on region G is the job; moving the red "
+            "and blue blocks to any empty region can happen at any time.",
+            "Putting the yellow block on region I first and then on region H is the job; moving the red "
+            "and blue blocks to any empty region can happen at any time.",
+        ),
+        (
+            5,
+            "red b4 blue pls & swap red n blue. yellow 2 opposite side whenever u like ty",
+            "blue b4 red pls & swap red n blue. yellow 2 opposite side whenever u like ty",
+        ),
+    ],
+)
+def test_as_you_gerund_subjects_and_texting(task_id, text, near_miss):
+    assert_written_spec(task_id, text)
+    assert_not_the_written_spec(task_id, near_miss)

@@ -126,6 +126,12 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     (r"\(\s*the\s+ones\s+((?:beside|next\s+to|by|near)\s+arms?\b[^()]*?)\s*\)", r"\1"),
     # "one block in each one": each of the places (a block holds no block)
     (r"\b(one\s+(?:block|object|item)\s+(?:in|on)\s+each)\s+one\b", r"\1 region"),
+    # a gerund's step as the subject: "moving X to P is the job" (move X to P)
+    (
+        rf"(^|,|;|\band\b)(\s*)({'|'.join(GERUND_VERBS | NEGATED_GERUNDS)})\b([^,;]+?)\s+"
+        r"is\s+(?:the|my|your|our)\s+(?:job|task|plan|goal)\b",
+        lambda m: f"{m[1]}{m[2]}{(GERUND_VERBS | NEGATED_GERUNDS)[m[3]]}{m[4]}",
+    ),
     # "placement / return / transfer of X": the verb; "with placement of X before Y" adds that step
     (r"\bwith\s+(?:the\s+)?placement\s+of\s+(?=(?:the|all|both|red|blue|yellow)\b)", ", and place "),
     (

@@ -36,6 +36,7 @@ SHORT_TYPOS = {
     # clipped in texting
     "nothin": "nothing",
     "anythin": "anything",
+    "u": "you",
 }
 
 

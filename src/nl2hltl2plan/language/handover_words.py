@@ -199,15 +199,17 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\s*(?:→|->|=>)\s*", " to "),
     # abbreviations: "b4", "1st", "opp. side" (the full stop of "opp." is kept from ending the sentence)
     (r"\bb4\b", "before"),
+    # "<rule> as you move X ...": the rule holds while you do it ("as" of time before "you" and a verb)
+    (rf"\bas\s+you\s+(?={VERB}\b)", "while you "),
+    (r"\bcan\s+happen\s+(?=at\s+any\s+time\b)", ""),  # "moving yellow ... can happen at any time"
     # texting: "2" for "to" before a place or an arm ("2 the opposite side", "2 regions e , f n g", "next 2
     # arms"; a count of regions names as many letters), "n" for "and", "1" for "one" as a pronoun
     (
-        r"\b2\s+(?=(?:the|any|arms?|region\s+[e-j]|regions\s+[e-j]\s*(?:,|and|n)\s*[e-j]\s*(?:,|and|n)|[e-j])\b)",
+        r"\b2\s+(?=(?:the|any|opposite|arms?|region\s+[e-j]|regions\s+[e-j]\s*(?:,|and|n)\s*[e-j]\s*(?:,|and|n)|[e-j])\b)",
         "to ",
     ),
     (r"(?<=[a-z,])\s+n\s+(?=[a-z])", " and "),
     (r"\bmv\b", "move"),
-    (r"\bu\b", "you"),
     (r"\b1\s+(?=after\s+(?:another|the\s+other)\b)", "one "),
     (r"\b(red|blue|yellow|the)\s+1\b", r"\1 one"),
     (r"\b1\s+(?=(?:on|in|per)\s+each\b|each\b)", "one "),
