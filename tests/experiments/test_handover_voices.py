@@ -156,3 +156,16 @@ def test_an_announced_number_of_things_must_be_the_number_said():
 def test_as_you_gerund_subjects_and_texting(task_id, text, near_miss):
     assert_written_spec(task_id, text)
     assert_not_the_written_spec(task_id, near_miss)
+
+
+def test_a_forbidden_gerund_and_a_last_step_said_as_a_noun():
+    job = (
+        "Moving the three blocks to the opposite regions is the job, and touching the {} block before the {} "
+    )
+    last = (
+        "block has been touched is not allowed. After all of that, putting the yellow block back on {} is the "
+        "last step."
+    )
+    assert_written_spec(4, job.format("blue", "red") + last.format("region G"))
+    assert_not_the_written_spec(4, job.format("red", "blue") + last.format("region G"))
+    assert_not_the_written_spec(4, job.format("blue", "red") + last.format("region H"))

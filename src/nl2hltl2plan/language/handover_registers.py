@@ -126,12 +126,26 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     (r"\(\s*the\s+ones\s+((?:beside|next\s+to|by|near)\s+arms?\b[^()]*?)\s*\)", r"\1"),
     # "one block in each one": each of the places (a block holds no block)
     (r"\b(one\s+(?:block|object|item)\s+(?:in|on)\s+each)\s+one\b", r"\1 region"),
-    # a gerund's step as the subject: "moving X to P is the job" (move X to P)
+    # a gerund's step as the subject: "moving X to P is the job" (move X to P), "putting X back on G is the
+    # last step" (finally, put X back on G)
+    (
+        rf"(^|,|;|\band\b)(\s*)({'|'.join(GERUND_VERBS | NEGATED_GERUNDS)})\b([^,;]+?)\s+"
+        r"is\s+the\s+(?:last|final)\s+step\b",
+        lambda m: f"{m[1]}{m[2]} finally , {(GERUND_VERBS | NEGATED_GERUNDS)[m[3]]}{m[4]}",
+    ),
     (
         rf"(^|,|;|\band\b)(\s*)({'|'.join(GERUND_VERBS | NEGATED_GERUNDS)})\b([^,;]+?)\s+"
         r"is\s+(?:the|my|your|our)\s+(?:job|task|plan|goal)\b",
         lambda m: f"{m[1]}{m[2]}{(GERUND_VERBS | NEGATED_GERUNDS)[m[3]]}{m[4]}",
     ),
+    # a gerund step that is forbidden: "touching the blue block before ... is not allowed" (do not touch ...)
+    (
+        rf"(^|,|;|\band\b)(\s*)({'|'.join(NEGATED_GERUNDS)})\b([^,;]+?)\s+"
+        r"is\s+(?:not\s+allowed|not\s+permitted|forbidden|prohibited)\b",
+        lambda m: f"{m[1]}{m[2]}do not {NEGATED_GERUNDS[m[3]]}{m[4]}",
+    ),
+    # the last step's time without its comma: "after all that yellow back to g"
+    (r"\b(after\s+all\s+(?:of\s+)?(?:that|this|these))\s+(?=(?:the\s+)?(?:red|blue|yellow)\b)", r"\1 , "),
     # "placement / return / transfer of X": the verb; "with placement of X before Y" adds that step
     (r"\bwith\s+(?:the\s+)?placement\s+of\s+(?=(?:the|all|both|red|blue|yellow)\b)", ", and place "),
     (
