@@ -163,8 +163,8 @@ def test_a_forbidden_gerund_and_a_last_step_said_as_a_noun():
         "Moving the three blocks to the opposite regions is the job, and touching the {} block before the {} "
     )
     last = (
-        "block has been touched is not allowed. After all of that, putting the yellow block back on {} is the "
-        "last step."
+        "block has been touched is not allowed. After all of that, putting the yellow block back on {} is "
+        "the last step."
     )
     assert_written_spec(4, job.format("blue", "red") + last.format("region G"))
     assert_not_the_written_spec(4, job.format("red", "blue") + last.format("region G"))
