@@ -169,3 +169,32 @@ def test_a_forbidden_gerund_and_a_last_step_said_as_a_noun():
     assert_written_spec(4, job.format("blue", "red") + last.format("region G"))
     assert_not_the_written_spec(4, job.format("red", "blue") + last.format("region G"))
     assert_not_the_written_spec(4, job.format("blue", "red") + last.format("region H"))
+
+
+@pytest.mark.parametrize(
+    ("task_id", "text", "near_miss"),
+    [
+        (
+            6,
+            "I wonder if you could place the red block before the blue block, and put the three objects on "
+            "regions G, H and I, one on each?",
+            "I wonder if you could place the blue block before the red block, and put the three objects on "
+            "regions G, H and I, one on each?",
+        ),
+        (
+            2,
+            "3 blocks 2 H I n J pls 1 per region k thx",
+            "3 blocks 2 H I n G pls 1 per region k thx",
+        ),
+        (
+            5,
+            "Before the blue block goes the red block; the red and blue blocks swap positions; and "
+            "at any time, to the opposite side goes the yellow block.",
+            "Before the red block goes the blue block; the red and blue blocks swap positions; and "
+            "at any time, to the opposite side goes the yellow block.",
+        ),
+    ],
+)
+def test_wondering_unpunctuated_letters_and_an_inverted_order(task_id, text, near_miss):
+    assert_written_spec(task_id, text)
+    assert_not_the_written_spec(task_id, near_miss)

@@ -76,6 +76,7 @@ _WISH_BEFORE_VERB = (
     r"(?:i|we)\s+(?:was|were|am|are)\s+hoping\s+(?:that\s+)?(?:you|the\s+(?:robot\s+)?arms|the\s+robots)\s+"
     r"(?:could|would|can|might|will)|"
     r"let\s+(?:s|us)|"
+    r"(?:i|we)\s+(?:wonder|am\s+wondering|was\s+wondering)\s+(?:if|whether)\s+you\s+(?:could|would|can|might)|"
     r"(?:(?:could|would|can|will)\s+you\s+(?:possibly\s+|please\s+|kindly\s+)?)?"
     r"(?:have|get)\s+(?:the\s+)?(?:robot\s+)?(?:arms|robots)(?:\s+to)?)"
 )

@@ -210,6 +210,15 @@ REWRITES: tuple[tuple[str, str], ...] = (
     ),
     (r"(?<=[a-z,])\s+n\s+(?=[a-z])", " and "),
     (r"\bmv\b", "move"),
+    # region letters listed without commas after a place's preposition: "to g h and i"
+    (r"\b(to|on|onto|in|into)\s+([e-j])\s+([e-j])\s+and\s+([e-j])\b", r"\1 \2 , \3 and \4"),
+    # an order with its subject after the verb: "before the blue block goes the red block"
+    (
+        r"(^|,|;|\band\b)\s*before\s+((?:the\s+)?(?:red|blue|yellow)(?:\s+block)?)\s+(?:goes|comes)\s+"
+        r"((?:the\s+)?(?:red|blue|yellow)(?:\s+block)?)\b",
+        r"\1 \3 goes before \2",
+    ),
+    (r"\s+k\s*(?=(?:please\s*)?$)", " "),  # "... k thx": ok, a closer
     (r"\b1\s+(?=after\s+(?:another|the\s+other)\b)", "one "),
     (r"\b(red|blue|yellow|the)\s+1\b", r"\1 one"),
     (r"\b1\s+(?=(?:on|in|per)\s+each\b|each\b)", "one "),
