@@ -222,6 +222,31 @@ def _pictograph(c: str) -> bool:
     return ord(c) > 0x7F and unicodedata.category(c) in ("So", "Sk")  # not "^" or "`" (ASCII, class Sk)
 
 
+# clauses said out of their order or joined where a sentence ends: the last step said first ("put yellow
+# back on G after all of this: <the rest>", "after all of that, put yellow back on G; but first <the rest>"
+# are the rest, then the last step) and a verbless goal joined by "and" ("one block per region, and the
+# three blocks on regions H, I and J": the goal said alone, as after a semicolon)
+_REORDERED = tuple(
+    (re.compile(pattern, re.IGNORECASE), replacement)
+    for pattern, replacement in (
+        (  # one command, then its time: not "<steps> / after all of that: <last step>"
+            r"^\s*((?:put|place|move|return|bring|set)\b[^:;.,/]+?)\s+"
+            r"(after\s+all\s+(?:of\s+)?(?:this|that|these|the\s+above))\s*:\s*(.+)$",
+            r"\3; \2, \1",
+        ),
+        (
+            r"^\s*(after\s+all\s+(?:of\s+)?(?:this|that|these))\s*,\s*([^;:.]+?)\s*;\s*but\s+first\s*,?\s*(.+)$",
+            r"\3; \1, \2",
+        ),
+        (
+            r"\s*,\s*and\s+(?=(?:the|all|both)\s+(?:three\s+)?(?:blocks|pillars|objects)\s+(?:on|onto|in|into)\s+"
+            r"(?:regions?\s+)?[e-j]\b)",
+            "; ",
+        ),
+    )
+)
+
+
 def _sentences(instruction: str) -> list[str]:
     """Split at line breaks (a list of steps or bullets), '.', ';', '!' and '?', but not in 'i.e.' nor after a
     step's number ('1. Put ...', also after a colon); a bullet ('-', '*', '•') starting a line or sentence is
@@ -247,8 +272,28 @@ def _sentences(instruction: str) -> list[str]:
         # an open checklist box is a bullet (a ticked one says what is done, and is left unread)
         text = re.sub(r"^\s*(?:\[\s*\]|☐)\s*", "- ", text)
         text = _slashes_read(_without_emoji_and_tags(text))
+        for pattern, replacement in _REORDERED:
+            text = pattern.sub(replacement, text)
         out += [re.sub(r"^\s*[-*•·]\s+", "", s) for s in re.split(r"[.;!?]+(?:\s|$)", text)]
-    return [s for s in out if s.strip()]
+    return _without_announcement([s for s in out if s.strip()])
+
+
+# "There are a few things to keep in mind." before the things: it names no block, place or order; a
+# number of things must be the number of sentences after it (else it stays, to be refused by name)
+_ANNOUNCED = re.compile(
+    r"^\s*there\s+(?:are|is)\s+(a\s+few|a\s+couple\s+of|some|several|two|three|four)\s+"
+    r"(?:things|points|rules|requirements|conditions)(?:\s+here|\s+to\s+(?:keep|bear)\s+in\s+mind|\s+to\s+"
+    r"(?:remember|note))?\s*:?\s*$",
+    re.IGNORECASE,
+)
+_NUMBERS = {"two": 2, "three": 3, "four": 4}
+
+
+def _without_announcement(sentences: list[str]) -> list[str]:
+    said = _ANNOUNCED.match(sentences[0]) if sentences else None
+    if said is None or _NUMBERS.get(said[1].lower(), len(sentences) - 1) != len(sentences) - 1:
+        return sentences
+    return sentences[1:]
 
 
 def _unquoted(instruction: str) -> str:

@@ -104,7 +104,66 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     (r"\bstill\s+(?=(?:needs?|has|have|must)\s+(?:to\b|be\b))", " "),
     # academic: the goal as a noun
     (r"^\s*the\s+(?:objective|aim|purpose|goal)\s+is\s+(?:that\b|the\s+(?=\w+\s+of\b))", " "),
+    # a step named by its noun after an order word is the step: "red before (the) placement of blue"
+    (
+        r"\b(before|after|then)\s+(?:the\s+)?(?:placement|positioning|placing|movement|relocation|transfer)\s+of\s+"
+        r"(?=(?:the|all|both|red|blue|yellow)\b)",
+        r"\1 ",
+    ),
     (r"\b(?:the\s+)?(?:relocation|movement)\s+of\s+(?=(?:the|all|both|each|every)\b)", "move "),
+    # a block's state named as the goal: "make sure the yellow block is back on region G" (put it back there)
+    (
+        r"\b(?:make\s+sure|ensure)\s+(?:that\s+)?((?:the\s+)?(?:red|blue|yellow)(?:\s+(?:block|one|object))?)\s+"
+        r"is\s+back\s+(?=(?:on|in|onto)\b)",
+        r"put \1 back ",
+    ),
+    # "I'd rather nothing went on R": a prohibition said as a wish (nothing may go on R)
+    (
+        r"\b(?:i|we)\s+would\s+rather\s+(nothing|no\s+(?:object|block|item)s?)\s+went\s+(?=(?:on|onto|in|into|to)\b)",
+        r"\1 may go ",
+    ),
+    # the places said again in an aside: "regions E, F and G (the ones beside arms a and b)"
+    (r"\(\s*the\s+ones\s+((?:beside|next\s+to|by|near)\s+arms?\b[^()]*?)\s*\)", r"\1"),
+    # "one block in each one": each of the places (a block holds no block)
+    (r"\b(one\s+(?:block|object|item)\s+(?:in|on)\s+each)\s+one\b", r"\1 region"),
+    # a gerund's step as the subject: "moving X to P is the job" (move X to P), "putting X back on G is the
+    # last step" (finally, put X back on G)
+    (
+        rf"(^|,|;|\band\b)(\s*)({'|'.join(GERUND_VERBS | NEGATED_GERUNDS)})\b([^,;]+?)\s+"
+        r"is\s+the\s+(?:last|final)\s+step\b",
+        lambda m: f"{m[1]}{m[2]} finally , {(GERUND_VERBS | NEGATED_GERUNDS)[m[3]]}{m[4]}",
+    ),
+    (
+        rf"(^|,|;|\band\b)(\s*)({'|'.join(GERUND_VERBS | NEGATED_GERUNDS)})\b([^,;]+?)\s+"
+        r"is\s+(?:the|my|your|our)\s+(?:job|task|plan|goal)\b",
+        lambda m: f"{m[1]}{m[2]}{(GERUND_VERBS | NEGATED_GERUNDS)[m[3]]}{m[4]}",
+    ),
+    # a gerund step that is forbidden: "touching the blue block before ... is not allowed" (do not touch ...)
+    (
+        rf"(^|,|;|\band\b)(\s*)({'|'.join(NEGATED_GERUNDS)})\b([^,;]+?)\s+"
+        r"is\s+(?:not\s+allowed|not\s+permitted|forbidden|prohibited)\b",
+        lambda m: f"{m[1]}{m[2]}do not {NEGATED_GERUNDS[m[3]]}{m[4]}",
+    ),
+    # the last step's time without its comma: "after all that yellow back to g"
+    (r"\b(after\s+all\s+(?:of\s+)?(?:that|this|these))\s+(?=(?:the\s+)?(?:red|blue|yellow)\b)", r"\1 , "),
+    # "placement / return / transfer of X": the verb; "with placement of X before Y" adds that step
+    (r"\bwith\s+(?:the\s+)?placement\s+of\s+(?=(?:the|all|both|red|blue|yellow)\b)", ", and place "),
+    (
+        r"\b(?:the\s+)?(placement|positioning|return|transfer|delivery)\s+of\s+"
+        r"(?=(?:the|all|both|each|every|red|blue|yellow)\b)",
+        lambda m: {"placement": "place", "positioning": "place", "delivery": "deliver"}.get(m[1], m[1]) + " ",
+    ),
+    (r"\b(?:an?\s+|the\s+)?(exchange|swap)\s+of\s+(?=the\s+positions?\b)", r"\1 "),
+    # "no placement of (any) objects on R": nothing placed on R
+    (
+        r"\bno\s+placements?\s+of\s+(?:any\s+)?(?:objects?|blocks?|items?|anything)\s+(?=(?:on|in|onto)\b)",
+        "nothing placed ",
+    ),
+    (
+        r"\bwith\s+an?\s+(?:limit|maximum)\s+of\s+"
+        r"(?=one\s+(?:block|object|item)s?\s+(?:per|on\s+each|in\s+each)\b)",
+        "with ",
+    ),
     (r"\ban?\s+arbitrary\s+(?=(?:empty|free|unoccupied)\s)", "any "),
     (r"\b(?:is|are)\s+(each|all|both)\s+to\s+be\b", r"must \1 be"),
     (

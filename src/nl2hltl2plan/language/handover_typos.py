@@ -33,6 +33,10 @@ SHORT_TYPOS = {
     "taht": "that",
     "bleu": "blue",
     "bule": "blue",
+    # clipped in texting
+    "nothin": "nothing",
+    "anythin": "anything",
+    "u": "you",
 }
 
 

@@ -40,7 +40,7 @@ from __future__ import annotations
 
 import re
 
-from nl2hltl2plan.language.handover_words import VERB
+from nl2hltl2plan.language.handover_words import GERUND_VERBS, NEGATED_GERUNDS, VERB
 
 # a participle after its object in a wish ("i'd like the blocks moved to ..."), with its verb
 _PARTICIPLES = {
@@ -76,6 +76,7 @@ _WISH_BEFORE_VERB = (
     r"(?:i|we)\s+(?:was|were|am|are)\s+hoping\s+(?:that\s+)?(?:you|the\s+(?:robot\s+)?arms|the\s+robots)\s+"
     r"(?:could|would|can|might|will)|"
     r"let\s+(?:s|us)|"
+    r"(?:i|we)\s+(?:wonder|am\s+wondering|was\s+wondering)\s+(?:if|whether)\s+you\s+(?:could|would|can|might)|"
     r"(?:(?:could|would|can|will)\s+you\s+(?:possibly\s+|please\s+|kindly\s+)?)?"
     r"(?:have|get)\s+(?:the\s+)?(?:robot\s+)?(?:arms|robots)(?:\s+to)?)"
 )
@@ -194,6 +195,14 @@ _RULES: tuple[tuple[str, str], ...] = (
 )
 _COMPILED = tuple((re.compile(pattern), replacement) for pattern, replacement in _RULES)
 _WISH_VERB = re.compile(rf"{_START}{_WISH_BEFORE_VERB}\s+(?=(?:{VERB}|swap|exchange|keep|make)\b)")
+# "would you mind moving ...": a request, read as its verb (a touching verb is not a placing request)
+_MINDED = {g: v for g, v in (GERUND_VERBS | NEGATED_GERUNDS).items() if v not in ("touch", "grab", "pick up")}
+_MIND = re.compile(rf"{_START}(?:would|do|will)\s+you\s+(?:please\s+)?mind\s+({'|'.join(_MINDED)})\b")
+# "might I (also) ask that X be placed ...": a request for what follows ("it is requested that ..."); "might I
+# ask you to move ...": the verb
+_MAY_I_ASK = re.compile(
+    rf"{_START}(?:might|may|could|can)\s+(?:i|we)\s+(?:also\s+)?(?:ask|request)\s+(?:you\s+)?(that|to)\b"
+)
 _WISH_PARTICIPLE = re.compile(rf"{_START}{_WISH_WITH_PARTICIPLE}\s+{_OBJECTS}\s+({_PARTICIPLE})\b")
 # "..., and the yellow block went to ...": the same wish goes on
 _AND_WENT = re.compile(rf"(,|\band\b)\s*{_OBJECTS}\s+went\b")
@@ -228,6 +237,8 @@ def unwished(text: str) -> str:
     >>> unwished("i would like the three pillars moved to e , f and g")
     ' move the three pillars to e , f and g'
     """
+    text = _MIND.sub(lambda m: f"{m[1]} {_MINDED[m[2]]}", text)
+    text = _MAY_I_ASK.sub(lambda m: f"{m[1]} it is requested that" if m[2] == "that" else f"{m[1]} ", text)
     text = _WISH_VERB.sub(r"\1 ", text)
     text = _WISH_PARTICIPLE.sub(_as_command, text)
     text = _WISH_GO.sub(r"\1 move \2", text)

@@ -138,6 +138,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
         "at any time",
     ),
     (r"\bat\s+any\s+time\s+at\s+any\s+time\b", "at any time"),
+    (r"\bat\s+any\s+time\s+that\s+(?:works|suits)(?:\s+(?:for\s+)?you)?\b", "at any time"),
     (
         r"\b(?:sequentially|in\s+sequence|successively|in\s+succession|consecutively|one\s+after\s+the\s+other)\b",
         "one after another",
@@ -198,6 +199,29 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\s*(?:→|->|=>)\s*", " to "),
     # abbreviations: "b4", "1st", "opp. side" (the full stop of "opp." is kept from ending the sentence)
     (r"\bb4\b", "before"),
+    # "<rule> as you move X ...": the rule holds while you do it ("as" of time before "you" and a verb)
+    (rf"\bas\s+you\s+(?={VERB}\b)", "while you "),
+    (r"\bcan\s+happen\s+(?=at\s+any\s+time\b)", ""),  # "moving yellow ... can happen at any time"
+    # texting: "2" for "to" before a place or an arm ("2 the opposite side", "2 regions e , f n g", "next 2
+    # arms"; a count of regions names as many letters), "n" for "and", "1" for "one" as a pronoun
+    (
+        r"\b2\s+(?=(?:the|any|opposite|arms?|region\s+[e-j]|regions\s+[e-j]\s*(?:,|and|n)\s*[e-j]\s*(?:,|and|n)|[e-j])\b)",
+        "to ",
+    ),
+    (r"(?<=[a-z,])\s+n\s+(?=[a-z])", " and "),
+    (r"\bmv\b", "move"),
+    # region letters listed without commas after a place's preposition: "to g h and i"
+    (r"\b(to|on|onto|in|into)\s+([e-j])\s+([e-j])\s+and\s+([e-j])\b", r"\1 \2 , \3 and \4"),
+    # an order with its subject after the verb: "before the blue block goes the red block"
+    (
+        r"(^|,|;|\band\b)\s*before\s+((?:the\s+)?(?:red|blue|yellow)(?:\s+block)?)\s+(?:goes|comes)\s+"
+        r"((?:the\s+)?(?:red|blue|yellow)(?:\s+block)?)\b",
+        r"\1 \3 goes before \2",
+    ),
+    (r"\s+k\s*(?=(?:please\s*)?$)", " "),  # "... k thx": ok, a closer
+    (r"\b1\s+(?=after\s+(?:another|the\s+other)\b)", "one "),
+    (r"\b(red|blue|yellow|the)\s+1\b", r"\1 one"),
+    (r"\b1\s+(?=(?:on|in|per)\s+each\b|each\b)", "one "),
     (r"\b1\s*st\b", "first"),
     (r"\bopp\b\.?", "opposite"),
     (r"\b(?:please\s+)?(?:be\s+advised|be\s+aware|note)\s+that\b", " "),
