@@ -95,7 +95,7 @@ def test_a_plural_head_shared_by_a_list_names_one_of_each(backend):
 # refused ("if" read as a condition); a wish's past subjunctive is its placing, and outside a wish "went"
 # stays a statement of where a thing was
 def test_a_wish_in_the_past_subjunctive_is_its_placing():
-    text = "I'd appreciate it if the green apple went on the blue plate and the orange went on the yellow plate."
+    text = "I'd appreciate it if the green apple went on the blue plate and the orange went on the yellow one"
     assert _summaries(text, "tabletop") == ["place GreenApple -> BluePlate", "place Orange -> YellowPlate"]
     with pytest.raises(HTTError):
         translate("The green apple went on the blue plate.", _world("tabletop"))
