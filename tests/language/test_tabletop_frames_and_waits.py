@@ -5,12 +5,8 @@ from __future__ import annotations
 
 import pytest
 
-from nl2hltl2plan.errors import HTTError
-from nl2hltl2plan.language.task_specs import transitive_closure
-from nl2hltl2plan.language.translate import translate
-from nl2hltl2plan.worlds.tabletop_world import tabletop_world
+from tests.language.test_tabletop_pairs import _reading
 
-WORLD = tabletop_world()
 YELLOW_THEN_BLUE = [
     (("GreenApple", "YellowPlate"), ("Carrot", "BluePlate")),
     (("Orange", "YellowPlate"), ("Carrot", "BluePlate")),
@@ -19,14 +15,8 @@ YELLOW_THEN_BLUE = [
 
 def _order(text: str) -> list | None:
     """The closed order by (object, plate) of a full reading; None on a refusal or a partial reading."""
-    try:
-        r = translate(text, WORLD, build=False)
-    except HTTError:
-        return None
-    if r.partial:
-        return None
-    key = {t.id: (t.object[0], t.receptacle[0]) for t in r.tasks}
-    return sorted((key[a], key[b]) for a, b in transitive_closure(r.before, list(key)))
+    read = _reading(text)
+    return None if read is None else read[1]
 
 
 @pytest.mark.parametrize(
