@@ -38,3 +38,15 @@ def assert_written_spec(task_id: int, text: str, k: int = 0) -> None:
     """`text` gives the task's written spec, node by node (the failure says which node differs)."""
     equal, why = specs_equivalent(spec_of(task_id, text, k), TASKS[task_id].hierarchical())
     assert equal, why
+
+
+def assert_written_spec_or_refused(task_id: int, text: str) -> None:
+    """A held-out or development sentence is refused with a one-line error (honest, a failure for the
+    benchmark) or gives the task's written spec: never another one."""
+    try:
+        spec = spec_of(task_id, text)
+    except HTTError as exc:
+        assert "\n" not in str(exc)
+        return
+    equal, why = specs_equivalent(spec, TASKS[task_id].hierarchical())
+    assert equal, (text, why)

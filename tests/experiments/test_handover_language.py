@@ -24,7 +24,13 @@ from handover_heldout import (
 )
 from handover_rephrasings import REPHRASINGS
 from handover_session10 import NEAR_MISSES_DEV10, NEAR_MISSES_S10, REASONS_READ, STILL_REFUSED, STYLES
-from handover_specs import TASKS, assert_not_the_written_spec, assert_written_spec, cases
+from handover_specs import (
+    TASKS,
+    assert_not_the_written_spec,
+    assert_written_spec,
+    assert_written_spec_or_refused,
+    cases,
+)
 from handover_specs import spec_of as _spec
 
 from nl2hltl2plan.errors import HTTError
@@ -139,7 +145,7 @@ def test_session10_validation_is_read_right_or_refused_never_misread(style):
     written spec, 16 were refused by name, 0 another spec; 65 / 7 / 0 after h50's round, which fixed refusals
     listed in results/handover/generality_session10.md)."""
     for task, text in STYLES["validation"][style].items():
-        _read_right_or_refused(int(task), text)
+        assert_written_spec_or_refused(int(task), text)
 
 
 @pytest.mark.parametrize("style", sorted(STYLES["validation2"]))
@@ -147,7 +153,7 @@ def test_session10_second_validation_is_read_right_or_refused_never_misread(styl
     """h50's validation batch, written with `dev10` and measured once on the final reader (15 of 24 gave
     the written spec, 9 were refused by name, 0 another spec)."""
     for task, text in STYLES["validation2"][style].items():
-        _read_right_or_refused(int(task), text)
+        assert_written_spec_or_refused(int(task), text)
 
 
 @pytest.mark.parametrize(("task_id", "text"), cases(REASONS_READ))
@@ -267,25 +273,16 @@ def test_bench_handover_plans_from_the_language_stage(tmp_path):
     assert "language_equal" in (tmp_path / "report.md").read_text()
 
 
-def _read_right_or_refused(task_id: int, text: str) -> None:
-    try:
-        spec = _spec(task_id, text)
-    except HTTError:
-        return  # refused, naming the words it cannot use: honest, a failure for the benchmark
-    equal, why = specs_equivalent(spec, TASKS[task_id].hierarchical())
-    assert equal, (text, why)
-
-
 @pytest.mark.parametrize(("task_id", "text"), cases(LEAD_HELD_OUT))
 def test_unseen_rephrasings_are_read_right_or_refused_never_misread(task_id, text):
-    _read_right_or_refused(task_id, text)
+    assert_written_spec_or_refused(task_id, text)
 
 
 @pytest.mark.parametrize("task_id", sorted(TASKS))
 def test_h43_rounds_are_read_right_or_refused_never_misread(task_id):
     """One case per task (the sentences of a task in one loop, to keep the file fast)."""
     for text in H43_ROUNDS.get(task_id, []):
-        _read_right_or_refused(task_id, text)
+        assert_written_spec_or_refused(task_id, text)
 
 
 @pytest.mark.parametrize(
