@@ -20,7 +20,7 @@ import networkx as nx
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.content_words import DETERMINERS, Unread, categories, free_order_phrase
-from nl2hltl2plan.language.grounding import Mention, camel_words
+from nl2hltl2plan.language.grounding import Mention, camel_words, sentence_start
 from nl2hltl2plan.language.parse_usage import ParseUsage
 from nl2hltl2plan.language.task_specs import transitive_closure
 
@@ -214,9 +214,11 @@ _LEADS = re.compile(r"\s*(?:(?:and|then|but|so|right|just|only)\s*)*")
 
 
 def _sentence_span(text: str, at: int) -> tuple[int, int]:
-    start = max((k + 1 for k in range(at) if text[k] in ".;!?"), default=0)
-    end = next((k for k in range(at, len(text)) if text[k] in ".;!?"), len(text))
-    return start, end
+    end = _SENTENCE_END.search(text, at)
+    return sentence_start(text, at), end.start() if end else len(text)
+
+
+_SENTENCE_END = re.compile(r"[.;!?]")
 
 
 def _tasks_of(
