@@ -1080,3 +1080,66 @@ DEV3_H90: dict[int, list[str]] = {
         "The yellow plate's turn comes first: green apple and orange. Then it's the blue plate's turn: "
         "carrot and red apple."],
 }
+
+# Issue 28 (h94): held-out rephrasings written and committed before any h94 rule (and before reading
+# VALID_H90's refusals per sentence), in voices no batch above uses (a two-line text message, a child's
+# excited voice, a YAML list, a passive-aggressive note, a very polite British request, a checkbox to-do
+# list, a question series, a non-native speaker, a manager delegating, a "what you'll need" card, a long
+# rambling message, a counted heading, a numbered plan with lettered sub-steps, a kids' party host, a
+# recipe card with a yield line). Measured on first contact without --per-sentence and once at the end;
+# the expected signature is each task's ground truth.
+VALID_H94: dict[int, list[str]] = {
+    1: ["hey r u free?\ngreen apple on the blue plate n orange on the yellow plate plz",
+        "Robot can you pleeease put the green apple on the blue plate?? And the orange on the yellow "
+        "plate!! Thank you robot!!",
+        "placements:\n  - green apple: blue plate\n  - orange: yellow plate",
+        "As I've asked twice already, the green apple goes on the blue plate and the orange goes on the "
+        "yellow plate.",
+        "Would you mind terribly popping the green apple onto the blue plate and the orange onto the yellow "
+        "plate?",
+        "[ ] green apple -> blue plate\n[ ] orange -> yellow plate"],
+    2: ["Can you put the green apple on the pink plate? The orange on the yellow plate? The red apple on "
+        "the blue plate? Any order's fine.",
+        "Please to put green apple in pink plate, orange in yellow plate and red apple in blue plate. Which "
+        "one first is not important.",
+        "I need you to own this one: green apple onto the pink plate, orange onto the yellow plate, red "
+        "apple onto the blue plate. Sequence is your call.",
+        "What you'll need: green apple, orange, red apple. Put the green apple on the pink plate, the orange "
+        "on the yellow plate and the red apple on the blue plate. Note: no particular order required.",
+        "So I was thinking about lunch and honestly it'd help a lot if the fruit got sorted out, nothing "
+        "fancy, the green apple should go on the pink plate, the orange on the yellow plate, and oh yeah "
+        "the red apple on the blue plate, I don't care what order you do them in as long as they all end up "
+        "where they belong.",
+        "Three little jobs for you, in no order at all: green apple on the pink plate, orange on the yellow "
+        "plate, red apple on the blue plate."],
+    3: ["Hi! Okay so I've got a bit of a weird request, hope that's fine. I'm setting the table for a kids' "
+        "party and every plate has a colour, right, so I want the carrot on the blue plate, the orange on "
+        "the yellow plate, then the green apple on the green plate (makes sense, right?) and finally the "
+        "red apple on the pink plate. Honestly the order doesn't matter at all, I just want it to look "
+        "nice. Thanks so much!",
+        "Plan:\n1. carrot - blue plate\n2. orange - yellow plate\n3. green apple - green plate\n4. red apple "
+        "- pink plate\n(the numbers are just for reference, do them in any order)",
+        "You must put carrot into blue plate, orange into yellow plate, green apple into green plate, red "
+        "apple into pink plate. Order is free.",
+        "ok robot here is the game: the carrot goes on the blue plate and the orange goes on the yellow "
+        "plate and the green apple goes on the green plate and the red apple goes on the pink plate and you "
+        "can do them in any order you want",
+        "plates pls: carrot blue, orange yellow, green apple green, red apple pink\nany order",
+        "Can you do me a favour? Would you put the carrot on the blue plate, the orange on the yellow plate, "
+        "the green apple on the green plate and the red apple on the pink plate? In any order?"],
+    4: ["1. Yellow plate:\n   a) green apple\n   b) orange\n2. Blue plate, once step 1 is finished:\n   a) "
+        "carrot\n   b) red apple\nThe letters within a step can be done in any order.",
+        "Firstly you put green apple and orange on yellow plate. After finish this, you put carrot and red "
+        "apple on blue plate, any order is ok.",
+        "yellow plate first: green apple + orange\nthen blue plate: carrot + red apple",
+        "Okay so here's the thing, I need the yellow plate done first, meaning the green apple and the "
+        "orange go on it, and it's only once that's done that you should start on the blue plate, which "
+        "gets the carrot and the red apple, and for each plate I really don't mind which of the two goes "
+        "first.",
+        "Could you put the green apple and the orange on the yellow plate first? And after that, the carrot "
+        "and the red apple on the blue plate? Either order within each pair.",
+        "first the green apple and the orange go on the yellow plate!! and THEN the carrot and the red apple "
+        "go on the blue plate!!",
+        "Makes: one tidy table\nStep 1: Lay the green apple and the orange on the yellow plate.\nStep 2: "
+        "When that's done, lay the carrot and the red apple on the blue plate."],
+}
