@@ -1143,3 +1143,53 @@ VALID_H94: dict[int, list[str]] = {
         "Makes: one tidy table\nStep 1: Lay the green apple and the orange on the yellow plate.\nStep 2: "
         "When that's done, lay the carrot and the red apple on the blue plate."],
 }
+
+# Issue 28 (h94): rephrasings for developing h94's rules (read per sentence), written at once in voices no
+# batch above uses (spoken dictation, a surfer, a waiter, a therapist, a movie trailer, a grocery list, a
+# hotel card, a scout leader, a philosopher, a worksheet, a telemarketer, a Slack thread) and with what
+# makes a voice hard to read: chit-chat sentences, counts in headings and closing remarks, references by
+# count, questions in a row, "then ... finally" inside a free-order list, sub-steps.
+DEV_H94: dict[int, list[str]] = {
+    1: ["Hope your day is going well! Green apple on the blue plate, orange on the yellow plate. Cheers.",
+        "dude just chuck the green apple on the blue plate and the orange on the yellow plate, easy",
+        "Two placements, that's all: the green apple on the blue plate and the orange on the yellow plate.",
+        "Grocery list for the plates:\ngreen apple (blue plate)\norange (yellow plate)",
+        "Our housekeeping team kindly asks that the green apple be set on the blue plate and the orange on "
+        "the yellow plate.",
+        "Put the green apple on the blue plate. Put the orange on the yellow plate. Those two placements, "
+        "that's all."],
+    2: ["Okay scouts, listen up! Green apple goes on the pink plate. Orange goes on the yellow plate. Red "
+        "apple goes on the blue plate. Do them in any order you like.",
+        "What is an order, really? Put the green apple on the pink plate, the orange on the yellow plate and "
+        "the red apple on the blue plate, in any order.",
+        "Is the green apple on the pink plate yet? No? Please put it there, and the orange on the yellow "
+        "plate and the red apple on the blue plate too, any order.",
+        "Exercise 3: place the green apple on the pink plate, the orange on the yellow plate and the red "
+        "apple on the blue plate. You may work in any order.",
+        "green apple on the pink plate comma orange on the yellow plate comma red apple on the blue plate "
+        "period any order period",
+        "Put the green apple on the pink plate, then the orange on the yellow plate, and finally the red "
+        "apple on the blue plate - honestly any order works."],
+    3: ["Four placements, any order: carrot on the blue plate, orange on the yellow plate, green apple on "
+        "the green plate, red apple on the pink plate.",
+        "How are you feeling today? When you're ready, place the carrot on the blue plate, the orange on the "
+        "yellow plate, the green apple on the green plate and the red apple on the pink plate, in any order.",
+        "In a world where every plate has its fruit... the carrot takes the blue plate, the orange the "
+        "yellow plate, the green apple the green plate, and the red apple the pink plate. Any order.",
+        "Can I interest you in putting the carrot on the blue plate, the orange on the yellow plate, the "
+        "green apple on the green plate and the red apple on the pink plate? In any order, of course.",
+        "+1 to the plan: carrot on the blue plate, orange on the yellow plate, green apple on the green "
+        "plate, red apple on the pink plate. order doesn't matter",
+        "Carrot on the blue plate, orange on the yellow plate, green apple on the green plate, red apple on "
+        "the pink plate. Four placements in all, any order."],
+    4: ["The yellow plate's two come before the blue plate's two: green apple and orange on the yellow "
+        "plate, then carrot and red apple on the blue plate.",
+        "Two for the yellow plate first (green apple, orange), then two for the blue plate (carrot, red "
+        "apple).",
+        "Step 1: yellow plate\n - green apple\n - orange\nStep 2: blue plate\n - carrot\n - red apple",
+        "May I suggest starting with the green apple and the orange on the yellow plate, and only after "
+        "that the carrot and the red apple on the blue plate?",
+        "Is the yellow plate done? Then the blue plate. Yellow plate: green apple and orange. Blue plate: "
+        "carrot and red apple.",
+        "green apple and orange on the yellow plate first, carrot and red apple on the blue plate second"],
+}

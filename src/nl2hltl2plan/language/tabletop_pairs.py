@@ -29,6 +29,7 @@ from nl2hltl2plan.language.grammar.restated import count_fits
 from nl2hltl2plan.language.grounding import camel_words
 from nl2hltl2plan.language.htt_build import build_htt
 from nl2hltl2plan.language.result import LanguageResult
+from nl2hltl2plan.language.tabletop_lines import lines_joined
 from nl2hltl2plan.language.tabletop_waits import plate_waits_read
 from nl2hltl2plan.language.tabletop_wording import (
     corrected,
@@ -151,6 +152,11 @@ class TabletopReader:
 
     def own_reading(self, instruction: str) -> LanguageResult | None:
         return None  # the shared grammar reads first (world_readers imports this module: no base class)
+
+    def one_line(self, lines: list[str]) -> str:
+        """An instruction on several lines as the one line its line breaks say (`tabletop_lines`: a plate
+        heading with its objects under it, a list of items one a line)."""
+        return lines_joined(lines, {camel_words(t): _is_plate(t) for t in self.world.object_types()})
 
     def prepared(self, instruction: str) -> str:
         """A clause that says where something is ("the carrot is on the blue plate") with no wish or goal

@@ -1,9 +1,11 @@
 """Each world's own reading around the shared grammar: one hook per kind of world (`World.kind`).
 
-`translate` asks `world_reader(world)` at six points (all but `unused` in the offline backends only),
+`translate` asks `world_reader(world)` at seven points (all but `unused` in the offline backends only),
 and knows no world by name:
 
 - `own_reading`: the world reads the whole instruction itself (the handover worlds, `handover_reading`);
+- `one_line`: the instruction's lines as the one line the readers read (the tabletop world reads a line
+  break by what the lines name, `tabletop_lines`; elsewhere the lines are joined with spaces);
 - `prepared`: the text as the shared grammar is to read it, or a refusal (the tabletop world refuses a
   statement of where something is and applies corrections first, `tabletop_pairs`);
 - `reread`: the world's reading of an instruction the grammar refused or read only in part (the tabletop
@@ -41,6 +43,10 @@ class WorldReader(Protocol):
         grammar reads it."""
         ...
 
+    def one_line(self, lines: list[str]) -> str:
+        """The instruction's lines (each one line of words) as one line."""
+        ...
+
     def prepared(self, instruction: str) -> str:
         """The instruction as the shared grammar is to read it; raises HTTError to refuse it."""
         ...
@@ -70,6 +76,9 @@ class SharedGrammar:
 
     def own_reading(self, instruction: str) -> LanguageResult | None:
         return None
+
+    def one_line(self, lines: list[str]) -> str:
+        return " ".join(lines)
 
     def prepared(self, instruction: str) -> str:
         return instruction

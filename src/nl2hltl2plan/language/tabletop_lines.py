@@ -1,0 +1,67 @@
+"""A tabletop instruction written on several lines, as the one line the readers read (issue 28).
+
+`translate` joins an instruction's lines with spaces, which loses what the line breaks said in a list
+written one item a line ("yellow plate first: green apple + orange" / "then blue plate: ..."; a plate
+heading with its objects on the lines under it; "[ ] green apple -> blue plate" / "[ ] orange -> ...").
+Here each line break says what a writer of one line would have put there, by what the lines name:
+
+- after a line that ends in punctuation, or in a word that cannot end a clause ("the", "on", "and"), the
+  line goes on: a space, as before;
+- after a line that names nothing (a title, a subject line, a table's header), a space, as before;
+- a line that names plates and no object, with a line of object names alone after it, is that plate's
+  heading: ": " ("Step 1: yellow plate" / "- green apple" -> "Step 1: yellow plate: green apple");
+- two lines in a row of object names alone are items of one list: ", ";
+- any other line that names something ends a sentence: ". ".
+
+A bullet that opens a line ("-", "*", "•", "[ ]", "[x]") only marks the item and is dropped. A line's
+number or label ("1.", "a)", "Step 2:") is kept: the readers read those as before.
+
+>>> kinds = {"green apple": False, "orange": False, "yellow plate": True}
+>>> lines_joined(["Yellow plate", "- green apple", "- orange"], kinds)
+'Yellow plate: green apple, orange'
+>>> lines_joined(["[ ] green apple -> yellow plate", "[ ] orange -> yellow plate"], kinds)
+'green apple -> yellow plate. orange -> yellow plate'
+>>> lines_joined(["put the green apple on the", "yellow plate"], kinds)
+'put the green apple on the yellow plate'
+"""
+
+from __future__ import annotations
+
+import re
+
+from nl2hltl2plan.language.tabletop_wording import mention_pattern
+
+_BULLET = re.compile(r"^(?:[-*•·–]|\[\s*[xX✓]?\s*\])(?:\s+|$)")
+# a line that ends so: the sentence goes on past the line break
+# what a line of names alone may hold besides the names ("the green apple and the orange", "carrot + orange")
+_OTHER_WORDS = re.compile(r"\b(?:the|a|an|and)\b|[\s,+&]")
+_GOES_ON = re.compile(
+    r"(?:[.,;:!?(\[{]|\b(?:the|a|an|on|onto|in|into|to|and|or|with|of|then|first))\s*$", re.IGNORECASE
+)
+
+
+def lines_joined(lines: list[str], kinds: dict[str, bool]) -> str:
+    """The lines (each already one line of words) as one line, each break read by what the lines name
+    (see the module docstring); `kinds`: each name in words -> is it a plate."""
+    pattern = mention_pattern(kinds, re.I)
+    items = [_BULLET.sub("", line).strip() for line in lines]
+    items = [item for item in items if item]
+    named = [{_is_plate(found, kinds) for found in pattern.findall(item)} for item in items]
+    bare = [not _OTHER_WORDS.sub("", pattern.sub(" ", item)) for item in items]
+    out = items[0] if items else ""
+    for i in range(1, len(items)):
+        if _GOES_ON.search(items[i - 1]) or not named[i - 1]:
+            out += " "  # the sentence goes on, or the line names nothing (a title, a subject line)
+        elif named[i - 1] == {True} and named[i] == {False} and bare[i]:
+            out += ": "  # a plate heading and the objects under it
+        elif named[i - 1] == {False} and bare[i - 1] and named[i] == {False} and bare[i]:
+            out += ", "  # items of one list of objects
+        else:
+            out += ". "
+        out += items[i]
+    return out
+
+
+def _is_plate(found: str, kinds: dict[str, bool]) -> bool | None:
+    name = " ".join(found.lower().split())
+    return kinds.get(name, kinds.get(name.removesuffix("s")))

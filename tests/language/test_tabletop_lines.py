@@ -1,0 +1,55 @@
+"""An instruction on several lines in the tabletop world (`tabletop_lines`): each line break read by what
+the lines name; the ALFRED worlds still join the lines with spaces."""
+
+from __future__ import annotations
+
+import pytest
+
+from nl2hltl2plan.language.translate import translate
+from nl2hltl2plan.worlds.demo import demo_world
+from tests.language.test_tabletop_pairs import _reading
+
+YELLOW_THEN_BLUE = (
+    [
+        ("Carrot", "BluePlate"),
+        ("GreenApple", "YellowPlate"),
+        ("Orange", "YellowPlate"),
+        ("RedApple", "BluePlate"),
+    ],
+    [
+        (("GreenApple", "YellowPlate"), ("Carrot", "BluePlate")),
+        (("GreenApple", "YellowPlate"), ("RedApple", "BluePlate")),
+        (("Orange", "YellowPlate"), ("Carrot", "BluePlate")),
+        (("Orange", "YellowPlate"), ("RedApple", "BluePlate")),
+    ],
+)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Step 1: yellow plate\n - green apple\n - orange\nStep 2: blue plate\n - carrot\n - red apple",
+        "First the yellow plate\n* green apple\n* orange\nThen the blue plate\n* carrot\n* red apple",
+    ],
+)
+def test_a_plate_heading_takes_the_objects_listed_under_it(text):
+    assert _reading(text) == YELLOW_THEN_BLUE
+
+
+def test_a_bullet_list_of_placements_is_read_one_placement_a_line():
+    text = "[ ] green apple -> blue plate\n[x] orange -> yellow plate"
+    assert _reading(text) == ([("GreenApple", "BluePlate"), ("Orange", "YellowPlate")], [])
+
+
+def test_a_line_that_stops_mid_sentence_goes_on_past_the_break():
+    text = "put the green apple on the\nblue plate and the orange on the yellow plate"
+    assert _reading(text) == ([("GreenApple", "BluePlate"), ("Orange", "YellowPlate")], [])
+
+
+def test_a_plate_heading_with_nothing_listed_under_it_is_refused():
+    assert _reading("Step 1: yellow plate\nStep 2: blue plate\n - carrot") is None
+
+
+def test_other_worlds_join_the_lines_with_spaces():
+    res = translate("put the apple\nin the fridge", demo_world(), build=False)
+    assert res.instruction == "put the apple in the fridge"
