@@ -1193,3 +1193,35 @@ DEV_H94: dict[int, list[str]] = {
         "carrot and red apple.",
         "green apple and orange on the yellow plate first, carrot and red apple on the blue plate second"],
 }
+
+# Issue 28 (h94): a second development batch, written at once after the line-break rule and before any
+# other h94 rule, in voices no batch uses (a Spanish speaker's "the plate blue", snake_case identifiers,
+# unicode arrows and ticks, a support agent, a voice assistant's wake word, a tired parent, a quiz of
+# yes/no questions, a tourist's phrasebook, a Reddit post, a teacher counting aloud).
+DEV2_H94: dict[int, list[str]] = {
+    1: ["Please put the green apple in the plate blue and the orange in the plate yellow.",
+        "green_apple → blue_plate\norange → yellow_plate",
+        "✔ green apple on blue plate ✔ orange on yellow plate",
+        "Thanks for reaching out! To resolve this, kindly place the green apple on the blue plate and the "
+        "orange on the yellow plate."],
+    2: ["Hey Google, put the green apple on the pink plate, the orange on the yellow plate and the red apple "
+        "on the blue plate, any order.",
+        "ugh ok. green apple, pink plate. orange, yellow plate. red apple, blue plate. whatever order.",
+        "Can the green apple go on the pink plate? Can the orange go on the yellow plate? Can the red apple "
+        "go on the blue plate? Yes to all three, in any order.",
+        "I would like: the green apple → pink plate, the orange → yellow plate, the red apple → blue plate. "
+        "Order is not important, thank you."],
+    3: ["TIL robots can do this: carrot on the blue plate, orange on the yellow plate, green apple on the "
+        "green plate, red apple on the pink plate. Any order pls.",
+        "One, the carrot on the blue plate; two, the orange on the yellow plate; three, the green apple on "
+        "the green plate; four, the red apple on the pink plate. Any order!",
+        "Put the carrot in the plate blue, the orange in the plate yellow, the green apple in the plate "
+        "green and the red apple in the plate pink, the order is free.",
+        "carrot/blue plate, orange/yellow plate, green apple/green plate, red apple/pink plate - no order"],
+    4: ["First, green apple and orange → yellow plate. After, carrot and red apple → blue plate.",
+        "Please, first you put the green apple and the orange in the plate yellow, and after you put the "
+        "carrot and the red apple in the plate blue.",
+        "Can you fill the yellow plate first with the green apple and the orange? Then fill the blue plate "
+        "with the carrot and the red apple.",
+        "ugh ok. yellow plate first: green apple, orange. blue plate after: carrot, red apple."],
+}

@@ -53,3 +53,29 @@ def test_a_plate_heading_with_nothing_listed_under_it_is_refused():
 def test_other_worlds_join_the_lines_with_spaces():
     res = translate("put the apple\nin the fridge", demo_world(), build=False)
     assert res.instruction == "put the apple in the fridge"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Put the carrot in the plate blue, the orange in the plate yellow, the green apple in the plate "
+        "green and the red apple in the plate pink, the order is free.",
+        "carrot -> blue_plate, orange -> yellow_plate, green_apple -> green_plate, red_apple -> pink_plate",
+    ],
+)
+def test_names_spelt_otherwise_are_the_worlds_names(text):
+    assert _reading(text) == (
+        [
+            ("Carrot", "BluePlate"),
+            ("GreenApple", "GreenPlate"),
+            ("Orange", "YellowPlate"),
+            ("RedApple", "PinkPlate"),
+        ],
+        [],
+    )
+
+
+def test_a_colour_after_a_plate_before_another_names_noun_stays_as_it_was():
+    # "the yellow plate green apple": no "plate green" here; the list still pairs each object with its plate
+    text = "carrot on the blue plate green apple on the green plate"
+    assert _reading(text) == ([("Carrot", "BluePlate"), ("GreenApple", "GreenPlate")], [])

@@ -1,4 +1,5 @@
-"""A tabletop instruction written on several lines, as the one line the readers read (issue 28).
+"""A tabletop instruction as the readers read it (issue 28): its lines as one line, and the names of
+the world's things as the world spells them.
 
 `translate` joins an instruction's lines with spaces, which loses what the line breaks said in a list
 written one item a line ("yellow plate first: green apple + orange" / "then blue plate: ..."; a plate
@@ -16,6 +17,11 @@ Here each line break says what a writer of one line would have put there, by wha
 A bullet that opens a line ("-", "*", "•", "[ ]", "[x]") only marks the item and is dropped. A line's
 number or label ("1.", "a)", "Step 2:") is kept: the readers read those as before.
 
+Names spelt otherwise (`names_spelt`) are the world's names where the words can mean nothing else: an
+identifier's words ("green_apple", "blue-plate") and a colour said after its noun, as in the languages
+that put it there ("the plate blue": the blue plate; not before another name's noun, "the plate green
+apple ...", nor after a name, "the yellow plate green ...").
+
 >>> kinds = {"green apple": False, "orange": False, "yellow plate": True}
 >>> lines_joined(["Yellow plate", "- green apple", "- orange"], kinds)
 'Yellow plate: green apple, orange'
@@ -23,6 +29,8 @@ number or label ("1.", "a)", "Step 2:") is kept: the readers read those as befor
 'green apple -> yellow plate. orange -> yellow plate'
 >>> lines_joined(["put the green apple on the", "yellow plate"], kinds)
 'put the green apple on the yellow plate'
+>>> names_spelt("Put the Green_Apple on the plate yellow", kinds)
+'Put the green apple on the yellow plate'
 """
 
 from __future__ import annotations
@@ -65,3 +73,23 @@ def lines_joined(lines: list[str], kinds: dict[str, bool]) -> str:
 def _is_plate(found: str, kinds: dict[str, bool]) -> bool | None:
     name = " ".join(found.lower().split())
     return kinds.get(name, kinds.get(name.removesuffix("s")))
+
+
+def names_spelt(text: str, kinds: dict[str, bool]) -> str:
+    """`text` with each name written as an identifier or with its colour after its noun spelt as the
+    world's name (see the module docstring); `kinds`: each name in words -> is it a plate."""
+    two_words = [name.split() for name in kinds if len(name.split()) == 2]
+    for first, second in two_words:
+        joined = rf"\b{first}[_-]{second}\b|\b{first.capitalize()}{second.capitalize()}\b"
+        text = re.sub(joined, f"{first} {second}", text, flags=re.IGNORECASE)
+    nouns = "|".join(sorted({second for _, second in two_words}))
+    modifiers = {first for first, _ in two_words}
+    for first, second in two_words:
+        after = re.compile(rf"\b(?P<before>\w+\s+){second}\s+{first}\b(?!\s+(?:{nouns})\b)", re.IGNORECASE)
+        text = after.sub(
+            lambda m, name=f"{first} {second}": (
+                m[0] if m["before"].strip().lower() in modifiers else f"{m['before']}{name}"
+            ),
+            text,
+        )
+    return text

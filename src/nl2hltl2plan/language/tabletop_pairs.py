@@ -29,7 +29,7 @@ from nl2hltl2plan.language.grammar.restated import count_fits
 from nl2hltl2plan.language.grounding import camel_words
 from nl2hltl2plan.language.htt_build import build_htt
 from nl2hltl2plan.language.result import LanguageResult
-from nl2hltl2plan.language.tabletop_lines import lines_joined
+from nl2hltl2plan.language.tabletop_lines import lines_joined, names_spelt
 from nl2hltl2plan.language.tabletop_waits import plate_waits_read
 from nl2hltl2plan.language.tabletop_wording import (
     corrected,
@@ -153,10 +153,12 @@ class TabletopReader:
     def own_reading(self, instruction: str) -> LanguageResult | None:
         return None  # the shared grammar reads first (world_readers imports this module: no base class)
 
-    def one_line(self, lines: list[str]) -> str:
-        """An instruction on several lines as the one line its line breaks say (`tabletop_lines`: a plate
-        heading with its objects under it, a list of items one a line)."""
-        return lines_joined(lines, {camel_words(t): _is_plate(t) for t in self.world.object_types()})
+    def as_read(self, lines: list[str]) -> str:
+        """An instruction's lines as the one line its line breaks say (a plate heading with its objects
+        under it, a list of items one a line), with the names spelt as the world spells them
+        ("green_apple", "the plate blue"): `tabletop_lines`."""
+        kinds = {camel_words(t): _is_plate(t) for t in self.world.object_types()}
+        return names_spelt(lines_joined(lines, kinds), kinds)
 
     def prepared(self, instruction: str) -> str:
         """A clause that says where something is ("the carrot is on the blue plate") with no wish or goal

@@ -116,8 +116,8 @@ def translate(
     if backend in PARSERS and (own := reader.own_reading("\n".join(lines))) is not None:
         return own  # a line break ends a step
     if backend in PARSERS:
-        # the world's reading of the line breaks; "if you don't mind": no condition, no negation
-        instruction = without_courtesy(reader.one_line(lines))
+        # the world's reading of line breaks and names; "if you don't mind": no condition, no negation
+        instruction = without_courtesy(reader.as_read(lines))
         look = world_lookup(world) if isinstance(world, World) else None
         grounder = Grounder(types, scene or "the scene")
         rest, negations = read_negations(reader.prepared(instruction), grounder, look)

@@ -4,8 +4,9 @@
 and knows no world by name:
 
 - `own_reading`: the world reads the whole instruction itself (the handover worlds, `handover_reading`);
-- `one_line`: the instruction's lines as the one line the readers read (the tabletop world reads a line
-  break by what the lines name, `tabletop_lines`; elsewhere the lines are joined with spaces);
+- `as_read`: the instruction's lines as the one line the readers read (the tabletop world reads a line
+  break by what the lines name and spells names as it does, `tabletop_lines`; elsewhere the lines are
+  joined with spaces);
 - `prepared`: the text as the shared grammar is to read it, or a refusal (the tabletop world refuses a
   statement of where something is and applies corrections first, `tabletop_pairs`);
 - `reread`: the world's reading of an instruction the grammar refused or read only in part (the tabletop
@@ -43,8 +44,8 @@ class WorldReader(Protocol):
         grammar reads it."""
         ...
 
-    def one_line(self, lines: list[str]) -> str:
-        """The instruction's lines (each one line of words) as one line."""
+    def as_read(self, lines: list[str]) -> str:
+        """The instruction's lines (each one line of words) as the one line the readers read."""
         ...
 
     def prepared(self, instruction: str) -> str:
@@ -77,7 +78,7 @@ class SharedGrammar:
     def own_reading(self, instruction: str) -> LanguageResult | None:
         return None
 
-    def one_line(self, lines: list[str]) -> str:
+    def as_read(self, lines: list[str]) -> str:
         return " ".join(lines)
 
     def prepared(self, instruction: str) -> str:
