@@ -1,5 +1,6 @@
-"""An instruction on several lines in the tabletop world (`tabletop_lines`): each line break read by what
-the lines name; the ALFRED worlds still join the lines with spaces."""
+"""The tabletop world's text as its readers read it (`tabletop_lines`): each line break read by what the
+lines name (the ALFRED worlds still join the lines with spaces), names spelt otherwise, and an "after"
+with nothing after it in its clause."""
 
 from __future__ import annotations
 
@@ -79,3 +80,14 @@ def test_a_colour_after_a_plate_before_another_names_noun_stays_as_it_was():
     # "the yellow plate green apple": no "plate green" here; the list still pairs each object with its plate
     text = "carrot on the blue plate green apple on the green plate"
     assert _reading(text) == ([("Carrot", "BluePlate"), ("GreenApple", "GreenPlate")], [])
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "First, green apple and orange -> yellow plate. After, carrot and red apple -> blue plate.",
+        "yellow plate first: green apple, orange. blue plate after: carrot, red apple.",
+    ],
+)
+def test_an_after_that_opens_a_clause_or_closes_a_plates_heading_orders_the_steps(text):
+    assert _reading(text) == YELLOW_THEN_BLUE

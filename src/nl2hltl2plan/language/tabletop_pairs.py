@@ -49,12 +49,13 @@ from nl2hltl2plan.worlds.world import World
 
 _DONE = r"(?:done|finished|complete[d]?)"
 _THAT = r"(?:that|this|those|these|them|it)"
-# where one ordered group ends and the next begins: "then", "after that", "once that's done", "when
-# you've done that", "subsequently", "next" (not "next to")
+# where one ordered group ends and the next begins: "then", "after that", "After," (opening its clause,
+# nothing after it in the clause), "once that's done", "when you've done that", "subsequently", "next"
+# (not "next to")
 _THERE = r"(?:there|on\s+it|in\s+it|on\s+there|in\s+place|placed|down)"
 _THEN = re.compile(
     r"\b(?:only\s+)?(?:then,?\s+and\s+only\s+then|(?:and\s+)?then|after\s+(?:that|this|those|these|which)|"
-    r"afterwards?|thereafter|subsequently|"
+    r"afterwards?|(?<![a-z]\s)(?<![a-z])after(?=\s*[,:])|thereafter|subsequently|"
     r"next(?!\s+to\b)|second(?:ly)?|(?:and\s+)?(?:finally|lastly)|"
     rf"(?:once|when|after|as\s+soon\s+as)\s+(?:{_THAT}(?:'s|s|\s+is|\s+are|'re)\s+{_DONE}|"
     rf"(?:they|both|{_THAT}|both\s+of\s+them|all\s+of\s+them)(?:'re|'s|\s+are|\s+is)\s+(?:both\s+|all\s+)?{_THERE}|"
@@ -439,9 +440,10 @@ def _reference_fronted(text: str, pattern: re.Pattern[str]) -> str:
 
 
 _CLAUSE_END = re.compile(r"[,.;!?\n]")
-# a "then" that closes its clause: "the carrot goes on the blue plate after that.", "... red apple after,"
+# a "then" that closes its clause: "the carrot goes on the blue plate after that.", "... red apple after,",
+# or a heading: "blue plate after: carrot, red apple"
 _TRAILING_THEN = re.compile(
-    rf"(?:(?P<first>\bfirst\b)|{_THEN.pattern}|\b(?:after|later|last)\b)(?=\s*(?:[,.;!?\n]|$))"
+    rf"(?:(?P<first>\bfirst\b)|{_THEN.pattern}|\b(?:after|later|last)\b)(?=\s*(?:[,.;:!?\n]|$))"
 )
 
 
