@@ -36,6 +36,7 @@ apple ...", nor after a name, "the yellow plate green ...").
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 
 from nl2hltl2plan.language.tabletop_wording import mention_pattern
 
@@ -86,10 +87,14 @@ def names_spelt(text: str, kinds: dict[str, bool]) -> str:
     modifiers = {first for first, _ in two_words}
     for first, second in two_words:
         after = re.compile(rf"\b(?P<before>\w+\s+){second}\s+{first}\b(?!\s+(?:{nouns})\b)", re.IGNORECASE)
-        text = after.sub(
-            lambda m, name=f"{first} {second}": (
-                m[0] if m["before"].strip().lower() in modifiers else f"{m['before']}{name}"
-            ),
-            text,
-        )
+        text = after.sub(_colour_fronted(f"{first} {second}", modifiers), text)
     return text
+
+
+def _colour_fronted(name: str, modifiers: set[str]) -> Callable[[re.Match[str]], str]:
+    """ "the plate blue" -> "the blue plate"; "yellow plate blue" (after a name's modifier) as it was."""
+
+    def fronted(m: re.Match[str]) -> str:
+        return m[0] if m["before"].strip().lower() in modifiers else f"{m['before']}{name}"
+
+    return fronted

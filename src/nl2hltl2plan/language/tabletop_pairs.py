@@ -29,6 +29,7 @@ from nl2hltl2plan.language.grammar.restated import count_fits
 from nl2hltl2plan.language.grounding import camel_words
 from nl2hltl2plan.language.htt_build import build_htt
 from nl2hltl2plan.language.result import LanguageResult
+from nl2hltl2plan.language.tabletop_counts import plate_counts_read
 from nl2hltl2plan.language.tabletop_lines import lines_joined, names_spelt
 from nl2hltl2plan.language.tabletop_waits import plate_waits_read
 from nl2hltl2plan.language.tabletop_wording import (
@@ -312,6 +313,8 @@ def read_pairs(text: str, types: set[str]) -> Reading | None:
     by_words = {camel_words(t): t for t in types}
     kinds = {w: _is_plate(t) for w, t in by_words.items()}
     plain = plain_words(text, kinds, _shared_heads(by_words))
+    plates = mention_pattern([w for w, plate in kinds.items() if plate])
+    plain, plate_counts = plate_counts_read(plain, plates)  # "two for the yellow plate": checked below
     unread_order = _RELATION_VERB.search(plain) or _ORDER_MATTERS.search(plain) or _ORDER_SAID.search(plain)
     if stated_not_asked(plain, by_words) is not None or unread_order or _ALTERNATIVES.search(text.lower()):
         return None
@@ -352,6 +355,9 @@ def read_pairs(text: str, types: set[str]) -> Reading | None:
         return None
     if sum(map(len, group_ids)) != len(tasks):
         return None  # a plate with placements that the order of the plates leaves out
+    on_plate = Counter(camel_words((t.receptacle or [""])[0]) for t in tasks)
+    if any(on_plate[plate] != count for plate, count in plate_counts):
+        return None  # "two for the yellow plate" and another number of placements on it
     if last_free is not None and (len(group_ids) < 2 or len(group_ids[-1]) != last_free):
         return None  # "those last two can go in any order" must name the last group, and only it
     if free and all(len(g) < 2 for g in group_ids):
@@ -483,7 +489,8 @@ def _trailing_then_fronted(text: str, pattern: re.Pattern[str]) -> str:
 # the words besides plate names of an order said of plates alone ("do the yellow plate before the blue
 # plate", "start with the yellow plate, then the blue plate", "the blue plate after the yellow plate")
 _PLATE_ORDER_WORDS = frozenset(
-    "do the fill load start begin with and then first before after next please you could can".split()
+    "do the fill load start begin with and then first before after next please you could can go goes come "
+    "comes placed filled done".split()
 )
 
 
