@@ -1225,3 +1225,39 @@ DEV2_H94: dict[int, list[str]] = {
         "with the carrot and the red apple.",
         "ugh ok. yellow plate first: green apple, orange. blue plate after: carrot, red apple."],
 }
+
+# Issue 28 (h94): a third development batch, written at once after the rules for DEV_H94 and DEV2_H94 and
+# measured before any rule for it, in voices no batch uses (a sommelier, a tired student, a museum
+# placard, an IKEA-style pictogram legend, an air-traffic controller, a knitting pattern, a car's voice
+# assistant, a camp counsellor, a baker, a lifeguard, a lawyer's letter, a podcast host).
+DEV3_H94: dict[int, list[str]] = {
+    1: ["For this pairing I'd suggest the green apple with the blue plate, and the orange with the yellow "
+        "plate.",
+        "cant think rn. green apple blue plate. orange yellow plate. ty",
+        "Legend: green apple = blue plate, orange = yellow plate.",
+        "Robot one, cleared to place the green apple on the blue plate and the orange on the yellow plate."],
+    2: ["Row 1: green apple onto pink plate. Row 2: orange onto yellow plate. Row 3: red apple onto blue "
+        "plate. Rows may be worked in any order.",
+        "Okay campers! Green apple, you're on the pink plate. Orange, yellow plate. Red apple, blue plate. "
+        "Go in any order!",
+        "Could you put the green apple on the pink plate? And the orange on the yellow plate? And the red "
+        "apple on the blue plate? Order doesn't matter.",
+        "Further to our conversation, please arrange for the green apple to be placed on the pink plate, "
+        "the orange on the yellow plate and the red apple on the blue plate, in no particular order."],
+    3: ["Bake-off rules: carrot on the blue plate, orange on the yellow plate, green apple on the green "
+        "plate, red apple on the pink plate. No set order.",
+        "Navigate to: carrot - blue plate; orange - yellow plate; green apple - green plate; red apple - "
+        "pink plate. Any order.",
+        "Today's episode is brought to you by plates! Carrot on the blue plate, orange on the yellow plate, "
+        "green apple on the green plate, red apple on the pink plate, in any order.",
+        "Everyone out of the pool and onto their plates: carrot on blue, orange on yellow, green apple on "
+        "green, red apple on pink. Whatever order."],
+    4: ["Pattern: yellow plate (green apple, orange). Repeat with blue plate (carrot, red apple) once the "
+        "yellow plate is complete.",
+        "Green apple and orange on the yellow plate to start; carrot and red apple on the blue plate to "
+        "finish.",
+        "The yellow plate comes first with the green apple and the orange, and the blue plate comes second "
+        "with the carrot and the red apple.",
+        "First up: the green apple and the orange on the yellow plate. Next up: the carrot and the red apple "
+        "on the blue plate."],
+}

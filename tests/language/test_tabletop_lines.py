@@ -91,3 +91,26 @@ def test_a_colour_after_a_plate_before_another_names_noun_stays_as_it_was():
 )
 def test_an_after_that_opens_a_clause_or_closes_a_plates_heading_orders_the_steps(text):
     assert _reading(text) == YELLOW_THEN_BLUE
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Green apple and orange on the yellow plate to start; carrot and red apple on the blue plate to "
+        "finish.",
+        "The yellow plate comes first with the green apple and the orange, and the blue plate comes second "
+        "with the carrot and the red apple.",
+    ],
+)
+def test_where_a_clause_stands_in_the_whole_orders_it(text):
+    assert _reading(text) == YELLOW_THEN_BLUE
+
+
+def test_a_clause_closed_by_to_finish_with_nothing_to_follow_is_refused():
+    # which placement comes last is not said: no reading with no order is given
+    assert _reading("Put the carrot on the blue plate and the orange on the yellow plate to finish.") is None
+
+
+def test_plates_said_with_no_colour_are_the_plates_paired():
+    text = "Grocery list for the plates:\ngreen apple (blue plate)\norange (yellow plate)"
+    assert _reading(text) == ([("GreenApple", "BluePlate"), ("Orange", "YellowPlate")], [])

@@ -123,6 +123,11 @@ _ORDER_SAID = re.compile(
     r"(?:right|left)|(?:bigg|small|larg|tall|short|heavi|light)est\s+(?:first|last)|in\s+turn|"
     r"sequential(?:ly)?|in\s+sequence|one\s+(?:after|by)\s+(?:the\s+)?(?:other|one))\b"
 )
+# where a clause stands in the whole ("... to start", "... to finish", closing it), which a reading with no
+# order leaves unused ("To start, ..." opens the first step instead)
+_PLACE_IN_THE_WHOLE = re.compile(
+    r"(?<=[a-z]\s)to\s+(?:start|begin|finish|end|close|wrap\s+up)\b(?=\s*(?:[,.;:!?]|$))"
+)
 _PRIORITY = re.compile(r"\bpriorit(?:y|ies|i[sz]e[sd]?)\b")
 # labels that name alternatives, not steps ("Plan A: ... Plan B: ...", "Option 1: ..."): which one is meant
 # is not said, and doing both is no reading of them
@@ -240,7 +245,9 @@ class TabletopReader:
             out[found[0]] = Unread(found[0], "order", why)
         for found in _ALTERNATIVES.finditer(res.instruction.lower()):
             out[found[0]] = Unread(found[0], "condition", "alternatives: which one is meant is not said")
-        said = [*_ORDER_SAID.finditer(res.instruction.lower()), *_PRIORITY.finditer(res.instruction.lower())]
+        lowered = res.instruction.lower()
+        said = [*_ORDER_SAID.finditer(lowered), *_PRIORITY.finditer(lowered)]
+        said += _PLACE_IN_THE_WHOLE.finditer(lowered)
         for found in said if not res.before else ():
             why = "it says an order (a wait, what follows, a priority, a sorting) and the reading has none"
             out[found[0]] = Unread(found[0], "order", why)
@@ -326,6 +333,8 @@ def read_pairs(text: str, types: set[str]) -> Reading | None:
     if stepped is not None:  # a clause waiting for placements, and a "then" closing its clause, put first
         stepped = _trailing_then_fronted(_reference_fronted(stepped, pattern), pattern)
         stepped = _then_after_subject_fronted(stepped, pattern)
+    if stepped is not None and _PLACE_IN_THE_WHOLE.search(stepped):
+        return None  # "... to finish" where it closes no clause that a "then" can open
     plates_first, rest = _plate_order(stepped or "", pattern)
     if plates_first and (_THEN.search(rest) or _FIRST.search(rest) or _BEFORE.search(rest)):
         return None  # the order said of plates and again of placements
@@ -363,7 +372,23 @@ def read_pairs(text: str, types: set[str]) -> Reading | None:
     if free and all(len(g) < 2 for g in group_ids):
         return None  # "A, then B - either order is ok": the remark frees no pair the "then"s leave unordered
     before = [(a, b) for i, g in enumerate(group_ids) for h in group_ids[i + 1 :] for a in g for b in h]
-    return tasks, before, group_ids, _ONE_PER_PLATE.sub(" ", stepped)  # kept by its heading, not counted
+    # "each plate gets one thing" is kept by its heading, not counted; "the plates" are the plates paired
+    modifiers = {w for name, plate in kinds.items() if plate for w in name.split()[:-1]}
+    return tasks, before, group_ids, _plates_said_alone(_ONE_PER_PLATE.sub(" ", stepped), modifiers)
+
+
+def _plates_said_alone(text: str, modifiers: set[str]) -> str:
+    """`text` without "plates" said with no colour or count before it ("the plates", "by plates"): in the
+    tabletop world the plates that the reading pairs things with, each of which it has by name."""
+
+    def dropped(m: re.Match[str]) -> str:
+        counted = m["before"] in modifiers or m["before"] in _COUNTED_BY or m["before"].isdigit()
+        return m[0] if counted else m["before"]
+
+    return re.sub(r"\b(?P<before>[\w']+)\s+plates\b", dropped, text)
+
+
+_COUNTED_BY = frozenset("one two three four five both all many several some few these those".split())
 
 
 def _sentence_pairs(
@@ -448,8 +473,12 @@ def _reference_fronted(text: str, pattern: re.Pattern[str]) -> str:
 _CLAUSE_END = re.compile(r"[,.;!?\n]")
 # a "then" that closes its clause: "the carrot goes on the blue plate after that.", "... red apple after,",
 # or a heading: "blue plate after: carrot, red apple"
+# a clause closed by where it stands in the whole: "... on the yellow plate to start; ... to finish"
+_TO_START = r"to\s+(?:start|begin)(?:\s+with)?|at\s+first"
+_TO_FINISH = r"to\s+(?:finish|end|close|wrap\s+up)|at\s+the\s+end|in\s+the\s+end"
 _TRAILING_THEN = re.compile(
-    rf"(?:(?P<first>\bfirst\b)|{_THEN.pattern}|\b(?:after|later|last)\b)(?=\s*(?:[,.;:!?\n]|$))"
+    rf"(?:(?P<first>\b(?:first|{_TO_START})\b)|{_THEN.pattern}|\b(?:after|later|last|{_TO_FINISH})\b)"
+    r"(?=\s*(?:[,.;:!?\n]|$))"
 )
 
 
@@ -460,11 +489,17 @@ _SUBJECT_VERB = r"(?:gets?|goes|go|takes?|receives?|holds?|should|must|can|will|
 def _then_after_subject_fronted(text: str, pattern: re.Pattern[str]) -> str:
     """A "then" between a clause's named subject and its verb put before the clause ("; the blue plate then
     gets the carrot" -> "; then the blue plate gets the carrot"), so that it cuts the groups where the
-    clause starts; not before another name ("the carrot then the orange" orders the two)."""
+    clause starts; not before another name ("the carrot then the orange" orders the two). So is a "second",
+    "next" or "last" after the subject's "comes" ("the blue plate comes second with ...")."""
     subject = rf"(?P<subject>(?:the\s+)?{pattern.pattern})"
+    start = r"(?P<start>(?:^|[,.;:!?])\s*(?:and\s+)?)"
+    text = re.sub(
+        rf"{start}(?:then\s+)?{subject}\s+then\s+(?={_SUBJECT_VERB}\b)", r"\g<start>then \g<subject> ", text
+    )
+    # the same said by where the subject comes: "..., and the blue plate comes second with the carrot"
     return re.sub(
-        rf"(?P<start>(?:^|[,.;:!?])\s*(?:and\s+)?)(?:then\s+)?{subject}\s+then\s+(?={_SUBJECT_VERB}\b)",
-        r"\g<start>then \g<subject> ",
+        rf"{start}{subject}\s+(?P<verb>comes|goes|is)\s+(?:second|next|after(?:wards)?|later|last)\b",
+        r"\g<start>then \g<subject> \g<verb>",
         text,
     )
 
