@@ -1,11 +1,17 @@
-"""Counts said of a plate in the tabletop world (issue 28): "two for the yellow plate", "the yellow plate's
-two", "the yellow plate gets two things". Such a count says how many placements go on that plate; the
-pairs reading (`tabletop_pairs.read_pairs`) takes it out of the words it reads and keeps the reading only
-where the placements it pairs on that plate are that many (else the count is not understood: refused).
+"""Plates said in number in the tabletop world (issue 28).
+
+Counts said of a plate: "two for the yellow plate", "the yellow plate's two", "the yellow plate gets two
+things". Such a count says how many placements go on that plate; the pairs reading
+(`tabletop_pairs.read_pairs`) takes it out of the words it reads and keeps the reading only where the
+placements it pairs on that plate are that many (else the count is not understood: refused).
 
 The count stands beside the plate with nothing but a noun for things between ("two things for", "two
 for", "'s two", "gets two (things)"); a count beside an object's name ("two green apples") is another
 matter, left to the plural and count rules.
+
+"The plates" with no colour or count before it ("Grocery list for the plates:", "brought to you by
+plates") are, in this world, the plates that the reading pairs things with, each of which it has by name
+(`plates_said_alone`).
 
 >>> import re
 >>> plate = re.compile(r"\\b(?:yellow|blue) plate\\b")
@@ -43,3 +49,18 @@ def plate_counts_read(text: str, plate: re.Pattern[str]) -> tuple[str, list[tupl
     text = re.sub(rf"{name}'s\s+{_COUNT}{_THINGS}\b", taken(r"\g<plate>"), text)  # PLATE's two
     gets = rf"{name}\s+(?P<gets>{_GETS})\s+{_COUNT}{_THINGS}\b(?:\s*,)?"  # PLATE gets two things, ...
     return re.sub(gets, taken(r"\g<plate> \g<gets>"), text), claims
+
+
+def plates_said_alone(text: str, kinds: dict[str, bool]) -> str:
+    """`text` without "plates" said with no colour or count before it (see the module docstring); `kinds`:
+    each name in words -> is it a plate."""
+    modifiers = {w for name, plate in kinds.items() if plate for w in name.split()[:-1]}
+
+    def dropped(m: re.Match[str]) -> str:
+        counted = m["before"] in modifiers or m["before"] in _COUNTED_BY or m["before"].isdigit()
+        return m[0] if counted else m["before"]
+
+    return re.sub(r"\b(?P<before>[\w']+)\s+plates\b", dropped, text)
+
+
+_COUNTED_BY = frozenset("one two three four five both all many several some few these those".split())

@@ -29,8 +29,18 @@ from nl2hltl2plan.language.grammar.restated import count_fits
 from nl2hltl2plan.language.grounding import camel_words
 from nl2hltl2plan.language.htt_build import build_htt
 from nl2hltl2plan.language.result import LanguageResult
-from nl2hltl2plan.language.tabletop_counts import plate_counts_read
+from nl2hltl2plan.language.tabletop_counts import plate_counts_read, plates_said_alone
 from nl2hltl2plan.language.tabletop_lines import lines_joined, names_spelt
+from nl2hltl2plan.language.tabletop_order import (
+    BEFORE,
+    FIRST,
+    FIRST_CLOSING,
+    PLACE_IN_THE_WHOLE,
+    THEN,
+    reference_fronted,
+    then_after_subject_fronted,
+    trailing_then_fronted,
+)
 from nl2hltl2plan.language.tabletop_waits import plate_waits_read
 from nl2hltl2plan.language.tabletop_wording import (
     corrected,
@@ -48,31 +58,6 @@ from nl2hltl2plan.language.tabletop_wording import (
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter, transitive_closure
 from nl2hltl2plan.worlds.world import World
 
-_DONE = r"(?:done|finished|complete[d]?)"
-_THAT = r"(?:that|this|those|these|them|it)"
-# where one ordered group ends and the next begins: "then", "after that", "After," (opening its clause,
-# nothing after it in the clause), "once that's done", "when you've done that", "subsequently", "next"
-# (not "next to")
-_THERE = r"(?:there|on\s+it|in\s+it|on\s+there|in\s+place|placed|down)"
-_THEN = re.compile(
-    r"\b(?:only\s+)?(?:then,?\s+and\s+only\s+then|(?:and\s+)?then|after\s+(?:that|this|those|these|which)|"
-    r"afterwards?|(?<![a-z]\s)(?<![a-z])after(?=\s*[,:])|thereafter|subsequently|"
-    r"next(?!\s+to\b)|second(?:ly)?|(?:and\s+)?(?:finally|lastly)|"
-    rf"(?:once|when|after|as\s+soon\s+as)\s+(?:{_THAT}(?:'s|s|\s+is|\s+are|'re)\s+{_DONE}|"
-    rf"(?:they|both|{_THAT}|both\s+of\s+them|all\s+of\s+them)(?:'re|'s|\s+are|\s+is)\s+(?:both\s+|all\s+)?{_THERE}|"
-    rf"you(?:'ve|\s+have|'re|\s+are)\s+{_DONE}(?:\s+(?:with\s+)?{_THAT})?|{_DONE}))\b"
-)
-# how the first group is marked: "first" / "to begin" / "start with" / "before anything else" before its
-# first name ("What I need first is ..."), or "first" closing it or its heading ("yellow plate first: ...")
-_FIRST = re.compile(
-    r"\b(?:first(?:ly)?|to\s+(?:begin|start)|(?:start|begin)(?:\s+off)?(?:\s+(?:with|by))?|"
-    r"before\s+(?:you\s+do\s+)?anything\s+else)\b"
-)
-# "A before B" inside a clause (not "Before B, A", not "before that")
-_BEFORE = re.compile(
-    r"(?<=[a-z])\s+before\s+(?!(?:that|this|those|these|it|which|then|anything|everything)\b)"
-)
-_FIRST_CLOSING = re.compile(r"\bfirst\b(?=\W*$|\s*:)")
 # words that state some other order, relation, count or negation: the fallback never guesses at them. They
 # are the shared categories of check 1 (`content_words.txt`), and the words the pairs reading has no place
 # for though those categories do not refuse them: a place relative to another thing ("near", "behind",
@@ -122,11 +107,6 @@ _ORDER_SAID = re.compile(
     r"(?:anti-?|counter-?)?clockwise|by\s+(?:size|colou?r|height|weight|name|type)|(?:left|right)\s+to\s+"
     r"(?:right|left)|(?:bigg|small|larg|tall|short|heavi|light)est\s+(?:first|last)|in\s+turn|"
     r"sequential(?:ly)?|in\s+sequence|one\s+(?:after|by)\s+(?:the\s+)?(?:other|one))\b"
-)
-# where a clause stands in the whole ("... to start", "... to finish", closing it), which a reading with no
-# order leaves unused ("To start, ..." opens the first step instead)
-_PLACE_IN_THE_WHOLE = re.compile(
-    r"(?<=[a-z]\s)to\s+(?:start|begin|finish|end|close|wrap\s+up)\b(?=\s*(?:[,.;:!?]|$))"
 )
 _PRIORITY = re.compile(r"\bpriorit(?:y|ies|i[sz]e[sd]?)\b")
 # labels that name alternatives, not steps ("Plan A: ... Plan B: ...", "Option 1: ..."): which one is meant
@@ -247,7 +227,7 @@ class TabletopReader:
             out[found[0]] = Unread(found[0], "condition", "alternatives: which one is meant is not said")
         lowered = res.instruction.lower()
         said = [*_ORDER_SAID.finditer(lowered), *_PRIORITY.finditer(lowered)]
-        said += _PLACE_IN_THE_WHOLE.finditer(lowered)
+        said += PLACE_IN_THE_WHOLE.finditer(lowered)
         for found in said if not res.before else ():
             why = "it says an order (a wait, what follows, a priority, a sorting) and the reading has none"
             out[found[0]] = Unread(found[0], "order", why)
@@ -331,12 +311,12 @@ def read_pairs(text: str, types: set[str]) -> Reading | None:
     stepped = steps_read(last_item_unmarked(unordered) if listed else unordered, listed)
     pattern = mention_pattern(by_words)
     if stepped is not None:  # a clause waiting for placements, and a "then" closing its clause, put first
-        stepped = _trailing_then_fronted(_reference_fronted(stepped, pattern), pattern)
-        stepped = _then_after_subject_fronted(stepped, pattern)
-    if stepped is not None and _PLACE_IN_THE_WHOLE.search(stepped):
+        stepped = trailing_then_fronted(reference_fronted(stepped, pattern), pattern)
+        stepped = then_after_subject_fronted(stepped, pattern)
+    if stepped is not None and PLACE_IN_THE_WHOLE.search(stepped):
         return None  # "... to finish" where it closes no clause that a "then" can open
     plates_first, rest = _plate_order(stepped or "", pattern)
-    if plates_first and (_THEN.search(rest) or _FIRST.search(rest) or _BEFORE.search(rest)):
+    if plates_first and (THEN.search(rest) or FIRST.search(rest) or BEFORE.search(rest)):
         return None  # the order said of plates and again of placements
     groups = None if stepped is None else _ordered_groups(rest, pattern)
     if stepped is None or groups is None:
@@ -373,22 +353,7 @@ def read_pairs(text: str, types: set[str]) -> Reading | None:
         return None  # "A, then B - either order is ok": the remark frees no pair the "then"s leave unordered
     before = [(a, b) for i, g in enumerate(group_ids) for h in group_ids[i + 1 :] for a in g for b in h]
     # "each plate gets one thing" is kept by its heading, not counted; "the plates" are the plates paired
-    modifiers = {w for name, plate in kinds.items() if plate for w in name.split()[:-1]}
-    return tasks, before, group_ids, _plates_said_alone(_ONE_PER_PLATE.sub(" ", stepped), modifiers)
-
-
-def _plates_said_alone(text: str, modifiers: set[str]) -> str:
-    """`text` without "plates" said with no colour or count before it ("the plates", "by plates"): in the
-    tabletop world the plates that the reading pairs things with, each of which it has by name."""
-
-    def dropped(m: re.Match[str]) -> str:
-        counted = m["before"] in modifiers or m["before"] in _COUNTED_BY or m["before"].isdigit()
-        return m[0] if counted else m["before"]
-
-    return re.sub(r"\b(?P<before>[\w']+)\s+plates\b", dropped, text)
-
-
-_COUNTED_BY = frozenset("one two three four five both all many several some few these those".split())
+    return tasks, before, group_ids, plates_said_alone(_ONE_PER_PLATE.sub(" ", stepped), kinds)
 
 
 def _sentence_pairs(
@@ -425,7 +390,7 @@ def _ordered_groups(text: str, pattern: re.Pattern[str]) -> list[str] | None:
     """The text cut at its "then"s; a first-marker may open the first group (before its first name),
     close it, or, when the group names one plate, stand anywhere in it; and only when a "then" follows.
     None: no text left, or a "first" with no "then"."""
-    split = _THEN.split(text)
+    split = THEN.split(text)
     if len(split) > 1 and not split[0].strip(" ,.;:!?-"):
         return None  # "when you're done, put ...": after what is not said
     parts = [q for p in split for q in _before_split(p, pattern) if q.strip(" ,.;:!?")]
@@ -433,92 +398,15 @@ def _ordered_groups(text: str, pattern: re.Pattern[str]) -> list[str] | None:
         return None
     names = [_name(f) for f in pattern.findall(parts[0])]
     name = pattern.search(parts[0])
-    opened = _FIRST.search(parts[0], 0, name.start() if name else len(parts[0]))
-    opened = opened or _FIRST_CLOSING.search(parts[0])
+    opened = FIRST.search(parts[0], 0, name.start() if name else len(parts[0]))
+    opened = opened or FIRST_CLOSING.search(parts[0])
     if opened is None and len({n for n in names if n.endswith("plate")}) == 1:
-        opened = _FIRST.search(parts[0])  # one plate in the group: "do the yellow plate first, with ..."
+        opened = FIRST.search(parts[0])  # one plate in the group: "do the yellow plate first, with ..."
     if opened is not None and len(parts) == 1:
         return None  # "first" with no "then" after it: which tasks come first is not said
     if opened is not None:
         parts[0] = parts[0][: opened.start()] + " " + parts[0][opened.end() :]
     return parts
-
-
-# "once the green apple and the orange are on the yellow plate, ...": a placement the rest waits for
-_REFERENCE_FIRST = re.compile(
-    r"^\W*(?:only\s+)?(?:once|when|after|as\s+soon\s+as)\s+(?P<clause>[^,.;:!?]+?)\s*"
-    r"(?:,\s*(?:then\s+)?|\s+then\s+)"
-)
-_STATE_WORDS = frozenset(
-    "the and both all is are 's 're has have been already on in onto into sitting placed".split()
-)
-_STATE_VERBS = re.compile(r"\b(?:is|are|has|have|been|already|sitting|placed)\b|'s\b|'re\b")
-
-
-def _reference_fronted(text: str, pattern: re.Pattern[str]) -> str:
-    """A text that opens with a clause waiting for placements it states ("Once the green apple and the
-    orange are in the yellow plate, put ...") as those placements first and the rest then; the text as
-    it is otherwise (a clause with any other word, or none stating where a named object is)."""
-    m = _REFERENCE_FIRST.match(text)
-    if m is None:
-        return text
-    names = [_name(f) for f in pattern.findall(m["clause"])]
-    words = set(re.findall(r"[a-z']+", pattern.sub(" ", m["clause"])))
-    stated = _STATE_VERBS.search(pattern.sub(" ", m["clause"]))
-    if not names or not names[-1].endswith("plate") or not words <= _STATE_WORDS or stated is None:
-        return text
-    return f"first {_STATE_VERBS.sub(' ', m['clause'])}, then {text[m.end() :]}"
-
-
-_CLAUSE_END = re.compile(r"[,.;!?\n]")
-# a "then" that closes its clause: "the carrot goes on the blue plate after that.", "... red apple after,",
-# or a heading: "blue plate after: carrot, red apple"
-# a clause closed by where it stands in the whole: "... on the yellow plate to start; ... to finish"
-_TO_START = r"to\s+(?:start|begin)(?:\s+with)?|at\s+first"
-_TO_FINISH = r"to\s+(?:finish|end|close|wrap\s+up)|at\s+the\s+end|in\s+the\s+end"
-_TRAILING_THEN = re.compile(
-    rf"(?:(?P<first>\b(?:first|{_TO_START})\b)|{_THEN.pattern}|\b(?:after|later|last|{_TO_FINISH})\b)"
-    r"(?=\s*(?:[,.;:!?\n]|$))"
-)
-
-
-# the verbs a "then" may stand before in "the blue plate then gets ...", "the carrot then goes ..."
-_SUBJECT_VERB = r"(?:gets?|goes|go|takes?|receives?|holds?|should|must|can|will|may|needs?|has|have|is|are)"
-
-
-def _then_after_subject_fronted(text: str, pattern: re.Pattern[str]) -> str:
-    """A "then" between a clause's named subject and its verb put before the clause ("; the blue plate then
-    gets the carrot" -> "; then the blue plate gets the carrot"), so that it cuts the groups where the
-    clause starts; not before another name ("the carrot then the orange" orders the two). So is a "second",
-    "next" or "last" after the subject's "comes" ("the blue plate comes second with ...")."""
-    subject = rf"(?P<subject>(?:the\s+)?{pattern.pattern})"
-    start = r"(?P<start>(?:^|[,.;:!?])\s*(?:and\s+)?)"
-    text = re.sub(
-        rf"{start}(?:then\s+)?{subject}\s+then\s+(?={_SUBJECT_VERB}\b)", r"\g<start>then \g<subject> ", text
-    )
-    # the same said by where the subject comes: "..., and the blue plate comes second with the carrot"
-    return re.sub(
-        rf"{start}{subject}\s+(?P<verb>comes|goes|is)\s+(?:second|next|after(?:wards)?|later|last)\b",
-        r"\g<start>then \g<subject> \g<verb>",
-        text,
-    )
-
-
-def _trailing_then_fronted(text: str, pattern: re.Pattern[str]) -> str:
-    """A "then" or "first" that closes its clause put before it ("the carrot goes on the blue plate after
-    that" -> "then the carrot goes on the blue plate"), where the clause names one plate (so that its
-    placements are one step: "A on P and B on Q after that" does not say whether B alone comes after)
-    and, for a "then", something is named before it."""
-    for m in reversed(list(_TRAILING_THEN.finditer(text))):
-        starts = [b.end() for b in _CLAUSE_END.finditer(text, 0, m.start())]
-        start = starts[-1] if starts else 0
-        clause = text[start : m.start()]
-        plates = {_name(f) for f in pattern.findall(clause) if _name(f).endswith("plate")}
-        marked = _THEN.search(clause) or _FIRST.search(clause)
-        if len(plates) != 1 or marked or not (m["first"] or pattern.search(text, 0, start)):
-            continue
-        text = f"{text[:start]} {'first' if m['first'] else 'then'} {clause.strip()}{text[m.end() :]}"
-    return text
 
 
 # the words besides plate names of an order said of plates alone ("do the yellow plate before the blue
@@ -555,7 +443,7 @@ def _before_split(part: str, pattern: re.Pattern[str]) -> list[str]:
     """ "A on P before B or C goes on Q": A's group, then B's and C's ("or" after "before" waits for each
     of them). Only a "before" inside a clause, not one that opens it ("Before X, Y" puts Y first) or
     refers back ("before that")."""
-    pieces = _BEFORE.split(part)
+    pieces = BEFORE.split(part)
     for i in range(1, len(pieces)):
         names = list(pattern.finditer(pieces[i]))
         for left, right in reversed(list(zip(names, names[1:], strict=False))):

@@ -1,0 +1,127 @@
+"""The order words of the tabletop world's pairs reading (`tabletop_pairs.read_pairs`), and where they may
+stand (issue 28).
+
+The pairs reading cuts a text into ordered groups at its "then"s (`THEN`) and marks the first group by a
+"first" (`FIRST`, `FIRST_CLOSING`). An order word that stands elsewhere in its clause is first put before
+the clause: a clause that waits for placements it states ("Once the green apple and the orange are on
+the yellow plate, ...": those placements first, `reference_fronted`), a "then" or "first" closing its
+clause ("the carrot goes on the blue plate after that", "... on the yellow plate to start; ... to
+finish": `trailing_then_fronted`), and one after the clause's named subject ("the blue plate then gets
+...", "the blue plate comes second with ...": `then_after_subject_fronted`).
+"""
+
+from __future__ import annotations
+
+import re
+
+_DONE = r"(?:done|finished|complete[d]?)"
+_THAT = r"(?:that|this|those|these|them|it)"
+# where one ordered group ends and the next begins: "then", "after that", "After," (opening its clause,
+# nothing after it in the clause), "once that's done", "when you've done that", "subsequently", "next"
+# (not "next to")
+_THERE = r"(?:there|on\s+it|in\s+it|on\s+there|in\s+place|placed|down)"
+THEN = re.compile(
+    r"\b(?:only\s+)?(?:then,?\s+and\s+only\s+then|(?:and\s+)?then|after\s+(?:that|this|those|these|which)|"
+    r"afterwards?|(?<![a-z]\s)(?<![a-z])after(?=\s*[,:])|thereafter|subsequently|"
+    r"next(?!\s+to\b)|second(?:ly)?|(?:and\s+)?(?:finally|lastly)|"
+    rf"(?:once|when|after|as\s+soon\s+as)\s+(?:{_THAT}(?:'s|s|\s+is|\s+are|'re)\s+{_DONE}|"
+    rf"(?:they|both|{_THAT}|both\s+of\s+them|all\s+of\s+them)(?:'re|'s|\s+are|\s+is)\s+(?:both\s+|all\s+)?{_THERE}|"
+    rf"you(?:'ve|\s+have|'re|\s+are)\s+{_DONE}(?:\s+(?:with\s+)?{_THAT})?|{_DONE}))\b"
+)
+# how the first group is marked: "first" / "to begin" / "start with" / "before anything else" before its
+# first name ("What I need first is ..."), or "first" closing it or its heading ("yellow plate first: ...")
+FIRST = re.compile(
+    r"\b(?:first(?:ly)?|to\s+(?:begin|start)|(?:start|begin)(?:\s+off)?(?:\s+(?:with|by))?|"
+    r"before\s+(?:you\s+do\s+)?anything\s+else)\b"
+)
+# "A before B" inside a clause (not "Before B, A", not "before that")
+BEFORE = re.compile(
+    r"(?<=[a-z])\s+before\s+(?!(?:that|this|those|these|it|which|then|anything|everything)\b)"
+)
+FIRST_CLOSING = re.compile(r"\bfirst\b(?=\W*$|\s*:)")
+
+# where a clause stands in the whole ("... to start", "... to finish", closing it), which a reading with no
+# order leaves unused ("To start, ..." opens the first step instead)
+PLACE_IN_THE_WHOLE = re.compile(
+    r"(?<=[a-z]\s)to\s+(?:start|begin|finish|end|close|wrap\s+up)\b(?=\s*(?:[,.;:!?]|$))"
+)
+
+# "once the green apple and the orange are on the yellow plate, ...": a placement the rest waits for
+_REFERENCE_FIRST = re.compile(
+    r"^\W*(?:only\s+)?(?:once|when|after|as\s+soon\s+as)\s+(?P<clause>[^,.;:!?]+?)\s*"
+    r"(?:,\s*(?:then\s+)?|\s+then\s+)"
+)
+_STATE_WORDS = frozenset(
+    "the and both all is are 's 're has have been already on in onto into sitting placed".split()
+)
+_STATE_VERBS = re.compile(r"\b(?:is|are|has|have|been|already|sitting|placed)\b|'s\b|'re\b")
+
+
+def reference_fronted(text: str, pattern: re.Pattern[str]) -> str:
+    """A text that opens with a clause waiting for placements it states ("Once the green apple and the
+    orange are in the yellow plate, put ...") as those placements first and the rest then; the text as
+    it is otherwise (a clause with any other word, or none stating where a named object is)."""
+    m = _REFERENCE_FIRST.match(text)
+    if m is None:
+        return text
+    names = [_name(f) for f in pattern.findall(m["clause"])]
+    words = set(re.findall(r"[a-z']+", pattern.sub(" ", m["clause"])))
+    stated = _STATE_VERBS.search(pattern.sub(" ", m["clause"]))
+    if not names or not names[-1].endswith("plate") or not words <= _STATE_WORDS or stated is None:
+        return text
+    return f"first {_STATE_VERBS.sub(' ', m['clause'])}, then {text[m.end() :]}"
+
+
+_CLAUSE_END = re.compile(r"[,.;!?\n]")
+# a "then" that closes its clause: "the carrot goes on the blue plate after that.", "... red apple after,",
+# or a heading: "blue plate after: carrot, red apple"
+# a clause closed by where it stands in the whole: "... on the yellow plate to start; ... to finish"
+_TO_START = r"to\s+(?:start|begin)(?:\s+with)?|at\s+first"
+_TO_FINISH = r"to\s+(?:finish|end|close|wrap\s+up)|at\s+the\s+end|in\s+the\s+end"
+_TRAILING_THEN = re.compile(
+    rf"(?:(?P<first>\b(?:first|{_TO_START})\b)|{THEN.pattern}|\b(?:after|later|last|{_TO_FINISH})\b)"
+    r"(?=\s*(?:[,.;:!?\n]|$))"
+)
+
+
+# the verbs a "then" may stand before in "the blue plate then gets ...", "the carrot then goes ..."
+_SUBJECT_VERB = r"(?:gets?|goes|go|takes?|receives?|holds?|should|must|can|will|may|needs?|has|have|is|are)"
+
+
+def then_after_subject_fronted(text: str, pattern: re.Pattern[str]) -> str:
+    """A "then" between a clause's named subject and its verb put before the clause ("; the blue plate then
+    gets the carrot" -> "; then the blue plate gets the carrot"), so that it cuts the groups where the
+    clause starts; not before another name ("the carrot then the orange" orders the two). So is a "second",
+    "next" or "last" after the subject's "comes" ("the blue plate comes second with ...")."""
+    subject = rf"(?P<subject>(?:the\s+)?{pattern.pattern})"
+    start = r"(?P<start>(?:^|[,.;:!?])\s*(?:and\s+)?)"
+    text = re.sub(
+        rf"{start}(?:then\s+)?{subject}\s+then\s+(?={_SUBJECT_VERB}\b)", r"\g<start>then \g<subject> ", text
+    )
+    # the same said by where the subject comes: "..., and the blue plate comes second with the carrot"
+    return re.sub(
+        rf"{start}{subject}\s+(?P<verb>comes|goes|is)\s+(?:second|next|after(?:wards)?|later|last)\b",
+        r"\g<start>then \g<subject> \g<verb>",
+        text,
+    )
+
+
+def trailing_then_fronted(text: str, pattern: re.Pattern[str]) -> str:
+    """A "then" or "first" that closes its clause put before it ("the carrot goes on the blue plate after
+    that" -> "then the carrot goes on the blue plate"), where the clause names one plate (so that its
+    placements are one step: "A on P and B on Q after that" does not say whether B alone comes after)
+    and, for a "then", something is named before it."""
+    for m in reversed(list(_TRAILING_THEN.finditer(text))):
+        starts = [b.end() for b in _CLAUSE_END.finditer(text, 0, m.start())]
+        start = starts[-1] if starts else 0
+        clause = text[start : m.start()]
+        plates = {_name(f) for f in pattern.findall(clause) if _name(f).endswith("plate")}
+        marked = THEN.search(clause) or FIRST.search(clause)
+        if len(plates) != 1 or marked or not (m["first"] or pattern.search(text, 0, start)):
+            continue
+        text = f"{text[:start]} {'first' if m['first'] else 'then'} {clause.strip()}{text[m.end() :]}"
+    return text
+
+
+def _name(found: str) -> str:
+    return " ".join(found.split())
