@@ -37,3 +37,19 @@ def test_a_count_said_of_a_plate_that_the_placements_on_it_keep_is_read(text):
 )
 def test_a_count_said_of_a_plate_that_the_placements_on_it_do_not_keep_is_refused(text):
     assert _reading(text) is None
+
+
+ORDERED = "Green apple and orange on the yellow plate first, then carrot and red apple on the blue plate."
+
+
+@pytest.mark.parametrize(
+    "text, read",
+    [
+        (f"{ORDERED} Four placements in all.", True),
+        (f"{ORDERED} Three placements in all.", False),
+        (f"{ORDERED[:-1]} - those four placements, that's all.", True),
+        (f"{ORDERED[:-1]} - just those two, that's it.", False),
+    ],
+)
+def test_a_clause_that_counts_the_placements_in_all_is_read_where_they_are_that_many(text, read):
+    assert _reading(text) == (YELLOW_THEN_BLUE if read else None)

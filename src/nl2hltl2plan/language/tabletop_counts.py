@@ -9,6 +9,10 @@ The count stands beside the plate with nothing but a noun for things between ("t
 for", "'s two", "gets two (things)"); a count beside an object's name ("two green apples") is another
 matter, left to the plural and count rules.
 
+A clause that counts the placements and names nothing ("- those four placements, that's all", "Four
+placements in all.", "just those three, that's it") says how many there are in all: it is read where the
+reading pairs that many (`total_counts_read`), refused otherwise.
+
 "The plates" with no colour or count before it ("Grocery list for the plates:", "brought to you by
 plates") are, in this world, the plates that the reading pairs things with, each of which it has by name
 (`plates_said_alone`).
@@ -49,6 +53,20 @@ def plate_counts_read(text: str, plate: re.Pattern[str]) -> tuple[str, list[tupl
     text = re.sub(rf"{name}'s\s+{_COUNT}{_THINGS}\b", taken(r"\g<plate>"), text)  # PLATE's two
     gets = rf"{name}\s+(?P<gets>{_GETS})\s+{_COUNT}{_THINGS}\b(?:\s*,)?"  # PLATE gets two things, ...
     return re.sub(gets, taken(r"\g<plate> \g<gets>"), text), claims
+
+
+_CLOSING_COUNT = re.compile(
+    r"(?:^|(?<=[.;!?:,-]))\s*(?:(?:and\s+)?(?:just|only)\s+)?(?:(?:those|these|the)\s+)?"
+    rf"{_COUNT}{_THINGS}(?:\s+(?:in\s+(?:all|total)|altogether|all\s+told|total))?"
+    r"(?:\s*,?\s*(?:that's|that\s+is|thats)\s+(?:all|it)|\s*,?\s*nothing\s+(?:more|else))?\s*(?=[.;!?]|$)"
+)
+
+
+def total_counts_read(text: str) -> tuple[str, list[int]]:
+    """`text` without the clauses that count the placements in all (see the module docstring), and each
+    count they say."""
+    counts = [_COUNTS[m["count"]] for m in _CLOSING_COUNT.finditer(text)]
+    return _CLOSING_COUNT.sub(" ", text), counts
 
 
 def plates_said_alone(text: str, kinds: dict[str, bool]) -> str:

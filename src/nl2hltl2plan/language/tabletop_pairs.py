@@ -29,7 +29,7 @@ from nl2hltl2plan.language.grammar.restated import count_fits
 from nl2hltl2plan.language.grounding import camel_words
 from nl2hltl2plan.language.htt_build import build_htt
 from nl2hltl2plan.language.result import LanguageResult
-from nl2hltl2plan.language.tabletop_counts import plate_counts_read, plates_said_alone
+from nl2hltl2plan.language.tabletop_counts import plate_counts_read, plates_said_alone, total_counts_read
 from nl2hltl2plan.language.tabletop_lines import lines_joined, names_spelt
 from nl2hltl2plan.language.tabletop_order import (
     BEFORE,
@@ -302,6 +302,7 @@ def read_pairs(text: str, types: set[str]) -> Reading | None:
     plain = plain_words(text, kinds, _shared_heads(by_words))
     plates = mention_pattern([w for w, plate in kinds.items() if plate])
     plain, plate_counts = plate_counts_read(plain, plates)  # "two for the yellow plate": checked below
+    plain, total_counts = total_counts_read(plain)  # "- those four placements, that's all": checked below
     unread_order = _RELATION_VERB.search(plain) or _ORDER_MATTERS.search(plain) or _ORDER_SAID.search(plain)
     if stated_not_asked(plain, by_words) is not None or unread_order or _ALTERNATIVES.search(text.lower()):
         return None
@@ -347,6 +348,8 @@ def read_pairs(text: str, types: set[str]) -> Reading | None:
     on_plate = Counter(camel_words((t.receptacle or [""])[0]) for t in tasks)
     if any(on_plate[plate] != count for plate, count in plate_counts):
         return None  # "two for the yellow plate" and another number of placements on it
+    if any(count != len(tasks) for count in total_counts):
+        return None  # "those four placements, that's all" and another number of placements
     if last_free is not None and (len(group_ids) < 2 or len(group_ids[-1]) != last_free):
         return None  # "those last two can go in any order" must name the last group, and only it
     if free and all(len(g) < 2 for g in group_ids):
