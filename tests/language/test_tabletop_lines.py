@@ -114,3 +114,14 @@ def test_a_clause_closed_by_to_finish_with_nothing_to_follow_is_refused():
 def test_plates_said_with_no_colour_are_the_plates_paired():
     text = "Grocery list for the plates:\ngreen apple (blue plate)\norange (yellow plate)"
     assert _reading(text) == ([("GreenApple", "BluePlate"), ("Orange", "YellowPlate")], [])
+
+
+def test_number_words_opening_sentences_number_a_list():
+    ordered = (
+        "One, the green apple and the orange on the yellow plate. Two, the carrot and the red apple on the "
+        "blue plate."
+    )
+    assert _reading(ordered) == YELLOW_THEN_BLUE
+    listed = "One, the carrot on the blue plate; two, the orange on the yellow plate. Any order!"
+    assert _reading(listed) == ([("Carrot", "BluePlate"), ("Orange", "YellowPlate")], [])
+    assert _reading("Two, the carrot on the blue plate; one, the orange on the yellow plate.") is None

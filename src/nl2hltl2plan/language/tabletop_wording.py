@@ -443,7 +443,10 @@ _NOUN_LABEL = re.compile(
     r"\s*[:)])(?P<n2>)\s*",
     re.IGNORECASE,
 )
-_LIST_NUMBER = re.compile(r"(?:^|(?<=[\s.;!?]))\(?(?P<n>\d)[.)]\s+")
+# "1) ...", "2. ...", or a number word with a comma opening a sentence ("One, ...; two, ...")
+_LIST_NUMBER = re.compile(
+    r"(?:^|(?<=[\s.;!?]))\(?(?P<n>\d)[.)]\s+|(?:^|(?<=[.;!?])|(?<=[.;!?]\s))(?i:(?P<w>one|two|three|four)),\s+"
+)
 # "Plan A: ... Plan B: ...", "Option 1: ...": alternatives, no steps (`tabletop_pairs` refuses them)
 _ALTERNATIVE_NOUNS = frozenset("option plan alternative choice scenario variant version possibility".split())
 
@@ -502,7 +505,7 @@ def labels_out_of_turn(text: str) -> str | None:
     Part 1: ..."): no reading may order the steps by where they are written."""
     numbers = [m[0].strip() for m in (*_labels(text), *_LIST_NUMBER.finditer(text))]
     turns = [_turn(m) for m in _labels(text)]
-    listed = [int(m["n"]) for m in _LIST_NUMBER.finditer(text)]
+    listed = [_list_number(m) for m in _LIST_NUMBER.finditer(text)]
     if turns == list(range(1, len(turns) + 1)) and listed in ([], list(range(1, len(listed) + 1))):
         return None
     return ", ".join(numbers)
@@ -512,13 +515,17 @@ def list_numbers_read(text: str, listed: bool) -> str | None:
     """A numbered list's numbers ("1) ... 2) ...") as "first" / "then", or removed when a remark frees the
     whole list (`listed`); None when they are not 1, 2, ... in turn."""
     numbers = list(_LIST_NUMBER.finditer(text))
-    if [int(m["n"]) for m in numbers] != list(range(1, len(numbers) + 1)):
+    if [_list_number(m) for m in numbers] != list(range(1, len(numbers) + 1)):
         return None
     if not listed:
         return _as_steps(text, numbers)
     for m in reversed(numbers):  # each item its own sentence: "1) A on P 2) B on Q" is two placements
         text = text[: m.start()] + ("" if m.start() == numbers[0].start() else ". ") + text[m.end() :]
     return text
+
+
+def _list_number(m: re.Match[str]) -> int:
+    return int(m["n"]) if m["n"] else _NUMBER_WORDS[m["w"].lower()]
 
 
 def numbered_steps(text: str) -> str:
