@@ -1261,3 +1261,38 @@ DEV3_H94: dict[int, list[str]] = {
         "First up: the green apple and the orange on the yellow plate. Next up: the carrot and the red apple "
         "on the blue plate."],
 }
+
+# Issue 28 (h94): a fourth development batch, written at once after every h94 rule and measured once
+# before any rule for it (a check of how far the rules carry), in voices no batch uses (a crossword clue
+# setter, a football coach's whiteboard, a nervous first-day intern, a dentist, a medieval scribe's list,
+# a shopping app's push notification, a hiker's checklist, a stage whisper).
+DEV4_H94: dict[int, list[str]] = {
+    1: ["Um, sorry to bother you, I think the green apple should go on the blue plate? And the orange on "
+        "the yellow plate, if that's okay.",
+        "Whiteboard:\nGREEN APPLE -> BLUE PLATE\nORANGE -> YELLOW PLATE",
+        "Item the first: the green apple upon the blue plate. Item the second: the orange upon the yellow "
+        "plate.",
+        "Reminder: green apple on the blue plate, orange on the yellow plate."],
+    2: ["Open wide! Green apple on the pink plate, orange on the yellow plate, red apple on the blue plate, "
+        "in any order.",
+        "Packing list (any order):\n- green apple: pink plate\n- orange: yellow plate\n- red apple: blue "
+        "plate",
+        "psst... green apple, pink plate... orange, yellow plate... red apple, blue plate... any order...",
+        "The green apple wants the pink plate, the orange wants the yellow plate, the red apple wants the "
+        "blue plate; do them in any order."],
+    3: ["Your order is ready to be plated: carrot on the blue plate, orange on the yellow plate, green "
+        "apple on the green plate, red apple on the pink plate. Any order.",
+        "Blue plate: carrot\nYellow plate: orange\nGreen plate: green apple\nPink plate: red apple\nOrder: "
+        "any",
+        "All four, any order: the carrot to the blue plate, the orange to the yellow plate, the green apple "
+        "to the green plate and the red apple to the pink plate.",
+        "Could I ask you to put the carrot on the blue plate, the orange on the yellow plate, the green "
+        "apple on the green plate and the red apple on the pink plate? Whichever order suits."],
+    4: ["Play one: green apple and orange to the yellow plate. Play two: carrot and red apple to the blue "
+        "plate. Run them in that order.",
+        "Um, first the green apple and the orange on the yellow plate, I think? Then the carrot and the red "
+        "apple on the blue plate.",
+        "Yellow plate\n- green apple\n- orange\nthen blue plate\n- carrot\n- red apple",
+        "When the green apple and the orange are both on the yellow plate, the carrot and the red apple can "
+        "go on the blue plate, either first."],
+}

@@ -125,3 +125,16 @@ def test_number_words_opening_sentences_number_a_list():
     listed = "One, the carrot on the blue plate; two, the orange on the yellow plate. Any order!"
     assert _reading(listed) == ([("Carrot", "BluePlate"), ("Orange", "YellowPlate")], [])
     assert _reading("Two, the carrot on the blue plate; one, the orange on the yellow plate.") is None
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Item the first: the green apple upon the blue plate. Item the second: the orange upon the yellow "
+        "plate.",
+        "Point 1: the green apple on the blue plate. Point 2: the orange on the yellow plate.",
+    ],
+)
+def test_numbered_entries_of_a_list_are_refused_as_neither_steps_nor_free(text):
+    # main read them as two ordered steps: the entries of a list may or may not be steps in turn
+    assert _reading(text) is None

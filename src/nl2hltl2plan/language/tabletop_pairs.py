@@ -115,6 +115,11 @@ _ALTERNATIVES = re.compile(
     r"\b(?:option|plan|alternative|choice|scenario|variant|version|possibility)\s+(?:[a-d]|\d|one|two|three|"
     r"four|i{1,3}|iv)\b"
 )
+# entries of a list numbered ("Item 1: ...", "Item the second: ...", "Point two: ..."): a list's entries,
+# which may or may not be steps in turn
+_ENTRIES = re.compile(
+    r"\b(?:item|entry|point|bullet|line)\s+(?:the\s+)?(?:\d|one|two|three|four|first|second|third|fourth)\b"
+)
 
 # "the order matters" / "sequence is important" / "the order is not up to you": an order is meant, but only
 # the mention order says which
@@ -225,6 +230,9 @@ class TabletopReader:
             out[found[0]] = Unread(found[0], "order", why)
         for found in _ALTERNATIVES.finditer(res.instruction.lower()):
             out[found[0]] = Unread(found[0], "condition", "alternatives: which one is meant is not said")
+        for found in _ENTRIES.finditer(res.instruction.lower()):
+            why = "entries of a list: whether their numbers are steps in turn is not said"
+            out[found[0]] = Unread(found[0], "order", why)
         lowered = res.instruction.lower()
         said = [*_ORDER_SAID.finditer(lowered), *_PRIORITY.finditer(lowered)]
         said += PLACE_IN_THE_WHOLE.finditer(lowered)
@@ -304,7 +312,8 @@ def read_pairs(text: str, types: set[str]) -> Reading | None:
     plain, plate_counts = plate_counts_read(plain, plates)  # "two for the yellow plate": checked below
     plain, total_counts = total_counts_read(plain)  # "- those four placements, that's all": checked below
     unread_order = _RELATION_VERB.search(plain) or _ORDER_MATTERS.search(plain) or _ORDER_SAID.search(plain)
-    if stated_not_asked(plain, by_words) is not None or unread_order or _ALTERNATIVES.search(text.lower()):
+    labels_unread = _ALTERNATIVES.search(text.lower()) or _ENTRIES.search(text.lower())
+    if stated_not_asked(plain, by_words) is not None or unread_order or labels_unread:
         return None
     plain, last_free = last_group_free(plain)
     unordered, remarks = free_order(plain)
