@@ -156,7 +156,7 @@ class TabletopReader:
         """A clause that says where something is ("the carrot is on the blue plate") with no wish or goal
         before it is no task, and is refused by name; a correction ("the blue plate, sorry, the yellow
         plate") is applied, and a numbered list's numbers read as "first" / "then" (`numbered_steps`), before
-        any reading (`tabletop_wording`)."""
+        any reading (`tabletop_wording`); numbered entries of a list ("Item 1:") are refused by name."""
         kinds = {camel_words(t): _is_plate(t) for t in self.world.object_types()}
         stated = stated_not_asked(instruction, kinds)
         if stated is not None:
@@ -164,6 +164,8 @@ class TabletopReader:
                 f"'{stated}' says where something is, not what to do: ask for it (\"put ...\", \"make sure "
                 "... is on ...\") or leave it out"
             )
+        if entry := _ENTRIES.search(instruction.lower()):
+            raise HTTError(f"'{entry[0]}' numbers the entries of a list: say whether they are steps in turn")
         return numbered_steps(plate_waits_read(corrected(instruction, kinds), kinds))
 
     def reread(self, instruction: str, backend: str) -> LanguageResult | None:
