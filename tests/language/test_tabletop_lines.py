@@ -31,6 +31,7 @@ YELLOW_THEN_BLUE = (
     [
         "Step 1: yellow plate\n - green apple\n - orange\nStep 2: blue plate\n - carrot\n - red apple",
         "First the yellow plate\n* green apple\n* orange\nThen the blue plate\n* carrot\n* red apple",
+        "Yellow plate first\n- green apple\n- orange\nthen blue plate\n- carrot\n- red apple",
     ],
 )
 def test_a_plate_heading_takes_the_objects_listed_under_it(text):

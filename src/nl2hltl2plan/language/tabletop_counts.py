@@ -30,7 +30,7 @@ from __future__ import annotations
 import re
 from collections.abc import Callable
 
-_COUNTS = {"one": 1, "two": 2, "three": 3, "four": 4, "both": 2}
+_COUNTS = {"one": 1, "two": 2, "three": 3, "four": 4}
 _COUNT = r"(?P<count>one|two|three|four)"
 _THINGS = r"(?:\s+(?:things?|items?|objects?|fruits?|pieces?|ones|placements?))?"
 _GETS = r"(?:gets|takes|holds|receives|has)"

@@ -41,11 +41,11 @@ from collections.abc import Callable
 from nl2hltl2plan.language.tabletop_wording import mention_pattern
 
 _BULLET = re.compile(r"^(?:[-*•·–]|\[\s*[xX✓]?\s*\])(?:\s+|$)")
-# a line that ends so: the sentence goes on past the line break
 # what a line of names alone may hold besides the names ("the green apple and the orange", "carrot + orange")
 _OTHER_WORDS = re.compile(r"\b(?:the|a|an|and)\b|[\s,+&]")
+# a line that ends so: the sentence goes on past the line break
 _GOES_ON = re.compile(
-    r"(?:[.,;:!?(\[{]|\b(?:the|a|an|on|onto|in|into|to|and|or|with|of|then|first))\s*$", re.IGNORECASE
+    r"(?:[.,;:!?(\[{]|\b(?:the|a|an|on|onto|in|into|to|and|or|with|of|then))\s*$", re.IGNORECASE
 )
 
 
