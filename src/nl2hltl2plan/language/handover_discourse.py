@@ -285,7 +285,7 @@ _BACKSHIFT = tuple(
 _NOBODY = frozenset("nobody noone none nothing neither never no".split())
 
 
-def _person(speaker: str) -> bool:
+def person(speaker: str) -> bool:
     """A speaker is a person who names nothing the reader reads: a pronoun, a name ("Kim"), a role ("the
     supervisor"); never a block, place or arm ("the red block said ...")."""
     words = speaker.lower().split()
@@ -310,21 +310,21 @@ def unreported(sentence: str) -> str:
 
     def command(match: re.Match[str]) -> str:
         nonlocal reported
-        if not _person(match.group("speaker")):
+        if not person(match.group("speaker")):
             return match.group(0)
         reported = True
         return match.group("start") + ("do not " if match.group("neg") else "")
 
     def clause(match: re.Match[str]) -> str:
         nonlocal reported
-        if not _person(match.group("speaker")):
+        if not person(match.group("speaker")):
             return match.group(0)
         reported = True
         return match.group("start")
 
     def wanted(match: re.Match[str]) -> str:
         nonlocal reported
-        if not _person(match.group("speaker")):
+        if not person(match.group("speaker")):
             return match.group(0)
         reported = True
         return match.group("start") + "we want "

@@ -69,6 +69,8 @@ def normalise(sentence: str) -> str:
     applied."""
     text = sentence.lower().replace("’", "'")
     text = re.sub(r"(?<=[a-z])-(?=[a-z])", " ", text)  # one-by-one -> one by one
+    # every handover world has four arms (`worlds.handover_world.ARMS`): "all four arms" are the arms
+    text = re.sub(r"\ball\s+(?:four|4)\s+(?:of\s+the\s+)?(?=(?:robot\s+)?arms\b)", "the ", text)
     text = _DASH.sub(lambda dash: _dash_as_comma(text, dash), text)
     text = re.sub(r"([,()/:])", r" \1 ", text)
     text = re.sub(r"\b(\w+)'s\b", r"\1 s", text)  # red's -> red s (a possessive)
@@ -212,10 +214,10 @@ def _mark_one_per_region(m: Marked) -> None:
         r"(?:be\s+)?(?:allowed\s+|permitted\s+)?"
         rf"(?:(?:to\s+)?(?:occupy|go\s+(?:in|on|to|into)|sit\s+(?:in|on)|be\s+(?:placed\s+)?(?:in|on)|fits?\s+(?:in|on|into))\s+|"
         r"(?:per|in|on|for|to)\s+)"
-        rf"(?:each|every)\s+{region}\b",
+        rf"(?:each|every)\s+{region}\b(?:\s+only\b)?",
         # "only one block can go on each one": "each one" after a place's preposition is each place
         rf"\b{one}\s+(?:(?:can|may|should|must|will)\s+)?(?:go|fit|be)\s+(?:on|in|into)\s+each\s+one\b",
-        rf"\b(?:with\s+)?{one}\s+(?:(?:is|being|may|can)\s+)?(?:allowed\s+|permitted\s+)?(?:per|to\s+a)\s+{region}\b",
+        rf"\b(?:with\s+)?{one}\s+(?:(?:is|being|may|can)\s+)?(?:allowed\s+|permitted\s+)?(?:per|to\s+a)\s+{region}\b(?:\s+only\b)?",  # "... per region only"
         r"\b(?:one|1)\s+(?:each|apiece)\b",
         rf"(?:,\s*)?\b(?:an?\s+)?(?:different|separate|distinct)\s+{region}\s+(?:for|per)\s+(?:each|every)(?:\s+{NOUN})?\b",
         rf"(?:,\s*)?\b(?:an?\s+)?(?:different|separate|distinct)\s+{region}\s+(?:each|apiece)\b",
