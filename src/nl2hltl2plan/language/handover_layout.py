@@ -7,7 +7,8 @@
 - a nested list: an indented bullet under a line goes on with that line, after a comma ("- the three
   blocks -> region I" and under it "  - one after another": "the three blocks -> region I, one after
   another"); under a line that ends a sentence ('.', '!', '?') it is a sentence of its own, and under a
-  heading (':') it goes on after the colon.
+  heading (':') it goes on after the colon. An indented item may be lettered or numbered ("   a. on
+  regions H, I and J"); one that is a labelled field ("  - order: red before blue") stays a line of its own.
 
     >>> transcript_read("[09:02] Dana: red first.\\n[09:03] Dana: blue last.")
     'red first.\\nblue last.'
@@ -26,7 +27,8 @@ _STAMP = re.compile(
     r"\d{1,2}:\d{2}(?::\d{2})?(?=\s*[-–\]]?\s+[A-Za-z]))\s*[-–]?\s*"
 )
 _TAG = re.compile(r"^\s*([A-Z][A-Za-z.']*(?:\s+[A-Z][A-Za-z.']*)?)\s*:\s+(?=\S)")
-_BULLET = re.compile(r"^([ \t]*)[-*•·]\s+(.*)$")
+_BULLET = re.compile(r"^([ \t]*)(?:[-*•·]|(?<=\s)[a-z0-9][.)])\s+(.*)$")
+_FIELD = re.compile(r"^[A-Za-z][\w ]{0,20}:\s")  # a labelled field ("order: red first"): a line of its own
 
 
 def transcript_read(text: str) -> str:
@@ -54,7 +56,7 @@ def nested_read(text: str) -> str:
     for line in text.splitlines():
         bullet = _BULLET.match(line)
         indent = len(bullet[1].expandtabs(4)) if bullet else -1
-        if bullet and out and indent > max(depth[-1], 0):
+        if bullet and out and indent > max(depth[-1], 0) and not _FIELD.match(bullet[2]):
             parent = out[-1].rstrip()
             if not parent.endswith((".", "!", "?")):
                 out[-1] = f"{parent} {bullet[2]}" if parent.endswith(":") else f"{parent}, {bullet[2]}"

@@ -94,11 +94,22 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
         r"(?=(?:the\s+)?(?:regions?\s+)?[e-j]\b)",
         r"\1",
     ),
-    # a block's heading before a preposition ("blue block: onto region i, ..."): the block goes there
+    # a block's heading before a preposition ("blue block: onto region i, ..."): the block goes there; before
+    # a step word and its region ("yellow block: first region i, then region g"), it goes there first
     (
         r"^(\s*(?:the\s+)?(?:red|blue|yellow)\s+(?:block|pillar|cube|object))\s*:\s*"
         r"(?=(?:onto|on|to|into|in)\s)",
         r"\1 goes ",
+    ),
+    (
+        r"^(\s*(?:the\s+)?(?:red|blue|yellow)\s+(?:block|pillar|cube|object))\s*:\s*(first|then)\s+(?=region\s+[e-j]\b)",
+        r"\1 goes \2 to ",
+    ),
+    # a block's heading before its time ("yellow block: any time"): it may be moved then
+    (
+        r"^(\s*(?:the\s+)?(?:red|blue|yellow)\s+(?:block|pillar|cube|object))\s*:\s*"
+        r"(?:at\s+)?(?:any\s*time|whenever)\s*$",
+        r"\1 can be moved at any time",
     ),
     # "the pillars still need to go ...": what is still to be done is what is to be done
     (r"\bstill\s+(?=(?:needs?|has|have|must)\s+(?:to\b|be\b))", " "),
