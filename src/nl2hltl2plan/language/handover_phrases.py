@@ -109,9 +109,10 @@ def _drop_framing(text: str) -> str:
     return text
 
 
-# what a preamble may not hold: a meaning word, a placing verb, a condition, an exception or a warning
+# what a preamble may not hold: a meaning word, a placing verb, a condition ("when that is done:" is a time),
+# an exception or a warning
 _NAMES = re.compile(
-    rf"{MEANING.pattern}|\b(?:{VERB}|{SWAP}|if|unless|except|only|instead|avoid|but|careful|sure|make|keep|"
+    rf"{MEANING.pattern}|\b(?:{VERB}|{SWAP}|if|when|whenever|done|unless|except|only|instead|avoid|but|careful|sure|make|keep|"
     r"leave|do|does|don|stop|wait|hold|go|goes|step|rule|order|note|remember|important)\b"
 )
 _I_SAYS = re.compile(r"\bi\s+(?=would|need|want|am|have|think|wish|hope|was|will|d|m)\b")

@@ -264,6 +264,7 @@ def _sentences(instruction: str) -> list[str]:
     bullet = r"[ \t]*\n\s*(?:[-*•·]|\d[.)])\s+"
     instruction = re.sub(rf"(?m)\b(on|onto|in|into|to|at)\s*:{bullet}", r"\1 ", instruction)
     instruction = re.sub(rf"(?m):{bullet}", ": ", instruction)
+    instruction = re.sub(r"(?m):[ \t]*\n\s*(?=\S)", ": ", instruction)  # a heading on a line of its own
     instruction = _unquoted(re.sub(r"\*\*|__", "", instruction))  # markdown's bold: "**Goal:** ..."
     for line in instruction.splitlines():
         text = re.sub(r"(^\s*|[.;!?:]\s+)(\d)\.\s", r"\1\2) ", line)
