@@ -1,0 +1,120 @@
+"""Issue 24, h93: readings of what the words name whatever the voice: a goal named as the aim ("the aim is
+for X to be V-ed", "the aim is to have X V-ed"), "one ... per region only", "all four arms", a transcript's
+time stamps and speaker tags, a nested list's sub-items (`language/handover_layout.py`), a heading that
+says when ("When that is done:") on a line of its own, a fronted "during this," and a time left free in
+words. Each reading gives the written spec; each near miss (an order reversed, a region left out, a count
+that does not match, a tag that is not one speaker's) is refused or gives another spec. The development
+batches `dev64` and `dev65` are read right or refused (`test_handover_cues.py`); the held-out
+`validation16` too.
+"""
+
+from __future__ import annotations
+
+import pytest
+from handover_specs import assert_not_the_written_spec, assert_written_spec
+
+from nl2hltl2plan.language.handover_layout import nested_read, transcript_read
+
+READINGS = [
+    (1, "Our goal is for the three blocks to be placed on the opposite side, with red placed before blue."),
+    (
+        5,
+        "The objective is for the red block to be placed before the blue block and for the positions of the red"
+        " and blue blocks to be exchanged. The yellow block goes to the opposite side at any time.",
+    ),
+    (
+        3,
+        "The objective is to have the three pillars moved to regions E, F and G beside arms a and b, with no"
+        " object placed on any other region.",
+    ),
+    (2, "Put the three blocks on regions H, I and J, one object per region only."),
+    (2, "Can all four arms put the three blocks on regions H, I and J, one per region?"),
+    (
+        6,
+        "[10:01] Kim: red before blue.\n[10:02] Kim: the three objects go on regions G, H and I, one on each.",
+    ),
+    (6, "Kim: red before blue.\nKim: the three objects go on regions G, H and I, one on each."),
+    (
+        8,
+        "To do:\n- the yellow block\n    - first to region I\n    - then to region G\n- red and blue -> any empty region\n    - at any time",
+    ),
+    (2, "1. Place the three blocks\n   a. on regions H, I and J\n   b. with one block in each region"),
+    (
+        4,
+        "Move the three blocks to the opposite regions.\nThe blue block must not be touched until the red block"
+        " has been touched.\nWhen that is done:\nput the yellow block back on region G.",
+    ),
+    (
+        7,
+        "Place the three objects on region I one after another, red before blue. During this, place nothing on"
+        " regions F, G and H.",
+    ),
+    (
+        5,
+        "Place red before blue and exchange the positions of the red and blue blocks. Move the yellow block to"
+        " the opposite side; the yellow block has no time constraint.",
+    ),
+]
+
+NEAR_MISSES = [
+    (1, "Our goal is for the three blocks to be placed on the opposite side, with blue placed before red."),
+    (
+        3,
+        "The objective is to have the three pillars moved to regions E and F, with no object placed on any other"
+        " region.",
+    ),
+    (2, "Put the three blocks on regions H and I, one object per region only."),
+    (2, "Can all three arms put the three blocks on regions H, I and J, one per region?"),
+    (
+        6,
+        "Kim: red before blue.\nSam: the three objects go on regions G, H and I, one on each.",
+    ),  # two speakers
+    (
+        6,
+        "[10:01] Kim: blue before red.\n[10:02] Kim: the three objects go on regions G, H and I, one on each.",
+    ),
+    (
+        8,
+        "To do:\n- the yellow block.\n    - first to region I\n    - then to region G\n- red and blue -> any empty"
+        " region\n    - at any time",
+    ),  # a sub-item under a sentence that has ended
+    (
+        4,
+        "Move the three blocks to the opposite regions.\nThe blue block must not be touched until the red block"
+        " has been touched.\nBefore that is done:\nput the yellow block back on region G.",
+    ),
+    (
+        7,
+        "Place the three objects on region I one after another, red before blue. During this, place nothing on"
+        " regions F and G.",
+    ),
+]
+
+
+@pytest.mark.parametrize(("task_id", "text"), READINGS)
+def test_what_the_words_name_is_read_in_any_voice(task_id, text):
+    assert_written_spec(task_id, text)
+
+
+@pytest.mark.parametrize(("task_id", "text"), NEAR_MISSES)
+def test_near_misses_are_refused_or_give_another_spec(task_id, text):
+    assert_not_the_written_spec(task_id, text)
+
+
+def test_a_transcript_keeps_what_was_said_and_drops_who_and_when():
+    assert transcript_read("[09:02] Dana: red first.\n[09:03] Dana: blue last.") == "red first.\nblue last."
+    assert transcript_read("09:02 - Dana: red first.") == "red first."
+    # one line without a time stamp: the tag may be a label, and stays
+    assert transcript_read("Dana: red first.") == "Dana: red first."
+    # a block or the arms are no speaker
+    assert transcript_read("Arms: red first.\nArms: blue last.") == "Arms: red first.\nArms: blue last."
+
+
+def test_a_sub_item_goes_on_with_its_line_unless_that_line_has_ended_or_it_is_a_field():
+    assert (
+        nested_read("- the blocks\n  - to H\n  - one each\n- red first")
+        == "- the blocks, to H, one each\n- red first"
+    )
+    assert nested_read("- Move the blocks.\n  - All to H.") == "- Move the blocks.\n  - All to H."
+    assert nested_read("Steps:\n  - move all to H") == "Steps: move all to H"
+    assert nested_read("- the blocks to H\n  - order: red first") == "- the blocks to H\n  - order: red first"
