@@ -163,10 +163,11 @@ def test_later_development_batches_are_read_right_or_refused(batch, style):
 
 @pytest.mark.parametrize(
     ("batch", "style"),
-    [(b, s) for b in ("validation13", "validation14", "validation15", "validation16") for s in sorted(STYLES[b])],
+    [(b, s) for b in (f"validation{k}" for k in (13, 14, 15, 16)) for s in sorted(STYLES[b])],
 )
 def test_held_out_batches_are_read_right_or_refused(batch, style):
-    """h78's, h82's, h86's and h93's held-out batches, each measured at first contact and at the end of its round."""
+    """h78's, h82's, h86's and h93's held-out batches, each measured at first contact and at the end of its
+    round."""
     for task, text in STYLES[batch][style].items():
         assert_written_spec_or_refused(int(task), text)
 

@@ -19,8 +19,8 @@ READINGS = [
     (1, "Our goal is for the three blocks to be placed on the opposite side, with red placed before blue."),
     (
         5,
-        "The objective is for the red block to be placed before the blue block and for the positions of the red"
-        " and blue blocks to be exchanged. The yellow block goes to the opposite side at any time.",
+        "The objective is for the red block to be placed before the blue block and for the positions of the"
+        " red and blue blocks to be exchanged. The yellow block goes to the opposite side at any time.",
     ),
     (
         3,
@@ -31,28 +31,30 @@ READINGS = [
     (2, "Can all four arms put the three blocks on regions H, I and J, one per region?"),
     (
         6,
-        "[10:01] Kim: red before blue.\n[10:02] Kim: the three objects go on regions G, H and I, one on each.",
+        "[10:01] Kim: red before blue.\n"
+        "[10:02] Kim: the three objects go on regions G, H and I, one on each.",
     ),
     (6, "Kim: red before blue.\nKim: the three objects go on regions G, H and I, one on each."),
     (
         8,
-        "To do:\n- the yellow block\n    - first to region I\n    - then to region G\n- red and blue -> any empty region\n    - at any time",
+        "To do:\n- the yellow block\n    - first to region I\n    - then to region G\n"
+        "- red and blue -> any empty region\n    - at any time",
     ),
     (2, "1. Place the three blocks\n   a. on regions H, I and J\n   b. with one block in each region"),
     (
         4,
-        "Move the three blocks to the opposite regions.\nThe blue block must not be touched until the red block"
-        " has been touched.\nWhen that is done:\nput the yellow block back on region G.",
+        "Move the three blocks to the opposite regions.\nThe blue block must not be touched until the red"
+        " block has been touched.\nWhen that is done:\nput the yellow block back on region G.",
     ),
     (
         7,
-        "Place the three objects on region I one after another, red before blue. During this, place nothing on"
-        " regions F, G and H.",
+        "Place the three objects on region I one after another, red before blue. During this, place nothing"
+        " on regions F, G and H.",
     ),
     (
         5,
-        "Place red before blue and exchange the positions of the red and blue blocks. Move the yellow block to"
-        " the opposite side; the yellow block has no time constraint.",
+        "Place red before blue and exchange the positions of the red and blue blocks. Move the yellow block"
+        " to the opposite side; the yellow block has no time constraint.",
     ),
 ]
 
@@ -60,8 +62,8 @@ NEAR_MISSES = [
     (1, "Our goal is for the three blocks to be placed on the opposite side, with blue placed before red."),
     (
         3,
-        "The objective is to have the three pillars moved to regions E and F, with no object placed on any other"
-        " region.",
+        "The objective is to have the three pillars moved to regions E and F, with no object placed on any"
+        " other region.",
     ),
     (2, "Put the three blocks on regions H and I, one object per region only."),
     (2, "Can all three arms put the three blocks on regions H, I and J, one per region?"),
@@ -71,22 +73,23 @@ NEAR_MISSES = [
     ),  # two speakers
     (
         6,
-        "[10:01] Kim: blue before red.\n[10:02] Kim: the three objects go on regions G, H and I, one on each.",
+        "[10:01] Kim: blue before red.\n"
+        "[10:02] Kim: the three objects go on regions G, H and I, one on each.",
     ),
     (
         8,
-        "To do:\n- the yellow block.\n    - first to region I\n    - then to region G\n- red and blue -> any empty"
-        " region\n    - at any time",
+        "To do:\n- the yellow block.\n    - first to region I\n    - then to region G\n"
+        "- red and blue -> any empty region\n    - at any time",
     ),  # a sub-item under a sentence that has ended
     (
         4,
-        "Move the three blocks to the opposite regions.\nThe blue block must not be touched until the red block"
-        " has been touched.\nBefore that is done:\nput the yellow block back on region G.",
+        "Move the three blocks to the opposite regions.\nThe blue block must not be touched until the red"
+        " block has been touched.\nBefore that is done:\nput the yellow block back on region G.",
     ),
     (
         7,
-        "Place the three objects on region I one after another, red before blue. During this, place nothing on"
-        " regions F and G.",
+        "Place the three objects on region I one after another, red before blue. During this, place nothing"
+        " on regions F and G.",
     ),
 ]
 

@@ -35,7 +35,7 @@ def transcript_read(text: str) -> str:
     lines = text.splitlines()
     stamped = [_STAMP.match(line) is not None for line in lines]
     lines = [_STAMP.sub("", line, count=1) for line in lines]
-    tags = [tag[1] if (tag := _TAG.match(line)) else None for line in lines]
+    tags = [found[1] if (found := _TAG.match(line)) else None for line in lines]
     out = []
     for line, tag, was_stamped in zip(lines, tags, stamped, strict=True):
         repeated = (

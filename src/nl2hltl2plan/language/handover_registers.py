@@ -113,6 +113,12 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     ),
     # "the pillars still need to go ...": what is still to be done is what is to be done
     (r"\bstill\s+(?=(?:needs?|has|have|must)\s+(?:to\b|be\b))", " "),
+    # the period said first, before a comma or as a label: "during this, place nothing on F" (meanwhile)
+    (r"(^|[,;:]\s*)during\s+(?:all\s+)?(?:this|that)\s*(?=,)", r"\1meanwhile "),
+    (r"^\s*(meanwhile|in\s+the\s+meantime)\s*:", r"\1 ,"),
+    # a time left free in words after its goal: "..., no timing constraint" (a sentence of its own, "the
+    # yellow block has no time constraint", is joined to its goal: `handover_answers.timing_joined`)
+    (r",\s*(?:with\s+)?no\s+(?:time|timing)\s+(?:constraints?|restrictions?)\s*$", ", at any time"),
     # academic: the goal as a noun
     (r"^\s*the\s+(?:objective|aim|purpose|goal)\s+is\s+(?:that\b|the\s+(?=\w+\s+of\b))", " "),
     # a step named by its noun after an order word is the step: "red before (the) placement of blue"

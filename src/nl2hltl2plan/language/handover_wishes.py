@@ -210,8 +210,9 @@ _WISH_PARTICIPLE = re.compile(rf"{_START}{_WISH_WITH_PARTICIPLE}\s+{_OBJECTS}\s+
 _AIM = r"(?:the|my|our)\s+(?:aim|goal|objective|purpose|intention|target)(?:\s+here)?\s+(?:is|will\s+be)"
 _AIM_HAVE = re.compile(rf"^\s*{_AIM}\s+to\s+(?=(?:have|get)\s+{_OBJECTS}\s+{_PARTICIPLE}\b)")
 _AIM_FOR = re.compile(rf"^\s*{_AIM}\s+for\s+")
-_FOR_SUBJECT = re.compile(r"(^|\band\s+)for\s+((?:the|all|both|each|every|three|two|red|blue|yellow)\b[^,;:]*?)\s+to\s+")
-_FIRST_SUBJECT = re.compile(r"^((?:the|all|both|each|every|three|two|red|blue|yellow)\b[^,;:]*?)\s+to\s+")
+_SUBJECT = r"((?:the|all|both|each|every|three|two|red|blue|yellow)\b[^,;:]*?)\s+to\s+"
+_FOR_SUBJECT = re.compile(rf"(^|\band\s+)for\s+{_SUBJECT}")
+_FIRST_SUBJECT = re.compile(rf"^{_SUBJECT}")
 
 
 def _aim_said(text: str) -> str:

@@ -130,12 +130,6 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\bwhilst\b", "while"),
     # before "it" is read as a block: "while you're at it" is the period of the goals
     (r"\bwhile\s+(?:you|we)\s+are\s+at\s+it\b", "meanwhile"),
-    # the period said first, before a comma or as a label: "during this, place nothing on F" (meanwhile)
-    (r"(^|[,;:]\s*)during\s+(?:all\s+)?(?:this|that)\s*(?=,)", r"\1meanwhile "),
-    (r"^\s*(meanwhile|in\s+the\s+meantime)\s*:", r"\1 ,"),
-    # a time left free in words after its goal: "..., no timing constraint" (a sentence of its own, "the yellow
-    # block has no time constraint", is joined to its goal: `handover_answers.timing_joined`)
-    (r",\s*(?:with\s+)?no\s+(?:time|timing)\s+(?:constraints?|restrictions?)\s*$", ", at any time"),
     (r"\bamongst\b", "among"),
     (r"\blet\s*'?\s*s\b|\blet\s+us\b|\bgo\s+ahead\s+and\b", "please"),
     (
