@@ -5,7 +5,8 @@ says when ("When that is done:") on a line of its own, a fronted "during this," 
 words. Each reading gives the written spec; each near miss (an order reversed, a region left out, a count
 that does not match, a tag that is not one speaker's) is refused or gives another spec. The development
 batches `dev64` and `dev65` are read right or refused (`test_handover_cues.py`); the held-out
-`validation16` too.
+`validation16` too. Also a start signal said alone ("Go."), a pair's exchange without its object ("red and
+blue swap"), "is it possible for X to V" and every arm named ("the four arms", "arms a, b, c and d").
 """
 
 from __future__ import annotations
@@ -58,7 +59,28 @@ READINGS = [
     ),
 ]
 
+READINGS += [
+    (1, "Three blocks to the opposite side. Red before blue. Go!"),
+    (5, "Red before blue. Red and blue swap. Yellow to the opposite side, any time."),
+    (
+        1,
+        "Is it possible for the three blocks to go to the opposite side, with the red one placed before the"
+        " blue one?",
+    ),
+    (1, "Can the four arms move all three blocks to the opposite side? Red before blue."),
+    (1, "Can arms a, b, c and d move all three blocks to the opposite side, red before blue?"),
+]
+
 NEAR_MISSES = [
+    (1, "Three blocks to the opposite side. Red before blue. Go to region G."),  # a place: no start signal
+    (5, "Red before blue. Red and yellow swap. Yellow to the opposite side, any time."),
+    (
+        1,
+        "Is it possible for the three blocks to go to the opposite side, with the blue one placed before the"
+        " red one?",
+    ),
+    (1, "Can the three arms move all three blocks to the opposite side? Red before blue."),  # not every arm
+    (1, "Can arms a, b and c move all three blocks to the opposite side, red before blue?"),
     (1, "Our goal is for the three blocks to be placed on the opposite side, with blue placed before red."),
     (
         3,

@@ -432,12 +432,19 @@ def _unsigned(sentences: list[str]) -> list[str]:
     return sentences
 
 
+# a start signal said as a whole sentence ("Go.", "Go ahead!", "Begin.", "Proceed."): when to start, which
+# is now; it names nothing to do ("go" alone has no block and no place)
+_START_SIGNAL = re.compile(
+    r"(?i)^\s*(?:go(?:\s+(?:ahead|now))?|begin(?:\s+now)?|start(?:\s+now)?|proceed)\s*[.!]*\s*$"
+)
+
+
 def plain(sentences: list[str]) -> list[str]:
-    """The sentences with empty fragments and a sign-off's name dropped, reported speech and first-person
-    narration said as the team's commands (see the module docstring)."""
+    """The sentences with empty fragments, start signals and a sign-off's name dropped, reported speech and
+    first-person narration said as the team's commands (see the module docstring)."""
     out = []
     for k, sentence in enumerate(_unsigned(sentences)):
-        if empty(sentence, whole=True, header=k == 0):
+        if empty(sentence, whole=True, header=k == 0) or _START_SIGNAL.match(sentence):
             continue
         text = _unframed_sentence(sentence, header=k == 0)
         text = _unframed_sentence(first_person_as_team(unreported(text)), header=k == 0)

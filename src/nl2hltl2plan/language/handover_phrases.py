@@ -71,7 +71,7 @@ def normalise(sentence: str) -> str:
     text = re.sub(r"(?<=[a-z])-(?=[a-z])", " ", text)  # one-by-one -> one by one
     # every handover world has four arms a-d (`worlds.handover_world.ARMS`): "all four arms", "the four arms"
     # and "arms a, b, c and d" are the arms
-    text = re.sub(r"\b(?:all\s+(?:four|4)\s+(?:of\s+the\s+)?|the\s+(?:four|4)\s+)(?=(?:robot\s+)?arms\b)", "the ", text)
+    text = re.sub(r"\b(?:all|the)\s+(?:four|4)\s+(?:of\s+the\s+)?(?=(?:robot\s+)?arms\b)", "the ", text)
     text = re.sub(r"\barms\s+a\s*,\s*b\s*,\s*c\s*,?\s*and\s+d\b", "the arms", text)
     text = _DASH.sub(lambda dash: _dash_as_comma(text, dash), text)
     text = re.sub(r"([,()/:])", r" \1 ", text)

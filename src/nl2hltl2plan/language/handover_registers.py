@@ -119,6 +119,12 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     # a time left free in words after its goal: "..., no timing constraint" (a sentence of its own, "the
     # yellow block has no time constraint", is joined to its goal: `handover_answers.timing_joined`)
     (r",\s*(?:with\s+)?no\s+(?:time|timing)\s+(?:constraints?|restrictions?)\s*$", ", at any time"),
+    # a pair's exchange said without its object: "red and blue swap" (swap places)
+    (
+        r"(\b(?:red|blue|yellow)(?:\s+(?:block|pillar|one))?\s+and\s+(?:the\s+)?(?:red|blue|yellow)"
+        r"(?:\s+(?:blocks?|pillars?|ones?))?\s+(?:swap|exchange|switch|trade))\s*(?=$|,|;)",
+        r"\1 places",
+    ),
     # academic: the goal as a noun
     (r"^\s*the\s+(?:objective|aim|purpose|goal)\s+is\s+(?:that\b|the\s+(?=\w+\s+of\b))", " "),
     # a step named by its noun after an order word is the step: "red before (the) placement of blue"

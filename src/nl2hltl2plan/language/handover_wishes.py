@@ -209,7 +209,8 @@ _WISH_PARTICIPLE = re.compile(rf"{_START}{_WISH_WITH_PARTICIPLE}\s+{_OBJECTS}\s+
 # be exchanged)
 _AIM = r"(?:the|my|our)\s+(?:aim|goal|objective|purpose|intention|target)(?:\s+here)?\s+(?:is|will\s+be)"
 _AIM_HAVE = re.compile(rf"^\s*{_AIM}\s+to\s+(?=(?:have|get)\s+{_OBJECTS}\s+{_PARTICIPLE}\b)")
-_AIM_FOR = re.compile(rf"^\s*{_AIM}\s+for\s+")
+# a request said as a possibility: "is it possible / would it be possible for X to V" (X must V)
+_AIM_FOR = re.compile(rf"^\s*(?:{_AIM}|(?:is\s+it|would\s+it\s+be)\s+possible)\s+for\s+")
 _SUBJECT = r"((?:the|all|both|each|every|three|two|red|blue|yellow)\b[^,;:]*?)\s+to\s+"
 _FOR_SUBJECT = re.compile(rf"(^|\band\s+)for\s+{_SUBJECT}")
 _FIRST_SUBJECT = re.compile(rf"^{_SUBJECT}")
