@@ -71,6 +71,30 @@ READINGS += [
     (1, "Can arms a, b, c and d move all three blocks to the opposite side, red before blue?"),
 ]
 
+# read after validation16's first contact: the impersonal "one must", informal verbs of putting, texting
+# typos and clippings, "2 regions" naming three letters, "in such a way that", "at any point during the
+# task", an order said first ("ahead of X, Y must be placed")
+READINGS += [
+    (
+        6,
+        "One must place the red block before the blue block. One should put the three objects on regions G, H"
+        " and I, one on each.",
+    ),
+    (2, "Toss the three blocks onto regions H, I and J, one per region."),
+    (6, "red b4 blue. 3 objs 2 regions G, H, I, 1 each"),
+    (8, "yellow 2 region I, then 2 region G. red n blue 2 any empty region whenevr"),
+    (
+        2,
+        "Take the three blocks to regions H, I and J in such a way that each region holds exactly one block.",
+    ),
+    (
+        8,
+        "Put the yellow block on region I first and then on region G; the red and blue blocks go to any empty"
+        " region at any point during the task.",
+    ),
+    (1, "Ahead of the blue block, the red block must be placed; all three blocks go to the opposite side."),
+]
+
 NEAR_MISSES = [
     (1, "Three blocks to the opposite side. Red before blue. Go to region G."),  # a place: no start signal
     (5, "Red before blue. Red and yellow swap. Yellow to the opposite side, any time."),
@@ -81,6 +105,20 @@ NEAR_MISSES = [
     ),
     (1, "Can the three arms move all three blocks to the opposite side? Red before blue."),  # not every arm
     (1, "Can arms a, b and c move all three blocks to the opposite side, red before blue?"),
+    (
+        6,
+        "One must place the blue block before the red block. One should put the three objects on regions G, H"
+        " and I, one on each.",
+    ),
+    (2, "Toss the three blocks onto regions H and I, one per region."),
+    (6, "red b4 blue. 3 objs 2 regions G, H, 1 each"),  # a count of two regions
+    (8, "yellow 2 region G, then 2 region I. red n blue 2 any empty region whenevr"),
+    (
+        2,
+        "Take the three blocks to regions H, I and J in such a way that each region holds exactly two"
+        " blocks.",
+    ),
+    (1, "Ahead of the red block, the blue block must be placed; all three blocks go to the opposite side."),
     (1, "Our goal is for the three blocks to be placed on the opposite side, with blue placed before red."),
     (
         3,

@@ -125,6 +125,30 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
         r"(?:\s+(?:blocks?|pillars?|ones?))?\s+(?:swap|exchange|switch|trade))\s*(?=$|,|;)",
         r"\1 places",
     ),
+    # the impersonal "one" before a modal and a verb is whoever does the work: "one must place X" (you must)
+    (
+        r"(^|,|;|\band\b|\bthen\b)\s*one\s+(must|should|has\s+to|needs\s+to|is\s+to|may|can)\s+"
+        rf"(?=(?:not\s+|never\s+|first\s+|also\s+)?(?:{VERB}|{SWAP})\b)",
+        r"\1 you \2 ",
+    ),
+    # informal verbs of putting: "chuck / toss / plop / dump / shove the blocks into ..." (put), "haul" (move)
+    (r"\b(?:chuck|toss|plop|dump|shove)(?=\s+(?:the|all|both|it|them|red|blue|yellow|three|\d)\b)", "put"),
+    (r"\bhaul(?=\s+(?:the|all|both|it|them|red|blue|yellow|three|\d)\b)", "move"),
+    # a manner said as a result: "..., in such a way that each region holds one block" (..., each region ...)
+    (r",?\s*\bin\s+such\s+a\s+way\s+that\b", " ,"),
+    # "at any point / time during the task": at any time
+    (
+        r"\b(at\s+any\s+(?:point|time|moment))\s+(?:during|in|throughout)\s+(?:the|this)\s+"
+        r"(?:task|job|process|work)\b",
+        r"\1",
+    ),
+    # an order said first: "ahead of / before the blue block, the red block must be placed" (red before blue)
+    (
+        r"^\s*(?:ahead\s+of|before|prior\s+to)\s+(the\s+(?:red|blue|yellow)\s+(?:block|pillar|object))\s*,\s*"
+        r"(the\s+(?:red|blue|yellow)\s+(?:block|pillar|object))\s+(must|should|is\s+to|has\s+to)\s+be\s+"
+        r"(placed|put|moved)\b",
+        r"\2 \3 be \4 before \1",
+    ),
     # academic: the goal as a noun
     (r"^\s*the\s+(?:objective|aim|purpose|goal)\s+is\s+(?:that\b|the\s+(?=\w+\s+of\b))", " "),
     # a step named by its noun after an order word is the step: "red before (the) placement of blue"

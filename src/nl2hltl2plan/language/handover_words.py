@@ -205,7 +205,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
     # texting: "2" for "to" before a place or an arm ("2 the opposite side", "2 regions e , f n g", "next 2
     # arms"; a count of regions names as many letters), "n" for "and", "1" for "one" as a pronoun
     (
-        r"\b2\s+(?=(?:the|any|opposite|arms?|region\s+[e-j]|regions\s+[e-j]\s*(?:,|and|n)\s*[e-j]\s*(?:,|and|n)|[e-j])\b)",
+        r"\b2\s+(?=(?:the|any|opposite|arms?|region\s+[e-j]|regions\s+[e-j]\s*(?:,|and|n)\s*[e-j]\s*(?:,|and|n)\s*[e-j]|[e-j])\b)",
         "to ",
     ),
     (r"(?<=[a-z,])\s+n\s+(?=[a-z])", " and "),
