@@ -42,7 +42,7 @@ import re
 from collections.abc import Callable
 
 from nl2hltl2plan.language.content_words import phrase_list_pattern
-from nl2hltl2plan.language.handover_words import AFTER_ALL, GERUND_VERBS, NEGATED_GERUNDS, SWAP, THEN, VERB
+from nl2hltl2plan.language.handover_words import GERUND_VERBS, NEGATED_GERUNDS, SWAP, VERB
 
 _BLOCK = r"(?:the\s+)?(?:red|blue|yellow)(?:\s+(?:block|one|cube))?"
 # who asks, in a user story ("As the cell operator, ...")
@@ -101,39 +101,21 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
         r"(?=(?:onto|on|to|into|in)\s)",
         r"\1 goes ",
     ),
-    (
-        r"^(\s*(?:the\s+)?(?:red|blue|yellow)\s+(?:block|pillar|cube|object))\s*:\s*(first|then)\s+(?=region\s+[e-j]\b)",
-        r"\1 goes \2 to ",
-    ),
-    # a block's heading before its time ("yellow block: any time"): it may be moved then
-    (
-        r"^(\s*(?:the\s+)?(?:red|blue|yellow)\s+(?:block|pillar|cube|object))\s*:\s*"
-        r"(?:at\s+)?(?:any\s*time|whenever)\s*$",
-        r"\1 can be moved at any time",
-    ),
     # "the pillars still need to go ...": what is still to be done is what is to be done
     (r"\bstill\s+(?=(?:needs?|has|have|must)\s+(?:to\b|be\b))", " "),
     # the period said first, before a comma or as a label: "during this, place nothing on F" (meanwhile)
     (r"(^|[,;:]\s*)during\s+(?:all\s+)?(?:this|that)\s*(?=,)", r"\1meanwhile "),
-    (r"^\s*(meanwhile|in\s+the\s+meantime)\s*:", r"\1 ,"),
     # a time left free in words after its goal: "..., no timing constraint" (a sentence of its own, "the
     # yellow block has no time constraint", is joined to its goal: `handover_answers.timing_joined`)
     (r",\s*(?:with\s+)?no\s+(?:time|timing)\s+(?:constraints?|restrictions?)\s*$", ", at any time"),
-    # a pair's exchange said without its object: "red and blue swap" (swap places)
-    (
-        r"(\b(?:red|blue|yellow)(?:\s+(?:block|pillar|one))?\s+and\s+(?:the\s+)?(?:red|blue|yellow)"
-        r"(?:\s+(?:blocks?|pillars?|ones?))?\s+(?:swap|exchange|switch|trade))\s*(?=$|,|;)",
-        r"\1 places",
-    ),
     # the impersonal "one" before a modal and a verb is whoever does the work: "one must place X" (you must)
     (
         r"(^|,|;|\band\b|\bthen\b)\s*one\s+(must|should|has\s+to|needs\s+to|is\s+to|may|can)\s+"
         rf"(?=(?:not\s+|never\s+|first\s+|also\s+)?(?:{VERB}|{SWAP})\b)",
         r"\1 you \2 ",
     ),
-    # informal verbs of putting: "chuck / toss / plop / dump / shove the blocks into ..." (put), "haul" (move)
+    # informal verbs of putting: "chuck / toss / plop / dump / shove the blocks into ..." (put)
     (r"\b(?:chuck|toss|plop|dump|shove)(?=\s+(?:the|all|both|it|them|red|blue|yellow|three|\d)\b)", "put"),
-    (r"\bhaul(?=\s+(?:the|all|both|it|them|red|blue|yellow|three|\d)\b)", "move"),
     # a manner said as a result: "..., in such a way that each region holds one block" (..., each region ...)
     (r",?\s*\bin\s+such\s+a\s+way\s+that\b", " ,"),
     # "at any point / time during the task": at any time
@@ -151,12 +133,6 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     ),
     # academic: the goal as a noun
     (r"^\s*the\s+(?:objective|aim|purpose|goal)\s+is\s+(?:that\b|the\s+(?=\w+\s+of\b))", " "),
-    # a step named by its noun after an order word is the step: "red before (the) placement of blue"
-    (
-        r"\b(before|after|then)\s+(?:the\s+)?(?:placement|positioning|placing|movement|relocation|transfer)\s+of\s+"
-        r"(?=(?:the|all|both|red|blue|yellow)\b)",
-        r"\1 ",
-    ),
     (r"\b(?:the\s+)?(?:relocation|movement)\s+of\s+(?=(?:the|all|both|each|every)\b)", "move "),
     # a block's state named as the goal: "make sure the yellow block is back on region G" (put it back there)
     (
@@ -180,27 +156,14 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
         r"is\s+the\s+(?:last|final)\s+step\b",
         lambda m: f"{m[1]}{m[2]} finally , {(GERUND_VERBS | NEGATED_GERUNDS)[m[3]]}{m[4]}",
     ),
-    (
-        rf"(^|,|;|\band\b)(\s*)({'|'.join(GERUND_VERBS | NEGATED_GERUNDS)})\b([^,;]+?)\s+"
-        r"is\s+(?:the|my|your|our)\s+(?:job|task|plan|goal)\b",
-        lambda m: f"{m[1]}{m[2]}{(GERUND_VERBS | NEGATED_GERUNDS)[m[3]]}{m[4]}",
-    ),
-    # a gerund step that is forbidden: "touching the blue block before ... is not allowed" (do not touch ...)
-    (
-        rf"(^|,|;|\band\b)(\s*)({'|'.join(NEGATED_GERUNDS)})\b([^,;]+?)\s+"
-        r"is\s+(?:not\s+allowed|not\s+permitted|forbidden|prohibited)\b",
-        lambda m: f"{m[1]}{m[2]}do not {NEGATED_GERUNDS[m[3]]}{m[4]}",
-    ),
     # the last step's time without its comma: "after all that yellow back to g"
     (r"\b(after\s+all\s+(?:of\s+)?(?:that|this|these))\s+(?=(?:the\s+)?(?:red|blue|yellow)\b)", r"\1 , "),
     # "placement / return / transfer of X": the verb; "with placement of X before Y" adds that step
-    (r"\bwith\s+(?:the\s+)?placement\s+of\s+(?=(?:the|all|both|red|blue|yellow)\b)", ", and place "),
     (
         r"\b(?:the\s+)?(placement|positioning|return|transfer|delivery)\s+of\s+"
         r"(?=(?:the|all|both|each|every|red|blue|yellow)\b)",
         lambda m: {"placement": "place", "positioning": "place", "delivery": "deliver"}.get(m[1], m[1]) + " ",
     ),
-    (r"\b(?:an?\s+|the\s+)?(exchange|swap)\s+of\s+(?=the\s+positions?\b)", r"\1 "),
     # "no placement of (any) objects on R": nothing placed on R
     (
         r"\bno\s+placements?\s+of\s+(?:any\s+)?(?:objects?|blocks?|items?|anything)\s+(?=(?:on|in|onto)\b)",
@@ -233,16 +196,10 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     (r"\b(?:somewhere|at\s+some\s+point)\s+along\s+the\s+way\b", "at any time"),
     (rf"\b(?:leaving|leave|keeping|keep)\s+({_BLOCK})\s+untouched\b", r"\1 must not be touched"),
     # telegraphic and bulleted
-    (rf"(^|,)\s*(first|then|next|finally)\s+(?={_BLOCK}\s+(?:to|on|onto|in|into)\s)", r"\1 \2 , "),
     (
         r"^\s*((?:the\s+)?(?:two|three|four|\d)\s+(?:blocks|objects|pillars|items|cubes|pieces))\s*,\s*"
         r"(?=(?:the\s+)?(?:two|three|four|\d)\s+(?:(?:goal|target)\s+)?regions\s*:)",
         r"put \1 on ",
-    ),
-    (
-        rf"^\s*((?:regions?\s+)?{_LETTERS})\s*:\s*(?:nothing|no\s+(?:objects?|blocks?))"
-        r"(?:\s+(?:(?:is|are|gets?|may\s+be|can\s+be)\s+)?(?:placed|put|dropped|allowed|goes))?\b",
-        r"nothing on \1",
     ),
     (
         r"^\s*((?:the\s+)?(?:red|blue|yellow)\s+(?:and|&)\s+(?:the\s+)?(?:red|blue|yellow)(?:\s+(?:blocks|ones))?)\s*:\s*"
@@ -261,7 +218,6 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
         r"(?:one|a\s+single|no\s+more\s+than)\b)",
         "must ",
     ),
-    (r"\b(?:gets|got)\s+(?=(?:to|onto|into|over\s+to|across\s+to)\s+(?:the|regions?|any|[e-j])\b)", "goes "),
     # progressive narration: "nothing is being placed on F" (is placed), "no region is getting two blocks"
     (
         r"\b(is|are)\s+being\s+(?=(?:placed|put|set|dropped|moved|touched|handled|grabbed|picked\s+up)\b)",
@@ -269,9 +225,6 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     ),
     # a user story's role ("As the operator, I want ...") says who asks, never what is asked
     (rf"^\s*as\s+(?:an?|the)\s+(?:[a-z]+\s+){{0,2}}?{_ROLE}\s*,", " "),
-    # a need after a step word ("After that, I want the yellow block back on G"): the need is the step's
-    # goal, so the step word reads it as it reads a verb ("I want you to ..." is left to the word tables)
-    (rf"((?:^|,|;)\s*(?:{THEN}|{AFTER_ALL})\s*,?\s*)(?:i|we)\s+(?=(?:want|need)\b(?!\s+you\b))", r"\1"),
     # a clause added with "plus", "on top of that", "as well as" (before a verb): "and"
     (
         rf"(?:,\s*|^\s*)plus\s*,?\s*(?=(?:the|do|never|no|nothing|red|blue|yellow|only|each|one)\b|{_VERBS})",
@@ -321,7 +274,7 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     (rf"\b{_MANNER}\b", " "),
     *(
         (rf"\bis\s+{gerund}\b", third_person)
-        for gerund, third_person in (("getting", "gets"), ("touching", "touches"), ("holding", "holds"))
+        for gerund, third_person in (("getting", "gets"),)
     ),
 )
 
