@@ -156,6 +156,12 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
         r"is\s+the\s+(?:last|final)\s+step\b",
         lambda m: f"{m[1]}{m[2]} finally , {(GERUND_VERBS | NEGATED_GERUNDS)[m[3]]}{m[4]}",
     ),
+    # a gerund step that is forbidden: "touching the blue block before ... is not allowed" (do not touch ...)
+    (
+        rf"(^|,|;|\band\b)(\s*)({'|'.join(NEGATED_GERUNDS)})\b([^,;]+?)\s+"
+        r"is\s+(?:not\s+allowed|not\s+permitted|forbidden|prohibited)\b",
+        lambda m: f"{m[1]}{m[2]}do not {NEGATED_GERUNDS[m[3]]}{m[4]}",
+    ),
     # the last step's time without its comma: "after all that yellow back to g"
     (r"\b(after\s+all\s+(?:of\s+)?(?:that|this|these))\s+(?=(?:the\s+)?(?:red|blue|yellow)\b)", r"\1 , "),
     # "placement / return / transfer of X": the verb; "with placement of X before Y" adds that step

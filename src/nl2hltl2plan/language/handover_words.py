@@ -366,6 +366,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (rf"^\s*{_RULE_LABEL}\s+({PERIOD_WORDS})\s*:\s*(.+)$", r"\2 \1"),
     # a reason clause: read as a clause of the instruction ("because regions F, G and H must stay clear, ...")
     (rf"^({STEP_NUMBER})(?:because|since)\s+", r"\1 "),
+    (r"\s*,\s*(?:because|since)\s+", ", and "),
     (r"\s*,\s*so\s+(?!that\b|as\b|long\b|far\b|on\b)", ", "),
     (r"\s*,?\s*(?:since|because|as)\s+(?:the|their)\s+order\s+does\s+not\s+matter\b", " in any order"),
     # a rule announced: "the only ordering rule is that ...", "be careful about one thing:"
@@ -450,6 +451,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
         " ",
     ),
     (r"\bprecedes?\b", "comes before"),
+    (r"\bfollows?\b", "comes after"),
     (
         r"\b(?:nobody|no\s+one|none\s+of\s+the\s+(?:robot\s+)?arms|neither\s+(?:of\s+the\s+)?(?:robot\s+)?arms?)\b",
         "no arm",
