@@ -95,6 +95,86 @@ READINGS += [
     (1, "Ahead of the blue block, the red block must be placed; all three blocks go to the opposite side."),
 ]
 
+# forms of the rewrites deleted this round (and of three restored), in sentences no batch holds: each read
+# right after the deletions (the three restored were refused without their rule)
+PROBES = [
+    (1, "Move all three block to the opposite side, red before blue."),
+    (1, "You must move the three blocks to the opposite side; red before blue."),
+    (1, "We should transfer all three blocks to the opposite side, red before blue."),
+    (2, "Move the three blocks to h i and j, one per region."),
+    (1, "Blue follows red. Move all three blocks to the opposite side."),
+    (
+        3,
+        "Move the three pillars to regions E, F and G beside arms a and b. None of the objects may be "
+        "put on any other region.",
+    ),
+    (
+        4,
+        "Move the three blocks to the opposite regions. Nobody is to touch the blue block until the red "
+        "block has been touched. After all of that, put the yellow block back on region G.",
+    ),
+    (1, "Move all three blocks to the opposite side. Red block placing is before blue block."),
+    (
+        8,
+        "Yellow block first to region I, then to region G. Red and blue blocks to any empty region at "
+        "any time.",
+    ),
+    (
+        5,
+        "Red before blue. The red and blue blocks should end up swapped. The yellow block goes to the "
+        "opposite side at any time.",
+    ),
+    (
+        8,
+        "Put the yellow block on region I and then on region G. As for the red and blue blocks, they go "
+        "to any empty region at any time.",
+    ),
+    (
+        8,
+        "Put the yellow block on region I first and on region G thereafter. The red and blue blocks go "
+        "to any empty region at any time.",
+    ),
+    (
+        1,
+        "What I would like you to do is move all three blocks to the opposite side, red before blue.",
+    ),
+    (
+        8,
+        "Put the yellow block on region I, then on region G. Also: red and blue blocks to any empty "
+        "region at any time.",
+    ),
+    (6, "Red before blue. Put the three objects on regions G, H and I, 1 each."),
+    (
+        7,
+        "Put the three objects on region I one after another, red before blue. Regions F, G and H: "
+        "nothing placed meanwhile.",
+    ),
+    (
+        3,
+        "Move the three pillars to regions E, F and G beside arms a and b, because no object may be put "
+        "on any other region.",
+    ),
+    (
+        4,
+        "Move the three blocks to the opposite regions. The blue block may not be touched before the red "
+        "block. After that, I want the yellow block back on region G.",
+    ),
+    (
+        6,
+        "Red before blue. Moving the three objects to regions G, H and I, one per region, is the job.",
+    ),
+    (
+        4,
+        "Move the three blocks to the opposite regions; touching the blue block before the red block is "
+        "not allowed. After all of that, put the yellow block back on region G.",
+    ),
+    (
+        8,
+        "The yellow block gets to region I first, then to region G. The red and blue blocks get to any "
+        "empty region at any time.",
+    ),
+]
+
 NEAR_MISSES = [
     (1, "Three blocks to the opposite side. Red before blue. Go to region G."),  # a place: no start signal
     (5, "Red before blue. Red and yellow swap. Yellow to the opposite side, any time."),
@@ -156,6 +236,11 @@ NEAR_MISSES = [
 
 @pytest.mark.parametrize(("task_id", "text"), READINGS)
 def test_what_the_words_name_is_read_in_any_voice(task_id, text):
+    assert_written_spec(task_id, text)
+
+
+@pytest.mark.parametrize(("task_id", "text"), PROBES)
+def test_forms_of_deleted_rewrites_are_still_read(task_id, text):
     assert_written_spec(task_id, text)
 
 
