@@ -95,6 +95,55 @@ READINGS += [
     (1, "Ahead of the blue block, the red block must be placed; all three blocks go to the opposite side."),
 ]
 
+# dev68's voices: a non-native speaker's "must to be", "before than", "near of", "in any moment", "whatever
+# empty region", "after to finish all", "make exchange of the position of"; permissions ("a region that
+# already has a block may not get a second one", "and only afterwards")
+READINGS += [
+    (
+        1,
+        "Please to move all three blocks to the opposite side; the red block must to be placed before than"
+        " the blue block.",
+    ),
+    (
+        3,
+        "Carry the three pillars to regions E, F and G near of arms a and b; no object may be put on any"
+        " other region.",
+    ),
+    (
+        5,
+        "Red before blue. Make exchange of the position of red block and blue block. The yellow block goes to"
+        " the opposite side in any moment.",
+    ),
+    (
+        8,
+        "The yellow block goes to region I first and only afterwards to region G; the red and blue blocks go"
+        " to whatever empty region at any time.",
+    ),
+    (
+        2,
+        "The three blocks go on regions H, I and J. A region that already has a block may not get a second"
+        " one.",
+    ),
+    (
+        4,
+        "Move the three blocks to the opposite regions; no arm may touch the blue block until the red block"
+        " has been touched. After to finish all, put the yellow block back on region G.",
+    ),
+]
+NEAR_MISSES_68 = [
+    (
+        1,
+        "Please to move all three blocks to the opposite side; the blue block must to be placed before than"
+        " the red block.",
+    ),
+    (
+        8,
+        "The yellow block goes to region G first and only afterwards to region I; the red and blue blocks go"
+        " to whatever empty region at any time.",
+    ),
+    (2, "The three blocks go on regions H, I and J. A region that already has a block may get a second one."),
+]
+
 # forms of the rewrites deleted this round (and of three restored), in sentences no batch holds: each read
 # right after the deletions (the three restored were refused without their rule)
 PROBES = [
@@ -244,7 +293,7 @@ def test_forms_of_deleted_rewrites_are_still_read(task_id, text):
     assert_written_spec(task_id, text)
 
 
-@pytest.mark.parametrize(("task_id", "text"), NEAR_MISSES)
+@pytest.mark.parametrize(("task_id", "text"), NEAR_MISSES + NEAR_MISSES_68)
 def test_near_misses_are_refused_or_give_another_spec(task_id, text):
     assert_not_the_written_spec(task_id, text)
 

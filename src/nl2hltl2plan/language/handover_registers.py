@@ -131,6 +131,25 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
         r"(placed|put|moved)\b",
         r"\2 \3 be \4 before \1",
     ),
+    # non-native: "to" after a modal or "please" ("must to be placed", "please to move"), "before than", "near
+    # of", "in any / whatever moment" (at any time), "whatever empty region", "after (to) finish all",
+    # "make exchange of the position(s) of", "X is to put before Y" (is to be put), "and only afterwards"
+    (rf"\b(must|can|cannot|should|may|could|will|would|please)\s+to\s+(?=(?:be|have|not|{VERB})\b)", r"\1 "),
+    (r"\b(before|after)\s+than\b", r"\1"),
+    (r"\bnear\s+of\b", "near"),
+    (r"\bin\s+(?:any|whatever|whichever|every)\s+moment\b", "at any time"),
+    (r"\bwhatever\s+(?=(?:empty|free|unoccupied)\s+regions?\b)", "any "),
+    (r"\bafter\s+(?:to\s+)?finish(?:ing)?\s+all(?:\s+of\s+(?:this|that|it))?\b", "after all of this"),
+    (r"\bmake\s+(?:an?\s+|the\s+)?exchange\s+of\s+the\s+positions?\s+of\b", "exchange the positions of"),
+    (r"\b(is|are)\s+to\s+put\s+(?=before|after|first|on|in|onto|into)\b", r"\1 to be put "),
+    (r"\band\s+only\s+(?:afterwards?|after\s+that|then)\b", "and then"),
+    # "a region that already has a block may not get a second one": the world's rule (one block per region)
+    (
+        r"\b(?:a|any)\s+region\s+that\s+already\s+(?:has|holds|contains)\s+(?:a|one)\s+(?:block|object)\s+"
+        r"(?:may|can|must|should)\s+not\s+(?:get|receive|hold|take)\s+(?:a\s+second|another)(?:\s+one|\s+block|"
+        r"\s+object)?\b",
+        "one block per region",
+    ),
     # academic: the goal as a noun
     (r"^\s*the\s+(?:objective|aim|purpose|goal)\s+is\s+(?:that\b|the\s+(?=\w+\s+of\b))", " "),
     (r"\b(?:the\s+)?(?:relocation|movement)\s+of\s+(?=(?:the|all|both|each|every)\b)", "move "),
