@@ -130,6 +130,41 @@ READINGS += [
         " has been touched. After to finish all, put the yellow block back on region G.",
     ),
 ]
+# dev69's conditions that restate an order or a rule
+READINGS += [
+    (
+        6,
+        "Put the three objects on regions G, H and I, one on each. Once you put the blue block, the red block"
+        " must be placed already.",
+    ),
+    (
+        2,
+        "Put the three blocks on regions H, I and J. If a region has a block already, never put a second one"
+        " there.",
+    ),
+    (
+        3,
+        "Move the three pillars to regions E, F and G beside arms a and b. If a region is not E, F or G, put"
+        " nothing on it.",
+    ),
+]
+NEAR_MISSES_69 = [
+    (
+        6,
+        "Put the three objects on regions G, H and I, one on each. Once you put the red block, the blue block"
+        " must be placed already.",
+    ),
+    (
+        2,
+        "Put the three blocks on regions H, I and J. If a region has a block already, put a second one"
+        " there.",
+    ),
+    (
+        3,
+        "Move the three pillars to regions E, F and G beside arms a and b. If a region is not E or F, put"
+        " nothing on it.",
+    ),
+]
 NEAR_MISSES_68 = [
     (
         1,
@@ -293,7 +328,7 @@ def test_forms_of_deleted_rewrites_are_still_read(task_id, text):
     assert_written_spec(task_id, text)
 
 
-@pytest.mark.parametrize(("task_id", "text"), NEAR_MISSES + NEAR_MISSES_68)
+@pytest.mark.parametrize(("task_id", "text"), NEAR_MISSES + NEAR_MISSES_68 + NEAR_MISSES_69)
 def test_near_misses_are_refused_or_give_another_spec(task_id, text):
     assert_not_the_written_spec(task_id, text)
 

@@ -150,6 +150,27 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
         r"\s+object)?\b",
         "one block per region",
     ),
+    # conditions that restate an order or a rule: "when / once / by the time you place X, Y must (already) be
+    # placed (already)" (Y before X); "if a region (already) holds a block, do not / you may not put another
+    # block on it / there" (one block per region); "if a region is not one of E, F and G, put nothing on it"
+    # (nothing on any region other than E, F and G)
+    (
+        rf"^\s*(?:when|once|by\s+the\s+time|whenever|if)\s+(?:you|we)\s+(?:place|put|set|drop)\s+({_BLOCK})\s*,\s*"
+        rf"({_BLOCK})\s+(?:must|has\s+to|should|needs\s+to)\s+(?:already\s+)?(?:be|have\s+been)\s+"
+        r"(?:already\s+)?(?:placed|put|set|dropped)(?:\s+already)?\s*$",
+        r"\2 must be placed before \1",
+    ),
+    (
+        r"^\s*if\s+a\s+region\s+(?:already\s+)?(?:holds|has|contains)\s+(?:a|one)\s+(?:block|object)(?:\s+already)?\s*,\s*"
+        r"(?:do\s+not|don\s+t|never|(?:you\s+)?(?:may|must|should|can)\s*not)\s+(?:put|place|set)\s+(?:another|a\s+second)"
+        r"(?:\s+(?:block|object|one))?\s+(?:there|(?:on|in|onto|into)\s+it)\s*$",
+        "one block per region",
+    ),
+    (
+        rf"^\s*if\s+a\s+region\s+is\s+not\s+(?:one\s+of\s+)?((?:regions?\s+)?{_LETTERS})\s*,\s*"
+        r"(?:do\s+not\s+put\s+(?:any\s+object|anything|objects)|put\s+nothing)\s+(?:on|in)\s+it\s*$",
+        r"nothing may be put on any region other than \1",
+    ),
     # academic: the goal as a noun
     (r"^\s*the\s+(?:objective|aim|purpose|goal)\s+is\s+(?:that\b|the\s+(?=\w+\s+of\b))", " "),
     (r"\b(?:the\s+)?(?:relocation|movement)\s+of\s+(?=(?:the|all|both|each|every)\b)", "move "),
