@@ -33,7 +33,17 @@ the word tables' `REWRITES`). Each rewrite changes no meaning:
   place's preposition ("blue block: onto region I, after the red one": the block goes there); "still
   need(s) to" is "need(s) to";
 - labels that say something: "Scope:" / "You will need:" (the blocks, as the scene statement "we have
-  ..."), "Here's what I want:" (a need).
+  ..."), "Here's what I want:" (a need);
+- the period said first ("during this, ...", "meanwhile: ..."), a time left free ("..., no timing
+  constraint"), the impersonal "one must V" (you must), informal verbs of putting ("toss / chuck / plop /
+  dump / shove the blocks"), "in such a way that", "at any point during the task", an order said first
+  ("ahead of X, Y must be placed");
+- a non-native speaker's "must to be", "please to", "before than", "near of", "in any moment", "whatever
+  empty region", "after to finish all", "make exchange of the position of", "is to put before";
+- conditions that restate an order or a rule: "when / once / by the time you place X, Y must already be
+  placed" (Y before X), "if a region already holds a block, do not put another block there" and "a region
+  that already has a block may not get a second one" (one block per region), "if a region is not one of
+  E, F and G, put nothing on it" (nothing on any other region).
 """
 
 from __future__ import annotations
