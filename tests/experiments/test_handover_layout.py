@@ -6,7 +6,9 @@ words. Each reading gives the written spec; each near miss (an order reversed, a
 that does not match, a tag that is not one speaker's) is refused or gives another spec. The development
 batches `dev64` and `dev65` are read right or refused (`test_handover_cues.py`); the held-out
 `validation16` too. Also a start signal said alone ("Go."), a pair's exchange without its object ("red and
-blue swap"), "is it possible for X to V" and every arm named ("the four arms", "arms a, b, c and d").
+blue swap"), "is it possible for X to V" and every arm named ("the four arms", "arms a, b, c and d"); a
+non-native speaker's forms and conditions that restate an order or a rule (`dev68`, `dev69`); and probe
+sentences of the forms of the rewrites deleted this round, which must still read right.
 """
 
 from __future__ import annotations
