@@ -8,21 +8,18 @@ the word tables' `REWRITES`). Each rewrite changes no meaning:
 - narrative: the arms as the subject of a placing verb ("the arms (will) carry the blocks ..."), "before /
   until you touch Y" (before Y is touched), "while you do it", "somewhere along the way" (at any time),
   "leaving X untouched" ("..., while regions F, G and H remain empty" is the cue reader's kept-empty place);
-- telegraphic and bulleted: a verbless step after "first" ("first yellow to region i then region g"),
-  "three objects, three regions: G, H and I" (the regions' count is still checked),
-  the places before what may not go there ("F, G, H: nothing placed"), a pair before its exchange ("red
-  and blue: swap places");
+- telegraphic and bulleted: "three objects, three regions: G, H and I" (the regions' count is still
+  checked), a pair before its exchange ("red and blue: swap places");
 - emphasis: "no exceptions";
 - asides: a timing or order remark in parentheses ("(at any time)", "(whenever)", "(one after another, red
   before blue)", "(in any order)") is set off by commas instead, so it attaches to the clause before it as
   the same words after a comma do; "in that order" after a clause that already orders its steps with
   "then" repeats that order and is dropped (without "then" it stays unread: which order?);
-- modal "is to" before a verb of holding ("each region is to hold only one block": must hold), and "X
-  gets to P" (goes to P) where a place follows;
+- modal "is to" before a verb of holding ("each region is to hold only one block": must hold);
 - frames: a user story's role ("As the operator, ..."), a requirement's identifier ("R1:"),
   office English ("kindly", "do the needful", an emphatic "itself");
-- progressive narration ("nothing is being placed", "no region is getting two blocks"), a need after a
-  step word ("after that, I want X back on G"), "let X VERB" (X must VERB; "don't let anyone touch X");
+- progressive narration ("nothing is being placed", "no region is getting two blocks"), "let X VERB" (X
+  must VERB; "don't let anyone touch X");
 - connectives: "plus", "on top of that", "as well as keeping" (and); "before you start" and "first
   things first" (first);
 - manner adverbs that every plan already meets ("carefully", "quickly"; "gently" is left unread), a group
@@ -104,8 +101,7 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
         r"(?=(?:the\s+)?(?:regions?\s+)?[e-j]\b)",
         r"\1",
     ),
-    # a block's heading before a preposition ("blue block: onto region i, ..."): the block goes there; before
-    # a step word and its region ("yellow block: first region i, then region g"), it goes there first
+    # a block's heading before a preposition ("blue block: onto region i, ..."): the block goes there
     (
         r"^(\s*(?:the\s+)?(?:red|blue|yellow)\s+(?:block|pillar|cube|object))\s*:\s*"
         r"(?=(?:onto|on|to|into|in)\s)",
@@ -267,7 +263,7 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     # asides: a parenthesised timing or order remark reads as one set off by commas
     (rf"\(\s*({_REMARK}(?:\s*(?:,|and)\s*{_REMARK})*)\s*\)", r", \1 ,"),
     (r"(\bthen\b[^,;()]*?)\s*(?:,\s*)?(?:\(\s*)?\bin\s+(?:that|this|the\s+same)\s+order\b(?:\s*\))?", r"\1"),
-    # modal "is to" before a verb of holding; "gets to" a place
+    # modal "is to" before a verb of holding
     # ("is to take the pillars ..." is a goal: "take" and "carry" hold only before a count of one)
     (
         r"\b(?:is|are)\s+to\s+(?=(?:hold|contain|receive|accept)\b|(?:take|carry)\s+(?:(?:only|just|exactly|at\s+most)\s+)?"

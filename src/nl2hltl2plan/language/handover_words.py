@@ -237,7 +237,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
         r"(?:place|position|spot)\b)",
         "goes to ",
     ),
-    # framing that announces the task: "what I would like you to do is (to) ...", "what needs to happen is"
+    # framing that announces the task: "what needs to happen is ..."
     (r"^\s*what\s+(?:needs|has)\s+to\s+(?:happen|be\s+done)\s+is\s+(?:that\s+)?", " "),
     # a heading verb that names an exchange: "Swap: red and blue blocks"
     (r"^\s*(swap|exchange|switch)\s*:\s*(?:(?:swap|exchange|switch)\b)?", r"\1 "),
@@ -246,7 +246,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"(?<!\bin\s)\bany\s+order\b", "in any order"),
     # the state asked for, said as where the blocks end up: "the blocks should end up spread over H, I and J"
     (r"\bend\s+up\s+(?=(?:spread|distributed|split|placed|put)\b)", "be "),
-    # non-native: "red block placing is before blue block", "yellow block go back region G", "firstly",
+    # non-native: "yellow block go back region G", "firstly",
     # "after to region G" (after, then a preposition: afterwards)
     (r"\b(go|goes|come|comes|put|move|return)\s+back\s+(?=regions?\b)", r"\1 back to "),
     (r"\bfirstly\b", "first"),
@@ -387,7 +387,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
         r"\b(?:simply|merely|just|only)\s+(?=(?:needs?|ha(?:s|ve))\s+to\b)|\b(?:simply|merely|just)\s+(?=must\b)",
         "",
     ),
-    # "on region I first and on region G thereafter", "to region I and, after that, to region G"
+    # "to region I and, after that, to region G"
     (r"(?:\s+and)?\s*,\s*(?:after\s+that|afterwards?|subsequently|thereafter)\s*,", ", then"),
     (
         r"\b(?:plan|find|give|compute)\s+(?:a\s+)?(?:solution|plan)\s+(?:that|which)\s+(move|put|place|transfer|bring)s\b",
