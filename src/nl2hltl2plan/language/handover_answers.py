@@ -120,6 +120,11 @@ _TIMING = (
     re.compile(
         rf"(?i)^\s*it\s+(?:does\s+not|doesn[’']?t|does\s*nt)\s+matter\s+when\s+(?P<blocks>{_BLOCKS})\s+{_MOVED}\s*$"
     ),
+    # a time left free in words: "the yellow block has no time constraint"
+    re.compile(
+        rf"(?i)^\s*(?:and\s+|also\s+)?(?P<blocks>{_BLOCKS})\s+(?:has|have)\s+no\s+(?:time|timing)\s+"
+        r"(?:constraints?|restrictions?)\s*$"
+    ),
 )
 # where the last clause of a sentence starts: a comma or semicolon, or "and" / "then" before a verb
 _CLAUSE_BREAK = re.compile(rf"(?i)[,;]|\b(?:and|then)\s+(?=(?:then\s+)?{VERB}\b)")

@@ -285,7 +285,7 @@ _BACKSHIFT = tuple(
 _NOBODY = frozenset("nobody noone none nothing neither never no".split())
 
 
-def _person(speaker: str) -> bool:
+def person(speaker: str) -> bool:
     """A speaker is a person who names nothing the reader reads: a pronoun, a name ("Kim"), a role ("the
     supervisor"); never a block, place or arm ("the red block said ...")."""
     words = speaker.lower().split()
@@ -310,21 +310,21 @@ def unreported(sentence: str) -> str:
 
     def command(match: re.Match[str]) -> str:
         nonlocal reported
-        if not _person(match.group("speaker")):
+        if not person(match.group("speaker")):
             return match.group(0)
         reported = True
         return match.group("start") + ("do not " if match.group("neg") else "")
 
     def clause(match: re.Match[str]) -> str:
         nonlocal reported
-        if not _person(match.group("speaker")):
+        if not person(match.group("speaker")):
             return match.group(0)
         reported = True
         return match.group("start")
 
     def wanted(match: re.Match[str]) -> str:
         nonlocal reported
-        if not _person(match.group("speaker")):
+        if not person(match.group("speaker")):
             return match.group(0)
         reported = True
         return match.group("start") + "we want "
@@ -432,12 +432,19 @@ def _unsigned(sentences: list[str]) -> list[str]:
     return sentences
 
 
+# a start signal said as a whole sentence ("Go.", "Go ahead!", "Begin.", "Proceed."): when to start, which
+# is now; it names nothing to do ("go" alone has no block and no place)
+_START_SIGNAL = re.compile(
+    r"(?i)^\s*(?:go(?:\s+(?:ahead|now))?|begin(?:\s+now)?|start(?:\s+now)?|proceed)\s*[.!]*\s*$"
+)
+
+
 def plain(sentences: list[str]) -> list[str]:
-    """The sentences with empty fragments and a sign-off's name dropped, reported speech and first-person
-    narration said as the team's commands (see the module docstring)."""
+    """The sentences with empty fragments, start signals and a sign-off's name dropped, reported speech and
+    first-person narration said as the team's commands (see the module docstring)."""
     out = []
     for k, sentence in enumerate(_unsigned(sentences)):
-        if empty(sentence, whole=True, header=k == 0):
+        if empty(sentence, whole=True, header=k == 0) or _START_SIGNAL.match(sentence):
             continue
         text = _unframed_sentence(sentence, header=k == 0)
         text = _unframed_sentence(first_person_as_team(unreported(text)), header=k == 0)

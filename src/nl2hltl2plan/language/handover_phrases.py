@@ -69,6 +69,10 @@ def normalise(sentence: str) -> str:
     applied."""
     text = sentence.lower().replace("’", "'")
     text = re.sub(r"(?<=[a-z])-(?=[a-z])", " ", text)  # one-by-one -> one by one
+    # every handover world has four arms a-d (`worlds.handover_world.ARMS`): "all four arms", "the four arms"
+    # and "arms a, b, c and d" are the arms
+    text = re.sub(r"\b(?:all|the)\s+(?:four|4)\s+(?:of\s+the\s+)?(?=(?:robot\s+)?arms\b)", "the ", text)
+    text = re.sub(r"\barms\s+a\s*,\s*b\s*,\s*c\s*,?\s*and\s+d\b", "the arms", text)
     text = _DASH.sub(lambda dash: _dash_as_comma(text, dash), text)
     text = re.sub(r"([,()/:])", r" \1 ", text)
     text = re.sub(r"\b(\w+)'s\b", r"\1 s", text)  # red's -> red s (a possessive)
@@ -107,9 +111,10 @@ def _drop_framing(text: str) -> str:
     return text
 
 
-# what a preamble may not hold: a meaning word, a placing verb, a condition, an exception or a warning
+# what a preamble may not hold: a meaning word, a placing verb, a condition ("when that is done:" is a time),
+# an exception or a warning
 _NAMES = re.compile(
-    rf"{MEANING.pattern}|\b(?:{VERB}|{SWAP}|if|unless|except|only|instead|avoid|but|careful|sure|make|keep|"
+    rf"{MEANING.pattern}|\b(?:{VERB}|{SWAP}|if|when|whenever|done|unless|except|only|instead|avoid|but|careful|sure|make|keep|"
     r"leave|do|does|don|stop|wait|hold|go|goes|step|rule|order|note|remember|important)\b"
 )
 _I_SAYS = re.compile(r"\bi\s+(?=would|need|want|am|have|think|wish|hope|was|will|d|m)\b")
@@ -212,10 +217,11 @@ def _mark_one_per_region(m: Marked) -> None:
         r"(?:be\s+)?(?:allowed\s+|permitted\s+)?"
         rf"(?:(?:to\s+)?(?:occupy|go\s+(?:in|on|to|into)|sit\s+(?:in|on)|be\s+(?:placed\s+)?(?:in|on)|fits?\s+(?:in|on|into))\s+|"
         r"(?:per|in|on|for|to)\s+)"
-        rf"(?:each|every)\s+{region}\b",
+        rf"(?:each|every)\s+{region}\b(?:\s+only\b)?",
         # "only one block can go on each one": "each one" after a place's preposition is each place
         rf"\b{one}\s+(?:(?:can|may|should|must|will)\s+)?(?:go|fit|be)\s+(?:on|in|into)\s+each\s+one\b",
-        rf"\b(?:with\s+)?{one}\s+(?:(?:is|being|may|can)\s+)?(?:allowed\s+|permitted\s+)?(?:per|to\s+a)\s+{region}\b",
+        rf"\b(?:with\s+)?{one}\s+(?:(?:is|being|may|can)\s+)?(?:allowed\s+|permitted\s+)?(?:per|to\s+a)\s+{region}\b"
+        r"(?:\s+only\b)?",  # "... per region only"
         r"\b(?:one|1)\s+(?:each|apiece)\b",
         rf"(?:,\s*)?\b(?:an?\s+)?(?:different|separate|distinct)\s+{region}\s+(?:for|per)\s+(?:each|every)(?:\s+{NOUN})?\b",
         rf"(?:,\s*)?\b(?:an?\s+)?(?:different|separate|distinct)\s+{region}\s+(?:each|apiece)\b",

@@ -51,6 +51,7 @@ from nl2hltl2plan.language.handover_answers import answered, timing_joined
 from nl2hltl2plan.language.handover_cues import restate
 from nl2hltl2plan.language.handover_discourse import plain
 from nl2hltl2plan.language.handover_goals import Clause, Goal, crossed_exchanges, goal_clauses, lead
+from nl2hltl2plan.language.handover_layout import nested_read, transcript_read
 from nl2hltl2plan.language.handover_phrases import drop_but, mark
 from nl2hltl2plan.language.handover_rules import (
     Prohibition,
@@ -253,6 +254,7 @@ def _sentences(instruction: str) -> list[str]:
     dropped. A heading ending in a colon is joined to the line below it, and a record of labelled fields,
     on lines or in sentences and in either order ('Blocks: ...' and 'Targets: ...'), is read as one goal."""
     out: list[str] = []
+    instruction = nested_read(transcript_read(instruction))
     # a record of labelled fields, on lines or in sentences, in either order: "Blocks: red, blue, yellow"
     # then "Targets: H, I, J" (or "Regions: G, H and I. Objects: all three.") is one goal
     for record in _RECORDS:
@@ -262,6 +264,7 @@ def _sentences(instruction: str) -> list[str]:
     bullet = r"[ \t]*\n\s*(?:[-*•·]|\d[.)])\s+"
     instruction = re.sub(rf"(?m)\b(on|onto|in|into|to|at)\s*:{bullet}", r"\1 ", instruction)
     instruction = re.sub(rf"(?m):{bullet}", ": ", instruction)
+    instruction = re.sub(r"(?m):[ \t]*\n\s*(?=\S)", ": ", instruction)  # a heading on a line of its own
     instruction = _unquoted(re.sub(r"\*\*|__", "", instruction))  # markdown's bold: "**Goal:** ..."
     for line in instruction.splitlines():
         text = re.sub(r"(^\s*|[.;!?:]\s+)(\d)\.\s", r"\1\2) ", line)

@@ -8,21 +8,18 @@ the word tables' `REWRITES`). Each rewrite changes no meaning:
 - narrative: the arms as the subject of a placing verb ("the arms (will) carry the blocks ..."), "before /
   until you touch Y" (before Y is touched), "while you do it", "somewhere along the way" (at any time),
   "leaving X untouched" ("..., while regions F, G and H remain empty" is the cue reader's kept-empty place);
-- telegraphic and bulleted: a verbless step after "first" ("first yellow to region i then region g"),
-  "three objects, three regions: G, H and I" (the regions' count is still checked),
-  the places before what may not go there ("F, G, H: nothing placed"), a pair before its exchange ("red
-  and blue: swap places");
+- telegraphic and bulleted: "three objects, three regions: G, H and I" (the regions' count is still
+  checked), a pair before its exchange ("red and blue: swap places");
 - emphasis: "no exceptions";
 - asides: a timing or order remark in parentheses ("(at any time)", "(whenever)", "(one after another, red
   before blue)", "(in any order)") is set off by commas instead, so it attaches to the clause before it as
   the same words after a comma do; "in that order" after a clause that already orders its steps with
   "then" repeats that order and is dropped (without "then" it stays unread: which order?);
-- modal "is to" before a verb of holding ("each region is to hold only one block": must hold), and "X
-  gets to P" (goes to P) where a place follows;
+- modal "is to" before a verb of holding ("each region is to hold only one block": must hold);
 - frames: a user story's role ("As the operator, ..."), a requirement's identifier ("R1:"),
   office English ("kindly", "do the needful", an emphatic "itself");
-- progressive narration ("nothing is being placed", "no region is getting two blocks"), a need after a
-  step word ("after that, I want X back on G"), "let X VERB" (X must VERB; "don't let anyone touch X");
+- progressive narration ("nothing is being placed", "no region is getting two blocks"), "let X VERB" (X
+  must VERB; "don't let anyone touch X");
 - connectives: "plus", "on top of that", "as well as keeping" (and); "before you start" and "first
   things first" (first);
 - manner adverbs that every plan already meets ("carefully", "quickly"; "gently" is left unread), a group
@@ -33,7 +30,17 @@ the word tables' `REWRITES`). Each rewrite changes no meaning:
   place's preposition ("blue block: onto region I, after the red one": the block goes there); "still
   need(s) to" is "need(s) to";
 - labels that say something: "Scope:" / "You will need:" (the blocks, as the scene statement "we have
-  ..."), "Here's what I want:" (a need).
+  ..."), "Here's what I want:" (a need);
+- the period said first ("during this, ...", "meanwhile: ..."), a time left free ("..., no timing
+  constraint"), the impersonal "one must V" (you must), informal verbs of putting ("toss / chuck / plop /
+  dump / shove the blocks"), "in such a way that", "at any point during the task", an order said first
+  ("ahead of X, Y must be placed");
+- a non-native speaker's "must to be", "please to", "before than", "near of", "in any moment", "whatever
+  empty region", "after to finish all", "make exchange of the position of", "is to put before";
+- conditions that restate an order or a rule: "when / once / by the time you place X, Y must already be
+  placed" (Y before X), "if a region already holds a block, do not put another block there" and "a region
+  that already has a block may not get a second one" (one block per region), "if a region is not one of
+  E, F and G, put nothing on it" (nothing on any other region).
 """
 
 from __future__ import annotations
@@ -42,7 +49,7 @@ import re
 from collections.abc import Callable
 
 from nl2hltl2plan.language.content_words import phrase_list_pattern
-from nl2hltl2plan.language.handover_words import AFTER_ALL, GERUND_VERBS, NEGATED_GERUNDS, SWAP, THEN, VERB
+from nl2hltl2plan.language.handover_words import GERUND_VERBS, NEGATED_GERUNDS, SWAP, VERB
 
 _BLOCK = r"(?:the\s+)?(?:red|blue|yellow)(?:\s+(?:block|one|cube))?"
 # who asks, in a user story ("As the cell operator, ...")
@@ -102,14 +109,76 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     ),
     # "the pillars still need to go ...": what is still to be done is what is to be done
     (r"\bstill\s+(?=(?:needs?|has|have|must)\s+(?:to\b|be\b))", " "),
+    # the period said first, before a comma or as a label: "during this, place nothing on F" (meanwhile)
+    (r"(^|[,;:]\s*)during\s+(?:all\s+)?(?:this|that)\s*(?=,)", r"\1meanwhile "),
+    # a time left free in words after its goal: "..., no timing constraint" (a sentence of its own, "the
+    # yellow block has no time constraint", is joined to its goal: `handover_answers.timing_joined`)
+    (r",\s*(?:with\s+)?no\s+(?:time|timing)\s+(?:constraints?|restrictions?)\s*$", ", at any time"),
+    # the impersonal "one" before a modal and a verb is whoever does the work: "one must place X" (you must)
+    (
+        r"(^|,|;|\band\b|\bthen\b)\s*one\s+(must|should|has\s+to|needs\s+to|is\s+to|may|can)\s+"
+        rf"(?=(?:not\s+|never\s+|first\s+|also\s+)?(?:{VERB}|{SWAP})\b)",
+        r"\1 you \2 ",
+    ),
+    # informal verbs of putting: "chuck / toss / plop / dump / shove the blocks into ..." (put)
+    (r"\b(?:chuck|toss|plop|dump|shove)(?=\s+(?:the|all|both|it|them|red|blue|yellow|three|\d)\b)", "put"),
+    # a manner said as a result: "..., in such a way that each region holds one block" (..., each region ...)
+    (r",?\s*\bin\s+such\s+a\s+way\s+that\b", " ,"),
+    # "at any point / time during the task": at any time
+    (
+        r"\b(at\s+any\s+(?:point|time|moment))\s+(?:during|in|throughout)\s+(?:the|this)\s+"
+        r"(?:task|job|process|work)\b",
+        r"\1",
+    ),
+    # an order said first: "ahead of / before the blue block, the red block must be placed" (red before blue)
+    (
+        r"^\s*(?:ahead\s+of|before|prior\s+to)\s+(the\s+(?:red|blue|yellow)\s+(?:block|pillar|object))\s*,\s*"
+        r"(the\s+(?:red|blue|yellow)\s+(?:block|pillar|object))\s+(must|should|is\s+to|has\s+to)\s+be\s+"
+        r"(placed|put|moved)\b",
+        r"\2 \3 be \4 before \1",
+    ),
+    # non-native: "to" after a modal or "please" ("must to be placed", "please to move"), "before than", "near
+    # of", "in any / whatever moment" (at any time), "whatever empty region", "after (to) finish all",
+    # "make exchange of the position(s) of", "X is to put before Y" (is to be put), "and only afterwards"
+    (rf"\b(must|can|cannot|should|may|could|will|would|please)\s+to\s+(?=(?:be|have|not|{VERB})\b)", r"\1 "),
+    (r"\b(before|after)\s+than\b", r"\1"),
+    (r"\bnear\s+of\b", "near"),
+    (r"\bin\s+(?:any|whatever|whichever|every)\s+moment\b", "at any time"),
+    (r"\bwhatever\s+(?=(?:empty|free|unoccupied)\s+regions?\b)", "any "),
+    (r"\bafter\s+(?:to\s+)?finish(?:ing)?\s+all(?:\s+of\s+(?:this|that|it))?\b", "after all of this"),
+    (r"\bmake\s+(?:an?\s+|the\s+)?exchange\s+of\s+the\s+positions?\s+of\b", "exchange the positions of"),
+    (r"\b(is|are)\s+to\s+put\s+(?=before|after|first|on|in|onto|into)\b", r"\1 to be put "),
+    (r"\band\s+only\s+(?:afterwards?|after\s+that|then)\b", "and then"),
+    # "a region that already has a block may not get a second one": the world's rule (one block per region)
+    (
+        r"\b(?:a|any)\s+region\s+that\s+already\s+(?:has|holds|contains)\s+(?:a|one)\s+(?:block|object)\s+"
+        r"(?:may|can|must|should)\s+not\s+(?:get|receive|hold|take)\s+(?:a\s+second|another)(?:\s+one|\s+block|"
+        r"\s+object)?\b",
+        "one block per region",
+    ),
+    # conditions that restate an order or a rule: "when / once / by the time you place X, Y must (already) be
+    # placed (already)" (Y before X); "if a region (already) holds a block, do not / you may not put another
+    # block on it / there" (one block per region); "if a region is not one of E, F and G, put nothing on it"
+    # (nothing on any region other than E, F and G)
+    (
+        rf"^\s*(?:when|once|by\s+the\s+time|whenever|if)\s+(?:you|we)\s+(?:place|put|set|drop)\s+({_BLOCK})\s*,\s*"
+        rf"({_BLOCK})\s+(?:must|has\s+to|should|needs\s+to)\s+(?:already\s+)?(?:be|have\s+been)\s+"
+        r"(?:already\s+)?(?:placed|put|set|dropped)(?:\s+already)?\s*$",
+        r"\2 must be placed before \1",
+    ),
+    (
+        r"^\s*if\s+a\s+region\s+(?:already\s+)?(?:holds|has|contains)\s+(?:a|one)\s+(?:block|object)(?:\s+already)?\s*,\s*"
+        r"(?:do\s+not|don\s+t|never|(?:you\s+)?(?:may|must|should|can)\s*not)\s+(?:put|place|set)\s+(?:another|a\s+second)"
+        r"(?:\s+(?:block|object|one))?\s+(?:there|(?:on|in|onto|into)\s+it)\s*$",
+        "one block per region",
+    ),
+    (
+        rf"^\s*if\s+a\s+region\s+is\s+not\s+(?:one\s+of\s+)?((?:regions?\s+)?{_LETTERS})\s*,\s*"
+        r"(?:do\s+not\s+put\s+(?:any\s+object|anything|objects)|put\s+nothing)\s+(?:on|in)\s+it\s*$",
+        r"nothing may be put on any region other than \1",
+    ),
     # academic: the goal as a noun
     (r"^\s*the\s+(?:objective|aim|purpose|goal)\s+is\s+(?:that\b|the\s+(?=\w+\s+of\b))", " "),
-    # a step named by its noun after an order word is the step: "red before (the) placement of blue"
-    (
-        r"\b(before|after|then)\s+(?:the\s+)?(?:placement|positioning|placing|movement|relocation|transfer)\s+of\s+"
-        r"(?=(?:the|all|both|red|blue|yellow)\b)",
-        r"\1 ",
-    ),
     (r"\b(?:the\s+)?(?:relocation|movement)\s+of\s+(?=(?:the|all|both|each|every)\b)", "move "),
     # a block's state named as the goal: "make sure the yellow block is back on region G" (put it back there)
     (
@@ -133,11 +202,6 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
         r"is\s+the\s+(?:last|final)\s+step\b",
         lambda m: f"{m[1]}{m[2]} finally , {(GERUND_VERBS | NEGATED_GERUNDS)[m[3]]}{m[4]}",
     ),
-    (
-        rf"(^|,|;|\band\b)(\s*)({'|'.join(GERUND_VERBS | NEGATED_GERUNDS)})\b([^,;]+?)\s+"
-        r"is\s+(?:the|my|your|our)\s+(?:job|task|plan|goal)\b",
-        lambda m: f"{m[1]}{m[2]}{(GERUND_VERBS | NEGATED_GERUNDS)[m[3]]}{m[4]}",
-    ),
     # a gerund step that is forbidden: "touching the blue block before ... is not allowed" (do not touch ...)
     (
         rf"(^|,|;|\band\b)(\s*)({'|'.join(NEGATED_GERUNDS)})\b([^,;]+?)\s+"
@@ -147,13 +211,11 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     # the last step's time without its comma: "after all that yellow back to g"
     (r"\b(after\s+all\s+(?:of\s+)?(?:that|this|these))\s+(?=(?:the\s+)?(?:red|blue|yellow)\b)", r"\1 , "),
     # "placement / return / transfer of X": the verb; "with placement of X before Y" adds that step
-    (r"\bwith\s+(?:the\s+)?placement\s+of\s+(?=(?:the|all|both|red|blue|yellow)\b)", ", and place "),
     (
         r"\b(?:the\s+)?(placement|positioning|return|transfer|delivery)\s+of\s+"
         r"(?=(?:the|all|both|each|every|red|blue|yellow)\b)",
         lambda m: {"placement": "place", "positioning": "place", "delivery": "deliver"}.get(m[1], m[1]) + " ",
     ),
-    (r"\b(?:an?\s+|the\s+)?(exchange|swap)\s+of\s+(?=the\s+positions?\b)", r"\1 "),
     # "no placement of (any) objects on R": nothing placed on R
     (
         r"\bno\s+placements?\s+of\s+(?:any\s+)?(?:objects?|blocks?|items?|anything)\s+(?=(?:on|in|onto)\b)",
@@ -186,16 +248,10 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     (r"\b(?:somewhere|at\s+some\s+point)\s+along\s+the\s+way\b", "at any time"),
     (rf"\b(?:leaving|leave|keeping|keep)\s+({_BLOCK})\s+untouched\b", r"\1 must not be touched"),
     # telegraphic and bulleted
-    (rf"(^|,)\s*(first|then|next|finally)\s+(?={_BLOCK}\s+(?:to|on|onto|in|into)\s)", r"\1 \2 , "),
     (
         r"^\s*((?:the\s+)?(?:two|three|four|\d)\s+(?:blocks|objects|pillars|items|cubes|pieces))\s*,\s*"
         r"(?=(?:the\s+)?(?:two|three|four|\d)\s+(?:(?:goal|target)\s+)?regions\s*:)",
         r"put \1 on ",
-    ),
-    (
-        rf"^\s*((?:regions?\s+)?{_LETTERS})\s*:\s*(?:nothing|no\s+(?:objects?|blocks?))"
-        r"(?:\s+(?:(?:is|are|gets?|may\s+be|can\s+be)\s+)?(?:placed|put|dropped|allowed|goes))?\b",
-        r"nothing on \1",
     ),
     (
         r"^\s*((?:the\s+)?(?:red|blue|yellow)\s+(?:and|&)\s+(?:the\s+)?(?:red|blue|yellow)(?:\s+(?:blocks|ones))?)\s*:\s*"
@@ -207,14 +263,13 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     # asides: a parenthesised timing or order remark reads as one set off by commas
     (rf"\(\s*({_REMARK}(?:\s*(?:,|and)\s*{_REMARK})*)\s*\)", r", \1 ,"),
     (r"(\bthen\b[^,;()]*?)\s*(?:,\s*)?(?:\(\s*)?\bin\s+(?:that|this|the\s+same)\s+order\b(?:\s*\))?", r"\1"),
-    # modal "is to" before a verb of holding; "gets to" a place
+    # modal "is to" before a verb of holding
     # ("is to take the pillars ..." is a goal: "take" and "carry" hold only before a count of one)
     (
         r"\b(?:is|are)\s+to\s+(?=(?:hold|contain|receive|accept)\b|(?:take|carry)\s+(?:(?:only|just|exactly|at\s+most)\s+)?"
         r"(?:one|a\s+single|no\s+more\s+than)\b)",
         "must ",
     ),
-    (r"\b(?:gets|got)\s+(?=(?:to|onto|into|over\s+to|across\s+to)\s+(?:the|regions?|any|[e-j])\b)", "goes "),
     # progressive narration: "nothing is being placed on F" (is placed), "no region is getting two blocks"
     (
         r"\b(is|are)\s+being\s+(?=(?:placed|put|set|dropped|moved|touched|handled|grabbed|picked\s+up)\b)",
@@ -222,9 +277,6 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     ),
     # a user story's role ("As the operator, I want ...") says who asks, never what is asked
     (rf"^\s*as\s+(?:an?|the)\s+(?:[a-z]+\s+){{0,2}}?{_ROLE}\s*,", " "),
-    # a need after a step word ("After that, I want the yellow block back on G"): the need is the step's
-    # goal, so the step word reads it as it reads a verb ("I want you to ..." is left to the word tables)
-    (rf"((?:^|,|;)\s*(?:{THEN}|{AFTER_ALL})\s*,?\s*)(?:i|we)\s+(?=(?:want|need)\b(?!\s+you\b))", r"\1"),
     # a clause added with "plus", "on top of that", "as well as" (before a verb): "and"
     (
         rf"(?:,\s*|^\s*)plus\s*,?\s*(?=(?:the|do|never|no|nothing|red|blue|yellow|only|each|one)\b|{_VERBS})",
@@ -274,7 +326,7 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     (rf"\b{_MANNER}\b", " "),
     *(
         (rf"\bis\s+{gerund}\b", third_person)
-        for gerund, third_person in (("getting", "gets"), ("touching", "touches"), ("holding", "holds"))
+        for gerund, third_person in (("getting", "gets"),)
     ),
 )
 

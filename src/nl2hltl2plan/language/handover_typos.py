@@ -7,8 +7,10 @@ TYPO_WORDS = (
     "block blocks region regions opposite place placed transfer before after yellow pillar pillars object "
     "objects separately another empty touch touched exchange position positions should until during period "
     "please first other across three placement touching picked finish finished target targets nothing "
-    "anything meanwhile"
+    "anything meanwhile whenever touches other"
 ).split()
+# four-letter words: only their transposed letters (not the first), which are no English words ("mvoe")
+FOUR_LETTER_WORDS = "move side time back swap each then this that blue".split()
 REAL_WORDS = frozenset(
     "pace paced touche fist firs pease pleas there tree piked finnish blacks placid daring packed pecked "
     "pocked".split()
@@ -36,6 +38,8 @@ SHORT_TYPOS = {
     # clipped in texting
     "nothin": "nothing",
     "anythin": "anything",
+    "obj": "object",
+    "objs": "objects",
     "u": "you",
 }
 
@@ -43,7 +47,7 @@ SHORT_TYPOS = {
 def typo_table() -> dict[str, str]:
     """misspelling -> word, for the words of `TYPO_WORDS` (a misspelling that two words share is left out):
     a transposed, dropped or doubled letter (not the first), and in a word of six letters or more one vowel
-    for another."""
+    for another; for `FOUR_LETTER_WORDS`, a transposed letter (not the first)."""
     seen: dict[str, set[str]] = {}
     for word in (w for w in TYPO_WORDS if len(w) >= 5):
         forms = {word[:i] + word[i + 1] + word[i] + word[i + 2 :] for i in range(1, len(word) - 1)}
@@ -54,4 +58,9 @@ def typo_table() -> dict[str, str]:
             forms |= {word[:i] + v + word[i + 1 :] for i in vowels for v in VOWELS}
         for form in forms - set(TYPO_WORDS) - REAL_WORDS:
             seen.setdefault(form, set()).add(word)
+    for word in FOUR_LETTER_WORDS:
+        for i in range(1, len(word) - 1):
+            form = word[:i] + word[i + 1] + word[i] + word[i + 2 :]
+            if form != word and form not in REAL_WORDS:
+                seen.setdefault(form, set()).add(word)
     return {form: next(iter(words)) for form, words in seen.items() if len(words) == 1} | SHORT_TYPOS

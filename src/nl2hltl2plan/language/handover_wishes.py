@@ -204,6 +204,28 @@ _MAY_I_ASK = re.compile(
     rf"{_START}(?:might|may|could|can)\s+(?:i|we)\s+(?:also\s+)?(?:ask|request)\s+(?:you\s+)?(that|to)\b"
 )
 _WISH_PARTICIPLE = re.compile(rf"{_START}{_WISH_WITH_PARTICIPLE}\s+{_OBJECTS}\s+({_PARTICIPLE})\b")
+# the goal named by a noun, then what it is: "the aim is to have / get X placed on P" (the wish "get X placed
+# on P"); "the aim is for X to be placed on P (and for Y to be exchanged)" (X must be placed on P, and Y must
+# be exchanged)
+_AIM = r"(?:the|my|our)\s+(?:aim|goal|objective|purpose|intention|target)(?:\s+here)?\s+(?:is|will\s+be)"
+_AIM_HAVE = re.compile(rf"^\s*{_AIM}\s+to\s+(?=(?:have|get)\s+{_OBJECTS}\s+{_PARTICIPLE}\b)")
+# a request said as a possibility: "is it possible / would it be possible for X to V" (X must V)
+_AIM_FOR = re.compile(rf"^\s*(?:{_AIM}|(?:is\s+it|would\s+it\s+be)\s+possible)\s+for\s+")
+_SUBJECT = r"((?:the|all|both|each|every|three|two|red|blue|yellow)\b[^,;:]*?)\s+to\s+"
+_FOR_SUBJECT = re.compile(rf"(^|\band\s+)for\s+{_SUBJECT}")
+_FIRST_SUBJECT = re.compile(rf"^{_SUBJECT}")
+
+
+def _aim_said(text: str) -> str:
+    """'the aim is for X to be V-ed ... and for Y to V' -> 'X must be V-ed ... and Y must V'; 'the aim is to
+    have / get X V-ed' -> 'get X V-ed' (a wish, read by `_WISH_PARTICIPLE`)."""
+    text = _AIM_HAVE.sub(" ", text)
+    after = _AIM_FOR.sub("", text, count=1)
+    if after == text or not _FIRST_SUBJECT.match(after):
+        return text
+    return _FOR_SUBJECT.sub(r"\1\2 must ", _FIRST_SUBJECT.sub(r"\1 must ", after, count=1))
+
+
 # "..., and the yellow block went to ...": the same wish goes on
 _AND_WENT = re.compile(rf"(,|\band\b)\s*{_OBJECTS}\s+went\b")
 _PAST_WISH = re.compile(
@@ -237,6 +259,7 @@ def unwished(text: str) -> str:
     >>> unwished("i would like the three pillars moved to e , f and g")
     ' move the three pillars to e , f and g'
     """
+    text = _aim_said(text)
     text = _MIND.sub(lambda m: f"{m[1]} {_MINDED[m[2]]}", text)
     text = _MAY_I_ASK.sub(lambda m: f"{m[1]} it is requested that" if m[2] == "that" else f"{m[1]} ", text)
     text = _WISH_VERB.sub(r"\1 ", text)

@@ -106,7 +106,13 @@ def translate(
             f"the instruction is {len(instruction):,} characters long; the limit is "
             f"{MAX_INSTRUCTION_CHARS:,} (split it into several instructions)"
         )
-    lines = [" ".join(line.split()) for line in instruction.splitlines() if line.strip()]
+    # each line's own spaces collapsed, its indentation kept (a nested list's sub-item says what it is under)
+    indent = [line[: len(line) - len(line.lstrip())] for line in instruction.splitlines()]
+    lines = [
+        i + " ".join(line.split())
+        for i, line in zip(indent, instruction.splitlines(), strict=True)
+        if line.strip()
+    ]
     instruction = " ".join(instruction.split())
     if not instruction:
         raise HTTError("empty instruction")

@@ -1,0 +1,66 @@
+"""The layout of a handover instruction's lines, read before its sentences are split (`handover_reading`):
+
+- a transcript: a time stamp opening a line ("[09:02]", "14:20 -") says when it was said, never when to do
+  anything, and a speaker's tag after it ("[09:02] Dana: ...") or one that opens every line ("Sam: ...",
+  twice or more) names who said it; both are dropped. The speaker names nothing the reader reads (a name,
+  a role: `handover_discourse.person`; "Arms: ..." or "Red block: ..." stay, to be read as they are);
+- a nested list: an indented bullet under a line goes on with that line, after a comma ("- the three
+  blocks -> region I" and under it "  - one after another": "the three blocks -> region I, one after
+  another"); under a line that ends a sentence ('.', '!', '?') it is a sentence of its own, and under a
+  heading (':') it goes on after the colon. An indented item may be lettered or numbered ("   a. on
+  regions H, I and J"); one that is a labelled field ("  - order: red before blue") stays a line of its own.
+
+    >>> transcript_read("[09:02] Dana: red first.\\n[09:03] Dana: blue last.")
+    'red first.\\nblue last.'
+    >>> nested_read("- yellow block\\n  - first to region I\\n  - then to region G")
+    '- yellow block, first to region I, then to region G'
+"""
+
+from __future__ import annotations
+
+import re
+
+from nl2hltl2plan.language.handover_discourse import person
+
+_STAMP = re.compile(
+    r"^\s*(?:\[\s*\d{1,2}:\d{2}(?::\d{2})?\s*\]|\(\s*\d{1,2}:\d{2}(?::\d{2})?\s*\)|"
+    r"\d{1,2}:\d{2}(?::\d{2})?(?=\s*[-–\]]?\s+[A-Za-z]))\s*[-–]?\s*"
+)
+_TAG = re.compile(r"^\s*([A-Z][A-Za-z.']*(?:\s+[A-Z][A-Za-z.']*)?)\s*:\s+(?=\S)")
+_BULLET = re.compile(r"^([ \t]*)(?:[-*•·]|(?<=\s)[a-z0-9][.)])\s+(.*)$")
+_FIELD = re.compile(r"^[A-Za-z][\w ]{0,20}:\s")  # a labelled field ("order: red first"): a line of its own
+
+
+def transcript_read(text: str) -> str:
+    lines = text.splitlines()
+    stamped = [_STAMP.match(line) is not None for line in lines]
+    lines = [_STAMP.sub("", line, count=1) for line in lines]
+    tags = [found[1] if (found := _TAG.match(line)) else None for line in lines]
+    out = []
+    for line, tag, was_stamped in zip(lines, tags, stamped, strict=True):
+        repeated = (
+            tag is not None
+            and len(lines) > 1
+            and tags.count(tag) >= 2
+            and tags.count(tag) == sum(1 for t in tags if t is not None)
+        )
+        if tag is not None and (was_stamped or repeated) and person(tag):
+            line = _TAG.sub("", line, count=1)
+        out.append(line)
+    return "\n".join(out)
+
+
+def nested_read(text: str) -> str:
+    out: list[str] = []
+    depth: list[int] = []  # the indentation of each line of `out` (-1: not a bullet)
+    for line in text.splitlines():
+        bullet = _BULLET.match(line)
+        indent = len(bullet[1].expandtabs(4)) if bullet else -1
+        if bullet and out and indent > max(depth[-1], 0) and not _FIELD.match(bullet[2]):
+            parent = out[-1].rstrip()
+            if not parent.endswith((".", "!", "?")):
+                out[-1] = f"{parent} {bullet[2]}" if parent.endswith(":") else f"{parent}, {bullet[2]}"
+                continue
+        out.append(line)
+        depth.append(indent)
+    return "\n".join(out)
