@@ -48,6 +48,16 @@ def _known_words() -> frozenset[str]:
     return frozenset(w for key in lexicon() for w in key) | words
 
 
+def known_word(word: str) -> bool:
+    """Whether the lexicon or one of the project's word lists knows `word` (lower case) as written."""
+    return word in _known_words()
+
+
+def english_word(word: str) -> bool:
+    """Whether English (pyspellchecker's frequency list) knows `word` (lower case)."""
+    return bool(_english().known([word]))
+
+
 @cache
 def _english():  # type: ignore[no-untyped-def]  # pyspellchecker has no type hints
     from spellchecker import SpellChecker

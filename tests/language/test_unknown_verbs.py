@@ -1,0 +1,74 @@
+"""Issue 23, the lead's probes of session 17: an action the system has no word for ("... and fluff it")
+and a person as the place ("keep it away from the kids") were dropped, and the rest reported solved.
+Each is now refused, naming the word, next to a near miss that keeps its reading."""
+
+from __future__ import annotations
+
+from functools import cache
+
+import pytest
+
+from nl2hltl2plan.config import data_dir
+from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.language.translate import translate
+from nl2hltl2plan.language.unknown_verbs import unknown_verbs
+from nl2hltl2plan.worlds import load_world
+from nl2hltl2plan.worlds.world import World
+
+pytestmark = pytest.mark.skipif(data_dir(required=False) is None, reason="needs ../shared/data")
+BOTH = pytest.mark.parametrize("backend", ["offline", "grammar"])
+
+
+@cache
+def _world(name: str) -> World:
+    return load_world(name)
+
+
+def _refusal(text: str, backend: str) -> str:
+    try:
+        res = translate(text, _world("FloorPlan220"), backend)
+    except HTTError as exc:
+        return str(exc)
+    assert res.partial, [t.summary() for t in res.tasks]
+    return "; ".join(res.unparsed)
+
+
+@BOTH
+@pytest.mark.parametrize(
+    ("text", "word"),
+    [
+        ("put the pillow on the sofa and fluff it", "'fluff' (action)"),
+        ("put the laptop on the coffee table, then polish it", "'polish' (action)"),
+        ("please hide the credit card in the box", "'hide' (action)"),
+        ("put the laptop on the sofa and keep it away from the kids", "'kids' (place)"),
+    ],
+)
+def test_an_unknown_action_or_a_person_is_refused_by_name(backend, text, word):
+    assert word in _refusal(text, backend)
+
+
+@BOTH
+@pytest.mark.parametrize(
+    "text",
+    [
+        "put the laptop on the coffee table and gently put the pillow on the sofa",  # an adverb
+        "put the box containing the credit card on the sofa",  # a participle describes a thing
+    ],
+)
+def test_words_around_a_command_that_name_no_action_keep_the_reading(backend, text):
+    res = translate(text, _world("FloorPlan220"), backend)
+    assert not res.partial, res.unparsed
+    assert res.tasks
+
+
+def test_a_step_on_the_way_is_no_unknown_action():
+    """ "face the armchair", as ALFRED's annotators write their steps: part of the task that follows."""
+    text = "turn around, face the armchair and put the pillow on it"
+    res = translate(text, _world("FloorPlan220"), "offline")
+    assert [t.summary() for t in res.tasks] == ["place Pillow -> ArmChair"] and not res.partial
+
+
+def test_the_verb_is_found_where_a_command_opens_and_an_object_follows():
+    assert [u.words for u in unknown_verbs("Fluff the pillow. Then put it on the sofa")] == ["fluff"]
+    assert unknown_verbs("put the pillow near the fluff") == []  # not a command's verb
+    assert unknown_verbs("put the pillow on the sofa and fluff") == []  # no object follows: not judged
