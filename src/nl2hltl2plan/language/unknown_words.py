@@ -1,0 +1,128 @@
+"""Actions and things the system has no word for (issue 23): "put the pillow on the sofa and fluff it",
+"put the spoon in the goblet and put it in the sink".
+
+Actions (`unknown_verbs`). A word that opens a command (at the text's or a clause's start, or after
+"and", "then", "please") and is followed by its object ("it", "them", a determiner) is the command's
+verb. When English knows that word but none of the project's word tables does (the lexicon,
+`content_words.txt`, the order and politeness lists), no base task does what it says: it is unread,
+and the instruction is refused, never read as the commands around it.
+
+Not judged: prepositions ("behind the mug"), words in -ly ("gently the ...") and in -ing ("containing a
+knife": a participle describes a thing), and words English does not know (the spelling rule's business).
+
+Things (`unknown_things`): the thing a placing verb acts on, or the place after "in" / "into" / "onto" /
+"to", whose head word English knows and no word table does ("put the spoon in the goblet", "move the
+tray"), is unread: no object of the world is called so, and a reading without it (the spoon put in the
+sink) would drop it. Not judged: a head with "of" after it (a part or an amount: "the ledge of the sink",
+"a slide of lettuce"), words of position ("the corner", "the middle"), colours, sizes and states before
+a noun ("the black and white statues").
+
+>>> [u.words for u in unknown_verbs("put the pillow on the sofa and fluff it")]
+['fluff']
+>>> unknown_verbs("put the pillow on the sofa and then put it back")
+[]
+>>> [u.words for u in unknown_things("put the spoon in the goblet and put it in the sink")]
+['goblet']
+>>> unknown_things("put the spoon on the ledge of the sink")
+[]
+"""
+
+from __future__ import annotations
+
+import re
+
+from nl2hltl2plan.language.content_words import DETERMINERS, LOCATIVE, Unread, categories
+from nl2hltl2plan.language.grounding import tokens
+from nl2hltl2plan.language.spelling import english_word, known_word
+
+_COMMAND_START = frozenset("and then please pls also now next first finally lastly".split())
+_OBJECT_START = frozenset(DETERMINERS - {"of"} | {"it", "them", "some", "both", "all", "each", "every"})
+_PREPOSITIONS = LOCATIVE | {
+    "to", "into", "onto", "upon", "toward", "towards", "past", "through", "via", "outside", "around",
+    "beside", "besides", "within", "over", "up", "down", "out", "for", "like", "than", "as",
+}  # fmt: skip
+# words that open a clause without naming its action: conjunctions, pronouns, auxiliaries and the verbs
+# whose object the action follows ("let it cool", "use the knife to slice ...", "have the mug in the sink")
+_NO_ACTION = frozenset(
+    "but or nor yet so plus except including especially even only just too either neither whether while "
+    "where when which what who how why there here you we they he she i let have has had use need want like "
+    "try help be is are was were do does did can could will would should must may might shall".split()
+)
+_CLAUSE_BREAK = re.compile(r"[,.;:!?()]|\s[-–—]\s")
+REASON = "no base task does this: an action the system has no word for"
+
+
+def unknown_verbs(instruction: str) -> list[Unread]:
+    """The verbs of commands in `instruction` that English knows and no word table of the project does."""
+    toks = tokens(instruction)
+    out = []
+    for i, (word, start, _) in enumerate(toks[:-1]):
+        opens = i == 0 or toks[i - 1][0] in _COMMAND_START or _CLAUSE_BREAK.search(
+            instruction[toks[i - 1][2] : start]
+        )
+        if opens and toks[i + 1][0] in _OBJECT_START and _unknown_action(word):
+            out.append(Unread(word, "action", REASON))
+    return out
+
+
+def _unknown_action(word: str) -> bool:
+    if len(word) < 3 or word in DETERMINERS | _PREPOSITIONS | _NO_ACTION:
+        return False
+    if word.endswith(("ly", "ing", "'s")):  # an adverb, a participle, a possessive
+        return False
+    return not known_word(word) and not categories(word) and english_word(word)
+
+
+# what is acted on after these words: a placing or treating verb, or the preposition of a destination
+_TAKES_A_THING = frozenset(
+    "in into onto to inside put place move set drop take grab pick wash rinse clean heat cool chill slice "
+    "cut bring carry throw toss".split()
+)
+_THING_DETERMINERS = frozenset(
+    "the a an my your its their that this these those some both two another".split()
+)
+# nouns of position and amount, and words that describe a thing before its noun
+_NOT_A_THING = frozenset(
+    "right left corner edge middle center centre front back side sides top bottom wall floor ground end "
+    "rest spot location area space room way place half part bit lot other one ones same kitchen bedroom "
+    "bathroom office house home black white grey gray red blue green yellow brown orange pink purple gold "
+    "silver golden new old large small big little deep tall short clean dirty empty full wet dry cold hot "
+    "warm closest farthest nearest".split()
+)
+_THING_ENDS = LOCATIVE | _COMMAND_START | frozenset("to into onto or with before after until once".split())
+THING_REASON = "no object of this world is called so"
+
+
+def unknown_things(instruction: str) -> list[Unread]:
+    """The things acted on or put into in `instruction` whose name English knows and no word table does."""
+    toks = tokens(instruction)
+    out = []
+    for i in range(len(toks) - 2):
+        if toks[i][0] not in _TAKES_A_THING or toks[i + 1][0] not in _THING_DETERMINERS:
+            continue
+        if toks[i][0] == "to" and i and toks[i - 1][0] in ("next", "close", "up"):
+            continue  # "next to the fireplace": a landmark, where the thing is
+        head = _head(instruction, toks, i + 2)
+        if head is not None and _unknown_thing(head):
+            out.append(Unread(head, "object", THING_REASON))
+    return out
+
+
+def _head(instruction: str, toks: list[tuple[str, int, int]], start: int) -> str | None:
+    """The noun that ends the phrase opening at token `start` (at most two words), or None where a known
+    word, a word of position or a part ("of") comes first."""
+    for j in range(start, min(start + 2, len(toks))):
+        word = toks[j][0]
+        if known_word(word) or categories(word) or word in _NOT_A_THING:
+            return None
+        last = j + 1 == len(toks)
+        nxt = "" if last else toks[j + 1][0]
+        if nxt == "of":
+            return None
+        if last or nxt in _THING_ENDS or _CLAUSE_BREAK.search(instruction[toks[j][2] : toks[j + 1][1]]):
+            return word
+    return None
+
+
+def _unknown_thing(word: str) -> bool:
+    return len(word) > 2 and not word.endswith(("ly", "ing", "ed", "'s")) and english_word(word)
