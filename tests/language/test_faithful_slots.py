@@ -284,3 +284,29 @@ def test_a_reference_to_an_unknown_thing_is_not_matched_by_its_place():
         "put a washed mug in the sink."
     )
     assert not unread and len(order) == 1, (tasks, order, unread)
+
+
+# ----- "a pan beneath a tomato slice": a container slid under a thing holds it (h91) -----------------
+def test_a_container_under_a_thing_that_is_held_holds_it():
+    """Read before as "put the plate on the counter", the ladle dropped with no word unread."""
+    for text, want in (
+        (
+            "Move a pan beneath a tomato slice on the counter.",
+            "place_in_container Tomato(sliced) in Pan -> CounterTop",
+        ),
+        ("Put a plate under the ladle on the counter.", "place_in_container Ladle in Plate -> CounterTop"),
+        ("Move a bowl underneath the fork in the sink.", "place_in_container Fork in Bowl -> SinkBasin"),
+    ):
+        tasks, _, unread = read(text)
+        assert summaries(tasks) == [want] and not unread, (text, tasks, unread)
+
+
+def test_a_container_under_a_fixed_place_goes_there():
+    """Near misses: under the coffee maker (its spout), under the sink (the cabinet), and a thing under a
+    thing that is no container."""
+    tasks, _, unread = read("Put a mug under the coffee maker.")
+    assert summaries(tasks) == ["place Mug -> CoffeeMachine"] and not unread
+    tasks, _, _ = read("Put the pot under the sink.")
+    assert summaries(tasks) == ["place Pot -> Cabinet"]
+    tasks, _, _ = read("Put the apple under the fork on the counter.")
+    assert not any("in Apple" in t or "Fork in" in t for t in summaries(tasks))

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import lru_cache
 
 from nl2hltl2plan.domain.task_kinds import Kind
 from nl2hltl2plan.errors import WorldError
@@ -20,7 +21,14 @@ from nl2hltl2plan.language.grammar.frames import (
     same,
 )
 from nl2hltl2plan.language.grammar.phrases import DETERMINERS, FILLER, NP, parse_np, tokens
-from nl2hltl2plan.language.grounding import THOR_TYPES, AffordanceLookup, Grounder, Roles, find_mentions
+from nl2hltl2plan.language.grounding import (
+    THOR_TYPES,
+    AffordanceLookup,
+    Grounder,
+    Roles,
+    alfred_lookup,
+    find_mentions,
+)
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
 
 
@@ -339,6 +347,18 @@ def _read_pp(r: _Reading, fr: Frame, p: str, np: NP) -> None:
         return
     if p in G.LIGHT_PREPS and np.is_lamp():
         r.light = np
+    if (
+        p in UNDER
+        and r.container is None
+        and r.obj is not None
+        and r.obj.is_movable_receptacle()
+        and held(np)
+    ):
+        # "move a pan beneath a tomato slice on the table", "put a plate under the spatula": the container
+        # is slid under the thing, which ends up in it (ALFRED's "pick and place with a movable receptacle")
+        r.container, r.obj = r.obj, np
+        r.sliced = r.sliced or np.sliced
+        return
     if p == "" and np.entry is not None and r.obj is not None and not np.pronoun and r.container is None:
         # "a bowl and a pencil": one movable receptacle and its content
         if r.obj.is_movable_receptacle() and not np.is_movable_receptacle():
@@ -347,6 +367,21 @@ def _read_pp(r: _Reading, fr: Frame, p: str, np: NP) -> None:
             r.container = np
         elif same(np, r.obj):
             r.count = max(r.count, 2)
+
+
+def held(np: NP) -> bool:
+    """Does the noun phrase name a thing a hand picks up (a knife, a tomato slice), by ALFRED's facts? Not a
+    receptacle, a lamp or a fixed thing ("under the faucet", "under the sink" say where)."""
+    look = _alfred_facts()
+    if look is None or np.entry is None or np.pronoun or np.is_receptacle() or np.is_lamp():
+        return False
+    facts = [look(t) for t in np.entry.types]
+    return bool(facts) and all(f is not None and f.pickupable for f in facts)
+
+
+@lru_cache(maxsize=1)
+def _alfred_facts() -> AffordanceLookup | None:
+    return alfred_lookup()
 
 
 def _read_with(r: _Reading, fr: Frame, p: str, np: NP) -> bool:
