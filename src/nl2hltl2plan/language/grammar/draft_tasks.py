@@ -214,6 +214,14 @@ class TaskBuilder:
             self.unparsed.append(f"cannot hold the {obj.text!r} to look at it: {text}")
             return None
         final = _settle_container(r, obj)
+        unknown = next((np for np in r.dests if np is not final and np.entry is None and np.head), None)
+        if unknown is not None and self.g is not None:
+            # "put a knife in a goblet, move both to a counter": a place on the way that no word of this
+            # world names was dropped, and the goblet with it; unread, never a plain placement
+            self.unparsed.append(
+                f"{unknown.head!r} (place): no object of this world is called so, in: {text}"
+            )
+            return None
         if r.light is None and r.examine:
             r.light = parse_np("lamp")
         said = _treatments_said(d)
@@ -352,7 +360,7 @@ def _read_pp(r: _Reading, fr: Frame, p: str, np: NP) -> None:
         and r.container is None
         and r.obj is not None
         and r.obj.is_movable_receptacle()
-        and held(np)
+        and fits_in(np, r.obj)
     ):
         # "move a pan beneath a tomato slice on the table", "put a plate under the spatula": the container
         # is slid under the thing, which ends up in it (ALFRED's "pick and place with a movable receptacle")
@@ -369,14 +377,25 @@ def _read_pp(r: _Reading, fr: Frame, p: str, np: NP) -> None:
             r.count = max(r.count, 2)
 
 
-def held(np: NP) -> bool:
-    """Does the noun phrase name a thing a hand picks up (a knife, a tomato slice), by ALFRED's facts? Not a
-    receptacle, a lamp or a fixed thing ("under the faucet", "under the sink" say where)."""
+def fits_in(np: NP, container: NP) -> bool:
+    """Does the noun phrase name a thing a hand picks up (a knife, a tomato slice) that the container
+    holds, by ALFRED's facts? Not a receptacle, a lamp or a fixed thing ("under the faucet", "under the
+    sink" say where), nor what the container does not take ("the pan under the kettle")."""
     look = _alfred_facts()
-    if look is None or np.entry is None or np.pronoun or np.is_receptacle() or np.is_lamp():
+    if look is None or np.entry is None or container.entry is None or np.pronoun:
+        return False
+    if np.is_receptacle() or np.is_lamp():
         return False
     facts = [look(t) for t in np.entry.types]
-    return bool(facts) and all(f is not None and f.pickupable for f in facts)
+    holders = [look(t) for t in container.entry.types]
+    return (
+        bool(facts)
+        and all(f is not None and f.pickupable for f in facts)
+        and all(
+            h is not None and any(t in h.accepts or t + "Sliced" in h.accepts for t in np.entry.types)
+            for h in holders
+        )
+    )
 
 
 @lru_cache(maxsize=1)
