@@ -321,3 +321,26 @@ def test_an_unknown_container_on_the_way_is_unread():
     assert not tasks or any("goblet" in u for u in unread), (tasks, unread)
     tasks, _, unread = read("Put a knife in a mug, move both to the counter.")  # near miss: a known word
     assert summaries(tasks) == ["place_in_container Knife in Mug -> CounterTop"] and not unread
+
+
+# ----- a finished reference means a task stated before it (h91) --------------------------------------
+def test_a_finished_reference_names_a_task_stated_before_it():
+    """ "When you're done moving the cup" named the later cup task exactly, and with "after all of that"
+    the order was a cycle (exit 2); the mug stated before it is the one that is done."""
+    text = (
+        "Put the mug in the sink whenever. When you're done moving the cup, put the apple in the fridge. "
+        "After all of that, put a cup on the counter."
+    )
+    tasks, order, unread = read(text)
+    mug, apple, cup = tasks
+    assert summaries(tasks) == ["place Apple -> Fridge", "place Cup -> CounterTop", "place Mug -> SinkBasin"]
+    assert (mug, apple) in order and (apple, cup) in order and not unread
+
+
+def test_a_reference_with_only_a_later_task_still_names_it():
+    """Near miss: with no task before it that the words fit, the later one is named ("before" too)."""
+    tasks, order, unread = read(
+        "When you're done moving the cup, put the apple in the fridge. Put a cup in the sink."
+    )
+    apple, cup = tasks
+    assert (cup, apple) in order and not unread
