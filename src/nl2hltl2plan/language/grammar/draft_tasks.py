@@ -168,6 +168,18 @@ class TaskBuilder:
             out[role] = types
         return out
 
+    def _not_the_source(self, places: list[str] | None, d: Draft) -> list[str] | None:
+        """ "move a bowl and a watch from the desk to the table": the table is not the desk; a word of several
+        types loses the one type that the place the thing comes from names alone (never its last one)."""
+        if self.g is None or places is None or len(places) < 2:
+            return places
+        sources: set[str] = set()
+        for _, it in d.frames:
+            for p, np in it.pps:
+                if p == "from" and np.entry is not None and len(got := self.g.resolve(np.entry)) == 1:
+                    sources.update(got)
+        return [t for t in places if t not in sources] or places
+
     def _no_holder(self, got: dict[str, list[str] | None], nps: dict[str, NP | None], sliced: bool) -> None:
         """A word of several types ("bar": a soap bar or a towel bar) as the place of a thing none of its
         types can hold ("put the mug on the bar" where the only bar is soap) is unread, not the first type."""
@@ -253,6 +265,7 @@ class TaskBuilder:
         if fields is None or fields["object"] is None:
             self.unparsed.append(f"no object of the scene named in: {text}")
             return None
+        fields["receptacle"] = self._not_the_source(fields["receptacle"], d)
         held_in = fields["container"] if kind == "place_in_container" else None
         if held_in is not None and not self.can_hold(held_in, fields["object"], r.sliced):
             # "put the mug and the apple in the sink": two things to move, not an apple inside a mug
