@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from functools import lru_cache
 
 from nl2hltl2plan.domain.task_kinds import Kind
 from nl2hltl2plan.errors import WorldError
@@ -26,7 +25,6 @@ from nl2hltl2plan.language.grounding import (
     AffordanceLookup,
     Grounder,
     Roles,
-    alfred_lookup,
     find_mentions,
 )
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
@@ -214,7 +212,7 @@ class TaskBuilder:
         """The base task a draft states, or None (with the reason in `unparsed`) when it states none."""
         r = _Reading()
         for fr, it in d.frames:
-            _read_frame(r, fr, it)
+            _read_frame(r, fr, it, self.look)
         obj = r.obj
         if obj is None:
             if r.light is not None:
@@ -312,7 +310,7 @@ class _Reading:
     slice_next: bool = False  # "slice then cool the tomato": a bare "slice" before the object is named
 
 
-def _read_frame(r: _Reading, fr: Frame, it: Item) -> None:
+def _read_frame(r: _Reading, fr: Frame, it: Item, look: AffordanceLookup | None) -> None:
     """Add what one clause item says: its verb's state change, its object, its phrases, its destination."""
     o = it.obj
     if fr.cls in {"clean", "heat", "cool"}:
@@ -335,7 +333,7 @@ def _read_frame(r: _Reading, fr: Frame, it: Item) -> None:
     if o is not None:
         _read_object(r, o)
     for p, np in it.pps:
-        _read_pp(r, fr, p, np)
+        _read_pp(r, fr, p, np, look)
     _read_destination(r, fr, it)
 
 
@@ -358,7 +356,7 @@ def _read_object(r: _Reading, o: NP) -> None:
     r.count = max(r.count, o.count)
 
 
-def _read_pp(r: _Reading, fr: Frame, p: str, np: NP) -> None:
+def _read_pp(r: _Reading, fr: Frame, p: str, np: NP, look: AffordanceLookup | None) -> None:
     """ "with X in it", "containing X", "holding X", "along with the other set", "by the light of a lamp",
     and a second listed object ("a bowl and a pencil")."""
     if p in {"along with", "together with"} and np.entry is None and not np.head:
@@ -373,7 +371,7 @@ def _read_pp(r: _Reading, fr: Frame, p: str, np: NP) -> None:
         and r.container is None
         and r.obj is not None
         and r.obj.is_movable_receptacle()
-        and fits_in(np, r.obj)
+        and fits_in(np, r.obj, look)
     ):
         # "move a pan beneath a tomato slice on the table", "put a plate under the spatula": the container
         # is slid under the thing, which ends up in it (ALFRED's "pick and place with a movable receptacle")
@@ -390,11 +388,11 @@ def _read_pp(r: _Reading, fr: Frame, p: str, np: NP) -> None:
             r.count = max(r.count, 2)
 
 
-def fits_in(np: NP, container: NP) -> bool:
+def fits_in(np: NP, container: NP, look: AffordanceLookup | None) -> bool:
     """Does the noun phrase name a thing a hand picks up (a knife, a tomato slice) that the container
-    holds, by ALFRED's facts? Not a receptacle, a lamp or a fixed thing ("under the faucet", "under the
-    sink" say where), nor what the container does not take ("the pan under the kettle")."""
-    look = _alfred_facts()
+    holds, by the world's affordances (`look`; none: no)? Not a receptacle, a lamp or a fixed thing
+    ("under the faucet", "under the sink" say where), nor what the container does not take ("the pan
+    under the kettle")."""
     if look is None or np.entry is None or container.entry is None or np.pronoun:
         return False
     if np.is_receptacle() or np.is_lamp():
@@ -409,11 +407,6 @@ def fits_in(np: NP, container: NP) -> bool:
             for h in holders
         )
     )
-
-
-@lru_cache(maxsize=1)
-def _alfred_facts() -> AffordanceLookup | None:
-    return alfred_lookup()
 
 
 def _read_with(r: _Reading, fr: Frame, p: str, np: NP) -> bool:
