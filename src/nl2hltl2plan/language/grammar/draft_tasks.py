@@ -20,7 +20,13 @@ from nl2hltl2plan.language.grammar.frames import (
     same,
 )
 from nl2hltl2plan.language.grammar.phrases import DETERMINERS, FILLER, NP, parse_np, tokens
-from nl2hltl2plan.language.grounding import THOR_TYPES, AffordanceLookup, Grounder, Roles, find_mentions
+from nl2hltl2plan.language.grounding import (
+    THOR_TYPES,
+    AffordanceLookup,
+    Grounder,
+    Roles,
+    find_mentions,
+)
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
 
 
@@ -160,6 +166,18 @@ class TaskBuilder:
             out[role] = types
         return out
 
+    def _not_the_source(self, places: list[str] | None, d: Draft) -> list[str] | None:
+        """ "move a bowl and a watch from the desk to the table": the table is not the desk; a word of several
+        types loses the one type that the place the thing comes from names alone (never its last one)."""
+        if self.g is None or places is None or len(places) < 2:
+            return places
+        sources: set[str] = set()
+        for _, it in d.frames:
+            for p, np in it.pps:
+                if p == "from" and np.entry is not None and len(got := self.g.resolve(np.entry)) == 1:
+                    sources.update(got)
+        return [t for t in places if t not in sources] or places
+
     def _no_holder(self, got: dict[str, list[str] | None], nps: dict[str, NP | None], sliced: bool) -> None:
         """A word of several types ("bar": a soap bar or a towel bar) as the place of a thing none of its
         types can hold ("put the mug on the bar" where the only bar is soap) is unread, not the first type."""
@@ -194,7 +212,7 @@ class TaskBuilder:
         """The base task a draft states, or None (with the reason in `unparsed`) when it states none."""
         r = _Reading()
         for fr, it in d.frames:
-            _read_frame(r, fr, it)
+            _read_frame(r, fr, it, self.look)
         obj = r.obj
         if obj is None:
             if r.light is not None:
@@ -206,6 +224,14 @@ class TaskBuilder:
             self.unparsed.append(f"cannot hold the {obj.text!r} to look at it: {text}")
             return None
         final = _settle_container(r, obj)
+        unknown = next((np for np in r.dests if np is not final and np.entry is None and np.head), None)
+        if unknown is not None and self.g is not None:
+            # "put a knife in a goblet, move both to a counter": a place on the way that no word of this
+            # world names was dropped, and the goblet with it; unread, never a plain placement
+            self.unparsed.append(
+                f"{unknown.head!r} (place): no object of this world is called so, in: {text}"
+            )
+            return None
         if r.light is None and r.examine:
             r.light = parse_np("lamp")
         said = _treatments_said(d)
@@ -237,6 +263,7 @@ class TaskBuilder:
         if fields is None or fields["object"] is None:
             self.unparsed.append(f"no object of the scene named in: {text}")
             return None
+        fields["receptacle"] = self._not_the_source(fields["receptacle"], d)
         held_in = fields["container"] if kind == "place_in_container" else None
         if held_in is not None and not self.can_hold(held_in, fields["object"], r.sliced):
             # "put the mug and the apple in the sink": two things to move, not an apple inside a mug
@@ -283,7 +310,7 @@ class _Reading:
     slice_next: bool = False  # "slice then cool the tomato": a bare "slice" before the object is named
 
 
-def _read_frame(r: _Reading, fr: Frame, it: Item) -> None:
+def _read_frame(r: _Reading, fr: Frame, it: Item, look: AffordanceLookup | None) -> None:
     """Add what one clause item says: its verb's state change, its object, its phrases, its destination."""
     o = it.obj
     if fr.cls in {"clean", "heat", "cool"}:
@@ -306,7 +333,7 @@ def _read_frame(r: _Reading, fr: Frame, it: Item) -> None:
     if o is not None:
         _read_object(r, o)
     for p, np in it.pps:
-        _read_pp(r, fr, p, np)
+        _read_pp(r, fr, p, np, look)
     _read_destination(r, fr, it)
 
 
@@ -329,7 +356,7 @@ def _read_object(r: _Reading, o: NP) -> None:
     r.count = max(r.count, o.count)
 
 
-def _read_pp(r: _Reading, fr: Frame, p: str, np: NP) -> None:
+def _read_pp(r: _Reading, fr: Frame, p: str, np: NP, look: AffordanceLookup | None) -> None:
     """ "with X in it", "containing X", "holding X", "along with the other set", "by the light of a lamp",
     and a second listed object ("a bowl and a pencil")."""
     if p in {"along with", "together with"} and np.entry is None and not np.head:
@@ -339,6 +366,18 @@ def _read_pp(r: _Reading, fr: Frame, p: str, np: NP) -> None:
         return
     if p in G.LIGHT_PREPS and np.is_lamp():
         r.light = np
+    if (
+        p in UNDER
+        and r.container is None
+        and r.obj is not None
+        and r.obj.is_movable_receptacle()
+        and fits_in(np, r.obj, look)
+    ):
+        # "move a pan beneath a tomato slice on the table", "put a plate under the spatula": the container
+        # is slid under the thing, which ends up in it (ALFRED's "pick and place with a movable receptacle")
+        r.container, r.obj = r.obj, np
+        r.sliced = r.sliced or np.sliced
+        return
     if p == "" and np.entry is not None and r.obj is not None and not np.pronoun and r.container is None:
         # "a bowl and a pencil": one movable receptacle and its content
         if r.obj.is_movable_receptacle() and not np.is_movable_receptacle():
@@ -347,6 +386,27 @@ def _read_pp(r: _Reading, fr: Frame, p: str, np: NP) -> None:
             r.container = np
         elif same(np, r.obj):
             r.count = max(r.count, 2)
+
+
+def fits_in(np: NP, container: NP, look: AffordanceLookup | None) -> bool:
+    """Does the noun phrase name a thing a hand picks up (a knife, a tomato slice) that the container
+    holds, by the world's affordances (`look`; none: no)? Not a receptacle, a lamp or a fixed thing
+    ("under the faucet", "under the sink" say where), nor what the container does not take ("the pan
+    under the kettle")."""
+    if look is None or np.entry is None or container.entry is None or np.pronoun:
+        return False
+    if np.is_receptacle() or np.is_lamp():
+        return False
+    facts = [look(t) for t in np.entry.types]
+    holders = [look(t) for t in container.entry.types]
+    return (
+        bool(facts)
+        and all(f is not None and f.pickupable for f in facts)
+        and all(
+            h is not None and any(t in h.accepts or t + "Sliced" in h.accepts for t in np.entry.types)
+            for h in holders
+        )
+    )
 
 
 def _read_with(r: _Reading, fr: Frame, p: str, np: NP) -> bool:

@@ -595,5 +595,6 @@ def merge_items(items: list[Item], b: TaskBuilder) -> list[Item]:
         # "the pan and the knife": the knife in the pan; "the mug and the apple": two things (a mug holds
         # no apple)
         if b.g is None or b.can_hold(b.g.resolve(cont.entry), b.g.resolve(content.entry), content.sliced):
-            return [Item(obj=content, pps=[("containing", cont), *dests])]
+            sources = [(p, np) for p, np in y.pps if p == "from"]  # where both are: not where they go
+            return [Item(obj=content, pps=[("containing", cont), *sources, *dests])]
     return items

@@ -228,7 +228,8 @@ def _normal(ref: str) -> str:
 def _ref_edges(after: bool, ref: str, u: Unit, tasks: Tasks, b: TaskBuilder, text: str, edges: Edges) -> None:
     """ "After placing the statue, Y" / "Y before moving the knife": edges to the named tasks."""
     specs, nps = tasks.specs, tasks.nps
-    targets, missing = ref_targets(ref, specs, nps, exclude=u.tasks)
+    done_before = min(u.tasks) if after and u.tasks else None  # "when you're done moving the soap, ..."
+    targets, missing = ref_targets(ref, specs, nps, exclude=u.tasks, done_before=done_before)
     own, _ = ref_targets(ref, specs, nps)
     stated = stated_tasks(ref, [specs[t] for t in own], b, text)
     if stated:  # "a clean mug under the coffee maker before you put a warm mug in the cabinet"

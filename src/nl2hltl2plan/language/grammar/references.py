@@ -23,8 +23,11 @@ def ref_targets(
     specs: list[BaseTaskSpec],
     nps: list[NP | None],
     exclude: list[int] | None = None,
+    done_before: int | None = None,
 ) -> tuple[list[int], list[str]]:
-    """Task indices a reference ("placing the statue and moving the knife") names; unresolved parts."""
+    """Task indices a reference ("placing the statue and moving the knife") names; unresolved parts.
+    `done_before`: the first task of the clause that a finished reference orders ("when you're done moving
+    the soap, ..."); a task stated before it is meant rather than a later one the words fit as well."""
     found: list[int] = []
     missing: list[str] = []
     candidates = [i for i in range(len(specs)) if i not in (exclude or [])]
@@ -41,7 +44,7 @@ def ref_targets(
             if (held := _held_np(words)) is not None:  # "turn on the lamp with the newspaper at hand"
                 hit = _hits_by_object(held, specs, nps, hit)
         elif np.entry is not None or np.head:
-            hit = _hits_by_object(np, specs, nps, candidates)
+            hit = _hits_by_object(np, specs, nps, candidates, done_before)
             if not hit and np.entry is not None and not _names_a_thing_before_place(words):
                 # "after putting items to the lower rack": by destination
                 hit = [i for i in candidates if np.entry.canonical in (specs[i].receptacle or [])]
@@ -104,25 +107,41 @@ def _ref_np(words: list[str]) -> NP:
 
 
 def _hits_by_object(
-    np: NP, specs: list[BaseTaskSpec], nps: list[NP | None], candidates: list[int]
+    np: NP,
+    specs: list[BaseTaskSpec],
+    nps: list[NP | None],
+    candidates: list[int],
+    done_before: int | None = None,
 ) -> list[int]:
-    """Tasks about the same word, else about a word of a shared type, else with it as object or container."""
+    """Tasks about the same word, else about a word of a shared type, else with it as object or container;
+    with `done_before`, the first of these tiers that holds a task stated before that one wins ("move the
+    hand soap ... when you're done moving the soap, ... after all of that, put the bar of soap away": the
+    hand soap, not the later bar that the word names exactly)."""
     key = np.key
-    hit = [i for i in candidates if (other := nps[i]) is not None and other.key == key]
-    if not hit and np.entry is not None:
+    tiers = [[i for i in candidates if (other := nps[i]) is not None and other.key == key]]
+    if np.entry is not None:
         types = set(np.entry.types)
-        hit = [
-            i
-            for i in candidates
-            if (other := nps[i]) is not None and other.entry is not None and types & set(other.entry.types)
-        ]
-    if not hit and np.entry is not None:
-        hit = [
-            i
-            for i in candidates
-            if np.entry.canonical in (specs[i].container or []) or np.entry.canonical in specs[i].object
-        ]
-    return hit
+        tiers.append(
+            [
+                i
+                for i in candidates
+                if (other := nps[i]) is not None
+                and other.entry is not None
+                and types & set(other.entry.types)
+            ]
+        )
+        tiers.append(
+            [
+                i
+                for i in candidates
+                if np.entry.canonical in (specs[i].container or []) or np.entry.canonical in specs[i].object
+            ]
+        )
+    if done_before is not None:
+        for tier in tiers:
+            if earlier := [i for i in tier if i < done_before]:
+                return earlier
+    return next((tier for tier in tiers if tier), [])
 
 
 _STATE_KINDS: dict[str, Kind] = {
