@@ -27,7 +27,7 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable
 
-from nl2hltl2plan.language.content_words import phrase_list_pattern
+from nl2hltl2plan.language.content_words import free_order_remarks, phrase_list_pattern
 from nl2hltl2plan.language.grounding import sentence_start
 from nl2hltl2plan.language.statements import WHERE_VERB, asked_before
 from nl2hltl2plan.language.tabletop_remarks import FREE_ORDER, TIDY_VERB, remarks_read
@@ -65,8 +65,6 @@ def stated_not_asked(text: str, names: Iterable[str]) -> str | None:
 
 # ---- free-order remarks ---------------------------------------------------------------------------------
 _FREE_ORDER = FREE_ORDER  # the shared list (free_order.txt), anywhere in the text (`tabletop_remarks`)
-# a remark about the order inside each step ("within each step, any order"), which leaves the steps' own
-_WITHIN_STEPS = re.compile(r"\bwithin\b")
 # under a remark that frees the whole list, "lastly" / "finally" only mark its last item ("..., and, lastly,
 # the red apple on the pink plate. The order doesn't matter.")
 _LAST_LISTED = re.compile(r"\b(?:lastly|finally)\b\s*,?")
@@ -94,7 +92,8 @@ def free_order(text: str) -> tuple[str, list[str]]:
 
 def frees_every_step(remarks: list[str]) -> bool:
     """Does one of the remarks free the whole list, not only the order inside each step?"""
-    return any(_WITHIN_STEPS.search(r) is None for r in remarks)
+    # a per-group remark ("within each step, any order"; `free_order_remarks`) leaves the steps' own order
+    return any(not r.per_group for said in remarks for r in free_order_remarks(said.replace(",", " ")))
 
 
 def last_item_unmarked(text: str) -> str:
