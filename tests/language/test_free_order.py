@@ -4,6 +4,7 @@ import re
 
 import pytest
 
+from nl2hltl2plan.language.accounting import account
 from nl2hltl2plan.language.content_words import free_order_phrase, free_order_remarks
 from nl2hltl2plan.language.grammar.everyday import everyday
 from nl2hltl2plan.language.grounding import tokens
@@ -100,3 +101,16 @@ def test_an_order_word_between_the_steps_of_one_task_orders_no_tasks():
     two = "put a mug in the sink then move a mug to the sink"
     (flag,) = unordered_steps(tokens(two), set(), ParseUsage([tasks[0], tasks[2]], []))
     assert flag.words == "then"
+
+
+def test_check_1_reads_a_per_group_remark_as_written():
+    """The grammar's rewriting reads a closing "each pair in either order" as ", in any order"; check 1 asks
+    the words as written, so a reading with no order between the pairs leaves "then" unread."""
+    text = "put the apple and the egg in the fridge, then the mug and the cup in the sink, "
+    text += "each pair in either order"
+    slots = [("A", "Apple", "Fridge"), ("B", "Egg", "Fridge"), ("C", "Mug", "SinkBasin")]
+    slots += [("D", "Cup", "SinkBasin")]
+    tasks = [BaseTaskSpec(id=i, kind="place", object=[o], receptacle=[r]) for i, o, r in slots]
+    assert [(u.words, u.category) for u in account(text, tasks, [])] == [("then", "order")]
+    assert account(text, tasks, [("A", "C"), ("A", "D"), ("B", "C"), ("B", "D")]) == []
+    assert account(text.replace("each pair in either order", "in any order"), tasks, []) == []

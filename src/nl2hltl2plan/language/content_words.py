@@ -60,8 +60,8 @@ def word_categories(filename: str) -> dict[str, frozenset[str]]:
 @cache
 def free_order_phrase(kind: str | None = None) -> str:
     """The phrases of `free_order.txt` (of one kind, "adverb", "clause" or "per_group", "whole" for the
-    first two: those that free a whole list, or all) as one regular expression (no context, no flags: each
-    reader puts its own context around it and matches case-insensitively).
+    first two: those that free a whole list, or all, the per-group ones first) as one regular expression
+    (no context, no flags: each reader puts its own context around it and matches case-insensitively).
 
     >>> import re
     >>> bool(re.fullmatch(free_order_phrase(), "the order does not matter", re.I))
@@ -71,6 +71,8 @@ def free_order_phrase(kind: str | None = None) -> str:
     """
     if kind == "whole":
         return f"(?:{free_order_phrase('adverb')}|{free_order_phrase('clause')})"
+    if kind is None:  # a per-group phrase first, where both match at one place (`free_order_remarks`)
+        return f"(?:{free_order_phrase('per_group')}|{free_order_phrase('whole')})"
     return phrase_list_pattern("free_order.txt", kind)
 
 

@@ -19,7 +19,7 @@ import re
 import networkx as nx
 
 from nl2hltl2plan.errors import HTTError
-from nl2hltl2plan.language.content_words import DETERMINERS, Unread, categories, free_order_remarks
+from nl2hltl2plan.language.content_words import DETERMINERS, FreeOrder, Unread, categories, free_order_remarks
 from nl2hltl2plan.language.grounding import Mention, camel_words, sentence_start, tokens
 from nl2hltl2plan.language.parse_usage import ParseUsage
 from nl2hltl2plan.language.task_specs import transitive_closure
@@ -71,14 +71,17 @@ _PLACE_PREPOSITIONS = frozenset({"in", "into", "on", "onto", "inside", "from", "
 
 
 def unordered_steps(
-    toks: list[tuple[str, int, int]], in_mention: set[int], parse: ParseUsage
+    toks: list[tuple[str, int, int]], in_mention: set[int], parse: ParseUsage, per_group_only: bool = False
 ) -> list[Unread]:
     """Order words: with several base tasks and no word that frees the order, a sequence word needs an
     ordering between them; a phrase that frees an order ("in either order", "the order is up to you")
-    needs a pair of base tasks the parse leaves unordered."""
+    needs a pair of base tasks the parse leaves unordered. `per_group_only`: the text as written frees the
+    order within each group only (its phrases are read so whatever a rewriting made of them)."""
     plain = [w for w, _, _ in toks]
     text = " ".join(plain)
-    remarks = free_order_remarks(text)
+    remarks = [
+        FreeOrder(r.words, r.start, r.end, r.per_group or per_group_only) for r in free_order_remarks(text)
+    ]
     # the word "any" of "each pair in any order" frees only within the groups, as its phrase does
     in_remark = {i for i, at in enumerate(_starts(plain)) if any(r.start <= at < r.end for r in remarks)}
     cats = [categories(w) for i, (w, _, _) in enumerate(toks) if i not in in_mention | in_remark]

@@ -52,9 +52,8 @@ _TAG = re.compile(r",\s*(?:yeah|yep|ok|okay|alright|right)\s*(?=[.!?]?\s*$)", re
 _JUST = re.compile(r"\bjust\s+(?=(?:put|place|move|pop|drop|set|stick|leave)\b)", re.I)
 _ARROW = re.compile(r"\s*->\s*")
 _STEP_COLON = re.compile(r"\b(first|then|next|after\s+that|finally|lastly)\s*:\s*", re.I)
-# a free-order phrase ("any order", "the order doesn't matter"; content_words.free_order_phrase) in brackets;
-# one that frees the whole list ("each pair in either order" is no ", in any order")
-_FREE_ORDER = free_order_phrase("whole")
+# a free-order phrase ("any order", "the order doesn't matter"; content_words.free_order_phrase) in brackets
+_FREE_ORDER = free_order_phrase()
 _PAREN_FREE_ORDER = re.compile(rf"\s*\(\s*{_FREE_ORDER}\s*\)", re.I)
 _LAST_GROUP_ORDER = re.compile(
     r"\b(?:the\s+)?order\s+of\s+(?:those|these|them|the\s+last)(?:\s+(?:two|three|four|ones?))?\s+"
