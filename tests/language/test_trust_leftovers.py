@@ -79,6 +79,12 @@ PROBES = [  # text | its reading (kind object receptacle [count]) | the unread w
     "put the apple in the fridge or on the table | place Apple DiningTable | fridge | place",
     "put the mug in the coffee machine and start it | place Mug CoffeeMachine | start it | action",
     "slice the tomato and put a few slices in the fridge | place_two Tomato Fridge 2 | a few slices | count",
+    "Optional: put the apple in the fridge | place Apple Fridge | optional | condition",
+    "time permitting, put the apple in the fridge | place Apple Fridge | time permitting | condition",
+    "same as yesterday: the apple in the fridge | place Apple Fridge | same as yesterday | action",
+    "put the apple in the fridge, like last time | place Apple Fridge | like last time | action",
+    "put the apple in the fridge, then the usual | place Apple Fridge | the usual | action",
+    "put the apple in the fridge as always | place Apple Fridge | as always | action",
 ]
 
 
@@ -98,6 +104,10 @@ def test_a_request_to_the_user_and_plain_steps_stay_read():
     assert unread("put the bread in the fridge, or rather on the table", bread) == []
     chilled = [task("cool_place", "Apple", "Fridge")]
     assert unread("once the apple is cold, put it in the fridge", chilled) == []
+    # "optional" said of the order frees the order, not a step; "as before" may point inside the text
+    two = [task("place", "Apple", "Fridge"), task("place", "Mug", "Fridge", "B")]
+    assert unread("put the apple and the mug in the fridge, the order is optional", two) == []
+    assert unread("put the apple in the fridge as before", apple) == []
 
 
 def test_each_of_several_places_needs_a_task_each():

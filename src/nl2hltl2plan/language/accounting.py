@@ -29,6 +29,7 @@ from nl2hltl2plan.language.content_words import (
     LOCATIVE,
     Unread,
     categories,
+    free_order_remarks,
     stems,
     verb_places,
 )
@@ -84,6 +85,10 @@ def account(
     words (`ConstraintSpec.text`, found in the instruction) hold it and the constraint forbids that
     verb's action; the things a constraint forbids actions on count like a task's slots. Raises
     HTTError for a count of zero, a count above what the scene holds, and a cyclic order in the text."""
+    # the grammar's rewriting reads a closing "each pair in either order" as ", in any order": whether the
+    # text frees the order within each group only is asked of the words as written
+    said = free_order_remarks(instruction)
+    per_group_only = bool(said) and all(r.per_group for r in said)
     instruction = everyday(instruction)  # fillers, notation and headings that carry nothing (issue 28)
     lowered = instruction.lower()
     spans = [(at, at + len(c.text), c) for c in constraints if (at := lowered.find(c.text.lower())) >= 0]
@@ -112,7 +117,7 @@ def account(
     out += first_and_last(instruction, mentions, parse)
     out += _words(instruction, toks, in_mention, mentions, parse, instances, scene)
     out += unordered_steps(
-        toks, {i for i, t in enumerate(toks) if parse.constraint_at(t[1])} | in_mention, parse
+        toks, {i for i, t in enumerate(toks) if parse.constraint_at(t[1])} | in_mention, parse, per_group_only
     )
     out += misordered(instruction, toks, mentions, parse) + unknown_verbs(instruction)
     out += unknown_things(instruction)

@@ -59,9 +59,9 @@ def word_categories(filename: str) -> dict[str, frozenset[str]]:
 
 @cache
 def free_order_phrase(kind: str | None = None) -> str:
-    """The phrases of `free_order.txt` (of one kind, "adverb" or "clause", or all) as one regular
-    expression (no context, no flags: each reader puts its own context around it and matches
-    case-insensitively).
+    """The phrases of `free_order.txt` (of one kind, "adverb", "clause" or "per_group", "whole" for the
+    first two: those that free a whole list, or all, the per-group ones first) as one regular expression
+    (no context, no flags: each reader puts its own context around it and matches case-insensitively).
 
     >>> import re
     >>> bool(re.fullmatch(free_order_phrase(), "the order does not matter", re.I))
@@ -69,7 +69,41 @@ def free_order_phrase(kind: str | None = None) -> str:
     >>> bool(re.fullmatch(free_order_phrase("clause"), "in either order", re.I))
     False
     """
+    if kind == "whole":
+        return f"(?:{free_order_phrase('adverb')}|{free_order_phrase('clause')})"
+    if kind is None:  # a per-group phrase first, where both match at one place (`free_order_remarks`)
+        return f"(?:{free_order_phrase('per_group')}|{free_order_phrase('whole')})"
     return phrase_list_pattern("free_order.txt", kind)
+
+
+@dataclass(frozen=True)
+class FreeOrder:
+    """One free-order phrase of a text: where it is, and whether it frees the order within each group only
+    ("each pair in either order") rather than the whole list ("in any order")."""
+
+    words: str
+    start: int
+    end: int
+    per_group: bool
+
+
+def free_order_remarks(text: str) -> list[FreeOrder]:
+    """The free-order phrases of `text` (`free_order.txt`), left to right; where a per-group phrase and a
+    whole-list one match at one place, the per-group one ("the order within each step is free").
+
+    >>> [(r.words, r.per_group) for r in free_order_remarks("each pair in either order, then any order")]
+    [('each pair in either order', True), ('any order', False)]
+    """
+    return [
+        FreeOrder(m.group(0), m.start(), m.end(), m.group("group") is not None)
+        for m in _free_order_remark().finditer(text)
+    ]
+
+
+@cache
+def _free_order_remark() -> re.Pattern[str]:
+    per_group, whole = free_order_phrase("per_group"), free_order_phrase("whole")
+    return re.compile(rf"\b(?:(?P<group>{per_group})|{whole})\b", re.I)
 
 
 @cache

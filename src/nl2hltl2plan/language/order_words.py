@@ -19,8 +19,8 @@ import re
 import networkx as nx
 
 from nl2hltl2plan.errors import HTTError
-from nl2hltl2plan.language.content_words import DETERMINERS, Unread, categories, free_order_phrase
-from nl2hltl2plan.language.grounding import Mention, camel_words, sentence_start
+from nl2hltl2plan.language.content_words import DETERMINERS, FreeOrder, Unread, categories, free_order_remarks
+from nl2hltl2plan.language.grounding import Mention, camel_words, sentence_start, tokens
 from nl2hltl2plan.language.parse_usage import ParseUsage
 from nl2hltl2plan.language.task_specs import transitive_closure
 
@@ -46,10 +46,11 @@ def finished_words(text: str) -> set[int]:
 
 
 # a phrase that frees the order of some pair of tasks ("in either order", "the order is up to you",
-# "in no particular order"; content_words.free_order_phrase): "then B - either order is ok" frees nothing
+# "in no particular order"; content_words.free_order_remarks): "then B - either order is ok" frees nothing
 # when the parse orders every pair (the phrase was not read); "at any time" / "meanwhile" free one task from
-# the tasks before it, and a later "after this" may still order it, so they are `any_order` words instead
-_FREE_PHRASE = re.compile(rf"\b{free_order_phrase()}\b")
+# the tasks before it, and a later "after this" may still order it, so they are `any_order` words instead;
+# a phrase that frees the order within each group only ("each pair in either order") leaves the order
+# words between the groups asked
 
 
 def _not_a_step(words: list[str], i: int, in_mention: set[int]) -> bool:
@@ -70,38 +71,61 @@ _PLACE_PREPOSITIONS = frozenset({"in", "into", "on", "onto", "inside", "from", "
 
 
 def unordered_steps(
-    toks: list[tuple[str, int, int]], in_mention: set[int], parse: ParseUsage
+    toks: list[tuple[str, int, int]], in_mention: set[int], parse: ParseUsage, per_group_only: bool = False
 ) -> list[Unread]:
     """Order words: with several base tasks and no word that frees the order, a sequence word needs an
     ordering between them; a phrase that frees an order ("in either order", "the order is up to you")
-    needs a pair of base tasks the parse leaves unordered."""
-    cats = [categories(w) for i, (w, _, _) in enumerate(toks) if i not in in_mention]
+    needs a pair of base tasks the parse leaves unordered. `per_group_only`: the text as written frees the
+    order within each group only (its phrases are read so whatever a rewriting made of them)."""
     plain = [w for w, _, _ in toks]
+    text = " ".join(plain)
+    remarks = [
+        FreeOrder(r.words, r.start, r.end, r.per_group or per_group_only) for r in free_order_remarks(text)
+    ]
+    # the word "any" of "each pair in any order" frees only within the groups, as its phrase does
+    in_remark = {i for i, at in enumerate(_starts(plain)) if any(r.start <= at < r.end for r in remarks)}
+    cats = [categories(w) for i, (w, _, _) in enumerate(toks) if i not in in_mention | in_remark]
     words = [
         w
         for i, w in enumerate(plain)
-        if i not in in_mention and "order" in categories(w) and not _not_a_step(plain, i, in_mention)
+        if i not in in_mention
+        and "order" in categories(w)
+        and not _not_a_step(plain, i, in_mention)
+        and not _inside_one_task(plain, i, parse)
     ]
-    text = " ".join(plain)
     words += [p for p in ("in that order", "in this order") if f" {p} " in f" {text} "]
     words += [p for p in ("at the end", "in the end") if re.search(rf"\b{p}\b(?! of\b)", text)]
-    freeing = _FREE_PHRASE.search(text)
-    free = any("any_order" in c for c in cats) or freeing is not None
-    if len(parse.tasks) >= 2 and freeing and _totally_ordered(parse):
-        return [Unread(freeing.group(0), "order", "it leaves an order free, but every base task is ordered")]
-    if not words or len(parse.tasks) < 2 or parse.before or (free and not _per_group(text, freeing)):
+    free = any("any_order" in c for c in cats) or any(not r.per_group for r in remarks)
+    if len(parse.tasks) >= 2 and remarks and _totally_ordered(parse):
+        return [Unread(remarks[0].words, "order", "it leaves an order free, but every base task is ordered")]
+    if not words or len(parse.tasks) < 2 or parse.before or free:
         return []
     return [Unread(", ".join(dict.fromkeys(words)), "order", "the base tasks are not ordered")]
 
 
-def _per_group(text: str, freeing: re.Match[str] | None) -> bool:
-    """Does the phrase free the order within each group only ("each pair in either order", "within each
-    step in any order")? Then the order words between the groups still need an order."""
-    before = text[max(0, freeing.start() - 24) : freeing.end()] if freeing is not None else ""
-    return _EACH.search(before) is not None
+def _inside_one_task(words: list[str], i: int, parse: ParseUsage) -> bool:
+    """Does the order word at `i` order the steps of one base task, its words on both sides in the task's
+    own text and the thing named again by a pronoun after it ("chill the lettuce then return it to the
+    counter")?"""
+    for task in parse.tasks:
+        own = [w for w, _, _ in tokens(task.text or "")]
+        for at in range(max(0, i - len(own) + 1), i):
+            k = i - at  # the order word's place in the task's words
+            if words[at : at + len(own)] == own and 0 < k < len(own) - 1 and _PRONOUNS & set(own[k + 1 :]):
+                return True
+    return False
 
 
-_EACH = re.compile(r"\b(?:each|every|within)\b")
+_PRONOUNS = frozenset({"it", "them"})
+
+
+def _starts(words: list[str]) -> list[int]:
+    """Where each word begins in the words joined by blanks."""
+    out, at = [], 0
+    for w in words:
+        out.append(at)
+        at += len(w) + 1
+    return out
 
 
 def _totally_ordered(parse: ParseUsage) -> bool:

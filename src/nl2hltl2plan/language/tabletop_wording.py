@@ -27,7 +27,7 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable
 
-from nl2hltl2plan.language.content_words import phrase_list_pattern
+from nl2hltl2plan.language.content_words import free_order_remarks, phrase_list_pattern
 from nl2hltl2plan.language.grounding import sentence_start
 from nl2hltl2plan.language.statements import WHERE_VERB, asked_before
 from nl2hltl2plan.language.tabletop_remarks import FREE_ORDER, TIDY_VERB, remarks_read
@@ -40,8 +40,9 @@ _LOCATIVE = (
     r"(?:where\s+(?:it|they)\s+(?:is|are)|as\s+(?:it|they)\s+(?:is|are)|there)\b)"
 )
 _HOLDS = r"\s+(?:has|had|holds|held|contains|contained|carries|carried)\s+(?=(?:the|a|an|both|two)\b)"
-# "please" before a state clause asks for it too: the polite frames below are read as it ("it would please
-# me if X were on Y": "please X were on Y"); the other wishes, goals and references are `statements`'
+# "please" before a state clause asks for it too ("please, the carrot is on the blue plate"); the wishes
+# (the polite frames below among them: "it would please me if X were on Y" is "i want X were on Y"), goals
+# and references are `statements`'
 _PLEASE = re.compile(r"\bplease\b")
 
 
@@ -65,8 +66,6 @@ def stated_not_asked(text: str, names: Iterable[str]) -> str | None:
 
 # ---- free-order remarks ---------------------------------------------------------------------------------
 _FREE_ORDER = FREE_ORDER  # the shared list (free_order.txt), anywhere in the text (`tabletop_remarks`)
-# a remark about the order inside each step ("within each step, any order"), which leaves the steps' own
-_WITHIN_STEPS = re.compile(r"\bwithin\b")
 # under a remark that frees the whole list, "lastly" / "finally" only mark its last item ("..., and, lastly,
 # the red apple on the pink plate. The order doesn't matter.")
 _LAST_LISTED = re.compile(r"\b(?:lastly|finally)\b\s*,?")
@@ -94,7 +93,8 @@ def free_order(text: str) -> tuple[str, list[str]]:
 
 def frees_every_step(remarks: list[str]) -> bool:
     """Does one of the remarks free the whole list, not only the order inside each step?"""
-    return any(_WITHIN_STEPS.search(r) is None for r in remarks)
+    # a per-group remark ("within each step, any order"; `free_order_remarks`) leaves the steps' own order
+    return any(not r.per_group for said in remarks for r in free_order_remarks(said.replace(",", " ")))
 
 
 def last_item_unmarked(text: str) -> str:
@@ -114,7 +114,7 @@ def _polite(kind: str) -> str:
     return phrase_list_pattern("courtesy.txt", kind)
 
 
-_POLITE = re.compile(rf"\b{_polite('wish')}\b")  # polite wishes: "it would please me if"
+_POLITE = re.compile(rf"\b(?:{_polite('wish')}|{_polite('state_wish')})\b")  # "it would please me if"
 _FILLER = re.compile(rf"^\W*{_polite('opening')}\b|\b{_polite('filler')}\b")  # carry nothing
 # a letter's frame: a subject line ("Subject: plates", "Re: tidying") that names nothing and says no order
 # and a sign-off ("Best, Sam", "Thanks,\nJo") closing the text: neither is part of the request
@@ -139,18 +139,19 @@ _PAIR_VERB = re.compile(r"\bpair(?:\s+up)?(?=\s+(?:the|a|an)\s)")
 
 
 def polite_frames(text: str) -> str:
-    """ "it would please me greatly if X were on Y" -> "please X were on Y": a wish, read as one; in its
-    sentence, "X went on Y" (the wish's past subjunctive: "I'd appreciate it if X went on Y") is "X were set
-    on Y"."""
-    return re.sub(r"[^.;!?]+", _wish_read, text)
+    """A polite frame as what it asks: around a request ("I'd be grateful if you could put X on Y")
+    "please", around a state ("it would please me if X were on Y", "I'd appreciate it if X went on Y") the
+    wish "i want" (a wish of `state_words.txt`), so that the state clause is read as a goal whatever verb
+    says where the thing is (`statements.WHERE_VERB`: "were", "went", "ended up", "sat")."""
+    return _POLITE.sub(_wish_word, text)
 
 
-def _wish_read(sentence: re.Match[str]) -> str:
-    said = sentence.group(0)
-    return _WENT.sub("were set", _POLITE.sub("please", said)) if _POLITE.search(said) else said
+def _wish_word(frame: re.Match[str]) -> str:
+    return "please" if _FRAME_ASKS_YOU.search(frame.group(0)) else "i want"
 
 
-_WENT = re.compile(r"\bwent(?=\s+(?:on|onto|in|into|to)\s)")
+# "... if you could", "be so kind as to": a request follows
+_FRAME_ASKS_YOU = re.compile(r"\b(?:you\s+(?:could|would|can|will)|to)$")
 
 
 def plain_words(text: str, kinds: dict[str, bool], heads: dict[str, list[str]]) -> str:

@@ -260,6 +260,19 @@ _STATE_CONDITION = re.compile(
     r"(?:is|are|gets|becomes)\s+(?:not\s+)?(?:free|empty|full|open|opened|closed|shut|ready|available|dirty|busy|"
     r"occupied|wet|dry|off|on)\b(?!\s+(?:the|a|an|top)\b)"
 )
+# "Optional: put X on Y", "optionally", "time permitting": a step the spec would have to leave to the robot's
+# choice, which no hierarchical spec says (every task of it is required), so the words are refused; "the
+# order is optional" is a freedom of the order (the free-order phrases), not of a step
+_OPTIONAL = re.compile(r"\b(?:optional(?:ly)?|time permitting|if you feel like it)\b")
+_ORDER_TOPIC = re.compile(r"\b(?:order|ordering|sequence)\b")
+# "same as yesterday", "like last time", "the usual", "as always": an instruction given before, which the
+# system never saw, so what it asks is unknown and refused; "as before" / "like before" may point at an
+# earlier step of this same instruction (ALFRED's annotators write it so) and are not listed
+_PAST = r"(?:yesterday|last\s+(?:time|week|night)|the\s+other\s+day|usual|always)"
+_UNSEEN_INSTRUCTION = re.compile(
+    rf"\b(?:(?:the\s+)?same\s+as\s+{_PAST}|(?:just\s+)?like\s+{_PAST}|as\s+(?:usual|always|last\s+time|yesterday)"
+    r"|the\s+usual|(?:do|repeat)\s+(?:that|the\s+same)\s+again|what\s+you\s+did\s+(?:yesterday|last\s+time))\b"
+)
 # "is the apple in the fridge", "what is in the fridge", "which plate should it go on?"; not "what I need
 # is ...", a need said as a pseudo-cleft
 _QUESTION = re.compile(
@@ -271,8 +284,9 @@ _QUESTION = re.compile(
 def vague_words(instruction: str, mentions: list[Mention]) -> list[Unread]:
     """What no base task can take: a question ("is the apple in the fridge?"), a vague amount of a plural
     ("some apples", "the rest"), a vague place ("put it away", "anywhere but the sofa"), a duration or a
-    clock time ("for two minutes", "set it for 7") and waiting on a state ("when the microwave is
-    free")."""
+    clock time ("for two minutes", "set it for 7"), waiting on a state ("when the microwave is
+    free"), a step made optional ("Optional: put ...") and an instruction given before ("same as
+    yesterday", "the usual")."""
     lowered = instruction.lower()
     out = [
         Unread(q.strip(), "action", "a question, not a request: say what to do")
@@ -293,6 +307,15 @@ def vague_words(instruction: str, mentions: list[Mention]) -> list[Unread]:
         if not (m.group(0).endswith("away") and _PLACE_AFTER.match(lowered, m.end()))  # "away in a cabinet"
     ]
     out += [Unread(m.group(0), "count", "no base task takes a time") for m in _TIME.finditer(lowered)]
+    out += [
+        Unread(m.group(0), "condition", "an optional step: the spec requires every task; say it or drop it")
+        for m in _OPTIONAL.finditer(lowered)
+        if not _ORDER_TOPIC.search(lowered[sentence_start(lowered, m.start()) : m.start()])
+    ]
+    out += [
+        Unread(m.group(0), "action", "it points at an instruction this one does not contain: say the tasks")
+        for m in _UNSEEN_INSTRUCTION.finditer(lowered)
+    ]
     return out + [
         Unread(m.group(0), "condition", "no base task waits on a state: say what to do")
         for m in _STATE_CONDITION.finditer(lowered)
