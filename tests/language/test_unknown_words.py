@@ -96,3 +96,10 @@ def test_a_part_a_position_or_a_description_is_no_unknown_thing():
     assert unknown_things("put the mug in the corner of the counter") == []
     assert unknown_things("move the black and white statues to the sofa") == []
     assert unknown_things("put the remote on the chair next to the fireplace") == []
+
+
+@pytest.mark.parametrize("verb", ["pop", "plonk", "shove", "chuck"])
+def test_a_casual_placing_verb_is_a_placing(verb):
+    """The learned stage reads the clause the grammar leaves; check 1 knows the verb (was: refused)."""
+    res = translate(f"{verb} the egg in the fridge", _world("FloorPlan13"), "offline")
+    assert [t.summary() for t in res.tasks] == ["place Egg -> Fridge"] and not res.partial
