@@ -5,33 +5,15 @@ reading."""
 
 from __future__ import annotations
 
-from functools import cache
-
 import pytest
 
 from nl2hltl2plan.config import data_dir
-from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.translate import translate
 from nl2hltl2plan.language.unknown_words import unknown_things, unknown_verbs
-from nl2hltl2plan.worlds import load_world
-from nl2hltl2plan.worlds.world import World
+from tests.language.test_trust_corrections import _refused, _world
 
 pytestmark = pytest.mark.skipif(data_dir(required=False) is None, reason="needs ../shared/data")
 BOTH = pytest.mark.parametrize("backend", ["offline", "grammar"])
-
-
-@cache
-def _world(name: str) -> World:
-    return load_world(name)
-
-
-def _refusal(text: str, backend: str, world: str = "FloorPlan220") -> str:
-    try:
-        res = translate(text, _world(world), backend)
-    except HTTError as exc:
-        return str(exc)
-    assert res.partial, [t.summary() for t in res.tasks]
-    return "; ".join(res.unparsed)
 
 
 @BOTH
@@ -45,7 +27,7 @@ def _refusal(text: str, backend: str, world: str = "FloorPlan220") -> str:
     ],
 )
 def test_an_unknown_action_or_a_person_is_refused_by_name(backend, text, word):
-    assert word in _refusal(text, backend)
+    assert word in _refused(text, "FloorPlan220", backend)
 
 
 @BOTH
@@ -88,7 +70,7 @@ def test_the_verb_is_found_where_a_command_opens_and_an_object_follows():
     ],
 )
 def test_a_thing_no_word_table_names_is_refused_by_name(backend, text):
-    assert "(object): no object of this world is called so" in _refusal(text, backend, "FloorPlan1")
+    assert "(object): no object of this world is called so" in _refused(text, "FloorPlan1", backend)
 
 
 def test_a_part_a_position_or_a_description_is_no_unknown_thing():
