@@ -1296,3 +1296,56 @@ DEV4_H94: dict[int, list[str]] = {
         "When the green apple and the orange are both on the yellow plate, the carrot and the red apple can "
         "go on the blue plate, either first."],
 }
+
+# h96's held-out batch: written and committed before any h96 rule, in voices no older batch uses (a game
+# master, a telegram with STOP, a voice that gives the reason for each step, a greeting and sign-off, a
+# hurried voice with ellipses, a shopping-list voice, a pirate).
+VALID_H96: dict[int, list[str]] = {
+    1: ["Quest for the brave robot: deliver the green apple to the blue plate and the orange to the yellow "
+        "plate. Complete both to win!",
+        "GREEN APPLE TO BLUE PLATE STOP ORANGE TO YELLOW PLATE STOP",
+        "Put the green apple on the blue plate, because green and blue look nice together, and put the "
+        "orange on the yellow plate, since they're both warm colours.",
+        "Hi there! Please put the green apple on the blue plate and the orange on the yellow plate. Thanks "
+        "so much, Sam",
+        "quick... green apple on the blue plate... orange on the yellow one... go!",
+        "Need on the table: blue plate with a green apple, yellow plate with an orange."],
+    2: ["Your mission, should you choose to accept it: red apple to the blue plate, orange to the yellow "
+        "plate, green apple to the pink plate. Tackle them in any order you like.",
+        "PUT GREEN APPLE ON PINK PLATE STOP ORANGE ON YELLOW PLATE STOP RED APPLE ON BLUE PLATE STOP ANY "
+        "ORDER STOP",
+        "The green apple goes on the pink plate so the colours contrast, the orange on the yellow plate to "
+        "match, and the red apple on the blue plate; the order doesn't matter since none of them depend on "
+        "each other.",
+        "Good morning! Could you place the green apple on the pink plate, the orange on the yellow plate "
+        "and the red apple on the blue plate? Any order is fine. Cheers, Alex",
+        "ok ok ok... red apple, blue plate... green apple, pink plate... orange, yellow plate... whatever "
+        "order, just hurry",
+        "Ahoy! Drop the green apple on the pink plate, the orange on the yellow plate and the red apple on "
+        "the blue plate, any order ye please."],
+    3: ["Level three, adventurer! Four treasures, four plates: the carrot goes to the blue plate, the "
+        "orange to the yellow plate, the green apple to the green plate, the red apple to the pink plate. "
+        "Any order wins.",
+        "CARROT BLUE PLATE STOP ORANGE YELLOW PLATE STOP GREEN APPLE GREEN PLATE STOP RED APPLE PINK PLATE "
+        "STOP ORDER UNIMPORTANT STOP",
+        "Put the carrot on the blue plate so it stands out, the orange on the yellow plate so it blends in, "
+        "the green apple on the green plate and the red apple on the pink plate for the same reason; do "
+        "them in whatever order is easiest.",
+        "Hey robot, hope you're well! The carrot should go on the blue plate, the orange on the yellow "
+        "plate, the green apple on the green plate and the red apple on the pink plate, in no special "
+        "order. Thanks a bunch!",
+        "carrot... blue plate. orange... yellow plate. green apple... green plate. red apple... pink plate. "
+        "any order, quick!",
+        "Blue plate: 1 carrot. Yellow plate: 1 orange. Green plate: 1 green apple. Pink plate: 1 red apple. "
+        "Any order."],
+    4: ["Round one: bring the green apple and the orange to the yellow plate. Round two, which unlocks "
+        "after round one: the carrot and the red apple to the blue plate.",
+        "GREEN APPLE AND ORANGE TO YELLOW PLATE FIRST STOP THEN CARROT AND RED APPLE TO BLUE PLATE STOP",
+        "Put the green apple and the orange on the yellow plate first, because the blue plate is still "
+        "being cleaned; after that, put the carrot and the red apple on the blue plate.",
+        "Hello! First, please put the green apple and the orange on the yellow plate. When that's done, put "
+        "the carrot and the red apple on the blue plate. Many thanks, Jo",
+        "yellow plate first... green apple, orange... then blue plate... carrot, red apple... thanks!!",
+        "Arr, first stow the green apple and the orange on the yellow plate, matey, then the carrot and the "
+        "red apple on the blue plate!"],
+}
