@@ -1349,3 +1349,40 @@ VALID_H96: dict[int, list[str]] = {
         "Arr, first stow the green apple and the orange on the yellow plate, matey, then the carrot and the "
         "red apple on the blue plate!"],
 }
+
+# h96's development batches: written for developing the rules and read per sentence.
+DEV_H96: dict[int, list[str]] = {
+    1: ["Objective unlocked: green apple onto the blue plate, orange onto the yellow plate. Good luck!",
+        "BLUE PLATE GREEN APPLE STOP YELLOW PLATE ORANGE STOP THANKS STOP",
+        "Dear robot, kindly put the green apple on the blue plate and the orange on the yellow plate. Best "
+        "regards, Mia",
+        "hmm... the green apple on the blue plate... and the orange... on the yellow plate, yeah",
+        "Put the orange on the yellow plate because it matches, and the green apple on the blue plate "
+        "because there's room there."],
+    2: ["Hi! The orange goes on the yellow plate, the red apple on the blue plate and the green apple on "
+        "the pink plate, any order. Thanks, Lee",
+        "RED APPLE BLUE PLATE STOP GREEN APPLE PINK PLATE STOP ORANGE YELLOW PLATE STOP",
+        "Shopping list for the plates: pink plate - green apple, yellow plate - orange, blue plate - red "
+        "apple. Any order.",
+        "right... orange, yellow plate... red apple, blue plate... green apple, pink plate... in any order",
+        "Avast! The red apple to the blue plate, the orange to the yellow plate and the green apple to the "
+        "pink plate, in any order, me hearty."],
+    3: ["Greetings, traveller! Place the carrot on the blue plate, the orange on the yellow plate, the "
+        "green apple on the green plate and the red apple on the pink plate, in any order. Farewell!",
+        "CARROT TO BLUE PLATE STOP ORANGE TO YELLOW PLATE STOP GREEN APPLE TO GREEN PLATE STOP RED APPLE "
+        "TO PINK PLATE STOP",
+        "The carrot goes on the blue plate, the orange on the yellow plate, the green apple on the green "
+        "plate, and the red apple on the pink plate, each to its own colour so it's easy to check; the "
+        "order doesn't matter.",
+        "quick quick... carrot blue plate... orange yellow plate... green apple green plate... red apple "
+        "pink plate... any order"],
+    4: ["Hey! Start with the green apple and the orange on the yellow plate. When that's done, the carrot "
+        "and the red apple on the blue plate. Thanks, Kim",
+        "YELLOW PLATE FIRST GREEN APPLE AND ORANGE STOP BLUE PLATE NEXT CARROT AND RED APPLE STOP",
+        "First put the green apple and the orange on the yellow plate, since those are needed first; then "
+        "put the carrot and the red apple on the blue plate.",
+        "Chapter one: the green apple and the orange on the yellow plate. Chapter two, only after chapter "
+        "one: the carrot and the red apple on the blue plate.",
+        "ok... green apple and orange on the yellow plate first... then carrot and red apple on the blue "
+        "plate... go go go"],
+}
