@@ -76,6 +76,25 @@ def _is_plate(found: str, kinds: dict[str, bool]) -> bool | None:
     return kinds.get(name, kinds.get(name.removesuffix("s")))
 
 
+# a telegram's "STOP" (in capitals, closing the text) ends each sentence: "GREEN APPLE TO BLUE PLATE STOP ..."
+_TELEGRAM_STOP = re.compile(r"\s*\bSTOP\b[\s.!]*")
+# a pause ("...") before a word of place goes on with its sentence: "and the orange... on the yellow plate"
+_PAUSE_BEFORE_PLACE = re.compile(r"\s*(?:\.{3,}|…)\s*(?=(?:on|onto|in|into|to|upon)\b)", re.IGNORECASE)
+
+
+def stops_read(text: str) -> str:
+    """`text` with a telegram's capital "STOP"s as full stops where one closes the text, and a pause before
+    a word of place ("the orange... on the yellow plate") as a space.
+
+    >>> stops_read("GREEN APPLE TO BLUE PLATE STOP ORANGE TO YELLOW PLATE STOP")
+    'GREEN APPLE TO BLUE PLATE. ORANGE TO YELLOW PLATE.'
+    """
+    text = _PAUSE_BEFORE_PLACE.sub(" ", text)
+    if re.search(r"\bSTOP[\s.!]*$", text):
+        text = _TELEGRAM_STOP.sub(". ", text).strip()
+    return text
+
+
 def names_spelt(text: str, kinds: dict[str, bool]) -> str:
     """`text` with each name written as an identifier or with its colour after its noun spelt as the
     world's name (see the module docstring); `kinds`: each name in words -> is it a plate."""

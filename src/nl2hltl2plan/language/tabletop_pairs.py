@@ -30,13 +30,14 @@ from nl2hltl2plan.language.grounding import camel_words
 from nl2hltl2plan.language.htt_build import build_htt
 from nl2hltl2plan.language.result import LanguageResult
 from nl2hltl2plan.language.tabletop_counts import plate_counts_read, plates_said_alone, total_counts_read
-from nl2hltl2plan.language.tabletop_lines import lines_joined, names_spelt
+from nl2hltl2plan.language.tabletop_lines import lines_joined, names_spelt, stops_read
 from nl2hltl2plan.language.tabletop_order import (
     BEFORE,
     FIRST,
     FIRST_CLOSING,
     PLACE_IN_THE_WHOLE,
     THEN,
+    heading_colon_put_back,
     reference_fronted,
     then_after_subject_fronted,
     trailing_then_fronted,
@@ -150,7 +151,7 @@ class TabletopReader:
         under it, a list of items one a line), with the names spelt as the world spells them
         ("green_apple", "the plate blue"): `tabletop_lines`."""
         kinds = {camel_words(t): _is_plate(t) for t in self.world.object_types()}
-        return names_spelt(lines_joined(lines, kinds), kinds)
+        return names_spelt(stops_read(lines_joined(lines, kinds)), kinds)
 
     def prepared(self, instruction: str) -> str:
         """A clause that says where something is ("the carrot is on the blue plate") with no wish or goal
@@ -323,7 +324,8 @@ def read_pairs(text: str, types: set[str]) -> Reading | None:
     stepped = steps_read(last_item_unmarked(unordered) if listed else unordered, listed)
     pattern = mention_pattern(by_words)
     if stepped is not None:  # a clause waiting for placements, and a "then" closing its clause, put first
-        stepped = trailing_then_fronted(reference_fronted(stepped, pattern), pattern)
+        stepped = heading_colon_put_back(reference_fronted(stepped, pattern), pattern)
+        stepped = trailing_then_fronted(stepped, pattern)
         stepped = then_after_subject_fronted(stepped, pattern)
     if stepped is not None and PLACE_IN_THE_WHOLE.search(stepped):
         return None  # "... to finish" where it closes no clause that a "then" can open

@@ -451,10 +451,10 @@ _LIST_NUMBER = re.compile(
 _ALTERNATIVE_NOUNS = frozenset("option plan alternative choice scenario variant version possibility".split())
 
 
-# "Round B, only after round A:", "Batch two (after batch one):": a label that names the label before it
-# says the order the labels say already
+# "Round B, only after round A:", "Batch two (after batch one):", "Chapter two, only after chapter one:": a
+# label that names the label before it (the same noun, one back in turn) says the order the labels say already
 _REFERS_BACK = re.compile(
-    rf"(?P<label>(?P<noun>{_STEP_NOUN})\s+(?P<t>\w+))\s*(?:,|\()\s*(?:but\s+)?(?:only\s+)?(?:after|once|"
+    r"(?P<label>(?P<noun>[a-z]+)\s+(?P<t>\w+))\s*(?:,|\()\s*(?:but\s+)?(?:only\s+)?(?:after|once|"
     r"following)\s+(?P<noun2>[a-z]+)\s+(?P<b>\w+)(?:\s+is\s+(?:done|finished|complete))?\s*\)?\s*(?=[:.)\-])",
     re.IGNORECASE,
 )
