@@ -1386,3 +1386,36 @@ DEV_H96: dict[int, list[str]] = {
         "ok... green apple and orange on the yellow plate first... then carrot and red apple on the blue "
         "plate... go go go"],
 }
+
+# written after the rules for DEV_H96 and measured before any rule for it (how far those rules carry)
+DEV2_H96: dict[int, list[str]] = {
+    1: ["Ladies and gentlemen, the green apple will now be placed on the blue plate and the orange on the "
+        "yellow plate. Thank you for flying with us.",
+        "Voicemail: hey it's me, um, could you pop the green apple on the blue plate and the orange on the "
+        "yellow plate, okay, talk soon, bye",
+        "The robot shall place the green apple on the blue plate and the orange on the yellow plate.",
+        "green apple -> blue plate 🍏 orange -> yellow plate 🍊 thx!!"],
+    2: ["Alright team, huddle up! Green apple to the pink plate, orange to the yellow plate, red apple to "
+        "the blue plate. Any order, let's go!",
+        "To whom it may concern: please place the green apple on the pink plate, the orange on the yellow "
+        "plate and the red apple on the blue plate, in any order. Yours faithfully, the kitchen",
+        "Three little jobs, dear: the green apple on the pink plate, the orange on the yellow plate, the red "
+        "apple on the blue plate. Whatever order, love. Gran x",
+        "#tidy green apple on pink plate, orange on yellow plate, red apple on blue plate #anyorder"],
+    3: ["Attention please: carrot to the blue plate, orange to the yellow plate, green apple to the green "
+        "plate and red apple to the pink plate. The order is up to you. Thank you.",
+        "So, like, the carrot goes on the blue plate, and the orange on the yellow plate, and the green "
+        "apple on the green plate, and the red apple on the pink plate, whatever order, it's fine.",
+        "The robot shall place the carrot on the blue plate, the orange on the yellow plate, the green "
+        "apple on the green plate and the red apple on the pink plate, in any order.",
+        "Coach here. Carrot, blue plate. Orange, yellow plate. Green apple, green plate. Red apple, pink "
+        "plate. Any order. Go!"],
+    4: ["Alright team: the green apple and the orange go on the yellow plate first. Then the carrot and the "
+        "red apple on the blue plate. Let's go!",
+        "Dear robot, first the green apple and the orange onto the yellow plate, please; afterwards the "
+        "carrot and the red apple onto the blue plate. Yours, Pat",
+        "The robot shall first place the green apple and the orange on the yellow plate and shall then "
+        "place the carrot and the red apple on the blue plate.",
+        "ugh fine... green apple and orange on the yellow plate first... then carrot and red apple on the "
+        "blue plate... happy now?"],
+}
