@@ -193,7 +193,7 @@ _SUBJECTS = frozenset(
     "i i'm i've i'd i'll we we're we've it it's it'd it'll that that's this there there's here here's they "
     "they're he she what how a an my our his her their".split()
 )
-_INTERJECTIONS = frozenset("oh ah aw ok okay so well and but also hmm um right yeah yes wow".split())
+_INTERJECTIONS = frozenset("oh ah aw ok okay so well and but also hmm um right yeah yes wow hey hi hello".split())
 # words that ask, or say what the asker wants or what a robot must do: never in an aside
 _ASKS = frozenset(
     "you u ya ye your yours yourself please pls plz kindly be let lets let's make sure should shall must "
@@ -208,6 +208,8 @@ _PLACING = frozenset(
     "go goes going come comes land lands end ends belong belongs sit sits stay stays use uses using "
     "handle touch hold match".split()
 )
+_THINKING = frozenset("hope hoping guess reckon suppose bet".split())
+_THANKS = re.compile(r"^(?:(?:many\s+)?thanks|thank\s+you|thx|ty)(?:\s+(?:so|very)\s+much)?(?:\s+for\b|$)(?P<rest>.*)$")
 _MANNER = re.compile(r"(?:ly|wards?|wise)$")  # "carefully", "clockwise" ("request" is no superlative here)
 _REASON = re.compile(r"\b(?:because|since|so\s+that|so)\s+(?=[a-z'])[^,.;:!?()\n]*")
 
@@ -215,8 +217,9 @@ _REASON = re.compile(r"\b(?:because|since|so\s+that|so)\s+(?=[a-z'])[^,.;:!?()\n
 def _set_apart_aside(before: str, after: str, clause: bool) -> bool:
     """Does a piece stand as a whole sentence (between sentence ends, or the text's edges), or, for a clause
     (`clause`), close the text after a comma?"""
-    if clause:
-        return before.rstrip()[-1:] == "," and not _WORD.search(after)
+    if clause:  # closing the text after a comma, or opening it before one
+        opening = not _WORD.search(before) and after.lstrip()[:1] == ","
+        return opening or (before.rstrip()[-1:] == "," and not _WORD.search(after))
     return before.rstrip()[-1:] in ("", ".", "!", "?") and after.lstrip()[:1] in ("", ".", "!", "?")
 
 
@@ -230,15 +233,19 @@ def asks_nothing(clause: str) -> bool:
     words = re.findall(r"[a-z']+", clause)
     while words and words[0] in _INTERJECTIONS:
         words.pop(0)
+    thanked = _THANKS.match(" ".join(words))  # "thank you for flying with us": its "you" asks nothing
+    if thanked:
+        words = thanked["rest"].split()
     if not words or re.search(r"\d", clause) or words[0] in _PLACING:
-        return False
+        return not words and thanked is not None
     said = set(words)
     if said & (_ASKS | _PLACING | _MEANINGFUL) or any(_MANNER.search(w) for w in words):
         return False
     if any(c.startswith("count") for w in words for c in categories(w)):
         return False
-    # opened by a subject of its own or a person addressed, never by a verb: no imperative ("wear gloves")
-    return words[0] in _SUBJECTS or "person" in categories(words[0])
+    # opened by a subject of its own (said or left out before a verb of thinking: "hope that's fine"), a
+    # person addressed, or the thanks' "for", never by a verb: no imperative ("wear gloves")
+    return words[0] in _SUBJECTS | _THINKING or "person" in categories(words[0]) or thanked is not None
 
 
 def reasons_dropped(text: str, mention: re.Pattern[str], name_words: frozenset[str]) -> str:
