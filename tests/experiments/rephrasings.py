@@ -1419,3 +1419,38 @@ DEV2_H96: dict[int, list[str]] = {
         "ugh fine... green apple and orange on the yellow plate first... then carrot and red apple on the "
         "blue plate... happy now?"],
 }
+
+# written after the rules for DEV_H96 and DEV2_H96 and measured before any rule for it
+DEV3_H96: dict[int, list[str]] = {
+    1: ["Protocol: transfer the green apple to the blue plate; transfer the orange to the yellow plate. End "
+        "of protocol.",
+        "Dear diary, today I asked the robot to put the green apple on the blue plate and the orange on the "
+        "yellow plate.",
+        "Listen up, soldier! Green apple on the blue plate! Orange on the yellow plate! Move it!",
+        "Once upon a time the green apple went to the blue plate and the orange went to the yellow plate. "
+        "The end."],
+    2: ["Thanks for calling! Today we'll be placing the green apple on the pink plate, the orange on the "
+        "yellow plate and the red apple on the blue plate, in any order. Have a nice day!",
+        "Forecast: green apple on the pink plate, orange on the yellow plate, red apple on the blue plate, "
+        "order unimportant.",
+        "I reckon the green apple suits the pink plate, the orange the yellow plate and the red apple the "
+        "blue plate, so put them there, any order.",
+        "Right, I'm off to work. Put the green apple on the pink plate, the orange on the yellow plate and "
+        "the red apple on the blue plate, any order. See you later!"],
+    3: ["Lab steps (order not important): carrot to blue plate; orange to yellow plate; green apple to "
+        "green plate; red apple to pink plate.",
+        "It's a big day, so put the carrot on the blue plate, the orange on the yellow plate, the green apple "
+        "on the green plate and the red apple on the pink plate, in any order.",
+        "My friend, the carrot belongs on the blue plate, the orange on the yellow plate, the green apple on "
+        "the green plate and the red apple on the pink plate. Do them in any order.",
+        "CARROT > BLUE PLATE STOP ORANGE > YELLOW PLATE STOP GREEN APPLE > GREEN PLATE STOP RED APPLE > PINK "
+        "PLATE STOP ANY ORDER STOP"],
+    4: ["Listen up, soldier! Green apple and orange on the yellow plate first! Then carrot and red apple on "
+        "the blue plate! Move it!",
+        "Protocol: step one, the green apple and the orange to the yellow plate; step two, the carrot and "
+        "the red apple to the blue plate.",
+        "Right, I'm off. Green apple and orange on the yellow plate first, then carrot and red apple on the "
+        "blue plate. See you tonight!",
+        "It's a big day... green apple and orange on the yellow plate... then carrot and red apple on the "
+        "blue plate... that's all, thanks!"],
+}
