@@ -426,12 +426,13 @@ def _name(found: str) -> str:
 
 # ---- step labels and list numbers ----------------------------------------------------------------------
 _NUMBER_WORDS = {"one": 1, "two": 2, "three": 3, "four": 4, "first": 1, "second": 2, "third": 3, "fourth": 4}
-# a label's place in turn: a digit, a number word or an ordinal, or (with a colon or bracket after it, so
+# a label's place in turn: a digit, a number word or an ordinal (a step noun's also with a comma after it:
+# "step one, ...; step two, ..."), or (with a colon or bracket after it, so
 # that an article or "I" is not one) a letter or a roman numeral ("Part A:", "Phase II)")
 _LETTERS = {"a": 1, "b": 2, "c": 3, "d": 4, "i": 1, "ii": 2, "iii": 3, "iv": 4}
 _STEP_NOUN = r"(?:step|phase|stage|part|round|course|batch)"
 _TURN = (
-    r"(?:(?P<n1>\d|one|two|three|four|first|second|third|fourth)\s*[:.)\-]|(?P<l1>[a-d]|i{1,3}|iv)\s*[:)])"
+    r"(?:(?P<n1>\d|one|two|three|four|first|second|third|fourth)\s*[:.)\-,]|(?P<l1>[a-d]|i{1,3}|iv)\s*[:)])"
 )
 _LABEL = re.compile(
     rf"(?:^|(?<=[.;!?:,]))\s*(?:{_STEP_NOUN}\s*{_TURN}|(?P<n2>first|second|third|fourth)\s+{_STEP_NOUN}"
