@@ -1439,8 +1439,8 @@ DEV3_H96: dict[int, list[str]] = {
         "the red apple on the blue plate, any order. See you later!"],
     3: ["Lab steps (order not important): carrot to blue plate; orange to yellow plate; green apple to "
         "green plate; red apple to pink plate.",
-        "It's a big day, so put the carrot on the blue plate, the orange on the yellow plate, the green apple "
-        "on the green plate and the red apple on the pink plate, in any order.",
+        "It's a big day, so put the carrot on the blue plate, the orange on the yellow plate, the green "
+        "apple on the green plate and the red apple on the pink plate, in any order.",
         "My friend, the carrot belongs on the blue plate, the orange on the yellow plate, the green apple on "
         "the green plate and the red apple on the pink plate. Do them in any order.",
         "CARROT > BLUE PLATE STOP ORANGE > YELLOW PLATE STOP GREEN APPLE > GREEN PLATE STOP RED APPLE > PINK "

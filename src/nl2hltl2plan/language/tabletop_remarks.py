@@ -193,7 +193,9 @@ _SUBJECTS = frozenset(
     "i i'm i've i'd i'll we we're we've it it's it'd it'll that that's this there there's here here's they "
     "they're he she what how a an my our his her their".split()
 )
-_INTERJECTIONS = frozenset("oh ah aw ok okay so well and but also hmm um right yeah yes wow hey hi hello".split())
+_INTERJECTIONS = frozenset(
+    "oh ah aw ok okay so well and but also hmm um right yeah yes wow hey hi hello".split()
+)
 # words that ask, or say what the asker wants or what a robot must do: never in an aside
 _ASKS = frozenset(
     "you u ya ye your yours yourself please pls plz kindly be let lets let's make sure should shall must "
@@ -209,7 +211,9 @@ _PLACING = frozenset(
     "handle touch hold match".split()
 )
 _THINKING = frozenset("hope hoping guess reckon suppose bet".split())
-_THANKS = re.compile(r"^(?:(?:many\s+)?thanks|thank\s+you|thx|ty)(?:\s+(?:so|very)\s+much)?(?:\s+for\b|$)(?P<rest>.*)$")
+_THANKS = re.compile(
+    r"^(?:(?:many\s+)?thanks|thank\s+you|thx|ty)(?:\s+(?:so|very)\s+much)?(?:\s+for\b|$)(?P<rest>.*)$"
+)
 _MANNER = re.compile(r"(?:ly|wards?|wise)$")  # "carefully", "clockwise" ("request" is no superlative here)
 _REASON = re.compile(r"\b(?:because|since|so\s+that|so)\s+(?=[a-z'])[^,.;:!?()\n]*")
 
