@@ -76,3 +76,17 @@ def test_a_pause_before_a_word_of_place_goes_on_and_a_label_naming_another_is_re
     )
     assert _reading(text) is None
     assert _reading("blue plate next green plate carrot and orange") is None  # two plates: no heading
+
+
+def test_a_plate_said_done_is_the_step_on_it_and_an_order_label_may_be_asked():
+    text = (
+        "Yellow plate first, with the green apple and the orange; when the yellow plate is done, the blue "
+        "plate gets the carrot and the red apple."
+    )
+    assert _reading(text) == YELLOW_THEN_BLUE
+    # the plate said done is not the step just said: which step it waits for is not said
+    text = "Green apple, orange on the yellow plate. When the blue plate is done, carrot, red apple on it."
+    assert _reading(text) is None
+    asked = "Green apple? Blue plate. Orange? Yellow plate. Order? Doesn't matter."
+    assert _reading(asked) == TWO_FREE
+    assert _reading("Green apple? Blue plate. Orange? Yellow plate. Order? Matters.") is None

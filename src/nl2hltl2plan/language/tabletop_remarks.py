@@ -139,8 +139,11 @@ def _opener_dropped(sentence: str) -> str:
     return sentence[: words[0].start()] + sentence[words[run].start() :]
 
 
-# "(order: doesn't matter)", "Sequence: up to you": a label with its value, read as one statement
-_ORDER_LABEL = re.compile(r"(?:^|(?<=[(\n.;!?]))\s*(?:order(?:ing)?|sequence)\s*:\s*(?=[a-z])", re.IGNORECASE)
+# "(order: doesn't matter)", "Sequence: up to you", also asked and answered ("Order? Doesn't matter."): a
+# label with its value, read as one statement
+_ORDER_LABEL = re.compile(
+    r"(?:^|(?<=[(\n.;!?]))\s*(?:order(?:ing)?|sequence)\s*[:?]\s*(?=[a-z])", re.IGNORECASE
+)
 _ASKING = frozenset("i i'd we we'd want need would to".split())  # "I'd like you to sort the fruit:"
 # a clause that only urges, closes or announces ("make it so", "off you go", "quick one")
 _URGING = re.compile(

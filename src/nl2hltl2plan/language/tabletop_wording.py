@@ -268,6 +268,11 @@ _DONE_WITH = re.compile(
     r"\b(?:when|once|after)\s+you(?:'re|\s+are|'ve|\s+have)\s+(?:all\s+)?(?:done|finished|through)\s+with\s+"
     r"(?:the\s+)?(?P<plate>[a-z]+\s+plate)\b"
 )
+# "when the yellow plate is done": the same, said of the plate
+_PLATE_DONE = re.compile(
+    r"\b(?:when|once|after)\s+(?:the\s+)?(?P<plate>[a-z]+\s+plate)(?:'s|\s+is|\s+has\s+been)\s+"
+    r"(?:all\s+)?(?:done|finished|full|complete|completed)\b"
+)
 _MOVE_ON = re.compile(
     r"\b(?:move|go|head|proceed)\s+on\s+to\s+(?:the\s+)?(?P<plate>[a-z]+\s+plate)(?P<and>\s+and\b)?"
 )
@@ -275,7 +280,8 @@ _MOVE_ON = re.compile(
 
 def _moving_on_read(text: str, kinds: dict[str, bool]) -> str:
     """ "once you're done with the yellow plate, move on to the blue plate: carrot and red apple" -> "once
-    that is done, the blue plate: carrot and red apple": done with the plate named last before it (the
+    that is done, the blue plate: carrot and red apple" ("when the yellow plate is done" too): done with the
+    plate named last before it (the
     step just said), then the next plate ("move on to the blue plate and fill it with ..." -> "fill the
     blue plate with ..."); left where the plate done with is not the one named last."""
     plates = mention_pattern([n for n, plate in kinds.items() if plate])
@@ -284,7 +290,7 @@ def _moving_on_read(text: str, kinds: dict[str, bool]) -> str:
         before = [_name(p) for p in plates.findall(text, 0, m.start()) if _name(p) in kinds]
         return "once that is done" if before and before[-1] == _name(m["plate"]) else m[0]
 
-    text = _DONE_WITH.sub(done, text)
+    text = _PLATE_DONE.sub(done, _DONE_WITH.sub(done, text))
     return _MOVE_ON.sub(lambda m: "" if m["and"] else f"the {_name(m['plate'])}", text)
 
 
