@@ -1454,3 +1454,49 @@ DEV3_H96: dict[int, list[str]] = {
         "It's a big day... green apple and orange on the yellow plate... then carrot and red apple on the "
         "blue plate... that's all, thanks!"],
 }
+
+# written after every rule above, in VALID_H96's voices (new sentences), measured before any rule for it
+DEV4_H96: dict[int, list[str]] = {
+    1: ["New quest! Carry the green apple to the blue plate and the orange to the yellow plate, brave robot.",
+        "ORANGE ON YELLOW PLATE STOP GREEN APPLE ON BLUE PLATE STOP",
+        "Put the orange on the yellow plate, since it's the same colour, and the green apple on the blue "
+        "plate.",
+        "Hello robot! Place the green apple on the blue plate and the orange on the yellow plate. Kind "
+        "regards, Tom",
+        "hurry... orange, yellow plate... green apple, blue plate... done!",
+        "Today's list: green apple for the blue plate, orange for the yellow plate."],
+    2: ["Side quest: red apple to the blue plate, green apple to the pink plate, orange to the yellow plate. "
+        "Any order, hero.",
+        "GREEN APPLE PINK PLATE STOP RED APPLE BLUE PLATE STOP ORANGE YELLOW PLATE STOP ANY ORDER STOP",
+        "The orange goes on the yellow plate because it's yellow too, the red apple on the blue plate and "
+        "the green apple on the pink plate, in any order.",
+        "Hiya! Green apple on the pink plate, orange on the yellow plate, red apple on the blue plate, any "
+        "order. Ta, Jess",
+        "no time... green apple pink plate... orange yellow plate... red apple blue plate... any order",
+        "Yo ho! The orange on the yellow plate, the red apple on the blue plate, the green apple on the pink "
+        "plate, any order, savvy?"],
+    3: ["Boss fight! Carrot to the blue plate, orange to the yellow plate, green apple to the green plate, "
+        "red apple to the pink plate, any order. Go, hero!",
+        "RED APPLE TO PINK PLATE STOP CARROT TO BLUE PLATE STOP ORANGE TO YELLOW PLATE STOP GREEN APPLE TO "
+        "GREEN PLATE STOP",
+        "Put the green apple on the green plate since they match, the carrot on the blue plate, the orange "
+        "on the yellow plate and the red apple on the pink plate, in any order.",
+        "Morning! Carrot on the blue plate, orange on the yellow plate, green apple on the green plate, red "
+        "apple on the pink plate, whichever order. Cheers, Ben",
+        "fast... carrot on the blue plate... orange on the yellow plate... green apple on the green "
+        "plate... red apple on the pink plate... any order",
+        "Shopping list for the plates: blue plate - carrot, yellow plate - orange, green plate - green "
+        "apple, pink plate - red apple. Any order."],
+    4: ["Level one: the green apple and the orange on the yellow plate. Level two: the carrot and the red "
+        "apple on the blue plate. Good luck, hero!",
+        "FIRST GREEN APPLE AND ORANGE ON YELLOW PLATE STOP AFTER THAT CARROT AND RED APPLE ON BLUE PLATE "
+        "STOP",
+        "First the green apple and the orange on the yellow plate, because they're for now, then the "
+        "carrot and the red apple on the blue plate.",
+        "Hi! First the green apple and the orange on the yellow plate, then the carrot and the red apple on "
+        "the blue plate. Thanks, Lou",
+        "quick quick... green apple and orange on the yellow plate... after that... carrot and red apple on "
+        "the blue plate...",
+        "Ahoy! First, the green apple and the orange on the yellow plate, then the carrot and the red apple "
+        "on the blue plate, me hearties!"],
+}
