@@ -9,8 +9,11 @@ no difference which one you do first", "none of these depends on another") becom
 matter"); a frame that opens the text (a short clause with no word that could say an action, order,
 count, negation, place, manner or goal: "Helm,", "Howdy partner,", a title), a clause that only urges or
 announces ("make it so", "quick one") and a question heading that asks where things go ("What goes
-where?") are removed. The courtesy words are `courtesy.txt`'s (`courtesy_word`, `your_time`, `unhurried`,
-`urging`, `aside`).
+where?") are removed; so is a remark that asks nothing wherever it stands (`asks_nothing`: a sentence, a
+clause opening or closing the text, or a reason given for a step, opened by a subject of its own, a person
+addressed or thanks, with no word that asks, places, orders or counts: "I've got a bit of a weird request",
+"..., me hearty", "..., so it's easy to check"). The courtesy words are `courtesy.txt`'s (`courtesy_word`,
+`your_time`, `unhurried`, `urging`, `aside`).
 
 >>> import re
 >>> remarks_read("hey, carrot on the blue plate. no rush. it makes no difference which comes first",
