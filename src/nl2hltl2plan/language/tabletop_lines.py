@@ -53,7 +53,7 @@ def lines_joined(lines: list[str], kinds: dict[str, bool]) -> str:
     """The lines (each already one line of words) as one line, each break read by what the lines name
     (see the module docstring); `kinds`: each name in words -> is it a plate."""
     pattern = mention_pattern(kinds, re.I)
-    items = [_BULLET.sub("", line).strip() for line in lines]
+    items = [_BULLET.sub("", line.strip()).strip() for line in lines]  # translate keeps indentation
     items = [item for item in items if item]
     named = [{_is_plate(found, kinds) for found in pattern.findall(item)} for item in items]
     bare = [not _OTHER_WORDS.sub("", pattern.sub(" ", item)) for item in items]
