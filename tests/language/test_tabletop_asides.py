@@ -90,3 +90,9 @@ def test_a_plate_said_done_is_the_step_on_it_and_an_order_label_may_be_asked():
     asked = "Green apple? Blue plate. Orange? Yellow plate. Order? Doesn't matter."
     assert _reading(asked) == TWO_FREE
     assert _reading("Green apple? Blue plate. Orange? Yellow plate. Order? Matters.") is None
+
+
+def test_a_thing_placed_by_two_tasks_is_refused():
+    # the grammar reads "I hate oranges" as a placement too (exit 0 on main with the orange on two plates)
+    text = "Put the green apple on the blue plate. I hate oranges. Put the orange on the yellow plate."
+    assert _reading(text) is None

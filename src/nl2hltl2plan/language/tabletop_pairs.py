@@ -210,7 +210,8 @@ class TabletopReader:
     def unused(self, res: LanguageResult) -> list[Unread]:
         """Each object or plate the instruction names (outside its negated clauses) that no base task
         uses: nothing lies on a plate or beside a named thing at the start, so a name read as a landmark
-        ("the green apple on the pink plate orange on the yellow plate ...") was not understood."""
+        ("the green apple on the pink plate orange on the yellow plate ...") was not understood; and each
+        object that two tasks place (a thing ends on one plate)."""
         text = res.instruction.lower()
         for c in res.constraint_specs:
             text = text.replace(c.text.lower(), " ")
@@ -223,6 +224,10 @@ class TabletopReader:
             if type_ is not None and type_ not in used:
                 kind = "place" if _is_plate(type_) else "object"
                 out[name] = Unread(name, kind, f"no base task uses it ({type_})")
+        placed = Counter(o for task in res.tasks for o in task.object)
+        for type_ in (t for t, n in placed.items() if n > 1):  # "I hate oranges" read as a placement too
+            why = "placed by two tasks: a thing ends on one plate, and which one is meant is not said"
+            out[camel_words(type_)] = Unread(camel_words(type_), "object", why)
         if (labels := labels_out_of_turn(res.instruction.lower())) is not None:
             out[labels] = Unread(labels, "order", "steps numbered out of turn")
         for found in _ORDER_MATTERS.finditer(res.instruction.lower()):
