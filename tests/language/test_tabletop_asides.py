@@ -96,3 +96,8 @@ def test_a_thing_placed_by_two_tasks_is_refused():
     # the grammar reads "I hate oranges" as a placement too (exit 0 on main with the orange on two plates)
     text = "Put the green apple on the blue plate. I hate oranges. Put the orange on the yellow plate."
     assert _reading(text) is None
+
+
+@pytest.mark.parametrize("remark", ["That's wrong.", "Ignore that.", "I'd prefer it the other way."])
+def test_a_remark_that_may_take_back_what_was_asked_stays_unread(remark):
+    assert _reading(f"Put {PLACEMENTS}. {remark}") is None

@@ -193,8 +193,8 @@ _ASKED_PLACES = _WHERE | _GOES | frozenset(
 
 
 # ---- asides: a remark that asks nothing, wherever it stands ------------------------------------------------
-# (a whole sentence, or a clause that closes the text after a comma: "Good luck, me hearty", "I've got a bit
-# of a weird request", "Objective unlocked:"), and a reason given for a step ("..., so it's easy to check")
+# (a whole sentence, or a clause that opens the text before a comma or closes it after one: "I've got a bit of
+# a weird request", "..., me hearty"), and a reason given for a step ("..., so it's easy to check")
 _SUBJECTS = frozenset(
     "i i'm i've i'd i'll we we're we've it it's it'd it'll that that's this there there's here here's they "
     "they're he she what how a an my our his her their".split()
@@ -206,7 +206,11 @@ _INTERJECTIONS = frozenset(
 _ASKS = frozenset(
     "you u ya ye your yours yourself please pls plz kindly be let lets let's make sure should shall must "
     "need needs needed want wants wanted like wish have has had gotta ought remember do does don't did "
-    "can can't could would will won't robot robots".split()
+    "can can't could would will won't robot robots prefer prefers preferred rather".split()
+)
+# words that may take back or turn round what was asked ("That's wrong.", "Ignore that.")
+_CORRECTING = frozenset(
+    "wrong incorrect ignore forget cancel nevermind disregard opposite swapped mixed muddled confused".split()
 )
 # verbs of placing, moving, keeping or using: a remark with one may ask for a placement
 _PLACING = frozenset(
@@ -226,7 +230,7 @@ _REASON = re.compile(r"\b(?:because|since|so\s+that|so)\s+(?=[a-z'])[^,.;:!?()\n
 
 def _set_apart_aside(before: str, after: str, clause: bool) -> bool:
     """Does a piece stand as a whole sentence (between sentence ends, or the text's edges), or, for a clause
-    (`clause`), close the text after a comma?"""
+    (`clause`), open the text before a comma or close it after one?"""
     if clause:  # closing the text after a comma, or opening it before one
         opening = not _WORD.search(before) and after.lstrip()[:1] == ","
         return opening or (before.rstrip()[-1:] == "," and not _WORD.search(after))
@@ -237,9 +241,9 @@ def asks_nothing(clause: str) -> bool:
     """Is `clause` (naming no object or plate) a remark that asks nothing: a clause with a subject of its own
     (or a person addressed: "me hearty"), no word that asks ("you", "please", "should", "want", a
     modal), no verb of placing, moving or using, and no word of order, count, negation, condition, time,
-    place or manner (`_MEANINGFUL`, check 1's count words, a digit, an adverb in "-ly")? ("Good luck, me
-    hearty", "I've got a bit of a weird request", "so it's easy to check"; not "use the left arm", "it
-    can wait", "do it twice", "be careful")"""
+    place, manner or correction (`_MEANINGFUL`, `_CORRECTING`, check 1's count words, a digit, an adverb
+    in "-ly")? ("me hearty", "I've got a bit of a weird request", "so it's easy to check"; not "use the
+    left arm", "it can wait", "do it twice", "be careful", "that's wrong")"""
     words = re.findall(r"[a-z']+", clause)
     while words and words[0] in _INTERJECTIONS:
         words.pop(0)
@@ -249,7 +253,7 @@ def asks_nothing(clause: str) -> bool:
     if not words or re.search(r"\d", clause) or words[0] in _PLACING:
         return not words and thanked is not None
     said = set(words)
-    if said & (_ASKS | _PLACING | _MEANINGFUL) or any(_MANNER.search(w) for w in words):
+    if said & (_ASKS | _PLACING | _MEANINGFUL | _CORRECTING) or any(_MANNER.search(w) for w in words):
         return False
     if any(c.startswith("count") for w in words for c in categories(w)):
         return False
