@@ -98,6 +98,9 @@ def test_a_thing_placed_by_two_tasks_is_refused():
     assert _reading(text) is None
 
 
-@pytest.mark.parametrize("remark", ["That's wrong.", "Ignore that.", "I'd prefer it the other way."])
+@pytest.mark.parametrize(
+    "remark",
+    ["That's wrong.", "Ignore that.", "I'd prefer it the other way.", "They're swapped.", "Just kidding."],
+)
 def test_a_remark_that_may_take_back_what_was_asked_stays_unread(remark):
     assert _reading(f"Put {PLACEMENTS}. {remark}") is None

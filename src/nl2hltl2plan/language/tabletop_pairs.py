@@ -111,9 +111,11 @@ _ORDER_SAID = re.compile(
 )
 _PRIORITY = re.compile(r"\bpriorit(?:y|ies|i[sz]e[sd]?)\b")
 # words that take back or turn round what was asked, with no correction marker to read ("That's wrong.",
-# "Ignore that.", "the other way round"): the grammar reads round them, so this world leaves them unused
+# "Ignore that.", "the other way round", "They're swapped.", "Just kidding."): the grammar reads round them,
+# so this world leaves them unused
 _TAKEN_BACK = re.compile(
-    r"\b(?:wrong|incorrect|ignore|disregard|cancel|never\s*mind|opposite|(?:the\s+)?other\s+way(?:\s+round)?)\b"
+    r"\b(?:wrong|incorrect|ignore|disregard|cancel|never\s*mind|opposite|(?:the\s+)?other\s+way(?:\s+round)?|"
+    r"swapped|reversed|kidding|joking)\b"
 )
 # labels that name alternatives, not steps ("Plan A: ... Plan B: ...", "Option 1: ..."): which one is meant
 # is not said, and doing both is no reading of them
