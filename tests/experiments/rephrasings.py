@@ -1296,3 +1296,207 @@ DEV4_H94: dict[int, list[str]] = {
         "When the green apple and the orange are both on the yellow plate, the carrot and the red apple can "
         "go on the blue plate, either first."],
 }
+
+# h96's held-out batch: written and committed before any h96 rule, in voices no older batch uses (a game
+# master, a telegram with STOP, a voice that gives the reason for each step, a greeting and sign-off, a
+# hurried voice with ellipses, a shopping-list voice, a pirate).
+VALID_H96: dict[int, list[str]] = {
+    1: ["Quest for the brave robot: deliver the green apple to the blue plate and the orange to the yellow "
+        "plate. Complete both to win!",
+        "GREEN APPLE TO BLUE PLATE STOP ORANGE TO YELLOW PLATE STOP",
+        "Put the green apple on the blue plate, because green and blue look nice together, and put the "
+        "orange on the yellow plate, since they're both warm colours.",
+        "Hi there! Please put the green apple on the blue plate and the orange on the yellow plate. Thanks "
+        "so much, Sam",
+        "quick... green apple on the blue plate... orange on the yellow one... go!",
+        "Need on the table: blue plate with a green apple, yellow plate with an orange."],
+    2: ["Your mission, should you choose to accept it: red apple to the blue plate, orange to the yellow "
+        "plate, green apple to the pink plate. Tackle them in any order you like.",
+        "PUT GREEN APPLE ON PINK PLATE STOP ORANGE ON YELLOW PLATE STOP RED APPLE ON BLUE PLATE STOP ANY "
+        "ORDER STOP",
+        "The green apple goes on the pink plate so the colours contrast, the orange on the yellow plate to "
+        "match, and the red apple on the blue plate; the order doesn't matter since none of them depend on "
+        "each other.",
+        "Good morning! Could you place the green apple on the pink plate, the orange on the yellow plate "
+        "and the red apple on the blue plate? Any order is fine. Cheers, Alex",
+        "ok ok ok... red apple, blue plate... green apple, pink plate... orange, yellow plate... whatever "
+        "order, just hurry",
+        "Ahoy! Drop the green apple on the pink plate, the orange on the yellow plate and the red apple on "
+        "the blue plate, any order ye please."],
+    3: ["Level three, adventurer! Four treasures, four plates: the carrot goes to the blue plate, the "
+        "orange to the yellow plate, the green apple to the green plate, the red apple to the pink plate. "
+        "Any order wins.",
+        "CARROT BLUE PLATE STOP ORANGE YELLOW PLATE STOP GREEN APPLE GREEN PLATE STOP RED APPLE PINK PLATE "
+        "STOP ORDER UNIMPORTANT STOP",
+        "Put the carrot on the blue plate so it stands out, the orange on the yellow plate so it blends in, "
+        "the green apple on the green plate and the red apple on the pink plate for the same reason; do "
+        "them in whatever order is easiest.",
+        "Hey robot, hope you're well! The carrot should go on the blue plate, the orange on the yellow "
+        "plate, the green apple on the green plate and the red apple on the pink plate, in no special "
+        "order. Thanks a bunch!",
+        "carrot... blue plate. orange... yellow plate. green apple... green plate. red apple... pink plate. "
+        "any order, quick!",
+        "Blue plate: 1 carrot. Yellow plate: 1 orange. Green plate: 1 green apple. Pink plate: 1 red apple. "
+        "Any order."],
+    4: ["Round one: bring the green apple and the orange to the yellow plate. Round two, which unlocks "
+        "after round one: the carrot and the red apple to the blue plate.",
+        "GREEN APPLE AND ORANGE TO YELLOW PLATE FIRST STOP THEN CARROT AND RED APPLE TO BLUE PLATE STOP",
+        "Put the green apple and the orange on the yellow plate first, because the blue plate is still "
+        "being cleaned; after that, put the carrot and the red apple on the blue plate.",
+        "Hello! First, please put the green apple and the orange on the yellow plate. When that's done, put "
+        "the carrot and the red apple on the blue plate. Many thanks, Jo",
+        "yellow plate first... green apple, orange... then blue plate... carrot, red apple... thanks!!",
+        "Arr, first stow the green apple and the orange on the yellow plate, matey, then the carrot and the "
+        "red apple on the blue plate!"],
+}
+
+# h96's development batches: written for developing the rules and read per sentence.
+DEV_H96: dict[int, list[str]] = {
+    1: ["Objective unlocked: green apple onto the blue plate, orange onto the yellow plate. Good luck!",
+        "BLUE PLATE GREEN APPLE STOP YELLOW PLATE ORANGE STOP THANKS STOP",
+        "Dear robot, kindly put the green apple on the blue plate and the orange on the yellow plate. Best "
+        "regards, Mia",
+        "hmm... the green apple on the blue plate... and the orange... on the yellow plate, yeah",
+        "Put the orange on the yellow plate because it matches, and the green apple on the blue plate "
+        "because there's room there."],
+    2: ["Hi! The orange goes on the yellow plate, the red apple on the blue plate and the green apple on "
+        "the pink plate, any order. Thanks, Lee",
+        "RED APPLE BLUE PLATE STOP GREEN APPLE PINK PLATE STOP ORANGE YELLOW PLATE STOP",
+        "Shopping list for the plates: pink plate - green apple, yellow plate - orange, blue plate - red "
+        "apple. Any order.",
+        "right... orange, yellow plate... red apple, blue plate... green apple, pink plate... in any order",
+        "Avast! The red apple to the blue plate, the orange to the yellow plate and the green apple to the "
+        "pink plate, in any order, me hearty."],
+    3: ["Greetings, traveller! Place the carrot on the blue plate, the orange on the yellow plate, the "
+        "green apple on the green plate and the red apple on the pink plate, in any order. Farewell!",
+        "CARROT TO BLUE PLATE STOP ORANGE TO YELLOW PLATE STOP GREEN APPLE TO GREEN PLATE STOP RED APPLE "
+        "TO PINK PLATE STOP",
+        "The carrot goes on the blue plate, the orange on the yellow plate, the green apple on the green "
+        "plate, and the red apple on the pink plate, each to its own colour so it's easy to check; the "
+        "order doesn't matter.",
+        "quick quick... carrot blue plate... orange yellow plate... green apple green plate... red apple "
+        "pink plate... any order"],
+    4: ["Hey! Start with the green apple and the orange on the yellow plate. When that's done, the carrot "
+        "and the red apple on the blue plate. Thanks, Kim",
+        "YELLOW PLATE FIRST GREEN APPLE AND ORANGE STOP BLUE PLATE NEXT CARROT AND RED APPLE STOP",
+        "First put the green apple and the orange on the yellow plate, since those are needed first; then "
+        "put the carrot and the red apple on the blue plate.",
+        "Chapter one: the green apple and the orange on the yellow plate. Chapter two, only after chapter "
+        "one: the carrot and the red apple on the blue plate.",
+        "ok... green apple and orange on the yellow plate first... then carrot and red apple on the blue "
+        "plate... go go go"],
+}
+
+# written after the rules for DEV_H96 and measured before any rule for it (how far those rules carry)
+DEV2_H96: dict[int, list[str]] = {
+    1: ["Ladies and gentlemen, the green apple will now be placed on the blue plate and the orange on the "
+        "yellow plate. Thank you for flying with us.",
+        "Voicemail: hey it's me, um, could you pop the green apple on the blue plate and the orange on the "
+        "yellow plate, okay, talk soon, bye",
+        "The robot shall place the green apple on the blue plate and the orange on the yellow plate.",
+        "green apple -> blue plate 🍏 orange -> yellow plate 🍊 thx!!"],
+    2: ["Alright team, huddle up! Green apple to the pink plate, orange to the yellow plate, red apple to "
+        "the blue plate. Any order, let's go!",
+        "To whom it may concern: please place the green apple on the pink plate, the orange on the yellow "
+        "plate and the red apple on the blue plate, in any order. Yours faithfully, the kitchen",
+        "Three little jobs, dear: the green apple on the pink plate, the orange on the yellow plate, the red "
+        "apple on the blue plate. Whatever order, love. Gran x",
+        "#tidy green apple on pink plate, orange on yellow plate, red apple on blue plate #anyorder"],
+    3: ["Attention please: carrot to the blue plate, orange to the yellow plate, green apple to the green "
+        "plate and red apple to the pink plate. The order is up to you. Thank you.",
+        "So, like, the carrot goes on the blue plate, and the orange on the yellow plate, and the green "
+        "apple on the green plate, and the red apple on the pink plate, whatever order, it's fine.",
+        "The robot shall place the carrot on the blue plate, the orange on the yellow plate, the green "
+        "apple on the green plate and the red apple on the pink plate, in any order.",
+        "Coach here. Carrot, blue plate. Orange, yellow plate. Green apple, green plate. Red apple, pink "
+        "plate. Any order. Go!"],
+    4: ["Alright team: the green apple and the orange go on the yellow plate first. Then the carrot and the "
+        "red apple on the blue plate. Let's go!",
+        "Dear robot, first the green apple and the orange onto the yellow plate, please; afterwards the "
+        "carrot and the red apple onto the blue plate. Yours, Pat",
+        "The robot shall first place the green apple and the orange on the yellow plate and shall then "
+        "place the carrot and the red apple on the blue plate.",
+        "ugh fine... green apple and orange on the yellow plate first... then carrot and red apple on the "
+        "blue plate... happy now?"],
+}
+
+# written after the rules for DEV_H96 and DEV2_H96 and measured before any rule for it
+DEV3_H96: dict[int, list[str]] = {
+    1: ["Protocol: transfer the green apple to the blue plate; transfer the orange to the yellow plate. End "
+        "of protocol.",
+        "Dear diary, today I asked the robot to put the green apple on the blue plate and the orange on the "
+        "yellow plate.",
+        "Listen up, soldier! Green apple on the blue plate! Orange on the yellow plate! Move it!",
+        "Once upon a time the green apple went to the blue plate and the orange went to the yellow plate. "
+        "The end."],
+    2: ["Thanks for calling! Today we'll be placing the green apple on the pink plate, the orange on the "
+        "yellow plate and the red apple on the blue plate, in any order. Have a nice day!",
+        "Forecast: green apple on the pink plate, orange on the yellow plate, red apple on the blue plate, "
+        "order unimportant.",
+        "I reckon the green apple suits the pink plate, the orange the yellow plate and the red apple the "
+        "blue plate, so put them there, any order.",
+        "Right, I'm off to work. Put the green apple on the pink plate, the orange on the yellow plate and "
+        "the red apple on the blue plate, any order. See you later!"],
+    3: ["Lab steps (order not important): carrot to blue plate; orange to yellow plate; green apple to "
+        "green plate; red apple to pink plate.",
+        "It's a big day, so put the carrot on the blue plate, the orange on the yellow plate, the green "
+        "apple on the green plate and the red apple on the pink plate, in any order.",
+        "My friend, the carrot belongs on the blue plate, the orange on the yellow plate, the green apple on "
+        "the green plate and the red apple on the pink plate. Do them in any order.",
+        "CARROT > BLUE PLATE STOP ORANGE > YELLOW PLATE STOP GREEN APPLE > GREEN PLATE STOP RED APPLE > PINK "
+        "PLATE STOP ANY ORDER STOP"],
+    4: ["Listen up, soldier! Green apple and orange on the yellow plate first! Then carrot and red apple on "
+        "the blue plate! Move it!",
+        "Protocol: step one, the green apple and the orange to the yellow plate; step two, the carrot and "
+        "the red apple to the blue plate.",
+        "Right, I'm off. Green apple and orange on the yellow plate first, then carrot and red apple on the "
+        "blue plate. See you tonight!",
+        "It's a big day... green apple and orange on the yellow plate... then carrot and red apple on the "
+        "blue plate... that's all, thanks!"],
+}
+
+# written after every rule above, in VALID_H96's voices (new sentences), measured before any rule for it
+DEV4_H96: dict[int, list[str]] = {
+    1: ["New quest! Carry the green apple to the blue plate and the orange to the yellow plate, brave robot.",
+        "ORANGE ON YELLOW PLATE STOP GREEN APPLE ON BLUE PLATE STOP",
+        "Put the orange on the yellow plate, since it's the same colour, and the green apple on the blue "
+        "plate.",
+        "Hello robot! Place the green apple on the blue plate and the orange on the yellow plate. Kind "
+        "regards, Tom",
+        "hurry... orange, yellow plate... green apple, blue plate... done!",
+        "Today's list: green apple for the blue plate, orange for the yellow plate."],
+    2: ["Side quest: red apple to the blue plate, green apple to the pink plate, orange to the yellow plate. "
+        "Any order, hero.",
+        "GREEN APPLE PINK PLATE STOP RED APPLE BLUE PLATE STOP ORANGE YELLOW PLATE STOP ANY ORDER STOP",
+        "The orange goes on the yellow plate because it's yellow too, the red apple on the blue plate and "
+        "the green apple on the pink plate, in any order.",
+        "Hiya! Green apple on the pink plate, orange on the yellow plate, red apple on the blue plate, any "
+        "order. Ta, Jess",
+        "no time... green apple pink plate... orange yellow plate... red apple blue plate... any order",
+        "Yo ho! The orange on the yellow plate, the red apple on the blue plate, the green apple on the pink "
+        "plate, any order, savvy?"],
+    3: ["Boss fight! Carrot to the blue plate, orange to the yellow plate, green apple to the green plate, "
+        "red apple to the pink plate, any order. Go, hero!",
+        "RED APPLE TO PINK PLATE STOP CARROT TO BLUE PLATE STOP ORANGE TO YELLOW PLATE STOP GREEN APPLE TO "
+        "GREEN PLATE STOP",
+        "Put the green apple on the green plate since they match, the carrot on the blue plate, the orange "
+        "on the yellow plate and the red apple on the pink plate, in any order.",
+        "Morning! Carrot on the blue plate, orange on the yellow plate, green apple on the green plate, red "
+        "apple on the pink plate, whichever order. Cheers, Ben",
+        "fast... carrot on the blue plate... orange on the yellow plate... green apple on the green "
+        "plate... red apple on the pink plate... any order",
+        "Shopping list for the plates: blue plate - carrot, yellow plate - orange, green plate - green "
+        "apple, pink plate - red apple. Any order."],
+    4: ["Level one: the green apple and the orange on the yellow plate. Level two: the carrot and the red "
+        "apple on the blue plate. Good luck, hero!",
+        "FIRST GREEN APPLE AND ORANGE ON YELLOW PLATE STOP AFTER THAT CARROT AND RED APPLE ON BLUE PLATE "
+        "STOP",
+        "First the green apple and the orange on the yellow plate, because they're for now, then the "
+        "carrot and the red apple on the blue plate.",
+        "Hi! First the green apple and the orange on the yellow plate, then the carrot and the red apple on "
+        "the blue plate. Thanks, Lou",
+        "quick quick... green apple and orange on the yellow plate... after that... carrot and red apple on "
+        "the blue plate...",
+        "Ahoy! First, the green apple and the orange on the yellow plate, then the carrot and the red apple "
+        "on the blue plate, me hearties!"],
+}

@@ -53,7 +53,7 @@ def lines_joined(lines: list[str], kinds: dict[str, bool]) -> str:
     """The lines (each already one line of words) as one line, each break read by what the lines name
     (see the module docstring); `kinds`: each name in words -> is it a plate."""
     pattern = mention_pattern(kinds, re.I)
-    items = [_BULLET.sub("", line.strip()).strip() for line in lines]  # a line may keep its indentation
+    items = [_BULLET.sub("", line.strip()).strip() for line in lines]  # translate keeps indentation
     items = [item for item in items if item]
     named = [{_is_plate(found, kinds) for found in pattern.findall(item)} for item in items]
     bare = [not _OTHER_WORDS.sub("", pattern.sub(" ", item)) for item in items]
@@ -74,6 +74,25 @@ def lines_joined(lines: list[str], kinds: dict[str, bool]) -> str:
 def _is_plate(found: str, kinds: dict[str, bool]) -> bool | None:
     name = " ".join(found.lower().split())
     return kinds.get(name, kinds.get(name.removesuffix("s")))
+
+
+# a telegram's "STOP" (in capitals, closing the text) ends each sentence: "GREEN APPLE TO BLUE PLATE STOP ..."
+_TELEGRAM_STOP = re.compile(r"\s*\bSTOP\b[\s.!]*")
+# a pause ("...") before a word of place goes on with its sentence: "and the orange... on the yellow plate"
+_PAUSE_BEFORE_PLACE = re.compile(r"\s*(?:\.{3,}|…)\s*(?=(?:on|onto|in|into|to|upon)\b)", re.IGNORECASE)
+
+
+def stops_read(text: str) -> str:
+    """`text` with a telegram's capital "STOP"s as full stops where one closes the text, and a pause before
+    a word of place ("the orange... on the yellow plate") as a space.
+
+    >>> stops_read("GREEN APPLE TO BLUE PLATE STOP ORANGE TO YELLOW PLATE STOP")
+    'GREEN APPLE TO BLUE PLATE. ORANGE TO YELLOW PLATE.'
+    """
+    text = _PAUSE_BEFORE_PLACE.sub(" ", text)
+    if re.search(r"\bSTOP[\s.!]*$", text):
+        text = _TELEGRAM_STOP.sub(". ", text).strip()
+    return text
 
 
 def names_spelt(text: str, kinds: dict[str, bool]) -> str:

@@ -106,6 +106,23 @@ def then_after_subject_fronted(text: str, pattern: re.Pattern[str]) -> str:
     )
 
 
+def heading_colon_put_back(text: str, pattern: re.Pattern[str]) -> str:
+    """A plate, an order word and an object name opening a clause as a heading with its colon left out
+    ("blue plate next carrot and red apple" -> "blue plate next: carrot and red apple"), which
+    `trailing_then_fronted` then reads as the headings it reads."""
+    start = r"(?P<start>(?:^|[,.;:!?])\s*(?:and\s+)?)"
+    heading = re.compile(
+        rf"{start}(?P<plate>(?:the\s+)?{pattern.pattern})\s+(?P<when>first|next|then|second|last|after\s+that)"
+        rf"\s+(?=(?:the\s+)?(?P<named>{pattern.pattern}))"
+    )
+
+    def put_back(m: re.Match[str]) -> str:
+        plates = _name(m["plate"]).endswith("plate") and not _name(m["named"]).endswith("plate")
+        return f"{m['start']}{m['plate']} {m['when']}: " if plates else m[0]
+
+    return heading.sub(put_back, text)
+
+
 def trailing_then_fronted(text: str, pattern: re.Pattern[str]) -> str:
     """A "then" or "first" that closes its clause put before it ("the carrot goes on the blue plate after
     that" -> "then the carrot goes on the blue plate"), where the clause names one plate (so that its

@@ -30,13 +30,14 @@ from nl2hltl2plan.language.grounding import camel_words
 from nl2hltl2plan.language.htt_build import build_htt
 from nl2hltl2plan.language.result import LanguageResult
 from nl2hltl2plan.language.tabletop_counts import plate_counts_read, plates_said_alone, total_counts_read
-from nl2hltl2plan.language.tabletop_lines import lines_joined, names_spelt
+from nl2hltl2plan.language.tabletop_lines import lines_joined, names_spelt, stops_read
 from nl2hltl2plan.language.tabletop_order import (
     BEFORE,
     FIRST,
     FIRST_CLOSING,
     PLACE_IN_THE_WHOLE,
     THEN,
+    heading_colon_put_back,
     reference_fronted,
     then_after_subject_fronted,
     trailing_then_fronted,
@@ -109,6 +110,13 @@ _ORDER_SAID = re.compile(
     r"sequential(?:ly)?|in\s+sequence|one\s+(?:after|by)\s+(?:the\s+)?(?:other|one))\b"
 )
 _PRIORITY = re.compile(r"\bpriorit(?:y|ies|i[sz]e[sd]?)\b")
+# words that take back or turn round what was asked, with no correction marker to read ("That's wrong.",
+# "Ignore that.", "the other way round", "They're swapped.", "Just kidding."): the grammar reads round them,
+# so this world leaves them unused
+_TAKEN_BACK = re.compile(
+    r"\b(?:wrong|incorrect|ignore|disregard|cancel|never\s*mind|opposite|(?:the\s+)?other\s+way(?:\s+round)?|"
+    r"swapped|reversed|kidding|joking)\b"
+)
 # labels that name alternatives, not steps ("Plan A: ... Plan B: ...", "Option 1: ..."): which one is meant
 # is not said, and doing both is no reading of them
 _ALTERNATIVES = re.compile(
@@ -150,7 +158,7 @@ class TabletopReader:
         under it, a list of items one a line), with the names spelt as the world spells them
         ("green_apple", "the plate blue"): `tabletop_lines`."""
         kinds = {camel_words(t): _is_plate(t) for t in self.world.object_types()}
-        return names_spelt(lines_joined(lines, kinds), kinds)
+        return names_spelt(stops_read(lines_joined(lines, kinds)), kinds)
 
     def prepared(self, instruction: str) -> str:
         """A clause that says where something is ("the carrot is on the blue plate") with no wish or goal
@@ -209,7 +217,8 @@ class TabletopReader:
     def unused(self, res: LanguageResult) -> list[Unread]:
         """Each object or plate the instruction names (outside its negated clauses) that no base task
         uses: nothing lies on a plate or beside a named thing at the start, so a name read as a landmark
-        ("the green apple on the pink plate orange on the yellow plate ...") was not understood."""
+        ("the green apple on the pink plate orange on the yellow plate ...") was not understood; and each
+        object that two tasks place (a thing ends on one plate)."""
         text = res.instruction.lower()
         for c in res.constraint_specs:
             text = text.replace(c.text.lower(), " ")
@@ -222,6 +231,10 @@ class TabletopReader:
             if type_ is not None and type_ not in used:
                 kind = "place" if _is_plate(type_) else "object"
                 out[name] = Unread(name, kind, f"no base task uses it ({type_})")
+        placed = Counter(o for task in res.tasks for o in task.object)
+        for type_ in (t for t, n in placed.items() if n > 1):  # "I hate oranges" read as a placement too
+            why = "placed by two tasks: a thing ends on one plate, and which one is meant is not said"
+            out[camel_words(type_)] = Unread(camel_words(type_), "object", why)
         if (labels := labels_out_of_turn(res.instruction.lower())) is not None:
             out[labels] = Unread(labels, "order", "steps numbered out of turn")
         for found in _ORDER_MATTERS.finditer(res.instruction.lower()):
@@ -230,6 +243,8 @@ class TabletopReader:
         for found in _RELATION_VERB.finditer(res.instruction.lower()):
             why = "an order between placements that this reading does not take"
             out[found[0]] = Unread(found[0], "order", why)
+        for found in _TAKEN_BACK.finditer(res.instruction.lower()):
+            out[found[0]] = Unread(found[0], "negation", "it may take back what was asked: say what is meant")
         for found in _ALTERNATIVES.finditer(res.instruction.lower()):
             out[found[0]] = Unread(found[0], "condition", "alternatives: which one is meant is not said")
         for found in _ENTRIES.finditer(res.instruction.lower()):
@@ -315,6 +330,7 @@ def read_pairs(text: str, types: set[str]) -> Reading | None:
     plain, total_counts = total_counts_read(plain)  # "- those four placements, that's all": checked below
     unread_order = _RELATION_VERB.search(plain) or _ORDER_MATTERS.search(plain) or _ORDER_SAID.search(plain)
     labels_unread = _ALTERNATIVES.search(text.lower()) or _ENTRIES.search(text.lower())
+    labels_unread = labels_unread or _TAKEN_BACK.search(text.lower())  # "That's wrong.": never read round
     if stated_not_asked(plain, by_words) is not None or unread_order or labels_unread:
         return None
     plain, last_free = last_group_free(plain)
@@ -323,7 +339,8 @@ def read_pairs(text: str, types: set[str]) -> Reading | None:
     stepped = steps_read(last_item_unmarked(unordered) if listed else unordered, listed)
     pattern = mention_pattern(by_words)
     if stepped is not None:  # a clause waiting for placements, and a "then" closing its clause, put first
-        stepped = trailing_then_fronted(reference_fronted(stepped, pattern), pattern)
+        stepped = heading_colon_put_back(reference_fronted(stepped, pattern), pattern)
+        stepped = trailing_then_fronted(stepped, pattern)
         stepped = then_after_subject_fronted(stepped, pattern)
     if stepped is not None and PLACE_IN_THE_WHOLE.search(stepped):
         return None  # "... to finish" where it closes no clause that a "then" can open

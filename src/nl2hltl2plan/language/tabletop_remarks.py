@@ -9,8 +9,11 @@ no difference which one you do first", "none of these depends on another") becom
 matter"); a frame that opens the text (a short clause with no word that could say an action, order,
 count, negation, place, manner or goal: "Helm,", "Howdy partner,", a title), a clause that only urges or
 announces ("make it so", "quick one") and a question heading that asks where things go ("What goes
-where?") are removed. The courtesy words are `courtesy.txt`'s (`courtesy_word`, `your_time`, `unhurried`,
-`urging`, `aside`).
+where?") are removed; so is a remark that asks nothing wherever it stands (`asks_nothing`: a sentence, a
+clause opening or closing the text, or a reason given for a step, opened by a subject of its own, a person
+addressed or thanks, with no word that asks, places, orders or counts: "I've got a bit of a weird request",
+"..., me hearty", "..., so it's easy to check"). The courtesy words are `courtesy.txt`'s (`courtesy_word`,
+`your_time`, `unhurried`, `urging`, `aside`).
 
 >>> import re
 >>> remarks_read("hey, carrot on the blue plate. no rush. it makes no difference which comes first",
@@ -90,6 +93,7 @@ def remarks_read(text: str, mention: re.Pattern[str], name_words: frozenset[str]
     in `name_words`: "the yellow" is a plate) removed, freedom statements said as "in any order" or "within
     each group in any order". Any other clause is left as it is, for the readers."""
     text = _ORDER_LABEL.sub(" the order is ", _SENTENCE_PIECE.sub(lambda m: _opener_dropped(m[0]), text))
+    text = reasons_dropped(text, mention, name_words)
     for pieces in (_SENTENCE_PIECE, _CLAUSE):
         low, out, at = text.lower(), [], 0
         for piece in pieces.finditer(low):
@@ -103,8 +107,10 @@ def remarks_read(text: str, mention: re.Pattern[str], name_words: frozenset[str]
                 at_start = set_apart and not _WORD.search(before)  # a closing word may say an order
                 asked = low.startswith("?", piece.end())
                 titled = low.startswith(":", piece.end()) and not _WORD.search(before)
-                named = not name_words.isdisjoint(words.split())
+                named = not name_words.isdisjoint(re.findall(r"[a-z]+", words))
                 read = None if named else frame_read(words, at_start, asked, titled)
+                if read is None and not named and _set_apart_aside(before, after, pieces is _CLAUSE):
+                    read = "" if asks_nothing(words) else None
             if read is not None:
                 out.append(text[at : piece.start()] + (f" {read}" if read else ""))
                 at = piece.end()
@@ -136,8 +142,11 @@ def _opener_dropped(sentence: str) -> str:
     return sentence[: words[0].start()] + sentence[words[run].start() :]
 
 
-# "(order: doesn't matter)", "Sequence: up to you": a label with its value, read as one statement
-_ORDER_LABEL = re.compile(r"(?:^|(?<=[(\n.;!?]))\s*(?:order(?:ing)?|sequence)\s*:\s*(?=[a-z])", re.IGNORECASE)
+# "(order: doesn't matter)", "Sequence: up to you", also asked and answered ("Order? Doesn't matter."): a
+# label with its value, read as one statement
+_ORDER_LABEL = re.compile(
+    r"(?:^|(?<=[(\n.;!?]))\s*(?:order(?:ing)?|sequence)\s*[:?]\s*(?=[a-z])", re.IGNORECASE
+)
 _ASKING = frozenset("i i'd we we'd want need would to".split())  # "I'd like you to sort the fruit:"
 # a clause that only urges, closes or announces ("make it so", "off you go", "quick one")
 _URGING = re.compile(
@@ -181,6 +190,89 @@ _ASKED_PLACES = _WHERE | _GOES | frozenset(
     "which do does should must will would things thing stuff everything each item items it they all of these "
     "them the".split()
 )
+
+
+# ---- asides: a remark that asks nothing, wherever it stands ------------------------------------------------
+# (a whole sentence, or a clause that opens the text before a comma or closes it after one: "I've got a bit of
+# a weird request", "..., me hearty"), and a reason given for a step ("..., so it's easy to check")
+_SUBJECTS = frozenset(
+    "i i'm i've i'd i'll we we're we've it it's it'd it'll that that's this there there's here here's they "
+    "they're he she what how a an my our his her their".split()
+)
+_INTERJECTIONS = frozenset(
+    "oh ah aw ok okay so well and but also hmm um right yeah yes wow hey hi hello".split()
+)
+# words that ask, or say what the asker wants or what a robot must do: never in an aside
+_ASKS = frozenset(
+    "you u ya ye your yours yourself please pls plz kindly be let lets let's make sure should shall must "
+    "need needs needed want wants wanted like wish have has had gotta ought remember do does don't did "
+    "can can't could would will won't robot robots prefer prefers preferred rather".split()
+)
+# words that may take back or turn round what was asked ("That's wrong.", "Ignore that.")
+_CORRECTING = frozenset(
+    "wrong incorrect ignore forget cancel nevermind disregard opposite swapped mixed muddled confused".split()
+)
+# verbs of placing, moving, keeping or using: a remark with one may ask for a placement
+_PLACING = frozenset(
+    "put puts place places placing set sets setting lay lays laying move moves moving drop drops bring "
+    "brings carry take takes give gives hand hands stow deliver leave keep swap switch serve load fill stack "
+    "pile toss throw transfer return remove pick grab clear empty plate arrange sort tidy organise organize "
+    "go goes going come comes land lands end ends belong belongs sit sits stay stays use uses using "
+    "handle touch hold match".split()
+)
+_THINKING = frozenset("hope hoping guess reckon suppose bet".split())
+_THANKS = re.compile(
+    r"^(?:(?:many\s+)?thanks|thank\s+you|thx|ty)(?:\s+(?:so|very)\s+much)?(?:\s+for\b|$)(?P<rest>.*)$"
+)
+_MANNER = re.compile(r"(?:ly|wards?|wise)$")  # "carefully", "clockwise" ("request" is no superlative here)
+_REASON = re.compile(r"\b(?:because|since|so\s+that|so)\s+(?=[a-z'])[^,.;:!?()\n]*")
+
+
+def _set_apart_aside(before: str, after: str, clause: bool) -> bool:
+    """Does a piece stand as a whole sentence (between sentence ends, or the text's edges), or, for a clause
+    (`clause`), open the text before a comma or close it after one?"""
+    if clause:  # closing the text after a comma, or opening it before one
+        opening = not _WORD.search(before) and after.lstrip()[:1] == ","
+        return opening or (before.rstrip()[-1:] == "," and not _WORD.search(after))
+    return before.rstrip()[-1:] in ("", ".", "!", "?") and after.lstrip()[:1] in ("", ".", "!", "?")
+
+
+def asks_nothing(clause: str) -> bool:
+    """Is `clause` (naming no object or plate) a remark that asks nothing: a clause with a subject of its own
+    (or a person addressed: "me hearty"), no word that asks ("you", "please", "should", "want", a
+    modal), no verb of placing, moving or using, and no word of order, count, negation, condition, time,
+    place, manner or correction (`_MEANINGFUL`, `_CORRECTING`, check 1's count words, a digit, an adverb
+    in "-ly")? ("me hearty", "I've got a bit of a weird request", "so it's easy to check"; not "use the
+    left arm", "it can wait", "do it twice", "be careful", "that's wrong")"""
+    words = re.findall(r"[a-z']+", clause)
+    while words and words[0] in _INTERJECTIONS:
+        words.pop(0)
+    thanked = _THANKS.match(" ".join(words))  # "thank you for flying with us": its "you" asks nothing
+    if thanked:
+        words = thanked["rest"].split()
+    if not words or re.search(r"\d", clause) or words[0] in _PLACING:
+        return not words and thanked is not None
+    said = set(words)
+    if said & (_ASKS | _PLACING | _MEANINGFUL | _CORRECTING) or any(_MANNER.search(w) for w in words):
+        return False
+    if any(c.startswith("count") for w in words for c in categories(w)):
+        return False
+    # opened by a subject of its own (said or left out before a verb of thinking: "hope that's fine"), a
+    # person addressed, or the thanks' "for", never by a verb: no imperative ("wear gloves")
+    return words[0] in _SUBJECTS | _THINKING or "person" in categories(words[0]) or thanked is not None
+
+
+def reasons_dropped(text: str, mention: re.Pattern[str], name_words: frozenset[str]) -> str:
+    """`text` without each reason given for a step that names nothing and asks nothing ("..., so it's easy
+    to check", "because it matches"; not "so that the yellow plate is done first")."""
+
+    def dropped(m: re.Match[str]) -> str:
+        words = re.sub(r"^(?:because|since|so\s+that|so)\s+", "", m[0])
+        if mention.search(m[0]) or not name_words.isdisjoint(re.findall(r"[a-z]+", m[0])):
+            return m[0]
+        return "" if asks_nothing(words) else m[0]
+
+    return _REASON.sub(dropped, text)
 
 
 def frame_read(clause: str, at_start: bool, asked: bool, titled: bool = False) -> str | None:

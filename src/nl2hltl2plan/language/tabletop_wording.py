@@ -269,6 +269,11 @@ _DONE_WITH = re.compile(
     r"\b(?:when|once|after)\s+you(?:'re|\s+are|'ve|\s+have)\s+(?:all\s+)?(?:done|finished|through)\s+with\s+"
     r"(?:the\s+)?(?P<plate>[a-z]+\s+plate)\b"
 )
+# "when the yellow plate is done": the same, said of the plate
+_PLATE_DONE = re.compile(
+    r"\b(?:when|once|after)\s+(?:the\s+)?(?P<plate>[a-z]+\s+plate)(?:'s|\s+is|\s+has\s+been)\s+"
+    r"(?:all\s+)?(?:done|finished|full|complete|completed)\b"
+)
 _MOVE_ON = re.compile(
     r"\b(?:move|go|head|proceed)\s+on\s+to\s+(?:the\s+)?(?P<plate>[a-z]+\s+plate)(?P<and>\s+and\b)?"
 )
@@ -276,7 +281,8 @@ _MOVE_ON = re.compile(
 
 def _moving_on_read(text: str, kinds: dict[str, bool]) -> str:
     """ "once you're done with the yellow plate, move on to the blue plate: carrot and red apple" -> "once
-    that is done, the blue plate: carrot and red apple": done with the plate named last before it (the
+    that is done, the blue plate: carrot and red apple" ("when the yellow plate is done" too): done with the
+    plate named last before it (the
     step just said), then the next plate ("move on to the blue plate and fill it with ..." -> "fill the
     blue plate with ..."); left where the plate done with is not the one named last."""
     plates = mention_pattern([n for n, plate in kinds.items() if plate])
@@ -285,7 +291,7 @@ def _moving_on_read(text: str, kinds: dict[str, bool]) -> str:
         before = [_name(p) for p in plates.findall(text, 0, m.start()) if _name(p) in kinds]
         return "once that is done" if before and before[-1] == _name(m["plate"]) else m[0]
 
-    text = _DONE_WITH.sub(done, text)
+    text = _PLATE_DONE.sub(done, _DONE_WITH.sub(done, text))
     return _MOVE_ON.sub(lambda m: "" if m["and"] else f"the {_name(m['plate'])}", text)
 
 
@@ -427,12 +433,13 @@ def _name(found: str) -> str:
 
 # ---- step labels and list numbers ----------------------------------------------------------------------
 _NUMBER_WORDS = {"one": 1, "two": 2, "three": 3, "four": 4, "first": 1, "second": 2, "third": 3, "fourth": 4}
-# a label's place in turn: a digit, a number word or an ordinal, or (with a colon or bracket after it, so
+# a label's place in turn: a digit, a number word or an ordinal (a step noun's also with a comma after it:
+# "step one, ...; step two, ..."), or (with a colon or bracket after it, so
 # that an article or "I" is not one) a letter or a roman numeral ("Part A:", "Phase II)")
 _LETTERS = {"a": 1, "b": 2, "c": 3, "d": 4, "i": 1, "ii": 2, "iii": 3, "iv": 4}
 _STEP_NOUN = r"(?:step|phase|stage|part|round|course|batch)"
 _TURN = (
-    r"(?:(?P<n1>\d|one|two|three|four|first|second|third|fourth)\s*[:.)\-]|(?P<l1>[a-d]|i{1,3}|iv)\s*[:)])"
+    r"(?:(?P<n1>\d|one|two|three|four|first|second|third|fourth)\s*[:.)\-,]|(?P<l1>[a-d]|i{1,3}|iv)\s*[:)])"
 )
 _LABEL = re.compile(
     rf"(?:^|(?<=[.;!?:,]))\s*(?:{_STEP_NOUN}\s*{_TURN}|(?P<n2>first|second|third|fourth)\s+{_STEP_NOUN}"
@@ -452,10 +459,10 @@ _LIST_NUMBER = re.compile(
 _ALTERNATIVE_NOUNS = frozenset("option plan alternative choice scenario variant version possibility".split())
 
 
-# "Round B, only after round A:", "Batch two (after batch one):": a label that names the label before it
-# says the order the labels say already
+# "Round B, only after round A:", "Batch two (after batch one):", "Chapter two, only after chapter one:": a
+# label that names the label before it (the same noun, one back in turn) says the order the labels say already
 _REFERS_BACK = re.compile(
-    rf"(?P<label>(?P<noun>{_STEP_NOUN})\s+(?P<t>\w+))\s*(?:,|\()\s*(?:but\s+)?(?:only\s+)?(?:after|once|"
+    r"(?P<label>(?P<noun>[a-z]+)\s+(?P<t>\w+))\s*(?:,|\()\s*(?:but\s+)?(?:only\s+)?(?:after|once|"
     r"following)\s+(?P<noun2>[a-z]+)\s+(?P<b>\w+)(?:\s+is\s+(?:done|finished|complete))?\s*\)?\s*(?=[:.)\-])",
     re.IGNORECASE,
 )
