@@ -11,10 +11,9 @@ the word tables' `REWRITES`). Each rewrite changes no meaning:
 - telegraphic and bulleted: "three objects, three regions: G, H and I" (the regions' count is still
   checked), a pair before its exchange ("red and blue: swap places");
 - emphasis: "no exceptions";
-- asides: a timing or order remark in parentheses ("(at any time)", "(whenever)", "(one after another, red
-  before blue)", "(in any order)") is set off by commas instead, so it attaches to the clause before it as
-  the same words after a comma do; "in that order" after a clause that already orders its steps with
-  "then" repeats that order and is dropped (without "then" it stays unread: which order?);
+- "in that order" after a clause that already orders its steps with "then" repeats that order and is
+  dropped (without "then" it stays unread: which order?); asides in parentheses are read before these
+  rewrites, by `handover_asides`;
 - modal "is to" before a verb of holding ("each region is to hold only one block": must hold);
 - frames: a user story's role ("As the operator, ..."), a requirement's identifier ("R1:"),
   office English ("kindly", "do the needful", an emphatic "itself");
@@ -72,12 +71,6 @@ _SUBJECT_NP = (
 )
 _BARE_VERB = r"(?:go|be|hold|come|stay|remain|land|end\s+up|sit|get)"
 _LETTERS = r"[e-j](?:\s*(?:,|and|or)\s*[e-j])*"
-# one timing or order remark: "at any time", "whenever", "one after another", "red before blue", "red first"
-_REMARK = (
-    r"(?:(?:at\s+)?any\s*time|at\s+any\s+(?:point|moment)|whenever|in\s+any\s+order|one\s+(?:after|by)\s+"
-    r"(?:another|the\s+other|one)|one\s+at\s+a\s+time|in\s+turn|"
-    rf"{_BLOCK}\s+(?:(?:goes|placed|put|comes)\s+)?(?:before|after)\s+{_BLOCK}|{_BLOCK}\s+(?:(?:goes|placed|put)\s+)?first)"
-)
 
 def _letters_between(match: re.Match[str]) -> str:
     """'regions h through j' -> 'regions h , i and j' (a range the wrong way round is left as written)."""
@@ -260,8 +253,6 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     ),
     # emphasis
     (r"\s*,?\s*\b(?:no\s+exceptions|without\s+exception)\b", " "),
-    # asides: a parenthesised timing or order remark reads as one set off by commas
-    (rf"\(\s*({_REMARK}(?:\s*(?:,|and)\s*{_REMARK})*)\s*\)", r", \1 ,"),
     (r"(\bthen\b[^,;()]*?)\s*(?:,\s*)?(?:\(\s*)?\bin\s+(?:that|this|the\s+same)\s+order\b(?:\s*\))?", r"\1"),
     # modal "is to" before a verb of holding
     # ("is to take the pillars ..." is a goal: "take" and "carry" hold only before a count of one)
