@@ -14,6 +14,11 @@ from nl2hltl2plan.language.handover_asides import read_asides
 
 READINGS = [
     (
+        3,
+        "Dear Sam,\nMove the three pillars to regions E, F and G beside arms a and b. Put nothing on any"
+        " other region.",
+    ),
+    (
         1,
         "Carry the three blocks (all three of them) to the opposite side; the red block (first) before the"
         " blue.",
@@ -57,6 +62,12 @@ READINGS = [
 ]
 
 NEAR_MISSES = [
+    # a greeting's name that the reader reads as a block is no greeting
+    (
+        3,
+        "Dear Red,\nmove the three pillars to regions E, F and G beside arms a and b; nothing on other"
+        " regions.",
+    ),
     (
         5,
         "Exchange the red and blue blocks (blue placed before red) and put the yellow block (at any time) on"

@@ -446,6 +446,8 @@ def plain(sentences: list[str]) -> list[str]:
     for k, sentence in enumerate(_unsigned(sentences)):
         if empty(sentence, whole=True, header=k == 0) or _START_SIGNAL.match(sentence):
             continue
+        if k == 0 and _called(sentence.rstrip(" ,.!:")):  # a letter's greeting on its own: "Dear Sam,"
+            continue
         text = _unframed_sentence(sentence, header=k == 0)
         text = _unframed_sentence(first_person_as_team(unreported(text)), header=k == 0)
         if text.strip() and not empty(text, whole=True, header=k == 0):
