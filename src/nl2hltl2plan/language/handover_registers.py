@@ -248,12 +248,25 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     ),
     (
         r"^\s*((?:the\s+)?(?:red|blue|yellow)\s+(?:and|&)\s+(?:the\s+)?(?:red|blue|yellow)(?:\s+(?:blocks|ones))?)\s*:\s*"
-        rf"{SWAP}\s+(?:(?:their|the)\s+)?(?:places|positions|spots)\b",
+        rf"{SWAP}(?:\s+(?:(?:their|the)\s+)?(?:places|positions|spots)\b|(?=\s*(?:[.;,!?]|$)))",
         r"swap \1",
     ),
     # emphasis
     (r"\s*,?\s*\b(?:no\s+exceptions|without\s+exception)\b", " "),
     (r"(\bthen\b[^,;()]*?)\s*(?:,\s*)?(?:\(\s*)?\bin\s+(?:that|this|the\s+same)\s+order\b(?:\s*\))?", r"\1"),
+    # a block's heading before its order: "red: before blue" (the red block goes before the blue block)
+    (
+        r"^\s*((?:the\s+)?(?:red|blue|yellow)(?:\s+(?:block|one|cube))?)\s*:\s*(?=(?:before|after|ahead\s+of)\s+"
+        r"(?:the\s+)?(?:red|blue|yellow)\b)",
+        r"\1 goes ",
+    ),
+    # a pseudo-cleft of an order: "what comes / goes / is placed first is the red block" (the red block comes
+    # first: the words the clause would have without the cleft)
+    (
+        r"\bwhat\s+(comes|goes|is\s+placed|gets\s+placed|is\s+put)\s+(first|last|next)\s+is\s+"
+        r"((?:the\s+)?(?:red|blue|yellow)(?:\s+(?:block|one|object|cube))?)\b",
+        r"\3 \1 \2",
+    ),
     # modal "is to" before a verb of holding
     # ("is to take the pillars ..." is a goal: "take" and "carry" hold only before a count of one)
     (

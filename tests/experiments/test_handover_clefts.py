@@ -1,0 +1,68 @@
+"""Issue 24, h95: a pseudo-cleft's head of a wish, need or task ("what needs doing is ...", "what you do is
+...", "what is required is ..."), a pseudo-cleft of an order ("what comes first is the red block"), the last
+step said first ("last of all, X; before that, Y"), a note's group and regions as fragments ("three blocks;
+regions H, I and J; ..."), a pair's bare "swap" after its heading and a block's heading before its order
+("red: before blue"). Each reading gives the written spec; each near miss (an order reversed, a pronoun
+with no one block to stand for, a region left out) is refused or gives another spec."""
+
+from __future__ import annotations
+
+import pytest
+from handover_specs import assert_not_the_written_spec, assert_written_spec
+
+READINGS = [
+    (
+        1,
+        "What needs to be done is moving the three blocks to the opposite side; what goes first is the red"
+        " block, ahead of the blue block.",
+    ),
+    (
+        6,
+        "What is required is the three objects on regions G, H and I, one each. What is placed first is the"
+        " red block, before the blue block.",
+    ),
+    (2, "What you have to do is put the three blocks on regions H, I and J, one block per region."),
+    (
+        4,
+        "Finally, put the yellow block back on region G; before that, move the three blocks to the opposite"
+        " regions, and do not touch the blue block until the red block has been touched.",
+    ),
+    (
+        8,
+        "Last, the yellow block goes to region G; before this, it goes to region I. The red and blue blocks"
+        " go to any empty region at any time.",
+    ),
+    (2, "Memo: the three blocks; regions H, I and J; one block per region."),
+    (5, "Red and blue: swap. Red: ahead of blue. Yellow: the opposite side, any time."),
+]
+
+NEAR_MISSES = [
+    (
+        1,
+        "What needs to be done is moving the three blocks to the opposite side; what goes first is the blue"
+        " block, ahead of the red block.",
+    ),
+    (
+        8,
+        "Last, the yellow block goes to region I; before this, it goes to region G. The red and blue blocks"
+        " go to any empty region at any time.",
+    ),
+    # "it" with two blocks before it stands for neither: left unread
+    (
+        8,
+        "Last, the yellow and red blocks go to region G; before this, it goes to region I. The red and blue"
+        " blocks go to any empty region at any time.",
+    ),
+    (2, "Memo: the three blocks; regions H and I; one block per region."),
+    (5, "Red and blue: swap. Blue: ahead of red. Yellow: the opposite side, any time."),
+]
+
+
+@pytest.mark.parametrize(("task_id", "text"), READINGS)
+def test_clefts_and_steps_said_last_first_are_read(task_id, text):
+    assert_written_spec(task_id, text)
+
+
+@pytest.mark.parametrize(("task_id", "text"), NEAR_MISSES)
+def test_cleft_near_misses_are_refused_or_give_another_spec(task_id, text):
+    assert_not_the_written_spec(task_id, text)
