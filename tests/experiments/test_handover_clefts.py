@@ -2,8 +2,9 @@
 ...", "what is required is ..."), a pseudo-cleft of an order ("what comes first is the red block"), the last
 step said first ("last of all, X; before that, Y"), a note's group and regions as fragments ("three blocks;
 regions H, I and J; ..."), a pair's bare "swap" after its heading and a block's heading before its order
-("red: before blue"). Each reading gives the written spec; each near miss (an order reversed, a pronoun
-with no one block to stand for, a region left out) is refused or gives another spec."""
+("red: before blue"), bare region letters in a block's steps ("yellow: I first, then G") and "every object
+is used (once)" after a goal for all three. Each reading gives the written spec; each near miss (an order
+reversed, a pronoun with no one block to stand for, a region left out) is refused or gives another spec."""
 
 from __future__ import annotations
 
@@ -11,6 +12,12 @@ import pytest
 from handover_specs import assert_not_the_written_spec, assert_written_spec
 
 READINGS = [
+    (8, "Yellow: I first, then G. Red and blue: any empty region, any time."),
+    (
+        6,
+        "Place the three objects on regions G, H and I, one object per region, and each object is used"
+        " exactly once; red before blue.",
+    ),
     (
         1,
         "What needs to be done is moving the three blocks to the opposite side; what goes first is the red"
@@ -37,6 +44,13 @@ READINGS = [
 ]
 
 NEAR_MISSES = [
+    (8, "Yellow: G first, then I. Red and blue: any empty region, any time."),
+    # "every object is used" with no goal for the three before it says something the reader does not check
+    (
+        6,
+        "Every object is used once. Put the three objects on regions G, H and I, one per region; red before"
+        " blue.",
+    ),
     (
         1,
         "What needs to be done is moving the three blocks to the opposite side; what goes first is the blue"

@@ -68,6 +68,14 @@ def nested_read(text: str) -> str:
     return "\n".join(out)
 
 
+# a goal for all three blocks before: "put the three objects on ...", "all three blocks go to ..."
+_ALL_THREE_PLACED = re.compile(
+    r"\b(?:the|all)\s+(?:three|3)\s+(?:objects|blocks|pillars|items)\b[^.;!?]*?\b(?:on|onto|to|into|in)\s+"
+    r"(?:regions?|the\s+opposite|any\s+empty)\b|\b(?:put|place|move|bring|carry|transfer)\s+(?:the|all)\s+"
+    r"(?:three|3)\s+(?:objects|blocks|pillars|items)\b",
+    re.IGNORECASE,
+)
+
 # clauses said out of their order or joined where a sentence ends: the last step said first ("put yellow
 # back on G after all of this: <the rest>", "after all of that, put yellow back on G; but first <the rest>"
 # are the rest, then the last step) and a verbless goal joined by "and" ("one block per region, and the
@@ -97,6 +105,13 @@ REORDERED = tuple(
             r"(^|:\s*)((?:the\s+|all\s+)?(?:two|three|2|3)\s+(?:blocks|pillars|objects|cubes|items))\s*;\s*"
             r"(regions?\s+[a-j](?:\s*,\s*[a-j])*(?:\s*,?\s*(?:and|or|&)\s+[a-j])?)(?![a-z])",
             r"\1\2 to \3",
+        ),
+        (  # "every object is used (once)" after a goal for all three: every object is placed, which that goal
+            # says already (left unread where no goal before it names the three)
+            r"(\s*[;,]\s*(?:and\s+)?|(?<=[.!?])\s+|^\s*)(?:every|each|all(?:\s+three)?)(?:\s+of\s+the)?\s+"
+            r"(?:objects?|blocks?|pillars?|items?)\s+(?:is|are|gets?)\s+used(?:\s+(?:once|exactly\s+once|one\s+time))?"
+            r"\s*(?:[.!]|(?=[;?]|$))",
+            lambda m: " " if _ALL_THREE_PLACED.search(m.string[: m.start()]) else m[0],
         ),
         (
             r"\s*,\s*and\s+(?=(?:the|all|both)\s+(?:three\s+)?(?:blocks|pillars|objects)\s+(?:on|onto|in|into)\s+"

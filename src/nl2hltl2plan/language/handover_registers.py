@@ -260,6 +260,13 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
         r"(?:the\s+)?(?:red|blue|yellow)\b)",
         r"\1 goes ",
     ),
+    # a block's heading before bare region letters in its steps: "yellow: I first, then G" (after the heading
+    # a letter that opens a step, before "first", "then", a comma or the end, is a region, never "I")
+    (
+        r"^(\s*(?:the\s+)?(?:red|blue|yellow)(?:\s+(?:block|one|cube))?\s*:\s*)([e-j])(\s+first)?\s*,\s*"
+        r"(?:and\s+)?then\s+(?:on\s+to\s+|to\s+)?([e-j])\s*$",
+        lambda m: f"{m[1]}region {m[2]}{m[3] or ''} , then region {m[4]}",
+    ),
     # a pseudo-cleft of an order: "what comes / goes / is placed first is the red block" (the red block comes
     # first: the words the clause would have without the cleft)
     (
