@@ -12,6 +12,16 @@ import pytest
 from handover_specs import assert_not_the_written_spec, assert_written_spec
 
 READINGS = [
+    (
+        7,
+        "Place the three objects on region I one after another, red before blue.\n- Never: place anything on"
+        " regions F, G or H during this period.",
+    ),
+    (
+        4,
+        "Do: move the three blocks to the opposite regions, then put the yellow block back on region G.\nDo"
+        " not: touch the blue block before the red block has been touched.",
+    ),
     (8, "Yellow: I first, then G. Red and blue: any empty region, any time."),
     (
         6,
@@ -44,6 +54,12 @@ READINGS = [
 ]
 
 NEAR_MISSES = [
+    # a prohibition's label over a list negates no item: left unread (never "place the blue block first")
+    (
+        7,
+        "Place the three objects on region I one after another.\nDon't:\n- place anything on regions F, G or"
+        " H during this period\n- place the blue block after the red block",
+    ),
     (8, "Yellow: G first, then I. Red and blue: any empty region, any time."),
     # "every object is used" with no goal for the three before it says something the reader does not check
     (

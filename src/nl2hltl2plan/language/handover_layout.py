@@ -9,6 +9,10 @@
   another"); under a line that ends a sentence ('.', '!', '?') it is a sentence of its own, and under a
   heading (':') it goes on after the colon. An indented item may be lettered or numbered ("   a. on
   regions H, I and J"); one that is a labelled field ("  - order: red before blue") stays a line of its own;
+- a prohibition said as a label with its command on the same line ("Don't: touch the blue block ...",
+  "Never: place ...") is the command negated ("do not touch ..."); a label on a line of its own over a list
+  ("Don'ts:" then "- ...", "- ...") is left as it is, unread: a negation carried into only one item would
+  read the others as commands;
 - clauses said in another order than they happen (`REORDERED`, per line): "after all of this, X; but first,
   Y" and "last of all, X; before that, Y" are "Y; after all of this / last of all, X".
 
@@ -66,6 +70,17 @@ def nested_read(text: str) -> str:
         out.append(line)
         depth.append(indent)
     return "\n".join(out)
+
+
+_PROHIBITION_LABEL = re.compile(
+    r"(?im)^([ \t]*(?:[-*•·][ \t]+)?)(?:do[ \t]*n['’]?t|do[ \t]+not|must[ \t]+not|never)s?[ \t]*:"
+    r"[ \t]*(?=[a-z])"
+)
+
+
+def prohibitions_read(text: str) -> str:
+    """A prohibition's label before its command on the same line is the command negated (module docstring)."""
+    return _PROHIBITION_LABEL.sub(r"\1do not ", text)
 
 
 # a goal for all three blocks before: "put the three objects on ...", "all three blocks go to ..."

@@ -51,7 +51,7 @@ from nl2hltl2plan.language.handover_answers import answered, timing_joined
 from nl2hltl2plan.language.handover_cues import restate
 from nl2hltl2plan.language.handover_discourse import plain
 from nl2hltl2plan.language.handover_goals import Clause, Goal, crossed_exchanges, goal_clauses, lead
-from nl2hltl2plan.language.handover_layout import REORDERED, nested_read, transcript_read
+from nl2hltl2plan.language.handover_layout import REORDERED, nested_read, prohibitions_read, transcript_read
 from nl2hltl2plan.language.handover_phrases import drop_but, mark
 from nl2hltl2plan.language.handover_rules import (
     Prohibition,
@@ -229,7 +229,7 @@ def _sentences(instruction: str) -> list[str]:
     dropped. A heading ending in a colon is joined to the line below it, and a record of labelled fields,
     on lines or in sentences and in either order ('Blocks: ...' and 'Targets: ...'), is read as one goal."""
     out: list[str] = []
-    instruction = nested_read(transcript_read(instruction))
+    instruction = nested_read(transcript_read(prohibitions_read(instruction)))
     # a record of labelled fields, on lines or in sentences, in either order: "Blocks: red, blue, yellow"
     # then "Targets: H, I, J" (or "Regions: G, H and I. Objects: all three.") is one goal
     for record in _RECORDS:
