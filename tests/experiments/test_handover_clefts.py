@@ -2,9 +2,11 @@
 ...", "what is required is ..."), a pseudo-cleft of an order ("what comes first is the red block"), the last
 step said first ("last of all, X; before that, Y"), a note's group and regions as fragments ("three blocks;
 regions H, I and J; ..."), a pair's bare "swap" after its heading and a block's heading before its order
-("red: before blue"), bare region letters in a block's steps ("yellow: I first, then G") and "every object
-is used (once)" after a goal for all three. Each reading gives the written spec; each near miss (an order
-reversed, a pronoun with no one block to stand for, a region left out) is refused or gives another spec."""
+("red: before blue"), bare region letters in a block's steps ("yellow: I first, then G"), "every object is
+used (once)" after a goal for all three, a prohibition said as a label ("Don't: touch ...") and a noun of
+placing after a heading ("three blocks: placement on regions H, I and J"). Each reading gives the written
+spec; each near miss (an order reversed, a pronoun with no one block to stand for, a region left out) is
+refused or gives another spec."""
 
 from __future__ import annotations
 
@@ -12,6 +14,12 @@ import pytest
 from handover_specs import assert_not_the_written_spec, assert_written_spec
 
 READINGS = [
+    (6, "Order: red before blue. The three objects: placement on regions G, H and I, one each."),
+    (
+        8,
+        "Yellow block: transfer to region I, then to region G. Red and blue blocks: delivery to any empty"
+        " region at any time.",
+    ),
     (
         7,
         "Place the three objects on region I one after another, red before blue.\n- Never: place anything on"
@@ -54,6 +62,7 @@ READINGS = [
 ]
 
 NEAR_MISSES = [
+    (6, "Order: red block before blue block. Three objects: placement on regions G, H and J, one each."),
     # a prohibition's label over a list negates no item: left unread (never "place the blue block first")
     (
         7,

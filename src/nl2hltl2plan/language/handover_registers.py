@@ -254,6 +254,13 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     # emphasis
     (r"\s*,?\s*\b(?:no\s+exceptions|without\s+exception)\b", " "),
     (r"(\bthen\b[^,;()]*?)\s*(?:,\s*)?(?:\(\s*)?\bin\s+(?:that|this|the\s+same)\s+order\b(?:\s*\))?", r"\1"),
+    # a noun of placing after a heading, before its place: "three blocks: placement on regions H, I and J",
+    # "yellow block: transfer to region I, then ..." (the heading's blocks go there: "three blocks: on ...")
+    (
+        r"(:\s*)(?:placement|transfer|relocation|delivery|movement|move|positioning|transport)\s+"
+        r"(?=(?:on|onto|to|into|in)\s)",
+        r"\1",
+    ),
     # a block's heading before its order: "red: before blue" (the red block goes before the blue block)
     (
         r"^\s*((?:the\s+)?(?:red|blue|yellow)(?:\s+(?:block|one|cube))?)\s*:\s*(?=(?:before|after|ahead\s+of)\s+"
