@@ -3,8 +3,9 @@
 step said first ("last of all, X; before that, Y"), a note's group and regions as fragments ("three blocks;
 regions H, I and J; ..."), a pair's bare "swap" after its heading and a block's heading before its order
 ("red: before blue"), bare region letters in a block's steps ("yellow: I first, then G"), "every object is
-used (once)" after a goal for all three, a prohibition said as a label ("Don't: touch ...") and a noun of
-placing after a heading ("three blocks: placement on regions H, I and J"). Each reading gives the written
+used (once)" after a goal for all three, a prohibition said as a label ("Don't: touch ..."), a noun of
+placing after a heading ("three blocks: placement on regions H, I and J") and a block's heading before its
+time alone ("Yellow: whenever"). Each reading gives the written
 spec; each near miss (an order reversed, a pronoun with no one block to stand for, a region left out) is
 refused or gives another spec."""
 
@@ -14,6 +15,11 @@ import pytest
 from handover_specs import assert_not_the_written_spec, assert_written_spec
 
 READINGS = [
+    (
+        5,
+        "Swap the red and blue blocks, red first. Move the yellow block to the opposite side. Yellow:"
+        " whenever.",
+    ),
     (6, "Order: red before blue. The three objects: placement on regions G, H and I, one each."),
     (
         8,
@@ -62,6 +68,11 @@ READINGS = [
 ]
 
 NEAR_MISSES = [
+    # a time for a block whose goal is not the clause before it: left unread
+    (
+        5,
+        "Swap the red and blue blocks, red first. Move the yellow block to the opposite side. Red: whenever.",
+    ),
     (6, "Order: red block before blue block. Three objects: placement on regions G, H and J, one each."),
     # a prohibition's label over a list negates no item: left unread (never "place the blue block first")
     (
