@@ -62,6 +62,18 @@ READINGS = [
 ]
 
 NEAR_MISSES = [
+    # an aside that says another order, a negation or an exception is still read, and refused or kept apart
+    (1, "Move all three blocks (blue first) to the opposite side; red before blue."),
+    (
+        6,
+        "Put the three objects (except the red block) on regions G, H and I, one per region; red before"
+        " blue.",
+    ),
+    (
+        8,
+        "Put the yellow block on region I (then on region G), and move the red and blue blocks (never) to any"
+        " empty region.",
+    ),
     # a greeting's name that the reader reads as a block is no greeting
     (
         3,
