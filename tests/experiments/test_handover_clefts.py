@@ -4,8 +4,9 @@ step said first ("last of all, X; before that, Y"), a note's group and regions a
 regions H, I and J; ..."), a pair's bare "swap" after its heading and a block's heading before its order
 ("red: before blue"), bare region letters in a block's steps ("yellow: I first, then G"), "every object is
 used (once)" after a goal for all three, a prohibition said as a label ("Don't: touch ..."), a noun of
-placing after a heading ("three blocks: placement on regions H, I and J") and a block's heading before its
-time alone ("Yellow: whenever"). Each reading gives the written
+placing after a heading ("three blocks: placement on regions H, I and J"), a block's heading before its
+time alone ("Yellow: whenever"), a step with no place over the items that say where ("1. Move the
+blocks." then "   - All three go to the opposite side."). Each reading gives the written
 spec; each near miss (an order reversed, a pronoun with no one block to stand for, a region left out) is
 refused or gives another spec."""
 
@@ -15,6 +16,7 @@ import pytest
 from handover_specs import assert_not_the_written_spec, assert_written_spec
 
 READINGS = [
+    (1, "1. Move the blocks.\n   - All three go to the opposite side.\n   - Red is placed before blue."),
     (
         5,
         "Swap the red and blue blocks, red first. Move the yellow block to the opposite side. Yellow:"
@@ -68,6 +70,8 @@ READINGS = [
 ]
 
 NEAR_MISSES = [
+    # a step with no place followed by steps of its own level (not items under it) is no heading: unread
+    (1, "1. Move the blocks.\n2. All three go to the opposite side.\n3. Red is placed before blue."),
     # a time for a block whose goal is not the clause before it: left unread
     (
         5,

@@ -7,7 +7,8 @@
 - a nested list: an indented bullet under a line goes on with that line, after a comma ("- the three
   blocks -> region I" and under it "  - one after another": "the three blocks -> region I, one after
   another"); under a line that ends a sentence ('.', '!', '?') it is a sentence of its own, and under a
-  heading (':') it goes on after the colon. An indented item may be lettered or numbered ("   a. on
+  heading (':') it goes on after the colon; a step that names no place ("1. Move the blocks.") over items is
+  their heading. An indented item may be lettered or numbered ("   a. on
   regions H, I and J"); one that is a labelled field ("  - order: red before blue") stays a line of its own;
 - a prohibition said as a label with its command on the same line ("Don't: touch the blue block ...",
   "Never: place ...") is the command negated ("do not touch ..."); a label on a line of its own over a list
@@ -34,6 +35,12 @@ _STAMP = re.compile(
 )
 _TAG = re.compile(r"^\s*([A-Z][A-Za-z.']*(?:\s+[A-Z][A-Za-z.']*)?)\s*:\s+(?=\S)")
 _BULLET = re.compile(r"^([ \t]*)(?:[-*•·]|(?<=\s)[a-z0-9][.)])\s+(.*)$")
+# a step that names a verb and a group but no place, ended by a full stop ("1. Move the blocks."): over
+# indented items it is their heading, as "Move the blocks:" is
+_PLACELESS_STEP = re.compile(
+    r"(?i)^\s*(?:(?:\d+|[a-z])[.)]\s+|[-*•·]\s+)?(?:move|put|place|transfer|bring|carry|take|relocate|shift)\s+"
+    r"(?:the\s+|all\s+(?:the\s+)?)?(?:three\s+|3\s+)?(?:blocks|objects|pillars|items|cubes)\s*\.$"
+)
 _FIELD = re.compile(r"^[A-Za-z][\w ]{0,20}:\s")  # a labelled field ("order: red first"): a line of its own
 
 
@@ -66,6 +73,9 @@ def nested_read(text: str) -> str:
             parent = out[-1].rstrip()
             if not parent.endswith((".", "!", "?")):
                 out[-1] = f"{parent} {bullet[2]}" if parent.endswith(":") else f"{parent}, {bullet[2]}"
+                continue
+            if _PLACELESS_STEP.match(parent):  # "1. Move the blocks." over items: a heading
+                out[-1] = f"{parent[:-1]}: {bullet[2]}"
                 continue
         out.append(line)
         depth.append(indent)
