@@ -16,6 +16,12 @@ import pytest
 from handover_specs import assert_not_the_written_spec, assert_written_spec
 
 READINGS = [
+    # "have X go down before Y" is X's placing before Y's, never its pick-up (`dev73`'s one misreading)
+    (
+        6,
+        "Get the three objects onto regions G, H and I, one per region, and have the red block go down"
+        " before the blue block.",
+    ),
     (1, "1. Move the blocks.\n   - All three go to the opposite side.\n   - Red is placed before blue."),
     (
         5,
@@ -70,6 +76,11 @@ READINGS = [
 ]
 
 NEAR_MISSES = [
+    (
+        6,
+        "Get the three objects onto regions G, H and I, one per region, and have the blue block go down"
+        " before the red block.",
+    ),
     # a step with no place followed by steps of its own level (not items under it) is no heading: unread
     (1, "1. Move the blocks.\n2. All three go to the opposite side.\n3. Red is placed before blue."),
     # a time for a block whose goal is not the clause before it: left unread
