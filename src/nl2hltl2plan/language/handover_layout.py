@@ -8,8 +8,8 @@
   blocks -> region I" and under it "  - one after another": "the three blocks -> region I, one after
   another"); under a line that ends a sentence ('.', '!', '?') it is a sentence of its own, and under a
   heading (':') it goes on after the colon; a step that names no place ("1. Move the blocks.") over items is
-  their heading. An indented item may be lettered or numbered ("   a. on
-  regions H, I and J"); one that is a labelled field ("  - order: red before blue") stays a line of its own;
+  their heading. An indented item may be lettered or numbered ("   a. on regions H, I and J"); one that is
+  a labelled field ("  - order: red before blue") stays a line of its own;
 - a prohibition said as a label with its command on the same line ("Don't: touch the blue block ...",
   "Never: place ...") is the command negated ("do not touch ..."); a label on a line of its own over a list
   ("Don'ts:" then "- ...", "- ...") is left as it is, unread: a negation carried into only one item would

@@ -11,6 +11,10 @@ the word tables' `REWRITES`). Each rewrite changes no meaning:
 - telegraphic and bulleted: "three objects, three regions: G, H and I" (the regions' count is still
   checked), a pair before its exchange ("red and blue: swap places");
 - emphasis: "no exceptions";
+- headings: a noun of placing after a heading ("three blocks: placement on regions H, I and J"), a block's
+  heading before its order ("red: before blue") or before bare region letters ("yellow: I first, then G"),
+  a pair's bare "swap" ("red and blue: swap"); a pseudo-cleft of an order ("what comes first is the red
+  block": the red block comes first);
 - "in that order" after a clause that already orders its steps with "then" repeats that order and is
   dropped (without "then" it stays unread: which order?); asides in parentheses are read before these
   rewrites, by `handover_asides`;

@@ -242,7 +242,7 @@ _WISH_GO = re.compile(
 def _go_as_command(match: re.Match[str]) -> str:
     """ "have X go to P" is "move X to P"; "have X go down / first / before Y" is "X must go down ...": its
     going down is its placing, never its pick-up ("move X before Y" says which block moves first)."""
-    if _GO_WHEN.match(match.string, match.end()):
+    if not match[0].rstrip().endswith("move") and _GO_WHEN.match(match.string, match.end()):
         return f"{match[1]} {match[2]} must go"
     return f"{match[1]} move {match[2]}"
 
