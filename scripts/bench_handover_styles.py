@@ -3,7 +3,7 @@ eight Table III instructions must give the written specs).
 
     PYTHONPATH=src python scripts/bench_handover_styles.py [--batch NAME] [--verbose] [--file F]
     (NAME: a batch of the file: dev, dev2 ... dev44, dev50 ... dev54, validation, validation2 ...
-    validation16, dev64 ... dev69, or 'all' for a row per batch; default dev)
+    validation17, dev64 ... dev69, dev70 ..., or 'all' for a row per batch; default dev)
     (default F: tests/experiments/handover_styles_session10.json)
 
 Each sentence of the batch is read on instance 0 of its task (`translate`, offline) and judged against the

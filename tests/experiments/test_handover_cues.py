@@ -152,7 +152,7 @@ def test_development_batches_give_the_written_specs(batch, style):
     ("batch", "style"),
     [
         (b, s)
-        for b in (f"dev{k}" for k in (39, 40, 41, 42, 43, 44, 50, 51, 52, 53, 54, *range(60, 70)))
+        for b in (f"dev{k}" for k in (39, 40, 41, 42, 43, 44, 50, 51, 52, 53, 54, *range(60, 74)))
         for s in sorted(STYLES[b])
     ],
 )
@@ -163,11 +163,11 @@ def test_later_development_batches_are_read_right_or_refused(batch, style):
 
 @pytest.mark.parametrize(
     ("batch", "style"),
-    [(b, s) for b in (f"validation{k}" for k in (13, 14, 15, 16)) for s in sorted(STYLES[b])],
+    [(b, s) for b in (f"validation{k}" for k in (13, 14, 15, 16, 17)) for s in sorted(STYLES[b])],
 )
 def test_held_out_batches_are_read_right_or_refused(batch, style):
-    """h78's, h82's, h86's and h93's held-out batches, each measured at first contact and at the end of its
-    round."""
+    """h78's, h82's, h86's, h93's and h95's held-out batches, each measured at first contact and at the end
+    of its round."""
     for task, text in STYLES[batch][style].items():
         assert_written_spec_or_refused(int(task), text)
 

@@ -349,6 +349,8 @@ def test_a_sub_item_goes_on_with_its_line_unless_that_line_has_ended_or_it_is_a_
         nested_read("- the blocks\n  - to H\n  - one each\n- red first")
         == "- the blocks, to H, one each\n- red first"
     )
-    assert nested_read("- Move the blocks.\n  - All to H.") == "- Move the blocks.\n  - All to H."
+    assert nested_read("- Move the blocks to H.\n  - Red first.") == "- Move the blocks to H.\n  - Red first."
+    # (h95) a step that names no place, ended by a full stop, is the heading of the items under it
+    assert nested_read("- Move the blocks.\n  - All to H.") == "- Move the blocks: All to H."
     assert nested_read("Steps:\n  - move all to H") == "Steps: move all to H"
     assert nested_read("- the blocks to H\n  - order: red first") == "- the blocks to H\n  - order: red first"

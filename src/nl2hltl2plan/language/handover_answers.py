@@ -125,6 +125,8 @@ _TIMING = (
         rf"(?i)^\s*(?:and\s+|also\s+)?(?P<blocks>{_BLOCKS})\s+(?:has|have)\s+no\s+(?:time|timing)\s+"
         r"(?:constraints?|restrictions?)\s*$"
     ),
+    # a block's heading before its time alone: "Yellow block: any time", "yellow: whenever"
+    re.compile(rf"(?i)^\s*(?:[-*•·]\s+)?(?P<blocks>{_BLOCKS})\s*:\s*{_ANY_TIME}\s*$"),
 )
 # where the last clause of a sentence starts: a comma or semicolon, or "and" / "then" before a verb
 _CLAUSE_BREAK = re.compile(rf"(?i)[,;]|\b(?:and|then)\s+(?=(?:then\s+)?{VERB}\b)")

@@ -63,7 +63,12 @@ _PHRASES: tuple[tuple[str, str], ...] = (
     # framing said around the content is a modal: "the idea is to move X" is "move X", "what matters is that
     # red is placed before blue" is "red must be placed before blue" ("it is required that" is a rewrite)
     (r"(?:the|my|our) (?:idea|plan|aim|intention) (?:here )?is (?:to|that)|"
-     r"what (?:i|we) (?:need|want) is(?: for| that)?|what (?:matters|counts) is(?: that)?", "must"),
+     r"what (?:i|we) (?:need|want) is(?: for| that)?|what (?:matters|counts) is(?: that)?|"
+     # a pseudo-cleft's head of any wish, need or task: "what needs doing / needs to be done / has to happen
+     # / is needed / you (need to) do / I'd like is X" says X is to be done
+     r"what (?:(?:needs|has|have) (?:doing|to (?:be done|happen))|(?:must|should|will) (?:be done|happen)|"
+     r"is (?:needed|required|wanted)|(?:i|we) (?:would|d) like|(?:i|we) (?:am|are) after|"
+     r"you (?:(?:need|have|ought) to |must |should |will |are to |re to )?do) is(?: for| that| to)?", "must"),
     (r"(?:it is )?(?:forbidden|prohibited|not (?:allowed|permitted))(?: to)?", "NEG"),  # a prohibition
     (r"(?:empty|free|clear) of(?: new| any| other)?", "CLEAR"),  # "empty of new objects": of every block
     (r"any objects?", "ANY"),  # "it is forbidden to place any object on ...": with a negation, no object

@@ -202,7 +202,7 @@ _HESITATION = re.compile(HESITATION)  # "um", "uh", "er", "hmm": the shared list
 # a voice assistant or a person called by name after a greeting or an acknowledgement ("Hey Google", "OK
 # Kim"), who passes the command on: "Alexa, tell the arms to ...", "ask the robots to ...", "have the arms
 # ..." (a name called alone, "Siri, swap ...", may be a word the reader does not know: left unread)
-_CALL_WORD = re.compile(r"(?i)^\s*(?:hey|hi|hello|yo|ok|okay)\s+(\S+)\s*$")
+_CALL_WORD = re.compile(r"(?i)^\s*(?:hey|hi|hello|yo|ok|okay|dear)\s+(\S+)\s*$")
 _RELAYED = re.compile(
     r"(?i)^\s*(?:(?P<name>[A-Za-z]+)\s*,\s*)?(?:please\s+)?(?:tell|ask|instruct|get|have)\s+(?:the|all|our)\s+"
     r"(?:robot\s+)?(?:arms|robots|team)\s+(?:(?P<not>not\s+)?to\s+)?(?=[a-z])"
@@ -445,6 +445,8 @@ def plain(sentences: list[str]) -> list[str]:
     out = []
     for k, sentence in enumerate(_unsigned(sentences)):
         if empty(sentence, whole=True, header=k == 0) or _START_SIGNAL.match(sentence):
+            continue
+        if k == 0 and _called(sentence.rstrip(" ,.!:")):  # a letter's greeting on its own: "Dear Sam,"
             continue
         text = _unframed_sentence(sentence, header=k == 0)
         text = _unframed_sentence(first_person_as_team(unreported(text)), header=k == 0)

@@ -7,8 +7,15 @@
 - a nested list: an indented bullet under a line goes on with that line, after a comma ("- the three
   blocks -> region I" and under it "  - one after another": "the three blocks -> region I, one after
   another"); under a line that ends a sentence ('.', '!', '?') it is a sentence of its own, and under a
-  heading (':') it goes on after the colon. An indented item may be lettered or numbered ("   a. on
-  regions H, I and J"); one that is a labelled field ("  - order: red before blue") stays a line of its own.
+  heading (':') it goes on after the colon; a step that names no place ("1. Move the blocks.") over items is
+  their heading. An indented item may be lettered or numbered ("   a. on regions H, I and J"); one that is
+  a labelled field ("  - order: red before blue") stays a line of its own;
+- a prohibition said as a label with its command on the same line ("Don't: touch the blue block ...",
+  "Never: place ...") is the command negated ("do not touch ..."); a label on a line of its own over a list
+  ("Don'ts:" then "- ...", "- ...") is left as it is, unread: a negation carried into only one item would
+  read the others as commands;
+- clauses said in another order than they happen (`REORDERED`, per line): "after all of this, X; but first,
+  Y" and "last of all, X; before that, Y" are "Y; after all of this / last of all, X".
 
     >>> transcript_read("[09:02] Dana: red first.\\n[09:03] Dana: blue last.")
     'red first.\\nblue last.'
@@ -28,6 +35,12 @@ _STAMP = re.compile(
 )
 _TAG = re.compile(r"^\s*([A-Z][A-Za-z.']*(?:\s+[A-Z][A-Za-z.']*)?)\s*:\s+(?=\S)")
 _BULLET = re.compile(r"^([ \t]*)(?:[-*•·]|(?<=\s)[a-z0-9][.)])\s+(.*)$")
+# a step that names a verb and a group but no place, ended by a full stop ("1. Move the blocks."): over
+# indented items it is their heading, as "Move the blocks:" is
+_PLACELESS_STEP = re.compile(
+    r"(?i)^\s*(?:(?:\d+|[a-z])[.)]\s+|[-*•·]\s+)?(?:move|put|place|transfer|bring|carry|take|relocate|shift)\s+"
+    r"(?:the\s+|all\s+(?:the\s+)?)?(?:three\s+|3\s+)?(?:blocks|objects|pillars|items|cubes)\s*\.$"
+)
 _FIELD = re.compile(r"^[A-Za-z][\w ]{0,20}:\s")  # a labelled field ("order: red first"): a line of its own
 
 
@@ -61,6 +74,90 @@ def nested_read(text: str) -> str:
             if not parent.endswith((".", "!", "?")):
                 out[-1] = f"{parent} {bullet[2]}" if parent.endswith(":") else f"{parent}, {bullet[2]}"
                 continue
+            if _PLACELESS_STEP.match(parent):  # "1. Move the blocks." over items: a heading
+                out[-1] = f"{parent[:-1]}: {bullet[2]}"
+                continue
         out.append(line)
         depth.append(indent)
     return "\n".join(out)
+
+
+_PROHIBITION_LABEL = re.compile(
+    r"(?im)^([ \t]*(?:[-*•·][ \t]+)?)(?:do[ \t]*n['’]?t|do[ \t]+not|must[ \t]+not|never)s?[ \t]*:"
+    r"[ \t]*(?=[a-z])"
+)
+
+
+def prohibitions_read(text: str) -> str:
+    """A prohibition's label before its command on the same line is the command negated (module docstring)."""
+    return _PROHIBITION_LABEL.sub(r"\1do not ", text)
+
+
+# a goal for all three blocks before: "put the three objects on ...", "all three blocks go to ..."
+_ALL_THREE_PLACED = re.compile(
+    r"\b(?:the|all)\s+(?:three|3)\s+(?:objects|blocks|pillars|items)\b[^.;!?]*?\b(?:on|onto|to|into|in)\s+"
+    r"(?:regions?|the\s+opposite|any\s+empty)\b|\b(?:put|place|move|bring|carry|transfer)\s+(?:the|all)\s+"
+    r"(?:three|3)\s+(?:objects|blocks|pillars|items)\b",
+    re.IGNORECASE,
+)
+
+# clauses said out of their order or joined where a sentence ends: the last step said first ("put yellow
+# back on G after all of this: <the rest>", "after all of that, put yellow back on G; but first <the rest>"
+# are the rest, then the last step) and a verbless goal joined by "and" ("one block per region, and the
+# three blocks on regions H, I and J": the goal said alone, as after a semicolon)
+REORDERED = tuple(
+    (re.compile(pattern, re.IGNORECASE), replacement)
+    for pattern, replacement in (
+        (  # one command, then its time: not "<steps> / after all of that: <last step>"
+            r"^\s*((?:put|place|move|return|bring|set)\b[^:;.,/]+?)\s+"
+            r"(after\s+all\s+(?:of\s+)?(?:this|that|these|the\s+above))\s*:\s*(.+)$",
+            r"\3; \2, \1",
+        ),
+        (
+            r"^\s*(after\s+all\s+(?:of\s+)?(?:this|that|these))\s*,\s*([^;:.]+?)\s*;\s*but\s+first\s*,?\s*(.+)$",
+            r"\3; \1, \2",
+        ),
+        (  # the last step said first, then what comes before it: "last of all, X; before that, Y" is "Y;
+            # last of all, X" ("last" alone: "after that"); "it" opening Y is X's one block ("Last, the yellow
+            # block goes to G; before that, it goes to I"), other pronouns are left unread
+            r"(^|[.!?]\s+)(last\s+of\s+all|lastly|last|finally|at\s+the\s+(?:very\s+)?end)\s*,\s*"
+            r"([^;:.!?]+?)\s*;\s*before\s+(?:that|this|then|it)\s*,?\s*(?!(?:they|them|its|their)\b)"
+            r"([^;:.!?]+?)\s*(?=[.!?]|$)",
+            lambda m: _last_said_first(m[1], m[2], m[3], m[4]),
+        ),
+        (  # a note's group, then its regions, as fragments: "three blocks; regions H, I and J; ..." (the
+            # group goes to those regions)
+            r"(^|:\s*)((?:the\s+|all\s+)?(?:two|three|2|3)\s+(?:blocks|pillars|objects|cubes|items))\s*;\s*"
+            r"(regions?\s+[a-j](?:\s*,\s*[a-j])*(?:\s*,?\s*(?:and|or|&)\s+[a-j])?)(?![a-z])",
+            r"\1\2 to \3",
+        ),
+        (  # "every object is used (once)" after a goal for all three: every object is placed, which that goal
+            # says already (left unread where no goal before it names the three)
+            r"(\s*[;,]\s*(?:and\s+)?|(?<=[.!?])\s+|^\s*)(?:every|each|all(?:\s+three)?)(?:\s+of\s+the)?\s+"
+            r"(?:objects?|blocks?|pillars?|items?)\s+(?:is|are|gets?)\s+used(?:\s+(?:once|exactly\s+once|one\s+time))?"
+            r"\s*(?:[.!]|(?=[;?]|$))",
+            lambda m: " " if _ALL_THREE_PLACED.search(m.string[: m.start()]) else m[0],
+        ),
+        (
+            r"\s*,\s*and\s+(?=(?:the|all|both)\s+(?:three\s+)?(?:blocks|pillars|objects)\s+(?:on|onto|in|into)\s+"
+            r"(?:regions?\s+)?[e-j]\b)",
+            "; ",
+        ),
+    )
+)
+
+
+_ONE_BLOCK = re.compile(
+    r"^\s*((?:the\s+)?(?:red|blue|yellow)(?:\s+(?:block|cube|one))?)\b(?!\s+(?:and|&|or)\b)", re.IGNORECASE
+)
+
+
+def _last_said_first(start: str, last: str, step: str, before: str) -> str:
+    """'Y; last of all, X' for 'last of all, X; before that, Y' (see `REORDERED`), or the words as they
+    were where Y's "it" has no one block in X to stand for."""
+    if re.match(r"it\b", before, re.I):
+        block = _ONE_BLOCK.match(step)
+        if block is None:
+            return f"{start}{last}, {step}; before that, {before}"
+        before = block[1] + before[2:]
+    return f"{start}{before}; {'after that' if last.lower() == 'last' else last}, {step}"

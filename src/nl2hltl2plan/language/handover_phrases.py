@@ -24,6 +24,7 @@ import re
 from functools import partial
 
 from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.language.handover_asides import read_asides
 from nl2hltl2plan.language.handover_clauses import read_statements
 from nl2hltl2plan.language.handover_discourse import MEANING
 from nl2hltl2plan.language.handover_places import (
@@ -74,6 +75,7 @@ def normalise(sentence: str) -> str:
     text = re.sub(r"\b(?:all|the)\s+(?:four|4)\s+(?:of\s+the\s+)?(?=(?:robot\s+)?arms\b)", "the ", text)
     text = re.sub(r"\barms\s+a\s*,\s*b\s*,\s*c\s*,?\s*and\s+d\b", "the arms", text)
     text = _DASH.sub(lambda dash: _dash_as_comma(text, dash), text)
+    text = read_asides(text)
     text = re.sub(r"([,()/:])", r" \1 ", text)
     text = re.sub(r"\b(\w+)'s\b", r"\1 s", text)  # red's -> red s (a possessive)
     text = re.sub(r"[a-z]+", lambda w: TYPOS.get(w.group(0), w.group(0)), text)

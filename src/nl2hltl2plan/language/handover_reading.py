@@ -51,7 +51,7 @@ from nl2hltl2plan.language.handover_answers import answered, timing_joined
 from nl2hltl2plan.language.handover_cues import restate
 from nl2hltl2plan.language.handover_discourse import plain
 from nl2hltl2plan.language.handover_goals import Clause, Goal, crossed_exchanges, goal_clauses, lead
-from nl2hltl2plan.language.handover_layout import nested_read, transcript_read
+from nl2hltl2plan.language.handover_layout import REORDERED, nested_read, prohibitions_read, transcript_read
 from nl2hltl2plan.language.handover_phrases import drop_but, mark
 from nl2hltl2plan.language.handover_rules import (
     Prohibition,
@@ -223,38 +223,13 @@ def _pictograph(c: str) -> bool:
     return ord(c) > 0x7F and unicodedata.category(c) in ("So", "Sk")  # not "^" or "`" (ASCII, class Sk)
 
 
-# clauses said out of their order or joined where a sentence ends: the last step said first ("put yellow
-# back on G after all of this: <the rest>", "after all of that, put yellow back on G; but first <the rest>"
-# are the rest, then the last step) and a verbless goal joined by "and" ("one block per region, and the
-# three blocks on regions H, I and J": the goal said alone, as after a semicolon)
-_REORDERED = tuple(
-    (re.compile(pattern, re.IGNORECASE), replacement)
-    for pattern, replacement in (
-        (  # one command, then its time: not "<steps> / after all of that: <last step>"
-            r"^\s*((?:put|place|move|return|bring|set)\b[^:;.,/]+?)\s+"
-            r"(after\s+all\s+(?:of\s+)?(?:this|that|these|the\s+above))\s*:\s*(.+)$",
-            r"\3; \2, \1",
-        ),
-        (
-            r"^\s*(after\s+all\s+(?:of\s+)?(?:this|that|these))\s*,\s*([^;:.]+?)\s*;\s*but\s+first\s*,?\s*(.+)$",
-            r"\3; \1, \2",
-        ),
-        (
-            r"\s*,\s*and\s+(?=(?:the|all|both)\s+(?:three\s+)?(?:blocks|pillars|objects)\s+(?:on|onto|in|into)\s+"
-            r"(?:regions?\s+)?[e-j]\b)",
-            "; ",
-        ),
-    )
-)
-
-
 def _sentences(instruction: str) -> list[str]:
     """Split at line breaks (a list of steps or bullets), '.', ';', '!' and '?', but not in 'i.e.' nor after a
     step's number ('1. Put ...', also after a colon); a bullet ('-', '*', '•') starting a line or sentence is
     dropped. A heading ending in a colon is joined to the line below it, and a record of labelled fields,
     on lines or in sentences and in either order ('Blocks: ...' and 'Targets: ...'), is read as one goal."""
     out: list[str] = []
-    instruction = nested_read(transcript_read(instruction))
+    instruction = nested_read(transcript_read(prohibitions_read(instruction)))
     # a record of labelled fields, on lines or in sentences, in either order: "Blocks: red, blue, yellow"
     # then "Targets: H, I, J" (or "Regions: G, H and I. Objects: all three.") is one goal
     for record in _RECORDS:
@@ -275,7 +250,7 @@ def _sentences(instruction: str) -> list[str]:
         # an open checklist box is a bullet (a ticked one says what is done, and is left unread)
         text = re.sub(r"^\s*(?:\[\s*\]|☐)\s*", "- ", text)
         text = _slashes_read(_without_emoji_and_tags(text))
-        for pattern, replacement in _REORDERED:
+        for pattern, replacement in REORDERED:
             text = pattern.sub(replacement, text)
         out += [re.sub(r"^\s*[-*•·]\s+", "", s) for s in re.split(r"[.;!?]+(?:\s|$)", text)]
     return _without_announcement([s for s in out if s.strip()])

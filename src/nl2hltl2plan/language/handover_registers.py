@@ -11,10 +11,13 @@ the word tables' `REWRITES`). Each rewrite changes no meaning:
 - telegraphic and bulleted: "three objects, three regions: G, H and I" (the regions' count is still
   checked), a pair before its exchange ("red and blue: swap places");
 - emphasis: "no exceptions";
-- asides: a timing or order remark in parentheses ("(at any time)", "(whenever)", "(one after another, red
-  before blue)", "(in any order)") is set off by commas instead, so it attaches to the clause before it as
-  the same words after a comma do; "in that order" after a clause that already orders its steps with
-  "then" repeats that order and is dropped (without "then" it stays unread: which order?);
+- headings: a noun of placing after a heading ("three blocks: placement on regions H, I and J"), a block's
+  heading before its order ("red: before blue") or before bare region letters ("yellow: I first, then G"),
+  a pair's bare "swap" ("red and blue: swap"); a pseudo-cleft of an order ("what comes first is the red
+  block": the red block comes first);
+- "in that order" after a clause that already orders its steps with "then" repeats that order and is
+  dropped (without "then" it stays unread: which order?); asides in parentheses are read before these
+  rewrites, by `handover_asides`;
 - modal "is to" before a verb of holding ("each region is to hold only one block": must hold);
 - frames: a user story's role ("As the operator, ..."), a requirement's identifier ("R1:"),
   office English ("kindly", "do the needful", an emphatic "itself");
@@ -72,12 +75,6 @@ _SUBJECT_NP = (
 )
 _BARE_VERB = r"(?:go|be|hold|come|stay|remain|land|end\s+up|sit|get)"
 _LETTERS = r"[e-j](?:\s*(?:,|and|or)\s*[e-j])*"
-# one timing or order remark: "at any time", "whenever", "one after another", "red before blue", "red first"
-_REMARK = (
-    r"(?:(?:at\s+)?any\s*time|at\s+any\s+(?:point|moment)|whenever|in\s+any\s+order|one\s+(?:after|by)\s+"
-    r"(?:another|the\s+other|one)|one\s+at\s+a\s+time|in\s+turn|"
-    rf"{_BLOCK}\s+(?:(?:goes|placed|put|comes)\s+)?(?:before|after)\s+{_BLOCK}|{_BLOCK}\s+(?:(?:goes|placed|put)\s+)?first)"
-)
 
 def _letters_between(match: re.Match[str]) -> str:
     """'regions h through j' -> 'regions h , i and j' (a range the wrong way round is left as written)."""
@@ -255,14 +252,39 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     ),
     (
         r"^\s*((?:the\s+)?(?:red|blue|yellow)\s+(?:and|&)\s+(?:the\s+)?(?:red|blue|yellow)(?:\s+(?:blocks|ones))?)\s*:\s*"
-        rf"{SWAP}\s+(?:(?:their|the)\s+)?(?:places|positions|spots)\b",
+        rf"{SWAP}(?:\s+(?:(?:their|the)\s+)?(?:places|positions|spots)\b|(?=\s*(?:[.;,!?]|$)))",
         r"swap \1",
     ),
     # emphasis
     (r"\s*,?\s*\b(?:no\s+exceptions|without\s+exception)\b", " "),
-    # asides: a parenthesised timing or order remark reads as one set off by commas
-    (rf"\(\s*({_REMARK}(?:\s*(?:,|and)\s*{_REMARK})*)\s*\)", r", \1 ,"),
     (r"(\bthen\b[^,;()]*?)\s*(?:,\s*)?(?:\(\s*)?\bin\s+(?:that|this|the\s+same)\s+order\b(?:\s*\))?", r"\1"),
+    # a noun of placing after a heading, before its place: "three blocks: placement on regions H, I and J",
+    # "yellow block: transfer to region I, then ..." (the heading's blocks go there: "three blocks: on ...")
+    (
+        r"(:\s*)(?:placement|transfer|relocation|delivery|movement|move|positioning|transport)\s+"
+        r"(?=(?:on|onto|to|into|in)\s)",
+        r"\1",
+    ),
+    # a block's heading before its order: "red: before blue" (the red block goes before the blue block)
+    (
+        r"^\s*((?:the\s+)?(?:red|blue|yellow)(?:\s+(?:block|one|cube))?)\s*:\s*(?=(?:before|after|ahead\s+of)\s+"
+        r"(?:the\s+)?(?:red|blue|yellow)\b)",
+        r"\1 goes ",
+    ),
+    # a block's heading before bare region letters in its steps: "yellow: I first, then G" (after the heading
+    # a letter that opens a step, before "first", "then", a comma or the end, is a region, never "I")
+    (
+        r"^(\s*(?:the\s+)?(?:red|blue|yellow)(?:\s+(?:block|one|cube))?\s*:\s*)([e-j])(\s+first)?\s*,\s*"
+        r"(?:and\s+)?then\s+(?:on\s+to\s+|to\s+)?([e-j])\s*$",
+        lambda m: f"{m[1]}region {m[2]}{m[3] or ''} , then region {m[4]}",
+    ),
+    # a pseudo-cleft of an order: "what comes / goes / is placed first is the red block" (the red block comes
+    # first: the words the clause would have without the cleft)
+    (
+        r"\bwhat\s+(comes|goes|is\s+placed|gets\s+placed|is\s+put)\s+(first|last|next)\s+is\s+"
+        r"((?:the\s+)?(?:red|blue|yellow)(?:\s+(?:block|one|object|cube))?)\b",
+        r"\3 \1 \2",
+    ),
     # modal "is to" before a verb of holding
     # ("is to take the pillars ..." is a goal: "take" and "carry" hold only before a count of one)
     (

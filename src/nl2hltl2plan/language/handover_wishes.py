@@ -239,6 +239,17 @@ _WISH_GO = re.compile(
 )
 
 
+def _go_as_command(match: re.Match[str]) -> str:
+    """ "have X go to P" is "move X to P"; "have X go down / first / before Y" is "X must go down ...": its
+    going down is its placing, never its pick-up ("move X before Y" says which block moves first)."""
+    if not match[0].rstrip().endswith("move") and _GO_WHEN.match(match.string, match.end()):
+        return f"{match[1]} {match[2]} must go"
+    return f"{match[1]} move {match[2]}"
+
+
+_GO_WHEN = re.compile(r"\s+(?:down|first|last|before|after|ahead|earlier|later|next)\b")
+
+
 def _as_command(match: re.Match[str]) -> str:
     return f"{match[1]} {_PARTICIPLES[match[3]]} {match[2]}"
 
@@ -264,7 +275,7 @@ def unwished(text: str) -> str:
     text = _MAY_I_ASK.sub(lambda m: f"{m[1]} it is requested that" if m[2] == "that" else f"{m[1]} ", text)
     text = _WISH_VERB.sub(r"\1 ", text)
     text = _WISH_PARTICIPLE.sub(_as_command, text)
-    text = _WISH_GO.sub(r"\1 move \2", text)
+    text = _WISH_GO.sub(_go_as_command, text)
     text, wishes = _PAST_WISH.subn(_past_as_command, text)
     if wishes:
         text = _AND_WENT.sub(r"\1 move \2", text)
