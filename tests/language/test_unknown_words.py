@@ -85,3 +85,20 @@ def test_a_casual_placing_verb_is_a_placing(verb):
     """The learned stage reads the clause the grammar leaves; check 1 knows the verb (was: refused)."""
     res = translate(f"{verb} the egg in the fridge", _world("FloorPlan13"), "offline")
     assert [t.summary() for t in res.tasks] == ["place Egg -> Fridge"] and not res.partial
+
+
+# "Put the apple in the fridge. Use the left arm." was the placing alone, exit 0 (h96's probe): a tool no
+# task takes or implies is unread; the knife of a slice and the lamp of an examination stay read
+@BOTH
+@pytest.mark.parametrize(
+    "text",
+    ["put the apple in the fridge. Use the left arm.", "put the apple in the fridge using the robot arm"],
+)
+def test_a_tool_no_task_uses_is_refused(backend, text):
+    assert "no base task is done with this" in _refused(text, "FloorPlan1", backend)
+
+
+def test_a_tool_the_task_implies_keeps_the_reading():
+    text = "use the knife to slice the apple and put a slice in the fridge"
+    res = translate(text, _world("FloorPlan1"), "offline")
+    assert [t.summary() for t in res.tasks] == ["place Apple(sliced) -> Fridge"] and not res.partial

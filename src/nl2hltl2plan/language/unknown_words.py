@@ -25,6 +25,10 @@ a noun ("the black and white statues").
 ['goblet']
 >>> unknown_things("put the spoon on the ledge of the sink")
 []
+
+Tools (`unused_tools`): "use the left arm", "using the sponge": what a task is to be done with. Only the
+tools a task's kind implies are read (the knife of a slice, the faucet of a rinse, the microwave of a
+heating); any other is unread, never dropped (the plan would not use it).
 """
 
 from __future__ import annotations
@@ -32,7 +36,8 @@ from __future__ import annotations
 import re
 
 from nl2hltl2plan.language.content_words import DETERMINERS, LOCATIVE, Unread, categories
-from nl2hltl2plan.language.grounding import tokens
+from nl2hltl2plan.language.grounding import Mention, tokens
+from nl2hltl2plan.language.parse_usage import ParseUsage
 from nl2hltl2plan.language.spelling import english_word, known_word
 
 _COMMAND_START = frozenset("and then please pls also now next first finally lastly".split())
@@ -126,3 +131,24 @@ def _head(instruction: str, toks: list[tuple[str, int, int]], start: int) -> str
 
 def _unknown_thing(word: str) -> bool:
     return len(word) > 2 and not word.endswith(("ly", "ing", "ed", "'s")) and english_word(word)
+
+
+_USE = re.compile(r"\b(?:use|using|utili[sz]e|utili[sz]ing|with the help of)\s+")
+_TOOL_END = re.compile(r"[,.;:!?()]|\s(?:to|and|then|for|so|in order)\b")
+
+
+def unused_tools(instruction: str, mentions: list[Mention], parse: ParseUsage) -> list[Unread]:
+    """ "Use X" / "using X" where X names nothing a task takes or its kind implies (a knife to slice)."""
+    lowered = instruction.lower()
+    used = {t for _, _, types in parse.slots() for t in types} | parse.implied()
+    out = []
+    for m in _USE.finditer(lowered):
+        end = _TOOL_END.search(lowered, m.end())
+        stop = end.start() if end else len(lowered)
+        named = [x for x in mentions if m.end() <= x.char_start < stop]
+        if not any(set(x.entry.types) & used for x in named):
+            out.append(Unread(instruction[m.start() : stop].strip(), "action", TOOL_REASON))
+    return out
+
+
+TOOL_REASON = "no base task is done with this: a task uses only the tools its kind implies"
