@@ -1,5 +1,5 @@
-"""Actions and things the system has no word for (issue 23): "put the pillow on the sofa and fluff it",
-"put the spoon in the goblet and put it in the sink".
+"""Actions, things and tools the system has no word for (issue 23): "put the pillow on the sofa and fluff
+it", "put the spoon in the goblet and put it in the sink", "use the left arm".
 
 Actions (`unknown_verbs`). A word that opens a command (at the text's or a clause's start, or after
 "and", "then", "please") and is followed by its object ("it", "them", a determiner) is the command's
@@ -17,6 +17,10 @@ sink) would drop it. Not judged: a head with "of" after it (a part or an amount:
 "a slide of lettuce"), words of position ("the corner", "the middle"), colours, sizes and states before
 a noun ("the black and white statues").
 
+Tools (`unused_tools`): "use the left arm", "using the sponge": what a task is to be done with. Only the
+tools a task takes or its kind implies are read (the knife of a slice, the lamp of an examination); any
+other is unread, never dropped (the plan would not use it).
+
 >>> [u.words for u in unknown_verbs("put the pillow on the sofa and fluff it")]
 ['fluff']
 >>> unknown_verbs("put the pillow on the sofa and then put it back")
@@ -25,10 +29,6 @@ a noun ("the black and white statues").
 ['goblet']
 >>> unknown_things("put the spoon on the ledge of the sink")
 []
-
-Tools (`unused_tools`): "use the left arm", "using the sponge": what a task is to be done with. Only the
-tools a task's kind implies are read (the knife of a slice, the faucet of a rinse, the microwave of a
-heating); any other is unread, never dropped (the plan would not use it).
 """
 
 from __future__ import annotations
@@ -54,7 +54,7 @@ _NO_ACTION = frozenset(
     "try help be is are was were do does did can could will would should must may might shall".split()
 )
 _CLAUSE_BREAK = re.compile(r"[,.;:!?()]|\s[-–—]\s")
-REASON = "no base task does this: an action the system has no word for"
+ACTION_REASON = "no base task does this: an action the system has no word for"
 
 
 def unknown_verbs(instruction: str) -> list[Unread]:
@@ -66,7 +66,7 @@ def unknown_verbs(instruction: str) -> list[Unread]:
             instruction[toks[i - 1][2] : start]
         )
         if opens and toks[i + 1][0] in _OBJECT_START and _unknown_action(word):
-            out.append(Unread(word, "action", REASON))
+            out.append(Unread(word, "action", ACTION_REASON))
     return out
 
 
