@@ -21,7 +21,7 @@ them", "exchanging their positions": the two blocks named before in the sentence
 from __future__ import annotations
 
 import re
-from functools import partial
+from functools import lru_cache, partial
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.handover_asides import read_asides
@@ -64,6 +64,7 @@ TYPOS = typo_table()
 _REWRITES = tuple((re.compile(pattern), replacement) for pattern, replacement in REWRITES)
 
 
+@lru_cache(maxsize=8192)  # a sentence is normalised again for each restated reading of its text
 def normalise(sentence: str) -> str:
     """Lower case, punctuation spaced out, typos mended, spoken styles normalised (`handover_spoken`),
     wishes and final-state goals said as commands (`handover_wishes`), framing dropped and `REWRITES`
