@@ -37,6 +37,10 @@ from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.translate import translate
 from nl2hltl2plan.suites.handover.handover_bench import instance, specs_equivalent
 
+# a whole committed batch read sentence by sentence: `python -m pytest -m sweep` (the default run leaves
+# them to `scripts/bench_handover_styles.py --batch all`, which measures the same sentences)
+SWEEP = pytest.mark.sweep
+
 
 @pytest.mark.parametrize("task_id", sorted(TASKS))
 def test_table3_instructions_give_the_written_specs(task_id):
@@ -118,6 +122,7 @@ def test_near_misses_are_refused_or_give_another_spec(task_id, text):
     assert_not_the_written_spec(task_id, text)
 
 
+@SWEEP
 @pytest.mark.parametrize(
     ("batch", "style"),
     [
@@ -139,6 +144,7 @@ def test_session10_styles_give_the_written_specs_or_are_refused_by_name(batch, s
             assert equal, (text, why)
 
 
+@SWEEP
 @pytest.mark.parametrize("style", sorted(STYLES["validation"]))
 def test_session10_validation_is_read_right_or_refused_never_misread(style):
     """Our validation batch, written with `dev` and measured once on the frozen reader (56 of 72 gave the
@@ -148,6 +154,7 @@ def test_session10_validation_is_read_right_or_refused_never_misread(style):
         assert_written_spec_or_refused(int(task), text)
 
 
+@SWEEP
 @pytest.mark.parametrize("style", sorted(STYLES["validation2"]))
 def test_session10_second_validation_is_read_right_or_refused_never_misread(style):
     """h50's validation batch, written with `dev10` and measured once on the final reader (15 of 24 gave
@@ -278,6 +285,7 @@ def test_unseen_rephrasings_are_read_right_or_refused_never_misread(task_id, tex
     assert_written_spec_or_refused(task_id, text)
 
 
+@SWEEP
 @pytest.mark.parametrize("task_id", sorted(TASKS))
 def test_h43_rounds_are_read_right_or_refused_never_misread(task_id):
     """One case per task (the sentences of a task in one loop, to keep the file fast)."""
@@ -285,6 +293,7 @@ def test_h43_rounds_are_read_right_or_refused_never_misread(task_id):
         assert_written_spec_or_refused(task_id, text)
 
 
+@SWEEP
 @pytest.mark.parametrize(
     ("name", "batch"),
     [
