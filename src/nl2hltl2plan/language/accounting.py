@@ -25,8 +25,10 @@ import networkx as nx
 
 from nl2hltl2plan.domain.task_kinds import slots_of
 from nl2hltl2plan.language.content_words import (
+    COMMAND_WORDS,
     DETERMINERS,
     LOCATIVE,
+    OBJECT_START,
     Unread,
     categories,
     free_order_remarks,
@@ -119,8 +121,8 @@ def account(
     out += unordered_steps(
         toks, {i for i, t in enumerate(toks) if parse.constraint_at(t[1])} | in_mention, parse, per_group_only
     )
-    out += misordered(instruction, toks, mentions, parse) + unknown_verbs(instruction)
-    out += unknown_things(instruction) + unused_tools(instruction, mentions, parse)
+    out += misordered(instruction, toks, mentions, parse) + unknown_verbs(instruction, toks)
+    out += unknown_things(instruction, toks) + unused_tools(instruction, mentions, parse)
     check_cycles(instruction, toks, mentions, parse)
     return out
 
@@ -148,12 +150,10 @@ def _is_verb(m: Mention, toks: list[tuple[str, int, int]]) -> bool:
     if "verb_switch" in categories(word):
         return nxt in ("on", "off", "the", "it", "a")
     prev = toks[m.start - 1][0] if m.start else ""
-    return "verb_unsupported" in categories(word) and nxt in _OBJECT_START and prev in _COMMAND_START
+    return "verb_unsupported" in categories(word) and nxt in OBJECT_START and prev in _COMMAND_START
 
 
-# what opens the object of a verb: a determiner (not "of": "a spray of water" names a thing) or a pronoun
-_OBJECT_START = frozenset(DETERMINERS - {"of"} | {"it", "them", "some"})
-_COMMAND_START = frozenset({"", "and", "then", "please", "also", "to", "first", "now", "pls"})
+_COMMAND_START = COMMAND_WORDS | {"", "to"}
 
 
 def _phrases(

@@ -19,6 +19,10 @@ from functools import cache, lru_cache
 from importlib import resources
 
 DETERMINERS = {"the", "a", "an", "that", "this", "those", "these", "its", "their", "my", "your", "of"}
+# what opens the object of a verb: a determiner (not "of": "a spray of water" names a thing) or a pronoun
+OBJECT_START = frozenset(DETERMINERS - {"of"} | {"it", "them", "some"})
+# words after which a command opens ("and fluff it", "please polish them")
+COMMAND_WORDS = frozenset({"and", "then", "please", "also", "first", "now", "pls"})
 # a place named after an object and one of these describes where the object is ("the apple on the table")
 LOCATIVE = frozenset(
     "on in at inside near beside by behind under next closest nearest closer from off below above beneath "

@@ -35,13 +35,20 @@ from __future__ import annotations
 
 import re
 
-from nl2hltl2plan.language.content_words import DETERMINERS, LOCATIVE, Unread, categories
+from nl2hltl2plan.language.content_words import (
+    COMMAND_WORDS,
+    DETERMINERS,
+    LOCATIVE,
+    OBJECT_START,
+    Unread,
+    categories,
+)
 from nl2hltl2plan.language.grounding import Mention, tokens
 from nl2hltl2plan.language.parse_usage import ParseUsage
 from nl2hltl2plan.language.spelling import english_word, known_word
 
-_COMMAND_START = frozenset("and then please pls also now next first finally lastly".split())
-_OBJECT_START = frozenset(DETERMINERS - {"of"} | {"it", "them", "some", "both", "all", "each", "every"})
+_COMMAND_START = COMMAND_WORDS | {"next", "finally", "lastly"}
+_OBJECT_START = OBJECT_START | {"both", "all", "each", "every"}
 _PREPOSITIONS = LOCATIVE | {
     "to", "into", "onto", "upon", "toward", "towards", "past", "through", "via", "outside", "around",
     "beside", "besides", "within", "over", "up", "down", "out", "for", "like", "than", "as",
@@ -57,9 +64,13 @@ _CLAUSE_BREAK = re.compile(r"[,.;:!?()]|\s[-–—]\s")
 ACTION_REASON = "no base task does this: an action the system has no word for"
 
 
-def unknown_verbs(instruction: str) -> list[Unread]:
-    """The verbs of commands in `instruction` that English knows and no word table of the project does."""
-    toks = tokens(instruction)
+Tokens = list[tuple[str, int, int]]
+
+
+def unknown_verbs(instruction: str, toks: Tokens | None = None) -> list[Unread]:
+    """The verbs of commands in `instruction` (its `tokens`, where the caller has them) that English knows
+    and no word table of the project does."""
+    toks = tokens(instruction) if toks is None else toks
     out = []
     for i, (word, start, _) in enumerate(toks[:-1]):
         opens = i == 0 or toks[i - 1][0] in _COMMAND_START or _CLAUSE_BREAK.search(
@@ -98,9 +109,10 @@ _THING_ENDS = LOCATIVE | _COMMAND_START | frozenset("to into onto or with before
 THING_REASON = "no object of this world is called so"
 
 
-def unknown_things(instruction: str) -> list[Unread]:
-    """The things acted on or put into in `instruction` whose name English knows and no word table does."""
-    toks = tokens(instruction)
+def unknown_things(instruction: str, toks: Tokens | None = None) -> list[Unread]:
+    """The things acted on or put into in `instruction` (its `tokens`, where the caller has them) whose name
+    English knows and no word table does."""
+    toks = tokens(instruction) if toks is None else toks
     out = []
     for i in range(len(toks) - 2):
         if toks[i][0] not in _TAKES_A_THING or toks[i + 1][0] not in _THING_DETERMINERS:
@@ -113,7 +125,7 @@ def unknown_things(instruction: str) -> list[Unread]:
     return out
 
 
-def _head(instruction: str, toks: list[tuple[str, int, int]], start: int) -> str | None:
+def _head(instruction: str, toks: Tokens, start: int) -> str | None:
     """The noun that ends the phrase opening at token `start` (at most two words), or None where a known
     word, a word of position or a part ("of") comes first."""
     for j in range(start, min(start + 2, len(toks))):
