@@ -1516,14 +1516,14 @@ VALID_H99: dict[int, list[str]] = {
         "on the blue one",
         "plz put the grren apple on the blue plate & the orange on the yelow plate ty",
         "Object: orange. Destination: yellow plate.\nObject: green apple. Destination: blue plate."],
-    2: ["Scenario: three plates\nWhen the robot tidies the table\nThen the orange is on the yellow plate\nAnd "
-        "the red apple is on the blue plate\nAnd the green apple is on the pink plate",
+    2: ["Scenario: three plates\nWhen the robot tidies the table\nThen the orange is on the yellow plate\n"
+        "And the red apple is on the blue plate\nAnd the green apple is on the pink plate",
         "As a guest I'd like the green apple on the pink plate, the red apple on the blue plate and the "
         "orange on the yellow plate; any order works for me.",
         "Goal - red apple on the blue plate, orange on the yellow plate, green apple on the pink plate.\n"
         "Condition - none. Order - whatever.",
-        "Robot: What shall I do?\nUser: Put the green apple on the pink plate, the orange on the yellow plate "
-        "and the red apple on the blue plate.\nRobot: Any particular order?\nUser: No.",
+        "Robot: What shall I do?\nUser: Put the green apple on the pink plate, the orange on the yellow "
+        "plate and the red apple on the blue plate.\nRobot: Any particular order?\nUser: No.",
         "put the green apple on the yellow plate - sorry, I mean the pink plate - the orange on the yellow "
         "plate and the red apple on the blue plate, in any order",
         "put the orange on the yelow plate, the red aple on the blue plate and the green apple on the pinc "
@@ -1537,10 +1537,10 @@ VALID_H99: dict[int, list[str]] = {
         "green plate\n[07:56] Leo: red apple -> pink plate\n[07:56] Leo: any order",
         "Then the carrot must be on the blue plate, the orange on the yellow plate, the green apple on the "
         "green plate and the red apple on the pink plate, whatever the order.",
-        "Goal: carrot on blue, orange on yellow, green apple on green, red apple on pink.\nConditions: none.\n"
-        "Priority: normal.",
-        "Put the carrot on the plate that is blue, the orange on the plate that is yellow, the green apple on "
-        "the green one and the red apple on the pink one, in any order."],
+        "Goal: carrot on blue, orange on yellow, green apple on green, red apple on pink.\nConditions: "
+        "none.\nPriority: normal.",
+        "Put the carrot on the plate that is blue, the orange on the plate that is yellow, the green apple "
+        "on the green one and the red apple on the pink one, in any order."],
     4: ["The first job is to put the green apple and the orange on the yellow plate. The second job, after "
         "the first one, is to put the carrot and the red apple on the blue plate.",
         "Step 1 - the green apple and the orange on the yellow plate\nStep 2 - the carrot and the red apple "
@@ -1551,8 +1551,8 @@ VALID_H99: dict[int, list[str]] = {
         "apple on the blue plate",
         "put the green apple and orange on the yelow plate frist, than the carrot and red apple on the blue "
         "plate",
-        "Robot: Where do I start?\nUser: With the green apple and the orange on the yellow plate.\nRobot: And "
-        "then?\nUser: Then the carrot and the red apple on the blue plate."],
+        "Robot: Where do I start?\nUser: With the green apple and the orange on the yellow plate.\nRobot: "
+        "And then?\nUser: Then the carrot and the red apple on the blue plate."],
 }
 
 # h99's development batch: written at the same time as VALID_H99, in its voices, for developing the rules
@@ -1584,8 +1584,8 @@ DEV_H99: dict[int, list[str]] = {
         "As a tidy person, I'd like the carrot on the blue plate, the orange on the yellow plate, the green "
         "apple on the green plate and the red apple on the pink plate, in any order, so that the table "
         "looks neat.",
-        "Sam: carrot on the blue plate\nSam: orange on the yellow plate\nSam: green apple on the green plate\n"
-        "Sam: red apple on the pink plate\nSam: any order is fine",
+        "Sam: carrot on the blue plate\nSam: orange on the yellow plate\nSam: green apple on the green "
+        "plate\nSam: red apple on the pink plate\nSam: any order is fine",
         "Then the carrot should be on the blue plate, the orange on the yellow plate, the green apple on the "
         "green plate and the red apple on the pink plate, regardless of order.",
         "Goal: carrot to the blue plate, orange to the yellow plate, green apple to the green plate, red "

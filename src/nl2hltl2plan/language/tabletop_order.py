@@ -142,3 +142,33 @@ def trailing_then_fronted(text: str, pattern: re.Pattern[str]) -> str:
 
 def _name(found: str) -> str:
     return " ".join(found.split())
+
+
+# "The first thing to do is (to) put ...", "The second job, after the first one, is to put ...": a step's
+# turn said by an ordinal noun; the turn is the ordinal ("First, put ...", "Second, put ...")
+_ORDINAL_THING = re.compile(
+    r"\b(?:the\s+|my\s+|your\s+)?(?P<turn>first|second|third|fourth|next|last|final)\s+(?:thing|job|task|"
+    r"step|chore|bit|part|errand)(?:\s+(?:to\s+do|(?:I\s+need\s+)?(?:you\s+)?to\s+do|you\s+(?:should\s+)?do))?"
+    r"(?P<aside>\s*,\s*(?:once|when|after)\s+[^,.;:!?]{1,40}?,)?\s+is\s+(?:to\s+)?(?=[a-z])",
+    re.IGNORECASE,
+)
+
+
+def ordinal_things_read(text: str, pattern: re.Pattern[str]) -> str:
+    """`text` with each "the first / second / next thing (to do) is (to)" as its ordinal ("First, put ...");
+    an aside between them that names nothing ("once that's done", "after the first one") only restates the
+    turn and goes; one that names a thing or plate keeps the text as it is (what it waits for is read
+    elsewhere or refused).
+
+    >>> ordinal_things_read("The first thing to do is put A. The second job, after the first one, is B.",
+    ...                     re.compile(r"\\b[AB]\\b"))
+    'First, put A. Second, B.'
+    """
+
+    def read(m: re.Match[str]) -> str:
+        if m["aside"] and pattern.search(m["aside"]):
+            return m[0]
+        turn = m["turn"].lower()
+        return f"{turn.capitalize() if m[0][:1].isupper() else turn}, "
+
+    return _ORDINAL_THING.sub(read, text)
