@@ -11,6 +11,7 @@ import pytest
 
 from nl2hltl2plan.errors import WorldError
 from nl2hltl2plan.language.tabletop_lines import lines_joined
+from nl2hltl2plan.language.tabletop_order import robot_addressed
 from nl2hltl2plan.language.tabletop_remarks import role_dropped
 from nl2hltl2plan.language.tabletop_spelling import misspelt_order_words, names_respelt, order_words_spelt
 from tests.language.test_tabletop_lines import YELLOW_THEN_BLUE
@@ -143,3 +144,20 @@ def test_an_ordinal_noun_with_no_second_step_or_a_named_wait_stays_unread():
     once = f"The first thing is {YELLOW}. The second thing, once the carrot is ready, is {BLUE}."
     assert _read(once) is None
     assert re.search("carrot", once)  # the aside names a thing: not read as a restated turn
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        f"When the robot has put {YELLOW}, then it puts {BLUE}.",  # a test scenario's voice
+        f"Once the robot has put {YELLOW}, it puts {BLUE}.",
+    ],
+)
+def test_the_robot_named_as_the_one_who_places(text):
+    assert _read(text) == YELLOW_THEN_BLUE
+
+
+def test_it_is_the_robot_only_after_the_robot_is_named_and_before_a_verb_of_placing():
+    assert robot_addressed("It puts A on P. The robot is ready.") == "It puts A on P. The robot is ready."
+    assert robot_addressed("The robot is ready; it goes on P.") == "The robot is ready; it goes on P."
+    assert robot_addressed("The robot will place A; it moves B.") == "You will place A; you move B."

@@ -172,3 +172,35 @@ def ordinal_things_read(text: str, pattern: re.Pattern[str]) -> str:
         return f"{turn.capitalize() if m[0][:1].isupper() else turn}, "
 
     return _ORDINAL_THING.sub(read, text)
+
+
+# the robot named as the one who places, in the third person (a test scenario's or a specification's voice:
+# "When the robot has put A on P, then it puts B on Q"): the one asked, as "you"; "it" only where the robot
+# is named before it, and only before a verb of placing (a thing "goes", it never "puts")
+_PLACES = r"(?:put|place|move|set|bring|take|carry|drop)"
+_ROBOT_DOES = re.compile(
+    rf"\b(?P<who>the\s+robot|it)\s+(?:(?P<has>has|will|shall)\s+)?(?P<verb>{_PLACES}(?:s|d|ed)?|moved|brought|"
+    r"took|taken|carried)\b",
+    re.IGNORECASE,
+)
+
+
+def robot_addressed(text: str) -> str:
+    """`text` with "the robot puts / has put / will put" (and "it puts" after the robot is named) said to the
+    one asked ("you put", "you have put").
+
+    >>> robot_addressed("When the robot has put A on P, then it puts B on Q.")
+    'When you have put A on P, then you put B on Q.'
+    """
+    named = re.search(r"\bthe\s+robot\b", text, re.IGNORECASE)
+    if named is None:
+        return text
+
+    def said(m: re.Match[str]) -> str:
+        if m["who"].lower() == "it" and m.start() < named.end():
+            return m[0]
+        has = {"has": "have ", "will": "will ", "shall": "will "}.get((m["has"] or "").lower(), "")
+        verb = m["verb"] if has else re.sub(r"(?<=[a-z])s$", "", m["verb"])
+        return f"{'You' if m[0][0].isupper() else 'you'} {has}{verb}"
+
+    return _ROBOT_DOES.sub(said, text)

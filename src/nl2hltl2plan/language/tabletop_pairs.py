@@ -40,6 +40,7 @@ from nl2hltl2plan.language.tabletop_order import (
     heading_colon_put_back,
     ordinal_things_read,
     reference_fronted,
+    robot_addressed,
     then_after_subject_fronted,
     trailing_then_fronted,
 )
@@ -165,12 +166,13 @@ class TabletopReader:
         (`tabletop_spelling`); a label whose value says nothing is asked left out ("Condition - none":
         `tabletop_remarks.empty_labels_dropped`, until the shared label reading replaces it), and a user
         story's role ("As a tidy person, I want ..."); "the first thing to do is" as "first"
-        (`tabletop_order.ordinal_things_read`)."""
+        (`tabletop_order.ordinal_things_read`); "the robot puts / has put" said to the one asked
+        (`tabletop_order.robot_addressed`)."""
         kinds = {camel_words(t): _is_plate(t) for t in self.world.object_types()}
         text = names_spelt(stops_read(lines_joined(lines, kinds)), kinds)
         mentions = mention_pattern(kinds, re.I)
         text = role_dropped(empty_labels_dropped(text, mentions), mentions)  # "Condition - none", "As a Y,"
-        text = ordinal_things_read(text, mentions)  # "The first thing to do is put ..."
+        text = robot_addressed(ordinal_things_read(text, mentions))  # "The first thing is ...", "it puts"
         return order_words_spelt(names_respelt(text, kinds))
 
     def prepared(self, instruction: str) -> str:
