@@ -11,7 +11,7 @@ import pytest
 
 from nl2hltl2plan.errors import WorldError
 from nl2hltl2plan.language.tabletop_lines import lines_joined
-from nl2hltl2plan.language.tabletop_order import robot_addressed
+from nl2hltl2plan.language.tabletop_order import robot_addressed, turn_phrases_read
 from nl2hltl2plan.language.tabletop_remarks import role_dropped
 from nl2hltl2plan.language.tabletop_spelling import misspelt_order_words, names_respelt, order_words_spelt
 from tests.language.test_tabletop_lines import YELLOW_THEN_BLUE
@@ -161,3 +161,25 @@ def test_it_is_the_robot_only_after_the_robot_is_named_and_before_a_verb_of_plac
     assert robot_addressed("It puts A on P. The robot is ready.") == "It puts A on P. The robot is ready."
     assert robot_addressed("The robot is ready; it goes on P.") == "The robot is ready; it goes on P."
     assert robot_addressed("The robot will place A; it moves B.") == "You will place A; you move B."
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        f"Put {YELLOW}. Having done that, put {BLUE}.",
+        f"Put {YELLOW}. That done, put {BLUE}.",
+        f"Put {YELLOW}. Once you've got that sorted, put {BLUE}.",
+        f"Put {YELLOW}. Thereafter, {BLUE}.",
+        f"Begin with {YELLOW} and end with {BLUE}.",
+        f"Start off with {YELLOW}. Finish with {BLUE}.",
+    ],
+)
+def test_a_clause_that_looks_back_on_the_step_before_orders_the_next(text):
+    assert _read(text) == YELLOW_THEN_BLUE
+
+
+def test_end_with_needs_a_begin_with_and_end_up_with_is_no_turn():
+    assert turn_phrases_read("Finish with A.") == "Finish with A."
+    end_state = "Start with A. P should end up with B."
+    assert turn_phrases_read(end_state) == end_state
+    assert _read(f"Put {PLACEMENTS}. That done, relax.") is None  # "then" with no step after it

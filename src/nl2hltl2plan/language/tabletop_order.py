@@ -204,3 +204,30 @@ def robot_addressed(text: str) -> str:
         return f"{'You' if m[0][0].isupper() else 'you'} {has}{verb}"
 
     return _ROBOT_DOES.sub(said, text)
+
+
+# a step's turn said by a clause that looks back on the step before ("Having done that,", "That done,", "Once
+# you've got that sorted,", "Thereafter,"), or by the last step's "end / finish with" after a first step's
+# "begin / start with" ("Begin with A and end with B"; not "end up with": an end state)
+_LOOKS_BACK = re.compile(
+    rf"\b(?:having\s+done\s+{_THAT}|{_THAT}\s+done|with\s+{_THAT}\s+(?:done|out\s+of\s+the\s+way)|"
+    rf"(?:once|when|after)\s+you(?:'ve|\s+have)\s+got\s+{_THAT}\s+(?:sorted(?:\s+out)?|{_DONE})|thereafter)\b"
+    r"(?=\s*,)",
+    re.IGNORECASE,
+)
+_BEGIN_WITH = re.compile(r"\b(?:begin|start)(?:\s+off)?\s+with\b", re.IGNORECASE)
+_END_WITH = re.compile(r"\b(?:and\s+)?(?:end|finish)(?:\s+off)?\s+with\b", re.IGNORECASE)
+
+
+def turn_phrases_read(text: str) -> str:
+    """`text` with each clause that looks back on the step before as "then", and an "end / finish with"
+    after a "begin / start with" as "then".
+
+    >>> turn_phrases_read("Begin with A and end with B. Having done that, C.")
+    'Begin with A then B. then, C.'
+    """
+    text = _LOOKS_BACK.sub("then", text)
+    first = _BEGIN_WITH.search(text)
+    if first is not None:
+        text = text[: first.end()] + _END_WITH.sub(" then", text[first.end() :])
+    return re.sub(r"\s+then\b", " then", text)

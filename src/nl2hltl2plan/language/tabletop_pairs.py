@@ -43,6 +43,7 @@ from nl2hltl2plan.language.tabletop_order import (
     robot_addressed,
     then_after_subject_fronted,
     trailing_then_fronted,
+    turn_phrases_read,
 )
 from nl2hltl2plan.language.tabletop_remarks import empty_labels_dropped, role_dropped
 from nl2hltl2plan.language.tabletop_spelling import misspelt_order_words, names_respelt, order_words_spelt
@@ -167,12 +168,14 @@ class TabletopReader:
         `tabletop_remarks.empty_labels_dropped`, until the shared label reading replaces it), and a user
         story's role ("As a tidy person, I want ..."); "the first thing to do is" as "first"
         (`tabletop_order.ordinal_things_read`); "the robot puts / has put" said to the one asked
-        (`tabletop_order.robot_addressed`)."""
+        (`tabletop_order.robot_addressed`); a clause that looks back on the step before as "then"
+        (`tabletop_order.turn_phrases_read`)."""
         kinds = {camel_words(t): _is_plate(t) for t in self.world.object_types()}
         text = names_spelt(stops_read(lines_joined(lines, kinds)), kinds)
         mentions = mention_pattern(kinds, re.I)
         text = role_dropped(empty_labels_dropped(text, mentions), mentions)  # "Condition - none", "As a Y,"
         text = robot_addressed(ordinal_things_read(text, mentions))  # "The first thing is ...", "it puts"
+        text = turn_phrases_read(text)  # "Having done that,", "Begin with A and end with B"
         return order_words_spelt(names_respelt(text, kinds))
 
     def prepared(self, instruction: str) -> str:
