@@ -1605,3 +1605,36 @@ DEV_H99: dict[int, list[str]] = {
         "As the chef, I want the green apple and the orange on the yellow plate before anything goes on the "
         "blue plate, and then the carrot and the red apple on the blue plate."],
 }
+
+# h99's second development batch, written after the rules for DEV_H99 and measured before any rule for it,
+# in voices no batch uses (dictation with spoken punctuation, Markdown headings and bold, a commit message, a
+# checklist with emoji numbers, a voice assistant addressed by name, "X's for the Y plate").
+DEV2_H99: dict[int, list[str]] = {
+    1: ["put the green apple on the blue plate comma and the orange on the yellow plate period",
+        "## Todo\n- **green apple** → *blue plate*\n- **orange** → *yellow plate*",
+        "feat: move green apple to blue plate and orange to yellow plate",
+        "The green apple's for the blue plate and the orange's for the yellow plate."],
+    2: ["pls:\n1️⃣ green apple ➡️ pink plate\n2️⃣ orange ➡️ yellow plate\n3️⃣ red apple ➡️ blue plate\norder "
+        "doesn't matter",
+        "Put the green apple on the pink plate comma the orange on the yellow plate comma and the red apple "
+        "on the blue plate period any order period",
+        "## Plates\n**Pink:** green apple\n**Yellow:** orange\n**Blue:** red apple",
+        "chore: sort fruit (green apple -> pink plate, orange -> yellow plate, red apple -> blue plate), any "
+        "order"],
+    3: ["Siri, put the carrot on the blue plate, the orange on the yellow plate, the green apple on the "
+        "green plate and the red apple on the pink plate in any order",
+        "- [ ] carrot: blue plate\n- [ ] orange: yellow plate\n- [ ] green apple: green plate\n- [ ] red "
+        "apple: pink plate\n(any order)",
+        "The carrot's for the blue plate, the orange's for the yellow plate, the green apple's for the green "
+        "plate and the red apple's for the pink plate; no particular order.",
+        "carrot on blue plate, orange on yellow plate, green apple on green plate, red apple on pink plate - "
+        "each one independent of the others"],
+    4: ["### Phase A\ngreen apple + orange → yellow plate\n### Phase B (after A)\ncarrot + red apple → blue "
+        "plate",
+        "put the green apple and the orange on the yellow plate period once that's done put the carrot and "
+        "the red apple on the blue plate period",
+        "Please do the yellow plate before the blue one: green apple and orange on yellow, carrot and red "
+        "apple on blue.",
+        "Green apple and orange go on the yellow plate. Don't start on the blue plate (carrot and red apple) "
+        "until then."],
+}
