@@ -183,3 +183,19 @@ def test_end_with_needs_a_begin_with_and_end_up_with_is_no_turn():
     end_state = "Start with A. P should end up with B."
     assert turn_phrases_read(end_state) == end_state
     assert _read(f"Put {PLACEMENTS}. That done, relax.") is None  # "then" with no step after it
+
+
+THREE_FREE = ([("GreenApple", "PinkPlate"), ("Orange", "YellowPlate"), ("RedApple", "BluePlate")], [])
+
+
+def test_a_list_in_brackets_after_words_that_name_nothing_is_the_list_asked_for():
+    text = "chore: sort fruit (green apple -> pink plate, orange -> yellow plate, red apple -> blue plate)"
+    assert _read(f"{text}, any order") == THREE_FREE
+    assert _read("Put the carrot (the long one) on the blue plate.") == ([("Carrot", "BluePlate")], [])
+
+
+def test_each_one_independent_of_the_others_frees_the_order_and_never_undoes_a_then():
+    free = "green apple on pink plate, orange on yellow plate, red apple on blue plate - each one independent"
+    assert _read(f"{free} of the others") == THREE_FREE
+    then = "Put the carrot on the blue plate, then the orange on the yellow plate"
+    assert _read(f"{then}, each one independent of the others") is None  # it frees no pair the "then" leaves

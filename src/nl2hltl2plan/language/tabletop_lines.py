@@ -129,3 +129,26 @@ def _colour_fronted(name: str, modifiers: set[str]) -> Callable[[re.Match[str]],
         return m[0] if m["before"].strip().lower() in modifiers else f"{m['before']}{name}"
 
     return fronted
+
+
+_BRACKETS = re.compile(r"\s*\((?P<inside>[^()]*)\)")
+
+
+def bracketed_list_opened(text: str, kinds: dict[str, bool]) -> str:
+    """A list in brackets that holds every name of the text, after words that name nothing ("sort fruit
+    (green apple -> pink plate, orange -> yellow plate)"), as the list after a heading's colon; the text as
+    it is otherwise (brackets that add to a named thing: "the carrot (the long one)").
+
+    >>> bracketed_list_opened("sort fruit (carrot -> blue plate, orange -> blue plate), any order",
+    ...                       {"carrot": False, "orange": False, "blue plate": True})
+    'sort fruit: carrot -> blue plate, orange -> blue plate, any order'
+    """
+    pattern = mention_pattern(kinds, re.IGNORECASE)
+    found = list(_BRACKETS.finditer(text))
+    if len(found) != 1:
+        return text
+    m = found[0]
+    outside = text[: m.start()] + " " + text[m.end() :]
+    if pattern.search(outside) or len(pattern.findall(m["inside"])) < 2 or not text[: m.start()].strip():
+        return text
+    return f"{text[: m.start()]}: {m['inside'].strip()}{text[m.end() :]}"

@@ -30,7 +30,7 @@ from nl2hltl2plan.language.grounding import camel_words
 from nl2hltl2plan.language.htt_build import build_htt
 from nl2hltl2plan.language.result import LanguageResult
 from nl2hltl2plan.language.tabletop_counts import plate_counts_read, plates_said_alone, total_counts_read
-from nl2hltl2plan.language.tabletop_lines import lines_joined, names_spelt, stops_read
+from nl2hltl2plan.language.tabletop_lines import bracketed_list_opened, lines_joined, names_spelt, stops_read
 from nl2hltl2plan.language.tabletop_order import (
     BEFORE,
     FIRST,
@@ -172,6 +172,7 @@ class TabletopReader:
         (`tabletop_order.turn_phrases_read`)."""
         kinds = {camel_words(t): _is_plate(t) for t in self.world.object_types()}
         text = names_spelt(stops_read(lines_joined(lines, kinds)), kinds)
+        text = bracketed_list_opened(text, kinds)  # "sort fruit (green apple -> pink plate, ...)"
         mentions = mention_pattern(kinds, re.I)
         text = role_dropped(empty_labels_dropped(text, mentions), mentions)  # "Condition - none", "As a Y,"
         text = robot_addressed(ordinal_things_read(text, mentions))  # "The first thing is ...", "it puts"

@@ -60,7 +60,10 @@ _ORDER_TOPIC = re.compile(
 _INDEPENDENT = re.compile(
     r"\b(?:none|neither|no\s+one)\s+of\s+(?:these|them|those|the\s+\w+)\s+depends?\s+on\s+(?:another|any\s+other|"
     r"the\s+others?|each\s+other|one\s+another)\b|\b(?:they|these|those|them)\s+(?:are|'re)\s+(?:all\s+)?"
-    r"independent(?:\s+of\s+(?:each\s+other|one\s+another))?\b"
+    r"independent(?:\s+of\s+(?:each\s+other|one\s+another))?\b|"
+    # "each one independent of the others", "every one is independent of the rest"
+    r"\b(?:each|every)(?:\s+one)?\s+(?:(?:is|being)\s+)?independent(?:\s+of\s+(?:the\s+others?|the\s+rest|"
+    r"each\s+other|one\s+another|any\s+other))?\b"
 )
 # ... and what it says of it
 _FREE_PREDICATE = re.compile(
