@@ -199,3 +199,10 @@ def test_each_one_independent_of_the_others_frees_the_order_and_never_undoes_a_t
     assert _read(f"{free} of the others") == THREE_FREE
     then = "Put the carrot on the blue plate, then the orange on the yellow plate"
     assert _read(f"{then}, each one independent of the others") is None  # it frees no pair the "then" leaves
+
+
+def test_keycap_emoji_numbers_are_a_lists_numbers():
+    listed = "1️⃣ green apple ➡️ pink plate\n2️⃣ orange ➡️ yellow plate\n3️⃣ red apple ➡️ blue plate"
+    assert _read(f"pls:\n{listed}\norder doesn't matter") == THREE_FREE
+    steps = "1️⃣ green apple and orange ➡️ yellow plate\n2️⃣ carrot and red apple ➡️ blue plate"
+    assert _read(steps) == YELLOW_THEN_BLUE  # numbered steps, as "1. ... 2. ..." are read

@@ -14,9 +14,10 @@ Here each line break says what a writer of one line would have put there, by wha
 - two lines in a row of object names alone are items of one list: ", ";
 - any other line that names something ends a sentence: ". ".
 
-A bullet that opens a line ("-", "*", "•", "[ ]", "[x]") only marks the item and is dropped, and so is a
-chat log's time stamp ("[09:14] Dana: ...", "09:14 Dana: ..."; not "12:00 put ...", which may say when). A
-line's number or label ("1.", "a)", "Step 2:") is kept: the readers read those as before.
+A keycap emoji opening a line ("1️⃣") is its number ("1."). A bullet that opens a line ("-", "*", "•",
+"[ ]", "[x]") only marks the item and is dropped, and so is a chat log's time stamp ("[09:14] Dana: ...",
+"09:14 Dana: ..."; not "12:00 put ...", which may say when). A line's number or label ("1.", "a)", "Step
+2:") is kept: the readers read those as before.
 
 Names spelt otherwise (`names_spelt`) are the world's names where the words can mean nothing else: an
 identifier's words ("green_apple", "blue-plate"), a colour said in a clause after its noun ("the plate
@@ -43,6 +44,8 @@ from collections.abc import Callable
 from nl2hltl2plan.language.tabletop_wording import mention_pattern
 
 _BULLET = re.compile(r"^(?:[-*•·–]|\[\s*[xX✓]?\s*\])(?:\s+|$)")
+# a keycap emoji's digit opening a line ("1️⃣ green apple ➡️ pink plate"): the list's number, as "1."
+_KEYCAP = re.compile(r"^(?P<digit>\d)\ufe0f?\u20e3\s*")
 # a chat log's time stamp opening a line: bracketed ("[09:14] Dana: ..."), or before the writer's name and
 # a colon ("09:14 Dana: ..."); a time with no such mark ("12:00 put ...") may say when, and stays
 _TIME_STAMP = re.compile(
@@ -63,6 +66,7 @@ def lines_joined(lines: list[str], kinds: dict[str, bool]) -> str:
     (see the module docstring); `kinds`: each name in words -> is it a plate."""
     pattern = mention_pattern(kinds, re.I)
     items = [_BULLET.sub("", _TIME_STAMP.sub("", line.strip())).strip() for line in lines]  # indentation kept
+    items = [_KEYCAP.sub(r"\g<digit>. ", item) for item in items]  # "1️⃣ green apple" is "1. green apple"
     items = [item for item in items if item]
     named = [{_is_plate(found, kinds) for found in pattern.findall(item)} for item in items]
     bare = [not _OTHER_WORDS.sub("", pattern.sub(" ", item)) for item in items]
