@@ -1500,3 +1500,141 @@ DEV4_H96: dict[int, list[str]] = {
         "Ahoy! First, the green apple and the orange on the yellow plate, then the carrot and the red apple "
         "on the blue plate, me hearties!"],
 }
+
+# h99's held-out batch: written at the same time as DEV_H99 and committed before any h99 rule, in voices no
+# older batch uses (a Gherkin test scenario, a user story, a ticket with labelled fields such as "Goal -" and
+# "Condition -", a chat log with names and times, typing with typos and abbreviations, a record of labelled
+# fields, a robot-and-user dialogue, the order said by ordinals, a correction with "sorry, I mean").
+# Measured on first contact and at the end without --per-sentence; never read per sentence between.
+VALID_H99: dict[int, list[str]] = {
+    1: ["Scenario: fruit sorting. When the robot is done, the green apple is on the blue plate and the "
+        "orange is on the yellow plate.",
+        "As a busy parent, I want the orange on the yellow plate and the green apple on the blue plate so "
+        "that the kids can grab them.",
+        "Goal - the green apple on the blue plate and the orange on the yellow plate\nCondition - n/a",
+        "[18:40] Priya: could you put the orange on the yellow plate\n[18:41] Priya: oh and the green apple "
+        "on the blue one",
+        "plz put the grren apple on the blue plate & the orange on the yelow plate ty",
+        "Object: orange. Destination: yellow plate.\nObject: green apple. Destination: blue plate."],
+    2: ["Scenario: three plates\nWhen the robot tidies the table\nThen the orange is on the yellow plate\n"
+        "And the red apple is on the blue plate\nAnd the green apple is on the pink plate",
+        "As a guest I'd like the green apple on the pink plate, the red apple on the blue plate and the "
+        "orange on the yellow plate; any order works for me.",
+        "Goal - red apple on the blue plate, orange on the yellow plate, green apple on the pink plate.\n"
+        "Condition - none. Order - whatever.",
+        "Robot: What shall I do?\nUser: Put the green apple on the pink plate, the orange on the yellow "
+        "plate and the red apple on the blue plate.\nRobot: Any particular order?\nUser: No.",
+        "put the green apple on the yellow plate - sorry, I mean the pink plate - the orange on the yellow "
+        "plate and the red apple on the blue plate, in any order",
+        "put the orange on the yelow plate, the red aple on the blue plate and the green apple on the pinc "
+        "plate, any order"],
+    3: ["Item: red apple | Plate: pink\nItem: carrot | Plate: blue\nItem: green apple | Plate: green\nItem: "
+        "orange | Plate: yellow\nOrder: none",
+        "As the person who sets the table, I want the carrot on the blue plate, the orange on the yellow "
+        "plate, the green apple on the green plate and the red apple on the pink plate, in no particular "
+        "order.",
+        "[07:55] Leo: carrot -> blue plate\n[07:55] Leo: orange -> yellow plate\n[07:56] Leo: green apple -> "
+        "green plate\n[07:56] Leo: red apple -> pink plate\n[07:56] Leo: any order",
+        "Then the carrot must be on the blue plate, the orange on the yellow plate, the green apple on the "
+        "green plate and the red apple on the pink plate, whatever the order.",
+        "Goal: carrot on blue, orange on yellow, green apple on green, red apple on pink.\nConditions: "
+        "none.\nPriority: normal.",
+        "Put the carrot on the plate that is blue, the orange on the plate that is yellow, the green apple "
+        "on the green one and the red apple on the pink one, in any order."],
+    4: ["The first job is to put the green apple and the orange on the yellow plate. The second job, after "
+        "the first one, is to put the carrot and the red apple on the blue plate.",
+        "Step 1 - the green apple and the orange on the yellow plate\nStep 2 - the carrot and the red apple "
+        "on the blue plate\nCondition - step 2 only after step 1",
+        "Scenario: two rounds. When the green apple and the orange are on the yellow plate, then the robot "
+        "puts the carrot and the red apple on the blue plate.",
+        "[12:01] Mo: green apple and orange on the yellow plate first\n[12:02] Mo: after that carrot and red "
+        "apple on the blue plate",
+        "put the green apple and orange on the yelow plate frist, than the carrot and red apple on the blue "
+        "plate",
+        "Robot: Where do I start?\nUser: With the green apple and the orange on the yellow plate.\nRobot: "
+        "And then?\nUser: Then the carrot and the red apple on the blue plate."],
+}
+
+# h99's development batch: written at the same time as VALID_H99, in its voices, for developing the rules
+# (read per sentence).
+DEV_H99: dict[int, list[str]] = {
+    1: ["Scenario: tidy the table. Given the robot is at its start, when I say go, then the green apple is "
+        "on the blue plate and the orange is on the yellow plate.",
+        "As a hungry user, I want the green apple on the blue plate and the orange on the yellow plate, so "
+        "that I can find them.",
+        "Goal - put the green apple on the blue plate and the orange on the yellow plate. Condition - none.",
+        "[09:14] Dana: hey can u put the green apple on the blue plate\n[09:14] Dana: and the orange on the "
+        "yellow one pls",
+        "pls put teh green aple on the blu plate and the orange on the yelow plate thx",
+        "Object: green apple. Target: blue plate.\nObject: orange. Target: yellow plate."],
+    2: ["Given three fruits and three plates\nWhen the robot tidies up\nThen the green apple is on the pink "
+        "plate\nAnd the orange is on the yellow plate\nAnd the red apple is on the blue plate\nIn any order",
+        "As a host I want the red apple on the blue plate, the orange on the yellow plate and the green "
+        "apple on the pink plate. Order is not important to me.",
+        "Goal - place the green apple on the pink plate, the orange on the yellow plate and the red apple on "
+        "the blue plate\nOrder - any\nDeadline - none",
+        "Robot: What do you need?\nMe: The green apple on the pink plate, the orange on the yellow plate and "
+        "the red apple on the blue plate.\nRobot: In which order?\nMe: Doesn't matter.",
+        "Put the green apple on the blue plate, sorry, I mean the pink plate, the orange on the yellow plate "
+        "and the red apple on the blue plate, any order.",
+        "put the red appel on the blue plate, the orange on the yelow plate and the grean apple on the pink "
+        "plate, any order"],
+    3: ["Item: carrot | Plate: blue\nItem: orange | Plate: yellow\nItem: green apple | Plate: green\nItem: "
+        "red apple | Plate: pink\nOrder: any",
+        "As a tidy person, I'd like the carrot on the blue plate, the orange on the yellow plate, the green "
+        "apple on the green plate and the red apple on the pink plate, in any order, so that the table "
+        "looks neat.",
+        "Sam: carrot on the blue plate\nSam: orange on the yellow plate\nSam: green apple on the green "
+        "plate\nSam: red apple on the pink plate\nSam: any order is fine",
+        "Then the carrot should be on the blue plate, the orange on the yellow plate, the green apple on the "
+        "green plate and the red apple on the pink plate, regardless of order.",
+        "Goal: carrot to the blue plate, orange to the yellow plate, green apple to the green plate, red "
+        "apple to the pink plate. Constraints: none. Priority: low.",
+        "Put the carrot on the plate that's blue, the orange on the plate that's yellow, the green apple on "
+        "the green one and the red apple on the pink one, any order."],
+    4: ["The first thing to do is put the green apple and the orange on the yellow plate. The second thing, "
+        "once that's done, is to put the carrot and the red apple on the blue plate.",
+        "Step 1 - green apple and orange on the yellow plate\nStep 2 - carrot and red apple on the blue "
+        "plate\nCondition - step 2 only after step 1",
+        "Scenario: two rounds. When the robot has put the green apple and the orange on the yellow plate, "
+        "then it puts the carrot and the red apple on the blue plate.",
+        "[10:02] Kai: first the green apple and the orange on the yellow plate\n[10:03] Kai: after that the "
+        "carrot and the red apple go on the blue plate",
+        "frist put the green apple and orange on the yelow plate, than the carrot and red apple on the blue "
+        "plate",
+        "As the chef, I want the green apple and the orange on the yellow plate before anything goes on the "
+        "blue plate, and then the carrot and the red apple on the blue plate."],
+}
+
+# h99's second development batch, written after the rules for DEV_H99 and measured before any rule for it,
+# in voices no batch uses (dictation with spoken punctuation, Markdown headings and bold, a commit message, a
+# checklist with emoji numbers, a voice assistant addressed by name, "X's for the Y plate").
+DEV2_H99: dict[int, list[str]] = {
+    1: ["put the green apple on the blue plate comma and the orange on the yellow plate period",
+        "## Todo\n- **green apple** → *blue plate*\n- **orange** → *yellow plate*",
+        "feat: move green apple to blue plate and orange to yellow plate",
+        "The green apple's for the blue plate and the orange's for the yellow plate."],
+    2: ["pls:\n1️⃣ green apple ➡️ pink plate\n2️⃣ orange ➡️ yellow plate\n3️⃣ red apple ➡️ blue plate\norder "
+        "doesn't matter",
+        "Put the green apple on the pink plate comma the orange on the yellow plate comma and the red apple "
+        "on the blue plate period any order period",
+        "## Plates\n**Pink:** green apple\n**Yellow:** orange\n**Blue:** red apple",
+        "chore: sort fruit (green apple -> pink plate, orange -> yellow plate, red apple -> blue plate), any "
+        "order"],
+    3: ["Siri, put the carrot on the blue plate, the orange on the yellow plate, the green apple on the "
+        "green plate and the red apple on the pink plate in any order",
+        "- [ ] carrot: blue plate\n- [ ] orange: yellow plate\n- [ ] green apple: green plate\n- [ ] red "
+        "apple: pink plate\n(any order)",
+        "The carrot's for the blue plate, the orange's for the yellow plate, the green apple's for the green "
+        "plate and the red apple's for the pink plate; no particular order.",
+        "carrot on blue plate, orange on yellow plate, green apple on green plate, red apple on pink plate - "
+        "each one independent of the others"],
+    4: ["### Phase A\ngreen apple + orange → yellow plate\n### Phase B (after A)\ncarrot + red apple → blue "
+        "plate",
+        "put the green apple and the orange on the yellow plate period once that's done put the carrot and "
+        "the red apple on the blue plate period",
+        "Please do the yellow plate before the blue one: green apple and orange on yellow, carrot and red "
+        "apple on blue.",
+        "Green apple and orange go on the yellow plate. Don't start on the blue plate (carrot and red apple) "
+        "until then."],
+}

@@ -163,3 +163,21 @@ def test_nearest_first_takes_the_nearest_ready_item():
     other = next(t for t in lang.tasks if t.object[0] in {"GreenApple", "Orange"} and t.object[0] != picks[0])
     second = world.instances(other.object[0])[0].interaction_cells[0]
     assert len(world.path(HOME, first)) <= len(world.path(HOME, second))
+
+
+def test_tabletop_styles_measures_every_batch_with_the_commands_exit_status(capsys):
+    """scripts/tabletop_styles.py --batch all: every batch of rephrasings.py, and per wording the reading
+    against the ground truth and the exit status of `plan` (in process)."""
+    import importlib.util
+    from pathlib import Path
+
+    path = Path(__file__).resolve().parents[2] / "scripts" / "tabletop_styles.py"
+    spec = importlib.util.spec_from_file_location("tabletop_styles", path)
+    assert spec is not None and spec.loader is not None
+    styles = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(styles)
+    assert {"REPHRASINGS", "STYLES", "VALID_H99", "DEV_H99", "DEV2_H99"} <= set(styles.batches())
+    batch = {1: [TASKS[1].instruction, "Put the green apple on the blue plate rather than the orange."]}
+    counts = styles.measure("probe", batch, TASKS, per_sentence=False)
+    assert (counts["total"], counts["same"], counts["exact"], counts["wrong"]) == (2, 1, 1, 0)
+    assert "probe: same 1/2, exit 0 and same 1/2, wrong 0, exit codes {0: 1, 2: 1}" in capsys.readouterr().out

@@ -14,12 +14,15 @@ Here each line break says what a writer of one line would have put there, by wha
 - two lines in a row of object names alone are items of one list: ", ";
 - any other line that names something ends a sentence: ". ".
 
-A bullet that opens a line ("-", "*", "•", "[ ]", "[x]") only marks the item and is dropped. A line's
-number or label ("1.", "a)", "Step 2:") is kept: the readers read those as before.
+A keycap emoji opening a line ("1️⃣") is its number ("1."). A bullet that opens a line ("-", "*", "•",
+"[ ]", "[x]") only marks the item and is dropped, and so is a chat log's time stamp ("[09:14] Dana: ...",
+"09:14 Dana: ..."; not "12:00 put ...", which may say when). A line's number or label ("1.", "a)", "Step
+2:") is kept: the readers read those as before.
 
 Names spelt otherwise (`names_spelt`) are the world's names where the words can mean nothing else: an
-identifier's words ("green_apple", "blue-plate") and a colour said after its noun, as in the languages
-that put it there ("the plate blue": the blue plate; not before another name's noun, "the plate green
+identifier's words ("green_apple", "blue-plate"), a colour said in a clause after its noun ("the plate
+that's blue"), and a colour said after its noun, as in the languages that put it there ("the plate blue":
+the blue plate; not before another name's noun, "the plate green
 apple ...", nor after a name, "the yellow plate green ...").
 
 >>> kinds = {"green apple": False, "orange": False, "yellow plate": True}
@@ -41,6 +44,15 @@ from collections.abc import Callable
 from nl2hltl2plan.language.tabletop_wording import mention_pattern
 
 _BULLET = re.compile(r"^(?:[-*•·–]|\[\s*[xX✓]?\s*\])(?:\s+|$)")
+# a keycap emoji's digit opening a line ("1️⃣ green apple ➡️ pink plate"): the list's number, as "1."
+_KEYCAP = re.compile(r"^(?P<digit>\d)\ufe0f?\u20e3\s*")
+# a chat log's time stamp opening a line: bracketed ("[09:14] Dana: ..."), or before the writer's name and
+# a colon ("09:14 Dana: ..."); a time with no such mark ("12:00 put ...") may say when, and stays
+_TIME_STAMP = re.compile(
+    r"^(?:\[\s*\d{1,2}:\d{2}(?::\d{2})?\s*(?:[ap]\.?m\.?)?\s*\]|"
+    r"\d{1,2}:\d{2}(?::\d{2})?\s*(?:[ap]\.?m\.?)?(?=\s+[A-Z][a-z]+:))\s*",
+    re.IGNORECASE,
+)
 # what a line of names alone may hold besides the names ("the green apple and the orange", "carrot + orange")
 _OTHER_WORDS = re.compile(r"\b(?:the|a|an|and)\b|[\s,+&]")
 # a line that ends so: the sentence goes on past the line break
@@ -53,7 +65,8 @@ def lines_joined(lines: list[str], kinds: dict[str, bool]) -> str:
     """The lines (each already one line of words) as one line, each break read by what the lines name
     (see the module docstring); `kinds`: each name in words -> is it a plate."""
     pattern = mention_pattern(kinds, re.I)
-    items = [_BULLET.sub("", line.strip()).strip() for line in lines]  # translate keeps indentation
+    items = [_BULLET.sub("", _TIME_STAMP.sub("", line.strip())).strip() for line in lines]  # indentation kept
+    items = [_KEYCAP.sub(r"\g<digit>. ", item) for item in items]  # "1️⃣ green apple" is "1. green apple"
     items = [item for item in items if item]
     named = [{_is_plate(found, kinds) for found in pattern.findall(item)} for item in items]
     bare = [not _OTHER_WORDS.sub("", pattern.sub(" ", item)) for item in items]
@@ -102,6 +115,9 @@ def names_spelt(text: str, kinds: dict[str, bool]) -> str:
     for first, second in two_words:
         joined = rf"\b{first}[_-]{second}\b|\b{first.capitalize()}{second.capitalize()}\b"
         text = re.sub(joined, f"{first} {second}", text, flags=re.IGNORECASE)
+    for first, second in two_words:  # "the plate that's blue", "the plate which is blue": the blue plate
+        said = rf"\b{second}\s+(?:that|which)(?:'s|\s+is)\s+{first}\b"
+        text = re.sub(said, f"{first} {second}", text, flags=re.IGNORECASE)
     nouns = "|".join(sorted({second for _, second in two_words}))
     modifiers = {first for first, _ in two_words}
     for first, second in two_words:
@@ -117,3 +133,26 @@ def _colour_fronted(name: str, modifiers: set[str]) -> Callable[[re.Match[str]],
         return m[0] if m["before"].strip().lower() in modifiers else f"{m['before']}{name}"
 
     return fronted
+
+
+_BRACKETS = re.compile(r"\s*\((?P<inside>[^()]*)\)")
+
+
+def bracketed_list_opened(text: str, kinds: dict[str, bool]) -> str:
+    """A list in brackets that holds every name of the text, after words that name nothing ("sort fruit
+    (green apple -> pink plate, orange -> yellow plate)"), as the list after a heading's colon; the text as
+    it is otherwise (brackets that add to a named thing: "the carrot (the long one)").
+
+    >>> bracketed_list_opened("sort fruit (carrot -> blue plate, orange -> blue plate), any order",
+    ...                       {"carrot": False, "orange": False, "blue plate": True})
+    'sort fruit: carrot -> blue plate, orange -> blue plate, any order'
+    """
+    pattern = mention_pattern(kinds, re.IGNORECASE)
+    found = list(_BRACKETS.finditer(text))
+    if len(found) != 1:
+        return text
+    m = found[0]
+    outside = text[: m.start()] + " " + text[m.end() :]
+    if pattern.search(outside) or len(pattern.findall(m["inside"])) < 2 or not text[: m.start()].strip():
+        return text
+    return f"{text[: m.start()]}: {m['inside'].strip()}{text[m.end() :]}"

@@ -142,3 +142,92 @@ def trailing_then_fronted(text: str, pattern: re.Pattern[str]) -> str:
 
 def _name(found: str) -> str:
     return " ".join(found.split())
+
+
+# "The first thing to do is (to) put ...", "The second job, after the first one, is to put ...": a step's
+# turn said by an ordinal noun; the turn is the ordinal ("First, put ...", "Second, put ...")
+_ORDINAL_THING = re.compile(
+    r"\b(?:the\s+|my\s+|your\s+)?(?P<turn>first|second|third|fourth|next|last|final)\s+(?:thing|job|task|"
+    r"step|chore|bit|part|errand)(?:\s+(?:to\s+do|(?:I\s+need\s+)?(?:you\s+)?to\s+do|you\s+(?:should\s+)?do))?"
+    r"(?P<aside>\s*,\s*(?:once|when|after)\s+[^,.;:!?]{1,40}?,)?\s+is\s+(?:to\s+)?(?=[a-z])",
+    re.IGNORECASE,
+)
+
+
+def ordinal_things_read(text: str, pattern: re.Pattern[str]) -> str:
+    """`text` with each "the first / second / next thing (to do) is (to)" as its ordinal ("First, put ...");
+    an aside between them that names nothing ("once that's done", "after the first one") only restates the
+    turn and goes; one that names a thing or plate keeps the text as it is (what it waits for is read
+    elsewhere or refused).
+
+    >>> ordinal_things_read("The first thing to do is put A. The second job, after the first one, is B.",
+    ...                     re.compile(r"\\b[AB]\\b"))
+    'First, put A. Second, B.'
+    """
+
+    def read(m: re.Match[str]) -> str:
+        if m["aside"] and pattern.search(m["aside"]):
+            return m[0]
+        turn = m["turn"].lower()
+        return f"{turn.capitalize() if m[0][:1].isupper() else turn}, "
+
+    return _ORDINAL_THING.sub(read, text)
+
+
+# the robot named as the one who places, in the third person (a test scenario's or a specification's voice:
+# "When the robot has put A on P, then it puts B on Q"): the one asked, as "you"; "it" only where the robot
+# is named before it, and only before a verb of placing (a thing "goes", it never "puts")
+_PLACES = r"(?:put|place|move|set|bring|take|carry|drop)"
+_ROBOT_DOES = re.compile(
+    rf"\b(?P<who>the\s+robot|it)\s+(?:(?P<has>has|will|shall)\s+)?(?P<verb>{_PLACES}(?:s|d|ed)?|moved|brought|"
+    r"took|taken|carried)\b",
+    re.IGNORECASE,
+)
+
+
+def robot_addressed(text: str) -> str:
+    """`text` with "the robot puts / has put / will put" (and "it puts" after the robot is named) said to the
+    one asked ("you put", "you have put").
+
+    >>> robot_addressed("When the robot has put A on P, then it puts B on Q.")
+    'When you have put A on P, then you put B on Q.'
+    """
+    named = re.search(r"\bthe\s+robot\b", text, re.IGNORECASE)
+    if named is None:
+        return text
+
+    def said(m: re.Match[str]) -> str:
+        if m["who"].lower() == "it" and m.start() < named.end():
+            return m[0]
+        has = {"has": "have ", "will": "will ", "shall": "will "}.get((m["has"] or "").lower(), "")
+        verb = m["verb"] if has else re.sub(r"(?<=[a-z])s$", "", m["verb"])
+        return f"{'You' if m[0][0].isupper() else 'you'} {has}{verb}"
+
+    return _ROBOT_DOES.sub(said, text)
+
+
+# a step's turn said by a clause that looks back on the step before ("Having done that,", "That done,", "Once
+# you've got that sorted,", "Thereafter,"), or by the last step's "end / finish with" after a first step's
+# "begin / start with" ("Begin with A and end with B"; not "end up with": an end state)
+_LOOKS_BACK = re.compile(
+    rf"\b(?:having\s+done\s+{_THAT}|{_THAT}\s+done|with\s+{_THAT}\s+(?:done|out\s+of\s+the\s+way)|"
+    rf"(?:once|when|after)\s+you(?:'ve|\s+have)\s+got\s+{_THAT}\s+(?:sorted(?:\s+out)?|{_DONE})|thereafter)\b"
+    r"(?=\s*,)",
+    re.IGNORECASE,
+)
+_BEGIN_WITH = re.compile(r"\b(?:begin|start)(?:\s+off)?\s+with\b", re.IGNORECASE)
+_END_WITH = re.compile(r"\b(?:and\s+)?(?:end|finish)(?:\s+off)?\s+with\b", re.IGNORECASE)
+
+
+def turn_phrases_read(text: str) -> str:
+    """`text` with each clause that looks back on the step before as "then", and an "end / finish with"
+    after a "begin / start with" as "then".
+
+    >>> turn_phrases_read("Begin with A and end with B. Having done that, C.")
+    'Begin with A then B. then, C.'
+    """
+    text = _LOOKS_BACK.sub("then", text)
+    first = _BEGIN_WITH.search(text)
+    if first is not None:
+        text = text[: first.end()] + _END_WITH.sub(" then", text[first.end() :])
+    return re.sub(r"\s+then\b", " then", text)

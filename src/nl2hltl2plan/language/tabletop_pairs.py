@@ -30,7 +30,7 @@ from nl2hltl2plan.language.grounding import camel_words
 from nl2hltl2plan.language.htt_build import build_htt
 from nl2hltl2plan.language.result import LanguageResult
 from nl2hltl2plan.language.tabletop_counts import plate_counts_read, plates_said_alone, total_counts_read
-from nl2hltl2plan.language.tabletop_lines import lines_joined, names_spelt, stops_read
+from nl2hltl2plan.language.tabletop_lines import bracketed_list_opened, lines_joined, names_spelt, stops_read
 from nl2hltl2plan.language.tabletop_order import (
     BEFORE,
     FIRST,
@@ -38,10 +38,15 @@ from nl2hltl2plan.language.tabletop_order import (
     PLACE_IN_THE_WHOLE,
     THEN,
     heading_colon_put_back,
+    ordinal_things_read,
     reference_fronted,
+    robot_addressed,
     then_after_subject_fronted,
     trailing_then_fronted,
+    turn_phrases_read,
 )
+from nl2hltl2plan.language.tabletop_remarks import empty_labels_dropped, role_dropped
+from nl2hltl2plan.language.tabletop_spelling import misspelt_order_words, names_respelt, order_words_spelt
 from nl2hltl2plan.language.tabletop_waits import plate_waits_read
 from nl2hltl2plan.language.tabletop_wording import (
     corrected,
@@ -68,7 +73,7 @@ from nl2hltl2plan.worlds.world import World
 _REFUSED_CATEGORIES = ("negation", "order", "condition", "quantifier_all", "quantifier_vague", "repetition")
 _NOT_PAIRED = (
     "from off out away back near beside besides by behind under between instead either or but only while "
-    "remove swap keep leave empty clear stack"
+    "remove swap keep leave empty clear stack rather"
 )
 
 
@@ -102,12 +107,12 @@ _RELATION_VERB = re.compile(r"\bpreced(?:e|es|ed|ing)\b")
 # words that say an order which check 1's order words do not list: a reading with no order leaves them
 # unused, and the pairs reading refuses them ("put A on P > wait > put B on Q", "P has priority; Q follows",
 # "alphabetically", "by size", "biggest first"; not "no need to follow an order"); a priority only the former
-# ("Priority 1: ... Priority 2: ..." are labels)
+# ("Priority 1: ... Priority 2: ..." are labels); "sooner than" compares times
 _ORDER_SAID = re.compile(
     r"\b(?:wait(?:s|ing)?|pause|follow(?:s|ed|ing)|alphabetic(?:al(?:ly)?)?|"
     r"(?:anti-?|counter-?)?clockwise|by\s+(?:size|colou?r|height|weight|name|type)|(?:left|right)\s+to\s+"
     r"(?:right|left)|(?:bigg|small|larg|tall|short|heavi|light)est\s+(?:first|last)|in\s+turn|"
-    r"sequential(?:ly)?|in\s+sequence|one\s+(?:after|by)\s+(?:the\s+)?(?:other|one))\b"
+    r"sequential(?:ly)?|in\s+sequence|one\s+(?:after|by)\s+(?:the\s+)?(?:other|one)|(?:sooner|earlier)\s+than)\b"
 )
 _PRIORITY = re.compile(r"\bpriorit(?:y|ies|i[sz]e[sd]?)\b")
 # words that take back or turn round what was asked, with no correction marker to read ("That's wrong.",
@@ -117,6 +122,8 @@ _TAKEN_BACK = re.compile(
     r"\b(?:wrong|incorrect|ignore|disregard|cancel|never\s*mind|opposite|(?:the\s+)?other\s+way(?:\s+round)?|"
     r"swapped|reversed|kidding|joking)\b"
 )
+# "rather than" / "instead of": a thing or plate not wanted, which no placement of the reading says
+_RATHER_THAN = re.compile(r"\b(?:rather\s+than|instead\s+of|in\s+place\s+of)\b")
 # labels that name alternatives, not steps ("Plan A: ... Plan B: ...", "Option 1: ..."): which one is meant
 # is not said, and doing both is no reading of them
 _ALTERNATIVES = re.compile(
@@ -156,9 +163,21 @@ class TabletopReader:
     def as_read(self, lines: list[str]) -> str:
         """An instruction's lines as the one line its line breaks say (a plate heading with its objects
         under it, a list of items one a line), with the names spelt as the world spells them
-        ("green_apple", "the plate blue"): `tabletop_lines`."""
+        ("green_apple", "the plate blue"): `tabletop_lines`; misspelt names and order words written right
+        (`tabletop_spelling`); a label whose value says nothing is asked left out ("Condition - none":
+        `tabletop_remarks.empty_labels_dropped`, until the shared label reading replaces it), and a user
+        story's role ("As a tidy person, I want ..."); "the first thing to do is" as "first"
+        (`tabletop_order.ordinal_things_read`); "the robot puts / has put" said to the one asked
+        (`tabletop_order.robot_addressed`); a clause that looks back on the step before as "then"
+        (`tabletop_order.turn_phrases_read`)."""
         kinds = {camel_words(t): _is_plate(t) for t in self.world.object_types()}
-        return names_spelt(stops_read(lines_joined(lines, kinds)), kinds)
+        text = names_spelt(stops_read(lines_joined(lines, kinds)), kinds)
+        text = bracketed_list_opened(text, kinds)  # "sort fruit (green apple -> pink plate, ...)"
+        mentions = mention_pattern(kinds, re.I)
+        text = role_dropped(empty_labels_dropped(text, mentions), mentions)  # "Condition - none", "As a Y,"
+        text = robot_addressed(ordinal_things_read(text, mentions))  # "The first thing is ...", "it puts"
+        text = turn_phrases_read(text)  # "Having done that,", "Begin with A and end with B"
+        return order_words_spelt(names_respelt(text, kinds))
 
     def prepared(self, instruction: str) -> str:
         """A clause that says where something is ("the carrot is on the blue plate") with no wish or goal
@@ -245,6 +264,10 @@ class TabletopReader:
             out[found[0]] = Unread(found[0], "order", why)
         for found in _TAKEN_BACK.finditer(res.instruction.lower()):
             out[found[0]] = Unread(found[0], "negation", "it may take back what was asked: say what is meant")
+        for word in misspelt_order_words(res.instruction):
+            out[word] = Unread(word, "order", "it may misspell an order word: which one is not guessed")
+        for found in _RATHER_THAN.finditer(res.instruction.lower()):
+            out[found[0]] = Unread(found[0], "negation", "what is not wanted is no placement: leave it out")
         for found in _ALTERNATIVES.finditer(res.instruction.lower()):
             out[found[0]] = Unread(found[0], "condition", "alternatives: which one is meant is not said")
         for found in _ENTRIES.finditer(res.instruction.lower()):

@@ -60,7 +60,10 @@ _ORDER_TOPIC = re.compile(
 _INDEPENDENT = re.compile(
     r"\b(?:none|neither|no\s+one)\s+of\s+(?:these|them|those|the\s+\w+)\s+depends?\s+on\s+(?:another|any\s+other|"
     r"the\s+others?|each\s+other|one\s+another)\b|\b(?:they|these|those|them)\s+(?:are|'re)\s+(?:all\s+)?"
-    r"independent(?:\s+of\s+(?:each\s+other|one\s+another))?\b"
+    r"independent(?:\s+of\s+(?:each\s+other|one\s+another))?\b|"
+    # "each one independent of the others", "every one is independent of the rest"
+    r"\b(?:each|every)(?:\s+one)?\s+(?:(?:is|being)\s+)?independent(?:\s+of\s+(?:the\s+others?|the\s+rest|"
+    r"each\s+other|one\s+another|any\s+other))?\b"
 )
 # ... and what it says of it
 _FREE_PREDICATE = re.compile(
@@ -262,12 +265,20 @@ def asks_nothing(clause: str) -> bool:
     return words[0] in _SUBJECTS | _THINKING or "person" in categories(words[0]) or thanked is not None
 
 
+# a reason's subject other than the one asked ("I", "the table", "the kids"), with its modal: what that one
+# can do or how it is ("so that I can find them", "so that the table looks neat") is no request; the rest
+# of the clause is judged as an aside ("so that the kids can grab them" stays: a verb of taking)
+_SOMEONE_ELSE = re.compile(r"^(?:i|we|they|he|she|the\s+[a-z]+)(?:\s+(?:can|could|will|may))?\s+(?=[a-z])")
+
+
 def reasons_dropped(text: str, mention: re.Pattern[str], name_words: frozenset[str]) -> str:
     """`text` without each reason given for a step that names nothing and asks nothing ("..., so it's easy
-    to check", "because it matches"; not "so that the yellow plate is done first")."""
+    to check", "because it matches", "so that I can find them"; not "so that the yellow plate is done
+    first")."""
 
     def dropped(m: re.Match[str]) -> str:
         words = re.sub(r"^(?:because|since|so\s+that|so)\s+", "", m[0])
+        words = _SOMEONE_ELSE.sub("it ", words)  # "so that I can find them": asks nothing of the robot
         if mention.search(m[0]) or not name_words.isdisjoint(re.findall(r"[a-z]+", m[0])):
             return m[0]
         return "" if asks_nothing(words) else m[0]
@@ -325,3 +336,51 @@ def _freedom_read(clause: str) -> str | None:
     if _NEGATION.search(rest) or not set(re.findall(r"[a-z']+", rest)) <= _FREEDOM_FILLER:
         return None
     return "within each group in any order" if _EACH_GROUP.search(clause) else "in any order"
+
+
+# ---- a label whose value says that nothing is asked ("Condition - none", "Constraints: n/a") ---------------
+# Interim, in this one place: h100's shared heading and label reading is to replace it. A label of one to
+# three words that names nothing, opening a sentence, with a value that says "nothing" and closing it.
+_EMPTY_LABEL = re.compile(
+    r"(?:^|(?<=[.;!?\n]))\s*(?P<label>[A-Za-z]+(?:\s+[A-Za-z]+){0,2})\s*(?::|\s-+\s|\s–\s|\s—\s)\s*"
+    r"(?:none|n/?a|nil|nothing|not\s+applicable|none\s+(?:needed|given|set)|-+|–|—)\s*(?:[.;!]+|(?=\n)|$)",
+    re.IGNORECASE,
+)
+
+
+def empty_labels_dropped(text: str, mention: re.Pattern[str]) -> str:
+    """`text` without its labels whose value says that nothing is asked ("Goal - put ... . Condition -
+    none." -> "Goal - put ... ."); a label that names a thing or plate stays ("Oranges: none" asks that
+    none go anywhere, which no placement says).
+
+    >>> empty_labels_dropped("Goal - put the carrot on it. Condition - none.", re.compile("carrot"))
+    'Goal - put the carrot on it.'
+    """
+
+    def drop(m: re.Match[str]) -> str:
+        return m[0] if mention.search(m["label"]) else ""
+
+    return _EMPTY_LABEL.sub(drop, text).strip()
+
+
+# ---- a user story's role ("As a hungry user, I want ...") --------------------------------------------------
+_ROLE = re.compile(
+    r"^\s*as\s+(?:a|an|the|your)\s+(?P<role>(?:[a-z'-]+\s+){0,2}[a-z'-]+)\s*,\s*(?=(?:i|we)\b)", re.IGNORECASE
+)
+
+
+def role_dropped(text: str, mention: re.Pattern[str]) -> str:
+    """`text` without a user story's role opening it ("As a tidy person, I'd like ..."): who asks, which
+    asks nothing; a role that names a thing or plate, or has a word of order, count or negation, stays ("As
+    a first step, I want ...").
+
+    >>> role_dropped("As a tidy person, I want the carrot on the blue plate.", re.compile("carrot"))
+    'I want the carrot on the blue plate.'
+    """
+    m = _ROLE.match(text)
+    if m is None or mention.search(m["role"]):
+        return text
+    words = m["role"].lower().split()
+    if any(w in _MEANINGFUL or any(c.startswith("count") for c in categories(w)) for w in words):
+        return text
+    return text[m.end() :]
