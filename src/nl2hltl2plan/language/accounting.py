@@ -24,6 +24,7 @@ from functools import lru_cache
 import networkx as nx
 
 from nl2hltl2plan.domain.task_kinds import slots_of
+from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.content_words import (
     COMMAND_WORDS,
     DETERMINERS,
@@ -32,6 +33,7 @@ from nl2hltl2plan.language.content_words import (
     Unread,
     categories,
     free_order_remarks,
+    take_backs,
     stems,
     verb_places,
 )
@@ -125,6 +127,14 @@ def account(
     out += unknown_things(instruction, toks) + unused_tools(instruction, mentions, parse)
     check_cycles(instruction, toks, mentions, parse)
     return out
+
+
+def refuse_take_backs(instruction: str) -> None:
+    """Raise HTTError naming each phrase that takes back what was said ("scratch that", "just kidding";
+    `content_words.take_backs`): asked of every world's reader and every backend before any reading, since
+    no reading can tell which part is taken back, and a partial plan could do exactly that part."""
+    if found := take_backs(instruction):
+        raise HTTError("; ".join(f"{u.words!r} {u.reason}" for u in found))
 
 
 def unfilled_slots(tasks: Sequence[BaseTaskSpec]) -> list[Unread]:
@@ -450,6 +460,8 @@ def _words(
             unread = unforbidden_verb(w, cats, words, i, guard)
         if unread is None and not _locative_word(instruction, i, toks, mentions):
             unread = None if _beneficiary(toks, i, mentions, parse) else _noun(w, cats)
+        if w == "no" and words[i + 1 : i + 2] == ["wait"]:
+            continue  # "no wait, the cup": a correction's marker, judged by `corrections`
         if (
             "negation" in cats
             and guard is None

@@ -185,5 +185,28 @@ def categories(word: str) -> frozenset[str]:
     """The content-word categories of one token ({} for a function word)."""
     forms = stems(word)
     return frozenset(
-        name for name, words in vocabulary().items() if forms & words and name != "implied_by_verb"
+        name for name, words in vocabulary().items() if forms & words and name not in _PHRASE_CATEGORIES
     )
+
+
+_PHRASE_CATEGORIES = ("implied_by_verb", "take_back")  # lines of phrases or pairs, no word of their own
+TAKEN_BACK = "takes back part of the instruction: say the instruction again as you mean it"
+
+
+def take_backs(text: str) -> list[Unread]:
+    """The phrases of `text` that take back what was said, with nothing in its place (`take_back` in
+    content_words.txt), each where it closes its clause: no reader guesses which part is taken back.
+
+    >>> [u.words for u in take_backs("Put the apple in the fridge. Scratch that.")]
+    ['Scratch that']
+    >>> take_backs("never mind the order, put the apple in the fridge")
+    []
+    """
+    return [Unread(m.group(0), "take_back", TAKEN_BACK) for m in _take_back().finditer(text.replace("’", "'"))]
+
+
+@cache
+def _take_back() -> re.Pattern[str]:
+    phrases = sorted(vocabulary()["take_back"], key=len, reverse=True)
+    alternatives = "|".join(r"\s+".join(map(re.escape, p.split("_"))) for p in phrases)
+    return re.compile(rf"(?<![\w'])(?:{alternatives})(?=\s*(?:[,.;:!?)\-—–]|$))", re.I)

@@ -24,7 +24,7 @@ from collections import Counter
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.accounting import account
-from nl2hltl2plan.language.content_words import Unread, vocabulary
+from nl2hltl2plan.language.content_words import Unread, take_backs, vocabulary
 from nl2hltl2plan.language.grammar.restated import count_fits
 from nl2hltl2plan.language.grounding import camel_words
 from nl2hltl2plan.language.htt_build import build_htt
@@ -110,12 +110,11 @@ _ORDER_SAID = re.compile(
     r"sequential(?:ly)?|in\s+sequence|one\s+(?:after|by)\s+(?:the\s+)?(?:other|one))\b"
 )
 _PRIORITY = re.compile(r"\bpriorit(?:y|ies|i[sz]e[sd]?)\b")
-# words that take back or turn round what was asked, with no correction marker to read ("That's wrong.",
-# "Ignore that.", "the other way round", "They're swapped.", "Just kidding."): the grammar reads round them,
-# so this world leaves them unused
-_TAKEN_BACK = re.compile(
-    r"\b(?:wrong|incorrect|ignore|disregard|cancel|never\s*mind|opposite|(?:the\s+)?other\s+way(?:\s+round)?|"
-    r"swapped|reversed|kidding|joking)\b"
+# words that turn round what was asked ("the other way round", "They're swapped."; what takes it back, "That's
+# wrong.", is refused before any reading, `accounting.refuse_take_backs`): the grammar reads round them, so
+# this world leaves them unused
+_TURNED_ROUND = re.compile(
+    r"\b(?:wrong|incorrect|opposite|(?:the\s+)?other\s+way(?:\s+round)?|swapped|reversed)\b"
 )
 # labels that name alternatives, not steps ("Plan A: ... Plan B: ...", "Option 1: ..."): which one is meant
 # is not said, and doing both is no reading of them
@@ -243,8 +242,8 @@ class TabletopReader:
         for found in _RELATION_VERB.finditer(res.instruction.lower()):
             why = "an order between placements that this reading does not take"
             out[found[0]] = Unread(found[0], "order", why)
-        for found in _TAKEN_BACK.finditer(res.instruction.lower()):
-            out[found[0]] = Unread(found[0], "negation", "it may take back what was asked: say what is meant")
+        for found in _TURNED_ROUND.finditer(res.instruction.lower()):
+            out[found[0]] = Unread(found[0], "negation", "it may turn round what was asked: say what is meant")
         for found in _ALTERNATIVES.finditer(res.instruction.lower()):
             out[found[0]] = Unread(found[0], "condition", "alternatives: which one is meant is not said")
         for found in _ENTRIES.finditer(res.instruction.lower()):
@@ -330,7 +329,7 @@ def read_pairs(text: str, types: set[str]) -> Reading | None:
     plain, total_counts = total_counts_read(plain)  # "- those four placements, that's all": checked below
     unread_order = _RELATION_VERB.search(plain) or _ORDER_MATTERS.search(plain) or _ORDER_SAID.search(plain)
     labels_unread = _ALTERNATIVES.search(text.lower()) or _ENTRIES.search(text.lower())
-    labels_unread = labels_unread or _TAKEN_BACK.search(text.lower())  # "That's wrong.": never read round
+    labels_unread = labels_unread or _TURNED_ROUND.search(text.lower()) or take_backs(text)  # never read round
     if stated_not_asked(plain, by_words) is not None or unread_order or labels_unread:
         return None
     plain, last_free = last_group_free(plain)

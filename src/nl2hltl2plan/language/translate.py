@@ -27,7 +27,7 @@ from typing import TYPE_CHECKING, Literal, Protocol, Self, TypeVar, get_args
 
 from nl2hltl2plan.domain.task_kinds import SLOTS, State
 from nl2hltl2plan.errors import HTTError, LLMError, WorldError
-from nl2hltl2plan.language.accounting import account, unfilled_slots
+from nl2hltl2plan.language.accounting import account, refuse_take_backs, unfilled_slots
 from nl2hltl2plan.language.counts import take_every_instance
 from nl2hltl2plan.language.courtesy import without_courtesy
 from nl2hltl2plan.language.grounding import AffordanceLookup, Grounder, world_lookup
@@ -116,6 +116,7 @@ def translate(
     instruction = " ".join(instruction.split())
     if not instruction:
         raise HTTError("empty instruction")
+    refuse_take_backs(instruction)  # "scratch that", "just kidding": every world, every backend
     types = set(world.object_types()) if world is not None else None
     scene = world.name if world is not None else None
     reader = world_reader(world)  # the world's own reading around the shared grammar, if it has one

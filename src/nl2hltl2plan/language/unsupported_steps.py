@@ -403,8 +403,8 @@ def _correction_not_taken(
     w, prev, nxt = toks[i][0], toks[i - 1][0] if i else "", toks[i + 1][0] if i + 1 < len(toks) else ""
     if (w == "mean" and (prev != "i" or nxt in ("it", "that"))) or (w == "rather" and prev != "or"):
         return False
-    if w == "scratch" and nxt != "that":
-        return False
+    if (w == "scratch" and nxt != "that") or (w == "wait" and prev != "no"):
+        return False  # "scratch the paint", "wait for it": no correction
     start = sentence_start(instruction, toks[i][1])
     if w in ("sorry", "oops") and start and not instruction[start : toks[i][1]].strip(" ,"):
         # opening its sentence, an own mistake takes back the sentence before ("put the book on the desk
