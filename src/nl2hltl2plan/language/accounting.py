@@ -60,6 +60,7 @@ from nl2hltl2plan.language.unsupported_steps import (
     closed_after_placing,
     corrections,
     first_and_last,
+    fragments,
     one_of_several,
     opened_for_itself,
     other_instances,
@@ -118,7 +119,7 @@ def account(
     out += vague_words(instruction, mentions) + started(instruction, parse)
     out += corrections(instruction, mentions, parse) + repeated_tasks(instruction, mentions, parse)
     out += one_of_several(instruction, mentions, parse, instances)
-    out += first_and_last(instruction, mentions, parse)
+    out += first_and_last(instruction, mentions, parse) + fragments(instruction, mentions)
     out += _words(instruction, toks, in_mention, mentions, parse, instances, scene)
     out += unordered_steps(
         toks, {i for i, t in enumerate(toks) if parse.constraint_at(t[1])} | in_mention, parse, per_group_only

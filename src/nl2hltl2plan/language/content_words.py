@@ -189,7 +189,8 @@ def categories(word: str) -> frozenset[str]:
     )
 
 
-_PHRASE_CATEGORIES = ("implied_by_verb", "take_back")  # lines of phrases or pairs, no word of their own
+# lines of phrases or pairs, no word of their own
+_PHRASE_CATEGORIES = ("implied_by_verb", "take_back", "empty_value")
 TAKEN_BACK = "takes back part of the instruction: say the instruction again as you mean it"
 
 
@@ -207,6 +208,12 @@ def take_backs(text: str) -> list[Unread]:
 
 @cache
 def _take_back() -> re.Pattern[str]:
-    phrases = sorted(vocabulary()["take_back"], key=len, reverse=True)
-    alternatives = "|".join(r"\s+".join(map(re.escape, p.split("_"))) for p in phrases)
-    return re.compile(rf"(?<![\w'])(?:{alternatives})(?=\s*(?:[,.;:!?)\-—–]|$))", re.I)
+    return re.compile(rf"(?<![\w'])(?:{phrase_category('take_back')})(?=\s*(?:[,.;:!?)\-—–]|$))", re.I)
+
+
+@cache
+def phrase_category(name: str) -> str:
+    """The phrases of one `_`-joined category of content_words.txt (`take_back`, `empty_value`) as one
+    regular expression, the longest first, with no context and no flags."""
+    phrases = sorted(vocabulary()[name], key=len, reverse=True)
+    return "|".join(r"\s+".join(map(re.escape, p.split("_"))) for p in phrases)

@@ -413,3 +413,35 @@ def _correction_not_taken(
     taken = [m for m in mentions if start <= m.char_start < toks[i][1]]
     used = {t for _, _, st in parse.slots() for t in st} | parse.implied()
     return bool(taken) and bool(set(taken[-1].entry.types) & used)
+
+
+# a fragment after an instruction ("Hers too.", "Both of them.", "And the other one."): words that refer
+# to a thing (`_REFERRING`) and words that only join or point (`_JOINING`), no verb and no named thing
+_REFERRING = frozenset(
+    "hers his theirs mine yours ours both other others one ones same too also another rest remaining again "
+    "either".split()
+)
+_JOINING = DETERMINERS | frozenset(
+    "and then plus please now next for as well with to it they them that's is are of here there".split()
+)
+FRAGMENT = "a fragment that names no thing and no action: say the whole task (which thing, what to do with it)"
+
+
+def fragments(instruction: str, mentions: list[Mention]) -> list[Unread]:
+    """Sentences after the first that only refer ("Hers too.", "Both of them.", "Same again."): which thing
+    and which task they mean is not said, so they are named, never dropped. A fragment that names a thing
+    ("The cup too.") is left to the readers and to check 1's nouns."""
+    out = []
+    for m in re.finditer(r"[^.;!?\n]+", instruction):
+        words = [w for w, _, _ in tokens(m.group(0))]
+        named = any(m.start() <= n.char_start < m.end() for n in mentions)
+        if (
+            m.start() > 0
+            and words
+            and not named
+            and set(words) <= _REFERRING | _JOINING
+            and set(words) & _REFERRING
+            and not any(c.startswith("verb_") for w in words for c in categories(w))
+        ):
+            out.append(Unread(m.group(0).strip(" ,"), "fragment", FRAGMENT))
+    return out
