@@ -33,8 +33,8 @@ from nl2hltl2plan.language.content_words import (
     Unread,
     categories,
     free_order_remarks,
-    take_backs,
     stems,
+    take_backs,
     verb_places,
 )
 from nl2hltl2plan.language.counts import count_unread, count_value

@@ -203,7 +203,8 @@ def take_backs(text: str) -> list[Unread]:
     >>> take_backs("never mind the order, put the apple in the fridge")
     []
     """
-    return [Unread(m.group(0), "take_back", TAKEN_BACK) for m in _take_back().finditer(text.replace("’", "'"))]
+    found = _take_back().finditer(text.replace("’", "'"))
+    return [Unread(m.group(0), "take_back", TAKEN_BACK) for m in found]
 
 
 @cache

@@ -243,7 +243,8 @@ class TabletopReader:
             why = "an order between placements that this reading does not take"
             out[found[0]] = Unread(found[0], "order", why)
         for found in _TURNED_ROUND.finditer(res.instruction.lower()):
-            out[found[0]] = Unread(found[0], "negation", "it may turn round what was asked: say what is meant")
+            why = "it may turn round what was asked: say what is meant"
+            out[found[0]] = Unread(found[0], "negation", why)
         for found in _ALTERNATIVES.finditer(res.instruction.lower()):
             out[found[0]] = Unread(found[0], "condition", "alternatives: which one is meant is not said")
         for found in _ENTRIES.finditer(res.instruction.lower()):
@@ -329,7 +330,9 @@ def read_pairs(text: str, types: set[str]) -> Reading | None:
     plain, total_counts = total_counts_read(plain)  # "- those four placements, that's all": checked below
     unread_order = _RELATION_VERB.search(plain) or _ORDER_MATTERS.search(plain) or _ORDER_SAID.search(plain)
     labels_unread = _ALTERNATIVES.search(text.lower()) or _ENTRIES.search(text.lower())
-    labels_unread = labels_unread or _TURNED_ROUND.search(text.lower()) or take_backs(text)  # never read round
+    labels_unread = labels_unread or _TURNED_ROUND.search(text.lower())  # "swapped": never read round
+    if take_backs(text):
+        return None
     if stated_not_asked(plain, by_words) is not None or unread_order or labels_unread:
         return None
     plain, last_free = last_group_free(plain)

@@ -424,7 +424,7 @@ _REFERRING = frozenset(
 _JOINING = DETERMINERS | frozenset(
     "and then plus please now next for as well with to it they them that's is are of here there".split()
 )
-FRAGMENT = "a fragment that names no thing and no action: say the whole task (which thing, what to do with it)"
+FRAGMENT = "a fragment that names no thing and no action: say the whole task (which thing, what to do)"
 
 
 def fragments(instruction: str, mentions: list[Mention]) -> list[Unread]:
