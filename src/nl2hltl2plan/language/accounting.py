@@ -476,6 +476,10 @@ def _words(
             unread = Unread(w, "count", "no base task is done more than once: say each time as its own task")
         elif "condition" in cats and guard is None and not _after_negation(instruction, toks[i]):
             unread = Unread(w, "condition", "no base task waits on a condition: say what to do")
+        elif "time" in cats and words[i - 1 : i] != ["good"]:
+            unread = Unread(w, "time", "no base task waits for a time: say what to do now")
+        elif "hedge" in cats and not (i >= 2 and words[i - 1] == "you" and words[i - 2] in _ASKING):
+            unread = Unread(w, "condition", "a hedge: say whether it is to be done")
         if unread is not None:
             out.append(unread)
     return out
@@ -485,11 +489,14 @@ def _locative_word(
     instruction: str, i: int, toks: list[tuple[str, int, int]], mentions: list[Mention]
 ) -> bool:
     """A word after a locative preposition that follows a named thing in its clause ("next to the other
-    food", "by the door")."""
+    food", "by the door"); not past a "for" or a punctuation mark ("on the table for grandpa", "in the
+    drawer, my son is around": a person)."""
     j = i - 1
-    while j >= 0 and i - j <= 4 and toks[j][0] not in LOCATIVE and not categories(toks[j][0]):
+    while j >= 0 and i - j <= 4 and toks[j][0] not in LOCATIVE | {"for"} and not categories(toks[j][0]):
         j -= 1
     if j < 0 or toks[j][0] not in LOCATIVE - {"of", "with"}:  # "a cup of coffee" names its contents
+        return False
+    if re.search(r"[,;:.!?]", instruction[toks[j][2] : toks[i][1]]):
         return False
     clause = _clause_span(instruction, toks[i][1])
     return any(clause[0] <= m.char_start < toks[j][1] for m in mentions)
@@ -508,6 +515,7 @@ def _beneficiary(
     return after is not None and set(gap) <= DETERMINERS and bool(set(after.entry.types) & objects)
 
 
+_ASKING = frozenset({"could", "would", "can", "will"})  # "could you maybe ...": asked politely, no hedge
 _GET_FOR = frozenset({"get", "grab", "fetch"})  # never "bring", "hand", "give": to the person
 
 

@@ -263,6 +263,10 @@ _STATE_CONDITION = re.compile(
 # "Optional: put X on Y", "optionally", "time permitting": a step the spec would have to leave to the robot's
 # choice, which no hierarchical spec says (every task of it is required), so the words are refused; "the
 # order is optional" is a freedom of the order (the free-order phrases), not of a step
+# "in the fridge, or the sink, whichever": a choice left to the robot ("whichever order": a free order)
+_CHOICE = re.compile(
+    r"\bwhichever\b(?=\s*(?:[,.;!?]|$|(?:is|one|works|suits)\b|you\s+(?:like|prefer|want)\s*(?:[,.;!?]|$)))"
+)
 _OPTIONAL = re.compile(r"\b(?:optional(?:ly)?|time permitting|if you feel like it)\b")
 _ORDER_TOPIC = re.compile(r"\b(?:order|ordering|sequence)\b")
 # "same as yesterday", "like last time", "the usual", "as always": an instruction given before, which the
@@ -307,6 +311,7 @@ def vague_words(instruction: str, mentions: list[Mention]) -> list[Unread]:
         if not (m.group(0).endswith("away") and _PLACE_AFTER.match(lowered, m.end()))  # "away in a cabinet"
     ]
     out += [Unread(m.group(0), "count", "no base task takes a time") for m in _TIME.finditer(lowered)]
+    out += [Unread(m[0], "place", "a choice left open: say which one") for m in _CHOICE.finditer(lowered)]
     out += [
         Unread(m.group(0), "condition", "an optional step: the spec requires every task; say it or drop it")
         for m in _OPTIONAL.finditer(lowered)
