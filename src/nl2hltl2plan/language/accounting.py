@@ -32,6 +32,7 @@ from nl2hltl2plan.language.content_words import (
     OBJECT_START,
     Unread,
     categories,
+    check1_categories,
     free_order_remarks,
     stems,
     take_backs,
@@ -447,7 +448,7 @@ def _words(
     for i, w in enumerate(words):
         if i in in_mention or toks[i][1] in finished:
             continue
-        cats = categories(w)
+        cats = categories(w) | check1_categories(w)
         if not cats and not w.isdigit():
             continue
         guard = parse.constraint_at(toks[i][1])
@@ -476,7 +477,7 @@ def _words(
             unread = Unread(w, "count", "no base task is done more than once: say each time as its own task")
         elif "condition" in cats and guard is None and not _after_negation(instruction, toks[i]):
             unread = Unread(w, "condition", "no base task waits on a condition: say what to do")
-        elif "time" in cats and words[i - 1 : i] != ["good"]:
+        elif "time" in cats:
             unread = Unread(w, "time", "no base task waits for a time: say what to do now")
         elif "hedge" in cats and not (i >= 2 and words[i - 1] == "you" and words[i - 2] in _ASKING):
             unread = Unread(w, "condition", "a hedge: say whether it is to be done")
@@ -506,7 +507,12 @@ def _beneficiary(
     toks: list[tuple[str, int, int]], i: int, mentions: list[Mention], parse: ParseUsage
 ) -> bool:
     """The person of "get me the salt and put it on the table": for whom, not where to, when a task
-    places the thing named right after it (with no such task, "get me the salt" is unread as it was)."""
+    places the thing named right after it (with no such task, "get me the salt" is unread as it was); the
+    person of "for my mom", "for me" (for whom: the task is done all the same) and of "from mum" (who
+    asks)."""
+    before = [w for w, _, _ in toks[max(i - 2, 0) : i]]
+    if before[-1:] in (["for"], ["from"]) or (before[:1] in (["for"], ["from"]) and before[1] in DETERMINERS):
+        return True
     if toks[i][0] not in ("me", "us") or i == 0 or toks[i - 1][0] not in _GET_FOR:
         return False
     after = next((m for m in mentions if m.start > i), None)
@@ -582,7 +588,7 @@ def _piece_of_whole(words: list[str], i: int) -> bool:
 
 
 def _noun(w: str, cats: frozenset[str]) -> Unread | None:
-    if "person" in cats:
+    if cats & {"person", "person_relation"}:
         return Unread(w, "place", "a person: no base task hands things to people")
     if "noun_unsupported" in cats:
         return Unread(w, "object", "no object of this world is called so")

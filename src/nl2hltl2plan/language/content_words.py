@@ -185,12 +185,23 @@ def categories(word: str) -> frozenset[str]:
     """The content-word categories of one token ({} for a function word)."""
     forms = stems(word)
     return frozenset(
-        name for name, words in vocabulary().items() if forms & words and name not in _PHRASE_CATEGORIES
+        name
+        for name, words in vocabulary().items()
+        if forms & words and name not in _PHRASE_CATEGORIES + _CHECK1_ONLY
     )
 
 
-# lines of phrases or pairs, no word of their own
+# lines of phrases or pairs, no word of their own; and the categories check 1 alone asks (`check1_categories`)
 _PHRASE_CATEGORIES = ("implied_by_verb", "take_back", "empty_value")
+_CHECK1_ONLY = ("person_relation", "time", "hedge")
+
+
+@lru_cache(maxsize=8192)
+def check1_categories(word: str) -> frozenset[str]:
+    """The categories of one token that check 1 alone asks (a person by relation, a time to come, a hedge):
+    the readers' own frames and asides ("Voice note from mum:") do not take them as content."""
+    forms = stems(word)
+    return frozenset(name for name in _CHECK1_ONLY if forms & vocabulary()[name])
 TAKEN_BACK = "takes back part of the instruction: say the instruction again as you mean it"
 
 
