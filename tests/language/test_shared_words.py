@@ -107,6 +107,7 @@ def test_a_fragment_that_names_a_thing_or_closes_is_left_to_the_reading():
         ("put the apple in the fridge tomorrow morning", "tomorrow"),
         ("maybe put the apple in the fridge", "maybe"),
         ("put the apple in the fridge, or the sink, whichever", "whichever"),
+        ("put the apple in the fridge when the movie ends", "when the movie ends"),
     ],
 )
 def test_a_person_a_time_a_hedge_or_a_choice_is_named(text, word):

@@ -261,6 +261,14 @@ _STATE_CONDITION = re.compile(
     r"(?:is|are|gets|becomes)\s+(?:not\s+)?(?:free|empty|full|open|opened|closed|shut|ready|available|dirty|busy|"
     r"occupied|wet|dry|off|on)\b(?!\s+(?:the|a|an|top)\b)"
 )
+# "when the movie ends", "before the guests arrive": an event of something that is no thing of the world (a
+# named thing's event, "after the apple finishes cooling", is left to the readers)
+_EVENT = re.compile(
+    r"\b(?:when|whenever|once|after|before|until|till|as soon as)\s+"
+    r"(?:the|a|an|my|your|our|his|her|their)?\s*"
+    r"(?P<who>[a-z]+(?:\s+[a-z]+)?)\s+(?:ends?|starts?|begins?|finish(?:es)?|arrives?|leaves?|comes?|returns?"
+    r"|wakes?(?:\s+up)?|rings?|stops?|is\s+over|gets?\s+(?:home|back|here|up))\b"
+)
 # "Optional: put X on Y", "optionally", "time permitting": a step the spec would have to leave to the robot's
 # choice, which no hierarchical spec says (every task of it is required), so the words are refused; "the
 # order is optional" is a freedom of the order (the free-order phrases), not of a step
@@ -321,6 +329,11 @@ def vague_words(instruction: str, mentions: list[Mention]) -> list[Unread]:
     out += [
         Unread(m.group(0), "action", "it points at an instruction this one does not contain: say the tasks")
         for m in _UNSEEN_INSTRUCTION.finditer(lowered)
+    ]
+    out += [
+        Unread(m[0], "condition", "no base task waits for an event: say what to do")
+        for m in _EVENT.finditer(lowered)
+        if not any(m.start("who") <= x.char_start < m.end("who") for x in mentions)
     ]
     return out + [
         Unread(m.group(0), "condition", "no base task waits on a state: say what to do")
