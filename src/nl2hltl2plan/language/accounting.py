@@ -461,7 +461,7 @@ def _words(
         else:
             unread = unforbidden_verb(w, cats, words, i, guard)
         if unread is None and not _locative_word(instruction, i, toks, mentions):
-            unread = None if _beneficiary(toks, i, mentions, parse) else _noun(w, cats)
+            unread = None if _beneficiary(instruction, toks, i, mentions, parse) else _noun(w, cats)
         if w == "no" and words[i + 1 : i + 2] == ["wait"]:
             continue  # "no wait, the cup": a correction's marker, judged by `corrections`
         if (
@@ -504,12 +504,15 @@ def _locative_word(
 
 
 def _beneficiary(
-    toks: list[tuple[str, int, int]], i: int, mentions: list[Mention], parse: ParseUsage
+    instruction: str, toks: list[tuple[str, int, int]], i: int, mentions: list[Mention], parse: ParseUsage
 ) -> bool:
     """The person of "get me the salt and put it on the table": for whom, not where to, when a task
     places the thing named right after it (with no such task, "get me the salt" is unread as it was); the
     person of "for my mom", "for me" (for whom: the task is done all the same) and of "from mum" (who
-    asks)."""
+    asks), and one set apart by punctuation, who is addressed or signs ("Mom, put ...", "Love, Grandma")."""
+    apart = _PUNCT.split(instruction[: toks[i][1]])[-1] + _PUNCT.split(instruction[toks[i][1] :])[0]
+    if set(apart.lower().split()) <= {*DETERMINERS, toks[i][0]} and check1_categories(toks[i][0]):
+        return True
     before = [w for w, _, _ in toks[max(i - 2, 0) : i]]
     if before[-1:] in (["for"], ["from"]) or (before[:1] in (["for"], ["from"]) and before[1] in DETERMINERS):
         return True
@@ -521,6 +524,7 @@ def _beneficiary(
     return after is not None and set(gap) <= DETERMINERS and bool(set(after.entry.types) & objects)
 
 
+_PUNCT = re.compile(r"[,.;:!?()]")
 _ASKING = frozenset({"could", "would", "can", "will"})  # "could you maybe ...": asked politely, no hedge
 _GET_FOR = frozenset({"get", "grab", "fetch"})  # never "bring", "hand", "give": to the person
 

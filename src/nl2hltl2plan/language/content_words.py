@@ -45,7 +45,14 @@ class Unread:
 
 @lru_cache(maxsize=1)
 def vocabulary() -> dict[str, frozenset[str]]:
-    """category -> words, from `content_words.txt`."""
+    """category -> words, from `content_words.txt` (the readers' words: not the phrase lines of
+    `_SHARED_PHRASES` nor the categories check 1 alone asks, `check1_categories`)."""
+    every = _every_category()
+    return {name: words for name, words in every.items() if name not in _SHARED_PHRASES + _CHECK1_ONLY}
+
+
+@lru_cache(maxsize=1)
+def _every_category() -> dict[str, frozenset[str]]:
     return word_categories("content_words.txt")
 
 
@@ -187,12 +194,14 @@ def categories(word: str) -> frozenset[str]:
     return frozenset(
         name
         for name, words in vocabulary().items()
-        if forms & words and name not in _PHRASE_CATEGORIES + _CHECK1_ONLY
+        if forms & words and name not in _PHRASE_CATEGORIES
     )
 
 
-# lines of phrases or pairs, no word of their own; and the categories check 1 alone asks (`check1_categories`)
-_PHRASE_CATEGORIES = ("implied_by_verb", "take_back", "empty_value")
+# lines of phrases or pairs, no word of their own (`_SHARED_PHRASES`: read before any reader, by `take_backs`
+# and `headings`); and the categories check 1 alone asks (`check1_categories`)
+_SHARED_PHRASES = ("take_back", "empty_value", "empty_label")
+_PHRASE_CATEGORIES = ("implied_by_verb",)
 _CHECK1_ONLY = ("person_relation", "time", "hedge")
 
 
@@ -201,7 +210,7 @@ def check1_categories(word: str) -> frozenset[str]:
     """The categories of one token that check 1 alone asks (a person by relation, a time to come, a hedge):
     the readers' own frames and asides ("Voice note from mum:") do not take them as content."""
     forms = stems(word)
-    return frozenset(name for name in _CHECK1_ONLY if forms & vocabulary()[name])
+    return frozenset(name for name in _CHECK1_ONLY if forms & _every_category()[name])
 TAKEN_BACK = "takes back part of the instruction: say the instruction again as you mean it"
 
 
@@ -223,9 +232,14 @@ def _take_back() -> re.Pattern[str]:
     return re.compile(rf"(?<![\w'])(?:{phrase_category('take_back')})(?=\s*(?:[,.;:!?)\-—–]|$))", re.I)
 
 
+def shared_words(name: str) -> frozenset[str]:
+    """The words (or `_`-joined phrases) of one line of content_words.txt that no `vocabulary` holds."""
+    return _every_category()[name]
+
+
 @cache
 def phrase_category(name: str) -> str:
     """The phrases of one `_`-joined category of content_words.txt (`take_back`, `empty_value`) as one
     regular expression, the longest first, with no context and no flags."""
-    phrases = sorted(vocabulary()[name], key=len, reverse=True)
+    phrases = sorted(_every_category()[name], key=len, reverse=True)
     return "|".join(r"\s+".join(map(re.escape, p.split("_"))) for p in phrases)

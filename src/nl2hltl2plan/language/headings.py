@@ -4,8 +4,9 @@ instruction before any reader or backend reads it.
 - A one-word label and a dash open a sentence as a colon does ("Goal - ...", "Condition — ..."); not after
   a step's number ("1 - move ...", "two - put ...").
 - A labelled sentence whose value asks nothing ("Condition - none", "Notes: n/a", "Constraints: nothing";
-  the values are `empty_value` in content_words.txt) is dropped; a label about order keeps its value, which
-  the readers read ("Ordering: none" frees an order).
+  the labels are `empty_label` in content_words.txt, the values `empty_value`) is dropped; another label
+  keeps its value, which the readers read ("Ordering: none" frees an order, "Other regions: nothing" says
+  where nothing goes).
 - Any other label stays for the readers, which read its value ("Task: put ...") or refuse it by name
   ("Note: the fridge is cold").
 
@@ -21,7 +22,7 @@ from __future__ import annotations
 
 import re
 
-from nl2hltl2plan.language.content_words import phrase_category
+from nl2hltl2plan.language.content_words import phrase_category, shared_words
 
 _NUMBER_WORDS = frozenset("one two three four five six seven eight nine ten i ii iii iv v".split())
 _START = r"(?P<start>^|(?<=[.!?;])\s+)"
@@ -32,7 +33,6 @@ _EMPTY = re.compile(
     r"(?:[.!?;]+|$)",
     re.I,
 )
-_ORDER_LABEL = re.compile(r"\b(?:order|ordering|sequence|priority|priorities|sorting)\b", re.I)
 
 
 def unlabelled(line: str) -> str:
@@ -48,4 +48,8 @@ def _as_colon(m: re.Match[str]) -> str:
 
 
 def _dropped(m: re.Match[str]) -> str:
-    return m[0] if _ORDER_LABEL.search(m["label"]) else m["start"]
+    labels = set(re.findall(r"[a-z]+", m["label"].lower()))
+    return m["start"] if labels <= _EMPTY_LABELS else m[0]
+
+
+_EMPTY_LABELS = shared_words("empty_label")
