@@ -269,6 +269,8 @@ _EVENT = re.compile(
     r"(?P<who>[a-z]+(?:\s+[a-z]+)?)\s+(?:ends?|starts?|begins?|finish(?:es)?|arrives?|leaves?|comes?|returns?"
     r"|wakes?(?:\s+up)?|rings?|stops?|is\s+over|gets?\s+(?:home|back|here|up))\b"
 )
+# who may end or finish a step of the task itself ("after you finish", "when both are done")
+_DOERS = frozenset("you we i it they that this these those both each all everything robot robots".split())
 # "Optional: put X on Y", "optionally", "time permitting": a step the spec would have to leave to the robot's
 # choice, which no hierarchical spec says (every task of it is required), so the words are refused; "the
 # order is optional" is a freedom of the order (the free-order phrases), not of a step
@@ -333,7 +335,8 @@ def vague_words(instruction: str, mentions: list[Mention]) -> list[Unread]:
     out += [
         Unread(m[0], "condition", "no base task waits for an event: say what to do")
         for m in _EVENT.finditer(lowered)
-        if not any(m.start("who") <= x.char_start < m.end("who") for x in mentions)
+        if m["who"].split()[0] not in _DOERS
+        and not any(m.start("who") <= x.char_start < m.end("who") for x in mentions)
     ]
     return out + [
         Unread(m.group(0), "condition", "no base task waits on a state: say what to do")
