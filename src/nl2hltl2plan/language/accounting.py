@@ -24,7 +24,6 @@ from functools import lru_cache
 import networkx as nx
 
 from nl2hltl2plan.domain.task_kinds import slots_of
-from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.content_words import (
     COMMAND_WORDS,
     DETERMINERS,
@@ -35,7 +34,6 @@ from nl2hltl2plan.language.content_words import (
     check1_categories,
     free_order_remarks,
     stems,
-    take_backs,
     verb_places,
 )
 from nl2hltl2plan.language.counts import count_unread, count_value
@@ -129,14 +127,6 @@ def account(
     out += unknown_things(instruction, toks) + unused_tools(instruction, mentions, parse)
     check_cycles(instruction, toks, mentions, parse)
     return out
-
-
-def refuse_take_backs(instruction: str) -> None:
-    """Raise HTTError naming each phrase that takes back what was said ("scratch that", "just kidding";
-    `content_words.take_backs`): asked of every world's reader and every backend before any reading, since
-    no reading can tell which part is taken back, and a partial plan could do exactly that part."""
-    if found := take_backs(instruction):
-        raise HTTError("; ".join(f"{u.words!r} {u.reason}" for u in found))
 
 
 def unfilled_slots(tasks: Sequence[BaseTaskSpec]) -> list[Unread]:
@@ -513,8 +503,11 @@ def _beneficiary(
     apart = _PUNCT.split(instruction[: toks[i][1]])[-1] + _PUNCT.split(instruction[toks[i][1] :])[0]
     if set(apart.lower().split()) <= {*DETERMINERS, toks[i][0]} and check1_categories(toks[i][0]):
         return True
-    before = [w for w, _, _ in toks[max(i - 2, 0) : i]]
-    if before[-1:] in (["for"], ["from"]) or (before[:1] in (["for"], ["from"]) and before[1] in DETERMINERS):
+    before = [w for w, _, _ in toks[max(i - 3, 0) : i]]
+    if before and before[-1] != "for" and before[-1] in DETERMINERS:
+        before = before[:-1]  # "for my mom", "from mum"; "away from the kids" is where the thing goes
+    said_by = before[-1:] == ["from"] and before[-2:-1] != ["away"] and check1_categories(toks[i][0])
+    if before[-1:] == ["for"] or said_by:
         return True
     if toks[i][0] not in ("me", "us") or i == 0 or toks[i - 1][0] not in _GET_FOR:
         return False

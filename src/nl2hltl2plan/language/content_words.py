@@ -18,6 +18,8 @@ from dataclasses import dataclass
 from functools import cache, lru_cache
 from importlib import resources
 
+from nl2hltl2plan.errors import HTTError
+
 DETERMINERS = {"the", "a", "an", "that", "this", "those", "these", "its", "their", "my", "your", "of"}
 # what opens the object of a verb: a determiner (not "of": "a spray of water" names a thing) or a pronoun
 OBJECT_START = frozenset(DETERMINERS - {"of"} | {"it", "them", "some"})
@@ -225,6 +227,14 @@ def take_backs(text: str) -> list[Unread]:
     """
     found = _take_back().finditer(text.replace("’", "'"))
     return [Unread(m.group(0), "take_back", TAKEN_BACK) for m in found]
+
+
+def refuse_take_backs(instruction: str) -> None:
+    """Raise HTTError naming each phrase that takes back what was said (`take_backs`): asked of every
+    world's reader and every backend before any reading, since no reading can tell which part is taken
+    back, and a partial plan could do exactly that part."""
+    if found := take_backs(instruction):
+        raise HTTError("; ".join(f"{u.words!r} {u.reason}" for u in found))
 
 
 @cache

@@ -111,7 +111,7 @@ _ORDER_SAID = re.compile(
 )
 _PRIORITY = re.compile(r"\bpriorit(?:y|ies|i[sz]e[sd]?)\b")
 # words that turn round what was asked ("the other way round", "They're swapped."; what takes it back, "That's
-# wrong.", is refused before any reading, `accounting.refuse_take_backs`): the grammar reads round them, so
+# wrong.", is refused before any reading, `content_words.refuse_take_backs`): the grammar reads round them, so
 # this world leaves them unused
 _TURNED_ROUND = re.compile(
     r"\b(?:wrong|incorrect|opposite|(?:the\s+)?other\s+way(?:\s+round)?|swapped|reversed)\b"

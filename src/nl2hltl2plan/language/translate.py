@@ -27,7 +27,8 @@ from typing import TYPE_CHECKING, Literal, Protocol, Self, TypeVar, get_args
 
 from nl2hltl2plan.domain.task_kinds import SLOTS, State
 from nl2hltl2plan.errors import HTTError, LLMError, WorldError
-from nl2hltl2plan.language.accounting import account, refuse_take_backs, unfilled_slots
+from nl2hltl2plan.language.accounting import account, unfilled_slots
+from nl2hltl2plan.language.content_words import refuse_take_backs
 from nl2hltl2plan.language.counts import take_every_instance
 from nl2hltl2plan.language.courtesy import without_courtesy
 from nl2hltl2plan.language.grounding import AffordanceLookup, Grounder, world_lookup
