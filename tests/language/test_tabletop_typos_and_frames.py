@@ -97,6 +97,14 @@ def test_a_label_whose_value_says_nothing_is_asked_is_no_request(text):
     assert _read(text) == TWO_FREE
 
 
+@pytest.mark.parametrize("value", ["none", "n/a", "nothing"])
+def test_an_order_label_that_says_nothing_frees_the_order_of_a_record_list(value):
+    # the shared labels keep an order label's value for the readers: "Order: none" asks for no order
+    records = "Item: green apple | Plate: blue\nItem: orange | Plate: yellow"
+    assert _read(f"{records}\nOrder: {value}") == TWO_FREE
+    assert _read(f"{records}\nOrder: red first") is None  # a value that says something stays unread
+
+
 @pytest.mark.parametrize(
     "text",
     [

@@ -31,6 +31,7 @@ from nl2hltl2plan.language.content_words import (
     OBJECT_START,
     Unread,
     categories,
+    check1_categories,
     free_order_remarks,
     stems,
     verb_places,
@@ -58,6 +59,7 @@ from nl2hltl2plan.language.unsupported_steps import (
     closed_after_placing,
     corrections,
     first_and_last,
+    fragments,
     one_of_several,
     opened_for_itself,
     other_instances,
@@ -116,7 +118,7 @@ def account(
     out += vague_words(instruction, mentions) + started(instruction, parse)
     out += corrections(instruction, mentions, parse) + repeated_tasks(instruction, mentions, parse)
     out += one_of_several(instruction, mentions, parse, instances)
-    out += first_and_last(instruction, mentions, parse)
+    out += first_and_last(instruction, mentions, parse) + fragments(instruction, mentions)
     out += _words(instruction, toks, in_mention, mentions, parse, instances, scene)
     out += unordered_steps(
         toks, {i for i, t in enumerate(toks) if parse.constraint_at(t[1])} | in_mention, parse, per_group_only
@@ -436,7 +438,7 @@ def _words(
     for i, w in enumerate(words):
         if i in in_mention or toks[i][1] in finished:
             continue
-        cats = categories(w)
+        cats = categories(w) | check1_categories(w)
         if not cats and not w.isdigit():
             continue
         guard = parse.constraint_at(toks[i][1])
@@ -449,7 +451,9 @@ def _words(
         else:
             unread = unforbidden_verb(w, cats, words, i, guard)
         if unread is None and not _locative_word(instruction, i, toks, mentions):
-            unread = None if _beneficiary(toks, i, mentions, parse) else _noun(w, cats)
+            unread = None if _beneficiary(instruction, toks, i, mentions, parse) else _noun(w, cats)
+        if w == "no" and words[i + 1 : i + 2] == ["wait"]:
+            continue  # "no wait, the cup": a correction's marker, judged by `corrections`
         if (
             "negation" in cats
             and guard is None
@@ -463,6 +467,10 @@ def _words(
             unread = Unread(w, "count", "no base task is done more than once: say each time as its own task")
         elif "condition" in cats and guard is None and not _after_negation(instruction, toks[i]):
             unread = Unread(w, "condition", "no base task waits on a condition: say what to do")
+        elif "time" in cats:
+            unread = Unread(w, "time", "no base task waits for a time: say what to do now")
+        elif "hedge" in cats and not (i >= 2 and words[i - 1] == "you" and words[i - 2] in _ASKING):
+            unread = Unread(w, "condition", "a hedge: say whether it is to be done")
         if unread is not None:
             out.append(unread)
     return out
@@ -472,21 +480,35 @@ def _locative_word(
     instruction: str, i: int, toks: list[tuple[str, int, int]], mentions: list[Mention]
 ) -> bool:
     """A word after a locative preposition that follows a named thing in its clause ("next to the other
-    food", "by the door")."""
+    food", "by the door"); not past a "for" or a punctuation mark ("on the table for grandpa", "in the
+    drawer, my son is around": a person)."""
     j = i - 1
-    while j >= 0 and i - j <= 4 and toks[j][0] not in LOCATIVE and not categories(toks[j][0]):
+    while j >= 0 and i - j <= 4 and toks[j][0] not in LOCATIVE | {"for"} and not categories(toks[j][0]):
         j -= 1
     if j < 0 or toks[j][0] not in LOCATIVE - {"of", "with"}:  # "a cup of coffee" names its contents
+        return False
+    if re.search(r"[,;:.!?]", instruction[toks[j][2] : toks[i][1]]):
         return False
     clause = _clause_span(instruction, toks[i][1])
     return any(clause[0] <= m.char_start < toks[j][1] for m in mentions)
 
 
 def _beneficiary(
-    toks: list[tuple[str, int, int]], i: int, mentions: list[Mention], parse: ParseUsage
+    instruction: str, toks: list[tuple[str, int, int]], i: int, mentions: list[Mention], parse: ParseUsage
 ) -> bool:
     """The person of "get me the salt and put it on the table": for whom, not where to, when a task
-    places the thing named right after it (with no such task, "get me the salt" is unread as it was)."""
+    places the thing named right after it (with no such task, "get me the salt" is unread as it was); the
+    person of "for my mom", "for me" (for whom: the task is done all the same) and of "from mum" (who
+    asks), and one set apart by punctuation, who is addressed or signs ("Mom, put ...", "Love, Grandma")."""
+    apart = _PUNCT.split(instruction[: toks[i][1]])[-1] + _PUNCT.split(instruction[toks[i][1] :])[0]
+    if set(apart.lower().split()) <= {*DETERMINERS, toks[i][0]} and check1_categories(toks[i][0]):
+        return True
+    before = [w for w, _, _ in toks[max(i - 3, 0) : i]]
+    if before and before[-1] != "for" and before[-1] in DETERMINERS:
+        before = before[:-1]  # "for my mom", "from mum"; "away from the kids" is where the thing goes
+    said_by = before[-1:] == ["from"] and before[-2:-1] != ["away"] and check1_categories(toks[i][0])
+    if before[-1:] == ["for"] or said_by:
+        return True
     if toks[i][0] not in ("me", "us") or i == 0 or toks[i - 1][0] not in _GET_FOR:
         return False
     after = next((m for m in mentions if m.start > i), None)
@@ -495,6 +517,8 @@ def _beneficiary(
     return after is not None and set(gap) <= DETERMINERS and bool(set(after.entry.types) & objects)
 
 
+_PUNCT = re.compile(r"[,.;:!?()]")
+_ASKING = frozenset({"could", "would", "can", "will"})  # "could you maybe ...": asked politely, no hedge
 _GET_FOR = frozenset({"get", "grab", "fetch"})  # never "bring", "hand", "give": to the person
 
 
@@ -561,7 +585,7 @@ def _piece_of_whole(words: list[str], i: int) -> bool:
 
 
 def _noun(w: str, cats: frozenset[str]) -> Unread | None:
-    if "person" in cats:
+    if cats & {"person", "person_relation"}:
         return Unread(w, "place", "a person: no base task hands things to people")
     if "noun_unsupported" in cats:
         return Unread(w, "object", "no object of this world is called so")

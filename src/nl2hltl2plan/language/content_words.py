@@ -18,6 +18,8 @@ from dataclasses import dataclass
 from functools import cache, lru_cache
 from importlib import resources
 
+from nl2hltl2plan.errors import HTTError
+
 DETERMINERS = {"the", "a", "an", "that", "this", "those", "these", "its", "their", "my", "your", "of"}
 # what opens the object of a verb: a determiner (not "of": "a spray of water" names a thing) or a pronoun
 OBJECT_START = frozenset(DETERMINERS - {"of"} | {"it", "them", "some"})
@@ -45,7 +47,14 @@ class Unread:
 
 @lru_cache(maxsize=1)
 def vocabulary() -> dict[str, frozenset[str]]:
-    """category -> words, from `content_words.txt`."""
+    """category -> words, from `content_words.txt` (the readers' words: not the phrase lines of
+    `_SHARED_PHRASES` nor the categories check 1 alone asks, `check1_categories`)."""
+    every = _every_category()
+    return {name: words for name, words in every.items() if name not in _SHARED_PHRASES + _CHECK1_ONLY}
+
+
+@lru_cache(maxsize=1)
+def _every_category() -> dict[str, frozenset[str]]:
     return word_categories("content_words.txt")
 
 
@@ -185,5 +194,62 @@ def categories(word: str) -> frozenset[str]:
     """The content-word categories of one token ({} for a function word)."""
     forms = stems(word)
     return frozenset(
-        name for name, words in vocabulary().items() if forms & words and name != "implied_by_verb"
+        name
+        for name, words in vocabulary().items()
+        if forms & words and name not in _PHRASE_CATEGORIES
     )
+
+
+# lines of phrases or pairs, no word of their own (`_SHARED_PHRASES`: read before any reader, by `take_backs`
+# and `headings`); and the categories check 1 alone asks (`check1_categories`)
+_SHARED_PHRASES = ("take_back", "empty_value", "empty_label")
+_PHRASE_CATEGORIES = ("implied_by_verb",)
+_CHECK1_ONLY = ("person_relation", "time", "hedge")
+
+
+@lru_cache(maxsize=8192)
+def check1_categories(word: str) -> frozenset[str]:
+    """The categories of one token that check 1 alone asks (a person by relation, a time to come, a hedge):
+    the readers' own frames and asides ("Voice note from mum:") do not take them as content."""
+    forms = stems(word)
+    return frozenset(name for name in _CHECK1_ONLY if forms & _every_category()[name])
+TAKEN_BACK = "takes back part of the instruction: say the instruction again as you mean it"
+
+
+def take_backs(text: str) -> list[Unread]:
+    """The phrases of `text` that take back what was said, with nothing in its place (`take_back` in
+    content_words.txt), each where it closes its clause: no reader guesses which part is taken back.
+
+    >>> [u.words for u in take_backs("Put the apple in the fridge. Scratch that.")]
+    ['Scratch that']
+    >>> take_backs("never mind the order, put the apple in the fridge")
+    []
+    """
+    found = _take_back().finditer(text.replace("’", "'"))
+    return [Unread(m.group(0), "take_back", TAKEN_BACK) for m in found]
+
+
+def refuse_take_backs(instruction: str) -> None:
+    """Raise HTTError naming each phrase that takes back what was said (`take_backs`): asked of every
+    world's reader and every backend before any reading, since no reading can tell which part is taken
+    back, and a partial plan could do exactly that part."""
+    if found := take_backs(instruction):
+        raise HTTError("; ".join(f"{u.words!r} {u.reason}" for u in found))
+
+
+@cache
+def _take_back() -> re.Pattern[str]:
+    return re.compile(rf"(?<![\w'])(?:{phrase_category('take_back')})(?=\s*(?:[,.;:!?)\-—–]|$))", re.I)
+
+
+def shared_words(name: str) -> frozenset[str]:
+    """The words (or `_`-joined phrases) of one line of content_words.txt that no `vocabulary` holds."""
+    return _every_category()[name]
+
+
+@cache
+def phrase_category(name: str) -> str:
+    """The phrases of one `_`-joined category of content_words.txt (`take_back`, `empty_value`) as one
+    regular expression, the longest first, with no context and no flags."""
+    phrases = sorted(_every_category()[name], key=len, reverse=True)
+    return "|".join(r"\s+".join(map(re.escape, p.split("_"))) for p in phrases)

@@ -92,15 +92,9 @@ _DASH = re.compile(r"\s*[—–]\s*|\s+-+\s+")
 
 def _dash_as_comma(text: str, dash: re.Match[str]) -> str:
     """A dash sets off a phrase, as a comma does; not after a step's number ("1 - move ...", "step two -
-    put ...": at most two words before it). After one word that is no number, it ends a label, as a colon
-    does ("Goal - three blocks ...", "Condition - red before blue")."""
-    before = text[: dash.start()].split()
-    if len(before) == 1 and before[0].isalpha() and before[0] not in _NUMBER_WORDS:
-        return ": "
-    return dash[0] if len(before) <= 2 else " , "
-
-
-_NUMBER_WORDS = frozenset("one two three four five six seven eight nine ten i ii iii iv v".split())
+    put ...": at most two words before it). A label's dash ("Goal - ...") is a colon already, as in every
+    world (`headings.unlabelled`)."""
+    return dash[0] if len(text[: dash.start()].split()) <= 2 else " , "
 
 
 def _drop_framing(text: str) -> str:

@@ -24,7 +24,7 @@ from collections import Counter
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.accounting import account
-from nl2hltl2plan.language.content_words import Unread, vocabulary
+from nl2hltl2plan.language.content_words import Unread, take_backs, vocabulary
 from nl2hltl2plan.language.grammar.restated import count_fits
 from nl2hltl2plan.language.grounding import camel_words
 from nl2hltl2plan.language.htt_build import build_htt
@@ -45,7 +45,7 @@ from nl2hltl2plan.language.tabletop_order import (
     trailing_then_fronted,
     turn_phrases_read,
 )
-from nl2hltl2plan.language.tabletop_remarks import empty_labels_dropped, role_dropped
+from nl2hltl2plan.language.tabletop_remarks import role_dropped
 from nl2hltl2plan.language.tabletop_spelling import misspelt_order_words, names_respelt, order_words_spelt
 from nl2hltl2plan.language.tabletop_waits import plate_waits_read
 from nl2hltl2plan.language.tabletop_wording import (
@@ -115,12 +115,11 @@ _ORDER_SAID = re.compile(
     r"sequential(?:ly)?|in\s+sequence|one\s+(?:after|by)\s+(?:the\s+)?(?:other|one)|(?:sooner|earlier)\s+than)\b"
 )
 _PRIORITY = re.compile(r"\bpriorit(?:y|ies|i[sz]e[sd]?)\b")
-# words that take back or turn round what was asked, with no correction marker to read ("That's wrong.",
-# "Ignore that.", "the other way round", "They're swapped.", "Just kidding."): the grammar reads round them,
-# so this world leaves them unused
-_TAKEN_BACK = re.compile(
-    r"\b(?:wrong|incorrect|ignore|disregard|cancel|never\s*mind|opposite|(?:the\s+)?other\s+way(?:\s+round)?|"
-    r"swapped|reversed|kidding|joking)\b"
+# words that turn round what was asked ("the other way round", "They're swapped."; what takes it back, "That's
+# wrong.", is refused before any reading, `content_words.refuse_take_backs`): the grammar reads round them, so
+# this world leaves them unused
+_TURNED_ROUND = re.compile(
+    r"\b(?:wrong|incorrect|opposite|(?:the\s+)?other\s+way(?:\s+round)?|swapped|reversed)\b"
 )
 # "rather than" / "instead of": a thing or plate not wanted, which no placement of the reading says
 _RATHER_THAN = re.compile(r"\b(?:rather\s+than|instead\s+of|in\s+place\s+of)\b")
@@ -164,17 +163,15 @@ class TabletopReader:
         """An instruction's lines as the one line its line breaks say (a plate heading with its objects
         under it, a list of items one a line), with the names spelt as the world spells them
         ("green_apple", "the plate blue"): `tabletop_lines`; misspelt names and order words written right
-        (`tabletop_spelling`); a label whose value says nothing is asked left out ("Condition - none":
-        `tabletop_remarks.empty_labels_dropped`, until the shared label reading replaces it), and a user
-        story's role ("As a tidy person, I want ..."); "the first thing to do is" as "first"
-        (`tabletop_order.ordinal_things_read`); "the robot puts / has put" said to the one asked
-        (`tabletop_order.robot_addressed`); a clause that looks back on the step before as "then"
-        (`tabletop_order.turn_phrases_read`)."""
+        (`tabletop_spelling`); a user story's role ("As a tidy person, I want ..."); "the first thing to
+        do is" as "first" (`tabletop_order.ordinal_things_read`); "the robot puts / has put" said to the
+        one asked (`tabletop_order.robot_addressed`); a clause that looks back on the step before as
+        "then" (`tabletop_order.turn_phrases_read`)."""
         kinds = {camel_words(t): _is_plate(t) for t in self.world.object_types()}
         text = names_spelt(stops_read(lines_joined(lines, kinds)), kinds)
         text = bracketed_list_opened(text, kinds)  # "sort fruit (green apple -> pink plate, ...)"
         mentions = mention_pattern(kinds, re.I)
-        text = role_dropped(empty_labels_dropped(text, mentions), mentions)  # "Condition - none", "As a Y,"
+        text = role_dropped(text, mentions)  # "As a tidy person, I want ..."
         text = robot_addressed(ordinal_things_read(text, mentions))  # "The first thing is ...", "it puts"
         text = turn_phrases_read(text)  # "Having done that,", "Begin with A and end with B"
         return order_words_spelt(names_respelt(text, kinds))
@@ -262,8 +259,9 @@ class TabletopReader:
         for found in _RELATION_VERB.finditer(res.instruction.lower()):
             why = "an order between placements that this reading does not take"
             out[found[0]] = Unread(found[0], "order", why)
-        for found in _TAKEN_BACK.finditer(res.instruction.lower()):
-            out[found[0]] = Unread(found[0], "negation", "it may take back what was asked: say what is meant")
+        for found in _TURNED_ROUND.finditer(res.instruction.lower()):
+            why = "it may turn round what was asked: say what is meant"
+            out[found[0]] = Unread(found[0], "negation", why)
         for word in misspelt_order_words(res.instruction):
             out[word] = Unread(word, "order", "it may misspell an order word: which one is not guessed")
         for found in _RATHER_THAN.finditer(res.instruction.lower()):
@@ -353,7 +351,9 @@ def read_pairs(text: str, types: set[str]) -> Reading | None:
     plain, total_counts = total_counts_read(plain)  # "- those four placements, that's all": checked below
     unread_order = _RELATION_VERB.search(plain) or _ORDER_MATTERS.search(plain) or _ORDER_SAID.search(plain)
     labels_unread = _ALTERNATIVES.search(text.lower()) or _ENTRIES.search(text.lower())
-    labels_unread = labels_unread or _TAKEN_BACK.search(text.lower())  # "That's wrong.": never read round
+    labels_unread = labels_unread or _TURNED_ROUND.search(text.lower())  # "swapped": never read round
+    if take_backs(text):
+        return None
     if stated_not_asked(plain, by_words) is not None or unread_order or labels_unread:
         return None
     plain, last_free = last_group_free(plain)

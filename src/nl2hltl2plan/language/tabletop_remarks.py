@@ -28,6 +28,7 @@ import re
 from nl2hltl2plan.language.content_words import (
     categories,
     free_order_phrase,
+    phrase_category,
     phrase_list_pattern,
     phrase_words,
 )
@@ -95,6 +96,7 @@ def remarks_read(text: str, mention: re.Pattern[str], name_words: frozenset[str]
     (see the module docstring): courtesy, list headings and frames (`frame_read`; none with a word of a name
     in `name_words`: "the yellow" is a plate) removed, freedom statements said as "in any order" or "within
     each group in any order". Any other clause is left as it is, for the readers."""
+    text = _ORDER_NONE.sub(" in any order", text)  # "Order: none": no order is asked
     text = _ORDER_LABEL.sub(" the order is ", _SENTENCE_PIECE.sub(lambda m: _opener_dropped(m[0]), text))
     text = reasons_dropped(text, mention, name_words)
     for pieces in (_SENTENCE_PIECE, _CLAUSE):
@@ -149,6 +151,12 @@ def _opener_dropped(sentence: str) -> str:
 # label with its value, read as one statement
 _ORDER_LABEL = re.compile(
     r"(?:^|(?<=[(\n.;!?]))\s*(?:order(?:ing)?|sequence)\s*[:?]\s*(?=[a-z])", re.IGNORECASE
+)
+# an order label whose value says that nothing is asked ("Order: none", "Sequence - n/a"; the values are
+# content_words.txt's `empty_value`, as `headings` reads other labels): no order
+_ORDER_NONE = re.compile(
+    rf"(?:^|(?<=[(\n.;!?]))\s*(?:order(?:ing)?|sequence)\s*:\s*(?:{phrase_category('empty_value')})\s*(?=[.;!?)]|$)",
+    re.IGNORECASE,
 )
 _ASKING = frozenset("i i'd we we'd want need would to".split())  # "I'd like you to sort the fruit:"
 # a clause that only urges, closes or announces ("make it so", "off you go", "quick one")
@@ -336,31 +344,6 @@ def _freedom_read(clause: str) -> str | None:
     if _NEGATION.search(rest) or not set(re.findall(r"[a-z']+", rest)) <= _FREEDOM_FILLER:
         return None
     return "within each group in any order" if _EACH_GROUP.search(clause) else "in any order"
-
-
-# ---- a label whose value says that nothing is asked ("Condition - none", "Constraints: n/a") ---------------
-# Interim, in this one place: h100's shared heading and label reading is to replace it. A label of one to
-# three words that names nothing, opening a sentence, with a value that says "nothing" and closing it.
-_EMPTY_LABEL = re.compile(
-    r"(?:^|(?<=[.;!?\n]))\s*(?P<label>[A-Za-z]+(?:\s+[A-Za-z]+){0,2})\s*(?::|\s-+\s|\s–\s|\s—\s)\s*"
-    r"(?:none|n/?a|nil|nothing|not\s+applicable|none\s+(?:needed|given|set)|-+|–|—)\s*(?:[.;!]+|(?=\n)|$)",
-    re.IGNORECASE,
-)
-
-
-def empty_labels_dropped(text: str, mention: re.Pattern[str]) -> str:
-    """`text` without its labels whose value says that nothing is asked ("Goal - put ... . Condition -
-    none." -> "Goal - put ... ."); a label that names a thing or plate stays ("Oranges: none" asks that
-    none go anywhere, which no placement says).
-
-    >>> empty_labels_dropped("Goal - put the carrot on it. Condition - none.", re.compile("carrot"))
-    'Goal - put the carrot on it.'
-    """
-
-    def drop(m: re.Match[str]) -> str:
-        return m[0] if mention.search(m["label"]) else ""
-
-    return _EMPTY_LABEL.sub(drop, text).strip()
 
 
 # ---- a user story's role ("As a hungry user, I want ...") --------------------------------------------------

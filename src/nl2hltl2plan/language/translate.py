@@ -28,9 +28,11 @@ from typing import TYPE_CHECKING, Literal, Protocol, Self, TypeVar, get_args
 from nl2hltl2plan.domain.task_kinds import SLOTS, State
 from nl2hltl2plan.errors import HTTError, LLMError, WorldError
 from nl2hltl2plan.language.accounting import account, unfilled_slots
+from nl2hltl2plan.language.content_words import refuse_take_backs
 from nl2hltl2plan.language.counts import take_every_instance
 from nl2hltl2plan.language.courtesy import without_courtesy
 from nl2hltl2plan.language.grounding import AffordanceLookup, Grounder, world_lookup
+from nl2hltl2plan.language.headings import unlabelled
 from nl2hltl2plan.language.htt_build import build_htt
 from nl2hltl2plan.language.llm.client import LLMClient
 from nl2hltl2plan.language.llm_reading import cross_check, llm_leaf_actions, read_with_llm
@@ -108,14 +110,16 @@ def translate(
         )
     # each line's own spaces collapsed, its indentation kept (a nested list's sub-item says what it is under)
     indent = [line[: len(line) - len(line.lstrip())] for line in instruction.splitlines()]
+    # "Goal - ...", "Condition - none": labelled lines read alike in every world (`headings`)
     lines = [
-        i + " ".join(line.split())
+        i + unlabelled(line)
         for i, line in zip(indent, instruction.splitlines(), strict=True)
-        if line.strip()
+        if unlabelled(line)
     ]
-    instruction = " ".join(instruction.split())
+    said, instruction = " ".join(instruction.split()), " ".join(" ".join(lines).split())
     if not instruction:
-        raise HTTError("empty instruction")
+        raise HTTError(f"nothing to do: {said!r} asks nothing" if said else "empty instruction")
+    refuse_take_backs(instruction)  # "scratch that", "just kidding": every world, every backend
     types = set(world.object_types()) if world is not None else None
     scene = world.name if world is not None else None
     reader = world_reader(world)  # the world's own reading around the shared grammar, if it has one

@@ -252,7 +252,8 @@ _NUMBER = r"(?:\d+|a|an|one|two|three|four|five|six|ten|fifteen|twenty|thirty|a 
 _TIME = re.compile(
     rf"\b(?:(?:for|in|within|after)\s+{_NUMBER}\s+(?:seconds?|minutes?|mins?|hours?)"
     r"|for a (?:while|bit|moment)|(?:at|for|by|until)\s+\d{1,2}(?::\d\d)?(?:\s*(?:am|pm|o'clock))?"
-    r"|(?:before|after|around)\s+\d{1,2}(?::\d\d(?:\s*[ap]m)?|\s*(?:am|pm|o'clock)))\b"
+    r"|(?:before|after|around)\s+\d{1,2}(?::\d\d(?:\s*[ap]m)?|\s*(?:am|pm|o'clock))"
+    r"|(?:in\s+the|this|every|each|tomorrow|at)\s+(?:morning|afternoon|evening|night))\b"
 )
 # "when the microwave is free", "once the drawer is empty": a state no task brings about
 _STATE_CONDITION = re.compile(
@@ -260,9 +261,23 @@ _STATE_CONDITION = re.compile(
     r"(?:is|are|gets|becomes)\s+(?:not\s+)?(?:free|empty|full|open|opened|closed|shut|ready|available|dirty|busy|"
     r"occupied|wet|dry|off|on)\b(?!\s+(?:the|a|an|top)\b)"
 )
+# "when the movie ends", "before the guests arrive": an event of something that is no thing of the world (a
+# named thing's event, "after the apple finishes cooling", is left to the readers)
+_EVENT = re.compile(
+    r"\b(?:when|whenever|once|after|before|until|till|as soon as)\s+"
+    r"(?:the|a|an|my|your|our|his|her|their)?\s*"
+    r"(?P<who>[a-z]+(?:\s+[a-z]+)?)\s+(?:ends?|starts?|begins?|finish(?:es)?|arrives?|leaves?|comes?|returns?"
+    r"|wakes?(?:\s+up)?|rings?|stops?|is\s+over|gets?\s+(?:home|back|here|up))\b"
+)
+# who may end or finish a step of the task itself ("after you finish", "when both are done")
+_DOERS = frozenset("you we i it they that this these those both each all everything robot robots".split())
 # "Optional: put X on Y", "optionally", "time permitting": a step the spec would have to leave to the robot's
 # choice, which no hierarchical spec says (every task of it is required), so the words are refused; "the
 # order is optional" is a freedom of the order (the free-order phrases), not of a step
+# "in the fridge, or the sink, whichever": a choice left to the robot ("whichever order": a free order)
+_CHOICE = re.compile(
+    r"\bwhichever\b(?=\s*(?:[,.;!?]|$|(?:is|one|works|suits)\b|you\s+(?:like|prefer|want)\s*(?:[,.;!?]|$)))"
+)
 _OPTIONAL = re.compile(r"\b(?:optional(?:ly)?|time permitting|if you feel like it)\b")
 _ORDER_TOPIC = re.compile(r"\b(?:order|ordering|sequence)\b")
 # "same as yesterday", "like last time", "the usual", "as always": an instruction given before, which the
@@ -307,6 +322,7 @@ def vague_words(instruction: str, mentions: list[Mention]) -> list[Unread]:
         if not (m.group(0).endswith("away") and _PLACE_AFTER.match(lowered, m.end()))  # "away in a cabinet"
     ]
     out += [Unread(m.group(0), "count", "no base task takes a time") for m in _TIME.finditer(lowered)]
+    out += [Unread(m[0], "place", "a choice left open: say which one") for m in _CHOICE.finditer(lowered)]
     out += [
         Unread(m.group(0), "condition", "an optional step: the spec requires every task; say it or drop it")
         for m in _OPTIONAL.finditer(lowered)
@@ -315,6 +331,12 @@ def vague_words(instruction: str, mentions: list[Mention]) -> list[Unread]:
     out += [
         Unread(m.group(0), "action", "it points at an instruction this one does not contain: say the tasks")
         for m in _UNSEEN_INSTRUCTION.finditer(lowered)
+    ]
+    out += [
+        Unread(m[0], "condition", "no base task waits for an event: say what to do")
+        for m in _EVENT.finditer(lowered)
+        if m["who"].split()[0] not in _DOERS
+        and not any(m.start("who") <= x.char_start < m.end("who") for x in mentions)
     ]
     return out + [
         Unread(m.group(0), "condition", "no base task waits on a state: say what to do")
@@ -403,8 +425,8 @@ def _correction_not_taken(
     w, prev, nxt = toks[i][0], toks[i - 1][0] if i else "", toks[i + 1][0] if i + 1 < len(toks) else ""
     if (w == "mean" and (prev != "i" or nxt in ("it", "that"))) or (w == "rather" and prev != "or"):
         return False
-    if w == "scratch" and nxt != "that":
-        return False
+    if (w == "scratch" and nxt != "that") or (w == "wait" and prev != "no"):
+        return False  # "scratch the paint", "wait for it": no correction
     start = sentence_start(instruction, toks[i][1])
     if w in ("sorry", "oops") and start and not instruction[start : toks[i][1]].strip(" ,"):
         # opening its sentence, an own mistake takes back the sentence before ("put the book on the desk
@@ -413,3 +435,35 @@ def _correction_not_taken(
     taken = [m for m in mentions if start <= m.char_start < toks[i][1]]
     used = {t for _, _, st in parse.slots() for t in st} | parse.implied()
     return bool(taken) and bool(set(taken[-1].entry.types) & used)
+
+
+# a fragment after an instruction ("Hers too.", "Both of them.", "And the other one."): words that refer
+# to a thing (`_REFERRING`) and words that only join or point (`_JOINING`), no verb and no named thing
+_REFERRING = frozenset(
+    "hers his theirs mine yours ours both other others one ones same too also another rest remaining again "
+    "either".split()
+)
+_JOINING = DETERMINERS | frozenset(
+    "and then plus please now next for as well with to it they them that's is are of here there".split()
+)
+FRAGMENT = "a fragment that names no thing and no action: say the whole task (which thing, what to do)"
+
+
+def fragments(instruction: str, mentions: list[Mention]) -> list[Unread]:
+    """Sentences after the first that only refer ("Hers too.", "Both of them.", "Same again."): which thing
+    and which task they mean is not said, so they are named, never dropped. A fragment that names a thing
+    ("The cup too.") is left to the readers and to check 1's nouns."""
+    out = []
+    for m in re.finditer(r"[^.;!?\n]+", instruction):
+        words = [w for w, _, _ in tokens(m.group(0))]
+        named = any(m.start() <= n.char_start < m.end() for n in mentions)
+        if (
+            m.start() > 0
+            and words
+            and not named
+            and set(words) <= _REFERRING | _JOINING
+            and set(words) & _REFERRING
+            and not any(c.startswith("verb_") for w in words for c in categories(w))
+        ):
+            out.append(Unread(m.group(0).strip(" ,"), "fragment", FRAGMENT))
+    return out
