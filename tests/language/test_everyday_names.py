@@ -12,7 +12,8 @@ from nl2hltl2plan.language.grounding import lookup
 from nl2hltl2plan.language.learned.inference import parse_instruction
 
 KITCHEN = {
-    "Lettuce", "Potato", "Mug", "Cup", "Fridge", "Microwave", "CoffeeMachine", "CounterTop", "SinkBasin",
+    "Lettuce", "Potato", "Apple", "Mug", "Cup", "Fridge", "Microwave", "CoffeeMachine", "CounterTop",
+    "SinkBasin",
 }  # fmt: skip
 BATHROOM = {"SoapBar", "SoapBottle", "Toilet", "ToiletPaper", "ToiletPaperHanger", "Shelf", "ScrubBrush"}
 LIVING_ROOM = {"Statue", "Shelf", "Box", "RemoteControl", "Sofa", "HousePlant", "TeddyBear"}
@@ -83,6 +84,11 @@ def test_a_place_beside_a_destination_a_treatment_implies_is_where_it_is() -> No
         tasks, unread = read(text, KITCHEN)
         assert len(tasks) == 1 and tasks[0].endswith("Mug -> CoffeeMachine"), (text, tasks)
         assert unread == [], (text, unread)
+    # a phrase that names the destination with another thing ("the coffee maker mug location") stays a
+    # place the treatment implies: its "mug" is no second mug
+    text = ("Put a mug of water in the coffee maker mug location. Once the mug is in the coffee maker, put a "
+            "microwaved apple in the fridge.")  # fmt: skip
+    assert read(text, KITCHEN)[1] == []
     # near miss: a counter that no task uses and that says where nothing is stays named
     _, unread = read("heat the mug in the coffee maker and put it in the sink, and the counter", KITCHEN)
     assert any("counter" in u for u in unread), unread

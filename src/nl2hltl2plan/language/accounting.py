@@ -198,7 +198,7 @@ def _nouns(
     for phrase in _phrases(instruction, mentions, toks):
         if any(
             m.entry.canonical in implied or m.surface.lower().split()[-1] in implied_words for m in phrase
-        ) and not any(m.entry.canonical in destinations for m in phrase):
+        ) and not all(m.entry.canonical in destinations for m in phrase):
             implied_places += phrase
             continue
         groups.setdefault(frozenset(m.entry.canonical for m in phrase), []).append(phrase)
