@@ -1,5 +1,5 @@
-"""Issue 28: every scene type is nameable by its everyday name ("the cabbage", "the freezer", "the soap
-dispenser", "the trophy"; `everyday_names.txt`), read through the default offline reader (grammar, slot
+"""Issue 28: every scene type is nameable by its everyday name ("the cabbage", "the freezer", "the
+trophy", "the toilet brush"; `everyday_names.txt`), read through the default offline reader (grammar, slot
 and structure models, then check 1), with the near misses the longer names must not swallow; and check 1
 judges a place named beside a destination the same whether or not a treatment implies that destination."""
 
@@ -34,7 +34,6 @@ def read(text: str, types: set[str]) -> tuple[list[str], list[str]]:
         ("cabbage", "Lettuce"),
         ("head of cabbage", "Lettuce"),
         ("trophy", "Statue"),
-        ("soap dispenser", "SoapBottle"),
         ("pepper dispenser", "PepperShaker"),
         ("toilet paper dispenser", "ToiletPaperHanger"),
         ("toilet brush", "ScrubBrush"),
@@ -67,15 +66,13 @@ def test_the_cabbage_goes_in_the_freezer() -> None:
     )
 
 
-def test_the_soap_dispenser_is_the_soap_bottle_and_plain_soap_stays_the_bar() -> None:
-    assert read("put the soap dispenser on the toilet", BATHROOM) == (["place SoapBottle -> Toilet"], [])
-    # near miss: "soap" alone is first the bar of soap
-    assert read("put the soap on the toilet", BATHROOM) == (["place SoapBar -> Toilet"], [])
-    # near miss: the toilet paper dispenser holds the roll, it is no soap bottle
+def test_a_dispenser_of_pepper_or_toilet_paper_is_that_things_holder_not_a_second_thing() -> None:
     assert read("put the toilet paper on the toilet paper dispenser", BATHROOM) == (
         ["place ToiletPaper -> ToiletPaperHanger"],
         [],
     )
+    # near miss: the toilet paper itself is still the paper
+    assert read("put the toilet paper on the shelf", BATHROOM) == (["place ToiletPaper -> Shelf"], [])
 
 
 def test_the_trophy_is_the_statue() -> None:
