@@ -194,10 +194,13 @@ def _nouns(
     slots = parse.slots()
     groups: dict[frozenset[str], list[list[Mention]]] = {}
     implied_places: list[Mention] = []  # "the refrigerator" of a cooling task: still a place the task uses
+    # a place a treatment implies that is also where a task puts a thing ("the heated mug into the coffee
+    # maker on the counter") is matched as that place, as it is without the treatment
+    destinations = {t for _, role, st in slots if role != "object" for t in st}
     for phrase in _phrases(instruction, mentions, toks):
         if any(
             m.entry.canonical in implied or m.surface.lower().split()[-1] in implied_words for m in phrase
-        ):
+        ) and not all(m.entry.canonical in destinations for m in phrase):
             implied_places += phrase
             continue
         groups.setdefault(frozenset(m.entry.canonical for m in phrase), []).append(phrase)

@@ -26,6 +26,7 @@ from __future__ import annotations
 
 import re
 from functools import lru_cache
+from importlib import resources
 
 from nl2hltl2plan.language.content_words import free_order_phrase
 from nl2hltl2plan.language.grammar.restated import count_fits, restated
@@ -110,6 +111,28 @@ def _reference_sentence(m: re.Match[str]) -> str:
     return f". {ref}, " if inside else f"{m['lead']}{ref}, "
 
 
+@lru_cache(maxsize=1)
+def _names() -> tuple[re.Pattern[str], dict[str, str]]:
+    """`everyday_names.txt` as one pattern (longest names first) and each name's lexicon name."""
+    table: dict[str, str] = {}
+    text = resources.files("nl2hltl2plan.language").joinpath("everyday_names.txt").read_text()
+    for raw in text.splitlines():
+        line = raw.split("#", 1)[0].strip()
+        if line:
+            names, target = (p.strip() for p in line.split(" : "))
+            table.update({n.strip(): target for n in names.split(",") if n.strip()})
+    longest_first = sorted(table, key=len, reverse=True)
+    alternatives = "|".join(re.escape(n).replace(r"\ ", r"\s+") for n in longest_first)
+    return re.compile(rf"(?<![\w'-])(?:{alternatives})(?![\w'-])", re.I), table
+
+
+def everyday_names(text: str) -> str:
+    """The everyday names of scene types that the lexicon does not list ("the freezer", "the cabbage",
+    "the soap dispenser") written as the lexicon's names (`everyday_names.txt`)."""
+    pattern, table = _names()
+    return pattern.sub(lambda m: table[" ".join(m[0].lower().split())], text)
+
+
 @lru_cache(maxsize=1024)  # check 1 asks again for every reading it judges (about five per instruction)
 def everyday(text: str) -> str:
     """The text with the everyday styles above rewritten onto the forms the grammar reads (a pure function
@@ -117,7 +140,7 @@ def everyday(text: str) -> str:
     text = _BARE.sub(lambda m: _BARE_CONTRACTION[m[1].lower()], _UR_DONE.sub("you're ", text))
     if _FREE_REMARK.search(text):  # "1. X. 2. Y. Any order is fine.": the numbers only list the steps
         text = _NUMBERED.sub(lambda m: m["lead"], text)
-    text = respelt(text)  # misspelt names of things (language/spelling.py)
+    text = everyday_names(respelt(text))  # misspelt names of things (language/spelling.py), everyday names
     text = _REFERENCE_TO_ALL.sub(_reference_sentence, text)
     text = _PAREN_FREE_ORDER.sub(", in any order", text)
     text = _STEP_COLON.sub(r"\1 ", _ARROW.sub(" onto ", text))
