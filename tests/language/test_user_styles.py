@@ -68,6 +68,14 @@ PUT_EGG, PUT_MUG = "place Egg -> Fridge", "place Mug -> SinkBasin"
             [PUT_EGG, PUT_MUG],
             {(PUT_EGG, PUT_MUG)},
         ),
+        *[  # a done-clause opening a sentence with no comma: "both" / "they" are the tasks before, no count
+            (
+                f"put the egg in the fridge. then put the mug in the sink. {opener} put the pen in the drawer",
+                [PUT_EGG, PUT_MUG, "place Pen -> Drawer"],
+                {(PUT_EGG, PUT_MUG), (PUT_EGG, "place Pen -> Drawer"), (PUT_MUG, "place Pen -> Drawer")},
+            )
+            for opener in ("once both are done", "Once both are finished", "When both are done")
+        ],
         (  # "it" in a new sentence after a finished task: a task of its own on the same object
             "put the mug in the sink. then put it in the coffee machine",
             [PUT_MUG, "place Mug -> CoffeeMachine"],

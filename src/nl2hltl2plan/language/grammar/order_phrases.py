@@ -107,6 +107,28 @@ _SUBJECT_OR_AUX = frozenset(
 )
 
 
+# "Once both are done put the pen in the box": a sentence that opens with a clause saying the tasks before
+# are done, and no comma before its main verb; "both" / "they" would otherwise be read with the main
+# clause ("both ... pens") and the order lost. The comma sets the clause apart, as the writer meant.
+_DONE_OPENER = re.compile(
+    r"(?P<clause>(?:^|(?<=[.;!?]\s))(?:once|after|when)\s+"
+    r"(?:both(?:\s+of\s+(?:them|those|these))?|they|those|these|(?:those|these|the)\s+two|all(?:\s+of)?"
+    r"(?:\s+(?:that|this|those|them))?|everything|that|this|it)"
+    r"\s+(?:are|is|'re|'s|have\s+been|has\s+been)\s+(?:all\s+)?(?:done|finished|there|in\s+place|sorted))"
+    r"\s+(?=(?:put|place|move|set|take|bring|then|go)\b)",
+    re.IGNORECASE,
+)
+
+
+def done_opener_closed(text: str) -> str:
+    """ "Once both are done put Y" -> "Once both are done, put Y" (see above).
+
+    >>> done_opener_closed("Put A in B. once both are done put the pen in the box")
+    'Put A in B. once both are done, put the pen in the box'
+    """
+    return _DONE_OPENER.sub(lambda m: f"{m['clause']}, ", text)
+
+
 _NO_CLAUSE = frozenset({"that", "this", "it", "everything", "all", "both"})  # "once that's done": "then"
 _LEADS = re.compile(r"\s*(?:(?:only|right|just)\s+)?(?:after|before|once|when|until|while)\b", re.IGNORECASE)
 
