@@ -33,6 +33,7 @@ from nl2hltl2plan.language.handover_places import (
     mark_places,
     note_one_per_region,
 )
+from nl2hltl2plan.language.handover_regex import apply, rewrite_table
 from nl2hltl2plan.language.handover_registers import REGISTERS
 from nl2hltl2plan.language.handover_scene import (
     COLOUR,
@@ -62,6 +63,7 @@ _TOUCHED = r"(?:touched|picked|grasped|grabbed|handled|moved|lifted)"
 TYPOS = typo_table()
 # compiled once: with the reader's other tables they are more than `re`'s cache holds
 _REWRITES = tuple((re.compile(pattern), replacement) for pattern, replacement in REWRITES)
+_TABLE = rewrite_table(REGISTERS + _REWRITES)  # each with the literals its matches need
 
 
 @lru_cache(maxsize=8192)  # a sentence is normalised again for each restated reading of its text
@@ -81,8 +83,7 @@ def normalise(sentence: str) -> str:
     text = re.sub(r"\b(\w+)'s\b", r"\1 s", text)  # red's -> red s (a possessive)
     text = re.sub(r"[a-z]+", lambda w: TYPOS.get(w.group(0), w.group(0)), text)
     text = _drop_framing(unwished(unspoken(text)))
-    for pattern, replacement in REGISTERS + _REWRITES:
-        text = pattern.sub(replacement, text)
+    text = apply(_TABLE, text)
     text = re.sub(r"\bplease\b\s*,?", " ", text)  # politeness anywhere: "all three blocks please move to ..."
     return " ".join(text.split())
 

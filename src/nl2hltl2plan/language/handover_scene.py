@@ -5,11 +5,11 @@ its phrases replaced by placeholders (`Marked`)."""
 
 from __future__ import annotations
 
-import re
 from dataclasses import dataclass, field
 from typing import Literal
 
 from nl2hltl2plan.errors import HTTError, WorldError
+from nl2hltl2plan.language.handover_regex import sub
 from nl2hltl2plan.worlds.handover_world import REGIONS, Layout, layout
 from nl2hltl2plan.worlds.world import Cell, World
 
@@ -119,4 +119,4 @@ class Marked:
     last_place: Place | None = None  # the last place a block may go to ("move them there" in the next)
 
     def sub(self, pattern: str, make) -> None:  # make(match) -> replacement text
-        self.text = re.sub(pattern, make, self.text)
+        self.text = sub(pattern, make, self.text)

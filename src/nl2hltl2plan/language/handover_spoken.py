@@ -32,6 +32,7 @@ import re
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.content_words import phrase_list_pattern
 from nl2hltl2plan.language.grammar.everyday import HESITATION
+from nl2hltl2plan.language.handover_regex import apply, rewrite_table
 from nl2hltl2plan.language.handover_words import GERUND_VERBS, NEGATED_GERUNDS, VERB
 
 # contractions spelled out first, so that each rule below has one form to match
@@ -225,7 +226,7 @@ _NARRATION: tuple[tuple[str, str], ...] = (
 
 # compiled once: with the reader's other tables they are more than `re`'s cache holds
 _STEPS = tuple(
-    tuple((re.compile(pattern), replacement) for pattern, replacement in table)
+    rewrite_table((re.compile(pattern), replacement) for pattern, replacement in table)
     for table in (_CONTRACTIONS, _FILLERS, _NARRATION)
 )
 
@@ -236,9 +237,9 @@ def unspoken(text: str) -> str:
     """The sentence with its spoken fillers, hedges, repeated phrases and narration normalised away (see
     the module docstring); a self-correction that says something else is refused."""
     contractions, fillers, narration = _STEPS
-    text = _apply(fillers, _apply(contractions, _clause_breaks(text)))
+    text = apply(fillers, apply(contractions, _clause_breaks(text)))
     text = _COMMAS.sub(" ,", _said_once(text))  # the commas left where fillers were
-    text = _apply(narration, _apply(fillers, text))  # fillers again: an opener behind a hesitation
+    text = apply(narration, apply(fillers, text))  # fillers again: an opener behind a hesitation
     text = _resumed(_COMMAS.sub(" ,", text))
     text = re.sub(r"^\s*,|,\s*$", " ", text)
     text = re.sub(r"\b(the|a|and|to|on|in)\s+\1\b", r"\1", text)  # a stutter: "the the"
@@ -307,12 +308,6 @@ def _resumed(text: str) -> str:
         return f"{match.group(1)} {match.group('conj') or ''}{match.group('before')}{said}"
 
     return _DISLOCATED.sub(put_back, text)
-
-
-def _apply(table: tuple[tuple[re.Pattern[str], str], ...], text: str) -> str:
-    for pattern, replacement in table:
-        text = pattern.sub(replacement, text)
-    return text
 
 
 def _said_once(text: str) -> str:

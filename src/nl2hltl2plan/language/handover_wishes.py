@@ -40,6 +40,7 @@ from __future__ import annotations
 
 import re
 
+from nl2hltl2plan.language.handover_regex import apply, rewrite_table
 from nl2hltl2plan.language.handover_words import GERUND_VERBS, NEGATED_GERUNDS, VERB
 
 # a participle after its object in a wish ("i'd like the blocks moved to ..."), with its verb
@@ -193,7 +194,7 @@ _RULES: tuple[tuple[str, str], ...] = (
         r"only one \1 in each region",
     ),
 )
-_COMPILED = tuple((re.compile(pattern), replacement) for pattern, replacement in _RULES)
+_COMPILED = rewrite_table((re.compile(pattern), replacement) for pattern, replacement in _RULES)
 _WISH_VERB = re.compile(rf"{_START}{_WISH_BEFORE_VERB}\s+(?=(?:{VERB}|swap|exchange|keep|make)\b)")
 # "would you mind moving ...": a request, read as its verb (a touching verb is not a placing request)
 _MINDED = {g: v for g, v in (GERUND_VERBS | NEGATED_GERUNDS).items() if v not in ("touch", "grab", "pick up")}
@@ -279,6 +280,4 @@ def unwished(text: str) -> str:
     text, wishes = _PAST_WISH.subn(_past_as_command, text)
     if wishes:
         text = _AND_WENT.sub(r"\1 move \2", text)
-    for pattern, replacement in _COMPILED:
-        text = pattern.sub(replacement, text)
-    return text
+    return apply(_COMPILED, text)
