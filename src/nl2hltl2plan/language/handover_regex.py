@@ -38,7 +38,7 @@ def required(pattern: re.Pattern[str]) -> Requirement:
     if parsed.state.flags & re.IGNORECASE:
         return ()
     # the sets with fewest literals first: they fail soonest
-    return tuple(sorted(_sequence(list(parsed)), key=lambda s: (len(s), -min(map(len, s)))))
+    return tuple(sorted(_sequence(parsed.data), key=lambda s: (len(s), -min(map(len, s)))))
 
 
 def _sequence(items: Iterable[tuple[Any, Any]]) -> list[Literals]:
