@@ -133,8 +133,27 @@ _I_SAYS = re.compile(r"\bi\s+(?=would|need|want|am|have|think|wish|hope|was|will
 
 def mark(sentence: str, scene: Scene, before: Marked | None = None) -> Marked:
     """The sentence with its phrases marked; `before`, the sentence before, tells what 'it' and 'these
-    regions' may mean."""
+    regions' may mean. Memoised on what the marking reads (the sentence, the layout, the blocks' starts and
+    the sentence before's last block, group, regions and place): a sentence is marked again for each
+    restated reading of the instruction; the caller gets a copy that its rules may change."""
     previous = before or Marked("")
+    key = (
+        sentence,
+        scene.layout.name,
+        tuple(sorted(scene.starts.items())),
+        (previous.last_one, previous.last_group, previous.last_regions, previous.last_place),
+    )
+    if key not in _MARKED:
+        if len(_MARKED) >= 8192:
+            _MARKED.clear()
+        _MARKED[key] = _marked(sentence, scene, previous)
+    return _MARKED[key].copy()
+
+
+_MARKED: dict[tuple[object, ...], Marked] = {}
+
+
+def _marked(sentence: str, scene: Scene, previous: Marked) -> Marked:
     m = Marked(normalise(sentence))
     _mark_one_per_region(m)
     _mark_arms(m)

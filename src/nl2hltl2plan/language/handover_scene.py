@@ -5,7 +5,7 @@ its phrases replaced by placeholders (`Marked`)."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Literal
 
 from nl2hltl2plan.errors import HTTError, WorldError
@@ -117,6 +117,16 @@ class Marked:
     last_regions: tuple[str, ...] = ()  # the last regions it names ("regions other than these" in the next)
     last_group: tuple[str, ...] = ()  # its one group of several blocks, if one ("move them" in the next)
     last_place: Place | None = None  # the last place a block may go to ("move them there" in the next)
+
+    def copy(self) -> Marked:
+        """A copy whose lists the rules may change (places are frozen, the rest is immutable)."""
+        return replace(
+            self,
+            blocks=[list(b) for b in self.blocks],
+            block_text=list(self.block_text),
+            places=list(self.places),
+            notes=list(self.notes),
+        )
 
     def sub(self, pattern: str, make) -> None:  # make(match) -> replacement text
         self.text = sub(pattern, make, self.text)
