@@ -7,7 +7,7 @@ the word tables' `REWRITES`). Each rewrite changes no meaning:
   "nothing may be placed on R", "an arbitrary empty region", "are each to be moved");
 - narrative: the arms as the subject of a placing verb ("the arms (will) carry the blocks ..."), "before /
   until you touch Y" (before Y is touched), "while you do it", "somewhere along the way" (at any time),
-  "leaving X untouched" ("..., while regions F, G and H remain empty" is the cue reader's kept-empty place);
+  ("..., while regions F, G and H remain empty" is the cue reader's kept-empty place);
 - telegraphic and bulleted: "three objects, three regions: G, H and I" (the regions' count is still
   checked), a pair before its exchange ("red and blue: swap places");
 - emphasis: "no exceptions";
@@ -243,7 +243,6 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     # (before "it" is read as a block)
     (r"\b(while\s+(?:you|we|they)\s+(?:are\s+)?(?:do|doing|perform|performing))\s+it\b", r"\1 this"),
     (r"\b(?:somewhere|at\s+some\s+point)\s+along\s+the\s+way\b", "at any time"),
-    (rf"\b(?:leaving|leave|keeping|keep)\s+({_BLOCK})\s+untouched\b", r"\1 must not be touched"),
     # telegraphic and bulleted
     (
         r"^\s*((?:the\s+)?(?:two|three|four|\d)\s+(?:blocks|objects|pillars|items|cubes|pieces))\s*,\s*"

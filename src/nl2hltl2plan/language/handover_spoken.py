@@ -45,7 +45,6 @@ _CONTRACTIONS = (
     (r"\b(you|we|they)\s*'\s*re\b", r"\1 are"),
     (r"\b(you|we|they|i)\s*'\s*ve\b", r"\1 have"),
     (r"\b(you|we|i)\s*'\s*d\b", r"\1 would"),
-    (r"\bi\s*'\s*m\b", "i am"),
     # spoken spellings
     (r"\bgonna\b", "going to"),
     (r"\bwanna\b", "want to"),
@@ -76,13 +75,11 @@ _FILLERS: tuple[tuple[str, str], ...] = (
     (_SCENE_TIME, r"\1 currently "),
     (rf"\b{_HESITATION}\b", " , ~ , "),  # a soft correction marker: what follows may restate what went before
     (r"\b(?:basically|literally|honestly|yeah|yep|yup)\b", " , "),
-    (r"\bkind\s+of\b(?=\s+(?:" + VERB + r")\b)", " "),
     (r"\boh\b", " , "),
     (r",\s*like\s*(?=,)", " "),  # "the blocks, like, go ..."
     (rf"\b({VERB})\s+like\s+(?=(?:the|all|both|every|each|three|two)\b)", r"\1 "),  # "put like all three ..."
     # unpunctuated (a voice transcript): "and you know only one ..." (an "okay" at the end is a frame word)
     (r"\b(and|so|but)\s+you\s+know\b", r"\1"),
-    (r"\b(?:got\s+it|you\s+see|understood|all\s+good)\s*$", " "),
     # a tag at the end of a clause ("..., right?", "..., okay") or interjections opening one
     (rf",\s*{_INTERJECTION}\s*$", " "),
     (rf"(^|,|\band\b)\s*(?:{_INTERJECTION}\s*(?:,\s*|\s+(?={_INTERJECTION}\b)|\s+(?=so\b)))+", r"\1 "),

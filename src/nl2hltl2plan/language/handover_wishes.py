@@ -114,13 +114,6 @@ _RULES: tuple[tuple[str, str], ...] = (
         r"\1 swap \2",
     ),
     (r"(\b(?:no|nothing|not|never)\b[^,;]*?)\s+(?:on|along)\s+the\s+way(?:\s+there)?\b", r"\1 at any point"),
-    # "..., with nothing put on F until then": until the goal of its sentence is reached, i.e. meanwhile (in
-    # a sentence of its own, "until then" may name an earlier step: left to the reader)
-    (
-        r",\s*with\s+((?:nothing|no\s+(?:objects?|blocks?))\s+(?:put|placed|set|going|allowed)\b[^,;]*?)\s+"
-        r"until\s+then\s*$",
-        r", \1 meanwhile",
-    ),
     (r",\s*with\s+(?=(?:nothing|no\s+(?:objects?|blocks?))\s+(?:put|placed|set|going|allowed)\b)", ", "),
     # a block's next place after "then" or "first and": "then finish on / end up on / go on to region G"
     (
@@ -159,7 +152,6 @@ _RULES: tuple[tuple[str, str], ...] = (
     ),
     (r"\bat\s+your\s+(?:convenience|leisure)\b", "whenever convenient"),
     # a polite tag at the end ("okay" may be gone already: `unspoken` drops it at a clause's end)
-    (r"\s*,?\s*\bif\s+(?:that\s+(?:s|is)(?:\s+(?:okay|ok|alright|fine))?|you\s+do\s+not\s+mind)\s*$", " "),
     (r"\b(could|would|can|will)\s+you\s+(?:possibly|perhaps|kindly)\b", r"\1 you"),
     (
         rf"\b(?:i|we)\s+(?:would\s+like|want|need)\s+((?:regions?\s+)?{_LETTERS})\s+to\s+(?:stay|remain|be\s+kept)\s+"

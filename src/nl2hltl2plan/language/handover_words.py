@@ -118,7 +118,6 @@ _INTENSIFIER = r"(?:(?:very|really|extremely|absolutely|vitally|critically|most|
 # Rewrites applied to the lower-cased sentence before any phrase is read: each maps a variant onto the
 # form the patterns read and changes no meaning ("prior to" -> "before", "whilst" -> "while").
 REWRITES: tuple[tuple[str, str], ...] = (
-    (r"\bi\s*\.\s*e\s*\.?(?=\s|,|$)", " that is "),
     (  # (also after a step said first: "after all of these, the plan is to put ...")
         r"(^|,)\s*(?:your|the|my|our)\s+(?:job|task|goal|mission|assignment|plan)\s*(?:is\s+to\b|:)",
         r"\1 please",
@@ -137,7 +136,6 @@ REWRITES: tuple[tuple[str, str], ...] = (
         r"at\s+(?:any|whatever)\s+(?:point(?:\s+in\s+time)?|moment|stage)|(?:at\s+)?any\s+time\s+you\s+(?:like|want))\b",
         "at any time",
     ),
-    (r"\bat\s+any\s+time\s+at\s+any\s+time\b", "at any time"),
     (r"\bat\s+any\s+time\s+that\s+(?:works|suits)(?:\s+(?:for\s+)?you)?\b", "at any time"),
     (
         r"\b(?:sequentially|in\s+sequence|successively|in\s+succession|consecutively|one\s+after\s+the\s+other)\b",
@@ -230,7 +228,6 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\b(?:somebody|someone|anybody|anyone)\b", "an arm"),  # "until somebody has touched the red block"
     # narrative verbs of moving: "makes a stop at I", "moves on to G", "takes the blue block's place"
     (r"\b(?:makes?|making)\s+a\s+stop\s+(?:at|on|in)\b", "goes to"),
-    (r"\b(?:moves?|goes|go|continues?|travels?)\s+on\s+to\b", "to"),
     (r"\b(?:heads?|heading)\s+(?=to\b|towards?\b)", "goes "),
     (
         r"\b(?:takes?|gets?|occup(?:y|ies))\s+(?=(?:the\s+)?(?:red|blue|yellow)\s+(?:block\s+|one\s+)?s\s+"
@@ -256,7 +253,6 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"^\s*as\s+(?:for|to|regards)\s+(?:the\s+)?(?:order|ordering|sequence)\s*,", " "),
     (r"\b(?:once|when|after)\s+it\s+(?:is|gets|has\s+been\s+placed)\s+there\s*,", " then "),
     (r"\b(?<!to\s)(?<!on\s)(?<!in\s)anywhere\s+(?:empty|free)\b", "to any empty region"),
-    (r"\banywhere\s+(?:empty|free)\b", "any empty region"),
     # "use regions G, H and I for the three blocks": put them there
     (
         r"\buse\s+(regions?\s+[e-j](?:\s*(?:,|and|or)\s*(?:region\s+)?[e-j])*)\s+for\s+"
@@ -266,10 +262,6 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\s*,?\s*\bwhereas\b", ", and"),
     (r"\s*,?\s*\bwhereby\b", ","),
     (rf"^\s*({VERB})\s*:", r"\1"),  # "Transfer: 3 blocks -> opposite side"
-    (
-        r"^\s*(?:here\s+is\s+(?:the|your|my)\s+(?:task|job|plan|instruction)|(?:the|your)\s+task\s+is\s+as\s+follows)\s*:",
-        "please",
-    ),
     (r"\bthe\s+(?:desired\s+)?(?:outcome|result|end\s+state)\s+(?:is|should\s+be)\s+that\b", " "),
     (rf"\bit\s+is\s+{_INTENSIFIER}(?:necessary|required|essential|important)\s+to\b", "please"),
     # a prohibition, before its "it" is read as a block: "it is forbidden to place any object on F"
@@ -469,8 +461,6 @@ REWRITES: tuple[tuple[str, str], ...] = (
     # "please note the red block goes first": a rule, as "note:" is
     (r"^\s*(?:please\s+)?note\s+(?:that\s+)?(?=the\b)", " "),
     (r"\b(has|have|needs?)\s+to\s+get\s+to\b", r"\1 to go to"),  # "the yellow block has to get to ..."
-    # the person addressed as the subject: "After all these are done, you put the yellow block back ..."
-    (r"(^|,|\bthen)\s*(?:you|we)\s+(?=(?:put|place|move|bring|take|transfer|carry|set)\b)", r"\1 "),
     # "each of regions H, I and J can only hold one block, so put the three blocks into them": the world's
     # one-block rule, and the regions named for the goal that follows
     (
