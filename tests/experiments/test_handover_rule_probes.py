@@ -16,68 +16,76 @@ from nl2hltl2plan.language.handover_regex import apply, required, rewrite_table,
 
 PROBES = {
     1: [
-        "Transfer three blocks into the opposite. The blue block should be placed following the red block.",
-        "Transfer three blocks into the opposite. The blue block should be placed later than the red block.",
-        "Please have the three blocks moved to the opposite side, with the red block placed before the blue block.",
-        "So, like, move the three blocks to the opposite side, and, like, the red block goes before the blue block.",
-        "Kinda move the three blocks to the opposite side, with the red block placed before the blue block.",
+        "Transfer three blocks into the opposite. The blue block should be placed following the red "
+        "block.",
+        "Transfer three blocks into the opposite. The blue block should be placed later than the red "
+        "block.",
+        "Please have the three blocks moved to the opposite side, with the red block placed before the "
+        "blue block.",
+        "So, like, move the three blocks to the opposite side, and, like, the red block goes before the "
+        "blue block.",
+        "Kinda move the three blocks to the opposite side, with the red block placed before the blue "
+        "block.",
         "Try to move the three blocks to the opposite side, with red placed before blue.",
         "I wanna move the three blocks to the opposite side, red before blue.",
         "Move the three blocks to the opposite side, red before blue, if possible.",
         "Could you possibly move the three blocks to the opposite side, red before blue?",
         # read by other rules since their own were deleted
-        "Here is the task: transfer three blocks into the opposite. The red block should be placed before the "
-        "blue block.",
+        "Here is the task: transfer three blocks into the opposite. The red block should be placed before"
+        " the blue block.",
         "Move the three blocks to the opposite side, red before blue, got it",
         "Move the three blocks to the opposite side, red before blue, if that's okay.",
     ],
-    2: ["Your task is as follows: put the three blocks on regions H, I and J, one block per region."],
+    2: [
+        "Your task is as follows: put the three blocks on regions H, I and J, one block per region.",
+    ],
     4: [
-        "Transfer three blocks into the opposite regions. Avoid touching the blue block until the red block has "
-        "been touched. After all of these, put the yellow block back to region G.",
-        "Transfer three blocks into the opposite regions. The arm wont touch the blue block until the red block "
-        "has been touched. After all of these, put the yellow block back to region G.",
-        "Transfer three blocks into the opposite regions. We are not touching the blue block until the red block "
-        "has been touched. After all of these, put the yellow block back to region G.",
-        "Transfer three blocks into the opposite regions, leaving the blue block untouched until the red block "
-        "has been touched. After all of these, put the yellow block back to region G.",
-        "Transfer three blocks into the opposite regions. The arm cannot touching the blue block until the red "
-        "block is touched. After all of these, put the yellow block back to region G.",
+        "Transfer three blocks into the opposite regions. Avoid touching the blue block until the red "
+        "block has been touched. After all of these, put the yellow block back to region G.",
+        "Transfer three blocks into the opposite regions. The arm wont touch the blue block until the red"
+        " block has been touched. After all of these, put the yellow block back to region G.",
+        "Transfer three blocks into the opposite regions. We are not touching the blue block until the "
+        "red block has been touched. After all of these, put the yellow block back to region G.",
+        "Transfer three blocks into the opposite regions, leaving the blue block untouched until the red "
+        "block has been touched. After all of these, put the yellow block back to region G.",
+        "Transfer three blocks into the opposite regions. The arm cannot touching the blue block until "
+        "the red block is touched. After all of these, put the yellow block back to region G.",
     ],
     6: [
-        "The red block should be placed before the blue block. Please place the three objects separately amongst "
-        "regions G, H and I.",
-        "We are placing the red block before the blue block. We are transferring the three objects separately to "
-        "regions G, H and I.",
+        "The red block should be placed before the blue block. Please place the three objects separately "
+        "amongst regions G, H and I.",
+        "We are placing the red block before the blue block. We are transferring the three objects "
+        "separately to regions G, H and I.",
         "Red before blue. We are bringing the three objects separately to regions G, H and I.",
     ],
     7: [
-        "Place the red block before the blue block. Put the three objects one after another on region I, and "
-        "refrain from putting anything on regions F, G and H during this period.",
-        "Place the red block before the blue block. Put the three objects one after another on region I, and "
-        "avoid dropping anything on regions F, G and H during this period.",
-        "The red block should be placed before the blue block. Place the three objects one after another to "
-        "region I; no objects can be placed on regions F, G and H during this period, whilst doing so.",
-        "The red block should be placed before the blue block. Place the three objects one after another to "
-        "region I, never dropping anything on regions F, G and H during this period.",
-        "We will be placing the red block before the blue block. We will be placing the three objects one after "
-        "another on region I, and no objects can be placed on regions F, G and H during this period.",
-        "Red goes before blue. We are putting the three objects one after another on region I and we are not "
-        "dropping anything on regions F, G and H during this period.",
-        "Red before blue. Place the three objects one after another to region I, with nothing placed on regions "
-        "F, G and H until then.",
+        "Place the red block before the blue block. Put the three objects one after another on region I, "
+        "and refrain from putting anything on regions F, G and H during this period.",
+        "Place the red block before the blue block. Put the three objects one after another on region I, "
+        "and avoid dropping anything on regions F, G and H during this period.",
+        "The red block should be placed before the blue block. Place the three objects one after another "
+        "to region I; no objects can be placed on regions F, G and H during this period, whilst doing so.",
+        "The red block should be placed before the blue block. Place the three objects one after another "
+        "to region I, never dropping anything on regions F, G and H during this period.",
+        "We will be placing the red block before the blue block. We will be placing the three objects one"
+        " after another on region I, and no objects can be placed on regions F, G and H during this "
+        "period.",
+        "Red goes before blue. We are putting the three objects one after another on region I and we are "
+        "not dropping anything on regions F, G and H during this period.",
+        "Red before blue. Place the three objects one after another to region I, with nothing placed on "
+        "regions F, G and H until then.",
     ],
     8: [
-        "First place the yellow block on region I, then on region G, as well as moving the red and blue blocks "
-        "to any empty region at any time.",
-        "The first step is to place the yellow block on region I. The next step is to place it on region G. Move "
-        "the red and blue blocks to any empty region at any time.",
-        "You put the yellow block on region I first, then you put it on region G, and you move the red and blue "
+        "First place the yellow block on region I, then on region G, as well as moving the red and blue "
         "blocks to any empty region at any time.",
-        "First the yellow block goes to region I and then goes on to region G; move the red and blue blocks to "
-        "any empty region at any time.",
-        "Please first place the yellow block to region I, then place it to region G, and move red and blue "
-        "blocks anywhere empty at any time.",
+        "The first step is to place the yellow block on region I. The next step is to place it on region "
+        "G. Move the red and blue blocks to any empty region at any time.",
+        "You put the yellow block on region I first, then you put it on region G, and you move the red "
+        "and blue blocks to any empty region at any time.",
+        "First the yellow block goes to region I and then goes on to region G; move the red and blue "
+        "blocks to any empty region at any time.",
+        "Please first place the yellow block to region I, then place it to region G, and move red and "
+        "blue blocks anywhere empty at any time.",
     ],
 }
 
