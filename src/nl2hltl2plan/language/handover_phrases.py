@@ -269,12 +269,15 @@ def _mark_one_per_region(m: Marked) -> None:
         r"(?:\s+only)?\b",
         rf"(?<=,)\s*(?:with\s+)?(?:one|a\s+single)\s+{NOUN}\s+(?:each|apiece)\b",  # "..., one block each"
         rf"\b(?:with\s+)?{one}\s+(?:per|in\s+each|on\s+each|for\s+each)\b(?!\s+of\b)",
-        rf"(?:,\s*)?\b(?:with\s+)?no\s+two(?:\s+{NOUNS})?\s+(?:(?:may|can|should|will)\s+)?(?:sharing|share|occupy|be\s+(?:in|on)|in|on)\s+"
-        rf"(?:a\s+|the\s+same\s+)?{region}\b",
+        rf"(?:,\s*)?\b(?:with\s+)?(?:no|never)\s+two(?:\s+{NOUNS})?\s+(?:(?:may|can|should|will)\s+)?(?:sharing|share|occupy|be\s+(?:in|on)|in|on)\s+"
+        rf"(?:a\s+|one\s+|a\s+single\s+|the\s+same\s+)?{region}\b",
+        # "a region never gets more than one block", "any region may not hold two blocks"
+        rf"\b(?:a|any|each|every)\s+{region}\s+(?:(?:can|may|must|should|will|shall)\s+)?(?:never|not|cannot)\s+(?:ever\s+)?"
+        rf"{hold}\s+(?:more\s+than\s+(?:one|a\s+single|1)(?:\s+{NOUN}|\s+of\s+them)?|(?:two|2)\s+{NOUNS})\b",
         rf"\beach\s+{NOUN}\s+(?:gets|has|takes|goes\s+(?:to|in|into))\s+(?:its\s+own|a\s+(?:different|separate))\s+{region}\b",
         rf"\b(?:do\s+not|never)\s+(?:put|place)\s+(?:more\s+than\s+(?:one|a\s+single)(?:\s+{NOUN})?|(?:two|2)\s+{NOUNS})\s+"
         r"(?:in|on|into|onto)\s+"
-        rf"(?:a|any|each|the\s+same)\s+{region}\b",
+        rf"(?:a|any|each|one|a\s+single|the\s+same)\s+{region}\b",
     )
 
     note = partial(note_one_per_region, m)

@@ -208,7 +208,11 @@ _NARRATION: tuple[tuple[str, str], ...] = (
         r"\b(?:keep|stay)\s+(?:off|away\s+from|clear\s+of)\s+(?=(?:the\s+)?(?:red|blue|yellow)\b)",
         "do not touch ",
     ),
-    (r"\b(?:you\s+)?(?:cannot|can\s+not|do\s+not|no)\s+doubl(?:e|ing)\s+up\b", "one block per region"),
+    (
+        r"\b(?:you\s+)?(?:cannot|can\s+not|do\s+not|no)\s+doubl(?:e|ing)\s+up"
+        r"(?:\s+(?:on|in)\s+(?:a|any|one|the\s+same)\s+(?:region|spot|place|area|cell))?\b",
+        "one block per region",
+    ),
     (r"(?<!\bit\s)\bdoes\s+not\s+matter\s+(?=when\b|at\s+what\b)", "it does not matter "),
     # said twice in one clause: "then put the yellow block back on g afterwards"
     (r"(\bthen\b[^,]*?)\s*,?\s*\bafterwards?\s*$", r"\1"),

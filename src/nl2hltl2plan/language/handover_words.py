@@ -63,7 +63,8 @@ PERIOD_WORDS = (
 PERIOD = rf"(?:\s*,?\s*(?:{PERIOD_WORDS}|at\s+any\s+time|ever|at\s+all))?"
 EMPTY = r"(?:empty|free|clear|unoccupied|vacant)"
 DONE_STATE = (
-    r"(?:done|finished|complete|completed|over)"
+    r"(?:done|finished|complete|completed|over|sorted(?:\s+out)?|settled|taken\s+care\s+of|dealt\s+with|out\s+of\s+the\s+way|"
+    r"wrapped\s+up)"
     # "done with that"
     r"(?:\s+with\s+(?:all\s+(?:of\s+)?)?(?:this|these|that|it|everything|them|the\s+above))?"
 )
@@ -71,6 +72,8 @@ AFTER_ALL = (
     r"(?:(?:once|when|after)\s+(?:all\s+(?:of\s+)?)?(?:this|these|that|it|everything(?:\s+else)?|the\s+above)(?:\s+all)?\s+"
     rf"(?:is|are|has\s+been|have\s+been)\s+(?:all\s+)?{DONE_STATE}|(?:once|when)\s+{DONE_STATE}|"
     rf"(?:once|when|after)\s+(?:you|we)\s+(?:are|have(?:\s+been)?)\s+(?:all\s+)?{DONE_STATE}|"
+    # an absolute opener: "with that done", "with all of this sorted", "that done"
+    rf"(?:with\s+(?:all\s+(?:of\s+)?)?(?:this|these|that|it|everything(?:\s+else)?|the\s+above)|that)(?:\s+all)?\s+{DONE_STATE}(?=\s*,)|"
     r"after\s+(?:all\s+(?:of\s+)?(?:these|this|that|"
     r"the\s+above)|everything(?:\s+else)?)|finally|lastly|last\s+of\s+all|at\s+the\s+(?:very\s+)?end|in\s+the\s+end|"
     r"after\s+(?:finish(?:ing)?|complet(?:e|ing)|doing|done)\s+(?:with\s+)?(?:all\s+(?:of\s+)?)?(?:this|these|that|everything|them)|"
@@ -298,6 +301,8 @@ REWRITES: tuple[tuple[str, str], ...] = (
     ),
     # one modal for obligation: "is to be / has to be / needs to be / ought to be placed" -> "must be placed"
     (r"\b(?:is|are|has|have|needs?|ought)\s+to\s+be\b", "must be"),
+    # "is left alone", "stays left alone": untouched (said of a block; "leave X alone until" is read as it is)
+    (r"\b(is|are|be|gets?|stays?|remains?)\s+left\s+alone\b", r"\1 left untouched"),
     # "must stay / remain untouched", "is to be left untouched": not touched
     (
         r"\b(?:must\s+|should\s+|shall\s+|will\s+)?(?:stay|remain|be\s+left|be\s+kept)\s+untouched\b",
