@@ -3,7 +3,8 @@ steps said so far ("Once that's sorted,", "With that done,"), "left alone until"
 "Protocol 4." header; the arms named as the subject are refused by name (which arms act is the plan's
 choice), and so are "after all of these" after goals said "at any time" (it would order them). `dev80`
 must give the written specs but for the sentences refused on purpose; `validation18`, held out, is read
-right or refused, never misread (both in the `sweep` run)."""
+right or refused, never misread; `dev81` (a forum post, a recipe, a teacher, legal English) as `dev80` (all
+three in the `sweep` run)."""
 
 from __future__ import annotations
 
@@ -21,9 +22,18 @@ from nl2hltl2plan.errors import HTTError
 READ = {
     2: [
         "Put the three blocks on regions H, I and J; no region may hold two blocks.",
+        "I need the three blocks on regions H, I and J, one block in each of them. Any help appreciated!",
         "The three blocks go to regions H, I and J, and a region never gets more than one block.",
     ],
-    1: ["Transfer the three blocks to the opposite side, red before blue, and no doubling up on a region."],
+    1: [
+        "Transfer the three blocks to the opposite side, red before blue, and no doubling up on a region.",
+        "Now, class, the arms have to carry all three blocks across to the opposite side, and remember, red "
+        "goes down before blue.",
+    ],
+    7: [
+        "Ingredients: three objects. Method: place them one after another on region I, the red before the "
+        "blue. Keep regions F, G and H empty throughout.",
+    ],
     6: [
         "The red block should be placed before the blue block. Place the three objects on regions G, H and "
         "I, never two in one spot.",
@@ -34,6 +44,9 @@ READ = {
         "has touched the red block. Once that's sorted, put the yellow block back on region G.",
         "Transfer three blocks into the opposite regions. The blue block is left alone until the red block "
         "has been touched. With that done, the yellow block goes back to region G.",
+        "The three blocks shall be transferred to the opposite regions. No arm shall touch the blue block "
+        "unless and until the red block has been touched. Upon completion of the foregoing, the yellow block "
+        "shall be returned to region G.",
         "Protocol 4. Step 1: transfer the three blocks to the opposite regions. Step 2: the blue block "
         "must not be touched until the red block has been touched. Step 3: after all of these, return the "
         "yellow block to region G.",
@@ -101,7 +114,9 @@ def test_near_misses_are_not_the_written_spec(task: int, text: str) -> None:
 
 @pytest.mark.sweep
 @pytest.mark.data
-@pytest.mark.parametrize(("batch", "style"), [(b, s) for b in ("dev80", "validation18") for s in STYLES[b]])
+@pytest.mark.parametrize(
+    ("batch", "style"), [(b, s) for b in ("dev80", "dev81", "validation18") for s in STYLES[b]]
+)
 def test_h98_batches_are_read_right_or_refused_never_misread(batch: str, style: str) -> None:
     for task, text in STYLES[batch][style].items():
         assert_written_spec_or_refused(int(task), text)

@@ -88,7 +88,10 @@ def _letters_between(match: re.Match[str]) -> str:
 _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     # labels that say something ("here's" is "here s" by then): the blocks the instruction is about, as the
     # scene statement "we have ..." (which must name every block of the scene), and a need
-    (r"^\s*(?:scope|you\s+(?:will\s+)?need|what\s+you\s+need|materials|equipment)\s*:\s*", "we have "),
+    (
+        r"^\s*(?:scope|you\s+(?:will\s+)?need|what\s+you\s+need|materials|equipment|ingredients)\s*:\s*",
+        "we have ",
+    ),
     (r"^\s*here\s*(?:s|is)\s+what\s+(i|we)\s+(?:want|need|would\s+like)\s*:", r"\1 want "),
     # one block's place said as a choice: "red block: one of H, I or J" is "red block: H, I or J" (after two
     # blocks, "one of" may mean one region for both: left unread)
@@ -232,7 +235,7 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     ),
     # narrative
     (
-        r"\b(?:the\s+)?(?:robot\s+)?(?:arms|robots)\s+(?:will\s+|shall\s+|should\s+|must\s+)?"
+        r"\b(?:the\s+)?(?:robot\s+)?(?:arms|robots)\s+(?:will\s+|shall\s+|should\s+|must\s+|(?:have|need|are)\s+to\s+)?"
         r"(?=(?:carry|move|take|put|place|bring|transfer|set|deliver|relocate|shift)\b)",
         " ",
     ),

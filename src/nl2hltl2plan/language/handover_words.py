@@ -133,6 +133,7 @@ REWRITES: tuple[tuple[str, str], ...] = (
     # before "it" is read as a block: "while you're at it" is the period of the goals
     (r"\bwhile\s+(?:you|we)\s+are\s+at\s+it\b", "meanwhile"),
     (r"\bamongst\b", "among"),
+    (r"\bunless\s+and\s+until\b", "until"),  # legal English
     (r"\blet\s*'?\s*s\b|\blet\s+us\b|\bgo\s+ahead\s+and\b", "please"),
     (
         r"\b(?:whenever\s+(?:you\s+(?:like|want|wish|please|can)|(?:is\s+|s\s+)?convenient|possible|(?:it\s+)?suits(?:\s+you)?)|"
