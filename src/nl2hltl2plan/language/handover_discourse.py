@@ -129,6 +129,7 @@ _CALL = re.compile(
 )
 
 
+@lru_cache(maxsize=16384)  # pure; a sentence is read again for each restated reading
 def _content_word(word: str) -> bool:
     # an inflection's stem of at least four letters ("called": call; "noted" is not "not")
     stems = {word[: -len(end)] for end in ("s", "ed") if word.endswith(end) and len(word) - len(end) >= 4}
@@ -136,6 +137,7 @@ def _content_word(word: str) -> bool:
     return any(f in ws for ws in vocabulary().values() for f in forms)
 
 
+@lru_cache(maxsize=16384)  # pure; a sentence is read again for each restated reading
 def empty(fragment: str, label: bool = False, whole: bool = False, header: bool = False) -> bool:
     """True when the fragment says nothing a spec can use (see the module docstring); a `label` (before a
     colon) may also hold the words that announce the work ("Steps", "Here's the idea"), a `whole`
@@ -300,6 +302,7 @@ def person(speaker: str) -> bool:
     return not any(_content_word(w) for w in words)
 
 
+@lru_cache(maxsize=16384)  # pure; a sentence is read again for each restated reading
 def unreported(sentence: str) -> str:
     """The command or rule that a reported sentence reports (see the module docstring).
 
@@ -384,6 +387,7 @@ def _future(match: re.Match[str]) -> str:
     return f"will{match[1] or ''} be" if match[0].lower().startswith("will") else " will be"
 
 
+@lru_cache(maxsize=16384)  # pure; a sentence is read again for each restated reading
 def first_person_as_team(sentence: str) -> str:
     """'I' as the speaker who will do the work is the team ('we'), which the reader reads as commands; so
     are the arms or robots named as the subject of what they are about to do.

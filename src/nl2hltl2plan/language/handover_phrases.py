@@ -33,6 +33,7 @@ from nl2hltl2plan.language.handover_places import (
     mark_places,
     note_one_per_region,
 )
+from nl2hltl2plan.language.handover_regex import apply, rewrite_table
 from nl2hltl2plan.language.handover_registers import REGISTERS
 from nl2hltl2plan.language.handover_scene import (
     COLOUR,
@@ -62,6 +63,7 @@ _TOUCHED = r"(?:touched|picked|grasped|grabbed|handled|moved|lifted)"
 TYPOS = typo_table()
 # compiled once: with the reader's other tables they are more than `re`'s cache holds
 _REWRITES = tuple((re.compile(pattern), replacement) for pattern, replacement in REWRITES)
+_TABLE = rewrite_table(REGISTERS + _REWRITES)  # each with the literals its matches need
 
 
 @lru_cache(maxsize=8192)  # a sentence is normalised again for each restated reading of its text
@@ -81,8 +83,7 @@ def normalise(sentence: str) -> str:
     text = re.sub(r"\b(\w+)'s\b", r"\1 s", text)  # red's -> red s (a possessive)
     text = re.sub(r"[a-z]+", lambda w: TYPOS.get(w.group(0), w.group(0)), text)
     text = _drop_framing(unwished(unspoken(text)))
-    for pattern, replacement in REGISTERS + _REWRITES:
-        text = pattern.sub(replacement, text)
+    text = apply(_TABLE, text)
     text = re.sub(r"\bplease\b\s*,?", " ", text)  # politeness anywhere: "all three blocks please move to ..."
     return " ".join(text.split())
 
@@ -126,8 +127,27 @@ _I_SAYS = re.compile(r"\bi\s+(?=would|need|want|am|have|think|wish|hope|was|will
 
 def mark(sentence: str, scene: Scene, before: Marked | None = None) -> Marked:
     """The sentence with its phrases marked; `before`, the sentence before, tells what 'it' and 'these
-    regions' may mean."""
+    regions' may mean. Memoised on what the marking reads (the sentence, the layout, the blocks' starts and
+    the sentence before's last block, group, regions and place): a sentence is marked again for each
+    restated reading of the instruction; the caller gets a copy that its rules may change."""
     previous = before or Marked("")
+    key = (
+        sentence,
+        scene.layout.name,
+        tuple(sorted(scene.starts.items())),
+        (previous.last_one, previous.last_group, previous.last_regions, previous.last_place),
+    )
+    if key not in _MARKED:
+        if len(_MARKED) >= 8192:
+            _MARKED.clear()
+        _MARKED[key] = _marked(sentence, scene, previous)
+    return _MARKED[key].copy()
+
+
+_MARKED: dict[tuple[object, ...], Marked] = {}
+
+
+def _marked(sentence: str, scene: Scene, previous: Marked) -> Marked:
     m = Marked(normalise(sentence))
     _mark_one_per_region(m)
     _mark_arms(m)
@@ -243,12 +263,17 @@ def _mark_one_per_region(m: Marked) -> None:
         r"(?:\s+only)?\b",
         rf"(?<=,)\s*(?:with\s+)?(?:one|a\s+single)\s+{NOUN}\s+(?:each|apiece)\b",  # "..., one block each"
         rf"\b(?:with\s+)?{one}\s+(?:per|in\s+each|on\s+each|for\s+each)\b(?!\s+of\b)",
-        rf"(?:,\s*)?\b(?:with\s+)?no\s+two(?:\s+{NOUNS})?\s+(?:(?:may|can|should|will)\s+)?(?:sharing|share|occupy|be\s+(?:in|on)|in|on)\s+"
-        rf"(?:a\s+|the\s+same\s+)?{region}\b",
+        # "..., one block in each of them": the regions just named (the world's rule holds for every region)
+        rf"\b(?:with\s+)?{one}\s+(?:in|on|for)\s+each\s+of\s+(?:them|these|those)(?:\s+{region}s)?\b",
+        rf"(?:,\s*)?\b(?:with\s+)?(?:no|never)\s+two(?:\s+{NOUNS})?\s+(?:(?:may|can|should|will)\s+)?(?:sharing|share|occupy|be\s+(?:in|on)|in|on)\s+"
+        rf"(?:a\s+|one\s+|a\s+single\s+|the\s+same\s+)?{region}\b",
+        # "a region never gets more than one block", "any region may not hold two blocks"
+        rf"\b(?:a|any|each|every)\s+{region}\s+(?:(?:can|may|must|should|will|shall)\s+)?(?:never|not|cannot)\s+(?:ever\s+)?"
+        rf"{hold}\s+(?:more\s+than\s+(?:one|a\s+single|1)(?:\s+{NOUN}|\s+of\s+them)?|(?:two|2)\s+{NOUNS})\b",
         rf"\beach\s+{NOUN}\s+(?:gets|has|takes|goes\s+(?:to|in|into))\s+(?:its\s+own|a\s+(?:different|separate))\s+{region}\b",
         rf"\b(?:do\s+not|never)\s+(?:put|place)\s+(?:more\s+than\s+(?:one|a\s+single)(?:\s+{NOUN})?|(?:two|2)\s+{NOUNS})\s+"
         r"(?:in|on|into|onto)\s+"
-        rf"(?:a|any|each|the\s+same)\s+{region}\b",
+        rf"(?:a|any|each|one|a\s+single|the\s+same)\s+{region}\b",
     )
 
     note = partial(note_one_per_region, m)

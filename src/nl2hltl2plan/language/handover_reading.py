@@ -440,6 +440,7 @@ def _tree(clauses: list[Clause]) -> Item:
     root = Item("")
     chain: Item | None = None
     prev: Clause | None = None
+    closed = False  # the last step was ordered after all before it
     for c in clauses:
         if c.marker == "then" and prev is not None:
             if chain is None:
@@ -451,12 +452,18 @@ def _tree(clauses: list[Clause]) -> Item:
             chain.before.append((len(chain.children) - 2, len(chain.children) - 1))
             chain.text += "; " + c.text
         elif c.marker == "after_all" and root.children:
+            if any(d.anytime for d in clauses[: clauses.index(c)]):  # "after all of these" would order them
+                raise HTTError("'after all of these' ('once that is done') orders goals said 'at any time'")
             old = root.children[0] if len(root.children) == 1 else root
             root = Item("", children=[old])
             root.children += _items(c)
             root.before += [(0, k) for k in range(1, len(root.children))]
             chain = None
+            closed = True
         else:
+            if closed:  # a goal said after the steps that "after all of these" ordered: beside them, as one
+                root = Item("", children=[root])
+                closed = False
             root.children += _items(c)
             chain = None
         prev = c

@@ -7,7 +7,7 @@ the word tables' `REWRITES`). Each rewrite changes no meaning:
   "nothing may be placed on R", "an arbitrary empty region", "are each to be moved");
 - narrative: the arms as the subject of a placing verb ("the arms (will) carry the blocks ..."), "before /
   until you touch Y" (before Y is touched), "while you do it", "somewhere along the way" (at any time),
-  "leaving X untouched" ("..., while regions F, G and H remain empty" is the cue reader's kept-empty place);
+  ("..., while regions F, G and H remain empty" is the cue reader's kept-empty place);
 - telegraphic and bulleted: "three objects, three regions: G, H and I" (the regions' count is still
   checked), a pair before its exchange ("red and blue: swap places");
 - emphasis: "no exceptions";
@@ -88,7 +88,10 @@ def _letters_between(match: re.Match[str]) -> str:
 _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     # labels that say something ("here's" is "here s" by then): the blocks the instruction is about, as the
     # scene statement "we have ..." (which must name every block of the scene), and a need
-    (r"^\s*(?:scope|you\s+(?:will\s+)?need|what\s+you\s+need|materials|equipment)\s*:\s*", "we have "),
+    (
+        r"^\s*(?:scope|you\s+(?:will\s+)?need|what\s+you\s+need|materials|equipment|ingredients)\s*:\s*",
+        "we have ",
+    ),
     (r"^\s*here\s*(?:s|is)\s+what\s+(i|we)\s+(?:want|need|would\s+like)\s*:", r"\1 want "),
     # one block's place said as a choice: "red block: one of H, I or J" is "red block: H, I or J" (after two
     # blocks, "one of" may mean one region for both: left unread)
@@ -232,7 +235,7 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     ),
     # narrative
     (
-        r"\b(?:the\s+)?(?:robot\s+)?(?:arms|robots)\s+(?:will\s+|shall\s+|should\s+|must\s+)?"
+        r"\b(?:the\s+)?(?:robot\s+)?(?:arms|robots)\s+(?:will\s+|shall\s+|should\s+|must\s+|(?:have|need|are)\s+to\s+)?"
         r"(?=(?:carry|move|take|put|place|bring|transfer|set|deliver|relocate|shift)\b)",
         " ",
     ),
@@ -243,7 +246,6 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     # (before "it" is read as a block)
     (r"\b(while\s+(?:you|we|they)\s+(?:are\s+)?(?:do|doing|perform|performing))\s+it\b", r"\1 this"),
     (r"\b(?:somewhere|at\s+some\s+point)\s+along\s+the\s+way\b", "at any time"),
-    (rf"\b(?:leaving|leave|keeping|keep)\s+({_BLOCK})\s+untouched\b", r"\1 must not be touched"),
     # telegraphic and bulleted
     (
         r"^\s*((?:the\s+)?(?:two|three|four|\d)\s+(?:blocks|objects|pillars|items|cubes|pieces))\s*,\s*"

@@ -5,11 +5,11 @@ its phrases replaced by placeholders (`Marked`)."""
 
 from __future__ import annotations
 
-import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Literal
 
 from nl2hltl2plan.errors import HTTError, WorldError
+from nl2hltl2plan.language.handover_regex import sub
 from nl2hltl2plan.worlds.handover_world import REGIONS, Layout, layout
 from nl2hltl2plan.worlds.world import Cell, World
 
@@ -118,5 +118,15 @@ class Marked:
     last_group: tuple[str, ...] = ()  # its one group of several blocks, if one ("move them" in the next)
     last_place: Place | None = None  # the last place a block may go to ("move them there" in the next)
 
+    def copy(self) -> Marked:
+        """A copy whose lists the rules may change (places are frozen, the rest is immutable)."""
+        return replace(
+            self,
+            blocks=[list(b) for b in self.blocks],
+            block_text=list(self.block_text),
+            places=list(self.places),
+            notes=list(self.notes),
+        )
+
     def sub(self, pattern: str, make) -> None:  # make(match) -> replacement text
-        self.text = re.sub(pattern, make, self.text)
+        self.text = sub(pattern, make, self.text)

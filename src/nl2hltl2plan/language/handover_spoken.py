@@ -32,6 +32,7 @@ import re
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.content_words import phrase_list_pattern
 from nl2hltl2plan.language.grammar.everyday import HESITATION
+from nl2hltl2plan.language.handover_regex import apply, rewrite_table
 from nl2hltl2plan.language.handover_words import GERUND_VERBS, NEGATED_GERUNDS, VERB
 
 # contractions spelled out first, so that each rule below has one form to match
@@ -44,7 +45,6 @@ _CONTRACTIONS = (
     (r"\b(you|we|they)\s*'\s*re\b", r"\1 are"),
     (r"\b(you|we|they|i)\s*'\s*ve\b", r"\1 have"),
     (r"\b(you|we|i)\s*'\s*d\b", r"\1 would"),
-    (r"\bi\s*'\s*m\b", "i am"),
     # spoken spellings
     (r"\bgonna\b", "going to"),
     (r"\bwanna\b", "want to"),
@@ -75,13 +75,11 @@ _FILLERS: tuple[tuple[str, str], ...] = (
     (_SCENE_TIME, r"\1 currently "),
     (rf"\b{_HESITATION}\b", " , ~ , "),  # a soft correction marker: what follows may restate what went before
     (r"\b(?:basically|literally|honestly|yeah|yep|yup)\b", " , "),
-    (r"\bkind\s+of\b(?=\s+(?:" + VERB + r")\b)", " "),
     (r"\boh\b", " , "),
     (r",\s*like\s*(?=,)", " "),  # "the blocks, like, go ..."
     (rf"\b({VERB})\s+like\s+(?=(?:the|all|both|every|each|three|two)\b)", r"\1 "),  # "put like all three ..."
     # unpunctuated (a voice transcript): "and you know only one ..." (an "okay" at the end is a frame word)
     (r"\b(and|so|but)\s+you\s+know\b", r"\1"),
-    (r"\b(?:got\s+it|you\s+see|understood|all\s+good)\s*$", " "),
     # a tag at the end of a clause ("..., right?", "..., okay") or interjections opening one
     (rf",\s*{_INTERJECTION}\s*$", " "),
     (rf"(^|,|\band\b)\s*(?:{_INTERJECTION}\s*(?:,\s*|\s+(?={_INTERJECTION}\b)|\s+(?=so\b)))+", r"\1 "),
@@ -210,7 +208,11 @@ _NARRATION: tuple[tuple[str, str], ...] = (
         r"\b(?:keep|stay)\s+(?:off|away\s+from|clear\s+of)\s+(?=(?:the\s+)?(?:red|blue|yellow)\b)",
         "do not touch ",
     ),
-    (r"\b(?:you\s+)?(?:cannot|can\s+not|do\s+not|no)\s+doubl(?:e|ing)\s+up\b", "one block per region"),
+    (
+        r"\b(?:you\s+)?(?:cannot|can\s+not|do\s+not|no)\s+doubl(?:e|ing)\s+up"
+        r"(?:\s+(?:on|in)\s+(?:a|any|one|the\s+same)\s+(?:region|spot|place|area|cell))?\b",
+        "one block per region",
+    ),
     (r"(?<!\bit\s)\bdoes\s+not\s+matter\s+(?=when\b|at\s+what\b)", "it does not matter "),
     # said twice in one clause: "then put the yellow block back on g afterwards"
     (r"(\bthen\b[^,]*?)\s*,?\s*\bafterwards?\s*$", r"\1"),
@@ -225,7 +227,7 @@ _NARRATION: tuple[tuple[str, str], ...] = (
 
 # compiled once: with the reader's other tables they are more than `re`'s cache holds
 _STEPS = tuple(
-    tuple((re.compile(pattern), replacement) for pattern, replacement in table)
+    rewrite_table((re.compile(pattern), replacement) for pattern, replacement in table)
     for table in (_CONTRACTIONS, _FILLERS, _NARRATION)
 )
 
@@ -236,9 +238,9 @@ def unspoken(text: str) -> str:
     """The sentence with its spoken fillers, hedges, repeated phrases and narration normalised away (see
     the module docstring); a self-correction that says something else is refused."""
     contractions, fillers, narration = _STEPS
-    text = _apply(fillers, _apply(contractions, _clause_breaks(text)))
+    text = apply(fillers, apply(contractions, _clause_breaks(text)))
     text = _COMMAS.sub(" ,", _said_once(text))  # the commas left where fillers were
-    text = _apply(narration, _apply(fillers, text))  # fillers again: an opener behind a hesitation
+    text = apply(narration, apply(fillers, text))  # fillers again: an opener behind a hesitation
     text = _resumed(_COMMAS.sub(" ,", text))
     text = re.sub(r"^\s*,|,\s*$", " ", text)
     text = re.sub(r"\b(the|a|and|to|on|in)\s+\1\b", r"\1", text)  # a stutter: "the the"
@@ -307,12 +309,6 @@ def _resumed(text: str) -> str:
         return f"{match.group(1)} {match.group('conj') or ''}{match.group('before')}{said}"
 
     return _DISLOCATED.sub(put_back, text)
-
-
-def _apply(table: tuple[tuple[re.Pattern[str], str], ...], text: str) -> str:
-    for pattern, replacement in table:
-        text = pattern.sub(replacement, text)
-    return text
 
 
 def _said_once(text: str) -> str:

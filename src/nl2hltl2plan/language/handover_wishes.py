@@ -40,6 +40,7 @@ from __future__ import annotations
 
 import re
 
+from nl2hltl2plan.language.handover_regex import apply, rewrite_table
 from nl2hltl2plan.language.handover_words import GERUND_VERBS, NEGATED_GERUNDS, VERB
 
 # a participle after its object in a wish ("i'd like the blocks moved to ..."), with its verb
@@ -113,13 +114,6 @@ _RULES: tuple[tuple[str, str], ...] = (
         r"\1 swap \2",
     ),
     (r"(\b(?:no|nothing|not|never)\b[^,;]*?)\s+(?:on|along)\s+the\s+way(?:\s+there)?\b", r"\1 at any point"),
-    # "..., with nothing put on F until then": until the goal of its sentence is reached, i.e. meanwhile (in
-    # a sentence of its own, "until then" may name an earlier step: left to the reader)
-    (
-        r",\s*with\s+((?:nothing|no\s+(?:objects?|blocks?))\s+(?:put|placed|set|going|allowed)\b[^,;]*?)\s+"
-        r"until\s+then\s*$",
-        r", \1 meanwhile",
-    ),
     (r",\s*with\s+(?=(?:nothing|no\s+(?:objects?|blocks?))\s+(?:put|placed|set|going|allowed)\b)", ", "),
     # a block's next place after "then" or "first and": "then finish on / end up on / go on to region G"
     (
@@ -158,7 +152,6 @@ _RULES: tuple[tuple[str, str], ...] = (
     ),
     (r"\bat\s+your\s+(?:convenience|leisure)\b", "whenever convenient"),
     # a polite tag at the end ("okay" may be gone already: `unspoken` drops it at a clause's end)
-    (r"\s*,?\s*\bif\s+(?:that\s+(?:s|is)(?:\s+(?:okay|ok|alright|fine))?|you\s+do\s+not\s+mind)\s*$", " "),
     (r"\b(could|would|can|will)\s+you\s+(?:possibly|perhaps|kindly)\b", r"\1 you"),
     (
         rf"\b(?:i|we)\s+(?:would\s+like|want|need)\s+((?:regions?\s+)?{_LETTERS})\s+to\s+(?:stay|remain|be\s+kept)\s+"
@@ -193,7 +186,7 @@ _RULES: tuple[tuple[str, str], ...] = (
         r"only one \1 in each region",
     ),
 )
-_COMPILED = tuple((re.compile(pattern), replacement) for pattern, replacement in _RULES)
+_COMPILED = rewrite_table((re.compile(pattern), replacement) for pattern, replacement in _RULES)
 _WISH_VERB = re.compile(rf"{_START}{_WISH_BEFORE_VERB}\s+(?=(?:{VERB}|swap|exchange|keep|make)\b)")
 # "would you mind moving ...": a request, read as its verb (a touching verb is not a placing request)
 _MINDED = {g: v for g, v in (GERUND_VERBS | NEGATED_GERUNDS).items() if v not in ("touch", "grab", "pick up")}
@@ -279,6 +272,4 @@ def unwished(text: str) -> str:
     text, wishes = _PAST_WISH.subn(_past_as_command, text)
     if wishes:
         text = _AND_WENT.sub(r"\1 move \2", text)
-    for pattern, replacement in _COMPILED:
-        text = pattern.sub(replacement, text)
-    return text
+    return apply(_COMPILED, text)

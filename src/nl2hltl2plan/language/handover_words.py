@@ -63,7 +63,8 @@ PERIOD_WORDS = (
 PERIOD = rf"(?:\s*,?\s*(?:{PERIOD_WORDS}|at\s+any\s+time|ever|at\s+all))?"
 EMPTY = r"(?:empty|free|clear|unoccupied|vacant)"
 DONE_STATE = (
-    r"(?:done|finished|complete|completed|over)"
+    r"(?:done|finished|complete|completed|over|sorted(?:\s+out)?|settled|taken\s+care\s+of|dealt\s+with|out\s+of\s+the\s+way|"
+    r"wrapped\s+up)"
     # "done with that"
     r"(?:\s+with\s+(?:all\s+(?:of\s+)?)?(?:this|these|that|it|everything|them|the\s+above))?"
 )
@@ -71,6 +72,8 @@ AFTER_ALL = (
     r"(?:(?:once|when|after)\s+(?:all\s+(?:of\s+)?)?(?:this|these|that|it|everything(?:\s+else)?|the\s+above)(?:\s+all)?\s+"
     rf"(?:is|are|has\s+been|have\s+been)\s+(?:all\s+)?{DONE_STATE}|(?:once|when)\s+{DONE_STATE}|"
     rf"(?:once|when|after)\s+(?:you|we)\s+(?:are|have(?:\s+been)?)\s+(?:all\s+)?{DONE_STATE}|"
+    # an absolute opener: "with that done", "with all of this sorted", "that done"
+    rf"(?:with\s+(?:all\s+(?:of\s+)?)?(?:this|these|that|it|everything(?:\s+else)?|the\s+above)|that)(?:\s+all)?\s+{DONE_STATE}(?=\s*,)|"
     r"after\s+(?:all\s+(?:of\s+)?(?:these|this|that|"
     r"the\s+above)|everything(?:\s+else)?)|finally|lastly|last\s+of\s+all|at\s+the\s+(?:very\s+)?end|in\s+the\s+end|"
     r"after\s+(?:finish(?:ing)?|complet(?:e|ing)|doing|done)\s+(?:with\s+)?(?:all\s+(?:of\s+)?)?(?:this|these|that|everything|them)|"
@@ -118,7 +121,6 @@ _INTENSIFIER = r"(?:(?:very|really|extremely|absolutely|vitally|critically|most|
 # Rewrites applied to the lower-cased sentence before any phrase is read: each maps a variant onto the
 # form the patterns read and changes no meaning ("prior to" -> "before", "whilst" -> "while").
 REWRITES: tuple[tuple[str, str], ...] = (
-    (r"\bi\s*\.\s*e\s*\.?(?=\s|,|$)", " that is "),
     (  # (also after a step said first: "after all of these, the plan is to put ...")
         r"(^|,)\s*(?:your|the|my|our)\s+(?:job|task|goal|mission|assignment|plan)\s*(?:is\s+to\b|:)",
         r"\1 please",
@@ -131,13 +133,13 @@ REWRITES: tuple[tuple[str, str], ...] = (
     # before "it" is read as a block: "while you're at it" is the period of the goals
     (r"\bwhile\s+(?:you|we)\s+are\s+at\s+it\b", "meanwhile"),
     (r"\bamongst\b", "among"),
+    (r"\bunless\s+and\s+until\b", "until"),  # legal English
     (r"\blet\s*'?\s*s\b|\blet\s+us\b|\bgo\s+ahead\s+and\b", "please"),
     (
         r"\b(?:whenever\s+(?:you\s+(?:like|want|wish|please|can)|(?:is\s+|s\s+)?convenient|possible|(?:it\s+)?suits(?:\s+you)?)|"
         r"at\s+(?:any|whatever)\s+(?:point(?:\s+in\s+time)?|moment|stage)|(?:at\s+)?any\s+time\s+you\s+(?:like|want))\b",
         "at any time",
     ),
-    (r"\bat\s+any\s+time\s+at\s+any\s+time\b", "at any time"),
     (r"\bat\s+any\s+time\s+that\s+(?:works|suits)(?:\s+(?:for\s+)?you)?\b", "at any time"),
     (
         r"\b(?:sequentially|in\s+sequence|successively|in\s+succession|consecutively|one\s+after\s+the\s+other)\b",
@@ -230,7 +232,6 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\b(?:somebody|someone|anybody|anyone)\b", "an arm"),  # "until somebody has touched the red block"
     # narrative verbs of moving: "makes a stop at I", "moves on to G", "takes the blue block's place"
     (r"\b(?:makes?|making)\s+a\s+stop\s+(?:at|on|in)\b", "goes to"),
-    (r"\b(?:moves?|goes|go|continues?|travels?)\s+on\s+to\b", "to"),
     (r"\b(?:heads?|heading)\s+(?=to\b|towards?\b)", "goes "),
     (
         r"\b(?:takes?|gets?|occup(?:y|ies))\s+(?=(?:the\s+)?(?:red|blue|yellow)\s+(?:block\s+|one\s+)?s\s+"
@@ -256,7 +257,6 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"^\s*as\s+(?:for|to|regards)\s+(?:the\s+)?(?:order|ordering|sequence)\s*,", " "),
     (r"\b(?:once|when|after)\s+it\s+(?:is|gets|has\s+been\s+placed)\s+there\s*,", " then "),
     (r"\b(?<!to\s)(?<!on\s)(?<!in\s)anywhere\s+(?:empty|free)\b", "to any empty region"),
-    (r"\banywhere\s+(?:empty|free)\b", "any empty region"),
     # "use regions G, H and I for the three blocks": put them there
     (
         r"\buse\s+(regions?\s+[e-j](?:\s*(?:,|and|or)\s*(?:region\s+)?[e-j])*)\s+for\s+"
@@ -266,10 +266,6 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\s*,?\s*\bwhereas\b", ", and"),
     (r"\s*,?\s*\bwhereby\b", ","),
     (rf"^\s*({VERB})\s*:", r"\1"),  # "Transfer: 3 blocks -> opposite side"
-    (
-        r"^\s*(?:here\s+is\s+(?:the|your|my)\s+(?:task|job|plan|instruction)|(?:the|your)\s+task\s+is\s+as\s+follows)\s*:",
-        "please",
-    ),
     (r"\bthe\s+(?:desired\s+)?(?:outcome|result|end\s+state)\s+(?:is|should\s+be)\s+that\b", " "),
     (rf"\bit\s+is\s+{_INTENSIFIER}(?:necessary|required|essential|important)\s+to\b", "please"),
     # a prohibition, before its "it" is read as a block: "it is forbidden to place any object on F"
@@ -306,6 +302,8 @@ REWRITES: tuple[tuple[str, str], ...] = (
     ),
     # one modal for obligation: "is to be / has to be / needs to be / ought to be placed" -> "must be placed"
     (r"\b(?:is|are|has|have|needs?|ought)\s+to\s+be\b", "must be"),
+    # "is left alone", "stays left alone": untouched (said of a block; "leave X alone until" is read as it is)
+    (r"\b(is|are|be|gets?|stays?|remains?)\s+left\s+alone\b", r"\1 left untouched"),
     # "must stay / remain untouched", "is to be left untouched": not touched
     (
         r"\b(?:must\s+|should\s+|shall\s+|will\s+)?(?:stay|remain|be\s+left|be\s+kept)\s+untouched\b",
@@ -469,8 +467,6 @@ REWRITES: tuple[tuple[str, str], ...] = (
     # "please note the red block goes first": a rule, as "note:" is
     (r"^\s*(?:please\s+)?note\s+(?:that\s+)?(?=the\b)", " "),
     (r"\b(has|have|needs?)\s+to\s+get\s+to\b", r"\1 to go to"),  # "the yellow block has to get to ..."
-    # the person addressed as the subject: "After all these are done, you put the yellow block back ..."
-    (r"(^|,|\bthen)\s*(?:you|we)\s+(?=(?:put|place|move|bring|take|transfer|carry|set)\b)", r"\1 "),
     # "each of regions H, I and J can only hold one block, so put the three blocks into them": the world's
     # one-block rule, and the regions named for the goal that follows
     (
