@@ -24,6 +24,7 @@ from functools import lru_cache
 import networkx as nx
 
 from nl2hltl2plan.domain.task_kinds import slots_of
+from nl2hltl2plan.language.containers_said import unsaid_containers
 from nl2hltl2plan.language.content_words import (
     COMMAND_WORDS,
     DETERMINERS,
@@ -125,6 +126,7 @@ def account(
     )
     out += misordered(instruction, toks, mentions, parse) + unknown_verbs(instruction, toks)
     out += unknown_things(instruction, toks) + unused_tools(instruction, mentions, parse)
+    out += unsaid_containers(instruction, mentions, parse)  # "the tomato in the fridge and the pan in ..."
     check_cycles(instruction, toks, mentions, parse)
     return out
 

@@ -1,0 +1,61 @@
+"""Check 1: a container that the text never says holds anything (issue 23).
+
+A place-in-container reading puts a thing into a container and the container somewhere. The text must say
+the container holds the thing: the container named after "in", "into" or "inside" ("put the egg in the
+bowl"), named with what it holds ("the pan with the tomato in it", "a mug containing a pencil"), or
+referred to as "it" in such a phrase ("take a pan, put the tomato in it, ..."). Otherwise the reading has
+invented the containing: "put the tomato in the fridge and the pan in the sink" once read (learned
+re-read, exit 0) as the tomato in the pan and the pan in the fridge, the sink dropped, because "the pan in
+the sink" also reads as where the pan is.
+
+>>> from nl2hltl2plan.language.grounding import find_mentions
+>>> text = "put the tomato in the fridge and the pan in the sink"
+>>> said_as_container(text, [m for m in find_mentions(text) if m.surface == "pan"])
+False
+>>> text = "put the tomato in a pan and put the pan in the fridge"
+>>> said_as_container(text, [m for m in find_mentions(text) if m.surface == "pan"])
+True
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Sequence
+
+from nl2hltl2plan.language.content_words import Unread
+from nl2hltl2plan.language.grounding import Mention
+from nl2hltl2plan.language.parse_usage import ParseUsage
+
+# the words a container's name may follow when it is said to hold something, with up to two words between
+# ("in the small bowl", "into a clean mug")
+_INTO_BEFORE = re.compile(r"\b(?:in|into|inside|within|in\s+to)\s+(?:\S+\s+){0,2}$", re.IGNORECASE)
+# the words after a container's name that say what it holds ("the pan with the tomato", "a mug holding ...")
+_HOLDING_AFTER = re.compile(
+    r"^\s*(?:with|containing|holding|carrying|(?:that|which)(?:'s|\s+is|\s+has|\s+holds|\s+contains))\b",
+    re.IGNORECASE,
+)
+# "put the tomato in it": a container said by a pronoun
+_INTO_IT = re.compile(r"\b(?:in|into|inside)\s+(?:it|them)\b", re.IGNORECASE)
+
+
+def said_as_container(instruction: str, said: Sequence[Mention]) -> bool:
+    """Is one of the mentions `said` (of a container's type) said to hold something?"""
+    if said and _INTO_IT.search(instruction):
+        return True
+    return any(
+        _INTO_BEFORE.search(instruction[: m.char_start]) or _HOLDING_AFTER.match(instruction[m.char_end :])
+        for m in said
+    )
+
+
+def unsaid_containers(instruction: str, mentions: Sequence[Mention], parse: ParseUsage) -> list[Unread]:
+    """An `Unread` for each container of a place-in-container task that the text never says holds anything
+    (see the module docstring); a container not named at all is `unfilled_slots`' or the noun check's."""
+    out: list[Unread] = []
+    for task in parse.tasks:
+        types = set(task.container or []) if task.kind == "place_in_container" else set()
+        said = [m for m in mentions if types & set(m.entry.types)]
+        if said and not said_as_container(instruction, said):
+            why = f"a thing is put in the {said[0].surface}, which the text never says holds anything"
+            out.append(Unread(said[0].surface, "object", why))
+    return out
