@@ -3,7 +3,9 @@
 A place-in-container reading puts a thing into a container and the container somewhere. The text must say
 the container holds the thing: the container named after "in", "into" or "inside" ("put the egg in the
 bowl"), named with what it holds ("the pan with the tomato in it", "a mug containing a pencil"), or
-referred to as "it" in such a phrase ("take a pan, put the tomato in it, ..."). Otherwise the reading has
+referred to as "it" in such a phrase ("take a pan, put the tomato in it, ..."), or named next to the thing
+with no other thing between (ALFRED's "put box and keys on the chair", "move the spoon to the pan", "the
+fork with the cup"). Otherwise the reading has
 invented the containing: "put the tomato in the fridge and the pan in the sink" once read (learned
 re-read, exit 0) as the tomato in the pan and the pan in the fridge, the sink dropped, because "the pan in
 the sink" also reads as where the pan is.
@@ -27,25 +29,41 @@ from nl2hltl2plan.language.grounding import Mention
 from nl2hltl2plan.language.parse_usage import ParseUsage
 
 # the words a container's name may follow when it is said to hold something, with up to two words between
-# ("in the small bowl", "into a clean mug")
-_INTO_BEFORE = re.compile(r"\b(?:in|into|inside|within|in\s+to)\s+(?:\S+\s+){0,2}$", re.IGNORECASE)
+# ("in the small bowl", "into a clean mug", "on a plate")
+_INTO_BEFORE = re.compile(r"\b(?:in|into|inside|within|in\s+to|on|onto)\s+(?:\S+\s+){0,2}$", re.IGNORECASE)
 # the words after a container's name that say what it holds ("the pan with the tomato", "a mug holding ...")
 _HOLDING_AFTER = re.compile(
     r"^\s*(?:with|containing|holding|carrying|(?:that|which)(?:'s|\s+is|\s+has|\s+holds|\s+contains))\b",
     re.IGNORECASE,
 )
-# "put the tomato in it": a container said by a pronoun
-_INTO_IT = re.compile(r"\b(?:in|into|inside)\s+(?:it|them)\b", re.IGNORECASE)
+# "put the tomato in it", "take a dish to the table to put the tissue box on it": a container said by a
+# pronoun
+_INTO_IT = re.compile(r"\b(?:in|into|inside|on|onto)\s+(?:it|them)\b", re.IGNORECASE)
 
 
-def said_as_container(instruction: str, said: Sequence[Mention]) -> bool:
-    """Is one of the mentions `said` (of a container's type) said to hold something?"""
+def said_as_container(
+    instruction: str, said: Sequence[Mention], held: Sequence[Mention] = (), every: Sequence[Mention] = ()
+) -> bool:
+    """Is one of the mentions `said` (of a container's type) said to hold something? `held`: the mentions
+    of the thing it holds; `every`: all mentions of the text (`_next_to`)."""
     if said and _INTO_IT.search(instruction):
         return True
     return any(
-        _INTO_BEFORE.search(instruction[: m.char_start]) or _HOLDING_AFTER.match(instruction[m.char_end :])
+        _INTO_BEFORE.search(instruction[: m.char_start])
+        or _HOLDING_AFTER.match(instruction[m.char_end :])
+        or any(_next_to(instruction, m, h, every) for h in held)
         for m in said
     )
+
+
+def _next_to(instruction: str, container: Mention, thing: Mention, every: Sequence[Mention]) -> bool:
+    """Are the container and the thing named next to each other: at most four words between, no other
+    thing and no sentence end?"""
+    first, second = sorted((container, thing), key=lambda m: m.char_start)
+    start, end = first.char_end, second.char_start
+    between = instruction[start:end]
+    other = any(start <= m.char_start < end for m in every)
+    return not other and len(between.split()) <= 4 and re.search(r"[.;!?]", between) is None
 
 
 def unsaid_containers(instruction: str, mentions: Sequence[Mention], parse: ParseUsage) -> list[Unread]:
@@ -55,7 +73,8 @@ def unsaid_containers(instruction: str, mentions: Sequence[Mention], parse: Pars
     for task in parse.tasks:
         types = set(task.container or []) if task.kind == "place_in_container" else set()
         said = [m for m in mentions if types & set(m.entry.types)]
-        if said and not said_as_container(instruction, said):
+        held = [m for m in mentions if set(task.object) & set(m.entry.types)]
+        if said and not said_as_container(instruction, said, held, mentions):
             why = f"a thing is put in the {said[0].surface}, which the text never says holds anything"
             out.append(Unread(said[0].surface, "object", why))
     return out
