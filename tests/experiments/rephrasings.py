@@ -1700,8 +1700,8 @@ DEV_H104: dict[int, list[str]] = {
         "the blue plate until then.",
         "If you could do the green apple and the orange on the yellow plate first and then the carrot and "
         "the red apple on the blue plate, that would be great.",
-        "### Step A\nthe green apple and the orange on the yellow plate\n### Step B (after A)\nthe carrot and "
-        "the red apple on the blue plate",
+        "### Step A\nthe green apple and the orange on the yellow plate\n### Step B (after A)\nthe carrot "
+        "and the red apple on the blue plate",
         "The green apple and the orange are to be placed on the yellow plate first; only then are the carrot "
         "and the red apple to be placed on the blue plate."],
 }
