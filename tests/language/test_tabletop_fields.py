@@ -84,8 +84,8 @@ def test_markdown_parts_each_after_the_one_before_are_in_turn():
 
 
 def test_dont_put_until_then_waits_for_the_sentence_before():
-    text = ("Put the green apple and the orange on the yellow plate. Don't put the carrot and the red apple on "
-            "the blue plate until then.")
+    text = ("Put the green apple and the orange on the yellow plate. Don't put the carrot and the red apple "
+            "on the blue plate until then.")
     assert _read(text) == YELLOW_THEN_BLUE
     assert _read(text.replace("Don't put", "Do not start putting")) == YELLOW_THEN_BLUE
     assert _read("Don't put the orange on the yellow plate until then.") is None  # no sentence before
@@ -99,6 +99,6 @@ def test_dont_put_until_then_waits_for_the_sentence_before():
 def test_an_order_label_that_frees_the_order_is_refused_beside_then(label):
     ordered = "put the green apple on the pink plate, then the orange on the yellow plate"
     assert _read(f"{ordered}. {label}") is None  # as "..., then ..., in any order" is
-    free = ("put the green apple on the pink plate, the orange on the yellow plate and the red apple on the blue "
-            "plate")
+    free = ("put the green apple on the pink plate, the orange on the yellow plate and the red apple on the "
+            "blue plate")
     assert _read(f"{free}. {label}") == THREE_FREE
