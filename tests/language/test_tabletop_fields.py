@@ -102,3 +102,40 @@ def test_an_order_label_that_frees_the_order_is_refused_beside_then(label):
     free = ("put the green apple on the pink plate, the orange on the yellow plate and the red apple on the "
             "blue plate")
     assert _read(f"{free}. {label}") == THREE_FREE
+
+
+def test_a_dialogue_with_the_robot_is_what_its_user_asks():
+    asked = "The green apple on the pink plate, the orange on the yellow plate and the red apple on the blue plate."
+    assert _read(f"Robot: What do you need?\nMe: {asked}\nRobot: In which order?\nMe: Doesn't matter.") == (
+        THREE_FREE
+    )
+    assert _read(f"Robot: What shall I do?\nUser: Put {asked[4:]}") == THREE_FREE
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # an answer about the order that says one: not read here
+        "Robot: What shall I do?\nUser: Put the green apple on the blue plate and the orange on the yellow "
+        "plate.\nRobot: Any particular order?\nUser: Yes, the orange first.",
+        # a step's turn asked and answered by names alone: the order is in the questions
+        "Robot: Where do I start?\nUser: With the carrot on the blue plate.\nRobot: And next?\nUser: The "
+        "orange on the yellow plate.",
+        # "Anything else?" / "No.": an answer that names nothing
+        "Robot: What shall I do?\nUser: Put the green apple on the blue plate and the orange on the yellow "
+        "plate.\nRobot: Anything else?\nUser: No.",
+    ],
+)
+def test_a_dialogue_whose_answers_are_not_read_stays_a_refusal(text):
+    assert _read(text) is None
+
+
+def test_a_test_scenarios_outcome_is_what_is_asked():
+    assert _read("Scenario: tidy the table. Given the robot is at its start, when I say go, then the green "
+                 "apple is on the blue plate and the orange is on the yellow plate.") == TWO_FREE
+    lines = ("Given three fruits and three plates\nWhen the robot tidies up\nThen the green apple is on the "
+             "pink plate\nAnd the orange is on the yellow plate\nAnd the red apple is on the blue plate")
+    assert _read(f"{lines}\nIn any order") == THREE_FREE
+    # a context that names a thing of the world is a state, not a step: refused as before
+    assert _read("Given the orange is on the yellow plate, when I say go, then the green apple is on the "
+                 "blue plate.") is None

@@ -30,6 +30,7 @@ from nl2hltl2plan.language.grounding import camel_words
 from nl2hltl2plan.language.htt_build import build_htt
 from nl2hltl2plan.language.result import LanguageResult
 from nl2hltl2plan.language.tabletop_counts import plate_counts_read, plates_said_alone, total_counts_read
+from nl2hltl2plan.language.tabletop_dialogue import dialogue_read, scenario_read
 from nl2hltl2plan.language.tabletop_fields import fields_read
 from nl2hltl2plan.language.tabletop_lines import bracketed_list_opened, lines_joined, names_spelt, stops_read
 from nl2hltl2plan.language.tabletop_order import (
@@ -172,6 +173,8 @@ class TabletopReader:
         text = names_spelt(stops_read(lines_joined(lines, kinds)), kinds)
         text = bracketed_list_opened(text, kinds)  # "sort fruit (green apple -> pink plate, ...)"
         text = fields_read(text, kinds)  # "Object: ... Target: ...", "as follows:", "### Phase B (after A)"
+        text = dialogue_read(text, mention_pattern(kinds, re.I))  # "Robot: What do you need? Me: ..."
+        text = scenario_read(text, mention_pattern(kinds, re.I))  # "Given ..., when I say go, then ..."
         mentions = mention_pattern(kinds, re.I)
         text = role_dropped(text, mentions)  # "As a tidy person, I want ..."
         text = robot_addressed(ordinal_things_read(text, mentions))  # "The first thing is ...", "it puts"
