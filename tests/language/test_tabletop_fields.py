@@ -1,6 +1,7 @@
-"""Tabletop wordings read since h104 (issue 28; `tabletop_fields`), each with what must stay a refusal:
-records of labelled fields, a collective noun before "as follows", Markdown parts ordered by "(after X)",
-"Don't put ... until then" and an order label that any order will do ("Order: any")."""
+"""Tabletop wordings read since h104 (issue 28; `tabletop_fields`, `tabletop_dialogue`), each with what must
+stay a refusal: records of labelled fields, a collective noun before "as follows", Markdown parts ordered by
+"(after X)", "Don't put ... until then", an order label that any order will do ("Order: any"), a dialogue
+with the robot, and a test scenario's outcome."""
 
 from __future__ import annotations
 
@@ -105,7 +106,8 @@ def test_an_order_label_that_frees_the_order_is_refused_beside_then(label):
 
 
 def test_a_dialogue_with_the_robot_is_what_its_user_asks():
-    asked = "The green apple on the pink plate, the orange on the yellow plate and the red apple on the blue plate."
+    asked = ("The green apple on the pink plate, the orange on the yellow plate and the red apple on the blue "
+             "plate.")
     assert _read(f"Robot: What do you need?\nMe: {asked}\nRobot: In which order?\nMe: Doesn't matter.") == (
         THREE_FREE
     )

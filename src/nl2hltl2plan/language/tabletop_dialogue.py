@@ -1,5 +1,6 @@
-"""A tabletop instruction written as a dialogue with speaker labels (issue 28), also a test
-scenario's voice (`scenario_read`): "Robot: What do you need?\\nMe: The green apple on the pink plate, ...\\nRobot: In which order?\\nMe: Doesn't matter."
+"""A tabletop instruction written as a dialogue with speaker labels (issue 28): "Robot: What do you
+need?\\nMe: The green apple on the pink plate, ...\\nRobot: In which order?\\nMe: Doesn't matter."; also a
+test scenario's voice (`scenario_read`).
 
 The text is read as a dialogue only where every sentence belongs to a turn ("Name: ..."), one speaker is
 the robot (`_ROBOT`) and there is one other, and each of the robot's turns is a question. Then:
