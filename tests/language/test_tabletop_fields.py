@@ -82,6 +82,9 @@ def test_markdown_parts_each_after_the_one_before_are_in_turn():
     chained_otherwise = ("### Phase A\ngreen apple → yellow plate\n### Phase B (after A)\ncarrot → blue "
                          "plate\n### Phase C (after A)\norange → pink plate")
     assert _read(chained_otherwise) is None
+    # parts with no order said between them: not read as free (main read them so, exit 0)
+    assert _read("### Phase A\ngreen apple + orange → yellow plate\n### Phase B\ncarrot + red apple → blue "
+                 "plate") is None
 
 
 def test_dont_put_until_then_waits_for_the_sentence_before():

@@ -114,7 +114,8 @@ _ORDER_SAID = re.compile(
     r"\b(?:wait(?:s|ing)?|pause|follow(?:s|ed|ing)|alphabetic(?:al(?:ly)?)?|"
     r"(?:anti-?|counter-?)?clockwise|by\s+(?:size|colou?r|height|weight|name|type)|(?:left|right)\s+to\s+"
     r"(?:right|left)|(?:bigg|small|larg|tall|short|heavi|light)est\s+(?:first|last)|in\s+turn|"
-    r"sequential(?:ly)?|in\s+sequence|one\s+(?:after|by)\s+(?:the\s+)?(?:other|one)|(?:sooner|earlier)\s+than)\b"
+    r"sequential(?:ly)?|in\s+sequence|one\s+(?:after|by)\s+(?:the\s+)?(?:other|one)|(?:sooner|earlier)\s+than|"
+    r"(?:phase|stage)\s+(?:[a-z]|\d+))\b"  # "### Phase A ... ### Phase B": parts, whose order is not said
 )
 _PRIORITY = re.compile(r"\bpriorit(?:y|ies|i[sz]e[sd]?)\b")
 # words that turn round what was asked ("the other way round", "They're swapped."; what takes it back, "That's
