@@ -1638,3 +1638,70 @@ DEV2_H99: dict[int, list[str]] = {
         "Green apple and orange go on the yellow plate. Don't start on the blue plate (carrot and red apple) "
         "until then."],
 }
+
+# h104's held-out batch: written at the same time as DEV_H104 and committed before any h104 rule, in voices
+# no older batch uses (a table of delimited values with a header row, "is to be" duties, "it would be great
+# if you could", a collective noun that names the things listed after "as follows", labelled fields one per
+# line, "don't start ... until then", Markdown parts). Measured on first contact and at the end only.
+VALID_H104: dict[int, list[str]] = {
+    1: ["food;plate\norange;yellow\ngreen apple;blue",
+        "The orange is to be set on the yellow plate, and the green apple is to be set on the blue plate.",
+        "It would be great if you could put the orange on the yellow plate and the green apple on the blue "
+        "plate.",
+        "Please arrange the fruit as follows: orange on the yellow plate, green apple on the blue plate."],
+    2: ["Item: red apple\nPlate: blue plate\n\nItem: green apple\nPlate: pink plate\n\nItem: orange\nPlate: "
+        "yellow plate",
+        "The green apple is to be on the pink plate, the red apple on the blue plate and the orange on the "
+        "yellow plate, in whatever order.",
+        "Place the fruit as follows: red apple in the blue plate, green apple in the pink plate, orange in "
+        "the yellow plate. Any order.",
+        "fruit | plate\ngreen apple | pink\norange | yellow\nred apple | blue"],
+    3: ["If you could put the carrot on the blue plate, the orange on the yellow plate, the green apple on "
+        "the green plate and the red apple on the pink plate, in any order, that would be great.",
+        "Object: carrot\nDestination: blue plate\nObject: orange\nDestination: yellow plate\nObject: green "
+        "apple\nDestination: green plate\nObject: red apple\nDestination: pink plate",
+        "Put the food as follows: the carrot on the blue plate, the orange on the yellow plate, the green "
+        "apple on the green plate, the red apple on the pink plate.",
+        "The red apple is to be placed on the pink plate, the green apple on the green plate, the orange on "
+        "the yellow plate and the carrot on the blue plate."],
+    4: ["Put the green apple and the orange on the yellow plate. Do not start putting the carrot and the red "
+        "apple on the blue plate until then.",
+        "### Part 1\ngreen apple and orange on the yellow plate\n### Part 2 (after part 1)\ncarrot and red "
+        "apple on the blue plate",
+        "It would be great if you could first put the green apple and the orange on the yellow plate, and "
+        "after that the carrot and the red apple on the blue plate.",
+        "The green apple and the orange are to be placed on the yellow plate; once they are, the carrot and "
+        "the red apple are to be placed on the blue plate."],
+}
+
+# h104's development batch: written at the same time as VALID_H104, in its voices, read per sentence.
+DEV_H104: dict[int, list[str]] = {
+    1: ["fruit,plate\ngreen apple,blue\norange,yellow",
+        "The green apple is to be placed on the blue plate and the orange is to be placed on the yellow "
+        "plate.",
+        "If you could put the green apple on the blue plate and the orange on the yellow plate, that would "
+        "be great.",
+        "Sort the fruit as follows: the green apple onto the blue plate, the orange onto the yellow plate."],
+    2: ["object,destination\ngreen apple,pink plate\norange,yellow plate\nred apple,blue plate\n(any order)",
+        "The red apple is to go on the blue plate, the orange is to go on the yellow plate and the green "
+        "apple is to go on the pink plate; the order is not important.",
+        "If you could get the green apple onto the pink plate, the orange onto the yellow plate and the red "
+        "apple onto the blue plate in any order, that would be lovely.",
+        "Object: green apple\nTarget: pink plate\n\nObject: orange\nTarget: yellow plate\n\nObject: red "
+        "apple\nTarget: blue plate\n\nOrder: any"],
+    3: ["Arrange the food as follows, in any order: carrot on the blue plate, orange on the yellow plate, "
+        "green apple on the green plate, red apple on the pink plate.",
+        "item,plate\ncarrot,blue\norange,yellow\ngreen apple,green\nred apple,pink",
+        "The carrot is to be put on the blue plate, the orange on the yellow plate, the green apple on the "
+        "green plate and the red apple on the pink plate, in no set order.",
+        "Thing: carrot. Where: blue plate.\nThing: orange. Where: yellow plate.\nThing: green apple. Where: "
+        "green plate.\nThing: red apple. Where: pink plate."],
+    4: ["Put the green apple and the orange on the yellow plate. Don't put the carrot and the red apple on "
+        "the blue plate until then.",
+        "If you could do the green apple and the orange on the yellow plate first and then the carrot and "
+        "the red apple on the blue plate, that would be great.",
+        "### Step A\nthe green apple and the orange on the yellow plate\n### Step B (after A)\nthe carrot "
+        "and the red apple on the blue plate",
+        "The green apple and the orange are to be placed on the yellow plate first; only then are the carrot "
+        "and the red apple to be placed on the blue plate."],
+}

@@ -30,6 +30,8 @@ from nl2hltl2plan.language.grounding import camel_words
 from nl2hltl2plan.language.htt_build import build_htt
 from nl2hltl2plan.language.result import LanguageResult
 from nl2hltl2plan.language.tabletop_counts import plate_counts_read, plates_said_alone, total_counts_read
+from nl2hltl2plan.language.tabletop_dialogue import dialogue_read, scenario_read
+from nl2hltl2plan.language.tabletop_fields import fields_read
 from nl2hltl2plan.language.tabletop_lines import bracketed_list_opened, lines_joined, names_spelt, stops_read
 from nl2hltl2plan.language.tabletop_order import (
     BEFORE,
@@ -112,7 +114,8 @@ _ORDER_SAID = re.compile(
     r"\b(?:wait(?:s|ing)?|pause|follow(?:s|ed|ing)|alphabetic(?:al(?:ly)?)?|"
     r"(?:anti-?|counter-?)?clockwise|by\s+(?:size|colou?r|height|weight|name|type)|(?:left|right)\s+to\s+"
     r"(?:right|left)|(?:bigg|small|larg|tall|short|heavi|light)est\s+(?:first|last)|in\s+turn|"
-    r"sequential(?:ly)?|in\s+sequence|one\s+(?:after|by)\s+(?:the\s+)?(?:other|one)|(?:sooner|earlier)\s+than)\b"
+    r"sequential(?:ly)?|in\s+sequence|one\s+(?:after|by)\s+(?:the\s+)?(?:other|one)|(?:sooner|earlier)\s+than|"
+    r"(?:phase|stage)\s+(?:[a-z]|\d+))\b"  # "### Phase A ... ### Phase B": parts, whose order is not said
 )
 _PRIORITY = re.compile(r"\bpriorit(?:y|ies|i[sz]e[sd]?)\b")
 # words that turn round what was asked ("the other way round", "They're swapped."; what takes it back, "That's
@@ -170,6 +173,9 @@ class TabletopReader:
         kinds = {camel_words(t): _is_plate(t) for t in self.world.object_types()}
         text = names_spelt(stops_read(lines_joined(lines, kinds)), kinds)
         text = bracketed_list_opened(text, kinds)  # "sort fruit (green apple -> pink plate, ...)"
+        text = fields_read(text, kinds)  # "Object: ... Target: ...", "as follows:", "### Phase B (after A)"
+        text = dialogue_read(text, mention_pattern(kinds, re.I))  # "Robot: What do you need? Me: ..."
+        text = scenario_read(text, mention_pattern(kinds, re.I))  # "Given ..., when I say go, then ..."
         mentions = mention_pattern(kinds, re.I)
         text = role_dropped(text, mentions)  # "As a tidy person, I want ..."
         text = robot_addressed(ordinal_things_read(text, mentions))  # "The first thing is ...", "it puts"

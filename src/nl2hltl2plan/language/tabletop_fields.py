@@ -1,0 +1,140 @@
+"""Records, headings and references of a tabletop instruction read as the placements they say (issue 28),
+on the instruction's lines as `tabletop_lines.lines_joined` gives them:
+
+- a record of labelled fields, a thing and then where it goes ("Object: green apple. Target: blue plate.",
+  "Thing: carrot. Where: blue plate."): each pair is "put THING on PLATE". The labels are
+  `tabletop_fields.txt`'s; a record is read only where every such field pairs up, each thing's label
+  first ("Plate: blue plate. Item: orange. Plate: ..." is left as it is: which plate goes with which
+  thing is not said by the order alone), and each value is names and nothing else;
+- a collective noun that names the things listed after "as follows" ("Arrange the fruit as follows:
+  ..."): the list is what is asked, as after "Arrange:";
+- Markdown parts whose headings say that each comes after the one before ("### Phase A ... ### Phase B
+  (after A) ..."): "then" between them; headings that order otherwise, or not at all, are left as they are;
+- "Don't put X on P until then." after a sentence: "Then put X on P." ("until then", "until that's
+  done": the sentence before);
+- an order label that any order will do ("Order: any", "Order - whatever", "Sequence: free"): "In any
+  order.", which the readers read as that (and refuse beside "then", as they refuse "..., then ..., in any
+  order").
+
+>>> kinds = {"green apple": False, "orange": False, "blue plate": True, "yellow plate": True}
+>>> fields_read("Object: green apple. Target: blue plate. Object: orange. Target: yellow plate.", kinds)
+'put the green apple on the blue plate. put the orange on the yellow plate.'
+>>> fields_read("Put the orange on the yellow plate. Don't put the green apple on the blue plate until then.",
+...             kinds)
+'Put the orange on the yellow plate. Then put the green apple on the blue plate.'
+"""
+
+from __future__ import annotations
+
+import re
+
+from nl2hltl2plan.language.content_words import phrase_words
+from nl2hltl2plan.language.tabletop_wording import mention_pattern
+
+_WHAT = phrase_words("tabletop_fields.txt", "what")
+_WHERE = phrase_words("tabletop_fields.txt", "where")
+_LABEL = re.compile(r"(?:^|(?<=[.;|,!?])|(?<=\s))(?P<label>[A-Za-z]+)\s*:\s*", re.IGNORECASE)
+
+
+def fields_read(text: str, kinds: dict[str, bool]) -> str:
+    """`text` with its records of labelled fields, "as follows" lists, ordered Markdown parts and "don't
+    ... until then" read (see the module docstring); `kinds`: each name in words -> is it a plate."""
+    text = _records_paired(text, kinds)
+    text = _AS_FOLLOWS.sub(lambda m: f"{m['verb']}{m['free'] or ''}:", text)
+    text = _ANY_ORDER_LABEL.sub("In any order", text)
+    return _UNTIL_THEN.sub(_then_put, _parts_ordered(text))
+
+
+# "Order: any" as a sentence of its own (`headings` has made "Order - any" a colon)
+_ANY_ORDER_LABEL = re.compile(
+    r"(?:^|(?<=[.;!?(]\s)|(?<=[.;!?(]))\s*(?:order(?:ing)?|sequence)\s*:\s*(?:any(?:\s+order)?|whatever|"
+    r"whichever|either|free|unspecified)\s*(?=[.;!?)]|$)",
+    re.IGNORECASE,
+)
+
+
+def _records_paired(text: str, kinds: dict[str, bool]) -> str:
+    """Each "WHAT-LABEL: things. WHERE-LABEL: plate." pair as "put things on the plate."; the text as it
+    is unless every field of a `tabletop_fields.txt` label pairs up so."""
+    names = mention_pattern(kinds, re.IGNORECASE).pattern
+    things = rf"(?:the\s+)?{names}(?:\s*(?:,|\+|&|\band\b)\s*(?:the\s+)?{names})*"
+    what = "|".join(sorted(_WHAT, key=len, reverse=True))
+    where = "|".join(sorted(_WHERE, key=len, reverse=True))
+    pair = re.compile(
+        rf"(?<![\w:])(?:{what})\s*:\s*(?P<things>{things})\s*[.;,|]?\s*(?:{where})\s*:\s*"
+        rf"(?P<plate>(?:the\s+)?{names})\s*(?P<end>[.;,|!]+|$)",
+        re.IGNORECASE,
+    )
+    pairs = list(pair.finditer(text))
+    fields = [m for m in _LABEL.finditer(text) if m["label"].lower() in _WHAT | _WHERE]
+    if not pairs or len(fields) != 2 * len(pairs):
+        return text
+    if any(not all(kinds.get(_name(n)) is False for n in _names_in(m["things"], kinds)) for m in pairs):
+        return text  # a plate among the things
+    if any(kinds.get(_name(m["plate"])) is not True for m in pairs):
+        return text
+    return pair.sub(_put, text)
+
+
+def _put(m: re.Match[str]) -> str:
+    things = re.sub(r"^(?!the\b)", "the ", m["things"].strip(), flags=re.IGNORECASE)
+    plate = re.sub(r"^(?!the\b)", "the ", m["plate"].strip(), flags=re.IGNORECASE)
+    return f"put {things} on {plate}."
+
+
+def _names_in(part: str, kinds: dict[str, bool]) -> list[str]:
+    return mention_pattern(kinds, re.IGNORECASE).findall(part)
+
+
+def _name(found: str) -> str:
+    return " ".join(re.sub(r"^the\s+", "", found.strip(), flags=re.IGNORECASE).lower().split())
+
+
+# "Arrange the fruit as follows[, in any order]:" -> "Arrange[, in any order]:"
+_AS_FOLLOWS = re.compile(
+    r"\b(?P<verb>arrange|sort|place|put|set|lay\s+out|organi[sz]e|distribute)\s+(?:all\s+)?(?:the|your|these|"
+    r"those)\s+(?:fruits?|foods?|produce|things|items|objects|pieces|stuff)\s+as\s+follows\s*(?P<free>,[^:.;]*?)?"
+    r"\s*:",
+    re.IGNORECASE,
+)
+
+_PART_WORD = r"(?:step|part|phase|stage|round)"
+# a part's heading: "### Phase A", "## Part 2 (after part 1)", "Phase B (after A)" (a part word, or hashes)
+_HEADING = re.compile(
+    rf"(?:^|(?<=[.!?:])\s*)(?:(?P<hashes>#{{1,6}})\s*(?:{_PART_WORD}\s+)?|{_PART_WORD}\s+)(?P<id>[A-Za-z0-9]+)"
+    rf"\s*(?:\(\s*after\s+(?:{_PART_WORD}\s+)?(?P<after>[A-Za-z0-9]+)\s*\))?\s*:?\s*",
+    re.IGNORECASE,
+)
+
+
+def _parts_ordered(text: str) -> str:
+    """Markdown parts, each heading after the first saying "(after X)" of the part just before: the first
+    heading dropped, the others "then"; the text as it is otherwise."""
+    heads = list(_HEADING.finditer(text))
+    if len(heads) < 2 or heads[0].start() != 0 or heads[0]["after"] or not any(h["hashes"] for h in heads):
+        return text
+    for before, head in zip(heads, heads[1:], strict=False):
+        if (head["after"] or "").lower() != before["id"].lower():
+            return text
+    out, pos = "", 0
+    for i, head in enumerate(heads):
+        out += text[pos : head.start()].rstrip()
+        if i:
+            out += ". then " if not out.endswith(".") else " then "
+        pos = head.end()
+    return out + text[pos:]
+
+
+# "Don't put X on P until then." after a sentence: "Then put X on P." (the sentence before is "then")
+_UNTIL_THEN = re.compile(
+    r"(?<=[.!?;]\s)(?P<not>don't|dont|do\s+not)\s+(?:start\s+(?:putting|placing)|begin\s+(?:putting|placing)|put|"
+    r"place)\s+(?P<rest>[^.;!?]+?)\s+until\s+(?:then|that's\s+done|that\s+is\s+done|you've\s+done\s+that)"
+    r"\s*(?P<end>[.!?]|$)",
+    re.IGNORECASE,
+)
+
+
+def _then_put(m: re.Match[str]) -> str:
+    if re.search(r"\b(?:not|don't|never|until|unless|before|after)\b", m["rest"], re.IGNORECASE):
+        return m[0]
+    return f"Then put {m['rest']}{m['end']}"
