@@ -28,7 +28,7 @@ from __future__ import annotations
 
 import re
 
-from nl2hltl2plan.language.content_words import phrase_words
+from nl2hltl2plan.language.content_words import phrase_category, phrase_words
 from nl2hltl2plan.language.tabletop_wording import mention_pattern
 
 _WHAT = phrase_words("tabletop_fields.txt", "what")
@@ -45,10 +45,11 @@ def fields_read(text: str, kinds: dict[str, bool]) -> str:
     return _UNTIL_THEN.sub(_then_put, _parts_ordered(text))
 
 
-# "Order: any" as a sentence of its own (`headings` has made "Order - any" a colon)
+# "Order: any" / "Order: none" as a sentence of its own (`headings` has made "Order - any" a colon; a value
+# that says nothing is asked is content_words.txt's `empty_value`, as `headings` reads other labels)
 _ANY_ORDER_LABEL = re.compile(
     r"(?:^|(?<=[.;!?(]\s)|(?<=[.;!?(]))\s*(?:order(?:ing)?|sequence)\s*:\s*(?:any(?:\s+order)?|whatever|"
-    r"whichever|either|free|unspecified)\s*(?=[.;!?)]|$)",
+    rf"whichever|either|free|unspecified|{phrase_category('empty_value')})\s*(?=[.;!?)]|$)",
     re.IGNORECASE,
 )
 

@@ -28,7 +28,6 @@ import re
 from nl2hltl2plan.language.content_words import (
     categories,
     free_order_phrase,
-    phrase_category,
     phrase_list_pattern,
     phrase_words,
 )
@@ -96,7 +95,6 @@ def remarks_read(text: str, mention: re.Pattern[str], name_words: frozenset[str]
     (see the module docstring): courtesy, list headings and frames (`frame_read`; none with a word of a name
     in `name_words`: "the yellow" is a plate) removed, freedom statements said as "in any order" or "within
     each group in any order". Any other clause is left as it is, for the readers."""
-    text = _ORDER_NONE.sub(" in any order", text)  # "Order: none": no order is asked
     text = _ORDER_LABEL.sub(" the order is ", _SENTENCE_PIECE.sub(lambda m: _opener_dropped(m[0]), text))
     text = reasons_dropped(text, mention, name_words)
     for pieces in (_SENTENCE_PIECE, _CLAUSE):
@@ -151,12 +149,6 @@ def _opener_dropped(sentence: str) -> str:
 # label with its value, read as one statement
 _ORDER_LABEL = re.compile(
     r"(?:^|(?<=[(\n.;!?]))\s*(?:order(?:ing)?|sequence)\s*[:?]\s*(?=[a-z])", re.IGNORECASE
-)
-# an order label whose value says that nothing is asked ("Order: none", "Sequence - n/a"; the values are
-# content_words.txt's `empty_value`, as `headings` reads other labels): no order
-_ORDER_NONE = re.compile(
-    rf"(?:^|(?<=[(\n.;!?]))\s*(?:order(?:ing)?|sequence)\s*:\s*(?:{phrase_category('empty_value')})\s*(?=[.;!?)]|$)",
-    re.IGNORECASE,
 )
 _ASKING = frozenset("i i'd we we'd want need would to".split())  # "I'd like you to sort the fruit:"
 # a clause that only urges, closes or announces ("make it so", "off you go", "quick one")
