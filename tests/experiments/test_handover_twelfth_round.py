@@ -1,10 +1,11 @@
-"""Issue 24, h103 (session 18): voices no earlier batch used. A left-dislocated object taken up by "it" /
-"them" ("The yellow block, put it on region I"; "the other regions, place nothing on them"), a verbless goal
-after a comma ("Yellow, opposite side"), a pair before its exchange ("Red and blue blocks, swap places"),
-legal "said regions", a block's heading before its touch state ("Blue: untouched until ..."), a bare
-region letter heading one block ("G: yellow, last"), a pirate's "afore" / "ye" / "haul" / "stow", and the
-calls of a coach, a pirate or a kitchen ("Hustle!", "Avast!", "Heard, chef?") as frame words. `dev82`
-and the held-out `validation19` are read right or refused, never misread (the `sweep` run)."""
+"""Issue 24, h103 (session 18): voices no earlier batch used. A left-dislocated object taken up by "it" or
+"them" of its number ("The yellow block, put it on region I"; "the other regions, place nothing on them"),
+a pair before its exchange ("Red and blue blocks, swap places"), legal "said regions", a block's heading
+before its touch state ("Blue: untouched until ..."), a bare region letter heading one block ("G: yellow,
+last"), a pirate's "afore" / "ye" / "haul" / "stow", and the calls of a coach, a pirate or a kitchen
+("Hustle!", "Avast!", "Heard, chef?") as frame words. A place after a comma without a verb ("Yellow,
+opposite side") stays refused (where it goes, or where it is?). `dev82` and the held-out `validation19`
+are read right or refused, never misread (the `sweep` run)."""
 
 from __future__ import annotations
 
@@ -34,17 +35,22 @@ READ = {
         "Opposite regions: all three blocks. Blue: untouched until red is touched. G: yellow, last.",
     ],
     5: [
-        "Red and blue blocks, swap places, red goes first. Yellow, opposite side, whenever. Heard, chef!",
+        "Red and blue blocks, swap places, red goes first. Yellow to the opposite side whenever. Heard, chef!",
         "Red and blue, just swap them, red placed first; the yellow one, drop it on the opposite side any time.",
     ],
     8: [
-        "The yellow block, region I, then region G. Red and blue, any empty region, any time. Hustle!",
+        "The yellow block, put it on region I, then on region G. Red and blue, drop them on any empty region "
+        "at any time. Hustle!",
         "Put the yellow block on region I, then on region G, and stow the red and blue blocks on any empty "
         "region whenever ye please. Good luck!",
     ],
 }
 
 REFUSED = [
+    # a place after a comma without a verb: where it goes, or where it is?
+    (5, "Red and blue, swap! Red down first! Yellow, opposite side, whenever!"),
+    # a pronoun of the other number takes up no object
+    (8, "The yellow block, put them on region I, then on region G. Red and blue, any empty region, any time."),
     # a bare "I" is the pronoun, never a region letter
     (7, "I: all three objects, one after another, red before blue. F, G, H: nothing during this period."),
     # a threat after "or": a choice the reader does not model

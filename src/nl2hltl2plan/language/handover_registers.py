@@ -73,13 +73,14 @@ _SUBJECT_NP = (
     r"(?:the|no|nothing|none|red|blue|yellow|all|each|every|both)\b(?:\s+(?!(?:go|be|hold|come|stay|remain|land|"
     r"end|sit|get)\b)[a-z]+){0,5}?"
 )
-# an object said first and taken up again by a pronoun (left dislocation): blocks by their colours, a
-# counted group, or the other regions
-_COLOUR_LIST = r"(?:the\s+)?(?:red|blue|yellow)(?:\s*(?:,|and)\s*(?:the\s+)?(?:red|blue|yellow))*"
-_DISLOCATED = (
-    rf"{_COLOUR_LIST}(?:\s+(?:blocks?|ones?|pillars?|objects?))?|(?:the\s+|all\s+)?(?:three|3)\s+"
-    r"(?:blocks|pillars|objects)|the\s+other\s+regions"
+# an object said first and taken up again by a pronoun of its number (left dislocation): one block by its
+# colour ("it"); blocks by their colours, a counted group or the other regions ("them")
+_ONE_BLOCK = r"(?:the\s+)?(?:red|blue|yellow)(?:\s+(?:block|one|pillar|object))?"
+_GROUP = (
+    r"(?:the\s+)?(?:red|blue|yellow)(?:\s*(?:,|and)\s*(?:the\s+)?(?:red|blue|yellow))+(?:\s+(?:blocks|ones|"
+    r"pillars|objects))?|(?:the\s+|all\s+)?(?:three|3)\s+(?:blocks|pillars|objects)|the\s+other\s+regions"
 )
+_DISLOCATED = ((_ONE_BLOCK, "it"), (_GROUP, "them"))
 _PUT_NOTHING = r"(?:put|place|drop|set|leave|lay)\s+(?:nothing|no\s+(?:block|object|pillar)s?)"
 _BARE_VERB = r"(?:go|be|hold|come|stay|remain|land|end\s+up|sit|get)"
 _LETTERS = r"[e-j](?:\s*(?:,|and|or)\s*[e-j])*"
@@ -135,17 +136,17 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     (r"\bye\b", "you"),
     # a left-dislocated object, taken up again by "it" or "them": "the yellow block, put it on region i" (put
     # the yellow block on region i); "red and blue, just swap them"; "the other regions, place nothing on them"
-    (rf"^\s*({_DISLOCATED})\s*,\s*(?:just\s+)?((?:{VERB}|{SWAP})\b)\s+(?:them|it)\b", r"\2 \1"),
-    (rf"^\s*({_DISLOCATED})\s*,\s*(?:just\s+)?({_PUT_NOTHING})\s+(on|onto|in|into)\s+(?:them|it)\b", r"\2 \3 \1"),
+    *(
+        (rf"^\s*({np})\s*,\s*(?:just\s+)?((?:{VERB}|{SWAP})\b)\s+{pronoun}\b", r"\2 \1")
+        for np, pronoun in _DISLOCATED
+    ),
+    *(
+        (rf"^\s*({np})\s*,\s*(?:just\s+)?({_PUT_NOTHING})\s+(on|onto|in|into)\s+{pronoun}\b", r"\2 \3 \1")
+        for np, pronoun in _DISLOCATED
+    ),
     # legal English names what it said before with "said": "said regions" (these regions)
     (r"\b(?:the\s+)?(?:said|aforesaid|aforementioned)\s+(?=(?:regions|blocks|pillars|objects|areas)\b)", "these "),
     (r"\b(?:the\s+)?(?:said|aforesaid|aforementioned)\s+(?=(?:region|block|pillar|object|area)\b)", "this "),
-    # a verbless goal: a block or group, a comma, then its place ("yellow, opposite side": yellow to ...)
-    (
-        rf"^\s*({_DISLOCATED})\s*,\s*(?=(?:the\s+)?opposite\s+(?:side|regions?)\b|any\s+empty\s+region\b|"
-        r"regions?\s+[e-j]\b)",
-        r"\1 to ",
-    ),
     # a block's heading before its touch state: "blue block: untouched until ..." (the blue block stays ...)
     (r"^\s*(?:the\s+)?(red|blue|yellow)(?:\s+(?:block|pillar|object))?\s*:\s*(?=untouched\b)", r"the \1 block stays "),
     # a bare region letter heading one block ("g: yellow, last"): the region ("i" is the pronoun: refused)
@@ -154,7 +155,7 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
         r"region \1 : ",
     ),
     # a pair before its exchange, after a comma: "red and blue blocks, swap places" (swap ...)
-    (rf"^\s*({_DISLOCATED})\s*,\s*(?:just\s+)?({SWAP})(?:\s+(?:places|positions))?\b", r"\2 \1"),
+    (rf"^\s*({_GROUP})\s*,\s*(?:just\s+)?({SWAP})(?:\s+(?:places|positions))?\b", r"\2 \1"),
     # a manner said as a result: "..., in such a way that each region holds one block" (..., each region ...)
     (r",?\s*\bin\s+such\s+a\s+way\s+that\b", " ,"),
     # "at any point / time during the task": at any time
