@@ -22,12 +22,13 @@ from nl2hltl2plan.errors import HTTError
 
 READ = {
     1: [
-        "The three blocks, move them to the opposite side; the red one, place it before the blue one.",
+        "The three blocks, move them to the opposite side; the red one, place it before the blue "
+        "one.",
         "Avast, me hearties! Haul the three blocks to the opposite side, the red block afore the blue block.",
     ],
     3: [
-        "The Arms shall transfer the three pillars to regions E, F and G such that no object is placed on any "
-        "region other than said regions.",
+        "The Arms shall transfer the three pillars to regions E, F and G such that no object is placed on "
+        "any region other than said regions.",
         "The three pillars, put them on regions E, F and G beside arms a and b; the other regions, place "
         "nothing on them.",
     ],
@@ -35,8 +36,10 @@ READ = {
         "Opposite regions: all three blocks. Blue: untouched until red is touched. G: yellow, last.",
     ],
     5: [
-        "Red and blue blocks, swap places, red goes first. Yellow to the opposite side whenever. Heard, chef!",
-        "Red and blue, just swap them, red placed first; the yellow one, drop it on the opposite side any time.",
+        "Red and blue blocks, swap places, red goes first. Yellow to the opposite side whenever. Heard, "
+        "chef!",
+        "Red and blue, just swap them, red placed first; the yellow one, drop it on the opposite side any "
+        "time.",
     ],
     8: [
         "The yellow block, put it on region I, then on region G. Red and blue, drop them on any empty region "
@@ -50,18 +53,23 @@ REFUSED = [
     # a place after a comma without a verb: where it goes, or where it is?
     (5, "Red and blue, swap! Red down first! Yellow, opposite side, whenever!"),
     # a pronoun of the other number takes up no object
-    (8, "The yellow block, put them on region I, then on region G. Red and blue, any empty region, any time."),
+    (5, "Red and blue, just swap it, red placed first; put the yellow block on the opposite side at any time"),
+    (3, "The three pillars, put them on regions E, F and G; the other regions, place nothing on it."),
     # a bare "I" is the pronoun, never a region letter
     (7, "I: all three objects, one after another, red before blue. F, G, H: nothing during this period."),
     # a threat after "or": a choice the reader does not model
-    (3, "Move the three pillars to regions E, F and G, and no object on any other region, or ye walk the plank!"),
+    (
+        3,
+        "Move the three pillars to regions E, F and G, and no object on any other region, or ye walk the "
+        "plank!",
+    ),
     # the dislocated regions given a goal of their own: two places for one group
     (3, "The three pillars, put them on regions E, F and G; the other regions, put them on G."),
 ]
 
 NEAR_MISSES = [
     # the dislocated order, the pirate's order and the heading's touch guard reversed
-    (1, "The three blocks, move them to the opposite side; the blue one, place it before the red one."),
+    (1, "The three blocks, move them to the opposite side; the blue one, place it before the red one"),
     (6, "Place the three objects separately on regions G, H and I, the blue block afore the red block."),
     (4, "Opposite regions: all three blocks. Red: untouched until blue is touched. G: yellow, last."),
     (5, "Red and blue, swap them. Blue first. Yellow to the opposite side, whenever."),

@@ -81,6 +81,9 @@ _GROUP = (
     r"pillars|objects))?|(?:the\s+|all\s+)?(?:three|3)\s+(?:blocks|pillars|objects)|the\s+other\s+regions"
 )
 _DISLOCATED = ((_ONE_BLOCK, "it"), (_GROUP, "them"))
+_NOTHING_ON = r"\2 \3 \1"  # "the other regions, place nothing on them": place nothing on the other regions
+_SAID = r"(?:the\s+)?(?:said|aforesaid|aforementioned)"
+_ON = r"(?:on|onto|in|into)"
 _PUT_NOTHING = r"(?:put|place|drop|set|leave|lay)\s+(?:nothing|no\s+(?:block|object|pillar)s?)"
 _BARE_VERB = r"(?:go|be|hold|come|stay|remain|land|end\s+up|sit|get)"
 _LETTERS = r"[e-j](?:\s*(?:,|and|or)\s*[e-j])*"
@@ -130,32 +133,43 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
         r"\1 you \2 ",
     ),
     # informal verbs of putting: "chuck / toss / plop / dump / shove the blocks into ..." (put)
-    (r"\b(?:chuck|toss|plop|dump|shove|haul|stow)(?=\s+(?:the|all|both|it|them|red|blue|yellow|three|\d)\b)", "put"),
+    (
+        r"\b(?:chuck|toss|plop|dump|shove|haul|stow)(?=\s+(?:the|all|both|it|them|red|blue|yellow|three|\d)\b)",
+        "put",
+    ),
     # a pirate's English: "afore" (before), "ye" (you)
     (r"\bafore\b", "before"),
     (r"\bye\b", "you"),
     # a left-dislocated object, taken up again by "it" or "them": "the yellow block, put it on region i" (put
-    # the yellow block on region i); "red and blue, just swap them"; "the other regions, place nothing on them"
+    # the yellow block on region i); "red and blue, just swap them"; "the other regions, place nothing on
+    # them"
     *(
         (rf"^\s*({np})\s*,\s*(?:just\s+)?((?:{VERB}|{SWAP})\b)\s+{pronoun}\b", r"\2 \1")
         for np, pronoun in _DISLOCATED
     ),
     *(
-        (rf"^\s*({np})\s*,\s*(?:just\s+)?({_PUT_NOTHING})\s+(on|onto|in|into)\s+{pronoun}\b", r"\2 \3 \1")
+        (rf"^\s*({np})\s*,\s*(?:just\s+)?({_PUT_NOTHING})\s+({_ON})\s+{pronoun}\b", _NOTHING_ON)
         for np, pronoun in _DISLOCATED
     ),
-    # legal English names what it said before with "said": "said regions" (these regions)
-    (r"\b(?:the\s+)?(?:said|aforesaid|aforementioned)\s+(?=(?:regions|blocks|pillars|objects|areas)\b)", "these "),
-    (r"\b(?:the\s+)?(?:said|aforesaid|aforementioned)\s+(?=(?:region|block|pillar|object|area)\b)", "this "),
+    # legal English names the places or blocks it said before with "said": "said regions" (these regions;
+    # "said block" is left unread)
+    (rf"\b{_SAID}\s+(?=(?:regions|blocks|pillars|objects|areas)\b)", "these "),
     # a block's heading before its touch state: "blue block: untouched until ..." (the blue block stays ...)
-    (r"^\s*(?:the\s+)?(red|blue|yellow)(?:\s+(?:block|pillar|object))?\s*:\s*(?=untouched\b)", r"the \1 block stays "),
+    (
+        r"^\s*(?:the\s+)?(red|blue|yellow)(?:\s+(?:block|pillar|object))?\s*:\s*(?=untouched\b)",
+        r"the \1 block stays ",
+    ),
     # a bare region letter heading one block ("g: yellow, last"): the region ("i" is the pronoun: refused)
     (
         r"^\s*([e-hj])\s*:\s*(?=(?:the\s+)?(?:red|blue|yellow)(?:\s+(?:block|pillar|object|one))?\s*(?:,|$))",
         r"region \1 : ",
     ),
-    # a pair before its exchange, after a comma: "red and blue blocks, swap places" (swap ...)
-    (rf"^\s*({_GROUP})\s*,\s*(?:just\s+)?({SWAP})(?:\s+(?:places|positions))?\b", r"\2 \1"),
+    # a pair before its exchange, after a comma: "red and blue blocks, swap places" (swap ...); "swap them"
+    # is the dislocation's, "swap it" is left unread
+    (
+        rf"^\s*({_GROUP})\s*,\s*(?:just\s+)?({SWAP})(?:\s+(?:places|positions))?\b(?!\s+(?:it|them)\b)",
+        r"\2 \1",
+    ),
     # a manner said as a result: "..., in such a way that each region holds one block" (..., each region ...)
     (r",?\s*\bin\s+such\s+a\s+way\s+that\b", " ,"),
     # "at any point / time during the task": at any time
