@@ -53,7 +53,7 @@ REFUSED = [
     # a place after a comma without a verb: where it goes, or where it is?
     (5, "Red and blue, swap! Red down first! Yellow, opposite side, whenever!"),
     # a pronoun of the other number takes up no object
-    (5, "Red and blue, just swap it, red placed first; put the yellow block on the opposite side at any time"),
+    (5, "Red and blue, just swap it, red placed first; put the yellow block on the opposite side any time"),
     (3, "The three pillars, put them on regions E, F and G; the other regions, place nothing on it."),
     # a bare "I" is the pronoun, never a region letter
     (7, "I: all three objects, one after another, red before blue. F, G, H: nothing during this period."),
