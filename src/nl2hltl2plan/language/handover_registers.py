@@ -43,7 +43,12 @@ the word tables' `REWRITES`). Each rewrite changes no meaning:
 - conditions that restate an order or a rule: "when / once / by the time you place X, Y must already be
   placed" (Y before X), "if a region already holds a block, do not put another block there" and "a region
   that already has a block may not get a second one" (one block per region), "if a region is not one of
-  E, F and G, put nothing on it" (nothing on any other region).
+  E, F and G, put nothing on it" (nothing on any other region);
+- a left-dislocated object taken up by a pronoun of its number ("the yellow block, put it on region I";
+  "red and blue, just swap them"; "the other regions, place nothing on them"), a pair before its exchange
+  ("red and blue blocks, swap places"), legal "said regions" (these regions), a block's heading before
+  "untouched" ("blue: untouched until red is touched"), a bare region letter heading one block ("G:
+  yellow"; "I:" is the pronoun, refused by name), a pirate's "afore", "ye", "haul" and "stow".
 """
 
 from __future__ import annotations
