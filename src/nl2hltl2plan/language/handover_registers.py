@@ -43,7 +43,12 @@ the word tables' `REWRITES`). Each rewrite changes no meaning:
 - conditions that restate an order or a rule: "when / once / by the time you place X, Y must already be
   placed" (Y before X), "if a region already holds a block, do not put another block there" and "a region
   that already has a block may not get a second one" (one block per region), "if a region is not one of
-  E, F and G, put nothing on it" (nothing on any other region).
+  E, F and G, put nothing on it" (nothing on any other region);
+- a left-dislocated object taken up by a pronoun of its number ("the yellow block, put it on region I";
+  "red and blue, just swap them"; "the other regions, place nothing on them"), a pair before its exchange
+  ("red and blue blocks, swap places"), legal "said regions" (these regions), a block's heading before
+  "untouched" ("blue: untouched until red is touched"), a bare region letter heading one block ("G:
+  yellow"; "I:" is the pronoun, refused by name), a pirate's "afore", "ye", "haul" and "stow".
 """
 
 from __future__ import annotations
@@ -73,6 +78,18 @@ _SUBJECT_NP = (
     r"(?:the|no|nothing|none|red|blue|yellow|all|each|every|both)\b(?:\s+(?!(?:go|be|hold|come|stay|remain|land|"
     r"end|sit|get)\b)[a-z]+){0,5}?"
 )
+# an object said first and taken up again by a pronoun of its number (left dislocation): one block by its
+# colour ("it"); blocks by their colours, a counted group or the other regions ("them")
+_ONE_BLOCK = r"(?:the\s+)?(?:red|blue|yellow)(?:\s+(?:block|one|pillar|object))?"
+_GROUP = (
+    r"(?:the\s+)?(?:red|blue|yellow)(?:\s*(?:,|and)\s*(?:the\s+)?(?:red|blue|yellow))+(?:\s+(?:blocks|ones|"
+    r"pillars|objects))?|(?:the\s+|all\s+)?(?:three|3)\s+(?:blocks|pillars|objects)|the\s+other\s+regions"
+)
+_DISLOCATED = ((_ONE_BLOCK, "it"), (_GROUP, "them"))
+_NOTHING_ON = r"\2 \3 \1"  # "the other regions, place nothing on them": place nothing on the other regions
+_SAID = r"(?:the\s+)?(?:said|aforesaid|aforementioned)"
+_ON = r"(?:on|onto|in|into)"
+_PUT_NOTHING = r"(?:put|place|drop|set|leave|lay)\s+(?:nothing|no\s+(?:block|object|pillar)s?)"
 _BARE_VERB = r"(?:go|be|hold|come|stay|remain|land|end\s+up|sit|get)"
 _LETTERS = r"[e-j](?:\s*(?:,|and|or)\s*[e-j])*"
 
@@ -121,7 +138,43 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
         r"\1 you \2 ",
     ),
     # informal verbs of putting: "chuck / toss / plop / dump / shove the blocks into ..." (put)
-    (r"\b(?:chuck|toss|plop|dump|shove)(?=\s+(?:the|all|both|it|them|red|blue|yellow|three|\d)\b)", "put"),
+    (
+        r"\b(?:chuck|toss|plop|dump|shove|haul|stow)(?=\s+(?:the|all|both|it|them|red|blue|yellow|three|\d)\b)",
+        "put",
+    ),
+    # a pirate's English: "afore" (before), "ye" (you)
+    (r"\bafore\b", "before"),
+    (r"\bye\b", "you"),
+    # a left-dislocated object, taken up again by "it" or "them": "the yellow block, put it on region i" (put
+    # the yellow block on region i); "red and blue, just swap them"; "the other regions, place nothing on
+    # them"
+    *(
+        (rf"^\s*({np})\s*,\s*(?:just\s+)?((?:{VERB}|{SWAP})\b)\s+{pronoun}\b", r"\2 \1")
+        for np, pronoun in _DISLOCATED
+    ),
+    *(
+        (rf"^\s*({np})\s*,\s*(?:just\s+)?({_PUT_NOTHING})\s+({_ON})\s+{pronoun}\b", _NOTHING_ON)
+        for np, pronoun in _DISLOCATED
+    ),
+    # legal English names the places or blocks it said before with "said": "said regions" (these regions;
+    # "said block" is left unread)
+    (rf"\b{_SAID}\s+(?=(?:regions|blocks|pillars|objects|areas)\b)", "these "),
+    # a block's heading before its touch state: "blue block: untouched until ..." (the blue block stays ...)
+    (
+        r"^\s*(?:the\s+)?(red|blue|yellow)(?:\s+(?:block|pillar|object))?\s*:\s*(?=untouched\b)",
+        r"the \1 block stays ",
+    ),
+    # a bare region letter heading one block ("g: yellow, last"): the region ("i" is the pronoun: refused)
+    (
+        r"^\s*([e-hj])\s*:\s*(?=(?:the\s+)?(?:red|blue|yellow)(?:\s+(?:block|pillar|object|one))?\s*(?:,|$))",
+        r"region \1 : ",
+    ),
+    # a pair before its exchange, after a comma: "red and blue blocks, swap places" (swap ...); "swap them"
+    # is the dislocation's, "swap it" is left unread
+    (
+        rf"^\s*({_GROUP})\s*,\s*(?:just\s+)?({SWAP})(?:\s+(?:places|positions))?\b(?!\s+(?:it|them)\b)",
+        r"\2 \1",
+    ),
     # a manner said as a result: "..., in such a way that each region holds one block" (..., each region ...)
     (r",?\s*\bin\s+such\s+a\s+way\s+that\b", " ,"),
     # "at any point / time during the task": at any time
