@@ -104,3 +104,22 @@ def test_let_it_near_misses():
     assert unknown_verbs("put the apple in the fridge and leave it there") == []
     rest = unknown_verbs("put the bread in the box and allow the bread to rest")
     assert [u.words for u in rest] == ["rest"]
+
+
+@pytest.mark.parametrize(
+    ("text", "second"),
+    [
+        # the fragment names its own place: a placing of its own, read as before (no repeat asked)
+        ("Put the apple in the fridge. The tomato in the microwave too.",
+         ("place", "Tomato", False, ["Microwave"])),
+        ("Put the apple in the fridge. The tomato, too.", ("place", "Tomato", False, ["Fridge"])),
+    ],
+)  # fmt: skip
+def test_a_fragment_near_miss_keeps_its_reading(text, second):
+    tasks, _ = _read(text, "FloorPlan1", "offline")
+    assert tasks[1] == second
+
+
+def test_a_fragment_of_the_same_type_is_refused():
+    """ "the mug ... Same for the coffee mug": one type twice, which the spec's atoms cannot keep apart."""
+    assert "(fragment)" in _refused(f"{KITCHEN} Same for the coffee mug.", "FloorPlan1", "offline")
