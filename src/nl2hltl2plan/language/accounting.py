@@ -65,6 +65,7 @@ from nl2hltl2plan.language.unsupported_steps import (
     opened_for_itself,
     other_instances,
     repeated_tasks,
+    repeats_for_another,
     returns_and_repeats,
     started,
     treated_after_placing,
@@ -120,6 +121,7 @@ def account(
     out += corrections(instruction, mentions, parse) + repeated_tasks(instruction, mentions, parse)
     out += one_of_several(instruction, mentions, parse, instances)
     out += first_and_last(instruction, mentions, parse) + fragments(instruction, mentions)
+    out += repeats_for_another(instruction, mentions, parse)
     out += _words(instruction, toks, in_mention, mentions, parse, instances, scene)
     out += unordered_steps(
         toks, {i for i, t in enumerate(toks) if parse.constraint_at(t[1])} | in_mention, parse, per_group_only

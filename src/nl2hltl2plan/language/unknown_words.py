@@ -57,8 +57,8 @@ _PREPOSITIONS = LOCATIVE | {
 # whose object the action follows ("let it cool", "use the knife to slice ...", "have the mug in the sink")
 _NO_ACTION = frozenset(
     "but or nor yet so plus except including especially even only just too either neither whether while "
-    "where when which what who how why there here you we they he she i let have has had use need want like "
-    "try help be is are was were do does did can could will would should must may might shall".split()
+    "where when which what who how why there here you we they he she i let allow have has had use need want "
+    "like try help be is are was were do does did can could will would should must may might shall".split()
 )
 _CLAUSE_BREAK = re.compile(r"[,.;:!?()]|\s[-–—]\s")
 ACTION_REASON = "no base task does this: an action the system has no word for"
@@ -78,7 +78,18 @@ def unknown_verbs(instruction: str, toks: Tokens | None = None) -> list[Unread]:
         )
         if opens and toks[i + 1][0] in _OBJECT_START and _unknown_action(word):
             out.append(Unread(word, "action", ACTION_REASON))
+    for m in _LET.finditer(instruction.lower()):  # "and let it soak": the action after its thing
+        verb = m["verb"] or m["verb2"]
+        if _unknown_action(verb) and verb not in {u.words for u in out}:
+            out.append(Unread(verb, "action", ACTION_REASON))
     return out
+
+
+# "let it soak", "leave it to drain", "allow them to cool": an action left to the thing itself (issue 23)
+_LET_THING = r"(?:it|them|(?:the|that|this|those|these)\s+[a-z]+)"
+_LET = re.compile(
+    rf"\blet\s+{_LET_THING}\s+(?P<verb>[a-z]+)\b|\b(?:allow|leave)\s+{_LET_THING}\s+to\s+(?P<verb2>[a-z]+)\b"
+)
 
 
 def _unknown_action(word: str) -> bool:

@@ -21,6 +21,7 @@ import networkx as nx
 
 from nl2hltl2plan.domain.task_kinds import APPLIANCE
 from nl2hltl2plan.language.content_words import DETERMINERS, Unread, categories
+from nl2hltl2plan.language.grammar.repeats import REPEAT_FRAGMENT
 from nl2hltl2plan.language.grounding import Mention, lookup, sentence_start, tokens
 from nl2hltl2plan.language.negations import NO_CONSTRAINT, PRONOUNS
 from nl2hltl2plan.language.parse_usage import ParseUsage
@@ -467,3 +468,55 @@ def fragments(instruction: str, mentions: list[Mention]) -> list[Unread]:
         ):
             out.append(Unread(m.group(0).strip(" ,"), "fragment", FRAGMENT))
     return out
+
+
+# a sentence after a task that asks for that task again for another thing (issue 23): "The cup too.",
+# "Same for the bowl." (`grammar.repeats`, which writes out those it can); "the same for the cup, but ..."
+_SAME_FOR = re.compile(r"\bsame\s+(?:thing\s+)?(?:for|with|to)\s+(?:the|a|an|my|your)\s+", re.I)
+_SAME_TASK = "the task before, for another thing: no task does the whole of it (its treatment, slicing, "
+_SAME_TASK += "place, order) for this thing: say the whole task"
+_SAME_THING = "no task of its own does the task for this thing (unread, or read as another task's thing)"
+
+
+def repeats_for_another(instruction: str, mentions: list[Mention], parse: ParseUsage) -> list[Unread]:
+    """A fragment sentence that repeats the task before it for another thing ("Wash the mug and put it on
+    the counter. The cup too."): read only where a task does exactly what another task does (kind,
+    slicing, count, places, light, state, order) to the thing named, and that other task's thing is
+    another type; a cup placed but not washed is named, never dropped. A thing after "the same for" is
+    never read as the thing of another task ("the cup" as the mug before it)."""
+    out = []
+    for s in re.finditer(r"[^.;!?\n]+", instruction):
+        if s.start() == 0 or not REPEAT_FRAGMENT.match(s.group(0)):
+            continue
+        named = [x for x in mentions if s.start() <= x.char_start < s.end()]
+        if named and not all(_repeated(set(x.entry.types), parse) for x in named):
+            out.append(Unread(s.group(0).strip(" ,"), "fragment", _SAME_TASK))
+    for m in _SAME_FOR.finditer(instruction):
+        x = next((x for x in mentions if x.char_start == m.end()), None)
+        types = set(x.entry.types) if x is not None else set()
+        if x is not None and not any(set(t.object) & types and _own(t, parse) for t in parse.tasks):
+            out.append(Unread(x.surface, "object", _SAME_THING))
+    return out
+
+
+def _others(t: BaseTaskSpec, parse: ParseUsage) -> list[BaseTaskSpec]:
+    return [o for o in parse.tasks if o is not t]
+
+
+def _own(t: BaseTaskSpec, parse: ParseUsage) -> bool:
+    """No other task acts on a thing of `t`'s type."""
+    return not any(set(o.object) & set(t.object) for o in _others(t, parse))
+
+
+def _repeated(types: set[str], parse: ParseUsage) -> bool:
+    def what(t: BaseTaskSpec, other: BaseTaskSpec) -> tuple[object, ...]:
+        ids = {t.id, other.id}
+        after = {a for a, b in parse.before if b == t.id and a not in ids}
+        before = {b for a, b in parse.before if a == t.id and b not in ids}
+        return (t.kind, t.sliced, t.count, t.receptacle, t.container, t.light, t.state, after, before)
+
+    return any(
+        set(t.object) & types and _own(t, parse) and what(t, o) == what(o, t)
+        for t in parse.tasks
+        for o in _others(t, parse)
+    )

@@ -29,6 +29,7 @@ from functools import lru_cache
 from importlib import resources
 
 from nl2hltl2plan.language.content_words import free_order_phrase
+from nl2hltl2plan.language.grammar.repeats import repeated_for_another
 from nl2hltl2plan.language.grammar.restated import count_fits, restated
 from nl2hltl2plan.language.grounding import find_mentions
 from nl2hltl2plan.language.spelling import respelt
@@ -141,6 +142,7 @@ def everyday(text: str) -> str:
     if _FREE_REMARK.search(text):  # "1. X. 2. Y. Any order is fine.": the numbers only list the steps
         text = _NUMBERED.sub(lambda m: m["lead"], text)
     text = everyday_names(respelt(text))  # misspelt names of things (language/spelling.py), everyday names
+    text = repeated_for_another(text)  # "... The cup too.": the task before, for the cup (repeats.py)
     text = _REFERENCE_TO_ALL.sub(_reference_sentence, text)
     text = _PAREN_FREE_ORDER.sub(", in any order", text)
     text = _STEP_COLON.sub(r"\1 ", _ARROW.sub(" onto ", text))

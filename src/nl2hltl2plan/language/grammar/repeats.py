@@ -1,0 +1,90 @@
+"""A sentence that asks for the task before it again, for another thing (issue 23): "Wash the mug and put
+it on the counter. The cup too." is "... Wash the cup and put it on the counter." The fragment forms
+(`REPEAT_FRAGMENT`): "The cup too.", "And the egg as well.", "Same for the bowl.", "Do the same with the
+tomato.", "Also the pencil.".
+
+The task before is repeated only where its sentence is one plain task: a task verb opening it, then the
+thing it acts on (one thing, singular), then only task verbs, "and", "it", prepositions and one place;
+and where the fragment says nothing but its things ("The red tomato too." and "The tomato in the
+microwave too." stay).
+Any other fragment stays as written, and check 1 names it unless a task does the whole of the task before
+for the thing it names (`unsupported_steps.repeats_for_another`).
+
+>>> repeated_for_another("Wash the mug and put it on the counter. The cup too.")
+'Wash the mug and put it on the counter. Wash the cup and put it on the counter.'
+>>> repeated_for_another("Put the mug in the sink after the apple is in the fridge. The cup too.")
+'Put the mug in the sink after the apple is in the fridge. The cup too.'
+>>> repeated_for_another("Put the apple in the fridge. The tomato in the microwave too.")
+'Put the apple in the fridge. The tomato in the microwave too.'
+"""
+
+from __future__ import annotations
+
+import re
+
+from nl2hltl2plan.language.content_words import DETERMINERS, categories
+from nl2hltl2plan.language.grounding import Mention, find_mentions, tokens
+
+_DET = r"(?:the|a|an|my|your|his|her|their|our|this|that|these|those)"
+# a word of a noun phrase: no preposition, joiner or verb ("the tomato in the microwave too" says a place)
+_W = r"(?!(?:in|into|on|onto|inside|to|at|under|near|by|from|with|and|then|too|also|as|is|are|goes)\b)[a-z]+"
+_NP = rf"{_DET}\s+{_W}(?:\s+{_W}){{0,2}}"
+_NPS = rf"{_NP}(?:\s*,?\s*(?:and\s+)?{_NP})*"
+REPEAT_FRAGMENT = re.compile(
+    r"^\s*(?:(?:and|also|plus)\s+)*"
+    rf"(?:(?:please\s+)?(?:do\s+)?(?:the\s+)?same\s+(?:thing\s+)?(?:for|with|to)\s+{_NPS}"
+    rf"|{_NPS}\s*,?\s+(?:too|as\s+well|also)"
+    rf"|(?:and|also|plus)\s+{_NPS})"
+    r"\s*(?:,?\s*(?:too|as\s+well|also|please))?\s*$",
+    re.I,
+)
+_SENTENCE = re.compile(r"[^.;!?\n]+[.;!?\n]*")
+# the words a plain one-task sentence may hold besides its thing and its place
+_PLAIN = DETERMINERS | {"and", "it", "please", "in", "into", "on", "onto", "inside", "to", "then"}
+_FRAGMENT_WORDS = DETERMINERS | set("and also plus please do same thing for with to too as well".split())
+_TASK_VERBS = frozenset({"verb_any", "verb_clean_place", "verb_heat_place", "verb_cool_place", "verb_sliced"})
+
+
+def repeated_for_another(text: str) -> str:
+    """Each fragment sentence that repeats a plain one-task sentence for other things, written out."""
+    out: list[str] = []
+    task = ""  # the last sentence that is not a fragment
+    for s in _SENTENCE.finditer(text):
+        body = s.group(0)
+        core = body.rstrip(" .;!?\n")
+        if task and REPEAT_FRAGMENT.match(core):
+            things = [m for m in find_mentions(core) if not m.entry.generic]
+            copies = [_with_thing(task, m) for m in things]
+            if things and all(copies) and _only_things(core, things):
+                lead = core[: len(core) - len(core.lstrip())]
+                out.append(lead + ". ".join(c for c in copies if c) + body[len(core) :])
+                continue
+        if not REPEAT_FRAGMENT.match(core):
+            task = core.strip()
+        out.append(body)
+    return "".join(out)
+
+
+def _only_things(fragment: str, things: list[Mention]) -> bool:
+    """The fragment says nothing but its things ("the tomato in the microwave too" says a place)."""
+    in_thing = {i for m in things for i in range(m.start, m.end)}
+    return all(i in in_thing or w in _FRAGMENT_WORDS for i, (w, _, _) in enumerate(tokens(fragment)))
+
+
+def _with_thing(sentence: str, thing: Mention) -> str | None:
+    """`sentence` with its thing replaced by `thing`, where it is a plain one-task sentence (None else)."""
+    if thing.plural:
+        return None
+    named = [m for m in find_mentions(sentence) if not m.entry.generic]
+    toks = tokens(sentence)
+    if len(named) != 2 or named[0].plural or len(toks) < 3 or toks[1][0] not in DETERMINERS:
+        return None
+    if named[0].entry.types[0] == thing.entry.types[0]:
+        return None  # "the mug ... Same for the coffee mug": one type, the atoms cannot tell them apart
+    if named[0].start != 2 or not categories(toks[0][0]) & _TASK_VERBS:
+        return None  # the thing follows the opening verb and its determiner
+    in_mention = {i for m in named for i in range(m.start, m.end)}
+    for i, (word, _, _) in enumerate(toks):
+        if i not in in_mention and word not in _PLAIN and not categories(word) & _TASK_VERBS:
+            return None
+    return sentence[: named[0].char_start] + thing.surface + sentence[named[0].char_end :]
