@@ -70,7 +70,8 @@ PUT_EGG, PUT_MUG = "place Egg -> Fridge", "place Mug -> SinkBasin"
         ),
         *[  # a done-clause opening a sentence with no comma: "both" / "they" are the tasks before, no count
             (
-                f"put the egg in the fridge. then put the mug in the sink. {opener} put the pen in the drawer",
+                f"put the egg in the fridge. then put the mug in the sink. {opener} put the pen in the "
+                "drawer",
                 [PUT_EGG, PUT_MUG, "place Pen -> Drawer"],
                 {(PUT_EGG, PUT_MUG), (PUT_EGG, "place Pen -> Drawer"), (PUT_MUG, "place Pen -> Drawer")},
             )
