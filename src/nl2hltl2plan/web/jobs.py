@@ -32,7 +32,9 @@ from nl2hltl2plan.web.requests import PlanRequest
 
 HEARTBEAT_S = 0.25  # how often a follower wakes up with no news (to notice a gone client)
 KILL_GRACE_S = 1.0  # past the deadline, how long the worker may take to say so itself
-PRELOAD = ["nl2hltl2plan.web.worker", "nl2hltl2plan.present.outputs", "matplotlib.pyplot"]
+# imported by the fork server once; `web.warm` plans a small demo instruction there (see its docstring)
+PRELOAD = ["nl2hltl2plan.web.worker", "nl2hltl2plan.present.outputs", "matplotlib.pyplot",
+           "nl2hltl2plan.web.warm"]
 Event = tuple[str, dict[str, Any]]
 
 
