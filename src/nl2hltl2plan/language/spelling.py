@@ -58,6 +58,12 @@ def english_word(word: str) -> bool:
     return bool(_english().known([word]))
 
 
+def one_edit(word: str) -> set[str]:
+    """Every string one letter more, less, changed, or two neighbours swapped, from `word` (lower case;
+    pyspellchecker's edits)."""
+    return set(_english().edit_distance_1(word)) - {word}
+
+
 @cache
 def _english():  # type: ignore[no-untyped-def]  # pyspellchecker has no type hints
     from spellchecker import SpellChecker

@@ -25,7 +25,7 @@ from __future__ import annotations
 
 import re
 
-from nl2hltl2plan.language.spelling import english_word, known_word
+from nl2hltl2plan.language.spelling import english_word, known_word, one_edit
 
 # the order words of the tabletop reading (groups in turn) that a misspelling may stand for
 _ORDER_WORDS = frozenset(
@@ -34,17 +34,6 @@ _ORDER_WORDS = frozenset(
 )
 _WORD = re.compile(r"(?<![A-Za-z'])[A-Za-z]{4,}(?![A-Za-z'])")
 _CLAUSE_THAN = re.compile(r"(?:(?<=[,;:.!?]\s)|(?<=\band\s)|^)(?P<than>[Tt]han)\b")
-_LETTERS = "abcdefghijklmnopqrstuvwxyz"
-
-
-def _one_edit(word: str) -> set[str]:
-    """Every string one letter more, less, changed, or two neighbours swapped, from `word`."""
-    cuts = [(word[:i], word[i:]) for i in range(len(word) + 1)]
-    out = {a + b[1:] for a, b in cuts if b}
-    out |= {a + b[1] + b[0] + b[2:] for a, b in cuts if len(b) > 1}
-    out |= {a + c + b[1:] for a, b in cuts if b for c in _LETTERS}
-    out |= {a + c + b for a, b in cuts for c in _LETTERS}
-    return out - {word}
 
 
 def _near(word: str, targets: frozenset[str]) -> set[str]:
@@ -54,7 +43,7 @@ def _near(word: str, targets: frozenset[str]) -> set[str]:
     if len(low) < 4 or low in targets or known_word(low):
         return set()
     swapped = {t for t in targets if len(t) == len(low) and sorted(t) == sorted(low) and _swap(t, low)}
-    return swapped or (set() if english_word(low) else _one_edit(low) & targets)
+    return swapped or (set() if english_word(low) else one_edit(low) & targets)
 
 
 def _swap(a: str, b: str) -> bool:
