@@ -25,6 +25,8 @@ from __future__ import annotations
 
 import re
 
+from nl2hltl2plan.language.content_words import free_order_phrase
+
 _ROBOT = frozenset("robot bot assistant ai helper".split())
 _TURN = re.compile(r"(?:^|(?<=[.!?])\s+)(?P<who>[A-Za-z]+)\s*:\s*")
 # a question about the order or the turn of a step ("In which order?", "Where do I start?", "And then?")
@@ -32,10 +34,11 @@ _ORDER_QUESTION = re.compile(
     r"\b(?:order|ordering|sequence|first|start|begin|then|next|after|afterwards|before|last|finish|turn)\b",
     re.IGNORECASE,
 )
+# ... and an answer that leaves it free: a short one, or any phrase of the shared list (free_order.txt)
 _FREE_ANSWER = re.compile(
-    r"(?:no|nope|not really|none|any|anything|whatever|either|any order|any order is fine|no preference|"
-    r"(?:it\s+)?(?:doesn't|does\s+not|doesnt)\s+matter|up\s+to\s+you|your\s+call|(?:i\s+)?don't\s+mind)"
-    r"[\s,]*(?:thanks|thank you)?\s*[.!]*",
+    r"(?:no|nope|not really|none|any|anything|whatever|either|no preference|"
+    r"(?:it\s+)?(?:doesn't|does\s+not|doesnt)\s+matter|up\s+to\s+you|your\s+call|(?:i\s+)?don't\s+mind|"
+    rf"{free_order_phrase('whole')})[\s,]*(?:thanks|thank you)?\s*[.!]*",
     re.IGNORECASE,
 )
 
