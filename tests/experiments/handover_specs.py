@@ -32,6 +32,11 @@ def _spec_or_refused(task_id: int, text: str) -> HierarchicalSpec | None:
         return None
 
 
+def assert_refused_by_name(task_id: int, text: str) -> None:
+    """`text` is refused, with a one-line error (that names what it could not use)."""
+    assert _spec_or_refused(task_id, text) is None, text
+
+
 def assert_not_the_written_spec(task_id: int, text: str) -> None:
     """A near miss is refused with a one-line error, or gives another spec: never the written one."""
     spec = _spec_or_refused(task_id, text)
