@@ -256,6 +256,18 @@ def _plurals(word: str) -> set[str]:
     return out
 
 
+def phrase_lines(name: str) -> list[tuple[list[str], list[str]]]:
+    """The lines of a word file of this package in the lexicon's format, `phrase[, phrase...] : field [:
+    field ...]` (`#` comments): each line's phrases and its fields (lexicon.txt, everyday_names.txt)."""
+    out = []
+    for raw in resources.files("nl2hltl2plan.language").joinpath(name).read_text().splitlines():
+        line = raw.split("#", 1)[0].strip()
+        if line:
+            head, *fields = (p.strip() for p in line.split(" : "))
+            out.append(([p.strip() for p in head.split(",") if p.strip()], fields))
+    return out
+
+
 @lru_cache(maxsize=1)
 def lexicon() -> dict[tuple[str, ...], tuple[Entry, bool]]:
     """phrase tokens -> (entry, is_plural_form). Own entries win over type names and plural forms."""
@@ -264,17 +276,10 @@ def lexicon() -> dict[tuple[str, ...], tuple[Entry, bool]]:
     for t in THOR_TYPES:
         for phrase in {camel_words(t), t.lower()}:
             singular[tuple(phrase.split())] = Entry(phrase, (t,))
-    text = resources.files("nl2hltl2plan.language").joinpath("lexicon.txt").read_text()
-    for raw in text.splitlines():
-        line = raw.split("#", 1)[0].strip()
-        if not line:
-            continue
-        parts = [p.strip() for p in line.split(" : ")]
-        phrases, types = parts[0], tuple(parts[1].split())
-        all_ = len(parts) > 2 and parts[2] == "all"
-        for phrase in (p.strip() for p in phrases.split(",")):
-            if phrase:
-                singular[tuple(phrase.split())] = Entry(phrase, types, all_)
+    for phrases, fields in phrase_lines("lexicon.txt"):
+        types, all_ = tuple(fields[0].split()), len(fields) > 1 and fields[1] == "all"
+        for phrase in phrases:
+            singular[tuple(phrase.split())] = Entry(phrase, types, all_)
     for key, entry in singular.items():
         for pl in _plurals(key[-1]):
             pkey = key[:-1] + (pl,)

@@ -26,12 +26,11 @@ from __future__ import annotations
 
 import re
 from functools import lru_cache
-from importlib import resources
 
 from nl2hltl2plan.language.content_words import free_order_phrase
 from nl2hltl2plan.language.grammar.repeats import repeated_for_another
 from nl2hltl2plan.language.grammar.restated import count_fits, restated
-from nl2hltl2plan.language.grounding import find_mentions
+from nl2hltl2plan.language.grounding import find_mentions, phrase_lines
 from nl2hltl2plan.language.spelling import respelt
 from nl2hltl2plan.language.statements import RELATIVE_PLACE
 
@@ -115,13 +114,7 @@ def _reference_sentence(m: re.Match[str]) -> str:
 @lru_cache(maxsize=1)
 def _names() -> tuple[re.Pattern[str], dict[str, str]]:
     """`everyday_names.txt` as one pattern (longest names first) and each name's lexicon name."""
-    table: dict[str, str] = {}
-    text = resources.files("nl2hltl2plan.language").joinpath("everyday_names.txt").read_text()
-    for raw in text.splitlines():
-        line = raw.split("#", 1)[0].strip()
-        if line:
-            names, target = (p.strip() for p in line.split(" : "))
-            table.update({n.strip(): target for n in names.split(",") if n.strip()})
+    table = {name: fields[0] for names, fields in phrase_lines("everyday_names.txt") for name in names}
     longest_first = sorted(table, key=len, reverse=True)
     alternatives = "|".join(re.escape(n).replace(r"\ ", r"\s+") for n in longest_first)
     return re.compile(rf"(?<![\w'-])(?:{alternatives})(?![\w'-])", re.I), table
