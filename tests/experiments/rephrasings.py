@@ -1722,8 +1722,8 @@ VALID_H106: dict[int, list[str]] = {
         "respectively, in any order.",
         "Method (order free): green apple onto pink plate, red apple onto blue plate, orange onto yellow "
         "plate.",
-        "Every fruit is to go on its own plate: the green apple on the pink one, the orange on the yellow one "
-        "and the red apple on the blue one, in whatever order is simplest.",
+        "Every fruit is to go on its own plate: the green apple on the pink one, the orange on the yellow "
+        "one and the red apple on the blue one, in whatever order is simplest.",
         "Of course! Please place the red apple on the blue plate, the orange on the yellow plate and the "
         "green apple on the pink plate, in any order you find convenient."],
     3: ["The carrot, the orange, the green apple and the red apple should be placed on the blue, yellow, "
@@ -1774,8 +1774,8 @@ DEV_H106: dict[int, list[str]] = {
         "apple on pink plate.",
         "Method: 1. Carrot onto the blue plate. 2. Orange onto the yellow plate. 3. Green apple onto the "
         "green plate. 4. Red apple onto the pink plate. Any step may come first.",
-        "Each item is to be placed on its plate in arbitrary order: the carrot on the blue one, the orange on "
-        "the yellow one, the green apple on the green one and the red apple on the pink one.",
+        "Each item is to be placed on its plate in arbitrary order: the carrot on the blue one, the orange "
+        "on the yellow one, the green apple on the green one and the red apple on the pink one.",
         "Sure! Just place the red apple on the pink plate, the green apple on the green plate, the orange on "
         "the yellow plate and the carrot on the blue plate, in whatever order is easiest.",
         "No problem! The carrot goes on the blue plate, the orange on the yellow plate, the green apple on "
@@ -1788,8 +1788,8 @@ DEV_H106: dict[int, list[str]] = {
         "red apple on the blue plate after them.",
         "Method: 1. Green apple and orange onto the yellow plate. 2. Carrot and red apple onto the blue "
         "plate.",
-        "Sure! First the orange and the green apple go on the yellow plate, then the red apple and the carrot "
-        "go on the blue plate.",
-        "Each item is to be placed on its plate: first the green apple and the orange on the yellow one, then "
-        "the carrot and the red apple on the blue one."],
+        "Sure! First the orange and the green apple go on the yellow plate, then the red apple and the "
+        "carrot go on the blue plate.",
+        "Each item is to be placed on its plate: first the green apple and the orange on the yellow one, "
+        "then the carrot and the red apple on the blue one."],
 }
