@@ -73,13 +73,13 @@ def reference_fronted(text: str, pattern: re.Pattern[str]) -> str:
 
 
 _CLAUSE_END = re.compile(r"[,.;!?\n]")
-# a "then" that closes its clause: "the carrot goes on the blue plate after that.", "... red apple after,",
-# or a heading: "blue plate after: carrot, red apple"
+# a "then" that closes its clause: "the carrot goes on the blue plate after that.", "... after them.", "...
+# red apple after,", or a heading: "blue plate after: carrot, red apple"
 # a clause closed by where it stands in the whole: "... on the yellow plate to start; ... to finish"
 _TO_START = r"to\s+(?:start|begin)(?:\s+with)?|at\s+first"
 _TO_FINISH = r"to\s+(?:finish|end|close|wrap\s+up)|at\s+the\s+end|in\s+the\s+end"
 _TRAILING_THEN = re.compile(
-    rf"(?:(?P<first>\b(?:first|{_TO_START})\b)|{THEN.pattern}|\b(?:after|later|last|{_TO_FINISH})\b)"
+    rf"(?:(?P<first>\b(?:first|{_TO_START})\b)|{THEN.pattern}|\b(?:after(?:\s+them)?|later|last|{_TO_FINISH})\b)"
     r"(?=\s*(?:[,.;:!?\n]|$))"
 )
 

@@ -53,7 +53,10 @@ _HEADING_FRAME = re.compile(
 # a freedom statement: what it is about (the order, which comes first, what depends on what) ...
 _ORDER_TOPIC = re.compile(
     r"\b(?:order(?:ing)?|sequenc(?:e|ing)|which(?:ever)?\b[a-z'\s]{0,24}?\b(?:first|(?:start|begin)(?:\s+with)?)|"
-    r"(?:either|any|whichever)(?:\s+one|\s+of\s+them)?\s+(?:(?:can\s+)?(?:go|goes|come|comes)\s+)?first|"
+    # "either one can go first", "any step may come first", "either of the steps may be done first"
+    r"(?:either|any|whichever)(?:\s+(?:one|step|task|placement|move|part|item)|\s+of\s+(?:them|the\s+(?:two\s+)?"
+    r"(?:steps|tasks|placements|moves|parts|items)))?\s+(?:(?:can|may|could|might)\s+)?"
+    r"(?:(?:go|goes|come|comes|be\s+done|be\s+placed)\s+)?first|"
     # the way to the end state: in this world what is left to choose on the way is the order
     r"how\s+you\s+get\s+(?:there|it\s+done)|(?:the\s+)?(?:route|path|way)\s+(?:there|you\s+take))\b"
 )

@@ -116,6 +116,7 @@ def _polite(kind: str) -> str:
 
 _POLITE = re.compile(rf"\b(?:{_polite('wish')}|{_polite('state_wish')})\b")  # "it would please me if"
 _FILLER = re.compile(rf"^\W*{_polite('opening')}\b|\b{_polite('filler')}\b")  # carry nothing
+_REPLY = re.compile(rf"^\W*(?:{_polite('reply')}\s*[!.,]+\s*)+")  # "No problem! ...": an agent's answer
 # a letter's frame: a subject line ("Subject: plates", "Re: tidying") that names nothing and says no order
 # and a sign-off ("Best, Sam", "Thanks,\nJo") closing the text: neither is part of the request
 # (its line break is gone by then: it ends where the letter's first sentence begins, with a capital)
@@ -155,12 +156,13 @@ _FRAME_ASKS_YOU = re.compile(r"\b(?:you\s+(?:could|would|can|will)|to)$")
 
 
 def plain_words(text: str, kinds: dict[str, bool], heads: dict[str, list[str]]) -> str:
-    """The lowercased text with ordinals spelt out, politeness that carries nothing removed, the verb
-    "pair" read as "match", "make it so" as "make sure", clauses that name nothing read (`remarks_read`),
-    a tidying verb before an object as "put", plates said by colour named, questions joined with their
-    answers, corrections applied and plurals named. `kinds`: each object or plate name (in words) -> is
-    it a plate; `heads`: a head noun that several objects share ("apple") -> their names."""
-    text = plate_waits_read(_letter_frame_dropped(text, kinds).lower(), kinds)
+    """The lowercased text with ordinals spelt out, politeness that carries nothing removed (an agent's
+    reply opening the text, "Sure! ...", too), the verb "pair" read as "match", "make it so" as "make
+    sure", clauses that name nothing read (`remarks_read`), a tidying verb before an object as "put",
+    plates said by colour named, questions joined with their answers, corrections applied and plurals
+    named. `kinds`: each object or plate name (in words) -> is it a plate; `heads`: a head noun that
+    several objects share ("apple") -> their names."""
+    text = plate_waits_read(_REPLY.sub("", _letter_frame_dropped(text, kinds).lower()), kinds)
     text = end_state_heading_read(text, kinds)
     text = re.sub(r"\b(1st|2nd|3rd|4th)\b", lambda m: _ORDINALS[m[1]], text)
     text = _IF_YOU_COULD.sub(r"\g<pre>please\g<body>", _REMINDER.sub("please", text))
@@ -170,7 +172,7 @@ def plain_words(text: str, kinds: dict[str, bool], heads: dict[str, list[str]]) 
     text = _BY_THE_END.sub("", _FIRST_THINGS.sub("first", text))
     text = _DONE_WORDS.sub(r"\g<that> is done", text)
     text = re.sub(r"\b(?:make|have|get)\s+it\s+so(?:\s+that)?\b", "make sure", text)  # the same goal
-    text = _tidied_as_put(text, kinds)
+    text = _own_plate_dropped(_tidied_as_put(text, kinds), kinds)
     text = answers_joined(plates_by_colour(respectively_paired(text, kinds), kinds), kinds)
     text = _moving_on_read(_plate_referred(text, kinds), kinds)
     text = _APPOSITION.sub(lambda m: m[0] if _names_a_word(m["words"], kinds) else ",", text)
@@ -228,6 +230,20 @@ _DONE_WORDS = re.compile(
 _FIRST_THINGS = re.compile(r"\bfirst\s+things\s+first\b")
 
 
+# "Each item is to be placed on its plate: ...": the plate of each, which the list after the heading names
+_OWN_PLATE = re.compile(
+    r"^(?P<head>[^:.;!?]*?)\s+(?:on|onto|in|into|to)\s+(?:its|their)\s+(?:own\s+|respective\s+|proper\s+)?"
+    r"plates?\b(?=[^:.;!?]*:)"
+)
+
+
+def _own_plate_dropped(text: str, kinds: dict[str, bool]) -> str:
+    """`text` without "on its plate" in a heading that names nothing ("each item is to be placed on its
+    plate: the carrot on the blue plate, ..."): each thing's plate is the one the list gives it."""
+    m = _OWN_PLATE.match(text)
+    return m["head"] + text[m.end() :] if m and not mention_pattern(kinds).search(m["head"]) else text
+
+
 def _tidied_as_put(text: str, kinds: dict[str, bool]) -> str:
     """ "sort the green apple onto the blue plate": a verb of tidying before a named object is the one
     action of this world, placing it."""
@@ -236,8 +252,11 @@ def _tidied_as_put(text: str, kinds: dict[str, bool]) -> str:
 
 
 _RESPECTIVELY_WORDS = frozenset(
-    "the and go goes put place move set on onto in into to should must plates please belong belongs".split()
+    "the and go goes put place move set on onto in into to should must plates please belong belongs be "
+    "placed moved shall".split()
 )
+# a duty said in the passive ("are to be placed", "is to be set"): a request here, never a state
+_TO_BE = re.compile(r"\b(?:is|are)\s+to\s+be\b")
 
 
 def respectively_paired(text: str, kinds: dict[str, bool]) -> str:
@@ -252,7 +271,7 @@ def respectively_paired(text: str, kinds: dict[str, bool]) -> str:
         said = re.findall(rf"{objects}|{plate}", m["clause"])
         things = [_name(w) for w in said if _name(w) in kinds and not kinds[_name(w)]]
         plates = [colours[_name(w).split()[0]] for w in said if _name(w) not in things]
-        rest = set(re.findall(r"[a-z']+", re.sub(rf"{objects}|{plate}", " ", m["clause"])))
+        rest = set(re.findall(r"[a-z']+", re.sub(rf"{objects}|{plate}|{_TO_BE.pattern}", " ", m["clause"])))
         one_each = len(things) == len(plates) > 1 and [_name(w) for w in said[: len(things)]] == things
         if not one_each or not rest <= _RESPECTIVELY_WORDS:
             return m[0]
@@ -321,12 +340,19 @@ def plates_by_colour(text: str, kinds: dict[str, bool]) -> str:
     """A plate said by its colour alone ("green apple -> blue", "the orange on the yellow") named in full:
     a colour word of a plate's name that starts no name and is followed by no noun of its own ("the
     green apple", "the blue and yellow plates" are left); "the yellow one" names the plate when no other
-    name starts with "yellow" (not "the green one": the green apple or the green plate)."""
+    name starts with "yellow" (not "the green one": the green apple or the green plate, but after a word of
+    place, "on the green one", the plate)."""
     colours = {n.split()[0]: n for n, plate in kinds.items() if plate and len(n.split()) == 2}
     only_plate = [c for c in colours if sum(n.split()[0] == c for n in kinds) == 1]
     if only_plate:
         one = re.compile(rf"\b(?:the\s+)?(?P<c>{'|'.join(map(re.escape, only_plate))})\s+one\b")
         text = one.sub(lambda m: f"the {colours[m['c']]}", text)
+    # "the green apple on the green one": after a word of place, "the green one" is where something goes, a
+    # plate, though an object's name starts with "green" too
+    after_place = re.compile(
+        rf"\b(?P<at>(?:on|onto|upon|in|into|to)\s+)the\s+(?P<c>{'|'.join(map(re.escape, colours))})\s+one\b"
+    )
+    text = after_place.sub(lambda m: f"{m['at']}the {colours[m['c']]}", text)
     objects = mention_pattern([n for n, plate in kinds.items() if not plate]).pattern
     # "on the green and the red apple on the pink": after a word of place, a colour is where something
     # goes, a plate, even before "and" when an object follows ("the green and red apples" elsewhere)
@@ -488,13 +514,31 @@ def label_references_dropped(text: str) -> str:
 def steps_read(text: str, listed: bool) -> str | None:
     """Step labels, and bare list numbers, as "first" / "then" (numbered 1, 2, ... in turn); bare list
     numbers beside a remark that frees the whole list (`listed`: "1) ... 2) ... in any order") only list,
-    and are removed. None: labels or numbers out of turn."""
+    and are removed, and so are step labels there where each step is one placement ("Step 1 - A on P. Step
+    2 - B on Q. The steps may be done in any order."; with two in a step, the remark may free the order
+    within each step alone). None: labels or numbers out of turn."""
     text = label_references_dropped(text)
     labels = _labels(text)
     if [_turn(m) for m in labels] != list(range(1, len(labels) + 1)):
         return None
+    if listed and len(labels) > 1 and _one_placement_each(text, labels):
+        return list_numbers_read(_as_items(text, labels), listed)
     text = _as_steps(text, labels)
     return list_numbers_read(text, listed)
+
+
+def _one_placement_each(text: str, labels: list[re.Match[str]]) -> bool:
+    """Does each labelled step say one placement (no "and", comma or "&" in it)?"""
+    ends = [m.start() for m in labels[1:]] + [len(text)]
+    steps = [text[m.end() : end] for m, end in zip(labels, ends, strict=True)]
+    return not any(re.search(r"\band\b|[,&]", step) for step in steps)
+
+
+def _as_items(text: str, marks: list[re.Match[str]]) -> str:
+    """Each step's label or number removed, each step its own sentence."""
+    for m in reversed(marks):
+        text = text[: m.start()] + ("" if m.start() == marks[0].start() else ". ") + text[m.end() :]
+    return text
 
 
 def _labels(text: str) -> list[re.Match[str]]:
@@ -525,11 +569,8 @@ def list_numbers_read(text: str, listed: bool) -> str | None:
     numbers = list(_LIST_NUMBER.finditer(text))
     if [_list_number(m) for m in numbers] != list(range(1, len(numbers) + 1)):
         return None
-    if not listed:
-        return _as_steps(text, numbers)
-    for m in reversed(numbers):  # each item its own sentence: "1) A on P 2) B on Q" is two placements
-        text = text[: m.start()] + ("" if m.start() == numbers[0].start() else ". ") + text[m.end() :]
-    return text
+    # each item its own sentence when the list is freed: "1) A on P 2) B on Q" is two placements
+    return _as_items(text, numbers) if listed else _as_steps(text, numbers)
 
 
 def _list_number(m: re.Match[str]) -> int:
