@@ -1793,3 +1793,37 @@ DEV_H106: dict[int, list[str]] = {
         "Each item is to be placed on its plate: first the green apple and the orange on the yellow one, "
         "then the carrot and the red apple on the blue one."],
 }
+
+# h106's second development batch: written after the rules for DEV_H106 and measured before any rule for it
+# (how far those rules carry), in the same four classes with other words.
+DEV2_H106: dict[int, list[str]] = {
+    1: ["The orange and the green apple go to the yellow and blue plates, respectively.",
+        "Method:\n- orange onto the yellow plate\n- green apple onto the blue plate\n(steps in any order)",
+        "All items are to be placed on their respective plates: the green apple on the blue one and the "
+        "orange on the yellow one.",
+        "Certainly! Could you put the green apple on the blue plate and the orange on the yellow plate?"],
+    2: ["Place the green apple, the orange and the red apple onto the pink, yellow and blue plates "
+        "respectively.",
+        "Method: 1) red apple onto the blue plate; 2) orange onto the yellow plate; 3) green apple onto the "
+        "pink plate. The order of the steps is arbitrary.",
+        "Every item goes on its own plate, in whatever order is most convenient: the orange on the yellow "
+        "one, the red apple on the blue one and the green apple on the pink one.",
+        "Happy to help! Put the red apple on the blue plate, the green apple on the pink plate and the "
+        "orange on the yellow plate, in an arbitrary order."],
+    3: ["The red apple, the green apple, the orange and the carrot must be put onto the pink, green, yellow "
+        "and blue plates respectively, order not prescribed.",
+        "Method (steps may be performed in any order): carrot onto blue plate; orange onto yellow plate; "
+        "green apple onto green plate; red apple onto pink plate.",
+        "Each object is to be placed on its plate in any sequence: the orange on the yellow one, the carrot "
+        "on the blue one, the red apple on the pink one, the green apple on the green one.",
+        "No worries! The red apple on the pink plate, the carrot on the blue plate, the orange on the "
+        "yellow plate and the green apple on the green plate, whichever order is easiest."],
+    4: ["The green apple and the orange are to be placed on the yellow plate; only after that are the "
+        "carrot and the red apple to be placed on the blue plate.",
+        "Method:\nStep 1 - green apple and orange onto the yellow plate (either order).\nStep 2 - carrot and "
+        "red apple onto the blue plate (either order).",
+        "Each item is to be placed on its plate: the green apple and the orange on the yellow one first, and "
+        "the carrot and the red apple on the blue one after them.",
+        "Of course! Start by putting the green apple and the orange on the yellow plate. Once both are "
+        "there, put the carrot and the red apple on the blue plate."],
+}
