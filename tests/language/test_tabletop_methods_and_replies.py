@@ -125,3 +125,10 @@ def test_an_order_label_is_free_where_the_shared_list_says_so(label, free):
     kinds = {"carrot": False, "blue plate": True}
     read = fields_read(f"Carrot on the blue plate. {label}", kinds)
     assert ("In any order" in read) is free
+
+
+@pytest.mark.parametrize(
+    "remark", ["(steps may be performed in any order)", "order not prescribed", "the order is not imposed"]
+)
+def test_a_freedom_said_with_a_verb_of_doing_or_not_prescribed_frees_the_list(remark):
+    assert _reading(f"Carrot onto the blue plate, orange onto the yellow plate, {remark}.") == _TWO
