@@ -1827,3 +1827,41 @@ DEV2_H106: dict[int, list[str]] = {
         "Of course! Start by putting the green apple and the orange on the yellow plate. Once both are "
         "there, put the carrot and the red apple on the blue plate."],
 }
+
+# h106's third development batch: written after the rules for DEV2_H106 and measured before any rule for it,
+# in the same four classes with more variation (a methods section's "were to be", a recipe with lettered
+# steps, "its designated plate", an agent's longer reply).
+DEV3_H106: dict[int, list[str]] = {
+    1: ["The green apple and the orange were to be placed on the blue and yellow plates respectively.",
+        "Method: a) green apple onto blue plate; b) orange onto yellow plate. Steps a and b may be done in "
+        "either order.",
+        "Each item is to be placed on its designated plate: green apple - blue plate, orange - yellow plate.",
+        "Sure, happy to help! Just put the orange on the yellow plate and the green apple on the blue "
+        "plate."],
+    2: ["The green apple, the orange and the red apple are to be transferred to the pink, yellow and blue "
+        "plates respectively; no order is prescribed.",
+        "Method (in no particular order):\n1. Red apple onto the blue plate.\n2. Orange onto the yellow "
+        "plate.\n3. Green apple onto the pink plate.",
+        "Each of the three fruits is to be placed on its plate, in arbitrary order: the green apple on the "
+        "pink one, the orange on the yellow one, the red apple on the blue one.",
+        "No problem at all! The green apple goes on the pink plate, the red apple on the blue plate and the "
+        "orange on the yellow plate. Any order is fine."],
+    3: ["The carrot, the orange, the green apple and the red apple are respectively to be placed on the "
+        "blue, yellow, green and pink plates, in arbitrary order.",
+        "Method: Step 1 - carrot onto the blue plate. Step 2 - orange onto the yellow plate. Step 3 - green "
+        "apple onto the green plate. Step 4 - red apple onto the pink plate. The steps may be carried out "
+        "in any order.",
+        "Each item is to be placed on its own plate in whatever order is easiest: the carrot on the blue "
+        "plate, the orange on the yellow plate, the green apple on the green plate and the red apple on "
+        "the pink plate.",
+        "Of course! Please put the carrot on the blue plate, the orange on the yellow plate, the green apple "
+        "on the green plate and the red apple on the pink plate, in whatever order works for you."],
+    4: ["The green apple and the orange are to be placed on the yellow plate, and only then the carrot and "
+        "the red apple on the blue plate.",
+        "Method: Step 1 - green apple and orange onto the yellow plate. Step 2 - carrot and red apple onto "
+        "the blue plate.",
+        "Each item is to be placed on its plate: the green apple and the orange on the yellow plate before "
+        "the carrot and the red apple on the blue plate.",
+        "Absolutely! First, please put the orange and the green apple on the yellow plate; once they are "
+        "both there, put the red apple and the carrot on the blue plate."],
+}
