@@ -132,3 +132,23 @@ def test_an_order_label_is_free_where_the_shared_list_says_so(label, free):
 )
 def test_a_freedom_said_with_a_verb_of_doing_or_not_prescribed_frees_the_list(remark):
     assert _reading(f"Carrot onto the blue plate, orange onto the yellow plate, {remark}.") == _TWO
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "The carrot and the orange are respectively to be placed on the blue and yellow plates.",
+        "The carrot and the orange are to be transferred to the blue and yellow plates respectively; no "
+        "order is prescribed.",
+        "No problem at all! Put the carrot on the blue plate and the orange on the yellow plate.",
+        "Each of the two fruits is to be placed on its plate: the carrot on the blue one, the orange on the "
+        "yellow one.",
+    ],
+)
+def test_more_methods_and_replies_wordings(text):
+    assert _reading(text) == _TWO
+
+
+def test_a_count_after_each_of_the_must_be_the_placements_listed():
+    text = "Each of the three fruits is to be placed on its plate: the carrot on the blue one, the orange on "
+    assert _reading(text + "the yellow one.") is None

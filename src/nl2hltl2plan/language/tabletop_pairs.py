@@ -94,6 +94,8 @@ _SENTENCE = re.compile(r"[.;!?]+")
 _HEADING = re.compile(r"^(?P<head>[^:]*?)(?::|\s+-\s+)")  # "Three moves:", "I'd like three things done -"
 _GENERIC_QUANTITY = re.compile(
     r"\b(?:each|every|all(?:\s+the)?)\s+(?:item|thing|fruit|object|piece|one)s?\b|"
+    # "each of the three fruits": the count after it is checked as a count of its own
+    r"\b(?:each|every|all)\s+of\s+(?:the|these|those)\b(?=\s+(?:two|three|four)\b)|"
     r"\b(?P<count>two|three|four)\s+(?:[a-z]+\s+)?(?:items?|things?|fruits?|objects?|placements?|moves?|"
     r"pieces?|tasks?|ones|jobs|errands|chores)\b"
 )

@@ -253,7 +253,7 @@ def _tidied_as_put(text: str, kinds: dict[str, bool]) -> str:
 
 _RESPECTIVELY_WORDS = frozenset(
     "the and go goes put place move set on onto in into to should must plates please belong belongs be "
-    "placed moved shall".split()
+    "placed moved shall transfer transferred bring brought".split()
 )
 # a duty said in the passive ("are to be placed", "is to be set"): a request here, never a state
 _TO_BE = re.compile(r"\b(?:is|are)\s+to\s+be\b")
@@ -277,6 +277,9 @@ def respectively_paired(text: str, kinds: dict[str, bool]) -> str:
             return m[0]
         return "put " + ", ".join(f"the {o} on the {p}" for o, p in zip(things, plates, strict=True))
 
+    # "A and B are respectively to be placed on the blue and yellow plates": the word closes its clause
+    said_after = rf"(?:\s*,?\s*(?:{plate}|\b(?:{'|'.join(sorted(_RESPECTIVELY_WORDS | {'is', 'are'}))})\b))+"
+    text = re.sub(rf"\s+respectively(?P<after>{said_after})", r"\g<after> respectively", text)
     return re.sub(r"(?P<clause>[^.;:!?]*?),?\s+respectively\b", paired, text)
 
 
