@@ -49,19 +49,17 @@ from nl2hltl2plan.language.tabletop_order import (
 )
 from nl2hltl2plan.language.tabletop_remarks import role_dropped
 from nl2hltl2plan.language.tabletop_spelling import misspelt_order_words, names_respelt, order_words_spelt
+from nl2hltl2plan.language.tabletop_steps import labels_out_of_turn, numbered_steps, steps_read
 from nl2hltl2plan.language.tabletop_waits import plate_waits_read
 from nl2hltl2plan.language.tabletop_wording import (
     corrected,
     free_order,
     frees_every_step,
-    labels_out_of_turn,
     last_group_free,
     last_item_unmarked,
     mention_pattern,
-    numbered_steps,
     plain_words,
     stated_not_asked,
-    steps_read,
 )
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter, transitive_closure
 from nl2hltl2plan.worlds.world import World
