@@ -1865,3 +1865,40 @@ DEV3_H106: dict[int, list[str]] = {
         "Absolutely! First, please put the orange and the green apple on the yellow plate; once they are "
         "both there, put the red apple and the carrot on the blue plate."],
 }
+
+# h106's fourth development batch: written after every rule above and measured before any rule for it, in
+# the same four classes said by other voices (a lab notebook's "were placed" asked as a duty, a recipe card's
+# "Method" with its steps on lines, a form's "its matching plate", a chat agent's longer answer).
+DEV4_H106: dict[int, list[str]] = {
+    1: ["Procedure: the green apple and the orange are to be placed onto the blue and the yellow plate, "
+        "respectively.",
+        "Method\n1. Green apple onto the blue plate.\n2. Orange onto the yellow plate.\nDo the steps in "
+        "any order.",
+        "Each fruit should be put on its matching plate: the green apple on the blue plate and the orange on "
+        "the yellow plate.",
+        "Sure, no problem! Please pop the green apple on the blue plate and the orange on the yellow plate."],
+    2: ["Respectively, the green apple, the orange and the red apple go on the pink, yellow and blue plates.",
+        "Method (any order):\n- green apple on pink plate\n- orange on yellow plate\n- red apple on blue "
+        "plate",
+        "Each item is to be placed on its plate, in whatever order is easiest for you: the green apple on "
+        "the pink plate, the orange on the yellow plate and the red apple on the blue plate.",
+        "Of course! Please put the green apple on the pink plate, the orange on the yellow plate and the red "
+        "apple on the blue plate. The order doesn't matter."],
+    3: ["The carrot, orange, green apple and red apple should go onto the blue, yellow, green and pink "
+        "plates respectively (in arbitrary order).",
+        "Method: Step 1 - the carrot onto the blue plate. Step 2 - the orange onto the yellow plate. Step 3 "
+        "- the green apple onto the green plate. Step 4 - the red apple onto the pink plate. Any step may "
+        "be done first.",
+        "Each item goes on its plate, in arbitrary order: carrot on blue, orange on yellow, green apple on "
+        "green, red apple on pink.",
+        "No problem! Please put the red apple on the pink plate, the green apple on the green plate, the "
+        "orange on the yellow plate and the carrot on the blue plate, in whatever order is easiest."],
+    4: ["The green apple and the orange are first to be placed on the yellow plate; the carrot and the red "
+        "apple are then to be placed on the blue plate.",
+        "Method: Step 1 - the orange and the green apple onto the yellow plate. Step 2 - the red apple and "
+        "the carrot onto the blue plate (any order within each step).",
+        "Each item is to be placed on its plate: the green apple and the orange on the yellow one, and once "
+        "both are there, the carrot and the red apple on the blue one.",
+        "Sure! Please start with the green apple and the orange on the yellow plate, and once both are "
+        "there, put the carrot and the red apple on the blue plate."],
+}
