@@ -152,3 +152,11 @@ def test_more_methods_and_replies_wordings(text):
 def test_a_count_after_each_of_the_must_be_the_placements_listed():
     text = "Each of the three fruits is to be placed on its plate: the carrot on the blue one, the orange on "
     assert _reading(text + "the yellow one.") is None
+
+
+def test_first_and_then_inside_a_passive_duty_order_its_clauses():
+    text = (
+        "The green apple and the orange are first to be placed on the yellow plate; the carrot and the red "
+        "apple are then to be placed on the blue plate."
+    )
+    assert _reading(text) == _ORDERED

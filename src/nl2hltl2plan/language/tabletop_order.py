@@ -92,11 +92,20 @@ def then_after_subject_fronted(text: str, pattern: re.Pattern[str]) -> str:
     """A "then" between a clause's named subject and its verb put before the clause ("; the blue plate then
     gets the carrot" -> "; then the blue plate gets the carrot"), so that it cuts the groups where the
     clause starts; not before another name ("the carrot then the orange" orders the two). So is a "second",
-    "next" or "last" after the subject's "comes" ("the blue plate comes second with ...")."""
+    "next" or "last" after the subject's "comes" ("the blue plate comes second with ..."), and a "first" or
+    "then" inside a passive duty ("the carrot and the red apple are then to be placed on ...")."""
     subject = rf"(?P<subject>(?:the\s+)?{pattern.pattern})"
     start = r"(?P<start>(?:^|[,.;:!?])\s*(?:and\s+)?)"
     text = re.sub(
         rf"{start}(?:then\s+)?{subject}\s+then\s+(?={_SUBJECT_VERB}\b)", r"\g<start>then \g<subject> ", text
+    )
+    # in a duty said in the passive: "the carrot and the red apple are then to be placed on ..."
+    named = rf"(?:the\s+)?{pattern.pattern}"
+    subjects = rf"(?P<subject>{named}(?:\s*(?:,|,?\s+and)\s+{named})*)"
+    text = re.sub(
+        rf"{start}{subjects}\s+(?P<be>is|are)\s+(?P<when>first|then|next|afterwards)\s+(?=to\s+be\b)",
+        lambda m: f"{m['start']}{'first' if m['when'] == 'first' else 'then'} {m['subject']} {m['be']} ",
+        text,
     )
     # the same said by where the subject comes: "..., and the blue plate comes second with the carrot"
     return re.sub(
