@@ -138,6 +138,7 @@ def test_a_freedom_said_with_a_verb_of_doing_or_not_prescribed_frees_the_list(re
     "text",
     [
         "The carrot and the orange are respectively to be placed on the blue and yellow plates.",
+        "Respectively, the carrot and the orange go on the blue and yellow plates.",
         "The carrot and the orange are to be transferred to the blue and yellow plates respectively; no "
         "order is prescribed.",
         "No problem at all! Put the carrot on the blue plate and the orange on the yellow plate.",

@@ -279,7 +279,10 @@ def respectively_paired(text: str, kinds: dict[str, bool]) -> str:
             return m[0]
         return "put " + ", ".join(f"the {o} on the {p}" for o, p in zip(things, plates, strict=True))
 
-    # "A and B are respectively to be placed on the blue and yellow plates": the word closes its clause
+    # "Respectively, A and B go on ..." and "A and B are respectively to be placed on the blue and yellow
+    # plates": the word closes its clause
+    opening = r"(?:^|(?<=[.;!?]\s))respectively\s*,?\s+(?P<clause>[^.;:!?]+)"
+    text = re.sub(opening, r"\g<clause> respectively", text)
     said_after = rf"(?:\s*,?\s*(?:{plate}|\b(?:{'|'.join(sorted(_RESPECTIVELY_WORDS | {'is', 'are'}))})\b))+"
     text = re.sub(rf"\s+respectively(?P<after>{said_after})", r"\g<after> respectively", text)
     return re.sub(r"(?P<clause>[^.;:!?]*?),?\s+respectively\b", paired, text)
