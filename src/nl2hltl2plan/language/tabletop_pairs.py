@@ -49,19 +49,17 @@ from nl2hltl2plan.language.tabletop_order import (
 )
 from nl2hltl2plan.language.tabletop_remarks import role_dropped
 from nl2hltl2plan.language.tabletop_spelling import misspelt_order_words, names_respelt, order_words_spelt
+from nl2hltl2plan.language.tabletop_steps import labels_out_of_turn, numbered_steps, steps_read
 from nl2hltl2plan.language.tabletop_waits import plate_waits_read
 from nl2hltl2plan.language.tabletop_wording import (
     corrected,
     free_order,
     frees_every_step,
-    labels_out_of_turn,
     last_group_free,
     last_item_unmarked,
     mention_pattern,
-    numbered_steps,
     plain_words,
     stated_not_asked,
-    steps_read,
 )
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter, transitive_closure
 from nl2hltl2plan.worlds.world import World
@@ -94,6 +92,8 @@ _SENTENCE = re.compile(r"[.;!?]+")
 _HEADING = re.compile(r"^(?P<head>[^:]*?)(?::|\s+-\s+)")  # "Three moves:", "I'd like three things done -"
 _GENERIC_QUANTITY = re.compile(
     r"\b(?:each|every|all(?:\s+the)?)\s+(?:item|thing|fruit|object|piece|one)s?\b|"
+    # "each of the three fruits": the count after it is checked as a count of its own
+    r"\b(?:each|every|all)\s+of\s+(?:the|these|those)\b(?=\s+(?:two|three|four)\b)|"
     r"\b(?P<count>two|three|four)\s+(?:[a-z]+\s+)?(?:items?|things?|fruits?|objects?|placements?|moves?|"
     r"pieces?|tasks?|ones|jobs|errands|chores)\b"
 )
