@@ -161,3 +161,13 @@ def test_first_and_then_inside_a_passive_duty_order_its_clauses():
         "apple are then to be placed on the blue plate."
     )
     assert _reading(text) == _ORDERED
+
+
+def test_questions_and_answers_read_as_the_instruction_they_state():
+    # the shared `headings.answered` runs in the tabletop reader too
+    text = "Q: Where does the carrot go? A: On the blue plate. Q: And the orange? A: The yellow plate."
+    assert _reading(text) == _TWO
+    ordered = text + " Q: Order? A: Carrot first."
+    assert _reading(ordered) == (_TWO[0], [(("Carrot", "BluePlate"), ("Orange", "YellowPlate"))])
+    # an answer that says nothing certain is refused, never guessed
+    assert _reading("Q: Where does the carrot go? A: Not sure. Q: And the orange? A: The yellow plate.") is None

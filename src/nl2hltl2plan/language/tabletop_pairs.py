@@ -27,6 +27,7 @@ from nl2hltl2plan.language.accounting import account
 from nl2hltl2plan.language.content_words import Unread, take_backs, vocabulary
 from nl2hltl2plan.language.grammar.restated import count_fits
 from nl2hltl2plan.language.grounding import camel_words
+from nl2hltl2plan.language.headings import answered
 from nl2hltl2plan.language.htt_build import build_htt
 from nl2hltl2plan.language.result import LanguageResult
 from nl2hltl2plan.language.tabletop_counts import plate_counts_read, plates_said_alone, total_counts_read
@@ -174,6 +175,7 @@ class TabletopReader:
         text = names_spelt(stops_read(lines_joined(lines, kinds)), kinds)
         text = bracketed_list_opened(text, kinds)  # "sort fruit (green apple -> pink plate, ...)"
         text = fields_read(text, kinds)  # "Object: ... Target: ...", "as follows:", "### Phase B (after A)"
+        text = answered(text)  # "Q: Where does the green apple go? A: On the blue plate."
         text = dialogue_read(text, mention_pattern(kinds, re.I))  # "Robot: What do you need? Me: ..."
         text = scenario_read(text, mention_pattern(kinds, re.I))  # "Given ..., when I say go, then ..."
         mentions = mention_pattern(kinds, re.I)

@@ -5,9 +5,9 @@ and knows no world by name:
 
 - `own_reading`: the world reads the whole instruction itself (the handover worlds, `handover_reading`);
 - `as_read`: the instruction's lines as the one line the readers read (the tabletop world reads a line
-  break by what the lines name and spells names as it does, `tabletop_lines`; the household world reads
-  questions and answers as the instruction they state, `headings.answered`; elsewhere the lines are
-  joined with spaces);
+  break by what the lines name and spells names as it does, `tabletop_lines`; the household and tabletop
+  worlds read questions and answers as the instruction they state, `headings.answered`; elsewhere the
+  lines are joined with spaces);
 - `prepared`: the text as the shared grammar is to read it, or a refusal (the tabletop world refuses a
   statement of where something is and applies corrections first, `tabletop_pairs`);
 - `reread`: the world's reading of an instruction the grammar refused or read only in part (the tabletop
