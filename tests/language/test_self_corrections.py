@@ -82,3 +82,33 @@ def test_a_verb_left_out_after_a_casual_verb(kitchen, verb):
 def test_a_numbered_recipe_whose_steps_may_come_in_either_order(kitchen):
     text = "Method: 1. put the apple in the fridge. 2. put the mug in the cabinet. Either may come first."
     assert reading(text, kitchen) == ([APPLE_FRIDGE, MUG_CABINET], [])
+
+
+@pytest.mark.data
+@pytest.mark.parametrize(
+    "said", ["Step 2 comes first.", "Do step 2 first.", "The first step goes last.", "Step 1 after step 2."]
+)
+def test_an_order_said_by_step_number(kitchen, said):
+    """The steps' numbers are no order of their own: "step 2 comes first" puts step 2 first (the grammar
+    read it as step 1 before step 2)."""
+    text = f"Step 1: put the apple in the fridge. Step 2: put the mug in the cabinet. {said}"
+    assert reading(text, kitchen) == ([MUG_CABINET, APPLE_FRIDGE], [("A", "B")])
+
+
+@pytest.mark.data
+@pytest.mark.parametrize(
+    "text, named",
+    [
+        (
+            "1. put the apple in the fridge 2. put the mug in the sink 3. put the egg in the microwave. "
+            "Step 2 first.",
+            "leaves the order of the other steps unsaid",
+        ),
+        ("put the apple in the fridge and the mug in the sink. Step 1 first.", "does not number"),
+        ("Do it. 1. put the apple in the fridge 2. put the egg in the sink. Step 2 first.", "outside the"),
+    ],
+)
+def test_an_order_by_step_number_that_cannot_be_read_is_refused(kitchen, text, named):
+    with pytest.raises(HTTError) as refused:
+        translate(text, kitchen, build=False, actions="none")
+    assert named in str(refused.value)

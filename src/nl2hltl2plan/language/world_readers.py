@@ -34,6 +34,7 @@ from typing import Protocol
 
 from nl2hltl2plan.language.content_words import Unread
 from nl2hltl2plan.language.headings import answered
+from nl2hltl2plan.language.numbered_steps import step_order
 from nl2hltl2plan.language.respectively import distributed
 from nl2hltl2plan.language.result import LanguageResult
 from nl2hltl2plan.language.self_corrections import corrected, household_roles
@@ -104,7 +105,8 @@ class SharedGrammar:
 class _HouseholdReader(SharedGrammar):
     """The household (ALFRED) floor plans: the shared grammar, with "Q: ... A: ..." read as the
     instruction the answers state (`headings.answered`), self-corrections applied
-    (`self_corrections.corrected`) and "... respectively" lists written out (`respectively.distributed`)."""
+    (`self_corrections.corrected`), "... respectively" lists written out (`respectively.distributed`) and
+    an order said by step number applied (`numbered_steps.step_order`)."""
 
     def __init__(self, world: World) -> None:
         self.world = world
@@ -113,7 +115,7 @@ class _HouseholdReader(SharedGrammar):
         return answered(" ".join(lines))
 
     def prepared(self, instruction: str) -> str:
-        return distributed(corrected(instruction, household_roles(self.world)))
+        return distributed(corrected(step_order(instruction), household_roles(self.world)))
 
 
 class _HandoverReader(SharedGrammar):
