@@ -59,6 +59,11 @@ from nl2hltl2plan.language.translate import translate
             "Q: Which first? A: The mug.",
             "put the mug in the sink, then put the egg in the fridge.",
         ),
+        (  # "where do you want X", "start with X"
+            "Q: Where do you want the mug? A: In the sink. Q: And the egg? A: The fridge. "
+            "Q: Order? A: Start with the egg.",
+            "put the egg in the fridge, then put the mug in the sink.",
+        ),
         ("put the apple in the fridge. A: not a question", "put the apple in the fridge. A: not a question"),
     ],
 )

@@ -73,6 +73,9 @@ def corrected(text: str, roles: Roles) -> str:
             # correct nothing here (check 1 names a correction the reading does not follow)
             start = m.end()
             continue
+        if not said and marker.lower() in ("no", "actually"):
+            start = m.end()  # "..., actually." closing a clause corrects nothing
+            continue
         fixed = _replaced(text[: m.start()], said, marker, roles)
         text, start = fixed + after[cut:], len(fixed)
     return text
