@@ -45,7 +45,7 @@ _WHERE = (
     re.compile(rf"^where {_AUX} (?:i|we|you) (?P<verb>{_PUT_VERBS}) (?P<obj>.+?)$", re.I),
     re.compile(rf"^where (?:to|should) (?P<verb>{_PUT_VERBS}) (?P<obj>.+?)$", re.I),
     re.compile(rf"^(?P<obj>{_DET}.+?) (?:goes|go|should go|belongs) where$", re.I),
-    re.compile(r"^where (?:do|would) you (?:want|like|need) (?P<obj>.+?)(?: to go| put| placed| to be)?$", re.I),
+    re.compile(r"^where (?:do|would) you (?:want|like|need) (?P<obj>.+?)(?: to go| put| placed)?$", re.I),
 )
 _PREP = r"(?:in|into|inside|on|onto|on top of|to|under|at|by|beside|next to|in front of|behind|towards?)"
 # what goes somewhere: the gap is its object
