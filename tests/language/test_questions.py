@@ -129,7 +129,7 @@ def test_the_household_reader_refuses_an_unclear_answer(kitchen):
 
 
 @pytest.mark.data
-@pytest.mark.parametrize("name", ["users_h108dev"])
+@pytest.mark.parametrize("name", ["users_h108dev", "users_h108held"])
 def test_the_h108_user_set_reads_nothing_wrong(name):
     """h108's user-style set (questions and answers, a verb left out, self-corrections, respectively and
     numbered recipes), read as `plan` reads it: no line is read wrong, and 90 % convert."""
