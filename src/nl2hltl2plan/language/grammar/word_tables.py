@@ -117,24 +117,13 @@ _VERBS: dict[str, tuple[str, ...]] = {
 }
 
 
+_DOUBLED = frozenset("put set get cut sit shut swap drop chop pop plop stop dump".split())  # "putting"
+
+
 def _gerund(v: str) -> str:
     if v.endswith("ing"):
         return v
-    if v in {
-        "put",
-        "set",
-        "get",
-        "cut",
-        "sit",
-        "shut",
-        "swap",
-        "drop",
-        "chop",
-        "pop",
-        "plop",
-        "stop",
-        "dump",
-    }:
+    if v in _DOUBLED:
         return v + v[-1] + "ing"
     if v in {"lit"}:
         return "lighting"
