@@ -37,6 +37,9 @@ MUG_CABINET, APPLE_FRIDGE = "place Mug -> Cabinet", "place Apple -> Fridge"
         ("put the mug in the sink, make that the cabinet", [MUG_CABINET]),
         ("put the egg in the fridge, I mean the apple", [APPLE_FRIDGE]),  # a thing for a thing
         ("hang the apple... actually put it in the fridge", [APPLE_FRIDGE]),  # a clause: the grammar's
+        ("put the egg, no wait, the apple in the fridge", [APPLE_FRIDGE]),  # the name; the place stays
+        ("what I mean is put the apple in the fridge", [APPLE_FRIDGE]),  # no correction
+        ("put the egg in the fridge, sorry, I mean the microwave", ["place Egg -> Microwave"]),
     ],
 )
 def test_a_correction_replaces_what_it_corrects(kitchen, text, tasks):

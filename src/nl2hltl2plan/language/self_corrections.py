@@ -7,8 +7,10 @@ correction replaces what it corrects, and what is unclear is refused by name.
   marker that has its role (a place for a place, a thing to carry for a thing), where its role is certain:
   "put the pan in the sink, I mean the pot" is refused, since a pot is both a thing to carry and a place,
   and "put the mug, no wait, the cup, in the sink" replaces the mug (no place is said before the marker);
-- a correction that opens with a verb ("hang it... actually put it in the drawer") is left to the grammar,
-  which reads the second clause;
+- a name with a place after it ("put the egg, no wait, the apple in the fridge") replaces by its name, and
+  the place stays;
+- a correction that says an action ("hang it... actually put it in the drawer", "what I mean is put ...")
+  is left to the grammar, which reads the second clause;
 - a marker with no place or name after it ("put the mug in the sink, no wait") is refused by name.
 
 The markers: "no wait", "wait, no", "I mean", "I meant", "or rather", "sorry", "oops", "whoops", "make
@@ -23,7 +25,7 @@ from dataclasses import dataclass
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.content_words import categories
-from nl2hltl2plan.language.grounding import Mention, find_mentions
+from nl2hltl2plan.language.grounding import Mention, find_mentions, tokens
 from nl2hltl2plan.worlds.world import World
 
 _PAUSE = r"(?:\s*(?:,|;|:|\.{2,}|…|—|–|\s-+)\s*|\s+)"
@@ -68,17 +70,37 @@ def corrected(text: str, roles: Roles) -> str:
         marker, after = " ".join(m["marker"].split()), text[m.end() :]
         cut = _said(after)
         said = after[:cut].strip()
-        if said and (_opens_with_verb(said) or not (_PREP.match(said) or find_mentions(said))):
-            # a clause replaces a clause: the grammar reads it; words that name nothing ("I mean it")
-            # correct nothing here (check 1 names a correction the reading does not follow)
+        if said and (_has_verb(said) or not (_PREP.match(said) or find_mentions(said))):
+            # a clause replaces a clause: the grammar reads it ("what I mean is put ..." too); words that
+            # name nothing ("I mean it") correct nothing here (check 1 names a correction not followed)
             start = m.end()
             continue
+        if not _PREP.match(said) and (name := _name_then_place(said)):
+            cut, said = cut - len(said) + len(name), name  # "the egg, no wait, the apple in the fridge"
         if not said and marker.lower() in ("no", "actually"):
             start = m.end()  # "..., actually." closing a clause corrects nothing
             continue
         fixed = _replaced(text[: m.start()], said, marker, roles)
         text, start = fixed + after[cut:], len(fixed)
     return text
+
+
+def _has_verb(said: str) -> bool:
+    """Does a word of `said` outside its names say an action ("is put the apple ...", not "the microwave")?"""
+    spans = [(n.char_start, n.char_end) for n in find_mentions(said)]
+    words = [(w, a) for w, a, _ in tokens(said) if not any(s <= a < e for s, e in spans)]
+    return any(_opens_with_verb(w) for w, _ in words)
+
+
+def _name_then_place(said: str) -> str | None:
+    """The name opening `said` where a place follows it ("the apple in the fridge": "the apple")."""
+    article = len(said) - len(_DET.sub("", said))
+    named = find_mentions(said)
+    if len(named) < 2 or named[0].char_start != article:
+        return None
+    if not _PREP.match(said[named[0].char_end :].lstrip()):
+        return None
+    return said[: named[0].char_end]
 
 
 def _said(after: str) -> int:
