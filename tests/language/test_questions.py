@@ -65,6 +65,7 @@ from nl2hltl2plan.language.translate import translate
             "put the egg in the fridge, then put the mug in the sink.",
         ),
         ("put the apple in the fridge. A: not a question", "put the apple in the fridge. A: not a question"),
+        ("Question: could you put the mug in the sink?", "Question: could you put the mug in the sink?"),
     ],
 )
 def test_answers_fill_their_questions_gaps(text, stated):
@@ -75,7 +76,7 @@ def test_answers_fill_their_questions_gaps(text, stated):
     "text, named",
     [
         ("Q: Where does the mug go? A: not sure.", "'not sure'"),
-        ("Q: Where does the mug go?", "has no answer"),
+        ("Q: Where does the mug go? A: In the sink. Q: And the apple?", "has no answer"),
         ("Q: How hot is the oven? A: very", "'How hot is the oven?' is not one the reader knows"),
         ("Q: Where does the mug go? A: In the sink. "
             "Q: And the apple? A: The fridge. Q: Any order? A: No.", "'no'"),

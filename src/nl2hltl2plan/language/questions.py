@@ -35,6 +35,7 @@ from nl2hltl2plan.language.content_words import categories, phrase_list_pattern
 # "Q:", "Question 2:", "A:", "Answer:"; a label opens the text or follows a sentence's end or a blank
 _LABEL = re.compile(r"(?:^|(?<=[\s.!?;]))(?P<who>q|question|a|answer)\s*\d*\s*:\s*", re.I)
 _HAS_QUESTION = re.compile(r"(?:^|(?<=[\s.!?;]))(?:q|question)\s*\d*\s*:", re.I)
+_HAS_ANSWER = re.compile(r"(?:^|(?<=[\s.!?;]))(?:a|answer)\s*\d*\s*:", re.I)
 _DET = r"(?:the|a|an|my|your|our|this|that|these|those|some|both|all|two|three)\s"
 _AUX = r"(?:does|do|should|shall|will|would|can|could|must|is|are|did)"
 _PLACE_VERBS = r"(?:go|goes|belong|belongs|be put|be placed|be kept|be stored|be moved|be left|be set|end up)"
@@ -90,9 +91,10 @@ class _Clause:
 
 def answered(text: str) -> str:
     """`text` with its questions and answers as the instruction they state (see the module docstring);
-    text with no "Q:" label comes back as it is. Raises HTTError naming what cannot be read."""
-    if not _HAS_QUESTION.search(text):
-        return text
+    text with no "Q:" label, or no "A:" label, comes back as it is. Raises HTTError naming what cannot be
+    read."""
+    if not _HAS_QUESTION.search(text) or not _HAS_ANSWER.search(text):
+        return text  # no answer at all: a request labelled as a question ("Question: could you put ...")
     pieces = _LABEL.split(text)  # [before, who, words, who, words, ...]
     clauses = [_Clause(pieces[0].strip(), None)] if pieces[0].strip() else []
     pairs = [(pieces[k].lower()[0], pieces[k + 1].strip()) for k in range(1, len(pieces), 2)]
