@@ -4,6 +4,9 @@ orders or frees the tasks, and what is unclear is refused by name."""
 
 from __future__ import annotations
 
+import sys
+from pathlib import Path
+
 import pytest
 
 from nl2hltl2plan.errors import HTTError
@@ -56,7 +59,13 @@ from nl2hltl2plan.language.translate import translate
             "Q: Which first? A: The mug.",
             "put the mug in the sink, then put the egg in the fridge.",
         ),
+        (  # "where do you want X", "start with X"
+            "Q: Where do you want the mug? A: In the sink. Q: And the egg? A: The fridge. "
+            "Q: Order? A: Start with the egg.",
+            "put the egg in the fridge, then put the mug in the sink.",
+        ),
         ("put the apple in the fridge. A: not a question", "put the apple in the fridge. A: not a question"),
+        ("Question: could you put the mug in the sink?", "Question: could you put the mug in the sink?"),
     ],
 )
 def test_answers_fill_their_questions_gaps(text, stated):
@@ -67,7 +76,7 @@ def test_answers_fill_their_questions_gaps(text, stated):
     "text, named",
     [
         ("Q: Where does the mug go? A: not sure.", "'not sure'"),
-        ("Q: Where does the mug go?", "has no answer"),
+        ("Q: Where does the mug go? A: In the sink. Q: And the apple?", "has no answer"),
         ("Q: How hot is the oven? A: very", "'How hot is the oven?' is not one the reader knows"),
         ("Q: Where does the mug go? A: In the sink. "
             "Q: And the apple? A: The fridge. Q: Any order? A: No.", "'no'"),
@@ -118,3 +127,16 @@ def test_the_household_reader_reads_the_answers(kitchen):
 def test_the_household_reader_refuses_an_unclear_answer(kitchen):
     with pytest.raises(HTTError, match="'dunno'"):
         translate("Q: Where does the mug go? A: In the sink. Q: Order? A: dunno", kitchen, build=False)
+
+
+@pytest.mark.data
+@pytest.mark.parametrize("name", ["users_h108dev", "users_h108held"])
+def test_the_h108_user_set_reads_nothing_wrong(name):
+    """h108's user-style set (questions and answers, a verb left out, self-corrections, respectively and
+    numbered recipes), read as `plan` reads it: no line is read wrong, and 90 % convert."""
+    sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "scripts"))
+    import trust_sets
+
+    outcomes = [trust_sets.outcome(gt) for gt in trust_sets.load(name)]
+    assert [why for what, why in outcomes if what == "wrong"] == []
+    assert sum(what == "converted" for what, _ in outcomes) >= 0.9 * len(outcomes)

@@ -35,6 +35,7 @@ from nl2hltl2plan.language.content_words import categories, phrase_list_pattern
 # "Q:", "Question 2:", "A:", "Answer:"; a label opens the text or follows a sentence's end or a blank
 _LABEL = re.compile(r"(?:^|(?<=[\s.!?;]))(?P<who>q|question|a|answer)\s*\d*\s*:\s*", re.I)
 _HAS_QUESTION = re.compile(r"(?:^|(?<=[\s.!?;]))(?:q|question)\s*\d*\s*:", re.I)
+_HAS_ANSWER = re.compile(r"(?:^|(?<=[\s.!?;]))(?:a|answer)\s*\d*\s*:", re.I)
 _DET = r"(?:the|a|an|my|your|our|this|that|these|those|some|both|all|two|three)\s"
 _AUX = r"(?:does|do|should|shall|will|would|can|could|must|is|are|did)"
 _PLACE_VERBS = r"(?:go|goes|belong|belongs|be put|be placed|be kept|be stored|be moved|be left|be set|end up)"
@@ -45,6 +46,7 @@ _WHERE = (
     re.compile(rf"^where {_AUX} (?:i|we|you) (?P<verb>{_PUT_VERBS}) (?P<obj>.+?)$", re.I),
     re.compile(rf"^where (?:to|should) (?P<verb>{_PUT_VERBS}) (?P<obj>.+?)$", re.I),
     re.compile(rf"^(?P<obj>{_DET}.+?) (?:goes|go|should go|belongs) where$", re.I),
+    re.compile(r"^where (?:do|would) you (?:want|like|need) (?P<obj>.+?)(?: to go| put| placed)?$", re.I),
 )
 _PREP = r"(?:in|into|inside|on|onto|on top of|to|under|at|by|beside|next to|in front of|behind|towards?)"
 # what goes somewhere: the gap is its object
@@ -52,6 +54,7 @@ _WHAT = (
     re.compile(rf"^what {_AUX}? ?(?:go|goes|belong|belongs|be put|be placed)\s(?P<place>{_PREP} .+)$", re.I),
     re.compile(rf"^what {_AUX} (?:i|we|you) (?P<verb>{_PUT_VERBS}) (?P<place>{_PREP} .+)$", re.I),
     re.compile(rf"^what (?:needs|has|is) to (?:go|be put) (?P<place>{_PREP} .+)$", re.I),
+    re.compile(rf"^what (?:do|would) you (?:want|like|need) (?P<place>{_PREP} .+)$", re.I),
 )
 # what to do with an object: the answer is an instruction about it
 _DO_WITH = re.compile(rf"^what (?:{_AUX} (?:i|we|you) do|to do|about doing) with (?P<obj>.+)$", re.I)
@@ -65,7 +68,10 @@ _GOES = re.compile(
 _ORDER_SAID = re.compile(r"\b(?:first|last|then|before|after)\b|,", re.I)
 _CHAIN = re.compile(r"\s*(?:,?\s*(?:and )?then\b|,?\s*followed by\b|\bbefore\b|->|>|,|;)\s*", re.I)
 _NO_THEN = re.compile(r"^(?:no|nope|nah)\s*[,.;:!-]\s*", re.I)
-_ORDER_FILLER = frozenset("the a an do first firstly then one ones with put task".split())
+_ORDER_FILLER = frozenset(
+    "the a an do first firstly then one ones with put task please should must can go goes come comes be is "
+    "done start begin end finish by".split()
+)
 
 
 @dataclass
@@ -85,9 +91,10 @@ class _Clause:
 
 def answered(text: str) -> str:
     """`text` with its questions and answers as the instruction they state (see the module docstring);
-    text with no "Q:" label comes back as it is. Raises HTTError naming what cannot be read."""
-    if not _HAS_QUESTION.search(text):
-        return text
+    text with no "Q:" label, or no "A:" label, comes back as it is. Raises HTTError naming what cannot be
+    read."""
+    if not _HAS_QUESTION.search(text) or not _HAS_ANSWER.search(text):
+        return text  # no answer at all: a request labelled as a question ("Question: could you put ...")
     pieces = _LABEL.split(text)  # [before, who, words, who, words, ...]
     clauses = [_Clause(pieces[0].strip(), None)] if pieces[0].strip() else []
     pairs = [(pieces[k].lower()[0], pieces[k + 1].strip()) for k in range(1, len(pieces), 2)]
@@ -267,8 +274,8 @@ def _ordered(clauses: list[_Clause], order: str, sentences: list[str]) -> list[s
         named = ", ".join(repr(n) for n in (missing or names))
         raise HTTError(f"the order {order!r} names {named}, not one task each of those asked about")
     picked = [f for f in found if f is not None]
-    if len(picked) == 1 and re.search(r"\b(?:first|last)\b", order, re.I):
-        last = bool(re.search(r"\blast\b", order, re.I))
+    if len(picked) == 1 and re.search(r"\b(?:first|last|start|begin|end|finish)\b", order, re.I):
+        last = bool(re.search(r"\b(?:last|end|finish)\b", order, re.I))
         if len(clauses) == 2:  # the one named first (last), the other after (before)
             picked = [picked[0], 1 - picked[0]][:: -1 if last else 1]
         else:

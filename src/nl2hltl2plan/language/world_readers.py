@@ -34,7 +34,10 @@ from typing import Protocol
 
 from nl2hltl2plan.language.content_words import Unread
 from nl2hltl2plan.language.headings import answered
+from nl2hltl2plan.language.numbered_steps import step_order
+from nl2hltl2plan.language.respectively import distributed
 from nl2hltl2plan.language.result import LanguageResult
+from nl2hltl2plan.language.self_corrections import corrected, household_roles
 from nl2hltl2plan.worlds.world import World
 
 
@@ -101,13 +104,18 @@ class SharedGrammar:
 
 class _HouseholdReader(SharedGrammar):
     """The household (ALFRED) floor plans: the shared grammar, with "Q: ... A: ..." read as the
-    instruction the answers state (`headings.answered`)."""
+    instruction the answers state (`headings.answered`), self-corrections applied
+    (`self_corrections.corrected`), "... respectively" lists written out (`respectively.distributed`) and
+    an order said by step number applied (`numbered_steps.step_order`)."""
 
     def __init__(self, world: World) -> None:
         self.world = world
 
     def as_read(self, lines: list[str]) -> str:
         return answered(" ".join(lines))
+
+    def prepared(self, instruction: str) -> str:
+        return distributed(corrected(step_order(instruction), household_roles(self.world)))
 
 
 class _HandoverReader(SharedGrammar):
