@@ -21,6 +21,10 @@ from nl2hltl2plan.config import data_dir  # noqa: E402
 
 # The user's cache (LLM answers, a retrained language model that the loader prefers) must not change
 # what the tests see: every test, and every command a test starts, gets an empty cache of its own.
+# Matplotlib keeps its font list in the cache folder too (rebuilding it scans the system's fonts: 0.2 s
+# CPU and seconds of disk per process), so it keeps the folder it had.
+_user_cache = os.environ.get("XDG_CACHE_HOME") or os.path.expanduser("~/.cache")
+os.environ.setdefault("MPLCONFIGDIR", os.path.join(_user_cache, "matplotlib"))
 os.environ["XDG_CACHE_HOME"] = tempfile.mkdtemp(prefix="nl2hltl2plan-test-cache-")
 
 

@@ -388,3 +388,19 @@ def test_bad_batch_files_are_clean_errors(tmp_path):
     requests.write_text("{not json\n")
     with pytest.raises(LLMError, match="line 1: not a Batch API request line"):
         read_answers(answers, cache, requests)
+
+
+def test_clients_share_one_verifying_tls_context_and_keep_their_own_connections():
+    """The CA bundle loads once per process (30 to 90 ms each time otherwise); each client still has
+    its own HTTP client, with the SDK's request timeout, and closing one leaves the others usable."""
+    import ssl
+
+    from nl2hltl2plan.language.llm.client import _tls_context
+
+    settings = LLMSettings(base_url="http://127.0.0.1:9/v1", api_key="k", timeout=7.0, cache_dir=None)
+    first, second = LLMClient(settings).client, LLMClient(settings).client
+    assert first._client is not second._client and first.timeout == second.timeout == 7.0
+    ctx = _tls_context()
+    assert ctx is _tls_context() and ctx.verify_mode == ssl.CERT_REQUIRED and ctx.check_hostname
+    first.close()
+    assert first.is_closed() and not second.is_closed()

@@ -18,9 +18,11 @@ from __future__ import annotations
 import contextlib
 import datetime
 import email.utils
+import functools
 import json
 import math
 import re
+import ssl
 import threading
 import time
 from collections.abc import Callable, Iterator
@@ -113,6 +115,7 @@ class LLMClient:
                 api_key=self.settings.api_key or "none",
                 timeout=self.settings.timeout,
                 max_retries=0,
+                http_client=_http_client(self.settings.timeout),
             )
         return self._client
 
@@ -318,6 +321,32 @@ def _openai() -> Any:
     import openai
 
     return openai
+
+
+@functools.cache
+def _tls_context() -> ssl.SSLContext:
+    """The process's one TLS context: the CA certificates OpenSSL finds (SSL_CERT_FILE and
+    SSL_CERT_DIR included, as the SDK's default context honours them). Loading the bundle takes 30
+    to 90 ms, and a client is built per instruction run (the web server, bench runs, the tests); one
+    context serves any number of connections."""
+    return ssl.create_default_context()
+
+
+def _http_client(timeout: float) -> Any:
+    """The SDK's HTTP client with its defaults (limits, redirects) on the shared TLS context; its
+    connections are its own."""
+    return _http_client_class()(timeout=timeout, verify=_tls_context())
+
+
+@functools.cache
+def _http_client_class() -> Any:
+    class _Http(_openai().DefaultHttpxClient):  # type: ignore[misc]
+        def __del__(self) -> None:  # closed when dropped, as the SDK's own client is
+            with contextlib.suppress(Exception):
+                if not self.is_closed:
+                    self.close()
+
+    return _Http
 
 
 def _retried() -> tuple[type[BaseException], ...]:
