@@ -48,7 +48,7 @@ from functools import lru_cache
 from importlib import resources
 from typing import NamedTuple
 
-from nl2hltl2plan.language.content_words import vocabulary, word_categories
+from nl2hltl2plan.language.content_words import phrase_list_pattern, vocabulary, word_categories
 from nl2hltl2plan.language.grammar.everyday import HESITATION
 from nl2hltl2plan.language.handover_words import DONE, GERUND, SWAP, TOUCH, VERB
 
@@ -98,7 +98,7 @@ def _frame() -> _Frame:
     day = r"\d{1,2}(?:st|nd|rd|th)?"
     return _Frame(
         single=frozenset(w for name, ws in words.items() if name not in _PLACED for w in ws),
-        phrases=re.compile(rf"\b(?:{_words_as_pattern(words['phrase'])})\b"),
+        phrases=re.compile(rf"\b(?:{_words_as_pattern(words['phrase'])}|{_REPLY})\b"),
         opening=re.compile(rf"^\s*(?:good\s+)?(?:{_words_as_pattern(words['opening'])})\b"),
         label=re.compile(rf"\b(?:{_words_as_pattern(words['label'])})\b"),
         alone=frozenset(w.replace("_", " ") for w in words["alone"]),
@@ -110,6 +110,9 @@ def _frame() -> _Frame:
     )
 
 
+# a support agent's reply around the request ("Happy to help!", "Thanks for reaching out!": `courtesy.txt`'s
+# `reply`), said of the fragment as `empty` sees it (lower case, an apostrophe a space: "there s")
+_REPLY = phrase_list_pattern("courtesy.txt", "reply").replace("'", r"\s*")
 _ACTION = re.compile(rf"\b(?:{VERB}|{GERUND}|{DONE}|{SWAP}|{TOUCH})\b")
 # the team as a whole, addressed ("okay robot", "attention all arms"): one arm by its letter says who acts,
 # and after a preposition the arms are a place ("by the arms", "to the arms")
