@@ -200,7 +200,10 @@ _NARRATION: tuple[tuple[str, str], ...] = (
     # "until somebody's touched the red one": has touched; but "once that's done": that is done (passive)
     (r"\b(that|this|it|everything|all|which)\s+s\s+(?=(?:done|finished)\b)", r"\1 is "),
     # (a block's "'s touched" is its passive: "until red's touched", the red block has been touched)
-    (r"\b(red|blue|yellow|block|one|cube|pillar)\s+s\s+(?=(?:touched|picked|grabbed|handled|lifted)\b)", r"\1 has been "),
+    (
+        r"\b(red|blue|yellow|block|one|cube|pillar)\s+s\s+(?=(?:touched|picked|grabbed|handled|lifted)\b)",
+        r"\1 has been ",
+    ),
     (r"\b([a-z]+)\s+s\s+(?=(?:touched|picked|grabbed|handled|lifted|done|finished)\b)", r"\1 has "),
     # a block named as a field's label, its touch guard after the colon (a coach's verbless order): "blue :
     # hands off till ...", "blue block : do not touch (it) until ..."

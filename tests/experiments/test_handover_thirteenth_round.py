@@ -1,0 +1,98 @@
+"""Issue 24, h107 (session 19): a support agent's voice, a coach's verbless orders and legal periods. A
+support agent's reply words ("Thanks for reaching out!", "Happy to help!", "No problem!", "Of course!",
+"To complete your request, ...", "Hope this helps!": `courtesy.txt`'s `reply`) are frame words of the
+message, dropped only where their fragment names nothing else; "during such / said period" is "during
+this period"; a block named as a field's label before its touch guard ("Blue: hands off till red's
+touched"), "everything to ...", "none on F, G or H" and "Last: ..." are read. `dev83`, `dev84` and the
+held-out `validation20` are read right or refused, never misread (the `sweep` run)."""
+
+from __future__ import annotations
+
+import pytest
+from handover_session10 import STYLES
+from handover_specs import (
+    assert_not_the_written_spec,
+    assert_refused_by_name,
+    assert_written_spec,
+    assert_written_spec_or_refused,
+    cases,
+)
+
+from nl2hltl2plan.language.handover_discourse import empty
+
+READ = {
+    1: ["Thank you for your patience! The red block goes before the blue block; move all three blocks to the "
+        "opposite side."],
+    2: [
+        "Glad to assist! Put the three blocks on regions H, I and J, one block per region. Let us know if "
+        "you need anything else!",
+        "Everything to H, I and J, one per region.",
+    ],
+    3: ["Of course. To process your request, move the three pillars to regions E, F and G beside arms a and "
+        "b, and put nothing on any other region. I hope this helps!"],
+    4: ["Everything onto the opposite regions. Blue: don't touch till red's been picked up. Last, yellow "
+        "back to G."],
+    7: [
+        "The three objects go one after another onto region I, red before blue; nothing is to be placed on "
+        "regions F, G or H during said period.",
+        "Place the three objects one after another on region I, red before blue, and none on regions F, G "
+        "or H.",
+    ],
+}
+
+REFUSED = [
+    # a reply fragment that names a block or a negation says something: refused by name, never dropped
+    (1, "Happy to help with the red block! Move the three blocks to the opposite side, red before blue."),
+    (1, "Thanks for reaching out about the blue block! Move the three blocks to the opposite side, red "
+        "before blue."),
+    (1, "No problem with the blue block. Move the three blocks to the opposite side, red before blue."),
+    (2, "Of course not! Put the three blocks on regions H, I and J, one block per region."),
+    # a guard with no "until": what may the arms do with blue, ever?
+    (4, "Everything to the opposite regions. Blue: hands off. Last: yellow back to G."),
+]
+
+NEAR_MISSES = [
+    # the order, a guard's block, a goal's block or a forbidden region changed under the new forms
+    (1, "Happy to help! Move the three blocks to the opposite side, the blue block before the red block."),
+    (4, "Everything to the opposite regions. Blue: hands off till yellow's touched. Last: yellow back to G."),
+    (4, "Everything to the opposite regions. Red: hands off till blue's touched. Last: yellow back to G."),
+    (4, "Everything to the opposite regions. Blue: hands off till red's touched. Last: red back to G."),
+    (7, "Place the three objects one after another on region I, red before blue, and none on F or G during "
+        "such period."),
+    (3, "No problem! Move the three pillars to regions E, F and G beside arm a and arm b."),
+]
+
+
+def test_a_reply_fragment_is_empty_only_when_it_names_nothing() -> None:
+    assert empty("Thanks for reaching out") and empty("Absolutely, happy to help") and empty("No problem")
+    assert empty("Let me know if there's anything else I can help with")
+    assert not empty("No problem with the blue block") and not empty("Of course not")
+    assert not empty("Happy to help with region G")
+
+
+@pytest.mark.data
+@pytest.mark.parametrize(("task", "text"), cases(READ))
+def test_new_forms_give_the_written_spec(task: int, text: str) -> None:
+    assert_written_spec(task, text)
+
+
+@pytest.mark.data
+@pytest.mark.parametrize(("task", "text"), REFUSED)
+def test_replies_that_name_something_are_refused_by_name(task: int, text: str) -> None:
+    assert_refused_by_name(task, text)
+
+
+@pytest.mark.data
+@pytest.mark.parametrize(("task", "text"), NEAR_MISSES)
+def test_near_misses_are_not_the_written_spec(task: int, text: str) -> None:
+    assert_not_the_written_spec(task, text)
+
+
+@pytest.mark.sweep
+@pytest.mark.data
+@pytest.mark.parametrize(
+    ("batch", "style"), [(b, s) for b in ("dev83", "dev84", "validation20") for s in STYLES[b]]
+)
+def test_h107_batches_are_read_right_or_refused_never_misread(batch: str, style: str) -> None:
+    for task, text in STYLES[batch][style].items():
+        assert_written_spec_or_refused(int(task), text)
