@@ -3,8 +3,10 @@ support agent's reply words ("Thanks for reaching out!", "Happy to help!", "No p
 "To complete your request, ...", "Hope this helps!": `courtesy.txt`'s `reply`) are frame words of the
 message, dropped only where their fragment names nothing else; "during such / said period" is "during
 this period"; a block named as a field's label before its touch guard ("Blue: hands off till red's
-touched"), "everything to ...", "none on F, G or H" and "Last: ..." are read. `dev83`, `dev84` and the
-held-out `validation20` are read right or refused, never misread (the `sweep` run)."""
+touched"), "everything to ...", "none on F, G or H", "No other region, ever.", "Last: ...", a next place
+alone ("Yellow to I. Then to G.") and the one-block rule as "at most one object in any region" or "one
+block maximum per region" are read. `dev83`, `dev84`, `dev85` and the held-out `validation20` are read
+right or refused, never misread (the `sweep` run)."""
 
 from __future__ import annotations
 
@@ -21,22 +23,38 @@ from handover_specs import (
 from nl2hltl2plan.language.handover_discourse import empty
 
 READ = {
-    1: ["Thank you for your patience! The red block goes before the blue block; move all three blocks to the "
-        "opposite side."],
+    1: [
+        "Thank you for your patience! The red block goes before the blue block; move all three blocks to the "
+        "opposite side.",
+        "Great news, this is doable! Move the three blocks to the opposite side, one block maximum per "
+        "region, red before blue.",
+    ],
     2: [
         "Glad to assist! Put the three blocks on regions H, I and J, one block per region. Let us know if "
         "you need anything else!",
         "Everything to H, I and J, one per region.",
     ],
-    3: ["Of course. To process your request, move the three pillars to regions E, F and G beside arms a and "
-        "b, and put nothing on any other region. I hope this helps!"],
+    3: [
+        "Of course. To process your request, move the three pillars to regions E, F and G beside arms a and "
+        "b, and put nothing on any other region. I hope this helps!",
+        "Pillars: E, F, G (arm a and arm b side). No other region, ever.",
+    ],
     4: ["Everything onto the opposite regions. Blue: don't touch till red's been picked up. Last, yellow "
         "back to G."],
+    5: ["I understand. Swap the red and blue blocks, red first, and move the yellow block to the opposite "
+        "side at any time. Have a lovely evening!"],
+    6: ["Sure, I can help with that. Rest assured, the three objects go to G, H and I, at most one object in "
+        "any region, red before blue. Kind regards, Support Team"],
     7: [
+        "Three objects to I, one after another. Red before blue. No F, G or H meanwhile.",
         "The three objects go one after another onto region I, red before blue; nothing is to be placed on "
         "regions F, G or H during said period.",
         "Place the three objects one after another on region I, red before blue, and none on regions F, G "
         "or H.",
+    ],
+    8: [
+        "Yellow to I. Then to G. Red and blue: any empty region, any time.",
+        "Put yellow on I. Then on G. Red and blue to any empty region, one block tops per region, any time.",
     ],
 }
 
@@ -49,6 +67,9 @@ REFUSED = [
     (2, "Of course not! Put the three blocks on regions H, I and J, one block per region."),
     # a guard with no "until": what may the arms do with blue, ever?
     (4, "Everything to the opposite regions. Blue: hands off. Last: yellow back to G."),
+    # a next place alone after two blocks: whose step is it?
+    (8, "Red and yellow to I. Then to G. Blue to any empty region, any time."),
+    (1, "Move the three blocks to the opposite side, at most one object in region G, red before blue."),
 ]
 
 NEAR_MISSES = [
@@ -60,6 +81,9 @@ NEAR_MISSES = [
     (7, "Place the three objects one after another on region I, red before blue, and none on F or G during "
         "such period."),
     (3, "No problem! Move the three pillars to regions E, F and G beside arm a and arm b."),
+    (7, "Three objects to I, one after another. Red before blue. No F or G meanwhile."),
+    (8, "Put yellow on I. Then on H. Red and blue to any empty region, any time."),
+    (2, "Put the three blocks on regions H, I and J, two blocks maximum per region."),
 ]
 
 
@@ -91,7 +115,7 @@ def test_near_misses_are_not_the_written_spec(task: int, text: str) -> None:
 @pytest.mark.sweep
 @pytest.mark.data
 @pytest.mark.parametrize(
-    ("batch", "style"), [(b, s) for b in ("dev83", "dev84", "validation20") for s in STYLES[b]]
+    ("batch", "style"), [(b, s) for b in ("dev83", "dev84", "dev85", "validation20") for s in STYLES[b]]
 )
 def test_h107_batches_are_read_right_or_refused_never_misread(batch: str, style: str) -> None:
     for task, text in STYLES[batch][style].items():
