@@ -265,7 +265,9 @@ _SOURCE = re.compile(
 _RECEIVED = re.compile(
     r"(?i)(?P<start>^|,\s*|\band\s+)(?:(?:we|the\s+(?:arms|robots|team))\s+(?:were|are|have\s+been|['’]ve\s+been)\s+"
     r"(?:asked|told|instructed|requested|directed)\s+|(?:our|the|my|your)\s+(?:instructions|orders)\s+(?:are|were)\s+|"
-    r"(?:plan|work\s+out|figure\s+out)\s+how\s+(?:the\s+(?:arms|robots)|we|you|to)\s+(?:can\s+|could\s+|should\s+)?)"
+    r"(?:plan|work\s+out|figure\s+out)\s+how\s+(?:the\s+(?:arms|robots)|we|you|to)\s+(?:can\s+|could\s+|should\s+)?|"
+    # a support agent saying the request back: "(just to confirm,) you'd like the arms to ..."
+    r"you\s*(?:['’]d|\s+would)\s+(?:like|want)\s+(?:the\s+(?:arms|robots)|us)\s+)"
     r"(?P<neg>not\s+)?(?:to\s+)?(?=[a-z])"
 )
 # "and said / and told us (that) CLAUSE" (the speaker said before): the clause
@@ -368,8 +370,10 @@ _REGION_BEFORE = re.compile(r"(?i)(?:\bregions?|\b[A-J]\s*(?:,|\band|\bor)|\b(?:
 # the team named as the subject of what it is about to do: "our arms are going to move ...", "the robots will
 # put ...", "they won't touch ..." (where a clause starts; "they" only before a verb with its object: blocks
 # "will move to G", arms "will move the red block")
-_FUTURE = r"(?:\s*['’]re|\s+are)(?:\s+not)?\s+going\s+to\b|\s+(?:will|shall|won['’]t)\b"
-_CLAUSE_START = r"(?:^|(?<=[,;:])|(?<=\band)|(?<=\bthen)|(?<=\btoday)|(?<=\bnow)|(?<=\bnext)|(?<=\btime))"
+_FUTURE = r"(?:\s*['’]re|\s+are)(?:\s+not)?\s+going\s+to\b|\s+(?:will|shall|won['’]t)\b|\s*['’]ll\b"
+_CLAUSE_START = (
+    r"(?:^|(?<=[,;:])|(?<=\band)|(?<=\bthen)|(?<=\bthereafter)|(?<=\btoday)|(?<=\bnow)|(?<=\bnext)|(?<=\btime))"
+)
 _TEAM_AS_WE = re.compile(
     rf"(?i){_CLAUSE_START}\s*(?:(?:our|the|these|both|all\s+(?:the\s+)?)\s+)?(?:robot\s+)?(?:arms|robots)(?={_FUTURE})"
 )
@@ -401,6 +405,12 @@ def first_person_as_team(sentence: str) -> str:
     "Today we will move the blocks, and we won't touch red"
     """
     sentence = _GOING_TO_BE.sub(_future, sentence)
+    # "after all of that they'll put ...": the step's phrase set off, as before any command
+    sentence = re.sub(
+        r"(?i)\b(after\s+all\s+(?:of\s+)?(?:that|these|this))\s+(?=(?:they|(?:the\s+)?(?:arms|robots))\b)",
+        r"\1, ",
+        sentence,
+    )
     sentence = _LET_ME.sub(lambda m: "we will not " if m[1] else "we will ", sentence)
     sentence = _THEY_AS_WE.sub(" we", _TEAM_AS_WE.sub(" we", sentence))
     out, last = [], 0
@@ -418,8 +428,9 @@ def first_person_as_team(sentence: str) -> str:
     return " ".join(text.split())
 
 
-# a writer's name: one capitalised word that the reader reads as nothing ("Ana"; not "Red", not "Arm")
-_NAME = re.compile(r"^\s*(?-i:[A-Z][a-z]+)\s*[.!]*\s*$")
+# a writer's name: one capitalised word that the reader reads as nothing ("Ana"; not "Red", not "Arm"), or a
+# team's ("The Robotics Team", "Support Desk")
+_NAME = re.compile(r"^\s*(?-i:(?:The\s+)?[A-Z][a-z]+(?:\s+(?:Team|Crew|Group|Desk))?)\s*[.!]*\s*$")
 
 
 def _name(text: str) -> bool:

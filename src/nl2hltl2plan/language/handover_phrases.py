@@ -220,7 +220,7 @@ def _mark_one_per_region(m: Marked) -> None:
     world's own rule (recorded, no formula)."""
     region = r"(?:goal\s+|target\s+)?(?:region|area|zone|place|spot|cell)"
     one = (
-        rf"(?:only\s+|just\s+|at\s+most\s+|no\s+more\s+than\s+|exactly\s+|(?:a\s+)?max(?:imum)?\s+(?:of\s+)?)?(?:one|a\s+single|single|1)"
+        rf"(?:only\s+|just\s+|at\s+most\s+|(?:no|not)\s+more\s+than\s+|exactly\s+|(?:a\s+)?max(?:imum)?\s+(?:of\s+)?)?(?:one|a\s+single|single|1)"
         rf"(?:\s+{NOUN})?"
         rf"(?:\s+of\s+(?:the\s+)?{NOUNS})?(?:\s+only)?"
     )

@@ -299,6 +299,8 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     # (before "it" is read as a block)
     (r"\b(while\s+(?:you|we|they)\s+(?:are\s+)?(?:do|doing|perform|performing))\s+it\b", r"\1 this"),
     (r"\b(?:somewhere|at\s+some\s+point)\s+along\s+the\s+way\b", "at any time"),
+    # two blocks listed before a colon without "and" ("Red, blue: swap spots"): the pair
+    (r"^\s*(red|blue|yellow)\s*,\s*(red|blue|yellow)\s*(?=:)", r"\1 and \2 "),
     # telegraphic and bulleted
     (
         r"^\s*((?:the\s+)?(?:two|three|four|\d)\s+(?:blocks|objects|pillars|items|cubes|pieces))\s*,\s*"
@@ -403,6 +405,10 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     (r"\bslot(s?)\b", r"region\1"),
     # the first thing said: "first off", "to start (with)" (as "to begin with": the step comes first)
     (r"(^|,)\s*(?:first\s+off|to\s+start(?:\s+with)?|to\s+start\s+off)\s*(?=,)", r"\1 to begin with "),
+    # legal English: "upon" before a place is "on", "thereafter" is "then", "each such region" is each region
+    (r"\bupon\s+(?=(?:the\s+)?(?:regions?|areas?|any|opposite|[e-j])\b)", "on "),  # ("upon completion" stays)
+    (r"\bthereafter\b", "then"),
+    (r"\b(each|every|any)\s+such\s+(?=(?:region|area|place|zone)s?\b)", r"\1 "),
     # and the last: "Last: yellow back to G", "Last, ..." (as "finally"; "the last block" stays)
     (r"^\s*last\s*(?=[,:])", "finally "),
     # a manner adverb that every plan already meets
