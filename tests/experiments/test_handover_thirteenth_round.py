@@ -5,8 +5,10 @@ message, dropped only where their fragment names nothing else; "during such / sa
 this period"; a block named as a field's label before its touch guard ("Blue: hands off till red's
 touched"), "everything to ...", "none on F, G or H", "No other region, ever.", "Last: ...", a next place
 alone ("Yellow to I. Then to G.") and the one-block rule as "at most one object in any region" or "one
-block maximum per region" are read. `dev83`, `dev84`, `dev85` and the held-out `validation20` are read
-right or refused, never misread (the `sweep` run)."""
+block maximum per region" are read, and so are a support agent's wrap-ups ("As requested, ...", "Just to
+confirm, you'd like the arms to ...", "The Robotics Team") and legal "upon", "thereafter", "each such
+region". `dev83` to `dev86` and the held-out `validation20` are read right or refused, never misread (the
+`sweep` run)."""
 
 from __future__ import annotations
 
@@ -32,6 +34,8 @@ READ = {
     2: [
         "Glad to assist! Put the three blocks on regions H, I and J, one block per region. Let us know if "
         "you need anything else!",
+        "Just to confirm, you'd like the arms to put the three blocks upon regions H, I and J, with not more "
+        "than one block in each such region. Best regards, The Robotics Team",
         "Everything to H, I and J, one per region.",
     ],
     3: [
@@ -39,9 +43,15 @@ READ = {
         "b, and put nothing on any other region. I hope this helps!",
         "Pillars: E, F, G (arm a and arm b side). No other region, ever.",
     ],
-    4: ["Everything onto the opposite regions. Blue: don't touch till red's been picked up. Last, yellow "
-        "back to G."],
-    5: ["I understand. Swap the red and blue blocks, red first, and move the yellow block to the opposite "
+    4: [
+        "Everything onto the opposite regions. Blue: don't touch till red's been picked up. Last, yellow "
+        "back to G.",
+        "Here's how the arms will handle it: they'll move the three blocks to the opposite regions, they "
+        "won't touch the blue block until the red block has been touched, and after all of that they'll put "
+        "the yellow block back on region G.",
+    ],
+    5: ["Red, blue: swap spots, red first! Yellow: opposite side, any time! Move it!",
+        "I understand. Swap the red and blue blocks, red first, and move the yellow block to the opposite "
         "side at any time. Have a lovely evening!"],
     6: ["Sure, I can help with that. Rest assured, the three objects go to G, H and I, at most one object in "
         "any region, red before blue. Kind regards, Support Team"],
@@ -53,6 +63,8 @@ READ = {
         "or H.",
     ],
     8: [
+        "The Arms shall place the yellow block upon region I and thereafter upon region G, and shall place "
+        "the red and blue blocks upon any empty region at any time.",
         "Yellow to I. Then to G. Red and blue: any empty region, any time.",
         "Put yellow on I. Then on G. Red and blue to any empty region, one block tops per region, any time.",
     ],
@@ -67,6 +79,9 @@ REFUSED = [
     (2, "Of course not! Put the three blocks on regions H, I and J, one block per region."),
     # a guard with no "until": what may the arms do with blue, ever?
     (4, "Everything to the opposite regions. Blue: hands off. Last: yellow back to G."),
+    (2, "Just to confirm, you wouldn't like the arms to put the three blocks on regions H, I and J, one "
+        "block per region."),
+    (1, "Move the three blocks to the opposite side, red before blue. Best regards, The Red Team"),
     # a next place alone after two blocks: whose step is it?
     (8, "Red and yellow to I. Then to G. Blue to any empty region, any time."),
     (1, "Move the three blocks to the opposite side, at most one object in region G, red before blue."),
@@ -84,6 +99,14 @@ NEAR_MISSES = [
     (7, "Three objects to I, one after another. Red before blue. No F or G meanwhile."),
     (8, "Put yellow on I. Then on H. Red and blue to any empty region, any time."),
     (2, "Put the three blocks on regions H, I and J, two blocks maximum per region."),
+    (1, "We're on it! Per your request, move the three blocks to the opposite side, blue before red."),
+    (2, "Just to confirm, you'd like the arms to put the three blocks on regions H and I, one block per "
+        "region."),
+    (8, "The Arms shall place the yellow block upon region I and thereafter upon region H, and shall place "
+        "the red and blue blocks upon any empty region at any time."),
+    (5, "Red, yellow: swap spots, red first! Blue: opposite side, any time!"),
+    (6, "Here's how the arms will handle it: they'll place the three objects on regions G, H and I, one "
+        "each, blue before red."),
 ]
 
 
@@ -115,7 +138,8 @@ def test_near_misses_are_not_the_written_spec(task: int, text: str) -> None:
 @pytest.mark.sweep
 @pytest.mark.data
 @pytest.mark.parametrize(
-    ("batch", "style"), [(b, s) for b in ("dev83", "dev84", "dev85", "validation20") for s in STYLES[b]]
+    ("batch", "style"),
+    [(b, s) for b in ("dev83", "dev84", "dev85", "dev86", "validation20") for s in STYLES[b]],
 )
 def test_h107_batches_are_read_right_or_refused_never_misread(batch: str, style: str) -> None:
     for task, text in STYLES[batch][style].items():
