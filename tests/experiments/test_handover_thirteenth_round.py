@@ -7,7 +7,7 @@ touched"), "everything to ...", "none on F, G or H", "No other region, ever.", "
 alone ("Yellow to I. Then to G.") and the one-block rule as "at most one object in any region" or "one
 block maximum per region" are read, and so are a support agent's wrap-ups ("As requested, ...", "Just to
 confirm, you'd like the arms to ...", "The Robotics Team") and legal "upon", "thereafter", "each such
-region". `dev83` to `dev86` and the held-out `validation20` are read right or refused, never misread (the
+region". `dev83` to `dev87` and the held-out `validation20` are read right or refused, never misread (the
 `sweep` run)."""
 
 from __future__ import annotations
@@ -28,6 +28,8 @@ READ = {
     1: [
         "Thank you for your patience! The red block goes before the blue block; move all three blocks to the "
         "opposite side.",
+        "Hi there, thanks for contacting support! I'd be happy to assist. The arms will move the three "
+        "blocks to the opposite side, placing the red block before the blue block. Anything else?",
         "Great news, this is doable! Move the three blocks to the opposite side, one block maximum per "
         "region, red before blue.",
     ],
@@ -82,6 +84,9 @@ REFUSED = [
     (2, "Just to confirm, you wouldn't like the arms to put the three blocks on regions H, I and J, one "
         "block per region."),
     (1, "Move the three blocks to the opposite side, red before blue. Best regards, The Red Team"),
+    (1, "Move the three blocks to the opposite side, red before blue. Anything else on region G."),
+    (1, "Thanks for contacting support about the yellow block! Move the three blocks to the opposite side, "
+        "red before blue."),
     # a next place alone after two blocks: whose step is it?
     (8, "Red and yellow to I. Then to G. Blue to any empty region, any time."),
     (1, "Move the three blocks to the opposite side, at most one object in region G, red before blue."),
@@ -105,6 +110,7 @@ NEAR_MISSES = [
     (8, "The Arms shall place the yellow block upon region I and thereafter upon region H, and shall place "
         "the red and blue blocks upon any empty region at any time."),
     (5, "Red, yellow: swap spots, red first! Blue: opposite side, any time!"),
+    (4, "Blocks to the opposite regions. Blue: no touching till yellow's touched. Then yellow back on G."),
     (6, "Here's how the arms will handle it: they'll place the three objects on regions G, H and I, one "
         "each, blue before red."),
 ]
@@ -139,7 +145,7 @@ def test_near_misses_are_not_the_written_spec(task: int, text: str) -> None:
 @pytest.mark.data
 @pytest.mark.parametrize(
     ("batch", "style"),
-    [(b, s) for b in ("dev83", "dev84", "dev85", "dev86", "validation20") for s in STYLES[b]],
+    [(b, s) for b in ("dev83", "dev84", "dev85", "dev86", "dev87", "validation20") for s in STYLES[b]],
 )
 def test_h107_batches_are_read_right_or_refused_never_misread(batch: str, style: str) -> None:
     for task, text in STYLES[batch][style].items():

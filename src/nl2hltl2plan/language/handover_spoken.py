@@ -209,7 +209,7 @@ _NARRATION: tuple[tuple[str, str], ...] = (
     # hands off till ...", "blue block : do not touch (it) until ..."
     (
         r"\b(red|blue|yellow)(?:\s+(?:block|one|cube))?\s*:\s*(?:(?:keep\s+(?:your|the|their)\s+)?hands\s+off|"
-        r"(?:do\s+not|don't|never)\s+touch(?:\s+it)?)\s+(?=(?:until|till|til|before)\b)",
+        r"(?:do\s+not|don't|never)\s+touch(?:\s+it)?|no\s+touching)\s+(?=(?:until|till|til|before)\b)",
         r"do not touch the \1 block ",
     ),
     (
