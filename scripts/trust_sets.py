@@ -1,7 +1,8 @@
 """Issue 23's own test sets: build their ground truth, and measure the language stage on them.
 
     python scripts/trust_sets.py build     # tests/language/data/trust/*.txt -> *.jsonl (benchmark format)
-    python scripts/trust_sets.py measure [--backend offline|grammar]   # refused / partial / converted / wrong
+    python scripts/trust_sets.py measure [--backend offline|grammar] [--sets plain,mixed]
+        # refused / partial / converted / wrong, as `plan` reads each line (a user-style set by its name)
     python scripts/trust_sets.py validation [--split valid_seen] [--n 2000] [--seed 1]  # check 1's flags
 
 The .txt files are hand-written, one instruction a line: `scene | instruction | base tasks | before |
@@ -36,6 +37,7 @@ from nl2hltl2plan.worlds.tasks import GTInstance
 from nl2hltl2plan.worlds.world import World
 
 TRUST = Path(__file__).resolve().parent.parent / "tests" / "language" / "data" / "trust"
+STYLES = TRUST.parent / "styles"
 
 
 def parse_task(text: str, task_id: str) -> dict:
@@ -166,16 +168,23 @@ def constraints_of(gt: GTInstance) -> list[dict]:
 
 
 def load(name: str) -> list[GTInstance]:
+    """A trust set's rows (`trust/NAME.jsonl`), or a user-style set's (`styles/NAME.txt`, built here)."""
     path = TRUST / f"{name}.jsonl"
+    if not path.exists():
+        lines = (STYLES / f"{name}.txt").read_text().splitlines()
+        said = [ln for ln in lines if ln.strip() and not ln.startswith("#")]
+        rows = [parse_line(ln, name, n) for n, ln in enumerate(said, 1)]
+        _CONSTRAINTS.update({r["id"]: r.get("constraints", []) for r in rows})
+        return [GTInstance.model_validate(r) for r in rows]
     rows = [json.loads(line) for line in path.read_text().splitlines() if line.strip()]
     _CONSTRAINTS.update({r["id"]: r.get("constraints", []) for r in rows})
     return [GTInstance.model_validate(r) for r in rows]
 
 
-def measure(backend: str, show: bool) -> None:
+def measure(backend: str, show: bool, names: list[str]) -> None:
     print("| set | n | refused | partial | converted | wrong |\n| --- | --- | --- | --- | --- | --- |")
     details = []
-    for name in ("plain", "mixed"):
+    for name in names:
         gts = load(name)
         counts: Counter[str] = Counter()
         for gt in gts:
@@ -224,13 +233,16 @@ def main() -> int:
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--backend", default="offline", choices=["offline", "grammar"])
     ap.add_argument("--show", action="store_true", help="print every line that is not converted")
+    ap.add_argument(
+        "--sets", default="plain,mixed", help="trust sets, or user-style sets (tests/language/data/styles)"
+    )
     args = ap.parse_args()
     if args.what == "build":
         build()
     elif args.what == "validation":
         validation(args.split, args.n, args.seed)
     else:
-        measure(args.backend, args.show)
+        measure(args.backend, args.show, args.sets.split(","))
     return 0
 
 

@@ -1705,3 +1705,200 @@ DEV_H104: dict[int, list[str]] = {
         "The green apple and the orange are to be placed on the yellow plate first; only then are the carrot "
         "and the red apple to be placed on the blue plate."],
 }
+
+# h106's held-out batch: written at the same time as DEV_H106 and committed before any h106 rule, in the
+# four classes the lead's held-out set left refused (a methods-section passive with "respectively", a
+# "Method:" recipe with numbered or labelled steps, "each item is to be placed on its plate: ..." with a
+# freedom said as "arbitrary" or "whatever is easiest", a support agent's "Sure!" / "Of course!" voice).
+# Measured on first contact and at the end only; never read per sentence between.
+VALID_H106: dict[int, list[str]] = {
+    1: ["The green apple and the orange are to be set on the blue and yellow plates respectively.",
+        "Method:\n1. Place the orange onto the yellow plate.\n2. Place the green apple onto the blue plate.\n"
+        "The two steps may be done in either order.",
+        "Each fruit is to be placed on its plate: the orange on the yellow one and the green apple on the "
+        "blue one, in arbitrary order.",
+        "Sure thing! Please put the orange on the yellow plate and the green apple on the blue plate."],
+    2: ["The red apple, the green apple and the orange are to be placed on the blue, pink and yellow plates "
+        "respectively, in any order.",
+        "Method (order free): green apple onto pink plate, red apple onto blue plate, orange onto yellow "
+        "plate.",
+        "Every fruit is to go on its own plate: the green apple on the pink one, the orange on the yellow "
+        "one and the red apple on the blue one, in whatever order is simplest.",
+        "Of course! Please place the red apple on the blue plate, the orange on the yellow plate and the "
+        "green apple on the pink plate, in any order you find convenient."],
+    3: ["The carrot, the orange, the green apple and the red apple should be placed on the blue, yellow, "
+        "green and pink plates respectively; the order is not prescribed.",
+        "Method:\nStep 1 - carrot onto the blue plate.\nStep 2 - orange onto the yellow plate.\nStep 3 - "
+        "green apple onto the green plate.\nStep 4 - red apple onto the pink plate.\nThese steps may be "
+        "carried out in any order.",
+        "Each item is to be placed on its plate, in arbitrary order: the red apple on the pink one, the "
+        "carrot on the blue one, the green apple on the green one and the orange on the yellow one.",
+        "Absolutely! Just put the carrot on the blue plate, the orange on the yellow plate, the green apple "
+        "on the green plate and the red apple on the pink plate, whichever order is easiest for you."],
+    4: ["The green apple and the orange are first to be placed on the yellow plate, after which the carrot "
+        "and the red apple are to be placed on the blue plate.",
+        "Method: Step 1 - the green apple and the orange onto the yellow plate (any order). Step 2 - the "
+        "carrot and the red apple onto the blue plate (any order).",
+        "Each item is to be placed on its plate: first the green apple and the orange on the yellow one, and "
+        "only after those two the carrot and the red apple on the blue one.",
+        "No problem! Please begin with the orange and the green apple on the yellow plate, and when both are "
+        "on it, move the red apple and the carrot to the blue plate."],
+}
+
+# h106's development batch: written at the same time as VALID_H106, in its four classes, read per sentence.
+DEV_H106: dict[int, list[str]] = {
+    1: ["The green apple and the orange are to be placed on the blue and yellow plates respectively, in no "
+        "prescribed order.",
+        "Method: 1. Green apple onto the blue plate. 2. Orange onto the yellow plate. Either step may come "
+        "first.",
+        "Method (any order): orange on yellow plate, green apple on blue plate.",
+        "Each item is to be placed on its plate: the green apple on the blue one, the orange on the yellow "
+        "one.",
+        "Sure! Put the green apple on the blue plate and the orange on the yellow plate.",
+        "No problem! Please place the orange on the yellow plate and the green apple on the blue plate, in "
+        "arbitrary order."],
+    2: ["The green apple, the orange and the red apple are to be placed on the pink, yellow and blue plates "
+        "respectively, in no prescribed order.",
+        "Method: Step 1 - red apple onto the blue plate. Step 2 - green apple onto the pink plate. Step 3 - "
+        "orange onto the yellow plate. The steps may be done in any order.",
+        "Each item is to be placed on its plate: the green apple on the pink one, the orange on the yellow "
+        "one, the red apple on the blue one, in whatever order is easiest.",
+        "Of course! Please put the orange on the yellow plate, the green apple on the pink plate and the red "
+        "apple on the blue plate, in any order.",
+        "Method (any order): green apple on pink plate, orange on yellow plate, red apple on blue plate.",
+        "The orange, the red apple and the green apple were placed on the yellow, blue and pink plates, "
+        "respectively, in arbitrary order."],
+    3: ["The carrot, the orange, the green apple and the red apple are to be placed on the blue, yellow, "
+        "green and pink plates respectively, in no prescribed order.",
+        "Method (any order): carrot on blue plate, orange on yellow plate, green apple on green plate, red "
+        "apple on pink plate.",
+        "Method: 1. Carrot onto the blue plate. 2. Orange onto the yellow plate. 3. Green apple onto the "
+        "green plate. 4. Red apple onto the pink plate. Any step may come first.",
+        "Each item is to be placed on its plate in arbitrary order: the carrot on the blue one, the orange "
+        "on the yellow one, the green apple on the green one and the red apple on the pink one.",
+        "Sure! Just place the red apple on the pink plate, the green apple on the green plate, the orange on "
+        "the yellow plate and the carrot on the blue plate, in whatever order is easiest.",
+        "No problem! The carrot goes on the blue plate, the orange on the yellow plate, the green apple on "
+        "the green plate and the red apple on the pink plate; any order works."],
+    4: ["Method: Step 1 - the green apple and the orange onto the yellow plate (any order). Step 2 - the "
+        "carrot and the red apple onto the blue plate (any order).",
+        "Of course! Please start with the green apple and the orange on the yellow plate, and once both are "
+        "there, put the carrot and the red apple on the blue plate.",
+        "The green apple and the orange are to be placed on the yellow plate first, and the carrot and the "
+        "red apple on the blue plate after them.",
+        "Method: 1. Green apple and orange onto the yellow plate. 2. Carrot and red apple onto the blue "
+        "plate.",
+        "Sure! First the orange and the green apple go on the yellow plate, then the red apple and the "
+        "carrot go on the blue plate.",
+        "Each item is to be placed on its plate: first the green apple and the orange on the yellow one, "
+        "then the carrot and the red apple on the blue one."],
+}
+
+# h106's second development batch: written after the rules for DEV_H106 and measured before any rule for it
+# (how far those rules carry), in the same four classes with other words.
+DEV2_H106: dict[int, list[str]] = {
+    1: ["The orange and the green apple go to the yellow and blue plates, respectively.",
+        "Method:\n- orange onto the yellow plate\n- green apple onto the blue plate\n(steps in any order)",
+        "All items are to be placed on their respective plates: the green apple on the blue one and the "
+        "orange on the yellow one.",
+        "Certainly! Could you put the green apple on the blue plate and the orange on the yellow plate?"],
+    2: ["Place the green apple, the orange and the red apple onto the pink, yellow and blue plates "
+        "respectively.",
+        "Method: 1) red apple onto the blue plate; 2) orange onto the yellow plate; 3) green apple onto the "
+        "pink plate. The order of the steps is arbitrary.",
+        "Every item goes on its own plate, in whatever order is most convenient: the orange on the yellow "
+        "one, the red apple on the blue one and the green apple on the pink one.",
+        "Happy to help! Put the red apple on the blue plate, the green apple on the pink plate and the "
+        "orange on the yellow plate, in an arbitrary order."],
+    3: ["The red apple, the green apple, the orange and the carrot must be put onto the pink, green, yellow "
+        "and blue plates respectively, order not prescribed.",
+        "Method (steps may be performed in any order): carrot onto blue plate; orange onto yellow plate; "
+        "green apple onto green plate; red apple onto pink plate.",
+        "Each object is to be placed on its plate in any sequence: the orange on the yellow one, the carrot "
+        "on the blue one, the red apple on the pink one, the green apple on the green one.",
+        "No worries! The red apple on the pink plate, the carrot on the blue plate, the orange on the "
+        "yellow plate and the green apple on the green plate, whichever order is easiest."],
+    4: ["The green apple and the orange are to be placed on the yellow plate; only after that are the "
+        "carrot and the red apple to be placed on the blue plate.",
+        "Method:\nStep 1 - green apple and orange onto the yellow plate (either order).\nStep 2 - carrot and "
+        "red apple onto the blue plate (either order).",
+        "Each item is to be placed on its plate: the green apple and the orange on the yellow one first, and "
+        "the carrot and the red apple on the blue one after them.",
+        "Of course! Start by putting the green apple and the orange on the yellow plate. Once both are "
+        "there, put the carrot and the red apple on the blue plate."],
+}
+
+# h106's third development batch: written after the rules for DEV2_H106 and measured before any rule for it,
+# in the same four classes with more variation (a methods section's "were to be", a recipe with lettered
+# steps, "its designated plate", an agent's longer reply).
+DEV3_H106: dict[int, list[str]] = {
+    1: ["The green apple and the orange were to be placed on the blue and yellow plates respectively.",
+        "Method: a) green apple onto blue plate; b) orange onto yellow plate. Steps a and b may be done in "
+        "either order.",
+        "Each item is to be placed on its designated plate: green apple - blue plate, orange - yellow plate.",
+        "Sure, happy to help! Just put the orange on the yellow plate and the green apple on the blue "
+        "plate."],
+    2: ["The green apple, the orange and the red apple are to be transferred to the pink, yellow and blue "
+        "plates respectively; no order is prescribed.",
+        "Method (in no particular order):\n1. Red apple onto the blue plate.\n2. Orange onto the yellow "
+        "plate.\n3. Green apple onto the pink plate.",
+        "Each of the three fruits is to be placed on its plate, in arbitrary order: the green apple on the "
+        "pink one, the orange on the yellow one, the red apple on the blue one.",
+        "No problem at all! The green apple goes on the pink plate, the red apple on the blue plate and the "
+        "orange on the yellow plate. Any order is fine."],
+    3: ["The carrot, the orange, the green apple and the red apple are respectively to be placed on the "
+        "blue, yellow, green and pink plates, in arbitrary order.",
+        "Method: Step 1 - carrot onto the blue plate. Step 2 - orange onto the yellow plate. Step 3 - green "
+        "apple onto the green plate. Step 4 - red apple onto the pink plate. The steps may be carried out "
+        "in any order.",
+        "Each item is to be placed on its own plate in whatever order is easiest: the carrot on the blue "
+        "plate, the orange on the yellow plate, the green apple on the green plate and the red apple on "
+        "the pink plate.",
+        "Of course! Please put the carrot on the blue plate, the orange on the yellow plate, the green apple "
+        "on the green plate and the red apple on the pink plate, in whatever order works for you."],
+    4: ["The green apple and the orange are to be placed on the yellow plate, and only then the carrot and "
+        "the red apple on the blue plate.",
+        "Method: Step 1 - green apple and orange onto the yellow plate. Step 2 - carrot and red apple onto "
+        "the blue plate.",
+        "Each item is to be placed on its plate: the green apple and the orange on the yellow plate before "
+        "the carrot and the red apple on the blue plate.",
+        "Absolutely! First, please put the orange and the green apple on the yellow plate; once they are "
+        "both there, put the red apple and the carrot on the blue plate."],
+}
+
+# h106's fourth development batch: written after every rule above and measured before any rule for it, in
+# the same four classes said by other voices (a lab notebook's "were placed" asked as a duty, a recipe card's
+# "Method" with its steps on lines, a form's "its matching plate", a chat agent's longer answer).
+DEV4_H106: dict[int, list[str]] = {
+    1: ["Procedure: the green apple and the orange are to be placed onto the blue and the yellow plate, "
+        "respectively.",
+        "Method\n1. Green apple onto the blue plate.\n2. Orange onto the yellow plate.\nDo the steps in "
+        "any order.",
+        "Each fruit should be put on its matching plate: the green apple on the blue plate and the orange on "
+        "the yellow plate.",
+        "Sure, no problem! Please pop the green apple on the blue plate and the orange on the yellow plate."],
+    2: ["Respectively, the green apple, the orange and the red apple go on the pink, yellow and blue plates.",
+        "Method (any order):\n- green apple on pink plate\n- orange on yellow plate\n- red apple on blue "
+        "plate",
+        "Each item is to be placed on its plate, in whatever order is easiest for you: the green apple on "
+        "the pink plate, the orange on the yellow plate and the red apple on the blue plate.",
+        "Of course! Please put the green apple on the pink plate, the orange on the yellow plate and the red "
+        "apple on the blue plate. The order doesn't matter."],
+    3: ["The carrot, orange, green apple and red apple should go onto the blue, yellow, green and pink "
+        "plates respectively (in arbitrary order).",
+        "Method: Step 1 - the carrot onto the blue plate. Step 2 - the orange onto the yellow plate. Step 3 "
+        "- the green apple onto the green plate. Step 4 - the red apple onto the pink plate. Any step may "
+        "be done first.",
+        "Each item goes on its plate, in arbitrary order: carrot on blue, orange on yellow, green apple on "
+        "green, red apple on pink.",
+        "No problem! Please put the red apple on the pink plate, the green apple on the green plate, the "
+        "orange on the yellow plate and the carrot on the blue plate, in whatever order is easiest."],
+    4: ["The green apple and the orange are first to be placed on the yellow plate; the carrot and the red "
+        "apple are then to be placed on the blue plate.",
+        "Method: Step 1 - the orange and the green apple onto the yellow plate. Step 2 - the red apple and "
+        "the carrot onto the blue plate (any order within each step).",
+        "Each item is to be placed on its plate: the green apple and the orange on the yellow one, and once "
+        "both are there, the carrot and the red apple on the blue one.",
+        "Sure! Please start with the green apple and the orange on the yellow plate, and once both are "
+        "there, put the carrot and the red apple on the blue plate."],
+}

@@ -583,8 +583,11 @@ def test_frames_that_say_more_than_courtesy_are_not_dropped(text):
 def test_a_colour_with_one_names_the_only_thing_of_that_colour():
     text = "could you sort out the plates - orange goes to the yellow one, green apple to the blue one"
     assert _reading(text) == _ORANGE_GREEN
-    # "the green one": the green apple or the green plate, never guessed
-    assert _reading("Put the orange on the yellow one and the carrot on the green one.") is None
+    # "the green one": the green apple or the green plate, never guessed where a thing is named ...
+    assert _reading("Put the green one on the blue plate and the orange on the yellow one.") is None
+    # ... but after a word of place it is where something goes, and only plates hold things here
+    on_the_green_one = "Put the orange on the yellow one and the carrot on the green one."
+    assert _reading(on_the_green_one) == ([("Carrot", "GreenPlate"), ("Orange", "YellowPlate")], [])
 
 
 def test_one_thing_per_plate_is_a_heading_the_pairs_must_keep():

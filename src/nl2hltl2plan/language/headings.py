@@ -9,6 +9,11 @@ instruction before any reader or backend reads it.
   where nothing goes).
 - Any other label stays for the readers, which read its value ("Task: put ...") or refuse it by name
   ("Note: the fridge is cold").
+- Questions and answers ("Q: Where does the mug go? A: In the sink. Q: And the apple? A: The fridge.
+  Q: Order? A: Mug first.") become the instruction they state (`answered`): each answer fills its
+  question's gap, a follow-up ("And the apple?") asks the question before it again, and an answer about
+  the order orders the tasks or frees the order. A question or answer the frames do not cover, or an
+  answer that says nothing certain, is refused by name; nothing is guessed.
 
 >>> unlabelled("Goal - put the apple in the fridge. Condition - none.")
 'Goal: put the apple in the fridge.'
@@ -23,6 +28,9 @@ from __future__ import annotations
 import re
 
 from nl2hltl2plan.language.content_words import phrase_category, shared_words
+from nl2hltl2plan.language.questions import answered
+
+__all__ = ["answered", "unlabelled"]
 
 _NUMBER_WORDS = frozenset("one two three four five six seven eight nine ten i ii iii iv v".split())
 _START = r"(?P<start>^|(?<=[.!?;])\s+)"

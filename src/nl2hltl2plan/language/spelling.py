@@ -12,6 +12,8 @@ text, so a misspelt name that a reading does not use is named, never passed over
   names an action, a state or a count, or is a word of politeness ("woould", "cleean", "slcie"); never
   an order word or a word that builds a structure ("when finsihed", "containign" stay unread: their
   scope is no guess).
+A world with a closed vocabulary may ask for more (`closed_respelt`): the tabletop world respells against
+its nine name words and, as its one order form is groups in turn, its order words too.
 English is pyspellchecker's frequency list; it loads only when a word passes the first tests.
 """
 
@@ -143,3 +145,38 @@ def respelt(text: str) -> str:
         return word.capitalize() if m[0][0].isupper() else word
 
     return _WORD.sub(fix, text)
+
+
+def closed_respelt(text: str, words: frozenset[str]) -> str:
+    """A world's option: `text` with each word that misspells one of a closed list of `words` (lower case:
+    a world's name words, or the order words of its one order form) written as that word (`closed_near`),
+    a capital kept. `respelt` never respells an order word; a world whose order words have one reading
+    may ask for them here."""
+
+    def fix(m: re.Match[str]) -> str:
+        near = closed_near(m[0], words)
+        if len(near) != 1:
+            return m[0]
+        word = next(iter(near))
+        return word.capitalize() if m[0][0].isupper() else word
+
+    return _WORD.sub(fix, text)
+
+
+def closed_near(word: str, words: frozenset[str]) -> set[str]:
+    """The `words` that `word` may misspell: for a word of four letters or more that is none of them and
+    that no list knows, the ones two neighbouring letters swapped away whatever English says ("appel": a
+    rare word, the apple in a world of fruit), else, where English does not know it, the ones one edit
+    away ("aple", "frist")."""
+    low = word.lower()
+    if len(low) < 4 or low in words or known_word(low):
+        return set()
+    same_letters = [w for w in words if len(w) == len(low) and sorted(w) == sorted(low)]
+    swapped = {w for w in same_letters if _neighbours_swapped(w, low)}
+    return swapped or (set() if english_word(low) else one_edit(low) & words)
+
+
+def _neighbours_swapped(a: str, b: str) -> bool:
+    """Do `a` and `b` differ by two neighbouring letters swapped?"""
+    at = [i for i, (x, y) in enumerate(zip(a, b, strict=True)) if x != y]
+    return len(at) == 2 and at[1] == at[0] + 1

@@ -28,7 +28,7 @@ from __future__ import annotations
 
 import re
 
-from nl2hltl2plan.language.content_words import phrase_category, phrase_words
+from nl2hltl2plan.language.content_words import free_order_phrase, phrase_category, phrase_words
 from nl2hltl2plan.language.tabletop_wording import mention_pattern
 
 _WHAT = phrase_words("tabletop_fields.txt", "what")
@@ -41,17 +41,29 @@ def fields_read(text: str, kinds: dict[str, bool]) -> str:
     ... until then" read (see the module docstring); `kinds`: each name in words -> is it a plate."""
     text = _records_paired(text, kinds)
     text = _AS_FOLLOWS.sub(lambda m: f"{m['verb']}{m['free'] or ''}:", text)
-    text = _ANY_ORDER_LABEL.sub("In any order", text)
+    text = _ORDER_LABEL.sub(_any_order_label, text)
     return _UNTIL_THEN.sub(_then_put, _parts_ordered(text))
 
 
-# "Order: any" / "Order: none" as a sentence of its own (`headings` has made "Order - any" a colon; a value
-# that says nothing is asked is content_words.txt's `empty_value`, as `headings` reads other labels)
-_ANY_ORDER_LABEL = re.compile(
-    r"(?:^|(?<=[.;!?(]\s)|(?<=[.;!?(]))\s*(?:order(?:ing)?|sequence)\s*:\s*(?:any(?:\s+order)?|whatever|"
-    rf"whichever|either|free|unspecified|{phrase_category('empty_value')})\s*(?=[.;!?)]|$)",
+# "Order: any" / "Order: none" as a sentence of its own (`headings` has made "Order - any" a colon): a label
+# and value that the shared free-order list says as one phrase ("order : any", free_order.txt), a value that
+# is a free-order phrase itself ("Order: any order"), or one that says nothing is asked (content_words.txt's
+# `empty_value`, as `headings` reads other labels)
+_ORDER_LABEL = re.compile(
+    r"(?:^|(?<=[.;!?(]\s)|(?<=[.;!?(]))\s*(?P<label>order(?:ing)?|sequence)\s*:\s*(?P<value>[^.;:!?()]*?)"
+    r"\s*(?=[.;!?)]|$)",
     re.IGNORECASE,
 )
+_FREE_LABEL = re.compile(
+    rf"(?:{free_order_phrase('whole')})|(?P<value>{free_order_phrase('adverb')}|{phrase_category('empty_value')})",
+    re.IGNORECASE,
+)
+
+
+def _any_order_label(m: re.Match[str]) -> str:
+    """ "In any order" for an order label whose value leaves the order free; the label as it is otherwise."""
+    free = _FREE_LABEL.fullmatch(f"{m['label']} : {m['value']}") or _FREE_LABEL.fullmatch(m["value"])
+    return "In any order" if free else m[0]
 
 
 def _records_paired(text: str, kinds: dict[str, bool]) -> str:

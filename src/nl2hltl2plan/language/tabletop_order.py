@@ -73,13 +73,13 @@ def reference_fronted(text: str, pattern: re.Pattern[str]) -> str:
 
 
 _CLAUSE_END = re.compile(r"[,.;!?\n]")
-# a "then" that closes its clause: "the carrot goes on the blue plate after that.", "... red apple after,",
-# or a heading: "blue plate after: carrot, red apple"
+# a "then" that closes its clause: "the carrot goes on the blue plate after that.", "... after them.", "...
+# red apple after,", or a heading: "blue plate after: carrot, red apple"
 # a clause closed by where it stands in the whole: "... on the yellow plate to start; ... to finish"
 _TO_START = r"to\s+(?:start|begin)(?:\s+with)?|at\s+first"
 _TO_FINISH = r"to\s+(?:finish|end|close|wrap\s+up)|at\s+the\s+end|in\s+the\s+end"
 _TRAILING_THEN = re.compile(
-    rf"(?:(?P<first>\b(?:first|{_TO_START})\b)|{THEN.pattern}|\b(?:after|later|last|{_TO_FINISH})\b)"
+    rf"(?:(?P<first>\b(?:first|{_TO_START})\b)|{THEN.pattern}|\b(?:after(?:\s+them)?|later|last|{_TO_FINISH})\b)"
     r"(?=\s*(?:[,.;:!?\n]|$))"
 )
 
@@ -92,11 +92,20 @@ def then_after_subject_fronted(text: str, pattern: re.Pattern[str]) -> str:
     """A "then" between a clause's named subject and its verb put before the clause ("; the blue plate then
     gets the carrot" -> "; then the blue plate gets the carrot"), so that it cuts the groups where the
     clause starts; not before another name ("the carrot then the orange" orders the two). So is a "second",
-    "next" or "last" after the subject's "comes" ("the blue plate comes second with ...")."""
+    "next" or "last" after the subject's "comes" ("the blue plate comes second with ..."), and a "first" or
+    "then" inside a passive duty ("the carrot and the red apple are then to be placed on ...")."""
     subject = rf"(?P<subject>(?:the\s+)?{pattern.pattern})"
     start = r"(?P<start>(?:^|[,.;:!?])\s*(?:and\s+)?)"
     text = re.sub(
         rf"{start}(?:then\s+)?{subject}\s+then\s+(?={_SUBJECT_VERB}\b)", r"\g<start>then \g<subject> ", text
+    )
+    # in a duty said in the passive: "the carrot and the red apple are then to be placed on ..."
+    named = rf"(?:the\s+)?{pattern.pattern}"
+    subjects = rf"(?P<subject>{named}(?:\s*(?:,|,?\s+and)\s+{named})*)"
+    text = re.sub(
+        rf"{start}{subjects}\s+(?P<be>is|are)\s+(?P<when>first|then|next|afterwards)\s+(?=to\s+be\b)",
+        lambda m: f"{m['start']}{'first' if m['when'] == 'first' else 'then'} {m['subject']} {m['be']} ",
+        text,
     )
     # the same said by where the subject comes: "..., and the blue plate comes second with the carrot"
     return re.sub(

@@ -27,6 +27,7 @@ from nl2hltl2plan.language.accounting import account
 from nl2hltl2plan.language.content_words import Unread, take_backs, vocabulary
 from nl2hltl2plan.language.grammar.restated import count_fits
 from nl2hltl2plan.language.grounding import camel_words
+from nl2hltl2plan.language.headings import answered
 from nl2hltl2plan.language.htt_build import build_htt
 from nl2hltl2plan.language.result import LanguageResult
 from nl2hltl2plan.language.tabletop_counts import plate_counts_read, plates_said_alone, total_counts_read
@@ -49,19 +50,17 @@ from nl2hltl2plan.language.tabletop_order import (
 )
 from nl2hltl2plan.language.tabletop_remarks import role_dropped
 from nl2hltl2plan.language.tabletop_spelling import misspelt_order_words, names_respelt, order_words_spelt
+from nl2hltl2plan.language.tabletop_steps import labels_out_of_turn, numbered_steps, steps_read
 from nl2hltl2plan.language.tabletop_waits import plate_waits_read
 from nl2hltl2plan.language.tabletop_wording import (
     corrected,
     free_order,
     frees_every_step,
-    labels_out_of_turn,
     last_group_free,
     last_item_unmarked,
     mention_pattern,
-    numbered_steps,
     plain_words,
     stated_not_asked,
-    steps_read,
 )
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter, transitive_closure
 from nl2hltl2plan.worlds.world import World
@@ -94,6 +93,8 @@ _SENTENCE = re.compile(r"[.;!?]+")
 _HEADING = re.compile(r"^(?P<head>[^:]*?)(?::|\s+-\s+)")  # "Three moves:", "I'd like three things done -"
 _GENERIC_QUANTITY = re.compile(
     r"\b(?:each|every|all(?:\s+the)?)\s+(?:item|thing|fruit|object|piece|one)s?\b|"
+    # "each of the three fruits": the count after it is checked as a count of its own
+    r"\b(?:each|every|all)\s+of\s+(?:the|these|those)\b(?=\s+(?:two|three|four)\b)|"
     r"\b(?P<count>two|three|four)\s+(?:[a-z]+\s+)?(?:items?|things?|fruits?|objects?|placements?|moves?|"
     r"pieces?|tasks?|ones|jobs|errands|chores)\b"
 )
@@ -174,6 +175,7 @@ class TabletopReader:
         text = names_spelt(stops_read(lines_joined(lines, kinds)), kinds)
         text = bracketed_list_opened(text, kinds)  # "sort fruit (green apple -> pink plate, ...)"
         text = fields_read(text, kinds)  # "Object: ... Target: ...", "as follows:", "### Phase B (after A)"
+        text = answered(text)  # "Q: Where does the green apple go? A: On the blue plate."
         text = dialogue_read(text, mention_pattern(kinds, re.I))  # "Robot: What do you need? Me: ..."
         text = scenario_read(text, mention_pattern(kinds, re.I))  # "Given ..., when I say go, then ..."
         mentions = mention_pattern(kinds, re.I)

@@ -53,7 +53,10 @@ _HEADING_FRAME = re.compile(
 # a freedom statement: what it is about (the order, which comes first, what depends on what) ...
 _ORDER_TOPIC = re.compile(
     r"\b(?:order(?:ing)?|sequenc(?:e|ing)|which(?:ever)?\b[a-z'\s]{0,24}?\b(?:first|(?:start|begin)(?:\s+with)?)|"
-    r"(?:either|any|whichever)(?:\s+one|\s+of\s+them)?\s+(?:(?:can\s+)?(?:go|goes|come|comes)\s+)?first|"
+    # "either one can go first", "any step may come first", "either of the steps may be done first"
+    r"(?:either|any|whichever)(?:\s+(?:one|step|task|placement|move|part|item)|\s+of\s+(?:them|the\s+(?:two\s+)?"
+    r"(?:steps|tasks|placements|moves|parts|items)))?\s+(?:(?:can|may|could|might)\s+)?"
+    r"(?:(?:go|goes|come|comes|be\s+done|be\s+placed)\s+)?first|"
     # the way to the end state: in this world what is left to choose on the way is the order
     r"how\s+you\s+get\s+(?:there|it\s+done)|(?:the\s+)?(?:route|path|way)\s+(?:there|you\s+take))\b"
 )
@@ -72,7 +75,7 @@ _FREE_PREDICATE = re.compile(
     r"unimportant|not\s+(?:important|critical|crucial|essential|vital|relevant|significant)|of\s+no\s+(?:consequence|importance|import)|up\s+to\s+you|(?:your|the\s+robot's)\s+"
     r"(?:call|choice|decision|pick)|(?:are|'re|is|'s)\s+free|free\s+to\s+(?:choose|pick|decide)|"
     r"(?:can|may|get\s+to)\s+(?:choose|pick|decide)|any|either|whatever|whichever|arbitrary|flexible|optional|"
-    r"not\s+(?:specified|fixed|set|required|needed)|unspecified|no\s+(?:particular|special|specific|set|fixed|given|prescribed)|(?:i|we)\s+(?:don't|do\s+not)\s+"
+    r"not\s+(?:specified|fixed|set|required|needed|prescribed|imposed|mandated)|unspecified|no\s+(?:particular|special|specific|set|fixed|given|prescribed)|(?:i|we)\s+(?:don't|do\s+not)\s+"
     r"(?:care|mind)|(?:makes?|is)\s+no\s+(?:difference|odds)|do\s+(?:whatever|as\s+you\s+(?:like|please))|"
     r"(?:as|however|whichever\s+way)\s+you\s+(?:like|please|wish|want|prefer|see\s+fit))\b"
 )
@@ -85,7 +88,7 @@ _FREEDOM_FILLER = frozenset(
     "entirely quite completely here and so just it's its can may will how place placement placements put "
     "one ones a way round i we honestly pretty much first go goes what done like want prefer wish choose "
     "pick fine ok okay good works work suits suit by with fancy mix up shuffle change vary switch thereof "
-    "move moves steps tasks jobs".split()
+    "move moves steps tasks jobs performed carried out executed completed tackled".split()
 )
 _NEGATION = re.compile(r"\b(?:not|never|no|none)\b|n't\b")
 

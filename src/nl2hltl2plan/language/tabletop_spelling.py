@@ -1,9 +1,10 @@
 """Misspelt names and order words in the tabletop world (issue 28): "the grean aple on the pinc plate",
 "frist ... , than ...".
 
-The shared respelling (`language.spelling`) writes a misspelt name as the ALFRED lexicon writes it and never
-respells an order word, whose scope the grammar would then guess. The tabletop world has nine name words
-and one order form (groups of placements in turn), so here:
+The shared respelling (`language.spelling.respelt`) writes a misspelt name as the ALFRED lexicon writes it
+and never respells an order word, whose scope the grammar would then guess. The tabletop world has nine
+name words and one order form (groups of placements in turn), so it takes the shared respelling's world
+option (`spelling.closed_respelt`) with its own words:
 
 - a word of four letters or more that English does not know and that is one edit (a letter more, less or
   changed, or two neighbours swapped) from exactly one word of the world's names is that word ("aple",
@@ -25,7 +26,7 @@ from __future__ import annotations
 
 import re
 
-from nl2hltl2plan.language.spelling import english_word, known_word, one_edit
+from nl2hltl2plan.language.spelling import closed_near, closed_respelt
 
 # the order words of the tabletop reading (groups in turn) that a misspelling may stand for
 _ORDER_WORDS = frozenset(
@@ -36,45 +37,19 @@ _WORD = re.compile(r"(?<![A-Za-z'])[A-Za-z]{4,}(?![A-Za-z'])")
 _CLAUSE_THAN = re.compile(r"(?:(?<=[,;:.!?]\s)|(?<=\band\s)|^)(?P<than>[Tt]han)\b")
 
 
-def _near(word: str, targets: frozenset[str]) -> set[str]:
-    """The targets one edit from `word`, a word of four letters or more that no list nor English knows, or
-    two neighbours swapped in a target whatever English says ("appel": a rare word, the apple here)."""
-    low = word.lower()
-    if len(low) < 4 or low in targets or known_word(low):
-        return set()
-    swapped = {t for t in targets if len(t) == len(low) and sorted(t) == sorted(low) and _swap(t, low)}
-    return swapped or (set() if english_word(low) else one_edit(low) & targets)
-
-
-def _swap(a: str, b: str) -> bool:
-    """Do `a` and `b` differ by two neighbouring letters swapped?"""
-    at = [i for i, (x, y) in enumerate(zip(a, b, strict=True)) if x != y]
-    return len(at) == 2 and at[1] == at[0] + 1
-
-
-def _respell(text: str, targets: frozenset[str]) -> str:
-    def fix(m: re.Match[str]) -> str:
-        near = _near(m[0], targets)
-        if len(near) != 1:
-            return m[0]
-        word = next(iter(near))
-        return word.capitalize() if m[0][0].isupper() else word
-
-    return _WORD.sub(fix, text)
-
-
 def names_respelt(text: str, kinds: dict[str, bool]) -> str:
     """`text` with each misspelling of one of the world's name words written as the world writes it;
     `kinds`: each name in words -> is it a plate."""
-    return _respell(text, frozenset(w for name in kinds for w in name.split()))
+    return closed_respelt(text, frozenset(w for name in kinds for w in name.split()))
 
 
 def order_words_spelt(text: str) -> str:
     """`text` with each misspelt order word written right, and a clause-opening "than" as "then"."""
-    return _CLAUSE_THAN.sub(lambda m: "Then" if m["than"][0] == "T" else "then", _respell(text, _ORDER_WORDS))
+    spelt = closed_respelt(text, _ORDER_WORDS)
+    return _CLAUSE_THAN.sub(lambda m: "Then" if m["than"][0] == "T" else "then", spelt)
 
 
 def misspelt_order_words(text: str) -> list[str]:
     """The words of `text` that may misspell an order word and were left as written (near two of them):
     the order they may say is not guessed."""
-    return [m[0] for m in _WORD.finditer(text) if _near(m[0], _ORDER_WORDS)]
+    return [m[0] for m in _WORD.finditer(text) if closed_near(m[0], _ORDER_WORDS)]

@@ -9,9 +9,8 @@ and plate names, read before `tabletop_pairs` pairs them.
 - corrections: "the blue plate, sorry, the yellow plate" keeps the second name, "no wait" too;
 - plurals: "the apples" / "both apples" name every object the world has with that head noun, when the
   count, if one is said, is theirs;
-- labels and numbers: "Step 1: ... Step 2: ..." (or "Round one", "First course") and a numbered list
-  ("1) ... 2) ...") order the steps; beside a remark that frees the whole list ("in any order", not
-  "within each step, any order") the numbers only list, and "lastly" / "finally" only mark its last item;
+- "lastly" / "finally" beside a remark that frees the whole list only mark its last item (step labels and
+  list numbers are `tabletop_steps`');
 - politeness that carries nothing: "it would please me if", "I would be grateful if you could", "let me
   see", "chop chop", "go ahead and";
 - clauses that name no object or plate (courtesy, list headings, freedom statements), read by what their
@@ -64,6 +63,9 @@ def stated_not_asked(text: str, names: Iterable[str]) -> str | None:
     return None
 
 
+# a number's or ordinal's place in turn ("two", "second"): here and in the step labels (`tabletop_steps`)
+NUMBER_WORDS = {"one": 1, "two": 2, "three": 3, "four": 4, "first": 1, "second": 2, "third": 3, "fourth": 4}
+
 # ---- free-order remarks ---------------------------------------------------------------------------------
 _FREE_ORDER = FREE_ORDER  # the shared list (free_order.txt), anywhere in the text (`tabletop_remarks`)
 # under a remark that frees the whole list, "lastly" / "finally" only mark its last item ("..., and, lastly,
@@ -83,7 +85,7 @@ def last_group_free(text: str) -> tuple[str, int | None]:
     m = _LAST_GROUP_FREE.search(text)
     if m is None:
         return text, None
-    return text[: m.start()] + " " + text[m.end() :], _NUMBER_WORDS[m["n"]]
+    return text[: m.start()] + " " + text[m.end() :], NUMBER_WORDS[m["n"]]
 
 
 def free_order(text: str) -> tuple[str, list[str]]:
@@ -116,6 +118,7 @@ def _polite(kind: str) -> str:
 
 _POLITE = re.compile(rf"\b(?:{_polite('wish')}|{_polite('state_wish')})\b")  # "it would please me if"
 _FILLER = re.compile(rf"^\W*{_polite('opening')}\b|\b{_polite('filler')}\b")  # carry nothing
+_REPLY = re.compile(rf"^\W*(?:{_polite('reply')}\s*[!.,]+\s*)+")  # "No problem! ...": an agent's answer
 # a letter's frame: a subject line ("Subject: plates", "Re: tidying") that names nothing and says no order
 # and a sign-off ("Best, Sam", "Thanks,\nJo") closing the text: neither is part of the request
 # (its line break is gone by then: it ends where the letter's first sentence begins, with a capital)
@@ -155,12 +158,13 @@ _FRAME_ASKS_YOU = re.compile(r"\b(?:you\s+(?:could|would|can|will)|to)$")
 
 
 def plain_words(text: str, kinds: dict[str, bool], heads: dict[str, list[str]]) -> str:
-    """The lowercased text with ordinals spelt out, politeness that carries nothing removed, the verb
-    "pair" read as "match", "make it so" as "make sure", clauses that name nothing read (`remarks_read`),
-    a tidying verb before an object as "put", plates said by colour named, questions joined with their
-    answers, corrections applied and plurals named. `kinds`: each object or plate name (in words) -> is
-    it a plate; `heads`: a head noun that several objects share ("apple") -> their names."""
-    text = plate_waits_read(_letter_frame_dropped(text, kinds).lower(), kinds)
+    """The lowercased text with ordinals spelt out, politeness that carries nothing removed (an agent's
+    reply opening the text, "Sure! ...", too), the verb "pair" read as "match", "make it so" as "make
+    sure", clauses that name nothing read (`remarks_read`), a tidying verb before an object as "put",
+    plates said by colour named, questions joined with their answers, corrections applied and plurals
+    named. `kinds`: each object or plate name (in words) -> is it a plate; `heads`: a head noun that
+    several objects share ("apple") -> their names."""
+    text = plate_waits_read(_REPLY.sub("", _letter_frame_dropped(text, kinds).lower()), kinds)
     text = end_state_heading_read(text, kinds)
     text = re.sub(r"\b(1st|2nd|3rd|4th)\b", lambda m: _ORDINALS[m[1]], text)
     text = _IF_YOU_COULD.sub(r"\g<pre>please\g<body>", _REMINDER.sub("please", text))
@@ -170,7 +174,7 @@ def plain_words(text: str, kinds: dict[str, bool], heads: dict[str, list[str]]) 
     text = _BY_THE_END.sub("", _FIRST_THINGS.sub("first", text))
     text = _DONE_WORDS.sub(r"\g<that> is done", text)
     text = re.sub(r"\b(?:make|have|get)\s+it\s+so(?:\s+that)?\b", "make sure", text)  # the same goal
-    text = _tidied_as_put(text, kinds)
+    text = _own_plate_dropped(_tidied_as_put(text, kinds), kinds)
     text = answers_joined(plates_by_colour(respectively_paired(text, kinds), kinds), kinds)
     text = _moving_on_read(_plate_referred(text, kinds), kinds)
     text = _APPOSITION.sub(lambda m: m[0] if _names_a_word(m["words"], kinds) else ",", text)
@@ -228,6 +232,20 @@ _DONE_WORDS = re.compile(
 _FIRST_THINGS = re.compile(r"\bfirst\s+things\s+first\b")
 
 
+# "Each item is to be placed on its plate: ...": the plate of each, which the list after the heading names
+_OWN_PLATE = re.compile(
+    r"^(?P<head>[^:.;!?]*?)\s+(?:on|onto|in|into|to)\s+(?:its|their)\s+(?:own\s+|respective\s+|proper\s+)?"
+    r"plates?\b(?=[^:.;!?]*:)"
+)
+
+
+def _own_plate_dropped(text: str, kinds: dict[str, bool]) -> str:
+    """`text` without "on its plate" in a heading that names nothing ("each item is to be placed on its
+    plate: the carrot on the blue plate, ..."): each thing's plate is the one the list gives it."""
+    m = _OWN_PLATE.match(text)
+    return m["head"] + text[m.end() :] if m and not mention_pattern(kinds).search(m["head"]) else text
+
+
 def _tidied_as_put(text: str, kinds: dict[str, bool]) -> str:
     """ "sort the green apple onto the blue plate": a verb of tidying before a named object is the one
     action of this world, placing it."""
@@ -236,8 +254,11 @@ def _tidied_as_put(text: str, kinds: dict[str, bool]) -> str:
 
 
 _RESPECTIVELY_WORDS = frozenset(
-    "the and go goes put place move set on onto in into to should must plates please belong belongs".split()
+    "the and go goes put place move set on onto in into to should must plates please belong belongs be "
+    "placed moved shall transfer transferred bring brought".split()
 )
+# a duty said in the passive ("are to be placed", "is to be set"): a request here, never a state
+_TO_BE = re.compile(r"\b(?:is|are)\s+to\s+be\b")
 
 
 def respectively_paired(text: str, kinds: dict[str, bool]) -> str:
@@ -252,12 +273,18 @@ def respectively_paired(text: str, kinds: dict[str, bool]) -> str:
         said = re.findall(rf"{objects}|{plate}", m["clause"])
         things = [_name(w) for w in said if _name(w) in kinds and not kinds[_name(w)]]
         plates = [colours[_name(w).split()[0]] for w in said if _name(w) not in things]
-        rest = set(re.findall(r"[a-z']+", re.sub(rf"{objects}|{plate}", " ", m["clause"])))
+        rest = set(re.findall(r"[a-z']+", re.sub(rf"{objects}|{plate}|{_TO_BE.pattern}", " ", m["clause"])))
         one_each = len(things) == len(plates) > 1 and [_name(w) for w in said[: len(things)]] == things
         if not one_each or not rest <= _RESPECTIVELY_WORDS:
             return m[0]
         return "put " + ", ".join(f"the {o} on the {p}" for o, p in zip(things, plates, strict=True))
 
+    # "Respectively, A and B go on ..." and "A and B are respectively to be placed on the blue and yellow
+    # plates": the word closes its clause
+    opening = r"(?:^|(?<=[.;!?]\s))respectively\s*,?\s+(?P<clause>[^.;:!?]+)"
+    text = re.sub(opening, r"\g<clause> respectively", text)
+    said_after = rf"(?:\s*,?\s*(?:{plate}|\b(?:{'|'.join(sorted(_RESPECTIVELY_WORDS | {'is', 'are'}))})\b))+"
+    text = re.sub(rf"\s+respectively(?P<after>{said_after})", r"\g<after> respectively", text)
     return re.sub(r"(?P<clause>[^.;:!?]*?),?\s+respectively\b", paired, text)
 
 
@@ -321,12 +348,19 @@ def plates_by_colour(text: str, kinds: dict[str, bool]) -> str:
     """A plate said by its colour alone ("green apple -> blue", "the orange on the yellow") named in full:
     a colour word of a plate's name that starts no name and is followed by no noun of its own ("the
     green apple", "the blue and yellow plates" are left); "the yellow one" names the plate when no other
-    name starts with "yellow" (not "the green one": the green apple or the green plate)."""
+    name starts with "yellow" (not "the green one": the green apple or the green plate, but after a word of
+    place, "on the green one", the plate)."""
     colours = {n.split()[0]: n for n, plate in kinds.items() if plate and len(n.split()) == 2}
     only_plate = [c for c in colours if sum(n.split()[0] == c for n in kinds) == 1]
     if only_plate:
         one = re.compile(rf"\b(?:the\s+)?(?P<c>{'|'.join(map(re.escape, only_plate))})\s+one\b")
         text = one.sub(lambda m: f"the {colours[m['c']]}", text)
+    # "the green apple on the green one": after a word of place, "the green one" is where something goes, a
+    # plate, though an object's name starts with "green" too
+    after_place = re.compile(
+        rf"\b(?P<at>(?:on|onto|upon|in|into|to)\s+)the\s+(?P<c>{'|'.join(map(re.escape, colours))})\s+one\b"
+    )
+    text = after_place.sub(lambda m: f"{m['at']}the {colours[m['c']]}", text)
     objects = mention_pattern([n for n, plate in kinds.items() if not plate]).pattern
     # "on the green and the red apple on the pink": after a word of place, a colour is where something
     # goes, a plate, even before "and" when an object follows ("the green and red apples" elsewhere)
@@ -429,139 +463,3 @@ def _names_a_word(words: str, kinds: dict[str, bool]) -> bool:
 
 def _name(found: str) -> str:
     return " ".join(found.split())
-
-
-# ---- step labels and list numbers ----------------------------------------------------------------------
-_NUMBER_WORDS = {"one": 1, "two": 2, "three": 3, "four": 4, "first": 1, "second": 2, "third": 3, "fourth": 4}
-# a label's place in turn: a digit, a number word or an ordinal (a step noun's also with a comma after it:
-# "step one, ...; step two, ..."), or (with a colon or bracket after it, so
-# that an article or "I" is not one) a letter or a roman numeral ("Part A:", "Phase II)")
-_LETTERS = {"a": 1, "b": 2, "c": 3, "d": 4, "i": 1, "ii": 2, "iii": 3, "iv": 4}
-_STEP_NOUN = r"(?:step|phase|stage|part|round|course|batch)"
-_TURN = (
-    r"(?:(?P<n1>\d|one|two|three|four|first|second|third|fourth)\s*[:.)\-,]|(?P<l1>[a-d]|i{1,3}|iv)\s*[:)])"
-)
-_LABEL = re.compile(
-    rf"(?:^|(?<=[.;!?:,]))\s*(?:{_STEP_NOUN}\s*{_TURN}|(?P<n2>first|second|third|fourth)\s+{_STEP_NOUN}"
-    r"\s*[:.)\-])\s*",
-    re.IGNORECASE,
-)
-_NOUN_LABEL = re.compile(
-    r"(?:^|(?<=[.;!?:,]))\s*(?P<noun>[a-z]+)\s+(?:(?P<n1>\d|one|two|three|four)\s*[:.)\-]|(?P<l1>[a-d]|i{1,3}|iv)"
-    r"\s*[:)])(?P<n2>)\s*",
-    re.IGNORECASE,
-)
-# "1) ...", "2. ...", or a number word with a comma opening a sentence ("One, ...; two, ...")
-_LIST_NUMBER = re.compile(
-    r"(?:^|(?<=[\s.;!?]))\(?(?P<n>\d)[.)]\s+|(?:^|(?<=[.;!?])|(?<=[.;!?]\s))(?i:(?P<w>one|two|three|four)),\s+"
-)
-# "Plan A: ... Plan B: ...", "Option 1: ...": alternatives, no steps (`tabletop_pairs` refuses them)
-_ALTERNATIVE_NOUNS = frozenset("option plan alternative choice scenario variant version possibility".split())
-
-
-# "Round B, only after round A:", "Batch two (after batch one):", "Chapter two, only after chapter one:": a
-# label that names the label before it (the same noun, one back in turn) says the order the labels say already
-_REFERS_BACK = re.compile(
-    r"(?P<label>(?P<noun>[a-z]+)\s+(?P<t>\w+))\s*(?:,|\()\s*(?:but\s+)?(?:only\s+)?(?:after|once|"
-    r"following)\s+(?P<noun2>[a-z]+)\s+(?P<b>\w+)(?:\s+is\s+(?:done|finished|complete))?\s*\)?\s*(?=[:.)\-])",
-    re.IGNORECASE,
-)
-
-
-def _place_in_turn(word: str) -> int | None:
-    word = word.lower()
-    return int(word) if word.isdigit() else _NUMBER_WORDS.get(word, _LETTERS.get(word))
-
-
-def label_references_dropped(text: str) -> str:
-    """ "Round B, only after round A:" -> "Round B:" where the label it names is the one just before it in
-    turn; any other such reference is left (and refused where it is read)."""
-
-    def dropped(m: re.Match[str]) -> str:
-        turn, back = _place_in_turn(m["t"]), _place_in_turn(m["b"])
-        same_noun = m["noun"].lower() == m["noun2"].lower()
-        return m["label"] if same_noun and turn is not None and back == turn - 1 else m[0]
-
-    return _REFERS_BACK.sub(dropped, text)
-
-
-def steps_read(text: str, listed: bool) -> str | None:
-    """Step labels, and bare list numbers, as "first" / "then" (numbered 1, 2, ... in turn); bare list
-    numbers beside a remark that frees the whole list (`listed`: "1) ... 2) ... in any order") only list,
-    and are removed. None: labels or numbers out of turn."""
-    text = label_references_dropped(text)
-    labels = _labels(text)
-    if [_turn(m) for m in labels] != list(range(1, len(labels) + 1)):
-        return None
-    text = _as_steps(text, labels)
-    return list_numbers_read(text, listed)
-
-
-def _labels(text: str) -> list[re.Match[str]]:
-    """The step labels of `text`: "Step 1:", "First course:", or any one noun numbered ("Priority 1: ...
-    Priority 2: ...")."""
-    labels = list(_LABEL.finditer(text))
-    if not labels:
-        labels = [m for m in _NOUN_LABEL.finditer(text) if m["noun"].lower() not in _ALTERNATIVE_NOUNS]
-        if len(labels) < 2 or len({m["noun"].lower() for m in labels}) != 1:
-            return []
-    return labels
-
-
-def labels_out_of_turn(text: str) -> str | None:
-    """The labels or list numbers of `text` (lowercased) when they are not 1, 2, ... in turn ("Part 2: ...
-    Part 1: ..."): no reading may order the steps by where they are written."""
-    numbers = [m[0].strip() for m in (*_labels(text), *_LIST_NUMBER.finditer(text))]
-    turns = [_turn(m) for m in _labels(text)]
-    listed = [_list_number(m) for m in _LIST_NUMBER.finditer(text)]
-    if turns == list(range(1, len(turns) + 1)) and listed in ([], list(range(1, len(listed) + 1))):
-        return None
-    return ", ".join(numbers)
-
-
-def list_numbers_read(text: str, listed: bool) -> str | None:
-    """A numbered list's numbers ("1) ... 2) ...") as "first" / "then", or removed when a remark frees the
-    whole list (`listed`); None when they are not 1, 2, ... in turn."""
-    numbers = list(_LIST_NUMBER.finditer(text))
-    if [_list_number(m) for m in numbers] != list(range(1, len(numbers) + 1)):
-        return None
-    if not listed:
-        return _as_steps(text, numbers)
-    for m in reversed(numbers):  # each item its own sentence: "1) A on P 2) B on Q" is two placements
-        text = text[: m.start()] + ("" if m.start() == numbers[0].start() else ". ") + text[m.end() :]
-    return text
-
-
-def _list_number(m: re.Match[str]) -> int:
-    return int(m["n"]) if m["n"] else _NUMBER_WORDS[m["w"].lower()]
-
-
-def numbered_steps(text: str) -> str:
-    """`text` with its step labels read as "first" / "then" when there are two or more in turn ("Part A:
-    ... Part B: ..."), and the numbers of a numbered list of two or more steps read (`list_numbers_read`:
-    as "first" / "then", or removed beside a remark that frees the whole list), so that every reader
-    orders the steps as the labels and numbers do; the text as it is with no such list."""
-    text = label_references_dropped(text)
-    labels = _labels(text)
-    if len(labels) >= 2 and [_turn(m) for m in labels] == list(range(1, len(labels) + 1)):
-        text = " ".join(_as_steps(text, labels).split())
-    if len(_LIST_NUMBER.findall(text)) < 2:
-        return text
-    read = list_numbers_read(text, frees_every_step(free_order(text.lower())[1]))
-    return " ".join(read.split()) if read is not None else text
-
-
-def _as_steps(text: str, marks: list[re.Match[str]]) -> str:
-    """Each step's label or number as "first" (the first one) or "then"."""
-    for m in reversed(marks):
-        word = " first " if m.start() == marks[0].start() else " then "
-        text = text[: m.start()] + word + text[m.end() :]
-    return text
-
-
-def _turn(label: re.Match[str]) -> int:
-    """A label's place in turn: "Step 2:" -> 2, "Part B:" -> 2."""
-    if label["l1"]:
-        return _LETTERS[label["l1"].lower()]
-    word = (label["n1"] or label["n2"]).lower()
-    return int(word) if word.isdigit() else _NUMBER_WORDS[word]

@@ -5,8 +5,9 @@ and knows no world by name:
 
 - `own_reading`: the world reads the whole instruction itself (the handover worlds, `handover_reading`);
 - `as_read`: the instruction's lines as the one line the readers read (the tabletop world reads a line
-  break by what the lines name and spells names as it does, `tabletop_lines`; elsewhere the lines are
-  joined with spaces);
+  break by what the lines name and spells names as it does, `tabletop_lines`; the household and tabletop
+  worlds read questions and answers as the instruction they state, `headings.answered`; elsewhere the
+  lines are joined with spaces);
 - `prepared`: the text as the shared grammar is to read it, or a refusal (the tabletop world refuses a
   statement of where something is and applies corrections first, `tabletop_pairs`);
 - `reread`: the world's reading of an instruction the grammar refused or read only in part (the tabletop
@@ -32,7 +33,11 @@ from collections.abc import Callable
 from typing import Protocol
 
 from nl2hltl2plan.language.content_words import Unread
+from nl2hltl2plan.language.headings import answered
+from nl2hltl2plan.language.numbered_steps import step_order
+from nl2hltl2plan.language.respectively import distributed
 from nl2hltl2plan.language.result import LanguageResult
+from nl2hltl2plan.language.self_corrections import corrected, household_roles
 from nl2hltl2plan.worlds.world import World
 
 
@@ -97,6 +102,22 @@ class SharedGrammar:
         return []
 
 
+class _HouseholdReader(SharedGrammar):
+    """The household (ALFRED) floor plans: the shared grammar, with "Q: ... A: ..." read as the
+    instruction the answers state (`headings.answered`), self-corrections applied
+    (`self_corrections.corrected`), "... respectively" lists written out (`respectively.distributed`) and
+    an order said by step number applied (`numbered_steps.step_order`)."""
+
+    def __init__(self, world: World) -> None:
+        self.world = world
+
+    def as_read(self, lines: list[str]) -> str:
+        return answered(" ".join(lines))
+
+    def prepared(self, instruction: str) -> str:
+        return distributed(corrected(step_order(instruction), household_roles(self.world)))
+
+
 class _HandoverReader(SharedGrammar):
     """The four-arm handover worlds read every instruction themselves (`handover_reading`)."""
 
@@ -117,6 +138,7 @@ def _tabletop_reader(world: World) -> WorldReader:
 
 # World.kind -> its reader; a kind not listed reads with the shared grammar alone
 _READERS: dict[str, Callable[[World], WorldReader]] = {
+    "alfred": _HouseholdReader,
     "handover": _HandoverReader,
     "tabletop": _tabletop_reader,
 }

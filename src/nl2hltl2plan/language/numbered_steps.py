@@ -1,0 +1,87 @@
+"""An order said by step number in a numbered recipe ("Method: 1. put ... 2. put ... Step 2 comes first."),
+applied before the household grammar reads (`step_order`): the steps are written out in the order said,
+"A, then B". Without it, the grammar read the steps' numbers as their order and "step 2 comes first" as
+nothing (step 1 before step 2: the opposite of what was asked).
+
+- "step N first" / "do step N first" / "the second step comes first" / "step N last": with two steps, the
+  named step first (last) and the other after (before) it;
+- "step N before step M" / "step M after step N": with two steps, that order;
+- an order that leaves other steps unordered (three steps, "step 2 first"), or names a step the recipe does
+  not have, is refused by name. An order the steps may come in freely ("Either step may come first") is
+  `free_order.txt`'s, which the grammar reads.
+
+>>> step_order("1. put the mug in the sink. 2. put the egg in the fridge. Step 2 comes first.")
+'put the egg in the fridge, then put the mug in the sink.'
+"""
+
+from __future__ import annotations
+
+import re
+
+from nl2hltl2plan.errors import HTTError
+
+_ORDINALS = {"first": 1, "second": 2, "third": 3, "fourth": 4, "one": 1, "two": 2, "three": 3, "four": 4}
+_NUMBER = r"(?:\d+|one|two|three|four)"
+_STEP_REF = rf"(?:step\s+(?:number\s+)?{_NUMBER}|the\s+(?:first|second|third|fourth)\s+step)"
+# a numbered step: "1." / "1)" / "Step 1:" opening the text or following a sentence's end or a colon
+_STEP = re.compile(rf"(?:^|(?<=[.:;!?])\s+|\s+(?=\d[.)]\s))(?:step\s+)?(?P<n>{_NUMBER})\s*[.):]\s+", re.I)
+_SAID = (
+    re.compile(
+        rf"^(?:do\s+)?(?P<a>{_STEP_REF})\s+(?:(?:comes?|goes?|is\s+done|should\s+be\s+done|must\s+be\s+done|"
+        r"should\s+come|must\s+come|happens?)\s+)?(?P<where>first|last)$",
+        re.I,
+    ),
+    re.compile(
+        rf"^(?:do\s+)?(?P<a>{_STEP_REF})\s+(?:(?:comes?|goes?|is\s+done|should\s+be\s+done|must\s+come)\s+)?"
+        rf"(?P<rel>before|after)\s+(?P<b>{_STEP_REF})$",
+        re.I,
+    ),
+)
+
+
+def step_order(text: str) -> str:
+    """`text` with an order said by step number written out as the steps in that order (see the module
+    docstring); text with no such order comes back as it is. Raises HTTError naming what cannot be read."""
+    sentences = re.split(r"(?<=[.!?])\s+", text.strip())
+    said = [(k, m) for k, s in enumerate(sentences) for p in _SAID if (m := p.match(s.strip(" .!?")))]
+    if not said:
+        return text
+    if len(said) > 1:
+        raise HTTError("the order of the steps is said twice; say it once")
+    k, m = said[0]
+    rest = " ".join(sentences[:k] + sentences[k + 1 :])
+    steps = _steps(rest)
+    named = [_number(m[g]) for g in ("a", "b") if g in m.groupdict() and m[g]]
+    if len(steps) < 2 or any(n not in steps for n in named):
+        raise HTTError(f"{m[0]!r} names a step the instruction does not number")
+    if len(steps) > 2:
+        raise HTTError(f"{m[0]!r} leaves the order of the other steps unsaid; say the whole order")
+    a, other = named[0], next(n for n in steps if n != named[0])
+    if m.groupdict().get("where"):
+        chain = [a, other] if m["where"].lower() == "first" else [other, a]
+    else:
+        chain = [a, named[1]] if m["rel"].lower() == "before" else [named[1], a]
+        if named[0] == named[1]:
+            raise HTTError(f"{m[0]!r} orders a step against itself")
+    return ", then ".join(steps[n] for n in chain) + "."
+
+
+def _number(ref: str) -> int:
+    words = ref.lower().split()
+    word = words[1] if words[0] == "the" else words[-1]
+    return int(word) if word.isdigit() else _ORDINALS[word]
+
+
+def _steps(text: str) -> dict[int, str]:
+    """Step number -> its words (a heading before the first step, "Method:", is left out)."""
+    marks = list(_STEP.finditer(text))
+    out: dict[int, str] = {}
+    if not marks:
+        return out
+    if not re.fullmatch(r"\s*(?:(?:[A-Za-z']+\s+){0,4}[A-Za-z']+\s*:)?\s*", text[: marks[0].start()]):
+        outside = text[: marks[0].start()].strip()
+        raise HTTError(f"{outside!r} stands outside the numbered steps; number it too")
+    for m, nxt in zip(marks, [*marks[1:], None], strict=True):
+        words = text[m.end() : nxt.start() if nxt else len(text)].strip(" .;")
+        out[_number(f"step {m['n']}")] = words
+    return out

@@ -1,0 +1,178 @@
+"""Self-corrections said in passing, applied before the household grammar reads (`corrected`): the
+correction replaces what it corrects, and what is unclear is refused by name.
+
+- "put the mug in the sink, no wait, in the cabinet": a place with its preposition replaces the last place
+  before the marker ("in the sink");
+- "put the apple in the microwave... I mean the fridge": a bare name replaces the last name before the
+  marker that has its role (a place for a place, a thing to carry for a thing), where its role is certain:
+  "put the pan in the sink, I mean the pot" is refused, since a pot is both a thing to carry and a place,
+  and "put the mug, no wait, the cup, in the sink" replaces the mug (no place is said before the marker);
+- a name with a place after it ("put the egg, no wait, the apple in the fridge") replaces by its name, and
+  the place stays;
+- a correction that says an action ("hang it... actually put it in the drawer", "what I mean is put ...")
+  is left to the grammar, which reads the second clause;
+- a marker with no place or name after it ("put the mug in the sink, no wait") is refused by name.
+
+The markers: "no wait", "wait, no", "I mean", "I meant", "or rather", "sorry", "oops", "whoops", "make
+that", "correction", and "no" / "actually" after a comma, a dash or an ellipsis (an "Actually, ..." opening
+a sentence adds, and is left).
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.language.content_words import categories
+from nl2hltl2plan.language.grounding import Mention, find_mentions, tokens
+from nl2hltl2plan.worlds.world import World
+
+_PAUSE = r"(?:\s*(?:,|;|:|\.{2,}|…|—|–|\s-+)\s*|\s+)"
+_WORDS = (
+    r"(?:no,?\s+wait|wait,?\s+no|i\s+mean[t]?|or\s+rather|no,?\s+sorry|sorry|oops|whoops|make\s+(?:that|it)|"
+    r"correction)(?![\w'])"
+)
+_MARKER = re.compile(
+    rf"{_PAUSE}(?P<marker>(?:{_WORDS}|(?<=[,;—–.…-])\s*(?:no|actually)(?=[\s,]))(?:[\s,:;.…—–-]*{_WORDS})*)"
+    r"(?:\s*[,:;.…—–-]+)?\s*",
+    re.I,
+)
+_PREP = re.compile(r"^(?:in|into|inside|on|onto|on\s+top\s+of|to|under|at|beside|next\s+to)\s", re.I)
+_DET = re.compile(r"^(?:the|a|an|one\s+of\s+the|my|your)\s+", re.I)
+_ARTICLE = re.compile(r"\b(?:the|a|an|one\s+of\s+the|my|your)\s+$", re.I)
+# what a correction says runs to its clause's end: a sentence's end, a comma, an order word, or an "and"
+# before a verb (`_said`)
+_CLAUSE_END = re.compile(r"[.;!?]|,|\s(?:and\s+)?(?:then|before|after)\s|\sand\s+(?P<next>[a-z]+)", re.I)
+
+
+_AGAIN = "say it once, as meant"
+
+
+@dataclass(frozen=True)
+class Roles:
+    """The scene's types by what they can be: a thing to carry, a place that holds things."""
+
+    carried: frozenset[str]
+    holding: frozenset[str]
+
+    def of(self, mention: Mention) -> set[str]:
+        """The roles the mention's types can take ("thing", "place")."""
+        types = set(mention.entry.types)
+        return {r for r, ts in (("thing", self.carried), ("place", self.holding)) if types & ts}
+
+
+def corrected(text: str, roles: Roles) -> str:
+    """`text` with each self-correction applied (see the module docstring); raises HTTError naming a
+    correction that cannot be applied with certainty."""
+    start = 0
+    while m := _MARKER.search(text, start):
+        marker, after = " ".join(m["marker"].split()), text[m.end() :]
+        cut = _said(after)
+        said = after[:cut].strip()
+        if said and (_has_verb(said) or not (_PREP.match(said) or find_mentions(said))):
+            # a clause replaces a clause: the grammar reads it ("what I mean is put ..." too); words that
+            # name nothing ("I mean it") correct nothing here (check 1 names a correction not followed)
+            start = m.end()
+            continue
+        if not _PREP.match(said) and (name := _name_then_place(said)):
+            cut, said = cut - len(said) + len(name), name  # "the egg, no wait, the apple in the fridge"
+        if not said and marker.lower() in ("no", "actually"):
+            start = m.end()  # "..., actually." closing a clause corrects nothing
+            continue
+        fixed = _replaced(text[: m.start()], said, marker, roles)
+        text, start = fixed + after[cut:], len(fixed)
+    return text
+
+
+def _has_verb(said: str) -> bool:
+    """Does a word of `said` outside its names say an action ("is put the apple ...", not "the microwave")?"""
+    spans = [(n.char_start, n.char_end) for n in find_mentions(said)]
+    words = [(w, a) for w, a, _ in tokens(said) if not any(s <= a < e for s, e in spans)]
+    return any(_opens_with_verb(w) for w, _ in words)
+
+
+def _name_then_place(said: str) -> str | None:
+    """The name opening `said` where a place follows it ("the apple in the fridge": "the apple")."""
+    article = len(said) - len(_DET.sub("", said))
+    named = find_mentions(said)
+    if len(named) < 2 or named[0].char_start != article:
+        return None
+    if not _PREP.match(said[named[0].char_end :].lstrip()):
+        return None
+    return said[: named[0].char_end]
+
+
+def _said(after: str) -> int:
+    """Where the words a correction says end in the text `after` its marker."""
+    for end in _CLAUSE_END.finditer(after):
+        if not end["next"] or _opens_with_verb(end["next"]):
+            return end.start()
+    return len(after)
+
+
+def _replaced(before: str, said: str, marker: str, roles: Roles) -> str:
+    """`before` with the part the correction `said` replaces (in its sentence) swapped for it."""
+    if not said:
+        raise HTTError(f"the correction {marker!r} says nothing in place of what it corrects: {_AGAIN}")
+    head = _sentence_start(before)
+    found = [n for n in find_mentions(before) if n.char_start >= head]
+    if _PREP.match(said):  # a place with its preposition
+        places = [n for n in found if _after_preposition(before, n)]
+        if not places:
+            raise HTTError(f"the correction {marker!r} {said!r} corrects no place said before it")
+        return before[: _preposition_start(before, places[-1])] + said
+    named = find_mentions(said)
+    article = len(said) - len(_DET.sub("", said))
+    if len(named) != 1 or (named[0].char_start, named[0].char_end) != (article, len(said)):
+        raise HTTError(f"the correction {marker!r} {said!r} names not one thing or place: {_AGAIN}")
+    # the roles the correction can take that a name before it has ("the cup" after "put the mug," with
+    # no place said yet: a thing); more than one is unclear ("the pan in the sink, I mean the pot")
+    want = roles.of(named[0]) & {_role_at(before, n) for n in found}
+    candidates = [n for n in found if _role_at(before, n) in want]
+    if len(want) != 1:
+        what = " or ".join(repr(n.surface) for n in found[-2:]) or "nothing said before it"
+        unclear = f"which words the correction {marker!r} {said!r} replaces is unclear ({what})"
+        raise HTTError(f"{unclear}: {_AGAIN}")
+    last = candidates[-1]
+    det = _ARTICLE.search(before[: last.char_start])
+    return before[: det.start() if det else last.char_start] + said + before[last.char_end :]
+
+
+def _sentence_start(before: str) -> int:
+    """Where the sentence that ends at `before`'s end begins (an ellipsis ends no sentence)."""
+    ends = [m.end() for m in re.finditer(r"(?<!\.)[.!?;](?!\.)", before)]
+    return ends[-1] if ends else 0
+
+
+# a place's preposition and article, just before its name
+_BEFORE_PLACE = re.compile(
+    r"\b(?:in|into|inside|on|onto|on\s+top\s+of|to|under|at|beside|next\s+to)\s+(?:the\s+|a\s+|an\s+)?$", re.I
+)
+
+
+def _after_preposition(text: str, mention: Mention) -> bool:
+    return bool(_BEFORE_PLACE.search(text[: mention.char_start]))
+
+
+def _preposition_start(text: str, mention: Mention) -> int:
+    m = _BEFORE_PLACE.search(text[: mention.char_start])
+    return m.start() if m else mention.char_start
+
+
+def _role_at(text: str, mention: Mention) -> str:
+    return "place" if _after_preposition(text, mention) else "thing"
+
+
+def _opens_with_verb(said: str) -> bool:
+    first = said.split()[0].lower()
+    return any(c.startswith("verb_") for c in categories(first))
+
+
+def household_roles(world: World) -> Roles:
+    """The roles of a floor plan's types, from its objects' affordances."""
+    objects = world.objects.values()
+    return Roles(
+        frozenset(o.type for o in objects if o.pickupable),
+        frozenset(o.type for o in objects if o.affordances.receptacle),
+    )

@@ -1,0 +1,161 @@
+"""Step labels and list numbers of a tabletop instruction (issue 28), read before `tabletop_pairs` pairs
+objects and plates: "Step 1: ... Step 2: ..." (or "Round one", "First course") and a numbered list ("1)
+... 2) ...") order the steps, as "first" / "then"; beside a remark that frees the whole list ("in any
+order", not "within each step, any order") the numbers only list, and so do step labels where each step is
+one placement ("Method: Step 1 - A on P. Step 2 - B on Q. Either step may come first."); labels out of turn
+("Part 2: ... Part 1: ...") are named, so that no reading orders the steps by where they are written.
+"""
+
+from __future__ import annotations
+
+import re
+
+from nl2hltl2plan.language.tabletop_wording import NUMBER_WORDS, free_order, frees_every_step
+
+# a label's place in turn: a digit, a number word or an ordinal (a step noun's also with a comma after it:
+# "step one, ...; step two, ..."), or (with a colon or bracket after it, so
+# that an article or "I" is not one) a letter or a roman numeral ("Part A:", "Phase II)")
+_LETTERS = {"a": 1, "b": 2, "c": 3, "d": 4, "i": 1, "ii": 2, "iii": 3, "iv": 4}
+_STEP_NOUN = r"(?:step|phase|stage|part|round|course|batch)"
+_TURN = (
+    r"(?:(?P<n1>\d|one|two|three|four|first|second|third|fourth)\s*[:.)\-,]|(?P<l1>[a-d]|i{1,3}|iv)\s*[:)])"
+)
+_LABEL = re.compile(
+    rf"(?:^|(?<=[.;!?:,]))\s*(?:{_STEP_NOUN}\s*{_TURN}|(?P<n2>first|second|third|fourth)\s+{_STEP_NOUN}"
+    r"\s*[:.)\-])\s*",
+    re.IGNORECASE,
+)
+_NOUN_LABEL = re.compile(
+    r"(?:^|(?<=[.;!?:,]))\s*(?P<noun>[a-z]+)\s+(?:(?P<n1>\d|one|two|three|four)\s*[:.)\-]|(?P<l1>[a-d]|i{1,3}|iv)"
+    r"\s*[:)])(?P<n2>)\s*",
+    re.IGNORECASE,
+)
+# "1) ...", "2. ...", or a number word with a comma opening a sentence ("One, ...; two, ...")
+_LIST_NUMBER = re.compile(
+    r"(?:^|(?<=[\s.;!?]))\(?(?P<n>\d)[.)]\s+|(?:^|(?<=[.;!?])|(?<=[.;!?]\s))(?i:(?P<w>one|two|three|four)),\s+"
+)
+# "Plan A: ... Plan B: ...", "Option 1: ...": alternatives, no steps (`tabletop_pairs` refuses them)
+_ALTERNATIVE_NOUNS = frozenset("option plan alternative choice scenario variant version possibility".split())
+
+
+# "Round B, only after round A:", "Batch two (after batch one):", "Chapter two, only after chapter one:": a
+# label that names the label before it (the same noun, one back in turn) says the order the labels say already
+_REFERS_BACK = re.compile(
+    r"(?P<label>(?P<noun>[a-z]+)\s+(?P<t>\w+))\s*(?:,|\()\s*(?:but\s+)?(?:only\s+)?(?:after|once|"
+    r"following)\s+(?P<noun2>[a-z]+)\s+(?P<b>\w+)(?:\s+is\s+(?:done|finished|complete))?\s*\)?\s*(?=[:.)\-])",
+    re.IGNORECASE,
+)
+
+
+def _place_in_turn(word: str) -> int | None:
+    word = word.lower()
+    return int(word) if word.isdigit() else NUMBER_WORDS.get(word, _LETTERS.get(word))
+
+
+def label_references_dropped(text: str) -> str:
+    """ "Round B, only after round A:" -> "Round B:" where the label it names is the one just before it in
+    turn; any other such reference is left (and refused where it is read)."""
+
+    def dropped(m: re.Match[str]) -> str:
+        turn, back = _place_in_turn(m["t"]), _place_in_turn(m["b"])
+        same_noun = m["noun"].lower() == m["noun2"].lower()
+        return m["label"] if same_noun and turn is not None and back == turn - 1 else m[0]
+
+    return _REFERS_BACK.sub(dropped, text)
+
+
+def steps_read(text: str, listed: bool) -> str | None:
+    """Step labels, and bare list numbers, as "first" / "then" (numbered 1, 2, ... in turn); bare list
+    numbers beside a remark that frees the whole list (`listed`: "1) ... 2) ... in any order") only list,
+    and are removed, and so are step labels there where each step is one placement ("Step 1 - A on P. Step
+    2 - B on Q. The steps may be done in any order."; with two in a step, the remark may free the order
+    within each step alone). None: labels or numbers out of turn."""
+    text = label_references_dropped(text)
+    labels = _labels(text)
+    if [_turn(m) for m in labels] != list(range(1, len(labels) + 1)):
+        return None
+    if listed and len(labels) > 1 and _one_placement_each(text, labels):
+        return list_numbers_read(_as_items(text, labels), listed)
+    text = _as_steps(text, labels)
+    return list_numbers_read(text, listed)
+
+
+def _one_placement_each(text: str, labels: list[re.Match[str]]) -> bool:
+    """Does each labelled step say one placement (no "and", comma or "&" in it)?"""
+    ends = [m.start() for m in labels[1:]] + [len(text)]
+    steps = [text[m.end() : end] for m, end in zip(labels, ends, strict=True)]
+    return not any(re.search(r"\band\b|[,&]", step) for step in steps)
+
+
+def _as_items(text: str, marks: list[re.Match[str]]) -> str:
+    """Each step's label or number removed, each step its own sentence."""
+    for m in reversed(marks):
+        text = text[: m.start()] + ("" if m.start() == marks[0].start() else ". ") + text[m.end() :]
+    return text
+
+
+def _labels(text: str) -> list[re.Match[str]]:
+    """The step labels of `text`: "Step 1:", "First course:", or any one noun numbered ("Priority 1: ...
+    Priority 2: ...")."""
+    labels = list(_LABEL.finditer(text))
+    if not labels:
+        labels = [m for m in _NOUN_LABEL.finditer(text) if m["noun"].lower() not in _ALTERNATIVE_NOUNS]
+        if len(labels) < 2 or len({m["noun"].lower() for m in labels}) != 1:
+            return []
+    return labels
+
+
+def labels_out_of_turn(text: str) -> str | None:
+    """The labels or list numbers of `text` (lowercased) when they are not 1, 2, ... in turn ("Part 2: ...
+    Part 1: ..."): no reading may order the steps by where they are written."""
+    numbers = [m[0].strip() for m in (*_labels(text), *_LIST_NUMBER.finditer(text))]
+    turns = [_turn(m) for m in _labels(text)]
+    listed = [_list_number(m) for m in _LIST_NUMBER.finditer(text)]
+    if turns == list(range(1, len(turns) + 1)) and listed in ([], list(range(1, len(listed) + 1))):
+        return None
+    return ", ".join(numbers)
+
+
+def list_numbers_read(text: str, listed: bool) -> str | None:
+    """A numbered list's numbers ("1) ... 2) ...") as "first" / "then", or removed when a remark frees the
+    whole list (`listed`); None when they are not 1, 2, ... in turn."""
+    numbers = list(_LIST_NUMBER.finditer(text))
+    if [_list_number(m) for m in numbers] != list(range(1, len(numbers) + 1)):
+        return None
+    # each item its own sentence when the list is freed: "1) A on P 2) B on Q" is two placements
+    return _as_items(text, numbers) if listed else _as_steps(text, numbers)
+
+
+def _list_number(m: re.Match[str]) -> int:
+    return int(m["n"]) if m["n"] else NUMBER_WORDS[m["w"].lower()]
+
+
+def numbered_steps(text: str) -> str:
+    """`text` with its step labels read as "first" / "then" when there are two or more in turn ("Part A:
+    ... Part B: ..."), and the numbers of a numbered list of two or more steps read (`list_numbers_read`:
+    as "first" / "then", or removed beside a remark that frees the whole list), so that every reader
+    orders the steps as the labels and numbers do; the text as it is with no such list."""
+    text = label_references_dropped(text)
+    labels = _labels(text)
+    if len(labels) >= 2 and [_turn(m) for m in labels] == list(range(1, len(labels) + 1)):
+        text = " ".join(_as_steps(text, labels).split())
+    if len(_LIST_NUMBER.findall(text)) < 2:
+        return text
+    read = list_numbers_read(text, frees_every_step(free_order(text.lower())[1]))
+    return " ".join(read.split()) if read is not None else text
+
+
+def _as_steps(text: str, marks: list[re.Match[str]]) -> str:
+    """Each step's label or number as "first" (the first one) or "then"."""
+    for m in reversed(marks):
+        word = " first " if m.start() == marks[0].start() else " then "
+        text = text[: m.start()] + word + text[m.end() :]
+    return text
+
+
+def _turn(label: re.Match[str]) -> int:
+    """A label's place in turn: "Step 2:" -> 2, "Part B:" -> 2."""
+    if label["l1"]:
+        return _LETTERS[label["l1"].lower()]
+    word = (label["n1"] or label["n2"]).lower()
+    return int(word) if word.isdigit() else NUMBER_WORDS[word]

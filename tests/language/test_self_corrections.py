@@ -1,0 +1,117 @@
+"""The household reader's forms of issue 28 (h108): self-corrections ("in the sink, no wait, in the
+cabinet"), "... respectively" lists, a verb left out after a casual verb ("pop the tomato in the fridge and
+then the pan in the sink") and a numbered recipe whose steps may come in either order. Each correction
+replaces what it corrects; what is unclear is refused by name; nothing is read half."""
+
+from __future__ import annotations
+
+import pytest
+
+from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.language.translate import translate
+
+
+@pytest.fixture(scope="module")
+def kitchen():
+    from nl2hltl2plan.worlds import load_world
+
+    return load_world("FloorPlan1")
+
+
+def reading(text: str, world) -> tuple[list[str], list[tuple[str, str]]]:
+    res = translate(text, world, build=False, actions="none")
+    assert not res.partial, res.unparsed
+    return [t.summary() for t in res.tasks], res.before
+
+
+MUG_CABINET, APPLE_FRIDGE = "place Mug -> Cabinet", "place Apple -> Fridge"
+
+
+@pytest.mark.data
+@pytest.mark.parametrize(
+    "text, tasks",
+    [
+        ("put the mug in the sink, no wait, in the cabinet", [MUG_CABINET]),
+        ("put the mug in the sink... I mean the cabinet", [MUG_CABINET]),
+        ("put the mug on the counter, sorry, I mean in the cabinet", [MUG_CABINET]),
+        ("put the mug in the sink, make that the cabinet", [MUG_CABINET]),
+        ("put the egg in the fridge, I mean the apple", [APPLE_FRIDGE]),  # a thing for a thing
+        ("hang the apple... actually put it in the fridge", [APPLE_FRIDGE]),  # a clause: the grammar's
+        ("put the egg, no wait, the apple in the fridge", [APPLE_FRIDGE]),  # the name; the place stays
+        ("what I mean is put the apple in the fridge", [APPLE_FRIDGE]),  # no correction
+        ("put the egg in the fridge, sorry, I mean the microwave", ["place Egg -> Microwave"]),
+    ],
+)
+def test_a_correction_replaces_what_it_corrects(kitchen, text, tasks):
+    assert reading(text, kitchen) == (tasks, [])
+
+
+@pytest.mark.data
+@pytest.mark.parametrize(
+    "text, named",
+    [
+        ("put the mug in the sink, no wait", "'no wait' says nothing in place"),
+        ("put the pan in the sink, I mean the pot", "is unclear ('pan' or 'sink')"),  # a pot is both
+        ("put the mug in the sink, sorry, the apple and the egg", "names not one thing or place"),
+    ],
+)
+def test_an_unclear_correction_is_refused_by_name(kitchen, text, named):
+    with pytest.raises(HTTError) as refused:
+        translate(text, kitchen, build=False, actions="none")
+    assert named in str(refused.value)
+
+
+@pytest.mark.data
+def test_respectively_pairs_things_and_places_in_turn(kitchen):
+    text = "put the mug, the egg and the apple in the sink, the microwave and the fridge respectively"
+    assert reading(text, kitchen)[0] == ["place Mug -> SinkBasin", "place Egg -> Microwave", APPLE_FRIDGE]
+    text = "put the mug and apple on the counter and in the fridge, respectively, then the egg in the sink"
+    assert reading(text, kitchen) == (
+        ["place Mug -> CounterTop", APPLE_FRIDGE, "place Egg -> SinkBasin"],
+        [("A", "C"), ("B", "C")],
+    )
+    with pytest.raises(HTTError, match="pairs 2 things with 3 places"):
+        translate("put the mug and the apple in the sink, the fridge and the cabinet respectively", kitchen)
+
+
+@pytest.mark.data
+@pytest.mark.parametrize("verb", ["pop", "plonk", "shove", "stick", "chuck", "toss", "drop", "set", "leave"])
+def test_a_verb_left_out_after_a_casual_verb(kitchen, verb):
+    text = f"{verb} the tomato in the fridge and then the mug in the sink"
+    assert reading(text, kitchen) == (["place Tomato -> Fridge", "place Mug -> SinkBasin"], [("A", "B")])
+
+
+@pytest.mark.data
+def test_a_numbered_recipe_whose_steps_may_come_in_either_order(kitchen):
+    text = "Method: 1. put the apple in the fridge. 2. put the mug in the cabinet. Either may come first."
+    assert reading(text, kitchen) == ([APPLE_FRIDGE, MUG_CABINET], [])
+
+
+@pytest.mark.data
+@pytest.mark.parametrize(
+    "said", ["Step 2 comes first.", "Do step 2 first.", "The first step goes last.", "Step 1 after step 2."]
+)
+def test_an_order_said_by_step_number(kitchen, said):
+    """The steps' numbers are no order of their own: "step 2 comes first" puts step 2 first (the grammar
+    read it as step 1 before step 2)."""
+    text = f"Step 1: put the apple in the fridge. Step 2: put the mug in the cabinet. {said}"
+    assert reading(text, kitchen) == ([MUG_CABINET, APPLE_FRIDGE], [("A", "B")])
+
+
+@pytest.mark.data
+@pytest.mark.parametrize(
+    "text, named",
+    [
+        (
+            "1. put the apple in the fridge 2. put the mug in the sink 3. put the egg in the microwave. "
+            "Step 2 first.",
+            "leaves the order of the other steps unsaid",
+        ),
+        ("put the apple in the fridge and the mug in the sink. Step 1 first.", "does not number"),
+        ("Do it. 1. put the apple in the fridge 2. put the egg in the sink. Step 2 first.", "outside the"),
+    ],
+)
+def test_an_order_by_step_number_that_cannot_be_read_is_refused(kitchen, text, named):
+    with pytest.raises(HTTError) as refused:
+        translate(text, kitchen, build=False, actions="none")
+    assert named in str(refused.value)
