@@ -115,6 +115,34 @@ NEAR_MISSES = [
         "each, blue before red."),
 ]
 
+# questions and answers labelled "Q:" / "A:" (the shared `headings.answered`, wired in after h108 merged it)
+QUESTIONS_READ = [
+    (2, "Q: Where do the three blocks go? A: Regions H, I and J, one per region."),
+    (1, "Q: Where do the blocks go? A: The opposite side. Q: Order? A: Red before blue."),
+    (8, "Q: Where does the yellow block go? A: Region I, then region G. Q: And the red and blue blocks? "
+        "A: Any empty region, at any time."),
+]
+QUESTIONS_NOT_WRITTEN = [
+    (1, "Q: Where do the blocks go? A: The opposite side. Q: Order? A: Blue before red."),
+    (8, "Q: Where does the yellow block go? A: Region I, then region H. Q: And the red and blue blocks? "
+        "A: Any empty region, at any time."),
+    # a question the shared frames do not know: refused by name
+    (5, "Q: What should the arms do? A: Swap the red and blue blocks, red first. Q: And the yellow block? A: "
+        "The opposite side, at any time."),
+]
+
+
+@pytest.mark.data
+@pytest.mark.parametrize(("task", "text"), QUESTIONS_READ)
+def test_labelled_questions_and_answers_give_the_written_spec(task: int, text: str) -> None:
+    assert_written_spec(task, text)
+
+
+@pytest.mark.data
+@pytest.mark.parametrize(("task", "text"), QUESTIONS_NOT_WRITTEN)
+def test_other_answers_and_unknown_questions_do_not_give_the_written_spec(task: int, text: str) -> None:
+    assert_not_the_written_spec(task, text)
+
 
 def test_a_reply_fragment_is_empty_only_when_it_names_nothing() -> None:
     assert empty("Thanks for reaching out") and empty("Absolutely, happy to help") and empty("No problem")
