@@ -15,6 +15,7 @@ from handover_session10 import STYLES
 from handover_specs import (
     TASKS,
     assert_not_the_written_spec,
+    assert_refused_by_name,
     assert_written_spec,
     assert_written_spec_or_refused,
 )
@@ -422,8 +423,7 @@ def test_a_command_label_asks_for_what_follows():
     said = "Execute: transfer three blocks to opposite side. Constraint: {} block before {} block."
     assert_written_spec(1, said.format("red", "blue"))
     assert_not_the_written_spec(1, said.format("blue", "red"))
-    with pytest.raises(HTTError):
-        _spec(1, "Do not " + said.format("red", "blue").lower())
+    assert_refused_by_name(1, "Do not " + said.format("red", "blue").lower())
 
 
 def test_a_preamble_that_names_nothing_is_dropped_but_a_condition_is_not():
@@ -431,8 +431,7 @@ def test_a_preamble_that_names_nothing_is_dropped_but_a_condition_is_not():
     preamble = "What we are trying to achieve here is quite simple really: "
     assert_written_spec(2, preamble + rest)
     assert_not_the_written_spec(2, preamble + rest.replace("H, I and J", "H and I"))
-    with pytest.raises(HTTError):
-        _spec(2, "Unless somebody objects by the time you read this: " + rest)
+    assert_refused_by_name(2, "Unless somebody objects by the time you read this: " + rest)
 
 
 def test_would_you_mind_is_read_from_its_cues():

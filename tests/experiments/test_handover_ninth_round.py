@@ -8,10 +8,8 @@ in their frame must be refused; reports that say something else must not give th
 from __future__ import annotations
 
 import pytest
-from handover_specs import assert_not_the_written_spec, assert_written_spec
-from handover_specs import spec_of as _spec
+from handover_specs import assert_not_the_written_spec, assert_refused_by_name, assert_written_spec
 
-from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.content_words import vocabulary
 from nl2hltl2plan.language.handover_discourse import MEANING, empty, frame_words, plain
 
@@ -19,6 +17,9 @@ READ = [
     # empty headers, acknowledgements, radio calls, fillers
     (1, "Memo. Re: today's job. Move all three blocks to the opposite side; red goes before blue."),
     (2, "Copy that. Put the three blocks on regions H, I and J, one block per region. Over and out."),
+    # "no problem" is an acknowledgement, a support agent's reply word (`courtesy.txt`'s `reply`, h107);
+    # refused here as a negation before
+    (6, "Understood, no problem. Place the three objects on regions G, H and I separately, red before blue."),
     (6, "Okay robot, um, place the three objects on regions G, H and I separately, red before blue."),
     (8, "Update: first put the yellow block on region I, then on region G. Red and blue go to any empty "
      "region at any time. Understood?"),
@@ -53,7 +54,6 @@ REFUSED = [
     (1, "Optional: move all three blocks to the opposite side, red before blue."),
     (1, "Done: move all three blocks to the opposite side, red before blue."),
     (2, "Tip: use arm c. Put the three blocks on regions H, I and J, one block per region."),
-    (6, "Understood, no problem. Place the three objects on regions G, H and I separately, red before blue."),
     # a question reported is no command; a block does not speak
     (2, "She asked whether we could put the three blocks on regions H, I and J, one block per region."),
     (1, "The red block said to move all three blocks to the opposite side, red before blue."),
@@ -84,9 +84,7 @@ def test_ninth_round_forms_give_the_written_specs(task_id, text):
 
 @pytest.mark.parametrize(("task_id", "text"), REFUSED)
 def test_ninth_round_frames_that_name_something_are_refused(task_id, text):
-    with pytest.raises(HTTError) as caught:
-        _spec(task_id, text)
-    assert "\n" not in str(caught.value)
+    assert_refused_by_name(task_id, text)
 
 
 @pytest.mark.parametrize(("task_id", "text"), OTHER)

@@ -11,10 +11,13 @@ from __future__ import annotations
 
 import pytest
 from handover_session10 import STYLES
-from handover_specs import assert_not_the_written_spec, assert_written_spec, assert_written_spec_or_refused
-from handover_specs import spec_of as _spec
+from handover_specs import (
+    assert_not_the_written_spec,
+    assert_refused_by_name,
+    assert_written_spec,
+    assert_written_spec_or_refused,
+)
 
-from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.handover_discourse import empty, first_person_as_team, plain
 
 # dev32 and dev33 sentences refused on purpose: a name called alone ("Siri" may be any word), a problem
@@ -122,8 +125,7 @@ READ = [
 def test_tenth_round_batches_give_the_written_specs_or_are_refused_by_name(batch, style):
     for task, text in STYLES[batch][style].items():
         if text in STILL_REFUSED:
-            with pytest.raises(HTTError):
-                _spec(int(task), text)
+            assert_refused_by_name(int(task), text)
         else:
             assert_written_spec(int(task), text)
 
@@ -135,9 +137,7 @@ def test_tenth_round_forms_give_the_written_specs(task_id, text):
 
 @pytest.mark.parametrize(("task_id", "text"), REFUSED)
 def test_tenth_round_near_misses_are_refused(task_id, text):
-    with pytest.raises(HTTError) as caught:
-        _spec(task_id, text)
-    assert "\n" not in str(caught.value)
+    assert_refused_by_name(task_id, text)
 
 
 @pytest.mark.parametrize(("task_id", "text"), OTHER)

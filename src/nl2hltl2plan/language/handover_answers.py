@@ -15,7 +15,8 @@
   block to the opposite side. Yellow can go at any time." (or "It doesn't matter when yellow goes.") is
   "Move the yellow block to the opposite side at any time". Only where the last clause of the sentence
   before names the same blocks and no others, and no order word: otherwise the sentence stays (refused by
-  its words), as does a pronoun ("It can go at any time.": which goal?).
+  its words), as does a pronoun ("It can go at any time.": which goal?); a next place said alone ("Yellow
+  to I. Then to G.") is joined to the sentence before where its last clause names one block.
 """
 
 from __future__ import annotations
@@ -130,6 +131,10 @@ _TIMING = (
 )
 # where the last clause of a sentence starts: a comma or semicolon, or "and" / "then" before a verb
 _CLAUSE_BREAK = re.compile(rf"(?i)[,;]|\b(?:and|then)\s+(?=(?:then\s+)?{VERB}\b)")
+# a next place alone, the block left to the sentence before: "Yellow to I. Then to G.", "Then on to region G."
+_THEN_PLACE = re.compile(
+    r"(?i)^\s*(?:and\s+)?then\s+(?:(?:on|over)\s+)?(?:(?:to|onto|on|into|in)\s+)?(?:region\s+)?[e-j]\s*$"
+)
 _ORDER_WORD = re.compile(r"(?i)\b(?:first|before|after|then|last|later|next|second|time|whenever)\b")
 
 
@@ -146,6 +151,10 @@ def timing_joined(sentences: list[str]) -> list[str]:
     """
     out: list[str] = []
     for sentence in sentences:
+        if out and _THEN_PLACE.match(sentence) and len(_colours(_CLAUSE_BREAK.split(out[-1])[-1])) == 1:
+            # "Yellow to I. Then to G.": one block's steps
+            out[-1] = f"{out[-1].rstrip()}, {sentence.strip()}"
+            continue
         said = next((m for p in _TIMING if (m := p.match(sentence))), None)
         if said and out:
             last = _CLAUSE_BREAK.split(out[-1])[-1]

@@ -48,7 +48,7 @@ from functools import lru_cache
 from importlib import resources
 from typing import NamedTuple
 
-from nl2hltl2plan.language.content_words import vocabulary, word_categories
+from nl2hltl2plan.language.content_words import phrase_list_pattern, vocabulary, word_categories
 from nl2hltl2plan.language.grammar.everyday import HESITATION
 from nl2hltl2plan.language.handover_words import DONE, GERUND, SWAP, TOUCH, VERB
 
@@ -98,7 +98,7 @@ def _frame() -> _Frame:
     day = r"\d{1,2}(?:st|nd|rd|th)?"
     return _Frame(
         single=frozenset(w for name, ws in words.items() if name not in _PLACED for w in ws),
-        phrases=re.compile(rf"\b(?:{_words_as_pattern(words['phrase'])})\b"),
+        phrases=re.compile(rf"\b(?:{_words_as_pattern(words['phrase'])}|{_REPLY})\b"),
         opening=re.compile(rf"^\s*(?:good\s+)?(?:{_words_as_pattern(words['opening'])})\b"),
         label=re.compile(rf"\b(?:{_words_as_pattern(words['label'])})\b"),
         alone=frozenset(w.replace("_", " ") for w in words["alone"]),
@@ -110,6 +110,9 @@ def _frame() -> _Frame:
     )
 
 
+# a support agent's reply around the request ("Happy to help!", "Thanks for reaching out!": `courtesy.txt`'s
+# `reply`), said of the fragment as `empty` sees it (lower case, an apostrophe a space: "there s")
+_REPLY = phrase_list_pattern("courtesy.txt", "reply").replace("'", r"\s*")
 _ACTION = re.compile(rf"\b(?:{VERB}|{GERUND}|{DONE}|{SWAP}|{TOUCH})\b")
 # the team as a whole, addressed ("okay robot", "attention all arms"): one arm by its letter says who acts,
 # and after a preposition the arms are a place ("by the arms", "to the arms")
@@ -262,7 +265,9 @@ _SOURCE = re.compile(
 _RECEIVED = re.compile(
     r"(?i)(?P<start>^|,\s*|\band\s+)(?:(?:we|the\s+(?:arms|robots|team))\s+(?:were|are|have\s+been|['’]ve\s+been)\s+"
     r"(?:asked|told|instructed|requested|directed)\s+|(?:our|the|my|your)\s+(?:instructions|orders)\s+(?:are|were)\s+|"
-    r"(?:plan|work\s+out|figure\s+out)\s+how\s+(?:the\s+(?:arms|robots)|we|you|to)\s+(?:can\s+|could\s+|should\s+)?)"
+    r"(?:plan|work\s+out|figure\s+out)\s+how\s+(?:the\s+(?:arms|robots)|we|you|to)\s+(?:can\s+|could\s+|should\s+)?|"
+    # a support agent saying the request back: "(just to confirm,) you'd like the arms to ..."
+    r"you\s*(?:['’]d|\s+would)\s+(?:like|want)\s+(?:the\s+(?:arms|robots)|us)\s+)"
     r"(?P<neg>not\s+)?(?:to\s+)?(?=[a-z])"
 )
 # "and said / and told us (that) CLAUSE" (the speaker said before): the clause
@@ -365,8 +370,10 @@ _REGION_BEFORE = re.compile(r"(?i)(?:\bregions?|\b[A-J]\s*(?:,|\band|\bor)|\b(?:
 # the team named as the subject of what it is about to do: "our arms are going to move ...", "the robots will
 # put ...", "they won't touch ..." (where a clause starts; "they" only before a verb with its object: blocks
 # "will move to G", arms "will move the red block")
-_FUTURE = r"(?:\s*['’]re|\s+are)(?:\s+not)?\s+going\s+to\b|\s+(?:will|shall|won['’]t)\b"
-_CLAUSE_START = r"(?:^|(?<=[,;:])|(?<=\band)|(?<=\bthen)|(?<=\btoday)|(?<=\bnow)|(?<=\bnext)|(?<=\btime))"
+_FUTURE = r"(?:\s*['’]re|\s+are)(?:\s+not)?\s+going\s+to\b|\s+(?:will|shall|won['’]t)\b|\s*['’]ll\b"
+_CLAUSE_START = (
+    r"(?:^|(?<=[,;:])|(?<=\band)|(?<=\bthen)|(?<=\bthereafter)|(?<=\btoday)|(?<=\bnow)|(?<=\bnext)|(?<=\btime))"
+)
 _TEAM_AS_WE = re.compile(
     rf"(?i){_CLAUSE_START}\s*(?:(?:our|the|these|both|all\s+(?:the\s+)?)\s+)?(?:robot\s+)?(?:arms|robots)(?={_FUTURE})"
 )
@@ -398,6 +405,12 @@ def first_person_as_team(sentence: str) -> str:
     "Today we will move the blocks, and we won't touch red"
     """
     sentence = _GOING_TO_BE.sub(_future, sentence)
+    # "after all of that they'll put ...": the step's phrase set off, as before any command
+    sentence = re.sub(
+        r"(?i)\b(after\s+all\s+(?:of\s+)?(?:that|these|this))\s+(?=(?:they|(?:the\s+)?(?:arms|robots))\b)",
+        r"\1, ",
+        sentence,
+    )
     sentence = _LET_ME.sub(lambda m: "we will not " if m[1] else "we will ", sentence)
     sentence = _THEY_AS_WE.sub(" we", _TEAM_AS_WE.sub(" we", sentence))
     out, last = [], 0
@@ -415,8 +428,9 @@ def first_person_as_team(sentence: str) -> str:
     return " ".join(text.split())
 
 
-# a writer's name: one capitalised word that the reader reads as nothing ("Ana"; not "Red", not "Arm")
-_NAME = re.compile(r"^\s*(?-i:[A-Z][a-z]+)\s*[.!]*\s*$")
+# a writer's name: one capitalised word that the reader reads as nothing ("Ana"; not "Red", not "Arm"), or a
+# team's ("The Robotics Team", "Support Desk")
+_NAME = re.compile(r"^\s*(?-i:(?:The\s+)?[A-Z][a-z]+(?:\s+(?:Team|Crew|Group|Desk))?)\s*[.!]*\s*$")
 
 
 def _name(text: str) -> bool:

@@ -220,7 +220,7 @@ def _mark_one_per_region(m: Marked) -> None:
     world's own rule (recorded, no formula)."""
     region = r"(?:goal\s+|target\s+)?(?:region|area|zone|place|spot|cell)"
     one = (
-        rf"(?:only\s+|just\s+|at\s+most\s+|no\s+more\s+than\s+|exactly\s+|max(?:imum)?\s+(?:of\s+)?)?(?:one|a\s+single|single|1)"
+        rf"(?:only\s+|just\s+|at\s+most\s+|(?:no|not)\s+more\s+than\s+|exactly\s+|(?:a\s+)?max(?:imum)?\s+(?:of\s+)?)?(?:one|a\s+single|single|1)"
         rf"(?:\s+{NOUN})?"
         rf"(?:\s+of\s+(?:the\s+)?{NOUNS})?(?:\s+only)?"
     )
@@ -253,6 +253,12 @@ def _mark_one_per_region(m: Marked) -> None:
         rf"(?:,\s*)?\b(?:each|every)\s+{region}\s+(?:only\s+)?(?:has|having)\s+(?:only\s+)?room\s+for\s+(?:only\s+)?(?:one|a\s+single)"
         rf"(?:\s+{NOUN})?\b",
         rf"\b(?:each|every)\s+{NOUN}\s+(?:gets|has|takes|goes\s+(?:to|in|into))\s+an?\s+{region}\s+of\s+its\s+own\b",
+        # a limit said of any region ("at most one object in any region", "not more than one block on a
+        # region") or after its count ("one pillar maximum per region", "one block at most in each region")
+        rf"\b(?:with\s+)?(?:at\s+most|(?:no|not|never)\s+more\s+than|(?:a\s+)?max(?:imum)?\s+(?:of\s+)?)\s+"
+        rf"(?:one|a\s+single|1)(?:\s+{NOUN})?\s+(?:in|on|per)\s+(?:any|a|each|every)\s+(?:single\s+)?{region}\b",
+        rf"\b(?:with\s+)?(?:one|a\s+single|1)(?:\s+{NOUN})?\s+(?:max(?:imum)?|at\s+most|tops)\s+"
+        rf"(?:per|(?:in|on)\s+(?:any|a|each|every))\s+{region}\b",
         # "only one block may occupy a region": any region, so each
         rf"\b(?:only|at\s+most|no\s+more\s+than)\s+(?:one|a\s+single|1)\s+{NOUN}\s+(?:may|can|is\s+allowed\s+to|should|will)\s+"
         rf"(?:occupy|fit\s+(?:in|on|into)|go\s+(?:in|on|into)|be\s+(?:placed\s+)?(?:in|on))\s+(?:a|any|each|every)\s+"

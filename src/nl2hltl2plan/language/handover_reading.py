@@ -61,6 +61,7 @@ from nl2hltl2plan.language.handover_rules import (
     read_touch_guards,
 )
 from nl2hltl2plan.language.handover_scene import FILLER, Marked, Place, Scene
+from nl2hltl2plan.language.headings import answered as labelled_answers
 from nl2hltl2plan.language.htt import HTT, HTTNode
 from nl2hltl2plan.language.result import LanguageResult
 from nl2hltl2plan.language.spec_builder import build_spec
@@ -87,7 +88,10 @@ class Item:
 def translate_handover(instruction: str, world: World) -> LanguageResult:
     """Instruction -> LanguageResult on a handover world (see the module docstring); a line break in it ends
     a step as a full stop does. Where the form reader refuses, each sentence it cannot read alone is said
-    again from its cues (`handover_cues.restate`) and the whole is read once more (`_restated`)."""
+    again from its cues (`handover_cues.restate`) and the whole is read once more (`_restated`). Questions
+    and answers labelled "Q:" / "A:" are first said as the instruction they state (`headings.answered`,
+    every world's; a question it does not know is refused by name)."""
+    instruction = labelled_answers(instruction)
     try:
         return _read_forms(instruction, world)
     except HTTError as refusal:

@@ -299,6 +299,8 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     # (before "it" is read as a block)
     (r"\b(while\s+(?:you|we|they)\s+(?:are\s+)?(?:do|doing|perform|performing))\s+it\b", r"\1 this"),
     (r"\b(?:somewhere|at\s+some\s+point)\s+along\s+the\s+way\b", "at any time"),
+    # two blocks listed before a colon without "and" ("Red, blue: swap spots"): the pair
+    (r"^\s*(red|blue|yellow)\s*,\s*(red|blue|yellow)\s*(?=:)", r"\1 and \2 "),
     # telegraphic and bulleted
     (
         r"^\s*((?:the\s+)?(?:two|three|four|\d)\s+(?:blocks|objects|pillars|items|cubes|pieces))\s*,\s*"
@@ -393,12 +395,22 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     (r"\b(every|each)\s+single\s+", r"\1 "),
     (r"\beach\s+one\s+of\s+(?=the\b)", "each of "),
     (r"\bthe\s+(?:trio|threesome)\s+of\s+", "the three "),
+    # "everything" moved somewhere is every object ("Everything to the opposite regions", "move everything
+    # onto I"); "none" put somewhere is no object ("and none on F, G or H"): verbless orders
+    (r"\beverything(?=\s+(?:to|onto|into|goes|go)\b)", "all the objects"),
+    (r"\bnone(?=\s+(?:on|onto|in|into)\s+(?:regions?\s+)?[e-j]\b)", "nothing"),
     # a range of region letters ("regions H through J", "regions E to G"): each letter from the first to the
     # last (a letter the world lacks is refused later, by name); "slot" is a region
     (r"\bregions\s+([e-j])\s+(?:through|thru|to)\s+([e-j])\b", _letters_between),
     (r"\bslot(s?)\b", r"region\1"),
     # the first thing said: "first off", "to start (with)" (as "to begin with": the step comes first)
     (r"(^|,)\s*(?:first\s+off|to\s+start(?:\s+with)?|to\s+start\s+off)\s*(?=,)", r"\1 to begin with "),
+    # legal English: "upon" before a place is "on", "thereafter" is "then", "each such region" is each region
+    (r"\bupon\s+(?=(?:the\s+)?(?:regions?|areas?|any|opposite|[e-j])\b)", "on "),  # ("upon completion" stays)
+    (r"\bthereafter\b", "then"),
+    (r"\b(each|every|any)\s+such\s+(?=(?:region|area|place|zone)s?\b)", r"\1 "),
+    # and the last: "Last: yellow back to G", "Last, ..." (as "finally"; "the last block" stays)
+    (r"^\s*last\s*(?=[,:])", "finally "),
     # a manner adverb that every plan already meets
     (rf"\b{_MANNER}\b", " "),
     *(

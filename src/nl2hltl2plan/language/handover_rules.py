@@ -272,6 +272,8 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
     # "F/G/H: nothing during this period", "other regions: never"
     m.sub(rf"\bP(?P<p>\d+)\s*:\s*(?:nothing|never|none|forbidden|off\s+limits){PERIOD}", add)
     m.sub(rf"(?:^|(?<=,))\s*P(?P<p>\d+)\s*:?\s*(?:no\s+B(?P<b>\d+)|nothing|none){PERIOD}(?=\s*(?:$|,))", add)
+    # a coach's "No other region, ever.", "no F, G or H meanwhile": a clause of its own, no place used
+    m.sub(rf"(?:^|(?<=,))\s*no\s+P(?P<p>\d+){PERIOD}(?=\s*(?:$|,))", add)
     modal = r"(?:(?:must|may|can|should|shall|will|is|are)\s+)?"
     m.sub(rf"\bB(?P<b>\d+)\s+{modal}{NEG}\s+(?:ever\s+)?(?:be\s+)?{DROP}{down}", add)
     m.sub(

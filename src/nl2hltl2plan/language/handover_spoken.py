@@ -199,7 +199,19 @@ _NARRATION: tuple[tuple[str, str], ...] = (
     # spoken idioms of the rules: "hands off X until ...", "you can't double up", "doesn't matter when"
     # "until somebody's touched the red one": has touched; but "once that's done": that is done (passive)
     (r"\b(that|this|it|everything|all|which)\s+s\s+(?=(?:done|finished)\b)", r"\1 is "),
+    # (a block's "'s touched" is its passive: "until red's touched", the red block has been touched)
+    (
+        r"\b(red|blue|yellow|block|one|cube|pillar)\s+s\s+(?=(?:touched|picked|grabbed|handled|lifted)\b)",
+        r"\1 has been ",
+    ),
     (r"\b([a-z]+)\s+s\s+(?=(?:touched|picked|grabbed|handled|lifted|done|finished)\b)", r"\1 has "),
+    # a block named as a field's label, its touch guard after the colon (a coach's verbless order): "blue :
+    # hands off till ...", "blue block : do not touch (it) until ..."
+    (
+        r"\b(red|blue|yellow)(?:\s+(?:block|one|cube))?\s*:\s*(?:(?:keep\s+(?:your|the|their)\s+)?hands\s+off|"
+        r"(?:do\s+not|don't|never)\s+touch(?:\s+it)?|no\s+touching)\s+(?=(?:until|till|til|before)\b)",
+        r"do not touch the \1 block ",
+    ),
     (
         r"\b(?:keep\s+(?:your|the|their)\s+)?hands\s+off\s+(?=(?:the\s+)?(?:red|blue|yellow)\b)",
         "do not touch ",

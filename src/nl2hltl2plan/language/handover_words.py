@@ -43,9 +43,10 @@ DROP = (
     r"(?:placed|put|dropped|set|left|laid|deposited|positioned|moved|brought|carried|transferred|stored|"
     r"place|drop)(?:\s+down)?"  # "place": a non-native passive ("region F can not place any object")
 )
-# "during this period": a prohibition's scope, the goals of its sentence (else all goals so far)
+# "during this period": a prohibition's scope, the goals of its sentence (else all goals so far); legal
+# English says "during such period", "during said period"
 PERIOD_WORDS = (
-    r"(?:(?:during|in)\s+(?:this|that|the\s+same)\s+(?:whole\s+|entire\s+)?(?:period|time)|in\s+the\s+meantime|meanwhile|"
+    r"(?:(?:during|in)\s+(?:this|that|such|(?:the\s+)?said|the\s+same)\s+(?:whole\s+|entire\s+)?(?:period|time)|in\s+the\s+meantime|meanwhile|"
     r"while\s+doing\s+(?:so|this|that|it)|while\s+(?:this|that)\s+(?:happens|is\s+happening|goes\s+on|is\s+going\s+on)|"
     r"during\s+(?:all\s+)?(?:this|that)(?=\s*(?:$|,|;))|at\s+the\s+same\s+time|"
     r"in\s+the\s+process|all\s+the\s+while|the\s+whole\s+time|in\s+the\s+interim|"
