@@ -1909,7 +1909,8 @@ DEV4_H106: dict[int, list[str]] = {
 # "when both are on it, move ..." after an agent's reply. Scored only at the end.
 VALID_H109: dict[int, list[str]] = {
     1: ["hey, can u put the green apple on the blue plate n the orange on the yellow plate? thx!",
-        "Hi there, please put the orange on the yellow plate & the green apple on the blue plate. Cheers, Tom",
+        "Hi there, please put the orange on the yellow plate & the green apple on the blue plate. Cheers, "
+        "Tom",
         "green apple on blue plate + orange on yellow plate, dont care which order",
         "Hello! Could you put the green apple on the blue plate and the orange on the yellow plate, in any "
         "order you find convenient? Many thanks."],

@@ -170,4 +170,5 @@ def test_questions_and_answers_read_as_the_instruction_they_state():
     ordered = text + " Q: Order? A: Carrot first."
     assert _reading(ordered) == (_TWO[0], [(("Carrot", "BluePlate"), ("Orange", "YellowPlate"))])
     # an answer that says nothing certain is refused, never guessed
-    assert _reading("Q: Where does the carrot go? A: Not sure. Q: And the orange? A: The yellow plate.") is None
+    unclear = "Q: Where does the carrot go? A: Not sure. Q: And the orange? A: The yellow plate."
+    assert _reading(unclear) is None
