@@ -1987,3 +1987,39 @@ DEV_H109: dict[int, list[str]] = {
         "Hello! First the green apple & the orange on the yellow plate. When both are on it, the red apple "
         "& the carrot on the blue plate please. Thanks, Sam"],
 }
+
+# h109's second development batch: written after the rules for DEV_H109 and measured before any rule for it
+# (how far those rules carry), in the same classes with other words.
+DEV2_H109: dict[int, list[str]] = {
+    1: ["yo, pls put green apple on the blue plate n orange on the yellow plate, ty",
+        "Morning! Could u pop the orange onto the yellow plate & the green apple onto the blue plate? Much "
+        "appreciated.",
+        "Hey there! Green apple on the blue plate + orange on the yellow plate, whatever order u find "
+        "easiest. Thanks a lot!",
+        "Sure thing! Orange to the yellow plate and green apple to the blue plate, in any order you find "
+        "handy."],
+    2: ["hello again, can u move the red apple to the blue plate, the green apple to the pink plate n the "
+        "orange to the yellow plate? thanks in advance",
+        "Hi team, green apple on the pink plate & red apple on the blue plate & orange on the yellow plate. "
+        "Dont care what order. Best, Lee",
+        "Of course! Please put the orange on the yellow plate, the green apple on the pink plate and the red "
+        "apple on the blue plate in whichever order you find simplest.",
+        "hey! red apple on blue plate + orange on yellow plate + green apple on pink plate. u choose the "
+        "order. cheers"],
+    3: ["Good afternoon! Please put the carrot on the blue plate, the orange on the yellow plate, the green "
+        "apple on the green plate & the red apple on the pink plate. Kind regards, Jo",
+        "hi, can u put red apple on pink plate, green apple on green plate, orange on yellow plate n carrot "
+        "on blue plate? dont care about order. thx",
+        "Absolutely! The carrot goes on the blue plate, the orange on the yellow plate, the green apple on "
+        "the green plate and the red apple on the pink plate, in any order you find most convenient.",
+        "hey there, carrot + orange + green apple + red apple on the blue, yellow, green and pink plates "
+        "respectively. thanks!"],
+    4: ["Hi! Please put the green apple and the orange on the yellow plate first. Once they are both on it, "
+        "put the carrot and the red apple on the blue plate. Cheers!",
+        "hey, green apple n orange on the yellow plate first, then carrot n red apple on the blue plate pls. "
+        "ty",
+        "No worries! First the orange & the green apple on the yellow plate; when both are on it, the carrot "
+        "& the red apple on the blue plate.",
+        "Put the green apple and the orange on the yellow plate, then, only after those two, put the red "
+        "apple and the carrot on the blue plate. Thanks, Sam"],
+}
