@@ -62,6 +62,8 @@ def test_chat_forms_read_as_plain_words(text, read):
         "Put it down. Cheers, Orange",  # a sign-off's name that names a thing stays
         "Put it down in any order you find the carrot.",  # "find" that is no leave stays
         "when it is on it, put it down",  # only "both" / "they" / "all" ... are on it
+        "Hey, when you're done, put it down.",  # a greeting before a clause that waits on something stays
+        "No problem! Once that's done, put it down.",
     ],
 )
 def test_near_misses_left_as_written(text):

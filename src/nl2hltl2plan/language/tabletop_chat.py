@@ -11,8 +11,9 @@ Read before any reader sees the text (`TabletopReader.as_read`), each as the pla
   (`courtesy.txt`'s `reply`: "No problem!", "Sure thing!") ask for nothing and are removed, as are a
   closing sentence that only thanks ("Thanks!", "Thank you so much!") and a sign-off with a name ("Cheers,
   Ana") whose name is no object or plate. Greetings and replies must stand apart ("Hi, ..."), so a clause
-  that goes on ("Hey robot put ...") is left as written; a closing "thanks" with other words ("Thanks, but
-  not the orange") is left too.
+  that goes on ("Hey robot put ...") is left as written, and stay before a clause that waits on something
+  ("Hey, when you're done, ..."), which is refused as before; a closing "thanks" with other words
+  ("Thanks, but not the orange") is left too.
 
 The words are `tabletop_chat.txt`'s.
 
@@ -39,10 +40,16 @@ _ON_IT = re.compile(
     r"(?:are|have been|'re|are both|are all)\s+)(?:on|in|onto)\s+it\b",
     re.IGNORECASE,
 )
+# a greeting or reply stays before a clause that waits on something ("Hey, when you're done, ..."): what it
+# waits on is not said, and the text is refused as it was
+_REQUEST_FOLLOWS = r"(?=\w)(?!(?:when|whenever|once|after|before|while|until|as soon as|if)\b)"
 _GREETING = re.compile(
-    rf"^\s*(?:{phrase_list_pattern('tabletop_chat.txt', 'greeting')}\s*)+[!.,]+\s*(?=\w)", re.IGNORECASE
+    rf"^\s*(?:{phrase_list_pattern('tabletop_chat.txt', 'greeting')}\s*)+[!.,]+\s*{_REQUEST_FOLLOWS}",
+    re.IGNORECASE,
 )
-_REPLY = re.compile(rf"^\s*{phrase_list_pattern('courtesy.txt', 'reply')}\s*[!.,]+\s*(?=\w)", re.IGNORECASE)
+_REPLY = re.compile(
+    rf"^\s*{phrase_list_pattern('courtesy.txt', 'reply')}\s*[!.,]+\s*{_REQUEST_FOLLOWS}", re.IGNORECASE
+)
 _THANKS = re.compile(
     rf"(?<=[.!?])\s*{phrase_list_pattern('tabletop_chat.txt', 'thanks')}\s*[!.]*\s*$", re.IGNORECASE
 )
