@@ -1902,3 +1902,124 @@ DEV4_H106: dict[int, list[str]] = {
         "Sure! Please start with the green apple and the orange on the yellow plate, and once both are "
         "there, put the carrot and the red apple on the blue plate."],
 }
+
+# h109's held-out batch (issue 28): written together with DEV_H109 and committed before any rule, in the
+# classes h106 left refused: casual chat ("n", "&", "+" for "and", "u", "dont care what order", greetings
+# and sign-offs around the request), "in any order you find convenient", "only after those two", and
+# "when both are on it, move ..." after an agent's reply. Scored only at the end.
+VALID_H109: dict[int, list[str]] = {
+    1: ["hey, can u put the green apple on the blue plate n the orange on the yellow plate? thx!",
+        "Hi there, please put the orange on the yellow plate & the green apple on the blue plate. Cheers, "
+        "Tom",
+        "green apple on blue plate + orange on yellow plate, dont care which order",
+        "Hello! Could you put the green apple on the blue plate and the orange on the yellow plate, in any "
+        "order you find convenient? Many thanks."],
+    2: ["hi! put the red apple on the blue plate, the orange on the yellow plate n the green apple on the "
+        "pink plate. dont care what order u do it in. thanks!",
+        "Good morning, please place the green apple on the pink plate, the red apple on the blue plate & the "
+        "orange on the yellow plate, in whatever order you find convenient. Best, Sam",
+        "can u put green apple on pink plate + red apple on blue plate + orange on yellow plate? any order "
+        "is fine",
+        "Hey, the orange goes on the yellow plate, the green apple on the pink plate and the red apple on "
+        "the blue plate, in any order you find easiest. Ta!"],
+    3: ["hiya, carrot on the blue plate, orange on the yellow plate, green apple on the green plate n red "
+        "apple on the pink plate, dont care about the order. cheers",
+        "Hello, could u please place the red apple on the pink plate & the green apple on the green plate & "
+        "the orange on the yellow plate & the carrot on the blue plate? Thank you!",
+        "Hi! Please put the carrot on the blue plate, the orange on the yellow plate, the green apple on the "
+        "green plate and the red apple on the pink plate, in any order you find convenient. Thanks, Mia",
+        "ok so: red apple on pink plate + green apple on green plate + carrot on blue plate + orange on "
+        "yellow plate. order doesnt matter to me. thx"],
+    4: ["Hey! Please put the orange and the green apple on the yellow plate first. Once both are on there, "
+        "put the red apple and the carrot on the blue plate. Cheers, Ana",
+        "hey can u put the orange n the green apple on the yellow plate first, then the red apple n the "
+        "carrot on the blue plate? cheers",
+        "Sure thing! Start with the green apple and the orange on the yellow plate, and when both are on it, "
+        "move the carrot and the red apple to the blue plate.",
+        "First the green apple and the orange go on the yellow plate, and only after those two, the red "
+        "apple and the carrot go on the blue plate."],
+}
+
+# h109's development batch: written at the same time as VALID_H109, in its classes, read per sentence.
+DEV_H109: dict[int, list[str]] = {
+    1: ["hey, green apple on the blue plate n orange on the yellow plate pls",
+        "Hi, please put the green apple on the blue plate and the orange on the yellow plate. Thanks!",
+        "can u put the orange on the yellow plate & the green apple on the blue plate? dont care what "
+        "order. Cheers, Ana",
+        "orange on yellow plate + green apple on blue plate, in any order you find convenient",
+        "Hello! Put the green apple on the blue plate and the orange on the yellow plate please. Thank you "
+        "so much!",
+        "No problem! Put the orange on the yellow plate and the green apple on the blue plate, in whatever "
+        "order you find easiest."],
+    2: ["hi, put the green apple on the pink plate, the orange on the yellow plate n the red apple on the "
+        "blue plate. thx",
+        "red apple on blue plate + green apple on pink plate + orange on yellow plate, dont care what order",
+        "Hey! Could u place the orange on the yellow plate & the red apple on the blue plate & the green "
+        "apple on the pink plate? Thanks, Ben",
+        "Please put the green apple on the pink plate, the orange on the yellow plate and the red apple on "
+        "the blue plate, in any order you find convenient.",
+        "Good evening, the red apple goes on the blue plate, the green apple on the pink plate and the "
+        "orange on the yellow plate. any order u like. Cheers!",
+        "hiya, u can do it in any order: green apple on pink plate, red apple on blue plate, orange on "
+        "yellow plate. ta"],
+    3: ["hey, carrot on blue plate, orange on yellow plate, green apple on green plate & red apple on pink "
+        "plate. dont care what order. thx!",
+        "Hi! Could u put the red apple on the pink plate, the green apple on the green plate, the orange on "
+        "the yellow plate n the carrot on the blue plate? Thanks!",
+        "carrot on the blue plate + orange on the yellow plate + green apple on the green plate + red apple "
+        "on the pink plate pls",
+        "Hello, please place the carrot on the blue plate, the orange on the yellow plate, the green apple "
+        "on the green plate and the red apple on the pink plate, in any order you find convenient. "
+        "Regards, Kim",
+        "Of course! Put the orange on the yellow plate, the carrot on the blue plate, the red apple on the "
+        "pink plate and the green apple on the green plate, dont care which order.",
+        "hi there, u can go in any order: red apple on pink plate, carrot on blue plate, green apple on "
+        "green plate, orange on yellow plate. cheers, Jo"],
+    4: ["Hi, please put the green apple and the orange on the yellow plate first. After both are on it, put "
+        "the carrot and the red apple on the blue plate. Thanks!",
+        "hey put the green apple n the orange on the yellow plate first, then the carrot n the red apple on "
+        "the blue plate. thx",
+        "No problem! Please start with the green apple and the orange on the yellow plate, and when both "
+        "are on it, move the carrot and the red apple to the blue plate.",
+        "Put the orange and the green apple on the yellow plate, and only after those two, put the carrot "
+        "and the red apple on the blue plate.",
+        "green apple + orange on the yellow plate first, then carrot + red apple on the blue plate",
+        "Hello! First the green apple & the orange on the yellow plate. When both are on it, the red apple "
+        "& the carrot on the blue plate please. Thanks, Sam"],
+}
+
+# h109's second development batch: written after the rules for DEV_H109 and measured before any rule for it
+# (how far those rules carry), in the same classes with other words.
+DEV2_H109: dict[int, list[str]] = {
+    1: ["yo, pls put green apple on the blue plate n orange on the yellow plate, ty",
+        "Morning! Could u pop the orange onto the yellow plate & the green apple onto the blue plate? Much "
+        "appreciated.",
+        "Hey there! Green apple on the blue plate + orange on the yellow plate, whatever order u find "
+        "easiest. Thanks a lot!",
+        "Sure thing! Orange to the yellow plate and green apple to the blue plate, in any order you find "
+        "handy."],
+    2: ["hello again, can u move the red apple to the blue plate, the green apple to the pink plate n the "
+        "orange to the yellow plate? thanks in advance",
+        "Hi team, green apple on the pink plate & red apple on the blue plate & orange on the yellow plate. "
+        "Dont care what order. Best, Lee",
+        "Of course! Please put the orange on the yellow plate, the green apple on the pink plate and the red "
+        "apple on the blue plate in whichever order you find simplest.",
+        "hey! red apple on blue plate + orange on yellow plate + green apple on pink plate. u choose the "
+        "order. cheers"],
+    3: ["Good afternoon! Please put the carrot on the blue plate, the orange on the yellow plate, the green "
+        "apple on the green plate & the red apple on the pink plate. Kind regards, Jo",
+        "hi, can u put red apple on pink plate, green apple on green plate, orange on yellow plate n carrot "
+        "on blue plate? dont care about order. thx",
+        "Absolutely! The carrot goes on the blue plate, the orange on the yellow plate, the green apple on "
+        "the green plate and the red apple on the pink plate, in any order you find most convenient.",
+        "hey there, carrot + orange + green apple + red apple on the blue, yellow, green and pink plates "
+        "respectively. thanks!"],
+    4: ["Hi! Please put the green apple and the orange on the yellow plate first. Once they are both on it, "
+        "put the carrot and the red apple on the blue plate. Cheers!",
+        "hey, green apple n orange on the yellow plate first, then carrot n red apple on the blue plate pls. "
+        "ty",
+        "No worries! First the orange & the green apple on the yellow plate; when both are on it, the carrot "
+        "& the red apple on the blue plate.",
+        "Put the green apple and the orange on the yellow plate, then, only after those two, put the red "
+        "apple and the carrot on the blue plate. Thanks, Sam"],
+}

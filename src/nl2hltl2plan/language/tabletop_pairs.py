@@ -30,6 +30,7 @@ from nl2hltl2plan.language.grounding import camel_words
 from nl2hltl2plan.language.headings import answered
 from nl2hltl2plan.language.htt_build import build_htt
 from nl2hltl2plan.language.result import LanguageResult
+from nl2hltl2plan.language.tabletop_chat import chat_read
 from nl2hltl2plan.language.tabletop_counts import plate_counts_read, plates_said_alone, total_counts_read
 from nl2hltl2plan.language.tabletop_dialogue import dialogue_read, scenario_read
 from nl2hltl2plan.language.tabletop_fields import fields_read
@@ -172,7 +173,7 @@ class TabletopReader:
         one asked (`tabletop_order.robot_addressed`); a clause that looks back on the step before as
         "then" (`tabletop_order.turn_phrases_read`)."""
         kinds = {camel_words(t): _is_plate(t) for t in self.world.object_types()}
-        text = names_spelt(stops_read(lines_joined(lines, kinds)), kinds)
+        text = names_spelt(stops_read(chat_read(lines_joined(lines, kinds), kinds)), kinds)
         text = bracketed_list_opened(text, kinds)  # "sort fruit (green apple -> pink plate, ...)"
         text = fields_read(text, kinds)  # "Object: ... Target: ...", "as follows:", "### Phase B (after A)"
         text = answered(text)  # "Q: Where does the green apple go? A: On the blue plate."

@@ -1,0 +1,111 @@
+"""The tabletop reader's chat forms (issue 28, h109): "n" / "&" / "+" for "and", "u" for "you", "in any
+order you find convenient", greetings, replies, thanks and sign-offs around the request, and "when both
+are on it"; with the near misses each rule must still refuse or leave as written."""
+
+from __future__ import annotations
+
+import pytest
+
+from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.language.tabletop_chat import chat_read
+from nl2hltl2plan.language.task_specs import transitive_closure
+from nl2hltl2plan.language.translate import translate
+from nl2hltl2plan.worlds.tabletop_world import tabletop_world
+
+WORLD = tabletop_world()
+KINDS = {"orange": False, "carrot": False, "blue plate": True, "yellow plate": True}
+_TWO = ([("Carrot", "BluePlate"), ("Orange", "YellowPlate")], [])
+_FIRST = [("GreenApple", "YellowPlate"), ("Orange", "YellowPlate")]
+_THEN = [("Carrot", "BluePlate"), ("RedApple", "BluePlate")]
+_ORDERED = (sorted(_FIRST + _THEN), sorted((a, b) for a in _FIRST for b in _THEN))
+
+
+def _reading(text: str) -> tuple[list, list] | None:
+    """(object, plate) pairs and the closed order by pair; None on a refusal or a partial reading."""
+    try:
+        r = translate(text, WORLD, build=False)
+    except HTTError:
+        return None
+    if r.partial:
+        return None
+    key = {t.id: (t.object[0], t.receptacle[0]) for t in r.tasks}
+    closure = transitive_closure(r.before, list(key))
+    return sorted(key.values()), sorted((key[a], key[b]) for a, b in closure)
+
+
+@pytest.mark.parametrize(
+    ("text", "read"),
+    [
+        ("the carrot n the orange", "the carrot and the orange"),
+        ("carrot & orange", "carrot and orange"),
+        ("carrot+orange", "carrot+orange"),  # "+" only between spaced words here
+        ("carrot + orange", "carrot and orange"),
+        ("can u put it", "can you put it"),
+        ("an orange", "an orange"),  # "n" inside a word stays
+        ("in any order you find most convenient", "in any order you like"),
+        ("whatever order u find easiest", "whatever order you like"),
+        ("Hi there, put the carrot down.", "put the carrot down."),
+        ("Hi! Sure thing! Put it down.", "Put it down."),
+        ("Put it down. Thank you so much!", "Put it down."),
+        ("Put it down. Cheers, Ana", "Put it down."),
+    ],
+)
+def test_chat_forms_read_as_plain_words(text, read):
+    assert chat_read(text, KINDS) == read
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Hey robot put it down.",  # a greeting that goes on is left as written
+        "Put it down. Thanks, but not the carrot.",  # thanks with more to say stays
+        "Put it down. Cheers, Orange",  # a sign-off's name that names a thing stays
+        "Put it down in any order you find the carrot.",  # "find" that is no leave stays
+        "when it is on it, put it down",  # only "both" / "they" / "all" ... are on it
+        "Hey, when you're done, put it down.",  # a greeting before a clause that waits on something stays
+        "No problem! Once that's done, put it down.",
+    ],
+)
+def test_near_misses_left_as_written(text):
+    assert chat_read(text, KINDS) == text
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "hey, can u put the carrot on the blue plate n the orange on the yellow plate? thx",
+        "Hello! Put the orange on the yellow plate & the carrot on the blue plate, dont care what order. "
+        "Cheers, Ana",
+        "carrot on the blue plate + orange on the yellow plate, in any order you find convenient",
+        "Good morning, please put the carrot on the blue plate and the orange on the yellow plate. Thanks!",
+    ],
+)
+def test_chat_wordings_read(text):
+    assert _reading(text) == _TWO
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Hi, please put the green apple and the orange on the yellow plate first. After both are on it, put "
+        "the carrot and the red apple on the blue plate. Thanks!",
+        "No problem! Start with the green apple and the orange on the yellow plate, and when both are on it, "
+        "move the carrot and the red apple to the blue plate.",
+    ],
+)
+def test_back_references_after_a_greeting_or_reply_keep_the_order(text):
+    assert _reading(text) == _ORDERED
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Hi, put the orange n the carrot on the blue plate. Thanks, but not the red apple.",
+        "Hello! Don't put the orange on the blue plate. Thanks!",
+        "No problem! Don't put the orange on the blue plate.",
+        "Put the orange on the blue plate in any order you find the red apple.",
+        "Put the green apple on the yellow plate, and when it is on it, move the carrot to the blue plate.",
+    ],
+)
+def test_near_misses_still_refused(text):
+    assert _reading(text) is None
