@@ -70,6 +70,7 @@ _GOES = re.compile(
 # a placement's place after its thing ("the carrot on the blue plate"), and order words a list may not hold
 _PLACED = re.compile(rf"\s(?:{_PREP})\s", re.I)
 _ORDER_WORD = re.compile(r"\b(?:first|then|before|after|last|next|finally|afterwards)\b", re.I)
+_ITEM_GOES = re.compile(rf"\s(?:goes|go|should go|belongs?|can go)(?=\s{_PREP}\s)", re.I)
 # what may come before a thing's name in a question of its name alone ("Carrot?", "And the carrot?" is a
 # follow-up)
 _NAME_ONLY = re.compile(rf"(?:{_DET})?", re.I)
@@ -372,7 +373,8 @@ def _layout(answer: str, said: str) -> list[_Clause]:
         return [_Clause(answer, None)]
     if _ORDER_WORD.search(answer):
         raise HTTError(f"the answer {answer!r} to {said!r} says an order inside a list; ask 'Order?' of it")
-    items = [item for item in re.split(r"\s*[,;]\s*(?:and\s+)?", answer) if item]
+    split = re.split(r"\s*[,;]\s*(?:and\s+)?", answer)
+    items = [_ITEM_GOES.sub("", item) for item in split if item]  # "the mug goes in the sink"
     for item in items:
         if not (m := _PLACED.search(item)) or m.start() == 0:
             raise HTTError(f"the answer {item!r} to {said!r} names no place and thing; say what goes where")
