@@ -5,7 +5,12 @@ every world's reader may apply it (`headings` re-exports it).
 reads as "put the mug in the sink, then put the apple in the fridge". Each answer fills its question's
 gap: where an object goes, what goes somewhere, what to do with an object, what the task is (the answer
 is an instruction), whether there is more, and the order. A follow-up ("And the apple?", "What about
-in the sink?") asks the question before it again with its new object or place. The order answer names
+in the sink?") asks the question before it again with its new object or place. A thing's name asked
+alone is where it goes, where the answer is a place's name alone ("Carrot? Blue plate."; a place is a
+receptacle of `lexicon.txt` or a `place_type` of `questions.txt`). "What goes where?" is answered by a
+list of placements, each put. Steps asked in turn ("What first?", "Then?", "What next?", "Last?") are
+chained in that order, each answer a placement or an instruction; a "then" after one task asked
+otherwise follows that task. The order answer names
 the tasks by their objects ("mug first", "red before blue", "the apple, then the mug"), or frees the
 order ("any", "doesn't matter"; `questions.txt` lists these phrases). Names that match no object asked
 about (a colour within a group: "Where do the blocks go? ... red before blue") are left to the reader as
@@ -13,7 +18,9 @@ a sentence of their own.
 
 Anything else is refused by name (HTTError): a question no frame covers, a question with no answer or an
 answer with no question, an answer that says nothing certain ("not sure"), an order answer that names
-one task and not another ("the mug before the bowl" where no bowl was asked about).
+one task and not another ("the mug before the bowl" where no bowl was asked about), a name asked alone
+that is not a thing answered by a place ("Blue plate? Carrot."), a list item or step with no place, an
+order inside a list, a step whose place in the order is unclear, steps and an order answer together.
 
 >>> answered("Q: Where does the mug go? A: In the sink. Q: And the apple? A: The fridge.")
 'put the mug in the sink. put the apple in the fridge.'
