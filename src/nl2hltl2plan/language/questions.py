@@ -365,7 +365,7 @@ def _add_step(clauses: list[_Clause], step: str, clause: _Clause, said: str) -> 
         raise HTTError(f"the step {said!r} comes after a task or a last step; say where it goes in the order")
     if step == "first" and clauses:
         raise HTTError(f"the step {said!r} comes after tasks already asked; say which goes first")
-    if step != "first" and not steps:
+    if step != "first" and not steps and clauses:  # with nothing before, "What next?" opens the steps
         if len(clauses) != 1:
             raise HTTError(f"the step {said!r} follows {len(clauses)} tasks, not one; say what comes before")
         clauses[0].step = True
