@@ -99,6 +99,84 @@ def test_what_is_unclear_is_refused_by_name(text, named):
     assert named in str(refused.value)
 
 
+@pytest.mark.parametrize(
+    "text, stated",
+    [
+        (  # a thing asked alone, its place answered alone: the tabletop, household and handover names
+            "Q: Carrot? A: Blue plate. Q: Orange? A: On the yellow plate.",
+            "put the carrot in blue plate. put the orange on the yellow plate.",
+        ),
+        ("Q: The mug? A: The sink.", "put the mug in the sink."),
+        ("Q: Red block? A: Region G.", "put the red block in region G."),
+        (  # "What goes where?": a list of placements, each put (a verb "goes" dropped)
+            "Q: What goes where? A: Green apple on pink plate, orange on yellow plate.",
+            "put green apple on pink plate. put orange on yellow plate.",
+        ),
+        (
+            "Q: Where does everything go? A: The mug goes in the sink; the apple in the fridge.",
+            "put the mug in the sink. put the apple in the fridge.",
+        ),
+        (  # steps asked in turn: each answer a step, chained in the order asked
+            "Q: What comes first? A: The green apple and the orange on the yellow plate. "
+            "Q: Then? A: The carrot and the red apple on the blue plate.",
+            "put the green apple and the orange on the yellow plate, then put the carrot and the red apple "
+            "on the blue plate.",
+        ),
+        (  # "then" after one task asked otherwise follows it; an instruction answer keeps its verb
+            "Q: Where does the mug go? A: In the sink. Q: After that? A: Heat the apple. "
+            "Q: Last? A: The egg in the fridge.",
+            "put the mug in the sink, then heat the apple, then put the egg in the fridge.",
+        ),
+        (  # a constraint answered to "anything else" stays a sentence for the reader
+            "Q: What first? A: The red block to region G. Q: What next? A: The blue block to region H. "
+            "Q: Anything else? A: Nothing goes on F, G or H meanwhile.",
+            "put the red block to region G, then put the blue block to region H. "
+            "nothing goes on F, G or H meanwhile.",
+        ),
+        ("Q: What next? A: The egg in the fridge.", "put the egg in the fridge."),  # nothing before it
+        (  # "which first" answered by a name alone is still the order question
+            "Q: Where does the mug go? A: sink. Q: And the apple? A: fridge. Q: Which first? A: The apple.",
+            "put the apple in fridge, then put the mug in sink.",
+        ),
+    ],
+)
+def test_new_forms_state_their_instruction(text, stated):
+    assert answered(text) == stated
+
+
+@pytest.mark.parametrize(
+    "text, named",
+    [
+        ("Q: Blue plate? A: Carrot.", "'Blue plate?' is a name alone"),  # a place asked: not a thing
+        ("Q: Sink? A: Mug.", "'Sink?' is a name alone"),
+        ("Q: Region G? A: The red block.", "'Region G?' is a name alone"),
+        ("Q: Carrot? A: Yes.", "'Carrot?' is a name alone"),
+        ("Q: What goes where? A: The mug, the apple.", "'the mug'"),
+        ("Q: What goes where? A: mug in the sink, then apple in the fridge", "an order inside a list"),
+        ("Q: What first? A: The carrot on the blue plate. Q: What next? A: The orange.", "'the orange'"),
+        (
+            "Q: Where does the mug go? A: sink. Q: And the apple? A: fridge. "
+            "Q: Then? A: the egg in the fridge.",
+            "follows 2 tasks",
+        ),
+        (
+            "Q: What first? A: The mug in the sink. Q: Anything else? A: the apple in the fridge. "
+            "Q: Then? A: the egg in the fridge.",
+            "comes after a task",
+        ),
+        ("Q: Where does the mug go? A: sink. Q: What first? A: the apple in the fridge.", "after tasks"),
+        (
+            "Q: What first? A: The mug in the sink. Q: Then? A: The apple in the fridge. Q: Order? A: any",
+            "said twice",
+        ),
+    ],
+)
+def test_new_forms_refuse_what_is_unclear(text, named):
+    with pytest.raises(HTTError) as refused:
+        answered(text)
+    assert named in str(refused.value)
+
+
 @pytest.fixture(scope="module")
 def kitchen():
     from nl2hltl2plan.worlds import load_world
@@ -140,3 +218,13 @@ def test_the_h108_user_set_reads_nothing_wrong(name):
     outcomes = [trust_sets.outcome(gt) for gt in trust_sets.load(name)]
     assert [why for what, why in outcomes if what == "wrong"] == []
     assert sum(what == "converted" for what, _ in outcomes) >= 0.9 * len(outcomes)
+
+
+@pytest.mark.data
+def test_the_household_reader_reads_the_steps_in_turn(kitchen):
+    text = "Q: What first? A: The mug in the sink. Q: And then? A: The apple in the fridge. "
+    text += "Q: Egg? A: Fridge."  # a thing asked alone after the steps: not ordered
+    assert reading(text, kitchen) == (
+        ["place Mug -> SinkBasin", "place Apple -> Fridge", "place Egg -> Fridge"],
+        [("A", "B")],
+    )

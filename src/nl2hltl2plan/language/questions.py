@@ -5,7 +5,12 @@ every world's reader may apply it (`headings` re-exports it).
 reads as "put the mug in the sink, then put the apple in the fridge". Each answer fills its question's
 gap: where an object goes, what goes somewhere, what to do with an object, what the task is (the answer
 is an instruction), whether there is more, and the order. A follow-up ("And the apple?", "What about
-in the sink?") asks the question before it again with its new object or place. The order answer names
+in the sink?") asks the question before it again with its new object or place. A thing's name asked
+alone is where it goes, where the answer is a place's name alone ("Carrot? Blue plate."; a place is a
+receptacle of `lexicon.txt` or a `place_type` of `questions.txt`). "What goes where?" is answered by a
+list of placements, each put. Steps asked in turn ("What first?", "Then?", "What next?", "Last?") are
+chained in that order, each answer a placement or an instruction; a "then" after one task asked
+otherwise follows that task. The order answer names
 the tasks by their objects ("mug first", "red before blue", "the apple, then the mug"), or frees the
 order ("any", "doesn't matter"; `questions.txt` lists these phrases). Names that match no object asked
 about (a colour within a group: "Where do the blocks go? ... red before blue") are left to the reader as
@@ -13,7 +18,9 @@ a sentence of their own.
 
 Anything else is refused by name (HTTError): a question no frame covers, a question with no answer or an
 answer with no question, an answer that says nothing certain ("not sure"), an order answer that names
-one task and not another ("the mug before the bowl" where no bowl was asked about).
+one task and not another ("the mug before the bowl" where no bowl was asked about), a name asked alone
+that is not a thing answered by a place ("Blue plate? Carrot."), a list item or step with no place, an
+order inside a list, a step whose place in the order is unclear, steps and an order answer together.
 
 >>> answered("Q: Where does the mug go? A: In the sink. Q: And the apple? A: The fridge.")
 'put the mug in the sink. put the apple in the fridge.'
@@ -28,9 +35,11 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 from functools import cache
+from importlib import resources
 
 from nl2hltl2plan.errors import HTTError
-from nl2hltl2plan.language.content_words import categories, phrase_list_pattern
+from nl2hltl2plan.language.content_words import categories, phrase_list_pattern, phrase_words
+from nl2hltl2plan.language.grounding import find_mentions
 
 # "Q:", "Question 2:", "A:", "Answer:"; a label opens the text or follows a sentence's end or a blank
 _LABEL = re.compile(r"(?:^|(?<=[\s.!?;]))(?P<who>q|question|a|answer)\s*\d*\s*:\s*", re.I)
@@ -65,6 +74,13 @@ _PRONOUN = re.compile(r"\b(?:it|them|that one|this one)\b", re.I)
 _GOES = re.compile(
     r"^(?:it|they|that|this|those|these)(?:'s| is| are)? (?:goes|go|should go|belongs?|can go)\s", re.I
 )
+# a placement's place after its thing ("the carrot on the blue plate"), and order words a list may not hold
+_PLACED = re.compile(rf"\s(?:{_PREP})\s", re.I)
+_ORDER_WORD = re.compile(r"\b(?:first|then|before|after|last|next|finally|afterwards)\b", re.I)
+_ITEM_GOES = re.compile(rf"\s(?:goes|go|should go|belongs?|can go)(?=\s{_PREP}\s)", re.I)
+# what may come before a thing's name in a question of its name alone ("Carrot?", "And the carrot?" is a
+# follow-up)
+_NAME_ONLY = re.compile(rf"(?:{_DET})?", re.I)
 _ORDER_SAID = re.compile(r"\b(?:first|last|then|before|after)\b|,", re.I)
 _CHAIN = re.compile(r"\s*(?:,?\s*(?:and )?then\b|,?\s*followed by\b|\bbefore\b|->|>|,|;)\s*", re.I)
 _NO_THEN = re.compile(r"^(?:no|nope|nah)\s*[,.;:!-]\s*", re.I)
@@ -87,6 +103,7 @@ class _Frame:
 class _Clause:
     text: str
     obj: str | None  # the object it is about, for the order answer's names
+    step: bool = False  # one of the steps asked in turn ("What first?", "Then?"), ordered as asked
 
 
 def answered(text: str) -> str:
@@ -106,13 +123,19 @@ def answered(text: str) -> str:
             raise HTTError(f"the answer {question!r} answers no question (write 'Q: ... A: ...')")
         if answer[0] != "a" or not _bare(answer[1]):
             raise HTTError(f"the question {question!r} has no answer (write 'Q: ... A: ...')")
-        said = _bare(question)
+        said, reply = _bare(question), _bare(answer[1])
+        if step := _step_asked(said, reply):
+            _add_step(clauses, step, _step_clause(reply, question), question)
+            continue
         if _is(said, "order", "order_matters", "order_free", "order_either"):
-            order = _order_answer(said, _bare(answer[1]), order)
+            order = _order_answer(said, reply, order)
             if re.search(r"\bfirst\b", said, re.I) and not _ORDER_SAID.search(order):
                 order += " first"  # "Which first? The mug."
             continue
-        frame, clause = _answer_clause(said, _bare(answer[1]), frame, question)
+        if _is(said, "layout"):
+            clauses.extend(_layout(reply, question))
+            continue
+        frame, clause = _answer_clause(said, reply, frame, question)
         if clause is not None:
             clauses.append(clause)
     return _stated(clauses, order)
@@ -162,6 +185,15 @@ def _answer_clause(
         if frame.kind == "do":
             return frame, _done_with(gap, answer, said)
         return frame, _placed(gap, answer, frame, said)
+    if _bare_names(question, answer):  # "Carrot? Blue plate.": a thing asked, its place answered
+        frame = _Frame("where")
+        thing = question if re.match(_DET, question, re.I) else f"the {question}"
+        return frame, _placed(thing, answer, frame, said)
+    if _name_alone(question):
+        raise HTTError(
+            f"the question {said!r} is a name alone, read only as a thing whose place the answer names "
+            f"alone ('Carrot? Blue plate.'), and {answer!r} is not that; say where what goes"
+        )
     raise HTTError(
         f"the question {said!r} is not one the reader knows (ask where something goes, what goes "
         "somewhere, what to do with something, or the order)"
@@ -249,6 +281,11 @@ def _stated(clauses: list[_Clause], order: str | None) -> str:
     """The clauses as sentences, in the order the answer gives, or freed."""
     if not clauses:
         raise HTTError("nothing to do: the answers ask no task")
+    if any(c.step for c in clauses):
+        if order is not None:
+            raise HTTError(f"the order is said twice, by the steps asked in turn and by {order!r}; once")
+        chain = ", then ".join(c.text.rstrip(" .") for c in clauses if c.step) + "."
+        return " ".join([chain, *(c.text.rstrip(" .") + "." for c in clauses if not c.step)])
     sentences = [c.text.rstrip(" .") + "." for c in clauses]
     if order is None:
         return " ".join(sentences)
@@ -291,3 +328,93 @@ def _matching(name: str, clauses: list[_Clause]) -> int | None:
     words = _head(name) - {"last"}
     hits = [k for k, c in enumerate(clauses) if words <= _head(c.obj if c.obj is not None else c.text)]
     return hits[0] if len(hits) == 1 else None
+
+
+def _step_asked(question: str, answer: str) -> str | None:
+    """"first", "then" or "last" for a question that asks a step in turn ("What first?", "And then?",
+    "What next?", "Last?"); None for any other. "Which first?" answered by a name alone ("The mug.") is
+    the order question, answered by a placement ("The mug in the sink.") a step."""
+    asked_task = _is(question, "task") and re.search(r"\b(?:next|then|after that|afterwards)\b", question)
+    if _is(question, "step_then") or asked_task:
+        return "then"
+    if _is(question, "step_last"):
+        return "last"
+    if _is(question, "step_first") and (_is_instruction(answer) or _PLACED.search(answer)):
+        return "first"
+    return None
+
+
+def _step_clause(answer: str, said: str) -> _Clause:
+    """The step an answer states: an instruction as it is, a placement ("The carrot on the plate") put."""
+    answer = _without_yes(answer)
+    if _is(answer, "unclear"):
+        raise HTTError(f"the answer {answer!r} to {said!r} says nothing certain; say what is meant")
+    if _is_instruction(answer):
+        return _Clause(answer, None, step=True)
+    if _PLACED.search(answer) and not _ORDER_WORD.search(answer):
+        return _Clause(f"put {answer}", None, step=True)
+    raise HTTError(f"the answer {answer!r} to the step {said!r} names no place; say what goes where")
+
+
+def _add_step(clauses: list[_Clause], step: str, clause: _Clause, said: str) -> None:
+    """Add a step asked in turn. "First" opens the steps; "then" (or "last") follows the step before it,
+    or the one task asked before it ("Where does the mug go? ... Then? ..."); "last" ends them. A step
+    whose place in the order is unclear is refused by name."""
+    steps = [c for c in clauses if c.step]
+    if steps and (clauses[-1] is not steps[-1] or steps[-1].obj == "last"):
+        raise HTTError(f"the step {said!r} comes after a task or a last step; say where it goes in the order")
+    if step == "first" and clauses:
+        raise HTTError(f"the step {said!r} comes after tasks already asked; say which goes first")
+    if step != "first" and not steps and clauses:  # with nothing before, "What next?" opens the steps
+        if len(clauses) != 1:
+            raise HTTError(f"the step {said!r} follows {len(clauses)} tasks, not one; say what comes before")
+        clauses[0].step = True
+    clause.obj = "last" if step == "last" else None
+    clauses.append(clause)
+
+
+def _layout(answer: str, said: str) -> list[_Clause]:
+    """The answer to "What goes where?": an instruction, or a list of placements, each put."""
+    answer = _without_yes(answer)
+    if _is_instruction(answer):
+        return [_Clause(answer, None)]
+    if _ORDER_WORD.search(answer):
+        raise HTTError(f"the answer {answer!r} to {said!r} says an order inside a list; ask 'Order?' of it")
+    split = re.split(r"\s*[,;]\s*(?:and\s+)?", answer)
+    items = [_ITEM_GOES.sub("", item) for item in split if item]  # "the mug goes in the sink"
+    for item in items:
+        if not (m := _PLACED.search(item)) or m.start() == 0:
+            raise HTTError(f"the answer {item!r} to {said!r} names no place and thing; say what goes where")
+    return [_Clause(f"put {item}", _PLACED.split(item)[0]) for item in items]
+
+
+def _bare_names(question: str, answer: str) -> bool:
+    """Is the question a thing's name alone and the answer a place's name alone ("Carrot? Blue plate.")?
+    A place is a receptacle of the floor plans, a coloured plate or a region (`_place_types`)."""
+    asked, told = find_mentions(question), find_mentions(answer)
+    if not _name_alone(question) or len(told) != 1 or asked[0].entry.generic:
+        return False
+    place = re.fullmatch(rf"(?:{_PREP}\s)?(?:{_DET})?", answer[: told[0].char_start], re.I)
+    return bool(
+        place and not answer[told[0].char_end :]
+        and asked[0].entry.types[0] not in _place_types()
+        and told[0].entry.types[0] in _place_types()
+    )
+
+
+def _name_alone(question: str) -> bool:
+    """Is the question one name of the lexicon alone, after a determiner at most ("Carrot?", "The mug?")?"""
+    names = find_mentions(question)
+    return len(names) == 1 and names[0].char_end == len(question) and bool(
+        _NAME_ONLY.fullmatch(question[: names[0].char_start])
+    )
+
+
+@cache
+def _place_types() -> frozenset[str]:
+    """The types a bare answer may name as a place: those of `lexicon.txt`'s receptacles section, and the
+    `place_type` words of `questions.txt` (the tabletop's coloured plates, the handover's regions)."""
+    text = resources.files("nl2hltl2plan.language").joinpath("lexicon.txt").read_text()
+    section = text.split("# --- receptacles", 1)[1].split("\n# ---", 1)[0]
+    types = {t for line in section.splitlines()[1:] if " : " in line for t in line.split(" : ")[1].split()}
+    return frozenset(types | phrase_words("questions.txt", "place_type"))
