@@ -227,6 +227,8 @@ def test_the_opposite_side_is_resolved_against_where_the_blocks_start():
         # a scene said without the rule it gives, a heading that forbids what is not a place
         ("Move the three blocks to the opposite side. Regions H, I and J are reserved.", "reserved"),
         ("Move the three blocks to the opposite side. Forbidden: the red block.", "forbidden"),
+        # a place that names a block is named as it was said, never with the reader's block marker
+        ("Move the three blocks to the opposite side but leave the red block where it is.", "'where it is'"),
     ],
 )
 def test_what_the_rules_cannot_read_is_refused_by_name(text, named):

@@ -372,12 +372,19 @@ def _distributed(clauses: list[Clause], notes: list[str]) -> list[Clause]:
 
 def _refuse_leftovers(m: Marked, sentence: str) -> None:
     unused = [m.block_text[int(k)] for k in re.findall(r"\bB(\d+)\b", m.text)]
-    unused += [m.places[int(k)].text for k in re.findall(r"\bP(\d+)\b", m.text)]
+    unused += [_unmarked(m.places[int(k)].text, m) for k in re.findall(r"\bP(\d+)\b", m.text)]
     words = [w for w in re.findall(r"[A-Za-z']+\d*|\d+", m.text) if w not in FILLER]
     words = [w for w in words if not re.fullmatch(r"[BPG]\d+|A", w)]
     if unused or words:
         what = ", ".join(repr(x) for x in unused + words)
         raise HTTError(f"the handover parser cannot use {what} in {sentence.strip()!r}; rephrase it")
+
+
+def _unmarked(text: str, m: Marked) -> str:
+    """A place's words with the blocks marked in them written as they were said ("where it is", never the
+    marker "where  B2  is")."""
+    said = re.sub(r"\bB(\d+)\b", lambda b: m.block_text[int(b[1])], text)
+    return " ".join(said.split())
 
 
 def _guard(
