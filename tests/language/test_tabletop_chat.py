@@ -5,14 +5,10 @@ are on it"; with the near misses each rule must still refuse or leave as written
 from __future__ import annotations
 
 import pytest
+from tabletop_readings import pairs_read as _reading
 
-from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.tabletop_chat import chat_read
-from nl2hltl2plan.language.task_specs import transitive_closure
-from nl2hltl2plan.language.translate import translate
-from nl2hltl2plan.worlds.tabletop_world import tabletop_world
 
-WORLD = tabletop_world()
 KINDS = {"orange": False, "carrot": False, "blue plate": True, "yellow plate": True}
 _TWO = ([("Carrot", "BluePlate"), ("Orange", "YellowPlate")], [])
 _FIRST = [("GreenApple", "YellowPlate"), ("Orange", "YellowPlate")]
@@ -20,17 +16,6 @@ _THEN = [("Carrot", "BluePlate"), ("RedApple", "BluePlate")]
 _ORDERED = (sorted(_FIRST + _THEN), sorted((a, b) for a in _FIRST for b in _THEN))
 
 
-def _reading(text: str) -> tuple[list, list] | None:
-    """(object, plate) pairs and the closed order by pair; None on a refusal or a partial reading."""
-    try:
-        r = translate(text, WORLD, build=False)
-    except HTTError:
-        return None
-    if r.partial:
-        return None
-    key = {t.id: (t.object[0], t.receptacle[0]) for t in r.tasks}
-    closure = transitive_closure(r.before, list(key))
-    return sorted(key.values()), sorted((key[a], key[b]) for a, b in closure)
 
 
 @pytest.mark.parametrize(

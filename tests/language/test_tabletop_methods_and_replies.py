@@ -6,14 +6,10 @@ each rule keeps."""
 from __future__ import annotations
 
 import pytest
+from tabletop_readings import pairs_read as _reading
 
-from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.tabletop_fields import fields_read
-from nl2hltl2plan.language.task_specs import transitive_closure
-from nl2hltl2plan.language.translate import translate
-from nl2hltl2plan.worlds.tabletop_world import tabletop_world
 
-WORLD = tabletop_world()
 _TWO = ([("Carrot", "BluePlate"), ("Orange", "YellowPlate")], [])
 _ORDERED = (
     [
@@ -30,17 +26,6 @@ _ORDERED = (
 )
 
 
-def _reading(text: str) -> tuple[list, list] | None:
-    """(object, plate) pairs and the closed order by pair; None on a refusal or a partial reading."""
-    try:
-        r = translate(text, WORLD, build=False)
-    except HTTError:
-        return None
-    if r.partial:
-        return None
-    key = {t.id: (t.object[0], t.receptacle[0]) for t in r.tasks}
-    closure = transitive_closure(r.before, list(key))
-    return sorted(key.values()), sorted((key[a], key[b]) for a, b in closure)
 
 
 @pytest.mark.parametrize(

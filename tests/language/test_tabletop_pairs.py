@@ -4,28 +4,16 @@ plate paired whichever comes first, order only from "first ... then", and refusa
 from __future__ import annotations
 
 import pytest
+from tabletop_readings import WORLD
+from tabletop_readings import pairs_read as _reading
 
 from nl2hltl2plan.errors import HTTError, WorldError
 from nl2hltl2plan.language.tabletop_pairs import read_pairs
-from nl2hltl2plan.language.task_specs import transitive_closure
 from nl2hltl2plan.language.translate import translate
-from nl2hltl2plan.worlds.tabletop_world import tabletop_world
 
-WORLD = tabletop_world()
 TYPES = set(WORLD.object_types())
 
 
-def _reading(text: str) -> tuple[list, list] | None:
-    """(object, plate) pairs and the closed order by pair, as translate gives them; None on a refusal."""
-    try:
-        r = translate(text, WORLD, build=False)
-    except HTTError:
-        return None
-    if r.partial:
-        return None
-    key = {t.id: (t.object[0], t.receptacle[0]) for t in r.tasks}
-    closure = transitive_closure(r.before, list(key))
-    return sorted(key.values()), sorted((key[a], key[b]) for a, b in closure)
 
 
 @pytest.mark.parametrize(
