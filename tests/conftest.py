@@ -28,44 +28,7 @@ os.environ.setdefault("MPLCONFIGDIR", os.path.join(_user_cache, "matplotlib"))
 os.environ["XDG_CACHE_HOME"] = tempfile.mkdtemp(prefix="nl2hltl2plan-test-cache-")
 
 
-# Test modules that start first: those waiting on a slow start (Ray, the web app's server, Chromium)
-# and those holding the suite's longest tests (`--durations=30`). xdist's worksteal hands each worker a
-# contiguous half of the collection and steals from the tail of a queue, so what is collected last runs
-# last; these modules, collected late (planning, suites, web, worlds), left one worker finishing them
-# while the other idled (about 20 s of a 105 s run, results/reliability/test_suite_time.md). Run first,
-# the other worker meanwhile takes the many short tests, and the run ends on short tests of either
-# queue. Modules with a test marked `slow` start first too; a path not collected is ignored.
-_START_FIRST = (
-    "tests/suites/test_ray_engine.py",
-    "tests/web/test_browser.py",
-    "tests/web/test_api.py",
-    "tests/planning/test_random_demo_plans.py",
-    "tests/planning/test_specs_and_agreement.py",
-    "tests/language/test_measure.py",
-    "tests/worlds/test_worlds_cli_pictures.py",
-    "tests/planning/test_determinism.py",
-    "tests/planning/test_alfred_instances.py",
-    "tests/language/test_pipeline_cli.py",
-    "tests/web/test_load.py",
-)
-
-
-def _start_slow_modules_first(items: list[pytest.Item]) -> None:
-    """Stable reordering by whole modules, so module-scoped fixtures are still set up once."""
-    slow_modules = {item.nodeid.split("::")[0] for item in items if item.get_closest_marker("slow")}
-    rank = {path: i for i, path in enumerate(_START_FIRST)}
-
-    def key(item: pytest.Item) -> int:
-        module = item.nodeid.split("::")[0]
-        if module in rank:
-            return rank[module]
-        return len(rank) if module in slow_modules else len(rank) + 1
-
-    items.sort(key=key)
-
-
 def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
-    _start_slow_modules_first(items)
     if data_dir(required=False) is not None:
         return
     skip = pytest.mark.skip(reason="needs ../shared/data (set NL2HLTL2PLAN_DATA)")
