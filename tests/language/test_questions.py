@@ -8,6 +8,7 @@ import sys
 from pathlib import Path
 
 import pytest
+from household_readings import reading
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.headings import answered
@@ -182,12 +183,6 @@ def kitchen():
     from nl2hltl2plan.worlds import load_world
 
     return load_world("FloorPlan1")
-
-
-def reading(text: str, world) -> tuple[list[str], list[tuple[str, str]]]:
-    res = translate(text, world, build=False, actions="none")
-    assert not res.partial, res.unparsed
-    return [t.summary() for t in res.tasks], res.before
 
 
 @pytest.mark.data

@@ -6,6 +6,7 @@ replaces what it corrects; what is unclear is refused by name; nothing is read h
 from __future__ import annotations
 
 import pytest
+from household_readings import reading
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.translate import translate
@@ -16,12 +17,6 @@ def kitchen():
     from nl2hltl2plan.worlds import load_world
 
     return load_world("FloorPlan1")
-
-
-def reading(text: str, world) -> tuple[list[str], list[tuple[str, str]]]:
-    res = translate(text, world, build=False, actions="none")
-    assert not res.partial, res.unparsed
-    return [t.summary() for t in res.tasks], res.before
 
 
 MUG_CABINET, APPLE_FRIDGE = "place Mug -> Cabinet", "place Apple -> Fridge"
