@@ -132,6 +132,23 @@ def test_plan_json_lists_the_constraints_and_a_bare_negation_has_nothing_to_do(c
     assert "'never' (negation)" in capsys.readouterr().err
 
 
+def test_a_negation_typed_without_its_apostrophe_is_read_as_with_it(capsys):
+    # "dont" is read as "don't" by the words' accounting (`grammar.everyday`), so the constraint read
+    # from "dont ..." must be found there too, and the other bare forms are cues of their own
+    for bare, written in (("dont", "don't"), ("shouldnt", "shouldn't"), ("mustnt", "mustn't")):
+        said = {}
+        for cue in (bare, written):
+            text = f"put the plates in the lower rack but you {cue} open the fridge"
+            assert main(["plan", text, "--world", "demo", "--json"]) == 0, text
+            out = json.loads(capsys.readouterr().out)
+            forbidden = [c.split(": ", 1)[1] for c in out["constraints"]]
+            said[cue] = ([t["object"] for t in out["tasks"]], forbidden)
+        assert said[bare] == said[written] == ([["Plate"]], ['G!"open(Fridge)"']), said
+    assert read("put the mug in the sink but dont put it in the microwave")[1] == [
+        ("dont put it in the microwave", ["put(Mug,Microwave)"], "")
+    ]
+
+
 @needs_data
 def test_a_constraint_can_make_the_plan_costlier():
     from nl2hltl2plan.worlds import load_world

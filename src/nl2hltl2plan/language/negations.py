@@ -56,6 +56,12 @@ CUES = {
     "won't",
     "avoid",
     "without",
+    # typed without the apostrophe (`grammar.everyday` reads them as the contractions)
+    "doesnt",
+    "mustnt",
+    "shouldnt",
+    "cant",
+    "wont",
 }
 LEAD = {"do", "does", "please", "you", "must", "should", "will", "and", "but", "or", "so", "just"}
 FILLER = {"do", "to", "ever", "you", "please", "be", "at", "all", "go", "the", "a", "an", "any"}
