@@ -149,6 +149,24 @@ def test_a_negation_typed_without_its_apostrophe_is_read_as_with_it(capsys):
     ]
 
 
+def test_an_it_after_a_negated_clause_is_the_thing_that_clause_named():
+    # the negated clause leaves the text the task parser reads, so its thing goes back into the "it"
+    for text in (
+        "dont put the mug in the sink, put it in the fridge",
+        "Don't put the mug in the sink. Put it in the fridge.",
+        "never put the mug in the sink, put it in the fridge instead",
+    ):
+        rest, [(_, forbid, _)] = read(text)
+        assert "the mug in the fridge" in rest and forbid == ["put(Mug,SinkBasin)"], (text, rest)
+    # a thing named before the "it" is what it stands for; two things named, or none, give no "it" back
+    assert read("never put the mug in the sink; put the apple in it")[0] == "put the apple in it"
+    two = "don't put the mug or the cup in the sink, put them in the fridge"
+    assert read(two)[0] == "put them in the fridge"
+    assert read("heat the mug but don't put it in the microwave, put it on the counter")[0] == (
+        "heat the mug, put it on the counter"
+    )
+
+
 @needs_data
 def test_a_constraint_can_make_the_plan_costlier():
     from nl2hltl2plan.worlds import load_world

@@ -104,6 +104,7 @@ class Negation:
     end: int
     spec: ConstraintSpec
     until_words: str = ""
+    thing: str = ""  # the words naming what it forbids an action on ("the knife"), for a later "it"
 
 
 def patterns(
@@ -158,10 +159,23 @@ def read_negations(
             found.append(neg)
     rest = instruction
     for n in sorted(found, key=lambda n: -n.start):
-        rest = rest[: n.start] + " " + rest[n.end :]
+        rest = rest[: n.start] + " " + _named_again(rest[n.end :], n.thing)
     rest = re.sub(r"\s+([,.;!?])", r"\1", " ".join(rest.split()))
     rest = re.sub(r"^[,;\s]+|^(?:and|but|then)\s+|[,;\s]+$", "", rest, flags=re.I).strip()
     return rest, found
+
+
+def _named_again(after: str, thing: str) -> str:
+    """The text after a negated clause, its "it" or "them" given back the thing the clause named when no
+    thing comes between them in the sentence: "don't put the knife in the sink, put it in the drawer"
+    leaves "put the knife in the drawer" (not "put it in the drawer", which names nothing); so does
+    "Don't put the knife in the sink. Put it in the drawer." """
+    lead = len(after) - len(after.lstrip(" ,.;!?"))  # "Don't put the knife in the sink. Put it ..."
+    head = after[: lead + len(re.split(r"[.;!?]", after[lead:], maxsplit=1)[0])]
+    pronoun = re.search(r"\b(?:it|them)\b", head, re.I)
+    if not thing or pronoun is None or any(m.char_start < pronoun.start() for m in find_mentions(head)):
+        return after
+    return after[: pronoun.start()] + thing + after[pronoun.end() :]
 
 
 def _an_ordering(instruction: str, tok: tuple[str, int, int]) -> bool:
@@ -227,7 +241,13 @@ def _read_clause(
         places = where
     elif where:  # "never open the fridge on the left": the extra place is not read
         return None
-    return _negation(text, toks, i, end_tok, cut, verb, things, places, look)
+    neg = _negation(text, toks, i, end_tok, cut, verb, things, places, look)
+    named = [m for m in inside if m.start > i and not PREPS & set(words[max(0, m.start - 3) : m.start])]
+    if neg is not None and len(named) == 1:  # one thing of its own (not an "it"): what a later "it" is
+        k = named[0].start
+        first = k - 1 if k and words[k - 1] in LISTED else k  # "the knife", with its determiner
+        neg.thing = text[toks[first][1] : named[0].char_end]
+    return neg
 
 
 def _negation(
