@@ -97,7 +97,7 @@ def account(
     per_group_only = bool(said) and all(r.per_group for r in said)
     instruction = everyday(instruction)  # fillers, notation and headings that carry nothing (issue 28)
     lowered = instruction.lower()
-    found = ((c, _as_read(c.text)) for c in constraints)
+    found = ((c, everyday(c.text).lower()) for c in constraints)  # its "dont" read as "don't", too
     spans = [(at, at + len(said), c) for c, said in found if (at := lowered.find(said)) >= 0]
     parse = ParseUsage(tasks, before, constraints, spans)
     toks = tokens(instruction)
@@ -482,12 +482,6 @@ def _words(
         if unread is not None:
             out.append(unread)
     return out
-
-
-def _as_read(clause: str) -> str:
-    """A constraint's words as the accounting reads the instruction: a negation read from "dont put it
-    in the sink" must be found in the instruction's "don't put it in the sink" (`everyday`)."""
-    return everyday(clause).lower()
 
 
 def _locative_word(

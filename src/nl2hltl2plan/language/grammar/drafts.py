@@ -17,7 +17,6 @@ from nl2hltl2plan.language.grammar.frames import (
     Frame,
     Item,
     dest_of,
-    is_fixed,
     parse_frame,
     puts_into,
     same,
@@ -25,10 +24,10 @@ from nl2hltl2plan.language.grammar.frames import (
     two_places,
     two_places_unread,
 )
+from nl2hltl2plan.language.grammar.listed_things import merge_items
 from nl2hltl2plan.language.grammar.phrases import NP, one_of_each_under_a_shared_plural, tokens
 from nl2hltl2plan.language.grammar.sentences import Sentence
 from nl2hltl2plan.language.grammar.subordinate import treatment_after
-from nl2hltl2plan.language.grounding import Grounder, camel_words
 from nl2hltl2plan.language.statements import WHERE_COPULA
 
 
@@ -517,84 +516,3 @@ def incomplete(d: Draft) -> bool:
         if dest_of(it, fr.cls) is not None or fr.cls in {"light", "examine", "trash"} or fr.light_on:
             return False
     return True
-
-
-def named_apart(x: NP, y: NP, g: Grounder) -> bool:
-    """ "the towel and the hand towel" where the scene has a HandTowel and a Towel: two phrases that ground
-    to one type, one of them that type's name, are two objects of two types, not two of one, when the other
-    phrase can stand for another type of the scene. The phrase naming the type keeps it; the other takes its
-    next type in the scene (the entries are narrowed in place)."""
-    assert x.entry is not None and y.entry is not None
-    first = g.resolve(x.entry)
-    name = camel_words(first[0]).split() if len(first) == 1 else []
-    naming = [np for np in (x, y) if name and _has_words(np.text.lower().split(), name)]
-    if len(naming) != 1:
-        return False
-    other = y if naming[0] is x else x
-    assert other.entry is not None and naming[0].entry is not None
-    rest = tuple(t for t in g.candidates(other.entry) if t != first[0])
-    if not rest:
-        return False
-    naming[0].entry = replace(naming[0].entry, types=(first[0],), all_=False)
-    other.entry = replace(other.entry, types=rest, all_=False)
-    return True
-
-
-def name_apart_across(drafts: list[Draft], g: Grounder | None) -> None:
-    """`named_apart` across the tasks of an instruction, where one phrase is a compound of the other's
-    head ("put the towel on the towel holder and the hand towel on the hand towel holder": a Towel and a
-    HandTowel, as "the towel and the hand towel" in one clause). Two names of one type ("a clean rag",
-    "a cleaned cloth") are two things of that type."""
-    objs = [o for d in drafts if not d.tool and (o := d.obj) is not None and o.entry is not None]
-    if g is None:
-        return
-    for k, x in enumerate(objs):
-        for y in objs[k + 1 :]:
-            assert x.entry is not None and y.entry is not None
-            xs, ys = x.text.lower().split(), y.text.lower().split()
-            compound = xs != ys and (xs[-1:] == ys[-1:]) and (set(xs) < set(ys) or set(ys) < set(xs))
-            first = g.resolve(x.entry)
-            if compound and len(first) == 1 and g.resolve(y.entry) == first and named_apart(x, y, g):
-                break
-
-
-def _has_words(words: list[str], sub: list[str]) -> bool:
-    return any(words[k : k + len(sub)] == sub for k in range(len(words) - len(sub) + 1))
-
-
-def merge_items(items: list[Item], b: TaskBuilder) -> list[Item]:
-    """Two objects that one clause lists for one destination: a container and its content ("a bowl and a
-    pencil"), or two objects of the same type ("an empty roll and a full roll of toilet paper")."""
-    items = [
-        it
-        for it in items
-        if not (
-            it.obj is not None
-            and it.obj.is_receptacle()
-            and not it.obj.is_movable_receptacle()
-            and len(items) > 1
-        )
-    ] or items
-    if len(items) != 2 or any(it.obj is None or it.obj.pronoun or it.obj.entry is None for it in items):
-        return items
-    x, y = items
-    xo, yo = x.obj, y.obj
-    assert xo is not None and yo is not None and xo.entry is not None and yo.entry is not None
-    dests = [(p, np) for p, np in y.pps if p in G.DEST_PREPS]
-    own = [np for p, np in x.pps if p in G.DEST_PREPS and is_fixed(np)]
-    if own and any(is_fixed(np) and not same(np, own[-1]) for _, np in dests):
-        return items  # "the mug in the sink and the egg in the fridge": each goes its own way
-    if b.g is not None and set(b.g.resolve(xo.entry)) == set(b.g.resolve(yo.entry)) and b.g.resolve(xo.entry):
-        if named_apart(xo, yo, b.g):
-            return items
-        xo.count = 2
-        return [Item(obj=xo, pps=dests or x.pps)]
-    if xo.is_movable_receptacle() != yo.is_movable_receptacle():
-        cont, content = (xo, yo) if xo.is_movable_receptacle() else (yo, xo)
-        assert cont.entry is not None and content.entry is not None
-        # "the pan and the knife": the knife in the pan; "the mug and the apple": two things (a mug holds
-        # no apple)
-        if b.g is None or b.can_hold(b.g.resolve(cont.entry), b.g.resolve(content.entry), content.sliced):
-            sources = [(p, np) for p, np in y.pps if p == "from"]  # where both are: not where they go
-            return [Item(obj=content, pps=[("containing", cont), *sources, *dests])]
-    return items

@@ -26,7 +26,8 @@ from __future__ import annotations
 from pydantic import BaseModel, Field
 
 from nl2hltl2plan.language.grammar.draft_tasks import TaskBuilder, build_tasks
-from nl2hltl2plan.language.grammar.drafts import DraftBuilder, name_apart_across
+from nl2hltl2plan.language.grammar.drafts import DraftBuilder
+from nl2hltl2plan.language.grammar.listed_things import name_apart_across
 from nl2hltl2plan.language.grammar.order_relations import relate
 from nl2hltl2plan.language.grammar.sentences import normalize, read_sentences
 from nl2hltl2plan.language.grounding import AffordanceLookup, Grounder, alfred_lookup

@@ -8,8 +8,9 @@ from nl2hltl2plan.domain.task_kinds import APPLIANCE, Kind
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.clauses import split_clauses
 from nl2hltl2plan.language.grammar.draft_tasks import Draft, TaskBuilder
-from nl2hltl2plan.language.grammar.drafts import incomplete, joins, merge_items
+from nl2hltl2plan.language.grammar.drafts import incomplete, joins
 from nl2hltl2plan.language.grammar.frames import Frame, parse_frame, two_places, two_places_unread
+from nl2hltl2plan.language.grammar.listed_things import merge_items
 from nl2hltl2plan.language.grammar.phrases import NP, parse_np, tokens
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
 
