@@ -34,6 +34,7 @@ from typing import Protocol
 
 from nl2hltl2plan.language.content_words import Unread
 from nl2hltl2plan.language.headings import answered
+from nl2hltl2plan.language.household_forms import household_forms
 from nl2hltl2plan.language.numbered_steps import step_order
 from nl2hltl2plan.language.respectively import distributed
 from nl2hltl2plan.language.result import LanguageResult
@@ -115,7 +116,8 @@ class _HouseholdReader(SharedGrammar):
         return answered(" ".join(lines))
 
     def prepared(self, instruction: str) -> str:
-        return distributed(corrected(step_order(instruction), household_roles(self.world)))
+        forms = household_forms(instruction)
+        return distributed(corrected(step_order(forms), household_roles(self.world)))
 
 
 class _HandoverReader(SharedGrammar):
