@@ -73,7 +73,7 @@ def paired(text: str) -> str:
 
 
 def topic_said(text: str) -> str:
-    """"The mug? Heat it ..." as "Heat the mug ..."; else `text`."""
+    """ "The mug? Heat it ..." as "Heat the mug ..."; else `text`."""
 
     def said(m: re.Match[str]) -> str:
         if not _one_thing(m["np"]):

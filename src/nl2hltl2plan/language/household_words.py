@@ -13,8 +13,10 @@ comes from are in household_names.txt):
 >>> descriptive_names("put the apple on the island", {"DiningTable", "CounterTop"})
 'put the apple on the dining table'
 >>> said = Contents.read("heat up coffee in a mug and put it in the cabinet")
->>> said.text, said.notes
-('heat up a mug and put it in the cabinet', ["'coffee in a mug' is read as the mug: no floor plan has coffee apart from its container"])
+>>> said.text
+'heat up a mug and put it in the cabinet'
+>>> said.notes[0]
+"'coffee in a mug' is read as the mug: no floor plan has coffee apart from its container"
 """
 
 from __future__ import annotations
@@ -62,9 +64,7 @@ def descriptive_names(text: str, types: set[str]) -> str:
             if not present:
                 continue  # left as it is: the grammar and check 1 read or refuse it
             if name.either and len(present) > 1:
-                raise HTTError(
-                    f"{m['name']!r} could be the {' or the '.join(present)} here; say which"
-                )
+                raise HTTError(f"{m['name']!r} could be the {' or the '.join(present)} here; say which")
             text = text[: m.start("name")] + camel_words(present[0]) + text[m.end("name") :]
     return text
 
@@ -79,7 +79,9 @@ def _inside_longer_name(text: str, m: re.Match[str]) -> bool:
 
 @cache
 def _words(kind: str) -> tuple[str, ...]:
-    return tuple(n for names, fields in phrase_lines("household_names.txt") for n in names if fields[0] == kind)
+    return tuple(
+        n for names, fields in phrase_lines("household_names.txt") for n in names if fields[0] == kind
+    )
 
 
 @cache
@@ -119,9 +121,8 @@ class Contents:
             return m[0]
         said = m[0][len(m.groupdict().get("verb") or "") :]
         content = " ".join(m["content"].lower().split())
-        self.notes.append(
-            f"{said!r} is read as the {named[0].surface}: no floor plan has {content} apart from its container"
-        )
+        where = f"no floor plan has {content} apart from its container"
+        self.notes.append(f"{said!r} is read as the {named[0].surface}: {where}")
         return f"{m.groupdict().get('verb') or ''}{m['holder']}"
 
     @staticmethod
@@ -130,4 +131,5 @@ class Contents:
         named = _content_patterns()[2].search(text)
         if named is None:
             return None
-        return f"no floor plan has {named[0].lower()!r} apart from its container: name it ('a mug of {named[0].lower()}')"
+        content = named[0].lower()
+        return f"no floor plan has {content!r} apart from its container: name it ('a mug of {content}')"

@@ -9,8 +9,8 @@ nothing (step 1 before step 2: the opposite of what was asked).
   then A and B");
 - "step N before step M" / "step M after step N": with two steps, that order;
 - an order between two of three or more steps (which leaves where the third goes unsaid), or one that names
-  a step the recipe does not have, is refused by name. An order the steps may come in freely ("Either step may come first") is
-  `free_order.txt`'s, which the grammar reads.
+  a step the recipe does not have, is refused by name. An order the steps may come in freely ("Either step
+  may come first") is `free_order.txt`'s, which the grammar reads.
 
 >>> step_order("1. put the mug in the sink. 2. put the egg in the fridge. Step 2 comes first.")
 'put the egg in the fridge, then put the mug in the sink.'
