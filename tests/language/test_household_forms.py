@@ -145,9 +145,12 @@ def test_the_reading_says_which_container_is_meant(kitchen):
 @pytest.mark.data
 def test_a_greeting_before_when_you_are_done_changes_nothing(kitchen):
     """ "when you're done" with nothing before it waits on no task of the instruction; after a task it
-    orders the next one after it, and a greeting before it is no word of the reading either way."""
+    orders the next one after it, and a greeting before it is no step of its own either way (the grammar
+    read "hey, when you're done, A and B" as B after "hey", and check 1 named both words)."""
     for opener in ("", "hey, ", "Hi! "):
         text = f"{opener}when you're done, put the apple in the fridge"
         assert reading(text, kitchen) == ([APPLE_FRIDGE], [])
+        text = f"{opener}when you're done, put the apple in the fridge and the mug in the sink"
+        assert reading(text, kitchen) == ([APPLE_FRIDGE, MUG_SINK], [])  # the greeting is no step before
         text = f"put the mug in the sink. {opener}once that's done, put the apple in the fridge"
         assert reading(text, kitchen) == ([MUG_SINK, APPLE_FRIDGE], [("A", "B")])

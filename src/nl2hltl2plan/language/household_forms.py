@@ -8,6 +8,9 @@ an action, and applies only where its parts name what it needs:
 - a thing asked as a topic, then what to do with it (`topic_said`): "The mug? Heat it and put it in the
   sink." is "Heat the mug and put it in the sink." (the question names one thing and nothing else, and the
   sentence after it says "it" or "them");
+- a greeting set apart at the start of a sentence (`ungreeted`): "Hey, when you're done, put ..." is "when
+  you're done, put ..." (the greeting words are `tabletop_chat.txt`'s); the grammar read the greeting as a
+  step that "when you're done" waits on, and check 1 named the greeting and the order word;
 - a treatment and a "respectively" list after it (`treated_lists`): "wash the mug and the plate and put
   them in the sink and the cabinet respectively" is "put the washed mug and the washed plate in the sink
   and the cabinet respectively", which `respectively.distributed` writes out pair by pair.
@@ -16,6 +19,8 @@ an action, and applies only where its parts name what it needs:
 'mug -> sink, apple -> fridge'
 >>> topic_said("The mug? Heat it and put it in the sink.")
 'Heat the mug and put it in the sink.'
+>>> ungreeted("Hey, when you're done, put the mug in the sink. Hi there! Put the egg away.")
+"when you're done, put the mug in the sink. Put the egg away."
 >>> treated_lists("rinse the mug and the plate and put them in the sink and the cabinet respectively")
 'put the rinsed mug and the rinsed plate in the sink and the cabinet respectively'
 """
@@ -24,6 +29,7 @@ from __future__ import annotations
 
 import re
 
+from nl2hltl2plan.language.content_words import phrase_list_pattern
 from nl2hltl2plan.language.grounding import find_mentions
 
 _NP = r"(?:(?:the|a|an|my|your|this|that)\s+)?[a-z]+(?:\s+[a-z]+){0,2}"
@@ -55,12 +61,22 @@ _TREATED = re.compile(
     re.I,
 )
 _ITEM = re.compile(r"\s*,\s*(?:and\s+)?|\s+and\s+", re.I)
+_GREETING = re.compile(
+    rf"(?P<lead>^|(?<=[.!?])\s+)(?:{phrase_list_pattern('tabletop_chat.txt', 'greeting')}\s*)+[!.,]+\s*"
+    r"(?=[a-z])",
+    re.I,
+)
 _DETERMINER = re.compile(r"^(?P<det>(?:the|a|an|my|your|both|two)\s+)?", re.I)
 
 
 def household_forms(text: str) -> str:
     """`text` with each form above written out as the grammar reads it."""
-    return treated_lists(topic_said(paired(text)))
+    return treated_lists(topic_said(paired(ungreeted(text))))
+
+
+def ungreeted(text: str) -> str:
+    """`text` without a greeting set apart ("Hey,", "Hi there!") that opens a sentence before a request."""
+    return _GREETING.sub(lambda m: m["lead"], text)
 
 
 def paired(text: str) -> str:
