@@ -99,7 +99,7 @@ def test_an_order_said_by_step_number(kitchen, said):
     [
         (
             "1. put the apple in the fridge 2. put the mug in the sink 3. put the egg in the microwave. "
-            "Step 2 first.",
+            "Step 2 before step 3.",
             "leaves the order of the other steps unsaid",
         ),
         ("put the apple in the fridge and the mug in the sink. Step 1 first.", "does not number"),

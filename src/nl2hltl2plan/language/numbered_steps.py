@@ -3,12 +3,14 @@ applied before the household grammar reads (`step_order`): the steps are written
 "A, then B". Without it, the grammar read the steps' numbers as their order and "step 2 comes first" as
 nothing (step 1 before step 2: the opposite of what was asked).
 
-- "step N first" / "do step N first" / "the second step comes first" / "step N last": with two steps, the
-  named step first (last) and the other after (before) it;
+- "step N first" / "do step N first" / "the second step comes first" / "step N last": the named step first
+  (last), and the others in their numbered turn ("1. A 2. B 3. C. Do step 3 first." is "C, then A, then
+  B"): the numbers of a recipe may mean a sequence (the grammar reads "Step 1: ... Step 2: ..." so), and
+  an order the text may mean is kept rather than dropped;
 - "step N before step M" / "step M after step N": with two steps, that order;
-- an order that leaves other steps unordered (three steps, "step 2 first"), or names a step the recipe does
-  not have, is refused by name. An order the steps may come in freely ("Either step may come first") is
-  `free_order.txt`'s, which the grammar reads.
+- an order between two of three or more steps (which leaves where the third goes unsaid), or one that names
+  a step the recipe does not have, is refused by name. An order the steps may come in freely ("Either step
+  may come first") is `free_order.txt`'s, which the grammar reads.
 
 >>> step_order("1. put the mug in the sink. 2. put the egg in the fridge. Step 2 comes first.")
 'put the egg in the fridge, then put the mug in the sink.'
@@ -54,11 +56,11 @@ def step_order(text: str) -> str:
     named = [_number(m[g]) for g in ("a", "b") if g in m.groupdict() and m[g]]
     if len(steps) < 2 or any(n not in steps for n in named):
         raise HTTError(f"{m[0]!r} names a step the instruction does not number")
-    if len(steps) > 2:
+    a, others = named[0], [n for n in steps if n != named[0]]
+    if m.groupdict().get("where"):  # the named step moved to the front (the end), the others in turn
+        chain = [a, *others] if m["where"].lower() == "first" else [*others, a]
+    elif len(steps) > 2:
         raise HTTError(f"{m[0]!r} leaves the order of the other steps unsaid; say the whole order")
-    a, other = named[0], next(n for n in steps if n != named[0])
-    if m.groupdict().get("where"):
-        chain = [a, other] if m["where"].lower() == "first" else [other, a]
     else:
         chain = [a, named[1]] if m["rel"].lower() == "before" else [named[1], a]
         if named[0] == named[1]:

@@ -1,0 +1,122 @@
+"""Forms of a household (ALFRED) instruction written out as the forms the shared grammar reads, before it
+reads (the household reader's `prepared`); each rewrite keeps every word that names a thing, a place or
+an action, and applies only where its parts name what it needs:
+
+- a list of things and places with colons (`paired`): "mug: sink; apple: fridge" is "mug -> sink,
+  apple -> fridge", which the grammar reads as it reads arrows ("green apple -> blue plate"); each side of
+  a colon names one thing or place, so a label ("Task: ...", "Note: ...") is left as it is;
+- a thing asked as a topic, then what to do with it (`topic_said`): "The mug? Heat it and put it in the
+  sink." is "Heat the mug and put it in the sink." (the question names one thing and nothing else, and the
+  sentence after it says "it" or "them");
+- a greeting set apart at the start of a sentence (`ungreeted`): "Hey, when you're done, put ..." is "when
+  you're done, put ..." (the greeting words are `tabletop_chat.txt`'s); the grammar read the greeting as a
+  step that "when you're done" waits on, and check 1 named the greeting and the order word;
+- a treatment and a "respectively" list after it (`treated_lists`): "wash the mug and the plate and put
+  them in the sink and the cabinet respectively" is "put the washed mug and the washed plate in the sink
+  and the cabinet respectively", which `respectively.distributed` writes out pair by pair.
+
+>>> paired("mug: sink; apple: fridge")
+'mug -> sink, apple -> fridge'
+>>> topic_said("The mug? Heat it and put it in the sink.")
+'Heat the mug and put it in the sink.'
+>>> ungreeted("Hey, when you're done, put the mug in the sink. Hi there! Put the egg away.")
+"when you're done, put the mug in the sink. Put the egg away."
+>>> treated_lists("rinse the mug and the plate and put them in the sink and the cabinet respectively")
+'put the rinsed mug and the rinsed plate in the sink and the cabinet respectively'
+"""
+
+from __future__ import annotations
+
+import re
+
+from nl2hltl2plan.language.content_words import phrase_list_pattern
+from nl2hltl2plan.language.grounding import find_mentions
+
+_NP = r"(?:(?:the|a|an|my|your|this|that)\s+)?[a-z]+(?:\s+[a-z]+){0,2}"
+# "mug: sink" between list separators (a colon that opens a clause, "Task: put ...", has a verb after it,
+# and its sides are not one thing and one place)
+_PAIR = re.compile(
+    rf"(?P<lead>^|[,;]\s*|\b(?:and|then)\s+)(?P<thing>{_NP})\s*:\s*(?P<place>{_NP})"
+    r"(?=\s*(?:[,;.!]|\band\b|\bthen\b|$))",
+    re.I,
+)
+_SEPARATOR = re.compile(r"\s*;\s*")
+# "The mug?", "what about the mug?", "as for the apple?" opening the text or a sentence
+_TOPIC = re.compile(
+    rf"(?P<lead>^|(?<=[.!?])\s+)(?:(?:and|what\s+about|how\s+about|as\s+for)\s+)?(?P<np>{_NP})\s*\?\s+"
+    r"(?P<next>[^.!?]*\b(?:it|them)\b)",
+    re.I,
+)
+_PRONOUN = re.compile(r"\b(?:it|them)\b", re.I)
+# a treatment of its things, then a placement of "them" closing with "respectively"
+_PARTICIPLE = {
+    "wash": "washed", "rinse": "rinsed", "clean": "cleaned", "scrub": "scrubbed",
+    "heat": "heated", "warm": "warmed", "cook": "cooked", "microwave": "microwaved",
+    "chill": "chilled", "cool": "cooled", "refrigerate": "refrigerated",
+    "slice": "sliced", "cut": "cut", "chop": "chopped",
+}  # fmt: skip
+_TREATED = re.compile(
+    rf"\b(?P<verb>{'|'.join(_PARTICIPLE)})(?:\s+up)?\s+(?P<things>[^.;!?]+?)\s*,?\s+and\s+(?:then\s+)?"
+    r"(?P<put>put|place|set|move|leave|store)\s+them\s+(?P<places>[^.;!?]+?,?\s+respectively)\b",
+    re.I,
+)
+_ITEM = re.compile(r"\s*,\s*(?:and\s+)?|\s+and\s+", re.I)
+_GREETING = re.compile(
+    rf"(?P<lead>^|(?<=[.!?])\s+)(?:{phrase_list_pattern('tabletop_chat.txt', 'greeting')}\s*)+[!.,]+\s*"
+    r"(?=[a-z])",
+    re.I,
+)
+_DETERMINER = re.compile(r"^(?P<det>(?:the|a|an|my|your|both|two)\s+)?", re.I)
+
+
+def household_forms(text: str) -> str:
+    """`text` with each form above written out as the grammar reads it."""
+    return treated_lists(topic_said(paired(ungreeted(text))))
+
+
+def ungreeted(text: str) -> str:
+    """`text` without a greeting set apart ("Hey,", "Hi there!") that opens a sentence before a request."""
+    return _GREETING.sub(lambda m: m["lead"], text)
+
+
+def paired(text: str) -> str:
+    """Colon pairs of one thing and one place, "mug: sink; apple: fridge", as arrows; else `text`."""
+    pairs = list(_PAIR.finditer(text))
+    if not pairs or not all(_one_thing(m["thing"]) and _one_thing(m["place"]) for m in pairs):
+        return text
+    text = _PAIR.sub(lambda m: f"{m['lead']}{m['thing']} -> {m['place']}", text)
+    return _SEPARATOR.sub(", ", text)
+
+
+def topic_said(text: str) -> str:
+    """ "The mug? Heat it ..." as "Heat the mug ..."; else `text`."""
+
+    def said(m: re.Match[str]) -> str:
+        if not _one_thing(m["np"]):
+            return m[0]
+        np = m["np"] if _DETERMINER.match(m["np"])["det"] else f"the {m['np']}"  # type: ignore[index]
+        rest = _PRONOUN.sub(np.lower(), m["next"], count=1)
+        return f"{m['lead']}{rest[0].upper()}{rest[1:]}"
+
+    return _TOPIC.sub(said, text)
+
+
+def treated_lists(text: str) -> str:
+    """ "wash A and B and put them in X and Y respectively" as "put the washed A and the washed B in X
+    and Y respectively"; else `text`."""
+
+    def said(m: re.Match[str]) -> str:
+        things = _ITEM.split(m["things"].strip())
+        if len(things) < 2 or not all(_one_thing(t) for t in things):
+            return m[0]
+        done = _PARTICIPLE[m["verb"].lower()]
+        treated = [_DETERMINER.sub(lambda d: f"{d['det'] or 'the '}{done} ", t, count=1) for t in things]
+        return f"{m['put']} {' and '.join(treated)} {m['places']}"
+
+    return _TREATED.sub(said, text)
+
+
+def _one_thing(phrase: str) -> bool:
+    """Does the phrase name exactly one thing or place of the lexicon ("the mug", "coffee machine")?"""
+    named = find_mentions(phrase)
+    return len(named) == 1 and not named[0].entry.generic
