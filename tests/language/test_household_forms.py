@@ -11,7 +11,7 @@ from household_readings import reading
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.household_forms import paired, topic_said, treated_lists
-from nl2hltl2plan.language.household_words import Contents, descriptive_names
+from nl2hltl2plan.language.household_words import descriptive_names
 from nl2hltl2plan.language.translate import translate
 
 
@@ -119,29 +119,19 @@ def test_a_descriptive_name_of_two_types_the_floor_plan_has_is_refused():
         descriptive_names("put the candle in the vanity", {"Cabinet", "Drawer", "CounterTop"})
 
 
+@pytest.mark.data
 @pytest.mark.parametrize(
-    "text, said",
+    "text, drink",
     [
-        ("heat up coffee in a mug and put it in the cabinet", "heat up a mug and put it in the cabinet"),
-        ("put a glass of cold juice in the fridge", "put a glass in the fridge"),
-        ("heat a bowl of soup", "heat a bowl"),
-        ("put the juice in a glass", "put the juice in a glass"),  # pouring it there: no treatment
-        ("pour some milk into the mug", "pour some milk into the mug"),
-        ("put a bowl of water in the cabinet", "put a bowl of water in the cabinet"),  # a rinsed bowl
+        ("heat a cup of coffee and put it in the cabinet", "coffee"),
+        ("put a bowl of soup in the fridge", "soup"),
     ],
 )
-def test_a_drink_or_food_with_its_container_is_the_container(text, said):
-    assert Contents.read(text).text == said
-
-
-@pytest.mark.data
-def test_the_reading_says_which_container_is_meant(kitchen):
-    res = translate("heat a cup of coffee and put it in the cabinet", kitchen, build=False, actions="none")
-    assert [t.summary() for t in res.tasks] == ["heat_place Cup -> Cabinet"]
-    assert res.warnings == [
-        "'a cup of coffee' is read as the cup: no floor plan has coffee apart from its container"
-    ]
-    with pytest.raises(HTTError, match="name it \\('a mug of coffee'\\)"):
+def test_a_drink_or_food_is_named_by_check_1_never_read_away(text, drink, kitchen):
+    # a plan that heats the cup cannot check that it holds coffee (issue 23's "heat a cup of coffee")
+    res = translate(text, kitchen, build=False, actions="none")
+    assert res.partial and any(u.startswith(repr(drink)) for u in res.unparsed), res.unparsed
+    with pytest.raises(HTTError, match="no floor plan has coffee apart from its container"):
         translate("heat up some coffee and put it in the cabinet", kitchen, build=False, actions="none")
 
 

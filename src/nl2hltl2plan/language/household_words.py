@@ -5,24 +5,20 @@ comes from are in household_names.txt):
 - a descriptive name of a receptacle ("the island", "the nightstand", "the entertainment center", "the
   vanity") is the first of its types that the floor plan has, written as that type's name; a name whose
   types the floor plan has two or more of, where they differ (`: either`), is refused by name;
-- a drink or food named with its container is the container ("a cup of coffee", "heat up coffee in a mug"):
-  no floor plan has coffee apart from the mug, so the mug is what is moved, heated or chilled, and the
-  reader says so (`Contents.notes`); one named with no container is left for check 1, which refuses it,
-  and the refusal asks for the container (`Contents.hint`).
+- a drink or food ("a cup of coffee", "heat up some coffee") is left for check 1, which names it: no floor
+  plan has coffee apart from its container, and a plan that heats the cup cannot check that it holds
+  coffee; the refusal says so and asks for the container alone (`contents_hint`).
 
 >>> descriptive_names("put the apple on the island", {"DiningTable", "CounterTop"})
 'put the apple on the dining table'
->>> said = Contents.read("heat up coffee in a mug and put it in the cabinet")
->>> said.text
-'heat up a mug and put it in the cabinet'
->>> said.notes[0]
-"'coffee in a mug' is read as the mug: no floor plan has coffee apart from its container"
+>>> contents_hint("heat up coffee in a mug")
+'no floor plan has coffee apart from its container: to act on the container, name it alone'
 """
 
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from functools import cache
 
 from nl2hltl2plan.errors import HTTError
@@ -42,7 +38,7 @@ class _Name:
 def _names() -> tuple[_Name, ...]:
     out = []
     for names, fields in phrase_lines("household_names.txt"):
-        if fields[0] in ("contents", "holders"):
+        if fields[0] == "contents":
             continue
         for name in names:
             prep, _, words = name.rpartition(":")
@@ -78,58 +74,18 @@ def _inside_longer_name(text: str, m: re.Match[str]) -> bool:
 
 
 @cache
-def _words(kind: str) -> tuple[str, ...]:
-    return tuple(
-        n for names, fields in phrase_lines("household_names.txt") for n in names if fields[0] == kind
-    )
+def _contents() -> re.Pattern[str]:
+    lines = phrase_lines("household_names.txt")
+    said = [n for names, fields in lines for n in names if fields[0] == "contents"]
+    words = [re.escape(n).replace(r"\ ", r"\s+") for n in said]
+    return re.compile(rf"\b(?:{'|'.join(words)})\b", re.I)
 
 
-@cache
-def _content_patterns() -> tuple[re.Pattern[str], re.Pattern[str], re.Pattern[str]]:
-    contents = "|".join(re.escape(w).replace(r"\ ", r"\s+") for w in _words("contents"))
-    temperature = r"(?:(?:hot|cold|warm|iced|fresh|some)\s+)?"
-    holders = "|".join(re.escape(w).replace(r"\ ", r"\s+") for w in _words("holders"))
-    holder = rf"(?:a|an|the|one|your|my)\s+(?:[a-z]+\s+)?(?:{holders})s?\b"
-    of = re.compile(rf"(?P<holder>{holder})\s+of\s+{temperature}(?P<content>{contents})\b", re.I)
-    # after a treatment only: "put the juice in a glass" is pouring it there
-    treated_in = re.compile(
-        rf"(?P<verb>\b(?:heat|warm|reheat|microwave|cool|chill|refrigerate)(?:\s+up)?\s+)(?:the\s+)?{temperature}"
-        rf"(?P<content>{contents})\s+in\s+(?P<holder>{holder})",
-        re.I,
-    )
-    alone = re.compile(rf"\b(?:{contents})\b", re.I)
-    return of, treated_in, alone
-
-
-@dataclass
-class Contents:
-    """An instruction with its drinks and foods read as their containers, and what the reader says of it."""
-
-    text: str
-    notes: list[str] = field(default_factory=list)
-
-    @classmethod
-    def read(cls, text: str) -> Contents:
-        of, treated_in, _ = _content_patterns()
-        said = cls(text)
-        said.text = of.sub(said._holder, treated_in.sub(said._holder, text))
-        return said
-
-    def _holder(self, m: re.Match[str]) -> str:
-        named = find_mentions(m["holder"])
-        if len(named) != 1:  # "a red glass" is one thing; "the fridge cup" is not said so
-            return m[0]
-        said = m[0][len(m.groupdict().get("verb") or "") :]
-        content = " ".join(m["content"].lower().split())
-        where = f"no floor plan has {content} apart from its container"
-        self.notes.append(f"{said!r} is read as the {named[0].surface}: {where}")
-        return f"{m.groupdict().get('verb') or ''}{m['holder']}"
-
-    @staticmethod
-    def hint(text: str) -> str | None:
-        """What a refusal adds where the text names a drink or food with no container."""
-        named = _content_patterns()[2].search(text)
-        if named is None:
-            return None
-        content = named[0].lower()
-        return f"no floor plan has {content!r} apart from its container: name it ('a mug of {content}')"
+def contents_hint(text: str) -> str | None:
+    """What a refusal adds where the text names a drink or food, which no floor plan has apart from its
+    container (the plan cannot check that the mug holds coffee, so "coffee" stays unread, never dropped)."""
+    named = _contents().search(text)
+    if named is None:
+        return None
+    content = " ".join(named[0].lower().split())
+    return f"no floor plan has {content} apart from its container: to act on the container, name it alone"

@@ -35,7 +35,7 @@ from typing import Protocol
 from nl2hltl2plan.language.content_words import Unread
 from nl2hltl2plan.language.headings import answered
 from nl2hltl2plan.language.household_forms import household_forms
-from nl2hltl2plan.language.household_words import Contents, descriptive_names
+from nl2hltl2plan.language.household_words import contents_hint, descriptive_names
 from nl2hltl2plan.language.numbered_steps import step_order
 from nl2hltl2plan.language.respectively import distributed
 from nl2hltl2plan.language.result import LanguageResult
@@ -107,31 +107,24 @@ class SharedGrammar:
 class _HouseholdReader(SharedGrammar):
     """The household (ALFRED) floor plans: the shared grammar, with "Q: ... A: ..." read as the
     instruction the answers state (`headings.answered`), colon lists, topic questions and treated
-    "respectively" lists written out (`household_forms`), descriptive names and drinks or foods in their
-    containers read with the floor plan's types (`household_words`; the reading's warnings say which
-    container is meant), self-corrections applied (`self_corrections.corrected`), "... respectively" lists
-    written out (`respectively.distributed`) and an order said by step number applied
+    "respectively" lists written out (`household_forms`), descriptive names read with the floor plan's
+    types (`household_words`), self-corrections applied (`self_corrections.corrected`), "...
+    respectively" lists written out (`respectively.distributed`) and an order said by step number applied
     (`numbered_steps.step_order`)."""
 
     def __init__(self, world: World) -> None:
         self.world = world
-        self.notes: list[str] = []  # what the reading says of drinks and foods read as their containers
 
     def as_read(self, lines: list[str]) -> str:
         return answered(" ".join(lines))
 
     def prepared(self, instruction: str) -> str:
         named = descriptive_names(household_forms(instruction), set(self.world.object_types()))
-        contents = Contents.read(named)
-        self.notes = contents.notes
-        return distributed(corrected(step_order(contents.text), household_roles(self.world)))
+        return distributed(corrected(step_order(named), household_roles(self.world)))
 
     def refusal(self, refused: Exception, instruction: str) -> Exception:
-        hint = Contents.hint(instruction)
-        return type(refused)(f"{refused}; {hint}") if hint and not self.notes else refused
-
-    def doubted(self, res: LanguageResult, backend: str) -> LanguageResult:
-        return res.model_copy(update={"warnings": [*res.warnings, *self.notes]}) if self.notes else res
+        hint = contents_hint(instruction)
+        return type(refused)(f"{refused}; {hint}") if hint else refused
 
 
 class _HandoverReader(SharedGrammar):
