@@ -15,6 +15,15 @@ text, so a misspelt name that a reading does not use is named, never passed over
 A world with a closed vocabulary may ask for more (`closed_respelt`): the tabletop world respells against
 its nine name words and, as its one order form is groups in turn, its order words too.
 English is pyspellchecker's frequency list; it loads only when a word passes the first tests.
+
+Chat shorthand (`shorthand_read`, issue 28) is read in every world before any reader sees the text
+(`translate`): "n", "&" and "+" between words are "and", "u" is "you", "w/" is "with" and "w/o" "without".
+A lone "n" or "u" after a word that names something by a letter ("region n", "plan u", "option n") stays.
+
+>>> shorthand_read("can u put the mug n the apple in the sink w/ the lid")
+'can you put the mug and the apple in the sink with the lid'
+>>> shorthand_read("put it on region n and the cup on shelf u")
+'put it on region n and the cup on shelf u'
 """
 
 from __future__ import annotations
@@ -31,7 +40,33 @@ CUTOFF = 0.85  # one letter off in a five-letter word (4/5 matched is 0.8: "plat
 _WORD = re.compile(r"(?<![A-Za-z'])[A-Za-z]{4,}(?![A-Za-z'])")  # not a part of "doesn't"
 _POLITE = frozenset({"would", "could", "kindly", "please", "alright", "okay"})
 # the project's own word lists: their words are read as written ("wilco" is no "wilcox")
-_WORD_LISTS = ("content_words.txt", "free_order.txt", "handover_frame_words.txt")
+_WORD_LISTS = ("content_words.txt", "free_order.txt", "handover_frame_words.txt", "courtesy.txt")
+
+
+# a word that names something by a letter after it: its "n" or "u" is that letter, never "and" or "you"
+_BY_LETTER = frozenset(
+    "region regions arm arms row column col letter plan option step part section zone area spot slot "
+    "position grid cell point bin box shelf drawer cabinet table plate setup case room door line page size "
+    "grade type group team block pillar number no square tile station bay level floor unit".split()
+)
+_AND = re.compile(r"(?<=\w)\s+(?P<word>n|&|\+)\s+(?=\w)|\s*(?P<amp>&)\s*(?=\w)")
+_YOU = re.compile(r"(?<![\w'/-])[uU](?![\w'/-])")
+_WITH = re.compile(r"(?<![\w/])w/(?P<out>o(?![\w/]))?\s*(?=[A-Za-z])", re.I)
+
+
+def shorthand_read(text: str) -> str:
+    """`text` with its chat shorthand written out (see the module docstring)."""
+
+    def letter_named(m: re.Match[str]) -> bool:  # "region n", "plan u": the letter names it
+        before = re.search(r"([A-Za-z]+)\W*$", text[: m.start()])
+        return before is not None and before[1].lower() in _BY_LETTER
+
+    def joined(m: re.Match[str]) -> str:
+        return m[0] if m["word"] == "n" and letter_named(m) else " and "
+
+    text = _AND.sub(joined, text)
+    text = _YOU.sub(lambda m: m[0] if letter_named(m) else "you", text)
+    return _WITH.sub(lambda m: "without " if m["out"] else "with ", text)
 
 
 @cache
