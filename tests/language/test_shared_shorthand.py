@@ -29,6 +29,10 @@ from nl2hltl2plan.language.translate import translate
         ("can u put it", "can you put it"),
         ("put it in the sink w/ the lid", "put it in the sink with the lid"),
         ("put it in the sink w/o the lid", "put it in the sink without the lid"),
+        ("the yellow plate n the green apple", "the yellow plate and the green apple"),
+        ("green plate n red apple", "green plate and red apple"),  # a plate is named by colour, never a letter
+        ("region i n the blue block", "region i and the blue block"),
+        ("on shelf u", "on shelf u"),
         ("an orange", "an orange"),  # "n" inside a word stays
         ("put it on region n and the cup on shelf u", "put it on region n and the cup on shelf u"),
         ("take plan n or option u", "take plan n or option u"),  # a letter that names a plan or option

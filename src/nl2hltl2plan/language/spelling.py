@@ -43,12 +43,19 @@ _POLITE = frozenset({"would", "could", "kindly", "please", "alright", "okay"})
 _WORD_LISTS = ("content_words.txt", "free_order.txt", "handover_frame_words.txt", "courtesy.txt")
 
 
-# a word that names something by a letter after it: its "n" or "u" is that letter, never "and" or "you"
+# a word that names something by a letter after it ("region n", "plan u"): there its "n" or "u" is that
+# letter, never "and" or "you", unless a determiner follows ("region i n the blue block"). Words that end a
+# place ("the yellow plate n the orange", "the table n the sink") are no such words: they name by colour or
+# kind, never by a letter
 _BY_LETTER = frozenset(
-    "region regions arm arms row column col letter plan option step part section zone area spot slot "
-    "position grid cell point bin box shelf drawer cabinet table plate setup case room door line page size "
-    "grade type group team block pillar number no square tile station bay level floor unit".split()
+    "region regions arm arms row column col letter plan option step part section zone area slot position "
+    "grid cell point setup case line page size grade type group number no square tile station bay level "
+    "unit".split()
 )
+# "u" after these is a letter too ("shelf u", "drawer u"): "u" is never "and", so a place that may be named
+# by a letter takes it ("the plate u like": plates and blocks are named by colour)
+_BY_LETTER_U = _BY_LETTER | frozenset("shelf drawer cabinet box bin spot room door".split())
+_DETERMINER = re.compile(r"\s*(?:the|a|an|my|your|some|this|that|these|those)\b", re.I)
 _AND = re.compile(r"(?<=\w)\s+(?P<word>n|&|\+)\s+(?=\w)|\s*(?P<amp>&)\s*(?=\w)")
 _YOU = re.compile(r"(?<![\w'/-])[uU](?![\w'/-])")
 _WITH = re.compile(r"(?<![\w/])w/(?P<out>o(?![\w/]))?\s*(?=[A-Za-z])", re.I)
@@ -57,15 +64,16 @@ _WITH = re.compile(r"(?<![\w/])w/(?P<out>o(?![\w/]))?\s*(?=[A-Za-z])", re.I)
 def shorthand_read(text: str) -> str:
     """`text` with its chat shorthand written out (see the module docstring)."""
 
-    def letter_named(m: re.Match[str]) -> bool:  # "region n", "plan u": the letter names it
+    def letter_named(m: re.Match[str], labels: frozenset[str]) -> bool:  # "region n": the letter names it
         before = re.search(r"([A-Za-z]+)\W*$", text[: m.start()])
-        return before is not None and before[1].lower() in _BY_LETTER
+        labelled = before is not None and before[1].lower() in labels
+        return labelled and not _DETERMINER.match(text, m.end())
 
     def joined(m: re.Match[str]) -> str:
-        return m[0] if m["word"] == "n" and letter_named(m) else " and "
+        return m[0] if m["word"] == "n" and letter_named(m, _BY_LETTER) else " and "
 
     text = _AND.sub(joined, text)
-    text = _YOU.sub(lambda m: m[0] if letter_named(m) else "you", text)
+    text = _YOU.sub(lambda m: m[0] if letter_named(m, _BY_LETTER_U) else "you", text)
     return _WITH.sub(lambda m: "without " if m["out"] else "with ", text)
 
 
