@@ -30,7 +30,7 @@ from nl2hltl2plan.language.translate import translate
         ("put it in the sink w/ the lid", "put it in the sink with the lid"),
         ("put it in the sink w/o the lid", "put it in the sink without the lid"),
         ("the yellow plate n the green apple", "the yellow plate and the green apple"),
-        ("green plate n red apple", "green plate and red apple"),  # a plate is named by colour, never a letter
+        ("green plate n red apple", "green plate and red apple"),  # a plate: by colour, never a letter
         ("region i n the blue block", "region i and the blue block"),
         ("on shelf u", "on shelf u"),
         ("an orange", "an orange"),  # "n" inside a word stays
@@ -101,6 +101,13 @@ def square():
          ["place YellowBlock -> RegionG"]),
         ("Hello mate, move the red block to region I, then the blue block to region J. Cheers, Ana",
          ["place RedBlock -> RegionI", "place BlueBlock -> RegionJ"]),
+        # h113's held-out handover wordings, written with the ones above and scored once at the end
+        ("Heya team, put the blue block on region I n the red block on region H.",
+         ["place BlueBlock -> RegionI", "place RedBlock -> RegionH"]),
+        ("Hi friend! could u move the yellow block to region J? Thanks in advance!",
+         ["place YellowBlock -> RegionJ"]),
+        ("Howdy everyone, place the blue block & the yellow block on region G. Many thanks!",
+         ["place BlueBlock -> RegionG", "place YellowBlock -> RegionG"]),
     ],
 )
 def test_handover_reads_the_shared_words(square, text, tasks):

@@ -34,13 +34,14 @@ from functools import cache, lru_cache
 from importlib import resources
 
 from nl2hltl2plan.language.content_words import categories
+from nl2hltl2plan.language.courtesy import courtesy_words
 from nl2hltl2plan.language.grounding import lexicon
 
 CUTOFF = 0.85  # one letter off in a five-letter word (4/5 matched is 0.8: "plate"/"place" stay apart)
 _WORD = re.compile(r"(?<![A-Za-z'])[A-Za-z]{4,}(?![A-Za-z'])")  # not a part of "doesn't"
 _POLITE = frozenset({"would", "could", "kindly", "please", "alright", "okay"})
 # the project's own word lists: their words are read as written ("wilco" is no "wilcox")
-_WORD_LISTS = ("content_words.txt", "free_order.txt", "handover_frame_words.txt", "courtesy.txt")
+_WORD_LISTS = ("content_words.txt", "free_order.txt", "handover_frame_words.txt")
 
 
 # a word that names something by a letter after it ("region n", "plan u"): there its "n" or "u" is that
@@ -90,6 +91,7 @@ def _known_words() -> frozenset[str]:
     lists: these are never respelt."""
     listed = (resources.files("nl2hltl2plan.language").joinpath(f).read_text() for f in _WORD_LISTS)
     words = {w for t in listed for w in re.findall(r"[a-z]+", t.lower())}
+    words |= courtesy_words("greeting") | courtesy_words("address")  # the frame words kept in courtesy.txt
     return frozenset(w for key in lexicon() for w in key) | words
 
 
