@@ -2023,3 +2023,35 @@ DEV2_H109: dict[int, list[str]] = {
         "Put the green apple and the orange on the yellow plate, then, only after those two, put the red "
         "apple and the carrot on the blue plate. Thanks, Sam"],
 }
+
+# h113's held-out batch (session 20): the words every world shares, greetings, forms of address and thanks
+# from the one list (courtesy.txt) and chat shorthand ("n", "&", "u", "w/") read by the shared spelling
+# step, with "respectively" and landmark-free prepositions; written with DEV_H113 and scored once at the end.
+VALID_H113: dict[int, list[str]] = {
+    1: ["Hey everyone! Put the green apple on the blue plate n the orange on the yellow plate. Much "
+        "appreciated!",
+        "yo robot, can u put the orange onto the yellow plate & the green apple onto the blue plate? ty"],
+    2: ["Hiya folks, the green apple, the orange and the red apple go on the pink, yellow and blue plates "
+        "respectively, in any order. Best, Sam",
+        "Greetings team! red apple on the blue plate + orange on the yellow plate + green apple on the pink "
+        "plate, any order u like. Thanks a bunch!"],
+    3: ["Hello crew, please put the carrot on the blue plate, the orange on the yellow plate, the green "
+        "apple on the green plate n the red apple on the pink plate, in any order. Thanks in advance!"],
+    4: ["Hey buddy, put the green apple n the orange on the yellow plate first, then the carrot & the red "
+        "apple on the blue plate. Many thanks!"],
+}
+
+# h113's development batch: written at the same time as VALID_H113, in its classes, read per sentence.
+DEV_H113: dict[int, list[str]] = {
+    1: ["Hiya folks! Put the green apple on the blue plate n the orange on the yellow plate. Thanks so "
+        "much!",
+        "hey mate, could u put the orange on the yellow plate & the green apple on the blue plate? cheers"],
+    2: ["Hey everyone, the green apple, the orange and the red apple go on the pink, yellow and blue plates "
+        "respectively, in any order. Much appreciated!",
+        "Hello team! green apple on the pink plate + red apple on the blue plate + orange on the yellow "
+        "plate, any order u like. Thank you!"],
+    3: ["Good morning crew, put the carrot on the blue plate, the orange on the yellow plate, the green "
+        "apple on the green plate n the red apple on the pink plate, in any order. Many thanks!"],
+    4: ["Hi there buddy, put the orange n the green apple on the yellow plate first, then the red apple & "
+        "the carrot on the blue plate. Thanks a lot!"],
+}

@@ -1,6 +1,7 @@
-"""The tabletop reader's chat forms (issue 28, h109): "n" / "&" / "+" for "and", "u" for "you", "in any
-order you find convenient", greetings, replies, thanks and sign-offs around the request, and "when both
-are on it"; with the near misses each rule must still refuse or leave as written."""
+"""The tabletop reader's chat forms (issue 28, h109): "in any order you find convenient", greetings,
+replies, thanks and sign-offs around the request, and "when both are on it" ("n" / "&" / "+" for "and"
+and "u" for "you" are every world's: test_shared_shorthand.py); with the near misses each rule must still
+refuse or leave as written."""
 
 from __future__ import annotations
 
@@ -21,14 +22,8 @@ _ORDERED = (sorted(_FIRST + _THEN), sorted((a, b) for a in _FIRST for b in _THEN
 @pytest.mark.parametrize(
     ("text", "read"),
     [
-        ("the carrot n the orange", "the carrot and the orange"),
-        ("carrot & orange", "carrot and orange"),
-        ("carrot+orange", "carrot+orange"),  # "+" only between spaced words here
-        ("carrot + orange", "carrot and orange"),
-        ("can u put it", "can you put it"),
-        ("an orange", "an orange"),  # "n" inside a word stays
         ("in any order you find most convenient", "in any order you like"),
-        ("whatever order u find easiest", "whatever order you like"),
+        ("whatever order you find easiest", "whatever order you like"),
         ("Hi there, put the carrot down.", "put the carrot down."),
         ("Hi! Sure thing! Put it down.", "Put it down."),
         ("Put it down. Thank you so much!", "Put it down."),

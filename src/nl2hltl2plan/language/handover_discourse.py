@@ -45,10 +45,10 @@ from __future__ import annotations
 
 import re
 from functools import lru_cache
-from importlib import resources
 from typing import NamedTuple
 
-from nl2hltl2plan.language.content_words import phrase_list_pattern, vocabulary, word_categories
+from nl2hltl2plan.language.content_words import vocabulary, word_categories
+from nl2hltl2plan.language.courtesy import courtesy_pattern, courtesy_words
 from nl2hltl2plan.language.grammar.everyday import HESITATION
 from nl2hltl2plan.language.handover_words import DONE, GERUND, SWAP, TOUCH, VERB
 
@@ -65,13 +65,11 @@ MEANING = re.compile(
 
 @lru_cache(maxsize=1)
 def frame_words() -> dict[str, frozenset[str]]:
-    """category -> words (phrases joined by '_'), from `handover_frame_words.txt`; its thanks take in the
-    courtesy words of `courtesy.txt` (one list of them for the handover reader)."""
+    """category -> words (phrases joined by '_'), from `handover_frame_words.txt`; the greetings, forms of
+    address and courtesy words (thanks) are `courtesy.txt`'s (one list of them for every reader)."""
     words = word_categories("handover_frame_words.txt")
-    lines = resources.files("nl2hltl2plan.language").joinpath("courtesy.txt").read_text().splitlines()
-    said = " ".join(line.partition(":")[2] for line in lines if line.startswith("word:"))
-    courtesy = re.findall(r"[a-z]+", said)
-    return {**words, "thanks": words["thanks"] | frozenset(courtesy)}
+    courtesy = {kind: courtesy_words(kind) for kind in ("greeting", "address")}
+    return {**words, **courtesy, "thanks": words["thanks"] | courtesy_words("word")}
 
 
 # categories whose words are frame words only in one place of a fragment (see the words file)
@@ -112,7 +110,7 @@ def _frame() -> _Frame:
 
 # a support agent's reply around the request ("Happy to help!", "Thanks for reaching out!": `courtesy.txt`'s
 # `reply`), said of the fragment as `empty` sees it (lower case, an apostrophe a space: "there s")
-_REPLY = phrase_list_pattern("courtesy.txt", "reply").replace("'", r"\s*")
+_REPLY = courtesy_pattern("reply").replace("'", r"\s*")
 _ACTION = re.compile(rf"\b(?:{VERB}|{GERUND}|{DONE}|{SWAP}|{TOUCH})\b")
 # the team as a whole, addressed ("okay robot", "attention all arms"): one arm by its letter says who acts,
 # and after a preposition the arms are a place ("by the arms", "to the arms")

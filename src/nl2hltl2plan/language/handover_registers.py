@@ -56,7 +56,7 @@ from __future__ import annotations
 import re
 from collections.abc import Callable
 
-from nl2hltl2plan.language.content_words import phrase_list_pattern
+from nl2hltl2plan.language.courtesy import courtesy_pattern
 from nl2hltl2plan.language.handover_words import GERUND_VERBS, NEGATED_GERUNDS, SWAP, VERB
 
 _BLOCK = r"(?:the\s+)?(?:red|blue|yellow)(?:\s+(?:block|one|cube))?"
@@ -375,7 +375,7 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     ),
     # a courtesy word (`courtesy.txt`: "kindly", "pls", "thx", "thank you") is "please" (dropped wherever it
     # stands, so a step word still reaches its verb: "after all that is done, kindly put ...")
-    (rf"\b{phrase_list_pattern('courtesy.txt', 'word')}\b", "please"),
+    (rf"\b{courtesy_pattern('word')}\b", "please"),
     # a command's label: "Execute: transfer ...", "Then perform: ...", "Execute at any time: ..." (a verb with
     # no object of its own before a colon asks for what follows)
     (r"\b(?:execute|perform|carry\s+out)\s*(at\s+any\s+time\s*)?:", r"please \1 ,"),

@@ -30,7 +30,7 @@ from __future__ import annotations
 import re
 
 from nl2hltl2plan.errors import HTTError
-from nl2hltl2plan.language.content_words import phrase_list_pattern
+from nl2hltl2plan.language.courtesy import courtesy_pattern
 from nl2hltl2plan.language.grammar.everyday import HESITATION
 from nl2hltl2plan.language.handover_regex import apply, rewrite_table
 from nl2hltl2plan.language.handover_words import GERUND_VERBS, NEGATED_GERUNDS, VERB
@@ -52,7 +52,7 @@ _CONTRACTIONS = (
     (r"\b(?:kinda|sorta)\b", " "),
 )
 _HESITATION = rf"(?:{HESITATION}|ah+)"
-_POLITE_TAG = phrase_list_pattern("courtesy.txt", "clause")  # the courtesy frames (`courtesy.txt`)
+_POLITE_TAG = courtesy_pattern("clause")  # the courtesy frames (`courtesy.txt`)
 _INTERJECTION = r"(?:okay|ok|alright|all\s+right|right|so|well|now|oh|hi|hey|hello|listen|look|yeah|yep|yup)"
 _MARKER = r"(?:i\s+mean|i\s+meant|sorry|or\s+rather|no\s+wait|wait(?=\s*,)|~)"
 # words that a restated phrase may add or leave out without saying something else
@@ -99,7 +99,7 @@ _FILLERS: tuple[tuple[str, str], ...] = (
     # a polite tag that opens or closes a clause: "if you don't mind", "if that's okay", "if you would (be
     # so kind)", "when you get a chance" (no time of any goal: the plan is as short as it can be anyway)
     (rf"(^|,)\s*{_POLITE_TAG}\s*(?=,|$)", r"\1 "),
-    (rf"\b{phrase_list_pattern('courtesy.txt', 'wish')}\b", "please"),  # courtesy.txt's polite wishes
+    (rf"\b{courtesy_pattern('wish')}\b", "please"),  # courtesy.txt's polite wishes
     (r"^\s*(?:i|we)\s+would\s+(?:probably\s+|maybe\s+)?have\s+you\s+", "please "),
     # a hedge adverb in a clause with a verb ("should probably go", "ideally the red block gets placed ..."):
     # it softens a request; in a fragment without one ("maybe the red block first?") it may ask or suggest,

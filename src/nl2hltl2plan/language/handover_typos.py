@@ -40,8 +40,7 @@ SHORT_TYPOS = {
     "anythin": "anything",
     "obj": "object",
     "objs": "objects",
-    "u": "you",
-}
+}  # ("u" for "you" is every world's chat shorthand, read before: `spelling.shorthand_read`)
 
 
 def typo_table() -> dict[str, str]:

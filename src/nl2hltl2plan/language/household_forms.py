@@ -9,8 +9,10 @@ an action, and applies only where its parts name what it needs:
   sink." is "Heat the mug and put it in the sink." (the question names one thing and nothing else, and the
   sentence after it says "it" or "them");
 - a greeting set apart at the start of a sentence (`ungreeted`): "Hey, when you're done, put ..." is "when
-  you're done, put ..." (the greeting words are `tabletop_chat.txt`'s); the grammar read the greeting as a
-  step that "when you're done" waits on, and check 1 named the greeting and the order word;
+  you're done, put ..." (the greeting words are `courtesy.txt`'s); the grammar read the greeting as a
+  step that "when you're done" waits on, and check 1 named the greeting and the order word (the opening
+  greetings every reader drops, `courtesy.without_greetings`, leave one before a clause that waits: with
+  no task before it, "when you're done" waits on none of the instruction's, as the grammar reads it);
 - a treatment and a "respectively" list after it (`treated_lists`): "wash the mug and the plate and put
   them in the sink and the cabinet respectively" is "put the washed mug and the washed plate in the sink
   and the cabinet respectively", which `respectively.distributed` writes out pair by pair.
@@ -29,7 +31,7 @@ from __future__ import annotations
 
 import re
 
-from nl2hltl2plan.language.content_words import phrase_list_pattern
+from nl2hltl2plan.language.courtesy import courtesy_pattern
 from nl2hltl2plan.language.grounding import find_mentions
 
 _NP = r"(?:(?:the|a|an|my|your|this|that)\s+)?[a-z]+(?:\s+[a-z]+){0,2}"
@@ -62,7 +64,7 @@ _TREATED = re.compile(
 )
 _ITEM = re.compile(r"\s*,\s*(?:and\s+)?|\s+and\s+", re.I)
 _GREETING = re.compile(
-    rf"(?P<lead>^|(?<=[.!?])\s+)(?:{phrase_list_pattern('tabletop_chat.txt', 'greeting')}\s*)+[!.,]+\s*"
+    rf"(?P<lead>^|(?<=[.!?])\s+)(?:{courtesy_pattern('greeting', 'address', 'greeting_with')}\s*)+[!.,]+\s*"
     r"(?=[a-z])",
     re.I,
 )

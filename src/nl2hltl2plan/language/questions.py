@@ -40,6 +40,7 @@ from importlib import resources
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.content_words import categories, phrase_list_pattern, phrase_words
 from nl2hltl2plan.language.grounding import find_mentions
+from nl2hltl2plan.language.prepositions import PLACE_OR_LANDMARK, preposition_pattern
 
 # "Q:", "Question 2:", "A:", "Answer:"; a label opens the text or follows a sentence's end or a blank
 _LABEL = re.compile(r"(?:^|(?<=[\s.!?;]))(?P<who>q|question|a|answer)\s*\d*\s*:\s*", re.I)
@@ -57,7 +58,8 @@ _WHERE = (
     re.compile(rf"^(?P<obj>{_DET}.+?) (?:goes|go|should go|belongs) where$", re.I),
     re.compile(r"^where (?:do|would) you (?:want|like|need) (?P<obj>.+?)(?: to go| put| placed)?$", re.I),
 )
-_PREP = r"(?:in|into|inside|on|onto|on top of|to|under|at|by|beside|next to|in front of|behind|towards?)"
+# a place's preposition: a destination or a landmark (the grammar's lists, `prepositions`)
+_PREP = preposition_pattern(PLACE_OR_LANDMARK)
 # what goes somewhere: the gap is its object
 _WHAT = (
     re.compile(rf"^what {_AUX}? ?(?:go|goes|belong|belongs|be put|be placed)\s(?P<place>{_PREP} .+)$", re.I),

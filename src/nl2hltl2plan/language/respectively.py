@@ -16,8 +16,9 @@ import re
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.grounding import find_mentions
+from nl2hltl2plan.language.prepositions import ONE_PLACE, preposition_pattern
 
-_PREP = r"(?:in|into|inside|on|onto|on\s+top\s+of|to|under|at)"
+_PREP = preposition_pattern(ONE_PLACE)  # the grammar's prepositions of one place each (`prepositions`)
 # a clause's verb, its things, a preposition and its places, closing with "respectively"
 _LIST = re.compile(
     rf"(?P<verb>\b[a-z]+)\s+(?P<things>[^.;!?]+?)\s+(?P<prep>{_PREP})\s+(?P<places>[^.;!?]+?)"

@@ -26,6 +26,7 @@ from dataclasses import dataclass
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.content_words import categories
 from nl2hltl2plan.language.grounding import Mention, find_mentions, tokens
+from nl2hltl2plan.language.prepositions import PLACE_OR_LANDMARK, preposition_pattern
 from nl2hltl2plan.worlds.world import World
 
 _PAUSE = r"(?:\s*(?:,|;|:|\.{2,}|…|—|–|\s-+)\s*|\s+)"
@@ -38,7 +39,8 @@ _MARKER = re.compile(
     r"(?:\s*[,:;.…—–-]+)?\s*",
     re.I,
 )
-_PREP = re.compile(r"^(?:in|into|inside|on|onto|on\s+top\s+of|to|under|at|beside|next\s+to)\s", re.I)
+# a place with its preposition: a destination or a landmark (the grammar's lists, `prepositions`)
+_PREP = re.compile(rf"^{preposition_pattern(PLACE_OR_LANDMARK)}\s", re.I)
 _DET = re.compile(r"^(?:the|a|an|one\s+of\s+the|my|your)\s+", re.I)
 _ARTICLE = re.compile(r"\b(?:the|a|an|one\s+of\s+the|my|your)\s+$", re.I)
 # what a correction says runs to its clause's end: a sentence's end, a comma, an order word, or an "and"

@@ -15,6 +15,15 @@ text, so a misspelt name that a reading does not use is named, never passed over
 A world with a closed vocabulary may ask for more (`closed_respelt`): the tabletop world respells against
 its nine name words and, as its one order form is groups in turn, its order words too.
 English is pyspellchecker's frequency list; it loads only when a word passes the first tests.
+
+Chat shorthand (`shorthand_read`, issue 28) is read in every world before any reader sees the text
+(`translate`): "n", "&" and "+" between words are "and", "u" is "you", "w/" is "with" and "w/o" "without".
+A lone "n" or "u" after a word that names something by a letter ("region n", "plan u", "option n") stays.
+
+>>> shorthand_read("can u put the mug n the apple in the sink w/ the lid")
+'can you put the mug and the apple in the sink with the lid'
+>>> shorthand_read("put it on region n and the cup on shelf u")
+'put it on region n and the cup on shelf u'
 """
 
 from __future__ import annotations
@@ -25,6 +34,7 @@ from functools import cache, lru_cache
 from importlib import resources
 
 from nl2hltl2plan.language.content_words import categories
+from nl2hltl2plan.language.courtesy import courtesy_words
 from nl2hltl2plan.language.grounding import lexicon
 
 CUTOFF = 0.85  # one letter off in a five-letter word (4/5 matched is 0.8: "plate"/"place" stay apart)
@@ -32,6 +42,40 @@ _WORD = re.compile(r"(?<![A-Za-z'])[A-Za-z]{4,}(?![A-Za-z'])")  # not a part of 
 _POLITE = frozenset({"would", "could", "kindly", "please", "alright", "okay"})
 # the project's own word lists: their words are read as written ("wilco" is no "wilcox")
 _WORD_LISTS = ("content_words.txt", "free_order.txt", "handover_frame_words.txt")
+
+
+# a word that names something by a letter after it ("region n", "plan u"): there its "n" or "u" is that
+# letter, never "and" or "you", unless a determiner follows ("region i n the blue block"). Words that end a
+# place ("the yellow plate n the orange", "the table n the sink") are no such words: they name by colour or
+# kind, never by a letter
+_BY_LETTER = frozenset(
+    "region regions arm arms row column col letter plan option step part section zone area slot position "
+    "grid cell point setup case line page size grade type group number no square tile station bay level "
+    "unit".split()
+)
+# "u" after these is a letter too ("shelf u", "drawer u"): "u" is never "and", so a place that may be named
+# by a letter takes it ("the plate u like": plates and blocks are named by colour)
+_BY_LETTER_U = _BY_LETTER | frozenset("shelf drawer cabinet box bin spot room door".split())
+_DETERMINER = re.compile(r"\s*(?:the|a|an|my|your|some|this|that|these|those)\b", re.I)
+_AND = re.compile(r"(?<=\w)\s+(?P<word>n|&|\+)\s+(?=\w)|\s*(?P<amp>&)\s*(?=\w)")
+_YOU = re.compile(r"(?<![\w'/-])[uU](?![\w'/-])")
+_WITH = re.compile(r"(?<![\w/])w/(?P<out>o(?![\w/]))?\s*(?=[A-Za-z])", re.I)
+
+
+def shorthand_read(text: str) -> str:
+    """`text` with its chat shorthand written out (see the module docstring)."""
+
+    def letter_named(m: re.Match[str], labels: frozenset[str]) -> bool:  # "region n": the letter names it
+        before = re.search(r"([A-Za-z]+)\W*$", text[: m.start()])
+        labelled = before is not None and before[1].lower() in labels
+        return labelled and not _DETERMINER.match(text, m.end())
+
+    def joined(m: re.Match[str]) -> str:
+        return m[0] if m["word"] == "n" and letter_named(m, _BY_LETTER) else " and "
+
+    text = _AND.sub(joined, text)
+    text = _YOU.sub(lambda m: m[0] if letter_named(m, _BY_LETTER_U) else "you", text)
+    return _WITH.sub(lambda m: "without " if m["out"] else "with ", text)
 
 
 @cache
@@ -47,6 +91,7 @@ def _known_words() -> frozenset[str]:
     lists: these are never respelt."""
     listed = (resources.files("nl2hltl2plan.language").joinpath(f).read_text() for f in _WORD_LISTS)
     words = {w for t in listed for w in re.findall(r"[a-z]+", t.lower())}
+    words |= courtesy_words("greeting") | courtesy_words("address")  # the frame words kept in courtesy.txt
     return frozenset(w for key in lexicon() for w in key) | words
 
 

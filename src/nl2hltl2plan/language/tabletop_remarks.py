@@ -25,12 +25,8 @@ from __future__ import annotations
 
 import re
 
-from nl2hltl2plan.language.content_words import (
-    categories,
-    free_order_phrase,
-    phrase_list_pattern,
-    phrase_words,
-)
+from nl2hltl2plan.language.content_words import categories, free_order_phrase
+from nl2hltl2plan.language.courtesy import courtesy_pattern, courtesy_words
 from nl2hltl2plan.language.statements import asked_before
 
 # the shared list (free_order.txt), anywhere in the text: "in any order", "the order is up to you", also
@@ -41,8 +37,8 @@ FREE_ORDER = re.compile(r"\b" + free_order_phrase().replace(r"\s+", r",?\s+") + 
 # (read word by word, whatever their phrasing: every word must belong to the clause's kind)
 _SENTENCE_PIECE = re.compile(r"[^.;:!?()\n]+")
 _CLAUSE = re.compile(r"[^,.;:!?()\n]+?(?=\s+-\s+|[,.;:!?()\n]|$)")
-_COURTESY_WORDS = phrase_words("courtesy.txt", "courtesy_word")
-_UNHURRIED = re.compile(rf"\b{phrase_list_pattern('courtesy.txt', 'unhurried')}\b")
+_COURTESY_WORDS = courtesy_words("courtesy_word")
+_UNHURRIED = re.compile(rf"\b{courtesy_pattern('unhurried')}\b")
 TIDY_VERB = r"(?:sort|organi[sz]e|arrange|tidy|handle|do|fix|set\s+up|lay\s+out)"
 _THE_THINGS = (
     r"(?:these|this|that|them|things|stuff|everything|the\s+(?:items|things|fruits?|plates|following))"
@@ -124,7 +120,7 @@ def remarks_read(text: str, mention: re.Pattern[str], name_words: frozenset[str]
     return re.sub(r"[ \t]+([,.;:!?])", r"\1", re.sub(r"[ \t]+", " ", text)).strip()
 
 
-_YOUR_TIME = phrase_words("courtesy.txt", "your_time")
+_YOUR_TIME = courtesy_words("your_time")
 _YOU = frozenset({"you", "you're", "youre", "u"})
 
 
@@ -156,7 +152,7 @@ _ORDER_LABEL = re.compile(
 _ASKING = frozenset("i i'd we we'd want need would to".split())  # "I'd like you to sort the fruit:"
 # a clause that only urges, closes or announces ("make it so", "off you go", "quick one")
 _URGING = re.compile(
-    rf"^(?:{phrase_list_pattern('courtesy.txt', 'urging')}|{phrase_list_pattern('courtesy.txt', 'aside')})$"
+    rf"^{courtesy_pattern('urging', 'aside')}$"
 )
 # a frame that opens the text: a short clause that names nothing and has no word that could say an
 # action, order, count, negation, condition, place or manner (check 1's categories, and the words below):

@@ -26,7 +26,8 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable
 
-from nl2hltl2plan.language.content_words import free_order_remarks, phrase_list_pattern
+from nl2hltl2plan.language.content_words import free_order_remarks
+from nl2hltl2plan.language.courtesy import courtesy_pattern
 from nl2hltl2plan.language.grounding import sentence_start
 from nl2hltl2plan.language.statements import WHERE_VERB, asked_before
 from nl2hltl2plan.language.tabletop_remarks import FREE_ORDER, TIDY_VERB, remarks_read
@@ -113,7 +114,7 @@ _CORRECTION = re.compile(
 
 def _polite(kind: str) -> str:
     """The phrases of one kind of `courtesy.txt`, as one regular expression."""
-    return phrase_list_pattern("courtesy.txt", kind)
+    return courtesy_pattern(kind)
 
 
 _POLITE = re.compile(rf"\b(?:{_polite('wish')}|{_polite('state_wish')})\b")  # "it would please me if"

@@ -47,6 +47,7 @@ from nl2hltl2plan.language.negations import (
 from nl2hltl2plan.language.parsers import PARSERS, Parser
 from nl2hltl2plan.language.result import Ambiguity, LanguageResult
 from nl2hltl2plan.language.spec_builder import GenerateLTL, build_spec
+from nl2hltl2plan.language.spelling import shorthand_read
 from nl2hltl2plan.language.state_tasks import StateReader, guessed_slot, light_orders, reread, state_orderings
 from nl2hltl2plan.language.suggest import not_understood, suggestion_text
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter
@@ -111,8 +112,9 @@ def translate(
     # each line's own spaces collapsed, its indentation kept (a nested list's sub-item says what it is under)
     indent = [line[: len(line) - len(line.lstrip())] for line in instruction.splitlines()]
     # "Goal - ...", "Condition - none": labelled lines read alike in every world (`headings`)
+    # chat shorthand ("n", "&", "u", "w/") read as the words it stands for, alike in every world (`spelling`)
     lines = [
-        i + unlabelled(line)
+        i + shorthand_read(unlabelled(line))
         for i, line in zip(indent, instruction.splitlines(), strict=True)
         if unlabelled(line)
     ]

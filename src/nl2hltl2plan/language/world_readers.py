@@ -33,6 +33,8 @@ from collections.abc import Callable
 from typing import Protocol
 
 from nl2hltl2plan.language.content_words import Unread
+from nl2hltl2plan.language.courtesy import without_greetings
+from nl2hltl2plan.language.grounding import find_mentions
 from nl2hltl2plan.language.headings import answered
 from nl2hltl2plan.language.household_forms import household_forms
 from nl2hltl2plan.language.household_words import contents_hint, descriptive_names
@@ -106,17 +108,17 @@ class SharedGrammar:
 
 class _HouseholdReader(SharedGrammar):
     """The household (ALFRED) floor plans: the shared grammar, with "Q: ... A: ..." read as the
-    instruction the answers state (`headings.answered`), colon lists, topic questions and treated
-    "respectively" lists written out (`household_forms`), descriptive names read with the floor plan's
-    types (`household_words`), self-corrections applied (`self_corrections.corrected`), "...
-    respectively" lists written out (`respectively.distributed`) and an order said by step number applied
-    (`numbered_steps.step_order`)."""
+    instruction the answers state (`headings.answered`), greetings and thanks dropped
+    (`courtesy.without_greetings`), colon lists, topic questions and treated "respectively" lists written
+    out (`household_forms`), descriptive names read with the floor plan's types (`household_words`),
+    self-corrections applied (`self_corrections.corrected`), "... respectively" lists written out
+    (`respectively.distributed`) and an order said by step number applied (`numbered_steps.step_order`)."""
 
     def __init__(self, world: World) -> None:
         self.world = world
 
-    def as_read(self, lines: list[str]) -> str:
-        return answered(" ".join(lines))
+    def as_read(self, lines: list[str]) -> str:  # greetings and thanks as every reader drops them
+        return without_greetings(answered(" ".join(lines)), lambda name: bool(find_mentions(name.lower())))
 
     def prepared(self, instruction: str) -> str:
         named = descriptive_names(household_forms(instruction), set(self.world.object_types()))

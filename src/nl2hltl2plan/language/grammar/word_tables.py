@@ -9,6 +9,7 @@ import re
 
 from nl2hltl2plan.language import grounding
 from nl2hltl2plan.language.content_words import free_order_phrase
+from nl2hltl2plan.language.courtesy import courtesy_pattern
 
 # ----- verbs ---------------------------------------------------------------------------------------
 # class: place (move something somewhere), pick (take hold), clean/heat/cool/slice (change state),
@@ -517,9 +518,8 @@ _FREE_T = (
 )
 TRAILING: list[tuple[re.Pattern[str], str]] = [
     (re.compile(r"\s*,?\s*(?:in\s+(?:the\s+)?reverse(?:\s+order)?|backwards)\s*$", _F), IN_REVERSE),
-    # a closing courtesy: ", cheers", ", thanks!", ", thank you"
-    (re.compile(r"\s*,?\s*(?:cheers|thanks(?:\s+a\s+lot)?|thank\s+you(?:\s+very\s+much)?|please)\s*$", _F),
-     ""),
+    # a closing courtesy: ", cheers", ", thanks!", ", thank you" (`courtesy.txt`'s closing thanks)
+    (re.compile(rf"\s*,?\s*(?:{courtesy_pattern('closing')}|please)\s*$", _F), ""),
     (re.compile(rf"\s*,?\s*(?:also\s+)?{_FREE_T}\s*$", _F), FREE),
     (
         re.compile(
