@@ -42,7 +42,9 @@ _ANOTHER = frozenset({"a", "an", "another", "other", "second", "third", "differe
 _DEFINITE = frozenset({"the", "this", "that", "these", "those", "same"})
 _BACK = frozenset({"it", "them", "its"})
 # words that say how many a plural is ("two forks", "all the forks", "both forks")
-_HOW_MANY = frozenset({"all", "every", "each", "both", "pair", "couple", "few", "several", "some", "many"})
+_HOW_MANY = frozenset(
+    {"all", "every", "each", "both", "pair", "couple", "few", "several", "some", "many", "half", "most", "rest"}
+)
 
 
 def check_referents(
