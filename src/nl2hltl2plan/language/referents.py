@@ -10,8 +10,9 @@ as is a word that is one type's name read as another type (`exact_names`: "towel
   "the other kettle", "a second kettle" name another thing and are left as they are, and so are the
   treatments ALFRED's annotators describe as two steps ("put the plate in the sink and then in the
   cabinet", one clean_place, a single task);
-- a category plural: "wash the dishes", "put the utensils in the drawer" name several types
-  (`category_words.txt`), never one object (`categories_named`);
+- a category plural read as one kind: "wash the dishes" names several types (`category_words.txt`), never
+  Plates alone (`categories_named`); "utensils", which the lexicon reads as any of its kinds (the paper's
+  dishwasher task: two utensils, each a Fork, Spoon, ButterKnife or Knife), is left as read;
 - a plural of a type the scene holds more of than the task takes: "the forks" where the scene has 3
   read as ALFRED's pick-two (2 of them). In non-excluded ALFRED training annotations of pick-two tasks, 2081
   of 2419 say the number ("two forks", "both"), 59 a bare "the forks": a plural without a number is not
@@ -32,6 +33,7 @@ from nl2hltl2plan.language.grounding import (
     camel_words,
     exact_name_conflict,
     find_mentions,
+    lookup,
     phrase_lines,
     tokens,
 )
@@ -43,7 +45,7 @@ _DEFINITE = frozenset({"the", "this", "that", "these", "those", "same"})
 _BACK = frozenset({"it", "them", "its"})
 # words that say how many a plural is ("two forks", "all the forks", "both forks")
 _HOW_MANY = frozenset(
-    {"all", "every", "each", "both", "pair", "couple", "few", "several", "some", "many", "half", "most", "rest"}
+    "all every each both pair couple few several some many half most rest".split()
 )
 
 
@@ -159,6 +161,8 @@ def categories_named(
         covers = _category_words().get(w)
         if covers is None or not taken & set(covers) or _counted(words[max(0, i - 2) : i]):
             continue
+        if _as_category(w, covers, tasks):  # the paper's "utensils": any of the kinds, not one of them
+            continue
         if _after_preposition(words[:i]):  # "next to the other food": a landmark, no task's object
             continue
         held = instances or {}
@@ -167,6 +171,15 @@ def categories_named(
             f"{w!r} names several kinds of thing ({', '.join(present)} in {scene}): name which and how "
             f"many (\"the plates\", \"two forks\", \"all the bowls\")"
         )
+
+
+def _as_category(word: str, covers: tuple[str, ...], tasks: Sequence[BaseTaskSpec]) -> bool:
+    """Does a task read the category as such: a word the lexicon reads as any of its kinds ("utensils": a
+    Fork, Spoon, ButterKnife or Knife, an ambiguity the user may settle), for several things (the paper's
+    dishwasher task: two utensils)? Not "dishes" as Plates, nor "the silverware" as one knife."""
+    entry = lookup(word)
+    several = any(set(t.object) & set(covers) and t.count > 1 for t in tasks)
+    return entry is not None and entry.all_ and several
 
 
 def _after_preposition(before: list[str]) -> bool:
@@ -186,6 +199,9 @@ def plural_of_several(
     for m in find_mentions(instruction):
         if not m.plural or m.entry.generic or _counted(words[max(0, m.start - 3) : m.start]):
             continue
+        covers = _category_words().get(m.surface.lower())
+        if covers and _as_category(m.surface.lower(), covers, tasks):
+            continue  # a category read as such (the paper's dishwasher task: "plates, mugs and utensils")
         for task in tasks:
             types = set(task.object) & set(m.entry.types)
             held = sum(instances.get(t, 0) for t in types)
