@@ -1,8 +1,8 @@
 """Which things the words of an instruction refer to, where the type-level spec cannot say it (issue 23).
 
 A base task's atoms name types ("pickup(Kettle)"), and each leaf's objects are its own (docs/planning.md,
-"The model"): two tasks cannot be kept to one instance, nor a task to every instance a word names. Three wordings
-would be read otherwise than meant, so they are refused (HTTError, exit 2, one line naming the words),
+"The model"): two tasks cannot be kept to one instance, nor a task to every instance a word names. Three
+wordings would be read otherwise than meant, so they are refused (HTTError, exit 2, one line naming them),
 as is a word that is one type's name read as another type (`exact_names`: "towel", a Towel or a HandTowel):
 
 - one thing moved twice: "put the kettle on the stove, then put the kettle (it) in the sink" reads two
