@@ -43,6 +43,7 @@ from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.language.accounting import account
 from nl2hltl2plan.language.grounding import scene_types
 from nl2hltl2plan.language.learned.inference import parse_instruction
+from nl2hltl2plan.language.referents import check_referents
 from nl2hltl2plan.language.scoring import match
 from nl2hltl2plan.language.translate import apply_choices, scene_instances, top_candidates, translate
 from nl2hltl2plan.suites.alfred.structure_validation import rows_of_set
@@ -95,6 +96,7 @@ def classify(row: dict[str, Any]) -> tuple[str, str]:
         instances = scene_instances(world) if world is not None else None
         scene = world.name if world is not None else "the scene"
         found = [str(u) for u in account(row["instruction"], p.tasks, p.before, instances, scene)]
+        check_referents(row["instruction"], p.tasks, p.before, instances, scene)  # as `translate._finish`
     except Nl2Hltl2PlanError as exc:
         return "error", str(exc)
     unread = list(p.unparsed) + found

@@ -393,6 +393,32 @@ class Grounder:
         return got
 
 
+def exact_name_conflict(entry: Entry, present: list[str], scene: str = "the scene") -> str | None:
+    """Why a word read as its entry's first type is refused when it is exactly the name of another type
+    of the scene (`present`, in the lexicon's order), else None (check 1 asks it of each reading,
+    `referents.exact_names`; words such as "table" that accept every type are not asked). ALFRED's annotators
+    call a HandTowel "towel" (126 annotations of non-excluded training tasks on a HandTowel; no such task
+    is on a Towel), yet every ALFRED bathroom has a Towel too: neither reading is safe (docs/language.md)."""
+    named = next((t for t in present if entry.phrase in (camel_words(t), t.lower())), None)
+    if entry.all_ or named is None or present.index(named) == 0:
+        return None
+    first = present[0]
+    say = " or ".join(repr(_own_name(t, entry.phrase)) for t in (named, first))
+    return f"{entry.phrase!r} is both the {named} of {scene} and ALFRED's word for its {first}: say {say}"
+
+
+def _own_name(type_: str, phrase: str) -> str:
+    """A phrase of the lexicon that reads `type_` first and is not `phrase` (one sharing its last word
+    preferred: "bath towel" for a Towel), else the type's own name in words."""
+    own = [
+        " ".join(k)
+        for k, (e, plural) in lexicon().items()
+        if not plural and e.canonical == type_ and " ".join(k) != phrase and not e.generic
+    ]
+    last = phrase.split()[-1]
+    return min(own, key=lambda p: (last not in p.split(), len(p)), default=camel_words(type_))
+
+
 # ----- roles: which of a word's types can do what the task asks ------------------------------------------
 AffordanceLookup = Callable[[str], "Affordances | None"]
 

@@ -45,6 +45,7 @@ from nl2hltl2plan.language.negations import (
     spec_constraints,
 )
 from nl2hltl2plan.language.parsers import PARSERS, Parser
+from nl2hltl2plan.language.referents import check_referents
 from nl2hltl2plan.language.result import Ambiguity, LanguageResult
 from nl2hltl2plan.language.spec_builder import GenerateLTL, build_spec
 from nl2hltl2plan.language.spelling import shorthand_read
@@ -219,7 +220,10 @@ def _finish(
     actions: ActionSource,
     build: bool,
 ) -> LanguageResult:
-    """Leaf actions (recipes or LLM action completion), then Algorithm 1."""
+    """What the words refer to (`referents`: one thing moved twice, "the dishes", "the towel"), then leaf
+    actions (recipes or LLM action completion), then Algorithm 1."""
+    instances = scene_instances(world) if isinstance(world, World) else None
+    check_referents(res.instruction, res.tasks, res.before, instances, world.name if world else "the scene")
     mode = actions if actions != "auto" else ("recipe" if backend in PARSERS else "llm")
     found = ACTION_SOURCES[mode](res, world, client)
     leaf_specs = res.leaf_specs if found is None else found

@@ -1,0 +1,222 @@
+"""Which things the words of an instruction refer to, where the type-level spec cannot say it (issue 23).
+
+A base task's atoms name types ("pickup(Kettle)"), and each leaf's objects are its own (docs/planning.md,
+"The model"): two tasks cannot be kept to one instance, nor a task to every instance a word names. Three
+wordings would be read otherwise than meant, so they are refused (HTTError, exit 2, one line naming them),
+as is a word that is one type's name read as another type (`exact_names`: "towel", a Towel or a HandTowel):
+
+- one thing moved twice: "put the kettle on the stove, then put the kettle (it) in the sink" reads two
+  tasks that two different kettles satisfy (`moved_twice`). "A potato ... a potato", "another kettle",
+  "the other kettle", "a second kettle" name another thing and are left as they are, and so are the
+  treatments ALFRED's annotators describe as two steps ("put the plate in the sink and then in the
+  cabinet", one clean_place, a single task);
+- a category plural read as one kind: "wash the dishes" names several types (`category_words.txt`), never
+  Plates alone (`categories_named`); "utensils", which the lexicon reads as any of its kinds (the paper's
+  dishwasher task: two utensils, each a Fork, Spoon, ButterKnife or Knife), is left as read;
+- a plural of a type the scene holds more of than the task takes: "the forks" where the scene has 3
+  read as ALFRED's pick-two (2 of them). In non-excluded ALFRED training annotations of pick-two tasks, 2081
+  of 2419 say the number ("two forks", "both"), 59 a bare "the forks": a plural without a number is not
+  ALFRED's way of saying two, and "two of three" is not what "the forks" says (`plural_of_several`).
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Mapping, Sequence
+from functools import lru_cache
+
+from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.language.content_words import DETERMINERS, LOCATIVE, categories
+from nl2hltl2plan.language.counts import count_value
+from nl2hltl2plan.language.grounding import (
+    Mention,
+    camel_words,
+    exact_name_conflict,
+    find_mentions,
+    lookup,
+    phrase_lines,
+    tokens,
+)
+from nl2hltl2plan.language.task_specs import BaseTaskSpec
+
+# words before a noun that make it another thing than one named before ("another kettle", "a second one")
+_ANOTHER = frozenset({"a", "an", "another", "other", "second", "third", "different", "new", "one", "more"})
+_DEFINITE = frozenset({"the", "this", "that", "these", "those", "same"})
+_BACK = frozenset({"it", "them", "its"})
+# words that say how many a plural is ("two forks", "all the forks", "both forks")
+_HOW_MANY = frozenset(
+    "all every each both pair couple few several some many half most rest".split()
+)
+
+
+def check_referents(
+    instruction: str,
+    tasks: Sequence[BaseTaskSpec],
+    before: Sequence[tuple[str, str]],
+    instances: Mapping[str, int] | None,
+    scene: str,
+) -> None:
+    """Raise HTTError for one thing moved twice, a category plural read as one type, or a plural read as
+    fewer things than the scene holds (see the module's docstring)."""
+    exact_names(instruction, tasks, instances, scene)
+    moved_twice(instruction, tasks, before)
+    categories_named(instruction, tasks, instances, scene)
+    plural_of_several(instruction, tasks, instances, scene)
+
+
+def exact_names(
+    instruction: str, tasks: Sequence[BaseTaskSpec], instances: Mapping[str, int] | None, scene: str
+) -> None:
+    """A word that is one type's own name, read as another type of the scene it is a synonym of ("towel"
+    read as a HandTowel where the scene has a Towel too): refused naming both, unless another word of
+    the instruction names that other type itself ("the towel ... and the hand towel"): the text decides."""
+    if not instances:
+        return
+    mentions = find_mentions(instruction)
+    used = {t for task in tasks for t in [*task.object, *(task.receptacle or ()), *(task.container or ())]}
+    for m in mentions:
+        present = [t for t in m.entry.types if instances.get(t)]
+        clash = exact_name_conflict(m.entry, present, scene)
+        first = present[0] if present else ""
+        if clash and first in used and not any(o is not m and o.entry.types[0] == first for o in mentions):
+            raise HTTError(clash)
+
+
+def moved_twice(
+    instruction: str, tasks: Sequence[BaseTaskSpec], before: Sequence[tuple[str, str]] = ()
+) -> None:
+    """Two tasks that move things of one type to different places, where the later one refers back to
+    the earlier one's thing by the same word ("the kettle" after "the kettle" or "a kettle") or by "it":
+    the spec cannot keep both to one instance. Left: slices and pairs (many things), a task that moves
+    nothing (examine, switch), one place twice (the thing ends there either way), a later task the order
+    puts first ("... after you rinse the knife": no reference back in time), and a word two earlier tasks
+    could have named ("the rag" after "a rag" and "a blue rag")."""
+    for k, later in enumerate(tasks):
+        # the thing named before: one task of one thing, else "the rag" after two rags picks neither
+        named = [t for t in tasks[:k] if set(t.object) & set(later.object)]
+        if len(named) != 1 or not _moves(later) or not _moves(named[0]):
+            continue
+        earlier = named[0]
+        shared = set(earlier.object) & set(later.object)
+        if (later.id, earlier.id) in before or set(earlier.receptacle or ()) == set(later.receptacle or ()):
+            continue
+        said = _reference(later.text, shared, _words_for(earlier.text, shared))
+        # "the cloth from the cabinet": a thing found by where it is (task texts may drop the source)
+        if said is None or re.search(rf"\b{re.escape(said)}\s+from\b", instruction.lower()):
+            continue
+        where = " and ".join(repr(camel_words((t.receptacle or ["?"])[0])) for t in (earlier, later))
+        thing = camel_words(sorted(shared)[0])
+        raise HTTError(
+            f"{said!r} is one {thing} put in two places ({where}), which no task can say (each task "
+            f"takes any {thing} it finds): say where it ends (\"put the {thing} in …\"), or "
+            f"\"another {thing}\" for a second one"
+        )
+
+
+def _moves(task: BaseTaskSpec) -> bool:
+    """Does the task move one whole thing to a place?"""
+    kind_moves = task.kind not in ("set_state", "examine_in_light")
+    return bool(task.receptacle) and kind_moves and not task.sliced and task.count == 1
+
+
+def _words_for(text: str, types: set[str]) -> set[str]:
+    """The phrases a task's text names a thing of `types` by ("kettle")."""
+    return {m.entry.phrase for m in find_mentions(text) if set(m.entry.types) & types}
+
+
+def _reference(text: str, types: set[str], named_before: set[str]) -> str | None:
+    """The words of a task's text that refer back to a thing of `types` named before by one of
+    `named_before` ("the kettle", "it"), None when the text names another one ("a potato", "another
+    kettle", "the other kettle", "a second kettle"), one by another word or by where it is found ("the
+    cloth from the cabinet"), or none at all."""
+    if not text:
+        return None
+    words = [w for w, _, _ in tokens(text)]
+    named = [m for m in find_mentions(text) if set(m.entry.types) & types]
+    if named:
+        m = named[0]
+        before = words[max(0, m.start - 2) : m.start]
+        definite = bool(before) and before[-1] in _DEFINITE and not set(before) & _ANOTHER
+        if definite and m.entry.phrase in named_before:
+            return " ".join(words[m.start - 1 : m.end])
+        return None
+    return next((w for w in words if w in _BACK), None)
+
+
+@lru_cache(maxsize=1)
+def _category_words() -> dict[str, tuple[str, ...]]:
+    """Category word -> the types it covers (`category_words.txt`)."""
+    return {p: tuple(f[0].split()) for ps, f in phrase_lines("category_words.txt") for p in ps}
+
+
+def categories_named(
+    instruction: str, tasks: Sequence[BaseTaskSpec], instances: Mapping[str, int] | None, scene: str
+) -> None:
+    """A category word ("the dishes", "the utensils") that a task reads as objects of its types: which
+    things and how many is not said."""
+    toks = tokens(instruction)
+    words = [w for w, _, _ in toks]
+    taken = {t for task in tasks for t in task.object}
+    for i, w in enumerate(words):
+        covers = _category_words().get(w)
+        if covers is None or not taken & set(covers) or _counted(words[max(0, i - 2) : i]):
+            continue
+        if _as_category(w, covers, tasks):  # the paper's "utensils": any of the kinds, not one of them
+            continue
+        if _after_preposition(words[:i]):  # "next to the other food": a landmark, no task's object
+            continue
+        held = instances or {}
+        present = [f"{t} ({held[t]})" for t in covers if held.get(t)] or [t for t in covers if t in taken]
+        raise HTTError(
+            f"{w!r} names several kinds of thing ({', '.join(present)} in {scene}): name which and how "
+            f"many (\"the plates\", \"two forks\", \"all the bowls\")"
+        )
+
+
+def _as_category(word: str, covers: tuple[str, ...], tasks: Sequence[BaseTaskSpec]) -> bool:
+    """Does a task read the category as such: a word the lexicon reads as any of its kinds ("utensils": a
+    Fork, Spoon, ButterKnife or Knife, an ambiguity the user may settle), for several things (the paper's
+    dishwasher task: two utensils)? Not "dishes" as Plates, nor "the silverware" as one knife."""
+    entry = lookup(word)
+    several = any(set(t.object) & set(covers) and t.count > 1 for t in tasks)
+    return entry is not None and entry.all_ and several
+
+
+def _after_preposition(before: list[str]) -> bool:
+    """Is the nearest word before a noun, past its determiners ("the", "other"), a preposition?"""
+    rest = [w for w in before if w not in DETERMINERS and w != "other"]
+    return bool(rest) and rest[-1] in LOCATIVE | {"to", "into", "onto"}
+
+
+def plural_of_several(
+    instruction: str, tasks: Sequence[BaseTaskSpec], instances: Mapping[str, int] | None, scene: str
+) -> None:
+    """A plural with no number ("put the forks in the drawer") read as a task of fewer things than the
+    scene holds of its type: two of three is a guess. Unknown scene (`instances` None): not judged."""
+    if not instances:
+        return
+    words = [w for w, _, _ in tokens(instruction)]
+    for m in find_mentions(instruction):
+        if not m.plural or m.entry.generic or _counted(words[max(0, m.start - 3) : m.start]):
+            continue
+        covers = _category_words().get(m.surface.lower())
+        if covers and _as_category(m.surface.lower(), covers, tasks):
+            continue  # a category read as such (the paper's dishwasher task: "plates, mugs and utensils")
+        for task in tasks:
+            types = set(task.object) & set(m.entry.types)
+            held = sum(instances.get(t, 0) for t in types)
+            if types and 1 < task.count < held:
+                raise HTTError(_several(m, held, scene))
+
+
+def _several(m: Mention, held: int, scene: str) -> str:
+    one = m.entry.phrase
+    return (
+        f"{m.surface!r}: {scene} has {held} of them and the task would take 2: say how many "
+        f"(\"two {m.surface}\", \"all the {m.surface}\"), or \"the {one}\" for one"
+    )
+
+
+def _counted(before: list[str]) -> bool:
+    """Do the words before a noun say how many ("two", "all the", "both")?"""
+    return any(w in _HOW_MANY or count_value(categories(w), w) is not None for w in before)
