@@ -116,7 +116,7 @@ _MOVED = (
 )
 _TIMING = (
     re.compile(
-        rf"(?i)^\s*(?:and\s+|also\s+)?(?P<blocks>{_BLOCKS})\s+(?:can|may|could)\s+{_MOVED}\s+{_ANY_TIME}\s*$"
+        rf"(?i)^\s*(?:and\s+|also\s+)?(?P<blocks>{_BLOCKS}|it)\s+(?:can|may|could)\s+{_MOVED}\s+{_ANY_TIME}\s*$"
     ),
     re.compile(
         rf"(?i)^\s*it\s+(?:does\s+not|doesn[’']?t|does\s*nt)\s+matter\s+when\s+(?P<blocks>{_BLOCKS})\s+{_MOVED}\s*$"
@@ -158,7 +158,9 @@ def timing_joined(sentences: list[str]) -> list[str]:
         said = next((m for p in _TIMING if (m := p.match(sentence))), None)
         if said and out:
             last = _CLAUSE_BREAK.split(out[-1])[-1]
-            if _colours(last) == _colours(said["blocks"]) and not _ORDER_WORD.search(last):
+            # "It can go at any time": "it" is the one block of the clause before
+            named = _colours(said["blocks"]) or (_colours(last) if len(_colours(last)) == 1 else {"?"})
+            if _colours(last) == named and not _ORDER_WORD.search(last):
                 out[-1] = f"{out[-1].rstrip()} at any time"
                 continue
         out.append(sentence)

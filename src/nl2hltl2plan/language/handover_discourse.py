@@ -372,13 +372,14 @@ _REGION_BEFORE = re.compile(r"(?i)(?:\bregions?|\b[A-J]\s*(?:,|\band|\bor)|\b(?:
 # "will move to G", arms "will move the red block")
 _FUTURE = r"(?:\s*['’]re|\s+are)(?:\s+not)?\s+going\s+to\b|\s+(?:will|shall|won['’]t)\b|\s*['’]ll\b"
 _CLAUSE_START = (
-    r"(?:^|(?<=[,;:])|(?<=\band)|(?<=\bthen)|(?<=\bthereafter)|(?<=\btoday)|(?<=\bnow)|(?<=\bnext)|(?<=\btime))"
+    r"(?:^|(?<=[,;:])|(?<=\band)|(?<=\bthen)|(?<=\bthereafter)|(?<=\btoday)|(?<=\bnow)|(?<=\bnext)|(?<=\btime)|"
+    r"(?<=\bpoint)|(?<=\beventually)|(?<=\blater))"  # after a hedge of time: "at some point they will ..."
 )
 _TEAM_AS_WE = re.compile(
     rf"(?i){_CLAUSE_START}\s*(?:(?:our|the|these|both|all\s+(?:the\s+)?)\s+)?(?:robot\s+)?(?:arms|robots)(?={_FUTURE})"
 )
 _THEY_AS_WE = re.compile(
-    rf"(?i){_CLAUSE_START}\s*they(?=(?:{_FUTURE})(?:\s+not)?\s+(?:{VERB}|{SWAP}|{TOUCH})\s+"
+    rf"(?i){_CLAUSE_START}\s*they(?=(?:{_FUTURE})(?:\s+not)?(?:\s+(?:also|then|eventually))?\s+(?:{VERB}|{SWAP}|{TOUCH})\s+"
     r"(?:the|all|both|each|every|any|anything|red|blue|yellow|three|two|it|them|one|no|nothing)\b)"
 )
 # "let me (not) move ...": the speaker's plan, as "I'll (not) move ..."

@@ -28,6 +28,7 @@ from __future__ import annotations
 import re
 
 from nl2hltl2plan.language.handover_discourse import person
+from nl2hltl2plan.language.handover_words import PREP, SWAP, VERB
 
 _STAMP = re.compile(
     r"^\s*(?:\[\s*\d{1,2}:\d{2}(?::\d{2})?\s*\]|\(\s*\d{1,2}:\d{2}(?::\d{2})?\s*\)|"
@@ -99,6 +100,57 @@ _ALL_THREE_PLACED = re.compile(
     r"(?:regions?|the\s+opposite|any\s+empty)\b|\b(?:put|place|move|bring|carry|transfer)\s+(?:the|all)\s+"
     r"(?:three|3)\s+(?:objects|blocks|pillars|items)\b",
     re.IGNORECASE,
+)
+
+# a bullet that only names blocks: a count ("three blocks"), a group or one colour ("the red block")
+_BLOCKS_ONLY = (
+    r"(?:the\s+|all\s+(?:the\s+)?)?(?:(?:two|three|2|3|both)\s+)?(?:(?:red|blue|yellow)(?:\s*(?:,|and|&)\s*"
+    r"(?:the\s+)?(?:red|blue|yellow))*\s+)?(?:blocks?|objects?|pillars?|cubes?|items?|ones?)|"
+    r"(?:the\s+)?(?:red|blue|yellow)"
+)
+_BLOCK_BULLET = re.compile(rf"(?i)^\s*(?:[-*•·]|\d[.)])\s+({_BLOCKS_ONLY})\s*[.,;]?\s*$")
+
+
+def block_bullets_read(text: str) -> str:
+    """Bullets under a heading (a line ending in ':') that each name only blocks are one list of them:
+    "Exchange the positions of:" over "- the red block" and "- the blue block" is "- the red block and the
+    blue block" (the heading's verb and place are then read with them: `HEADED`)."""
+    lines, out = text.splitlines(), []
+    k = 0
+    while k < len(lines):
+        run = []
+        if out and out[-1].rstrip().endswith(":"):
+            while k + len(run) < len(lines) and (item := _BLOCK_BULLET.match(lines[k + len(run)])):
+                run.append(item[1])
+        if len(run) > 1:
+            out.append("- " + ", ".join(run[:-1]) + " and " + run[-1])
+            k += len(run)
+            continue
+        out.append(lines[k])
+        k += 1
+    return "\n".join(out)
+
+
+# a heading with the verb and the bullet below it with the rest, joined at the colon: the words put back
+# in a command's order, "Move to the opposite side: three blocks" as "Move three blocks to the opposite
+# side", "The arms should place, one per region: the three objects on G, H and I" as "... place the three
+# objects on G, H and I, one per region", "Swap: the red and blue blocks, red first" as "Swap the red and
+# blue blocks, red first"
+_LIST = rf"(?:{_BLOCKS_ONLY})(?:\s*(?:,|and|&)\s*(?:{_BLOCKS_ONLY}))*"
+HEADED = tuple(
+    (re.compile(pattern, re.IGNORECASE), replacement)
+    for pattern, replacement in (
+        (rf"^([^:]*?\b{VERB})\s+({PREP}\s+[^:]+?)\s*:\s*({_LIST})\s*$", r"\1 \3 \2"),
+        (
+            rf"^([^:]*?\b{VERB}(?:\s+(?:down|over|across))?)\s*((?:,\s*[^,:]+?)*)\s*:\s*(({_LIST})\s+{PREP}\s+[^:]+?)\s*$",
+            r"\1 \3\2",
+        ),
+        (rf"^\s*({PREP}\s+[^:]+?)\s*:\s*({_LIST})\s*$", r"\2 \1"),  # "To the opposite side: three blocks"
+        (
+            rf"^([^:]*?\b{SWAP}(?:\s+the\s+(?:positions|places|spots)\s+of)?)\s*:\s*({_LIST}(?:\s*,[^:]*)?)$",
+            r"\1 \2",
+        ),
+    )
 )
 
 # clauses said out of their order or joined where a sentence ends: the last step said first ("put yellow

@@ -175,8 +175,31 @@ REWRITES: tuple[tuple[str, str], ...] = (
         r"(?=(?:place|put|drop|set|touch|move)\b)",
         "never ",
     ),
+    # a prohibition said as a field: "not allowed (meanwhile): any object on regions F, G and H"
+    (
+        rf"^\s*(?:not\s+allowed|forbidden|prohibited|disallowed)(\s+{PERIOD_WORDS})?\s*:\s*(?:placing\s+|putting\s+)?"
+        r"(?:any|an?)\s+(objects?|blocks?|pillars?|items?|pieces?)\s+(?=(?:on|onto|in|into)\b)",
+        r"no \2 may be placed \1 ",
+    ),
+    # a prohibition said as a command with "no": "place no object on F during such period"
+    (
+        r"\b(?:place|put|set|drop)\s+(no\s+(?:objects?|blocks?|pillars?|items?|pieces?)|nothing)\b",
+        r"\1 may be placed",
+    ),
     (r"\bat\s+some\s+(?:point|time)\s+(?=before|after)\b", ""),  # "put down at some point before ...": before
     (r"\bat\s+(?:some|whatever|whichever)\s+(?:point|time|moment)\b", "at any time"),
+    # a hedge of time says what every goal is (met at some point) and orders nothing: "eventually the arms
+    # will put ...", "sooner or later they will move ..."; "later on" only where an order follows that says
+    # what it comes after ("later on, once that is done, ...")
+    (r"\b(?:eventually|sooner\s+or\s+later|in\s+due\s+course)\b\s*,?", " "),
+    (r"\blater\s+on\s*,?\s*(?=(?:once|when|after)\b)", " "),
+    # "one block per region, no more": the count's "no more" restates it
+    (
+        r"\b((?:one|a\s+single)\s+(?:block|object|pillar|item)\s+(?:per|to\s+a|in\s+each|on\s+each|for\s+each)\s+"
+        r"(?:region|area|cell|spot))\s*,?\s*(?:and\s+)?no\s+more\b",
+        r"\1",
+    ),
+    (r"\bnowhere\s+(?=else\b|other\s+than\b|except\b|but\b)", "not anywhere "),  # "..., and nowhere else"
     (r"\bnothing\s+else\b", "nothing"),
     (r"\bno\s+other\s+(?=(?:blocks?|objects?|items?|cubes?|pillars?|pieces?)\b)", "no "),
     (r"\bthe\s+(?:last|final)\s+step\s+is\s+to\b", "finally"),
