@@ -22,7 +22,8 @@ _NOT_MOVED = (
     r"any\s+other\s+(?:blocks?|objects?|pillars?|items?|pieces?))|leave\s+(?:everything|anything)\s+else\s+"
     r"(?:alone|where\s+it\s+is|untouched|in\s+place))"
 )
-_WHOLE = re.compile(rf"(?i)^\s*(?:and\s+|also\s+)?{_NOT_MOVED}\s*[.!]*\s*$")
+# "Nothing else." closing the instruction: no other task, so nothing else moves either
+_WHOLE = re.compile(rf"(?i)^\s*(?:and\s+|also\s+)?(?:{_NOT_MOVED}|nothing\s+else)\s*[.!]*\s*$")
 _AT_END = re.compile(rf"(?i)\s*(?:,\s*|\s+)(?:and\s+)?{_NOT_MOVED}\s*[.!]*\s*$")
 
 

@@ -373,7 +373,8 @@ _REGION_BEFORE = re.compile(r"(?i)(?:\bregions?|\b[A-J]\s*(?:,|\band|\bor)|\b(?:
 _FUTURE = r"(?:\s*['’]re|\s+are)(?:\s+not)?\s+going\s+to\b|\s+(?:will|shall|won['’]t)\b|\s*['’]ll\b"
 _CLAUSE_START = (
     r"(?:^|(?<=[,;:])|(?<=\band)|(?<=\bthen)|(?<=\bthereafter)|(?<=\btoday)|(?<=\bnow)|(?<=\bnext)|(?<=\btime)|"
-    r"(?<=\bpoint)|(?<=\beventually)|(?<=\blater))"  # after a hedge of time: "at some point they will ..."
+    # after a hedge of time: "at some point they will ..."
+    r"(?<=\bpoint)|(?<=\beventually)|(?<=\blater)|(?<=\blater on))"
 )
 _TEAM_AS_WE = re.compile(
     rf"(?i){_CLAUSE_START}\s*(?:(?:our|the|these|both|all\s+(?:the\s+)?)\s+)?(?:robot\s+)?(?:arms|robots)(?={_FUTURE})"

@@ -83,6 +83,32 @@ def nested_read(text: str) -> str:
     return "\n".join(out)
 
 
+_LETTERS = r"[E-Je-j](?:\s*(?:,|\band\b|\bor\b)\s*[E-Je-j])*\b"
+_GOAL_PLACE = re.compile(rf"(?i)\b(?:on|onto|to|into|in)\s+(?:regions?\s+)?({_LETTERS})")
+_UNTIL_ALL_THERE = re.compile(
+    r"(?i)\buntil\s+(?:(?:all\s+)?(?:the\s+)?(?:three|last|final)\s+(?:one|objects?|blocks?|pillars?|items?)|"
+    r"all\s+(?:three|of\s+them)|they\s+are\s+all|they\s+have\s+all\s+been)\s+(?:(?:is|are|has\s+been|have\s+been|"
+    rf"gets?|lands?)\s+)?(?:all\s+)?(?:placed\s+|put\s+)?(?:on|onto|in|at)\s+(?:regions?\s+)?({_LETTERS})"
+)
+
+
+def _letters(text: str) -> set[str]:
+    return set(re.findall(r"\b[e-j]\b", text.lower()))
+
+
+def until_all_there_read(text: str) -> str:
+    """"until the last one is on region I", "until they are all on E, F and G": until the goals are met,
+    as "until then", where those are the regions an earlier goal of the instruction names (other regions
+    are left unread: a period the reader does not model)."""
+
+    def period(match: re.Match[str]) -> str:
+        named = _letters(match[1])
+        earlier = (_letters(g[1]) for g in _GOAL_PLACE.finditer(text[: match.start()]))
+        return "until then" if any(named == e for e in earlier) else match[0]
+
+    return _UNTIL_ALL_THERE.sub(period, text)
+
+
 _PROHIBITION_LABEL = re.compile(
     r"(?im)^([ \t]*(?:[-*•·][ \t]+)?)(?:do[ \t]*n['’]?t|do[ \t]+not|must[ \t]+not|never)s?[ \t]*:"
     r"[ \t]*(?=[a-z])"
@@ -102,6 +128,7 @@ _ALL_THREE_PLACED = re.compile(
     re.IGNORECASE,
 )
 
+_NOUNS = r"(?:blocks|objects|pillars|cubes|items)"
 # a bullet that only names blocks: a count ("three blocks"), a group or one colour ("the red block")
 _BLOCKS_ONLY = (
     r"(?:the\s+|all\s+(?:the\s+)?)?(?:(?:two|three|2|3|both)\s+)?(?:(?:red|blue|yellow)(?:\s*(?:,|and|&)\s*"
@@ -115,10 +142,11 @@ def block_bullets_read(text: str) -> str:
     """Bullets under a heading (a line ending in ':') that each name only blocks are one list of them:
     "Exchange the positions of:" over "- the red block" and "- the blue block" is "- the red block and the
     blue block" (the heading's verb and place are then read with them: `HEADED`)."""
-    lines, out = text.splitlines(), []
+    lines = text.splitlines()
+    out: list[str] = []
     k = 0
     while k < len(lines):
-        run = []
+        run: list[str] = []
         if out and out[-1].rstrip().endswith(":"):
             while k + len(run) < len(lines) and (item := _BLOCK_BULLET.match(lines[k + len(run)])):
                 run.append(item[1])
@@ -140,7 +168,15 @@ _LIST = rf"(?:{_BLOCKS_ONLY})(?:\s*(?:,|and|&)\s*(?:{_BLOCKS_ONLY}))*"
 HEADED = tuple(
     (re.compile(pattern, re.IGNORECASE), replacement)
     for pattern, replacement in (
-        (rf"^([^:]*?\b{VERB})\s+({PREP}\s+[^:]+?)\s*:\s*({_LIST})\s*$", r"\1 \3 \2"),
+        (  # "Blocks to move to regions H, I and J: red, blue and yellow"
+            rf"^\s*(?:the\s+)?{_NOUNS}\s+to\s+({VERB})\s+({PREP}\s+[^:]+?)\s*:\s*({_LIST})\s*$",
+            r"\1 \3 \2",
+        ),
+        (  # "Move (these / the following) to the opposite side: three blocks"
+            rf"^([^:]*?\b{VERB})(?:\s+(?:these|those|them|the\s+following(?:\s+{_NOUNS})?))?\s+({PREP}\s+[^:]+?)\s*:\s*"
+            rf"({_LIST})\s*$",
+            r"\1 \3 \2",
+        ),
         (
             rf"^([^:]*?\b{VERB}(?:\s+(?:down|over|across))?)\s*((?:,\s*[^,:]+?)*)\s*:\s*(({_LIST})\s+{PREP}\s+[^:]+?)\s*$",
             r"\1 \3\2",

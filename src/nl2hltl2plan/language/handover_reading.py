@@ -59,6 +59,7 @@ from nl2hltl2plan.language.handover_layout import (
     nested_read,
     prohibitions_read,
     transcript_read,
+    until_all_there_read,
 )
 from nl2hltl2plan.language.handover_phrases import drop_but, mark
 from nl2hltl2plan.language.handover_rules import (
@@ -243,7 +244,8 @@ def _sentences(instruction: str) -> list[str]:
     dropped. A heading ending in a colon is joined to the line below it, and a record of labelled fields,
     on lines or in sentences and in either order ('Blocks: ...' and 'Targets: ...'), is read as one goal."""
     out: list[str] = []
-    instruction = block_bullets_read(nested_read(transcript_read(prohibitions_read(instruction))))
+    instruction = nested_read(transcript_read(prohibitions_read(instruction)))
+    instruction = until_all_there_read(block_bullets_read(instruction))
     # a record of labelled fields, on lines or in sentences, in either order: "Blocks: red, blue, yellow"
     # then "Targets: H, I, J" (or "Regions: G, H and I. Objects: all three.") is one goal
     for record in _RECORDS:

@@ -188,11 +188,13 @@ REWRITES: tuple[tuple[str, str], ...] = (
     ),
     (r"\bat\s+some\s+(?:point|time)\s+(?=before|after)\b", ""),  # "put down at some point before ...": before
     (r"\bat\s+(?:some|whatever|whichever)\s+(?:point|time|moment)\b", "at any time"),
-    # a hedge of time says what every goal is (met at some point) and orders nothing: "eventually the arms
-    # will put ...", "sooner or later they will move ..."; "later on" only where an order follows that says
-    # what it comes after ("later on, once that is done, ...")
-    (r"\b(?:eventually|sooner\s+or\s+later|in\s+due\s+course)\b\s*,?", " "),
-    (r"\blater\s+on\s*,?\s*(?=(?:once|when|after)\b)", " "),
+    # a hedge of time that opens a sentence or a plan's "will" says what every goal is (met at some point)
+    # and orders nothing: "eventually the arms will put ...", "they will eventually move ..." (after a goal,
+    # "..., and eventually put it on G", it may mean "then": left unread); "later on" only where an order
+    # follows that says what it comes after ("later on, once that is done, ...")
+    (r"(^\s*|\bwill\s+(?:also\s+)?)(?:eventually|sooner\s+or\s+later|in\s+due\s+course)\b\s*,?", r"\1 "),
+    # ("later on, they will also ...": an added step, which "also" says, as "at some point")
+    (r"\blater\s+on\s*,?\s*(?=(?:once|when|after)\b|(?:(?:we|they|the\s+arms)\s+will\s+)?also\b)", " "),
     # "one block per region, no more": the count's "no more" restates it
     (
         r"\b((?:one|a\s+single)\s+(?:block|object|pillar|item)\s+(?:per|to\s+a|in\s+each|on\s+each|for\s+each)\s+"
