@@ -33,6 +33,7 @@ READ = {
         "per region",
         "One block per region, no more. The three blocks are to go into regions H, I and J.",
         "Blocks to move to regions H, I and J:\n- red\n- blue\n- yellow\nOne per region.",
+        "The arms should move:\n- the three blocks\n- to regions H, I and J\n- one per region",
     ],
     3: [
         "Bring to regions E, F and G:\n- all three pillars\nNothing may be placed on any other region.",
@@ -48,8 +49,13 @@ READ = {
         "Red and blue, swap! Red down first! Yellow, opposite side, whenever!",
         "The arms will swap the red and blue blocks, red first. Later on, they will also take the yellow "
         "block to the opposite side.",
+        # "it": the one block of the clause before
+        "Swap red and blue, red placed first. Move the yellow block to the opposite side. It can go at any "
+        "time.",
     ],
     6: ["Three objects, G, H, I, one each. Red before blue.",
+        "The arms should place on regions G, H and I:\n- the three objects, one in each\n- the red one "
+        "before the blue one",
         "Please put, one in each region:\n1. the three objects on regions G, H and I\n2. red before blue"],
     7: [
         "Put on region I, one by one:\n- the three objects\nRed before blue, and no object on regions F, G "
@@ -86,6 +92,10 @@ REFUSED = [
     (7, "Put the three objects on region I one after another, red before blue. Until the last one is on "
         "region H, no object may be put on regions F, G or H."),
     (8, "Put the yellow block on region I, then on region G. Nothing else."),
+    # "it" after a clause of two blocks, or of one block's steps in order
+    (8, "Put the yellow block on region I first and then on region G. Move the red and blue blocks to any "
+        "empty region. It can go at any time."),
+    (8, "Put the yellow block on region I, then on region G. It can go at any time."),
 ]
 
 NEAR_MISSES = [
@@ -101,6 +111,9 @@ NEAR_MISSES = [
     (7, "order: red before blue\nplace: three blocks, one after another\nto: region H\nnot allowed "
         "meanwhile: any object on regions F, G and I"),
     (2, "Onto regions H, I and G:\n* three blocks\nOnly one block may go on each region."),
+    (1, "Move:\n- three blocks\n- to the opposite side\n- blue before red"),
+    (7, "The arms should place on region H:\n- three objects, one after another\n- red before blue\n- "
+        "nothing on F, G or I meanwhile"),
 ]
 
 

@@ -138,10 +138,17 @@ _BLOCKS_ONLY = (
 _BLOCK_BULLET = re.compile(rf"(?i)^\s*(?:[-*•·]|\d[.)])\s+({_BLOCKS_ONLY})\s*[.,;]?\s*$")
 
 
+_PLACE_BULLET = re.compile(
+    r"(?i)^\s*(?:[-*•·]|\d[.)])\s+((?:to|onto|into|on|in)\s+(?:the\s+|any\s+|regions?\s+|[e-j]\b).*)$"
+)
+_ENDS_WITH_BLOCKS = re.compile(rf"(?i)(?:^\s*(?:[-*•·]|\d[.)])\s+|:\s*)(?:{_BLOCKS_ONLY})\s*$")
+
+
 def block_bullets_read(text: str) -> str:
     """Bullets under a heading (a line ending in ':') that each name only blocks are one list of them:
     "Exchange the positions of:" over "- the red block" and "- the blue block" is "- the red block and the
-    blue block" (the heading's verb and place are then read with them: `HEADED`)."""
+    blue block" (the heading's verb and place are then read with them: `HEADED`); a bullet that is only a
+    place ("- to the opposite side") goes on with the blocks named alone on the line before it."""
     lines = text.splitlines()
     out: list[str] = []
     k = 0
@@ -154,7 +161,11 @@ def block_bullets_read(text: str) -> str:
             out.append("- " + ", ".join(run[:-1]) + " and " + run[-1])
             k += len(run)
             continue
-        out.append(lines[k])
+        place = _PLACE_BULLET.match(lines[k])
+        if place and out and _ENDS_WITH_BLOCKS.search(out[-1]):  # "- three blocks", "- to the opposite side"
+            out[-1] = f"{out[-1].rstrip()} {place[1]}"
+        else:
+            out.append(lines[k])
         k += 1
     return "\n".join(out)
 
@@ -174,8 +185,8 @@ HEADED = tuple(
         ),
         (  # "Move (these / the following) to the opposite side: three blocks"
             rf"^([^:]*?\b{VERB})(?:\s+(?:these|those|them|the\s+following(?:\s+{_NOUNS})?))?\s+({PREP}\s+[^:]+?)\s*:\s*"
-            rf"({_LIST})\s*$",
-            r"\1 \3 \2",
+            rf"({_LIST})((?:\s*,\s*[^,:]+)*)\s*$",
+            r"\1 \3 \2\4",
         ),
         (
             rf"^([^:]*?\b{VERB}(?:\s+(?:down|over|across))?)\s*((?:,\s*[^,:]+?)*)\s*:\s*(({_LIST})\s+{PREP}\s+[^:]+?)\s*$",
