@@ -3,8 +3,9 @@ side:" over "- three blocks"; "Exchange the positions of:" over one bullet per b
 open a step ("eventually", "sooner or later", "at some point they will ..."), telegraphic goals ("Three
 blocks, opposite side."), "nowhere else", closing restrictions on what moves ("Nothing else moves.": read
 only where every block has a goal), "place no object on ... during such period", labelled fields ("move:
-three blocks" and "to: opposite side", "not allowed meanwhile: any object on ..."). `dev88` and the
-held-out `validation21` are read right or refused, never misread (the `sweep` run)."""
+three blocks" and "to: opposite side", "not allowed meanwhile: any object on ..."); "at any time" on a
+clause of several blocks keeps their "at once" leaf. `dev88` and the held-out `validation21` are read
+right or refused, never misread (the `sweep` run)."""
 
 from __future__ import annotations
 
@@ -29,6 +30,8 @@ READ = {
         "move: three blocks\nto: opposite side\norder: red before blue",
     ],
     2: [
+        # "at any time" frees the goals' time, not the place they end in: all three there at once
+        "Put the three blocks on regions H, I and J at any time, one block per region.",
         "The arms need to set down:\n* the three blocks onto regions H, I and J\n* no more than one block "
         "per region",
         "One block per region, no more. The three blocks are to go into regions H, I and J.",
@@ -49,11 +52,17 @@ READ = {
         "Red and blue, swap! Red down first! Yellow, opposite side, whenever!",
         "The arms will swap the red and blue blocks, red first. Later on, they will also take the yellow "
         "block to the opposite side.",
+        "Red and blue: swap. Red first. Yellow: opposite side. Whenever.",
+        "The arms will swap the red and blue blocks, placing red first. The yellow block will go to the "
+        "opposite side eventually.",
         # "it": the one block of the clause before
         "Swap red and blue, red placed first. Move the yellow block to the opposite side. It can go at any "
         "time.",
     ],
     6: ["Three objects, G, H, I, one each. Red before blue.",
+        "At some point the three objects will be placed on regions G, H and I, one per region, the red one "
+        "before the blue one.",
+        "Objects, regions G, H, I. One per region. Red, then blue. No other moves.",
         "The arms should place on regions G, H and I:\n- the three objects, one in each\n- the red one "
         "before the blue one",
         "Please put, one in each region:\n1. the three objects on regions G, H and I\n2. red before blue"],
@@ -64,6 +73,12 @@ READ = {
         "F, G and H during such period.",
         "Three objects on I, one after another, red before blue. Nothing on F, G or H until the last one is "
         "on I.",
+        "Place the three objects on region I one after another, red before blue, placing no object on "
+        "regions F, G or H during such period.",
+        "Place the three objects on region I one after another, red before blue; while this is in progress, "
+        "no object may be placed on regions F, G or H.",
+        "The arms will put the three objects on region I one after another, red before blue, and at no point "
+        "will they place anything on regions F, G or H.",
         "order: red before blue\nplace: three blocks, one after another\nto: region I\nnot allowed "
         "meanwhile: any object on regions F, G and H",
     ],
@@ -96,6 +111,12 @@ REFUSED = [
     (8, "Put the yellow block on region I first and then on region G. Move the red and blue blocks to any "
         "empty region. It can go at any time."),
     (8, "Put the yellow block on region I, then on region G. It can go at any time."),
+    # a time alone after steps in order; a hedge that ends a sentence of two clauses
+    (8, "Put the yellow block on region I, then on region G. Whenever. Red and blue: any empty region."),
+    (8, "Put the yellow block on region I, and put it on region G eventually. Move the red and blue blocks "
+        "to any empty region at any time."),
+    # "leave the rest alone": the other blocks, or the other regions?
+    (3, "Move the three pillars to regions E, F and G. Leave the rest alone."),
 ]
 
 NEAR_MISSES = [
@@ -112,6 +133,9 @@ NEAR_MISSES = [
         "meanwhile: any object on regions F, G and I"),
     (2, "Onto regions H, I and G:\n* three blocks\nOnly one block may go on each region."),
     (1, "Move:\n- three blocks\n- to the opposite side\n- blue before red"),
+    (2, "Put the three blocks on regions H, I and G at any time, one block per region."),
+    (7, "Place the three objects on region I one after another, red before blue, placing no object on "
+        "regions F or G during such period."),
     (7, "The arms should place on region H:\n- three objects, one after another\n- red before blue\n- "
         "nothing on F, G or I meanwhile"),
 ]

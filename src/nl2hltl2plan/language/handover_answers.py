@@ -128,6 +128,8 @@ _TIMING = (
     ),
     # a block's heading before its time alone: "Yellow block: any time", "yellow: whenever"
     re.compile(rf"(?i)^\s*(?:[-*•·]\s+)?(?P<blocks>{_BLOCKS})\s*:\s*{_ANY_TIME}\s*$"),
+    # the time alone, of the clause before: "Yellow: opposite side. Whenever."
+    re.compile(rf"(?i)^\s*(?:and\s+)?(?P<blocks>){_ANY_TIME}\s*$"),
 )
 # where the last clause of a sentence starts: a comma or semicolon, or "and" / "then" before a verb
 _CLAUSE_BREAK = re.compile(rf"(?i)[,;]|\b(?:and|then)\s+(?=(?:then\s+)?{VERB}\b)")
@@ -158,8 +160,10 @@ def timing_joined(sentences: list[str]) -> list[str]:
         said = next((m for p in _TIMING if (m := p.match(sentence))), None)
         if said and out:
             last = _CLAUSE_BREAK.split(out[-1])[-1]
-            # "It can go at any time": "it" is the one block of the clause before
-            named = _colours(said["blocks"]) or (_colours(last) if len(_colours(last)) == 1 else {"?"})
+            # "It can go at any time": "it" is the one block of the clause before; a time alone, its blocks
+            alone = not said["blocks"] and _colours(last)
+            one = len(_colours(last)) == 1
+            named = _colours(said["blocks"]) or (_colours(last) if one or alone else {"?"})
             if _colours(last) == named and not _ORDER_WORD.search(last):
                 out[-1] = f"{out[-1].rstrip()} at any time"
                 continue

@@ -23,7 +23,9 @@ _NOT_MOVED = (
     r"(?:alone|where\s+it\s+is|untouched|in\s+place))"
 )
 # "Nothing else." closing the instruction: no other task, so nothing else moves either
-_WHOLE = re.compile(rf"(?i)^\s*(?:and\s+|also\s+)?(?:{_NOT_MOVED}|nothing\s+else)\s*[.!]*\s*$")
+_WHOLE = re.compile(
+    rf"(?i)^\s*(?:and\s+|also\s+)?(?:{_NOT_MOVED}|nothing\s+(?:else|more)|no\s+other\s+moves?)\s*[.!]*\s*$"
+)
 _AT_END = re.compile(rf"(?i)\s*(?:,\s*|\s+)(?:and\s+)?{_NOT_MOVED}\s*[.!]*\s*$")
 
 

@@ -87,7 +87,8 @@ def goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
         in_turn = _IN_TURN.search(mods) is not None
         anytime = re.search(r"any\s+time|whenever", mods) is not None
         room = len({r for g in goals for r in g.regions}) >= len(goals) or place.kind == "start_of"
-        together = len(goals) > 1 and place.kind != "away" and room and not (in_turn or anytime)
+        # "at any time" frees the goals' time, not the place they end in: all there at once still holds
+        together = len(goals) > 1 and place.kind != "away" and room and not in_turn
         clauses.append(Clause(goals, text, together=together, anytime=anytime))
         return f" G{len(clauses) - 1} "
 
@@ -338,7 +339,6 @@ def _markers(m: Marked, clauses: list[Clause]) -> None:
     m.sub(r"\bG(\d+)\s+first\b", lambda x: set_marker(x, "first"))
 
     def anytime(match: re.Match[str]) -> str:
-        clauses[int(match.group(1))].together = False
         clauses[int(match.group(1))].anytime = True
         return f" G{match.group(1)} "
 

@@ -16,8 +16,8 @@ task tree and the spec. The rules, each general:
   "fill R with BLOCKS" is the same (as many regions as blocks); "exchange the positions of X and Y"
   ("while swapping their positions") gives `F at(X,@Y)` and `F at(Y,@X)`;
 - a clause that moves several blocks to lasting places also asks for them there at once (a leaf
-  `F(state_1 & state_2 ...)`), unless it says "at any time", "one after another" or its places hold
-  fewer blocks than it moves;
+  `F(state_1 & state_2 ...)`), unless it says "one after another" or its places hold fewer blocks than
+  it moves ("at any time" frees the goals' time, not the place they end in);
 - "X should be placed / gets placed / comes before Y" orders X's goal before Y's; "X first" puts X
   before the other blocks of the latest clause that moves it with others; "first ..., then ..."
   makes one node of the steps in order; "after all of these, ..." makes one node of everything said

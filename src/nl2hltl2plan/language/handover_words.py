@@ -54,7 +54,9 @@ PERIOD_WORDS = (
     # "until you are done", "till done": until the goals are met (a plan ends when its last goal is met)
     r"until\s+(?:(?:you|we|they)\s+(?:are|have\s+finished)\s+)?(?:all\s+)?(?:done|finished)|"
     r"until\s+(?:it|this|that|everything)\s+is\s+(?:done|finished|complete)|"
-    r"for\s+as\s+long\s+as\s+(?:this|that|it)\s+takes|"
+    r"for\s+as\s+long\s+as\s+(?:this|that|it)\s+takes|for\s+the\s+whole\s+of\s+(?:this|that|the)\s+(?:time|period)|"
+    r"while\s+(?:this|that|it)\s+is\s+(?:in\s+progress|under\s+way|ongoing)|"
+    r"until\s+the\s+(?:job|task|work|transfer)\s+is\s+(?:done|finished|complete|over)|"
     # "during the whole task", "for the duration of this task", "while you do this", "while this is done"
     r"(?:during|throughout|for)\s+(?:this|that|the)\s+(?:whole\s+|entire\s+)?(?:task|process|job|operation|transfer)|"
     r"for\s+the\s+(?:whole\s+|entire\s+)?duration(?:\s+of\s+(?:this|that|the)\s+(?:task|process|period|job|operation))?|"
@@ -183,16 +185,28 @@ REWRITES: tuple[tuple[str, str], ...] = (
     ),
     # a prohibition said as a command with "no": "place no object on F during such period"
     (
-        r"\b(?:place|put|set|drop)\s+(no\s+(?:objects?|blocks?|pillars?|items?|pieces?)|nothing)\b",
+        r"\b(?:place|put|set|drop|placing|putting|setting|dropping)\s+(no\s+(?:objects?|blocks?|pillars?|items?|pieces?)|"
+        r"nothing)\b",
         r"\1 may be placed",
     ),
     (r"\bat\s+some\s+(?:point|time)\s+(?=before|after)\b", ""),  # "put down at some point before ...": before
-    (r"\bat\s+(?:some|whatever|whichever)\s+(?:point|time|moment)\b", "at any time"),
+    # "at no point will they place ...": the inverted "never"
+    (
+        r"\bat\s+no\s+(?:point|time|stage|moment)\s+(?:will|shall|should|may|can|must)\s+(?:they|we|you|the\s+arms)\s+"
+        r"(?=(?:place|put|drop|set|touch|move)\b)",
+        "never ",
+    ),
+    (r"\bat\s+(?:some|whatever|whichever)\s+(?:point|time|moment|stage)\b", "at any time"),
     # a hedge of time that opens a sentence or a plan's "will" says what every goal is (met at some point)
     # and orders nothing: "eventually the arms will put ...", "they will eventually move ..." (after a goal,
     # "..., and eventually put it on G", it may mean "then": left unread); "later on" only where an order
     # follows that says what it comes after ("later on, once that is done, ...")
     (r"(^\s*|\bwill\s+(?:also\s+)?)(?:eventually|sooner\s+or\s+later|in\s+due\s+course)\b\s*,?", r"\1 "),
+    # ... or ends a sentence of one clause ("the yellow block will go to the opposite side eventually")
+    (
+        r"^((?:(?!\band\b|\bthen\b)[^,;])*?)\s*\b(?:eventually|sooner\s+or\s+later|in\s+due\s+course)\s*$",
+        r"\1",
+    ),
     # ("later on, they will also ...": an added step, which "also" says, as "at some point")
     (r"\blater\s+on\s*,?\s*(?=(?:once|when|after)\b|(?:(?:we|they|the\s+arms)\s+will\s+)?also\b)", " "),
     # "one block per region, no more": the count's "no more" restates it
