@@ -27,6 +27,9 @@ READ = {
     1: [
         "To the opposite side:\n* the three blocks\nPlace the red block before the blue block.",
         "Blocks, opposite side. Red first, then blue. Nothing else moves.",
+        "Three blocks, opposite side, go! Red before blue! Move it!",
+        "Make the three blocks end up on the opposite side, and have the red block land before the blue "
+        "block.",
         "move: three blocks\nto: opposite side\norder: red before blue",
     ],
     2: [
@@ -37,10 +40,16 @@ READ = {
         "One block per region, no more. The three blocks are to go into regions H, I and J.",
         "Blocks to move to regions H, I and J:\n- red\n- blue\n- yellow\nOne per region.",
         "The arms should move:\n- the three blocks\n- to regions H, I and J\n- one per region",
+        # a sentence that only names the blocks, then their place
+        "Blocks! H, I, J! One each! Let's go!",
+        "- three blocks\n- regions H, I and J\n- one block per region",
+        "The Arms shall place the three blocks on regions H, I and J, and no more than one block shall be "
+        "placed on each of said regions.",
     ],
     3: [
         "Bring to regions E, F and G:\n- all three pillars\nNothing may be placed on any other region.",
         "Move the three pillars to regions E, F and G, and nowhere else.",
+        "Pillars! E, F, G, by arms a and b! Nothing anywhere else! Move!",
         "Move the three pillars to regions E, F and G; until they are all on E, F and G, nothing may be "
         "placed on any other region.",
     ],
@@ -133,6 +142,9 @@ NEAR_MISSES = [
         "meanwhile: any object on regions F, G and I"),
     (2, "Onto regions H, I and G:\n* three blocks\nOnly one block may go on each region."),
     (1, "Move:\n- three blocks\n- to the opposite side\n- blue before red"),
+    (2, "Blocks! H, I, G! One each! Let's go!"),
+    (1, "Make the three blocks end up on the opposite side, and have the blue block land before the red "
+        "block."),
     (2, "Put the three blocks on regions H, I and G at any time, one block per region."),
     (7, "Place the three objects on region I one after another, red before blue, placing no object on "
         "regions F or G during such period."),

@@ -144,6 +144,28 @@ def _colours(text: str) -> set[str]:
     return set(re.findall(COLOUR, text.lower()))
 
 
+# a sentence that only names the blocks, then one that starts with their place: "Blocks! H, I, J!"
+_BARE_BLOCKS = re.compile(
+    r"(?i)^\s*(?:the\s+|all\s+)?(?:(?:three|3)\s+)?(?:blocks|objects|pillars|cubes|items)\s*$"
+)
+_PLACE_OPENS = re.compile(
+    r"(?i)^\s*(?:(?:to|onto|on|into)\s+)?(?=regions?\s+[e-j]\b|[e-j]\s*(?:,|and)\s*[e-j]\b|(?:the\s+)?opposite\s+"
+    r"(?:side|regions?)\b|any\s+empty\s+region\b)"
+)
+
+
+def fragments_joined(sentences: list[str]) -> list[str]:
+    """A sentence that only names the blocks joined to the next one where that one starts with a place:
+    "Blocks! H, I, J! One each!" is "Blocks to H, I, J. One each."."""
+    out: list[str] = []
+    for sentence in sentences:
+        if out and _BARE_BLOCKS.match(out[-1]) and (place := _PLACE_OPENS.match(sentence)):
+            out[-1] = f"{out[-1].strip()} to {sentence[place.end() :].strip()}"
+            continue
+        out.append(sentence)
+    return out
+
+
 def timing_joined(sentences: list[str]) -> list[str]:
     """The sentences with a goal's timing said apart ("Yellow can go at any time.") joined to the goal
     before it, as "at any time" (see the module docstring).

@@ -452,10 +452,10 @@ def _unsigned(sentences: list[str]) -> list[str]:
     return sentences
 
 
-# a start signal said as a whole sentence ("Go.", "Go ahead!", "Begin.", "Proceed."): when to start, which
-# is now; it names nothing to do ("go" alone has no block and no place)
+# a start signal said as a whole sentence ("Go.", "Go ahead!", "Begin.", "Proceed.", a coach's "Move!"): when
+# to start, which is now; it names nothing to do ("go" alone has no block and no place)
 _START_SIGNAL = re.compile(
-    r"(?i)^\s*(?:go(?:\s+(?:ahead|now))?|begin(?:\s+now)?|start(?:\s+now)?|proceed)\s*[.!]*\s*$"
+    r"(?i)^\s*(?:go(?:\s+(?:ahead|now))?|begin(?:\s+now)?|start(?:\s+now)?|proceed|move)\s*[.!]*\s*$"
 )
 
 

@@ -47,7 +47,7 @@ from dataclasses import dataclass, field
 import networkx as nx
 
 from nl2hltl2plan.errors import HTTError
-from nl2hltl2plan.language.handover_answers import answered, timing_joined
+from nl2hltl2plan.language.handover_answers import answered, fragments_joined, timing_joined
 from nl2hltl2plan.language.handover_closing import check_closing, closing_said
 from nl2hltl2plan.language.handover_cues import restate
 from nl2hltl2plan.language.handover_discourse import plain
@@ -118,7 +118,8 @@ def _restated(instruction: str, world: World) -> LanguageResult | None:
     scene = Scene.of(world)
     said: list[str] = []
     previous: Marked | None = None
-    sentences = _slashes_split(timing_joined(plain(_sentences(answered(instruction)))), world)
+    said_alone = timing_joined(fragments_joined(plain(_sentences(answered(instruction)))))
+    sentences = _slashes_split(said_alone, world)
     try:
         for sentence in sentences:
             previous = mark(sentence, scene, previous)
@@ -166,7 +167,7 @@ def _read_forms(instruction: str, world: World) -> LanguageResult:
     notes: list[str] = []
     pending: list[Prohibition] = []  # prohibitions stated before any goal
     previous: Marked | None = None  # the sentence before ("it", "these regions" in the next one)
-    steps, closing = closing_said(timing_joined(plain(_sentences(answered(instruction)))))
+    steps, closing = closing_said(timing_joined(fragments_joined(plain(_sentences(answered(instruction))))))
     instruction = " ".join(instruction.split())
     for sentence in steps:
         m = mark(sentence, scene, previous)

@@ -209,6 +209,16 @@ REWRITES: tuple[tuple[str, str], ...] = (
     ),
     # ("later on, they will also ...": an added step, which "also" says, as "at some point")
     (r"\blater\s+on\s*,?\s*(?=(?:once|when|after)\b|(?:(?:we|they|the\s+arms)\s+will\s+)?also\b)", " "),
+    # the one-block rule said of each region: "no more than one block shall be placed on each of said regions"
+    (
+        r"\b(?:(?:no|not)\s+more\s+than|at\s+most)\s+one\s+(block|object|pillar|item)\s+(?:shall|may|can|should|must|will|"
+        r"is\s+to)\s+be\s+(?:placed|put|set)\s+(?:on|in|onto)\s+each(?:\s+of\s+(?:said|such|those|these|the)\s+regions|"
+        r"\s+(?:such\s+|said\s+)?region)\b",
+        r"one \1 per region",
+    ),
+    # a causative before a block: "have the red block land before the blue block" (as "make ...")
+    (r"(^|,|\band)\s*have\s+(?=(?:the\s+)?(?:red|blue|yellow|three|all|both)\b)", r"\1 "),
+    (r"\s*,\s*go\s*$", " "),  # a coach's start signal after the goal: "three blocks, opposite side, go!"
     # "one block per region, no more": the count's "no more" restates it
     (
         r"\b((?:one|a\s+single)\s+(?:block|object|pillar|item)\s+(?:per|to\s+a|in\s+each|on\s+each|for\s+each)\s+"
