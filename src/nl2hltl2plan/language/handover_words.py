@@ -197,17 +197,11 @@ REWRITES: tuple[tuple[str, str], ...] = (
         "never ",
     ),
     (r"\bat\s+(?:some|whatever|whichever)\s+(?:point|time|moment|stage)\b", "at any time"),
-    # a hedge of time that opens a sentence or a plan's "will" says what every goal is (met at some point)
-    # and orders nothing: "eventually the arms will put ...", "they will eventually move ..." (after a goal,
-    # "..., and eventually put it on G", it may mean "then": left unread); "later on" only where an order
-    # follows that says what it comes after ("later on, once that is done, ...")
+    # a hedge of time opening a sentence or after "will", or ending a one-clause sentence, orders nothing
+    # (after a goal, "..., and eventually put it on G", it may mean "then": unread); "later on" only before
+    # an order that says what it follows ("later on, once that is done") or "also" (an added step)
     (r"(^\s*|\bwill\s+(?:also\s+)?)(?:eventually|sooner\s+or\s+later|in\s+due\s+course)\b\s*,?", r"\1 "),
-    # ... or ends a sentence of one clause ("the yellow block will go to the opposite side eventually")
-    (
-        r"^((?:(?!\band\b|\bthen\b)[^,;])*?)\s*\b(?:eventually|sooner\s+or\s+later|in\s+due\s+course)\s*$",
-        r"\1",
-    ),
-    # ("later on, they will also ...": an added step, which "also" says, as "at some point")
+    (r"^((?:(?!\band\b|\bthen\b)[^,;])*?)\s*\b(?:eventually|sooner\s+or\s+later|in\s+due\s+course)$", r"\1"),
     (r"\blater\s+on\s*,?\s*(?=(?:once|when|after)\b|(?:(?:we|they|the\s+arms)\s+will\s+)?also\b)", " "),
     # the one-block rule said of each region: "no more than one block shall be placed on each of said regions"
     (
