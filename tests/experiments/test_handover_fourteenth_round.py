@@ -62,6 +62,8 @@ READ = {
         "The arms will swap the red and blue blocks, red first. Later on, they will also take the yellow "
         "block to the opposite side.",
         "Red and blue: swap. Red first. Yellow: opposite side. Whenever.",
+        "The arms will swap the red and blue blocks, red first. At some point, they'll also need to take the "
+        "yellow block to the opposite side.",
         "The arms will swap the red and blue blocks, placing red first. The yellow block will go to the "
         "opposite side eventually.",
         # "it": the one block of the clause before

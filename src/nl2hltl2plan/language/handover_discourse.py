@@ -380,7 +380,8 @@ _TEAM_AS_WE = re.compile(
     rf"(?i){_CLAUSE_START}\s*(?:(?:our|the|these|both|all\s+(?:the\s+)?)\s+)?(?:robot\s+)?(?:arms|robots)(?={_FUTURE})"
 )
 _THEY_AS_WE = re.compile(
-    rf"(?i){_CLAUSE_START}\s*they(?=(?:{_FUTURE})(?:\s+not)?(?:\s+(?:also|then|eventually))?\s+(?:{VERB}|{SWAP}|{TOUCH})\s+"
+    rf"(?i){_CLAUSE_START}\s*they(?=(?:{_FUTURE})(?:\s+not)?(?:\s+(?:also|then|eventually))?(?:\s+(?:need|have)\s+to)?\s+"
+    rf"(?:{VERB}|{SWAP}|{TOUCH})\s+"
     r"(?:the|all|both|each|every|any|anything|red|blue|yellow|three|two|it|them|one|no|nothing)\b)"
 )
 # "let me (not) move ...": the speaker's plan, as "I'll (not) move ..."
