@@ -10,7 +10,8 @@ STYLES = json.loads((Path(__file__).parent / "handover_styles_session10.json").r
 
 # Development sentences still refused on purpose (each by name): statements of the scene or of a purpose
 # that name a place or a relation the reader does not model, an "after" that may mean "then", a block whose
-# goal is left to an ellipsis, a list of fragments without a verb or preposition, and "stack".
+# goal is left to an ellipsis, and "stack" (a list of fragments, "- three blocks" over "- regions H, I and J",
+# is read since h114 as the blocks and their place: test_handover_fourteenth_round.py).
 STILL_REFUSED = {
     "To clear this side of the table, move all three blocks to the opposite side; the red block has to be "
     "placed before the blue block.",
@@ -39,7 +40,6 @@ STILL_REFUSED = {
     "and blue blocks go to any empty region at any time.",
     "The red block is to be moved to the opposite side before the blue block, and the yellow block is to "
     "be moved there as well.",
-    "- three blocks\n- regions H, I and J\n- one block per region",
     # dev4: statements of purpose or of the scene ("on top of the plan", "each other's spots", "a drop-off",
     # "two stops", "reserved")
     "We want the pillars back at regions E, F and G. While moving them, keep every other region empty, "

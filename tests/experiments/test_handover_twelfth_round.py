@@ -49,8 +49,8 @@ READ = {
 }
 
 REFUSED = [
-    # a place after a comma without a verb: where it goes, or where it is?
-    (5, "Red and blue, swap! Red down first! Yellow, opposite side, whenever!"),
+    # (a place after a comma without a verb, "Yellow, opposite side", is read since h114 as where it goes:
+    # test_handover_fourteenth_round.py)
     # a pronoun of the other number takes up no object
     (5, "Red and blue, just swap it, red placed first; put the yellow block on the opposite side any time"),
     (3, "The three pillars, put them on regions E, F and G; the other regions, place nothing on it."),

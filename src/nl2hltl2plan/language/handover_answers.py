@@ -116,7 +116,7 @@ _MOVED = (
 )
 _TIMING = (
     re.compile(
-        rf"(?i)^\s*(?:and\s+|also\s+)?(?P<blocks>{_BLOCKS})\s+(?:can|may|could)\s+{_MOVED}\s+{_ANY_TIME}\s*$"
+        rf"(?i)^\s*(?:and\s+|also\s+)?(?P<blocks>{_BLOCKS}|it)\s+(?:can|may|could)\s+{_MOVED}\s+{_ANY_TIME}\s*$"
     ),
     re.compile(
         rf"(?i)^\s*it\s+(?:does\s+not|doesn[’']?t|does\s*nt)\s+matter\s+when\s+(?P<blocks>{_BLOCKS})\s+{_MOVED}\s*$"
@@ -128,6 +128,8 @@ _TIMING = (
     ),
     # a block's heading before its time alone: "Yellow block: any time", "yellow: whenever"
     re.compile(rf"(?i)^\s*(?:[-*•·]\s+)?(?P<blocks>{_BLOCKS})\s*:\s*{_ANY_TIME}\s*$"),
+    # the time alone, of the clause before: "Yellow: opposite side. Whenever."
+    re.compile(rf"(?i)^\s*(?:and\s+)?(?P<blocks>){_ANY_TIME}\s*$"),
 )
 # where the last clause of a sentence starts: a comma or semicolon, or "and" / "then" before a verb
 _CLAUSE_BREAK = re.compile(rf"(?i)[,;]|\b(?:and|then)\s+(?=(?:then\s+)?{VERB}\b)")
@@ -140,6 +142,28 @@ _ORDER_WORD = re.compile(r"(?i)\b(?:first|before|after|then|last|later|next|seco
 
 def _colours(text: str) -> set[str]:
     return set(re.findall(COLOUR, text.lower()))
+
+
+# a sentence that only names the blocks, then one that starts with their place: "Blocks! H, I, J!"
+_BARE_BLOCKS = re.compile(
+    r"(?i)^\s*(?:the\s+|all\s+)?(?:(?:three|3)\s+)?(?:blocks|objects|pillars|cubes|items)\s*$"
+)
+_PLACE_OPENS = re.compile(
+    r"(?i)^\s*(?:(?:to|onto|on|into)\s+)?(?=regions?\s+[e-j]\b|[e-j]\s*(?:,|and)\s*[e-j]\b|(?:the\s+)?opposite\s+"
+    r"(?:side|regions?)\b|any\s+empty\s+region\b)"
+)
+
+
+def fragments_joined(sentences: list[str]) -> list[str]:
+    """A sentence that only names the blocks joined to the next one where that one starts with a place:
+    "Blocks! H, I, J! One each!" is "Blocks to H, I, J. One each."."""
+    out: list[str] = []
+    for sentence in sentences:
+        if out and _BARE_BLOCKS.match(out[-1]) and (place := _PLACE_OPENS.match(sentence)):
+            out[-1] = f"{out[-1].strip()} to {sentence[place.end() :].strip()}"
+            continue
+        out.append(sentence)
+    return out
 
 
 def timing_joined(sentences: list[str]) -> list[str]:
@@ -158,7 +182,11 @@ def timing_joined(sentences: list[str]) -> list[str]:
         said = next((m for p in _TIMING if (m := p.match(sentence))), None)
         if said and out:
             last = _CLAUSE_BREAK.split(out[-1])[-1]
-            if _colours(last) == _colours(said["blocks"]) and not _ORDER_WORD.search(last):
+            # "It can go at any time": "it" is the one block of the clause before; a time alone, its blocks
+            alone = not said["blocks"] and _colours(last)
+            one = len(_colours(last)) == 1
+            named = _colours(said["blocks"]) or (_colours(last) if one or alone else {"?"})
+            if _colours(last) == named and not _ORDER_WORD.search(last):
                 out[-1] = f"{out[-1].rstrip()} at any time"
                 continue
         out.append(sentence)

@@ -370,13 +370,16 @@ _REGION_BEFORE = re.compile(r"(?i)(?:\bregions?|\b[A-J]\s*(?:,|\band|\bor)|\b(?:
 # "will move to G", arms "will move the red block")
 _FUTURE = r"(?:\s*['’]re|\s+are)(?:\s+not)?\s+going\s+to\b|\s+(?:will|shall|won['’]t)\b|\s*['’]ll\b"
 _CLAUSE_START = (
-    r"(?:^|(?<=[,;:])|(?<=\band)|(?<=\bthen)|(?<=\bthereafter)|(?<=\btoday)|(?<=\bnow)|(?<=\bnext)|(?<=\btime))"
+    r"(?:^|(?<=[,;:])|(?<=\band)|(?<=\bthen)|(?<=\bthereafter)|(?<=\btoday)|(?<=\bnow)|(?<=\bnext)|(?<=\btime)|"
+    # after a hedge of time: "at some point they will ..."
+    r"(?<=\bpoint)|(?<=\beventually)|(?<=\blater)|(?<=\blater on))"
 )
 _TEAM_AS_WE = re.compile(
     rf"(?i){_CLAUSE_START}\s*(?:(?:our|the|these|both|all\s+(?:the\s+)?)\s+)?(?:robot\s+)?(?:arms|robots)(?={_FUTURE})"
 )
 _THEY_AS_WE = re.compile(
-    rf"(?i){_CLAUSE_START}\s*they(?=(?:{_FUTURE})(?:\s+not)?\s+(?:{VERB}|{SWAP}|{TOUCH})\s+"
+    rf"(?i){_CLAUSE_START}\s*they(?=(?:{_FUTURE})(?:\s+not)?(?:\s+(?:also|then|eventually))?(?:\s+(?:need|have)\s+to)?\s+"
+    rf"(?:{VERB}|{SWAP}|{TOUCH})\s+"
     r"(?:the|all|both|each|every|any|anything|red|blue|yellow|three|two|it|them|one|no|nothing)\b)"
 )
 # "let me (not) move ...": the speaker's plan, as "I'll (not) move ..."
@@ -448,10 +451,10 @@ def _unsigned(sentences: list[str]) -> list[str]:
     return sentences
 
 
-# a start signal said as a whole sentence ("Go.", "Go ahead!", "Begin.", "Proceed."): when to start, which
-# is now; it names nothing to do ("go" alone has no block and no place)
+# a start signal said as a whole sentence ("Go.", "Go ahead!", "Begin.", "Proceed.", a coach's "Move!"): when
+# to start, which is now; it names nothing to do ("go" alone has no block and no place)
 _START_SIGNAL = re.compile(
-    r"(?i)^\s*(?:go(?:\s+(?:ahead|now))?|begin(?:\s+now)?|start(?:\s+now)?|proceed)\s*[.!]*\s*$"
+    r"(?i)^\s*(?:go(?:\s+(?:ahead|now))?|begin(?:\s+now)?|start(?:\s+now)?|proceed|move)\s*[.!]*\s*$"
 )
 
 

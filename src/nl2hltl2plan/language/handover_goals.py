@@ -87,7 +87,8 @@ def goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
         in_turn = _IN_TURN.search(mods) is not None
         anytime = re.search(r"any\s+time|whenever", mods) is not None
         room = len({r for g in goals for r in g.regions}) >= len(goals) or place.kind == "start_of"
-        together = len(goals) > 1 and place.kind != "away" and room and not (in_turn or anytime)
+        # "at any time" frees the goals' time, not the place they end in: all there at once still holds
+        together = len(goals) > 1 and place.kind != "away" and room and not in_turn
         clauses.append(Clause(goals, text, together=together, anytime=anytime))
         return f" G{len(clauses) - 1} "
 
@@ -138,6 +139,7 @@ def goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
         rf"(?:to|into|onto|on|in)\s+)P(\d+){mods}(?:\s+first\b)?(?=\s*(?:$|,|\band\b|\(|last\b|finally\b|then\b|at\s+the\s+end\b))",
         lambda x: matched(x, 1),
     )
+    _read_telegraphic(m, scene, mods, matched)
     _read_inverse(m, goal, scene.blocks, mods)
     m.sub(
         rf"(?:\bwith\s+)?\bB(\d+)\s+{MODAL}{DONE}{mods}(?:\s+first)?\s+(?:back\s+)?"
@@ -337,7 +339,6 @@ def _markers(m: Marked, clauses: list[Clause]) -> None:
     m.sub(r"\bG(\d+)\s+first\b", lambda x: set_marker(x, "first"))
 
     def anytime(match: re.Match[str]) -> str:
-        clauses[int(match.group(1))].together = False
         clauses[int(match.group(1))].anytime = True
         return f" G{match.group(1)} "
 
@@ -349,6 +350,29 @@ def _markers(m: Marked, clauses: list[Clause]) -> None:
     for c in clauses:  # "Step 3: at any time, move ...": a step that says "at any time" is in no order
         if c.anytime and c.marker == "then":
             c.marker = ""
+
+
+def _read_telegraphic(
+    m: Marked, scene: Scene, mods: str, matched: Callable[[re.Match[str], int], str]
+) -> None:
+    """A telegraphic sentence, the blocks and their place with a comma between: "Three blocks, opposite
+    side." (where a block starts on that place, the comma may say where it is: refused)."""
+
+    def telegraphic(x: re.Match[str]) -> str:
+        place = m.places[int(x.group(3))]
+        if place.kind == "regions" and any(_starts_on(scene, b, place) for b in blocks_of(m, x.group(1))):
+            said = f"{m.block_text[int(x.group(1))]}, {place.text}"
+            raise HTTError(f"'{said}' may say where a block is, not where it goes: say 'to'")
+        return matched(x, 1)
+
+    m.sub(rf"^\s*B(\d+){mods}\s*,\s*P(\d+){mods}(?=\s*(?:$|,))", telegraphic)
+
+
+def _starts_on(scene: Scene, block: str, place: Place) -> bool:
+    try:
+        return scene.start_region(block) in place.regions
+    except HTTError:  # it starts off the labelled regions
+        return False
 
 
 def _resolve(place: Place, block: str, scene: Scene) -> tuple[str, ...]:

@@ -28,6 +28,7 @@ from __future__ import annotations
 import re
 
 from nl2hltl2plan.language.handover_discourse import person
+from nl2hltl2plan.language.handover_words import PREP, SWAP, VERB
 
 _STAMP = re.compile(
     r"^\s*(?:\[\s*\d{1,2}:\d{2}(?::\d{2})?\s*\]|\(\s*\d{1,2}:\d{2}(?::\d{2})?\s*\)|"
@@ -82,6 +83,32 @@ def nested_read(text: str) -> str:
     return "\n".join(out)
 
 
+_LETTERS = r"[E-Je-j](?:\s*(?:,|\band\b|\bor\b)\s*[E-Je-j])*\b"
+_GOAL_PLACE = re.compile(rf"(?i)\b(?:on|onto|to|into|in)\s+(?:regions?\s+)?({_LETTERS})")
+_UNTIL_ALL_THERE = re.compile(
+    r"(?i)\buntil\s+(?:(?:all\s+)?(?:the\s+)?(?:three|last|final)\s+(?:one|objects?|blocks?|pillars?|items?)|"
+    r"all\s+(?:three|of\s+them)|they\s+are\s+all|they\s+have\s+all\s+been)\s+(?:(?:is|are|has\s+been|have\s+been|"
+    rf"gets?|lands?)\s+)?(?:all\s+)?(?:placed\s+|put\s+)?(?:on|onto|in|at)\s+(?:regions?\s+)?({_LETTERS})"
+)
+
+
+def _letters(text: str) -> set[str]:
+    return set(re.findall(r"\b[e-j]\b", text.lower()))
+
+
+def until_all_there_read(text: str) -> str:
+    """"until the last one is on region I", "until they are all on E, F and G": until the goals are met,
+    as "until then", where those are the regions an earlier goal of the instruction names (other regions
+    are left unread: a period the reader does not model)."""
+
+    def period(match: re.Match[str]) -> str:
+        named = _letters(match[1])
+        earlier = (_letters(g[1]) for g in _GOAL_PLACE.finditer(text[: match.start()]))
+        return "until then" if any(named == e for e in earlier) else match[0]
+
+    return _UNTIL_ALL_THERE.sub(period, text)
+
+
 _PROHIBITION_LABEL = re.compile(
     r"(?im)^([ \t]*(?:[-*•·][ \t]+)?)(?:do[ \t]*n['’]?t|do[ \t]+not|must[ \t]+not|never)s?[ \t]*:"
     r"[ \t]*(?=[a-z])"
@@ -99,6 +126,78 @@ _ALL_THREE_PLACED = re.compile(
     r"(?:regions?|the\s+opposite|any\s+empty)\b|\b(?:put|place|move|bring|carry|transfer)\s+(?:the|all)\s+"
     r"(?:three|3)\s+(?:objects|blocks|pillars|items)\b",
     re.IGNORECASE,
+)
+
+_NOUNS = r"(?:blocks|objects|pillars|cubes|items)"
+# a bullet that only names blocks: a count ("three blocks"), a group or one colour ("the red block")
+_BLOCKS_ONLY = (
+    r"(?:the\s+|all\s+(?:the\s+)?)?(?:(?:two|three|2|3|both)\s+)?(?:(?:red|blue|yellow)(?:\s*(?:,|and|&)\s*"
+    r"(?:the\s+)?(?:red|blue|yellow))*\s+)?(?:blocks?|objects?|pillars?|cubes?|items?|ones?)|"
+    r"(?:the\s+)?(?:red|blue|yellow)"
+)
+_BLOCK_BULLET = re.compile(rf"(?i)^\s*(?:[-*•·]|\d[.)])\s+({_BLOCKS_ONLY})\s*[.,;]?\s*$")
+
+
+_PLACE_BULLET = re.compile(
+    r"(?i)^\s*(?:[-*•·]|\d[.)])\s+((?:to|onto|into|on|in)\s+(?:the\s+|any\s+|regions?\s+|[e-j]\b).*)$"
+)
+_ENDS_WITH_BLOCKS = re.compile(rf"(?i)(?:^\s*(?:[-*•·]|\d[.)])\s+|:\s*)(?:{_BLOCKS_ONLY})\s*$")
+
+
+def block_bullets_read(text: str) -> str:
+    """Bullets under a heading (a line ending in ':') that each name only blocks are one list of them:
+    "Exchange the positions of:" over "- the red block" and "- the blue block" is "- the red block and the
+    blue block" (the heading's verb and place are then read with them: `HEADED`); a bullet that is only a
+    place ("- to the opposite side") goes on with the blocks named alone on the line before it."""
+    lines = text.splitlines()
+    out: list[str] = []
+    k = 0
+    while k < len(lines):
+        run: list[str] = []
+        if out and out[-1].rstrip().endswith(":"):
+            while k + len(run) < len(lines) and (item := _BLOCK_BULLET.match(lines[k + len(run)])):
+                run.append(item[1])
+        if len(run) > 1:
+            out.append("- " + ", ".join(run[:-1]) + " and " + run[-1])
+            k += len(run)
+            continue
+        place = _PLACE_BULLET.match(lines[k])
+        if place and out and _ENDS_WITH_BLOCKS.search(out[-1]):  # "- three blocks", "- to the opposite side"
+            out[-1] = f"{out[-1].rstrip()} {place[1]}"
+        else:
+            out.append(lines[k])
+        k += 1
+    return "\n".join(out)
+
+
+# a heading with the verb and the bullet below it with the rest, joined at the colon: the words put back
+# in a command's order, "Move to the opposite side: three blocks" as "Move three blocks to the opposite
+# side", "The arms should place, one per region: the three objects on G, H and I" as "... place the three
+# objects on G, H and I, one per region", "Swap: the red and blue blocks, red first" as "Swap the red and
+# blue blocks, red first"
+_LIST = rf"(?:{_BLOCKS_ONLY})(?:\s*(?:,|and|&)\s*(?:{_BLOCKS_ONLY}))*"
+HEADED = tuple(
+    (re.compile(pattern, re.IGNORECASE), replacement)
+    for pattern, replacement in (
+        (  # "Blocks to move to regions H, I and J: red, blue and yellow"
+            rf"^\s*(?:the\s+)?{_NOUNS}\s+to\s+({VERB})\s+({PREP}\s+[^:]+?)\s*:\s*({_LIST})\s*$",
+            r"\1 \3 \2",
+        ),
+        (  # "Move (these / the following) to the opposite side: three blocks"
+            rf"^([^:]*?\b{VERB})(?:\s+(?:these|those|them|the\s+following(?:\s+{_NOUNS})?))?\s+({PREP}\s+[^:]+?)\s*:\s*"
+            rf"({_LIST})((?:\s*,\s*[^,:]+)*)\s*$",
+            r"\1 \3 \2\4",
+        ),
+        (
+            rf"^([^:]*?\b{VERB}(?:\s+(?:down|over|across))?)\s*((?:,\s*[^,:]+?)*)\s*:\s*(({_LIST})\s+{PREP}\s+[^:]+?)\s*$",
+            r"\1 \3\2",
+        ),
+        (rf"^\s*({PREP}\s+[^:]+?)\s*:\s*({_LIST})\s*$", r"\2 \1"),  # "To the opposite side: three blocks"
+        (
+            rf"^([^:]*?\b{SWAP}(?:\s+the\s+(?:positions|places|spots)\s+of)?)\s*:\s*({_LIST}(?:\s*,[^:]*)?)$",
+            r"\1 \2",
+        ),
+    )
 )
 
 # clauses said out of their order or joined where a sentence ends: the last step said first ("put yellow

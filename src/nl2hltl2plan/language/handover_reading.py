@@ -16,8 +16,8 @@ task tree and the spec. The rules, each general:
   "fill R with BLOCKS" is the same (as many regions as blocks); "exchange the positions of X and Y"
   ("while swapping their positions") gives `F at(X,@Y)` and `F at(Y,@X)`;
 - a clause that moves several blocks to lasting places also asks for them there at once (a leaf
-  `F(state_1 & state_2 ...)`), unless it says "at any time", "one after another" or its places hold
-  fewer blocks than it moves;
+  `F(state_1 & state_2 ...)`), unless it says "one after another" or its places hold fewer blocks than
+  it moves ("at any time" frees the goals' time, not the place they end in);
 - "X should be placed / gets placed / comes before Y" orders X's goal before Y's; "X first" puts X
   before the other blocks of the latest clause that moves it with others; "first ..., then ..."
   makes one node of the steps in order; "after all of these, ..." makes one node of everything said
@@ -47,11 +47,20 @@ from dataclasses import dataclass, field
 import networkx as nx
 
 from nl2hltl2plan.errors import HTTError
-from nl2hltl2plan.language.handover_answers import answered, timing_joined
+from nl2hltl2plan.language.handover_answers import answered, fragments_joined, timing_joined
+from nl2hltl2plan.language.handover_closing import check_closing, closing_said
 from nl2hltl2plan.language.handover_cues import restate
 from nl2hltl2plan.language.handover_discourse import plain
 from nl2hltl2plan.language.handover_goals import Clause, Goal, crossed_exchanges, goal_clauses, lead
-from nl2hltl2plan.language.handover_layout import REORDERED, nested_read, prohibitions_read, transcript_read
+from nl2hltl2plan.language.handover_layout import (
+    HEADED,
+    REORDERED,
+    block_bullets_read,
+    nested_read,
+    prohibitions_read,
+    transcript_read,
+    until_all_there_read,
+)
 from nl2hltl2plan.language.handover_phrases import drop_but, mark
 from nl2hltl2plan.language.handover_rules import (
     Prohibition,
@@ -61,6 +70,7 @@ from nl2hltl2plan.language.handover_rules import (
     read_touch_guards,
 )
 from nl2hltl2plan.language.handover_scene import FILLER, Marked, Place, Scene
+from nl2hltl2plan.language.handover_words import MOD
 from nl2hltl2plan.language.headings import answered as labelled_answers
 from nl2hltl2plan.language.htt import HTT, HTTNode
 from nl2hltl2plan.language.result import LanguageResult
@@ -108,7 +118,8 @@ def _restated(instruction: str, world: World) -> LanguageResult | None:
     scene = Scene.of(world)
     said: list[str] = []
     previous: Marked | None = None
-    sentences = _slashes_split(timing_joined(plain(_sentences(answered(instruction)))), world)
+    said_alone = timing_joined(fragments_joined(plain(_sentences(answered(instruction)))))
+    sentences = _slashes_split(said_alone, world)
     try:
         for sentence in sentences:
             previous = mark(sentence, scene, previous)
@@ -156,7 +167,7 @@ def _read_forms(instruction: str, world: World) -> LanguageResult:
     notes: list[str] = []
     pending: list[Prohibition] = []  # prohibitions stated before any goal
     previous: Marked | None = None  # the sentence before ("it", "these regions" in the next one)
-    steps = timing_joined(plain(_sentences(answered(instruction))))
+    steps, closing = closing_said(timing_joined(fragments_joined(plain(_sentences(answered(instruction))))))
     instruction = " ".join(instruction.split())
     for sentence in steps:
         m = mark(sentence, scene, previous)
@@ -187,6 +198,7 @@ def _read_forms(instruction: str, world: World) -> LanguageResult:
     if not clauses:
         raise HTTError(f"no goal for a block in {instruction!r} (say where each block goes)")
     goals = [g for c in clauses for g in c.goals]
+    check_closing(closing, {g.block for g in goals}, scene.blocks)
     swapped = {b for g in goals if g.place.block and not g.regions for b in (g.block, g.place.block)}
     if sum(g.block in swapped for g in goals) > len(swapped):  # where is "its position" then: start or goal?
         raise HTTError("an exchanged block also has another goal: which positions are exchanged?")
@@ -234,6 +246,7 @@ def _sentences(instruction: str) -> list[str]:
     on lines or in sentences and in either order ('Blocks: ...' and 'Targets: ...'), is read as one goal."""
     out: list[str] = []
     instruction = nested_read(transcript_read(prohibitions_read(instruction)))
+    instruction = until_all_there_read(block_bullets_read(instruction))
     # a record of labelled fields, on lines or in sentences, in either order: "Blocks: red, blue, yellow"
     # then "Targets: H, I, J" (or "Regions: G, H and I. Objects: all three.") is one goal
     for record in _RECORDS:
@@ -254,7 +267,7 @@ def _sentences(instruction: str) -> list[str]:
         # an open checklist box is a bullet (a ticked one says what is done, and is left unread)
         text = re.sub(r"^\s*(?:\[\s*\]|☐)\s*", "- ", text)
         text = _slashes_read(_without_emoji_and_tags(text))
-        for pattern, replacement in REORDERED:
+        for pattern, replacement in (*REORDERED, *HEADED):
             text = pattern.sub(replacement, text)
         out += [re.sub(r"^\s*[-*•·]\s+", "", s) for s in re.split(r"[.;!?]+(?:\s|$)", text)]
     return _without_announcement([s for s in out if s.strip()])
@@ -290,11 +303,12 @@ def _unquoted(instruction: str) -> str:
 
 
 _BLOCKS_FIELD = (
-    r"\s*(?:[-*•·]\s+)?(?:blocks?|objects?|pillars?|items?|pieces?|cubes?|what)\s*:\s*(?P<blocks>[^\n:.;]+?)\s*"
+    r"\s*(?:[-*•·]\s+)?(?:blocks?|objects?|pillars?|items?|pieces?|cubes?|what|move|place|put|transfer|carry|bring)"
+    r"\s*:\s*(?P<blocks>[^\n:.;]+?)\s*"
 )
 _PLACES_FIELD = (
     r"\s*(?:[-*•·]\s+)?(?:targets?|destinations?|(?:goal|target|placement)\s+(?:regions?|areas?)|target\s+area|"
-    r"where(?:\s+to)?|regions?|places?)\s*:\s*(?P<places>[^\n:.;]+?)\s*"
+    r"where(?:\s+to)?|regions?|places?|to|onto|into)\s*:\s*(?P<places>[^\n:.;]+?)\s*"
 )
 _FIELD_BREAK = r"(?:[.;]?[ \t]*\n|[.;][ \t]+)"  # a line break or a sentence's end between two fields
 _FIELD_END = r"(?=[.;!?]?[ \t]*(?:\n|$)|[.;!?][ \t])"
@@ -305,7 +319,11 @@ _RECORDS = tuple(
 
 
 def _record_as_goal(fields: re.Match[str]) -> str:
-    return f"{fields['start']}{_listed(fields['blocks'])} to {fields['places']}"
+    """The record's goal; a modifier of the blocks' field is said after the places ("place: three blocks,
+    one after another" and "to: region I": "three blocks to region I, one after another")."""
+    blocks = fields["blocks"]
+    mods = found[0] if (found := re.search(rf"(?:\s*,\s*{MOD})+$", blocks)) else ""
+    return f"{fields['start']}{_listed(blocks[: len(blocks) - len(mods)])} to {fields['places']}{mods}"
 
 
 def _listed(items: str) -> str:

@@ -54,7 +54,9 @@ PERIOD_WORDS = (
     # "until you are done", "till done": until the goals are met (a plan ends when its last goal is met)
     r"until\s+(?:(?:you|we|they)\s+(?:are|have\s+finished)\s+)?(?:all\s+)?(?:done|finished)|"
     r"until\s+(?:it|this|that|everything)\s+is\s+(?:done|finished|complete)|"
-    r"for\s+as\s+long\s+as\s+(?:this|that|it)\s+takes|"
+    r"for\s+as\s+long\s+as\s+(?:this|that|it)\s+takes|for\s+the\s+whole\s+of\s+(?:this|that|the)\s+(?:time|period)|"
+    r"while\s+(?:this|that|it)\s+is\s+(?:in\s+progress|under\s+way|ongoing)|"
+    r"until\s+the\s+(?:job|task|work|transfer)\s+is\s+(?:done|finished|complete|over)|"
     # "during the whole task", "for the duration of this task", "while you do this", "while this is done"
     r"(?:during|throughout|for)\s+(?:this|that|the)\s+(?:whole\s+|entire\s+)?(?:task|process|job|operation|transfer)|"
     r"for\s+the\s+(?:whole\s+|entire\s+)?duration(?:\s+of\s+(?:this|that|the)\s+(?:task|process|period|job|operation))?|"
@@ -175,8 +177,49 @@ REWRITES: tuple[tuple[str, str], ...] = (
         r"(?=(?:place|put|drop|set|touch|move)\b)",
         "never ",
     ),
+    # a prohibition said as a field: "not allowed (meanwhile): any object on regions F, G and H"
+    (
+        rf"^\s*(?:not\s+allowed|forbidden|prohibited|disallowed)(\s+{PERIOD_WORDS})?\s*:\s*(?:placing\s+|putting\s+)?"
+        r"(?:any|an?)\s+(objects?|blocks?|pillars?|items?|pieces?)\s+(?=(?:on|onto|in|into)\b)",
+        r"no \2 may be placed \1 ",
+    ),
+    # a prohibition said as a command with "no": "place no object on F during such period"
+    (
+        r"\b(?:place|put|set|drop|placing|putting|setting|dropping)\s+(no\s+(?:objects?|blocks?|pillars?|items?|pieces?)|"
+        r"nothing)\b",
+        r"\1 may be placed",
+    ),
     (r"\bat\s+some\s+(?:point|time)\s+(?=before|after)\b", ""),  # "put down at some point before ...": before
-    (r"\bat\s+(?:some|whatever|whichever)\s+(?:point|time|moment)\b", "at any time"),
+    # "at no point will they place ...": the inverted "never"
+    (
+        r"\bat\s+no\s+(?:point|time|stage|moment)\s+(?:will|shall|should|may|can|must)\s+(?:they|we|you|the\s+arms)\s+"
+        r"(?=(?:place|put|drop|set|touch|move)\b)",
+        "never ",
+    ),
+    (r"\bat\s+(?:some|whatever|whichever)\s+(?:point|time|moment|stage)\b", "at any time"),
+    # a hedge of time opening a sentence or after "will", or ending a one-clause sentence, orders nothing
+    # (after a goal, "..., and eventually put it on G", it may mean "then": unread); "later on" only before
+    # an order that says what it follows ("later on, once that is done") or "also" (an added step)
+    (r"(^\s*|\bwill\s+(?:also\s+)?)(?:eventually|sooner\s+or\s+later|in\s+due\s+course)\b\s*,?", r"\1 "),
+    (r"^((?:(?!\band\b|\bthen\b)[^,;])*?)\s*\b(?:eventually|sooner\s+or\s+later|in\s+due\s+course)$", r"\1"),
+    (r"\blater\s+on\s*,?\s*(?=(?:once|when|after)\b|(?:(?:we|they|the\s+arms)\s+will\s+)?also\b)", " "),
+    # the one-block rule said of each region: "no more than one block shall be placed on each of said regions"
+    (
+        r"\b(?:(?:no|not)\s+more\s+than|at\s+most)\s+one\s+(block|object|pillar|item)\s+(?:shall|may|can|should|must|will|"
+        r"is\s+to)\s+be\s+(?:placed|put|set)\s+(?:on|in|onto)\s+each(?:\s+of\s+(?:said|such|those|these|the)\s+regions|"
+        r"\s+(?:such\s+|said\s+)?region)\b",
+        r"one \1 per region",
+    ),
+    # a causative before a block: "have the red block land before the blue block" (as "make ...")
+    (r"(^|,|\band)\s*have\s+(?=(?:the\s+)?(?:red|blue|yellow|three|all|both)\b)", r"\1 "),
+    (r"\s*,\s*go\s*$", " "),  # a coach's start signal after the goal: "three blocks, opposite side, go!"
+    # "one block per region, no more": the count's "no more" restates it
+    (
+        r"\b((?:one|a\s+single)\s+(?:block|object|pillar|item)\s+(?:per|to\s+a|in\s+each|on\s+each|for\s+each)\s+"
+        r"(?:region|area|cell|spot))\s*,?\s*(?:and\s+)?no\s+more\b",
+        r"\1",
+    ),
+    (r"\bnowhere\s+(?=else\b|other\s+than\b|except\b|but\b)", "not anywhere "),  # "..., and nowhere else"
     (r"\bnothing\s+else\b", "nothing"),
     (r"\bno\s+other\s+(?=(?:blocks?|objects?|items?|cubes?|pillars?|pieces?)\b)", "no "),
     (r"\bthe\s+(?:last|final)\s+step\s+is\s+to\b", "finally"),
