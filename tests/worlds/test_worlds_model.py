@@ -56,6 +56,20 @@ def test_agent_pose_cell_first_and_unreachable():
     assert w.unreachable == ["Far_0"]
 
 
+@pytest.mark.data
+def test_regions_of_many_points_equal_region_of_each(demo):
+    """World.create computes every object's region in one pass (`_regions`); it must give what
+    `region_of` gives point by point, order and agent-pose cell first included."""
+    rng = np.random.default_rng(3)
+    for world in (demo, load_world("FloorPlan1"), load_world("FloorPlan301")):
+        objs = list(world.objects.values())
+        points = [o.xz for o in objs] + [tuple(p) for p in rng.uniform(-2.0, 8.0, size=(40, 2))]
+        poses = [o.agent_pose for o in objs] + [None] * 20 + [tuple(p) for p in rng.uniform(0, 5, (20, 2))]
+        one_by_one = [world.region_of(p, q) for p, q in zip(points, poses, strict=True)]
+        assert world._regions(points, poses) == one_by_one
+        assert any(world._regions(points, poses)) and world._regions([], []) == []
+
+
 def test_objects_types_instances_slices(demo):
     assert {"Plate", "DishwasherLowerRack", "AppleSliced"} <= demo.object_types()
     assert [o.id for o in demo.instances("Plate")] == ["Plate_0", "Plate_1"]
