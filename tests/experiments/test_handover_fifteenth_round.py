@@ -29,8 +29,8 @@ READ = {
     4: ["Requirement: the three blocks shall be moved to their opposite regions; the blue block shall not be "
         "touched before the red block is touched. Afterwards the yellow block shall be returned to region "
         "G."],
-    5: ["Requirement: the positions of the red and blue blocks shall be exchanged, the red block being placed "
-        "first; the yellow block shall be moved to its opposite region at any time."],
+    5: ["Requirement: the positions of the red and blue blocks shall be exchanged, the red block being "
+        "placed first; the yellow block shall be moved to its opposite region at any time."],
     6: ["Red before blue. Place the three objects on G, H and I, so that each of those regions ends up "
         "holding one object.",
         "Put the three objects on G, H and I, so that every one of those regions gets one. Red goes before "
@@ -86,21 +86,25 @@ def test_near_misses_are_not_the_written_spec(task: int, text: str) -> None:
 def test_a_possessive_before_opposite_is_the_only_where_it_agrees() -> None:
     assert "to the opposite regions" in normalise("The three blocks shall go to their opposite regions.")
     assert "to the opposite region" in normalise("The yellow block shall go to its opposite region.")
-    assert "each of the blocks to the opposite" in normalise("Move each of the blocks to their opposite region.")
+    each_of = normalise("Move each of the blocks to their opposite region.")
+    assert "each of the blocks to the opposite" in each_of
     assert "their opposite" in normalise("Move the yellow block to their opposite region.")
     assert "its opposite" in normalise("Move the three blocks to its opposite region.")
     assert "each block to the opposite" in normalise("Move each block to its opposite region.")
 
 
 def test_a_result_clause_is_the_one_block_rule_only_when_it_says_one_on_each() -> None:
-    assert "with one block on each" in normalise("Put the blocks on H, I and J, so there's one block on each.")
+    on_each = normalise("Put the blocks on H, I and J, so there's one block on each.")
+    assert "with one block on each" in on_each
     assert "there" in normalise("Put the blocks on H, I and J, so there's one block on G.")
     assert "each region holds one" in normalise("Put them on G, H and I so each region ends up holding one.")
 
 
 @pytest.mark.sweep
 @pytest.mark.data
-@pytest.mark.parametrize(("batch", "style"), [(b, s) for b in ("dev89", "validation22", "dev90", "validation23") for s in STYLES[b]])
+@pytest.mark.parametrize(
+    ("batch", "style"), [(b, s) for b in ("dev89", "validation22", "dev90", "validation23") for s in STYLES[b]]
+)
 def test_h117_batches_are_read_right_or_refused_never_misread(batch: str, style: str) -> None:
     for task, text in STYLES[batch][style].items():
         assert_written_spec_or_refused(int(task), text)
