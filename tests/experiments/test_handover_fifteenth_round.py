@@ -100,11 +100,12 @@ def test_a_result_clause_is_the_one_block_rule_only_when_it_says_one_on_each() -
     assert "each region holds one" in normalise("Put them on G, H and I so each region ends up holding one.")
 
 
+_BATCHES = ("dev89", "validation22", "dev90", "validation23")
+
+
 @pytest.mark.sweep
 @pytest.mark.data
-@pytest.mark.parametrize(
-    ("batch", "style"), [(b, s) for b in ("dev89", "validation22", "dev90", "validation23") for s in STYLES[b]]
-)
+@pytest.mark.parametrize(("batch", "style"), [(b, s) for b in _BATCHES for s in STYLES[b]])
 def test_h117_batches_are_read_right_or_refused_never_misread(batch: str, style: str) -> None:
     for task, text in STYLES[batch][style].items():
         assert_written_spec_or_refused(int(task), text)
