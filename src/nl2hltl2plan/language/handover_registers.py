@@ -57,6 +57,7 @@ import re
 from collections.abc import Callable
 
 from nl2hltl2plan.language.courtesy import courtesy_pattern
+from nl2hltl2plan.language.handover_requirements import REQUIREMENTS
 from nl2hltl2plan.language.handover_words import GERUND_VERBS, NEGATED_GERUNDS, SWAP, VERB
 
 _BLOCK = r"(?:the\s+)?(?:red|blue|yellow)(?:\s+(?:block|one|cube))?"
@@ -420,4 +421,4 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
 )
 
 # compiled once: with the reader's other tables they are more than `re`'s cache holds
-REGISTERS = tuple((re.compile(pattern), replacement) for pattern, replacement in _RULES)
+REGISTERS = REQUIREMENTS + tuple((re.compile(pattern), replacement) for pattern, replacement in _RULES)
