@@ -144,6 +144,8 @@ def test_a_clause_after_a_pause_marker_replaces_the_verb_phrase_before_it(kitche
         ("put the mug on the counter... no, put the apple next to it", "which thing"),  # "it": not the mug
         ("put the mug in the sink -- scratch that part", "says nothing in place"),
         ("no, don't put the mug in the sink", "'no' (negation)"),  # a negation, no correction
+        ("put the apple in the fridge, no, put the mug in the sink too", "replaces or adds ('too')"),
+        ("put the apple in the fridge, nope, heat it first", "replaces or adds ('first')"),
     ],
 )
 def test_a_clause_correction_whose_part_is_unclear_is_refused_by_name(kitchen, text, named):
@@ -153,8 +155,13 @@ def test_a_clause_correction_whose_part_is_unclear_is_refused_by_name(kitchen, t
 
 
 @pytest.mark.data
-def test_a_no_inside_the_sentence_stays_a_negation(kitchen):
-    for text in ("put no mug in the sink", "put the apple in the fridge... no, don't put it in the sink"):
+def test_a_no_inside_the_sentence_stays_a_negation_and_actually_may_add(kitchen):
+    """("actually put the mug in the sink too" adds: its clause stays the grammar's, and check 1 names it)"""
+    for text in (
+        "put no mug in the sink",
+        "put the apple in the fridge... no, don't put it in the sink",
+        "put the apple in the fridge, actually put the mug in the sink too",
+    ):
         assert translate(text, kitchen, build=False, actions="none").partial
 
 

@@ -9,11 +9,12 @@ correction replaces what it corrects, and what is unclear is refused by name.
   and "put the mug, no wait, the cup, in the sink" replaces the mug (no place is said before the marker);
 - a name with a place after it ("put the egg, no wait, the apple in the fridge") replaces by its name, and
   the place stays;
-- a clause after "no", "nope", "actually" or "scratch that part" ("wash the cloth and hang it... no, put
-  it on the shelf") replaces the last verb phrase before it, in its sentence ("hang it"), and its pronoun
-  stands for the one thing that phrase names ("hang the apple... no, put it in the fridge"); a phrase that
-  is negated or holds more than one task ("put the mug in the sink and the egg in the fridge, no, ...") is
-  refused by name, and a "no" that opens a negation ("no, don't put it there") corrects nothing;
+- a clause after "no", "nope" or "scratch that part" ("wash the cloth and hang it... no, put it on the
+  shelf") replaces the last verb phrase before it, in its sentence ("hang it"), and its pronoun stands for
+  the one thing that phrase names ("hang the apple... no, put it in the fridge"); a phrase that is negated
+  or holds more than one task ("put the mug in the sink and the egg in the fridge, no, ..."), and a clause
+  that may add instead ("no, put the mug in the sink too", "... first") are refused by name, and a "no"
+  that opens a negation ("no, don't put it there") corrects nothing;
 - any other correction that says an action ("what I mean is put ...") is left to the grammar;
 - a marker with no place or name after it ("put the mug in the sink, no wait") is refused by name.
 
@@ -41,7 +42,11 @@ _WORDS = (
 # markers said only after a pause ("hang it... no, put it on the shelf"): each may also open a clause that
 # replaces the verb phrase before it (`_clause_replaced`)
 _AFTER_PAUSE = r"(?:no|nope|actually|scratch\s+that\s+part)"
-_CLAUSE_MARKERS = frozenset({"no", "nope", "actually", "scratch that part"})
+# ("actually" opens a clause that adds as often as one that replaces: "..., actually put the mug in the sink
+# too"; its clause stays the grammar's, which names a correction it does not follow)
+_CLAUSE_MARKERS = frozenset({"no", "nope", "scratch that part"})
+# words that add to or order against what was said before: a clause with one replaces nothing for certain
+_ADDS = re.compile(r"\b(?:too|also|as\s+well|first|again|another|additionally|either|instead\s+of)\b", re.I)
 _MARKER = re.compile(
     rf"{_PAUSE}(?P<marker>(?:{_WORDS}|(?<=[,;—–.…-])\s*{_AFTER_PAUSE}(?=[\s,.!]|$))(?:[\s,:;.…—–-]*{_WORDS})*)"
     r"(?:\s*[,:;.…—–-]+)?\s*",
@@ -85,6 +90,9 @@ def corrected(text: str, roles: Roles) -> str:
             # grammar's ("what I mean is put ..."); words that name nothing ("I mean it") correct nothing
             # here (check 1 names a correction not followed)
             clause = marker.lower() in _CLAUSE_MARKERS and _opens_with_verb(said)
+            if clause and (added := _ADDS.search(after[: _sentence_end(after)])):
+                unclear = f"whether {said!r} after {marker!r} replaces or adds ({added[0]!r}) is unclear"
+                raise HTTError(f"{unclear}: {_AGAIN}")
             if clause and (fixed := _clause_replaced(text[: m.start()], said, marker)) is not None:
                 text, start = fixed + after[cut:], len(fixed)
             else:
@@ -190,6 +198,12 @@ def _clause_replaced(before: str, said: str, marker: str) -> str | None:
         thing = before[det.start() if det else things[0].char_start : things[0].char_end]
         said = _PRONOUN.sub(thing, said, count=1)
     return before[: verbs[-1]] + said
+
+
+def _sentence_end(after: str) -> int:
+    """Where the sentence that `after` opens ends (an ellipsis ends no sentence)."""
+    end = re.search(r"(?<!\.)[.!?;](?!\.)", after)
+    return end.start() if end else len(after)
 
 
 def _sentence_start(before: str) -> int:
