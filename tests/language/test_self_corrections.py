@@ -5,6 +5,9 @@ replaces what it corrects; what is unclear is refused by name; nothing is read h
 
 from __future__ import annotations
 
+import sys
+from pathlib import Path
+
 import pytest
 from household_readings import reading
 
@@ -110,3 +113,64 @@ def test_an_order_by_step_number_that_cannot_be_read_is_refused(kitchen, text, n
     with pytest.raises(HTTError) as refused:
         translate(text, kitchen, build=False, actions="none")
     assert named in str(refused.value)
+
+
+# h118 (issues 23 and 28): "no", "nope", "actually" or "scratch that part" after a pause, then a clause
+@pytest.mark.data
+@pytest.mark.parametrize(
+    "text, tasks",
+    [
+        ("hang the apple... no, put it in the fridge", [APPLE_FRIDGE]),  # "it": the apple
+        ("hang the apple - nope, put it in the fridge", [APPLE_FRIDGE]),
+        ("hang the apple -- scratch that part, put it in the fridge", [APPLE_FRIDGE]),
+        ("heat the apple and hang it, no, put it in the fridge", ["heat_place Apple -> Fridge"]),  # "hang it"
+        ("put the egg in the sink... no, put the apple in the fridge", [APPLE_FRIDGE]),  # the whole phrase
+        ("put the mug in the sink -- scratch that part, in the cabinet", [MUG_CABINET]),  # a place
+        ("put the egg in the fridge... nope, the apple", [APPLE_FRIDGE]),  # a thing
+    ],
+)
+def test_a_clause_after_a_pause_marker_replaces_the_verb_phrase_before_it(kitchen, text, tasks):
+    assert reading(text, kitchen) == (tasks, [])
+
+
+@pytest.mark.data
+@pytest.mark.parametrize(
+    "text, named",
+    [
+        ("put the mug in the sink and the egg in the fridge, no, put the apple in the fridge", "is unclear"),
+        ("don't put the mug in the sink... no, put it in the fridge", "follows a negated request"),
+        ("never hang the apple - nope, put it in the fridge", "follows a negated request"),
+        ("hang the apple and the egg... no, put them in the fridge", "is unclear"),
+        ("put the mug on the counter... no, put the apple next to it", "which thing"),  # "it": not the mug
+        ("put the mug in the sink -- scratch that part", "says nothing in place"),
+        ("no, don't put the mug in the sink", "'no' (negation)"),  # a negation, no correction
+        ("put the apple in the fridge, no, put the mug in the sink too", "replaces or adds ('too')"),
+        ("put the apple in the fridge, nope, heat it first", "replaces or adds ('first')"),
+    ],
+)
+def test_a_clause_correction_whose_part_is_unclear_is_refused_by_name(kitchen, text, named):
+    with pytest.raises(HTTError) as refused:
+        translate(text, kitchen, build=False, actions="none")
+    assert named in str(refused.value)
+
+
+@pytest.mark.data
+def test_a_no_inside_the_sentence_stays_a_negation_and_actually_may_add(kitchen):
+    """("actually put the mug in the sink too" adds: its clause stays the grammar's, and check 1 names it)"""
+    for text in (
+        "put no mug in the sink",
+        "put the apple in the fridge... no, don't put it in the sink",
+        "put the apple in the fridge, actually put the mug in the sink too",
+    ):
+        assert translate(text, kitchen, build=False, actions="none").partial
+
+
+@pytest.mark.data
+@pytest.mark.parametrize("name", ["users_h118dev", "users_h118held"])
+def test_the_h118_user_set_reads_nothing_wrong(name):
+    """h118's user-style set of self-corrections, read as `plan` reads it: no line is read wrong."""
+    sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "scripts"))
+    import trust_sets
+
+    outcomes = [trust_sets.outcome(gt) for gt in trust_sets.load(name)]
+    assert [why for what, why in outcomes if what == "wrong"] == []

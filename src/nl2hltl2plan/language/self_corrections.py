@@ -9,13 +9,18 @@ correction replaces what it corrects, and what is unclear is refused by name.
   and "put the mug, no wait, the cup, in the sink" replaces the mug (no place is said before the marker);
 - a name with a place after it ("put the egg, no wait, the apple in the fridge") replaces by its name, and
   the place stays;
-- a correction that says an action ("hang it... actually put it in the drawer", "what I mean is put ...")
-  is left to the grammar, which reads the second clause;
+- a clause after "no", "nope" or "scratch that part" ("wash the cloth and hang it... no, put it on the
+  shelf") replaces the last verb phrase before it, in its sentence ("hang it"), and its pronoun stands for
+  the one thing that phrase names ("hang the apple... no, put it in the fridge"); a phrase that is negated
+  or holds more than one task ("put the mug in the sink and the egg in the fridge, no, ..."), and a clause
+  that may add instead ("no, put the mug in the sink too", "... first") are refused by name, and a "no"
+  that opens a negation ("no, don't put it there") corrects nothing;
+- any other correction that says an action ("what I mean is put ...") is left to the grammar;
 - a marker with no place or name after it ("put the mug in the sink, no wait") is refused by name.
 
 The markers: "no wait", "wait, no", "I mean", "I meant", "or rather", "sorry", "oops", "whoops", "make
-that", "correction", and "no" / "actually" after a comma, a dash or an ellipsis (an "Actually, ..." opening
-a sentence adds, and is left).
+that", "correction", and "no" / "nope" / "actually" / "scratch that part" after a comma, a dash or an
+ellipsis (an "Actually, ..." opening a sentence adds, and is left).
 """
 
 from __future__ import annotations
@@ -34,8 +39,16 @@ _WORDS = (
     r"(?:no,?\s+wait|wait,?\s+no|i\s+mean[t]?|or\s+rather|no,?\s+sorry|sorry|oops|whoops|make\s+(?:that|it)|"
     r"correction)(?![\w'])"
 )
+# markers said only after a pause ("hang it... no, put it on the shelf"): each may also open a clause that
+# replaces the verb phrase before it (`_clause_replaced`)
+_AFTER_PAUSE = r"(?:no|nope|actually|scratch\s+that\s+part)"
+# ("actually" opens a clause that adds as often as one that replaces: "..., actually put the mug in the sink
+# too"; its clause stays the grammar's, which names a correction it does not follow)
+_CLAUSE_MARKERS = frozenset({"no", "nope", "scratch that part"})
+# words that add to or order against what was said before: a clause with one replaces nothing for certain
+_ADDS = re.compile(r"\b(?:too|also|as\s+well|first|again|another|additionally|either|instead\s+of)\b", re.I)
 _MARKER = re.compile(
-    rf"{_PAUSE}(?P<marker>(?:{_WORDS}|(?<=[,;—–.…-])\s*(?:no|actually)(?=[\s,]))(?:[\s,:;.…—–-]*{_WORDS})*)"
+    rf"{_PAUSE}(?P<marker>(?:{_WORDS}|(?<=[,;—–.…-])\s*{_AFTER_PAUSE}(?=[\s,.!]|$))(?:[\s,:;.…—–-]*{_WORDS})*)"
     r"(?:\s*[,:;.…—–-]+)?\s*",
     re.I,
 )
@@ -73,13 +86,21 @@ def corrected(text: str, roles: Roles) -> str:
         cut = _said(after)
         said = after[:cut].strip()
         if said and (_has_verb(said) or not (_PREP.match(said) or find_mentions(said))):
-            # a clause replaces a clause: the grammar reads it ("what I mean is put ..." too); words that
-            # name nothing ("I mean it") correct nothing here (check 1 names a correction not followed)
-            start = m.end()
+            # a clause after a pause marker replaces the verb phrase before it; other clauses are the
+            # grammar's ("what I mean is put ..."); words that name nothing ("I mean it") correct nothing
+            # here (check 1 names a correction not followed)
+            clause = marker.lower() in _CLAUSE_MARKERS and _opens_with_verb(said)
+            if clause and (added := _ADDS.search(after[: _sentence_end(after)])):
+                unclear = f"whether {said!r} after {marker!r} replaces or adds ({added[0]!r}) is unclear"
+                raise HTTError(f"{unclear}: {_AGAIN}")
+            if clause and (fixed := _clause_replaced(text[: m.start()], said, marker)) is not None:
+                text, start = fixed + after[cut:], len(fixed)
+            else:
+                start = m.end()
             continue
         if not _PREP.match(said) and (name := _name_then_place(said)):
             cut, said = cut - len(said) + len(name), name  # "the egg, no wait, the apple in the fridge"
-        if not said and marker.lower() in ("no", "actually"):
+        if not said and marker.lower() in ("no", "nope", "actually"):
             start = m.end()  # "..., actually." closing a clause corrects nothing
             continue
         fixed = _replaced(text[: m.start()], said, marker, roles)
@@ -139,6 +160,50 @@ def _replaced(before: str, said: str, marker: str, roles: Roles) -> str:
     last = candidates[-1]
     det = _ARTICLE.search(before[: last.char_start])
     return before[: det.start() if det else last.char_start] + said + before[last.char_end :]
+
+
+# what keeps a verb phrase from being one task to replace: a negation before its verb, a list or an order
+# in it
+_NEGATED = re.compile(r"\b(?:not|never|don'?t|do\s+not|doesn'?t|won'?t)\s+$", re.I)
+_SEVERAL = re.compile(r",|\b(?:and|or|then|before|after|but)\b", re.I)
+_PRONOUN = re.compile(r"\b(?:it|them)\b", re.I)
+_OBJECT_PRONOUN = re.compile(r"^\S+\s+(?:it|them)\b", re.I)
+
+
+def _clause_replaced(before: str, said: str, marker: str) -> str | None:
+    """`before` with its last verb phrase swapped for the clause `said` ("wash the cloth and hang it... no,
+    put it on the shelf": "hang it" goes); the one thing that phrase names stands for a pronoun of `said`
+    ("hang the apple... no, put it in the fridge": the apple). None where no verb is said before the marker
+    in its sentence (the grammar reads it, as before); HTTError where the part replaced is unclear."""
+    head, named = _sentence_start(before), find_mentions(before)
+    spans = [(n.char_start, n.char_end) for n in named]
+    verbs = [a for w, a, _ in tokens(before) if a >= head and _opens_with_verb(w)]
+    verbs = [a for a in verbs if not any(s <= a < e for s, e in spans)]
+    if not verbs:
+        return None
+    phrase = before[verbs[-1] :].rstrip()
+    if _NEGATED.search(before[: verbs[-1]]):
+        raise HTTError(f"the correction {marker!r} {said!r} follows a negated request ({phrase!r}): {_AGAIN}")
+    if _SEVERAL.search(phrase):
+        unclear = f"which words the correction {marker!r} {said!r} replaces is unclear ({phrase!r})"
+        raise HTTError(f"{unclear}: {_AGAIN}")
+    things = [n for n in named if n.char_start >= verbs[-1] and not _after_preposition(before, n)]
+    if _PRONOUN.search(said) and things:
+        # the pronoun stands for the phrase's thing only as the object of its verb ("put it in ..."), not
+        # in a place ("put the apple next to it")
+        if len(things) > 1 or not _OBJECT_PRONOUN.match(said):
+            unclear = f"which thing {said!r} after {marker!r} refers to is unclear ({phrase!r})"
+            raise HTTError(f"{unclear}: {_AGAIN}")
+        det = _ARTICLE.search(before[: things[0].char_start])
+        thing = before[det.start() if det else things[0].char_start : things[0].char_end]
+        said = _PRONOUN.sub(thing, said, count=1)
+    return before[: verbs[-1]] + said
+
+
+def _sentence_end(after: str) -> int:
+    """Where the sentence that `after` opens ends (an ellipsis ends no sentence)."""
+    end = re.search(r"(?<!\.)[.!?;](?!\.)", after)
+    return end.start() if end else len(after)
 
 
 def _sentence_start(before: str) -> int:
