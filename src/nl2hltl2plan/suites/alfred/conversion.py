@@ -25,6 +25,7 @@ from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.io import write_json
 from nl2hltl2plan.language.accounting import account
 from nl2hltl2plan.language.grounding import scene_types
+from nl2hltl2plan.language.referents import check_referents
 from nl2hltl2plan.language.scoring import match
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
 
@@ -139,8 +140,10 @@ def evaluate(rows: list[dict[str, Any]], generate: Generator, progress: bool = F
         err = ""
         try:
             tasks, before, unparsed = generate(row["instruction"], scene_types(row["scene"]), row["scene"])
-            # check 1 (word accounting), as `plan` applies it: a partial conversion is a failure
+            # check 1 (word accounting) and the referents' refusals (a thing moved twice, "the dishes"),
+            # as `plan` applies them: a partial or refused conversion is a failure
             unparsed = unparsed + [str(u) for u in account(row["instruction"], tasks, before)]
+            check_referents(row["instruction"], tasks, before, None, row["scene"])
         except Nl2Hltl2PlanError as exc:
             tasks, before, unparsed, err = [], [], [], str(exc)
         refused = bool(err or unparsed)
