@@ -3,6 +3,11 @@ the checks that compare it with the task's written spec node by node (Spot equiv
 
 from __future__ import annotations
 
+from collections.abc import Callable, Sequence
+
+import pytest
+from handover_session10 import STYLES
+
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.translate import translate
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec
@@ -58,3 +63,39 @@ def assert_written_spec_or_refused(task_id: int, text: str) -> None:
     if spec is not None:
         equal, why = specs_equivalent(spec, TASKS[task_id].hierarchical())
         assert equal, (text, why)
+
+
+Pairs = Sequence[tuple[int, str]]
+
+
+def round_tests(
+    read: dict[int, list[str]], refused: Pairs, near_misses: Pairs, batches: Sequence[str]
+) -> tuple[Callable[..., None], ...]:
+    """The four tests each round of handover wordings runs over its own tables, bound to module names
+    by the round's file: its new forms give the written spec, its unclear forms are refused by name, its
+    near misses never give the written spec, and (`sweep`) its committed batches are read right or
+    refused, never misread."""
+
+    @pytest.mark.data
+    @pytest.mark.parametrize(("task", "text"), cases(read))
+    def written(task: int, text: str) -> None:
+        assert_written_spec(task, text)
+
+    @pytest.mark.data
+    @pytest.mark.parametrize(("task", "text"), refused)
+    def refused_by_name(task: int, text: str) -> None:
+        assert_refused_by_name(task, text)
+
+    @pytest.mark.data
+    @pytest.mark.parametrize(("task", "text"), near_misses)
+    def not_written(task: int, text: str) -> None:
+        assert_not_the_written_spec(task, text)
+
+    @pytest.mark.sweep
+    @pytest.mark.data
+    @pytest.mark.parametrize(("batch", "style"), [(b, s) for b in batches for s in STYLES[b]])
+    def batches_read(batch: str, style: str) -> None:
+        for task, text in STYLES[batch][style].items():
+            assert_written_spec_or_refused(int(task), text)
+
+    return written, refused_by_name, not_written, batches_read

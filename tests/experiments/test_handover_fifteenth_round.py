@@ -8,15 +8,7 @@ refused, never misread (the `sweep` run)."""
 
 from __future__ import annotations
 
-import pytest
-from handover_session10 import STYLES
-from handover_specs import (
-    assert_not_the_written_spec,
-    assert_refused_by_name,
-    assert_written_spec,
-    assert_written_spec_or_refused,
-    cases,
-)
+from handover_specs import round_tests
 
 from nl2hltl2plan.language.handover_phrases import normalise
 
@@ -65,22 +57,12 @@ NEAR_MISSES = [
 ]
 
 
-@pytest.mark.data
-@pytest.mark.parametrize(("task", "text"), cases(READ))
-def test_new_forms_give_the_written_spec(task: int, text: str) -> None:
-    assert_written_spec(task, text)
-
-
-@pytest.mark.data
-@pytest.mark.parametrize(("task", "text"), REFUSED)
-def test_unclear_forms_are_refused_by_name(task: int, text: str) -> None:
-    assert_refused_by_name(task, text)
-
-
-@pytest.mark.data
-@pytest.mark.parametrize(("task", "text"), NEAR_MISSES)
-def test_near_misses_are_not_the_written_spec(task: int, text: str) -> None:
-    assert_not_the_written_spec(task, text)
+(
+    test_new_forms_give_the_written_spec,
+    test_unclear_forms_are_refused_by_name,
+    test_near_misses_are_not_the_written_spec,
+    test_h117_batches_are_read_right_or_refused_never_misread,
+) = round_tests(READ, REFUSED, NEAR_MISSES, ("dev89", "validation22", "dev90", "validation23"))
 
 
 def test_a_possessive_before_opposite_is_the_only_where_it_agrees() -> None:
@@ -98,14 +80,3 @@ def test_a_result_clause_is_the_one_block_rule_only_when_it_says_one_on_each() -
     assert "with one block on each" in on_each
     assert "there" in normalise("Put the blocks on H, I and J, so there's one block on G.")
     assert "each region holds one" in normalise("Put them on G, H and I so each region ends up holding one.")
-
-
-_BATCHES = ("dev89", "validation22", "dev90", "validation23")
-
-
-@pytest.mark.sweep
-@pytest.mark.data
-@pytest.mark.parametrize(("batch", "style"), [(b, s) for b in _BATCHES for s in STYLES[b]])
-def test_h117_batches_are_read_right_or_refused_never_misread(batch: str, style: str) -> None:
-    for task, text in STYLES[batch][style].items():
-        assert_written_spec_or_refused(int(task), text)

@@ -10,14 +10,7 @@ right or refused, never misread (the `sweep` run)."""
 from __future__ import annotations
 
 import pytest
-from handover_session10 import STYLES
-from handover_specs import (
-    assert_not_the_written_spec,
-    assert_refused_by_name,
-    assert_written_spec,
-    assert_written_spec_or_refused,
-    cases,
-)
+from handover_specs import round_tests
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.handover_closing import check_closing, closing_said
@@ -155,22 +148,12 @@ NEAR_MISSES = [
 ]
 
 
-@pytest.mark.data
-@pytest.mark.parametrize(("task", "text"), cases(READ))
-def test_new_forms_give_the_written_spec(task: int, text: str) -> None:
-    assert_written_spec(task, text)
-
-
-@pytest.mark.data
-@pytest.mark.parametrize(("task", "text"), REFUSED)
-def test_unclear_forms_are_refused_by_name(task: int, text: str) -> None:
-    assert_refused_by_name(task, text)
-
-
-@pytest.mark.data
-@pytest.mark.parametrize(("task", "text"), NEAR_MISSES)
-def test_near_misses_are_not_the_written_spec(task: int, text: str) -> None:
-    assert_not_the_written_spec(task, text)
+(
+    test_new_forms_give_the_written_spec,
+    test_unclear_forms_are_refused_by_name,
+    test_near_misses_are_not_the_written_spec,
+    test_h114_batches_are_read_right_or_refused_never_misread,
+) = round_tests(READ, REFUSED, NEAR_MISSES, ("dev88", "validation21"))
 
 
 def test_bullets_that_only_name_blocks_are_one_list_under_their_heading() -> None:
@@ -191,11 +174,3 @@ def test_a_closing_restriction_is_nothing_only_where_every_block_has_a_goal() ->
     check_closing(said, {"Red", "Blue", "Yellow"}, ["Red", "Blue", "Yellow"])
     with pytest.raises(HTTError, match="blue"):
         check_closing(said, {"Red", "Yellow"}, ["Red", "Blue", "Yellow"])
-
-
-@pytest.mark.sweep
-@pytest.mark.data
-@pytest.mark.parametrize(("batch", "style"), [(b, s) for b in ("dev88", "validation21") for s in STYLES[b]])
-def test_h114_batches_are_read_right_or_refused_never_misread(batch: str, style: str) -> None:
-    for task, text in STYLES[batch][style].items():
-        assert_written_spec_or_refused(int(task), text)

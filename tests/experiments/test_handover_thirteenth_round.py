@@ -13,14 +13,7 @@ region". `dev83` to `dev87` and the held-out `validation20` are read right or re
 from __future__ import annotations
 
 import pytest
-from handover_session10 import STYLES
-from handover_specs import (
-    assert_not_the_written_spec,
-    assert_refused_by_name,
-    assert_written_spec,
-    assert_written_spec_or_refused,
-    cases,
-)
+from handover_specs import assert_not_the_written_spec, assert_written_spec, round_tests
 
 from nl2hltl2plan.language.handover_discourse import empty
 
@@ -151,30 +144,9 @@ def test_a_reply_fragment_is_empty_only_when_it_names_nothing() -> None:
     assert not empty("Happy to help with region G")
 
 
-@pytest.mark.data
-@pytest.mark.parametrize(("task", "text"), cases(READ))
-def test_new_forms_give_the_written_spec(task: int, text: str) -> None:
-    assert_written_spec(task, text)
-
-
-@pytest.mark.data
-@pytest.mark.parametrize(("task", "text"), REFUSED)
-def test_replies_that_name_something_are_refused_by_name(task: int, text: str) -> None:
-    assert_refused_by_name(task, text)
-
-
-@pytest.mark.data
-@pytest.mark.parametrize(("task", "text"), NEAR_MISSES)
-def test_near_misses_are_not_the_written_spec(task: int, text: str) -> None:
-    assert_not_the_written_spec(task, text)
-
-
-@pytest.mark.sweep
-@pytest.mark.data
-@pytest.mark.parametrize(
-    ("batch", "style"),
-    [(b, s) for b in ("dev83", "dev84", "dev85", "dev86", "dev87", "validation20") for s in STYLES[b]],
-)
-def test_h107_batches_are_read_right_or_refused_never_misread(batch: str, style: str) -> None:
-    for task, text in STYLES[batch][style].items():
-        assert_written_spec_or_refused(int(task), text)
+(
+    test_new_forms_give_the_written_spec,
+    test_replies_that_name_something_are_refused_by_name,
+    test_near_misses_are_not_the_written_spec,
+    test_h107_batches_are_read_right_or_refused_never_misread,
+) = round_tests(READ, REFUSED, NEAR_MISSES, ("dev83", "dev84", "dev85", "dev86", "dev87", "validation20"))

@@ -9,15 +9,7 @@ are read right or refused, never misread (the `sweep` run)."""
 
 from __future__ import annotations
 
-import pytest
-from handover_session10 import STYLES
-from handover_specs import (
-    assert_not_the_written_spec,
-    assert_refused_by_name,
-    assert_written_spec,
-    assert_written_spec_or_refused,
-    cases,
-)
+from handover_specs import round_tests
 
 READ = {
     1: [
@@ -75,27 +67,9 @@ NEAR_MISSES = [
 ]
 
 
-@pytest.mark.data
-@pytest.mark.parametrize(("task", "text"), cases(READ))
-def test_new_voices_give_the_written_spec(task: int, text: str) -> None:
-    assert_written_spec(task, text)
-
-
-@pytest.mark.data
-@pytest.mark.parametrize(("task", "text"), REFUSED)
-def test_unreadable_forms_are_refused_by_name(task: int, text: str) -> None:
-    assert_refused_by_name(task, text)
-
-
-@pytest.mark.data
-@pytest.mark.parametrize(("task", "text"), NEAR_MISSES)
-def test_near_misses_are_not_the_written_spec(task: int, text: str) -> None:
-    assert_not_the_written_spec(task, text)
-
-
-@pytest.mark.sweep
-@pytest.mark.data
-@pytest.mark.parametrize(("batch", "style"), [(b, s) for b in ("dev82", "validation19") for s in STYLES[b]])
-def test_h103_batches_are_read_right_or_refused_never_misread(batch: str, style: str) -> None:
-    for task, text in STYLES[batch][style].items():
-        assert_written_spec_or_refused(int(task), text)
+(
+    test_new_voices_give_the_written_spec,
+    test_unreadable_forms_are_refused_by_name,
+    test_near_misses_are_not_the_written_spec,
+    test_h103_batches_are_read_right_or_refused_never_misread,
+) = round_tests(READ, REFUSED, NEAR_MISSES, ("dev82", "validation19"))
