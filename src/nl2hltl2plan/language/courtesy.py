@@ -79,3 +79,23 @@ def without_greetings(text: str, names_a_thing: Callable[[str], bool]) -> str:
     if sign_off and not names_a_thing(sign_off["name"]):
         text = text[: sign_off.start()]
     return _THANKS.sub("", text).strip()
+
+
+# a greeting set apart at any sentence's start, before a request (the household reader's `household_forms`)
+_SENTENCE_GREETING = re.compile(
+    rf"(?P<lead>^|(?<=[.!?])\s+)(?:{courtesy_pattern('greeting', 'address', 'greeting_with')}\s*)+[!.,]+\s*"
+    r"(?=[a-z])",
+    re.I,
+)
+
+
+def ungreeted(text: str) -> str:
+    """`text` without a greeting set apart ("Hey,", "Hi there!") that opens any of its sentences. Unlike
+    `without_greetings` (every reader, the text's opening only), it drops one before a clause that waits
+    ("Hey, when you're done, put ..."): the household grammar reads "when you're done" with no task
+    before it as waiting on none, while the tabletop reader refuses it (docs/language.md).
+
+    >>> ungreeted("Hey, when you're done, put the mug in the sink. Hi there! Put the egg away.")
+    "when you're done, put the mug in the sink. Put the egg away."
+    """
+    return _SENTENCE_GREETING.sub(lambda m: m["lead"], text)

@@ -8,11 +8,10 @@ an action, and applies only where its parts name what it needs:
 - a thing asked as a topic, then what to do with it (`topic_said`): "The mug? Heat it and put it in the
   sink." is "Heat the mug and put it in the sink." (the question names one thing and nothing else, and the
   sentence after it says "it" or "them");
-- a greeting set apart at the start of a sentence (`ungreeted`): "Hey, when you're done, put ..." is "when
-  you're done, put ..." (the greeting words are `courtesy.txt`'s); the grammar read the greeting as a
-  step that "when you're done" waits on, and check 1 named the greeting and the order word (the opening
-  greetings every reader drops, `courtesy.without_greetings`, leave one before a clause that waits: with
-  no task before it, "when you're done" waits on none of the instruction's, as the grammar reads it);
+- a greeting set apart at the start of a sentence (`courtesy.ungreeted`): "Hey, when you're done, put
+  ..." is "when you're done, put ..."; the grammar read the greeting as a step that "when you're done"
+  waits on, and check 1 named the greeting and the order word (with no task before it, "when you're done"
+  waits on none of the instruction's, as the grammar reads it);
 - a treatment and a "respectively" list after it (`treated_lists`): "wash the mug and the plate and put
   them in the sink and the cabinet respectively" is "put the washed mug and the washed plate in the sink
   and the cabinet respectively", which `respectively.distributed` writes out pair by pair.
@@ -21,8 +20,6 @@ an action, and applies only where its parts name what it needs:
 'mug -> sink, apple -> fridge'
 >>> topic_said("The mug? Heat it and put it in the sink.")
 'Heat the mug and put it in the sink.'
->>> ungreeted("Hey, when you're done, put the mug in the sink. Hi there! Put the egg away.")
-"when you're done, put the mug in the sink. Put the egg away."
 >>> treated_lists("rinse the mug and the plate and put them in the sink and the cabinet respectively")
 'put the rinsed mug and the rinsed plate in the sink and the cabinet respectively'
 """
@@ -31,8 +28,9 @@ from __future__ import annotations
 
 import re
 
-from nl2hltl2plan.language.courtesy import courtesy_pattern
+from nl2hltl2plan.language.courtesy import ungreeted
 from nl2hltl2plan.language.grounding import find_mentions
+from nl2hltl2plan.language.respectively import LIST_ITEMS
 
 _NP = r"(?:(?:the|a|an|my|your|this|that)\s+)?[a-z]+(?:\s+[a-z]+){0,2}"
 # "mug: sink" between list separators (a colon that opens a clause, "Task: put ...", has a verb after it,
@@ -62,23 +60,12 @@ _TREATED = re.compile(
     r"(?P<put>put|place|set|move|leave|store)\s+them\s+(?P<places>[^.;!?]+?,?\s+respectively)\b",
     re.I,
 )
-_ITEM = re.compile(r"\s*,\s*(?:and\s+)?|\s+and\s+", re.I)
-_GREETING = re.compile(
-    rf"(?P<lead>^|(?<=[.!?])\s+)(?:{courtesy_pattern('greeting', 'address', 'greeting_with')}\s*)+[!.,]+\s*"
-    r"(?=[a-z])",
-    re.I,
-)
 _DETERMINER = re.compile(r"^(?P<det>(?:the|a|an|my|your|both|two)\s+)?", re.I)
 
 
 def household_forms(text: str) -> str:
     """`text` with each form above written out as the grammar reads it."""
     return treated_lists(topic_said(paired(ungreeted(text))))
-
-
-def ungreeted(text: str) -> str:
-    """`text` without a greeting set apart ("Hey,", "Hi there!") that opens a sentence before a request."""
-    return _GREETING.sub(lambda m: m["lead"], text)
 
 
 def paired(text: str) -> str:
@@ -108,7 +95,7 @@ def treated_lists(text: str) -> str:
     and Y respectively"; else `text`."""
 
     def said(m: re.Match[str]) -> str:
-        things = _ITEM.split(m["things"].strip())
+        things = LIST_ITEMS.split(m["things"].strip())
         if len(things) < 2 or not all(_one_thing(t) for t in things):
             return m[0]
         done = _PARTICIPLE[m["verb"].lower()]

@@ -1,8 +1,10 @@
 """A "... respectively" list pairs its things with its places in turn (`distributed`), before the household
 grammar reads: "put the mug and the apple in the sink and the fridge respectively" is "put the mug in the
 sink and put the apple in the fridge". A place may keep its own preposition ("on the sofa and in the box,
-respectively"). Lists of different lengths are refused by name; a clause of another shape ("wash them
-and put them ... respectively") is left as it is, and the grammar and check 1 refuse or name it.
+respectively"). Lists of different lengths are refused by name. "Wash A and B and put them in X and Y
+respectively" reaches here as "put the washed A and the washed B in X and Y respectively"
+(`household_forms.treated_lists`); a clause of another shape is left as it is, and the grammar and check 1
+refuse or name it.
 
 >>> distributed("put the mug and the apple in the sink and the fridge respectively")
 'put the mug in the sink and put the apple in the fridge'
@@ -25,7 +27,7 @@ _LIST = re.compile(
     r",?\s+respectively\b",
     re.I,
 )
-_ITEM = re.compile(r"\s*,\s*(?:and\s+)?|\s+and\s+", re.I)
+LIST_ITEMS = re.compile(r"\s*,\s*(?:and\s+)?|\s+and\s+", re.I)
 _OWN_PREP = re.compile(rf"^{_PREP}\s", re.I)
 
 
@@ -36,7 +38,7 @@ def distributed(text: str) -> str:
 
 
 def _pairs(m: re.Match[str]) -> str:
-    things, places = _ITEM.split(m["things"].strip()), _ITEM.split(m["places"].strip())
+    things, places = LIST_ITEMS.split(m["things"].strip()), LIST_ITEMS.split(m["places"].strip())
     if not all(_names_one(t) for t in things) or not all(_names_one(_OWN_PREP.sub("", p)) for p in places):
         return m[0]  # not a list of things and places: left for the grammar and check 1
     if len(things) != len(places) or len(things) < 2:
