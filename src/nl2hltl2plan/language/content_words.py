@@ -48,7 +48,8 @@ class Unread:
 @lru_cache(maxsize=1)
 def vocabulary() -> dict[str, frozenset[str]]:
     """category -> words, from `content_words.txt` (the readers' words: not the phrase lines of
-    `_SHARED_PHRASES` nor the categories check 1 alone asks, `check1_categories`)."""
+    `_SHARED_PHRASES` nor the categories check 1 alone asks, `check1_categories`; the drinks and food of
+    `DRINK_FOOD` are in `noun_unsupported`)."""
     every = _every_category()
     skipped = _SHARED_PHRASES + _CHECK1_ONLY + (DRINK_FOOD,)
     return {name: words for name, words in every.items() if name not in skipped}
