@@ -1,7 +1,7 @@
 """Why the language stage fails on the validation sets: every failure put in one class.
 
     python scripts/language_failures.py [--sets faithful_unseen,heldout_unseen,...] [--n 400]
-        [--save-rows DIR] [--rows DIR] [--show CLASS] [--long] [--outcomes FILE]
+        [--save-rows DIR] [--rows DIR] [--show CLASS] [--long] [--outcomes FILE] [--reader grammar]
 
 Sets with ground truth (never test50, never the excluded trials): `faithful_seen`, `faithful_unseen`,
 `trainstyle_unseen`, `heldout_unseen`, the reference-style `refsdev_seen/unseen`, `refsheld_seen/unseen`
@@ -9,19 +9,26 @@ and `refsnew_seen/unseen` (`suites.alfred.structure_validation.rows_of_set`; `NA
 another seed), `plain` (issue 23's user-style set), `users` and `users_heldout` (tests/language/data/styles/).
 A composed set depends on the lexicon (its text-faithful labels), so `--save-rows DIR` keeps the rows and
 `--rows DIR` scores another version of the code on exactly those rows (before/after on the same
-instructions); `--outcomes FILE` writes each row's class and why (JSON lines) to compare two versions row
-by row.
+instructions); `--outcomes FILE` writes each row's class, why and the text as the reader rewrote it (JSON
+lines) to compare two versions row by row.
 
-Classes of a failure (the default offline backend, its reading after the top candidate of each
-ambiguous word, then check 1, `accounting.account`, with the floor plan's instance counts as `plan` gives
-them):
+What is measured (`--reader`, `READERS`): by default the shipped reading, as `plan --world SCENE` reads
+(`household_reading`: `translate` in the row's floor plan, the household reader's rewriting, check 1 with
+the floor plan's instance counts, the referents' refusals, an ambiguous word's top candidate);
+`--reader grammar` is the earlier measure (the learned parse of the text as written, then check 1), kept
+so that earlier numbers can be compared. Classes of a failure:
 - `accounting false refusal`: the reading matches the ground truth, only check 1 names a word;
 - `unread clause, reading right`: the reading matches, but the grammar left a clause unread;
-- `refused, reading wrong`: words are unread and the reading is wrong too (a right refusal);
+- `refused, reading wrong`: words are unread and the reading is wrong too, or no task is read at all (a
+  right refusal);
 - `structure: task count` / `structure: order`: read completely, the number of tasks or the order is wrong;
 - `grounding: type`: kinds and counts right, a type is outside the accepted ones (lenient match passes);
 - `slot: kind/count/sliced/type`: any other wrong task;
-- `error`: refused with an error (a contradictory order, an impossible count).
+- `world: the floor plan lacks it`: refused because the built floor plan lacks an object the row names,
+  or holds fewer than it asks (a generator row composes ALFRED trials, whose own objects the bare floor
+  plan may lack: "two pillows" where it has one);
+- `error`: refused with another error (a contradictory order, one thing moved twice).
+A complete reading that is wrong (the `structure`, `grounding` and `slot` classes) exits 0 in `plan`.
 
 `--long`: the 177 long instructions of alfred_multiagent (no ground truth): the language stage in each
 floor plan's world, and why an instruction is not accepted (the world lacks an object, a task the world
@@ -39,19 +46,20 @@ from functools import cache
 from pathlib import Path
 from typing import Any
 
-from nl2hltl2plan.errors import Nl2Hltl2PlanError
+from nl2hltl2plan.errors import Nl2Hltl2PlanError, WorldError
 from nl2hltl2plan.language.accounting import account
 from nl2hltl2plan.language.grounding import scene_types
 from nl2hltl2plan.language.learned.inference import parse_instruction
 from nl2hltl2plan.language.referents import check_referents
+from nl2hltl2plan.language.result import LanguageResult
 from nl2hltl2plan.language.scoring import match
+from nl2hltl2plan.language.task_specs import BaseTaskSpec
 from nl2hltl2plan.language.translate import apply_choices, scene_instances, top_candidates, translate
 from nl2hltl2plan.suites.alfred.structure_validation import rows_of_set
 from nl2hltl2plan.worlds import load_world
 from nl2hltl2plan.worlds.world import World
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from bench_multiagent_long import instructions  # noqa: E402
 from trust_sets import parse_line  # noqa: E402
 
 STYLES = Path(__file__).resolve().parent.parent / "tests" / "language" / "data" / "styles"
@@ -65,8 +73,14 @@ CLASSES = (
     "structure: order",
     "grounding: type",
     "slot: kind/count/sliced/type",
+    "world: the floor plan lacks it",
     "error",
 )
+WORLD = CLASSES[-2]
+NOTHING_READ = "the offline parser understood no task in "  # `translate._parse`'s refusal
+# a refusal of the floor plan's: an object it lacks ("no Statue in FloorPlan17"), too few of one
+# ("'two pillows': FloorPlan301 holds only 1 pillow")
+LACKING = re.compile(r"^no \w+ in FloorPlan|: FloorPlan\d+ holds only ")
 
 
 def rows(name: str, n: int) -> list[dict[str, Any]]:
@@ -83,24 +97,25 @@ def _world(scene: str) -> World:
     return load_world(scene)
 
 
-def classify(row: dict[str, Any]) -> tuple[str, str]:
-    """(class, why) of one instruction with ground truth. The rows of the committed sets, written for
-    `plan --world SCENE`, give check 1 that world's instance counts, as `plan` does
-    (`translate.account_words`): counts against the scene, "the same X" and picking one of several are
-    judged too. A generator row composes ALFRED trials whose own objects the bare floor plan may lack
-    ("two pillows" where it has one), so it is judged without counts, as before."""
+def classify(row: dict[str, Any], reader: str = "household") -> tuple[str, str, str]:
+    """(class, why, the text as the reader rewrote it) of one instruction with ground truth, as `reader`
+    reads it (`READERS`); the classes judge the reading of the rewritten text, which check 1 reads."""
     try:
-        p = parse_instruction(row["instruction"], scene_types(row["scene"]), row["scene"], strict=False)
-        apply_choices(p, top_candidates(p.ambiguities))
-        world = _world(row["scene"]) if str(row["id"]).startswith("trust.") else None
-        instances = scene_instances(world) if world is not None else None
-        scene = world.name if world is not None else "the scene"
-        found = [str(u) for u in account(row["instruction"], p.tasks, p.before, instances, scene)]
-        check_referents(row["instruction"], p.tasks, p.before, instances, scene)  # as `translate._finish`
+        tasks, before, unread, read = READERS[reader](row)
     except Nl2Hltl2PlanError as exc:
-        return "error", str(exc)
-    unread = list(p.unparsed) + found
-    verdict = match(p.tasks, p.before, row["tasks"], row["before"], strict=True)
+        if _lacking(exc):
+            return WORLD, str(exc), ""
+        # no task read at all: words are unread and there is no reading (the grammar reader's empty parse)
+        return ("refused, reading wrong" if NOTHING_READ in str(exc) else "error"), str(exc), ""
+    cls, why = _judged(row, tasks, before, unread)
+    return cls, why, read
+
+
+def _judged(
+    row: dict[str, Any], tasks: list[BaseTaskSpec], before: list[tuple[str, str]], unread: list[str]
+) -> tuple[str, str]:
+    """(class, why) of a reading that was not refused outright."""
+    verdict = match(tasks, before, row["tasks"], row["before"], strict=True)
     if verdict.order_ok:
         if not unread:
             return "ok", ""
@@ -111,43 +126,94 @@ def classify(row: dict[str, Any]) -> tuple[str, str]:
     why = "; ".join(verdict.reasons)
     if unread:
         return "refused, reading wrong", "; ".join(unread) + " || " + why
-    if len(p.tasks) != len(row["tasks"]):
+    if len(tasks) != len(row["tasks"]):
         return "structure: task count", why
     if verdict.tasks_ok:
         return "structure: order", why
-    if match(p.tasks, p.before, row["tasks"], row["before"], strict=False).order_ok:
+    if match(tasks, before, row["tasks"], row["before"], strict=False).order_ok:
         return "grounding: type", why
     return "slot: kind/count/sliced/type", why
 
 
+# tasks, order, unread (each with its why), the text as the reader rewrote it
+Reading = tuple[list[BaseTaskSpec], list[tuple[str, str]], list[str], str]
+
+
+def household_reading(row: dict[str, Any]) -> Reading:
+    """The shipped reading, as `plan --world SCENE` reads (`--long` alike): `translate` in the row's floor
+    plan, the household reader's rewriting included (`world_readers`: greetings, colon lists, topic
+    questions, descriptive names, self-corrections, "respectively", step numbers, negations), check 1
+    with the floor plan's instance counts and the referents' refusals; an ambiguous word takes its top
+    candidate. The reader's rewritten text is what check 1 reads, so the classes below hold for it."""
+    r = shipped(row["instruction"], _world(row["scene"]))
+    return r.tasks, r.before, list(r.unparsed), r.instruction
+
+
+def shipped(text: str, world: World) -> LanguageResult:
+    """The language stage as `plan --world` runs it, up to the base tasks (no leaf actions, no spec)."""
+    return translate(text, world, "offline", ask=top_candidates, build=False, actions="none")
+
+
+def grammar_reading(row: dict[str, Any]) -> Reading:
+    """The earlier measure (`--reader grammar`, kept to compare with its numbers): the learned parse of the
+    text as written (`learned.inference.parse_instruction`, no household reader), the top candidate of
+    each ambiguous word, then check 1 and the referents' refusals. The rows of the committed user-style
+    sets (written for `plan --world SCENE`) get that world's instance counts; a generator row, which
+    composes ALFRED trials whose own objects the bare floor plan may lack ("two pillows" where it has one),
+    is judged without counts."""
+    p = parse_instruction(row["instruction"], scene_types(row["scene"]), row["scene"], strict=False)
+    apply_choices(p, top_candidates(p.ambiguities))  # its result unused, as the earlier measure had it
+    world = _world(row["scene"]) if str(row["id"]).startswith("trust.") else None
+    instances = scene_instances(world) if world is not None else None
+    scene = world.name if world is not None else "the scene"
+    found = [str(u) for u in account(row["instruction"], p.tasks, p.before, instances, scene)]
+    check_referents(row["instruction"], p.tasks, p.before, instances, scene)  # as `translate._finish`
+    return p.tasks, p.before, list(p.unparsed) + found, row["instruction"]
+
+
+READERS = {"household": household_reading, "grammar": grammar_reading}
+
+
+def _lacking(exc: Exception) -> bool:
+    """Is a refusal the floor plan's (an object it lacks, fewer instances than asked) rather than the
+    reading's?"""
+    return isinstance(exc, WorldError) or bool(LACKING.search(str(exc)))
+
+
 def report_set(
-    name: str, data: list[dict[str, Any]], show: str | None, outcomes: list[dict[str, Any]] | None = None
+    name: str,
+    data: list[dict[str, Any]],
+    show: str | None,
+    outcomes: list[dict[str, Any]] | None = None,
+    reader: str = "household",
 ) -> None:
     per: dict[Any, Counter[str]] = defaultdict(Counter)
     for k, row in enumerate(data):
-        cls, why = classify(row)
+        cls, why, read = classify(row, reader)
         if outcomes is not None:
-            outcomes.append(
-                {"set": name, "row": k, "instruction": row["instruction"], "class": cls, "why": why}
-            )
+            said = {"instruction": row["instruction"], "read": read}
+            outcomes.append({"set": name, "row": k, **said, "class": cls, "why": why})
         for key in (row["n_base"], "all"):
             per[key][cls] += 1
         if show and cls == show:
             print(f"  {row['instruction']!r}: {why[:300]}", file=sys.stderr)
     keys = sorted(k for k in per if k != "all") + ["all"]
-    print(f"\n{name} ({len(data)} instructions): outcome per number of base tasks")
+    print(f"\n{name} ({len(data)} instructions, {reader} reader): outcome per number of base tasks")
     print("| class | " + " | ".join(str(k) for k in keys) + " |")
     print("| --- |" + " --- |" * len(keys))
     for cls in CLASSES:
         if per["all"][cls]:
             print(f"| {cls} | " + " | ".join(str(per[k][cls]) for k in keys) + " |")
     print("| converted | " + " | ".join(f"{per[k]['ok']}/{sum(per[k].values())}" for k in keys) + " |")
+    if per["all"][WORLD]:  # the same, leaving out the rows the built floor plan cannot hold
+        held = [f"{per[k]['ok']}/{sum(per[k].values()) - per[k][WORLD]}" for k in keys]
+        print("| converted, the floor plan holding what the row names | " + " | ".join(held) + " |")
 
 
-def long_reason(text: str, world: Any) -> list[str]:
+def long_reason(text: str, world: World) -> list[str]:
     """Why the language stage does not accept one long instruction (empty: accepted)."""
     try:
-        r = translate(text, world, "offline", ask=top_candidates, build=False, actions="none")
+        r = shipped(text, world)
     except Nl2Hltl2PlanError as exc:
         msg = str(exc)
         if re.match(r"no \w+ in FloorPlan", msg):
@@ -165,6 +231,8 @@ def long_reason(text: str, world: Any) -> list[str]:
 
 
 def report_long() -> None:
+    from bench_multiagent_long import instructions  # imports the planner: only here
+
     first: Counter[str] = Counter()
     anywhere: Counter[str] = Counter()
     accepted = total = 0
@@ -200,6 +268,12 @@ def main() -> int:
     ap.add_argument(
         "--outcomes", type=Path, default=None, help="write every row's class and why to FILE (JSON lines)"
     )
+    ap.add_argument(
+        "--reader",
+        choices=sorted(READERS),
+        default="household",
+        help="household: the shipped reading (translate); grammar: the earlier measure, to compare",
+    )
     args = ap.parse_args()
     outcomes: list[dict[str, Any]] | None = [] if args.outcomes else None
     for name in [s for s in args.sets.split(",") if s]:
@@ -208,7 +282,7 @@ def main() -> int:
         if args.save_rows:
             args.save_rows.mkdir(parents=True, exist_ok=True)
             (args.save_rows / f"{name}.json").write_text(json.dumps(data))
-        report_set(name, data, args.show, outcomes)
+        report_set(name, data, args.show, outcomes, args.reader)
     if args.outcomes and outcomes is not None:
         args.outcomes.write_text("".join(json.dumps(o) + "\n" for o in outcomes))
     if args.long:

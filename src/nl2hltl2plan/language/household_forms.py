@@ -28,7 +28,9 @@ from __future__ import annotations
 
 import re
 
+from nl2hltl2plan.language.content_words import stems
 from nl2hltl2plan.language.courtesy import ungreeted
+from nl2hltl2plan.language.grammar.word_tables import STATE_WORDS, VERBS
 from nl2hltl2plan.language.grounding import find_mentions
 from nl2hltl2plan.language.respectively import LIST_ITEMS
 
@@ -48,15 +50,24 @@ _TOPIC = re.compile(
     re.I,
 )
 _PRONOUN = re.compile(r"\b(?:it|them)\b", re.I)
+
+
+def _participles() -> dict[str, str]:
+    """Each treatment verb of the grammar -> the participle the grammar reads as that treatment's state
+    ("wash" -> "washed": `word_tables.VERBS` and `STATE_WORDS`, the one table of both); an "-ed" form
+    before a bare one ("warmed", not "warm")."""
+    out = {}
+    for done in sorted(STATE_WORDS, key=lambda w: w.endswith("ed")):  # the "-ed" forms last: they stay
+        for verb in stems(done):
+            if VERBS.get(verb) == (STATE_WORDS[done], verb):
+                out[verb] = done
+    return out
+
+
+PARTICIPLES = _participles()
 # a treatment of its things, then a placement of "them" closing with "respectively"
-_PARTICIPLE = {
-    "wash": "washed", "rinse": "rinsed", "clean": "cleaned", "scrub": "scrubbed",
-    "heat": "heated", "warm": "warmed", "cook": "cooked", "microwave": "microwaved",
-    "chill": "chilled", "cool": "cooled", "refrigerate": "refrigerated",
-    "slice": "sliced", "cut": "cut", "chop": "chopped",
-}  # fmt: skip
 _TREATED = re.compile(
-    rf"\b(?P<verb>{'|'.join(_PARTICIPLE)})(?:\s+up)?\s+(?P<things>[^.;!?]+?)\s*,?\s+and\s+(?:then\s+)?"
+    rf"\b(?P<verb>{'|'.join(PARTICIPLES)})(?:\s+up)?\s+(?P<things>[^.;!?]+?)\s*,?\s+and\s+(?:then\s+)?"
     r"(?P<put>put|place|set|move|leave|store)\s+them\s+(?P<places>[^.;!?]+?,?\s+respectively)\b",
     re.I,
 )
@@ -98,7 +109,7 @@ def treated_lists(text: str) -> str:
         things = LIST_ITEMS.split(m["things"].strip())
         if len(things) < 2 or not all(_one_thing(t) for t in things):
             return m[0]
-        done = _PARTICIPLE[m["verb"].lower()]
+        done = PARTICIPLES[m["verb"].lower()]
         treated = [_DETERMINER.sub(lambda d: f"{d['det'] or 'the '}{done} ", t, count=1) for t in things]
         return f"{m['put']} {' and '.join(treated)} {m['places']}"
 

@@ -1,6 +1,6 @@
 """Words of a household (ALFRED) instruction that name a thing by what it is or holds, read with the
 floor plan's types before the grammar reads (the household reader's `prepared`; the data and where it
-comes from are in household_names.txt):
+comes from are in household_names.txt, the drinks and food in content_words.txt):
 
 - a descriptive name of a receptacle ("the island", "the nightstand", "the entertainment center", "the
   vanity") is the first of its types that the floor plan has, written as that type's name; a name whose
@@ -22,6 +22,7 @@ from dataclasses import dataclass
 from functools import cache
 
 from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.language.content_words import DRINK_FOOD, phrase_category
 from nl2hltl2plan.language.grounding import camel_words, find_mentions, phrase_lines
 
 _PREPOSITIONS = {"in": r"(?:in|into|inside|in\s+to)", "on": r"(?:on|onto|on\s+top\s+of|upon)"}
@@ -38,8 +39,6 @@ class _Name:
 def _names() -> tuple[_Name, ...]:
     out = []
     for names, fields in phrase_lines("household_names.txt"):
-        if fields[0] == "contents":
-            continue
         for name in names:
             prep, _, words = name.rpartition(":")
             said = r"\s+".join(map(re.escape, words.split()))
@@ -74,11 +73,8 @@ def _inside_longer_name(text: str, m: re.Match[str]) -> bool:
 
 
 @cache
-def _contents() -> re.Pattern[str]:
-    lines = phrase_lines("household_names.txt")
-    said = [n for names, fields in lines for n in names if fields[0] == "contents"]
-    words = [re.escape(n).replace(r"\ ", r"\s+") for n in said]
-    return re.compile(rf"\b(?:{'|'.join(words)})\b", re.I)
+def _contents() -> re.Pattern[str]:  # the one list of drinks and food, check 1's too (content_words.txt)
+    return re.compile(rf"\b(?:{phrase_category(DRINK_FOOD)})\b", re.I)
 
 
 def contents_hint(text: str) -> str | None:

@@ -16,7 +16,9 @@ A name with `:SEED` composes the set with that seed (`faithful_unseen:21`).
 
 For each instruction the grammar-first reading and the structure model's reading are computed once;
 every candidate `StructurePolicy` is then scored on them (the benchmark's strict match; a reading with
-unread words is a failure), per set and per number of base tasks.
+unread words is a failure), per set and per number of base tasks. The readings are the learned parse's of
+the text as written, where the policies act; what `plan` gives (the household reader's rewriting, the floor
+plan's counts) is measured by `scripts/language_failures.py` on the same sets (`rows_of_set`).
 """
 
 from __future__ import annotations
