@@ -94,6 +94,34 @@ def test_a_step_said_first_or_last_among_three(kitchen, said, tasks, before):
 
 
 @pytest.mark.data
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Step 1: put the mug in the sink. Step 2: put the apple in the fridge.",
+        "Step one: put the mug in the sink. Step two: put the apple in the fridge.",  # "two" is no count
+        "1. put the mug in the sink 2. put the apple in the fridge",
+        "put the mug in the sink. Step 2: put the apple in the fridge.",  # an unnumbered first step
+        "Hi, put the mug in the sink. Step two: put the apple in the fridge.",
+    ],
+)
+def test_steps_numbered_in_turn_are_a_sequence(kitchen, text):
+    """A recipe numbered in turn with no order said: the steps in their numbered turn, one thing each."""
+    assert reading(text, kitchen) == ([MUG_SINK, APPLE_FRIDGE], [("A", "B")])
+
+
+@pytest.mark.data
+def test_numbered_steps_with_a_free_order_remark_order_nothing(kitchen):
+    text = "Step one: put the mug in the sink. Step two: put the apple in the fridge. Any order is fine."
+    assert reading(text, kitchen) == ([MUG_SINK, APPLE_FRIDGE], [])
+
+
+@pytest.mark.data
+def test_steps_numbered_out_of_turn_are_refused(kitchen):
+    with pytest.raises(HTTError, match="out of turn"):
+        translate("Step 2: put the mug in the sink. Step 1: put the apple in the fridge.", kitchen)
+
+
+@pytest.mark.data
 @pytest.mark.parametrize("name", ["users_h115dev", "users_h115held"])
 def test_the_h115_user_set_reads_nothing_wrong(name):
     """h115's user-style set, read as `plan` reads it: no line is read wrong."""

@@ -5,9 +5,11 @@ nothing (step 1 before step 2: the opposite of what was asked).
 
 - "step N first" / "do step N first" / "the second step comes first" / "step N last": the named step first
   (last), and the others in their numbered turn ("1. A 2. B 3. C. Do step 3 first." is "C, then A, then
-  B"): the numbers of a recipe may mean a sequence (the grammar reads "Step 1: ... Step 2: ..." so), and
+  B"): the numbers of a recipe may mean a sequence (steps numbered in turn are read so), and
   an order the text may mean is kept rather than dropped;
 - "step N before step M" / "step M after step N": with two steps, that order;
+- no order said: steps numbered in turn are that sequence ("Step one: A. Step two: B." is "A, then B", the
+  label's number no count); numbered out of turn, refused; with a free-order remark, the numbers go;
 - an order between two of three or more steps (which leaves where the third goes unsaid), or one that names
   a step the recipe does not have, is refused by name. An order the steps may come in freely ("Either step
   may come first") is `free_order.txt`'s, which the grammar reads.
@@ -21,6 +23,7 @@ from __future__ import annotations
 import re
 
 from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.language.content_words import free_order_remarks
 
 _ORDINALS = {"first": 1, "second": 2, "third": 3, "fourth": 4, "one": 1, "two": 2, "three": 3, "four": 4}
 _NUMBER = r"(?:\d+|one|two|three|four)"
@@ -47,7 +50,7 @@ def step_order(text: str) -> str:
     sentences = re.split(r"(?<=[.!?])\s+", text.strip())
     said = [(k, m) for k, s in enumerate(sentences) for p in _SAID if (m := p.match(s.strip(" .!?")))]
     if not said:
-        return text
+        return _in_turn(text)
     if len(said) > 1:
         raise HTTError("the order of the steps is said twice; say it once")
     k, m = said[0]
@@ -66,6 +69,29 @@ def step_order(text: str) -> str:
         if named[0] == named[1]:
             raise HTTError(f"{m[0]!r} orders a step against itself")
     return ", then ".join(steps[n] for n in chain) + "."
+
+
+def _in_turn(text: str) -> str:
+    """A recipe numbered in turn ("Step 1: A. Step 2: B.", "1. A 2. B", "Step one: A. Step two: B."), with
+    no order said and no free-order remark: its steps in that order, "A, then B". A first step left
+    unnumbered before "Step 2" is step 1. Anything else comes back as it is (a text that frees the order
+    keeps its numbers, which the grammar drops)."""
+    marks = list(_STEP.finditer(text))
+    if len(marks) < 2 and not (marks and _number(f"step {marks[0]['n']}") == 2):
+        return text
+    before = text[: marks[0].start()].strip(" .;")
+    try:
+        numbered = _steps(text[marks[0].start() :].lstrip())
+    except HTTError:
+        return text
+    steps = numbered if not before or before.endswith(":") else {1: before, **numbered}
+    if len(steps) < 2:
+        return text
+    if list(steps) != list(range(1, len(steps) + 1)):
+        raise HTTError(f"the steps are numbered out of turn ({', '.join(map(str, steps))}); say their order")
+    if free_order_remarks(text):  # the numbers go, the remark that frees the order stays
+        return ". ".join(steps.values()) + "."
+    return ", then ".join(steps.values()) + "."
 
 
 def _number(ref: str) -> int:
