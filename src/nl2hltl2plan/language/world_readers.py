@@ -41,7 +41,7 @@ from nl2hltl2plan.language.household_words import contents_hint, descriptive_nam
 from nl2hltl2plan.language.numbered_steps import step_order
 from nl2hltl2plan.language.respectively import distributed
 from nl2hltl2plan.language.result import LanguageResult
-from nl2hltl2plan.language.self_corrections import corrected, household_roles
+from nl2hltl2plan.language.self_corrections import corrected, household_roles, in_own_words
 from nl2hltl2plan.worlds.world import World
 
 
@@ -126,7 +126,11 @@ class _HouseholdReader(SharedGrammar):
 
     def refusal(self, refused: Exception, instruction: str) -> Exception:
         hint = contents_hint(instruction)
-        return type(refused)(f"{refused}; {hint}") if hint else refused
+        # quoted in the user's words, not as corrections and the household forms rewrote them
+        said = in_own_words(str(refused), self.prepared(instruction), instruction)
+        if said == str(refused) and not hint:
+            return refused
+        return type(refused)(f"{said}; {hint}" if hint else said)
 
 
 class _HandoverReader(SharedGrammar):
