@@ -15,9 +15,10 @@ as is a word that is one type's name read as another type (`exact_names`: "towel
   each a Fork, Spoon, ButterKnife or Knife), is a plural of its kinds taken together (below);
 - a plural of a type, or of a category read as any of its kinds, that the scene holds more of than the task
   takes: "the forks" where the scene has 3, or "the utensils" where it has 8, read as ALFRED's pick-two (2
-  of them); one rule for both, and only the paper's kitchen (`PAPER_SCENE`) keeps its Example 1's reading. In non-excluded ALFRED training annotations of pick-two tasks, 2081
-  of 2419 say the number ("two forks", "both"), 59 a bare "the forks": a plural without a number is not
-  ALFRED's way of saying two, and "two of three" is not what "the forks" says (`plural_of_several`).
+  of them); one rule for both, and only the paper's kitchen (`PAPER_SCENE`) keeps its Example 1's reading.
+  In non-excluded ALFRED training annotations of pick-two tasks, 2081 of 2419 say the number ("two
+  forks", "both"), 59 a bare "the forks": a plural without a number is not ALFRED's way of saying two,
+  and "two of three" is not what "the forks" says (`plural_of_several`).
 """
 
 from __future__ import annotations
@@ -214,7 +215,11 @@ def plural_of_several(
 
 
 def _not_several(
-    m: Mention, tasks: Sequence[BaseTaskSpec], types: Collection[str], instances: Mapping[str, int], scene: str
+    m: Mention,
+    tasks: Sequence[BaseTaskSpec],
+    types: Collection[str],
+    instances: Mapping[str, int],
+    scene: str,
 ) -> None:
     """Refuse a task of the plural `m` that takes fewer of `types` than the scene holds."""
     held = {t: instances[t] for t in sorted(types) if instances.get(t)}

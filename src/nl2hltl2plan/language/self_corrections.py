@@ -116,7 +116,7 @@ def in_own_words(message: str, read: str, said: str, swaps: Sequence[tuple[str, 
             return repr(typed)
         start = next(j1 + (at - i1 if tag == "equal" else 0) for tag, i1, i2, j1, _ in ops if i1 <= at < i2)
         end = at + len(frag)
-        stop = next(j1 + (end - i1) if tag == "equal" else j2 for tag, i1, i2, j1, j2 in ops if i1 < end <= i2)
+        stop = next(j1 + end - i1 if tag == "equal" else j2 for tag, i1, i2, j1, j2 in ops if i1 < end <= i2)
         return repr(said[start:stop].strip(" ,;")) if said[start:stop].strip(" ,;") else m[0]
 
     return _QUOTED.sub(own, message)
@@ -220,8 +220,9 @@ _OBJECT_PRONOUN = re.compile(r"^\S+\s+(?:it|them)\b", re.I)
 def _clause_replaced(before: str, said: str, marker: str) -> tuple[str, str] | None:
     """`before` without its last verb phrase, and the clause `said` that replaces it ("wash the cloth and
     hang it... no, put it on the shelf": "hang it" goes); the one thing that phrase names stands for a
-    pronoun of `said` ("hang the apple... no, put it in the fridge": the apple). None where no verb is said before the marker
-    in its sentence (the grammar reads it, as before); HTTError where the part replaced is unclear."""
+    pronoun of `said` ("hang the apple... no, put it in the fridge": the apple). None where no verb is said
+    before the marker in its sentence (the grammar reads it, as before); HTTError where the part replaced is
+    unclear."""
     head, named = _sentence_start(before), find_mentions(before)
     spans = [(n.char_start, n.char_end) for n in named]
     verbs = [a for w, a, _ in tokens(before) if a >= head and _opens_with_verb(w)]
