@@ -30,6 +30,7 @@ import re
 from collections.abc import Sequence
 from dataclasses import dataclass
 
+from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.content_words import Unread, stems
 from nl2hltl2plan.language.grounding import (
     AffordanceLookup,
@@ -161,26 +162,29 @@ def read_negations(
             found.append(neg)
     rest = instruction
     for n in sorted(found, key=lambda n: -n.start):
-        rest = rest[: n.start] + " " + _named_again(rest[n.end :], n.thing, n.several)
+        rest = rest[: n.start] + " " + _named_again(rest[n.end :], n)
     rest = re.sub(r"\s+([,.;!?])", r"\1", " ".join(rest.split()))
     rest = re.sub(r"^[,;\s]+|^(?:and|but|then)\s+|[,;\s]+$", "", rest, flags=re.I).strip()
     return rest, found
 
 
-def _named_again(after: str, thing: str, several: bool = False) -> str:
+def _named_again(after: str, neg: Negation) -> str:
     """The text after a negated clause, its "it" or "them" given back the thing the clause named when no
     thing comes between them in the sentence: "don't put the knife in the sink, put it in the drawer"
     leaves "put the knife in the drawer" (not "put it in the drawer", which names nothing); so does
     "Don't put the knife in the sink. Put it in the drawer." "them" stands for several things ("don't put
     the fork and the knife in the sink, put them in the drawer"), "it" for one: a pronoun of the other
-    number names nothing for certain, and is left (refused)."""
+    number names nothing for certain, and is refused naming it."""
+    thing = neg.thing
     lead = len(after) - len(after.lstrip(" ,.;!?"))  # "Don't put the knife in the sink. Put it ..."
     head = after[: lead + len(re.split(r"[.;!?]", after[lead:], maxsplit=1)[0])]
     pronoun = re.search(r"\b(?:it|them)\b", head, re.I)
     if not thing or pronoun is None or any(m.char_start < pronoun.start() for m in find_mentions(head)):
         return after
-    if (pronoun[0].lower() == "them") != several:
-        return after
+    if (pronoun[0].lower() == "them") != neg.several:
+        said = f"{pronoun[0]!r} after {neg.spec.text!r}"
+        what = f"is one of {thing!r}: name which" if neg.several else f"names more than {thing!r}: name them"
+        raise HTTError(f"{said} {what}")
     return after[: pronoun.start()] + thing + after[pronoun.end() :]
 
 
