@@ -129,3 +129,21 @@ def test_a_type_name_read_as_another_type_is_refused_naming_both():
     two = [task("A", "", "Towel", "TowelHolder"), task("B", "", "HandTowel", "HandTowelHolder")]
     check(both, two, before=(), instances=BATHROOM)  # the text decides
     check("put the towel on the towel holder", two[:1], before=(), instances=BATHROOM)  # read as itself
+
+
+@pytest.mark.data
+@pytest.mark.parametrize("name", ["trust_h122dev", "trust_h122held"])
+def test_the_h122_sets_read_as_their_ground_truth_says(name):
+    """h122's sentences for the four gaps of session 21 (category plurals, "them" after a negated list,
+    refusals after self-corrections, greetings), read as `plan` reads them: each line converted or, where
+    its ground truth says so, refused; nothing read wrong."""
+    import sys
+    from pathlib import Path
+
+    sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "scripts"))
+    import trust_sets
+
+    rows = trust_sets.load(name)
+    outcomes = [(gt, *trust_sets.outcome(gt)) for gt in rows]
+    assert [gt.instruction for gt, what, _ in outcomes if what == "wrong"] == []
+    assert all(what == ("converted" if gt.feasible else "refused") for gt, what, _ in outcomes), outcomes
