@@ -158,10 +158,18 @@ def test_an_it_after_a_negated_clause_is_the_thing_that_clause_named():
     ):
         rest, [(_, forbid, _)] = read(text)
         assert "the mug in the fridge" in rest and forbid == ["put(Mug,SinkBasin)"], (text, rest)
-    # a thing named before the "it" is what it stands for; two things named, or none, give no "it" back
+    # a thing named before the "it" is what it stands for; none named gives no "it" back
     assert read("never put the mug in the sink; put the apple in it")[0] == "put the apple in it"
+    # "them" is the things a negated list names, exactly; a pronoun of the other number is refused
     two = "don't put the mug or the cup in the sink, put them in the fridge"
-    assert read(two)[0] == "put them in the fridge"
+    assert read(two)[0] == "put the mug and the cup in the fridge"
+    assert read("never put the mugs in the sink, put them in the fridge")[0] == "put the mugs in the fridge"
+    with pytest.raises(HTTError, match="'it' after \"don't put the mug and the cup in the sink\" is one of"):
+        read("don't put the mug and the cup in the sink, put it in the fridge")
+    with pytest.raises(HTTError, match="'them' after \"don't put the mug in the sink\" names more than"):
+        read("don't put the mug in the sink, put them in the fridge")
+    spaced = "don't put the mug in the sink or the cup in the fridge, put them on the table"
+    assert read(spaced)[0] == "put them on the table"  # not one list: what "them" names is unsure
     assert read("heat the mug but don't put it in the microwave, put it on the counter")[0] == (
         "heat the mug, put it on the counter"
     )

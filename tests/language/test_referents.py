@@ -77,13 +77,25 @@ def test_a_category_plural_read_as_one_kind_is_refused_naming_what_the_scene_hol
     assert repr(word) in str(err.value) and f"{obj} (3)" in str(err.value)
 
 
-def test_a_category_read_as_any_of_its_kinds_is_left():
-    """The paper's dishwasher task: "utensils" is two things, each a Fork, Spoon, ButterKnife or Knife."""
+def test_a_category_read_as_any_of_its_kinds_counts_every_instance_of_its_kinds():
+    """ "utensils" read as two things, each a Fork, Spoon, ButterKnife or Knife: read where the scene holds
+    two utensils in all, refused where it holds more (as "the forks" is), except in the paper's kitchen,
+    whose Example 1 reads it so; a count word says how many."""
     kinds = ["Fork", "Spoon", "ButterKnife", "Knife"]
     utensils = BaseTaskSpec(id="A", kind="place_two", object=kinds, receptacle=["Drawer"], count=2)
-    check("put the utensils in the drawer", [utensils], before=())
+    two = {"Fork": 1, "Spoon": 1, "ButterKnife": 0, "Knife": 0, "Drawer": 2}
+    check("put the utensils in the drawer", [utensils], before=(), instances=two)
+    with pytest.raises(HTTError) as err:
+        check("put the utensils in the drawer", [utensils], before=())
+    assert str(err.value).startswith("'utensils': FloorPlan11 has 5 of them (Fork 3, Spoon 2)")
+    assert '"two utensils", "all the utensils"' in str(err.value)
     spoons = utensils.model_copy(update={"object": ["Spoon"]})  # the user's pick of the ambiguous kind
-    check("put the utensils in the drawer", [spoons], before=())
+    with pytest.raises(HTTError, match="'utensils': FloorPlan11 has 5 of them"):
+        check("put the utensils in the drawer", [spoons], before=())
+    check_referents("put the utensils in the drawer", [utensils], [], KITCHEN, "demo")
+    every = utensils.model_copy(update={"count": 8})
+    check("put all the utensils in the drawer", [every], before=())
+    check("put two utensils in the drawer", [utensils], before=())
     one = utensils.model_copy(update={"kind": "place", "count": 1})
     with pytest.raises(HTTError, match="'silverware' names several kinds"):
         check("put the silverware in the drawer", [one], before=())  # one thing: never
@@ -117,3 +129,21 @@ def test_a_type_name_read_as_another_type_is_refused_naming_both():
     two = [task("A", "", "Towel", "TowelHolder"), task("B", "", "HandTowel", "HandTowelHolder")]
     check(both, two, before=(), instances=BATHROOM)  # the text decides
     check("put the towel on the towel holder", two[:1], before=(), instances=BATHROOM)  # read as itself
+
+
+@pytest.mark.data
+@pytest.mark.parametrize("name", ["trust_h122dev", "trust_h122held"])
+def test_the_h122_sets_read_as_their_ground_truth_says(name):
+    """h122's sentences for the four gaps of session 21 (category plurals, "them" after a negated list,
+    refusals after self-corrections, greetings), read as `plan` reads them: each line converted or, where
+    its ground truth says so, refused; nothing read wrong."""
+    import sys
+    from pathlib import Path
+
+    sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "scripts"))
+    import trust_sets
+
+    rows = trust_sets.load(name)
+    outcomes = [(gt, *trust_sets.outcome(gt)) for gt in rows]
+    assert [gt.instruction for gt, what, _ in outcomes if what == "wrong"] == []
+    assert all(what == ("converted" if gt.feasible else "refused") for gt, what, _ in outcomes), outcomes

@@ -155,6 +155,41 @@ def test_a_clause_correction_whose_part_is_unclear_is_refused_by_name(kitchen, t
 
 
 @pytest.mark.data
+@pytest.mark.parametrize(
+    "text, quoted",
+    [
+        # a second correction after a first one rewrote "it": the phrase as typed, not "put the mug in ..."
+        (
+            "put the mug in the sink... no, put it in the cabinet and the fork in the drawer, no, put it in "
+            "the sink",
+            "('put it in the cabinet and the fork in the drawer')",
+        ),
+        # the grammar's refusal of a corrected clause: the user's words, not "chill the apple, ..."
+        ("heat the apple... no, chill it, and then dance", "no task in 'heat the apple... no, chill it, and"),
+    ],
+)
+def test_a_refusal_after_a_correction_quotes_the_words_typed(kitchen, text, quoted):
+    with pytest.raises(HTTError) as refused:
+        translate(text, kitchen, build=False, actions="none")
+    assert quoted in str(refused.value)
+    assert "'put the mug in the cabinet" not in str(refused.value)
+    assert "'chill the apple" not in str(refused.value)
+
+
+def test_in_own_words_quotes_only_what_was_rewritten():
+    from nl2hltl2plan.language.self_corrections import in_own_words
+
+    said, read = "hang the apple... no, put it in the frdige", "put the apple in the frdige"
+    assert in_own_words("'frdige' is no place", read, said) == "'frdige' is no place"  # typed as quoted
+    swaps = [("put the apple in the frdige", "put it in the frdige")]
+    assert in_own_words("no task in 'put the apple in the frdige'", read, said, swaps) == (
+        "no task in 'put it in the frdige'"
+    )
+    assert in_own_words("no task in 'put the apple in the frdige'", read, said) == f"no task in {said!r}"
+    assert in_own_words("'put the apple'", said, said) == "'put the apple'"  # nothing rewritten
+
+
+@pytest.mark.data
 def test_a_no_inside_the_sentence_stays_a_negation_and_actually_may_add(kitchen):
     """("actually put the mug in the sink too" adds: its clause stays the grammar's, and check 1 names it)"""
     for text in (

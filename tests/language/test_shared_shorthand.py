@@ -127,7 +127,7 @@ def test_one_list_of_greetings_and_addresses_for_every_reader():
     [
         ("Hi team, put it down. Much appreciated!", "put it down."),
         ("Hey robot put it down.", "Hey robot put it down."),  # a greeting that runs on stays
-        ("Hey, when you're done, put it down.", "Hey, when you're done, put it down."),
+        ("Hey, when you're done, put it down.", "when you're done, put it down."),  # before any clause
         ("Put it down. Thanks, but not the mug.", "Put it down. Thanks, but not the mug."),
         ("Put it down. Cheers, Mug", "Put it down. Cheers, Mug"),  # the name names a thing
     ],

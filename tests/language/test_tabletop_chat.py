@@ -28,6 +28,10 @@ _ORDERED = (sorted(_FIRST + _THEN), sorted((a, b) for a in _FIRST for b in _THEN
         ("Hi! Sure thing! Put it down.", "Put it down."),
         ("Put it down. Thank you so much!", "Put it down."),
         ("Put it down. Cheers, Ana", "Put it down."),
+        # one greeting policy in every world: a greeting or reply goes before any clause, at any sentence
+        ("Hey, when you're done, put it down.", "when you're done, put it down."),
+        ("No problem! Once that's done, put it down.", "Once that's done, put it down."),
+        ("Put the carrot down. Hi there! Put it down.", "Put the carrot down. Put it down."),
     ],
 )
 def test_chat_forms_read_as_plain_words(text, read):
@@ -42,8 +46,6 @@ def test_chat_forms_read_as_plain_words(text, read):
         "Put it down. Cheers, Orange",  # a sign-off's name that names a thing stays
         "Put it down in any order you find the carrot.",  # "find" that is no leave stays
         "when it is on it, put it down",  # only "both" / "they" / "all" ... are on it
-        "Hey, when you're done, put it down.",  # a greeting before a clause that waits on something stays
-        "No problem! Once that's done, put it down.",
     ],
 )
 def test_near_misses_left_as_written(text):
@@ -89,3 +91,11 @@ def test_back_references_after_a_greeting_or_reply_keep_the_order(text):
 )
 def test_near_misses_still_refused(text):
     assert _reading(text) is None
+
+
+@pytest.mark.parametrize("opener", ["", "Hey, ", "Hi! ", "No problem! "])
+def test_a_greeting_before_a_waiting_clause_changes_no_reading(opener):
+    """One greeting policy with the household reader (test_household_forms): the greeting goes, and what
+    follows reads as it reads alone."""
+    text = f"{opener}when you're done, put the carrot on the blue plate and the orange on the yellow plate."
+    assert _reading(text) == _TWO

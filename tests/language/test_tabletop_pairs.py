@@ -382,12 +382,12 @@ def test_a_freedom_statement_about_each_group_leaves_the_groups_ordered():
         "green apple on the blue plate and orange on the yellow plate; the order is not up to you",
         "the green apple on the blue plate must precede the orange on the yellow plate",
         "where is the green apple? on the blue plate. put the orange on the yellow plate",
-        "hey, when you're done, put the orange on the yellow plate and the green apple on the blue plate",
     ],
 )
 def test_order_words_no_reading_takes_are_refused(text):
-    """An order that is said but not which one, a relation verb, a question about where a thing is, a
-    "when you're done" with nothing before it: refused, never read as no order."""
+    """An order that is said but not which one, a relation verb, a question about where a thing is:
+    refused, never read as no order. ("hey, when you're done, put A and B" is read as "when you're done,
+    put A and B", with no order, as in every world: test_tabletop_chat, issue 23's one greeting policy.)"""
     assert _reading(text) is None
 
 

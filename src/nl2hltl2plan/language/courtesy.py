@@ -53,49 +53,35 @@ def without_courtesy(text: str) -> str:
     return out if re.search(r"\w", out) else text
 
 
-# a greeting or reply stays before a clause that waits on something ("Hey, when you're done, ..."): what it
-# waits on is not said, and the text is read (or refused) as it was
-_REQUEST_FOLLOWS = r"(?=\w)(?!(?:when|whenever|once|after|before|while|until|as soon as|if)\b)"
+# what only greets or replies, set apart at a sentence's start before more words ("Hi there,", "Good
+# morning!", "No problem!"): it carries nothing, so it goes wherever it stands and whatever clause follows it
+# ("Hey, when you're done, put ..."): each reader then reads, or refuses, the words after it as it reads them
+# with no greeting (docs/language.md, "Courtesy")
+_OPENS = r"(?P<lead>^|(?<=[.!?])\s+)"
 _GREETING = re.compile(
-    rf"^\s*(?:{courtesy_pattern('greeting', 'address', 'greeting_with')}\s*)+[!.,]+\s*{_REQUEST_FOLLOWS}",
-    re.IGNORECASE,
+    rf"{_OPENS}(?:{courtesy_pattern('greeting', 'address', 'greeting_with')}\s*)+[!.,]+\s*(?=\w)", re.I
 )
-_REPLY = re.compile(rf"^\s*{courtesy_pattern('reply')}\s*[!.,]+\s*{_REQUEST_FOLLOWS}", re.IGNORECASE)
+_REPLY = re.compile(rf"{_OPENS}{courtesy_pattern('reply')}\s*[!.,]+\s*(?=\w)", re.I)
 _THANKS = re.compile(rf"(?<=[.!?])\s*{courtesy_pattern('closing')}\s*[!.]*\s*$", re.IGNORECASE)
 _SIGN_OFF = re.compile(rf"(?<=[.!?])\s*(?i:{courtesy_pattern('sign_off')})\s*,\s*(?P<name>[A-Z][a-z]+)\W*$")
 
 
 def without_greetings(text: str, names_a_thing: Callable[[str], bool]) -> str:
-    """`text` without a greeting that opens it set apart ("Hi there,", "Good morning!"), an agent's reply
-    (`reply`: "No problem!", "Sure thing!"), a closing sentence that only thanks ("Thanks!") and a sign-off
-    with a name ("Cheers, Ana") unless `names_a_thing(name)`. A greeting that goes on ("Hey robot put ...")
-    and one before a clause that waits on something ("Hey, when you're done, ...") stay, as does a closing
-    "thanks" with more to say ("Thanks, but not the orange")."""
+    """`text` without a greeting set apart at any sentence's start ("Hi there,", "Good morning!"), before
+    any clause ("Hey, when you're done, put ..." is "when you're done, put ..."), an agent's reply set apart
+    there (`reply`: "No problem!", "Sure thing!"), a closing sentence that only thanks ("Thanks!") and a
+    sign-off with a name ("Cheers, Ana") unless `names_a_thing(name)`. The one greeting policy of every
+    reader that removes greetings (household, tabletop). A greeting that goes on ("Hey robot put ...") stays,
+    as does a closing "thanks" with more to say ("Thanks, but not the orange").
+
+    >>> without_greetings("Hey, when you're done, put the mug in the sink. Hi there! Put the egg away.", bool)
+    "when you're done, put the mug in the sink. Put the egg away."
+    """
     opened = None
     while opened != text:  # "Hi! Sure thing! ..."
         opened = text
-        text = _REPLY.sub("", _GREETING.sub("", text))
+        text = _REPLY.sub(lambda m: m["lead"], _GREETING.sub(lambda m: m["lead"], text))
     sign_off = _SIGN_OFF.search(text)
     if sign_off and not names_a_thing(sign_off["name"]):
         text = text[: sign_off.start()]
     return _THANKS.sub("", text).strip()
-
-
-# a greeting set apart at any sentence's start, before a request (the household reader's `household_forms`)
-_SENTENCE_GREETING = re.compile(
-    rf"(?P<lead>^|(?<=[.!?])\s+)(?:{courtesy_pattern('greeting', 'address', 'greeting_with')}\s*)+[!.,]+\s*"
-    r"(?=[a-z])",
-    re.I,
-)
-
-
-def ungreeted(text: str) -> str:
-    """`text` without a greeting set apart ("Hey,", "Hi there!") that opens any of its sentences. Unlike
-    `without_greetings` (every reader, the text's opening only), it drops one before a clause that waits
-    ("Hey, when you're done, put ..."): the household grammar reads "when you're done" with no task
-    before it as waiting on none, while the tabletop reader refuses it (docs/language.md).
-
-    >>> ungreeted("Hey, when you're done, put the mug in the sink. Hi there! Put the egg away.")
-    "when you're done, put the mug in the sink. Put the egg away."
-    """
-    return _SENTENCE_GREETING.sub(lambda m: m["lead"], text)

@@ -8,10 +8,6 @@ an action, and applies only where its parts name what it needs:
 - a thing asked as a topic, then what to do with it (`topic_said`): "The mug? Heat it and put it in the
   sink." is "Heat the mug and put it in the sink." (the question names one thing and nothing else, and the
   sentence after it says "it" or "them");
-- a greeting set apart at the start of a sentence (`courtesy.ungreeted`): "Hey, when you're done, put
-  ..." is "when you're done, put ..."; the grammar read the greeting as a step that "when you're done"
-  waits on, and check 1 named the greeting and the order word (with no task before it, "when you're done"
-  waits on none of the instruction's, as the grammar reads it);
 - a treatment and a "respectively" list after it (`treated_lists`): "wash the mug and the plate and put
   them in the sink and the cabinet respectively" is "put the washed mug and the washed plate in the sink
   and the cabinet respectively", which `respectively.distributed` writes out pair by pair.
@@ -29,7 +25,6 @@ from __future__ import annotations
 import re
 
 from nl2hltl2plan.language.content_words import stems
-from nl2hltl2plan.language.courtesy import ungreeted
 from nl2hltl2plan.language.grammar.word_tables import STATE_WORDS, VERBS
 from nl2hltl2plan.language.grounding import find_mentions
 from nl2hltl2plan.language.respectively import LIST_ITEMS
@@ -76,7 +71,7 @@ _DETERMINER = re.compile(r"^(?P<det>(?:the|a|an|my|your|both|two)\s+)?", re.I)
 
 def household_forms(text: str) -> str:
     """`text` with each form above written out as the grammar reads it."""
-    return treated_lists(topic_said(paired(ungreeted(text))))
+    return treated_lists(topic_said(paired(text)))
 
 
 def paired(text: str) -> str:

@@ -25,10 +25,12 @@ the hierarchical spec (`logic.constraints`).
 
 from __future__ import annotations
 
+import itertools
 import re
 from collections.abc import Sequence
 from dataclasses import dataclass
 
+from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.content_words import Unread, stems
 from nl2hltl2plan.language.grounding import (
     AffordanceLookup,
@@ -105,6 +107,7 @@ class Negation:
     spec: ConstraintSpec
     until_words: str = ""
     thing: str = ""  # the words naming what it forbids an action on ("the knife"), for a later "it"
+    several: bool = False  # `thing` names more than one ("the fork and the knife", "the forks"): "them"
 
 
 def patterns(
@@ -159,22 +162,29 @@ def read_negations(
             found.append(neg)
     rest = instruction
     for n in sorted(found, key=lambda n: -n.start):
-        rest = rest[: n.start] + " " + _named_again(rest[n.end :], n.thing)
+        rest = rest[: n.start] + " " + _named_again(rest[n.end :], n)
     rest = re.sub(r"\s+([,.;!?])", r"\1", " ".join(rest.split()))
     rest = re.sub(r"^[,;\s]+|^(?:and|but|then)\s+|[,;\s]+$", "", rest, flags=re.I).strip()
     return rest, found
 
 
-def _named_again(after: str, thing: str) -> str:
+def _named_again(after: str, neg: Negation) -> str:
     """The text after a negated clause, its "it" or "them" given back the thing the clause named when no
     thing comes between them in the sentence: "don't put the knife in the sink, put it in the drawer"
     leaves "put the knife in the drawer" (not "put it in the drawer", which names nothing); so does
-    "Don't put the knife in the sink. Put it in the drawer." """
+    "Don't put the knife in the sink. Put it in the drawer." "them" stands for several things ("don't put
+    the fork and the knife in the sink, put them in the drawer"), "it" for one: a pronoun of the other
+    number names nothing for certain, and is refused naming it."""
+    thing = neg.thing
     lead = len(after) - len(after.lstrip(" ,.;!?"))  # "Don't put the knife in the sink. Put it ..."
     head = after[: lead + len(re.split(r"[.;!?]", after[lead:], maxsplit=1)[0])]
     pronoun = re.search(r"\b(?:it|them)\b", head, re.I)
     if not thing or pronoun is None or any(m.char_start < pronoun.start() for m in find_mentions(head)):
         return after
+    if (pronoun[0].lower() == "them") != neg.several:
+        said = f"{pronoun[0]!r} after {neg.spec.text!r}"
+        what = f"is one of {thing!r}: name which" if neg.several else f"names more than {thing!r}: name them"
+        raise HTTError(f"{said} {what}")
     return after[: pronoun.start()] + thing + after[pronoun.end() :]
 
 
@@ -243,11 +253,22 @@ def _read_clause(
         return None
     neg = _negation(text, toks, i, end_tok, cut, verb, things, places, look)
     named = [m for m in inside if m.start > i and not PREPS & set(words[max(0, m.start - 3) : m.start])]
-    if neg is not None and len(named) == 1:  # one thing of its own (not an "it"): what a later "it" is
-        k = named[0].start
-        first = k - 1 if k and words[k - 1] in LISTED else k  # "the knife", with its determiner
-        neg.thing = text[toks[first][1] : named[0].char_end]
+    if neg is not None and named and _listed(words, named):  # things of its own (not an "it")
+        spans = [text[toks[_determined(words, m.start)][1] : m.char_end] for m in named]
+        neg.thing, neg.several = " and ".join(spans), len(named) > 1 or named[0].plural
     return neg
+
+
+def _determined(words: list[str], k: int) -> int:
+    """Where the name at word `k` starts with its determiner ("the knife")."""
+    return k - 1 if k and words[k - 1] in LISTED else k
+
+
+def _listed(words: list[str], named: list[Mention]) -> bool:
+    """Are the names one thing, or a list of things with nothing between them but "and", "or", "nor", a
+    comma and determiners ("the fork and the knife"), so that a later "them" names exactly them?"""
+    joins = {"and", "or", "nor", ","} | LISTED
+    return all(set(words[a.end : _determined(words, b.start)]) <= joins for a, b in itertools.pairwise(named))
 
 
 def _negation(

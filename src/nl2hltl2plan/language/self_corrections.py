@@ -25,7 +25,9 @@ ellipsis (an "Actually, ..." opening a sentence adds, and is left).
 
 from __future__ import annotations
 
+import difflib
 import re
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 from nl2hltl2plan.errors import HTTError
@@ -79,7 +81,48 @@ class Roles:
 
 def corrected(text: str, roles: Roles) -> str:
     """`text` with each self-correction applied (see the module docstring); raises HTTError naming a
-    correction that cannot be applied with certainty."""
+    correction that cannot be applied with certainty, in the words the user typed (`in_own_words`)."""
+    read = [text]  # the text as rewritten so far, where a refusal quotes it
+    swaps: list[tuple[str, str]] = []
+    try:
+        return _corrected(text, roles, read, swaps)
+    except HTTError as refused:
+        raise HTTError(in_own_words(str(refused), read[-1], text, swaps)) from None
+
+
+# a quoted fragment of a message, as repr() writes it
+_QUOTED = re.compile(r"'(?:[^'\\\n]|\\.)+'|\"(?:[^\"\\\n]|\\.)+\"")
+
+
+def in_own_words(message: str, read: str, said: str, swaps: Sequence[tuple[str, str]] = ()) -> str:
+    """`message` with each fragment it quotes from the rewritten text `read` that the user never typed
+    quoted as the words of `said` that the fragment was rewritten from: a refusal quotes what the user
+    typed. `swaps`: (clause as rewritten, as typed) pairs, which say it exactly ("put the mug in the
+    cabinet" for "put it in the cabinet"); otherwise the stretch of `said` the fragment aligns with."""
+    low_read, low_said = read.lower(), said.lower()
+    if low_read == low_said:
+        return message
+    ops = difflib.SequenceMatcher(None, low_read, low_said, autojunk=False).get_opcodes()
+
+    def own(m: re.Match[str]) -> str:
+        frag = m[0][1:-1]
+        at = low_read.find(frag.lower())
+        if not frag.strip() or frag.lower() in low_said or at < 0:
+            return m[0]
+        typed = frag
+        for new, old in swaps:
+            typed = typed.replace(new, old)
+        if typed.lower() in low_said:
+            return repr(typed)
+        start = next(j1 + (at - i1 if tag == "equal" else 0) for tag, i1, i2, j1, _ in ops if i1 <= at < i2)
+        end = at + len(frag)
+        stop = next(j1 + end - i1 if tag == "equal" else j2 for tag, i1, i2, j1, j2 in ops if i1 < end <= i2)
+        return repr(said[start:stop].strip(" ,;")) if said[start:stop].strip(" ,;") else m[0]
+
+    return _QUOTED.sub(own, message)
+
+
+def _corrected(text: str, roles: Roles, read: list[str], swaps: list[tuple[str, str]]) -> str:
     start = 0
     while m := _MARKER.search(text, start):
         marker, after = " ".join(m["marker"].split()), text[m.end() :]
@@ -93,8 +136,11 @@ def corrected(text: str, roles: Roles) -> str:
             if clause and (added := _ADDS.search(after[: _sentence_end(after)])):
                 unclear = f"whether {said!r} after {marker!r} replaces or adds ({added[0]!r}) is unclear"
                 raise HTTError(f"{unclear}: {_AGAIN}")
-            if clause and (fixed := _clause_replaced(text[: m.start()], said, marker)) is not None:
+            if clause and (swap := _clause_replaced(text[: m.start()], said, marker)) is not None:
+                fixed = swap[0] + swap[1]
                 text, start = fixed + after[cut:], len(fixed)
+                read.append(text)
+                swaps.append((swap[1], said))  # a refusal quotes the clause as typed
             else:
                 start = m.end()
             continue
@@ -105,6 +151,7 @@ def corrected(text: str, roles: Roles) -> str:
             continue
         fixed = _replaced(text[: m.start()], said, marker, roles)
         text, start = fixed + after[cut:], len(fixed)
+        read.append(text)
     return text
 
 
@@ -170,11 +217,12 @@ _PRONOUN = re.compile(r"\b(?:it|them)\b", re.I)
 _OBJECT_PRONOUN = re.compile(r"^\S+\s+(?:it|them)\b", re.I)
 
 
-def _clause_replaced(before: str, said: str, marker: str) -> str | None:
-    """`before` with its last verb phrase swapped for the clause `said` ("wash the cloth and hang it... no,
-    put it on the shelf": "hang it" goes); the one thing that phrase names stands for a pronoun of `said`
-    ("hang the apple... no, put it in the fridge": the apple). None where no verb is said before the marker
-    in its sentence (the grammar reads it, as before); HTTError where the part replaced is unclear."""
+def _clause_replaced(before: str, said: str, marker: str) -> tuple[str, str] | None:
+    """`before` without its last verb phrase, and the clause `said` that replaces it ("wash the cloth and
+    hang it... no, put it on the shelf": "hang it" goes); the one thing that phrase names stands for a
+    pronoun of `said` ("hang the apple... no, put it in the fridge": the apple). None where no verb is said
+    before the marker in its sentence (the grammar reads it, as before); HTTError where the part replaced is
+    unclear."""
     head, named = _sentence_start(before), find_mentions(before)
     spans = [(n.char_start, n.char_end) for n in named]
     verbs = [a for w, a, _ in tokens(before) if a >= head and _opens_with_verb(w)]
@@ -197,7 +245,8 @@ def _clause_replaced(before: str, said: str, marker: str) -> str | None:
         det = _ARTICLE.search(before[: things[0].char_start])
         thing = before[det.start() if det else things[0].char_start : things[0].char_end]
         said = _PRONOUN.sub(thing, said, count=1)
-    return before[: verbs[-1]] + said
+    return before[: verbs[-1]], said
+
 
 
 def _sentence_end(after: str) -> int:

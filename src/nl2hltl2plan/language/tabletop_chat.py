@@ -7,7 +7,8 @@ Read before any reader sees the text (`TabletopReader.as_read`), each as the pla
 - "when / once / after both are on it": "it" is the plate just named, read as "there" ("once both are
   there"), which the readers resolve to it;
 - a greeting, an agent's reply, a closing thanks and a sign-off with a name that is no object or plate
-  ("Hi there, ... Cheers, Ana") are removed as in every reader (`courtesy.without_greetings`).
+  ("Hi there, ... Cheers, Ana", "Hey, when you're done, ...") are removed as in every reader, by one
+  policy (`courtesy.without_greetings`).
 
 Chat shorthand ("n" for "and", "u" for "you") is read before, in every world (`spelling.shorthand_read`).
 The words of a leave are `tabletop_chat.txt`'s.

@@ -34,14 +34,15 @@ from typing import Protocol
 
 from nl2hltl2plan.language.content_words import Unread
 from nl2hltl2plan.language.courtesy import without_greetings
-from nl2hltl2plan.language.grounding import find_mentions
+from nl2hltl2plan.language.grounding import Grounder, find_mentions, world_lookup
 from nl2hltl2plan.language.headings import answered
 from nl2hltl2plan.language.household_forms import household_forms
 from nl2hltl2plan.language.household_words import contents_hint, descriptive_names
+from nl2hltl2plan.language.negations import read_negations
 from nl2hltl2plan.language.numbered_steps import step_order
 from nl2hltl2plan.language.respectively import distributed
 from nl2hltl2plan.language.result import LanguageResult
-from nl2hltl2plan.language.self_corrections import corrected, household_roles
+from nl2hltl2plan.language.self_corrections import corrected, household_roles, in_own_words
 from nl2hltl2plan.worlds.world import World
 
 
@@ -126,7 +127,15 @@ class _HouseholdReader(SharedGrammar):
 
     def refusal(self, refused: Exception, instruction: str) -> Exception:
         hint = contents_hint(instruction)
-        return type(refused)(f"{refused}; {hint}") if hint else refused
+        # quoted in the user's words, not as corrections, the household forms and a negation's "them" (the
+        # things it named given back) rewrote them
+        prepared = self.prepared(instruction)
+        grounder = Grounder(set(self.world.object_types()), self.world.name)
+        rest = read_negations(prepared, grounder, world_lookup(self.world))[0]
+        said = in_own_words(in_own_words(str(refused), rest, instruction), prepared, instruction)
+        if said == str(refused) and not hint:
+            return refused
+        return type(refused)(f"{said}; {hint}" if hint else said)
 
 
 class _HandoverReader(SharedGrammar):
