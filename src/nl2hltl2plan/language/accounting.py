@@ -49,6 +49,7 @@ from nl2hltl2plan.language.grounding import (
     tokens,
 )
 from nl2hltl2plan.language.landmarks import NEAR_WORDS, carried, landmark_destinations, pair_start
+from nl2hltl2plan.language.memo import reading_memo
 from nl2hltl2plan.language.negations import NO_CONSTRAINT, about_order, unforbidden_verb
 from nl2hltl2plan.language.order_words import check_cycles, finished_words, misordered, unordered_steps
 from nl2hltl2plan.language.parse_usage import IMPLIED_TYPES, ParseUsage
@@ -75,6 +76,7 @@ from nl2hltl2plan.language.unsupported_steps import (
 NAVIGATION = frozenset({"go", "walk", "head", "come", "run", "move", "turn"})  # "move to the sink", no object
 
 
+@reading_memo  # asked about five times per instruction, half of them of the same reading
 def account(
     instruction: str,
     tasks: Sequence[BaseTaskSpec],
@@ -83,8 +85,7 @@ def account(
     scene: str = "the scene",
     constraints: Sequence[ConstraintSpec] = (),
 ) -> list[Unread]:
-    """The content words of `instruction` that `tasks`/`before`/`constraints` do not use, and the slots
-    no word names.
+    """The content words of `instruction` that `tasks`/`before`/`constraints` do not use; slots no word names.
 
     `instances`: how many objects of each type the scene holds (None: unknown, counts are not checked
     against the scene). A negation, and the verb of its clause, count as used when a constraint's
@@ -115,9 +116,8 @@ def account(
     out += _invented_kinds(instruction, toks, mentions, parse)
     out += treated_after_placing(instruction, mentions, parse)
     out += closed_after_placing(instruction, mentions, parse)
-    out += returns_and_repeats(instruction, mentions, parse) + other_instances(
-        instruction, mentions, parse, instances
-    )
+    out += returns_and_repeats(instruction, mentions, parse)
+    out += other_instances(instruction, mentions, parse, instances)
     out += vague_words(instruction, mentions) + started(instruction, parse)
     out += corrections(instruction, mentions, parse) + repeated_tasks(instruction, mentions, parse)
     out += one_of_several(instruction, mentions, parse, instances)
