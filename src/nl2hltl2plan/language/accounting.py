@@ -212,8 +212,7 @@ def _nouns(
     # A phrase whose head's own type fills the slot ("coffee table" -> CoffeeTable) is matched before one
     # that only may mean it ("the table"). Nodes are numbers (groups 0.., slots after them), so that the
     # matching never depends on the run's string hashing.
-    keys = list(groups)
-    g = nx.Graph()
+    keys, g = list(groups), nx.Graph()
     for i, (key, phrases) in enumerate(groups.items()):
         types = {t for m in phrases[0] for t in m.entry.types} | key
         for k, (_, _, st) in enumerate(slots):
@@ -222,7 +221,8 @@ def _nouns(
                 g.add_edge(i, len(keys) + k, weight=3)
             elif st & types:
                 g.add_edge(i, len(keys) + k, weight=2)
-    pairs = [sorted(e) for e in nx.max_weight_matching(g, maxcardinality=True)]
+    lone = all(d <= 1 for _, d in g.degree)  # no group or slot with two edges: the edges are the matching
+    pairs = [sorted(e) for e in (g.edges if lone else nx.max_weight_matching(g, maxcardinality=True))]
     slot_of = {i: k - len(keys) for i, k in pairs}
     matched = {keys[i] for i in slot_of}
     # a group fills one slot, but its type may be a place of another task too ("the knife to the pan on
