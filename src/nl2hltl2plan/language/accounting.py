@@ -49,6 +49,7 @@ from nl2hltl2plan.language.grounding import (
     tokens,
 )
 from nl2hltl2plan.language.landmarks import NEAR_WORDS, carried, landmark_destinations, pair_start
+from nl2hltl2plan.language.memo import reading_memo
 from nl2hltl2plan.language.negations import NO_CONSTRAINT, about_order, unforbidden_verb
 from nl2hltl2plan.language.order_words import check_cycles, finished_words, misordered, unordered_steps
 from nl2hltl2plan.language.parse_usage import IMPLIED_TYPES, ParseUsage
@@ -75,6 +76,7 @@ from nl2hltl2plan.language.unsupported_steps import (
 NAVIGATION = frozenset({"go", "walk", "head", "come", "run", "move", "turn"})  # "move to the sink", no object
 
 
+@reading_memo  # asked about five times per instruction, half of them of the same reading
 def account(
     instruction: str,
     tasks: Sequence[BaseTaskSpec],
@@ -83,8 +85,7 @@ def account(
     scene: str = "the scene",
     constraints: Sequence[ConstraintSpec] = (),
 ) -> list[Unread]:
-    """The content words of `instruction` that `tasks`/`before`/`constraints` do not use, and the slots
-    no word names.
+    """The content words of `instruction` that `tasks`/`before`/`constraints` do not use; slots no word names.
 
     `instances`: how many objects of each type the scene holds (None: unknown, counts are not checked
     against the scene). A negation, and the verb of its clause, count as used when a constraint's
@@ -115,9 +116,8 @@ def account(
     out += _invented_kinds(instruction, toks, mentions, parse)
     out += treated_after_placing(instruction, mentions, parse)
     out += closed_after_placing(instruction, mentions, parse)
-    out += returns_and_repeats(instruction, mentions, parse) + other_instances(
-        instruction, mentions, parse, instances
-    )
+    out += returns_and_repeats(instruction, mentions, parse)
+    out += other_instances(instruction, mentions, parse, instances)
     out += vague_words(instruction, mentions) + started(instruction, parse)
     out += corrections(instruction, mentions, parse) + repeated_tasks(instruction, mentions, parse)
     out += one_of_several(instruction, mentions, parse, instances)
@@ -212,8 +212,7 @@ def _nouns(
     # A phrase whose head's own type fills the slot ("coffee table" -> CoffeeTable) is matched before one
     # that only may mean it ("the table"). Nodes are numbers (groups 0.., slots after them), so that the
     # matching never depends on the run's string hashing.
-    keys = list(groups)
-    g = nx.Graph()
+    keys, g = list(groups), nx.Graph()
     for i, (key, phrases) in enumerate(groups.items()):
         types = {t for m in phrases[0] for t in m.entry.types} | key
         for k, (_, _, st) in enumerate(slots):
@@ -222,7 +221,8 @@ def _nouns(
                 g.add_edge(i, len(keys) + k, weight=3)
             elif st & types:
                 g.add_edge(i, len(keys) + k, weight=2)
-    pairs = [sorted(e) for e in nx.max_weight_matching(g, maxcardinality=True)]
+    lone = all(d <= 1 for _, d in g.degree)  # no group or slot with two edges: the edges are the matching
+    pairs = [sorted(e) for e in (g.edges if lone else nx.max_weight_matching(g, maxcardinality=True))]
     slot_of = {i: k - len(keys) for i, k in pairs}
     matched = {keys[i] for i in slot_of}
     # a group fills one slot, but its type may be a place of another task too ("the knife to the pan on

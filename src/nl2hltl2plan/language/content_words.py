@@ -112,10 +112,15 @@ def free_order_remarks(text: str) -> list[FreeOrder]:
     >>> [(r.words, r.per_group) for r in free_order_remarks("each pair in either order, then any order")]
     [('each pair in either order', True), ('any order', False)]
     """
-    return [
+    return list(_free_order_remarks(text))
+
+
+@lru_cache(maxsize=1024)  # check 1 asks again for every reading it judges (about five per instruction)
+def _free_order_remarks(text: str) -> tuple[FreeOrder, ...]:
+    return tuple(
         FreeOrder(m.group(0), m.start(), m.end(), m.group("group") is not None)
         for m in _free_order_remark().finditer(text)
-    ]
+    )
 
 
 @cache

@@ -235,7 +235,17 @@ def camel_words(type_name: str) -> str:
 
 def tokens(text: str) -> list[tuple[str, int, int]]:
     """Lower-case word tokens with their character spans."""
-    return [(m.group(0), m.start(), m.end()) for m in _TOKEN.finditer(text.lower())]
+    return list(_tokens(text))
+
+
+# the readers and check 1 ask again for the same texts (a few dozen times per instruction): each text's
+# tokens and mentions are found once, kept as tuples and handed out as fresh lists
+_TEXTS_KEPT = 4096
+
+
+@lru_cache(maxsize=_TEXTS_KEPT)
+def _tokens(text: str) -> tuple[tuple[str, int, int], ...]:
+    return tuple((m.group(0), m.start(), m.end()) for m in _TOKEN.finditer(text.lower()))
 
 
 def sentence_start(text: str, at: int) -> int:
@@ -297,7 +307,12 @@ def _max_len() -> int:
 
 def find_mentions(text: str) -> list[Mention]:
     """Longest lexicon matches, left to right, without overlaps."""
-    toks = tokens(text)
+    return list(_mentions(text))
+
+
+@lru_cache(maxsize=_TEXTS_KEPT)
+def _mentions(text: str) -> tuple[Mention, ...]:
+    toks = _tokens(text)
     words = [t[0] for t in toks]
     lex = lexicon()
     out: list[Mention] = []
@@ -322,7 +337,7 @@ def find_mentions(text: str) -> list[Mention]:
                 break
         else:
             i += 1
-    return out
+    return tuple(out)
 
 
 def lookup(phrase: str) -> Entry | None:

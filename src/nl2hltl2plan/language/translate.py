@@ -125,6 +125,7 @@ def translate(
     refuse_take_backs(instruction)  # "scratch that", "just kidding": every world, every backend
     types = set(world.object_types()) if world is not None else None
     scene = world.name if world is not None else None
+    instances = scene_instances(world) if isinstance(world, World) else None  # once: check 1, referents
     reader = world_reader(world)  # the world's own reading around the shared grammar, if it has one
     if backend in PARSERS and (own := reader.own_reading("\n".join(lines))) is not None:
         return own  # a line break ends a step
@@ -141,13 +142,13 @@ def translate(
             return None if negations else reader.reread(instruction, backend)
 
         try:
-            res = _parse(backend, rest, grounder, strict, look, world)
+            res = _parse(backend, rest, grounder, strict, look, world, instances)
             if negations:
                 res = _keep_negations(res, instruction, negations, grounder)
             picked = dict(choices or {})
             if ask is not None and res.ambiguities:
                 picked.update(ask(res.ambiguities))
-            res = account_words(apply_choices(res, picked), world)
+            res = account_words(apply_choices(res, picked), world, instances)
         except (HTTError, WorldError) as refused:
             # the world's rereading (checked by check 1 on the words it read), or the refusal as it was
             if (again := reread()) is None:
@@ -159,14 +160,14 @@ def translate(
             elif not res.partial and not negations:
                 res = reader.doubted(res, backend)
         with _refused_as_not_understood(res, world):
-            return _finish(res, world, backend, client, ltl, actions, build)
+            return _finish(res, world, backend, client, ltl, actions, build, instances)
     if client is None:
         raise LLMError(f"backend {backend} needs an LLM client (see backends.open_client)")
     with client.instruction():  # one deadline for every request this instruction makes
         res = read_with_llm(instruction, types, scene, client, strict)
-        res = account_words(cross_check(res, types, scene), world)
+        res = account_words(cross_check(res, types, scene), world, instances)
         with _refused_as_not_understood(res, world):
-            return _finish(res, world, backend, client, ltl, actions, build)
+            return _finish(res, world, backend, client, ltl, actions, build, instances)
 
 
 def _keep_negations(
@@ -181,12 +182,16 @@ def _keep_negations(
     return res.model_copy(update={"instruction": instruction, "htt": htt, "constraint_specs": constraints})
 
 
-def account_words(res: LanguageResult, world: SceneLike | None) -> LanguageResult:
+def account_words(
+    res: LanguageResult, world: SceneLike | None, instances: Counter[str] | None = None
+) -> LanguageResult:
     """Check 1 (`accounting.account`), the same for every backend: each content word the base tasks
     do not use, each slot no word names, each slot left empty (`unfilled_slots`) and what the world's
     reader adds (`WorldReader.unused`) goes to `unparsed` with its reason (the result is then partial).
-    Counts the scene cannot satisfy and cyclic orders raise HTTError."""
-    instances = scene_instances(world) if isinstance(world, World) else None
+    Counts the scene cannot satisfy and cyclic orders raise HTTError. `instances`: the world's
+    `scene_instances`, when the caller has them."""
+    if instances is None and isinstance(world, World):
+        instances = scene_instances(world)
     scene = world.name if world is not None else "the scene"
     unread = account(res.instruction, res.tasks, res.before, instances, scene, res.constraint_specs)
     unread += unfilled_slots(res.tasks) + world_reader(world).unused(res)
@@ -219,10 +224,11 @@ def _finish(
     ltl: LtlSource,
     actions: ActionSource,
     build: bool,
+    instances: Counter[str] | None,
 ) -> LanguageResult:
     """What the words refer to (`referents`: one thing moved twice, "the dishes", "the towel"), then leaf
-    actions (recipes or LLM action completion), then Algorithm 1."""
-    instances = scene_instances(world) if isinstance(world, World) else None
+    actions (recipes or LLM action completion), then Algorithm 1. `instances`: the world's
+    `scene_instances` (None: a scene known only by its types)."""
     check_referents(res.instruction, res.tasks, res.before, instances, world.name if world else "the scene")
     mode = actions if actions != "auto" else ("recipe" if backend in PARSERS else "llm")
     found = ACTION_SOURCES[mode](res, world, client)
@@ -291,12 +297,13 @@ def _parse(
     strict: bool,
     look: AffordanceLookup | None,
     world: SceneLike | None = None,
+    instances: Counter[str] | None = None,
 ) -> LanguageResult:
     """A backend that needs no LLM (`parsers.PARSERS`), with the state and treatment requests it cannot
     read (`state_tasks`)."""
     types = set(grounder.types) if grounder.types is not None else None
     scene = world.name if world is not None else None
-    reader = _state_reader(grounder, world)
+    reader = _state_reader(grounder, world, instances)
     parsed = _parsed_and_reread(PARSERS[backend], instruction, types, scene, strict, look, reader)
     if parsed.unparsed:  # clauses that change or treat one object (SMART-LLM's skills and goals)
         states, left = reader.read_unparsed(parsed.unparsed, parsed.tasks)
@@ -339,9 +346,11 @@ def _parse(
     )
 
 
-def _state_reader(grounder: Grounder, world: SceneLike | None) -> StateReader:
-    """The reader of state and treatment requests (`state_tasks`) for this scene (its object counts
-    when the scene is a `World`)."""
+def _state_reader(
+    grounder: Grounder, world: SceneLike | None, instances: Counter[str] | None = None
+) -> StateReader:
+    """The reader of state and treatment requests (`state_tasks`) for this scene (its object counts,
+    `instances` or the world's own, when the scene is a `World`)."""
     if not isinstance(world, World):
         return StateReader(grounder)
 
@@ -350,7 +359,7 @@ def _state_reader(grounder: Grounder, world: SceneLike | None) -> StateReader:
             return True
         return bool(world.instances(type_)) and can_take_state(world, type_, state)
 
-    return StateReader(grounder, scene_instances(world), can)
+    return StateReader(grounder, scene_instances(world) if instances is None else instances, can)
 
 
 def _parsed_and_reread(

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass, field
+from functools import cache, lru_cache
 
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grounding import (
@@ -160,7 +161,12 @@ class NP:
 
 def tokens(text: str) -> list[tuple[str, int, int]]:
     """(lower-case word or comma, start, end) for each word of `text`."""
-    return [(m.group(0).lower(), m.start(), m.end()) for m in _WORD.finditer(text)]
+    return list(_tokens(text))
+
+
+@lru_cache(maxsize=4096)  # the clauses' noun phrases are read again by each reading of the instruction
+def _tokens(text: str) -> tuple[tuple[str, int, int], ...]:
+    return tuple((m.group(0).lower(), m.start(), m.end()) for m in _WORD.finditer(text))
 
 
 # ----- noun phrases ----------------------------------------------------------------------------------
@@ -252,10 +258,15 @@ def _read_own_head(np: NP, words: list[str], content: list[str]) -> None:
 # ----- clauses and frames ------------------------------------------------------------------------------
 def match_prep(words: list[str], i: int) -> tuple[str, int] | None:
     """The preposition starting at word `i` (the first of `grammar.PREPOSITIONS` that fits) and its length."""
-    for p in G.PREPOSITIONS:
+    for p in _prepositions_from(words[i]) if i < len(words) else ():
         if tuple(words[i : i + len(p)]) == p:
             return " ".join(p), len(p)
     return None
+
+
+@cache  # asked of every word of every clause: only the prepositions that start with the word are tried
+def _prepositions_from(word: str) -> tuple[tuple[str, ...], ...]:
+    return tuple(p for p in G.PREPOSITIONS if p[0] == word)
 
 
 def one_of_each_under_a_shared_plural(nps: list[NP | None]) -> None:

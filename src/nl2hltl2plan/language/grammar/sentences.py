@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass, field
+from functools import lru_cache
 
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.everyday import everyday
@@ -418,6 +419,7 @@ def _as_cased(word: str, replaced: str) -> str:
     return word.capitalize() if replaced[:1].isupper() else word
 
 
+@lru_cache(maxsize=1024)  # a pure function of the text, asked again by each reading of one instruction
 def normalize(text: str) -> str:
     """The text as the rules read it: straight quotes, a space after a full stop, no parenthetical remarks,
     each phrasing above rewritten onto the one the rules read (its comment says which), single spaces and

@@ -14,7 +14,7 @@ reported as an `Ambiguity` with the candidates ranked.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from functools import lru_cache
 from pathlib import Path
 
@@ -245,7 +245,7 @@ def parse_instruction(
     policy = policy or DEFAULT_POLICY
     scene_types = set(types) if types is not None else None
     ctx = ParseContext(scene_types, scene, affordances, policy, model or load_model())
-    parse = grammar_first_reading(instruction, ctx)
+    parse = _read_once(instruction, ctx)
     if policy.structure is not None:
         parse = _arbitrated(parse, instruction, ctx, structure or load_structure())
     issues = _missing(parse.tasks, scene_types, scene)
@@ -263,6 +263,15 @@ class ParseContext:
     affordances: AffordanceLookup | None
     policy: Policy
     model: SlotModel
+    # the grammar-first readings made so far, by text: a span of one task is often the whole instruction
+    read: dict[str, LearnedParse] = field(default_factory=dict, compare=False, repr=False)
+
+
+def _read_once(text: str, ctx: ParseContext) -> LearnedParse:
+    """The grammar-first reading of `text`, made once per parse (a pure function of the text and `ctx`)."""
+    if (kept := ctx.read.get(text)) is None:
+        kept = ctx.read[text] = grammar_first_reading(text, ctx)
+    return kept
 
 
 def grammar_first_reading(instruction: str, ctx: ParseContext) -> LearnedParse:
@@ -320,10 +329,10 @@ def structure_reading(
     for span in reading.spans:
         text = with_verb(base_form(span.text), previous[0] if previous else None)
         try:
-            p = grammar_first_reading(text, ctx)
+            p = _read_once(text, ctx)
             if p.unparsed and (again := resolved(text, previous)) != text:
                 text = again
-                p = grammar_first_reading(text, ctx)
+                p = _read_once(text, ctx)
         except Nl2Hltl2PlanError:
             return None
         if p.unparsed or not p.tasks:
