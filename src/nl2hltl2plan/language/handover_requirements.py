@@ -50,6 +50,13 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     ),
     # "every one of those regions gets one": each of them
     (r"\bevery\s+one\s+of\s+(?=(?:the|these|those)\s+(?:region|area|place|spot)s\b)", "each of "),
+    # "(so that) each of them ends up holding one" right after a list of regions: "them" are those regions
+    (
+        r"(?<=\b[e-j])(\s*,?\s*(?:,|\bso(?:\s+that)?)\s*)(?:each|every\s+one|all)\s+of\s+them\s+(?=(?:(?:will|would|should|"
+        r"must)\s+)?(?:ends?\s+up\s+(?:holding|having|getting|containing|receiving|with)|holds?|has|have|gets?|"
+        r"contains?|receives?)\s+(?:exactly\s+|only\s+|just\s+)?(?:one|a\s+single)\b)",
+        r"\1each of those regions ",
+    ),
     (
         r"\b((?:each|every)\s+(?:of\s+(?:the|these|those)\s+)?(?:region|area|place|spot)s?)\s+ends?\s+up\s+"
         r"(?:holding|having|getting|containing|receiving)\b",
