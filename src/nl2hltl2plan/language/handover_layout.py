@@ -283,6 +283,8 @@ def verb_heading_read(text: str) -> str:
     """Bullets of blocks and places under a heading that says only the verb, said with the verb (see
     `_VERB_HEADING`); a heading over one bullet, or over bullets that are not all blocks with a place, is
     left to the colon's joining (`handover_reading._sentences`)."""
+    if ":" not in text:  # no heading
+        return text
     lines = text.splitlines()
     out: list[str] = []
     k = 0
@@ -329,7 +331,7 @@ _PLACES_THEN_COUNT = re.compile(
 
 def places_then_count_read(text: str) -> str:
     """A placeless step, then its places with a count per place, as one goal (see `_PLACES_THEN_COUNT`)."""
-    return _PLACES_THEN_COUNT.sub(r"\1 \2, one per region", text)
+    return _PLACES_THEN_COUNT.sub(r"\1 \2, one per region", text) if ":" in text else text
 
 
 # a later sentence that opens with a bare time adverb ("Later on the arms will put ...", "At a later point,
