@@ -14,6 +14,13 @@
   "Never: place ...") is the command negated ("do not touch ..."); a label on a line of its own over a list
   ("Don'ts:" then "- ...", "- ...") is left as it is, unread: a negation carried into only one item would
   read the others as commands;
+- a heading that says only the verb over bullets of blocks and places ("Please move the following:" over
+  "- the red block to the opposite side", ...): one clause with the verb, or steps where each bullet
+  opens with a time (`verb_heading_read`); a step without a place, then a heading of places over a count
+  per place ("Move the three blocks. Into regions H, I and J: one apiece."): one goal
+  (`places_then_count_read`);
+- a later sentence opened by a bare "later (on)": after what was said before it (`later_read`, on the
+  split sentences);
 - clauses said in another order than they happen (`REORDERED`, per line): "after all of this, X; but first,
   Y" and "last of all, X; before that, Y" are "Y; after all of this / last of all, X".
 

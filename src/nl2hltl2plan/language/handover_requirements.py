@@ -10,7 +10,8 @@ rewritten onto the forms the handover reader reads (issue 24; `handover_register
   before where they go, adds nothing; "to their own places" (where they already are) stays unread;
 - a result clause that says the one-block rule again: "..., so there's one block on each" (with one
   block on each), "so that every one of those regions gets one" (each of those regions), "so that each
-  of those regions ends up holding one object" (each region holds one).
+  of those regions ends up holding one object" (each region holds one), "so that each of them ends up
+  holding one" right after a list of regions ("them": those regions).
   Any other result clause ("so there's one block on G", "so that region F ends up empty") stays unread
   and is refused by name: it would add a goal.
 """
