@@ -16,6 +16,7 @@ READ = {
     1: ["Please transfer the following:\n- the red block to the opposite side\n- the blue block to the "
         "opposite side\n- the yellow block to the opposite side\nThe red block goes before the blue block."],
     2: ["Place the three blocks. On regions H, I and J: one apiece.",
+        "Set the red, blue and yellow blocks down.\nRegions H, I and J: a single block per region.",
         "Put the three blocks into regions H, I and J, so that all of them end up with one."],
     3: ["The arms should carry the following:\n* the three pillars to regions E, F and G\nNothing may be "
         "placed on any other region.",
@@ -30,12 +31,16 @@ READ = {
         "red and blue blocks go to any empty region at any time.",
         # refused by h114 (session 20) as a "later on" that may mean "then": it does, after a first sentence
         "First put the yellow block on region I. Later on, put it on region G. Move the red and blue blocks "
-        "to any empty region at any time."],
+        "to any empty region at any time.",
+        "Yellow to region I, then to region G. Any time: move the red and blue blocks. Into any unoccupied "
+        "regions: one each."],
 }
 
 REFUSED = [
     # a count per place that is not one
     (2, "Move the three blocks. Into regions H, I and J: two each."),
+    (8, "Put the yellow block on region I, then on region G. At any time, move the red and blue blocks. Into "
+        "the free regions: two each."),
     # a result clause that adds a goal, or a count other than one
     (2, "Move the three blocks to regions H, I and J so that each of them ends up on region G."),
     (2, "Move the three blocks to regions H, I and J so that each of them ends up holding two."),
@@ -49,6 +54,7 @@ NEAR_MISSES = [
     (1, "Please move the following:\n- the red block to the opposite side\n- the blue block to region G\n"
         "- the yellow block to the opposite side\nRed before blue."),
     (2, "Move the three blocks. Into regions H, I and G: exactly one each."),
+    (2, "Move the three blocks.\nRegions H, I and G: one apiece."),
     (2, "Move the three blocks to regions G, I and J so that each of them ends up holding one."),
     # "later on" orders: the yellow block after the exchange is not task 5's "at any time"
     (5, "The arms will swap the red and blue blocks, red first. Later on the arms will take the yellow block "
@@ -63,7 +69,9 @@ NEAR_MISSES = [
     test_unclear_forms_are_refused_by_name,
     test_near_misses_are_not_the_written_spec,
     test_h121_batches_are_read_right_or_refused_never_misread,
-) = round_tests(READ, REFUSED, NEAR_MISSES, ("dev91", "validation24"))
+) = round_tests(
+    READ, REFUSED, NEAR_MISSES, ("dev91", "validation24", "dev92", "validation25")
+)
 
 
 def test_a_verb_heading_takes_its_bullets_as_one_clause_or_as_steps() -> None:
@@ -86,6 +94,8 @@ def test_a_count_per_place_joins_only_a_step_without_a_place() -> None:
     assert joined == "Move the three blocks Into regions H, I and J, one per region."
     kept = "Move the three blocks to region G. Into regions H, I and J: one each."
     assert places_then_count_read(kept) == kept
+    free = places_then_count_read("Move the red and blue blocks down.\nThe free regions: one each.")
+    assert free == "Move the red and blue blocks to The free regions, one per region."
 
 
 def test_a_bare_later_orders_only_after_a_first_sentence_and_not_an_added_step() -> None:

@@ -321,24 +321,27 @@ def verb_heading_read(text: str) -> str:
 
 
 # a step that names the blocks but no place, then a heading that names only the places over a count per
-# place ("Move the three blocks. Into regions H, I and J: exactly one each."): one goal, with the count as
-# the one-block rule it states ("move the three blocks into regions H, I and J, one per region")
+# place ("Move the three blocks. Into regions H, I and J: exactly one each.", "At any time, move the red and
+# blue blocks. Into the free regions: one each.", "Put the blocks down.\nRegions H, I and J: one apiece."):
+# one goal, with the count as the one-block rule it states ("move the three blocks into regions H, I and
+# J, one per region"; a heading without a preposition is "to")
 _PER_PLACE = (
     r"(?:exactly\s+|only\s+|just\s+)?(?:one|1|a\s+single)(?:\s+(?:block|object|pillar|item|cube|one))?\s+"
     r"(?:each|apiece|per\s+(?:region|area|place|spot)|(?:in|on)\s+each(?:\s+(?:region|area|one))?)"
 )
 _PLACES_THEN_COUNT = re.compile(
-    rf"(?i)(\b{VERB}\s+(?:the\s+|all\s+(?:the\s+)?)?(?:three\s+|3\s+)?{_NOUNS})[ \t]*[.:]?[ \t]*\n?[ \t]*"
-    rf"(?:[-*•·][ \t]+)?((?:to|onto|into|in|on)\s+(?:the\s+)?(?:regions?\s+)?{_LETTERS})[ \t]*:[ \t]*"
-    rf"{_PER_PLACE}"
-    r"[ \t]*(?=[.;!?]|$)",
+    rf"(?i)(\b{VERB}\s+{_LIST})(?:\s+down)?[ \t]*[.:]?[ \t]*\n?[ \t]*(?:[-*•·][ \t]+)?"
+    rf"(?:(to|onto|into|in|on)\s+)?((?:the\s+)?(?:regions?\s+)?{_LETTERS}|"
+    rf"(?:the\s+|any\s+)?(?:free|empty|unoccupied)\s+regions?)[ \t]*:[ \t]*{_PER_PLACE}[ \t]*(?=[.;!?]|$)",
     re.MULTILINE,
 )
 
 
 def places_then_count_read(text: str) -> str:
     """A placeless step, then its places with a count per place, as one goal (see `_PLACES_THEN_COUNT`)."""
-    return _PLACES_THEN_COUNT.sub(r"\1 \2, one per region", text) if ":" in text else text
+    if ":" not in text:
+        return text
+    return _PLACES_THEN_COUNT.sub(lambda m: f"{m[1]} {m[2] or 'to'} {m[3]}, one per region", text)
 
 
 # a later sentence that opens with a bare time adverb ("Later on the arms will put ...", "At a later point,
