@@ -33,7 +33,10 @@ READ = {
         "First put the yellow block on region I. Later on, put it on region G. Move the red and blue blocks "
         "to any empty region at any time.",
         "Yellow to region I, then to region G. Any time: move the red and blue blocks. Into any unoccupied "
-        "regions: one each."],
+        "regions: one each.",
+        # "do the following" after the team and a modal is a frame, as after "please"
+        "The robots must do the following:\n- first, the yellow block to region I\n- then, the yellow block "
+        "to region G\n- at any time, the red and blue blocks to any empty region"],
 }
 
 REFUSED = [
