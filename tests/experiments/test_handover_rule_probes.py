@@ -102,6 +102,12 @@ def test_required_literals_follow_the_parse() -> None:
     assert required(re.compile(r"(?:red)?\s*x?")) == ()  # nothing is required
     assert required(re.compile(r"(?i)whereas")) == ()  # case-insensitive: not filtered
     assert required(re.compile(r"(?:a\w|b)c")) == (frozenset({"c"}), frozenset({"a", "b"}))  # each set needed
+    # a repeated letter joins the literals on both sides ("uh" in every "u+h+"); a lookaround's literals are
+    # in the text too
+    assert frozenset({"uh", "hmm"}) in required(re.compile(r"\b(?:u+h+|hmm+)\b"))
+    assert frozenset({"touched", "picked"}) in required(re.compile(r"\bs\s+(?=(?:touched|picked)\b)"))
+    assert set(required(re.compile(r"(?<=point)x"))) == {frozenset({"x"}), frozenset({"point"})}
+    assert required(re.compile(r"(?!point)x")) == (frozenset({"x"}),)  # a negative one requires nothing
     assert sub(r"\bred\b", "blue", "a red block") == "a blue block"
     assert sub(r"\bred\b", "blue", "a yellow block") == "a yellow block"
 
@@ -124,4 +130,4 @@ def test_a_rewrite_is_skipped_only_where_it_cannot_match(table) -> None:
 
 def test_rewrite_table_keeps_each_pattern_and_replacement() -> None:
     rows = rewrite_table([(re.compile("ab"), "x")])
-    assert rows[0][:2] == (re.compile("ab"), "x") and rows[0][2] == (frozenset({"ab"}),)
+    assert rows[0][:2] == (re.compile("ab"), "x") and rows[0][2] == (("ab",),)

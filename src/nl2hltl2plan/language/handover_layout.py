@@ -14,6 +14,13 @@
   "Never: place ...") is the command negated ("do not touch ..."); a label on a line of its own over a list
   ("Don'ts:" then "- ...", "- ...") is left as it is, unread: a negation carried into only one item would
   read the others as commands;
+- a heading that says only the verb over bullets of blocks and places ("Please move the following:" over
+  "- the red block to the opposite side", ...): one clause with the verb, or steps where each bullet
+  opens with a time (`verb_heading_read`); a step without a place, then a heading of places over a count
+  per place ("Move the three blocks. Into regions H, I and J: one apiece."): one goal
+  (`places_then_count_read`);
+- a later sentence opened by a bare "later (on)": after what was said before it (`later_read`, on the
+  split sentences);
 - clauses said in another order than they happen (`REORDERED`, per line): "after all of this, X; but first,
   Y" and "last of all, X; before that, Y" are "Y; after all of this / last of all, X".
 
@@ -189,7 +196,8 @@ HEADED = tuple(
             r"\1 \3 \2\4",
         ),
         (
-            rf"^([^:]*?\b{VERB}(?:\s+(?:down|over|across))?)\s*((?:,\s*[^,:]+?)*)\s*:\s*(({_LIST})\s+{PREP}\s+[^:]+?)\s*$",
+            rf"^([^:]*?\b{VERB}(?:\s+(?:down|over|across))?)(?:\s+(?:these|those|the\s+following(?:\s+{_NOUNS})?))?"
+            rf"\s*((?:,\s*[^,:]+?)*)\s*:\s*(({_LIST})\s+{PREP}\s+[^:]+?)\s*$",
             r"\1 \3\2",
         ),
         (rf"^\s*({PREP}\s+[^:]+?)\s*:\s*({_LIST})\s*$", r"\2 \1"),  # "To the opposite side: three blocks"
@@ -260,3 +268,101 @@ def _last_said_first(start: str, last: str, step: str, before: str) -> str:
             return f"{start}{last}, {step}; before that, {before}"
         before = block[1] + before[2:]
     return f"{start}{before}; {'after that' if last.lower() == 'last' else last}, {step}"
+
+
+# a heading that says only the verb ("Please move the following:", "The arms should move:") over bullets
+# that each name blocks and their place: the heading's one verb over its list. Bullets that each open with a
+# time ("- first, ...", "- then, ...", "- at any time, ...") are steps, each said with the verb; bullets
+# without one are one clause ("move X to P and Y to P": "move X and Y to P" where their places are the same)
+_TIME = (
+    r"(?:first(?:\s+of\s+all)?|then|next|after\s+that|afterwards|finally|lastly|last|at\s+any\s+time|any\s+time)"
+)
+_VERB_HEADING = re.compile(
+    rf"(?i)^\s*(?P<lead>[^:\n]*?\b(?:{VERB}|{SWAP}))(?:\s+(?:these|those|the\s+following)(?:\s+{_NOUNS})?)?\s*:\s*$"
+)
+_GOAL_BULLET = re.compile(
+    rf"(?i)^\s*(?:[-*•·]|\d[.)])\s+(?:(?P<time>{_TIME})\s*,?\s+)?(?P<blocks>{_LIST})\s+(?P<place>{PREP}\s+[^:]+?)"
+    r"\s*[.;]?\s*$"
+)
+
+
+def verb_heading_read(text: str) -> str:
+    """Bullets of blocks and places under a heading that says only the verb, said with the verb (see
+    `_VERB_HEADING`); a heading over one bullet, or over bullets that are not all blocks with a place, is
+    left to the colon's joining (`handover_reading._sentences`)."""
+    if ":" not in text:  # no heading
+        return text
+    lines = text.splitlines()
+    out: list[str] = []
+    k = 0
+    while k < len(lines):
+        heading = _VERB_HEADING.match(lines[k])
+        items: list[re.Match[str]] = []
+        while heading and k + 1 + len(items) < len(lines):
+            item = _GOAL_BULLET.match(lines[k + 1 + len(items)])
+            if item is None:
+                break
+            items.append(item)
+        if heading is None or len(items) < 2 or len({i["time"] is None for i in items}) > 1:
+            out.append(lines[k])
+            k += 1
+            continue
+        lead = heading["lead"].strip()
+        if items[0]["time"] is not None:  # steps in time: each said with the verb
+            out += [f"- {i['time']}, {lead} {i['blocks']} {i['place']}" for i in items]
+        elif len({" ".join(i["place"].lower().split()) for i in items}) == 1:  # one place: one list of blocks
+            blocks = [i["blocks"] for i in items]
+            out.append(f"{lead} {', '.join(blocks[:-1])} and {blocks[-1]} {items[0]['place']}")
+        else:
+            goals = [f"{i['blocks']} {i['place']}" for i in items]
+            out.append(f"{lead} {', '.join(goals[:-1])} and {goals[-1]}")
+        k += 1 + len(items)
+    return "\n".join(out)
+
+
+# a step that names the blocks but no place, then a heading that names only the places over a count per
+# place ("Move the three blocks. Into regions H, I and J: exactly one each.", "At any time, move the red and
+# blue blocks. Into the free regions: one each.", "Put the blocks down.\nRegions H, I and J: one apiece."):
+# one goal, with the count as the one-block rule it states ("move the three blocks into regions H, I and
+# J, one per region"; a heading without a preposition is "to")
+_PER_PLACE = (
+    r"(?:exactly\s+|only\s+|just\s+)?(?:one|1|a\s+single)(?:\s+(?:block|object|pillar|item|cube|one))?\s+"
+    r"(?:each|apiece|per\s+(?:region|area|place|spot)|(?:in|on)\s+each(?:\s+(?:region|area|one))?)"
+)
+_PLACES_THEN_COUNT = re.compile(
+    rf"(?i)(\b{VERB}\s+{_LIST})(?:\s+down)?[ \t]*[.:]?[ \t]*\n?[ \t]*(?:[-*•·][ \t]+)?"
+    rf"(?:(to|onto|into|in|on)\s+)?((?:the\s+)?(?:regions?\s+)?{_LETTERS}|"
+    rf"(?:the\s+|any\s+)?(?:free|empty|unoccupied)\s+regions?)[ \t]*:[ \t]*{_PER_PLACE}[ \t]*(?=[.;!?]|$)",
+    re.MULTILINE,
+)
+
+
+def places_then_count_read(text: str) -> str:
+    """A placeless step, then its places with a count per place, as one goal (see `_PLACES_THEN_COUNT`)."""
+    if ":" not in text:
+        return text
+    return _PLACES_THEN_COUNT.sub(lambda m: f"{m[1]} {m[2] or 'to'} {m[3]}, one per region", text)
+
+
+# a later sentence that opens with a bare time adverb ("Later on the arms will put ...", "At a later point,
+# put ...") says its step comes after what was said before it, as "after that"; an added step ("later on
+# they will also ...") or one that says what it follows ("later on, once that is done") is read as it is
+_LATER = re.compile(
+    r"(?i)^(\s*)(?![^;]*\b(?:also|too|as\s+well)\b)(?>later(?:\s+on)?|(?:some\s+time|a\s+(?:little\s+)?while|shortly)\s+"
+    r"later|at\s+a\s+later\s+(?:point|stage|time|moment)|after\s+this)\b(?>\s*,?\s*)(?!(?:once|when|after)\b)(?=\S)"
+)
+# a time adverb set off by no comma before the team as the subject of a future ("Afterwards the robots will
+# put ...", "After that they will ..."): the comma that ends the adverb, so that the subject reads as the
+# team's (`handover_discourse`)
+_TIME_THEN_TEAM = re.compile(
+    r"(?i)^(\s*(?:afterwards?|after\s+(?:that|this)|subsequently|thereafter|then|next|finally|lastly|in\s+the\s+end|"
+    r"at\s+the\s+end))\s+(?=(?:(?:the|our|both|all\s+(?:the\s+)?)\s+)?(?:robot\s+)?(?:arms|robots)\s+|they\s+)"
+    r"(?=\S+(?:\s+\S+)?\s+(?:will|shall|are\s+going\s+to)\b)"
+)
+
+
+def later_read(sentences: list[str]) -> list[str]:
+    """Each sentence after the first with its opening "later (on)" as "after that" (see `_LATER`), and an
+    opening time adverb set off from the team's future by a comma (`_TIME_THEN_TEAM`)."""
+    said = [s if k == 0 else _LATER.sub(r"\1after that, ", s, count=1) for k, s in enumerate(sentences)]
+    return [_TIME_THEN_TEAM.sub(r"\1, ", s, count=1) for s in said]

@@ -56,10 +56,13 @@ from nl2hltl2plan.language.handover_layout import (
     HEADED,
     REORDERED,
     block_bullets_read,
+    later_read,
     nested_read,
+    places_then_count_read,
     prohibitions_read,
     transcript_read,
     until_all_there_read,
+    verb_heading_read,
 )
 from nl2hltl2plan.language.handover_phrases import drop_but, mark
 from nl2hltl2plan.language.handover_rules import (
@@ -246,7 +249,8 @@ def _sentences(instruction: str) -> list[str]:
     on lines or in sentences and in either order ('Blocks: ...' and 'Targets: ...'), is read as one goal."""
     out: list[str] = []
     instruction = nested_read(transcript_read(prohibitions_read(instruction)))
-    instruction = until_all_there_read(block_bullets_read(instruction))
+    instruction = places_then_count_read(verb_heading_read(block_bullets_read(instruction)))
+    instruction = until_all_there_read(instruction)
     # a record of labelled fields, on lines or in sentences, in either order: "Blocks: red, blue, yellow"
     # then "Targets: H, I, J" (or "Regions: G, H and I. Objects: all three.") is one goal
     for record in _RECORDS:
@@ -270,7 +274,7 @@ def _sentences(instruction: str) -> list[str]:
         for pattern, replacement in (*REORDERED, *HEADED):
             text = pattern.sub(replacement, text)
         out += [re.sub(r"^\s*[-*•·]\s+", "", s) for s in re.split(r"[.;!?]+(?:\s|$)", text)]
-    return _without_announcement([s for s in out if s.strip()])
+    return later_read(_without_announcement([s for s in out if s.strip()]))
 
 
 # "There are a few things to keep in mind." before the things: it names no block, place or order; a

@@ -49,6 +49,11 @@ def _sequence(items: Iterable[tuple[Any, Any]]) -> list[Literals]:
     for op, arg in items:
         if op is c.LITERAL:
             run += chr(arg)
+        elif op in _REPEATS and arg[0] >= 1 and _one_literal(arg[2]):
+            # "u+h+": the first "u" follows the run and the last one opens the next ("uh" is in every match)
+            char = chr(arg[2][0][1])
+            sets.append(frozenset([run + char]))
+            run = char
         elif op not in _ZERO_WIDTH:
             if run:
                 sets.append(frozenset([run]))
@@ -57,6 +62,10 @@ def _sequence(items: Iterable[tuple[Any, Any]]) -> list[Literals]:
     if run:
         sets.append(frozenset([run]))
     return sets
+
+
+def _one_literal(sub: Any) -> bool:
+    return len(sub) == 1 and sub[0][0] is c.LITERAL
 
 
 def _part(op: Any, arg: Any) -> list[Literals]:
@@ -69,53 +78,66 @@ def _part(op: Any, arg: Any) -> list[Literals]:
     if op in _REPEATS:
         low, _high, sub = arg
         return _sequence(list(sub)) if low >= 1 else []
-    return []  # a class, a backreference, a lookaround: no literal known
+    if op is c.ASSERT:  # a lookahead or lookbehind: what it requires is in the text too
+        return _sequence(list(arg[1]))
+    return []  # a class, a backreference, a negative lookaround: no literal known
 
 
 def _selective(literals: Literals) -> tuple[int, int]:
     return min(map(len, literals)), -len(literals)
 
 
-def _may_match(requirement: Requirement, text: str) -> bool:
-    for literals in requirement:  # loops, not all(any(...)): this runs a million times a batch
+Checks = tuple[tuple[str, ...], ...]  # a requirement as tuples: they iterate faster than frozensets
+
+
+def _checks(requirement: Requirement) -> Checks:
+    """The requirement as tuples, each set's shortest literals first (the likeliest to be found)."""
+    return tuple(tuple(sorted(literals, key=lambda lit: (len(lit), lit))) for literals in requirement)
+
+
+@cache
+def compiled(pattern: str) -> tuple[re.Pattern[str], Checks]:
+    """The pattern compiled once, with its required literals (the reader has more patterns than `re`'s
+    own cache holds)."""
+    regex = re.compile(pattern)
+    return regex, _checks(required(regex))
+
+
+def sub(pattern: str | re.Pattern[str], replacement: Replacement, text: str) -> str:
+    """`re.sub(pattern, replacement, text)`, skipping a pattern that cannot match `text` (the literal test is
+    written out here and in `apply`, not called: a call costs more than the test, a million times a batch)."""
+    regex, requirement = compiled(pattern) if isinstance(pattern, str) else _compiled_of(pattern)
+    for literals in requirement:
         for literal in literals:
             if literal in text:
                 break
         else:
-            return False
-    return True
+            return text
+    return regex.sub(replacement, text)
 
 
 @cache
-def compiled(pattern: str) -> tuple[re.Pattern[str], Requirement]:
-    """The pattern compiled once, with its required literals (the reader has more patterns than `re`'s
-    own cache holds)."""
-    regex = re.compile(pattern)
-    return regex, required(regex)
+def _compiled_of(pattern: re.Pattern[str]) -> tuple[re.Pattern[str], Checks]:
+    return pattern, _checks(required(pattern))
 
 
-def sub(pattern: str | re.Pattern[str], replacement: Replacement, text: str) -> str:
-    """`re.sub(pattern, replacement, text)`, skipping a pattern that cannot match `text`."""
-    regex, requirement = compiled(pattern) if isinstance(pattern, str) else (pattern, _required_of(pattern))
-    return regex.sub(replacement, text) if _may_match(requirement, text) else text
-
-
-@cache
-def _required_of(pattern: re.Pattern[str]) -> Requirement:
-    return required(pattern)
-
-
-Table = tuple[tuple[re.Pattern[str], Replacement, Requirement], ...]
+Table = tuple[tuple[re.Pattern[str], Replacement, Checks], ...]
 
 
 def rewrite_table(rewrites: Iterable[tuple[re.Pattern[str], Replacement]]) -> Table:
     """A table of rewrites with each pattern's required literals, for `apply`."""
-    return tuple((pattern, replacement, required(pattern)) for pattern, replacement in rewrites)
+    return tuple((pattern, replacement, _checks(required(pattern))) for pattern, replacement in rewrites)
 
 
 def apply(rewrites: Table, text: str) -> str:
     """The rewrites in order, each skipped where its literals are absent from the text so far."""
     for pattern, replacement, requirement in rewrites:
-        if _may_match(requirement, text):
+        for literals in requirement:
+            for literal in literals:
+                if literal in text:
+                    break
+            else:
+                break
+        else:
             text = pattern.sub(replacement, text)
     return text

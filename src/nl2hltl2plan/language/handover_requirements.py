@@ -10,7 +10,8 @@ rewritten onto the forms the handover reader reads (issue 24; `handover_register
   before where they go, adds nothing; "to their own places" (where they already are) stays unread;
 - a result clause that says the one-block rule again: "..., so there's one block on each" (with one
   block on each), "so that every one of those regions gets one" (each of those regions), "so that each
-  of those regions ends up holding one object" (each region holds one).
+  of those regions ends up holding one object" (each region holds one), "so that each of them ends up
+  holding one" right after a list of regions ("them": those regions).
   Any other result clause ("so there's one block on G", "so that region F ends up empty") stays unread
   and is refused by name: it would add a goal.
 """
@@ -50,6 +51,13 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     ),
     # "every one of those regions gets one": each of them
     (r"\bevery\s+one\s+of\s+(?=(?:the|these|those)\s+(?:region|area|place|spot)s\b)", "each of "),
+    # "(so that) each of them ends up holding one" right after a list of regions: "them" are those regions
+    (
+        r"(?<=\b[e-j])(\s*,?\s*(?:,|\bso(?:\s+that)?)\s*)(?:each|every\s+one|all)\s+of\s+them\s+(?=(?:(?:will|would|should|"
+        r"must)\s+)?(?:ends?\s+up\s+(?:holding|having|getting|containing|receiving|with)|holds?|has|have|gets?|"
+        r"contains?|receives?)\s+(?:exactly\s+|only\s+|just\s+)?(?:one|a\s+single)\b)",
+        r"\1each of those regions ",
+    ),
     (
         r"\b((?:each|every)\s+(?:of\s+(?:the|these|those)\s+)?(?:region|area|place|spot)s?)\s+ends?\s+up\s+"
         r"(?:holding|having|getting|containing|receiving)\b",

@@ -363,7 +363,8 @@ REWRITES: tuple[tuple[str, str], ...] = (
         " ",
     ),
     (
-        r"^\s*(?:please\s+)?(?:do|carry\s+out|perform|follow)\s+(?:the\s+following|these\s+steps)(?:\s+steps)?\s*:?",
+        r"^\s*(?:please\s+)?(?:(?:the\s+)?(?:arms|robots)\s+(?:should|must|will|need\s+to|have\s+to)\s+)?"
+        r"(?:do|carry\s+out|perform|follow)\s+(?:the\s+following|these\s+steps)(?:\s+steps)?\s*:?",
         " ",
     ),
     (r"(?<=[a-z])\s*\+\s*(?=[a-z])", " and "),  # "red + blue"
