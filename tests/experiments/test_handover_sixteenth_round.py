@@ -23,7 +23,10 @@ READ = {
         "Carry the three pillars.\nOnto regions E, F and G: just one each.\nNo object may go on any other "
         "region."],
     4: ["Move the three blocks to the opposite regions. The arms must not touch the blue block until the "
-        "red block has been touched. At a later stage the robots will return the yellow block to region G."],
+        "red block has been touched. At a later stage the robots will return the yellow block to region G.",
+        # "after that they will ...": the team after a step's phrase with no comma (the lead, session 21)
+        "The arms will move the three blocks to their opposite regions without touching the blue block until "
+        "the red block has been touched, and after that they will put the yellow block back on region G."],
     6: ["Red before blue. Move the three objects to G, H and I so each of them ends up holding one."],
     8: ["The robots should move:\n- first, the yellow block to region I\n- then, the yellow block to region "
         "G\n- at any time, the red and blue blocks to any empty region",
@@ -63,7 +66,8 @@ NEAR_MISSES = [
     (5, "The arms will swap the red and blue blocks, red first. Later on the arms will take the yellow block "
         "to the opposite side."),
     (8, "The robots will first put the yellow block on region G. Later on they will put it on region I. The "
-        "red and blue blocks go to any empty region at any time."),
+        "red and blue blocks go to any empty region at any time."),    (4, "The arms will move the three blocks to their opposite regions without touching the blue block "
+        "until the red block has been touched, and after that they will put the red block back on region G."),
 ]
 
 

@@ -406,9 +406,9 @@ def first_person_as_team(sentence: str) -> str:
     "Today we will move the blocks, and we won't touch red"
     """
     sentence = _GOING_TO_BE.sub(_future, sentence)
-    # "after all of that they'll put ...": the step's phrase set off, as before any command
+    # "after (all of) that they'll put ...": the step's phrase set off, as before any command
     sentence = re.sub(
-        r"(?i)\b(after\s+all\s+(?:of\s+)?(?:that|these|this))\s+(?=(?:they|(?:the\s+)?(?:arms|robots))\b)",
+        r"(?i)\b(after\s+(?:all\s+(?:of\s+)?)?(?:that|these|this))\s+(?=(?:they|(?:the\s+)?(?:arms|robots))\b)",
         r"\1, ",
         sentence,
     )
