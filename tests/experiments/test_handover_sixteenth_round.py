@@ -66,7 +66,8 @@ NEAR_MISSES = [
     (5, "The arms will swap the red and blue blocks, red first. Later on the arms will take the yellow block "
         "to the opposite side."),
     (8, "The robots will first put the yellow block on region G. Later on they will put it on region I. The "
-        "red and blue blocks go to any empty region at any time."),    (4, "The arms will move the three blocks to their opposite regions without touching the blue block "
+        "red and blue blocks go to any empty region at any time."),
+    (4, "The arms will move the three blocks to their opposite regions without touching the blue block "
         "until the red block has been touched, and after that they will put the red block back on region G."),
 ]
 
