@@ -105,6 +105,9 @@ class CoopResult:
         return out
 
 
+_MISSING = object()
+
+
 def _bounded(cache: dict[K, V], key: K, compute: Callable[[], V]) -> V:
     """`cache[key]`, computed on first use; the cache is emptied when it holds CACHE_LIMIT entries."""
     if key not in cache:
@@ -130,8 +133,11 @@ class _Search:
 
     def path(self, arm: int, start: Cell, goal: Cell, blocked: frozenset[Cell]) -> tuple[Cell, ...] | None:
         """Shortest path inside the arm's reach avoiding `blocked` (cells entered, start excluded)."""
-        return _bounded(self._paths, (arm, start, goal, blocked),
-                        lambda: self._shortest_path(arm, start, goal, blocked))
+        key = (arm, start, goal, blocked)
+        found = self._paths.get(key, _MISSING)  # the hottest lookup of the search: no closure per call
+        if found is _MISSING:
+            found = _bounded(self._paths, key, lambda: self._shortest_path(arm, start, goal, blocked))
+        return found  # type: ignore[return-value]
 
     def _shortest_path(self, arm: int, start: Cell, goal: Cell,
                        blocked: frozenset[Cell]) -> tuple[Cell, ...] | None:
@@ -429,11 +435,12 @@ def _astar(
         link = parent[key]
         for m in s.macros(snap):
             nkey = s.successor(key, m)
-            if nkey is None or (link is not None and s.commutes(link[0], link[1], m, nkey)):
+            if nkey is None:
                 continue
             new_snap, q = nkey
             ncost = cost + len(m.path) + (m.verb != "retreat")
-            if ncost >= g.get(nkey, 10**9):
+            # the cheap test first: the order reduction (two more successors) only for a new best
+            if ncost >= g.get(nkey, 10**9) or (link is not None and s.commutes(link[0], link[1], m, nkey)):
                 continue
             hn = h(new_snap, q)
             if ncost + hn >= limit:

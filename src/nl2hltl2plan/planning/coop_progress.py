@@ -69,9 +69,10 @@ class Progress:
             )
             self._letters[lkey] = masks
         skey = (p, masks)
-        if skey not in self._steps:
-            self._steps[skey] = self._step(p, masks)
-        return self._steps[skey]
+        out = self._steps.get(skey, self)  # `self`: not yet computed (None is a computed answer)
+        if out is self:
+            out = self._steps[skey] = self._step(p, masks)
+        return out  # type: ignore[return-value]
 
     def _step(self, p: PState, masks: tuple[int, ...]) -> PState | None:
         states, done, nstates = list(p[0]), p[1], list(p[2])

@@ -375,7 +375,7 @@ class Heuristic:
             walks[i, :] = BIG
             if holder >= 0:
                 walks[i, holder] = keep
-        cost = np.hstack([t.cost, walks])
+        cost = np.concatenate((t.cost, walks), axis=1)  # (hstack of 2-D arrays, without its checks)
         robot = robot.T  # robots x events
         self.work += cost.size + EVAL_WORK
         self._hand_rules(node, pending, cost, n_ev, n_pred)
@@ -463,7 +463,7 @@ class Heuristic:
         for i in legs.held_puts:
             out[i] = cost[i]  # a held object's put: the holder's walk to it
         from_robots = np.minimum.reduceat(robots[:, legs.cells] + legs.to_put[None, :], legs.starts, axis=1)
-        walks = np.minimum(np.hstack([legs.from_cols, from_robots.T]), BIG)
+        walks = np.minimum(np.concatenate((legs.from_cols, from_robots.T), axis=1), BIG)
         out[legs.picks] = np.where(cost[legs.picks] >= BIG, BIG, walks)
         return out
 

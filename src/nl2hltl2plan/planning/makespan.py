@@ -32,7 +32,7 @@ def leaf_chains(near: Callable[[tuple[int, ...]], np.ndarray], rr: np.ndarray, n
         for r in evs:
             length += 1
             if r.kind == PUT and r.carried >= 0 and r.anchors and rows[r.carried].anchors:
-                leg = rr[np.ix_(list(rows[r.carried].anchors), list(r.anchors))].min()
+                leg = rr[np.array(rows[r.carried].anchors)[:, None], list(r.anchors)].min()  # (no np.ix_)
                 length += int(min(leg, BIG))
         chain[li] = (min(reach, BIG), length)
 

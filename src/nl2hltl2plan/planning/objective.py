@@ -198,9 +198,10 @@ class DominanceTable(DuplicateTable):
         self.cap_class = cap_class
         self.n_objects = n_objects
         self.entries: dict[tuple[object, ...], list[tuple[int, tuple[object, ...]]]] = {}
+        self.count = 0  # entries in all lists, kept as they change: the search asks after every expansion
 
     def __len__(self) -> int:
-        return sum(len(v) for v in self.entries.values())
+        return self.count
 
     def times(self, node: Node) -> tuple[object, ...]:
         """What makes one node's future schedule no worse than another's."""
@@ -216,11 +217,14 @@ class DominanceTable(DuplicateTable):
         entries = self.entries.get(key)
         if entries is None:
             self.entries[key] = [(node.g, tv)]
+            self.count += 1
             return True
         for g, other in entries:
             if g <= node.g and _leq(other, tv):
                 return False
-        entries[:] = [(g, o) for g, o in entries if not (node.g <= g and _leq(tv, o))]
+        kept = [(g, o) for g, o in entries if not (node.g <= g and _leq(tv, o))]
+        self.count += len(kept) + 1 - len(entries)
+        entries[:] = kept
         entries.append((node.g, tv))
         return True
 

@@ -106,7 +106,8 @@ def chain_walk(h: Heuristic, node: Node, rows: list[EventRow]) -> int:
     # before[a, b]: event a happens before event b
     before = ((leaf[:, None] == leaf[None, :]) & (pos[:, None] < pos[None, :])) | h.after[np.ix_(leaf, leaf)]
     anchors = [list(rows[i].anchors) for i in events]
-    step = np.array([[int(h.rr[np.ix_(a, b)].min()) for b in anchors] for a in anchors])
+    columns = [np.array(a)[:, None] for a in anchors]  # (broadcast indexing: np.ix_ costs more per call)
+    step = np.array([[int(h.rr[col, b].min()) for b in anchors] for col in columns])
     flat = h.robot_walks(node, np.array([a for ax in anchors for a in ax], dtype=np.int64))
     offsets = np.cumsum([0] + [len(ax) for ax in anchors])
     reach = np.array([flat[offsets[k]:offsets[k + 1]].min(axis=0) for k in range(len(events))])  # x robots
