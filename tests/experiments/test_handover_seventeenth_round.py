@@ -5,7 +5,7 @@ the opposite side") it is a hedge that orders nothing, and where that leaves a b
 the reading is refused. Goals of one block per sentence that together send every block to the opposite
 side ("Move the red block to the opposite side. Then move the blue block ... The yellow block goes ...
 too.") also ask for all of them there at once, as one clause of the three blocks does. `dev93` and the
-held-out `validation26` are read right or refused, never misread (the `sweep` run)."""
+held-out `validation26` and `validation27` are read right or refused, never misread (the `sweep` run)."""
 
 from __future__ import annotations
 
@@ -43,6 +43,10 @@ NEAR_MISSES = [
     (1, "Move the red block to the opposite side. Then move the blue block to region G. The yellow block "
         "goes to the opposite side too."),
     (1, "Move the red block to the opposite side. Then move the blue block to the opposite side."),
+    # a third "then" orders yellow after blue, which task 1 leaves free (held out in validation27, where it
+    # was meant as a rephrasing: it says more than task 1)
+    (1, "The red block goes to the opposite side. Then the blue block goes to the opposite side. Then the "
+        "yellow block goes to the opposite side."),
     (5, "Swap the red and blue blocks, red first. Eventually take the yellow block to the opposite side."),
     (4, "Move the three blocks to their opposite regions. The arms must not touch the blue block until the "
         "red block has been touched. Eventually the robots will put the red block back on G."),
@@ -54,7 +58,7 @@ NEAR_MISSES = [
     test_unclear_forms_are_refused_by_name,
     test_near_misses_are_not_the_written_spec,
     test_h124_batches_are_read_right_or_refused_never_misread,
-) = round_tests(READ, REFUSED, NEAR_MISSES, ("dev93", "validation26"))
+) = round_tests(READ, REFUSED, NEAR_MISSES, ("dev93", "validation26", "validation27"))
 
 
 def test_eventually_orders_only_when_it_opens_a_later_sentence() -> None:
