@@ -217,7 +217,7 @@ def _read_forms(instruction: str, world: World) -> LanguageResult:
         root.children, root.before = flat_steps([*root.children, _joint(joint)], root.before)
     for x, y in orders:
         _order(root, _first_goal(goals, x), _first_goal(goals, y))
-    refuse_unordered(root)
+    refuse_unordered(root, [g for c in clauses if c.anytime for g in c.goals])
     return _result(world.name, instruction, root, goals, notes)
 
 

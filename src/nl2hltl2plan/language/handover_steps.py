@@ -2,7 +2,7 @@
 
 - `refuse_unordered`: a block given two goals that no step order relates ("Move the three blocks to the
   opposite regions. The yellow block eventually goes back on G.") is refused: which goal comes first, and
-  which place does the block end on?
+  which place does the block end on? (A goal said "at any time" is free of order on purpose.)
 - `scattered_joint`: goals of one block per clause, said across sentences ("Move the red block to the
   opposite side. Then move the blue block to the opposite side. The yellow block goes there too."), that
   together send every block of the scene to the opposite side, ask for all of them there at once, as
@@ -54,12 +54,13 @@ def flat_steps(children: list[N], before: list[tuple[int, int]]) -> tuple[list[N
     return flat, before
 
 
-def refuse_unordered(root: Node) -> None:
-    """Refuses a block with two goals where no node orders the one before the other."""
+def refuse_unordered(root: Node, free: list[Goal]) -> None:
+    """Refuses a block with two goals where no node orders the one before the other, unless one of them is
+    said to be free of order ("put it back on G at any time": `free`)."""
     goals = root.goals()
     for k, a in enumerate(goals):
         for b in goals[k + 1 :]:
-            if a.block == b.block and not _ordered(root, a, b):
+            if a.block == b.block and not (_ordered(root, a, b) or any(g in free for g in (a, b))):
                 raise HTTError(
                     f"the {a.block.lower()} block has two goals ('{a.text}', '{b.text}') and nothing orders "
                     "them: say which comes first"
