@@ -345,10 +345,11 @@ def places_then_count_read(text: str) -> str:
 
 
 # a later sentence that opens with a bare time adverb ("Later on the arms will put ...", "At a later point,
-# put ...") says its step comes after what was said before it, as "after that"; an added step ("later on
-# they will also ...") or one that says what it follows ("later on, once that is done") is read as it is
+# put ...", "Eventually the robots will put ...") says its step comes after what was said before it, as
+# "after that"; an added step ("later on they will also ...") or one that says what it follows ("later on,
+# once that is done") is read as it is. Inside a clause "eventually" is a hedge (`handover_words`)
 _LATER = re.compile(
-    r"(?i)^(\s*)(?![^;]*\b(?:also|too|as\s+well)\b)(?>later(?:\s+on)?|(?:some\s+time|a\s+(?:little\s+)?while|shortly)\s+"
+    r"(?i)^(\s*)(?![^;]*\b(?:also|too|as\s+well)\b)(?>later(?:\s+on)?|eventually|(?:some\s+time|a\s+(?:little\s+)?while|shortly)\s+"
     r"later|at\s+a\s+later\s+(?:point|stage|time|moment)|after\s+this)\b(?>\s*,?\s*)(?!(?:once|when|after)\b)(?=\S)"
 )
 # a time adverb set off by no comma before the team as the subject of a future ("Afterwards the robots will
@@ -360,9 +361,18 @@ _TIME_THEN_TEAM = re.compile(
     r"(?=\S+(?:\s+\S+)?\s+(?:will|shall|are\s+going\s+to)\b)"
 )
 
+# a hedge between the subject and the verb of a one-clause sentence ("the yellow block eventually goes to G",
+# "they will eventually put it on G") orders nothing (where it leaves a block's two goals unordered, the
+# reading refuses: `handover_reading`)
+_HEDGE = re.compile(
+    r"(?i)^((?:(?!\band\b|\bthen\b)[^,;])*?\b(?:blocks?|ones?|pillars?|objects?|it|they)(?:\s+will)?)\s+"
+    r"(?:eventually|sooner\s+or\s+later|in\s+due\s+course)\s+(?=[a-z])"
+)
+
 
 def later_read(sentences: list[str]) -> list[str]:
-    """Each sentence after the first with its opening "later (on)" as "after that" (see `_LATER`), and an
-    opening time adverb set off from the team's future by a comma (`_TIME_THEN_TEAM`)."""
+    """Each sentence after the first with its opening "later (on)" as "after that" (see `_LATER`), an
+    opening time adverb set off from the team's future by a comma (`_TIME_THEN_TEAM`), and a hedge inside
+    a clause dropped (`_HEDGE`)."""
     said = [s if k == 0 else _LATER.sub(r"\1after that, ", s, count=1) for k, s in enumerate(sentences)]
-    return [_TIME_THEN_TEAM.sub(r"\1, ", s, count=1) for s in said]
+    return [_HEDGE.sub(r"\1 ", _TIME_THEN_TEAM.sub(r"\1, ", s, count=1), count=1) for s in said]

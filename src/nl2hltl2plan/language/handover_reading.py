@@ -73,6 +73,7 @@ from nl2hltl2plan.language.handover_rules import (
     read_touch_guards,
 )
 from nl2hltl2plan.language.handover_scene import FILLER, Marked, Place, Scene
+from nl2hltl2plan.language.handover_steps import flat_steps, refuse_unordered, scattered_joint
 from nl2hltl2plan.language.handover_words import MOD
 from nl2hltl2plan.language.headings import answered as labelled_answers
 from nl2hltl2plan.language.htt import HTT, HTTNode
@@ -212,8 +213,11 @@ def _read_forms(instruction: str, world: World) -> LanguageResult:
     _refuse_cyclic(orders)
     _refuse_misplaced_markers(clauses)
     root = _tree(clauses)
+    if joint := scattered_joint(clauses, scene.blocks):
+        root.children, root.before = flat_steps([*root.children, _joint(joint)], root.before)
     for x, y in orders:
         _order(root, _first_goal(goals, x), _first_goal(goals, y))
+    refuse_unordered(root, [g for c in clauses if c.anytime for g in c.goals])
     return _result(world.name, instruction, root, goals, notes)
 
 
@@ -458,10 +462,12 @@ def _first_goal(goals: list[Goal], block: str) -> Goal:
 # ----- the task tree ----------------------------------------------------------------------------------
 def _items(c: Clause) -> list[Item]:
     items = [Item(f"{g.block.lower()} block to {g.where()}", goal=g) for g in c.goals]
-    if c.together:
-        text = "at once: " + ", ".join(f"{g.block.lower()} on {g.where()}" for g in c.goals)
-        items.append(Item(text, joint=list(c.goals)))
-    return items
+    return items + ([_joint(c.goals)] if c.together else [])
+
+
+def _joint(goals: list[Goal]) -> Item:
+    said = ", ".join(f"{g.block.lower()} on {g.where()}" for g in goals)
+    return Item(f"at once: {said}", joint=list(goals))
 
 
 def _unit(c: Clause) -> Item:
