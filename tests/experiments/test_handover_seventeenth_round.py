@@ -36,6 +36,10 @@ REFUSED = [
         "red block has been touched. The robots will eventually put the yellow block back on G."),
     (8, "Put the yellow block on region I. The yellow block eventually goes to region G. Move the red and "
         "blue blocks to any empty region at any time."),
+    # "back" at any time beside the block's other goal: its start already holds it there (the lead; this
+    # read task 4 without the return's order, exit 0)
+    (4, "Move the three blocks to their opposite regions, without touching the blue block until the red "
+        "block has been touched. At some point the robots will put the yellow block back on G."),
 ]
 
 NEAR_MISSES = [

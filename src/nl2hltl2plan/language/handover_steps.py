@@ -2,7 +2,8 @@
 
 - `refuse_unordered`: a block given two goals that no step order relates ("Move the three blocks to the
   opposite regions. The yellow block eventually goes back on G.") is refused: which goal comes first, and
-  which place does the block end on? (A goal said "at any time" is free of order on purpose.)
+  which place does the block end on? (A goal said "at any time" is free of order on purpose, unless it puts
+  the block "back": that follows its leaving.)
 - `scattered_joint`: goals of one block per clause, said across sentences ("Move the red block to the
   opposite side. Then move the blue block to the opposite side. The yellow block goes there too."), that
   together send every block of the scene to the opposite side, ask for all of them there at once, as
@@ -13,6 +14,7 @@
 
 from __future__ import annotations
 
+import re
 from collections.abc import Sequence
 from typing import Protocol, TypeVar, cast
 
@@ -60,11 +62,24 @@ def refuse_unordered(root: Node, free: list[Goal]) -> None:
     goals = root.goals()
     for k, a in enumerate(goals):
         for b in goals[k + 1 :]:
-            if a.block == b.block and not (_ordered(root, a, b) or any(g in free for g in (a, b))):
+            if a.block == b.block and not (_ordered(root, a, b) or any(_free(g, free) for g in (a, b))):
                 raise HTTError(
-                    f"the {a.block.lower()} block has two goals ('{a.text}', '{b.text}') and nothing orders "
-                    "them: say which comes first"
+                    f"the {a.block.lower()} block is sent to two places ({_said(a)}, {_said(b)}) and nothing "
+                    "orders them: say which comes first"
                 )
+
+
+def _said(goal: Goal) -> str:
+    """Where a goal sends its block, in the user's terms (the marked text holds the reader's tokens)."""
+    where = goal.where()
+    return where if " " in where else "region " + " or ".join(where.split("|"))
+
+
+def _free(goal: Goal, free: list[Goal]) -> bool:
+    """A goal said free of order, unless it puts its block back: "back" follows the block's leaving, so
+    "at some point put the yellow block back on G" beside another goal of the yellow block orders nothing
+    it could mean (its start already holds it there) and is refused."""
+    return goal in free and not re.search(r"\bback\b", goal.text, re.I)
 
 
 def _ordered(item: Node, a: Goal, b: Goal) -> bool:
