@@ -22,7 +22,6 @@ STILL_REFUSED = {
     "The red and blue blocks can go to any empty region at any time, since their order does not matter.",
     "Please first put yellow block to region I, after put yellow block to region G, and the red and blue "
     "block move to any empty region any time.",
-    "3 blocks, opposite side, red before blue.",
     "We have three goal regions, H, I and J, and three blocks, so put the three blocks in regions H, I and "
     "J with one block per region.",
     "The pillars are in the way on the far side, so bring the three pillars to regions E, F and G, and "
