@@ -155,12 +155,17 @@ def _score(low: str, name: str) -> float:
 def spelt_word(word: str) -> str | None:
     """The English word that `word` misspells ("woould", "alriight", "cleean"): a word of four letters or
     more that neither the lexicon, the project's word lists nor English knows and that is one edit (a
-    letter more, less, changed, or two neighbours swapped) from exactly one English word, which
-    `_respellable` allows; else None. Names are `spelt_name`'s."""
+    letter more, less, changed, or two neighbours swapped) from exactly one English word, or two
+    neighbours swapped from exactly one of several, which `_respellable` allows; else None. Names are
+    `spelt_name`'s."""
     low = word.lower()
     if len(low) < 4 or low in _known_words() or _english().known(_american(low)):
         return None
     close = _english().known(_english().edit_distance_1(low))
+    # two neighbours swapped is the commonest slip: "claen" is "clean", not "clan" or "caen" (a letter
+    # dropped or changed), where exactly one word is that swap away
+    swapped = {w for w in close if len(w) == len(low) and _neighbours_swapped(w, low)}
+    close = swapped if len(close) > 1 and len(swapped) == 1 else close
     return next(iter(close)) if len(close) == 1 and _respellable(next(iter(close))) else None
 
 
