@@ -430,12 +430,13 @@ def role_swap_conflict(
     `referents.exact_names`). The task's role narrows a word's types (`Roles.narrow`): "the cup in the
     coffee machine" became the Mug, ALFRED's coffee machine holding only a Mug. Where the scene has a Mug
     only, the Mug is what "cup" can mean (the annotation guide's "cup -> Cup, else Mug"); where it has a Cup
-    too, the text names the Cup, which cannot do it, and the Mug would be a guess. `places`: where a task puts
-    a thing of a type, named in the message."""
+    too, the text names the Cup, which cannot do it, and the Mug would be a guess. Only a word whose own
+    type is the lexicon's first reading of it is asked ("cup", "mug", "cloth", "soap bar"). `places`: where
+    a task puts a thing of a type, named in the message."""
     named = next((t for t in present if entry.phrase in (camel_words(t), t.lower())), None)
     other = next((t for t in present if t != named and t in things), None)
-    if entry.all_ or named is None or other is None:
-        return None
+    if entry.all_ or named is None or other is None or named != entry.types[0]:
+        return None  # "towel", the HandTowel first, is `exact_name_conflict`'s (a towel washed is a Cloth)
     place = places.get(other)
     cannot = f"which the {place} cannot hold" if place else "which cannot do what is asked here"
     say = _own_name(other, entry.phrase)

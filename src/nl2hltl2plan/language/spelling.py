@@ -8,8 +8,9 @@ text, so a misspelt name that a reading does not use is named, never passed over
   one best match) when English does not know it either: "ridge" is not the fridge, "dressed" not the
   dresser, "status" not the statue;
 - any other word of four letters or more that neither the lexicon, the project's word lists nor English
-  knows (a British spelling is English) is the English word one edit away, when exactly one is and it
-  names an action, a state or a count, or is a word of politeness ("woould", "cleean", "slcie"); never
+  knows (a British spelling is English) is the English word one edit away, when exactly one is (or
+  exactly one of several is two neighbours swapped: "claen" is "clean", not "clan") and it names an
+  action, a state or a count, or is a word of politeness ("woould", "cleean", "slcie"); never
   an order word or a word that builds a structure ("when finsihed", "containign" stay unread: their
   scope is no guess).
 A world with a closed vocabulary may ask for more (`closed_respelt`): the tabletop world respells against
