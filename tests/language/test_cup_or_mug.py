@@ -48,6 +48,12 @@ def test_a_mug_named_by_its_own_word_beside_the_cup_is_no_swap() -> None:
         exact_names("put the cup in the coffee machine and the cup in the sink", tasks, BOTH, "s")
 
 
+def test_a_type_another_word_can_mean_is_that_words() -> None:
+    # the Knife is the utensil's, not "the butter knife" (a negated thing) read as the Knife
+    text = "put a utensil in the sink but do not touch the butter knife"
+    exact_names(text, [place("A", "Knife", "SinkBasin")], {"ButterKnife": 1, "Knife": 1, "SinkBasin": 1}, "s")
+
+
 @pytest.mark.data
 @pytest.mark.parametrize("name", ["users_h125dev", "users_h125held"])
 def test_the_h125_user_sets_read_as_their_ground_truth(name: str) -> None:

@@ -90,16 +90,13 @@ def exact_names(
         first = present[0] if present else ""
         if clash and first in used and not any(o is not m and o.entry.types[0] == first for o in mentions):
             raise HTTError(clash)
-        # the thing handled read as another type than the one the word names ("the cup" as the Mug)
-        unnamed = {t for t in things if not any(o is not m and _names(o, t) for o in mentions)}
+        # the thing handled read as another type than the one the word names ("the cup" as the Mug), a
+        # type no other word of the text can mean ("a utensil ... not the butter knife": the utensil's)
+        others = [o for o in mentions if o.entry.phrase != m.entry.phrase]
+        unnamed = {t for t in things if not any(t in o.entry.types for o in others)}
         swap = role_swap_conflict(m.entry, present, unnamed, scene, places)
         if swap:
             raise HTTError(swap)
-
-
-def _names(m: Mention, type_: str) -> bool:
-    """Does the mention's word read `type_` first or name it ("towel", the Towel's own name)?"""
-    return m.entry.types[0] == type_ or m.entry.phrase in (camel_words(type_), type_.lower())
 
 
 def moved_twice(
