@@ -35,6 +35,9 @@ def read(text: str, types: set[str]) -> tuple[list[str], list[str]]:
         ("head of cabbage", "Lettuce"),
         ("trophy", "Statue"),
         ("pepper dispenser", "PepperShaker"),
+        ("soap dispenser", "SoapBottle"),
+        ("soap pump", "SoapBottle"),
+        ("pump bottle", "SoapBottle"),
         ("toilet paper dispenser", "ToiletPaperHanger"),
         ("toilet brush", "ScrubBrush"),
         ("potted plant", "HousePlant"),
@@ -73,6 +76,14 @@ def test_a_dispenser_of_pepper_or_toilet_paper_is_that_things_holder_not_a_secon
     )
     # near miss: the toilet paper itself is still the paper
     assert read("put the toilet paper on the shelf", BATHROOM) == (["place ToiletPaper -> Shelf"], [])
+
+
+def test_the_soap_dispenser_is_the_soap_bottle_and_the_soap_the_bar() -> None:
+    # ALFRED's annotators' "soap dispenser" is a SoapBottle (every one of 25 non-excluded train annotations)
+    assert read("put the soap dispenser on the toilet", BATHROOM) == (["place SoapBottle -> Toilet"], [])
+    assert read("put the soap dispensers on the shelf", BATHROOM)[0] != ["place SoapBar -> Shelf"]
+    # near miss: "soap" alone stays the guide's SoapBar
+    assert read("put the soap on the toilet", BATHROOM) == (["place SoapBar -> Toilet"], [])
 
 
 def test_the_trophy_is_the_statue() -> None:

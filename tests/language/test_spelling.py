@@ -84,6 +84,11 @@ def test_check_one_names_a_misspelt_object_that_the_reading_leaves_out():
         ("colour", None),  # a British spelling is English
         ("wilco", None),  # a word of the project's own lists (the handover radio words)
         ("woud", None),  # one edit from several words: which is meant is a guess
+        # ... unless exactly one of them is two neighbours swapped, the commonest slip ("clan", "caen")
+        ("claen", "clean"),
+        ("celan", "clean"),
+        ("thorw", "throw"),
+        ("clan", None),  # an English word stays
     ],
 )
 def test_another_misspelt_word_is_the_one_english_word_one_edit_away(word, english):

@@ -10,7 +10,7 @@ with a `WorldError` that names the missing type ("no Statue in FloorPlan17").
 from __future__ import annotations
 
 import re
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Collection, Iterable, Mapping
 from dataclasses import dataclass
 from functools import lru_cache
 from importlib import resources
@@ -420,6 +420,27 @@ def exact_name_conflict(entry: Entry, present: list[str], scene: str = "the scen
     first = present[0]
     say = " or ".join(repr(_own_name(t, entry.phrase)) for t in (named, first))
     return f"{entry.phrase!r} is both the {named} of {scene} and ALFRED's word for its {first}: say {say}"
+
+
+def role_swap_conflict(
+    entry: Entry, present: list[str], things: Collection[str], scene: str, places: Mapping[str, str]
+) -> str | None:
+    """Why a word that is the own name of a type of the scene (`present`, the entry's types there) is
+    refused when the thing handled is read as another of its types (`things`), else None (check 1 asks it,
+    `referents.exact_names`). The task's role narrows a word's types (`Roles.narrow`): "the cup in the
+    coffee machine" became the Mug, ALFRED's coffee machine holding only a Mug. Where the scene has a Mug
+    only, the Mug is what "cup" can mean (the annotation guide's "cup -> Cup, else Mug"); where it has a Cup
+    too, the text names the Cup, which cannot do it, and the Mug would be a guess. Only a word whose own
+    type is the lexicon's first reading of it is asked ("cup", "mug", "cloth", "soap bar"). `places`: where
+    a task puts a thing of a type, named in the message."""
+    named = next((t for t in present if entry.phrase in (camel_words(t), t.lower())), None)
+    other = next((t for t in present if t != named and t in things), None)
+    if entry.all_ or named is None or other is None or named != entry.types[0]:
+        return None  # "towel", the HandTowel first, is `exact_name_conflict`'s (a towel washed is a Cloth)
+    place = places.get(other)
+    cannot = f"which the {place} cannot hold" if place else "which cannot do what is asked here"
+    say = _own_name(other, entry.phrase)
+    return f"{entry.phrase!r} is the {named} of {scene}, {cannot}: say {say!r} for its {other}"
 
 
 def _own_name(type_: str, phrase: str) -> str:

@@ -3,7 +3,8 @@
 A base task's atoms name types ("pickup(Kettle)"), and each leaf's objects are its own (docs/planning.md,
 "The model"): two tasks cannot be kept to one instance, nor a task to every instance a word names. Three
 wordings would be read otherwise than meant, so they are refused (HTTError, exit 2, one line naming them),
-as is a word that is one type's name read as another type (`exact_names`: "towel", a Towel or a HandTowel):
+as is a word that is one type's name read as another type (`exact_names`: "towel", a Towel or a HandTowel;
+"the cup" read as the Mug where the scene has a Cup):
 
 - one thing moved twice: "put the kettle on the stove, then put the kettle (it) in the sink" reads two
   tasks that two different kettles satisfy (`moved_twice`). "A potato ... a potato", "another kettle",
@@ -37,6 +38,7 @@ from nl2hltl2plan.language.grounding import (
     find_mentions,
     lookup,
     phrase_lines,
+    role_swap_conflict,
     tokens,
 )
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
@@ -78,13 +80,23 @@ def exact_names(
     if not instances:
         return
     mentions = find_mentions(instruction)
-    used = {t for task in tasks for t in [*task.object, *(task.receptacle or ()), *(task.container or ())]}
+    held = [(task, [*task.object, *(task.container or ())]) for task in tasks]
+    things = {t for _, types in held for t in types}
+    used = things | {t for task in tasks for t in task.receptacle or ()}
+    places = {t: task.receptacle[0] for task, types in held if task.receptacle for t in types}
     for m in mentions:
         present = [t for t in m.entry.types if instances.get(t)]
         clash = exact_name_conflict(m.entry, present, scene)
         first = present[0] if present else ""
         if clash and first in used and not any(o is not m and o.entry.types[0] == first for o in mentions):
             raise HTTError(clash)
+        # the thing handled read as another type than the one the word names ("the cup" as the Mug), a
+        # type no other word of the text can mean ("a utensil ... not the butter knife": the utensil's)
+        others = [o for o in mentions if o.entry.phrase != m.entry.phrase]
+        unnamed = {t for t in things if not any(t in o.entry.types for o in others)}
+        swap = role_swap_conflict(m.entry, present, unnamed, scene, places)
+        if swap:
+            raise HTTError(swap)
 
 
 def moved_twice(

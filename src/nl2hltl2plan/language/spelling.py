@@ -8,8 +8,9 @@ text, so a misspelt name that a reading does not use is named, never passed over
   one best match) when English does not know it either: "ridge" is not the fridge, "dressed" not the
   dresser, "status" not the statue;
 - any other word of four letters or more that neither the lexicon, the project's word lists nor English
-  knows (a British spelling is English) is the English word one edit away, when exactly one is and it
-  names an action, a state or a count, or is a word of politeness ("woould", "cleean", "slcie"); never
+  knows (a British spelling is English) is the English word one edit away, when exactly one is (or
+  exactly one of several is two neighbours swapped: "claen" is "clean", not "clan") and it names an
+  action, a state or a count, or is a word of politeness ("woould", "cleean", "slcie"); never
   an order word or a word that builds a structure ("when finsihed", "containign" stay unread: their
   scope is no guess).
 A world with a closed vocabulary may ask for more (`closed_respelt`): the tabletop world respells against
@@ -155,12 +156,17 @@ def _score(low: str, name: str) -> float:
 def spelt_word(word: str) -> str | None:
     """The English word that `word` misspells ("woould", "alriight", "cleean"): a word of four letters or
     more that neither the lexicon, the project's word lists nor English knows and that is one edit (a
-    letter more, less, changed, or two neighbours swapped) from exactly one English word, which
-    `_respellable` allows; else None. Names are `spelt_name`'s."""
+    letter more, less, changed, or two neighbours swapped) from exactly one English word, or two
+    neighbours swapped from exactly one of several, which `_respellable` allows; else None. Names are
+    `spelt_name`'s."""
     low = word.lower()
     if len(low) < 4 or low in _known_words() or _english().known(_american(low)):
         return None
     close = _english().known(_english().edit_distance_1(low))
+    # two neighbours swapped is the commonest slip: "claen" is "clean", not "clan" or "caen" (a letter
+    # dropped or changed), where exactly one word is that swap away
+    swapped = {w for w in close if len(w) == len(low) and _neighbours_swapped(w, low)}
+    close = swapped if len(close) > 1 and len(swapped) == 1 else close
     return next(iter(close)) if len(close) == 1 and _respellable(next(iter(close))) else None
 
 

@@ -1,0 +1,67 @@
+"""A word that is one type's own name is not read as another of its types because the task's place can
+hold only that one (`grounding.role_swap_conflict`, asked by `referents.exact_names`): "the cup in the
+coffee machine" where the floor plan has a Cup and a Mug is refused naming both (ALFRED's coffee machine
+holds only a Mug); with a Mug and no Cup, "cup" is the Mug (the annotation guide's "cup -> Cup, else Mug");
+with a Cup and no Mug it stays the Cup. And h125's user-style sets read as their ground truth says."""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+import pytest
+
+from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.language.referents import exact_names
+from nl2hltl2plan.language.task_specs import BaseTaskSpec
+
+
+def place(tid: str, obj: str, dest: str) -> BaseTaskSpec:
+    return BaseTaskSpec(id=tid, text="", kind="place", object=[obj], receptacle=[dest])
+
+
+BOTH = {"Cup": 2, "Mug": 2, "CoffeeMachine": 1, "SinkBasin": 1}
+MUG_ONLY = {"Mug": 1, "CoffeeMachine": 1, "Desk": 1}
+CUP_ONLY = {"Cup": 1, "CoffeeMachine": 1, "SinkBasin": 1}
+
+
+def test_the_cup_read_as_the_mug_is_refused_where_the_floor_plan_has_a_cup() -> None:
+    said = r"'cup' is the Cup of FloorPlan1, which the CoffeeMachine cannot hold: say 'mug' for its Mug"
+    with pytest.raises(HTTError, match=said):
+        tasks = [place("A", "Mug", "CoffeeMachine")]
+        exact_names("put the cup in the coffee machine", tasks, BOTH, "FloorPlan1")
+
+
+def test_the_cup_is_the_mug_where_there_is_no_cup_and_the_cup_where_there_is() -> None:
+    exact_names("put the cup in the coffee machine", [place("A", "Mug", "CoffeeMachine")], MUG_ONLY, "s")
+    exact_names("put the cup on the desk", [place("A", "Mug", "Desk")], MUG_ONLY, "s")
+    exact_names("put the cup in the coffee machine", [place("A", "Cup", "CoffeeMachine")], CUP_ONLY, "s")
+    exact_names("put the cup in the sink", [place("A", "Cup", "SinkBasin")], BOTH, "s")
+
+
+def test_a_mug_named_by_its_own_word_beside_the_cup_is_no_swap() -> None:
+    tasks = [place("A", "Mug", "CoffeeMachine"), place("B", "Cup", "SinkBasin")]
+    exact_names("put the mug in the coffee machine and the cup in the sink", tasks, BOTH, "s")
+    # near miss: the same reading of a text whose only word for the mug is "cup"
+    tasks = [place("A", "Mug", "CoffeeMachine"), place("B", "Cup", "SinkBasin")]
+    with pytest.raises(HTTError, match="'cup' is the Cup"):
+        exact_names("put the cup in the coffee machine and the cup in the sink", tasks, BOTH, "s")
+
+
+def test_a_type_another_word_can_mean_is_that_words() -> None:
+    # the Knife is the utensil's, not "the butter knife" (a negated thing) read as the Knife
+    text = "put a utensil in the sink but do not touch the butter knife"
+    exact_names(text, [place("A", "Knife", "SinkBasin")], {"ButterKnife": 1, "Knife": 1, "SinkBasin": 1}, "s")
+
+
+@pytest.mark.data
+@pytest.mark.parametrize("name", ["users_h125dev", "users_h125held"])
+def test_the_h125_user_sets_read_as_their_ground_truth(name: str) -> None:
+    """Every line with tasks converts to them, every line marked for refusal is refused, as `plan` reads."""
+    sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "scripts"))
+    import trust_sets
+
+    rows = trust_sets.load(name)
+    got = [(gt.instruction, trust_sets.outcome(gt)[0]) for gt in rows]
+    want = [(gt.instruction, "converted" if gt.feasible else "refused") for gt in rows]
+    assert got == want
