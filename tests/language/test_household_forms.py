@@ -116,6 +116,13 @@ def test_numbered_steps_with_a_free_order_remark_order_nothing(kitchen):
 
 
 @pytest.mark.data
+def test_a_free_order_remark_inside_a_step_frees_that_step_only(kitchen):
+    text = "Put the mug in the sink. Step two: put the apple and the egg in the fridge in any order."
+    tasks = [MUG_SINK, APPLE_FRIDGE, "place Egg -> Fridge"]
+    assert reading(text, kitchen) == (tasks, [("A", "B"), ("A", "C")])
+
+
+@pytest.mark.data
 def test_steps_numbered_out_of_turn_are_refused(kitchen):
     with pytest.raises(HTTError, match="out of turn"):
         translate("Step 2: put the mug in the sink. Step 1: put the apple in the fridge.", kitchen)

@@ -9,7 +9,9 @@ nothing (step 1 before step 2: the opposite of what was asked).
   an order the text may mean is kept rather than dropped;
 - "step N before step M" / "step M after step N": with two steps, that order;
 - no order said: steps numbered in turn are that sequence ("Step one: A. Step two: B." is "A, then B", the
-  label's number no count); numbered out of turn, refused; with a free-order remark, the numbers go;
+  label's number no count; a step that frees what it lists, "Step two: B and C in any order", is a sentence
+  of its own after "After that"); numbered out of turn, refused; with a free-order remark of its own
+  sentence ("Any order is fine."), the numbers go;
 - an order between two of three or more steps (which leaves where the third goes unsaid), or one that names
   a step the recipe does not have, is refused by name. An order the steps may come in freely ("Either step
   may come first") is `free_order.txt`'s, which the grammar reads.
@@ -21,6 +23,7 @@ nothing (step 1 before step 2: the opposite of what was asked).
 from __future__ import annotations
 
 import re
+from collections.abc import Iterable
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.content_words import free_order_remarks
@@ -89,9 +92,23 @@ def _in_turn(text: str) -> str:
         return text
     if list(steps) != list(range(1, len(steps) + 1)):
         raise HTTError(f"the steps are numbered out of turn ({', '.join(map(str, steps))}); say their order")
-    if free_order_remarks(text):  # the numbers go, the remark that frees the order stays
+    if _frees_the_steps(steps.values()):  # the numbers go, the remark that frees the order stays
         return ". ".join(steps.values()) + "."
-    return ", then ".join(steps.values()) + "."
+    # a step that frees what it lists goes in a sentence of its own: ", then B and C in any order" would
+    # order C after nothing
+    then = ". After that, " if any(free_order_remarks(w) for w in steps.values()) else ", then "
+    return then.join(steps.values()) + "."
+
+
+def _frees_the_steps(steps: Iterable[str]) -> bool:
+    """A free-order remark in a sentence of its own frees the steps' order ("1. A. 2. B. Any order is
+    fine."); one inside a step's own sentence frees what that step lists ("Step two: B and C in any
+    order")."""
+    return any(
+        free_order_remarks(later)
+        for words in steps
+        for later in re.split(r"(?<=[.!?])\s+", words)[1:]
+    )
 
 
 def _number(ref: str) -> int:
