@@ -18,17 +18,14 @@ import json
 import random
 import sys
 import time
-from functools import cache
 from pathlib import Path
 from typing import Any
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.language.translate import translate
-from nl2hltl2plan.worlds import load_world
-from nl2hltl2plan.worlds.world import World
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from trust_sets import STYLES, TRUST, parse_line  # noqa: E402
+from trust_sets import STYLES, TRUST, parse_line, world_of  # noqa: E402
 
 
 def corpus(rows: Path | None) -> list[tuple[str, str, str]]:
@@ -50,17 +47,13 @@ def corpus(rows: Path | None) -> list[tuple[str, str, str]]:
     return out
 
 
-@cache
-def _world(scene: str) -> World:
-    return load_world(scene)
-
 
 def reading(scene: str, text: str, full: bool) -> dict[str, Any]:
     """The reading as JSON (the spec's JSON too with the full build), or the error's class and text."""
     try:
         if not full:
-            return translate(text, _world(scene), build=False, actions="none").model_dump(mode="json")
-        res = translate(text, _world(scene))
+            return translate(text, world_of(scene), build=False, actions="none").model_dump(mode="json")
+        res = translate(text, world_of(scene))
         spec = res.spec.to_json(indent=None) if res.spec is not None else None
         return res.model_dump(mode="json") | {"spec": spec}
     except Nl2Hltl2PlanError as exc:
@@ -80,7 +73,7 @@ def main() -> int:
     args = ap.parse_args()
     items = corpus(args.rows)
     for _, scene, _ in items:
-        _world(scene)  # worlds loaded before the clock runs
+        world_of(scene)  # worlds loaded before the clock runs
     reading("FloorPlan1", "put the apple in the fridge", False)  # models and word files loaded
     sample = set(random.Random(7).sample(range(len(items)), min(args.full, len(items))))
     times, seen = [], set()

@@ -42,7 +42,6 @@ import json
 import re
 import sys
 from collections import Counter, defaultdict
-from functools import cache
 from pathlib import Path
 from typing import Any
 
@@ -56,11 +55,10 @@ from nl2hltl2plan.language.scoring import match
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
 from nl2hltl2plan.language.translate import apply_choices, scene_instances, top_candidates, translate
 from nl2hltl2plan.suites.alfred.structure_validation import rows_of_set
-from nl2hltl2plan.worlds import load_world
 from nl2hltl2plan.worlds.world import World
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from trust_sets import parse_line  # noqa: E402
+from trust_sets import parse_line, world_of  # noqa: E402
 
 STYLES = Path(__file__).resolve().parent.parent / "tests" / "language" / "data" / "styles"
 FINDING = re.compile(r"^'(.+?)' \((\w+)\): (.*)$")  # one finding of check 1 (`accounting.Unread`)
@@ -91,10 +89,6 @@ def rows(name: str, n: int) -> list[dict[str, Any]]:
         return [parse_line(ln, name, k) for k, ln in enumerate(lines, 1)]
     return rows_of_set(name, n)
 
-
-@cache
-def _world(scene: str) -> World:
-    return load_world(scene)
 
 
 def classify(row: dict[str, Any], reader: str = "household") -> tuple[str, str, str]:
@@ -145,7 +139,7 @@ def household_reading(row: dict[str, Any]) -> Reading:
     questions, descriptive names, self-corrections, "respectively", step numbers, negations), check 1
     with the floor plan's instance counts and the referents' refusals; an ambiguous word takes its top
     candidate. The reader's rewritten text is what check 1 reads, so the classes below hold for it."""
-    r = shipped(row["instruction"], _world(row["scene"]))
+    r = shipped(row["instruction"], world_of(row["scene"]))
     return r.tasks, r.before, list(r.unparsed), r.instruction
 
 
@@ -163,7 +157,7 @@ def grammar_reading(row: dict[str, Any]) -> Reading:
     is judged without counts."""
     p = parse_instruction(row["instruction"], scene_types(row["scene"]), row["scene"], strict=False)
     apply_choices(p, top_candidates(p.ambiguities))  # its result unused, as the earlier measure had it
-    world = _world(row["scene"]) if str(row["id"]).startswith("trust.") else None
+    world = world_of(row["scene"]) if str(row["id"]).startswith("trust.") else None
     instances = scene_instances(world) if world is not None else None
     scene = world.name if world is not None else "the scene"
     found = [str(u) for u in account(row["instruction"], p.tasks, p.before, instances, scene)]
@@ -239,7 +233,7 @@ def report_long() -> None:
     for n_base in range(5, 10):
         for key, text, _ in instructions(n_base):
             scene = key.split(".")[0]
-            reasons = long_reason(text, _world(scene))
+            reasons = long_reason(text, world_of(scene))
             total += 1
             accepted += not reasons
             if reasons:

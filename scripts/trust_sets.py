@@ -134,7 +134,7 @@ def build() -> None:
 
 
 @cache
-def _world(scene: str) -> World:
+def world_of(scene: str) -> World:
     """One world per floor plan: `translate` only reads it (building one takes a numpy distance pass per
     object, and the sets load the same few floor plans hundreds of times)."""
     return load_world(scene)
@@ -142,7 +142,7 @@ def _world(scene: str) -> World:
 
 def outcome(gt: GTInstance, backend: str = "offline") -> tuple[str, str]:
     """(refused | partial | converted | wrong, detail) for one line, as `plan` would treat it."""
-    world = _world(gt.scene)
+    world = world_of(gt.scene)
     try:
         res = translate(gt.instruction, world, backend, build=False, actions="none")
     except Nl2Hltl2PlanError as exc:
