@@ -75,18 +75,15 @@ def step_order(text: str) -> str:
 
 
 def _in_turn(text: str) -> str:
-    """A recipe numbered in turn ("Step 1: A. Step 2: B.", "1. A 2. B", "Step one: A. Step two: B."), with
-    no order said and no free-order remark: its steps in that order, "A, then B". A first step left
-    unnumbered before "Step 2" is step 1. Anything else comes back as it is (a text that frees the order
-    keeps its numbers, which the grammar drops)."""
+    """A recipe numbered in turn ("Step 1: A. Step 2: B.", "1. A 2. B", "Step one: A. Step two: B.") with no
+    order said: its steps in that order, "A, then B", or, with a free-order remark of its own sentence,
+    its steps without their numbers. A first step left unnumbered before "Step 2" is step 1; steps
+    numbered out of turn are refused; anything else comes back as it is."""
     marks = list(_STEP.finditer(text))
     if len(marks) < 2 and not (marks and _number(f"step {marks[0]['n']}") == 2):
         return text
     before = text[: marks[0].start()].strip(" .;")
-    try:
-        numbered = _steps(text[marks[0].start() :].lstrip())
-    except HTTError:
-        return text
+    numbered = _steps(text[marks[0].start() :].lstrip())  # from the first mark: nothing stands outside
     steps = numbered if not before or before.endswith(":") else {1: before, **numbered}
     if len(steps) < 2:
         return text
