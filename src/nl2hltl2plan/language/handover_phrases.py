@@ -1,7 +1,7 @@
 """Phrases of the four-arm handover instructions (paper Table III), read against the world's layout.
 
 A sentence is read in passes. It is normalised first (lower case, typos mended, the variants of
-`handover_words.REWRITES` rewritten onto the forms read). Noun phrases then become placeholders:
+`handover_rewrites.REWRITES` rewritten onto the forms read). Noun phrases then become placeholders:
 blocks (`B0`: "the three pillars", "red and blue blocks", "each object"), places (`P0`: "region H, I
 and J", "the opposite side", "any empty region", "the side of arm a and arm b", "where the red block
 is", "the area other than the target region") and arms (`A`: "the robot arm", "any of the arms").
@@ -35,6 +35,7 @@ from nl2hltl2plan.language.handover_places import (
 )
 from nl2hltl2plan.language.handover_regex import apply, rewrite_table
 from nl2hltl2plan.language.handover_registers import REGISTERS
+from nl2hltl2plan.language.handover_rewrites import REWRITES
 from nl2hltl2plan.language.handover_scene import (
     COLOUR,
     COUNTS,
@@ -53,7 +54,6 @@ from nl2hltl2plan.language.handover_words import (
     GERUND,
     MODAL,
     NEG,
-    REWRITES,
     STEP_NUMBER,
     SWAP,
     VERB,
