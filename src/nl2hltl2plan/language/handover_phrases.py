@@ -78,6 +78,7 @@ def normalise(sentence: str) -> str:
     text = re.sub(r"\b(?:all|the)\s+(?:four|4)\s+(?:of\s+the\s+)?(?=(?:robot\s+)?arms\b)", "the ", text)
     text = re.sub(r"\barms\s+a\s*,\s*b\s*,\s*c\s*,?\s*and\s+d\b", "the arms", text)
     text = _DASH.sub(lambda dash: _dash_as_comma(text, dash), text)
+    text = _NOUN_FIRST.sub(_colour_first, text)
     text = read_asides(text)
     text = re.sub(r"([,()/:])", r" \1 ", text)
     text = re.sub(r"\b(\w+)'s\b", r"\1 s", text)  # red's -> red s (a possessive)
@@ -89,6 +90,24 @@ def normalise(sentence: str) -> str:
 
 
 _DASH = re.compile(r"\s*[—–]\s*|\s+-+\s+")
+
+
+# the noun before its colour, as a label names it ("block red is to be placed before block blue"); read
+# before the dictation's clause breaks (`handover_spoken`), which take "the yellow block red first" (a colour
+# word before the noun) as two phrases
+_NOUN_FIRST = re.compile(
+    rf"(?P<before>\b[a-z]+\s+|^\s*)(?P<noun>block|cube|pillar|object)\s+(?P<colour>{COLOUR})\b"
+    rf"(?!\s+{NOUN}s?\b)"
+)
+_NOT_NOUN_FIRST = frozenset({"red", "blue", "yellow", "one", "each", "every", "any", "another", "that"})
+
+
+def _colour_first(found: re.Match[str]) -> str:
+    before = found["before"]
+    if before.strip() in _NOT_NOUN_FIRST:
+        return found[0]
+    article = "" if before.strip() in ("the", "a") else "the "
+    return f"{before}{article}{found['colour']} {found['noun']}"
 
 
 def _dash_as_comma(text: str, dash: re.Match[str]) -> str:

@@ -50,7 +50,14 @@ from nl2hltl2plan.language.handover_answers import answered, fragments_joined, t
 from nl2hltl2plan.language.handover_closing import check_closing, closing_said
 from nl2hltl2plan.language.handover_cues import restate
 from nl2hltl2plan.language.handover_discourse import plain
-from nl2hltl2plan.language.handover_goals import Clause, Goal, crossed_exchanges, goal_clauses, lead
+from nl2hltl2plan.language.handover_goals import (
+    Clause,
+    Goal,
+    crossed_exchanges,
+    goal_clauses,
+    lead,
+    lead_later,
+)
 from nl2hltl2plan.language.handover_phrases import drop_but, mark
 from nl2hltl2plan.language.handover_rules import (
     Prohibition,
@@ -139,6 +146,7 @@ def _read_forms(instruction: str, world: World) -> LanguageResult:
     touches: list[tuple[str, str]] = []
     notes: list[str] = []
     pending: list[Prohibition] = []  # prohibitions stated before any goal
+    said_first: list[str] = []  # blocks said to go first before any goal of theirs
     previous: Marked | None = None  # the sentence before ("it", "these regions" in the next one)
     said = timing_joined(fragments_joined(plain(split_sentences(answered(instruction)))))
     steps, closing = closing_said(said)
@@ -166,8 +174,13 @@ def _read_forms(instruction: str, world: World) -> LanguageResult:
                 pending.append((blocks, place, explicit, text))
         clauses = crossed_exchanges(clauses + new, orders)
         for block in leaders:
-            lead(clauses, block)
+            if any(g.block == block for c in clauses for g in c.goals):
+                lead(clauses, block)
+            else:  # said before any goal of it: among the blocks of a later clause
+                said_first.append(block)
     clauses = _distributed(clauses, notes)
+    for block in said_first:
+        lead_later(clauses, block)
     orders += [(c.leader, g.block) for c in clauses if c.leader for g in c.goals if g.block != c.leader]
     if not clauses:
         raise HTTError(f"no goal for a block in {instruction!r} (say where each block goes)")

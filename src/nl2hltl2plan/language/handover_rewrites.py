@@ -5,14 +5,18 @@ the patterns of `handover_words` read, and changes no meaning (typos are mended 
 
 from nl2hltl2plan.language.handover_words import (
     AFTER_ALL,
+    DONE_STATE,
+    EMPTY,
     FIRST_STEP,
     GERUND_VERBS,
     LATER_STEP,
+    NEG,
     NEGATED_GERUNDS,
     PERIOD_WORDS,
     STEP_NUMBER,
     STEP_WORD,
     SWAP,
+    TOUCH,
     VERB,
 )
 
@@ -27,6 +31,12 @@ _RULE_LABEL = (
 # an intensifier before a word of necessity adds no meaning ("it is very important that ...")
 _INTENSIFIER = r"(?:(?:very|really|extremely|absolutely|vitally|critically|most|quite)\s+)?"
 
+# a region said to be free, and a goal on it after a comma ("region g is free, put the yellow block there")
+_FREED = (
+    rf"(?:region\s+)?(?P<r>[e-j])\s+(?:is|has\s+been|becomes|gets)\s+(?:{EMPTY}|vacated|available|freed(?:\s+up)?)"
+    r"\s*,\s*(?P<goal>[^,;]*?)\s+(?:there|on\s+it|in\s+it|to\s+it)\b"
+)
+
 # Rewrites applied to the lower-cased sentence before any phrase is read: each maps a variant onto the
 # form the patterns read and changes no meaning ("prior to" -> "before", "whilst" -> "while").
 REWRITES: tuple[tuple[str, str], ...] = (
@@ -39,6 +49,24 @@ REWRITES: tuple[tuple[str, str], ...] = (
     # all the goals only where more than one goal comes before it)
     (r"\bfirst\b([^,.;:]*),\s*(?:and\s+)?(?:finally|lastly)\b", r"first\1, and then"),
     (r"\bwhilst\b", "while"),
+    # "once region G is free, put the yellow block back there": the world lets a block down only on a free
+    # region, so waiting for the goal's own region to be free is what any plan does ("if" stays: a condition)
+    (
+        rf"\b(?P<done>(?:once|when|after)\s+(?:everything|all\s+(?:of\s+)?(?:this|that|these|it)|this|that|it)\s+"
+        rf"(?:is|are|has\s+been|have\s+been)\s+{DONE_STATE})\s+and\s+{_FREED}",
+        r"\g<done>, \g<goal> on region \g<r>",
+    ),
+    (rf"\b(?:once|when|as\s+soon\s+as)\s+{_FREED}", r"\g<goal> on region \g<r>"),
+    # "only touch the blue block once the red one has been touched": a touch rule said as a permission
+    (
+        rf"\bonly\s+({TOUCH})\s+([^,;]+?)\s+(?:once|after|when)\s+(?=(?:the\s+)?(?:red|blue|yellow)\b)",
+        r"do not \1 \2 until ",
+    ),
+    # "never put one anywhere else": "one" after a negated placing verb is any block, not a count of one
+    (
+        rf"\b({NEG})\s+({VERB}|set|leave|drop)\s+one\b(?=\s+(?:anywhere|elsewhere|outside|on|onto|in|into|down)\b)",
+        r"\1 \2 any block",
+    ),
     # before "it" is read as a block: "while you're at it" is the period of the goals
     (r"\bwhile\s+(?:you|we)\s+are\s+at\s+it\b", "meanwhile"),
     (r"\bamongst\b", "among"),

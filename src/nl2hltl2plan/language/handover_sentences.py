@@ -44,16 +44,24 @@ def _slashes_read(text: str) -> str:
     return text
 
 
+# a step numbered in Roman numerals ("Step II: ..."), before a colon, a bracket or a dash: its number, never
+# a region's letter ("Step I:" is step 1)
+_ROMAN = {"i": 1, "ii": 2, "iii": 3, "iv": 4, "v": 5}
+_ROMAN_STEP = re.compile(r"(?i)\b(?P<word>step|stage|phase|part)\s+(?P<number>iv|v|i{1,3})\b(?=\s*[:)\-–—])")
+
+
 def _pictograph(c: str) -> bool:
     return ord(c) > 0x7F and unicodedata.category(c) in ("So", "Sk")  # not "^" or "`" (ASCII, class Sk)
 
 
 def split_sentences(instruction: str) -> list[str]:
     """Split at line breaks (a list of steps or bullets), '.', ';', '!' and '?', but not in 'i.e.' nor after a
-    step's number ('1. Put ...', also after a colon); a bullet ('-', '*', '•') starting a line or sentence is
-    dropped. A heading ending in a colon is joined to the line below it, and a record of labelled fields,
-    on lines or in sentences and in either order ('Blocks: ...' and 'Targets: ...'), is read as one goal."""
+    step's number ('1. Put ...', also after a colon; 'Step II:' is 'Step 2:'); a bullet ('-', '*', '•')
+    starting a line or sentence is dropped. A heading ending in a colon is joined to the line below it,
+    and a record of labelled fields, on lines or in sentences and in either order ('Blocks: ...' and
+    'Targets: ...'), is read as one goal."""
     out: list[str] = []
+    instruction = _ROMAN_STEP.sub(lambda m: f"{m['word']} {_ROMAN[m['number'].lower()]}", instruction)
     instruction = nested_read(transcript_read(prohibitions_read(instruction)))
     instruction = places_then_count_read(verb_heading_read(block_bullets_read(instruction)))
     instruction = until_all_there_read(instruction)
@@ -103,9 +111,11 @@ def _without_announcement(sentences: list[str]) -> list[str]:
 
 def _unquoted(instruction: str) -> str:
     """The instruction without the quotation marks around a command quoted whole ('The note says: "Put
-    ..."'): double quotes anywhere; a single quote that opens the instruction or follows a colon, and then
-    one that closes a word ("blocks' places": the possessive's mark, which the reader drops anyway)."""
+    ..."'): double quotes anywhere; single quotes around one letter (a region's or an arm's name: "region
+    'I'"); a single quote that opens the instruction or follows a colon, and then one that closes a word
+    ("blocks' places": the possessive's mark, which the reader drops anyway)."""
     text = re.sub(r"[\"“”]", "", instruction)
+    text = re.sub(r"(?<!\w)['‘]([A-Za-z])['’](?!\w)", r"\1", text)
     if re.search(r"(?:^|:)\s*['‘]", text):
         text = re.sub(r"((?:^|:)\s*)['‘](?=\w)", r"\1", text)
         text = re.sub(r"(?<=[\w.!?])['’](?=[.!?,;]?(?:\s|$))", "", text)
