@@ -79,6 +79,7 @@ def normalise(sentence: str) -> str:
     text = re.sub(r"\barms\s+a\s*,\s*b\s*,\s*c\s*,?\s*and\s+d\b", "the arms", text)
     text = _DASH.sub(lambda dash: _dash_as_comma(text, dash), text)
     text = _NOUN_FIRST.sub(_colour_first, text)
+    text = re.sub(r"\b([123])(?:st|nd|rd)\b", lambda n: ("first", "second", "third")[int(n[1]) - 1], text)
     text = read_asides(text)
     text = re.sub(r"([,()/:])", r" \1 ", text)
     text = re.sub(r"\b(\w+)'s\b", r"\1 s", text)  # red's -> red s (a possessive)
@@ -96,7 +97,7 @@ _DASH = re.compile(r"\s*[—–]\s*|\s+-+\s+")
 # before the dictation's clause breaks (`handover_spoken`), which take "the yellow block red first" (a colour
 # word before the noun) as two phrases
 _NOUN_FIRST = re.compile(
-    rf"(?P<before>\b[a-z]+\s+|^\s*)(?P<noun>block|cube|pillar|object)\s+(?P<colour>{COLOUR})\b"
+    rf"(?P<before>\b[a-z]+\s+|^\s*|[,;:(]\s*)(?P<noun>block|cube|pillar|object)\s+(?P<colour>{COLOUR})\b"
     rf"(?!\s+{NOUN}s?\b)"
 )
 _NOT_NOUN_FIRST = frozenset({"red", "blue", "yellow", "one", "each", "every", "any", "another", "that"})
@@ -106,7 +107,7 @@ def _colour_first(found: re.Match[str]) -> str:
     before = found["before"]
     if before.strip() in _NOT_NOUN_FIRST:
         return found[0]
-    article = "" if before.strip() in ("the", "a") else "the "
+    article = "" if before.strip() in ("the", "a") else " the " if before.strip() in ",;:(" else "the "
     return f"{before}{article}{found['colour']} {found['noun']}"
 
 

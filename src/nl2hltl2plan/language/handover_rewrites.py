@@ -78,6 +78,13 @@ REWRITES: tuple[tuple[str, str], ...] = (
         "at any time",
     ),
     (r"\bat\s+any\s+time\s+that\s+(?:works|suits)(?:\s+(?:for\s+)?you)?\b", "at any time"),
+    # "when you get a chance", "whenever you have a moment": the time is the writer's to leave free
+    (
+        r"\b(?:when|whenever)\s+(?:you|they|the\s+arms)\s+(?:get|have|find)\s+(?:a|the)\s+(?:chance|moment|minute)\b",
+        "at any time",
+    ),
+    # "you two," "you both,": the arms addressed at a clause's start, set off by a comma
+    (r"(^|,)\s*you\s+(?:two|both|all|guys|lot)\s*,", r"\1 "),
     (
         r"\b(?:sequentially|in\s+sequence|successively|in\s+succession|consecutively|one\s+after\s+the\s+other)\b",
         "one after another",
