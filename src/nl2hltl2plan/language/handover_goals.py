@@ -426,3 +426,19 @@ def lead(clauses: list[Clause], block: str) -> None:
     raise HTTError(
         f"'the {block.lower()} block first': first among which blocks? (say 'before the ... block')"
     )
+
+
+def lead_later(clauses: list[Clause], block: str) -> None:
+    """'The red block should be placed first. Exchange the red and blue blocks. ...': a block said first
+    before any goal of it goes before the other blocks of the one later clause that moves it with others,
+    where every other clause is free of order ("at any time"); otherwise first among which blocks is not
+    said, and it is refused."""
+    moved_with = [c for c in clauses if len(c.goals) > 1 and block in [g.block for g in c.goals]]
+    others = [c for c in clauses if c not in moved_with and not c.anytime]
+    if len(moved_with) == 1 and not others and moved_with[0].leader in ("", block):
+        moved_with[0].leader = block
+        return
+    raise HTTError(
+        f"'the {block.lower()} block first': first among which blocks? (say 'before the ... block')"
+    )
+

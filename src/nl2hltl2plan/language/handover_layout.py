@@ -289,7 +289,7 @@ _GOAL_BULLET = re.compile(
 def verb_heading_read(text: str) -> str:
     """Bullets of blocks and places under a heading that says only the verb, said with the verb (see
     `_VERB_HEADING`); a heading over one bullet, or over bullets that are not all blocks with a place, is
-    left to the colon's joining (`handover_reading._sentences`)."""
+    left to the colon's joining (`handover_sentences.split_sentences`)."""
     if ":" not in text:  # no heading
         return text
     lines = text.splitlines()

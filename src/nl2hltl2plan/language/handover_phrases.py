@@ -1,7 +1,7 @@
 """Phrases of the four-arm handover instructions (paper Table III), read against the world's layout.
 
 A sentence is read in passes. It is normalised first (lower case, typos mended, the variants of
-`handover_words.REWRITES` rewritten onto the forms read). Noun phrases then become placeholders:
+`handover_rewrites.REWRITES` rewritten onto the forms read). Noun phrases then become placeholders:
 blocks (`B0`: "the three pillars", "red and blue blocks", "each object"), places (`P0`: "region H, I
 and J", "the opposite side", "any empty region", "the side of arm a and arm b", "where the red block
 is", "the area other than the target region") and arms (`A`: "the robot arm", "any of the arms").
@@ -35,6 +35,7 @@ from nl2hltl2plan.language.handover_places import (
 )
 from nl2hltl2plan.language.handover_regex import apply, rewrite_table
 from nl2hltl2plan.language.handover_registers import REGISTERS
+from nl2hltl2plan.language.handover_rewrites import REWRITES
 from nl2hltl2plan.language.handover_scene import (
     COLOUR,
     COUNTS,
@@ -53,7 +54,6 @@ from nl2hltl2plan.language.handover_words import (
     GERUND,
     MODAL,
     NEG,
-    REWRITES,
     STEP_NUMBER,
     SWAP,
     VERB,
@@ -78,6 +78,8 @@ def normalise(sentence: str) -> str:
     text = re.sub(r"\b(?:all|the)\s+(?:four|4)\s+(?:of\s+the\s+)?(?=(?:robot\s+)?arms\b)", "the ", text)
     text = re.sub(r"\barms\s+a\s*,\s*b\s*,\s*c\s*,?\s*and\s+d\b", "the arms", text)
     text = _DASH.sub(lambda dash: _dash_as_comma(text, dash), text)
+    text = _NOUN_FIRST.sub(_colour_first, text)
+    text = re.sub(r"\b([123])(?:st|nd|rd)\b", lambda n: ("first", "second", "third")[int(n[1]) - 1], text)
     text = read_asides(text)
     text = re.sub(r"([,()/:])", r" \1 ", text)
     text = re.sub(r"\b(\w+)'s\b", r"\1 s", text)  # red's -> red s (a possessive)
@@ -89,6 +91,24 @@ def normalise(sentence: str) -> str:
 
 
 _DASH = re.compile(r"\s*[—–]\s*|\s+-+\s+")
+
+
+# the noun before its colour, as a label names it ("block red is to be placed before block blue"); read
+# before the dictation's clause breaks (`handover_spoken`), which take "the yellow block red first" (a colour
+# word before the noun) as two phrases
+_NOUN_FIRST = re.compile(
+    rf"(?P<before>\b[a-z]+\s+|^\s*|[,;:(]\s*)(?P<noun>block|cube|pillar|object)\s+(?P<colour>{COLOUR})\b"
+    rf"(?!\s+{NOUN}s?\b)"
+)
+_NOT_NOUN_FIRST = frozenset({"red", "blue", "yellow", "one", "each", "every", "any", "another", "that"})
+
+
+def _colour_first(found: re.Match[str]) -> str:
+    before = found["before"]
+    if before.strip() in _NOT_NOUN_FIRST:
+        return found[0]
+    article = "" if before.strip() in ("the", "a") else " the " if before.strip() in ",;:(" else "the "
+    return f"{before}{article}{found['colour']} {found['noun']}"
 
 
 def _dash_as_comma(text: str, dash: re.Match[str]) -> str:

@@ -119,6 +119,15 @@ def mark_places(m: Marked, scene: Scene, named_before: tuple[str, ...]) -> None:
         rf"(?:{these}|them|the\s+ones\s+(?:named|above))\b",
         other_than_these,
     )
+
+    def outside_these(match: re.Match[str]) -> str:  # "outside those (target) regions": the others
+        complement = other_than_these(match)
+        return complement if complement == match.group(0) else " on " + complement
+
+    these_targets = (
+        rf"(?:these|those)(?:\s+(?P<count>two|three|four|\d))?(?:\s+{TARGET})?(?:\s+{PLACE_NOUN})?"
+    )
+    m.sub(rf"\boutside\s+(?:of\s+)?(?:{these_targets}|them|it)\b", outside_these)
     m.sub(
         rf"\b(?:those|these|the\s+same|said)\s+{PLACE_NOUN}\b",
         lambda match: _new_place(m, m.places[-1]) if m.places else match.group(0),

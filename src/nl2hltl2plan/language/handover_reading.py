@@ -8,8 +8,9 @@ label, reported speech: `language.handover_discourse`) is dropped; each sentence
 phrases are resolved against the instance's layout (`language.handover_phrases`, word tables in
 `handover_words`), and its statements that are not commands (scene, target, need, question) are read
 and checked (`language.handover_clauses`); its orders, touch guards and prohibitions are read first
-(`language.handover_rules`), then its goal clauses (`language.handover_goals`); this module builds the
-task tree and the spec. The rules, each general:
+(`language.handover_rules`), then its goal clauses (`language.handover_goals`); this module gathers them
+across sentences and checks them, `handover_sentences` splits the instruction into its sentences, and
+`handover_tree` builds the task tree and the spec. The rules, each general:
 
 - a goal clause "VERB BLOCKS [back] to PLACE" gives one leaf per block: `F(at(B,R1) | at(B,R2) ...)`
   (the opposite side: per block; any empty region: `away(B)`; where another block starts: `@B`);
@@ -41,8 +42,6 @@ instruction is read once more (`_restated`).
 from __future__ import annotations
 
 import re
-import unicodedata
-from dataclasses import dataclass, field
 
 import networkx as nx
 
@@ -51,18 +50,13 @@ from nl2hltl2plan.language.handover_answers import answered, fragments_joined, t
 from nl2hltl2plan.language.handover_closing import check_closing, closing_said
 from nl2hltl2plan.language.handover_cues import restate
 from nl2hltl2plan.language.handover_discourse import plain
-from nl2hltl2plan.language.handover_goals import Clause, Goal, crossed_exchanges, goal_clauses, lead
-from nl2hltl2plan.language.handover_layout import (
-    HEADED,
-    REORDERED,
-    block_bullets_read,
-    later_read,
-    nested_read,
-    places_then_count_read,
-    prohibitions_read,
-    transcript_read,
-    until_all_there_read,
-    verb_heading_read,
+from nl2hltl2plan.language.handover_goals import (
+    Clause,
+    Goal,
+    crossed_exchanges,
+    goal_clauses,
+    lead,
+    lead_later,
 )
 from nl2hltl2plan.language.handover_phrases import drop_but, mark
 from nl2hltl2plan.language.handover_rules import (
@@ -73,30 +67,12 @@ from nl2hltl2plan.language.handover_rules import (
     read_touch_guards,
 )
 from nl2hltl2plan.language.handover_scene import FILLER, Marked, Place, Scene
+from nl2hltl2plan.language.handover_sentences import split_sentences
 from nl2hltl2plan.language.handover_steps import flat_steps, refuse_unordered, scattered_joint
-from nl2hltl2plan.language.handover_words import MOD
+from nl2hltl2plan.language.handover_tree import build_tree, joint_item, language_result, order_goals
 from nl2hltl2plan.language.headings import answered as labelled_answers
-from nl2hltl2plan.language.htt import HTT, HTTNode
 from nl2hltl2plan.language.result import LanguageResult
-from nl2hltl2plan.language.spec_builder import build_spec
-from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter, transitive_reduction
 from nl2hltl2plan.worlds.world import World
-
-
-@dataclass
-class Item:
-    """A node of the task tree being built: a goal leaf, a joint ('at once') leaf, or a group."""
-
-    text: str
-    goal: Goal | None = None
-    joint: list[Goal] | None = None
-    children: list[Item] = field(default_factory=list)
-    before: list[tuple[int, int]] = field(default_factory=list)
-
-    def goals(self) -> list[Goal]:
-        if self.goal is not None:
-            return [self.goal]
-        return [g for c in self.children for g in c.goals()]
 
 
 def translate_handover(instruction: str, world: World) -> LanguageResult:
@@ -122,7 +98,7 @@ def _restated(instruction: str, world: World) -> LanguageResult | None:
     scene = Scene.of(world)
     said: list[str] = []
     previous: Marked | None = None
-    said_alone = timing_joined(fragments_joined(plain(_sentences(answered(instruction)))))
+    said_alone = timing_joined(fragments_joined(plain(split_sentences(answered(instruction)))))
     sentences = _slashes_split(said_alone, world)
     try:
         for sentence in sentences:
@@ -170,8 +146,10 @@ def _read_forms(instruction: str, world: World) -> LanguageResult:
     touches: list[tuple[str, str]] = []
     notes: list[str] = []
     pending: list[Prohibition] = []  # prohibitions stated before any goal
+    said_first: list[str] = []  # blocks said to go first before any goal of theirs
     previous: Marked | None = None  # the sentence before ("it", "these regions" in the next one)
-    steps, closing = closing_said(timing_joined(fragments_joined(plain(_sentences(answered(instruction))))))
+    said = timing_joined(fragments_joined(plain(split_sentences(answered(instruction)))))
+    steps, closing = closing_said(said)
     instruction = " ".join(instruction.split())
     for sentence in steps:
         m = mark(sentence, scene, previous)
@@ -196,8 +174,13 @@ def _read_forms(instruction: str, world: World) -> LanguageResult:
                 pending.append((blocks, place, explicit, text))
         clauses = crossed_exchanges(clauses + new, orders)
         for block in leaders:
-            lead(clauses, block)
+            if any(g.block == block for c in clauses for g in c.goals):
+                lead(clauses, block)
+            else:  # said before any goal of it: among the blocks of a later clause
+                said_first.append(block)
     clauses = _distributed(clauses, notes)
+    for block in said_first:
+        lead_later(clauses, block)
     orders += [(c.leader, g.block) for c in clauses if c.leader for g in c.goals if g.block != c.leader]
     if not clauses:
         raise HTTError(f"no goal for a block in {instruction!r} (say where each block goes)")
@@ -212,131 +195,14 @@ def _read_forms(instruction: str, world: World) -> LanguageResult:
         _first_goal(goals, x).touch_guard.append(y)
     _refuse_cyclic(orders)
     _refuse_misplaced_markers(clauses)
-    root = _tree(clauses)
+    root = build_tree(clauses)
     if joint := scattered_joint(clauses, scene.blocks):
-        root.children, root.before = flat_steps([*root.children, _joint(joint)], root.before)
+        root.children, root.before = flat_steps([*root.children, joint_item(joint)], root.before)
     for x, y in orders:
-        _order(root, _first_goal(goals, x), _first_goal(goals, y))
+        order_goals(root, _first_goal(goals, x), _first_goal(goals, y))
     refuse_unordered(root, [g for c in clauses if c.anytime for g in c.goals])
-    return _result(world.name, instruction, root, goals, notes)
+    return language_result(world.name, instruction, root, goals, notes)
 
-
-def _without_emoji_and_tags(text: str) -> str:
-    """A pictograph (an emoji, a symbol of Unicode's 'other symbol' class, with its joiners and variation
-    selectors) ends a sentence as a full stop does ("Move the blocks 🙂 Red first"); a hashtag ("#robots")
-    is the message's label and carries no task (a number after '#', "#3", stays)."""
-    text = re.sub(r"(?<![\w#])#[A-Za-z]\w*", " ", text)
-    if not any(_pictograph(c) for c in text):
-        return text
-    out = "".join(". " if _pictograph(c) else "" if c in "\u200d\ufe0f" else c for c in text)
-    return re.sub(r"(?:\.\s*){2,}", ". ", out)  # a run of pictographs is one break
-
-
-def _slashes_read(text: str) -> str:
-    """Letters joined by slashes list regions or arms ("H/I/J" is "H, I and J", "arms a/b" "arms a and b");
-    a count after its noun is the noun's count ("blocks (x3)" is "3 blocks"). (A slash between clauses is read
-    by the fallback: `_slashes_split`.)"""
-    letters = r"\b[A-Ja-j](?:\s*/\s*[A-Ja-j]\b)+"
-    text = re.sub(letters, lambda m: _listed(re.sub(r"\s*/\s*", ", ", m[0])), text)
-    text = re.sub(r"\b(blocks|pillars|objects|cubes|items)\s*\(?\s*[x×]\s*(\d)\b\s*\)?", r"\2 \1", text)
-    return text
-
-
-def _pictograph(c: str) -> bool:
-    return ord(c) > 0x7F and unicodedata.category(c) in ("So", "Sk")  # not "^" or "`" (ASCII, class Sk)
-
-
-def _sentences(instruction: str) -> list[str]:
-    """Split at line breaks (a list of steps or bullets), '.', ';', '!' and '?', but not in 'i.e.' nor after a
-    step's number ('1. Put ...', also after a colon); a bullet ('-', '*', '•') starting a line or sentence is
-    dropped. A heading ending in a colon is joined to the line below it, and a record of labelled fields,
-    on lines or in sentences and in either order ('Blocks: ...' and 'Targets: ...'), is read as one goal."""
-    out: list[str] = []
-    instruction = nested_read(transcript_read(prohibitions_read(instruction)))
-    instruction = places_then_count_read(verb_heading_read(block_bullets_read(instruction)))
-    instruction = until_all_there_read(instruction)
-    # a record of labelled fields, on lines or in sentences, in either order: "Blocks: red, blue, yellow"
-    # then "Targets: H, I, J" (or "Regions: G, H and I. Objects: all three.") is one goal
-    for record in _RECORDS:
-        instruction = record.sub(_record_as_goal, instruction)
-    # a heading that ends in a colon goes on in the bullet below it: "Place the blocks on:\n- G, H and I"
-    # (after a preposition the colon only ends the line)
-    bullet = r"[ \t]*\n\s*(?:[-*•·]|\d[.)])\s+"
-    instruction = re.sub(rf"(?m)\b(on|onto|in|into|to|at)\s*:{bullet}", r"\1 ", instruction)
-    instruction = re.sub(rf"(?m):{bullet}", ": ", instruction)
-    instruction = re.sub(r"(?m):[ \t]*\n\s*(?=\S)", ": ", instruction)  # a heading on a line of its own
-    instruction = _unquoted(re.sub(r"\*\*|__", "", instruction))  # markdown's bold: "**Goal:** ..."
-    for line in instruction.splitlines():
-        text = re.sub(r"(^\s*|[.;!?:]\s+)(\d)\.\s", r"\1\2) ", line)
-        text = re.sub(r"\b[iI]\.\s?[eE]\.", "that is", text)
-        text = re.sub(r"\b[nN]\.\s?[bB]\.?\s*:?", "NB:", text)  # "N.B. red goes first": a note's label
-        text = re.sub(r"\b(?:[pP]\.\s?)+[sS]\.\s*:?", "PS:", text)  # "P.S. red goes first": a postscript
-        text = re.sub(r"\b(opp|approx|resp)\.(?=\s)", r"\1", text, flags=re.IGNORECASE)  # "opp. side"
-        # an open checklist box is a bullet (a ticked one says what is done, and is left unread)
-        text = re.sub(r"^\s*(?:\[\s*\]|☐)\s*", "- ", text)
-        text = _slashes_read(_without_emoji_and_tags(text))
-        for pattern, replacement in (*REORDERED, *HEADED):
-            text = pattern.sub(replacement, text)
-        out += [re.sub(r"^\s*[-*•·]\s+", "", s) for s in re.split(r"[.;!?]+(?:\s|$)", text)]
-    return later_read(_without_announcement([s for s in out if s.strip()]))
-
-
-# "There are a few things to keep in mind." before the things: it names no block, place or order; a
-# number of things must be the number of sentences after it (else it stays, to be refused by name)
-_ANNOUNCED = re.compile(
-    r"^\s*there\s+(?:are|is)\s+(a\s+few|a\s+couple\s+of|some|several|two|three|four)\s+"
-    r"(?:things|points|rules|requirements|conditions)(?:\s+here|\s+to\s+(?:keep|bear)\s+in\s+mind|\s+to\s+"
-    r"(?:remember|note))?\s*:?\s*$",
-    re.IGNORECASE,
-)
-_NUMBERS = {"two": 2, "three": 3, "four": 4}
-
-
-def _without_announcement(sentences: list[str]) -> list[str]:
-    said = _ANNOUNCED.match(sentences[0]) if sentences else None
-    if said is None or _NUMBERS.get(said[1].lower(), len(sentences) - 1) != len(sentences) - 1:
-        return sentences
-    return sentences[1:]
-
-
-def _unquoted(instruction: str) -> str:
-    """The instruction without the quotation marks around a command quoted whole ('The note says: "Put
-    ..."'): double quotes anywhere; a single quote that opens the instruction or follows a colon, and then
-    one that closes a word ("blocks' places": the possessive's mark, which the reader drops anyway)."""
-    text = re.sub(r"[\"“”]", "", instruction)
-    if re.search(r"(?:^|:)\s*['‘]", text):
-        text = re.sub(r"((?:^|:)\s*)['‘](?=\w)", r"\1", text)
-        text = re.sub(r"(?<=[\w.!?])['’](?=[.!?,;]?(?:\s|$))", "", text)
-    return text
-
-
-_BLOCKS_FIELD = (
-    r"\s*(?:[-*•·]\s+)?(?:blocks?|objects?|pillars?|items?|pieces?|cubes?|what|move|place|put|transfer|carry|bring)"
-    r"\s*:\s*(?P<blocks>[^\n:.;]+?)\s*"
-)
-_PLACES_FIELD = (
-    r"\s*(?:[-*•·]\s+)?(?:targets?|destinations?|(?:goal|target|placement)\s+(?:regions?|areas?)|target\s+area|"
-    r"where(?:\s+to)?|regions?|places?|to|onto|into)\s*:\s*(?P<places>[^\n:.;]+?)\s*"
-)
-_FIELD_BREAK = r"(?:[.;]?[ \t]*\n|[.;][ \t]+)"  # a line break or a sentence's end between two fields
-_FIELD_END = r"(?=[.;!?]?[ \t]*(?:\n|$)|[.;!?][ \t])"
-_RECORDS = tuple(
-    re.compile(rf"(?im)(?P<start>^|[.;!?][ \t]+){first}{_FIELD_BREAK}{second}{_FIELD_END}")
-    for first, second in ((_BLOCKS_FIELD, _PLACES_FIELD), (_PLACES_FIELD, _BLOCKS_FIELD))
-)
-
-
-def _record_as_goal(fields: re.Match[str]) -> str:
-    """The record's goal; a modifier of the blocks' field is said after the places ("place: three blocks,
-    one after another" and "to: region I": "three blocks to region I, one after another")."""
-    blocks = fields["blocks"]
-    mods = found[0] if (found := re.search(rf"(?:\s*,\s*{MOD})+$", blocks)) else ""
-    return f"{fields['start']}{_listed(blocks[: len(blocks) - len(mods)])} to {fields['places']}{mods}"
-
-
-def _listed(items: str) -> str:
-    """'red, blue, yellow' -> 'red, blue and yellow' (a record's list: its last comma is its 'and')."""
-    return items if re.search(r"\band\b", items) else re.sub(r",\s*([^,]+)$", r" and \1", items)
 
 
 def _without_restated(clauses: list[Clause]) -> list[Clause]:
@@ -457,143 +323,3 @@ def _first_goal(goals: list[Goal], block: str) -> Goal:
     if len(mine) > 1:
         raise HTTError(f"the {block.lower()} block has {len(mine)} goals: which one is ordered?")
     return mine[0]
-
-
-# ----- the task tree ----------------------------------------------------------------------------------
-def _items(c: Clause) -> list[Item]:
-    items = [Item(f"{g.block.lower()} block to {g.where()}", goal=g) for g in c.goals]
-    return items + ([_joint(c.goals)] if c.together else [])
-
-
-def _joint(goals: list[Goal]) -> Item:
-    said = ", ".join(f"{g.block.lower()} on {g.where()}" for g in goals)
-    return Item(f"at once: {said}", joint=list(goals))
-
-
-def _unit(c: Clause) -> Item:
-    items = _items(c)
-    return items[0] if len(items) == 1 else Item(c.text, children=items)
-
-
-def _tree(clauses: list[Clause]) -> Item:
-    root = Item("")
-    chain: Item | None = None
-    prev: Clause | None = None
-    closed = False  # the last step was ordered after all before it
-    for c in clauses:
-        if c.marker == "then" and prev is not None:
-            if chain is None:
-                n_prev = len(_items(prev))
-                root.children = root.children[:-n_prev]
-                chain = Item(prev.text, children=[_unit(prev)])
-                root.children.append(chain)
-            chain.children.append(_unit(c))
-            chain.before.append((len(chain.children) - 2, len(chain.children) - 1))
-            chain.text += "; " + c.text
-        elif c.marker == "after_all" and root.children:
-            if any(d.anytime for d in clauses[: clauses.index(c)]):  # "after all of these" would order them
-                raise HTTError("'after all of these' ('once that is done') orders goals said 'at any time'")
-            old = root.children[0] if len(root.children) == 1 else root
-            root = Item("", children=[old])
-            root.children += _items(c)
-            root.before += [(0, k) for k in range(1, len(root.children))]
-            chain = None
-            closed = True
-        else:
-            if closed:  # a goal said after the steps that "after all of these" ordered: beside them, as one
-                root = Item("", children=[root])
-                closed = False
-            root.children += _items(c)
-            chain = None
-        prev = c
-    return root
-
-
-def _order(root: Item, a: Goal, b: Goal) -> None:
-    def visit(item: Item) -> bool:
-        kids = [c.goal for c in item.children]
-        if a in kids and b in kids:
-            item.before.append((kids.index(a), kids.index(b)))
-            return True
-        return any(visit(c) for c in item.children)
-
-    if not visit(root):
-        raise HTTError(f"cannot order {a.text!r} before {b.text!r}: they belong to different steps")
-
-
-def _result(scene: str, instruction: str, root: Item, goals: list[Goal], notes: list[str]) -> LanguageResult:
-    if len(root.children) == 1:
-        root = root.children[0]
-    nodes: list[HTTNode] = []
-    relations: list[tuple[str, str]] = []
-    leaf_specs: dict[str, str] = {}
-    goal_leaf: dict[int, str] = {}  # id(goal) -> its HTT leaf
-
-    def add(item: Item, node_id: str, text: str) -> None:
-        if not item.children:
-            nodes.append(HTTNode(id=node_id, text=text))
-            if item.goal is not None:
-                goal_leaf[id(item.goal)] = node_id
-                leaf_specs[node_id] = item.goal.leaf()
-            else:
-                leaf_specs[node_id] = "F(" + " & ".join(g.state() for g in item.joint or []) + ")"
-            return
-        kids = [f"{node_id}.{k}" for k in range(1, len(item.children) + 1)]
-        nodes.append(HTTNode(id=node_id, text=text, children=kids))
-        relations.extend((kids[i], kids[j]) for i, j in item.before)
-        for kid, child in zip(kids, item.children, strict=True):
-            add(child, kid, child.text)
-
-    add(root, "1", instruction)
-    htt = HTT(instruction=instruction, nodes=nodes, relations=relations)
-    letter = {id(g): task_letter(k) for k, g in enumerate(goals)}
-    tasks = [
-        BaseTaskSpec(
-            id=letter[id(g)],
-            text=g.text,
-            kind="place",
-            object=[f"{g.block}Block"],
-            receptacle=[f"Region{r}" for r in g.regions] or [g.where()],
-        )
-        for g in goals
-    ]
-    task_node = {letter[id(g)]: goal_leaf[id(g)] for g in goals}
-    return LanguageResult(
-        backend="offline",
-        instruction=instruction,
-        scene=scene,
-        htt=htt,
-        tasks=tasks,
-        before=transitive_reduction(_task_pairs(root, letter), [t.id for t in tasks]),
-        task_node=task_node,
-        leaf_task={v: k for k, v in task_node.items()},
-        leaf_specs=dict(leaf_specs),
-        spec=build_spec(htt, action_completion=lambda node: leaf_specs[node.id]),
-        constraints=_constraints(root, goals, notes),
-    )
-
-
-def _task_pairs(item: Item, letter: dict[int, str]) -> set[tuple[str, str]]:
-    """Base-task precedence: every goal under an earlier sibling before every goal under a later one."""
-    out = {
-        (letter[id(a)], letter[id(b)])
-        for i, j in item.before
-        for a in item.children[i].goals()
-        for b in item.children[j].goals()
-    }
-    return out.union(*(_task_pairs(c, letter) for c in item.children))
-
-
-def _constraints(root: Item, goals: list[Goal], notes: list[str]) -> list[str]:
-    """The guards and joint goals as text, sorted (the canonical order of `plan --json`)."""
-    out = set(notes) | set(_joint_texts(root))
-    for g in goals:
-        out.update(f"{g.block.lower()} is not picked up before {y.lower()} is" for y in g.touch_guard)
-        if g.drop_guard:
-            out.add(f"until {g.block.lower()} is on {g.where()}: none of {', '.join(sorted(g.drop_guard))}")
-    return sorted(out)
-
-
-def _joint_texts(item: Item) -> list[str]:
-    own = [item.text] if item.joint else []
-    return own + [t for c in item.children for t in _joint_texts(c)]  # `_constraints` sorts them

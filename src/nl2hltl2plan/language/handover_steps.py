@@ -25,7 +25,7 @@ from nl2hltl2plan.language.handover_goals import Clause, Goal
 
 
 class Node(Protocol):
-    """A node of the task tree (`handover_reading.Item`)."""
+    """A node of the task tree (`handover_tree.Item`)."""
 
     goal: Goal | None
     before: list[tuple[int, int]]
