@@ -138,6 +138,24 @@ def test_a_cyclic_order_is_named_before_a_state_request_error():
         translate(text + ", and slice all the apples", load_world("FloorPlan1"), build=False)
 
 
+@needs_data
+def test_a_count_above_two_is_read_up_to_what_the_room_holds():
+    """Found by the lead (session 22): "put the three watches in the box" was refused as more than two of
+    a kind while "all the watches" read the same three; a count is held to the scene's, nothing else."""
+    from nl2hltl2plan.language.translate import translate
+    from nl2hltl2plan.worlds import load_world
+
+    living = load_world("FloorPlan207")  # 3 watches, 3 credit cards
+    read = [("put the three watches in the box", "Watch"), ("put 3 credit cards on the sofa", "CreditCard")]
+    for text, kind in read:
+        (got,) = translate(text, living, build=False, actions="none").tasks
+        assert (got.kind, got.object, got.count) == ("place_two", [kind], 3)
+    with pytest.raises(HTTError, match="holds only 3"):
+        translate("put four watches in the box", living, build=False, actions="none")
+    with pytest.raises(HTTError, match="more objects of one kind than any scene holds"):
+        translate("put 100 watches in the box", living, build=False, actions="none")
+
+
 def test_plan_refuses_partial_instructions_unless_asked(capsys):
     text = "Put the plates in the lower rack and then make some tea"
     with pytest.raises(HTTError, match="'make' .action.: no base task does this"):

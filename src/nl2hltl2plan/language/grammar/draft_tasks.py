@@ -273,7 +273,7 @@ class TaskBuilder:
         return BaseTaskSpec(
             kind=kind,
             object=fields["object"],
-            count=min(r.count, 2) if kind == "place_two" else r.count,
+            count=r.count,
             sliced=r.sliced and _sliceable(fields["object"]),
             text=text,
             container=fields["container"],

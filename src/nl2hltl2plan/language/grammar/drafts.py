@@ -6,6 +6,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field, replace
 
+from nl2hltl2plan.domain.task_kinds import MAX_COUNT
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.clauses import Clause, expand_gapping, split_clauses
@@ -136,8 +137,8 @@ class DraftBuilder:
             ):
                 unparsed.append(c_text)
                 return True
-        if any(it.obj is not None and it.obj.count > 2 for it in fr.items):
-            unparsed.append(f"{c_text} (more than two objects of one kind in one task is not supported)")
+        if any(it.obj is not None and it.obj.count > MAX_COUNT for it in fr.items):
+            unparsed.append(f"{c_text} (more objects of one kind than any scene holds)")
             return True
         if fr.ambiguous:
             unparsed.append(f"{c_text} (a list of destinations)")

@@ -228,8 +228,9 @@ def _read_modifiers(np: NP, words: list[str]) -> None:
             np.sliced = True
         if w in G.WATER_WORDS:
             np.water = True
-        if w in G.NUMBERS and G.NUMBERS[w] > 1:
-            np.count = max(np.count, G.NUMBERS[w])
+        number = int(w) if w.isdigit() else G.NUMBERS.get(w, 0)
+        if number > 1:  # "three mugs", "3 mugs": check 1 holds the count to what the scene has
+            np.count = max(np.count, number)
     if "toast" in words:
         np.sliced = True
 
