@@ -109,8 +109,8 @@ def register(sub: Any) -> None:
         "--plurals",
         choices=["ask", "two"],
         default="two",
-        help="a plural with no number of more things than the task takes: ALFRED's pick-two (two, the "
-        "protocol: 66 of 71 such training annotations are pick-two trials, docs/language.md) or "
+        help="a plural with no number of more things than the task takes: ALFRED's pick-two (two, "
+        "default: 66 of 71 such training annotations are pick-two trials, docs/language.md) or "
         "refused (ask)",
     )
     p.add_argument("--fresh", action="store_true", help="start over instead of resuming DIR/scenarios.jsonl")
