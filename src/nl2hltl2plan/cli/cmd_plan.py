@@ -238,7 +238,7 @@ def _print_human(outcome: Any) -> None:
     for w in lang.unparsed:
         print(f"not understood: {w}", file=sys.stderr)
     for w in lang.assumptions:
-        print(f"assumption: {w}", file=sys.stderr)
+        print(f"note: assumption: {w}", file=sys.stderr)  # a reading the text left open, not an error
     for w in lang.issues + lang.warnings + lang.ltl_checks:
         print(f"warning: {w}", file=sys.stderr)
     kept = {(t.id, role): getattr(t, role) or [] for t in lang.tasks for role in SLOTS}
