@@ -128,3 +128,44 @@ def test_the_web_request_passes_the_setting_and_its_answer_says_the_assumption()
     assert out.to_json()["assumptions"] == ["'the forks': read as 2 of FloorPlan5's 3, ALFRED's pick-two"]
     with pytest.raises(ValidationError):
         PlanRequest(**body, plurals="three")
+
+
+# a wrong reading found by the held-out half, under both settings and before this branch: the lexicon
+# lists "soap bars" as a name of one SoapBar (language/lexicon.txt), so the plural reads as one bar
+KNOWN_WRONG = {"put the soap bars in the cabinet"}
+
+
+@pytest.mark.data
+@pytest.mark.parametrize("name", ["users_h126dev", "users_h126held"])
+def test_the_h126_sets_read_as_their_ground_truth_says_under_both_settings(name):
+    """h126's plural sentences over 14 floor plans: under `ask` a line marked "say how many" or "category"
+    is refused and every other line is read as its base tasks say; under `two` the "say how many" lines
+    are read as their base tasks, each with the one assumption that names its floor plan, categories are
+    still refused, and nothing else changes."""
+    import sys
+    from pathlib import Path
+
+    from nl2hltl2plan.language.scoring import match
+
+    sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "scripts"))
+    import trust_sets
+
+    for gt in trust_sets.load(name):
+        if gt.instruction in KNOWN_WRONG:
+            assert trust_sets.outcome(gt, plurals="two")[0] == "wrong"  # still wrong: the lexicon's
+            continue
+        why = " ".join(gt.issues)
+        ask, said = trust_sets.outcome(gt)
+        assert ask == ("converted" if gt.feasible else "refused"), (gt.instruction, said)
+        if why.startswith("say how many"):
+            assert "say how many" in said, said
+        if why.startswith("category"):
+            assert trust_sets.outcome(gt, plurals="two")[0] == "refused"
+            continue
+        res = translate(gt.instruction, load_world(gt.scene), build=False, actions="none", plurals="two")
+        truth = [t.model_dump() for t in gt.tasks]
+        assert not res.partial and match(res.tasks, res.before, truth, gt.before, strict=False).order_ok
+        if why.startswith("say how many"):
+            assert len(res.assumptions) == 1 and f"of {gt.scene}'s 3, ALFRED's pick-two" in res.assumptions[0]
+        else:
+            assert res.assumptions == [], res.assumptions
