@@ -2,6 +2,7 @@
 
     python scripts/language_failures.py [--sets faithful_unseen,heldout_unseen,...] [--n 400]
         [--save-rows DIR] [--rows DIR] [--show CLASS] [--long] [--outcomes FILE] [--reader grammar]
+        [--plurals ask|two]
 
 Sets with ground truth (never test50, never the excluded trials): `faithful_seen`, `faithful_unseen`,
 `trainstyle_unseen`, `heldout_unseen`, the reference-style `refsdev_seen/unseen`, `refsheld_seen/unseen`
@@ -49,7 +50,7 @@ from nl2hltl2plan.errors import Nl2Hltl2PlanError, WorldError
 from nl2hltl2plan.language.accounting import account
 from nl2hltl2plan.language.grounding import scene_types
 from nl2hltl2plan.language.learned.inference import parse_instruction
-from nl2hltl2plan.language.referents import check_referents
+from nl2hltl2plan.language.referents import Plurals, check_referents
 from nl2hltl2plan.language.result import LanguageResult
 from nl2hltl2plan.language.scoring import match
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
@@ -91,11 +92,14 @@ def rows(name: str, n: int) -> list[dict[str, Any]]:
 
 
 
-def classify(row: dict[str, Any], reader: str = "household") -> tuple[str, str, str]:
+def classify(
+    row: dict[str, Any], reader: str = "household", plurals: Plurals = "ask"
+) -> tuple[str, str, str]:
     """(class, why, the text as the reader rewrote it) of one instruction with ground truth, as `reader`
-    reads it (`READERS`); the classes judge the reading of the rewritten text, which check 1 reads."""
+    reads it (`READERS`) under the `plurals` setting; the classes judge the reading of the rewritten text,
+    which check 1 reads."""
     try:
-        tasks, before, unread, read = READERS[reader](row)
+        tasks, before, unread, read = READERS[reader](row, plurals)
     except Nl2Hltl2PlanError as exc:
         if _lacking(exc):
             return WORLD, str(exc), ""
@@ -133,22 +137,23 @@ def _judged(
 Reading = tuple[list[BaseTaskSpec], list[tuple[str, str]], list[str], str]
 
 
-def household_reading(row: dict[str, Any]) -> Reading:
+def household_reading(row: dict[str, Any], plurals: Plurals = "ask") -> Reading:
     """The shipped reading, as `plan --world SCENE` reads (`--long` alike): `translate` in the row's floor
     plan, the household reader's rewriting included (`world_readers`: greetings, colon lists, topic
     questions, descriptive names, self-corrections, "respectively", step numbers, negations), check 1
     with the floor plan's instance counts and the referents' refusals; an ambiguous word takes its top
     candidate. The reader's rewritten text is what check 1 reads, so the classes below hold for it."""
-    r = shipped(row["instruction"], world_of(row["scene"]))
+    r = shipped(row["instruction"], world_of(row["scene"]), plurals)
     return r.tasks, r.before, list(r.unparsed), r.instruction
 
 
-def shipped(text: str, world: World) -> LanguageResult:
-    """The language stage as `plan --world` runs it, up to the base tasks (no leaf actions, no spec)."""
-    return translate(text, world, "offline", ask=top_candidates, build=False, actions="none")
+def shipped(text: str, world: World, plurals: Plurals = "ask") -> LanguageResult:
+    """The language stage as `plan --world [--plurals]` runs it, up to the base tasks (no leaf actions, no
+    spec)."""
+    return translate(text, world, "offline", ask=top_candidates, build=False, actions="none", plurals=plurals)
 
 
-def grammar_reading(row: dict[str, Any]) -> Reading:
+def grammar_reading(row: dict[str, Any], plurals: Plurals = "ask") -> Reading:
     """The earlier measure (`--reader grammar`, kept to compare with its numbers): the learned parse of the
     text as written (`learned.inference.parse_instruction`, no household reader), the top candidate of
     each ambiguous word, then check 1 and the referents' refusals. The rows of the committed user-style
@@ -161,7 +166,9 @@ def grammar_reading(row: dict[str, Any]) -> Reading:
     instances = scene_instances(world) if world is not None else None
     scene = world.name if world is not None else "the scene"
     found = [str(u) for u in account(row["instruction"], p.tasks, p.before, instances, scene)]
-    check_referents(row["instruction"], p.tasks, p.before, instances, scene)  # as `translate._finish`
+    convention = world.plurals if world is not None else None
+    # as `translate._finish`
+    check_referents(row["instruction"], p.tasks, p.before, instances, scene, convention, plurals)
     return p.tasks, p.before, list(p.unparsed) + found, row["instruction"]
 
 
@@ -180,10 +187,11 @@ def report_set(
     show: str | None,
     outcomes: list[dict[str, Any]] | None = None,
     reader: str = "household",
+    plurals: Plurals = "ask",
 ) -> None:
     per: dict[Any, Counter[str]] = defaultdict(Counter)
     for k, row in enumerate(data):
-        cls, why, read = classify(row, reader)
+        cls, why, read = classify(row, reader, plurals)
         if outcomes is not None:
             said = {"instruction": row["instruction"], "read": read}
             outcomes.append({"set": name, "row": k, **said, "class": cls, "why": why})
@@ -192,7 +200,8 @@ def report_set(
         if show and cls == show:
             print(f"  {row['instruction']!r}: {why[:300]}", file=sys.stderr)
     keys = sorted(k for k in per if k != "all") + ["all"]
-    print(f"\n{name} ({len(data)} instructions, {reader} reader): outcome per number of base tasks")
+    setting = ", plurals two" if plurals == "two" else ""
+    print(f"\n{name} ({len(data)} instructions, {reader} reader{setting}): outcome per number of base tasks")
     print("| class | " + " | ".join(str(k) for k in keys) + " |")
     print("| --- |" + " --- |" * len(keys))
     for cls in CLASSES:
@@ -268,6 +277,13 @@ def main() -> int:
         default="household",
         help="household: the shipped reading (translate); grammar: the earlier measure, to compare",
     )
+    ap.add_argument(
+        "--plurals",
+        choices=["ask", "two"],
+        default="ask",
+        help="a bare plural of more than the task takes: refused (ask, `plan`'s default) or the world's "
+        "convention (two: ALFRED's pick-two, `bench alfred`'s protocol)",
+    )
     args = ap.parse_args()
     outcomes: list[dict[str, Any]] | None = [] if args.outcomes else None
     for name in [s for s in args.sets.split(",") if s]:
@@ -276,7 +292,7 @@ def main() -> int:
         if args.save_rows:
             args.save_rows.mkdir(parents=True, exist_ok=True)
             (args.save_rows / f"{name}.json").write_text(json.dumps(data))
-        report_set(name, data, args.show, outcomes, args.reader)
+        report_set(name, data, args.show, outcomes, args.reader, args.plurals)
     if args.outcomes and outcomes is not None:
         args.outcomes.write_text("".join(json.dumps(o) + "\n" for o in outcomes))
     if args.long:

@@ -1,7 +1,7 @@
 """Issue 23's own test sets: build their ground truth, and measure the language stage on them.
 
     python scripts/trust_sets.py build     # tests/language/data/trust/*.txt -> *.jsonl (benchmark format)
-    python scripts/trust_sets.py measure [--backend offline|grammar] [--sets plain,mixed]
+    python scripts/trust_sets.py measure [--backend offline|grammar] [--sets plain,mixed] [--plurals ask|two]
         # refused / partial / converted / wrong, as `plan` reads each line (a user-style set by its name)
     python scripts/trust_sets.py validation [--split valid_seen] [--n 2000] [--seed 1]  # check 1's flags
 
@@ -30,6 +30,7 @@ from functools import cache
 from pathlib import Path
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
+from nl2hltl2plan.language.referents import Plurals
 from nl2hltl2plan.language.scoring import match
 from nl2hltl2plan.language.translate import apply_choices, top_candidates, translate
 from nl2hltl2plan.worlds import load_world
@@ -140,23 +141,31 @@ def world_of(scene: str) -> World:
     return load_world(scene)
 
 
-def outcome(gt: GTInstance, backend: str = "offline") -> tuple[str, str]:
-    """(refused | partial | converted | wrong, detail) for one line, as `plan` would treat it."""
+def outcome(gt: GTInstance, backend: str = "offline", plurals: Plurals = "ask") -> tuple[str, str]:
+    """(refused | partial | converted | wrong, detail) for one line, as `plan [--plurals]` would treat it."""
+    return read_line(gt, backend, plurals)[:2]
+
+
+def read_line(
+    gt: GTInstance, backend: str = "offline", plurals: Plurals = "ask"
+) -> tuple[str, str, list[str]]:
+    """`outcome`, and the assumptions the reading stated (`--plurals two`: "'the forks': read as 2 ...")."""
     world = world_of(gt.scene)
     try:
-        res = translate(gt.instruction, world, backend, build=False, actions="none")
+        res = translate(gt.instruction, world, backend, build=False, actions="none", plurals=plurals)
     except Nl2Hltl2PlanError as exc:
-        return "refused", str(exc)
+        return "refused", str(exc), []
     if res.partial:
-        return "partial", "; ".join(res.unparsed)
+        return "partial", "; ".join(res.unparsed), res.assumptions
     res = apply_choices(res, top_candidates(res.ambiguities))
     verdict = match(res.tasks, res.before, [t.model_dump() for t in gt.tasks], gt.before, strict=False)
     truth = constraints_of(gt)
     if gt.feasible and verdict.order_ok and constraints_match(res.constraint_specs, truth, world):
-        return "converted", ""
+        return "converted", "", res.assumptions
     if gt.feasible and verdict.order_ok:
-        return "wrong", f"constraints {[c.describe() for c in res.constraint_specs]}, not {truth}"
-    return "wrong", "; ".join(verdict.reasons) or f"not refused: {gt.issues}"
+        why = f"constraints {[c.describe() for c in res.constraint_specs]}, not {truth}"
+        return "wrong", why, res.assumptions
+    return "wrong", "; ".join(verdict.reasons) or f"not refused: {gt.issues}", res.assumptions
 
 
 _CONSTRAINTS: dict[str, list[dict]] = {}  # row id -> its constraints (GTInstance ignores the field)
@@ -181,18 +190,22 @@ def load(name: str) -> list[GTInstance]:
     return [GTInstance.model_validate(r) for r in rows]
 
 
-def measure(backend: str, show: bool, names: list[str]) -> None:
-    print("| set | n | refused | partial | converted | wrong |\n| --- | --- | --- | --- | --- | --- |")
+def measure(backend: str, show: bool, names: list[str], plurals: Plurals = "ask") -> None:
+    """The table of outcomes per set; `assumed`: lines read under a stated assumption (`--plurals two`)."""
+    print("| set | n | refused | partial | converted | wrong | assumed |")
+    print("| --- | --- | --- | --- | --- | --- | --- |")
     details = []
     for name in names:
         gts = load(name)
         counts: Counter[str] = Counter()
         for gt in gts:
-            what, why = outcome(gt, backend)
+            what, why, assumed = read_line(gt, backend, plurals)
             counts[what] += 1
+            counts["assumed"] += bool(assumed)
+            said = f" [assumed: {'; '.join(assumed)}]" if assumed else ""
             if what == "wrong" or (show and what != "converted"):
-                details.append(f"{name} {what}: {gt.instruction!r}: {why}")
-        cells = " | ".join(str(counts[k]) for k in ("refused", "partial", "converted", "wrong"))
+                details.append(f"{name} {what}: {gt.instruction!r}: {why}{said}")
+        cells = " | ".join(str(counts[k]) for k in ("refused", "partial", "converted", "wrong", "assumed"))
         print(f"| {name} | {len(gts)} | {cells} |")
     print("\n".join(details), file=sys.stderr)
 
@@ -233,6 +246,7 @@ def main() -> int:
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--backend", default="offline", choices=["offline", "grammar"])
     ap.add_argument("--show", action="store_true", help="print every line that is not converted")
+    ap.add_argument("--plurals", default="ask", choices=["ask", "two"], help="as `plan --plurals`")
     ap.add_argument(
         "--sets", default="plain,mixed", help="trust sets, or user-style sets (tests/language/data/styles)"
     )
@@ -242,7 +256,7 @@ def main() -> int:
     elif args.what == "validation":
         validation(args.split, args.n, args.seed)
     else:
-        measure(args.backend, args.show, args.sets.split(","))
+        measure(args.backend, args.show, args.sets.split(","), args.plurals)
     return 0
 
 

@@ -27,6 +27,7 @@ from pydantic import BaseModel, ConfigDict, Field
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.backends import Backend
 from nl2hltl2plan.language.llm.client import LLMClient
+from nl2hltl2plan.language.referents import Plurals
 from nl2hltl2plan.language.result import Ambiguity, LanguageResult
 from nl2hltl2plan.language.suggest import not_understood
 from nl2hltl2plan.language.translate import ActionSource, Chooser, LtlSource, translate
@@ -58,6 +59,8 @@ class PipelineOptions(BaseModel):
     capabilities: list[list[str] | None] | None = None  # per robot: verbs/atoms it can do (None: all)
     choices: dict[str, str] = Field(default_factory=dict)  # a user's picks for ambiguous words (--ask)
     partial: bool = False  # plan what was understood when part of the instruction was not (--partial)
+    # "the forks" of more than a task takes: refused, or read by the world's convention (--plurals)
+    plurals: Plurals = "ask"
 
 
 class Progress(BaseModel):
@@ -115,6 +118,7 @@ def language_stage(
         strict=opt.strict,
         choices=opt.choices,
         ask=ask,
+        plurals=opt.plurals,
     )
 
 
@@ -217,6 +221,7 @@ class Outcome:
             "unparsed": lang.unparsed,
             "issues": lang.issues,
             "warnings": lang.warnings,
+            "assumptions": lang.assumptions,
             "ltl_checks": lang.ltl_checks,
             "llm_calls": lang.llm_calls,
             "idle_note": self.idle_note(),

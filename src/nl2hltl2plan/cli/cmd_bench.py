@@ -105,6 +105,14 @@ def register(sub: Any) -> None:
         default=None,
         help="with --engine ray: join a running Ray cluster HOST:PORT (default: a local Ray)",
     )
+    p.add_argument(
+        "--plurals",
+        choices=["ask", "two"],
+        default="two",
+        help="a plural with no number of more things than the task takes: ALFRED's pick-two (two, "
+        "default: 66 of 71 such training annotations are pick-two trials, docs/language.md) or "
+        "refused (ask)",
+    )
     p.add_argument("--fresh", action="store_true", help="start over instead of resuming DIR/scenarios.jsonl")
     p.add_argument("--quiet", action="store_true", help="no progress display")
     p.add_argument("--json", action="store_true", help="print summary.json instead of the table")
@@ -147,7 +155,7 @@ def run(args: argparse.Namespace) -> int:
     if args.fresh:
         for name in ("scenarios.jsonl", "language.jsonl"):
             (out / name).unlink(missing_ok=True)
-    options = PipelineOptions(backend=args.llm or "offline", **planner_options(args))
+    options = PipelineOptions(backend=args.llm or "offline", plurals=args.plurals, **planner_options(args))
     if args.oracle:
         job = oracle_job(options, gts)
         source = "oracle specs"
@@ -178,6 +186,7 @@ def run(args: argparse.Namespace) -> int:
         "source": "oracle" if args.oracle else args.llm,
         "gt": str(args.gt or "default"),
         **planner_options(args),
+        "plurals": args.plurals,
         "robots": args.robots,
         "n_base": args.n_base,
         "limit": args.limit,

@@ -78,6 +78,14 @@ def register(sub: Any) -> None:
         "default: refuse, exit 2)",
     )
     p.add_argument(
+        "--plurals",
+        choices=["ask", "two"],
+        default="ask",
+        help="a plural with no number of more things than the task takes ('the forks' of 3): refuse "
+        "naming it (ask, default) or read the world's convention (two: ALFRED's pick-two, said as an "
+        "assumption)",
+    )
+    p.add_argument(
         "--ask",
         action="store_true",
         help="ask on the terminal which scene type an ambiguous word means ('the table': dining "
@@ -139,6 +147,7 @@ def run(args: argparse.Namespace) -> int:
         actions=args.actions,
         strict=not args.lenient,
         partial=args.partial,
+        plurals=args.plurals,
         starts=parse_cells(args.starts) if args.starts else None,
         **planner_options(args),
     )
@@ -228,6 +237,8 @@ def _print_human(outcome: Any) -> None:
     print("  " + (lang.spec_text or "(not built)").replace("\n", "\n  "))
     for w in lang.unparsed:
         print(f"not understood: {w}", file=sys.stderr)
+    for w in lang.assumptions:
+        print(f"note: assumption: {w}", file=sys.stderr)  # a reading the text left open, not an error
     for w in lang.issues + lang.warnings + lang.ltl_checks:
         print(f"warning: {w}", file=sys.stderr)
     kept = {(t.id, role): getattr(t, role) or [] for t in lang.tasks for role in SLOTS}

@@ -15,11 +15,14 @@ as is a word that is one type's name read as another type (`exact_names`: "towel
   Plates alone (`categories_named`); "utensils", which the lexicon reads as any of its kinds (two utensils,
   each a Fork, Spoon, ButterKnife or Knife), is a plural of its kinds taken together (below);
 - a plural of a type, or of a category read as any of its kinds, that the scene holds more of than the task
-  takes: "the forks" where the scene has 3, or "the utensils" where it has 8, read as ALFRED's pick-two (2
-  of them); one rule for both, and only the paper's kitchen (`PAPER_SCENE`) keeps its Example 1's reading.
-  In non-excluded ALFRED training annotations of pick-two tasks, 2081 of 2419 say the number ("two
-  forks", "both"), 59 a bare "the forks": a plural without a number is not ALFRED's way of saying two,
-  and "two of three" is not what "the forks" says (`plural_of_several`).
+  takes: "the forks" where the scene has 3, or "the utensils" where it has 8. One rule for both
+  (`plural_of_several`); what such a plural means is the world's convention (`World.plurals`), not the
+  language's: where the world has one and it applies (the demo kitchen's Example 1 always, ALFRED's
+  pick-two under `plurals="two"`), it is read as the task's two and the result's `assumptions` say so;
+  otherwise it is refused ("say how many"). Category plurals take only a convention that covers them
+  (the demo kitchen's). In non-excluded ALFRED training annotations of pick-two tasks, 2081 of 2419 say
+  the number ("two forks", "both"), 59 a bare "the forks"; of the 71 annotations with a bare plural of a
+  type their floor plan holds more than two of, 66 are pick-two trials (`scripts/plural_conventions.py`).
 """
 
 from __future__ import annotations
@@ -27,6 +30,7 @@ from __future__ import annotations
 import re
 from collections.abc import Collection, Mapping, Sequence
 from functools import lru_cache
+from typing import Literal
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.content_words import DETERMINERS, LOCATIVE, categories
@@ -42,15 +46,17 @@ from nl2hltl2plan.language.grounding import (
     tokens,
 )
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
+from nl2hltl2plan.worlds.world import PluralConvention
+
+# how a bare plural of more things than a task takes is read: refused naming it (`ask`), or by the world's
+# convention where it has one (`two`: ALFRED's pick-two); a world's `always` convention applies under both
+Plurals = Literal["ask", "two"]
 
 # words before a noun that make it another thing than one named before ("another kettle", "a second one")
 _ANOTHER = frozenset({"a", "an", "another", "other", "second", "third", "different", "new", "one", "more"})
 _DEFINITE = frozenset({"the", "this", "that", "these", "those", "same"})
 _BACK = frozenset({"it", "them", "its"})
 # words that say how many a plural is ("two forks", "all the forks", "both forks")
-# the paper's dishwasher kitchen (worlds/demo.py): Example 1 ("put plates, mugs and utensils into the lower
-# rack") reads "utensils" as two of any kind, which the kitchen (six utensils) is built to show
-PAPER_SCENE = "demo"
 _HOW_MANY = frozenset(
     "all every each both pair couple few several some many half most rest".split()
 )
@@ -62,13 +68,16 @@ def check_referents(
     before: Sequence[tuple[str, str]],
     instances: Mapping[str, int] | None,
     scene: str,
-) -> None:
+    convention: PluralConvention | None = None,
+    plurals: Plurals = "ask",
+) -> list[str]:
     """Raise HTTError for one thing moved twice, a category plural read as one type, or a plural read as
-    fewer things than the scene holds (see the module's docstring)."""
+    fewer things than the scene holds where no convention of the world reads it (see the module's
+    docstring); returns the assumptions a convention made ("'the forks': read as 2 of ...")."""
     exact_names(instruction, tasks, instances, scene)
     moved_twice(instruction, tasks, before)
     categories_named(instruction, tasks, instances, scene)
-    plural_of_several(instruction, tasks, instances, scene)
+    return plural_of_several(instruction, tasks, instances, scene, convention, plurals)
 
 
 def exact_names(
@@ -161,7 +170,7 @@ def _reference(text: str, types: set[str], named_before: set[str]) -> str | None
 
 
 @lru_cache(maxsize=1)
-def _category_words() -> dict[str, tuple[str, ...]]:
+def category_words() -> dict[str, tuple[str, ...]]:
     """Category word -> the types it covers (`category_words.txt`)."""
     return {p: tuple(f[0].split()) for ps, f in phrase_lines("category_words.txt") for p in ps}
 
@@ -175,7 +184,7 @@ def categories_named(
     words = [w for w, _, _ in toks]
     taken = {t for task in tasks for t in task.object}
     for i, w in enumerate(words):
-        covers = _category_words().get(w)
+        covers = category_words().get(w)
         if covers is None or not taken & set(covers) or _counted(words[max(0, i - 2) : i]):
             continue
         if _as_category(w, covers, tasks):  # the paper's "utensils": any of the kinds, not one of them
@@ -206,42 +215,78 @@ def _after_preposition(before: list[str]) -> bool:
 
 
 def plural_of_several(
-    instruction: str, tasks: Sequence[BaseTaskSpec], instances: Mapping[str, int] | None, scene: str
-) -> None:
+    instruction: str,
+    tasks: Sequence[BaseTaskSpec],
+    instances: Mapping[str, int] | None,
+    scene: str,
+    convention: PluralConvention | None = None,
+    plurals: Plurals = "ask",
+) -> list[str]:
     """A plural with no number ("put the forks in the drawer") read as a task of fewer things than the
-    scene holds of its type: two of three is a guess. Unknown scene (`instances` None): not judged."""
+    scene holds of its type: two of three is a guess, refused unless the world's `convention` applies
+    (its `always`, or `plurals="two"`); returns what the convention read. Unknown scene (`instances`
+    None): not judged."""
     if not instances:
-        return
-    words = [w for w, _, _ in tokens(instruction)]
-    for m in find_mentions(instruction):
-        if not m.plural or m.entry.generic or _counted(words[max(0, m.start - 3) : m.start]):
-            continue
-        covers = _category_words().get(m.surface.lower())
+        return []
+    applies = convention is not None and (convention.always or plurals == "two")
+    said: list[str] = []
+    for m in bare_plurals(instruction):
+        covers = category_words().get(m.surface.lower())
         if covers and _as_category(m.surface.lower(), covers, tasks):
             # a category read as such counts every instance of its kinds, as a type counts its own
-            if scene != PAPER_SCENE:  # the paper's kitchen: its Example 1 reads two utensils
-                _not_several(m, [t for t in tasks if set(t.object) & set(covers)], covers, instances, scene)
+            group = [t for t in tasks if set(t.object) & set(covers)]
+            ok = applies and convention is not None and convention.categories
+            said += _not_several(instruction, m, group, covers, instances, scene, convention if ok else None)
             continue
         for task in tasks:
-            _not_several(m, [task], set(task.object) & set(m.entry.types), instances, scene)
+            types = set(task.object) & set(m.entry.types)
+            read_by = convention if applies else None
+            said += _not_several(instruction, m, [task], types, instances, scene, read_by)
+    return list(dict.fromkeys(said))
+
+
+def bare_plurals(instruction: str) -> list[Mention]:
+    """The plurals of the text with no word saying how many ("the forks", not "two forks", "all the
+    forks" or "both forks")."""
+    words = [w for w, _, _ in tokens(instruction)]
+    return [
+        m
+        for m in find_mentions(instruction)
+        if m.plural and not m.entry.generic and not _counted(words[max(0, m.start - 3) : m.start])
+    ]
 
 
 def _not_several(
+    instruction: str,
     m: Mention,
     tasks: Sequence[BaseTaskSpec],
     types: Collection[str],
     instances: Mapping[str, int],
     scene: str,
-) -> None:
-    """Refuse a task of the plural `m` that takes fewer of `types` than the scene holds."""
+    convention: PluralConvention | None,
+) -> list[str]:
+    """A task of the plural `m` that takes fewer of `types` than the scene holds: read by `convention`
+    (the assumption it makes, said), else refused."""
     held = {t: instances[t] for t in sorted(types) if instances.get(t)}
-    if any(1 < task.count < sum(held.values()) for task in tasks):
-        kinds = f" ({', '.join(f'{t} {n}' for t, n in held.items())})" if len(held) > 1 else ""
-        one = f"\"the {m.entry.phrase}\" for one" if len(held) == 1 else "name which kind"
-        raise HTTError(
-            f"{m.surface!r}: {scene} has {sum(held.values())} of them{kinds} and the task would take 2: say "
-            f"how many (\"two {m.surface}\", \"all the {m.surface}\"), or {one}"
-        )
+    total = sum(held.values())
+    fewer = [task for task in tasks if 1 < task.count < total]
+    if not fewer:
+        return []
+    if convention is not None:
+        words = _said(instruction, m)
+        return [f"{words!r}: read as {fewer[0].count} of {scene}'s {total}, {convention.name}"]
+    kinds = f" ({', '.join(f'{t} {n}' for t, n in held.items())})" if len(held) > 1 else ""
+    one = f"\"the {m.entry.phrase}\" for one" if len(held) == 1 else "name which kind"
+    raise HTTError(
+        f"{m.surface!r}: {scene} has {total} of them{kinds} and the task would take 2: say "
+        f"how many (\"two {m.surface}\", \"all the {m.surface}\"), or {one}"
+    )
+
+
+def _said(instruction: str, m: Mention) -> str:
+    """The plural's words as written, with its determiner ("the forks")."""
+    head = instruction[: m.char_start].split()
+    return f"{head[-1]} {m.surface}" if head and head[-1].lower() in _DEFINITE else m.surface
 
 
 def _counted(before: list[str]) -> bool:

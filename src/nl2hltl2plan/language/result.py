@@ -40,6 +40,9 @@ class LanguageResult(BaseModel):
     unparsed: list[str] = Field(default_factory=list)
     issues: list[str] = Field(default_factory=list)
     warnings: list[str] = Field(default_factory=list)
+    # what the text left open and the world's convention read ("'the forks': read as 2 of FloorPlan5's 3,
+    # ALFRED's pick-two"): shown with the plan, never silent
+    assumptions: list[str] = Field(default_factory=list)
     # the constraints as text, sorted: the negations' "words: formula" beside the spec; on the handover
     # worlds their guards and joint goals
     constraints: list[str] = Field(default_factory=list)

@@ -45,7 +45,7 @@ from nl2hltl2plan.language.negations import (
     spec_constraints,
 )
 from nl2hltl2plan.language.parsers import PARSERS, Parser
-from nl2hltl2plan.language.referents import check_referents
+from nl2hltl2plan.language.referents import Plurals, check_referents
 from nl2hltl2plan.language.result import Ambiguity, LanguageResult
 from nl2hltl2plan.language.spec_builder import GenerateLTL, build_spec
 from nl2hltl2plan.language.spelling import shorthand_read
@@ -92,6 +92,7 @@ def translate(
     build: bool = True,
     choices: dict[str, str] | None = None,
     ask: Chooser | None = None,
+    plurals: Plurals = "ask",
 ) -> LanguageResult:
     """Instruction -> LanguageResult (HTT, base tasks, leaf actions, hierarchical spec).
 
@@ -103,7 +104,9 @@ def translate(
     `build`: run Algorithm 1 (off: HTT and base tasks only); `choices`: a user's pick for an
     ambiguous slot, `{"A.receptacle": "SideTable"}` (task id . role -> scene type); `ask`: called
     with the parse's ambiguities (if any) before leaf actions and specs are built, returns more choices
-    (`plan --ask` asks on the terminal: the instruction is parsed once).
+    (`plan --ask` asks on the terminal: the instruction is parsed once); `plurals`: a plural with no
+    number of more things than the task takes ("the forks" of 3) is refused ("ask") or read by the
+    world's convention ("two": ALFRED's pick-two, said in `assumptions`; `referents.plural_of_several`).
     """
     if len(instruction) > MAX_INSTRUCTION_CHARS:
         raise HTTError(
@@ -160,14 +163,14 @@ def translate(
             elif not res.partial and not negations:
                 res = reader.doubted(res, backend)
         with _refused_as_not_understood(res, world):
-            return _finish(res, world, backend, client, ltl, actions, build, instances)
+            return _finish(res, world, backend, client, ltl, actions, build, instances, plurals)
     if client is None:
         raise LLMError(f"backend {backend} needs an LLM client (see backends.open_client)")
     with client.instruction():  # one deadline for every request this instruction makes
         res = read_with_llm(instruction, types, scene, client, strict)
         res = account_words(cross_check(res, types, scene), world, instances)
         with _refused_as_not_understood(res, world):
-            return _finish(res, world, backend, client, ltl, actions, build, instances)
+            return _finish(res, world, backend, client, ltl, actions, build, instances, plurals)
 
 
 def _keep_negations(
@@ -225,11 +228,17 @@ def _finish(
     actions: ActionSource,
     build: bool,
     instances: Counter[str] | None,
+    plurals: Plurals = "ask",
 ) -> LanguageResult:
-    """What the words refer to (`referents`: one thing moved twice, "the dishes", "the towel"), then leaf
-    actions (recipes or LLM action completion), then Algorithm 1. `instances`: the world's
-    `scene_instances` (None: a scene known only by its types)."""
-    check_referents(res.instruction, res.tasks, res.before, instances, world.name if world else "the scene")
+    """What the words refer to (`referents`: one thing moved twice, "the dishes", "the towel", "the forks"
+    of more than two, read by the world's plural convention or refused), then leaf actions (recipes or LLM
+    action completion), then Algorithm 1. `instances`: the world's `scene_instances` (None: a scene known
+    only by its types)."""
+    convention = world.plurals if isinstance(world, World) else None
+    scene = world.name if world else "the scene"
+    assumed = check_referents(res.instruction, res.tasks, res.before, instances, scene, convention, plurals)
+    if assumed:
+        res = res.model_copy(update={"assumptions": [*res.assumptions, *assumed]})
     mode = actions if actions != "auto" else ("recipe" if backend in PARSERS else "llm")
     found = ACTION_SOURCES[mode](res, world, client)
     leaf_specs = res.leaf_specs if found is None else found

@@ -92,6 +92,7 @@ class LanguageRecord(BaseModel):
     before: list[list[str]] = Field(default_factory=list)
     unparsed: list[str] = Field(default_factory=list)
     issues: list[str] = Field(default_factory=list)
+    assumptions: list[str] = Field(default_factory=list)  # what a plural convention read (`--plurals two`)
     ltl_checks: list[str] = Field(default_factory=list)
     llm_calls: dict[str, int] = Field(default_factory=dict)
     levels: list[dict[str, Any]] | None = None  # the hierarchical spec's JSON levels

@@ -40,6 +40,7 @@ class PlanRequest(BaseModel):
     choices: dict[str, str] = Field(default_factory=dict, max_length=64)  # "task.role" -> scene type
     pictures: StrictBool = True  # render the pictures and downloads after the plan
     partial: StrictBool = False  # plan what was understood of a partly understood one (`plan --partial`)
+    plurals: Literal["ask", "two"] = "ask"  # "the forks" of more than a task takes (`plan --plurals`)
 
     @model_validator(mode="after")
     def one_team(self) -> PlanRequest:

@@ -57,6 +57,7 @@ def plan_request(req: PlanRequest, on_progress: Any = None) -> Outcome:
         plan_timeout_s=req.timeout_s * PLAN_SHARE,
         choices=req.choices,
         partial=req.partial,
+        plurals=req.plurals,
     )
     world = load_world(req.world)
     team = team_of(req)

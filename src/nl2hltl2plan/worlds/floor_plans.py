@@ -40,7 +40,7 @@ from nl2hltl2plan.errors import DataError, WorldError
 from nl2hltl2plan.io import iter_gzip_jsonl, load_npy, read_json
 from nl2hltl2plan.worlds.affordances import AffordanceTable, alfred_affordances
 from nl2hltl2plan.worlds.tasks import GTInstance
-from nl2hltl2plan.worlds.world import World, WorldObject, add_slices
+from nl2hltl2plan.worlds.world import ALFRED_PICK_TWO, World, WorldObject, add_slices
 
 SAME_OBJECT_M = 0.1
 SAME_POSE_M = 0.01
@@ -379,6 +379,7 @@ def load_floor_plan(fp: str, trials: list[str] | None = None) -> World:
         unplaced=dict(unplaced),
         notes=notes,
         kind="alfred",
+        plurals=ALFRED_PICK_TWO,
         source_trials=tuple(trials),
     )
 

@@ -110,6 +110,23 @@ class WorldObject:
         }
 
 
+@dataclass(frozen=True)
+class PluralConvention:
+    """What a plural with no number ("the forks") means in a world that holds more of the type than a
+    task takes (docs/worlds.md, "Plurals"): read as the task's count (two) under this convention's name,
+    said in the result's `assumptions`. `always`: read so whatever the `plurals` setting (the demo
+    kitchen, built to show the paper's Example 1); else only under `plurals="two"`. `categories`: a
+    category plural ("the utensils": two of any kind) takes it too; else it is refused."""
+
+    name: str
+    always: bool = False
+    categories: bool = False
+
+
+# ALFRED's pick-two task: two things of a type, read from "the forks" only when the user asks for it
+ALFRED_PICK_TWO = PluralConvention("ALFRED's pick-two")
+
+
 @dataclass
 class World:
     """A grid world with objects. Build it with `World.create(...)` (computes the regions)."""
@@ -124,6 +141,7 @@ class World:
     kind: str = "alfred"  # "alfred" | "demo"
     source_trials: tuple[str, ...] = ()
     default_starts: tuple[Cell, ...] = ()
+    plurals: PluralConvention | None = None  # what "the forks" of more than a task takes means (None: ask)
 
     # ---------------------------------------------------------------- construction
     @classmethod
@@ -363,6 +381,7 @@ class World:
         return {
             "name": self.name,
             "kind": self.kind,
+            "plurals": self.plurals.name if self.plurals else None,
             "grid": {"rows": self.shape[0], "cols": self.shape[1], "cell_m": CELL_M},
             "origin_xz": list(self.origin),
             "free_cells": len(self.cells),

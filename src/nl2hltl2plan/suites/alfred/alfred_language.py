@@ -76,6 +76,7 @@ def language_record(gt: GTInstance, options: PipelineOptions, client: LLMClient 
             "before": [list(p) for p in result.before],
             "unparsed": result.unparsed,
             "issues": result.issues,
+            "assumptions": result.assumptions,
             "ltl_checks": result.ltl_checks,
             "llm_calls": result.llm_calls,
             "levels": result.spec.to_json_obj() if result.spec is not None else None,
