@@ -50,6 +50,12 @@ SUITES = (
         ("bench", "alfred", "--llm", "offline", "--robots", "1,2,4", "--workers", "1", "--fresh"),
         True,
     ),
+    Suite(  # the same, with every bare plural of more than two refused, as `plan` does by default
+        "alfred_offline_ask",
+        ("bench", "alfred", "--llm", "offline", "--plurals", "ask", "--robots", "1,2,4", "--workers", "1")
+        + ("--fresh",),
+        True,
+    ),
 )
 PROVENANCE = "## Provenance"
 
