@@ -10,7 +10,7 @@ from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.draft_tasks import Draft, TaskBuilder
 from nl2hltl2plan.language.grammar.frames import Item, is_fixed, same
 from nl2hltl2plan.language.grammar.phrases import NP
-from nl2hltl2plan.language.grounding import Grounder, camel_words
+from nl2hltl2plan.language.grounding import RECEPTACLES, Grounder, camel_words
 
 
 def named_apart(x: NP, y: NP, g: Grounder) -> bool:
@@ -59,12 +59,16 @@ def _has_words(words: list[str], sub: list[str]) -> bool:
 def merge_items(items: list[Item], b: TaskBuilder) -> list[Item]:
     """Two objects that one clause lists for one destination: a container and its content ("a bowl and a
     pencil"), or two objects of the same type ("an empty roll and a full roll of toilet paper")."""
+    # a fixed place listed as a thing is left out; a phrase is such a place by its first type only: "bars
+    # of soap" ("bar": SoapBar first, a towel bar after) is the soap, never dropped from "two bars of soap
+    # in the bin and the cloth in the cabinet"
     items = [
         it
         for it in items
         if not (
             it.obj is not None
-            and it.obj.is_receptacle()
+            and it.obj.entry is not None
+            and it.obj.entry.canonical in RECEPTACLES
             and not it.obj.is_movable_receptacle()
             and len(items) > 1
         )

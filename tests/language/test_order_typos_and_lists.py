@@ -1,0 +1,51 @@
+"""Issue 28 (h128): household misreadings that exited 0. A misspelt order word is the order word where
+no other English word is one edit away, else it is named (never read as if absent); a listed thing whose
+phrase also names a fixed place ("bars of soap": a towel bar too) is a task of its own, never dropped."""
+
+from __future__ import annotations
+
+import pytest
+
+from nl2hltl2plan.language.unknown_words import misspelt_order_words
+from tests.language.test_unseen_classes import read
+
+MUG = "place Mug -> SinkBasin"
+APPLE = "place Apple -> Fridge"
+
+
+def test_a_misspelt_order_word_one_edit_from_it_alone_is_read():
+    tasks, order, unread = read("put the mug in the sink befoer you put the apple in the fridge")
+    assert sorted(tasks) == sorted([MUG, APPLE]) and order == {(MUG, APPLE)} and not unread
+
+
+@pytest.mark.parametrize(
+    "text, word",
+    [
+        ("put the mug in the sink, thne put the apple in the fridge", "thne"),  # then / the / thee
+        ("frst put the mug in the sink, then put the apple in the fridge", "frst"),  # first / fist
+        ("put the mug in the sink and aftre that put the apple in the fridge", "aftre"),  # after / afire
+    ],
+)
+def test_a_misspelt_order_word_near_other_words_is_named(text, word):
+    """Read as if absent, "thne" gave two unordered tasks (exit 0); now the word is unread."""
+    assert [u.words for u in misspelt_order_words(text)] == [word]
+    assert any(word in u for u in read(text)[2])
+
+
+@pytest.mark.parametrize("text", ["put the mug in the sink", "fist the mug", "put the mug in the tnih sink"])
+def test_no_misspelt_order_word_where_none_is_near(text):
+    """English words ("fist") and words near no order word are not order typos."""
+    assert misspelt_order_words(text) == []
+
+
+def test_a_listed_thing_that_also_names_a_place_is_kept():
+    """ "bar" is SoapBar first (a towel bar after): "two bars of soap" is never left out as a fixed place
+    (before: the soap task was dropped and the cloth's read alone, exit 0)."""
+    tasks, _, unread = read("put two bars of soap in the garbage can and the cloth in the cabinet")
+    assert tasks == ["place_two 2x SoapBar -> GarbageCan", "place Cloth -> Cabinet"] and not unread
+
+
+def test_a_fixed_place_listed_as_a_thing_is_still_left_out():
+    """Near miss: a phrase whose first type is a fixed place ("the counter") is no thing to move."""
+    tasks, _, _ = read("put the mug and the counter in the sink")
+    assert MUG in tasks and not any(t.startswith("place CounterTop") for t in tasks)
