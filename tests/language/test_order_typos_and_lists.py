@@ -49,3 +49,34 @@ def test_a_fixed_place_listed_as_a_thing_is_still_left_out():
     """Near miss: a phrase whose first type is a fixed place ("the counter") is no thing to move."""
     tasks, _, _ = read("put the mug and the counter in the sink")
     assert MUG in tasks and not any(t.startswith("place CounterTop") for t in tasks)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "put the mug in the sink, then go on to put the apple in the fridge",
+        "put the mug in the sink and then move on to put the apple in the fridge",
+        "start off by putting the mug in the sink, and finish by putting the apple in the fridge",
+        "put the mug in the sink and when finished bring the apple to the fridge",
+    ],
+)
+def test_a_step_written_around_its_connective_keeps_the_order(text):
+    """ "then go on to" (the "then" was a going clause's), "start off by ..., and finish by ...", and "when
+    finished bring" ("bring" read as a gerund: the order reversed, exit 0)."""
+    tasks, order, unread = read(text)
+    assert sorted(tasks) == sorted([MUG, APPLE]) and order == {(MUG, APPLE)} and not unread
+
+
+@pytest.mark.parametrize("lead", ["in the meantime", "meanwhile"])
+def test_in_the_meantime_frees_the_order(lead):
+    """Before: "meantime" was named as an unknown thing, and "and in the meantime put" was refused."""
+    for text in (f"put the mug in the sink; {lead}, put the apple in the fridge",
+                 f"put the mug in the sink and {lead} put the apple in the fridge"):
+        tasks, order, unread = read(text)
+        assert sorted(tasks) == sorted([MUG, APPLE]) and order == set() and not unread
+
+
+def test_when_done_with_a_gerund_is_still_a_reference():
+    """Near miss: "when done putting X" names what is done (a gerund's stem has a vowel)."""
+    tasks, order, unread = read("put the apple in the fridge when done putting the mug in the sink")
+    assert sorted(tasks) == sorted([MUG, APPLE]) and order == {(MUG, APPLE)} and not unread
