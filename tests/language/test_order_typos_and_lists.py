@@ -80,3 +80,15 @@ def test_when_done_with_a_gerund_is_still_a_reference():
     """Near miss: "when done putting X" names what is done (a gerund's stem has a vowel)."""
     tasks, order, unread = read("put the apple in the fridge when done putting the mug in the sink")
     assert sorted(tasks) == sorted([MUG, APPLE]) and order == {(MUG, APPLE)} and not unread
+
+
+def test_one_and_two_of_a_type_listed_are_three_things():
+    """Before: "a bar of soap ... and two soap ..." merged into one pair (x2), a task lost, exit 0."""
+    tasks, _, unread = read("put a bar of soap in the cabinet and two soap in the cabinet")
+    assert tasks == ["place SoapBar -> Cabinet", "place_two 2x SoapBar -> Cabinet"] and not unread
+
+
+def test_past_the_step_orders_after_it():
+    """ "Past the mug step, Y": after the mug's task (before: a second mug task, put "Past the mug step")."""
+    tasks, order, unread = read("Put the mug in the sink. Past the mug step, put the apple in the fridge.")
+    assert sorted(tasks) == sorted([MUG, APPLE]) and order == {(MUG, APPLE)} and not unread

@@ -62,6 +62,8 @@ _GO_ON = re.compile(
 )
 _FIRST_STEP = re.compile(r"^\s*(?:start|begin|first(?:ly)?|to\s+(?:start|begin))\b", re.I)
 _MEANTIME = re.compile(r"\bin\s+the\s+meantime\b", re.I)
+# "past the skillet step, Y" is "after the skillet step, Y" (a step passed, never a place walked past)
+_PAST_STEP = re.compile(r"\b(?:past|beyond)(?=\s+the\s+(?:[a-z]+\s+){1,3}(?:step|task|part|job)\b)", re.I)
 _START_OFF = re.compile(r"\b(start|begin)\s+off\s+(?=(?:by|with)\b)", re.I)
 _AND_FINISH = re.compile(
     r"\s*,?\s*\band\s+(?:then\s+)?(?=(?:finish|end)\s+(?:up\s+|off\s+)?(?:by|with)\s+[a-z]+ing\b)", re.I
@@ -142,6 +144,11 @@ def everyday_names(text: str) -> str:
     return pattern.sub(lambda m: table[" ".join(m[0].lower().split())], text)
 
 
+def _cased(word: str, like: str) -> str:
+    """`word` with the first letter of `like` as it was written."""
+    return word.capitalize() if like[:1].isupper() else word
+
+
 @lru_cache(maxsize=1024)  # check 1 asks again for every reading it judges (about five per instruction)
 def everyday(text: str) -> str:
     """The text with the everyday styles above rewritten onto the forms the grammar reads (a pure function
@@ -163,6 +170,7 @@ def everyday(text: str) -> str:
     text = _START_OPENER.sub("", _OPENER.sub(r"\1", text))
     text = _JUST.sub("", text)
     text = _START_OFF.sub(r"\1 ", _MEANTIME.sub("meanwhile", _GO_ON.sub("", text)))
+    text = _PAST_STEP.sub(lambda m: _cased("after", m[0]), text)
     if _FIRST_STEP.match(text):  # "start by X, and finish by Y": the last step is read as a sentence
         text = _AND_FINISH.sub(". ", text)
     text = re.sub(r"\band\s*,\s*", "and ", re.sub(r"^\s*,\s*", "", text))

@@ -83,6 +83,8 @@ def merge_items(items: list[Item], b: TaskBuilder) -> list[Item]:
     if own and any(is_fixed(np) and not same(np, own[-1]) for _, np in dests):
         return items  # "the mug in the sink and the egg in the fridge": each goes its own way
     if b.g is not None and set(b.g.resolve(xo.entry)) == set(b.g.resolve(yo.entry)) and b.g.resolve(xo.entry):
+        if xo.count != 1 or yo.count != 1:
+            return items  # "a bar of soap ... and two soap ...": three things, never one pair
         if named_apart(xo, yo, b.g):
             return items
         xo.count = 2
