@@ -11,6 +11,7 @@ from tests.language.test_unseen_classes import read
 
 MUG = "place Mug -> SinkBasin"
 APPLE = "place Apple -> Fridge"
+EGG = "place Egg -> Microwave"
 
 
 def test_a_misspelt_order_word_one_edit_from_it_alone_is_read():
@@ -92,3 +93,14 @@ def test_past_the_step_orders_after_it():
     """ "Past the mug step, Y": after the mug's task (before: a second mug task, put "Past the mug step")."""
     tasks, order, unread = read("Put the mug in the sink. Past the mug step, put the apple in the fridge.")
     assert sorted(tasks) == sorted([MUG, APPLE]) and order == {(MUG, APPLE)} and not unread
+
+
+def test_a_trailing_when_with_a_state_is_a_reference():
+    """ "Y when the mug is in the sink": after the mug's task, as "Y once the mug is in the sink" (before:
+    the "when" clause stayed in Y's text and the order was lost, exit 0)."""
+    tasks, order, unread = read(
+        "Put the egg in the microwave. Put the mug in the sink once the egg is put. Put the apple in the "
+        "fridge when the mug is in the sink."
+    )
+    assert len(tasks) == 3 and not unread
+    assert order == {(EGG, MUG), (MUG, APPLE), (EGG, APPLE)}
