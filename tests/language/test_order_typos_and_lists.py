@@ -104,3 +104,10 @@ def test_a_trailing_when_with_a_state_is_a_reference():
     )
     assert len(tasks) == 3 and not unread
     assert order == {(EGG, MUG), (MUG, APPLE), (EGG, APPLE)}
+
+
+def test_a_number_of_the_held_thing_after_its_placement_is_another_task():
+    """ "put a bowl with a spoon in it on the table, and put two spoons in the drawer": the two spoons are
+    others (before: one task, the bowl's spoon x2 in the drawer, the table lost, exit 0)."""
+    tasks, _, unread = read("put a bowl with a spoon in it on the table, and put two spoons in the drawer")
+    assert len(tasks) == 2 and tasks[1] == "place_two 2x Spoon -> Drawer" and not unread
