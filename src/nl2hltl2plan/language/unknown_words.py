@@ -201,7 +201,7 @@ def misspelt_order_words(instruction: str) -> list[Unread]:
     """The words of `instruction` (as the spelling rule left it) that no list and no English knows and that
     are one edit from an order word (`content_words.txt`'s `order` and `any_order`)."""
     words = vocabulary()["order"] | vocabulary()["any_order"]
-    out = []
+    out: list[Unread] = []
     for m in _ORDER_WORD_SHAPE.finditer(instruction):
         low = m[0].lower()
         if known_word(low) or english_word(low) or not one_edit(low) & words:
