@@ -79,8 +79,12 @@ def test_check_one_names_a_misspelt_object_that_the_reading_leaves_out():
         ("cleean", "clean"),
         ("slcie", "slice"),  # two neighbours swapped
         ("alriight", "alright"),
-        ("finsihed", None),  # an order word is never made from a misspelling: its scope is no guess
-        ("firrst", None),
+        ("finsihed", None),  # "finished", "finessed": two words one edit away
+        # an order word only where no other English word is one edit away (users_h128dev.txt)
+        ("firrst", "first"),
+        ("befoer", "before"),
+        ("frst", None),  # "first", "fist"
+        ("thne", None),  # "then", "the", "thee": no swap preference for an order word
         ("colour", None),  # a British spelling is English
         ("wilco", None),  # a word of the project's own lists (the handover radio words)
         ("woud", None),  # one edit from several words: which is meant is a guess

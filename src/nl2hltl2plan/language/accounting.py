@@ -55,7 +55,7 @@ from nl2hltl2plan.language.order_words import check_cycles, finished_words, miso
 from nl2hltl2plan.language.parse_usage import IMPLIED_TYPES, ParseUsage
 from nl2hltl2plan.language.statements import asked_before, says_where
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, ConstraintSpec
-from nl2hltl2plan.language.unknown_words import unknown_things, unknown_verbs, unused_tools
+from nl2hltl2plan.language.unknown_words import unread_words, unused_tools
 from nl2hltl2plan.language.unsupported_steps import (
     OPENED_FOR_ITSELF,
     closed_after_placing,
@@ -127,8 +127,8 @@ def account(
     out += unordered_steps(
         toks, {i for i, t in enumerate(toks) if parse.constraint_at(t[1])} | in_mention, parse, per_group_only
     )
-    out += misordered(instruction, toks, mentions, parse) + unknown_verbs(instruction, toks)
-    out += unknown_things(instruction, toks) + unused_tools(instruction, mentions, parse)
+    out += misordered(instruction, toks, mentions, parse) + unread_words(instruction, toks)
+    out += unused_tools(instruction, mentions, parse)
     out += unsaid_containers(instruction, mentions, parse)  # "the tomato in the fridge and the pan in ..."
     check_cycles(instruction, toks, mentions, parse)
     return out

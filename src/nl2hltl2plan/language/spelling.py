@@ -10,9 +10,11 @@ text, so a misspelt name that a reading does not use is named, never passed over
 - any other word of four letters or more that neither the lexicon, the project's word lists nor English
   knows (a British spelling is English) is the English word one edit away, when exactly one is (or
   exactly one of several is two neighbours swapped: "claen" is "clean", not "clan") and it names an
-  action, a state or a count, or is a word of politeness ("woould", "cleean", "slcie"); never
-  an order word or a word that builds a structure ("when finsihed", "containign" stay unread: their
-  scope is no guess).
+  action, a state or a count, or is a word of politeness ("woould", "cleean", "slcie"); never a word
+  that builds a structure ("containign" stays unread);
+- an order word only where it is the one English word one edit away ("befoer", "lastyl"; no swap
+  preference: "thne" may be "the"): a guessed order word would guess its scope. One left as written is
+  named by check 1 (`unknown_words.misspelt_order_words`), never read as if absent.
 A world with a closed vocabulary may ask for more (`closed_respelt`): the tabletop world respells against
 its nine name words and, as its one order form is groups in turn, its order words too.
 English is pyspellchecker's frequency list; it loads only when a word passes the first tests.
@@ -162,12 +164,19 @@ def spelt_word(word: str) -> str | None:
     low = word.lower()
     if len(low) < 4 or low in _known_words() or _english().known(_american(low)):
         return None
-    close = _english().known(_english().edit_distance_1(low))
+    near = _english().known(_english().edit_distance_1(low))
+    if len(near) == 1 and _order_word(word := next(iter(near))):
+        return word  # "befoer": an order word only where no other English word is one edit away
     # two neighbours swapped is the commonest slip: "claen" is "clean", not "clan" or "caen" (a letter
     # dropped or changed), where exactly one word is that swap away
-    swapped = {w for w in close if len(w) == len(low) and _neighbours_swapped(w, low)}
-    close = swapped if len(close) > 1 and len(swapped) == 1 else close
+    swapped = {w for w in near if len(w) == len(low) and _neighbours_swapped(w, low)}
+    close = swapped if len(near) > 1 and len(swapped) == 1 else near
     return next(iter(close)) if len(close) == 1 and _respellable(next(iter(close))) else None
+
+
+def _order_word(word: str) -> bool:
+    """Whether `word` says an order, or leaves it free (check 1's `order` and `any_order` words)."""
+    return bool(categories(word) & {"order", "any_order"})
 
 
 def _respellable(word: str) -> bool:
@@ -175,7 +184,7 @@ def _respellable(word: str) -> bool:
     categories), or a word of politeness ("would", "kindly"); never an order word, whose scope the
     grammar would then guess, nor a word that builds a structure ("containing")."""
     found = categories(word)
-    return word in _POLITE or bool(found) and not found & {"order", "any_order"}
+    return word in _POLITE or bool(found) and not _order_word(word)
 
 
 def _american(low: str) -> list[str]:
@@ -201,8 +210,8 @@ def respelt(text: str) -> str:
 def closed_respelt(text: str, words: frozenset[str]) -> str:
     """A world's option: `text` with each word that misspells one of a closed list of `words` (lower case:
     a world's name words, or the order words of its one order form) written as that word (`closed_near`),
-    a capital kept. `respelt` never respells an order word; a world whose order words have one reading
-    may ask for them here."""
+    a capital kept. `respelt` respells an order word only where no other English word is one edit away;
+    a world whose order words have one reading may ask for them here."""
 
     def fix(m: re.Match[str]) -> str:
         near = closed_near(m[0], words)

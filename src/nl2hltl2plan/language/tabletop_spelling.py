@@ -2,7 +2,7 @@
 "frist ... , than ...".
 
 The shared respelling (`language.spelling.respelt`) writes a misspelt name as the ALFRED lexicon writes it
-and never respells an order word, whose scope the grammar would then guess. The tabletop world has nine
+and respells an order word only where no other English word is one edit away. The tabletop world has nine
 name words and one order form (groups of placements in turn), so it takes the shared respelling's world
 option (`spelling.closed_respelt`) with its own words:
 

@@ -10,6 +10,12 @@ and the instruction is refused, never read as the commands around it.
 Not judged: prepositions ("behind the mug"), words in -ly ("gently the ...") and in -ing ("containing a
 knife": a participle describes a thing), and words English does not know (the spelling rule's business).
 
+Order words misspelt (`misspelt_order_words`): the spelling rule respells an order word only where it is
+the one English word one edit away ("befoer", "lastyl"). A word of four letters or more that no list and
+no English knows and that is one edit from an order word, but was left as written because other words
+are as near ("thne": "then", "the", "thee"; "frst": "first", "fist"), is unread: the order it may say is
+never read as if it were absent.
+
 Things (`unknown_things`): the thing a placing verb acts on, or the place after "in" / "into" / "onto" /
 "to", whose head word English knows and no word table does ("put the spoon in the goblet", "move the
 tray"), is unread: no object of the world is called so, and a reading without it (the spoon put in the
@@ -29,6 +35,8 @@ other is unread, never dropped (the plan would not use it).
 ['goblet']
 >>> unknown_things("put the spoon on the ledge of the sink")
 []
+>>> [u.words for u in misspelt_order_words("put the apple in the fridge, thne the mug in the sink")]
+['thne']
 """
 
 from __future__ import annotations
@@ -42,10 +50,11 @@ from nl2hltl2plan.language.content_words import (
     OBJECT_START,
     Unread,
     categories,
+    vocabulary,
 )
 from nl2hltl2plan.language.grounding import Mention, tokens
 from nl2hltl2plan.language.parse_usage import ParseUsage
-from nl2hltl2plan.language.spelling import english_word, known_word
+from nl2hltl2plan.language.spelling import english_word, known_word, one_edit
 
 _COMMAND_START = COMMAND_WORDS | {"next", "finally", "lastly"}
 _OBJECT_START = OBJECT_START | {"both", "all", "each", "every"}
@@ -175,3 +184,28 @@ def unused_tools(instruction: str, mentions: list[Mention], parse: ParseUsage) -
 
 
 TOOL_REASON = "no base task is done with this: a task uses only the tools its kind implies"
+
+
+ORDER_TYPO_REASON = "may misspell an order word, as near to other words: say the order as you mean it"
+_ORDER_WORD_SHAPE = re.compile(r"(?<![A-Za-z'])[A-Za-z]{4,}(?![A-Za-z'])")  # as the spelling rule's words
+
+
+def unread_words(instruction: str, toks: Tokens | None = None) -> list[Unread]:
+    """Unknown verbs, unknown things and misspelt order words, in that order (check 1's unknown words)."""
+    toks = tokens(instruction) if toks is None else toks
+    unknown = unknown_verbs(instruction, toks) + unknown_things(instruction, toks)
+    return unknown + misspelt_order_words(instruction)
+
+
+def misspelt_order_words(instruction: str) -> list[Unread]:
+    """The words of `instruction` (as the spelling rule left it) that no list and no English knows and that
+    are one edit from an order word (`content_words.txt`'s `order` and `any_order`)."""
+    words = vocabulary()["order"] | vocabulary()["any_order"]
+    out: list[Unread] = []
+    for m in _ORDER_WORD_SHAPE.finditer(instruction):
+        low = m[0].lower()
+        if known_word(low) or english_word(low) or not one_edit(low) & words:
+            continue
+        if low not in {u.words for u in out}:
+            out.append(Unread(low, "order", ORDER_TYPO_REASON))
+    return out

@@ -486,9 +486,10 @@ def _placed(d: Draft) -> bool:
 
 
 def _indefinite(o: NP) -> bool:
-    """ "a tomato", "another mug", "the other mug": a referent other than the one before."""
+    """ "a tomato", "another mug", "the other mug", "two sets of keys" (a number, no "the"): a referent
+    other than the one before."""
     words = o.text.lower().split()
-    return words[:1] in (["a"], ["an"], ["another"]) or words[:2] == ["the", "other"]
+    return words[:1] in (["a"], ["an"], ["another"], ["two"], ["three"]) or words[:2] == ["the", "other"]
 
 
 def _restates(fr: Frame, it: Item) -> bool:

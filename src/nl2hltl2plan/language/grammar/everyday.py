@@ -51,6 +51,23 @@ _START_OPENER = re.compile(
 _LIKE = re.compile(r",\s*like\s*,", re.I)
 _TAG = re.compile(r",\s*(?:yeah|yep|ok|okay|alright|right)\s*(?=[.!?]?\s*$)", re.I)
 _JUST = re.compile(r"\bjust\s+(?=(?:put|place|move|pop|drop|set|stick|leave)\b)", re.I)
+# connectives written around a step (issue 28, users_h128dev.txt): "then go on to put X" is "then put X"
+# (the "then" belongs to the put, not to a clause of going), "in the meantime" is "meanwhile", "start off
+# by" is "start by", and "..., and finish by putting Y" after an opening step is a sentence of its own
+_GO_ON = re.compile(
+    r"\b(?:(?:go|move|carry)\s+on|proceed|continue)\s+(?:to|and)\s+"
+    r"(?=(?:put|place|move|set|drop|take|bring|carry|grab|pick|get|wash|rinse|clean|heat|cool|chill|slice|cut|"
+    r"throw|toss|turn|switch|examine|look|hold|open|close)\b)",
+    re.I,
+)
+_FIRST_STEP = re.compile(r"^\s*(?:start|begin|first(?:ly)?|to\s+(?:start|begin))\b", re.I)
+_MEANTIME = re.compile(r"\bin\s+the\s+meantime\b", re.I)
+# "past the skillet step, Y" is "after the skillet step, Y" (a step passed, never a place walked past)
+_PAST_STEP = re.compile(r"\b(?:past|beyond)(?=\s+the\s+(?:[a-z]+\s+){1,3}(?:step|task|part|job)\b)", re.I)
+_START_OFF = re.compile(r"\b(start|begin)\s+off\s+(?=(?:by|with)\b)", re.I)
+_AND_FINISH = re.compile(
+    r"\s*,?\s*\band\s+(?:then\s+)?(?=(?:finish|end)\s+(?:up\s+|off\s+)?(?:by|with)\s+[a-z]+ing\b)", re.I
+)
 _ARROW = re.compile(r"\s*->\s*")
 _STEP_COLON = re.compile(r"\b(first|then|next|after\s+that|finally|lastly)\s*:\s*", re.I)
 # a free-order phrase ("any order", "the order doesn't matter"; content_words.free_order_phrase) in brackets
@@ -127,6 +144,11 @@ def everyday_names(text: str) -> str:
     return pattern.sub(lambda m: table[" ".join(m[0].lower().split())], text)
 
 
+def _cased(word: str, like: str) -> str:
+    """`word` with the first letter of `like` as it was written."""
+    return word.capitalize() if like[:1].isupper() else word
+
+
 @lru_cache(maxsize=1024)  # check 1 asks again for every reading it judges (about five per instruction)
 def everyday(text: str) -> str:
     """The text with the everyday styles above rewritten onto the forms the grammar reads (a pure function
@@ -147,6 +169,10 @@ def everyday(text: str) -> str:
     text = _LIKE.sub(",", _TAG.sub("", text))
     text = _START_OPENER.sub("", _OPENER.sub(r"\1", text))
     text = _JUST.sub("", text)
+    text = _START_OFF.sub(r"\1 ", _MEANTIME.sub("meanwhile", _GO_ON.sub("", text)))
+    text = _PAST_STEP.sub(lambda m: _cased("after", m[0]), text)
+    if _FIRST_STEP.match(text):  # "start by X, and finish by Y": the last step is read as a sentence
+        text = _AND_FINISH.sub(". ", text)
     text = re.sub(r"\band\s*,\s*", "and ", re.sub(r"^\s*,\s*", "", text))
     text = _without_need_heading(text)
     text = _LAST_GROUP_ORDER.sub("order ", text)

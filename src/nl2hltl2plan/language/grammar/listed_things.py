@@ -10,7 +10,7 @@ from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.draft_tasks import Draft, TaskBuilder
 from nl2hltl2plan.language.grammar.frames import Item, is_fixed, same
 from nl2hltl2plan.language.grammar.phrases import NP
-from nl2hltl2plan.language.grounding import Grounder, camel_words
+from nl2hltl2plan.language.grounding import RECEPTACLES, Grounder, camel_words
 
 
 def named_apart(x: NP, y: NP, g: Grounder) -> bool:
@@ -59,12 +59,16 @@ def _has_words(words: list[str], sub: list[str]) -> bool:
 def merge_items(items: list[Item], b: TaskBuilder) -> list[Item]:
     """Two objects that one clause lists for one destination: a container and its content ("a bowl and a
     pencil"), or two objects of the same type ("an empty roll and a full roll of toilet paper")."""
+    # a fixed place listed as a thing is left out; a phrase is such a place by its first type only: "bars
+    # of soap" ("bar": SoapBar first, a towel bar after) is the soap, never dropped from "two bars of soap
+    # in the bin and the cloth in the cabinet"
     items = [
         it
         for it in items
         if not (
             it.obj is not None
-            and it.obj.is_receptacle()
+            and it.obj.entry is not None
+            and it.obj.entry.canonical in RECEPTACLES
             and not it.obj.is_movable_receptacle()
             and len(items) > 1
         )
@@ -79,6 +83,8 @@ def merge_items(items: list[Item], b: TaskBuilder) -> list[Item]:
     if own and any(is_fixed(np) and not same(np, own[-1]) for _, np in dests):
         return items  # "the mug in the sink and the egg in the fridge": each goes its own way
     if b.g is not None and set(b.g.resolve(xo.entry)) == set(b.g.resolve(yo.entry)) and b.g.resolve(xo.entry):
+        if xo.count != 1 or yo.count != 1:
+            return items  # "a bar of soap ... and two soap ...": three things, never one pair
         if named_apart(xo, yo, b.g):
             return items
         xo.count = 2

@@ -379,7 +379,7 @@ _THEN_INSIDE = re.compile(
 # after putting X in A")
 _DONE_GERUND = re.compile(
     r"\b(after|once|when)\s+(?:you(?:'re|\s+are|'ve|\s+have)?\s+)?(?:done|finished|through)\s+(?:with\s+)?"
-    r"(?=[a-z]+ing\b)",
+    r"(?=[a-z]*[aeiouy][a-z]*ing\b)",  # a gerund's stem has a vowel: "bring" is none
     re.IGNORECASE,
 )
 # "on the middle shelf in the fridge", "the top shelf of the cabinet": a shelf that is part of an appliance
