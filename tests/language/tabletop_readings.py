@@ -3,7 +3,7 @@ and the closure of the order by pair, as `translate` gives them; None on a refus
 
 from __future__ import annotations
 
-from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.language.task_specs import transitive_closure
 from nl2hltl2plan.language.translate import translate
 from nl2hltl2plan.worlds.tabletop_world import tabletop_world
@@ -16,7 +16,7 @@ def pairs_read(text: str) -> tuple[list[Pair], list[tuple[Pair, Pair]]] | None:
     """(object, plate) pairs sorted and the closed order by pair; None on a refusal or a partial reading."""
     try:
         r = translate(text, WORLD, build=False)
-    except HTTError:
+    except Nl2Hltl2PlanError:  # a refusal of the text or of the world's objects: exit 2 either way
         return None
     if r.partial:
         return None

@@ -140,6 +140,12 @@ class DraftBuilder:
         if any(it.obj is not None and it.obj.count > MAX_COUNT for it in fr.items):
             unparsed.append(f"{c_text} (more objects of one kind than any scene holds)")
             return True
+        objects = [it.obj for it in fr.items if it.obj is not None]
+        if any(o.heading_count or (o.generic and o.count > 2) for o in objects):
+            # "three things: the egg ... and the mug ...": the count of a heading (`restated` drops one whose
+            # count is the things listed) or of things of no named kind, not the count of the thing
+            unparsed.append(f"{c_text} (a count of things of no named kind)")
+            return True
         if fr.ambiguous:
             unparsed.append(f"{c_text} (a list of destinations)")
             return True

@@ -138,6 +138,8 @@ class NP:
     sliced: bool = False
     generic: bool = False
     water: bool = False
+    # "three things: the egg ...": a count before a colon counts what the heading names, not the head
+    heading_count: bool = False
 
     @property
     def empty(self) -> bool:
@@ -191,6 +193,9 @@ def parse_np(text: str) -> NP:
     # "put a fork in the mug, move both to the counter": a bare "both" names the things already said
     # (the fork and the mug), not a second fork
     _read_modifiers(np, [w for w in words if w != "both"] if not content else words)
+    if ":" in text:
+        heading = [w for w, _, _ in tokens(text.rsplit(":", 1)[0])]
+        np.heading_count = any(w.isdigit() or G.NUMBERS.get(w, 0) > 1 for w in heading)
     real = [m for m in mentions if not m.entry.generic]
     if real:
         # the head is the first mention unless it is followed by "of" + another ("bar of soap" is one entry)
