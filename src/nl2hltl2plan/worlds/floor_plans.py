@@ -78,7 +78,7 @@ def alfred_data() -> AlfredData:
     path = data_path("alfred", "trials.jsonl.gz")
     trials: dict[str, Trial] = {}
     by_fp: dict[str, list[str]] = {}
-    types: set[str] = set()
+    names: set[str] = set()  # 1,875 names in 267,477 poses: each name's type is taken once, at the end
     puts: set[tuple[str, str]] = set()
     try:
         for _n, row in iter_gzip_jsonl(path, "ALFRED trials file"):
@@ -101,12 +101,13 @@ def alfred_data() -> AlfredData:
             trial = Trial(row["trial"], row["floor_plan"], poses, ids, gotos, toggles)
             trials[trial.trial] = trial
             by_fp.setdefault(trial.floor_plan, []).append(trial.trial)
-            types.update(_type_of_name(n) for n, *_ in poses)
+            names.update(n for n, *_ in poses)
+        types = frozenset(map(_type_of_name, names))
     except (KeyError, ValueError, TypeError, AttributeError, IndexError) as exc:
         raise DataError(f"ALFRED trials file {path} is damaged: a record lacks or mistypes {exc}") from None
     if not trials:
         raise DataError(f"ALFRED trials file {path} holds no trial (empty or damaged)")
-    return AlfredData(trials, by_fp, frozenset(types), frozenset(puts))
+    return AlfredData(trials, by_fp, types, frozenset(puts))
 
 
 @cache

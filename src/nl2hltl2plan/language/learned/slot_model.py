@@ -14,6 +14,7 @@ from __future__ import annotations
 import io
 import math
 import re
+import threading
 import zipfile
 from collections import Counter
 from collections.abc import Callable
@@ -32,6 +33,7 @@ from nl2hltl2plan.language.learned.data import Example, states_kind
 from nl2hltl2plan.language.learned.ranker import TypeRanker
 
 ARTIFACT = "slot_model.npz"
+_KEPT = 4096  # texts whose head outputs a model keeps (a few KB each); the oldest go first
 
 
 def packaged_path(artifact: str) -> Path:
@@ -164,6 +166,10 @@ class SlotModel:
         self.meta = meta
         self.ranker = ranker  # orders the several scene types a word fits (`ranker.py`)
         self.dense = dense  # more features after the TF-IDF ones (`encoder_features.py`); None by default
+        # each head's probabilities per text: a reading asks for the same clause about twice (the
+        # grammar-first reading, the arbitration), and the suites read the same texts again
+        self._probs: dict[str, dict[str, np.ndarray]] = {}
+        self._lock = threading.Lock()  # the web server reads instructions on several threads
 
     def without_ranker(self) -> SlotModel:
         """The same slot model with no type ranker (its candidates keep the slot model's order)."""
@@ -238,14 +244,25 @@ class SlotModel:
         """Per text: kinds and slot types ranked; slot types limited to `types` (the scene) when given."""
         out = []
         for text in texts:
-            idx, val = self.features(text)
-            probs = {h: head.proba(idx, val) for h, head in self.heads.items()}
+            probs = self.probabilities(text)
             kinds = _ranked(self.heads["kind"].classes, probs["kind"], None)
             slots = {s: _ranked(self.heads[s].classes, probs[s], types) for s in SLOTS}
             classes = self.heads["sliced"].classes
             sliced = float(probs["sliced"][classes.index("yes")]) if "yes" in classes else 0.0
             out.append(SlotPrediction(kinds, slots, sliced))
         return out
+
+    def probabilities(self, text: str) -> dict[str, np.ndarray]:
+        """Each head's class probabilities for `text`, computed once per text (the arrays are shared:
+        callers only read them)."""
+        if (probs := self._probs.get(text)) is None:
+            idx, val = self.features(text)
+            probs = {h: head.proba(idx, val) for h, head in self.heads.items()}
+            with self._lock:
+                if len(self._probs) >= _KEPT:
+                    self._probs.pop(next(iter(self._probs)), None)
+                self._probs[text] = probs
+        return probs
 
     def arrays(self) -> dict[str, np.ndarray]:
         out: dict[str, np.ndarray] = {"meta": np.array([f"{k}={v}" for k, v in self.meta.items()])}
