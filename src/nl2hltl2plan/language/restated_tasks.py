@@ -6,10 +6,11 @@ its cycle is lost; "put a mug on the desk, then put the pillow on the bed after 
 desk" moves a second mug. Every backend's reading passes here (`translate.account_words`): a later task
 identical to an earlier one (kind, object, count, slice, container, destination, light, state) is
 
-- that task, when its words name the thing definitely ("the mug", "it", "this mug") in a clause that
-  refers to it ("before putting the mug ...", "once you've put the mug ...") or are the very words that
-  asked for it ("put the mug on the desk and put the mug on the desk"): its orders join the
-  earlier task (a cycle so made is refused, naming it; an order between the two is none);
+- that task, when its words name the thing definitely ("the mug", "it", "this mug") and either clause
+  only refers to it ("before putting the mug ...", "once you've put the mug ...", "before the pillow
+  goes on the bed, ... put the pillow on the bed") or the later words are the very words that asked for
+  it ("put the mug on the desk and put the mug on the desk"): its orders join the earlier task (a cycle
+  so made is refused, naming it; an order between the two is none);
 - another task, when the words mark another thing ("another mug", "the other mug", "a second mug") or
   name it indefinitely ("a mug ... a mug", "after you put a mug ..."): nothing changes;
 - refused by name where it cannot be told: "the mug" after two identical tasks (which one).
@@ -156,14 +157,10 @@ def _wording(text: str, types: set[str]) -> Wording:
 
 def _refers(text: str, instruction: str) -> bool:
     """Is the task's clause (`_plain` words, as the `_plain` instruction holds them) one that refers to a
-    task ("putting the mug ...", "you have put the mug ...", said after "before", "after", "once" ...)
-    rather than asks for it?"""
-    if not text or text not in instruction:
-        return False
-    first = text.split()[0]
-    if first.endswith("ing") or first == "you":
-        return True
-    return any(_REFERENCE_OPENING.search(instruction[:at]) for at in _places(text, instruction))
+    task, said right after "before", "after", "once" ... ("before putting the mug ...", "once you have
+    put the mug ...", "before the pillow goes ..."), rather than asks for it ("begin by putting ...")?"""
+    places = _places(text, instruction) if text else []
+    return any(_REFERENCE_OPENING.search(instruction[:at]) for at in places)
 
 
 def _places(text: str, instruction: str) -> list[int]:
