@@ -130,3 +130,35 @@ def test_the_h131_sets_read_as_their_ground_truth_says(name):
     assert [gt.instruction for gt, what, _ in outcomes if what == "wrong"] == []
     refusals = ("refused", "partial")
     assert all(what in (("converted",) if gt.feasible else refusals) for gt, what, _ in outcomes)
+
+
+def test_an_llm_backend_that_reads_a_reference_as_a_task_has_its_cycle_named(stub):
+    """The LLM backends pass the same rule: a decomposition that reads the two "before putting ..."
+    clauses as two more tasks is the cycle the text states."""
+    import json
+
+    from nl2hltl2plan.config.llm_settings import LLMSettings
+    from nl2hltl2plan.language.llm.client import LLMClient
+    from nl2hltl2plan.language.translate import translate
+    from nl2hltl2plan.worlds.demo import demo_world
+
+    said = (
+        "put the mug in the fridge before putting the plate in the microwave, and put the plate in the "
+        "microwave before putting the mug in the fridge"
+    )
+    texts = [
+        ("put the mug in the fridge", "mug", "fridge"),
+        ("putting the plate in the microwave", "plate", "microwave"),
+        ("put the plate in the microwave", "plate", "microwave"),
+        ("putting the mug in the fridge", "mug", "fridge"),
+    ]
+    tasks = [
+        {"id": f"1.{k}", "text": t, "kind": "place", "object": o, "receptacle": r}
+        for k, (t, o, r) in enumerate(texts, 1)
+    ]
+    relations = {"relations": [["1.1", "1.2"], ["1.3", "1.4"]]}
+    decomposition = {"tasks": tasks}
+    stub.answer = lambda body: json.dumps(relations if "temporal constraints" in str(body) else decomposition)
+    client = LLMClient(LLMSettings(base_url=stub.base_url, api_key="k", max_retries=0, cache_dir=None))
+    with pytest.raises(HTTError, match="cyclic order in the instruction: 'put the mug in the fridge' before"):
+        translate(said, demo_world(), "openai", client, build=False, actions="none")
