@@ -3,7 +3,8 @@
 A reading may hold one task twice: "put the mug on the desk before putting the pillow on the bed, and put
 the pillow on the bed before putting the mug on the desk" reads four tasks where the text names two, and
 its cycle is lost; "put a mug on the desk, then put the pillow on the bed after putting the mug on the
-desk" moves a second mug. Every backend's reading passes here (`translate.account_words`): a later task
+desk" moves a second mug. The offline, grammar and LLM backends' readings pass here (check 1,
+`translate.account_words`; the handover reader and the tabletop's rereading do not): a later task
 identical to an earlier one (kind, object, count, slice, container, destination, light, state) is
 
 - that task, when its words name the thing definitely ("the mug", "it", "this mug") and either clause
