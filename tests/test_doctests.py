@@ -19,6 +19,7 @@ MODULES = [
     "nl2hltl2plan.language.learned.ranker",
     "nl2hltl2plan.domain.task_kinds",
     "nl2hltl2plan.logic.action_sequences",
+    "nl2hltl2plan.language.restated_tasks",
 ]
 
 

@@ -87,7 +87,8 @@ def test_devices_and_folders_are_refused(tmp_path: Path, capsys: pytest.CaptureF
 
 def test_the_instruction_is_capped() -> None:
     world = demo_world()
-    longest = "Put the plate in the lower rack. " * (MAX_INSTRUCTION_CHARS // 33)
+    # "a plate" each time: "put the plate ..." said again is the one task (`restated_tasks`)
+    longest = "Put a plate into the lower rack. " * (MAX_INSTRUCTION_CHARS // 33)
     assert len(longest) <= MAX_INSTRUCTION_CHARS == 2000
     assert len(translate(longest, world, build=False).tasks) == MAX_INSTRUCTION_CHARS // 33
     t0 = time.monotonic()

@@ -46,6 +46,7 @@ from nl2hltl2plan.language.negations import (
 )
 from nl2hltl2plan.language.parsers import PARSERS, Parser
 from nl2hltl2plan.language.referents import Plurals, check_referents
+from nl2hltl2plan.language.restated_tasks import joined_restatements
 from nl2hltl2plan.language.result import Ambiguity, LanguageResult
 from nl2hltl2plan.language.spec_builder import GenerateLTL, build_spec
 from nl2hltl2plan.language.spelling import shorthand_read
@@ -188,11 +189,13 @@ def _keep_negations(
 def account_words(
     res: LanguageResult, world: SceneLike | None, instances: Counter[str] | None = None
 ) -> LanguageResult:
-    """Check 1 (`accounting.account`), the same for every backend: each content word the base tasks
+    """Check 1 (`accounting.account`), the same for every backend, on the reading with each task said
+    again joined to the task read before (`restated_tasks`): each content word the base tasks
     do not use, each slot no word names, each slot left empty (`unfilled_slots`) and what the world's
     reader adds (`WorldReader.unused`) goes to `unparsed` with its reason (the result is then partial).
     Counts the scene cannot satisfy and cyclic orders raise HTTError. `instances`: the world's
     `scene_instances`, when the caller has them."""
+    res = joined_restatements(res)  # a task said again is the task read before (issue 23)
     if instances is None and isinstance(world, World):
         instances = scene_instances(world)
     scene = world.name if world is not None else "the scene"

@@ -433,6 +433,8 @@ def joins(d: Draft, fr: Frame, it: Item) -> bool:
         # the draft so far only switched a lamp on: "turn on a lamp while holding a laptop"
         return fr.cls in {"pick", "examine"} or (fr.cls == "place" and last_fr.cls == "light")
     if same(o, cur):
+        if fr.cls == last_fr.cls == "place" and same(dest_of(it, fr.cls), dest_of(d.frames[-1][1], fr.cls)):
+            return False  # the placement said again, no wash ("... in the sink, and put the cup in the sink")
         # a task that is done ("a clean mug under the coffee maker") and a clause that names the object again
         # with a destination of its own ("a warm mug in the cabinet"): a second task on another one; so is
         # "a" tomato after one was put somewhere (an indefinite article introduces another referent)
