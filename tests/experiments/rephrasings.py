@@ -2055,3 +2055,44 @@ DEV_H113: dict[int, list[str]] = {
     4: ["Hi there buddy, put the orange n the green apple on the yellow plate first, then the red apple & "
         "the carrot on the blue plate. Thanks a lot!"],
 }
+
+# h132's held-out batch (session 22, issue 28): headings that count the things or stages that follow
+# ("Two things:", "Three jobs:", "Two stages. Stage one: ..."), written with DEV_H132 and scored once at the
+# end.
+VALID_H132: dict[int, list[str]] = {
+    1: ["Two tasks: the orange goes on the yellow plate; the green apple goes on the blue plate. Order "
+        "doesn't matter.",
+        "2 items to place: green apple on the blue plate, orange on the yellow plate."],
+    2: ["Three placements: the red apple goes on the blue plate; the green apple goes on the pink plate; "
+        "the orange goes on the yellow plate. Any order is fine.",
+        "Three things to do, in any order: green apple on the pink plate, orange on the yellow plate, red "
+        "apple on the blue plate."],
+    3: ["4 jobs: the carrot goes on the blue plate; the orange on the yellow plate; the green apple on the "
+        "green plate; the red apple on the pink plate. The sequence does not matter."],
+    4: ["Two steps. Step one: the green apple and the orange go on the yellow plate, in either order. Step "
+        "two: the carrot and the red apple go on the blue plate, in either order.",
+        "There are two stages. Stage 1: put the orange and the green apple on the yellow plate. Stage 2: "
+        "put the red apple and the carrot on the blue plate. Within each stage, any order."],
+}
+
+# h132's development batch: written at the same time as VALID_H132, in its classes, read per sentence.
+DEV_H132: dict[int, list[str]] = {
+    1: ["Two things: green apple goes on the blue plate; orange goes on the yellow plate. Sequence is "
+        "irrelevant.",
+        "Two placements to do: the green apple on the blue plate; the orange on the yellow plate.",
+        "2 things: orange on the yellow plate, green apple on the blue plate."],
+    2: ["Three jobs: the green apple goes on the pink plate; the orange goes on the yellow plate; the red "
+        "apple goes on the blue plate. The order is up to you.",
+        "Three things, any order: red apple on the blue plate, orange on the yellow plate, green apple on "
+        "the pink plate."],
+    3: ["Four placements to do: carrot on the blue plate; orange on the yellow plate; green apple on the "
+        "green plate; red apple on the pink plate. Any order.",
+        "Four tasks, in no particular order: the carrot on the blue plate, the orange on the yellow plate, "
+        "the green apple on the green plate and the red apple on the pink plate."],
+    4: ["Two stages. Stage one: put the green apple and the orange on the yellow plate, in any order. Stage "
+        "two: put the carrot and the red apple on the blue plate, in any order.",
+        "Two parts. Part 1: the green apple and the orange on the yellow plate. Part 2: the carrot and the "
+        "red apple on the blue plate. Within each part, any order.",
+        "Two steps: Step 1 - green apple and orange onto the yellow plate; Step 2 - carrot and red apple "
+        "onto the blue plate. Within each step, any order."],
+}

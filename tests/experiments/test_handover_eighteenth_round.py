@@ -60,9 +60,8 @@ REFUSED = [
         "block eventually ends up on the opposite side."),
     (5, "The red block should be placed first. Exchange the positions of the red and blue blocks. Put the "
         "yellow block on the opposite side."),
-    # a condition that restates the world's rule, and a count that names two blocks of three
+    # a condition that restates the world's rule (h132 reads "the 2 blocks red and blue": its round's tests)
     (2, "Put the three blocks into regions H, I and J; if a region already holds a block, use another one."),
-    (5, "Swap the 2 blocks red and blue, red first. Yellow to the opposite side at any time."),
     # "outside these two regions" after three regions: the count disagrees
     (3, "Move the three pillars to regions E, F and G. Do not put any pillar outside these two regions."),
 ]

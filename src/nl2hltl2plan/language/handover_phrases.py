@@ -333,6 +333,31 @@ def _new_block(m: Marked, names: list[str], text: str) -> str:
     return f" B{len(m.blocks) - 1} "
 
 
+# a count of blocks with their colours after it, with or without a comma or bracket ("the 2 blocks red and
+# blue", "the two blocks, red and blue", "both blocks (red and blue)"): the blocks of those colours, where the
+# colours listed are as many as the count; other lists are left to the rules below (which refuse them)
+_COUNTED_COLOURS = (
+    rf"\b(?:the\s+)?(two|three|both|2|3)\s+{GROUP_NOUNS}\s*(?:,\s*|\(\s*)?(?:the\s+)?"
+    rf"({COLOUR}(?:\s*(?:,|and|&)\s*(?:the\s+)?{COLOUR})*)(?:\s*\))?(?!\s*(?:{NOUN}|{NOUNS})\b)"
+)
+
+
+def _colours_counted(match: re.Match[str]) -> str:
+    """The blocks of the colours listed; a colour said again ("the 2 blocks red and blue, red placed ...")
+    ends the list there, and what follows is kept."""
+    found = list(re.finditer(COLOUR, match.group(2)))
+    repeat = next((k for k in range(len(found)) if found[k][0] in [f[0] for f in found[:k]]), len(found))
+    colours = [f[0] for f in found[:repeat]]
+    if COUNTS.get(match.group(1)) != len(colours):
+        return match.group(0)
+    rest = match.group(2)[found[repeat - 1].end() :] if repeat < len(found) else ""
+    if repeat == len(found):  # a closing bracket is the list's own
+        rest = re.sub(r"^\s*\)", "", match.group(0)[match.end(2) - match.start(0) :])
+    else:
+        rest += match.group(0)[match.end(2) - match.start(0) :]
+    return f" the {' and '.join(colours)} blocks {rest}"
+
+
 def _mark_blocks(m: Marked, scene: Scene, previous: str, previous_group: tuple[str, ...]) -> None:
     colours = (
         rf"\b(?:the\s+)?{COLOUR}(?:\s+{NOUN})?(?:\s+s\b)?(?:\s*(?:,|and|&|or|/)\s*(?:the\s+)?{COLOUR}(?:\s+{NOUN})?"
@@ -373,6 +398,7 @@ def _mark_blocks(m: Marked, scene: Scene, previous: str, previous_group: tuple[s
         return _new_block(m, scene.blocks, match.group(0))
 
     each = rf"\b(?:each|every|all)\s+(?:of\s+the\s+)?{count}(?:{NOUN}|{NOUNS})\b"  # not "any": one of them
+    m.sub(_COUNTED_COLOURS, _colours_counted)  # "the 2 blocks red and blue": the red and blue blocks
     counts = _counts_after_nouns(m)
     m.sub(colours, by_colour)
     m.sub(colours, by_colour)  # the phrases a repeated colour started

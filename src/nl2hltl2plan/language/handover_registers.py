@@ -290,7 +290,8 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     # narrative
     (
         r"\b(?:the\s+)?(?:robot\s+)?(?:arms|robots)\s+(?:will\s+|shall\s+|should\s+|must\s+|(?:have|need|are)\s+to\s+)?"
-        r"(?=(?:carry|move|take|put|place|bring|transfer|set|deliver|relocate|shift)\b)",
+        r"(?=(?:carry|move|take|put|place|bring|transfer|set|deliver|relocate|shift|stack|deposit|drop|arrange|"
+        r"position|distribute|return|send|lay|collect|gather|spread)\b)",
         " ",
     ),
     (

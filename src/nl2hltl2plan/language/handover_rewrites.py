@@ -462,6 +462,15 @@ REWRITES: tuple[tuple[str, str], ...] = (
         r"(.*?)\b(?:those\s+regions|them)\b",
         r"\2 \1 , one block per region ",
     ),
+    # "regions H, I and J each get one block: put the three blocks there": the regions said first, as the
+    # subject of the world's one-block rule, then the goal that puts the blocks "there" (read only with
+    # "each", which makes the count one per region)
+    (
+        r"^\s*(regions\s+[e-j](?:\s*,\s*[e-j])*\s*,?\s*and\s+[e-j])\s+(?:each\s+(?:gets?|takes?|receives?|holds?)\s+"
+        r"(?:only\s+|exactly\s+)?(?:one|a\s+single)\s+(?:block|object)|(?:gets?|takes?|receives?|holds?)\s+"
+        r"(?:only\s+|exactly\s+)?(?:one|a\s+single)\s+(?:block|object)\s+each)\s*:\s*(.*?)\s+there\b",
+        r"\2 on \1 , one block per region ",
+    ),
     # a reason that says again that the places kept empty must stay so: "keep regions F, G and H empty in
     # the meantime, as they must stay clear"
     (

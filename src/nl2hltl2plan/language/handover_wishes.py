@@ -77,6 +77,8 @@ _WISH_BEFORE_VERB = (
     r"(?:i|we)\s+(?:was|were|am|are)\s+hoping\s+(?:that\s+)?(?:you|the\s+(?:robot\s+)?arms|the\s+robots)\s+"
     r"(?:could|would|can|might|will)|"
     r"let\s+(?:s|us)|"
+    # "i would like the arms to put ...": the arms named in the wish are the ones asked
+    r"(?:i|we)\s+(?:would\s+(?:like|love|prefer)|want|need)\s+(?:the\s+(?:robot\s+)?arms|the\s+robots)\s+to|"
     r"(?:i|we)\s+(?:wonder|am\s+wondering|was\s+wondering)\s+(?:if|whether)\s+you\s+(?:could|would|can|might)|"
     r"(?:(?:could|would|can|will)\s+you\s+(?:possibly\s+|please\s+|kindly\s+)?)?"
     r"(?:have|get)\s+(?:the\s+)?(?:robot\s+)?(?:arms|robots)(?:\s+to)?)"

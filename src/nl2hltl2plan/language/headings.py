@@ -9,6 +9,10 @@ instruction before any reader or backend reads it.
   where nothing goes).
 - Any other label stays for the readers, which read its value ("Task: put ...") or refuse it by name
   ("Note: the fridge is cold").
+- A heading that counts what follows ("Two things:", "Three jobs to do:", "Two stages.", "4 placements -")
+  is found by `counted_headings`, for a world's reader to check against its reading: the things it counts
+  are the tasks, the stages the labelled steps ("Stage one: ... Stage two: ..."). It is never dropped
+  unchecked.
 - Questions and answers ("Q: Where does the mug go? A: In the sink. Q: And the apple? A: The fridge.
   Q: Order? A: Mug first.") become the instruction they state (`answered`): each answer fills its
   question's gap, a follow-up ("And the apple?") asks the question before it again, and an answer about
@@ -26,11 +30,12 @@ instruction before any reader or backend reads it.
 from __future__ import annotations
 
 import re
+from typing import NamedTuple
 
 from nl2hltl2plan.language.content_words import phrase_category, shared_words
 from nl2hltl2plan.language.questions import answered
 
-__all__ = ["answered", "unlabelled"]
+__all__ = ["CountedHeading", "answered", "counted_headings", "unlabelled"]
 
 _NUMBER_WORDS = frozenset("one two three four five six seven eight nine ten i ii iii iv v".split())
 _START = r"(?P<start>^|(?<=[.!?;])\s+)"
@@ -61,3 +66,44 @@ def _dropped(m: re.Match[str]) -> str:
 
 
 _EMPTY_LABELS = shared_words("empty_label")
+
+
+_COUNT_WORDS = {w: i for i, w in enumerate("one two three four five six seven eight nine ten".split(), 1)}
+# the nouns a heading counts: the tasks themselves, or the stages (labelled steps) they come in
+_TASK_NOUNS = "things?|tasks?|jobs?|placements?|moves?|items?|errands?|chores?|actions?"
+_STAGE_NOUNS = "stages?|steps?|parts?|phases?|rounds?|batch(?:es)?"
+# "one more thing:", "two last things:": what is added, not how many there are
+_NOT_A_TOTAL = "(?:more|other|last|final|further|extra|additional|remaining)"
+_COUNTED = re.compile(
+    rf"{_START}(?:(?:there\s+are|here\s+are|we\s+have|you\s+have|i\s+have)\s+)?"
+    rf"(?P<phrase>(?P<count>\d|{'|'.join(_COUNT_WORDS)})\s+(?:(?!{_NOT_A_TOTAL}\b)[a-z]+\s+)?(?:(?P<stages>{_STAGE_NOUNS})|{_TASK_NOUNS})"
+    r"(?:\s+(?:to\s+(?:do|place|make|carry\s+out)|in\s+(?:all|total)|for\s+(?:you|the\s+robot|today)))?)"
+    r"\s*(?P<end>[:.!,]|\s-+\s|\s*[—–])",
+    re.I,
+)
+
+
+class CountedHeading(NamedTuple):
+    """A heading's count: its words ("two things to do"), its number, and whether it counts stages."""
+
+    phrase: str
+    number: int
+    stages: bool
+    span: tuple[int, int]  # the heading in the text ("There are two stages."), its colon or stop included
+
+
+def counted_headings(text: str) -> list[CountedHeading]:
+    """The headings of `text` that count what follows ("Two things:", "There are two stages.", "3 jobs -"),
+    each opening a sentence; the number as said, digits or a word.
+
+    >>> [(h.phrase, h.number, h.stages) for h in counted_headings("Two stages. Stage one: ...")]
+    [('Two stages', 2, True)]
+    >>> counted_headings("Put two things on the plate. One more thing: ...")
+    []
+    """
+    out = []
+    for m in _COUNTED.finditer(text):
+        word = m["count"].lower()
+        count = int(word) if word.isdigit() else _COUNT_WORDS[word]
+        out.append(CountedHeading(m["phrase"], count, m["stages"] is not None, (m.end("start"), m.end())))
+    return out

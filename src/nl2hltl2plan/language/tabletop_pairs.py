@@ -34,6 +34,11 @@ from nl2hltl2plan.language.tabletop_chat import chat_read
 from nl2hltl2plan.language.tabletop_counts import plate_counts_read, plates_said_alone, total_counts_read
 from nl2hltl2plan.language.tabletop_dialogue import dialogue_read, scenario_read
 from nl2hltl2plan.language.tabletop_fields import fields_read
+from nl2hltl2plan.language.tabletop_headings import (
+    stage_headings_read,
+    task_headings_read,
+    task_headings_unread,
+)
 from nl2hltl2plan.language.tabletop_lines import bracketed_list_opened, lines_joined, names_spelt, stops_read
 from nl2hltl2plan.language.tabletop_order import (
     BEFORE,
@@ -199,7 +204,8 @@ class TabletopReader:
             )
         if entry := _ENTRIES.search(instruction.lower()):
             raise HTTError(f"'{entry[0]}' numbers the entries of a list: say whether they are steps in turn")
-        return numbered_steps(plate_waits_read(corrected(instruction, kinds), kinds))
+        # "Two stages. Stage one: ...": the heading checked against the labels before they are read
+        return numbered_steps(stage_headings_read(plate_waits_read(corrected(instruction, kinds), kinds)))
 
     def reread(self, instruction: str, backend: str) -> LanguageResult | None:
         return tabletop_fallback(instruction, self.world, backend)
@@ -271,6 +277,8 @@ class TabletopReader:
         for found in _TURNED_ROUND.finditer(res.instruction.lower()):
             why = "it may turn round what was asked: say what is meant"
             out[found[0]] = Unread(found[0], "negation", why)
+        for phrase, why in task_headings_unread(res.instruction, len(res.tasks)):  # "Three things:" and two
+            out[phrase] = Unread(phrase, "count", why)
         for word in misspelt_order_words(res.instruction):
             out[word] = Unread(word, "order", "it may misspell an order word: which one is not guessed")
         for found in _RATHER_THAN.finditer(res.instruction.lower()):
@@ -354,10 +362,16 @@ def read_pairs(text: str, types: set[str]) -> Reading | None:
     something is, names an object twice, or leaves an object or plate unpaired."""
     by_words = {camel_words(t): t for t in types}
     kinds = {w: _is_plate(t) for w, t in by_words.items()}
+    try:
+        text = stage_headings_read(text)  # "Two stages. Stage one: ...", as `TabletopReader.prepared` has it
+    except HTTError:
+        return None
     plain = plain_words(text, kinds, _shared_heads(by_words))
     plates = mention_pattern([w for w, plate in kinds.items() if plate])
     plain, plate_counts = plate_counts_read(plain, plates)  # "two for the yellow plate": checked below
     plain, total_counts = total_counts_read(plain)  # "- those four placements, that's all": checked below
+    plain, headed = task_headings_read(plain)  # "Two things: A on P; B on Q.": checked as the counts above
+    total_counts += headed
     unread_order = _RELATION_VERB.search(plain) or _ORDER_MATTERS.search(plain) or _ORDER_SAID.search(plain)
     labels_unread = _ALTERNATIVES.search(text.lower()) or _ENTRIES.search(text.lower())
     labels_unread = labels_unread or _TURNED_ROUND.search(text.lower())  # "swapped": never read round

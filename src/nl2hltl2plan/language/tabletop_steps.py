@@ -80,6 +80,17 @@ def steps_read(text: str, listed: bool) -> str | None:
     return list_numbers_read(text, listed)
 
 
+def labelled_steps(text: str) -> int:
+    """How many steps `text` labels ("Stage one: ... Stage two: ...") or numbers ("1) ... 2) ..."), where
+    they are 1, 2, ... in turn; 0 otherwise."""
+    labels = [_turn(m) for m in _labels(label_references_dropped(text))]
+    listed = [_list_number(m) for m in _LIST_NUMBER.finditer(text)]
+    for turns in (labels, listed):
+        if turns and turns == list(range(1, len(turns) + 1)):
+            return len(turns)
+    return 0
+
+
 def _one_placement_each(text: str, labels: list[re.Match[str]]) -> bool:
     """Does each labelled step say one placement (no "and", comma or "&" in it)?"""
     ends = [m.start() for m in labels[1:]] + [len(text)]
