@@ -84,7 +84,9 @@ def test_check_one_names_a_misspelt_object_that_the_reading_leaves_out():
         ("firrst", "first"),
         ("befoer", "before"),
         ("frst", None),  # "first", "fist"
-        ("thne", None),  # "then", "the", "thee": no swap preference for an order word
+        ("thne", "then"),  # "then", "the", "thee": "then" is the one two neighbours swapped make
+        ("firsst", "first"),  # "first", "firsts": "first" is the one a letter typed twice makes
+        ("firt", None),  # "first", "fit", "fir", "dirt": no slip makes one of them alone
         ("colour", None),  # a British spelling is English
         ("wilco", None),  # a word of the project's own lists (the handover radio words)
         ("woud", None),  # one edit from several words: which is meant is a guess

@@ -158,9 +158,10 @@ def _score(low: str, name: str) -> float:
 def spelt_word(word: str) -> str | None:
     """The English word that `word` misspells ("woould", "alriight", "cleean"): a word of four letters or
     more that neither the lexicon, the project's word lists nor English knows and that is one edit (a
-    letter more, less, changed, or two neighbours swapped) from exactly one English word, or two
-    neighbours swapped from exactly one of several, which `_respellable` allows; else None. Names are
-    `spelt_name`'s."""
+    letter more, less, changed, or two neighbours swapped) from exactly one English word, or two neighbours
+    swapped from exactly one of several, which `_respellable` allows; an order word only where it is the one
+    word near, or the one word that a letter typed twice or two neighbours swapped make ("firsst", "fisrt");
+    else None. Names are `spelt_name`'s."""
     low = word.lower()
     if len(low) < 4 or low in _known_words() or _english().known(_american(low)):
         return None
@@ -170,6 +171,11 @@ def spelt_word(word: str) -> str | None:
     # two neighbours swapped is the commonest slip: "claen" is "clean", not "clan" or "caen" (a letter
     # dropped or changed), where exactly one word is that swap away
     swapped = {w for w in near if len(w) == len(low) and _neighbours_swapped(w, low)}
+    # an order word too, and a letter typed twice: "fisrt" is "first" (not "fist"), "firsst" "first" (not
+    # "firsts"), where exactly one word is that slip away and it is an order word
+    for slip in ({w for w in near if _letter_doubled(w, low)}, swapped):
+        if len(slip) == 1 and _order_word(word := next(iter(slip))):
+            return word
     close = swapped if len(near) > 1 and len(swapped) == 1 else near
     return next(iter(close)) if len(close) == 1 and _respellable(next(iter(close))) else None
 
@@ -234,6 +240,13 @@ def closed_near(word: str, words: frozenset[str]) -> set[str]:
     same_letters = [w for w in words if len(w) == len(low) and sorted(w) == sorted(low)]
     swapped = {w for w in same_letters if _neighbours_swapped(w, low)}
     return swapped or (set() if english_word(low) else one_edit(low) & words)
+
+
+def _letter_doubled(word: str, typed: str) -> bool:
+    """Is `typed` `word` with one of its letters typed twice ("firsst", "aftter")?"""
+    return len(typed) == len(word) + 1 and any(
+        typed[i] == typed[i + 1] and typed[:i] + typed[i + 1 :] == word for i in range(len(typed) - 1)
+    )
 
 
 def _neighbours_swapped(a: str, b: str) -> bool:
