@@ -49,16 +49,20 @@ def split_clauses(sentence: str) -> list[tuple[str, int, int, str]]:
         if _is_verb_at(words, i):
             j = i - 1
             joiner = ""
+            ends_before = -1  # "X first and then Y": the "first" that ends the clause before
             while j >= 0 and (words[j][0] in G.CLAUSE_JOINERS or words[j][0] == ",") and not _ends_an_order(
                 words, j
             ):
                 if words[j][0] in G.SEQ_JOINERS and not (joiner and G.SEQ_JOINERS[words[j][0]] == "first"):
-                    # "X first and then Y": "first" ends the clause before, "then" joins this one
                     joiner = G.SEQ_JOINERS[words[j][0]]
+                elif words[j][0] in G.SEQ_JOINERS and ends_before < 0:
+                    ends_before = j  # it stays with that clause, whose order reads it ("first" at its end)
                 elif words[j][0] in {"to", "and", "while", "plus", "or", "as"} and not joiner:
                     joiner = words[j][0]
                 j -= 1
             cut = words[j + 1][1] if j + 1 < i else words[i][1]
+            if ends_before >= j + 1:
+                cut = words[ends_before][2]
             cuts.append((cut if i else 0, joiner))
     if not cuts or cuts[0][0] != 0:
         cuts.insert(0, (0, ""))

@@ -33,9 +33,9 @@ def relate(
     """The `before` pairs (task ids, which this step assigns). A reference that names no task but states one
     ("after picking up the box") adds that task to `tasks`; what cannot be resolved goes to `b.unparsed`."""
     edges: Edges = set()
-    for spec in tasks.specs:  # "put the potato in the microwave last and the apple in the fridge first"
+    for x, spec in enumerate(tasks.specs):  # "put the potato in the microwave last and the apple ... first"
         if left := _ORDER_WORD_LEFT.search(spec.text):
-            b.unparsed.append(f"{spec.text!r} ({left[1]!r}: an order word inside a clause, not read)")
+            _clause_end_said(x, left[1].lower(), tasks, text, b)
     free = {t for u in tasks.units if any(kind == G.FREE for kind, _ in u.markers) for t in u.tasks}
     steps = sentence_steps(tasks.units)
     # "A and B in any order, and finally C": "finally" comes after no task whose order is left open
@@ -51,6 +51,20 @@ def relate(
 
 # an order adverb that ends a task's own words: no marker read it
 _ORDER_WORD_LEFT = re.compile(r"\b(first|last|lastly|finally|next|afterwards?|beforehand)\W*$", re.I)
+
+
+def _clause_end_said(x: int, word: str, tasks: Tasks, text: str, b: TaskBuilder) -> None:
+    """An order adverb at a task's end that no marker read is unread, except "first" on the first task right
+    before "then" ("put the sponge in the sink first, then the apple in the fridge"): it says what "then"
+    says."""
+    said = tasks.specs[x].text
+    at = text.lower().find(said.lower())
+    if word == "first" and x == 0 and at >= 0 and _THEN_NEXT.match(text, at + len(said)):
+        return
+    b.unparsed.append(f"{said!r} ({word!r}: an order word inside a clause, not read)")
+
+
+_THEN_NEXT = re.compile(r"\s*,?\s*(?:and\s+)?then\b", re.I)
 
 
 def _marker_edges(
