@@ -115,6 +115,7 @@ def train_and_report(out: Path, seed: int = 0) -> str:
     model.save(out)
     shares = ", ".join(f"{k} {100 * v:.1f}%" for k, v in span_accuracy(model).items())
     return (
-        f"structure model: {N_TRAIN} synthetic instructions, {len(model.feature_names)} features, "
+        f"structure model: {len(data)} synthetic instructions ({N_TRAIN} drawn), "
+        f"{len(model.feature_names)} features, "
         f"trained in {secs:.0f} s -> {out}\nvalid_unseen compositions: {shares}"
     )
