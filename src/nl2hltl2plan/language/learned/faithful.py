@@ -91,20 +91,18 @@ def text_label(e: Example, types: set[str]) -> tuple[BaseTaskSpec, tuple[str, ..
     used: set[int] = set()
     lists: dict[str, list[str]] = {}
     unsaid: list[str] = []
+    sources: list[str] = []  # a destination said only where the object comes from: unsaid too
     for role in slots_of(e.kind):
         label = e.slot(role)
         if label not in types:
             return None
-        hit = next(
-            (
-                i
-                for i, m in enumerate(mentions)
-                if i not in used
-                and label in m.entry.types
-                and not (role == "receptacle" and _SOURCE.search(e.text[: m.char_start]))
-            ),
-            None,
-        )
+        fits = [i for i, m in enumerate(mentions) if i not in used and label in m.entry.types]
+        said = [
+            i for i in fits if role != "receptacle" or not _SOURCE.search(e.text[: mentions[i].char_start])
+        ]
+        hit = (said or fits or [None])[0]
+        if hit is not None and not said:
+            sources.append(role)
         if hit is None:
             unsaid.append(role)
             lists[role] = [label]
@@ -129,7 +127,7 @@ def text_label(e: Example, types: set[str]) -> tuple[BaseTaskSpec, tuple[str, ..
         receptacle=lists.get("receptacle"),
         light=lists.get("light"),
     )
-    return task, tuple(unsaid)
+    return task, tuple(unsaid + sources)
 
 
 def faithful_examples(examples: list[Example], scene_types_of: dict[str, set[str]]) -> list[FaithfulExample]:
