@@ -18,6 +18,8 @@ from nl2hltl2plan.language.learned.faithful import (
     text_task,
     training_example,
 )
+from nl2hltl2plan.language.learned.rescue import rewrite
+from nl2hltl2plan.language.learned.slot_model import SlotPrediction
 
 ROOM = {"Apple", "Fridge", "CounterTop", "DiningTable", "CoffeeTable", "Mug", "Cabinet", "Toilet", "SoapBar"}
 ROOM |= {"SoapBottle", "SinkBasin", "Microwave", "DeskLamp", "CD", "Shelf", "Tomato", "Bowl", "Lettuce"}
@@ -104,3 +106,23 @@ def test_a_composition_holding_an_under_specified_annotation_is_left_out_and_the
         # the same draws: exactly the rows that do not hold the marked annotation, in the same order
         assert len(every) == 60 and 0 < len(kept) < 60, name
         assert [_text(c) for c in kept] == [_text(c) for c in without], name
+
+
+class _Reads:
+    """A slot model stand-in that reads every clause as putting the mug in `place` (confidently)."""
+
+    def __init__(self, place: str) -> None:
+        self.place = place
+
+    def predict(self, texts: list[str], types: set[str] | None) -> list[SlotPrediction]:
+        slots = {"object": [("Mug", 0.9)], "receptacle": [(self.place, 0.6)]}
+        return [SlotPrediction([("place", 0.9)], dict(slots)) for _ in texts]
+
+
+def test_the_rescue_never_takes_a_place_said_as_a_source_for_the_destination() -> None:
+    clause = "move the mug from the counter to the sink"
+    text = f"Put the apple in the fridge. {clause}"
+    assert rewrite(text, [clause], _Reads("CounterTop"), ROOM) is None  # type: ignore[arg-type]
+    # near miss: the place it goes to
+    again = rewrite(text, [clause], _Reads("SinkBasin"), ROOM)  # type: ignore[arg-type]
+    assert again == "Put the apple in the fridge. put the mug in the sink basin"

@@ -75,6 +75,11 @@ def text_task(e: Example, types: set[str]) -> BaseTaskSpec | None:
     return labelled[0] if labelled else None
 
 
+def a_source(text: str, start: int) -> bool:
+    """Whether the place named at `start` of `text` is where a thing is taken from ("from the sink")."""
+    return bool(_SOURCE.search(text[:start]))
+
+
 def composable(items: list[FaithfulExample]) -> bool:
     """Whether a composition of `items` has ground truth: every slot of every label named by its text."""
     return all(it.said for it in items)
@@ -98,7 +103,7 @@ def text_label(e: Example, types: set[str]) -> tuple[BaseTaskSpec, tuple[str, ..
             return None
         fits = [i for i, m in enumerate(mentions) if i not in used and label in m.entry.types]
         said = [
-            i for i in fits if role != "receptacle" or not _SOURCE.search(e.text[: mentions[i].char_start])
+            i for i in fits if role != "receptacle" or not a_source(e.text, mentions[i].char_start)
         ]
         hit = (said or fits or [None])[0]
         if hit is not None and not said:
