@@ -106,6 +106,11 @@ def test_a_composition_holding_an_under_specified_annotation_is_left_out_and_the
         # the same draws: exactly the rows that do not hold the marked annotation, in the same order
         assert len(every) == 60 and 0 < len(kept) < 60, name
         assert [_text(c) for c in kept] == [_text(c) for c in without], name
+    # the structure model's training keeps them (spans and order, not the unsaid slot)
+    every = made["synth"][0]
+    assert [_text(c) for c in synthesise(marked, 60, TRAIN_STYLE, seed=5, said_only=False)] == [
+        _text(c) for c in every
+    ]
 
 
 class _Reads:

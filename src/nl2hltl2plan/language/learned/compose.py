@@ -439,9 +439,12 @@ def _finish(text: str, rng: random.Random) -> str:
     return text
 
 
-def synthesise(items: list[FaithfulExample], n: int, style: Connectives, seed: int = 0) -> list[Synth]:
+def synthesise(
+    items: list[FaithfulExample], n: int, style: Connectives, seed: int = 0, said_only: bool = True
+) -> list[Synth]:
     """`n` instructions of 1-5 spans (one floor plan each, different trials), deterministic for a seed,
-    less those that would hold an under-specified annotation (`faithful.composable`)."""
+    less those that would hold an under-specified annotation (`faithful.composable`) unless `said_only`
+    is off (the structure model's training: spans and their order, which an unsaid slot does not touch)."""
     from nl2hltl2plan.language.learned.span_order import before_pairs
 
     rng = random.Random(seed)
@@ -468,7 +471,7 @@ def synthesise(items: list[FaithfulExample], n: int, style: Connectives, seed: i
         tasks = [c.task.model_copy(update={"id": i, "text": ""}) for c, i in zip(chosen, ids, strict=True)]
         before = [(ids[a], ids[b]) for a, b in before_pairs(rels, targets)]
         drawn += 1
-        if not composable(chosen):
+        if said_only and not composable(chosen):
             continue
         out.append(Synth(lowered, spans, rels, tasks, before, chosen[0].example.floor_plan, targets))
     return out

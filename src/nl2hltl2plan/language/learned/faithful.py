@@ -14,7 +14,8 @@ instruction the authority and uses the ALFRED parameters only as hints for what 
   then the label says more than the text ("turn on the desk lamp" labelled examining a CD, "chill the
   lettuce" labelled the sink as its destination): the annotation is *under-specified*
   (`FaithfulExample.unsaid`), the slot model learns nothing for that slot (`training_example`), and no
-  composed instruction, for training or validation, holds it (`composable`). A place named only as where
+  composed validation instruction holds it (`composable`; the structure model's training compositions
+  keep it: they teach spans and order, not the unsaid slot). A place named only as where
   the object comes from ("get an apple from the sink and heat it") does not name the destination;
 - `sliced` only when the text says slice / sliced / piece / toast (and ALFRED's object is sliced);
 - a treatment kind (heat / cool / clean) only when the text states it, `place_two` only when the text
