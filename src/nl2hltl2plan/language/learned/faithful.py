@@ -106,7 +106,7 @@ def text_label(e: Example, types: set[str]) -> tuple[BaseTaskSpec, tuple[str, ..
         said = [
             i for i in fits if role != "receptacle" or not a_source(e.text, mentions[i].char_start)
         ]
-        hit = (said or fits or [None])[0]
+        hit = (said or fits)[0] if said or fits else None
         if hit is not None and not said:
             sources.append(role)
         if hit is None:
