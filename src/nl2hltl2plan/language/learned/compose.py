@@ -15,7 +15,7 @@ import random
 import re
 from dataclasses import dataclass
 
-from nl2hltl2plan.language.learned.faithful import FaithfulExample, by_floor_plan
+from nl2hltl2plan.language.learned.faithful import FaithfulExample, by_floor_plan, composable
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter
 
 # Relation of a span to what came before it (text order): START the first; SEQ after the current step;
@@ -439,15 +439,20 @@ def _finish(text: str, rng: random.Random) -> str:
     return text
 
 
-def synthesise(items: list[FaithfulExample], n: int, style: Connectives, seed: int = 0) -> list[Synth]:
-    """`n` instructions of 1-5 spans (one floor plan each, different trials), deterministic for a seed."""
+def synthesise(
+    items: list[FaithfulExample], n: int, style: Connectives, seed: int = 0, said_only: bool = True
+) -> list[Synth]:
+    """`n` instructions of 1-5 spans (one floor plan each, different trials), deterministic for a seed,
+    less those that would hold an under-specified annotation (`faithful.composable`) unless `said_only`
+    is off (the structure model's training: spans and their order, which an unsaid slot does not touch)."""
     from nl2hltl2plan.language.learned.span_order import before_pairs
 
     rng = random.Random(seed)
     by_plan = by_floor_plan(items)
     plans = sorted(by_plan)
     out: list[Synth] = []
-    while len(out) < n:
+    drawn = 0  # instructions drawn, kept or not (`faithful.composable`)
+    while drawn < n:
         k = rng.choice([1, 2, 2, 3, 3, 4, 5])
         pool = by_plan[rng.choice(plans)]
         chosen = rng.sample(pool, min(k, len(pool)))
@@ -465,5 +470,8 @@ def synthesise(items: list[FaithfulExample], n: int, style: Connectives, seed: i
         ids = [task_letter(i) for i in range(len(chosen))]
         tasks = [c.task.model_copy(update={"id": i, "text": ""}) for c, i in zip(chosen, ids, strict=True)]
         before = [(ids[a], ids[b]) for a, b in before_pairs(rels, targets)]
+        drawn += 1
+        if said_only and not composable(chosen):
+            continue
         out.append(Synth(lowered, spans, rels, tasks, before, chosen[0].example.floor_plan, targets))
     return out

@@ -24,7 +24,7 @@ from nl2hltl2plan.language.learned.compose import (
     words_for,
 )
 from nl2hltl2plan.language.learned.data import Composition
-from nl2hltl2plan.language.learned.faithful import FaithfulExample, by_floor_plan
+from nl2hltl2plan.language.learned.faithful import FaithfulExample, by_floor_plan, composable
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter, transitive_reduction
 
 
@@ -134,13 +134,15 @@ def _pick(
 
 
 def compose_refs(items: list[FaithfulExample], n: int, fam: RefPhrases, seed: int = 0) -> list[Composition]:
-    """`n` instructions of 1-5 base tasks (a fifth each), each from one floor plan (deterministic)."""
+    """`n` instructions of 1-5 base tasks (a fifth each), each from one floor plan (deterministic), less
+    those that would hold an under-specified annotation (`faithful.composable`)."""
     rng = random.Random(seed)
     by_plan = by_floor_plan(items)
     plans = sorted(by_plan)
     out: list[Composition] = []
-    while len(out) < n:
-        k = 1 + len(out) % 5
+    drawn = 0  # instructions drawn, kept or not (`faithful.composable`)
+    while drawn < n:
+        k = 1 + drawn % 5
         pool = by_plan[rng.choice(plans)]
         chosen = rng.sample(pool, min(k, len(pool)))
         clauses = [_clause(c.text) for c in chosen]
@@ -157,6 +159,9 @@ def compose_refs(items: list[FaithfulExample], n: int, fam: RefPhrases, seed: in
         text, pairs = made
         ids = [t.id for t in tasks]
         before = list(transitive_reduction({(ids[a], ids[b]) for a, b in pairs}, ids))
+        drawn += 1
+        if not composable(chosen):
+            continue
         out.append(Composition(text, chosen[0].example.floor_plan, tasks, before, "refs",
                                [c.example.trial for c in chosen]))
     return out

@@ -10,13 +10,20 @@ instruction the authority and uses the ALFRED parameters only as hints for what 
   `Grounder.resolve`: "table" -> all tables present, "knife" -> Knife and ButterKnife present, "cup" ->
   Cup, else Mug);
 - a slot the text does not name keeps ALFRED's type (the hint) only if the text names no other object
-  that could be meant instead; otherwise the annotation is left out (its label would be a guess);
+  that could be meant instead; otherwise the annotation is left out (its label would be a guess). Even
+  then the label says more than the text ("turn on the desk lamp" labelled examining a CD, "chill the
+  lettuce" labelled the sink as its destination): the annotation is *under-specified*
+  (`FaithfulExample.unsaid`), the slot model learns nothing for that slot (`training_example`), and no
+  composed validation instruction holds it (`composable`; the structure model's training compositions
+  keep it: they teach spans and order, not the unsaid slot). A place named only as where
+  the object comes from ("get an apple from the sink and heat it") does not name the destination;
 - `sliced` only when the text says slice / sliced / piece / toast (and ALFRED's object is sliced);
 - a treatment kind (heat / cool / clean) only when the text states it, `place_two` only when the text
   says two / both / pair / couple: otherwise the annotation is left out (the guide's reading is unclear).
 
 `compose_faithful` synthesises 1-4 task instructions from such annotations (fixed seed) with varied
-connectives and nested groups.
+connectives and nested groups. A composition that would hold an under-specified annotation is drawn and
+then left out, so that the other rows stay those of the same seed before the rule (the set is smaller).
 """
 
 from __future__ import annotations
@@ -34,6 +41,13 @@ _SLICE = re.compile(
     r"\bslice|\bsliced\b|\bpiece|\btoast|\bwedge|\bchunk|\bsection|\bhal(f|ves)\b|\bquarter", re.I
 )
 _TWO = re.compile(r"\b(two|2|both|pair|couple|second|another|other)\b", re.I)
+# A place named right after "from" / "out of" / "off" (a determiner and one word may come between) is
+# where the object is taken from, never its destination ("the second from the bottom shelf" is a place).
+_SOURCE = re.compile(
+    r"(?<!second\s)(?<!third\s)(?<!fourth\s)\b(?:from|out\s+of|off(?:\s+of)?)\s+"
+    r"(?:(?:the|a|an|your|its|that|this)\s+)?(?:[a-z-]+\s+)?$",
+    re.I,
+)
 # The knife that slices the object: a mention of it is not an object that may be meant instead.
 _KNIVES = {"Knife", "ButterKnife"}
 
@@ -44,6 +58,12 @@ class FaithfulExample:
 
     example: Example
     task: BaseTaskSpec
+    unsaid: tuple[str, ...] = ()  # the roles the text never names: their types are ALFRED's hints
+
+    @property
+    def said(self) -> bool:
+        """Whether the text names every slot of its label (else it is under-specified)."""
+        return not self.unsaid
 
     @property
     def text(self) -> str:
@@ -52,6 +72,22 @@ class FaithfulExample:
 
 def text_task(e: Example, types: set[str]) -> BaseTaskSpec | None:
     """The base task the guide would write for the annotation's text alone (None: unclear, left out)."""
+    labelled = text_label(e, types)
+    return labelled[0] if labelled else None
+
+
+def a_source(text: str, start: int) -> bool:
+    """Whether the place named at `start` of `text` is where a thing is taken from ("from the sink")."""
+    return bool(_SOURCE.search(text[:start]))
+
+
+def composable(items: list[FaithfulExample]) -> bool:
+    """Whether a composition of `items` has ground truth: every slot of every label named by its text."""
+    return all(it.said for it in items)
+
+
+def text_label(e: Example, types: set[str]) -> tuple[BaseTaskSpec, tuple[str, ...]] | None:
+    """`text_task`'s task with the roles the text does not name (None: unclear, left out)."""
     if not states_kind(e):
         return None
     if e.kind == "place_two" and not _TWO.search(e.text):
@@ -61,11 +97,18 @@ def text_task(e: Example, types: set[str]) -> BaseTaskSpec | None:
     used: set[int] = set()
     lists: dict[str, list[str]] = {}
     unsaid: list[str] = []
+    sources: list[str] = []  # a destination said only where the object comes from: unsaid too
     for role in slots_of(e.kind):
         label = e.slot(role)
         if label not in types:
             return None
-        hit = next((i for i, m in enumerate(mentions) if i not in used and label in m.entry.types), None)
+        fits = [i for i, m in enumerate(mentions) if i not in used and label in m.entry.types]
+        said = [
+            i for i in fits if role != "receptacle" or not a_source(e.text, mentions[i].char_start)
+        ]
+        hit = (said or fits)[0] if said or fits else None
+        if hit is not None and not said:
+            sources.append(role)
         if hit is None:
             unsaid.append(role)
             lists[role] = [label]
@@ -79,7 +122,7 @@ def text_task(e: Example, types: set[str]) -> BaseTaskSpec | None:
     ]
     if unsaid and others:
         return None  # the text names an object that may be the one meant: the label would be a guess
-    return BaseTaskSpec(
+    task = BaseTaskSpec(
         id="A",
         text=e.text,
         kind=e.kind,  # type: ignore[arg-type]
@@ -90,15 +133,16 @@ def text_task(e: Example, types: set[str]) -> BaseTaskSpec | None:
         receptacle=lists.get("receptacle"),
         light=lists.get("light"),
     )
+    return task, tuple(unsaid + sources)
 
 
 def faithful_examples(examples: list[Example], scene_types_of: dict[str, set[str]]) -> list[FaithfulExample]:
     """The annotations whose text-faithful label is clear, each with that label (order kept)."""
     out = []
     for e in examples:
-        task = text_task(e, scene_types_of[e.floor_plan])
-        if task is not None:
-            out.append(FaithfulExample(e, task))
+        labelled = text_label(e, scene_types_of[e.floor_plan])
+        if labelled is not None:
+            out.append(FaithfulExample(e, *labelled))
     return out
 
 
@@ -155,13 +199,15 @@ def by_floor_plan(items: list[FaithfulExample]) -> dict[str, list[FaithfulExampl
 
 
 def compose_faithful(items: list[FaithfulExample], n: int, seed: int = 0) -> list[Composition]:
-    """`n` instructions of 1-4 base tasks (a quarter each), each from one floor plan (deterministic)."""
+    """`n` instructions of 1-4 base tasks (a quarter each), each from one floor plan (deterministic), less
+    those that would hold an under-specified annotation (`composable`)."""
     rng = random.Random(seed)
     by_plan = by_floor_plan(items)
     plans = sorted(by_plan)
     out: list[Composition] = []
-    while len(out) < n and plans:
-        k = 1 + len(out) % 4
+    drawn = 0  # compositions drawn, kept or not (`composable`): the draws do not depend on the rule
+    while drawn < n and plans:
+        k = 1 + drawn % 4
         plan = rng.choice(plans)
         pool = by_plan[plan]
         chosen: list[FaithfulExample] = []
@@ -180,17 +226,20 @@ def compose_faithful(items: list[FaithfulExample], n: int, seed: int = 0) -> lis
         for i, (it, clause) in enumerate(zip(chosen, clauses, strict=True)):
             tasks.append(it.task.model_copy(update={"id": task_letter(i), "text": clause}))
         before = [(task_letter(a), task_letter(b)) for a, b in pairs]
-        out.append(Composition(text, plan, tasks, before, template, [it.example.trial for it in chosen]))
+        drawn += 1
+        if composable(chosen):
+            out.append(Composition(text, plan, tasks, before, template, [it.example.trial for it in chosen]))
     return out
 
 
 def training_example(item: FaithfulExample) -> Example:
     """The annotation with its text-faithful labels for the slot model: `sliced` as the text says, and a
-    slot whose word can mean several scene types left unlabelled ("" -> that head does not learn from
-    it), so the model does not learn to pick what the annotator did not say."""
+    slot whose word can mean several scene types, or that the text never names (`unsaid`), left
+    unlabelled ("" -> that head does not learn from it), so the model does not learn to pick what the
+    annotator did not say."""
     changes: dict[str, object] = {"sliced": item.task.sliced}
     for s in SLOTS:
         types = getattr(item.task, s) or []
-        if len(types) > 1:
+        if len(types) > 1 or s in item.unsaid:
             changes[s] = ""
     return replace(item.example, **changes)  # type: ignore[arg-type]

@@ -19,6 +19,7 @@ from functools import cache
 from nl2hltl2plan.language.grammar.drafts import states_where
 from nl2hltl2plan.language.grammar.sentences import normalize
 from nl2hltl2plan.language.grounding import camel_words, find_mentions, lexicon
+from nl2hltl2plan.language.learned.faithful import a_source
 from nl2hltl2plan.language.learned.slot_model import SlotModel, SlotPrediction
 
 _IN_CLAUSE = re.compile(
@@ -89,9 +90,13 @@ def _names_object(clause: str, pred: SlotPrediction, slot: str = "object") -> bo
 
 
 def _names_place(clause: str, pred: SlotPrediction) -> bool:
-    """The clause names the predicted receptacle, or its verb implies it ("throw the apple away")."""
+    """The clause names the predicted receptacle, or its verb implies it ("throw the apple away"); a place
+    it names only as where the thing comes from ("from the counter to the sink") is not its destination."""
     top = pred.slots.get("receptacle") or []
     if not top:
+        return False
+    at = [m.char_start for m in find_mentions(clause) if top[0][0] in m.entry.types]
+    if at and all(a_source(clause, i) for i in at):
         return False
     implied = {place for w in re.findall(r"[a-z]+", clause.lower()) for place in _verb_places(w)}
     return top[0][0] in implied or _names_object(clause, pred, "receptacle")
