@@ -94,6 +94,9 @@ def test_the_grammar_reading_stands_the_pairs_reading_checks_it_or_reads_what_it
         "If you don't mind the mess, carrot: blue plate",  # a condition, not a courtesy frame
         "Three moves: carrot: blue plate, orange: yellow plate",  # a heading's count that is not theirs
         "put the carrot next to the blue plate, then the orange on the yellow plate",  # "next to"
+        # "first" before "after you put": the structure model rebuilt in session 22 read the second pair first
+        "Please, first you put the green apple and the orange in the plate yellow, and after you put the "
+        "carrot and the red apple in the plate blue.",
         "Put the carrot on the blue plate, but wait until the carrot is on the yellow plate.",  # named twice
         "Put the carrot on the blue plate, but wait until you are ready.",  # a wait for no placement
         # done with a plate that is not the step just said

@@ -203,6 +203,34 @@ def misordered(
         if not pairs & closure:
             words = instruction[conn.start() : named.char_end]
             out.append(Unread(words, "order", "the reading does not order the tasks as these words say"))
+    return out + _first_not_first(instruction, mentions, parse, objects, closure)
+
+
+# "first" opening a sentence (after a word or two set off by a comma: "Please, first you put ...")
+_OPENING_FIRST = re.compile(
+    r"(?:^|[.;!?]\s+)(?:[a-z']+(?:\s+[a-z']+)?\s*,\s*)?(?P<first>first)\b(?!\s*,)", re.I
+)
+
+
+def _first_not_first(
+    instruction: str,
+    mentions: list[Mention],
+    parse: ParseUsage,
+    objects: set[str],
+    closure: set[tuple[str, str]],
+) -> list[Unread]:
+    """ "First A, and after you put B ..." read with B before A: the tasks of the clause "first" opens
+    (to its first comma) must not come after another task of the same sentence."""
+    out = []
+    for m in _OPENING_FIRST.finditer(instruction):
+        start, end = _sentence_span(instruction, m.start("first"))
+        comma = instruction.find(",", m.end(), end)
+        if comma < 0:
+            continue
+        firsts = _tasks_in(instruction, parse, (m.start("first"), comma), mentions, objects)
+        others = _tasks_in(instruction, parse, (comma, end), mentions, objects) - firsts
+        if any((b, a) in closure for a in firsts for b in others):
+            out.append(Unread(m["first"], "order", "the reading puts another task before what 'first' opens"))
     return out
 
 
