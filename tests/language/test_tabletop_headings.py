@@ -45,7 +45,12 @@ def test_a_heading_whose_count_the_reading_keeps_is_read(text, read):
     ],
 )
 def test_a_count_of_things_the_reading_does_not_make_is_named(text):
-    res = translate(text, WORLD, build=False)
+    heading = text.split(":")[0]
+    try:
+        res = translate(text, WORLD, build=False)
+    except HTTError as exc:  # the grammar leaves a clause under a heading's count unread: all refused
+        assert heading in str(exc)
+        return
     assert res.partial and any("(count)" in u and "it counts" in u for u in res.unparsed)
 
 

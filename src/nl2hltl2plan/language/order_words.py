@@ -206,9 +206,11 @@ def misordered(
     return out + _first_not_first(instruction, mentions, parse, objects, closure)
 
 
-# "first" opening a sentence (after a word or two set off by a comma: "Please, first you put ...")
+# "first" opening a sentence, after a courtesy word at most ("Please, first you put ..."), not set off by a
+# comma ("First, ..." opens the whole sentence) nor after an order phrase ("after that, first the saucers")
 _OPENING_FIRST = re.compile(
-    r"(?:^|[.;!?]\s+)(?:[a-z']+(?:\s+[a-z']+)?\s*,\s*)?(?P<first>first)\b(?!\s*,)", re.I
+    r"(?:^|[.;!?]\s+)(?:(?:please|ok|okay|so|now|alright|right|well)\s*,?\s*)?(?P<first>first)\b(?!\s*,)",
+    re.I,
 )
 
 
