@@ -176,8 +176,9 @@ def run(args: argparse.Namespace) -> int:
             progress=bar.row,
         )
     command = " ".join(["nl2hltl2plan", *sys.argv[1:]]) if sys.argv else ""
+    plurals = "" if args.oracle else f", plurals {args.plurals}"  # how a bare plural of many is read
     title = (
-        f"ALFRED benchmark, {source}, objective {args.objective}, mode {args.mode} "
+        f"ALFRED benchmark, {source}{plurals}, objective {args.objective}, mode {args.mode} "
         f"({len(rows)} scenarios, {workers} workers)"
     )
     summary = write_report(rows_of(rows), out, title, command, machine_description())
