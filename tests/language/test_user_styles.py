@@ -210,3 +210,22 @@ def test_user_style_set_converts(name, least):
     assert [gt.instruction for gt, what in zip(gts, outcomes, strict=True) if what == "wrong"] == []
     feasible = [what for gt, what in zip(gts, outcomes, strict=True) if gt.feasible]
     assert feasible.count("converted") >= 0.9 * len(feasible)
+
+
+# a wrong reading h126's held-out half found and left (the lexicon's "soap bars" names one bar)
+KNOWN_WRONG = {"put the soap bars in the cabinet"}
+
+
+@pytest.mark.sweep
+@pytest.mark.data
+@pytest.mark.parametrize(
+    "name", sorted(p.stem for p in (Path(__file__).parent / "data" / "styles").glob("*.txt"))
+)
+def test_no_committed_style_set_is_read_wrong(name):
+    """Every style set at once (`-m sweep`): a change to a shared rule may read another helper's line
+    otherwise than its ground truth says (session 22: the one-slip respelling read three lines marked as
+    refusals), which the per-set tests, each asserting its own set, do not all see."""
+    import trust_sets
+
+    wrong = [gt.instruction for gt in trust_sets.load(name) if trust_sets.outcome(gt)[0] == "wrong"]
+    assert set(wrong) <= KNOWN_WRONG, wrong
