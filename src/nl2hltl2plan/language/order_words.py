@@ -233,7 +233,18 @@ def _first_not_first(
         others = _tasks_in(instruction, parse, (comma, end), mentions, objects) - firsts
         if any((b, a) in closure for a in firsts for b in others):
             out.append(Unread(m["first"], "order", "the reading puts another task before what 'first' opens"))
+    for m in _CLOSING_FIRST.finditer(instruction):  # "A, put B first, then C": B before A too
+        start, end = _sentence_span(instruction, m.start())
+        opens = max(instruction.rfind(",", start, m.start()), instruction.rfind(";", start, m.start()), start)
+        firsts = _tasks_in(instruction, parse, (opens, m.start()), mentions, objects)
+        others = _tasks_in(instruction, parse, (start, end), mentions, objects) - firsts
+        if firsts and any((b, a) in closure for a in firsts for b in others):
+            out.append(Unread("first", "order", "the reading puts another task before the one said first"))
     return out
+
+
+# "first" closing a clause ("put the mug in the sink first, then ...", "... in the sink first.")
+_CLOSING_FIRST = re.compile(r"(?<=\w)\s+first\b(?=\s*(?:[,;.!?]|$))", re.I)
 
 
 _CONNECTIVE = re.compile(
