@@ -44,7 +44,7 @@ import re
 import sys
 from collections import Counter, defaultdict
 from pathlib import Path
-from typing import Any
+from typing import Any, get_args
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError, WorldError
 from nl2hltl2plan.language.accounting import account
@@ -279,7 +279,7 @@ def main() -> int:
     )
     ap.add_argument(
         "--plurals",
-        choices=["ask", "two"],
+        choices=get_args(Plurals),
         default="ask",
         help="a bare plural of more than the task takes: refused (ask, `plan`'s default) or the world's "
         "convention (two: ALFRED's pick-two, `bench alfred`'s protocol)",

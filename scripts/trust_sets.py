@@ -28,6 +28,7 @@ import sys
 from collections import Counter
 from functools import cache
 from pathlib import Path
+from typing import get_args
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.language.referents import Plurals
@@ -246,7 +247,7 @@ def main() -> int:
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--backend", default="offline", choices=["offline", "grammar"])
     ap.add_argument("--show", action="store_true", help="print every line that is not converted")
-    ap.add_argument("--plurals", default="ask", choices=["ask", "two"], help="as `plan --plurals`")
+    ap.add_argument("--plurals", default="ask", choices=get_args(Plurals), help="as `plan --plurals`")
     ap.add_argument(
         "--sets", default="plain,mixed", help="trust sets, or user-style sets (tests/language/data/styles)"
     )

@@ -9,6 +9,7 @@ from typing import Any, Literal, get_args
 
 from pydantic import BaseModel, ConfigDict, Field, StrictBool, StrictInt, model_validator
 
+from nl2hltl2plan.language.referents import Plurals
 from nl2hltl2plan.language.translate import MAX_INSTRUCTION_CHARS
 
 MAX_ROBOTS = 8
@@ -40,7 +41,7 @@ class PlanRequest(BaseModel):
     choices: dict[str, str] = Field(default_factory=dict, max_length=64)  # "task.role" -> scene type
     pictures: StrictBool = True  # render the pictures and downloads after the plan
     partial: StrictBool = False  # plan what was understood of a partly understood one (`plan --partial`)
-    plurals: Literal["ask", "two"] = "ask"  # "the forks" of more than a task takes (`plan --plurals`)
+    plurals: Plurals = "ask"  # "the forks" of more than a task takes (`plan --plurals`)
 
     @model_validator(mode="after")
     def one_team(self) -> PlanRequest:
