@@ -225,7 +225,7 @@ def _first_not_first(
     (to its first comma) must not come after another task of the same sentence."""
     out = []
     for m in _OPENING_FIRST.finditer(instruction):
-        start, end = _sentence_span(instruction, m.start("first"))
+        end = _sentence_span(instruction, m.start("first"))[1]
         comma = instruction.find(",", m.end(), end)
         if comma < 0:
             continue
