@@ -15,6 +15,10 @@ text, so a misspelt name that a reading does not use is named, never passed over
 - an order word only where it is the one English word one edit away ("befoer", "lastyl"; no swap
   preference: "thne" may be "the"): a guessed order word would guess its scope. One left as written is
   named by check 1 (`unknown_words.misspelt_order_words`), never read as if absent.
+- any other word of four letters or more that no list and no English knows is the word of the package's
+  vocabulary (its word files' words) that one slip makes it, where exactly one does ("whih", "aple",
+  "newspaaper"; an order, count or negation word by a margin over English's other near words, `MARGIN`);
+  each respelling is said in the result's assumptions (`respelling_notes`: "read 'whih' as 'which'").
 A world with a closed vocabulary may ask for more (`closed_respelt`): the tabletop world respells against
 its nine name words and, as its one order form is groups in turn, its order words too.
 English is pyspellchecker's frequency list; it loads only when a word passes the first tests.
@@ -205,7 +209,7 @@ def respelt(text: str) -> str:
     English writes it (a capital kept)."""
 
     def fix(m: re.Match[str]) -> str:
-        word = spelt_name(m[0]) or spelt_word(m[0])
+        word = spelt_name(m[0]) or spelt_word(m[0]) or vocabulary_spelt(m[0])
         if word is None:
             return m[0]
         return word.capitalize() if m[0][0].isupper() else word
@@ -253,3 +257,99 @@ def _neighbours_swapped(a: str, b: str) -> bool:
     """Do `a` and `b` differ by two neighbouring letters swapped?"""
     at = [i for i, (x, y) in enumerate(zip(a, b, strict=True)) if x != y]
     return len(at) == 2 and at[1] == at[0] + 1
+
+
+# --- a misspelt word of the package's vocabulary (issue 28) ----------------------------------------------
+# "whih", "befoe", "newspaaper", "aple": a word no list and no English knows that one slip (a letter left out,
+# one added, one replaced by its keyboard neighbour, two neighbours swapped, a letter doubled) makes from
+# exactly one word of the vocabulary, the words of the package's word files. An order, count or negation
+# word needs a margin too: English knows no other word one edit away at more than 1/MARGIN of its frequency
+# ("befoe" is "before", 30,000 times as common as "befog"; "firt" may be "first" or "fire", which is only 6
+# times rarer). A tie, or a margin not met, leaves the word as written, and check 1 names it
+# (`unknown_words.misspelt_words`).
+MARGIN = 20
+_QWERTY = ("qwertyuiop", "asdfghjkl", "zxcvbnm")
+_STRUCTURE = ("order", "any_order", "negation", "quantifier_all", "quantifier_vague", "repetition")
+_LABEL = re.compile(r"^[a-z_]+:\s")  # "order: ...", the category a word file's line gives
+_LOWER_WORD = re.compile(r"(?<![A-Za-z])[a-z]{3,}(?![A-Za-z])")  # not "KeyChain", a type's name
+
+
+@cache
+def _keyboard() -> dict[str, frozenset[str]]:
+    """Each letter's neighbours on a QWERTY keyboard: beside it, and the two keys that touch it in the row
+    above and below (each row sits half a key right of the one above)."""
+    at = {c: (r, i) for r, row in enumerate(_QWERTY) for i, c in enumerate(row)}
+    touching = {-1: (0, 1), 0: (-1, 1), 1: (-1, 0)}  # row offset -> key offsets
+    return {c: frozenset(d for d, (s, j) in at.items() if s - r in touching and j - i in touching[s - r])
+            for c, (r, i) in at.items()}
+
+
+@cache
+def vocabulary_words() -> frozenset[str]:
+    """The words of the package's word files (the lexicon's names, the verbs, order, count and negation
+    words, the function words of the phrase files), three letters or more, their comments left out."""
+    files = [f for f in resources.files("nl2hltl2plan.language").iterdir() if f.name.endswith(".txt")]
+    words: set[str] = set()
+    for f in files:
+        for line in f.read_text().splitlines():
+            if not line.lstrip().startswith("#"):
+                words.update(_LOWER_WORD.findall(_LABEL.sub("", line)))
+    return frozenset(words)
+
+
+def _one_slip(typed: str, word: str) -> bool:
+    """Is `typed` `word` with one slip: a letter left out, one added (or doubled), one replaced by its
+    keyboard neighbour, or two neighbours swapped?"""
+    if len(typed) == len(word) - 1:
+        return any(word[:i] + word[i + 1 :] == typed for i in range(len(word)))
+    if len(typed) == len(word) + 1:
+        return any(typed[:i] + typed[i + 1 :] == word for i in range(len(typed)))
+    if len(typed) != len(word):
+        return False
+    at = [i for i, (a, b) in enumerate(zip(typed, word, strict=True)) if a != b]
+    if len(at) == 1:
+        return typed[at[0]] in _keyboard().get(word[at[0]], frozenset())
+    return _neighbours_swapped(typed, word) and sorted(typed) == sorted(word)
+
+
+def structure_word(word: str) -> bool:
+    """Whether `word` is an order, count or negation word (check 1's categories), where a wrong respelling
+    costs most."""
+    return bool(categories(word) & set(_STRUCTURE)) or any(c.startswith("count_") for c in categories(word))
+
+
+@lru_cache(maxsize=4096)
+def vocabulary_near(word: str) -> tuple[str, ...]:
+    """The vocabulary words that `word` may misspell, the likeliest first: for a word of four letters or
+    more that no list and no English knows, those one slip away (`_one_slip`), and for an order, count or
+    negation word among them, the English words as near that it does not outweigh by MARGIN; () else."""
+    low = word.lower()
+    if len(low) < 4 or not low.isalpha() or low in _known_words() or _english().known(_american(low)):
+        return ()
+    near = sorted(w for w in vocabulary_words() if abs(len(w) - len(low)) <= 1 and _one_slip(low, w))
+    if len(near) != 1 or not structure_word(near[0]):
+        return tuple(near)
+    freq = _english().word_usage_frequency
+    rivals = sorted(_english().known(_english().edit_distance_1(low)) - {near[0]}, key=freq, reverse=True)
+    return (near[0], *(w for w in rivals[:2] if freq(w) * MARGIN > freq(near[0])))
+
+
+def vocabulary_spelt(word: str) -> str | None:
+    """The one vocabulary word that `word` misspells (`vocabulary_near`), or None."""
+    near = vocabulary_near(word)
+    return near[0] if len(near) == 1 else None
+
+
+def respellings(text: str) -> list[tuple[str, str]]:
+    """Each misspelt word of `text` and the word `respelt` reads it as, in order, each once."""
+    out: list[tuple[str, str]] = []
+    for m in _WORD.finditer(text):
+        word = spelt_name(m[0]) or spelt_word(m[0]) or vocabulary_spelt(m[0])
+        if word is not None and (m[0].lower(), word) not in out:
+            out.append((m[0].lower(), word))
+    return out
+
+
+def respelling_notes(text: str) -> list[str]:
+    """What `respelt` changed in `text`, said ("read 'whih' as 'which'"): a result's assumptions."""
+    return [f"read {typed!r} as {word!r}" for typed, word in respellings(text)]

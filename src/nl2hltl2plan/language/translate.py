@@ -49,7 +49,7 @@ from nl2hltl2plan.language.referents import Plurals, check_referents
 from nl2hltl2plan.language.restated_tasks import joined_restatements
 from nl2hltl2plan.language.result import Ambiguity, LanguageResult
 from nl2hltl2plan.language.spec_builder import GenerateLTL, build_spec
-from nl2hltl2plan.language.spelling import shorthand_read
+from nl2hltl2plan.language.spelling import respelling_notes, shorthand_read
 from nl2hltl2plan.language.state_tasks import StateReader, guessed_slot, light_orders, reread, state_orderings
 from nl2hltl2plan.language.suggest import not_understood, suggestion_text
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter
@@ -163,6 +163,8 @@ def translate(
                 res = again
             elif not res.partial and not negations:
                 res = reader.doubted(res, backend)
+        if respelt := respelling_notes(instruction):  # "read 'whih' as 'which'": no word silently changed
+            res = res.model_copy(update={"assumptions": [*res.assumptions, *respelt]})
         with _refused_as_not_understood(res, world):
             return _finish(res, world, backend, client, ltl, actions, build, instances, plurals)
     if client is None:

@@ -16,6 +16,10 @@ no English knows and that is one edit from an order word, but was left as writte
 are as near ("thne": "then", "the", "thee"; "frst": "first", "fist"), is unread: the order it may say is
 never read as if it were absent.
 
+Other misspelt words (`misspelt_words`): a word the spelling rule left as written because it is one slip
+from several words of the vocabulary, one of them an order, count or negation word, or from such a word
+without its margin over English ("nevr": "never" or "near"), is unread, named with what it may be.
+
 Things (`unknown_things`): the thing a placing verb acts on, or the place after "in" / "into" / "onto" /
 "to", whose head word English knows and no word table does ("put the spoon in the goblet", "move the
 tray"), is unread: no object of the world is called so, and a reading without it (the spoon put in the
@@ -54,7 +58,7 @@ from nl2hltl2plan.language.content_words import (
 )
 from nl2hltl2plan.language.grounding import Mention, tokens
 from nl2hltl2plan.language.parse_usage import ParseUsage
-from nl2hltl2plan.language.spelling import english_word, known_word, one_edit
+from nl2hltl2plan.language.spelling import english_word, known_word, one_edit, structure_word, vocabulary_near
 
 _COMMAND_START = COMMAND_WORDS | {"next", "finally", "lastly"}
 _OBJECT_START = OBJECT_START | {"both", "all", "each", "every"}
@@ -194,7 +198,8 @@ def unread_words(instruction: str, toks: Tokens | None = None) -> list[Unread]:
     """Unknown verbs, unknown things and misspelt order words, in that order (check 1's unknown words)."""
     toks = tokens(instruction) if toks is None else toks
     unknown = unknown_verbs(instruction, toks) + unknown_things(instruction, toks)
-    return unknown + misspelt_order_words(instruction)
+    order = misspelt_order_words(instruction)
+    return unknown + order + misspelt_words(instruction, {u.words for u in order})
 
 
 def misspelt_order_words(instruction: str) -> list[Unread]:
@@ -208,4 +213,20 @@ def misspelt_order_words(instruction: str) -> list[Unread]:
             continue
         if low not in {u.words for u in out}:
             out.append(Unread(low, "order", ORDER_TYPO_REASON))
+    return out
+
+
+def misspelt_words(instruction: str, named: set[str] | frozenset[str] = frozenset()) -> list[Unread]:
+    """The words of `instruction` (as the spelling rule left it) that may misspell an order, count or
+    negation word and another word (`spelling.vocabulary_near`: a tie, or a margin not met), each named with
+    what it may be ("'nevr': may misspell 'never' or 'near'"); not the words in `named`. A tie of other
+    words ("plae": "place" or "plate") is left to check 1's other tests: a name or a verb a reading does
+    not use is named there (an invented slot, a clause unread), and one it does not need is no loss."""
+    out: list[Unread] = []
+    for m in _ORDER_WORD_SHAPE.finditer(instruction):
+        low = m[0].lower()
+        near = vocabulary_near(low)
+        if any(map(structure_word, near)) and low not in named and low not in {u.words for u in out}:
+            said = " or ".join(filter(None, [", ".join(map(repr, near[:-1])), repr(near[-1])]))
+            out.append(Unread(low, "spelling", f"may misspell {said}: say it as you mean it"))
     return out
