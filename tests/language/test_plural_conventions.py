@@ -130,11 +130,6 @@ def test_the_web_request_passes_the_setting_and_its_answer_says_the_assumption()
         PlanRequest(**body, plurals="three")
 
 
-# a wrong reading found by the held-out half, under both settings and before this branch: the lexicon
-# lists "soap bars" as a name of one SoapBar (language/lexicon.txt), so the plural reads as one bar
-KNOWN_WRONG = {"put the soap bars in the cabinet"}
-
-
 @pytest.mark.data
 @pytest.mark.parametrize("name", ["users_h126dev", "users_h126held"])
 def test_the_h126_sets_read_as_their_ground_truth_says_under_both_settings(name):
@@ -151,9 +146,6 @@ def test_the_h126_sets_read_as_their_ground_truth_says_under_both_settings(name)
     import trust_sets
 
     for gt in trust_sets.load(name):
-        if gt.instruction in KNOWN_WRONG:
-            assert trust_sets.outcome(gt, plurals="two")[0] == "wrong"  # still wrong: the lexicon's
-            continue
         why = " ".join(gt.issues)
         ask, said = trust_sets.outcome(gt)
         assert ask == ("converted" if gt.feasible else "refused"), (gt.instruction, said)

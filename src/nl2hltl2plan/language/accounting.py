@@ -344,7 +344,7 @@ def _invented(
     sources: set[str] = set()  # named only as where a thing is or comes from: "take the mug out of the sink"
     for m in mentions:
         (named if _a_stop(instruction, m, toks) else sources).update({*m.entry.types, m.entry.canonical})
-    put_back = any(w == "back" for w, _, _ in toks)  # "wash the cloth from the cabinet, put it back"
+    put_back = any(w in ("back", "return") for w, _, _ in toks)  # "from the cabinet, put it back / return it"
     implied = parse.implied()
     out = []
     loose = {w for i, (w, _, _) in enumerate(toks) if len(w) >= 5 and i not in in_mention}

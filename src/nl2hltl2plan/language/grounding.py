@@ -286,10 +286,16 @@ def lexicon() -> dict[tuple[str, ...], tuple[Entry, bool]]:
     for t in THOR_TYPES:
         for phrase in {camel_words(t), t.lower()}:
             singular[tuple(phrase.split())] = Entry(phrase, (t,))
+    listed_plurals: list[tuple[str, str]] = []  # `: plural of PHRASE` lines: (plural, PHRASE)
     for phrases, fields in phrase_lines("lexicon.txt"):
         types, all_ = tuple(fields[0].split()), len(fields) > 1 and fields[1] == "all"
+        if len(fields) > 1 and fields[1].startswith("plural of "):
+            listed_plurals += [(phrase, fields[1].removeprefix("plural of ")) for phrase in phrases]
+            continue
         for phrase in phrases:
             singular[tuple(phrase.split())] = Entry(phrase, types, all_)
+    for phrase, of in listed_plurals:
+        table[tuple(phrase.split())] = (singular[tuple(of.split())], True)
     for key, entry in singular.items():
         for pl in _plurals(key[-1]):
             pkey = key[:-1] + (pl,)

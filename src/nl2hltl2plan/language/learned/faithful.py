@@ -33,6 +33,7 @@ import re
 from dataclasses import dataclass, replace
 
 from nl2hltl2plan.domain.task_kinds import SLOTS, slots_of
+from nl2hltl2plan.language.grammar.put_back import a_source
 from nl2hltl2plan.language.grounding import Grounder, find_mentions
 from nl2hltl2plan.language.learned.data import Composition, Example, states_kind
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter
@@ -41,13 +42,6 @@ _SLICE = re.compile(
     r"\bslice|\bsliced\b|\bpiece|\btoast|\bwedge|\bchunk|\bsection|\bhal(f|ves)\b|\bquarter", re.I
 )
 _TWO = re.compile(r"\b(two|2|both|pair|couple|second|another|other)\b", re.I)
-# A place named right after "from" / "out of" / "off" (a determiner and one word may come between) is
-# where the object is taken from, never its destination ("the second from the bottom shelf" is a place).
-_SOURCE = re.compile(
-    r"(?<!second\s)(?<!third\s)(?<!fourth\s)\b(?:from|out\s+of|off(?:\s+of)?)\s+"
-    r"(?:(?:the|a|an|your|its|that|this)\s+)?(?:[a-z-]+\s+)?$",
-    re.I,
-)
 # The knife that slices the object: a mention of it is not an object that may be meant instead.
 _KNIVES = {"Knife", "ButterKnife"}
 
@@ -74,11 +68,6 @@ def text_task(e: Example, types: set[str]) -> BaseTaskSpec | None:
     """The base task the guide would write for the annotation's text alone (None: unclear, left out)."""
     labelled = text_label(e, types)
     return labelled[0] if labelled else None
-
-
-def a_source(text: str, start: int) -> bool:
-    """Whether the place named at `start` of `text` is where a thing is taken from ("from the sink")."""
-    return bool(_SOURCE.search(text[:start]))
 
 
 def composable(items: list[FaithfulExample]) -> bool:
