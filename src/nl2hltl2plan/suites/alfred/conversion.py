@@ -18,6 +18,7 @@ import random
 import sys
 import time
 from collections.abc import Callable, Iterator
+from functools import lru_cache
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -25,13 +26,15 @@ from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.io import write_json
 from nl2hltl2plan.language.accounting import account
 from nl2hltl2plan.language.grounding import scene_types
-from nl2hltl2plan.language.referents import check_referents
+from nl2hltl2plan.language.referents import Plurals, check_referents
 from nl2hltl2plan.language.scoring import match
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
+from nl2hltl2plan.language.translate import scene_instances
 
 if TYPE_CHECKING:
     from nl2hltl2plan.language.learned.inference import Policy
     from nl2hltl2plan.language.learned.slot_model import SlotModel
+    from nl2hltl2plan.worlds.world import World
 
 BENCHMARK = ("benchmark", "alfred_test50_gt.jsonl")
 Generator = Callable[[str, set[str], str], tuple[list[BaseTaskSpec], list[tuple[str, str]], list[str]]]
@@ -132,8 +135,27 @@ def learned_generator(policy: Policy | None = None, model: SlotModel | None = No
     return generate
 
 
-def evaluate(rows: list[dict[str, Any]], generate: Generator, progress: bool = False) -> list[dict[str, Any]]:
-    """One record per instruction: ids, n_base, flags, match results, and the generated tasks."""
+def scenario_world(row: dict[str, Any]) -> World:
+    """A row's world as the benchmark builds a scenario's (`worlds.build_benchmark_world`): its floor plan
+    with the movable objects of the ALFRED trials it was composed from (`source_trials`), so that "two
+    pillows" finds the pillows of the trials that had them; a row that names none (a user's instruction)
+    gets the floor plan's first trial, as `plan --world FloorPlanN`."""
+    return _world(row["scene"], tuple(row.get("source_trials") or ()))
+
+
+@lru_cache(maxsize=64)  # a composed set's rows share few trial sets, a user set's rows few floor plans
+def _world(scene: str, trials: tuple[str, ...]) -> World:
+    from nl2hltl2plan.worlds import load_world
+
+    return load_world(scene, list(trials) or None)
+
+
+def evaluate(
+    rows: list[dict[str, Any]], generate: Generator, progress: bool = False, plurals: Plurals = "two"
+) -> list[dict[str, Any]]:
+    """One record per instruction: ids, n_base, flags, match results, and the generated tasks. Check 1
+    and the referents' refusals judge a reading with the counts of the row's world (`scenario_world`)
+    and, under `plurals` (`bench alfred`'s default: ALFRED's pick-two), its plural convention."""
     out = []
     for k, row in enumerate(rows):
         t0 = time.monotonic()
@@ -142,8 +164,10 @@ def evaluate(rows: list[dict[str, Any]], generate: Generator, progress: bool = F
             tasks, before, unparsed = generate(row["instruction"], scene_types(row["scene"]), row["scene"])
             # check 1 (word accounting) and the referents' refusals (a thing moved twice, "the dishes"),
             # as `plan` applies them: a partial or refused conversion is a failure
-            unparsed = unparsed + [str(u) for u in account(row["instruction"], tasks, before)]
-            check_referents(row["instruction"], tasks, before, None, row["scene"])
+            world = scenario_world(row)
+            counts, text = scene_instances(world), row["instruction"]
+            unparsed = unparsed + [str(u) for u in account(text, tasks, before, counts, world.name)]
+            check_referents(text, tasks, before, counts, world.name, world.plurals, plurals)
         except Nl2Hltl2PlanError as exc:
             tasks, before, unparsed, err = [], [], [], str(exc)
         refused = bool(err or unparsed)
