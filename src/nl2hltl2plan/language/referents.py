@@ -33,7 +33,7 @@ from functools import lru_cache
 from typing import Literal
 
 from nl2hltl2plan.errors import HTTError
-from nl2hltl2plan.language.content_words import DETERMINERS, LOCATIVE, categories
+from nl2hltl2plan.language.content_words import DETERMINERS, LOCATIVE, categories, word_categories
 from nl2hltl2plan.language.counts import count_value
 from nl2hltl2plan.language.grounding import (
     Mention,
@@ -52,9 +52,12 @@ from nl2hltl2plan.worlds.world import PluralConvention
 # convention where it has one (`two`: ALFRED's pick-two); a world's `always` convention applies under both
 Plurals = Literal["ask", "two"]
 
-# words before a noun that make it another thing than one named before ("another kettle", "a second one")
-_ANOTHER = frozenset({"a", "an", "another", "other", "second", "third", "different", "new", "one", "more"})
-_DEFINITE = frozenset({"the", "this", "that", "these", "those", "same"})
+# words before a noun that say which thing it names (`referent_words.txt`, shared with `restated_tasks`):
+# another thing than one named before ("another kettle", "a second one"), one named indefinitely ("a
+# kettle"), one named definitely ("the kettle")
+_WHICH = word_categories("referent_words.txt")
+ANOTHER, INDEFINITE, DEFINITE = _WHICH["another"], _WHICH["indefinite"], _WHICH["definite"]
+_NOT_NAMED_BEFORE = ANOTHER | INDEFINITE
 _BACK = frozenset({"it", "them", "its"})
 # words that say how many a plural is ("two forks", "all the forks", "both forks")
 _HOW_MANY = frozenset(
@@ -162,7 +165,7 @@ def _reference(text: str, types: set[str], named_before: set[str]) -> str | None
     if named:
         m = named[0]
         before = words[max(0, m.start - 2) : m.start]
-        definite = bool(before) and before[-1] in _DEFINITE and not set(before) & _ANOTHER
+        definite = bool(before) and before[-1] in DEFINITE and not set(before) & _NOT_NAMED_BEFORE
         if definite and m.entry.phrase in named_before:
             return " ".join(words[m.start - 1 : m.end])
         return None
@@ -247,13 +250,20 @@ def plural_of_several(
 
 def bare_plurals(instruction: str) -> list[Mention]:
     """The plurals of the text with no word saying how many ("the forks", not "two forks", "all the
-    forks" or "both forks")."""
+    forks" or "both forks"), less those that name again things counted before ("put two forks in the
+    drawer; once the forks are in ...": those two; not after "two of the forks", a part of them)."""
     words = [w for w, _, _ in tokens(instruction)]
-    return [
-        m
-        for m in find_mentions(instruction)
-        if m.plural and not m.entry.generic and not _counted(words[max(0, m.start - 3) : m.start])
-    ]
+    out: list[Mention] = []
+    counted: set[str] = set()  # the types of the plurals counted so far
+    for m in find_mentions(instruction):
+        if not m.plural or m.entry.generic:
+            continue
+        before = words[max(0, m.start - 3) : m.start]
+        if _counted(before):
+            counted |= set(m.entry.types) if "of" not in before else set()
+        elif not counted & set(m.entry.types):
+            out.append(m)
+    return out
 
 
 def _not_several(
@@ -286,7 +296,7 @@ def _not_several(
 def _said(instruction: str, m: Mention) -> str:
     """The plural's words as written, with its determiner ("the forks")."""
     head = instruction[: m.char_start].split()
-    return f"{head[-1]} {m.surface}" if head and head[-1].lower() in _DEFINITE else m.surface
+    return f"{head[-1]} {m.surface}" if head and head[-1].lower() in DEFINITE else m.surface
 
 
 def _counted(before: list[str]) -> bool:
