@@ -41,6 +41,18 @@ def test_a_composed_row_gets_the_world_of_its_trials_and_a_user_row_the_first_tr
         translate(text, user, "offline", build=False, actions="none")
 
 
+@pytest.mark.data
+def test_a_rows_counts_are_its_worlds_without_building_it(shared_data):
+    from nl2hltl2plan.suites.alfred.conversion import scenario_counts, scenario_world
+    from nl2hltl2plan.worlds.floor_plans import alfred_data
+
+    plans = alfred_data().by_floor_plan
+    rows = [{"scene": "FloorPlan219", "source_trials": [PILLOWS]}, {"scene": "FloorPlan10"}]
+    rows += [{"scene": fp, "source_trials": plans[fp][1:4]} for fp in ("FloorPlan10", "FloorPlan308")]
+    for row in rows:
+        assert scenario_counts(row) == scene_instances(scenario_world(row)), row
+
+
 def _example(obj: str, rec: str, trial: str) -> FaithfulExample:
     e = Example(f"Put the {obj.lower()} in the {rec.lower()}.", trial, "valid_seen", "FloorPlan1", "place",
                 obj, "", rec, "", False)  # fmt: skip

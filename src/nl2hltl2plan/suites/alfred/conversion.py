@@ -17,6 +17,7 @@ import contextlib
 import random
 import sys
 import time
+from collections import Counter
 from collections.abc import Callable, Iterator
 from functools import lru_cache
 from pathlib import Path
@@ -29,12 +30,11 @@ from nl2hltl2plan.language.grounding import scene_types
 from nl2hltl2plan.language.referents import Plurals, check_referents
 from nl2hltl2plan.language.scoring import match
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
-from nl2hltl2plan.language.translate import scene_instances
+from nl2hltl2plan.worlds.world import ALFRED_PICK_TWO, World
 
 if TYPE_CHECKING:
     from nl2hltl2plan.language.learned.inference import Policy
     from nl2hltl2plan.language.learned.slot_model import SlotModel
-    from nl2hltl2plan.worlds.world import World
 
 BENCHMARK = ("benchmark", "alfred_test50_gt.jsonl")
 Generator = Callable[[str, set[str], str], tuple[list[BaseTaskSpec], list[tuple[str, str]], list[str]]]
@@ -150,12 +150,20 @@ def _world(scene: str, trials: tuple[str, ...]) -> World:
     return load_world(scene, list(trials) or None)
 
 
+def scenario_counts(row: dict[str, Any]) -> Counter[str]:
+    """How many objects of each type `scenario_world(row)` holds (`floor_plans.instance_counts`: the
+    same counts without building the world)."""
+    from nl2hltl2plan.worlds.floor_plans import instance_counts
+
+    return instance_counts(row["scene"], row.get("source_trials") or None)
+
+
 def evaluate(
     rows: list[dict[str, Any]], generate: Generator, progress: bool = False, plurals: Plurals = "two"
 ) -> list[dict[str, Any]]:
     """One record per instruction: ids, n_base, flags, match results, and the generated tasks. Check 1
-    and the referents' refusals judge a reading with the counts of the row's world (`scenario_world`)
-    and, under `plurals` (`bench alfred`'s default: ALFRED's pick-two), its plural convention."""
+    and the referents' refusals judge a reading with the counts of the row's world (`scenario_counts`)
+    and, under `plurals` (`bench alfred`'s default), ALFRED's pick-two convention."""
     out = []
     for k, row in enumerate(rows):
         t0 = time.monotonic()
@@ -164,10 +172,9 @@ def evaluate(
             tasks, before, unparsed = generate(row["instruction"], scene_types(row["scene"]), row["scene"])
             # check 1 (word accounting) and the referents' refusals (a thing moved twice, "the dishes"),
             # as `plan` applies them: a partial or refused conversion is a failure
-            world = scenario_world(row)
-            counts, text = scene_instances(world), row["instruction"]
-            unparsed = unparsed + [str(u) for u in account(text, tasks, before, counts, world.name)]
-            check_referents(text, tasks, before, counts, world.name, world.plurals, plurals)
+            counts, scene, text = scenario_counts(row), row["scene"], row["instruction"]
+            unparsed = unparsed + [str(u) for u in account(text, tasks, before, counts, scene)]
+            check_referents(text, tasks, before, counts, scene, ALFRED_PICK_TWO, plurals)
         except Nl2Hltl2PlanError as exc:
             tasks, before, unparsed, err = [], [], [], str(exc)
         refused = bool(err or unparsed)
