@@ -234,6 +234,8 @@ def plural_of_several(
     applies = convention is not None and (convention.always or plurals == "two")
     said: list[str] = []
     for m in bare_plurals(instruction):
+        if _counted_before(instruction, m, tasks):
+            continue
         covers = category_words().get(m.surface.lower())
         if covers and _as_category(m.surface.lower(), covers, tasks):
             # a category read as such counts every instance of its kinds, as a type counts its own
@@ -250,20 +252,28 @@ def plural_of_several(
 
 def bare_plurals(instruction: str) -> list[Mention]:
     """The plurals of the text with no word saying how many ("the forks", not "two forks", "all the
-    forks" or "both forks"), less those that name again things counted before ("put two forks in the
-    drawer; once the forks are in ...": those two; not after "two of the forks", a part of them)."""
+    forks" or "both forks")."""
     words = [w for w, _, _ in tokens(instruction)]
-    out: list[Mention] = []
-    counted: set[str] = set()  # the types of the plurals counted so far
-    for m in find_mentions(instruction):
-        if not m.plural or m.entry.generic:
-            continue
-        before = words[max(0, m.start - 3) : m.start]
-        if _counted(before):
-            counted |= set(m.entry.types) if "of" not in before else set()
-        elif not counted & set(m.entry.types):
-            out.append(m)
-    return out
+    return [
+        m
+        for m in find_mentions(instruction)
+        if m.plural and not m.entry.generic and not _counted(words[max(0, m.start - 3) : m.start])
+    ]
+
+
+def _counted_before(instruction: str, m: Mention, tasks: Sequence[BaseTaskSpec]) -> bool:
+    """Does a bare plural name again the things one task took by a count said before ("put two forks in
+    the drawer; once the forks are in ...": those two)? Not after a part ("two of the forks"), nor where
+    two tasks take that type ("put two forks in the drawer, then the forks on the table": which)."""
+    words = [w for w, _, _ in tokens(instruction)]
+    types = set(m.entry.types)
+    said = [
+        o
+        for o in find_mentions(instruction)
+        if o.start < m.start and o.plural and set(o.entry.types) & types
+        and _counted(before := words[max(0, o.start - 3) : o.start]) and "of" not in before
+    ]
+    return bool(said) and sum(bool(set(t.object) & types) for t in tasks) == 1
 
 
 def _not_several(
