@@ -25,9 +25,9 @@ so that earlier numbers can be compared. Classes of a failure:
 - `structure: task count` / `structure: order`: read completely, the number of tasks or the order is wrong;
 - `grounding: type`: kinds and counts right, a type is outside the accepted ones (lenient match passes);
 - `slot: kind/count/sliced/type`: any other wrong task;
-- `world: the floor plan lacks it`: refused because the built floor plan lacks an object the row names,
-  or holds fewer than it asks (a generator row composes ALFRED trials, whose own objects the bare floor
-  plan may lack: "two pillows" where it has one);
+- `world: the floor plan lacks it`: refused because the row's world lacks an object the row names, or
+  holds fewer than it asks (a generator row's world holds the objects of the trials it composes, so this
+  is left to rows whose trials lack them too, and to user rows);
 - `error`: refused with another error (a contradictory order, one thing moved twice).
 A complete reading that is wrong (the `structure`, `grounding` and `slot` classes) exits 0 in `plan`.
 
@@ -55,6 +55,7 @@ from nl2hltl2plan.language.result import LanguageResult
 from nl2hltl2plan.language.scoring import match
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
 from nl2hltl2plan.language.translate import apply_choices, scene_instances, top_candidates, translate
+from nl2hltl2plan.suites.alfred.conversion import scenario_world
 from nl2hltl2plan.suites.alfred.structure_validation import rows_of_set
 from nl2hltl2plan.worlds.world import World
 
@@ -138,12 +139,14 @@ Reading = tuple[list[BaseTaskSpec], list[tuple[str, str]], list[str], str]
 
 
 def household_reading(row: dict[str, Any], plurals: Plurals = "ask") -> Reading:
-    """The shipped reading, as `plan --world SCENE` reads (`--long` alike): `translate` in the row's floor
-    plan, the household reader's rewriting included (`world_readers`: greetings, colon lists, topic
+    """The shipped reading, as `plan --world SCENE` reads (`--long` alike): `translate` in the row's world
+    (`conversion.scenario_world`: a composed row's floor plan holds the objects of the ALFRED trials it
+    was composed from, as a benchmark scenario's; a user's row, the floor plan's first trial), the
+    household reader's rewriting included (`world_readers`: greetings, colon lists, topic
     questions, descriptive names, self-corrections, "respectively", step numbers, negations), check 1
     with the floor plan's instance counts and the referents' refusals; an ambiguous word takes its top
     candidate. The reader's rewritten text is what check 1 reads, so the classes below hold for it."""
-    r = shipped(row["instruction"], world_of(row["scene"]), plurals)
+    r = shipped(row["instruction"], scenario_world(row), plurals)
     return r.tasks, r.before, list(r.unparsed), r.instruction
 
 

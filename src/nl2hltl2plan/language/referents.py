@@ -33,7 +33,7 @@ from functools import lru_cache
 from typing import Literal
 
 from nl2hltl2plan.errors import HTTError
-from nl2hltl2plan.language.content_words import DETERMINERS, LOCATIVE, categories
+from nl2hltl2plan.language.content_words import DETERMINERS, LOCATIVE, categories, word_categories
 from nl2hltl2plan.language.counts import count_value
 from nl2hltl2plan.language.grounding import (
     Mention,
@@ -52,9 +52,12 @@ from nl2hltl2plan.worlds.world import PluralConvention
 # convention where it has one (`two`: ALFRED's pick-two); a world's `always` convention applies under both
 Plurals = Literal["ask", "two"]
 
-# words before a noun that make it another thing than one named before ("another kettle", "a second one")
-_ANOTHER = frozenset({"a", "an", "another", "other", "second", "third", "different", "new", "one", "more"})
-_DEFINITE = frozenset({"the", "this", "that", "these", "those", "same"})
+# words before a noun that say which thing it names (`referent_words.txt`, shared with `restated_tasks`):
+# another thing than one named before ("another kettle", "a second one"), one named indefinitely ("a
+# kettle"), one named definitely ("the kettle")
+_WHICH = word_categories("referent_words.txt")
+ANOTHER, INDEFINITE, DEFINITE = _WHICH["another"], _WHICH["indefinite"], _WHICH["definite"]
+_NOT_NAMED_BEFORE = ANOTHER | INDEFINITE
 _BACK = frozenset({"it", "them", "its"})
 # words that say how many a plural is ("two forks", "all the forks", "both forks")
 _HOW_MANY = frozenset(
@@ -162,7 +165,7 @@ def _reference(text: str, types: set[str], named_before: set[str]) -> str | None
     if named:
         m = named[0]
         before = words[max(0, m.start - 2) : m.start]
-        definite = bool(before) and before[-1] in _DEFINITE and not set(before) & _ANOTHER
+        definite = bool(before) and before[-1] in DEFINITE and not set(before) & _NOT_NAMED_BEFORE
         if definite and m.entry.phrase in named_before:
             return " ".join(words[m.start - 1 : m.end])
         return None
@@ -231,6 +234,8 @@ def plural_of_several(
     applies = convention is not None and (convention.always or plurals == "two")
     said: list[str] = []
     for m in bare_plurals(instruction):
+        if _counted_before(instruction, m, tasks):
+            continue
         covers = category_words().get(m.surface.lower())
         if covers and _as_category(m.surface.lower(), covers, tasks):
             # a category read as such counts every instance of its kinds, as a type counts its own
@@ -254,6 +259,21 @@ def bare_plurals(instruction: str) -> list[Mention]:
         for m in find_mentions(instruction)
         if m.plural and not m.entry.generic and not _counted(words[max(0, m.start - 3) : m.start])
     ]
+
+
+def _counted_before(instruction: str, m: Mention, tasks: Sequence[BaseTaskSpec]) -> bool:
+    """Does a bare plural name again the things one task took by a count said before ("put two forks in
+    the drawer; once the forks are in ...": those two)? Not after a part ("two of the forks"), nor where
+    two tasks take that type ("put two forks in the drawer, then the forks on the table": which)."""
+    words = [w for w, _, _ in tokens(instruction)]
+    types = set(m.entry.types)
+    said = [
+        o
+        for o in find_mentions(instruction)
+        if o.start < m.start and o.plural and set(o.entry.types) & types
+        and _counted(before := words[max(0, o.start - 3) : o.start]) and "of" not in before
+    ]
+    return bool(said) and sum(bool(set(t.object) & types) for t in tasks) == 1
 
 
 def _not_several(
@@ -286,7 +306,7 @@ def _not_several(
 def _said(instruction: str, m: Mention) -> str:
     """The plural's words as written, with its determiner ("the forks")."""
     head = instruction[: m.char_start].split()
-    return f"{head[-1]} {m.surface}" if head and head[-1].lower() in _DEFINITE else m.surface
+    return f"{head[-1]} {m.surface}" if head and head[-1].lower() in DEFINITE else m.surface
 
 
 def _counted(before: list[str]) -> bool:

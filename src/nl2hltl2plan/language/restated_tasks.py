@@ -36,6 +36,7 @@ import networkx as nx
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.grounding import find_mentions, tokens
 from nl2hltl2plan.language.htt_build import build_htt
+from nl2hltl2plan.language.referents import ANOTHER, DEFINITE, INDEFINITE
 from nl2hltl2plan.language.result import LanguageResult
 from nl2hltl2plan.language.statements import REFERENCE
 from nl2hltl2plan.language.task_specs import (
@@ -47,12 +48,8 @@ from nl2hltl2plan.language.task_specs import (
 
 Wording = Literal["definite", "another", "indefinite"]
 _FIELDS = ("kind", "object", "count", "sliced", "container", "receptacle", "light", "state")
-_DEFINITE = frozenset({"the", "this", "that", "these", "those", "same", "it", "them"})
-# words before a noun that name another thing than one named before ("another mug", "the second mug")
-_ANOTHER = frozenset(
-    "another other second third fourth different new more next remaining last rest both".split()
-)
-_INDEFINITE = frozenset({"a", "an", "one", "some", "any"})
+# which thing a noun names, by the words before it (`referents`' list): "the mug" or "it", "another mug"
+_DEFINITE = DEFINITE | {"it", "them"}
 # a clause that refers to a task rather than asks for it: "before putting ...", "once you've put ..."
 _REFERENCE_OPENING = re.compile(rf"\b{REFERENCE}\s+(?:you(?:'ve|\s+have)?\s+)?$", re.I)
 
@@ -150,9 +147,9 @@ def _wording(text: str, types: set[str]) -> Wording:
     if not named:
         return "definite" if set(words) & {"it", "them"} else "indefinite"
     said = words[max(0, named[0].start - 3) : named[0].start]
-    if set(said) & _ANOTHER:
+    if set(said) & ANOTHER:
         return "another"
-    determiner = next((w for w in reversed(said) if w in _DEFINITE | _INDEFINITE), None)
+    determiner = next((w for w in reversed(said) if w in _DEFINITE | INDEFINITE), None)
     return "definite" if determiner in _DEFINITE else "indefinite"
 
 

@@ -33,7 +33,7 @@ from dataclasses import dataclass
 from nl2hltl2plan.errors import HTTError, WorldError
 from nl2hltl2plan.language.accounting import account
 from nl2hltl2plan.language.content_words import LOCATIVE, categories, stems, verb_places
-from nl2hltl2plan.language.grounding import Grounder, find_mentions, tokens
+from nl2hltl2plan.language.grounding import LAMPS, Grounder, find_mentions, tokens
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
 
 _DET = r"(?:the|a|an|my|that|this|your|our)\s+"
@@ -175,7 +175,7 @@ def _ground(word: str, state: str, scene: StateReader, pronouns: list[str]) -> l
     )
     if room is not None:  # "the lights in the kitchen", "the bedroom lamp": the scene's own room
         word = word[: room.start()] if room.start() else word[room.end() :]
-    lamps = g.types is not None and bool(g.types & {"DeskLamp", "FloorLamp"})
+    lamps = g.types is not None and bool(g.types & LAMPS)
     lamp_word = word in ("lamp", "lamps") and not lamps  # a room without lamps: its light
     if state in ("on", "off") and (word in LIGHT_WORDS or lamp_word) and g.types and "LightSwitch" in g.types:
         types = ["LightSwitch"]  # the room's lights
@@ -252,12 +252,21 @@ def light_condition(clause: str, grounder: Grounder) -> tuple[str, BaseTaskSpec 
     book in a well lit room"; (clause, None) without one."""
     text = re.sub(r"[.!?,;\s]+$", "", clause)
     m = _CONDITION.search(text.lower())
-    if m is None:
+    if m is None or _lamp_light(text[: m.start()], m, grounder):
         return clause, None
     _check_room(m.group("room"), grounder)
     state = m.group("state") or ("off" if m.group("dark") else "on")
     head, tail = text[: m.start()].rstrip(), text[m.start() :].strip()
     return head, BaseTaskSpec(kind="set_state", text=tail, object=["LightSwitch"], state=state)  # type: ignore[arg-type]
+
+
+def _lamp_light(head: str, m: re.Match[str], grounder: Grounder) -> bool:
+    """Is a light condition the lamp a thing is looked at by, not the room's light: "in the light" (no
+    room word, not dark) after an examine clause ("look at the CD in the light", ALFRED's wording of an
+    examine-in-light task), in a world that has a lamp? The grammar reads such a clause whole."""
+    lamps = grounder.types is not None and bool(grounder.types & LAMPS)
+    lit = m.group("room") is None and m.group("dark") is None and m.group("state") is None
+    return lamps and lit and any("verb_examine_in_light" in categories(w) for w, _, _ in tokens(head))
 
 
 _GUESS = re.compile(r"^'(?P<clause>.+)': its \w+ is not stated")

@@ -29,6 +29,7 @@ from __future__ import annotations
 
 import math
 import re
+from collections import Counter
 from dataclasses import dataclass, field
 from functools import cache
 from pathlib import Path
@@ -309,6 +310,15 @@ def default_trial(fp: str) -> str:
     raise WorldError(f"no ALFRED trial with object poses for {fp}")
 
 
+def instance_counts(fp: str, trials: list[str] | None = None) -> Counter[str]:
+    """How many objects of each type `load_floor_plan(fp, trials)` holds, none sliced yet (its static
+    objects and the trials' merged movable ones), without building it (a world takes a numpy pass over
+    its cells): check 1's counts for a benchmark-style row."""
+    statics, _ = _statics(fp)
+    poses = merged_poses(list(trials) if trials else [default_trial(fp)])
+    return Counter(s.type for s in statics) + Counter(_type_of_name(name) for name, *_ in poses)
+
+
 def load_floor_plan(fp: str, trials: list[str] | None = None) -> World:
     """The world of a floor plan with the movable objects of `trials` (default: its first trial)."""
     _layout_file(fp, "layout.npy")
@@ -321,7 +331,8 @@ def load_floor_plan(fp: str, trials: list[str] | None = None) -> World:
         if trial.floor_plan != fp:
             raise WorldError(f"trial {tid} is in {trial.floor_plan}, not {fp}")
     table = affordance_table()
-    statics, unplaced = _statics(fp)
+    statics, cannot_place = _statics(fp)
+    unplaced = dict(cannot_place)  # this world's own: the floor plan's (cached) stays as it is
     objects: list[WorldObject] = []
     counters: dict[str, int] = {}
 

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import random
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from nl2hltl2plan.language.learned.faithful import FaithfulExample, by_floor_plan, composable
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter
@@ -330,6 +330,8 @@ class Synth:
     before: list[tuple[str, str]]
     scene: str
     targets: list[int | None]  # the earlier span a REF / RPRE span points at
+    # the ALFRED trials composed, whose objects a validation world holds (not training data: no repr)
+    trials: list[str] = field(default_factory=list, repr=False)
 
 
 class _Builder:
@@ -473,5 +475,6 @@ def synthesise(
         drawn += 1
         if said_only and not composable(chosen):
             continue
-        out.append(Synth(lowered, spans, rels, tasks, before, chosen[0].example.floor_plan, targets))
+        trials = [c.example.trial for c in chosen]
+        out.append(Synth(lowered, spans, rels, tasks, before, chosen[0].example.floor_plan, targets, trials))
     return out

@@ -17,7 +17,9 @@ import contextlib
 import random
 import sys
 import time
+from collections import Counter
 from collections.abc import Callable, Iterator
+from functools import lru_cache
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -25,9 +27,10 @@ from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.io import write_json
 from nl2hltl2plan.language.accounting import account
 from nl2hltl2plan.language.grounding import scene_types
-from nl2hltl2plan.language.referents import check_referents
+from nl2hltl2plan.language.referents import Plurals, check_referents
 from nl2hltl2plan.language.scoring import match
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
+from nl2hltl2plan.worlds.world import ALFRED_PICK_TWO, World
 
 if TYPE_CHECKING:
     from nl2hltl2plan.language.learned.inference import Policy
@@ -132,8 +135,35 @@ def learned_generator(policy: Policy | None = None, model: SlotModel | None = No
     return generate
 
 
-def evaluate(rows: list[dict[str, Any]], generate: Generator, progress: bool = False) -> list[dict[str, Any]]:
-    """One record per instruction: ids, n_base, flags, match results, and the generated tasks."""
+def scenario_world(row: dict[str, Any]) -> World:
+    """A row's world as the benchmark builds a scenario's (`worlds.build_benchmark_world`): its floor plan
+    with the movable objects of the ALFRED trials it was composed from (`source_trials`), so that "two
+    pillows" finds the pillows of the trials that had them; a row that names none (a user's instruction)
+    gets the floor plan's first trial, as `plan --world FloorPlanN`."""
+    return _world(row["scene"], tuple(row.get("source_trials") or ()))
+
+
+@lru_cache(maxsize=64)  # a composed set's rows share few trial sets, a user set's rows few floor plans
+def _world(scene: str, trials: tuple[str, ...]) -> World:
+    from nl2hltl2plan.worlds import load_world
+
+    return load_world(scene, list(trials) or None)
+
+
+def scenario_counts(row: dict[str, Any]) -> Counter[str]:
+    """How many objects of each type `scenario_world(row)` holds (`floor_plans.instance_counts`: the
+    same counts without building the world)."""
+    from nl2hltl2plan.worlds.floor_plans import instance_counts
+
+    return instance_counts(row["scene"], row.get("source_trials") or None)
+
+
+def evaluate(
+    rows: list[dict[str, Any]], generate: Generator, progress: bool = False, plurals: Plurals = "two"
+) -> list[dict[str, Any]]:
+    """One record per instruction: ids, n_base, flags, match results, and the generated tasks. Check 1
+    and the referents' refusals judge a reading with the counts of the row's world (`scenario_counts`)
+    and, under `plurals` (`bench alfred`'s default), ALFRED's pick-two convention."""
     out = []
     for k, row in enumerate(rows):
         t0 = time.monotonic()
@@ -142,8 +172,9 @@ def evaluate(rows: list[dict[str, Any]], generate: Generator, progress: bool = F
             tasks, before, unparsed = generate(row["instruction"], scene_types(row["scene"]), row["scene"])
             # check 1 (word accounting) and the referents' refusals (a thing moved twice, "the dishes"),
             # as `plan` applies them: a partial or refused conversion is a failure
-            unparsed = unparsed + [str(u) for u in account(row["instruction"], tasks, before)]
-            check_referents(row["instruction"], tasks, before, None, row["scene"])
+            counts, scene, text = scenario_counts(row), row["scene"], row["instruction"]
+            unparsed = unparsed + [str(u) for u in account(text, tasks, before, counts, scene)]
+            check_referents(text, tasks, before, counts, scene, ALFRED_PICK_TWO, plurals)
         except Nl2Hltl2PlanError as exc:
             tasks, before, unparsed, err = [], [], [], str(exc)
         refused = bool(err or unparsed)

@@ -43,6 +43,7 @@ def rows_of(comps: list[Composition]) -> list[dict[str, Any]]:
             "before": c.before,
             "feasible": True,
             "ambiguous": False,
+            "source_trials": c.trials,  # its world holds their objects, as a benchmark scenario's
         }
         for i, c in enumerate(comps)
     ]

@@ -81,7 +81,7 @@ def rows_of_set(name: str, n: int) -> list[dict[str, Any]]:
     synth = synthesise(text_faithful_items("valid_unseen"), n, style, seed=int(seed_text or 11))
     return [
         {"id": f"{name}.{i}", "n_base": len(s.tasks), "instruction": s.text, "scene": s.scene,
-         "tasks": [t.model_dump() for t in s.tasks], "before": s.before}
+         "tasks": [t.model_dump() for t in s.tasks], "before": s.before, "source_trials": s.trials}
         for i, s in enumerate(synth)
     ]
 
