@@ -317,10 +317,10 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
         r"(?:prohibited|forbidden|not\s+allowed|not\s+permitted|banned)\b",
         r"nothing may be placed \1",
     ),
-    # narrative
+    # narrative (and a question's "would the arms please put ...": the courtesy word adds nothing)
     (
         r"\b(?:the\s+)?(?:robot\s+)?(?:arms|robots)\s+(?:will\s+|shall\s+|should\s+|must\s+|(?:have|need|are)\s+to\s+)?"
-        r"(?=(?:carry|move|take|put|place|bring|transfer|set|deliver|relocate|shift|stack|deposit|drop|arrange|"
+        r"(?:please\s+|kindly\s+)?(?=(?:carry|move|take|put|place|bring|transfer|set|deliver|relocate|shift|stack|deposit|drop|arrange|"
         r"position|distribute|return|send|lay|collect|gather|spread)\b)",
         " ",
     ),
