@@ -32,7 +32,8 @@ READ = {
     6: ["Hi,\nSee below.\nThe red block goes before the blue block. Place the three objects separately on "
         "regions G, H and I.\nSent from my phone"],
     # the arms asked with a courtesy word after them (h132 read them without one)
-    7: ["Could the robots kindly stack the three blocks on region I one after another, red before blue, keeping "
+    7: ["Could the robots kindly stack the three blocks on region I one after another, red before blue, "
+        "keeping "
         "regions F, G and H clear during this period?"],
     8: ["To do list below:\n- put the yellow block on region I first\n- then put it on region G\n- move the "
         "red and blue blocks to any empty region at any time",
