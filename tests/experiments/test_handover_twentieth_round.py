@@ -33,8 +33,7 @@ READ = {
         "regions G, H and I.\nSent from my phone"],
     # the arms asked with a courtesy word after them (h132 read them without one)
     7: ["Could the robots kindly stack the three blocks on region I one after another, red before blue, "
-        "keeping "
-        "regions F, G and H clear during this period?"],
+        "keeping regions F, G and H clear during this period?"],
     8: ["To do list below:\n- put the yellow block on region I first\n- then put it on region G\n- move the "
         "red and blue blocks to any empty region at any time",
         "Yellow block goes first on region I and after on region G. Red and blue blocks go to any region "
