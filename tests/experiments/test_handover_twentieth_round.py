@@ -3,7 +3,8 @@ list below:"), "see below" and "Sent from my phone" are read as the frame they a
 "not can", "a plan for move", "at (the) side of", "where is X now", "in each region is possible only one
 object", "any region empty", "again on G" (back), "cannot touch X if Y is not touched before" (until Y has
 been touched), "and after on G" and "first X and after Y" (then) are read, and so is a question to the arms
-with a courtesy word after them ("Would the arms please put ...?"). A subject line that names an
+with a courtesy word after them ("Would the arms please put ...?") and a goal said as "the idea / plan /
+intention is to ... / that ..." (as "the aim is"). A subject line that names an
 arm and ", after put ..." (then, or after putting?) stay refused. `dev97` and the held-out `validation30`
 and `validation31` are read right or refused, never misread (the `sweep` run)."""
 
@@ -29,13 +30,17 @@ READ = {
         "touched before. After all of this, put yellow block back on region G, where is the red block now."],
     5: ["First red block and after blue block. Exchange the positions of the red and blue blocks. Yellow "
         "block to the opposite side at any time."],
-    6: ["Hi,\nSee below.\nThe red block goes before the blue block. Place the three objects separately on "
+    6: ["Our plan is that the red block is placed before the blue block, and the three objects are placed "
+        "separately on regions G, H and I.",
+        "Hi,\nSee below.\nThe red block goes before the blue block. Place the three objects separately on "
         "regions G, H and I.\nSent from my phone"],
     # the arms asked with a courtesy word after them (h132 read them without one)
     7: ["Could the robots kindly stack the three blocks on region I one after another, red before blue, "
         "keeping regions F, G and H clear during this period?"],
     8: ["To do list below:\n- put the yellow block on region I first\n- then put it on region G\n- move the "
         "red and blue blocks to any empty region at any time",
+        "The idea is to put the yellow block on region I first, then on region G. Move the red and blue "
+        "blocks to any empty region at any time.",
         "Yellow block goes first on region I and after on region G. Red and blue blocks go to any region "
         "free at any time."],
 }

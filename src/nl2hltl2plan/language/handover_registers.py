@@ -261,6 +261,8 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
         r"(?:do\s+not\s+put\s+(?:any\s+object|anything|objects)|put\s+nothing)\s+(?:on|in)\s+it\s*$",
         r"nothing may be put on any region other than \1",
     ),
+    # the goal as "the idea / plan / intention is to ... / that ...": as "the aim is"
+    (r"^\s*(?:the|my|our)\s+(?:idea|plan|intention)(?:\s+here)?\s+is\s+(?=to\s|that\b)", "the aim is "),
     # academic: the goal as a noun
     (r"^\s*the\s+(?:objective|aim|purpose|goal)\s+is\s+(?:that\b|the\s+(?=\w+\s+of\b))", " "),
     (r"\b(?:the\s+)?(?:relocation|movement)\s+of\s+(?=(?:the|all|both|each|every)\b)", "move "),
