@@ -2096,3 +2096,93 @@ DEV_H132: dict[int, list[str]] = {
         "Two steps: Step 1 - green apple and orange onto the yellow plate; Step 2 - carrot and red apple "
         "onto the blue plate. Within each step, any order."],
 }
+
+# h138's held-out batch (session 23, issue 28): four voices, each on the four tasks (a non-native
+# speaker's article, preposition and verb-form errors; a voice transcript with fillers "okay so", "uh",
+# "um"; a checklist pasted from an e-mail with its greeting, "> " quote marks, "[ ]" boxes and sign-off; a
+# terse note in mixed case without punctuation), written with DEV_H138 before any rule and scored once at
+# the end.
+VALID_H138: dict[str, dict[int, list[str]]] = {
+    "nonnative": {
+        1: ["Place please the green apple on the blue plate, and the orange you place on the "
+            "yellow plate."],
+        2: ["You must to put green apple on pink plate, orange on yellow plate and red apple "
+            "on blue plate. Order of placing is not important."],
+        3: ["Carrot must go in the blue plate, orange in the yellow plate, green apple in "
+            "the green plate and red apple in the pink plate, order is not matter."],
+        4: ["At first put green apple and orange on the yellow plate. After finish this, put "
+            "carrot and red apple on the blue plate, order is free."],
+    },
+    "voice_fillers": {
+        1: ["uh okay so the orange goes on the yellow plate and um the green apple on the "
+            "blue plate"],
+        2: ["okay so um put the red apple on the blue plate, uh, the green apple on the pink "
+            "plate and the orange on the yellow plate, whatever order"],
+        3: ["um so okay the carrot on the blue plate, uh, the red apple on the pink plate, "
+            "the orange on the yellow plate and the green apple on the green plate, um, in any order you "
+            "like"],
+        4: ["okay so uh start with the green apple and the orange on the yellow plate, um, "
+            "and then when that's done the carrot and the red apple on the blue plate, uh, any order"],
+    },
+    "email_checklist": {
+        1: ["Hi Sam,\n\nCould you do these two:\n- put the green apple on the blue plate\n- "
+            "put the orange on the yellow plate\n\nThanks!"],
+        2: ["> Items (order doesn't matter):\n> - red apple -> blue plate\n> - orange -> "
+            "yellow plate\n> - green apple -> pink plate"],
+        3: ["Hello team,\n\nTo do, in any order:\n* carrot on the blue plate\n* orange on "
+            "the yellow plate\n* green apple on the green plate\n* red apple on the pink plate\n\nRegards"],
+        4: ["Hi,\n\nStep 1: green apple and orange onto the yellow plate.\nStep 2: once that "
+            "is done, carrot and red apple onto the blue plate, in any order.\n\nThanks"],
+    },
+    "terse_no_punctuation": {
+        1: ["ORANGE to yellow plate GREEN apple to blue plate"],
+        2: ["red apple On blue plate green apple On pink plate orange On yellow plate order "
+            "free"],
+        3: ["carrot BLUE plate, orange YELLOW plate, green apple GREEN plate, red apple PINK "
+            "plate - any order"],
+        4: ["Green apple + orange in yellow plate 1st THEN carrot + red apple in blue plate "
+            "any order"],
+    },
+}
+
+
+DEV_H138: dict[str, dict[int, list[str]]] = {
+    "nonnative": {
+        1: ["Please you put the green apple in blue plate and the orange in yellow plate."],
+        2: ["Place green apple in the pink plate, orange in the yellow plate and red apple "
+            "in blue plate, the order is free, you can choose."],
+        3: ["Put the carrot in blue plate, orange in yellow plate, green apple in green "
+            "plate and red apple in pink plate, in which order you want."],
+        4: ["First you place the green apple and orange in yellow plate. When is finish, "
+            "place the carrot and red apple in blue plate, also in any order."],
+    },
+    "voice_fillers": {
+        1: ["okay so uh put the green apple on the blue plate and um the orange on the "
+            "yellow plate"],
+        2: ["um okay so the green apple goes on the pink plate, uh, the orange on the yellow "
+            "plate and the red apple on the blue plate, like, any order is fine"],
+        3: ["okay so uh carrot on the blue plate, orange on the yellow plate, um, green "
+            "apple on the green plate and the red apple on the pink plate, in any order"],
+        4: ["uh so first put the green apple and the orange on the yellow plate, okay, and "
+            "once that's done, um, put the carrot and the red apple on the blue plate, in any order"],
+    },
+    "email_checklist": {
+        1: ["Hi,\n\nTo do:\n- green apple -> blue plate\n- orange -> yellow plate\n\nThanks"],
+        2: ["> Please do these, in any order:\n> * green apple on the pink plate\n> * orange "
+            "on the yellow plate\n> * red apple on the blue plate"],
+        3: ["Hello,\n\nChecklist (any order):\n- [ ] carrot in the blue plate\n- [ ] orange "
+            "in the yellow plate\n- [ ] green apple in the green plate\n- [ ] red apple in the pink "
+            "plate\n\nCheers"],
+        4: ["Hi there,\n\n1. Put the green apple and the orange in the yellow plate.\n2. "
+            "After that, put the carrot and the red apple in the blue plate, any order.\n\nBest"],
+    },
+    "terse_no_punctuation": {
+        1: ["GREEN apple to BLUE plate orange to YELLOW plate"],
+        2: ["green apple on Pink plate orange on Yellow plate red apple on Blue plate Any "
+            "order"],
+        3: ["Carrot in BLUE plate orange in YELLOW plate green apple in GREEN plate red "
+            "apple in PINK plate order doesnt matter"],
+        4: ["green apple and orange in Yellow plate FIRST then carrot and red apple in Blue "
+            "plate any order"],
+    },
+}

@@ -39,7 +39,10 @@ the word tables' `REWRITES`). Each rewrite changes no meaning:
   dump / shove the blocks"), "in such a way that", "at any point during the task", an order said first
   ("ahead of X, Y must be placed");
 - a non-native speaker's "must to be", "please to", "before than", "near of", "in any moment", "whatever
-  empty region", "after to finish all", "make exchange of the position of", "is to put before";
+  empty region", "after to finish all", "make exchange of the position of", "is to put before", "not can",
+  "a plan for move", "at side of", "where is X now", "in each region is possible only one object", "any
+  region empty", "again on G" (back on G), "cannot touch X if Y is not touched before" (until Y has been
+  touched), "and after on G" and "first X and after Y" (then);
 - conditions that restate an order or a rule: "when / once / by the time you place X, Y must already be
   placed" (Y before X), "if a region already holds a block, do not put another block there" and "a region
   that already has a block may not get a second one" (one block per region), "if a region is not one of
@@ -203,6 +206,33 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     (r"\bmake\s+(?:an?\s+|the\s+)?exchange\s+of\s+the\s+positions?\s+of\b", "exchange the positions of"),
     (r"\b(is|are)\s+to\s+put\s+(?=before|after|first|on|in|onto|into)\b", r"\1 to be put "),
     (r"\band\s+only\s+(?:afterwards?|after\s+that|then)\b", "and then"),
+    # non-native: "not can" (cannot); "for" before a bare verb ("a plan for move": to move); "at (the) side
+    # of" (beside); "where is X now" in a clause after a comma (where X is now); "in each region is possible /
+    # allowed only one object" (only one object is allowed in each region); "after" as "then" before a
+    # place ("and after on region G") and after "first ... and" before a block that ends the clause ("First
+    # red block and after blue block"); not before a verb (", after put it on G": then, or after putting?)
+    (r"\bnot\s+can\b", "cannot"),
+    (r"^\s*not\s+any\s+(?=(?:object|block|pillar)s?\b)", "no "),
+    (r"\b(area|region|place)s?\s+different\s+(?:of|from|than)\s+(?=the\b)", r"\1 other than "),
+    (r"\s*,\s*it\s+is\s+(?=regions?\s+[e-j]\b)", ", that is "),
+    (r"\bany\s+region\s+(empty|free)\b", r"any \1 region"),
+    (r"\bagain\s+(?=(?:on|onto|in|into|to)\s+(?:region\s+)?[e-j]\b)", "back "),
+    (r"\bfor\s+(?=(?:move|put|place|transfer|bring|carry)\s+(?:the|all|a|three|both|\d)\b)", "to "),
+    (r"\bat\s+(?:the\s+)?side\s+of\b", "beside"),
+    (rf"([,(]\s*)where\s+(?:is|are)\s+({_BLOCK})\s+(now|currently|at\s+the\s+moment)\b", r"\1where \2 is \3"),
+    (
+        r"\bin\s+(?:each|every|any)\s+region\s+(?:is|it\s+is)\s+(?:possible|allowed|permitted)\s+(?:only|just)\s+"
+        r"(?:one|a\s+single|1)\s+(block|object|pillar)\b",
+        r"only one \1 is allowed in each region",
+    ),
+    # "cannot touch X if (before) Y is / was not touched (before)": X untouched until Y has been touched
+    (
+        rf"\b(cannot|can\s+not|may\s+not|must\s+not|no\s+arm\s+(?:can|may))\s+touch\s+({_BLOCK})\s+if\s+"
+        rf"(?:before\s+)?({_BLOCK})\s+(?:is|was|has|had)\s+not\s+(?:been\s+)?touched(?:\s+before)?\b",
+        r"\1 touch \2 until \3 has been touched",
+    ),
+    (r"\band\s+after\s+(?=(?:on|onto|in|into|to)\s+(?:region\s+)?[e-j]\b)", "and then "),
+    (rf"^(\s*first\b[^,]*?\s)and\s+after\s+(?=(?:{_BLOCK})\s*(?:,|$))", r"\1and then "),
     # "a region that already has a block may not get a second one": the world's rule (one block per region)
     (
         r"\b(?:a|any)\s+region\s+that\s+already\s+(?:has|holds|contains)\s+(?:a|one)\s+(?:block|object)\s+"
@@ -231,6 +261,8 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
         r"(?:do\s+not\s+put\s+(?:any\s+object|anything|objects)|put\s+nothing)\s+(?:on|in)\s+it\s*$",
         r"nothing may be put on any region other than \1",
     ),
+    # the goal as "the idea / plan / intention is to ... / that ...": as "the aim is"
+    (r"^\s*(?:the|my|our)\s+(?:idea|plan|intention)(?:\s+here)?\s+is\s+(?=to\s|that\b)", "the aim is "),
     # academic: the goal as a noun
     (r"^\s*the\s+(?:objective|aim|purpose|goal)\s+is\s+(?:that\b|the\s+(?=\w+\s+of\b))", " "),
     (r"\b(?:the\s+)?(?:relocation|movement)\s+of\s+(?=(?:the|all|both|each|every)\b)", "move "),
@@ -287,10 +319,10 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
         r"(?:prohibited|forbidden|not\s+allowed|not\s+permitted|banned)\b",
         r"nothing may be placed \1",
     ),
-    # narrative
+    # narrative (and a question's "would the arms please put ...": the courtesy word adds nothing)
     (
         r"\b(?:the\s+)?(?:robot\s+)?(?:arms|robots)\s+(?:will\s+|shall\s+|should\s+|must\s+|(?:have|need|are)\s+to\s+)?"
-        r"(?=(?:carry|move|take|put|place|bring|transfer|set|deliver|relocate|shift|stack|deposit|drop|arrange|"
+        r"(?:please\s+|kindly\s+)?(?=(?:carry|move|take|put|place|bring|transfer|set|deliver|relocate|shift|stack|deposit|drop|arrange|"
         r"position|distribute|return|send|lay|collect|gather|spread)\b)",
         " ",
     ),

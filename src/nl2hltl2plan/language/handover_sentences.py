@@ -61,6 +61,8 @@ def split_sentences(instruction: str) -> list[str]:
     and a record of labelled fields, on lines or in sentences and in either order ('Blocks: ...' and
     'Targets: ...'), is read as one goal."""
     out: list[str] = []
+    # an e-mail's quote marks ("> " at a line's start, "> > " when quoted twice): the quoted line is read
+    instruction = re.sub(r"(?m)^[ \t]*(?:>[ \t]*)+(?=\S)", "", instruction)
     instruction = _ROMAN_STEP.sub(lambda m: f"{m['word']} {_ROMAN[m['number'].lower()]}", instruction)
     instruction = nested_read(transcript_read(prohibitions_read(instruction)))
     instruction = places_then_count_read(verb_heading_read(block_bullets_read(instruction)))

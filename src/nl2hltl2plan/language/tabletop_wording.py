@@ -173,7 +173,7 @@ def plain_words(text: str, kinds: dict[str, bool], heads: dict[str, list[str]]) 
     text = remarks_read(text, mention_pattern(kinds), frozenset(w for name in kinds for w in name.split()))
     text = _PAIR_VERB.sub("match", text).replace("+", " and ")
     text = _BY_THE_END.sub("", _FIRST_THINGS.sub("first", text))
-    text = _DONE_WORDS.sub(r"\g<that> is done", text)
+    text = _UNSAID_DONE.sub(r"\g<when> that is done", _DONE_WORDS.sub(r"\g<that> is done", text))
     text = re.sub(r"\b(?:make|have|get)\s+it\s+so(?:\s+that)?\b", "make sure", text)  # the same goal
     text = _own_plate_dropped(_tidied_as_put(text, kinds), kinds)
     text = answers_joined(plates_by_colour(respectively_paired(text, kinds), kinds), kinds)
@@ -229,6 +229,13 @@ _BY_THE_END = re.compile(
 _DONE_WORDS = re.compile(
     r"\b(?P<that>that|this|those|these|it|they)(?:'s|s|\s+is|\s+are|'re)\s+(?:sorted|handled|through|over|"
     r"taken\s+care\s+of|out\s+of\s+the\s+way|loaded|filled|full|ready)\b"
+)
+# a non-native speaker's end of a step, with no subject or a bare verb: "when is finish(ed)", "after finish
+# this", "once finishing all" (that is done); only where it ends its clause ("after finishing the orange, ..."
+# names a task, and stays)
+_UNSAID_DONE = re.compile(
+    r"\b(?P<when>when|once|after)\s+(?:(?:it\s+)?is\s+finish(?:ed)?|(?:to\s+)?finish(?:ing)?\s+"
+    r"(?:this|that|it|all)(?:\s+of\s+(?:this|that|it))?)(?=\s*(?:[,.;:!?]|$))"
 )
 _FIRST_THINGS = re.compile(r"\bfirst\s+things\s+first\b")
 

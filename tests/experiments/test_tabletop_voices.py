@@ -1,0 +1,67 @@
+"""Issue 28, h138 (session 23): tabletop rephrasings in four voices (a non-native speaker, a voice transcript
+with fillers, a checklist pasted from an e-mail, a terse note in mixed case without punctuation) give the
+original wording's tasks and closed order: the development batch `DEV_H138` (one voice by default, every
+voice in the `sweep` run); the held-out `VALID_H138` is read right or refused, never misread (`sweep`). A
+non-native speaker's end of a step with no subject ("When is finish, ...", "After finish this, ...") closes
+the step; where "finish" has an object ("After finishing the orange, ...") it is not read as that."""
+
+from __future__ import annotations
+
+import contextlib
+import io
+
+import pytest
+from rephrasings import DEV_H138, VALID_H138
+from test_tabletop import TASKS, signature
+
+from nl2hltl2plan.cli.main import main as cli_main
+from nl2hltl2plan.errors import Nl2Hltl2PlanError
+from nl2hltl2plan.language.tabletop_wording import _UNSAID_DONE
+
+
+def _check(batch: dict[str, dict[int, list[str]]], style: str) -> None:
+    for task_id, texts in batch[style].items():
+        reference = signature(TASKS[task_id].instruction)
+        for text in texts:
+            assert signature(text) == reference, text
+
+
+# the voice the new rule was written for in the default run; every voice in the `sweep` run (a style is about
+# two seconds of reading)
+@pytest.mark.parametrize(
+    "style", [s if s == "nonnative" else pytest.param(s, marks=pytest.mark.sweep) for s in sorted(DEV_H138)]
+)
+def test_h138_development_voices_give_the_tasks_and_order(style: str) -> None:
+    _check(DEV_H138, style)
+
+
+def _refused(text: str) -> bool:
+    """`nl2hltl2plan plan TEXT --world tabletop` exits non-zero (its output discarded)."""
+    sink = io.StringIO()
+    with contextlib.redirect_stdout(sink), contextlib.redirect_stderr(sink):
+        return cli_main(["plan", text, "--world", "tabletop"]) != 0
+
+
+@pytest.mark.sweep
+@pytest.mark.parametrize("style", sorted(VALID_H138))
+def test_h138_held_out_voices_are_read_right_or_refused(style: str) -> None:
+    """Held out: each wording gives the tasks and order, or the command refuses it; never another plan."""
+    for task_id, texts in VALID_H138[style].items():
+        reference = signature(TASKS[task_id].instruction)
+        for text in texts:
+            assert _refused(text) or _signature_or_none(text) == reference, text
+
+
+def _signature_or_none(text: str) -> tuple[list, list] | None:
+    try:
+        return signature(text)
+    except Nl2Hltl2PlanError:
+        return None
+
+
+def test_a_step_finished_without_a_subject_is_a_step_done() -> None:
+    assert _UNSAID_DONE.sub(r"\g<when> that is done", "when is finish, place") == "when that is done, place"
+    assert _UNSAID_DONE.sub(r"\g<when> that is done", "after finish this.") == "after that is done."
+    # with an object "finish" names a task: left as said
+    said = "after finishing the orange, place the carrot"
+    assert _UNSAID_DONE.sub(r"\g<when> that is done", said) == said
