@@ -9,13 +9,15 @@ that does not read completely makes the whole reading incomplete.
 `decide` (the rule chosen on the validation sets, docs/learned.md):
 - the grammar's reading is complete and the two agree -> the grammar's;
 - the grammar's reading is incomplete (it lists unread words) and the structure model's is complete,
-  passes the word accounting (check 1) and is confident -> the structure model's;
-- both are complete and they disagree -> the grammar's where the model's reverses an order the grammar
-  read or adds a heating, cooling or washing that no word names (`against_the_words`); else the
-  structure model's when it is at least `override` sure
-  (`override_pointing` when its reading has a span that points back at an earlier one); when it is less
-  sure than `doubt`, neither is trusted: no tasks, the disagreement goes to `unparsed`; in between the
-  grammar's.
+  passes the word accounting (check 1), keeps every order word (`order_not_held`) and is confident -> the
+  structure model's, unless the grammar found that the words fit several readings (a reference to what was
+  said that names no certain task: `grammar.references.said_before`);
+- both are complete and they disagree -> the grammar's where the model's reverses or drops an order the
+  grammar read, does not keep what "first" or "last" says of a clause, or adds a heating, cooling or
+  washing that no word names (`against_the_words`); else the structure model's when it is at least
+  `override` sure (`override_pointing` when its reading has a span that points back at an earlier one);
+  when it is less sure than `doubt`, neither is trusted: no tasks, the disagreement goes to `unparsed`; in
+  between the grammar's.
 """
 
 from __future__ import annotations
@@ -30,6 +32,7 @@ from nl2hltl2plan.language.grounding import find_mentions, tokens
 from nl2hltl2plan.language.learned.compose import ELIDABLE, VERB_GERUND, VERB_PARTICIPLE
 from nl2hltl2plan.language.learned.span_order import before_pairs
 from nl2hltl2plan.language.learned.structure import Reading
+from nl2hltl2plan.language.order_words import first_and_last_kept
 from nl2hltl2plan.language.parse_usage import IMPLIED_TYPES
 from nl2hltl2plan.language.scoring import match
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter, transitive_closure
@@ -59,15 +62,19 @@ def decide(
     rule: StructurePolicy,
     instruction: str,
     points: bool = False,
+    uncertain: bool = False,
 ) -> str:
     """Which reading to take: "grammar", "model" or "neither" (-> unparsed). `grammar`: its tasks, before
     pairs and whether it is complete; `model`: the structure model's complete reading and its confidence
     (None: incomplete); `instruction`: the words both read; `points`: whether the model's reading has a
-    span that points back."""
-    if model is None:
+    span that points back; `uncertain`: the grammar found words that fit several readings ("A and B.
+    Before you do this, C"), which the model must not choose between."""
+    if model is None or uncertain:
         return "grammar"
     tasks, before, confidence = model
     if not grammar[2]:
+        if order_not_held(instruction, (tasks, before), (grammar[0], grammar[1])):
+            return "grammar"
         return "model" if confidence >= rule.rescue else "grammar"
     if same_reading(tasks, before, grammar[0], grammar[1]):
         return "grammar"
@@ -84,12 +91,11 @@ def against_the_words(
     model: tuple[list[BaseTaskSpec], list[tuple[str, str]]],
     grammar: tuple[list[BaseTaskSpec], list[tuple[str, str]]],
 ) -> bool:
-    """Whether the model's reading contradicts what the grammar read from the words: it puts two tasks the
-    other way round ("Having done so, Y" read as Y first), or it heats, cools or washes a thing where no
-    word says so and the grammar does not ("The mug is in the sink, put it in the microwave" as a washing;
-    check 1 takes the sink for the washing's appliance)."""
-    g_order, m_order = _named_order(*grammar), _named_order(*model)
-    if any((b, a) in m_order for a, b in g_order):
+    """Whether the model's reading contradicts what the grammar read from the words: it does not keep the
+    order words (`order_not_held`), or it heats, cools or washes a thing where no word says so and the
+    grammar does not ("The mug is in the sink, put it in the microwave" as a washing; check 1 takes the
+    sink for the washing's appliance)."""
+    if order_not_held(instruction, model, grammar):
         return True
     said = {c for w, _, _ in tokens(instruction) for c in categories(w)}
     # an appliance counts where it is a place the thing goes, not where something already is
@@ -103,6 +109,23 @@ def against_the_words(
         and t.kind not in g_kinds
         for t in model[0]
     )
+
+
+def order_not_held(
+    instruction: str,
+    model: tuple[list[BaseTaskSpec], list[tuple[str, str]]],
+    grammar: tuple[list[BaseTaskSpec], list[tuple[str, str]]],
+) -> bool:
+    """Whether the model's reading drops or contradicts an order word: it puts two tasks the other way
+    round from the grammar's reading ("Having done so, Y" read as Y first), leaves two tasks unordered
+    that the grammar's words order ("A, then B" read as A and B), or does not keep what "first" or "last"
+    says of a clause, a word the grammar may have left unread ("A, put B first, then C" read with A and B
+    unordered)."""
+    g_order, m_order = _named_order(*grammar), _named_order(*model)
+    named = {t.summary() for t in model[0]}
+    if any((b, a) in m_order or (a in named and b in named and (a, b) not in m_order) for a, b in g_order):
+        return True
+    return not first_and_last_kept(instruction, *model)
 
 
 _IS_AT = re.compile(
