@@ -9,7 +9,8 @@ that does not read completely makes the whole reading incomplete.
 `decide` (the rule chosen on the validation sets, docs/learned.md):
 - the grammar's reading is complete and the two agree -> the grammar's;
 - the grammar's reading is incomplete (it lists unread words) and the structure model's is complete,
-  passes the word accounting (check 1), keeps every order word (`order_not_held`) and is confident -> the
+  passes the word accounting (check 1), keeps what "first" and "last" say of a clause
+  (`order_words.first_and_last_kept`, words the grammar may have left unread) and is confident -> the
   structure model's, unless the grammar found that the words fit several readings (a reference to what was
   said that names no certain task: `grammar.references.said_before`);
 - both are complete and they disagree -> the grammar's where the model's reverses or drops an order the
@@ -27,7 +28,7 @@ from dataclasses import dataclass
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.language.accounting import account
-from nl2hltl2plan.language.content_words import categories
+from nl2hltl2plan.language.content_words import categories, free_order_remarks
 from nl2hltl2plan.language.grounding import find_mentions, tokens
 from nl2hltl2plan.language.learned.compose import ELIDABLE, VERB_GERUND, VERB_PARTICIPLE
 from nl2hltl2plan.language.learned.span_order import before_pairs
@@ -73,7 +74,9 @@ def decide(
         return "grammar"
     tasks, before, confidence = model
     if not grammar[2]:
-        if order_not_held(instruction, (tasks, before), (grammar[0], grammar[1])):
+        # the incomplete grammar reading's own order is often what the model is right about ("in any order"
+        # read as a sequence): only the words of "first" and "last" bind the model here
+        if not first_and_last_kept(instruction, tasks, before):
             return "grammar"
         return "model" if confidence >= rule.rescue else "grammar"
     if same_reading(tasks, before, grammar[0], grammar[1]):
@@ -118,14 +121,24 @@ def order_not_held(
 ) -> bool:
     """Whether the model's reading drops or contradicts an order word: it puts two tasks the other way
     round from the grammar's reading ("Having done so, Y" read as Y first), leaves two tasks unordered
-    that the grammar's words order ("A, then B" read as A and B), or does not keep what "first" or "last"
-    says of a clause, a word the grammar may have left unread ("A, put B first, then C" read with A and B
-    unordered)."""
+    that the grammar's words order ("A, then B" read as A and B) where no phrase frees an order, or does
+    not keep what "first" or "last" says of a clause, a word the grammar may have left unread ("A, put B
+    first, then C" read with A and B unordered)."""
     g_order, m_order = _named_order(*grammar), _named_order(*model)
-    named = {t.summary() for t in model[0]}
-    if any((b, a) in m_order or (a in named and b in named and (a, b) not in m_order) for a, b in g_order):
+    if any((b, a) in m_order for a, b in g_order):
+        return True
+    # a pair left open may be the one a phrase frees ("Before all that, A and B, in whatever order you like")
+    named = {t.summary() for t in model[0]} if not _frees_an_order(instruction) else set()
+    if any(a in named and b in named and (a, b) not in m_order for a, b in g_order):
         return True
     return not first_and_last_kept(instruction, *model)
+
+
+def _frees_an_order(instruction: str) -> bool:
+    """Whether a word or phrase of the text leaves some order free ("in any order", "whenever you like")."""
+    toks = tokens(instruction)
+    text = " ".join(w for w, _, _ in toks)
+    return bool(free_order_remarks(text)) or any("any_order" in categories(w) for w, _, _ in toks)
 
 
 _IS_AT = re.compile(
