@@ -20,9 +20,9 @@ import networkx as nx
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.content_words import DETERMINERS, FreeOrder, Unread, categories, free_order_remarks
-from nl2hltl2plan.language.grounding import Mention, camel_words, sentence_start, tokens
+from nl2hltl2plan.language.grounding import Mention, camel_words, find_mentions, sentence_start, tokens
 from nl2hltl2plan.language.parse_usage import ParseUsage
-from nl2hltl2plan.language.task_specs import transitive_closure
+from nl2hltl2plan.language.task_specs import BaseTaskSpec, transitive_closure
 
 # "With the bat done, Y" / "Whenever the vase is sorted, Y" / "With the mug out of the way, Y": a thing's
 # task said to be finished opens a reference, as "Once the bat is done, Y" does (the words that say a step
@@ -220,9 +220,12 @@ def _first_not_first(
     parse: ParseUsage,
     objects: set[str],
     closure: set[tuple[str, str]],
+    strict: bool = False,
 ) -> list[Unread]:
     """ "First A, and after you put B ..." read with B before A: the tasks of the clause "first" opens
-    (to its first comma) must not come after another task of the same sentence."""
+    (to its first comma) must not come after another task of the same sentence; nor those of a clause
+    "first" closes ("A, put B first, then C"). `strict` (`first_and_last_kept`): they must come before
+    every other task of the sentence, and a clause "last" / "lastly" / "finally" closes after every one."""
     out = []
     for m in _OPENING_FIRST.finditer(instruction):
         end = _sentence_span(instruction, m.start("first"))[1]
@@ -231,20 +234,46 @@ def _first_not_first(
             continue
         firsts = _tasks_in(instruction, parse, (m.start("first"), comma), mentions, objects)
         others = _tasks_in(instruction, parse, (comma, end), mentions, objects) - firsts
-        if any((b, a) in closure for a in firsts for b in others):
+        if _out_of_place(firsts, others, closure, strict):
             out.append(Unread(m["first"], "order", "the reading puts another task before what 'first' opens"))
-    for m in _CLOSING_FIRST.finditer(instruction):  # "A, put B first, then C": B before A too
+    for m in _CLOSING_ORDER.finditer(instruction):  # "A, put B first, then C": B before A too
+        word = m["word"].lower()
+        if word != "first" and not strict:
+            continue
         start, end = _sentence_span(instruction, m.start())
         opens = max(instruction.rfind(",", start, m.start()), instruction.rfind(";", start, m.start()), start)
-        firsts = _tasks_in(instruction, parse, (opens, m.start()), mentions, objects)
-        others = _tasks_in(instruction, parse, (start, end), mentions, objects) - firsts
-        if firsts and any((b, a) in closure for a in firsts for b in others):
-            out.append(Unread("first", "order", "the reading puts another task before the one said first"))
+        said = _tasks_in(instruction, parse, (opens, m.start()), mentions, objects)
+        others = _tasks_in(instruction, parse, (start, end), mentions, objects) - said
+        held, why = closure, "the reading puts another task before the one said first"
+        if word != "first":  # "... and put the bread in the fridge last": after every other task
+            held = {(b, a) for a, b in closure}
+            why = f"the reading puts another task after the one said {word}"
+        if said and _out_of_place(said, others, held, strict):
+            out.append(Unread(m["word"], "order", why))
     return out
 
 
-# "first" closing a clause ("put the mug in the sink first, then ...", "... in the sink first.")
-_CLOSING_FIRST = re.compile(r"(?<=\w)\s+first\b(?=\s*(?:[,;.!?]|$))", re.I)
+def first_and_last_kept(instruction: str, tasks: list[BaseTaskSpec], before: list[tuple[str, str]]) -> bool:
+    """Whether a reading keeps what "first" opening or closing a clause, and "last" / "lastly" / "finally"
+    closing one, say of its tasks, strictly (`_first_not_first`): the structure model's reading is held to
+    it before it may replace the grammar's (`learned.structured.decide`)."""
+    parse = ParseUsage(tasks, before)
+    objects = {o for t in tasks for o in [*t.object, *(t.container or [])]}
+    closure = transitive_closure(list(before), [t.id for t in tasks])
+    mentions = find_mentions(instruction)
+    return not _first_not_first(instruction, mentions, parse, objects, closure, strict=True)
+
+
+def _out_of_place(firsts: set[str], others: set[str], closure: set[tuple[str, str]], strict: bool) -> bool:
+    """Whether a task of `others` comes before one of `firsts` (`strict`: or any is not after them all)."""
+    if any((b, a) in closure for a in firsts for b in others):
+        return True
+    return strict and any((a, b) not in closure for a in firsts for b in others)
+
+
+# "first" closing a clause ("put the mug in the sink first, then ...", "... in the sink first."), and
+# "last" / "lastly" / "finally" closing one
+_CLOSING_ORDER = re.compile(r"(?<=\w)\s+(?P<word>first|last|lastly|finally)\b(?=\s*(?:[,;.!?]|$))", re.I)
 
 
 _CONNECTIVE = re.compile(

@@ -239,6 +239,8 @@ _VAGUE_AMOUNT = re.compile(
     r"\b(?:some|most|half|every other|a (?:bunch|number|handful|lot) of|lots of|plenty of)\b(?: of)?"
 )
 _THE_REST = re.compile(r"\bthe (?:rest|remaining(?: ones)?|others)\b")
+# "A. When the rest is done, B" names the tasks said before (`grammar.references.said_before`), not an amount
+_REST_DONE = re.compile(r" (?:is|are|has been|have been|gets|get) (?:done|finished|complete)")
 _VAGUE_PIECES = re.compile(  # "a few slices": pieces are no mention, so the count check never sees them
     r"\b(?:some|most|half|a few|few|several|many|multiple|a couple of)(?: of)?(?: the)? "
     r"(?:slices|pieces|bits|chunks)\b"
@@ -316,6 +318,7 @@ def vague_words(instruction: str, mentions: list[Mention]) -> list[Unread]:
     out += [
         Unread(m.group(0), "count", "a vague count: say how many")
         for m in (*_THE_REST.finditer(lowered), *_VAGUE_PIECES.finditer(lowered))
+        if not (_REST_DONE.match(lowered, m.end()) and re.search(r"[,.;!?]", lowered[: m.start()]))
     ]
     out += [
         Unread(m.group(0), "place", "a vague place: name it")

@@ -13,9 +13,11 @@ from nl2hltl2plan.language.grammar.draft_tasks import TaskBuilder, Tasks, Unit
 from nl2hltl2plan.language.grammar.frames import IN_SENTENCE, OF_ALL
 from nl2hltl2plan.language.grammar.phrases import parse_np
 from nl2hltl2plan.language.grammar.references import (
+    NOT_CERTAIN,
     new_tasks_from_ref,
     ref_targets,
     restated_own_tasks,
+    said_before,
     self_state,
     stated_tasks,
     treats_own,
@@ -105,6 +107,13 @@ def _marker_edges(
             own = sorted(t for v in units if v.sentence == u.sentence for t in v.tasks)
             pairs = zip(own, own[1:], strict=False)
             edges.update(pairs if kind == G.IN_ORDER else ((b2, a) for a, b2 in pairs))
+        elif kind in {G.AFTER_REF, G.BEFORE_REF} and (named := said_before(ref, u, units)) is not None:
+            if not named:  # "the rest" with nothing said before it; "A and B. Before you do this, C"
+                b.unparsed.append(f"could not tell which task {ref!r} refers to ({NOT_CERTAIN})")
+            edges.update((a, b2) if kind == G.AFTER_REF else (b2, a) for a in named for b2 in u.tasks)
+            if kind == G.BEFORE_REF:  # "W, then X. Before you do this, Y": Y after W too, as "before that"
+                ahead = {w for w, a in edges if a in named and w not in u.tasks}
+                edges.update((w, b2) for w in ahead for b2 in u.tasks)
         elif kind == G.AFTER_REF and (named := by_position(ref, earlier, prev, others)) is not None:
             edges.update((a, b2) for a in named for b2 in u.tasks)
         elif kind == G.BEFORE_REF and (named := by_position(ref, earlier, prev, others)) is not None:

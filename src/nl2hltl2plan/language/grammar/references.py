@@ -7,12 +7,50 @@ import re
 from nl2hltl2plan.domain.task_kinds import APPLIANCE, Kind
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.clauses import split_clauses
-from nl2hltl2plan.language.grammar.draft_tasks import Draft, TaskBuilder
+from nl2hltl2plan.language.grammar.draft_tasks import Draft, TaskBuilder, Unit
 from nl2hltl2plan.language.grammar.drafts import incomplete, joins
 from nl2hltl2plan.language.grammar.frames import Frame, parse_frame, two_places, two_places_unread
 from nl2hltl2plan.language.grammar.listed_things import merge_items
 from nl2hltl2plan.language.grammar.phrases import NP, parse_np, tokens
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
+
+# "once the rest is finished", "when the rest is done": every task said before the clause
+_THE_REST = re.compile(
+    r"^the\s+rest(?:\s+(?:is|are|has\s+been|have\s+been|gets|get)\s+"
+    r"(?:done|finished|complete|completed|over|through|sorted|handled))?$",
+    re.I,
+)
+# "before you do this", "after you've done that", "once you finish this": the task just said
+_DO_THIS = re.compile(
+    r"^(?:you(?:'ve|\s+have|'re|\s+are)?\s+)?(?:do|did|done|finish|finished|complete|completed)\s+"
+    r"(?:with\s+)?(?:this|that)$",
+    re.I,
+)
+
+
+# why a reference to what was said is refused: the words fit several readings, which the structure model must
+# not choose between either (`learned.structured.decide`)
+NOT_CERTAIN = "what it names is not certain"
+
+
+def said_before(ref: str, u: Unit, units: list[Unit]) -> list[int] | None:
+    """The tasks a reference to what was said names, where that is certain: "the rest" (is done) is every
+    task said before the clause; "do this" / "done that" is the task just said, where it is the only task
+    of its sentence or said in the reference's own sentence ("put A, and before you do that, B"). None:
+    not such a reference; []: such a reference whose tasks are not certain (nothing said before it, or
+    "A and B. Before you do this, C": A and B or B alone)."""
+    ref = " ".join(ref.split())
+    if not u.tasks or not (_THE_REST.match(ref) or _DO_THIS.match(ref)):
+        return None
+    first = min(u.tasks)
+    said = [v for v in units if v is not u and v.tasks and max(v.tasks) < first]
+    if _THE_REST.match(ref):
+        return [t for v in said for t in v.tasks]
+    if not said:
+        return []
+    last = said[-1]
+    alone = [v for v in said if v.sentence == last.sentence] == [last]
+    return list(last.tasks) if len(last.tasks) == 1 and (alone or last.sentence == u.sentence) else []
 
 
 def _ref_parts(ref: str) -> list[str]:

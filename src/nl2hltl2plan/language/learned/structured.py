@@ -9,13 +9,16 @@ that does not read completely makes the whole reading incomplete.
 `decide` (the rule chosen on the validation sets, docs/learned.md):
 - the grammar's reading is complete and the two agree -> the grammar's;
 - the grammar's reading is incomplete (it lists unread words) and the structure model's is complete,
-  passes the word accounting (check 1) and is confident -> the structure model's;
-- both are complete and they disagree -> the grammar's where the model's reverses an order the grammar
-  read or adds a heating, cooling or washing that no word names (`against_the_words`); else the
-  structure model's when it is at least `override` sure
-  (`override_pointing` when its reading has a span that points back at an earlier one); when it is less
-  sure than `doubt`, neither is trusted: no tasks, the disagreement goes to `unparsed`; in between the
-  grammar's.
+  passes the word accounting (check 1), keeps what "first" and "last" say of a clause
+  (`order_words.first_and_last_kept`, words the grammar may have left unread) and is confident -> the
+  structure model's, unless the grammar found that the words fit several readings (a reference to what was
+  said that names no certain task: `grammar.references.said_before`);
+- both are complete and they disagree -> the grammar's where the model's reverses or drops an order the
+  grammar read, does not keep what "first" or "last" says of a clause, or adds a heating, cooling or
+  washing that no word names (`against_the_words`); else the structure model's when it is at least
+  `override` sure (`override_pointing` when its reading has a span that points back at an earlier one);
+  when it is less sure than `doubt`, neither is trusted: no tasks, the disagreement goes to `unparsed`; in
+  between the grammar's.
 """
 
 from __future__ import annotations
@@ -25,11 +28,12 @@ from dataclasses import dataclass
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.language.accounting import account
-from nl2hltl2plan.language.content_words import categories
+from nl2hltl2plan.language.content_words import categories, free_order_remarks
 from nl2hltl2plan.language.grounding import find_mentions, tokens
 from nl2hltl2plan.language.learned.compose import ELIDABLE, VERB_GERUND, VERB_PARTICIPLE
 from nl2hltl2plan.language.learned.span_order import before_pairs
 from nl2hltl2plan.language.learned.structure import Reading
+from nl2hltl2plan.language.order_words import first_and_last_kept
 from nl2hltl2plan.language.parse_usage import IMPLIED_TYPES
 from nl2hltl2plan.language.scoring import match
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter, transitive_closure
@@ -59,15 +63,21 @@ def decide(
     rule: StructurePolicy,
     instruction: str,
     points: bool = False,
+    uncertain: bool = False,
 ) -> str:
     """Which reading to take: "grammar", "model" or "neither" (-> unparsed). `grammar`: its tasks, before
     pairs and whether it is complete; `model`: the structure model's complete reading and its confidence
     (None: incomplete); `instruction`: the words both read; `points`: whether the model's reading has a
-    span that points back."""
-    if model is None:
+    span that points back; `uncertain`: the grammar found words that fit several readings ("A and B.
+    Before you do this, C"), which the model must not choose between."""
+    if model is None or uncertain:
         return "grammar"
     tasks, before, confidence = model
     if not grammar[2]:
+        # the incomplete grammar reading's own order is often what the model is right about ("in any order"
+        # read as a sequence): only the words of "first" and "last" bind the model here
+        if not first_and_last_kept(instruction, tasks, before):
+            return "grammar"
         return "model" if confidence >= rule.rescue else "grammar"
     if same_reading(tasks, before, grammar[0], grammar[1]):
         return "grammar"
@@ -84,12 +94,11 @@ def against_the_words(
     model: tuple[list[BaseTaskSpec], list[tuple[str, str]]],
     grammar: tuple[list[BaseTaskSpec], list[tuple[str, str]]],
 ) -> bool:
-    """Whether the model's reading contradicts what the grammar read from the words: it puts two tasks the
-    other way round ("Having done so, Y" read as Y first), or it heats, cools or washes a thing where no
-    word says so and the grammar does not ("The mug is in the sink, put it in the microwave" as a washing;
-    check 1 takes the sink for the washing's appliance)."""
-    g_order, m_order = _named_order(*grammar), _named_order(*model)
-    if any((b, a) in m_order for a, b in g_order):
+    """Whether the model's reading contradicts what the grammar read from the words: it does not keep the
+    order words (`order_not_held`), or it heats, cools or washes a thing where no word says so and the
+    grammar does not ("The mug is in the sink, put it in the microwave" as a washing; check 1 takes the
+    sink for the washing's appliance)."""
+    if order_not_held(instruction, model, grammar):
         return True
     said = {c for w, _, _ in tokens(instruction) for c in categories(w)}
     # an appliance counts where it is a place the thing goes, not where something already is
@@ -103,6 +112,33 @@ def against_the_words(
         and t.kind not in g_kinds
         for t in model[0]
     )
+
+
+def order_not_held(
+    instruction: str,
+    model: tuple[list[BaseTaskSpec], list[tuple[str, str]]],
+    grammar: tuple[list[BaseTaskSpec], list[tuple[str, str]]],
+) -> bool:
+    """Whether the model's reading drops or contradicts an order word: it puts two tasks the other way
+    round from the grammar's reading ("Having done so, Y" read as Y first), leaves two tasks unordered
+    that the grammar's words order ("A, then B" read as A and B) where no phrase frees an order, or does
+    not keep what "first" or "last" says of a clause, a word the grammar may have left unread ("A, put B
+    first, then C" read with A and B unordered)."""
+    g_order, m_order = _named_order(*grammar), _named_order(*model)
+    if any((b, a) in m_order for a, b in g_order):
+        return True
+    # a pair left open may be the one a phrase frees ("Before all that, A and B, in whatever order you like")
+    named = {t.summary() for t in model[0]} if not _frees_an_order(instruction) else set()
+    if any(a in named and b in named and (a, b) not in m_order for a, b in g_order):
+        return True
+    return not first_and_last_kept(instruction, *model)
+
+
+def _frees_an_order(instruction: str) -> bool:
+    """Whether a word or phrase of the text leaves some order free ("in any order", "whenever you like")."""
+    toks = tokens(instruction)
+    text = " ".join(w for w, _, _ in toks)
+    return bool(free_order_remarks(text)) or any("any_order" in categories(w) for w, _, _ in toks)
 
 
 _IS_AT = re.compile(
