@@ -91,3 +91,20 @@ def test_the_last_thing_opens_the_last_step(lead):
 def test_the_last_thing_as_a_subject_is_no_connective():
     _, order, _ = read("Put the mug in the sink. The last thing I need is the egg in the microwave.")
     assert (MUG, EGG) not in order
+
+
+@pytest.mark.parametrize("then", ["Then", "After it's finished,"])
+def test_then_after_a_list_in_any_order_comes_after_the_whole_list(then):
+    tasks, order, unread = read(
+        f"Put the mug in the sink, and put the apple in the fridge, in any order. {then} put the egg in the "
+        "microwave."
+    )
+    assert len(tasks) == 3 and order == {(MUG, EGG), (APPLE, EGG)} and not unread
+
+
+def test_then_after_a_task_at_any_time_comes_after_the_other_task_only():
+    tasks, order, unread = read(
+        "Put the mug in the sink at any time and put the apple in the fridge. Then put the egg in the "
+        "microwave."
+    )
+    assert len(tasks) == 3 and order == {(APPLE, EGG)} and not unread

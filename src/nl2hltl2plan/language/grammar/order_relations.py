@@ -237,12 +237,18 @@ def _put_before(units: list[Unit], prev: Unit) -> list[int]:
 def _last_step(units: list[Unit], sentence: int, free: set[int], edges: Edges, text: str) -> list[int]:
     """The tasks of a sentence that "Then" in the next sentence comes after: those no other task of the
     sentence comes after, unless free ("A and B. Then C": after both, as `span_order`'s step). Empty (the
-    last clause alone) when the sentence has a `_FREE_WORD` anywhere ("A at any time and B. Then C")."""
+    last clause alone) when the sentence has a `_FREE_WORD` anywhere ("A at any time and B. Then C"),
+    except where all it frees is the order of its own tasks ("A and B in any order. Then C": after both;
+    `span_order`'s ANY step)."""
     sentences = split_sentences(text)
-    if sentence >= len(sentences) or _FREE_WORD.search(sentences[sentence][0]):
+    if sentence >= len(sentences):
+        return []
+    said = sentences[sentence][0]
+    order_only = _ANY_ORDER.search(said) is not None and _ANY_TIME.search(said) is None
+    if _FREE_WORD.search(said) and not order_only:
         return []
     own = {t for v in units if v.sentence == sentence for t in v.tasks}
-    return sorted(t for t in own if t not in free and not any((t, o) in edges for o in own))
+    return sorted(t for t in own if (order_only or t not in free) and not any((t, o) in edges for o in own))
 
 
 def _names_the_others(ref: str) -> bool:
