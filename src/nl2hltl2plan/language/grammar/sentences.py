@@ -289,7 +289,10 @@ _BUT_SURE_FIRST = re.compile(
     re.IGNORECASE,
 )
 _FIRST_OPENER = re.compile(r"^\s*(?:first|firstly|start|begin|to\s+(?:start|begin))\b", re.IGNORECASE)
-_LATER_WORD = re.compile(r"\b(?:then|finally|lastly|after\s+that|afterwards?|next)\b", re.IGNORECASE)
+# ("next to the stove" is a place, not "next")
+_LATER_WORD = re.compile(
+    r"\b(?:then|finally|lastly|after\s+that|afterwards?|next(?!\s+to\b))\b", re.IGNORECASE
+)
 
 
 # "X, Y and Z, one after the other": a sequence in the order they are named, "in that order" (read before
