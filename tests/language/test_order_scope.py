@@ -108,3 +108,12 @@ def test_then_after_a_task_at_any_time_comes_after_the_other_task_only():
         "microwave."
     )
     assert len(tasks) == 3 and order == {(APPLE, EGG)} and not unread
+
+
+def test_but_first_in_a_sentence_whose_place_says_next_to():
+    """ "next to the stove" is a place, not the later word "next" (which leaves "but first" unread)."""
+    p = grammar_parse(
+        "Put the mug in the sink, and put the apple in the fridge, though first put the egg in the microwave "
+        "next to the stove."
+    )
+    assert len(p.tasks) == 3 and not p.unparsed and sorted(p.before) == [("C", "A"), ("C", "B")]
