@@ -8,6 +8,7 @@ import re
 import networkx as nx
 
 from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.language.content_words import phrase_list_pattern
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.draft_tasks import TaskBuilder, Tasks, Unit
 from nl2hltl2plan.language.grammar.frames import IN_SENTENCE, OF_ALL
@@ -99,10 +100,15 @@ def _marker_edges(
             scope = others if _names_the_others(ref) else earlier
             edges.update((a, b2) for a in scope for b2 in u.tasks)
         elif kind == G.BEFORE_PREV and outer is not None:  # "X. Before that, Y, then Z": Y, Z before X
-            edges.update((b2, a) for a in outer.tasks for b2 in u.tasks)
-            # "W, then X. Before that, Y": Y goes in between, after what X comes after (span_order's PRE)
-            earlier_steps = {w for w, a in edges if a in outer.tasks and w not in u.tasks}
+            said = _step_said(units, outer, free)
+            edges.update((b2, a) for a in said for b2 in u.tasks)
+            # "W, then X. Before that, Y": Y goes in between, after what X comes after (span_order's PRE);
+            # not after a clause of its own sentence ("Before that, Y and Z": both before X, in any order)
+            siblings = {t for v in units if v.sentence == u.sentence for t in v.tasks}
+            earlier_steps = {w for w, a in edges if a in said and w not in siblings}
             edges.update((w, b2) for w in earlier_steps for b2 in u.tasks)
+            if k > 0 and units[k - 1].sentence == u.sentence:
+                _added_to_before(units[k - 1], u, tasks, text, b)
         elif kind in (G.IN_ORDER, G.IN_REVERSE):  # "..., in that order" / "..., in reverse order"
             own = sorted(t for v in units if v.sentence == u.sentence for t in v.tasks)
             pairs = zip(own, own[1:], strict=False)
@@ -197,6 +203,37 @@ _FREE_WORD = re.compile(
 )
 
 
+def _step_said(units: list[Unit], outer: Unit, free: set[int]) -> list[int]:
+    """The tasks "before that" puts a clause before: the last step of the sentence before it, not only its
+    last clause ("X; also Y, though first Z" / "X and Y. Before that, Z": Z before both; "W, then X. Before
+    that, Y": before X), leaving out the tasks allowed at any time."""
+    steps = sentence_steps(units)
+    k = units.index(outer)
+    said = [t for j, v in enumerate(units) if v.sentence == outer.sentence and steps[j] == steps[k]
+            for t in v.tasks]
+    return [t for t in said if t not in free or t in outer.tasks]
+
+
+# a clause added to a "before that" clause by one of these words ("Before that, Y; also Z")
+_ADDITIVE = re.compile(
+    rf"^\W*(?:and\s+)?(?P<word>{phrase_list_pattern('order_scope.txt', 'additive')})\b", re.I
+)
+
+
+def _added_to_before(prev: Unit, u: Unit, tasks: Tasks, text: str, b: TaskBuilder) -> None:
+    """ "X. Before that, Y; also Z": is Z before X too, or does it go with X? The words leave it open
+    (`order_scope.txt`'s `additive`), so the clause is refused by name rather than guessed; "Before that, Y
+    and Z" (both before X) and "Before that, Y, then Z" are read."""
+    said, own = tasks.specs[prev.tasks[-1]].text, tasks.specs[u.tasks[0]].text
+    low = text.lower()
+    at = low.find(said.lower())
+    end = low.find(own.lower(), at + len(said)) if at >= 0 else -1
+    if end < 0 or (m := _ADDITIVE.match(text[at + len(said) : end])) is None:
+        return
+    word = m["word"].lower()
+    b.unparsed.append(f"{own!r} ({word!r} after a 'before that' clause: before that too? say the order)")
+
+
 def _put_before(units: list[Unit], prev: Unit) -> list[int]:
     """ "X. Ahead of that, Y. Then Z": Z continues the time line (Y, X, Z), so it comes after X too, the
     clause that Y was put before; nothing when `prev` is not a "before that" sentence."""
@@ -209,12 +246,18 @@ def _put_before(units: list[Unit], prev: Unit) -> list[int]:
 def _last_step(units: list[Unit], sentence: int, free: set[int], edges: Edges, text: str) -> list[int]:
     """The tasks of a sentence that "Then" in the next sentence comes after: those no other task of the
     sentence comes after, unless free ("A and B. Then C": after both, as `span_order`'s step). Empty (the
-    last clause alone) when the sentence has a `_FREE_WORD` anywhere ("A at any time and B. Then C")."""
+    last clause alone) when the sentence has a `_FREE_WORD` anywhere ("A at any time and B. Then C"),
+    except where all it frees is the order of its own tasks ("A and B in any order. Then C": after both;
+    `span_order`'s ANY step)."""
     sentences = split_sentences(text)
-    if sentence >= len(sentences) or _FREE_WORD.search(sentences[sentence][0]):
+    if sentence >= len(sentences):
+        return []
+    said = sentences[sentence][0]
+    order_only = _ANY_ORDER.search(said) is not None and _ANY_TIME.search(said) is None
+    if _FREE_WORD.search(said) and not order_only:
         return []
     own = {t for v in units if v.sentence == sentence for t in v.tasks}
-    return sorted(t for t in own if t not in free and not any((t, o) in edges for o in own))
+    return sorted(t for t in own if (order_only or t not in free) and not any((t, o) in edges for o in own))
 
 
 def _names_the_others(ref: str) -> bool:

@@ -6,6 +6,7 @@ import re
 from dataclasses import dataclass, field
 from functools import lru_cache
 
+from nl2hltl2plan.language.content_words import phrase_list_pattern
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.everyday import everyday
 from nl2hltl2plan.language.grammar.order_phrases import (
@@ -280,8 +281,18 @@ _BUT_BEFORE = re.compile(
     r"(?=[a-z])",
     re.IGNORECASE,
 )
+# "X, but make sure you first Y" is "X, but first Y" (`order_scope.txt`'s `first_before`; before `everyday`
+# reads "make sure" as a wish)
+_BUT_SURE_FIRST = re.compile(
+    r"(?<=\w)(\s*,?\s+(?:but|though|although)\s+)"
+    rf"{phrase_list_pattern('order_scope.txt', 'first_before')}\s+",
+    re.IGNORECASE,
+)
 _FIRST_OPENER = re.compile(r"^\s*(?:first|firstly|start|begin|to\s+(?:start|begin))\b", re.IGNORECASE)
-_LATER_WORD = re.compile(r"\b(?:then|finally|lastly|after\s+that|afterwards?|next)\b", re.IGNORECASE)
+# ("next to the stove" is a place, not "next")
+_LATER_WORD = re.compile(
+    r"\b(?:then|finally|lastly|after\s+that|afterwards?|next(?!\s+to\b))\b", re.IGNORECASE
+)
 
 
 # "X, Y and Z, one after the other": a sequence in the order they are named, "in that order" (read before
@@ -426,6 +437,7 @@ def normalize(text: str) -> str:
     the placement verb a terse request leaves out (`supply_put`)."""
     text = text.replace("\u2019", "'").replace("\u2018", "'").replace("\u201c", '"').replace("\u201d", '"')
     text = re.sub(r"(?<=[a-z])\.(?=[A-Za-z])", ". ", text)
+    text = _BUT_SURE_FIRST.sub(r"\1first ", text)
     text = everyday(text)  # terse, spoken and need styles (issue 28)
     text = _O_FOR_ON.sub("on ", text)
     text = _SIDE_OF.sub(r"\g<pre>\g<sep>to the \g<side> of ", text)

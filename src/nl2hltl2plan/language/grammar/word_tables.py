@@ -8,7 +8,7 @@ from __future__ import annotations
 import re
 
 from nl2hltl2plan.language import grounding
-from nl2hltl2plan.language.content_words import free_order_phrase
+from nl2hltl2plan.language.content_words import free_order_phrase, phrase_list_pattern
 from nl2hltl2plan.language.courtesy import courtesy_pattern
 
 # ----- verbs ---------------------------------------------------------------------------------------
@@ -455,6 +455,8 @@ LEADING: list[tuple[re.Pattern[str], str]] = [
         FINALLY,
     ),
     (re.compile(r"^(?:finish|end|wrap\s+(?:things\s+)?up|conclude)\s+(?:up\s+)?(?:by|with)\s+", _F), FINALLY),
+    # "The last thing: Y" (`order_scope.txt`'s `last`), before a colon or comma ("the last thing I need": no)
+    (re.compile(rf"^{phrase_list_pattern('order_scope.txt', 'last')}\s*[:,]\s*", _F), FINALLY),
     (
         re.compile(
             r"^(?:first(?:ly)?(?:\s+of\s+all)?|to\s+(?:begin|start)(?:\s+with)?|initially|before\s+anything\s+else)"
