@@ -25,6 +25,7 @@ from collections.abc import Callable, Iterator, Sequence
 from dataclasses import asdict
 from typing import TYPE_CHECKING, Literal, Protocol, Self, TypeVar, get_args
 
+from nl2hltl2plan.domain.plurals import Plurals
 from nl2hltl2plan.domain.task_kinds import SLOTS, State
 from nl2hltl2plan.errors import HTTError, LLMError, WorldError
 from nl2hltl2plan.language.accounting import account, unfilled_slots
@@ -45,7 +46,7 @@ from nl2hltl2plan.language.negations import (
     spec_constraints,
 )
 from nl2hltl2plan.language.parsers import PARSERS, Parser
-from nl2hltl2plan.language.referents import Plurals, check_referents
+from nl2hltl2plan.language.referents import check_referents
 from nl2hltl2plan.language.restated_tasks import joined_restatements
 from nl2hltl2plan.language.result import Ambiguity, LanguageResult
 from nl2hltl2plan.language.spec_builder import GenerateLTL, build_spec
