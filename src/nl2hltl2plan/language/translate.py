@@ -139,7 +139,8 @@ def translate(
         instruction = without_courtesy(reader.as_read(lines))
         look = world_lookup(world) if isinstance(world, World) else None
         grounder = Grounder(types, scene or "the scene")
-        rest, negations = read_negations(reader.prepared(instruction), grounder, look)
+        prepared = reader.prepared(instruction)
+        rest, negations = read_negations(prepared, grounder, look)
         if negations and not rest.strip(" ,.;!?"):
             raise HTTError(nothing_to_do(instruction, [n.spec for n in negations]))
 
@@ -157,7 +158,7 @@ def translate(
         except (HTTError, WorldError) as refused:
             # the world's rereading (checked by check 1 on the words it read), or the refusal as it was
             if (again := reread()) is None:
-                raise reader.refusal(refused, instruction) from None
+                raise reader.refusal(refused, instruction, prepared, rest) from None
             res = again
         else:  # the grammar's reading: the world's own reading replaces it where partial, or may doubt it
             if res.partial and (again := reread()) is not None:
