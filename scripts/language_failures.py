@@ -46,11 +46,12 @@ from collections import Counter, defaultdict
 from pathlib import Path
 from typing import Any, get_args
 
+from nl2hltl2plan.domain.plurals import Plurals
 from nl2hltl2plan.errors import Nl2Hltl2PlanError, WorldError
 from nl2hltl2plan.language.accounting import account
 from nl2hltl2plan.language.grounding import scene_types
 from nl2hltl2plan.language.learned.inference import parse_instruction
-from nl2hltl2plan.language.referents import Plurals, check_referents
+from nl2hltl2plan.language.referents import check_referents
 from nl2hltl2plan.language.result import LanguageResult
 from nl2hltl2plan.language.scoring import match
 from nl2hltl2plan.language.task_specs import BaseTaskSpec

@@ -30,8 +30,8 @@ from functools import cache
 from pathlib import Path
 from typing import get_args
 
+from nl2hltl2plan.domain.plurals import Plurals
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
-from nl2hltl2plan.language.referents import Plurals
 from nl2hltl2plan.language.scoring import match
 from nl2hltl2plan.language.translate import apply_choices, top_candidates, translate
 from nl2hltl2plan.worlds import load_world

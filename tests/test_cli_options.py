@@ -36,3 +36,24 @@ def test_output_folders_and_files_are_dash_o_everywhere() -> None:
         for a in parser._actions:
             if a.dest in ("out", "output"):
                 assert "-o" in a.option_strings and "--out" in a.option_strings, prog
+
+
+def test_plurals_choices_are_the_settings_the_pipeline_takes() -> None:
+    """`plan --plurals` and `bench alfred --plurals` offer what `PipelineOptions.plurals` and the web request
+    take: one definition (`domain.plurals.Plurals`), so a new setting cannot be missing from one of them."""
+    from typing import get_args, get_type_hints
+
+    from nl2hltl2plan.pipeline import PipelineOptions
+    from nl2hltl2plan.web.requests import PlanRequest
+
+    settings = get_args(get_type_hints(PipelineOptions)["plurals"])
+    assert settings == ("ask", "two")
+    assert get_args(get_type_hints(PlanRequest)["plurals"]) == settings
+    offered = {
+        prog: tuple(a.choices)
+        for prog, parser in _parsers(build_parser())
+        for a in parser._actions
+        if a.dest == "plurals"
+    }
+    assert {"nl2hltl2plan plan", "nl2hltl2plan bench alfred"} <= set(offered), offered
+    assert set(offered.values()) == {settings}, offered

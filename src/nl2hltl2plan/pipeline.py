@@ -24,10 +24,10 @@ from typing import Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field
 
+from nl2hltl2plan.domain.plurals import Plurals
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.backends import Backend
 from nl2hltl2plan.language.llm.client import LLMClient
-from nl2hltl2plan.language.referents import Plurals
 from nl2hltl2plan.language.result import Ambiguity, LanguageResult
 from nl2hltl2plan.language.suggest import not_understood
 from nl2hltl2plan.language.translate import ActionSource, Chooser, LtlSource, translate

@@ -30,6 +30,7 @@ from nl2hltl2plan.cli.options import (
     llm_settings,
     planner_options,
 )
+from nl2hltl2plan.domain.plurals import PLURALS
 from nl2hltl2plan.errors import PlanningError
 from nl2hltl2plan.io import ensure_writable_dir, write_json
 from nl2hltl2plan.suites.ray_engine import ENGINES, run_with_engine
@@ -107,7 +108,7 @@ def register(sub: Any) -> None:
     )
     p.add_argument(
         "--plurals",
-        choices=["ask", "two"],
+        choices=PLURALS,
         default="two",
         help="a plural with no number of more things than the task takes: ALFRED's pick-two (two, "
         "default: 66 of 71 such training annotations are pick-two trials, docs/language.md) or "

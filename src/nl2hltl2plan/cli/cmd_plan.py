@@ -28,6 +28,7 @@ from nl2hltl2plan.cli.options import (
     llm_settings,
     planner_options,
 )
+from nl2hltl2plan.domain.plurals import PLURALS
 
 EXIT_OK, EXIT_NO_PLAN, EXIT_PENDING = 0, 1, 3
 
@@ -79,7 +80,7 @@ def register(sub: Any) -> None:
     )
     p.add_argument(
         "--plurals",
-        choices=["ask", "two"],
+        choices=PLURALS,
         default="ask",
         help="a plural with no number of more things than the task takes ('the forks' of 3): refuse "
         "naming it (ask, default) or read the world's convention (two: ALFRED's pick-two, said as an "

@@ -488,9 +488,13 @@ def world_lookup(world: object) -> AffordanceLookup | None:
     if instances is None or not hasattr(world, "objects"):
         return None
 
+    seen: dict[str, Affordances | None] = {}  # a world is static: each type is looked up once
+
     def look(type_: str) -> Affordances | None:
-        objs = instances(type_)
-        return objs[0].affordances if objs else None
+        if type_ not in seen:
+            objs = instances(type_)
+            seen[type_] = objs[0].affordances if objs else None
+        return seen[type_]
 
     return look
 

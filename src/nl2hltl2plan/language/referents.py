@@ -30,8 +30,8 @@ from __future__ import annotations
 import re
 from collections.abc import Collection, Mapping, Sequence
 from functools import lru_cache
-from typing import Literal
 
+from nl2hltl2plan.domain.plurals import Plurals
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.content_words import DETERMINERS, LOCATIVE, categories, word_categories
 from nl2hltl2plan.language.counts import count_value
@@ -47,10 +47,6 @@ from nl2hltl2plan.language.grounding import (
 )
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
 from nl2hltl2plan.worlds.world import PluralConvention
-
-# how a bare plural of more things than a task takes is read: refused naming it (`ask`), or by the world's
-# convention where it has one (`two`: ALFRED's pick-two); a world's `always` convention applies under both
-Plurals = Literal["ask", "two"]
 
 # words before a noun that say which thing it names (`referent_words.txt`, shared with `restated_tasks`):
 # another thing than one named before ("another kettle", "a second one"), one named indefinitely ("a

@@ -210,7 +210,7 @@ class TabletopReader:
     def reread(self, instruction: str, backend: str) -> LanguageResult | None:
         return tabletop_fallback(instruction, self.world, backend)
 
-    def refusal(self, refused: Exception, instruction: str) -> Exception:
+    def refusal(self, refused: Exception, instruction: str, prepared: str, rest: str) -> Exception:
         """A refusal ("no Apple in tabletop") with the objects the world has for a word that names
         several of them alone ("tabletop has the green apple and the red apple")."""
         has = world_has(instruction, self.world)

@@ -25,6 +25,7 @@ from collections.abc import Callable, Iterator, Sequence
 from dataclasses import asdict
 from typing import TYPE_CHECKING, Literal, Protocol, Self, TypeVar, get_args
 
+from nl2hltl2plan.domain.plurals import Plurals
 from nl2hltl2plan.domain.task_kinds import SLOTS, State
 from nl2hltl2plan.errors import HTTError, LLMError, WorldError
 from nl2hltl2plan.language.accounting import account, unfilled_slots
@@ -45,7 +46,7 @@ from nl2hltl2plan.language.negations import (
     spec_constraints,
 )
 from nl2hltl2plan.language.parsers import PARSERS, Parser
-from nl2hltl2plan.language.referents import Plurals, check_referents
+from nl2hltl2plan.language.referents import check_referents
 from nl2hltl2plan.language.restated_tasks import joined_restatements
 from nl2hltl2plan.language.result import Ambiguity, LanguageResult
 from nl2hltl2plan.language.spec_builder import GenerateLTL, build_spec
@@ -138,7 +139,8 @@ def translate(
         instruction = without_courtesy(reader.as_read(lines))
         look = world_lookup(world) if isinstance(world, World) else None
         grounder = Grounder(types, scene or "the scene")
-        rest, negations = read_negations(reader.prepared(instruction), grounder, look)
+        prepared = reader.prepared(instruction)
+        rest, negations = read_negations(prepared, grounder, look)
         if negations and not rest.strip(" ,.;!?"):
             raise HTTError(nothing_to_do(instruction, [n.spec for n in negations]))
 
@@ -156,7 +158,7 @@ def translate(
         except (HTTError, WorldError) as refused:
             # the world's rereading (checked by check 1 on the words it read), or the refusal as it was
             if (again := reread()) is None:
-                raise reader.refusal(refused, instruction) from None
+                raise reader.refusal(refused, instruction, prepared, rest) from None
             res = again
         else:  # the grammar's reading: the world's own reading replaces it where partial, or may doubt it
             if res.partial and (again := reread()) is not None:

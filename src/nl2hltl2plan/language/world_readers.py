@@ -34,11 +34,10 @@ from typing import Protocol
 
 from nl2hltl2plan.language.content_words import Unread
 from nl2hltl2plan.language.courtesy import without_greetings
-from nl2hltl2plan.language.grounding import Grounder, find_mentions, world_lookup
+from nl2hltl2plan.language.grounding import find_mentions
 from nl2hltl2plan.language.headings import answered
 from nl2hltl2plan.language.household_forms import household_forms
 from nl2hltl2plan.language.household_words import contents_hint, descriptive_names
-from nl2hltl2plan.language.negations import read_negations
 from nl2hltl2plan.language.numbered_steps import step_order
 from nl2hltl2plan.language.respectively import distributed
 from nl2hltl2plan.language.result import LanguageResult
@@ -67,8 +66,9 @@ class WorldReader(Protocol):
         part, or None: the grammar's result stands."""
         ...
 
-    def refusal(self, refused: Exception, instruction: str) -> Exception:
-        """The grammar's refusal of `instruction`, with what the world adds to it."""
+    def refusal(self, refused: Exception, instruction: str, prepared: str, rest: str) -> Exception:
+        """The grammar's refusal of `instruction`, with what the world adds to it. `prepared`: the text
+        `prepared` gave; `rest`: that text without its negated clauses, as the grammar read it."""
         ...
 
     def doubted(self, res: LanguageResult, backend: str) -> LanguageResult:
@@ -97,7 +97,7 @@ class SharedGrammar:
     def reread(self, instruction: str, backend: str) -> LanguageResult | None:
         return None
 
-    def refusal(self, refused: Exception, instruction: str) -> Exception:
+    def refusal(self, refused: Exception, instruction: str, prepared: str, rest: str) -> Exception:
         return refused
 
     def doubted(self, res: LanguageResult, backend: str) -> LanguageResult:
@@ -125,13 +125,10 @@ class _HouseholdReader(SharedGrammar):
         named = descriptive_names(household_forms(instruction), set(self.world.object_types()))
         return distributed(corrected(step_order(named), household_roles(self.world)))
 
-    def refusal(self, refused: Exception, instruction: str) -> Exception:
+    def refusal(self, refused: Exception, instruction: str, prepared: str, rest: str) -> Exception:
         hint = contents_hint(instruction)
         # quoted in the user's words, not as corrections, the household forms and a negation's "them" (the
         # things it named given back) rewrote them
-        prepared = self.prepared(instruction)
-        grounder = Grounder(set(self.world.object_types()), self.world.name)
-        rest = read_negations(prepared, grounder, world_lookup(self.world))[0]
         said = in_own_words(in_own_words(str(refused), rest, instruction), prepared, instruction)
         if said == str(refused) and not hint:
             return refused

@@ -9,7 +9,7 @@ from typing import Any, Literal, get_args
 
 from pydantic import BaseModel, ConfigDict, Field, StrictBool, StrictInt, model_validator
 
-from nl2hltl2plan.language.referents import Plurals
+from nl2hltl2plan.domain.plurals import Plurals
 from nl2hltl2plan.language.translate import MAX_INSTRUCTION_CHARS
 
 MAX_ROBOTS = 8

@@ -23,11 +23,12 @@ from functools import lru_cache
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from nl2hltl2plan.domain.plurals import Plurals
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.io import write_json
 from nl2hltl2plan.language.accounting import account
 from nl2hltl2plan.language.grounding import scene_types
-from nl2hltl2plan.language.referents import Plurals, check_referents
+from nl2hltl2plan.language.referents import check_referents
 from nl2hltl2plan.language.scoring import match
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
 from nl2hltl2plan.worlds.world import ALFRED_PICK_TWO, World
