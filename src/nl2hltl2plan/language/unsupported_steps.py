@@ -31,8 +31,8 @@ from nl2hltl2plan.language.task_specs import BaseTaskSpec
 # "bring it back", "then back again", "return it", "put it back where it was", "back in its place": to
 # where it was, which no base task names; "three times"
 _RETURN = re.compile(
-    r"\b(?:back(?: again)?|return (?:it|them))\b(?:\s+(?:to\s+)?where\s+(?:it|they)\s+(?:was|were|came\s+from|"
-    r"belongs?)|\s+(?:in|into|on|to)\s+(?:its|their)\s+(?:original\s+|usual\s+)?(?:place|spot|home)s?)?"
+    r"\b(?:back(?: again)?|return (?:it|them))\b(?:\s+(?:to\s+)?where\s+(?:it|they)\s+"
+    r"(?:was|were|came\s+from|belongs?)|\s+(?:in|into|on|to)\s+(?:its|their)\s+(?:original\s+|usual\s+)?(?:place|spot|home)s?)?"
     r"(?=\s*(?:$|[.,;!?)]|(?:and|then|again|afterwards|later|here)\b))"
 )
 _LEFT_OUT = re.compile(r"\bleave (?:\w+ ){0,3}out\b(?! of)")  # "leave one out": an exception, as "except one"
