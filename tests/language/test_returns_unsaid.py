@@ -7,6 +7,7 @@ from __future__ import annotations
 import pytest
 
 from nl2hltl2plan.language.accounting import account
+from nl2hltl2plan.language.grammar.put_back import put_back_where_taken
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
 
 
@@ -70,3 +71,37 @@ def test_the_return_sets_read_no_line_wrong(name):
     assert len(gts) >= 12
     assert all(outcomes[gt.instruction] == "converted" for gt in gts if gt.feasible)
 
+
+
+@pytest.mark.parametrize(
+    "text, back",
+    [
+        (
+            "take the apple from the counter and the egg out of the fridge and put them back",
+            "put the apple back in the counter and put the egg back in the fridge",
+        ),
+        (
+            "please grab the mug off the table, the cup from the sink and return them",
+            "please put the mug back in the table and put the cup back in the sink",
+        ),
+        # as the grammar's normalizing gathers a "take ... and put them back"
+        (
+            "put the apple from the counter and the egg out of the fridge back",
+            "put the apple back in the counter and put the egg back in the fridge",
+        ),
+    ],
+)
+def test_things_taken_each_from_its_place_and_returned_go_back_each_to_its_own(text, back):
+    assert put_back_where_taken(text) == back
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "take the apple from the counter and the egg out of the fridge, wash them and put them back",
+        "take the apple from the counter and the egg out of the fridge and put it back",  # "it": which one
+        "take the apple from the counter and the apple from the fridge and put them back",  # one type, two
+    ],
+)
+def test_a_return_the_sources_cannot_pair_with_their_things_is_left_as_written(text):
+    assert put_back_where_taken(text) == text
