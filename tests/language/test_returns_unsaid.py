@@ -105,3 +105,18 @@ def test_things_taken_each_from_its_place_and_returned_go_back_each_to_its_own(t
 )
 def test_a_return_the_sources_cannot_pair_with_their_things_is_left_as_written(text):
     assert put_back_where_taken(text) == text
+
+
+@pytest.mark.parametrize(
+    "text, unread",
+    [
+        ("put the mug in the sink and then return the mug", ["return the mug"]),
+        ("put the mug in the sink and return both", ["return both"]),
+        ("put the mug in the sink and put it back after", ["back"]),
+        ("put the mug in the sink and then return it please", ["return it"]),
+        # the place is said after the things: nothing to name
+        ("put the mug in the sink and then return the mug and the cup to the sink", ["cup"]),
+    ],
+)
+def test_a_return_of_a_named_thing_whose_place_no_source_names_is_named(text, unread):
+    assert [u.words for u in account(text, MUG_IN_SINK, [])] == unread
