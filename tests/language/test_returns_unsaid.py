@@ -4,11 +4,16 @@ whatever reading a backend made; the sentences of users_h140dev.txt read as thei
 
 from __future__ import annotations
 
+import sys
+from pathlib import Path
+
 import pytest
 
 from nl2hltl2plan.language.accounting import account
 from nl2hltl2plan.language.grammar.put_back import put_back_where_taken
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "scripts"))
 
 
 def place(obj: str, where: str, task_id: str = "A", kind: str = "place") -> BaseTaskSpec:
