@@ -34,7 +34,7 @@ def test_a_return_with_no_place_goes_to_the_one_source_and_every_word_is_read(te
 @pytest.mark.parametrize(
     "text",
     [
-        "take the apple out of the fridge and the mug from the sink, put them back",  # two sources
+        "take the apple out of the fridge and the mug from the sink, wash them and put them back",  # a step
         "put the mug in the sink, then put it back",  # no source
         "wash the cloth from the cabinet, put it back in the tub",  # its place is said
         "put the apple in the fridge. wash the cloth and put it back",  # the source is another sentence's

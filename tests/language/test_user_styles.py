@@ -212,11 +212,9 @@ def test_user_style_set_converts(name, least):
     assert feasible.count("converted") >= 0.9 * len(feasible)
 
 
-# wrong readings a set found and left to a later branch (h126's "the soap bars" reads as a plural since h133).
-# h133's held-out half: read the same on main before h133; the grammar leaves both clauses unread (two
-# sources, so "back" names no one place), the slot model reads the whole text as the apple to the counter,
-# and check 1 does not name the egg said with "out of the fridge" (accounting._nouns)
-KNOWN_WRONG = {"take the apple from the counter and the egg out of the fridge and put them back"}
+# wrong readings a set found and left to a later branch (none: h140's check 1 names the egg of h133's
+# "take the apple from the counter and the egg out of the fridge and put them back", and refuses it)
+KNOWN_WRONG: set[str] = set()
 
 
 @pytest.mark.sweep

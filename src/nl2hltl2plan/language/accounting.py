@@ -293,10 +293,10 @@ def _locative(
 
 def _preposition_before(toks: list[tuple[str, int, int]], start: int, preps: frozenset[str]) -> int:
     """The index of the preposition before the phrase whose first word is at `start`, over up to four
-    determiners or plain words; else of the word where the scan stopped (-1 at the start). The scan
-    stops at a preposition of a destination too: in "from the counter to the table" the table's is "to"."""
+    determiners or plain words; else of the word where the scan stopped (-1 at the start): at a destination's
+    ("from the counter to the table": "to"), at "and" / "or" ("the apple from the counter and the egg")."""
     i = start - 1
-    while i >= 0 and start - i <= 4 and toks[i][0] not in preps:
+    while i >= 0 and start - i <= 4 and toks[i][0] not in preps and toks[i][0] not in ("and", "or"):
         if _to_a_destination(toks, i) or (toks[i][0] not in DETERMINERS and categories(toks[i][0])):
             break
         i -= 1

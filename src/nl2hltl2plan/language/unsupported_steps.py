@@ -28,8 +28,21 @@ from nl2hltl2plan.language.parse_usage import ParseUsage
 from nl2hltl2plan.language.statements import REFERENCE
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
 
-# "bring it back", "then back again": to where it was, which no base task names; "three times"
-_RETURN = re.compile(r"\bback(?: again)?\b(?=\s*(?:$|[.,;!?)]|(?:and|then|again|afterwards|later|here)\b))")
+# "bring it back", "then back again", "return it", "put it back where it was", "back in its place": to
+# where it was, which no base task names; "three times"
+_WHERE_IT_WAS = (
+    r"(?:\s+(?:to\s+)?where\s+(?:it|they)\s+(?:was|were|came\s+from|belongs?)|"
+    r"\s+(?:in|into|on|to)\s+(?:its|their)\s+(?:original\s+|usual\s+)?(?:place|spot|home)s?)?"
+)
+_ENDS = r"(?=\s*(?:$|[.,;!?)]|(?:and{}|then|again|afterwards|after|later|here|please|now)\b))"
+_RETURN = re.compile(r"\bback(?: again)?\b" + _WHERE_IT_WAS + _ENDS.format(""))
+# "return the mug", "return both": the thing is named, its place is not ("return the mug and the cup to the
+# shelf" names it after the list)
+_RETURN_VERB = re.compile(
+    r"\breturn\s+(?:it|them|both|(?:the|your|that|this|these|those)(?:\s+[a-z]+){1,2})\b"
+    + _WHERE_IT_WAS
+    + _ENDS.format(r"(?!\s+(?:the|a|an|your|my)\b)")
+)
 _LEFT_OUT = re.compile(r"\bleave (?:\w+ ){0,3}out\b(?! of)")  # "leave one out": an exception, as "except one"
 _SOURCE = re.compile(r"\b(?:from|out of|off)\b")
 _TIMES = re.compile(
@@ -44,7 +57,7 @@ def returns_and_repeats(instruction: str, mentions: list[Mention], parse: ParseU
     lowered = instruction.lower()
     out = [
         Unread(m.group(0), "place", "no base task returns a thing to where it was: name the place")
-        for m in _RETURN.finditer(lowered)
+        for m in [*_RETURN.finditer(lowered), *_RETURN_VERB.finditer(lowered)]
         if not _returned(lowered, sentence_start(instruction, m.start()), m.start(), mentions, parse)
     ]
     out += [Unread(m.group(0), "negation", NO_CONSTRAINT) for m in _LEFT_OUT.finditer(lowered)]

@@ -2,8 +2,10 @@
 cabinet, put it back", "take the egg out of the fridge, cook it and return it", "grab the mug off the
 counter, rinse it, put it back where it was". No base task returns a thing to "where it was", but the
 sentence named that place: the return is read as a placing there ("put it back in the cabinet") before the
-grammar reads the text. With no source before it, or two different ones ("the egg out of the fridge and
-the mug from the sink, put them back"), the text is left as written and check 1 names "back".
+grammar reads the text. Things taken each from its own place and returned right away ("take the apple from
+the counter and the egg out of the fridge and put them back") each go back to theirs. With no source before
+it, or sources the return cannot pair with its things ("the egg out of the fridge and the mug from the
+sink, wash them and put them back"), the text is left as written and check 1 names "back".
 
 >>> put_back_where_taken("wash the cloth from the cabinet, put it back")
 'wash the cloth from the cabinet, put it back in the cabinet'
@@ -48,8 +50,50 @@ def put_back_where_taken(text: str) -> str:
         said = text[sentence_start(text, m.start()) : m.start()]
         sources = {x.entry.canonical: x.surface for x in find_mentions(said) if a_source(said, x.char_start)}
         if len(sources) != 1:
+            them = len(sources) > 1 and (m.group("pron") or m.group("rpron")) == "them"
+            each = _TAKEN.search(said) if them else None
+            if each is not None and (back := _each_back(each.group("body"))):
+                out += [text[last : sentence_start(text, m.start()) + each.start()], back]
+                last = m.end()
             continue
         pron = m.group("pron") or m.group("rpron") or "it"
         out += [text[last : m.start()], f"put {pron} back in the {next(iter(sources.values()))}"]
         last = m.end()
-    return "".join(out) + text[last:]
+    text = "".join(out) + text[last:]
+    # the grammar's normalizing gathers "take X from A and Y from B and put them back" as "put X from A and
+    # Y from B back"
+    return _GATHERED.sub(lambda g: _each_back(g.group("body")) or g.group(0), text)
+
+
+# things taken each from its own place, then returned: "take the apple from the counter and the egg out of the
+# fridge and put them back" (the sentence before the return), "put the apple from the counter and the egg
+# out of the fridge back" (as the grammar's normalizing gathers it)
+_TAKEN = re.compile(
+    r"\b(?:take|get|grab|fetch|remove|pick\s+up)\s+(?P<body>(?:the|your|that|this)\s.*?)\s*,?\s*(?:and\s+)?"
+    r"(?:then\s+)?$",
+    re.I,
+)
+_GATHERED = re.compile(
+    r"\b(?:put|place|set|bring|take)\s+(?P<body>(?:the|your|that|this)\s[^.;!?]*?)\s+back\b"
+    r"(?=\s*(?:$|[.,;!?)]|(?:and|then)\b))",
+    re.I,
+)
+_FROM = re.compile(r"\s+(?:from|out\s+of|off(?:\s+of)?)\s+(?:the|your|its|that|this)\s+", re.I)
+_AND = re.compile(r"\s*(?:,\s*)?(?:and\s+)?(?:the|your|that|this)\s+", re.I)
+
+
+def _each_back(body: str) -> str | None:
+    """Each thing of `body` put back in its own source, where `body` is only "the X from the A and the Y
+    out of the B ..." (two or more things, each from its own place); None otherwise."""
+    found = find_mentions(body)
+    if len(found) % 2 or len(found) < 4:
+        return None
+    pairs = list(zip(found[::2], found[1::2], strict=True))
+    ends = [0] + [p.char_end for _, p in pairs[:-1]]
+    if pairs[-1][1].char_end != len(body) or len({t.entry.canonical for t, _ in pairs}) != len(pairs):
+        return None
+    if not all(_AND.fullmatch(body[e : t.char_start]) for e, (t, _) in zip(ends, pairs, strict=True)):
+        return None
+    if not all(_FROM.fullmatch(body[t.char_end : p.char_start]) for t, p in pairs):
+        return None
+    return " and ".join(f"put the {t.surface} back in the {p.surface}" for t, p in pairs)
