@@ -59,6 +59,12 @@ def test_a_thing_after_a_source_and_and_is_not_from_that_source(text):
     assert "egg" in [u.words for u in account(text, [place("Apple", "CounterTop")], [])]
 
 
+def test_a_bare_place_after_a_source_and_and_shares_its_source():
+    # "from the sink and table": both are where the spoons come from; only "and the X" opens a thing of its own
+    text = "pick up the spoons from the sink and table, put them both on the counter"
+    assert account(text, [place("Spoon", "CounterTop", kind="place_two")], []) == []
+
+
 def test_a_place_between_two_others_is_still_where_a_thing_is():
     """ "between the sink and the stove": the stove's preposition is the sink's (`landmarks.pair_start`)."""
     text = "put the mug on the counter between the sink and the stove"

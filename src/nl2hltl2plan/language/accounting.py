@@ -53,6 +53,7 @@ from nl2hltl2plan.language.memo import reading_memo
 from nl2hltl2plan.language.negations import NO_CONSTRAINT, about_order, unforbidden_verb
 from nl2hltl2plan.language.order_words import check_cycles, finished_words, misordered, unordered_steps
 from nl2hltl2plan.language.parse_usage import IMPLIED_TYPES, ParseUsage
+from nl2hltl2plan.language.prepositions import DESTINATION, preposition_before
 from nl2hltl2plan.language.statements import asked_before, says_where
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, ConstraintSpec
 from nl2hltl2plan.language.unknown_words import unread_words, unused_tools
@@ -268,7 +269,7 @@ def _locative(
     and the stove"; after "next to" / "by" / "between", the place may be one a treatment implies ("next to
     the lettuce in the refrigerator" of a cooled apple)."""
     start = pair_start(toks, m.start)  # the second place of "between A and B" is read as A is
-    i = _preposition_before(toks, start, LOCATIVE)
+    i = preposition_before(toks, start, LOCATIVE)
     if _walked_to(toks, m.start):
         return True
     if i < 0 or toks[i][0] not in LOCATIVE:
@@ -289,23 +290,6 @@ def _locative(
         return True
     near = places + implied if toks[i][0] in NEAR_WORDS else places
     return any(clause[0] <= o.char_start < clause[1] and o.start not in (m.start, start) for o in near)
-
-
-def _preposition_before(toks: list[tuple[str, int, int]], start: int, preps: frozenset[str]) -> int:
-    """The index of the preposition before the phrase whose first word is at `start`, over up to four
-    determiners or plain words; else of the word where the scan stopped (-1 at the start): at a destination's
-    ("from the counter to the table": "to"), at "and" / "or" ("the apple from the counter and the egg")."""
-    i = start - 1
-    while i >= 0 and start - i <= 4 and toks[i][0] not in preps and toks[i][0] not in ("and", "or"):
-        if _to_a_destination(toks, i) or (toks[i][0] not in DETERMINERS and categories(toks[i][0])):
-            break
-        i -= 1
-    return i
-
-
-def _to_a_destination(toks: list[tuple[str, int, int]], i: int) -> bool:
-    """ "to" / "into" / "onto" at `i` opens a destination, unless it ends "next to", "close to", "up to"."""
-    return toks[i][0] in _DESTINATION and (i == 0 or toks[i - 1][0] not in LOCATIVE | {"close", "up"})
 
 
 def _walked_to(toks: list[tuple[str, int, int]], start: int) -> bool:
@@ -395,15 +379,14 @@ def _of_water(instruction: str, mentions: list[Mention], task: BaseTaskSpec) -> 
 
 
 _OF_WATER = re.compile(r"\s+(?:full\s+)?of\s+water\b", re.I)
-_DESTINATION = frozenset({"to", "into", "onto"})
-_PREPOSITIONS = LOCATIVE | _DESTINATION
+_PREPOSITIONS = LOCATIVE | DESTINATION
 
 
 def _a_stop(instruction: str, m: Mention, toks: list[tuple[str, int, int]]) -> bool:
     """An appliance named as a stop of the task ("put the mug in the sink"), not as where a thing is or
     comes from ("the mug is in the sink", "take the apple out of the fridge"): only a stop names a
     treatment."""
-    i = _preposition_before(toks, m.start, _PREPOSITIONS)
+    i = preposition_before(toks, m.start, _PREPOSITIONS)
     if i < 0 or toks[i][0] not in _PREPOSITIONS:
         return True
     before = toks[i - 1][0] if i > 0 else ""

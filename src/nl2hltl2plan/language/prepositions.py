@@ -1,5 +1,6 @@
 """The prepositions of a place, as the readers outside the grammar match them: taken from the grammar's one
-list (`grammar.word_tables.PREPOSITIONS`, its destination and landmark sets), never written again.
+list (`grammar.word_tables.PREPOSITIONS`, its destination and landmark sets), never written again; and
+which preposition a place phrase of a tokenized text has (`preposition_before`, for check 1).
 
 >>> import re
 >>> bool(re.fullmatch(preposition_pattern(ONE_PLACE), "on  top of"))
@@ -13,6 +14,7 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable
 
+from nl2hltl2plan.language.content_words import DETERMINERS, LOCATIVE, categories
 from nl2hltl2plan.language.grammar.word_tables import DEST_PREPS, NEAR_PREPS, PREPOSITIONS
 
 # where a thing is put, one place to each: the grammar's destinations but the two that take two places
@@ -32,3 +34,27 @@ def preposition_pattern(words: Iterable[str]) -> str:
         raise ValueError(f"not prepositions of grammar.word_tables: {sorted(unknown)}")
     ordered = sorted(said, key=lambda p: (-len(p), p))
     return "(?:" + "|".join(r"\s+".join(map(re.escape, p.split())) for p in ordered) + ")"
+
+
+# where a place phrase opens a destination (check 1: "from the counter to the table")
+DESTINATION = frozenset({"to", "into", "onto"})
+
+
+def preposition_before(toks: list[tuple[str, int, int]], start: int, preps: frozenset[str]) -> int:
+    """The index of the preposition before the phrase whose first word is at `start`, over up to four
+    determiners or plain words; else of the word where the scan stopped (-1 at the start): at a destination's
+    ("from the counter to the table": "to"), at "and" / "or" before a phrase with its own determiner ("the
+    apple from the counter and the egg"; "from the sink and table" shares the "from")."""
+    i = start - 1
+    while i >= 0 and start - i <= 4 and toks[i][0] not in preps:
+        if _to_a_destination(toks, i) or (toks[i][0] not in DETERMINERS and categories(toks[i][0])):
+            break
+        if toks[i][0] in ("and", "or") and i < start - 1:
+            break
+        i -= 1
+    return i
+
+
+def _to_a_destination(toks: list[tuple[str, int, int]], i: int) -> bool:
+    """ "to" / "into" / "onto" at `i` opens a destination, unless it ends "next to", "close to", "up to"."""
+    return toks[i][0] in DESTINATION and (i == 0 or toks[i - 1][0] not in LOCATIVE | {"close", "up"})
