@@ -60,7 +60,7 @@ def test_a_thing_after_a_source_and_and_is_not_from_that_source(text):
 
 
 def test_a_bare_place_after_a_source_and_and_shares_its_source():
-    # "from the sink and table": both are where the spoons come from; only "and the X" opens a thing of its own
+    # "from the sink and table": both are where the spoons come from; "and the X" opens a thing of its own
     text = "pick up the spoons from the sink and table, put them both on the counter"
     assert account(text, [place("Spoon", "CounterTop", kind="place_two")], []) == []
 
