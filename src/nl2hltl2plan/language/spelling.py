@@ -209,12 +209,18 @@ def respelt(text: str) -> str:
     English writes it (a capital kept)."""
 
     def fix(m: re.Match[str]) -> str:
-        word = spelt_name(m[0]) or spelt_word(m[0]) or vocabulary_spelt(m[0])
+        word = _spelt(m[0])
         if word is None:
             return m[0]
         return word.capitalize() if m[0][0].isupper() else word
 
     return _WORD.sub(fix, text)
+
+
+def _spelt(word: str) -> str | None:
+    """The word `word` misspells, by the rules in turn (a name, an English word, a vocabulary word), or None:
+    one place for `respelt` and `respellings`, so what is changed is what is said."""
+    return spelt_name(word) or spelt_word(word) or vocabulary_spelt(word)
 
 
 def closed_respelt(text: str, words: frozenset[str]) -> str:
@@ -344,7 +350,7 @@ def respellings(text: str) -> list[tuple[str, str]]:
     """Each misspelt word of `text` and the word `respelt` reads it as, in order, each once."""
     out: list[tuple[str, str]] = []
     for m in _WORD.finditer(text):
-        word = spelt_name(m[0]) or spelt_word(m[0]) or vocabulary_spelt(m[0])
+        word = _spelt(m[0])
         if word is not None and (m[0].lower(), word) not in out:
             out.append((m[0].lower(), word))
     return out
