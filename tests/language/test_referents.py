@@ -148,3 +148,21 @@ def test_the_h122_sets_read_as_their_ground_truth_says(name):
     outcomes = [(gt, *trust_sets.outcome(gt)) for gt in rows]
     assert [gt.instruction for gt, what, _ in outcomes if what == "wrong"] == []
     assert all(what == ("converted" if gt.feasible else "refused") for gt, what, _ in outcomes), outcomes
+
+
+@pytest.mark.data
+def test_a_negation_of_a_word_two_types_answer_to_is_asked_as_a_task_is():
+    """"don't touch the towel" in a bathroom with a Towel and a HandTowel: forbidding only the HandTowel
+    (ALFRED's first reading of "towel") would leave the Towel free with exit 0, so the negation is asked
+    as "put the towel ..." is; the words that name one of them read."""
+    from nl2hltl2plan.language.translate import translate
+    from nl2hltl2plan.worlds import load_world
+
+    world = load_world("FloorPlan422")  # one Towel, one HandTowel
+    said = "put the soap bar in the cabinet and don't touch the {}"
+    asked = "'towel' is both the Towel of FloorPlan422 and ALFRED's word for its HandTowel"
+    with pytest.raises(HTTError, match=asked):
+        translate(said.format("towel"), world, "offline", None, build=False, actions="none")
+    for words, type_ in (("hand towel", "HandTowel"), ("bath towel", "Towel")):
+        res = translate(said.format(words), world, "offline", None, build=False, actions="none")
+        assert [c.forbid for c in res.constraint_specs] == [[f"pickup({type_})", f"put({type_},*)"]]

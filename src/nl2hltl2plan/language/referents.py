@@ -69,28 +69,36 @@ def check_referents(
     scene: str,
     convention: PluralConvention | None = None,
     plurals: Plurals = "ask",
+    forbidden: Collection[str] = (),
 ) -> list[str]:
     """Raise HTTError for one thing moved twice, a category plural read as one type, or a plural read as
     fewer things than the scene holds where no convention of the world reads it (see the module's
-    docstring); returns the assumptions a convention made ("'the forks': read as 2 of ...")."""
-    exact_names(instruction, tasks, instances, scene)
+    docstring); returns the assumptions a convention made ("'the forks': read as 2 of ...").
+    `forbidden`: the types the instruction's negations act on ("don't touch the towel")."""
+    exact_names(instruction, tasks, instances, scene, forbidden)
     moved_twice(instruction, tasks, before)
     categories_named(instruction, tasks, instances, scene)
     return plural_of_several(instruction, tasks, instances, scene, convention, plurals)
 
 
 def exact_names(
-    instruction: str, tasks: Sequence[BaseTaskSpec], instances: Mapping[str, int] | None, scene: str
+    instruction: str,
+    tasks: Sequence[BaseTaskSpec],
+    instances: Mapping[str, int] | None,
+    scene: str,
+    forbidden: Collection[str] = (),
 ) -> None:
     """A word that is one type's own name, read as another type of the scene it is a synonym of ("towel"
     read as a HandTowel where the scene has a Towel too): refused naming both, unless another word of
-    the instruction names that other type itself ("the towel ... and the hand towel"): the text decides."""
+    the instruction names that other type itself ("the towel ... and the hand towel"): the text decides.
+    A negation's types (`forbidden`) are asked as a task's are: "don't touch the towel" that forbids only
+    the HandTowel would leave the Towel free."""
     if not instances:
         return
     mentions = find_mentions(instruction)
     held = [(task, [*task.object, *(task.container or ())]) for task in tasks]
     things = {t for _, types in held for t in types}
-    used = things | {t for task in tasks for t in task.receptacle or ()}
+    used = things | {t for task in tasks for t in task.receptacle or ()} | set(forbidden)
     places = {t: task.receptacle[0] for task, types in held if task.receptacle for t in types}
     for m in mentions:
         present = [t for t in m.entry.types if instances.get(t)]

@@ -55,6 +55,7 @@ from nl2hltl2plan.language.state_tasks import StateReader, guessed_slot, light_o
 from nl2hltl2plan.language.suggest import not_understood, suggestion_text
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter
 from nl2hltl2plan.language.world_readers import world_reader
+from nl2hltl2plan.logic.atom import Atom
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec, LeafOrFormula
 from nl2hltl2plan.logic.relations import compile_relations
 from nl2hltl2plan.worlds.tasks import can_take_state, demand_of
@@ -243,7 +244,12 @@ def _finish(
     only by its types)."""
     convention = world.plurals if isinstance(world, World) else None
     scene = world.name if world else "the scene"
-    assumed = check_referents(res.instruction, res.tasks, res.before, instances, scene, convention, plurals)
+    # the types the negations act on: "don't touch the towel" is asked as a task's "the towel" is
+    patterns = [a for c in res.constraint_specs for p in c.forbid if (a := Atom.read_pattern(p))]
+    forbidden = {t for a in patterns for t in a.args}
+    assumed = check_referents(
+        res.instruction, res.tasks, res.before, instances, scene, convention, plurals, forbidden - {"*"}
+    )
     if assumed:
         res = res.model_copy(update={"assumptions": [*res.assumptions, *assumed]})
     mode = actions if actions != "auto" else ("recipe" if backend in PARSERS else "llm")
