@@ -103,6 +103,8 @@ def _marker_edges(
         elif kind == G.AFTER_ALL:  # "once all that is done" / "once everything else is done" (all others)
             scope = others if _names_the_others(ref) else earlier
             edges.update((a, b2) for a in scope for b2 in u.tasks)
+        elif kind == G.BEFORE_PREV and (G.FINALLY, IN_SENTENCE) in u.markers:
+            continue  # "X. Before that, Y, and finally Z": Z is the last step, after X too
         elif kind == G.BEFORE_PREV and outer is not None:  # "X. Before that, Y, then Z": Y, Z before X
             said = _step_said(units, outer, free)
             edges.update((b2, a) for a in said for b2 in u.tasks)
@@ -125,8 +127,9 @@ def _marker_edges(
                 ahead = {w for w, a in edges if a in named and w not in u.tasks}
                 edges.update((w, b2) for w in ahead for b2 in u.tasks)
         elif kind in {G.AFTER_REF, G.BEFORE_REF} and (named := by_position(ref, earlier, prev, others)) is not None:
-            if not named:  # "Before any of that, Y" with nothing said before it
-                b.unparsed.append(f"could not tell which task {ref!r} refers to ({NOT_CERTAIN}: nothing is said before it)")
+            if not named:  # "Before any of that, Y" with nothing said before it (certain), or nothing read
+                why = f" ({NOT_CERTAIN}: nothing is said before it)" if u.sentence == 0 else ""
+                b.unparsed.append(f"could not tell which task {ref!r} refers to{why}")
             after = kind == G.AFTER_REF  # "Before all that, Y": Y before every task said
             edges.update((a, b2) if after else (b2, a) for a in named for b2 in u.tasks)
         elif kind in {G.AFTER_REF, G.BEFORE_REF}:
