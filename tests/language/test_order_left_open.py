@@ -7,6 +7,8 @@ from __future__ import annotations
 
 import pytest
 
+from nl2hltl2plan.language.learned.rescue import rewrite
+from nl2hltl2plan.language.learned.slot_model import SlotPrediction
 from tests.language.test_unseen_classes import read
 
 MUG = "place Mug -> SinkBasin"
@@ -30,6 +32,23 @@ def test_a_task_added_after_before_that_stays_refused_by_name(text):
     """Before: the structure model's reading replaced the grammar's refusal (the egg ordered as a guess)."""
     _, _, unread = read(text)
     assert any("put the egg in the microwave' (" in u and "say the order" in u for u in unread)
+
+
+def test_then_also_leaves_the_order_open():
+    _, _, unread = read(
+        "Put the apple in the fridge and then also put the mug in the sink. Finally, put the bread on the "
+        "counter."
+    )
+    assert any("put the mug in the sink' ('then also'" in u and "say the order" in u for u in unread)
+
+
+def test_start_by_then_also_is_read():
+    """Near miss: "start by" puts the first task first, whatever "then also" means."""
+    tasks, order, unread = read(
+        "Start by putting the apple in the fridge and then also put the mug in the sink and the bread on the "
+        "counter."
+    )
+    assert len(tasks) == 3 and not unread and order == {(APPLE, MUG), (APPLE, BREAD)}
 
 
 def test_then_after_a_before_that_sentence_is_read():
@@ -112,3 +131,21 @@ def test_before_any_of_that_comes_before_every_task_said():
 def test_before_any_of_that_with_nothing_said_is_refused():
     _, _, unread = read("Before any of that, put the apple in the fridge.")
     assert any("'any of that'" in u for u in unread)
+
+
+class _ReadsMug:
+    """A slot model stand-in that reads every clause as putting the mug in the sink (confidently)."""
+
+    def predict(self, texts: list[str], types: set[str] | None) -> list[SlotPrediction]:
+        slots = {"object": [("Mug", 0.9)], "receptacle": [("SinkBasin", 0.8)]}
+        return [SlotPrediction([("place", 0.9)], dict(slots)) for _ in texts]
+
+
+def test_the_rescue_keeps_the_joiner_that_ends_a_failed_clause():
+    """Before: "begin by putting the mug in the sink, though" was replaced whole, and "though first" (the
+    apple before the mug) was lost with it."""
+    text = "begin by putting the mug in the sink, though first put the apple in the fridge"
+    room = {"Mug", "SinkBasin", "Apple", "Fridge"}
+    failed = ["putting the mug in the sink, though (a list of destinations)"]
+    out = rewrite(text, failed, _ReadsMug(), room)  # type: ignore[arg-type]
+    assert out == "begin by put the mug in the sink basin. Before that, put the apple in the fridge"

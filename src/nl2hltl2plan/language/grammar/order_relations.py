@@ -49,6 +49,7 @@ def relate(
     loose = free | _any_order_steps(tasks, steps)
     for k in range(len(tasks.units)):
         _added_after_before_sentence(k, tasks.units, tasks, text, b)
+        _then_also(k, tasks, text, b)
         _marker_edges(k, tasks, (free, loose), b, text, edges)
         _step_edges(k, tasks, steps, free, edges)
     _first_edges(tasks.units, steps, free, edges)
@@ -257,6 +258,27 @@ def _added_after_before_sentence(k: int, units: list[Unit], tasks: Tasks, text: 
     own = tasks.specs[u.tasks[0]].text
     word = m["word"].lower()
     b.unparsed.append(f"{own!r} ({word!r} after a 'before that' sentence: before that too? {ORDER_LEFT_OPEN})")
+
+
+# "A and then also B": "then" may order B after A or only add it ("and then also, there is B")
+_THEN_ALSO = re.compile(r"\bthen\s*,?\s+(?:also|additionally|as\s+well)\b", re.I)
+
+
+def _then_also(k: int, tasks: Tasks, text: str, b: TaskBuilder) -> None:
+    """ "Put A and then also put B": whether B comes after A or is one more task is not said, so B is
+    refused by name, unless "first" / "start by" already puts A first ("Start by A and then also B")."""
+    units = tasks.units
+    u = units[k]
+    if k == 0 or not u.seq_after_prev or units[k - 1].sentence != u.sentence or not u.tasks:
+        return
+    if any(kind == G.FIRST for kind, _ in units[k - 1].markers):
+        return
+    said, own = tasks.specs[units[k - 1].tasks[-1]].text, tasks.specs[u.tasks[0]].text
+    low = text.lower()
+    at = low.find(said.lower())
+    end = low.find(own.lower(), at + len(said)) if at >= 0 else -1
+    if end >= 0 and _THEN_ALSO.search(text[at + len(said) : end]):
+        b.unparsed.append(f"{own!r} ('then also': after it, or one more task? {ORDER_LEFT_OPEN})")
 
 
 def _put_before(units: list[Unit], prev: Unit) -> list[int]:
