@@ -22,10 +22,10 @@ BREAD = "place Bread -> CounterTop"
     [
         "put the apple in the fridge. before that put the bread on the counter, and also put the egg in the "
         "microwave",
-        "Put the apple in the fridge. Ahead of that, put the bread on the counter. On top of that, put the egg "
-        "in the microwave.",
-        "Begin by putting the apple in the fridge, though first put the bread on the counter, plus put the egg "
-        "in the microwave.",
+        "Put the apple in the fridge. Ahead of that, put the bread on the counter. On top of that, put the "
+        "egg in the microwave.",
+        "Begin by putting the apple in the fridge, though first put the bread on the counter, plus put the "
+        "egg in the microwave.",
     ],
 )
 def test_a_task_added_after_before_that_stays_refused_by_name(text):
@@ -107,8 +107,8 @@ def test_finally_inside_a_before_that_sentence_is_the_last_step():
     """Before: the mug before the egg (the sentence's "before that") and after it ("finally"): refused as a
     contradiction."""
     tasks, order, unread = read(
-        "Put the egg in the microwave, but before doing that, put the apple in the fridge and put the bread on "
-        "the counter, in whatever order you like, and at the end put the mug in the sink."
+        "Put the egg in the microwave, but before doing that, put the apple in the fridge and put the bread "
+        "on the counter, in whatever order you like, and at the end put the mug in the sink."
     )
     assert len(tasks) == 4 and not unread
     assert order == {(APPLE, EGG), (BREAD, EGG), (EGG, MUG), (APPLE, MUG), (BREAD, MUG)}

@@ -127,7 +127,9 @@ def _marker_edges(
             if kind == G.BEFORE_REF:  # "W, then X. Before you do this, Y": Y after W too, as "before that"
                 ahead = {w for w, a in edges if a in named and w not in u.tasks}
                 edges.update((w, b2) for w in ahead for b2 in u.tasks)
-        elif kind in {G.AFTER_REF, G.BEFORE_REF} and (named := by_position(ref, earlier, prev, others)) is not None:
+        elif kind in {G.AFTER_REF, G.BEFORE_REF} and (
+            named := by_position(ref, earlier, prev, others)
+        ) is not None:
             if not named:  # "Before any of that, Y" with nothing said before it (certain), or nothing read
                 why = f" ({NOT_CERTAIN}: nothing is said before it)" if u.sentence == 0 else ""
                 b.unparsed.append(f"could not tell which task {ref!r} refers to{why}")
@@ -257,7 +259,8 @@ def _added_after_before_sentence(k: int, units: list[Unit], tasks: Tasks, text: 
         return
     own = tasks.specs[u.tasks[0]].text
     word = m["word"].lower()
-    b.unparsed.append(f"{own!r} ({word!r} after a 'before that' sentence: before that too? {ORDER_LEFT_OPEN})")
+    why = f"after a 'before that' sentence: before that too? {ORDER_LEFT_OPEN}"
+    b.unparsed.append(f"{own!r} ({word!r} {why})")
 
 
 # "A and then also B": "then" may order B after A or only add it ("and then also, there is B")
