@@ -133,8 +133,8 @@ def _marker_edges(
             if not named:  # "Before any of that, Y" with nothing said before it (certain), or nothing read
                 why = f" ({NOT_CERTAIN}: nothing is said before it)" if u.sentence == 0 else ""
                 b.unparsed.append(f"could not tell which task {ref!r} refers to{why}")
-            after = kind == G.AFTER_REF  # "Before all that, Y": Y before every task said
-            edges.update((a, b2) if after else (b2, a) for a in named for b2 in u.tasks)
+            later = kind == G.AFTER_REF  # "Before all that, Y": Y before every task said
+            edges.update((a, b2) if later else (b2, a) for a in named for b2 in u.tasks)
         elif kind in {G.AFTER_REF, G.BEFORE_REF}:
             _ref_edges(kind == G.AFTER_REF, ref, u, tasks, b, text, edges)
 
