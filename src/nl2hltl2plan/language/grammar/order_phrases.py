@@ -86,10 +86,21 @@ _FREED_THEN = re.compile(
 )
 
 
+# "A, after which B" inside a sentence: "A, then B" (a leading "After which, B" is a table's "then")
+_AFTER_WHICH = re.compile(r"(?<=\w)\s*,\s*(?:and\s+)?after\s+which\s*,?\s+(?=[a-z])", re.IGNORECASE)
+
+
+# "A, then B, and at the (very) end C": "finally" where a clause opens inside a sentence ("at the end of the
+# counter" is a place; a leading "At the end," is the tables' own)
+_AT_THE_END = re.compile(r"(?:(?<=,\s)|(?<=\band\s))at\s+the\s+(?:very\s+)?end\b(?!\s+of\b)", re.IGNORECASE)
+
+
 def after_the_step(text: str) -> str:
     """ "..., do these in either order, then C" -> "... Once all that is done, C" (C after every task before
-    it; "..., and after those two C" is `everyday`'s reference to every task before)."""
-    return _FREED_THEN.sub(r"\1. Once all that is done, ", text)
+    it; "..., and after those two C" is `everyday`'s reference to every task before); "A, after which B"
+    -> "A, then B"; "and at the very end C" -> "and finally C"."""
+    text = _AFTER_WHICH.sub(", then ", _FREED_THEN.sub(r"\1. Once all that is done, ", text))
+    return _AT_THE_END.sub("finally", text)
 
 
 # "put X in A, and once the mug is done put Y in B" / "..., and before you put Z in C put Y in B": a

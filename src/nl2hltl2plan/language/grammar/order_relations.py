@@ -28,6 +28,9 @@ from nl2hltl2plan.language.semantic_check import find_cycle
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter, transitive_reduction
 
 Edges = set[tuple[int, int]]
+# the end of an `unparsed` message for an order the words leave open: the learned models must not choose
+# one either (`learned.inference`, as for a reference whose task is `NOT_CERTAIN`)
+ORDER_LEFT_OPEN = "say the order"
 
 
 def relate(
@@ -45,6 +48,8 @@ def relate(
     # (ANNOTATION_GUIDE.md), as with "A and B in any order. Finally C."
     loose = free | _any_order_steps(tasks, steps)
     for k in range(len(tasks.units)):
+        _added_after_before_sentence(k, tasks.units, tasks, text, b)
+        _then_also(k, tasks, text, b)
         _marker_edges(k, tasks, (free, loose), b, text, edges)
         _step_edges(k, tasks, steps, free, edges)
     _first_edges(tasks.units, steps, free, edges)
@@ -99,6 +104,8 @@ def _marker_edges(
         elif kind == G.AFTER_ALL:  # "once all that is done" / "once everything else is done" (all others)
             scope = others if _names_the_others(ref) else earlier
             edges.update((a, b2) for a in scope for b2 in u.tasks)
+        elif kind == G.BEFORE_PREV and (G.FINALLY, IN_SENTENCE) in u.markers:
+            continue  # "X. Before that, Y, and finally Z": Z is the last step, after X too
         elif kind == G.BEFORE_PREV and outer is not None:  # "X. Before that, Y, then Z": Y, Z before X
             said = _step_said(units, outer, free)
             edges.update((b2, a) for a in said for b2 in u.tasks)
@@ -120,10 +127,14 @@ def _marker_edges(
             if kind == G.BEFORE_REF:  # "W, then X. Before you do this, Y": Y after W too, as "before that"
                 ahead = {w for w, a in edges if a in named and w not in u.tasks}
                 edges.update((w, b2) for w in ahead for b2 in u.tasks)
-        elif kind == G.AFTER_REF and (named := by_position(ref, earlier, prev, others)) is not None:
-            edges.update((a, b2) for a in named for b2 in u.tasks)
-        elif kind == G.BEFORE_REF and (named := by_position(ref, earlier, prev, others)) is not None:
-            edges.update((b2, a) for a in named for b2 in u.tasks)  # "Before all that, Y"
+        elif kind in {G.AFTER_REF, G.BEFORE_REF} and (
+            named := by_position(ref, earlier, prev, others)
+        ) is not None:
+            if not named:  # "Before any of that, Y" with nothing said before it (certain), or nothing read
+                why = f" ({NOT_CERTAIN}: nothing is said before it)" if u.sentence == 0 else ""
+                b.unparsed.append(f"could not tell which task {ref!r} refers to{why}")
+            later = kind == G.AFTER_REF  # "Before all that, Y": Y before every task said
+            edges.update((a, b2) if later else (b2, a) for a in named for b2 in u.tasks)
         elif kind in {G.AFTER_REF, G.BEFORE_REF}:
             _ref_edges(kind == G.AFTER_REF, ref, u, tasks, b, text, edges)
 
@@ -231,7 +242,46 @@ def _added_to_before(prev: Unit, u: Unit, tasks: Tasks, text: str, b: TaskBuilde
     if end < 0 or (m := _ADDITIVE.match(text[at + len(said) : end])) is None:
         return
     word = m["word"].lower()
-    b.unparsed.append(f"{own!r} ({word!r} after a 'before that' clause: before that too? say the order)")
+    b.unparsed.append(f"{own!r} ({word!r} after a 'before that' clause: before that too? {ORDER_LEFT_OPEN})")
+
+
+def _added_after_before_sentence(k: int, units: list[Unit], tasks: Tasks, text: str, b: TaskBuilder) -> None:
+    """ "X. Ahead of that, Y. On top of that, Z.": the sentence that adds Z opens with an additive word
+    right after a "before that" sentence; as inside one sentence (`_added_to_before`), whether Z is before
+    X too is not said, so it is refused by name."""
+    u = units[k]
+    if k == 0 or units[k - 1].sentence == u.sentence or not u.tasks:
+        return
+    if not any(kind == G.BEFORE_PREV for kind, _ in units[k - 1].markers) or u.markers:
+        return
+    sentences = split_sentences(text)
+    if u.sentence >= len(sentences) or (m := _ADDITIVE.match(sentences[u.sentence][0])) is None:
+        return
+    own = tasks.specs[u.tasks[0]].text
+    word = m["word"].lower()
+    why = f"after a 'before that' sentence: before that too? {ORDER_LEFT_OPEN}"
+    b.unparsed.append(f"{own!r} ({word!r} {why})")
+
+
+# "A and then also B": "then" may order B after A or only add it ("and then also, there is B")
+_THEN_ALSO = re.compile(r"\bthen\s*,?\s+(?:also|additionally|as\s+well)\b", re.I)
+
+
+def _then_also(k: int, tasks: Tasks, text: str, b: TaskBuilder) -> None:
+    """ "Put A and then also put B": whether B comes after A or is one more task is not said, so B is
+    refused by name, unless "first" / "start by" already puts A first ("Start by A and then also B")."""
+    units = tasks.units
+    u = units[k]
+    if k == 0 or not u.seq_after_prev or units[k - 1].sentence != u.sentence or not u.tasks:
+        return
+    if any(kind == G.FIRST for kind, _ in units[k - 1].markers):
+        return
+    said, own = tasks.specs[units[k - 1].tasks[-1]].text, tasks.specs[u.tasks[0]].text
+    low = text.lower()
+    at = low.find(said.lower())
+    end = low.find(own.lower(), at + len(said)) if at >= 0 else -1
+    if end >= 0 and _THEN_ALSO.search(text[at + len(said) : end]):
+        b.unparsed.append(f"{own!r} ('then also': after it, or one more task? {ORDER_LEFT_OPEN})")
 
 
 def _put_before(units: list[Unit], prev: Unit) -> list[int]:

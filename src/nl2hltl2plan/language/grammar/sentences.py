@@ -288,7 +288,7 @@ _BUT_SURE_FIRST = re.compile(
     rf"{phrase_list_pattern('order_scope.txt', 'first_before')}\s+",
     re.IGNORECASE,
 )
-_FIRST_OPENER = re.compile(r"^\s*(?:first|firstly|start|begin|to\s+(?:start|begin))\b", re.IGNORECASE)
+_FIRST_OPENER = re.compile(r"^\s*(?:first|firstly)\b", re.IGNORECASE)  # "begin by A, though first B": B, A
 # ("next to the stove" is a place, not "next")
 _LATER_WORD = re.compile(
     r"\b(?:then|finally|lastly|after\s+that|afterwards?|next(?!\s+to\b))\b", re.IGNORECASE

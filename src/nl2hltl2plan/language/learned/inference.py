@@ -24,6 +24,7 @@ from nl2hltl2plan.language.accounting import account
 from nl2hltl2plan.language.grammar import OfflineParse
 from nl2hltl2plan.language.grammar import parse_instruction as grammar_parse
 from nl2hltl2plan.language.grammar.frames import TWO_PLACES
+from nl2hltl2plan.language.grammar.order_relations import ORDER_LEFT_OPEN
 from nl2hltl2plan.language.grammar.references import NOT_CERTAIN
 from nl2hltl2plan.language.grammar.sentences import without_connective_to
 from nl2hltl2plan.language.grounding import AffordanceLookup, find_mentions
@@ -373,7 +374,7 @@ def _arbitrated(
     s = structure_reading(instruction, ctx, structure)
     complete = grammar_complete(g)
     model = (s[0].tasks, s[0].before, s[1]) if s else None
-    uncertain = any(NOT_CERTAIN in u for u in g.unparsed)
+    uncertain = any(NOT_CERTAIN in u or ORDER_LEFT_OPEN in u for u in g.unparsed)  # words leave it open
     choice = decide(
         (g.tasks, g.before, complete), model, rule, instruction, points=bool(s and s[2]), uncertain=uncertain
     )

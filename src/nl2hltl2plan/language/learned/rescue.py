@@ -115,13 +115,19 @@ def _words_of(type_name: str) -> frozenset[str]:
     return frozenset(w for phrase, (e, _) in lexicon().items() if type_name in e.types for w in phrase)
 
 
+# a joiner that ends a failed clause ("putting the mug in the sink, though" before "first ..."): it belongs to
+# the connective after the clause, not to the task the canonical sentence restates
+_TRAILING_JOINER = re.compile(r"(?:\s*,)?\s+(?:though|although|but|and|then|plus|also)\s*,?\s*$", re.I)
+
+
 def rewrite(
     instruction: str, unparsed: list[str], model: SlotModel, types: set[str] | None, min_kind: float = 0.5
 ) -> str | None:
     """The instruction with each readable failed clause replaced by its canonical sentence (None: none)."""
     text = normalize(instruction)
     changed = False
-    for clause in failed_clauses(unparsed):
+    for said in failed_clauses(unparsed):
+        clause = _TRAILING_JOINER.sub("", said)  # the joiner stays, so its order does ("A, though first B")
         at = text.lower().find(clause.lower())
         if at < 0 or not clause.strip() or states_where(clause):
             continue  # "the mug is in the sink" says where it is: no request to read back
