@@ -494,7 +494,8 @@ _WISH = re.compile(
     re.I,
 )
 _TO_GO = re.compile(
-    r"\s+(?:to\s+(?:go|be(?:\s+(?:put|placed|moved|set))?)|goes|go|belongs?|should\s+(?:go|be))"
+    r"\s+(?:(?:needs?\s+|has\s+|have\s+)?to\s+(?:go|be(?:\s+(?:put|placed|moved|set))?)|goes|go|belongs?|"
+    r"(?:should|must)\s+(?:go|be))"
     r"\s+(?=(?:in|into|on|onto|to)\s)",
     re.I,
 )
