@@ -46,7 +46,9 @@ _FRAME = re.compile(rf"(?:,\s*)?\b{_FRAMES}\b(?=\s*(?:[,.;:!?]|$))\s*,?", re.I)
 
 # an afterthought set off by "oh" ("A and then B oh and put C too"): a new request, not a step of the clause
 # before it, so it is a sentence of its own ("A and then B. Also put C too", where C takes no order from B)
-_AFTERTHOUGHT = re.compile(rf"(?<=[\w.!?])\s*,?\s+oh\s*,?\s+{courtesy_pattern('afterthought')}\s*,?\s+(?=[a-z])", re.I)
+_AFTERTHOUGHT = re.compile(
+    rf"(?<=[\w.!?])\s*,?\s+oh\s*,?\s+{courtesy_pattern('afterthought')}\s*,?\s+(?=[a-z])", re.I
+)
 # "don't forget to put ...": a reminder, which asks as "please" asks (never a negation); "don't forget to
 # not ..." and "don't forget the mug" stay, and are read or refused as they are
 _REMINDER = re.compile(rf"\b{courtesy_pattern('reminder')}\s+to\s+(?!not\b|never\b)(?=[a-z])", re.I)
@@ -76,14 +78,16 @@ _OPENS = r"(?P<lead>^|(?<=[.!?])\s+)"
 # after you put ...", "Robot - put ...")
 _GREETING = re.compile(
     rf"{_OPENS}(?:{courtesy_pattern('spoken_opener')}\s*,?\s*)*"
-    rf"(?:{courtesy_pattern('greeting', 'address', 'greeting_with')}\s*)+(?:[!.,:]+|\s+[-\u2013\u2014]+)\s*(?=\w)",
+    rf"(?:{courtesy_pattern('greeting', 'address', 'greeting_with')}\s*)+"
+    r"(?:[!.,:]+|\s+[-\u2013\u2014]+)\s*(?=\w)",
     re.I,
 )
 # a call run on into the request at a sentence's start, a note's heading ("Note for the robot:"), which
 # only says who the text is for, or a spoken opener before a name ("so the tomato goes ...") (`without_call`)
 _CALLED = re.compile(
     rf"{_OPENS}(?:(?:{courtesy_pattern('spoken_opener', 'greeting', 'greeting_with')}\s*,?\s*)+"
-    rf"{courtesy_pattern('address')}\s+|{courtesy_pattern('address')}\s+(?=(?:can|could|would|will)\s+you\b|please\b)|"
+    rf"{courtesy_pattern('address')}\s+|"
+    rf"{courtesy_pattern('address')}\s+(?=(?:can|could|would|will)\s+you\b|please\b)|"
     rf"(?:a\s+)?(?:note|message)(?:\s+(?:for|to)\s+(?:the\s+)?{courtesy_pattern('address')})?\s*:\s*|"
     rf"(?:{courtesy_pattern('spoken_opener')}\s+)+(?=(?:the|a|an)\s))"
     r"(?=[a-z])",
