@@ -177,7 +177,10 @@ def expand_gapping(
             out.append(Clause(text, start, end, joiner))
             continue
         dests = [_dest_pp(v, seg) for seg, _, _ in parts]
-        if pronoun and not all(dests):  # "wash it and put it on the desk, then the pen": is the pen washed?
+        # "wash it and put it on the desk, then the pen": is the pen washed? And the pronoun's segment is
+        # its place alone ("it on the desk", not "it on the desk and yeah")
+        placed = all(dests) and re.fullmatch(rf"(?:it|them)\s+{re.escape(dests[0])}", parts[0][0])
+        if pronoun and not placed:
             out.append(Clause(text, start, end, joiner))
             continue
         shared = next((d for d in reversed(dests) if d), "") or ("" if own else last_dest)
