@@ -64,6 +64,9 @@ def test_near_misses_of_a_call_are_left_as_written():
     # "oh" with no "and" / "also" after it is no afterthought ("oh no, the cup" is a correction)
     said = "put the egg in the fridge, oh no, the mug"
     assert without_courtesy(said) == said
+    # an afterthought that opens a sentence is one already ("..". would end no sentence)
+    said = "put the egg in the fridge. Oh and put the mug in the sink!"
+    assert without_courtesy(said) == said
 
 
 def test_a_pronoun_clause_restores_the_verb_only_where_each_thing_has_its_place():

@@ -44,10 +44,11 @@ _FRAMES = courtesy_pattern("clause", "time")
 _FRAME = re.compile(rf"(?:,\s*)?\b{_FRAMES}\b(?=\s*(?:[,.;:!?]|$))\s*,?", re.I)
 
 
-# an afterthought set off by "oh" ("A and then B oh and put C too"): a new request, not a step of the clause
-# before it, so it is a sentence of its own ("A and then B. Also put C too", where C takes no order from B)
+# an afterthought set off by "oh" inside a sentence ("A and then B oh and put C too"): a new request, not a
+# step of the clause before it, so it is a sentence of its own ("A and then B. Also put C too", where C takes
+# no order from B); one that opens a sentence ("... B. Oh and put C") is already one, and stays as written
 _AFTERTHOUGHT = re.compile(
-    rf"(?<=[\w.!?])\s*,?\s+oh\s*,?\s+{courtesy_pattern('afterthought')}\s*,?\s+(?=[a-z])", re.I
+    rf"(?<=\w)\s*,?\s+oh\s*,?\s+{courtesy_pattern('afterthought')}\s*,?\s+(?=[a-z])", re.I
 )
 # "don't forget to put ...": a reminder, which asks as "please" asks (never a negation); "don't forget to
 # not ..." and "don't forget the mug" stay, and are read or refused as they are
