@@ -75,19 +75,19 @@ def without_courtesy(text: str) -> str:
 # ("Hey, when you're done, put ..."): each reader then reads, or refuses, the words after it as it reads them
 # with no greeting (docs/language.md, "Courtesy")
 _OPENS = r"(?P<lead>^|(?<=[.!?])\s+)"
-# a spoken opener may lead it ("okay so robot, uh, put ..."), and a colon or a dash may set it apart ("Robot:
-# after you put ...", "Robot - put ...")
+# a spoken opener may lead it ("okay so robot, uh, put ..."); an address set apart by a colon or a dash
+# ("Robot: ...") may be a speaker's label in a dialogue, which the household grammar alone drops
 _GREETING = re.compile(
     rf"{_OPENS}(?:{courtesy_pattern('spoken_opener')}\s*,?\s*)*"
-    rf"(?:{courtesy_pattern('greeting', 'address', 'greeting_with')}\s*)+"
-    r"(?:[!.,:]+|\s+[-\u2013\u2014]+)\s*(?=\w)",
+    rf"(?:{courtesy_pattern('greeting', 'address', 'greeting_with')}\s*)+[!.,]+\s*(?=\w)",
     re.I,
 )
-# a call run on into the request at a sentence's start, a note's heading ("Note for the robot:"), which
+# a call run on into the request at a sentence's start, or set apart by a colon or a dash ("Robot: after you
+# put ..."), a note's heading ("Note for the robot:"), which
 # only says who the text is for, or a spoken opener before a name ("so the tomato goes ...") (`without_call`)
 _CALLED = re.compile(
     rf"{_OPENS}(?:(?:{courtesy_pattern('spoken_opener', 'greeting', 'greeting_with')}\s*,?\s*)+"
-    rf"{courtesy_pattern('address')}\s+|"
+    rf"{courtesy_pattern('address')}\s+|{courtesy_pattern('address')}\s*(?::|\s[-\u2013\u2014]+)\s*|"
     rf"{courtesy_pattern('address')}\s+(?=(?:can|could|would|will)\s+you\b|please\b)|"
     rf"(?:a\s+)?(?:note|message)(?:\s+(?:for|to)\s+(?:the\s+)?{courtesy_pattern('address')})?\s*:\s*|"
     rf"(?:{courtesy_pattern('spoken_opener')}\s+)+(?=(?:the|a|an)\s))"
@@ -121,11 +121,12 @@ def without_greetings(text: str, names_a_thing: Callable[[str], bool]) -> str:
 
 
 def without_call(text: str) -> str:
-    """`text` without a call run on into the request at any sentence's start: a greeting or opener before an
-    address ("hey robot could you put ...", "okay so robot put ...") or an address before a request ("robot
-    can you grab ..."), a note's heading ("Note for the robot:") and an opener before a name ("so the
-    ..."). `without_greetings` leaves these to each reader; the household grammar reads the request after
-    them as a request with no call (its clauses then open with their verb or their name).
+    """`text` without a call at any sentence's start: a greeting or opener before an address ("hey robot
+    could you put ...", "okay so robot put ..."), an address before a request ("robot can you grab ...") or
+    set apart by a colon or a dash ("Robot: after you ..."), a note's heading ("Note for the robot:") and an
+    opener before a name ("so the ..."). `without_greetings` leaves these to each reader (in a tabletop
+    dialogue "Robot:" labels a speaker); the household grammar reads the request after them as a request
+    with no call (its clauses then open with their verb or their name).
 
     >>> without_call("hey robot could you put the mug in the sink. Okay robot put the egg away.")
     'could you put the mug in the sink. put the egg away.'
