@@ -38,6 +38,8 @@ MUG_CABINET, APPLE_FRIDGE = "place Mug -> Cabinet", "place Apple -> Fridge"
         ("put the egg, no wait, the apple in the fridge", [APPLE_FRIDGE]),  # the name; the place stays
         ("what I mean is put the apple in the fridge", [APPLE_FRIDGE]),  # no correction
         ("put the egg in the fridge, sorry, I mean the microwave", ["place Egg -> Microwave"]),
+        # the name said again in a whole clause: the clause replaces the one corrected (h147's voices)
+        ("put the spoon in the drawer, no wait, the cup, put the cup in the drawer", ["place Cup -> Drawer"]),
     ],
 )
 def test_a_correction_replaces_what_it_corrects(kitchen, text, tasks):
@@ -51,6 +53,8 @@ def test_a_correction_replaces_what_it_corrects(kitchen, text, tasks):
         ("put the mug in the sink, no wait", "'no wait' says nothing in place"),
         ("put the pan in the sink, I mean the pot", "is unclear ('pan' or 'sink')"),  # a pot is both
         ("put the mug in the sink, sorry, the apple and the egg", "names not one thing or place"),
+        ("put the spoon in the drawer, I mean the cup, put the cup in the drawer too", "replaces or adds"),
+        ("put the spoon in the drawer, no wait, the cup, put the mug in the sink", "is unclear ('spoon' or"),
     ],
 )
 def test_an_unclear_correction_is_refused_by_name(kitchen, text, named):

@@ -44,10 +44,27 @@ _FRAMES = courtesy_pattern("clause", "time")
 _FRAME = re.compile(rf"(?:,\s*)?\b{_FRAMES}\b(?=\s*(?:[,.;:!?]|$))\s*,?", re.I)
 
 
+# an afterthought set off by "oh" inside a sentence ("A and then B oh and put C too"): a new request, not a
+# step of the clause before it, so it is a sentence of its own ("A and then B. Also put C too", where C takes
+# no order from B); one that opens a sentence ("... B. Oh and put C") is already one, and stays as written
+_AFTERTHOUGHT = re.compile(
+    rf"(?<=\w)\s*,?\s+oh\s*,?\s+{courtesy_pattern('afterthought')}\s*,?\s+(?=[a-z])", re.I
+)
+# "don't forget to put ...": a reminder, which asks as "please" asks (never a negation); "don't forget to
+# not ..." and "don't forget the mug" stay, and are read or refused as they are
+_REMINDER = re.compile(rf"\b{courtesy_pattern('reminder')}\s+to\s+(?!not\b|never\b)(?=[a-z])", re.I)
+
+
 def without_courtesy(text: str) -> str:
-    """`text` without its courtesy frames (and the commas around them); the text as it was when nothing
-    else is left."""
-    out = _FRAME.sub(" ", text)
+    """`text` without its courtesy frames (and the commas around them) and reminders, an afterthought after
+    "oh" a sentence of its own; the text as it was when nothing else is left.
+
+    >>> without_courtesy("put the mug in the sink and then the egg in the fridge, oh and the cup in the sink")
+    'put the mug in the sink and then the egg in the fridge. Also the cup in the sink'
+    >>> without_courtesy("Robot, don't forget to put the spatula in the drawer!")
+    'Robot, put the spatula in the drawer!'
+    """
+    out = _FRAME.sub(" ", _REMINDER.sub("", _AFTERTHOUGHT.sub(". Also ", text)))
     out = re.sub(r"\s+([,.;:!?])", r"\1", " ".join(out.split()))
     out = re.sub(r"^[\s,.;:!?]+", "", out)
     return out if re.search(r"\w", out) else text
@@ -58,8 +75,24 @@ def without_courtesy(text: str) -> str:
 # ("Hey, when you're done, put ..."): each reader then reads, or refuses, the words after it as it reads them
 # with no greeting (docs/language.md, "Courtesy")
 _OPENS = r"(?P<lead>^|(?<=[.!?])\s+)"
+# a spoken opener may lead it ("okay so robot, uh, put ..."); an address set apart by a colon or a dash
+# ("Robot: ...") may be a speaker's label in a dialogue, which the household grammar alone drops
 _GREETING = re.compile(
-    rf"{_OPENS}(?:{courtesy_pattern('greeting', 'address', 'greeting_with')}\s*)+[!.,]+\s*(?=\w)", re.I
+    rf"{_OPENS}(?:{courtesy_pattern('spoken_opener')}\s*,?\s*)*"
+    rf"(?:{courtesy_pattern('greeting', 'address', 'greeting_with')}\s*)+[!.,]+\s*(?=\w)",
+    re.I,
+)
+# a call run on into the request at a sentence's start, or set apart by a colon or a dash ("Robot: after you
+# put ..."), a note's heading ("Note for the robot:"), which
+# only says who the text is for, or a spoken opener before a name ("so the tomato goes ...") (`without_call`)
+_CALLED = re.compile(
+    rf"{_OPENS}(?:(?:{courtesy_pattern('spoken_opener', 'greeting', 'greeting_with')}\s*,?\s*)+"
+    rf"{courtesy_pattern('address')}\s+|{courtesy_pattern('address')}\s*(?::|\s[-\u2013\u2014]+)\s*|"
+    rf"{courtesy_pattern('address')}\s+(?=(?:can|could|would|will)\s+you\b|please\b)|"
+    rf"(?:a\s+)?(?:note|message)(?:\s+(?:for|to)\s+(?:the\s+)?{courtesy_pattern('address')})?\s*:\s*|"
+    rf"(?:{courtesy_pattern('spoken_opener')}\s+)+(?=(?:the|a|an)\s))"
+    r"(?=[a-z])",
+    re.I,
 )
 _REPLY = re.compile(rf"{_OPENS}{courtesy_pattern('reply')}\s*[!.,]+\s*(?=\w)", re.I)
 _THANKS = re.compile(rf"(?<=[.!?])\s*{courtesy_pattern('closing')}\s*[!.]*\s*$", re.IGNORECASE)
@@ -85,3 +118,19 @@ def without_greetings(text: str, names_a_thing: Callable[[str], bool]) -> str:
     if sign_off and not names_a_thing(sign_off["name"]):
         text = text[: sign_off.start()]
     return _THANKS.sub("", text).strip()
+
+
+def without_call(text: str) -> str:
+    """`text` without a call at any sentence's start: a greeting or opener before an address ("hey robot
+    could you put ...", "okay so robot put ..."), an address before a request ("robot can you grab ...") or
+    set apart by a colon or a dash ("Robot: after you ..."), a note's heading ("Note for the robot:") and an
+    opener before a name ("so the ..."). `without_greetings` leaves these to each reader (in a tabletop
+    dialogue "Robot:" labels a speaker); the household grammar reads the request after them as a request
+    with no call (its clauses then open with their verb or their name).
+
+    >>> without_call("hey robot could you put the mug in the sink. Okay robot put the egg away.")
+    'could you put the mug in the sink. put the egg away.'
+    >>> without_call("robot arms must not touch the mug")
+    'robot arms must not touch the mug'
+    """
+    return _CALLED.sub(lambda m: m["lead"], text)

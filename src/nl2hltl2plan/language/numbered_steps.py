@@ -47,9 +47,30 @@ _SAID = (
 )
 
 
+# a list of bullets ("To do: - put the keychain in the box - put the pillow on the armchair"): a dash or a
+# bullet opening the text or following its heading's colon, and one more set apart by spaces; a dash inside
+# a sentence ("Robot - put ...", "1) kitchen - put ...") opens no list
+_BULLETED = re.compile(r"^(?P<head>[^-\u2022*:.!?]*:\s*)?[-\u2022*]\s+(?=\S.*\s[-\u2022*]\s+\S)")
+_BULLET = re.compile(r"\s+[-\u2022*]\s+")
+
+
+def bullets_apart(text: str) -> str:
+    """A list of bullets as one sentence an item, in no order (a bullet, unlike a number, says none):
+
+    >>> bullets_apart("To do: - put the mug in the sink - put the egg in the fridge")
+    'To do: put the mug in the sink. put the egg in the fridge.'
+    """
+    if (m := _BULLETED.match(text.strip())) is None:
+        return text
+    items = (item.strip(" .;!?") for item in _BULLET.split(text.strip()[m.end() :]))
+    return (m["head"] or "") + " ".join(f"{item}." for item in items if item)
+
+
 def step_order(text: str) -> str:
     """`text` with an order said by step number written out as the steps in that order (see the module
-    docstring); text with no such order comes back as it is. Raises HTTError naming what cannot be read."""
+    docstring), a list of bullets as its sentences (`bullets_apart`); text with no such order comes back
+    as it is. Raises HTTError naming what cannot be read."""
+    text = bullets_apart(text)
     sentences = re.split(r"(?<=[.!?])\s+", text.strip())
     said = [(k, m) for k, s in enumerate(sentences) for p in _SAID if (m := p.match(s.strip(" .!?")))]
     if not said:

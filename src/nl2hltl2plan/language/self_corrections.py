@@ -144,6 +144,19 @@ def _corrected(text: str, roles: Roles, read: list[str], swaps: list[tuple[str, 
             else:
                 start = m.end()
             continue
+        if (restated := _restated(said, after[cut:])) is not None:
+            # "put the spoon in the drawer, no wait, the cup, put the cup in the drawer": the clause that
+            # names the correction again says it whole, and replaces the verb phrase before the marker
+            if added := _ADDS.search(restated[0]):
+                unclear = f"whether {restated[0]!r} after {marker!r} replaces or adds ({added[0]!r})"
+                raise HTTError(f"{unclear} is unclear: {_AGAIN}")
+            swap = _clause_replaced(text[: m.start()], restated[0], marker)
+            if swap is not None:
+                fixed = swap[0] + swap[1]
+                text, start = fixed + after[cut + restated[1] :], len(fixed)
+                read.append(text)
+                swaps.append((swap[1], restated[0]))
+                continue
         if not _PREP.match(said) and (name := _name_then_place(said)):
             cut, said = cut - len(said) + len(name), name  # "the egg, no wait, the apple in the fridge"
         if not said and marker.lower() in ("no", "nope", "actually"):
@@ -153,6 +166,23 @@ def _corrected(text: str, roles: Roles, read: list[str], swaps: list[tuple[str, 
         text, start = fixed + after[cut:], len(fixed)
         read.append(text)
     return text
+
+
+_RESTATED = re.compile(r"^\s*,\s*")
+
+
+def _restated(said: str, rest: str) -> tuple[str, int] | None:
+    """The clause after a corrected name that opens with a verb and names it again ("the cup, put the cup in
+    the drawer": "put the cup in the drawer"), and where it ends in `rest`; None for any other words."""
+    named = find_mentions(said)
+    if len(named) != 1 or _PREP.match(said) or not (lead := _RESTATED.match(rest)):
+        return None
+    end = lead.end() + _said(rest[lead.end() :])
+    clause = rest[lead.end() : end].strip()
+    if not clause or not _opens_with_verb(clause.split()[0]):
+        return None
+    again = [n for n in find_mentions(clause) if n.surface.lower() == named[0].surface.lower()]
+    return (clause, end) if again else None
 
 
 def _has_verb(said: str) -> bool:

@@ -91,6 +91,9 @@ _GAP_SPLIT = re.compile(
     re.I,
 )
 _GAP_JOINER = {"finally": "finally", "lastly": "finally"}
+# a clause's own verb may take a pronoun before the list ("put it on the desk and then the pen in the drawer":
+# the verb is elided only after it); the later segments must name movable things, each with its own place
+_PRONOUN_FIRST = re.compile(r"(?:it|them)\s+(?:in|into|on|onto|inside)\s", re.I)
 
 
 @dataclass
@@ -169,10 +172,17 @@ def expand_gapping(
         if own and len(parts) < 2:
             out.append(Clause(text, start, end, joiner))
             continue
-        if not parts or not _movable_np(parts[0][0]):
+        pronoun = bool(parts) and own and bool(_PRONOUN_FIRST.match(parts[0][0]))
+        if not parts or not (_movable_np(parts[0][0]) or pronoun):
             out.append(Clause(text, start, end, joiner))
             continue
         dests = [_dest_pp(v, seg) for seg, _, _ in parts]
+        # "wash it and put it on the desk, then the pen": is the pen washed? And the pronoun's segment is
+        # its place alone ("it on the desk", not "it on the desk and yeah")
+        placed = all(dests) and re.fullmatch(rf"(?:it|them)\s+{re.escape(dests[0])}", parts[0][0])
+        if pronoun and not placed:
+            out.append(Clause(text, start, end, joiner))
+            continue
         shared = next((d for d in reversed(dests) if d), "") or ("" if own else last_dest)
         missing = [i for i, d in enumerate(dests) if not d]
         sharing = [i for i, d in enumerate(dests) if not d or d == shared]

@@ -7,6 +7,7 @@ from dataclasses import dataclass, field
 from functools import lru_cache
 
 from nl2hltl2plan.language.content_words import phrase_list_pattern
+from nl2hltl2plan.language.courtesy import without_call
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.everyday import everyday
 from nl2hltl2plan.language.grammar.order_phrases import (
@@ -438,7 +439,7 @@ def normalize(text: str) -> str:
     text = text.replace("\u2019", "'").replace("\u2018", "'").replace("\u201c", '"').replace("\u201d", '"')
     text = re.sub(r"(?<=[a-z])\.(?=[A-Za-z])", ". ", text)
     text = _BUT_SURE_FIRST.sub(r"\1first ", text)
-    text = everyday(text)  # terse, spoken and need styles (issue 28)
+    text = without_call(everyday(text))  # terse, spoken and need styles, "hey robot put" (issue 28)
     text = _O_FOR_ON.sub("on ", text)
     text = _SIDE_OF.sub(r"\g<pre>\g<sep>to the \g<side> of ", text)
     text = _CONTENT_IN_IT.sub(_with_left_out, text)
@@ -493,7 +494,8 @@ _WISH = re.compile(
     re.I,
 )
 _TO_GO = re.compile(
-    r"\s+(?:to\s+(?:go|be(?:\s+(?:put|placed|moved|set))?)|goes|go|belongs?|should\s+(?:go|be))"
+    r"\s+(?:(?:needs?\s+|has\s+|have\s+)?to\s+(?:go|be(?:\s+(?:put|placed|moved|set))?)|goes|go|belongs?|"
+    r"(?:should|must)\s+(?:go|be))"
     r"\s+(?=(?:in|into|on|onto|to)\s)",
     re.I,
 )
