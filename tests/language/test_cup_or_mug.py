@@ -12,7 +12,7 @@ from pathlib import Path
 import pytest
 
 from nl2hltl2plan.errors import HTTError
-from nl2hltl2plan.language.referents import exact_names
+from nl2hltl2plan.language.referents import exact_names, stand_ins
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
 
 
@@ -37,6 +37,29 @@ def test_the_cup_is_the_mug_where_there_is_no_cup_and_the_cup_where_there_is() -
     exact_names("put the cup on the desk", [place("A", "Mug", "Desk")], MUG_ONLY, "s")
     exact_names("put the cup in the coffee machine", [place("A", "Cup", "CoffeeMachine")], CUP_ONLY, "s")
     exact_names("put the cup in the sink", [place("A", "Cup", "SinkBasin")], BOTH, "s")
+
+
+def test_the_cup_read_as_the_mug_where_there_is_no_cup_is_said() -> None:
+    """The reading depends on the world, not on the words alone: it is stated as an assumption."""
+    cup_in_machine = [place("A", "Mug", "CoffeeMachine")]
+    said = stand_ins("put the cup in the coffee machine", cup_in_machine, MUG_ONLY, "F1")
+    assert said == ["'cup': F1 has no Cup; read as its Mug"]
+    # near misses: the word names what is read ("mug"), the Cup is there, or no task uses the Mug
+    assert not stand_ins("put the mug in the coffee machine", cup_in_machine, MUG_ONLY, "F1")
+    assert not stand_ins("put the cup in the sink", [place("A", "Cup", "SinkBasin")], BOTH, "F1")
+    pen = [place("A", "Pen", "Desk")]
+    assert not stand_ins("put the pen by the cup on the desk", pen, {"Pen": 1, "Desk": 1, "Mug": 1}, "F1")
+    # a word no type is named by ("glass", the Cup first) is the lexicon's, not a name the world lacks
+    assert not stand_ins("put the glass on the desk", [place("A", "Mug", "Desk")], MUG_ONLY, "F1")
+
+
+def test_a_name_two_other_types_could_be_is_not_said_as_one() -> None:
+    # "towel" where the floor plan has no Towel but a HandTowel and a Cloth: the roles decide, not this
+    counts = {"HandTowel": 1, "Cloth": 1, "CounterTop": 1}
+    assert not stand_ins("put the towel on the counter", [place("A", "HandTowel", "CounterTop")], counts, "F")
+    counts = {"HandTowel": 1, "CounterTop": 1}
+    said = stand_ins("put the towel on the counter", [place("A", "HandTowel", "CounterTop")], counts, "F")
+    assert said == ["'towel': F has no Towel; read as its HandTowel"]
 
 
 def test_a_mug_named_by_its_own_word_beside_the_cup_is_no_swap() -> None:

@@ -76,7 +76,8 @@ def check_referents(
     exact_names(instruction, tasks, instances, scene)
     moved_twice(instruction, tasks, before)
     categories_named(instruction, tasks, instances, scene)
-    return plural_of_several(instruction, tasks, instances, scene, convention, plurals)
+    said = stand_ins(instruction, tasks, instances, scene)
+    return said + plural_of_several(instruction, tasks, instances, scene, convention, plurals)
 
 
 def exact_names(
@@ -105,6 +106,29 @@ def exact_names(
         swap = role_swap_conflict(m.entry, present, unnamed, scene, places)
         if swap:
             raise HTTError(swap)
+
+
+def stand_ins(
+    instruction: str, tasks: Sequence[BaseTaskSpec], instances: Mapping[str, int] | None, scene: str
+) -> list[str]:
+    """A word that is the own name of a type the scene lacks, read as the one other type of its lexicon
+    entry that the scene holds and a task uses ("cup" where the floor plan has a Mug and no Cup: the
+    annotation guide's "cup -> Cup, else Mug"): said, as an assumption ("'cup': FloorPlan10 has no Cup;
+    read as its Mug"), since the reading depends on the world and not on the words alone. Where two other
+    types could be meant the word is not said here (the roles or `exact_names` decide)."""
+    if not instances:
+        return []
+    used = {t for task in tasks for t in (*task.object, *(task.container or ()), *(task.receptacle or ()))}
+    used |= {t for task in tasks for t in task.light or ()}
+    said: list[str] = []
+    for m in find_mentions(instruction):
+        named = next((t for t in m.entry.types if m.entry.phrase in (camel_words(t), t.lower())), None)
+        if named is None or m.entry.all_ or instances.get(named):
+            continue
+        others = [t for t in m.entry.types if t != named and instances.get(t)]
+        if len(others) == 1 and others[0] in used:
+            said.append(f"{m.surface!r}: {scene} has no {named}; read as its {others[0]}")
+    return list(dict.fromkeys(said))
 
 
 def moved_twice(
