@@ -62,6 +62,33 @@ def test_a_name_two_other_types_could_be_is_not_said_as_one() -> None:
     assert said == ["'towel': F has no Towel; read as its HandTowel"]
 
 
+def test_a_towel_washed_read_as_the_cloth_is_said() -> None:
+    # ALFRED cannot wash a Towel or a HandTowel: the role reads the Cloth, and the result says so
+    counts = {"Towel": 1, "HandTowel": 1, "Cloth": 1, "Cabinet": 2}
+    washed = [BaseTaskSpec(id="A", kind="clean_place", object=["Cloth"], receptacle=["Cabinet"])]
+    said = stand_ins("put a wet towel in the cabinet", washed, counts, "F")
+    assert said == ["'towel': read as the Cloth of F; its Towel cannot do what is asked"]
+    # near miss: a word of its own in the task names the Cloth ("the rag"), so the towel is not read as it
+    washed = [BaseTaskSpec(id="A", kind="clean_place", object=["Cloth"], receptacle=["Cabinet"],
+                           text="put a wet rag by the towel in the cabinet")]
+    assert not stand_ins("put a wet rag by the towel in the cabinet", washed, counts, "F")
+
+
+def test_a_stand_in_is_said_of_the_task_whose_words_name_it() -> None:
+    # the mug of one task does not hide the cup read as a Mug in another
+    counts = {"Mug": 2, "Cabinet": 1, "CoffeeMachine": 1}
+    tasks = [BaseTaskSpec(id="A", kind="place", object=["Mug"], receptacle=["Cabinet"],
+                          text="put a mug away"),
+             BaseTaskSpec(id="B", kind="place", object=["Mug"], receptacle=["CoffeeMachine"],
+                          text="put a cup in the coffee maker")]
+    said = stand_ins("put a mug away, then put a cup in the coffee maker", tasks, counts, "F")
+    assert said == ["'cup': F has no Cup; read as its Mug"]
+    # near miss: the cup is only where the mug goes (a landmark of the mug's task)
+    tasks = [BaseTaskSpec(id="A", kind="place", object=["Mug"], receptacle=["Cabinet"],
+                          text="put the mug by the cup in the cabinet")]
+    assert not stand_ins("put the mug by the cup in the cabinet", tasks, counts | {"Cup": 1}, "F")
+
+
 def test_a_mug_named_by_its_own_word_beside_the_cup_is_no_swap() -> None:
     tasks = [place("A", "Mug", "CoffeeMachine"), place("B", "Cup", "SinkBasin")]
     exact_names("put the mug in the coffee machine and the cup in the sink", tasks, BOTH, "s")
