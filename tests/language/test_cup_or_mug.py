@@ -98,6 +98,20 @@ def test_a_mug_named_by_its_own_word_beside_the_cup_is_no_swap() -> None:
         exact_names("put the cup in the coffee machine and the cup in the sink", tasks, BOTH, "s")
 
 
+def test_the_mug_of_another_task_does_not_let_the_cup_be_the_mug() -> None:
+    tasks = [
+        BaseTaskSpec(id="A", kind="heat_place", object=["Mug"], receptacle=["SinkBasin"], text="heat a mug"),
+        BaseTaskSpec(id="B", kind="clean_place", object=["Mug"], receptacle=["CoffeeMachine"],
+                     text="place a clean cup in the coffee maker"),
+    ]
+    text = "heat a mug, then place a clean cup in the coffee maker"
+    with pytest.raises(HTTError, match="'cup' is the Cup of s, which the CoffeeMachine cannot hold"):
+        exact_names(text, tasks, BOTH, "s")
+    # near miss: the same task says "mug" too ("the mug or cup"): that word may mean the Mug
+    tasks[1] = tasks[1].model_copy(update={"text": "place the clean mug or cup in the coffee maker"})
+    exact_names("heat a mug, then place the clean mug or cup in the coffee maker", tasks, BOTH, "s")
+
+
 def test_a_type_another_word_can_mean_is_that_words() -> None:
     # the Knife is the utensil's, not "the butter knife" (a negated thing) read as the Knife
     text = "put a utensil in the sink but do not touch the butter knife"
