@@ -107,6 +107,10 @@ def test_the_mug_of_another_task_does_not_let_the_cup_be_the_mug() -> None:
     text = "heat a mug, then place a clean cup in the coffee maker"
     with pytest.raises(HTTError, match="'cup' is the Cup of s, which the CoffeeMachine cannot hold"):
         exact_names(text, tasks, BOTH, "s")
+    # the place named is the cup's, whichever task comes first
+    text = "place a clean cup in the coffee maker after you heat a mug"
+    with pytest.raises(HTTError, match="which the CoffeeMachine cannot hold"):
+        exact_names(text, [tasks[1], tasks[0]], BOTH, "s")
     # near miss: the same task says "mug" too ("the mug or cup"): that word may mean the Mug
     tasks[1] = tasks[1].model_copy(update={"text": "place the clean mug or cup in the coffee maker"})
     exact_names("heat a mug, then place the clean mug or cup in the coffee maker", tasks, BOTH, "s")

@@ -103,7 +103,9 @@ def exact_names(
         # type no other word of its task can mean ("a utensil ... not the butter knife": the utensil's)
         own, meant = _scope(m, tasks, mentions)
         unnamed = {t for task in own for t in (*task.object, *(task.container or ())) if t not in meant}
-        swap = role_swap_conflict(m.entry, present, unnamed, scene, places)
+        # the place of the word's own task ("the cup in the coffee maker", not the mug's cabinet)
+        where = {t: task.receptacle[0] for task in own if task.receptacle for t in task.object} or places
+        swap = role_swap_conflict(m.entry, present, unnamed, scene, where)
         if swap:
             raise HTTError(swap)
 
