@@ -78,7 +78,8 @@ def check_referents(
     exact_names(instruction, tasks, instances, scene, forbidden)
     moved_twice(instruction, tasks, before)
     categories_named(instruction, tasks, instances, scene)
-    return plural_of_several(instruction, tasks, instances, scene, convention, plurals)
+    said = stand_ins(instruction, tasks, instances, scene)
+    return said + plural_of_several(instruction, tasks, instances, scene, convention, plurals)
 
 
 def exact_names(
@@ -107,12 +108,69 @@ def exact_names(
         if clash and first in used and not any(o is not m and o.entry.types[0] == first for o in mentions):
             raise HTTError(clash)
         # the thing handled read as another type than the one the word names ("the cup" as the Mug), a
-        # type no other word of the text can mean ("a utensil ... not the butter knife": the utensil's)
-        others = [o for o in mentions if o.entry.phrase != m.entry.phrase]
-        unnamed = {t for t in things if not any(t in o.entry.types for o in others)}
-        swap = role_swap_conflict(m.entry, present, unnamed, scene, places)
+        # type no other word of its task can mean ("a utensil ... not the butter knife": the utensil's)
+        own, meant = _scope(m, tasks, mentions)
+        unnamed = {t for task in own for t in (*task.object, *(task.container or ())) if t not in meant}
+        # the place of the word's own task ("the cup in the coffee maker", not the mug's cabinet)
+        where = {t: task.receptacle[0] for task in own if task.receptacle for t in task.object} or places
+        swap = role_swap_conflict(m.entry, present, unnamed, scene, where)
         if swap:
             raise HTTError(swap)
+
+
+def stand_ins(
+    instruction: str, tasks: Sequence[BaseTaskSpec], instances: Mapping[str, int] | None, scene: str
+) -> list[str]:
+    """A word that is one type's own name, read as another type of its lexicon entry that a task uses and
+    no other word of the text can mean, said as an assumption since the world, not the words alone, made
+    that reading: where the scene lacks the named type and holds exactly one other ("cup" where the floor
+    plan has a Mug and no Cup: the annotation guide's "cup -> Cup, else Mug"), or where the task's role
+    passed over the named type present ("a wet towel" read as the Cloth: ALFRED cannot wash a Towel or a
+    HandTowel). Where two other types could be meant nothing is said here (the roles decide, or
+    `exact_names` refuses)."""
+    if not instances:
+        return []
+    said: list[str] = []
+    mentions = find_mentions(instruction)
+    for m in mentions:
+        types = m.entry.types
+        named = next((t for t in types if m.entry.phrase in (camel_words(t), t.lower())), None)
+        if named is None or m.entry.all_:
+            continue
+        own, meant = _scope(m, tasks, mentions)
+        used = {t for task in own for t in (*task.object, *(task.container or ()), *(task.receptacle or ()))}
+        read = [t for t in types if t != named and t in used and t not in meant]
+        if len(read) != 1:
+            continue
+        if not instances.get(named):
+            if [t for t in types if t != named and instances.get(t)] == read:
+                said.append(f"{m.surface!r}: {scene} has no {named}; read as its {read[0]}")
+        elif types.index(read[0]) > types.index(named):  # the role passed over the named type
+            cannot = f"its {named} cannot do what is asked"
+            said.append(f"{m.surface!r}: read as the {read[0]} of {scene}; {cannot}")
+    return list(dict.fromkeys(said))
+
+
+def _scope(
+    m: Mention, tasks: Sequence[BaseTaskSpec], mentions: Sequence[Mention]
+) -> tuple[list[BaseTaskSpec], set[str]]:
+    """The tasks whose text says the word `m` and the types the other words of their texts can mean: a
+    type those words read is not this word's reading ("the mug" of one task does not make "the cup" of
+    another the Mug's). Where no task's text says it (texts rewritten or unknown): every task, and the
+    types every other word of the instruction (`mentions`) can mean."""
+    words = tuple(w for w, _, _ in tokens(m.surface))
+    own = [t for t in tasks if _says(t.text, words)]
+    if not own:
+        return list(tasks), {t for o in mentions if o.entry.phrase != m.entry.phrase for t in o.entry.types}
+    texts = [o for task in own for o in find_mentions(task.text)]
+    return own, {t for o in texts if o.entry.phrase != m.entry.phrase for t in o.entry.types}
+
+
+def _says(text: str, words: tuple[str, ...]) -> bool:
+    """Does `text` say `words` in a row?"""
+    toks = [w for w, _, _ in tokens(text)]
+    n = len(words)
+    return any(tuple(toks[i : i + n]) == words for i in range(len(toks) - n + 1))
 
 
 def moved_twice(
