@@ -48,6 +48,7 @@ from nl2hltl2plan.language.grounding import (
     sentence_start,
     tokens,
 )
+from nl2hltl2plan.language.it_of_two import it_of_two
 from nl2hltl2plan.language.landmarks import NEAR_WORDS, carried, landmark_destinations, pair_start
 from nl2hltl2plan.language.memo import reading_memo
 from nl2hltl2plan.language.negations import NO_CONSTRAINT, about_order, unforbidden_verb
@@ -123,7 +124,7 @@ def account(
     out += corrections(instruction, mentions, parse) + repeated_tasks(instruction, mentions, parse)
     out += one_of_several(instruction, mentions, parse, instances)
     out += first_and_last(instruction, mentions, parse) + fragments(instruction, mentions)
-    out += repeats_for_another(instruction, mentions, parse)
+    out += repeats_for_another(instruction, mentions, parse) + it_of_two(instruction, mentions)
     out += _words(instruction, toks, in_mention, mentions, parse, instances, scene)
     out += unordered_steps(
         toks, {i for i, t in enumerate(toks) if parse.constraint_at(t[1])} | in_mention, parse, per_group_only
