@@ -115,7 +115,6 @@ def test_it_english_decides_is_not_named(text):
 
 def test_check_1_names_it_of_two_whatever_the_reading():
     text = "put a watch in the box, then put it on the sofa"
-    reading = [
-        BaseTaskSpec(id="A", kind="place_in_container", object=["Watch"], receptacle=["Sofa"], container=["Box"])
-    ]
+    kind = "place_in_container"
+    reading = [BaseTaskSpec(id="A", kind=kind, object=["Watch"], receptacle=["Sofa"], container=["Box"])]
     assert "put it" in [u.words for u in account(text, reading, [])]
