@@ -48,12 +48,13 @@ from nl2hltl2plan.language.grounding import (
     sentence_start,
     tokens,
 )
+from nl2hltl2plan.language.it_of_two import it_of_two
 from nl2hltl2plan.language.landmarks import NEAR_WORDS, carried, landmark_destinations, pair_start
 from nl2hltl2plan.language.memo import reading_memo
 from nl2hltl2plan.language.negations import NO_CONSTRAINT, about_order, unforbidden_verb
 from nl2hltl2plan.language.order_words import check_cycles, finished_words, misordered, unordered_steps
 from nl2hltl2plan.language.parse_usage import IMPLIED_TYPES, ParseUsage
-from nl2hltl2plan.language.prepositions import DESTINATION, preposition_before
+from nl2hltl2plan.language.prepositions import DESTINATION, preposition_before, source_at
 from nl2hltl2plan.language.statements import asked_before, says_where
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, ConstraintSpec
 from nl2hltl2plan.language.unknown_words import unread_words, unused_tools
@@ -123,7 +124,7 @@ def account(
     out += corrections(instruction, mentions, parse) + repeated_tasks(instruction, mentions, parse)
     out += one_of_several(instruction, mentions, parse, instances)
     out += first_and_last(instruction, mentions, parse) + fragments(instruction, mentions)
-    out += repeats_for_another(instruction, mentions, parse)
+    out += repeats_for_another(instruction, mentions, parse) + it_of_two(instruction, mentions)
     out += _words(instruction, toks, in_mention, mentions, parse, instances, scene)
     out += unordered_steps(
         toks, {i for i, t in enumerate(toks) if parse.constraint_at(t[1])} | in_mention, parse, per_group_only
@@ -276,10 +277,7 @@ def _locative(
         return False
     if re.search(r"[,;:.!?]", instruction[toks[i][2] : toks[start][1]]):
         return False  # "in the drawer, also the ladle": a preposition's phrase never reaches over punctuation
-    first = i
-    while first > 0 and toks[first - 1][0] in LOCATIVE | {"out"}:
-        first -= 1  # "from in between the sink and ...", "out of", "from under the bed": where it is
-    if toks[first][0] in ("from", "off", "out"):
+    if source_at(instruction, toks, start):  # "from under the bed", "out of": where it is
         return True
     if i >= 2 and toks[i - 1][0] in ("it", "them") and "verb_any" in categories(toks[i - 2][0]):
         return False  # "put it in the microwave": where it goes, never where something is
@@ -389,13 +387,10 @@ def _a_stop(instruction: str, m: Mention, toks: list[tuple[str, int, int]]) -> b
     i = preposition_before(toks, m.start, _PREPOSITIONS)
     if i < 0 or toks[i][0] not in _PREPOSITIONS:
         return True
-    before = toks[i - 1][0] if i > 0 else ""
     if says_where(instruction, toks[i][1]):  # "after / until the mug is in the sink": a placement it refers
         # to; "I want that the carrot is on the plate": one it asks for
         return asked_before(instruction, toks[i][1])
-    if toks[i][0] == "from" and before in _COUNTED:  # "on the second from the bottom shelf": which shelf
-        return True
-    return toks[i][0] not in ("from", "off") and before not in ("out", "from")
+    return not source_at(instruction, toks, m.start)  # "on the second from the bottom shelf": which shelf
 
 
 def _says_where_it_is(instruction: str, toks: list[tuple[str, int, int]], i: int) -> bool:
@@ -405,7 +400,6 @@ def _says_where_it_is(instruction: str, toks: list[tuple[str, int, int]], i: int
 
 
 _WHERE_PREPOSITIONS = frozenset({"on", "in", "at", "inside", "atop", "upon"})
-_COUNTED = frozenset({"first", "second", "third", "fourth", "last", "2nd", "3rd"})
 
 
 @lru_cache(maxsize=512)

@@ -79,12 +79,7 @@ def unordered_steps(
     order within each group only (its phrases are read so whatever a rewriting made of them)."""
     plain = [w for w, _, _ in toks]
     text = " ".join(plain)
-    remarks = [
-        FreeOrder(r.words, r.start, r.end, r.per_group or per_group_only) for r in free_order_remarks(text)
-    ]
-    # the word "any" of "each pair in any order" frees only within the groups, as its phrase does
-    in_remark = {i for i, at in enumerate(_starts(plain)) if any(r.start <= at < r.end for r in remarks)}
-    cats = [categories(w) for i, (w, _, _) in enumerate(toks) if i not in in_mention | in_remark]
+    remarks = _remarks(text, per_group_only)
     words = [
         w
         for i, w in enumerate(plain)
@@ -95,12 +90,36 @@ def unordered_steps(
     ]
     words += [p for p in ("in that order", "in this order") if f" {p} " in f" {text} "]
     words += [p for p in ("at the end", "in the end") if re.search(rf"\b{p}\b(?! of\b)", text)]
-    free = any("any_order" in c for c in cats) or any(not r.per_group for r in remarks)
+    free = frees_an_order(toks, in_mention, per_group_only)
     if len(parse.tasks) >= 2 and remarks and _totally_ordered(parse):
         return [Unread(remarks[0].words, "order", "it leaves an order free, but every base task is ordered")]
     if not words or len(parse.tasks) < 2 or parse.before or free:
         return []
     return [Unread(", ".join(dict.fromkeys(words)), "order", "the base tasks are not ordered")]
+
+
+def frees_an_order(
+    toks: list[tuple[str, int, int]], in_mention: set[int], per_group_only: bool = False
+) -> bool:
+    """Whether a word or phrase of the text (`toks`; the words of `in_mention` name things) leaves the order
+    of some pair of tasks free: a phrase that frees it across the groups ("in any order", "the order is up to
+    you"), or an `any_order` word outside such phrases and outside things' names ("whenever you like"); a
+    phrase that frees the order within each group only ("each pair in either order") frees none of them.
+    The one test, for check 1 and for the model readings `learned.structured` accepts."""
+    plain = [w for w, _, _ in toks]
+    remarks = _remarks(" ".join(plain), per_group_only)
+    # the word "any" of "each pair in any order" frees only within the groups, as its phrase does
+    in_remark = {i for i, at in enumerate(_starts(plain)) if any(r.start <= at < r.end for r in remarks)}
+    return any(not r.per_group for r in remarks) or any(
+        "any_order" in categories(w) for i, w in enumerate(plain) if i not in in_mention | in_remark
+    )
+
+
+def _remarks(text: str, per_group_only: bool) -> list[FreeOrder]:
+    """The phrases of `text` (words joined by blanks) that free an order; `per_group_only`: each frees the
+    order within each group only."""
+    said = free_order_remarks(text)
+    return [FreeOrder(r.words, r.start, r.end, r.per_group or per_group_only) for r in said]
 
 
 def _inside_one_task(words: list[str], i: int, parse: ParseUsage) -> bool:

@@ -1,12 +1,16 @@
 """The prepositions of a place, as the readers outside the grammar match them: taken from the grammar's one
 list (`grammar.word_tables.PREPOSITIONS`, its destination and landmark sets), never written again; and
-which preposition a place phrase of a tokenized text has (`preposition_before`, for check 1).
+which preposition a place phrase of a tokenized text has (`preposition_before`, for check 1); and whether a
+place is named as a source, where a thing is taken from (`source_at`, `a_source`: check 1, the grammar's
+"put it back" and the learned readers ask this one test).
 
 >>> import re
 >>> bool(re.fullmatch(preposition_pattern(ONE_PLACE), "on  top of"))
 True
 >>> "between" in ONE_PLACE, "next to" in PLACE_OR_LANDMARK
 (False, True)
+>>> [a_source(t, t.index("shelf")) for t in ("take it out of the shelf", "the second from the top shelf")]
+[True, False]
 """
 
 from __future__ import annotations
@@ -16,6 +20,7 @@ from collections.abc import Iterable
 
 from nl2hltl2plan.language.content_words import DETERMINERS, LOCATIVE, categories
 from nl2hltl2plan.language.grammar.word_tables import DEST_PREPS, NEAR_PREPS, PREPOSITIONS
+from nl2hltl2plan.language.grounding import tokens
 
 # where a thing is put, one place to each: the grammar's destinations but the two that take two places
 # ("between the sink and the stove") and the parser's own "then to"
@@ -58,3 +63,29 @@ def preposition_before(toks: list[tuple[str, int, int]], start: int, preps: froz
 def _to_a_destination(toks: list[tuple[str, int, int]], i: int) -> bool:
     """ "to" / "into" / "onto" at `i` opens a destination, unless it ends "next to", "close to", "up to"."""
     return toks[i][0] in DESTINATION and (i == 0 or toks[i - 1][0] not in LOCATIVE | {"close", "up"})
+
+
+# the first word of a source's prepositions: "from (under) the bed", "out of the fridge", "off (of) the
+# counter"
+SOURCE = frozenset({"from", "off", "out"})
+# "the second from the top shelf": which shelf, no source
+_ORDINALS = frozenset({"first", "second", "third", "fourth", "last", "2nd", "3rd"})
+
+
+def source_at(text: str, toks: list[tuple[str, int, int]], start: int) -> bool:
+    """Is the place phrase whose first word is token `start` of `text` (tokenized as `toks`) where a thing is
+    taken from: its prepositions (`preposition_before`, never over punctuation) open with "from", "out" or
+    "off", not after an ordinal ("the second from the top shelf")?"""
+    i = preposition_before(toks, start, LOCATIVE)
+    if i < 0 or toks[i][0] not in LOCATIVE or re.search(r"[,;:.!?]", text[toks[i][2] : toks[start][1]]):
+        return False
+    while i > 0 and toks[i - 1][0] in LOCATIVE | {"out"}:
+        i -= 1  # "from under the bed", "out of", "off of"
+    return toks[i][0] in SOURCE and (i == 0 or toks[i - 1][0] not in _ORDINALS)
+
+
+def a_source(text: str, start: int) -> bool:
+    """`source_at` of the place whose name begins at character `start` of `text` ("from the sink")."""
+    toks = tokens(text)
+    at = next((k for k, t in enumerate(toks) if t[1] == start), None)
+    return at is not None and source_at(text, toks, at)

@@ -21,30 +21,27 @@ import networkx as nx
 
 from nl2hltl2plan.domain.task_kinds import APPLIANCE
 from nl2hltl2plan.language.content_words import DETERMINERS, Unread, categories
+from nl2hltl2plan.language.grammar.put_back import WHERE_IT_WAS
 from nl2hltl2plan.language.grammar.repeats import REPEAT_FRAGMENT
 from nl2hltl2plan.language.grounding import Mention, lookup, sentence_start, tokens
 from nl2hltl2plan.language.negations import NO_CONSTRAINT, PRONOUNS
 from nl2hltl2plan.language.parse_usage import ParseUsage
+from nl2hltl2plan.language.prepositions import a_source
 from nl2hltl2plan.language.statements import REFERENCE
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
 
 # "bring it back", "then back again", "return it", "put it back where it was", "back in its place": to
-# where it was, which no base task names; "three times"
-_WHERE_IT_WAS = (
-    r"(?:\s+(?:to\s+)?where\s+(?:it|they)\s+(?:was|were|came\s+from|belongs?)|"
-    r"\s+(?:in|into|on|to)\s+(?:its|their)\s+(?:original\s+|usual\s+)?(?:place|spot|home)s?)?"
-)
+# where it was (`put_back.WHERE_IT_WAS`), which no base task names; "three times"
 _ENDS = r"(?=\s*(?:$|[.,;!?)]|(?:and{}|then|again|afterwards|after|later|here|please|now)\b))"
-_RETURN = re.compile(r"\bback(?: again)?\b" + _WHERE_IT_WAS + _ENDS.format(""))
+_RETURN = re.compile(r"\bback(?: again)?\b" + WHERE_IT_WAS + _ENDS.format(""))
 # "return the mug", "return both": the thing is named, its place is not ("return the mug and the cup to the
 # shelf" names it after the list)
 _RETURN_VERB = re.compile(
     r"\breturn\s+(?:it|them|both|(?:the|your|that|this|these|those)(?:\s+[a-z]+){1,2})\b"
-    + _WHERE_IT_WAS
+    + WHERE_IT_WAS
     + _ENDS.format(r"(?!\s+(?:the|a|an|your|my)\b)")
 )
 _LEFT_OUT = re.compile(r"\bleave (?:\w+ ){0,3}out\b(?! of)")  # "leave one out": an exception, as "except one"
-_SOURCE = re.compile(r"\b(?:from|out of|off)\b")
 _TIMES = re.compile(
     r"\b(?:\d+|two|three|four|five|six|seven|eight|nine|ten|several|many|multiple|a few) times\b"
 )
@@ -125,11 +122,10 @@ def _returned(lowered: str, start: int, end: int, mentions: list[Mention], parse
     """Does a task put something into a place the words between `start` and `end` name as a source
     ("from the cabinet", "out of the fridge")?"""
     places = {r for t in parse.tasks for r in t.receptacle or ()}
-    for source in _SOURCE.finditer(lowered, start, end):
-        named = next((m for m in mentions if source.end() <= m.char_start < end), None)
-        if named is not None and set(named.entry.types) & places:
-            return True
-    return False
+    return any(
+        start <= m.char_start < end and set(m.entry.types) & places and a_source(lowered, m.char_start)
+        for m in mentions
+    )
 
 
 _THEN_VERB = re.compile(

@@ -17,29 +17,23 @@ from __future__ import annotations
 
 import re
 
+from nl2hltl2plan.language import prepositions  # a module: prepositions imports the grammar's word tables
 from nl2hltl2plan.language.grounding import find_mentions, sentence_start
 
-# A place named right after "from" / "out of" / "off" (a determiner and one word may come between) is
-# where the object is taken from, never its destination ("the second from the bottom shelf" is a place).
-_SOURCE = re.compile(
-    r"(?<!second\s)(?<!third\s)(?<!fourth\s)\b(?:from|out\s+of|off(?:\s+of)?)\s+"
-    r"(?:(?:the|a|an|your|its|that|this)\s+)?(?:[a-z-]+\s+)?$",
-    re.I,
+# "where it was", "in its usual place", "to their home": the place a return goes back to, left unsaid (the
+# one pattern of it: here, and check 1's `unsupported_steps`)
+WHERE_IT_WAS = (
+    r"(?:\s+(?:to\s+)?where\s+(?:it|they)\s+(?:was|were|came\s+from|belongs?)|"
+    r"\s+(?:in|into|on|to)\s+(?:its|their)\s+(?:original\s+|usual\s+)?(?:place|spot|home)s?)?"
 )
 # "put it back", "return it", "put it back where it was", "put them back in their place": a return whose
 # place is not said (what follows ends the clause or is a connective, never "in the fridge")
 _PUT_BACK = re.compile(
     r"\b(?:(?:put|place|set|stick|bring|take)\s+(?:(?P<pron>it|them)\s+)?back|return\s+(?P<rpron>it|them))"
-    r"(?:\s+(?:(?:to\s+)?where\s+(?:it|they)\s+(?:was|were|came\s+from|belongs?)|"
-    r"(?:in|into|on|to)\s+(?:its|their)\s+(?:original\s+)?(?:place|spot)s?))?"
-    r"(?=\s*(?:$|[.,;!?)]|(?:and|then|afterwards|again|after|once|when|please)\b))",
+    + WHERE_IT_WAS
+    + r"(?=\s*(?:$|[.,;!?)]|(?:and|then|afterwards|again|after|once|when|please)\b))",
     re.I,
 )
-
-
-def a_source(text: str, start: int) -> bool:
-    """Whether the place named at `start` of `text` is where a thing is taken from ("from the sink")."""
-    return bool(_SOURCE.search(text[:start]))
 
 
 def put_back_where_taken(text: str) -> str:
@@ -48,7 +42,8 @@ def put_back_where_taken(text: str) -> str:
     out, last = [], 0
     for m in _PUT_BACK.finditer(text):
         said = text[sentence_start(text, m.start()) : m.start()]
-        sources = {x.entry.canonical: x.surface for x in find_mentions(said) if a_source(said, x.char_start)}
+        named = find_mentions(said)
+        sources = {x.entry.canonical: x.surface for x in named if prepositions.a_source(said, x.char_start)}
         if len(sources) != 1:
             them = len(sources) > 1 and (m.group("pron") or m.group("rpron")) == "them"
             each = _TAKEN.search(said) if them else None
@@ -78,7 +73,8 @@ _GATHERED = re.compile(
     r"(?=\s*(?:$|[.,;!?)]|(?:and|then)\b))",
     re.I,
 )
-_FROM = re.compile(r"\s+(?:from|out\s+of|off(?:\s+of)?)\s+(?:the|your|its|that|this)\s+", re.I)
+# nothing but a source's prepositions and a determiner between a thing and its place
+_FROM = re.compile(r"\s+(?:[a-z]+\s+){1,2}(?:the|your|its|that|this)\s+", re.I)
 _AND = re.compile(r"\s*(?:,\s*)?(?:and\s+)?(?:the|your|that|this)\s+", re.I)
 
 
@@ -94,6 +90,7 @@ def _each_back(body: str) -> str | None:
         return None
     if not all(_AND.fullmatch(body[e : t.char_start]) for e, (t, _) in zip(ends, pairs, strict=True)):
         return None
-    if not all(_FROM.fullmatch(body[t.char_end : p.char_start]) for t, p in pairs):
+    gaps = [(body[t.char_end : p.char_start], p.char_start) for t, p in pairs]
+    if not all(_FROM.fullmatch(gap) and prepositions.a_source(body, at) for gap, at in gaps):
         return None
     return " and ".join(f"put the {t.surface} back in the {p.surface}" for t, p in pairs)

@@ -33,9 +33,9 @@ import re
 from dataclasses import dataclass, replace
 
 from nl2hltl2plan.domain.task_kinds import SLOTS, slots_of
-from nl2hltl2plan.language.grammar.put_back import a_source
 from nl2hltl2plan.language.grounding import Grounder, find_mentions
 from nl2hltl2plan.language.learned.data import Composition, Example, states_kind
+from nl2hltl2plan.language.prepositions import a_source
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter
 
 _SLICE = re.compile(

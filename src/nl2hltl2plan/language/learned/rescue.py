@@ -17,10 +17,10 @@ import re
 from functools import cache
 
 from nl2hltl2plan.language.grammar.drafts import states_where
-from nl2hltl2plan.language.grammar.put_back import a_source
 from nl2hltl2plan.language.grammar.sentences import normalize
 from nl2hltl2plan.language.grounding import camel_words, find_mentions, lexicon
 from nl2hltl2plan.language.learned.slot_model import SlotModel, SlotPrediction
+from nl2hltl2plan.language.prepositions import a_source
 
 _IN_CLAUSE = re.compile(
     r"^(?:no destination for the .*? in|no object to act on in|nothing to hold under the lamp in|"

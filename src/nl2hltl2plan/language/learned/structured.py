@@ -28,12 +28,12 @@ from dataclasses import dataclass
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.language.accounting import account
-from nl2hltl2plan.language.content_words import categories, free_order_remarks
+from nl2hltl2plan.language.content_words import categories
 from nl2hltl2plan.language.grounding import find_mentions, tokens
 from nl2hltl2plan.language.learned.compose import ELIDABLE, VERB_GERUND, VERB_PARTICIPLE
 from nl2hltl2plan.language.learned.span_order import before_pairs
 from nl2hltl2plan.language.learned.structure import Reading
-from nl2hltl2plan.language.order_words import first_and_last_kept
+from nl2hltl2plan.language.order_words import first_and_last_kept, frees_an_order
 from nl2hltl2plan.language.parse_usage import IMPLIED_TYPES
 from nl2hltl2plan.language.scoring import match
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter, transitive_closure
@@ -135,10 +135,9 @@ def order_not_held(
 
 
 def _frees_an_order(instruction: str) -> bool:
-    """Whether a word or phrase of the text leaves some order free ("in any order", "whenever you like")."""
-    toks = tokens(instruction)
-    text = " ".join(w for w, _, _ in toks)
-    return bool(free_order_remarks(text)) or any("any_order" in categories(w) for w, _, _ in toks)
+    """Whether the text leaves some order free, as check 1 judges it (`order_words.frees_an_order`)."""
+    in_mention = {i for m in find_mentions(instruction) for i in range(m.start, m.end)}
+    return frees_an_order(tokens(instruction), in_mention)
 
 
 _IS_AT = re.compile(
