@@ -47,6 +47,25 @@ _REFERS_BACK = re.compile(
 )
 
 
+# a remark after the labelled or numbered steps that confirms the order they give: "Please keep that
+# sequence.", "Follow that order.", "In this order, please." (`_KEEP`); or that restates one step after the
+# one before it, "Constraint: step 2 starts after step 1 is done." (`_STEP_AFTER`, the same noun, one back)
+_SENTENCE_START = r"(?:^|(?<=[.;!?]))\s*"
+_KEEP = re.compile(
+    rf"{_SENTENCE_START}(?:please\s+)?(?:(?:keep|follow|stick\s+to|respect|maintain|observe|go\s+in|do\s+"
+    r"(?:it|them|this|these|everything)\s+in)\s+(?:that|this|the\s+(?:same|given|above|listed|numbered))\s+"
+    r"(?:order|sequence)|in\s+(?:that|this)\s+(?:order|sequence))(?:\s*,?\s*please)?\s*(?:[.!]+|$)",
+    re.IGNORECASE,
+)
+_STEP_AFTER = re.compile(
+    rf"{_SENTENCE_START}(?:(?:constraint|rule|note|order(?:ing)?|sequence)\s*:\s*)?(?P<noun>{_STEP_NOUN})\s+"
+    r"(?P<t>\w+)\s+(?:(?:only|must|should|can|may)\s+)*(?:(?:starts?|begins?|comes?|goes|go|happens?|is\s+done|"
+    r"be\s+done)\s+)?(?:only\s+)?(?:after|once)\s+(?P<noun2>[a-z]+)\s+(?P<b>\w+)(?:\s+(?:is|has\s+been)\s+"
+    r"(?:done|finished|complete|completed|over))?\s*(?:[.!]+|$)",
+    re.IGNORECASE,
+)
+
+
 def _place_in_turn(word: str) -> int | None:
     word = word.lower()
     return int(word) if word.isdigit() else NUMBER_WORDS.get(word, _LETTERS.get(word))
@@ -64,13 +83,34 @@ def label_references_dropped(text: str) -> str:
     return _REFERS_BACK.sub(dropped, text)
 
 
+def order_confirmed_dropped(text: str, listed: bool) -> str:
+    """The remarks that confirm the order of the steps (`_KEEP`, `_STEP_AFTER`) dropped where two or more
+    steps are labelled or numbered in turn and no remark frees the whole list (`listed`, or one still in
+    the text); anywhere else (no steps to keep in order, a step said after
+    another than the one before it, or a remark that frees the whole list beside it: "1) ... 2) ... any
+    order. Keep that sequence." says both) they stay, to be refused."""
+    labels = [_turn(m) for m in _labels(text)]
+    listed = [_list_number(m) for m in _LIST_NUMBER.finditer(text)]
+    if not any(len(t) >= 2 and t == list(range(1, len(t) + 1)) for t in (labels, listed)):
+        return text
+    if listed or frees_every_step(free_order(text.lower())[1]):
+        return text
+
+    def restated(m: re.Match[str]) -> str:
+        turn, back = _place_in_turn(m["t"]), _place_in_turn(m["b"])
+        same = m["noun"].lower() == m["noun2"].lower() and len(labels) >= 2
+        return " " if same and turn is not None and back == turn - 1 and turn <= len(labels) else m[0]
+
+    return _STEP_AFTER.sub(restated, _KEEP.sub(" ", text))
+
+
 def steps_read(text: str, listed: bool) -> str | None:
     """Step labels, and bare list numbers, as "first" / "then" (numbered 1, 2, ... in turn); bare list
     numbers beside a remark that frees the whole list (`listed`: "1) ... 2) ... in any order") only list,
     and are removed, and so are step labels there where each step is one placement ("Step 1 - A on P. Step
     2 - B on Q. The steps may be done in any order."; with two in a step, the remark may free the order
     within each step alone). None: labels or numbers out of turn."""
-    text = label_references_dropped(text)
+    text = order_confirmed_dropped(label_references_dropped(text), listed)
     labels = _labels(text)
     if [_turn(m) for m in labels] != list(range(1, len(labels) + 1)):
         return None
@@ -146,7 +186,7 @@ def numbered_steps(text: str) -> str:
     ... Part B: ..."), and the numbers of a numbered list of two or more steps read (`list_numbers_read`:
     as "first" / "then", or removed beside a remark that frees the whole list), so that every reader
     orders the steps as the labels and numbers do; the text as it is with no such list."""
-    text = label_references_dropped(text)
+    text = order_confirmed_dropped(label_references_dropped(text), False)
     labels = _labels(text)
     if len(labels) >= 2 and [_turn(m) for m in labels] == list(range(1, len(labels) + 1)):
         text = " ".join(_as_steps(text, labels).split())
