@@ -2243,7 +2243,8 @@ VALID_H142: dict[str, dict[int, list[str]]] = {
         1: ["Orange on the yellow plate, green apple on the blue plate. Sharpish."],
         2: ["Right, three things and be quick about it: red apple in the blue plate, green apple in the pink "
             "plate, orange in the yellow plate. Whatever order."],
-        3: ["Get moving: the carrot to the blue plate, the orange to the yellow plate, the green apple to the "
+        3: ["Get moving: the carrot to the blue plate, the orange to the yellow plate, the green apple to "
+            "the "
             "green plate and the red apple to the pink plate, in whatever order suits you."],
         4: ["Green apple and orange to the yellow plate, sharp. When they're in, carrot and red apple to the "
             "blue plate, either order."],
@@ -2272,7 +2273,8 @@ VALID_H142: dict[str, dict[int, list[str]]] = {
     "phone_lowercase": {
         1: ["green apple in blue plate n orange in yellow plate pls"],
         2: ["pls put green apple on pink plate orange on yellow plate red apple on blue plate order up to u"],
-        3: ["carrot blue plate orange yellow plate green apple green plate red apple pink plate any order thx"],
+        3: ["carrot blue plate orange yellow plate green apple green plate red apple pink plate any order "
+            "thx"],
         4: ["first green apple and orange in yellow plate after that carrot and red apple in blue plate any "
             "order kindly do the needful"],
     },

@@ -422,6 +422,11 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     (r"^\s*(?:r|rq|req|requirement|item|(?:goal|constraint|objective)\s)\s*-?\s*\d+\s*:", " "),
     # a spec sheet's goal said as where the blocks are: "Goal: three blocks at the opposite side" (on it)
     (r"\bat\s+(?=(?:the\s+)?(?:opposite\s+(?:side|regions?)|regions?\s+[e-j]\b))", "on "),
+    # a constraint said as a fact, a terse "No other region used." (as "no other region is to be used")
+    (
+        r"\bno\s+other\s+(region|area|place|zone|spot)(s?)\s+(?:is\s+|are\s+|gets?\s+|being\s+)?used\b",
+        r"no other \1\2 is to be used",
+    ),
     # "lands" is "goes": "Nothing lands outside the target region", "the red block should land on G"
     (r"\blands\b", "goes"),
     (r"\b(should|must|to|can|may|will)\s+land\b", r"\1 go"),

@@ -86,14 +86,17 @@ def label_references_dropped(text: str) -> str:
 def order_confirmed_dropped(text: str, listed: bool) -> str:
     """The remarks that confirm the order of the steps (`_KEEP`, `_STEP_AFTER`) dropped where two or more
     steps are labelled or numbered in turn and no remark frees the whole list (`listed`, or one still in
-    the text); anywhere else (no steps to keep in order, a step said after
-    another than the one before it, or a remark that frees the whole list beside it: "1) ... 2) ... any
-    order. Keep that sequence." says both) they stay, to be refused."""
-    labels = [_turn(m) for m in _labels(text)]
-    listed = [_list_number(m) for m in _LIST_NUMBER.finditer(text)]
-    if not any(len(t) >= 2 and t == list(range(1, len(t) + 1)) for t in (labels, listed)):
+    the text); anywhere else (no steps to keep in order, a step said after another than the one before it,
+    or a remark that frees the whole list beside it: "1) ... 2) ... any order. Keep that sequence." says
+    both) they stay, to be refused."""
+    marks = _labels(text)
+    labels = [_turn(m) for m in marks]
+    numbers = [_list_number(m) for m in _LIST_NUMBER.finditer(text)]
+    if not any(len(t) >= 2 and t == list(range(1, len(t) + 1)) for t in (labels, numbers)):
         return text
-    if listed or frees_every_step(free_order(text.lower())[1]):
+    # a freeing remark beside labelled steps of two placements or more frees each step alone (`steps_read`)
+    ordered_anyway = len(labels) >= 2 and not _one_placement_each(text, marks)
+    if (listed or frees_every_step(free_order(text.lower())[1])) and not ordered_anyway:
         return text
 
     def restated(m: re.Match[str]) -> str:
