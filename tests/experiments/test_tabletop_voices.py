@@ -102,3 +102,12 @@ def test_a_remark_that_keeps_the_steps_order_is_dropped_only_beside_steps() -> N
     assert "sequence" in order_confirmed_dropped("1. a on p. 2. b on q. Please keep that sequence.", True)
     backwards = "Step 1: a on p. Step 2: b on q. Step 1 starts after step 2 is done."
     assert order_confirmed_dropped(backwards, False) == backwards
+
+
+def test_numbered_goals_are_no_steps() -> None:
+    """A spec sheet's "Goal 1: ... Goal 2: ..." (h142's held-out VALID_H142, where it was read as two ordered
+    steps on first contact) lists: never read as first / then; "Step 1: ... Step 2: ..." still orders."""
+    goals = "Goal 1: green apple -> blue plate\nGoal 2: orange -> yellow plate"
+    assert _refused(goals) or signature(goals) == signature(TASKS[1].instruction)
+    steps = "Step 1: green apple -> blue plate\nStep 2: orange -> yellow plate"
+    assert signature(steps) != signature(TASKS[1].instruction)

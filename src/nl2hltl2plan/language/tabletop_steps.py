@@ -36,6 +36,9 @@ _LIST_NUMBER = re.compile(
 )
 # "Plan A: ... Plan B: ...", "Option 1: ...": alternatives, no steps (`tabletop_pairs` refuses them)
 _ALTERNATIVE_NOUNS = frozenset("option plan alternative choice scenario variant version possibility".split())
+# "Goal 1: ... Goal 2: ...", "Requirement 2:": a spec sheet's identifiers, which list and never order (as the
+# handover reader reads them): no step labels (left unread, so refused)
+_NOT_STEPS = _ALTERNATIVE_NOUNS | frozenset("goal objective requirement constraint".split())
 
 
 # "Round B, only after round A:", "Batch two (after batch one):", "Chapter two, only after chapter one:": a
@@ -153,7 +156,7 @@ def _labels(text: str) -> list[re.Match[str]]:
     Priority 2: ...")."""
     labels = list(_LABEL.finditer(text))
     if not labels:
-        labels = [m for m in _NOUN_LABEL.finditer(text) if m["noun"].lower() not in _ALTERNATIVE_NOUNS]
+        labels = [m for m in _NOUN_LABEL.finditer(text) if m["noun"].lower() not in _NOT_STEPS]
         if len(labels) < 2 or len({m["noun"].lower() for m in labels}) != 1:
             return []
     return labels
