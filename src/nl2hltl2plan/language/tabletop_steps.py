@@ -37,8 +37,9 @@ _LIST_NUMBER = re.compile(
 # "Plan A: ... Plan B: ...", "Option 1: ...": alternatives, no steps (`tabletop_pairs` refuses them)
 _ALTERNATIVE_NOUNS = frozenset("option plan alternative choice scenario variant version possibility".split())
 # "Goal 1: ... Goal 2: ...", "Requirement 2:": a spec sheet's identifiers, which list and never order (as the
-# handover reader reads them): no step labels (left unread, so refused)
-_NOT_STEPS = _ALTERNATIVE_NOUNS | frozenset("goal objective requirement constraint".split())
+# handover reader reads them): no step labels (left unread, so refused); "Objective I) ... Objective II)"
+# orders its groups (a decision of test_tabletop_pairs)
+_NOT_STEPS = _ALTERNATIVE_NOUNS | frozenset("goal requirement constraint".split())
 
 
 # "Round B, only after round A:", "Batch two (after batch one):", "Chapter two, only after chapter one:": a
