@@ -2186,3 +2186,96 @@ DEV_H138: dict[str, dict[int, list[str]]] = {
             "plate any order"],
     },
 }
+
+
+# h142's development batch (session 24, issue 28): four voices, each on the four tasks (a hurried
+# supervisor's clipped orders, a teacher explaining to a class, a robotics engineer's spec sheet with
+# "Goal:" / "Constraint:" / "Step N:" lines, a phone message in lower case without punctuation), written
+# with VALID_H142 before any rule and measured on first contact.
+DEV_H142: dict[str, dict[int, list[str]]] = {
+    "hurried_supervisor": {
+        1: ["Quick job: green apple onto the blue plate, orange onto the yellow plate. Go."],
+        2: ["No time to waste. Green apple to the pink plate, orange to the yellow plate, red apple to the "
+            "blue plate. Any order, just get it done."],
+        3: ["Hurry up: carrot in the blue plate, orange in the yellow plate, green apple in the green plate, "
+            "red apple in the pink plate. Order doesn't matter."],
+        4: ["Listen up. Green apple and orange into the yellow plate first. Once that's done, carrot and red "
+            "apple into the blue plate, any order."],
+    },
+    "teacher": {
+        1: ["Let's see what the robot should do here. It places the green apple in the blue plate and the "
+            "orange in the yellow plate. Simple, right?"],
+        2: ["Today the robot has three things to do. The green apple goes in the pink plate, the orange goes "
+            "in the yellow plate, and the red apple goes in the blue plate. Notice that the order is up to "
+            "the robot."],
+        3: ["Here is the exercise. The carrot belongs in the blue plate, the orange in the yellow plate, the "
+            "green apple in the green plate and the red apple in the pink plate. Any order is correct."],
+        4: ["Pay attention to the order here. First, the green apple and the orange are placed in the yellow "
+            "plate. Only when both are there do the carrot and the red apple go into the blue plate, and "
+            "those two can go in any order."],
+    },
+    "spec_sheet": {
+        1: ["Goal: green apple in blue plate.\nGoal: orange in yellow plate.\nOrder: none."],
+        2: ["Task list:\n- green apple -> pink plate\n- orange -> yellow plate\n- red apple -> blue plate\n"
+            "Constraint: none on order."],
+        3: ["Goals: carrot in blue plate; orange in yellow plate; green apple in green plate; red apple in "
+            "pink plate.\nOrder: unconstrained."],
+        4: ["Step 1: green apple and orange in yellow plate (any order).\nStep 2: carrot and red apple in "
+            "blue plate (any order).\nConstraint: step 2 starts after step 1 is done."],
+    },
+    "phone_lowercase": {
+        1: ["put the green apple in the blue plate and the orange in the yellow plate thx"],
+        2: ["green apple in pink plate orange in yellow plate red apple in blue plate any order is fine"],
+        3: ["can u put carrot in blue plate orange in yellow plate green apple in green plate red apple in "
+            "pink plate any order"],
+        4: ["1. green apple and orange in yellow plate\n2. carrot and red apple in blue plate any order\n"
+            "please keep that sequence"],
+    },
+}
+
+
+# h142's held-out batch (session 24, issue 28): the same four voices, each on the four tasks in other
+# words (with British and Indian English turns, and a list closed by "Follow that order."), written with
+# DEV_H142 before any rule, put aside, and scored once at the end (its counts, not its sentences, were
+# also printed on first contact).
+VALID_H142: dict[str, dict[int, list[str]]] = {
+    "hurried_supervisor": {
+        1: ["Orange on the yellow plate, green apple on the blue plate. Sharpish."],
+        2: ["Right, three things and be quick about it: red apple in the blue plate, green apple in the pink "
+            "plate, orange in the yellow plate. Whatever order."],
+        3: ["Get moving: the carrot to the blue plate, the orange to the yellow plate, the green apple to "
+            "the "
+            "green plate and the red apple to the pink plate, in whatever order suits you."],
+        4: ["Green apple and orange to the yellow plate, sharp. When they're in, carrot and red apple to the "
+            "blue plate, either order."],
+    },
+    "teacher": {
+        1: ["Now, watch carefully. The robot is asked to put the orange in the yellow plate and the green "
+            "apple in the blue plate. The order does not matter here."],
+        2: ["In this exercise the robot moves three fruits: the green apple to the pink plate, the orange to "
+            "the yellow plate and the red apple to the blue plate. It may choose any order it likes."],
+        3: ["Let's go through it together. Four items: the carrot goes in the blue plate, the orange in the "
+            "yellow plate, the green apple in the green plate and the red apple in the pink plate. There is "
+            "no required order."],
+        4: ["Here is the tricky part.\n1. The robot starts with the green apple and the orange, both into "
+            "the yellow plate.\n2. It then places the carrot and the red apple into the blue plate, in any "
+            "order.\nFollow that order, please."],
+    },
+    "spec_sheet": {
+        1: ["Goal 1: green apple -> blue plate\nGoal 2: orange -> yellow plate\nConstraint: none"],
+        2: ["Objective: place 3 items.\n- green apple: pink plate\n- orange: yellow plate\n- red apple: blue "
+            "plate\nOrdering: free."],
+        3: ["Goal: carrot in blue plate, orange in yellow plate, green apple in green plate, red apple in "
+            "pink plate.\nConstraint: any order."],
+        4: ["Phase 1: green apple, orange -> yellow plate (either order).\nPhase 2: carrot, red apple -> "
+            "blue plate (either order).\nConstraint: phase 2 only after phase 1 is complete."],
+    },
+    "phone_lowercase": {
+        1: ["green apple in blue plate n orange in yellow plate pls"],
+        2: ["pls put green apple on pink plate orange on yellow plate red apple on blue plate order up to u"],
+        3: ["carrot blue plate orange yellow plate green apple green plate red apple pink plate any order "
+            "thx"],
+        4: ["first green apple and orange in yellow plate after that carrot and red apple in blue plate any "
+            "order kindly do the needful"],
+    },
+}

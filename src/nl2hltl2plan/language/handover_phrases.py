@@ -289,6 +289,7 @@ def _mark_one_per_region(m: Marked) -> None:
         r"(?:\s+only)?\b",
         rf"(?<=,)\s*(?:with\s+)?(?:one|a\s+single)\s+{NOUN}\s+(?:each|apiece)\b",  # "..., one block each"
         rf"\b(?:with\s+)?{one}\s+(?:per|in\s+each|on\s+each|for\s+each)\b(?!\s+of\b)",
+        rf"\b(?:with\s+)?{one}\s+(?:each|every)\s+{region}\b",  # a phone's "one block each region" (per)
         # "..., one block in each of them": the regions just named (the world's rule holds for every region)
         rf"\b(?:with\s+)?{one}\s+(?:in|on|for)\s+each\s+of\s+(?:them|these|those)(?:\s+{region}s)?\b",
         rf"(?:,\s*)?\b(?:with\s+)?(?:no|never)\s+two(?:\s+{NOUNS})?\s+(?:(?:may|can|should|will)\s+)?(?:sharing|share|occupy|be\s+(?:in|on)|in|on)\s+"

@@ -417,8 +417,19 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     # only stresses it
     (r"(?:\band\s+)?\bdo\s+the\s+needful\b(?:\s+and\b)?", " "),
     (r"(?<=[a-z])\s+(?:itself|themselves)\b", " "),
-    # a requirement's identifier before it ("R1:", "REQ-2:"): requirements are listed, not ordered
-    (r"^\s*(?:r|rq|req|requirement|item)\s*-?\s*\d+\s*:", " "),
+    # a requirement's identifier before it ("R1:", "REQ-2:"), and a spec sheet's numbered goal or constraint
+    # ("Goal 1:", "Constraint 2:"): they are listed, not ordered ("Step 2:" orders, and stays)
+    (r"^\s*(?:r|rq|req|requirement|item|(?:goal|constraint|objective)\s)\s*-?\s*\d+\s*:", " "),
+    # a spec sheet's goal said as where the blocks are: "Goal: three blocks at the opposite side" (on it)
+    (r"\bat\s+(?=(?:the\s+)?(?:opposite\s+(?:side|regions?)|regions?\s+[e-j]\b))", "on "),
+    # a constraint said as a fact, a terse "No other region used." (as "no other region is to be used")
+    (
+        r"\bno\s+other\s+(region|area|place|zone|spot)(s?)\s+(?:is\s+|are\s+|gets?\s+|being\s+)?used\b",
+        r"no other \1\2 is to be used",
+    ),
+    # "lands" is "goes": "Nothing lands outside the target region", "the red block should land on G"
+    (r"\blands\b", "goes"),
+    (r"\b(should|must|to|can|may|will)\s+land\b", r"\1 go"),
     # "let X VERB" commands X's verb: "let the red block go down before blue" (must go down), "let nothing be
     # placed on F" (nothing must be placed); "letting red go down first" (red going down first)
     (rf"\blet\s+({_SUBJECT_NP})\s+(?={_BARE_VERB}\b)", r"\1 must "),

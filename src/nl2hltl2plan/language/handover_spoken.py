@@ -73,6 +73,9 @@ _SCENE_TIME = (
 # fillers and hedges that carry no meaning, each only in the place where it cannot carry one
 _FILLERS: tuple[tuple[str, str], ...] = (
     (_SCENE_TIME, r"\1 currently "),
+    # after a conjunction that opens a clause ("but uh dont touch ...") a hesitation restates nothing ("or
+    # uh" may correct: left to the marker below)
+    (rf"\b(and|but|so|then)\s*,?\s*{_HESITATION}\b\s*,?", r"\1 "),
     (rf"\b{_HESITATION}\b", " , ~ , "),  # a soft correction marker: what follows may restate what went before
     (r"\b(?:basically|literally|honestly|yeah|yep|yup)\b", " , "),
     (r"\boh\b", " , "),

@@ -75,7 +75,8 @@ _STAGE_NOUNS = "stages?|steps?|parts?|phases?|rounds?|batch(?:es)?"
 # "one more thing:", "two last things:": what is added, not how many there are
 _NOT_A_TOTAL = "(?:more|other|last|final|further|extra|additional|remaining)"
 _COUNTED = re.compile(
-    rf"{_START}(?:(?:there\s+are|here\s+are|we\s+have|you\s+have|i\s+have)\s+)?"
+    # "there are", "we have", "today the robot has": who has the things to do is the one asked
+    rf"{_START}(?:(?:(?:today|now),?\s+)?(?:there\s+are|here\s+are|(?:we|you|i)\s+have|(?:the\s+robot|it)\s+has)\s+)?"
     rf"(?P<phrase>(?P<count>\d|{'|'.join(_COUNT_WORDS)})\s+(?:(?!{_NOT_A_TOTAL}\b)[a-z]+\s+)?(?:(?P<stages>{_STAGE_NOUNS})|{_TASK_NOUNS})"
     r"(?:\s+(?:to\s+(?:do|place|make|carry\s+out)|in\s+(?:all|total)|for\s+(?:you|the\s+robot|today)))?)"
     r"\s*(?P<end>[:.!,]|\s-+\s|\s*[—–])",

@@ -83,7 +83,8 @@ _FREEDOM_FILLER = frozenset(
     "the in which you do them they these those this it that of for me us to is are be at all really totally "
     "entirely quite completely here and so just it's its can may will how place placement placements put "
     "one ones a way round i we honestly pretty much first go goes what done like want prefer wish choose "
-    "pick fine ok okay good works work suits suit by with fancy mix up shuffle change vary switch thereof "
+    "pick fine ok okay good correct acceptable allowed permitted works work suits suit by with fancy mix up "
+    "shuffle change vary switch thereof "
     "move moves steps tasks jobs performed carried out executed completed tackled".split()
 )
 _NEGATION = re.compile(r"\b(?:not|never|no|none)\b|n't\b")
@@ -151,9 +152,12 @@ _ORDER_LABEL = re.compile(
 )
 _ASKING = frozenset("i i'd we we'd want need would to".split())  # "I'd like you to sort the fruit:"
 # a clause that only urges, closes or announces ("make it so", "off you go", "quick one")
-_URGING = re.compile(
-    rf"^{courtesy_pattern('urging', 'aside')}$"
+# and a hurried voice's urgency ("No time to waste.", "Hurry up!", "..., just get it done"): how soon
+_HURRY = (
+    r"(?:no\s+time\s+to\s+(?:waste|lose)|hurry(?:\s+up)?|chop\s+chop|(?:be\s+)?quick(?:\s+about\s+it|\s+as\s+you\s+can)?|"
+    r"sharpish|pronto|asap|on\s+the\s+double|(?:just\s+)?get\s+(?:it|this|them)\s+done(?:\s+(?:now|quickly|fast))?)"
 )
+_URGING = re.compile(rf"^(?:{courtesy_pattern('urging', 'aside')}|{_HURRY})$")
 # a frame that opens the text: a short clause that names nothing and has no word that could say an
 # action, order, count, negation, condition, place or manner (check 1's categories, and the words below):
 # it greets, addresses or titles ("Arr", "Howdy partner", "Helm", "Tonight's challenge") and asks nothing

@@ -36,6 +36,10 @@ _LIST_NUMBER = re.compile(
 )
 # "Plan A: ... Plan B: ...", "Option 1: ...": alternatives, no steps (`tabletop_pairs` refuses them)
 _ALTERNATIVE_NOUNS = frozenset("option plan alternative choice scenario variant version possibility".split())
+# "Goal 1: ... Goal 2: ...", "Requirement 2:": a spec sheet's identifiers, which list and never order (as the
+# handover reader reads them): no step labels (left unread, so refused); "Objective I) ... Objective II)"
+# orders its groups (a decision of test_tabletop_pairs)
+_NOT_STEPS = _ALTERNATIVE_NOUNS | frozenset("goal requirement constraint".split())
 
 
 # "Round B, only after round A:", "Batch two (after batch one):", "Chapter two, only after chapter one:": a
@@ -43,6 +47,25 @@ _ALTERNATIVE_NOUNS = frozenset("option plan alternative choice scenario variant 
 _REFERS_BACK = re.compile(
     r"(?P<label>(?P<noun>[a-z]+)\s+(?P<t>\w+))\s*(?:,|\()\s*(?:but\s+)?(?:only\s+)?(?:after|once|"
     r"following)\s+(?P<noun2>[a-z]+)\s+(?P<b>\w+)(?:\s+is\s+(?:done|finished|complete))?\s*\)?\s*(?=[:.)\-])",
+    re.IGNORECASE,
+)
+
+
+# a remark after the labelled or numbered steps that confirms the order they give: "Please keep that
+# sequence.", "Follow that order.", "In this order, please." (`_KEEP`); or that restates one step after the
+# one before it, "Constraint: step 2 starts after step 1 is done." (`_STEP_AFTER`, the same noun, one back)
+_SENTENCE_START = r"(?:^|(?<=[.;!?]))\s*"
+_KEEP = re.compile(
+    rf"{_SENTENCE_START}(?:please\s+)?(?:(?:keep|follow|stick\s+to|respect|maintain|observe|go\s+in|do\s+"
+    r"(?:it|them|this|these|everything)\s+in)\s+(?:that|this|the\s+(?:same|given|above|listed|numbered))\s+"
+    r"(?:order|sequence)|in\s+(?:that|this)\s+(?:order|sequence))(?:\s*,?\s*please)?\s*(?:[.!]+|$)",
+    re.IGNORECASE,
+)
+_STEP_AFTER = re.compile(
+    rf"{_SENTENCE_START}(?:(?:constraint|rule|note|order(?:ing)?|sequence)\s*:\s*)?(?P<noun>{_STEP_NOUN})\s+"
+    r"(?P<t>\w+)\s+(?:(?:only|must|should|can|may)\s+)*(?:(?:starts?|begins?|comes?|goes|go|happens?|is\s+done|"
+    r"be\s+done)\s+)?(?:only\s+)?(?:after|once)\s+(?P<noun2>[a-z]+)\s+(?P<b>\w+)(?:\s+(?:is|has\s+been)\s+"
+    r"(?:done|finished|complete|completed|over))?\s*(?:[.!]+|$)",
     re.IGNORECASE,
 )
 
@@ -64,13 +87,37 @@ def label_references_dropped(text: str) -> str:
     return _REFERS_BACK.sub(dropped, text)
 
 
+def order_confirmed_dropped(text: str, listed: bool) -> str:
+    """The remarks that confirm the order of the steps (`_KEEP`, `_STEP_AFTER`) dropped where two or more
+    steps are labelled or numbered in turn and no remark frees the whole list (`listed`, or one still in
+    the text); anywhere else (no steps to keep in order, a step said after another than the one before it,
+    or a remark that frees the whole list beside it: "1) ... 2) ... any order. Keep that sequence." says
+    both) they stay, to be refused."""
+    marks = _labels(text)
+    labels = [_turn(m) for m in marks]
+    numbers = [_list_number(m) for m in _LIST_NUMBER.finditer(text)]
+    if not any(len(t) >= 2 and t == list(range(1, len(t) + 1)) for t in (labels, numbers)):
+        return text
+    # a freeing remark beside labelled steps of two placements or more frees each step alone (`steps_read`)
+    ordered_anyway = len(labels) >= 2 and not _one_placement_each(text, marks)
+    if (listed or frees_every_step(free_order(text.lower())[1])) and not ordered_anyway:
+        return text
+
+    def restated(m: re.Match[str]) -> str:
+        turn, back = _place_in_turn(m["t"]), _place_in_turn(m["b"])
+        same = m["noun"].lower() == m["noun2"].lower() and len(labels) >= 2
+        return " " if same and turn is not None and back == turn - 1 and turn <= len(labels) else m[0]
+
+    return _STEP_AFTER.sub(restated, _KEEP.sub(" ", text))
+
+
 def steps_read(text: str, listed: bool) -> str | None:
     """Step labels, and bare list numbers, as "first" / "then" (numbered 1, 2, ... in turn); bare list
     numbers beside a remark that frees the whole list (`listed`: "1) ... 2) ... in any order") only list,
     and are removed, and so are step labels there where each step is one placement ("Step 1 - A on P. Step
     2 - B on Q. The steps may be done in any order."; with two in a step, the remark may free the order
     within each step alone). None: labels or numbers out of turn."""
-    text = label_references_dropped(text)
+    text = order_confirmed_dropped(label_references_dropped(text), listed)
     labels = _labels(text)
     if [_turn(m) for m in labels] != list(range(1, len(labels) + 1)):
         return None
@@ -110,7 +157,7 @@ def _labels(text: str) -> list[re.Match[str]]:
     Priority 2: ...")."""
     labels = list(_LABEL.finditer(text))
     if not labels:
-        labels = [m for m in _NOUN_LABEL.finditer(text) if m["noun"].lower() not in _ALTERNATIVE_NOUNS]
+        labels = [m for m in _NOUN_LABEL.finditer(text) if m["noun"].lower() not in _NOT_STEPS]
         if len(labels) < 2 or len({m["noun"].lower() for m in labels}) != 1:
             return []
     return labels
@@ -146,7 +193,7 @@ def numbered_steps(text: str) -> str:
     ... Part B: ..."), and the numbers of a numbered list of two or more steps read (`list_numbers_read`:
     as "first" / "then", or removed beside a remark that frees the whole list), so that every reader
     orders the steps as the labels and numbers do; the text as it is with no such list."""
-    text = label_references_dropped(text)
+    text = order_confirmed_dropped(label_references_dropped(text), False)
     labels = _labels(text)
     if len(labels) >= 2 and [_turn(m) for m in labels] == list(range(1, len(labels) + 1)):
         text = " ".join(_as_steps(text, labels).split())
