@@ -124,6 +124,8 @@ def test_a_word_before_a_name_that_names_nothing_read_is_unread():
     assert [u.words for u in unknown_modifiers("put heather apple in the bin")] == ["heather"]
     # the hint keeps the first letter: "broken" is no slip of "frozen"
     assert "misspell" not in unknown_modifiers("put the broken alarm clock on the desk")[0].reason
+    # a common word one slip from a descriptive one is judged ("leather" is ten times "heather")
+    assert "may misspell 'clean'" in unknown_modifiers("put a clan rag on the counter")[0].reason
 
 
 @pytest.mark.parametrize(
@@ -136,6 +138,8 @@ def test_a_word_before_a_name_that_names_nothing_read_is_unread():
         "put the other two apples in the fridge",
         "put the apple next to the sink on the counter",  # "next to": a relation ends the phrase
         "put the tomato, heather, in the sink",  # a clause break ends it
+        "move two sets of keys to the wite safe",  # a rare slip of a common descriptive word ("white")
+        "when all the earlier tasks are done, put the apple in the fridge",  # "tasks" names no object
     ],
 )
 def test_descriptive_words_and_table_words_before_a_name_are_read(text):

@@ -72,7 +72,14 @@ from nl2hltl2plan.language.content_words import (
 )
 from nl2hltl2plan.language.grounding import Mention, find_mentions, tokens
 from nl2hltl2plan.language.parse_usage import ParseUsage
-from nl2hltl2plan.language.spelling import english_word, known_word, one_edit, structure_word, vocabulary_near
+from nl2hltl2plan.language.spelling import (
+    english_frequency,
+    english_word,
+    known_word,
+    one_edit,
+    structure_word,
+    vocabulary_near,
+)
 
 _COMMAND_START = COMMAND_WORDS | {"next", "finally", "lastly"}
 _OBJECT_START = OBJECT_START | {"both", "all", "each", "every"}
@@ -199,10 +206,13 @@ def unknown_modifiers(instruction: str, toks: Tokens | None = None) -> list[Unre
     toks = tokens(instruction) if toks is None else toks
     out: list[Unread] = []
     for m in find_mentions(instruction):
+        if m.entry.generic:  # "the earlier tasks": no object's name
+            continue
         before = modifiers_before(instruction, toks, m.start)
         for word in before:
             if _unknown_modifier(word) and word not in {u.words for u in out}:
                 near = [s for s in state_words() if s[0] == word[0] and _edits(word, s) <= 2]
+                near = [s for s in near if not any(n != s and n.startswith(s) for n in near)]  # "sliced"
                 said = f"; may misspell {' or '.join(map(repr, near))}" if near else ""
                 out.append(Unread(word, "object", MODIFIER_REASON + said))
     return out
@@ -227,7 +237,17 @@ def _unknown_modifier(word: str) -> bool:
         return False
     if known_word(word) or categories(word) or word in descriptive_words():
         return False
-    return english_word(word)
+    return english_word(word) and not _slip_of_descriptive(word)
+
+
+SLIP_RATIO = 0.01  # "wite" (60) is a slip of "white" (228,772); "heather" (1,677) is no slip of "leather"
+
+
+def _slip_of_descriptive(word: str) -> bool:
+    """Whether `word` is one slip from a descriptive word that English uses a hundred times as often: a
+    rare word so near a common one is its misspelling ("the wite safe"), and describes as it does."""
+    freq = english_frequency(word)
+    return any(freq < SLIP_RATIO * english_frequency(d) for d in one_edit(word) & descriptive_words())
 
 
 @cache
@@ -239,12 +259,12 @@ def descriptive_words() -> frozenset[str]:
 
 @cache
 def state_words() -> tuple[str, ...]:
-    """The states a reading uses, as said of a thing ("heated", "chilled", "sliced", "rinsed"): the past
-    forms English knows of the verbs of heating, cooling, cleaning and slicing (`content_words.txt`)."""
+    """The states a reading uses, as said of a thing ("heated", "chilled", "sliced", "clean"): the verbs of
+    heating, cooling, cleaning and slicing (`content_words.txt`) and the past forms English knows of them."""
     kinds = ("verb_heat_place", "verb_cool_place", "verb_clean_place", "verb_sliced")
     verbs = sorted(w for k in kinds for w in vocabulary()[k])
-    forms = (f for v in verbs for f in (v + "ed", v + "d", v + v[-1] + "ed", v) if f.endswith(("ed", "en")))
-    return tuple(dict.fromkeys(f for f in forms if english_word(f)))
+    forms = (f for v in verbs for f in (v + "ed", v + "d", v + v[-1] + "ed") if english_word(f))
+    return tuple(dict.fromkeys([*forms, *verbs]))
 
 
 def _edits(a: str, b: str) -> int:
