@@ -194,7 +194,7 @@ def _unknown_thing(word: str) -> bool:
 
 # words that end a walk back from a name without opening its phrase: a relation, a clause's start
 MODIFIER_STOPS = _PREPOSITIONS | _NO_ACTION | COMMAND_WORDS
-MODIFIER_REASON = "names nothing this world's objects are told apart by: no reading uses it"
+MODIFIER_REASON = "no reading uses this word before a name: a thing or a state the system has no word for"
 
 
 def unknown_modifiers(instruction: str, toks: Tokens | None = None) -> list[Unread]:
