@@ -33,7 +33,8 @@ things (colours, sizes, materials, shapes, states: `descriptive_words.txt`, buil
 annotations by scripts/build_descriptive_words.py) names a thing or a state no reading uses ("the heather
 apple", "the garden apple"): it is unread, named, with the state word a reading could use that it may
 misspell ("heather": 'heated'). Not judged: words English does not know (the spelling rule's business),
-words after a relation or a clause break ("next to the sink"), words in -ly.
+words after a relation or a clause break ("next to the sink"), words in -ly and -ing ("the matching
+plate"), and a thing's own ("its designated plate": which of its things, not what it is).
 
 Tools (`unused_tools`): "use the left arm", "using the sponge": what a task is to be done with. Only the
 tools a task takes or its kind implies are read (the knife of a slice, the lamp of an examination); any
@@ -152,6 +153,7 @@ _NOT_A_THING = frozenset(
 )
 # the words a noun phrase opens after: what is between one of them and a name describes the thing
 MODIFIER_OPENS = _THING_DETERMINERS | _TAKES_A_THING | DETERMINERS | {"any", "each", "every", "all"}
+MODIFIER_OPENS |= {"his", "her"}
 _THING_ENDS = LOCATIVE | _COMMAND_START | frozenset("to into onto or with before after until once".split())
 THING_REASON = "no object of this world is called so"
 
@@ -226,14 +228,17 @@ def modifiers_before(instruction: str, toks: Tokens, start: int) -> list[str]:
         word = toks[j][0]
         if _CLAUSE_BREAK.search(instruction[toks[j][2] : toks[j + 1][1]]) or word in MODIFIER_STOPS:
             return []
-        if word in MODIFIER_OPENS:
-            return words
+        if word in MODIFIER_OPENS:  # "its designated plate", "their matching cups": the thing's own, whose
+            return [] if word in _POSSESSIVE else words  # words say which of its things, not what it is
         words.append(word)
     return []
 
 
+_POSSESSIVE = frozenset({"its", "their", "his", "her"})
+
+
 def _unknown_modifier(word: str) -> bool:
-    if len(word) < 3 or not word.isalpha() or word.endswith("ly") or word in _NOT_A_THING:
+    if len(word) < 3 or not word.isalpha() or word.endswith(("ly", "ing")) or word in _NOT_A_THING:
         return False
     if known_word(word) or categories(word) or word in descriptive_words():
         return False
