@@ -142,7 +142,7 @@ def test_a_word_before_a_name_that_names_nothing_read_is_unread():
         "move two sets of keys to the wite safe",  # a rare slip of a common descriptive word ("white")
         "when all the earlier tasks are done, put the apple in the fridge",  # "tasks" names no object
         "put each fruit on its designated plate",  # a thing's own: which of its things
-        "put the apple on the matching plate",  # a participle in -ing describes
+        "put each fruit on its matching plate",
     ],
 )
 def test_descriptive_words_and_table_words_before_a_name_are_read(text):

@@ -33,8 +33,8 @@ things (colours, sizes, materials, shapes, states: `descriptive_words.txt`, buil
 annotations by scripts/build_descriptive_words.py) names a thing or a state no reading uses ("the heather
 apple", "the garden apple"): it is unread, named, with the state word a reading could use that it may
 misspell ("heather": 'heated'). Not judged: words English does not know (the spelling rule's business),
-words after a relation or a clause break ("next to the sink"), words in -ly and -ing ("the matching
-plate"), and a thing's own ("its designated plate": which of its things, not what it is).
+words after a relation or a clause break ("next to the sink"), words in -ly, and a thing's own ("its
+matching plate": which of its things, not what it is; "the hiking watch" is judged).
 
 Tools (`unused_tools`): "use the left arm", "using the sponge": what a task is to be done with. Only the
 tools a task takes or its kind implies are read (the knife of a slice, the lamp of an examination); any
@@ -238,7 +238,7 @@ _POSSESSIVE = frozenset({"its", "their", "his", "her"})
 
 
 def _unknown_modifier(word: str) -> bool:
-    if len(word) < 3 or not word.isalpha() or word.endswith(("ly", "ing")) or word in _NOT_A_THING:
+    if len(word) < 3 or not word.isalpha() or word.endswith("ly") or word in _NOT_A_THING:
         return False
     if known_word(word) or categories(word) or word in descriptive_words():
         return False
