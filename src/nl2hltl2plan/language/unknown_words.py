@@ -32,9 +32,12 @@ a word English knows that no word table knows and that is not among the words pe
 things (colours, sizes, materials, shapes, states: `descriptive_words.txt`, built from ALFRED's train
 annotations by scripts/build_descriptive_words.py) names a thing or a state no reading uses ("the heather
 apple", "the garden apple"): it is unread, named, with the state word a reading could use that it may
-misspell ("heather": 'heated'). Not judged: words English does not know (the spelling rule's business),
-words after a relation or a clause break ("next to the sink"), words in -ly, and a thing's own ("its
-matching plate": which of its things, not what it is; "the hiking watch" is judged).
+misspell ("heather": 'heated'). An adjective English knows (lemminflect's lexicon) that is no verb's
+participle describes the thing as a colour does and is read past ("the tiny / ceramic / rotten mug"),
+unless it is one slip from such a state word; a participle ("the broken clock") is a state no reading
+uses. Not judged: words English does not know (the spelling rule's business), words after a relation or a
+clause break ("next to the sink"), words in -ly, and a thing's own ("its matching plate": which of its
+things, not what it is; "the hiking watch" is judged).
 
 Tools (`unused_tools`): "use the left arm", "using the sponge": what a task is to be done with. Only the
 tools a task takes or its kind implies are read (the knife of a slice, the lamp of an examination); any
@@ -213,8 +216,7 @@ def unknown_modifiers(instruction: str, toks: Tokens | None = None) -> list[Unre
         before = modifiers_before(instruction, toks, m.start)
         for word in before:
             if _unknown_modifier(word) and word not in {u.words for u in out}:
-                near = [s for s in state_words() if s[0] == word[0] and _edits(word, s) <= 2]
-                near = [s for s in near if not any(n != s and n.startswith(s) for n in near)]  # "sliced"
+                near = _near_state(word)
                 said = f"; may misspell {' or '.join(map(repr, near))}" if near else ""
                 out.append(Unread(word, "object", MODIFIER_REASON + said))
     return out
@@ -242,7 +244,27 @@ def _unknown_modifier(word: str) -> bool:
         return False
     if known_word(word) or categories(word) or word in descriptive_words():
         return False
+    if adjective(word) and not any(_edits(word, s) <= 1 for s in _near_state(word)):
+        return False  # "the tiny mug" describes the mug; "the heather apple" names a plant, or 'heated'
     return english_word(word) and not _slip_of_descriptive(word)
+
+
+def _near_state(word: str) -> list[str]:
+    """The state words a reading could use that `word` is one or two slips from, its first letter kept."""
+    near = [s for s in state_words() if s[0] == word[0] and _edits(word, s) <= 2]
+    return [s for s in near if not any(n != s and n.startswith(s) for n in near)]  # "sliced", not "slice"
+
+
+@cache
+def adjective(word: str) -> bool:
+    """Whether English uses `word` as an adjective and not as a verb's form (lemminflect's lexicon): "the
+    tiny / ceramic / favorite mug" describes the thing the name names, as a colour does; a noun ("the
+    heather apple", "the garden hose") names another thing, and a participle ("the broken clock", "the
+    chipped mug") a state the thing was brought into, which no reading uses."""
+    from lemminflect import getAllLemmas  # type: ignore[import-untyped]  # here: its lexicon loads in 0.3 s
+
+    said = getAllLemmas(word)
+    return "ADJ" in said and all(lemma == word for lemma in said.get("VERB", ()))  # "spare", not "broken"
 
 
 SLIP_RATIO = 0.01  # "wite" (60) is a slip of "white" (228,772); "heather" (1,677) is no slip of "leather"
