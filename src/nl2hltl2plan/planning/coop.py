@@ -262,7 +262,8 @@ class _Search:
         key = (cells, arm)
         found = self._blocked.get(key)
         if found is None:
-            found = _bounded(self._blocked, key, lambda: frozenset(c for i, c in enumerate(cells) if i != arm))
+            others = frozenset(c for i, c in enumerate(cells) if i != arm)
+            found = _bounded(self._blocked, key, lambda: others)
         return found
 
     def macros(self, snap: Snap) -> list[Macro]:
