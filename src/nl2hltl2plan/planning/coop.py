@@ -130,6 +130,7 @@ class _Search:
         # pure functions of their arguments, cached on this search object (and dropped with it)
         self._paths: dict[tuple[int, Cell, Cell, frozenset[Cell]], tuple[Cell, ...] | None] = {}
         self._tours: dict[tuple[Cell, tuple[frozenset[Cell], ...]], int] = {}
+        self._blocked: dict[tuple[tuple[Cell, ...], int], frozenset[Cell]] = {}
 
     def path(self, arm: int, start: Cell, goal: Cell, blocked: frozenset[Cell]) -> tuple[Cell, ...] | None:
         """Shortest path inside the arm's reach avoiding `blocked` (cells entered, start excluded)."""
@@ -255,12 +256,22 @@ class _Search:
             best = min(best, min(frontier.values()))
         return best
 
+    def _blocked_by(self, cells: tuple[Cell, ...], arm: int) -> frozenset[Cell]:
+        """The cells the other arms stand on, one frozenset per (cells, arm): `path`'s cache keys then
+        hold the same object, and a hit compares it by identity instead of element by element."""
+        key = (cells, arm)
+        found = self._blocked.get(key)
+        if found is None:
+            others = frozenset(c for i, c in enumerate(cells) if i != arm)
+            found = _bounded(self._blocked, key, lambda: others)
+        return found
+
     def macros(self, snap: Snap) -> list[Macro]:
         cells, hands, blocks = snap
         out: list[Macro] = []
         for arm in range(len(ARMS)):
             here = cells[arm]
-            blocked = frozenset(c for i, c in enumerate(cells) if i != arm)
+            blocked = self._blocked_by(cells, arm)
             if hands[arm] < 0:
                 for b, where in enumerate(blocks):
                     if where is not None and where in self.lay.reach[arm] and where not in blocked:

@@ -33,6 +33,7 @@ from collections import Counter
 from dataclasses import dataclass, field
 from functools import cache
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -71,6 +72,12 @@ class AlfredData:
     by_floor_plan: dict[str, list[str]] = field(default_factory=dict)
     pose_types: frozenset[str] = frozenset()
     put_pairs: frozenset[tuple[str, str]] = frozenset()  # (object type, receptacle type) experts put
+    # each record's fields the learned parser's examples come from (its training data), taken in the same
+    # pass: the file is parsed once per process, not again by `learned.data.load_examples` (1 s CPU)
+    example_fields: tuple[dict[str, Any], ...] = ()
+
+
+_EXAMPLE_FIELDS = ("trial", "split", "floor_plan", "task_type", "pddl_params", "annotations")
 
 
 @cache
@@ -81,6 +88,7 @@ def alfred_data() -> AlfredData:
     by_fp: dict[str, list[str]] = {}
     names: set[str] = set()  # 1,875 names in 267,477 poses: each name's type is taken once, at the end
     puts: set[tuple[str, str]] = set()
+    fields: list[dict[str, Any]] = []
     try:
         for _n, row in iter_gzip_jsonl(path, "ALFRED trials file"):
             poses = [
@@ -103,12 +111,13 @@ def alfred_data() -> AlfredData:
             trials[trial.trial] = trial
             by_fp.setdefault(trial.floor_plan, []).append(trial.trial)
             names.update(n for n, *_ in poses)
+            fields.append({k: row[k] for k in _EXAMPLE_FIELDS if k in row})
         types = frozenset(map(_type_of_name, names))
     except (KeyError, ValueError, TypeError, AttributeError, IndexError) as exc:
         raise DataError(f"ALFRED trials file {path} is damaged: a record lacks or mistypes {exc}") from None
     if not trials:
         raise DataError(f"ALFRED trials file {path} holds no trial (empty or damaged)")
-    return AlfredData(trials, by_fp, types, frozenset(puts))
+    return AlfredData(trials, by_fp, types, frozenset(puts), tuple(fields))
 
 
 @cache
