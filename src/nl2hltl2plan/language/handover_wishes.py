@@ -106,6 +106,12 @@ _RULES: tuple[tuple[str, str], ...] = (
         r"at the end , \1 should be \2",
     ),
     (r"\b(be|are|is|stay|remain)\s+(?:sitting|resting|lying|standing|sat)\s+(?=(?:on|in|at|upon)\b)", r"\1 "),
+    # a posture as the verb of the end state: "should sit on", "must end up in"
+    (r"\b(should|must|will)\s+(?:sit|rest|lie|stand|end\s+up)\s+(?=(?:on|in|at|upon)\b)", r"\1 be "),
+    # a region "used" by then: "no other region should (ever) have been used" is "should be used"; "ever"
+    # in a negated clause adds nothing ("no other region should ever be used")
+    (r"(\b(?:no|nothing|not|never)\b[^,;.]*?\b(?:should|must|can|may|will))\s+ever\b", r"\1"),
+    (r"\b(should|must|can|may|will)\s+have\s+been\s+(?=(?:used|occupied)\b)", r"\1 be "),
     (r"\b(should|must|will)\s+have\s+been\s+(?=" + _PARTICIPLE + r"\b)", r"\1 be "),
     (
         r"\b(should|must|will)\s+have\s+(?:stayed|remained|been\s+kept)\s+(?=(?:empty|clear|free|unoccupied)\b)",
