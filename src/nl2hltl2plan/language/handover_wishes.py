@@ -15,7 +15,8 @@ it or refuses it by name:
 - a goal stated as the final state: "by the end / in the end / when (by the time) you're finished," is
   "at the end," (a last step after other commands, nothing on its own); "the end result should be X on
   P", "the goal is X placed on P" and "what I want to see at the end: X on P" are "at the end, X should
-  be on P"; "should be sitting on" is "should be on"; "should have stayed empty" is "should stay empty";
+  be on P"; "should be sitting on" and "should sit (rest, end up) on" are "should be on"; "no other region
+  should (ever) have been used" is "... should be used"; "should have stayed empty" is "should stay empty";
   "should have swapped places" is "should swap places"; "on the way there" in a prohibition is "at any
   point"; "with nothing put on ... (until then)" is "nothing put on ... (meanwhile)";
 - a block's next place after "then" or "first and": "(and) then finish on / end up on / go on to region
