@@ -22,7 +22,8 @@ from nl2hltl2plan.language.handover_discourse import empty, first_person_as_team
 
 # dev32 and dev33 sentences refused on purpose: a name called alone ("Siri" may be any word), a problem
 # stated with a negation ("blocks not on targets"), an order as a participle after a block's heading, a
-# label that names an order ("Last round:"), "by the end" before other goals (the last step said first?)
+# label that names an order ("Last round:"); "by the end" before other goals is read as the goal it states
+# where each other goal is at any time (h148: `handover_reading._opening_end_state`)
 STILL_REFUSED = {
     "Bug #301. Reproduce: move all three blocks to the opposite side. Expected: the red block is placed "
     "before the blue block. Actual: not yet run.",
@@ -31,8 +32,6 @@ STILL_REFUSED = {
     "How to play: transfer the three blocks to the opposite regions. Rule: nobody touches the blue block "
     "until the red block has been touched. Last round: after all of these, put the yellow block back on "
     "region G.",
-    "By the end, the red and blue blocks will have swapped positions, red placed first, and the yellow block "
-    "will have been moved to the opposite side at any time.",
     "Siri, swap the red and blue blocks, red placed first, and move the yellow block to the opposite side at "
     "any time.",
     "Issue: blocks not on targets. Fix: put the three blocks on regions H, I and J, one block per region.",

@@ -194,6 +194,7 @@ def _read_forms(instruction: str, world: World) -> LanguageResult:
     for x, y in touches:
         _first_goal(goals, x).touch_guard.append(y)
     _refuse_cyclic(orders)
+    _opening_end_state(clauses, instruction)
     _refuse_misplaced_markers(clauses)
     root = build_tree(clauses)
     if joint := scattered_joint(clauses, scene.blocks):
@@ -294,6 +295,22 @@ def _guard(
             regions = [r for r in scene.layout.regions if r not in g.regions]
         for r in regions:
             g.drop_guard.update({f"drop({r})"} if every else {f"put({b},{r})" for b in blocks})
+
+
+# the words that put a goal at the end ("at the end, X should be on P"; "by the end," reads as "at the end,")
+_AT_THE_END = re.compile(r"\b(?:(?:at|in|by)\s+the\s+(?:very\s+)?end|finally|lastly|last)\b", re.IGNORECASE)
+
+
+def _opening_end_state(clauses: list[Clause], instruction: str) -> None:
+    """'At the end, the red and blue blocks should have swapped places, and at any time the yellow block
+    goes to the opposite side': an end state said once, opening the message, where every other goal is at
+    any time or said later still ('after all that, ...'), is the goal it states, not a last step; a last
+    step said before goals with no time of their own stays refused (`_refuse_misplaced_markers`)."""
+    first, rest = clauses[0], clauses[1:]
+    if first.marker != "after_all" or not rest or len(_AT_THE_END.findall(instruction)) != 1:
+        return
+    if all(c.anytime or c.marker == "after_all" for c in rest):
+        first.marker = ""
 
 
 def _refuse_misplaced_markers(clauses: list[Clause]) -> None:

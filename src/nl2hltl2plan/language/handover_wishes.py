@@ -15,7 +15,8 @@ it or refuses it by name:
 - a goal stated as the final state: "by the end / in the end / when (by the time) you're finished," is
   "at the end," (a last step after other commands, nothing on its own); "the end result should be X on
   P", "the goal is X placed on P" and "what I want to see at the end: X on P" are "at the end, X should
-  be on P"; "should be sitting on" is "should be on"; "should have stayed empty" is "should stay empty";
+  be on P"; "should be sitting on" and "should sit (rest, end up) on" are "should be on"; "no other region
+  should (ever) have been used" is "... should be used"; "should have stayed empty" is "should stay empty";
   "should have swapped places" is "should swap places"; "on the way there" in a prohibition is "at any
   point"; "with nothing put on ... (until then)" is "nothing put on ... (meanwhile)";
 - a block's next place after "then" or "first and": "(and) then finish on / end up on / go on to region
@@ -106,6 +107,12 @@ _RULES: tuple[tuple[str, str], ...] = (
         r"at the end , \1 should be \2",
     ),
     (r"\b(be|are|is|stay|remain)\s+(?:sitting|resting|lying|standing|sat)\s+(?=(?:on|in|at|upon)\b)", r"\1 "),
+    # a posture as the verb of the end state: "should sit on", "must end up in"
+    (r"\b(should|must|will)\s+(?:sit|rest|lie|stand|end\s+up)\s+(?=(?:on|in|at|upon)\b)", r"\1 be "),
+    # a region "used" by then: "no other region should (ever) have been used" is "should be used"; "ever"
+    # in a negated clause adds nothing ("no other region should ever be used")
+    (r"(\b(?:no|nothing|not|never)\b[^,;.]*?\b(?:should|must|can|may|will))\s+ever\b", r"\1"),
+    (r"\b(should|must|can|may|will)\s+have\s+been\s+(?=(?:used|occupied)\b)", r"\1 be "),
     (r"\b(should|must|will)\s+have\s+been\s+(?=" + _PARTICIPLE + r"\b)", r"\1 be "),
     (
         r"\b(should|must|will)\s+have\s+(?:stayed|remained|been\s+kept)\s+(?=(?:empty|clear|free|unoccupied)\b)",

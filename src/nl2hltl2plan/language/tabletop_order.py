@@ -228,6 +228,23 @@ _BEGIN_WITH = re.compile(r"\b(?:begin|start)(?:\s+off)?\s+with\b", re.IGNORECASE
 _END_WITH = re.compile(r"\b(?:and\s+)?(?:end|finish)(?:\s+off)?\s+with\b", re.IGNORECASE)
 
 
+# an end-state opener with no comma before the wish it opens ("By the end I want X on Y", "In the end we'd
+# like ..."): the comma the reader takes it with ("by the end, I want ..."), so the wish reads as the goal
+_END_OPENER = re.compile(
+    r"\b((?:by|at|in)\s+the\s+end)\s+(?=(?:i|we)(?:'d|\s+would)?\s+(?:want|like|need|wish|expect|hope)\b)",
+    re.IGNORECASE,
+)
+
+
+def end_opener_read(text: str) -> str:
+    """`text` with a comma after an end-state opener before its wish.
+
+    >>> end_opener_read("By the end I want A on B.")
+    'By the end, I want A on B.'
+    """
+    return _END_OPENER.sub(r"\1, ", text)
+
+
 def turn_phrases_read(text: str) -> str:
     """`text` with each clause that looks back on the step before as "then", and an "end / finish with"
     after a "begin / start with" as "then".

@@ -46,6 +46,7 @@ from nl2hltl2plan.language.tabletop_order import (
     FIRST_CLOSING,
     PLACE_IN_THE_WHOLE,
     THEN,
+    end_opener_read,
     heading_colon_put_back,
     ordinal_things_read,
     reference_fronted,
@@ -187,7 +188,7 @@ class TabletopReader:
         mentions = mention_pattern(kinds, re.I)
         text = role_dropped(text, mentions)  # "As a tidy person, I want ..."
         text = robot_addressed(ordinal_things_read(text, mentions))  # "The first thing is ...", "it puts"
-        text = turn_phrases_read(text)  # "Having done that,", "Begin with A and end with B"
+        text = end_opener_read(turn_phrases_read(text))  # "Having done that,", "By the end I want"
         return order_words_spelt(names_respelt(text, kinds))
 
     def prepared(self, instruction: str) -> str:

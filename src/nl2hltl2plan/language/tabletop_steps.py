@@ -75,9 +75,44 @@ def _place_in_turn(word: str) -> int | None:
     return int(word) if word.isdigit() else NUMBER_WORDS.get(word, _LETTERS.get(word))
 
 
+# a spec sheet's identifier ("Goal 2 (after goal 1):"), with the reference back it may carry
+_IDENTIFIER = re.compile(
+    r"(?:^|(?<=[.;!?]))\s*(?P<noun>goal|requirement)\s+(?P<t>\w+)\s*(?P<ref>[^:.;!?]*?)\s*:", re.IGNORECASE
+)
+_BACK = (
+    r"(?:,|\()\s*(?:but\s+)?(?:only\s+)?(?:after|once|following)\s+{noun}\s+(?P<b>\w+)"
+    r"(?:\s+is\s+(?:done|finished|complete))?\s*\)?"
+)
+
+
+def identifiers_chained_read(text: str) -> str:
+    """A spec sheet's identifiers ("Goal 1: ... Goal 2: ...") list and never order; where each one after the
+    first names the one just before it ("Goal 2 (after goal 1):", "Requirement 3, only after requirement
+    2:") and the first names none, the words say the order: the labels are steps in turn ("Step 2:").
+
+    >>> identifiers_chained_read("Goal 1: A on P. Goal 2 (after goal 1): B on Q.")
+    'Step 1: A on P. Step 2: B on Q.'
+    """
+    marks = list(_IDENTIFIER.finditer(text))
+    if len(marks) < 2 or len({m["noun"].lower() for m in marks}) != 1:
+        return text
+    for turn, m in enumerate(marks, 1):
+        back = re.fullmatch(_BACK.format(noun=m["noun"]), m["ref"], re.IGNORECASE) if m["ref"] else None
+        said_back = back is not None and _place_in_turn(back["b"]) == turn - 1
+        if _place_in_turn(m["t"]) != turn or (turn > 1 and not said_back) or (turn == 1 and m["ref"]):
+            return text
+    out, pos = "", 0
+    for turn, m in enumerate(marks, 1):
+        out += text[pos : m.start("noun")] + f"Step {turn}:"
+        pos = m.end()
+    return out + text[pos:]
+
+
 def label_references_dropped(text: str) -> str:
     """ "Round B, only after round A:" -> "Round B:" where the label it names is the one just before it in
-    turn; any other such reference is left (and refused where it is read)."""
+    turn; any other such reference is left (and refused where it is read); a spec sheet's identifiers each
+    naming the one before as steps (`identifiers_chained_read`)."""
+    text = identifiers_chained_read(text)
 
     def dropped(m: re.Match[str]) -> str:
         turn, back = _place_in_turn(m["t"]), _place_in_turn(m["b"])
