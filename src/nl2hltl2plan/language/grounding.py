@@ -10,7 +10,7 @@ with a `WorldError` that names the missing type ("no Statue in FloorPlan17").
 from __future__ import annotations
 
 import re
-from collections.abc import Callable, Collection, Iterable, Mapping
+from collections.abc import Callable, Collection, Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from functools import lru_cache
 from importlib import resources
@@ -414,13 +414,19 @@ class Grounder:
         return got
 
 
+def own_type(entry: Entry, types: Sequence[str]) -> str | None:
+    """The type of `types` whose own name the entry's phrase is ("towel" of a Towel, "cup" of a Cup), else
+    None ("mug" of a Cup)."""
+    return next((t for t in types if entry.phrase in (camel_words(t), t.lower())), None)
+
+
 def exact_name_conflict(entry: Entry, present: list[str], scene: str = "the scene") -> str | None:
     """Why a word read as its entry's first type is refused when it is exactly the name of another type
     of the scene (`present`, in the lexicon's order), else None (check 1 asks it of each reading,
     `referents.exact_names`; words such as "table" that accept every type are not asked). ALFRED's annotators
     call a HandTowel "towel" (126 annotations of non-excluded training tasks on a HandTowel; no such task
     is on a Towel), yet every ALFRED bathroom has a Towel too: neither reading is safe (docs/language.md)."""
-    named = next((t for t in present if entry.phrase in (camel_words(t), t.lower())), None)
+    named = own_type(entry, present)
     if entry.all_ or named is None or present.index(named) == 0:
         return None
     first = present[0]
@@ -439,7 +445,7 @@ def role_swap_conflict(
     too, the text names the Cup, which cannot do it, and the Mug would be a guess. Only a word whose own
     type is the lexicon's first reading of it is asked ("cup", "mug", "cloth", "soap bar"). `places`: where
     a task puts a thing of a type, named in the message."""
-    named = next((t for t in present if entry.phrase in (camel_words(t), t.lower())), None)
+    named = own_type(entry, present)
     other = next((t for t in present if t != named and t in things), None)
     if entry.all_ or named is None or other is None or named != entry.types[0]:
         return None  # "towel", the HandTowel first, is `exact_name_conflict`'s (a towel washed is a Cloth)

@@ -41,6 +41,7 @@ from nl2hltl2plan.language.grounding import (
     exact_name_conflict,
     find_mentions,
     lookup,
+    own_type,
     phrase_lines,
     role_swap_conflict,
     tokens,
@@ -134,7 +135,7 @@ def stand_ins(
     mentions = find_mentions(instruction)
     for m in mentions:
         types = m.entry.types
-        named = next((t for t in types if m.entry.phrase in (camel_words(t), t.lower())), None)
+        named = own_type(m.entry, types)
         if named is None or m.entry.all_:
             continue
         own, meant = _scope(m, tasks, mentions)
