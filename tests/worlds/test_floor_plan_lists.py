@@ -5,6 +5,8 @@ the reason; the trial record the learned parser reads is typed."""
 
 from __future__ import annotations
 
+import pytest
+
 from nl2hltl2plan.worlds.floor_plans import (
     TrialRecord,
     affordance_table,
@@ -35,7 +37,7 @@ def test_the_first_admitted_trial_holds_every_object_other_admitted_trials_place
         if lack:
             lacking[fp] = lack
     assert lacking == {"FloorPlan319": {"Footstool"}}
-    why = "no ALFRED trial of FloorPlan319 places one (its object list names it, no trial's object_poses do)"
+    why = "no ALFRED trial of FloorPlan319 places one in its object_poses"
     assert load_floor_plan("FloorPlan319").unplaced["Footstool"] == why
 
 
@@ -71,3 +73,22 @@ def test_the_trial_record_is_typed_and_covers_every_trial(data):
     train = by_split["train"]
     assert train.task_type and train.pddl_params is not None and "object_target" in train.pddl_params
     assert train.annotations and isinstance(train.annotations[0]["task_desc"], str)
+
+
+def test_the_language_error_says_why_the_world_lacks_a_listed_object(data):
+    """Issue 28 item 4: the message names the object missing from the world and what the data lacks."""
+    from nl2hltl2plan.errors import WorldError
+    from nl2hltl2plan.language.translate import translate
+    from nl2hltl2plan.worlds import load_world
+
+    cases = [
+        ("FloorPlan201", "look at the remote control under the desk lamp", "DeskLamp",
+         "only AI2-THOR 5's scene_info lists it, not ALFRED's FloorPlan201-objects.json"),
+        ("FloorPlan9", "put a pan on the stove burner", "StoveBurner",
+         "no object id, openable pose or GotoLocation for it in FloorPlan9's trajectories"),
+    ]  # fmt: skip
+    for fp, text, typ, why in cases:
+        with pytest.raises(WorldError) as err:
+            translate(text, load_world(fp), "offline", build=False, actions="none")
+        listed = f"its object list names {typ}, but the world built from it has none"
+        assert str(err.value) == f"no {typ} in {fp} ({listed}: {why})"

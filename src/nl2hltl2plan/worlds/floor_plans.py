@@ -393,7 +393,20 @@ def _why_unplaced(fp: str, typ: str) -> str:
     for tid in data.by_floor_plan.get(fp, []):
         if tid not in banned and any(_type_of_name(n) == typ for n, *_ in data.trials[tid].poses):
             return "not in the trials' object_poses"
-    return f"no ALFRED trial of {fp} places one (its object list names it, no trial's object_poses do)"
+    return f"no ALFRED trial of {fp} places one in its object_poses"
+
+
+def unbuilt_reason(fp: str, typ: str) -> str | None:
+    """Why a world of the floor plan has no `typ` though the scene's lists name it (None: they do not,
+    or a world of it places one); WorldError for a name that is no floor plan."""
+    if typ not in listed_types(fp):
+        return None
+    if typ not in scene_types(fp):
+        return f"only AI2-THOR 5's scene_info lists it, not ALFRED's {fp}-objects.json"
+    static = _statics(fp)[1].get(typ)
+    if static is not None or typ not in affordance_table().pickupable:
+        return static
+    return _why_unplaced(fp, typ)
 
 
 def instance_counts(fp: str, trials: list[str] | None = None) -> Counter[str]:
