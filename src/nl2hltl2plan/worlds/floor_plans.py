@@ -397,8 +397,8 @@ def _why_unplaced(fp: str, typ: str) -> str:
 
 
 def unbuilt_reason(fp: str, typ: str) -> str | None:
-    """Why a world of the floor plan has no `typ` though the scene's lists name it (None: they do not,
-    or a world of it places one); WorldError for a name that is no floor plan."""
+    """Why a world of the floor plan that lacks `typ` has none though the scene's lists name it (None:
+    they do not, or the data places one); WorldError for a name that is no floor plan."""
     if typ not in listed_types(fp):
         return None
     if typ not in scene_types(fp):
