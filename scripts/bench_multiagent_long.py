@@ -4,15 +4,19 @@ truth) become a checked plan through the whole pipeline.
     python scripts/bench_multiagent_long.py --backend offline --robots 2 --timeout 60 [--limit 10]
 
 Each instruction is planned in its floor plan (movable objects from the floor plan's first ALFRED
-trial) for a team started on the instance's first `init_pos` draw. "checked plan" = the planner
-returned a plan that was executed in the simulator and satisfied the hierarchical spec; without a
-ground truth nobody can say whether the spec means what the sentence meant.
+trial outside the training exclusions) for a team started on the instance's first `init_pos` draw.
+"checked plan" = the planner returned a plan that was executed in the simulator and satisfied the
+hierarchical spec; without a ground truth nobody can say whether the spec means what the sentence meant.
+A language error that names an object (`no Statue in FloorPlan17`) is split by the world's side: the
+floor plan's object lists (objects.json, scene_info) name no such type ("scene lacks"), or they do and
+the data gives no position for it ("listed, unbuilt": the world's `unplaced` says why).
 """
 
 from __future__ import annotations
 
 import argparse
 import json
+import re
 import statistics
 import time
 from collections import Counter
@@ -22,6 +26,9 @@ from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.language.translate import top_candidates
 from nl2hltl2plan.pipeline import PipelineOptions, run
 from nl2hltl2plan.worlds import load_world
+from nl2hltl2plan.worlds.floor_plans import listed_types
+
+_NO_OBJECT = re.compile(r"\bno (\w+) in (FloorPlan\d+)")
 
 
 def instructions(n_base: int) -> list[tuple[str, str, list[list[float]]]]:
@@ -32,6 +39,15 @@ def instructions(n_base: int) -> list[tuple[str, str, list[list[float]]]]:
         key = next(k for k in row if k.startswith("FloorPlan"))
         out.append((key, row[key], row["init_pos"][0]))
     return out
+
+
+def missing_object(reason: str) -> str:
+    """"scene lacks" / "listed, unbuilt" for a language error naming an object the world has none of,
+    else "" (the first such object of the reason decides)."""
+    m = _NO_OBJECT.search(reason)
+    if m is None:
+        return ""
+    return "listed, unbuilt" if m.group(1) in listed_types(m.group(2)) else "scene lacks"
 
 
 def main() -> None:
@@ -57,17 +73,18 @@ def main() -> None:
             except Nl2Hltl2PlanError as exc:
                 status, reason = "language", str(exc)
             records.append({"id": key, "n_base": n, "status": status, "reason": reason,
+                            "missing": missing_object(reason) if status == "language" else "",
                             "seconds": round(time.perf_counter() - t0, 2)})
             print(f"{key:<45} {status:<10} {records[-1]['seconds']:>6.2f}s {reason[:80]}", flush=True)
-    print("\n| base tasks | instructions | checked plan | language error | infeasible | timeout |")
-    print("| --- | --- | --- | --- | --- | --- |")
-    for n in range(5, 10):
-        grp = [r for r in records if r["n_base"] == n]
-        c = Counter(r["status"] for r in grp)
-        print(f"| {n} | {len(grp)} | {c['solved']} | {c['language']} | {c['infeasible']} | {c['timeout']} |")
-    c = Counter(r["status"] for r in records)
+    print("\n| base tasks | instructions | checked plan | language error | of which: scene lacks the object "
+          "| of which: listed, unbuilt | infeasible | timeout |")
+    print("| --- | --- | --- | --- | --- | --- | --- | --- |")
+    for label in [*range(5, 10), "all"]:
+        grp = [r for r in records if label == "all" or r["n_base"] == label]
+        c = Counter(r["status"] for r in grp) + Counter(r["missing"] for r in grp)
+        print(f"| {label} | {len(grp)} | {c['solved']} | {c['language']} | {c['scene lacks']} "
+              f"| {c['listed, unbuilt']} | {c['infeasible']} | {c['timeout']} |")
     solved = [r["seconds"] for r in records if r["status"] == "solved"]
-    print(f"| all | {len(records)} | {c['solved']} | {c['language']} | {c['infeasible']} | {c['timeout']} |")
     if solved:
         med, top = statistics.median(solved), max(solved)
         print(f"\nseconds per solved instruction: median {med:.2f}, max {top:.2f}")

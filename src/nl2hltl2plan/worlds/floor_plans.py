@@ -20,9 +20,16 @@ Scene construction for a floor plan plus a set of ALFRED trials:
 - the initial parent of a movable object: the nearest receptacle that accepts its type within
   0.45 m (3-D distance between positions; static receptacles, then movable ones within 0.15 m);
   None when nothing is that close.
-- object types the scene lists (`FloorPlanN-objects.json`) but we cannot place: `World.unplaced`.
+- object types the scene lists (`FloorPlanN-objects.json`) but we cannot place: `World.unplaced`, each
+  with the reason (a movable one: no admitted ALFRED trial of the floor plan places it; FloorPlan319's
+  Footstool is the only one, every other listed movable type is in every trial).
+  Types only AI2-THOR 5's `alfred_multiagent/scene_info` lists (DeskLamp and Shelf in FloorPlan201;
+  the language stage grounds against both lists) that the world lacks are a note, not `unplaced`:
+  ALFRED's version of the scene may not hold them, and no ALFRED trajectory places them.
 Without trials, `load_floor_plan` uses the floor plan's first trial (in trials.jsonl.gz order) that
-has object poses.
+has object poses and is not in `benchmark/training_exclusions.txt`. Other trials add nothing there: over
+the 120 floor plans, every ALFRED object name that any admitted trial of a floor plan places is in that
+first trial already (tests/worlds/test_floor_plan_lists.py).
 """
 
 from __future__ import annotations
@@ -37,9 +44,9 @@ from typing import Any
 
 import numpy as np
 
-from nl2hltl2plan.config import data_path
+from nl2hltl2plan.config import data_dir, data_path
 from nl2hltl2plan.errors import DataError, WorldError
-from nl2hltl2plan.io import iter_gzip_jsonl, load_npy, read_json
+from nl2hltl2plan.io import iter_gzip_jsonl, load_npy, read_json, read_text
 from nl2hltl2plan.worlds.affordances import AffordanceTable, alfred_affordances
 from nl2hltl2plan.worlds.tasks import GTInstance
 from nl2hltl2plan.worlds.world import ALFRED_PICK_TWO, World, WorldObject, add_slices
@@ -66,6 +73,39 @@ class Trial:
     toggles: list[tuple[str, bool]]  # (object type, isOn)
 
 
+@dataclass(frozen=True)
+class TrialRecord:
+    """The fields of one ALFRED trial that the learned parser's examples come from (its training data).
+
+    `task_type` and `pddl_params` are None in the test splits (no plan); `pddl_params` keeps ALFRED's
+    keys (object_target, parent_target, mrecep_target, toggle_target, object_sliced)."""
+
+    trial: str
+    split: str
+    floor_plan: str
+    task_type: str | None
+    pddl_params: dict[str, Any] | None
+    annotations: tuple[dict[str, Any], ...]
+
+    @classmethod
+    def of_row(cls, row: dict[str, Any]) -> TrialRecord:
+        """A trials.jsonl.gz record; KeyError / TypeError for a damaged one (the reader reports it)."""
+        params, anns = row.get("pddl_params"), row["annotations"]
+        if params is not None and not isinstance(params, dict):
+            raise TypeError(f"pddl_params of {row['trial']} is not an object")
+        if not isinstance(anns, list) or not all(isinstance(a, dict) for a in anns):
+            raise TypeError(f"annotations of {row['trial']} is not a list of objects")
+        task_type = row.get("task_type")
+        return cls(
+            str(row["trial"]),
+            str(row["split"]),
+            str(row["floor_plan"]),
+            None if task_type is None else str(task_type),
+            params,
+            tuple(anns),
+        )
+
+
 @dataclass
 class AlfredData:
     trials: dict[str, Trial]
@@ -74,10 +114,7 @@ class AlfredData:
     put_pairs: frozenset[tuple[str, str]] = frozenset()  # (object type, receptacle type) experts put
     # each record's fields the learned parser's examples come from (its training data), taken in the same
     # pass: the file is parsed once per process, not again by `learned.data.load_examples` (1 s CPU)
-    example_fields: tuple[dict[str, Any], ...] = ()
-
-
-_EXAMPLE_FIELDS = ("trial", "split", "floor_plan", "task_type", "pddl_params", "annotations")
+    example_fields: tuple[TrialRecord, ...] = ()
 
 
 @cache
@@ -88,7 +125,7 @@ def alfred_data() -> AlfredData:
     by_fp: dict[str, list[str]] = {}
     names: set[str] = set()  # 1,875 names in 267,477 poses: each name's type is taken once, at the end
     puts: set[tuple[str, str]] = set()
-    fields: list[dict[str, Any]] = []
+    fields: list[TrialRecord] = []
     try:
         for _n, row in iter_gzip_jsonl(path, "ALFRED trials file"):
             poses = [
@@ -111,13 +148,22 @@ def alfred_data() -> AlfredData:
             trials[trial.trial] = trial
             by_fp.setdefault(trial.floor_plan, []).append(trial.trial)
             names.update(n for n, *_ in poses)
-            fields.append({k: row[k] for k in _EXAMPLE_FIELDS if k in row})
+            fields.append(TrialRecord.of_row(row))
         types = frozenset(map(_type_of_name, names))
     except (KeyError, ValueError, TypeError, AttributeError, IndexError) as exc:
         raise DataError(f"ALFRED trials file {path} is damaged: a record lacks or mistypes {exc}") from None
     if not trials:
         raise DataError(f"ALFRED trials file {path} holds no trial (empty or damaged)")
     return AlfredData(trials, by_fp, types, frozenset(puts), tuple(fields))
+
+
+@cache
+def excluded_trials() -> frozenset[str]:
+    """ALFRED trials that nothing may be trained, tuned or validated on (benchmark/training_exclusions.txt):
+    the families the evaluation instructions were composed from."""
+    path = data_path("benchmark", "training_exclusions.txt")
+    lines = read_text(path, "training exclusions file").splitlines()
+    return frozenset(s.strip() for s in lines if s.strip() and not s.startswith("#"))
 
 
 @cache
@@ -161,6 +207,25 @@ def scene_types(fp: str) -> tuple[str, ...]:
     if not isinstance(types, list) or not all(isinstance(t, str) for t in types):
         raise DataError(f"ALFRED object list {path} is damaged: expected a JSON list of object types")
     return tuple(types)
+
+
+@cache
+def listed_types(fp: str) -> frozenset[str]:
+    """Object types either list of the scene names: ALFRED's objects.json and AI2-THOR's scene_info
+    instances (`Type_hash`; absent file: none), the Floor left out. The language stage grounds against
+    the same union (`language.grounding.scene_types`)."""
+    found = set(scene_types(fp))
+    base = data_dir(required=True)
+    assert base is not None
+    path = base / "alfred_multiagent" / "scene_info" / f"{fp}.json"
+    if path.exists():
+        info = read_json(path, "scene info file")
+        objects = info.get("objects") if isinstance(info, dict) else None
+        if not isinstance(objects, dict):
+            raise DataError(f"scene info file {path} is damaged: expected an object with an 'objects' map")
+        found.update(_type_of_name(str(name)) for name in objects)
+    found.discard("Floor")
+    return frozenset(found)
 
 
 @cache
@@ -312,11 +377,36 @@ def merged_poses(trials: list[str]) -> list[tuple[str, float, float, float]]:
 
 
 def default_trial(fp: str) -> str:
-    data = alfred_data()
+    """The floor plan's first trial with object poses that no exclusion names (FloorPlan229's first
+    is an excluded train trial)."""
+    data, banned = alfred_data(), excluded_trials()
     for tid in data.by_floor_plan.get(fp, []):
-        if data.trials[tid].poses:
+        if data.trials[tid].poses and tid not in banned:
             return tid
-    raise WorldError(f"no ALFRED trial with object poses for {fp}")
+    raise WorldError(f"no ALFRED trial with object poses for {fp} outside benchmark/training_exclusions.txt")
+
+
+def _why_unplaced(fp: str, typ: str) -> str:
+    """Why a movable type objects.json lists is not in the world: this world's trials lack it, or no
+    admitted trial of the floor plan places one (FloorPlan319's Footstool)."""
+    data, banned = alfred_data(), excluded_trials()
+    for tid in data.by_floor_plan.get(fp, []):
+        if tid not in banned and any(_type_of_name(n) == typ for n, *_ in data.trials[tid].poses):
+            return "not in the trials' object_poses"
+    return f"no ALFRED trial of {fp} places one in its object_poses"
+
+
+def unbuilt_reason(fp: str, typ: str) -> str | None:
+    """Why a world of the floor plan that lacks `typ` has none though the scene's lists name it (None:
+    they do not, or the data places one); WorldError for a name that is no floor plan."""
+    if typ not in listed_types(fp):
+        return None
+    if typ not in scene_types(fp):
+        return f"only AI2-THOR 5's scene_info lists it, not ALFRED's {fp}-objects.json"
+    static = _statics(fp)[1].get(typ)
+    if static is not None or typ not in affordance_table().pickupable:
+        return static
+    return _why_unplaced(fp, typ)
 
 
 def instance_counts(fp: str, trials: list[str] | None = None) -> Counter[str]:
@@ -387,12 +477,18 @@ def load_floor_plan(fp: str, trials: list[str] | None = None) -> World:
     present = {o.type for o in objects}
     for typ in sorted(listed - present):
         if typ not in unplaced:
-            unplaced[typ] = "not in the trials' object_poses"
+            unplaced[typ] = _why_unplaced(fp, typ)
     objects = add_slices(objects, table)
     notes = []
     extra = sorted(present - listed)
     if extra:
         notes.append(f"types found in the trials but not listed in {fp}-objects.json: {', '.join(extra)}")
+    newer = sorted(listed_types(fp) - listed - present)
+    if newer:  # not `unplaced`: ALFRED's version of the scene may well not hold them
+        notes.append(
+            f"types only AI2-THOR 5's scene_info lists (not ALFRED's {fp}-objects.json), absent from this "
+            f"world: {', '.join(newer)}"
+        )
     return World.create(
         fp,
         _free_xz(fp),

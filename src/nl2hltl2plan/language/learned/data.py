@@ -16,9 +16,8 @@ from functools import lru_cache
 
 from nl2hltl2plan.config import data_path
 from nl2hltl2plan.errors import DataError
-from nl2hltl2plan.io import read_text
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
-from nl2hltl2plan.worlds.floor_plans import alfred_data
+from nl2hltl2plan.worlds.floor_plans import TrialRecord, alfred_data, excluded_trials
 
 KIND_OF_TASK_TYPE = {
     "pick_and_place_simple": "place",
@@ -115,21 +114,14 @@ def data_fingerprint(items: Sequence[object]) -> str:
     return hashlib.sha256("\n".join(map(repr, items)).encode()).hexdigest()
 
 
-@lru_cache(maxsize=1)
-def excluded_trials() -> frozenset[str]:
-    path = data_path("benchmark", "training_exclusions.txt")
-    lines = read_text(path, "training exclusions file").splitlines()
-    return frozenset(s.strip() for s in lines if s.strip() and not s.startswith("#"))
-
-
-def _example(row: dict, text: str) -> Example:
-    p = row["pddl_params"]
-    kind = KIND_OF_TASK_TYPE[row["task_type"]]
+def _example(row: TrialRecord, text: str) -> Example:
+    p = row.pddl_params or {}
+    kind = KIND_OF_TASK_TYPE[row.task_type or ""]
     return Example(
         text=" ".join(text.split()),
-        trial=row["trial"],
-        split=row["split"],
-        floor_plan=row["floor_plan"],
+        trial=row.trial,
+        split=row.split,
+        floor_plan=row.floor_plan,
         kind=kind,
         object=p["object_target"],
         container=p["mrecep_target"] if kind == "place_in_container" else "",
@@ -148,11 +140,11 @@ def load_examples() -> dict[str, list[Example]]:
     rows = alfred_data().example_fields  # the world loader's pass over the file keeps these fields
     try:
         for row in rows:
-            if row["split"] not in out or not row.get("task_type") or row["trial"] in banned:
+            if row.split not in out or not row.task_type or row.trial in banned:
                 continue
-            for ann in row["annotations"]:
+            for ann in row.annotations:
                 if ann.get("task_desc", "").strip():
-                    out[row["split"]].append(_example(row, ann["task_desc"]))
+                    out[row.split].append(_example(row, ann["task_desc"]))
     except (KeyError, ValueError, TypeError, AttributeError, IndexError) as exc:
         raise DataError(f"ALFRED trials file {path} is damaged: a record lacks or mistypes {exc}") from None
     if not out["train"]:

@@ -429,9 +429,14 @@ def _missing(tasks: list[BaseTaskSpec], types: set[str] | None, scene: str) -> l
 def _listed_not_built(type_: str, scene: str) -> str:
     """Why a type the floor plan's object lists name is missing: the world built from them has none."""
     from nl2hltl2plan.language.grounding import scene_types
+    from nl2hltl2plan.worlds.floor_plans import unbuilt_reason
 
     try:
         listed = type_ in scene_types(scene)
+        why = unbuilt_reason(scene, type_) if listed else None
     except Nl2Hltl2PlanError:  # not an ALFRED floor plan (tabletop, demo): nothing more to say
         return ""
-    return f" (its object list names {type_}, but the world built from it has none)" if listed else ""
+    if not listed:
+        return ""
+    because = f": {why}" if why else ""  # the world's side: what the data lacks to place it
+    return f" (its object list names {type_}, but the world built from it has none{because})"
