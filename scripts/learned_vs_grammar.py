@@ -50,7 +50,8 @@ def changed_fields(a: list[BaseTaskSpec], b: list[BaseTaskSpec]) -> list[str]:
     number of tasks when that differs."""
     if len(a) != len(b):
         return [f"tasks {len(a)} -> {len(b)}"]
-    return [f"{x.id}.{f}" for x, y in zip(a, b, strict=True) for f in FIELDS if getattr(x, f) != getattr(y, f)]
+    pairs = zip(a, b, strict=True)
+    return [f"{x.id}.{f}" for x, y in pairs for f in FIELDS if getattr(x, f) != getattr(y, f)]
 
 
 def stage(decision: str, confidence: float | None, fields: list[str]) -> str:
@@ -116,7 +117,8 @@ def main() -> int:
                 what = stage(o["decision"], o["confidence"], o["fields"])
                 stages["wins" if o["learned"] else "loses", what.split(" (")[0].split(":")[0]] += 1
                 if args.show:
-                    print(f"  {'+' if o['learned'] else '-'} {what}: {row['instruction'][:160]!r}", file=sys.stderr)
+                    sign = "+" if o["learned"] else "-"
+                    print(f"  {sign} {what}: {row['instruction'][:160]!r}", file=sys.stderr)
         taken = sum(o["decision"] == "model" for o in out)
         print(
             f"| {name} | {len(out)} | {sum(o['grammar'] for o in out)} | {sum(o['learned'] for o in out)} "
