@@ -11,12 +11,16 @@ two converts the row (the benchmark's strict match, a reading with unread words 
 is put down to its stage: the arbitration (the structure model's reading taken, or neither) or the slot
 model (the fields of the tasks it changed). Both read the text as written in the scene's object lists
 (the household reader's rewriting and the world's counts and refusals are `language_failures.py`'s
-household reader; compare its two readers row by row with `scripts/compare_outcomes.py`).
+household reader; compare its two readers row by row with `scripts/compare_outcomes.py`). Last, where
+both readings are complete and differ and only the override threshold decides (no order word or unsaid
+treatment rules the model's out: `structured.against_the_words`), which one is right, per band of the
+structure model's confidence: the evidence for `StructurePolicy.override` and `doubt`.
 """
 
 from __future__ import annotations
 
 import argparse
+import itertools
 import json
 import sys
 from collections import Counter
@@ -38,11 +42,12 @@ from nl2hltl2plan.language.learned.inference import (
     structure_reading,
 )
 from nl2hltl2plan.language.learned.structure import load_structure
-from nl2hltl2plan.language.learned.structured import decide
+from nl2hltl2plan.language.learned.structured import against_the_words, decide, same_reading
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
 from nl2hltl2plan.suites.alfred.structure_validation import converts, rows_of_set
 
 FIELDS = ("kind", "object", "count", "sliced", "container", "receptacle", "light")
+BANDS = (0.0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 0.97, 1.01)  # the structure model's confidence
 
 
 def changed_fields(a: list[BaseTaskSpec], b: list[BaseTaskSpec]) -> list[str]:
@@ -87,13 +92,37 @@ def compare_row(row: dict[str, Any]) -> dict[str, Any]:
         (first.tasks, first.before, grammar_complete(first)), model, rule, text, bool(s and s[2]), uncertain
     )
     learned = s[0] if decision == "model" and s else first if decision == "grammar" else _refused(text)
+    # both readings complete and different where only the threshold decides (`structured.decide`)
+    open_choice = (
+        s is not None
+        and grammar_complete(first)
+        and not uncertain
+        and not same_reading(s[0].tasks, s[0].before, first.tasks, first.before)
+        and not against_the_words(text, (s[0].tasks, s[0].before), (first.tasks, first.before))
+    )
     return {
+        "first": converts(first.model_copy(deep=True), row),
+        "model": s is not None and converts(s[0].model_copy(deep=True), row),
+        "open_choice": open_choice,
         "grammar": converts(alone.model_copy(deep=True), row),
         "learned": converts(learned.model_copy(deep=True), row),
         "decision": decision,
         "confidence": s[1] if s else None,
         "fields": changed_fields(alone.tasks, learned.tasks),
     }
+
+
+def bands(out: list[dict[str, Any]]) -> list[str]:
+    """Markdown rows: where both readings are complete and differ and only the override threshold
+    decides, per band of the structure model's confidence, which of the two converts the row."""
+    lines = []
+    for lo, hi in itertools.pairwise(BANDS):
+        b = [o for o in out if o["open_choice"] and lo <= o["confidence"] < hi]
+        grammar = sum(o["first"] and not o["model"] for o in b)
+        model = sum(o["model"] and not o["first"] for o in b)
+        neither = sum(not o["first"] and not o["model"] for o in b)
+        lines.append(f"| {lo:.2f}-{min(hi, 1.0):.2f} | {len(b)} | {grammar} | {model} | {neither} |")
+    return lines
 
 
 def main() -> int:
@@ -106,10 +135,12 @@ def main() -> int:
     print("| set | rows | grammar alone | learned | learned wins | learned loses | structure model taken |")
     print("| --- | --- | --- | --- | --- | --- | --- |")
     stages: Counter[tuple[str, str]] = Counter()
+    every: list[dict[str, Any]] = []
     for name in args.sets.split(","):
         saved = args.rows / f"{name}.json" if args.rows else None
         rows = json.loads(saved.read_text()) if saved and saved.exists() else rows_of_set(name, args.n)
         out = [compare_row(r) for r in rows]
+        every += out
         wins = [o for o in out if o["learned"] and not o["grammar"]]
         losses = [o for o in out if o["grammar"] and not o["learned"]]
         for o, row in zip(out, rows, strict=True):
@@ -127,6 +158,9 @@ def main() -> int:
     print("\n| the learned layers | stage | rows |\n| --- | --- | --- |")
     for (verdict, where), n in sorted(stages.items()):
         print(f"| {verdict} | {where} | {n} |")
+    print("\n| both complete, different: model confidence | rows | grammar right | model right | neither |")
+    print("| --- | --- | --- | --- | --- |")
+    print("\n".join(bands(every)))
     return 0
 
 
