@@ -232,3 +232,10 @@ def test_a_command_after_a_state_reference_is_a_sentence_of_its_own(backend):
     assert not res.partial and {(name[a], name[b]) for a, b in res.before} == {
         ("place Egg -> SinkBasin", "place Apple -> Fridge")
     }
+
+
+@BOTH
+def test_zap_is_a_word_for_heating(backend):
+    # the lead's user set 19: "zap the potato in the microwave" was refused, 'zap' unread
+    text = "zap the potato in the microwave and then leave it on the counter"
+    assert _summaries(text, "FloorPlan13", backend) == ["heat_place Potato -> CounterTop"]
