@@ -72,6 +72,7 @@ from nl2hltl2plan.language.unsupported_steps import (
     returns_and_repeats,
     started,
     treated_after_placing,
+    under_a_place,
     vague_words,
 )
 
@@ -123,6 +124,7 @@ def account(
     out += vague_words(instruction, mentions) + started(instruction, parse)
     out += corrections(instruction, mentions, parse) + repeated_tasks(instruction, mentions, parse)
     out += one_of_several(instruction, mentions, parse, instances)
+    out += under_a_place(instruction, mentions, parse)
     out += first_and_last(instruction, mentions, parse) + fragments(instruction, mentions)
     out += repeats_for_another(instruction, mentions, parse) + it_of_two(instruction, mentions)
     out += _words(instruction, toks, in_mention, mentions, parse, instances, scene)

@@ -81,6 +81,24 @@ def one_of_several(
     return out
 
 
+def under_a_place(instruction: str, mentions: list[Mention], parse: ParseUsage) -> list[Unread]:
+    """ "Put the apple under the counter": a task's place named only after "under" (or "below",
+    "beneath"), where no base task puts a thing; "a mug under the coffee machine" is ALFRED's placing in
+    the machine, under its spout."""
+    lowered = instruction.lower()
+    out = []
+    for place in {r for t in parse.tasks for r in t.receptacle or ()} - {"CoffeeMachine"}:
+        named = [m for m in mentions if place in m.entry.types]
+        below = [m for m in named if _UNDER_BEFORE.search(lowered[max(0, m.char_start - 30) : m.char_start])]
+        if named and len(below) == len(named):
+            out.append(Unread(below[0].surface, "place", _UNDER))
+    return out
+
+
+_UNDER = "no base task puts a thing under another: say in or on"
+_UNDER_BEFORE = re.compile(r"\b(?:under|underneath|below|beneath)\s+(?:the\s+|a\s+|an\s+|your\s+|my\s+)?$")
+
+
 _PICKS_ONE = re.compile(
     r"\bthe\s+(second|third|fourth|fifth|left|right|leftmost|rightmost|middle|nearest|closest|farthest|"
     r"furthest|biggest|smallest|larger|smaller|bigger)\s+"
@@ -247,6 +265,13 @@ _TWO_OF_A_TYPE = (
 _VAGUE_AMOUNT = re.compile(
     r"\b(?:some|most|half|every other|a (?:bunch|number|handful|lot) of|lots of|plenty of)\b(?: of)?"
 )
+# "half the lettuce", "a quarter of an apple": a part of one thing, which no base task moves (a slice is a
+# task's own word: "a slice of lettuce")
+_PART = re.compile(
+    r"\b(?:(?:a|one)\s+half\s+of|half(?:\s+of)?|(?:a|one)\s+(?:quarter|third)\s+of|(?:a\s+)?(?:part|portion)\s+of)"
+    r"\s+(?:the\s+|an?\s+|your\s+|my\s+)?"
+)
+_PART_OF_ONE = "a part of one thing: no base task moves a part; say 'a slice of' or the whole thing"
 _THE_REST = re.compile(r"\bthe (?:rest|remaining(?: ones)?|others)\b")
 # "A. When the rest is done, B" names the tasks said before (`grammar.references.said_before`), not an amount
 _REST_DONE = re.compile(r" (?:is|are|has been|have been|gets|get) (?:done|finished|complete)")
@@ -324,6 +349,12 @@ def vague_words(instruction: str, mentions: list[Mention]) -> list[Unread]:
         named = next((x for x in mentions if m.end() <= x.char_start <= m.end() + 12), None)
         if named is not None and (named.plural or m.group(0) == "every other"):
             out.append(Unread(lowered[m.start() : named.char_end], "count", "a vague count: say how many"))
+    out += [
+        Unread(lowered[m.start() : named.char_end], "count", _PART_OF_ONE)
+        for m in _PART.finditer(lowered)
+        for named in [next((x for x in mentions if x.char_start == m.end()), None)]
+        if named is not None and not named.plural
+    ]
     out += [
         Unread(m.group(0), "count", "a vague count: say how many")
         for m in (*_THE_REST.finditer(lowered), *_VAGUE_PIECES.finditer(lowered))

@@ -78,7 +78,7 @@ _VERBS: dict[str, tuple[str, ...]] = {
         "carrying",
     ),
     "clean": ("wash", "rinse", "clean", "scrub", "wet", "cleanse", "moisten"),
-    "heat": ("heat", "warm", "cook", "microwave", "bake", "toast", "boil", "reheat", "nuke"),
+    "heat": ("heat", "warm", "cook", "microwave", "bake", "toast", "boil", "reheat", "nuke", "zap"),
     "cool": ("chill", "cool", "refrigerate", "freeze", "frost"),
     "slice": ("slice", "cut", "chop", "dice", "section"),
     "fill": ("fill",),
