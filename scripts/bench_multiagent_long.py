@@ -1,7 +1,7 @@
 """How many of the paper's long instructions (5-9 base tasks, alfred_multiagent/test50, no ground
 truth) become a checked plan through the whole pipeline.
 
-    python scripts/bench_multiagent_long.py --backend offline --robots 2 --timeout 60 [--limit 10]
+    python scripts/bench_multiagent_long.py --backend offline --robots 2 --timeout 60 [--limit 10] [--plurals two]
 
 Each instruction is planned in its floor plan (movable objects from the floor plan's first ALFRED
 trial outside the training exclusions) for a team started on the instance's first `init_pos` draw.
@@ -57,8 +57,10 @@ def main() -> None:
     ap.add_argument("--timeout", type=float, default=60.0, help="planner time limit per instruction (s)")
     ap.add_argument("--limit", type=int, default=None, help="first N instructions per base-task count")
     ap.add_argument("--json", default=None, help="write one record per instruction here")
+    ap.add_argument("--plurals", default="ask", choices=["ask", "two"],
+                    help="a bare plural: refused (ask, plan's default) or ALFRED's pick-two (two: Table I)")
     args = ap.parse_args()
-    options = PipelineOptions(backend=args.backend, plan_timeout_s=args.timeout)
+    options = PipelineOptions(backend=args.backend, plan_timeout_s=args.timeout, plurals=args.plurals)
     records = []
     for n in range(5, 10):
         for key, text, init in instructions(n)[: args.limit]:
