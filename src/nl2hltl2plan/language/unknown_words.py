@@ -36,8 +36,10 @@ misspell ("heather": 'heated'). An adjective English knows (lemminflect's lexico
 participle describes the thing as a colour does and is read past ("the tiny / ceramic / rotten mug"),
 unless it is one slip from such a state word; a participle ("the broken clock") is a state no reading
 uses. Not judged: words English does not know (the spelling rule's business), words after a relation or a
-clause break ("next to the sink"), words in -ly, and a thing's own ("its matching plate": which of its
-things, not what it is; "the hiking watch" is judged).
+clause break ("next to the sink"), words in -ly, a thing's own ("its matching plate": which of its
+things, not what it is; "the hiking watch" is judged), and a proper name written with a capital inside a
+sentence before a name in lower case ("the Samsung phone": a make, as "my" says whose; `maker_name`),
+unless it is a slip of a state word ("the Heather apple").
 
 Tools (`unused_tools`): "use the left arm", "using the sponge": what a task is to be done with. Only the
 tools a task takes or its kind implies are read (the knife of a slice, the lamp of an examination); any
@@ -214,12 +216,28 @@ def unknown_modifiers(instruction: str, toks: Tokens | None = None) -> list[Unre
         if m.entry.generic:  # "the earlier tasks": no object's name
             continue
         before = modifiers_before(instruction, toks, m.start)
-        for word in before:
+        for k, word in enumerate(before):  # nearest the name first
             near = _unknown_modifier(word) if word not in {u.words for u in out} else None
+            if near == [] and maker_name(instruction, toks, m.start - 1 - k, m.start):
+                continue  # "the Samsung phone": a make, as "my" says whose
             if near is not None:
                 said = f"; may misspell {' or '.join(map(repr, near))}" if near else ""
                 out.append(Unread(word, "object", MODIFIER_REASON + said))
     return out
+
+
+def maker_name(instruction: str, toks: Tokens, at: int, name: int) -> bool:
+    """Whether the word of token `at` is a proper name before the thing's name (token `name`): written with
+    a capital inside a sentence, the name after it in lower case ("the Samsung phone", "the IKEA lamp",
+    not "Put The Garden Apple ..."). A maker's or a brand's name says which make the thing is, as "my"
+    says whose, not what it is."""
+    start = toks[at][1]
+    opens_sentence = _SENTENCE_END.search(instruction[:start]) is not None
+    said = instruction[toks[name][1] : toks[name][2]]
+    return instruction[start].isupper() and not opens_sentence and said.islower()
+
+
+_SENTENCE_END = re.compile(r"(?:^|[.!?:;\n\"(])\s*$")
 
 
 def modifiers_before(instruction: str, toks: Tokens, start: int) -> list[str]:
