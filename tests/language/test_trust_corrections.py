@@ -190,7 +190,10 @@ def test_a_state_reference_is_no_task_and_ends_before_a_command(backend, text):
 
 # "the second egg", "the left apple" were any egg, any apple
 @BOTH
-@pytest.mark.parametrize("text", ["put the second egg in the fridge", "put the left apple in the sink"])
+@pytest.mark.parametrize(
+    "text",
+    ["put the second egg in the fridge", "put the left apple in the sink", "put the top pot on the stove"],
+)
 def test_words_that_pick_one_of_several_things_are_refused(backend, text):
     assert "picks one of several" in _refused(text, "FloorPlan4", backend)
 
@@ -199,6 +202,7 @@ def test_words_that_pick_one_of_several_things_are_refused(backend, text):
 def test_a_place_picked_among_several_is_read_as_its_type(backend):
     text = "put the spoon in the second drawer"
     assert _summaries(text, "FloorPlan4", backend) == ["place Spoon -> Drawer"]
+    assert _summaries("put the fork in the top drawer", "FloorPlan4", backend) == ["place Fork -> Drawer"]
 
 
 @BOTH

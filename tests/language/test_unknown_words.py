@@ -142,6 +142,14 @@ def test_a_proper_name_before_a_name_is_a_make_and_is_read():
     assert [u.words for u in unknown_modifiers("put the Heather apple in the bin")] == ["heather"]
 
 
+# h153's held-out set: "the cleaner cloth" read a plain placing: "cleaner" is a name (a spray) and was
+# passed over. A name used as an adjective one slip from a state word is named as other words are
+def test_a_name_used_as_an_adjective_one_slip_from_a_state_is_unread():
+    (cleaner,) = unknown_modifiers("put the cleaner cloth in the bathtub")
+    assert cleaner.words == "cleaner" and "may misspell 'cleaned'" in cleaner.reason
+    assert unknown_modifiers("put the spray cloth in the bathtub") == []
+
+
 @pytest.mark.parametrize(
     "text",
     [

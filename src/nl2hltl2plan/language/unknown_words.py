@@ -262,9 +262,11 @@ def _unknown_modifier(word: str) -> list[str] | None:
     computed once: the adjective test and the hint both use it)."""
     if len(word) < 3 or not word.isalpha() or word.endswith("ly") or word in _NOT_A_THING:
         return None
-    if known_word(word) or categories(word) or word in descriptive_words():
+    if categories(word) or word in descriptive_words():
         return None
     near = _near_state(word)
+    if known_word(word):  # a name ("cleaner", a spray) used as an adjective one slip from a state word
+        return near if adjective(word) and any(s in one_edit(word) for s in near) else None
     if adjective(word) and not any(s in one_edit(word) for s in near):
         return None  # "the tiny mug" describes the mug; "the heather apple" names a plant, or 'heated'
     return near if english_word(word) and not _slip_of_descriptive(word) else None

@@ -67,9 +67,10 @@ def returns_and_repeats(instruction: str, mentions: list[Mention], parse: ParseU
 def one_of_several(
     instruction: str, mentions: list[Mention], parse: ParseUsage, instances: Mapping[str, int] | None
 ) -> list[Unread]:
-    """ "Put the second egg in the fridge", "the left apple": words that pick one of several things of a
-    type the scene holds, which the spec (type-level atoms: any egg does) cannot keep to. Judged only
-    where the scene is known; a place so picked ("the top drawer") is read as the place's type."""
+    """ "Put the second egg in the fridge", "the left apple", "the top pillow": words that pick one of
+    several things of a type the scene holds, which the spec (type-level atoms: any egg does) cannot
+    keep to. Judged only where the scene is known; a place so picked ("the top drawer") is read as the
+    place's type."""
     if instances is None:
         return []
     objects = {t for task in parse.tasks for t in task.object}
@@ -83,7 +84,8 @@ def one_of_several(
 
 _PICKS_ONE = re.compile(
     r"\bthe\s+(second|third|fourth|fifth|left|right|leftmost|rightmost|middle|nearest|closest|farthest|"
-    r"furthest|biggest|smallest|larger|smaller|bigger)\s+"
+    r"furthest|biggest|smallest|larger|smaller|bigger|top|bottom|upper|lower|topmost|bottommost|uppermost|"
+    r"highest|lowest|front|frontmost)\s+"
 )
 _PICKED = "picks one of several things of its type: the spec's atoms name types (any one does)"
 
