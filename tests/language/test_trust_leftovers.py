@@ -48,12 +48,24 @@ def test_a_place_after_to_is_a_destination_not_where_the_thing_is():
     assert unread(text, in_drawer) == []
 
 
-def test_the_other_of_two_tasks_on_one_type_is_unread():
-    apples = [task("place", "Apple", "Fridge"), task("place", "Apple", "CounterTop", "B")]
-    assert unread("put the apple in the fridge and the other apple on the counter", apples) == [
+def test_the_other_of_two_tasks_on_one_place_type_is_unread():
+    """Places are type-level atoms: no spec keeps two tasks to two drawers, or to one counter. Things two
+    tasks pick up are two ("the other apple", "another"): the planner's leaves own what they pick up, and
+    the goal checker asks distinct things, so those are read; "the same" thing of two tasks is not."""
+    drawers = [task("place", "Pen", "Drawer"), task("place", "Pencil", "Drawer", "B")]
+    assert unread("put the pen in a drawer and the pencil in the other drawer", drawers) == [
         ("the other", "object")
     ]
-    assert unread("put an apple in the fridge and another on the counter", apples) == [("another", "object")]
+    apples = [task("place", "Apple", "Fridge"), task("place", "Apple", "CounterTop", "B")]
+    assert unread("put the apple in the fridge and the other apple on the counter", apples) == []
+    assert unread("put an apple in the fridge and another on the counter", apples) == []
+    assert unread("put one apple in the fridge and the other on the counter", apples) == []
+    same = "put the apple in the fridge and the same apple on the counter"
+    assert unread(same, apples, instances={"Apple": 2}) == [("the same", "object")]
+    # two like tasks on "the other" thing: a pair, both there at once, which two tasks do not say
+    books = [task("place", "Book", "Bed"), task("place", "Book", "Bed", "B")]
+    text = "put the book on the bed and put the other book on the bed too"
+    assert unread(text, books) == [("the other", "object")]
     # a landmark, or another type, is no second apple
     lettuce = [task("cool_place", "Lettuce", "CounterTop"), task("clean_place", "Lettuce", "GarbageCan", "B")]
     text = "Put a clean lettuce in the trash bin. Put cold lettuce on the counter next to the other food."

@@ -127,6 +127,27 @@ def test_a_word_before_a_name_that_names_nothing_read_is_unread():
     assert "misspell" not in unknown_modifiers("put the broken alarm clock on the desk")[0].reason
     # a common word one slip from a descriptive one is judged ("leather" is ten times "heather")
     assert "may misspell 'clean'" in unknown_modifiers("put a clan rag on the counter")[0].reason
+    # two slips are `spelling.one_edit` composed: two neighbours swapped, then a letter added
+    assert "may misspell 'baked'" in unknown_modifiers("put the bead apple on the counter")[0].reason
+
+
+# h153's everyday set: "the Samsung phone" was refused. A word written with a capital inside a sentence,
+# before a name in lower case, is a maker's or a brand's name: it says which make, as "my" says whose
+def test_a_proper_name_before_a_name_is_a_make_and_is_read():
+    assert unknown_modifiers("put the Samsung phone on the bed") == []
+    assert unknown_modifiers("put the apple in the fridge, then the Dell laptop on the desk") == []
+    # in lower case, at a sentence's start, in title-cased text, or a slip of a state word: still judged
+    assert [u.words for u in unknown_modifiers("put the samsung phone on the bed")] == ["samsung"]
+    assert [u.words for u in unknown_modifiers("Put The Garden Apple In The Fridge")] == ["garden"]
+    assert [u.words for u in unknown_modifiers("put the Heather apple in the bin")] == ["heather"]
+
+
+# h153's held-out set: "the cleaner cloth" read a plain placing: "cleaner" is a name (a spray) and was
+# passed over. A name used as an adjective one slip from a state word is named as other words are
+def test_a_name_used_as_an_adjective_one_slip_from_a_state_is_unread():
+    (cleaner,) = unknown_modifiers("put the cleaner cloth in the bathtub")
+    assert cleaner.words == "cleaner" and "may misspell 'cleaned'" in cleaner.reason
+    assert unknown_modifiers("put the spray cloth in the bathtub") == []
 
 
 @pytest.mark.parametrize(

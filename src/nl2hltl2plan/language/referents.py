@@ -76,10 +76,11 @@ def check_referents(
     fewer things than the scene holds where no convention of the world reads it (see the module's
     docstring); returns the assumptions a convention made ("'the forks': read as 2 of ...").
     `forbidden`: the types the instruction's negations act on ("don't touch the towel")."""
-    exact_names(instruction, tasks, instances, scene, forbidden)
+    scopes = mention_scopes(instruction, tasks)  # both checks below ask each word's tasks
+    exact_names(instruction, tasks, instances, scene, forbidden, scopes)
     moved_twice(instruction, tasks, before)
     categories_named(instruction, tasks, instances, scene)
-    said = stand_ins(instruction, tasks, instances, scene)
+    said = stand_ins(instruction, tasks, instances, scene, scopes)
     return said + plural_of_several(instruction, tasks, instances, scene, convention, plurals)
 
 
@@ -89,20 +90,23 @@ def exact_names(
     instances: Mapping[str, int] | None,
     scene: str,
     forbidden: Collection[str] = (),
+    scopes: Scopes | None = None,
 ) -> None:
     """A word that is one type's own name, read as another type of the scene it is a synonym of ("towel"
     read as a HandTowel where the scene has a Towel too): refused naming both, unless another word of
     the instruction names that other type itself ("the towel ... and the hand towel"): the text decides.
     A negation's types (`forbidden`) are asked as a task's are: "don't touch the towel" that forbids only
-    the HandTowel would leave the Towel free."""
+    the HandTowel would leave the Towel free.
+    `scopes`: `mention_scopes`, where the caller has them."""
     if not instances:
         return
-    mentions = find_mentions(instruction)
+    scopes = mention_scopes(instruction, tasks) if scopes is None else scopes
+    mentions = [m for m, _ in scopes]
     held = [(task, [*task.object, *(task.container or ())]) for task in tasks]
     things = {t for _, types in held for t in types}
     used = things | {t for task in tasks for t in task.receptacle or ()} | set(forbidden)
     places = {t: task.receptacle[0] for task, types in held if task.receptacle for t in types}
-    for m in mentions:
+    for m, (own, meant) in scopes:
         present = [t for t in m.entry.types if instances.get(t)]
         clash = exact_name_conflict(m.entry, present, scene)
         first = present[0] if present else ""
@@ -110,7 +114,6 @@ def exact_names(
             raise HTTError(clash)
         # the thing handled read as another type than the one the word names ("the cup" as the Mug), a
         # type no other word of its task can mean ("a utensil ... not the butter knife": the utensil's)
-        own, meant = _scope(m, tasks, mentions)
         unnamed = {t for task in own for t in (*task.object, *(task.container or ())) if t not in meant}
         # the place of the word's own task ("the cup in the coffee maker", not the mug's cabinet)
         where = {t: task.receptacle[0] for task in own if task.receptacle for t in task.object} or places
@@ -120,7 +123,11 @@ def exact_names(
 
 
 def stand_ins(
-    instruction: str, tasks: Sequence[BaseTaskSpec], instances: Mapping[str, int] | None, scene: str
+    instruction: str,
+    tasks: Sequence[BaseTaskSpec],
+    instances: Mapping[str, int] | None,
+    scene: str,
+    scopes: Scopes | None = None,
 ) -> list[str]:
     """A word that is one type's own name, read as another type of its lexicon entry that a task uses and
     no other word of the text can mean, said as an assumption since the world, not the words alone, made
@@ -128,17 +135,16 @@ def stand_ins(
     plan has a Mug and no Cup: the annotation guide's "cup -> Cup, else Mug"), or where the task's role
     passed over the named type present ("a wet towel" read as the Cloth: ALFRED cannot wash a Towel or a
     HandTowel). Where two other types could be meant nothing is said here (the roles decide, or
-    `exact_names` refuses)."""
+    `exact_names` refuses). `scopes`: `mention_scopes`, where the caller has them."""
     if not instances:
         return []
     said: list[str] = []
-    mentions = find_mentions(instruction)
-    for m in mentions:
+    scopes = mention_scopes(instruction, tasks) if scopes is None else scopes
+    for m, (own, meant) in scopes:
         types = m.entry.types
         named = own_type(m.entry, types)
         if named is None or m.entry.all_:
             continue
-        own, meant = _scope(m, tasks, mentions)
         used = {t for task in own for t in (*task.object, *(task.container or ()), *(task.receptacle or ()))}
         read = [t for t in types if t != named and t in used and t not in meant]
         if len(read) != 1:
@@ -150,6 +156,16 @@ def stand_ins(
             cannot = f"its {named} cannot do what is asked"
             said.append(f"{m.surface!r}: read as the {read[0]} of {scene}; {cannot}")
     return list(dict.fromkeys(said))
+
+
+Scope = tuple[list[BaseTaskSpec], set[str]]
+Scopes = list[tuple[Mention, Scope]]
+
+
+def mention_scopes(instruction: str, tasks: Sequence[BaseTaskSpec]) -> Scopes:
+    """Each word of `instruction` that names a thing, with its `_scope`."""
+    mentions = find_mentions(instruction)
+    return [(m, _scope(m, tasks, mentions)) for m in mentions]
 
 
 def _scope(

@@ -36,8 +36,10 @@ misspell ("heather": 'heated'). An adjective English knows (lemminflect's lexico
 participle describes the thing as a colour does and is read past ("the tiny / ceramic / rotten mug"),
 unless it is one slip from such a state word; a participle ("the broken clock") is a state no reading
 uses. Not judged: words English does not know (the spelling rule's business), words after a relation or a
-clause break ("next to the sink"), words in -ly, and a thing's own ("its matching plate": which of its
-things, not what it is; "the hiking watch" is judged).
+clause break ("next to the sink"), words in -ly, a thing's own ("its matching plate": which of its
+things, not what it is; "the hiking watch" is judged), and a proper name written with a capital inside a
+sentence before a name in lower case ("the Samsung phone": a make, as "my" says whose; `maker_name`),
+unless it is a slip of a state word ("the Heather apple").
 
 Tools (`unused_tools`): "use the left arm", "using the sponge": what a task is to be done with. Only the
 tools a task takes or its kind implies are read (the knife of a slice, the lamp of an examination); any
@@ -214,12 +216,28 @@ def unknown_modifiers(instruction: str, toks: Tokens | None = None) -> list[Unre
         if m.entry.generic:  # "the earlier tasks": no object's name
             continue
         before = modifiers_before(instruction, toks, m.start)
-        for word in before:
-            if _unknown_modifier(word) and word not in {u.words for u in out}:
-                near = _near_state(word)
+        for k, word in enumerate(before):  # nearest the name first
+            near = _unknown_modifier(word) if word not in {u.words for u in out} else None
+            if near == [] and maker_name(instruction, toks, m.start - 1 - k, m.start):
+                continue  # "the Samsung phone": a make, as "my" says whose
+            if near is not None:
                 said = f"; may misspell {' or '.join(map(repr, near))}" if near else ""
                 out.append(Unread(word, "object", MODIFIER_REASON + said))
     return out
+
+
+def maker_name(instruction: str, toks: Tokens, at: int, name: int) -> bool:
+    """Whether the word of token `at` is a proper name before the thing's name (token `name`): written with
+    a capital inside a sentence, the name after it in lower case ("the Samsung phone", "the IKEA lamp",
+    not "Put The Garden Apple ..."). A maker's or a brand's name says which make the thing is, as "my"
+    says whose, not what it is."""
+    start = toks[at][1]
+    opens_sentence = _SENTENCE_END.search(instruction[:start]) is not None
+    said = instruction[toks[name][1] : toks[name][2]]
+    return instruction[start].isupper() and not opens_sentence and said.islower()
+
+
+_SENTENCE_END = re.compile(r"(?:^|[.!?:;\n\"(])\s*$")
 
 
 def modifiers_before(instruction: str, toks: Tokens, start: int) -> list[str]:
@@ -239,20 +257,32 @@ def modifiers_before(instruction: str, toks: Tokens, start: int) -> list[str]:
 _POSSESSIVE = frozenset({"its", "their", "his", "her"})
 
 
-def _unknown_modifier(word: str) -> bool:
+def _unknown_modifier(word: str) -> list[str] | None:
+    """None where `word` before a name is read past; else the state words it may misspell (`_near_state`,
+    computed once: the adjective test and the hint both use it)."""
     if len(word) < 3 or not word.isalpha() or word.endswith("ly") or word in _NOT_A_THING:
-        return False
-    if known_word(word) or categories(word) or word in descriptive_words():
-        return False
-    if adjective(word) and not any(_edits(word, s) <= 1 for s in _near_state(word)):
-        return False  # "the tiny mug" describes the mug; "the heather apple" names a plant, or 'heated'
-    return english_word(word) and not _slip_of_descriptive(word)
+        return None
+    if categories(word) or word in descriptive_words():
+        return None
+    near = _near_state(word)
+    if known_word(word):  # a name ("cleaner", a spray) used as an adjective one slip from a state word
+        return near if adjective(word) and any(s in one_edit(word) for s in near) else None
+    if adjective(word) and not any(s in one_edit(word) for s in near):
+        return None  # "the tiny mug" describes the mug; "the heather apple" names a plant, or 'heated'
+    return near if english_word(word) and not _slip_of_descriptive(word) else None
 
 
 def _near_state(word: str) -> list[str]:
     """The state words a reading could use that `word` is one or two slips from, its first letter kept."""
-    near = [s for s in state_words() if s[0] == word[0] and _edits(word, s) <= 2]
+    near = [s for s in state_words() if s[0] == word[0] and _two_slips(word, s)]
     return [s for s in near if not any(n != s and n.startswith(s) for n in near)]  # "sliced", not "slice"
+
+
+def _two_slips(a: str, b: str) -> bool:
+    """Whether `b` is at most two slips from `a`: `spelling.one_edit` (a letter more, less, changed, two
+    neighbours swapped) composed, met in the middle."""
+    near_a = one_edit(a) | {a}
+    return b in near_a or bool(near_a & one_edit(b))
 
 
 @cache
@@ -292,20 +322,6 @@ def state_words() -> tuple[str, ...]:
     verbs = sorted(w for k in kinds for w in vocabulary()[k])
     forms = (f for v in verbs for f in (v + "ed", v + "d", v + v[-1] + "ed") if english_word(f))
     return tuple(dict.fromkeys([*forms, *verbs]))
-
-
-def _edits(a: str, b: str) -> int:
-    """Levenshtein distance of two words, an adjacent swap one edit (a swap is one slip)."""
-    prev2: list[int] = []
-    prev = list(range(len(b) + 1))
-    for i, ca in enumerate(a, 1):
-        cur = [i]
-        for j, cb in enumerate(b, 1):
-            cur.append(min(prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (ca != cb)))
-            if i > 1 and j > 1 and ca == b[j - 2] and a[i - 2] == cb:
-                cur[j] = min(cur[j], prev2[j - 2] + 1)
-        prev2, prev = prev, cur
-    return prev[-1]
 
 
 _USE = re.compile(r"\b(?:use|using|utili[sz]e|utili[sz]ing|with the help of)\s+")

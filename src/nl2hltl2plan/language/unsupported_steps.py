@@ -67,9 +67,10 @@ def returns_and_repeats(instruction: str, mentions: list[Mention], parse: ParseU
 def one_of_several(
     instruction: str, mentions: list[Mention], parse: ParseUsage, instances: Mapping[str, int] | None
 ) -> list[Unread]:
-    """ "Put the second egg in the fridge", "the left apple": words that pick one of several things of a
-    type the scene holds, which the spec (type-level atoms: any egg does) cannot keep to. Judged only
-    where the scene is known; a place so picked ("the top drawer") is read as the place's type."""
+    """ "Put the second egg in the fridge", "the left apple", "the top pillow": words that pick one of
+    several things of a type the scene holds, which the spec (type-level atoms: any egg does) cannot
+    keep to. Judged only where the scene is known; a place so picked ("the top drawer") is read as the
+    place's type."""
     if instances is None:
         return []
     objects = {t for task in parse.tasks for t in task.object}
@@ -101,7 +102,8 @@ _UNDER_BEFORE = re.compile(r"\b(?:under|underneath|below|beneath)\s+(?:the\s+|a\
 
 _PICKS_ONE = re.compile(
     r"\bthe\s+(second|third|fourth|fifth|left|right|leftmost|rightmost|middle|nearest|closest|farthest|"
-    r"furthest|biggest|smallest|larger|smaller|bigger)\s+"
+    r"furthest|biggest|smallest|larger|smaller|bigger|top|bottom|upper|lower|topmost|bottommost|uppermost|"
+    r"highest|lowest|front|frontmost)\s+"
 )
 _PICKED = "picks one of several things of its type: the spec's atoms name types (any one does)"
 
@@ -224,31 +226,41 @@ _OTHER = re.compile(r"\b(?:the other|another|a different|the same)\b")
 def other_instances(
     instruction: str, mentions: list[Mention], parse: ParseUsage, instances: Mapping[str, int] | None = None
 ) -> list[Unread]:
-    """ "Put the apple in the fridge and the other apple on the counter": two tasks on one type, which
-    the spec (type-level atoms) cannot keep to two different things, so one apple could do both. "The
-    other" / "another" / "a different" / "the same" before such a thing (an object or a place: "the pen
-    in the other drawer"), or standing for it ("one apple in the fridge and the other on the counter"),
-    is unread; a landmark ("next to the other food") names a thing no two tasks take. "The same" of a
-    type the scene (`instances`) holds once is that one."""
+    """ "Put the pen in the drawer and the pencil in the other drawer": two tasks on one type, which the
+    spec (type-level atoms) cannot keep to two different things, or to one. "The other" / "another" /
+    "a different" / "the same" before such a thing (a place, or "the same" object), or standing for it, is
+    unread; a landmark ("next to the other food") names a thing no two tasks take. "The same" of a
+    type the scene (`instances`) holds once is that one. "The other" / "another" / "a different" thing of
+    a type that tasks pick up and take each to a place of its own is read: a leaf's picked-up objects are
+    its own, so two such tasks take two different ones (docs/planning.md, "The model"; the goal checker
+    asks the same)."""
     taken = Counter(t for task in parse.tasks for t in set(task.object))
+    picked = Counter(t for task in parse.tasks if task.kind != "set_state" for t in set(task.object))
     # "a drawer ... the other drawer", "the same drawer": places are type-level atoms too
     taken.update(t for task in parse.tasks for t in set(task.receptacle or ()))
     shared = {t for t, n in taken.items() if n > 1}
     if not shared:
         return []
+    # picked up by each task that takes it, to a place of its own: two things kept apart ("the other book"
+    # on the bed after a book is a pair, `place_two`, which this reading is not)
+    ends = {t: {(k.kind, *(k.receptacle or ())) for k in parse.tasks if t in k.object} for t in shared}
+    apart = {t for t in shared if picked[t] == taken[t] == len(ends[t])}
     out = []
     lowered = instruction.lower()
     for m in _OTHER.finditer(lowered):
         rest = lowered[m.end() :]
         named = next((x for x in mentions if m.end() <= x.char_start <= m.end() + 20), None)
+        hit = shared  # the types it may say: a thing's, or any two tasks take where it stands for one
         if named is not None and not _PLACE_OR_STOP.search(lowered[m.end() : named.char_start]):
-            the_shared = bool(set(named.entry.types) & shared)  # "the other apple"
+            hit = set(named.entry.types) & shared
+            the_shared = bool(hit)  # "the other apple"
             if m.group(0) == "the same":  # unknown scene (None): not judged, as counts are not
                 held = instances or {}
-                the_shared = any(held.get(t, 0) > 1 for t in set(named.entry.types) & shared)
+                the_shared = any(held.get(t, 0) > 1 for t in hit)
         else:
             the_shared = _STANDS_FOR.match(rest) is not None  # "the other on the counter", "another one"
-        if the_shared:
+        # "the other tomato", "one in the fridge and the other in the sink": the tasks take two apart
+        if the_shared and (m.group(0) == "the same" or not hit <= apart):
             out.append(Unread(m.group(0), "object", _TWO_OF_A_TYPE))
     return out
 
