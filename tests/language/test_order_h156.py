@@ -26,7 +26,9 @@ def test_also_then_keeps_the_added_task_in_its_step():
 
 def test_comma_list_before_then_is_still_a_sequence():
     """Near miss: "A, B, then C" (no additive word) stays the sequence the guide reads."""
-    _, order, unread = read("Put the apple in the fridge, put the mug in the sink, then put the egg in the microwave.")
+    _, order, unread = read(
+        "Put the apple in the fridge, put the mug in the sink, then put the egg in the microwave."
+    )
     assert not unread and {(APPLE, MUG), (MUG, EGG)} <= order
 
 
