@@ -57,7 +57,7 @@ def split_clauses(sentence: str) -> list[tuple[str, int, int, str]]:
                     joiner = G.SEQ_JOINERS[words[j][0]]
                 elif words[j][0] in G.SEQ_JOINERS and ends_before < 0:
                     ends_before = j  # it stays with that clause, whose order reads it ("first" at its end)
-                elif words[j][0] in {"to", "and", "while", "plus", "or", "as"} and not joiner:
+                elif words[j][0] in {"to", "and", "while", "plus", "also", "or", "as"} and not joiner:
                     joiner = words[j][0]
                 j -= 1
             cut = words[j + 1][1] if j + 1 < i else words[i][1]

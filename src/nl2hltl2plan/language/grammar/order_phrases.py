@@ -36,16 +36,18 @@ def not_one_reference(ref: str) -> bool:
 # its own begins; that command is a sentence of its own (its order is not A's)
 _STATE_THEN_COMMAND = re.compile(
     rf"(?<=\w )(?P<ref>{REFERENCE}\s+(?:the|a|an|your|my)\s+[^,.;!?]*?\b"
-    r"(?:is|are|has\s+been|have\s+been)\b[^,.;!?]*?),?\s+and\s+(?=(?:(?:please|also)\s+)?(?P<verb>[a-z]+)\b)",
+    r"(?:is|are|has\s+been|have\s+been)\b[^,.;!?]*?),?\s+and\s+(?P<adv>(?:finally|lastly|next)\s*,?\s+)?"
+    r"(?=(?:(?:please|also)\s+)?(?P<verb>[a-z]+)\b)",
     re.I,
 )
 
 
 def command_after_state(text: str) -> str:
     """ "A after the egg is in the sink, and put the bread ..." -> "A after the egg is in the sink. put the
-    bread ..." (a state said of a thing takes no command into its reference)."""
+    bread ..." (a state said of a thing takes no command into its reference); "..., and finally put the
+    bread ..." -> "... . finally put the bread ..." (the last step, after every task before it)."""
     return _STATE_THEN_COMMAND.sub(
-        lambda m: f"{m['ref']}. " if m["verb"].lower() in G.VERBS else m[0], text
+        lambda m: f"{m['ref']}. {m['adv'] or ''}" if m["verb"].lower() in G.VERBS else m[0], text
     )
 
 

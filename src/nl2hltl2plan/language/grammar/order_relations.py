@@ -43,12 +43,15 @@ def relate(
         if left := _ORDER_WORD_LEFT.search(spec.text):
             _clause_end_said(x, left[1].lower(), tasks, text, b)
     free = {t for u in tasks.units if any(kind == G.FREE for kind, _ in u.markers) for t in u.tasks}
+    # "A at any time, and B. Finally C": a clause's own "at any time" frees its task as a marker does
+    free |= {t for t, spec in enumerate(tasks.specs) if _ANY_TIME.search(spec.text)}
     steps = sentence_steps(tasks.units)
     # "A and B in any order, and finally C": "finally" comes after no task whose order is left open
     # (ANNOTATION_GUIDE.md), as with "A and B in any order. Finally C."
     loose = free | _any_order_steps(tasks, steps)
     for k in range(len(tasks.units)):
         _added_after_before_sentence(k, tasks.units, tasks, text, b)
+        _added_to_free(k, tasks, text, b)
         _then_also(k, tasks, text, b)
         _marker_edges(k, tasks, (free, loose), b, text, edges)
         _step_edges(k, tasks, steps, free, edges)
@@ -236,13 +239,38 @@ def _added_to_before(prev: Unit, u: Unit, tasks: Tasks, text: str, b: TaskBuilde
     (`order_scope.txt`'s `additive`), so the clause is refused by name rather than guessed; "Before that, Y
     and Z" (both before X) and "Before that, Y, then Z" are read."""
     said, own = tasks.specs[prev.tasks[-1]].text, tasks.specs[u.tasks[0]].text
+    if (word := _additive_between(said, own, text)) is None:
+        return
+    b.unparsed.append(f"{own!r} ({word!r} after a 'before that' clause: before that too? {ORDER_LEFT_OPEN})")
+
+
+def _added_to_free(k: int, tasks: Tasks, text: str, b: TaskBuilder) -> None:
+    """ "Whenever convenient, Y; also Z. Finally W": is Z at any time too, or does "finally" come after it?
+    The additive word leaves it open, so Z is refused by name where a later "then" / "finally" asks;
+    "Whenever convenient, Y and Z" frees both."""
+    units = tasks.units
+    u = units[k]
+    if k == 0 or units[k - 1].sentence != u.sentence or not u.tasks:
+        return
+    if not any(kind == G.FREE for kind, _ in u.markers):
+        return
+    if not any(kind in {G.THEN, G.FINALLY} for v in units[k + 1 :] if v.sentence != u.sentence
+               for kind, _ in v.markers):
+        return
+    said, own = tasks.specs[units[k - 1].tasks[-1]].text, tasks.specs[u.tasks[0]].text
+    if (word := _additive_between(said, own, text)) is not None:
+        why = f"after a clause allowed at any time: at any time too? {ORDER_LEFT_OPEN}"
+        b.unparsed.append(f"{own!r} ({word!r} {why})")
+
+
+def _additive_between(said: str, own: str, text: str) -> str | None:
+    """The additive word (`order_scope.txt`) that joins the clause `own` to the clause `said` before it."""
     low = text.lower()
     at = low.find(said.lower())
     end = low.find(own.lower(), at + len(said)) if at >= 0 else -1
     if end < 0 or (m := _ADDITIVE.match(text[at + len(said) : end])) is None:
-        return
-    word = m["word"].lower()
-    b.unparsed.append(f"{own!r} ({word!r} after a 'before that' clause: before that too? {ORDER_LEFT_OPEN})")
+        return None
+    return m["word"].lower()
 
 
 def _added_after_before_sentence(k: int, units: list[Unit], tasks: Tasks, text: str, b: TaskBuilder) -> None:
