@@ -75,9 +75,10 @@ def _place_in_turn(word: str) -> int | None:
     return int(word) if word.isdigit() else NUMBER_WORDS.get(word, _LETTERS.get(word))
 
 
-# a spec sheet's identifier ("Goal 2 (after goal 1):"), with the reference back it may carry
+# a spec sheet's identifier ("Goal 2 (after goal 1):", "Goal 1 - ..."), with the reference back it may carry
 _IDENTIFIER = re.compile(
-    r"(?:^|(?<=[.;!?]))\s*(?P<noun>goal|requirement)\s+(?P<t>\w+)\s*(?P<ref>[^:.;!?]*?)\s*:", re.IGNORECASE
+    r"(?:^|(?<=[.;!?]))\s*(?P<noun>goal|requirement)\s+(?P<t>\w+)\s*(?P<ref>[^:.;!?]*?)\s*(?::|\s[-–—]\s)",
+    re.IGNORECASE,
 )
 _BACK = (
     r"(?:,|\()\s*(?:but\s+)?(?:only\s+)?(?:after|once|following)\s+{noun}\s+(?P<b>\w+)"
@@ -88,12 +89,19 @@ _BACK = (
 def identifiers_chained_read(text: str) -> str:
     """A spec sheet's identifiers ("Goal 1: ... Goal 2: ...") list and never order; where each one after the
     first names the one just before it ("Goal 2 (after goal 1):", "Requirement 3, only after requirement
-    2:") and the first names none, the words say the order: the labels are steps in turn ("Step 2:").
+    2:") and the first names none, the words say the order: the labels are steps in turn ("Step 2:"). One
+    identifier alone, numbered 1 and opening the text, is a heading ("Goal 1: A on P. Then B on Q." is
+    "Goal: A on P. Then B on Q.").
 
     >>> identifiers_chained_read("Goal 1: A on P. Goal 2 (after goal 1): B on Q.")
     'Step 1: A on P. Step 2: B on Q.'
     """
     marks = list(_IDENTIFIER.finditer(text))
+    if len(marks) == 1 and not text[: marks[0].start()].strip() and not marks[0]["ref"]:
+        # "Goal 1: A on P. Then B on Q.": the one identifier, opening the text, numbers nothing else, so it
+        # lists nothing: a heading ("Goal:"), and the words after it say the order
+        m = marks[0]
+        return text if _place_in_turn(m["t"]) != 1 else f"{text[: m.end('noun')]}: {text[m.end() :].lstrip()}"
     if len(marks) < 2 or len({m["noun"].lower() for m in marks}) != 1:
         return text
     for turn, m in enumerate(marks, 1):
