@@ -15,8 +15,9 @@ from __future__ import annotations
 
 DEV_HANDOVER: dict[str, dict[int, list[str]]] = {
     "at_end_then": {
-        4: ["At the end, the three blocks should be in the opposite regions, and no arm may touch the blue "
-            "block before the red block has been touched. After that, put the yellow block back on region G."],
+        4: ["At the end, the three blocks should be in the opposite regions, and no arm may touch the "
+            "blue block before the red block has been touched. After that, put the yellow block back on "
+            "region G."],
         8: ["At the end, the yellow block should be on region I. Then put the yellow block on region G, and "
             "at any time move the red and blue blocks to any empty region."],
     },
@@ -33,8 +34,8 @@ DEV_HANDOVER: dict[str, dict[int, list[str]]] = {
             "block placed before the blue block."],
     },
     "run_on": {
-        8: ["put the yellow block on region i then put the yellow block on region g and move the red and blue "
-            "blocks to any empty region at any time"],
+        8: ["put the yellow block on region i then put the yellow block on region g and move the red and "
+            "blue blocks to any empty region at any time"],
         4: ["move the three blocks to the opposite regions dont touch the blue block until the red block has "
             "been touched after all of that put the yellow block back on region g"],
     },
@@ -74,14 +75,14 @@ HELD_HANDOVER: dict[str, dict[int, list[str]]] = {
     "question": {
         3: ["Would you place the three pillars on regions E, F and G, by arm a and arm b, without using any "
             "region other than those?",
-            "Could the three pillars go to regions E, F and G next to arm a and arm b, without putting any of "
-            "them on any other region?"],
+            "Could the three pillars go to regions E, F and G next to arm a and arm b, without putting any "
+            "of them on any other region?"],
     },
 }
 
 DEV_TABLETOP: dict[int, list[str]] = {
-    4: ["Goal 1: the orange and the green apple on the yellow plate. Then the red apple and the carrot on the "
-        "blue plate, in any order.",
+    4: ["Goal 1: the orange and the green apple on the yellow plate. Then the red apple and the carrot on "
+        "the blue plate, in any order.",
         "Goal 1 - put the green apple and the orange on the yellow plate.\nThen the carrot and the red apple "
         "go on the blue plate."],
 }

@@ -40,8 +40,8 @@ def test_tabletop_goal_label_then_gives_the_tasks_and_order(task: int, text: str
         (8, "At the end, the yellow block should be on region I. Then put it on region G. Move the red and "
             "blue blocks to any empty region."),
         # one place in the perfect: where it is at the end, or where it once was?
-        (8, "At the end, the yellow block should have been on region I, and the red and blue blocks should be "
-            "on any empty region at any time."),
+        (8, "At the end, the yellow block should have been on region I, and the red and blue blocks should "
+            "be on any empty region at any time."),
         # a region named after "without using": not "any other region"
         (3, "Move the three pillars to regions E, F and G beside arm a and arm b without using region H."),
     ],
