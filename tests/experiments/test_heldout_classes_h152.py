@@ -2,7 +2,9 @@
 "at / by the end" state opening the message followed by a later step ("then", "after that": the text's
 order); a group said with its verb before a manner in commas ("X should be stacked, one at a time, on
 region I") and "piled"; places in turn in the perfect ("should have been on I and then on G"); "cant"
-without its apostrophe; "without using any other region" as "no other region should be used". Tabletop:
+without its apostrophe and a step marker with no punctuation around it ("... the red block after all of
+these place the yellow block ..."); "without using any other region" as "no other region should be used".
+Tabletop:
 one spec-sheet identifier opening the text ("Goal 1: ... Then ...") as a heading. The development sentences
 (`heldout_classes_h152.DEV_*`) give the written spec; the held-out ones (`HELD_*`) are read right or refused,
 never misread (`sweep`)."""
