@@ -75,6 +75,7 @@ def test_one_opening_identifier_is_a_heading() -> None:
         "Goal 2: A on P. Then B on Q.",  # numbered as if a goal came before it
         "Note. Goal 1: A on P. Then B on Q.",  # not opening the text
         "Goal 1 (after goal 0): A on P.",  # names another goal
+        "Goal 1: A on P\nGoal 2: B on Q",  # another goal on the next line: a list, not a heading
     ):
         assert identifiers_chained_read(kept) == kept
 

@@ -95,6 +95,10 @@ _IDENTIFIER = re.compile(
     r"(?:^|(?<=[.;!?]))\s*(?P<noun>goal|requirement)\s+(?P<t>\w+)\s*(?P<ref>[^:.;!?]*?)\s*(?::|\s[-–—]\s)",
     re.IGNORECASE,
 )
+_NUMBERED_IDENTIFIER = re.compile(
+    r"\b(?:goal|requirement)\s+(?:\d+|one|two|three|four|five|first|second|third|fourth|[a-d]|i{1,3}|iv)\b",
+    re.IGNORECASE,
+)
 
 
 def identifiers_chained_read(text: str) -> str:
@@ -108,7 +112,8 @@ def identifiers_chained_read(text: str) -> str:
     'Step 1: A on P. Step 2: B on Q.'
     """
     marks = list(_IDENTIFIER.finditer(text))
-    if len(marks) == 1 and not text[: marks[0].start()].strip() and not marks[0]["ref"]:
+    lone = len(_NUMBERED_IDENTIFIER.findall(text)) == 1  # no other goal numbered anywhere (a line, a mention)
+    if len(marks) == 1 and lone and not text[: marks[0].start()].strip() and not marks[0]["ref"]:
         # "Goal 1: A on P. Then B on Q.": the one identifier, opening the text, numbers nothing else, so it
         # lists nothing: a heading ("Goal:"), and the words after it say the order
         m = marks[0]
