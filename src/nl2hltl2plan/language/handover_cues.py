@@ -83,7 +83,7 @@ _WORDS = {
     "carried carries carrying transfer transferred transfers transferring bring brought brings get gets got "
     "take taken takes set sets setting deliver delivered send sent shift shifted relocate relocated end ends "
     "up down over across come comes distribute distributed return returned returns back lay laid travel "
-    "deposit deposited stack stacked stacking",
+    "deposit deposited stack stacked stacking pile piled piling",
     "TOUCH": "touch touched touches touching pick picked picking grasp grasped grab grabbed handle handled "
     "lift lifted",
     "NEG": "no not never nothing without none",
@@ -211,6 +211,7 @@ class _Reading:
         self.followed = False  # "red first, blue after": the leader's order is said
         self.step = ""
         self.group: list[str] = []  # blocks said alone, waiting for their place
+        self.group_moved = False  # the group said with a verb of moving or a modal ("X should be stacked")
         self.place: list[Place] = []  # places said alone, waiting for their blocks
         self.place_towards = False  # said with a preposition of direction ("onto region I, ...")
         self.mods: set[str] = set()  # a chunk of its own: "at any time", "one after another"
@@ -278,6 +279,8 @@ class _Reading:
             # "the three blocks, move to ...": subject, topic or the arms addressed?
             if self.group and (c.heading or not c.has("MOVE")):
                 blocks, self.group = self.group, []
+                # "X should be stacked, one at a time, on region I": the group's verb says it is a goal
+                c.modal |= self.group_moved
             elif len(places) == 1 and not rest:
                 self.place = places  # "regions H, I and J: the three blocks go there"
                 self.place_towards = c.towards
@@ -327,6 +330,7 @@ class _Reading:
             if self.goals and not self.goals[-1].blocks:
                 return False
             self.group = blocks
+            self.group_moved = c.has("MOVE") or c.modal
             return True
         return self._order(c)
 

@@ -304,12 +304,16 @@ _AT_THE_END = re.compile(r"\b(?:(?:at|in|by)\s+the\s+(?:very\s+)?end|finally|las
 def _opening_end_state(clauses: list[Clause], instruction: str) -> None:
     """'At the end, the red and blue blocks should have swapped places, and at any time the yellow block
     goes to the opposite side': an end state said once, opening the message, where every other goal is at
-    any time or said later still ('after all that, ...'), is the goal it states, not a last step; a last
-    step said before goals with no time of their own stays refused (`_refuse_misplaced_markers`)."""
+    any time or said later still ('after all that, ...'; after an 'at / by the end' state also a step
+    'then' / 'after that': the end of the first step, as the text orders them; never after 'finally'), is
+    the goal it states, not a last step; a last step said before goals with no time of their own stays
+    refused (`_refuse_misplaced_markers`)."""
     first, rest = clauses[0], clauses[1:]
-    if first.marker != "after_all" or not rest or len(_AT_THE_END.findall(instruction)) != 1:
+    ends = _AT_THE_END.findall(instruction)
+    if first.marker != "after_all" or not rest or len(ends) != 1:
         return
-    if all(c.anytime or c.marker == "after_all" for c in rest):
+    later = ("after_all", "then") if ends[0].lower().endswith("end") else ("after_all",)
+    if all(c.anytime or c.marker in later for c in rest):
         first.marker = ""
 
 

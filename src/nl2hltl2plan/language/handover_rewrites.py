@@ -296,7 +296,8 @@ REWRITES: tuple[tuple[str, str], ...] = (
     ),
     (r"\bone\s+after\s+(?:one|other)\b", "one after another"),
     (r"\bwont\b", "will not"),
-    (r"\b(do|does|can|should|must|is|are)nt\b", r"\1 not"),  # "dont", "cant" without the apostrophe
+    (r"\b(do|does|can|should|must|is|are)nt\b", r"\1 not"),  # "dont", "shouldnt" without the apostrophe
+    (r"\bcant\b", "can not"),  # "can't" without the apostrophe ("can" + "nt" is "cannt")
     # who asks: "the operator requires that the blocks be moved ..."; "please do the following:"
     (
         r"^\s*(?:the\s+)?(?:operator|user|client|customer|supervisor|lab|team|we|i)\s+(?:require|request|ask|want)s?\s+"

@@ -22,7 +22,8 @@ time (a word that might carry one is left for the reader, which reads it or refu
   nothing may go on them") is put in the pronoun's place; otherwise it is left, and refused by name;
 - unpunctuated dictation: where no comma, semicolon or colon is written, a clause break is restored where
   a colour follows a block, a region letter or "placed first" ("swap the red and blue blocks red placed
-  first yellow to ...").
+  first yellow to ..."), and around a step marker that a command follows ("... touched the red block after
+  all of these place the yellow block ...").
 """
 
 from __future__ import annotations
@@ -278,12 +279,22 @@ _MARKER_BREAK = re.compile(
 )
 
 
+# ... and around a step marker that a command follows ("... until an arm touched the red block after all of
+# these place the yellow block ...": the marker opens the command, never the clause before it, and "these"
+# is no determiner of "place")
+_STEP_BREAK = re.compile(
+    r"(?:(?<=\w)\s+|^\s*)(after\s+all(?:\s+of)?\s+(?:these|this|that|them)|after\s+(?:that|this)|afterwards)"
+    rf"\s+(?=(?:please\s+)?{VERB}\b)"
+)
+
+
 def _clause_breaks(text: str) -> str:
     """The commas of a sentence dictated without any punctuation, restored at the clause breaks of
-    `_CLAUSE_BREAK` and `_MARKER_BREAK`; a sentence with a comma, semicolon or colon is left as it is."""
+    `_CLAUSE_BREAK`, `_MARKER_BREAK` and `_STEP_BREAK`; a sentence with a comma, semicolon or colon is left
+    as it is."""
     if re.search(r"[,;:]", text):
         return text
-    text = _TOPIC_BREAK.sub(r"\1 , ", text)
+    text = _STEP_BREAK.sub(r" , \1 , ", _TOPIC_BREAK.sub(r"\1 , ", text))
     return _MARKER_BREAK.sub(r"\1 , ", _CLAUSE_BREAK.sub(r"\1 , ", text))
 
 

@@ -17,6 +17,8 @@ it or refuses it by name:
   P", "the goal is X placed on P" and "what I want to see at the end: X on P" are "at the end, X should
   be on P"; "should be sitting on" and "should sit (rest, end up) on" are "should be on"; "no other region
   should (ever) have been used" is "... should be used"; "should have stayed empty" is "should stay empty";
+  "should have been on I and then on G" (places in turn) is "should be on I and then on G"; "..., without
+  using any other region" and "using no other region" are "..., and no other region should be used";
   "should have swapped places" is "should swap places"; "on the way there" in a prohibition is "at any
   point"; "with nothing put on ... (until then)" is "nothing put on ... (meanwhile)";
 - a block's next place after "then" or "first and": "(and) then finish on / end up on / go on to region
@@ -113,7 +115,23 @@ _RULES: tuple[tuple[str, str], ...] = (
     # in a negated clause adds nothing ("no other region should ever be used")
     (r"(\b(?:no|nothing|not|never)\b[^,;.]*?\b(?:should|must|can|may|will))\s+ever\b", r"\1"),
     (r"\b(should|must|can|may|will)\s+have\s+been\s+(?=(?:used|occupied)\b)", r"\1 be "),
+    # the regions used, said as the manner of the move: "..., without using any other region" and "...,
+    # using no other region" (also "any region other than those") are "..., and no other region should be
+    # used"
+    (
+        r"\s*,?\s*\b(?:without\s+(?:using|occupying)\s+(?:any\s+)?|(?:using|occupying)\s+no\s+)(?:(?:other|"
+        r"another|further)\s+regions?|regions?\s+other\s+than\s+(?:those|these|them|that|the\s+(?:ones|"
+        r"regions)\s+(?:named|given|listed|mentioned)))\b",
+        ", and no other region should be used",
+    ),
     (r"\b(should|must|will)\s+have\s+been\s+(?=" + _PARTICIPLE + r"\b)", r"\1 be "),
+    # a sequence of places in the perfect: "should have been on region i (first) and then on region g" is
+    # "should be on region i and then on region g" (where it is, in turn); one place alone stays refused
+    (
+        r"\b(should|must|will)\s+have\s+been\s+(?=(?:on|in|at)\s+(?:regions?\s+)?[b-z]\b[^,;.]*?\b(?:on|in|at|"
+        r"onto|to)\s+(?:region\s+)?[b-z]\b)(?=[^,;.]*?\b(?:then|after\s+that|afterwards|later)\b)",
+        r"\1 be ",
+    ),
     (
         r"\b(should|must|will)\s+have\s+(?:stayed|remained|been\s+kept)\s+(?=(?:empty|clear|free|unoccupied)\b)",
         r"\1 stay ",

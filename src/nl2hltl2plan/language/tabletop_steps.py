@@ -42,13 +42,28 @@ _ALTERNATIVE_NOUNS = frozenset("option plan alternative choice scenario variant 
 _NOT_STEPS = _ALTERNATIVE_NOUNS | frozenset("goal requirement constraint".split())
 
 
+# a label's reference back to another label: ", only after round A", "(after goal 1)", "(once goal 1 is
+# done)"; one rule for every label (`_names_the_one_before`). What it adds differs: step labels order
+# already, so each reference to the step before is dropped (`label_references_dropped`); a spec sheet's
+# identifiers only list, so their order is said only where every one names the one before it
+# (`identifiers_chained_read`)
+_REFERENCE = (
+    r"(?:,|\()\s*(?:but\s+)?(?:only\s+)?(?:after|once|following)\s+(?P<noun2>[a-z]+)\s+(?P<b>\w+)"
+    r"(?:\s+is\s+(?:done|finished|complete))?\s*\)?"
+)
 # "Round B, only after round A:", "Batch two (after batch one):", "Chapter two, only after chapter one:": a
 # label that names the label before it (the same noun, one back in turn) says the order the labels say already
 _REFERS_BACK = re.compile(
-    r"(?P<label>(?P<noun>[a-z]+)\s+(?P<t>\w+))\s*(?:,|\()\s*(?:but\s+)?(?:only\s+)?(?:after|once|"
-    r"following)\s+(?P<noun2>[a-z]+)\s+(?P<b>\w+)(?:\s+is\s+(?:done|finished|complete))?\s*\)?\s*(?=[:.)\-])",
-    re.IGNORECASE,
+    rf"(?P<label>(?P<noun>[a-z]+)\s+(?P<t>\w+))\s*{_REFERENCE}\s*(?=[:.)\-])", re.IGNORECASE
 )
+
+
+def _names_the_one_before(noun: str, turn: int | None, reference: re.Match[str]) -> bool:
+    """Does the reference (`noun2`, `b` of `_REFERENCE`) of the label `noun` at place `turn` name the label
+    just before it: the same noun, one back in turn ("Round B, only after round A", "Goal 2 (after goal
+    1)", "step 2 starts after step 1")?"""
+    same_noun = noun.lower() == reference["noun2"].lower()
+    return same_noun and turn is not None and _place_in_turn(reference["b"]) == turn - 1
 
 
 # a remark after the labelled or numbered steps that confirms the order they give: "Please keep that
@@ -75,37 +90,52 @@ def _place_in_turn(word: str) -> int | None:
     return int(word) if word.isdigit() else NUMBER_WORDS.get(word, _LETTERS.get(word))
 
 
-# a spec sheet's identifier ("Goal 2 (after goal 1):"), with the reference back it may carry
+# a spec sheet's identifier ("Goal 2 (after goal 1):", "Goal 1 - ..."), with the reference back it may carry
 _IDENTIFIER = re.compile(
-    r"(?:^|(?<=[.;!?]))\s*(?P<noun>goal|requirement)\s+(?P<t>\w+)\s*(?P<ref>[^:.;!?]*?)\s*:", re.IGNORECASE
+    r"(?:^|(?<=[.;!?]))\s*(?P<noun>goal|requirement)\s+(?P<t>\w+)\s*(?P<ref>[^:.;!?]*?)\s*(?::|\s[-–—]\s)",
+    re.IGNORECASE,
 )
-_BACK = (
-    r"(?:,|\()\s*(?:but\s+)?(?:only\s+)?(?:after|once|following)\s+{noun}\s+(?P<b>\w+)"
-    r"(?:\s+is\s+(?:done|finished|complete))?\s*\)?"
+_NUMBERED_IDENTIFIER = re.compile(
+    r"\b(?:goal|requirement)\s+(?:\d+|one|two|three|four|five|first|second|third|fourth|[a-d]|i{1,3}|iv)\b",
+    re.IGNORECASE,
 )
 
 
 def identifiers_chained_read(text: str) -> str:
     """A spec sheet's identifiers ("Goal 1: ... Goal 2: ...") list and never order; where each one after the
     first names the one just before it ("Goal 2 (after goal 1):", "Requirement 3, only after requirement
-    2:") and the first names none, the words say the order: the labels are steps in turn ("Step 2:").
+    2:") and the first names none, the words say the order: the labels are steps in turn ("Step 2:"). One
+    identifier alone, numbered 1 and opening the text, is a heading ("Goal 1: A on P. Then B on Q." is
+    "Goal: A on P. Then B on Q.").
 
     >>> identifiers_chained_read("Goal 1: A on P. Goal 2 (after goal 1): B on Q.")
     'Step 1: A on P. Step 2: B on Q.'
     """
     marks = list(_IDENTIFIER.finditer(text))
+    lone = len(_NUMBERED_IDENTIFIER.findall(text)) == 1  # no other goal numbered anywhere (a line, a mention)
+    if len(marks) == 1 and lone and not text[: marks[0].start()].strip() and not marks[0]["ref"]:
+        # "Goal 1: A on P. Then B on Q.": the one identifier, opening the text, numbers nothing else, so it
+        # lists nothing: a heading ("Goal:"), and the words after it say the order
+        m = marks[0]
+        heading = f"{text[: m.end('noun')]}:{_space(m)}{text[m.end() :]}"
+        return heading if _place_in_turn(m["t"]) == 1 else text
     if len(marks) < 2 or len({m["noun"].lower() for m in marks}) != 1:
         return text
     for turn, m in enumerate(marks, 1):
-        back = re.fullmatch(_BACK.format(noun=m["noun"]), m["ref"], re.IGNORECASE) if m["ref"] else None
-        said_back = back is not None and _place_in_turn(back["b"]) == turn - 1
+        back = re.fullmatch(_REFERENCE, m["ref"], re.IGNORECASE) if m["ref"] else None
+        said_back = back is not None and _names_the_one_before(m["noun"], turn, back)
         if _place_in_turn(m["t"]) != turn or (turn > 1 and not said_back) or (turn == 1 and m["ref"]):
             return text
     out, pos = "", 0
     for turn, m in enumerate(marks, 1):
-        out += text[pos : m.start("noun")] + f"Step {turn}:"
+        out += text[pos : m.start("noun")] + f"Step {turn}:{_space(m)}"
         pos = m.end()
     return out + text[pos:]
+
+
+def _space(identifier: re.Match[str]) -> str:
+    """The space a dash after an identifier took with it ("Goal 1 - A on P"), given back after its colon."""
+    return " " if identifier[0][-1].isspace() else ""
 
 
 def label_references_dropped(text: str) -> str:
@@ -115,9 +145,7 @@ def label_references_dropped(text: str) -> str:
     text = identifiers_chained_read(text)
 
     def dropped(m: re.Match[str]) -> str:
-        turn, back = _place_in_turn(m["t"]), _place_in_turn(m["b"])
-        same_noun = m["noun"].lower() == m["noun2"].lower()
-        return m["label"] if same_noun and turn is not None and back == turn - 1 else m[0]
+        return m["label"] if _names_the_one_before(m["noun"], _place_in_turn(m["t"]), m) else m[0]
 
     return _REFERS_BACK.sub(dropped, text)
 
@@ -139,9 +167,9 @@ def order_confirmed_dropped(text: str, listed: bool) -> str:
         return text
 
     def restated(m: re.Match[str]) -> str:
-        turn, back = _place_in_turn(m["t"]), _place_in_turn(m["b"])
-        same = m["noun"].lower() == m["noun2"].lower() and len(labels) >= 2
-        return " " if same and turn is not None and back == turn - 1 and turn <= len(labels) else m[0]
+        turn = _place_in_turn(m["t"])
+        said = len(labels) >= 2 and _names_the_one_before(m["noun"], turn, m) and (turn or 0) <= len(labels)
+        return " " if said else m[0]
 
     return _STEP_AFTER.sub(restated, _KEEP.sub(" ", text))
 
