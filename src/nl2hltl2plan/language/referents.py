@@ -312,8 +312,9 @@ def plural_of_several(
         return []
     applies = convention is not None and (convention.always or plurals == "two")
     said: list[str] = []
-    for m in bare_plurals(instruction):
-        if _counted_before(instruction, m, tasks):
+    plurals_said = bare_plurals(instruction)
+    for m in plurals_said:
+        if _counted_before(instruction, m, tasks) or _both_after(instruction, m, plurals_said, tasks):
             continue
         covers = category_words().get(m.surface.lower())
         if covers and _as_category(m.surface.lower(), covers, tasks):
@@ -338,6 +339,27 @@ def bare_plurals(instruction: str) -> list[Mention]:
         for m in find_mentions(instruction)
         if m.plural and not m.entry.generic and not _counted(words[max(0, m.start - 3) : m.start])
     ]
+
+
+def _both_after(
+    instruction: str, m: Mention, plurals: Sequence[Mention], tasks: Sequence[BaseTaskSpec]
+) -> bool:
+    """Does a later "them both" or "both of them" say how many the plural is ("pick up the spoons, put
+    them both on the counter": two), with no other plural between them to refer to, and the one task of
+    its type takes two?"""
+    said = _BOTH_OF_THEM.search(instruction.lower(), m.char_end)
+    takes = [t.count for t in tasks if set(t.object) & set(m.entry.types)]
+    return (
+        said is not None
+        and takes == [2]
+        and not any(m.char_end <= o.char_start < said.start() for o in plurals)
+    )
+
+
+# "take the spoons. put them in the sink": a task of one thing said with a plural's pronoun read the plural
+# as one
+_PLURAL_PRONOUN = re.compile(r"\b(?:them|these|those)\b(?!\s+(?:one|first|last)\b)")
+_BOTH_OF_THEM = re.compile(r"\b(?:them|these|those)\s+both\b|\bboth\s+of\s+(?:them|these|those)\b")
 
 
 def _counted_before(instruction: str, m: Mention, tasks: Sequence[BaseTaskSpec]) -> bool:
@@ -369,15 +391,17 @@ def _not_several(
     held = {t: instances[t] for t in sorted(types) if instances.get(t)}
     total = sum(held.values())
     fewer = [task for task in tasks if 1 < task.count < total]
-    if not fewer:
+    as_one = [t for t in tasks if t.count == 1 < total and _PLURAL_PRONOUN.search((t.text or "").lower())]
+    if not fewer and not as_one:
         return []
-    if convention is not None:
+    if convention is not None and not as_one:
         words = _said(instruction, m)
         return [f"{words!r}: read as {fewer[0].count} of {scene}'s {total}, {convention.name}"]
     kinds = f" ({', '.join(f'{t} {n}' for t, n in held.items())})" if len(held) > 1 else ""
     one = f"\"the {m.entry.phrase}\" for one" if len(held) == 1 else "name which kind"
+    took = (fewer or as_one)[0].count
     raise HTTError(
-        f"{m.surface!r}: {scene} has {total} of them{kinds} and the task would take 2: say "
+        f"{m.surface!r}: {scene} has {total} of them{kinds} and the task would take {took}: say "
         f"how many (\"two {m.surface}\", \"all the {m.surface}\"), or {one}"
     )
 
