@@ -53,6 +53,43 @@ _AFTERTHOUGHT = re.compile(
 # "don't forget to put ...": a reminder, which asks as "please" asks (never a negation); "don't forget to
 # not ..." and "don't forget the mug" stay, and are read or refused as they are
 _REMINDER = re.compile(rf"\b{courtesy_pattern('reminder')}\s+to\s+(?!not\b|never\b)(?=[a-z])", re.I)
+# the fillers a text message ends a request with ("and yeah", "or whatever", "k thx", "lol"), one or more
+# after the last word of a sentence: the sentence's end or the text's end must follow, so "or whatever is
+# left" and "yeah, put the mug ..." stay as written
+_TRAILING = re.compile(
+    rf"(?:\s*,?\s*\b{courtesy_pattern('trailing')})+\b(?=\s*(?:[.!?]+(?:\s|$)|$))", re.I
+)
+
+
+# a reason after a request, up to its clause's end: a sentence's end, a comma, "(and) then" or "and" before a
+# verb that asks again ("put the mug in the sink because it's dirty and put ..."); `_keeps_reason` decides
+_REASON = re.compile(
+    rf"\s*,?\s+{courtesy_pattern('reason')}\s+(?P<why>{courtesy_pattern('reason_subject')}\b[^.;!?,]*?)"
+    r"(?=\s*(?:[.;!?]|$)|\s*,|\s+(?:and\s+)?then\b|\s+and\s+(?:put|place|set|move|take|bring|grab|get|wash|rinse|"
+    r"clean|heat|cool|chill|slice|cut|throw|turn)\b)",
+    re.I,
+)
+_TREATMENT = re.compile(rf"\b{courtesy_pattern('treatment')}\b", re.I)
+_KEPT = re.compile(rf"\b{courtesy_pattern('kept')}\b", re.I)
+
+
+def _keeps_reason(why: str) -> bool:
+    """Does a reason stay in the text: it speaks to "you" ("so you can wash it later": a request), or names
+    a treatment other than a state the place keeps ("so it gets washed" may ask for the washing)?"""
+    if re.search(r"\b(?:you|u|your|yourself)\b", why, re.I):
+        return True
+    return _TREATMENT.search(_KEPT.sub(" ", why)) is not None
+
+
+def without_reasons(text: str) -> str:
+    """`text` without the reasons said after its requests (`courtesy.txt`, `reason`), which ask for nothing.
+
+    >>> without_reasons("put the pear in the fridge so it stays cold, then put the cup in the sink because it's dirty")
+    'put the pear in the fridge, then put the cup in the sink'
+    >>> without_reasons("put the cup in the sink so it gets washed. put the pen away so you can use it")
+    'put the cup in the sink so it gets washed. put the pen away so you can use it'
+    """
+    return _REASON.sub(lambda m: m[0] if _keeps_reason(m["why"]) else "", text)
 
 
 def without_courtesy(text: str) -> str:
@@ -63,8 +100,10 @@ def without_courtesy(text: str) -> str:
     'put the mug in the sink and then the egg in the fridge. Also the cup in the sink'
     >>> without_courtesy("Robot, don't forget to put the spatula in the drawer!")
     'Robot, put the spatula in the drawer!'
+    >>> without_courtesy("put the pear in the fridge and yeah thats it. the cup in the sink or whatever k thx")
+    'put the pear in the fridge. the cup in the sink'
     """
-    out = _FRAME.sub(" ", _REMINDER.sub("", _AFTERTHOUGHT.sub(". Also ", text)))
+    out = _FRAME.sub(" ", _REMINDER.sub("", _AFTERTHOUGHT.sub(". Also ", _TRAILING.sub("", text))))
     out = re.sub(r"\s+([,.;:!?])", r"\1", " ".join(out.split()))
     out = re.sub(r"^[\s,.;:!?]+", "", out)
     return out if re.search(r"\w", out) else text
