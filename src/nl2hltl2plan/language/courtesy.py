@@ -84,8 +84,8 @@ def _keeps_reason(why: str) -> bool:
 def without_reasons(text: str) -> str:
     """`text` without the reasons said after its requests (`courtesy.txt`, `reason`), which ask for nothing.
 
-    >>> without_reasons("put the pear in the fridge so it stays cold, then put the cup in the sink because it's dirty")
-    'put the pear in the fridge, then put the cup in the sink'
+    >>> without_reasons("put the pear in the fridge so it stays cold, then the cup in the sink because it's wet")
+    'put the pear in the fridge, then the cup in the sink'
     >>> without_reasons("put the cup in the sink so it gets washed. put the pen away so you can use it")
     'put the cup in the sink so it gets washed. put the pen away so you can use it'
     """
@@ -100,7 +100,7 @@ def without_courtesy(text: str) -> str:
     'put the mug in the sink and then the egg in the fridge. Also the cup in the sink'
     >>> without_courtesy("Robot, don't forget to put the spatula in the drawer!")
     'Robot, put the spatula in the drawer!'
-    >>> without_courtesy("put the pear in the fridge and yeah thats it. the cup in the sink or whatever k thx")
+    >>> without_courtesy("put the pear in the fridge and yeah thats it. the cup in the sink or whatever kthx")
     'put the pear in the fridge. the cup in the sink'
     """
     out = _FRAME.sub(" ", _REMINDER.sub("", _AFTERTHOUGHT.sub(". Also ", _TRAILING.sub("", text))))

@@ -134,7 +134,8 @@ def _corrected(text: str, roles: Roles, read: list[str], swaps: list[tuple[str, 
             # grammar's ("what I mean is put ..."); words that name nothing ("I mean it") correct nothing
             # here (check 1 names a correction not followed)
             # ("actually no, put it ..." is "no, put it ...")
-            clause = re.sub(r"^actually[\s,]+", "", marker.lower()) in _CLAUSE_MARKERS and _opens_with_verb(said)
+            bare = re.sub(r"^actually[\s,]+", "", marker.lower())
+            clause = bare in _CLAUSE_MARKERS and _opens_with_verb(said)
             if clause and (added := _ADDS.search(after[: _sentence_end(after)])):
                 unclear = f"whether {said!r} after {marker!r} replaces or adds ({added[0]!r}) is unclear"
                 raise HTTError(f"{unclear}: {_AGAIN}")

@@ -492,8 +492,8 @@ def _done(d: Draft) -> bool:
 def _placed_again(d: Draft, fr: Frame, it: Item) -> bool:
     """ "put the remote on the sofa, then put it on the armchair": a thing put down at a final place and then
     put somewhere else ("then", "next"): two placings in sequence, each a task (not one task whose first
-    place is left unread); a first place that is a treatment's appliance ("put the mug in the sink, then put
-    it in the cabinet") or a clause with no sequence word ("put it on the sofa and put it ...") still joins."""
+    place is left unread); a first place that is a treatment's appliance ("put the mug in the sink, then
+    put it in the cabinet") or a clause with no sequence word ("put it on the sofa and put it ...") joins."""
     last_fr, last_it = d.frames[-1]
     return (
         fr.joiner == "then"
