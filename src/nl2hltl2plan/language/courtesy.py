@@ -23,7 +23,7 @@ import re
 from collections.abc import Callable
 from functools import cache
 
-from nl2hltl2plan.language.content_words import phrase_list_pattern, phrase_words
+from nl2hltl2plan.language.content_words import categories, phrase_list_pattern, phrase_words
 
 
 def courtesy_pattern(*kinds: str) -> str:
@@ -69,7 +69,8 @@ _REASON = re.compile(
     r"clean|heat|cool|chill|slice|cut|throw|turn)\b)",
     re.I,
 )
-_TREATMENT = re.compile(rf"\b{courtesy_pattern('treatment')}\b", re.I)
+# the content-word kinds of a treatment ("washed": verb_clean_place) that a reason may ask for
+_TREATMENTS = frozenset({"verb_heat_place", "verb_cool_place", "verb_clean_place", "verb_sliced"})
 _KEPT = re.compile(rf"\b{courtesy_pattern('kept')}\b", re.I)
 
 
@@ -78,7 +79,7 @@ def _keeps_reason(why: str) -> bool:
     a treatment other than a state the place keeps ("so it gets washed" may ask for the washing)?"""
     if re.search(r"\b(?:you|u|your|yourself)\b", why, re.I):
         return True
-    return _TREATMENT.search(_KEPT.sub(" ", why)) is not None
+    return any(categories(w) & _TREATMENTS for w in re.findall(r"[a-z]+", _KEPT.sub(" ", why).lower()))
 
 
 def without_reasons(text: str) -> str:
@@ -100,7 +101,7 @@ def without_courtesy(text: str) -> str:
     'put the mug in the sink and then the egg in the fridge. Also the cup in the sink'
     >>> without_courtesy("Robot, don't forget to put the spatula in the drawer!")
     'Robot, put the spatula in the drawer!'
-    >>> without_courtesy("put the pear in the fridge and yeah thats it. the cup in the sink or whatever kthx")
+    >>> without_courtesy("put the pear in the fridge and yeah that's it. the cup in the sink or whatever kthx")
     'put the pear in the fridge. the cup in the sink'
     """
     out = _FRAME.sub(" ", _REMINDER.sub("", _AFTERTHOUGHT.sub(". Also ", _TRAILING.sub("", text))))

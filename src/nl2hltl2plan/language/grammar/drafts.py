@@ -495,6 +495,11 @@ def _placed_again(d: Draft, fr: Frame, it: Item) -> bool:
     place is left unread); a first place that is a treatment's appliance ("put the mug in the sink, then
     put it in the cabinet") or a clause with no sequence word ("put it on the sofa and put it ...") joins."""
     last_fr, last_it = d.frames[-1]
+    first = dest_of(last_it, last_fr.cls)
+    if d.obj is None or d.obj.plural or (first is not None and first.is_movable_receptacle()):
+        return False  # "put the pencils in the mug, then put it ...": "it" is (or may be) the holder
+    if re.search(r"\b(?:back|return|returns)\b", fr.text, re.I):
+        return False  # "then put it back (where it was)": the place it was taken from (`put_back`)
     return (
         fr.joiner == "then"
         and fr.cls == last_fr.cls == "place"
