@@ -76,9 +76,12 @@ _KEPT = re.compile(rf"\b{courtesy_pattern('kept')}\b", re.I)
 
 def _keeps_reason(why: str) -> bool:
     """Does a reason stay in the text: it speaks to "you" ("so you can wash it later": a request), or names
-    a treatment other than a state the place keeps ("so it gets washed" may ask for the washing)?"""
+    a treatment other than a state the place keeps ("so it gets washed" may ask for the washing), unless it
+    is the speaker's own purpose ("so I can wash it later")?"""
     if re.search(r"\b(?:you|u|your|yourself)\b", why, re.I):
         return True
+    if re.match(r"(?:i|i'm)\b", why, re.I):
+        return False  # the speaker's own purpose ("so I can wash it later"): the speaker does it
     return any(categories(w) & _TREATMENTS for w in re.findall(r"[a-z]+", _KEPT.sub(" ", why).lower()))
 
 
@@ -101,7 +104,7 @@ def without_courtesy(text: str) -> str:
     'put the mug in the sink and then the egg in the fridge. Also the cup in the sink'
     >>> without_courtesy("Robot, don't forget to put the spatula in the drawer!")
     'Robot, put the spatula in the drawer!'
-    >>> without_courtesy("put the pear in the fridge and yeah that's it. the cup in the sink or whatever kthx")
+    >>> without_courtesy("put the pear in the fridge and yeah that's it. the cup in the sink or whatever lol")
     'put the pear in the fridge. the cup in the sink'
     """
     out = _FRAME.sub(" ", _REMINDER.sub("", _AFTERTHOUGHT.sub(". Also ", _TRAILING.sub("", text))))
