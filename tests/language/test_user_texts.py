@@ -60,7 +60,7 @@ def test_a_filler_that_does_not_end_a_sentence_stays(text, kept):
         "put the lettuce in the fridge so it stays cold",
         "put the lettuce in the fridge because we're out of room on the counter",
         "put the lettuce in the fridge so that nobody eats it",
-        "put the lettuce in the fridge since it keeps wilting",
+        "put the lettuce in the fridge cause it keeps wilting",
         "put the lettuce in the fridge so I can slice it later",  # the speaker's own purpose
     ],
 )

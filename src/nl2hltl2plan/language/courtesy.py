@@ -88,7 +88,7 @@ def _keeps_reason(why: str) -> bool:
 def without_reasons(text: str) -> str:
     """`text` without the reasons said after its requests (`courtesy.txt`, `reason`), which ask for nothing.
 
-    >>> without_reasons("put the pear in the fridge so it stays cold, then the cup in the sink since it is")
+    >>> without_reasons("put the pear in the fridge so it stays cold, then the cup in the sink because it is")
     'put the pear in the fridge, then the cup in the sink'
     >>> without_reasons("put the cup in the sink so it gets washed. put the pen away so you can use it")
     'put the cup in the sink so it gets washed. put the pen away so you can use it'
