@@ -23,7 +23,7 @@ import re
 from collections.abc import Callable
 from functools import cache
 
-from nl2hltl2plan.language.content_words import phrase_list_pattern, phrase_words
+from nl2hltl2plan.language.content_words import categories, phrase_list_pattern, phrase_words
 
 
 def courtesy_pattern(*kinds: str) -> str:
@@ -53,6 +53,47 @@ _AFTERTHOUGHT = re.compile(
 # "don't forget to put ...": a reminder, which asks as "please" asks (never a negation); "don't forget to
 # not ..." and "don't forget the mug" stay, and are read or refused as they are
 _REMINDER = re.compile(rf"\b{courtesy_pattern('reminder')}\s+to\s+(?!not\b|never\b)(?=[a-z])", re.I)
+# the fillers a text message ends a request with ("and yeah", "or whatever", "k thx", "lol"), one or more
+# after the last word of a sentence: the sentence's end or the text's end must follow, so "or whatever is
+# left" and "yeah, put the mug ..." stay as written
+_TRAILING = re.compile(
+    rf"(?:\s*,?\s*\b{courtesy_pattern('trailing')})+\b(?=\s*(?:[.!?]+(?:\s|$)|$))", re.I
+)
+
+
+# a reason after a request, up to its clause's end: a sentence's end, a comma, "(and) then" or "and" before a
+# verb that asks again ("put the mug in the sink because it's dirty and put ..."); `_keeps_reason` decides
+_REASON = re.compile(
+    rf"\s*,?\s+{courtesy_pattern('reason')}\s+(?P<why>{courtesy_pattern('reason_subject')}\b[^.;!?,]*?)"
+    r"(?=\s*(?:[.;!?]|$)|\s*,|\s+(?:and\s+)?then\b|\s+and\s+(?:put|place|set|move|take|bring|grab|get|wash|rinse|"
+    r"clean|heat|cool|chill|slice|cut|throw|turn)\b)",
+    re.I,
+)
+# the content-word kinds of a treatment ("washed": verb_clean_place) that a reason may ask for
+_TREATMENTS = frozenset({"verb_heat_place", "verb_cool_place", "verb_clean_place", "verb_sliced"})
+_KEPT = re.compile(rf"\b{courtesy_pattern('kept')}\b", re.I)
+
+
+def _keeps_reason(why: str) -> bool:
+    """Does a reason stay in the text: it speaks to "you" ("so you can wash it later": a request), or names
+    a treatment other than a state the place keeps ("so it gets washed" may ask for the washing), unless it
+    is the speaker's own purpose ("so I can wash it later")?"""
+    if re.search(r"\b(?:you|u|your|yourself)\b", why, re.I):
+        return True
+    if re.match(r"(?:i|i'm)\b", why, re.I):
+        return False  # the speaker's own purpose ("so I can wash it later"): the speaker does it
+    return any(categories(w) & _TREATMENTS for w in re.findall(r"[a-z]+", _KEPT.sub(" ", why).lower()))
+
+
+def without_reasons(text: str) -> str:
+    """`text` without the reasons said after its requests (`courtesy.txt`, `reason`), which ask for nothing.
+
+    >>> without_reasons("put the pear in the fridge so it stays cold, then the cup in the sink because it is")
+    'put the pear in the fridge, then the cup in the sink'
+    >>> without_reasons("put the cup in the sink so it gets washed. put the pen away so you can use it")
+    'put the cup in the sink so it gets washed. put the pen away so you can use it'
+    """
+    return _REASON.sub(lambda m: m[0] if _keeps_reason(m["why"]) else "", text)
 
 
 def without_courtesy(text: str) -> str:
@@ -63,8 +104,10 @@ def without_courtesy(text: str) -> str:
     'put the mug in the sink and then the egg in the fridge. Also the cup in the sink'
     >>> without_courtesy("Robot, don't forget to put the spatula in the drawer!")
     'Robot, put the spatula in the drawer!'
+    >>> without_courtesy("put the pear in the fridge and yeah that's it. the cup in the sink or whatever lol")
+    'put the pear in the fridge. the cup in the sink'
     """
-    out = _FRAME.sub(" ", _REMINDER.sub("", _AFTERTHOUGHT.sub(". Also ", text)))
+    out = _FRAME.sub(" ", _REMINDER.sub("", _AFTERTHOUGHT.sub(". Also ", _TRAILING.sub("", text))))
     out = re.sub(r"\s+([,.;:!?])", r"\1", " ".join(out.split()))
     out = re.sub(r"^[\s,.;:!?]+", "", out)
     return out if re.search(r"\w", out) else text

@@ -50,7 +50,8 @@ _CLAUSE_MARKERS = frozenset({"no", "nope", "scratch that part"})
 # words that add to or order against what was said before: a clause with one replaces nothing for certain
 _ADDS = re.compile(r"\b(?:too|also|as\s+well|first|again|another|additionally|either|instead\s+of)\b", re.I)
 _MARKER = re.compile(
-    rf"{_PAUSE}(?P<marker>(?:{_WORDS}|(?<=[,;—–.…-])\s*{_AFTER_PAUSE}(?=[\s,.!]|$))(?:[\s,:;.…—–-]*{_WORDS})*)"
+    rf"{_PAUSE}(?P<marker>(?:{_WORDS}|(?<=[,;—–.…-])\s*{_AFTER_PAUSE}(?=[\s,.!]|$))"
+    rf"(?:[\s,:;.…—–-]*(?:{_WORDS}|(?:no|nope)(?=[\s,.!]|$)))*)"  # "actually no", "sorry, no"
     r"(?:\s*[,:;.…—–-]+)?\s*",
     re.I,
 )
@@ -132,7 +133,9 @@ def _corrected(text: str, roles: Roles, read: list[str], swaps: list[tuple[str, 
             # a clause after a pause marker replaces the verb phrase before it; other clauses are the
             # grammar's ("what I mean is put ..."); words that name nothing ("I mean it") correct nothing
             # here (check 1 names a correction not followed)
-            clause = marker.lower() in _CLAUSE_MARKERS and _opens_with_verb(said)
+            # ("actually no, put it ..." is "no, put it ...")
+            bare = re.sub(r"^actually[\s,]+", "", marker.lower())
+            clause = bare in _CLAUSE_MARKERS and _opens_with_verb(said)
             if clause and (added := _ADDS.search(after[: _sentence_end(after)])):
                 unclear = f"whether {said!r} after {marker!r} replaces or adds ({added[0]!r}) is unclear"
                 raise HTTError(f"{unclear}: {_AGAIN}")
@@ -158,7 +161,10 @@ def _corrected(text: str, roles: Roles, read: list[str], swaps: list[tuple[str, 
                 swaps.append((swap[1], restated[0]))
                 continue
         if not _PREP.match(said) and (name := _name_then_place(said)):
-            cut, said = cut - len(said) + len(name), name  # "the egg, no wait, the apple in the fridge"
+            if _named_last(text[: m.start()], name):  # "the book on the desk, actually no, the book in the
+                said = said[len(name) :].strip()  # drawer": the same thing, so the place is what it corrects
+            else:
+                cut, said = cut - len(said) + len(name), name  # "the egg, no wait, the apple in the fridge"
         if not said and marker.lower() in ("no", "nope", "actually"):
             start = m.end()  # "..., actually." closing a clause corrects nothing
             continue
@@ -203,6 +209,13 @@ def _name_then_place(said: str) -> str | None:
     return said[: named[0].char_end]
 
 
+def _named_last(before: str, name: str) -> bool:
+    """Is `name` ("the book") the thing last named in the sentence before the marker (its words, as said)?"""
+    head = _sentence_start(before)
+    things = [n for n in find_mentions(before) if n.char_start >= head and not _after_preposition(before, n)]
+    return bool(things) and things[-1].surface.lower() == _DET.sub("", name).lower()
+
+
 def _said(after: str) -> int:
     """Where the words a correction says end in the text `after` its marker."""
     for end in _CLAUSE_END.finditer(after):
@@ -216,6 +229,8 @@ def _replaced(before: str, said: str, marker: str, roles: Roles) -> str:
     if not said:
         raise HTTError(f"the correction {marker!r} says nothing in place of what it corrects: {_AGAIN}")
     head = _sentence_start(before)
+    if not before[head:].strip() and before.strip():  # "... in the microwave. Sorry, I mean the potato"
+        head = _sentence_start(before.rstrip()[:-1])  # a correction opening a sentence: the one before
     found = [n for n in find_mentions(before) if n.char_start >= head]
     if _PREP.match(said):  # a place with its preposition
         places = [n for n in found if _after_preposition(before, n)]

@@ -267,6 +267,8 @@ class DraftBuilder:
             # "put a toilet paper on the counter, then another one in the cabinet": a task of its own
             it.obj = replace(d.obj, text=it.obj.text)
             d = None
+        if d is not None and it.obj is not None and it.obj.pronoun and _placed_again(d, fr, it):
+            it.obj, d = d.obj or it.obj, None  # "put the remote on the sofa, then put it on the armchair"
         nxt, at = st.next_clause, st.sentence.offset
         if (
             d is not None
@@ -423,7 +425,7 @@ def joins(d: Draft, fr: Frame, it: Item) -> bool:
             return False  # "fill water in the bathtub": not about the current object
         return fr.cls != "none" or bool(it.pps)
     if o.pronoun:
-        return True
+        return not _placed_again(d, fr, it)
     if o.is_lamp() and (fr.cls in {"light", "examine"} or fr.light_on):
         return incomplete(d)  # "pick up the keys and turn on the lamp"; not after a placement
     if cur is None:
@@ -485,6 +487,26 @@ def _done(d: Draft) -> bool:
     states |= {s for _, i in d.frames if i.obj is not None for s in i.obj.states}
     states &= set(_APPLIANCE)
     return bool(states) and all(_APPLIANCE[s] != dest.entry.canonical for s in states)
+
+
+def _placed_again(d: Draft, fr: Frame, it: Item) -> bool:
+    """ "put the remote on the sofa, then put it on the armchair": a thing put down at a final place and then
+    put somewhere else ("then", "next"): two placings in sequence, each a task (not one task whose first
+    place is left unread); a first place that is a treatment's appliance ("put the mug in the sink, then
+    put it in the cabinet") or a clause with no sequence word ("put it on the sofa and put it ...") joins."""
+    last_fr, last_it = d.frames[-1]
+    first = dest_of(last_it, last_fr.cls)
+    if d.obj is None or d.obj.plural or (first is not None and first.is_movable_receptacle()):
+        return False  # "put the pencils in the mug, then put it ...": "it" is (or may be) the holder
+    if re.search(r"\b(?:back|return|returns)\b", fr.text, re.I):
+        return False  # "then put it back (where it was)": the place it was taken from (`put_back`)
+    return (
+        fr.joiner == "then"
+        and fr.cls == last_fr.cls == "place"
+        and _done(d)
+        and dest_of(it, fr.cls) is not None
+        and not same(dest_of(it, fr.cls), dest_of(last_it, last_fr.cls))
+    )
 
 
 def _placed(d: Draft) -> bool:

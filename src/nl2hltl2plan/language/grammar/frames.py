@@ -153,7 +153,7 @@ class _ItemReader:
             self._flush()  # "from between the sink and the toilet": both say where it is
             self.source_pair = False
             return i + 1
-        if w in {",", "and"} or (w == "or" and self.cur_prep is None):
+        if w in {",", "and", "plus"} or (w == "or" and self.cur_prep is None):  # "plus": a list's "and"
             self.choice = self.choice or w == "or"
             self._flush()
             # a new list item starts when the next words are a noun phrase without preposition
