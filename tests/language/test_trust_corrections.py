@@ -250,3 +250,12 @@ def test_zap_is_a_word_for_heating(backend):
     # the lead's user set 19: "zap the potato in the microwave" was refused, 'zap' unread
     text = "zap the potato in the microwave and then leave it on the counter"
     assert _summaries(text, "FloorPlan13", backend) == ["heat_place Potato -> CounterTop"]
+
+
+def test_an_appliance_where_the_thing_ends_names_no_treatment():
+    # h154's finding: the learned re-read read "put the apple in the fridge and stuff" as cooling, exit 0
+    cooled = BaseTaskSpec(id="A", kind="cool_place", object=["Apple"], receptacle=["Fridge"])
+    unread = account("put the apple in the fridge and stuff", [cooled], [])
+    assert any("treatment is named nowhere" in u.reason for u in unread)
+    via_fridge = BaseTaskSpec(id="A", kind="cool_place", object=["Apple"], receptacle=["CounterTop"])
+    assert not account("put the apple in the fridge, then on the counter", [via_fridge], [])

@@ -357,7 +357,10 @@ def _invented_kinds(
     named = {m.entry.canonical for m in mentions if _a_stop(instruction, m, toks)}
     out = []
     for t in parse.tasks:
-        word = f"verb_{t.kind}" in verbs or bool(named & IMPLIED_TYPES.get(t.kind, set()))
+        # the appliance names the treatment as a stop on the way, not as where the thing ends ("put the
+        # apple in the fridge and stuff" is no cooling)
+        stops = named & IMPLIED_TYPES.get(t.kind, set()) - set(t.receptacle or ())
+        word = f"verb_{t.kind}" in verbs or bool(stops)
         word = word or (t.kind == "clean_place" and _of_water(instruction, mentions, t))
         if t.kind in IMPLIED_TYPES and not word:
             out.append(
