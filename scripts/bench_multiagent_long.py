@@ -1,7 +1,8 @@
 """How many of the paper's long instructions (5-9 base tasks, alfred_multiagent/test50, no ground
 truth) become a checked plan through the whole pipeline.
 
-    python scripts/bench_multiagent_long.py --backend offline --robots 2 --timeout 60 [--limit 10] [--plurals two]
+    python scripts/bench_multiagent_long.py --backend offline --robots 2 --timeout 60 [--limit 10] \
+        [--plurals two]
 
 Each instruction is planned in its floor plan (movable objects from the floor plan's first ALFRED
 trial outside the training exclusions) for a team started on the instance's first `init_pos` draw.
