@@ -16,9 +16,9 @@ DEV_HANDOVER: dict[str, dict[int, list[str]]] = {
     "steps_then_free": {
         8: ["Step 1: put the yellow block on region I. Step 2: put the yellow block on region G. The red and "
             "blue blocks also go to any empty region, at any step."],
-        2: ["Step 1: the red block goes on region H, I or J. Step 2: the blue block goes on region H, I or J. "
-            "Step 3: the yellow block goes on region H, I or J, one block per region. The steps may happen "
-            "in any order."],
+        2: ["Step 1: the red block goes on region H, I or J. Step 2: the blue block goes on region H, I or "
+            "J. Step 3: the yellow block goes on region H, I or J, one block per region. The steps may "
+            "happen in any order."],
     },
     "anonymous_counted": {
         2: ["Step 1: put one block on region H. Step 2: put another block on region I. Step 3: put the last "

@@ -36,7 +36,6 @@ from nl2hltl2plan.language.handover_places import (
 from nl2hltl2plan.language.handover_regex import apply, rewrite_table
 from nl2hltl2plan.language.handover_registers import REGISTERS
 from nl2hltl2plan.language.handover_rewrites import REWRITES
-from nl2hltl2plan.language.handover_shares import shared_out
 from nl2hltl2plan.language.handover_scene import (
     COLOUR,
     COUNTS,
@@ -47,6 +46,7 @@ from nl2hltl2plan.language.handover_scene import (
     Marked,
     Scene,
 )
+from nl2hltl2plan.language.handover_shares import shared_out
 from nl2hltl2plan.language.handover_spoken import unspoken
 from nl2hltl2plan.language.handover_typos import typo_table
 from nl2hltl2plan.language.handover_wishes import unwished
