@@ -51,6 +51,8 @@ _NEGATION = re.compile(
     r"|no\s+exceptions?|not\s+ever"
 )
 _NEGATED = re.compile(r"\b(?:no|not|nothing|never|none|cannot|can't|mustn't|n't|nobody)\b")
+# an arm list alone ("arms a, b", "arm a, arm b"): a landmark, which must agree with the place beside it
+_ARM_LIST = re.compile(r"arms?\s+[a-d](?:\s*(?:,|and|&)\s*(?:arm\s+)?[a-d])+|arm\s+[a-d]")
 _COURTESY = re.compile(r"(?:please|remember|of\s+course|mind\s+you|note|thanks|thank\s+you)(?:\s*!)?")
 
 
@@ -68,6 +70,8 @@ def _emphatic(text: str, aside: re.Match[str]) -> str:
         return " "
     if _NEGATION.fullmatch(words) and _NEGATED.search(_clause_before(text, aside.start())):
         return " "
+    if _ARM_LIST.fullmatch(words):  # terse: "to E, F, G (arms a, b)" says where, as "next to arms a, b" does
+        return f"(next to {words})"
     return aside[0]
 
 

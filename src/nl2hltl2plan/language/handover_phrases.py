@@ -46,6 +46,7 @@ from nl2hltl2plan.language.handover_scene import (
     Marked,
     Scene,
 )
+from nl2hltl2plan.language.handover_shares import shared_out
 from nl2hltl2plan.language.handover_spoken import unspoken
 from nl2hltl2plan.language.handover_typos import typo_table
 from nl2hltl2plan.language.handover_wishes import unwished
@@ -84,7 +85,7 @@ def normalise(sentence: str) -> str:
     text = re.sub(r"([,()/:])", r" \1 ", text)
     text = re.sub(r"\b(\w+)'s\b", r"\1 s", text)  # red's -> red s (a possessive)
     text = re.sub(r"[a-z]+", lambda w: TYPOS.get(w.group(0), w.group(0)), text)
-    text = _drop_framing(unwished(unspoken(text)))
+    text = _drop_framing(unwished(shared_out(unspoken(text))))
     text = apply(_TABLE, text)
     text = re.sub(r"\bplease\b\s*,?", " ", text)  # politeness anywhere: "all three blocks please move to ..."
     return " ".join(text.split())

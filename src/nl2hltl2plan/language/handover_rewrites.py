@@ -49,6 +49,8 @@ REWRITES: tuple[tuple[str, str], ...] = (
     # all the goals only where more than one goal comes before it)
     (r"\bfirst\b([^,.;:]*),\s*(?:and\s+)?(?:finally|lastly)\b", r"first\1, and then"),
     (r"\bwhilst\b", "while"),
+    # "..., at any step" after labelled steps: at any point of them, as "at any time" says
+    (r"\b(?:at|during|in)\s+any\s+(?:step|stage)\b", "at any time"),
     # "once region G is free, put the yellow block back there": the world lets a block down only on a free
     # region, so waiting for the goal's own region to be free is what any plan does ("if" stays: a condition)
     (
