@@ -17,7 +17,7 @@ from handover_specs import (
     assert_written_spec_or_refused,
     cases,
 )
-from test_tabletop import TASKS, signature
+from test_tabletop import TASKS, signature, signature_or_none
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.language.tabletop_steps import identifiers_chained_read
@@ -85,18 +85,11 @@ def test_an_end_state_without_its_order_is_not_the_written_spec() -> None:
                                    "at any time the yellow block should go to the opposite side.")
 
 
-def _signature_or_none(text: str) -> tuple[list, list] | None:
-    try:
-        return signature(text)
-    except Nl2Hltl2PlanError:
-        return None
-
-
 @pytest.mark.sweep
 @pytest.mark.data
 def test_held_out_end_states_are_read_right_or_refused() -> None:
     for task, text in cases(HELD_TABLETOP):
-        said = _signature_or_none(text)
+        said = signature_or_none(text)
         assert said is None or said == signature(TASKS[task].instruction), text
     for task, text in cases(HELD_HANDOVER):
         assert_written_spec_or_refused(task, text)

@@ -14,9 +14,8 @@ from __future__ import annotations
 import pytest
 from handover_specs import assert_refused_by_name, assert_written_spec, assert_written_spec_or_refused, cases
 from heldout_classes_h152 import DEV_HANDOVER, DEV_TABLETOP, HELD_HANDOVER, HELD_TABLETOP
-from test_tabletop import TASKS, signature
+from test_tabletop import TASKS, signature, signature_or_none
 
-from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.language.tabletop_steps import identifiers_chained_read
 
 
@@ -80,18 +79,11 @@ def test_one_opening_identifier_is_a_heading() -> None:
         assert identifiers_chained_read(kept) == kept
 
 
-def _signature_or_none(text: str) -> tuple[list, list] | None:
-    try:
-        return signature(text)
-    except Nl2Hltl2PlanError:
-        return None
-
-
 @pytest.mark.sweep
 @pytest.mark.data
 def test_held_out_classes_are_read_right_or_refused() -> None:
     for task, text in cases(HELD_TABLETOP):
-        said = _signature_or_none(text)
+        said = signature_or_none(text)
         assert said is None or said == signature(TASKS[task].instruction), text
     for task, text in cases(*HELD_HANDOVER.values()):
         assert_written_spec_or_refused(task, text)

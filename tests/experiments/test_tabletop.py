@@ -9,7 +9,7 @@ import pytest
 from rephrasings import DEV_H61, HARDER, REPHRASINGS, STYLES
 
 from nl2hltl2plan.config.llm_settings import LLMSettings
-from nl2hltl2plan.errors import WorldError
+from nl2hltl2plan.errors import Nl2Hltl2PlanError, WorldError
 from nl2hltl2plan.language.llm.client import LLMClient
 from nl2hltl2plan.language.task_specs import transitive_closure
 from nl2hltl2plan.language.translate import translate
@@ -27,6 +27,14 @@ def signature(instruction: str) -> tuple[list, list]:
     key = {t.id: (t.kind, tuple(t.object), tuple(t.receptacle or ())) for t in r.tasks}
     closure = transitive_closure(r.before, list(key))
     return sorted(key.values()), sorted((key[a], key[b]) for a, b in closure)
+
+
+def signature_or_none(instruction: str) -> tuple[list, list] | None:
+    """`signature`, or None where the reader refuses the instruction."""
+    try:
+        return signature(instruction)
+    except Nl2Hltl2PlanError:
+        return None
 
 
 def test_layouts_are_seeded_distinct_and_validated():
