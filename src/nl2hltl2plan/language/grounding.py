@@ -320,11 +320,11 @@ def find_mentions(text: str) -> list[Mention]:
 def _mentions(text: str) -> tuple[Mention, ...]:
     toks = _tokens(text)
     words = [t[0] for t in toks]
-    lex = lexicon()
+    lex, longest = lexicon(), _max_len()  # asked once per text, not once per word
     out: list[Mention] = []
     i = 0
     while i < len(words):
-        for n in range(min(_max_len(), len(words) - i), 0, -1):
+        for n in range(min(longest, len(words) - i), 0, -1):
             hit = lex.get(tuple(words[i : i + n]))
             if hit:
                 entry, plural = hit

@@ -54,7 +54,10 @@ PLACE_WORDS = {
 # ----- relations ---------------------------------------------------------------------------------
 def find_cycle(pairs: Iterable[tuple[str, str]]) -> list[str] | None:
     """The nodes of one cycle of the ordering, first node repeated at the end, or None."""
-    g = nx.DiGraph(list(pairs))
+    pairs = list(pairs)
+    if not pairs:  # no order at all (most readings): no graph to build
+        return None
+    g = nx.DiGraph(pairs)
     try:
         edges = nx.find_cycle(g)
     except nx.NetworkXNoCycle:

@@ -77,6 +77,7 @@ from nl2hltl2plan.language.content_words import (
     vocabulary,
 )
 from nl2hltl2plan.language.grounding import Mention, find_mentions, tokens
+from nl2hltl2plan.language.memo import reading_memo
 from nl2hltl2plan.language.parse_usage import ParseUsage
 from nl2hltl2plan.language.spelling import (
     english_frequency,
@@ -349,6 +350,7 @@ ORDER_TYPO_REASON = "may misspell an order word, as near to other words: say the
 _ORDER_WORD_SHAPE = re.compile(r"(?<![A-Za-z'])[A-Za-z]{4,}(?![A-Za-z'])")  # as the spelling rule's words
 
 
+@reading_memo  # a function of the text alone: check 1 asks it again for each other set of tasks
 def unread_words(instruction: str, toks: Tokens | None = None) -> list[Unread]:
     """Unknown verbs, things and modifiers, and misspelt order words, in that order (check 1's unknown
     words)."""

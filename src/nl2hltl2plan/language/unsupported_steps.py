@@ -420,15 +420,17 @@ _FIRST_OR_LAST = re.compile(r"\s+(?:(?:goes|comes|should go|has to go|must go)\s
 def first_and_last(instruction: str, mentions: list[Mention], parse: ParseUsage) -> list[Unread]:
     """ "..., then the tomato, but the egg first": the one task on the egg must come before every other
     task ("last": after every other); an order that does not say so left the words unread."""
-    order = nx.DiGraph(list(parse.before))
-    order.add_nodes_from(t.id for t in parse.tasks)
-    closure = {a: nx.descendants(order, a) for a in order}
+    closure: dict[str, set[str]] = {}  # built at the first "first" / "last" only: most texts have none
     out = []
     for m in mentions:
         said = _FIRST_OR_LAST.match(instruction.lower(), m.char_end)
         ids = [t.id for t in parse.tasks if set(t.object) & set(m.entry.types)]
         if said is None or len(ids) != 1 or len(parse.tasks) < 2:
             continue
+        if not closure:
+            order = nx.DiGraph(list(parse.before))
+            order.add_nodes_from(t.id for t in parse.tasks)
+            closure = {a: nx.descendants(order, a) for a in order}
         others = {t.id for t in parse.tasks} - {ids[0]}
         ordered = (
             others <= closure[ids[0]]

@@ -419,7 +419,7 @@ def _first_edges(units: list[Unit], steps: list[int], free: set[int], edges: Edg
     and not stated before X ("First X. Before all that, Y": Y first). In a sentence of several steps it is
     about the first step, and not before the other tasks of that step ("first A and B, then C": A and B
     first, in any order; "first A, then B and C": B not before C)."""
-    stated = nx.transitive_closure(nx.DiGraph(list(edges)))
+    stated: nx.DiGraph | None = None  # built at the first "first" only: most texts have none
     for k, u in enumerate(units):
         own = [steps[j] for j, v in enumerate(units) if v.sentence == u.sentence]  # its sentence's steps
         if steps[k] != own[0] or not any(kind == G.FIRST for kind, _ in u.markers):
@@ -431,6 +431,7 @@ def _first_edges(units: list[Unit], steps: list[int], free: set[int], edges: Edg
             continue
         step = steps[k] if own[-1] != own[0] else -1
         later = [t for j in range(k + 1, len(units)) if steps[j] != step for t in units[j].tasks]
+        stated = nx.transitive_closure(nx.DiGraph(list(edges))) if stated is None else stated
         later = [t for t in later if t not in free and not any(stated.has_edge(t, a) for a in u.tasks)]
         edges.update((a, b2) for a in u.tasks for b2 in later)
 
