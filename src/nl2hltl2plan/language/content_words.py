@@ -64,14 +64,15 @@ def _every_category() -> dict[str, frozenset[str]]:
 
 
 def word_categories(filename: str) -> dict[str, frozenset[str]]:
-    """category -> words of one of this package's `category: word word ...` files (a comment after '#')."""
+    """category -> words of one of this package's `category: word word ...` files (a comment after '#'; a
+    category may go on over several lines, each repeating its name)."""
     out: dict[str, frozenset[str]] = {}
     text = resources.files("nl2hltl2plan.language").joinpath(filename).read_text()
     for raw in text.splitlines():
         line = raw.split("#", 1)[0].strip()
         if line:
             name, _, words = line.partition(":")
-            out[name.strip()] = frozenset(words.split())
+            out[name.strip()] = out.get(name.strip(), frozenset()) | frozenset(words.split())
     return out
 
 

@@ -566,27 +566,8 @@ class Roles:
 
 
 def scene_types(scene: str) -> set[str]:
-    """Object types of an ALFRED floor plan from the shared data (scene_info and the layout's object list).
+    """Object types of an ALFRED floor plan from the shared data (scene_info and the layout's object list:
+    `worlds.floor_plans.listed_types`). Used where no `World` is at hand (benchmark measurement)."""
+    from nl2hltl2plan.worlds.floor_plans import listed_types
 
-    Used where no `World` is at hand (benchmark measurement); DataError when neither file exists.
-    """
-    from nl2hltl2plan.config import data_dir
-    from nl2hltl2plan.errors import DataError
-    from nl2hltl2plan.io import read_json
-
-    base = data_dir(required=True)
-    assert base is not None
-    found: set[str] = set()
-    info = base / "alfred_multiagent" / "scene_info" / f"{scene}.json"
-    try:
-        if info.exists():
-            found |= {k.split("_")[0] for k in read_json(info, "scene info file")["objects"]}
-        objs = base / "alfred" / "layouts" / f"{scene}-objects.json"
-        if objs.exists():
-            found |= {str(t) for t in read_json(objs, "ALFRED object list")}
-    except (KeyError, TypeError, AttributeError) as exc:
-        raise DataError(f"the object list of scene {scene} under {base} is damaged ({exc!r})") from None
-    if not found:
-        raise DataError(f"no object list for scene {scene} under {base}")
-    found.discard("Floor")
-    return found
+    return set(listed_types(scene))

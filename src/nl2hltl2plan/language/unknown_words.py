@@ -65,7 +65,6 @@ from __future__ import annotations
 
 import re
 from functools import cache
-from importlib import resources
 
 from nl2hltl2plan.language.content_words import (
     COMMAND_WORDS,
@@ -75,6 +74,7 @@ from nl2hltl2plan.language.content_words import (
     Unread,
     categories,
     vocabulary,
+    word_categories,
 )
 from nl2hltl2plan.language.grounding import Mention, find_mentions, tokens
 from nl2hltl2plan.language.memo import reading_memo
@@ -158,8 +158,9 @@ _NOT_A_THING = frozenset(
     "warm closest farthest nearest".split()
 )
 # the words a noun phrase opens after: what is between one of them and a name describes the thing
-MODIFIER_OPENS = _THING_DETERMINERS | _TAKES_A_THING | DETERMINERS | {"any", "each", "every", "all"}
-MODIFIER_OPENS |= {"his", "her"}
+MODIFIER_OPENS = _THING_DETERMINERS | _TAKES_A_THING | DETERMINERS | frozenset(
+    "any each every all his her".split()
+)
 _THING_ENDS = LOCATIVE | _COMMAND_START | frozenset("to into onto or with before after until once".split())
 THING_REASON = "no object of this world is called so"
 
@@ -311,8 +312,7 @@ def _slip_of_descriptive(word: str) -> bool:
 @cache
 def descriptive_words() -> frozenset[str]:
     """The words people use before the names of household things (`descriptive_words.txt`)."""
-    text = resources.files("nl2hltl2plan.language").joinpath("descriptive_words.txt").read_text()
-    return frozenset(w for line in text.splitlines() if not line.startswith("#") for w in line.split()[1:])
+    return word_categories("descriptive_words.txt")["words"]
 
 
 @cache

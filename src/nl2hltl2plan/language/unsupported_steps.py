@@ -21,6 +21,7 @@ import networkx as nx
 
 from nl2hltl2plan.domain.task_kinds import APPLIANCE
 from nl2hltl2plan.language.content_words import DETERMINERS, Unread, categories
+from nl2hltl2plan.language.grammar.frames import UNDER
 from nl2hltl2plan.language.grammar.put_back import WHERE_IT_WAS
 from nl2hltl2plan.language.grammar.repeats import REPEAT_FRAGMENT
 from nl2hltl2plan.language.grounding import Mention, lookup, sentence_start, tokens
@@ -97,7 +98,7 @@ def under_a_place(instruction: str, mentions: list[Mention], parse: ParseUsage) 
 
 
 _UNDER = "no base task puts a thing under another: say in or on"
-_UNDER_BEFORE = re.compile(r"\b(?:under|underneath|below|beneath)\s+(?:the\s+|a\s+|an\s+|your\s+|my\s+)?$")
+_UNDER_BEFORE = re.compile(rf"\b(?:{'|'.join(sorted(UNDER))})\s+(?:the\s+|a\s+|an\s+|your\s+|my\s+)?$")
 
 
 _PICKS_ONE = re.compile(

@@ -212,8 +212,8 @@ def scene_types(fp: str) -> tuple[str, ...]:
 @cache
 def listed_types(fp: str) -> frozenset[str]:
     """Object types either list of the scene names: ALFRED's objects.json and AI2-THOR's scene_info
-    instances (`Type_hash`; absent file: none), the Floor left out. The language stage grounds against
-    the same union (`language.grounding.scene_types`)."""
+    instances (`Type_hash`; absent file: none), the Floor left out; the union the language stage grounds
+    against (`language.grounding.scene_types`)."""
     found = set(scene_types(fp))
     base = data_dir(required=True)
     assert base is not None
