@@ -123,3 +123,32 @@ def test_a_fragment_near_miss_keeps_its_reading(text, second):
 def test_a_fragment_of_the_same_type_is_refused():
     """ "the mug ... Same for the coffee mug": one type twice, which the spec's atoms cannot keep apart."""
     assert "(fragment)" in _refused(f"{KITCHEN} Same for the coffee mug.", "FloorPlan1", "offline")
+
+
+@pytest.mark.parametrize(
+    ("text", "world", "second"),
+    [
+        # h159 (issue 28, paper-style): an order word before the repeat orders it after the task before
+        ("Put the tomato in the microwave, and then do the same with the potato.", "FloorPlan5",
+         ("place", "Potato", False, ["Microwave"])),
+        ("Chill the potato and put it in the microwave. After that, do the same with the tomato.",
+         "FloorPlan5",
+         ("cool_place", "Tomato", False, ["Microwave"])),
+        # an examination under a lamp is one plain task too ("the light of the lamp" is the lamp's)
+        ("Look at the watch by the light of the lamp, and once you have done that, do the same with the "
+         "alarm clock.", "FloorPlan301", ("examine_in_light", "AlarmClock", False, None)),
+    ],
+)  # fmt: skip
+def test_a_repeat_after_an_order_word_follows_the_task_before(text, world, second):
+    tasks, before = _read(text, world, "offline")
+    assert tasks[1] == second and before == [("A", "B")]
+
+
+def test_an_ordered_repeat_of_several_things_is_not_written_out():
+    """ "then do the same with the potato and the apple": their own order is not said, so nothing is
+    written out (check 1 names the fragment), and a split sentence is kept as written."""
+    for text in (
+        "Put the tomato in the microwave, and then do the same with the potato and the apple.",
+        "Put the tomato in the microwave after the egg is in the fridge, then do the same with the potato.",
+    ):
+        assert repeated_for_another(text) == text

@@ -10,6 +10,7 @@ from nl2hltl2plan.language.content_words import phrase_list_pattern
 from nl2hltl2plan.language.courtesy import without_call
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.everyday import everyday
+from nl2hltl2plan.language.grammar.lamp_phrases import lamp_phrasing
 from nl2hltl2plan.language.grammar.order_phrases import (
     after_the_step,
     clause_refs,
@@ -25,6 +26,7 @@ from nl2hltl2plan.language.grammar.order_phrases import (
     the_moment,
 )
 from nl2hltl2plan.language.grammar.phrases import match_prep, parse_np, tokens
+from nl2hltl2plan.language.grammar.sentence_joins import joined_treatments
 from nl2hltl2plan.language.grammar.subordinate import treated_before, treatment_of_it
 from nl2hltl2plan.language.grounding import find_mentions, sentence_start
 from nl2hltl2plan.language.statements import RELATIVE_PLACE
@@ -264,13 +266,6 @@ _FOLLOWED_TO = re.compile(
     r"(?:it |them )?(to|into|onto|in|on)\b",
     re.IGNORECASE,
 )
-# "use the light from the lamp to look at the book": the lamp lights the examination
-_USE_LAMP = re.compile(
-    r"\b(?:use|using) (?:the |a )?(?:light (?:from|of) (?:the |a )?)?(?P<lamp>(?:\w+ )?lamp|light)"
-    r"(?: light)? to (?P<verb>look at|see|examine|view|read|inspect|check) "
-    r"(?P<obj>[^,.;!?]+?)(?=[,.;!?]|\s+(?:and|then)\b|$)",
-    re.IGNORECASE,
-)
 # "cool some bread and the place it on the counter", "put two apples on a counter the cut them": "the"
 # typed for "then" (a verb and "it"/"them" follow it, so it opens no noun phrase)
 _THE_FOR_THEN = re.compile(r"\b(?<!of )the (?=([a-z]+) (?:it|them)\b)", re.IGNORECASE)
@@ -371,8 +366,6 @@ _TAKE_LIST_THEN_PUT = re.compile(
     r"(?=(?:in|into|on|onto|to|inside|away|back|down)\b)",
     re.IGNORECASE,
 )
-# "examine the box using the light from a floor lamp": the light of that lamp
-_LIGHT_FROM = re.compile(r"\blight from (?=(?:the |a |an )?(?:[a-z]+ )?(?:lamp|light)\b)", re.IGNORECASE)
 # "a rinse off bar of soap", "the rinse soap": the rinsed one (ALFRED's annotators' adjective)
 _RINSE_ADJ = re.compile(r"\b(a|an|the)\s+rinse(?:\s+off)?\s+(?=[a-z])", re.IGNORECASE)
 # Inside a sentence, a marker that the step before is done is "then" (at its start the leading markers
@@ -440,6 +433,7 @@ def normalize(text: str) -> str:
     text = re.sub(r"(?<=[a-z])\.(?=[A-Za-z])", ". ", text)
     text = _BUT_SURE_FIRST.sub(r"\1first ", text)
     text = without_call(everyday(text))  # terse, spoken and need styles, "hey robot put" (issue 28)
+    text = joined_treatments(text)  # "Heat the egg. Then put it in the fridge.": one task (sentence_joins.py)
     text = _O_FOR_ON.sub("on ", text)
     text = _SIDE_OF.sub(r"\g<pre>\g<sep>to the \g<side> of ", text)
     text = _CONTENT_IN_IT.sub(_with_left_out, text)
@@ -469,9 +463,7 @@ def normalize(text: str) -> str:
     text = _TAKE_LIST_THEN_PUT.sub(lambda m: f"{m['verb']} {m['objs']} ", text)
     text = _BUT_BEFORE.sub(lambda m: m.group(0) if _keeps_but_first(text, m) else ". Before that, ", text)
     text = _THE_FOR_THEN.sub(lambda m: "then " if m.group(1).lower() in G.VERBS else m.group(0), text)
-    text = _LIGHT_FROM.sub("light of ", text)
-    text = _RINSE_ADJ.sub(r"\1 rinsed ", text)
-    text = _USE_LAMP.sub(lambda m: f"{m['verb']} {m['obj']} by the light of the {m['lamp']}", text)
+    text = _RINSE_ADJ.sub(r"\1 rinsed ", lamp_phrasing(text))
     text = _FOLLOWED_TO.sub(r" and finally \1", text)
     text = _LAST_ADVERB.sub(r"\1lastly ", text)
     text = re.sub(r";\s+(?=(?:and|also|plus)\s)", ", ", text)  # "Next, D; and E" / "D; also E": E goes with D
