@@ -8,6 +8,7 @@ from __future__ import annotations
 import re
 import unicodedata
 
+from nl2hltl2plan.language.handover_freed_steps import some_steps_freed
 from nl2hltl2plan.language.handover_layout import (
     HEADED,
     REORDERED,
@@ -90,7 +91,7 @@ def split_sentences(instruction: str) -> list[str]:
         for pattern, replacement in (*REORDERED, *HEADED):
             text = pattern.sub(replacement, text)
         out += [re.sub(r"^\s*[-*•·]\s+", "", s) for s in re.split(r"[.;!?]+(?:\s|$)", text)]
-    return later_read(_without_announcement(_steps_freed(_some_steps_freed([s for s in out if s.strip()]))))
+    return later_read(_without_announcement(_steps_freed(some_steps_freed([s for s in out if s.strip()]))))
 
 
 # "Step 1: ... Step 2: ... The steps may happen in any order.": a sentence of its own that frees the
@@ -116,49 +117,6 @@ def _steps_freed(sentences: list[str]) -> list[str]:
         return sentences
     steps = " , and ".join(_STEP_LABEL.sub("", sentences[i]) for i in labelled)
     return [*sentences[: labelled[0]], steps, *sentences[free[0] + 1 :]]
-
-
-# "Step 1: ... Step 3: ... Step 3 may happen at any time." (or "1) ... 4) ... Steps 3 and 4 can be done at
-# any time"): a sentence right after the steps that frees some of them by number; those leave the sequence
-# and are said after it, each "at any time", and the steps left are numbered again in turn
-_NUMBERED = re.compile(
-    r"^\s*(?:step\s+(?P<word>[1-9]|one|two|three|four|five)\s*[:.)-]|(?P<digit>[1-9])\))\s*", re.IGNORECASE
-)
-_SOME_FREE = re.compile(
-    r"\s*(?:the\s+)?steps?\s+(?P<named>[1-9](?:\s*(?:,|,?\s*and|&)\s*[1-9])*)\s+(?:may|can|could)\s+"
-    r"(?:happen|be\s+done|be\s+carried\s+out|be\s+performed|take\s+place|come)\s+at\s+any\s+(?:time|point)\s*",
-    re.IGNORECASE,
-)
-_WORDS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5}
-# a step that says its own place in the order cannot be freed of it
-_ORDERED = re.compile(r"\b(?:then|after|before|first|next|finally|last|lastly|once)\b", re.IGNORECASE)
-
-
-def _some_steps_freed(sentences: list[str]) -> list[str]:
-    """Steps freed by number, said after the others ('..., at any time'); else the sentences as they are
-    (a freeing sentence that is not right after the steps, a number that names no step or names one twice,
-    a step numbered out of turn or one that says its own order)."""
-    free = [i for i, s in enumerate(sentences) if _SOME_FREE.fullmatch(s)]
-    if len(free) != 1 or free[0] == 0:
-        return sentences
-    steps: list[str] = []
-    for s in reversed(sentences[: free[0]]):  # the numbered steps right before the freeing sentence
-        label = _NUMBERED.match(s)
-        if label is None:
-            break
-        steps.insert(0, s)
-    labels = [_NUMBERED.match(s) for s in steps]
-    numbers = [int(_WORDS.get(m["word"].lower(), 0) or m["word"]) if m["word"] else int(m["digit"]) for m in labels if m]
-    named = [int(n) for n in re.findall(r"[1-9]", _SOME_FREE.fullmatch(sentences[free[0]])["named"])]
-    if numbers != list(range(1, len(steps) + 1)) or len(set(named)) != len(named) or not set(named) <= set(numbers):
-        return sentences
-    texts = [_NUMBERED.sub("", s) for s in steps]
-    if len(steps) < 2 or any(_ORDERED.search(texts[n - 1]) for n in named):
-        return sentences
-    kept = [t for n, t in enumerate(texts, 1) if n not in named]
-    start = free[0] - len(steps)
-    said = [f"Step {i}: {t}" for i, t in enumerate(kept, 1)] + [f"{texts[n - 1]} , at any time" for n in named]
-    return [*sentences[:start], *said, *sentences[free[0] + 1 :]]
 
 
 # "There are a few things to keep in mind." before the things: it names no block, place or order; a
