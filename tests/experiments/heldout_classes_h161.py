@@ -91,8 +91,8 @@ DEV_TABLETOP: dict[int, list[str]] = {
     1: ["1. Green apple -> blue plate. 2. Orange -> yellow plate. Any order."],
     2: ["Make sure the green apple ends up in the pink plate, the orange in the yellow plate and the red "
         "apple in the blue plate; the order is up to you."],
-    3: ["The carrot is placed in the blue plate, the orange in the yellow plate, the green apple in the green "
-        "plate and the red apple in the pink plate, in any order."],
+    3: ["The carrot is placed in the blue plate, the orange in the yellow plate, the green apple in the "
+        "green plate and the red apple in the pink plate, in any order."],
     4: ["Put the carrot and the red apple in the blue plate in any order, as long as the green apple and the "
         "orange are in the yellow plate first."],
 }

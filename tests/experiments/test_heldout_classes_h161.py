@@ -40,16 +40,19 @@ def test_handover_classes_give_the_written_spec(task: int, text: str) -> None:
         # a later run freed "in any order": are the steps before it still before both?
         (8, STEPS_8 + "Steps 3 and 4 may happen in any order."),
         # the freeing sentence between the steps, or naming a step that is not there
-        (5, STEPS_5 + "Step 3 may happen at any time. Step 3: put the yellow block on the opposite side."),
-        (5, STEPS_5 + "Step 3: put the yellow block on the opposite side. Step 4 may happen at any time."),
+        (5, STEPS_5 + "Step 3 may happen at any time. Step 3: put the yellow block on the opposite "
+            "side."),
+        (5, STEPS_5 + "Step 3: put the yellow block on the opposite side. Step 4 may happen at any "
+            "time."),
         # a freed step that says its own place in the order
-        (5, STEPS_5 + "Step 3: then put the yellow block on the opposite side. Step 3 may happen at any time."),
+        (5, STEPS_5 + "Step 3: then put the yellow block on the opposite side. Step 3 may happen at "
+            "any time."),
         # "as long as" of a duration
-        (7, "Put the three objects on region I one after another, the red block before the blue block. Nothing "
-            "goes on regions F, G or H as long as the blocks are still being moved."),
+        (7, "Put the three objects on region I one after another, the red block before the blue block. "
+            "Nothing goes on regions F, G or H as long as the blocks are still being moved."),
         # one place alone in the perfect: where it should have been, not where it goes (h152)
-        (8, "The yellow block should have been on region I. Then put it on region G, and put the red and blue "
-            "blocks on any empty region at any time."),
+        (8, "The yellow block should have been on region I. Then put it on region G, and put the red and "
+            "blue blocks on any empty region at any time."),
     ],
 )
 def test_unclear_neighbours_stay_refused(task: int, text: str) -> None:
@@ -62,9 +65,9 @@ def test_unclear_neighbours_stay_refused(task: int, text: str) -> None:
     [
         # the first two steps freed, the third after both: the yellow block before the blue one, which
         # task 7 does not ask
-        (7, "Step 1: put the yellow block on region I. Step 2: put the red block on region I. Step 3: put the "
-            "blue block on region I. Steps 1 and 2 can be done in either order. No object can be placed on "
-            "region F, G or H during this period."),
+        (7, "Step 1: put the yellow block on region I. Step 2: put the red block on region I. Step 3: put "
+            "the blue block on region I. Steps 1 and 2 can be done in either order. No object can be placed "
+            "on region F, G or H during this period."),
         (2, "Step 1: put the red block on region H, I or J. Step 2: put the blue block on region H, I or J. "
             "Step 3: put the yellow block on region H, I or J, one block per region. Steps 1 and 2 may "
             "happen in any order."),

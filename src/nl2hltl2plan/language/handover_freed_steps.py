@@ -44,7 +44,8 @@ def _named(frees: re.Match[str], steps: int) -> list[int]:
     if frees["named"]:
         return [int(n) for n in re.findall(r"[1-9]", frees["named"])]
     count = _NUMBER[frees["count"].lower()]
-    return list(range(1, count + 1)) if frees["end"].lower() == "first" else list(range(steps - count + 1, steps + 1))
+    first = 1 if frees["end"].lower() == "first" else steps - count + 1
+    return list(range(first, first + count))
 
 
 def some_steps_freed(sentences: list[str]) -> list[str]:

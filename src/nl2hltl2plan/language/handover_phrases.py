@@ -218,8 +218,9 @@ def _join_particles(m: Marked) -> None:
 
 
 def _mark_connectives(m: Marked) -> None:
-    """'making sure (that)', 'ensure that', 'provided that', 'as long as' introduce what follows and add nothing; nor
-    does 'but' before a negated command ('move ... but don't touch ...', read before the rule is)."""
+    """'making sure (that)', 'ensure that', 'provided that', 'as long as' introduce what follows and add
+    nothing; nor does 'but' before a negated command ('move ... but don't touch ...', read before the rule
+    is)."""
     m.sub(r"(?:,\s*)?\bbut\s+(?=(?:do\s+not|never)\b)", " , ")
     m.sub(
         r"(?:\bwhile\s+)?\b(?:(?:making|make|be)\s+(?:sure|certain)|ensur(?:e|ing))\s+(?:that\s+)?|"
