@@ -106,3 +106,20 @@ HELD_TABLETOP: dict[int, list[str]] = {
     4: ["The green apple and the orange are placed in the yellow plate first. Only after that are the carrot "
         "and the red apple placed in the blue plate, in any order."],
 }
+
+# Added after the held-out part was written, while probing the tabletop steps (development only, no
+# held-out counterpart): runs of numbered steps freed by number, and a free-order remark inside each item
+# of a numbered list.
+DEV_TABLETOP_STEPS: dict[int, list[str]] = {
+    4: ["Step 1: put the green apple in the yellow plate. Step 2: put the orange in the yellow plate. "
+        "Step 3: put the carrot in the blue plate. Step 4: put the red apple in the blue plate. Steps 1 and "
+        "2 may happen in any order, and so may steps 3 and 4.",
+        "1. Put the green apple in the yellow plate. 2. Put the orange in the yellow plate. 3. Put the "
+        "carrot in the blue plate. 4. Put the red apple in the blue plate. The first two steps can be done "
+        "in either order, and so can the last two.",
+        "1) Put the green apple in the yellow plate. 2) Put the orange in the yellow plate. 3) Put the "
+        "carrot in the blue plate. 4) Put the red apple in the blue plate. Steps 1 and 2 in either order; "
+        "steps 3 and 4 in either order.",
+        "1) Put the green apple in the yellow plate and put the orange in the yellow plate, in any order. "
+        "2) Put the carrot in the blue plate and put the red apple in the blue plate, in any order."],
+}

@@ -14,9 +14,11 @@ from handover_specs import (
     assert_written_spec_or_refused,
     cases,
 )
-from heldout_classes_h161 import DEV_HANDOVER, HELD_HANDOVER
+from heldout_classes_h161 import DEV_HANDOVER, DEV_TABLETOP, DEV_TABLETOP_STEPS, HELD_HANDOVER, HELD_TABLETOP
+from test_tabletop import TASKS, signature, signature_or_none
 
 from nl2hltl2plan.language.handover_freed_steps import some_steps_freed
+from nl2hltl2plan.language.tabletop_freed_steps import runs_freed
 
 STEPS_5 = (
     "Step 1: put the red block where the blue block is. Step 2: put the blue block where the red block was. "
@@ -104,8 +106,64 @@ def test_only_the_first_steps_are_freed_in_any_order() -> None:
     assert some_steps_freed(twice) == twice
 
 
+TABLETOP_4 = (
+    "1) Put the green apple in the yellow plate. 2) Put the orange in the yellow plate. 3) Put the carrot in "
+    "the blue plate. 4) Put the red apple in the blue plate. "
+)
+
+
+@pytest.mark.parametrize(("task", "text"), cases(DEV_TABLETOP_STEPS))
+def test_tabletop_steps_freed_by_number_give_the_tasks_and_order(task: int, text: str) -> None:
+    assert signature(text) == signature(TASKS[task].instruction), text
+
+
+@pytest.mark.parametrize(("task", "text"), cases(DEV_TABLETOP))
+def test_tabletop_voices_are_read_right_or_refused(task: int, text: str) -> None:
+    said = signature_or_none(text)
+    assert said is None or said == signature(TASKS[task].instruction), text
+
+
+@pytest.mark.parametrize(
+    "remark",
+    [
+        "Steps 1 and 4 in either order.",  # not a run: which steps keep their order?
+        "Steps 1, 2 and 4 may happen in any order.",
+        "Steps 2 and 3 in either order, and so may steps 3 and 4.",  # runs that overlap
+        "Steps 1 to 4 may happen in any order.",  # every step by number (the words are not read)
+    ],
+)
+def test_tabletop_steps_freed_unclearly_are_refused(remark: str) -> None:
+    assert signature_or_none(TABLETOP_4 + remark) is None
+
+
+def test_tabletop_one_run_freed_keeps_the_other_steps_in_turn() -> None:
+    # the carrot still before the red apple: not task 4's order, and no longer read as freeing every step
+    said = signature(TABLETOP_4 + "Steps 1 and 2 may happen in any order.")
+    assert said != signature(TASKS[4].instruction)
+    assert len(said[1]) == 5  # green apple, orange < carrot < red apple (closed)
+
+
+def test_tabletop_runs_freed_rewrite() -> None:
+    steps = "Step 1: A on P. Step 2: B on P. Step 3: C on Q. Step 4: D on Q. "
+    assert runs_freed(steps + "The last two steps in either order.") == (
+        "Step 1: A on P. Step 2: B on P. Step 3: C on Q and D on Q, in any order."
+    )
+    assert runs_freed(steps + "Steps 1 to 3 may happen in any order.") == (
+        "Step 1: A on P, B on P and C on Q, in any order. Step 2: D on Q."
+    )
+    for unread in ("Steps 1 to 4 may happen in any order.", "Steps 1 and 3 in any order."):
+        assert runs_freed(steps + unread) == steps + unread
+
+
 @pytest.mark.data
 @pytest.mark.sweep
 @pytest.mark.parametrize(("task", "text"), cases(*HELD_HANDOVER.values()))
 def test_held_out_sentences_are_read_right_or_refused(task: int, text: str) -> None:
     assert_written_spec_or_refused(task, text)
+
+
+@pytest.mark.sweep
+@pytest.mark.parametrize(("task", "text"), cases(HELD_TABLETOP))
+def test_held_out_tabletop_sentences_are_read_right_or_refused(task: int, text: str) -> None:
+    said = signature_or_none(text)
+    assert said is None or said == signature(TASKS[task].instruction), text

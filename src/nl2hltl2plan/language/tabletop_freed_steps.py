@@ -2,15 +2,18 @@
 rephrasings): "Step 1: A. Step 2: B. Step 3: C. Step 4: D. Steps 1 and 2 may happen in any order, and so may
 steps 3 and 4." (or "The first two steps can be done in either order, and so can the last two") is "Step 1:
 A and B, in any order. Step 2: C and D, in any order." Each run is two or more steps in turn, and the steps
-keep their order otherwise. A remark that names every step, or a step that is not there, overlapping runs,
-or a remark anywhere but after the last step leave the text as it is (read or refused as before).
+keep their order otherwise. A remark that names every step by number, a step that is not there,
+overlapping runs, or a remark anywhere but after the last step leave the text as it is; the tabletop
+reader then refuses a remark that still names steps by number (`steps_named`).
 """
 
 from __future__ import annotations
 
 import re
 
-_STEP = re.compile(r"(?:^|(?<=[.;!?]))\s*(?:step\s+(?P<n>[1-6])\s*[:.)\-]|(?P<d>[1-6])[.)])\s+", re.IGNORECASE)
+_STEP = re.compile(
+    r"(?:^|(?<=[.;!?]))\s*(?:step\s+(?P<n>[1-6])\s*[:.)\-]|(?P<d>[1-6])[.)])\s+", re.IGNORECASE
+)
 _COUNT = {"two": 2, "three": 3}
 
 
@@ -54,8 +57,8 @@ def runs_freed(text: str) -> str:
     freed = [n for lo, hi in runs for n in range(lo, hi + 1)]
     if any(lo >= hi or lo < 1 or hi > len(marks) for lo, hi in runs) or len(set(freed)) != len(freed):
         return text
-    if runs == [(1, len(marks))]:  # every step in one run: the remark frees the whole list
-        return text[: remark.start()] + " The steps may happen in any order."
+    if (1, len(marks)) in runs:  # every step by number: refused by name (`steps_named`), as check 1 would
+        return text
     ends = [m.start() for m in marks[1:]] + [remark.start()]
     steps = [text[m.end() : end].strip().rstrip(".;,!").strip() for m, end in zip(marks, ends, strict=True)]
     said: list[str] = []

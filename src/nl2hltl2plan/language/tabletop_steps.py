@@ -264,7 +264,8 @@ def numbered_steps(text: str) -> str:
         text = " ".join(_as_steps(text, labels).split())
     if len(_LIST_NUMBER.findall(text)) < 2:
         return text
-    read = list_numbers_read(text, frees_every_step(free_order(text.lower())[1]) and not _inside_an_item(text))
+    listed = frees_every_step(free_order(text.lower())[1]) and not _inside_an_item(text)
+    read = list_numbers_read(text, listed)
     return " ".join(read.split()) if read is not None else text
 
 
