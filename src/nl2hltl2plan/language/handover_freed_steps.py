@@ -10,7 +10,8 @@ The steps are "Step N:" labels or a numbered list ("1) ...", as `split_sentences
 ... in turn. Anything else stays as it is, to be read or refused as before: a freeing sentence that is
 not right after the steps, a number that names no step or one step twice, steps freed "in any order" that
 are not the first ones (a later run, "Steps 3 and 4 in any order", stays refused), or a step that says its
-own place in the order ("then", "after", "first").
+own place in the order ("then", "after", "first") or speaks of the other steps' blocks too ("one block per
+region", "each", "the others").
 """
 
 from __future__ import annotations
@@ -28,8 +29,14 @@ _FREES = re.compile(
     rf"(?:{_MAY}at\s+any\s+(?P<time>time|point)|{_MAY}?in\s+(?:any|either)\s+order)\s*",
     re.IGNORECASE,
 )
-# a step that says its own place in the order cannot be freed of it
-_ORDERED = re.compile(r"\b(?:then|after|before|first|next|finally|last|lastly|once)\b", re.IGNORECASE)
+# a step that says its own place in the order cannot be freed of it; nor can one that says something of
+# the other steps' blocks too ("..., one block per region", "each", "the others"): out of its place, the
+# reader would bind that to the step's own block alone
+_ORDERED = re.compile(
+    r"\b(?:then|after|before|first|next|finally|last|lastly|once|per|each|every|all|both|other|others|rest|"
+    r"remaining|them|they|their|together|separately)\b",
+    re.IGNORECASE,
+)
 
 
 def _number(label: re.Match[str]) -> int:
