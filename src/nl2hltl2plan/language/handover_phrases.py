@@ -218,12 +218,16 @@ def _join_particles(m: Marked) -> None:
 
 
 def _mark_connectives(m: Marked) -> None:
-    """'making sure (that)', 'ensure that', 'provided that' introduce what follows and add nothing; nor
-    does 'but' before a negated command ('move ... but don't touch ...', read before the rule is)."""
+    """'making sure (that)', 'ensure that', 'provided that', 'as long as' introduce what follows and add
+    nothing; nor does 'but' before a negated command ('move ... but don't touch ...', read before the rule
+    is)."""
     m.sub(r"(?:,\s*)?\bbut\s+(?=(?:do\s+not|never)\b)", " , ")
     m.sub(
         r"(?:\bwhile\s+)?\b(?:(?:making|make|be)\s+(?:sure|certain)|ensur(?:e|ing))\s+(?:that\s+)?|"
-        r"\b(?:such|so)\s+that\b(?!\s+each\b)|\b(?:provided|providing|(?:on|under)\s+(?:the\s+)?condition)\s+that\b",
+        r"\b(?:such|so)\s+that\b(?!\s+each\b)|\b(?:provided|providing|(?:on|under)\s+(?:the\s+)?condition)\s+that\b"
+        # "as long as" of a condition; of a duration ("as long as they are being moved", "... has not been
+        # touched") it stays, to be refused
+        r"|\bas\s+long\s+as\b(?![^,;.]*\b(?:being|still|not|never|yet|while)\b)",
         " ",
     )
 

@@ -503,6 +503,17 @@ REWRITES: tuple[tuple[str, str], ...] = (
         r"\bdo\s+not\s+let\s+(?:any\s+|an?\s+|the\s+)?(?:robot\s+)?(?:arms?|robots?)\s+",
         "no arm may ",
     ),
+    # "don't let any object be placed on F", "never let the blue block be touched": the object's own
+    # prohibition, as "no object should be placed on F" and "the blue block should not be touched"
+    (
+        r"\b(?:do\s+not|never)\s+let\s+(?:any|an?)\s+(object|block|pillar|cube|item)s?\s+be\b",
+        r"no \1 should be",
+    ),
+    (r"\b(?:do\s+not|never)\s+let\s+anything\s+be\b", "nothing should be"),
+    (
+        r"\b(?:do\s+not|never)\s+let\s+(the\s+(?:(?:red|blue|yellow)\s+)?(?:block|pillar|object|cube)s?)\s+be\b",
+        r"\1 should not be",
+    ),
     # "the regions across from where they are now": the opposite side
     (
         r"\b(?:the\s+)?(?:regions?|areas?|side|zones?)\s+across\s+from\s+(?:where\s+(?:they|it|the\s+blocks?)\s+"

@@ -8,6 +8,7 @@ from __future__ import annotations
 import re
 import unicodedata
 
+from nl2hltl2plan.language.handover_freed_steps import some_steps_freed
 from nl2hltl2plan.language.handover_layout import (
     HEADED,
     REORDERED,
@@ -90,7 +91,7 @@ def split_sentences(instruction: str) -> list[str]:
         for pattern, replacement in (*REORDERED, *HEADED):
             text = pattern.sub(replacement, text)
         out += [re.sub(r"^\s*[-*•·]\s+", "", s) for s in re.split(r"[.;!?]+(?:\s|$)", text)]
-    return later_read(_without_announcement(_steps_freed([s for s in out if s.strip()])))
+    return later_read(_without_announcement(_steps_freed(some_steps_freed([s for s in out if s.strip()]))))
 
 
 # "Step 1: ... Step 2: ... The steps may happen in any order.": a sentence of its own that frees the

@@ -125,6 +125,12 @@ _RULES: tuple[tuple[str, str], ...] = (
         ", and no other region should be used",
     ),
     (r"\b(should|must|will)\s+have\s+been\s+(?=" + _PARTICIPLE + r"\b)", r"\1 be "),
+    # a move in the perfect, as the passive one above: "should have gone (moved, travelled) to any empty
+    # region" is "should go to any empty region" (the state the move leaves, by the end)
+    (
+        r"\b(should|must|will)\s+have\s+(?:gone|moved|travelled|traveled)\s+(?=(?:to|onto|into|on|in)\b)",
+        r"\1 go ",
+    ),
     # a sequence of places in the perfect: "should have been on region i (first) and then on region g" is
     # "should be on region i and then on region g" (where it is, in turn); one place alone stays refused
     (

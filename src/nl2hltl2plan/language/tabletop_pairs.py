@@ -34,6 +34,7 @@ from nl2hltl2plan.language.tabletop_chat import chat_read
 from nl2hltl2plan.language.tabletop_counts import plate_counts_read, plates_said_alone, total_counts_read
 from nl2hltl2plan.language.tabletop_dialogue import dialogue_read, scenario_read
 from nl2hltl2plan.language.tabletop_fields import fields_read
+from nl2hltl2plan.language.tabletop_freed_steps import steps_named
 from nl2hltl2plan.language.tabletop_headings import (
     stage_headings_read,
     task_headings_read,
@@ -206,7 +207,10 @@ class TabletopReader:
         if entry := _ENTRIES.search(instruction.lower()):
             raise HTTError(f"'{entry[0]}' numbers the entries of a list: say whether they are steps in turn")
         # "Two stages. Stage one: ...": the heading checked against the labels before they are read
-        return numbered_steps(stage_headings_read(plate_waits_read(corrected(instruction, kinds), kinds)))
+        stepped = numbered_steps(stage_headings_read(plate_waits_read(corrected(instruction, kinds), kinds)))
+        if named := steps_named(stepped):  # a remark on steps by number that `runs_freed` could not read
+            raise HTTError(f"'{named}': which steps are free of their order is not clear; say it another way")
+        return stepped
 
     def reread(self, instruction: str, backend: str) -> LanguageResult | None:
         return tabletop_fallback(instruction, self.world, backend)

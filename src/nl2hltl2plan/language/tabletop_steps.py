@@ -10,6 +10,8 @@ from __future__ import annotations
 
 import re
 
+from nl2hltl2plan.language.content_words import free_order_remarks
+from nl2hltl2plan.language.tabletop_freed_steps import runs_freed
 from nl2hltl2plan.language.tabletop_wording import NUMBER_WORDS, free_order, frees_every_step
 
 # a label's place in turn: a digit, a number word or an ordinal (a step noun's also with a comma after it:
@@ -256,14 +258,25 @@ def numbered_steps(text: str) -> str:
     ... Part B: ..."), and the numbers of a numbered list of two or more steps read (`list_numbers_read`:
     as "first" / "then", or removed beside a remark that frees the whole list), so that every reader
     orders the steps as the labels and numbers do; the text as it is with no such list."""
-    text = order_confirmed_dropped(label_references_dropped(text), False)
+    text = order_confirmed_dropped(label_references_dropped(runs_freed(text)), False)
     labels = _labels(text)
     if len(labels) >= 2 and [_turn(m) for m in labels] == list(range(1, len(labels) + 1)):
         text = " ".join(_as_steps(text, labels).split())
     if len(_LIST_NUMBER.findall(text)) < 2:
         return text
-    read = list_numbers_read(text, frees_every_step(free_order(text.lower())[1]))
+    listed = frees_every_step(free_order(text.lower())[1]) and not _inside_an_item(text)
+    read = list_numbers_read(text, listed)
     return " ".join(read.split()) if read is not None else text
+
+
+def _inside_an_item(text: str) -> bool:
+    """Is a free-order remark said inside an item of the numbered list, before its last number ("1) A and B,
+    in any order. 2) C and D, in any order.")? Then it frees that item alone, not the list."""
+    numbers = list(_LIST_NUMBER.finditer(text))
+    lowered = text.lower()
+    return len(numbers) >= 2 and any(
+        numbers[0].end() <= r.start < numbers[-1].start() for r in free_order_remarks(lowered)
+    )
 
 
 def _as_steps(text: str, marks: list[re.Match[str]]) -> str:
