@@ -103,9 +103,10 @@ def _marker_edges(
         elif kind == G.FINALLY:
             # "..., and finally Y" inside a sentence: after its sibling clauses too
             scope = list(range(min(u.tasks))) if ref == IN_SENTENCE else others if ref == OF_ALL else earlier
-            edges.update((a, b2) for a in scope if a not in loose for b2 in u.tasks)
+            scope = [a for a in _with_stated(scope, tasks, edges) if a not in loose]
+            edges.update((a, b2) for a in scope for b2 in u.tasks)
         elif kind == G.AFTER_ALL:  # "once all that is done" / "once everything else is done" (all others)
-            scope = others if _names_the_others(ref) else earlier
+            scope = others if _names_the_others(ref) else _with_stated(earlier, tasks, edges)
             edges.update((a, b2) for a in scope for b2 in u.tasks)
         elif kind == G.BEFORE_PREV and (G.FINALLY, IN_SENTENCE) in u.markers:
             continue  # "X. Before that, Y, and finally Z": Z is the last step, after X too
@@ -140,6 +141,18 @@ def _marker_edges(
             edges.update((a, b2) if later else (b2, a) for a in named for b2 in u.tasks)
         elif kind in {G.AFTER_REF, G.BEFORE_REF}:
             _ref_edges(kind == G.AFTER_REF, ref, u, tasks, b, text, edges)
+
+
+def _with_stated(scope: list[int], tasks: Tasks, edges: Edges) -> list[int]:
+    """`scope` and the tasks that a reference of its clauses states ("Before you put X in A, Y. Finally Z":
+    X is said before Z, though its task is added after every clause's): a task no clause states goes with
+    the clause whose reference states it, the one it is ordered with."""
+    said = {t for v in tasks.units for t in v.tasks}
+    stated = [
+        t for t in range(len(tasks.specs))
+        if t not in said and t not in scope and any((t, a) in edges or (a, t) in edges for a in scope)
+    ]
+    return scope + stated
 
 
 def sentence_steps(units: list[Unit]) -> list[int]:
