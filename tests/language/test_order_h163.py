@@ -1,0 +1,71 @@
+"""Issue 28, order in paper-style instructions of three and four tasks (h163, paper_h163dev.txt): "finally" /
+"once all that is done" after a "before you X, Y" clause come after X too (a task the reference states
+goes with its clause), a trailing reference takes no ", and finally Z" into itself, and "and only after
+that" is "and after that". Before each fix the reading was wrong (exit 0, a changed order or kind)."""
+
+from __future__ import annotations
+
+import pytest
+
+from tests.language.test_unseen_classes import read
+
+MUG = "place Mug -> SinkBasin"
+APPLE = "place Apple -> Fridge"
+EGG = "place Egg -> Microwave"
+BREAD = "place Bread -> CounterTop"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Before you put the apple in the fridge, put the mug in the sink. Finally put the bread on the counter.",
+        "Before you put the apple in the fridge, put the mug in the sink. Once all that is done, put the bread "
+        "on the counter.",
+        "Put the mug in the sink before you put the apple in the fridge, and finally put the bread on the "
+        "counter.",
+        "Put the mug in the sink before the apple goes in the fridge, and finally put the bread on the counter.",
+    ],
+)
+def test_last_step_comes_after_the_task_a_before_clause_states(text):
+    """Before: the bread after the mug only (the apple, stated by the reference, has the last index), or
+    the bread taken into the reference and ordered after the mug alone."""
+    tasks, order, unread = read(text)
+    assert sorted(tasks) == sorted([MUG, APPLE, BREAD]) and not unread
+    assert order == {(MUG, APPLE), (APPLE, BREAD), (MUG, BREAD)}
+
+
+@pytest.mark.parametrize("ref", ["after you put", "once you have put"])
+def test_last_step_after_a_trailing_after_reference(ref):
+    """Before: "Y after you X, and finally Z" put Z before Y (the reference took Z in)."""
+    tasks, order, unread = read(f"Put the mug in the sink {ref} the apple in the fridge, and finally put the "
+                                "bread on the counter.")
+    assert sorted(tasks) == sorted([MUG, APPLE, BREAD]) and not unread
+    assert order == {(APPLE, MUG), (MUG, BREAD), (APPLE, BREAD)}
+
+
+def test_any_time_task_stays_free_of_finally_after_a_before_clause():
+    """Near miss: a task allowed at any time is still after nothing and before nothing."""
+    tasks, order, unread = read(
+        "Before you put the apple in the fridge, put the mug in the sink. Put the egg in the microwave at any "
+        "time, and finally put the bread on the counter."
+    )
+    assert len(tasks) == 4 and not unread
+    assert not any(EGG in pair for pair in order)
+    assert {(MUG, APPLE), (APPLE, BREAD)} <= order
+
+
+@pytest.mark.parametrize("focus", ["only after that", "just after that", "right after that,", "only then"])
+def test_focus_word_before_a_connective(focus):
+    """Before: "and only after that" left "only," in the first clause, which then read "put a tomato in the
+    microwave" as heating it."""
+    tasks, order, unread = read(
+        f"Put a tomato in the microwave, and {focus} put a cooked potato slice in the fridge."
+    )
+    assert tasks == ["place Tomato -> Microwave", "heat_place Potato(sliced) -> Fridge"] and not unread
+    assert order == {("place Tomato -> Microwave", "heat_place Potato(sliced) -> Fridge")}
+
+
+def test_right_as_a_side_is_no_focus_word():
+    """Near miss: "to the right" is a place; nothing is dropped."""
+    tasks, _, _ = read("Put the mug in the sink to the right, and then put the apple in the fridge.")
+    assert APPLE in tasks
