@@ -69,3 +69,15 @@ def test_right_as_a_side_is_no_focus_word():
     """Near miss: "to the right" is a place; nothing is dropped."""
     tasks, _, _ = read("Put the mug in the sink to the right, and then put the apple in the fridge.")
     assert APPLE in tasks
+
+
+@pytest.mark.parametrize(
+    ("opener", "mug_first"),
+    [("After that, though,", False), ("Then, however,", False), ("Before you do that, though,", True)],
+)
+def test_contrast_word_after_a_leading_order_phrase(opener, mug_first):
+    """Before: "After that, though, Y" left "though" unread, and the learned structure model, taking it for
+    "though first", put Y first."""
+    tasks, order, unread = read(f"Put the apple in the fridge. {opener} put the mug in the sink.")
+    assert sorted(tasks) == sorted([APPLE, MUG]) and not unread
+    assert order == ({(MUG, APPLE)} if mug_first else {(APPLE, MUG)})

@@ -117,12 +117,22 @@ _FOCUS_CONNECTIVE = re.compile(
 )
 
 
+# "After that, though, Y" / "Before you do that, however, Y": a contrast word set off by commas after a
+# leading order phrase says nothing of the order (left in, the learned structure model took "though" for
+# "though first" and put Y first)
+_INTERJECTED = re.compile(
+    r"(?P<lead>(?:^|(?<=[.;!?])\s+)(?:and\s+)?(?:after|before|once|when|then|next|finally|lastly|first|"
+    r"afterwards?|later)\b[^,.;!?]*?)\s*,\s*(?:though|however|anyway)\s*,\s+(?=[a-z])",
+    re.I,
+)
+
+
 def after_the_step(text: str) -> str:
     """ "..., do these in either order, then C" -> "... Once all that is done, C" (C after every task before
     it; "..., and after those two C" is `everyday`'s reference to every task before); "A, after which B"
     -> "A, then B"; "and at the very end C" -> "and finally C"; "and only after that B" -> "and after that
-    B"."""
-    text = _FOCUS_CONNECTIVE.sub(r"\g<join>", text)
+    B"; "After that, though, B" -> "After that, B"."""
+    text = _INTERJECTED.sub(r"\g<lead>, ", _FOCUS_CONNECTIVE.sub(r"\g<join>", text))
     text = _AFTER_WHICH.sub(", then ", _FREED_THEN.sub(r"\1. Once all that is done, ", text))
     return _AT_THE_END.sub("finally", text)
 
