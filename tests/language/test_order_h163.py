@@ -81,3 +81,15 @@ def test_contrast_word_after_a_leading_order_phrase(opener, mug_first):
     tasks, order, unread = read(f"Put the apple in the fridge. {opener} put the mug in the sink.")
     assert sorted(tasks) == sorted([APPLE, MUG]) and not unread
     assert order == ({(MUG, APPLE)} if mug_first else {(APPLE, MUG)})
+
+
+def test_then_after_a_before_that_sentence_follows_the_whole_step():
+    """Before: "W, plus X. Ahead of that, Y. After which, Z" put Z after X only (the clause "plus" added),
+    though Y was put before both W and X."""
+    tasks, order, unread = read(
+        "Put the mug in the sink, plus put the apple in the fridge. Ahead of that, put the bread on the "
+        "counter. After which, put the egg in the microwave."
+    )
+    assert len(tasks) == 4 and not unread
+    assert {(BREAD, MUG), (BREAD, APPLE), (MUG, EGG), (APPLE, EGG)} <= order
+    assert (MUG, APPLE) not in order and (APPLE, MUG) not in order

@@ -98,7 +98,7 @@ def _marker_edges(
     for kind, ref in u.markers:
         if kind == G.THEN and prev is not None:
             after = [] if prev.sentence == u.sentence else _last_step(units, prev.sentence, free, edges, text)
-            after = (after or prev.tasks) + _put_before(units, prev)
+            after = (after or prev.tasks) + _put_before(units, prev, free)
             edges.update((a, b2) for a in after for b2 in u.tasks)
         elif kind == G.FINALLY:
             # "..., and finally Y" inside a sentence: after its sibling clauses too
@@ -325,13 +325,14 @@ def _then_also(k: int, tasks: Tasks, text: str, b: TaskBuilder) -> None:
         b.unparsed.append(f"{own!r} ('then also': after it, or one more task? {ORDER_LEFT_OPEN})")
 
 
-def _put_before(units: list[Unit], prev: Unit) -> list[int]:
+def _put_before(units: list[Unit], prev: Unit, free: set[int]) -> list[int]:
     """ "X. Ahead of that, Y. Then Z": Z continues the time line (Y, X, Z), so it comes after X too, the
-    clause that Y was put before; nothing when `prev` is not a "before that" sentence."""
+    clauses that Y was put before (the last step of X's sentence, as `_step_said`: "W, plus X. Ahead of
+    that, Y. After which, Z": after W too); nothing when `prev` is not a "before that" sentence."""
     if not any(kind == G.BEFORE_PREV for kind, _ in prev.markers):
         return []
     outer = [v for v in units[: units.index(prev)] if v.sentence != prev.sentence]
-    return outer[-1].tasks if outer else []
+    return _step_said(units, outer[-1], free) if outer else []
 
 
 def _last_step(units: list[Unit], sentence: int, free: set[int], edges: Edges, text: str) -> list[int]:
