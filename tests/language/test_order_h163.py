@@ -93,3 +93,30 @@ def test_then_after_a_before_that_sentence_follows_the_whole_step():
     assert len(tasks) == 4 and not unread
     assert {(BREAD, MUG), (BREAD, APPLE), (MUG, EGG), (APPLE, EGG)} <= order
     assert (MUG, APPLE) not in order and (APPLE, MUG) not in order
+
+
+@pytest.mark.parametrize("done", ["all that is done", "everything is done", "all three are done"])
+def test_and_once_all_is_done_opens_the_last_step(done):
+    """Before: ", and once all that is done, put Y" took Y into the reference and put Y before every
+    other task."""
+    tasks, order, unread = read(
+        f"Put the mug in the sink, the apple in the fridge and the bread on the counter, and once {done}, put "
+        "the egg in the microwave."
+    )
+    assert len(tasks) == 4 and not unread
+    assert order == {(MUG, EGG), (APPLE, EGG), (BREAD, EGG)}
+
+
+def test_last_on_a_list_item_is_about_that_item():
+    """Before: "A first, then B, and C last" made both B and C last (B not before C)."""
+    tasks, order, unread = read(
+        "Put the mug in the sink first, then the apple in the fridge, and the bread on the counter last."
+    )
+    assert tasks == [MUG, APPLE, BREAD] and not unread
+    assert order == {(MUG, APPLE), (APPLE, BREAD), (MUG, BREAD)}
+
+
+def test_last_as_an_adjective_is_no_order():
+    """Near miss: "the last mug" names a mug; the rewrite leaves it alone (the order word stays unread)."""
+    _, order, unread = read("Put the apple in the fridge and the last mug in the sink.")
+    assert not order and unread

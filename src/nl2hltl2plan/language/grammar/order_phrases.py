@@ -127,12 +127,23 @@ _INTERJECTED = re.compile(
 )
 
 
+# "A, then B, and the C on D last": "last" closing a list item whose verb is left out is about that item
+# alone (left at the clause's end, it made every item of the list last, B not before C)
+_LAST_ITEM = re.compile(
+    r"(?<=\w)(?P<join>\s*,?\s+and\s+)(?P<item>(?:the|a|an|your|my)\s[^,.;!?]*?)\s+(?:last|lastly)"
+    r"(?=\s*(?:[.;!?]|$))",
+    re.I,
+)
+
+
 def after_the_step(text: str) -> str:
     """ "..., do these in either order, then C" -> "... Once all that is done, C" (C after every task before
     it; "..., and after those two C" is `everyday`'s reference to every task before); "A, after which B"
     -> "A, then B"; "and at the very end C" -> "and finally C"; "and only after that B" -> "and after that
-    B"; "After that, though, B" -> "After that, B"."""
+    B"; "After that, though, B" -> "After that, B"; "A, then B, and the C on D last" -> "..., and finally the C
+    on D"."""
     text = _INTERJECTED.sub(r"\g<lead>, ", _FOCUS_CONNECTIVE.sub(r"\g<join>", text))
+    text = _LAST_ITEM.sub(r"\g<join>finally \g<item>", text)
     text = _AFTER_WHICH.sub(", then ", _FREED_THEN.sub(r"\1. Once all that is done, ", text))
     return _AT_THE_END.sub("finally", text)
 
@@ -174,7 +185,9 @@ def done_opener_closed(text: str) -> str:
     return _DONE_OPENER.sub(lambda m: f"{m['clause']}, ", text)
 
 
-_NO_CLAUSE = frozenset({"that", "this", "it", "everything", "all", "both"})  # "once that's done": "then"
+# "once that's done": "then" (`sentences`); "..., and once all that is done, Y" / "once everything is done"
+# open a sentence as other references do (left in, the clause took Y into its reference and put Y first)
+_NO_CLAUSE = frozenset({"that", "this", "it", "both"})
 _LEADS = re.compile(r"\s*(?:(?:only|right|just)\s+)?(?:after|before|once|when|until|while)\b", re.IGNORECASE)
 
 
