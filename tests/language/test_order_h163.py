@@ -120,3 +120,12 @@ def test_last_as_an_adjective_is_no_order():
     """Near miss: "the last mug" names a mug; the rewrite leaves it alone (the order word stays unread)."""
     _, order, unread = read("Put the apple in the fridge and the last mug in the sink.")
     assert not order and unread
+
+
+def test_a_task_freed_by_its_own_words_is_not_made_last():
+    """Before: "X whenever, but put Y last" (one clause unit) made X last too, after every other task."""
+    tasks, order, unread = read(
+        "Put the mug in the sink. Put the apple in the fridge whenever, but put the bread on the counter last."
+    )
+    assert len(tasks) == 3 and not unread
+    assert order == {(MUG, BREAD)}

@@ -104,7 +104,9 @@ def _marker_edges(
             # "..., and finally Y" inside a sentence: after its sibling clauses too
             scope = list(range(min(u.tasks))) if ref == IN_SENTENCE else others if ref == OF_ALL else earlier
             scope = [a for a in _with_stated(scope, tasks, edges) if a not in loose]
-            edges.update((a, b2) for a in scope for b2 in u.tasks)
+            # "X whenever, but put Y last" (one unit): the task its own words free is not made last
+            last = [t for t in u.tasks if t not in free] or u.tasks
+            edges.update((a, b2) for a in scope for b2 in last)
         elif kind == G.AFTER_ALL:  # "once all that is done" / "once everything else is done" (all others)
             scope = others if _names_the_others(ref) else _with_stated(earlier, tasks, edges)
             edges.update((a, b2) for a in scope for b2 in u.tasks)
