@@ -129,3 +129,19 @@ def test_a_task_freed_by_its_own_words_is_not_made_last():
     )
     assert len(tasks) == 3 and not unread
     assert order == {(MUG, BREAD)}
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Put the apple in the fridge. Put the mug in the sink before anything else.",
+        "Put the mug in the sink before doing anything else, then put the apple in the fridge.",
+        "Before doing anything else, put the mug in the sink. Then put the apple in the fridge.",
+    ],
+)
+def test_before_anything_else_is_first(text):
+    """Before: "Y before anything else" in a later sentence read the apple first (the reference named no
+    task, and the structure model chose), and "before doing anything else" was unread."""
+    tasks, order, unread = read(text)
+    assert sorted(tasks) == sorted([MUG, APPLE]) and not unread
+    assert order == {(MUG, APPLE)}

@@ -136,14 +136,19 @@ _LAST_ITEM = re.compile(
 )
 
 
+# "Before doing anything else, X" / "X before doing anything else": "before anything else", which the
+# tables read (the gerund was taken for a reference naming no task)
+_BEFORE_DOING_ANYTHING = re.compile(r"\b(before)\s+doing\s+(?=anything\s+else\b)", re.I)
+
+
 def after_the_step(text: str) -> str:
     """ "..., do these in either order, then C" -> "... Once all that is done, C" (C after every task before
     it; "..., and after those two C" is `everyday`'s reference to every task before); "A, after which B"
     -> "A, then B"; "and at the very end C" -> "and finally C"; "and only after that B" -> "and after that
     B"; "After that, though, B" -> "After that, B"; "A, then B, and the C on D last" -> "..., and finally the C
-    on D"."""
+    on D"; "before doing anything else" -> "before anything else"."""
     text = _INTERJECTED.sub(r"\g<lead>, ", _FOCUS_CONNECTIVE.sub(r"\g<join>", text))
-    text = _LAST_ITEM.sub(r"\g<join>finally \g<item>", text)
+    text = _LAST_ITEM.sub(r"\g<join>finally \g<item>", _BEFORE_DOING_ANYTHING.sub(r"\1 ", text))
     text = _AFTER_WHICH.sub(", then ", _FREED_THEN.sub(r"\1. Once all that is done, ", text))
     return _AT_THE_END.sub("finally", text)
 

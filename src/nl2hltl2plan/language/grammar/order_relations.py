@@ -363,6 +363,8 @@ def by_position(ref: str, earlier: list[int], prev: Unit | None, others: list[in
     """The tasks a reference by position names ("the first tasks", "the previous task", "everything
     else": `G.GENERIC_REF`); None when it names tasks another way (by their objects). "Everything else" /
     "the other tasks" are all `others`, those written after it too."""
+    if re.fullmatch(r"(?:doing\s+)?anything\s+else", _normal(ref), re.I):  # "Y before anything else"
+        return others
     m = G.GENERIC_REF.match(_normal(ref))
     if m is None:
         return None
