@@ -18,12 +18,14 @@ BREAD = "place Bread -> CounterTop"
 @pytest.mark.parametrize(
     "text",
     [
-        "Before you put the apple in the fridge, put the mug in the sink. Finally put the bread on the counter.",
-        "Before you put the apple in the fridge, put the mug in the sink. Once all that is done, put the bread "
-        "on the counter.",
+        "Before you put the apple in the fridge, put the mug in the sink. Finally put the bread on the "
+        "counter.",
+        "Before you put the apple in the fridge, put the mug in the sink. Once all that is done, put the "
+        "bread on the counter.",
         "Put the mug in the sink before you put the apple in the fridge, and finally put the bread on the "
         "counter.",
-        "Put the mug in the sink before the apple goes in the fridge, and finally put the bread on the counter.",
+        "Put the mug in the sink before the apple goes in the fridge, and finally put the bread on the "
+        "counter.",
     ],
 )
 def test_last_step_comes_after_the_task_a_before_clause_states(text):
@@ -46,8 +48,8 @@ def test_last_step_after_a_trailing_after_reference(ref):
 def test_any_time_task_stays_free_of_finally_after_a_before_clause():
     """Near miss: a task allowed at any time is still after nothing and before nothing."""
     tasks, order, unread = read(
-        "Before you put the apple in the fridge, put the mug in the sink. Put the egg in the microwave at any "
-        "time, and finally put the bread on the counter."
+        "Before you put the apple in the fridge, put the mug in the sink. Put the egg in the microwave at "
+        "any time, and finally put the bread on the counter."
     )
     assert len(tasks) == 4 and not unread
     assert not any(EGG in pair for pair in order)
@@ -100,8 +102,8 @@ def test_and_once_all_is_done_opens_the_last_step(done):
     """Before: ", and once all that is done, put Y" took Y into the reference and put Y before every
     other task."""
     tasks, order, unread = read(
-        f"Put the mug in the sink, the apple in the fridge and the bread on the counter, and once {done}, put "
-        "the egg in the microwave."
+        f"Put the mug in the sink, the apple in the fridge and the bread on the counter, and once {done}, "
+        "put the egg in the microwave."
     )
     assert len(tasks) == 4 and not unread
     assert order == {(MUG, EGG), (APPLE, EGG), (BREAD, EGG)}
@@ -125,7 +127,8 @@ def test_last_as_an_adjective_is_no_order():
 def test_a_task_freed_by_its_own_words_is_not_made_last():
     """Before: "X whenever, but put Y last" (one clause unit) made X last too, after every other task."""
     tasks, order, unread = read(
-        "Put the mug in the sink. Put the apple in the fridge whenever, but put the bread on the counter last."
+        "Put the mug in the sink. Put the apple in the fridge whenever, but put the bread on the counter "
+        "last."
     )
     assert len(tasks) == 3 and not unread
     assert order == {(MUG, BREAD)}

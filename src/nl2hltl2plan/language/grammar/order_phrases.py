@@ -45,8 +45,8 @@ _STATE_THEN_COMMAND = re.compile(
 # "A before you put X in B, and finally C": the last step is no part of the trailing reference; it comes
 # after every task before it, the referred one too
 _REF_THEN_LAST = re.compile(
-    r"(?<=\w )(?P<ref>(?:before|after|once|when|until)\s+[^,.;!?]*?)\s*,?\s+and\s+(?P<adv>finally|lastly)\s*,?\s+"
-    r"(?=[a-z])",
+    r"(?<=\w )(?P<ref>(?:before|after|once|when|until)\s+[^,.;!?]*?)\s*,?\s+and\s+"
+    r"(?P<adv>finally|lastly)\s*,?\s+(?=[a-z])",
     re.I,
 )
 
@@ -145,8 +145,8 @@ def after_the_step(text: str) -> str:
     """ "..., do these in either order, then C" -> "... Once all that is done, C" (C after every task before
     it; "..., and after those two C" is `everyday`'s reference to every task before); "A, after which B"
     -> "A, then B"; "and at the very end C" -> "and finally C"; "and only after that B" -> "and after that
-    B"; "After that, though, B" -> "After that, B"; "A, then B, and the C on D last" -> "..., and finally the C
-    on D"; "before doing anything else" -> "before anything else"."""
+    B"; "After that, though, B" -> "After that, B"; "A, then B, and the C on D last" -> "..., and finally
+    the C on D"; "before doing anything else" -> "before anything else"."""
     text = _INTERJECTED.sub(r"\g<lead>, ", _FOCUS_CONNECTIVE.sub(r"\g<join>", text))
     text = _LAST_ITEM.sub(r"\g<join>finally \g<item>", _BEFORE_DOING_ANYTHING.sub(r"\1 ", text))
     text = _AFTER_WHICH.sub(", then ", _FREED_THEN.sub(r"\1. Once all that is done, ", text))
