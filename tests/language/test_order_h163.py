@@ -148,3 +148,10 @@ def test_before_anything_else_is_first(text):
     tasks, order, unread = read(text)
     assert sorted(tasks) == sorted([MUG, APPLE]) and not unread
     assert order == {(MUG, APPLE)}
+
+
+def test_first_though_stays_but_first():
+    """Near miss: "A. First, though, B" is "but first": B before A (the contrast word is kept)."""
+    tasks, order, unread = read("Put the apple in the fridge. First, though, put the mug in the sink.")
+    assert sorted(tasks) == sorted([APPLE, MUG]) and not unread
+    assert order == {(MUG, APPLE)}

@@ -119,9 +119,9 @@ _FOCUS_CONNECTIVE = re.compile(
 
 # "After that, though, Y" / "Before you do that, however, Y": a contrast word set off by commas after a
 # leading order phrase says nothing of the order (left in, the learned structure model took "though" for
-# "though first" and put Y first)
+# "though first" and put Y first); "First, though, Y" is "but first" (Y before what was said), kept
 _INTERJECTED = re.compile(
-    r"(?P<lead>(?:^|(?<=[.;!?])\s+)(?:and\s+)?(?:after|before|once|when|then|next|finally|lastly|first|"
+    r"(?P<lead>(?:^|(?<=[.;!?])\s+)(?:and\s+)?(?:after|before|once|when|then|next|finally|lastly|"
     r"afterwards?|later)\b[^,.;!?]*?)\s*,\s*(?:though|however|anyway)\s*,\s+(?=[a-z])",
     re.I,
 )
