@@ -42,13 +42,24 @@ _STATE_THEN_COMMAND = re.compile(
 )
 
 
+# "A before you put X in B, and finally C": the last step is no part of the trailing reference; it comes
+# after every task before it, the referred one too
+_REF_THEN_LAST = re.compile(
+    r"(?<=\w )(?P<ref>(?:before|after|once|when|until)\s+[^,.;!?]*?)\s*,?\s+and\s+"
+    r"(?P<adv>finally|lastly)\s*,?\s+(?=[a-z])",
+    re.I,
+)
+
+
 def command_after_state(text: str) -> str:
     """ "A after the egg is in the sink, and put the bread ..." -> "A after the egg is in the sink. put the
     bread ..." (a state said of a thing takes no command into its reference); "..., and finally put the
-    bread ..." -> "... . finally put the bread ..." (the last step, after every task before it)."""
-    return _STATE_THEN_COMMAND.sub(
+    bread ..." -> "... . finally put the bread ..." (the last step, after every task before it), also after
+    a reference to a task ("A before you put X in B, and finally C")."""
+    text = _STATE_THEN_COMMAND.sub(
         lambda m: f"{m['ref']}. {m['adv'] or ''}" if m["verb"].lower() in G.VERBS else m[0], text
     )
+    return _REF_THEN_LAST.sub(lambda m: f"{m['ref']}. {m['adv']} ", text)
 
 
 def clause_refs(rel: str, ref: str) -> list[tuple[str, str]]:
@@ -97,10 +108,47 @@ _AFTER_WHICH = re.compile(r"(?<=\w)\s*,\s*(?:and\s+)?after\s+which\s*,?\s+(?=[a-
 _AT_THE_END = re.compile(r"(?:(?<=,\s)|(?<=\band\s))at\s+the\s+(?:very\s+)?end\b(?!\s+of\b)", re.IGNORECASE)
 
 
+# "A, and only after that B" / "and right after that" / "and only then": the focus word adds nothing to
+# the order the connective states (inside a sentence, where `sentences` reads the connective alone)
+_FOCUS_CONNECTIVE = re.compile(
+    r"(?<=\w)(?P<join>\s*,?\s+(?:and\s+)?)(?:only|just|right|immediately)\s+"
+    r"(?=(?:after\s+(?:that|this)|once\s+(?:that|this|it)|then)\b)",
+    re.I,
+)
+
+
+# "After that, though, Y" / "Before you do that, however, Y": a contrast word set off by commas after a
+# leading order phrase says nothing of the order (left in, the learned structure model took "though" for
+# "though first" and put Y first); "First, though, Y" is "but first" (Y before what was said), kept
+_INTERJECTED = re.compile(
+    r"(?P<lead>(?:^|(?<=[.;!?])\s+)(?:and\s+)?(?:after|before|once|when|then|next|finally|lastly|"
+    r"afterwards?|later)\b[^,.;!?]*?)\s*,\s*(?:though|however|anyway)\s*,\s+(?=[a-z])",
+    re.I,
+)
+
+
+# "A, then B, and the C on D last": "last" closing a list item whose verb is left out is about that item
+# alone (left at the clause's end, it made every item of the list last, B not before C)
+_LAST_ITEM = re.compile(
+    r"(?<=\w)(?P<join>\s*,?\s+and\s+)(?P<item>(?:the|a|an|your|my)\s[^,.;!?]*?)\s+(?:last|lastly)"
+    r"(?=\s*(?:[.;!?]|$))",
+    re.I,
+)
+
+
+# "Before doing anything else, X" / "X before doing anything else": "before anything else", which the
+# tables read (the gerund was taken for a reference naming no task)
+_BEFORE_DOING_ANYTHING = re.compile(r"\b(before)\s+doing\s+(?=anything\s+else\b)", re.I)
+
+
 def after_the_step(text: str) -> str:
     """ "..., do these in either order, then C" -> "... Once all that is done, C" (C after every task before
     it; "..., and after those two C" is `everyday`'s reference to every task before); "A, after which B"
-    -> "A, then B"; "and at the very end C" -> "and finally C"."""
+    -> "A, then B"; "and at the very end C" -> "and finally C"; "and only after that B" -> "and after that
+    B"; "After that, though, B" -> "After that, B"; "A, then B, and the C on D last" -> "..., and finally
+    the C on D"; "before doing anything else" -> "before anything else"."""
+    text = _INTERJECTED.sub(r"\g<lead>, ", _FOCUS_CONNECTIVE.sub(r"\g<join>", text))
+    text = _LAST_ITEM.sub(r"\g<join>finally \g<item>", _BEFORE_DOING_ANYTHING.sub(r"\1 ", text))
     text = _AFTER_WHICH.sub(", then ", _FREED_THEN.sub(r"\1. Once all that is done, ", text))
     return _AT_THE_END.sub("finally", text)
 
@@ -142,7 +190,9 @@ def done_opener_closed(text: str) -> str:
     return _DONE_OPENER.sub(lambda m: f"{m['clause']}, ", text)
 
 
-_NO_CLAUSE = frozenset({"that", "this", "it", "everything", "all", "both"})  # "once that's done": "then"
+# "once that's done": "then" (`sentences`); "..., and once all that is done, Y" / "once everything is done"
+# open a sentence as other references do (left in, the clause took Y into its reference and put Y first)
+_NO_CLAUSE = frozenset({"that", "this", "it", "both"})
 _LEADS = re.compile(r"\s*(?:(?:only|right|just)\s+)?(?:after|before|once|when|until|while)\b", re.IGNORECASE)
 
 

@@ -98,14 +98,17 @@ def _marker_edges(
     for kind, ref in u.markers:
         if kind == G.THEN and prev is not None:
             after = [] if prev.sentence == u.sentence else _last_step(units, prev.sentence, free, edges, text)
-            after = (after or prev.tasks) + _put_before(units, prev)
+            after = (after or prev.tasks) + _put_before(units, prev, free)
             edges.update((a, b2) for a in after for b2 in u.tasks)
         elif kind == G.FINALLY:
             # "..., and finally Y" inside a sentence: after its sibling clauses too
             scope = list(range(min(u.tasks))) if ref == IN_SENTENCE else others if ref == OF_ALL else earlier
-            edges.update((a, b2) for a in scope if a not in loose for b2 in u.tasks)
+            scope = [a for a in _with_stated(scope, tasks, edges) if a not in loose]
+            # "X whenever, but put Y last" (one unit): the task its own words free is not made last
+            last = [t for t in u.tasks if t not in free] or u.tasks
+            edges.update((a, b2) for a in scope for b2 in last)
         elif kind == G.AFTER_ALL:  # "once all that is done" / "once everything else is done" (all others)
-            scope = others if _names_the_others(ref) else earlier
+            scope = others if _names_the_others(ref) else _with_stated(earlier, tasks, edges)
             edges.update((a, b2) for a in scope for b2 in u.tasks)
         elif kind == G.BEFORE_PREV and (G.FINALLY, IN_SENTENCE) in u.markers:
             continue  # "X. Before that, Y, and finally Z": Z is the last step, after X too
@@ -140,6 +143,18 @@ def _marker_edges(
             edges.update((a, b2) if later else (b2, a) for a in named for b2 in u.tasks)
         elif kind in {G.AFTER_REF, G.BEFORE_REF}:
             _ref_edges(kind == G.AFTER_REF, ref, u, tasks, b, text, edges)
+
+
+def _with_stated(scope: list[int], tasks: Tasks, edges: Edges) -> list[int]:
+    """`scope` and the tasks that a reference of its clauses states ("Before you put X in A, Y. Finally Z":
+    X is said before Z, though its task is added after every clause's): a task no clause states goes with
+    the clause whose reference states it, the one it is ordered with."""
+    said = {t for v in tasks.units for t in v.tasks}
+    stated = [
+        t for t in range(len(tasks.specs))
+        if t not in said and t not in scope and any((t, a) in edges or (a, t) in edges for a in scope)
+    ]
+    return scope + stated
 
 
 def sentence_steps(units: list[Unit]) -> list[int]:
@@ -312,13 +327,14 @@ def _then_also(k: int, tasks: Tasks, text: str, b: TaskBuilder) -> None:
         b.unparsed.append(f"{own!r} ('then also': after it, or one more task? {ORDER_LEFT_OPEN})")
 
 
-def _put_before(units: list[Unit], prev: Unit) -> list[int]:
+def _put_before(units: list[Unit], prev: Unit, free: set[int]) -> list[int]:
     """ "X. Ahead of that, Y. Then Z": Z continues the time line (Y, X, Z), so it comes after X too, the
-    clause that Y was put before; nothing when `prev` is not a "before that" sentence."""
+    clauses that Y was put before (the last step of X's sentence, as `_step_said`: "W, plus X. Ahead of
+    that, Y. After which, Z": after W too); nothing when `prev` is not a "before that" sentence."""
     if not any(kind == G.BEFORE_PREV for kind, _ in prev.markers):
         return []
     outer = [v for v in units[: units.index(prev)] if v.sentence != prev.sentence]
-    return outer[-1].tasks if outer else []
+    return _step_said(units, outer[-1], free) if outer else []
 
 
 def _last_step(units: list[Unit], sentence: int, free: set[int], edges: Edges, text: str) -> list[int]:
@@ -347,6 +363,8 @@ def by_position(ref: str, earlier: list[int], prev: Unit | None, others: list[in
     """The tasks a reference by position names ("the first tasks", "the previous task", "everything
     else": `G.GENERIC_REF`); None when it names tasks another way (by their objects). "Everything else" /
     "the other tasks" are all `others`, those written after it too."""
+    if re.fullmatch(r"(?:doing\s+)?anything\s+else", _normal(ref), re.I):  # "Y before anything else"
+        return others
     m = G.GENERIC_REF.match(_normal(ref))
     if m is None:
         return None
