@@ -47,6 +47,7 @@ from nl2hltl2plan.language.grounding import (
     tokens,
 )
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
+from nl2hltl2plan.language.unsupported_steps import PICKS_ONE
 from nl2hltl2plan.worlds.world import PluralConvention
 
 # words before a noun that say which thing it names (`referent_words.txt`, shared with `restated_tasks`):
@@ -81,7 +82,33 @@ def check_referents(
     moved_twice(instruction, tasks, before)
     categories_named(instruction, tasks, instances, scene)
     said = stand_ins(instruction, tasks, instances, scene, scopes)
-    return said + plural_of_several(instruction, tasks, instances, scene, convention, plurals)
+    said += plural_of_several(instruction, tasks, instances, scene, convention, plurals)
+    return said + picked_places(instruction, tasks, instances, scene)
+
+
+def picked_places(
+    instruction: str, tasks: Sequence[BaseTaskSpec], instances: Mapping[str, int] | None, scene: str
+) -> list[str]:
+    """A task's place picked by position among several of its type ("put the potato in the left drawer",
+    "the top shelf"): read as the type, as ALFRED's annotations and ground truth do (any drawer), and
+    said in the result's assumptions, so the reading is never silent about it. A thing so picked is
+    refused (`unsupported_steps.one_of_several`)."""
+    if not instances:
+        return []
+    places = {r for t in tasks for r in t.receptacle or ()}
+    things = {t for task in tasks for t in (*task.object, *(task.container or ()))}
+    mentions = {m.char_start: m for m in find_mentions(instruction)}
+    out = []
+    for said in PICKS_ONE.finditer(instruction.lower()):
+        m = mentions.get(said.end()) or mentions.get(said.start(1))  # "the top drawer": a name of its own
+        picked = [t for t in m.entry.types if t in places - things] if m else []
+        several = [t for t in picked if instances.get(t, 0) > 1]
+        if m and several:
+            out.append(
+                f"'{instruction[said.start(1) : m.char_end]}': read as any {several[0]} ({scene} has"
+                f" {instances[several[0]]}; the spec names types, not which one)"
+            )
+    return out
 
 
 def exact_names(

@@ -76,7 +76,7 @@ def one_of_several(
         return []
     objects = {t for task in parse.tasks for t in task.object}
     out = []
-    for m in _PICKS_ONE.finditer(instruction.lower()):
+    for m in PICKS_ONE.finditer(instruction.lower()):
         named = next((x for x in mentions if x.char_start == m.end()), None)
         if named is not None and any(instances.get(t, 0) > 1 for t in set(named.entry.types) & objects):
             out.append(Unread(f"{m.group(1)} {named.surface}", "object", _PICKED))
@@ -101,7 +101,7 @@ _UNDER = "no base task puts a thing under another: say in or on"
 _UNDER_BEFORE = re.compile(rf"\b(?:{'|'.join(sorted(UNDER))})\s+(?:the\s+|a\s+|an\s+|your\s+|my\s+)?$")
 
 
-_PICKS_ONE = re.compile(
+PICKS_ONE = re.compile(
     r"\bthe\s+(second|third|fourth|fifth|left|right|leftmost|rightmost|middle|nearest|closest|farthest|"
     r"furthest|biggest|smallest|larger|smaller|bigger|top|bottom|upper|lower|topmost|bottommost|uppermost|"
     r"highest|lowest|front|frontmost)\s+"
