@@ -28,6 +28,7 @@ as is a word that is one type's name read as another type (`exact_names`: "towel
 from __future__ import annotations
 
 import re
+from collections import Counter
 from collections.abc import Collection, Mapping, Sequence
 from functools import lru_cache
 
@@ -80,6 +81,7 @@ def check_referents(
     scopes = mention_scopes(instruction, tasks)  # both checks below ask each word's tasks
     exact_names(instruction, tasks, instances, scene, forbidden, scopes)
     moved_twice(instruction, tasks, before)
+    another_one(instruction, tasks)
     categories_named(instruction, tasks, instances, scene)
     said = stand_ins(instruction, tasks, instances, scene, scopes)
     said += plural_of_several(instruction, tasks, instances, scene, convention, plurals)
@@ -276,6 +278,28 @@ def _reference(text: str, types: set[str], named_before: set[str]) -> str | None
             return " ".join(words[m.start - 1 : m.end])
         return None
     return next((w for w in words if w in _BACK), None)
+
+
+_ANOTHER_ONE = re.compile(r"\b(?:the\s+other|another|(?:a|the)\s+second|the\s+remaining)\s+one\b")
+
+
+def another_one(instruction: str, tasks: Sequence[BaseTaskSpec]) -> None:
+    """ "Put the apple in the fridge and put the other one on the counter": "the other one" names a second
+    thing of a type said before, so some type is the object of two tasks (or of one task's two). A reading
+    that acts on one thing of each type (one apple chilled, then put on the counter, as "it" would say)
+    has dropped one of them: refused. Not a place ("... and the cup in the other one")."""
+    lowered = instruction.lower()
+    taken: Counter[str] = Counter()
+    for task in tasks:
+        taken.update({t: task.count for t in task.object})
+    for m in _ANOTHER_ONE.finditer(lowered):
+        if _after_preposition([w for w, _, _ in tokens(lowered[: m.start()])]):
+            continue
+        if not taken or max(taken.values()) < 2:
+            raise HTTError(
+                f"{m.group(0)!r} names a second thing, and the reading acts on one thing of each type: "
+                f"name it (\"the apple ... the other apple\")"
+            )
 
 
 @lru_cache(maxsize=1)
