@@ -280,14 +280,19 @@ def _reference(text: str, types: set[str], named_before: set[str]) -> str | None
     return next((w for w in words if w in _BACK), None)
 
 
-_ANOTHER_ONE = re.compile(r"\b(?:the\s+other|another|(?:a|the)\s+second|the\s+remaining)\s+one\b")
+# "the other one", "another one", or the word alone as a pronoun ("and then another on the counter")
+_ANOTHER_ONE = re.compile(
+    r"\b(?:the\s+other|(?<!after )another|(?:a|the)\s+second|the\s+remaining)"
+    r"(?:\s+one\b|(?=\s*(?:$|[,.;!?]|(?:in|into|on|onto|inside|to|next|by|near|too|as\s+well)\b)))"
+)
 
 
 def another_one(instruction: str, tasks: Sequence[BaseTaskSpec]) -> None:
-    """ "Put the apple in the fridge and put the other one on the counter": "the other one" names a second
-    thing of a type said before, so some type is the object of two tasks (or of one task's two). A reading
-    that acts on one thing of each type (one apple chilled, then put on the counter, as "it" would say)
-    has dropped one of them: refused. Not a place ("... and the cup in the other one")."""
+    """ "Put the apple in the fridge and put the other one on the counter": "the other one" ("another",
+    "the other" said alone) names a second thing of a type said before, so some type is the object of two
+    tasks (or of one task's two). A reading that acts on one thing of each type (one apple chilled, then
+    put on the counter, as "it" would say) has dropped one of them: refused. Not a place ("... and the cup
+    in the other one"), nor "one after another"."""
     lowered = instruction.lower()
     taken: Counter[str] = Counter()
     for task in tasks:
@@ -297,8 +302,8 @@ def another_one(instruction: str, tasks: Sequence[BaseTaskSpec]) -> None:
             continue
         if not taken or max(taken.values()) < 2:
             raise HTTError(
-                f"{m.group(0)!r} names a second thing, and the reading acts on one thing of each type: "
-                f"name it (\"the apple ... the other apple\")"
+                f"{m.group(0).strip()!r} names a second thing, and the reading acts on one thing of each "
+                f"type: name it (\"the apple ... the other apple\")"
             )
 
 

@@ -41,10 +41,6 @@ things, not what it is; "the hiking watch" is judged), and a proper name written
 sentence before a name in lower case ("the Samsung phone": a make, as "my" says whose; `maker_name`),
 unless it is a slip of a state word ("the Heather apple").
 
-States said of a thing named definitely (`unmet_states`): "put the empty mug on the dresser", "the open
-drawer" mean the one in that state, which the spec (any mug does) cannot keep to: unread, named. "An
-empty box" asks for any box and is read past; "the clean mug" is a treatment a reading makes true.
-
 Tools (`unused_tools`): "use the left arm", "using the sponge": what a task is to be done with. Only the
 tools a task takes or its kind implies are read (the knife of a slice, the lamp of an examination); any
 other is unread, never dropped (the plan would not use it).
@@ -232,28 +228,6 @@ def unknown_modifiers(instruction: str, toks: Tokens | None = None) -> list[Unre
     return out
 
 
-_WHICH = word_categories("referent_words.txt")
-_UNMET_STATES, _DEFINITE = _WHICH["unmet_state"], _WHICH["definite"] | {"my", "your", "our"}
-UNMET_REASON = "a state the spec does not check picks which one is meant: any one of its type would do"
-
-
-def unmet_states(instruction: str, toks: Tokens | None = None, named: set[str] | None = None) -> list[Unread]:
-    """The state words (`referent_words.txt`'s `unmet_state`) before a name said definitely: "put the empty
-    mug on the dresser" means the mug that is empty, which a type-level spec cannot keep to (`an empty
-    box` asks for any box, and is read past). Not the words in `named` (already unread)."""
-    toks = tokens(instruction) if toks is None else toks
-    out: list[Unread] = []
-    for m in find_mentions(instruction):
-        before = modifiers_before(instruction, toks, m.start)
-        opener = m.start - 1 - len(before)
-        if m.entry.generic or not before or opener < 0 or toks[opener][0] not in _DEFINITE:
-            continue
-        for word in before:
-            if word in _UNMET_STATES and word not in (named or set()) | {u.words for u in out}:
-                out.append(Unread(word, "object", UNMET_REASON))
-    return out
-
-
 def maker_name(instruction: str, toks: Tokens, at: int, name: int) -> bool:
     """Whether the word of token `at` is a proper name before the thing's name (token `name`): written with
     a capital inside a sentence, the name after it in lower case ("the Samsung phone", "the IKEA lamp",
@@ -383,7 +357,6 @@ def unread_words(instruction: str, toks: Tokens | None = None) -> list[Unread]:
     toks = tokens(instruction) if toks is None else toks
     unknown = unknown_verbs(instruction, toks) + unknown_things(instruction, toks)
     unknown += unknown_modifiers(instruction, toks)
-    unknown += unmet_states(instruction, toks, {u.words for u in unknown})
     order = misspelt_order_words(instruction)
     return unknown + order + misspelt_words(instruction, {u.words for u in order})
 
