@@ -96,6 +96,7 @@ def test_the_other_one_read_as_the_same_thing_is_refused():
     apart = [task("A", "Apple", "Drawer"), task("B", "Potato", "Drawer")]
     another_one("put the apple in the left drawer and the potato in the other one", apart)
     another_one("put the apple in the fridge and then put it on the counter", chilled)
+    another_one("heat the apple and put it on the counter, one after the other", chilled)
 
 
 @pytest.mark.parametrize(

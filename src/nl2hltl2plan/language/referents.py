@@ -282,7 +282,7 @@ def _reference(text: str, types: set[str], named_before: set[str]) -> str | None
 
 # "the other one", "another one", or the word alone as a pronoun ("and then another on the counter")
 _ANOTHER_ONE = re.compile(
-    r"\b(?:the\s+other|(?<!after )another|(?:a|the)\s+second|the\s+remaining)"
+    r"\b(?:(?<!after )the\s+other|(?<!after )(?<!one )another|(?:a|the)\s+second|the\s+remaining)"
     r"(?:\s+one\b|(?=\s*(?:$|[,.;!?]|(?:in|into|on|onto|inside|to|next|by|near|too|as\s+well)\b)))"
 )
 
@@ -292,7 +292,7 @@ def another_one(instruction: str, tasks: Sequence[BaseTaskSpec]) -> None:
     "the other" said alone) names a second thing of a type said before, so some type is the object of two
     tasks (or of one task's two). A reading that acts on one thing of each type (one apple chilled, then
     put on the counter, as "it" would say) has dropped one of them: refused. Not a place ("... and the cup
-    in the other one"), nor "one after another"."""
+    in the other one"), nor "one after the other", "one after another", "one another"."""
     lowered = instruction.lower()
     taken: Counter[str] = Counter()
     for task in tasks:
