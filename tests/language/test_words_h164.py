@@ -40,6 +40,7 @@ def states(text: str, tasks: list[BaseTaskSpec] = MUG, instances=BEDROOM) -> lis
         ("put the mug on the dresser which is open", MUG, []),  # one dresser: picks nothing
         ("put the mug in the open drawer", [task("A", "Mug", "Drawer")], "open"),
         ("put that closed box on the dresser", [task("A", "Box", "Dresser")], "closed"),
+        ("put the used box in the cabinet", [task("A", "Box", "Cabinet")], "used"),
     ],
 )
 def test_a_state_that_picks_one_of_several_is_unread(text, tasks, word):
