@@ -28,6 +28,7 @@ as is a word that is one type's name read as another type (`exact_names`: "towel
 from __future__ import annotations
 
 import re
+from collections import Counter
 from collections.abc import Collection, Mapping, Sequence
 from functools import lru_cache
 
@@ -47,6 +48,7 @@ from nl2hltl2plan.language.grounding import (
     tokens,
 )
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
+from nl2hltl2plan.language.unsupported_steps import PICKS_ONE
 from nl2hltl2plan.worlds.world import PluralConvention
 
 # words before a noun that say which thing it names (`referent_words.txt`, shared with `restated_tasks`):
@@ -79,9 +81,36 @@ def check_referents(
     scopes = mention_scopes(instruction, tasks)  # both checks below ask each word's tasks
     exact_names(instruction, tasks, instances, scene, forbidden, scopes)
     moved_twice(instruction, tasks, before)
+    another_one(instruction, tasks)
     categories_named(instruction, tasks, instances, scene)
     said = stand_ins(instruction, tasks, instances, scene, scopes)
-    return said + plural_of_several(instruction, tasks, instances, scene, convention, plurals)
+    said += plural_of_several(instruction, tasks, instances, scene, convention, plurals)
+    return said + picked_places(instruction, tasks, instances, scene)
+
+
+def picked_places(
+    instruction: str, tasks: Sequence[BaseTaskSpec], instances: Mapping[str, int] | None, scene: str
+) -> list[str]:
+    """A task's place picked by position among several of its type ("put the potato in the left drawer",
+    "the top shelf"): read as the type, as ALFRED's annotations and ground truth do (any drawer), and
+    said in the result's assumptions, so the reading is never silent about it. A thing so picked is
+    refused (`unsupported_steps.one_of_several`)."""
+    if not instances:
+        return []
+    places = {r for t in tasks for r in t.receptacle or ()}
+    things = {t for task in tasks for t in (*task.object, *(task.container or ()))}
+    mentions = {m.char_start: m for m in find_mentions(instruction)}
+    out = []
+    for said in PICKS_ONE.finditer(instruction.lower()):
+        m = mentions.get(said.end()) or mentions.get(said.start(1))  # "the top drawer": a name of its own
+        picked = [t for t in m.entry.types if t in places - things] if m else []
+        several = [t for t in picked if instances.get(t, 0) > 1]
+        if m and several:
+            out.append(
+                f"'{instruction[said.start(1) : m.char_end]}': read as any {several[0]} ({scene} has"
+                f" {instances[several[0]]}; the spec names types, not which one)"
+            )
+    return out
 
 
 def exact_names(
@@ -249,6 +278,33 @@ def _reference(text: str, types: set[str], named_before: set[str]) -> str | None
             return " ".join(words[m.start - 1 : m.end])
         return None
     return next((w for w in words if w in _BACK), None)
+
+
+# "the other one", "another one", or the word alone as a pronoun ("and then another on the counter")
+_ANOTHER_ONE = re.compile(
+    r"\b(?:(?<!after )the\s+other|(?<!after )(?<!one )another|(?:a|the)\s+second|the\s+remaining)"
+    r"(?:\s+one\b|(?=\s*(?:$|[,.;!?]|(?:in|into|on|onto|inside|to|next|by|near|too|as\s+well)\b)))"
+)
+
+
+def another_one(instruction: str, tasks: Sequence[BaseTaskSpec]) -> None:
+    """ "Put the apple in the fridge and put the other one on the counter": "the other one" ("another",
+    "the other" said alone) names a second thing of a type said before, so some type is the object of two
+    tasks (or of one task's two). A reading that acts on one thing of each type (one apple chilled, then
+    put on the counter, as "it" would say) has dropped one of them: refused. Not a place ("... and the cup
+    in the other one"), nor "one after the other", "one after another", "one another"."""
+    lowered = instruction.lower()
+    taken: Counter[str] = Counter()
+    for task in tasks:
+        taken.update({t: task.count for t in task.object})
+    for m in _ANOTHER_ONE.finditer(lowered):
+        if _after_preposition([w for w, _, _ in tokens(lowered[: m.start()])]):
+            continue
+        if not taken or max(taken.values()) < 2:
+            raise HTTError(
+                f"{m.group(0).strip()!r} names a second thing, and the reading acts on one thing of each "
+                f"type: name it (\"the apple ... the other apple\")"
+            )
 
 
 @lru_cache(maxsize=1)

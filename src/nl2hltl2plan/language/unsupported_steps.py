@@ -27,6 +27,7 @@ from nl2hltl2plan.language.grammar.repeats import REPEAT_FRAGMENT
 from nl2hltl2plan.language.grounding import Mention, lookup, sentence_start, tokens
 from nl2hltl2plan.language.negations import NO_CONSTRAINT, PRONOUNS
 from nl2hltl2plan.language.parse_usage import ParseUsage
+from nl2hltl2plan.language.picked_states import picked_states
 from nl2hltl2plan.language.prepositions import a_source
 from nl2hltl2plan.language.statements import REFERENCE
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
@@ -70,17 +71,18 @@ def one_of_several(
 ) -> list[Unread]:
     """ "Put the second egg in the fridge", "the left apple", "the top pillow": words that pick one of
     several things of a type the scene holds, which the spec (type-level atoms: any egg does) cannot
-    keep to. Judged only where the scene is known; a place so picked ("the top drawer") is read as the
-    place's type."""
+    keep to, and a state that does so ("the empty mug": `picked_states`). Judged only where the scene is
+    known; a place picked by position ("the top drawer") is read as the place's type, and the result
+    says so (`referents.picked_places`)."""
     if instances is None:
         return []
     objects = {t for task in parse.tasks for t in task.object}
     out = []
-    for m in _PICKS_ONE.finditer(instruction.lower()):
+    for m in PICKS_ONE.finditer(instruction.lower()):
         named = next((x for x in mentions if x.char_start == m.end()), None)
         if named is not None and any(instances.get(t, 0) > 1 for t in set(named.entry.types) & objects):
             out.append(Unread(f"{m.group(1)} {named.surface}", "object", _PICKED))
-    return out
+    return out + picked_states(instruction, mentions, parse, instances)  # "the empty mug"
 
 
 def under_a_place(instruction: str, mentions: list[Mention], parse: ParseUsage) -> list[Unread]:
@@ -101,7 +103,7 @@ _UNDER = "no base task puts a thing under another: say in or on"
 _UNDER_BEFORE = re.compile(rf"\b(?:{'|'.join(sorted(UNDER))})\s+(?:the\s+|a\s+|an\s+|your\s+|my\s+)?$")
 
 
-_PICKS_ONE = re.compile(
+PICKS_ONE = re.compile(
     r"\bthe\s+(second|third|fourth|fifth|left|right|leftmost|rightmost|middle|nearest|closest|farthest|"
     r"furthest|biggest|smallest|larger|smaller|bigger|top|bottom|upper|lower|topmost|bottommost|uppermost|"
     r"highest|lowest|front|frontmost)\s+"
