@@ -31,6 +31,7 @@ from nl2hltl2plan.language.grounding import (
     find_mentions,
 )
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
+from nl2hltl2plan.worlds.world import Affordances
 
 
 @dataclass
@@ -435,26 +436,34 @@ def _read_with(r: _Reading, fr: Frame, p: str, np: NP, look: AffordanceLookup | 
     if r.obj is not None and np.entry is not None and r.container is None:
         # "the mug with a pencil in it": the pencil goes in the mug; "the dresser with the television": the
         # television, which no hand picks up, only says which dresser (check 1 judges it as a landmark)
-        if r.obj.is_movable_receptacle() and not np.is_movable_receptacle() and _holdable(np, look):
-            r.container, r.obj = r.obj, np
-        elif np.is_movable_receptacle():
+        if np.is_movable_receptacle():
             r.container = np
-        elif r.obj.is_movable_receptacle() and _holdable(np, look):
+        elif r.obj.is_movable_receptacle() and _holdable(np, r.obj, look):
             r.container, r.obj = r.obj, np
     r.states += sorted(np.states)
     r.sliced = r.sliced or np.sliced
     return False
 
 
-def _holdable(np: NP, look: AffordanceLookup | None) -> bool:
-    """Can a hand pick up one of the things the noun phrase may name? By the world's affordances, else
-    ALFRED's for a type the world did not build ("the dresser with the television" where the floor plan's
-    objects lack it); a type no facts know, or no facts at all (no scene), can."""
-    if look is None or np.entry is None:
+def _holdable(np: NP, holder: NP, look: AffordanceLookup | None) -> bool:
+    """Can the noun phrase name a thing a hand picks up that one of the holder's types takes (a pencil in
+    a mug, which may be a Mug or a Cup)? By the world's affordances, else ALFRED's for a type the world
+    did not build ("the dresser with the television" where the floor plan's objects lack it); a type no
+    facts know, or no facts at all (no scene), can. Not: "the dresser with the laptop" (no mug takes a
+    laptop) says which dresser."""
+    if look is None or np.entry is None or holder.entry is None:
         return True
     alfred = alfred_lookup()
-    facts = [look(t) or (alfred(t) if alfred is not None else None) for t in np.entry.types]
-    return any(f is None or f.pickupable for f in facts)
+
+    def facts(t: str) -> Affordances | None:
+        return look(t) or (alfred(t) if alfred is not None else None)
+
+    held = [(t, facts(t)) for t in np.entry.types]
+    holders = [facts(t) for t in holder.entry.types]
+    return any(
+        f is None or (f.pickupable and any(h is None or {t, t + "Sliced"} & h.accepts for h in holders))
+        for t, f in held
+    )
 
 
 def _read_destination(r: _Reading, fr: Frame, it: Item) -> None:
