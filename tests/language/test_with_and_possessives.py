@@ -66,3 +66,12 @@ def test_a_possessive_owner_is_the_source():
     for text in ("Put the drawer's spoon on the counter.", "Put the spoon from the drawer on the counter."):
         tasks, unread = read(text)
         assert tasks == ["place Spoon -> CounterTop"] and not unread, (text, tasks, unread)
+
+
+def test_a_part_of_a_thing_is_not_the_thing():
+    """ "the lid of the bowl" was read as the bowl, the lid dropped with no word unread."""
+    for text in ("Put the lid of the bowl in the sink.", "Put the mug cap in the sink."):
+        tasks, unread = read(text)
+        assert any("lid" in u or "cap" in u for u in unread), (text, tasks, unread)
+    tasks, unread = read("Put the bowl in the sink.")  # near miss
+    assert tasks == ["place Bowl -> SinkBasin"] and not unread
