@@ -13,7 +13,7 @@ from nl2hltl2plan.worlds.world import Affordances
 
 BEDROOM = {
     "Mug", "Bowl", "Box", "Pencil", "Pen", "Laptop", "Dresser", "Desk", "Bed", "Drawer", "CounterTop",
-    "Spoon", "SinkBasin", "Fridge", "Apple", "Pillow", "ArmChair",
+    "Spoon", "SinkBasin", "Fridge", "Apple", "Pillow", "ArmChair", "DeskLamp",
 }  # fmt: skip
 
 
@@ -75,3 +75,12 @@ def test_a_part_of_a_thing_is_not_the_thing():
         assert any("lid" in u or "cap" in u for u in unread), (text, tasks, unread)
     tasks, unread = read("Put the bowl in the sink.")  # near miss
     assert tasks == ["place Bowl -> SinkBasin"] and not unread
+
+
+def test_with_a_lamp_after_a_placing_says_which_place():
+    """ "put the box on the dresser with the lamp" was read as examining the box under the lamp, the
+    dresser dropped; near miss: "examine the box with the lamp" is the light."""
+    tasks, _ = read("Put the box on the dresser with the lamp.")
+    assert tasks == ["place Box -> Dresser"], tasks
+    tasks, unread = read("Examine the box with the lamp.")
+    assert len(tasks) == 1 and tasks[0].startswith("examine_in_light Box") and not unread, (tasks, unread)

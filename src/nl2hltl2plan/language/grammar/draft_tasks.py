@@ -341,7 +341,7 @@ def _read_frame(r: _Reading, fr: Frame, it: Item, look: AffordanceLookup | None)
     if o is not None:
         _read_object(r, o)
     for p, np in it.pps:
-        _read_pp(r, fr, p, np, look)
+        _read_pp(r, fr, it, p, np, look)
     _read_destination(r, fr, it)
 
 
@@ -364,13 +364,13 @@ def _read_object(r: _Reading, o: NP) -> None:
     r.count = max(r.count, o.count)
 
 
-def _read_pp(r: _Reading, fr: Frame, p: str, np: NP, look: AffordanceLookup | None) -> None:
+def _read_pp(r: _Reading, fr: Frame, it: Item, p: str, np: NP, look: AffordanceLookup | None) -> None:
     """ "with X in it", "containing X", "holding X", "along with the other set", "by the light of a lamp",
     and a second listed object ("a bowl and a pencil")."""
     if p in {"along with", "together with"} and np.entry is None and not np.head:
         r.count = max(r.count, 2)  # "one set of keys along with the other set"
         return
-    if p in G.WITH_PREPS and not np.pronoun and _read_with(r, fr, p, np, look):
+    if p in G.WITH_PREPS and not np.pronoun and _read_with(r, fr, it, p, np, look):
         return
     if p in G.LIGHT_PREPS and np.is_lamp():
         r.light = np
@@ -417,7 +417,7 @@ def fits_in(np: NP, container: NP, look: AffordanceLookup | None) -> bool:
     )
 
 
-def _read_with(r: _Reading, fr: Frame, p: str, np: NP, look: AffordanceLookup | None) -> bool:
+def _read_with(r: _Reading, fr: Frame, it: Item, p: str, np: NP, look: AffordanceLookup | None) -> bool:
     """One "with"-like phrase; True when it is settled (nothing else to read from it)."""
     if p == "with" and is_fixed(np):
         return True  # "place it with the coffee machine": the destination (dest_of)
@@ -425,7 +425,9 @@ def _read_with(r: _Reading, fr: Frame, p: str, np: NP, look: AffordanceLookup | 
         r.states.append("clean")
         return True
     if np.is_lamp():
-        r.light = np
+        if fr.cls != "place" or fr.light_on or dest_of(it, fr.cls) is None:
+            r.light = np  # "examine the box with the lamp"
+        # else "put the box on the dresser with the lamp": which dresser, no light (check 1 judges it)
         return True
     if p in {"along with", "together with"} and (same(np, r.obj) or np.entry is None):
         r.count = max(r.count, 2)
