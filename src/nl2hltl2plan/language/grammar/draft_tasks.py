@@ -440,11 +440,18 @@ def _read_with(r: _Reading, fr: Frame, it: Item, p: str, np: NP, look: Affordanc
         # television, which no hand picks up, only says which dresser (check 1 judges it as a landmark)
         if np.is_movable_receptacle():
             r.container = np
-        elif r.obj.is_movable_receptacle() and _holdable(np, r.obj, look):
-            r.container, r.obj = r.obj, np
+        elif r.obj.is_movable_receptacle() and (_said_inside(it, np) or _holdable(np, r.obj, look)):
+            r.container, r.obj = r.obj, np  # (a content said, "with a ball in it", is checked after)
     r.states += sorted(np.states)
     r.sliced = r.sliced or np.sliced
     return False
+
+
+def _said_inside(it: Item, np: NP) -> bool:
+    """ "a bowl with a ball in it": the phrase after "with X" puts X in or on the receptacle ("it")."""
+    at = next((k for k, (_, n) in enumerate(it.pps) if n is np), -1)
+    after = it.pps[at + 1] if 0 <= at < len(it.pps) - 1 else None
+    return after is not None and after[1].pronoun and after[0] in {"in", "on", "inside", "into", "onto"}
 
 
 def _holdable(np: NP, holder: NP, look: AffordanceLookup | None) -> bool:
