@@ -284,11 +284,15 @@ _PLACING = {"in", "into", "inside", "on", "onto"}
 
 
 TWO_PLACES = "two places it could go"
+PICKED_OWNER = "picks one of several places the thing is in"  # "the second drawer's spoon"
+# refusals of the grammar's that the learned model must not read as one whole task (`learned.inference`):
+# the clause is read, and what it says is what no task can keep to
+NOT_A_WHOLE_TASK = (TWO_PLACES, PICKED_OWNER)
 
 
 def two_places_unread(clause: str, places: str) -> str:
     """The grammar's refusal of a thing given two places to go; the learned model must not pick one
-    (`learned.inference` looks for `TWO_PLACES`)."""
+    (`NOT_A_WHOLE_TASK`)."""
     return f"{clause} ({TWO_PLACES}: {places}; say which)"
 
 

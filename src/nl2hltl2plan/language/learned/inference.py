@@ -23,7 +23,7 @@ from nl2hltl2plan.errors import Nl2Hltl2PlanError, WorldError
 from nl2hltl2plan.language.accounting import account
 from nl2hltl2plan.language.grammar import OfflineParse
 from nl2hltl2plan.language.grammar import parse_instruction as grammar_parse
-from nl2hltl2plan.language.grammar.frames import TWO_PLACES
+from nl2hltl2plan.language.grammar.frames import NOT_A_WHOLE_TASK
 from nl2hltl2plan.language.grammar.order_relations import ORDER_LEFT_OPEN
 from nl2hltl2plan.language.grammar.references import NOT_CERTAIN
 from nl2hltl2plan.language.grammar.sentences import without_connective_to
@@ -286,7 +286,9 @@ def grammar_first_reading(instruction: str, ctx: ParseContext) -> LearnedParse:
     unparsed = list(g.unparsed)
     # no clause the grammar reads: the whole text may still be one task, unless the grammar found two
     # places it could go ("on the desk ... in the safe": which one is a guess the model must not make)
-    whole = not drafts and bool(instruction.strip()) and not any(TWO_PLACES in u for u in g.unparsed)
+    whole = not drafts and bool(instruction.strip()) and not any(
+        why in u for u in g.unparsed for why in NOT_A_WHOLE_TASK
+    )
     if whole:
         drafts = [BaseTaskSpec(id=task_letter(0), text=instruction.strip(), kind="place", object=[])]
     preds = model.predict([d.text or instruction for d in drafts], scene_types)
