@@ -456,15 +456,17 @@ def role_swap_conflict(
 
 
 def _own_name(type_: str, phrase: str) -> str:
-    """A phrase of the lexicon that reads `type_` first and is not `phrase` (one sharing its last word
-    preferred: "bath towel" for a Towel), else the type's own name in words."""
+    """A phrase of the lexicon that reads `type_` first and is not `phrase` (the type's own name
+    preferred, "hand towel" and not "towel", which may name a Towel too; then one sharing the phrase's last
+    word: "bath towel" for a Towel), else the type's own name in words."""
     own = [
         " ".join(k)
         for k, (e, plural) in lexicon().items()
         if not plural and e.canonical == type_ and " ".join(k) != phrase and not e.generic
     ]
     last = phrase.split()[-1]
-    return min(own, key=lambda p: (last not in p.split(), len(p)), default=camel_words(type_))
+    plain = camel_words(type_)
+    return min(own, key=lambda p: (p != plain, last not in p.split(), len(p)), default=plain)
 
 
 # ----- roles: which of a word's types can do what the task asks ------------------------------------------

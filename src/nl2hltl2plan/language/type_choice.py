@@ -30,7 +30,9 @@ from nl2hltl2plan.language.task_specs import BaseTaskSpec
 
 # words between a thing and the place it is at ("the towel from / off / on / hanging on the holder",
 # "the towel that's in the drawer"); a landmark's words ("next to", "by", "near") are not among them
-_AT_LINKS = frozenset("from off of on in inside hanging hangs sitting lying that which is that's the a its".split())
+_AT_LINKS = frozenset(
+    "from off of on in inside hanging hangs sitting lying that which is that's the a its".split()
+)
 # one of them says a place it is at, not one it goes to ("put the towel on the holder")
 _AT_WORDS = frozenset("from off hanging hangs sitting lying that which that's".split())
 _PLACES_NAMED = 4  # at most this many places that can hold the thing, in the refusal
@@ -91,8 +93,18 @@ def _with_unbuilt(task: BaseTaskSpec, scene: str) -> BaseTaskSpec:
     if not task.receptacle or not listed:
         return task
     words = [m.entry for m in find_mentions(task.text) if set(m.entry.types) & set(task.receptacle)]
-    more = [t for e in words for t in e.types if t in listed and t not in task.receptacle]
+    more = [t for e in words for t in _unbuilt(e, task.receptacle, listed)]
     return task.model_copy(update={"receptacle": [*task.receptacle, *dict.fromkeys(more)]}) if more else task
+
+
+def _unbuilt(entry: Entry, chosen: Sequence[str], listed: Collection[str]) -> list[str]:
+    """The entry's types the floor plan lists that its world did not build, which the word would have
+    read had they been built: every one for a word of any of its types ("towel holder"), else those
+    before the one chosen ("hand towel holder" read as the HandTowelHolder: none)."""
+    types = entry.types
+    if not entry.all_ and chosen and chosen[0] in types:
+        types = types[: types.index(chosen[0])]
+    return [t for t in types if t in listed and t not in chosen]
 
 
 def _role_rules_out(task: BaseTaskSpec, first: str, named: str, look: AffordanceLookup) -> bool:
@@ -125,7 +137,7 @@ def _place_at(
         return None
     places = [t for t in after.entry.types if instances.get(t)]
     places = places if after.entry.all_ else places[:1]
-    places += [t for t in after.entry.types if t in _listed(scene) and t not in places]  # listed, unbuilt
+    places += _unbuilt(after.entry, places, _listed(scene))
     held = {t for t in types for p in places if (a := look(p)) is not None and t in a.accepts}
     return (held.pop(), "/".join(places)) if len(held) == 1 else None
 
