@@ -386,7 +386,10 @@ class Grounder:
         said = (
             f" (for {what.strip()!r})" if words and plain not in words and entry.phrase not in words else ""
         )
-        return WorldError(f"no {entry.canonical}{said} in {self.scene}")
+        from nl2hltl2plan.language.type_choice import other_types_note  # it reads this module's lexicon
+
+        note = other_types_note(entry, entry.canonical, self.types or (), self.scene)  # "chair": a Chair
+        return WorldError(f"no {entry.canonical}{said} in {self.scene}{note}")
 
     def ground(self, word: str, role: str = "object") -> list[str]:
         """A word or type name -> present types; WorldError naming it when the scene has none."""

@@ -17,6 +17,7 @@ from functools import cache
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.language.grounding import (
+    MOVABLE_RECEPTACLES,
     AffordanceLookup,
     Entry,
     Mention,
@@ -178,9 +179,17 @@ def other_types_note(
         return ""
     if thing:
         able = sorted(t for t in built if (a := look(t)) is not None and any(x in a.accepts for x in thing))
+        able.sort(key=lambda t: _unlike_a_seat(t, look))
         if able:
             said.append(f"what there can hold the {thing[0]}: {', '.join(able[:_PLACES_NAMED])}")
     return f" ({'; '.join(said)})"
+
+
+def _unlike_a_seat(type_: str, look: AffordanceLookup) -> tuple[bool, bool]:
+    """How far a place is from an open surface such as a chair or a table (the nearest kind of place named
+    first): a thing that is itself carried (a bowl), then one that opens (a fridge), come last."""
+    a = look(type_)
+    return type_ in MOVABLE_RECEPTACLES, a is not None and a.openable
 
 
 def _receptacle_types(look: AffordanceLookup, entry: Entry) -> set[str]:
