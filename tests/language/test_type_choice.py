@@ -11,9 +11,10 @@ from pathlib import Path
 import pytest
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
-from nl2hltl2plan.language.grounding import find_mentions, lookup
+from nl2hltl2plan.language.grounding import alfred_lookup, find_mentions, lookup
+from nl2hltl2plan.language.missing_types import other_types_note
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
-from nl2hltl2plan.language.type_choice import other_types_note, text_decides
+from nl2hltl2plan.language.type_choice import text_decides
 
 pytestmark = pytest.mark.data
 
@@ -87,10 +88,11 @@ def test_a_missing_place_says_what_the_words_other_type_cannot_do():
 def test_the_note_says_nothing_where_nothing_more_is_true():
     chair = lookup("chair")
     assert chair is not None
-    assert other_types_note(chair, "ArmChair", {"Bed"}, "tabletop", ["BasketBall"]) == ""  # not ALFRED's
+    look = alfred_lookup()
+    assert other_types_note(chair, "ArmChair", {"Bed"}, "tabletop", look, ["BasketBall"]) == ""  # no ALFRED
     mug = lookup("mug")
     assert mug is not None  # "mug": a Cup holds no Laptop either, but the word names a thing, not a place
-    assert other_types_note(mug, "Mug", {"Cup"}, "FloorPlan1") == ""
+    assert other_types_note(mug, "Mug", {"Cup"}, "FloorPlan1", look) == ""
 
 
 @pytest.mark.parametrize("name", ["users_h165dev", "users_h165held"])

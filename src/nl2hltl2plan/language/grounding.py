@@ -16,6 +16,7 @@ from functools import lru_cache
 from importlib import resources
 
 from nl2hltl2plan.errors import WorldError
+from nl2hltl2plan.language.missing_types import other_types_note
 from nl2hltl2plan.worlds.world import Affordances
 
 # what a knife slices in ALFRED (an egg cracks): "a piece of soap" is a whole soap bar
@@ -386,9 +387,7 @@ class Grounder:
         said = (
             f" (for {what.strip()!r})" if words and plain not in words and entry.phrase not in words else ""
         )
-        from nl2hltl2plan.language.type_choice import other_types_note  # it reads this module's lexicon
-
-        note = other_types_note(entry, entry.canonical, self.types or (), self.scene)  # "chair": a Chair
+        note = other_types_note(entry, entry.canonical, self.types or (), self.scene, alfred_lookup())
         return WorldError(f"no {entry.canonical}{said} in {self.scene}{note}")
 
     def ground(self, word: str, role: str = "object") -> list[str]:

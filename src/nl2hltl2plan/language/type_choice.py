@@ -7,7 +7,7 @@ refusal says of the word's other types.
   place it comes from holds one of them only ("the towel from the hand towel holder"). `text_decides`.
 - "put the basketball on the chair" where the floor plan has no ArmChair: the word's other type, ALFRED's
   Chair, holds nothing (and no floor plan's world builds one). The refusal says so and names the places
-  of the scene that can hold the thing (`other_types_note`).
+  of the scene that can hold the thing (`missing_types.other_types_note`, `note_for`).
 """
 
 from __future__ import annotations
@@ -15,9 +15,7 @@ from __future__ import annotations
 from collections.abc import Collection, Mapping, Sequence
 from functools import cache
 
-from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.language.grounding import (
-    MOVABLE_RECEPTACLES,
     AffordanceLookup,
     Entry,
     Mention,
@@ -27,6 +25,8 @@ from nl2hltl2plan.language.grounding import (
     own_type,
     tokens,
 )
+from nl2hltl2plan.language.missing_types import listed as _listed
+from nl2hltl2plan.language.missing_types import other_types_note
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
 
 # words between a thing and the place it is at ("the towel from / off / on / hanging on the holder",
@@ -75,17 +75,6 @@ def text_decides(
     if place is not None and place[0] == first:
         return f"{read}; the {place[1]} it is at holds no {named} in ALFRED"
     return None
-
-
-@cache
-def _listed(scene: str) -> frozenset[str]:
-    """The types the floor plan's object lists name (none where it is not an ALFRED floor plan)."""
-    from nl2hltl2plan.language.grounding import scene_types
-
-    try:
-        return frozenset(scene_types(scene))
-    except Nl2Hltl2PlanError:  # tabletop, demo kitchen: the world is all there is
-        return frozenset()
 
 
 def _with_unbuilt(task: BaseTaskSpec, scene: str) -> BaseTaskSpec:
@@ -143,60 +132,6 @@ def _place_at(
     return (held.pop(), "/".join(places)) if len(held) == 1 else None
 
 
-def other_types_note(
-    entry: Entry,
-    missing: str,
-    built: Collection[str],
-    scene: str,
-    thing: Sequence[str] = (),
-    look: AffordanceLookup | None = None,
-) -> str:
-    """What a refusal "no ArmChair in FloorPlan326" adds of the word's other types that the floor plan's
-    object lists name and that cannot stand in: " ('chair' also names its Chair, which holds nothing in
-    ALFRED, and which its world does not build; what there can hold the BasketBall: Bed, DiningTable,
-    SideTable)". `built`: the world's types; `thing`: the types of what the place is to hold ("" unless a
-    type of the word is asked as a place). The empty string where nothing more is true to say."""
-    look, listed = look or _look(), _listed(scene)
-    if not listed:  # not an ALFRED floor plan (tabletop, demo): nothing more to say
-        return ""
-    others = [t for t in entry.types if t != missing and t in listed | set(built)]
-    if look is None or not others:
-        return ""
-    said = []
-    for other in others:
-        a = look(other)
-        if a is None:
-            continue
-        if not a.receptacle and entry.types[0] in _receptacle_types(look, entry):
-            why = "which holds nothing in ALFRED"
-        elif thing and not any(t in a.accepts for t in thing):
-            why = f"which cannot hold the {thing[0]} in ALFRED"
-        else:
-            continue
-        unbuilt = "" if other in built else ", and which its world does not build"
-        said.append(f"{entry.phrase!r} also names its {other}, {why}{unbuilt}")
-    if not said:
-        return ""
-    if thing:
-        able = sorted(t for t in built if (a := look(t)) is not None and any(x in a.accepts for x in thing))
-        able.sort(key=lambda t: _unlike_a_seat(t, look))
-        if able:
-            said.append(f"what there can hold the {thing[0]}: {', '.join(able[:_PLACES_NAMED])}")
-    return f" ({'; '.join(said)})"
-
-
-def _unlike_a_seat(type_: str, look: AffordanceLookup) -> tuple[bool, bool]:
-    """How far a place is from an open surface such as a chair or a table (the nearest kind of place named
-    first): a thing that is itself carried (a bowl), then one that opens (a fridge), come last."""
-    a = look(type_)
-    return type_ in MOVABLE_RECEPTACLES, a is not None and a.openable
-
-
-def _receptacle_types(look: AffordanceLookup, entry: Entry) -> set[str]:
-    """The entry's types that ALFRED lets hold things (a word for a place, not for a thing)."""
-    return {t for t in entry.types if (a := look(t)) is not None and a.receptacle}
-
-
 def note_for(task: BaseTaskSpec, role: str, missing: str, built: Collection[str], scene: str) -> str:
     """`other_types_note` for a task's slot whose type `missing` the world lacks: the entry is the word of
     the task's text that reads `missing` first (the grammar keeps a word's first type where none is
@@ -205,4 +140,4 @@ def note_for(task: BaseTaskSpec, role: str, missing: str, built: Collection[str]
     if entry is None or len(entry.types) < 2:
         return ""
     thing = (task.container or task.object) if role == "receptacle" else ()
-    return other_types_note(entry, missing, built, scene, thing)
+    return other_types_note(entry, missing, built, scene, _look(), thing)
