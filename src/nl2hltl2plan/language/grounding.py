@@ -16,6 +16,7 @@ from functools import lru_cache
 from importlib import resources
 
 from nl2hltl2plan.errors import WorldError
+from nl2hltl2plan.language.missing_types import other_types_note
 from nl2hltl2plan.worlds.world import Affordances
 
 # what a knife slices in ALFRED (an egg cracks): "a piece of soap" is a whole soap bar
@@ -386,7 +387,8 @@ class Grounder:
         said = (
             f" (for {what.strip()!r})" if words and plain not in words and entry.phrase not in words else ""
         )
-        return WorldError(f"no {entry.canonical}{said} in {self.scene}")
+        note = other_types_note(entry, entry.canonical, self.types or (), self.scene, alfred_lookup())
+        return WorldError(f"no {entry.canonical}{said} in {self.scene}{note}")
 
     def ground(self, word: str, role: str = "object") -> list[str]:
         """A word or type name -> present types; WorldError naming it when the scene has none."""
@@ -456,15 +458,17 @@ def role_swap_conflict(
 
 
 def _own_name(type_: str, phrase: str) -> str:
-    """A phrase of the lexicon that reads `type_` first and is not `phrase` (one sharing its last word
-    preferred: "bath towel" for a Towel), else the type's own name in words."""
+    """A phrase of the lexicon that reads `type_` first and is not `phrase` (the type's own name
+    preferred, "hand towel" and not "towel", which may name a Towel too; then one sharing the phrase's last
+    word: "bath towel" for a Towel), else the type's own name in words."""
     own = [
         " ".join(k)
         for k, (e, plural) in lexicon().items()
         if not plural and e.canonical == type_ and " ".join(k) != phrase and not e.generic
     ]
     last = phrase.split()[-1]
-    return min(own, key=lambda p: (last not in p.split(), len(p)), default=camel_words(type_))
+    plain = camel_words(type_)
+    return min(own, key=lambda p: (p != plain, last not in p.split(), len(p)), default=plain)
 
 
 # ----- roles: which of a word's types can do what the task asks ------------------------------------------

@@ -48,6 +48,7 @@ from nl2hltl2plan.language.grounding import (
     tokens,
 )
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
+from nl2hltl2plan.language.type_choice import text_decides
 from nl2hltl2plan.language.unsupported_steps import PICKS_ONE
 from nl2hltl2plan.worlds.world import PluralConvention
 
@@ -79,11 +80,11 @@ def check_referents(
     docstring); returns the assumptions a convention made ("'the forks': read as 2 of ...").
     `forbidden`: the types the instruction's negations act on ("don't touch the towel")."""
     scopes = mention_scopes(instruction, tasks)  # both checks below ask each word's tasks
-    exact_names(instruction, tasks, instances, scene, forbidden, scopes)
+    decided = exact_names(instruction, tasks, instances, scene, forbidden, scopes)
     moved_twice(instruction, tasks, before)
     another_one(instruction, tasks)
     categories_named(instruction, tasks, instances, scene)
-    said = stand_ins(instruction, tasks, instances, scene, scopes)
+    said = decided + stand_ins(instruction, tasks, instances, scene, scopes)
     said += plural_of_several(instruction, tasks, instances, scene, convention, plurals)
     return said + picked_places(instruction, tasks, instances, scene)
 
@@ -120,17 +121,17 @@ def exact_names(
     scene: str,
     forbidden: Collection[str] = (),
     scopes: Scopes | None = None,
-) -> None:
+) -> list[str]:
     """A word that is one type's own name, read as another type of the scene it is a synonym of ("towel"
     read as a HandTowel where the scene has a Towel too): refused naming both, unless another word of
     the instruction names that other type itself ("the towel ... and the hand towel"): the text decides.
     A negation's types (`forbidden`) are asked as a task's are: "don't touch the towel" that forbids only
-    the HandTowel would leave the Towel free.
+    the HandTowel would leave the Towel free. Returns the readings the text decided, as assumptions.
     `scopes`: `mention_scopes`, where the caller has them."""
     if not instances:
-        return
+        return []
     scopes = mention_scopes(instruction, tasks) if scopes is None else scopes
-    mentions = [m for m, _ in scopes]
+    mentions, said = [m for m, _ in scopes], []
     held = [(task, [*task.object, *(task.container or ())]) for task in tasks]
     things = {t for _, types in held for t in types}
     used = things | {t for task in tasks for t in task.receptacle or ()} | set(forbidden)
@@ -140,7 +141,10 @@ def exact_names(
         clash = exact_name_conflict(m.entry, present, scene)
         first = present[0] if present else ""
         if clash and first in used and not any(o is not m and o.entry.types[0] == first for o in mentions):
-            raise HTTError(clash)
+            why = None if first in forbidden else text_decides(m, present, own, instruction, instances, scene)
+            if why is None:  # the text decides where one type only can do it (`type_choice`), said
+                raise HTTError(clash)
+            said.append(why)
         # the thing handled read as another type than the one the word names ("the cup" as the Mug), a
         # type no other word of its task can mean ("a utensil ... not the butter knife": the utensil's)
         unnamed = {t for task in own for t in (*task.object, *(task.container or ())) if t not in meant}
@@ -149,6 +153,7 @@ def exact_names(
         swap = role_swap_conflict(m.entry, present, unnamed, scene, where)
         if swap:
             raise HTTError(swap)
+    return said
 
 
 def stand_ins(

@@ -44,6 +44,7 @@ from nl2hltl2plan.language.learned.structured import (
 )
 from nl2hltl2plan.language.result import Ambiguity
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter
+from nl2hltl2plan.language.type_choice import note_for
 
 
 @dataclass(frozen=True)
@@ -424,7 +425,9 @@ def _missing(tasks: list[BaseTaskSpec], types: set[str] | None, scene: str) -> l
             if not vals:
                 out.append(f"task {t.id} ({t.text!r}): no {role} found in {scene}")
             elif not any(v in types for v in vals):
-                out.append(f"no {vals[0]} in {scene}" + _listed_not_built(vals[0], scene))
+                # what is true of the word's other types ("chair": ALFRED's Chair holds nothing)
+                other = note_for(t, role, vals[0], types, scene)
+                out.append(f"no {vals[0]} in {scene}" + _listed_not_built(vals[0], scene) + other)
     return out
 
 
