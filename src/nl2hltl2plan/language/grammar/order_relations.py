@@ -126,6 +126,10 @@ def _marker_edges(
             own = sorted(t for v in units if v.sentence == u.sentence for t in v.tasks)
             pairs = zip(own, own[1:], strict=False)
             edges.update(pairs if kind == G.IN_ORDER else ((b2, a) for a, b2 in pairs))
+        elif kind in {G.AFTER_REF, G.BEFORE_REF} and (two := either_of(ref, u, units)) is not None:
+            if not two or kind == G.AFTER_REF:  # "after either of these": after one of them, no `before` pair
+                b.unparsed.append(f"could not tell which tasks {ref!r} refers to ({NOT_CERTAIN})")
+            edges.update((b2, a) for a in two for b2 in u.tasks if kind == G.BEFORE_REF)
         elif kind in {G.AFTER_REF, G.BEFORE_REF} and (named := said_before(ref, u, units)) is not None:
             if not named:  # "the rest" with nothing said before it; "A and B. Before you do this, C"
                 b.unparsed.append(f"could not tell which task {ref!r} refers to ({NOT_CERTAIN})")
@@ -357,6 +361,27 @@ def _last_step(units: list[Unit], sentence: int, free: set[int], edges: Edges, t
 def _names_the_others(ref: str) -> bool:
     """ "everything else", "the other tasks": every other task, also those written after the reference."""
     return re.search(r"\b(?:else|other)\b", ref, re.I) is not None
+
+
+# "Before either of these, C" / "before both of those": the two tasks just said, whichever sentences hold them
+_EITHER_OF = re.compile(
+    r"(?:either|both|each)\s+of\s+(?:these|those|them|the\s+two)(?:\s+two)?(?:\s+(?:tasks|steps|things|jobs))?",
+    re.I,
+)
+
+
+def either_of(ref: str, u: Unit, units: list[Unit]) -> list[int] | None:
+    """The two tasks "either of these" / "both of those" names: the sentence before when it holds two, else
+    every task said before when there are two ("A. Then B. Before either of these, C": C before A and B);
+    [] where that is not certain (three said before, one sentence of one); None: not such a reference."""
+    if not u.tasks or not _EITHER_OF.fullmatch(_normal(ref)):
+        return None
+    said = [v for v in units if v is not u and v.tasks and max(v.tasks) < min(u.tasks)]
+    if not said:
+        return []
+    last = [t for v in said if v.sentence == said[-1].sentence for t in v.tasks]
+    every = [t for v in said for t in v.tasks]
+    return last if len(last) == 2 else every if len(every) == 2 else []
 
 
 def by_position(ref: str, earlier: list[int], prev: Unit | None, others: list[int]) -> list[int] | None:
