@@ -158,8 +158,8 @@ def test_a_repeat_of_a_task_said_after_an_order_word_copies_the_task_only():
     """h166 (issue 28, paper-style, three and four tasks): "After that, examine X ..., and then do the same
     with Y" repeats the examination, not its order word ("After that" stays with X): it was left unread."""
     text = (
-        "Put two CDs in a desk drawer and two clocks on the desk. After that, examine the statue by the light "
-        "of the desk lamp, and then do the same with the book."
+        "Put two CDs in a desk drawer and two clocks on the desk. After that, examine the statue by the "
+        "light of the desk lamp, and then do the same with the book."
     )
     assert repeated_for_another(text).endswith(
         "After that, examine the statue by the light of the desk lamp. Then examine the book by the light "
