@@ -152,3 +152,23 @@ def test_an_ordered_repeat_of_several_things_is_not_written_out():
         "Put the tomato in the microwave after the egg is in the fridge, then do the same with the potato.",
     ):
         assert repeated_for_another(text) == text
+
+
+def test_a_repeat_of_a_task_said_after_an_order_word_copies_the_task_only():
+    """h166 (issue 28, paper-style, three and four tasks): "After that, examine X ..., and then do the same
+    with Y" repeats the examination, not its order word ("After that" stays with X): it was left unread."""
+    text = (
+        "Put two CDs in a desk drawer and two clocks on the desk. After that, examine the statue by the "
+        "light of the desk lamp, and then do the same with the book."
+    )
+    assert repeated_for_another(text).endswith(
+        "After that, examine the statue by the light of the desk lamp. Then examine the book by the light "
+        "of the desk lamp."
+    )
+    tasks, before = _read(text, "FloorPlan304", "offline")
+    assert [t[:2] for t in tasks[2:]] == [("examine_in_light", "Statue"), ("examine_in_light", "Book")]
+    assert ("C", "D") in before and ("A", "C") in before and ("B", "C") in before
+    unordered = "Next, wash the mug and put it on the counter. The cup too."
+    assert repeated_for_another(unordered) == (
+        "Next, wash the mug and put it on the counter. Wash the cup and put it on the counter."
+    )

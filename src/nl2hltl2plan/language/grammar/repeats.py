@@ -79,13 +79,14 @@ def repeated_for_another(text: str) -> str:
             one = not said or len(things) == 1
             if things and len(copies) == len(things) and _only_things(fragment, things) and one:
                 lead = core[: len(core) - len(core.lstrip())]
+                copies = [c[:1].upper() + c[1:] for c in copies]  # the task's order word is not copied
                 if said:  # "Then put the cup on the counter."
                     lead, copies = said.group(0), [c[:1].lower() + c[1:] for c in copies]
                 out.append(lead + ". ".join(copies) + body[len(core) :])
                 written = True
                 continue
         if not REPEAT_FRAGMENT.match(fragment):
-            task = core.strip()
+            task = fragment.strip()  # its order word stays with it ("After that, look at X. Then the Y too.")
         out.append(body)
     return "".join(out) if written else text
 
