@@ -1,6 +1,9 @@
-"""Issue 28, a reference to the two tasks just said: "A. Then B. Before either of these, C" puts C before A
-and B. Before, "either of these" named the sentence before alone (B), and C went after A and before B, a
-wrong reading at exit 0 (the lead's paper-style set, session 26)."""
+"""Issue 28, order in paper-style instructions (session 26, the lead's and h166's paper-style sets), each a
+wrong reading at exit 0 before:
+- a reference to the two tasks just said: "A. Then B. Before either of these, C" puts C before A and B
+  ("either of these" named the sentence before alone, B, and C went after A and before B);
+- "..., and once you've done that, C" inside a sentence is "then" (its "that" was left behind, ", then
+  that, C", and C lost its order after the task before)."""
 
 from __future__ import annotations
 
@@ -14,7 +17,10 @@ BREAD = "place Bread -> CounterTop"
 EGG = "place Egg -> Microwave"
 
 
-@pytest.mark.parametrize("ref", ["either of these", "both of these", "either of those", "both of them"])
+@pytest.mark.parametrize(
+    "ref",
+    ["either of these", "both of these", "either of those", "both of them", "you do either", "doing both"],
+)
 def test_before_either_of_two_sentences(ref):
     tasks, order, unread = read(
         f"Put the mug in the sink. Then put the apple in the fridge. Before {ref}, put the bread on the "
@@ -48,3 +54,16 @@ def test_before_either_of_one_sentence_of_two():
 def test_either_of_not_certain_is_unread(text):
     _, _, unread = read(text)
     assert any("either of these" in u or "both of these" in u for u in unread)
+
+
+@pytest.mark.parametrize(
+    "done", ["once you've done that", "after you have finished that", "when you've done it"]
+)
+def test_once_you_have_done_that_inside_a_sentence(done):
+    tasks, order, unread = read(
+        f"Put the mug in the drawer. Then put the apple on the counter, and {done}, move the bread to the "
+        "counter."
+    )
+    mug, apple, bread = "place Mug -> Drawer", "place Apple -> CounterTop", BREAD
+    assert sorted(tasks) == sorted([mug, apple, bread]) and not unread
+    assert order == {(mug, apple), (apple, bread), (mug, bread)}
