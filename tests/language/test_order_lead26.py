@@ -3,7 +3,8 @@ wrong reading at exit 0 before:
 - a reference to the two tasks just said: "A. Then B. Before either of these, C" puts C before A and B
   ("either of these" named the sentence before alone, B, and C went after A and before B);
 - "..., and once you've done that, C" inside a sentence is "then" (its "that" was left behind, ", then
-  that, C", and C lost its order after the task before)."""
+  that, C", and C lost its order after the task before);
+- "..., and to finish, D" inside a sentence is "and finally" (D came after the sentence before only)."""
 
 from __future__ import annotations
 
@@ -67,3 +68,19 @@ def test_once_you_have_done_that_inside_a_sentence(done):
     mug, apple, bread = "place Mug -> Drawer", "place Apple -> CounterTop", BREAD
     assert sorted(tasks) == sorted([mug, apple, bread]) and not unread
     assert order == {(mug, apple), (apple, bread), (mug, bread)}
+
+
+@pytest.mark.parametrize("fin", ["to finish,", "to wrap up,", "to end,"])
+def test_to_finish_inside_a_sentence_is_finally(fin):
+    tasks, order, unread = read(
+        f"First, put the mug in the sink. Then put the apple in the fridge. After that, put the bread on the "
+        f"counter, and {fin} put the egg in the microwave."
+    )
+    assert len(tasks) == 4 and not unread
+    assert {(MUG, EGG), (APPLE, EGG), (BREAD, EGG)} <= order
+
+
+def test_to_finish_a_thing_is_a_purpose():
+    """Near miss: "to finish the job," says why, not when: no task read from it."""
+    _, _, unread = read("Put the mug in the sink, to finish the job, and put the apple in the fridge.")
+    assert unread
