@@ -363,9 +363,10 @@ def _names_the_others(ref: str) -> bool:
     return re.search(r"\b(?:else|other)\b", ref, re.I) is not None
 
 
-# "Before either of these, C" / "before both of those": the two tasks just said, whichever sentences hold them
+# "Before either of these, C" / "before both of those" / "before you do either": the two tasks just said
 _EITHER_OF = re.compile(
-    r"(?:either|both|each)\s+of\s+(?:these|those|them|the\s+two)(?:\s+two)?(?:\s+(?:tasks|steps|things|jobs))?",
+    r"(?:(?:you\s+)?do\s+)?(?:either|both|each)"
+    r"(?:\s+of\s+(?:these|those|them|the\s+two)(?:\s+two)?(?:\s+(?:tasks|steps|things|jobs))?)?",
     re.I,
 )
 

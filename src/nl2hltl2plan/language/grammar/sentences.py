@@ -370,9 +370,11 @@ _TAKE_LIST_THEN_PUT = re.compile(
 _RINSE_ADJ = re.compile(r"\b(a|an|the)\s+rinse(?:\s+off)?\s+(?=[a-z])", re.IGNORECASE)
 # Inside a sentence, a marker that the step before is done is "then" (at its start the leading markers
 # read it): "put X in A, and once that's done put Y in B", "... and when you're done put Y ...",
-# "put X in A, and after that put Y in B"
+# "put X in A, and after that put Y in B", "..., and once you've done that, put Y in B" (its "that" first:
+# left after "done", it read ", then that, put Y" and lost the order)
 _THEN_INSIDE = re.compile(
     r"(?<=\w)\s*,?\s+(?:and\s+)?(?:"
+    r"(?:once|when|after)\s+you\s+have\s+(?:done|finished|completed)\s+(?:that|this|it|so)|"
     r"(?:once|when|after)\s+(?:that's|that\s+is|it's|it\s+is|this\s+is|you're|you\s+are|you\s+have)?"
     r"\s*(?:done|finished|through|there|in\s+place|handled|taken\s+care\s+of|out\s+of\s+the\s+way)"
     r"(?:\s+with\s+(?:that|it|this))?"
