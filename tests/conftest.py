@@ -27,6 +27,17 @@ _user_cache = os.environ.get("XDG_CACHE_HOME") or os.path.expanduser("~/.cache")
 os.environ.setdefault("MPLCONFIGDIR", os.path.join(_user_cache, "matplotlib"))
 os.environ["XDG_CACHE_HOME"] = tempfile.mkdtemp(prefix="nl2hltl2plan-test-cache-")
 
+# Opt-in measurement: how often the run reads the same instruction again (tests/reading_counts.py). The
+# reader is wrapped here, before any test module imports it; off, nothing is imported or changed.
+_count_readings = os.environ.get("NL2HLTL2PLAN_COUNT_READINGS")
+if _count_readings:
+    import reading_counts
+
+    _stop_counting = reading_counts.install(_count_readings)
+
+    def pytest_unconfigure(config: pytest.Config) -> None:
+        _stop_counting()
+
 
 def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
     if data_dir(required=False) is not None:
