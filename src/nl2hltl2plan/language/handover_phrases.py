@@ -123,10 +123,11 @@ def _drop_framing(text: str) -> str:
     """A purpose or reason that names nothing the reader could use ('to keep things simple, ...', 'for
     safety, ...', '..., since that is faster') frames the sentence and is dropped; one that names a block,
     a place, an arm, a count, a negation, an order or a time stays to be read (or refused)."""
-    lead = re.match(rf"({STEP_NUMBER})\s*(?:to|in\s+order\s+to|for|because|since|as)\s+([^,]{{1,60}}),", text)
+    # ("as soon as X is done, ..." says when, never why: it is no frame)
+    lead = re.match(rf"({STEP_NUMBER})\s*(?:to|in\s+order\s+to|for|because|since|{_AS})\s+([^,]{{1,60}}),", text)
     if lead and not MEANING.search(lead.group(2)):
         text = lead.group(1) + " " + text[lead.end() :]
-    tail = re.search(r",\s*(?:because|since|as|so\s+that|for)\s+([^,]+)$", text)
+    tail = re.search(rf",\s*(?:because|since|{_AS}|so\s+that|for)\s+([^,]+)$", text)
     if tail and not MEANING.search(tail.group(1)):
         text = text[: tail.start()]
     # a preamble of four words or more before a colon that names nothing either, nor any verb, condition or
@@ -135,6 +136,9 @@ def _drop_framing(text: str) -> str:
     if head and len(head.group(1).split()) >= 4 and not _NAMES.search(_I_SAYS.sub(" ", head.group(1))):
         text = text[head.end() :]
     return text
+
+
+_AS = r"as(?!\s+soon\s+as\b)"  # a reason's "as", never the time's "as soon as"
 
 
 # what a preamble may not hold: a meaning word, a placing verb, a condition ("when that is done:" is a time),
