@@ -19,8 +19,8 @@ DEV_HANDOVER: dict[str, dict[int, list[str]]] = {
     "only_places": {
         3: ["Move the three pillars to regions E, F and G, next to arm a and arm b, and only ever put a "
             "pillar down on one of those three regions.",
-            "Put the three pillars on the placement area, regions E, F and G, beside arm a and arm b. Objects "
-            "may only be placed on those regions."],
+            "Put the three pillars on the placement area, regions E, F and G, beside arm a and arm b. "
+            "Objects may only be placed on those regions."],
     },
     "after_everything_else": {
         4: ["Transfer the three blocks into the opposite regions. The arms cannot touch the blue block "
