@@ -140,7 +140,8 @@ def _drop_framing(text: str) -> str:
     return text
 
 
-_AS = r"as(?!\s+soon\s+as\b)"  # a reason's "as", never the time's "as soon as"
+# a reason's "as", never the time's "as soon as" ("as soon as possible" says no time: a frame still)
+_AS = r"as(?!\s+soon\s+as\b(?!\s+(?:possible|you\s+can|we\s+can)\b))"
 
 
 # what a preamble may not hold: a meaning word, a placing verb, a condition ("when that is done:" is a time),
