@@ -149,8 +149,8 @@ def _named_before(m: Marked, named_before: tuple[str, ...], match: re.Match[str]
         if said and (last.kind != "regions" or _COUNTS.get(said, said) != str(len(last.regions))):
             return match.group(0)  # unread: refused by name
         return _new_place(m, last)
-    if not named_before or not match.group(0).startswith(("those", "these")):
-        return match.group(0)  # "the same regions" with no place in its sentence: unread, as before
+    if len(named_before) < 2 or not match.group(0).startswith(("those", "these")):
+        return match.group(0)  # "the same regions", or "those regions" of one region: unread, as before
     if said and _COUNTS.get(said, said) != str(len(named_before)):
         return match.group(0)
     return _new_place(m, Place("regions", named_before, text=match.group(0).strip()))
