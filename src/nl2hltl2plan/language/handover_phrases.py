@@ -123,10 +123,13 @@ def _drop_framing(text: str) -> str:
     """A purpose or reason that names nothing the reader could use ('to keep things simple, ...', 'for
     safety, ...', '..., since that is faster') frames the sentence and is dropped; one that names a block,
     a place, an arm, a count, a negation, an order or a time stays to be read (or refused)."""
-    lead = re.match(rf"({STEP_NUMBER})\s*(?:to|in\s+order\s+to|for|because|since|as)\s+([^,]{{1,60}}),", text)
+    # ("as soon as X is done, ..." says when, never why: it is no frame)
+    lead = re.match(
+        rf"({STEP_NUMBER})\s*(?:to|in\s+order\s+to|for|because|since|{_AS})\s+([^,]{{1,60}}),", text
+    )
     if lead and not MEANING.search(lead.group(2)):
         text = lead.group(1) + " " + text[lead.end() :]
-    tail = re.search(r",\s*(?:because|since|as|so\s+that|for)\s+([^,]+)$", text)
+    tail = re.search(rf",\s*(?:because|since|{_AS}|so\s+that|for)\s+([^,]+)$", text)
     if tail and not MEANING.search(tail.group(1)):
         text = text[: tail.start()]
     # a preamble of four words or more before a colon that names nothing either, nor any verb, condition or
@@ -135,6 +138,10 @@ def _drop_framing(text: str) -> str:
     if head and len(head.group(1).split()) >= 4 and not _NAMES.search(_I_SAYS.sub(" ", head.group(1))):
         text = text[head.end() :]
     return text
+
+
+# a reason's "as", never the time's "as soon as" ("as soon as possible" says no time: a frame still)
+_AS = r"as(?!\s+soon\s+as\b(?!\s+(?:possible|you\s+can|we\s+can)\b))"
 
 
 # what a preamble may not hold: a meaning word, a placing verb, a condition ("when that is done:" is a time),
@@ -423,9 +430,10 @@ def _mark_blocks(m: Marked, scene: Scene, previous: str, previous_group: tuple[s
     if not previous and not any(len(m.blocks[int(k)]) == 1 for k in re.findall(r"\bB(\d+)\b", m.text)):
         generic = rf"\b(?:the|each|every)\s+(?:block|object|item|piece|pillar|cube)\b{negation}"
         m.sub(generic, lambda match: _new_block(m, scene.blocks, match.group(0)))
-    # "never place an object on ...", "do not put anything on ...": a generic object after a negated verb
+    # "never place an object on ...", "do not put anything on ...": a generic object after a negated verb;
+    # "only ever put a pillar (down) on ...": after a verb limited by "only", every block too
     m.sub(
-        rf"\b({NEG}\s+(?:{VERB}|drop|leave|lay)|placing|putting|dropping|setting)\s+(?:(?:a|an|any)\s+{NOUN}|any\s+{NOUNS}|anything|"
+        rf"\b({NEG}\s+(?:{VERB}|drop|leave|lay)|only\s+(?:ever\s+)?(?:{VERB}|drop|lay)|placing|putting|dropping|setting)\s+(?:(?:a|an|any)\s+{NOUN}|any\s+{NOUNS}|anything|"
         rf"(?:objects?|items?|things?)(?=\s+(?:on|in|onto|into)\b))\b",
         lambda match: match.group(1) + _new_block(m, scene.blocks, match.group(0)),
     )

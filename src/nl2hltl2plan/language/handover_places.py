@@ -128,9 +128,11 @@ def mark_places(m: Marked, scene: Scene, named_before: tuple[str, ...]) -> None:
         rf"(?:these|those)(?:\s+(?P<count>two|three|four|\d))?(?:\s+{TARGET})?(?:\s+{PLACE_NOUN})?"
     )
     m.sub(rf"\boutside\s+(?:of\s+)?(?:{these_targets}|them|it)\b", outside_these)
+    # "those (three) regions": the place named last, or in a sentence that names none, the regions the
+    # sentence before named (a count, if said, must be theirs)
     m.sub(
-        rf"\b(?:those|these|the\s+same|said)\s+{PLACE_NOUN}\b",
-        lambda match: _new_place(m, m.places[-1]) if m.places else match.group(0),
+        rf"\b(?:those|these|the\s+same|said)(?:\s+(?P<count>two|three|four|\d))?\s+{PLACE_NOUN}\b",
+        lambda match: _named_before(m, named_before, match),
     )
     # a place named twice ("region G (where the red block is)", "area (E, F, G) to the side of arm a",
     # "next to arm a and arm b, that is region E, F and G"): both readings must agree
@@ -138,6 +140,20 @@ def mark_places(m: Marked, scene: Scene, named_before: tuple[str, ...]) -> None:
     apposition = rf"(?<!from)(?<=\S)(\s+)P(\d+)\s*,?\s*{APPOSITION}?\s*,?\s*P(\d+)\s*\)?"
     while re.search(apposition, m.text):
         m.sub(apposition, lambda match: match.group(1) + _merge(m, int(match.group(2)), int(match.group(3))))
+
+
+def _named_before(m: Marked, named_before: tuple[str, ...], match: re.Match[str]) -> str:
+    said = match["count"]
+    if m.places:
+        last = m.places[-1]
+        if said and (last.kind != "regions" or _COUNTS.get(said, said) != str(len(last.regions))):
+            return match.group(0)  # unread: refused by name
+        return _new_place(m, last)
+    if len(named_before) < 2 or not match.group(0).startswith(("those", "these")):
+        return match.group(0)  # "the same regions", or "those regions" of one region: unread, as before
+    if said and _COUNTS.get(said, said) != str(len(named_before)):
+        return match.group(0)
+    return _new_place(m, Place("regions", named_before, text=match.group(0).strip()))
 
 
 TARGET = r"(?:goal|target|placement|destination|assigned)"

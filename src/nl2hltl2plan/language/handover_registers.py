@@ -206,6 +206,9 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     (r"\bmake\s+(?:an?\s+|the\s+)?exchange\s+of\s+the\s+positions?\s+of\b", "exchange the positions of"),
     (r"\b(is|are)\s+to\s+put\s+(?=before|after|first|on|in|onto|into)\b", r"\1 to be put "),
     (r"\band\s+only\s+(?:afterwards?|after\s+that|then)\b", "and then"),
+    # the same phrase set off by commas between a block's two places: "on region I and, (only) after that,
+    # on region G"
+    (r"\band\s*,\s*(?:only\s+)?(?:afterwards?|after\s+that|then)\s*,\s*", "and then "),
     # non-native: "not can" (cannot); "for" before a bare verb ("a plan for move": to move); "at (the) side
     # of" (beside); "where is X now" in a clause after a comma (where X is now); "in each region is possible /
     # allowed only one object" (only one object is allowed in each region); "after" as "then" before a

@@ -11,7 +11,8 @@ rewritten onto the forms the handover reader reads (issue 24; `handover_register
 - a result clause that says the one-block rule again: "..., so there's one block on each" (with one
   block on each), "so that every one of those regions gets one" (each of those regions), "so that each
   of those regions ends up holding one object" (each region holds one), "so that each of them ends up
-  holding one" right after a list of regions ("them": those regions).
+  holding one" right after a list of regions ("them": those regions), "so that each region gets one of
+  them" (a region gets one block: "them" are the blocks).
   Any other result clause ("so there's one block on G", "so that region F ends up empty") stays unread
   and is refused by name: it would add a goal.
 """
@@ -57,6 +58,14 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
         r"must)\s+)?(?:ends?\s+up\s+(?:holding|having|getting|containing|receiving|with)|holds?|has|have|gets?|"
         r"contains?|receives?)\s+(?:exactly\s+|only\s+|just\s+)?(?:one|a\s+single)\b)",
         r"\1each of those regions ",
+    ),
+    # "each region gets one of them / of the blocks": a region receives a block, so "them" are the blocks and
+    # "one of them" is the "one" read above
+    (
+        r"\b((?:each|every)\s+(?:of\s+(?:the|these|those)\s+)?(?:region|area|place|spot)s?\s+(?:(?:will|would|should|"
+        rf"must)\s+)?(?:gets?|holds?|receives?|has|contains?|takes?)\s+(?:exactly\s+|only\s+|just\s+)?one)\s+of\s+"
+        rf"(?:them|the\s+(?:three\s+)?{_NOUN}s)\b",
+        r"\1",
     ),
     (
         r"\b((?:each|every)\s+(?:of\s+(?:the|these|those)\s+)?(?:region|area|place|spot)s?)\s+ends?\s+up\s+"

@@ -347,8 +347,14 @@ def _read_only_on(m: Marked) -> list[Prohibition]:
         add_only,
     )
     m.sub(rf"\bB(?P<b>\d+)\s+(?:is|are)\s+only\s+(?:allowed|permitted)\s+{PREP}\s+{target}{PERIOD}", add_only)
+    # "objects may be put on those three regions only": "only" after the place it limits
     m.sub(
-        rf"\b(?:(?:A\s+)?{_MAY}\s+)?only\s+(?:ever\s+)?(?:place|put|drop|set)\s+B(?P<b>\d+)\s+{PREP}\s+{target}{PERIOD}",
+        rf"\bB(?P<b>\d+)\s+{_MAY}\s+be\s+{DROP}\s+{PREP}\s+{target}\s+only{PERIOD}(?=\s*(?:$|[,.;]))",
+        add_only,
+    )
+    m.sub(  # "only ever put a pillar down on one of those regions": on those
+        rf"\b(?:(?:A\s+)?{_MAY}\s+)?only\s+(?:ever\s+)?(?:place|put|drop|set)\s+B(?P<b>\d+)\s+(?:down\s+)?{PREP}\s+"
+        rf"(?:one\s+of\s+)?{target}{PERIOD}",
         add_only,
     )
     m.sub(rf"\b{_PLACING}\s+B(?P<b>\d+)\s+only\s+{PREP}\s+{target}{PERIOD}", add_only)

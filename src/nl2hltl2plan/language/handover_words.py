@@ -70,10 +70,11 @@ DONE_STATE = (
     # "done with that"
     r"(?:\s+with\s+(?:all\s+(?:of\s+)?)?(?:this|these|that|it|everything|them|the\s+above))?"
 )
+# "as soon as" opens the same clauses as "once" ("as soon as everything else is done, ...")
 AFTER_ALL = (
-    r"(?:(?:once|when|after)\s+(?:all\s+(?:of\s+)?)?(?:this|these|that|it|everything(?:\s+else)?|the\s+above)(?:\s+all)?\s+"
+    r"(?:(?:once|when|after|as\s+soon\s+as)\s+(?:all\s+(?:of\s+)?)?(?:this|these|that|it|everything(?:\s+else)?|the\s+above)(?:\s+all)?\s+"
     rf"(?:is|are|has\s+been|have\s+been)\s+(?:all\s+)?{DONE_STATE}|(?:once|when)\s+{DONE_STATE}|"
-    rf"(?:once|when|after)\s+(?:you|we)\s+(?:are|have(?:\s+been)?)\s+(?:all\s+)?{DONE_STATE}|"
+    rf"(?:once|when|after|as\s+soon\s+as)\s+(?:you|we)\s+(?:are|have(?:\s+been)?)\s+(?:all\s+)?{DONE_STATE}|"
     # an absolute opener: "with that done", "with all of this sorted", "that done"
     rf"(?:with\s+(?:all\s+(?:of\s+)?)?(?:this|these|that|it|everything(?:\s+else)?|the\s+above)|that)(?:\s+all)?\s+{DONE_STATE}(?=\s*,)|"
     r"after\s+(?:all\s+(?:of\s+)?(?:these|this|that|"
