@@ -23,6 +23,10 @@ from nl2hltl2plan.config import data_dir  # noqa: E402
 # what the tests see: every test, and every command a test starts, gets an empty cache of its own.
 # Matplotlib keeps its font list in the cache folder too (rebuilding it scans the system's fonts: 0.2 s
 # CPU and seconds of disk per process), so it keeps the folder it had.
+# a script that runs its campaign at import (`python tests/reliability/campaign.py DIR`): never collected,
+# not even by `pytest --doctest-modules tests` (it took pytest's first argument for its output folder)
+collect_ignore = ["reliability/campaign.py"]
+
 _user_cache = os.environ.get("XDG_CACHE_HOME") or os.path.expanduser("~/.cache")
 os.environ.setdefault("MPLCONFIGDIR", os.path.join(_user_cache, "matplotlib"))
 os.environ["XDG_CACHE_HOME"] = tempfile.mkdtemp(prefix="nl2hltl2plan-test-cache-")
