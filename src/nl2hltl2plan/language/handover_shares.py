@@ -14,7 +14,9 @@ from __future__ import annotations
 
 import re
 
-_BLOCK = r"the\s+(?:red|blue|yellow)\s+(?:block|pillar|object|cube)"
+from nl2hltl2plan.language.handover_scene import COLOUR, LETTER
+
+_BLOCK = rf"the\s+{COLOUR}\s+(?:block|pillar|object|cube)"
 _VERB = r"(?:(?:put|place|move|set)\s+)?"
 _GOES = r"(?:\s+(?:goes|should\s+go|must\s+go|can\s+go|is\s+put|should\s+be\s+put|should\s+be\s+placed))?"
 _ON = r"\s+(?:on|onto|to|in|into)\s+"
@@ -46,7 +48,7 @@ def shared_out(text: str) -> str:
 def _named(found: re.Match[str]) -> str:
     blocks = [found["first"], *re.findall(_BLOCK, found["more"]), found["last"]]
     blocks = [" ".join(b.split()) for b in blocks]
-    letters = re.findall(r"\b[e-j]\b", found["list"])
+    letters = re.findall(LETTER, found["list"])
     if len(set(blocks)) != len(blocks) or len(set(letters)) != len(blocks):
         return found[0]
     group = " , ".join(blocks[:-1]) + " and " + blocks[-1]

@@ -86,24 +86,30 @@ def check_referents(
     categories_named(instruction, tasks, instances, scene)
     said = decided + stand_ins(instruction, tasks, instances, scene, scopes)
     said += plural_of_several(instruction, tasks, instances, scene, convention, plurals)
-    return said + picked_places(instruction, tasks, instances, scene)
+    return said + picked_places(instruction, tasks, instances, scene, [m for m, _ in scopes])
 
 
 def picked_places(
-    instruction: str, tasks: Sequence[BaseTaskSpec], instances: Mapping[str, int] | None, scene: str
+    instruction: str,
+    tasks: Sequence[BaseTaskSpec],
+    instances: Mapping[str, int] | None,
+    scene: str,
+    mentions: Sequence[Mention] | None = None,
 ) -> list[str]:
     """A task's place picked by position among several of its type ("put the potato in the left drawer",
     "the top shelf"): read as the type, as ALFRED's annotations and ground truth do (any drawer), and
     said in the result's assumptions, so the reading is never silent about it. A thing so picked is
-    refused (`unsupported_steps.one_of_several`)."""
+    refused (`unsupported_steps.one_of_several`). `mentions`: `find_mentions(instruction)`, where the caller
+    has them."""
     if not instances:
         return []
     places = {r for t in tasks for r in t.receptacle or ()}
     things = {t for task in tasks for t in (*task.object, *(task.container or ()))}
-    mentions = {m.char_start: m for m in find_mentions(instruction)}
+    found = find_mentions(instruction) if mentions is None else mentions
+    at = {m.char_start: m for m in found}
     out = []
     for said in PICKS_ONE.finditer(instruction.lower()):
-        m = mentions.get(said.end()) or mentions.get(said.start(1))  # "the top drawer": a name of its own
+        m = at.get(said.end()) or at.get(said.start(1))  # "the top drawer": a name of its own
         picked = [t for t in m.entry.types if t in places - things] if m else []
         several = [t for t in picked if instances.get(t, 0) > 1]
         if m and several:

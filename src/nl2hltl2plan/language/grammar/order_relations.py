@@ -22,6 +22,7 @@ from nl2hltl2plan.language.grammar.references import (
     self_state,
     stated_tasks,
     treats_own,
+    units_said_before,
 )
 from nl2hltl2plan.language.grammar.sentences import RelationSentence, split_sentences
 from nl2hltl2plan.language.semantic_check import find_cycle
@@ -377,7 +378,7 @@ def either_of(ref: str, u: Unit, units: list[Unit]) -> list[int] | None:
     [] where that is not certain (three said before, one sentence of one); None: not such a reference."""
     if not u.tasks or not _EITHER_OF.fullmatch(_normal(ref)):
         return None
-    said = [v for v in units if v is not u and v.tasks and max(v.tasks) < min(u.tasks)]
+    said = units_said_before(u, units)
     if not said:
         return []
     last = [t for v in said if v.sentence == said[-1].sentence for t in v.tasks]

@@ -42,8 +42,7 @@ def said_before(ref: str, u: Unit, units: list[Unit]) -> list[int] | None:
     ref = " ".join(ref.split())
     if not u.tasks or not (_THE_REST.match(ref) or _DO_THIS.match(ref)):
         return None
-    first = min(u.tasks)
-    said = [v for v in units if v is not u and v.tasks and max(v.tasks) < first]
+    said = units_said_before(u, units)
     if _THE_REST.match(ref):
         return [t for v in said for t in v.tasks]
     if not said:
@@ -51,6 +50,11 @@ def said_before(ref: str, u: Unit, units: list[Unit]) -> list[int] | None:
     last = said[-1]
     alone = [v for v in said if v.sentence == last.sentence] == [last]
     return list(last.tasks) if len(last.tasks) == 1 and (alone or last.sentence == u.sentence) else []
+
+
+def units_said_before(u: Unit, units: list[Unit]) -> list[Unit]:
+    """The units with tasks that all come before `u`'s first task (what a reference in `u` can name)."""
+    return [v for v in units if v is not u and v.tasks and max(v.tasks) < min(u.tasks)]
 
 
 def _ref_parts(ref: str) -> list[str]:
