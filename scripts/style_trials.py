@@ -72,8 +72,8 @@ def matches(rec: TrialRecord, task: dict) -> bool:
 
 def pick(row: dict, author: str) -> list[str] | None:
     """One trial per task of a parsed style-set row, or None where a task matches no trial."""
-    banned = excluded_trials()
-    floor = [r for r in alfred_data().example_fields if r.floor_plan == row["scene"] and r.trial not in banned]
+    banned, records = excluded_trials(), alfred_data().example_fields
+    floor = [r for r in records if r.floor_plan == row["scene"] and r.trial not in banned]
     said = words(row["instruction"])
     chosen: list[str] = []
     for task in row["tasks"]:
