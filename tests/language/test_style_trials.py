@@ -81,3 +81,12 @@ def test_every_paper_line_names_one_matching_trial_per_task() -> None:
             for task in row["tasks"]:
                 assert any(style_trials.matches(records[t], task) for t in trials), (line, task)
     assert without == ["Put a candle on the shelf."]
+
+
+def test_plan_takes_the_trials_plan_json_sets_passes(capsys) -> None:
+    """`plan --trials` builds its world from them (`plan_json_sets` scores a line with the column so), and
+    refuses a trial of another floor plan before reading the text."""
+    from nl2hltl2plan.cli.main import main
+
+    assert main(["plan", "Move two spoons to the table.", "--world", "FloorPlan4", "--trials", SPOONS]) == 2
+    assert f"trial {SPOONS} is in FloorPlan3, not FloorPlan4" in capsys.readouterr().err
