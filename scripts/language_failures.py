@@ -7,7 +7,9 @@
 Sets with ground truth (never test50, never the excluded trials): `faithful_seen`, `faithful_unseen`,
 `trainstyle_unseen`, `heldout_unseen`, the reference-style `refsdev_seen/unseen`, `refsheld_seen/unseen`
 and `refsnew_seen/unseen` (`suites.alfred.structure_validation.rows_of_set`; `NAME:SEED` composes one with
-another seed), `plain` (issue 23's user-style set), `users` and `users_heldout` (tests/language/data/styles/).
+another seed), `plain` (issue 23's user-style set), and any style set by its name (`users`, `users_heldout`,
+`paper_h159held`: tests/language/data/styles/NAME.txt; a line's `trials:` column builds its world, as a
+benchmark row's `source_trials`).
 A composed set depends on the lexicon (its text-faithful labels), so `--save-rows DIR` keeps the rows and
 `--rows DIR` scores another version of the code on exactly those rows (before/after on the same
 instructions); `--outcomes FILE` writes each row's class, why and the text as the reader rewrote it (JSON
@@ -61,7 +63,7 @@ from nl2hltl2plan.suites.alfred.structure_validation import rows_of_set
 from nl2hltl2plan.worlds.world import World
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from trust_sets import parse_line, world_of  # noqa: E402
+from trust_sets import TrialsError, parse_line, world_of  # noqa: E402
 
 STYLES = Path(__file__).resolve().parent.parent / "tests" / "language" / "data" / "styles"
 FINDING = re.compile(r"^'(.+?)' \((\w+)\): (.*)$")  # one finding of check 1 (`accounting.Unread`)
@@ -85,7 +87,9 @@ LACKING = re.compile(r"^no \w+ in FloorPlan|: FloorPlan\d+ holds only ")
 
 
 def rows(name: str, n: int) -> list[dict[str, Any]]:
-    if name.startswith("users"):
+    """A set's rows: a style set's (tests/language/data/styles/NAME.txt: `users*`, `paper_*`, ...; a line's
+    `trials:` column is its `source_trials`, whose objects `scenario_world` builds) or a composed set's."""
+    if (STYLES / f"{name}.txt").exists():
         lines = [
             ln for ln in (STYLES / f"{name}.txt").read_text().splitlines() if ln.strip() and ln[0] != "#"
         ]
@@ -166,7 +170,8 @@ def grammar_reading(row: dict[str, Any], plurals: Plurals = "ask") -> Reading:
     is judged without counts."""
     p = parse_instruction(row["instruction"], scene_types(row["scene"]), row["scene"], strict=False)
     apply_choices(p, top_candidates(p.ambiguities))  # its result unused, as the earlier measure had it
-    world = world_of(row["scene"]) if str(row["id"]).startswith("trust.") else None
+    trust = str(row["id"]).startswith("trust.")
+    world = world_of(row["scene"], row.get("source_trials", ())) if trust else None
     instances = scene_instances(world) if world is not None else None
     scene = world.name if world is not None else "the scene"
     found = [str(u) for u in account(row["instruction"], p.tasks, p.before, instances, scene)]
@@ -292,7 +297,11 @@ def main() -> int:
     outcomes: list[dict[str, Any]] | None = [] if args.outcomes else None
     for name in [s for s in args.sets.split(",") if s]:
         saved = args.rows / f"{name}.json" if args.rows else None
-        data = json.loads(saved.read_text()) if saved and saved.exists() else rows(name, args.n)
+        try:
+            data = json.loads(saved.read_text()) if saved and saved.exists() else rows(name, args.n)
+        except TrialsError as exc:  # a style line's `trials:` id it may not use
+            print(f"error: {exc}", file=sys.stderr)
+            return 2
         if args.save_rows:
             args.save_rows.mkdir(parents=True, exist_ok=True)
             (args.save_rows / f"{name}.json").write_text(json.dumps(data))

@@ -1,7 +1,8 @@
 """Score user-style sets (tests/language/data/styles/NAME.txt) as `plan --json` answers them, planning
-included: converted (exit 0, solved, not partial, tasks and order as the ground truth), refused as meant
-(exit 2 on a line to refuse), false refusal (exit 2 on a line to read), wrong (exit 0 on a line to refuse,
-or another reading), other (any other exit).
+included (a line with a `trials:` column as `plan --world SCENE --trials ...`): converted (exit 0, solved,
+not partial, tasks and order as the ground truth), refused as meant (exit 2 on a line to refuse), false
+refusal (exit 2 on a line to read), wrong (exit 0 on a line to refuse, or another reading), other (any
+other exit).
 
     python scripts/plan_json_sets.py users_h153dev users_h153held
 """
@@ -27,7 +28,9 @@ def score(name: str) -> Counter[str]:
         out, err = io.StringIO(), io.StringIO()
         with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
             try:
-                rc = main(["plan", gt.instruction, "--world", gt.scene, "--json", "--timeout", "60"])
+                # a line's `trials:` column: the world holds those trials' objects (trust_sets.world_of)
+                trials = ["--trials", *gt.source_trials] if gt.source_trials else []
+                rc = main(["plan", gt.instruction, "--world", gt.scene, *trials, "--json", "--timeout", "60"])
             except SystemExit as exc:
                 rc = exc.code if isinstance(exc.code, int) else 2
         said = json.loads(out.getvalue()) if out.getvalue().strip().startswith("{") else {}

@@ -13,6 +13,10 @@ Base tasks: `kind Object[/Alt] Destination [x2] [sliced] [in Container]` or
 `set_state Object state`,
 `;`-separated, ids A, B, ... in order; before: `A<B, ...`. A line with something to refuse has
 `feasible: false` and that text in `issues` (its base tasks are the part a world can do).
+A style-set line may end with a column `trials: ID ID ...`: the ALFRED trials it was composed from (ids as
+a benchmark row's `source_trials`, each a non-excluded trial of the line's floor plan, else a one-line
+error). Its world then holds those trials' objects, as a benchmark row's does (`world_of`); a line without
+the column gets the floor plan's default world (its first trial), as `plan --world FloorPlanN`.
 
 `measure` runs the `plan` command's language stage (no planning) on each line in its floor plan and
 sorts the outcome: refused (an error, exit 2), partial (`unparsed` names words), converted (the base
@@ -26,7 +30,6 @@ import argparse
 import json
 import sys
 from collections import Counter
-from functools import cache
 from pathlib import Path
 from typing import get_args
 
@@ -34,7 +37,7 @@ from nl2hltl2plan.domain.plurals import Plurals
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.language.scoring import match
 from nl2hltl2plan.language.translate import apply_choices, top_candidates, translate
-from nl2hltl2plan.worlds import load_world
+from nl2hltl2plan.suites.alfred.conversion import scenario_world
 from nl2hltl2plan.worlds.tasks import GTInstance
 from nl2hltl2plan.worlds.world import World
 
@@ -79,14 +82,22 @@ def parse_task(text: str, task_id: str) -> dict:
     return task
 
 
+class TrialsError(ValueError):
+    """A style set's `trials:` column names a trial it may not use (`check_trials`)."""
+
+
+TRIALS_TAG = "trials:"  # the optional last column of a style-set line: the ALFRED trials it was composed from
+
+
 def parse_line(line: str, name: str, n: int) -> dict:
     parts = [p.strip() for p in line.split("|")]
+    trials = parts.pop()[len(TRIALS_TAG) :].split() if parts[-1].startswith(TRIALS_TAG) else []
     scene, instruction, tasks_text, before_text = parts[:4]
     refuse = parts[4] if len(parts) > 4 else ""
     constraints = [parse_constraint(c) for c in (parts[5] if len(parts) > 5 else "").split(";") if c.strip()]
     tasks = [parse_task(t.strip(), chr(65 + k)) for k, t in enumerate(tasks_text.split(";")) if t.strip()]
     before = [p.strip().split("<") for p in before_text.split(",") if p.strip()]
-    return {
+    row = {
         "id": f"trust.{name}.{n}",
         "scene": scene,
         "n_base": len(tasks),
@@ -99,6 +110,25 @@ def parse_line(line: str, name: str, n: int) -> dict:
         "notes": ["written for issue 23"],
         "constraints": constraints,
     }
+    if trials:  # as a benchmark row's: its world holds these trials' objects (`world_of`)
+        row["source_trials"] = check_trials(scene, trials, f"{name}, instruction {n}")
+    return row
+
+
+def check_trials(scene: str, trials: list[str], where: str) -> list[str]:
+    """The `trials:` column's ids, each a non-excluded ALFRED trial of the line's floor plan; anything else
+    is a one-line error naming it (TrialsError)."""
+    from nl2hltl2plan.worlds.floor_plans import alfred_data, excluded_trials
+
+    known, banned = alfred_data().trials, excluded_trials()
+    for tid in trials:
+        if tid not in known:
+            raise TrialsError(f"{where}: no ALFRED trial {tid!r} in alfred/trials.jsonl.gz")
+        if tid in banned:
+            raise TrialsError(f"{where}: trial {tid} is excluded (benchmark/training_exclusions.txt)")
+        if known[tid].floor_plan != scene:
+            raise TrialsError(f"{where}: trial {tid} is in {known[tid].floor_plan}, not {scene}")
+    return trials
 
 
 def parse_constraint(text: str) -> dict:
@@ -135,11 +165,11 @@ def build() -> None:
         print(f"{src.with_suffix('.jsonl')}: {len(rows)} instructions")
 
 
-@cache
-def world_of(scene: str) -> World:
-    """One world per floor plan: `translate` only reads it (building one takes a numpy distance pass per
-    object, and the sets load the same few floor plans hundreds of times)."""
-    return load_world(scene)
+def world_of(scene: str, trials: list[str] | tuple[str, ...] = ()) -> World:
+    """A line's world as the benchmark builds a row's (`conversion.scenario_world`): the floor plan with the
+    objects of the line's `trials:` (its `source_trials`), or of the floor plan's first trial where it names
+    none. Cached there: `translate` only reads a world, and the sets load the same few hundreds of times."""
+    return scenario_world({"scene": scene, "source_trials": list(trials)})
 
 
 def outcome(gt: GTInstance, backend: str = "offline", plurals: Plurals = "ask") -> tuple[str, str]:
@@ -151,7 +181,7 @@ def read_line(
     gt: GTInstance, backend: str = "offline", plurals: Plurals = "ask"
 ) -> tuple[str, str, list[str]]:
     """`outcome`, and the assumptions the reading stated (`--plurals two`: "'the forks': read as 2 ...")."""
-    world = world_of(gt.scene)
+    world = world_of(gt.scene, gt.source_trials)
     try:
         res = translate(gt.instruction, world, backend, build=False, actions="none", plurals=plurals)
     except Nl2Hltl2PlanError as exc:
@@ -252,13 +282,21 @@ def main() -> int:
         "--sets", default="plain,mixed", help="trust sets, or user-style sets (tests/language/data/styles)"
     )
     args = ap.parse_args()
+    try:
+        run(args)
+    except TrialsError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
+    return 0
+
+
+def run(args: argparse.Namespace) -> None:
     if args.what == "build":
         build()
     elif args.what == "validation":
         validation(args.split, args.n, args.seed)
     else:
         measure(args.backend, args.show, args.sets.split(","), args.plurals)
-    return 0
 
 
 if __name__ == "__main__":

@@ -45,6 +45,12 @@ def register(sub: Any) -> None:
         "--world", default="demo", help="demo (built in) or an ALFRED floor plan FloorPlanN (default: demo)"
     )
     p.add_argument(
+        "--trials",
+        nargs="+",
+        metavar="TRIAL",
+        help="ALFRED trial ids of the floor plan whose movable objects the world holds (default: its first)",
+    )
+    p.add_argument(
         "--robots",
         default="1",
         help="the team: a number of robots that can do everything, robot profile names from "
@@ -164,7 +170,7 @@ def run(args: argparse.Namespace) -> int:
             print(f"warning: batch answer {e}", file=sys.stderr)
         print(f"loaded {n} batch answers into the cache", file=sys.stderr)
     team = parse_team(args.robots)  # before the world: a bad team is refused without loading anything
-    world = load_world(args.world)
+    world = load_world(args.world, args.trials)
     batch = BatchCollector() if args.batch_out else None
     # not while --ask prompts on the terminal, nor where stderr is not one
     spinner, on_request, on_progress = _spinner(
