@@ -60,8 +60,10 @@ def joined_treatments(text: str) -> str:
 
 
 # "put a pen in it", "put a pen in it and move it to the desk": a thing put into "it", and "it" moved on
+# ("place a box with keys in it": the box holds the keys, no "it" before)
 _PUT_IN_IT = re.compile(
-    r"\b(?P<put>(?:put|place|drop|stick|set)\s+(?:a|an|the)\s+(?:[a-z]+\s+){0,2}?[a-z]+\s+(?:in|into|inside)\s+)it\b"
+    r"\b(?P<put>(?:put|place|drop|stick|set)\s+(?:a|an|the)\s+(?:(?!with\b)[a-z]+\s+){0,2}?[a-z]+\s+"
+    r"(?:in|into|inside)\s+)it\b"
     r"(?P<more>\s+and\s+(?:then\s+)?(?:put|place|move|set|take|bring|carry|leave)\s+)?(?(more)it\b)",
     re.I,
 )
