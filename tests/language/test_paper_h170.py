@@ -57,6 +57,14 @@ def test_a_repeat_inside_its_sentence_is_written_in_place(text, written):
     assert repeated_for_another(text) == written
 
 
+def test_a_fragment_sentence_repeats_a_task_with_a_source_without_it():
+    """ "The statue too." after a task with a source: one thing and one place, the source not copied."""
+    text = "Pick up the vase from the shelf and put it on the desk. The statue too."
+    assert repeated_for_another(text) == (
+        "Pick up the vase from the shelf and put it on the desk. Pick up the statue and put it on the desk."
+    )
+
+
 @pytest.mark.parametrize(
     "text",
     [

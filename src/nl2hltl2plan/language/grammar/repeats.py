@@ -68,11 +68,13 @@ _PLACE_PREPS = {"in", "into", "on", "onto", "inside", "to", "at", "under", "by",
 # the words a plain one-task sentence may hold besides its thing and its place
 _PLAIN = DETERMINERS | {"and", "it", "please", "then", "light", "while", "you", "back", "from", "up"}
 _PLAIN |= _PLACE_PREPS
-# a fragment sentence ("The cup too.") repeats a sentence of one thing and one place only, its words these:
+# a fragment sentence ("The cup too.") repeats a sentence of one thing and one place only (and a source, not
+# copied), its words these:
 # check 1 judges the text with the copy written out, and a copy of a longer sentence shares its verbs with
 # the sentence, which would hide a reading that gives the cup another task (test_repeats_for_another.py)
 _PLAIN_ONE = DETERMINERS | {"and", "it", "please", "in", "into", "on", "onto", "inside", "to", "then"}
-_PLAIN_ONE |= {"at", "under", "by", "light", "of"}  # "look at the vase by the light of the lamp"
+# "look at the vase by the light of the lamp", "pick up the egg from the sink"
+_PLAIN_ONE |= {"at", "under", "by", "light", "of", "up", "from"}
 _FRAGMENT_WORDS = DETERMINERS | set("and also plus please do same thing for with to too as well".split())
 _TASK_VERBS = frozenset(
     {"verb_any", "verb_clean_place", "verb_heat_place", "verb_cool_place", "verb_sliced"}
@@ -153,7 +155,8 @@ def _with_thing(sentence: str, thing: Mention, inside: bool = False) -> str | No
     said = {i for m in named for i in range(_det_at(m, toks) + 1, m.end)}  # a thing and the words before it
     plain, opening = (_PLAIN, _OPENING) if inside else (_PLAIN_ONE, _TASK_VERBS)
     direct = all(_det_at(m, toks) == m.start - 1 for m in named)  # no word between a determiner and its thing
-    if not inside and (len(named) != 2 or named[0] is not firsts[0] or not direct):
+    kept = [m for m, role in zip(named, roles, strict=True) if role != "source"]  # "from the sink": left out
+    if not inside and (len(kept) != 2 or kept[0] is not firsts[0] or not direct):
         return None
     for i, (word, _, _) in enumerate(toks):
         if i not in said and word not in plain and not categories(word) & opening:
