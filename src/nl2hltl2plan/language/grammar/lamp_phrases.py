@@ -34,6 +34,29 @@ _PURPOSE = re.compile(
 )
 
 
+# "examine the mug by the light of the lamp, then put a pen in the mug": the next clause puts a thing in the
+# thing examined; the rules would take it for the examination going on (the pen examined, the mug placed),
+# so the clause is read as a sentence of its own ("... lamp. Then put a pen in the mug"), unless an order
+# said later in the sentence ("in this order") covers both
+_AGAIN_AFTER_LAMP = re.compile(
+    rf"(?P<lamp>\b{_EXAMINE}\s+(?:the|a|an)\s+(?P<noun>[a-z]+)\s+(?:by|under|in|with)\s+[^,.;!?]*?\b(?:lamp|light))"
+    r",\s+then\s+(?=[^,.;!?]*\b(?:in|into|inside)\s+(?:the|a|an)\s+(?P=noun)\b)(?![^.;!?]*\bin\s+(?:this|that)\s+)",
+    re.I,
+)
+
+# "look at the box under the lamp and at the pencil by the lamp as well": "and at" goes on with "look at"
+_AND_AT = re.compile(
+    r"(?P<head>\blook\s+at\s+[^,.;!?]*?\b(?:lamp|light))(?P<sep>,?\s+and\s+)at\s+"
+    r"(?=(?:the|a|an)\s)(?!(?:the|a|an)\s+(?:same|end|start|beginning|moment|time)\b)",
+    re.I,
+)
+
+# "carry a pen while you turn on the lamp", "turn on the lamp while you hold the pen": the gerund the rules
+# read ("while turning on the lamp", "while holding the pen")
+_WHILE_YOU = re.compile(r"\bwhile\s+you(?:'re|\s+are)?\s+(turn|switch|hold|carry)(?:ing)?\b", re.I)
+_GERUND = {"turn": "turning", "switch": "switching", "hold": "holding", "carry": "carrying"}
+
+
 def _purpose_said(m: re.Match[str]) -> str:
     """The purpose dropped where it names the thing carried to the lamp (it, or a noun said before)."""
     what = m["what"].lower().split()
@@ -47,4 +70,7 @@ def lamp_phrasing(text: str) -> str:
     text = _LIGHT_FROM.sub("light of ", text)
     text = _USE_LAMP.sub(lambda m: f"{m['verb']} {m['obj']} by the light of the {m['lamp']}", text)
     text = _CHECK_OUT_FRONT.sub("check ", _CHECK_OUT.sub(r"check \1", text))
+    text = _AGAIN_AFTER_LAMP.sub(lambda m: m["lamp"] + ". Then ", text)
+    text = _AND_AT.sub(lambda m: m["head"] + m["sep"] + "look at ", text)
+    text = _WHILE_YOU.sub(lambda m: "while " + _GERUND[m[1].lower()], text)
     return _PURPOSE.sub(_purpose_said, text)

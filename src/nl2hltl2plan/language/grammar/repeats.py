@@ -3,10 +3,13 @@ it on the counter. The cup too." is "... Wash the cup and put it on the counter.
 (`REPEAT_FRAGMENT`): "The cup too.", "And the egg as well.", "Same for the bowl.", "Do the same with the
 tomato.", "Also the pencil.".
 
-The task before is repeated only where its sentence is one plain task: a task verb opening it, then the
-thing it acts on (one thing, singular), then only task verbs, "and", "it", prepositions and one place;
-and where the fragment says nothing but its things ("The red tomato too." and "The tomato in the
-microwave too." stay).
+The task before is repeated only where its sentence is one plain task: a task verb opening it (or "turn on"
+with a lamp), one thing it acts on (singular, after a verb: "holding the book"), places after prepositions,
+and otherwise only task verbs, "and", "it", "while", "back" and the words between a determiner and its
+thing; a source ("from the shelf") is the first thing's and is not copied. The fragment says nothing but
+its things ("The red tomato too." and "The tomato in the microwave too." stay). Said inside the sentence
+of its task with no order word ("X, and do the same with the Y"), the copy is written in its place, in
+the same sentence, so the sentence's order word ("Then ...") covers both.
 Any other fragment stays as written, and check 1 names it unless a task does the whole of the task before
 for the thing it names (`unsupported_steps.repeats_for_another`).
 
@@ -16,6 +19,8 @@ for the thing it names (`unsupported_steps.repeats_for_another`).
 'Put the mug in the sink after the apple is in the fridge. The cup too.'
 >>> repeated_for_another("Put the apple in the fridge. The tomato in the microwave too.")
 'Put the apple in the fridge. The tomato in the microwave too.'
+>>> repeated_for_another("Then turn on the lamp while holding the book, and do the same with the box.")
+'Then turn on the lamp while holding the book, and turn on the lamp while holding the box.'
 """
 
 from __future__ import annotations
@@ -52,14 +57,30 @@ _SAME_INSIDE = re.compile(
     r"|once\s+you(?:'ve|\s+have)\s+done\s+that)(?=\s*,?\s+(?:do\s+)?(?:the\s+)?same\s+(?:thing\s+)?(?:for|with|to)\s)",
     re.I,
 )
+# "X, and do the same with the cup" (no order word): the copy is written where the fragment is
+_SAME_AND = re.compile(
+    rf"(?P<join>,\s*and\s+|\s+and\s+)(?:do\s+)?(?:the\s+)?same\s+(?:thing\s+)?(?:for|with|to)\s+(?P<np>{_NP})"
+    r"(?=\s*(?:[,.;!?]|$))",
+    re.I,
+)
+# the words before a place's determiner ("in the sink", "by the light of the lamp"); "look at" opens a thing
+_PLACE_PREPS = {"in", "into", "on", "onto", "inside", "to", "at", "under", "by", "of", "near"}
 # the words a plain one-task sentence may hold besides its thing and its place
-_PLAIN = DETERMINERS | {"and", "it", "please", "in", "into", "on", "onto", "inside", "to", "then"}
-_PLAIN |= {"at", "under", "by", "light", "of"}  # "look at the vase by the light of the lamp"
+_PLAIN = DETERMINERS | {"and", "it", "please", "then", "light", "while", "you", "back", "from", "up"}
+_PLAIN |= _PLACE_PREPS
+# a fragment sentence ("The cup too.") repeats a sentence of one thing and one place only (and a source, not
+# copied), its words these:
+# check 1 judges the text with the copy written out, and a copy of a longer sentence shares its verbs with
+# the sentence, which would hide a reading that gives the cup another task (test_repeats_for_another.py)
+_PLAIN_ONE = DETERMINERS | {"and", "it", "please", "in", "into", "on", "onto", "inside", "to", "then"}
+# "look at the vase by the light of the lamp", "pick up the egg from the sink"
+_PLAIN_ONE |= {"at", "under", "by", "light", "of", "up", "from"}
 _FRAGMENT_WORDS = DETERMINERS | set("and also plus please do same thing for with to too as well".split())
 _TASK_VERBS = frozenset(
     {"verb_any", "verb_clean_place", "verb_heat_place", "verb_cool_place", "verb_sliced"}
     | {"verb_examine_in_light"}
 )
+_OPENING = _TASK_VERBS | {"verb_switch"}  # "turn on the lamp while holding the book"
 
 
 def repeated_for_another(text: str) -> str:
@@ -67,7 +88,9 @@ def repeated_for_another(text: str) -> str:
     out: list[str] = []
     task = ""  # the last sentence that is not a fragment
     written = False  # the sentence split off by `_SAME_INSIDE` is kept only where its repeat is written out
-    for s in _SENTENCE.finditer(_SAME_INSIDE.sub(lambda m: ". " + m["conn"].capitalize(), text)):
+    inline = _SAME_AND.sub(lambda m: _copy_inside(text, m), text)
+    written = inline != text
+    for s in _SENTENCE.finditer(_SAME_INSIDE.sub(lambda m: ". " + m["conn"].capitalize(), inline)):
         body = s.group(0)
         core = body.rstrip(" .;!?\n")
         said = _ORDER_LEAD.match(core)
@@ -91,32 +114,86 @@ def repeated_for_another(text: str) -> str:
     return "".join(out) if written else text
 
 
+def _copy_inside(text: str, m: re.Match[str]) -> str:
+    """ "Then turn on the lamp while holding the book, and do the same with the box": the clause before
+    (its order word left out; or its last comma-separated part) written out for the box, where it is one
+    plain task; the words as they were otherwise."""
+    things = [x for x in find_mentions(m["np"]) if not x.entry.generic]
+    start = max(text.rfind(c, 0, m.start()) for c in ".;!?\n") + 1
+    clause = text[start : m.start()].strip()
+    said = _ORDER_LEAD.match(clause)
+    last = re.sub(r"^(?:and|then)\s+", "", clause.split(",")[-1].strip())
+    tasks = [clause[said.end() :] if said else clause, last]
+    for task in tasks if len(things) == 1 else []:
+        copy = _with_thing(task.strip(), things[0], inside=True)
+        if copy:
+            return m["join"] + copy[:1].lower() + copy[1:]
+    return m[0]
+
+
 def _only_things(fragment: str, things: list[Mention]) -> bool:
     """The fragment says nothing but its things ("the tomato in the microwave too" says a place)."""
     in_thing = {i for m in things for i in range(m.start, m.end)}
     return all(i in in_thing or w in _FRAGMENT_WORDS for i, (w, _, _) in enumerate(tokens(fragment)))
 
 
-def _with_thing(sentence: str, thing: Mention) -> str | None:
-    """`sentence` with its thing replaced by `thing`, where it is a plain one-task sentence (None else)."""
+def _with_thing(sentence: str, thing: Mention, inside: bool = False) -> str | None:
+    """`sentence` with its thing replaced by `thing` and its source left out, where it is a plain one-task
+    sentence (None else); for a fragment sentence (not `inside`), one of one thing and one place."""
     if thing.plural:
         return None
     toks = tokens(sentence)
     named = [m for m in find_mentions(sentence) if not m.entry.generic and not _light_of(m, toks)]
-    if len(named) != 2 or named[0].plural or len(toks) < 3:
+    roles = [_role(m, toks) for m in named]
+    firsts = [m for m, role in zip(named, roles, strict=True) if role == "thing"]
+    if None in roles or len(firsts) != 1 or "place" not in roles or len(toks) < 3 or firsts[0].plural:
         return None
-    if named[0].entry.types[0] == thing.entry.types[0]:
+    if firsts[0].entry.types[0] == thing.entry.types[0]:
         return None  # "the mug ... Same for the coffee mug": one type, the atoms cannot tell them apart
-    at = named[0].start - 1  # the thing follows the opening verb ("look at") and its determiner
-    if not (at == 1 or (at == 2 and toks[1][0] == "at")) or toks[at][0] not in DETERMINERS:
+    if not categories(toks[0][0]) & _OPENING:
         return None
-    if not categories(toks[0][0]) & _TASK_VERBS:
+    said = {i for m in named for i in range(_det_at(m, toks) + 1, m.end)}  # a thing and the words before it
+    plain, opening = (_PLAIN, _OPENING) if inside else (_PLAIN_ONE, _TASK_VERBS)
+    direct = all(_det_at(m, toks) == m.start - 1 for m in named)  # no word between a determiner and its thing
+    kept = [m for m, role in zip(named, roles, strict=True) if role != "source"]  # "from the sink": left out
+    if not inside and (len(kept) != 2 or kept[0] is not firsts[0] or not direct):
         return None
-    in_mention = {i for m in named for i in range(m.start, m.end)}
     for i, (word, _, _) in enumerate(toks):
-        if i not in in_mention and word not in _PLAIN and not categories(word) & _TASK_VERBS:
+        if i not in said and word not in plain and not categories(word) & opening:
             return None
-    return sentence[: named[0].char_start] + thing.surface + sentence[named[0].char_end :]
+    # the thing (with the words between its determiner and it) replaced, a source ("from the shelf") left out
+    spans = [(toks[_det_at(m, toks) + 1][1], m.char_end, thing.surface) for m in firsts]
+    sources = [m for m, role in zip(named, roles, strict=True) if role == "source"]
+    spans += [(toks[_det_at(m, toks) - 1][1] - 1, m.char_end, "") for m in sources]
+    for start, end, new in sorted(spans, reverse=True):
+        sentence = sentence[:start] + new + sentence[end:]
+    return sentence
+
+
+def _det_at(m: Mention, toks: list[tuple[str, int, int]]) -> int:
+    """The index of the determiner that opens `m`'s noun phrase (the words between are its own); -1: none."""
+    for i in range(m.start - 1, 0, -1):
+        if toks[i][0] in DETERMINERS:
+            return i
+        if toks[i][0] in _PLAIN or categories(toks[i][0]):
+            return -1
+    return -1
+
+
+def _role(m: Mention, toks: list[tuple[str, int, int]]) -> str | None:
+    """ "thing" (after a verb: "wash the mug", "holding the book", "look at the vase"), "place" (after a
+    preposition: "on the shelf", "of the lamp"), "source" ("from the shelf") or None (no determiner)."""
+    at = _det_at(m, toks)
+    if at < 1:
+        return None
+    before = toks[at - 1][0]
+    if before == "from":
+        return "source"
+    if before in ("at", "up") and at > 1 and categories(toks[at - 2][0]) & _OPENING:
+        return "thing"  # "look at the vase", "pick up the book"
+    if before in _PLACE_PREPS:
+        return "place"
+    return "thing" if categories(before) & _OPENING else None
 
 
 def _light_of(m: Mention, toks: list[tuple[str, int, int]]) -> bool:

@@ -7,6 +7,10 @@ them so. The rules read each sentence on its own, and "it" at the start of a sen
 join is made only where the first sentence treats a thing and places nothing, and the second places "it"
 (after "then" or "when it's warm", the treatment's end, or nothing): the "it" can only be the treated thing.
 `sentences.normalize` applies `joined_treatments`.
+
+A thing examined or treated in one clause and filled in the next ("Examine the mug by the light of the
+lamp, then put a pen in it and move it to the desk") is the container of the next clause's task: both
+"it"s name the mug, as in "take the mug, put a pen in it and move it to the desk" (`holder_named`).
 """
 
 from __future__ import annotations
@@ -14,6 +18,7 @@ from __future__ import annotations
 import re
 
 from nl2hltl2plan.language.grammar import word_tables as G
+from nl2hltl2plan.language.grounding import LAMPS, MOVABLE_RECEPTACLES, find_mentions
 
 _TREATMENTS = frozenset({"clean", "heat", "cool"})
 _PLACING = frozenset({"place", "trash"})
@@ -52,3 +57,33 @@ def joined_treatments(text: str) -> str:
             out[-1] += end
             out.append(part)
     return "".join(out)
+
+
+# "put a pen in it", "put a pen in it and move it to the desk": a thing put into "it", and "it" moved on
+# ("place a box with keys in it": the box holds the keys, no "it" before)
+_PUT_IN_IT = re.compile(
+    r"\b(?P<put>(?:put|place|drop|stick|set)\s+(?:a|an|the)\s+(?:(?!with\b)[a-z]+\s+){0,2}?[a-z]+\s+"
+    r"(?:in|into|inside)\s+)it\b"
+    r"(?P<more>\s+and\s+(?:then\s+)?(?:put|place|move|set|take|bring|carry|leave)\s+)?(?(more)it\b)",
+    re.I,
+)
+_VERB_DET = re.compile(r"\b([a-z]+(?:\s+at)?)\s+(?:the|a|an|that|this)\s+(?:[a-z]+\s+){0,2}$", re.I)
+
+
+def holder_named(text: str) -> str:
+    """ "Examine the mug by the light of the lamp, then put a pen in it and move it to the desk": each "it"
+    written as the mug, where the last thing named before it (lamps aside) is one movable receptacle that is
+    examined ("the apple in the bowl" is no such thing; "wash the plate, then put a fork in it" asks a
+    cleaned container, which no base task does, and stays as written for the rules to refuse)."""
+
+    def one(m: re.Match[str]) -> str:
+        named = [x for x in find_mentions(text[: m.start()]) if not set(x.entry.types) <= LAMPS]
+        if not named or named[-1].plural or named[-1].entry.canonical not in MOVABLE_RECEPTACLES:
+            return m[0]
+        verb = _VERB_DET.search(text[: named[-1].char_start])
+        if verb is None or G.VERBS.get(verb[1].lower().split()[0], ("",))[0] != "examine":
+            return m[0]
+        holder = f"the {named[-1].surface}"
+        return m["put"] + holder + (m["more"] + holder if m["more"] else "")
+
+    return _PUT_IN_IT.sub(one, text)

@@ -26,7 +26,7 @@ from nl2hltl2plan.language.grammar.order_phrases import (
     the_moment,
 )
 from nl2hltl2plan.language.grammar.phrases import match_prep, parse_np, tokens
-from nl2hltl2plan.language.grammar.sentence_joins import joined_treatments
+from nl2hltl2plan.language.grammar.sentence_joins import holder_named, joined_treatments
 from nl2hltl2plan.language.grammar.subordinate import treated_before, treatment_of_it
 from nl2hltl2plan.language.grounding import find_mentions, sentence_start
 from nl2hltl2plan.language.statements import RELATIVE_PLACE
@@ -436,6 +436,7 @@ def normalize(text: str) -> str:
     text = _BUT_SURE_FIRST.sub(r"\1first ", text)
     text = without_call(everyday(text))  # terse, spoken and need styles, "hey robot put" (issue 28)
     text = joined_treatments(text)  # "Heat the egg. Then put it in the fridge.": one task (sentence_joins.py)
+    text = holder_named(text)  # "examine the mug ..., then put a pen in it": the mug (sentence_joins.py)
     text = _O_FOR_ON.sub("on ", text)
     text = _SIDE_OF.sub(r"\g<pre>\g<sep>to the \g<side> of ", text)
     text = _CONTENT_IN_IT.sub(_with_left_out, text)
