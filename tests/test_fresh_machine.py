@@ -75,6 +75,7 @@ def test_the_readme_is_an_entry_point_whose_commands_ci_runs() -> None:
     ci = (ROOT / ".ci" / "run").read_text()
     assert 'eval "$install_line"' in ci and 'eval "$test_line"' in ci and "python3 -m venv" in ci
     assert "deptry" in ci
+    assert 'sweep_line="python3 -m pytest -q -m sweep"' in ci and 'eval "$sweep_line"' in ci
 
 
 def test_an_idle_robot_is_explained() -> None:
