@@ -19,7 +19,10 @@ _TOUCH = (
     "Transfer the three blocks into the opposite regions. The arms cannot touch the blue block until an "
     "arm has touched the red block. "
 )
-_ORDER_7 = "The red block should be placed before the blue block. Place the three objects one after another on region I. "
+_ORDER_7 = (
+    "The red block should be placed before the blue block. Place the three objects one after another on "
+    "region I. "
+)
 _PILLARS = "Move the three pillars to regions E, F and G, next to arm a and arm b. "
 
 DEV_HANDOVER: dict[str, dict[int, list[str]]] = {
@@ -44,10 +47,13 @@ DEV_HANDOVER: dict[str, dict[int, list[str]]] = {
 HELD_HANDOVER: dict[str, dict[int, list[str]]] = {
     "after_the_rest": {
         4: ["Transfer three blocks to the opposite regions. The arms may not touch the blue block until an "
-            "arm has touched the red block. Once the rest has been done, return the yellow block to region G.",
-            "Put the three blocks into the opposite regions, and the arms cannot touch the blue block until an "
+            "arm has touched the red block. Once the rest has been done, return the yellow block to region "
+            "G.",
+            "Put the three blocks into the opposite regions, and the arms cannot touch the blue block until "
+            "an "
             "arm touched the red block. When all the rest is complete, move the yellow block back to G.",
-            "Move three blocks to the opposite regions. No arm touches the blue block until an arm has touched "
+            "Move three blocks to the opposite regions. No arm touches the blue block until an arm has "
+            "touched "
             "the red block. After the rest is over, put the yellow block back on region G."],
     },
     "inverted_prohibition": {
@@ -56,19 +62,23 @@ HELD_HANDOVER: dict[str, dict[int, list[str]]] = {
             _ORDER_7 + "Under no circumstances, during this period, should a block be placed on regions F, G "
             "or H.",
             _ORDER_7 + "Not once during this period is a block placed on F, G or H."],
-        3: ["Bring the three pillars to regions E, F and G beside arm a and arm b. Nowhere other than E, F and "
+        3: ["Bring the three pillars to regions E, F and G beside arm a and arm b. Nowhere other than E, F "
+            "and "
             "G may an object be placed.",
-            "Move the three pillars to the placement area (regions E, F, G) next to arm a and arm b. A pillar "
+            "Move the three pillars to the placement area (regions E, F, G) next to arm a and arm b. A "
+            "pillar "
             "may be put down nowhere except E, F or G."],
     },
 }
 
 DEV_TABLETOP: dict[int, list[str]] = {
-    4: ["Put the green apple and the orange in the yellow plate, in any order. The carrot and the red apple go "
+    4: ["Put the green apple and the orange in the yellow plate, in any order. The carrot and the red apple "
+        "go "
         "in the blue plate in any order, but only when both are there.",
         "Green apple and orange into the yellow plate. Carrot and red apple into the blue plate, only when "
         "both are there.",
-        "Put the green apple and the orange on the yellow plate. Put the carrot and the red apple on the blue "
+        "Put the green apple and the orange on the yellow plate. Put the carrot and the red apple on the "
+        "blue "
         "plate only if both are already there.",
         "Only when both the green apple and the orange are in the yellow plate should the carrot and the red "
         "apple go in the blue plate."],
@@ -77,7 +87,8 @@ DEV_TABLETOP: dict[int, list[str]] = {
 HELD_TABLETOP: dict[int, list[str]] = {
     4: ["Place the green apple and the orange in the yellow plate in either order; the carrot and the red "
         "apple go in the blue plate, in either order, but only once both are there.",
-        "Put the green apple and the orange in the yellow plate. Put the carrot and the red apple in the blue "
+        "Put the green apple and the orange in the yellow plate. Put the carrot and the red apple in the "
+        "blue "
         "plate only if both of them are in the yellow plate.",
         "Only once both the green apple and the orange are on the yellow plate should the carrot and the red "
         "apple be put on the blue plate.",
