@@ -136,9 +136,8 @@ UNCLEAR = [
     (4, TOUCH + "As soon as the red block is done, return the yellow block to G."),
     # h174: the rest of one block: which step is that?
     (4, TOUCH + "Once the rest of the red block is done, return the yellow block to G."),
-    # h174: "nowhere but" a region set the text has not named
-    (3, "Move the three pillars to the placement area next to arm a and arm b. Nowhere but those regions may "
-        "a pillar be put down."),
+    # h174: a named block after "never may": not read as a prohibition of every block
+    (7, ORDER_7 + "Never may the red block be put on F, G or H during this period."),
 ]
 
 NEAR_MISSES = [
