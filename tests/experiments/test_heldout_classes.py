@@ -36,6 +36,7 @@ from handover_specs import (
 )
 from test_tabletop import TASKS, signature, signature_or_none
 
+from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.language.handover_asides import read_asides
 from nl2hltl2plan.language.handover_freed_steps import steps_freed
 from nl2hltl2plan.language.handover_phrases import normalise
@@ -43,6 +44,8 @@ from nl2hltl2plan.language.handover_sentences import split_sentences
 from nl2hltl2plan.language.handover_shares import shared_out
 from nl2hltl2plan.language.tabletop_freed_steps import runs_freed
 from nl2hltl2plan.language.tabletop_steps import identifiers_chained_read
+from nl2hltl2plan.language.translate import translate
+from nl2hltl2plan.worlds.tabletop_world import tabletop_world
 
 ROUNDS = (h152, h157, h161, h167, h174)
 DEV_HANDOVER = cases(*(table for r in ROUNDS for table in r.DEV_HANDOVER.values()))
@@ -345,8 +348,17 @@ def test_held_out_sentences_are_read_right_or_refused(task: int, text: str) -> N
     assert_written_spec_or_refused(task, text)
 
 
+def _read_whole(text: str) -> tuple[list, list] | None:
+    """`signature`, or None where the reader refuses the text or reads only part of it (`plan` exits 2 on
+    a partial reading: a refusal, as `scripts/tabletop_styles.py` counts it)."""
+    try:
+        return None if translate(text, tabletop_world()).partial else signature(text)
+    except Nl2Hltl2PlanError:
+        return None
+
+
 @pytest.mark.sweep
 @pytest.mark.parametrize(("task", "text"), HELD_TABLETOP)
 def test_held_out_tabletop_sentences_are_read_right_or_refused(task: int, text: str) -> None:
-    said = signature_or_none(text)
+    said = _read_whole(text)
     assert said is None or said == signature(TASKS[task].instruction), text
