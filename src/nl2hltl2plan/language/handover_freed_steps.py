@@ -4,7 +4,9 @@
   and are said after it, each "..., at any time";
 - "Steps 1 to 3 may happen in any order", "The first two steps can be done in either order": the first
   steps, a run of two or more, become one sentence ("A , and B"), whose goals carry no order among them,
-  and each step after them follows it in turn ("After all of these, C", "Then D").
+  and each step after them follows it in turn ("After all of these, C", "Then D");
+- "The steps may happen in any order", "The order of the steps does not matter": every step, in one
+  sentence, as goals in one list.
 
 The steps are "Step N:" labels or a numbered list ("1) ...", as `split_sentences` writes "1. ..."), 1, 2,
 ... in turn. Anything else stays as it is, to be read or refused as before: a freeing sentence that is
@@ -27,6 +29,14 @@ _FREES = re.compile(
     r"\s*(?:(?:the\s+)?steps?\s+(?P<named>[1-9](?:\s*(?:,|,?\s*and|&)\s*[1-9])*|(?P<lo>[1-9])\s+(?:to|through|-)"
     r"\s+(?P<hi>[1-9]))|the\s+(?P<end>first|last)\s+(?P<count>two|three|four)\s+steps)\s+"
     rf"(?:{_MAY}at\s+any\s+(?P<time>time|point)|{_MAY}?in\s+(?:any|either)\s+order)\s*",
+    re.IGNORECASE,
+)
+# "The steps may happen in any order", "the order of the steps does not matter": every step freed, the
+# steps then only list the goals, which are one sentence (as goals in one list, read without an order)
+_ALL_FREE = re.compile(
+    r"\s*(?:(?:the|these|all(?:\s+the)?|all\s+(?:two|three|four))\s+)?steps\s+(?:may|can|could)\s+"
+    r"(?:happen|be\s+done|be\s+carried\s+out|be\s+performed|come|be\s+taken)\s+in\s+any\s+order\s*"
+    r"|\s*the\s+order\s+of\s+the\s+steps\s+does\s+(?:not|n't)\s+matter\s*",
     re.IGNORECASE,
 )
 # a step that says its own place in the order cannot be freed of it; nor can one that says something of
@@ -55,10 +65,10 @@ def _named(frees: re.Match[str], steps: int) -> list[int]:
     return list(range(first, first + count))
 
 
-def some_steps_freed(sentences: list[str]) -> list[str]:
+def steps_freed(sentences: list[str]) -> list[str]:
     """The sentences with the steps a sentence right after them frees said as free (see the module's
     docstring); else the sentences as they are."""
-    free = [i for i, s in enumerate(sentences) if _FREES.fullmatch(s)]
+    free = [i for i, s in enumerate(sentences) if _FREES.fullmatch(s) or _ALL_FREE.fullmatch(s)]
     if len(free) != 1:
         return sentences
     steps: list[str] = []
@@ -67,14 +77,20 @@ def some_steps_freed(sentences: list[str]) -> list[str]:
             break
         steps.insert(0, s)
     labels = [m for m in map(_NUMBERED.match, steps) if m]
+    if len(steps) < 2 or [_number(m) for m in labels] != list(range(1, len(steps) + 1)):
+        return sentences
+    texts = [_NUMBERED.sub("", s) for s in steps]
+    start = free[0] - len(steps)
+    if _ALL_FREE.fullmatch(sentences[free[0]]):  # every step, in the order said: nothing leaves its place
+        # ("the steps" are all of them: a numbered step elsewhere leaves it open which ones)
+        if any(_NUMBERED.match(s) for s in [*sentences[:start], *sentences[free[0] + 1 :]]):
+            return sentences
+        return [*sentences[:start], " , and ".join(texts), *sentences[free[0] + 1 :]]
     frees = _FREES.fullmatch(sentences[free[0]])
     assert frees is not None
     named = _named(frees, len(steps))
-    if len(steps) < 2 or [_number(m) for m in labels] != list(range(1, len(steps) + 1)):
-        return sentences
     if len(set(named)) != len(named) or not set(named) <= set(range(1, len(steps) + 1)):
         return sentences
-    texts = [_NUMBERED.sub("", s) for s in steps]
     if any(_ORDERED.search(texts[n - 1]) for n in named):
         return sentences
     if frees["time"]:
@@ -92,5 +108,4 @@ def some_steps_freed(sentences: list[str]) -> list[str]:
         kept = [" , and ".join(texts[: len(named)])]
         kept += [f"{'After all of these' if i == 0 else 'Then'}, {t}" for i, t in enumerate(rest)]
         said = []
-    start = free[0] - len(steps)
     return [*sentences[:start], *kept, *said, *sentences[free[0] + 1 :]]

@@ -6,6 +6,7 @@ the patterns of `handover_words` read, and changes no meaning (typos are mended 
 from nl2hltl2plan.language.handover_words import (
     AFTER_ALL,
     DONE_STATE,
+    DROP,
     EMPTY,
     FIRST_STEP,
     GERUND_VERBS,
@@ -35,6 +36,20 @@ _INTENSIFIER = r"(?:(?:very|really|extremely|absolutely|vitally|critically|most|
 _FREED = (
     rf"(?:region\s+)?(?P<r>[e-j])\s+(?:is|has\s+been|becomes|gets)\s+(?:{EMPTY}|vacated|available|freed(?:\s+up)?)"
     r"\s*,\s*(?P<goal>[^,;]*?)\s+(?:there|on\s+it|in\s+it|to\s+it)\b"
+)
+
+# a negative phrase that opens a prohibition with its subject after the verb, the auxiliaries it takes, its
+# subject (any object: "no" takes the article's place), and "nowhere but"'s region letters
+_NEG_OPEN = (
+    r"(?:under\s+no\s+circumstances|on\s+no\s+account|in\s+no\s+case|at\s+no\s+(?:time|point|stage|moment)|"
+    r"not\s+once|never)"
+)
+_AUX = r"(?P<aux>may|can|should|must|shall|will|could|is|are)"
+_THING = r"(?:object|block|pillar|cube|item|piece)s?"
+_ANY_THING = rf"(?:(?:an?|any)\s+)?(?P<thing>{_THING})"
+_BUT = r"(?:but|except|other\s+than|apart\s+from|besides)"
+_LETTERS = (
+    r"(?:regions?\s+)?[e-j](?:\s*,\s*(?:region\s+)?[e-j])*(?:\s*,?\s*(?:and|or)\s+(?:region\s+)?[e-j])?"
 )
 
 # Rewrites applied to the lower-cased sentence before any phrase is read: each maps a variant onto the
@@ -115,6 +130,30 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\b(?:till|til)\b", "until"),
     (r"\b([a-z]+)\s+s\s+been\b", r"\1 has been"),  # "till red's been touched"
     (r"\b(?:any\s+)?(?:stuff|things)\b(?=\s+(?:on|in|onto|into)\b)", "anything"),
+    # a prohibition opened by a negative phrase, its subject after the verb ("at no point during this period
+    # is an object placed on F", "never may a block be put on H"): said in the usual order, its "during this
+    # period" at the end ("no object is placed on F during this period")
+    (
+        rf"^(?P<neg>\s*{_NEG_OPEN})\s*,?\s*(?P<period>{PERIOD_WORDS})\s*,?\s+(?P<rest>(?={_AUX}\s+{_ANY_THING}\s).*?)"
+        r"\s*[.!]?\s*$",
+        r"\g<neg> \g<rest> \g<period>",
+    ),
+    (
+        rf"(^|[,;]\s*|\band\s+){_NEG_OPEN}\s+{_AUX}\s+{_ANY_THING}(?=\s+(?:be|{DROP}|on|in)\b)",
+        r"\1no \g<thing> \g<aux>",
+    ),
+    # "nowhere but E, F or G may a pillar be put down", "a pillar may be put down nowhere except E, F or G":
+    # never on a region other than those
+    (
+        rf"(^|[,;]\s*|\band\s+)nowhere\s+{_BUT}\s+(?:(?:on|in)\s+)?(?P<places>{_LETTERS})\s*,?\s+{_AUX}\s+"
+        rf"{_ANY_THING}\s+be\s+(?P<verb>{DROP})\b",
+        r"\1no \g<thing> \g<aux> be \g<verb> on a region other than \g<places>",
+    ),
+    (
+        rf"(^|[,;]\s*|\band\s+)(?:an?|any)\s+(?P<thing>{_THING})\s+{_AUX}\s+be\s+(?P<verb>{DROP})\s+nowhere\s+"
+        rf"{_BUT}\s+(?:(?:on|in)\s+)?(?P<places>{_LETTERS})",
+        r"\1no \g<thing> \g<aux> be \g<verb> on a region other than \g<places>",
+    ),
     (
         r"\b(?:under\s+no\s+circumstances|on\s+no\s+account|at\s+no\s+(?:time|point|stage|moment))\s+"
         r"(?=(?:place|put|drop|set|touch|move)\b)",

@@ -8,7 +8,7 @@ from __future__ import annotations
 import re
 import unicodedata
 
-from nl2hltl2plan.language.handover_freed_steps import some_steps_freed
+from nl2hltl2plan.language.handover_freed_steps import steps_freed
 from nl2hltl2plan.language.handover_layout import (
     HEADED,
     REORDERED,
@@ -91,32 +91,7 @@ def split_sentences(instruction: str) -> list[str]:
         for pattern, replacement in (*REORDERED, *HEADED):
             text = pattern.sub(replacement, text)
         out += [re.sub(r"^\s*[-*•·]\s+", "", s) for s in re.split(r"[.;!?]+(?:\s|$)", text)]
-    return later_read(_without_announcement(_steps_freed(some_steps_freed([s for s in out if s.strip()]))))
-
-
-# "Step 1: ... Step 2: ... The steps may happen in any order.": a sentence of its own that frees the
-# labelled steps from their order; the labels then only list the goals, which are one sentence (as goals in
-# one list, read without an order)
-_STEP_LABEL = re.compile(r"^\s*step\s+(?:[1-9]|one|two|three|four|five)\s*[:.)-]\s*", re.IGNORECASE)
-_STEPS_FREE = re.compile(
-    r"\s*(?:(?:the|these|all(?:\s+the)?|all\s+(?:two|three|four))\s+)?steps\s+(?:may|can|could)\s+"
-    r"(?:happen|be\s+done|be\s+carried\s+out|be\s+performed|come|be\s+taken)\s+in\s+any\s+order\s*"
-    r"|\s*the\s+order\s+of\s+the\s+steps\s+does\s+(?:not|n't)\s+matter\s*",
-    re.IGNORECASE,
-)
-
-
-def _steps_freed(sentences: list[str]) -> list[str]:
-    """The labelled steps said in one sentence, without their labels, where a sentence after them (and
-    nothing else) frees their order; else the sentences as they are."""
-    free = [i for i, s in enumerate(sentences) if _STEPS_FREE.fullmatch(s)]
-    labelled = [i for i, s in enumerate(sentences) if _STEP_LABEL.match(s)]
-    if len(free) != 1 or len(labelled) < 2 or labelled != list(range(labelled[0], labelled[-1] + 1)):
-        return sentences
-    if free[0] != labelled[-1] + 1:
-        return sentences
-    steps = " , and ".join(_STEP_LABEL.sub("", sentences[i]) for i in labelled)
-    return [*sentences[: labelled[0]], steps, *sentences[free[0] + 1 :]]
+    return later_read(_without_announcement(steps_freed([s for s in out if s.strip()])))
 
 
 # "There are a few things to keep in mind." before the things: it names no block, place or order; a

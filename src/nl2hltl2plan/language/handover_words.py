@@ -71,14 +71,16 @@ DONE_STATE = (
     r"(?:\s+with\s+(?:all\s+(?:of\s+)?)?(?:this|these|that|it|everything|them|the\s+above))?"
 )
 # "as soon as" opens the same clauses as "once" ("as soon as everything else is done, ...")
+# "(all) the rest" is the work said before, as "everything else" ("once all the rest is done, ...")
 AFTER_ALL = (
-    r"(?:(?:once|when|after|as\s+soon\s+as)\s+(?:all\s+(?:of\s+)?)?(?:this|these|that|it|everything(?:\s+else)?|the\s+above)(?:\s+all)?\s+"
+    r"(?:(?:once|when|after|as\s+soon\s+as)\s+(?:all\s+(?:of\s+)?)?(?:this|these|that|it|everything(?:\s+else)?|the\s+above|"
+    r"the\s+rest)(?:\s+all)?\s+"
     rf"(?:is|are|has\s+been|have\s+been)\s+(?:all\s+)?{DONE_STATE}|(?:once|when)\s+{DONE_STATE}|"
     rf"(?:once|when|after|as\s+soon\s+as)\s+(?:you|we)\s+(?:are|have(?:\s+been)?)\s+(?:all\s+)?{DONE_STATE}|"
     # an absolute opener: "with that done", "with all of this sorted", "that done"
     rf"(?:with\s+(?:all\s+(?:of\s+)?)?(?:this|these|that|it|everything(?:\s+else)?|the\s+above)|that)(?:\s+all)?\s+{DONE_STATE}(?=\s*,)|"
     r"after\s+(?:all\s+(?:of\s+)?(?:these|this|that|"
-    r"the\s+above)|everything(?:\s+else)?)|finally|lastly|last\s+of\s+all|at\s+the\s+(?:very\s+)?end|in\s+the\s+end|"
+    r"the\s+above)|everything(?:\s+else)?|(?:all\s+)?the\s+rest(?=\s*,))|finally|lastly|last\s+of\s+all|at\s+the\s+(?:very\s+)?end|in\s+the\s+end|"
     r"after\s+(?:finish(?:ing)?|complet(?:e|ing)|doing|done)\s+(?:with\s+)?(?:all\s+(?:of\s+)?)?(?:this|these|that|everything|them)|"
     r"after\s+(?:finishing|completing)\s+(?:it\s+)?all|after\s+(?:that|this|the)\s+(?:transfer|task|move)|"
     # "when the transfer is complete", "when all finish" (non-native): the work said so far is done

@@ -18,14 +18,15 @@ _DONE = r"(?:done|finished|complete[d]?)"
 _THAT = r"(?:that|this|those|these|them|it)"
 # where one ordered group ends and the next begins: "then", "after that", "After," (opening its clause,
 # nothing after it in the clause), "once that's done", "when you've done that", "subsequently", "next"
-# (not "next to")
+# (not "next to"); "only if they are (already) there" as "only when"
 _THERE = r"(?:there|on\s+it|in\s+it|on\s+there|in\s+place|placed|down)"
 THEN = re.compile(
     r"\b(?:only\s+)?(?:then,?\s+and\s+only\s+then|(?:and\s+)?then|after\s+(?:that|this|those|these|which)|"
     r"afterwards?|(?<![a-z]\s)(?<![a-z])after(?=\s*[,:])|thereafter|subsequently|"
     r"next(?!\s+to\b)|second(?:ly)?|(?:and\s+)?(?:finally|lastly)|"
-    rf"(?:once|when|after|as\s+soon\s+as)\s+(?:{_THAT}(?:'s|s|\s+is|\s+are|'re)\s+{_DONE}|"
-    rf"(?:they|both|{_THAT}|both\s+of\s+them|all\s+of\s+them)(?:'re|'s|\s+are|\s+is)\s+(?:both\s+|all\s+)?{_THERE}|"
+    rf"(?:once|when|after|as\s+soon\s+as|(?<=only\s)if)\s+(?:{_THAT}(?:'s|s|\s+is|\s+are|'re)\s+{_DONE}|"
+    rf"(?:they|both|{_THAT}|both\s+of\s+them|all\s+of\s+them)(?:'re|'s|\s+are|\s+is)\s+(?:both\s+|all\s+)?"
+    rf"(?:already\s+)?{_THERE}|"
     rf"you(?:'ve|\s+have|'re|\s+are)\s+{_DONE}(?:\s+(?:with\s+)?{_THAT})?|{_DONE}))\b"
 )
 # how the first group is marked: "first" / "to begin" / "start with" / "before anything else" before its
@@ -54,7 +55,24 @@ _REFERENCE_FIRST = re.compile(
 _STATE_WORDS = frozenset(
     "the and both all is are 's 're has have been already on in onto into sitting placed".split()
 )
+_BOTH = re.compile(r"\b(?:both|all)\b")
 _STATE_VERBS = re.compile(r"\b(?:is|are|has|have|been|already|sitting|placed)\b|'s\b|'re\b")
+
+# "only when STATE should / must / can SUBJECT ...": the subject after its modal, as English puts it after a
+# fronted "only" clause
+_INVERTED_MODAL = r"(?P<aux>should|must|can|may|will|shall|could)"
+
+
+def inverted_condition_read(text: str, pattern: re.Pattern[str]) -> str:
+    """An opening "only when STATE" with its subject after the modal ("Only when both A and B are on P
+    should C go on Q") in the usual order ("only when both A and B are on P, C should go on Q"), which
+    `reference_fronted` reads; the text as it is where no named subject follows the modal."""
+    named = rf"(?:the\s+)?{pattern.pattern}"
+    inverted = re.compile(
+        r"^(?P<lead>\W*only\s+(?:once|when|after|as\s+soon\s+as)\s+(?P<clause>[^,.;:!?]+?))\s+"
+        rf"{_INVERTED_MODAL}\s+(?P<subject>{named}(?:\s*(?:,|,?\s+and)\s+{named})*)\s+(?=[a-z])"
+    )
+    return inverted.sub(r"\g<lead>, \g<subject> \g<aux> ", text, count=1)
 
 
 def reference_fronted(text: str, pattern: re.Pattern[str]) -> str:
@@ -69,7 +87,8 @@ def reference_fronted(text: str, pattern: re.Pattern[str]) -> str:
     stated = _STATE_VERBS.search(pattern.sub(" ", m["clause"]))
     if not names or not names[-1].endswith("plate") or not words <= _STATE_WORDS or stated is None:
         return text
-    return f"first {_STATE_VERBS.sub(' ', m['clause'])}, then {text[m.end() :]}"
+    placed = _STATE_VERBS.sub(" ", _BOTH.sub(" ", m["clause"]))  # "both A and B are on P": A and B on P
+    return f"first {placed}, then {text[m.end() :]}"
 
 
 _CLAUSE_END = re.compile(r"[,.;!?\n]")
@@ -83,6 +102,8 @@ _TRAILING_THEN = re.compile(
     r"(?=\s*(?:[,.;:!?\n]|$))"
 )
 
+# what may stand between a comma and a "then" that closes the clause before the comma
+_SET_OFF = re.compile(r"\s*(?:but\s+|and\s+)?")
 
 # the verbs a "then" may stand before in "the blue plate then gets ...", "the carrot then goes ..."
 _SUBJECT_VERB = r"(?:gets?|goes|go|takes?|receives?|holds?|should|must|can|will|may|needs?|has|have|is|are)"
@@ -138,9 +159,13 @@ def trailing_then_fronted(text: str, pattern: re.Pattern[str]) -> str:
     placements are one step: "A on P and B on Q after that" does not say whether B alone comes after)
     and, for a "then", something is named before it."""
     for m in reversed(list(_TRAILING_THEN.finditer(text))):
-        starts = [b.end() for b in _CLAUSE_END.finditer(text, 0, m.start())]
-        start = starts[-1] if starts else 0
+        ends = list(_CLAUSE_END.finditer(text, 0, m.start()))
+        start = ends[-1].end() if ends else 0
         clause = text[start : m.start()]
+        if _SET_OFF.fullmatch(clause) and ends and ends[-1][0] == ",":
+            # set off by a comma ("..., (but) only when both are there"): it closes the clause before it
+            start = ends[-2].end() if len(ends) > 1 else 0
+            clause = text[start : ends[-1].start()]
         plates = {_name(f) for f in pattern.findall(clause) if _name(f).endswith("plate")}
         marked = THEN.search(clause) or FIRST.search(clause)
         if len(plates) != 1 or marked or not (m["first"] or pattern.search(text, 0, start)):

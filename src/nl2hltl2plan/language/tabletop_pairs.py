@@ -49,6 +49,7 @@ from nl2hltl2plan.language.tabletop_order import (
     THEN,
     end_opener_read,
     heading_colon_put_back,
+    inverted_condition_read,
     ordinal_things_read,
     reference_fronted,
     robot_addressed,
@@ -371,7 +372,9 @@ def read_pairs(text: str, types: set[str]) -> Reading | None:
         text = stage_headings_read(text)  # "Two stages. Stage one: ...", as `TabletopReader.prepared` has it
     except HTTError:
         return None
-    plain = plain_words(text, kinds, _shared_heads(by_words))
+    pattern = mention_pattern(by_words)
+    # "only when A is on P should B go on Q": the usual order, before the clause is taken for a statement
+    plain = inverted_condition_read(plain_words(text, kinds, _shared_heads(by_words)), pattern)
     plates = mention_pattern([w for w, plate in kinds.items() if plate])
     plain, plate_counts = plate_counts_read(plain, plates)  # "two for the yellow plate": checked below
     plain, total_counts = total_counts_read(plain)  # "- those four placements, that's all": checked below
@@ -388,7 +391,6 @@ def read_pairs(text: str, types: set[str]) -> Reading | None:
     unordered, remarks = free_order(plain)
     free, listed = bool(remarks), frees_every_step(remarks)
     stepped = steps_read(last_item_unmarked(unordered) if listed else unordered, listed)
-    pattern = mention_pattern(by_words)
     if stepped is not None:  # a clause waiting for placements, and a "then" closing its clause, put first
         stepped = heading_colon_put_back(reference_fronted(stepped, pattern), pattern)
         stepped = trailing_then_fronted(stepped, pattern)
