@@ -85,8 +85,8 @@ def test_both_done_inside_a_sentence_of_two_clauses():
 def test_then_after_a_before_you_sentence_comes_after_the_stated_task(then):
     """Before: "Before you X, Y. After that, Z" put Z after Y only (X, stated by the reference, could come
     after Z)."""
-    tasks, order, unread = read(f"Before you put the apple in the fridge, put the mug in the sink. {then} put "
-                                "the egg in the microwave.")
+    tasks, order, unread = read(f"Before you put the apple in the fridge, put the mug in the sink. {then} "
+                                "put the egg in the microwave.")
     assert sorted(tasks) == sorted([MUG, APPLE, EGG]) and not unread
     assert order == {(MUG, APPLE), (APPLE, EGG), (MUG, EGG)}
 
