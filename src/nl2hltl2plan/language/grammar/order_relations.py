@@ -358,8 +358,8 @@ def _last_step(units: list[Unit], sentence: int, free: set[int], edges: Edges, t
     own = {t for v in units if v.sentence == sentence for t in v.tasks}
     # "Before you X, Y. After that, Z": X, which the sentence's reference states, is done after Y (Z after
     # X, not only after Y)
-    said = {t for v in units for t in v.tasks}
-    own |= {t for a, t in edges if a in own and t not in said and t not in free}
+    in_clauses = {t for v in units for t in v.tasks}
+    own |= {t for a, t in edges if a in own and t not in in_clauses and t not in free}
     return sorted(t for t in own if (order_only or t not in free) and not any((t, o) in edges for o in own))
 
 
