@@ -229,6 +229,9 @@ KNOWN_WRONG: set[str] = {
     "dresser; then put a pencil in the white cup and put the cup on a shelf of the bookcase.",
     "Put a remote in a box and set the box on the armchair, and move two sets of keys to the sofa. Then grab "
     "the watch on the table, turn on the floor lamp, and do the same with the remote control.",
+    "Chill a glass in the fridge and put it in the sink. Before that, put a heated cup on the counter, and "
+    "after you've chilled the glass, put a cup with a spoon in it on the counter and a cold slice of potato "
+    "in the trash can, in any order.",
 }
 
 
