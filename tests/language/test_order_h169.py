@@ -1,5 +1,5 @@
 """Issue 28, order in paper-style instructions of three and four tasks (h169, paper_h169dev.txt): a closing
-"at the very end" / "last of all" / "as the final step" / "to finish" / "when you're all done" makes its
+"at the very end" / "last of all" / "as the final step" / "when you're all done" makes its
 clause the last step, "when you have done both" is "when both are done" (also inside a "Before that, Y"
 sentence), "After that" after a "Before you X, Y" sentence comes after X too, and a trailing reference
 after two clauses states its task once. Before each fix the reading was wrong (exit 0, an order lost or
@@ -21,7 +21,7 @@ SEQ = "Put the mug in the sink. Then put the apple in the fridge"
 @pytest.mark.parametrize(
     "closing",
     ["at the very end", "last of all", "as the very last thing", "as the final step", "as a last step",
-     "to finish", "at the very last", "when you're all done", "once you are all done"],
+     "at the very last", "when you're all done", "once you are all done"],
 )
 def test_closing_phrase_makes_the_clause_the_last_step(closing):
     """Before: the closing phrase was left over and the egg had no order at all."""

@@ -146,13 +146,13 @@ _LAST_ITEM = re.compile(
 _BEFORE_DOING_ANYTHING = re.compile(r"\b(before)\s+doing\s+(?=anything\s+else\b)", re.I)
 
 
-# "Put D on E at the very end." / "... last of all" / "... as the final step" / "... to finish" / "... when
-# you're all done": a closing phrase that makes its clause the last step, as "last" does (only "at the end"
-# and "last" were read; the others were left over and the task lost its order, a wrong reading)
+# "Put D on E at the very end." / "... last of all" / "... as the final step" / "... when you're all done": a
+# closing phrase that makes its clause the last step, as "last" does (only "at the end" and "last" were
+# read; the others were left over and the task lost its order, a wrong reading). A closing "to finish" is
+# not one of them: "A and B to finish" does not say which is last (refused, test_tabletop_lines)
 _CLOSING_LAST = re.compile(
     r"\s*,?\s+(?:at\s+the\s+very\s+(?:end|last)|last\s+of\s+all|as\s+(?:the|a|your)\s+(?:very\s+)?(?:last|final)\s+"
-    r"(?:thing|step|task|job|one)|to\s+(?:finish(?:\s+(?:up|off))?|wrap\s+(?:it\s+|things\s+)?up|conclude)|"
-    r"(?:once|when)\s+you(?:'re|\s+are|'ve|\s+have)?\s+all\s+(?:done|finished))(?=\s*(?:[.;!?]|$))",
+    r"(?:thing|step|task|job|one)|(?:once|when)\s+you(?:'re|\s+are|'ve|\s+have)?\s+all\s+(?:done|finished))(?=\s*(?:[.;!?]|$))",
     re.I,
 )
 
