@@ -146,12 +146,36 @@ _LAST_ITEM = re.compile(
 _BEFORE_DOING_ANYTHING = re.compile(r"\b(before)\s+doing\s+(?=anything\s+else\b)", re.I)
 
 
+# "Put D on E at the very end." / "... last of all" / "... as the final step" / "... when you're all done": a
+# closing phrase that makes its clause the last step, as "last" does (only "at the end" and "last" were
+# read; the others were left over and the task lost its order, a wrong reading). A closing "to finish" is
+# not one of them: "A and B to finish" does not say which is last (refused, test_tabletop_lines)
+_CLOSING_LAST = re.compile(
+    r"\s*,?\s+(?:at\s+the\s+very\s+(?:end|last)|last\s+of\s+all|as\s+(?:the|a|your)\s+(?:very\s+)?(?:last|final)\s+"
+    r"(?:thing|step|task|job|one)|(?:once|when)\s+you(?:'re|\s+are|'ve|\s+have)?\s+all\s+(?:done|finished))(?=\s*(?:[.;!?]|$))",
+    re.I,
+)
+
+
+# "when you have done both, Y" / "once you've finished those two things" / "when you're done with both of
+# them": "when both are done", the reference to the two tasks before that the sentence rules read (the
+# writer's own doing was not read: "could not tell which tasks 'you have done both' refers to")
+_YOU_DID_BOTH = re.compile(
+    r"\b(?P<lead>once|when|after|as\s+soon\s+as)\s+you(?:'ve|\s+have|'re|\s+are)?\s+(?:done|finished|completed)\s+"
+    r"(?:with\s+)?(?P<what>both(?:\s+of\s+(?:them|those|these))?|(?:those|these|the)\s+two"
+    r"(?:\s+(?:things|tasks|steps|jobs))?)\b",
+    re.I,
+)
+
+
 def after_the_step(text: str) -> str:
     """ "..., do these in either order, then C" -> "... Once all that is done, C" (C after every task before
     it; "..., and after those two C" is `everyday`'s reference to every task before); "A, after which B"
     -> "A, then B"; "and at the very end C" -> "and finally C"; "and only after that B" -> "and after that
     B"; "After that, though, B" -> "After that, B"; "A, then B, and the C on D last" -> "..., and finally
-    the C on D"; "before doing anything else" -> "before anything else"."""
+    the C on D"; "before doing anything else" -> "before anything else"; "..., D at the very end." -> "..., D
+    last."; "when you have done both" -> "when both are done"."""
+    text = _YOU_DID_BOTH.sub(lambda m: f"{m['lead']} {m['what']} are done", _CLOSING_LAST.sub(" last", text))
     text = _INTERJECTED.sub(r"\g<lead>, ", _FOCUS_CONNECTIVE.sub(r"\g<join>", text))
     text = _LAST_ITEM.sub(r"\g<join>finally \g<item>", _BEFORE_DOING_ANYTHING.sub(r"\1 ", text))
     text = _AFTER_WHICH.sub(", then ", _FREED_THEN.sub(r"\1. Once all that is done, ", text))
@@ -197,7 +221,7 @@ def done_opener_closed(text: str) -> str:
 
 # "once that's done": "then" (`sentences`); "..., and once all that is done, Y" / "once everything is done"
 # open a sentence as other references do (left in, the clause took Y into its reference and put Y first)
-_NO_CLAUSE = frozenset({"that", "this", "it", "both"})
+_NO_CLAUSE = frozenset({"that", "this", "it"})
 _LEADS = re.compile(r"\s*(?:(?:only|right|just)\s+)?(?:after|before|once|when|until|while)\b", re.IGNORECASE)
 
 
@@ -215,8 +239,8 @@ def subordinate_first(text: str) -> str:
             None,
         )
         opener = text[sentence_start(text, m.start()) : m.start()]
-        if main is None or words[1][0] in _NO_CLAUSE or _LEADS.match(opener):
-            continue  # "after X and before Y, Z": both are about Z
+        if main is None or words[1][0] in _NO_CLAUSE or (_LEADS.match(opener) and "," not in opener):
+            continue  # "after X and before Y, Z": both are about Z ("Before that, Y, and when ..." is not)
         sub_end = m.end() + main[1]
         sub = text[m.end() : sub_end].rstrip(" ,")
         then = "Then, " if m["then"] or m["then2"] else ""  # "X, then, after Y, Z": Z after X too

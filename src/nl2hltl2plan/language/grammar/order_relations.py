@@ -356,6 +356,10 @@ def _last_step(units: list[Unit], sentence: int, free: set[int], edges: Edges, t
     if _FREE_WORD.search(said) and not order_only:
         return []
     own = {t for v in units if v.sentence == sentence for t in v.tasks}
+    # "Before you X, Y. After that, Z": X, which the sentence's reference states, is done after Y (Z after
+    # X, not only after Y)
+    in_clauses = {t for v in units for t in v.tasks}
+    own |= {t for a, t in edges if a in own and t not in in_clauses and t not in free}
     return sorted(t for t in own if (order_only or t not in free) and not any((t, o) in edges for o in own))
 
 
@@ -451,11 +455,18 @@ def _ref_edges(after: bool, ref: str, u: Unit, tasks: Tasks, b: TaskBuilder, tex
 
 
 def _add_ref_tasks(new: list[BaseTaskSpec], after: bool, u: Unit, tasks: Tasks, edges: Edges) -> None:
-    """Tasks a reference states, ordered before (after=True) or after the tasks of unit `u`."""
+    """Tasks a reference states, ordered before (after=True) or after the tasks of unit `u`. A task that the
+    same words already stated for another clause is that task ("A and B, but only after you've put X":
+    one X, before both), not a second one."""
+    said = {t for v in tasks.units for t in v.tasks}
     for spec in new:
-        tasks.specs.append(spec)
-        tasks.nps.append(None)
-        t = len(tasks.specs) - 1
+        again = [t for t in range(len(tasks.specs)) if t not in said and tasks.specs[t] == spec]
+        if again:
+            t = again[0]
+        else:
+            tasks.specs.append(spec)
+            tasks.nps.append(None)
+            t = len(tasks.specs) - 1
         edges.update((t, b2) if after else (b2, t) for b2 in u.tasks)
 
 
