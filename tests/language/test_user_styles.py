@@ -238,11 +238,6 @@ KNOWN_WRONG: set[str] = {
     "Chill a glass in the fridge and put it in the sink. Before that, put a heated cup on the counter, and "
     "after you've chilled the glass, put a cup with a spoon in it on the counter and a cold slice of potato "
     "in the trash can, in any order.",
-    # h169's held-out half, refused by world counts before the trials: column, read wrong since (the lead,
-    # at the merge): "A, and B. Do those first, in any order, and then C" loses A, B < C (only D is ordered)
-    "Pick up both bars of soap and put them in the tub, and put two candles on the shelf to the left of the "
-    "toilet. Do those first, in any order, and then put a spray bottle on top of the water tank. End by "
-    "placing a hand towel inside the sink.",
 }
 
 

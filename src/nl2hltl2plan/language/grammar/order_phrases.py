@@ -93,7 +93,8 @@ def not_before_as_after(text: str) -> str:
 # "A. B. Do these in either order, then C": C after all of them (the sentence ends at the free order)
 _FREED_THEN = re.compile(
     r"\b((?:do|handle|complete|finish)\s+(?:these|those|them|both(?:\s+of\s+them)?|all\s+of\s+(?:them|these|those)|"
-    r"the\s+(?:two|three|four)(?:\s+(?:tasks|things|jobs))?)\s+in\s+(?:any|either|whatever)\s+order)\s*,?\s+"
+    r"the\s+(?:two|three|four)(?:\s+(?:tasks|things|jobs))?)(?:\s+first)?\s*,?\s+in\s+(?:any|either|whatever)\s+order)"
+    r"\s*,?\s+"
     r"(?:and\s+)?(?:then|after\s+that|afterwards?)\s*,?\s+(?=[a-z])",
     re.IGNORECASE,
 )
@@ -169,9 +170,9 @@ _YOU_DID_BOTH = re.compile(
 
 
 def after_the_step(text: str) -> str:
-    """ "..., do these in either order, then C" -> "... Once all that is done, C" (C after every task before
-    it; "..., and after those two C" is `everyday`'s reference to every task before); "A, after which B"
-    -> "A, then B"; "and at the very end C" -> "and finally C"; "and only after that B" -> "and after that
+    """ "..., do these (first,) in either order, then C" -> "... Once all that is done, C" (C after every task
+    before it; "..., and after those two C" is `everyday`'s reference to every task before); "A, after which
+    B" -> "A, then B"; "and at the very end C" -> "and finally C"; "and only after that B" -> "and after that
     B"; "After that, though, B" -> "After that, B"; "A, then B, and the C on D last" -> "..., and finally
     the C on D"; "before doing anything else" -> "before anything else"; "..., D at the very end." -> "..., D
     last."; "when you have done both" -> "when both are done"."""
