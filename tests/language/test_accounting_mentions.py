@@ -1,0 +1,63 @@
+"""Check 1 per mention (h172, issue 23): a thing named twice needs a task for each naming. A mention in the
+words of a task that does not use it, and in those of no task that does, is unread; "look at X and at Y"
+examines both (its "at" is no locative); "do the same with the other X" needs a task of its own; a name
+part before another name ("the tennis book") is unread. A thing said again for the same task, or with two
+roles, is still read."""
+
+from __future__ import annotations
+
+from nl2hltl2plan.language.accounting import account
+from nl2hltl2plan.language.task_specs import BaseTaskSpec
+from nl2hltl2plan.language.unknown_words import unknown_modifiers
+
+
+def task(kind: str, obj: str, tid: str, text: str, **kw: object) -> BaseTaskSpec:
+    return BaseTaskSpec(kind=kind, object=[obj], id=tid, text=text, **kw)  # type: ignore[arg-type]
+
+
+def unread(text: str, tasks: list[BaseTaskSpec], before: list[tuple[str, str]] | None = None) -> list[str]:
+    return [u.words for u in account(text, tasks, before or [])]
+
+
+LOOK = "look at the box under the lamp and at the pencil by the lamp, then put a pencil in the drawer"
+
+
+def test_a_mention_in_the_words_of_a_task_that_does_not_use_it_is_unread():
+    box = task("examine_in_light", "Box", "A", "look at the box under the lamp and at the pencil by the lamp")
+    box.light = ["DeskLamp"]
+    drawer = task("place", "Pencil", "B", "put a pencil in the drawer", receptacle=["Drawer"])
+    assert unread(LOOK, [box, drawer], [("A", "B")]) == ["pencil"]
+    # read with both: nothing is unread
+    pencil = task("examine_in_light", "Pencil", "C", "look at the box under the lamp and at the pencil by the lamp")
+    pencil.light = ["DeskLamp"]
+    assert unread(LOOK, [box, pencil, drawer], [("A", "B"), ("C", "B")]) == []
+
+
+def test_the_same_thing_said_again_or_with_two_roles_is_still_read():
+    text = "put the pencil in the mug, then move the mug to the shelf"
+    one = task("place_in_container", "Pencil", "A", text, receptacle=["Shelf"], container=["Mug"])
+    assert unread(text, [one]) == []
+    text = "wash the plate, then put the plate in a cabinet"
+    assert unread(text, [task("clean_place", "Plate", "A", text, receptacle=["Cabinet"])]) == []
+    # a kind's appliance said in another task's words ("microwave the cup ... the potato in the microwave")
+    text = "microwave the cup and put it in the sink, and then put a potato in the microwave"
+    heat = task("heat_place", "Cup", "A", "microwave the cup and put it in the sink", receptacle=["SinkBasin"])
+    potato = task("place", "Potato", "B", "put a potato in the microwave", receptacle=["Microwave"])
+    assert unread(text, [heat, potato], [("A", "B")]) == []
+
+
+def test_the_same_with_the_other_thing_needs_a_task_of_its_own():
+    text = "put a remote in the box, then look at the watch under the lamp and do the same with the other remote"
+    boxed = task("place_in_container", "RemoteControl", "A", "put a remote in the box", receptacle=["Box"])
+    watch = task("examine_in_light", "Watch", "B", "look at the watch under the lamp")
+    watch.light = ["FloorLamp"]
+    assert unread(text, [boxed, watch], [("A", "B")]) == ["remote"]
+    remote = task("examine_in_light", "RemoteControl", "C", "do the same with the other remote")
+    remote.light = ["FloorLamp"]
+    assert unread(text, [boxed, watch, remote], [("A", "B"), ("A", "C")]) == []
+
+
+def test_a_name_part_before_another_name_is_unread():
+    assert [u.words for u in unknown_modifiers("put the tennis book on the bed")] == ["tennis"]
+    assert unknown_modifiers("put the tennis racket on the bed") == []
+    assert unknown_modifiers("put the standing lamp's bulb on the bed") == []  # also a verb's form
