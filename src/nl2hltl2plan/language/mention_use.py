@@ -63,7 +63,7 @@ def unused_mentions(
         if holder is None or types & ParseUsage([holder], []).implied():
             continue  # said in no task's words (an order's "the egg first"), or implied by its task's kind
         surface = " ".join(m.surface for m in phrase)
-        why = f"said in the words of task {holder.id}, which does not use it, and in those of no task that does"
+        why = f"said in the words of task {holder.id}, which does not use it, and of no task that does"
         out.append(Unread(surface, "object", why))
     return out
 
@@ -74,7 +74,8 @@ def looked_at(toks: Sequence[tuple[str, int, int]], i: int) -> bool:
     if toks[i][0] != "at" or i == 0:
         return False
     if toks[i - 1][0] == "and":
-        return any(w == "at" and _LOOK & categories(v) for (v, _, _), (w, _, _) in zip(toks[:i], toks[1:i]))
+        pairs = zip(toks[: i - 1], toks[1:i], strict=True)
+        return any(w == "at" and _LOOK & categories(v) for (v, _, _), (w, _, _) in pairs)
     return bool(_LOOK & categories(toks[i - 1][0]))
 
 
