@@ -241,11 +241,12 @@ def moved_twice(
     could have named ("the rag" after "a rag" and "a blue rag")."""
     for k, later in enumerate(tasks):
         # the thing named before: one task of one thing, else "the rag" after two rags picks neither
-        named = [t for t in tasks[:k] if set(t.object) & set(later.object)]
+        # per thing, whatever its role: "the pencil into the bowl on the desk, then move the bowl to ..."
+        named = [t for t in tasks[:k] if _carried(t) & set(later.object)]
         if len(named) != 1 or not _moves(later) or not _moves(named[0]):
             continue
         earlier = named[0]
-        shared = set(earlier.object) & set(later.object)
+        shared = _carried(earlier) & set(later.object)
         if (later.id, earlier.id) in before or set(earlier.receptacle or ()) == set(later.receptacle or ()):
             continue
         said = _reference(later.text, shared, _words_for(earlier.text, shared))
@@ -259,6 +260,11 @@ def moved_twice(
             f"takes any {thing} it finds): say where it ends (\"put the {thing} in …\"), or "
             f"\"another {thing}\" for a second one"
         )
+
+
+def _carried(task: BaseTaskSpec) -> set[str]:
+    """The types of the things a task moves: its object, and the container it moves with it."""
+    return set(task.object) | set(task.container or ())
 
 
 def _moves(task: BaseTaskSpec) -> bool:
