@@ -6,7 +6,11 @@ roles, is still read."""
 
 from __future__ import annotations
 
+import pytest
+
+from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.accounting import account
+from nl2hltl2plan.language.referents import moved_twice
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
 from nl2hltl2plan.language.unknown_words import unknown_modifiers
 
@@ -62,3 +66,16 @@ def test_a_name_part_before_another_name_is_unread():
     assert [u.words for u in unknown_modifiers("put the tennis book on the bed")] == ["tennis"]
     assert unknown_modifiers("put the tennis racket on the bed") == []
     assert unknown_modifiers("put the standing lamp's bulb on the bed") == []  # also a verb's form
+
+
+def test_a_container_moved_on_by_a_later_task_is_one_thing_in_two_places():
+    text = "put the pencil into the bowl on the desk and then move the bowl to the shelf"
+    boxed = task("place_in_container", "Pencil", "A", text[:40], receptacle=["Desk"], container=["Bowl"])
+    moved = task("place", "Bowl", "B", "move the bowl to the shelf", receptacle=["Shelf"])
+    with pytest.raises(HTTError, match="'the bowl' is one bowl put in two places"):
+        moved_twice(text, [boxed, moved], [("A", "B")])
+    # "another bowl" is a second one; one task with the bowl as its container is read
+    other = task("place", "Bowl", "B", "move another bowl to the shelf", receptacle=["Shelf"])
+    moved_twice(text.replace("the bowl to", "another bowl to"), [boxed, other], [("A", "B")])
+    one = task("place_in_container", "Pencil", "A", text, receptacle=["Shelf"], container=["Bowl"])
+    moved_twice(text, [one])

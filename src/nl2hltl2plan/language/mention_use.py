@@ -46,8 +46,8 @@ def unused_mentions(
     that lie in the words of a task that does not use their type and in those of no task that does."""
     spans = task_spans(instruction, parse.tasks)
     uses: dict[str, set[str]] = {}
-    for task_id, _, types in parse.slots():
-        uses.setdefault(task_id, set()).update(types)
+    for task_id, _, slot_types in parse.slots():
+        uses.setdefault(task_id, set()).update(slot_types)
     out = []
     for phrase in phrases:
         types = {t for m in phrase for t in (*m.entry.types, m.entry.canonical)}

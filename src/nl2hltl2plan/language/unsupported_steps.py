@@ -558,7 +558,7 @@ def repeats_for_another(instruction: str, mentions: list[Mention], parse: ParseU
     for m in _SAME_FOR.finditer(instruction):
         x = next((x for x in mentions if x.char_start == m.end()), None)
         types = set(x.entry.types) if x is not None else set()
-        said = ParseUsage([t for t in parse.tasks if (s := spans[t.id]) is None or s[1] > m.start()], [])
+        said = ParseUsage([t for t in parse.tasks if (sp := spans[t.id]) is None or sp[1] > m.start()], [])
         if x is not None and not any(set(t.object) & types and _own(t, said) for t in said.tasks):
             out.append(Unread(x.surface, "object", _SAME_THING))
     return out
