@@ -10,7 +10,7 @@ import pytest
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.accounting import account
-from nl2hltl2plan.language.referents import moved_twice
+from nl2hltl2plan.language.referents import moved_twice, place_then_moved
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
 from nl2hltl2plan.language.unknown_words import unknown_modifiers
 
@@ -79,3 +79,14 @@ def test_a_container_moved_on_by_a_later_task_is_one_thing_in_two_places():
     moved_twice(text.replace("the bowl to", "another bowl to"), [boxed, other], [("A", "B")])
     one = task("place_in_container", "Pencil", "A", text, receptacle=["Shelf"], container=["Bowl"])
     moved_twice(text, [one])
+
+
+def test_a_place_that_a_later_task_moves_is_one_thing_in_two_roles():
+    text = "put the pencil in the mug and put the mug and the book on the desk"
+    into = task("place", "Pencil", "A", "put the pencil in the mug", receptacle=["Mug"])
+    moved = task("place", "Mug", "B", "put the mug on the desk", receptacle=["Desk"])
+    with pytest.raises(HTTError, match="'the mug' is where task A puts a thing and what task B moves"):
+        place_then_moved([into, moved])
+    # "it" is the pencil, and "another mug" a second one: both read
+    place_then_moved([into, task("place", "Pencil", "B", "put it on the desk", receptacle=["Desk"])])
+    place_then_moved([into, task("place", "Mug", "B", "put another mug on the desk", receptacle=["Desk"])])
