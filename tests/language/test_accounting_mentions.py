@@ -82,7 +82,7 @@ def test_a_container_moved_on_by_a_later_task_is_one_thing_in_two_places():
 
 
 def test_a_place_that_a_later_task_moves_is_one_thing_in_two_roles():
-    text = "put the pencil in the mug and put the mug and the book on the desk"
+    # "put the pencil in the mug and put the mug and the book on the desk", read as two placings
     into = task("place", "Pencil", "A", "put the pencil in the mug", receptacle=["Mug"])
     moved = task("place", "Mug", "B", "put the mug on the desk", receptacle=["Desk"])
     with pytest.raises(HTTError, match="'the mug' is where task A puts a thing and what task B moves"):
