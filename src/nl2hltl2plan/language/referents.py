@@ -242,12 +242,15 @@ def moved_twice(
     could have named ("the rag" after "a rag" and "a blue rag")."""
     for k, later in enumerate(tasks):
         # the thing named before: one task of one thing, else "the rag" after two rags picks neither
-        # per thing, whatever its role: "the pencil into the bowl on the desk, then move the bowl to ..."
-        named = [t for t in tasks[:k] if _carried(t) & set(later.object)]
+        # per thing, whatever its role: "the pencil into the bowl on the desk, then move the bowl to ...";
+        # a container only where the later task relocates it (the two-step wording of one task with a
+        # container), not where it treats it ("warm up the cup": composed sets use "the" for a new one)
+        things = _carried if later.kind == "place" else _objects
+        named = [t for t in tasks[:k] if things(t) & set(later.object)]
         if len(named) != 1 or not _moves(later) or not _moves(named[0]):
             continue
         earlier = named[0]
-        shared = _carried(earlier) & set(later.object)
+        shared = things(earlier) & set(later.object)
         if (later.id, earlier.id) in before or set(earlier.receptacle or ()) == set(later.receptacle or ()):
             continue
         said = _reference(later.text, shared, _words_for(earlier.text, shared))
@@ -286,6 +289,10 @@ def place_then_moved(tasks: Sequence[BaseTaskSpec], before: Sequence[tuple[str, 
 def _carried(task: BaseTaskSpec) -> set[str]:
     """The types of the things a task moves: its object, and the container it moves with it."""
     return set(task.object) | set(task.container or ())
+
+
+def _objects(task: BaseTaskSpec) -> set[str]:
+    return set(task.object)
 
 
 def _moves(task: BaseTaskSpec) -> bool:
