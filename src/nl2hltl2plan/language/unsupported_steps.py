@@ -558,8 +558,12 @@ def repeats_for_another(instruction: str, mentions: list[Mention], parse: ParseU
     for m in _SAME_FOR.finditer(instruction):
         x = next((x for x in mentions if x.char_start == m.end()), None)
         types = set(x.entry.types) if x is not None else set()
-        said = ParseUsage([t for t in parse.tasks if (sp := spans[t.id]) is None or sp[1] > m.start()], [])
-        if x is not None and not any(set(t.object) & types and _own(t, said) for t in said.tasks):
+        said = [t for t in parse.tasks if (sp := spans[t.id]) is None or sp[1] > m.start()]
+        # its own task: no other task's thing ("the cup" read as the mug before), or by its own name (the
+        # other remote, after "a remote")
+        if x is not None and not any(
+            set(t.object) & types and (_own(t, parse) or x.entry.canonical in t.object) for t in said
+        ):
             out.append(Unread(x.surface, "object", _SAME_THING))
     return out
 
