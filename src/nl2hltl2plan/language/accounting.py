@@ -51,6 +51,7 @@ from nl2hltl2plan.language.grounding import (
 from nl2hltl2plan.language.it_of_two import it_of_two
 from nl2hltl2plan.language.landmarks import NEAR_WORDS, carried, landmark_destinations, pair_start
 from nl2hltl2plan.language.memo import reading_memo
+from nl2hltl2plan.language.mention_use import looked_at, unused_mentions
 from nl2hltl2plan.language.negations import NO_CONSTRAINT, about_order, unforbidden_verb
 from nl2hltl2plan.language.order_words import check_cycles, finished_words, misordered, unordered_steps
 from nl2hltl2plan.language.parse_usage import IMPLIED_TYPES, ParseUsage
@@ -113,7 +114,8 @@ def account(
         and "noun_unsupported" not in categories(m.surface.lower())  # "my glasses" are no drinking glasses
     ]
     in_mention = {i for m in mentions for i in range(m.start, m.end)}
-    out = _nouns(instruction, mentions, toks, parse)
+    out, named = _nouns(instruction, mentions, toks, parse)
+    out += unused_mentions(instruction, named, parse)  # per mention: "the pencil" of a task without one
     out += _invented(instruction, mentions, toks, parse, in_mention)
     out += landmark_destinations(mentions, toks, parse)
     out += _invented_kinds(instruction, toks, mentions, parse)
@@ -197,8 +199,9 @@ def _modifiers(words: list[str]) -> bool:
 
 def _nouns(
     instruction: str, mentions: list[Mention], toks: list[tuple[str, int, int]], parse: ParseUsage
-) -> list[Unread]:
-    """Object and place nouns: each named thing needs a slot of its own (or is implied / a location)."""
+) -> tuple[list[Unread], list[list[Mention]]]:
+    """Object and place nouns: each named thing needs a slot of its own (or is implied / a location);
+    and the names of the matched things that need a slot (not where something is), each said once."""
     implied, implied_words = parse.implied(), parse.implied_words()
     slots = parse.slots()
     groups: dict[frozenset[str], list[list[Mention]]] = {}
@@ -239,17 +242,20 @@ def _nouns(
         for m in p
         if slots[k][1] != "object" or m.entry.canonical in place_types
     ]
-    out = []
+    out, named = [], []
     objects = {t for _, role, st in slots if role == "object" for t in st}
     for key, phrases in groups.items():
-        if key in matched or all(_locative(instruction, p[0], toks, places, implied_places) for p in phrases):
+        needing = [p for p in phrases if not _locative(instruction, p[0], toks, places, implied_places)]
+        if key in matched:
+            named += needing
+        if key in matched or not needing:
             continue
         first = phrases[0][-1]
         what = "object" if any(t in objects for t in first.entry.types) else "place"
         used = "/".join(first.entry.types[:3])
         surface = " ".join(m.surface for m in phrases[0]) if len(phrases[0]) > 1 else first.surface
         out.append(Unread(surface, what, f"no base task uses it ({used})"))
-    return out
+    return out, named
 
 
 # a "with" after these opens the task a thing is in ("done with the mug"); clauses end at these words
@@ -275,7 +281,7 @@ def _locative(
     i = preposition_before(toks, start, LOCATIVE)
     if _walked_to(toks, m.start):
         return True
-    if i < 0 or toks[i][0] not in LOCATIVE:
+    if i < 0 or toks[i][0] not in LOCATIVE or looked_at(toks, i):  # "look at the box": what is examined
         return False
     if re.search(r"[,;:.!?]", instruction[toks[i][2] : toks[start][1]]):
         return False  # "in the drawer, also the ladle": a preposition's phrase never reaches over punctuation

@@ -82,6 +82,7 @@ def check_referents(
     scopes = mention_scopes(instruction, tasks)  # both checks below ask each word's tasks
     decided = exact_names(instruction, tasks, instances, scene, forbidden, scopes)
     moved_twice(instruction, tasks, before)
+    place_then_moved(tasks, before)
     another_one(instruction, tasks)
     categories_named(instruction, tasks, instances, scene)
     said = decided + stand_ins(instruction, tasks, instances, scene, scopes)
@@ -241,11 +242,15 @@ def moved_twice(
     could have named ("the rag" after "a rag" and "a blue rag")."""
     for k, later in enumerate(tasks):
         # the thing named before: one task of one thing, else "the rag" after two rags picks neither
-        named = [t for t in tasks[:k] if set(t.object) & set(later.object)]
+        # per thing, whatever its role: "the pencil into the bowl on the desk, then move the bowl to ...";
+        # a container only where the later task relocates it (the two-step wording of one task with a
+        # container), not where it treats it ("warm up the cup": composed sets use "the" for a new one)
+        things = _carried if later.kind == "place" else _objects
+        named = [t for t in tasks[:k] if things(t) & set(later.object)]
         if len(named) != 1 or not _moves(later) or not _moves(named[0]):
             continue
         earlier = named[0]
-        shared = set(earlier.object) & set(later.object)
+        shared = things(earlier) & set(later.object)
         if (later.id, earlier.id) in before or set(earlier.receptacle or ()) == set(later.receptacle or ()):
             continue
         said = _reference(later.text, shared, _words_for(earlier.text, shared))
@@ -259,6 +264,35 @@ def moved_twice(
             f"takes any {thing} it finds): say where it ends (\"put the {thing} in …\"), or "
             f"\"another {thing}\" for a second one"
         )
+
+
+def place_then_moved(tasks: Sequence[BaseTaskSpec], before: Sequence[tuple[str, str]] = ()) -> None:
+    """A thing that is where one task puts something and what a later task moves, referred back to by
+    the same word ("put the pencil in the mug and put the mug and the book on the desk": the mug of both
+    tasks): the spec cannot keep both to one mug, so the pencil may end in another one. Said as one step
+    ("put the pencil in the mug, then the mug on the desk") it is a task with the mug as its container."""
+    for k, later in enumerate(tasks):
+        named = [t for t in tasks[:k] if t.kind == "place" and set(t.receptacle or ()) & set(later.object)]
+        if len(named) != 1 or not _moves(later) or (later.id, named[0].id) in before:
+            continue
+        shared = set(named[0].receptacle or ()) & set(later.object)
+        said = _reference(later.text, shared, _words_for(named[0].text, shared))
+        if said is not None and said not in _BACK:
+            thing = camel_words(sorted(shared)[0])
+            raise HTTError(
+                f"{said!r} is where task {named[0].id} puts a thing and what task {later.id} moves, which no "
+                f"two tasks can say (each takes any {thing} it finds): say it as one step (\"put X in the "
+                f"{thing}, then the {thing} on …\"), or \"another {thing}\" for a second one"
+            )
+
+
+def _carried(task: BaseTaskSpec) -> set[str]:
+    """The types of the things a task moves: its object, and the container it moves with it."""
+    return set(task.object) | set(task.container or ())
+
+
+def _objects(task: BaseTaskSpec) -> set[str]:
+    return set(task.object)
 
 
 def _moves(task: BaseTaskSpec) -> bool:

@@ -76,7 +76,7 @@ from nl2hltl2plan.language.content_words import (
     vocabulary,
     word_categories,
 )
-from nl2hltl2plan.language.grounding import Mention, find_mentions, tokens
+from nl2hltl2plan.language.grounding import Mention, find_mentions, lexicon, tokens
 from nl2hltl2plan.language.memo import reading_memo
 from nl2hltl2plan.language.parse_usage import ParseUsage
 from nl2hltl2plan.language.spelling import (
@@ -266,12 +266,28 @@ def _unknown_modifier(word: str) -> list[str] | None:
         return None
     if categories(word) or word in descriptive_words():
         return None
+    if name_part(word):  # "the tennis book": "tennis" names a tennis racket, a thing no reading uses
+        return []
     near = _near_state(word)
     if known_word(word):  # a name ("cleaner", a spray) used as an adjective one slip from a state word
         return near if adjective(word) and any(s in one_edit(word) for s in near) else None
     if adjective(word) and not any(s in one_edit(word) for s in near):
         return None  # "the tiny mug" describes the mug; "the heather apple" names a plant, or 'heated'
     return near if english_word(word) and not _slip_of_descriptive(word) else None
+
+
+@cache
+def name_part(word: str) -> bool:
+    """Is `word` only a first word of the lexicon's names of many words ("tennis" of "tennis racket",
+    "cell" of "cell phone"), never a name alone, and a word English knows only as a noun? Before another
+    name it names another thing ("the tennis book"), as "the garden apple" does; a word English also
+    uses as an adjective or a verb's form ("standing lamp", "dining table") may describe the thing."""
+    from lemminflect import getAllLemmas  # type: ignore[import-untyped]
+
+    keys = lexicon().keys()
+    if (word,) in keys or not any(word in key[:-1] for key in keys if len(key) > 1):
+        return False
+    return set(getAllLemmas(word)) == {"NOUN"}
 
 
 def _near_state(word: str) -> list[str]:

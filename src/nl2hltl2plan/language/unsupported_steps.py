@@ -25,6 +25,7 @@ from nl2hltl2plan.language.grammar.frames import UNDER
 from nl2hltl2plan.language.grammar.put_back import WHERE_IT_WAS
 from nl2hltl2plan.language.grammar.repeats import REPEAT_FRAGMENT
 from nl2hltl2plan.language.grounding import Mention, lookup, sentence_start, tokens
+from nl2hltl2plan.language.mention_use import task_spans
 from nl2hltl2plan.language.negations import NO_CONSTRAINT, PRONOUNS
 from nl2hltl2plan.language.parse_usage import ParseUsage
 from nl2hltl2plan.language.picked_states import picked_states
@@ -532,7 +533,9 @@ def fragments(instruction: str, mentions: list[Mention]) -> list[Unread]:
 
 # a sentence after a task that asks for that task again for another thing (issue 23): "The cup too.",
 # "Same for the bowl." (`grammar.repeats`, which writes out those it can); "the same for the cup, but ..."
-_SAME_FOR = re.compile(r"\bsame\s+(?:thing\s+)?(?:for|with|to)\s+(?:the|a|an|my|your)\s+", re.I)
+_SAME_FOR = re.compile(
+    r"\bsame\s+(?:thing\s+)?(?:for|with|to)\s+(?:the|a|an|my|your)\s+(?:other\s+|second\s+)?", re.I
+)
 _SAME_TASK = "the task before, for another thing: no task does the whole of it (its treatment, slicing, "
 _SAME_TASK += "place, order) for this thing: say the whole task"
 _SAME_THING = "no task of its own does the task for this thing (unread, or read as another task's thing)"
@@ -551,10 +554,16 @@ def repeats_for_another(instruction: str, mentions: list[Mention], parse: ParseU
         named = [x for x in mentions if s.start() <= x.char_start < s.end()]
         if named and not all(_repeated(set(x.entry.types), parse) for x in named):
             out.append(Unread(s.group(0).strip(" ,"), "fragment", _SAME_TASK))
+    spans = task_spans(instruction, parse.tasks)  # per mention: not the task of an earlier "a remote"
     for m in _SAME_FOR.finditer(instruction):
         x = next((x for x in mentions if x.char_start == m.end()), None)
         types = set(x.entry.types) if x is not None else set()
-        if x is not None and not any(set(t.object) & types and _own(t, parse) for t in parse.tasks):
+        said = [t for t in parse.tasks if (sp := spans[t.id]) is None or sp[1] > m.start()]
+        # its own task: no other task's thing ("the cup" read as the mug before), or by its own name (the
+        # other remote, after "a remote")
+        if x is not None and not any(
+            set(t.object) & types and (_own(t, parse) or x.entry.canonical in t.object) for t in said
+        ):
             out.append(Unread(x.surface, "object", _SAME_THING))
     return out
 

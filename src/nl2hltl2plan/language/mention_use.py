@@ -1,0 +1,86 @@
+"""Check 1 per mention (issue 23): a thing named twice needs a task for each naming, not one per type.
+
+`accounting._nouns` matches the names of an instruction to the slots of its base tasks by type: two
+mentions of one type ("the pencil by the lamp ... put a pencil in the cup") fill one slot together, so a
+reading that drops one of them passes. Here each mention that names a slot's thing (not where something
+is, not a place a treatment implies) is looked for in the words of the tasks that use its type: a
+mention that lies in the words of a task that does not use it, and in those of no task that does, is
+unread ("look at the box and at the pencil by the lamp": the pencil of the examining task). A mention
+said again for the same thing ("put the mug in the sink, then take the mug to the table") lies in the
+words of the task that uses it each time, and so does a thing with two roles ("put the pencil in the
+bowl, then move the bowl to the shelf"). Where a task's words are not found in the instruction (another
+backend, or words the reader rewrote), its mentions are not judged: nothing is flagged on a guess.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from nl2hltl2plan.language.content_words import Unread, categories
+from nl2hltl2plan.language.grammar.everyday import everyday
+from nl2hltl2plan.language.grounding import Mention
+from nl2hltl2plan.language.parse_usage import ParseUsage
+from nl2hltl2plan.language.task_specs import BaseTaskSpec
+
+Span = tuple[int, int]
+
+
+def task_spans(instruction: str, tasks: Sequence[BaseTaskSpec]) -> dict[str, Span | None]:
+    """Where each task's words are in the instruction (None: not found as written)."""
+    lowered = instruction.lower()
+    out: dict[str, Span | None] = {}
+    for t in tasks:
+        said = (t.text or "").strip(" ,.;").lower()
+        at = lowered.find(said) if said else -1
+        if at < 0 and said:
+            said = everyday(said).strip(" ,.;").lower()
+            at = lowered.find(said) if said else -1
+        out[t.id] = (at, at + len(said)) if at >= 0 else None
+    return out
+
+
+def unused_mentions(
+    instruction: str, phrases: Sequence[Sequence[Mention]], parse: ParseUsage
+) -> list[Unread]:
+    """The mentions (`phrases`: the names that need a slot, each a list of mentions naming one thing)
+    that lie in the words of a task that does not use their type and in those of no task that does."""
+    spans = task_spans(instruction, parse.tasks)
+    uses: dict[str, set[str]] = {}
+    for task_id, _, slot_types in parse.slots():
+        uses.setdefault(task_id, set()).update(slot_types)
+    out = []
+    for phrase in phrases:
+        types = {t for m in phrase for t in (*m.entry.types, m.entry.canonical)}
+        at = phrase[0].char_start
+        if any(s <= at < e for s, e, _ in parse.spans):
+            continue  # a negation's thing: judged with its constraint
+        users = [t for t in parse.tasks if uses.get(t.id, set()) & types]
+        if not users or any(spans[t.id] is None for t in users):
+            continue  # no task uses it (`_nouns` names it), or a user's words are not found: no judgement
+        if any(_within(spans[t.id], at) for t in users):
+            continue
+        holder = next((t for t in parse.tasks if _within(spans[t.id], at)), None)
+        if holder is None or types & ParseUsage([holder], []).implied():
+            continue  # said in no task's words (an order's "the egg first"), or implied by its task's kind
+        surface = " ".join(m.surface for m in phrase)
+        why = f"said in the words of task {holder.id}, which does not use it, and of no task that does"
+        out.append(Unread(surface, "object", why))
+    return out
+
+
+def looked_at(toks: Sequence[tuple[str, int, int]], i: int) -> bool:
+    """Is word `i` the "at" of "look at" (the thing examined, not where something is), said again after
+    "and" ("look at the box under the lamp and at the pencil by the lamp")?"""
+    if toks[i][0] != "at" or i == 0:
+        return False
+    if toks[i - 1][0] == "and":
+        pairs = zip(toks[: i - 1], toks[1:i], strict=True)
+        return any(w == "at" and _LOOK & categories(v) for (v, _, _), (w, _, _) in pairs)
+    return bool(_LOOK & categories(toks[i - 1][0]))
+
+
+_LOOK = frozenset({"verb_examine_in_light"})
+
+
+def _within(span: Span | None, at: int) -> bool:
+    return span is not None and span[0] <= at < span[1]
