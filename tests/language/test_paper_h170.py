@@ -118,9 +118,11 @@ def test_it_after_an_examined_container_is_the_container():
 
 
 @needs_data
-def test_a_container_examined_then_filled_and_moved_is_read_whole():
-    """The pen was read as placed on the desk, the mug dropped: a wrong reading."""
-    text = "Examine the mug by the light of the desk lamp, then put a pen in it and move it to the desk."
+@pytest.mark.parametrize("mug", ["mug", "white mug"])
+def test_a_container_examined_then_filled_and_moved_is_read_whole(mug):
+    """The pen was read as placed on the desk, the mug dropped: a wrong reading (with a word before the mug,
+    "the white mug", until the lead's mend at h170's merge: h170's held-out "glass bowl")."""
+    text = f"Examine the {mug} by the light of the desk lamp, then put a pen in it and move it to the desk."
     tasks, before = _read(text, "FloorPlan301")
     assert tasks == [
         ("examine_in_light", "Mug", None, "DeskLamp"),

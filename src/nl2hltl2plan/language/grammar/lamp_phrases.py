@@ -39,8 +39,9 @@ _PURPOSE = re.compile(
 # so the clause is read as a sentence of its own ("... lamp. Then put a pen in the mug"), unless an order
 # said later in the sentence ("in this order") covers both
 _AGAIN_AFTER_LAMP = re.compile(
-    rf"(?P<lamp>\b{_EXAMINE}\s+(?:the|a|an)\s+(?P<noun>[a-z]+)\s+(?:by|under|in|with)\s+[^,.;!?]*?\b(?:lamp|light))"
-    r",\s+then\s+(?=[^,.;!?]*\b(?:in|into|inside)\s+(?:the|a|an)\s+(?P=noun)\b)(?![^.;!?]*\bin\s+(?:this|that)\s+)",
+    rf"(?P<lamp>\b{_EXAMINE}\s+(?:the|a|an)\s+(?:[a-z]+\s+)?(?P<noun>[a-z]+)\s+(?:by|under|in|with)\s+"
+    r"[^,.;!?]*?\b(?:lamp|light)),\s+then\s+"
+    r"(?=[^,.;!?]*\b(?:in|into|inside)\s+(?:the|a|an)\s+(?:[a-z]+\s+)?(?P=noun)\b)(?![^.;!?]*\bin\s+(?:this|that)\s+)",
     re.I,
 )
 
