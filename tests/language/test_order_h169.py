@@ -119,3 +119,17 @@ def test_freed_pair_said_first_then_the_next_task(freed):
     tasks, order, unread = read(text)
     assert sorted(tasks) == sorted([MUG, APPLE, EGG]) and not unread
     assert order == {(MUG, EGG), (APPLE, EGG)}
+
+
+@pytest.mark.parametrize(
+    "closing", ["Put the egg in the microwave first.", "Before anything else, put the egg in the microwave."]
+)
+def test_a_closing_first_after_ordered_tasks_is_named(closing):
+    """The lead (session 27): "A. Then B. <D first>" left D unordered at exit 0, the "first" dropped, where
+    other tasks were ordered; it is named now. "A. First B, then C" (a "first" that opens a sequence) stays
+    as it was."""
+    _, order, unread = read(f"{SEQ}. {closing}")
+    assert any("'first' after tasks said before it" in u for u in unread) and order == {(MUG, APPLE)}
+    opens = "Put the apple in the fridge. First put the mug in the sink, then the egg in the microwave."
+    _, order, unread = read(opens)
+    assert order == {(MUG, EGG)} and not unread

@@ -58,7 +58,33 @@ def relate(
         _step_edges(k, tasks, steps, free, edges)
     _first_edges(tasks.units, steps, free, edges)
     _sentence_edges(relations, tasks, b, edges)
+    _first_after_others(tasks, free, edges, b)
     return _order(edges, tasks)
+
+
+def _first_after_others(tasks: Tasks, free: set[int], edges: Edges, b: TaskBuilder) -> None:
+    """ "A. Then B, and C. Put D first." / "... Before anything else, D.": a closing "first" (no task said
+    after it) that leaves D unordered with a task of an earlier sentence (not freed) is unread by name, where
+    other tasks are ordered: `_first_edges` orders a "first" before the tasks after it only, and the word was
+    dropped (a wrong reading at exit 0). With no order at all, check 1 names the word (`unordered_steps`)."""
+    units = tasks.units
+    if not edges:
+        return
+    closure = nx.transitive_closure(nx.DiGraph(list(edges)))
+    for k, u in enumerate(units):
+        if not u.tasks or not any(kind == G.FIRST for kind, _ in u.markers):
+            continue
+        opens = any(v.tasks for v in units[k + 1 :])  # "A. First B, then C": `_first_edges`' own
+        if opens or any(v.tasks and v.sentence == u.sentence for v in units[:k]):
+            continue
+        earlier = [t for v in units[:k] if v.sentence != u.sentence for t in v.tasks if t not in free]
+        loose = [
+            t for t in earlier for a in u.tasks if not (closure.has_edge(a, t) or closure.has_edge(t, a))
+        ]
+        if loose and not set(u.tasks) & free:
+            own = tasks.specs[u.tasks[0]].text
+            why = f"'first' after tasks said before it: before them too? {ORDER_LEFT_OPEN}"
+            b.unparsed.append(f"{own!r} ({why})")
 
 
 # an order adverb that ends a task's own words: no marker read it
