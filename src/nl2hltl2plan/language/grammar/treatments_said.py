@@ -33,7 +33,7 @@ def _forms(table: dict[str, tuple[str, str]]) -> str:
 
 
 def _base(word: str) -> str | None:
-    """The treatment verb a noun, gerund or participle of it stands for ("washing", "chilled": wash, chill)."""
+    """The treatment verb a noun, gerund or participle stands for ("washing", "chilled": wash, chill)."""
     found = VERBS.get(word.lower()) or VERB_PAST.get(word.lower())
     return found[1] if found and found[0] in _TREATMENTS else None
 
@@ -67,6 +67,7 @@ _FIRST_THEN = re.compile(
     r"\s*(?P<end>[.!]?\s*)$",
     re.I,
 )
+_DETERMINER = re.compile(r"\s*(?:(?:the|that|this|my|your|a|an)\s+)?", re.I)
 _PLACE_BEFORE = re.compile(r"\b(?:in|into|on|onto|inside|on\s+top\s+of)\s+(?:the|a|an)\s+$", re.I)
 
 
@@ -95,7 +96,7 @@ def _names_thing(phrase: str) -> bool:
     found = find_mentions(phrase)
     if len(found) != 1 or phrase[found[0].char_end :].strip():
         return False
-    return re.fullmatch(r"\s*(?:(?:the|that|this|my|your|a|an)\s+)?", phrase[: found[0].char_start], re.I) is not None
+    return _DETERMINER.fullmatch(phrase[: found[0].char_start]) is not None
 
 
 def _named_first(text: str, m: re.Match[str]) -> str:
@@ -108,7 +109,7 @@ def _named_first(text: str, m: re.Match[str]) -> str:
 
 
 def _first_then(text: str, m: re.Match[str]) -> str:
-    """ ", the mug first, then the bowl" closing a request of two placements -> ", the mug before the bowl"."""
+    """ ", the mug first, then the bowl" closing a request of two placements: ", the mug before the bowl"."""
     x, y = (re.sub(r"^(?!the\s)", "the ", w, flags=re.I) for w in (m["x"] or m["x2"], m["y"]))
     said = text[: m.start()]
     if not (_names_thing(x) and _names_thing(y)):
