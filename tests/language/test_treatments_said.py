@@ -28,6 +28,8 @@ from nl2hltl2plan.language.translate import translate
         ("have the bread cut up and put a slice in the fridge",
          "cut the bread and put a slice in the fridge"),
         ("get the potato sliced", "slice the potato"),
+        ("have the robot slice the bread", "slice the bread"),
+        ("get someone to wash the plate", "wash the plate"),
         ("id like the bread on the counter", "I'd like the bread on the counter"),
         ("the apple in the fridge and the bread on the counter, the bread first pls",
          "the apple in the fridge and the bread on the counter, the bread first"),
@@ -52,6 +54,7 @@ def test_needs_causatives_and_terse_orders_are_rewritten(text, rewritten):
         "the plate needs a spot on the shelf",  # not a treatment
         "have the knife and the bread",  # no participle: a possession
         "get the washed mug",
+        "have the robot the mug",  # no verb after the robot
         "the idea needs a wash",  # no name the lexicon knows
         # three placements: "then the apple" also orders the apple before the bread
         "put the apple in the fridge, the bread on the counter and the egg in the microwave, the egg first, "

@@ -6,7 +6,9 @@ slice), so a sentence about anything else, or a negated one, is left as it is:
 - a treatment said as a need: "the plate needs a (good) wash", "needs washing (up)", "needs to be (or
   get) chilled" is "wash / chill the plate"; "the plate doesn't need a wash" has no subject right before
   the need, and is left (the grammar refuses it as a negation);
-- a causative: "have the bread cut up", "get the potato sliced" is "cut the bread", "slice the potato";
+- a causative: "have the bread cut up", "get the potato sliced" is "cut the bread", "slice the potato",
+  and "have the robot slice the bread", "get someone to wash the plate" is "slice the bread", "wash the
+  plate" (the grammar's verbs only);
 - "id like" as texted is "I'd like" (which the grammar reads as a request);
 - a terse order: a bare "mug first" about a thing named before is "the mug first", a courtesy word after
   it ("the pan first pls") is dropped, and "the mug first, then the bowl" (or "first the mug, then
@@ -58,6 +60,13 @@ def _patterns() -> tuple[re.Pattern[str], re.Pattern[str]]:
     return need, causative
 
 
+_AGENT = re.compile(
+    rf"{_LEAD}(?:have|get|let)\s+(?:(?:the|a|one)\s+robots?|one\s+of\s+(?:the\s+)?robots|someone|somebody)"
+    r"\s+(?:to\s+)?(?P<verb>[a-z]+)\b",
+    re.I,
+)
+
+
 _TEXTED_ID = re.compile(r"\bid\s+(?=(?:like|love|prefer|want)\b)", re.I)  # "id like" as texted: "I'd like"
 _COURTESY_AFTER_FIRST = re.compile(r"\bfirst\s*,?\s*(?:please|pls|plz)\s*(?=[.!]?\s*$)", re.I)
 _BARE_FIRST = re.compile(r"(?P<lead>(?:^|[,.;:]|\bthen)\s*)(?P<name>[a-z]+(?:\s+[a-z]+)?)\s+first\b", re.I)
@@ -75,6 +84,7 @@ def treatments_said(text: str) -> str:
     """The text with the needs, causatives and terse orders above rewritten (see the module docstring)."""
     need, causative = _patterns()
     text = _TEXTED_ID.sub("I'd ", text)
+    text = _AGENT.sub(lambda m: f"{m['lead']}{m['verb']}" if m["verb"].lower() in VERBS else m[0], text)
     text = need.sub(_imperative, text)
     text = causative.sub(_imperative, text)
     text = _COURTESY_AFTER_FIRST.sub("first", text)
