@@ -30,6 +30,7 @@ from nl2hltl2plan.language.translate import translate
         ("get the potato sliced", "slice the potato"),
         ("have the robot slice the bread", "slice the bread"),
         ("get someone to wash the plate", "wash the plate"),
+        ("wash the plate, it should end up in the cabinet", "wash the plate, put it in the cabinet"),
         ("id like the bread on the counter", "I'd like the bread on the counter"),
         ("the apple in the fridge and the bread on the counter, the bread first pls",
          "the apple in the fridge and the bread on the counter, the bread first"),
@@ -56,6 +57,8 @@ def test_needs_causatives_and_terse_orders_are_rewritten(text, rewritten):
         "get the washed mug",
         "have the robot the mug",  # no verb after the robot
         "the idea needs a wash",  # no name the lexicon knows
+        "it should end up in the cabinet",  # "it" stands for nothing said before
+        "wash the plate, it should end up somewhere",  # no place
         # three placements: "then the apple" also orders the apple before the bread
         "put the apple in the fridge, the bread on the counter and the egg in the microwave, the egg first, "
         "then the apple",

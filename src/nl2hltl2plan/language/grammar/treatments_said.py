@@ -9,6 +9,8 @@ slice), so a sentence about anything else, or a negated one, is left as it is:
 - a causative: "have the bread cut up", "get the potato sliced" is "cut the bread", "slice the potato",
   and "have the robot slice the bread", "get someone to wash the plate" is "slice the bread", "wash the
   plate" (the grammar's verbs only);
+- an end state of a pronoun after a clause: "wash the plate, it should end up in the cabinet" is "..., put
+  it in the cabinet" ("it should end up somewhere" names no place, and is left);
 - "id like" as texted is "I'd like" (which the grammar reads as a request);
 - a terse order: a bare "mug first" about a thing named before is "the mug first", a courtesy word after
   it ("the pan first pls") is dropped, and "the mug first, then the bowl" (or "first the mug, then
@@ -67,6 +69,13 @@ _AGENT = re.compile(
 )
 
 
+# "wash the plate, it should end up in the cabinet": a pronoun's end state after a clause is a placement of it
+_PRONOUN_GOAL = re.compile(
+    r"(?P<lead>[,;.]\s*(?:and\s+)?(?:then\s+)?|\s(?:and|then)\s+)(?P<it>it|they)\s+"
+    r"(?:(?:should|must|will|has\s+to|have\s+to|needs?\s+to|is\s+to|are\s+to)\s+(?:end\s+up|go|be\s+put)|"
+    r"ends?\s+up|goes|go)\s+(?P<prep>in|into|on|onto|inside)\s+(?=(?:the|a|an)\s)",
+    re.I,
+)
 _TEXTED_ID = re.compile(r"\bid\s+(?=(?:like|love|prefer|want)\b)", re.I)  # "id like" as texted: "I'd like"
 _COURTESY_AFTER_FIRST = re.compile(r"\bfirst\s*,?\s*(?:please|pls|plz)\s*(?=[.!]?\s*$)", re.I)
 _BARE_FIRST = re.compile(r"(?P<lead>(?:^|[,.;:]|\bthen)\s*)(?P<name>[a-z]+(?:\s+[a-z]+)?)\s+first\b", re.I)
@@ -84,12 +93,20 @@ def treatments_said(text: str) -> str:
     """The text with the needs, causatives and terse orders above rewritten (see the module docstring)."""
     need, causative = _patterns()
     text = _TEXTED_ID.sub("I'd ", text)
+    text = _PRONOUN_GOAL.sub(_put_pronoun, text)
     text = _AGENT.sub(lambda m: f"{m['lead']}{m['verb']}" if m["verb"].lower() in VERBS else m[0], text)
     text = need.sub(_imperative, text)
     text = causative.sub(_imperative, text)
     text = _COURTESY_AFTER_FIRST.sub("first", text)
     text = _BARE_FIRST.sub(lambda m: _named_first(text, m), text)
     return _FIRST_THEN.sub(lambda m: _first_then(text, m), text)
+
+
+def _put_pronoun(m: re.Match[str]) -> str:
+    """ ", it should end up in the X" -> ", put it in the X" where a name is said before the pronoun."""
+    if not find_mentions(m.string[: m.start()]):
+        return m[0]
+    return f"{m['lead']}put {'them' if m['it'].lower() == 'they' else 'it'} {m['prep']} "
 
 
 def _imperative(m: re.Match[str]) -> str:
