@@ -97,10 +97,13 @@ def kitchen():
         ("put the pan on the stove.. nah, the counter", ["place Pan -> CounterTop"]),
         ("get the potato sliced", ["set_state Potato sliced"]),
         ("the apple needs to be chilled and then put it on the counter", ["cool_place Apple -> CounterTop"]),
+        # main read "the cup first, then the plate" as a third placement (of the cup again)
+        ("put the cup and the plate in the sink. cup first then the plate",
+         ["place Cup -> SinkBasin", "place Plate -> SinkBasin"]),
         ("put the pan on the stove... no, wait", "refused"),  # the correction names nothing
         ("the plate doesn't need a wash", "refused"),
     ],
-)
+)  # fmt: skip
 def test_read_in_a_kitchen(kitchen, text, read):
     assert _read(text, kitchen) == read
 
