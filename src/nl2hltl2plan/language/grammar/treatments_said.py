@@ -12,8 +12,10 @@ slice), so a sentence about anything else, or a negated one, is left as it is:
 - an end state of a pronoun after a clause: "wash the plate, it should end up in the cabinet" is "..., put
   it in the cabinet" ("it should end up somewhere" names no place, and is left);
 - "id like" as texted is "I'd like" (which the grammar reads as a request);
-- a terse order: a bare "mug first" about a thing named before is "the mug first", a courtesy word after
-  it ("the pan first pls") is dropped, and "the mug first, then the bowl" (or "first the mug, then
+- a terse order: a bare "mug first" about a thing moved in a request said before ("the mug", "mug in
+  the sink"; not a place, "on the yellow plate", nor a label, "Target: yellow plate.", which the grammar
+  and the tabletop reader read themselves) is "the mug first", a courtesy word after it ("the pan first
+  pls") is dropped, and "the mug first, then the bowl" (or "first the mug, then
   the bowl", after a comma or as the next sentence) closing a request of two placements (every other
   name in it follows a place preposition: "put the mug and the bowl in the sink") is ", the mug before
   the bowl". With more placements "then the bowl" also orders the bowl before the rest, which no rewrite
@@ -86,6 +88,9 @@ _FIRST_THEN = re.compile(
     re.I,
 )
 _DETERMINER = re.compile(r"\s*(?:(?:the|that|this|my|your|a|an)\s+)?", re.I)
+# a thing said in a request ("the mug", "watch on the table"), not a bare label ("Target: yellow plate.")
+_DET_BEFORE = re.compile(r"\b(?:the|a|an|my|your|this|that)\s+$", re.I)
+_PREP_AFTER = re.compile(r"\s+(?:in|into|on|onto|inside)\s", re.I)
 _PLACE_BEFORE = re.compile(r"\b(?:in|into|on|onto|inside|on\s+top\s+of)\s+(?:the|a|an)\s+$", re.I)
 
 
@@ -131,7 +136,13 @@ def _named_first(text: str, m: re.Match[str]) -> str:
     name = m["name"]
     if re.match(r"(?:the|a|an|and|then|that|this|it|them)\b", name, re.I) or not _names_thing(name):
         return m[0]
-    earlier = {x.surface.lower() for x in find_mentions(text[: m.start()])}
+    said = text[: m.start()]
+    earlier = {
+        x.surface.lower()
+        for x in find_mentions(said)
+        if not _PLACE_BEFORE.search(said[: x.char_start])
+        and (_DET_BEFORE.search(said[: x.char_start]) or _PREP_AFTER.match(said[x.char_end :]))
+    }
     return f"{m['lead']}the {name} first" if name.lower() in earlier else m[0]
 
 
