@@ -19,8 +19,9 @@ correction replaces what it corrects, and what is unclear is refused by name.
 - a marker with no place or name after it ("put the mug in the sink, no wait") is refused by name.
 
 The markers: "no wait", "wait, no", "I mean", "I meant", "or rather", "sorry", "oops", "whoops", "make
-that", "correction", and "no" / "nope" / "actually" / "scratch that part" after a comma, a dash or an
-ellipsis (an "Actually, ..." opening a sentence adds, and is left).
+that", "correction", and "no" / "nope" / "nah" / "actually" / "scratch that part" after a comma, a dash or an
+ellipsis (an "Actually, ..." opening a sentence adds, and is left), and there "wait" before a comma ("put
+the apple in the fridge... wait, the microwave"; "wait until ..." is no marker).
 """
 
 from __future__ import annotations
@@ -43,10 +44,10 @@ _WORDS = (
 )
 # markers said only after a pause ("hang it... no, put it on the shelf"): each may also open a clause that
 # replaces the verb phrase before it (`_clause_replaced`)
-_AFTER_PAUSE = r"(?:no|nope|actually|scratch\s+that\s+part)"
+_AFTER_PAUSE = r"(?:no|nope|nah|actually|wait(?=\s*,)|scratch\s+that\s+part)"
 # ("actually" opens a clause that adds as often as one that replaces: "..., actually put the mug in the sink
 # too"; its clause stays the grammar's, which names a correction it does not follow)
-_CLAUSE_MARKERS = frozenset({"no", "nope", "scratch that part"})
+_CLAUSE_MARKERS = frozenset({"no", "nope", "nah", "scratch that part"})
 # words that add to or order against what was said before: a clause with one replaces nothing for certain
 _ADDS = re.compile(r"\b(?:too|also|as\s+well|first|again|another|additionally|either|instead\s+of)\b", re.I)
 _MARKER = re.compile(
@@ -165,7 +166,7 @@ def _corrected(text: str, roles: Roles, read: list[str], swaps: list[tuple[str, 
                 said = said[len(name) :].strip()  # drawer": the same thing, so the place is what it corrects
             else:
                 cut, said = cut - len(said) + len(name), name  # "the egg, no wait, the apple in the fridge"
-        if not said and marker.lower() in ("no", "nope", "actually"):
+        if not said and marker.lower() in ("no", "nope", "nah", "actually"):
             start = m.end()  # "..., actually." closing a clause corrects nothing
             continue
         fixed = _replaced(text[: m.start()], said, marker, roles)

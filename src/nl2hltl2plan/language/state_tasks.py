@@ -44,6 +44,13 @@ _RULES: tuple[tuple[str, str, str], ...] = (
     (r"^(?:turn|switch|power)\s+(?P<obj>.+?)\s+(on|off|out)$", "set_state", ""),
     (r"^(?:break|smash|shatter)\s+(?P<obj>.+)$", "set_state", "broken"),
     (r"^(?:slice|cut|chop)\s+(?:up\s+)?(?P<obj>.+)$", "set_state", "sliced"),
+    # "get the potato sliced", "the bread needs cutting up" (h173; the grammar reads them via treatments_said)
+    (r"^(?:get|have)\s+(?P<obj>.+?)\s+(?:sliced|cut|chopped)(?:\s+up)?$", "set_state", "sliced"),
+    (
+        r"^(?P<obj>.+?)\s+needs?\s+(?:slicing|cutting|chopping|to\s+be\s+(?:sliced|cut|chopped))(?:\s+up)?$",
+        "set_state",
+        "sliced",
+    ),
     (r"^open\s+(?:up\s+)?(?P<obj>.+)$", "set_state", "open"),
     (r"^(?:close|shut)\s+(?P<obj>.+)$", "set_state", "closed"),
     (r"^(?:pick\s+up|grab|take|lift)\s+(?P<obj>.+)$", "set_state", "held"),

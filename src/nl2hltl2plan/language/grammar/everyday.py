@@ -30,6 +30,7 @@ from functools import lru_cache
 from nl2hltl2plan.language.content_words import free_order_phrase
 from nl2hltl2plan.language.grammar.repeats import repeated_for_another
 from nl2hltl2plan.language.grammar.restated import count_fits, restated
+from nl2hltl2plan.language.grammar.treatments_said import treatments_said
 from nl2hltl2plan.language.grounding import find_mentions, phrase_lines
 from nl2hltl2plan.language.spelling import respelt
 from nl2hltl2plan.language.statements import RELATIVE_PLACE
@@ -181,7 +182,8 @@ def everyday(text: str) -> str:
         text = _CLOSING_FREE_ORDER.sub(", in any order", text)
     elif (last := _LAST_SENTENCE_FREE.search(text)) and not _ORDER_WORD.search(text[: last.start()]):
         text = text[: last.start()] + "."  # "A. B. C. Any order.": no sentence orders another
-    return restated(re.sub(r"\s+", " ", text).strip())  # places and end states restated (restated.py)
+    text = treatments_said(re.sub(r"\s+", " ", text).strip())  # needs, causatives, terse orders
+    return restated(text)  # places and end states restated (restated.py)
 
 
 # "put the apple in the fridge and the tomato too", "..., also the ladle", "the pencil as well": a second

@@ -1,0 +1,163 @@
+"""Everyday ways of asking for a treatment or an order (issue 28, users_h173dev.txt), rewritten onto the
+imperative the grammar reads. Each rule rewrites only where the thing is a name the scene's lexicon knows
+(`find_mentions`) and the verb is one of the grammar's treatment verbs (`word_tables`: clean, heat, cool,
+slice), so a sentence about anything else, or a negated one, is left as it is:
+
+- a treatment said as a need: "the plate needs a (good) wash", "needs washing (up)", "needs to be (or
+  get) chilled" is "wash / chill the plate"; "the plate doesn't need a wash" has no subject right before
+  the need, and is left (the grammar refuses it as a negation);
+- a causative: "have the bread cut up", "get the potato sliced" is "cut the bread", "slice the potato",
+  and "have the robot slice the bread", "get someone to wash the plate" is "slice the bread", "wash the
+  plate" (the grammar's verbs only);
+- an end state of a pronoun after a clause: "wash the plate, it should end up in the cabinet" is "..., put
+  it in the cabinet" ("it should end up somewhere" names no place, and is left);
+- "id like" as texted is "I'd like" (which the grammar reads as a request);
+- a terse order: a bare "mug first" about a thing moved in a request said before ("the mug", "mug in
+  the sink"; not a place, "on the yellow plate", nor a label, "Target: yellow plate.", which the grammar
+  and the tabletop reader read themselves) is "the mug first", a courtesy word after it ("the pan first
+  pls") is dropped, and "the mug first, then the bowl" (or "first the mug, then
+  the bowl", after a comma or as the next sentence) closing a request of two placements (every other
+  name in it follows a place preposition: "put the mug and the bowl in the sink") is ", the mug before
+  the bowl". With more placements "then the bowl" also orders the bowl before the rest, which no rewrite
+  here says, so it is left to the grammar (which refuses it).
+"""
+
+from __future__ import annotations
+
+import re
+from functools import lru_cache
+
+from nl2hltl2plan.language.grammar.word_tables import VERB_PAST, VERBS
+from nl2hltl2plan.language.grounding import find_mentions
+
+_TREATMENTS = frozenset({"clean", "heat", "cool", "slice"})
+
+
+def _forms(table: dict[str, tuple[str, str]]) -> str:
+    words = sorted((w for w, (cls, _) in table.items() if cls in _TREATMENTS), key=len, reverse=True)
+    return "|".join(re.escape(w) for w in words)
+
+
+def _base(word: str) -> str | None:
+    """The treatment verb a noun, gerund or participle stands for ("washing", "chilled": wash, chill)."""
+    found = VERBS.get(word.lower()) or VERB_PAST.get(word.lower())
+    return found[1] if found and found[0] in _TREATMENTS else None
+
+
+_LEAD = r"(?P<lead>^|(?<=[,.;:!?])\s*|\b(?:and|then|please|pls|so)\s+)"
+_THING = r"(?P<thing>(?:the|that|this|my|your|a|an)\s+[a-z]+(?:\s+[a-z]+){0,2}?)"
+_PARTICLE = r"(?:\s+(?:up|down|off|out))?"
+
+
+@lru_cache(maxsize=1)
+def _patterns() -> tuple[re.Pattern[str], re.Pattern[str]]:
+    verbs, past = _forms(VERBS), _forms(VERB_PAST)
+    need = re.compile(
+        rf"{_LEAD}{_THING}\s+(?:needs?|wants?|could\s+(?:use|do\s+with))\s+"
+        rf"(?:(?:a|an)\s+(?:(?:good|quick|proper|little|bit\s+of\s+a)\s+)?(?P<noun>{verbs})"
+        rf"|to\s+(?:be|get)\s+(?P<part>{past})|(?P<ger>{verbs})){_PARTICLE}(?![\w'])",
+        re.I,
+    )
+    causative = re.compile(
+        rf"{_LEAD}(?:have|get)\s+{_THING}\s+(?P<part>{past}){_PARTICLE}(?![\w'])", re.I
+    )
+    return need, causative
+
+
+_AGENT = re.compile(
+    rf"{_LEAD}(?:have|get|let)\s+(?:(?:the|a|one)\s+robots?|one\s+of\s+(?:the\s+)?robots|someone|somebody)"
+    r"\s+(?:to\s+)?(?P<verb>[a-z]+)\b",
+    re.I,
+)
+
+
+# "wash the plate, it should end up in the cabinet": a pronoun's end state after a clause is a placement of it
+_PRONOUN_GOAL = re.compile(
+    r"(?P<lead>[,;.]\s*(?:and\s+)?(?:then\s+)?|\s(?:and|then)\s+)(?P<it>it|they)\s+"
+    r"(?:(?:should|must|will|has\s+to|have\s+to|needs?\s+to|is\s+to|are\s+to)\s+(?:end\s+up|go|be\s+put)|"
+    r"ends?\s+up|goes|go)\s+(?P<prep>in|into|on|onto|inside)\s+(?=(?:the|a|an)\s)",
+    re.I,
+)
+_TEXTED_ID = re.compile(r"\bid\s+(?=(?:like|love|prefer|want)\b)", re.I)  # "id like" as texted: "I'd like"
+_COURTESY_AFTER_FIRST = re.compile(r"\bfirst\s*,?\s*(?:please|pls|plz)\s*(?=[.!]?\s*$)", re.I)
+_BARE_FIRST = re.compile(r"(?P<lead>(?:^|[,.;:]|\bthen)\s*)(?P<name>[a-z]+(?:\s+[a-z]+)?)\s+first\b", re.I)
+_NAME = r"(?:the\s+)?[a-z]+(?:\s+[a-z]+)?"
+_FIRST_THEN = re.compile(
+    rf"[,.;]\s*(?:(?P<x>{_NAME})\s+first|first\s+(?P<x2>{_NAME}))\s*,?\s*(?:and\s+)?then\s+(?P<y>{_NAME})"
+    r"\s*(?P<end>[.!]?\s*)$",
+    re.I,
+)
+_DETERMINER = re.compile(r"\s*(?:(?:the|that|this|my|your|a|an)\s+)?", re.I)
+# a thing said in a request ("the mug", "watch on the table"), not a bare label ("Target: yellow plate.")
+_DET_BEFORE = re.compile(r"\b(?:the|a|an|my|your|this|that)\s+$", re.I)
+_PREP_AFTER = re.compile(r"\s+(?:in|into|on|onto|inside)\s", re.I)
+_PLACE_BEFORE = re.compile(r"\b(?:in|into|on|onto|inside|on\s+top\s+of)\s+(?:the|a|an)\s+$", re.I)
+
+
+def treatments_said(text: str) -> str:
+    """The text with the needs, causatives and terse orders above rewritten (see the module docstring)."""
+    need, causative = _patterns()
+    text = _TEXTED_ID.sub("I'd ", text)
+    text = _PRONOUN_GOAL.sub(_put_pronoun, text)
+    text = _AGENT.sub(lambda m: f"{m['lead']}{m['verb']}" if m["verb"].lower() in VERBS else m[0], text)
+    text = need.sub(_imperative, text)
+    text = causative.sub(_imperative, text)
+    text = _COURTESY_AFTER_FIRST.sub("first", text)
+    text = _BARE_FIRST.sub(lambda m: _named_first(text, m), text)
+    return _FIRST_THEN.sub(lambda m: _first_then(text, m), text)
+
+
+def _put_pronoun(m: re.Match[str]) -> str:
+    """ ", it should end up in the X" -> ", put it in the X" where a name is said before the pronoun."""
+    if not find_mentions(m.string[: m.start()]):
+        return m[0]
+    return f"{m['lead']}put {'them' if m['it'].lower() == 'they' else 'it'} {m['prep']} "
+
+
+def _imperative(m: re.Match[str]) -> str:
+    forms = m.groupdict()
+    verb = _base(forms.get("noun") or forms.get("part") or forms.get("ger") or "")
+    if verb is None or not _names_thing(m["thing"]):
+        return m[0]
+    thing = re.sub(r"^(?:that|this|my|your)\b", "the", m["thing"], flags=re.I)
+    return f"{m['lead']}{verb} {thing}"
+
+
+def _names_thing(phrase: str) -> bool:
+    """Is the phrase a determiner and one name the lexicon knows, and nothing else?"""
+    found = find_mentions(phrase)
+    if len(found) != 1 or phrase[found[0].char_end :].strip():
+        return False
+    return _DETERMINER.fullmatch(phrase[: found[0].char_start]) is not None
+
+
+def _named_first(text: str, m: re.Match[str]) -> str:
+    """ "mug first" -> "the mug first", where the mug is named earlier in the text."""
+    name = m["name"]
+    if re.match(r"(?:the|a|an|and|then|that|this|it|them)\b", name, re.I) or not _names_thing(name):
+        return m[0]
+    said = text[: m.start()]
+    earlier = {
+        x.surface.lower()
+        for x in find_mentions(said)
+        if not _PLACE_BEFORE.search(said[: x.char_start])
+        and (_DET_BEFORE.search(said[: x.char_start]) or _PREP_AFTER.match(said[x.char_end :]))
+    }
+    return f"{m['lead']}the {name} first" if name.lower() in earlier else m[0]
+
+
+def _first_then(text: str, m: re.Match[str]) -> str:
+    """ ", the mug first, then the bowl" closing a request of two placements: ", the mug before the bowl"."""
+    x, y = (re.sub(r"^(?!the\s)", "the ", w, flags=re.I) for w in (m["x"] or m["x2"], m["y"]))
+    said = text[: m.start()]
+    if not (_names_thing(x) and _names_thing(y)):
+        return m[0]
+    named = find_mentions(said)
+    surfaces = [n.surface.lower() for n in named]
+    x_name, y_name = find_mentions(x)[0].surface.lower(), find_mentions(y)[0].surface.lower()
+    if x_name == y_name or surfaces.count(x_name) != 1 or surfaces.count(y_name) != 1:
+        return m[0]
+    others = [n for n in named if n.surface.lower() not in (x_name, y_name)]
+    if not others or not all(_PLACE_BEFORE.search(said[: n.char_start]) for n in others):
+        return m[0]
+    return f", {x} before {y}{m['end']}"
