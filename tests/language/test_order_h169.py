@@ -133,3 +133,14 @@ def test_a_closing_first_after_ordered_tasks_is_named(closing):
     opens = "Put the apple in the fridge. First put the mug in the sink, then the egg in the microwave."
     _, order, unread = read(opens)
     assert order == {(MUG, EGG)} and not unread
+
+
+@pytest.mark.parametrize(
+    "before",
+    ["Before you start on any of this,", "Before you do any of that,", "Before you begin with all of this,"],
+)
+def test_before_you_start_on_any_of_this_comes_before_everything(before):
+    """The lead (session 27, h170's held-out line): "A. Then B. Before you start on any of this, D" put D
+    between A and B at exit 0 (the writer's doing was read as a reference to the sentence before)."""
+    _, order, unread = read(f"{SEQ}. {before} put the egg in the microwave.")
+    assert order == {(MUG, APPLE), (EGG, MUG), (EGG, APPLE)} and not unread

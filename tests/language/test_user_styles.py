@@ -223,10 +223,6 @@ KNOWN_WRONG: set[str] = {
     "Put a pencil on the shelf. After that, carry the alarm clock to the desk and switch on the lamp.",
     "Put a remote in a box and set the box on the armchair, and move two sets of keys to the sofa. Then grab "
     "the watch on the table, turn on the floor lamp, and do the same with the remote control.",
-    # h170's held-out half, read wrong on main too: "before you start on any of this" (order)
-    "Take the apple from the table, cool it in the fridge and put it in the microwave. Then slice the bread, "
-    "cook a slice and keep it in the fridge, and put a washed slice of lettuce on the counter by the sink. "
-    "Before you start on any of this, put a cold plate in the sink.",
     # h169's held-out half, read wrong on main too (the reference picks the heated cup):
     "Chill a glass in the fridge and put it in the sink. Before that, put a heated cup on the counter, and "
     "after you've chilled the glass, put a cup with a spoon in it on the counter and a cold slice of potato "

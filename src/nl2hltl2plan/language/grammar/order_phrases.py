@@ -145,6 +145,14 @@ _LAST_ITEM = re.compile(
 # "Before doing anything else, X" / "X before doing anything else": "before anything else", which the
 # tables read (the gerund was taken for a reference naming no task)
 _BEFORE_DOING_ANYTHING = re.compile(r"\b(before)\s+doing\s+(?=anything\s+else\b)", re.I)
+_BEFORE_YOU_START = re.compile(r"\b(before)\s+you\s+(?:start|begin|get\s+started)(?=\s*,)", re.I)
+# "Before you start on any of this, D" / "before you do any of that": "before any of this", which the tables
+# read (the writer's own doing was taken for a reference to the sentence before only: D went in its middle)
+_BEFORE_YOU_START_ANY = re.compile(
+    r"(?:^|(?<=[.;!?]\s))(before)\s+you\s+(?:start|begin|get\s+started)?\s*(?:on|with|doing|do|tackle)?\s*"
+    r"(?=(?:any|all)\s+of\s+(?:this|that|these|those|it)\s*,)",
+    re.I,
+)
 
 
 # "Put D on E at the very end." / "... last of all" / "... as the final step" / "... when you're all done": a
@@ -174,11 +182,14 @@ def after_the_step(text: str) -> str:
     before it; "..., and after those two C" is `everyday`'s reference to every task before); "A, after which
     B" -> "A, then B"; "and at the very end C" -> "and finally C"; "and only after that B" -> "and after that
     B"; "After that, though, B" -> "After that, B"; "A, then B, and the C on D last" -> "..., and finally
-    the C on D"; "before doing anything else" -> "before anything else"; "..., D at the very end." -> "..., D
+    the C on D"; "before doing anything else" / "before you start," -> "before anything else";
+    "before you start on any of this" -> "before any of this"; "..., D at the very end." -> "..., D
     last."; "when you have done both" -> "when both are done"."""
     text = _YOU_DID_BOTH.sub(lambda m: f"{m['lead']} {m['what']} are done", _CLOSING_LAST.sub(" last", text))
     text = _INTERJECTED.sub(r"\g<lead>, ", _FOCUS_CONNECTIVE.sub(r"\g<join>", text))
-    text = _LAST_ITEM.sub(r"\g<join>finally \g<item>", _BEFORE_DOING_ANYTHING.sub(r"\1 ", text))
+    text = _BEFORE_YOU_START_ANY.sub(r"\1 ", _BEFORE_DOING_ANYTHING.sub(r"\1 ", text))
+    text = _BEFORE_YOU_START.sub(r"\1 anything else", text)
+    text = _LAST_ITEM.sub(r"\g<join>finally \g<item>", text)
     text = _AFTER_WHICH.sub(", then ", _FREED_THEN.sub(r"\1. Once all that is done, ", text))
     return _AT_THE_END.sub("finally", text)
 
