@@ -65,6 +65,10 @@ def test_the_same_with_the_other_thing_needs_a_task_of_its_own():
 def test_a_name_part_before_another_name_is_unread():
     assert [u.words for u in unknown_modifiers("put the tennis book on the bed")] == ["tennis"]
     assert unknown_modifiers("put the tennis racket on the bed") == []
+    # the lead, at h172's merge: "racquet" is a name of the tennis racket too (6 of 2,083 held-out generator
+    # rows were refused), and "tennis" opens a name of that same thing
+    assert unknown_modifiers("turn the lamp on while carrying a tennis racquet") == []
+    assert [u.words for u in unknown_modifiers("put the tennis phone on the bed")] == ["tennis"]
     assert unknown_modifiers("put the standing lamp's bulb on the bed") == []  # also a verb's form
 
 

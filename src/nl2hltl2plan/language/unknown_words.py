@@ -222,6 +222,8 @@ def unknown_modifiers(instruction: str, toks: Tokens | None = None) -> list[Unre
             near = _unknown_modifier(word) if word not in {u.words for u in out} else None
             if near == [] and maker_name(instruction, toks, m.start - 1 - k, m.start):
                 continue  # "the Samsung phone": a make, as "my" says whose
+            if near == [] and _first_word_of_its_name(word, m):
+                continue  # "a tennis racquet": "tennis" opens a name of the same thing ("tennis racket")
             if near is not None:
                 said = f"; may misspell {' or '.join(map(repr, near))}" if near else ""
                 out.append(Unread(word, "object", MODIFIER_REASON + said))
@@ -274,6 +276,14 @@ def _unknown_modifier(word: str) -> list[str] | None:
     if adjective(word) and not any(s in one_edit(word) for s in near):
         return None  # "the tiny mug" describes the mug; "the heather apple" names a plant, or 'heated'
     return near if english_word(word) and not _slip_of_descriptive(word) else None
+
+
+def _first_word_of_its_name(word: str, m: Mention) -> bool:
+    """Whether `word` opens a name of many words (the lexicon's) of a type the name after it names too."""
+    return any(
+        key[0] == word and len(key) > 1 and set(entry.types) & set(m.entry.types)
+        for key, (entry, _) in lexicon().items()
+    )
 
 
 @cache
