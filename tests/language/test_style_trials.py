@@ -78,7 +78,10 @@ def test_every_paper_line_names_one_matching_trial_per_task() -> None:
                 without.append(row["instruction"])
                 continue
             assert len(set(trials)) == len(row["tasks"]), line
-            for task in row["tasks"]:
+            # a trial of ALFRED's test splits has no task type or parameters to match (h169 wrote two floor
+            # plans' lines from their annotations alone); its floor plan is still checked (`check_trials`)
+            typed = [t for t in trials if records[t].task_type is not None]
+            for task in row["tasks"] if len(typed) == len(trials) else []:
                 assert any(style_trials.matches(records[t], task) for t in trials), (line, task)
     assert without == ["Put a candle on the shelf."]
 
