@@ -10,7 +10,7 @@ import pytest
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.grammar.everyday import everyday_names
-from nl2hltl2plan.language.household_words import descriptive_names
+from nl2hltl2plan.language.household_words import descriptive_name_notes, descriptive_names
 
 BATHROOM_CART = {"Cart", "HandTowelHolder", "Toilet", "SoapBar"}  # FloorPlan430's world: no Shelf built
 KITCHEN_STAND = {"SideTable", "Microwave"}  # FloorPlan3's: "the microwave stand" is its SideTable
@@ -59,3 +59,12 @@ def test_a_stand_of_two_kinds_is_refused_by_name() -> None:
 )
 def test_everyday_names_of_sofas_shelves_and_statues(text: str, read: str) -> None:
     assert everyday_names(text) == read
+
+
+def test_a_name_read_as_another_type_is_said_in_the_assumptions() -> None:
+    """The lead (session 27): "kettle" was read as the watering can and nothing said so; every descriptive
+    name that writes another word is a note ("read 'x' as 'y'"), which `translate` adds to `assumptions`."""
+    said = descriptive_name_notes("put the kettle on the sofa", LIVING_ROOM)
+    assert said == ["read 'kettle' as 'watering can'"]
+    assert descriptive_name_notes("put the kettle on the stove", {"Kettle", "WateringCan"}) == []
+    assert descriptive_name_notes("put the vase in the cabinet", {"Vase"}) == []

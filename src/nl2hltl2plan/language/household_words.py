@@ -51,6 +51,22 @@ def _names() -> tuple[_Name, ...]:
 def descriptive_names(text: str, types: set[str]) -> str:
     """`text` with each descriptive name written as the name of the type it is in a floor plan of `types`
     (see the module docstring); raises HTTError naming the types where the name could be several."""
+    return _renamed(text, types)[0]
+
+
+def descriptive_name_notes(text: str, types: set[str]) -> list[str]:
+    """What `descriptive_names` changed, said as a result's assumptions: no word is read as another thing
+    silently ("read 'kettle' as 'watering can'": a living room's kettle-shaped watering can).
+
+    >>> descriptive_name_notes("put the apple on the island", {"DiningTable", "CounterTop"})
+    ["read 'island' as 'dining table'"]
+    """
+    return [f"read {said!r} as {name!r}" for said, name in _renamed(text, types)[1]]
+
+
+def _renamed(text: str, types: set[str]) -> tuple[str, list[tuple[str, str]]]:
+    """`descriptive_names`, and each (name said, type name written) that changed a word."""
+    changed: list[tuple[str, str]] = []
     for name in _names():
         for m in reversed(list(name.pattern.finditer(text))):
             if _inside_longer_name(text, m):
@@ -60,8 +76,11 @@ def descriptive_names(text: str, types: set[str]) -> str:
                 continue  # left as it is: the grammar and check 1 read or refuse it
             if name.either and len(present) > 1:
                 raise HTTError(f"{m['name']!r} could be the {' or the '.join(present)} here; say which")
-            text = text[: m.start("name")] + camel_words(present[0]) + text[m.end("name") :]
-    return text
+            written = camel_words(present[0])
+            if written != m["name"].lower():
+                changed.insert(0, (m["name"], written))
+            text = text[: m.start("name")] + written + text[m.end("name") :]
+    return text, changed
 
 
 def _inside_longer_name(text: str, m: re.Match[str]) -> bool:

@@ -251,6 +251,9 @@ class TabletopReader:
         except HTTError:  # a count or order check 1 rejects outright
             return True
 
+    def notes(self, instruction: str) -> list[str]:
+        return []  # its spellings of names ("grean apple") are the respelling notes' own
+
     def unused(self, res: LanguageResult) -> list[Unread]:
         """Each object or plate the instruction names (outside its negated clauses) that no base task
         uses: nothing lies on a plate or beside a named thing at the start, so a name read as a landmark

@@ -166,7 +166,8 @@ def translate(
                 res = again
             elif not res.partial and not negations:
                 res = reader.doubted(res, backend)
-        if respelt := respelling_notes(instruction):  # "read 'whih' as 'which'": no word silently changed
+        # "read 'whih' as 'which'", "read 'kettle' as 'watering can'": no word silently changed
+        if respelt := [*respelling_notes(instruction), *reader.notes(instruction)]:
             res = res.model_copy(update={"assumptions": [*res.assumptions, *respelt]})
         with _refused_as_not_understood(res, world):
             return _finish(res, world, backend, client, ltl, actions, build, instances, plurals)

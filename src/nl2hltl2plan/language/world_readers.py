@@ -1,6 +1,6 @@
 """Each world's own reading around the shared grammar: one hook per kind of world (`World.kind`).
 
-`translate` asks `world_reader(world)` at seven points (all but `unused` in the offline backends only),
+`translate` asks `world_reader(world)` at eight points (all but `unused` in the offline backends only),
 and knows no world by name:
 
 - `own_reading`: the world reads the whole instruction itself (the handover worlds, `handover_reading`);
@@ -17,7 +17,9 @@ and knows no world by name:
 - `doubted`: the grammar's full reading with what the world's own reading says against it (the tabletop
   world: its pairs reading, where it reads the instruction too and differs, makes the result partial);
 - `unused`: what check 1 adds for the world, for every backend (the tabletop world: a named object or
-  plate that no base task uses, since nothing there can be a landmark).
+  plate that no base task uses, since nothing there can be a landmark);
+- `notes`: what `prepared` read as another word, said among the result's assumptions (the household
+  worlds: "read 'kettle' as 'watering can'", `household_words`).
 
 A world kind with no reading of its own gets `SharedGrammar`, which changes nothing. A world's reader is
 imported only when that world is read (the handover reader's pattern tables cost ~25 ms to load).
@@ -37,7 +39,7 @@ from nl2hltl2plan.language.courtesy import without_greetings, without_reasons
 from nl2hltl2plan.language.grounding import find_mentions
 from nl2hltl2plan.language.headings import answered
 from nl2hltl2plan.language.household_forms import household_forms
-from nl2hltl2plan.language.household_words import contents_hint, descriptive_names
+from nl2hltl2plan.language.household_words import contents_hint, descriptive_name_notes, descriptive_names
 from nl2hltl2plan.language.numbered_steps import step_order
 from nl2hltl2plan.language.respectively import distributed
 from nl2hltl2plan.language.result import LanguageResult
@@ -81,6 +83,10 @@ class WorldReader(Protocol):
         that only this world knows to be content (every backend's reading is judged so)."""
         ...
 
+    def notes(self, instruction: str) -> list[str]:
+        """What `prepared` read as another word, as assumptions of the reading ("read 'x' as 'y'")."""
+        ...
+
 
 class SharedGrammar:
     """The reader of a world with no reading of its own: the shared grammar as it is."""
@@ -106,6 +112,9 @@ class SharedGrammar:
     def unused(self, res: LanguageResult) -> list[Unread]:
         return []
 
+    def notes(self, instruction: str) -> list[str]:
+        return []
+
 
 class _HouseholdReader(SharedGrammar):
     """The household (ALFRED) floor plans: the shared grammar, with "Q: ... A: ..." read as the
@@ -126,6 +135,9 @@ class _HouseholdReader(SharedGrammar):
     def prepared(self, instruction: str) -> str:
         named = descriptive_names(household_forms(instruction), set(self.world.object_types()))
         return distributed(corrected(step_order(named), household_roles(self.world)))
+
+    def notes(self, instruction: str) -> list[str]:
+        return descriptive_name_notes(household_forms(instruction), set(self.world.object_types()))
 
     def refusal(self, refused: Exception, instruction: str, prepared: str, rest: str) -> Exception:
         hint = contents_hint(instruction)
