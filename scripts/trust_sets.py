@@ -34,7 +34,7 @@ from pathlib import Path
 from typing import get_args
 
 from nl2hltl2plan.domain.plurals import Plurals
-from nl2hltl2plan.errors import Nl2Hltl2PlanError
+from nl2hltl2plan.errors import Nl2Hltl2PlanError, WorldError
 from nl2hltl2plan.language.scoring import match
 from nl2hltl2plan.language.translate import apply_choices, top_candidates, translate
 from nl2hltl2plan.suites.alfred.conversion import scenario_world
@@ -117,17 +117,17 @@ def parse_line(line: str, name: str, n: int) -> dict:
 
 def check_trials(scene: str, trials: list[str], where: str) -> list[str]:
     """The `trials:` column's ids, each a non-excluded ALFRED trial of the line's floor plan; anything else
-    is a one-line error naming it (TrialsError)."""
-    from nl2hltl2plan.worlds.floor_plans import alfred_data, excluded_trials
+    is a one-line error naming it (TrialsError): the world builder's own check, and the exclusions."""
+    from nl2hltl2plan.worlds.floor_plans import check_trial, excluded_trials
 
-    known, banned = alfred_data().trials, excluded_trials()
+    banned = excluded_trials()
     for tid in trials:
-        if tid not in known:
-            raise TrialsError(f"{where}: no ALFRED trial {tid!r} in alfred/trials.jsonl.gz")
+        try:
+            check_trial(scene, tid)
+        except WorldError as exc:
+            raise TrialsError(f"{where}: {exc}") from None
         if tid in banned:
             raise TrialsError(f"{where}: trial {tid} is excluded (benchmark/training_exclusions.txt)")
-        if known[tid].floor_plan != scene:
-            raise TrialsError(f"{where}: trial {tid} is in {known[tid].floor_plan}, not {scene}")
     return trials
 
 

@@ -418,17 +418,22 @@ def instance_counts(fp: str, trials: list[str] | None = None) -> Counter[str]:
     return Counter(s.type for s in statics) + Counter(_type_of_name(name) for name, *_ in poses)
 
 
+def check_trial(fp: str, tid: str) -> None:
+    """WorldError naming `tid` where it is no ALFRED trial, or a trial of another floor plan than `fp`."""
+    trial = alfred_data().trials.get(tid)
+    if trial is None:
+        raise WorldError(f"no ALFRED trial {tid!r} in alfred/trials.jsonl.gz")
+    if trial.floor_plan != fp:
+        raise WorldError(f"trial {tid} is in {trial.floor_plan}, not {fp}")
+
+
 def load_floor_plan(fp: str, trials: list[str] | None = None) -> World:
     """The world of a floor plan with the movable objects of `trials` (default: its first trial)."""
     _layout_file(fp, "layout.npy")
     data = alfred_data()
     trials = list(trials) if trials else [default_trial(fp)]
     for tid in trials:
-        trial = data.trials.get(tid)
-        if trial is None:
-            raise WorldError(f"no ALFRED trial {tid!r} in alfred/trials.jsonl.gz")
-        if trial.floor_plan != fp:
-            raise WorldError(f"trial {tid} is in {trial.floor_plan}, not {fp}")
+        check_trial(fp, tid)
     table = affordance_table()
     statics, cannot_place = _statics(fp)
     unplaced = dict(cannot_place)  # this world's own: the floor plan's (cached) stays as it is

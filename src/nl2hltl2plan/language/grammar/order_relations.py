@@ -68,23 +68,19 @@ def _first_after_others(tasks: Tasks, free: set[int], edges: Edges, b: TaskBuild
     other tasks are ordered: `_first_edges` orders a "first" before the tasks after it only, and the word was
     dropped (a wrong reading at exit 0). With no order at all, check 1 names the word (`unordered_steps`)."""
     units = tasks.units
-    if not edges:
+    last = max((k for k, u in enumerate(units) if u.tasks), default=None)  # only it can be a closing one
+    if not edges or last is None:
         return
-    closure = nx.transitive_closure(nx.DiGraph(list(edges)))
-    for k, u in enumerate(units):
-        if not u.tasks or not any(kind == G.FIRST for kind, _ in u.markers):
-            continue
-        opens = any(v.tasks for v in units[k + 1 :])  # "A. First B, then C": `_first_edges`' own
-        if opens or any(v.tasks and v.sentence == u.sentence for v in units[:k]):
-            continue
-        earlier = [t for v in units[:k] if v.sentence != u.sentence for t in v.tasks if t not in free]
-        loose = [
-            t for t in earlier for a in u.tasks if not (closure.has_edge(a, t) or closure.has_edge(t, a))
-        ]
-        if loose and not set(u.tasks) & free:
-            own = tasks.specs[u.tasks[0]].text
-            why = f"'first' after tasks said before it: before them too? {ORDER_LEFT_OPEN}"
-            b.unparsed.append(f"{own!r} ({why})")
+    u, said_before = units[last], [v for v in units[:last] if v.tasks]
+    if not any(kind == G.FIRST for kind, _ in u.markers) or set(u.tasks) & free:
+        return
+    if any(v.sentence == u.sentence for v in said_before):  # "A. First B, then C": `_first_edges`' own
+        return
+    earlier = [t for v in said_before for t in v.tasks if t not in free]
+    closure = nx.transitive_closure(nx.DiGraph(list(edges)))  # built here only: most texts get no further
+    if any(not (closure.has_edge(a, t) or closure.has_edge(t, a)) for t in earlier for a in u.tasks):
+        why = f"'first' after tasks said before it: before them too? {ORDER_LEFT_OPEN}"
+        b.unparsed.append(f"{tasks.specs[u.tasks[0]].text!r} ({why})")
 
 
 # an order adverb that ends a task's own words: no marker read it
