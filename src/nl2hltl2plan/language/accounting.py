@@ -128,7 +128,7 @@ def account(
     out += one_of_several(instruction, mentions, parse, instances)
     out += under_a_place(instruction, mentions, parse)
     out += first_and_last(instruction, mentions, parse) + fragments(instruction, mentions)
-    out += repeats_for_another(instruction, mentions, parse) + it_of_two(instruction, mentions)
+    out += repeats_for_another(instruction, mentions, parse) + it_of_two(instruction, mentions, parse.tasks)
     out += _words(instruction, toks, in_mention, mentions, parse, instances, scene)
     out += unordered_steps(
         toks, {i for i, t in enumerate(toks) if parse.constraint_at(t[1])} | in_mention, parse, per_group_only
