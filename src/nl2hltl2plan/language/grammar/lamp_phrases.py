@@ -36,14 +36,18 @@ _PURPOSE = re.compile(
 
 
 # "hold the vase and turn on the lamp to get a good look at it", "... to see it better": after the lamp is
-# switched on, a purpose that names "it" (the thing held) says the examination the rules already read
+# switched on, a purpose that names "it" (the thing held) says the examination the rules already read; the
+# rules read "to look at it" alone (kept), not the noun "a look" or a manner word after "it"
+_MANNER = r"(?:better|properly|closely|clearly|well|more\s+closely)"
 _LOOK_PURPOSE = re.compile(
     r"(?P<keep>\b(?:turn|switch)\s+(?:on\s+)?(?:it|the\s+(?:[a-z]+\s+)?(?:lamp|light))(?:\s+on)?)"
     r"\s+(?:in\s+order\s+)?to\s+(?:(?:get|take|have)\s+a\s+(?:(?:good|better|close|closer|proper|clear|quick)\s+)?"
-    rf"(?:look|view)\s+(?:at|of)|{_EXAMINE})\s+(?:it|them)"
-    r"(?:\s+(?:better|properly|closely|clearly|well|more\s+closely))?(?=\s*(?:[,.;!?]|$))",
+    rf"(?:look|view)\s+(?:at|of)\s+(?:it|them)(?:\s+{_MANNER})?|{_EXAMINE}\s+(?:it|them)\s+{_MANNER})"
+    r"(?=\s*(?:[,.;!?]|$))",
     re.I,
 )
+
+
 # "examine the mug by the light of the lamp, then put a pen in the mug": the next clause puts a thing in the
 # thing examined; the rules would take it for the examination going on (the pen examined, the mug placed),
 # so the clause is read as a sentence of its own ("... lamp. Then put a pen in the mug"), unless an order
