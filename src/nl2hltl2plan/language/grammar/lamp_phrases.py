@@ -104,7 +104,8 @@ def _lamp_used(m: re.Match[str]) -> str:
 def lamp_phrasing(text: str) -> str:
     """`text` with each phrasing above rewritten (its comment says which)."""
     text = _LIGHT_FROM.sub("light of ", text)
-    text = _LAMP_FIRST.sub(lambda m: f"{m['verb']} {m['things']} under the {m['lamp']}{m['tail'] or ''}", text)
+    text = _LAMP_FIRST.sub(lambda m: f"{m['verb']} {m['things']} under the {m['lamp']}{m['tail'] or ''}",
+                           text)
     text = _USE_LAMP.sub(_lamp_used, text)
     text = _CHECK_OUT_FRONT.sub("check ", _CHECK_OUT.sub(r"check \1", text))
     text = _AGAIN_AFTER_LAMP.sub(lambda m: m["lamp"] + ". Then ", text)

@@ -175,7 +175,8 @@ def _marker_edges(
 def _unfreed_clause(units: list[Unit], prev: Unit, free: set[int]) -> list[int]:
     """The tasks "Then" comes after: the clause before it, or where a time phrase frees that clause alone ("A,
     and B whenever you like. Then C"), the last clause of its sentence that nothing frees."""
-    kept = [v for v in units[: units.index(prev) + 1] if v.sentence == prev.sentence and not set(v.tasks) <= free]
+    said = units[: units.index(prev) + 1]
+    kept = [v for v in said if v.sentence == prev.sentence and not set(v.tasks) <= free]
     return kept[-1].tasks if kept and set(prev.tasks) <= free else prev.tasks
 
 
