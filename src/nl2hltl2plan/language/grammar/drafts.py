@@ -349,15 +349,24 @@ _ORDER_IS_FREE = re.compile(
 def _time_frees_last_clause(sentence: Sentence, units: list[Unit]) -> bool:
     """Does the closing "whenever you like" / "at any time" free the sentence's last clause alone? Yes where
     that clause is one task joined by "and" after clauses of their own ("A, and B at any time"); not for a
-    closing "in any order", which frees the order of the clauses it closes."""
+    closing "in whatever order you like", which frees the order of the clauses it closes."""
     last = units[-1]
     return (
         len(units) > 1
         and last.joiner == "and"
         and len(last.tasks) == 1
         and not last.seq_after_prev
-        and not _ORDER_IS_FREE.search(sentence.text)
+        and _CLOSING_TIME.search(sentence.text) is not None
     )
+
+
+# a closing phrase that frees a time, not an order ("whenever you like", "at any point"; not "in whatever
+# order you like")
+_CLOSING_TIME = re.compile(
+    r"\b(?:at\s+(?:any|whatever|some)\s+(?:time|point)|any\s*time|whenever|at\s+your\s+(?:convenience|leisure))\b"
+    r"(?![^.;!?]*\b(?:order|sequence)\b)[^.;!?]*$",
+    re.IGNORECASE,
+)
 
 
 def _refuse_free_and_ordered(sentence: Sentence, units: list[Unit]) -> None:
