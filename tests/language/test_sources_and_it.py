@@ -123,3 +123,6 @@ def test_check_1_names_it_of_two_unless_read_as_the_movable_container_task():
     assert "put it" in [u.words for u in account(text, moved, [])]
     back = "put a watch in the box, then put it back on the sofa"  # back where the watch, or the box, was
     assert "put it" in [u.words for u in account(back, reading, [])]
+    # two boxes said, one read: the reading merged them, and the question stays
+    two = "put two boxes on the table, then put a watch in a box and put it on the sofa"
+    assert "put it" in [u.words for u in account(two, reading, [])]

@@ -45,7 +45,7 @@ def it_of_two(
         named = {x.entry.canonical for x in find_mentions(clause)}
         if named & {thing.entry.canonical, holder.entry.canonical}:
             continue
-        if _carried_in_holder(thing, holder, clause, tasks):
+        if _carried_in_holder(thing, holder, clause, tasks) and _holders_read(holder, mentions, tasks):
             continue
         why = f"'it' may be the {thing.surface} or the {holder.surface}: name the one you mean"
         out.append(Unread(verb.group(0), "object", why))
@@ -65,6 +65,17 @@ def _carried_in_holder(thing: Mention, holder: Mention, clause: str, tasks: Sequ
         and set(t.receptacle or ()) & places
         for t in tasks
     )
+
+
+def _holders_read(holder: Mention, mentions: list[Mention], tasks: Sequence[BaseTaskSpec]) -> bool:
+    """Does every mention of the holder's kind have a task slot of its own ("put two boxes on the table, then
+    put the keys in a box and put it on the dresser": two mentions, and a reading with one box task has
+    merged them, which the question about "it" must not hide)?"""
+    kinds = set(holder.entry.types)
+    said = sum(1 for x in mentions if x.entry.canonical == holder.entry.canonical)
+    roles = ("object", "container", "receptacle")
+    slots = sum(bool(set(getattr(t, role) or ()) & kinds) for t in tasks for role in roles)
+    return said <= slots
 
 
 def _just_put_in(lowered: str, before: list[Mention]) -> tuple[Mention, Mention] | None:
