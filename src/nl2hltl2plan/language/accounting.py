@@ -40,6 +40,7 @@ from nl2hltl2plan.language.content_words import (
 from nl2hltl2plan.language.counts import count_unread, count_value
 from nl2hltl2plan.language.grammar.everyday import everyday
 from nl2hltl2plan.language.grounding import (
+    LAMPS,
     SLICEABLE,
     Mention,
     camel_words,
@@ -128,7 +129,7 @@ def account(
     out += one_of_several(instruction, mentions, parse, instances)
     out += under_a_place(instruction, mentions, parse)
     out += first_and_last(instruction, mentions, parse) + fragments(instruction, mentions)
-    out += repeats_for_another(instruction, mentions, parse) + it_of_two(instruction, mentions)
+    out += repeats_for_another(instruction, mentions, parse) + it_of_two(instruction, mentions, parse.tasks)
     out += _words(instruction, toks, in_mention, mentions, parse, instances, scene)
     out += unordered_steps(
         toks, {i for i, t in enumerate(toks) if parse.constraint_at(t[1])} | in_mention, parse, per_group_only
@@ -197,6 +198,13 @@ def _modifiers(words: list[str]) -> bool:
     return len(others) <= 2 and not any(categories(w) for w in others)
 
 
+def _lamp_said_again(head: Mention, matched: set[frozenset[str]]) -> bool:
+    """ "Take the remote to the floor lamp and turn the lamp on": "the lamp" names again the lamp a task
+    already uses (a lamp word no more specific than it), not another place."""
+    types = set(head.entry.types)
+    return bool(types) and types <= LAMPS and any(types & key for key in matched)
+
+
 def _nouns(
     instruction: str, mentions: list[Mention], toks: list[tuple[str, int, int]], parse: ParseUsage
 ) -> tuple[list[Unread], list[list[Mention]]]:
@@ -248,7 +256,7 @@ def _nouns(
         needing = [p for p in phrases if not _locative(instruction, p[0], toks, places, implied_places)]
         if key in matched:
             named += needing
-        if key in matched or not needing:
+        if key in matched or not needing or _lamp_said_again(phrases[0][-1], matched):
             continue
         first = phrases[0][-1]
         what = "object" if any(t in objects for t in first.entry.types) else "place"

@@ -15,19 +15,26 @@ English does not decide between them (`it_of_two`).
 from __future__ import annotations
 
 import re
+from collections.abc import Sequence
 
 from nl2hltl2plan.language.content_words import Unread, categories
 from nl2hltl2plan.language.grounding import MOVABLE_RECEPTACLES, Mention, find_mentions
 from nl2hltl2plan.language.prepositions import a_source
+from nl2hltl2plan.language.task_specs import BaseTaskSpec
 
 
-def it_of_two(instruction: str, mentions: list[Mention]) -> list[Unread]:
+def it_of_two(
+    instruction: str, mentions: list[Mention], tasks: Sequence[BaseTaskSpec] = ()
+) -> list[Unread]:
     """ "Put a watch in the box, then put it on the sofa": "it" may be the watch or the box that holds it
     (two different tasks), so a verb that moves "it" right after a thing is put into a movable receptacle is
     named. English decides, and nothing is named, where "it" can stand for one of them only: another thing
     named between ("..., pick up the box and put it on the sofa"), a plural thing or holder ("the pencils in
     the mug, then put it on the desk": the mug), a thing taken, not put ("take the watch in the box and put
-    it ...": the watch), or the clause of "it" naming one of them ("put it on the sofa with the watch")."""
+    it ...": the watch), or the clause of "it" naming one of them ("put it on the sofa with the watch").
+    Nor where `tasks` (the reading) hold ALFRED's movable-container task that both readings come to: "put a
+    pen in a mug and set it on the table" puts the pen on the table either way, the mug holding it
+    (pick_and_place_with_movable_recep); "return it" or "pick it up" still differ."""
     lowered, out = instruction.lower(), []
     for verb in _VERB_IT.finditer(lowered):
         two = _just_put_in(lowered, [x for x in mentions if x.char_end <= verb.start(2)])
@@ -38,9 +45,37 @@ def it_of_two(instruction: str, mentions: list[Mention]) -> list[Unread]:
         named = {x.entry.canonical for x in find_mentions(clause)}
         if named & {thing.entry.canonical, holder.entry.canonical}:
             continue
+        if _carried_in_holder(thing, holder, clause, tasks) and _holders_read(holder, mentions, tasks):
+            continue
         why = f"'it' may be the {thing.surface} or the {holder.surface}: name the one you mean"
         out.append(Unread(verb.group(0), "object", why))
     return out
+
+
+def _carried_in_holder(thing: Mention, holder: Mention, clause: str, tasks: Sequence[BaseTaskSpec]) -> bool:
+    """Is "it" moved on to a place its clause names ("set it on the dining table", "move it from the
+    nightstand to the desk"), and read as the task of the thing in the holder at that place?"""
+    if _BACK.search(clause):  # "put it back": back where the thing, or the holder, was
+        return False
+    places = {t for x in find_mentions(clause) for t in x.entry.types}
+    return any(
+        t.kind == "place_in_container"
+        and set(t.object) & set(thing.entry.types)
+        and set(t.container or ()) & set(holder.entry.types)
+        and set(t.receptacle or ()) & places
+        for t in tasks
+    )
+
+
+def _holders_read(holder: Mention, mentions: list[Mention], tasks: Sequence[BaseTaskSpec]) -> bool:
+    """Does every mention of the holder's kind have a task slot of its own ("put two boxes on the table, then
+    put the keys in a box and put it on the dresser": two mentions, and a reading with one box task has
+    merged them, which the question about "it" must not hide)?"""
+    kinds = set(holder.entry.types)
+    said = sum(1 for x in mentions if x.entry.canonical == holder.entry.canonical)
+    roles = ("object", "container", "receptacle")
+    slots = sum(bool(set(getattr(t, role) or ()) & kinds) for t in tasks for role in roles)
+    return said <= slots
 
 
 def _just_put_in(lowered: str, before: list[Mention]) -> tuple[Mention, Mention] | None:
@@ -75,4 +110,5 @@ _INTO = re.compile(r"\s+(?:in|into|inside|on|onto)\s+(?:the|a|an|your|my|that|th
 # before the thing's name)
 _VERB_BEFORE_IT = re.compile(r"\b([a-z]+)\s+it$")
 _VERB_BEFORE = re.compile(r"\b([a-z]+)\s+(?:(?:the|a|an|your|my|that|this|one)\s+)?(?:[a-z]+\s+)?$")
+_BACK = re.compile(r"\b(?:back|again)\b")
 _CLAUSE_END = re.compile(r"[.;!?,]|\b(?:and|then)\b")

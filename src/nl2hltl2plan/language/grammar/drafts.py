@@ -325,6 +325,11 @@ class DraftBuilder:
                 and all(self.out.drafts[t].group >= 0 for u in sentence_units for t in u.tasks)
             ):
                 pass
+            elif kind == G.FREE and _time_frees_last_clause(st.sentence, sentence_units):
+                # "After that, B, and C whenever you like": the time phrase frees its own clause, and the
+                # sentence's opening order word then reaches the clauses before it only
+                last = sentence_units[-1]
+                last.markers = [m for m in last.markers if m not in st.sentence.markers] + [(kind, ref)]
             else:
                 # "put the apple in the fridge last": after every other task, those written after it too
                 of_all = kind == G.FINALLY and len(sentence_units) == 1
@@ -337,6 +342,29 @@ class DraftBuilder:
 _ORDER_IS_FREE = re.compile(
     r"\b(?:(?:any|whatever|no\s+(?:particular|specific|set))\s+(?:order|sequence)|order\s+is\s+(?:up\s+to\s+you|"
     r"your\s+call|yours\s+to\s+choose)|in\s+parallel|simultaneously|concurrently)\W*$",
+    re.IGNORECASE,
+)
+
+
+def _time_frees_last_clause(sentence: Sentence, units: list[Unit]) -> bool:
+    """Does the closing "whenever you like" / "at any time" free the sentence's last clause alone? Yes where
+    that clause is one task joined by "and" after clauses of their own ("A, and B at any time"); not for a
+    closing "in whatever order you like", which frees the order of the clauses it closes."""
+    last = units[-1]
+    return (
+        len(units) > 1
+        and last.joiner == "and"
+        and len(last.tasks) == 1
+        and not last.seq_after_prev
+        and _CLOSING_TIME.search(sentence.text) is not None
+    )
+
+
+# a closing phrase that frees a time, not an order ("whenever you like", "at any point"; not "in whatever
+# order you like")
+_CLOSING_TIME = re.compile(
+    r"\b(?:at\s+(?:any|whatever|some)\s+(?:time|point)|any\s*time|whenever|at\s+your\s+(?:convenience|leisure))\b"
+    r"(?![^.;!?]*\b(?:order|sequence)\b)[^.;!?]*$",
     re.IGNORECASE,
 )
 

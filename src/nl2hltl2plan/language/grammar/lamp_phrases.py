@@ -16,7 +16,8 @@ _EXAMINE = r"(?:look\s+at|see|examine|view|read|inspect|check(?:\s+out)?|study|o
 _USE_LAMP = re.compile(
     r"\b(?:use|using) (?:the |a )?(?:light (?:from|of) (?:the |a )?)?(?P<lamp>(?:\w+ )?lamp|light)"
     r"(?: light)? to (?P<verb>look at|see|examine|view|read|inspect|check) "
-    r"(?P<obj>[^,.;!?]+?)(?=[,.;!?]|\s+(?:and|then)\b|$)",
+    # the things: one, or a list ("a book, a pen and the vase"), up to a clause of its own
+    r"(?P<obj>[^.;!?]+?)(?=[.;!?]|,\s+(?!(?:and\s+)?(?:the|a|an)\s)|,?\s+and\s+(?!(?:the|a|an)\s)|\s+then\b|$)",
     re.IGNORECASE,
 )
 # "examine the box using the light from a floor lamp": the light of that lamp
@@ -30,6 +31,19 @@ _PURPOSE = re.compile(
     r"(?P<keep>\bto\s+the\s+(?:[a-z]+\s+)?lamp\b[^,.;!?]*?\s+and\s+(?:then\s+)?(?:turn|switch)\s+"
     r"(?:on\s+)?(?:it|the\s+(?:[a-z]+\s+)?lamp)(?:\s+on)?)"
     rf"\s+(?:in\s+order\s+)?to\s+{_EXAMINE}\s+(?P<what>it|them|the\s+[a-z]+)(?=\s*(?:[,.;!?]|$))",
+    re.I,
+)
+
+
+# "hold the vase and turn on the lamp to get a good look at it", "... to see it better": after the lamp is
+# switched on, a purpose that names "it" (the thing held) says the examination the rules already read; the
+# rules read "to look at it" alone (kept), not the noun "a look" or a manner word after "it"
+_MANNER = r"(?:better|properly|closely|clearly|well|more\s+closely)"
+_LOOK_PURPOSE = re.compile(
+    r"(?P<keep>\b(?:turn|switch)\s+(?:on\s+)?(?:it|the\s+(?:[a-z]+\s+)?(?:lamp|light))(?:\s+on)?)"
+    r"\s+(?:in\s+order\s+)?to\s+(?:(?:get|take|have)\s+a\s+(?:(?:good|better|close|closer|proper|clear|quick)\s+)?"
+    rf"(?:look|view)\s+(?:at|of)\s+(?:it|them)(?:\s+{_MANNER})?|{_EXAMINE}\s+(?:it|them)\s+{_MANNER})"
+    r"(?=\s*(?:[,.;!?]|$))",
     re.I,
 )
 
@@ -52,6 +66,20 @@ _AND_AT = re.compile(
     re.I,
 )
 
+# "Using the desk lamp, look at A, B and C": the lamp named before a list of things to look at lights each
+# of them (read as a thing to look at itself, it was a task too many); the lamp goes after the list, where the
+# rules give it to every item ("look at A, B and C under the desk lamp"), before a closing order phrase
+_LAMP_FIRST = re.compile(
+    r"(?:(?<=^)|(?<=[.;!?]\s)|(?<=,\s)|(?<=\bthen\s))"
+    r"(?:using|with|by\s+the\s+light\s+of|in\s+the\s+light\s+of|under)\s+(?:the\s+|a\s+)?"
+    r"(?P<lamp>(?:[a-z]+\s+)?lamp(?:\s+on\s+the\s+(?!same\b)[a-z]+)?)"
+    r"(?:\s+(?:switched|turned)\s+on|\s+on|\s+lit)?\s*,\s*"
+    rf"(?P<verb>{_EXAMINE})\s+(?P<things>(?:the|a|an)\s[^.;!?]+?)"
+    r"(?P<tail>\s*,?\s*(?:in\s+(?:any|whatever|either|that|this)\s+order|one\s+(?:after\s+(?:the\s+other|another)|by\s+one)))?"
+    r"(?=\s*(?:[.;!?]|$)|,?\s+(?:and\s+)?then\b|,\s+and\s+(?!(?:the|a|an)\s))",
+    re.IGNORECASE,
+)
+
 # "carry a pen while you turn on the lamp", "turn on the lamp while you hold the pen": the gerund the rules
 # read ("while turning on the lamp", "while holding the pen")
 _WHILE_YOU = re.compile(r"\bwhile\s+you(?:'re|\s+are)?\s+(turn|switch|hold|carry)(?:ing)?\b", re.I)
@@ -66,12 +94,21 @@ def _purpose_said(m: re.Match[str]) -> str:
     return m[0]
 
 
+def _lamp_used(m: re.Match[str]) -> str:
+    """ "use the lamp to look at X" -> "look at X by the light of the lamp"; a list goes "under the lamp",
+    the words the rules give every item of a list."""
+    listed = re.search(r",|\sand\s", m["obj"]) is not None
+    return f"{m['verb']} {m['obj']} {'under' if listed else 'by the light of'} the {m['lamp']}"
+
+
 def lamp_phrasing(text: str) -> str:
     """`text` with each phrasing above rewritten (its comment says which)."""
     text = _LIGHT_FROM.sub("light of ", text)
-    text = _USE_LAMP.sub(lambda m: f"{m['verb']} {m['obj']} by the light of the {m['lamp']}", text)
+    text = _LAMP_FIRST.sub(lambda m: f"{m['verb']} {m['things']} under the {m['lamp']}{m['tail'] or ''}",
+                           text)
+    text = _USE_LAMP.sub(_lamp_used, text)
     text = _CHECK_OUT_FRONT.sub("check ", _CHECK_OUT.sub(r"check \1", text))
     text = _AGAIN_AFTER_LAMP.sub(lambda m: m["lamp"] + ". Then ", text)
     text = _AND_AT.sub(lambda m: m["head"] + m["sep"] + "look at ", text)
     text = _WHILE_YOU.sub(lambda m: "while " + _GERUND[m[1].lower()], text)
-    return _PURPOSE.sub(_purpose_said, text)
+    return _LOOK_PURPOSE.sub(r"\g<keep>", _PURPOSE.sub(_purpose_said, text))

@@ -177,6 +177,21 @@ _YOU_DID_BOTH = re.compile(
 )
 
 
+# "A, and at any point put B in C." -> "A, and put B in C at any point.": a time phrase that opens the
+# sentence's last clause frees that clause alone, as it does closing it (`drafts`' closing time phrase)
+_OPENS_LAST_CLAUSE = re.compile(
+    r"(?P<join>,?\s+and\s+)(?P<free>at\s+(?:any|some)\s+(?:time|point)|any\s*time|whenever\s+you\s+(?:like|want))"
+    r"\s*,?\s+(?P<clause>(?P<verb>[a-z]+)\b[^.;!?,]*?)(?=\s*(?:[.;!?]|$))",
+    re.I,
+)
+
+
+def _free_clause_closed(m: re.Match[str]) -> str:
+    if m["verb"].lower() not in G.VERBS:
+        return m[0]
+    return f"{m['join']}{m['clause']} {m['free']}"
+
+
 def after_the_step(text: str) -> str:
     """ "..., do these (first,) in either order, then C" -> "... Once all that is done, C" (C after every task
     before it; "..., and after those two C" is `everyday`'s reference to every task before); "A, after which
@@ -184,13 +199,15 @@ def after_the_step(text: str) -> str:
     B"; "After that, though, B" -> "After that, B"; "A, then B, and the C on D last" -> "..., and finally
     the C on D"; "before doing anything else" / "before you start," -> "before anything else";
     "before you start on any of this" -> "before any of this"; "..., D at the very end." -> "..., D
-    last."; "when you have done both" -> "when both are done"."""
+    last."; "when you have done both" -> "when both are done"; "..., and at any point B." -> "..., and B at
+    any point."."""
     text = _YOU_DID_BOTH.sub(lambda m: f"{m['lead']} {m['what']} are done", _CLOSING_LAST.sub(" last", text))
     text = _INTERJECTED.sub(r"\g<lead>, ", _FOCUS_CONNECTIVE.sub(r"\g<join>", text))
     text = _BEFORE_YOU_START_ANY.sub(r"\1 ", _BEFORE_DOING_ANYTHING.sub(r"\1 ", text))
     text = _BEFORE_YOU_START.sub(r"\1 anything else", text)
     text = _LAST_ITEM.sub(r"\g<join>finally \g<item>", text)
     text = _AFTER_WHICH.sub(", then ", _FREED_THEN.sub(r"\1. Once all that is done, ", text))
+    text = _OPENS_LAST_CLAUSE.sub(_free_clause_closed, text)
     return _AT_THE_END.sub("finally", text)
 
 

@@ -121,7 +121,7 @@ def _marker_edges(
     for kind, ref in u.markers:
         if kind == G.THEN and prev is not None:
             after = [] if prev.sentence == u.sentence else _last_step(units, prev.sentence, free, edges, text)
-            after = (after or prev.tasks) + _put_before(units, prev, free)
+            after = (after or _unfreed_clause(units, prev, free)) + _put_before(units, prev, free)
             edges.update((a, b2) for a in after for b2 in u.tasks)
         elif kind == G.FINALLY:
             # "..., and finally Y" inside a sentence: after its sibling clauses too
@@ -170,6 +170,14 @@ def _marker_edges(
             edges.update((a, b2) if later else (b2, a) for a in named for b2 in u.tasks)
         elif kind in {G.AFTER_REF, G.BEFORE_REF}:
             _ref_edges(kind == G.AFTER_REF, ref, u, tasks, b, text, edges)
+
+
+def _unfreed_clause(units: list[Unit], prev: Unit, free: set[int]) -> list[int]:
+    """The tasks "Then" comes after: the clause before it, or where a time phrase frees that clause alone ("A,
+    and B whenever you like. Then C"), the last clause of its sentence that nothing frees."""
+    said = units[: units.index(prev) + 1]
+    kept = [v for v in said if v.sentence == prev.sentence and not set(v.tasks) <= free]
+    return kept[-1].tasks if kept and set(prev.tasks) <= free else prev.tasks
 
 
 def _with_stated(scope: list[int], tasks: Tasks, edges: Edges) -> list[int]:
