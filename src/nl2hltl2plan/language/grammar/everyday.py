@@ -213,11 +213,15 @@ _FREE_REMARK = re.compile(rf"\b{_FREE_ORDER}\b", re.I)
 
 # "put the egg (in) there too", "then the egg in there": "there" is the last destination named before it
 # ("put the bread in the fridge, then put the egg in there too"); with none before, it stays, and is read
-# or refused as it is
+# or refused as it is. "on it too" / "in it as well" is the same place ("put the book on the bed. put the
+# pillow on it too", "two remotes on the couch and two cards on it too"); a bare "on it" may be a thing
+# just named ("put a fork in a cup and ... put the cup in it"), and is left
 _THERE = re.compile(
-    r"(?P<head>\b(?:put|place|set|stick|pop|drop|leave|store|move)\s+(?:it|them|(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)"
-    r"|(?:(?<=\bthen\s)|(?<=\band\s))(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)"
-    r"\s+(?:(?:in|into|inside|on|onto)\s+)?there\b(?=\s*(?:too|as\s+well|also)?\s*(?:[,.;!?]|$|and\b|then\b))",
+    r"(?P<head>\b(?:put|place|set|stick|pop|drop|leave|store|move|throw|toss)\s+"
+    r"(?:it|them|(?:the|a|an|two|both|\d)\s+[a-z]+(?:\s+[a-z]+)?)"
+    r"|(?:(?<=\bthen\s)|(?<=\band\s))(?:the|a|an|two|both|\d)\s+[a-z]+(?:\s+[a-z]+)?)"
+    r"\s+(?:(?:(?:in|into|inside|on|onto)\s+)?there\b(?=\s*(?:too|as\s+well|also)?\s*(?:[,.;!?]|$|and\b|then\b))"
+    r"|(?:in|into|inside|on|onto)\s+it\s+(?=(?:too|as\s+well|also)\s*(?:[,.;!?]|$|and\b|then\b)))",
     re.I,
 )
 _NEGATED = re.compile(r"(?:\bnot|n't|\bnever|\bno)\s+(?:\w+\s+)?$", re.I)
@@ -242,7 +246,7 @@ def _there_named(m: re.Match[str]) -> str:
         return m[0]
     prep, place = places[-1]
     prep = "in" if prep == "to" else prep  # "walk to the sink ... in there"
-    return f"{m['head']} {prep} the {place.surface}"
+    return f"{m['head']} {prep} the {place.surface}" + (" " if m[0].endswith(" ") else "")
 
 
 # "the mug that's on the counter, put it in the sink": the thing named first, then what to do with "it"

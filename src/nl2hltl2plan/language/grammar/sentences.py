@@ -17,6 +17,7 @@ from nl2hltl2plan.language.grammar.order_phrases import (
     closing_orders,
     command_after_state,
     done_opener_closed,
+    opener_closed,
     finished_thing,
     leading_connective,
     not_before_as_after,
@@ -476,7 +477,7 @@ def normalize(text: str) -> str:
     text = after_the_step(text)
     text = _THEN_INSIDE.sub(", then ", text)
     text = _DONE_WITH.sub(lambda m: _as_cased("after ", m[1]), text)
-    text = closing_orders(subordinate_first(finished_thing(done_opener_closed(text))))
+    text = closing_orders(subordinate_first(finished_thing(done_opener_closed(opener_closed(text)))))
     return supply_put(re.sub(r"\s+", " ", text).strip())
 
 
