@@ -318,6 +318,10 @@ class DraftBuilder:
                 sentence_units[-1].markers.append((kind, IN_SENTENCE if kind == G.FINALLY else ref))
             elif kind == G.FREE and len(sentence_units) == 1 and len(sentence_units[0].tasks) > 1:
                 pass  # "move the phone and the bat to the bed in any order": order inside the group is free
+            elif _own_time_freed(st.sentence, sentence_units):
+                # "After that, A, and B whenever": the sequence word is A's, "whenever" frees B alone
+                last = sentence_units[-1]
+                last.markers = [m for m in last.markers if m not in st.sentence.markers] + [(kind, ref)]
             elif (
                 kind == G.FREE
                 and len(sentence_units) > 1
@@ -339,6 +343,20 @@ _ORDER_IS_FREE = re.compile(
     r"your\s+call|yours\s+to\s+choose)|in\s+parallel|simultaneously|concurrently)\W*$",
     re.IGNORECASE,
 )
+
+
+_SEQUENCE = frozenset({G.THEN, G.AFTER_ALL, G.AFTER_REF})
+
+
+def _own_time_freed(sentence: Sentence, units: list[Unit]) -> bool:
+    """A closing "whenever" / "at any time" (not "in any order") of a sentence of several clauses that a
+    sequence word opens: it frees the time of the last clause's task only."""
+    return (
+        len(units) > 1
+        and any(k in _SEQUENCE for k, _ in sentence.markers)
+        and any(k == G.FREE for k, _ in sentence.trailing)
+        and not _ORDER_IS_FREE.search(sentence.text)
+    )
 
 
 def _refuse_free_and_ordered(sentence: Sentence, units: list[Unit]) -> None:

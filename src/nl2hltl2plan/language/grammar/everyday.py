@@ -45,6 +45,27 @@ _OPENER = re.compile(
     r"(?=[a-z])",
     re.I,
 )
+# "first tho put X", "then though, Y": the texted "though" after an order word carries nothing (left, the
+# order word was no marker and the order was lost)
+_ORDER_THO = re.compile(r"\b(first|then|next|lastly|last|finally)\s*,?\s+(?:tho|though)\b(?:\s*,)?", re.I)
+# "A, and B when you're done (with that)": a done-clause closing the clause of B, with nothing after it, says
+# B comes after the clause before ("A, and then B"); left, its "when" was an order nobody read. Inside a
+# sentence only ("when you're done, put ..." opens a clause the rules read)
+_DONE_AT_END = re.compile(
+    r"(?P<join>,\s*(?:and\s+)?|\s+and\s+)(?!then\b)(?P<y>[a-z](?:(?!\band\b)[^,.;!?])*?)\s+(?:when|once|after)\s+"
+    r"(?:you're|you\s+are|you've|you\s+have|it's|that's)\s+(?:done|finished|through)"
+    r"(?:\s+with\s+(?:that|it|this|those|them))?\s*(?=[.;!?]|$)",
+    re.I,
+)
+
+
+def _done_at_end(m: re.Match[str]) -> str:
+    """ "A and B when you're done" -> "A and then B"; after a list ("A, B, and C when you're done with that")
+    which clauses "that" is is not plain (and "A, B, and then C" reads a sequence), so it is left."""
+    head = re.split(r"[.;!?]", m.string[: m.start()])[-1]
+    return m[0] if "," in head else f"{m['join']}then {m['y']}"
+
+
 _START_OPENER = re.compile(
     r"^\s*(?:(?:ok|okay|alright|all\s+right|so|well|right)\b\s*,?\s*)*(?:ok|okay|alright|all\s+right|so|well|right)\s*,\s*",
     re.I,
@@ -165,7 +186,8 @@ def everyday(text: str) -> str:
     if _BELONGS.search(text):
         text = _PUT_THEM_THERE.sub("", text)
     text = _THING_FIRST.sub(lambda m: f"{m['lead']}take {m['np']}, ", _THERE.sub(_there_named, text))
-    text = _HESITATION.sub(" ", text)
+    text = _HESITATION.sub(" ", _ORDER_THO.sub(r"\1", text))
+    text = _DONE_AT_END.sub(_done_at_end, text)
     text = re.sub(r"(\s*,)+", ",", text)  # the commas left where fillers were
     text = _LIKE.sub(",", _TAG.sub("", text))
     text = _START_OPENER.sub("", _OPENER.sub(r"\1", text))
