@@ -31,7 +31,7 @@ from nl2hltl2plan.language.content_words import free_order_phrase
 from nl2hltl2plan.language.grammar.repeats import repeated_for_another
 from nl2hltl2plan.language.grammar.restated import count_fits, restated
 from nl2hltl2plan.language.grammar.treatments_said import treatments_said
-from nl2hltl2plan.language.grounding import find_mentions, phrase_lines
+from nl2hltl2plan.language.grounding import alfred_lookup, find_mentions, phrase_lines
 from nl2hltl2plan.language.spelling import respelt
 from nl2hltl2plan.language.statements import RELATIVE_PLACE
 
@@ -185,7 +185,8 @@ def everyday(text: str) -> str:
     text = _STEP_COLON.sub(r"\1 ", _ARROW.sub(" onto ", text))
     if _BELONGS.search(text):
         text = _PUT_THEM_THERE.sub("", text)
-    text = _THING_FIRST.sub(lambda m: f"{m['lead']}take {m['np']}, ", _THERE.sub(_there_named, text))
+    text = _IT_PLACE.sub(_fixture_named, _THERE.sub(_there_named, text))
+    text = _THING_FIRST.sub(lambda m: f"{m['lead']}take {m['np']}, ", text)
     text = _HESITATION.sub(" ", _ORDER_THO.sub(r"\1", text))
     text = _DONE_AT_END.sub(_done_at_end, text)
     text = re.sub(r"(\s*,)+", ",", text)  # the commas left where fillers were
@@ -269,6 +270,31 @@ def _there_named(m: re.Match[str]) -> str:
     prep, place = places[-1]
     prep = "in" if prep == "to" else prep  # "walk to the sink ... in there"
     return f"{m['head']} {prep} the {place.surface}" + (" " if m[0].endswith(" ") else "")
+
+
+# "before you put the book on the bed, put the pillow on it", "go to the fridge and put the egg in it": a bare
+# "it" as a place, where the last thing named before the clause is a fixture that holds things (a bed, a
+# fridge: ALFRED cannot pick it up), is that fixture; a thing that can be carried ("take the box and put the
+# keys in it", "put the mug on the counter and a spoon in it") is left to the container rules
+_IT_PLACE = re.compile(
+    r"(?P<head>\b(?:put|place|set|stick|pop|drop|leave|store|throw|toss)\s+"
+    r"(?:the|a|an|two|both|\d)\s+[a-z]+(?:\s+[a-z]+)?)\s+(?P<prep>in|into|inside|on|onto)\s+it\b",
+    re.I,
+)
+
+
+def _fixture_named(m: re.Match[str]) -> str:
+    """ "put the pillow on it" -> "put the pillow on the bed" (see above); else as it is."""
+    named = [x for x in find_mentions(m.string[: m.start()]) if not x.entry.generic]
+    look = alfred_lookup()
+    if not named or named[-1].plural or look is None or _NEGATED.search(m.string[: m.start()]):
+        return m[0]
+    a = look(named[-1].entry.canonical)
+    if a is None or a.pickupable or not a.receptacle:
+        return m[0]
+    if len(named) > 1 and (b := look(named[-2].entry.canonical)) is not None and b.pickupable and b.receptacle:
+        return m[0]  # "put the mug on the counter and put a spoon in it": the mug may hold it
+    return f"{m['head']} {m['prep']} the {named[-1].surface}"
 
 
 # "the mug that's on the counter, put it in the sink": the thing named first, then what to do with "it"
