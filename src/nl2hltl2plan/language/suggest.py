@@ -17,9 +17,10 @@ from nl2hltl2plan.language.task_specs import BaseTaskSpec
 from nl2hltl2plan.worlds.world import World
 
 MAX_SUGGESTIONS = 3
-# the treatment each kind does to what it picks up, as a refusal says it ("cannot be picked up to be washed")
-_TREATED = {"clean_place": ("washed", "cleanable"), "heat_place": ("heated", "heatable"),
-            "cool_place": ("chilled", "coolable")}  # fmt: skip
+# what each kind does to the thing it picks up, as a refusal says it ("no task can wash it"), and the flag
+# of what can be so treated
+_TREATED = {"clean_place": ("wash", "cleanable"), "heat_place": ("heat", "heatable"),
+            "cool_place": ("chill", "coolable"), "examine_in_light": ("hold", "")}  # fmt: skip
 
 
 def suggestions(instruction: str, world: World) -> list[str]:
@@ -72,10 +73,11 @@ def refuse_unmovable(tasks: Sequence[BaseTaskSpec], instruction: str, world: Wor
         there = [o for ty in t.object for o in world.instances(ty) if o.present]
         if not there or any(o.affordances.pickupable for o in there):
             continue  # a type the world lacks is refused elsewhere, naming the missing type
-        word = next((m.surface for m in find_mentions(t.text or instruction) if set(m.entry.types) & set(t.object)),
-                    camel_words(t.object[0]))  # fmt: skip
-        done, flag = _TREATED.get(t.kind, ("moved", ""))
+        said = [m.surface for m in find_mentions(t.text or instruction) if set(m.entry.types) & set(t.object)]
+        word = said[0] if said else camel_words(t.object[0])
+        verb, flag = _TREATED.get(t.kind, ("move", ""))
         able = sorted({o.type for o in world.objects.values() if o.present and o.affordances.pickupable
                        and (not flag or getattr(o.affordances, flag))})  # fmt: skip
-        can = f"; what can be {done} there: {', '.join(camel_words(a) for a in able[:4])}" if able else ""
-        raise HTTError(f"{word!r}: a {camel_words(there[0].type)} cannot be picked up, so it cannot be {done}{can}")
+        can = f"; things there to {verb}: {', '.join(camel_words(a) for a in able[:4])}" if able else ""
+        name = camel_words(there[0].type)
+        raise HTTError(f"{word!r}: a {name} cannot be picked up, so no task can {verb} it{can}")

@@ -272,28 +272,34 @@ def _there_named(m: re.Match[str]) -> str:
     return f"{m['head']} {prep} the {place.surface}" + (" " if m[0].endswith(" ") else "")
 
 
-# "before you put the book on the bed, put the pillow on it", "go to the fridge and put the egg in it": a bare
-# "it" as a place, where the last thing named before the clause is a fixture that holds things (a bed, a
-# fridge: ALFRED cannot pick it up), is that fixture; a thing that can be carried ("take the box and put the
-# keys in it", "put the mug on the counter and a spoon in it") is left to the container rules
+# a bare "it" as a place, where it can only be a fixture that holds things (a bed, a fridge: ALFRED cannot
+# pick it up): the one thing named before ("go to the fridge and put the egg in it", "wash the sink then put
+# the cup in it"), or the place of a "before you ..." clause just before, where the thing is not there yet
+# ("before you put the book on the bed, put the pillow on it"). Where a thing was put there ("put the laptop
+# on the bed then put the book on it", "set the cup in the sink and drop a fork into it") "it" may be that
+# thing, and is left to the rules
 _IT_PLACE = re.compile(
     r"(?P<head>\b(?:put|place|set|stick|pop|drop|leave|store|throw|toss)\s+"
     r"(?:the|a|an|two|both|\d)\s+[a-z]+(?:\s+[a-z]+)?)\s+(?P<prep>in|into|inside|on|onto)\s+it\b",
+    re.I,
+)
+_BEFORE_PLACING = re.compile(
+    r"(?:^|[.;!?]\s+)before\s+you\s+[a-z]+\s+(?:the|a|an|two|both|\d)\s+[a-z]+(?:\s+[a-z]+)?\s+"
+    r"(?:in|into|on|onto|inside)\s+(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?\s*,?\s*$",
     re.I,
 )
 
 
 def _fixture_named(m: re.Match[str]) -> str:
     """ "put the pillow on it" -> "put the pillow on the bed" (see above); else as it is."""
-    named = [x for x in find_mentions(m.string[: m.start()]) if not x.entry.generic]
+    said = m.string[: m.start()]
+    named = [x for x in find_mentions(said) if not x.entry.generic]
     look = alfred_lookup()
-    if not named or named[-1].plural or look is None or _NEGATED.search(m.string[: m.start()]):
+    if not named or named[-1].plural or look is None or (len(named) > 1 and not _BEFORE_PLACING.search(said)):
         return m[0]
     a = look(named[-1].entry.canonical)
     if a is None or a.pickupable or not a.receptacle:
         return m[0]
-    if len(named) > 1 and (b := look(named[-2].entry.canonical)) is not None and b.pickupable and b.receptacle:
-        return m[0]  # "put the mug on the counter and put a spoon in it": the mug may hold it
     return f"{m['head']} {m['prep']} the {named[-1].surface}"
 
 

@@ -17,12 +17,12 @@ from nl2hltl2plan.language.grammar.order_phrases import (
     closing_orders,
     command_after_state,
     done_opener_closed,
-    opener_closed,
     finished_thing,
     leading_connective,
     not_before_as_after,
     not_one_reference,
     one_last_step,
+    opener_closed,
     subordinate_first,
     the_moment,
 )
