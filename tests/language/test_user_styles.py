@@ -234,6 +234,14 @@ KNOWN_WRONG: set[str] = {
     "Move the CD from the desk to the top of the dresser. Then, using the desk lamp, look at the alarm "
     "clock, the CD and the pillow one after another.",
     "Using the lamp on the dresser, examine a credit card, a CD, a book and an alarm clock, in any order.",
+    # h183's dev set: its truths order "then" after the last clause only, where users.txt and the paper sets
+    # read "A and B, then C" as after both and "A, B, and then C" as a sequence (the reader follows them)
+    "chill a cup and put it in the cabinet, put two eggs in the microwave, cool the mug & put it in the "
+    "coffee machine, and then wash the bowl and put it in the microwave",
+    "put two remotes on the couch and two credit cards on it too, then put two remotes on the armchair and "
+    "after that one more remote on the sofa",
+    "put 2 sponges in the bathtub and 2 tissue boxes in the drawer. then throw a tissue box in the trash, and "
+    "lastly wash a sponge and put it in the drawer",
 }
 
 
