@@ -1,7 +1,8 @@
 """Plain user-style instructions (issue 28, h183): a subordinate clause typed with no comma before the main
-verb, "on it too" and a bare "on it" after a fixture, an order said in reverse ("last, A; first B"), "first
-tho", a closing "when you're done", "whenever" freeing one clause, "do it in that order", and a fixture
-named as the thing to treat ("scrub the toilet", issue 23: refused by name, never planned)."""
+verb, "on it too" and a bare "on it" after a fixture, an order said in reverse ("last, A; first B"), "then
+tho", a closing "when you're done", "whenever" freeing one clause (not "in whatever order you like"), "do it
+in that order", and a fixture named as the thing to treat ("scrub the toilet", issue 23: refused by name,
+never planned)."""
 
 from __future__ import annotations
 
@@ -12,6 +13,7 @@ import pytest
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.grammar import parse_instruction
+from nl2hltl2plan.language.grammar.everyday import everyday
 from nl2hltl2plan.language.spelling import shorthand_read
 from nl2hltl2plan.language.translate import translate
 from nl2hltl2plan.worlds.demo import demo_world
@@ -49,7 +51,7 @@ def read(text: str) -> tuple[list[str], set[tuple[str, str]], list[str]]:
             ["place Pillow -> Bed", "place Book -> Bed"],
             {("place Pillow -> Bed", "place Book -> Bed")},
         ),
-        # an order said in reverse, and "first tho"
+        # an order said in reverse, and "then tho"
         (
             "last, put the bread in the fridge; first put the egg in the microwave",
             [BREAD, EGG],
@@ -67,19 +69,23 @@ def read(text: str) -> tuple[list[str], set[tuple[str, str]], list[str]]:
         ),
         ("put the bread in the fridge and the egg in the microwave. do it in that order please", [BREAD, EGG],
          {(BREAD, EGG)}),  # fmt: skip
+        (
+            "put the bread in the fridge. after that put the egg in the microwave and the mug in the sink, in "
+            "whatever order you like",
+            [BREAD, EGG, MUG],
+            {(BREAD, EGG), (BREAD, MUG)},
+        ),
     ],
 )
 def test_plain_user_forms_are_read(text, tasks, order):
     assert read(text) == (tasks, order, [])
 
 
-def test_a_first_in_the_middle_that_leaves_earlier_tasks_open_is_named():
-    """ "A. First B. C last": whether B also goes before A is not said; never a silent reading."""
-    tasks, _, unparsed = read(
-        "put the bread in the fridge. first put the egg in the microwave. put the mug in the sink last"
+def test_first_tho_is_but_first():
+    """ "first tho" as texted is the "First, though," the rules read as "but first" (before what was said)."""
+    assert everyday("put the mug in the sink. first tho put the egg in the fridge") == (
+        "put the mug in the sink. first, though, put the egg in the fridge"
     )
-    assert tasks == [BREAD, EGG, MUG]
-    assert unparsed and "'first' after tasks said before it" in unparsed[0]
 
 
 def test_pls_is_please():

@@ -68,7 +68,7 @@ _DETERMINER = re.compile(r"\s*(?:the|a|an|my|your|some|this|that|these|those)\b"
 _AND = re.compile(r"(?<=\w)\s+(?P<word>n|&|\+)\s+(?=\w)|\s*(?P<amp>&)\s*(?=\w)")
 _YOU = re.compile(r"(?<![\w'/-])[uU](?![\w'/-])")
 _WITH = re.compile(r"(?<![\w/])w/(?P<out>o(?![\w/]))?\s*(?=[A-Za-z])", re.I)
-_PLEASE = re.compile(r"(?<![\w'])(?:pls|plz|plox)(?![\w'])", re.I)
+_PLEASE = re.compile(r"(?<![\w'])(?:pls|plz)(?![\w'])", re.I)
 
 
 def shorthand_read(text: str) -> str:

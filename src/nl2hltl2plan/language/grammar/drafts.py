@@ -346,6 +346,13 @@ _ORDER_IS_FREE = re.compile(
 
 
 _SEQUENCE = frozenset({G.THEN, G.AFTER_ALL, G.AFTER_REF})
+# a closing phrase that frees one task's time, not the order of the sentence's tasks ("in whatever order you
+# like" is the latter)
+_OWN_TIME = re.compile(
+    r"\b(?:whenever|any\s*time|at\s+(?:some|any)\s+point|at\s+your\s+(?:convenience|leisure))\b"
+    r"(?![^.;!?]*\b(?:order|sequence)\b)[^.;!?]*$",
+    re.IGNORECASE,
+)
 
 
 def _own_time_freed(sentence: Sentence, units: list[Unit]) -> bool:
@@ -355,7 +362,7 @@ def _own_time_freed(sentence: Sentence, units: list[Unit]) -> bool:
         len(units) > 1
         and any(k in _SEQUENCE for k, _ in sentence.markers)
         and any(k == G.FREE for k, _ in sentence.trailing)
-        and not _ORDER_IS_FREE.search(sentence.text)
+        and _OWN_TIME.search(sentence.text.rstrip(" .!?;")) is not None
     )
 
 

@@ -45,9 +45,10 @@ _OPENER = re.compile(
     r"(?=[a-z])",
     re.I,
 )
-# "first tho put X", "then though, Y": the texted "though" after an order word carries nothing (left, the
-# order word was no marker and the order was lost)
-_ORDER_THO = re.compile(r"\b(first|then|next|lastly|last|finally)\s*,?\s+(?:tho|though)\b(?:\s*,)?", re.I)
+# "first tho put X" as texted is "first, though, put X", which the rules read as "but first" (X before what
+# was just said: `order_phrases`); "then tho put X": "though" after another order word carries nothing. Left,
+# the order word was no marker and the order was lost
+_ORDER_THO = re.compile(r"\b(first|then|next|lastly|last|finally)\s+(?:tho|though)\b(?!\s*,)", re.I)
 # "A, and B when you're done (with that)": a done-clause closing the clause of B, with nothing after it, says
 # B comes after the clause before ("A, and then B"); left, its "when" was an order nobody read. Inside a
 # sentence only ("when you're done, put ..." opens a clause the rules read)
@@ -57,6 +58,10 @@ _DONE_AT_END = re.compile(
     r"(?:\s+with\s+(?:that|it|this|those|them))?\s*(?=[.;!?]|$)",
     re.I,
 )
+
+
+def _order_tho(m: re.Match[str]) -> str:
+    return f"{m[1]}, though," if m[1].lower() == "first" else m[1]
 
 
 def _done_at_end(m: re.Match[str]) -> str:
@@ -187,7 +192,7 @@ def everyday(text: str) -> str:
         text = _PUT_THEM_THERE.sub("", text)
     text = _IT_PLACE.sub(_fixture_named, _THERE.sub(_there_named, text))
     text = _THING_FIRST.sub(lambda m: f"{m['lead']}take {m['np']}, ", text)
-    text = _HESITATION.sub(" ", _ORDER_THO.sub(r"\1", text))
+    text = _HESITATION.sub(" ", _ORDER_THO.sub(_order_tho, text))
     text = _DONE_AT_END.sub(_done_at_end, text)
     text = re.sub(r"(\s*,)+", ",", text)  # the commas left where fillers were
     text = _LIKE.sub(",", _TAG.sub("", text))

@@ -236,7 +236,7 @@ def done_opener_closed(text: str) -> str:
 # people type); without one the clause's reference swallowed the main clause and no task was read. The
 # main verb is the first base-form verb after the clause's own (not after a subject, an auxiliary or an
 # article: "before you put the clean mug ..."), as `subordinate_first` finds it.
-_OPENER = re.compile(r"(?:^|(?<=[.;!?]\s))(?:before|after|once|when)\s+(?=you\b|we\b|i\b)", re.I)
+_SUBORDINATE_OPENER = re.compile(r"(?:^|(?<=[.;!?]\s))(?:before|after|once|when)\s+(?=you\b|we\b|i\b)", re.I)
 _ARTICLES = frozenset({"the", "a", "an", "some", "my", "your", "this", "that", "its", "their"})
 
 
@@ -247,7 +247,7 @@ def opener_closed(text: str) -> str:
     'before you put the mug in the sink, put the egg in the fridge'
     """
     out, pos = [], 0
-    for m in _OPENER.finditer(text):
+    for m in _SUBORDINATE_OPENER.finditer(text):
         end = re.search(r"[,.;!?]|$", text[m.end() :])
         if end is None or (end[0] == "," and end.start() > 0):
             continue  # the writer set the clause apart: the rules read it

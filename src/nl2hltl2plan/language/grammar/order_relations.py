@@ -65,25 +65,23 @@ def relate(
 
 def _first_after_others(tasks: Tasks, free: set[int], edges: Edges, b: TaskBuilder) -> None:
     """ "A. Then B, and C. Put D first." / "... Before anything else, D.": a closing "first" (no task said
-    after it), or a middle sentence of its own ("A. First tho D. E last."), that leaves D unordered with
-    a task of an earlier sentence (not freed) is unread by name, where other tasks are ordered:
-    `_first_edges` orders a "first" before the tasks after it only, and the word was dropped (a wrong
-    reading at exit 0). With no order at all, check 1 names the word (`unordered_steps`)."""
+    after it) that leaves D unordered with a task of an earlier sentence (not freed) is unread by name, where
+    other tasks are ordered: `_first_edges` orders a "first" before the tasks after it only, and the word was
+    dropped (a wrong reading at exit 0). With no order at all, check 1 names the word (`unordered_steps`)."""
     units = tasks.units
-    if not edges:
+    last = max((k for k, u in enumerate(units) if u.tasks), default=None)  # only it can be a closing one
+    if not edges or last is None:
         return
-    closure: nx.DiGraph | None = None  # built at the first such "first" only: most texts get no further
-    for k, u in enumerate(units):  # the closing one, or one in a middle sentence ("A. First tho B. C last")
-        said_before = [v for v in units[:k] if v.tasks]
-        if not u.tasks or not any(kind == G.FIRST for kind, _ in u.markers) or set(u.tasks) & free:
-            continue
-        if not said_before or any(v.sentence == u.sentence for v in units if v.tasks and v is not u):
-            continue  # "A. First B, then C": `_first_edges`' own
-        earlier = [t for v in said_before for t in v.tasks if t not in free]
-        closure = nx.transitive_closure(nx.DiGraph(list(edges))) if closure is None else closure
-        if any(not (closure.has_edge(a, t) or closure.has_edge(t, a)) for t in earlier for a in u.tasks):
-            why = f"'first' after tasks said before it: before them too? {ORDER_LEFT_OPEN}"
-            b.unparsed.append(f"{tasks.specs[u.tasks[0]].text!r} ({why})")
+    u, said_before = units[last], [v for v in units[:last] if v.tasks]
+    if not any(kind == G.FIRST for kind, _ in u.markers) or set(u.tasks) & free:
+        return
+    if any(v.sentence == u.sentence for v in said_before):  # "A. First B, then C": `_first_edges`' own
+        return
+    earlier = [t for v in said_before for t in v.tasks if t not in free]
+    closure = nx.transitive_closure(nx.DiGraph(list(edges)))  # built here only: most texts get no further
+    if any(not (closure.has_edge(a, t) or closure.has_edge(t, a)) for t in earlier for a in u.tasks):
+        why = f"'first' after tasks said before it: before them too? {ORDER_LEFT_OPEN}"
+        b.unparsed.append(f"{tasks.specs[u.tasks[0]].text!r} ({why})")
 
 
 # an order adverb that ends a task's own words: no marker read it
