@@ -70,8 +70,8 @@ def read(text: str) -> tuple[list[str], set[tuple[str, str]], list[str]]:
         ("put the bread in the fridge and the egg in the microwave. do it in that order please", [BREAD, EGG],
          {(BREAD, EGG)}),  # fmt: skip
         (
-            "put the bread in the fridge. after that put the egg in the microwave and the mug in the sink, in "
-            "whatever order you like",
+            "put the bread in the fridge. after that put the egg in the microwave and the mug in the sink, "
+            "in whatever order you like",
             [BREAD, EGG, MUG],
             {(BREAD, EGG), (BREAD, MUG)},
         ),
