@@ -240,6 +240,13 @@ KNOWN_WRONG: set[str] = {
     "and after that one more remote on the sofa",
     "put 2 sponges in the bathtub and 2 tissue boxes in the drawer. then throw a tissue box in the trash, "
     "and lastly wash a sponge and put it in the drawer",
+    # h183's held-out half (scored once, read so on main too): the same three-way convention
+    "put a fork in a cup and put the cup on the counter, put a knife on a plate and put the plate in the "
+    "sink, then heat an apple and put it in the sink too",
+    "chill an egg and put it in the microwave, heat an apple and put it on the counter, cool the tomato and "
+    "put it in the sink, then rinse the mug and put it in the coffee machine",
+    "put both keys on the shelf and the vase on the coffee table. then put a remote on the armchair and "
+    "after that two more remotes on it",
 }
 
 
