@@ -228,6 +228,21 @@ KNOWN_WRONG: set[str] = {
     # h177's held-out half: the freed last clause's marker is right, yet an edge orders it after task A
     "Examine the book under the desk lamp. Afterwards, examine the credit card under the lamp as well, and "
     "put a pen into a mug and place the mug on the dresser whenever you get a chance.",
+    # h183's dev set: its truths order "then" after the last clause only, where users.txt and the paper sets
+    # read "A and B, then C" as after both and "A, B, and then C" as a sequence (the reader follows them)
+    "chill a cup and put it in the cabinet, put two eggs in the microwave, cool the mug & put it in the "
+    "coffee machine, and then wash the bowl and put it in the microwave",
+    "put two remotes on the couch and two credit cards on it too, then put two remotes on the armchair "
+    "and after that one more remote on the sofa",
+    "put 2 sponges in the bathtub and 2 tissue boxes in the drawer. then throw a tissue box in the trash, "
+    "and lastly wash a sponge and put it in the drawer",
+    # h183's held-out half (scored once, read so on main too): the same three-way convention
+    "put a fork in a cup and put the cup on the counter, put a knife on a plate and put the plate in the "
+    "sink, then heat an apple and put it in the sink too",
+    "chill an egg and put it in the microwave, heat an apple and put it on the counter, cool the tomato and "
+    "put it in the sink, then rinse the mug and put it in the coffee machine",
+    "put both keys on the shelf and the vase on the coffee table. then put a remote on the armchair and "
+    "after that two more remotes on it",
 }
 
 

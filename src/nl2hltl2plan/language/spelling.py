@@ -24,7 +24,8 @@ its nine name words and, as its one order form is groups in turn, its order word
 English is pyspellchecker's frequency list; it loads only when a word passes the first tests.
 
 Chat shorthand (`shorthand_read`, issue 28) is read in every world before any reader sees the text
-(`translate`): "n", "&" and "+" between words are "and", "u" is "you", "w/" is "with" and "w/o" "without".
+(`translate`): "n", "&" and "+" between words are "and", "u" is "you", "w/" is "with" and "w/o" "without",
+"pls" / "plz" is "please" (which the readers drop where "please" is dropped: "..., in that order pls").
 A lone "n" or "u" after a word that names something by a letter ("region n", "plan u", "option n") stays.
 
 >>> shorthand_read("can u put the mug n the apple in the sink w/ the lid")
@@ -67,6 +68,7 @@ _DETERMINER = re.compile(r"\s*(?:the|a|an|my|your|some|this|that|these|those)\b"
 _AND = re.compile(r"(?<=\w)\s+(?P<word>n|&|\+)\s+(?=\w)|\s*(?P<amp>&)\s*(?=\w)")
 _YOU = re.compile(r"(?<![\w'/-])[uU](?![\w'/-])")
 _WITH = re.compile(r"(?<![\w/])w/(?P<out>o(?![\w/]))?\s*(?=[A-Za-z])", re.I)
+_PLEASE = re.compile(r"(?<![\w'])(?:pls|plz)(?![\w'])", re.I)
 
 
 def shorthand_read(text: str) -> str:
@@ -82,6 +84,7 @@ def shorthand_read(text: str) -> str:
 
     text = _AND.sub(joined, text)
     text = _YOU.sub(lambda m: m[0] if letter_named(m, _BY_LETTER_U) else "you", text)
+    text = _PLEASE.sub("please", text)
     return _WITH.sub(lambda m: "without " if m["out"] else "with ", text)
 
 

@@ -8,11 +8,19 @@
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
+from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.grounding import camel_words, find_mentions
 from nl2hltl2plan.language.result import LanguageResult
+from nl2hltl2plan.language.task_specs import BaseTaskSpec
 from nl2hltl2plan.worlds.world import World
 
 MAX_SUGGESTIONS = 3
+# what each kind does to the thing it picks up, as a refusal says it ("no task can wash it"), and the flag
+# of what can be so treated
+_TREATED = {"clean_place": ("wash", "cleanable"), "heat_place": ("heat", "heatable"),
+            "cool_place": ("chill", "coolable"), "examine_in_light": ("hold", "")}  # fmt: skip
 
 
 def suggestions(instruction: str, world: World) -> list[str]:
@@ -52,3 +60,24 @@ def not_understood(lang: LanguageResult, world: World | None, cause: str = "") -
         f"not understood in {lang.instruction!r}: {'; '.join(lang.unparsed)}{why}"
         f"{suggestion_text(lang.instruction, world)} (--partial plans the rest)"
     )
+
+
+def refuse_unmovable(tasks: Sequence[BaseTaskSpec], instruction: str, world: World) -> None:
+    """A task that picks up a thing the world has only as fixtures ("scrub the toilet": a Toilet cannot be
+    picked up, so it cannot be washed in the sink) is no task: HTTError naming the word, and what the
+    world can do of that kind (the things there that can be picked up and so treated). Judged on every
+    backend's reading; `set_state` tasks (switch, open, break) act in place and are not asked."""
+    for t in tasks:
+        if t.kind == "set_state" or not t.object:
+            continue
+        there = [o for ty in t.object for o in world.instances(ty) if o.present]
+        if not there or any(o.affordances.pickupable for o in there):
+            continue  # a type the world lacks is refused elsewhere, naming the missing type
+        said = [m.surface for m in find_mentions(t.text or instruction) if set(m.entry.types) & set(t.object)]
+        word = said[0] if said else camel_words(t.object[0])
+        verb, flag = _TREATED.get(t.kind, ("move", ""))
+        able = sorted({o.type for o in world.objects.values() if o.present and o.affordances.pickupable
+                       and (not flag or getattr(o.affordances, flag))})  # fmt: skip
+        can = f"; things there to {verb}: {', '.join(camel_words(a) for a in able[:4])}" if able else ""
+        name = camel_words(there[0].type)
+        raise HTTError(f"{word!r}: a {name} cannot be picked up, so no task can {verb} it{can}")

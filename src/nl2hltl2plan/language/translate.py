@@ -52,7 +52,7 @@ from nl2hltl2plan.language.result import Ambiguity, LanguageResult
 from nl2hltl2plan.language.spec_builder import GenerateLTL, build_spec
 from nl2hltl2plan.language.spelling import respelling_notes, shorthand_read
 from nl2hltl2plan.language.state_tasks import StateReader, guessed_slot, light_orders, reread, state_orderings
-from nl2hltl2plan.language.suggest import not_understood, suggestion_text
+from nl2hltl2plan.language.suggest import not_understood, refuse_unmovable, suggestion_text
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter
 from nl2hltl2plan.language.world_readers import world_reader
 from nl2hltl2plan.logic.atom import Atom
@@ -245,6 +245,8 @@ def _finish(
     only by its types)."""
     convention = world.plurals if isinstance(world, World) else None
     scene = world.name if world else "the scene"
+    if isinstance(world, World):  # "scrub the toilet": a fixture is no thing to pick up and treat
+        refuse_unmovable(res.tasks, res.instruction, world)
     # the types the negations act on: "don't touch the towel" is asked as a task's "the towel" is
     patterns = [a for c in res.constraint_specs for p in c.forbid if (a := Atom.read_pattern(p))]
     forbidden = {t for a in patterns for t in a.args}

@@ -318,6 +318,10 @@ class DraftBuilder:
                 sentence_units[-1].markers.append((kind, IN_SENTENCE if kind == G.FINALLY else ref))
             elif kind == G.FREE and len(sentence_units) == 1 and len(sentence_units[0].tasks) > 1:
                 pass  # "move the phone and the bat to the bed in any order": order inside the group is free
+            elif kind == G.FREE and _time_frees_last_clause(st.sentence, sentence_units):
+                # "After that, A, and B whenever you like": the sequence word is A's, "whenever" frees B alone
+                last = sentence_units[-1]
+                last.markers = [m for m in last.markers if m not in st.sentence.markers] + [(kind, ref)]
             elif (
                 kind == G.FREE
                 and len(sentence_units) > 1
@@ -325,11 +329,6 @@ class DraftBuilder:
                 and all(self.out.drafts[t].group >= 0 for u in sentence_units for t in u.tasks)
             ):
                 pass
-            elif kind == G.FREE and _time_frees_last_clause(st.sentence, sentence_units):
-                # "After that, B, and C whenever you like": the time phrase frees its own clause, and the
-                # sentence's opening order word then reaches the clauses before it only
-                last = sentence_units[-1]
-                last.markers = [m for m in last.markers if m not in st.sentence.markers] + [(kind, ref)]
             else:
                 # "put the apple in the fridge last": after every other task, those written after it too
                 of_all = kind == G.FINALLY and len(sentence_units) == 1
@@ -346,18 +345,21 @@ _ORDER_IS_FREE = re.compile(
 )
 
 
+_SEQUENCE = frozenset({G.THEN, G.AFTER_ALL, G.AFTER_REF})
+
+
 def _time_frees_last_clause(sentence: Sentence, units: list[Unit]) -> bool:
-    """Does the closing "whenever you like" / "at any time" free the sentence's last clause alone? Yes where
-    that clause is one task joined by "and" after clauses of their own ("A, and B at any time"); not for a
-    closing "in whatever order you like", which frees the order of the clauses it closes."""
+    """Does a closing "whenever you like" / "at any time" (not "in whatever order you like", which frees the
+    order of the clauses it closes) free the sentence's last clause alone, the sentence's opening order word
+    then reaching the clauses before it only? Yes in a sentence of several clauses that a sequence word opens
+    ("After that, A, and B whenever"), or that another order word opens where the last clause is one task
+    joined by "and" ("..., A, and B at any time")."""
+    if len(units) < 2 or not sentence.markers or _CLOSING_TIME.search(sentence.text.rstrip(" .!?;")) is None:
+        return False
     last = units[-1]
-    return (
-        len(units) > 1
-        and last.joiner == "and"
-        and len(last.tasks) == 1
-        and not last.seq_after_prev
-        and _CLOSING_TIME.search(sentence.text) is not None
-    )
+    if any(k in _SEQUENCE for k, _ in sentence.markers):
+        return True
+    return last.joiner == "and" and len(last.tasks) == 1 and not last.seq_after_prev
 
 
 # a closing phrase that frees a time, not an order ("whenever you like", "at any point"; not "in whatever

@@ -31,7 +31,7 @@ from nl2hltl2plan.language.content_words import free_order_phrase
 from nl2hltl2plan.language.grammar.repeats import repeated_for_another
 from nl2hltl2plan.language.grammar.restated import count_fits, restated
 from nl2hltl2plan.language.grammar.treatments_said import treatments_said
-from nl2hltl2plan.language.grounding import find_mentions, phrase_lines
+from nl2hltl2plan.language.grounding import alfred_lookup, find_mentions, phrase_lines
 from nl2hltl2plan.language.spelling import respelt
 from nl2hltl2plan.language.statements import RELATIVE_PLACE
 
@@ -45,6 +45,32 @@ _OPENER = re.compile(
     r"(?=[a-z])",
     re.I,
 )
+# "first tho put X" as texted is "first, though, put X", which the rules read as "but first" (X before what
+# was just said: `order_phrases`); "then tho put X": "though" after another order word carries nothing. Left,
+# the order word was no marker and the order was lost
+_ORDER_THO = re.compile(r"\b(first|then|next|lastly|last|finally)\s+(?:tho|though)\b(?!\s*,)", re.I)
+# "A, and B when you're done (with that)": a done-clause closing the clause of B, with nothing after it, says
+# B comes after the clause before ("A, and then B"); left, its "when" was an order nobody read. Inside a
+# sentence only ("when you're done, put ..." opens a clause the rules read)
+_DONE_AT_END = re.compile(
+    r"(?P<join>,\s*(?:and\s+)?|\s+and\s+)(?!then\b)(?P<y>[a-z](?:(?!\band\b)[^,.;!?])*?)\s+(?:when|once|after)\s+"
+    r"(?:you're|you\s+are|you've|you\s+have|it's|that's)\s+(?:done|finished|through)"
+    r"(?:\s+with\s+(?:that|it|this|those|them))?\s*(?=[.;!?]|$)",
+    re.I,
+)
+
+
+def _order_tho(m: re.Match[str]) -> str:
+    return f"{m[1]}, though," if m[1].lower() == "first" else m[1]
+
+
+def _done_at_end(m: re.Match[str]) -> str:
+    """ "A and B when you're done" -> "A and then B"; after a list ("A, B, and C when you're done with that")
+    which clauses "that" is is not plain (and "A, B, and then C" reads a sequence), so it is left."""
+    head = re.split(r"[.;!?]", m.string[: m.start()])[-1]
+    return m[0] if "," in head else f"{m['join']}then {m['y']}"
+
+
 _START_OPENER = re.compile(
     r"^\s*(?:(?:ok|okay|alright|all\s+right|so|well|right)\b\s*,?\s*)*(?:ok|okay|alright|all\s+right|so|well|right)\s*,\s*",
     re.I,
@@ -164,8 +190,10 @@ def everyday(text: str) -> str:
     text = _STEP_COLON.sub(r"\1 ", _ARROW.sub(" onto ", text))
     if _BELONGS.search(text):
         text = _PUT_THEM_THERE.sub("", text)
-    text = _THING_FIRST.sub(lambda m: f"{m['lead']}take {m['np']}, ", _THERE.sub(_there_named, text))
-    text = _HESITATION.sub(" ", text)
+    text = _IT_PLACE.sub(_fixture_named, _THERE.sub(_there_named, text))
+    text = _THING_FIRST.sub(lambda m: f"{m['lead']}take {m['np']}, ", text)
+    text = _HESITATION.sub(" ", _ORDER_THO.sub(_order_tho, text))
+    text = _DONE_AT_END.sub(_done_at_end, text)
     text = re.sub(r"(\s*,)+", ",", text)  # the commas left where fillers were
     text = _LIKE.sub(",", _TAG.sub("", text))
     text = _START_OPENER.sub("", _OPENER.sub(r"\1", text))
@@ -213,11 +241,15 @@ _FREE_REMARK = re.compile(rf"\b{_FREE_ORDER}\b", re.I)
 
 # "put the egg (in) there too", "then the egg in there": "there" is the last destination named before it
 # ("put the bread in the fridge, then put the egg in there too"); with none before, it stays, and is read
-# or refused as it is
+# or refused as it is. "on it too" / "in it as well" is the same place ("put the book on the bed. put the
+# pillow on it too", "two remotes on the couch and two cards on it too"); a bare "on it" may be a thing
+# just named ("put a fork in a cup and ... put the cup in it"), and is left
 _THERE = re.compile(
-    r"(?P<head>\b(?:put|place|set|stick|pop|drop|leave|store|move)\s+(?:it|them|(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)"
-    r"|(?:(?<=\bthen\s)|(?<=\band\s))(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)"
-    r"\s+(?:(?:in|into|inside|on|onto)\s+)?there\b(?=\s*(?:too|as\s+well|also)?\s*(?:[,.;!?]|$|and\b|then\b))",
+    r"(?P<head>\b(?:put|place|set|stick|pop|drop|leave|store|move|throw|toss)\s+"
+    r"(?:it|them|(?:the|a|an|two|both|\d)\s+[a-z]+(?:\s+[a-z]+)?)"
+    r"|(?:(?<=\bthen\s)|(?<=\band\s))(?:the|a|an|two|both|\d)\s+[a-z]+(?:\s+[a-z]+)?)"
+    r"\s+(?:(?:(?:in|into|inside|on|onto)\s+)?there\b(?=\s*(?:too|as\s+well|also)?\s*(?:[,.;!?]|$|and\b|then\b))"
+    r"|(?:in|into|inside|on|onto)\s+it\s+(?=(?:too|as\s+well|also)\s*(?:[,.;!?]|$|and\b|then\b)))",
     re.I,
 )
 _NEGATED = re.compile(r"(?:\bnot|n't|\bnever|\bno)\s+(?:\w+\s+)?$", re.I)
@@ -242,7 +274,38 @@ def _there_named(m: re.Match[str]) -> str:
         return m[0]
     prep, place = places[-1]
     prep = "in" if prep == "to" else prep  # "walk to the sink ... in there"
-    return f"{m['head']} {prep} the {place.surface}"
+    return f"{m['head']} {prep} the {place.surface}" + (" " if m[0].endswith(" ") else "")
+
+
+# a bare "it" as a place, where it can only be a fixture that holds things (a bed, a fridge: ALFRED cannot
+# pick it up): the one thing named before ("go to the fridge and put the egg in it", "wash the sink then put
+# the cup in it"), or the place of a "before you ..." clause just before, where the thing is not there yet
+# ("before you put the book on the bed, put the pillow on it"). Where a thing was put there ("put the laptop
+# on the bed then put the book on it", "set the cup in the sink and drop a fork into it") "it" may be that
+# thing, and is left to the rules
+_IT_PLACE = re.compile(
+    r"(?P<head>\b(?:put|place|set|stick|pop|drop|leave|store|throw|toss)\s+"
+    r"(?:the|a|an|two|both|\d)\s+[a-z]+(?:\s+[a-z]+)?)\s+(?P<prep>in|into|inside|on|onto)\s+it\b",
+    re.I,
+)
+_BEFORE_PLACING = re.compile(
+    r"(?:^|[.;!?]\s+)before\s+you\s+[a-z]+\s+(?:the|a|an|two|both|\d)\s+[a-z]+(?:\s+[a-z]+)?\s+"
+    r"(?:in|into|on|onto|inside)\s+(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?\s*,?\s*$",
+    re.I,
+)
+
+
+def _fixture_named(m: re.Match[str]) -> str:
+    """ "put the pillow on it" -> "put the pillow on the bed" (see above); else as it is."""
+    said = m.string[: m.start()]
+    named = [x for x in find_mentions(said) if not x.entry.generic]
+    look = alfred_lookup()
+    if not named or named[-1].plural or look is None or (len(named) > 1 and not _BEFORE_PLACING.search(said)):
+        return m[0]
+    a = look(named[-1].entry.canonical)
+    if a is None or a.pickupable or not a.receptacle:
+        return m[0]
+    return f"{m['head']} {m['prep']} the {named[-1].surface}"
 
 
 # "the mug that's on the counter, put it in the sink": the thing named first, then what to do with "it"

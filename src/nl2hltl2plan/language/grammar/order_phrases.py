@@ -248,6 +248,39 @@ def done_opener_closed(text: str) -> str:
     return _DONE_OPENER.sub(lambda m: f"{m['clause']}, ", text)
 
 
+# "before you put the plunger in the cabinet put the soap on the counter" / "after you wash the mug put it
+# in the sink": a sentence that opens with a subordinate clause and has no comma before its main verb (as
+# people type); without one the clause's reference swallowed the main clause and no task was read. The
+# main verb is the first base-form verb after the clause's own (not after a subject, an auxiliary or an
+# article: "before you put the clean mug ..."), as `subordinate_first` finds it.
+_SUBORDINATE_OPENER = re.compile(r"(?:^|(?<=[.;!?]\s))(?:before|after|once|when)\s+(?=you\b|we\b|i\b)", re.I)
+_ARTICLES = frozenset({"the", "a", "an", "some", "my", "your", "this", "that", "its", "their"})
+
+
+def opener_closed(text: str) -> str:
+    """ "before you put X in Y put Z in W" -> "before you put X in Y, put Z in W" (see above).
+
+    >>> opener_closed("before you put the mug in the sink put the egg in the fridge")
+    'before you put the mug in the sink, put the egg in the fridge'
+    """
+    out, pos = [], 0
+    for m in _SUBORDINATE_OPENER.finditer(text):
+        end = re.search(r"[,.;!?]|$", text[m.end() :])
+        if end is None or (end[0] == "," and end.start() > 0):
+            continue  # the writer set the clause apart: the rules read it
+        words = tokens(text[m.end() : m.end() + end.start()])
+        main = next(
+            (w for k, w in enumerate(words[2:], 2)
+             if w[0] in G.VERBS and G.VERBS[w[0]][1] == w[0]
+             and words[k - 1][0] not in _SUBJECT_OR_AUX | _ARTICLES),
+            None,
+        )  # fmt: skip
+        if main is not None:
+            out.append(text[pos : m.end() + main[1]].rstrip() + ", ")
+            pos = m.end() + main[1]
+    return "".join(out) + text[pos:]
+
+
 # "once that's done": "then" (`sentences`); "..., and once all that is done, Y" / "once everything is done"
 # open a sentence as other references do (left in, the clause took Y into its reference and put Y first)
 _NO_CLAUSE = frozenset({"that", "this", "it"})

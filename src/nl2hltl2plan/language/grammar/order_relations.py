@@ -57,6 +57,7 @@ def relate(
         _marker_edges(k, tasks, (free, loose), b, text, edges)
         _step_edges(k, tasks, steps, free, edges)
     _first_edges(tasks.units, steps, free, edges)
+    _leading_last(tasks.units, free, edges)
     _sentence_edges(relations, tasks, b, edges)
     _first_after_others(tasks, free, edges, b)
     return _order(edges, tasks)
@@ -520,6 +521,19 @@ def _first_edges(units: list[Unit], steps: list[int], free: set[int], edges: Edg
         stated = nx.transitive_closure(nx.DiGraph(list(edges))) if stated is None else stated
         later = [t for t in later if t not in free and not any(stated.has_edge(t, a) for a in u.tasks)]
         edges.update((a, b2) for a in u.tasks for b2 in later)
+
+
+def _leading_last(units: list[Unit], free: set[int], edges: Edges) -> None:
+    """ "Last, A; first B" / "Finally A. Then B": a "last" on the first task said has no task before it to
+    come after (`_marker_edges` reads "finally" of the tasks said before); the writer said the order in
+    reverse, and A comes after every task of a later sentence not allowed at any time ("finally A and B"
+    says nothing of B)."""
+    said = [k for k, u in enumerate(units) if u.tasks]
+    if not said or not any(kind == G.FINALLY for kind, _ in units[said[0]].markers):
+        return
+    head, at = units[said[0]].tasks, units[said[0]].sentence
+    later = [t for u in units[said[0] + 1 :] if u.sentence != at for t in u.tasks if t not in free]
+    edges.update((t, a) for t in later for a in head)
 
 
 def _sentence_edges(relations: list[RelationSentence], tasks: Tasks, b: TaskBuilder, edges: Edges) -> None:

@@ -22,6 +22,7 @@ from nl2hltl2plan.language.grammar.order_phrases import (
     not_before_as_after,
     not_one_reference,
     one_last_step,
+    opener_closed,
     subordinate_first,
     the_moment,
 )
@@ -98,7 +99,7 @@ def read_sentences(text: str) -> Sentences:
 
 # "Do them in that order.": a sentence whose order is about the tasks stated before it
 _DO_THEM = re.compile(
-    r"^(?:(?:please|now)\s+)?(?:do|perform|complete|handle|carry\s+out)\s+(?:them|these|those|it\s+all|"
+    r"^(?:(?:please|now)\s+)?(?:do|perform|complete|handle|carry\s+out)\s+(?:them|these|those|it(?:\s+all)?|"
     r"all\s+of\s+(?:them|these|those|it)|everything|the\s+(?:tasks|steps|jobs))(?:\s+please)?$",
     re.IGNORECASE,
 )
@@ -476,7 +477,7 @@ def normalize(text: str) -> str:
     text = after_the_step(text)
     text = _THEN_INSIDE.sub(", then ", text)
     text = _DONE_WITH.sub(lambda m: _as_cased("after ", m[1]), text)
-    text = closing_orders(subordinate_first(finished_thing(done_opener_closed(text))))
+    text = closing_orders(subordinate_first(finished_thing(done_opener_closed(opener_closed(text)))))
     return supply_put(re.sub(r"\s+", " ", text).strip())
 
 
