@@ -23,6 +23,7 @@ from nl2hltl2plan.language.content_words import DETERMINERS, FreeOrder, Unread, 
 from nl2hltl2plan.language.grounding import Mention, camel_words, find_mentions, sentence_start, tokens
 from nl2hltl2plan.language.parse_usage import ParseUsage
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, transitive_closure
+
 # "Until the plate is on the shelf, don't put X on the shelf": the guide's "Do not Y until X" with the
 # reference first (the negated task was dropped at exit 0); the negation reader leaves it to
 # `grammar.order_phrases.not_before_as_after`, which reads it as "After X, Y"

@@ -85,9 +85,13 @@ _NOT_BEFORE_TASK = re.compile(
 )
 
 
+# "until then" / "until that is done": "after that"
+_THAT = re.compile(r"^(?:then|(?:that|this|it)(?:'s|\s+is)\s+(?:done|finished|complete))$", re.I)
+
+
 def not_before_as_after(text: str) -> str:
     """ "Do not put X in A before Y" -> "After Y, put X in A"; "Until Y, don't put X in A" -> the same."""
-    text = UNTIL_FIRST.sub(lambda m: f"After {'that' if m['ref'] == 'then' else m['ref']}, {m['task']}", text)
+    text = UNTIL_FIRST.sub(lambda m: f"After {_THAT.sub('that', m['ref'])}, {m['task']}", text)
     return _NOT_BEFORE_TASK.sub(lambda m: f"{'After' if m[1] == 'D' else 'after'} {m[3]}, {m[2]}", text)
 
 
@@ -186,10 +190,10 @@ _ONE_CLAUSE_TO_FINISH = re.compile(
 
 # "The last thing is to heat X" / "The last thing to do is chill X" / "The final step is to put X": a
 # sentence that names its step's place opens with that order word ("Finally, heat X"; the frame was left
-# unread, partial or refused)
+# unread, partial or refused); a verb must follow ("The last thing I need is the egg ..." is no step)
 _THE_NTH_THING = re.compile(
     r"(?:^|(?<=[.;!?]\s))the\s+(?:very\s+)?(?P<nth>first|last|final)\s+(?:thing|step|task|job)\s+"
-    r"(?:(?:to\s+do|you\s+(?:do|need\s+to\s+do)|I\s+need(?:\s+you\s+to\s+do)?)\s+)?is\s+(?:to\s+)?(?=[a-z])",
+    r"(?:(?:to\s+do|you\s+(?:do|need\s+to\s+do))\s+)?is\s+(?:to\s+)?(?=(?P<verb>[a-z]+)\b)",
     re.I,
 )
 
@@ -230,18 +234,25 @@ _YOU_DID_BOTH = re.compile(
 )
 
 
+def _nth_step(m: re.Match[str]) -> str:
+    """ "The last thing is to put X" -> "Finally, put X" ("The last thing I need is X" says no step)."""
+    if m["verb"].lower() not in G.VERBS:
+        return m[0]
+    return "First, " if m["nth"].lower() == "first" else "Finally, "
+
+
 def after_the_step(text: str) -> str:
     """ "..., do these (first,) in either order, then C" -> "... Once all that is done, C" (C after every task
     before it; "..., and after those two C" is `everyday`'s reference to every task before); "A, after which
     B" -> "A, then B"; "and at the very end C" -> "and finally C"; "and only after that B" -> "and after that
     B"; "After that, though, B" -> "After that, B"; "A, then B, and the C on D last" -> "..., and finally
     the C on D"; "before doing anything else" / "before you start," -> "before anything else";
-    "before you start on any of this" -> "before any of this"; "..., D at the very end." / "D to finish." -> "..., D
-    last."; "when you have done both" -> "when both are done"."""
+    "before you start on any of this" -> "before any of this"; "..., D at the very end." / "D to finish." ->
+    "..., D last."; "when you have done both" -> "when both are done"."""
     text = _ONE_CLAUSE_TO_FINISH.sub(r"\g<clause> last", _CLOSING_LAST.sub(" last", text))
     text = _FREE_BUT.sub(r"\g<free>. ", text)
     text = _IT_IS_THERE.sub(r"\g<lead> that is done", _THOSE_CAN_BE_FREE.sub(", ", text))
-    text = _THE_NTH_THING.sub(lambda m: "First, " if m["nth"].lower() == "first" else "Finally, ", text)
+    text = _THE_NTH_THING.sub(_nth_step, text)
     text = _YOU_DID_BOTH.sub(lambda m: f"{m['lead']} {m['what']} are done", text)
     text = _INTERJECTED.sub(r"\g<lead>, ", _FOCUS_CONNECTIVE.sub(r"\g<join>", _FOCUS_OPENER.sub("", text)))
     text = _BEFORE_YOU_START_ANY.sub(r"\1 ", _BEFORE_DOING_ANYTHING.sub(r"\1 ", text))

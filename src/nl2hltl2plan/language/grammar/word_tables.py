@@ -133,21 +133,17 @@ def _gerund(v: str) -> str:
     return v + "ing"
 
 
+# "only after you've thrown the bottle in the bin": the participle of a task a reference states
+_IRREGULAR_PAST = {
+    "take": "taken", "throw": "thrown", "hold": "held", "get": "got", "bring": "brought", "find": "found"
+}  # fmt: skip
+
+
 def _past(v: str) -> str:
     if v in {"put", "set", "cut", "lit", "shut", "read"}:
         return v
-    if v in {"take"}:
-        return "taken"
-    if v in {"throw"}:  # "only after you've thrown the bottle in the bin": a task the reference states
-        return "thrown"
-    if v in {"hold"}:
-        return "held"
-    if v in {"get"}:
-        return "got"
-    if v in {"bring"}:
-        return "brought"
-    if v in {"find"}:
-        return "found"
+    if v in _IRREGULAR_PAST:
+        return _IRREGULAR_PAST[v]
     if v.endswith("e"):
         return v + "d"
     if v.endswith("y") and v[-2] not in "aeiou":
