@@ -54,7 +54,13 @@ from nl2hltl2plan.language.landmarks import NEAR_WORDS, carried, landmark_destin
 from nl2hltl2plan.language.memo import reading_memo
 from nl2hltl2plan.language.mention_use import looked_at, unused_mentions
 from nl2hltl2plan.language.negations import NO_CONSTRAINT, about_order, unforbidden_verb
-from nl2hltl2plan.language.order_words import check_cycles, finished_words, misordered, unordered_steps
+from nl2hltl2plan.language.order_words import (
+    check_cycles,
+    finished_words,
+    misordered,
+    unordered_steps,
+    until_first_at,
+)
 from nl2hltl2plan.language.parse_usage import IMPLIED_TYPES, ParseUsage
 from nl2hltl2plan.language.prepositions import DESTINATION, preposition_before, source_at
 from nl2hltl2plan.language.statements import asked_before, says_where
@@ -535,7 +541,8 @@ def _after_negation(instruction: str, tok: tuple[str, int, int]) -> bool:
 def _until_guard(instruction: str, tok: tuple[str, int, int], parse: ParseUsage) -> bool:
     """ "Do not X until Y" is the ordering Y before X, which the parse has as a `before` pair."""
     rest = re.split(r"[.;!?]", instruction[tok[2] :], maxsplit=1)[0].lower()
-    return bool(parse.before) and re.search(r"\b(until|unless|before)\b", rest) is not None
+    said = re.search(r"\b(until|unless|before)\b", rest) is not None or until_first_at(instruction, tok[1])
+    return bool(parse.before) and said
 
 
 def _verb(

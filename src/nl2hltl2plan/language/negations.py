@@ -40,6 +40,7 @@ from nl2hltl2plan.language.grounding import (
     sentence_start,
     tokens,
 )
+from nl2hltl2plan.language.order_words import until_first_at
 from nl2hltl2plan.language.spec_builder import spec_name
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, ConstraintSpec
 from nl2hltl2plan.logic.atom import Atom
@@ -192,7 +193,9 @@ def _an_ordering(instruction: str, tok: tuple[str, int, int]) -> bool:
     """ "Do not X until you Y" (and "before you", "unless you"): the composed instructions' way to say
     Y before X, both to be done, which the task parser reads as an ordering."""
     rest = re.split(r"[.;!?]", instruction[tok[2] :], maxsplit=1)[0].lower()
-    return re.search(r"\b(until|till|before|unless) you\b", rest) is not None
+    if re.search(r"\b(until|till|before|unless) you\b", rest) is not None:
+        return True
+    return until_first_at(instruction, tok[1])  # "Until the plate is on the shelf, don't put X there"
 
 
 def about_order(instruction: str, tok: tuple[str, int, int]) -> bool:

@@ -24,6 +24,21 @@ from nl2hltl2plan.language.grounding import Mention, camel_words, find_mentions,
 from nl2hltl2plan.language.parse_usage import ParseUsage
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, transitive_closure
 
+# "Until the plate is on the shelf, don't put X on the shelf": the guide's "Do not Y until X" with the
+# reference first (the negated task was dropped at exit 0); the negation reader leaves it to
+# `grammar.order_phrases.not_before_as_after`, which reads it as "After X, Y"
+UNTIL_FIRST = re.compile(
+    r"(?:^|(?<=[.;!?]\s))[Uu]ntil\s+(?:you(?:'ve|\s+have)?\s+)?(?P<ref>[^,.;!?]+?)\s*,\s*(?:please\s+)?"
+    r"(?:do\s+not|don't|dont)\s+(?P<task>(?:put|place|move|set|bring|take|throw|drop|carry)\b[^.;!?]+)"
+)
+
+
+def until_first_at(text: str, at: int) -> bool:
+    """Does the sentence around `at` open with "Until X, don't put Y" (`UNTIL_FIRST`)?"""
+    start = sentence_start(text, at)
+    start += len(text[start:]) - len(text[start:].lstrip())
+    return UNTIL_FIRST.match(text, start) is not None
+
 # "With the bat done, Y" / "Whenever the vase is sorted, Y" / "With the mug out of the way, Y": a thing's
 # task said to be finished opens a reference, as "Once the bat is done, Y" does (the words that say a step
 # is finished: done, sorted, handled, taken care of ...; `grammar.order_phrases.finished_thing` reads it)

@@ -93,6 +93,7 @@ _GAP_SPLIT = re.compile(
 _GAP_JOINER = {"finally": "finally", "lastly": "finally"}
 # a clause's own verb may take a pronoun before the list ("put it on the desk and then the pen in the drawer":
 # the verb is elided only after it); the later segments must name movable things, each with its own place
+_AT = re.compile(r"at\s+", re.I)
 _PRONOUN_FIRST = re.compile(r"(?:it|them)\s+(?:in|into|on|onto|inside)\s", re.I)
 
 
@@ -153,6 +154,8 @@ def expand_gapping(
         if own:
             cut = len(text.split(None, 1)[0])
             v, args, a0 = text[:cut], text[cut:].lstrip(), len(text) - len(text[cut:].lstrip())
+            if words[0] == "look" and (at := _AT.match(args)):  # "look at the box ..., then the book"
+                v, args, a0 = f"{v} at", args[at.end() :], a0 + at.end()
         elif verb and k == 0 and not _STATEMENT_WORDS.intersection(words):
             v, args, a0 = verb, text, 0
         else:

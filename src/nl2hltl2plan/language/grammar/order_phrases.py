@@ -9,7 +9,7 @@ import re
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.phrases import tokens
 from nl2hltl2plan.language.grounding import sentence_start
-from nl2hltl2plan.language.order_words import WITH_DONE
+from nl2hltl2plan.language.order_words import UNTIL_FIRST, WITH_DONE
 from nl2hltl2plan.language.statements import REFERENCE
 
 # "Y before X, but after Z" / "Y after X and before Z": a second connective after the first reference opens
@@ -85,8 +85,13 @@ _NOT_BEFORE_TASK = re.compile(
 )
 
 
+# "until then" / "until that is done": "after that"
+_THAT = re.compile(r"^(?:then|(?:that|this|it)(?:'s|\s+is)\s+(?:done|finished|complete))$", re.I)
+
+
 def not_before_as_after(text: str) -> str:
-    """ "Do not put X in A before Y" -> "After Y, put X in A"."""
+    """ "Do not put X in A before Y" -> "After Y, put X in A"; "Until Y, don't put X in A" -> the same."""
+    text = UNTIL_FIRST.sub(lambda m: f"After {_THAT.sub('that', m['ref'])}, {m['task']}", text)
     return _NOT_BEFORE_TASK.sub(lambda m: f"{'After' if m[1] == 'D' else 'after'} {m[3]}, {m[2]}", text)
 
 
@@ -120,6 +125,13 @@ _FOCUS_CONNECTIVE = re.compile(
     r"(?<=\w)(?P<join>\s*,?\s+(?:and\s+)?)(?:only|just|right|immediately)\s+"
     r"(?=(?:after\s+(?:that|this)|once\s+(?:that|this|it)|then)\b)",
     re.I,
+)
+
+
+# "A. Only after that, B" / "Only then, B" / "Only once the mug is in, B": a sentence opened by the focus word
+# (it was read as a word of its own, "Only, then B": partial)
+_FOCUS_OPENER = re.compile(
+    r"(?:^|(?<=[.;!?]\s))(?:only|just|right|immediately)\s+(?=(?:after|once|when|then)\b)", re.I
 )
 
 
@@ -166,6 +178,51 @@ _CLOSING_LAST = re.compile(
 )
 
 
+# "Put two phones on the dresser to finish." after other sentences: a sentence of one clause (no "and", no
+# comma) closed by "to finish" is its task done last, as "last" (it was left unread at exit 0, a wrong
+# reading); "A and B to finish" still does not say which is last, and "to finish the job" is a purpose
+_ONE_CLAUSE_TO_FINISH = re.compile(
+    r"(?:^|(?<=[.;!?]\s))(?P<clause>(?:(?!\band\b)[^,.;!?])+?)\s+to\s+(?:finish(?:\s+up)?|wrap\s+(?:it\s+|things\s+)?up|"
+    r"conclude)(?=\s*(?:[.!?]|$))",
+    re.I,
+)
+
+
+# "The last thing is to heat X" / "The last thing to do is chill X" / "The final step is to put X": a
+# sentence that names its step's place opens with that order word ("Finally, heat X"; the frame was left
+# unread, partial or refused); a verb must follow ("The last thing I need is the egg ..." is no step)
+_THE_NTH_THING = re.compile(
+    r"(?:^|(?<=[.;!?]\s))the\s+(?:very\s+)?(?P<nth>first|last|final)\s+(?:thing|step|task|job)\s+"
+    r"(?:(?:to\s+do|you\s+(?:do|need\s+to\s+do))\s+)?is\s+(?:to\s+)?(?=(?P<verb>[a-z]+)\b)",
+    re.I,
+)
+
+
+# "A, and B; those two can be done in any order, but only after X": the subject names the tasks just said,
+# as a trailing ", in any order" does (left, "those two can be done" was a clause with no task, and X was
+# lost: partial)
+_THOSE_CAN_BE_FREE = re.compile(
+    r"\s*[;,]\s*(?:those|these|the|both)(?:\s+(?:two|three|four))?(?:\s+(?:tasks|things|steps|jobs))?\s+"
+    r"(?:can|may|could)\s+(?:be\s+done|happen|go)\s+(?=in\s+(?:any|either|whatever|whichever)\s+order\b)",
+    re.I,
+)
+
+
+# "Put a book on the chair. As soon as it's there, Y" / "once they're in place": the thing of the task just
+# said, where it was put: "once that is done" (the grammar could not tell which task "it's there" names)
+_IT_IS_THERE = re.compile(
+    r"\b(?P<lead>once|when|as\s+soon\s+as|after|now\s+that)\s+(?:it|they)(?:'s|'re|\s+is|\s+are)\s+"
+    r"(?:there|in\s+place|done|finished)(?=\s*,)",
+    re.I,
+)
+
+
+# "Put a book on the desk whenever you want, but put the two books there only after X": the free task's
+# clause ends at the free phrase; the trailing reference is about the clause after "but" alone (it ordered
+# the free book after X too, a wrong reading)
+_FREE_BUT = re.compile(rf"\b(?P<free>{G.WHENEVER}|at\s+any\s+time)\s*,\s*but\s+(?=[a-z])", re.I)
+
+
 # "when you have done both, Y" / "once you've finished those two things" / "when you're done with both of
 # them": "when both are done", the reference to the two tasks before that the sentence rules read (the
 # writer's own doing was not read: "could not tell which tasks 'you have done both' refers to")
@@ -192,17 +249,28 @@ def _free_clause_closed(m: re.Match[str]) -> str:
     return f"{m['join']}{m['clause']} {m['free']}"
 
 
+def _nth_step(m: re.Match[str]) -> str:
+    """ "The last thing is to put X" -> "Finally, put X" ("The last thing I need is X" says no step)."""
+    if m["verb"].lower() not in G.VERBS:
+        return m[0]
+    return "First, " if m["nth"].lower() == "first" else "Finally, "
+
+
 def after_the_step(text: str) -> str:
     """ "..., do these (first,) in either order, then C" -> "... Once all that is done, C" (C after every task
     before it; "..., and after those two C" is `everyday`'s reference to every task before); "A, after which
     B" -> "A, then B"; "and at the very end C" -> "and finally C"; "and only after that B" -> "and after that
     B"; "After that, though, B" -> "After that, B"; "A, then B, and the C on D last" -> "..., and finally
     the C on D"; "before doing anything else" / "before you start," -> "before anything else";
-    "before you start on any of this" -> "before any of this"; "..., D at the very end." -> "..., D
-    last."; "when you have done both" -> "when both are done"; "..., and at any point B." -> "..., and B at
-    any point."."""
-    text = _YOU_DID_BOTH.sub(lambda m: f"{m['lead']} {m['what']} are done", _CLOSING_LAST.sub(" last", text))
-    text = _INTERJECTED.sub(r"\g<lead>, ", _FOCUS_CONNECTIVE.sub(r"\g<join>", text))
+    "before you start on any of this" -> "before any of this"; "..., D at the very end." / "D to finish." ->
+    "..., D last."; "when you have done both" -> "when both are done"; "..., and at any point B." -> "..., and
+    B at any point."."""
+    text = _ONE_CLAUSE_TO_FINISH.sub(r"\g<clause> last", _CLOSING_LAST.sub(" last", text))
+    text = _FREE_BUT.sub(r"\g<free>. ", text)
+    text = _IT_IS_THERE.sub(r"\g<lead> that is done", _THOSE_CAN_BE_FREE.sub(", ", text))
+    text = _THE_NTH_THING.sub(_nth_step, text)
+    text = _YOU_DID_BOTH.sub(lambda m: f"{m['lead']} {m['what']} are done", text)
+    text = _INTERJECTED.sub(r"\g<lead>, ", _FOCUS_CONNECTIVE.sub(r"\g<join>", _FOCUS_OPENER.sub("", text)))
     text = _BEFORE_YOU_START_ANY.sub(r"\1 ", _BEFORE_DOING_ANYTHING.sub(r"\1 ", text))
     text = _BEFORE_YOU_START.sub(r"\1 anything else", text)
     text = _LAST_ITEM.sub(r"\g<join>finally \g<item>", text)
@@ -399,7 +467,7 @@ def one_last_step(markers: list[tuple[str, str]]) -> list[tuple[str, str]]:
 
 def finished_thing(text: str) -> str:
     """ "With the bat done, Y" / "Whenever the vase is sorted, Y" -> "Once the bat is done, Y" ("whenever"
-    with no state is a freedom, `word_tables._WHENEVER`; "with the bat" alone is no reference)."""
+    with no state is a freedom, `word_tables.WHENEVER`; "with the bat" alone is no reference)."""
 
     def once(m: re.Match[str]) -> str:
         if m["lead"].lower() == "with" and m["verb"]:  # "with the mug is done": not the absolute form

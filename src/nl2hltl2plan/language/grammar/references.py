@@ -139,7 +139,7 @@ def _ref_np(words: list[str]) -> NP:
         words[k] in G.VERBS
         or words[k] in G.VERB_PAST
         or words[k] in G.PARTICLES
-        or words[k] in {"having", "been", "is", "are", "was", "you"}
+        or words[k] in {"having", "have", "has", "had", "been", "is", "are", "was", "you"}
     ):
         k += 1
     return parse_np(
@@ -164,15 +164,7 @@ def _hits_by_object(
     tiers = [[i for i in candidates if (other := nps[i]) is not None and other.key == key]]
     if np.entry is not None:
         types = set(np.entry.types)
-        tiers.append(
-            [
-                i
-                for i in candidates
-                if (other := nps[i]) is not None
-                and other.entry is not None
-                and types & set(other.entry.types)
-            ]
-        )
+        tiers.append([i for i in candidates if _shares_a_type(types, nps[i], specs[i])])
         tiers.append(
             [
                 i
@@ -185,6 +177,16 @@ def _hits_by_object(
             if earlier := [i for i in tier if i < done_before]:
                 return earlier
     return next((tier for tier in tiers if tier), [])
+
+
+def _shares_a_type(types: set[str], other: NP | None, spec: BaseTaskSpec) -> bool:
+    """Does a task's word share a type with the reference's, among the types the task took where its word
+    has several ("the pump bottle" is no "bar of soap" read as SoapBar, though the word may be SoapBottle)?"""
+    if other is None or other.entry is None:
+        return False
+    shared = types & set(other.entry.types)
+    took = set(spec.object) & set(other.entry.types)
+    return bool(shared) and (not took or bool(shared & took))
 
 
 _STATE_KINDS: dict[str, Kind] = {

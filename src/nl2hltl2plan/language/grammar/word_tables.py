@@ -133,19 +133,17 @@ def _gerund(v: str) -> str:
     return v + "ing"
 
 
+# "only after you've thrown the bottle in the bin": the participle of a task a reference states
+_IRREGULAR_PAST = {
+    "take": "taken", "throw": "thrown", "hold": "held", "get": "got", "bring": "brought", "find": "found"
+}  # fmt: skip
+
+
 def _past(v: str) -> str:
     if v in {"put", "set", "cut", "lit", "shut", "read"}:
         return v
-    if v in {"take"}:
-        return "taken"
-    if v in {"hold"}:
-        return "held"
-    if v in {"get"}:
-        return "got"
-    if v in {"bring"}:
-        return "brought"
-    if v in {"find"}:
-        return "found"
+    if v in _IRREGULAR_PAST:
+        return _IRREGULAR_PAST[v]
     if v.endswith("e"):
         return v + "d"
     if v.endswith("y") and v[-2] not in "aeiou":
@@ -413,7 +411,7 @@ THEN, FINALLY, FIRST, FREE, BEFORE_PREV, AFTER_ALL, AFTER_REF, BEFORE_REF, NOCON
 IN_ORDER = "in_order"  # "..., in that order": the sentence's tasks in the order they are named
 IN_REVERSE = "in_reverse"  # "..., in reverse order": the sentence's tasks last named first
 # "whenever convenient", "at whatever point suits you", "at your convenience": a free task
-_WHENEVER = (
+WHENEVER = (
     r"whenever(?:\s+(?:convenient|possible|you\s+(?:like|want|wish|can)|it\s+suits\s+you|you\s+get\s+(?:a|the)\s+chance))?|"
     r"at\s+(?:any|whatever|some)\s+point(?:\s+(?:that\s+)?(?:suits\s+you|you\s+like|you\s+want|works\s+for\s+you))?|"
     r"at\s+your\s+(?:convenience|leisure)"
@@ -470,7 +468,7 @@ LEADING: list[tuple[re.Pattern[str], str]] = [
         re.compile(
             r"^(?:in\s+any\s+order|at\s+any\s+time|any\s*time|at\s+whatever\s+time|simultaneously|meanwhile|"
             r"in\s+the\s+meantime|in\s+no\s+(?:particular|specific|set)\s+order|in\s+whatever\s+order|"
-            rf"at\s+the\s+same\s+time|in\s+parallel|independently|concurrently|{_WHENEVER})\b\s*[,:]?\s*",
+            rf"at\s+the\s+same\s+time|in\s+parallel|independently|concurrently|{WHENEVER})\b\s*[,:]?\s*",
             _F,
         ),
         FREE,
@@ -513,7 +511,7 @@ LEADING: list[tuple[re.Pattern[str], str]] = [
 ]
 _FREE_T = (
     rf"(?:at\s+any\s+time|at\s+whatever\s+time|in\s+any\s+order|any\s+order|in\s+any\s+sequence|anytime|any\s+time|"
-    rf"{_WHENEVER}|"
+    rf"{WHENEVER}|"
     r"in\s+whatever\s+order(?:\s+you\s+(?:like|want|prefer))?|whatever\s+order\s+(?:works|is\s+fine)|in\s+no\s+(?:particular|specific|set)\s+order|"
     r"(?:the\s+)?order\s+is\s+(?:up\s+to\s+you|your\s+call|yours\s+to\s+choose)|in\s+parallel|simultaneously|concurrently|"
     r"independently|at\s+your\s+(?:convenience|leisure))"
