@@ -127,7 +127,7 @@ def test_one_leaf_is_carried_out_by_several_arms():
 
 
 @pytest.mark.slow
-@pytest.mark.sweep  # the plain search's 9 s; the A* it checks plans in every other test here
+@pytest.mark.sweep  # the slow plain search; the A* it checks plans in every other test here
 def test_astar_matches_plain_dijkstra_on_a_small_task():
     hw = handover_world("square")
     spec = [{"task1": "F(task1.1 & F task1.2)"}, {"task1.1": 'F "at(Red,H)"', "task1.2": 'F "away(Yellow)"'}]
@@ -160,7 +160,7 @@ def test_the_eight_task_specs_are_valid_and_bench_instances_are_seeded():
     assert instance(TASKS[4], 0, 3).start_region("Red") == "G"
 
 
-# tasks 1 and 4 plan the same way as 5 and 6, for 3 and 9 s: `sweep` (docs/reliability.md)
+# tasks 1 and 4 plan the same way as 5 and 6, for several times as long: `sweep` (docs/reliability.md)
 SLOW_TWINS = [pytest.mark.slow, pytest.mark.sweep]
 
 
