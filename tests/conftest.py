@@ -16,6 +16,7 @@ sys.dont_write_bytecode = False
 os.environ.pop("PYTHONDONTWRITEBYTECODE", None)
 
 import pytest  # noqa: E402
+import sampled_tables  # noqa: E402
 
 from nl2hltl2plan.config import data_dir  # noqa: E402
 
@@ -43,7 +44,9 @@ if _count_readings:
         _stop_counting()
 
 
+@pytest.hookimpl(tryfirst=True)  # before pytest's own `-m` deselection reads the marks
 def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
+    sampled_tables.mark_sampled(items)  # most cases of a large table run only with `-m sweep`
     if data_dir(required=False) is not None:
         return
     skip = pytest.mark.skip(reason="needs ../shared/data (set NL2HLTL2PLAN_DATA)")

@@ -117,6 +117,7 @@ CASES = [
 ]
 
 
+@pytest.mark.whole  # each case is another input's refusal, not one path read many times
 @pytest.mark.parametrize(("name", "argv", "code", "words"), CASES, ids=[_case_id(c) for c in CASES])
 def test_bad_input_gives_one_line_error(
     name: str,

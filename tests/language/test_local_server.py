@@ -26,6 +26,7 @@ class Fruits(BaseModel):
     fruits: list[str] = Field(min_length=1, max_length=3)
 
 
+@pytest.mark.sweep  # a real model for 10 s or more; test_llm_client.py takes the client's path on stubs
 def test_local_server_answers_schema_json_through_openai_client(tmp_path):
     model = _model_or_skip()
     t0 = time.monotonic()

@@ -48,6 +48,7 @@ def ray():
 
 
 @pytest.mark.slow  # starts Ray (about 8 s here) and waits out a hard time limit
+@pytest.mark.sweep  # the engine's choice is checked by test_engine_errors, its local rows by test_runner_*
 def test_ray_rows_equal_local_rows_and_resume(ray, tmp_path):
     job = make_job()
     local = run_with_engine("local", SCENARIOS, job, tmp_path / "local.jsonl", workers=1)
