@@ -112,8 +112,8 @@ def goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
 
     mods = rf"((?:\s*,?\s*{MOD})*)"
     # "one by one, put all three blocks on I": the modifier read where it usually stands, after the object
-    # (not "all": "after finishing all, put ...")
-    m.sub(rf"\b((?!all\b){MOD})\s*,?\s*({VERB}\s+B\d+)", r"\2 \1")
+    # (not "all": "after finishing all, put ..."; not a state: "after the rest is over, put ...")
+    m.sub(rf"\b(?<!\bis\s)(?<!\bare\s)(?<!\bbeen\s)((?!all\b){MOD})\s*,?\s*({VERB}\s+B\d+)", r"\2 \1")
 
     def matched(x: re.Match[str], k: int) -> str:  # groups from k: blocks, modifiers, place, modifiers
         place, text = m.places[int(x.group(k + 2))], x.group(0).strip()
