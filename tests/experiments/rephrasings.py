@@ -2287,8 +2287,8 @@ VALID_H142: dict[str, dict[int, list[str]]] = {
 # on first contact.
 DEV_H181: dict[str, dict[int, list[str]]] = {
     "comma_only_when": {
-        4: ["Put the green apple and the orange in the yellow plate, in any order. Put the carrot and the red "
-            "apple in the blue plate, in any order, only when both are there.",
+        4: ["Put the green apple and the orange in the yellow plate, in any order. Put the carrot and the "
+            "red apple in the blue plate, in any order, only when both are there.",
             "Green apple and orange into the yellow plate, either order. Carrot and red apple into the blue "
             "plate, either order, but only once both are there.",
             "Put the green apple and the orange in the yellow plate in any order, and then, only when both "
@@ -2311,9 +2311,9 @@ DEV_H181: dict[str, dict[int, list[str]]] = {
 # end.
 VALID_H181: dict[str, dict[int, list[str]]] = {
     "grandparent_letter": {
-        4: ["Dear robot, please put the green apple and the orange in the yellow plate, in any order. Then put "
-            "the carrot and the red apple in the blue plate, in any order, only when both are there. Love, "
-            "Grandma."],
+        4: ["Dear robot, please put the green apple and the orange in the yellow plate, in any order. Then "
+            "put the carrot and the red apple in the blue plate, in any order, only when both are there. "
+            "Love, Grandma."],
     },
     "stage_manager": {
         4: ["Places, please. Green apple and orange to the yellow plate. Carrot and red apple to the blue "
@@ -2324,23 +2324,23 @@ VALID_H181: dict[str, dict[int, list[str]]] = {
             "and the red apple go into the blue plate only if both of them are in the yellow plate already."],
     },
     "commentator": {
-        4: ["The green apple and the orange go into the yellow plate, any order, and then, only when both are "
-            "there, the carrot and the red apple go into the blue plate, any order!"],
+        4: ["The green apple and the orange go into the yellow plate, any order, and then, only when both "
+            "are there, the carrot and the red apple go into the blue plate, any order!"],
     },
     "fridge_note": {
         4: ["Note: green apple + orange -> yellow plate (any order). Carrot + red apple -> blue plate (any "
             "order), but only when both are there."],
     },
     "polite_question": {
-        4: ["Could you put the green apple and the orange in the yellow plate, in either order, and, only once "
-            "both are there, the carrot and the red apple in the blue plate, in either order?"],
+        4: ["Could you put the green apple and the orange in the yellow plate, in either order, and, only "
+            "once both are there, the carrot and the red apple in the blue plate, in either order?"],
     },
     "non_native": {
-        4: ["Put green apple and orange in yellow plate any order. Carrot and red apple put in blue plate only "
-            "if both of them are in."],
+        4: ["Put green apple and orange in yellow plate any order. Carrot and red apple put in blue plate "
+            "only if both of them are in."],
     },
     "mentor": {
-        4: ["Start with the green apple and the orange in the yellow plate. The carrot and the red apple can go "
-            "in the blue plate, in whichever order, but only if both of them are in."],
+        4: ["Start with the green apple and the orange in the yellow plate. The carrot and the red apple can "
+            "go in the blue plate, in whichever order, but only if both of them are in."],
     },
 }

@@ -190,6 +190,12 @@ def _read_inverse(m: Marked, goal: GoalMaker, every: list[str], mods: str) -> No
         rf"(?:block|object|cube|pillar|item)\s+(?:each|apiece)(){mods}",
         lambda x: _fill(m, x, goal, every),
     )
+    m.sub(  # "H, I and J (are to) each get exactly one block": "each" before the verb
+        rf"\bP(\d+)\s+(?:(?:should|must|shall|will|can|may|has\s+to|have\s+to|needs?\s+to|are\s+to)\s+)?each\s+"
+        rf"(?:(?:receive|get|take|hold)s?|ends?\s+up\s+with)\s+(?:exactly\s+|only\s+|just\s+)?(?:one|a\s+single)\s+"
+        rf"(?:block|object|cube|pillar|item)\b(?!\s+of\b)(){mods}",
+        lambda x: _fill(m, x, goal, every),
+    )
     m.sub(  # "G, H, I: one block each"
         rf"(?:^|(?<=,))\s*P(\d+)\s*[:,]\s*(?:exactly\s+)?(?:one|a\s+single)\s+(?:block|object|cube|pillar|item)\s+"
         rf"(?:each|apiece)(){mods}",

@@ -99,7 +99,7 @@ def mark_places(m: Marked, scene: Scene, named_before: tuple[str, ...]) -> None:
     named = rf"\b(?:the\s+)?{count}(?:{TARGET}\s+(?:regions?|areas?|zones?)|areas?|zones?|regions)"
     m.sub(rf"{named}\s*,?\s*(?:{APPOSITION}\s*)?,?\s*(?=P\d)", " ")
     # "anywhere except P" is "on any region except P", as "outside P" is
-    anywhere_but = rf"(?:outside\s+(?:of\s+)?|anywhere\s+{OTHER_THAN}\s+)"
+    anywhere_but = rf"(?:outside\s+(?:of\s+)?|anywhere\s+{OTHER_THAN}\s+(?:(?:on|in)\s+)?)"
     m.sub(
         rf"\b(?:(?:the|an?|any|all)\s+)?(?:other\s+)?{PLACE_NOUN}\s+{OTHER_THAN}\s+P(\d+)|\b{anywhere_but}P(\d+)",
         lambda match: _complement_of(m, match),

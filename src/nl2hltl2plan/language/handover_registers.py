@@ -381,14 +381,17 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     ),
     # modal "is to" before a verb of holding, with "each" before "to" or after it ("regions H, I and J are
     # each to receive one of the blocks": must each receive)
-    # ("is to take the pillars ..." is a goal: "take" and "carry" hold only before a count of one)
+    # ("is to take the pillars ..." is a goal: "take", "carry" and "get" hold only before a count of one)
     (
-        r"\b(?:is|are)\s+(?:(each|all|both)\s+)?to\s+(?=(?:hold|contain|receive|accept)\b|(?:take|carry)\s+"
+        r"\b(?:is|are)\s+(?:(each|all|both)\s+)?to\s+(?=(?:hold|contain|receive|accept)\b|(?:take|carry|get)\s+"
         r"(?:(?:only|just|exactly|at\s+most)\s+)?(?:one|a\s+single|no\s+more\s+than)\b)",
         lambda m: f"must {m[1] or ''} ",
     ),
     # "one block of the three" is one of the three blocks
-    (r"\bone\s+(block|object|pillar|cube)\s+of\s+the\s+(two|three|[23])\b(?!\s+[a-z]+s\b)", r"one of the \2 \1s"),
+    (
+        r"\bone\s+(block|object|pillar|cube)\s+of\s+the\s+(two|three|[23])\b(?!\s+[a-z]+s\b)",
+        r"one of the \2 \1s",
+    ),
     # progressive narration: "nothing is being placed on F" (is placed), "no region is getting two blocks"
     (
         r"\b(is|are)\s+being\s+(?=(?:placed|put|set|dropped|moved|touched|handled|grabbed|picked\s+up)\b)",

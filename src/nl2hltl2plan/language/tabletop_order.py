@@ -196,7 +196,9 @@ def trailing_then_fronted(text: str, pattern: re.Pattern[str]) -> str:
             # (back over a free-order remark set off by commas too, "..., in any order, only when both are
             # there": `free_order` took the remark out before and left its commas)
             k = len(ends) - 1
-            while k > 0 and ends[k - 1][0] == "," and _SET_OFF.fullmatch(text[ends[k - 1].end() : ends[k].start()]):
+            while k > 0 and ends[k - 1][0] == ",":
+                if not _SET_OFF.fullmatch(text[ends[k - 1].end() : ends[k].start()]):
+                    break
                 k -= 1
             start = ends[k - 1].end() if k > 0 else 0
             clause = text[start : ends[-1].start()]
