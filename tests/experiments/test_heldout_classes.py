@@ -106,6 +106,10 @@ WRITTEN = [
     (4, STYLES["dev99"]["plain"]["4"]),
     (2, STYLES["dev99"]["written_out"]["2"]),
     (4, TOUCH + "After the rest is over, bring the yellow block back to region G."),
+    # h181, found by dev probes: the other steps after "finishing" and in an absolute opener; "be given"
+    (4, TOUCH + "After finishing the other steps, put the yellow block back on region G."),
+    (4, TOUCH + "With every other step done, put the yellow block back on G."),
+    (2, "Regions H, I and J should each be given exactly one block."),
 ]
 
 UNCLEAR = [

@@ -387,6 +387,12 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
         r"(?:(?:only|just|exactly|at\s+most)\s+)?(?:one|a\s+single|no\s+more\s+than)\b)",
         lambda m: f"must {m[1] or ''} ",
     ),
+    # a region "is to be given" / "should each be given" one: it receives one
+    (
+        r"\b(?:(?:is|are)\s+(?:(each|all)\s+)?to|((?:should|must|shall|will)\s+(?:each\s+|all\s+)?))be\s+given\s+"
+        r"(?=(?:exactly\s+|only\s+|just\s+)?(?:one|a\s+single)\b)",
+        lambda m: (m[2] or f"must {m[1] or ''} ") + "receive ",
+    ),
     # "one block of the three" is one of the three blocks
     (
         r"\bone\s+(block|object|pillar|cube)\s+of\s+the\s+(two|three|[23])\b(?!\s+[a-z]+s\b)",

@@ -25,7 +25,7 @@ THEN = re.compile(
     r"afterwards?|(?<![a-z]\s)(?<![a-z])after(?=\s*[,:])|thereafter|subsequently|"
     r"next(?!\s+to\b)|second(?:ly)?|(?:and\s+)?(?:finally|lastly)|"
     rf"(?:once|when|after|as\s+soon\s+as|(?<=only\s)if)\s+(?:{_THAT}(?:'s|s|\s+is|\s+are|'re)\s+{_DONE}|"
-    rf"(?:they|both|{_THAT}|both\s+of\s+them|all\s+of\s+them)(?:'re|'s|\s+are|\s+is)\s+(?:both\s+|all\s+)?"
+    rf"(?:they|both|{_THAT}|(?:both|all|the\s+two)\s+of\s+them|the\s+two)(?:'re|'s|\s+are|\s+is)\s+(?:both\s+|all\s+)?"
     rf"(?:already\s+)?{_THERE}|"
     rf"you(?:'ve|\s+have|'re|\s+are)\s+{_DONE}(?:\s+(?:with\s+)?{_THAT})?|{_DONE}))\b"
 )
