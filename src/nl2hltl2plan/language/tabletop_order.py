@@ -80,7 +80,7 @@ def inverted_condition_read(text: str, pattern: re.Pattern[str]) -> str:
 _WAIT_ON_PLATE = re.compile(
     r"\b(?P<wait>(?:only\s+)?(?:once|when|after|as\s+soon\s+as|(?<=only\s)if)\s+(?:they|both|all)(?:\s+of\s+them)?"
     r"(?:'re|\s+are)\s+(?:both\s+|all\s+)?(?:already\s+)?)(?:on|in|onto|into)\s+(?P<plate>[a-z][a-z ]*?)"
-    r"(?P<after>\s+already)?(?=\s*(?:[,.;:!?\n]|$))"
+    r"(?:\s+already)?(?=\s*(?:[,.;:!?\n]|$))"
 )
 
 
