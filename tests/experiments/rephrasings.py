@@ -2279,3 +2279,68 @@ VALID_H142: dict[str, dict[int, list[str]]] = {
             "order kindly do the needful"],
     },
 }
+
+
+# h181's development batch (session 28, issue 24): task 4's wait on both first items said in the two forms
+# held-out rephrasings still refused ("..., any order, only when both are there" set off by commas, and
+# "only if both of them are in (the yellow plate)"), written with VALID_H181 before any rule and measured
+# on first contact.
+DEV_H181: dict[str, dict[int, list[str]]] = {
+    "comma_only_when": {
+        4: ["Put the green apple and the orange in the yellow plate, in any order. Put the carrot and the "
+            "red apple in the blue plate, in any order, only when both are there.",
+            "Green apple and orange into the yellow plate, either order. Carrot and red apple into the blue "
+            "plate, either order, but only once both are there.",
+            "Put the green apple and the orange in the yellow plate in any order, and then, only when both "
+            "are there, put the carrot and the red apple in the blue plate in any order."],
+    },
+    "only_if_both_in": {
+        4: ["Put the green apple and the orange on the yellow plate. Put the carrot and the red apple on the "
+            "blue plate only if both of them are on the yellow plate.",
+            "Put the green apple and the orange in the yellow plate. The carrot and the red apple go in the "
+            "blue plate only if both of them are in.",
+            "Put the green apple and the orange in the yellow plate, in any order; then the carrot and the "
+            "red apple go in the blue plate, any order, only if both are in."],
+    },
+}
+
+
+# h181's held-out batch (session 28, issue 24): the same two forms in voices no batch used (a grandparent's
+# letter, a stage manager, a safety officer, a commentator, a fridge note, a polite question, a non-native
+# speaker, a mentor), written with DEV_H181 and committed before any rule, put aside and scored once at the
+# end.
+VALID_H181: dict[str, dict[int, list[str]]] = {
+    "grandparent_letter": {
+        4: ["Dear robot, please put the green apple and the orange in the yellow plate, in any order. Then "
+            "put the carrot and the red apple in the blue plate, in any order, only when both are there. "
+            "Love, Grandma."],
+    },
+    "stage_manager": {
+        4: ["Places, please. Green apple and orange to the yellow plate. Carrot and red apple to the blue "
+            "plate, either order, only once both are there. Thank you."],
+    },
+    "safety_officer": {
+        4: ["Put the green apple and the orange into the yellow plate, in any order. Safety rule: the carrot "
+            "and the red apple go into the blue plate only if both of them are in the yellow plate already."],
+    },
+    "commentator": {
+        4: ["The green apple and the orange go into the yellow plate, any order, and then, only when both "
+            "are there, the carrot and the red apple go into the blue plate, any order!"],
+    },
+    "fridge_note": {
+        4: ["Note: green apple + orange -> yellow plate (any order). Carrot + red apple -> blue plate (any "
+            "order), but only when both are there."],
+    },
+    "polite_question": {
+        4: ["Could you put the green apple and the orange in the yellow plate, in either order, and, only "
+            "once both are there, the carrot and the red apple in the blue plate, in either order?"],
+    },
+    "non_native": {
+        4: ["Put green apple and orange in yellow plate any order. Carrot and red apple put in blue plate "
+            "only if both of them are in."],
+    },
+    "mentor": {
+        4: ["Start with the green apple and the orange in the yellow plate. The carrot and the red apple can "
+            "go in the blue plate, in whichever order, but only if both of them are in."],
+    },
+}

@@ -17,9 +17,16 @@ misses never give the written spec, and the helpers its rules added are tested o
 - h174: "once all the rest is done"; a prohibition opened by a negative phrase with its subject after the
   verb ("at no point during this period is an object placed on F", "nowhere but E, F or G may a pillar be
   put down"); a tabletop placement that waits on two things ("only when both are there").
+- h181 (its sentences are committed batches: `dev99` / `validation33` of handover_styles_session10.json,
+  `DEV_H181` / `VALID_H181` of rephrasings.py): "anywhere except those three"; "regions H, I and J are
+  each to receive one of the blocks"; "once every other step is complete", "after the rest is over"; a
+  tabletop wait set off by commas after a free-order remark, "only if both of them are in (the yellow
+  plate)".
 """
 
 from __future__ import annotations
+
+import re
 
 import heldout_classes_h152 as h152
 import heldout_classes_h157 as h157
@@ -27,6 +34,7 @@ import heldout_classes_h161 as h161
 import heldout_classes_h167 as h167
 import heldout_classes_h174 as h174
 import pytest
+from handover_session10 import STYLES
 from handover_specs import (
     assert_not_the_written_spec,
     assert_refused_by_name,
@@ -34,6 +42,7 @@ from handover_specs import (
     assert_written_spec_or_refused,
     cases,
 )
+from rephrasings import DEV_H181, VALID_H181
 from test_tabletop import TASKS, signature, signature_or_none
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
@@ -43,6 +52,7 @@ from nl2hltl2plan.language.handover_phrases import normalise
 from nl2hltl2plan.language.handover_sentences import split_sentences
 from nl2hltl2plan.language.handover_shares import shared_out
 from nl2hltl2plan.language.tabletop_freed_steps import runs_freed
+from nl2hltl2plan.language.tabletop_order import plate_wait_read
 from nl2hltl2plan.language.tabletop_steps import identifiers_chained_read
 from nl2hltl2plan.language.translate import translate
 from nl2hltl2plan.worlds.tabletop_world import tabletop_world
@@ -55,6 +65,11 @@ HELD_HANDOVER = cases(*(table for r in ROUNDS for table in r.HELD_HANDOVER.value
 DEV_TABLETOP = cases(h152.DEV_TABLETOP, h161.DEV_TABLETOP_STEPS, h174.DEV_TABLETOP)
 READ_OR_REFUSED_TABLETOP = cases(h161.DEV_TABLETOP)
 HELD_TABLETOP = cases(*(r.HELD_TABLETOP for r in ROUNDS if hasattr(r, "HELD_TABLETOP")))
+# h181's batches, {task: [sentences]}: every development sentence (`sweep`), and the held-out ones
+H181_DEV = [(int(task), text) for style in STYLES["dev99"].values() for task, text in style.items()]
+H181_HELD = [(int(task), text) for style in STYLES["validation33"].values() for task, text in style.items()]
+H181_DEV_TABLETOP = cases(*DEV_H181.values())
+H181_HELD_TABLETOP = cases(*VALID_H181.values())
 
 STEPS_5 = (
     "Step 1: put the red block where the blue block is. Step 2: put the blue block where the red block was. "
@@ -84,6 +99,17 @@ WRITTEN = [
         "block is touched then put the yellow block back on region g"),
     (4, "transfer three blocks into the opposite regions the robot arm cannot touch the blue block until "
         "any robot arm touched the red block after all of these place the yellow block back to region g"),
+    # h181, one of each class of dev99 (the rest: `sweep`): "anywhere except those three", the regions each
+    # to receive one, "every other step", the passive "shared out so that", and "is over" before the verb
+    (3, STYLES["dev99"]["plain"]["3"]),
+    (2, STYLES["dev99"]["formal"]["2"]),
+    (4, STYLES["dev99"]["plain"]["4"]),
+    (2, STYLES["dev99"]["written_out"]["2"]),
+    (4, TOUCH + "After the rest is over, bring the yellow block back to region G."),
+    # h181, found by dev probes: the other steps after "finishing" and in an absolute opener; "be given"
+    (4, TOUCH + "After finishing the other steps, put the yellow block back on region G."),
+    (4, TOUCH + "With every other step done, put the yellow block back on G."),
+    (2, "Regions H, I and J should each be given exactly one block."),
 ]
 
 UNCLEAR = [
@@ -141,6 +167,9 @@ UNCLEAR = [
     (4, TOUCH + "Once the rest of the red block is done, return the yellow block to G."),
     # h174: a named block after "never may": not read as a prohibition of every block
     (7, ORDER_7 + "Never may the red block be put on F, G or H during this period."),
+    # h181: two regions for three blocks; "every other block" names no step
+    (2, "Regions H and I are each to receive exactly one of the three blocks."),
+    (4, TOUCH + "Once every other block is done, put the yellow block back on G."),
 ]
 
 NEAR_MISSES = [
@@ -163,6 +192,9 @@ NEAR_MISSES = [
     (4, TOUCH + "Once all the rest is done, return the yellow block to H."),
     (7, ORDER_7 + "At no point during this period is an object placed on F or G."),
     (3, PILLARS + "Nowhere but E or F may a pillar be put down."),
+    # h181: a region left out of the places allowed; the last step to another region
+    (3, PILLARS + "Don't put a pillar down anywhere except E and F."),
+    (4, TOUCH + "Once every other step is complete, put the yellow block back on H."),
 ]
 
 
@@ -184,7 +216,17 @@ def test_near_misses_are_not_the_written_spec(task: int, text: str) -> None:
     assert_not_the_written_spec(task, text)
 
 
-@pytest.mark.parametrize(("task", "text"), DEV_TABLETOP)
+@pytest.mark.data
+@pytest.mark.sweep
+@pytest.mark.parametrize(("task", "text"), H181_DEV)
+def test_h181_development_batch_gives_the_written_spec(task: int, text: str) -> None:
+    assert_written_spec(task, text)
+
+
+@pytest.mark.parametrize(
+    ("task", "text"),
+    [*DEV_TABLETOP, (4, DEV_H181["comma_only_when"][4][0]), (4, DEV_H181["only_if_both_in"][4][0])],
+)
 def test_tabletop_classes_give_the_tasks_and_order(task: int, text: str) -> None:
     assert signature(text) == signature(TASKS[task].instruction), text
 
@@ -214,6 +256,31 @@ def test_tabletop_only_if_orders_only_by_a_placement() -> None:
     assert signature(first + "blue plate only if both are there.") == signature(TASKS[4].instruction)
     said = signature_or_none(first + "blue plate only if you can.")
     assert said is None or said[1] == []
+
+
+@pytest.mark.sweep
+@pytest.mark.parametrize(("task", "text"), H181_DEV_TABLETOP)
+def test_h181_tabletop_development_batch_gives_the_tasks_and_order(task: int, text: str) -> None:
+    assert signature(text) == signature(TASKS[task].instruction), text
+
+
+def test_tabletop_wait_on_a_plate_is_read_only_for_the_plate_of_everything_before() -> None:
+    # h181: "only if both of them are on the yellow plate" waits for the placements before where all of
+    # them went on the yellow plate; another plate, or placements on two plates, stay unread (refused)
+    first = "Put the green apple and the orange on the yellow plate. Put the carrot and the red apple on the "
+    assert signature(first + "blue plate only if both of them are on the yellow plate.") == signature(
+        TASKS[4].instruction
+    )
+    for unread in (
+        first + "blue plate only if both of them are on the pink plate.",
+        first + "blue plate only if both of them are on the blue plate.",
+        "Put the green apple on the yellow plate and the orange on the pink plate. Put the carrot and the "
+        "red apple on the blue plate only if both of them are on the yellow plate.",
+    ):
+        assert _read_whole(unread) is None, unread
+    pattern = re.compile(r"\b(?:yellow plate|blue plate|carrot)\b")
+    said = "carrot on the yellow plate. carrot on the blue plate once they are in the yellow plate"
+    assert plate_wait_read(said, pattern) == said.replace("in the yellow plate", "there")
 
 
 def test_tabletop_one_run_freed_keeps_the_other_steps_in_turn() -> None:
@@ -343,7 +410,7 @@ def test_an_inverted_prohibition_is_said_in_the_usual_order() -> None:
 
 @pytest.mark.data
 @pytest.mark.sweep
-@pytest.mark.parametrize(("task", "text"), HELD_HANDOVER)
+@pytest.mark.parametrize(("task", "text"), HELD_HANDOVER + H181_HELD)
 def test_held_out_sentences_are_read_right_or_refused(task: int, text: str) -> None:
     assert_written_spec_or_refused(task, text)
 
@@ -358,7 +425,7 @@ def _read_whole(text: str) -> tuple[list, list] | None:
 
 
 @pytest.mark.sweep
-@pytest.mark.parametrize(("task", "text"), HELD_TABLETOP)
+@pytest.mark.parametrize(("task", "text"), HELD_TABLETOP + H181_HELD_TABLETOP)
 def test_held_out_tabletop_sentences_are_read_right_or_refused(task: int, text: str) -> None:
     said = _read_whole(text)
     assert said is None or said == signature(TASKS[task].instruction), text

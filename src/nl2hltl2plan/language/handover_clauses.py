@@ -214,14 +214,17 @@ def _read_verb_pairs(m: Marked) -> None:
     verb's object is what the state that follows places."""
 
     def same(match: re.Match[str]) -> str:
-        if sorted(m.blocks[int(match.group(1))]) != sorted(m.blocks[int(match.group(2))]):
+        first, second = [g for g in match.groups() if g is not None]
+        if sorted(m.blocks[int(first)]) != sorted(m.blocks[int(second)]):
             return match.group(0)
         return " "
 
     m.sub(rf"\b(?:take|pick\s+up|grab|lift)\s+B(\d+)\s*,?\s+and\s+(?={VERB}\s+B(\d+)\s)", same)
+    # (also "share out the blocks so that ..." and the passive "the blocks are to be shared out so that ...")
     m.sub(
-        r"\b(?:arrange|distribute|spread|place|put)\s+B(\d+)\s+(?:so\s+that\s+)?(?=(?:each\s+of\s+)?P\d+\s+(?:each\s+)?"
-        r"(?:(?:should|will|must|can)\s+)?(?:end\s+up\s+(?:holding|with)|holds?|gets?|receives?|contains?)\s+"
+        r"(?:\b(?:arrange|distribute|spread|place|put|share\s+out)\s+B(\d+)|\bB(\d+)\s+(?:must|should|will|can|are\s+to)\s+be\s+"
+        r"(?:arranged|distributed|spread|placed|put|shared\s+out))\s+(?:so\s+that\s+)?(?=(?:each\s+of\s+)?P\d+\s+(?:each\s+)?"
+        r"(?:(?:should|will|must|can)\s+)?(?:each\s+)?(?:end\s+up\s+(?:holding|with)|holds?|gets?|receives?|contains?)\s+"
         r"(?:exactly\s+)?one\s+of\s+B(\d+)\b)",
         same,
     )

@@ -112,8 +112,8 @@ def goal_clauses(m: Marked, scene: Scene) -> list[Clause]:
 
     mods = rf"((?:\s*,?\s*{MOD})*)"
     # "one by one, put all three blocks on I": the modifier read where it usually stands, after the object
-    # (not "all": "after finishing all, put ...")
-    m.sub(rf"\b((?!all\b){MOD})\s*,?\s*({VERB}\s+B\d+)", r"\2 \1")
+    # (not "all": "after finishing all, put ..."; not a state: "after the rest is over, put ...")
+    m.sub(rf"\b(?<!\bis\s)(?<!\bare\s)(?<!\bbeen\s)((?!all\b){MOD})\s*,?\s*({VERB}\s+B\d+)", r"\2 \1")
 
     def matched(x: re.Match[str], k: int) -> str:  # groups from k: blocks, modifiers, place, modifiers
         place, text = m.places[int(x.group(k + 2))], x.group(0).strip()
@@ -188,6 +188,12 @@ def _read_inverse(m: Marked, goal: GoalMaker, every: list[str], mods: str) -> No
     m.sub(
         rf"\bP(\d+)\s+{MODAL}(?:(?:receive|get|take|hold)s?|ends?\s+up\s+with)\s+(?:exactly\s+)?(?:one|a\s+single)\s+"
         rf"(?:block|object|cube|pillar|item)\s+(?:each|apiece)(){mods}",
+        lambda x: _fill(m, x, goal, every),
+    )
+    m.sub(  # "H, I and J (are to) each get exactly one block": "each" before the verb
+        rf"\bP(\d+)\s+(?:(?:should|must|shall|will|can|may|has\s+to|have\s+to|needs?\s+to|are\s+to)\s+)?each\s+"
+        rf"(?:(?:receive|get|take|hold)s?|ends?\s+up\s+with)\s+(?:exactly\s+|only\s+|just\s+)?(?:one|a\s+single)\s+"
+        rf"(?:block|object|cube|pillar|item)\b(?!\s+of\b)(){mods}",
         lambda x: _fill(m, x, goal, every),
     )
     m.sub(  # "G, H, I: one block each"

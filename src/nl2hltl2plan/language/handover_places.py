@@ -98,8 +98,10 @@ def mark_places(m: Marked, scene: Scene, named_before: tuple[str, ...]) -> None:
     count = r"(?:(?:two|three|four|\d+)\s+)?"
     named = rf"\b(?:the\s+)?{count}(?:{TARGET}\s+(?:regions?|areas?|zones?)|areas?|zones?|regions)"
     m.sub(rf"{named}\s*,?\s*(?:{APPOSITION}\s*)?,?\s*(?=P\d)", " ")
+    # "anywhere except P" is "on any region except P", as "outside P" is
+    anywhere_but = rf"(?:outside\s+(?:of\s+)?|anywhere\s+{OTHER_THAN}\s+(?:(?:on|in)\s+)?)"
     m.sub(
-        rf"\b(?:(?:the|an?|any|all)\s+)?(?:other\s+)?{PLACE_NOUN}\s+{OTHER_THAN}\s+P(\d+)|\boutside\s+(?:of\s+)?P(\d+)",
+        rf"\b(?:(?:the|an?|any|all)\s+)?(?:other\s+)?{PLACE_NOUN}\s+{OTHER_THAN}\s+P(\d+)|\b{anywhere_but}P(\d+)",
         lambda match: _complement_of(m, match),
     )
 
@@ -127,7 +129,7 @@ def mark_places(m: Marked, scene: Scene, named_before: tuple[str, ...]) -> None:
     these_targets = (
         rf"(?:these|those)(?:\s+(?P<count>two|three|four|\d))?(?:\s+{TARGET})?(?:\s+{PLACE_NOUN})?"
     )
-    m.sub(rf"\boutside\s+(?:of\s+)?(?:{these_targets}|them|it)\b", outside_these)
+    m.sub(rf"\b{anywhere_but}(?:{these_targets}|them|it)\b", outside_these)
     # "those (three) regions": the place named last, or in a sentence that names none, the regions the
     # sentence before named (a count, if said, must be theirs)
     m.sub(
@@ -188,7 +190,8 @@ def _mark_target_complements(m: Marked) -> None:
 
 
 def _complement_of(m: Marked, match: re.Match[str]) -> str:
-    """'any region except E, F and G', 'outside E, F and G': the labelled regions but those."""
+    """'any region except E, F and G', 'outside E, F and G', 'anywhere but E, F and G': the labelled
+    regions but those."""
     named = m.places[int(match.group(1) or match.group(2))]
     if named.kind != "regions":
         raise HTTError(f"cannot tell which regions '{match.group(0).strip()}' leaves out")

@@ -379,12 +379,24 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
         r"((?:the\s+)?(?:red|blue|yellow)(?:\s+(?:block|one|object|cube))?)\b",
         r"\3 \1 \2",
     ),
-    # modal "is to" before a verb of holding
-    # ("is to take the pillars ..." is a goal: "take" and "carry" hold only before a count of one)
+    # modal "is to" before a verb of holding, with "each" before "to" or after it ("regions H, I and J are
+    # each to receive one of the blocks": must each receive)
+    # ("is to take the pillars ..." is a goal: "take", "carry" and "get" hold only before a count of one)
     (
-        r"\b(?:is|are)\s+to\s+(?=(?:hold|contain|receive|accept)\b|(?:take|carry)\s+(?:(?:only|just|exactly|at\s+most)\s+)?"
-        r"(?:one|a\s+single|no\s+more\s+than)\b)",
-        "must ",
+        r"\b(?:is|are)\s+(?:(each|all|both)\s+)?to\s+(?=(?:hold|contain|receive|accept)\b|(?:take|carry|get)\s+"
+        r"(?:(?:only|just|exactly|at\s+most)\s+)?(?:one|a\s+single|no\s+more\s+than)\b)",
+        lambda m: f"must {m[1] or ''} ",
+    ),
+    # a region "is to be given" / "should each be given" one: it receives one
+    (
+        r"\b(?:(?:is|are)\s+(?:(each|all)\s+)?to|((?:should|must|shall|will)\s+(?:each\s+|all\s+)?))be\s+given\s+"
+        r"(?=(?:exactly\s+|only\s+|just\s+)?(?:one|a\s+single)\b)",
+        lambda m: (m[2] or f"must {m[1] or ''} ") + "receive ",
+    ),
+    # "one block of the three" is one of the three blocks
+    (
+        r"\bone\s+(block|object|pillar|cube)\s+of\s+the\s+(two|three|[23])\b(?!\s+[a-z]+s\b)",
+        r"one of the \2 \1s",
     ),
     # progressive narration: "nothing is being placed on F" (is placed), "no region is getting two blocks"
     (

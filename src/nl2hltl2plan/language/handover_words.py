@@ -64,24 +64,31 @@ PERIOD_WORDS = (
 )
 PERIOD = rf"(?:\s*,?\s*(?:{PERIOD_WORDS}|at\s+any\s+time|ever|at\s+all))?"
 EMPTY = r"(?:empty|free|clear|unoccupied|vacant)"
+# the work said before as the other steps: "every other step", "(all) the other / remaining tasks"
+OTHER_WORK = (
+    r"(?:every\s+other\s+(?:step|stage|phase|part|task|job|move)|(?:all\s+(?:of\s+)?)?(?:the\s+)?(?:other|remaining)\s+"
+    r"(?:steps|stages|phases|parts|tasks|jobs|moves))"
+)
 DONE_STATE = (
     r"(?:done|finished|complete|completed|over|sorted(?:\s+out)?|settled|taken\s+care\s+of|dealt\s+with|out\s+of\s+the\s+way|"
     r"wrapped\s+up)"
     # "done with that"
-    r"(?:\s+with\s+(?:all\s+(?:of\s+)?)?(?:this|these|that|it|everything|them|the\s+above))?"
+    rf"(?:\s+with\s+(?:all\s+(?:of\s+)?)?(?:this|these|that|it|everything(?:\s+else)?|them|the\s+above|the\s+rest|{OTHER_WORK}))?"
 )
 # "as soon as" opens the same clauses as "once" ("as soon as everything else is done, ...")
 # "(all) the rest" is the work said before, as "everything else" ("once all the rest is done, ...")
 AFTER_ALL = (
     r"(?:(?:once|when|after|as\s+soon\s+as)\s+(?:all\s+(?:of\s+)?)?(?:this|these|that|it|everything(?:\s+else)?|the\s+above|"
-    r"the\s+rest)(?:\s+all)?\s+"
+    rf"the\s+rest|{OTHER_WORK})(?:\s+all)?\s+"
     rf"(?:is|are|has\s+been|have\s+been)\s+(?:all\s+)?{DONE_STATE}|(?:once|when)\s+{DONE_STATE}|"
     rf"(?:once|when|after|as\s+soon\s+as)\s+(?:you|we)\s+(?:are|have(?:\s+been)?)\s+(?:all\s+)?{DONE_STATE}|"
     # an absolute opener: "with that done", "with all of this sorted", "that done"
-    rf"(?:with\s+(?:all\s+(?:of\s+)?)?(?:this|these|that|it|everything(?:\s+else)?|the\s+above)|that)(?:\s+all)?\s+{DONE_STATE}(?=\s*,)|"
+    rf"(?:with\s+(?:all\s+(?:of\s+)?)?(?:this|these|that|it|everything(?:\s+else)?|the\s+above|the\s+rest|{OTHER_WORK})|that)"
+    rf"(?:\s+all)?\s+{DONE_STATE}(?=\s*,)|"
     r"after\s+(?:all\s+(?:of\s+)?(?:these|this|that|"
-    r"the\s+above)|everything(?:\s+else)?|(?:all\s+)?the\s+rest(?=\s*,))|finally|lastly|last\s+of\s+all|at\s+the\s+(?:very\s+)?end|in\s+the\s+end|"
-    r"after\s+(?:finish(?:ing)?|complet(?:e|ing)|doing|done)\s+(?:with\s+)?(?:all\s+(?:of\s+)?)?(?:this|these|that|everything|them)|"
+    rf"the\s+above)|everything(?:\s+else)?|(?:(?:all\s+)?the\s+rest|{OTHER_WORK})(?=\s*,))|finally|lastly|last\s+of\s+all|at\s+the\s+(?:very\s+)?end|in\s+the\s+end|"
+    r"after\s+(?:finish(?:ing)?|complet(?:e|ing)|doing|done)\s+(?:with\s+)?(?:all\s+(?:of\s+)?)?(?:this|these|that|everything|them|"
+    rf"the\s+rest|{OTHER_WORK})|"
     r"after\s+(?:finishing|completing)\s+(?:it\s+)?all|after\s+(?:that|this|the)\s+(?:transfer|task|move)|"
     # "when the transfer is complete", "when all finish" (non-native): the work said so far is done
     rf"(?:once|when|after)\s+(?:the|this|that)\s+(?:transfer|task|job|work|moving|transport)\s+(?:is|has\s+been)\s+{DONE_STATE}|"

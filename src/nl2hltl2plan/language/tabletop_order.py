@@ -19,13 +19,13 @@ _THAT = r"(?:that|this|those|these|them|it)"
 # where one ordered group ends and the next begins: "then", "after that", "After," (opening its clause,
 # nothing after it in the clause), "once that's done", "when you've done that", "subsequently", "next"
 # (not "next to"); "only if they are (already) there" as "only when"
-_THERE = r"(?:there|on\s+it|in\s+it|on\s+there|in\s+place|placed|down)"
+_THERE = r"(?:there|on\s+it|in\s+it|on\s+there|in\s+place|placed|down|(?:in|on)(?=\s*(?:[,.;:!?]|$)))"
 THEN = re.compile(
     r"\b(?:only\s+)?(?:then,?\s+and\s+only\s+then|(?:and\s+)?then|after\s+(?:that|this|those|these|which)|"
     r"afterwards?|(?<![a-z]\s)(?<![a-z])after(?=\s*[,:])|thereafter|subsequently|"
     r"next(?!\s+to\b)|second(?:ly)?|(?:and\s+)?(?:finally|lastly)|"
     rf"(?:once|when|after|as\s+soon\s+as|(?<=only\s)if)\s+(?:{_THAT}(?:'s|s|\s+is|\s+are|'re)\s+{_DONE}|"
-    rf"(?:they|both|{_THAT}|both\s+of\s+them|all\s+of\s+them)(?:'re|'s|\s+are|\s+is)\s+(?:both\s+|all\s+)?"
+    rf"(?:they|both|{_THAT}|(?:both|all|the\s+two)\s+of\s+them|the\s+two)(?:'re|'s|\s+are|\s+is)\s+(?:both\s+|all\s+)?"
     rf"(?:already\s+)?{_THERE}|"
     rf"you(?:'ve|\s+have|'re|\s+are)\s+{_DONE}(?:\s+(?:with\s+)?{_THAT})?|{_DONE}))\b"
 )
@@ -75,6 +75,33 @@ def inverted_condition_read(text: str, pattern: re.Pattern[str]) -> str:
     return inverted.sub(r"\g<lead>, \g<subject> \g<aux> ", text, count=1)
 
 
+# a wait on the things placed before, said with their plate: "..., only if both of them are on the yellow
+# plate", "once all of them are in the pink plate"
+_WAIT_ON_PLATE = re.compile(
+    r"\b(?P<wait>(?:only\s+)?(?:once|when|after|as\s+soon\s+as|(?<=only\s)if)\s+(?:they|both|all)(?:\s+of\s+them)?"
+    r"(?:'re|\s+are)\s+(?:both\s+|all\s+)?(?:already\s+)?)(?:on|in|onto|into)\s+(?P<plate>[a-z][a-z ]*?)"
+    r"(?:\s+already)?(?=\s*(?:[,.;:!?\n]|$))"
+)
+
+
+def plate_wait_read(text: str, pattern: re.Pattern[str]) -> str:
+    """A wait on the things placed before said with their plate ("put C and D on the blue plate only if both
+    of them are on the yellow plate") as the wait without it ("... only if both are there", a closing
+    `THEN`), where every plate named before the wait's own clause is that plate; the text as it is
+    otherwise (a plate that nothing was put on before, or placements on other plates too)."""
+
+    def there(m: re.Match[str]) -> str:
+        plate = _name(re.sub(r"^the\s+", "", m["plate"]))
+        if not pattern.fullmatch(plate) or not plate.endswith("plate"):
+            return m[0]
+        named = [_name(f) for f in pattern.findall(text, 0, m.start()) if _name(f).endswith("plate")]
+        if len(named) < 2 or named[-1] == plate or any(p != plate for p in named[:-1]):
+            return m[0]
+        return f"{m['wait']}there"
+
+    return _WAIT_ON_PLATE.sub(there, text)
+
+
 def reference_fronted(text: str, pattern: re.Pattern[str]) -> str:
     """A text that opens with a clause waiting for placements it states ("Once the green apple and the
     orange are in the yellow plate, put ...") as those placements first and the rest then; the text as
@@ -92,6 +119,8 @@ def reference_fronted(text: str, pattern: re.Pattern[str]) -> str:
 
 
 _CLAUSE_END = re.compile(r"[,.;!?\n]")
+# a closing "then" said as a wait on what was placed before ("only when both are there")
+_WAITS = re.compile(r"(?:only\s+)?(?:once|when|if|after|as\s+soon\s+as)\b")
 # a "then" that closes its clause: "the carrot goes on the blue plate after that.", "... after them.", "...
 # red apple after,", or a heading: "blue plate after: carrot, red apple"
 # a clause closed by where it stands in the whole: "... on the yellow plate to start; ... to finish"
@@ -164,10 +193,21 @@ def trailing_then_fronted(text: str, pattern: re.Pattern[str]) -> str:
         clause = text[start : m.start()]
         if _SET_OFF.fullmatch(clause) and ends and ends[-1][0] == ",":
             # set off by a comma ("..., (but) only when both are there"): it closes the clause before it
-            start = ends[-2].end() if len(ends) > 1 else 0
+            # (back over a free-order remark set off by commas too, "..., in any order, only when both are
+            # there": `free_order` took the remark out before and left its commas)
+            k = len(ends) - 1
+            while k > 0 and ends[k - 1][0] == ",":
+                if not _SET_OFF.fullmatch(text[ends[k - 1].end() : ends[k].start()]):
+                    break
+                k -= 1
+            start = ends[k - 1].end() if k > 0 else 0
             clause = text[start : ends[-1].start()]
         plates = {_name(f) for f in pattern.findall(clause) if _name(f).endswith("plate")}
         marked = THEN.search(clause) or FIRST.search(clause)
+        if len(plates) == 1 and THEN.match(clause.strip()) and _WAITS.match(m[0]):
+            # "then C on Q, only when both are there": the condition says the "then" again
+            text = f"{text[: m.start()]}{text[m.end() :]}"
+            continue
         if len(plates) != 1 or marked or not (m["first"] or pattern.search(text, 0, start)):
             continue
         text = f"{text[:start]} {'first' if m['first'] else 'then'} {clause.strip()}{text[m.end() :]}"

@@ -51,6 +51,7 @@ from nl2hltl2plan.language.tabletop_order import (
     heading_colon_put_back,
     inverted_condition_read,
     ordinal_things_read,
+    plate_wait_read,
     reference_fronted,
     robot_addressed,
     then_after_subject_fronted,
@@ -378,6 +379,7 @@ def read_pairs(text: str, types: set[str]) -> Reading | None:
     pattern = mention_pattern(by_words)
     # "only when A is on P should B go on Q": the usual order, before the clause is taken for a statement
     plain = inverted_condition_read(plain_words(text, kinds, _shared_heads(by_words)), pattern)
+    plain = plate_wait_read(plain, pattern)  # "only if both of them are on the yellow plate": "... there"
     plates = mention_pattern([w for w, plate in kinds.items() if plate])
     plain, plate_counts = plate_counts_read(plain, plates)  # "two for the yellow plate": checked below
     plain, total_counts = total_counts_read(plain)  # "- those four placements, that's all": checked below
