@@ -63,6 +63,18 @@ _SAME_AND = re.compile(
     r"(?=\s*(?:[,.;!?]|$))",
     re.I,
 )
+# "do the same with the bowl, but put that one in the cabinet", "... only put that in the tub": the task
+# before for the bowl, with this place instead of its own
+_SAME_ELSEWHERE = re.compile(
+    rf"^(?:do\s+)?(?:the\s+)?same\s+(?:thing\s+)?(?:for|with|to)\s+(?P<np>{_NP})\s*,?\s*(?:but|only|except)\s+"
+    r"(?:that\s+)?(?:(?:put|place|set|leave|move|drop)\s+(?:it|(?:that|this)(?:\s+[a-z]+)?)"
+    r"|(?:it|(?:that|this)(?:\s+one)?)\s+goes)\s+"
+    r"(?P<place>(?:in|into|on|onto|inside|under)\s+(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+){0,3}?)"
+    r"\s*(?:instead)?\s*$",
+    re.I,
+)
+# the prepositions that open a destination (not "of", "by": "the back of the toilet", "by the light of")
+_TO_PREPS = {"in", "into", "on", "onto", "inside", "to", "under", "at", "near"}
 # the words before a place's determiner ("in the sink", "by the light of the lamp"); "look at" opens a thing
 _PLACE_PREPS = {"in", "into", "on", "onto", "inside", "to", "at", "under", "by", "of", "near"}
 # the words a plain one-task sentence may hold besides its thing and its place
@@ -108,6 +120,12 @@ def repeated_for_another(text: str) -> str:
                 out.append(lead + ". ".join(copies) + body[len(core) :])
                 written = True
                 continue
+        elsewhere = _elsewhere(task, fragment) if task else None
+        if elsewhere:  # "Then do the same with the bowl, but put that one in the cabinet."
+            lead = said.group(0) if said else core[: len(core) - len(core.lstrip())]
+            out.append(lead + (elsewhere if said else elsewhere[:1].upper() + elsewhere[1:]) + body[len(core) :])
+            written = True
+            continue
         if not REPEAT_FRAGMENT.match(fragment):
             task = fragment.strip()  # its order word stays with it ("After that, look at X. Then the Y too.")
         out.append(body)
@@ -129,6 +147,23 @@ def _copy_inside(text: str, m: re.Match[str]) -> str:
         if copy:
             return m["join"] + copy[:1].lower() + copy[1:]
     return m[0]
+
+
+def _elsewhere(task: str, fragment: str) -> str | None:
+    """ "do the same with the bowl, but put that one in the cabinet" after a plain one-task sentence: that
+    sentence for the bowl, its last place replaced by this one (lower case); None where it is no such pair."""
+    m = _SAME_ELSEWHERE.match(fragment.strip())
+    things = [x for x in find_mentions(m["np"]) if not x.entry.generic] if m else []
+    copy = _with_thing(task, things[0], inside=True) if m and len(things) == 1 else None
+    if not copy or not m:
+        return None
+    toks = tokens(copy)
+    places = [x for x in find_mentions(copy) if not x.entry.generic and _role(x, toks) == "place"]
+    preps = [i for i in range(_det_at(places[-1], toks)) if toks[i][0] in _TO_PREPS] if places else []
+    if not preps:
+        return None
+    copy = copy[: toks[preps[-1]][1]] + m["place"] + copy[places[-1].char_end :]
+    return copy[:1].lower() + copy[1:]
 
 
 def _only_things(fragment: str, things: list[Mention]) -> bool:
