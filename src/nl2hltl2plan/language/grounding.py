@@ -298,8 +298,10 @@ def lexicon() -> dict[tuple[str, ...], tuple[Entry, bool]]:
     for phrase, of in listed_plurals:
         table[tuple(phrase.split())] = (singular[tuple(of.split())], True)
     for key, entry in singular.items():
-        for pl in _plurals(key[-1]):
-            pkey = key[:-1] + (pl,)
+        # "bars of soap", "sets of keys": the word before "of" is the one counted
+        at = key.index("of") - 1 if "of" in key[1:] else len(key) - 1
+        for pl in _plurals(key[at]):
+            pkey = key[:at] + (pl,) + key[at + 1 :]
             if pkey not in singular:
                 table.setdefault(pkey, (entry, True))
     for key, entry in singular.items():

@@ -164,7 +164,7 @@ def everyday(text: str) -> str:
     text = _STEP_COLON.sub(r"\1 ", _ARROW.sub(" onto ", text))
     if _BELONGS.search(text):
         text = _PUT_THEM_THERE.sub("", text)
-    text = _THING_FIRST.sub(lambda m: f"{m['lead']}take {m['np']}, ", _THERE.sub(_there_named, text))
+    text = _THING_FIRST.sub(lambda m: f"{m['lead']}take {m['np']}, ", _SAME_PLACE.sub(_same_place_named, _THERE.sub(_there_named, text)))
     text = _HESITATION.sub(" ", text)
     text = re.sub(r"(\s*,)+", ",", text)  # the commas left where fillers were
     text = _LIKE.sub(",", _TAG.sub("", text))
@@ -215,15 +215,18 @@ _FREE_REMARK = re.compile(rf"\b{_FREE_ORDER}\b", re.I)
 # ("put the bread in the fridge, then put the egg in there too"); with none before, it stays, and is read
 # or refused as it is
 _THERE = re.compile(
-    r"(?P<head>\b(?:put|place|set|stick|pop|drop|leave|store|move)\s+(?:it|them|(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)"
+    r"(?P<head>\b(?:put|place|set|stick|pop|drop|leave|store|move|carry|take|bring)\s+"
+    r"(?:it|them|(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)"
     r"|(?:(?<=\bthen\s)|(?<=\band\s))(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)"
-    r"\s+(?:(?:in|into|inside|on|onto)\s+)?there\b(?=\s*(?:too|as\s+well|also)?\s*(?:[,.;!?]|$|and\b|then\b))",
+    r"(?P<source>\s+from\s+(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)??"  # "the bottle from the toilet there"
+    r"\s+(?:(?:in|into|inside|on|onto|over)\s+)?there\b(?=\s*(?:too|as\s+well|also)?\s*(?:[,.;!?]|$|and\b|then\b))",
     re.I,
 )
 _NEGATED = re.compile(r"(?:\bnot|n't|\bnever|\bno)\s+(?:\w+\s+)?$", re.I)
 _DESTINATION_PHRASE = re.compile(
     r"(?<!next )(?<!close )\b(?P<prep>in|into|inside|on|onto|to)\s+"
-    r"(?P<np>(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)",
+    # "on the back of the toilet": the part of a thing ("back", "top") names no place; its thing does
+    r"(?:the\s+(?:back|top|side|edge|front|lid)\s+of\s+)?(?P<np>(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)",
     re.I,
 )
 
@@ -233,16 +236,37 @@ def _there_named(m: re.Match[str]) -> str:
     after a negation, "don't put the knife there", which the constraint reader reads as it is)."""
     if _NEGATED.search(m.string[: m.start()]):
         return m[0]
+    moved = {x.entry.types[0] for x in find_mentions(m["head"])}  # "put it in a pan and carry the pan there"
     places = [
         (d["prep"].lower(), named[-1])
         for d in _DESTINATION_PHRASE.finditer(m.string[: m.start()])
         if (named := find_mentions(d["np"])) and not named[-1].entry.generic
+        and named[-1].entry.types[0] not in moved
     ]
     if not places:
         return m[0]
     prep, place = places[-1]
     prep = "in" if prep == "to" else prep  # "walk to the sink ... in there"
-    return f"{m['head']} {prep} the {place.surface}"
+    return f"{m['head']}{m['source'] or ''} {prep} the {place.surface}"
+
+
+# "put the box on the same table", "put a pen on that shelf too": the last destination named before it with
+# that word ("the coffee table"), written out; else as it is
+_SAME_PLACE = re.compile(
+    r"\b(?P<prep>in|into|inside|on|onto|to)\s+(?:that|the\s+same)\s+(?P<noun>[a-z]+)\b(?!\s+(?:of|with)\b)", re.I
+)
+
+
+def _same_place_named(m: re.Match[str]) -> str:
+    """ "on the same table": the last place named before it whose name ends in "table", written out."""
+    if _NEGATED.search(m.string[: m.start()]):
+        return m[0]
+    noun = m["noun"].lower()
+    for d in reversed(list(_DESTINATION_PHRASE.finditer(m.string[: m.start()]))):
+        named = [x for x in find_mentions(d["np"]) if not x.entry.generic]
+        if named and named[-1].surface.lower().split()[-1] in (noun, noun + "s"):
+            return f"{m['prep']} the {named[-1].surface}"
+    return m[0]
 
 
 # "the mug that's on the counter, put it in the sink": the thing named first, then what to do with "it"
