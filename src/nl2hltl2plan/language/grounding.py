@@ -267,6 +267,18 @@ def _plurals(word: str) -> set[str]:
     return out
 
 
+def plural_name(phrase: str) -> str | None:
+    """The plural the lexicon reads for a name of one thing ("spray bottle" -> "spray bottles", "bar of soap"
+    -> "bars of soap"), None where it reads none."""
+    for form in sorted(f for f in _plurals(phrase.split(" of ")[0].split()[-1]) if "'" not in f):
+        words = phrase.split()
+        at = words.index("of") - 1 if "of" in words[1:] else len(words) - 1
+        said = " ".join(words[:at] + [form] + words[at + 1 :])
+        if (entry := lexicon().get(tuple(said.split()))) and entry[1] and entry[0].phrase == phrase:
+            return said
+    return None
+
+
 def phrase_lines(name: str) -> list[tuple[list[str], list[str]]]:
     """The lines of a word file of this package in the lexicon's format, `phrase[, phrase...] : field [:
     field ...]` (`#` comments): each line's phrases and its fields (lexicon.txt, everyday_names.txt)."""

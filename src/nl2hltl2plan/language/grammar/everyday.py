@@ -27,11 +27,11 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
-from nl2hltl2plan.language.content_words import free_order_phrase
+from nl2hltl2plan.language.content_words import DETERMINERS, categories, free_order_phrase
 from nl2hltl2plan.language.grammar.repeats import repeated_for_another
 from nl2hltl2plan.language.grammar.restated import count_fits, restated
 from nl2hltl2plan.language.grammar.treatments_said import treatments_said
-from nl2hltl2plan.language.grounding import find_mentions, phrase_lines
+from nl2hltl2plan.language.grounding import Mention, find_mentions, phrase_lines, plural_name, tokens
 from nl2hltl2plan.language.spelling import respelt
 from nl2hltl2plan.language.statements import RELATIVE_PLACE
 
@@ -164,7 +164,8 @@ def everyday(text: str) -> str:
     text = _STEP_COLON.sub(r"\1 ", _ARROW.sub(" onto ", text))
     if _BELONGS.search(text):
         text = _PUT_THEM_THERE.sub("", text)
-    text = _THING_FIRST.sub(lambda m: f"{m['lead']}take {m['np']}, ", _SAME_PLACE.sub(_same_place_named, _THERE.sub(_there_named, text)))
+    text = _SAME_PLACE.sub(_same_place_named, _THERE.sub(_there_named, text))
+    text = _THING_FIRST.sub(lambda m: f"{m['lead']}take {m['np']}, ", _COUNT_LEFT.sub(_count_named, text))
     text = _HESITATION.sub(" ", text)
     text = re.sub(r"(\s*,)+", ",", text)  # the commas left where fillers were
     text = _LIKE.sub(",", _TAG.sub("", text))
@@ -267,6 +268,44 @@ def _same_place_named(m: re.Match[str]) -> str:
         if named and named[-1].surface.lower().split()[-1] in (noun, noun + "s"):
             return f"{m['prep']} the {named[-1].surface}"
     return m[0]
+
+
+# "a spray bottle on the toilet and two more in the cabinet", "then one more", "a third one on the tank", "one
+# on the sofa and two on the armchair": a count whose noun is left out counts the thing named last before it,
+# which is written out ("two more spray bottles"); with none, or one that has no plural form, it stays
+_COUNT_LEFT = re.compile(
+    r"\b(?P<count>(?:one|two|three)\s+more|a\s+(?:third|fourth)(?:\s+one)?|(?<=\band\s)(?:one|two|three))"
+    r"(?=\s+(?:in|into|inside|on|onto|to|under|next\s+to|there)\b|\s*(?:[,.;!?]|$|too\b|as\s+well\b))",
+    re.I,
+)
+# the words that put a noun phrase in a place ("in the cabinet", "by the sink"): the thing named is no thing
+# moved ("of" only after a part: "the back of the toilet"; "two of the bottles" counts bottles)
+_PLACE_WORDS = frozenset("in into inside on onto to under at by near from beside behind next with".split())
+_PARTS = frozenset("back top side edge front lid bottom end".split())
+
+
+def _count_named(m: re.Match[str]) -> str:
+    """ "two more": "two more spray bottles", the last thing moved before it named, in the count's number."""
+    named = [x for x in find_mentions(m.string[: m.start()]) if not x.entry.generic]
+    toks = tokens(m.string[: m.start()])
+    things = [x for x in named if not _placed(x, toks)]
+    if not things:
+        return m[0]
+    count = re.sub(r"\s+one$", "", m[0])  # "a third one": "a third spray bottle"
+    if count.lower().split()[0] in ("one", "a"):
+        return f"{count} {things[-1].entry.phrase}"
+    plural = plural_name(things[-1].entry.phrase)
+    return f"{count} {plural}" if plural else m[0]
+
+
+def _placed(x: Mention, toks: list[tuple[str, int, int]]) -> bool:
+    """Is the mention a place ("in the cabinet", "on the back of the toilet") rather than a thing moved?"""
+    i = x.start - 1
+    while i >= 0 and (toks[i][0] in DETERMINERS or not categories(toks[i][0])) and toks[i][0] not in _PLACE_WORDS:
+        i -= 1  # determiners and describing words ("the grey", "two of the")
+        if i >= 0 and toks[i][0] == "of":
+            return i > 0 and toks[i - 1][0] in _PARTS
+    return i >= 0 and toks[i][0] in _PLACE_WORDS
 
 
 # "the mug that's on the counter, put it in the sink": the thing named first, then what to do with "it"
