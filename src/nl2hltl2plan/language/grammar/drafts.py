@@ -419,8 +419,8 @@ def _group_for_them(drafts: list[Draft], mine: list[int], it: Item) -> list[int]
 
 
 def _another_of_it(o: NP, d: Draft) -> bool:
-    """Is `o` "another one" / "another" after draft `d` has put its thing somewhere?"""
-    return o.pronoun and o.text.lower() in {"another", "another one"} and not incomplete(d)
+    """Is `o` "another one" / "another" / "the other one" after draft `d` has put its thing somewhere?"""
+    return o.pronoun and o.text.lower() in {"another", "another one", "the other one"} and not incomplete(d)
 
 
 # ----- text helpers ----------------------------------------------------------------------------------

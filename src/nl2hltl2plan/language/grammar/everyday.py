@@ -31,7 +31,14 @@ from nl2hltl2plan.language.content_words import DETERMINERS, categories, free_or
 from nl2hltl2plan.language.grammar.repeats import repeated_for_another
 from nl2hltl2plan.language.grammar.restated import count_fits, restated
 from nl2hltl2plan.language.grammar.treatments_said import treatments_said
-from nl2hltl2plan.language.grounding import Mention, find_mentions, phrase_lines, plural_name, tokens
+from nl2hltl2plan.language.grounding import (
+    Mention,
+    find_mentions,
+    phrase_lines,
+    plural_name,
+    sentence_start,
+    tokens,
+)
 from nl2hltl2plan.language.spelling import respelt
 from nl2hltl2plan.language.statements import RELATIVE_PLACE
 
@@ -164,7 +171,7 @@ def everyday(text: str) -> str:
     text = _STEP_COLON.sub(r"\1 ", _ARROW.sub(" onto ", text))
     if _BELONGS.search(text):
         text = _PUT_THEM_THERE.sub("", text)
-    text = _SAME_PLACE.sub(_same_place_named, _THERE.sub(_there_named, text))
+    text = _SAME_PLACE.sub(_same_place_named, _THERE.sub(_there_named, _ALONG_WITH.sub(_along_with, text)))
     text = _THING_FIRST.sub(lambda m: f"{m['lead']}take {m['np']}, ", _COUNT_LEFT.sub(_count_named, text))
     text = _HESITATION.sub(" ", text)
     text = re.sub(r"(\s*,)+", ",", text)  # the commas left where fillers were
@@ -218,9 +225,11 @@ _FREE_REMARK = re.compile(rf"\b{_FREE_ORDER}\b", re.I)
 _THERE = re.compile(
     r"(?P<head>\b(?:put|place|set|stick|pop|drop|leave|store|move|carry|take|bring)\s+"
     r"(?:it|them|(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)"
-    r"|(?:(?<=\bthen\s)|(?<=\band\s))(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)"
+    r"|(?:(?<=\bthen\s)|(?<=\band\s))(?:the|a|an|two|three|both)\s+[a-z]+(?:\s+[a-z]+){0,2}?)"
     r"(?P<source>\s+from\s+(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)??"  # "the bottle from the toilet there"
-    r"\s+(?:(?:in|into|inside|on|onto|over)\s+)?there\b(?=\s*(?:too|as\s+well|also)?\s*(?:[,.;!?]|$|and\b|then\b))",
+    # "and two rolls next to it": beside the thing placed last, so where it was put
+    r"\s+(?:(?:in|into|inside|on|onto|over)\s+)?(?:there|(?:next\s+to|beside)\s+it)\b"
+    r"(?=\s*(?:too|as\s+well|also)?\s*(?:[,.;!?]|$|and\b|then\b))",
     re.I,
 )
 _NEGATED = re.compile(r"(?:\bnot|n't|\bnever|\bno)\s+(?:\w+\s+)?$", re.I)
@@ -251,15 +260,33 @@ def _there_named(m: re.Match[str]) -> str:
     return f"{m['head']}{m['source'] or ''} {prep} the {place.surface}"
 
 
-# "put the box on the same table", "put a pen on that shelf too": the last destination named before it with
-# that word ("the coffee table"), written out; else as it is
-_SAME_PLACE = re.compile(
-    r"\b(?P<prep>in|into|inside|on|onto|to)\s+(?:that|the\s+same)\s+(?P<noun>[a-z]+)\b(?!\s+(?:of|with)\b)", re.I
+# "put two bottles in the cabinet, along with two rolls", "drop the towel in the tub along with two bars of
+# soap": the thing after "along with" goes where the placement before it put its thing (written out as a
+# placement of its own: "..., and put two rolls in the cabinet"); with no place before it, it stays
+_ALONG_WITH = re.compile(
+    r"\s*,?\s+along\s+with\s+(?P<np>(?:(?:the|a|an|two|three|some|both)\s+)+[a-z]+(?:\s+[a-z]+){0,3}?)"
+    r"(?=\s*(?:[,.;!?]|$|\band\b|\bthen\b))",
+    re.I,
 )
 
 
+def _along_with(m: re.Match[str]) -> str:
+    """ ", along with two rolls": ", and put two rolls in the cabinet" (the last place named before it)."""
+    before = m.string[sentence_start(m.string, m.start()) : m.start()]
+    places = [(d["prep"].lower(), named[-1]) for d in _DESTINATION_PHRASE.finditer(before) if (named := find_mentions(d["np"]))]
+    if not places or _NEGATED.search(before):
+        return m[0]
+    prep, place = places[-1]
+    return f", and put {m['np']} {'on' if prep == 'to' else prep} the {place.surface}"
+
+
+# "put a pen on that shelf too": the last destination named before it with that word ("the coffee table"),
+# written out; else as it is ("the same table" stays: where the scene has two, the spec cannot keep one)
+_SAME_PLACE = re.compile(r"\b(?P<prep>in|into|inside|on|onto|to)\s+that\s+(?P<noun>[a-z]+)\b(?!\s+(?:of|with)\b)", re.I)
+
+
 def _same_place_named(m: re.Match[str]) -> str:
-    """ "on the same table": the last place named before it whose name ends in "table", written out."""
+    """ "on that table": the last place named before it whose name ends in "table", written out."""
     if _NEGATED.search(m.string[: m.start()]):
         return m[0]
     noun = m["noun"].lower()

@@ -7,7 +7,8 @@ The task before is repeated only where its sentence is one plain task: a task ve
 with a lamp), one thing it acts on (singular, after a verb: "holding the book"), places after prepositions,
 and otherwise only task verbs, "and", "it", "while", "back" and the words between a determiner and its
 thing; a source ("from the shelf") is the first thing's and is not copied. The fragment says nothing but
-its things ("The red tomato too." and "The tomato in the microwave too." stay). Said inside the sentence
+its things and their describing words ("The red tomato too." is repeated, "The tomato in the microwave too."
+stays). Said inside the sentence
 of its task with no order word ("X, and do the same with the Y"), the copy is written in its place, in
 the same sentence, so the sentence's order word ("Then ...") covers both.
 Any other fragment stays as written, and check 1 names it unless a task does the whole of the task before
@@ -59,7 +60,7 @@ _SAME_INSIDE = re.compile(
 )
 # "X, and do the same with the cup" (no order word): the copy is written where the fragment is
 _SAME_AND = re.compile(
-    rf"(?P<join>,\s*and\s+|\s+and\s+)(?:do\s+)?(?:the\s+)?same\s+(?:thing\s+)?(?:for|with|to)\s+(?P<np>{_NP})"
+    rf"(?P<join>,\s*and\s+|\s+and\s+)(?:do\s+)?(?:the\s+)?same\s+(?:thing\s+)?(?:for|with|to)\s+(?P<np>{_NPS})"
     r"(?=\s*(?:[,.;!?]|$))",
     re.I,
 )
@@ -95,8 +96,17 @@ _TASK_VERBS = frozenset(
 _OPENING = _TASK_VERBS | {"verb_switch"}  # "turn on the lamp while holding the book"
 
 
+# "do the same for a book and then a cushion": two repeats, the second after the first
+_SAME_THEN = re.compile(
+    rf"(?P<head>\b(?:the\s+)?same\s+(?:thing\s+)?(?:for|with|to)\s+{_NP})\s*,?\s+(?:and\s+)?then\s+(?P<np>{_NP})"
+    r"(?=\s*(?:[.;!?]|$))",
+    re.I,
+)
+
+
 def repeated_for_another(text: str) -> str:
     """Each fragment sentence that repeats a plain one-task sentence for other things, written out."""
+    text = _SAME_THEN.sub(lambda m: f"{m['head']}. Then do the same with {m['np']}", text)
     out: list[str] = []
     task = ""  # the last sentence that is not a fragment
     written = False  # the sentence split off by `_SAME_INSIDE` is kept only where its repeat is written out
@@ -142,10 +152,10 @@ def _copy_inside(text: str, m: re.Match[str]) -> str:
     said = _ORDER_LEAD.match(clause)
     last = re.sub(r"^(?:and|then)\s+", "", clause.split(",")[-1].strip())
     tasks = [clause[said.end() :] if said else clause, last]
-    for task in tasks if len(things) == 1 else []:
-        copy = _with_thing(task.strip(), things[0], inside=True)
-        if copy:
-            return m["join"] + copy[:1].lower() + copy[1:]
+    for task in tasks:
+        copies = [c for c in (_with_thing(task.strip(), x, inside=True) for x in things) if c]
+        if copies and len(copies) == len(things):  # "..., and do the same with a pillow and a clock"
+            return m["join"] + ", and ".join(c[:1].lower() + c[1:] for c in copies)
     return m[0]
 
 
@@ -168,7 +178,9 @@ def _elsewhere(task: str, fragment: str) -> str | None:
 
 def _only_things(fragment: str, things: list[Mention]) -> bool:
     """The fragment says nothing but its things ("the tomato in the microwave too" says a place)."""
-    in_thing = {i for m in things for i in range(m.start, m.end)}
+    toks = tokens(fragment)
+    # a thing's describing words, between its determiner and it ("the white teapot"), are its own
+    in_thing = {i for m in things for i in range(_det_at(m, toks) + 1 if _det_at(m, toks) >= 0 else m.start, m.end)}
     return all(i in in_thing or w in _FRAGMENT_WORDS for i, (w, _, _) in enumerate(tokens(fragment)))
 
 
