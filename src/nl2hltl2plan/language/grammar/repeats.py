@@ -58,9 +58,17 @@ _SAME_INSIDE = re.compile(
     r"|once\s+you(?:'ve|\s+have)\s+done\s+that)(?=\s*,?\s+(?:do\s+)?(?:the\s+)?same\s+(?:thing\s+)?(?:for|with|to)\s)",
     re.I,
 )
+# "put two candles on the tank, and do the same with two bars of soap": a counted thing for a counted one
+_COUNT = r"(?:two|three|four)"
+_COUNTED_TASK = re.compile(
+    rf"^(?P<verb>[a-z]+)\s+{_COUNT}\s+(?P<thing>[a-z]+(?:\s+[a-z]+){{0,3}}?)\s+"
+    r"(?P<place>(?:in|into|on|onto|inside|under)\s+(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+){0,3})$",
+    re.I,
+)
 # "X, and do the same with the cup" (no order word): the copy is written where the fragment is
 _SAME_AND = re.compile(
-    rf"(?P<join>,\s*and\s+|\s+and\s+)(?:do\s+)?(?:the\s+)?same\s+(?:thing\s+)?(?:for|with|to)\s+(?P<np>{_NPS})"
+    rf"(?P<join>,\s*and\s+|\s+and\s+)(?:do\s+)?(?:the\s+)?same\s+(?:thing\s+)?(?:for|with|to)\s+"
+    rf"(?P<np>{_NPS}|{_COUNT}\s+{_W}(?:\s+{_W}){{0,3}})"
     r"(?=\s*(?:[,.;!?]|$))",
     re.I,
 )
@@ -156,7 +164,16 @@ def _copy_inside(text: str, m: re.Match[str]) -> str:
         copies = [c for c in (_with_thing(task.strip(), x, inside=True) for x in things) if c]
         if copies and len(copies) == len(things):  # "..., and do the same with a pillow and a clock"
             return m["join"] + ", and ".join(c[:1].lower() + c[1:] for c in copies)
+        counted = _COUNTED_TASK.match(task.strip())
+        if counted and len(things) == 1 and re.match(_COUNT, m["np"], re.I) and _one_thing(counted["thing"]):
+            return f"{m['join']}{counted['verb'].lower()} {m['np']} {counted['place']}"
     return m[0]
+
+
+def _one_thing(words: str) -> bool:
+    """Do the words name one thing of the scene's kinds and nothing else ("bars of soap")?"""
+    named = [x for x in find_mentions(words) if not x.entry.generic]
+    return len(named) == 1 and named[0].surface.lower() == words.lower().strip()
 
 
 def _elsewhere(task: str, fragment: str) -> str | None:
@@ -164,7 +181,7 @@ def _elsewhere(task: str, fragment: str) -> str | None:
     sentence for the bowl, its last place replaced by this one (lower case); None where it is no such pair."""
     m = _SAME_ELSEWHERE.match(fragment.strip())
     things = [x for x in find_mentions(m["np"]) if not x.entry.generic] if m else []
-    copy = _with_thing(task, things[0], inside=True) if m and len(things) == 1 else None
+    copy = _with_thing(task, things[0], inside=True, container=True) if m and len(things) == 1 else None
     if not copy or not m:
         return None
     toks = tokens(copy)
@@ -184,14 +201,22 @@ def _only_things(fragment: str, things: list[Mention]) -> bool:
     return all(i in in_thing or w in _FRAGMENT_WORDS for i, (w, _, _) in enumerate(tokens(fragment)))
 
 
-def _with_thing(sentence: str, thing: Mention, inside: bool = False) -> str | None:
+def _with_thing(sentence: str, thing: Mention, inside: bool = False, container: bool = False) -> str | None:
     """`sentence` with its thing replaced by `thing` and its source left out, where it is a plain one-task
-    sentence (None else); for a fragment sentence (not `inside`), one of one thing and one place."""
+    sentence (None else); for a fragment sentence (not `inside`), one of one thing and one place. With
+    `container`, a place named again as a thing ("put a vase in a box and set the box on the table") is
+    the container, still a place."""
     if thing.plural:
         return None
     toks = tokens(sentence)
     named = [m for m in find_mentions(sentence) if not m.entry.generic and not _light_of(m, toks)]
     roles = [_role(m, toks) for m in named]
+    if container:
+        held = [m.entry.types for m, role in zip(named, roles, strict=True) if role == "place"]
+        roles = [
+            "place" if role == "thing" and k and m.entry.types in held else role
+            for k, (m, role) in enumerate(zip(named, roles, strict=True))
+        ]
     firsts = [m for m, role in zip(named, roles, strict=True) if role == "thing"]
     if None in roles or len(firsts) != 1 or "place" not in roles or len(toks) < 3 or firsts[0].plural:
         return None
