@@ -270,7 +270,11 @@ def _plurals(word: str) -> set[str]:
 def plural_name(phrase: str) -> str | None:
     """The plural the lexicon reads for a name of one thing ("spray bottle" -> "spray bottles", "bar of soap"
     -> "bars of soap"), None where it reads none."""
-    for form in sorted(f for f in _plurals(phrase.split(" of ")[0].split()[-1]) if "'" not in f):
+    word = phrase.split(" of ")[0].split()[-1]
+    # the regular plural first ("bottles", not "bottlees"), then the others the lexicon reads
+    usual = re.sub(r"(?<=[^aeiou])y$", "ie", re.sub(r"f(?:e)?$", "ve", word))
+    usual += "es" if re.search(r"(?:s|x|z|ch|sh|o)$", usual) else "s"
+    for form in [usual, *sorted(f for f in _plurals(word) - {usual} if "'" not in f)]:
         words = phrase.split()
         at = words.index("of") - 1 if "of" in words[1:] else len(words) - 1
         said = " ".join(words[:at] + [form] + words[at + 1 :])

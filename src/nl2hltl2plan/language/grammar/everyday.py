@@ -224,8 +224,8 @@ _FREE_REMARK = re.compile(rf"\b{_FREE_ORDER}\b", re.I)
 # or refused as it is
 _THERE = re.compile(
     r"(?P<head>\b(?:put|place|set|stick|pop|drop|leave|store|move|carry|take|bring)\s+"
-    r"(?:it|them|(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)"
-    r"|(?:(?<=\bthen\s)|(?<=\band\s))(?:the|a|an|two|three|both)\s+[a-z]+(?:\s+[a-z]+){0,2}?)"
+    r"(?:it|them|(?:the|a|an)\s+[a-z]+(?:\s+(?!over\b)[a-z]+)?)"
+    r"|(?:(?<=\bthen\s)|(?<=\band\s))(?:the|a|an|two|three|both)\s+[a-z]+(?:\s+(?!over\b)[a-z]+){0,2}?)"
     r"(?P<source>\s+from\s+(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)??"  # "the bottle from the toilet there"
     # "and two rolls next to it": beside the thing placed last, so where it was put
     r"\s+(?:(?:in|into|inside|on|onto|over)\s+)?(?:there|(?:next\s+to|beside)\s+it)\b"
@@ -257,6 +257,8 @@ def _there_named(m: re.Match[str]) -> str:
         return m[0]
     prep, place = places[-1]
     prep = "in" if prep == "to" else prep  # "walk to the sink ... in there"
+    if m["head"].split()[0].lower() in ("carry", "take", "bring", "move"):
+        prep = "to"  # "carry the pan over there": to the table ("carry the pan on the table" says where it is)
     return f"{m['head']}{m['source'] or ''} {prep} the {place.surface}"
 
 
