@@ -10,7 +10,8 @@ other than order that the rules left unread or read wrong.
 - a count with its noun left out ("two more in the cabinet", "then one more", "a third one") counts the
   thing moved last before it; "two of the grey spray bottles" says how many.
 - "along with two rolls", "the side table with the pen on it", "the other one on the shelf", "two rolls
-  next to it", "on that table", "do the same for X and then Y", "do the same with two bars of soap".
+  next to it", "on that table", "do the same for X and then Y", "do the same with two bars of soap", "take
+  two mugs, put one in the sink and the other in the cabinet".
 """
 
 from __future__ import annotations
@@ -127,6 +128,10 @@ def test_a_count_without_its_noun_names_the_thing_moved_before_not_a_place():
          [("place_two", "Apple", 2, None, "Fridge"), ("place", "Apple", 1, None, "CounterTop")], set()),
         ("FloorPlan15", "Put the mug on the dining table. Put the bread on that table too.",
          [("place", "Mug", 1, None, "DiningTable"), ("place", "Bread", 1, None, "DiningTable")], set()),
+        ("FloorPlan1", "Take two mugs, put one in the sink and the other in the cabinet.",
+         [("place", "Mug", 1, None, "SinkBasin"), ("place", "Mug", 1, None, "Cabinet")], set()),
+        ("FloorPlan1", "Rinse two mugs and put one in the sink and the other one on the counter.",
+         [("clean_place", "Mug", 1, None, "SinkBasin"), ("clean_place", "Mug", 1, None, "CounterTop")], set()),
         ("FloorPlan15", "Put the bread on the dining table. Then take the apple there too.",
          [("place", "Bread", 1, None, "DiningTable"), ("place", "Apple", 1, None, "DiningTable")], {("A", "B")}),
     ],

@@ -171,6 +171,7 @@ def everyday(text: str) -> str:
     text = _STEP_COLON.sub(r"\1 ", _ARROW.sub(" onto ", text))
     if _BELONGS.search(text):
         text = _PUT_THEM_THERE.sub("", text)
+    text = _ONE_AND_OTHER.sub(_each_of_two, text)
     text = _SAME_PLACE.sub(_same_place_named, _THERE.sub(_there_named, _ALONG_WITH.sub(_along_with, text)))
     text = _THING_FIRST.sub(lambda m: f"{m['lead']}take {m['np']}, ", _COUNT_LEFT.sub(_count_named, text))
     text = _HESITATION.sub(" ", text)
@@ -260,6 +261,29 @@ def _there_named(m: re.Match[str]) -> str:
     if m["head"].split()[0].lower() in ("carry", "take", "bring", "move"):
         prep = "to"  # "carry the pan over there": to the table ("carry the pan on the table" says where it is)
     return f"{m['head']}{m['source'] or ''} {prep} the {place.surface}"
+
+
+# "wash two bars of soap; throw one in the bin and put the other one in the tub", "take two mugs, put one in
+# the sink and the other in the cabinet": each of the two things is a task of its own, its verb said once
+_PLACE_PHRASE = r"(?:in|into|inside|on|onto|to|under)\s+(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+){0,3}?"
+_ONE_AND_OTHER = re.compile(
+    r"\b(?P<verb>wash|rinse|clean|heat|warm|cool|chill|take|grab|get|pick\s+up)\s+(?:two|both)\s+"
+    r"(?P<np>[a-z]+(?:\s+[a-z]+){0,3}?)\s*(?:[;,]|,?\s+and)\s+(?:then\s+)?"
+    rf"(?P<v1>[a-z]+)\s+one\s+(?P<p1>{_PLACE_PHRASE})\s*,?\s+and\s+"
+    rf"(?:(?P<v2>[a-z]+)\s+)?the\s+other(?:\s+one)?\s+(?P<p2>{_PLACE_PHRASE})(?=\s*(?:[.;!?,]|$))",
+    re.I,
+)
+
+
+def _each_of_two(m: re.Match[str]) -> str:
+    """ "wash two bars of soap; throw one in the bin and put the other one in the tub": "wash a bar of soap
+    and throw it in the bin, and wash another bar of soap and put it in the tub" (two plural things only)."""
+    named = [x for x in find_mentions(m["np"]) if not x.entry.generic]
+    if len(named) != 1 or not named[0].plural or named[0].surface.lower() != m["np"].lower():
+        return m[0]
+    one, verb = named[0].entry.phrase, m["verb"]
+    first = f"{verb} {'an' if one[0] in 'aeiou' else 'a'} {one} and {m['v1']} it {m['p1']}"
+    return f"{first}, and {verb.lower()} another {one} and {m['v2'] or m['v1']} it {m['p2']}"
 
 
 # "put two bottles in the cabinet, along with two rolls", "drop the towel in the tub along with two bars of
