@@ -171,7 +171,7 @@ def everyday(text: str) -> str:
     text = _STEP_COLON.sub(r"\1 ", _ARROW.sub(" onto ", text))
     if _BELONGS.search(text):
         text = _PUT_THEM_THERE.sub("", text)
-    text = _ONE_AND_OTHER.sub(_each_of_two, text)
+    text = _ONE_AND_OTHER.sub(_each_of_two, _THEN_UNDER_LAMP.sub(_each_under_lamp, text))
     text = _SAME_PLACE.sub(_same_place_named, _THERE.sub(_there_named, _ALONG_WITH.sub(_along_with, text)))
     text = _THING_FIRST.sub(lambda m: f"{m['lead']}take {m['np']}, ", _COUNT_LEFT.sub(_count_named, text))
     text = _HESITATION.sub(" ", text)
@@ -261,6 +261,23 @@ def _there_named(m: re.Match[str]) -> str:
     if m["head"].split()[0].lower() in ("carry", "take", "bring", "move"):
         prep = "to"  # "carry the pan over there": to the table ("carry the pan on the table" says where it is)
     return f"{m['head']}{m['source'] or ''} {prep} the {place.surface}"
+
+
+# "look at a credit card and then a phone under the floor lamp": the lamp of both, the second after the first
+# (without "then", "look at the X and the Y under the lamp" is read as a list already)
+_THEN_UNDER_LAMP = re.compile(
+    r"\b(?P<verb>look\s+at|examine|inspect|check\s+out)\s+(?P<a>(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+){0,2}?)"
+    r"\s*,?\s+and\s+then\s+(?P<b>(?:the|a|an|another)\s+[a-z]+(?:\s+[a-z]+){0,2}?)\s+"
+    r"(?P<lamp>(?:under|by|beneath|in)\s+(?:the\s+light\s+of\s+)?(?:the|a)\s+(?:[a-z]+\s+){0,2}?(?:lamp|light))"
+    r"(?=\s*(?:[.;!?,]|$))",
+    re.I,
+)
+
+
+def _each_under_lamp(m: re.Match[str]) -> str:
+    """ "look at A and then B under the lamp": "look at A under the lamp, and then look at B under the lamp"."""
+    verb = m["verb"].lower()
+    return f"{m['verb']} {m['a']} {m['lamp']}, and then {verb} {m['b']} {m['lamp']}"
 
 
 # "wash two bars of soap; throw one in the bin and put the other one in the tub", "take two mugs, put one in
