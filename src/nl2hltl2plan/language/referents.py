@@ -446,7 +446,8 @@ def bare_plurals(instruction: str) -> list[Mention]:
 def _partitive(before: list[str]) -> bool:
     """ "two of the grey spray bottles": the count before "of the" (and a describing word) says how many."""
     at = before.index("of") if "of" in before else -1
-    return at > 0 and before[at + 1 : at + 2] == ["the"] and len(before) - at <= 3 and _counted(before[at - 1 : at])
+    near = len(before) - at <= 3  # "of the" and at most one describing word
+    return at > 0 and before[at + 1 : at + 2] == ["the"] and near and _counted(before[at - 1 : at])
 
 
 def _both_after(

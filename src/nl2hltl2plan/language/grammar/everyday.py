@@ -172,7 +172,7 @@ def everyday(text: str) -> str:
     if _BELONGS.search(text):
         text = _PUT_THEM_THERE.sub("", text)
     text = _ONE_AND_OTHER.sub(_each_of_two, _THEN_UNDER_LAMP.sub(_each_under_lamp, text))
-    text = _SAME_PLACE.sub(_same_place_named, _THERE.sub(_there_named, _ALONG_WITH.sub(_along_with, text)))
+    text = _THAT_PLACE.sub(_that_place_named, _THERE.sub(_there_named, _ALONG_WITH.sub(_along_with, text)))
     text = _THING_FIRST.sub(lambda m: f"{m['lead']}take {m['np']}, ", _COUNT_LEFT.sub(_count_named, text))
     text = _HESITATION.sub(" ", text)
     text = re.sub(r"(\s*,)+", ",", text)  # the commas left where fillers were
@@ -259,7 +259,7 @@ def _there_named(m: re.Match[str]) -> str:
     prep, place = places[-1]
     prep = "in" if prep == "to" else prep  # "walk to the sink ... in there"
     if m["head"].split()[0].lower() in ("carry", "take", "bring", "move"):
-        prep = "to"  # "carry the pan over there": to the table ("carry the pan on the table" says where it is)
+        prep = "to"  # "carry the pan over there": to the table ("carry the pan on the table": where it is)
     return f"{m['head']}{m['source'] or ''} {prep} the {place.surface}"
 
 
@@ -275,7 +275,7 @@ _THEN_UNDER_LAMP = re.compile(
 
 
 def _each_under_lamp(m: re.Match[str]) -> str:
-    """ "look at A and then B under the lamp": "look at A under the lamp, and then look at B under the lamp"."""
+    """ "look at A and then B under the lamp": "look at A under the lamp, and then look at B under it"."""
     verb = m["verb"].lower()
     return f"{m['verb']} {m['a']} {m['lamp']}, and then {verb} {m['b']} {m['lamp']}"
 
@@ -316,7 +316,11 @@ _ALONG_WITH = re.compile(
 def _along_with(m: re.Match[str]) -> str:
     """ ", along with two rolls": ", and put two rolls in the cabinet" (the last place named before it)."""
     before = m.string[sentence_start(m.string, m.start()) : m.start()]
-    places = [(d["prep"].lower(), named[-1]) for d in _DESTINATION_PHRASE.finditer(before) if (named := find_mentions(d["np"]))]
+    places = [
+        (d["prep"].lower(), named[-1])
+        for d in _DESTINATION_PHRASE.finditer(before)
+        if (named := find_mentions(d["np"]))
+    ]
     if not places or _NEGATED.search(before):
         return m[0]
     prep, place = places[-1]
@@ -325,10 +329,12 @@ def _along_with(m: re.Match[str]) -> str:
 
 # "put a pen on that shelf too": the last destination named before it with that word ("the coffee table"),
 # written out; else as it is ("the same table" stays: where the scene has two, the spec cannot keep one)
-_SAME_PLACE = re.compile(r"\b(?P<prep>in|into|inside|on|onto|to)\s+that\s+(?P<noun>[a-z]+)\b(?!\s+(?:of|with)\b)", re.I)
+_THAT_PLACE = re.compile(
+    r"\b(?P<prep>in|into|inside|on|onto|to)\s+that\s+(?P<noun>[a-z]+)\b(?!\s+(?:of|with)\b)", re.I
+)
 
 
-def _same_place_named(m: re.Match[str]) -> str:
+def _that_place_named(m: re.Match[str]) -> str:
     """ "on that table": the last place named before it whose name ends in "table", written out."""
     if _NEGATED.search(m.string[: m.start()]):
         return m[0]
@@ -371,7 +377,8 @@ def _count_named(m: re.Match[str]) -> str:
 def _placed(x: Mention, toks: list[tuple[str, int, int]]) -> bool:
     """Is the mention a place ("in the cabinet", "on the back of the toilet") rather than a thing moved?"""
     i = x.start - 1
-    while i >= 0 and (toks[i][0] in DETERMINERS or not categories(toks[i][0])) and toks[i][0] not in _PLACE_WORDS:
+    describing = DETERMINERS | {w for w, _, _ in toks if not categories(w)}
+    while i >= 0 and toks[i][0] not in _PLACE_WORDS and toks[i][0] in describing:
         i -= 1  # determiners and describing words ("the grey", "two of the")
         if i >= 0 and toks[i][0] == "of":
             return i > 0 and toks[i - 1][0] in _PARTS

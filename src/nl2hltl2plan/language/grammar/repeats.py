@@ -141,7 +141,8 @@ def repeated_for_another(text: str) -> str:
         elsewhere = _elsewhere(task, fragment) if task else None
         if elsewhere:  # "Then do the same with the bowl, but put that one in the cabinet."
             lead = said.group(0) if said else core[: len(core) - len(core.lstrip())]
-            out.append(lead + (elsewhere if said else elsewhere[:1].upper() + elsewhere[1:]) + body[len(core) :])
+            said_as = elsewhere if said else elsewhere[:1].upper() + elsewhere[1:]
+            out.append(lead + said_as + body[len(core) :])
             written = True
             continue
         if not REPEAT_FRAGMENT.match(fragment):
@@ -197,8 +198,14 @@ def _only_things(fragment: str, things: list[Mention]) -> bool:
     """The fragment says nothing but its things ("the tomato in the microwave too" says a place)."""
     toks = tokens(fragment)
     # a thing's describing words, between its determiner and it ("the white teapot"), are its own
-    in_thing = {i for m in things for i in range(_det_at(m, toks) + 1 if _det_at(m, toks) >= 0 else m.start, m.end)}
+    in_thing = {i for m in things for i in range(_own_words_start(m, toks), m.end)}
     return all(i in in_thing or w in _FRAGMENT_WORDS for i, (w, _, _) in enumerate(tokens(fragment)))
+
+
+def _own_words_start(m: Mention, toks: list[tuple[str, int, int]]) -> int:
+    """Where a thing's own words start: after its determiner ("the white teapot"), or at the thing."""
+    at = _det_at(m, toks)
+    return at + 1 if at >= 0 else m.start
 
 
 def _with_thing(sentence: str, thing: Mention, inside: bool = False, container: bool = False) -> str | None:
