@@ -314,12 +314,12 @@ def lexicon() -> dict[tuple[str, ...], tuple[Entry, bool]]:
     for phrase, of in listed_plurals:
         table[tuple(phrase.split())] = (singular[tuple(of.split())], True)
     for key, entry in singular.items():
-        # "bars of soap", "sets of keys": the word before "of" is the one counted
-        at = key.index("of") - 1 if "of" in key[1:] else len(key) - 1
-        for pl in _plurals(key[at]):
-            pkey = key[:at] + (pl,) + key[at + 1 :]
-            if pkey not in singular:
-                table.setdefault(pkey, (entry, True))
+        # the last word's plurals, and in "bar of soap" the counted word's: "bars of soap", "sets of keys"
+        for at in {len(key) - 1, key.index("of") - 1 if "of" in key[1:] else len(key) - 1}:
+            for pl in _plurals(key[at]):
+                pkey = key[:at] + (pl,) + key[at + 1 :]
+                if pkey not in singular:
+                    table.setdefault(pkey, (entry, True))
     for key, entry in singular.items():
         table[key] = (entry, False)
     return table
