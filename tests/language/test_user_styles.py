@@ -234,6 +234,10 @@ KNOWN_WRONG: set[str] = {
     "Move the CD from the desk to the top of the dresser. Then, using the desk lamp, look at the alarm "
     "clock, the CD and the pillow one after another.",
     "Using the lamp on the dresser, examine a credit card, a CD, a book and an alarm clock, in any order.",
+    # h180's paper-style dev: its truth (two trials) keeps "put the box on the couch" a task beside "then drop
+    # a remote into it"; the rules read one place_in_container, the guide's "usually ONE ALFRED task"
+    "Hold a remote and turn on the floor lamp. After that, put the box on the couch and then drop a second "
+    "remote into it.",
 }
 
 
