@@ -7,10 +7,13 @@ The task before is repeated only where its sentence is one plain task: a task ve
 with a lamp), one thing it acts on (singular, after a verb: "holding the book"), places after prepositions,
 and otherwise only task verbs, "and", "it", "while", "back" and the words between a determiner and its
 thing; a source ("from the shelf") is the first thing's and is not copied. The fragment says nothing but
-its things and their describing words ("The red tomato too." is repeated, "The tomato in the microwave too."
-stays). Said inside the sentence
-of its task with no order word ("X, and do the same with the Y"), the copy is written in its place, in
-the same sentence, so the sentence's order word ("Then ...") covers both.
+its things and their describing words ("The white teapot too." is repeated, "The tomato in the microwave
+too." stays). Said inside the sentence of its task with no order word ("X, and do the same with the Y"),
+the copy is written in its place, in the same sentence, so the sentence's order word ("Then ...") covers
+both; so are copies for a list ("... with a pillow and a clock") and a counted copy after a counted placing
+("put two candles on the tank and do the same with two bars of soap"). "Do the same with the bowl, but put
+that one in the cabinet" is the task before for the bowl with that place, and "the same for X and then Y"
+two repeats, Y after X.
 Any other fragment stays as written, and check 1 names it unless a task does the whole of the task before
 for the thing it names (`unsupported_steps.repeats_for_another`).
 
