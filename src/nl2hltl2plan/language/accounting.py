@@ -50,7 +50,13 @@ from nl2hltl2plan.language.grounding import (
     tokens,
 )
 from nl2hltl2plan.language.it_of_two import it_of_two
-from nl2hltl2plan.language.landmarks import NEAR_WORDS, carried, landmark_destinations, pair_start
+from nl2hltl2plan.language.landmarks import (
+    NEAR_WORDS,
+    carried,
+    landmark_destinations,
+    on_the_place,
+    pair_start,
+)
 from nl2hltl2plan.language.memo import reading_memo
 from nl2hltl2plan.language.mention_use import looked_at, unused_mentions
 from nl2hltl2plan.language.negations import NO_CONSTRAINT, about_order, unforbidden_verb
@@ -303,6 +309,8 @@ def _locative(
         return True
     if i >= 2 and toks[i - 1][0] in ("it", "them") and "verb_any" in categories(toks[i - 2][0]):
         return False  # "put it in the microwave": where it goes, never where something is
+    if toks[i][0] == "with" and on_the_place(toks, i, m, places):
+        return True  # "the side table with the pen on it": what is on the place says which place it is
     if toks[i][0] == "with" and ((i > 0 and toks[i - 1][0] in _DONE_WORDS) or carried(m)):
         return False  # "done with the mug": a task it is in; "a pan with a tomato": a thing to move too
     clause = _clause_span(instruction, toks[start][1])

@@ -267,6 +267,22 @@ def _plurals(word: str) -> set[str]:
     return out
 
 
+def plural_name(phrase: str) -> str | None:
+    """The plural the lexicon reads for a name of one thing ("spray bottle" -> "spray bottles", "bar of soap"
+    -> "bars of soap"), None where it reads none."""
+    word = phrase.split(" of ")[0].split()[-1]
+    # the regular plural first ("bottles", not "bottlees"), then the others the lexicon reads
+    usual = re.sub(r"(?<=[^aeiou])y$", "ie", re.sub(r"f(?:e)?$", "ve", word))
+    usual += "es" if re.search(r"(?:s|x|z|ch|sh|o)$", usual) else "s"
+    for form in [usual, *sorted(f for f in _plurals(word) - {usual} if "'" not in f)]:
+        words = phrase.split()
+        at = words.index("of") - 1 if "of" in words[1:] else len(words) - 1
+        said = " ".join(words[:at] + [form] + words[at + 1 :])
+        if (entry := lexicon().get(tuple(said.split()))) and entry[1] and entry[0].phrase == phrase:
+            return said
+    return None
+
+
 def phrase_lines(name: str) -> list[tuple[list[str], list[str]]]:
     """The lines of a word file of this package in the lexicon's format, `phrase[, phrase...] : field [:
     field ...]` (`#` comments): each line's phrases and its fields (lexicon.txt, everyday_names.txt)."""
@@ -298,10 +314,12 @@ def lexicon() -> dict[tuple[str, ...], tuple[Entry, bool]]:
     for phrase, of in listed_plurals:
         table[tuple(phrase.split())] = (singular[tuple(of.split())], True)
     for key, entry in singular.items():
-        for pl in _plurals(key[-1]):
-            pkey = key[:-1] + (pl,)
-            if pkey not in singular:
-                table.setdefault(pkey, (entry, True))
+        # the last word's plurals, and in "bar of soap" the counted word's: "bars of soap", "sets of keys"
+        for at in {len(key) - 1, key.index("of") - 1 if "of" in key[1:] else len(key) - 1}:
+            for pl in _plurals(key[at]):
+                pkey = key[:at] + (pl,) + key[at + 1 :]
+                if pkey not in singular:
+                    table.setdefault(pkey, (entry, True))
     for key, entry in singular.items():
         table[key] = (entry, False)
     return table

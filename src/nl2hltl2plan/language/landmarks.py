@@ -70,6 +70,15 @@ def carried(m: Mention) -> bool:
     return any((a := look(t)) is not None and a.pickupable for t in m.entry.types)
 
 
+def on_the_place(toks: list[tuple[str, int, int]], at: int, m: Mention, places: list[Mention]) -> bool:
+    """ "the side table with the pen on it": after "with" (at `at`), a thing said to be on or in the place
+    named just before, a place no robot moves; the thing only says which place it is ("a plate with an
+    apple on it" is a plate to move)."""
+    before = [o for o in places if o.end == at and not carried(o)]
+    after = [w for w, _, _ in toks[m.end : m.end + 2]]
+    return bool(before) and after in (["on", "it"], ["in", "it"], ["on", "top"])
+
+
 def pair_start(toks: list[tuple[str, int, int]], start: int) -> int:
     """For the place whose first word is at `start`: the first word of the place before it when the two
     are joined as "between the sink and the stove"; else `start`."""

@@ -439,7 +439,15 @@ def bare_plurals(instruction: str) -> list[Mention]:
         m
         for m in find_mentions(instruction)
         if m.plural and not m.entry.generic and not _counted(words[max(0, m.start - 3) : m.start])
+        and not _partitive(words[max(0, m.start - 5) : m.start])
     ]
+
+
+def _partitive(before: list[str]) -> bool:
+    """ "two of the grey spray bottles": the count before "of the" (and a describing word) says how many."""
+    at = before.index("of") if "of" in before else -1
+    near = len(before) - at <= 3  # "of the" and at most one describing word
+    return at > 0 and before[at + 1 : at + 2] == ["the"] and near and _counted(before[at - 1 : at])
 
 
 def _both_after(

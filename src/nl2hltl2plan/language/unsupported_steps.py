@@ -263,6 +263,7 @@ def other_instances(
                 the_shared = any(held.get(t, 0) > 1 for t in hit)
         else:
             the_shared = _STANDS_FOR.match(rest) is not None  # "the other on the counter", "another one"
+            hit = {t for t in shared if picked[t]}  # it stands for a thing moved, not for a place
         # "the other tomato", "one in the fridge and the other in the sink": the tasks take two apart
         if the_shared and (m.group(0) == "the same" or not hit <= apart):
             out.append(Unread(m.group(0), "object", _TWO_OF_A_TYPE))

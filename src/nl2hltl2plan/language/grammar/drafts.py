@@ -269,6 +269,14 @@ class DraftBuilder:
             d = None
         if d is not None and it.obj is not None and it.obj.pronoun and _placed_again(d, fr, it):
             it.obj, d = d.obj or it.obj, None  # "put the remote on the sofa, then put it on the armchair"
+        listed = _group_for_them(drafts, st.drafts, it)
+        if listed and len(fr.items) == 1 and joiner not in {"first", "finally"}:
+            # "wash a rag and a bar of soap and put them (both) in a drawer": each thing of the group is put
+            for k in listed:
+                drafts[k].frames.append((fr, it))
+                drafts[k].end = fr.end
+                drafts[k].label += f" and {fr.text}" if drafts[k].label else ""  # its text says the place
+            return -1
         nxt, at = st.next_clause, st.sentence.offset
         if (
             d is not None
@@ -426,9 +434,23 @@ def _continues(d: Draft, fr: Frame, it: Item, joiner: str) -> bool:
     return incomplete(d) and d.obj is None
 
 
+# the pronouns that name every thing of a list said before ("them", "both of them")
+_THEM = frozenset({"them", "both", "both of them", "them both", "all of them", "them all", "those", "these"})
+
+
+def _group_for_them(drafts: list[Draft], mine: list[int], it: Item) -> list[int]:
+    """The drafts of the sentence's last group (a list of things sharing a verb, each one still to be put
+    somewhere) that a plural pronoun names; [] where it names no such list."""
+    if it.obj is None or not it.obj.pronoun or it.obj.text.lower() not in _THEM or not mine:
+        return []
+    group = drafts[mine[-1]].group
+    members = [k for k in mine if drafts[k].group == group] if group >= 0 else []
+    return members if len(members) > 1 and all(incomplete(drafts[k]) for k in members) else []
+
+
 def _another_of_it(o: NP, d: Draft) -> bool:
-    """Is `o` "another one" / "another" after draft `d` has put its thing somewhere?"""
-    return o.pronoun and o.text.lower() in {"another", "another one"} and not incomplete(d)
+    """Is `o` "another one" / "another" / "the other one" after draft `d` has put its thing somewhere?"""
+    return o.pronoun and o.text.lower() in {"another", "another one", "the other one"} and not incomplete(d)
 
 
 # ----- text helpers ----------------------------------------------------------------------------------

@@ -27,11 +27,19 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
-from nl2hltl2plan.language.content_words import free_order_phrase
+from nl2hltl2plan.language.content_words import DETERMINERS, categories, free_order_phrase
 from nl2hltl2plan.language.grammar.repeats import repeated_for_another
 from nl2hltl2plan.language.grammar.restated import count_fits, restated
 from nl2hltl2plan.language.grammar.treatments_said import treatments_said
-from nl2hltl2plan.language.grounding import alfred_lookup, find_mentions, phrase_lines
+from nl2hltl2plan.language.grounding import (
+    Mention,
+    alfred_lookup,
+    find_mentions,
+    phrase_lines,
+    plural_name,
+    sentence_start,
+    tokens,
+)
 from nl2hltl2plan.language.spelling import respelt
 from nl2hltl2plan.language.statements import RELATIVE_PLACE
 
@@ -190,8 +198,10 @@ def everyday(text: str) -> str:
     text = _STEP_COLON.sub(r"\1 ", _ARROW.sub(" onto ", text))
     if _BELONGS.search(text):
         text = _PUT_THEM_THERE.sub("", text)
-    text = _IT_PLACE.sub(_fixture_named, _THERE.sub(_there_named, text))
-    text = _THING_FIRST.sub(lambda m: f"{m['lead']}take {m['np']}, ", text)
+    text = _ONE_AND_OTHER.sub(_each_of_two, _THEN_UNDER_LAMP.sub(_each_under_lamp, text))
+    text = _THAT_PLACE.sub(_that_place_named, _THERE.sub(_there_named, _ALONG_WITH.sub(_along_with, text)))
+    text = _IT_PLACE.sub(_fixture_named, text)
+    text = _THING_FIRST.sub(lambda m: f"{m['lead']}take {m['np']}, ", _COUNT_LEFT.sub(_count_named, text))
     text = _HESITATION.sub(" ", _ORDER_THO.sub(_order_tho, text))
     text = _DONE_AT_END.sub(_done_at_end, text)
     text = re.sub(r"(\s*,)+", ",", text)  # the commas left where fillers were
@@ -245,17 +255,21 @@ _FREE_REMARK = re.compile(rf"\b{_FREE_ORDER}\b", re.I)
 # pillow on it too", "two remotes on the couch and two cards on it too"); a bare "on it" may be a thing
 # just named ("put a fork in a cup and ... put the cup in it"), and is left
 _THERE = re.compile(
-    r"(?P<head>\b(?:put|place|set|stick|pop|drop|leave|store|move|throw|toss)\s+"
-    r"(?:it|them|(?:the|a|an|two|both|\d)\s+[a-z]+(?:\s+[a-z]+)?)"
-    r"|(?:(?<=\bthen\s)|(?<=\band\s))(?:the|a|an|two|both|\d)\s+[a-z]+(?:\s+[a-z]+)?)"
-    r"\s+(?:(?:(?:in|into|inside|on|onto)\s+)?there\b(?=\s*(?:too|as\s+well|also)?\s*(?:[,.;!?]|$|and\b|then\b))"
+    r"(?P<head>\b(?:put|place|set|stick|pop|drop|leave|store|move|throw|toss|carry|take|bring)\s+"
+    r"(?:it|them|(?:the|a|an|two|both|\d)\s+[a-z]+(?:\s+(?!over\b)[a-z]+)?)"
+    r"|(?:(?<=\bthen\s)|(?<=\band\s))(?:the|a|an|two|three|both|\d)\s+[a-z]+(?:\s+(?!over\b)[a-z]+){0,2}?)"
+    r"(?P<source>\s+from\s+(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)??"  # "the bottle from the toilet there"
+    # "and two rolls next to it": beside the thing placed last, so where it was put
+    r"\s+(?:(?:(?:in|into|inside|on|onto|over)\s+)?(?:there|(?:next\s+to|beside)\s+it)\b"
+    r"(?=\s*(?:too|as\s+well|also)?\s*(?:[,.;!?]|$|and\b|then\b))"
     r"|(?:in|into|inside|on|onto)\s+it\s+(?=(?:too|as\s+well|also)\s*(?:[,.;!?]|$|and\b|then\b)))",
     re.I,
 )
 _NEGATED = re.compile(r"(?:\bnot|n't|\bnever|\bno)\s+(?:\w+\s+)?$", re.I)
 _DESTINATION_PHRASE = re.compile(
     r"(?<!next )(?<!close )\b(?P<prep>in|into|inside|on|onto|to)\s+"
-    r"(?P<np>(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)",
+    # "on the back of the toilet": the part of a thing ("back", "top") names no place; its thing does
+    r"(?:the\s+(?:back|top|side|edge|front|lid)\s+of\s+)?(?P<np>(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)",
     re.I,
 )
 
@@ -265,16 +279,20 @@ def _there_named(m: re.Match[str]) -> str:
     after a negation, "don't put the knife there", which the constraint reader reads as it is)."""
     if _NEGATED.search(m.string[: m.start()]):
         return m[0]
+    moved = {x.entry.types[0] for x in find_mentions(m["head"])}  # "put it in a pan and carry the pan there"
     places = [
         (d["prep"].lower(), named[-1])
         for d in _DESTINATION_PHRASE.finditer(m.string[: m.start()])
         if (named := find_mentions(d["np"])) and not named[-1].entry.generic
+        and named[-1].entry.types[0] not in moved
     ]
     if not places:
         return m[0]
     prep, place = places[-1]
     prep = "in" if prep == "to" else prep  # "walk to the sink ... in there"
-    return f"{m['head']} {prep} the {place.surface}" + (" " if m[0].endswith(" ") else "")
+    if m["head"].split()[0].lower() in ("carry", "take", "bring", "move"):
+        prep = "to"  # "carry the pan over there": to the table ("carry the pan on the table": where it is)
+    return f"{m['head']}{m['source'] or ''} {prep} the {place.surface}" + (" " if m[0].endswith(" ") else "")
 
 
 # a bare "it" as a place, where it can only be a fixture that holds things (a bed, a fridge: ALFRED cannot
@@ -306,6 +324,128 @@ def _fixture_named(m: re.Match[str]) -> str:
     if a is None or a.pickupable or not a.receptacle:
         return m[0]
     return f"{m['head']} {m['prep']} the {named[-1].surface}"
+
+
+# "look at a credit card and then a phone under the floor lamp": the lamp of both, the second after the first
+# (without "then", "look at the X and the Y under the lamp" is read as a list already)
+_THEN_UNDER_LAMP = re.compile(
+    r"\b(?P<verb>look\s+at|examine|inspect|check\s+out)\s+(?P<a>(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+){0,2}?)"
+    r"\s*,?\s+and\s+then\s+(?P<b>(?:the|a|an|another)\s+[a-z]+(?:\s+[a-z]+){0,2}?)\s+"
+    r"(?P<lamp>(?:under|by|beneath|in)\s+(?:the\s+light\s+of\s+)?(?:the|a)\s+(?:[a-z]+\s+){0,2}?(?:lamp|light))"
+    r"(?=\s*(?:[.;!?,]|$))",
+    re.I,
+)
+
+
+def _each_under_lamp(m: re.Match[str]) -> str:
+    """ "look at A and then B under the lamp": "look at A under the lamp, and then look at B under it"."""
+    verb = m["verb"].lower()
+    return f"{m['verb']} {m['a']} {m['lamp']}, and then {verb} {m['b']} {m['lamp']}"
+
+
+# "wash two bars of soap; throw one in the bin and put the other one in the tub", "take two mugs, put one in
+# the sink and the other in the cabinet": each of the two things is a task of its own, its verb said once
+_PLACE_PHRASE = r"(?:in|into|inside|on|onto|to|under)\s+(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+){0,3}?"
+_ONE_AND_OTHER = re.compile(
+    r"\b(?P<verb>wash|rinse|clean|heat|warm|cool|chill|take|grab|get|pick\s+up)\s+(?:two|both)\s+"
+    r"(?P<np>[a-z]+(?:\s+[a-z]+){0,3}?)\s*(?:[;,]|,?\s+and)\s+(?:then\s+)?"
+    rf"(?P<v1>[a-z]+)\s+one\s+(?P<p1>{_PLACE_PHRASE})\s*,?\s+and\s+"
+    rf"(?:(?P<v2>[a-z]+)\s+)?the\s+other(?:\s+one)?\s+(?P<p2>{_PLACE_PHRASE})(?=\s*(?:[.;!?,]|$))",
+    re.I,
+)
+
+
+def _each_of_two(m: re.Match[str]) -> str:
+    """ "wash two bars of soap; throw one in the bin and put the other one in the tub": "wash a bar of soap
+    and throw it in the bin, and wash another bar of soap and put it in the tub" (two plural things only)."""
+    named = [x for x in find_mentions(m["np"]) if not x.entry.generic]
+    if len(named) != 1 or not named[0].plural or named[0].surface.lower() != m["np"].lower():
+        return m[0]
+    one, verb = named[0].entry.phrase, m["verb"]
+    first = f"{verb} {'an' if one[0] in 'aeiou' else 'a'} {one} and {m['v1']} it {m['p1']}"
+    return f"{first}, and {verb.lower()} another {one} and {m['v2'] or m['v1']} it {m['p2']}"
+
+
+# "put two bottles in the cabinet, along with two rolls", "drop the towel in the tub along with two bars of
+# soap": the thing after "along with" goes where the placement before it put its thing (written out as a
+# placement of its own: "..., and put two rolls in the cabinet"); with no place before it, it stays
+_ALONG_WITH = re.compile(
+    r"\s*,?\s+along\s+with\s+(?P<np>(?:(?:the|a|an|two|three|some|both)\s+)+[a-z]+(?:\s+[a-z]+){0,3}?)"
+    r"(?=\s*(?:[,.;!?]|$|\band\b|\bthen\b))",
+    re.I,
+)
+
+
+def _along_with(m: re.Match[str]) -> str:
+    """ ", along with two rolls": ", and put two rolls in the cabinet" (the last place named before it)."""
+    before = m.string[sentence_start(m.string, m.start()) : m.start()]
+    places = [
+        (d["prep"].lower(), named[-1])
+        for d in _DESTINATION_PHRASE.finditer(before)
+        if (named := find_mentions(d["np"]))
+    ]
+    if not places or _NEGATED.search(before):
+        return m[0]
+    prep, place = places[-1]
+    return f", and put {m['np']} {'on' if prep == 'to' else prep} the {place.surface}"
+
+
+# "put a pen on that shelf too": the last destination named before it with that word ("the coffee table"),
+# written out; else as it is ("the same table" stays: where the scene has two, the spec cannot keep one)
+_THAT_PLACE = re.compile(
+    r"\b(?P<prep>in|into|inside|on|onto|to)\s+that\s+(?P<noun>[a-z]+)\b(?!\s+(?:of|with)\b)", re.I
+)
+
+
+def _that_place_named(m: re.Match[str]) -> str:
+    """ "on that table": the last place named before it whose name ends in "table", written out."""
+    if _NEGATED.search(m.string[: m.start()]):
+        return m[0]
+    noun = m["noun"].lower()
+    for d in reversed(list(_DESTINATION_PHRASE.finditer(m.string[: m.start()]))):
+        named = [x for x in find_mentions(d["np"]) if not x.entry.generic]
+        if named and named[-1].surface.lower().split()[-1] in (noun, noun + "s"):
+            return f"{m['prep']} the {named[-1].surface}"
+    return m[0]
+
+
+# "a spray bottle on the toilet and two more in the cabinet", "then one more", "a third one on the tank", "one
+# on the sofa and two on the armchair": a count whose noun is left out counts the thing named last before it,
+# which is written out ("two more spray bottles"); with none, or one that has no plural form, it stays
+_COUNT_LEFT = re.compile(
+    r"\b(?P<count>(?:one|two|three)\s+more|a\s+(?:third|fourth)(?:\s+one)?|(?<=\band\s)(?:one|two|three))"
+    r"(?=\s+(?:in|into|inside|on|onto|to|under|next\s+to|there)\b|\s*(?:[,.;!?]|$|too\b|as\s+well\b))",
+    re.I,
+)
+# the words that put a noun phrase in a place ("in the cabinet", "by the sink"): the thing named is no thing
+# moved ("of" only after a part: "the back of the toilet"; "two of the bottles" counts bottles)
+_PLACE_WORDS = frozenset("in into inside on onto to under at by near from beside behind next with".split())
+_PARTS = frozenset("back top side edge front lid bottom end".split())
+
+
+def _count_named(m: re.Match[str]) -> str:
+    """ "two more": "two more spray bottles", the last thing moved before it named, in the count's number."""
+    named = [x for x in find_mentions(m.string[: m.start()]) if not x.entry.generic]
+    toks = tokens(m.string[: m.start()])
+    things = [x for x in named if not _placed(x, toks)]
+    if not things:
+        return m[0]
+    count = re.sub(r"\s+one$", "", m[0])  # "a third one": "a third spray bottle"
+    if count.lower().split()[0] in ("one", "a"):
+        return f"{count} {things[-1].entry.phrase}"
+    plural = plural_name(things[-1].entry.phrase)
+    return f"{count} {plural}" if plural else m[0]
+
+
+def _placed(x: Mention, toks: list[tuple[str, int, int]]) -> bool:
+    """Is the mention a place ("in the cabinet", "on the back of the toilet") rather than a thing moved?"""
+    i = x.start - 1
+    describing = DETERMINERS | {w for w, _, _ in toks if not categories(w)}
+    while i >= 0 and toks[i][0] not in _PLACE_WORDS and toks[i][0] in describing:
+        i -= 1  # determiners and describing words ("the grey", "two of the")
+        if i >= 0 and toks[i][0] == "of":
+            return i > 0 and toks[i - 1][0] in _PARTS
+    return i >= 0 and toks[i][0] in _PLACE_WORDS
 
 
 # "the mug that's on the counter, put it in the sink": the thing named first, then what to do with "it"

@@ -7,9 +7,13 @@ The task before is repeated only where its sentence is one plain task: a task ve
 with a lamp), one thing it acts on (singular, after a verb: "holding the book"), places after prepositions,
 and otherwise only task verbs, "and", "it", "while", "back" and the words between a determiner and its
 thing; a source ("from the shelf") is the first thing's and is not copied. The fragment says nothing but
-its things ("The red tomato too." and "The tomato in the microwave too." stay). Said inside the sentence
-of its task with no order word ("X, and do the same with the Y"), the copy is written in its place, in
-the same sentence, so the sentence's order word ("Then ...") covers both.
+its things and their describing words ("The white teapot too." is repeated, "The tomato in the microwave
+too." stays). Said inside the sentence of its task with no order word ("X, and do the same with the Y"),
+the copy is written in its place, in the same sentence, so the sentence's order word ("Then ...") covers
+both; so are copies for a list ("... with a pillow and a clock") and a counted copy after a counted placing
+("put two candles on the tank and do the same with two bars of soap"). "Do the same with the bowl, but put
+that one in the cabinet" is the task before for the bowl with that place, and "the same for X and then Y"
+two repeats, Y after X.
 Any other fragment stays as written, and check 1 names it unless a task does the whole of the task before
 for the thing it names (`unsupported_steps.repeats_for_another`).
 
@@ -57,12 +61,32 @@ _SAME_INSIDE = re.compile(
     r"|once\s+you(?:'ve|\s+have)\s+done\s+that)(?=\s*,?\s+(?:do\s+)?(?:the\s+)?same\s+(?:thing\s+)?(?:for|with|to)\s)",
     re.I,
 )
+# "put two candles on the tank, and do the same with two bars of soap": a counted thing for a counted one
+_COUNT = r"(?:two|three|four)"
+_COUNTED_TASK = re.compile(
+    rf"^(?P<verb>[a-z]+)\s+{_COUNT}\s+(?P<thing>[a-z]+(?:\s+[a-z]+){{0,3}}?)\s+"
+    r"(?P<place>(?:in|into|on|onto|inside|under)\s+(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+){0,3})$",
+    re.I,
+)
 # "X, and do the same with the cup" (no order word): the copy is written where the fragment is
 _SAME_AND = re.compile(
-    rf"(?P<join>,\s*and\s+|\s+and\s+)(?:do\s+)?(?:the\s+)?same\s+(?:thing\s+)?(?:for|with|to)\s+(?P<np>{_NP})"
+    rf"(?P<join>,\s*and\s+|\s+and\s+)(?:do\s+)?(?:the\s+)?same\s+(?:thing\s+)?(?:for|with|to)\s+"
+    rf"(?P<np>{_NPS}|{_COUNT}\s+{_W}(?:\s+{_W}){{0,3}})"
     r"(?=\s*(?:[,.;!?]|$))",
     re.I,
 )
+# "do the same with the bowl, but put that one in the cabinet", "... only put that in the tub": the task
+# before for the bowl, with this place instead of its own
+_SAME_ELSEWHERE = re.compile(
+    rf"^(?:do\s+)?(?:the\s+)?same\s+(?:thing\s+)?(?:for|with|to)\s+(?P<np>{_NP})\s*,?\s*(?:but|only|except)\s+"
+    r"(?:that\s+)?(?:(?:put|place|set|leave|move|drop)\s+(?:it|(?:that|this)(?:\s+[a-z]+)?)"
+    r"|(?:it|(?:that|this)(?:\s+one)?)\s+goes)\s+"
+    r"(?P<place>(?:in|into|on|onto|inside|under)\s+(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+){0,3}?)"
+    r"\s*(?:instead)?\s*$",
+    re.I,
+)
+# the prepositions that open a destination (not "of", "by": "the back of the toilet", "by the light of")
+_TO_PREPS = {"in", "into", "on", "onto", "inside", "to", "under", "at", "near"}
 # the words before a place's determiner ("in the sink", "by the light of the lamp"); "look at" opens a thing
 _PLACE_PREPS = {"in", "into", "on", "onto", "inside", "to", "at", "under", "by", "of", "near"}
 # the words a plain one-task sentence may hold besides its thing and its place
@@ -83,8 +107,17 @@ _TASK_VERBS = frozenset(
 _OPENING = _TASK_VERBS | {"verb_switch"}  # "turn on the lamp while holding the book"
 
 
+# "do the same for a book and then a cushion": two repeats, the second after the first
+_SAME_THEN = re.compile(
+    rf"(?P<head>\b(?:the\s+)?same\s+(?:thing\s+)?(?:for|with|to)\s+{_NP})\s*,?\s+(?:and\s+)?then\s+(?P<np>{_NP})"
+    r"(?=\s*(?:[.;!?]|$))",
+    re.I,
+)
+
+
 def repeated_for_another(text: str) -> str:
     """Each fragment sentence that repeats a plain one-task sentence for other things, written out."""
+    text = _SAME_THEN.sub(lambda m: f"{m['head']}. Then do the same with {m['np']}", text)
     out: list[str] = []
     task = ""  # the last sentence that is not a fragment
     written = False  # the sentence split off by `_SAME_INSIDE` is kept only where its repeat is written out
@@ -108,6 +141,13 @@ def repeated_for_another(text: str) -> str:
                 out.append(lead + ". ".join(copies) + body[len(core) :])
                 written = True
                 continue
+        elsewhere = _elsewhere(task, fragment) if task else None
+        if elsewhere:  # "Then do the same with the bowl, but put that one in the cabinet."
+            lead = said.group(0) if said else core[: len(core) - len(core.lstrip())]
+            said_as = elsewhere if said else elsewhere[:1].upper() + elsewhere[1:]
+            out.append(lead + said_as + body[len(core) :])
+            written = True
+            continue
         if not REPEAT_FRAGMENT.match(fragment):
             task = fragment.strip()  # its order word stays with it ("After that, look at X. Then the Y too.")
         out.append(body)
@@ -124,27 +164,69 @@ def _copy_inside(text: str, m: re.Match[str]) -> str:
     said = _ORDER_LEAD.match(clause)
     last = re.sub(r"^(?:and|then)\s+", "", clause.split(",")[-1].strip())
     tasks = [clause[said.end() :] if said else clause, last]
-    for task in tasks if len(things) == 1 else []:
-        copy = _with_thing(task.strip(), things[0], inside=True)
-        if copy:
-            return m["join"] + copy[:1].lower() + copy[1:]
+    for task in tasks:
+        copies = [c for c in (_with_thing(task.strip(), x, inside=True) for x in things) if c]
+        if copies and len(copies) == len(things):  # "..., and do the same with a pillow and a clock"
+            return m["join"] + ", and ".join(c[:1].lower() + c[1:] for c in copies)
+        counted = _COUNTED_TASK.match(task.strip())
+        if counted and len(things) == 1 and re.match(_COUNT, m["np"], re.I) and _one_thing(counted["thing"]):
+            return f"{m['join']}{counted['verb'].lower()} {m['np']} {counted['place']}"
     return m[0]
+
+
+def _one_thing(words: str) -> bool:
+    """Do the words name one thing of the scene's kinds and nothing else ("bars of soap")?"""
+    named = [x for x in find_mentions(words) if not x.entry.generic]
+    return len(named) == 1 and named[0].surface.lower() == words.lower().strip()
+
+
+def _elsewhere(task: str, fragment: str) -> str | None:
+    """ "do the same with the bowl, but put that one in the cabinet" after a plain one-task sentence: that
+    sentence for the bowl, its last place replaced by this one (lower case); None where it is no such pair."""
+    m = _SAME_ELSEWHERE.match(fragment.strip())
+    things = [x for x in find_mentions(m["np"]) if not x.entry.generic] if m else []
+    copy = _with_thing(task, things[0], inside=True, container=True) if m and len(things) == 1 else None
+    if not copy or not m:
+        return None
+    toks = tokens(copy)
+    places = [x for x in find_mentions(copy) if not x.entry.generic and _role(x, toks) == "place"]
+    preps = [i for i in range(_det_at(places[-1], toks)) if toks[i][0] in _TO_PREPS] if places else []
+    if not preps:
+        return None
+    copy = copy[: toks[preps[-1]][1]] + m["place"] + copy[places[-1].char_end :]
+    return copy[:1].lower() + copy[1:]
 
 
 def _only_things(fragment: str, things: list[Mention]) -> bool:
     """The fragment says nothing but its things ("the tomato in the microwave too" says a place)."""
-    in_thing = {i for m in things for i in range(m.start, m.end)}
+    toks = tokens(fragment)
+    # a thing's describing words, between its determiner and it ("the white teapot"), are its own
+    in_thing = {i for m in things for i in range(_own_words_start(m, toks), m.end)}
     return all(i in in_thing or w in _FRAGMENT_WORDS for i, (w, _, _) in enumerate(tokens(fragment)))
 
 
-def _with_thing(sentence: str, thing: Mention, inside: bool = False) -> str | None:
+def _own_words_start(m: Mention, toks: list[tuple[str, int, int]]) -> int:
+    """Where a thing's own words start: after its determiner ("the white teapot"), or at the thing."""
+    at = _det_at(m, toks)
+    return at + 1 if at >= 0 else m.start
+
+
+def _with_thing(sentence: str, thing: Mention, inside: bool = False, container: bool = False) -> str | None:
     """`sentence` with its thing replaced by `thing` and its source left out, where it is a plain one-task
-    sentence (None else); for a fragment sentence (not `inside`), one of one thing and one place."""
+    sentence (None else); for a fragment sentence (not `inside`), one of one thing and one place. With
+    `container`, a place named again as a thing ("put a vase in a box and set the box on the table") is
+    the container, still a place."""
     if thing.plural:
         return None
     toks = tokens(sentence)
     named = [m for m in find_mentions(sentence) if not m.entry.generic and not _light_of(m, toks)]
     roles = [_role(m, toks) for m in named]
+    if container:
+        held = [m.entry.types for m, role in zip(named, roles, strict=True) if role == "place"]
+        roles = [
+            "place" if role == "thing" and k and m.entry.types in held else role
+            for k, (m, role) in enumerate(zip(named, roles, strict=True))
+        ]
     firsts = [m for m, role in zip(named, roles, strict=True) if role == "thing"]
     if None in roles or len(firsts) != 1 or "place" not in roles or len(toks) < 3 or firsts[0].plural:
         return None

@@ -46,8 +46,7 @@ _VERBS: dict[str, tuple[str, ...]] = {
         "shift",
         "send",
         "keep",
-        "tuck",
-        "stow",
+        "tuck", "stow",
         "serve",
         # casual moving verbs check 1 knows (`verb_any`): without them the grammar read "pop the tomato in
         # the fridge and then the pan in the sink" as nothing (a verb left out after it needs a verb here)
@@ -55,6 +54,7 @@ _VERBS: dict[str, tuple[str, ...]] = {
         "plop",
         "plonk",
         "shove",
+        "pack",  # "pack the remote in the cardboard box"
         "transport",
     ),
     "pick": (
