@@ -46,7 +46,6 @@ from nl2hltl2plan.language.grounding import (
     camel_words,
     find_mentions,
     lexicon,
-    sentence_start,
     tokens,
 )
 from nl2hltl2plan.language.it_of_two import it_of_two
@@ -59,14 +58,14 @@ from nl2hltl2plan.language.landmarks import (
 )
 from nl2hltl2plan.language.memo import reading_memo
 from nl2hltl2plan.language.mention_use import looked_at, unused_mentions
-from nl2hltl2plan.language.negations import NO_CONSTRAINT, about_order, unforbidden_verb
-from nl2hltl2plan.language.order_words import (
-    check_cycles,
-    finished_words,
-    misordered,
-    unordered_steps,
-    until_first_at,
+from nl2hltl2plan.language.negations import (
+    NO_CONSTRAINT,
+    about_order,
+    after_negation,
+    unforbidden_verb,
+    until_guard,
 )
+from nl2hltl2plan.language.order_words import check_cycles, finished_words, misordered, unordered_steps
 from nl2hltl2plan.language.parse_usage import IMPLIED_TYPES, ParseUsage
 from nl2hltl2plan.language.prepositions import DESTINATION, preposition_before, source_at
 from nl2hltl2plan.language.statements import asked_before, says_where
@@ -475,7 +474,7 @@ def _words(
         if (
             "negation" in cats
             and guard is None
-            and not _until_guard(instruction, toks[i], parse)
+            and not until_guard(instruction, toks[i], bool(parse.before))
             and not about_order(instruction, toks[i])
         ):
             unread = Unread(w, "negation", NO_CONSTRAINT)
@@ -483,7 +482,7 @@ def _words(
             unread = count_unread(instruction, toks, i, cats, mentions, parse, instances, scene)
         elif "repetition" in cats:
             unread = Unread(w, "count", "no base task is done more than once: say each time as its own task")
-        elif "condition" in cats and guard is None and not _after_negation(instruction, toks[i]):
+        elif "condition" in cats and guard is None and not after_negation(instruction, toks[i]):
             unread = Unread(w, "condition", "no base task waits on a condition: say what to do")
         elif "time" in cats:
             unread = Unread(w, "time", "no base task waits for a time: say what to do now")
@@ -538,19 +537,6 @@ def _beneficiary(
 _PUNCT = re.compile(r"[,.;:!?()]")
 _ASKING = frozenset({"could", "would", "can", "will"})  # "could you maybe ...": asked politely, no hedge
 _GET_FOR = frozenset({"get", "grab", "fetch"})  # never "bring", "hand", "give": to the person
-
-
-def _after_negation(instruction: str, tok: tuple[str, int, int]) -> bool:
-    """Does a negation come before the word in its sentence ("do not X unless Y": the negation's guard)?"""
-    start = sentence_start(instruction, tok[1])
-    return any("negation" in categories(w) for w, _, _ in tokens(instruction[start : tok[1]]))
-
-
-def _until_guard(instruction: str, tok: tuple[str, int, int], parse: ParseUsage) -> bool:
-    """ "Do not X until Y" is the ordering Y before X, which the parse has as a `before` pair."""
-    rest = re.split(r"[.;!?]", instruction[tok[2] :], maxsplit=1)[0].lower()
-    said = re.search(r"\b(until|unless|before)\b", rest) is not None or until_first_at(instruction, tok[1])
-    return bool(parse.before) and said
 
 
 def _verb(

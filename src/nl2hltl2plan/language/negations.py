@@ -31,7 +31,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 from nl2hltl2plan.errors import HTTError
-from nl2hltl2plan.language.content_words import Unread, stems
+from nl2hltl2plan.language.content_words import Unread, categories, stems
 from nl2hltl2plan.language.grounding import (
     AffordanceLookup,
     Grounder,
@@ -468,3 +468,18 @@ def nothing_to_do(instruction: str, constraints: list[ConstraintSpec]) -> str:
         f"nothing to do: {instruction!r} only says what not to do ({said}); state a task too, "
         "e.g. 'put the mug in the sink, but never open the fridge'"
     )
+
+
+def after_negation(instruction: str, tok: tuple[str, int, int]) -> bool:
+    """Does a negation come before the word in its sentence ("do not X unless Y": the negation's guard)?
+    Check 1 (`accounting`) asks it of a condition word."""
+    start = sentence_start(instruction, tok[1])
+    return any("negation" in categories(w) for w, _, _ in tokens(instruction[start : tok[1]]))
+
+
+def until_guard(instruction: str, tok: tuple[str, int, int], ordered: bool) -> bool:
+    """ "Do not X until Y" is the ordering Y before X, which a reading with an order (`ordered`) has as a
+    `before` pair: check 1 (`accounting`) does not name its negation."""
+    rest = re.split(r"[.;!?]", instruction[tok[2] :], maxsplit=1)[0].lower()
+    said = re.search(r"\b(until|unless|before)\b", rest) is not None or until_first_at(instruction, tok[1])
+    return ordered and said

@@ -357,11 +357,9 @@ _SEQUENCE = frozenset({G.THEN, G.AFTER_ALL, G.AFTER_REF})
 
 
 def _time_frees_last_clause(sentence: Sentence, units: list[Unit]) -> bool:
-    """Does a closing "whenever you like" / "at any time" (not "in whatever order you like", which frees the
-    order of the clauses it closes) free the sentence's last clause alone, the sentence's opening order word
-    then reaching the clauses before it only? Yes in a sentence of several clauses that a sequence word opens
-    ("After that, A, and B whenever"), or that another order word opens where the last clause is one task
-    joined by "and" ("..., A, and B at any time")."""
+    """Does a closing "whenever" / "at any time" free the last clause alone, the opening order word reaching
+    the clauses before it only? Yes after a sequence word ("After that, A, and B whenever"), or another order
+    word where the last clause is one task joined by "and" ("..., A, and B at any time")."""
     if len(units) < 2 or not sentence.markers or _CLOSING_TIME.search(sentence.text.rstrip(" .!?;")) is None:
         return False
     last = units[-1]
