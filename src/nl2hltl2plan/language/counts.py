@@ -91,7 +91,9 @@ def count_unread(
             return None
         if "other" in (t[0] for t in toks[i + 1 : m.start]):  # "all the other mugs": what the rest leave
             took = " + ".join(map(str, counts))
-            return None if sum(counts) == n else Unread(phrase, "count", f"the base tasks take {took}, not {n}")
+            if sum(counts) != n:
+                return Unread(phrase, "count", f"the base tasks take {took}, not {n}")
+            return None
     elif "quantifier_vague" in cats:
         return Unread(phrase, "count", "a vague count: say how many")
     if n in counts or (n == 2 and w in ("both", "pair", "couple") and len(counts) >= 2):

@@ -29,6 +29,7 @@ from nl2hltl2plan.language.grounding import LAMPS, Mention, camel_words, find_me
 
 _N = r"(?:two|three|four|five|both|2|3|4|5)"
 _PLACE_WORDS = frozenset("in into on onto inside to under by near at beside from next behind".split())
+_SKIPPED = frozenset({"the", "a", "an", "other"})  # the words between a preposition and its place
 _ONE_OF = frozenset("one a an another each single".split())
 # "the remaining two (pencils)", "the other two", "both of the other(s) (spoons)", "both others"
 _COUNTED_OTHER = re.compile(
@@ -38,7 +39,8 @@ _COUNTED_OTHER = re.compile(
 _REST = re.compile(r"\bthe\s+(?:rest\s+of\s+(?:the\b|them\b)|remaining\b(?:\s+ones\b)?)", re.I)
 # "the other one", or "the other" alone before a place or the clause's end
 _OTHER_ONE = re.compile(
-    r"(?<!after\s)\bthe\s+other(?:\s+one\b|(?=\s*(?:$|[,.;!?]|(?:in|into|on|onto|inside|to|too|as\s+well)\b)))", re.I
+    r"(?<!after\s)\bthe\s+other(?:\s+one\b|(?=\s*(?:$|[,.;!?]|(?:in|into|on|onto|inside|to|too|as\s+well)\b)))",
+    re.I,
 )
 # "the third (X|one)", "the last (X|one)", "a second one", "one more (X)"
 _ANOTHER = re.compile(
@@ -70,8 +72,9 @@ def _things(text: str) -> list[Mention]:
     toks = tokens(text)
     out = []
     for m in find_mentions(text):
-        before = [w for w, _, _ in toks[max(0, m.start - 3) : m.start] if w not in ("the", "a", "an", "other")]
-        if not m.entry.generic and not set(m.entry.types) & LAMPS and not (before and before[-1] in _PLACE_WORDS):
+        before = [w for w, _, _ in toks[max(0, m.start - 3) : m.start] if w not in _SKIPPED]
+        place = bool(before) and before[-1] in _PLACE_WORDS
+        if not m.entry.generic and not set(m.entry.types) & LAMPS and not place:
             out.append(m)
     return out
 

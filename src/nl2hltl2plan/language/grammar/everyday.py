@@ -159,7 +159,7 @@ def everyday(text: str) -> str:
     if _FREE_REMARK.search(text):  # "1. X. 2. Y. Any order is fine.": the numbers only list the steps
         text = _NUMBERED.sub(lambda m: m["lead"], text)
     text = everyday_names(respelt(text))  # misspelt names of things (language/spelling.py), everyday names
-    text = counted_references(text)  # "the remaining two", "the other one", "remotes, two of them" (counted_refs.py)
+    text = counted_references(text)  # "the remaining two", "remotes, two of them" (counted_refs.py)
     text = repeated_for_another(text)  # "... The cup too.": the task before, for the cup (repeats.py)
     text = _REFERENCE_TO_ALL.sub(_reference_sentence, text)
     text = _PAREN_FREE_ORDER.sub(", in any order", text)
