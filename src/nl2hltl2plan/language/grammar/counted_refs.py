@@ -150,7 +150,10 @@ def _rest(text: str) -> str:
         if x is None or (noun is None and tail not in ("them", "ones")):
             continue
         end = noun.char_end if noun is not None else m.end()  # "the rest of the keys": key chains
-        text = text[: m.start()] + _cased(f"all the other {plural_of(x)}", m[0]) + text[end:]
+        new = f"all the other {plural_of(x)}"
+        if tail == "remaining" and noun is not None and not noun.plural:  # "the remaining cd": one
+            new = f"the other {noun.surface}"
+        text = text[: m.start()] + _cased(new, m[0]) + text[end:]
     return text
 
 
@@ -167,9 +170,12 @@ def _another(text: str) -> str:
         x = _antecedent(text, m.start(), one_of=False)
         if x is None or _after_place(text, m.start()):
             return m[0]
+        # "the second fork": "a second fork" (the word said stays); "the last one", "one more": another
+        ordinal = m[0].split()[1].lower() if m[0].lower().startswith(("the ", "a ")) else "last"
+        said = "another" if ordinal == "last" else f"a {ordinal}"
         if m[0].lower().endswith(" one") or (noun := _noun_at(text, m.end())) is None:
-            return _cased(f"another {_singular(x)}", m[0])
-        return _cased("another", m[0]) if set(noun.entry.types) & set(x.entry.types) else m[0]
+            return _cased(f"{said} {_singular(x)}", m[0])
+        return _cased(said, m[0]) if set(noun.entry.types) & set(x.entry.types) else m[0]
 
     return _ANOTHER.sub(sub, text)
 
