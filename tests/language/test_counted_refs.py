@@ -51,6 +51,14 @@ def test_the_remaining_two_and_a_count_after_its_plural_are_written_out():
         ("Put two books on the sofa and the last one on the armchair.",
          "Put two books on the sofa and another book on the armchair."),
         ("Put the candles in the cabinet, both of them.", "Put both candles in the cabinet."),
+        ("Put one of the mugs in the sink and the others in the cabinet.",
+         "Put one of the mugs in the sink and all the other mugs in the cabinet."),
+        ("Put a mug in the sink, then one more in the cabinet.",
+         "Put a mug in the sink, then another mug in the cabinet."),
+        ("put the fork in the drawer, then put the second fork in the drawer",
+         "put the fork in the drawer, then put a second fork in the drawer"),
+        ("put the cd on the shelf, then put the remaining cd in the drawer",
+         "put the cd on the shelf, then put the other cd in the drawer"),
         ("Look at the bat under the desk lamp, then a pillow under the one you just used.",
          "Look at the bat under the desk lamp, then a pillow under the desk lamp."),
     ],
@@ -68,6 +76,7 @@ def test_counted_references_are_written_out(text, written):
         "Put the apples in the fridge, one after the other.",
         "Put two things away: the egg in the fridge and the mug in the sink.",
         "Put the mug in the sink, then put the rest in the cabinet.",  # the rest of what
+        "Put the apple in the fridge, then put the last one in the sink.",  # last of one apple
     ],
 )
 def test_near_misses_are_left_as_written(text):

@@ -35,11 +35,11 @@ _ONE_OF = frozenset("one a an another each single".split())
 _COUNTED_OTHER = re.compile(
     rf"\b(?:the\s+(?:remaining|other)\s+(?P<n>{_N})|both\s+(?:of\s+the\s+)?other(?P<s>s)?)\b", re.I
 )
-# "the rest of the (Xs)", "the rest of them", "the remaining (ones|Xs)"
-_REST = re.compile(r"\bthe\s+(?:rest\s+of\s+(?:the\b|them\b)|remaining\b(?:\s+ones\b)?)", re.I)
+# "the rest of the (Xs)", "the rest of them", "the remaining (ones|Xs)", "the others"
+_REST = re.compile(r"\bthe\s+(?:rest\s+of\s+(?:the\b|them\b)|remaining\b(?:\s+ones\b)?|others\b)", re.I)
 # "the other one", or "the other" alone before a place or the clause's end
 _OTHER_ONE = re.compile(
-    r"(?<!after\s)\bthe\s+other(?:\s+one\b|(?=\s*(?:$|[,.;!?]|(?:in|into|on|onto|inside|to|too|as\s+well)\b)))",
+    r"(?<!after\s)\bthe\s+other(?:\s+one\b|(?=\s*(?:$|[,.;!?]|(?:in|into|on|onto|inside|to|too|as\s+well|goes|go)\b)))",
     re.I,
 )
 # "the third (X|one)", "the last (X|one)", "a second one", "one more (X)"
@@ -147,7 +147,7 @@ def _rest(text: str) -> str:
         tail = m[0].lower().split()[-1]
         noun = _noun_at(text, m.end()) if tail in ("the", "remaining") else None
         x = noun or _antecedent(text, m.start(), one_of=True)
-        if x is None or (noun is None and tail not in ("them", "ones")):
+        if x is None or (noun is None and tail not in ("them", "ones", "others")):
             continue
         end = noun.char_end if noun is not None else m.end()  # "the rest of the keys": key chains
         new = f"all the other {plural_of(x)}"
@@ -167,13 +167,15 @@ def _other_one(text: str) -> str:
 
 def _another(text: str) -> str:
     def sub(m: re.Match[str]) -> str:
-        x = _antecedent(text, m.start(), one_of=False)
+        noun = _noun_at(text, m.end())
+        elided = m[0].lower().endswith(" one") or noun is None  # "the last one": one of several before
+        x = _antecedent(text, m.start(), one_of=elided)
         if x is None or _after_place(text, m.start()):
             return m[0]
         # "the second fork": "a second fork" (the word said stays); "the last one", "one more": another
         ordinal = m[0].split()[1].lower() if m[0].lower().startswith(("the ", "a ")) else "last"
         said = "another" if ordinal == "last" else f"a {ordinal}"
-        if m[0].lower().endswith(" one") or (noun := _noun_at(text, m.end())) is None:
+        if elided or noun is None:
             return _cased(f"{said} {_singular(x)}", m[0])
         return _cased(said, m[0]) if set(noun.entry.types) & set(x.entry.types) else m[0]
 
