@@ -234,6 +234,12 @@ KNOWN_WRONG: set[str] = {
     "Move the CD from the desk to the top of the dresser. Then, using the desk lamp, look at the alarm "
     "clock, the CD and the pillow one after another.",
     "Using the lamp on the dresser, examine a credit card, a CD, a book and an alarm clock, in any order.",
+    # h185's held-out half (refused on main): "Xs and Ys, two of each, go on P" keeps its closing comma and
+    # reads the last place; "chill the other one before putting it on P" reads "before ..." as a reference
+    "Put a pencil in a mug and move the mug to the shelf. Then put one more pencil in a mug and move that "
+    "mug to the nightstand. Books and mugs, two of each, go on the desk in any order.",
+    "Put one head of lettuce on the counter, and chill the other one before putting it on the counter too. "
+    "Heat a potato and put it on the counter, then put a knife in a pot and set the pot on the counter.",
 }
 
 
