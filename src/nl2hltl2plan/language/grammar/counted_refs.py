@@ -3,17 +3,20 @@ forms the grammar and check 1 read. ALFRED's tasks each take any thing of their 
 of "put one X on A, then the remaining two in B" asks for one X on A and two X in B:
 
 - "the remaining two (Xs)", "the other two", "both of the others", "both of the other Xs" -> "two other Xs";
-- "the rest of the Xs", "the remaining Xs", "the rest of them" -> "all the other Xs", which
-  `counts.take_every_instance` reads as what the scene holds less what the other tasks on X take;
+- "the rest of the Xs", "the remaining Xs", "the rest of them", "the others" -> "all the other Xs", which
+  `counts.take_every_instance` reads as what the scene holds less what the other tasks on X take; "the
+  remaining X" (one) -> "the other X";
 - "the other one" after "one of the Xs" / "one X" / "an X" -> "the other X" (a second task on X);
-- "the third X", "the last one", "one more (X)", "a second one" after an X -> "another X";
+- "the third X", "a second one" after an X -> "a third X", "a second X" (the word said stays, for a
+  refusal to name); "the last X / one", "one more (X)" -> "another X";
 - a count said after a bare plural ("put remotes on the sofa, two of them", "candles - both -",
   "books and mugs, two of each") -> before it ("put two remotes on the sofa");
 - "the one you (just) used" after a lamp -> that lamp.
 
-The elided noun is the last thing named before the words (not a place, not a lamp); "the other one" and
-the elided counts need that thing said as one of several ("one X", "an X", "one of the Xs"): after "the
-apple", "the other one" stays as written and is refused (`referents.another_one`).
+The elided noun is the last thing named before the words (not a place, not a lamp); "the other one", the
+elided counts and the elided ordinals need that thing said as one of several ("one X", "an X", "one of the
+Xs", a plural): after "the apple", "the other one" stays as written and is refused
+(`referents.another_one`), and "the last one" stays unread.
 
 >>> counted_references("Put one salt shaker on the table, then put the remaining two in a cabinet.")
 'Put one salt shaker on the table, then put two other salt shakers in a cabinet.'

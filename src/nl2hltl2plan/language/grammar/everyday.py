@@ -3,6 +3,8 @@ words that carry no object, place, count, negation or order in the place where i
 
 - misspelt words ("tomatoe", "coffe table", "woould") as the lexicon or English writes them
   (`spelling.respelt`), and texting forms: "ur done" is "you're done", another "ur" is "your";
+- counted and ordinal references to things named before ("the remaining two", "the other one", "remotes,
+  two of them") written out (`counted_refs.py`);
 - places and things said first: "put the egg (in) there" names the last destination before it, and "the
   mug that's on the counter, put it in the sink" takes the mug first;
 - terse notation: "green apple -> blue plate" is "green apple onto blue plate" (the placement verb is
