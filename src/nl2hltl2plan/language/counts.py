@@ -9,6 +9,7 @@ from collections.abc import Mapping, Sequence
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.content_words import DETERMINERS, LOCATIVE, Unread, categories
+from nl2hltl2plan.language.grammar.counted_refs import counted_references
 from nl2hltl2plan.language.grounding import Mention, camel_words, find_mentions, tokens
 from nl2hltl2plan.language.parse_usage import ParseUsage
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
@@ -88,6 +89,11 @@ def count_unread(
         n = held
         if n is None:
             return None
+        if "other" in (t[0] for t in toks[i + 1 : m.start]):  # "all the other mugs": what the rest leave
+            took = " + ".join(map(str, counts))
+            if sum(counts) != n:
+                return Unread(phrase, "count", f"the base tasks take {took}, not {n}")
+            return None
     elif "quantifier_vague" in cats:
         return Unread(phrase, "count", "a vague count: say how many")
     if n in counts or (n == 2 and w in ("both", "pair", "couple") and len(counts) >= 2):
@@ -100,7 +106,10 @@ def take_every_instance(
     instruction: str, tasks: Sequence[BaseTaskSpec], instances: Mapping[str, int]
 ) -> list[BaseTaskSpec]:
     """ "all the mugs" / "every mug" / "each mug": the task on that noun takes every instance the scene
-    holds (a `place` of several becomes `place_two` with that count; of one, a `place`)."""
+    holds (a `place` of several becomes `place_two` with that count; of one, a `place`); "all the other
+    mugs" (`grammar.counted_refs`: "the rest of the mugs"): the last task on mugs takes what the others
+    leave."""
+    instruction = counted_references(instruction)
     toks = tokens(instruction)
     words = [w for w, _, _ in toks]
     mentions = [m for m in find_mentions(instruction) if not m.entry.generic]
@@ -111,8 +120,12 @@ def take_every_instance(
         m = _next_mention(mentions, words, i)
         if m is None or re.search(r"[,.;:!?]", instruction[toks[i][1] : m.char_start]):
             continue
-        for k, t in enumerate(out):
+        of_type = [k for k, t in enumerate(out) if set(t.object) & set(m.entry.types)]
+        other = "other" in words[i + 1 : m.start]
+        for k in of_type[-1:] if other else of_type:
+            t = out[k]
             held = sum(instances.get(o, 0) for o in t.object if o in m.entry.types)
+            held -= sum(out[j].count for j in of_type if j != k) if other else 0
             if held < 1 or t.count == held:
                 continue
             kind = ("place_two" if held > 1 else "place") if t.kind in ("place", "place_two") else t.kind

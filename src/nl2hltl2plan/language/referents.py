@@ -36,6 +36,7 @@ from nl2hltl2plan.domain.plurals import Plurals
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.content_words import DETERMINERS, LOCATIVE, categories, word_categories
 from nl2hltl2plan.language.counts import count_value
+from nl2hltl2plan.language.grammar.counted_refs import counted_references
 from nl2hltl2plan.language.grounding import (
     Mention,
     camel_words,
@@ -79,11 +80,13 @@ def check_referents(
     fewer things than the scene holds where no convention of the world reads it (see the module's
     docstring); returns the assumptions a convention made ("'the forks': read as 2 of ...").
     `forbidden`: the types the instruction's negations act on ("don't touch the towel")."""
+    instruction = counted_references(instruction)  # "remotes, two of them": "two remotes" (h185)
     scopes = mention_scopes(instruction, tasks)  # both checks below ask each word's tasks
     decided = exact_names(instruction, tasks, instances, scene, forbidden, scopes)
     moved_twice(instruction, tasks, before)
     place_then_moved(tasks, before)
     another_one(instruction, tasks)
+    another_named(instruction, tasks)
     categories_named(instruction, tasks, instances, scene)
     said = decided + stand_ins(instruction, tasks, instances, scene, scopes)
     said += plural_of_several(instruction, tasks, instances, scene, convention, plurals)
@@ -350,6 +353,33 @@ def another_one(instruction: str, tasks: Sequence[BaseTaskSpec]) -> None:
                 f"{m.group(0).strip()!r} names a second thing, and the reading acts on one thing of each "
                 f"type: name it (\"the apple ... the other apple\")"
             )
+
+
+def another_named(instruction: str, tasks: Sequence[BaseTaskSpec]) -> None:
+    """ "Heat a potato and put it on the counter, then another potato": "another X" / "one more X" / "a second
+    X" after an X said before names a second thing of that type; a reading whose tasks take one thing of it
+    has dropped the second (read as the first, or not at all): refused, as `another_one` refuses "another
+    one". "Put another pillow on the bed" with no pillow before it is one more than the scene's, and stays."""
+    lowered = instruction.lower()
+    for m in _ANOTHER_THING.finditer(lowered):
+        after = [x for x in find_mentions(lowered[m.end() :]) if x.char_start <= 12][:1]
+        if not after or _after_preposition([w for w, _, _ in tokens(lowered[: m.start()])]):
+            continue
+        types = set(after[0].entry.types)
+        if not any(set(x.entry.types) & types for x in find_mentions(lowered[: m.start()])):
+            continue
+        taken = sum(t.count for t in tasks if types & set(t.object)) + sum(
+            1 for t in tasks if types & set(t.container or ())
+        )
+        if taken < 2:
+            said = lowered[m.start() : m.end() + after[0].char_end].strip()
+            raise HTTError(
+                f"{said!r} names a second {after[0].surface}, and the reading takes one: say what to do with "
+                f"it (\"put another {after[0].surface} in ...\")"
+            )
+
+
+_ANOTHER_THING = re.compile(r"\b(?:another|one\s+more|a\s+second)\s+(?=[a-z])")
 
 
 @lru_cache(maxsize=1)

@@ -224,7 +224,7 @@ def closed_after_placing(instruction: str, mentions: list[Mention], parse: Parse
 _CLOSE = re.compile(r"\b(?:close|closed|shut)\b(?! (?:to|by)\b)")
 
 
-_OTHER = re.compile(r"\b(?:the other|another|a different|the same)\b")
+_OTHER = re.compile(r"\b(?:the other|another|a different|the same|a (?:second|third|fourth|fifth))\b")
 
 
 def other_instances(
@@ -245,9 +245,9 @@ def other_instances(
     shared = {t for t, n in taken.items() if n > 1}
     if not shared:
         return []
-    # picked up by each task that takes it, to a place of its own: two things kept apart ("the other book"
-    # on the bed after a book is a pair, `place_two`, which this reading is not)
-    ends = {t: {(k.kind, *(k.receptacle or ())) for k in parse.tasks if t in k.object} for t in shared}
+    # picked up by each task that takes it, to a place (or a container) of its own: two things kept apart
+    # ("the other book" on the bed after a book is a pair, `place_two`, which this reading is not)
+    ends = {t: {_end(k) for k in parse.tasks if t in k.object} for t in shared}
     apart = {t for t in shared if picked[t] == taken[t] == len(ends[t])}
     out = []
     lowered = instruction.lower()
@@ -268,6 +268,11 @@ def other_instances(
         if the_shared and (m.group(0) == "the same" or not hit <= apart):
             out.append(Unread(m.group(0), "object", _TWO_OF_A_TYPE))
     return out
+
+
+def _end(task: BaseTaskSpec) -> tuple[str, ...]:
+    """Where a task leaves its thing: its kind, place and container."""
+    return (task.kind, *(task.receptacle or ()), *(task.container or ()))
 
 
 _PLACE_OR_STOP = re.compile(r"[,.;:!?]|\b(?:in|on|to|into|onto|at|of)\b")

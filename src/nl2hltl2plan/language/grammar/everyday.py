@@ -3,6 +3,8 @@ words that carry no object, place, count, negation or order in the place where i
 
 - misspelt words ("tomatoe", "coffe table", "woould") as the lexicon or English writes them
   (`spelling.respelt`), and texting forms: "ur done" is "you're done", another "ur" is "your";
+- counted and ordinal references to things named before ("the remaining two", "the other one", "remotes,
+  two of them") written out (`counted_refs.py`);
 - places and things said first: "put the egg (in) there" names the last destination before it, and "the
   mug that's on the counter, put it in the sink" takes the mug first;
 - terse notation: "green apple -> blue plate" is "green apple onto blue plate" (the placement verb is
@@ -28,6 +30,7 @@ import re
 from functools import lru_cache
 
 from nl2hltl2plan.language.content_words import DETERMINERS, categories, free_order_phrase
+from nl2hltl2plan.language.grammar.counted_refs import counted_references
 from nl2hltl2plan.language.grammar.repeats import repeated_for_another
 from nl2hltl2plan.language.grammar.restated import count_fits, restated
 from nl2hltl2plan.language.grammar.treatments_said import treatments_said
@@ -192,16 +195,19 @@ def everyday(text: str) -> str:
     if _FREE_REMARK.search(text):  # "1. X. 2. Y. Any order is fine.": the numbers only list the steps
         text = _NUMBERED.sub(lambda m: m["lead"], text)
     text = everyday_names(respelt(text))  # misspelt names of things (language/spelling.py), everyday names
+    text = _ONE_AND_OTHER.sub(_each_of_two, text)  # before "the other one" is written out as "the other X"
+    text = counted_references(text)  # "the remaining two", "remotes, two of them" (counted_refs.py)
     text = repeated_for_another(text)  # "... The cup too.": the task before, for the cup (repeats.py)
     text = _REFERENCE_TO_ALL.sub(_reference_sentence, text)
     text = _PAREN_FREE_ORDER.sub(", in any order", text)
     text = _STEP_COLON.sub(r"\1 ", _ARROW.sub(" onto ", text))
     if _BELONGS.search(text):
         text = _PUT_THEM_THERE.sub("", text)
-    text = _ONE_AND_OTHER.sub(_each_of_two, _THEN_UNDER_LAMP.sub(_each_under_lamp, text))
+    text = _THEN_UNDER_LAMP.sub(_each_under_lamp, text)
     text = _THAT_PLACE.sub(_that_place_named, _THERE.sub(_there_named, _ALONG_WITH.sub(_along_with, text)))
     text = _IT_PLACE.sub(_fixture_named, text)
-    text = _THING_FIRST.sub(lambda m: f"{m['lead']}take {m['np']}, ", _COUNT_LEFT.sub(_count_named, text))
+    text = _ANOTHER_AGAIN.sub("one more", _COUNT_LEFT.sub(_count_named, text))
+    text = _THING_FIRST.sub(lambda m: f"{m['lead']}take {m['np']}, ", text)
     text = _HESITATION.sub(" ", _ORDER_THO.sub(_order_tho, text))
     text = _DONE_AT_END.sub(_done_at_end, text)
     text = re.sub(r"(\s*,)+", ",", text)  # the commas left where fillers were
@@ -415,6 +421,13 @@ def _that_place_named(m: re.Match[str]) -> str:
 _COUNT_LEFT = re.compile(
     r"\b(?P<count>(?:one|two|three)\s+more|a\s+(?:third|fourth)(?:\s+one)?|(?<=\band\s)(?:one|two|three))"
     r"(?=\s+(?:in|into|inside|on|onto|to|under|next\s+to|there)\b|\s*(?:[,.;!?]|$|too\b|as\s+well\b))",
+    re.I,
+)
+# "put an apple in the fridge, then another apple": with no verb and no place of its own, the task before for
+# one more of the thing, as "then one more apple" is read (the second thing was dropped, unread and unnamed);
+# "then another in the sink" or "then another one" stay, and are refused as a second thing not named
+_ANOTHER_AGAIN = re.compile(
+    r"(?:(?<=\bthen\s)|(?<=\band\s))another(?=\s+(?!one\b)[a-z]+(?:\s+[a-z]+)?\s*(?:too|as\s+well|also)?\s*(?:[,.;!?]|$))",
     re.I,
 )
 # the words that put a noun phrase in a place ("in the cabinet", "by the sink"): the thing named is no thing

@@ -1,0 +1,233 @@
+"""Counted and ordinal references to things of a type named before (issue 28, h185), written out as the
+forms the grammar and check 1 read. ALFRED's tasks each take any thing of their type, so a careful reader
+of "put one X on A, then the remaining two in B" asks for one X on A and two X in B:
+
+- "the remaining two (Xs)", "the other two", "both of the others", "both of the other Xs" -> "two other Xs";
+- "the rest of the Xs", "the remaining Xs", "the rest of them", "the others" -> "all the other Xs", which
+  `counts.take_every_instance` reads as what the scene holds less what the other tasks on X take; "the
+  remaining X" (one) -> "the other X";
+- "the other one" after "one of the Xs" / "one X" / "an X" -> "the other X" (a second task on X);
+- "the third X", "a second one" after an X -> "a third X", "a second X" (the word said stays, for a
+  refusal to name); "the last X / one", "one more (X)" -> "another X";
+- a count said after a bare plural ("put remotes on the sofa, two of them", "candles - both -",
+  "books and mugs, two of each") -> before it ("put two remotes on the sofa");
+- "the one you (just) used" after a lamp -> that lamp.
+
+The elided noun is the last thing named before the words (not a place, not a lamp); "the other one", the
+elided counts and the elided ordinals need that thing said as one of several ("one X", "an X", "one of the
+Xs", a plural): after "the apple", "the other one" stays as written and is refused
+(`referents.another_one`), and "the last one" stays unread.
+
+>>> counted_references("Put one salt shaker on the table, then put the remaining two in a cabinet.")
+'Put one salt shaker on the table, then put two other salt shakers in a cabinet.'
+>>> counted_references("Put remotes on the sofa, two of them.")
+'Put two remotes on the sofa.'
+"""
+
+from __future__ import annotations
+
+import re
+
+from nl2hltl2plan.language.grounding import LAMPS, Mention, camel_words, find_mentions, lexicon, tokens
+
+_N = r"(?:two|three|four|five|both|2|3|4|5)"
+_PLACE_WORDS = frozenset("in into on onto inside to under by near at beside from next behind".split())
+_SKIPPED = frozenset({"the", "a", "an", "other"})  # the words between a preposition and its place
+_ONE_OF = frozenset("one a an another each single".split())
+# "the remaining two (pencils)", "the other two", "both of the other(s) (spoons)", "both others"
+_COUNTED_OTHER = re.compile(
+    rf"\b(?:the\s+(?:remaining|other)\s+(?P<n>{_N})|both\s+(?:of\s+the\s+)?other(?P<s>s)?)\b", re.I
+)
+# "the rest of the (Xs)", "the rest of them", "the remaining (ones|Xs)", "the others"
+_REST = re.compile(r"\bthe\s+(?:rest\s+of\s+(?:the\b|them\b)|remaining\b(?:\s+ones\b)?|others\b)", re.I)
+# "the other one", or "the other" alone before a place or the clause's end
+_OTHER_ONE = re.compile(
+    r"(?<!after\s)\bthe\s+other(?:\s+one\b|(?=\s*(?:$|[,.;!?]|(?:in|into|on|onto|inside|to|too|as\s+well|goes|go)\b)))",
+    re.I,
+)
+# "the third (X|one)", "the last (X|one)", "a second one", "one more (X)"
+_ANOTHER = re.compile(
+    r"\b(?:the\s+(?:second|third|fourth|fifth|last)|(?:a|one)\s+(?:second|third|fourth|fifth)(?=\s+one\b)"
+    r"|one\s+more)\b(?:\s+one\b)?",
+    re.I,
+)
+# "one more" with no verb of its own ("..., then one more", "and one more on the sofa"): not another X here
+_MORE_WITHOUT_VERB = re.compile(r"(?:[,;]|\b(?:then|and|also|plus))\s*$", re.I)
+# "one of the two tomatoes" is one tomato (the count is of those there, not of the task's)
+_ONE_OF_N = re.compile(rf"\bone\s+of\s+the\s+(?P<n>{_N}\s+)", re.I)
+_JUST_USED = re.compile(r"\bthe\s+one\s+you(?:'ve|\s+have)?\s+(?:just\s+)?used\b", re.I)
+# a count after a bare plural: ", two of them", " - two -", "(both)", ", also two", ", two of each"
+_COUNT_AFTER = re.compile(
+    rf"\s*(?:,|:|\s-+|\s—|\()\s*(?:also\s+|just\s+)?(?P<n>{_N})(?:\s+of\s+(?P<of>them|those|these|each))?"
+    r"(?:\s*(?:-+|—|\))(?=\s))?(?=\s*(?:[,.;!?)]|$|(?:and|go|goes|then)\b))",
+    re.I,
+)
+
+
+def counted_references(text: str) -> str:
+    """`text` with the counted and ordinal references above written out (a pure function of the text)."""
+    text = _ONE_OF_N.sub(lambda m: m[0][: m.start("n") - m.start()], text)
+    for rule in (_counts_after, _lamp_used, _counted_others, _rest, _other_one, _another):
+        text = rule(text)
+    return text
+
+
+def _things(text: str) -> list[Mention]:
+    """The mentions of things a task may act on: not a lamp, not a place after a preposition."""
+    toks = tokens(text)
+    out = []
+    for m in find_mentions(text):
+        before = [w for w, _, _ in toks[max(0, m.start - 3) : m.start] if w not in _SKIPPED]
+        place = bool(before) and before[-1] in _PLACE_WORDS
+        if not m.entry.generic and not set(m.entry.types) & LAMPS and not place:
+            out.append(m)
+    return out
+
+
+def _antecedent(text: str, at: int, one_of: bool) -> Mention | None:
+    """The last thing named before character `at`; with `one_of`, only one said as one of several."""
+    toks = tokens(text)
+    things = [m for m in _things(text) if m.char_end <= at]
+    if not things:
+        return None
+    m = things[-1]
+    said = [w for w, _, _ in toks[max(0, m.start - 4) : m.start]]
+    return m if not one_of or set(said) & _ONE_OF or m.plural else None
+
+
+def plural_of(m: Mention) -> str:
+    """The plural of a mention's words that the lexicon reads ("salt shaker" -> "salt shakers", "bar of soap"
+    -> "bars of soap"), else of its type's name ("keys" -> "key chains")."""
+    if m.plural:
+        return m.surface
+    table = lexicon()
+    for phrase in (m.entry.phrase, m.surface.lower(), camel_words(m.entry.types[0])):
+        words = phrase.split()
+        heads = [words.index("of") - 1] if "of" in words[1:] else []  # "bar of soap": the bars
+        for k in [*heads, len(words) - 1]:
+            for form in _plural_forms(words[k]):
+                said = (*words[:k], form, *words[k + 1 :])
+                if said in table and table[said][1]:
+                    return " ".join(said)
+    return m.surface
+
+
+def _plural_forms(word: str) -> list[str]:
+    """English plural of a noun (none for one that looks plural already: "keys")."""
+    if re.search(r"(?:ss|sh|ch|x|z)$", word):
+        return [word + "es"]
+    if word.endswith("s"):
+        return []
+    return [word[:-1] + "ies"] if re.search(r"[^aeiou]y$", word) else [word + "s"]
+
+
+def _singular(m: Mention) -> str:
+    return m.entry.phrase if m.plural else m.surface
+
+
+def _cased(new: str, old: str) -> str:
+    return new[:1].upper() + new[1:] if old[:1].isupper() else new
+
+
+def _noun_at(text: str, at: int) -> Mention | None:
+    """The mention that starts right after character `at` (past blanks)."""
+    start = len(text) - len(text[at:].lstrip())
+    return next((m for m in find_mentions(text) if m.char_start == start), None)
+
+
+def _counted_others(text: str) -> str:
+    def sub(m: re.Match[str]) -> str:
+        n = "two" if m["n"] is None or m["n"].lower() == "both" else m["n"]
+        noun = _noun_at(text, m.end()) if not m["s"] else None
+        if noun is not None and noun.plural:
+            return _cased(f"{n} other", m[0])
+        x = _antecedent(text, m.start(), one_of=True)
+        return _cased(f"{n} other {plural_of(x)}", m[0]) if x else m[0]
+
+    return _COUNTED_OTHER.sub(sub, text)
+
+
+def _rest(text: str) -> str:
+    for m in reversed(list(_REST.finditer(text))):
+        tail = m[0].lower().split()[-1]
+        noun = _noun_at(text, m.end()) if tail in ("the", "remaining") else None
+        x = noun or _antecedent(text, m.start(), one_of=True)
+        if x is None or (noun is None and tail not in ("them", "ones", "others")):
+            continue
+        end = noun.char_end if noun is not None else m.end()  # "the rest of the keys": key chains
+        new = f"all the other {plural_of(x)}"
+        if tail == "remaining" and noun is not None and not noun.plural:  # "the remaining cd": one
+            new = f"the other {noun.surface}"
+        text = text[: m.start()] + _cased(new, m[0]) + text[end:]
+    return text
+
+
+def _other_one(text: str) -> str:
+    def sub(m: re.Match[str]) -> str:
+        x = _antecedent(text, m.start(), one_of=True)
+        return _cased(f"the other {_singular(x)}", m[0]) if x is not None else m[0]
+
+    return _OTHER_ONE.sub(sub, text)
+
+
+def _another(text: str) -> str:
+    def sub(m: re.Match[str]) -> str:
+        if _MORE_WITHOUT_VERB.search(text[: m.start()]) and m[0].lower().startswith("one more"):
+            return m[0]  # "..., then one more (X)": the task before again, `everyday`'s count left out
+        noun = _noun_at(text, m.end())
+        elided = m[0].lower().endswith(" one") or noun is None  # "the last one": one of several before
+        x = _antecedent(text, m.start(), one_of=elided)
+        if x is None or _after_place(text, m.start()):
+            return m[0]
+        # "the second fork": "a second fork" (the word said stays); "the last one", "one more": another
+        ordinal = m[0].split()[1].lower() if m[0].lower().startswith(("the ", "a ")) else "last"
+        said = "another" if ordinal == "last" else f"a {ordinal}"
+        if elided or noun is None:
+            return _cased(f"{said} {_singular(x)}", m[0])
+        return _cased(said, m[0]) if set(noun.entry.types) & set(x.entry.types) else m[0]
+
+    return _ANOTHER.sub(sub, text)
+
+
+def _after_place(text: str, at: int) -> bool:
+    """Is the word before character `at` a preposition of place ("in the second drawer")?"""
+    before = tokens(text[:at])
+    return bool(before) and before[-1][0] in _PLACE_WORDS
+
+
+def _lamp_used(text: str) -> str:
+    def sub(m: re.Match[str]) -> str:
+        lamps = [x for x in find_mentions(text) if x.char_end <= m.start() and set(x.entry.types) & LAMPS]
+        return _cased(f"the {lamps[-1].surface}", m[0]) if lamps else m[0]
+
+    return _JUST_USED.sub(sub, text)
+
+
+def _counts_after(text: str) -> str:
+    """ "put remotes on the sofa, two of them" -> "put two remotes on the sofa": the count said after a bare
+    plural thing of its clause moves before it ("two of each": before each plural of a list)."""
+    for m in reversed(list(_COUNT_AFTER.finditer(text))):
+        clause = max(text.rfind(c, 0, m.start()) for c in ".;!?") + 1
+        plurals = [x for x in _things(text) if clause <= x.char_start < m.start() and x.plural]
+        bare = [x for x in plurals if not _counted(text, x)]
+        if not bare or len(bare) != len(plurals):
+            continue
+        n = m["n"].lower()
+        named = bare if m["of"] and m["of"].lower() == "each" else bare[-1:]
+        rest = text[m.end() :]
+        if m[0].lstrip().startswith(","):  # "Books and mugs, two of each, go on ...": the closing comma too
+            rest = re.sub(r"^\s*,(?=\s)", "", rest)
+        text = text[: m.start()] + rest
+        for x in reversed(named):
+            said = _cased(f"{n} {x.surface[:1].lower()}{x.surface[1:]}", x.surface)
+            head = text[: x.char_start]
+            if n == "both":  # "the mugs, both of them": "both mugs"
+                head = re.sub(r"\bthe\s+$", "", head, flags=re.I)
+            text = head + said + text[x.char_end :]
+    return text
+
+
+def _counted(text: str, m: Mention) -> bool:
+    """Is a count or quantifier said right before the mention ("two remotes", "all the remotes")?"""
+    before = [w for w, _, _ in tokens(text[: m.char_start])][-3:]
+    return bool(set(before) & {"two", "three", "four", "five", "both", "all", "each", "every", "2", "3", "4"})
