@@ -104,6 +104,15 @@ def test_a_place_said_only_in_front_of_or_beside_is_no_destination(floor_plan: s
 
 
 @pytest.mark.data
+def test_counted_glasses_are_drinking_glasses() -> None:
+    """ "two glasses" are cups (ALFRED's annotators, 19 of 19); "my glasses" stay spectacles, refused."""
+    kitchen = _world("FloorPlan1")
+    assert reading("Move two glasses to the counter.", kitchen)[0] == ["place_two 2x Cup -> CounterTop"]
+    res = translate("put the apple in the fridge and my glasses on the counter", kitchen, build=False)
+    assert res.partial and any("glasses" in u for u in res.unparsed)
+
+
+@pytest.mark.data
 def test_a_place_with_its_own_preposition_keeps_the_landmark_beside_it() -> None:
     """Near miss: "the drawer to the left of the sink" names the drawer; the sink says which drawer."""
     assert reading("Put the knife in the drawer to the left of the sink.", _world("FloorPlan18"))[0] == [
