@@ -17,12 +17,12 @@ from household_readings import reading
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.language.grammar.everyday import everyday_names
 from nl2hltl2plan.language.household_words import descriptive_name_notes, descriptive_names
+from nl2hltl2plan.language.learned.data import load_examples
 from nl2hltl2plan.language.translate import translate
+from nl2hltl2plan.worlds import load_world
 
 
 def _world(floor_plan: str):
-    from nl2hltl2plan.worlds import load_world
-
     return load_world(floor_plan)
 
 
@@ -140,6 +140,8 @@ TRAIN_ANNOTATIONS = [
     ("FloorPlan229", "Move a magazine from a chair to a table.", "object", "Book"),
     ("FloorPlan26", "Put a goblet with a spoon in it on the kitchen table", "container", "Cup"),
     ("FloorPlan14", "Place a fry pan with a spoon inside it, in the kitchen sink.", "container", "Pan"),
+    ("FloorPlan30", "Put a filled kettle on the stove.", "object", "Kettle"),
+    ("FloorPlan4", "Move two glasses to the counter.", "object", "Cup"),
     (
         "FloorPlan318",
         "Grab the tennis bat on the floor, turn on the lamp on the table",
@@ -153,6 +155,7 @@ TRAIN_ANNOTATIONS = [
 @pytest.mark.data
 @pytest.mark.parametrize("floor_plan, text, slot, type_", TRAIN_ANNOTATIONS)
 def test_train_annotations_of_each_class(floor_plan: str, text: str, slot: str, type_: str) -> None:
-    res = translate(text, _world(floor_plan), build=False, actions="none")
+    trial = next(e.trial for e in load_examples()["train"] if e.text == text and e.floor_plan == floor_plan)
+    res = translate(text, load_world(floor_plan, [trial]), build=False, actions="none")
     assert not res.partial, res.unparsed
     assert any(type_ in (getattr(t, slot) or []) for t in res.tasks)
