@@ -76,7 +76,7 @@ def _renamed(text: str, types: set[str]) -> tuple[str, list[tuple[str, str]]]:
                 continue  # "kitchen island": a name of the lexicon's own
             present = [t for t in name.types if t.lstrip("=") in types]
             if not present or present[0].startswith("="):
-                continue  # left as it is: the grammar and check 1 read or refuse it ("=": as the lexicon does)
+                continue  # left as said: the grammar and check 1 read or refuse it ("=": as the lexicon does)
             if name.as_said and len(present) > 1:
                 continue
             if name.either and len(present) > 1:

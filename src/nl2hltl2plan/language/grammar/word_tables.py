@@ -348,13 +348,8 @@ LIGHT_PREPS = {
 PARTICLES = {"up", "down", "away", "back", "around", "aside"}  # skipped after a verb and inside noun phrases
 
 # ----- state words (adjectives and participles in noun phrases) --------------------------------------
-STATE_WORDS: dict[str, str] = {}
-# "a filled kettle": filled at the sink, as check 1 reads "fill" (content_words.txt) and ALFRED's annotators
-# say it (a clean task in 21 of 22 train annotations with "filled"; results/language/h184.md)
-for _w in (
-    "washed", "rinsed", "clean", "cleaned", "wet", "scrubbed", "cleansed", "moist", "damp", "soaked",
-    "filled",
-):  # fmt: skip
+STATE_WORDS: dict[str, str] = {"filled": "clean"}  # "a filled kettle": at the sink, as check 1 reads "fill"
+for _w in ("washed", "rinsed", "clean", "cleaned", "wet", "scrubbed", "cleansed", "moist", "damp", "soaked"):
     STATE_WORDS[_w] = "clean"
 for _w in (
     "heated",
