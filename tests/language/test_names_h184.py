@@ -2,8 +2,8 @@
 
 - Names for a type the world does not build, counted over the non-excluded train annotations by the types
   the world does build (`household_names.txt`, results/language/h184.md): "rack" the kitchen's Shelf,
-  "shelving unit" the one Cart/Shelf/SideTable built, "couch" the ArmChair, "cabinet" the bathroom's Drawer,
-  "magazine" the Book; left as said (the lexicon's type, refused where a task uses it) where two are built.
+  "shelving unit" the one Cart/Shelf/SideTable built, "couch" the ArmChair, "cabinet" the Shelf, "magazine"
+  the Book; left as said (the lexicon's type, refused where a task uses it) where two are built.
 - Landmarks: "in front of X", "to the left of X" name X only as where near, never as the destination
   ("of" is a determiner, which the nearness check once passed over); a side said with "on"/"at" ("on the
   front left of the stove") is part of X.
@@ -32,10 +32,11 @@ def _world(floor_plan: str):
         ("put the plate on the wooden rack", {"Shelf", "CounterTop"}, "put the plate on the wooden shelf"),
         # a bathroom's towel holder is the lexicon's own reading of "rack": left as said
         ("put the towel on the rack", {"TowelHolder", "Shelf"}, "put the towel on the rack"),
-        ("put the soap in the cabinet", {"Drawer", "Toilet"}, "put the soap in the drawer"),
-        ("put the soap in the cabinet", {"Cabinet", "Drawer"}, "put the soap in the cabinet"),
+        ("put the soap on the cabinet", {"Shelf", "Drawer"}, "put the soap on the shelf"),
+        ("put the soap in the cabinet", {"Cabinet", "Shelf"}, "put the soap in the cabinet"),
+        ("put the soap in the cabinet", {"Drawer", "Toilet"}, "put the soap in the cabinet"),
         # two of its types built: left as said (refused only where a task goes there), not guessed
-        ("put the soap in the cabinet", {"Drawer", "Shelf"}, "put the soap in the cabinet"),
+        ("put the soap in the cabinet", {"Dresser", "Shelf"}, "put the soap in the cabinet"),
         ("put the mug on the shelving unit", {"SideTable", "Fridge"}, "put the mug on the side table"),
         ("put the mug on the shelving unit", {"SideTable", "Shelf"}, "put the mug on the shelving unit"),
         ("put the keys on the couch", {"ArmChair", "Bed"}, "put the keys on the arm chair"),
@@ -71,7 +72,7 @@ def test_the_lexicons_own_reading_adds_no_note() -> None:
     "floor_plan, text, tasks",
     [
         ("FloorPlan1", "Put a chilled plate on the wooden rack.", ["cool_place Plate -> Shelf"]),
-        ("FloorPlan423", "Put two spray bottles in a cabinet.", ["place_two 2x SprayBottle -> Drawer"]),
+        ("FloorPlan429", "Put a clean bar of soap on a cabinet.", ["clean_place SoapBar -> Shelf"]),
         ("FloorPlan311", "Place a book on the couch.", ["place Book -> ArmChair"]),
         # near miss: a side said with "on" is part of the stove
         (
@@ -135,7 +136,6 @@ TRAIN_ANNOTATIONS = [
     ),
     ("FloorPlan321", "Take two cushions and place them on the gray sofa.", "receptacle", "ArmChair"),
     ("FloorPlan311", "put two credit cards on top of the green couch", "receptacle", "ArmChair"),
-    ("FloorPlan423", "place two spray bottles inside of the bathroom sink cabinet", "receptacle", "Drawer"),
     ("FloorPlan429", "Put the toilet paper roll on top of the white cabinet", "receptacle", "Shelf"),
     ("FloorPlan229", "Move a magazine from a chair to a table.", "object", "Book"),
     ("FloorPlan26", "Put a goblet with a spoon in it on the kitchen table", "container", "Cup"),
