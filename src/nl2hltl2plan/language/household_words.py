@@ -5,7 +5,7 @@ comes from are in household_names.txt, the drinks and food in content_words.txt)
 - a descriptive name of a receptacle ("the island", "the nightstand", "the entertainment center", "the
   vanity") is the first of its types that the floor plan has, written as that type's name; a name whose
   types the floor plan has two or more of, where they differ (`: either`), is refused by name, or left as
-  said (`: as said`), and one whose first present type is marked `=Type` (the lexicon's own reading) too;
+  said (`: as said`); one whose first present type is marked `=Type` is left as said too;
 - a drink or food ("a cup of coffee", "heat up some coffee") is left for check 1, which names it: no floor
   plan has coffee apart from its container, and a plan that heats the cup cannot check that it holds
   coffee; the refusal says so and asks for the container alone (`contents_hint`).
