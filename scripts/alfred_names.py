@@ -11,11 +11,14 @@ seed); valid_seen and valid_unseen are held out and read whole.
     python scripts/alfred_names.py read --split valid_seen -o /tmp/vs.jsonl
     python scripts/alfred_names.py summary /tmp/train.jsonl [--top 40]
     python scripts/alfred_names.py compare BEFORE.jsonl AFTER.jsonl
+    python scripts/alfred_names.py read --split train --n 300 --seed 0 --steps -o /tmp/steps.jsonl
 
 `read` writes one record per annotation (about a quarter of a second each: keep the file);
 `summary` gives the rate of annotations whose types are all read right, the refusals by cause, and the top
 classes (unknown names with the types their annotations' trials use, wrong types with the phrase said);
-`compare` the same two numbers side by side and the annotations whose outcome changed.
+`compare` the same two numbers side by side and the annotations whose outcome changed. `--steps` reads the
+same annotation's step-by-step sentences (`high_descs`, navigation included) joined into one instruction
+instead: the kind of text test50's multi-task instructions are built of.
 """
 
 from __future__ import annotations
@@ -25,6 +28,7 @@ import json
 import random
 import re
 from collections import Counter, defaultdict
+from dataclasses import replace
 from functools import lru_cache
 from pathlib import Path
 from typing import Any
@@ -35,6 +39,7 @@ from nl2hltl2plan.language.learned.data import Example, load_examples
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
 from nl2hltl2plan.language.translate import apply_choices, top_candidates, translate
 from nl2hltl2plan.worlds import load_world
+from nl2hltl2plan.worlds.floor_plans import alfred_data
 from nl2hltl2plan.worlds.world import World
 
 SLOTS = ("object", "container", "receptacle", "light")
@@ -52,6 +57,17 @@ CAUSES = (
 def sample(split: str, n: int, seed: int) -> list[Example]:
     rows = load_examples()[split]
     return rows if n <= 0 or n >= len(rows) else random.Random(seed).sample(rows, n)
+
+
+def as_steps(examples: list[Example]) -> list[Example]:
+    """Each example with its annotation's step-by-step sentences joined into one text (each closed by a
+    full stop), in place of its one-sentence summary."""
+    steps: dict[tuple[str, str], str] = {}
+    for row in alfred_data().example_fields:
+        for ann in row.annotations:
+            said = [" ".join(h.split()).rstrip(".") + "." for h in ann.get("high_descs", []) if h.strip()]
+            steps[(row.trial, " ".join(ann.get("task_desc", "").split()))] = " ".join(said)
+    return [replace(e, text=steps[(e.trial, e.text)]) for e in examples if steps.get((e.trial, e.text))]
 
 
 def read_one(e: Example) -> dict[str, Any]:
@@ -158,6 +174,7 @@ def main() -> None:
     r.add_argument("--split", choices=("train", "valid_seen", "valid_unseen"), default="train")
     r.add_argument("--n", type=int, default=0, help="sample size (0: every annotation)")
     r.add_argument("--seed", type=int, default=0)
+    r.add_argument("--steps", action="store_true", help="read the step-by-step sentences joined instead")
     r.add_argument("-o", "--out", type=Path, required=True)
     s = sub.add_parser("summary")
     s.add_argument("file", type=Path)
@@ -167,7 +184,8 @@ def main() -> None:
     c.add_argument("after", type=Path)
     args = ap.parse_args()
     if args.cmd == "read":
-        recs = [read_one(e) for e in sample(args.split, args.n, args.seed)]
+        chosen = sample(args.split, args.n, args.seed)
+        recs = [read_one(e) for e in (as_steps(chosen) if args.steps else chosen)]
         args.out.write_text("".join(json.dumps(x) + "\n" for x in recs))
         print(summary(recs, 20))
     elif args.cmd == "summary":

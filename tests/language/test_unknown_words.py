@@ -68,13 +68,14 @@ def test_the_verb_is_found_where_a_command_opens_and_an_object_follows():
 
 # "put the spoon in the goblet and put it in the sink" put the spoon in the sink, exit 0: a thing no word
 # table names, where a thing is acted on or put, is unread (ALFRED's "a goblet with a fork in it", "a tray
-# with a candle on it" were read as the fork or the candle alone)
+# with a candle on it" were read as the fork or the candle alone; "goblet" is a cup since h184, so an
+# unknown "chalice" keeps the cases)
 @BOTH
 @pytest.mark.parametrize(
     "text",
     [
-        "put the spoon in the goblet and put it in the sink",
-        "put a goblet with a fork in it on the dining table",
+        "put the spoon in the chalice and put it in the sink",
+        "put a chalice with a fork in it on the dining table",
         "place a tray with a credit card on it on the coffee table",
     ],
 )

@@ -37,7 +37,7 @@ from nl2hltl2plan.language.content_words import (
     stems,
     verb_places,
 )
-from nl2hltl2plan.language.counts import count_unread, count_value
+from nl2hltl2plan.language.counts import count_unread, count_value, counted
 from nl2hltl2plan.language.grammar.everyday import everyday
 from nl2hltl2plan.language.grounding import (
     LAMPS,
@@ -123,7 +123,8 @@ def account(
         for m in find_mentions(instruction)
         if not m.entry.generic
         and not _is_verb(m, toks)
-        and "noun_unsupported" not in categories(m.surface.lower())  # "my glasses" are no drinking glasses
+        # "my glasses" are no drinking glasses; "two glasses" are
+        and ("noun_unsupported" not in categories(m.surface.lower()) or counted(m, toks))
     ]
     in_mention = {i for m in mentions for i in range(m.start, m.end)}
     out, named = _nouns(instruction, mentions, toks, parse)

@@ -4,7 +4,8 @@ comes from are in household_names.txt, the drinks and food in content_words.txt)
 
 - a descriptive name of a receptacle ("the island", "the nightstand", "the entertainment center", "the
   vanity") is the first of its types that the floor plan has, written as that type's name; a name whose
-  types the floor plan has two or more of, where they differ (`: either`), is refused by name;
+  types the floor plan has two or more of, where they differ (`: either`), is refused by name, or left as
+  said (`: as said`); one whose first present type is marked `=Type` is left as said too;
 - a drink or food ("a cup of coffee", "heat up some coffee") is left for check 1, which names it: no floor
   plan has coffee apart from its container, and a plan that heats the cup cannot check that it holds
   coffee; the refusal says so and asks for the container alone (`contents_hint`).
@@ -33,6 +34,7 @@ class _Name:
     pattern: re.Pattern[str]
     types: tuple[str, ...]
     either: bool
+    as_said: bool  # two or more of its types in the floor plan: left as said, not refused
 
 
 @cache
@@ -44,7 +46,8 @@ def _names() -> tuple[_Name, ...]:
             said = r"\s+".join(map(re.escape, words.split()))
             lead = rf"\b{_PREPOSITIONS[prep]}\s+(?:(?:the|a|an|your|my)\s+)?" if prep else ""
             pattern = re.compile(rf"{lead}(?<![\w-])(?P<name>{said})(?![\w-])", re.I)
-            out.append(_Name(pattern, tuple(fields[0].split()), "either" in fields[1:]))
+            flags = fields[1:]
+            out.append(_Name(pattern, tuple(fields[0].split()), "either" in flags, "as said" in flags))
     return tuple(out)
 
 
@@ -71,9 +74,11 @@ def _renamed(text: str, types: set[str]) -> tuple[str, list[tuple[str, str]]]:
         for m in reversed(list(name.pattern.finditer(text))):
             if _inside_longer_name(text, m):
                 continue  # "kitchen island": a name of the lexicon's own
-            present = [t for t in name.types if t in types]
-            if not present:
-                continue  # left as it is: the grammar and check 1 read or refuse it
+            present = [t for t in name.types if t.lstrip("=") in types]
+            if not present or present[0].startswith("="):
+                continue  # left as said: the grammar and check 1 read or refuse it ("=": as the lexicon does)
+            if name.as_said and len(present) > 1:
+                continue
             if name.either and len(present) > 1:
                 raise HTTError(f"{m['name']!r} could be the {' or the '.join(present)} here; say which")
             written = camel_words(present[0])

@@ -16,13 +16,15 @@ from nl2hltl2plan.language.parse_usage import ParseUsage
 NEAR_WORDS = frozenset("near beside besides by next between behind against".split())
 _NEAR_TWO = {
     ("next", "to"), ("close", "to"), ("closest", "to"), ("nearest", "to"), ("closer", "to"), ("near", "to"),
-    ("front", "of"), ("left", "of"), ("right", "of"),
 }  # fmt: skip
+# a word before a bare "left"/"right" (no article) that makes the side a part of the place: "on the front left
+# of the stove", "at left of"
+_PART_BEFORE_SIDE = frozenset("on in at onto into upon front back far top bottom upper lower".split())
 
 
 def near_word_before(toks: list[tuple[str, int, int]], start: int) -> bool:
     """Is the place whose first word is at `start` introduced by a word of nearness ("next to the", "by
-    a", "to the left of the")?"""
+    a", "in front of the", "to the left of the")?"""
     j = start - 1
     while j >= 0 and toks[j][0] in DETERMINERS:
         j -= 1
@@ -30,7 +32,27 @@ def near_word_before(toks: list[tuple[str, int, int]], start: int) -> bool:
         return False
     if toks[j][0] in NEAR_WORDS - {"next"}:  # "next" alone is an order word: only "next to" is nearness
         return True
+    if "of" in (w for w, _, _ in toks[j + 1 : start]):  # "of" is a determiner: it was passed over
+        return _side_of(toks, j)
     return j >= 1 and (toks[j - 1][0], toks[j][0]) in _NEAR_TWO
+
+
+def _side_of(toks: list[tuple[str, int, int]], j: int) -> bool:
+    """Does the word at `j`, before "of", say a place beside the next one: "in front of", "(to the) left
+    of", "to the right side of"? A side said with "on"/"in"/"at" is a part of that place ("on the left
+    side of the stove", "at the front of the sink", "on the back of the toilet"): ALFRED's annotators
+    put things there, on it (results/language/h184.md)."""
+    if toks[j][0] == "front":
+        return j >= 1 and toks[j - 1][0] == "in"
+    if toks[j][0] == "side" and j >= 1:
+        j -= 1
+    if toks[j][0] not in ("left", "right"):
+        return False
+    j -= 1
+    if j >= 0 and toks[j][0] == "the":
+        j -= 1
+        return j >= 0 and toks[j][0] == "to"
+    return j < 0 or toks[j][0] not in _PART_BEFORE_SIDE  # "the drawer left of the sink"
 
 
 def landmark_destinations(
@@ -41,7 +63,11 @@ def landmark_destinations(
     in_mention = {i for m in mentions for i in range(m.start, m.end)}
     places = verb_places()
     by_verb = {
-        places[f] for i, (w, _, _) in enumerate(toks) if i not in in_mention for f in stems(w) if f in places
+        places[f]
+        for i, (w, _, _) in enumerate(toks)
+        if i not in in_mention and not _attributive(toks, i, in_mention)
+        for f in stems(w)
+        if f in places
     }
     out = []
     for task_id, role, types in parse.slots():
@@ -58,6 +84,14 @@ def landmark_destinations(
                 )
             )
     return out
+
+
+def _attributive(toks: list[tuple[str, int, int]], i: int, in_mention: set[int]) -> bool:
+    """Is the word at `i` said of a thing ("a warmed apple", "clean sliced tomato") rather than done to it?
+    Such a word names the treatment, never where the thing goes: "put a warmed apple in front of the
+    microwave" leaves the destination unsaid."""
+    after = toks[i + 1][0] if i + 1 < len(toks) else ""
+    return (i > 0 and toks[i - 1][0] in DETERMINERS - {"of"}) or i + 1 in in_mention or after == "sliced"
 
 
 def carried(m: Mention) -> bool:

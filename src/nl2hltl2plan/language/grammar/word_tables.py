@@ -346,7 +346,7 @@ LIGHT_PREPS = {
 PARTICLES = {"up", "down", "away", "back", "around", "aside"}  # skipped after a verb and inside noun phrases
 
 # ----- state words (adjectives and participles in noun phrases) --------------------------------------
-STATE_WORDS: dict[str, str] = {}
+STATE_WORDS: dict[str, str] = {"filled": "clean"}  # "a filled kettle": at the sink, as check 1 reads "fill"
 for _w in ("washed", "rinsed", "clean", "cleaned", "wet", "scrubbed", "cleansed", "moist", "damp", "soaked"):
     STATE_WORDS[_w] = "clean"
 for _w in (
