@@ -3,6 +3,8 @@ words that carry no object, place, count, negation or order in the place where i
 
 - misspelt words ("tomatoe", "coffe table", "woould") as the lexicon or English writes them
   (`spelling.respelt`), and texting forms: "ur done" is "you're done", another "ur" is "your";
+- "one more" said of a thing ("a remote on the sofa and one more on the armchair", "one more mug") is
+  "another" (`drafts` reads "another" as a second thing of the type just placed);
 - places and things said first: "put the egg (in) there" names the last destination before it, and "the
   mug that's on the counter, put it in the sink" takes the mug first;
 - terse notation: "green apple -> blue plate" is "green apple onto blue plate" (the placement verb is
@@ -35,6 +37,8 @@ from nl2hltl2plan.language.grounding import alfred_lookup, find_mentions, phrase
 from nl2hltl2plan.language.spelling import respelt
 from nl2hltl2plan.language.statements import RELATIVE_PLACE
 
+# "one more" as the thing, not "one more time" / "one more step" (no second thing)
+_ONE_MORE = re.compile(r"\bone\s+more\b(?!\s+(?:time|step|thing|task|minute|second)s?\b)", re.I)
 # hesitations, the one list of them (the handover reader's spoken step uses it too)
 HESITATION = r"(?:u+h+m*|u+m+|e+r+m*|hmm+|mm+)"
 _HESITATION = re.compile(rf"(?:^|(?<=[\s,]))(?:{HESITATION}|basically)(?=[\s,.;!?]|$)", re.I)
@@ -181,6 +185,7 @@ def everyday(text: str) -> str:
     """The text with the everyday styles above rewritten onto the forms the grammar reads (a pure function
     of the text)."""
     text = _BARE.sub(lambda m: _BARE_CONTRACTION[m[1].lower()], _UR_DONE.sub("you're ", text))
+    text = _ONE_MORE.sub(lambda m: _cased("another", m[0]), text)
     if _FREE_REMARK.search(text):  # "1. X. 2. Y. Any order is fine.": the numbers only list the steps
         text = _NUMBERED.sub(lambda m: m["lead"], text)
     text = everyday_names(respelt(text))  # misspelt names of things (language/spelling.py), everyday names
