@@ -208,11 +208,12 @@ _THOSE_CAN_BE_FREE = re.compile(
 )
 
 
-# "Put a book on the chair. As soon as it's there, Y" / "once they're in place": the thing of the task just
-# said, where it was put: "once that is done" (the grammar could not tell which task "it's there" names)
+# "Put a book on the chair. As soon as it's there, Y" / "once they're in place" / "when it's inside": the
+# thing of the task just said, where it was put: "once that is done" (the grammar could not tell which task
+# "it's there" names)
 _IT_IS_THERE = re.compile(
     r"\b(?P<lead>once|when|as\s+soon\s+as|after|now\s+that)\s+(?:it|they)(?:'s|'re|\s+is|\s+are)\s+"
-    r"(?:there|in\s+place|done|finished)(?=\s*,)",
+    r"(?:there|in\s+place|done|finished|inside|in\s+there|on\s+there|in|on|down|away)(?=\s*,)",
     re.I,
 )
 
