@@ -11,8 +11,10 @@ from __future__ import annotations
 import re
 
 _EXAMINE = r"(?:look\s+at|see|examine|view|read|inspect|check(?:\s+out)?|study|observe)"
-# the looking verbs people use beside those: "have a look at X", "take a close look at X", "look over X"
-_LOOKING = rf"(?:{_EXAMINE}|(?:have|take|get)\s+a\s+(?:(?:good|close|closer|quick|proper)\s+)?look\s+at|look\s+over)"
+# the looking verbs people use beside those: "have a look at X", "take a close look at X"
+_LOOKING = rf"(?:{_EXAMINE}|(?:have|take|get)\s+a\s+(?:(?:good|close|closer|quick|proper)\s+)?look\s+at)"
+# "look over the CD and the pen": "look at" (left, "over the CD" was a place, and the CD lost)
+_LOOK_OVER = re.compile(r"\b(look)\s+over\s+(?=(?:the|a|an|this|that|these|those|it|them|my|your)\b)", re.I)
 
 # "use the light from the lamp to look at the book": the lamp lights the examination
 _USE_LAMP = re.compile(
@@ -108,7 +110,7 @@ def _lamp_used(m: re.Match[str]) -> str:
 
 def lamp_phrasing(text: str) -> str:
     """`text` with each phrasing above rewritten (its comment says which)."""
-    text = _LIGHT_FROM.sub("light of ", text)
+    text = _LOOK_OVER.sub(r"\1 at ", _LIGHT_FROM.sub("light of ", text))
     text = _LAMP_FIRST.sub(lambda m: f"{m['verb']} {m['things']} under the {m['lamp']}{m['tail'] or ''}",
                            text)
     text = _USE_LAMP.sub(_lamp_used, text)
