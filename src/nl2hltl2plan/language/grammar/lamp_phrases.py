@@ -11,8 +11,10 @@ from __future__ import annotations
 import re
 
 _EXAMINE = r"(?:look\s+at|see|examine|view|read|inspect|check(?:\s+out)?|study|observe)"
-# the looking verbs people use beside those: "have a look at X", "take a close look at X"
-_LOOKING = rf"(?:{_EXAMINE}|(?:have|take|get)\s+a\s+(?:(?:good|close|closer|quick|proper)\s+)?look\s+at)"
+# the looking verbs people use beside those: "have a look at X", "take a close look at X" ("look at X": the
+# rules give a verb of one word to the things listed after it, "... and then the pen")
+_A_LOOK_AT = re.compile(r"\b(?:have|take|get)\s+a\s+(?:(?:good|close|closer|quick|proper)\s+)?look\s+at\b", re.I)
+_LOOKING = rf"(?:{_EXAMINE}|{_A_LOOK_AT.pattern})"
 # "look over the CD and the pen": "look at" (left, "over the CD" was a place, and the CD lost)
 _LOOK_OVER = re.compile(r"\b(look)\s+over\s+(?=(?:the|a|an|this|that|these|those|it|them|my|your)\b)", re.I)
 
@@ -111,11 +113,13 @@ def _lamp_used(m: re.Match[str]) -> str:
 def lamp_phrasing(text: str) -> str:
     """`text` with each phrasing above rewritten (its comment says which)."""
     text = _LOOK_OVER.sub(r"\1 at ", _LIGHT_FROM.sub("light of ", text))
-    text = _LAMP_FIRST.sub(lambda m: f"{m['verb']} {m['things']} under the {m['lamp']}{m['tail'] or ''}",
-                           text)
+    text = _LAMP_FIRST.sub(lambda m: f"{_A_LOOK_AT.sub('look at', m['verb'])} {m['things']} under the "
+                           f"{m['lamp']}{m['tail'] or ''}", text)
     text = _USE_LAMP.sub(_lamp_used, text)
     text = _CHECK_OUT_FRONT.sub("check ", _CHECK_OUT.sub(r"check \1", text))
     text = _AGAIN_AFTER_LAMP.sub(lambda m: m["lamp"] + ". Then ", text)
     text = _AND_AT.sub(lambda m: m["head"] + m["sep"] + "look at ", text)
     text = _WHILE_YOU.sub(lambda m: "while " + _GERUND[m[1].lower()], text)
-    return _LOOK_PURPOSE.sub(r"\g<keep>", _PURPOSE.sub(_purpose_said, text))
+    text = _LOOK_PURPOSE.sub(r"\g<keep>", _PURPOSE.sub(_purpose_said, text))
+    # after the purposes above, which drop "to get a good look at it" whole
+    return _A_LOOK_AT.sub(lambda m: "Look at" if m[0][0].isupper() else "look at", text)
