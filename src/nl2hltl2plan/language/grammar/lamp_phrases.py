@@ -13,7 +13,9 @@ import re
 _EXAMINE = r"(?:look\s+at|see|examine|view|read|inspect|check(?:\s+out)?|study|observe)"
 # the looking verbs people use beside those: "have a look at X", "take a close look at X" ("look at X": the
 # rules give a verb of one word to the things listed after it, "... and then the pen")
-_A_LOOK_AT = re.compile(r"\b(?:have|take|get)\s+a\s+(?:(?:good|close|closer|quick|proper)\s+)?look\s+at\b", re.I)
+_A_LOOK_AT = re.compile(
+    r"\b(?:have|take|get)\s+a\s+(?:(?:good|close|closer|quick|proper)\s+)?look\s+at\b", re.I
+)
 _LOOKING = rf"(?:{_EXAMINE}|{_A_LOOK_AT.pattern})"
 # "look over the CD and the pen": "look at" (left, "over the CD" was a place, and the CD lost)
 _LOOK_OVER = re.compile(r"\b(look)\s+over\s+(?=(?:the|a|an|this|that|these|those|it|them|my|your)\b)", re.I)
