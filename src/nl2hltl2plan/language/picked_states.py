@@ -14,7 +14,7 @@ import re
 from collections.abc import Mapping
 
 from nl2hltl2plan.language.content_words import Unread, word_categories
-from nl2hltl2plan.language.grounding import Mention, tokens
+from nl2hltl2plan.language.grounding import Mention, lexicon, tokens
 from nl2hltl2plan.language.parse_usage import ParseUsage
 from nl2hltl2plan.language.unknown_words import modifiers_before
 
@@ -45,6 +45,14 @@ def picked_states(
         before = modifiers_before(instruction, toks, m.start)
         opener = m.start - 1 - len(before)
         if before and opener >= 0 and toks[opener][0] in _DEFINITE:
-            words += [w for w in before if w in _STATES]
+            words += [w for w in before if w in _STATES and not _named_so(w, m)]
         out += [Unread(w, "object", REASON) for w in dict.fromkeys(words) if w not in {u.words for u in out}]
     return out
+
+
+def _named_so(state: str, m: Mention) -> bool:
+    """Does the lexicon name the type so, the state with the mention's last word ("empty roll": ALFRED's
+    toilet paper is an empty roll)? Then the state says what every one of the type looks like, and picks
+    none: "the empty toilet paper roll"."""
+    named = lexicon().get((state, m.surface.lower().split()[-1]))
+    return named is not None and set(named[0].types) == set(m.entry.types)

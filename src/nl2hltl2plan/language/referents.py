@@ -356,30 +356,40 @@ def another_one(instruction: str, tasks: Sequence[BaseTaskSpec]) -> None:
 
 
 def another_named(instruction: str, tasks: Sequence[BaseTaskSpec]) -> None:
-    """ "Heat a potato and put it on the counter, then another potato": "another X" / "one more X" / "a second
-    X" after an X said before names a second thing of that type; a reading whose tasks take one thing of it
-    has dropped the second (read as the first, or not at all): refused, as `another_one` refuses "another
-    one". "Put another pillow on the bed" with no pillow before it is one more than the scene's, and stays."""
+    """ "Heat a potato and put it on the counter, then another potato" / "put a mug in the sink, then one more
+    in the cabinet": "another (X)", "one more (X)" or "a second X" after an X said before names a second thing
+    of that type (said alone, of the last thing a task moves); a reading whose tasks take one thing of it has
+    dropped the second (read as the first, or not at all): refused, as `another_one` refuses "another one".
+    "Put another pillow on the bed" with no pillow before it is one more than the scene's, and stays."""
     lowered = instruction.lower()
+    moved = {t for task in tasks for t in (*task.object, *(task.container or ()))}
     for m in _ANOTHER_THING.finditer(lowered):
-        after = [x for x in find_mentions(lowered[m.end() :]) if x.char_start <= 12][:1]
-        if not after or _after_preposition([w for w, _, _ in tokens(lowered[: m.start()])]):
+        if _after_preposition([w for w, _, _ in tokens(lowered[: m.start()])]):
             continue
-        types = set(after[0].entry.types)
-        if not any(set(x.entry.types) & types for x in find_mentions(lowered[: m.start()])):
+        before = [x for x in find_mentions(lowered[: m.start()]) if set(x.entry.types) & moved]
+        rest = lowered[m.end() :]
+        # "one more mug", not "one more in the cabinet" (the cabinet is where it goes)
+        near = [x for x in find_mentions(rest) if x.char_start <= 12]
+        after = [x for x in near if not _PLACE_GAP.search(rest[: x.char_start])][:1]
+        thing = after[0] if after else (before[-1] if before else None)  # said alone: the last thing moved
+        if thing is None or not any(set(x.entry.types) & set(thing.entry.types) for x in before):
             continue
-        taken = sum(t.count for t in tasks if types & set(t.object)) + sum(
-            1 for t in tasks if types & set(t.container or ())
-        )
+        types = set(thing.entry.types)
+        taken = sum(t.count for t in tasks if types & set(t.object))
+        taken += sum(1 for t in tasks if types & set(t.container or ()))
         if taken < 2:
-            said = lowered[m.start() : m.end() + after[0].char_end].strip()
+            said = lowered[m.start() : m.end() + (after[0].char_end if after else 0)].strip()
             raise HTTError(
-                f"{said!r} names a second {after[0].surface}, and the reading takes one: say what to do with "
-                f"it (\"put another {after[0].surface} in ...\")"
+                f"{said!r} names a second {thing.surface}, and the reading takes one: say what to do with it "
+                f"(\"put another {thing.surface} in ...\")"
             )
 
 
-_ANOTHER_THING = re.compile(r"\b(?:another|one\s+more|a\s+second)\s+(?=[a-z])")
+_PLACE_GAP = re.compile(r"\b(?:in|into|on|onto|inside|to|under|at|by|near|from|with|beside)\b")
+# "another (X)", "one more (X)", "a second X"; not "another one" (`another_one`), "one more time"
+_ANOTHER_THING = re.compile(
+    r"\b(?:another|one\s+more|a\s+second)\b(?!\s+(?:one|time|step|thing|task|minute)s?\b)(?!\s+(?:of|after)\b)\s*"
+)
 
 
 @lru_cache(maxsize=1)

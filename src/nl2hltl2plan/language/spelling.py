@@ -141,11 +141,23 @@ def spelt_name(word: str) -> str | None:
     if len(low) < 4 or low in _known_words():
         return None
     scored = sorted(((_score(low, w), w) for w in _close(low)), reverse=True)
-    if not scored or (len(scored) > 1 and scored[1][0] == scored[0][0]):
+    if not scored:
+        return _spelt_plural(low)
+    if len(scored) > 1 and scored[1][0] == scored[0][0]:
         return None
     if low in _english():
         return None
     return scored[0][1]
+
+
+def _spelt_plural(low: str) -> str | None:
+    """A misspelt plural ("candels"): the names are singular, so the word is too far from each; its stem
+    misspells a name ("candel": candle), whose plural with the same ending is the word meant."""
+    if not low.endswith("s") or low.endswith("ss") or low in _english():
+        return None
+    stem = low[:-1]
+    name = spelt_name(stem)
+    return None if name is None or name.endswith("s") else name + "s"
 
 
 def _close(low: str) -> list[str]:

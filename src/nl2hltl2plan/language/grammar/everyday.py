@@ -5,6 +5,8 @@ words that carry no object, place, count, negation or order in the place where i
   (`spelling.respelt`), and texting forms: "ur done" is "you're done", another "ur" is "your";
 - counted and ordinal references to things named before ("the remaining two", "the other one", "remotes,
   two of them") written out (`counted_refs.py`);
+- "one more" said of a thing ("a remote on the sofa and one more on the armchair", "one more mug") is
+  "another" (`drafts` reads "another" as a second thing of the type just placed);
 - places and things said first: "put the egg (in) there" names the last destination before it, and "the
   mug that's on the counter, put it in the sink" takes the mug first;
 - terse notation: "green apple -> blue plate" is "green apple onto blue plate" (the placement verb is
@@ -46,6 +48,9 @@ from nl2hltl2plan.language.grounding import (
 from nl2hltl2plan.language.spelling import respelt
 from nl2hltl2plan.language.statements import RELATIVE_PLACE
 
+# "one more" as the thing, not "one more time" / "one more step" (no second thing); after "then" it is
+# `_COUNT_LEFT`'s ("then one more (in the cabinet)": one more of the thing moved before)
+_ONE_MORE = re.compile(r"(?<!\bthen\s)\bone\s+more\b(?!\s+(?:time|step|thing|task|minute|second)s?\b)", re.I)
 # hesitations, the one list of them (the handover reader's spoken step uses it too)
 HESITATION = r"(?:u+h+m*|u+m+|e+r+m*|hmm+|mm+)"
 _HESITATION = re.compile(rf"(?:^|(?<=[\s,]))(?:{HESITATION}|basically)(?=[\s,.;!?]|$)", re.I)
@@ -192,6 +197,7 @@ def everyday(text: str) -> str:
     """The text with the everyday styles above rewritten onto the forms the grammar reads (a pure function
     of the text)."""
     text = _BARE.sub(lambda m: _BARE_CONTRACTION[m[1].lower()], _UR_DONE.sub("you're ", text))
+    text = _ONE_MORE.sub(lambda m: _cased("another", m[0]), text)
     if _FREE_REMARK.search(text):  # "1. X. 2. Y. Any order is fine.": the numbers only list the steps
         text = _NUMBERED.sub(lambda m: m["lead"], text)
     text = everyday_names(respelt(text))  # misspelt names of things (language/spelling.py), everyday names
@@ -319,6 +325,13 @@ _BEFORE_PLACING = re.compile(
 )
 
 
+# "face the armchair and put the pillow on it": a step on the way names the place, and the rules read that
+# "it" already (the step joins the task that follows); written out, the step was left unread
+_STEP_TO = re.compile(
+    r"\b(?:face|approach|go|walk|head|turn|step|move)\b(?:\s+(?:to|towards?|over\s+to))?\s+(?:the\s+)?$"
+)
+
+
 def _fixture_named(m: re.Match[str]) -> str:
     """ "put the pillow on it" -> "put the pillow on the bed" (see above); else as it is."""
     said = m.string[: m.start()]
@@ -327,7 +340,7 @@ def _fixture_named(m: re.Match[str]) -> str:
     if not named or named[-1].plural or look is None or (len(named) > 1 and not _BEFORE_PLACING.search(said)):
         return m[0]
     a = look(named[-1].entry.canonical)
-    if a is None or a.pickupable or not a.receptacle:
+    if a is None or a.pickupable or not a.receptacle or _STEP_TO.search(said[: named[-1].char_start]):
         return m[0]
     return f"{m['head']} {m['prep']} the {named[-1].surface}"
 

@@ -11,6 +11,14 @@ from __future__ import annotations
 import re
 
 _EXAMINE = r"(?:look\s+at|see|examine|view|read|inspect|check(?:\s+out)?|study|observe)"
+# the looking verbs people use beside those: "have a look at X", "take a close look at X" ("look at X": the
+# rules give a verb of one word to the things listed after it, "... and then the pen")
+_A_LOOK_AT = re.compile(
+    r"\b(?:have|take|get)\s+a\s+(?:(?:good|close|closer|quick|proper)\s+)?look\s+at\b", re.I
+)
+_LOOKING = rf"(?:{_EXAMINE}|{_A_LOOK_AT.pattern})"
+# "look over the CD and the pen": "look at" (left, "over the CD" was a place, and the CD lost)
+_LOOK_OVER = re.compile(r"\b(look)\s+over\s+(?=(?:the|a|an|this|that|these|those|it|them|my|your)\b)", re.I)
 
 # "use the light from the lamp to look at the book": the lamp lights the examination
 _USE_LAMP = re.compile(
@@ -59,22 +67,25 @@ _AGAIN_AFTER_LAMP = re.compile(
     re.I,
 )
 
-# "look at the box under the lamp and at the pencil by the lamp as well": "and at" goes on with "look at"
+# "look at the box under the lamp and at the pencil by the lamp as well", "..., then at the pencil": "and
+# at" / "then at" goes on with "look at"
 _AND_AT = re.compile(
-    r"(?P<head>\blook\s+at\s+[^,.;!?]*?\b(?:lamp|light))(?P<sep>,?\s+and\s+)at\s+"
+    r"(?P<head>\blook\s+at\s+[^,.;!?]*?\b(?:lamp|light))(?P<sep>,?\s+(?:and\s+(?:then\s+)?|then\s+))at\s+"
     r"(?=(?:the|a|an)\s)(?!(?:the|a|an)\s+(?:same|end|start|beginning|moment|time)\b)",
     re.I,
 )
 
 # "Using the desk lamp, look at A, B and C": the lamp named before a list of things to look at lights each
 # of them (read as a thing to look at itself, it was a task too many); the lamp goes after the list, where the
-# rules give it to every item ("look at A, B and C under the desk lamp"), before a closing order phrase
+# rules give it to every item ("look at A, B and C under the desk lamp"), before a closing order phrase.
+# "By the floor lamp, have a look at A": a lamp beside which one looks is the light one looks by
 _LAMP_FIRST = re.compile(
     r"(?:(?<=^)|(?<=[.;!?]\s)|(?<=,\s)|(?<=\bthen\s))"
-    r"(?:using|with|by\s+the\s+light\s+of|in\s+the\s+light\s+of|under)\s+(?:the\s+|a\s+)?"
+    r"(?:using|with|by\s+the\s+light\s+of|in\s+the\s+light\s+of|under|by|beside|next\s+to|near)\s+"
+    r"(?:the\s+|a\s+)?"
     r"(?P<lamp>(?:[a-z]+\s+)?lamp(?:\s+on\s+the\s+(?!same\b)[a-z]+)?)"
     r"(?:\s+(?:switched|turned)\s+on|\s+on|\s+lit)?\s*,\s*"
-    rf"(?P<verb>{_EXAMINE})\s+(?P<things>(?:the|a|an)\s[^.;!?]+?)"
+    rf"(?P<verb>{_LOOKING})\s+(?P<things>(?:the|a|an)\s[^.;!?]+?)"
     r"(?P<tail>\s*,?\s*(?:in\s+(?:any|whatever|either|that|this)\s+order|one\s+(?:after\s+(?:the\s+other|another)|by\s+one)))?"
     r"(?=\s*(?:[.;!?]|$)|,?\s+(?:and\s+)?then\b|,\s+and\s+(?!(?:the|a|an)\s))",
     re.IGNORECASE,
@@ -103,12 +114,14 @@ def _lamp_used(m: re.Match[str]) -> str:
 
 def lamp_phrasing(text: str) -> str:
     """`text` with each phrasing above rewritten (its comment says which)."""
-    text = _LIGHT_FROM.sub("light of ", text)
-    text = _LAMP_FIRST.sub(lambda m: f"{m['verb']} {m['things']} under the {m['lamp']}{m['tail'] or ''}",
-                           text)
+    text = _LOOK_OVER.sub(r"\1 at ", _LIGHT_FROM.sub("light of ", text))
+    text = _LAMP_FIRST.sub(lambda m: f"{_A_LOOK_AT.sub('look at', m['verb'])} {m['things']} under the "
+                           f"{m['lamp']}{m['tail'] or ''}", text)
     text = _USE_LAMP.sub(_lamp_used, text)
     text = _CHECK_OUT_FRONT.sub("check ", _CHECK_OUT.sub(r"check \1", text))
     text = _AGAIN_AFTER_LAMP.sub(lambda m: m["lamp"] + ". Then ", text)
     text = _AND_AT.sub(lambda m: m["head"] + m["sep"] + "look at ", text)
     text = _WHILE_YOU.sub(lambda m: "while " + _GERUND[m[1].lower()], text)
-    return _LOOK_PURPOSE.sub(r"\g<keep>", _PURPOSE.sub(_purpose_said, text))
+    text = _LOOK_PURPOSE.sub(r"\g<keep>", _PURPOSE.sub(_purpose_said, text))
+    # after the purposes above, which drop "to get a good look at it" whole
+    return _A_LOOK_AT.sub(lambda m: "Look at" if m[0][0].isupper() else "look at", text)

@@ -208,11 +208,12 @@ _THOSE_CAN_BE_FREE = re.compile(
 )
 
 
-# "Put a book on the chair. As soon as it's there, Y" / "once they're in place": the thing of the task just
-# said, where it was put: "once that is done" (the grammar could not tell which task "it's there" names)
+# "Put a book on the chair. As soon as it's there, Y" / "once they're in place" / "when it's inside": the
+# thing of the task just said, where it was put: "once that is done" (the grammar could not tell which task
+# "it's there" names)
 _IT_IS_THERE = re.compile(
     r"\b(?P<lead>once|when|as\s+soon\s+as|after|now\s+that)\s+(?:it|they)(?:'s|'re|\s+is|\s+are)\s+"
-    r"(?:there|in\s+place|done|finished)(?=\s*,)",
+    r"(?:there|in\s+place|done|finished|inside|in\s+there|on\s+there|in|on|down|away)(?=\s*,)",
     re.I,
 )
 
@@ -243,6 +244,31 @@ _OPENS_LAST_CLAUSE = re.compile(
 )
 
 
+# "First put the mug in the sink, second the bowl, third the plate" / "... . Second the bowl.": a list of
+# steps counted from a "first" that opens a clause; each later ordinal opens a step of its own ("; second,
+# the bowl"), the form the leading order words read (left, "second the bowl" was no step, or no order)
+_FIRST_STEP = re.compile(r"(?:^|[.;!?,:]\s*|\bthen\s+)first(?:ly)?\b", re.I)
+_NTH_STEP = re.compile(
+    r"(?P<sep>[,;.!?])?\s*(?P<and>\band\s+)?\b(?P<nth>second|third|fourth|fifth)(?:ly)?\b(?!\s+(?:from|one|time|of)\b)\s*,?\s+(?=\w)",
+    re.I,
+)
+
+
+def ordinal_steps(text: str) -> str:
+    """Each ordinal after a clause-opening "first" made a step of its own (see `_NTH_STEP`)."""
+    first = _FIRST_STEP.search(text)
+    if first is None:
+        return text
+
+    def step(m: re.Match[str]) -> str:
+        if m["sep"] is None and m["and"] is None:
+            return m[0]  # "the second shelf": no step
+        sep = ";" if m["sep"] in {",", None} else m["sep"]
+        return f"{sep} {m['nth']}, "
+
+    return text[: first.end()] + _NTH_STEP.sub(step, text[first.end() :])
+
+
 def _free_clause_closed(m: re.Match[str]) -> str:
     if m["verb"].lower() not in G.VERBS:
         return m[0]
@@ -265,7 +291,7 @@ def after_the_step(text: str) -> str:
     "before you start on any of this" -> "before any of this"; "..., D at the very end." / "D to finish." ->
     "..., D last."; "when you have done both" -> "when both are done"; "..., and at any point B." -> "..., and
     B at any point."."""
-    text = _ONE_CLAUSE_TO_FINISH.sub(r"\g<clause> last", _CLOSING_LAST.sub(" last", text))
+    text = _ONE_CLAUSE_TO_FINISH.sub(r"\g<clause> last", _CLOSING_LAST.sub(" last", ordinal_steps(text)))
     text = _FREE_BUT.sub(r"\g<free>. ", text)
     text = _IT_IS_THERE.sub(r"\g<lead> that is done", _THOSE_CAN_BE_FREE.sub(", ", text))
     text = _THE_NTH_THING.sub(_nth_step, text)
