@@ -9,7 +9,8 @@ the word tables' `REWRITES`). Each rewrite changes no meaning:
   until you touch Y" (before Y is touched), "while you do it", "somewhere along the way" (at any time),
   ("..., while regions F, G and H remain empty" is the cue reader's kept-empty place);
 - telegraphic and bulleted: "three objects, three regions: G, H and I" (the regions' count is still
-  checked), a pair before its exchange ("red and blue: swap places");
+  checked), a pair before its exchange ("red and blue: swap places"), a count after its noun ("pillars,
+  three, to E, F, G");
 - emphasis: "no exceptions";
 - headings: a noun of placing after a heading ("three blocks: placement on regions H, I and J"), a block's
   heading before its order ("red: before blue") or before bare region letters ("yellow: I first, then G"),
@@ -114,6 +115,8 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
         "we have ",
     ),
     (r"^\s*here\s*(?:s|is)\s+what\s+(i|we)\s+(?:want|need|would\s+like)\s*:", r"\1 want "),
+    # a telegraphic count after its noun: "pillars, three, to E, F, G" (three pillars to ...)
+    (r"^\s*(blocks|pillars|objects|cubes|items)\s*,\s*(two|three|2|3)\s*,\s*", r"\2 \1 "),
     # one block's place said as a choice: "red block: one of H, I or J" is "red block: H, I or J" (after two
     # blocks, "one of" may mean one region for both: left unread)
     (
@@ -379,11 +382,13 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
         r"((?:the\s+)?(?:red|blue|yellow)(?:\s+(?:block|one|object|cube))?)\b",
         r"\3 \1 \2",
     ),
-    # modal "is to" before a verb of holding, with "each" before "to" or after it ("regions H, I and J are
-    # each to receive one of the blocks": must each receive)
+    # modal "is to" (or "is set / meant / supposed / due / going to") before a verb of holding, with "each"
+    # before "to" or after it ("regions H, I and J are each (set) to receive one of the blocks": must each
+    # receive)
     # ("is to take the pillars ..." is a goal: "take", "carry" and "get" hold only before a count of one)
     (
-        r"\b(?:is|are)\s+(?:(each|all|both)\s+)?to\s+(?=(?:hold|contain|receive|accept)\b|(?:take|carry|get)\s+"
+        r"\b(?:is|are)\s+(?:(each|all|both)\s+)?(?:set\s+|meant\s+|supposed\s+|due\s+|going\s+)?to\s+"
+        r"(?=(?:hold|contain|receive|accept)\b|(?:take|carry|get)\s+"
         r"(?:(?:only|just|exactly|at\s+most)\s+)?(?:one|a\s+single|no\s+more\s+than)\b)",
         lambda m: f"must {m[1] or ''} ",
     ),
@@ -445,6 +450,18 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     # "lands" is "goes": "Nothing lands outside the target region", "the red block should land on G"
     (r"\blands\b", "goes"),
     (r"\b(should|must|to|can|may|will)\s+land\b", r"\1 go"),
+    # "none / not one of them", "not a single pillar" before a placing verb's passive (or the participle
+    # alone, a verbless prohibition: "..., not one of them put down anywhere except ...") is "no object":
+    # every object of the scene is one of the blocks (regions are never "placed": "none of them may hold two"
+    # is left as it is)
+    (
+        r"\b(?:none\s+of\s+them|not\s+(?:a\s+single\s+)?one\s+of\s+them|not\s+a\s+single\s+(?:block|pillar|object)"
+        r"|not\s+one\s+(?:block|pillar|object))\s+(?:((?:may|can|must|should|shall|is\s+to|will)\s+(?:not\s+|ever\s+)?be"
+        r"|is|gets?)\s+)?(?=(?:put|placed|set|dropped|laid|left)\b)",
+        lambda m: f"no object {m[1] or 'may be'} ",
+    ),
+    # "comes back to G" is "goes back to G": the block's return, said from the place's side
+    (r"\b(?:comes|coming|come)\s+back\s+(?=(?:to|on|onto|in|into)\b)", "goes back "),
     # "let X VERB" commands X's verb: "let the red block go down before blue" (must go down), "let nothing be
     # placed on F" (nothing must be placed); "letting red go down first" (red going down first)
     (rf"\blet\s+({_SUBJECT_NP})\s+(?={_BARE_VERB}\b)", r"\1 must "),

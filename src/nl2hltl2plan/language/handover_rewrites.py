@@ -122,6 +122,8 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (rf"^({STEP_NUMBER}){_RULE_LABEL}\s*:", r"\1"),
     # a completion marker as a heading: "when the transfer is done: yellow back to G"
     (rf"^\s*({AFTER_ALL})\s*:", r"\1 ,"),
+    # "only" before a completion clause stresses it: "only after every other step is over, put ..." (after)
+    (rf"(^|,)\s*only\s+(?=(?:{AFTER_ALL}))", r"\1 "),
     # a rule's label after a comma, in a compressed heading: "Goal: ..., constraint: red before blue"
     (rf",\s*{_RULE_LABEL}\s*:", ","),
     (rf"^({STEP_NUMBER})(?:objectives?|goals?|tasks?|aims?|missions?|instructions?)\s*:", r"\1 please"),
@@ -451,10 +453,12 @@ REWRITES: tuple[tuple[str, str], ...] = (
         " ",
     ),
     (
-        rf"\bit\s+is\s+{_INTENSIFIER}(?:required|necessary|important|essential|requested|desired|expected|mandatory|"
-        r"imperative)\s+that\b",
+        rf"\bit\s+is\s+(?:hereby\s+)?{_INTENSIFIER}(?:required|necessary|important|essential|requested|desired|"
+        r"expected|mandatory|imperative|agreed|understood|stipulated|ordered|directed)\s+that\b",
         " ",
     ),
+    # legal English goes on with "and that" after "it is agreed that X": the second requirement is its own
+    (r"(?<=,)\s*and\s+that\s+(?=(?:the|each|every|no|all|both|any)\b)", " and "),
     # "the goal is to have the blocks on ...": the state asked for, as a goal
     (r"\b(please|to)\s+have\s+(?=(?:the|all|both|each|every)\b)", r"\1 get "),
     # a numbered step: the first, or one after the step before
