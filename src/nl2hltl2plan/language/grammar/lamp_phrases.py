@@ -56,14 +56,15 @@ _LOOK_PURPOSE = re.compile(
 )
 
 
-# "examine the mug by the light of the lamp, then put a pen in the mug": the next clause puts a thing in the
-# thing examined; the rules would take it for the examination going on (the pen examined, the mug placed),
-# so the clause is read as a sentence of its own ("... lamp. Then put a pen in the mug"), unless an order
-# said later in the sentence ("in this order") covers both
+# "examine the mug by the light of the lamp, then put a pen in the mug" (or "in it"): the next clause puts a
+# thing in the thing examined; the rules would take it for the examination going on (the pen examined, the
+# mug placed), so the clause is read as a sentence of its own ("... lamp. Then put a pen in the mug"), unless
+# an order said later in the sentence ("in this order") covers both
 _AGAIN_AFTER_LAMP = re.compile(
     rf"(?P<lamp>\b{_EXAMINE}\s+(?:the|a|an)\s+(?:[a-z]+\s+)?(?P<noun>[a-z]+)\s+(?:by|under|in|with)\s+"
     r"[^,.;!?]*?\b(?:lamp|light)),\s+then\s+"
-    r"(?=[^,.;!?]*\b(?:in|into|inside)\s+(?:the|a|an)\s+(?:[a-z]+\s+)?(?P=noun)\b)(?![^.;!?]*\bin\s+(?:this|that)\s+)",
+    r"(?=[^,.;!?]*\b(?:in|into|inside)\s+(?:(?:the|a|an)\s+(?:[a-z]+\s+)?(?P=noun)|it)\b)"
+    r"(?![^.;!?]*\bin\s+(?:this|that)\s+)",
     re.I,
 )
 
