@@ -138,3 +138,19 @@ def test_another_thing_after_the_thing_is_a_second_task_or_refused():
     # with no potato said before, "another" is one more than the scene's: read
     tasks, _, unread = _read("Put another apple in the fridge.", "FloorPlan1", ())
     assert not unread and tasks == [("place", "Apple", 1, "Fridge")]
+
+
+@needs_data
+def test_an_idiom_with_all_counts_nothing_and_the_other_one_of_an_of_phrase_is_that_phrase():
+    # "last of all a tomato": one tomato (it read every tomato of the scene, at exit 0)
+    tasks, before, unread = _read(
+        "Put the apple in the fridge, then the mug in the sink, and last of all a tomato in the sink.",
+        "FloorPlan1", (),
+    )
+    assert not unread and tasks[-1] == ("place", "Tomato", 1, "SinkBasin") and ("B", "C") in before
+    # "the other one" after "a bottle of soap" is the other bottle of soap, not a bar of soap
+    said = counted_references("Put one bottle of soap on the counter and the other one in the cabinet.")
+    assert said == "Put one bottle of soap on the counter and the other bottle of soap in the cabinet."
+    # a second mug said alone, that the reading does not take: refused (it was one washing task, exit 0)
+    with pytest.raises(HTTError, match="'one more' names a second mug"):
+        _read("Put a mug in the sink, then one more in the cabinet.", "FloorPlan1", ())

@@ -262,18 +262,23 @@ KNOWN_WRONG: set[str] = {
     # as a reference (its "Xs and Ys, two of each, go on P", which kept its closing comma, reads right since)
     "Put one head of lettuce on the counter, and chill the other one before putting it on the counter too. "
     "Heat a potato and put it on the counter, then put a knife in a pot and set the pot on the counter.",
-    # h178's held-out paper-style set, read wrong at 3ba320c2 (results/language/h178.md):
+    # h178's held-out paper-style set (results/language/h178.md), read wrong at the session-28 end:
+    # "someone can carry the laptop to the lamp and turn it on" (a place, not a look); "that table" after two
+    # tables; "two pencils in that same drawer afterwards" (the order); "do the lamp one first"
     "Take a pillow from the bed and switch on the lamp to look at it. Then put the two books from the "
     "bed on the desk. Meanwhile, someone can carry the laptop to the lamp and turn it on.",
-    "Here's the plan: 1) look at the credit card under the floor lamp; 2) do the same with a remote; 3) "
-    "put another remote in a box and set the box on the green couch; 4) move the empty box from the "
-    "coffee table to the couch. Please go in that order.",
     "Put a knife in a bowl and set the bowl on the small black side table. Heat a plate in the microwave "
     "and put it on that table too. Once both are done, put the green sponge on a plate and put the plate "
     "in the cabinet under the sink. Throw two potato slices into the green bin whenever you like.",
     "Could you put two pens in a dresser drawer, and two pencils in that same drawer afterwards? Before "
     "you do any of that, move two phones from the dresser to the bed, and put two alarm clocks on the "
     "bookshelf at any point.",
+    "ok so: grab the remote and turn on the floor lamp, put two watches on the coffee table, put two key "
+    "chains on the white chair, and then bring the last key chain to the couch. do the lamp one first.",
+    # h170's paper-style dev, read right by the grammar since session 28, but the retrained model's override
+    # (both readings complete, the model's at >= 0.97) reads the pen examined and placed
+    "Examine the mug by the light of the desk lamp, then put a red pen in it and move it to the desk. After "
+    "that, pick up the disc and turn the lamp on.",
 }
 
 

@@ -48,6 +48,12 @@ def _next_mention(mentions: list[Mention], words: list[str], i: int, within: int
 _PLACE_PREPS = (LOCATIVE - {"of"}) | {"to", "into", "onto"}
 
 
+def _of_all(words: list[str], i: int) -> bool:
+    """ "..., and last of all a tomato in the sink", "first of all": the idiom's "all" counts nothing (it
+    read as every tomato of the scene, at exit 0)."""
+    return words[i] == "all" and i >= 2 and words[i - 1] == "of" and words[i - 2] in ("last", "first", "best")
+
+
 def _both_before_a_list(w: str, instruction: str, start: int, m: Mention) -> bool:
     """ "both the mug and the apple": "both" names the pair of the list, not two mugs (as the grammar reads
     it, `sentences._BOTH_BEFORE_LIST`)."""
@@ -77,6 +83,8 @@ def count_unread(
         return None
     if _both_before_a_list(w, instruction, start, m) or (i > 0 and toks[i - 1][0] in ("those", "these")):
         return None  # "both the mug and the apple"; "after those two, the fork": tasks, not forks
+    if _of_all([t[0] for t in toks], i):
+        return None
     types = set(m.entry.types)
     held = None
     if instances is not None:
@@ -125,7 +133,7 @@ def take_every_instance(
     mentions = [m for m in find_mentions(instruction) if not m.entry.generic]
     out = [t.model_copy() for t in tasks]
     for i, w in enumerate(words):
-        if "quantifier_all" not in categories(w):
+        if "quantifier_all" not in categories(w) or _of_all(words, i):
             continue
         m = _next_mention(mentions, words, i)
         if m is None or re.search(r"[,.;:!?]", instruction[toks[i][1] : m.char_start]):

@@ -121,8 +121,16 @@ def _plural_forms(word: str) -> list[str]:
     return [word[:-1] + "ies"] if re.search(r"[^aeiou]y$", word) else [word + "s"]
 
 
-def _singular(m: Mention) -> str:
+def _singular(m: Mention, text: str = "") -> str:
+    """The words that name one of the mention's things; "bottle of hand soap" whole, where the mention is the
+    last noun of such a phrase ("the other soap" read a bar of soap)."""
+    head = [x for x in _things(text) if x.char_end < m.char_start] if text else []
+    if head and not m.plural and _OF_PHRASE.fullmatch(text[head[-1].char_end : m.char_start]):
+        return text[head[-1].char_start : m.char_end]
     return m.entry.phrase if m.plural else m.surface
+
+
+_OF_PHRASE = re.compile(r"\s+of\s+(?:[a-z]+\s+)?", re.I)
 
 
 def _cased(new: str, old: str) -> str:
@@ -165,7 +173,7 @@ def _rest(text: str) -> str:
 def _other_one(text: str) -> str:
     def sub(m: re.Match[str]) -> str:
         x = _antecedent(text, m.start(), one_of=True)
-        return _cased(f"the other {_singular(x)}", m[0]) if x is not None else m[0]
+        return _cased(f"the other {_singular(x, text)}", m[0]) if x is not None else m[0]
 
     return _OTHER_ONE.sub(sub, text)
 
@@ -183,7 +191,7 @@ def _another(text: str) -> str:
         ordinal = m[0].split()[1].lower() if m[0].lower().startswith(("the ", "a ")) else "last"
         said = "another" if ordinal == "last" else f"a {ordinal}"
         if elided or noun is None:
-            return _cased(f"{said} {_singular(x)}", m[0])
+            return _cased(f"{said} {_singular(x, text)}", m[0])
         return _cased(said, m[0]) if set(noun.entry.types) & set(x.entry.types) else m[0]
 
     return _ANOTHER.sub(sub, text)

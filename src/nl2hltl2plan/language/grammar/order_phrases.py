@@ -109,11 +109,11 @@ _FREED_THEN = re.compile(
 _AFTER_WHICH = re.compile(r"(?<=\w)\s*,\s*(?:and\s+)?after\s+which\s*,?\s+(?=[a-z])", re.IGNORECASE)
 
 
-# "A, then B, and at the (very) end C", "..., and to finish, C": "finally" where a clause opens inside a
-# sentence ("at the end of the counter" is a place, "to finish the job," a purpose; a leading "At the end,"
-# is the tables' own)
+# "A, then B, and at the (very) end C", "..., and last of all C" ("all" counts nothing), "..., and to
+# finish, C": "finally" where a clause opens inside a sentence ("at the end of the counter" is a place, "to
+# finish the job," a purpose; a leading "At the end," is the tables' own)
 _AT_THE_END = re.compile(
-    r"(?:(?<=,\s)|(?<=\band\s))(?:at\s+the\s+(?:very\s+)?end\b(?!\s+of\b)"
+    r"(?:(?<=,\s)|(?<=\band\s))(?:at\s+the\s+(?:very\s+)?end\b(?!\s+of\b)|last\s+of\s+all\b"
     r"|to\s+(?:finish(?:\s+up)?|end|wrap\s+(?:it\s+|things\s+)?up|conclude)(?=\s*,))",
     re.IGNORECASE,
 )
