@@ -306,6 +306,10 @@ class DraftBuilder:
         st.drafts.append(len(drafts) - 1)
         return len(drafts) - 1
 
+    def _unordered(self, units: list[Unit]) -> bool:
+        """No order word opens the sentence and every task is of a group: a closing free phrase frees none."""
+        return units[0].markers == [] and all(self.out.drafts[t].group >= 0 for u in units for t in u.tasks)
+
     def _apply_markers(self, st: _SentenceState) -> None:
         """Leading markers apply to all units of the sentence; trailing "then"/"finally" to the last."""
         units = self.out.units
@@ -326,16 +330,11 @@ class DraftBuilder:
                 sentence_units[-1].markers.append((kind, IN_SENTENCE if kind == G.FINALLY else ref))
             elif kind == G.FREE and len(sentence_units) == 1 and len(sentence_units[0].tasks) > 1:
                 pass  # "move the phone and the bat to the bed in any order": order inside the group is free
-            elif kind == G.FREE and _time_frees_last_clause(st.sentence, sentence_units):
+            elif kind == G.FREE and _frees_last(st.sentence, sentence_units, self._unordered(sentence_units)):
                 # "After that, A, and B whenever you like": the sequence word is A's, "whenever" frees B alone
                 last = sentence_units[-1]
                 last.markers = [m for m in last.markers if m not in st.sentence.markers] + [(kind, ref)]
-            elif (
-                kind == G.FREE
-                and len(sentence_units) > 1
-                and sentence_units[0].markers == []
-                and all(self.out.drafts[t].group >= 0 for u in sentence_units for t in u.tasks)
-            ):
+            elif kind == G.FREE and len(sentence_units) > 1 and self._unordered(sentence_units):
                 pass
             else:
                 # "put the apple in the fridge last": after every other task, those written after it too
@@ -356,16 +355,16 @@ _ORDER_IS_FREE = re.compile(
 _SEQUENCE = frozenset({G.THEN, G.AFTER_ALL, G.AFTER_REF})
 
 
-def _time_frees_last_clause(sentence: Sentence, units: list[Unit]) -> bool:
-    """Does a closing "whenever" / "at any time" free the last clause alone, the opening order word reaching
-    the clauses before it only? Yes after a sequence word ("After that, A, and B whenever"), or another order
-    word where the last clause is one task joined by "and" ("..., A, and B at any time")."""
-    if len(units) < 2 or not sentence.markers or _CLOSING_TIME.search(sentence.text.rstrip(" .!?;")) is None:
+def _frees_last(sentence: Sentence, units: list[Unit], unordered: bool) -> bool:
+    """Does a closing "whenever" free the last clause alone (an opening order word reaching the ones before it
+    only)? Yes after a sequence word ("After that, A, and B whenever"), or, in a sentence with an order (not
+    `unordered`), where the last clause is one task joined by "and" ("A, and B at any time. Then C")."""
+    if len(units) < 2 or _CLOSING_TIME.search(sentence.text.rstrip(" .!?;")) is None:
         return False
     last = units[-1]
     if any(k in _SEQUENCE for k, _ in sentence.markers):
         return True
-    return last.joiner == "and" and len(last.tasks) == 1 and not last.seq_after_prev
+    return not unordered and last.joiner == "and" and len(last.tasks) == 1 and not last.seq_after_prev
 
 
 # a closing phrase that frees a time, not an order ("whenever you like", "at any point"; not "in whatever
