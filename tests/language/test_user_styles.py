@@ -275,10 +275,6 @@ KNOWN_WRONG: set[str] = {
     "bookshelf at any point.",
     "ok so: grab the remote and turn on the floor lamp, put two watches on the coffee table, put two key "
     "chains on the white chair, and then bring the last key chain to the couch. do the lamp one first.",
-    # h170's paper-style dev, read right by the grammar since session 28, but the retrained model's override
-    # (both readings complete, the model's at >= 0.97) reads the pen examined and placed
-    "Examine the mug by the light of the desk lamp, then put a red pen in it and move it to the desk. After "
-    "that, pick up the disc and turn the lamp on.",
 }
 
 
