@@ -4,8 +4,6 @@ tested on sentences of our own and on a near miss that must be read as before.""
 
 from __future__ import annotations
 
-import pytest
-
 from nl2hltl2plan.language.accounting import account
 from nl2hltl2plan.language.learned.inference import parse_instruction
 
@@ -162,10 +160,8 @@ def test_both_before_orders_the_whole_list():
     assert sorted(p.before) == [("A", "C"), ("B", "C")]
 
 
-# Known wrong reading of session 28: with the retrained structure model, the model's rescue of the grammar's
-# incomplete reading takes "both" for the mug and the apple and orders the apple before the mug and the egg (a
-# wrong order, exit 0); strict, so a fix makes it fail. docs/learned.md and the closing note say so
-@pytest.mark.xfail(strict=True, reason="session-28 retrained structure model rescues it with a wrong order")
+# session 28's retrained structure model rescued this with the apple before the mug and the egg (exit 0); a
+# model reading must keep "both before Y" with two tasks before Y (`learned.structured._both_kept`, h188)
 def test_both_with_no_list_before_it_is_not_dropped():
     """Near miss: one clause in its sentence: "both" has nothing of its own sentence to sum up."""
     _, unread = read(

@@ -9,12 +9,14 @@ that does not read completely makes the whole reading incomplete.
 `decide` (the rule chosen on the validation sets, docs/learned.md):
 - the grammar's reading is complete and the two agree -> the grammar's;
 - the grammar's reading is incomplete (it lists unread words) and the structure model's is complete,
-  passes the word accounting (check 1), keeps what "first" and "last" say of a clause
-  (`order_words.first_and_last_kept`, words the grammar may have left unread) and is confident -> the
+  passes the word accounting (check 1), keeps what the order words say (`order_words_kept`: "first" and
+  "last" of a clause, no order where the only order words free one, two tasks on the side of "both before
+  Y"; words the grammar may have left unread) and is confident -> the
   structure model's, unless the grammar found that the words fit several readings (a reference to what was
   said that names no certain task: `grammar.references.said_before`);
 - both are complete and they disagree -> the grammar's where the model's reverses or drops an order the
-  grammar read, does not keep what "first" or "last" says of a clause, or adds a heating, cooling or
+  grammar read, does not keep what the order words say (`order_words_kept`), leaves out a thing the
+  grammar's reading of the same task has ("put a pen in it": the mug), or adds a heating, cooling or
   washing that no word names (`against_the_words`); else the structure model's when it is at least
   `override` sure (`override_pointing` when its reading has a span that points back at an earlier one);
   when it is less sure than `doubt`, neither is trusted: no tasks, the disagreement goes to `unparsed`; in
@@ -75,8 +77,8 @@ def decide(
     tasks, before, confidence = model
     if not grammar[2]:
         # the incomplete grammar reading's own order is often what the model is right about ("in any order"
-        # read as a sequence): only the words of "first" and "last" bind the model here
-        if not first_and_last_kept(instruction, tasks, before):
+        # read as a sequence): only the order words themselves bind the model here
+        if not order_words_kept(instruction, tasks, before):
             return "grammar"
         return "model" if confidence >= rule.rescue else "grammar"
     if same_reading(tasks, before, grammar[0], grammar[1]):
@@ -95,10 +97,11 @@ def against_the_words(
     grammar: tuple[list[BaseTaskSpec], list[tuple[str, str]]],
 ) -> bool:
     """Whether the model's reading contradicts what the grammar read from the words: it does not keep the
-    order words (`order_not_held`), or it heats, cools or washes a thing where no word says so and the
+    order words (`order_not_held`), it leaves out a thing the grammar's reading of the same task has
+    (`_leaves_out_a_thing`), or it heats, cools or washes a thing where no word says so and the
     grammar does not ("The mug is in the sink, put it in the microwave" as a washing; check 1 takes the
     sink for the washing's appliance)."""
-    if order_not_held(instruction, model, grammar):
+    if order_not_held(instruction, model, grammar) or _leaves_out_a_thing(model[0], grammar[0]):
         return True
     said = {c for w, _, _ in tokens(instruction) for c in categories(w)}
     # an appliance counts where it is a place the thing goes, not where something already is
@@ -131,7 +134,73 @@ def order_not_held(
     named = {t.summary() for t in model[0]} if not _frees_an_order(instruction) else set()
     if any(a in named and b in named and (a, b) not in m_order for a, b in g_order):
         return True
-    return not first_and_last_kept(instruction, *model)
+    return not order_words_kept(instruction, *model)
+
+
+def order_words_kept(instruction: str, tasks: list[BaseTaskSpec], before: list[tuple[str, str]]) -> bool:
+    """Whether a model reading keeps what the order words say, whether or not the grammar read them: what
+    "first" and "last" say of a clause (`order_words.first_and_last_kept`), no order where the only order
+    words free one (`_order_no_word_states`), and two tasks on the side of a phrase that sums up two
+    ("both before Y", "after both": `_both_kept`)."""
+    return (
+        first_and_last_kept(instruction, tasks, before)
+        and not _order_no_word_states(instruction, before)
+        and _both_kept(instruction, tasks, before)
+    )
+
+
+def _order_no_word_states(instruction: str, before: list[tuple[str, str]]) -> bool:
+    """Whether the reading orders tasks where the text's only order words are a phrase that frees the
+    order and at most an opening "first" ("First, A, B and C, in whichever order please"; "First, A, B, C.
+    Do them in any order"): the annotation guide lists only the relations the words state, and "first"
+    states one only with a "then" after it (the model read these as "A, B, then C")."""
+    if not before or not _frees_an_order(instruction):
+        return False
+    toks = tokens(instruction)
+    in_mention = {i for m in find_mentions(instruction) for i in range(m.start, m.end)}
+    said = [i for i, (w, _, _) in enumerate(toks) if i not in in_mention and "order" in categories(w)]
+    return all(i == 0 and toks[0][0] in _OPENING_FIRST for i in said)
+
+
+_OPENING_FIRST = frozenset({"first", "firstly"})
+
+# "both" summing up the tasks on one side of an order phrase: before the word ("both before you put the
+# egg in the pot", "after both", "once they are both done") or after it ("before both"); "after both mugs
+# are in" counts things, not tasks
+_BOTH_ALONE = (
+    r"both(?=\s*(?:[,.;!?]|$|are\b|have\b|of\s+(?:them|those|these)\b|(?:tasks|things|jobs|steps)\b))"
+)
+_BOTH_BEFORE = re.compile(
+    rf"\bboth\s+(?:before|prior\s+to|ahead\s+of)\b|\b(?:after|once|when)\s+(?:(?:they|those|these)\s+"
+    rf"(?:are|were|have\s+been)\s+)?{_BOTH_ALONE}",
+    re.I,
+)
+_BOTH_AFTER = re.compile(rf"\b(?:before|prior\s+to|ahead\s+of)\s+{_BOTH_ALONE}", re.I)
+
+
+def _both_kept(instruction: str, tasks: list[BaseTaskSpec], before: list[tuple[str, str]]) -> bool:
+    """Whether a reading has two tasks on the side of each order phrase that sums up two with "both": a
+    task with two tasks before it for "both before Y" / "after both" / "once both are done", one with two
+    after it for "before both" (a reading that orders one task against another keeps no "both")."""
+    closure = transitive_closure(list(before), [t.id for t in tasks])
+    ids = [t.id for t in tasks]
+    if _BOTH_BEFORE.search(instruction) and not any(sum((a, b) in closure for a in ids) >= 2 for b in ids):
+        return False
+    return not (
+        _BOTH_AFTER.search(instruction) and not any(sum((a, b) in closure for b in ids) >= 2 for a in ids)
+    )
+
+
+def _leaves_out_a_thing(model: list[BaseTaskSpec], grammar: list[BaseTaskSpec]) -> bool:
+    """Whether a task of the model's reading is a task of the grammar's with a thing left out: the same
+    object, and fewer of the things the grammar's names ("put a red pen in it and move it to the desk" read
+    without the mug it is put in: a pronoun is no content word, so check 1 does not miss it)."""
+    return any(m.object == g.object and _things(m) < _things(g) for m in model for g in grammar)
+
+
+def _things(task: BaseTaskSpec) -> set[str]:
+    """The types a task names in any slot."""
+    return {*task.object, *(task.container or []), *(task.receptacle or []), *(task.light or [])}
 
 
 def _frees_an_order(instruction: str) -> bool:
