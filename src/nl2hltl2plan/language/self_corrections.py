@@ -84,12 +84,21 @@ class Roles:
 def corrected(text: str, roles: Roles) -> str:
     """`text` with each self-correction applied (see the module docstring); raises HTTError naming a
     correction that cannot be applied with certainty, in the words the user typed (`in_own_words`)."""
+    text = _ACTUALLY_ADDS.sub("", text)
     read = [text]  # the text as rewritten so far, where a refusal quotes it
     swaps: list[tuple[str, str]] = []
     try:
         return _corrected(text, roles, read, swaps)
     except HTTError as refused:
         raise HTTError(in_own_words(str(refused), read[-1], text, swaps)) from None
+
+
+# "Actually, put the egg in the fridge too" opening a sentence: the word adds (its clause says "too"), and
+# takes nothing back; a sentence without such a word ("Actually, put the egg in the fridge") may replace the
+# one before, and is left (check 1 names "actually" where no reading takes it)
+_ACTUALLY_ADDS = re.compile(
+    r"(?:(?<=^)|(?<=[.!?]\s))actually\s*,\s*(?=[^.!?]*\b(?:too|also|as\s+well)\b)", re.I
+)
 
 
 # a quoted fragment of a message, as repr() writes it
