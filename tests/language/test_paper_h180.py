@@ -148,3 +148,9 @@ THREE_LOOKS = [_t(LOOK, "Vase", "FloorLamp"), _t(LOOK, "Box", "FloorLamp"), _t(L
 )  # fmt: skip
 def test_references_lists_and_landmarks_of_paper_style_text(world, text, tasks, before):
     assert _read(text, world) == (tasks, before)
+
+
+def test_that_place_is_the_last_place_of_its_name_however_described():
+    # "on the small round side table ... on that table": the side table, the words before it notwithstanding
+    head = "Set the bowl on the small round side table. Heat an apple and put it on "
+    assert everyday(head + "that table too.") == head + "the side table too."

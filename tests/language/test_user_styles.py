@@ -263,13 +263,10 @@ KNOWN_WRONG: set[str] = {
     "Put one head of lettuce on the counter, and chill the other one before putting it on the counter too. "
     "Heat a potato and put it on the counter, then put a knife in a pot and set the pot on the counter.",
     # h178's held-out paper-style set (results/language/h178.md), read wrong at the session-28 end:
-    # "someone can carry the laptop to the lamp and turn it on" (a place, not a look); "that table" after two
-    # tables; "two pencils in that same drawer afterwards" (the order); "do the lamp one first"
+    # "someone can carry the laptop to the lamp and turn it on" (a place, not a look); "two pencils in that
+    # same drawer afterwards" (the order); "do the lamp one first"
     "Take a pillow from the bed and switch on the lamp to look at it. Then put the two books from the "
     "bed on the desk. Meanwhile, someone can carry the laptop to the lamp and turn it on.",
-    "Put a knife in a bowl and set the bowl on the small black side table. Heat a plate in the microwave "
-    "and put it on that table too. Once both are done, put the green sponge on a plate and put the plate "
-    "in the cabinet under the sink. Throw two potato slices into the green bin whenever you like.",
     "Could you put two pens in a dresser drawer, and two pencils in that same drawer afterwards? Before "
     "you do any of that, move two phones from the dresser to the bed, and put two alarm clocks on the "
     "bookshelf at any point.",

@@ -416,12 +416,20 @@ _THAT_PLACE = re.compile(
 )
 
 
+# a destination with the words that describe it ("on the small black side table": `_DESTINATION_PHRASE` keeps
+# two words after the article, and "that table" went to another table)
+_DESCRIBED_PLACE = re.compile(
+    r"(?<!next )(?<!close )\b(?P<prep>in|into|inside|on|onto|to)\s+(?P<np>(?:the|a|an)(?:\s+[a-z]+){1,4})",
+    re.I,
+)
+
+
 def _that_place_named(m: re.Match[str]) -> str:
     """ "on that table": the last place named before it whose name ends in "table", written out."""
     if _NEGATED.search(m.string[: m.start()]):
         return m[0]
     noun = m["noun"].lower()
-    for d in reversed(list(_DESTINATION_PHRASE.finditer(m.string[: m.start()]))):
+    for d in reversed(list(_DESCRIBED_PLACE.finditer(m.string[: m.start()]))):
         named = [x for x in find_mentions(d["np"]) if not x.entry.generic]
         if named and named[-1].surface.lower().split()[-1] in (noun, noun + "s"):
             return f"{m['prep']} the {named[-1].surface}"
