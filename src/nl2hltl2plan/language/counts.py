@@ -78,12 +78,13 @@ def count_unread(
 ) -> Unread | None:
     """A count before a noun: the task on that noun takes exactly so many (every one for "all")."""
     w, start, _ = toks[i]
-    m = _next_mention(mentions, [t[0] for t in toks], i)
+    words = [t[0] for t in toks]
+    m = _next_mention(mentions, words, i)
     if m is None or re.search(r"[,.;:!?]", instruction[start : m.char_start]):
         return None
     if _both_before_a_list(w, instruction, start, m) or (i > 0 and toks[i - 1][0] in ("those", "these")):
         return None  # "both the mug and the apple"; "after those two, the fork": tasks, not forks
-    if _of_all([t[0] for t in toks], i):
+    if _of_all(words, i):
         return None
     types = set(m.entry.types)
     held = None

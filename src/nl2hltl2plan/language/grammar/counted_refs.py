@@ -27,6 +27,7 @@ Xs", a plural): after "the apple", "the other one" stays as written and is refus
 from __future__ import annotations
 
 import re
+from functools import lru_cache
 
 from nl2hltl2plan.language.grounding import LAMPS, Mention, camel_words, find_mentions, lexicon, tokens
 
@@ -64,6 +65,7 @@ _COUNT_AFTER = re.compile(
 )
 
 
+@lru_cache(maxsize=1024)  # `everyday`, `counts` and `referents` each ask it of every reading's text
 def counted_references(text: str) -> str:
     """`text` with the counted and ordinal references above written out (a pure function of the text)."""
     text = _ONE_OF_N.sub(lambda m: m[0][: m.start("n") - m.start()], text)
