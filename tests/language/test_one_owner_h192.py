@@ -10,6 +10,8 @@ from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.grammar.counted_refs import another_said, counted_references
 from nl2hltl2plan.language.grammar.everyday import everyday
 from nl2hltl2plan.language.grounding import find_mentions, plural_name
+from nl2hltl2plan.language.learned.rescue import canonical
+from nl2hltl2plan.language.learned.slot_model import SlotPrediction
 from nl2hltl2plan.language.translate import translate
 from nl2hltl2plan.worlds.demo import demo_world
 
@@ -42,6 +44,9 @@ def test_both_writers_of_a_plural_write_the_same():
     assert everyday("Put a knife in the drawer and two more in the sink.") == (
         "Put a knife in the drawer and two more knives in the sink."
     )
+    # the learned reader's sentence for a pick-two task (it wrote "knifes", "tomatos", "paper towels")
+    pred = SlotPrediction([("place_two", 1.0)], {"object": [("Knife", 1.0)], "receptacle": [("Drawer", 1.0)]})
+    assert canonical(pred) == "put two knives in the drawer"
 
 
 def test_one_more_and_another_are_written_once():
