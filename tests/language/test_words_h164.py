@@ -12,7 +12,7 @@ from nl2hltl2plan.language.grammar.everyday import everyday_names
 from nl2hltl2plan.language.grounding import find_mentions, lookup
 from nl2hltl2plan.language.parse_usage import ParseUsage
 from nl2hltl2plan.language.picked_states import picked_states
-from nl2hltl2plan.language.referents import another_one, picked_places
+from nl2hltl2plan.language.referents import another_thing, picked_places
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
 
 KITCHEN = {"Potato": 2, "Drawer": 4, "Fridge": 1, "Apple": 3, "CounterTop": 4, "Shelf": 8, "Statue": 3}
@@ -85,19 +85,22 @@ def test_a_place_not_picked_or_the_only_one_is_not_said():
 
 def test_the_other_one_read_as_the_same_thing_is_refused():
     chilled = [task("A", "Apple", "CounterTop", kind="cool_place")]
-    with pytest.raises(HTTError, match="'the other one' names a second thing"):
-        another_one("put the apple in the fridge and put the other one on the counter", chilled)
-    with pytest.raises(HTTError, match="'another' names a second thing"):
-        another_one("put an apple in the fridge and then another on the counter", chilled)
+    with pytest.raises(HTTError, match="'the other one' names a second apple"):
+        another_thing("put the apple in the fridge and put the other one on the counter", chilled)
+    with pytest.raises(HTTError, match="'another' names a second apple"):
+        another_thing("put an apple in the fridge and then another on the counter", chilled)
     # near misses: two apples read; the other one a place; "it"
     two = [task("A", "Apple", "Fridge"), task("B", "Apple", "CounterTop")]
-    another_one("put the apple in the fridge and put the other one on the counter", two)
+    another_thing("put the apple in the fridge and put the other one on the counter", two)
     pair = [task("A", "Apple", "Fridge", count=2)]
-    another_one("put the apple in the fridge, then put another one in the fridge", pair)
+    another_thing("put the apple in the fridge, then put another one in the fridge", pair)
     apart = [task("A", "Apple", "Drawer"), task("B", "Potato", "Drawer")]
-    another_one("put the apple in the left drawer and the potato in the other one", apart)
-    another_one("put the apple in the fridge and then put it on the counter", chilled)
-    another_one("heat the apple and put it on the counter, one after the other", chilled)
+    another_thing("put the apple in the left drawer and the potato in the other one", apart)
+    another_thing("put the apple in the fridge and then put it on the counter", chilled)
+    another_thing("heat the apple and put it on the counter, one after the other", chilled)
+    # with no thing moved said before it, the word names a second thing where each type is taken once
+    with pytest.raises(HTTError, match="'the other one' names a second thing, and the reading acts on one"):
+        another_thing("put the other one on the counter", chilled)
 
 
 @pytest.mark.parametrize(

@@ -100,6 +100,13 @@ def test_missing(demo):
     ]
     with pytest.raises(WorldError, match="no Statue"):
         task(kind="place", object=["Statue"], receptacle=["DiningTable"]).leaf_specs(demo)
+    # a fixture is no thing to pick up: the world says so first, whatever else the task lacks
+    scrub = task(kind="clean_place", object=["SinkBasin"], receptacle=["Sofa"])
+    assert scrub.missing(demo) == [
+        "A: a sink basin cannot be picked up, so no task can wash it; things there to wash: apple, bowl, "
+        "butter knife, cup"
+    ]
+    assert task(kind="set_state", object=["Fridge"], state="open").unmovable(demo) is None
 
 
 def test_goal_description():

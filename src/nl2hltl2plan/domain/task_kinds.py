@@ -6,6 +6,7 @@ The recipes that carry a task out in a world stay with the worlds (`worlds.tasks
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 from typing import Literal
 
@@ -43,7 +44,16 @@ STATE_FLAG: dict[str, str | None] = {
 }
 APPLIANCE = {"clean_place": "SinkBasin", "heat_place": "Microwave", "cool_place": "Fridge"}
 TREATMENT = {"clean_place": "cleanable", "heat_place": "heatable", "cool_place": "coolable"}
+# what a kind does to the thing it picks up, as a refusal says it ("no task can wash it")
+TREATED_VERB = {
+    "clean_place": "wash", "heat_place": "heat", "cool_place": "chill", "examine_in_light": "hold"
+}  # fmt: skip
 MAX_COUNT = 50  # no AI2-THOR scene has more instances of one type
+
+
+def camel_words(type_name: str) -> str:
+    """ "GarbageCan" -> "garbage can", "TVStand" -> "tv stand", "CD" -> "cd"."""
+    return " ".join(re.findall(r"[A-Z]+(?![a-z])|[A-Z][a-z]*|[a-z]+|\d+", type_name)).lower()
 
 
 def slots_of(kind: str) -> tuple[str, ...]:

@@ -15,6 +15,7 @@ from dataclasses import dataclass
 from functools import lru_cache
 from importlib import resources
 
+from nl2hltl2plan.domain.task_kinds import camel_words
 from nl2hltl2plan.errors import WorldError
 from nl2hltl2plan.language.missing_types import other_types_note
 from nl2hltl2plan.worlds.world import Affordances
@@ -229,11 +230,6 @@ class Mention:
     plural: bool
 
 
-def camel_words(type_name: str) -> str:
-    """ "GarbageCan" -> "garbage can", "TVStand" -> "tv stand", "CD" -> "cd"."""
-    return " ".join(re.findall(r"[A-Z]+(?![a-z])|[A-Z][a-z]*|[a-z]+|\d+", type_name)).lower()
-
-
 def tokens(text: str) -> list[tuple[str, int, int]]:
     """Lower-case word tokens with their character spans."""
     return list(_tokens(text))
@@ -268,19 +264,28 @@ def _plurals(word: str) -> set[str]:
 
 
 def plural_name(phrase: str) -> str | None:
-    """The plural the lexicon reads for a name of one thing ("spray bottle" -> "spray bottles", "bar of soap"
-    -> "bars of soap"), None where it reads none."""
-    word = phrase.split(" of ")[0].split()[-1]
-    # the regular plural first ("bottles", not "bottlees"), then the others the lexicon reads
-    usual = re.sub(r"(?<=[^aeiou])y$", "ie", re.sub(r"f(?:e)?$", "ve", word))
-    usual += "es" if re.search(r"(?:s|x|z|ch|sh|o)$", usual) else "s"
-    for form in [usual, *sorted(f for f in _plurals(word) - {usual} if "'" not in f)]:
-        words = phrase.split()
+    """The plural the lexicon reads as a name's things, as English writes it ("knife" -> "knives", "bar of
+    soap" -> "bars of soap"), else its type's ("keys" -> "key chains"); None: none ("blinds", "stuff")."""
+    entry = lookup(phrase)
+    if entry is None or entry.generic:
+        return None
+    for name in (phrase, camel_words(entry.types[0])):
+        words = name.split()
         at = words.index("of") - 1 if "of" in words[1:] else len(words) - 1
-        said = " ".join(words[:at] + [form] + words[at + 1 :])
-        if (entry := lexicon().get(tuple(said.split()))) and entry[1] and entry[0].phrase == phrase:
-            return said
+        for form in (_english_plural(words[at]), words[at] + "s"):  # "shelfs": "shelves" is a shelf's name
+            said = (*words[:at], form, *words[at + 1 :])
+            if (hit := lexicon().get(said)) and hit[1] and hit[0].types == entry.types:
+                return " ".join(said)
     return None
+
+
+def _english_plural(word: str) -> str:
+    """ "knives", "potatoes", "boxes", "berries", "mugs"; a word that looks plural already stays ("keys")."""
+    if re.search(r"(?:[lr]f|af|ife)$", word):
+        return re.sub(r"fe?$", "ves", word)
+    if re.search(r"(?:s|x|z|ch|sh|[^aeiou]o)$", word):
+        return word if re.search(r"[^s]s$", word) else word + "es"
+    return word[:-1] + "ies" if re.search(r"[^aeiou]y$", word) else word + "s"
 
 
 def phrase_lines(name: str) -> list[tuple[list[str], list[str]]]:

@@ -28,7 +28,6 @@ as is a word that is one type's name read as another type (`exact_names`: "towel
 from __future__ import annotations
 
 import re
-from collections import Counter
 from collections.abc import Collection, Mapping, Sequence
 from functools import lru_cache
 
@@ -36,7 +35,7 @@ from nl2hltl2plan.domain.plurals import Plurals
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.content_words import DETERMINERS, LOCATIVE, categories, word_categories
 from nl2hltl2plan.language.counts import count_value
-from nl2hltl2plan.language.grammar.counted_refs import counted_references
+from nl2hltl2plan.language.grammar.counted_refs import ONE_MORE, counted_references
 from nl2hltl2plan.language.grounding import (
     Mention,
     camel_words,
@@ -85,8 +84,7 @@ def check_referents(
     decided = exact_names(instruction, tasks, instances, scene, forbidden, scopes)
     moved_twice(instruction, tasks, before)
     place_then_moved(tasks, before)
-    another_one(instruction, tasks)
-    another_named(instruction, tasks)
+    another_thing(instruction, tasks)
     categories_named(instruction, tasks, instances, scene)
     said = decided + stand_ins(instruction, tasks, instances, scene, scopes)
     said += plural_of_several(instruction, tasks, instances, scene, convention, plurals)
@@ -328,68 +326,56 @@ def _reference(text: str, types: set[str], named_before: set[str]) -> str | None
     return next((w for w in words if w in _BACK), None)
 
 
-# "the other one", "another one", or the word alone as a pronoun ("and then another on the counter")
-_ANOTHER_ONE = re.compile(
-    r"\b(?:(?<!after )the\s+other|(?<!after )(?<!one )another|(?:a|the)\s+second|the\s+remaining)"
+# a second thing of a type said before: "the other one", "another (one)", "a second one", "the remaining one"
+# or the word alone ("and then another on the counter"), its noun left out (`elided`); "another potato",
+# "one more (mug)", "a second mug"; not "one another", "one after the other", "one more time"
+_SECOND_THING = re.compile(
+    r"\b(?:(?P<elided>(?<!after )the\s+other|(?<!after )(?<!one )another|(?:a|the)\s+second|the\s+remaining)"
     r"(?:\s+one\b|(?=\s*(?:$|[,.;!?]|(?:in|into|on|onto|inside|to|next|by|near|too|as\s+well)\b)))"
+    rf"|(?:another|{ONE_MORE}|a\s+second)\b(?!\s+(?:one|time|step|thing|task|minute)s?\b)(?!\s+(?:of|after)\b)\s*)"
 )
+_PLACE_GAP = re.compile(r"\b(?:in|into|on|onto|inside|to|under|at|by|near|from|with|beside)\b")
 
 
-def another_one(instruction: str, tasks: Sequence[BaseTaskSpec]) -> None:
-    """ "Put the apple in the fridge and put the other one on the counter": "the other one" ("another",
-    "the other" said alone) names a second thing of a type said before, so some type is the object of two
-    tasks (or of one task's two). A reading that acts on one thing of each type (one apple chilled, then
-    put on the counter, as "it" would say) has dropped one of them: refused. Not a place ("... and the cup
-    in the other one"), nor "one after the other", "one after another", "one another"."""
-    lowered = instruction.lower()
-    taken: Counter[str] = Counter()
-    for task in tasks:
-        taken.update({t: task.count for t in task.object})
-    for m in _ANOTHER_ONE.finditer(lowered):
-        if _after_preposition([w for w, _, _ in tokens(lowered[: m.start()])]):
-            continue
-        if not taken or max(taken.values()) < 2:
-            raise HTTError(
-                f"{m.group(0).strip()!r} names a second thing, and the reading acts on one thing of each "
-                f"type: name it (\"the apple ... the other apple\")"
-            )
-
-
-def another_named(instruction: str, tasks: Sequence[BaseTaskSpec]) -> None:
-    """ "Heat a potato and put it on the counter, then another potato" / "put a mug in the sink, then one more
-    in the cabinet": "another (X)", "one more (X)" or "a second X" after an X said before names a second thing
-    of that type (said alone, of the last thing a task moves); a reading whose tasks take one thing of it has
-    dropped the second (read as the first, or not at all): refused, as `another_one` refuses "another one".
-    "Put another pillow on the bed" with no pillow before it is one more than the scene's, and stays."""
+def another_thing(instruction: str, tasks: Sequence[BaseTaskSpec]) -> None:
+    """ "Put the apple in the fridge and put the other one on the counter", "heat a potato and put it on the
+    counter, then another potato", "put a mug in the sink, then one more in the cabinet": the words name a
+    second thing of a type said before (the noun said, else the last thing a task moves before them), so a
+    reading whose tasks take one thing of it (one apple chilled, then put on the counter, as "it" would say)
+    has dropped one of them: refused. With no thing moved before, the words name a second thing where the
+    reading acts on one of each type. Not a place ("... and the cup in the other one"); "put another pillow
+    on the bed" with no pillow before it is one more than the scene's, and stays."""
     lowered = instruction.lower()
     moved = {t for task in tasks for t in (*task.object, *(task.container or ()))}
-    for m in _ANOTHER_THING.finditer(lowered):
+    for m in _SECOND_THING.finditer(lowered):
         if _after_preposition([w for w, _, _ in tokens(lowered[: m.start()])]):
             continue
         before = [x for x in find_mentions(lowered[: m.start()]) if set(x.entry.types) & moved]
         rest = lowered[m.end() :]
         # "one more mug", not "one more in the cabinet" (the cabinet is where it goes)
-        near = [x for x in find_mentions(rest) if x.char_start <= 12]
+        near = [] if m["elided"] else [x for x in find_mentions(rest) if x.char_start <= 12]
         after = [x for x in near if not _PLACE_GAP.search(rest[: x.char_start])][:1]
+        said = lowered[m.start() : m.end() + (after[0].char_end if after else 0)].strip()
         thing = after[0] if after else (before[-1] if before else None)  # said alone: the last thing moved
+        if thing is None and m["elided"] and max((_taken(tasks, {o}) for o in moved), default=0) < 2:
+            raise HTTError(
+                f"{said!r} names a second thing, and the reading acts on one thing of each type: name it "
+                f"(\"the apple ... the other apple\")"
+            )
         if thing is None or not any(set(x.entry.types) & set(thing.entry.types) for x in before):
             continue
-        types = set(thing.entry.types)
-        taken = sum(t.count for t in tasks if types & set(t.object))
-        taken += sum(1 for t in tasks if types & set(t.container or ()))
-        if taken < 2:
-            said = lowered[m.start() : m.end() + (after[0].char_end if after else 0)].strip()
+        if _taken(tasks, set(thing.entry.types)) < 2:
             raise HTTError(
                 f"{said!r} names a second {thing.surface}, and the reading takes one: say what to do with it "
                 f"(\"put another {thing.surface} in ...\")"
             )
 
 
-_PLACE_GAP = re.compile(r"\b(?:in|into|on|onto|inside|to|under|at|by|near|from|with|beside)\b")
-# "another (X)", "one more (X)", "a second X"; not "another one" (`another_one`), "one more time"
-_ANOTHER_THING = re.compile(
-    r"\b(?:another|one\s+more|a\s+second)\b(?!\s+(?:one|time|step|thing|task|minute)s?\b)(?!\s+(?:of|after)\b)\s*"
-)
+def _taken(tasks: Sequence[BaseTaskSpec], types: set[str]) -> int:
+    """How many things of these types the tasks take, as objects (their count) and as containers."""
+    return sum(t.count for t in tasks if types & set(t.object)) + sum(
+        1 for t in tasks if types & set(t.container or ())
+    )
 
 
 @lru_cache(maxsize=1)

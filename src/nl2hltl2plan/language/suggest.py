@@ -17,10 +17,6 @@ from nl2hltl2plan.language.task_specs import BaseTaskSpec
 from nl2hltl2plan.worlds.world import World
 
 MAX_SUGGESTIONS = 3
-# what each kind does to the thing it picks up, as a refusal says it ("no task can wash it"), and the flag
-# of what can be so treated
-_TREATED = {"clean_place": ("wash", "cleanable"), "heat_place": ("heat", "heatable"),
-            "cool_place": ("chill", "coolable"), "examine_in_light": ("hold", "")}  # fmt: skip
 
 
 def suggestions(instruction: str, world: World) -> list[str]:
@@ -64,20 +60,11 @@ def not_understood(lang: LanguageResult, world: World | None, cause: str = "") -
 
 def refuse_unmovable(tasks: Sequence[BaseTaskSpec], instruction: str, world: World) -> None:
     """A task that picks up a thing the world has only as fixtures ("scrub the toilet": a Toilet cannot be
-    picked up, so it cannot be washed in the sink) is no task: HTTError naming the word, and what the
-    world can do of that kind (the things there that can be picked up and so treated). Judged on every
-    backend's reading; `set_state` tasks (switch, open, break) act in place and are not asked."""
+    picked up, so it cannot be washed in the sink) is no task: HTTError naming the word, with the world's
+    own reason (`BaseTask.unmovable`, which `BaseTask.missing` gives first). Judged on every backend's
+    reading."""
     for t in tasks:
-        if t.kind == "set_state" or not t.object:
-            continue
-        there = [o for ty in t.object for o in world.instances(ty) if o.present]
-        if not there or any(o.affordances.pickupable for o in there):
-            continue  # a type the world lacks is refused elsewhere, naming the missing type
-        said = [m.surface for m in find_mentions(t.text or instruction) if set(m.entry.types) & set(t.object)]
-        word = said[0] if said else camel_words(t.object[0])
-        verb, flag = _TREATED.get(t.kind, ("move", ""))
-        able = sorted({o.type for o in world.objects.values() if o.present and o.affordances.pickupable
-                       and (not flag or getattr(o.affordances, flag))})  # fmt: skip
-        can = f"; things there to {verb}: {', '.join(camel_words(a) for a in able[:4])}" if able else ""
-        name = camel_words(there[0].type)
-        raise HTTError(f"{word!r}: a {name} cannot be picked up, so no task can {verb} it{can}")
+        if why := t.unmovable(world):
+            said = (m.surface for m in find_mentions(t.text or instruction) if {*m.entry.types} & {*t.object})
+            word = next(said, camel_words(t.object[0]))
+            raise HTTError(f"{word!r}: {why}")

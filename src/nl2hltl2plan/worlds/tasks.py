@@ -48,10 +48,12 @@ from nl2hltl2plan.domain.task_kinds import (
     MAX_COUNT,
     STATE_FLAG,
     STATE_WORDS,
+    TREATED_VERB,
     TREATMENT,
     Goal,
     Kind,
     State,
+    camel_words,
 )
 from nl2hltl2plan.errors import WorldError
 from nl2hltl2plan.logic.action_sequences import sequences_formula
@@ -110,6 +112,8 @@ class BaseTask(BaseModel):
         roles: list[list[str]] = [self.object]
         if self.kind == "set_state":
             return self._state_missing(world)
+        if why := self.unmovable(world):  # before the appliance's lack: "no Faucet" is not why
+            return [f"{self.id}: {why}"]
         if self.kind == "place_in_container":
             roles.append(self.container or [])
         if self.kind != "examine_in_light":
@@ -141,6 +145,19 @@ class BaseTask(BaseModel):
         if not self._bindings(world):
             return [f"{self.id}: {self._no_binding_reason(world)}"]
         return []
+
+    def unmovable(self, world: World) -> str | None:
+        """Why no task of this kind can pick up its object where the world has it only as fixtures ("a toilet
+        cannot be picked up, so no task can wash it; things there to wash: cloth, soap bar"); None if one can
+        be picked up, or the world lacks the type (`missing` names that). `set_state` acts in place."""
+        there = [o for ty in self.object for o in world.instances(ty) if o.present]
+        if self.kind == "set_state" or not there or any(o.affordances.pickupable for o in there):
+            return None
+        verb, flag = TREATED_VERB.get(self.kind, "move"), TREATMENT.get(self.kind)
+        able = sorted({o.type for o in world.objects.values() if o.present and o.affordances.pickupable
+                       and (not flag or getattr(o.affordances, flag))})  # fmt: skip
+        can = f"; things there to {verb}: {', '.join(camel_words(a) for a in able[:4])}" if able else ""
+        return f"a {camel_words(there[0].type)} cannot be picked up, so no task can {verb} it{can}"
 
     def _state_missing(self, world: World) -> list[str]:
         knife, toaster = self.state == "sliced" or self.sliced, self.state == "toasted"

@@ -16,7 +16,7 @@ of "put one X on A, then the remaining two in B" asks for one X on A and two X i
 The elided noun is the last thing named before the words (not a place, not a lamp); "the other one", the
 elided counts and the elided ordinals need that thing said as one of several ("one X", "an X", "one of the
 Xs", a plural): after "the apple", "the other one" stays as written and is refused
-(`referents.another_one`), and "the last one" stays unread.
+(`referents.another_thing`), and "the last one" stays unread.
 
 >>> counted_references("Put one salt shaker on the table, then put the remaining two in a cabinet.")
 'Put one salt shaker on the table, then put two other salt shakers in a cabinet.'
@@ -29,7 +29,7 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
-from nl2hltl2plan.language.grounding import LAMPS, Mention, camel_words, find_mentions, lexicon, tokens
+from nl2hltl2plan.language.grounding import LAMPS, Mention, find_mentions, plural_name, tokens
 
 _N = r"(?:two|three|four|five|both|2|3|4|5)"
 _PLACE_WORDS = frozenset("in into on onto inside to under by near at beside from next behind".split())
@@ -46,10 +46,19 @@ _OTHER_ONE = re.compile(
     r"(?<!after\s)\bthe\s+other(?:\s+one\b|(?=\s*(?:$|[,.;!?]|(?:in|into|on|onto|inside|to|too|as\s+well|goes|go)\b)))",
     re.I,
 )
+# "one more" said of a thing, not "one more time" / "one more step": the one family of words for a second
+# thing of a type with "another" (`another_said` below, `referents.another_thing`)
+ONE_MORE = r"one\s+more\b(?!\s+(?:time|step|thing|task|minute|second)s?\b)"
 # "the third (X|one)", "the last (X|one)", "a second one", "one more (X)"
 _ANOTHER = re.compile(
     r"\b(?:the\s+(?:second|third|fourth|fifth|last)|(?:a|one)\s+(?:second|third|fourth|fifth)(?=\s+one\b)"
-    r"|one\s+more)\b(?:\s+one\b)?",
+    rf"|{ONE_MORE})(?:\s+one\b)?",
+    re.I,
+)
+# "another" / "one more" said of a thing; `alone`: its noun (one or two words) closes the clause
+_ANOTHER_SAID = re.compile(
+    rf"\b(?:another\b|{ONE_MORE})"
+    r"(?P<alone>(?=\s+(?!one\b)[a-z]+(?:\s+[a-z]+)?\s*(?:too|as\s+well|also)?\s*(?:[,.;!?]|$)))?",
     re.I,
 )
 # "one more" with no verb of its own ("..., then one more", "and one more on the sofa"): not another X here
@@ -72,6 +81,25 @@ def counted_references(text: str) -> str:
     for rule in (_counts_after, _lamp_used, _counted_others, _rest, _other_one, _another):
         text = rule(text)
     return text
+
+
+def another_said(text: str) -> str:
+    """ "one more" said of a thing is "another", which `drafts` reads as a second thing of the type just
+    placed ("a remote on the sofa and one more on the armchair"); after "then" it is left to `everyday`'s
+    count with its noun left out ("then one more (in the cabinet)"). With no verb and no place of its own
+    after "then" / "and" ("put an apple in the fridge, then another apple"), either is "one more X": the
+    task before again, for a second X (the second thing was dropped, unread and unnamed); "then another
+    one" stays, and is refused as a second thing not named."""
+
+    def sub(m: re.Match[str]) -> str:
+        joined = re.search(r"\b(then|and)\s$", text[: m.start()], re.I)
+        if joined and m["alone"] is not None:
+            return "one more"
+        if m[0][:1].lower() == "o" and not (joined and joined[1].lower() == "then"):
+            return _cased("another", m[0])
+        return m[0]
+
+    return _ANOTHER_SAID.sub(sub, text)
 
 
 def _things(text: str) -> list[Mention]:
@@ -97,30 +125,9 @@ def _antecedent(text: str, at: int, one_of: bool) -> Mention | None:
     return m if not one_of or set(said) & _ONE_OF or m.plural else None
 
 
-def plural_of(m: Mention) -> str:
-    """The plural of a mention's words that the lexicon reads ("salt shaker" -> "salt shakers", "bar of soap"
-    -> "bars of soap"), else of its type's name ("keys" -> "key chains")."""
-    if m.plural:
-        return m.surface
-    table = lexicon()
-    for phrase in (m.entry.phrase, m.surface.lower(), camel_words(m.entry.types[0])):
-        words = phrase.split()
-        heads = [words.index("of") - 1] if "of" in words[1:] else []  # "bar of soap": the bars
-        for k in [*heads, len(words) - 1]:
-            for form in _plural_forms(words[k]):
-                said = (*words[:k], form, *words[k + 1 :])
-                if said in table and table[said][1]:
-                    return " ".join(said)
-    return m.surface
-
-
-def _plural_forms(word: str) -> list[str]:
-    """English plural of a noun (none for one that looks plural already: "keys")."""
-    if re.search(r"(?:ss|sh|ch|x|z)$", word):
-        return [word + "es"]
-    if word.endswith("s"):
-        return []
-    return [word[:-1] + "ies"] if re.search(r"[^aeiou]y$", word) else [word + "s"]
+def _plural(m: Mention) -> str:
+    """The words that name several of the mention's things ("salt shakers", "keys" -> "key chains")."""
+    return m.surface if m.plural else plural_name(m.entry.phrase) or m.surface
 
 
 def _singular(m: Mention, text: str = "") -> str:
@@ -152,7 +159,7 @@ def _counted_others(text: str) -> str:
         if noun is not None and noun.plural:
             return _cased(f"{n} other", m[0])
         x = _antecedent(text, m.start(), one_of=True)
-        return _cased(f"{n} other {plural_of(x)}", m[0]) if x else m[0]
+        return _cased(f"{n} other {_plural(x)}", m[0]) if x else m[0]
 
     return _COUNTED_OTHER.sub(sub, text)
 
@@ -165,7 +172,7 @@ def _rest(text: str) -> str:
         if x is None or (noun is None and tail not in ("them", "ones", "others")):
             continue
         end = noun.char_end if noun is not None else m.end()  # "the rest of the keys": key chains
-        new = f"all the other {plural_of(x)}"
+        new = f"all the other {_plural(x)}"
         if tail == "remaining" and noun is not None and not noun.plural:  # "the remaining cd": one
             new = f"the other {noun.surface}"
         text = text[: m.start()] + _cased(new, m[0]) + text[end:]

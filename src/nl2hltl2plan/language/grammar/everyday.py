@@ -6,7 +6,8 @@ words that carry no object, place, count, negation or order in the place where i
 - counted and ordinal references to things named before ("the remaining two", "the other one", "remotes,
   two of them") written out (`counted_refs.py`);
 - "one more" said of a thing ("a remote on the sofa and one more on the armchair", "one more mug") is
-  "another" (`drafts` reads "another" as a second thing of the type just placed);
+  "another" (`drafts` reads "another" as a second thing of the type just placed), and a verbless "then
+  another apple" is "then one more apple", the task before again (`counted_refs.another_said`);
 - places and things said first: "put the egg (in) there" names the last destination before it, and "the
   mug that's on the counter, put it in the sink" takes the mug first;
 - terse notation: "green apple -> blue plate" is "green apple onto blue plate" (the placement verb is
@@ -32,7 +33,7 @@ import re
 from functools import lru_cache
 
 from nl2hltl2plan.language.content_words import DETERMINERS, categories, free_order_phrase
-from nl2hltl2plan.language.grammar.counted_refs import counted_references
+from nl2hltl2plan.language.grammar.counted_refs import another_said, counted_references
 from nl2hltl2plan.language.grammar.repeats import repeated_for_another
 from nl2hltl2plan.language.grammar.restated import count_fits, restated
 from nl2hltl2plan.language.grammar.treatments_said import treatments_said
@@ -48,9 +49,6 @@ from nl2hltl2plan.language.grounding import (
 from nl2hltl2plan.language.spelling import respelt
 from nl2hltl2plan.language.statements import RELATIVE_PLACE
 
-# "one more" as the thing, not "one more time" / "one more step" (no second thing); after "then" it is
-# `_COUNT_LEFT`'s ("then one more (in the cabinet)": one more of the thing moved before)
-_ONE_MORE = re.compile(r"(?<!\bthen\s)\bone\s+more\b(?!\s+(?:time|step|thing|task|minute|second)s?\b)", re.I)
 # hesitations, the one list of them (the handover reader's spoken step uses it too)
 HESITATION = r"(?:u+h+m*|u+m+|e+r+m*|hmm+|mm+)"
 _HESITATION = re.compile(rf"(?:^|(?<=[\s,]))(?:{HESITATION}|basically)(?=[\s,.;!?]|$)", re.I)
@@ -197,7 +195,7 @@ def everyday(text: str) -> str:
     """The text with the everyday styles above rewritten onto the forms the grammar reads (a pure function
     of the text)."""
     text = _BARE.sub(lambda m: _BARE_CONTRACTION[m[1].lower()], _UR_DONE.sub("you're ", text))
-    text = _ONE_MORE.sub(lambda m: _cased("another", m[0]), text)
+    text = another_said(text)  # "one more" said of a thing; "then another apple" (counted_refs.py)
     if _FREE_REMARK.search(text):  # "1. X. 2. Y. Any order is fine.": the numbers only list the steps
         text = _NUMBERED.sub(lambda m: m["lead"], text)
     text = everyday_names(respelt(text))  # misspelt names of things (language/spelling.py), everyday names
@@ -212,7 +210,7 @@ def everyday(text: str) -> str:
     text = _THEN_UNDER_LAMP.sub(_each_under_lamp, text)
     text = _THAT_PLACE.sub(_that_place_named, _THERE.sub(_there_named, _ALONG_WITH.sub(_along_with, text)))
     text = _IT_PLACE.sub(_fixture_named, text)
-    text = _ANOTHER_AGAIN.sub("one more", _COUNT_LEFT.sub(_count_named, text))
+    text = _COUNT_LEFT.sub(_count_named, text)
     text = _THING_FIRST.sub(lambda m: f"{m['lead']}take {m['np']}, ", text)
     text = _HESITATION.sub(" ", _ORDER_THO.sub(_order_tho, text))
     text = _DONE_AT_END.sub(_done_at_end, text)
@@ -278,12 +276,20 @@ _THERE = re.compile(
     re.I,
 )
 _NEGATED = re.compile(r"(?:\bnot|n't|\bnever|\bno)\s+(?:\w+\s+)?$", re.I)
-_DESTINATION_PHRASE = re.compile(
-    r"(?<!next )(?<!close )\b(?P<prep>in|into|inside|on|onto|to)\s+"
-    # "on the back of the toilet": the part of a thing ("back", "top") names no place; its thing does
-    r"(?:the\s+(?:back|top|side|edge|front|lid)\s+of\s+)?(?P<np>(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)",
-    re.I,
-)
+
+
+def _destination_phrase(words: int) -> re.Pattern[str]:
+    """A destination: its preposition and up to `words` words after the article ("on the small black side
+    table" needs four, where "that table" is the last table named)."""
+    return re.compile(
+        r"(?<!next )(?<!close )\b(?P<prep>in|into|inside|on|onto|to)\s+"
+        # "on the back of the toilet": the part of a thing ("back", "top") names no place; its thing does
+        rf"(?:the\s+(?:back|top|side|edge|front|lid)\s+of\s+)?(?P<np>(?:the|a|an)(?:\s+[a-z]+){{1,{words}}})",
+        re.I,
+    )
+
+
+_DESTINATION_PHRASE = _destination_phrase(2)
 
 
 def _there_named(m: re.Match[str]) -> str:
@@ -416,12 +422,7 @@ _THAT_PLACE = re.compile(
 )
 
 
-# a destination with the words that describe it ("on the small black side table": `_DESTINATION_PHRASE` keeps
-# two words after the article, and "that table" went to another table)
-_DESCRIBED_PLACE = re.compile(
-    r"(?<!next )(?<!close )\b(?P<prep>in|into|inside|on|onto|to)\s+(?P<np>(?:the|a|an)(?:\s+[a-z]+){1,4})",
-    re.I,
-)
+_DESCRIBED_PLACE = _destination_phrase(4)  # "that table" after "on the small black side table"
 
 
 def _that_place_named(m: re.Match[str]) -> str:
@@ -442,13 +443,6 @@ def _that_place_named(m: re.Match[str]) -> str:
 _COUNT_LEFT = re.compile(
     r"\b(?P<count>(?:one|two|three)\s+more|a\s+(?:third|fourth)(?:\s+one)?|(?<=\band\s)(?:one|two|three))"
     r"(?=\s+(?:in|into|inside|on|onto|to|under|next\s+to|there)\b|\s*(?:[,.;!?]|$|too\b|as\s+well\b))",
-    re.I,
-)
-# "put an apple in the fridge, then another apple": with no verb and no place of its own, the task before for
-# one more of the thing, as "then one more apple" is read (the second thing was dropped, unread and unnamed);
-# "then another in the sink" or "then another one" stay, and are refused as a second thing not named
-_ANOTHER_AGAIN = re.compile(
-    r"(?:(?<=\bthen\s)|(?<=\band\s))another(?=\s+(?!one\b)[a-z]+(?:\s+[a-z]+)?\s*(?:too|as\s+well|also)?\s*(?:[,.;!?]|$))",
     re.I,
 )
 # the words that put a noun phrase in a place ("in the cabinet", "by the sink"): the thing named is no thing

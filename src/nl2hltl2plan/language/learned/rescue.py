@@ -18,7 +18,7 @@ from functools import cache
 
 from nl2hltl2plan.language.grammar.drafts import states_where
 from nl2hltl2plan.language.grammar.sentences import normalize
-from nl2hltl2plan.language.grounding import camel_words, find_mentions, lexicon
+from nl2hltl2plan.language.grounding import camel_words, find_mentions, lexicon, plural_name
 from nl2hltl2plan.language.learned.slot_model import SlotModel, SlotPrediction
 from nl2hltl2plan.language.prepositions import a_source
 
@@ -47,8 +47,8 @@ def _np(type_name: str, sliced: bool = False) -> str:
 
 
 def _plural(type_name: str) -> str:
-    w = camel_words(type_name)
-    return w + ("es" if re.search(r"(s|x|ch|sh)$", w) else "s")
+    """ "two knives": the plural the lexicon reads as the type (`plural_name`), else its name as it is."""
+    return plural_name(camel_words(type_name)) or camel_words(type_name)
 
 
 def canonical(pred: SlotPrediction) -> str | None:
