@@ -164,6 +164,10 @@ class _ItemReader:
                     self.item = Item(obj=None)
                 self.cur_prep = None
             return i + 1
+        if self.cls == "trash" and w == "out" and (i + 1 >= len(words) or words[i + 1] in {",", "and"}):
+            self._flush()  # "throw it out": the particle of "throw out", as "away" is (not "out of the fridge")
+            self.cur_prep = None
+            return i + 1
         if self.light_on and w in {"on", "off"} and _particle_position(words, i):
             self._flush()  # "turn on the lamp", "turn the lamp on": a particle, not "on the table"
             self.cur_prep = None
