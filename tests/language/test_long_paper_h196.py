@@ -1,11 +1,13 @@
 """h196 (issue 28 item 5, the paper's 5-9 base-task instructions, dev half of `bench_multiagent_long.py
---half dev`): a thing's next step said as a particle or a subordinate clause, and a side that says which
-drawer.
+--half dev`): a thing's next step said as a particle or a subordinate clause, a list's "at any time", and a
+side that says which drawer.
 
 - "cook the potato and throw it out": one task, heat_place Potato -> GarbageCan ("out" is the particle of
   "throw out" as "away" is; it was a heat task with no place plus a second task on the same potato).
 - "wash an egg before throwing it away" / "before you put it in the fridge": the egg's next step (the place
   was lost: silently for "away", refused for a named place).
+- "put salt and pepper in the cabinet at any time": both are free (neither was: both came before
+  "finally"). "in any order" after a list still frees the order inside it only.
 - "inside the top drawer on the right side of the counter": the side says which drawer (was refused as two
   places); a side after a whole thing ("on the counter on the left side of the desk") stays refused.
 """
@@ -59,3 +61,20 @@ def test_before_treating_it_and_a_side_of_a_whole_thing_stay_unread():
     assert partial
     with pytest.raises(Nl2Hltl2PlanError, match="two places it could go"):
         _read("Put the apple on the counter on the left side of the desk.")
+
+
+@needs_data
+@pytest.mark.parametrize(
+    ("text", "before"),
+    [
+        # a list's closing "at any time" frees every thing of the list (both were ordered before D)
+        ("Put salt and pepper in the kitchen cabinet at any time. Put a bowl on the counter. Finally, put a "
+         "tomato in the sink.", {("C", "D")}),
+        # near miss: "in any order" frees the order inside the list, as before
+        ("Put salt and pepper in the kitchen cabinet in any order. Put a bowl on the counter. Finally, put a "
+         "tomato in the sink.", {("A", "D"), ("B", "D"), ("C", "D")}),
+    ],
+)  # fmt: skip
+def test_a_lists_closing_any_time_frees_each_thing(text, before):
+    res = translate(text, load_world("FloorPlan17"), "offline", build=False, actions="none")
+    assert not res.partial and set(res.before) == before

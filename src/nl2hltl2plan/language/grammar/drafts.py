@@ -323,12 +323,13 @@ class DraftBuilder:
         for kind, ref in st.sentence.markers:
             for u in sentence_units:
                 u.markers.append((kind, ref))
+        timed = _CLOSING_TIME.search(st.sentence.text.rstrip(" .!?;")) is not None  # "A and B at any time"
         for kind, ref in st.sentence.trailing:
             if kind in {G.THEN, G.FINALLY} and len(sentence_units) > 1:
                 # "A and B afterwards": B after the clause before it, as "A, then B"
                 sentence_units[-1].seq_after_prev |= kind == G.THEN
                 sentence_units[-1].markers.append((kind, IN_SENTENCE if kind == G.FINALLY else ref))
-            elif kind == G.FREE and len(sentence_units) == 1 and len(sentence_units[0].tasks) > 1:
+            elif kind == G.FREE and len(sentence_units) == 1 and len(sentence_units[0].tasks) > 1 and not timed:
                 pass  # "move the phone and the bat to the bed in any order": order inside the group is free
             elif kind == G.FREE and _frees_last(st.sentence, sentence_units, self._unordered(sentence_units)):
                 # "After that, A, and B whenever you like": the sequence word is A's, "whenever" frees B alone
@@ -343,8 +344,7 @@ class DraftBuilder:
                     u.markers.append((kind, OF_ALL if of_all else ref))
 
 
-# a closing phrase that leaves the order of the sentence's tasks to the robot (not "at any time", which
-# frees one task's time)
+# a closing phrase that leaves the order of the sentence's tasks to the robot (not "at any time": a time)
 _ORDER_IS_FREE = re.compile(
     r"\b(?:(?:any|whatever|no\s+(?:particular|specific|set))\s+(?:order|sequence)|order\s+is\s+(?:up\s+to\s+you|"
     r"your\s+call|yours\s+to\s+choose)|in\s+parallel|simultaneously|concurrently)\W*$",
