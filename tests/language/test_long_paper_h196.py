@@ -1,6 +1,6 @@
 """h196 (issue 28 item 5, the paper's 5-9 base-task instructions, dev half of `bench_multiagent_long.py
---half dev`): a thing's next step said as a particle or a subordinate clause, a list's "at any time", and a
-side that says which drawer.
+--half dev`): a thing's next step said as a particle or a subordinate clause, a list's "at any time", a
+treatment said as a purpose, and a side that says which drawer.
 
 - "cook the potato and throw it out": one task, heat_place Potato -> GarbageCan ("out" is the particle of
   "throw out" as "away" is; it was a heat task with no place plus a second task on the same potato).
@@ -8,6 +8,8 @@ side that says which drawer.
   was lost: silently for "away", refused for a named place).
 - "put salt and pepper in the cabinet at any time": both are free (neither was: both came before
   "finally"). "in any order" after a list still frees the order inside it only.
+- "slice an apple to be cooked in the microwave ...", "put a mug in the sink to be washed": a treatment said
+  as a purpose, right after the thing or after its own appliance (the treatment was dropped).
 - "inside the top drawer on the right side of the counter": the side says which drawer (was refused as two
   places); a side after a whole thing ("on the counter on the left side of the desk") stays refused.
 """
@@ -37,7 +39,8 @@ def _read(text: str, world: str = "FloorPlan12") -> tuple[list[tuple[object, ...
         ("Cook the potato and throw it out.", ("heat_place", "Potato", "GarbageCan")),
         ("Wash an egg before throwing it away.", ("clean_place", "Egg", "GarbageCan")),
         ("Wash an egg before you put it in the fridge.", ("clean_place", "Egg", "Fridge")),
-        ("Put a salt shaker inside the top drawer on the right side of the counter.", ("place", "SaltShaker", "Drawer")),
+        ("Put a salt shaker inside the top drawer on the right side of the counter.",
+         ("place", "SaltShaker", "Drawer")),
     ],
 )  # fmt: skip
 def test_the_things_next_step_and_the_drawer_a_side_names(text, task):
@@ -78,3 +81,19 @@ def test_before_treating_it_and_a_side_of_a_whole_thing_stay_unread():
 def test_a_lists_closing_any_time_frees_each_thing(text, before):
     res = translate(text, load_world("FloorPlan17"), "offline", build=False, actions="none")
     assert not res.partial and set(res.before) == before
+
+
+@needs_data
+@pytest.mark.parametrize(
+    ("text", "task", "partial"),
+    [
+        # a purpose right after the thing: the heating was dropped (silently where another task heats)
+        ("Slice an apple to be cooked in the microwave to be placed into the fridge.",
+         ("heat_place", "Apple", "Fridge"), False),
+        ("Put a mug in the sink to be washed.", ("clean_place", "Mug", "SinkBasin"), False),
+        # near miss: after another place, which comes first is not said (refused as before)
+        ("Put a mug in the cabinet to be heated.", ("place", "Mug", "Cabinet"), True),
+    ],
+)  # fmt: skip
+def test_a_treatment_said_as_a_purpose(text, task, partial):
+    assert _read(text, "FloorPlan26") == ([task], partial)

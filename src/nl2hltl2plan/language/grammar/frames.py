@@ -165,7 +165,7 @@ class _ItemReader:
                 self.cur_prep = None
             return i + 1
         if self.cls == "trash" and w == "out" and (i + 1 >= len(words) or words[i + 1] in {",", "and"}):
-            self._flush()  # "throw it out": the particle of "throw out", as "away" is (not "out of the fridge")
+            self._flush()  # "throw it out": the particle, as "away" is (not "out of the fridge")
             self.cur_prep = None
             return i + 1
         if self.light_on and w in {"on", "off"} and _particle_position(words, i):
@@ -343,7 +343,9 @@ def _standing_place_first(item: Item, text: str) -> None:
     # "in the top drawer on the right side of the counter": a side says which drawer (a side after a whole
     # thing, "on the counter on the left side of the desk", stays refused)
     whole = not (types_a and types_a <= _PARTS)
-    if not ({p1, p2} <= _PLACING and types_a and types_b) or types_a & types_b or not _one_phrase(text, a, b, whole):
+    if not ({p1, p2} <= _PLACING and types_a and types_b) or types_a & types_b:
+        return
+    if not _one_phrase(text, a, b, whole):
         return
     if types_a <= _STANDING and not types_b & _PARTS:
         item.pps[places[0]] = ("from", a)
@@ -354,8 +356,8 @@ def _standing_place_first(item: Item, text: str) -> None:
 def _one_phrase(text: str, a: NP, b: NP, whole: bool = True) -> bool:
     """Do the places `a` and `b` follow each other in one phrase: no joiner or verb between them ("on the
     bed and on the nightstand" lists two places, "in the microwave to be placed on the counter" goes on),
-    and, where `whole`, `b` is a whole thing, not a side or part of one ("on the night stand on the left side of
-    the bed", "in the front of the coffee machine"; "the counter top" is a whole thing)?"""
+    and, where `whole`, `b` is a whole thing, not a side or part of one ("on the night stand on the left
+    side of the bed", "in the front of the coffee machine"; "the counter top" is a whole thing)?"""
     low = text.lower()
     i = low.find(a.text.lower())
     j = low.find(b.text.lower(), i + len(a.text)) if i >= 0 else -1

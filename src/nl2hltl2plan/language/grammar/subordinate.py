@@ -85,7 +85,9 @@ def treated_before(text: str) -> str:
 
 
 # "before (you) <put/throw>ing it / them": the thing of the clause before, put down next
-_BEFORE_PUTTING_IT = re.compile(r"(?<=\w)(?:\s*,)?\s+before\s+(?:you\s+)?(?P<verb>[a-z]+)(?=\s+(?:it|them)\b)", re.I)
+_BEFORE_PUTTING_IT = re.compile(
+    r"(?<=\w)(?:\s*,)?\s+before\s+(?:you\s+)?(?P<verb>[a-z]+)(?=\s+(?:it|them)\b)", re.I
+)
 
 
 def placed_after(text: str) -> str:
