@@ -10,6 +10,8 @@ treatment said as a purpose, and a side that says which drawer.
   "finally"). "in any order" after a list still frees the order inside it only.
 - "slice an apple to be cooked in the microwave ...", "put a mug in the sink to be washed": a treatment said
   as a purpose, right after the thing or after its own appliance (the treatment was dropped).
+- "move the soap bottle to the lid of the toilet": the toilet, as "the back of the toilet" is ('lid' was
+  unread after "to"; the lexicon names the part).
 - "inside the top drawer on the right side of the counter": the side says which drawer (was refused as two
   places); a side after a whole thing ("on the counter on the left side of the desk") stays refused.
 """
@@ -45,6 +47,14 @@ def _read(text: str, world: str = "FloorPlan12") -> tuple[list[tuple[object, ...
 )  # fmt: skip
 def test_the_things_next_step_and_the_drawer_a_side_names(text, task):
     assert _read(text) == ([task], False)
+
+
+@needs_data
+def test_the_lid_of_the_toilet_is_the_toilet():
+    assert _read("Move the soap bottle to the lid of the toilet.", "FloorPlan425") == (
+        [("place", "SoapBottle", "Toilet")],
+        False,
+    )
 
 
 @needs_data
