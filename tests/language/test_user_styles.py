@@ -258,10 +258,6 @@ KNOWN_WRONG: set[str] = {
     "another remote in it.",
     "Put a butter knife in a white mug and a spatula in a blue bowl, and set both of them on the black side "
     "table. Put a tomato slice in a pan and carry the pan to the dining table.",
-    # h185's held-out half (refused on main): "chill the other one before putting it on P" reads "before ..."
-    # as a reference (its "Xs and Ys, two of each, go on P", which kept its closing comma, reads right since)
-    "Put one head of lettuce on the counter, and chill the other one before putting it on the counter too. "
-    "Heat a potato and put it on the counter, then put a knife in a pot and set the pot on the counter.",
     # h178's held-out paper-style set (results/language/h178.md), read wrong at the session-28 end:
     # "someone can carry the laptop to the lamp and turn it on" (a place, not a look); "two pencils in that
     # same drawer afterwards" (the order); "do the lamp one first"

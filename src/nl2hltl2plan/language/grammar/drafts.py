@@ -323,13 +323,15 @@ class DraftBuilder:
         for kind, ref in st.sentence.markers:
             for u in sentence_units:
                 u.markers.append((kind, ref))
+        one = len(sentence_units) == 1 and not _CLOSING_TIME.search(st.sentence.text.rstrip(" .!?;"))
         for kind, ref in st.sentence.trailing:
             if kind in {G.THEN, G.FINALLY} and len(sentence_units) > 1:
                 # "A and B afterwards": B after the clause before it, as "A, then B"
                 sentence_units[-1].seq_after_prev |= kind == G.THEN
                 sentence_units[-1].markers.append((kind, IN_SENTENCE if kind == G.FINALLY else ref))
-            elif kind == G.FREE and len(sentence_units) == 1 and len(sentence_units[0].tasks) > 1:
+            elif kind == G.FREE and one and len(sentence_units[0].tasks) > 1:
                 pass  # "move the phone and the bat to the bed in any order": order inside the group is free
+                # ("put salt and pepper in the cabinet at any time" frees each task: not `one`)
             elif kind == G.FREE and _frees_last(st.sentence, sentence_units, self._unordered(sentence_units)):
                 # "After that, A, and B whenever you like": the sequence word is A's, "whenever" frees B alone
                 last = sentence_units[-1]
@@ -343,8 +345,7 @@ class DraftBuilder:
                     u.markers.append((kind, OF_ALL if of_all else ref))
 
 
-# a closing phrase that leaves the order of the sentence's tasks to the robot (not "at any time", which
-# frees one task's time)
+# a closing phrase that leaves the order of the sentence's tasks to the robot (not "at any time": a time)
 _ORDER_IS_FREE = re.compile(
     r"\b(?:(?:any|whatever|no\s+(?:particular|specific|set))\s+(?:order|sequence)|order\s+is\s+(?:up\s+to\s+you|"
     r"your\s+call|yours\s+to\s+choose)|in\s+parallel|simultaneously|concurrently)\W*$",

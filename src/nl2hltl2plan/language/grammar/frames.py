@@ -164,6 +164,10 @@ class _ItemReader:
                     self.item = Item(obj=None)
                 self.cur_prep = None
             return i + 1
+        if self.cls == "trash" and w == "out" and (i + 1 >= len(words) or words[i + 1] in {",", "and"}):
+            self._flush()  # "throw it out": the particle, as "away" is (not "out of the fridge")
+            self.cur_prep = None
+            return i + 1
         if self.light_on and w in {"on", "off"} and _particle_position(words, i):
             self._flush()  # "turn on the lamp", "turn the lamp on": a particle, not "on the table"
             self.cur_prep = None
@@ -336,7 +340,12 @@ def _standing_place_first(item: Item, text: str) -> None:
         return
     (p1, a), (p2, b) = item.pps[places[0]], item.pps[places[1]]
     types_a, types_b = set(a.entry.types) if a.entry else set(), set(b.entry.types) if b.entry else set()
-    if not ({p1, p2} <= _PLACING and types_a and types_b) or types_a & types_b or not _one_phrase(text, a, b):
+    # "in the top drawer on the right side of the counter": a side says which drawer (a side after a whole
+    # thing, "on the counter on the left side of the desk", stays refused)
+    whole = not (types_a and types_a <= _PARTS)
+    if not ({p1, p2} <= _PLACING and types_a and types_b) or types_a & types_b:
+        return
+    if not _one_phrase(text, a, b, whole):
         return
     if types_a <= _STANDING and not types_b & _PARTS:
         item.pps[places[0]] = ("from", a)
@@ -344,11 +353,11 @@ def _standing_place_first(item: Item, text: str) -> None:
         item.pps[places[1]] = ("of", b)
 
 
-def _one_phrase(text: str, a: NP, b: NP) -> bool:
+def _one_phrase(text: str, a: NP, b: NP, whole: bool = True) -> bool:
     """Do the places `a` and `b` follow each other in one phrase: no joiner or verb between them ("on the
     bed and on the nightstand" lists two places, "in the microwave to be placed on the counter" goes on),
-    and `b` is a whole thing, not a side or part of one ("on the night stand on the left side of the bed",
-    "in the front of the coffee machine"; "the counter top" is a whole thing)?"""
+    and, where `whole`, `b` is a whole thing, not a side or part of one ("on the night stand on the left
+    side of the bed", "in the front of the coffee machine"; "the counter top" is a whole thing)?"""
     low = text.lower()
     i = low.find(a.text.lower())
     j = low.find(b.text.lower(), i + len(a.text)) if i >= 0 else -1
@@ -361,7 +370,7 @@ def _one_phrase(text: str, a: NP, b: NP) -> bool:
     )
     b_words = [w for w, _, _ in tokens(b.text)]
     side_of = any(w in _SIDE_WORDS and b_words[k + 1 : k + 2] == ["of"] for k, w in enumerate(b_words))
-    return not joined and not side_of
+    return not joined and not (side_of and whole)
 
 
 _SIDE_WORDS = frozenset(

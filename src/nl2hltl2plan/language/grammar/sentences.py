@@ -28,7 +28,7 @@ from nl2hltl2plan.language.grammar.order_phrases import (
 )
 from nl2hltl2plan.language.grammar.phrases import match_prep, parse_np, tokens
 from nl2hltl2plan.language.grammar.sentence_joins import holder_named, joined_treatments
-from nl2hltl2plan.language.grammar.subordinate import treated_before, treatment_of_it
+from nl2hltl2plan.language.grammar.subordinate import placed_after, treated_before, treatment_of_it
 from nl2hltl2plan.language.grounding import find_mentions, sentence_start
 from nl2hltl2plan.language.statements import RELATIVE_PLACE
 
@@ -472,7 +472,7 @@ def normalize(text: str) -> str:
     text = _LAST_ADVERB.sub(r"\1lastly ", text)
     text = re.sub(r";\s+(?=(?:and|also|plus)\s)", ", ", text)  # "Next, D; and E" / "D; also E": E goes with D
     text = _ONE_AFTER_THE_OTHER.sub(", in that order", text)
-    text = treated_before(text)  # before `_DONE_GERUND`: "when done heating it" is no reference
+    text = placed_after(treated_before(text))  # before `_DONE_GERUND`: "when done heating it" is no reference
     text = _DONE_GERUND.sub(r"\1 ", text)
     text = after_the_step(text)
     text = _THEN_INSIDE.sub(", then ", text)

@@ -82,3 +82,20 @@ def treated_before(text: str) -> str:
         return f" after {gerund}" if gerund else m[0]
 
     return _DONE_FIRST.sub(sub, text)
+
+
+# "before (you) <put/throw>ing it / them": the thing of the clause before, put down next
+_BEFORE_PUTTING_IT = re.compile(
+    r"(?<=\w)(?:\s*,)?\s+before\s+(?:you\s+)?(?P<verb>[a-z]+)(?=\s+(?:it|them)\b)", re.I
+)
+
+
+def placed_after(text: str) -> str:
+    """ "X before throwing it away" / "X before you put it in B" -> "X, then throw it away" / "X, then put it
+    in B" (a placing or throwing verb only: "before heating it" stays an order between tasks)."""
+
+    def sub(m: re.Match[str]) -> str:
+        cls, base = G.VERBS.get(m["verb"].lower(), ("", ""))
+        return f", then {base}" if cls in {"place", "trash"} else m[0]
+
+    return _BEFORE_PUTTING_IT.sub(sub, text)

@@ -11,6 +11,10 @@ slice), so a sentence about anything else, or a negated one, is left as it is:
   plate" (the grammar's verbs only);
 - an end state of a pronoun after a clause: "wash the plate, it should end up in the cabinet" is "..., put
   it in the cabinet" ("it should end up somewhere" names no place, and is left);
+- a treatment said as a purpose right after the thing, or after the treatment's own appliance: "slice an
+  apple to be cooked in the microwave ..." is "slice an apple and cook it in the microwave ...", "put a
+  mug in the sink to be washed" is "put a mug in the sink and wash it" (after another place, "put a mug
+  in the cabinet to be heated", which comes first is not said, and it is left: refused);
 - "id like" as texted is "I'd like" (which the grammar reads as a request);
 - a terse order: a bare "mug first" about a thing moved in a request said before ("the mug", "mug in
   the sink"; not a place, "on the yellow plate", nor a label, "Target: yellow plate.", which the grammar
@@ -27,6 +31,7 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
+from nl2hltl2plan.language.grammar.frames import APPLIANCE_OF
 from nl2hltl2plan.language.grammar.word_tables import VERB_PAST, VERBS
 from nl2hltl2plan.language.grounding import find_mentions
 
@@ -50,7 +55,7 @@ _PARTICLE = r"(?:\s+(?:up|down|off|out))?"
 
 
 @lru_cache(maxsize=1)
-def _patterns() -> tuple[re.Pattern[str], re.Pattern[str]]:
+def _patterns() -> tuple[re.Pattern[str], re.Pattern[str], re.Pattern[str]]:
     verbs, past = _forms(VERBS), _forms(VERB_PAST)
     need = re.compile(
         rf"{_LEAD}{_THING}\s+(?:needs?|wants?|could\s+(?:use|do\s+with))\s+"
@@ -61,7 +66,12 @@ def _patterns() -> tuple[re.Pattern[str], re.Pattern[str]]:
     causative = re.compile(
         rf"{_LEAD}(?:have|get)\s+{_THING}\s+(?P<part>{past}){_PARTICLE}(?![\w'])", re.I
     )
-    return need, causative
+    purpose = re.compile(
+        rf"(?P<head>\b[a-z]+\s+{_THING}(?:\s+(?:in|into|inside)\s+(?:the|a)\s+(?P<place>[a-z]+))?)"
+        rf"\s+to\s+(?:be|get)\s+(?P<part>{past}){_PARTICLE}(?![\w'])",
+        re.I,
+    )
+    return need, causative, purpose
 
 
 _AGENT = re.compile(
@@ -96,12 +106,13 @@ _PLACE_BEFORE = re.compile(r"\b(?:in|into|on|onto|inside|on\s+top\s+of)\s+(?:the
 
 def treatments_said(text: str) -> str:
     """The text with the needs, causatives and terse orders above rewritten (see the module docstring)."""
-    need, causative = _patterns()
+    need, causative, purpose = _patterns()
     text = _TEXTED_ID.sub("I'd ", text)
     text = _PRONOUN_GOAL.sub(_put_pronoun, text)
     text = _AGENT.sub(lambda m: f"{m['lead']}{m['verb']}" if m["verb"].lower() in VERBS else m[0], text)
     text = need.sub(_imperative, text)
     text = causative.sub(_imperative, text)
+    text = purpose.sub(_treated_next, text)
     text = _COURTESY_AFTER_FIRST.sub("first", text)
     text = _BARE_FIRST.sub(lambda m: _named_first(text, m), text)
     return _FIRST_THEN.sub(lambda m: _first_then(text, m), text)
@@ -121,6 +132,21 @@ def _imperative(m: re.Match[str]) -> str:
         return m[0]
     thing = re.sub(r"^(?:that|this|my|your)\b", "the", m["thing"], flags=re.I)
     return f"{m['lead']}{verb} {thing}"
+
+
+def _treated_next(m: re.Match[str]) -> str:
+    """ "slice an apple to be cooked" -> "slice an apple and cook it"; "put a mug in the sink to be washed" ->
+    "put a mug in the sink and wash it" (a place other than the treatment's appliance: left)."""
+    verb = _base(m["part"])
+    if verb is None or verb == "slice" or m["head"].split()[0].lower() not in VERBS:
+        return m[0]
+    if not _names_thing(m["thing"]):
+        return m[0]
+    if m["place"] is not None:
+        said = find_mentions(m["place"])
+        if not said or APPLIANCE_OF.get(VERBS[verb][0]) not in said[0].entry.types:  # washed in the sink
+            return m[0]
+    return f"{m['head']} and {verb} it"
 
 
 def _names_thing(phrase: str) -> bool:
