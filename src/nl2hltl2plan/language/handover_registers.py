@@ -98,6 +98,28 @@ _PUT_NOTHING = r"(?:put|place|drop|set|leave|lay)\s+(?:nothing|no\s+(?:block|obj
 _BARE_VERB = r"(?:go|be|hold|come|stay|remain|land|end\s+up|sit|get)"
 _LETTERS = r"[e-j](?:\s*(?:,|and|or)\s*[e-j])*"
 
+_PLACED_PP = r"placed|put(?:\s+down)?|set\s+down|dropped|down|in\s+place"
+_NOT_YET = (
+    rf"(^|[,;]|\band\b)\s*if\s+(?:(?P<x>{_BLOCK})\s+(?:has|is|was)\s+not\s+(?:yet\s+)?(?:been\s+)?"
+    rf"(?P<pp>{_PLACED_PP}|touched|picked\s+up|handled)|(?:no\s+arm|nobody|no\s+one)\s+has\s+(?:yet\s+)?"
+    rf"(?P<pp2>touched|picked\s+up|handled)\s+(?P<x2>{_BLOCK}))(?:\s+yet)?\s*,\s*(?:(?:do\s+not|never|(?:you\s+)?"
+    rf"(?:must|may|should)\s+not)\s+(?P<verb>place|put(?:\s+down)?|set\s+down|drop|touch|pick\s+up|handle)\s+"
+    rf"(?P<y>{_BLOCK})|leave\s+(?P<y2>{_BLOCK})\s+alone|(?:keep\s+)?hands\s+off\s+(?P<y3>{_BLOCK})|(?P<y4>{_BLOCK})"
+    r"\s+(?:(?:has|needs|will\s+have)\s+to\s+wait|must\s+wait|should\s+wait|waits))\s*(?=$|[,;.])"
+)
+
+
+def _not_yet_as_until(m: re.Match[str]) -> str:
+    """The command of a not-yet condition, until the condition holds: a placing ("down", "in place") is
+    "placed"; "leave Y alone" and "hands off Y" do not touch Y; "Y waits" is not placed, or not touched
+    after a condition of touching."""
+    said = m["pp"] or m["pp2"]
+    placing = re.fullmatch(_PLACED_PP, said) is not None
+    done = "placed" if placing else said
+    verb = m["verb"] or ("place" if m["y4"] and placing else "touch")
+    return f"{m[1]} do not {verb} {m['y'] or m['y2'] or m['y3'] or m['y4']} until {m['x'] or m['x2']} has been {done}"
+
+
 def _letters_between(match: re.Match[str]) -> str:
     """'regions h through j' -> 'regions h , i and j' (a range the wrong way round is left as written)."""
     first, last = match[1], match[2]
@@ -258,14 +280,39 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     ),
     (
         r"^\s*if\s+a\s+region\s+(?:already\s+)?(?:holds|has|contains)\s+(?:a|one)\s+(?:block|object)(?:\s+already)?\s*,\s*"
-        r"(?:do\s+not|don\s+t|never|(?:you\s+)?(?:may|must|should|can)\s*not)\s+(?:put|place|set)\s+(?:another|a\s+second)"
-        r"(?:\s+(?:block|object|one))?\s+(?:there|(?:on|in|onto|into)\s+it)\s*$",
+        r"(?:(?:do\s+not|don\s+t|never|(?:you\s+)?(?:may|must|should|can)\s*not)\s+(?:put|place|set)\s+(?:another|a\s+second)"
+        r"(?:\s+(?:block|object|one))?|(?:put|place|set)\s+no\s+(?:other|second|further)\s+(?:block|object|one))\s+"
+        r"(?:there|(?:on|in|onto|into)\s+it)\s*$|^\s*if\s+a\s+region\s+(?:already\s+)?(?:holds|has|contains)\s+(?:a|one)\s+"
+        r"(?:block|object)(?:\s+already)?\s*,\s*use\s+another\s+(?:one|region)\s*$",
         "one block per region",
     ),
     (
         rf"^\s*if\s+a\s+region\s+is\s+not\s+(?:one\s+of\s+)?((?:regions?\s+)?{_LETTERS})\s*,\s*"
         r"(?:do\s+not\s+put\s+(?:any\s+object|anything|objects)|put\s+nothing)\s+(?:on|in)\s+it\s*$",
         r"nothing may be put on any region other than \1",
+    ),
+    # a conditional that restates an order or a guard: "if red has not been placed (yet), do not place blue",
+    # "if nobody has touched the red block yet, leave the blue block alone", "if red is not down yet, blue has
+    # to wait": the command until the condition holds ("do not place blue until red has been placed")
+    (_NOT_YET, _not_yet_as_until),
+    # "if a region is F, G or H, put nothing on it" (nothing on F, G or H); "the blue block may only be placed if
+    # (once) the red block has been placed" (not until then)
+    (
+        rf"\bif\s+a\s+region\s+is\s+(?:one\s+of\s+)?((?:regions?\s+)?{_LETTERS})\s*,\s*(?:do\s+not\s+put\s+(?:any\s+"
+        r"object|anything|objects)|put\s+nothing)\s+(?:on|in)\s+it\s*$",
+        r"put nothing on \1",
+    ),
+    (
+        rf"\b({_BLOCK})\s+(?:may|can|must|should)\s+only\s+be\s+(placed|put\s+down|touched|picked\s+up)\s+(?:if|once|"
+        rf"when|after)\s+({_BLOCK})\s+(?:has|is)\s+(?:been\s+)?(placed|put\s+down|down|touched|picked\s+up)\b",
+        lambda m: f"{m[1]} must not be {m[2]} until {m[3]} has been {'placed' if m[4] == 'down' else m[4]}",
+    ),
+    # "if you need to set a block down in the meantime, do not use F, G or H": the period's prohibition
+    (
+        r"(^|[,;])\s*if\s+(?:you|we)\s+(?:need|have|want)\s+to\s+(?:set|put|place|lay|rest)\s+(?:a\s+block|an\s+"
+        r"object|a\s+pillar|anything|something|one|it)(?:\s+down)?\s+(meanwhile|in\s+the\s+meantime)\s*,\s*"
+        r"(?=(?:do\s+not|never)\s+use\b)",
+        r"\1 \2 , ",
     ),
     # the goal as "the idea / plan / intention is to ... / that ...": as "the aim is"
     (r"^\s*(?:the|my|our)\s+(?:idea|plan|intention)(?:\s+here)?\s+is\s+(?=to\s|that\b)", "the aim is "),
@@ -480,6 +527,25 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     # last (a letter the world lacks is refused later, by name); "slot" is a region
     (r"\bregions\s+([e-j])\s+(?:through|thru|to)\s+([e-j])\b", _letters_between),
     (r"\bslot(s?)\b", r"region\1"),
+    # a region named by its mark: "the spot marked G", "the areas labelled G, H and I" (regions G, H and I)
+    (
+        r"\b(?:the\s+)?(?:region|area|zone|spot|place|position|cell|square|pad|location)(s?)\s+(?:marked|labell?ed|"
+        r"lettered)\s+(?=(?:with\s+)?[e-j]\b)(?:with\s+)?",
+        r"region\1 ",
+    ),
+    # a list's count as a multiplier after its noun: "pillars x3" (three pillars; the count is still checked)
+    (r"\b(blocks|pillars|objects|cubes)\s+[x×]\s*([23])\b", lambda m: f"{('two', 'three')[int(m[2]) - 2]} {m[1]}"),
+    # telegraphic: "never drop on H, I, J" (drop anything there); "F, G, H: keep clear" (keep F, G, H clear);
+    # "red, blue to any empty region" (red and blue: a pair before its place)
+    (r"\b(never|do\s+not)\s+(drop|put|place|set)(?:\s+down)?\s+(?=(?:on|onto|in|into)\s+(?:regions?\s+)?[e-j]\b)", r"\1 \2 anything "),
+    (rf"^\s*((?:regions?\s+)?{_LETTERS})\s*:\s*keep\s+(empty|clear|free|vacant|unoccupied)\b", r"keep \1 \2"),
+    (r"^(\s*)(red|blue|yellow)\s*,\s*(red|blue|yellow)\s+(?=(?:to|onto|into)\b|-+\s*>|→)", r"\1\2 and \3 "),
+    # an absolute participle of the one-block rule: "..., one block being put on each region"
+    (
+        r",\s*(?:with\s+)?one\s+(?:block|object|pillar)\s+being\s+(?:put|placed|set)\s+(?:on|in|onto|into)\s+"
+        r"(?:each|every)\s+region\b",
+        ", one object per region",
+    ),
     # the first thing said: "first off", "to start (with)" (as "to begin with": the step comes first)
     (r"(^|,)\s*(?:first\s+off|to\s+start(?:\s+with)?|to\s+start\s+off)\s*(?=,)", r"\1 to begin with "),
     # legal English: "upon" before a place is "on", "thereafter" is "then", "each such region" is each region

@@ -1,0 +1,124 @@
+"""h194 (issue 24): the Table III handover tasks in voices the earlier batches lacked (a shift note, a
+checklist, a chatty request, a terse command list, the passive, conditionals). The sentences are committed
+batches of handover_styles_session10.json: `dev101` (written with the held-out `validation35` before the
+rules) and `validation35` (scored once at the end; read right or refused, never misread: `sweep`).
+
+- `handover_sentences`: an open checklist box ("[ ]") below a heading is a bullet ("Checklist:\\n[ ] ...").
+- `handover_frame_words.txt`: "Checklist:" / "To check off:" as labels, "the incoming shift", "thanks a
+  million".
+- `handover_wishes`: "i'd love it if you could"; a request's "for me"; "X need(s) swapping" (to be swapped).
+- `handover_registers`: a not-yet condition that restates an order or a guard ("if red has not been placed
+  yet, do not place blue", "if nobody has touched the red block yet, leave the blue block alone", "if red
+  isn't down yet, blue has to wait"; "the blue block may only be placed if the red block has been
+  placed"); "if you need to set a block down in the meantime, don't use F, G or H"; "if a region is F, G or
+  H, put nothing on it"; "if a region already has a block, put no second block there / use another one";
+  "the spot marked G"; "pillars x3"; "never drop on H, I, J"; "F, G, H: keep clear"; "red, blue -> ...";
+  "..., one block being put on each region".
+"""
+
+from __future__ import annotations
+
+import pytest
+from handover_session10 import STYLES
+from handover_specs import (
+    assert_not_the_written_spec,
+    assert_refused_by_name,
+    assert_written_spec,
+    assert_written_spec_or_refused,
+)
+
+from nl2hltl2plan.language.handover_phrases import normalise
+
+DEV = [(int(task), text) for style in STYLES["dev101"].values() for task, text in style.items()]
+HELD = [(int(task), text) for style in STYLES["validation35"].values() for task, text in style.items()]
+# left refused on purpose: a goal under "if" and a permission ("may go there"), as h129 keeps them
+STILL_REFUSED = {STYLES["dev101"]["conditional"]["8"]}
+OPPOSITE = "Move the three blocks to the opposite side. "
+TOUCH = "Move the three blocks to the opposite regions. "
+BACK = " When all that is done, put the yellow block back on region G."
+
+WRITTEN = [
+    (1, STYLES["dev101"]["checklist"]["1"]),
+    (2, STYLES["dev101"]["shift_note"]["2"]),
+    (5, STYLES["dev101"]["shift_note"]["5"]),
+    (1, STYLES["dev101"]["chatty_request"]["1"]),
+    (4, STYLES["dev101"]["conditional"]["4"]),
+    (5, STYLES["dev101"]["conditional"]["5"]),
+    (7, STYLES["dev101"]["conditional"]["7"]),
+    (8, STYLES["dev101"]["terse_commands"]["8"]),
+    (2, STYLES["dev101"]["passive"]["2"]),
+    (5, "Exchange the positions of the red and blue blocks; the blue block may only be placed if the red block "
+        "has been placed. Move the yellow block to the opposite side at any time."),
+]
+
+UNCLEAR = [
+    # without the period, "if you need to set a block down" is any time: which rule?
+    (7, "Put the three blocks on region I one after another, red before blue. If you need to set a block "
+        "down, don't use F, G or H."),
+    # a goal under a condition the plan cannot test stays refused
+    (1, "If the far side is free, move the three blocks there; red before blue."),
+]
+
+NEAR_MISSES = [
+    # the condition the other way round orders blue first; another block is another order
+    (1, OPPOSITE + "If blue has not been placed yet, do not place red."),
+    (6, "Put the three objects on G, H and I, one each. If the red block hasn't been placed, don't place the "
+        "yellow block."),
+    (4, TOUCH + "If nobody has touched the blue block yet, leave the red block alone." + BACK),
+    (5, "Exchange the red and blue blocks; the red block may only be placed if the blue block has been "
+        "placed. Move the yellow block to the opposite side at any time."),
+    # the mark names another region
+    (4, TOUCH + "Don't touch blue until red has been touched." + BACK.replace("region G", "the spot marked H")),
+]
+
+
+@pytest.mark.data
+@pytest.mark.parametrize(("task", "text"), WRITTEN)
+def test_new_voices_give_the_written_spec(task: int, text: str) -> None:
+    assert_written_spec(task, text)
+
+
+@pytest.mark.data
+@pytest.mark.parametrize(("task", "text"), UNCLEAR)
+def test_unclear_neighbours_stay_refused(task: int, text: str) -> None:
+    assert_refused_by_name(task, text)
+
+
+@pytest.mark.data
+@pytest.mark.parametrize(("task", "text"), NEAR_MISSES)
+def test_near_misses_are_not_the_written_spec(task: int, text: str) -> None:
+    assert_not_the_written_spec(task, text)
+
+
+def test_conditions_are_said_as_the_command_until_they_hold() -> None:
+    assert normalise("If red has not been placed yet, do not place blue") == (
+        "do not place blue until red has been placed"
+    )
+    assert normalise("if red isn't down yet, blue has to wait") == "do not place blue until red has been placed"
+    assert normalise("If the red block hasn't been touched, the blue block waits") == (
+        "do not touch the blue block until the red block has been touched"
+    )
+    # a need's gerund is its passive; a request's "for me" says whom it pleases
+    assert normalise("red and blue need swapping") == "red and blue must be swapped"
+    assert normalise("could you move the blocks to g for me") == "could you move the blocks to g"
+
+
+@pytest.mark.data
+@pytest.mark.sweep
+@pytest.mark.parametrize(("task", "text"), [case for case in DEV if case[1] not in STILL_REFUSED])
+def test_development_batch_gives_the_written_spec(task: int, text: str) -> None:
+    assert_written_spec(task, text)
+
+
+@pytest.mark.data
+@pytest.mark.sweep
+@pytest.mark.parametrize(("task", "text"), [case for case in DEV if case[1] in STILL_REFUSED])
+def test_development_sentences_left_are_refused_by_name(task: int, text: str) -> None:
+    assert_refused_by_name(task, text)
+
+
+@pytest.mark.data
+@pytest.mark.sweep
+@pytest.mark.parametrize(("task", "text"), HELD)
+def test_held_out_batch_is_read_right_or_refused(task: int, text: str) -> None:
+    assert_written_spec_or_refused(task, text)
