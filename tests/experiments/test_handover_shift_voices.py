@@ -36,6 +36,7 @@ STILL_REFUSED = {STYLES["dev101"]["conditional"]["8"]}
 OPPOSITE = "Move the three blocks to the opposite side. "
 TOUCH = "Move the three blocks to the opposite regions. "
 BACK = " When all that is done, put the yellow block back on region G."
+MARKED_H = " When all that is done, put the yellow block back on the spot marked H."
 
 WRITTEN = [
     (1, STYLES["dev101"]["checklist"]["1"]),
@@ -47,8 +48,8 @@ WRITTEN = [
     (7, STYLES["dev101"]["conditional"]["7"]),
     (8, STYLES["dev101"]["terse_commands"]["8"]),
     (2, STYLES["dev101"]["passive"]["2"]),
-    (5, "Exchange the positions of the red and blue blocks; the blue block may only be placed if the red block "
-        "has been placed. Move the yellow block to the opposite side at any time."),
+    (5, "Exchange the positions of the red and blue blocks; the blue block may only be placed if the red "
+        "block has been placed. Move the yellow block to the opposite side at any time."),
 ]
 
 UNCLEAR = [
@@ -68,7 +69,7 @@ NEAR_MISSES = [
     (5, "Exchange the red and blue blocks; the red block may only be placed if the blue block has been "
         "placed. Move the yellow block to the opposite side at any time."),
     # the mark names another region
-    (4, TOUCH + "Don't touch blue until red has been touched." + BACK.replace("region G", "the spot marked H")),
+    (4, TOUCH + "Don't touch blue until red has been touched." + MARKED_H),
 ]
 
 
@@ -94,7 +95,8 @@ def test_conditions_are_said_as_the_command_until_they_hold() -> None:
     assert normalise("If red has not been placed yet, do not place blue") == (
         "do not place blue until red has been placed"
     )
-    assert normalise("if red isn't down yet, blue has to wait") == "do not place blue until red has been placed"
+    placed = "do not place blue until red has been placed"
+    assert normalise("if red isn't down yet, blue has to wait") == placed
     assert normalise("If the red block hasn't been touched, the blue block waits") == (
         "do not touch the blue block until the red block has been touched"
     )

@@ -98,6 +98,7 @@ _PUT_NOTHING = r"(?:put|place|drop|set|leave|lay)\s+(?:nothing|no\s+(?:block|obj
 _BARE_VERB = r"(?:go|be|hold|come|stay|remain|land|end\s+up|sit|get)"
 _LETTERS = r"[e-j](?:\s*(?:,|and|or)\s*[e-j])*"
 
+_COUNTS = {"2": "two", "3": "three"}
 _PLACED_PP = r"placed|put(?:\s+down)?|set\s+down|dropped|down|in\s+place"
 _NOT_YET = (
     rf"(^|[,;]|\band\b)\s*if\s+(?:(?P<x>{_BLOCK})\s+(?:has|is|was)\s+not\s+(?:yet\s+)?(?:been\s+)?"
@@ -117,7 +118,8 @@ def _not_yet_as_until(m: re.Match[str]) -> str:
     placing = re.fullmatch(_PLACED_PP, said) is not None
     done = "placed" if placing else said
     verb = m["verb"] or ("place" if m["y4"] and placing else "touch")
-    return f"{m[1]} do not {verb} {m['y'] or m['y2'] or m['y3'] or m['y4']} until {m['x'] or m['x2']} has been {done}"
+    kept = m["y"] or m["y2"] or m["y3"] or m["y4"]
+    return f"{m[1]} do not {verb} {kept} until {m['x'] or m['x2']} has been {done}"
 
 
 def _letters_between(match: re.Match[str]) -> str:
@@ -282,8 +284,7 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
         r"^\s*if\s+a\s+region\s+(?:already\s+)?(?:holds|has|contains)\s+(?:a|one)\s+(?:block|object)(?:\s+already)?\s*,\s*"
         r"(?:(?:do\s+not|don\s+t|never|(?:you\s+)?(?:may|must|should|can)\s*not)\s+(?:put|place|set)\s+(?:another|a\s+second)"
         r"(?:\s+(?:block|object|one))?|(?:put|place|set)\s+no\s+(?:other|second|further)\s+(?:block|object|one))\s+"
-        r"(?:there|(?:on|in|onto|into)\s+it)\s*$|^\s*if\s+a\s+region\s+(?:already\s+)?(?:holds|has|contains)\s+(?:a|one)\s+"
-        r"(?:block|object)(?:\s+already)?\s*,\s*use\s+another\s+(?:one|region)\s*$",
+        r"(?:there|(?:on|in|onto|into)\s+it)\s*$",
         "one block per region",
     ),
     (
@@ -295,8 +296,8 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     # "if nobody has touched the red block yet, leave the blue block alone", "if red is not down yet, blue has
     # to wait": the command until the condition holds ("do not place blue until red has been placed")
     (_NOT_YET, _not_yet_as_until),
-    # "if a region is F, G or H, put nothing on it" (nothing on F, G or H); "the blue block may only be placed if
-    # (once) the red block has been placed" (not until then)
+    # "if a region is F, G or H, put nothing on it" (nothing on F, G or H); "the blue block may only be placed
+    # if (once) the red block has been placed" (not until then)
     (
         rf"\bif\s+a\s+region\s+is\s+(?:one\s+of\s+)?((?:regions?\s+)?{_LETTERS})\s*,\s*(?:do\s+not\s+put\s+(?:any\s+"
         r"object|anything|objects)|put\s+nothing)\s+(?:on|in)\s+it\s*$",
@@ -386,8 +387,9 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     # (before "it" is read as a block)
     (r"\b(while\s+(?:you|we|they)\s+(?:are\s+)?(?:do|doing|perform|performing))\s+it\b", r"\1 this"),
     (r"\b(?:somewhere|at\s+some\s+point)\s+along\s+the\s+way\b", "at any time"),
-    # two blocks listed before a colon without "and" ("Red, blue: swap spots"): the pair
-    (r"^\s*(red|blue|yellow)\s*,\s*(red|blue|yellow)\s*(?=:)", r"\1 and \2 "),
+    # two blocks listed before a colon or their place without "and" ("Red, blue: swap spots", "red, blue ->
+    # any empty region"): the pair
+    (r"^\s*(red|blue|yellow)\s*,\s*(red|blue|yellow)\s*(?=:|(?:to|onto|into)\b|-+\s*>|→)", r"\1 and \2 "),
     # telegraphic and bulleted
     (
         r"^\s*((?:the\s+)?(?:two|three|four|\d)\s+(?:blocks|objects|pillars|items|cubes|pieces))\s*,\s*"
@@ -534,12 +536,13 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
         r"region\1 ",
     ),
     # a list's count as a multiplier after its noun: "pillars x3" (three pillars; the count is still checked)
-    (r"\b(blocks|pillars|objects|cubes)\s+[x×]\s*([23])\b", lambda m: f"{('two', 'three')[int(m[2]) - 2]} {m[1]}"),
-    # telegraphic: "never drop on H, I, J" (drop anything there); "F, G, H: keep clear" (keep F, G, H clear);
-    # "red, blue to any empty region" (red and blue: a pair before its place)
-    (r"\b(never|do\s+not)\s+(drop|put|place|set)(?:\s+down)?\s+(?=(?:on|onto|in|into)\s+(?:regions?\s+)?[e-j]\b)", r"\1 \2 anything "),
+    (r"\b(blocks|pillars|objects|cubes)\s+[x×]\s*([23])\b", lambda m: f"{_COUNTS[m[2]]} {m[1]}"),
+    # telegraphic: "never drop on H, I, J" (drop anything there); "F, G, H: keep clear" (keep F, G, H clear)
+    (
+        r"\b(never|do\s+not)\s+(drop|put|place|set)(?:\s+down)?\s+(?=(?:on|onto|in|into)\s+(?:regions?\s+)?[e-j]\b)",
+        r"\1 \2 anything ",
+    ),
     (rf"^\s*((?:regions?\s+)?{_LETTERS})\s*:\s*keep\s+(empty|clear|free|vacant|unoccupied)\b", r"keep \1 \2"),
-    (r"^(\s*)(red|blue|yellow)\s*,\s*(red|blue|yellow)\s+(?=(?:to|onto|into)\b|-+\s*>|→)", r"\1\2 and \3 "),
     # an absolute participle of the one-block rule: "..., one block being put on each region"
     (
         r",\s*(?:with\s+)?one\s+(?:block|object|pillar)\s+being\s+(?:put|placed|set)\s+(?:on|in|onto|into)\s+"
