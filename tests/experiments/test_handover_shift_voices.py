@@ -6,7 +6,8 @@ rules) and `validation35` (scored once at the end; read right or refused, never 
 - `handover_sentences`: an open checklist box ("[ ]") below a heading is a bullet ("Checklist:\\n[ ] ...").
 - `handover_frame_words.txt`: "Checklist:" / "To check off:" as labels, "the incoming shift", "thanks a
   million".
-- `handover_wishes`: "i'd love it if you could"; a request's "for me"; "X need(s) swapping" (to be swapped).
+- `handover_wishes`: "i'd love it if you could"; a request's "for me"; "X need(s) swapping" (to be swapped);
+  "keep the blocks out of F, G and H" (put nothing there).
 - `handover_registers`: a not-yet condition that restates an order or a guard ("if red has not been placed
   yet, do not place blue", "if nobody has touched the red block yet, leave the blue block alone", "if red
   isn't down yet, blue has to wait"; "the blue block may only be placed if the red block has been
@@ -48,6 +49,8 @@ WRITTEN = [
     (7, STYLES["dev101"]["conditional"]["7"]),
     (8, STYLES["dev101"]["terse_commands"]["8"]),
     (2, STYLES["dev101"]["passive"]["2"]),
+    (7, "Put the three blocks on region I one after another, red before blue. Keep the blocks out of regions "
+        "F, G and H in the meantime."),
     (5, "Exchange the positions of the red and blue blocks; the blue block may only be placed if the red "
         "block has been placed. Move the yellow block to the opposite side at any time."),
 ]
@@ -68,6 +71,9 @@ NEAR_MISSES = [
     (4, TOUCH + "If nobody has touched the blue block yet, leave the red block alone." + BACK),
     (5, "Exchange the red and blue blocks; the red block may only be placed if the blue block has been "
         "placed. Move the yellow block to the opposite side at any time."),
+    # a region left out of the kept-out ones
+    (7, "Put the three blocks on region I one after another, red before blue. Keep the blocks out of regions "
+        "F and G in the meantime."),
     # the mark names another region
     (4, TOUCH + "Don't touch blue until red has been touched." + MARKED_H),
 ]

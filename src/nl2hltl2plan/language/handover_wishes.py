@@ -32,8 +32,8 @@ it or refuses it by name:
   moved (swapped, placed)";
 - a goal's manner as its participle after a comma: "..., placed one after another" is "..., one after
   another";
-- kept-empty regions: "free of objects" is "empty"; "while keeping regions F, G and H empty" is "while
-  regions F, G and H stay empty";
+- kept-empty regions: "free of objects" is "empty"; "keep the blocks out of F, G and H" is "put nothing on
+  F, G and H"; "while keeping regions F, G and H empty" is "while regions F, G and H stay empty";
 - one block per region: "never more than one object in a region", "you can't have two on the same
   region", "never two on the same region" and "one block on each of those regions" are "one object per
   region"; "in each region only one
@@ -199,6 +199,12 @@ _RULES: tuple[tuple[str, str], ...] = (
         r"\1 must stay ",
     ),
     # regions kept empty; one object per region
+    # "keep every block (the blocks, everything, them) out of / away from F, G and H" puts nothing there
+    (
+        r"\bkeep\s+(?:every\s+(?:block|object|pillar)|any\s+(?:block|object|pillar)|(?:all\s+)?(?:the\s+)?(?:three\s+)?"
+        r"(?:blocks|objects|pillars)|everything|anything|them)\s+(?:out\s+of|away\s+from)\s+",
+        "put nothing on ",
+    ),
     (r"\b(?:free|clear|empty)\s+of\s+(?:objects|blocks|pillars|anything|everything|items|things)\b", "empty"),
     (
         rf",?\s*\bwhile\s+(?:keeping|you\s+keep|we\s+keep)\s+((?:regions?\s+)?{_LETTERS})\s+"
