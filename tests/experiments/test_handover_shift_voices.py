@@ -4,17 +4,19 @@ batches of handover_styles_session10.json: `dev101` (written with the held-out `
 rules) and `validation35` (scored once at the end; read right or refused, never misread: `sweep`).
 
 - `handover_sentences`: an open checklist box ("[ ]") below a heading is a bullet ("Checklist:\\n[ ] ...").
-- `handover_frame_words.txt`: "Checklist:" / "To check off:" as labels, "the incoming shift", "thanks a
-  million".
-- `handover_wishes`: "i'd love it if you could"; a request's "for me"; "X need(s) swapping" (to be swapped);
-  "keep the blocks out of F, G and H" (put nothing there).
-- `handover_registers`: a not-yet condition that restates an order or a guard ("if red has not been placed
-  yet, do not place blue", "if nobody has touched the red block yet, leave the blue block alone", "if red
-  isn't down yet, blue has to wait"; "the blue block may only be placed if the red block has been
-  placed"); "if you need to set a block down in the meantime, don't use F, G or H"; "if a region is F, G or
-  H, put nothing on it"; "if a region already has a block, put no second block there / use another one";
-  "the spot marked G"; "pillars x3"; "never drop on H, I, J"; "F, G, H: keep clear"; "red, blue -> ...";
-  "..., one block being put on each region".
+- `handover_frame_words.txt`: "Checklist:" / "To check off:" / "Outstanding:" as labels, "Checklist" as a
+  heading alone, "the incoming shift", "thanks a million".
+- `handover_wishes`: "i'd love it if you could", "any chance you could"; a request's "for me"; "X need(s)
+  swapping" (to be swapped); "keep the blocks out of F, G and H" (put nothing there).
+- `courtesy.txt`: "if it's not too much trouble" as the handover text spells it ("it s").
+- `handover_rewrites`: "at no point is an object to be put on H" (an object is never to be put there).
+- `handover_registers`: a not-yet condition that restates an order or a guard ("if (as long as) red has
+  not been placed yet, do not place blue", "if nobody has touched the red block yet, leave the blue block
+  alone", "if red isn't down yet, blue has to wait", "..., blue stays untouched"; "the blue block may only
+  be placed if the red block has been placed"); "if you need to set a block down in the meantime, don't
+  use F, G or H"; "if a region is F, G or H, put nothing on it"; "if a region already has a block, put no
+  second block there"; "the spot marked G"; "pillars x3"; "never drop on H, I, J"; "F, G, H: keep clear";
+  "red, blue -> ..."; "..., one block being put on each region".
 """
 
 from __future__ import annotations
@@ -51,6 +53,17 @@ WRITTEN = [
     (2, STYLES["dev101"]["passive"]["2"]),
     (7, "Put the three blocks on region I one after another, red before blue. Keep the blocks out of regions "
         "F, G and H in the meantime."),
+    # a second round of our own: "as long as" conditions, the passive's "is ... to be", polite frames
+    (4, TOUCH + "As long as red hasn't been touched, blue stays untouched. Then return the yellow block to "
+        "G."),
+    (6, "Put the three objects on G, H and I, one each. If the red block is not yet in place, the blue block "
+        "must not be placed."),
+    (3, "Move the pillars to E, F and G beside arms a and b; at no point is an object to be put on H, I or "
+        "J."),
+    (6, "Any chance you could put the three objects on G, H and I, one each, red before blue?"),
+    (8, "If it's not too much trouble, put the yellow block on I and then on G, and move the red and blue "
+        "blocks to any empty region at any time."),
+    (6, "Checklist\n- red before blue\n- objects on G, H and I, one each"),
     (5, "Exchange the positions of the red and blue blocks; the blue block may only be placed if the red "
         "block has been placed. Move the yellow block to the opposite side at any time."),
 ]
@@ -59,6 +72,8 @@ UNCLEAR = [
     # without the period, "if you need to set a block down" is any time: which rule?
     (7, "Put the three blocks on region I one after another, red before blue. If you need to set a block "
         "down, don't use F, G or H."),
+    # "stays put" after a condition of touching: not moved, or not touched? (left unread)
+    (4, TOUCH + "As long as red hasn't been touched, blue stays put. Then return the yellow block to G."),
     # a goal under a condition the plan cannot test stays refused
     (1, "If the far side is free, move the three blocks there; red before blue."),
 ]
@@ -71,6 +86,8 @@ NEAR_MISSES = [
     (4, TOUCH + "If nobody has touched the blue block yet, leave the red block alone." + BACK),
     (5, "Exchange the red and blue blocks; the red block may only be placed if the blue block has been "
         "placed. Move the yellow block to the opposite side at any time."),
+    (6, "Put the three objects on G, H and I, one each. As long as blue isn't down, red waits."),
+    (3, "Move the pillars to E, F and G beside arms a and b; at no point is an object to be put on H or I."),
     # a region left out of the kept-out ones
     (7, "Put the three blocks on region I one after another, red before blue. Keep the blocks out of regions "
         "F and G in the meantime."),

@@ -100,25 +100,32 @@ _LETTERS = r"[e-j](?:\s*(?:,|and|or)\s*[e-j])*"
 
 _COUNTS = {"2": "two", "3": "three"}
 _PLACED_PP = r"placed|put(?:\s+down)?|set\s+down|dropped|down|in\s+place"
+_TOUCHED_PP = r"touched|picked\s+up|handled"
 _NOT_YET = (
-    rf"(^|[,;]|\band\b)\s*if\s+(?:(?P<x>{_BLOCK})\s+(?:has|is|was)\s+not\s+(?:yet\s+)?(?:been\s+)?"
-    rf"(?P<pp>{_PLACED_PP}|touched|picked\s+up|handled)|(?:no\s+arm|nobody|no\s+one)\s+has\s+(?:yet\s+)?"
-    rf"(?P<pp2>touched|picked\s+up|handled)\s+(?P<x2>{_BLOCK}))(?:\s+yet)?\s*,\s*(?:(?:do\s+not|never|(?:you\s+)?"
+    rf"(^|[,;]|\band\b)\s*(?:if|as\s+long\s+as|so\s+long\s+as)\s+(?:(?P<x>{_BLOCK})\s+(?:has|is|was)\s+not\s+(?:yet\s+)?"
+    rf"(?:been\s+)?(?P<pp>{_PLACED_PP}|{_TOUCHED_PP})|(?:no\s+arm|nobody|no\s+one)\s+has\s+(?:yet\s+)?"
+    rf"(?P<pp2>{_TOUCHED_PP})\s+(?P<x2>{_BLOCK}))(?:\s+yet)?\s*,\s*(?:(?:do\s+not|never|(?:you\s+)?"
     rf"(?:must|may|should)\s+not)\s+(?P<verb>place|put(?:\s+down)?|set\s+down|drop|touch|pick\s+up|handle)\s+"
-    rf"(?P<y>{_BLOCK})|leave\s+(?P<y2>{_BLOCK})\s+alone|(?:keep\s+)?hands\s+off\s+(?P<y3>{_BLOCK})|(?P<y4>{_BLOCK})"
-    r"\s+(?:(?:has|needs|will\s+have)\s+to\s+wait|must\s+wait|should\s+wait|waits))\s*(?=$|[,;.])"
+    rf"(?P<y>{_BLOCK})|leave\s+(?P<y2>{_BLOCK})\s+alone|(?:keep\s+(?:your\s+)?)?hands\s+off\s+(?P<y3>{_BLOCK})|"
+    rf"(?P<y4>{_BLOCK})\s+(?:(?:has|needs|will\s+have)\s+to\s+wait|must\s+wait|should\s+wait|waits)|"
+    rf"(?P<y5>{_BLOCK})\s+(?:must|may|should|can)\s+not\s+be\s+(?P<ypp>{_PLACED_PP}|{_TOUCHED_PP})|"
+    rf"(?P<y6>{_BLOCK})\s+(?:stays|must\s+stay|should\s+stay|remains|must\s+remain)\s+untouched)\s*(?=$|[,;.])"
 )
 
 
 def _not_yet_as_until(m: re.Match[str]) -> str:
     """The command of a not-yet condition, until the condition holds: a placing ("down", "in place") is
-    "placed"; "leave Y alone" and "hands off Y" do not touch Y; "Y waits" is not placed, or not touched
-    after a condition of touching."""
+    "placed"; "leave Y alone", "hands off Y" and "Y stays untouched" do not touch Y; "Y waits" is not
+    placed, or not touched after a condition of touching; "Y must not be V-ed" does not V Y."""
     said = m["pp"] or m["pp2"]
     placing = re.fullmatch(_PLACED_PP, said) is not None
     done = "placed" if placing else said
-    verb = m["verb"] or ("place" if m["y4"] and placing else "touch")
-    kept = m["y"] or m["y2"] or m["y3"] or m["y4"]
+    if m["ypp"]:
+        placed = re.fullmatch(_PLACED_PP, m["ypp"])
+        verb = "place" if placed else {"picked up": "pick up"}.get(m["ypp"], "touch")
+    else:
+        verb = m["verb"] or ("place" if m["y4"] and placing else "touch")
+    kept = m["y"] or m["y2"] or m["y3"] or m["y4"] or m["y5"] or m["y6"]
     return f"{m[1]} do not {verb} {kept} until {m['x'] or m['x2']} has been {done}"
 
 

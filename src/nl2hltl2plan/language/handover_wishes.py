@@ -5,13 +5,13 @@ is "that s"). Each rewrite changes no meaning; what it does not match is left fo
 it or refuses it by name:
 
 - wishes and indirect requests before a verb: "would it be possible to", "would you be able to", "i was
-  hoping you (the arms) could", "i'd love it if you could", "let's", "(could you possibly) have the arms";
-  a wish with the object and its participle ("i'd like the three blocks moved to", "let's get the blocks
-  placed on", "have the red block put ...") or "go" ("let's have the yellow block go to I") as the command
-  ("move the three blocks to"); a past-tense wish ("it would be great if the yellow block went to I", "...
-  if red and blue swapped places") as the command ("move the yellow block to I", "swap red and blue");
-  "we'd like F, G and H to stay empty" as "F, G and H must stay empty"; a polite tag at the end ("if
-  that's okay") and a request's "for me" dropped;
+  hoping you (the arms) could", "i'd love it if you could", "any chance you could", "let's", "(could you
+  possibly) have the arms"; a wish with the object and its participle ("i'd like the three blocks moved
+  to", "let's get the blocks placed on", "have the red block put ...") or "go" ("let's have the yellow
+  block go to I") as the command ("move the three blocks to"); a past-tense wish ("it would be great if
+  the yellow block went to I", "... if red and blue swapped places") as the command ("move the yellow
+  block to I", "swap red and blue"); "we'd like F, G and H to stay empty" as "F, G and H must stay empty";
+  a polite tag at the end ("if that's okay") and a request's "for me" dropped;
 - a goal stated as the final state: "by the end / in the end / when (by the time) you're finished," is
   "at the end," (a last step after other commands, nothing on its own); "the end result should be X on
   P", "the goal is X placed on P" and "what I want to see at the end: X on P" are "at the end, X should
@@ -84,7 +84,9 @@ _WISH_BEFORE_VERB = (
     # "i would like the arms to put ...": the arms named in the wish are the ones asked
     r"(?:i|we)\s+(?:would\s+(?:like|love|prefer)|want|need)\s+(?:the\s+(?:robot\s+)?arms|the\s+robots)\s+to|"
     r"(?:i|we)\s+(?:wonder|am\s+wondering|was\s+wondering)\s+(?:if|whether)\s+you\s+(?:could|would|can|might)|"
-    # "i'd love it if you could put ...", "it would be lovely if you could put ...": the request's verb
+    # "i'd love it if you could put ...", "it would be lovely if you could put ...", "any chance you could put
+    # ...": the request's verb
+    r"(?:is\s+there\s+)?any\s+chance\s+(?:that\s+)?you\s+(?:could|would|can|might)|"
     r"(?:(?:i|we)\s+would\s+(?:love|like|appreciate)\s+it|it\s+would\s+be\s+(?:great|nice|lovely|wonderful|"
     r"helpful|brilliant))\s+if\s+you\s+(?:could|would|can)|"
     r"(?:(?:could|would|can|will)\s+you\s+(?:possibly\s+|please\s+|kindly\s+)?)?"
