@@ -4,8 +4,9 @@ batches of handover_styles_session10.json: `dev101` (written with the held-out `
 rules) and `validation35` (scored once at the end; read right or refused, never misread: `sweep`).
 
 - `handover_sentences`: an open checklist box ("[ ]") below a heading is a bullet ("Checklist:\\n[ ] ...").
-- `handover_frame_words.txt`: "Checklist:" / "To check off:" / "Outstanding:" as labels, "Checklist" as a
-  heading alone, "the incoming shift", "thanks a million".
+- `handover_spoken`: "it'd" / "that'd" (would).
+- `handover_frame_words.txt`: "Checklist:" / "To check off:" / "Outstanding:" / "Pending:" / "Priority:" as
+  labels, "Checklist" as a heading alone, "the incoming shift", "thanks a million".
 - `handover_wishes`: "i'd love it if you could", "any chance you could"; a request's "for me"; "X need(s)
   swapping" (to be swapped); "keep the blocks out of F, G and H" (put nothing there).
 - `courtesy.txt`: "if it's not too much trouble" as the handover text spells it ("it s").
@@ -64,6 +65,8 @@ WRITTEN = [
     (8, "If it's not too much trouble, put the yellow block on I and then on G, and move the red and blue "
         "blocks to any empty region at any time."),
     (6, "Checklist\n- red before blue\n- objects on G, H and I, one each"),
+    (1, "It'd be great if you could move the three blocks to the opposite side, red before blue."),
+    (8, "Pending: yellow to region I, after that to region G. Red and blue: any empty region, any time."),
     (5, "Exchange the positions of the red and blue blocks; the blue block may only be placed if the red "
         "block has been placed. Move the yellow block to the opposite side at any time."),
 ]
