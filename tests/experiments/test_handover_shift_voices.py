@@ -67,6 +67,8 @@ WRITTEN = [
     (6, "Checklist\n- red before blue\n- objects on G, H and I, one each"),
     (1, "It'd be great if you could move the three blocks to the opposite side, red before blue."),
     (8, "Pending: yellow to region I, after that to region G. Red and blue: any empty region, any time."),
+    (6, "Place the three objects on G, H and I, one each; if red hasn't gone down yet, hold off on blue."),
+    (4, TOUCH + "If no arm has picked up red yet, nobody touches blue. After that, yellow back to G."),
     (5, "Exchange the positions of the red and blue blocks; the blue block may only be placed if the red "
         "block has been placed. Move the yellow block to the opposite side at any time."),
 ]
@@ -90,6 +92,7 @@ NEAR_MISSES = [
     (5, "Exchange the red and blue blocks; the red block may only be placed if the blue block has been "
         "placed. Move the yellow block to the opposite side at any time."),
     (6, "Put the three objects on G, H and I, one each. As long as blue isn't down, red waits."),
+    (1, OPPOSITE + "If blue isn't there yet, don't put red down."),
     (3, "Move the pillars to E, F and G beside arms a and b; at no point is an object to be put on H or I."),
     # a region left out of the kept-out ones
     (7, "Put the three blocks on region I one after another, red before blue. Keep the blocks out of regions "

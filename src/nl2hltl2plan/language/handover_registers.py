@@ -101,31 +101,37 @@ _LETTERS = r"[e-j](?:\s*(?:,|and|or)\s*[e-j])*"
 _COUNTS = {"2": "two", "3": "three"}
 _PLACED_PP = r"placed|put(?:\s+down)?|set\s+down|dropped|down|in\s+place"
 _TOUCHED_PP = r"touched|picked\s+up|handled"
+# a condition's placing: "if red has not been placed (has not gone down, is not there)"
+_ARRIVED = rf"{_PLACED_PP}|gone\s+down|there"
 _NOT_YET = (
     rf"(^|[,;]|\band\b)\s*(?:if|as\s+long\s+as|so\s+long\s+as)\s+(?:(?P<x>{_BLOCK})\s+(?:has|is|was)\s+not\s+(?:yet\s+)?"
-    rf"(?:been\s+)?(?P<pp>{_PLACED_PP}|{_TOUCHED_PP})|(?:no\s+arm|nobody|no\s+one)\s+has\s+(?:yet\s+)?"
+    rf"(?:been\s+)?(?P<pp>{_ARRIVED}|{_TOUCHED_PP})|(?:no\s+arm|nobody|no\s+one)\s+has\s+(?:yet\s+)?"
     rf"(?P<pp2>{_TOUCHED_PP})\s+(?P<x2>{_BLOCK}))(?:\s+yet)?\s*,\s*(?:(?:do\s+not|never|(?:you\s+)?"
     rf"(?:must|may|should)\s+not)\s+(?P<verb>place|put(?:\s+down)?|set\s+down|drop|touch|pick\s+up|handle)\s+"
-    rf"(?P<y>{_BLOCK})|leave\s+(?P<y2>{_BLOCK})\s+alone|(?:keep\s+(?:your\s+)?)?hands\s+off\s+(?P<y3>{_BLOCK})|"
+    rf"(?P<y>{_BLOCK})(?:\s+down)?|leave\s+(?P<y2>{_BLOCK})\s+alone|(?:keep\s+(?:your\s+)?)?hands\s+off\s+"
+    rf"(?P<y3>{_BLOCK})|(?:no\s+arm|nobody|no\s+one)\s+(?:touches|picks\s+up|(?:may|can|should)\s+(?:touch|pick\s+up))\s+"
+    rf"(?P<y7>{_BLOCK})|"
     rf"(?P<y4>{_BLOCK})\s+(?:(?:has|needs|will\s+have)\s+to\s+wait|must\s+wait|should\s+wait|waits)|"
+    rf"hold\s+off\s+on\s+(?P<y8>{_BLOCK})|"
     rf"(?P<y5>{_BLOCK})\s+(?:must|may|should|can)\s+not\s+be\s+(?P<ypp>{_PLACED_PP}|{_TOUCHED_PP})|"
     rf"(?P<y6>{_BLOCK})\s+(?:stays|must\s+stay|should\s+stay|remains|must\s+remain)\s+untouched)\s*(?=$|[,;.])"
 )
 
 
 def _not_yet_as_until(m: re.Match[str]) -> str:
-    """The command of a not-yet condition, until the condition holds: a placing ("down", "in place") is
-    "placed"; "leave Y alone", "hands off Y" and "Y stays untouched" do not touch Y; "Y waits" is not
-    placed, or not touched after a condition of touching; "Y must not be V-ed" does not V Y."""
+    """The command of a not-yet condition, until the condition holds: a placing ("down", "in place", "gone
+    down", "there") is "placed"; "leave Y alone", "hands off Y", "nobody touches Y" and "Y stays untouched"
+    do not touch Y; "Y waits" and "hold off on Y" do not place Y, or do not touch it after a condition of
+    touching; "Y must not be V-ed" does not V Y."""
     said = m["pp"] or m["pp2"]
-    placing = re.fullmatch(_PLACED_PP, said) is not None
+    placing = re.fullmatch(_ARRIVED, said) is not None
     done = "placed" if placing else said
     if m["ypp"]:
         placed = re.fullmatch(_PLACED_PP, m["ypp"])
         verb = "place" if placed else {"picked up": "pick up"}.get(m["ypp"], "touch")
     else:
-        verb = m["verb"] or ("place" if m["y4"] and placing else "touch")
-    kept = m["y"] or m["y2"] or m["y3"] or m["y4"] or m["y5"] or m["y6"]
+        verb = m["verb"] or ("place" if (m["y4"] or m["y8"]) and placing else "touch")
+    kept = next(m[f"y{k}"] for k in ("", 2, 3, 4, 5, 6, 7, 8) if m[f"y{k}"])
     return f"{m[1]} do not {verb} {kept} until {m['x'] or m['x2']} has been {done}"
 
 
@@ -315,9 +321,9 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
         rf"when|after)\s+({_BLOCK})\s+(?:has|is)\s+(?:been\s+)?(placed|put\s+down|down|touched|picked\s+up)\b",
         lambda m: f"{m[1]} must not be {m[2]} until {m[3]} has been {'placed' if m[4] == 'down' else m[4]}",
     ),
-    # "if you need to set a block down in the meantime, do not use F, G or H": the period's prohibition
+    # "if (should) you need to set a block down in the meantime, do not use F, G or H": the period's rule
     (
-        r"(^|[,;])\s*if\s+(?:you|we)\s+(?:need|have|want)\s+to\s+(?:set|put|place|lay|rest)\s+(?:a\s+block|an\s+"
+        r"(^|[,;])\s*(?:if\s+(?:you|we)\s+(?:need|have|want)|should\s+(?:you|we)\s+need)\s+to\s+(?:set|put|place|lay|rest)\s+(?:a\s+block|an\s+"
         r"object|a\s+pillar|anything|something|one|it)(?:\s+down)?\s+(meanwhile|in\s+the\s+meantime)\s*,\s*"
         r"(?=(?:do\s+not|never)\s+use\b)",
         r"\1 \2 , ",
