@@ -98,6 +98,43 @@ _PUT_NOTHING = r"(?:put|place|drop|set|leave|lay)\s+(?:nothing|no\s+(?:block|obj
 _BARE_VERB = r"(?:go|be|hold|come|stay|remain|land|end\s+up|sit|get)"
 _LETTERS = r"[e-j](?:\s*(?:,|and|or)\s*[e-j])*"
 
+_COUNTS = {"2": "two", "3": "three"}
+_PLACED_PP = r"placed|put(?:\s+down)?|set\s+down|dropped|down|in\s+place"
+_TOUCHED_PP = r"touched|picked\s+up|handled"
+# a condition's placing: "if red has not been placed (has not gone down, is not there)"
+_ARRIVED = rf"{_PLACED_PP}|gone\s+down|there"
+_NOT_YET = (
+    rf"(^|[,;]|\band\b)\s*(?:if|as\s+long\s+as|so\s+long\s+as)\s+(?:(?P<x>{_BLOCK})\s+(?:has|is|was)\s+not\s+(?:yet\s+)?"
+    rf"(?:been\s+)?(?P<pp>{_ARRIVED}|{_TOUCHED_PP})|(?:no\s+arm|nobody|no\s+one)\s+has\s+(?:yet\s+)?"
+    rf"(?P<pp2>{_TOUCHED_PP})\s+(?P<x2>{_BLOCK}))(?:\s+yet)?\s*,\s*(?:(?:do\s+not|never|(?:you\s+)?"
+    rf"(?:must|may|should)\s+not)\s+(?P<verb>place|put(?:\s+down)?|set\s+down|drop|touch|pick\s+up|handle)\s+"
+    rf"(?P<y>{_BLOCK})(?:\s+down)?|leave\s+(?P<y2>{_BLOCK})\s+alone|(?:keep\s+(?:your\s+)?)?hands\s+off\s+"
+    rf"(?P<y3>{_BLOCK})|(?:no\s+arm|nobody|no\s+one)\s+(?:touches|picks\s+up|(?:may|can|should)\s+(?:touch|pick\s+up))\s+"
+    rf"(?P<y7>{_BLOCK})|"
+    rf"(?P<y4>{_BLOCK})\s+(?:(?:has|needs|will\s+have)\s+to\s+wait|must\s+wait|should\s+wait|waits)|"
+    rf"hold\s+off\s+on\s+(?P<y8>{_BLOCK})|"
+    rf"(?P<y5>{_BLOCK})\s+(?:must|may|should|can)\s+not\s+be\s+(?P<ypp>{_PLACED_PP}|{_TOUCHED_PP})|"
+    rf"(?P<y6>{_BLOCK})\s+(?:stays|must\s+stay|should\s+stay|remains|must\s+remain)\s+untouched)\s*(?=$|[,;.])"
+)
+
+
+def _not_yet_as_until(m: re.Match[str]) -> str:
+    """The command of a not-yet condition, until the condition holds: a placing ("down", "in place", "gone
+    down", "there") is "placed"; "leave Y alone", "hands off Y", "nobody touches Y" and "Y stays untouched"
+    do not touch Y; "Y waits" and "hold off on Y" do not place Y, or do not touch it after a condition of
+    touching; "Y must not be V-ed" does not V Y."""
+    said = m["pp"] or m["pp2"]
+    placing = re.fullmatch(_ARRIVED, said) is not None
+    done = "placed" if placing else said
+    if m["ypp"]:
+        placed = re.fullmatch(_PLACED_PP, m["ypp"])
+        verb = "place" if placed else {"picked up": "pick up"}.get(m["ypp"], "touch")
+    else:
+        verb = m["verb"] or ("place" if (m["y4"] or m["y8"]) and placing else "touch")
+    kept = next(m[f"y{k}"] for k in ("", 2, 3, 4, 5, 6, 7, 8) if m[f"y{k}"])
+    return f"{m[1]} do not {verb} {kept} until {m['x'] or m['x2']} has been {done}"
+
+
 def _letters_between(match: re.Match[str]) -> str:
     """'regions h through j' -> 'regions h , i and j' (a range the wrong way round is left as written)."""
     first, last = match[1], match[2]
@@ -258,14 +295,38 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     ),
     (
         r"^\s*if\s+a\s+region\s+(?:already\s+)?(?:holds|has|contains)\s+(?:a|one)\s+(?:block|object)(?:\s+already)?\s*,\s*"
-        r"(?:do\s+not|don\s+t|never|(?:you\s+)?(?:may|must|should|can)\s*not)\s+(?:put|place|set)\s+(?:another|a\s+second)"
-        r"(?:\s+(?:block|object|one))?\s+(?:there|(?:on|in|onto|into)\s+it)\s*$",
+        r"(?:(?:do\s+not|don\s+t|never|(?:you\s+)?(?:may|must|should|can)\s*not)\s+(?:put|place|set)\s+(?:another|a\s+second)"
+        r"(?:\s+(?:block|object|one))?|(?:put|place|set)\s+no\s+(?:other|second|further)\s+(?:block|object|one))\s+"
+        r"(?:there|(?:on|in|onto|into)\s+it)\s*$",
         "one block per region",
     ),
     (
         rf"^\s*if\s+a\s+region\s+is\s+not\s+(?:one\s+of\s+)?((?:regions?\s+)?{_LETTERS})\s*,\s*"
         r"(?:do\s+not\s+put\s+(?:any\s+object|anything|objects)|put\s+nothing)\s+(?:on|in)\s+it\s*$",
         r"nothing may be put on any region other than \1",
+    ),
+    # a conditional that restates an order or a guard: "if red has not been placed (yet), do not place blue",
+    # "if nobody has touched the red block yet, leave the blue block alone", "if red is not down yet, blue has
+    # to wait": the command until the condition holds ("do not place blue until red has been placed")
+    (_NOT_YET, _not_yet_as_until),
+    # "if a region is F, G or H, put nothing on it" (nothing on F, G or H); "the blue block may only be placed
+    # if (once) the red block has been placed" (not until then)
+    (
+        rf"\bif\s+a\s+region\s+is\s+(?:one\s+of\s+)?((?:regions?\s+)?{_LETTERS})\s*,\s*(?:do\s+not\s+put\s+(?:any\s+"
+        r"object|anything|objects)|put\s+nothing)\s+(?:on|in)\s+it\s*$",
+        r"put nothing on \1",
+    ),
+    (
+        rf"\b({_BLOCK})\s+(?:may|can|must|should)\s+only\s+be\s+(placed|put\s+down|touched|picked\s+up)\s+(?:if|once|"
+        rf"when|after)\s+({_BLOCK})\s+(?:has|is)\s+(?:been\s+)?(placed|put\s+down|down|touched|picked\s+up)\b",
+        lambda m: f"{m[1]} must not be {m[2]} until {m[3]} has been {'placed' if m[4] == 'down' else m[4]}",
+    ),
+    # "if (should) you need to set a block down in the meantime, do not use F, G or H": the period's rule
+    (
+        r"(^|[,;])\s*(?:if\s+(?:you|we)\s+(?:need|have|want)|should\s+(?:you|we)\s+need)\s+to\s+(?:set|put|place|lay|rest)\s+(?:a\s+block|an\s+"
+        r"object|a\s+pillar|anything|something|one|it)(?:\s+down)?\s+(meanwhile|in\s+the\s+meantime)\s*,\s*"
+        r"(?=(?:do\s+not|never)\s+use\b)",
+        r"\1 \2 , ",
     ),
     # the goal as "the idea / plan / intention is to ... / that ...": as "the aim is"
     (r"^\s*(?:the|my|our)\s+(?:idea|plan|intention)(?:\s+here)?\s+is\s+(?=to\s|that\b)", "the aim is "),
@@ -339,8 +400,9 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     # (before "it" is read as a block)
     (r"\b(while\s+(?:you|we|they)\s+(?:are\s+)?(?:do|doing|perform|performing))\s+it\b", r"\1 this"),
     (r"\b(?:somewhere|at\s+some\s+point)\s+along\s+the\s+way\b", "at any time"),
-    # two blocks listed before a colon without "and" ("Red, blue: swap spots"): the pair
-    (r"^\s*(red|blue|yellow)\s*,\s*(red|blue|yellow)\s*(?=:)", r"\1 and \2 "),
+    # two blocks listed before a colon or their place without "and" ("Red, blue: swap spots", "red, blue ->
+    # any empty region"): the pair
+    (r"^\s*(red|blue|yellow)\s*,\s*(red|blue|yellow)\s*(?=:|(?:to|onto|into)\b|-+\s*>|→)", r"\1 and \2 "),
     # telegraphic and bulleted
     (
         r"^\s*((?:the\s+)?(?:two|three|four|\d)\s+(?:blocks|objects|pillars|items|cubes|pieces))\s*,\s*"
@@ -480,6 +542,26 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     # last (a letter the world lacks is refused later, by name); "slot" is a region
     (r"\bregions\s+([e-j])\s+(?:through|thru|to)\s+([e-j])\b", _letters_between),
     (r"\bslot(s?)\b", r"region\1"),
+    # a region named by its mark: "the spot marked G", "the areas labelled G, H and I" (regions G, H and I)
+    (
+        r"\b(?:the\s+)?(?:region|area|zone|spot|place|position|cell|square|pad|location)(s?)\s+(?:marked|labell?ed|"
+        r"lettered)\s+(?=(?:with\s+)?[e-j]\b)(?:with\s+)?",
+        r"region\1 ",
+    ),
+    # a list's count as a multiplier after its noun: "pillars x3" (three pillars; the count is still checked)
+    (r"\b(blocks|pillars|objects|cubes)\s+[x×]\s*([23])\b", lambda m: f"{_COUNTS[m[2]]} {m[1]}"),
+    # telegraphic: "never drop on H, I, J" (drop anything there); "F, G, H: keep clear" (keep F, G, H clear)
+    (
+        r"\b(never|do\s+not)\s+(drop|put|place|set)(?:\s+down)?\s+(?=(?:on|onto|in|into)\s+(?:regions?\s+)?[e-j]\b)",
+        r"\1 \2 anything ",
+    ),
+    (rf"^\s*((?:regions?\s+)?{_LETTERS})\s*:\s*keep\s+(empty|clear|free|vacant|unoccupied)\b", r"keep \1 \2"),
+    # an absolute participle of the one-block rule: "..., one block being put on each region"
+    (
+        r",\s*(?:with\s+)?one\s+(?:block|object|pillar)\s+being\s+(?:put|placed|set)\s+(?:on|in|onto|into)\s+"
+        r"(?:each|every)\s+region\b",
+        ", one object per region",
+    ),
     # the first thing said: "first off", "to start (with)" (as "to begin with": the step comes first)
     (r"(^|,)\s*(?:first\s+off|to\s+start(?:\s+with)?|to\s+start\s+off)\s*(?=,)", r"\1 to begin with "),
     # legal English: "upon" before a place is "on", "thereafter" is "then", "each such region" is each region

@@ -432,11 +432,12 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\b(?:manipulator|gripper|end\s+effector|robotic\s+arm)\b", "arm"),
     (r"\bin\s+(?:an|the|such\s+an)\s+order\s+(?:where|in\s+which|that|such\s+that)\b", ","),
     (r"\s*,?\s*\bsubject\s+to\s+the\s+(?:constraint|condition|rule|requirement)\s+that\b", ","),
-    # "under no circumstances should an object be put on R": an object should never be put on R
+    # "under no circumstances should an object be put on R": an object should never be put on R ("at no point
+    # is an object to be put on R": an object is never to be put on R)
     (
         r"\b(?:under\s+no\s+circumstances|at\s+no\s+(?:time|point))\s+(should|may|can|must|shall|is|are)\s+"
-        r"(an?\s+\w+|any\s+\w+|objects|blocks|nothing|anything)\s+be\b",
-        r"\2 \1 never be",
+        r"(an?\s+\w+|any\s+\w+|objects|blocks|nothing|anything)\s+(to\s+)?be\b",
+        r"\2 \1 never \3be",
     ),
     # "at no point may a region hold two blocks": no region may hold two blocks
     (

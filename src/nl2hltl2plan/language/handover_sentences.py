@@ -73,8 +73,9 @@ def split_sentences(instruction: str) -> list[str]:
     for record in _RECORDS:
         instruction = record.sub(_record_as_goal, instruction)
     # a heading that ends in a colon goes on in the bullet below it: "Place the blocks on:\n- G, H and I"
-    # (after a preposition the colon only ends the line)
-    bullet = r"[ \t]*\n\s*(?:[-*•·]|\d[.)])\s+"
+    # (after a preposition the colon only ends the line); an open checklist box is a bullet ("Checklist:\n[ ]
+    # ...")
+    bullet = r"[ \t]*\n\s*(?:[-*•·]|\d[.)]|\[[ \t]*\]|☐)\s+"
     instruction = re.sub(rf"(?m)\b(on|onto|in|into|to|at)\s*:{bullet}", r"\1 ", instruction)
     instruction = re.sub(rf"(?m):{bullet}", ": ", instruction)
     instruction = re.sub(r"(?m):[ \t]*\n\s*(?=\S)", ": ", instruction)  # a heading on a line of its own

@@ -45,7 +45,7 @@ _CONTRACTIONS = (
     (r"\b(you|we|they|i)\s*'\s*ll\b", r"\1 will"),
     (r"\b(you|we|they)\s*'\s*re\b", r"\1 are"),
     (r"\b(you|we|they|i)\s*'\s*ve\b", r"\1 have"),
-    (r"\b(you|we|i)\s*'\s*d\b", r"\1 would"),
+    (r"\b(you|we|i|it|that|they)\s*'\s*d\b", r"\1 would"),
     # spoken spellings
     (r"\bgonna\b", "going to"),
     (r"\bwanna\b", "want to"),

@@ -5,13 +5,13 @@ is "that s"). Each rewrite changes no meaning; what it does not match is left fo
 it or refuses it by name:
 
 - wishes and indirect requests before a verb: "would it be possible to", "would you be able to", "i was
-  hoping you (the arms) could", "let's", "(could you possibly) have the arms"; a wish with the object and
-  its participle ("i'd like the three blocks moved to", "let's get the blocks placed on", "have the red
-  block put ...") or "go" ("let's have the yellow block go to I") as the command ("move the three blocks
-  to"); a past-tense wish ("it would be great if the yellow block went to I", "... if red and blue
-  swapped places") as the command ("move the yellow block to I", "swap red and blue"); "we'd like F, G
-  and H to stay empty" as "F, G and H must stay empty"; a polite tag at the end ("if that's okay")
-  dropped;
+  hoping you (the arms) could", "i'd love it if you could", "any chance you could", "let's", "(could you
+  possibly) have the arms"; a wish with the object and its participle ("i'd like the three blocks moved
+  to", "let's get the blocks placed on", "have the red block put ...") or "go" ("let's have the yellow
+  block go to I") as the command ("move the three blocks to"); a past-tense wish ("it would be great if
+  the yellow block went to I", "... if red and blue swapped places") as the command ("move the yellow
+  block to I", "swap red and blue"); "we'd like F, G and H to stay empty" as "F, G and H must stay empty";
+  a polite tag at the end ("if that's okay") and a request's "for me" dropped;
 - a goal stated as the final state: "by the end / in the end / when (by the time) you're finished," is
   "at the end," (a last step after other commands, nothing on its own); "the end result should be X on
   P", "the goal is X placed on P" and "what I want to see at the end: X on P" are "at the end, X should
@@ -28,11 +28,12 @@ it or refuses it by name:
 - "with blue left alone until red has been touched" is "blue must not be touched until ...";
 - order words at the end of a clause: "place the red block first and the blue block later (after)",
   "red going down first and blue later" are "... the red block before the blue block";
-- "at your convenience" is "whenever convenient";
+- "at your convenience" is "whenever convenient"; "X need(s) moving (swapping, placing)" is "X need(s) to be
+  moved (swapped, placed)";
 - a goal's manner as its participle after a comma: "..., placed one after another" is "..., one after
   another";
-- kept-empty regions: "free of objects" is "empty"; "while keeping regions F, G and H empty" is "while
-  regions F, G and H stay empty";
+- kept-empty regions: "free of objects" is "empty"; "keep the blocks out of F, G and H" is "put nothing on
+  F, G and H"; "while keeping regions F, G and H empty" is "while regions F, G and H stay empty";
 - one block per region: "never more than one object in a region", "you can't have two on the same
   region", "never two on the same region" and "one block on each of those regions" are "one object per
   region"; "in each region only one
@@ -83,6 +84,11 @@ _WISH_BEFORE_VERB = (
     # "i would like the arms to put ...": the arms named in the wish are the ones asked
     r"(?:i|we)\s+(?:would\s+(?:like|love|prefer)|want|need)\s+(?:the\s+(?:robot\s+)?arms|the\s+robots)\s+to|"
     r"(?:i|we)\s+(?:wonder|am\s+wondering|was\s+wondering)\s+(?:if|whether)\s+you\s+(?:could|would|can|might)|"
+    # "i'd love it if you could put ...", "it would be lovely if you could put ...", "any chance you could put
+    # ...": the request's verb
+    r"(?:is\s+there\s+)?any\s+chance\s+(?:that\s+)?you\s+(?:could|would|can|might)|"
+    r"(?:(?:i|we)\s+would\s+(?:love|like|appreciate)\s+it|it\s+would\s+be\s+(?:great|nice|lovely|wonderful|"
+    r"helpful|brilliant))\s+if\s+you\s+(?:could|would|can)|"
     r"(?:(?:could|would|can|will)\s+you\s+(?:possibly\s+|please\s+|kindly\s+)?)?"
     r"(?:have|get)\s+(?:the\s+)?(?:robot\s+)?(?:arms|robots)(?:\s+to)?)"
 )
@@ -186,12 +192,21 @@ _RULES: tuple[tuple[str, str], ...] = (
     (r"\bat\s+your\s+(?:convenience|leisure)\b", "whenever convenient"),
     # a polite tag at the end ("okay" may be gone already: `unspoken` drops it at a clause's end)
     (r"\b(could|would|can|will)\s+you\s+(?:possibly|perhaps|kindly)\b", r"\1 you"),
+    # a request's "for me / for us" at a clause's end says whom it pleases, never what to do ("could you
+    # swap red and blue for me?")
+    (r"\s+for\s+(?:me|us)\s*(?=$|[,;.?!])", " "),
     (
         rf"\b(?:i|we)\s+(?:would\s+like|want|need)\s+((?:regions?\s+)?{_LETTERS})\s+to\s+(?:stay|remain|be\s+kept)\s+"
         r"(?=(?:empty|clear|free|unoccupied|vacant)\b)",
         r"\1 must stay ",
     ),
     # regions kept empty; one object per region
+    # "keep every block (the blocks, everything, them) out of / away from F, G and H" puts nothing there
+    (
+        r"\bkeep\s+(?:every\s+(?:block|object|pillar)|any\s+(?:block|object|pillar)|(?:all\s+)?(?:the\s+)?(?:three\s+)?"
+        r"(?:blocks|objects|pillars)|everything|anything|them)\s+(?:out\s+of|away\s+from)\s+",
+        "put nothing on ",
+    ),
     (r"\b(?:free|clear|empty)\s+of\s+(?:objects|blocks|pillars|anything|everything|items|things)\b", "empty"),
     (
         rf",?\s*\bwhile\s+(?:keeping|you\s+keep|we\s+keep)\s+((?:regions?\s+)?{_LETTERS})\s+"
@@ -265,6 +280,19 @@ _WISH_GO = re.compile(
 )
 
 
+# "red and blue need swapping", "the blocks need moving onto ...": the passive need ("need to be swapped")
+_BY_VERB = {verb: participle for participle, verb in _PARTICIPLES.items()}
+_NEED_GERUND = re.compile(
+    r"\b(needs?)\s+("
+    + "|".join(g for g, v in (GERUND_VERBS | NEGATED_GERUNDS).items() if v in _BY_VERB)
+    + r")\b"
+)
+
+
+def _need_as_passive(match: re.Match[str]) -> str:
+    return f"{match[1]} to be {_BY_VERB[(GERUND_VERBS | NEGATED_GERUNDS)[match[2]]]}"
+
+
 def _go_as_command(match: re.Match[str]) -> str:
     """ "have X go to P" is "move X to P"; "have X go down / first / before Y" is "X must go down ...": its
     going down is its placing, never its pick-up ("move X before Y" says which block moves first)."""
@@ -302,6 +330,7 @@ def unwished(text: str) -> str:
     text = _WISH_VERB.sub(r"\1 ", text)
     text = _WISH_PARTICIPLE.sub(_as_command, text)
     text = _WISH_GO.sub(_go_as_command, text)
+    text = _NEED_GERUND.sub(_need_as_passive, text)
     text, wishes = _PAST_WISH.subn(_past_as_command, text)
     if wishes:
         text = _AND_WENT.sub(r"\1 move \2", text)
