@@ -308,8 +308,13 @@ _VAGUE_PLACE = re.compile(
 )
 _PLACE_AFTER = re.compile(r"[^,.;!?]*?\b(?:in|into|on|onto|inside|under|to)\b")
 _NUMBER = r"(?:\d+|a|an|one|two|three|four|five|six|ten|fifteen|twenty|thirty|a few|a couple of)"
+# "in a second box": the ordinal before a thing ("another box"), no time (h190); "in a second, put ..." stays
+_ORDINAL_SECOND = (
+    r"(?<!\ba second)(?<!\ban second)"
+    r"|(?<=\ba second)(?!\s+(?!(?:and|or|then|to|so|please|before|after)\b)[a-z])"
+)
 _TIME = re.compile(
-    rf"\b(?:(?:for|in|within|after)\s+{_NUMBER}\s+(?:seconds?|minutes?|mins?|hours?)"
+    rf"\b(?:(?:for|in|within|after)\s+{_NUMBER}\s+(?:seconds?|minutes?|mins?|hours?)(?:{_ORDINAL_SECOND})"
     r"|for a (?:while|bit|moment)|(?:at|for|by|until)\s+\d{1,2}(?::\d\d)?(?:\s*(?:am|pm|o'clock))?"
     r"|(?:before|after|around)\s+\d{1,2}(?::\d\d(?:\s*[ap]m)?|\s*(?:am|pm|o'clock))"
     r"|(?:in\s+the|this|every|each|tomorrow|at)\s+(?:morning|afternoon|evening|night))\b"

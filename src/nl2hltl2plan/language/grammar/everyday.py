@@ -33,6 +33,8 @@ from functools import lru_cache
 
 from nl2hltl2plan.language.content_words import DETERMINERS, categories, free_order_phrase
 from nl2hltl2plan.language.grammar.counted_refs import counted_references
+from nl2hltl2plan.language.grammar.lamp_phrases import carried_to_lamp
+from nl2hltl2plan.language.grammar.order_phrases import state_on_it
 from nl2hltl2plan.language.grammar.repeats import repeated_for_another
 from nl2hltl2plan.language.grammar.restated import count_fits, restated
 from nl2hltl2plan.language.grammar.treatments_said import treatments_said
@@ -203,7 +205,9 @@ def everyday(text: str) -> str:
     text = everyday_names(respelt(text))  # misspelt names of things (language/spelling.py), everyday names
     text = _ONE_AND_OTHER.sub(_each_of_two, text)  # before "the other one" is written out as "the other X"
     text = counted_references(text)  # "the remaining two", "remotes, two of them" (counted_refs.py)
-    text = repeated_for_another(text)  # "... The cup too.": the task before, for the cup (repeats.py)
+    # "... The cup too.": the task before, for the cup (repeats.py); "carry X to the lamp and turn it on"
+    # first written as the examination it is, which a repeat can copy
+    text = repeated_for_another(carried_to_lamp(state_on_it(text)))
     text = _REFERENCE_TO_ALL.sub(_reference_sentence, text)
     text = _PAREN_FREE_ORDER.sub(", in any order", text)
     text = _STEP_COLON.sub(r"\1 ", _ARROW.sub(" onto ", text))
