@@ -119,15 +119,12 @@ def ref_targets(
 
 
 # tasks named by what is done to their things ("the washing jobs", "the heating ones"; h190)
-_KIND_WORDS: dict[str, Kind] = {
-    w: kind
-    for kind, said in (
-        ("clean_place", "wash washing washed rinse rinsing rinsed clean cleaning cleaned"),
-        ("heat_place", "heat heating heated microwave microwaving microwaved warm warming cook cooked"),
-        ("cool_place", "chill chilling chilled cool cooling cooled fridge"),
-    )
-    for w in said.split()
+_KIND_SAID: dict[Kind, str] = {
+    "clean_place": "wash washing washed rinse rinsing rinsed clean cleaning cleaned",
+    "heat_place": "heat heating heated microwave microwaving microwaved warm warming cook cooked",
+    "cool_place": "chill chilling chilled cool cooling cooled fridge",
 }
+_KIND_WORDS: dict[str, Kind] = {w: kind for kind, said in _KIND_SAID.items() for w in said.split()}
 _TASK_WORDS = frozenset({"one", "ones", "job", "jobs", "task", "tasks", "chore", "chores", "part", "parts"})
 _PLURAL_TASK_WORDS = frozenset({"ones", "jobs", "tasks", "chores", "parts"})
 _COUNTS = {"two": 2, "three": 3}
