@@ -155,6 +155,12 @@ def test_a_count_opens_a_verbless_placement_and_a_second_box_is_no_time():
          "heat_place Apple -> DiningTable", "heat_place Egg -> DiningTable"),
         ("Rinse a cloth and put it in the sink. Then put the mug in the same sink once the cloth is in.",
          "clean_place Cloth -> SinkBasin", "place Mug -> SinkBasin"),
+        ("Put the box on the sofa and two mugs in the sink - the sink ones go first.",
+         "place_two 2x Mug -> SinkBasin", "place Box -> Sofa"),
+        ("Heat an egg and put it on the counter. Put the box on the sofa. Counter ones first.",
+         "heat_place Egg -> CounterTop", "place Box -> Sofa"),
+        ("Put the box on the sofa. Wash a mug and put it in the sink. Do the washing one before the others.",
+         "clean_place Mug -> SinkBasin", "place Box -> Sofa"),
     ],
 )
 def test_orders_said_by_these_classes(text, first, then):
@@ -167,8 +173,10 @@ def test_orders_said_by_these_classes(text, first, then):
     "text",
     [
         "Two boxes to the sofa and two mugs to the same sofa.",
-        "Put two plates on the shelf, and do the first two before the lamp ones. Look at the box under the "
-        "floor lamp.",
+        "Put the box on the sofa. Put the mug in the sink. Look at the watch under the floor lamp. Look at "
+        "the statue under it too. Do the first two before the lamp ones.",
+        "Put a plate on the shelf and put a box on the sofa. Look at the watch under the floor lamp, but not "
+        "until both box jobs are done.",
     ],
 )
 def test_more_of_these_classes_read_whole(text):

@@ -295,6 +295,7 @@ _PART = re.compile(
 )
 _PART_OF_ONE = "a part of one thing: no base task moves a part; say 'a slice of' or the whole thing"
 _THE_REST = re.compile(r"\bthe (?:rest|remaining(?: ones)?|others)\b")
+_BEFORE_THE_REST = re.compile(r"\b(?:before|after)\s+$")
 # "A. When the rest is done, B" names the tasks said before (`grammar.references.said_before`), not an amount
 _REST_DONE = re.compile(r" (?:is|are|has been|have been|gets|get) (?:done|finished|complete)")
 _VAGUE_PIECES = re.compile(  # "a few slices": pieces are no mention, so the count check never sees them
@@ -386,6 +387,7 @@ def vague_words(instruction: str, mentions: list[Mention]) -> list[Unread]:
         Unread(m.group(0), "count", "a vague count: say how many")
         for m in (*_THE_REST.finditer(lowered), *_VAGUE_PIECES.finditer(lowered))
         if not (_REST_DONE.match(lowered, m.end()) and re.search(r"[,.;!?]", lowered[: m.start()]))
+        and not _BEFORE_THE_REST.search(lowered, 0, m.start())  # "the roll ones before the others": the tasks
     ]
     out += [
         Unread(m.group(0), "place", "a vague place: name it")

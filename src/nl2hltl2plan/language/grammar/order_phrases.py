@@ -545,3 +545,16 @@ _AND_THEN_STATE = re.compile(
     r"(?P<state>(?:(?:the|that|those|both|all)\s+[a-z]+(?:\s+[a-z]+)?|they|it)\s+(?:is|are)\s+there)(?=\s*(?:[.;!?]|$))",
     re.I,
 )
+
+
+# "A and B - the end table ones go first": a closing order set off by a dash is a sentence of its own, which
+# names its tasks (`word_tables.FIRST_LAST_SENTENCE`; h190)
+_DASHED_FIRST = re.compile(
+    r"\s+[-\u2013\u2014]\s+(?=(?:do\s+)?(?:the|that|this)\s+[a-z][a-z\s]*?\s+(?:first|last)\s*[.!]?\s*$)",
+    re.I,
+)
+
+
+def dashed_first(text: str) -> str:
+    """ "A and B - the end table ones go first." -> "A and B. the end table ones go first."."""
+    return _DASHED_FIRST.sub(". ", text)

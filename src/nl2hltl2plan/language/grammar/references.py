@@ -111,7 +111,8 @@ def ref_targets(
                 ]
         if hit:
             found.append(hit[-1])
-            if (np.plural or words[-1] in _PLURAL_TASK_WORDS) and len(hit) > 1:  # "the lamp ones": each
+            # "the lamp ones", "both pen jobs (are done)": each
+            if (np.plural or _PLURAL_TASK_WORDS.intersection(words) or words[0] == "both") and len(hit) > 1:
                 found.extend(hit)
         else:
             missing.append(part)
@@ -128,6 +129,7 @@ _KIND_WORDS: dict[str, Kind] = {w: kind for kind, said in _KIND_SAID.items() for
 _TASK_WORDS = frozenset({"one", "ones", "job", "jobs", "task", "tasks", "chore", "chores", "part", "parts"})
 _PLURAL_TASK_WORDS = frozenset({"ones", "jobs", "tasks", "chores", "parts"})
 _COUNTS = {"two": 2, "three": 3}
+_DONE_AFTER = re.compile(r"\s+(?:is|are|have\s+been|has\s+been)\s+(?:done|finished|complete|completed|over)$")
 
 
 def _described(words: list[str], specs: list[BaseTaskSpec], candidates: list[int]) -> list[int] | None:
@@ -136,12 +138,17 @@ def _described(words: list[str], specs: list[BaseTaskSpec], candidates: list[int
     if len(words) == 3 and words[0] == "the" and words[1] in {"first", "last"} and words[2] in _COUNTS:
         n = _COUNTS[words[2]]
         return candidates[:n] if words[1] == "first" else candidates[-n:]
+    words = _DONE_AFTER.sub("", " ".join(words)).split()  # "both pen jobs are done"
     if not words or words[-1] not in _TASK_WORDS:
         return None
     kinds = {_KIND_WORDS[w] for w in words[:-1] if w in _KIND_WORDS}
-    if len(kinds) != 1:
+    if len(kinds) == 1:
+        return [i for i in candidates if specs[i].kind in kinds]
+    if words[0] not in {"both", "all"}:
         return None
-    return [i for i in candidates if specs[i].kind in kinds]
+    # "both pen jobs": every task on that thing
+    np = parse_np(" ".join(w for w in words[1:-1] if w != "the"))
+    return [i for i in candidates if np.entry is not None and np.entry.canonical in specs[i].object]
 
 
 def _names_a_thing_before_place(words: list[str]) -> bool:
