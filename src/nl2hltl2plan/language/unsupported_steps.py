@@ -294,8 +294,8 @@ _PART = re.compile(
     r"\s+(?:the\s+|an?\s+|your\s+|my\s+)?"
 )
 _PART_OF_ONE = "a part of one thing: no base task moves a part; say 'a slice of' or the whole thing"
-_THE_REST = re.compile(r"\bthe (?:rest|remaining(?: ones)?|others)\b")
-_BEFORE_THE_REST = re.compile(r"\b(?:before|after)\s+$")
+# not "the roll ones before the others": the other tasks (h190)
+_THE_REST = re.compile(r"(?<!\bbefore )(?<!\bafter )\bthe (?:rest|remaining(?: ones)?|others)\b")
 # "A. When the rest is done, B" names the tasks said before (`grammar.references.said_before`), not an amount
 _REST_DONE = re.compile(r" (?:is|are|has been|have been|gets|get) (?:done|finished|complete)")
 _VAGUE_PIECES = re.compile(  # "a few slices": pieces are no mention, so the count check never sees them
@@ -310,10 +310,7 @@ _VAGUE_PLACE = re.compile(
 _PLACE_AFTER = re.compile(r"[^,.;!?]*?\b(?:in|into|on|onto|inside|under|to)\b")
 _NUMBER = r"(?:\d+|a|an|one|two|three|four|five|six|ten|fifteen|twenty|thirty|a few|a couple of)"
 # "in a second box": the ordinal before a thing ("another box"), no time (h190); "in a second, put ..." stays
-_ORDINAL_SECOND = (
-    r"(?<!\ba second)(?<!\ban second)"
-    r"|(?<=\ba second)(?!\s+(?!(?:and|or|then|to|so|please|before|after)\b)[a-z])"
-)
+_ORDINAL_SECOND = r"(?<!\ba second)|(?<=\ba second)(?!\s+(?!(?:and|or|then|to|so|please)\b)[a-z])"
 _TIME = re.compile(
     rf"\b(?:(?:for|in|within|after)\s+{_NUMBER}\s+(?:seconds?|minutes?|mins?|hours?)(?:{_ORDINAL_SECOND})"
     r"|for a (?:while|bit|moment)|(?:at|for|by|until)\s+\d{1,2}(?::\d\d)?(?:\s*(?:am|pm|o'clock))?"
@@ -387,7 +384,6 @@ def vague_words(instruction: str, mentions: list[Mention]) -> list[Unread]:
         Unread(m.group(0), "count", "a vague count: say how many")
         for m in (*_THE_REST.finditer(lowered), *_VAGUE_PIECES.finditer(lowered))
         if not (_REST_DONE.match(lowered, m.end()) and re.search(r"[,.;!?]", lowered[: m.start()]))
-        and not _BEFORE_THE_REST.search(lowered, 0, m.start())  # "the roll ones before the others": the tasks
     ]
     out += [
         Unread(m.group(0), "place", "a vague place: name it")
