@@ -14,6 +14,9 @@ from nl2hltl2plan.language.grounding import Mention, camel_words, find_mentions,
 from nl2hltl2plan.language.parse_usage import ParseUsage
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
 
+# nouns that make a thing's name a description of tasks ("both bowl jobs", "the lamp ones")
+_TASK_NOUNS = frozenset({"job", "jobs", "ones", "task", "tasks", "chores"})
+
 
 def count_value(cats: frozenset[str], word: str) -> int | None:
     if word.isdigit():
@@ -84,6 +87,8 @@ def count_unread(
         return None
     if _both_before_a_list(w, instruction, start, m) or (i > 0 and toks[i - 1][0] in ("those", "these")):
         return None  # "both the mug and the apple"; "after those two, the fork": tasks, not forks
+    if m.end < len(words) and words[m.end] in _TASK_NOUNS:
+        return None  # "until both bowl jobs are done": two tasks named by their thing, not two bowls (h190)
     if _of_all(words, i):
         return None
     types = set(m.entry.types)

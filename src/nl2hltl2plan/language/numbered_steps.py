@@ -30,7 +30,11 @@ from nl2hltl2plan.language.content_words import free_order_remarks
 
 _ORDINALS = {"first": 1, "second": 2, "third": 3, "fourth": 4, "one": 1, "two": 2, "three": 3, "four": 4}
 _NUMBER = r"(?:\d+|one|two|three|four)"
-_STEP_REF = rf"(?:step\s+(?:number\s+)?{_NUMBER}|the\s+(?:first|second|third|fourth)\s+step)"
+# "step 2", "the second step", and a step's bare number ("do 2 first", "1 last", "3 before 2": h190), which
+# names a step only where the text numbers two or more (`_bare_without_steps`)
+_STEP_REF = (
+    rf"(?:step\s+(?:number\s+)?{_NUMBER}|the\s+(?:first|second|third|fourth)\s+step|(?:number\s+)?\d+)"
+)
 # a numbered step: "1." / "1)" / "Step 1:" opening the text or following a sentence's end or a colon
 _STEP = re.compile(rf"(?:^|(?<=[.:;!?])\s+|\s+(?=\d[.)]\s))(?:step\s+)?(?P<n>{_NUMBER})\s*[.):]\s+", re.I)
 _SAID = (
@@ -45,6 +49,12 @@ _SAID = (
         re.I,
     ),
 )
+# any other order said by step numbers ("2 before 1, and 4 last"): read in the steps' numbered turn, it was
+# the opposite of what was asked, so it is refused by name
+_ORDER_SAID = rf"(?:do\s+)?{_STEP_REF}\s+(?:(?:comes?|goes?)\s+)?(?:first|last|before|after)\b"
+_LOOSE = re.compile(rf"^{_ORDER_SAID}", re.I)
+# an order line set off by a dash after the last step ("1. A 2. B 3. C - do 2 before 3"): its own sentence
+_DASHED_ORDER = re.compile(rf"\s+[-\u2013\u2014]\s+(?={_ORDER_SAID})", re.I)
 
 
 # a list of bullets ("To do: - put the keychain in the box - put the pillow on the armchair"): a dash or a
@@ -71,9 +81,17 @@ def step_order(text: str) -> str:
     docstring), a list of bullets as its sentences (`bullets_apart`); text with no such order comes back
     as it is. Raises HTTError naming what cannot be read."""
     text = bullets_apart(text)
+    if len(_STEP.findall(text)) >= 2:
+        text = _DASHED_ORDER.sub(". ", text)
     sentences = re.split(r"(?<=[.!?])\s+", text.strip())
     said = [(k, m) for k, s in enumerate(sentences) for p in _SAID if (m := p.match(s.strip(" .!?")))]
+    said = [(k, m) for k, m in said if not _bare_without_steps(m, sentences, k)]
     if not said:
+        loose = [s for k, s in enumerate(sentences)
+                 if k and _LOOSE.match(s.strip()) and _steps_of(sentences, k)]
+        if loose:
+            said_as = loose[0].strip(" .")
+            raise HTTError(f"{said_as!r}: say the steps' order one way (\"do step 2 first\")")
         return _in_turn(text)
     if len(said) > 1:
         raise HTTError("the order of the steps is said twice; say it once")
@@ -93,6 +111,21 @@ def step_order(text: str) -> str:
         if named[0] == named[1]:
             raise HTTError(f"{m[0]!r} orders a step against itself")
     return ", then ".join(steps[n] for n in chain) + "."
+
+
+def _steps_of(sentences: list[str], k: int) -> dict[int, str]:
+    """The numbered steps of the text without its sentence `k`, where it numbers two or more (else none)."""
+    try:
+        steps = _steps(" ".join(sentences[:k] + sentences[k + 1 :]))
+    except HTTError:
+        return {}
+    return steps if len(steps) > 1 else {}
+
+
+def _bare_without_steps(m: re.Match[str], sentences: list[str], k: int) -> bool:
+    """A bare number ("Do 2 first") where the text numbers fewer than two steps names no step."""
+    bare = not re.search(r"step", m[0], re.I)
+    return bare and not _steps_of(sentences, k)
 
 
 def _in_turn(text: str) -> str:

@@ -294,7 +294,8 @@ _PART = re.compile(
     r"\s+(?:the\s+|an?\s+|your\s+|my\s+)?"
 )
 _PART_OF_ONE = "a part of one thing: no base task moves a part; say 'a slice of' or the whole thing"
-_THE_REST = re.compile(r"\bthe (?:rest|remaining(?: ones)?|others)\b")
+# not "the roll ones before the others": the other tasks (h190)
+_THE_REST = re.compile(r"(?<!\bbefore )(?<!\bafter )\bthe (?:rest|remaining(?: ones)?|others)\b")
 # "A. When the rest is done, B" names the tasks said before (`grammar.references.said_before`), not an amount
 _REST_DONE = re.compile(r" (?:is|are|has been|have been|gets|get) (?:done|finished|complete)")
 _VAGUE_PIECES = re.compile(  # "a few slices": pieces are no mention, so the count check never sees them
@@ -308,8 +309,10 @@ _VAGUE_PLACE = re.compile(
 )
 _PLACE_AFTER = re.compile(r"[^,.;!?]*?\b(?:in|into|on|onto|inside|under|to)\b")
 _NUMBER = r"(?:\d+|a|an|one|two|three|four|five|six|ten|fifteen|twenty|thirty|a few|a couple of)"
+# "in a second box": the ordinal before a thing ("another box"), no time (h190); "in a second, put ..." stays
+_ORDINAL_SECOND = r"(?<!\ba second)|(?<=\ba second)(?!\s+(?!(?:and|or|then|to|so|please)\b)[a-z])"
 _TIME = re.compile(
-    rf"\b(?:(?:for|in|within|after)\s+{_NUMBER}\s+(?:seconds?|minutes?|mins?|hours?)"
+    rf"\b(?:(?:for|in|within|after)\s+{_NUMBER}\s+(?:seconds?|minutes?|mins?|hours?)(?:{_ORDINAL_SECOND})"
     r"|for a (?:while|bit|moment)|(?:at|for|by|until)\s+\d{1,2}(?::\d\d)?(?:\s*(?:am|pm|o'clock))?"
     r"|(?:before|after|around)\s+\d{1,2}(?::\d\d(?:\s*[ap]m)?|\s*(?:am|pm|o'clock))"
     r"|(?:in\s+the|this|every|each|tomorrow|at)\s+(?:morning|afternoon|evening|night))\b"

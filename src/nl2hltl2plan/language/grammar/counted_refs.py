@@ -40,7 +40,11 @@ _COUNTED_OTHER = re.compile(
     rf"\b(?:the\s+(?:remaining|other)\s+(?P<n>{_N})|both\s+(?:of\s+the\s+)?other(?P<s>s)?)\b", re.I
 )
 # "the rest of the (Xs)", "the rest of them", "the remaining (ones|Xs)", "the others"
-_REST = re.compile(r"\bthe\s+(?:rest\s+of\s+(?:the\b|them\b)|remaining\b(?:\s+ones\b)?|others\b)", re.I)
+# not "before the others" / "after the rest": the other tasks (an order, `order_relations._OTHERS`; h190)
+_REST = re.compile(
+    r"(?<!\bbefore\s)(?<!\bafter\s)\bthe\s+(?:rest\s+of\s+(?:the\b|them\b)|remaining\b(?:\s+ones\b)?|others\b)",
+    re.I,
+)
 # "the other one", or "the other" alone before a place or the clause's end
 _OTHER_ONE = re.compile(
     r"(?<!after\s)\bthe\s+other(?:\s+one\b|(?=\s*(?:$|[,.;!?]|(?:in|into|on|onto|inside|to|too|as\s+well|goes|go)\b)))",

@@ -34,6 +34,8 @@ from functools import lru_cache
 
 from nl2hltl2plan.language.content_words import DETERMINERS, categories, free_order_phrase
 from nl2hltl2plan.language.grammar.counted_refs import another_said, counted_references
+from nl2hltl2plan.language.grammar.lamp_phrases import carried_to_lamp
+from nl2hltl2plan.language.grammar.order_phrases import dashed_first, state_on_it
 from nl2hltl2plan.language.grammar.repeats import repeated_for_another
 from nl2hltl2plan.language.grammar.restated import count_fits, restated
 from nl2hltl2plan.language.grammar.treatments_said import treatments_said
@@ -156,7 +158,9 @@ _REFERENCE_TO_ALL = re.compile(
     r"|(?<=\w)\s*,?\s+(?:and\s+)?(?P<short>(?:after|once)\s+(?:those|these|the)\s+(?:two|three|four)"
     r"(?:\s+(?:are|have\s+been)\s+(?:done|finished))?"
     r"|once\s+both\s+(?:of\s+(?:them|those)\s+)?(?:are|have\s+been)\s+(?:done|finished)"
-    r"|after\s+both(?:\s+of\s+(?:them|those))?)(?=\s*,?\s+[a-z]))\s*,?\s+",
+    # not "after both pen jobs are done": the tasks named by their thing (`references.ref_targets`; h190)
+    r"|after\s+both(?:\s+of\s+(?:them|those))?(?!\s+(?:[a-z]+\s+){1,2}(?:jobs?|ones|tasks?|chores)\b))"
+    r"(?=\s*,?\s+[a-z]))\s*,?\s+",
     re.I,
 )
 
@@ -201,7 +205,9 @@ def everyday(text: str) -> str:
     text = everyday_names(respelt(text))  # misspelt names of things (language/spelling.py), everyday names
     text = _ONE_AND_OTHER.sub(_each_of_two, text)  # before "the other one" is written out as "the other X"
     text = counted_references(text)  # "the remaining two", "remotes, two of them" (counted_refs.py)
-    text = repeated_for_another(text)  # "... The cup too.": the task before, for the cup (repeats.py)
+    # "... The cup too.": the task before, for the cup (repeats.py); "carry X to the lamp and turn it on"
+    # first written as the examination it is, which a repeat can copy
+    text = repeated_for_another(carried_to_lamp(state_on_it(dashed_first(text))))
     text = _REFERENCE_TO_ALL.sub(_reference_sentence, text)
     text = _PAREN_FREE_ORDER.sub(", in any order", text)
     text = _STEP_COLON.sub(r"\1 ", _ARROW.sub(" onto ", text))

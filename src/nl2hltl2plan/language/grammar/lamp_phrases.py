@@ -98,6 +98,19 @@ _WHILE_YOU = re.compile(r"\bwhile\s+you(?:'re|\s+are)?\s+(turn|switch|hold|carry
 _GERUND = {"turn": "turning", "switch": "switching", "hold": "holding", "carry": "carrying"}
 
 
+# "carry the laptop to the lamp and turn it on", "bring the watch over to the floor lamp and switch it on":
+# ALFRED's look-at-in-light told as its steps, written as the examination it is ("look at the laptop under the
+# lamp"), so that "do the same with X" after it repeats an examination, not a carrying (h190; a later clause
+# read "the lamp" as the laptop's destination, and "do the same with the statue" found no task to repeat)
+_CARRY_TO_LAMP = re.compile(
+    r"\b(?:carry|take|bring)\s+(?P<np>(?:the|a|an|another|one)\s+(?:[a-z]+\s+){0,2}?[a-z]+|it)\s+"
+    r"(?:over\s+|across\s+)?to\s+(?P<lamp>(?:the|a)\s+(?:[a-z]+\s+)?lamp)\s+and\s+(?:then\s+)?(?:turn|switch)\s+"
+    r"(?:(?:it|the\s+(?:[a-z]+\s+)?lamp|that\s+lamp)\s+on|on\s+(?:it|the\s+(?:[a-z]+\s+)?lamp|that\s+lamp))\b"
+    r"(?!\s+(?:in\s+order\s+)?to\s)",
+    re.I,
+)
+
+
 def _purpose_said(m: re.Match[str]) -> str:
     """The purpose dropped where it names the thing carried to the lamp (it, or a noun said before)."""
     what = m["what"].lower().split()
@@ -113,9 +126,15 @@ def _lamp_used(m: re.Match[str]) -> str:
     return f"{m['verb']} {m['obj']} {'under' if listed else 'by the light of'} the {m['lamp']}"
 
 
+def carried_to_lamp(text: str) -> str:
+    """ "carry X to the lamp and turn it on" -> "look at X under the lamp" (`_CARRY_TO_LAMP`); `everyday`
+    applies it before a repeat ("do the same with the statue") is written out, and `lamp_phrasing` again."""
+    return _CARRY_TO_LAMP.sub(lambda m: f"{'lL'[m[0][0].isupper()]}ook at {m['np']} under {m['lamp']}", text)
+
+
 def lamp_phrasing(text: str) -> str:
     """`text` with each phrasing above rewritten (its comment says which)."""
-    text = _LOOK_OVER.sub(r"\1 at ", _LIGHT_FROM.sub("light of ", text))
+    text = _LOOK_OVER.sub(r"\1 at ", _LIGHT_FROM.sub("light of ", carried_to_lamp(text)))
     text = _LAMP_FIRST.sub(lambda m: f"{_A_LOOK_AT.sub('look at', m['verb'])} {m['things']} under the "
                            f"{m['lamp']}{m['tail'] or ''}", text)
     text = _USE_LAMP.sub(_lamp_used, text)

@@ -516,3 +516,45 @@ _THE_MOMENT = re.compile(
 def the_moment(text: str) -> str:
     """ "The moment the apple is on the table, Y" -> "Once the apple is on the table, Y"."""
     return _THE_MOMENT.sub(lambda m: "Once " if m["the"][0] == "T" else "once ", text)
+
+
+# "put the sponge there too once the bottle is on it", "once they're in": the state of a thing put in the
+# place just named, "once the bottle is there", the reference the rules read (h190); "is in the fridge" stays
+_ON_IT = re.compile(
+    r"\b(?P<lead>once|after|when)\s+(?P<np>(?:the|that|those|both|all)\s+[a-z]+(?:\s+[a-z]+)?|they|it)\s*"
+    r"(?P<verb>is|are|'s|'re)\s+(?:now\s+)?(?:on|in|inside|onto)(?:\s+(?:it|there))?(?=\s*(?:[,.;!?]|$))",
+    re.I,
+)
+
+
+def state_on_it(text: str) -> str:
+    """ "once the bottle is on it" / "once they're in" -> "once the bottle is there" / "once they are
+    there"."""
+
+    def there(m: re.Match[str]) -> str:
+        verb = {"'s": "is", "'re": "are"}.get(m["verb"].lower(), m["verb"])
+        return f"{m['lead']} {m['np']} {verb} there"
+
+    text = _ON_IT.sub(there, text)
+    # "A, and B there too once the bottle is there": the condition is B's, said as a sentence of its own
+    return _AND_THEN_STATE.sub(lambda m: f". {m['lead'].capitalize()} {m['state']}, {m['clause']}", text)
+
+
+_AND_THEN_STATE = re.compile(
+    r",\s+and\s+(?P<clause>[^,.;!?]+?\bthere\b[^,.;!?]*?)\s+(?P<lead>once|after|when)\s+"
+    r"(?P<state>(?:(?:the|that|those|both|all)\s+[a-z]+(?:\s+[a-z]+)?|they|it)\s+(?:is|are)\s+there)(?=\s*(?:[.;!?]|$))",
+    re.I,
+)
+
+
+# "A and B - the end table ones go first": a closing order set off by a dash is a sentence of its own, which
+# names its tasks (`word_tables.FIRST_LAST_SENTENCE`; h190)
+_DASHED_FIRST = re.compile(
+    r"\s+[-\u2013\u2014]\s+(?=(?:do\s+)?(?:the|that|this)\s+[a-z][a-z\s]*?\s+(?:first|last)\s*[.!]?\s*$)",
+    re.I,
+)
+
+
+def dashed_first(text: str) -> str:
+    """ "A and B - the end table ones go first." -> "A and B. the end table ones go first."."""
+    return _DASHED_FIRST.sub(". ", text)

@@ -536,6 +536,9 @@ def _leading_last(units: list[Unit], free: set[int], edges: Edges) -> None:
     edges.update((t, a) for t in later for a in head)
 
 
+_OTHERS = re.compile(r"(?:the\s+others|the\s+rest|everything\s+else|all\s+the\s+others)$", re.I)
+
+
 def _sentence_edges(relations: list[RelationSentence], tasks: Tasks, b: TaskBuilder, edges: Edges) -> None:
     """Relation sentences between objects ("the red block should be placed before the blue block")."""
     for rel in relations:
@@ -552,6 +555,8 @@ def _sentence_edges(relations: list[RelationSentence], tasks: Tasks, b: TaskBuil
             edges.update((x, y) if rel.kind == "first" else (y, x) for x in ta for y in others)
             continue
         tb, _ = ref_targets(rel.b, tasks.specs, tasks.nps)
+        if _OTHERS.match(rel.b.strip()):  # "Do the roll ones before the others": every task not named first
+            tb = [y for y in range(len(tasks.specs)) if y not in ta]
         if not ta or not tb:
             b.unparsed.append(f"{rel.a} {rel.kind} {rel.b}")
         for x in ta:

@@ -76,6 +76,11 @@ def ref_targets(
     candidates = [i for i in range(len(specs)) if i not in (exclude or [])]
     for part in _ref_parts(ref):
         words = [w for w, _, _ in tokens(part)]
+        if (described := _described(words, specs, candidates)) is not None:
+            found.extend(described)
+            if not described:
+                missing.append(part)
+            continue
         np = _ref_np(words)
         hit: list[int] = []
         if (
@@ -84,6 +89,10 @@ def ref_targets(
             or (not np.entry and any(w in {"lamp", "light"} for w in words))
         ):
             hit = [i for i in candidates if specs[i].kind == "examine_in_light"]
+            if np.entry is not None and np.entry.canonical in {"DeskLamp", "FloorLamp"}:
+                # "the floor lamp one": the tasks under that lamp, the one said for it alone first (h190)
+                lit = [i for i in hit if (specs[i].light or []) == [np.entry.canonical]]
+                hit = lit or [i for i in hit if np.entry.canonical in (specs[i].light or [])] or hit
             if (held := _held_np(words)) is not None:  # "turn on the lamp with the newspaper at hand"
                 hit = _hits_by_object(held, specs, nps, hit)
         elif np.entry is not None or np.head:
@@ -102,11 +111,44 @@ def ref_targets(
                 ]
         if hit:
             found.append(hit[-1])
-            if np.plural and len(hit) > 1:
+            # "the lamp ones", "both pen jobs (are done)": each
+            if (np.plural or _PLURAL_TASK_WORDS.intersection(words) or words[0] == "both") and len(hit) > 1:
                 found.extend(hit)
         else:
             missing.append(part)
     return sorted(set(found)), missing
+
+
+# tasks named by what is done to their things ("the washing jobs", "the heating ones"; h190)
+_KIND_SAID: dict[Kind, str] = {
+    "clean_place": "wash washing washed rinse rinsing rinsed clean cleaning cleaned",
+    "heat_place": "heat heating heated microwave microwaving microwaved warm warming cook cooked",
+    "cool_place": "chill chilling chilled cool cooling cooled fridge",
+}
+_KIND_WORDS: dict[str, Kind] = {w: kind for kind, said in _KIND_SAID.items() for w in said.split()}
+_TASK_WORDS = frozenset({"one", "ones", "job", "jobs", "task", "tasks", "chore", "chores", "part", "parts"})
+_PLURAL_TASK_WORDS = frozenset({"ones", "jobs", "tasks", "chores", "parts"})
+_COUNTS = {"two": 2, "three": 3}
+_DONE_AFTER = re.compile(r"\s+(?:is|are|have\s+been|has\s+been)\s+(?:done|finished|complete|completed|over)$")
+
+
+def _described(words: list[str], specs: list[BaseTaskSpec], candidates: list[int]) -> list[int] | None:
+    """Tasks a reference names by position ("the first two": the two said first) or by their treatment with a
+    task noun ("the washing jobs"); every such task, in the order said. None: no such reference."""
+    if len(words) == 3 and words[0] == "the" and words[1] in {"first", "last"} and words[2] in _COUNTS:
+        n = _COUNTS[words[2]]
+        return candidates[:n] if words[1] == "first" else candidates[-n:]
+    words = _DONE_AFTER.sub("", " ".join(words)).split()  # "both pen jobs are done"
+    if not words or words[-1] not in _TASK_WORDS:
+        return None
+    kinds = {_KIND_WORDS[w] for w in words[:-1] if w in _KIND_WORDS}
+    if len(kinds) == 1:
+        return [i for i in candidates if specs[i].kind in kinds]
+    if words[0] not in {"both", "all"}:
+        return None
+    # "both pen jobs": every task on that thing
+    np = parse_np(" ".join(w for w in words[1:-1] if w != "the"))
+    return [i for i in candidates if np.entry is not None and np.entry.canonical in specs[i].object]
 
 
 def _names_a_thing_before_place(words: list[str]) -> bool:

@@ -107,9 +107,11 @@ _TASK_VERBS = frozenset(
 _OPENING = _TASK_VERBS | {"verb_switch"}  # "turn on the lamp while holding the book"
 
 
-# "do the same for a book and then a cushion": two repeats, the second after the first
+# "do the same for a book and then a cushion", "... with the statue, and then with a plate": two repeats, the
+# second after the first
 _SAME_THEN = re.compile(
-    rf"(?P<head>\b(?:the\s+)?same\s+(?:thing\s+)?(?:for|with|to)\s+{_NP})\s*,?\s+(?:and\s+)?then\s+(?P<np>{_NP})"
+    rf"(?P<head>\b(?:the\s+)?same\s+(?:thing\s+)?(?:for|with|to)\s+{_NP})\s*,?\s+(?:and\s+)?then\s+"
+    rf"(?:(?:for|with|to)\s+)?(?P<np>{_NP})"
     r"(?=\s*(?:[.;!?]|$))",
     re.I,
 )

@@ -161,10 +161,16 @@ def strip_trailing(body: str) -> tuple[list[tuple[str, str]], str]:
     return trailing, body
 
 
-# "Do the candle before the soap.": an order between the tasks of two named objects
+# "Do the candle before the soap.": an order between the tasks of two named objects; also tasks named by a
+# description ("Do the roll ones before the others", "The washing jobs before the potato", "do the first two
+# before the lamp ones": h190; `references.ref_targets` reads the descriptions), the verb left out only where
+# the first words name tasks ("ones", "jobs") or their position ("the first two")
+_TASKS_SAID = r"(?:ones?|jobs?|tasks?|chores?|parts?|first\s+(?:two|three)|last\s+(?:two|three))"
 _DO_BEFORE = re.compile(
-    r"^(?:please\s+)?(?:do|handle)\s+(?P<a>(?:the|that|this)\s+[a-z]+(?:\s+[a-z]+)?)\s+(?P<rel>before|after)\s+"
-    r"(?P<b>(?:the|that|this)\s+[a-z]+(?:\s+[a-z]+)?)$",
+    r"^(?:(?:please\s+)?(?:do|handle)\s+(?P<a>(?:the|that|this)\s+[a-z]+(?:\s+[a-z]+){0,2})"
+    rf"|(?P<a2>(?:the|that|this)\s+(?:[a-z]+\s+){{0,2}}{_TASKS_SAID}))"
+    r"\s+(?P<rel>before|after)\s+"
+    r"(?P<b>(?:the|that|this|all\s+the)\s+[a-z]+(?:\s+[a-z]+){0,2}|everything\s+else|the\s+rest)$",
     re.IGNORECASE,
 )
 
@@ -173,7 +179,7 @@ def relation_sentence(body: str) -> RelationSentence | None:
     """ "The red block should be placed before the blue block" (a sentence that starts with no verb), "Do the
     candle before the soap"."""
     if one := _DO_BEFORE.match(body):
-        return RelationSentence(one["rel"].lower(), one["a"], one["b"])
+        return RelationSentence(one["rel"].lower(), one["a"] or one["a2"], one["b"])
     rel = G.REL_SENTENCE.match(body)
     if rel and not any(w in G.VERBS for w, _, _ in tokens(rel.group("a"))[:1]):
         return RelationSentence(rel.group("rel").lower(), rel.group("a"), rel.group("b"))
@@ -528,7 +534,8 @@ def _names_object_before(text: str, at: int) -> bool:
     return bool(mentions) and mentions[-1].char_end == len(text[:at].rstrip())
 
 
-_LIST_WORDS = frozenset({"the", "a", "an", "and", "or", "both", ","})
+# a count names the objects too ("Two rags to the shelf", "two phones to the sofa": h190)
+_LIST_WORDS = frozenset({"the", "a", "an", "and", "or", "both", ",", "two", "three", "four"})
 
 
 def _verbless_placement(body: str) -> bool:

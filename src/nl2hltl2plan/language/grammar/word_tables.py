@@ -535,7 +535,7 @@ TRAILING: list[tuple[re.Pattern[str], str]] = [
             r"(?:done|completed|performed|finished|placed|put|moved|carried\s+out)\s+)?(?:but\s+)?"
             r"(?:(?:only|right|just|immediately)\s+)?"
             r"(?P<rel>after|before|once|when(?=\s+(?:\w+ing|the)\b))\s+(?P<ref>(?:\w+ing\b|the\s|you\s|having\s|all\s|every|each|"
-            r"finishing|completing).+)$",
+            r"both\s+(?=(?:[a-z]+\s+){1,2}(?:jobs?|ones|tasks?|chores)\b)|finishing|completing).+)$",
             _F,
         ),
         "ref",
@@ -583,9 +583,11 @@ ORDINALS = {"first": 0, "second": 1, "third": 2, "fourth": 3}
 # not say what it frees, and is left to the rules)
 NO_ORDER_SENTENCE = re.compile(rf"\b{free_order_phrase('clause')}\b", _F)
 # "Do the fork first.", "The mug last.", "Start with the fork.": the task of one named object before (after)
-# every other task
+# every other task; "the" may be left out before tasks named so ("Counter ones first"), "go" said (h190)
 FIRST_LAST_SENTENCE = re.compile(
-    r"^(?:(?:please\s+)?(?:do|handle|deal\s+with)\s+)?(?P<a>(?:the|that|this)\s+[a-z][a-z\s]*?)\s+"
+    r"^(?:(?:please\s+)?(?:do|handle|deal\s+with)\s+)?"
+    r"(?P<a>(?:the|that|this)\s+[a-z][a-z\s]*?|[a-z]+(?:\s+[a-z]+)?\s+(?:ones?|jobs?|tasks?))\s+"
+    r"(?:(?:go|goes|come|comes|should\s+(?:go|come)|get\s+done|gets\s+done)\s+)?"
     r"(?P<rel>first|last)(?:\s*,?\s*(?:please|though))?$"
     r"|^(?:please\s+)?(?:start|begin)\s+with\s+(?P<start>(?:the|that|this)\s+[a-z][a-z\s]*?)(?:\s*,?\s*please)?$",
     _F,
