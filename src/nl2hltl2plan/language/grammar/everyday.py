@@ -92,17 +92,26 @@ _START_OPENER = re.compile(
     re.I,
 )
 _LIKE = re.compile(r",\s*like\s*,", re.I)
+# the verbs a step opens with (a filler "like" before one, "go on to" before one)
+_STEP_VERB = (
+    r"(?:put|place|move|set|drop|take|bring|carry|grab|pick|get|wash|rinse|clean|heat|warm|cool|chill|slice|cut|"
+    r"throw|toss|turn|switch|examine|look|hold|open|close|stick|leave)"
+)
+# a spoken "like" with no commas (users_h195dev): after "then" / "and" / "so" before a step or a thing
+# ("then like put ...", "and then like both soap bars ..."), after "you" before a verb ("can you like hold
+# ..."); left, "then like put X" was read as "then do the like (the same) with X". "whenever you like",
+# "like the mug", "do it like this" stay
+_LIKE_SPOKEN = re.compile(
+    rf"(?:(?<=\bthen\s)|(?<=\band\s)|(?<=\bso\s))like\s*,?\s+(?=(?:{_STEP_VERB}|the|a|an|both|two|all)\b)"
+    rf"|(?:(?<=\byou\s)|(?<=\bu\s))like\s+(?={_STEP_VERB}\b)",
+    re.I,
+)
 _TAG = re.compile(r",\s*(?:yeah|yep|ok|okay|alright|right)\s*(?=[.!?]?\s*$)", re.I)
 _JUST = re.compile(r"\bjust\s+(?=(?:put|place|move|pop|drop|set|stick|leave)\b)", re.I)
 # connectives written around a step (issue 28, users_h128dev.txt): "then go on to put X" is "then put X"
 # (the "then" belongs to the put, not to a clause of going), "in the meantime" is "meanwhile", "start off
 # by" is "start by", and "..., and finish by putting Y" after an opening step is a sentence of its own
-_GO_ON = re.compile(
-    r"\b(?:(?:go|move|carry)\s+on|proceed|continue)\s+(?:to|and)\s+"
-    r"(?=(?:put|place|move|set|drop|take|bring|carry|grab|pick|get|wash|rinse|clean|heat|cool|chill|slice|cut|"
-    r"throw|toss|turn|switch|examine|look|hold|open|close)\b)",
-    re.I,
-)
+_GO_ON = re.compile(rf"\b(?:(?:go|move|carry)\s+on|proceed|continue)\s+(?:to|and)\s+(?={_STEP_VERB}\b)", re.I)
 _FIRST_STEP = re.compile(r"^\s*(?:start|begin|first(?:ly)?|to\s+(?:start|begin))\b", re.I)
 _MEANTIME = re.compile(r"\bin\s+the\s+meantime\b", re.I)
 # "past the skillet step, Y" is "after the skillet step, Y" (a step passed, never a place walked past)
@@ -193,16 +202,24 @@ def _cased(word: str, like: str) -> str:
 
 
 @lru_cache(maxsize=1024)  # check 1 asks again for every reading it judges (about five per instruction)
+def _without_fillers(text: str) -> str:
+    """The text without its spoken fillers: hesitations, ", like," between commas and a spoken "like"."""
+    text = re.sub(r"(\s*,)+", ",", _HESITATION.sub(" ", text))  # the commas left where fillers were
+    return re.sub(r"\band\s*,\s*", "and ", _LIKE_SPOKEN.sub("", _LIKE.sub(",", text)))
+
+
 def everyday(text: str) -> str:
     """The text with the everyday styles above rewritten onto the forms the grammar reads (a pure function
     of the text)."""
     text = _BARE.sub(lambda m: _BARE_CONTRACTION[m[1].lower()], _UR_DONE.sub("you're ", text))
+    text = _without_fillers(text)  # first: "and, like, the box on there too" is "and the box there too"
     text = _ONE_MORE.sub(lambda m: _cased("another", m[0]), text)
     if _FREE_REMARK.search(text):  # "1. X. 2. Y. Any order is fine.": the numbers only list the steps
         text = _NUMBERED.sub(lambda m: m["lead"], text)
     text = everyday_names(respelt(text))  # misspelt names of things (language/spelling.py), everyday names
     text = _ONE_AND_OTHER.sub(_each_of_two, text)  # before "the other one" is written out as "the other X"
     text = counted_references(text)  # "the remaining two", "remotes, two of them" (counted_refs.py)
+    text = _LAMP_WITH_IT_ON.sub(r"\g<lamp>", text)  # before a repeat copies the sentence
     text = repeated_for_another(text)  # "... The cup too.": the task before, for the cup (repeats.py)
     text = _REFERENCE_TO_ALL.sub(_reference_sentence, text)
     text = _PAREN_FREE_ORDER.sub(", in any order", text)
@@ -214,10 +231,9 @@ def everyday(text: str) -> str:
     text = _IT_PLACE.sub(_fixture_named, text)
     text = _ANOTHER_AGAIN.sub("one more", _COUNT_LEFT.sub(_count_named, text))
     text = _THING_FIRST.sub(lambda m: f"{m['lead']}take {m['np']}, ", text)
-    text = _HESITATION.sub(" ", _ORDER_THO.sub(_order_tho, text))
+    text = _ORDER_THO.sub(_order_tho, text)
     text = _DONE_AT_END.sub(_done_at_end, text)
-    text = re.sub(r"(\s*,)+", ",", text)  # the commas left where fillers were
-    text = _LIKE.sub(",", _TAG.sub("", text))
+    text = _TAG.sub("", text)
     text = _START_OPENER.sub("", _OPENER.sub(r"\1", text))
     text = _JUST.sub("", text)
     text = _START_OFF.sub(r"\1 ", _MEANTIME.sub("meanwhile", _GO_ON.sub("", text)))
@@ -352,6 +368,16 @@ _THEN_UNDER_LAMP = re.compile(
     r"\s*,?\s+and\s+then\s+(?P<b>(?:the|a|an|another)\s+[a-z]+(?:\s+[a-z]+){0,2}?)\s+"
     r"(?P<lamp>(?:under|by|beneath|in)\s+(?:the\s+light\s+of\s+)?(?:the|a)\s+(?:[a-z]+\s+){0,2}?(?:lamp|light))"
     r"(?=\s*(?:[.;!?,]|$))",
+    re.I,
+)
+
+
+# "hold the pillow under the desk lamp with it on": the lamp on is what looking under it is, so "with it on"
+# says nothing more (users_h195dev); left, the sentence was no plain one, and "then do the same with the cd"
+# after it had no task to repeat
+_LAMP_WITH_IT_ON = re.compile(
+    r"(?P<lamp>\b(?:under|by|beneath)\s+(?:the|a)\s+(?:[a-z]+\s+)?(?:lamp|light))\s+with\s+(?:it|the\s+lamp)\s+"
+    r"(?:turned\s+|switched\s+)?on\b",
     re.I,
 )
 
