@@ -32,6 +32,7 @@ import re
 from functools import lru_cache
 
 from nl2hltl2plan.language.content_words import DETERMINERS, categories, free_order_phrase
+from nl2hltl2plan.language.courtesy import courtesy_pattern
 from nl2hltl2plan.language.grammar.counted_refs import counted_references
 from nl2hltl2plan.language.grammar.repeats import repeated_for_another
 from nl2hltl2plan.language.grammar.restated import count_fits, restated
@@ -201,18 +202,48 @@ def _cased(word: str, like: str) -> str:
     return word.capitalize() if like[:1].isupper() else word
 
 
-@lru_cache(maxsize=1024)  # check 1 asks again for every reading it judges (about five per instruction)
+# a list pasted from a phone's notes app (users_h195dev): its heading ("bathroom:", "to do:") opening the text
+_NOTE_HEADING = re.compile(rf"^\s*{courtesy_pattern('note_heading')}\s*:\s*(?=\w)", re.I)
+# an item of the list with no determiner ("..., toilet paper roll on the holder")
+_ITEM = re.compile(r"(?<=[,;])(?P<sp>\s*)(?P<item>[a-z][^,;.!?]*)", re.I)
+# "wash a cloth, cloth in the drawer": the thing treated, said again bare with its place, is put there
+_THING_AGAIN = re.compile(
+    r"\b(?P<verb>wash|rinse|clean|heat|warm|cool|chill)\s+(?:a|an|the)\s+(?P<x>[a-z]+(?:\s+[a-z]+)?)\s*,\s*"
+    r"(?:the\s+)?(?P=x)\s+(?:goes\s+)?(?P<prep>in|into|on|onto|inside)\s+",
+    re.I,
+)
+
+
+def _noted(text: str) -> str:
+    """A notes-app list onto the forms the rules read: its heading dropped, an item's bare name given "the",
+    a treated thing said again with its place put there."""
+    text = _THING_AGAIN.sub(lambda m: f"{m['verb']} the {m['x']} and put it {m['prep']} ", _NOTE_HEADING.sub("", text))
+    return _ITEM.sub(_item_named, text)
+
+
+def _item_named(m: re.Match[str]) -> str:
+    """ "toilet paper roll on the holder" -> "the toilet paper roll on the holder" (a name first, then a place)."""
+    item = m["item"]
+    named = find_mentions(item)
+    if not named or named[0].char_start != 0 or item.split()[0].lower() in DETERMINERS:
+        return m[0]
+    if not re.match(r"\s+(?:in|into|on|onto|inside)\s", item[named[0].char_end :], re.I):
+        return m[0]
+    return f"{m['sp']}the {item}"
+
+
 def _without_fillers(text: str) -> str:
     """The text without its spoken fillers: hesitations, ", like," between commas and a spoken "like"."""
     text = re.sub(r"(\s*,)+", ",", _HESITATION.sub(" ", text))  # the commas left where fillers were
     return re.sub(r"\band\s*,\s*", "and ", _LIKE_SPOKEN.sub("", _LIKE.sub(",", text)))
 
 
+@lru_cache(maxsize=1024)  # check 1 asks again for every reading it judges (about five per instruction)
 def everyday(text: str) -> str:
     """The text with the everyday styles above rewritten onto the forms the grammar reads (a pure function
     of the text)."""
     text = _BARE.sub(lambda m: _BARE_CONTRACTION[m[1].lower()], _UR_DONE.sub("you're ", text))
-    text = _without_fillers(text)  # first: "and, like, the box on there too" is "and the box there too"
+    text = _noted(_without_fillers(text))  # first: "and, like, the box on there too" is "and the box there too"
     text = _ONE_MORE.sub(lambda m: _cased("another", m[0]), text)
     if _FREE_REMARK.search(text):  # "1. X. 2. Y. Any order is fine.": the numbers only list the steps
         text = _NUMBERED.sub(lambda m: m["lead"], text)
