@@ -37,6 +37,7 @@ from nl2hltl2plan.language.grammar.counted_refs import counted_references
 from nl2hltl2plan.language.grammar.repeats import repeated_for_another
 from nl2hltl2plan.language.grammar.restated import count_fits, restated
 from nl2hltl2plan.language.grammar.treatments_said import treatments_said
+from nl2hltl2plan.language.grammar.use_names import named_by_use
 from nl2hltl2plan.language.grounding import (
     Mention,
     alfred_lookup,
@@ -217,12 +218,13 @@ _THING_AGAIN = re.compile(
 def _noted(text: str) -> str:
     """A notes-app list onto the forms the rules read: its heading dropped, an item's bare name given "the",
     a treated thing said again with its place put there."""
-    text = _THING_AGAIN.sub(lambda m: f"{m['verb']} the {m['x']} and put it {m['prep']} ", _NOTE_HEADING.sub("", text))
+    text = _NOTE_HEADING.sub("", text)
+    text = _THING_AGAIN.sub(lambda m: f"{m['verb']} the {m['x']} and put it {m['prep']} ", text)
     return _ITEM.sub(_item_named, text)
 
 
 def _item_named(m: re.Match[str]) -> str:
-    """ "toilet paper roll on the holder" -> "the toilet paper roll on the holder" (a name first, then a place)."""
+    """ "toilet paper roll on the holder" -> "the toilet paper roll on the holder" (a name, then a place)."""
     item = m["item"]
     named = find_mentions(item)
     if not named or named[0].char_start != 0 or item.split()[0].lower() in DETERMINERS:
@@ -243,11 +245,11 @@ def everyday(text: str) -> str:
     """The text with the everyday styles above rewritten onto the forms the grammar reads (a pure function
     of the text)."""
     text = _BARE.sub(lambda m: _BARE_CONTRACTION[m[1].lower()], _UR_DONE.sub("you're ", text))
-    text = _noted(_without_fillers(text))  # first: "and, like, the box on there too" is "and the box there too"
+    text = _noted(_without_fillers(text))  # first: "and, like, the box on there too" finds its place
     text = _ONE_MORE.sub(lambda m: _cased("another", m[0]), text)
     if _FREE_REMARK.search(text):  # "1. X. 2. Y. Any order is fine.": the numbers only list the steps
         text = _NUMBERED.sub(lambda m: m["lead"], text)
-    text = everyday_names(respelt(text))  # misspelt names of things (language/spelling.py), everyday names
+    text = named_by_use(everyday_names(respelt(text)))  # misspelt names, everyday names, names by use
     text = _ONE_AND_OTHER.sub(_each_of_two, text)  # before "the other one" is written out as "the other X"
     text = counted_references(text)  # "the remaining two", "remotes, two of them" (counted_refs.py)
     text = _LAMP_WITH_IT_ON.sub(r"\g<lamp>", text)  # before a repeat copies the sentence

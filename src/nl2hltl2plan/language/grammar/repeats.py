@@ -149,7 +149,7 @@ def repeated_for_another(text: str) -> str:
             written = True
             continue
         if not REPEAT_FRAGMENT.match(fragment):
-            # its order word stays with it ("After that, look at X. Then the Y too."), a request's question not
+            # its order word stays with it ("After that, look at X. Then the Y too."), its question not
             task = _ASKED.sub("", fragment.strip())
         out.append(body)
     return "".join(out) if written else text

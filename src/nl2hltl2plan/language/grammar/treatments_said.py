@@ -78,7 +78,7 @@ _PRONOUN_GOAL = re.compile(
     r"ends?\s+up|goes|go)\s+(?P<prep>in|into|on|onto|inside)\s+(?=(?:the|a|an)\s)",
     re.I,
 )
-# "make it cold", "make cold the bowl", "tomato make it cold" (a non-native speaker's causative, users_h195dev):
+# "make it cold", "make cold the bowl", "tomato make it cold" (a non-native speaker's causative, h195dev):
 # the treatment's verb; a name said bare before it is the thing ("tomato make it cold": chill the tomato)
 _MAKE_STATE = re.compile(
     r"(?P<lead>(?:^|(?<=[,.;:!?])\s*|\b(?:and|then|you|please)\s+))(?:(?P<topic>[a-z]+(?:\s+[a-z]+)?)\s+)?"
@@ -95,7 +95,9 @@ _AFTER_STEP = re.compile(rf"(?:(?<=^)|(?<=[,.;!?]\s)|(?<=\band\s))after\s*,?\s+(
 # after "once", "after", "when", "before" or "if": "once you put X" is a clause of its own)
 _YOU_STEP = re.compile(rf"(?P<lead>(?:^|[.;!?]\s*|\bthen\s+|\bplease\s+))you\s+(?={_STEP}\b)", re.I)
 _GIVE_ON = re.compile(r"\bgive\s+(?P<it>it|them)\s+(?=(?:on|in|into|onto|inside)\s)", re.I)
-_PUT_BARE = re.compile(r"(?<=\S)(?P<lead>\s+(?:and\s+|then\s+)*)(?P<verb>put|place)\s+(?=(?:inside|into|in|onto|on|to)\s)", re.I)
+_PUT_BARE = re.compile(
+    r"(?<=\S)(?P<lead>\s+(?:and\s+|then\s+)*)(?P<verb>put|place)\s+(?=(?:inside|into|in|onto|on|to)\s)", re.I
+)
 _TEXTED_ID = re.compile(r"\bid\s+(?=(?:like|love|prefer|want)\b)", re.I)  # "id like" as texted: "I'd like"
 _COURTESY_AFTER_FIRST = re.compile(r"\bfirst\s*,?\s*(?:please|pls|plz)\s*(?=[.!]?\s*$)", re.I)
 _BARE_FIRST = re.compile(r"(?P<lead>(?:^|[,.;:]|\bthen)\s*)(?P<name>[a-z]+(?:\s+[a-z]+)?)\s+first\b", re.I)
