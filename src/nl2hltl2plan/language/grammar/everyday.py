@@ -320,6 +320,8 @@ _THERE = re.compile(
     r"(?:it|them|(?:the|a|an|two|both|\d)\s+[a-z]+(?:\s+(?!over\b)[a-z]+)?)"
     r"|(?:(?<=\bthen\s)|(?<=\band\s))(?:the|a|an|two|three|both|\d)\s+[a-z]+(?:\s+(?!over\b)[a-z]+){0,2}?)"
     r"(?P<source>\s+from\s+(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)??"  # "the bottle from the toilet there"
+    # "and a spoon in the bowl on there as well": the container, on the last place (users_h195dev)
+    r"(?P<inner>\s+(?:in|into|inside)\s+(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?(?=\s+(?:on|onto)\s+there\b))?"
     # "and two rolls next to it": beside the thing placed last, so where it was put
     r"\s+(?:(?:(?:in|into|inside|on|onto|over)\s+)?(?:there|(?:next\s+to|beside)\s+it)\b"
     r"(?=\s*(?:too|as\s+well|also)?\s*(?:[,.;!?]|$|and\b|then\b))"
@@ -353,7 +355,8 @@ def _there_named(m: re.Match[str]) -> str:
     prep = "in" if prep == "to" else prep  # "walk to the sink ... in there"
     if m["head"].split()[0].lower() in ("carry", "take", "bring", "move"):
         prep = "to"  # "carry the pan over there": to the table ("carry the pan on the table": where it is)
-    return f"{m['head']}{m['source'] or ''} {prep} the {place.surface}" + (" " if m[0].endswith(" ") else "")
+    said = f"{m['head']}{m['source'] or ''}{m['inner'] or ''} {prep} the {place.surface}"
+    return said + (" " if m[0].endswith(" ") else "")
 
 
 # a bare "it" as a place, where it can only be a fixture that holds things (a bed, a fridge: ALFRED cannot
