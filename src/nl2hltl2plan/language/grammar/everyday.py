@@ -38,6 +38,7 @@ from nl2hltl2plan.language.grammar.repeats import repeated_for_another
 from nl2hltl2plan.language.grammar.restated import count_fits, restated
 from nl2hltl2plan.language.grammar.treatments_said import treatments_said
 from nl2hltl2plan.language.grammar.use_names import named_by_use
+from nl2hltl2plan.language.grammar.word_tables import VERBS
 from nl2hltl2plan.language.grounding import (
     Mention,
     alfred_lookup,
@@ -227,7 +228,8 @@ def _item_named(m: re.Match[str]) -> str:
     """ "toilet paper roll on the holder" -> "the toilet paper roll on the holder" (a name, then a place)."""
     item = m["item"]
     named = find_mentions(item)
-    if not named or named[0].char_start != 0 or item.split()[0].lower() in DETERMINERS:
+    first = item.split()[0].lower()  # a verb opens a clause ("..., switch on the lamp"), not an item
+    if not named or named[0].char_start != 0 or first in DETERMINERS or first in VERBS:
         return m[0]
     if not re.match(r"\s+(?:in|into|on|onto|inside)\s", item[named[0].char_end :], re.I):
         return m[0]
