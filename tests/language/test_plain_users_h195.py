@@ -69,7 +69,10 @@ def test_plain_user_voices(text, tasks, before):
     "text, tasks",
     [
         # a correction by the same head noun: the lamp is corrected (refused before: the remote or the lamp?)
-        ("look at the remote by the desk lamp, sorry, floor lamp", ["examine_in_light RemoteControl under FloorLamp"]),
+        (
+            "look at the remote by the desk lamp, sorry, floor lamp",
+            ["examine_in_light RemoteControl under FloorLamp"],
+        ),
         # "oh and" opening a sentence (its "oh" was read as a thing: "put oh in the tub too")
         (
             "put the watch in the box. oh and the remote in the box too",

@@ -276,12 +276,13 @@ KNOWN_WRONG: set[str] = {
     # soap bottle before the towel, "both" unkept, check 1 silent; h188's rule keeps the model's out
     "Put the plunger in the cabinet. Put the soap bottle in the cabinet too, both before you put the hand "
     "towel in the cabinet.",
-    # h195's dev set: its truths order "then" / "finally" for their own clause only, where the reader follows
-    # the paper sets' convention ("then A, and B too": both after; "A, then B, C, and finally D": a sequence)
-    "heat one potato and put it in the sink. then chill just one slice of potato and throw it in the bin, and "
-    "wash one slice of lettuce and toss it in the bin too",
-    "um okay so, look at the remote under the floor lamp, then like put a credit card in a box and put the box "
-    "on the dresser, uh, put both statues on the dresser too, and finally the watch in a box on the dining table",
+    # h195's dev set: its truths order "then" / "finally" for their own clause only, where the reader
+    # follows the paper sets' convention ("then A, and B too": both after; "A, then B, C, and finally D")
+    "heat one potato and put it in the sink. then chill just one slice of potato and throw it in the bin, "
+    "and wash one slice of lettuce and toss it in the bin too",
+    "um okay so, look at the remote under the floor lamp, then like put a credit card in a box and put the "
+    "box on the dresser, uh, put both statues on the dresser too, and finally the watch in a box on the "
+    "dining table",
 }
 
 
