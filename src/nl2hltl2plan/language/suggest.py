@@ -66,16 +66,17 @@ def refuse_unmovable(tasks: Sequence[BaseTaskSpec], instruction: str, world: Wor
     """A task that picks up a thing the world has only as fixtures ("scrub the toilet": a Toilet cannot be
     picked up, so it cannot be washed in the sink) is no task: HTTError naming the word, and what the
     world can do of that kind (the things there that can be picked up and so treated). Judged on every
-    backend's reading; `set_state` tasks (switch, open, break) act in place and are not asked."""
+    backend's reading; `set_state` tasks (switch, open, break) act in place and are not asked, but for one
+    that holds the thing ("take a bath": the BathtubBasin held, users_h195held)."""
     for t in tasks:
-        if t.kind == "set_state" or not t.object:
+        if (t.kind == "set_state" and t.state != "held") or not t.object:
             continue
         there = [o for ty in t.object for o in world.instances(ty) if o.present]
         if not there or any(o.affordances.pickupable for o in there):
             continue  # a type the world lacks is refused elsewhere, naming the missing type
         said = [m.surface for m in find_mentions(t.text or instruction) if set(m.entry.types) & set(t.object)]
         word = said[0] if said else camel_words(t.object[0])
-        verb, flag = _TREATED.get(t.kind, ("move", ""))
+        verb, flag = ("hold", "") if t.kind == "set_state" else _TREATED.get(t.kind, ("move", ""))
         able = sorted({o.type for o in world.objects.values() if o.present and o.affordances.pickupable
                        and (not flag or getattr(o.affordances, flag))})  # fmt: skip
         can = f"; things there to {verb}: {', '.join(camel_words(a) for a in able[:4])}" if able else ""

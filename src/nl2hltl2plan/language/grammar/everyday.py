@@ -228,7 +228,7 @@ _CONTAINER_AGAIN = re.compile(
 def _noted(text: str) -> str:
     """A notes-app list onto the forms the rules read: its heading dropped, an item's bare name given "the",
     a treated thing said again with its place put there."""
-    text = _NOTE_HEADING.sub("", text)
+    text = re.sub(r"\s+/\s+", "; ", _NOTE_HEADING.sub("", text))  # "A / B": items, as ";" says
     text = _THING_AGAIN.sub(lambda m: f"{m['verb']} the {m['x']} and put it {m['prep']} ", text)
     return _CONTAINER_AGAIN.sub(r"\g<head> and put the \g<c> ", _ITEM.sub(_item_named, text))
 
