@@ -11,6 +11,7 @@ from pathlib import Path
 
 import pytest
 
+from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.grammar import parse_instruction
 from nl2hltl2plan.language.translate import translate
 
@@ -85,6 +86,22 @@ def test_said_in_passing(text, tasks):
 
     res = translate(text, world_of("FloorPlan213"), build=False, actions="none")
     assert ([t.summary() for t in res.tasks], res.unparsed) == (tasks, [])
+
+
+def test_a_spaced_slash_separates_list_items():
+    """ "A / B" pasted from a notes app: two items (the second was dropped silently, the boxes put on the
+    armchair)."""
+    tasks, _, unread = read("kitchen: the egg in the fridge / bread on the counter")
+    assert (tasks, unread) == (["place Egg -> Fridge", "place Bread -> CounterTop"], [])
+
+
+@pytest.mark.data
+def test_a_fixture_held_is_refused():
+    """ "then take a bath" read the BathtubBasin held, a task at exit 0; a fixture cannot be picked up."""
+    from trust_sets import world_of
+
+    with pytest.raises(HTTError, match=r"'bath': a bathtub basin cannot be picked up, so no task can hold"):
+        translate("put the soap bar in the tub and then take a bath", world_of("FloorPlan419"), build=False)
 
 
 def test_a_use_not_listed_stays_to_be_refused():

@@ -283,6 +283,14 @@ KNOWN_WRONG: set[str] = {
     "um okay so, look at the remote under the floor lamp, then like put a credit card in a box and put the "
     "box on the dresser, uh, put both statues on the dresser too, and finally the watch in a box on the "
     "dining table",
+    # h195's held-out half (scored once at efb6c7c5): the same "then" convention twice, and "when you finish
+    # all" closing a clause after two "then"s is not read as "finally" (the hand towel after the cloths)
+    "look at the remote under the floor lamp, then put the watch in a box and the box on the dining table, "
+    "oops i mean the coffee table, and put a credit card in a box on the dresser",
+    "put both spatulas in a drawer, warm up the coffee mug and put it in the coffee maker, then put the "
+    "butter knife on a plate and the plate on the counter",
+    "you throw two spray bottle in garbage, then two cloth put on side table, then two soap bar in bathtub, "
+    "and hand towel put in bathtub when you finish all",
 }
 
 
