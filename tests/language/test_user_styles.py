@@ -274,6 +274,21 @@ KNOWN_WRONG: set[str] = {
     # soap bottle before the towel, "both" unkept, check 1 silent; h188's rule keeps the model's out
     "Put the plunger in the cabinet. Put the soap bottle in the cabinet too, both before you put the hand "
     "towel in the cabinet.",
+    # h195's dev set: its truths order "then" / "finally" for their own clause only, where the reader
+    # follows the paper sets' convention ("then A, and B too": both after; "A, then B, C, and finally D")
+    "heat one potato and put it in the sink. then chill just one slice of potato and throw it in the bin, "
+    "and wash one slice of lettuce and toss it in the bin too",
+    "um okay so, look at the remote under the floor lamp, then like put a credit card in a box and put the "
+    "box on the dresser, uh, put both statues on the dresser too, and finally the watch in a box on the "
+    "dining table",
+    # h195's held-out half (scored once at efb6c7c5): the same "then" convention twice, and "when you finish
+    # all" closing a clause after two "then"s is not read as "finally" (the hand towel after the cloths)
+    "look at the remote under the floor lamp, then put the watch in a box and the box on the dining table, "
+    "oops i mean the coffee table, and put a credit card in a box on the dresser",
+    "put both spatulas in a drawer, warm up the coffee mug and put it in the coffee maker, then put the "
+    "butter knife on a plate and the plate on the counter",
+    "you throw two spray bottle in garbage, then two cloth put on side table, then two soap bar in bathtub, "
+    "and hand towel put in bathtub when you finish all",
 }
 
 

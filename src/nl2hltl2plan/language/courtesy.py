@@ -46,9 +46,15 @@ _FRAME = re.compile(rf"(?:,\s*)?\b{_FRAMES}\b(?=\s*(?:[,.;:!?]|$))\s*,?", re.I)
 
 # an afterthought set off by "oh" inside a sentence ("A and then B oh and put C too"): a new request, not a
 # step of the clause before it, so it is a sentence of its own ("A and then B. Also put C too", where C takes
-# no order from B); one that opens a sentence ("... B. Oh and put C") is already one, and stays as written
+# no order from B); one that opens a sentence ("... B. Oh and put C") is one already, and stays as written
 _AFTERTHOUGHT = re.compile(
     rf"(?<=\w)\s*,?\s+oh\s*,?\s+{courtesy_pattern('afterthought')}\s*,?\s+(?=[a-z])", re.I
+)
+# the same "oh" opening a sentence with no verb ("... B. oh and the towel in the tub too", users_h195dev):
+# "Also", as inside one (its "oh" was read as a thing: "put oh in the tub"); before a verb the rules read it
+_OPENING_OH = re.compile(
+    rf"(?<=[.;!?])(\s*)oh\s*,?\s+{courtesy_pattern('afterthought')}\s*,?\s+(?=(?:the|a|an|both|two|\d)\s)",
+    re.I,
 )
 # "don't forget to put ...": a reminder, which asks as "please" asks (never a negation); "don't forget to
 # not ..." and "don't forget the mug" stay, and are read or refused as they are
@@ -107,7 +113,8 @@ def without_courtesy(text: str) -> str:
     >>> without_courtesy("put the pear in the fridge and yeah that's it. the cup in the sink or whatever lol")
     'put the pear in the fridge. the cup in the sink'
     """
-    out = _FRAME.sub(" ", _REMINDER.sub("", _AFTERTHOUGHT.sub(". Also ", _TRAILING.sub("", text))))
+    out = _AFTERTHOUGHT.sub(". Also ", _OPENING_OH.sub(r"\1Also ", _TRAILING.sub("", text)))
+    out = _FRAME.sub(" ", _REMINDER.sub("", out))
     out = re.sub(r"\s+([,.;:!?])", r"\1", " ".join(out.split()))
     out = re.sub(r"^[\s,.;:!?]+", "", out)
     return out if re.search(r"\w", out) else text

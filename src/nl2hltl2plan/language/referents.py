@@ -36,6 +36,7 @@ from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.content_words import DETERMINERS, LOCATIVE, categories, word_categories
 from nl2hltl2plan.language.counts import count_value
 from nl2hltl2plan.language.grammar.counted_refs import ONE_MORE, counted_references
+from nl2hltl2plan.language.grammar.use_names import named_by_use
 from nl2hltl2plan.language.grounding import (
     Mention,
     camel_words,
@@ -79,7 +80,8 @@ def check_referents(
     fewer things than the scene holds where no convention of the world reads it (see the module's
     docstring); returns the assumptions a convention made ("'the forks': read as 2 of ...").
     `forbidden`: the types the instruction's negations act on ("don't touch the towel")."""
-    instruction = counted_references(instruction)  # "remotes, two of them": "two remotes" (h185)
+    # "remotes, two of them": "two remotes" (h185); "the cup for coffee": "the mug" (h195), as the grammar
+    instruction = named_by_use(counted_references(instruction))
     scopes = mention_scopes(instruction, tasks)  # both checks below ask each word's tasks
     decided = exact_names(instruction, tasks, instances, scene, forbidden, scopes)
     moved_twice(instruction, tasks, before)

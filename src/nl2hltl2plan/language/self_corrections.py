@@ -255,6 +255,11 @@ def _replaced(before: str, said: str, marker: str, roles: Roles) -> str:
     # no place said yet: a thing); more than one is unclear ("the pan in the sink, I mean the pot")
     want = roles.of(named[0]) & {_role_at(before, n) for n in found}
     candidates = [n for n in found if _role_at(before, n) in want]
+    # "the remote by the desk lamp, sorry, floor lamp": one name before it with the same head noun is what it
+    # replaces, whatever the roles (users_h195dev)
+    kin = [n for n in found if n.surface.lower().split()[-1] == named[0].surface.lower().split()[-1]]
+    if len(want) != 1 and len(kin) == 1:
+        want, candidates = {_role_at(before, kin[0])}, kin
     if len(want) != 1:
         what = " or ".join(repr(n.surface) for n in found[-2:]) or "nothing said before it"
         unclear = f"which words the correction {marker!r} {said!r} replaces is unclear ({what})"

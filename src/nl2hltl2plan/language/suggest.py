@@ -62,7 +62,7 @@ def refuse_unmovable(tasks: Sequence[BaseTaskSpec], instruction: str, world: Wor
     """A task that picks up a thing the world has only as fixtures ("scrub the toilet": a Toilet cannot be
     picked up, so it cannot be washed in the sink) is no task: HTTError naming the word, with the world's
     own reason (`BaseTask.unmovable`, which `BaseTask.missing` gives first). Judged on every backend's
-    reading."""
+    reading; a `set_state` task that holds the thing is asked too ("take a bath": the BathtubBasin held)."""
     for t in tasks:
         if why := t.unmovable(world):
             said = (m.surface for m in find_mentions(t.text or instruction) if {*m.entry.types} & {*t.object})

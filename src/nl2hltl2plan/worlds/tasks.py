@@ -149,11 +149,14 @@ class BaseTask(BaseModel):
     def unmovable(self, world: World) -> str | None:
         """Why no task of this kind can pick up its object where the world has it only as fixtures ("a toilet
         cannot be picked up, so no task can wash it; things there to wash: cloth, soap bar"); None if one can
-        be picked up, or the world lacks the type (`missing` names that). `set_state` acts in place."""
+        be picked up, or the world lacks the type (`missing` names that). `set_state` acts in place (switch,
+        open, break), but for a state that holds the thing ("take a bath": the BathtubBasin held)."""
         there = [o for ty in self.object for o in world.instances(ty) if o.present]
-        if self.kind == "set_state" or not there or any(o.affordances.pickupable for o in there):
+        in_place = self.kind == "set_state" and self.state != "held"
+        if in_place or not there or any(o.affordances.pickupable for o in there):
             return None
-        verb, flag = TREATED_VERB.get(self.kind, "move"), TREATMENT.get(self.kind)
+        verb = "hold" if self.kind == "set_state" else TREATED_VERB.get(self.kind, "move")
+        flag = TREATMENT.get(self.kind)
         able = sorted({o.type for o in world.objects.values() if o.present and o.affordances.pickupable
                        and (not flag or getattr(o.affordances, flag))})  # fmt: skip
         can = f"; things there to {verb}: {', '.join(camel_words(a) for a in able[:4])}" if able else ""

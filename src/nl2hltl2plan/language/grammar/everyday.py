@@ -33,12 +33,15 @@ import re
 from functools import lru_cache
 
 from nl2hltl2plan.language.content_words import DETERMINERS, categories, free_order_phrase
+from nl2hltl2plan.language.courtesy import courtesy_pattern
 from nl2hltl2plan.language.grammar.counted_refs import another_said, counted_references
 from nl2hltl2plan.language.grammar.lamp_phrases import carried_to_lamp
 from nl2hltl2plan.language.grammar.order_phrases import dashed_first, state_on_it
 from nl2hltl2plan.language.grammar.repeats import repeated_for_another
 from nl2hltl2plan.language.grammar.restated import count_fits, restated
 from nl2hltl2plan.language.grammar.treatments_said import treatments_said
+from nl2hltl2plan.language.grammar.use_names import named_by_use
+from nl2hltl2plan.language.grammar.word_tables import VERBS
 from nl2hltl2plan.language.grounding import (
     Mention,
     alfred_lookup,
@@ -92,17 +95,26 @@ _START_OPENER = re.compile(
     re.I,
 )
 _LIKE = re.compile(r",\s*like\s*,", re.I)
+# the verbs a step opens with (a filler "like" before one, "go on to" before one)
+_STEP_VERB = (
+    r"(?:put|place|move|set|drop|take|bring|carry|grab|pick|get|wash|rinse|clean|heat|warm|cool|chill|slice|cut|"
+    r"throw|toss|turn|switch|examine|look|hold|open|close|stick|leave)"
+)
+# a spoken "like" with no commas (users_h195dev): after "then" / "and" / "so" before a step or a thing
+# ("then like put ...", "and then like both soap bars ..."), after "you" before a verb ("can you like hold
+# ..."); left, "then like put X" was read as "then do the like (the same) with X". "whenever you like",
+# "like the mug", "do it like this" stay
+_LIKE_SPOKEN = re.compile(
+    rf"(?:(?<=\bthen\s)|(?<=\band\s)|(?<=\bso\s))like\s*,?\s+(?=(?:{_STEP_VERB}|the|a|an|both|two|all)\b)"
+    rf"|(?:(?<=\byou\s)|(?<=\bu\s))like\s+(?={_STEP_VERB}\b)",
+    re.I,
+)
 _TAG = re.compile(r",\s*(?:yeah|yep|ok|okay|alright|right)\s*(?=[.!?]?\s*$)", re.I)
 _JUST = re.compile(r"\bjust\s+(?=(?:put|place|move|pop|drop|set|stick|leave)\b)", re.I)
 # connectives written around a step (issue 28, users_h128dev.txt): "then go on to put X" is "then put X"
 # (the "then" belongs to the put, not to a clause of going), "in the meantime" is "meanwhile", "start off
 # by" is "start by", and "..., and finish by putting Y" after an opening step is a sentence of its own
-_GO_ON = re.compile(
-    r"\b(?:(?:go|move|carry)\s+on|proceed|continue)\s+(?:to|and)\s+"
-    r"(?=(?:put|place|move|set|drop|take|bring|carry|grab|pick|get|wash|rinse|clean|heat|cool|chill|slice|cut|"
-    r"throw|toss|turn|switch|examine|look|hold|open|close)\b)",
-    re.I,
-)
+_GO_ON = re.compile(rf"\b(?:(?:go|move|carry)\s+on|proceed|continue)\s+(?:to|and)\s+(?={_STEP_VERB}\b)", re.I)
 _FIRST_STEP = re.compile(r"^\s*(?:start|begin|first(?:ly)?|to\s+(?:start|begin))\b", re.I)
 _MEANTIME = re.compile(r"\bin\s+the\s+meantime\b", re.I)
 # "past the skillet step, Y" is "after the skillet step, Y" (a step passed, never a place walked past)
@@ -194,17 +206,66 @@ def _cased(word: str, like: str) -> str:
     return word.capitalize() if like[:1].isupper() else word
 
 
+# a list pasted from a phone's notes app (users_h195dev): its heading ("bathroom:", "to do:") opening the text
+_NOTE_HEADING = re.compile(rf"^\s*{courtesy_pattern('note_heading')}\s*:\s*(?=\w)", re.I)
+# an item of the list with no determiner ("..., toilet paper roll on the holder")
+_ITEM = re.compile(r"(?<=[,;])(?P<sp>\s*)(?P<item>[a-z][^,;.!?]*)", re.I)
+# "wash a cloth, cloth in the drawer": the thing treated, said again bare with its place, is put there
+_THING_AGAIN = re.compile(
+    r"\b(?P<verb>wash|rinse|clean|heat|warm|cool|chill)\s+(?:a|an|the)\s+(?P<x>[a-z]+(?:\s+[a-z]+)?)\s*,\s*"
+    r"(?:the\s+)?(?P=x)\s+(?:goes\s+)?(?P<prep>in|into|on|onto|inside)\s+",
+    re.I,
+)
+
+
+# "put a slice in a bowl and the bowl in the fridge": the container said again with its place is put there
+# (users_h195dev; with "a slice" the verbless second clause found no object)
+_CONTAINER_AGAIN = re.compile(
+    r"(?P<head>\b(?:put|place|set|stick|drop)\s+(?:a|an|the|one)\s+(?:[a-z]+\s+){0,2}?(?:in|into|inside)\s+"
+    r"(?:a|an|the)\s+(?P<c>[a-z]+))\s*,?\s+and\s+the\s+(?P=c)\s+(?=(?:in|into|on|onto|inside)\s)",
+    re.I,
+)
+
+
+def _noted(text: str) -> str:
+    """A notes-app list onto the forms the rules read: its heading dropped, an item's bare name given "the",
+    a treated thing said again with its place put there."""
+    text = re.sub(r"\s+/\s+", "; ", _NOTE_HEADING.sub("", text))  # "A / B": items, as ";" says
+    text = _THING_AGAIN.sub(lambda m: f"{m['verb']} the {m['x']} and put it {m['prep']} ", text)
+    return _CONTAINER_AGAIN.sub(r"\g<head> and put the \g<c> ", _ITEM.sub(_item_named, text))
+
+
+def _item_named(m: re.Match[str]) -> str:
+    """ "toilet paper roll on the holder" -> "the toilet paper roll on the holder" (a name, then a place)."""
+    item = m["item"]
+    named = find_mentions(item)
+    first = item.split()[0].lower()  # a verb opens a clause ("..., switch on the lamp"), not an item
+    if not named or named[0].char_start != 0 or first in DETERMINERS or first in VERBS:
+        return m[0]
+    if not re.match(r"\s+(?:in|into|on|onto|inside)\s", item[named[0].char_end :], re.I):
+        return m[0]
+    return f"{m['sp']}the {item}"
+
+
+def _without_fillers(text: str) -> str:
+    """The text without its spoken fillers: hesitations, ", like," between commas and a spoken "like"."""
+    text = re.sub(r"(\s*,)+", ",", _HESITATION.sub(" ", text))  # the commas left where fillers were
+    return re.sub(r"\band\s*,\s*", "and ", _LIKE_SPOKEN.sub("", _LIKE.sub(",", text)))
+
+
 @lru_cache(maxsize=1024)  # check 1 asks again for every reading it judges (about five per instruction)
 def everyday(text: str) -> str:
     """The text with the everyday styles above rewritten onto the forms the grammar reads (a pure function
     of the text)."""
     text = _BARE.sub(lambda m: _BARE_CONTRACTION[m[1].lower()], _UR_DONE.sub("you're ", text))
+    text = _noted(_without_fillers(text))  # first: "and, like, the box on there too" finds its place
     text = another_said(text)  # "one more" said of a thing; "then another apple" (counted_refs.py)
     if _FREE_REMARK.search(text):  # "1. X. 2. Y. Any order is fine.": the numbers only list the steps
         text = _NUMBERED.sub(lambda m: m["lead"], text)
-    text = everyday_names(respelt(text))  # misspelt names of things (language/spelling.py), everyday names
+    text = named_by_use(everyday_names(respelt(text)))  # misspelt names, everyday names, names by use
     text = _ONE_AND_OTHER.sub(_each_of_two, text)  # before "the other one" is written out as "the other X"
     text = counted_references(text)  # "the remaining two", "remotes, two of them" (counted_refs.py)
+    text = _LAMP_WITH_IT_ON.sub(r"\g<lamp>", text)  # before a repeat copies the sentence
     # "... The cup too.": the task before, for the cup (repeats.py); "carry X to the lamp and turn it on"
     # first written as the examination it is, which a repeat can copy
     text = repeated_for_another(carried_to_lamp(state_on_it(dashed_first(text))))
@@ -218,10 +279,9 @@ def everyday(text: str) -> str:
     text = _IT_PLACE.sub(_fixture_named, text)
     text = _COUNT_LEFT.sub(_count_named, text)
     text = _THING_FIRST.sub(lambda m: f"{m['lead']}take {m['np']}, ", text)
-    text = _HESITATION.sub(" ", _ORDER_THO.sub(_order_tho, text))
+    text = _ORDER_THO.sub(_order_tho, text)
     text = _DONE_AT_END.sub(_done_at_end, text)
-    text = re.sub(r"(\s*,)+", ",", text)  # the commas left where fillers were
-    text = _LIKE.sub(",", _TAG.sub("", text))
+    text = _TAG.sub("", text)
     text = _START_OPENER.sub("", _OPENER.sub(r"\1", text))
     text = _JUST.sub("", text)
     text = _START_OFF.sub(r"\1 ", _MEANTIME.sub("meanwhile", _GO_ON.sub("", text)))
@@ -275,6 +335,8 @@ _THERE = re.compile(
     r"(?:it|them|(?:the|a|an|two|both|\d)\s+[a-z]+(?:\s+(?!over\b)[a-z]+)?)"
     r"|(?:(?<=\bthen\s)|(?<=\band\s))(?:the|a|an|two|three|both|\d)\s+[a-z]+(?:\s+(?!over\b)[a-z]+){0,2}?)"
     r"(?P<source>\s+from\s+(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)??"  # "the bottle from the toilet there"
+    # "and a spoon in the bowl on there as well": the container, on the last place (users_h195dev)
+    r"(?P<inner>\s+(?:in|into|inside)\s+(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?(?=\s+(?:on|onto)\s+there\b))?"
     # "and two rolls next to it": beside the thing placed last, so where it was put
     r"\s+(?:(?:(?:in|into|inside|on|onto|over)\s+)?(?:there|(?:next\s+to|beside)\s+it)\b"
     r"(?=\s*(?:too|as\s+well|also)?\s*(?:[,.;!?]|$|and\b|then\b))"
@@ -316,7 +378,8 @@ def _there_named(m: re.Match[str]) -> str:
     prep = "in" if prep == "to" else prep  # "walk to the sink ... in there"
     if m["head"].split()[0].lower() in ("carry", "take", "bring", "move"):
         prep = "to"  # "carry the pan over there": to the table ("carry the pan on the table": where it is)
-    return f"{m['head']}{m['source'] or ''} {prep} the {place.surface}" + (" " if m[0].endswith(" ") else "")
+    said = f"{m['head']}{m['source'] or ''}{m['inner'] or ''} {prep} the {place.surface}"
+    return said + (" " if m[0].endswith(" ") else "")
 
 
 # a bare "it" as a place, where it can only be a fixture that holds things (a bed, a fridge: ALFRED cannot
@@ -364,6 +427,16 @@ _THEN_UNDER_LAMP = re.compile(
     r"\s*,?\s+and\s+then\s+(?P<b>(?:the|a|an|another)\s+[a-z]+(?:\s+[a-z]+){0,2}?)\s+"
     r"(?P<lamp>(?:under|by|beneath|in)\s+(?:the\s+light\s+of\s+)?(?:the|a)\s+(?:[a-z]+\s+){0,2}?(?:lamp|light))"
     r"(?=\s*(?:[.;!?,]|$))",
+    re.I,
+)
+
+
+# "hold the pillow under the desk lamp with it on": the lamp on is what looking under it is, so "with it on"
+# says nothing more (users_h195dev); left, the sentence was no plain one, and "then do the same with the cd"
+# after it had no task to repeat
+_LAMP_WITH_IT_ON = re.compile(
+    r"(?P<lamp>\b(?:under|by|beneath)\s+(?:the|a)\s+(?:[a-z]+\s+)?(?:lamp|light))\s+with\s+(?:it|the\s+lamp)\s+"
+    r"(?:turned\s+|switched\s+)?on\b",
     re.I,
 )
 

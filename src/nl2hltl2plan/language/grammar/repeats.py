@@ -151,9 +151,14 @@ def repeated_for_another(text: str) -> str:
             written = True
             continue
         if not REPEAT_FRAGMENT.match(fragment):
-            task = fragment.strip()  # its order word stays with it ("After that, look at X. Then the Y too.")
+            # its order word stays with it ("After that, look at X. Then the Y too."), its question not
+            task = _ASKED.sub("", fragment.strip())
         out.append(body)
     return "".join(out) if written else text
+
+
+# a request's opening question, which the task copied for another thing does not repeat
+_ASKED = re.compile(r"^(?:(?:can|could|would|will)\s+(?:you|u)\s+)?(?:please\s+)?(?=[a-z])", re.I)
 
 
 def _copy_inside(text: str, m: re.Match[str]) -> str:
@@ -162,7 +167,7 @@ def _copy_inside(text: str, m: re.Match[str]) -> str:
     plain task; the words as they were otherwise."""
     things = [x for x in find_mentions(m["np"]) if not x.entry.generic]
     start = max(text.rfind(c, 0, m.start()) for c in ".;!?\n") + 1
-    clause = text[start : m.start()].strip()
+    clause = _ASKED.sub("", text[start : m.start()].strip())  # "can you hold X ..., and do the same with Y"
     said = _ORDER_LEAD.match(clause)
     last = re.sub(r"^(?:and|then)\s+", "", clause.split(",")[-1].strip())
     tasks = [clause[said.end() :] if said else clause, last]

@@ -534,8 +534,9 @@ def _names_object_before(text: str, at: int) -> bool:
     return bool(mentions) and mentions[-1].char_end == len(text[:at].rstrip())
 
 
-# a count names the objects too ("Two rags to the shelf", "two phones to the sofa": h190)
-_LIST_WORDS = frozenset({"the", "a", "an", "and", "or", "both", ",", "two", "three", "four"})
+# a count names the objects too ("Two rags to the shelf", "two phones to the sofa": h190; a notes-app list's
+# "2 soap bars in the tub": users_h195dev)
+_LIST_WORDS = frozenset({"the", "a", "an", "and", "or", "both", ",", "two", "three", "four", "2", "3", "4"})
 
 
 def _verbless_placement(body: str) -> bool:

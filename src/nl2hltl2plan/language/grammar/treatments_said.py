@@ -88,6 +88,26 @@ _PRONOUN_GOAL = re.compile(
     r"ends?\s+up|goes|go)\s+(?P<prep>in|into|on|onto|inside)\s+(?=(?:the|a|an)\s)",
     re.I,
 )
+# "make it cold", "make cold the bowl", "tomato make it cold" (a non-native speaker's causative, h195dev):
+# the treatment's verb; a name said bare before it is the thing ("tomato make it cold": chill the tomato)
+_MAKE_STATE = re.compile(
+    r"(?P<lead>(?:^|(?<=[,.;:!?])\s*|\b(?:and|then|you|please)\s+))(?:(?P<topic>[a-z]+(?:\s+[a-z]+)?)\s+)?"
+    r"make\s+(?:(?P<it>it|them|(?:(?:the|a|an|one)\s+)?[a-z]+(?:\s+[a-z]+)?)\s+(?P<adj>cold|cool|hot|warm|clean)"
+    r"|(?P<adj2>cold|cool|hot|warm|clean))(?![\w'])",
+    re.I,
+)
+_MADE = {"cold": "chill", "cool": "chill", "hot": "heat", "warm": "heat", "clean": "wash"}
+# a non-native speaker's placement (users_h195dev): "after put ..." is "then put ...", "give it on the
+# table" is "put it on the table", and "put inside the drawer" after a clause puts the thing of that clause
+_STEP = r"(?:put|place|set|leave|throw|toss|drop|wash|rinse|clean|heat|warm|cool|chill|look|hold|slice|cut)"
+_AFTER_STEP = re.compile(rf"(?:(?<=^)|(?<=[,.;!?]\s)|(?<=\band\s))after\s*,?\s+(?={_STEP}\b)", re.I)
+# "you put two soap bottle inside drawer", "then you wash the cloth": a request said with its subject (never
+# after "once", "after", "when", "before" or "if": "once you put X" is a clause of its own)
+_YOU_STEP = re.compile(rf"(?P<lead>(?:^|[.;!?]\s*|\bthen\s+|\bplease\s+))you\s+(?={_STEP}\b)", re.I)
+_GIVE_ON = re.compile(r"\bgive\s+(?P<it>it|them)\s+(?=(?:on|in|into|onto|inside)\s)", re.I)
+_PUT_BARE = re.compile(
+    r"(?<=\S)(?P<lead>\s+(?:and\s+|then\s+)*)(?P<verb>put|place)\s+(?=(?:inside|into|in|onto|on|to)\s)", re.I
+)
 _TEXTED_ID = re.compile(r"\bid\s+(?=(?:like|love|prefer|want)\b)", re.I)  # "id like" as texted: "I'd like"
 _COURTESY_AFTER_FIRST = re.compile(r"\bfirst\s*,?\s*(?:please|pls|plz)\s*(?=[.!]?\s*$)", re.I)
 _BARE_FIRST = re.compile(r"(?P<lead>(?:^|[,.;:]|\bthen)\s*)(?P<name>[a-z]+(?:\s+[a-z]+)?)\s+first\b", re.I)
@@ -108,6 +128,9 @@ def treatments_said(text: str) -> str:
     """The text with the needs, causatives and terse orders above rewritten (see the module docstring)."""
     need, causative, purpose = _patterns()
     text = _TEXTED_ID.sub("I'd ", text)
+    text = _MAKE_STATE.sub(_made, text)
+    text = _AFTER_STEP.sub("then ", _GIVE_ON.sub(r"put \g<it> ", _YOU_STEP.sub(r"\g<lead>", text)))
+    text = _PUT_BARE.sub(r"\g<lead>\g<verb> it ", text)
     text = _PRONOUN_GOAL.sub(_put_pronoun, text)
     text = _AGENT.sub(lambda m: f"{m['lead']}{m['verb']}" if m["verb"].lower() in VERBS else m[0], text)
     text = need.sub(_imperative, text)
@@ -116,6 +139,20 @@ def treatments_said(text: str) -> str:
     text = _COURTESY_AFTER_FIRST.sub("first", text)
     text = _BARE_FIRST.sub(lambda m: _named_first(text, m), text)
     return _FIRST_THEN.sub(lambda m: _first_then(text, m), text)
+
+
+def _made(m: re.Match[str]) -> str:
+    """ "make it cold" -> "chill it", "make mug cold" -> "chill the mug", "make cold the bowl" -> "chill the
+    bowl", "tomato make it cold" -> "chill the tomato" (a name alone before it); anything else as it was."""
+    verb, topic, it = _MADE[(m["adj"] or m["adj2"]).lower()], m["topic"], m["it"]
+    if topic and it and it.lower() == "it" and _names_thing(f"the {topic}"):
+        return f"{m['lead']}{verb} the {topic}"
+    lead = f"{m['lead']}{topic} " if topic else m["lead"]
+    if it and it.lower() not in ("it", "them"):
+        if not find_mentions(it):
+            return m[0]
+        it = it if re.match(r"(?:the|a|an|one)\s", it, re.I) else f"the {it}"
+    return f"{lead}{verb}" + (f" {it}" if it else "")
 
 
 def _put_pronoun(m: re.Match[str]) -> str:
