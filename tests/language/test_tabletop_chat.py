@@ -86,11 +86,20 @@ def test_back_references_after_a_greeting_or_reply_keep_the_order(text):
         "Hello! Don't put the orange on the blue plate. Thanks!",
         "No problem! Don't put the orange on the blue plate.",
         "Put the orange on the blue plate in any order you find the red apple.",
-        "Put the green apple on the yellow plate, and when it is on it, move the carrot to the blue plate.",
     ],
 )
 def test_near_misses_still_refused(text):
     assert _reading(text) is None
+
+
+def test_when_it_is_on_it_names_the_one_thing_just_placed():
+    # "it is on it" after one placing: that thing on that plate (h190's "once the bottle is on it"), so the
+    # carrot waits for the green apple; it was a refused near miss before the household reader read it
+    text = "Put the green apple on the yellow plate, and when it is on it, move the carrot to the blue plate."
+    assert _reading(text) == (
+        [("Carrot", "BluePlate"), ("GreenApple", "YellowPlate")],
+        [(("GreenApple", "YellowPlate"), ("Carrot", "BluePlate"))],
+    )
 
 
 @pytest.mark.parametrize("opener", ["", "Hey, ", "Hi! ", "No problem! "])
