@@ -10,10 +10,11 @@ reads) and, where that reading is partial or refused, the structure model's read
 (`inference.structure_reading` of the text the household reader passed on, each span read by the
 grammar + slot model) judged as `structure_validation.converts` (complete, every word used, the strict
 match): right, wrong, or incomplete (no reading). The arbitration (`structured.decide`) is asked as the
-shipped path asks it, so a right model reading that the policy did not take says why: below the rescue
-threshold, the order words, or the grammar's "not certain" reference. Rows are grouped by a class of
-what the grammar left unread (`partial_class`: the unread words' shape), the evidence for letting the
-model complete or rescue that class (docs/learned.md, "structure model").
+shipped path asks it, so a right model reading that the policy did not take says why: the grammar's
+reading was complete (the household path refused it for another reason: a bare plural, the world's
+counts), below the rescue threshold, the order words, or the grammar's "not certain" reference. Rows
+are grouped by a class of what the grammar left unread (`partial_class`: the unread words' shape), the
+evidence for letting the model complete or rescue that class (docs/learned.md, "structure model").
 """
 
 from __future__ import annotations
@@ -91,7 +92,7 @@ def model_alone(row: dict[str, Any], text: str) -> dict[str, Any]:
     grammar = (first.tasks, first.before, grammar_complete(first))
     choice = decide(grammar, (s[0].tasks, s[0].before, s[1]), rule, text, s[2], uncertain)
     blocked = (
-        "" if choice == "model" else "not certain" if uncertain
+        "" if choice == "model" else "grammar complete" if grammar[2] else "not certain" if uncertain
         else "order words" if not order_words_kept(text, s[0].tasks, s[0].before) else "confidence"
     )
     right = converts(s[0].model_copy(deep=True), {**row, "instruction": text})
