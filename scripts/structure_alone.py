@@ -117,7 +117,7 @@ def main() -> int:
     out = []
     print("| set | rows | shipped converts | partial or refused | model alone right | wrong | incomplete |")
     print("| --- | --- | --- | --- | --- | --- | --- |")
-    for name in names:
+    for name in dict.fromkeys(names):  # a set named twice ("plain": a default set and a trust set) once
         counts: Counter[str] = Counter()
         for row in set_rows(name, args.n):
             cls, why, read = classify(row)

@@ -7,6 +7,8 @@ from __future__ import annotations
 import random
 import re
 
+import pytest
+
 from nl2hltl2plan.language.learned import parse_instruction
 from nl2hltl2plan.language.learned.compose import HELDOUT_STYLE, TRAIN_STYLE, Synth, synthesise
 from nl2hltl2plan.language.learned.compose_refs import DEV_REFS, HELDOUT_REFS, NEW_REFS
@@ -46,7 +48,7 @@ def test_a_numbered_list_is_a_sequence_whose_spans_are_the_clauses() -> None:
 
 
 def _voiced() -> list[Synth]:
-    return synthesise(text_faithful_items("valid_unseen"), 300, VOICE_STYLE, seed=5, said_only=False)
+    return synthesise(text_faithful_items("valid_unseen"), 120, VOICE_STYLE, seed=5, said_only=False)
 
 
 def test_voices_rewrite_clauses_and_keep_their_truth() -> None:
@@ -74,6 +76,7 @@ def test_a_do_the_same_span_gets_the_task_before_for_its_thing() -> None:
     assert resolved("put the cup in the fridge", before) == "put the cup in the fridge"
 
 
+@pytest.mark.sweep  # reads the train split's annotations (2 s)
 def test_the_second_family_is_trained_only_when_asked() -> None:
     from nl2hltl2plan.language.learned.structure_train import training_data
 
