@@ -150,6 +150,7 @@ class Connectives:
     pairs: tuple[tuple[str, tuple[str, str]], ...]
     free_openers: tuple[str, ...] = ()  # a first span free of every later one ("{x} at any time. ...")
     refs: RefJoiners | None = None  # sentences that point back at an earlier span
+    voiced: bool = False  # clause voices and numbered lists (`compose_voices`) too
 
 
 TRAIN_STYLE = Connectives(
@@ -461,16 +462,23 @@ def synthesise(
         if len({c.example.trial for c in chosen}) < len(chosen):
             continue
         clauses = [styled_clause(c.text, rng) for c in chosen]
-        if k == 2 and rng.random() < 0.5:
+        said = [c.task for c in chosen]
+        made = None
+        if style.voiced:  # the second training family: its clause voices, and a numbered list in five
+            from nl2hltl2plan.language.learned.compose_voices import listed, voiced
+
+            clauses, said = voiced(clauses, said, rng)
+            made = listed(clauses, rng) if k > 1 and rng.random() < 0.2 else None
+        if made is None and k == 2 and rng.random() < 0.5:
             made = _pair(style, clauses, rng)
-        else:
-            made = _chain(style, clauses, [c.task for c in chosen], rng)
+        elif made is None:
+            made = _chain(style, clauses, said, rng)
         if made is None:
             continue
         text, spans, rels, targets = made
         lowered = _finish(text, rng)
         ids = [task_letter(i) for i in range(len(chosen))]
-        tasks = [c.task.model_copy(update={"id": i, "text": ""}) for c, i in zip(chosen, ids, strict=True)]
+        tasks = [t.model_copy(update={"id": i, "text": ""}) for t, i in zip(said, ids, strict=True)]
         before = [(ids[a], ids[b]) for a, b in before_pairs(rels, targets)]
         drawn += 1
         if said_only and not composable(chosen):

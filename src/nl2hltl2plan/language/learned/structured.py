@@ -31,6 +31,7 @@ from dataclasses import dataclass
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.language.accounting import account
 from nl2hltl2plan.language.content_words import categories
+from nl2hltl2plan.language.grammar.repeats import repeated_for_another
 from nl2hltl2plan.language.grounding import find_mentions, tokens
 from nl2hltl2plan.language.learned.compose import ELIDABLE, VERB_GERUND, VERB_PARTICIPLE
 from nl2hltl2plan.language.learned.span_order import before_pairs
@@ -248,12 +249,20 @@ def _surface(text: str, types: list[str] | None) -> str | None:
     return None
 
 
+_SAME = re.compile(r"^(?:(?:and|then|now)\s+)?(?:do\s+)?(?:the\s+)?same\s+(?:with|for)\b", re.I)
+
+
 def resolved(span: str, previous: tuple[str, BaseTaskSpec] | None) -> str:
     """A span that refers to the previous span's task by a pronoun gets its words back: "put it in the
-    coffee machine" -> the previous object; "put the pen there (too)" -> the previous destination."""
+    coffee machine" -> the previous object; "put the pen there (too)" -> the previous destination; "do
+    the same with the cup" -> the previous task for the cup (`grammar.repeats`)."""
     if previous is None:
         return span
     text, task = previous
+    if _SAME.match(span):  # "do the same with the cup": the grammar's repeat of the task before
+        head = text.strip().rstrip(".!") + ". "
+        again = repeated_for_another(head + span.strip())
+        return again[len(head) :] if again.startswith(head) else span
     obj = _surface(text, task.object)
     dest = _surface(text, task.receptacle)
     if dest and re.search(r"\bthere\b", span):
