@@ -53,6 +53,7 @@ from nl2hltl2plan.language.landmarks import (
     NEAR_WORDS,
     carried,
     landmark_destinations,
+    of_a_treated_thing,
     on_the_place,
     pair_start,
 )
@@ -315,6 +316,8 @@ def _locative(
         return False  # "done with the mug": a task it is in; "a pan with a tomato": a thing to move too
     clause = _clause_span(instruction, toks[start][1])
     if any({"verb_take", "verb_sliced"} & categories(w) for w, s, _ in toks if clause[0] <= s < clause[1]):
+        return True
+    if of_a_treated_thing(toks, start, clause):  # "wash the fork next to the coffee machine and ..."
         return True
     near = places + implied if toks[i][0] in NEAR_WORDS else places
     return any(clause[0] <= o.char_start < clause[1] and o.start not in (m.start, start) for o in near)

@@ -8,7 +8,7 @@ the microwave" is fine: the counter is the destination, the microwave where on i
 
 from __future__ import annotations
 
-from nl2hltl2plan.language.content_words import DETERMINERS, Unread, stems, verb_places
+from nl2hltl2plan.language.content_words import DETERMINERS, Unread, categories, stems, verb_places
 from nl2hltl2plan.language.grounding import RECEPTACLES, Mention, alfred_lookup
 from nl2hltl2plan.language.parse_usage import ParseUsage
 
@@ -53,6 +53,28 @@ def _side_of(toks: list[tuple[str, int, int]], j: int) -> bool:
         j -= 1
         return j >= 0 and toks[j][0] == "to"
     return j < 0 or toks[j][0] not in _PART_BEFORE_SIDE  # "the drawer left of the sink"
+
+
+# the verbs that treat a thing where it is taken to (a sink, a fridge, a microwave), never put it anywhere
+_TREATMENTS = frozenset({"verb_clean_place", "verb_cool_place", "verb_heat_place"})
+
+
+def of_a_treated_thing(toks: list[tuple[str, int, int]], start: int, clause: tuple[int, int]) -> bool:
+    """Does the place whose first word is at `start` say where a thing is, in a clause (character span
+    `clause`) whose verb treats it and where no verb puts anything ("wash the fork next to the coffee
+    machine", "chill the tomato on the counter and ...")? The treatment's own place (the sink, the fridge)
+    is implied anyway; a place said with "on" is where the thing is for washing and chilling, but heating
+    "on the stove" may say how it is heated, so there only a word of nearness counts."""
+    said = [w for w, s, _ in toks[:start] if clause[0] <= s]
+    kinds = {c for w in said for c in categories(w) & _TREATMENTS}
+    if not kinds or any("verb_any" in categories(w) for w in said):
+        return False
+    if near_word_before(toks, start):
+        return True
+    j = start - 1
+    while j >= 0 and toks[j][0] in DETERMINERS:
+        j -= 1
+    return j > 0 and toks[j][0] in ("on", "upon") and kinds != {"verb_heat_place"}
 
 
 def landmark_destinations(
