@@ -346,7 +346,7 @@ def _standing_place_first(item: Item, text: str) -> None:
 
 def _part_of_another(part: NP, types_a: set[str]) -> bool:
     """ "on the dining table in the middle drawer of the dresser": the part says whose it is, a piece of
-    furniture other than the first place, so it is no part of the first place (which says where the thing is)."""
+    furniture other than the first place, so it is no part of that place (which says where the thing is)."""
     _, of, owner = part.text.lower().partition(" of ")
     said = {t for m in find_mentions(owner) for t in m.entry.types} if of else set()
     return bool(said) and said <= _STANDING and not said & types_a
