@@ -22,20 +22,40 @@ from nl2hltl2plan.language.translate import translate
 from nl2hltl2plan.worlds import load_world
 
 READ = [
-    ("FloorPlan3", "Wash the fork next to the coffee machine and put it on the table.", ["clean_place Fork -> SideTable"]),
+    (
+        "FloorPlan3",
+        "Wash the fork next to the coffee machine and put it on the table.",
+        ["clean_place Fork -> SideTable"],
+    ),
     ("FloorPlan3", "Put the apple sitting next to the bread in the fridge.", ["place Apple -> Fridge"]),
     (
         "FloorPlan3",
         "Put the mug by the sink and the bowl next to the stove in the cabinet.",
         ["place Mug -> Cabinet", "place Bowl -> Cabinet"],
     ),
-    ("FloorPlan403", "Put the spray bottle on the toilet in the garbage can.", ["place SprayBottle -> GarbageCan"]),
-]  # fmt: skip
+    (
+        "FloorPlan403",
+        "Put the spray bottle on the toilet in the garbage can.",
+        ["place SprayBottle -> GarbageCan"],
+    ),
+]
 READ_SWEEP = [
     ("FloorPlan3", "Rinse the fork by the bread and put it on the table.", ["clean_place Fork -> SideTable"]),
-    ("FloorPlan3", "Clean the fork on the counter and put it on the table.", ["clean_place Fork -> SideTable"]),
-    ("FloorPlan17", "Heat the tomato next to the bread and put it on the counter.", ["heat_place Tomato -> CounterTop"]),
-    ("FloorPlan17", "Chill the tomato by the sink and put it on the counter.", ["cool_place Tomato -> CounterTop"]),
+    (
+        "FloorPlan3",
+        "Clean the fork on the counter and put it on the table.",
+        ["clean_place Fork -> SideTable"],
+    ),
+    (
+        "FloorPlan17",
+        "Heat the tomato next to the bread and put it on the counter.",
+        ["heat_place Tomato -> CounterTop"],
+    ),
+    (
+        "FloorPlan17",
+        "Chill the tomato by the sink and put it on the counter.",
+        ["cool_place Tomato -> CounterTop"],
+    ),
     ("FloorPlan3", "Put the apple lying by the sink in the fridge.", ["place Apple -> Fridge"]),
     ("FloorPlan3", "Put the apple located next to the bread in the fridge.", ["place Apple -> Fridge"]),
     (
@@ -45,7 +65,7 @@ READ_SWEEP = [
     ),
     ("FloorPlan403", "Put the soap bar in the tub on the counter.", ["place SoapBar -> CounterTop"]),
     ("FloorPlan211", "Put the remote on the TV stand on the sofa.", ["place RemoteControl -> Sofa"]),
-]  # fmt: skip
+]
 # each with the words its refusal names
 REFUSED = [
     ("FloorPlan3", "Wash the fork and put it next to the coffee machine.", "coffee machine"),
