@@ -64,6 +64,13 @@ READ_SWEEP = [
         ["place Mug -> Cabinet", "place Bowl -> Cabinet", "place Cup -> Cabinet"],
     ),
     ("FloorPlan403", "Put the soap bar in the tub on the counter.", ["place SoapBar -> CounterTop"]),
+    (
+        "FloorPlan17",
+        "Heat up the potato on the table and put it in the fridge.",
+        ["heat_place Potato -> Fridge"],
+    ),
+    ("FloorPlan17", "Throw the apple by the microwave away.", ["place Apple -> GarbageCan"]),
+    ("FloorPlan17", "Throw away the apple next to the sink.", ["place Apple -> GarbageCan"]),
     ("FloorPlan211", "Put the remote on the TV stand on the sofa.", ["place RemoteControl -> Sofa"]),
 ]
 # each with the words its refusal names

@@ -321,7 +321,7 @@ def _locative(
     clause = _clause_span(instruction, toks[start][1])
     if any({"verb_take", "verb_sliced"} & categories(w) for w, s, _ in toks if clause[0] <= s < clause[1]):
         return True
-    if of_a_treated_thing(toks, start, clause) or listed_landmark(instruction, toks, m, mentions):
+    if of_a_treated_thing(toks, m, clause) or listed_landmark(instruction, toks, m, mentions):
         return True  # "wash the fork next to the sink and ...", "the mug by the sink and the bowl by ..."
     near = places + implied if toks[i][0] in NEAR_WORDS else places
     return any(clause[0] <= o.char_start < clause[1] and o.start not in (m.start, start) for o in near)

@@ -71,22 +71,25 @@ def posture_at(instruction: str, toks: list[tuple[str, int, int]], i: int) -> bo
 _TREATMENTS = frozenset({"verb_clean_place", "verb_cool_place", "verb_heat_place"})
 
 
-def of_a_treated_thing(toks: list[tuple[str, int, int]], start: int, clause: tuple[int, int]) -> bool:
-    """Does the place whose first word is at `start` say where a thing is, in a clause (character span
-    `clause`) whose verb treats it and where no verb puts anything ("wash the fork next to the coffee
-    machine", "chill the tomato on the counter and ...")? The treatment's own place (the sink, the fridge)
-    is implied anyway; a place said with "on" is where the thing is for washing and chilling, but heating
-    "on the stove" may say how it is heated, so there only a word of nearness counts."""
+def of_a_treated_thing(toks: list[tuple[str, int, int]], m: Mention, clause: tuple[int, int]) -> bool:
+    """Does the place `m` say where a thing is, in a clause (character span `clause`) whose verb treats
+    it or throws it away and where no other verb puts anything ("wash the fork next to the coffee machine",
+    "throw the apple by the microwave away")? The treatment's own place (the sink, the fridge, the
+    trash) is said by the verb; a place said with "on" is where a treated thing is ("chill the tomato on
+    the counter"), unless it is a thing to carry ("heat the apple on the plate") or the thing is thrown
+    ("throw the apple on the counter" may say where it lands)."""
+    start = pair_start(toks, m.start)
     said = [w for w, s, _ in toks[:start] if clause[0] <= s]
-    kinds = {c for w in said for c in categories(w) & _TREATMENTS}
-    if not kinds or any("verb_any" in categories(w) for w in said):
+    treats = any(categories(w) & _TREATMENTS for w in said)
+    thrown = [w for w in said if any(verb_places().get(f) == "GarbageCan" for f in stems(w))]
+    if any("verb_any" in categories(w) for w in said if w not in thrown) or not (treats or thrown):
         return False
     if near_word_before(toks, start):
         return True
     j = start - 1
     while j >= 0 and toks[j][0] in DETERMINERS:
         j -= 1
-    return j > 0 and toks[j][0] in ("on", "upon") and kinds != {"verb_heat_place"}
+    return treats and j > 0 and toks[j][0] in ("on", "upon") and not carried(m)
 
 
 _PLACING = frozenset({"in", "on", "into", "onto", "inside"})

@@ -477,7 +477,8 @@ def _holdable(np: NP, holder: NP, look: AffordanceLookup | None) -> bool:
 
 def _read_destination(r: _Reading, fr: Frame, it: Item) -> None:
     """Where the item goes (stops on the way first); "in a cup to the counter" also names a container."""
-    dst = dest_of(it, fr.cls) or near_dest(it)
+    # "throw away the apple next to the sink": the sink says which apple; the verb says where it goes
+    dst = dest_of(it, fr.cls) or (near_dest(it) if fr.cls != "trash" else None)
     if any(p == THEN_TO for p, _ in it.pps):  # stops on the way come before the destination
         r.dests += [np for p, np in it.pps if p in G.DEST_PREPS and np.is_receptacle() and np is not dst]
     if fr.cls == "trash" and dst is None:
