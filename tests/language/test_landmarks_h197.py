@@ -1,7 +1,8 @@
 """Issue 28 (h197): landmarks versus destinations (results/language/h197.md).
 
-- A landmark on the thing says where it is now: after a thing a clause only treats ("wash the fork next
-  to the coffee machine and ..."), after a posture ("the apple sitting next to the bread"), and on every
+- A landmark on the thing says where it is now: after a thing a clause only treats or throws away ("wash
+  the fork next to the coffee machine and ...", "throw away the apple next to the sink"), or picks up
+  ("grab the mug by the sink."), after a posture ("the apple sitting next to the bread"), and on every
   item of a list that has one destination ("the mug by the sink and the bowl next to the stove in the
   cabinet").
 - Of two fixed places with "on"/"in", a toilet, tub or TV stand first, or a part said of another piece of
@@ -28,6 +29,7 @@ READ = [
         ["clean_place Fork -> SideTable"],
     ),
     ("FloorPlan3", "Put the apple sitting next to the bread in the fridge.", ["place Apple -> Fridge"]),
+    ("FloorPlan17", "Grab the mug by the sink. Put it in the microwave.", ["place Mug -> Microwave"]),
     (
         "FloorPlan3",
         "Put the mug by the sink and the bowl next to the stove in the cabinet.",
@@ -70,6 +72,7 @@ READ_SWEEP = [
         ["heat_place Potato -> Fridge"],
     ),
     ("FloorPlan17", "Throw the apple by the microwave away.", ["place Apple -> GarbageCan"]),
+    ("FloorPlan17", "Put the apple close to the sink in the fridge.", ["place Apple -> Fridge"]),
     ("FloorPlan17", "Throw away the apple next to the sink.", ["place Apple -> GarbageCan"]),
     ("FloorPlan211", "Put the remote on the TV stand on the sofa.", ["place RemoteControl -> Sofa"]),
 ]
