@@ -53,8 +53,11 @@ from nl2hltl2plan.language.landmarks import (
     NEAR_WORDS,
     carried,
     landmark_destinations,
+    listed_landmark,
+    of_a_treated_thing,
     on_the_place,
     pair_start,
+    posture_at,
 )
 from nl2hltl2plan.language.memo import reading_memo
 from nl2hltl2plan.language.mention_use import looked_at, unused_mentions
@@ -264,8 +267,9 @@ def _nouns(
     ]
     out, named = [], []
     objects = {t for _, role, st in slots if role == "object" for t in st}
+    said = (toks, places, implied_places, mentions)
     for key, phrases in groups.items():
-        needing = [p for p in phrases if not _locative(instruction, p[0], toks, places, implied_places)]
+        needing = [p for p in phrases if not _locative(instruction, p[0], *said)]
         if key in matched:
             named += needing
         if key in matched or not needing or _lamp_said_again(phrases[0][-1], matched):
@@ -292,6 +296,7 @@ def _locative(
     toks: list[tuple[str, int, int]],
     places: list[Mention],
     implied: list[Mention],
+    mentions: list[Mention],
 ) -> bool:
     """A place named only to say where something is: "from the counter", or, next to the place the
     task uses in the same clause, "the drawer by the stove", "the lamp on the desk", "between the sink
@@ -301,8 +306,10 @@ def _locative(
     i = preposition_before(toks, start, LOCATIVE)
     if _walked_to(toks, m.start):
         return True
-    if i < 0 or toks[i][0] not in LOCATIVE or looked_at(toks, i):  # "look at the box": what is examined
-        return False
+    # "close to the sink" is nearness, as "next to" ("close" alone is a verb)
+    close_to = 0 <= i < len(toks) - 1 and toks[i][0] == "close" and toks[i + 1][0] == "to"
+    if not close_to and (i < 0 or toks[i][0] not in LOCATIVE or looked_at(toks, i)):
+        return False  # "look at the box": what is examined
     if re.search(r"[,;:.!?]", instruction[toks[i][2] : toks[start][1]]):
         return False  # "in the drawer, also the ladle": a preposition's phrase never reaches over punctuation
     if source_at(instruction, toks, start):  # "from under the bed", "out of": where it is
@@ -316,6 +323,8 @@ def _locative(
     clause = _clause_span(instruction, toks[start][1])
     if any({"verb_take", "verb_sliced"} & categories(w) for w, s, _ in toks if clause[0] <= s < clause[1]):
         return True
+    if of_a_treated_thing(toks, m, clause) or listed_landmark(instruction, toks, m, mentions):
+        return True  # "wash the fork next to the sink and ...", "the mug by the sink and the bowl by ..."
     near = places + implied if toks[i][0] in NEAR_WORDS else places
     return any(clause[0] <= o.char_start < clause[1] and o.start not in (m.start, start) for o in near)
 
@@ -426,15 +435,6 @@ def _a_stop(instruction: str, m: Mention, toks: list[tuple[str, int, int]]) -> b
     return not source_at(instruction, toks, m.start)  # "on the second from the bottom shelf": which shelf
 
 
-def _says_where_it_is(instruction: str, toks: list[tuple[str, int, int]], i: int) -> bool:
-    """Is word `i` a posture before a place's preposition ("sitting on", "lying in"): where a thing is?"""
-    nxt = toks[i + 1] if i + 1 < len(toks) else None
-    return nxt is not None and nxt[0] in _WHERE_PREPOSITIONS and says_where(instruction, nxt[1])
-
-
-_WHERE_PREPOSITIONS = frozenset({"on", "in", "at", "inside", "atop", "upon"})
-
-
 @lru_cache(maxsize=512)
 def _lexicon_words(types: frozenset[str]) -> frozenset[str]:  # once per type set: it is asked per slot
     return frozenset(w for key, (e, _) in lexicon().items() if set(e.types) & types for w in key)
@@ -460,7 +460,7 @@ def _words(
         if not cats and not w.isdigit():
             continue
         guard = parse.constraint_at(toks[i][1])
-        if _says_where_it_is(instruction, toks, i):
+        if posture_at(instruction, toks, i):
             continue  # "the apple should be sitting on the plate": where it is, not the action of sitting
         if guard is None:
             # what an "it" after the verb may be: the last thing named before it that is opened for itself

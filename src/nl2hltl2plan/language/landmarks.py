@@ -8,9 +8,10 @@ the microwave" is fine: the counter is the destination, the microwave where on i
 
 from __future__ import annotations
 
-from nl2hltl2plan.language.content_words import DETERMINERS, Unread, stems, verb_places
+from nl2hltl2plan.language.content_words import DETERMINERS, Unread, categories, stems, verb_places
 from nl2hltl2plan.language.grounding import RECEPTACLES, Mention, alfred_lookup
 from nl2hltl2plan.language.parse_usage import ParseUsage
+from nl2hltl2plan.language.statements import says_where
 
 # the words before a place that make it a landmark ("next to", "beside", "to the left of")
 NEAR_WORDS = frozenset("near beside besides by next between behind against".split())
@@ -53,6 +54,71 @@ def _side_of(toks: list[tuple[str, int, int]], j: int) -> bool:
         j -= 1
         return j >= 0 and toks[j][0] == "to"
     return j < 0 or toks[j][0] not in _PART_BEFORE_SIDE  # "the drawer left of the sink"
+
+
+# a posture's place may be a landmark too: "the apple sitting next to the bread", "lying by the sink"
+_WHERE_PREPOSITIONS = frozenset({"on", "in", "at", "inside", "atop", "upon"}) | NEAR_WORDS
+
+
+def posture_at(instruction: str, toks: list[tuple[str, int, int]], i: int) -> bool:
+    """Is word `i` a posture before a place's preposition ("sitting on", "lying in", "sitting next to"):
+    where a thing is (check 1 reads no action there)?"""
+    nxt = toks[i + 1] if i + 1 < len(toks) else None
+    return nxt is not None and nxt[0] in _WHERE_PREPOSITIONS and says_where(instruction, nxt[1])
+
+
+# the verbs that treat a thing where it is taken to (a sink, a fridge, a microwave), never put it anywhere
+_TREATMENTS = frozenset({"verb_clean_place", "verb_cool_place", "verb_heat_place"})
+
+
+def of_a_treated_thing(toks: list[tuple[str, int, int]], m: Mention, clause: tuple[int, int]) -> bool:
+    """Does the place `m` say where a thing is, in a clause (character span `clause`) whose verb treats
+    it or throws it away and where no other verb puts anything ("wash the fork next to the coffee machine",
+    "throw the apple by the microwave away")? The treatment's own place (the sink, the fridge, the
+    trash) is said by the verb; a place said with "on" is where a treated thing is ("chill the tomato on
+    the counter"), unless it is a thing to carry ("heat the apple on the plate") or the thing is thrown
+    ("throw the apple on the counter" may say where it lands)."""
+    start = pair_start(toks, m.start)
+    said = [w for w, s, _ in toks[:start] if clause[0] <= s]
+    treats = any(categories(w) & _TREATMENTS for w in said)
+    thrown = [w for w in said if any(verb_places().get(f) == "GarbageCan" for f in stems(w))]
+    if any("verb_any" in categories(w) for w in said if w not in thrown) or not (treats or thrown):
+        return False
+    if near_word_before(toks, start):
+        return True
+    j = start - 1
+    while j >= 0 and toks[j][0] in DETERMINERS:
+        j -= 1
+    return treats and j > 0 and toks[j][0] in ("on", "upon") and not carried(m)
+
+
+_PLACING = frozenset({"in", "on", "into", "onto", "inside"})
+
+
+def listed_landmark(text: str, toks: list[tuple[str, int, int]], m: Mention, mentions: list[Mention]) -> bool:
+    """Is the landmark `m` ("by the sink") said of an item of a list whose every later item has a landmark
+    too and whose last one the destination: "put the mug by the sink and the bowl next to the stove in the
+    cabinet"? Said alike of every item, each landmark tells which thing; the one place said with "in"/"on"
+    is where they all go. With one item plain ("the mug by the sink and the bowl in the cabinet") where the
+    mug goes is not said: that stays unread."""
+    if not near_word_before(toks, m.start):
+        return False
+    later = sorted((o for o in mentions if o.start >= m.end), key=lambda o: o.start)
+    at, k = m.end, 0
+    while k + 1 < len(later) and at < len(toks) and _joined(text, toks, at):
+        thing, mark = later[k], later[k + 1]
+        between = [w for w, _, _ in toks[at : thing.start]]
+        if any("verb_any" in categories(w) for w in between) or not near_word_before(toks, mark.start):
+            return False
+        at, k = mark.end, k + 2
+        if k < len(later) and at < len(toks) and toks[at][0] in _PLACING and later[k].start <= at + 3:
+            return True
+    return False
+
+
+def _joined(text: str, toks: list[tuple[str, int, int]], at: int) -> bool:
+    """Does another item of a list start at word `at`: after "and", or after a comma (not a token)?"""
+    return toks[at][0] == "and" or (at > 0 and "," in text[toks[at - 1][2] : toks[at][1]])
 
 
 def landmark_destinations(

@@ -477,7 +477,9 @@ def _holdable(np: NP, holder: NP, look: AffordanceLookup | None) -> bool:
 
 def _read_destination(r: _Reading, fr: Frame, it: Item) -> None:
     """Where the item goes (stops on the way first); "in a cup to the counter" also names a container."""
-    dst = dest_of(it, fr.cls) or near_dest(it)
+    # "throw away the apple next to the sink", "grab the mug by the sink.": the sink says which one; the
+    # verb (or the next clause) says where it goes
+    dst = dest_of(it, fr.cls) or (near_dest(it) if fr.cls not in ("trash", "pick") else None)
     if any(p == THEN_TO for p, _ in it.pps):  # stops on the way come before the destination
         r.dests += [np for p, np in it.pps if p in G.DEST_PREPS and np.is_receptacle() and np is not dst]
     if fr.cls == "trash" and dst is None:

@@ -317,7 +317,7 @@ def two_places(item: Item) -> str:
 # Places that stand on the floor: never inside or on top of another place
 _STANDING = frozenset(
     {"DiningTable", "CounterTop", "SideTable", "CoffeeTable", "Desk", "Dresser", "Bed", "Sofa", "ArmChair"}
-    | {"Ottoman", "Fridge", "StoveBurner"}
+    | {"Ottoman", "Fridge", "StoveBurner", "Toilet", "BathtubBasin", "TVStand"}
 )
 # parts of a piece of furniture or of an appliance ("the shelf in the fridge", "a drawer in the desk")
 _PARTS = frozenset({"Drawer", "Shelf", "ShelvingUnit", "Cabinet"})
@@ -347,10 +347,18 @@ def _standing_place_first(item: Item, text: str) -> None:
         return
     if not _one_phrase(text, a, b, whole):
         return
-    if types_a <= _STANDING and not types_b & _PARTS:
+    if types_a <= _STANDING and (not types_b & _PARTS or _part_of_another(b, types_a)):
         item.pps[places[0]] = ("from", a)
     elif types_a <= _SITS_ON_FURNITURE and types_b <= _STANDING:  # "in a drawer in the dresser"
         item.pps[places[1]] = ("of", b)
+
+
+def _part_of_another(part: NP, types_a: set[str]) -> bool:
+    """ "on the dining table in the middle drawer of the dresser": the part says whose it is, a piece of
+    furniture other than the first place, so it is no part of that place (which says where the thing is)."""
+    _, of, owner = part.text.lower().partition(" of ")
+    said = {t for m in find_mentions(owner) for t in m.entry.types} if of else set()
+    return bool(said) and said <= _STANDING and not said & types_a
 
 
 def _one_phrase(text: str, a: NP, b: NP, whole: bool = True) -> bool:
