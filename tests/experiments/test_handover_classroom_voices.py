@@ -63,7 +63,7 @@ UNCLEAR = [
     # with no regions named before, "the ones I said" names none
     (3, "Don't put a pillar on a region other than the ones I said. Move the pillars to E, F and G."),
     # a subject line's topic is not a command
-    (5, "Subject: swap\nSwap the red and blue blocks, red first, and move yellow to the opposite side whenever."),
+    (5, "Subject: swap\nSwap the red and blue blocks, red first. Yellow to the opposite side, any time."),
 ]
 
 NEAR_MISSES = [

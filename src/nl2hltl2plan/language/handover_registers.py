@@ -97,9 +97,12 @@ _ON = r"(?:on|onto|in|into)"
 _PUT_NOTHING = r"(?:put|place|drop|set|leave|lay)\s+(?:nothing|no\s+(?:block|object|pillar)s?)"
 _BARE_VERB = r"(?:go|be|hold|come|stay|remain|land|end\s+up|sit|get)"
 _LETTERS = r"[e-j](?:\s*(?:,|and|or)\s*[e-j])*"
-# "those (three) (regions)": the regions named before, read by the places pass; a consequent that puts nothing there
+# "those (three) (regions)": the regions named before, read by the places pass; a consequent that puts
+# nothing there
 _THOSE = r"(?:those|these)(?:\s+(?:two|three|four))?(?:\s+regions)?"
-_NONE_ON = r"(?:do\s+not|never)\s+put\s+(?:any\s+object|anything|objects|an\s+object|a\s+block|any\s+block)|put\s+nothing"
+_NONE_ON = (
+    r"(?:do\s+not|never)\s+put\s+(?:any\s+object|anything|objects|an\s+object|a\s+block|any\s+block)|put\s+nothing"
+)
 
 _COUNTS = {"2": "two", "3": "three"}
 _PLACED_PP = r"placed|put(?:\s+down)?|set\s+down|dropped|down|in\s+place"
