@@ -299,7 +299,8 @@ def _mark_one_per_region(m: Marked) -> None:
         rf"(?:,\s*)?\beach\s+(?:one\s+)?(?:gets|receives|takes|holds)\s+(?:exactly\s+)?(?:one|a\s+single)(?:\s+{NOUN})?\b",
         rf"\b(?:each|every|one|a)\s+{region}\s+(?:is\s+)?(?:only\s+)?for\s+(?:only\s+)?(?:one|a\s+single|1)(?:\s+{NOUN})?"
         r"(?:\s+only)?\b",
-        rf"(?<=,)\s*(?:with\s+)?(?:one|a\s+single)\s+{NOUN}\s+(?:each|apiece)\b",  # "..., one block each"
+        # "..., one (a) block each"
+        rf"(?<=,)\s*(?:with\s+)?(?:one|a\s+single|an?)\s+{NOUN}\s+(?:each|apiece)\b",
         rf"\b(?:with\s+)?{one}\s+(?:per|in\s+each|on\s+each|for\s+each)\b(?!\s+of\b)",
         rf"\b(?:with\s+)?{one}\s+(?:each|every)\s+{region}\b",  # a phone's "one block each region" (per)
         # "..., one block in each of them": the regions just named (the world's rule holds for every region)
@@ -330,6 +331,12 @@ def _mark_arms(m: Marked) -> None:
     # "until one of them touched the red block": them = the arms (the agent of touching)
     m.sub(
         rf"\b(?:one|any|either|each)\s+of\s+them\b(?=\s+(?:has\s+|have\s+|had\s+)?{_TOUCHED})",
+        lambda _: " A ",
+    )
+    # "they may never put a pillar on ...": the doer of an active placing or touching verb (blocks do not act)
+    m.sub(
+        r"\bthey\b(?=\s+(?:(?:may|must|can|should|shall|will)\s+)?(?:not\s+|never\s+)?"
+        r"(?:put|place|set|drop|touch|pick)\s+(?:an?|any|the|no)\b)",
         lambda _: " A ",
     )
     m.sub(
@@ -540,7 +547,9 @@ def _mark_pronouns(m: Marked, previous: str, previous_group: tuple[str, ...]) ->
         pair,
         m.text,
     )
-    m.text = re.sub(r"\b(?:it|them|they)\b", resolve, m.text)
+    # "while they do that": the doer of the work is the arms, never the blocks
+    doer = r"they(?!\s+(?:are\s+)?(?:do|doing|carry|carrying|perform|performing)\b)"
+    m.text = re.sub(rf"\b(?:it|them|{doer})\b", resolve, m.text)
     # "red and blue: move them to any empty region": the heading is what "them" names
     heading = re.match(r"\s*B(\d+)\s*:", m.text)
     if heading and any(

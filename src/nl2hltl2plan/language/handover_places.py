@@ -88,9 +88,16 @@ def mark_places(m: Marked, scene: Scene, named_before: tuple[str, ...]) -> None:
         r"(?:\s+of\s+the\s+(?:table|workspace|work\s+area|board))?\b",
         lambda match: _new_place(m, Place("opposite", text=match.group(0).strip())),
     )
+    # "any empty region", "whichever region is free", "somewhere empty": a region other than the block's start
     m.sub(
-        rf"\b(?:(?:any|an|some|a)\s+)?(?:other\s+)?{EMPTY}\s+{PLACE_NOUN}\b",
+        rf"\b(?:(?:any|an|some|a)\s+)?(?:other\s+)?{EMPTY}\s+{PLACE_NOUN}\b|"
+        rf"\b(?:whichever|whatever)\s+{PLACE_NOUN}\s+(?:is|happens\s+to\s+be)\s+{EMPTY}\b|\bsomewhere\s+{EMPTY}\b",
         lambda match: _new_place(m, Place("away", text=match.group(0).strip())),
+    )
+    # "..., whenever there is one": the time of a goal to such a region is free ("whenever")
+    m.sub(
+        r"\bP(\d+)(\s*,?\s*whenever)\s+there\s+(?:is|s)\s+one\b",
+        lambda match: match.group(0) if m.places[int(match[1])].kind != "away" else f"P{match[1]}{match[2]}",
     )
     _mark_arm_sides(m, scene)
     _mark_region_lists(m, scene)
@@ -115,10 +122,12 @@ def mark_places(m: Marked, scene: Scene, named_before: tuple[str, ...]) -> None:
             raise HTTError(f"'{match.group(0).strip()}' counts {said}, but {named} regions were named")
         return _new_place(m, Place("complement", lists[-1], text=match.group(0).strip()))
 
-    these = rf"(?:these|those)(?:\s+(?P<count>two|three|four|\d))?(?:\s+{PLACE_NOUN})?"
+    # "the same" only before a count or a place noun ("other than the same three", "the same regions")
+    same = rf"the\s+same(?=\s+(?:two|three|four|\d|{PLACE_NOUN})\b)"
+    these = rf"(?:these|those|{same})(?:\s+(?P<count>two|three|four|\d))?(?:\s+{PLACE_NOUN})?"
     m.sub(
         rf"\b(?:(?:the|any|all|an?)\s+)?(?:other\s+)?{PLACE_NOUN}\s+{OTHER_THAN}\s+"
-        rf"(?:{these}|them|the\s+ones\s+(?:named|above))\b",
+        rf"(?:{these}|them|the\s+ones\s+(?:named|above|(?:i|we)\s+(?:said|named|mentioned|listed|gave)))\b",
         other_than_these,
     )
 

@@ -97,6 +97,12 @@ _ON = r"(?:on|onto|in|into)"
 _PUT_NOTHING = r"(?:put|place|drop|set|leave|lay)\s+(?:nothing|no\s+(?:block|object|pillar)s?)"
 _BARE_VERB = r"(?:go|be|hold|come|stay|remain|land|end\s+up|sit|get)"
 _LETTERS = r"[e-j](?:\s*(?:,|and|or)\s*[e-j])*"
+# "those (three) (regions)": the regions named before, read by the places pass; a consequent that puts
+# nothing there
+_THOSE = r"(?:those|these)(?:\s+(?:two|three|four))?(?:\s+regions)?"
+_NONE_ON = (
+    r"(?:do\s+not|never)\s+put\s+(?:any\s+object|anything|objects|an\s+object|a\s+block|any\s+block)|put\s+nothing"
+)
 
 _COUNTS = {"2": "two", "3": "three"}
 _PLACED_PP = r"placed|put(?:\s+down)?|set\s+down|dropped|down|in\s+place"
@@ -301,8 +307,8 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
         "one block per region",
     ),
     (
-        rf"^\s*if\s+a\s+region\s+is\s+not\s+(?:one\s+of\s+)?((?:regions?\s+)?{_LETTERS})\s*,\s*"
-        r"(?:do\s+not\s+put\s+(?:any\s+object|anything|objects)|put\s+nothing)\s+(?:on|in)\s+it\s*$",
+        rf"^\s*if\s+a\s+region\s+is\s+not\s+(?:one\s+of\s+)?((?:regions?\s+)?{_LETTERS}|{_THOSE})\s*,\s*"
+        rf"(?:{_NONE_ON})\s+(?:on|in)\s+it\s*$",
         r"nothing may be put on any region other than \1",
     ),
     # a conditional that restates an order or a guard: "if red has not been placed (yet), do not place blue",
@@ -312,8 +318,7 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     # "if a region is F, G or H, put nothing on it" (nothing on F, G or H); "the blue block may only be placed
     # if (once) the red block has been placed" (not until then)
     (
-        rf"\bif\s+a\s+region\s+is\s+(?:one\s+of\s+)?((?:regions?\s+)?{_LETTERS})\s*,\s*(?:do\s+not\s+put\s+(?:any\s+"
-        r"object|anything|objects)|put\s+nothing)\s+(?:on|in)\s+it\s*$",
+        rf"\bif\s+a\s+region\s+is\s+(?:one\s+of\s+)?((?:regions?\s+)?{_LETTERS})\s*,\s*(?:{_NONE_ON})\s+(?:on|in)\s+it\s*$",
         r"put nothing on \1",
     ),
     (
@@ -323,7 +328,7 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     ),
     # "if (should) you need to set a block down in the meantime, do not use F, G or H": the period's rule
     (
-        r"(^|[,;])\s*(?:if\s+(?:you|we)\s+(?:need|have|want)|should\s+(?:you|we)\s+need)\s+to\s+(?:set|put|place|lay|rest)\s+(?:a\s+block|an\s+"
+        r"(^|[,;])\s*(?:if\s+(?:you|we)\s+(?:need|have|want)|should\s+(?:you|we)\s+need)\s+(?:somewhere\s+|a\s+(?:place|spot)\s+)?to\s+(?:set|put|place|lay|rest)\s+(?:a\s+block|an\s+"
         r"object|a\s+pillar|anything|something|one|it)(?:\s+down)?\s+(meanwhile|in\s+the\s+meantime)\s*,\s*"
         r"(?=(?:do\s+not|never)\s+use\b)",
         r"\1 \2 , ",

@@ -277,7 +277,8 @@ def read_prohibitions(m: Marked) -> list[Prohibition]:
     modal = r"(?:(?:must|may|can|should|shall|will|is|are)\s+)?"
     m.sub(rf"\bB(?P<b>\d+)\s+{modal}{NEG}\s+(?:ever\s+)?(?:be\s+)?{DROP}{down}", add)
     m.sub(
-        rf"(?:(?:\bA\s+)?{NEG}|\bno\s+A\s+{may}?)\s+{_PUT}\s+(?:any\s+(?:one\s+)?of\s+)?B(?P<b>\d+){down}",
+        rf"(?:(?:\bA\s+(?:(?:must|may|can|should|shall|will)\s+)?)?{NEG}|\bno\s+A\s+{may}?)\s+{_PUT}\s+(?:any\s+(?:one\s+)?of\s+)?"
+        rf"B(?P<b>\d+){down}",
         add,
     )
     m.sub(rf"\bnothing\s+(?:{may}\s+)?(?:ever\s+)?(?:be\s+|is\s+|gets\s+)?(?:ever\s+)?{DROP}{down}", add)

@@ -133,9 +133,9 @@ _FILLERS: tuple[tuple[str, str], ...] = (
         r"(^|,|\band\b)\s*(?:you\s+(?:will|may|can|should|might)\s+)?(?:(?:notice|see)\s+that\b|notice\s+(?=(?:each|every|only|no|nothing|none)\b))",
         r"\1 ",
     ),  # not "you'll see the red block on g": a scene, not a rule
-    # when ("today you ...", "your task today:"; who is spoken to, "alright class,", is a frame word of
-    # `handover_discourse`)
-    (r"^\s*(?:today|this\s+time|for\s+today)\s*,?\s*(?=(?:you|we)\b)", " "),
+    # when ("today you ...", "today the robots move ...", "your task today:"; who is spoken to, "alright
+    # class,", is a frame word of `handover_discourse`)
+    (r"^\s*(?:today|this\s+time|for\s+today)\s*,?\s*(?=(?:you|we|the\s+(?:robots?|arms?))\b)", " "),
     (r"\b(your|the|our)\s+(task|job|goal|exercise)\s+(?:today|this\s+time|here|for\s+today)\b", r"\1 \2"),
 )
 

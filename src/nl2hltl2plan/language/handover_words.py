@@ -57,7 +57,7 @@ PERIOD_WORDS = (
     r"while\s+(?:this|that|it)\s+is\s+(?:in\s+progress|under\s+way|ongoing)|"
     r"until\s+the\s+(?:job|task|work|transfer)\s+is\s+(?:done|finished|complete|over)|"
     # "during the whole task", "for the duration of this task", "while you do this", "while this is done"
-    r"(?:during|throughout|for)\s+(?:this|that|the)\s+(?:whole\s+|entire\s+)?(?:task|process|job|operation|transfer)|"
+    r"(?:during|throughout|for)\s+(?:this|that|the)\s+(?:whole\s+|entire\s+)?(?:task|process|job|operation|transfer|game|exercise)|"
     r"for\s+the\s+(?:whole\s+|entire\s+)?duration(?:\s+of\s+(?:this|that|the)\s+(?:task|process|period|job|operation))?|"
     r"while\s+(?:you|we|they|the\s+arms)\s+(?:are\s+)?(?:do|doing|carry\s+out|carrying\s+out|perform|performing)\s+"
     r"(?:this|that|it|so)|while\s+(?:this|that|it)\s+(?:is|gets)\s+(?:being\s+)?done)"
