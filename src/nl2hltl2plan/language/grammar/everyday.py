@@ -274,8 +274,11 @@ _CLAUSE_FREED = re.compile(rf"(?:\b{_FREE_ORDER}|\b{G.WHENEVER}|\bat\s+any\s+tim
 
 
 def _as_well_as_doing(text: str) -> str:
-    """Each ", as well as <verb>ing" written ", and <verb>ing", unless the sentence before it frees an order."""
-    return _AS_WELL_AS_DOING.sub(lambda m: m[0] if _CLAUSE_FREED.search(text[: m.start()]) else ", and ", text)
+    """Each ", as well as <verb>ing" written ", and <verb>ing", unless the sentence before frees an order."""
+    def one(m: re.Match[str]) -> str:
+        return m[0] if _CLAUSE_FREED.search(text[: m.start()]) else ", and "
+
+    return _AS_WELL_AS_DOING.sub(one, text)
 
 
 # "put the egg (in) there too", "then the egg in there": "there" is the last destination named before it

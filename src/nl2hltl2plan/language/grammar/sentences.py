@@ -27,7 +27,11 @@ from nl2hltl2plan.language.grammar.order_phrases import (
     the_moment,
 )
 from nl2hltl2plan.language.grammar.phrases import match_prep, parse_np, tokens
-from nl2hltl2plan.language.grammar.sentence_joins import both_of_two_sentences, holder_named, joined_treatments
+from nl2hltl2plan.language.grammar.sentence_joins import (
+    both_of_two_sentences,
+    holder_named,
+    joined_treatments,
+)
 from nl2hltl2plan.language.grammar.subordinate import treated_before, treatment_of_it
 from nl2hltl2plan.language.grounding import find_mentions, sentence_start
 from nl2hltl2plan.language.statements import RELATIVE_PLACE
