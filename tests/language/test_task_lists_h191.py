@@ -2,11 +2,13 @@
 (`learned.compose.TRAIN_STYLE` / `HELDOUT_STYLE`), classes found on the seed-1432 compositions. Before each
 fix the reading was wrong or refused:
 
-- an opening "first" / "begin by" over a list its adding word closes ("Begin by A; also B. To finish, C",
-  "First A, plus B", "First A, B and C"): A was ordered before B (wrong); the list is the first step;
+- an opening "first" / "begin by" over a list its adding word closes, a later step after it ("Begin by A;
+  also B. To finish, C", "First A, plus B. Then C"): A was ordered before B (wrong); the list is the first
+  step ("First A, and B" alone still orders A first: `test_connective_synonyms`);
 - a closing free-order remark with a courtesy after it (", doesn't matter which first please", ", order
   doesn't matter, thanks!"): refused as a list of destinations;
 - ", as well as <verb>ing": ", as well" was taken for a second place of the clause before (refused);
+- a closing "ahead of <verb>ing the X" / "prior to <verb>ing the X" (as "before <verb>ing the X"): refused;
 - a misspelt state word before a name ("a cean rag"): read past, the treatment lost (wrong, exit 0); it
   is named now, with the state word it may misspell;
 - the structure model's reading of "First, A, B, C and D in whichever order": its relations between spans
@@ -102,6 +104,14 @@ def test_a_free_order_remark_before_a_courtesy_wordings(text):
 def test_as_well_as_a_gerund_adds_a_clause():
     tasks, order, unread = read("Put the mug in the sink, as well as examining a pencil under the lamp.")
     assert tasks == [MUG, PENCIL] and not order and not unread
+
+
+# ----- "Y ahead of putting the X": a closing reference, as "before putting the X" ------------------------
+@pytest.mark.parametrize("rel", ["ahead of", "prior to"])
+def test_a_closing_ahead_of_doing_orders_before_that_task(rel):
+    text = f"Put two mugs on the shelf. Examine a pencil under the lamp {rel} putting the mugs."
+    tasks, order, unread = read(text)
+    assert tasks == ["place_two 2x Mug -> Shelf", PENCIL] and order == {(PENCIL, tasks[0])} and not unread
 
 
 # ----- a misspelt state word before a name ----------------------------------------------------------------

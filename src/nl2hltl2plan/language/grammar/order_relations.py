@@ -519,9 +519,10 @@ def _first_edges(units: list[Unit], steps: list[int], free: set[int], edges: Edg
             nxt.seq_after_prev or any(kind in {G.THEN, G.AFTER_ALL, G.AFTER_REF} for kind, _ in nxt.markers)
         ):
             continue
-        # "Begin by A; also B" / "First A, plus B" / "First A, B and C": a list its adding word closes is
-        # the first step (one step said: "First A, B" is a sequence, as before)
-        listed = any(units[j].joiner in _ADDING for j in range(k + 1, len(units)) if steps[j] == steps[k])
+        # "Begin by A; also B. Then C" / "First A, plus B. To finish, C": a list its adding word closes is
+        # the first step where a later step follows ("First A, and B" alone: A first, the only other task B)
+        same = [j for j in range(k + 1, len(units)) if steps[j] == steps[k]]
+        listed = any(units[j].joiner in _ADDING for j in same) and any(s > steps[k] for s in steps)
         step = steps[k] if own[-1] != own[0] or listed else -1
         later = [t for j in range(k + 1, len(units)) if steps[j] != step for t in units[j].tasks]
         stated = nx.transitive_closure(nx.DiGraph(list(edges))) if stated is None else stated
