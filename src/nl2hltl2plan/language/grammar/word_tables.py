@@ -534,7 +534,7 @@ TRAILING: list[tuple[re.Pattern[str], str]] = [
             r"\s*,?\s*(?:(?:this\s+)?(?:should|must|has\s+to|have\s+to|needs?\s+to|can\s+only|is\s+to)\s+be\s+"
             r"(?:done|completed|performed|finished|placed|put|moved|carried\s+out)\s+)?(?:but\s+)?"
             r"(?:(?:only|right|just|immediately)\s+)?"
-            r"(?P<rel>after|before|(?:ahead\s+of|prior\s+to)(?=\s+\w+ing\b)|once|when(?=\s+(?:\w+ing|the)\b))\s+(?P<ref>(?:\w+ing\b|the\s|you\s|having\s|all\s|every|each|"
+            r"(?P<rel>after|before|(?:ahead\s+of|prior\s+to)(?=\s+(?!turning|switching)\w+ing\b)|once|when(?=\s+(?:\w+ing|the)\b))\s+(?P<ref>(?:\w+ing\b|the\s|you\s|having\s|all\s|every|each|"
             r"finishing|completing).+)$",
             _F,
         ),
