@@ -11,8 +11,6 @@ fix the reading was wrong or refused:
 - a closing "ahead of <verb>ing the X" / "prior to <verb>ing the X" (as "before <verb>ing the X"): refused;
 - a misspelt state word before a name ("a cean rag"): read past, the treatment lost (wrong, exit 0); it
   is named now, with the state word it may misspell;
-- the structure model's reading of "First, A, B, C and D in whichever order": its relations between spans
-  state an order no word states, and are not taken (the reading was refused).
 The default run keeps one case per class and its near miss; `-m sweep` reads the wording variants."""
 
 from __future__ import annotations
@@ -21,7 +19,6 @@ import pytest
 
 from nl2hltl2plan.language.accounting import account
 from nl2hltl2plan.language.learned.inference import parse_instruction
-from nl2hltl2plan.language.learned.structured import only_words_free_the_order
 from nl2hltl2plan.language.task_specs import transitive_closure
 
 ROOM = {
@@ -124,13 +121,3 @@ def test_a_slip_of_a_colour_is_still_read_past():
     """Near miss: "a wite cloth" is one slip from "white" and two from any state word."""
     tasks, _, unread = read("Put a wite cloth on the counter.")
     assert tasks == ["place Cloth -> CounterTop"] and not unread
-
-
-# ----- the structure model's order where the only order words free it ------------------------------------
-def test_only_a_free_order_phrase_states_no_order():
-    assert only_words_free_the_order("First, look at a CD, examine a pencil and look at a bowl in whichever "
-                                     "order please.", phrase=True)  # fmt: skip
-    # near misses: "in that order" frees nothing; "while" frees one task, it is no phrase of the whole list
-    assert not only_words_free_the_order("carry a laptop while turning on a lamp, then look at a CD, in that "
-                                         "order", phrase=True)  # fmt: skip
-    assert not only_words_free_the_order("look at a CD while holding it, and examine a pencil", phrase=True)

@@ -39,7 +39,6 @@ from nl2hltl2plan.language.learned.structured import (
     combine_spans,
     complete_and_accounted,
     decide,
-    only_words_free_the_order,
     resolved,
     with_verb,
 )
@@ -346,10 +345,7 @@ def structure_reading(
         previous = (text, p.tasks[-1])
         parsed.append((p.tasks, p.before))
         ambiguities.append(p.ambiguities)
-    # "First, A, B, C, D in whichever order please": the model's relations between spans state an order no
-    # word states (the retrained model reads the last span as a step, which `order_words_kept` refuses)
-    free = only_words_free_the_order(instruction, phrase=True)
-    tasks, before, groups = combine_spans(reading, parsed, between=not free)
+    tasks, before, groups = combine_spans(reading, parsed)
     if not complete_and_accounted(instruction, tasks, before):
         return None
     renamed = _renamed_ambiguities(ambiguities, parsed, tasks)

@@ -30,7 +30,7 @@ from dataclasses import dataclass
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.language.accounting import account
-from nl2hltl2plan.language.content_words import categories, free_order_remarks
+from nl2hltl2plan.language.content_words import categories
 from nl2hltl2plan.language.grounding import find_mentions, tokens
 from nl2hltl2plan.language.learned.compose import ELIDABLE, VERB_GERUND, VERB_PARTICIPLE
 from nl2hltl2plan.language.learned.span_order import before_pairs
@@ -154,16 +154,7 @@ def _order_no_word_states(instruction: str, before: list[tuple[str, str]]) -> bo
     order and at most an opening "first" ("First, A, B and C, in whichever order please"; "First, A, B, C.
     Do them in any order"): the annotation guide lists only the relations the words state, and "first"
     states one only with a "then" after it (the model read these as "A, B, then C")."""
-    return bool(before) and only_words_free_the_order(instruction)
-
-
-def only_words_free_the_order(instruction: str, phrase: bool = False) -> bool:
-    """Whether the text's only order words are a phrase that frees the order and at most an opening
-    "first" (`_order_no_word_states`: no relation between tasks is stated); `phrase`: a free-order phrase
-    of the whole list ("in whichever order"), not only a word that frees one task ("while", "whenever")."""
-    if not _frees_an_order(instruction) or (
-        phrase and not any(not r.per_group for r in free_order_remarks(instruction))
-    ):
+    if not before or not _frees_an_order(instruction):
         return False
     toks = tokens(instruction)
     in_mention = {i for m in find_mentions(instruction) for i in range(m.start, m.end)}
@@ -276,10 +267,9 @@ SpanTasks = tuple[list[BaseTaskSpec], list[tuple[str, str]]]
 
 
 def combine_spans(
-    reading: Reading, parsed: list[SpanTasks], between: bool = True
+    reading: Reading, parsed: list[SpanTasks]
 ) -> tuple[list[BaseTaskSpec], list[tuple[str, str]], list[list[str]]]:
-    """Renumber each span's tasks in text order; every task of a span before every task of a later step
-    (`between`; False: the spans' relations are not taken, where no word states one between tasks)."""
+    """Renumber each span's tasks in text order; every task of a span before every task of a later step."""
     tasks: list[BaseTaskSpec] = []
     before: list[tuple[str, str]] = []
     groups: list[list[str]] = []
@@ -291,8 +281,7 @@ def combine_spans(
         ids_of_span.append(list(new.values()))
         if len(new) > 1:
             groups.append(list(new.values()))
-    pairs = before_pairs([s.relation for s in reading.spans], [s.target for s in reading.spans])
-    for a, b in pairs if between else []:
+    for a, b in before_pairs([s.relation for s in reading.spans], [s.target for s in reading.spans]):
         before += [(x, y) for x in ids_of_span[a] for y in ids_of_span[b]]
     return tasks, sorted(set(before)), groups
 
