@@ -65,6 +65,16 @@ def test_first_before_then_still_orders_its_own_clause_first():
     assert tasks == [MUG, APPLE, EGG] and order == {(MUG, APPLE), (MUG, EGG)} and not unread
 
 
+def test_no_unit_of_the_first_step_is_first_on_its_own():
+    """ "First A, and B, as well as C. Then D": B is not before C (each unit of the step carries "first")."""
+    tasks, order, unread = read(
+        "First put the mug in the sink, and put the apple in the fridge, as well as putting the egg in the "
+        "cabinet. Then examine a pencil under the lamp."
+    )
+    assert tasks == [MUG, APPLE, EGG, PENCIL] and order == {(x, PENCIL) for x in (MUG, APPLE, EGG)}
+    assert not unread
+
+
 @pytest.mark.sweep
 @pytest.mark.parametrize("text", FIRST_LISTS)
 def test_first_over_a_list_wordings(text):

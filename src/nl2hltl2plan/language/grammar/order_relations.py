@@ -521,7 +521,7 @@ def _first_edges(units: list[Unit], steps: list[int], free: set[int], edges: Edg
             continue
         # "Begin by A; also B. Then C" / "First A, plus B. To finish, C": a list its adding word closes is
         # the first step where a later step follows ("First A, and B" alone: A first, the only other task B)
-        same = [j for j in range(k + 1, len(units)) if steps[j] == steps[k]]
+        same = [j for j, s in enumerate(steps) if s == steps[k]][1:]  # the step's units after its first
         listed = any(units[j].joiner in _ADDING for j in same) and any(s > steps[k] for s in steps)
         step = steps[k] if own[-1] != own[0] or listed else -1
         later = [t for j in range(k + 1, len(units)) if steps[j] != step for t in units[j].tasks]
