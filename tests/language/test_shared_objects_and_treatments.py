@@ -170,6 +170,17 @@ def test_both_with_no_list_before_it_is_not_dropped():
     assert unread
 
 
+def test_both_sums_up_a_task_added_with_too():
+    """ "A. B too, both before C": "too" adds B to A, "both" sums up the two (`both_of_two_sentences`)."""
+    p = parse_instruction(
+        "Put the mug in the sink. Put the apple in the fridge too, both before you put the egg in the pot.",
+        KITCHEN | {"Pot"},
+        "s",
+        strict=False,
+    )
+    assert len(p.tasks) == 3 and sorted(p.before) == [("A", "C"), ("B", "C")] and not p.unparsed
+
+
 def test_states_listed_before_filled_are_one_noun_phrase():
     tasks, unread = read("Put a cleaned, filled bowl of water in the cabinet, left of the microwave.")
     assert tasks == ["clean_place Bowl -> Cabinet"] and not unread

@@ -86,6 +86,7 @@ from nl2hltl2plan.language.spelling import (
     one_edit,
     structure_word,
     vocabulary_near,
+    vocabulary_spelt,
 )
 
 _COMMAND_START = COMMAND_WORDS | {"next", "finally", "lastly"}
@@ -275,7 +276,11 @@ def _unknown_modifier(word: str) -> list[str] | None:
         return near if adjective(word) and any(s in one_edit(word) for s in near) else None
     if adjective(word) and not any(s in one_edit(word) for s in near):
         return None  # "the tiny mug" describes the mug; "the heather apple" names a plant, or 'heated'
-    return near if english_word(word) and not _slip_of_descriptive(word) else None
+    if not english_word(word):  # "a cean rag", "the rnsed cloth": one slip from a state word (a reading
+        # that reads past it loses the treatment), unless the respelling makes it one vocabulary word
+        slips = [s for s in near if s in one_edit(word)]
+        return slips if slips and not vocabulary_spelt(word) else None
+    return near if not _slip_of_descriptive(word) else None
 
 
 def _first_word_of_its_name(word: str, m: Mention) -> bool:

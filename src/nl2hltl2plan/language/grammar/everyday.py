@@ -34,6 +34,7 @@ from functools import lru_cache
 
 from nl2hltl2plan.language.content_words import DETERMINERS, categories, free_order_phrase
 from nl2hltl2plan.language.courtesy import courtesy_pattern
+from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.counted_refs import another_said, counted_references
 from nl2hltl2plan.language.grammar.lamp_phrases import carried_to_lamp
 from nl2hltl2plan.language.grammar.order_phrases import dashed_first, state_on_it
@@ -146,8 +147,10 @@ _PUT_THEM_THERE = re.compile(
 _BELONGS = re.compile(r"\bbelongs?\s+(?:in|on|to)\b", re.I)
 # a free-order remark closing the request, after a comma or as its own clause: ", order doesn't matter",
 # "; any order", "; I don't care about the order", "the order is your call" (read as the ", in any order"
-# that the rules read)
-_CLOSING_FREE_ORDER = re.compile(rf"\s*[,;.]\s*{_FREE_ORDER}\s*[.!]?\s*$", re.I)
+# that the rules read), a closing courtesy after it too (", doesn't matter which first please", ", order
+# doesn't matter, thanks!")
+_THANKS_LAST = rf"(?:\s*,?\s*(?:please|{courtesy_pattern('closing')}))?"
+_CLOSING_FREE_ORDER = re.compile(rf"\s*[,;.]\s*{_FREE_ORDER}{_THANKS_LAST}\s*[.!]?\s*$", re.I)
 
 
 # contractions typed without the apostrophe ("when thats done", "dont"); not "its", "lets", "well", "were"
@@ -259,7 +262,7 @@ def everyday(text: str) -> str:
     of the text)."""
     text = _BARE.sub(lambda m: _BARE_CONTRACTION[m[1].lower()], _UR_DONE.sub("you're ", text))
     text = _noted(_without_fillers(text))  # first: "and, like, the box on there too" finds its place
-    text = another_said(text)  # "one more" said of a thing; "then another apple" (counted_refs.py)
+    text = another_said(_as_well_as_doing(text))  # "one more" said of a thing (counted_refs.py)
     if _FREE_REMARK.search(text):  # "1. X. 2. Y. Any order is fine.": the numbers only list the steps
         text = _NUMBERED.sub(lambda m: m["lead"], text)
     text = named_by_use(everyday_names(respelt(text)))  # misspelt names, everyday names, names by use
@@ -323,6 +326,22 @@ _ORDER_WORD = re.compile(
 # counts of nothing (a numbered list may mean a sequence)
 _NUMBERED = re.compile(r"(?P<lead>^|(?<=[.;!?:])\s+|\n)\s*\d{1,2}\s*[.)]\s+(?=[a-z])", re.I)
 _FREE_REMARK = re.compile(rf"\b{_FREE_ORDER}\b", re.I)
+
+
+# "put the mug in the sink, as well as putting the apple in the fridge": one more clause, as "and putting"
+# (the clause rules took ", as well" for a second place of the mug); not after a clause its own words free
+# ("X whenever you can, as well as Y, and then Z": whether Z comes after X is the rules' open question,
+# where the structure model follows the generator's step)
+_AS_WELL_AS_DOING = re.compile(r",?\s+as\s+well\s+as\s+(?=[a-z]+ing\b)", re.I)
+_CLAUSE_FREED = re.compile(rf"(?:\b{_FREE_ORDER}|\b{G.WHENEVER}|\bat\s+any\s+time)[^.;!?]*$", re.I)
+
+
+def _as_well_as_doing(text: str) -> str:
+    """Each ", as well as <verb>ing" written ", and <verb>ing", unless the sentence before frees an order."""
+    def one(m: re.Match[str]) -> str:
+        return m[0] if _CLAUSE_FREED.search(text[: m.start()]) else ", and "
+
+    return _AS_WELL_AS_DOING.sub(one, text)
 
 
 # "put the egg (in) there too", "then the egg in there": "there" is the last destination named before it

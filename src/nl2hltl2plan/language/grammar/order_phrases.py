@@ -73,8 +73,9 @@ def clause_refs(rel: str, ref: str) -> list[tuple[str, str]]:
 
 
 def _ref_kind(rel: str) -> str:
-    """The marker of a connective: "before" / "prior to" -> BEFORE_REF; "after" / "once" -> AFTER_REF."""
-    return G.BEFORE_REF if rel.lower().split()[0] in {"before", "prior"} else G.AFTER_REF
+    """The marker of a connective: "before" / "prior to" / "ahead of" -> BEFORE_REF; "after" / "once" ->
+    AFTER_REF."""
+    return G.BEFORE_REF if rel.lower().split()[0] in {"before", "prior", "ahead"} else G.AFTER_REF
 
 
 # "Do not put Y in B before X": the same order as "until" for a task's own verb ("do not open the fridge

@@ -501,6 +501,9 @@ def _add_ref_tasks(new: list[BaseTaskSpec], after: bool, u: Unit, tasks: Tasks, 
         edges.update((t, b2) if after else (b2, t) for b2 in u.tasks)
 
 
+_ADDING = frozenset({"and", "also", "plus"})  # joiners that add a clause to a step, no order of their own
+
+
 def _first_edges(units: list[Unit], steps: list[int], free: set[int], edges: Edges) -> None:
     """ "First X" with no sequencing word right after: X before every later task not allowed at any time,
     and not stated before X ("First X. Before all that, Y": Y first). In a sentence of several steps it is
@@ -516,7 +519,11 @@ def _first_edges(units: list[Unit], steps: list[int], free: set[int], edges: Edg
             nxt.seq_after_prev or any(kind in {G.THEN, G.AFTER_ALL, G.AFTER_REF} for kind, _ in nxt.markers)
         ):
             continue
-        step = steps[k] if own[-1] != own[0] else -1
+        # "Begin by A; also B. Then C" / "First A, plus B. To finish, C": a list its adding word closes is
+        # the first step where a later step follows ("First A, and B" alone: A first, the only other task B)
+        same = [j for j, s in enumerate(steps) if s == steps[k]][1:]  # the step's units after its first
+        listed = any(units[j].joiner in _ADDING for j in same) and any(s > steps[k] for s in steps)
+        step = steps[k] if own[-1] != own[0] or listed else -1
         later = [t for j in range(k + 1, len(units)) if steps[j] != step for t in units[j].tasks]
         stated = nx.transitive_closure(nx.DiGraph(list(edges))) if stated is None else stated
         later = [t for t in later if t not in free and not any(stated.has_edge(t, a) for a in u.tasks)]

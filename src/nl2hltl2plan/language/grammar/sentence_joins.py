@@ -11,6 +11,11 @@ join is made only where the first sentence treats a thing and places nothing, an
 A thing examined or treated in one clause and filled in the next ("Examine the mug by the light of the
 lamp, then put a pen in it and move it to the desk") is the container of the next clause's task: both
 "it"s name the mug, as in "take the mug, put a pen in it and move it to the desk" (`holder_named`).
+
+"Put the plunger in the cabinet. Put the soap bottle in the cabinet too, both before you put the towel away":
+"too" adds the second sentence's one task to the first's, and "both" sums up the two, as "A and B, both
+before C" does (`both_of_two_sentences`); with no "too" ("A. B, both before C") "both" has nothing of its
+own sentence to sum up and stays unread.
 """
 
 from __future__ import annotations
@@ -87,3 +92,23 @@ def holder_named(text: str) -> str:
         return m["put"] + holder + (m["more"] + holder if m["more"] else "")
 
     return _PUT_IN_IT.sub(one, text)
+
+
+# "S1. S2 too / as well / also S2, both before|after ...": S1 and S2 one clause each ("and" in either is a
+# list of its own, which "both" would not sum up with the other sentence)
+_BOTH_TOO = re.compile(
+    r"(?P<first>(?:^|(?<=[.;!?]\s))[^.;!?]+?)[.;!]\s+(?P<second>[^.;!?]*?\b(?:too|as\s+well|also)\b[^.;!?,]*?)"
+    r",\s*both(?:\s+of\s+(?:them|these|those))?\s+(?=(?:before|after|once|until|when)\b)",
+    re.I,
+)
+
+
+def both_of_two_sentences(text: str) -> str:
+    """Each "S1. S2 too, both before Y" written as "S1, and S2 too before Y" (both tasks before Y)."""
+
+    def one(m: re.Match[str]) -> str:
+        if any(re.search(r"\band\b", m[k], re.I) for k in ("first", "second")):
+            return m[0]
+        return f"{m['first']}, and {m['second'][:1].lower()}{m['second'][1:]} "
+
+    return _BOTH_TOO.sub(one, text)

@@ -27,7 +27,11 @@ from nl2hltl2plan.language.grammar.order_phrases import (
     the_moment,
 )
 from nl2hltl2plan.language.grammar.phrases import match_prep, parse_np, tokens
-from nl2hltl2plan.language.grammar.sentence_joins import holder_named, joined_treatments
+from nl2hltl2plan.language.grammar.sentence_joins import (
+    both_of_two_sentences,
+    holder_named,
+    joined_treatments,
+)
 from nl2hltl2plan.language.grammar.subordinate import placed_after, treated_before, treatment_of_it
 from nl2hltl2plan.language.grounding import find_mentions, sentence_start
 from nl2hltl2plan.language.statements import RELATIVE_PLACE
@@ -453,6 +457,7 @@ def normalize(text: str) -> str:
     text = _AS_SOON_AS.sub(lambda m: _as_cased("once", m[0]), the_moment(text))
     text = _CONNECTIVE_YOUVE.sub(r"\1 you have", text)
     text = _BOTH_AFTER_LIST.sub(r"\1 ", _BOTH_BEFORE_LIST.sub("", text))
+    text = both_of_two_sentences(text)  # "A. B too, both before C": A and B (sentence_joins.py)
     text = _ALL_OF_THEM_BEFORE.sub(lambda m: " " if _lists_before(text, m.start()) else m[0], text)
     text = _WHERE_IT_IS.sub("from ", text)
     text = _ONLY_AFTER_SHOULD.sub(lambda m: f"{_as_cased('after', m[0])} {m[2]}, ", text)

@@ -476,8 +476,7 @@ LEADING: list[tuple[re.Pattern[str], str]] = [
     (
         re.compile(
             r"^(?:(?:prior|previous)\s+to\s+(?:that|this)|(?:before|ahead\s+of)\s+(?:that|this|doing\s+(?:that|this|so))|"
-            r"beforehand)"
-            r"\b\s*[,:]?\s*",
+            r"beforehand)\b\s*[,:]?\s*",
             _F,
         ),
         BEFORE_PREV,
@@ -534,7 +533,8 @@ TRAILING: list[tuple[re.Pattern[str], str]] = [
             r"\s*,?\s*(?:(?:this\s+)?(?:should|must|has\s+to|have\s+to|needs?\s+to|can\s+only|is\s+to)\s+be\s+"
             r"(?:done|completed|performed|finished|placed|put|moved|carried\s+out)\s+)?(?:but\s+)?"
             r"(?:(?:only|right|just|immediately)\s+)?"
-            r"(?P<rel>after|before|once|when(?=\s+(?:\w+ing|the)\b))\s+(?P<ref>(?:\w+ing\b|the\s|you\s|having\s|all\s|every|each|"
+            r"(?P<rel>after|before|(?:ahead\s+of|prior\s+to)(?=\s+(?!turning|switching)\w+ing\b)|once|"
+            r"when(?=\s+(?:\w+ing|the)\b))\s+(?P<ref>(?:\w+ing\b|the\s|you\s|having\s|all\s|every|each|"
             r"both\s+(?=(?:[a-z]+\s+){1,2}(?:jobs?|ones|tasks?|chores)\b)|finishing|completing).+)$",
             _F,
         ),
