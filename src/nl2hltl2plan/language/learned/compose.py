@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import random
 import re
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 from nl2hltl2plan.language.learned.faithful import FaithfulExample, by_floor_plan, composable
@@ -137,6 +138,19 @@ def reference(
     return rng.choice(getattr(refs, kind)).format(**names), "RPRE" if kind == "ref_pre" else "REF"
 
 
+# a composition: (text, spans, relations, targets), as `_pair` and `_chain` make it
+Made = tuple[str, list[tuple[int, int]], list[str], list[int | None]]
+
+
+@dataclass(frozen=True)
+class Voices:
+    """A family's clause voices and numbered lists (`compose_voices`): `voiced` rewrites some clauses and
+    returns the tasks they now say; `listed` writes the spans as a numbered list."""
+
+    voiced: Callable[[list[str], list[BaseTaskSpec], random.Random], tuple[list[str], list[BaseTaskSpec]]]
+    listed: Callable[[list[str], random.Random], Made]
+
+
 @dataclass(frozen=True)
 class Connectives:
     """One style family: openers of the first span, joiners of a later span by relation (`{x}` = the
@@ -150,7 +164,7 @@ class Connectives:
     pairs: tuple[tuple[str, tuple[str, str]], ...]
     free_openers: tuple[str, ...] = ()  # a first span free of every later one ("{x} at any time. ...")
     refs: RefJoiners | None = None  # sentences that point back at an earlier span
-    voiced: bool = False  # clause voices and numbered lists (`compose_voices`) too
+    voices: Voices | None = None  # clause voices and numbered lists too (`compose_voices`)
 
 
 TRAIN_STYLE = Connectives(
@@ -464,11 +478,9 @@ def synthesise(
         clauses = [styled_clause(c.text, rng) for c in chosen]
         said = [c.task for c in chosen]
         made = None
-        if style.voiced:  # the second training family: its clause voices, and a numbered list in five
-            from nl2hltl2plan.language.learned.compose_voices import listed, voiced
-
-            clauses, said = voiced(clauses, said, rng)
-            made = listed(clauses, rng) if k > 1 and rng.random() < 0.2 else None
+        if style.voices:  # the second training family: its clause voices, and a numbered list in five
+            clauses, said = style.voices.voiced(clauses, said, rng)
+            made = style.voices.listed(clauses, rng) if k > 1 and rng.random() < 0.2 else None
         if made is None and k == 2 and rng.random() < 0.5:
             made = _pair(style, clauses, rng)
         elif made is None:

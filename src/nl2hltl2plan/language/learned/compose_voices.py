@@ -28,6 +28,8 @@ from nl2hltl2plan.language.learned.compose import (
     TRAIN_REFS,
     VERB_GERUND,
     Connectives,
+    Made,
+    Voices,
     placed_words,
     words_for,
 )
@@ -50,16 +52,6 @@ def _entries() -> dict[str, list[str]]:
 
 
 ENTRIES = _entries()
-VOICE_STYLE = Connectives(
-    openers=tuple(ENTRIES["opener"]),
-    joiners={k: tuple(v) for k, v in ENTRIES.items() if k.isupper()},
-    endings={k.split()[1]: tuple(v) for k, v in ENTRIES.items() if k.startswith("ending ")},
-    pairs=tuple(
-        (t, (k.split()[1], k.split()[2])) for k, v in ENTRIES.items() if k.startswith("pair ") for t in v
-    ),
-    refs=TRAIN_REFS,
-    voiced=True,
-)
 
 
 def _object_words(clause: str, task: BaseTaskSpec) -> str | None:
@@ -124,7 +116,7 @@ def voiced(
     return clauses, tasks
 
 
-def listed(clauses: list[str], rng: random.Random) -> tuple[str, list, list[str], list[int | None]]:
+def listed(clauses: list[str], rng: random.Random) -> Made:
     """The spans as a numbered list, each after the one before: (text, spans, relations, targets)."""
     form = rng.choice(ENTRIES["list"])
     between = rng.choice([" ", "; ", ". ", "\n", ", "])
@@ -136,3 +128,15 @@ def listed(clauses: list[str], rng: random.Random) -> tuple[str, list, list[str]
         text += clause + tail
     text += rng.choice([".", "", "!"])
     return text, spans, ["START"] + ["SEQ"] * (len(clauses) - 1), [None] * len(clauses)
+
+
+VOICE_STYLE = Connectives(
+    openers=tuple(ENTRIES["opener"]),
+    joiners={k: tuple(v) for k, v in ENTRIES.items() if k.isupper()},
+    endings={k.split()[1]: tuple(v) for k, v in ENTRIES.items() if k.startswith("ending ")},
+    pairs=tuple(
+        (t, (k.split()[1], k.split()[2])) for k, v in ENTRIES.items() if k.startswith("pair ") for t in v
+    ),
+    refs=TRAIN_REFS,
+    voices=Voices(voiced, listed),
+)
