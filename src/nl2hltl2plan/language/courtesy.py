@@ -51,12 +51,16 @@ _AFTERTHOUGHT = re.compile(
     rf"(?<=\w)\s*,?\s+oh\s*,?\s+{courtesy_pattern('afterthought')}\s*,?\s+(?=[a-z])", re.I
 )
 # the same "oh" opening a sentence with no verb ("... B. oh and the towel in the tub too", users_h195dev):
-# "Also", as inside one (its "oh" was read as a thing: "put oh in the tub"); before a verb ("... B. Oh, and
-# look at the CD too", users_h200dev) the sentence is a request of its own, as written without it (its "Oh"
-# was left unread after some sentences; an "Also" there asks whether a "before that" reaches it)
+# "Also", as inside one (its "oh" was read as a thing: "put oh in the tub"); before a verb it is "At any
+# time," ("... B. Oh, and look at the CD too", users_h200dev, left "Oh" unread after some sentences): an
+# afterthought added to what was said takes no order from it ("First, A. ... Oh and move D": D is no later
+# than A), unless an order word follows ("oh, and then ...", "oh and after that ..."), which the rules read
 _OH_OPENS = rf"(?<=[.;!?])(\s*)oh\s*,?\s+{courtesy_pattern('afterthought')}\s*,?\s+"
 _OPENING_OH = re.compile(rf"{_OH_OPENS}(?=(?:the|a|an|both|two|\d)\s)", re.I)
-_OPENING_OH_VERB = re.compile(rf"{_OH_OPENS}(?=[a-z])", re.I)
+_OPENING_OH_VERB = re.compile(
+    rf"{_OH_OPENS}(?!(?:then|after|afterwards|before|first|finally|lastly|next|once|when|while)\b)(?=[a-z])",
+    re.I,
+)
 # "don't forget to put ...", "remember to", "make sure you put ...": a reminder, which asks as "please" asks
 # (never a negation); a reminder of a negation is the negation ("remember not to put", "make sure you never
 # put": `_reminded`); "don't forget the mug" and "make sure the mug ends up ..." stay, to be read as written
@@ -126,7 +130,7 @@ def without_courtesy(text: str) -> str:
     >>> without_courtesy("put the pear in the fridge and yeah that's it. the cup in the sink or whatever lol")
     'put the pear in the fridge. the cup in the sink'
     """
-    out = _OPENING_OH_VERB.sub(r"\1", _OPENING_OH.sub(r"\1Also ", _TRAILING.sub("", text)))
+    out = _OPENING_OH_VERB.sub(r"\1At any time, ", _OPENING_OH.sub(r"\1Also ", _TRAILING.sub("", text)))
     out = _AFTERTHOUGHT.sub(". Also ", out)
     out = _FRAME.sub(" ", _REMINDER.sub(_reminded, out))
     out = re.sub(r"\s+([,.;:!?])", r"\1", " ".join(out.split()))
