@@ -51,14 +51,31 @@ _AFTERTHOUGHT = re.compile(
     rf"(?<=\w)\s*,?\s+oh\s*,?\s+{courtesy_pattern('afterthought')}\s*,?\s+(?=[a-z])", re.I
 )
 # the same "oh" opening a sentence with no verb ("... B. oh and the towel in the tub too", users_h195dev):
-# "Also", as inside one (its "oh" was read as a thing: "put oh in the tub"); before a verb the rules read it
-_OPENING_OH = re.compile(
-    rf"(?<=[.;!?])(\s*)oh\s*,?\s+{courtesy_pattern('afterthought')}\s*,?\s+(?=(?:the|a|an|both|two|\d)\s)",
+# "Also", as inside one (its "oh" was read as a thing: "put oh in the tub"); before a verb it is "At any
+# time," ("... B. Oh, and look at the CD too", users_h200dev, left "Oh" unread after some sentences): an
+# afterthought added to what was said takes no order from it ("First, A. ... Oh and move D": D is no later
+# than A), unless an order word follows ("oh, and then ...", "oh and after that ..."), which the rules read
+_OH_OPENS = rf"(?<=[.;!?])(\s*)oh\s*,?\s+{courtesy_pattern('afterthought')}\s*,?\s+"
+_OPENING_OH = re.compile(rf"{_OH_OPENS}(?=(?:the|a|an|both|two|\d)\s)", re.I)
+_OPENING_OH_VERB = re.compile(
+    rf"{_OH_OPENS}(?!(?:then|after|afterwards|before|first|finally|lastly|next|once|when|while)\b)(?=[a-z])",
     re.I,
 )
-# "don't forget to put ...": a reminder, which asks as "please" asks (never a negation); "don't forget to
-# not ..." and "don't forget the mug" stay, and are read or refused as they are
-_REMINDER = re.compile(rf"\b{courtesy_pattern('reminder')}\s+to\s+(?!not\b|never\b)(?=[a-z])", re.I)
+# "don't forget to put ...", "remember to", "make sure you put ...": a reminder, which asks as "please" asks
+# (never a negation); a reminder of a negation is the negation ("remember not to put", "make sure you never
+# put": `_reminded`); "don't forget the mug" and "make sure the mug ends up ..." stay, to be read as written
+_REMINDER = re.compile(
+    rf"\b{courtesy_pattern('reminder', 'reminded')}(?:\s*[,:]\s*|\s+(?:"
+    r"(?P<not>not\s+to|to\s+not|to\s+never|never)\s+|to\s+|"
+    r"(?:that\s+)?(?:you|u)\s+(?:(?P<neg>don't|dont|do\s+not|never|won't)\s+)?))(?=[a-z])",
+    re.I,
+)
+
+
+def _reminded(m: re.Match[str]) -> str:
+    """A reminder's replacement: nothing before a request, the negation it reminds of before one."""
+    said = (m["not"] or m["neg"] or "").lower()
+    return "" if not said else "never " if "never" in said else "do not "
 # the fillers a text message ends a request with ("and yeah", "or whatever", "k thx", "lol"), one or more
 # after the last word of a sentence: the sentence's end or the text's end must follow, so "or whatever is
 # left" and "yeah, put the mug ..." stay as written
@@ -113,8 +130,9 @@ def without_courtesy(text: str) -> str:
     >>> without_courtesy("put the pear in the fridge and yeah that's it. the cup in the sink or whatever lol")
     'put the pear in the fridge. the cup in the sink'
     """
-    out = _AFTERTHOUGHT.sub(". Also ", _OPENING_OH.sub(r"\1Also ", _TRAILING.sub("", text)))
-    out = _FRAME.sub(" ", _REMINDER.sub("", out))
+    out = _OPENING_OH_VERB.sub(r"\1At any time, ", _OPENING_OH.sub(r"\1Also ", _TRAILING.sub("", text)))
+    out = _AFTERTHOUGHT.sub(". Also ", out)
+    out = _FRAME.sub(" ", _REMINDER.sub(_reminded, out))
     out = re.sub(r"\s+([,.;:!?])", r"\1", " ".join(out.split()))
     out = re.sub(r"^[\s,.;:!?]+", "", out)
     return out if re.search(r"\w", out) else text
@@ -184,3 +202,50 @@ def without_call(text: str) -> str:
     'robot arms must not touch the mug'
     """
     return _CALLED.sub(lambda m: m["lead"], text)
+
+
+# a request passed on ("Mom says put ...", "she also says chill ..."), a note's "P.S." opening a sentence, a
+# wish around a request ("It'd be great if you could put ...", "I was hoping you could ...") and a sentence
+# that only announces a request ("Could you do me a favour?"): the household reader's framing
+_RELAYED = re.compile(rf"{_OPENS}{courtesy_pattern('relayed')}\s*[:,]?\s+(?=[a-z])", re.I)
+_POSTSCRIPT = re.compile(rf"{_OPENS}{courtesy_pattern('postscript')}(?:\s*[:,-])?\s+(?=\w)", re.I)
+_WISH = re.compile(rf"\b{courtesy_pattern('wish')}\s+(?:(?:also|please)\s+)?(?=[a-z])", re.I)
+# "it would be great if both phones were in the safe": the state wished for, a goal (`grammar/restated` reads
+# "make sure X is in Y"); a wish for anything else stays, and its "if" is refused as a condition
+_STATE_WISH = re.compile(
+    rf"\b{courtesy_pattern('state_wish')}\s+(?P<x>(?:the|a|an|both|two|all)\s[^.;!?,]+?)\s+"
+    r"(?P<be>were|are|was|is)\s+(?=(?:on|in|into|onto|inside)\s)",
+    re.I,
+)
+_ARE = {"were": "are", "was": "is"}
+# "no rush, but put ...", "put ..., no hurry": the user's own time, which asks and forbids nothing
+_UNHURRIED = re.compile(
+    rf"{_OPENS}{courtesy_pattern('unhurried')}\s*[,.!:-]*\s*(?:but\s+)?(?=[a-z])|"
+    rf"\s*[,;-]\s*{courtesy_pattern('unhurried')}\b(?=\s*(?:[.;!?]|$))",
+    re.I,
+)
+_ASIDE_SENTENCE = re.compile(rf"{_OPENS}{courtesy_pattern('aside')}\s*[?.!:]+\s*(?=\w)", re.I)
+
+
+def without_framing(text: str) -> str:
+    """`text` without the framing a household request comes in that carries no task, no order and no
+    negation: a relayed request's "Mom says", a "P.S.", a wish frame (a wished state is a goal), a sentence
+    that only announces a request and "no rush" (`courtesy.txt`: `relayed`, `postscript`, `wish`,
+    `state_wish`, `aside`, `unhurried`). Words no list holds stay, to be read or refused by name
+    (docs/language.md, "Courtesy").
+
+    >>> without_framing("Could you do me a favour? Mom says put the mug in the sink. P.S. the egg goes away")
+    'put the mug in the sink. the egg goes away'
+    >>> without_framing("It'd be great if you could put the mug in the sink.")
+    'put the mug in the sink.'
+    >>> without_framing("It would be great if both mugs were in the sink. Mom's mug goes in the sink.")
+    "make sure both mugs are in the sink. Mom's mug goes in the sink."
+    """
+    for framing in (_RELAYED, _POSTSCRIPT, _ASIDE_SENTENCE, _UNHURRIED):
+        text = framing.sub(lambda m: m["lead"] or "", text)
+    return _WISH.sub("", _STATE_WISH.sub(_wished, text)).strip()
+
+
+def _wished(m: re.Match[str]) -> str:
+    """ "it would be great if X were in Y" -> "make sure X are in Y" (the state wished for, as a goal)."""
+    return f"make sure {m['x']} {_ARE.get(m['be'].lower(), m['be'])} "

@@ -35,7 +35,7 @@ from collections.abc import Callable
 from typing import Protocol
 
 from nl2hltl2plan.language.content_words import Unread
-from nl2hltl2plan.language.courtesy import without_greetings, without_reasons
+from nl2hltl2plan.language.courtesy import without_framing, without_greetings, without_reasons
 from nl2hltl2plan.language.grounding import find_mentions
 from nl2hltl2plan.language.headings import answered
 from nl2hltl2plan.language.household_forms import household_forms
@@ -130,7 +130,7 @@ class _HouseholdReader(SharedGrammar):
     def as_read(self, lines: list[str]) -> str:  # greetings and thanks as every reader drops them; the
         # reasons a household request gives ("so it stays cold") ask for nothing (a tabletop "so that" states)
         text = without_greetings(answered(" ".join(lines)), lambda name: bool(find_mentions(name.lower())))
-        return without_reasons(text)
+        return without_framing(without_reasons(text))  # "Mom says put ...", "P.S.", "I was hoping you could"
 
     def prepared(self, instruction: str) -> str:
         named = descriptive_names(household_forms(instruction), set(self.world.object_types()))
