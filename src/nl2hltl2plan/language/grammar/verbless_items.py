@@ -1,0 +1,118 @@
+"""Lists with the verb left out (issue 28), read as a careful reader means them; `sentences.supply_put`
+writes in the verbs they leave out.
+
+- a verbless placement: names, with counts and state words ("two rags", "a cold tomato", "one washed
+  cloth"), then in/into/to/onto/on and a place: "put" goes before it (the state word is the treatment, as
+  after "put");
+- a list that mixes placements with verbless examinations ("the bowl under the desk lamp, two keychains in
+  the drawer, then the pencil under the same lamp"): each item gets the verb its own preposition says
+  ("look at" under a lamp, "put" before a place), where it differs from the item before. A verb carried
+  over to an item of the other kind is a wrong reading ("look at the bowl under the lamp, two keychains in
+  the drawer" looked at the keychains);
+- "X to the cart and two sponges as well": the place carries over to the second thing, because "too" / "as
+  well" / "also" says so; without it the second thing has no place, and is left to be refused.
+"""
+
+from __future__ import annotations
+
+import re
+
+from nl2hltl2plan.language.grammar import word_tables as G
+from nl2hltl2plan.language.grammar.phrases import tokens
+from nl2hltl2plan.language.grounding import find_mentions
+
+PLACE_PREPS = ("in", "into", "to", "onto", "on")
+# a count names the objects too ("Two rags to the shelf", "two phones to the sofa": h190; a notes-app list's
+# "2 soap bars in the tub": users_h195dev)
+_LIST_WORDS = frozenset(
+    {"the", "a", "an", "and", "or", "both", ",", "one", "two", "three", "four", "2", "3", "4", "another", "more"}
+)
+# a state word after the first word gives the treatment ("a cold tomato", "one washed cloth"); first, a word
+# that is also a verb opens a clause ("clean the mug in the sink")
+_STATES = frozenset(G.STATE_WORDS)
+# the lamp an examination is under, ending its item: "under the desk lamp", "under the same lamp"
+_UNDER_LAMP = re.compile(
+    r"\s*,?\s*(?:under|beneath|in\s+the\s+light\s+of)\s+(?:the|a|that|this)\s+(?:same\s+)?(?:[a-z]+\s+)?"
+    r"(?:lamp|light)\s*$",
+    re.I,
+)
+# where one list item ends and the next begins
+_GAP = re.compile(r"\s*,\s*(?:and\s+)?(?:then\s+)?|\s+(?:and\s+)?then\s+|\s+and\s+", re.I)
+_VERB = {"put": "put ", "look": "look at "}
+# "X to the cart and two sponges as well": the second thing, said with "too" at the sentence's end
+_TOO = re.compile(
+    r"^(?P<x>.+?)\s+(?P<dest>(?:in|into|on|onto|to)\s+(?:the|a|an|that|this)\s+[a-z]+(?:\s+[a-z]+)?)\s*,?\s+and\s+"
+    r"(?P<y>(?:(?:the|a|an|two|three|both|2|3)\s+)?[a-z]+(?:\s+[a-z]+){0,3}?)\s*,?\s+(?:too|as\s+well|also)\s*$",
+    re.I,
+)
+
+
+def names_object_before(text: str, at: int) -> bool:
+    """Does a name end right before `at` (spaces aside)?"""
+    mentions = find_mentions(text[:at])
+    return bool(mentions) and mentions[-1].char_end == len(text[:at].rstrip())
+
+
+def _only_names(body: str, end: int) -> bool:
+    """Are the words before `end` names, counts, articles and state words only, a name last?"""
+    named = [(m.char_start, m.char_end) for m in find_mentions(body[:end])]
+    words = [(w, s) for w, s, _ in tokens(body) if s < end]
+    listed = all(
+        w in _LIST_WORDS or (k and w in _STATES) or any(a <= s < b for a, b in named)
+        for k, (w, s) in enumerate(words)
+    )
+    return bool(words) and listed and names_object_before(body, end)
+
+
+def verbless_placement(body: str) -> bool:
+    """Does the sentence start with object names only ("green apple and the orange", "a cold tomato") and
+    go on with in/into/to/onto/on and a place?"""
+    words = tokens(body)
+    k = next((i for i, (w, _, _) in enumerate(words) if w in PLACE_PREPS), None)
+    if not k:
+        return False
+    return _only_names(body, words[k][1]) and bool(find_mentions(body[words[k][2] :]))
+
+
+def _kind(item: str) -> str | None:
+    """ "put" for a verbless placement, "look" for a verbless examination under a lamp, else None."""
+    lamp = _UNDER_LAMP.search(item)
+    if lamp:
+        return "look" if _only_names(item, lamp.start()) else None
+    return "put" if verbless_placement(item) else None
+
+
+def _items(body: str) -> list[tuple[int, int, str]] | None:
+    """(gap start, start, kind) of each item of a list whose every item is verbless, shortest items first ("a
+    heated egg and a cold lettuce on the table" is one item); None where some words are no such item."""
+    cuts = [(m.start(), m.end()) for m in _GAP.finditer(body)] + [(len(body), len(body))]
+    out: list[tuple[int, int, str]] = []
+    gap_at, start = 0, 0
+    for end, after in cuts:
+        kind = _kind(body[start:end])
+        if kind:
+            out.append((gap_at, start, kind))
+            gap_at, start = end, after
+    return out if start >= len(body) and out else None
+
+
+def verbs_written(body: str) -> str | None:
+    """A verbless sentence with the verbs it leaves out written in (see the module's note), or None where it
+    is no such list. A list of one kind is left to `supply_put`'s one verb, which carries over."""
+    said = _TOO.match(body)
+    if said and _only_names(said["x"], len(said["x"])) and names_object_before(said["y"], len(said["y"])):
+        return f"put {said['x']} and {said['y']} {said['dest']}"
+    items = _items(body)
+    if not items or len({kind for *_, kind in items}) < 2:
+        return None
+    out, pos, last = [], 0, ""
+    for gap_at, start, kind in items:
+        if kind == last:
+            continue
+        gap = body[gap_at:start]
+        # a bare comma before a verb reads as "then" (the grammar's order of comma clauses): a list's items
+        # are in no order, as sentences with no order word are
+        joined = gap if not start or re.search(r"\b(?:and|then)\b", gap, re.I) else "; "
+        out.append(body[pos:gap_at] + joined + _VERB[kind])
+        pos, last = start, kind
+    return "".join(out) + body[pos:]
