@@ -29,7 +29,11 @@ from nl2hltl2plan.language.grammar.order_phrases import (
 from nl2hltl2plan.language.grammar.phrases import match_prep, parse_np, tokens
 from nl2hltl2plan.language.grammar.sentence_joins import holder_named, joined_treatments
 from nl2hltl2plan.language.grammar.subordinate import placed_after, treated_before, treatment_of_it
-from nl2hltl2plan.language.grammar.verbless_items import names_object_before, verbless_placement, verbs_written
+from nl2hltl2plan.language.grammar.verbless_items import (
+    names_object_before,
+    verbless_placement,
+    verbs_written,
+)
 from nl2hltl2plan.language.grounding import find_mentions, sentence_start
 from nl2hltl2plan.language.statements import RELATIVE_PLACE
 

@@ -25,20 +25,40 @@ PLACE_PREPS = ("in", "into", "to", "onto", "on")
 # a count names the objects too ("Two rags to the shelf", "two phones to the sofa": h190; a notes-app list's
 # "2 soap bars in the tub": users_h195dev)
 _LIST_WORDS = frozenset(
-    {"the", "a", "an", "and", "or", "both", ",", "one", "two", "three", "four", "2", "3", "4", "another", "more"}
+    {"the", "a", "an", "and", "or", "both", ",", "one", "two", "three", "four", "2", "3", "4"}
+    | {"another", "more"}  # "another cloth in the tub", "two more books to the desk"
 )
 # a state word after the first word gives the treatment ("a cold tomato", "one washed cloth"); first, a word
 # that is also a verb opens a clause ("clean the mug in the sink")
 _STATES = frozenset(G.STATE_WORDS)
-# the lamp an examination is under, ending its item: "under the desk lamp", "under the same lamp"
+# the lamp an examination is under, ending its item: "under the desk lamp", "under the same lamp", with the
+# lamp said to be on after it ("..., light on", "with the lamp switched on"), which the rules read
 _UNDER_LAMP = re.compile(
     r"\s*,?\s*(?:under|beneath|in\s+the\s+light\s+of)\s+(?:the|a|that|this)\s+(?:same\s+)?(?:[a-z]+\s+)?"
-    r"(?:lamp|light)\s*$",
+    r"(?:lamp|light)(?:\s*,?\s*(?:with\s+)?(?:the\s+|it\s+)?(?:lamp\s+|light\s+)?(?:switched\s+|turned\s+)?on)?\s*$",
     re.I,
+)
+# "the phone under it too" after an examination: the same lamp
+_UNDER_IT = re.compile(r"\s*,?\s*under\s+it(?:\s+too|\s+as\s+well)?\s*$", re.I)
+# "a fork in a bowl, the bowl on the counter" / "... with the bowl on the counter": one task, the container
+# carried (a verb must open the item after it, which the rules would take into the pair)
+_PAIR = re.compile(
+    r"^(?P<x>.+?)\s+(?:in|into|on|onto|inside)\s+(?:a|an|the)\s+(?P<c>[a-z]+)\s*(?:,|\s+with|\s+and)\s+"
+    r"(?:the|that)\s+(?P=c)\s+(?:in|into|on|onto|inside)\s",
+    re.I,
+)
+_WITH_IT = re.compile(
+    r"\b(?P<c>[a-z]+)\s+with\s+(?P<d>the|that)\s+(?P=c)(?=\s+(?:in|into|on|onto|inside)\s)", re.I
+)
+# "the remote - coffee table": a dash between a thing and a place says where it goes, as "->" does
+_DASH = re.compile(r"(?P<x>[^,;:\-]+?)\s+[-\u2013]\s+(?P<y>[^,;:\-]+?)(?=\s*(?:,|$))")
+# ", lamp on" after the lamp: the rules read "with the lamp on" (a bare "lamp on" they take for a thing)
+_LAMP_ON = re.compile(
+    r"\b(?P<l>lamp|light)\s*,\s*(?:the\s+)?(?:lamp|light)\s+(?:switched\s+|turned\s+)?on\b", re.I
 )
 # where one list item ends and the next begins
 _GAP = re.compile(r"\s*,\s*(?:and\s+)?(?:then\s+)?|\s+(?:and\s+)?then\s+|\s+and\s+", re.I)
-_VERB = {"put": "put ", "look": "look at "}
+_VERB = {"put": "put ", "pair": "put ", "look": "look at "}
 # "X to the cart and two sponges as well": the second thing, said with "too" at the sentence's end
 _TOO = re.compile(
     r"^(?P<x>.+?)\s+(?P<dest>(?:in|into|on|onto|to)\s+(?:the|a|an|that|this)\s+[a-z]+(?:\s+[a-z]+)?)\s*,?\s+and\s+"
@@ -74,45 +94,65 @@ def verbless_placement(body: str) -> bool:
     return _only_names(body, words[k][1]) and bool(find_mentions(body[words[k][2] :]))
 
 
-def _kind(item: str) -> str | None:
-    """ "put" for a verbless placement, "look" for a verbless examination under a lamp, else None."""
-    lamp = _UNDER_LAMP.search(item)
+def _kind(item: str, before: str | None) -> str | None:
+    """ "put" for a verbless placement, "pair" for a thing put in a container and the container placed, "look"
+    for a verbless examination under a lamp (or "under it" after one), else None."""
+    lamp = _UNDER_LAMP.search(item) or (_UNDER_IT.search(item) if before == "look" else None)
     if lamp:
         return "look" if _only_names(item, lamp.start()) else None
+    pair = _PAIR.match(item)
+    if pair and _only_names(pair["x"], len(pair["x"])):
+        return "pair"
     return "put" if verbless_placement(item) else None
 
 
 def _items(body: str) -> list[tuple[int, int, str]] | None:
     """(gap start, start, kind) of each item of a list whose every item is verbless, shortest items first ("a
-    heated egg and a cold lettuce on the table" is one item); None where some words are no such item."""
+    heated egg and a cold lettuce on the table" is one item; a container's pair is two joined); None where
+    some words are no such item."""
     cuts = [(m.start(), m.end()) for m in _GAP.finditer(body)] + [(len(body), len(body))]
     out: list[tuple[int, int, str]] = []
-    gap_at, start = 0, 0
+    gap_at, start, before = 0, 0, None
     for end, after in cuts:
-        kind = _kind(body[start:end])
+        if out and out[-1][2] == "put" and _kind(body[out[-1][1] : end], None) == "pair":
+            out[-1] = (*out[-1][:2], "pair")
+            gap_at, start = end, after
+            continue
+        if out and out[-1][2] == "look" and _kind(body[out[-1][1] : end], None) == "look":  # "..., light on"
+            gap_at, start = end, after
+            continue
+        kind = _kind(body[start:end], before)
         if kind:
             out.append((gap_at, start, kind))
-            gap_at, start = end, after
+            gap_at, start, before = end, after, kind
     return out if start >= len(body) and out else None
+
+
+def _dash_place(m: re.Match[str]) -> str:
+    y = m["y"]
+    named = find_mentions(y)
+    whole = bool(named) and named[-1].char_end == len(y) and _only_names(y, len(y))
+    return f"{m['x']} onto {y}" if whole and _only_names(m["x"], len(m["x"])) else m[0]
 
 
 def verbs_written(body: str) -> str | None:
     """A verbless sentence with the verbs it leaves out written in (see the module's note), or None where it
-    is no such list. A list of one kind is left to `supply_put`'s one verb, which carries over."""
-    said = _TOO.match(body)
-    if said and _only_names(said["x"], len(said["x"])) and names_object_before(said["y"], len(said["y"])):
-        return f"put {said['x']} and {said['y']} {said['dest']}"
-    items = _items(body)
-    if not items or len({kind for *_, kind in items}) < 2:
-        return None
+    is no such list. A list of placements alone is left to `supply_put`'s one verb, which carries over."""
+    said = _WITH_IT.sub(r"\g<c> and \g<d> \g<c>", _DASH.sub(_dash_place, body))
+    too = _TOO.match(said)
+    if too and _only_names(too["x"], len(too["x"])) and names_object_before(too["y"], len(too["y"])):
+        return f"put {too['x']} and {too['y']} {too['dest']}"
+    items = _items(said)
+    if not items or {kind for *_, kind in items} == {"put"}:
+        return ("put " + said if verbless_placement(said) else said) if said != body else None
     out, pos, last = [], 0, ""
     for gap_at, start, kind in items:
-        if kind == last:
+        if kind == last and kind != "pair":
             continue
-        gap = body[gap_at:start]
+        gap = said[gap_at:start]
         # a bare comma before a verb reads as "then" (the grammar's order of comma clauses): a list's items
         # are in no order, as sentences with no order word are
         joined = gap if not start or re.search(r"\b(?:and|then)\b", gap, re.I) else "; "
-        out.append(body[pos:gap_at] + joined + _VERB[kind])
+        out.append(said[pos:gap_at] + joined + _VERB[kind])
         pos, last = start, kind
-    return "".join(out) + body[pos:]
+    return _LAMP_ON.sub(r"\g<l> with the lamp on", "".join(out) + said[pos:])
