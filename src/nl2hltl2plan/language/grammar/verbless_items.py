@@ -40,6 +40,8 @@ _UNDER_LAMP = re.compile(
 )
 # "the phone under it too" after an examination: the same lamp
 _UNDER_IT = re.compile(r"\s*,?\s*under\s+it(?:\s+too|\s+as\s+well)?\s*$", re.I)
+_UNDER_IT_SAID = re.compile(r"\s+under\s+it(?P<too>\s+too|\s+as\s+well)?(?=\s*(?:[,.;!?]|$))", re.I)
+_LAMP_NAME = re.compile(r"\b(?:the|a)\s+(?:desk\s+|floor\s+)?(?:lamp|light)\b", re.I)
 # "a fork in a bowl, the bowl on the counter" / "... with the bowl on the counter": one task, the container
 # carried (a verb must open the item after it, which the rules would take into the pair)
 _PAIR = re.compile(
@@ -56,6 +58,8 @@ _DASH = re.compile(r"(?P<x>[^,;:\-]+?)\s+[-\u2013]\s+(?P<y>[^,;:\-]+?)(?=\s*(?:,
 _LAMP_ON = re.compile(
     r"\b(?P<l>lamp|light)\s*,\s*(?:the\s+)?(?:lamp|light)\s+(?:switched\s+|turned\s+)?on\b", re.I
 )
+# the verb said before a list's first item: "look at the bowl under the lamp, two keychains in the drawer"
+_SAID_VERB = re.compile(r"^(?:(?P<look>look\s+at|examine|inspect|check\s+out)|put|place|set)\s+", re.I)
 # where one list item ends and the next begins
 _GAP = re.compile(r"\s*,\s*(?:and\s+)?(?:then\s+)?|\s+(?:and\s+)?then\s+|\s+and\s+", re.I)
 _VERB = {"put": "put ", "pair": "put ", "look": "look at "}
@@ -136,18 +140,23 @@ def _dash_place(m: re.Match[str]) -> str:
 
 
 def verbs_written(body: str) -> str | None:
-    """A verbless sentence with the verbs it leaves out written in (see the module's note), or None where it
-    is no such list. A list of placements alone is left to `supply_put`'s one verb, which carries over."""
+    """A sentence with the verbs its list leaves out written in (see the module's note), or None where it is
+    no such list. A list of placements alone is left to `supply_put`'s one verb, which carries over; a verb
+    said before the first item stays, and is written again only where an item of the other kind follows."""
     said = _WITH_IT.sub(r"\g<c> and \g<d> \g<c>", _DASH.sub(_dash_place, body))
     too = _TOO.match(said)
     if too and _only_names(too["x"], len(too["x"])) and names_object_before(too["y"], len(too["y"])):
         return f"put {too['x']} and {too['y']} {too['dest']}"
-    items = _items(said)
-    if not items or {kind for *_, kind in items} == {"put"}:
+    verb = _SAID_VERB.match(said)
+    head = verb.end() if verb else 0
+    items = [(gap_at + head, start + head, kind) for gap_at, start, kind in _items(said[head:]) or []]
+    kinds = {kind for *_, kind in items}
+    said_kind = "look" if verb and verb["look"] else "put"
+    if not items or kinds == {"put"} or (verb and (len(kinds) < 2 or items[0][2] != said_kind)):
         return ("put " + said if verbless_placement(said) else said) if said != body else None
-    out, pos, last = [], 0, ""
+    out, pos, last = [], 0, said_kind if verb else ""
     for gap_at, start, kind in items:
-        if kind == last and kind != "pair":
+        if kind == last and kind != "pair" or start == head and verb:
             continue
         gap = said[gap_at:start]
         # a bare comma before a verb reads as "then" (the grammar's order of comma clauses): a list's items
@@ -155,4 +164,15 @@ def verbs_written(body: str) -> str | None:
         joined = gap if not start or re.search(r"\b(?:and|then)\b", gap, re.I) else "; "
         out.append(said[pos:gap_at] + joined + _VERB[kind])
         pos, last = start, kind
-    return _LAMP_ON.sub(r"\g<l> with the lamp on", "".join(out) + said[pos:])
+    return _lamp_named(_LAMP_ON.sub(r"\g<l> with the lamp on", "".join(out) + said[pos:]))
+
+
+def _lamp_named(text: str) -> str:
+    """ "..., then the phone under it too": under the lamp named last before it (a bare "it" or "the same
+    lamp" the rules take for any lamp where the room has two)."""
+
+    def named(m: re.Match[str]) -> str:
+        lamps = _LAMP_NAME.findall(text[: m.start()])
+        return f" under {lamps[-1]}{m['too'] or ''}" if lamps else m[0]
+
+    return _UNDER_IT_SAID.sub(named, text)
