@@ -8,7 +8,10 @@ writes in the verbs they leave out.
   the drawer, then the pencil under the same lamp"): each item gets the verb its own preposition says
   ("look at" under a lamp, "put" before a place), where it differs from the item before. A verb carried
   over to an item of the other kind is a wrong reading ("look at the bowl under the lamp, two keychains in
-  the drawer" looked at the keychains);
+  the drawer" looked at the keychains), so a verb said first is written again where the kind changes;
+- list items the rules read only with a verb of their own: a container's pair ("a fork in a bowl with the
+  bowl on the counter"), a dash between a thing and its place ("two books - desk", as "->"), "the phone
+  under it too" after an examination (under the lamp named last), "..., light on" after the lamp;
 - "X to the cart and two sponges as well": the place carries over to the second thing, because "too" / "as
   well" / "also" says so; without it the second thing has no place, and is left to be refused.
 """
@@ -21,7 +24,7 @@ from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.phrases import tokens
 from nl2hltl2plan.language.grounding import find_mentions
 
-PLACE_PREPS = ("in", "into", "to", "onto", "on")
+_PLACE_PREPS = ("in", "into", "to", "onto", "on")
 # a count names the objects too ("Two rags to the shelf", "two phones to the sofa": h190; a notes-app list's
 # "2 soap bars in the tub": users_h195dev)
 _LIST_WORDS = frozenset(
@@ -49,7 +52,7 @@ _PAIR = re.compile(
     r"(?:the|that)\s+(?P=c)\s+(?:in|into|on|onto|inside)\s",
     re.I,
 )
-_WITH_IT = re.compile(
+_WITH_CONTAINER = re.compile(
     r"\b(?P<c>[a-z]+)\s+with\s+(?P<d>the|that)\s+(?P=c)(?=\s+(?:in|into|on|onto|inside)\s)", re.I
 )
 # "the remote - coffee table": a dash between a thing and a place says where it goes, as "->" does
@@ -92,7 +95,7 @@ def verbless_placement(body: str) -> bool:
     """Does the sentence start with object names only ("green apple and the orange", "a cold tomato") and
     go on with in/into/to/onto/on and a place?"""
     words = tokens(body)
-    k = next((i for i, (w, _, _) in enumerate(words) if w in PLACE_PREPS), None)
+    k = next((i for i, (w, _, _) in enumerate(words) if w in _PLACE_PREPS), None)
     if not k:
         return False
     return _only_names(body, words[k][1]) and bool(find_mentions(body[words[k][2] :]))
@@ -143,7 +146,7 @@ def verbs_written(body: str) -> str | None:
     """A sentence with the verbs its list leaves out written in (see the module's note), or None where it is
     no such list. A list of placements alone is left to `supply_put`'s one verb, which carries over; a verb
     said before the first item stays, and is written again only where an item of the other kind follows."""
-    said = _WITH_IT.sub(r"\g<c> and \g<d> \g<c>", _DASH.sub(_dash_place, body))
+    said = _WITH_CONTAINER.sub(r"\g<c> and \g<d> \g<c>", _DASH.sub(_dash_place, body))
     too = _TOO.match(said)
     if too and _only_names(too["x"], len(too["x"])) and names_object_before(too["y"], len(too["y"])):
         return f"put {too['x']} and {too['y']} {too['dest']}"
