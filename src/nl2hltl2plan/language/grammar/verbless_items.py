@@ -66,10 +66,12 @@ _SAID_VERB = re.compile(r"^(?:(?P<look>look\s+at|examine|inspect|check\s+out)|pu
 # where one list item ends and the next begins
 _GAP = re.compile(r"\s*,\s*(?:and\s+)?(?:then\s+)?|\s+(?:and\s+)?then\s+|\s+and\s+", re.I)
 _VERB = {"put": "put ", "pair": "put ", "look": "look at "}
-# "X to the cart and two sponges as well": the second thing, said with "too" at the sentence's end
+# "X to the cart and two sponges as well": the second thing, said with "too" where its list item ends
 _TOO = re.compile(
-    r"^(?P<x>.+?)\s+(?P<dest>(?:in|into|on|onto|to)\s+(?:the|a|an|that|this)\s+[a-z]+(?:\s+[a-z]+)?)\s*,?\s+and\s+"
-    r"(?P<y>(?:(?:the|a|an|two|three|both|2|3)\s+)?[a-z]+(?:\s+[a-z]+){0,3}?)\s*,?\s+(?:too|as\s+well|also)\s*$",
+    r"(?:^|(?<=, ))(?P<lead>(?:and\s+)?(?:then\s+)?)(?P<x>[^,;]+?)\s+"
+    r"(?P<dest>(?:in|into|on|onto|to)\s+(?:the|a|an|that|this)\s+[a-z]+(?:\s+[a-z]+)?)\s*,?\s+and\s+"
+    r"(?P<y>(?:(?:the|a|an|two|three|both|2|3)\s+)?[a-z]+(?:\s+[a-z]+){0,3}?)\s*,?\s+(?:too|as\s+well|also)"
+    r"(?=\s*(?:,|$))",
     re.I,
 )
 
@@ -88,7 +90,8 @@ def _only_names(body: str, end: int) -> bool:
         w in _LIST_WORDS or (k and w in _STATES) or any(a <= s < b for a, b in named)
         for k, (w, s) in enumerate(words)
     )
-    return bool(words) and listed and names_object_before(body, end)
+    head = body[:end].rstrip().rstrip(",")  # "one washed cloth, in the tub"
+    return bool(words) and listed and names_object_before(head, len(head))
 
 
 def verbless_placement(body: str) -> bool:
@@ -142,14 +145,19 @@ def _dash_place(m: re.Match[str]) -> str:
     return f"{m['x']} onto {y}" if whole and _only_names(m["x"], len(m["x"])) else m[0]
 
 
+def _place_shared(m: re.Match[str]) -> str:
+    """ "the pencil on the desk and the alarm clock too" -> "the pencil and the alarm clock on the desk"."""
+    if not _only_names(m["x"], len(m["x"])) or not names_object_before(m["y"], len(m["y"])):
+        return m[0]
+    return f"{m['lead']}{m['x']} and {m['y']} {m['dest']}"
+
+
 def verbs_written(body: str) -> str | None:
     """A sentence with the verbs its list leaves out written in (see the module's note), or None where it is
     no such list. A list of placements alone is left to `supply_put`'s one verb, which carries over; a verb
     said before the first item stays, and is written again only where an item of the other kind follows."""
     said = _WITH_CONTAINER.sub(r"\g<c> and \g<d> \g<c>", _DASH.sub(_dash_place, body))
-    too = _TOO.match(said)
-    if too and _only_names(too["x"], len(too["x"])) and names_object_before(too["y"], len(too["y"])):
-        return f"put {too['x']} and {too['y']} {too['dest']}"
+    said = _TOO.sub(_place_shared, said)
     verb = _SAID_VERB.match(said)
     head = verb.end() if verb else 0
     items = [(gap_at + head, start + head, kind) for gap_at, start, kind in _items(said[head:]) or []]
