@@ -33,6 +33,11 @@ from nl2hltl2plan.language.grammar.sentence_joins import (
     joined_treatments,
 )
 from nl2hltl2plan.language.grammar.subordinate import placed_after, treated_before, treatment_of_it
+from nl2hltl2plan.language.grammar.verbless_items import (
+    names_object_before,
+    verbless_placement,
+    verbs_written,
+)
 from nl2hltl2plan.language.grounding import find_mentions, sentence_start
 from nl2hltl2plan.language.statements import RELATIVE_PLACE
 
@@ -508,14 +513,13 @@ _TO_GO = re.compile(
 )
 _START_WITH = re.compile(r"\b(?:start|begin)\s+with\s+(?=(?:the|a|an)\s)", re.I)
 _PLACE_AFTER = re.compile(r"[^.;!?]*\b(?:in|into|on|onto|to)\s", re.I)
-_PLACE_PREPS = ("in", "into", "to", "onto", "on")
 
 
 def supply_put(text: str) -> str:
     """The text with the placement verb its requests leave out written in (see above); a sentence with
     a verb, or whose words before the place name no object, is left as it is."""
     text = _WISH.sub(lambda m: "" if _verb_follows(text, m.end()) else "put ", text)
-    text = _TO_GO.sub(lambda m: " " if _names_object_before(text, m.start()) else m.group(0), text)
+    text = _TO_GO.sub(lambda m: " " if names_object_before(text, m.start()) else m.group(0), text)
     # "start with the apple on the plate" is "first put ..."; "Start with the fork." alone names a task of
     # another sentence (`first_last_sentence`)
     text = _START_WITH.sub(lambda m: "first put " if _PLACE_AFTER.match(text, m.end()) else m[0], text)
@@ -523,7 +527,10 @@ def supply_put(text: str) -> str:
     for sentence, start in split_sentences(text):
         _, body = strip_leading(sentence)
         at = start + len(sentence) - len(body)
-        if _verbless_placement(body):
+        if (said := verbs_written(body)) is not None:  # a list with the verbs left out (verbless_items.py)
+            out.append(text[pos:at] + said)
+            pos = at + len(body)
+        elif verbless_placement(body):
             out.append(text[pos:at] + "put ")
             pos = at
     return "".join(out) + text[pos:]
@@ -532,28 +539,6 @@ def supply_put(text: str) -> str:
 def _verb_follows(text: str, at: int) -> bool:
     first = tokens(text[at:])[:1]
     return bool(first) and first[0][0] in G.VERBS
-
-
-def _names_object_before(text: str, at: int) -> bool:
-    mentions = find_mentions(text[:at])
-    return bool(mentions) and mentions[-1].char_end == len(text[:at].rstrip())
-
-
-# a count names the objects too ("Two rags to the shelf", "two phones to the sofa": h190; a notes-app list's
-# "2 soap bars in the tub": users_h195dev)
-_LIST_WORDS = frozenset({"the", "a", "an", "and", "or", "both", ",", "two", "three", "four", "2", "3", "4"})
-
-
-def _verbless_placement(body: str) -> bool:
-    """Does the sentence start with object names only ("green apple and the orange") and go on with
-    in/into/to/onto/on and a place?"""
-    words = tokens(body)
-    k = next((i for i, (w, _, _) in enumerate(words) if w in _PLACE_PREPS), None)
-    if not k:
-        return False
-    named = [(m.char_start, m.char_end) for m in find_mentions(body[: words[k][1]])]
-    only_names = all(w in _LIST_WORDS or any(a <= s < b for a, b in named) for w, s, _ in words[:k])
-    return only_names and _names_object_before(body, words[k][1]) and bool(find_mentions(body[words[k][2] :]))
 
 
 def split_sentences(text: str) -> list[tuple[str, int]]:
