@@ -75,7 +75,6 @@ NEAR_MISSES = [
         "any empty region at any time.",
     ),
     # a scene said without a verb, a report of what was done, "and so on", a condition, a relative clause
-    (1, "Checklist:\n* all three blocks, opposite side\n* red placed before blue"),
     (2, "I have put the three blocks in regions H, I and J, one block per region."),
     (6, "Red first, blue after: that is the placing order. The three objects go to regions G, H and so on."),
     (
@@ -182,6 +181,12 @@ def test_held_out_batches_are_read_right_or_refused(batch, style):
 @pytest.mark.parametrize(("task_id", "text"), NEAR_MISSES)
 def test_cue_near_misses_are_refused_or_give_another_spec(task_id, text):
     assert_not_the_written_spec(task_id, text)
+
+
+def test_a_checklist_of_verbless_items_is_the_request():
+    # under "Checklist:" (a label since h194) the items are things to do, as a notes-app list's are in the
+    # household worlds (h199): it was a near miss, "a scene said without a verb", before the label was read
+    assert_written_spec(1, "Checklist:\n* all three blocks, opposite side\n* red placed before blue")
 
 
 def _restated(task_id: int, sentence: str) -> str | None:
