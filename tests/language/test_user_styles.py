@@ -298,10 +298,6 @@ KNOWN_WRONG: set[str] = {
     "the bin as well.",
     "Rinse the cabbage and put it in the fridge, and after that microwave an egg and put it in the fridge "
     "as well. Heat a slice of apple and a black cup in the microwave and put each of them on the counter.",
-    # h189's, read wrong at the session-29 freeze (refused at the start): the landmark "on the shelves" is
-    # taken as the destination of "the two purple spray bottles ... go on the back of the toilet"
-    "Wash the yellow cloth from the tub and put it on the bottom shelf. Wash another cloth and put it in the "
-    "tub. Oh and the two purple spray bottles on the shelves go on the back of the toilet.",
 }
 
 
