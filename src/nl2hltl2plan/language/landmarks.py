@@ -218,6 +218,8 @@ _CLAUSE_START = re.compile(r"[.;:!?,]\s*|\s[-\u2013\u2014]\s|\b(?:and|then|also|
 _NEAR_SAID = re.compile(
     r"\b(?:next\s+to|close\s+to|beside|by|near|between|behind|in\s+front\s+of)\s+(?:the|a|an|two)\s", re.I
 )
+# a part of the room after a subject's place: "the book on the armchair in the corner"
+_ROOM_PART_LAST = re.compile(r"\s(?:in|on|at)\s+the\s+(?:corner|middle|back|front|left|right|end)\s*$", re.I)
 # a wish's participle before the destination: "I'd like X put in D"
 _PARTICIPLE = r"\s+(?:put|placed|moved|set|left|taken|brought)(?:\s+(?:it|them))?\s+(?=(?:in|into|on|onto|inside|to)\s)"
 _THING_FIRST = r"(?=(?:the|a|an|both|two|three|\d+|all|my|your|one|those|these)\b)"
@@ -236,19 +238,21 @@ def places_as_sources(phrase: str) -> str:
 
 def subject_sources(text: str, verb: re.Pattern[str], names_object_before: Callable[[str, int], bool]) -> str:
     """The text with the places of each subject before a verb of going (`verb`: "goes", "belongs",
-    "should go" ...) said as sources: "the book on the armchair goes on the table" -> "the book from the
-    armchair goes on the table", with the request's verb said. A subject is the clause's words before the
-    verb, a name last."""
+    "should go" ...) said as sources and the request's verb said: "the book on the armchair goes on the
+    table" -> "put the book from the armchair on the table". A subject is the clause's words before the
+    verb, a name last or a part of the room after it ("the book on the armchair in the corner")."""
     out = text
     for m in reversed(list(verb.finditer(text))):
-        if not names_object_before(text, m.start()):
-            continue
         start = max((c.end() for c in _CLAUSE_START.finditer(text, 0, m.start())), default=0)
-        subject = places_as_sources(out[start : m.start()])
+        said = text[start : m.start()]
+        if not (names_object_before(text, m.start()) or _ROOM_PART_LAST.search(said) and find_mentions(said)):
+            continue
+        subject = places_as_sources(said)
         # a clause that is the subject and its place only ("the book on the bed goes on the desk") is a request
-        placed = subject != out[start : m.start()] or _NEAR_SAID.search(subject)
-        put = "put " if placed and re.match(_THING_FIRST, subject, re.I) else ""
-        out = out[:start] + put + subject + out[m.start() :]
+        if (subject != said or _NEAR_SAID.search(subject)) and re.match(_THING_FIRST, subject, re.I):
+            out = out[:start] + "put " + subject + " " + out[m.end() :].lstrip()
+        elif subject != said:
+            out = out[:start] + subject + out[m.start() :]
     return out
 
 
