@@ -45,7 +45,11 @@ READ_SWEEP = [
         ["place KeyChain -> Sofa"],
     ),
     ("FloorPlan3", "The apple goes in the fridge.", ["place Apple -> Fridge"]),
-    ("FloorPlan3", "The cup with a fork in it goes on the table.", ["place_in_container Fork in Cup -> SideTable"]),
+    (
+        "FloorPlan3",
+        "The cup with a fork in it goes on the table.",
+        ["place_in_container Fork in Cup -> SideTable"],
+    ),
 ]
 
 

@@ -221,7 +221,9 @@ _NEAR_SAID = re.compile(
 # a part of the room after a subject's place: "the book on the armchair in the corner"
 _ROOM_PART_LAST = re.compile(r"\s(?:in|on|at)\s+the\s+(?:corner|middle|back|front|left|right|end)\s*$", re.I)
 # a wish's participle before the destination: "I'd like X put in D"
-_PARTICIPLE = r"\s+(?:put|placed|moved|set|left|taken|brought)(?:\s+(?:it|them))?\s+(?=(?:in|into|on|onto|inside|to)\s)"
+_PARTICIPLE = (
+    r"\s+(?:put|placed|moved|set|left|taken|brought)(?:\s+(?:it|them))?\s+(?=(?:in|into|on|onto|inside|to)\s)"
+)
 _THING_FIRST = r"(?=(?:the|a|an|both|two|three|\d+|all|my|your|one|those|these)\b)"
 
 
@@ -245,10 +247,11 @@ def subject_sources(text: str, verb: re.Pattern[str], names_object_before: Calla
     for m in reversed(list(verb.finditer(text))):
         start = max((c.end() for c in _CLAUSE_START.finditer(text, 0, m.start())), default=0)
         said = text[start : m.start()]
-        if not (names_object_before(text, m.start()) or _ROOM_PART_LAST.search(said) and find_mentions(said)):
+        room_part = _ROOM_PART_LAST.search(said) and find_mentions(said)
+        if not (names_object_before(text, m.start()) or room_part):
             continue
         subject = places_as_sources(said)
-        # a clause that is the subject and its place only ("the book on the bed goes on the desk") is a request
+        # a clause of a subject and its place only ("the book on the bed goes on the desk") is a request
         if (subject != said or _NEAR_SAID.search(subject)) and re.match(_THING_FIRST, subject, re.I):
             out = out[:start] + "put " + subject + " " + out[m.end() :].lstrip()
         elif subject != said:
