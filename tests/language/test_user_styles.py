@@ -289,8 +289,6 @@ KNOWN_WRONG: set[str] = {
     "loaves of bread in the fridge",
     # h189's held-out paper-style set (results/language/h189.md), scored once at 5734f8c9, no rule tuned
     "Could you put the empty toilet paper roll and the full one in the cabinet under the counter?",
-    "the black pen next to the laptop goes on the dresser and the two pencils behind the keys go in one of "
-    "the dresser drawers",
     "Microwave an egg and set it on the counter by the bread, then do the same with a tomato but put that "
     "one in the sink.",
     "Throw two bars of soap from the counter into the bin by the toilet, plus the two spray bottles on the "
@@ -298,10 +296,6 @@ KNOWN_WRONG: set[str] = {
     "the bin as well.",
     "Rinse the cabbage and put it in the fridge, and after that microwave an egg and put it in the fridge "
     "as well. Heat a slice of apple and a black cup in the microwave and put each of them on the counter.",
-    # h189's, read wrong at the session-29 freeze (refused at the start): the landmark "on the shelves" is
-    # taken as the destination of "the two purple spray bottles ... go on the back of the toilet"
-    "Wash the yellow cloth from the tub and put it on the bottom shelf. Wash another cloth and put it in the "
-    "tub. Oh and the two purple spray bottles on the shelves go on the back of the toilet.",
 }
 
 

@@ -8,8 +8,11 @@ the microwave" is fine: the counter is the destination, the microwave where on i
 
 from __future__ import annotations
 
+import re
+from collections.abc import Callable
+
 from nl2hltl2plan.language.content_words import DETERMINERS, Unread, categories, stems, verb_places
-from nl2hltl2plan.language.grounding import RECEPTACLES, Mention, alfred_lookup
+from nl2hltl2plan.language.grounding import RECEPTACLES, Mention, alfred_lookup, find_mentions
 from nl2hltl2plan.language.parse_usage import ParseUsage
 from nl2hltl2plan.language.statements import says_where
 
@@ -196,3 +199,73 @@ def pair_start(toks: list[tuple[str, int, int]], start: int) -> int:
     while first < j - 1 and toks[first][0] in DETERMINERS:
         first += 1
     return first
+
+
+# A plain place said inside a subject or a wish's object ("the soaps in the sink belong in the tub", "I'd like
+# the keys on the table put in the box") says where the thing is now, as "from" does: the destination is the
+# place after the verb. Places said with a word of nearness are landmarks already and stay as they are.
+_WHERE_NOW = re.compile(
+    r"\b(?:on|in|inside|atop|upon|at)\s+(?=(?:the|a|an|one\s+of\s+the|its|their|your|my|our)\s)", re.I
+)
+_PHRASE_END = re.compile(
+    r"\b(?:on|in|inside|atop|upon|at|by|near|beside|next|between|behind|under|from|with|and|or)\b|"
+    r"[,;.!?]|\s[-\u2013\u2014]\s",
+    re.I,
+)
+# where a subject starts: after a clause's punctuation or joiner ("..., and the book on the bed goes ...")
+_CLAUSE_START = re.compile(r"[.;:!?,]\s*|\s[-\u2013\u2014]\s|\b(?:and|then|also|but|so|plus|oh)\s+", re.I)
+# a landmark said with a word of nearness ("the apple next to the sink should go in the fridge")
+_NEAR_SAID = re.compile(
+    r"\b(?:next\s+to|close\s+to|beside|by|near|between|behind|in\s+front\s+of)\s+(?:the|a|an|two)\s", re.I
+)
+# a part of the room after a subject's place: "the book on the armchair in the corner"
+_ROOM_PART_LAST = re.compile(r"\s(?:in|on|at)\s+the\s+(?:corner|middle|back|front|left|right|end)\s*$", re.I)
+# a wish's participle before the destination: "I'd like X put in D"
+_PARTICIPLE = (
+    r"\s+(?:put|placed|moved|set|left|taken|brought)(?:\s+(?:it|them))?\s+(?=(?:in|into|on|onto|inside|to)\s)"
+)
+_THING_FIRST = r"(?=(?:the|a|an|both|two|three|\d+|all|my|your|one|those|these)\b)"
+
+
+def places_as_sources(phrase: str) -> str:
+    """The noun phrase with each plain place in it said as a source: "the soaps from the sink"."""
+    out, pos = [], 0
+    for m in _WHERE_NOW.finditer(phrase):
+        end = _PHRASE_END.search(phrase, m.end())
+        if find_mentions(phrase[m.end() : end.start() if end else len(phrase)]):
+            out.append(phrase[pos : m.start()] + "from ")
+            pos = m.end()
+    return "".join(out) + phrase[pos:]
+
+
+def subject_sources(text: str, verb: re.Pattern[str], names_object_before: Callable[[str, int], bool]) -> str:
+    """The text with the places of each subject before a verb of going (`verb`: "goes", "belongs",
+    "should go" ...) said as sources and the request's verb said: "the book on the armchair goes on the
+    table" -> "put the book from the armchair on the table". A subject is the clause's words before the
+    verb, a name last or a part of the room after it ("the book on the armchair in the corner")."""
+    out = text
+    for m in reversed(list(verb.finditer(text))):
+        start = max((c.end() for c in _CLAUSE_START.finditer(text, 0, m.start())), default=0)
+        said = text[start : m.start()]
+        room_part = _ROOM_PART_LAST.search(said) and find_mentions(said)
+        if not (names_object_before(text, m.start()) or room_part):
+            continue
+        subject = places_as_sources(said)
+        # a clause of a subject and its place only ("the book on the bed goes on the desk") is a request
+        if (subject != said or _NEAR_SAID.search(subject)) and re.match(_THING_FIRST, subject, re.I):
+            out = out[:start] + "put " + subject + " " + out[m.end() :].lstrip()
+        elif subject != said:
+            out = out[:start] + subject + out[m.start() :]
+    return out
+
+
+def wished_put(text: str, wish: re.Pattern[str]) -> str:
+    """ "I'd like the keys on the coffee table put in the open box": a wish's object before its participle
+    is the thing, every plain place in it where the thing is -> "put the keys from the coffee table in the
+    open box". A wish with a verb after it ("I'd like you to put ...") is left as it is."""
+    said = re.compile(wish.pattern + _THING_FIRST + r"(?P<thing>[^.;!?,]*?)" + _PARTICIPLE, wish.flags)
+
+    def put(m: re.Match[str]) -> str:
+        return "put " + places_as_sources(m["thing"]) + " " if find_mentions(m["thing"]) else m[0]
+
+    return said.sub(put, text)

@@ -46,8 +46,9 @@ def parse_frame(text: str, start: int = 0, joiner: str = "") -> Frame:
     reader = _ItemReader(text, toks, cls, light_on)
     items = reader.read(i)
     _join_further_destinations(items)
+    away = any(w == "away" for w, _, _ in toks[:i])  # "put away X on L in D"
     for it in items:
-        _standing_place_first(it, text)
+        _standing_place_first(it, text, away)
     # "to region G, H and I": bare noun phrases after an item with a destination continue that destination
     ambiguous = len(items) > 1 and items[-1].obj is not None and not items[-1].pps and bool(items[-2].pps)
     _share_colour_nouns(items)
@@ -326,13 +327,15 @@ _PARTS = frozenset({"Drawer", "Shelf", "ShelvingUnit", "Cabinet"})
 _SITS_ON_FURNITURE = _PARTS | {"CoffeeMachine"}
 
 
-def _standing_place_first(item: Item, text: str) -> None:
+def _standing_place_first(item: Item, text: str, away: bool = False) -> None:
     """ "wash the fork on the table in the sink", "put the goblet in the refrigerator on the table": of two
     fixed places with a plain "in"/"on", the first stands on the floor and the second is no part of it (a
     table is never in a sink), so the first says where the thing is and the second where it goes. Where
     the first is a part of a piece of furniture or the coffee maker and the second stands on the floor ("in
     a drawer in the dresser", "on the coffee maker on the counter"), the second says which one the first
-    is ("of", no destination). Otherwise `two_places` refuses: which one is meant is not said."""
+    is ("of", no destination). After "put away" (`away`) the last place is where it is stored and the first
+    where it is ("put away the candles on the counter in the cabinet"). Otherwise `two_places` refuses:
+    which one is meant is not said."""
     if any(p in DIRECTIONAL or p == THEN_TO for p, _ in item.pps):
         return
     places = [k for k, (p, n) in enumerate(item.pps) if p in G.DEST_PREPS and p not in UNDER and is_fixed(n)]
@@ -347,7 +350,9 @@ def _standing_place_first(item: Item, text: str) -> None:
         return
     if not _one_phrase(text, a, b, whole):
         return
-    if types_a <= _STANDING and (not types_b & _PARTS or _part_of_another(b, types_a)):
+    if away and not (types_a <= _SITS_ON_FURNITURE and types_b <= _STANDING):
+        item.pps[places[0]] = ("from", a)
+    elif types_a <= _STANDING and (not types_b & _PARTS or _part_of_another(b, types_a)):
         item.pps[places[0]] = ("from", a)
     elif types_a <= _SITS_ON_FURNITURE and types_b <= _STANDING:  # "in a drawer in the dresser"
         item.pps[places[1]] = ("of", b)

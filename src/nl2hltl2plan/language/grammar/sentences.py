@@ -39,6 +39,7 @@ from nl2hltl2plan.language.grammar.verbless_items import (
     verbs_written,
 )
 from nl2hltl2plan.language.grounding import find_mentions, sentence_start
+from nl2hltl2plan.language.landmarks import subject_sources, wished_put
 from nl2hltl2plan.language.statements import RELATIVE_PLACE
 
 
@@ -507,7 +508,7 @@ _WISH = re.compile(
 )
 _TO_GO = re.compile(
     r"\s+(?:(?:needs?\s+|has\s+|have\s+)?to\s+(?:go|be(?:\s+(?:put|placed|moved|set))?)|goes|go|belongs?|"
-    r"(?:should|must)\s+(?:go|be))"
+    r"(?:should|must)\s+(?:go|be)|(?:is|are)\s+going|ends?\s+up)"
     r"\s+(?=(?:in|into|on|onto|to)\s)",
     re.I,
 )
@@ -518,6 +519,7 @@ _PLACE_AFTER = re.compile(r"[^.;!?]*\b(?:in|into|on|onto|to)\s", re.I)
 def supply_put(text: str) -> str:
     """The text with the placement verb its requests leave out written in (see above); a sentence with
     a verb, or whose words before the place name no object, is left as it is."""
+    text = subject_sources(wished_put(text, _WISH), _TO_GO, names_object_before)  # where the thing is
     text = _WISH.sub(lambda m: "" if _verb_follows(text, m.end()) else "put ", text)
     text = _TO_GO.sub(lambda m: " " if names_object_before(text, m.start()) else m.group(0), text)
     # "start with the apple on the plate" is "first put ..."; "Start with the fork." alone names a task of

@@ -87,7 +87,8 @@ def _only_names(body: str, end: int) -> bool:
     named = [(m.char_start, m.char_end) for m in find_mentions(body[:end])]
     words = [(w, s) for w, s, _ in tokens(body) if s < end]
     listed = all(
-        w in _LIST_WORDS or (k and w in _STATES) or any(a <= s < b for a, b in named)
+        # a source said of a name is where it is: "the book from the bed" (`landmarks.subject_sources`)
+        w in _LIST_WORDS or (k and w in _STATES | {"from"}) or any(a <= s < b for a, b in named)
         for k, (w, s) in enumerate(words)
     )
     head = body[:end].rstrip().rstrip(",")  # "one washed cloth, in the tub"
