@@ -66,6 +66,12 @@ def test_a_heading_gives_its_place_to_each_item_and_a_negation_stays():
     got, _, unread, forbids = read("Sweetie, don't put the mug in the sink, okay? Put the egg in the fridge.")
     assert (got, unread) == ([EGG], [])
     assert forbids == ["don't put the mug in the sink: forbids put(Mug,SinkBasin)"]
+    # "two jobs:" was read as the egg's count (place_two), the negation kept
+    got, _, unread, forbids = read(
+        "Kiddo, two jobs: put the egg in the fridge, and don't put the mug in the sink, okay?"
+    )
+    assert (got, unread) == ([EGG], [])
+    assert forbids == ["don't put the mug in the sink: forbids put(Mug,SinkBasin)"]
 
 
 def test_near_misses_stay_as_written():

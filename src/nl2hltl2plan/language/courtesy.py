@@ -250,7 +250,9 @@ def without_framing(text: str) -> str:
     """`text` without the framing a household request comes in that carries no task, no order and no
     negation: a relayed request's "Mom says", a "P.S.", a wish frame (a wished state is a goal), a sentence
     that only announces a request and "no rush" (`courtesy.txt`: `relayed`, `postscript`, `wish`,
-    `state_wish`, `aside`, `unhurried`). Words no list holds stay, to be read or refused by name
+    `state_wish`, `aside`, `unhurried`), a form of address, the note's writer, a tag, spoken openers before
+    an order word, a numbered list's markers and a heading that places every item (`endearment`, `speaker`,
+    `tag`, `opened`, `place_heading`). Words no list holds stay, to be read or refused by name
     (docs/language.md, "Courtesy").
 
     >>> without_framing("Could you do me a favour? Mom says put the mug in the sink. P.S. the egg goes away")
@@ -259,8 +261,11 @@ def without_framing(text: str) -> str:
     'put the mug in the sink.'
     >>> without_framing("It would be great if both mugs were in the sink. Mom's mug goes in the sink.")
     "make sure both mugs are in the sink. Mom's mug goes in the sink."
+    >>> without_framing("Mum here - everything below goes in the sink: the mug, then the cup, okay?")
+    'put the mug in the sink, then put the cup in the sink.'
     """
     text = _TAGGED.sub(lambda m: "." if m["end"] else "", text)
+    # an address again after the others ("P.S. Sweetie, ...", "Love, ok so first ...")
     for framing in (_ADDRESSED, _RELAYED, _POSTSCRIPT, _ASIDE_SENTENCE, _UNHURRIED, _ADDRESSED):
         text = framing.sub(lambda m: m["lead"] or "", text)
     text = _PLACE_HEADING.sub(_each_placed, _unnumbered(text))
