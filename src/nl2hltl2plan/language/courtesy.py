@@ -41,7 +41,10 @@ def courtesy_words(kind: str) -> frozenset[str]:
 
 # a frame with the comma after it, where its clause ends (a comma, a sentence's end or the text's end)
 _FRAMES = courtesy_pattern("clause", "time")
-_FRAME = re.compile(rf"(?:,\s*)?\b{_FRAMES}\b(?=\s*(?:[,.;:!?]|$))\s*,?", re.I)
+# (or before the request it frames, asked as a question: "when you get a sec could you put ...", h202)
+_FRAME = re.compile(
+    rf"(?:,\s*)?\b{_FRAMES}\b(?=\s*(?:[,.;:!?]|$)|\s+(?:could|can|would|will)\s+(?:you|u)\b)\s*,?", re.I
+)
 
 
 # an afterthought set off by "oh" inside a sentence ("A and then B oh and put C too"): a new request, not a
@@ -164,6 +167,12 @@ _CALLED = re.compile(
 )
 _REPLY = re.compile(rf"{_OPENS}{courtesy_pattern('reply')}\s*[!.,]+\s*(?=\w)", re.I)
 _THANKS = re.compile(rf"(?<=[.!?])\s*{courtesy_pattern('closing')}\s*[!.]*\s*$", re.IGNORECASE)
+# a note's heading naming who it is for ("Note for Sam:", "Note for whoever's home first:"): it names no task
+_NOTE_FOR = re.compile(
+    rf"{_OPENS}(?:a\s+)?{courtesy_pattern('note')}\s+(?:for|to)\s+"
+    rf"(?:(?P<name>(?-i:[A-Z][a-z]+))|{courtesy_pattern('note_for')})\s*:\s*(?=\S)",
+    re.I,
+)
 _SIGN_OFF = re.compile(rf"(?<=[.!?])\s*(?i:{courtesy_pattern('sign_off')})\s*,\s*(?P<name>[A-Z][a-z]+)\W*$")
 
 
@@ -182,6 +191,7 @@ def without_greetings(text: str, names_a_thing: Callable[[str], bool]) -> str:
     while opened != text:  # "Hi! Sure thing! ..."
         opened = text
         text = _REPLY.sub(lambda m: m["lead"], _GREETING.sub(lambda m: m["lead"], text))
+    text = _NOTE_FOR.sub(lambda m: m[0] if m["name"] and names_a_thing(m["name"]) else m["lead"], text)
     sign_off = _SIGN_OFF.search(text)
     if sign_off and not names_a_thing(sign_off["name"]):
         text = text[: sign_off.start()]
@@ -224,6 +234,15 @@ _UNHURRIED = re.compile(
     rf"\s*[,;-]\s*{courtesy_pattern('unhurried')}\b(?=\s*(?:[.;!?]|$))",
     re.I,
 )
+# who is asked or who writes, opening a sentence ("Sweetie, ...", "Mum here - ..."), spoken openers before an
+# order word ("ok so first ...") and a tag where a sentence ends (", ta.", ", okay?": a statement, "."): h202
+_ADDRESSED = re.compile(
+    rf"{_OPENS}(?:(?:{courtesy_pattern('endearment')}\s*,|"
+    rf"{courtesy_pattern('speaker')}\s*(?:[:,]|\s[-\u2013\u2014]+))\s*(?=\w)|"
+    rf"(?:{courtesy_pattern('spoken_opener')}\s*,?\s*)+(?={courtesy_pattern('opened')}\b))",
+    re.I,
+)
+_TAGGED = re.compile(rf"\s*,\s*{courtesy_pattern('tag')}\s*(?P<end>[.!?]+|$)(?=\s|$)", re.I)
 _ASIDE_SENTENCE = re.compile(rf"{_OPENS}{courtesy_pattern('aside')}\s*[?.!:]+\s*(?=\w)", re.I)
 
 
@@ -231,7 +250,9 @@ def without_framing(text: str) -> str:
     """`text` without the framing a household request comes in that carries no task, no order and no
     negation: a relayed request's "Mom says", a "P.S.", a wish frame (a wished state is a goal), a sentence
     that only announces a request and "no rush" (`courtesy.txt`: `relayed`, `postscript`, `wish`,
-    `state_wish`, `aside`, `unhurried`). Words no list holds stay, to be read or refused by name
+    `state_wish`, `aside`, `unhurried`), a form of address, the note's writer, a tag, spoken openers before
+    an order word, a numbered list's markers and a heading that places every item (`endearment`, `speaker`,
+    `tag`, `opened`, `place_heading`). Words no list holds stay, to be read or refused by name
     (docs/language.md, "Courtesy").
 
     >>> without_framing("Could you do me a favour? Mom says put the mug in the sink. P.S. the egg goes away")
@@ -240,12 +261,52 @@ def without_framing(text: str) -> str:
     'put the mug in the sink.'
     >>> without_framing("It would be great if both mugs were in the sink. Mom's mug goes in the sink.")
     "make sure both mugs are in the sink. Mom's mug goes in the sink."
+    >>> without_framing("Mum here - everything below goes in the sink: the mug, then the cup, okay?")
+    'put the mug in the sink, then put the cup in the sink.'
     """
-    for framing in (_RELAYED, _POSTSCRIPT, _ASIDE_SENTENCE, _UNHURRIED):
+    text = _TAGGED.sub(lambda m: "." if m["end"] else "", text)
+    # an address again after the others ("P.S. Sweetie, ...", "Love, ok so first ...")
+    for framing in (_ADDRESSED, _RELAYED, _POSTSCRIPT, _ASIDE_SENTENCE, _UNHURRIED, _ADDRESSED):
         text = framing.sub(lambda m: m["lead"] or "", text)
+    text = _PLACE_HEADING.sub(_each_placed, _unnumbered(text))
     return _WISH.sub("", _STATE_WISH.sub(_wished, text)).strip()
 
 
 def _wished(m: re.Match[str]) -> str:
     """ "it would be great if X were in Y" -> "make sure X are in Y" (the state wished for, as a goal)."""
     return f"make sure {m['x']} {_ARE.get(m['be'].lower(), m['be'])} "
+
+
+# a heading that gives one place to every item of its list ("Everything below goes on the desk: A, B, C"):
+# each item, up to the sentence's end, with no place of its own ("A on the shelf") is put there (h202)
+_PLACE_HEADING = re.compile(
+    rf"{_OPENS}{courtesy_pattern('place_heading')}\s+(?P<prep>on|onto|in|into|inside)\s+"
+    r"(?P<place>(?:the|a|an|my|your)\s+[a-z -]+?)\s*:\s*(?P<items>[^.;!?]+)",
+    re.I,
+)
+_ITEM_SEP = re.compile(r"(\s*,\s*(?:and\s+)?(?:then\s+)?|\s+and\s+(?:then\s+)?|\s+then\s+)", re.I)
+_HAS_PLACE = re.compile(r"\b(?:on|onto|in|into|inside|goes|go)\b", re.I)
+
+
+def _each_placed(m: re.Match[str]) -> str:
+    """ "Everything below goes on the desk: a book, then the clock" -> "put a book on the desk, then put the
+    clock on the desk"; an item with a place of its own keeps it."""
+    parts = _ITEM_SEP.split(m["items"].strip())
+    placed = [
+        part if i % 2 else part if _HAS_PLACE.search(part) else f"put {part} {m['prep']} {m['place']}"
+        for i, part in enumerate(parts)
+    ]
+    return m["lead"] + "".join(placed)
+
+
+# a numbered list's markers ("Note for Sam: (1) A, (2) B (3) C"), read as a list's ";" (h202): only where they
+# count on from (1) or (a), so "(2 of them)" or a lone "(b)" stays
+_MARKER = re.compile(r"(?P<before>[:;,]?)\s*\((?P<n>\d|[a-h])\)\s*", re.I)
+
+
+def _unnumbered(text: str) -> str:
+    """`text` with the markers of a numbered list, (1), (2), ... or (a), (b), ..., read as items' ";"."""
+    marks = [m["n"].lower() for m in _MARKER.finditer(text)]
+    if len(marks) < 2 or marks not in (list("123456789"[: len(marks)]), list("abcdefgh"[: len(marks)])):
+        return text
+    return _MARKER.sub(lambda m: ": " if m["before"] == ":" else "; ", text).lstrip("; ")
