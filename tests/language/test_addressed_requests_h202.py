@@ -98,3 +98,12 @@ def test_h202_dev_set():
     assert [gt.instruction for gt, what in rows if what == "wrong"] == []
     assert [gt.instruction for gt, what in rows if not gt.feasible and what == "converted"] == []
     assert all(what == "converted" for gt, what in rows if gt.feasible)
+
+
+@pytest.mark.data
+def test_a_count_of_jobs_in_the_heading_is_checked_against_the_reading() -> None:
+    # the framing drops "Kiddo," and the heading with it; the heading's count must still be the tasks read
+    tasks, _, unparsed, _ = read("Kiddo, two jobs: put the egg in the fridge and the mug in the sink.")
+    assert tasks == [EGG, MUG] and unparsed == []
+    tasks, _, unparsed, _ = read("Kiddo, three jobs: put the egg in the fridge and the mug in the sink.")
+    assert any("'three jobs' (count)" in u for u in unparsed), unparsed

@@ -35,7 +35,7 @@ from typing import NamedTuple
 from nl2hltl2plan.language.content_words import phrase_category, shared_words
 from nl2hltl2plan.language.questions import answered
 
-__all__ = ["CountedHeading", "answered", "counted_headings", "unlabelled"]
+__all__ = ["CountedHeading", "answered", "counted_headings", "note_counts", "unlabelled"]
 
 _NUMBER_WORDS = frozenset("one two three four five six seven eight nine ten i ii iii iv v".split())
 _START = r"(?P<start>^|(?<=[.!?;])\s+)"
@@ -84,6 +84,15 @@ _COUNTED = re.compile(
 )
 
 
+# a note's count of its jobs, also after an address or its writer ("Kiddo, three jobs: ...", "Mum here - two
+# things: ..."), which the household framing drops with the words before it (`courtesy`): its reader checks it
+_NOTE_COUNT = re.compile(
+    rf"(?:^|[.!?;,]\s*|\s[-–—]+\s*)(?P<phrase>(?P<count>\d|{'|'.join(_COUNT_WORDS)})\s+"
+    rf"(?:(?!{_NOT_A_TOTAL}\b)[a-z]+\s+)?(?:{_TASK_NOUNS}))\s*:",
+    re.I,
+)
+
+
 class CountedHeading(NamedTuple):
     """A heading's count: its words ("two things to do"), its number, and whether it counts stages."""
 
@@ -107,4 +116,21 @@ def counted_headings(text: str) -> list[CountedHeading]:
         word = m["count"].lower()
         count = int(word) if word.isdigit() else _COUNT_WORDS[word]
         out.append(CountedHeading(m["phrase"], count, m["stages"] is not None, (m.end("start"), m.end())))
+    return out
+
+
+def note_counts(text: str) -> list[CountedHeading]:
+    """The counts of a note's jobs said as a heading closed by a colon, at the start, after a sentence, an
+    address or a dash: the tasks they count, which a reading must make as many of.
+
+    >>> [(h.phrase, h.number) for h in note_counts("Kiddo, three jobs: put the mug in the sink, ...")]
+    [('three jobs', 3)]
+    >>> note_counts("One more thing: put the mug in the sink.")
+    []
+    """
+    out = []
+    for m in _NOTE_COUNT.finditer(text):
+        word = m["count"].lower()
+        count = int(word) if word.isdigit() else _COUNT_WORDS[word]
+        out.append(CountedHeading(m["phrase"], count, False, m.span("phrase")))
     return out

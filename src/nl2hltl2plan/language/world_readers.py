@@ -37,7 +37,7 @@ from typing import Protocol
 from nl2hltl2plan.language.content_words import Unread
 from nl2hltl2plan.language.courtesy import without_framing, without_greetings, without_reasons
 from nl2hltl2plan.language.grounding import find_mentions
-from nl2hltl2plan.language.headings import answered
+from nl2hltl2plan.language.headings import answered, note_counts
 from nl2hltl2plan.language.household_forms import household_forms
 from nl2hltl2plan.language.household_words import contents_hint, descriptive_name_notes, descriptive_names
 from nl2hltl2plan.language.numbered_steps import step_order
@@ -138,6 +138,15 @@ class _HouseholdReader(SharedGrammar):
 
     def notes(self, instruction: str) -> list[str]:
         return descriptive_name_notes(household_forms(instruction), set(self.world.object_types()))
+
+    def unused(self, res: LanguageResult) -> list[Unread]:
+        """A note's heading that counts its jobs ("Kiddo, three jobs: ...", dropped with the framing around
+        it) where the reading makes another number of base tasks (or of tasks and prohibitions, "two jobs:
+        put the egg in the fridge, and don't put the mug in the sink"): the count was not understood."""
+        n, forbids = len(res.tasks), len(res.constraint_specs)
+        why = f"the heading counts them, and the reading makes {n} base task{'s' * (n != 1)}"
+        counted = note_counts(res.instruction)
+        return [Unread(h.phrase, "count", why) for h in counted if h.number not in {n, n + forbids}]
 
     def refusal(self, refused: Exception, instruction: str, prepared: str, rest: str) -> Exception:
         hint = contents_hint(instruction)
