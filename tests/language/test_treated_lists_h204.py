@@ -94,7 +94,7 @@ def test_read_in_a_kitchen(kitchen, text, read):
 
 @pytest.mark.sweep
 @pytest.mark.data
-@pytest.mark.parametrize("name, least", [("paper_h204dev", 22)])
+@pytest.mark.parametrize("name, least", [("paper_h204dev", 22), ("paper_h204held", 12)])
 def test_the_h204_sets_read_nothing_wrong(name, least):
     """h204's lines, read as `plan` reads them: nothing read wrong, and at least `least` converted."""
     sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "scripts"))
