@@ -69,7 +69,7 @@ def test_every_paper_line_names_one_matching_trial_per_task() -> None:
 
     records = {r.trial: r for r in alfred_data().example_fields}
     without = []
-    for path in sorted(trust_sets.STYLES.glob("paper_h1*.txt")):
+    for path in sorted(trust_sets.STYLES.glob("paper_h[12]*.txt")):
         lines = [ln for ln in path.read_text().splitlines() if ln.strip() and not ln.startswith("#")]
         for n, line in enumerate(lines, 1):
             row = trust_sets.parse_line(line, path.stem, n)

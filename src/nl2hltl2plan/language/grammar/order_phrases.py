@@ -418,11 +418,18 @@ _CLOSING_FIRST = re.compile(
     rf",\s+(?:but\s+)?(?P<s>(?:(?:do|handle)\s+)?{_NP_WORDS}\s+(?:first|last))\s*(?=[.;!?]|$)", re.IGNORECASE
 )
 
-
+# "Do the tomato first and the fork last" (which `everyday` has made "... and finally the fork"): two orders,
+# each a sentence of its own ("Do the tomato first. Do the fork last.")
+_FIRST_AND_LAST = re.compile(
+    rf"(?P<lead>(?:^|[.;!?])\s*)(?:do|handle)\s+(?P<a>{_NP_WORDS})\s+first\s*,?\s+and\s+(?:(?:do|handle)\s+)?"
+    rf"(?:(?P<b>{_NP_WORDS})\s+last|(?:finally|lastly)\s*,?\s+(?:(?:do|handle)\s+)?(?P<b2>{_NP_WORDS}))\s*(?=[.;!?]|$)",
+    re.IGNORECASE,
+)
 
 
 def closing_orders(text: str) -> str:
     """ "..., the egg before the apple" / "..., but do the egg first" -> a sentence of its own."""
+    text = _FIRST_AND_LAST.sub(lambda m: f"{m['lead']}Do {m['a']} first. Do {m['b'] or m['b2']} last", text)
     text = _CLOSING_RELATION.sub(lambda m: f". {m['a']} should be done {m['rel']} {m['b']}", text)
     return _CLOSING_FIRST.sub(lambda m: f". {m['s']}", text)
 

@@ -32,6 +32,7 @@ import re
 from functools import lru_cache
 
 from nl2hltl2plan.language.grammar.frames import APPLIANCE_OF
+from nl2hltl2plan.language.grammar.treated_lists import treated_lists
 from nl2hltl2plan.language.grammar.word_tables import VERB_PAST, VERBS
 from nl2hltl2plan.language.grounding import find_mentions
 
@@ -127,7 +128,7 @@ _PLACE_BEFORE = re.compile(r"\b(?:in|into|on|onto|inside|on\s+top\s+of)\s+(?:the
 def treatments_said(text: str) -> str:
     """The text with the needs, causatives and terse orders above rewritten (see the module docstring)."""
     need, causative, purpose = _patterns()
-    text = _TEXTED_ID.sub("I'd ", text)
+    text = treated_lists(_TEXTED_ID.sub("I'd ", text))  # lists, outcomes, things said first (treated_lists)
     text = _MAKE_STATE.sub(_made, text)
     text = _AFTER_STEP.sub("then ", _GIVE_ON.sub(r"put \g<it> ", _YOU_STEP.sub(r"\g<lead>", text)))
     text = _PUT_BARE.sub(r"\g<lead>\g<verb> it ", text)

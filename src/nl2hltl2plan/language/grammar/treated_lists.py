@@ -1,0 +1,171 @@
+"""A treatment said once for several things, said as an outcome, or said after its thing (issue 28,
+paper_h189 and paper_h204dev.txt), rewritten onto the imperatives the grammar reads. Each rule rewrites
+only where every thing is a name the scene's lexicon knows (`find_mentions`) and the verb or participle
+is one of the grammar's treatments (`word_tables`: clean, heat, cool), so anything else is left as it is:
+
+- a treatment heading a list: "Chill these in the fridge and then put them away: a potato slice in the
+  bin, an egg in the microwave" is "chill a potato slice and put it in the bin, chill an egg and put it in
+  the microwave" (a list says no order); a place said in the heading ("... and set them on the table: a
+  potato slice and a plate") is every item's place;
+- a treatment and a placement said as an outcome: "make sure the pan gets washed and left on the counter"
+  is "wash the pan and put it on the counter", and so is each "and (that) X gets washed and left on Y" of a
+  text that says "make sure"; a closing "once both are done" of such a clause is said before it;
+- an item with participles: "a cup heated in the microwave and left on the shelf", "the pot chilled and
+  put in a cabinet" is "a heated cup on the shelf", "the chilled pot in a cabinet" (the verbless items of
+  `verbless_items.py`);
+- a name and its place after a treatment and a placement of a thing: "rinse out a bowl and leave it on the
+  counter and a green glass in the cupboard" is "..., and rinse a green glass and leave it in the cupboard";
+- a thing named before its steps: "Next, a slice of potato: heat it up and drop it in the sink" is "Next,
+  heat up a slice of potato and drop it in the sink".
+"""
+
+from __future__ import annotations
+
+import re
+from functools import lru_cache
+
+from nl2hltl2plan.language.grammar.word_tables import VERB_PAST, VERBS
+from nl2hltl2plan.language.grounding import find_mentions
+
+_STATE = {"clean": "washed", "heat": "heated", "cool": "chilled"}  # the state word a treatment leaves
+_PARTICLE = r"(?:\s+(?:up|down|off|out))?"
+_APPLIANCE = r"(?:\s+(?:in|inside)\s+(?:the|a)\s+(?:microwave|fridge|refrigerator|sink|oven))?"
+_PREP = r"(?P<prep>in|into|on|onto|inside)"
+_PLACED = r"(?:left|put|set|placed|dropped|stored|kept|returned)(?:\s+back)?"
+_NP = r"(?:a|an|the|another|one|this|that|my|your)\s+[a-z]+(?:\s+[a-z]+){0,3}?"
+# an item's name: no word of a list or a place inside it ("the sink and a cup heated" is two phrases)
+_WORD = r"(?!(?:and|or|then|in|into|on|onto|inside|with)\b)[a-z]+"
+_ITEM_NP = rf"(?:a|an|the|another|one|this|that|my|your)\s+{_WORD}(?:\s+{_WORD}){{0,3}}?"
+_THESE = r"(?:these|them|all\s+of\s+these|each\s+of\s+these|all\s+these|the\s+following)"
+_AWAY = r"(?:away|back|where\s+I\s+say|where\s+they\s+go|where\s+I\s+tell\s+you)"
+_ITEM_GAP = re.compile(r"\s*,\s*(?:and\s+)?|\s+and\s+(?=(?:a|an|the|another|one)\s)", re.I)
+_ITEM_PLACE = re.compile(rf"^(?P<np>{_NP})\s+{_PREP}\s+(?P<place>(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)$", re.I)
+_SLICE = re.compile(r"(?:\s+slices?)?\s*", re.I)
+# "wash the pan and put it on the counter once both are done": the reference said first, where the grammar
+# reads it ("once both are done, wash the pan ..."); only in a text where an outcome was rewritten
+_ONCE_DONE = re.compile(
+    r"(?P<lead>^|[.;!?]\s+|,\s+and\s+)(?P<clause>[a-z][^.;!?,]*?)\s+(?P<once>once\s+(?:that's|that\s+is|both\s+are|"
+    r"those\s+are|they're|they\s+are|it's|it\s+is)\s+done)(?=\s*(?:[.;!?]|$))",
+    re.I,
+)
+_TOO = re.compile(r"\s+(?:too|as\s+well|also)\s*$", re.I)
+
+
+def _treatments(table: dict[str, tuple[str, str]]) -> str:
+    words = sorted((w for w, (cls, _) in table.items() if cls in _STATE), key=len, reverse=True)
+    return "|".join(re.escape(w) for w in words)
+
+
+@lru_cache(maxsize=1)
+def _patterns() -> tuple[re.Pattern[str], ...]:
+    verbs, past = _treatments(VERBS), _treatments(VERB_PAST)
+    heading = re.compile(
+        rf"(?P<lead>(?:^|(?<=[.;!?])\s+)(?:(?:after\s+that|then|next|now|also|first)\s*,?\s+)?)"
+        rf"(?P<verb>{verbs}){_PARTICLE}\s+{_THESE}{_PARTICLE}{_APPLIANCE}\s*,?\s+"
+        rf"(?:and\s+|then\s+|and\s+then\s+|before\s+)(?:put|putting|set|setting|place|placing)\s+them\s+"
+        rf"(?:{_AWAY}|{_PREP}\s+(?P<place>(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?))\s*:\s*(?P<items>[^.;!?]+)",
+        re.I,
+    )
+    outcome = re.compile(
+        rf"(?P<lead>\b(?:make\s+sure|ensure)(?:\s+that)?\s+|,?\s+and\s+(?:that\s+)?)(?P<np>{_NP}"
+        rf"(?:\s+and\s+{_NP})?)\s+(?P<gets>gets|get|is|are)\s+(?P<part>{past}){_PARTICLE}{_APPLIANCE}\s+and\s+"
+        rf"(?:{_PLACED}|ends?\s+up|goes|go)\s+{_PREP}\s+",
+        re.I,
+    )
+    item = re.compile(
+        rf"\b(?P<np>{_ITEM_NP})\s+(?P<part>{past}){_PARTICLE}{_APPLIANCE}\s+and\s+(?:then\s+)?{_PLACED}\s+{_PREP}\s+",
+        re.I,
+    )
+    named_first = re.compile(
+        rf"(?P<lead>(?:^|(?<=[.;!?])\s+)(?:(?:next|now|then|first|finally|after\s+that)\s*,?\s+)?)"
+        rf"(?P<np>(?:a|an|the)\s+[a-z]+(?:\s+[a-z]+){{0,3}}?)\s*:\s*(?P<verb>{verbs}|put|place|set)"
+        rf"\s+it(?P<particle>{_PARTICLE})\b",
+        re.I,
+    )
+    shared = re.compile(
+        rf"\b(?P<steps>(?P<verb>{verbs}){_PARTICLE}\s+{_NP}\s+and\s+(?P<put>put|leave|set|place|drop)\s+it\s+"
+        rf"(?:in|into|on|onto|inside)\s+(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)\s+and\s+(?P<np>{_NP})\s+{_PREP}\s+"
+        rf"(?P<place>(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)(?=\s*(?:[.;!?]|$))",
+        re.I,
+    )
+    return heading, outcome, item, named_first, shared
+
+
+def treated_lists(text: str) -> str:
+    """The text with the treatments above rewritten (see the module docstring)."""
+    heading, outcome, item, named_first, shared = _patterns()
+    text = shared.sub(_steps_shared, text)
+    text = heading.sub(_distributed, text)
+    if re.search(r"\b(?:make\s+sure|ensure)\b", text, re.I) and (said := outcome.sub(_outcome, text)) != text:
+        text = _ONCE_DONE.sub(_once_first, said)
+    text = item.sub(_item, text)
+    return named_first.sub(_named_first, text)
+
+
+def _names_things(phrase: str, most: int = 1) -> bool:
+    """Does the phrase end on a name the lexicon knows ("an apple slice": a slice of it), with at most `most`
+    names in it?"""
+    found = find_mentions(phrase)
+    return 0 < len(found) <= most and _SLICE.fullmatch(phrase[found[-1].char_end :]) is not None
+
+
+def _distributed(m: re.Match[str]) -> str:
+    """The heading's treatment and placement written for each item of its list; the text as it was where
+    an item is not a name with its place (or a bare name, where the heading said the place)."""
+    verb, shared = m["verb"].lower(), m["place"]
+    said = []
+    for part in _ITEM_GAP.split(_TOO.sub("", m["items"].strip())):
+        found = _ITEM_PLACE.match(part.strip())
+        if found and not shared and _names_things(found["np"]) and _names_things(found["place"]):
+            said.append(f"{verb} {found['np']} and put it {found['prep'].lower()} {found['place']}")
+        elif shared and not found and _names_things(part.strip()):
+            said.append(f"{verb} {part.strip()} and put it {m['prep'].lower()} {shared}")
+        else:
+            return m[0]
+    if len(said) < 2:
+        return m[0]
+    lead = m["lead"]
+    return lead + (", ".join(said[:-1]) + " and " + said[-1] if lead.strip() else _capital(", ".join(said)))
+
+
+def _capital(text: str) -> str:
+    return text[:1].upper() + text[1:]
+
+
+def _steps_shared(m: re.Match[str]) -> str:
+    """ "rinse a bowl and leave it on the counter and a glass in the cupboard": the glass is rinsed and left
+    too."""
+    if not (_names_things(m["np"]) and _names_things(m["place"])):
+        return m[0]
+    return f"{m['steps']}, and {m['verb']} {m['np']} and {m['put']} it {m['prep'].lower()} {m['place']}"
+
+
+def _outcome(m: re.Match[str]) -> str:
+    """ "make sure the pan gets washed and left on the" -> "wash the pan and put it on the"."""
+    verb = VERB_PAST[m["part"].lower()][1]
+    if not _names_things(m["np"], most=2):
+        return m[0]
+    it = "them" if m["gets"].lower() in ("get", "are") else "it"
+    lead = ", and " if m["lead"].lstrip().startswith((",", "and")) else ""
+    return f"{lead}{verb} {m['np']} and put {it} {m['prep'].lower()} "
+
+
+def _once_first(m: re.Match[str]) -> str:
+    once = m["once"] if m["lead"].strip(" ,").lower() == "and" else _capital(m["once"].lower())
+    return f"{m['lead']}{once}, {m['clause'][:1].lower()}{m['clause'][1:]}"
+
+
+def _item(m: re.Match[str]) -> str:
+    """ "a cup heated in the microwave and left on the" -> "a heated cup on the"."""
+    det, _, noun = m["np"].partition(" ")
+    if not _names_things(m["np"]):
+        return m[0]
+    return f"{det} {_STATE[VERB_PAST[m['part'].lower()][0]]} {noun} {m['prep'].lower()} "
+
+
+def _named_first(m: re.Match[str]) -> str:
+    """ "Next, a slice of potato: heat it up" -> "Next, heat up a slice of potato"."""
+    if not _names_things(m["np"]):
+        return m[0]
+    verb = m["verb"] if m["lead"].strip() else _capital(m["verb"].lower())
+    return f"{m['lead']}{verb}{m['particle']} {m['np']}"
