@@ -291,8 +291,6 @@ KNOWN_WRONG: set[str] = {
     "Could you put the empty toilet paper roll and the full one in the cabinet under the counter?",
     "the black pen next to the laptop goes on the dresser and the two pencils behind the keys go in one of "
     "the dresser drawers",
-    "Microwave an egg and set it on the counter by the bread, then do the same with a tomato but put that "
-    "one in the sink.",
     "Throw two bars of soap from the counter into the bin by the toilet, plus the two spray bottles on the "
     "back of the toilet. Once those are in, rinse the pink bar of soap between the sinks and throw it in "
     "the bin as well.",
