@@ -41,6 +41,8 @@ from nl2hltl2plan.language.grammar.repeats import repeated_for_another
         ("Look at the book under the lamp. Put the mug in the sink, then the cup on the shelf.",) * 2,
         # a list in another sentence than the examination's: its things are placed
         ("Look at the remote under the lamp. Both statues on the dresser. Then the keys in a box.",) * 2,
+        # an order said inside the item ("after that"): left to the repeat, whose order the rules read
+        ("Check the laptop under the lamp, and do the same with the alarm clock after that.",) * 2,
         # the count said before the list is not the number of things listed
         ("Check three things under the lamp: the book and the vase.",) * 2,
     ],

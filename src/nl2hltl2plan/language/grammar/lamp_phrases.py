@@ -208,10 +208,12 @@ _LIST_UNDER = re.compile(
 _NUMBER = {"two": 2, "three": 3, "four": 4, "five": 5}
 _ITEM_SPLIT = re.compile(r"\s*,\s*(?:and\s+)?|\s+and\s+(?=(?:the|a|an|another|my|your)\s)", re.I)
 _ANY_ORDER = re.compile(r"^(?:in\s+)?(?:any|whatever)\s+order$", re.I)
-# words that say an item is not a thing looked at where it is: a destination, a reference, the lamp itself
-# ("the other remote" is left to the repeat's own check, which asks a task of its own for it)
+# words that say an item is not a thing looked at where it is: a destination, a reference, the lamp itself,
+# an order ("the clock after that": the rules read its order only said after a verb); "the other remote" is
+# left to the repeat's own check, which asks a task of its own for it
 _NOT_LOOKED_AT = {"into", "onto", "inside", "lamp", "light", "it", "them", "too", "also", "well", "but"}
-_NOT_LOOKED_AT |= {"other"}
+_NOT_LOOKED_AT |= {"other", "after", "before", "then", "afterwards", "first", "later", "once", "when"}
+_NOT_LOOKED_AT |= {"until"}
 _NEAR = {"closest", "nearest", "close", "next"}  # "closest to the vase": a landmark, not a destination
 _OTHER_TASK = {"place", "pick", "clean", "heat", "cool", "slice", "fill", "trash", "other"}
 
