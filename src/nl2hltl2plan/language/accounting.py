@@ -321,7 +321,9 @@ def _locative(
     if toks[i][0] == "with" and ((i > 0 and toks[i - 1][0] in _DONE_WORDS) or carried(m)):
         return False  # "done with the mug": a task it is in; "a pan with a tomato": a thing to move too
     clause = _clause_span(instruction, toks[start][1])
-    if any({"verb_take", "verb_sliced"} & categories(w) for w, s, _ in toks if clause[0] <= s < clause[1]):
+    # "look at the racket by the dresser": an examination puts nothing anywhere, so its place is where it is
+    taking = {"verb_take", "verb_sliced", "verb_examine_in_light"}
+    if any(taking & categories(w) for w, s, _ in toks if clause[0] <= s < clause[1]):
         return True
     if of_a_treated_thing(toks, m, clause) or listed_landmark(instruction, toks, m, mentions):
         return True  # "wash the fork next to the sink and ...", "the mug by the sink and the bowl by ..."

@@ -10,6 +10,10 @@ from __future__ import annotations
 
 import re
 
+from nl2hltl2plan.language.content_words import DETERMINERS
+from nl2hltl2plan.language.grammar.word_tables import VERBS
+from nl2hltl2plan.language.grounding import find_mentions, tokens
+
 _EXAMINE = r"(?:look\s+at|see|examine|view|read|inspect|check(?:\s+out)?|study|observe)"
 # the looking verbs people use beside those: "have a look at X", "take a close look at X" ("look at X": the
 # rules give a verb of one word to the things listed after it, "... and then the pen")
@@ -17,6 +21,12 @@ _A_LOOK_AT = re.compile(
     r"\b(?:have|take|get)\s+a\s+(?:(?:good|close|closer|quick|proper)\s+)?look\s+at\b", re.I
 )
 _LOOKING = rf"(?:{_EXAMINE}|{_A_LOOK_AT.pattern})"
+# "give the watch a look", "give it a quick look": "look at the watch"
+_GIVE_A_LOOK = re.compile(
+    r"\bgive\s+(?P<np>it|them|(?:the|a|an|that|this)\s+[a-z]+(?:\s+[a-z]+){0,2}?)\s+a\s+"
+    r"(?:(?:good|close|closer|quick|proper)\s+)?look\b",
+    re.I,
+)
 # "look over the CD and the pen": "look at" (left, "over the CD" was a place, and the CD lost)
 _LOOK_OVER = re.compile(r"\b(look)\s+over\s+(?=(?:the|a|an|this|that|these|those|it|them|my|your)\b)", re.I)
 
@@ -111,6 +121,11 @@ _CARRY_TO_LAMP = re.compile(
 )
 
 
+# "Switch on the floor lamp and ...": "switch" opening a sentence was read as a light switch put on the lamp;
+# before a lamp it is the verb, as "turn" is
+_SWITCH_ON = re.compile(r"\b(switch)\s+(on|off)\s+(?=(?:the|a)\s+(?:[a-z]+\s+){0,2}?(?:lamp|light)\b)", re.I)
+
+
 def _purpose_said(m: re.Match[str]) -> str:
     """The purpose dropped where it names the thing carried to the lamp (it, or a noun said before)."""
     what = m["what"].lower().split()
@@ -135,6 +150,8 @@ def carried_to_lamp(text: str) -> str:
 def lamp_phrasing(text: str) -> str:
     """`text` with each phrasing above rewritten (its comment says which)."""
     text = _LOOK_OVER.sub(r"\1 at ", _LIGHT_FROM.sub("light of ", carried_to_lamp(text)))
+    text = _SWITCH_ON.sub(lambda m: f"{'tT'[m[1][0].isupper()]}urn {m[2]} ", text)
+    text = _GIVE_A_LOOK.sub(lambda m: f"{'lL'[m[0][0].isupper()]}ook at {m['np']}", text)
     text = _LAMP_FIRST.sub(lambda m: f"{_A_LOOK_AT.sub('look at', m['verb'])} {m['things']} under the "
                            f"{m['lamp']}{m['tail'] or ''}", text)
     text = _USE_LAMP.sub(_lamp_used, text)
@@ -145,3 +162,142 @@ def lamp_phrasing(text: str) -> str:
     text = _LOOK_PURPOSE.sub(r"\g<keep>", _PURPOSE.sub(_purpose_said, text))
     # after the purposes above, which drop "to get a good look at it" whole
     return _A_LOOK_AT.sub(lambda m: "Look at" if m[0][0].isupper() else "look at", text)
+
+
+# After an examination under a lamp, the things listed on are each looked at under that lamp, and a place
+# said with one ("from the bed", "on the TV stand", "closest to the vase") is where it is, not where it goes
+# (h203: paper_h189 read "Do the same with the newspaper on the TV stand" as a newspaper and a TV stand of
+# places, and "..., and finally the phone on the TV stand" gave the TV stand to every examination):
+# "..., then the remote closest to the vase, and finally the phone on the TV stand", "After that, the pillow
+# from the bed", "do the same with A on L and B", "check three things under the lamp: A on L, B and C".
+# Each is written "look at X under <the lamp>", which the rules read with its place as a landmark.
+_LAMP = re.compile(
+    r"\b(?:the|a)\s+(?:(?!(?:the|a|an|under|by|of|with|on|in|and)\b)[a-z]+\s+){0,2}?lamp\b", re.I
+)
+_ITEM = r"(?:the|a|an|another|my|your)\s+[a-z][^,.;!?:]*?"
+_ITEM_END = r"(?=\s*(?:[,.;!?]|$)|,?\s+and\s+(?:then\s+|finally\s+|lastly\s+)?(?:the|a|an|another|my|your)\s)"
+_NEXT_ITEM = re.compile(
+    r"(?P<lead>(?:,\s*|;\s*|[.!?]\s+|\s+(?=and\s))(?:and\s+)?"
+    r"(?:then|after\s+that|afterwards|next|lastly|finally|last\s+of\s+all)\s*,?\s+)"
+    rf"(?P<np>{_ITEM}){_ITEM_END}",
+    re.I,
+)
+_SAME_WITH = re.compile(
+    r"\b(?:do\s+)?(?:the\s+)?same\s+(?:thing\s+)?(?:for|with)\s+"
+    r"(?P<items>(?:the|a|an|another|my|your)\s[^.;!?]*?)(?=\s*(?:[.;!?]|$))",
+    re.I,
+)
+# "check three things under the lamp: A, B and C", "Under the lamp, with it on, look at four things: ..."
+_THINGS_UNDER = re.compile(
+    r"\b(?:(?:look\s+at|check|examine|inspect)\s+(?P<n>two|three|four|five)\s+(?:things|items|objects)\s+"
+    r"under\s+(?P<lamp>(?:the|a)\s+(?:[a-z]+\s+)?lamp(?:\s+in\s+the\s+corner)?)(?:\s+too|\s+as\s+well)?"
+    r"|under\s+(?P<lamp2>(?:the|a)\s+(?:[a-z]+\s+)?lamp)\s*,\s*"
+    r"(?:with\s+(?:the\s+lamp|it)\s+(?:switched\s+|turned\s+)?on\s*,\s*)?"
+    r"(?:look\s+at|check|examine|inspect)\s+(?P<n2>two|three|four|five)\s+(?:things|items|objects))"
+    r"\s*:\s*(?P<items>[^.;!?]+)",
+    re.I,
+)
+# "look at A by L and B on M under the desk lamp, and C and D under the floor lamp": each item under its lamp
+# (the rules took "B on M" for a placement)
+_LIST_UNDER = re.compile(
+    r"(?:\b(?P<verb>look\s+at|examine|inspect|check)\s+|(?<=lamp)(?P<join>,?\s+and\s+))"
+    r"(?P<items>(?:the|a|an|another|my|your)\s[^.;!?:]*?)\s+"
+    r"(?P<lamp>(?:under|by\s+the\s+light\s+of)\s+(?:the|a)\s+(?:(?!(?:the|a|an)\b)[a-z]+\s+){0,2}?lamp)\b",
+    re.I,
+)
+_NUMBER = {"two": 2, "three": 3, "four": 4, "five": 5}
+_ITEM_SPLIT = re.compile(r"\s*,\s*(?:and\s+)?|\s+and\s+(?=(?:the|a|an|another|my|your)\s)", re.I)
+_ANY_ORDER = re.compile(r"^(?:in\s+)?(?:any|whatever)\s+order$", re.I)
+# words that say an item is not a thing looked at where it is: a destination, a reference, the lamp itself,
+# an order ("the clock after that": the rules read its order only said after a verb); "the other remote" is
+# left to the repeat's own check, which asks a task of its own for it
+_NOT_LOOKED_AT = {"into", "onto", "inside", "lamp", "light", "it", "them", "too", "also", "well", "but"}
+_NOT_LOOKED_AT |= {"other", "after", "before", "then", "afterwards", "first", "later", "once", "when"}
+_NOT_LOOKED_AT |= {"until"}
+_NEAR = {"closest", "nearest", "close", "next"}  # "closest to the vase": a landmark, not a destination
+_OTHER_TASK = {"place", "pick", "clean", "heat", "cool", "slice", "fill", "trash", "other"}
+
+
+def _looked_at(np: str) -> bool:
+    """Is `np` one thing, and words that say where it is, and nothing else (no verb, no destination)?"""
+    toks = tokens(np)
+    named = [m for m in find_mentions(np) if not m.entry.generic]
+    if not named or named[0].start > 3 or not toks or toks[0][0] not in DETERMINERS | {"another"}:
+        return False
+    inside = {i for m in named for i in range(m.start, m.end)}
+    for i, (word, _, _) in enumerate(toks):
+        if word in _NOT_LOOKED_AT or (word == "to" and (i == 0 or toks[i - 1][0] not in _NEAR)):
+            return False
+        if i not in inside and word in VERBS and (i == 0 or toks[i - 1][0] not in DETERMINERS):  # "the head"
+            return False
+    return True
+
+
+def _lamp_before(text: str, at: int, sentences: int = 0) -> str | None:
+    """The lamp of the examination that the words at `at` go on ("the desk lamp"): the last lamp said
+    before them, at most `sentences` sentence ends before, in a stretch with an examination or the lamp
+    switched on and no verb of another task."""
+    lamps = list(_LAMP.finditer(text, 0, at))
+    if not lamps or len(re.findall(r"[.;!?\n]", text[lamps[-1].end() : at])) > sentences:
+        return None
+    start = max(text.rfind(c, 0, lamps[-1].start()) for c in ".;!?\n") + 1
+    toks = tokens(text[start:at])
+    named = {i for m in find_mentions(text[start:at]) for i in range(m.start, m.end)}
+    said = [VERBS[w][0] for i, (w, _, _) in enumerate(toks) if w in VERBS and i not in named]
+    after = tokens(text[lamps[-1].end() : at])
+    if any(w in VERBS and VERBS[w][0] in _OTHER_TASK and w not in ("hold", "holding") for w, _, _ in after):
+        return None
+    under = re.search(r"\b(?:under|beneath|light\s+of)\s*$", text[start : lamps[-1].start()], re.I)
+    return lamps[-1][0].lower() if under or {"examine", "light"} & set(said) else None
+
+
+def _under(np: str, lamp: str, first: bool) -> str:
+    return f"{'Look' if first else 'look'} at {np} under {lamp}"
+
+
+def _listed_under(items: str, lamp: str, capital: bool, count: int | None = None) -> str | None:
+    """ "A on L, B and C" -> "look at A on L under the lamp, look at B under the lamp and look at C under
+    the lamp" (", in any order" kept after them); None where an item is no thing looked at."""
+    parts = [p.strip() for p in _ITEM_SPLIT.split(items.strip()) if p.strip()]
+    tail = ", in any order" if parts and _ANY_ORDER.match(parts[-1]) else ""
+    things = parts[:-1] if tail else parts
+    if not things or not all(_looked_at(p) for p in things) or count not in (None, len(things)):
+        return None
+    said = [_under(p, lamp, capital and not k) for k, p in enumerate(things)]
+    return (", ".join(said[:-1]) + " and " + said[-1] if len(said) > 1 else said[0]) + tail
+
+
+def _things_under(m: re.Match[str]) -> str:
+    lamp, n = m["lamp"] or m["lamp2"], (m["n"] or m["n2"]).lower()
+    listed = _listed_under(m["items"], lamp.lower(), m[0][0].isupper(), _NUMBER[n])
+    return listed or m[0]
+
+
+def _list_under(m: re.Match[str]) -> str:
+    """ "look at A on L and B under the lamp": each looked at under it, where the list has two items or
+    more."""
+    if len(_ITEM_SPLIT.split(m["items"].strip())) < 2:
+        return m[0]
+    capital = bool(m["verb"]) and m[0][0].isupper()
+    listed = _listed_under(m["items"], m["lamp"].split(None, 1)[1].lower(), capital)
+    return (m["join"] or "") + listed if listed else m[0]
+
+
+def items_under_lamp(text: str) -> str:
+    """`text` with each thing listed after an examination under a lamp written as looked at under it."""
+    text = _LIST_UNDER.sub(_list_under, _THINGS_UNDER.sub(_things_under, text))
+
+    def same(m: re.Match[str]) -> str:  # "do the same" may follow the examination's sentence
+        lamp = _lamp_before(m.string, m.start(), sentences=1)
+        return (lamp and _listed_under(m["items"], lamp, m[0][0].isupper())) or m[0]
+
+    text = _SAME_WITH.sub(same, text)
+    at = 0  # item by item: each one written out is the examination the next one follows
+    while m := _NEXT_ITEM.search(text, at):
+        lamp = _lamp_before(text, m.start())
+        if not lamp or not _looked_at(m["np"]):
+            at = m.start() + 1
+            continue
+        said = m["lead"] + _under(m["np"], lamp, False)
+        text, at = text[: m.start()] + said + text[m.end() :], m.start() + len(said)
+    return text

@@ -227,6 +227,8 @@ def _with_thing(sentence: str, thing: Mention, inside: bool = False, container: 
         return None
     toks = tokens(sentence)
     named = [m for m in find_mentions(sentence) if not m.entry.generic and not _light_of(m, toks)]
+    if named and named[0].start == 0 and categories(toks[0][0]) & _OPENING:
+        named = named[1:]  # "Microwave an egg ...": the verb, not the appliance
     roles = [_role(m, toks) for m in named]
     if container:
         held = [m.entry.types for m, role in zip(named, roles, strict=True) if role == "place"]
@@ -256,7 +258,9 @@ def _with_thing(sentence: str, thing: Mention, inside: bool = False, container: 
     spans += [(toks[_det_at(m, toks) - 1][1] - 1, m.char_end, "") for m in sources]
     for start, end, new in sorted(spans, reverse=True):
         sentence = sentence[:start] + new + sentence[end:]
-    return sentence
+    article = "an" if thing.surface[:1].lower() in "aeiou" else "a"  # "an egg" copied for "a tomato"
+    said_before = rf"\b[Aa]n?(?=\s+{re.escape(thing.surface)}\b)"
+    return re.sub(said_before, lambda m: m[0][0] + article[1:], sentence, count=1)
 
 
 def _det_at(m: Mention, toks: list[tuple[str, int, int]]) -> int:
