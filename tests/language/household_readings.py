@@ -12,3 +12,11 @@ def reading(text: str, world: World) -> tuple[list[str], list[tuple[str, str]]]:
     res = translate(text, world, build=False, actions="none")
     assert not res.partial, res.unparsed
     return [t.summary() for t in res.tasks], res.before
+
+
+def full_reading(text: str, world: World) -> tuple[list[str], list[tuple[str, str]], list[str], list[str]]:
+    """(the tasks' summaries, the order sorted, what is left unread, the prohibitions described), partial
+    or not: for tests that assert what a reading leaves unread or forbids."""
+    res = translate(text, world, build=False, actions="none")
+    forbids = [c.describe() for c in res.constraint_specs]
+    return [t.summary() for t in res.tasks], sorted(res.before), res.unparsed, forbids

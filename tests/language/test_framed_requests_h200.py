@@ -11,12 +11,13 @@ import sys
 from pathlib import Path
 
 import pytest
+from household_readings import full_reading
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.courtesy import without_courtesy, without_framing
-from nl2hltl2plan.language.translate import translate
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "scripts"))
+
 
 EGG, MUG = "place Egg -> Fridge", "place Mug -> SinkBasin"
 
@@ -24,9 +25,7 @@ EGG, MUG = "place Egg -> Fridge", "place Mug -> SinkBasin"
 def read(text: str) -> tuple[list[str], list[tuple[str, str]], list[str], list[str]]:
     from trust_sets import world_of
 
-    res = translate(text, world_of("FloorPlan28"), build=False, actions="none")
-    forbids = [c.describe() for c in res.constraint_specs]
-    return [t.summary() for t in res.tasks], sorted(res.before), res.unparsed, forbids
+    return full_reading(text, world_of("FloorPlan28"))
 
 
 @pytest.mark.data
