@@ -8,6 +8,8 @@ exit 0 (results/language/h206.md).
 - An order line by bare step number ("Do 2 before 1") where the text numbers fewer than two steps is refused;
   it was read as nothing.
 - "throw away the apple in the fridge": the fridge is where the apple is, not where it goes.
+- A re-read clause (`learned.inference._rescued`) must keep what the order words say, as a model reading must
+  ("A. Put the book on the bed, both before C": "both" is no count of one book).
 """
 
 from __future__ import annotations
@@ -60,6 +62,11 @@ REFUSED = [
     ),
     ("FloorPlan301", "Put the pen in the box. Do 2 before 1.", "Do 2 before 1"),
     ("FloorPlan1", "Throw away the apple in the fridge.", "fridge"),
+    (  # the re-reading made "both" a count of one book and kept one task before the watch
+        "FloorPlan301",
+        "Put the pen in the box. Put the book on the bed, both before you look at the watch under the lamp.",
+        "both",
+    ),
 ]
 REFUSED_SWEEP = [
     (
