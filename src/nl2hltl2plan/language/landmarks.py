@@ -238,11 +238,14 @@ def places_as_sources(phrase: str) -> str:
     return "".join(out) + phrase[pos:]
 
 
-def subject_sources(text: str, verb: re.Pattern[str], names_object_before: Callable[[str, int], bool]) -> str:
+def subject_sources(
+    text: str, verb: re.Pattern[str], names_object_before: Callable[[str, int], bool], near_too: bool = True
+) -> str:
     """The text with the places of each subject before a verb of going (`verb`: "goes", "belongs",
     "should go" ...) said as sources and the request's verb said: "the book on the armchair goes on the
     table" -> "put the book from the armchair on the table". A subject is the clause's words before the
-    verb, a name last or a part of the room after it ("the book on the armchair in the corner")."""
+    verb, a name last or a part of the room after it ("the book on the armchair in the corner").
+    `near_too=False`: a subject whose only place is said with a word of nearness is left as it is."""
     out = text
     for m in reversed(list(verb.finditer(text))):
         start = max((c.end() for c in _CLAUSE_START.finditer(text, 0, m.start())), default=0)
@@ -252,7 +255,8 @@ def subject_sources(text: str, verb: re.Pattern[str], names_object_before: Calla
             continue
         subject = places_as_sources(said)
         # a clause of a subject and its place only ("the book on the bed goes on the desk") is a request
-        if (subject != said or _NEAR_SAID.search(subject)) and re.match(_THING_FIRST, subject, re.I):
+        near = near_too and _NEAR_SAID.search(subject)
+        if (subject != said or near) and re.match(_THING_FIRST, subject, re.I):
             out = out[:start] + "put " + subject + " " + out[m.end() :].lstrip()
         elif subject != said:
             out = out[:start] + subject + out[m.start() :]

@@ -85,7 +85,9 @@ def step_order(text: str) -> str:
         text = _DASHED_ORDER.sub(". ", text)
     sentences = re.split(r"(?<=[.!?])\s+", text.strip())
     said = [(k, m) for k, s in enumerate(sentences) for p in _SAID if (m := p.match(s.strip(" .!?")))]
-    said = [(k, m) for k, m in said if not _bare_without_steps(m, sentences, k)]
+    if len(said) == 1 and _bare_without_steps(said[0][1], sentences, said[0][0]):
+        # "Put the pen in the box. Do 2 before 1.": the line was read as nothing, at exit 0
+        raise HTTError(f"{said[0][1][0]!r} names steps by number, but the instruction numbers fewer than two")
     if not said:
         loose = [s for k, s in enumerate(sentences)
                  if k and _LOOSE.match(s.strip()) and _steps_of(sentences, k)]

@@ -10,6 +10,7 @@ from nl2hltl2plan.errors import WorldError
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.frames import (
     APPLIANCE_OF,
+    ONLY_WHERE_IT_IS,
     PICKED_OWNER,
     THEN_TO,
     UNDER,
@@ -246,8 +247,11 @@ class TaskBuilder:
         if len(said) > 1:  # "chill then warm a tomato": one task has one treatment; which is meant is a guess
             self.unparsed.append(f"two treatments ({' and '.join(sorted(said))}) of one object in: {text}")
             return None  # (before a missing destination: no reading of the clause may drop one of them)
-        if r.light is None and final is None:
-            self.unparsed.append(f"no destination for the {obj.text or obj.key!r} in: {text}")
+        if r.light is None and final is None:  # "the mug from the sink": the model must not make it the place
+            pps = [p for _, it in d.frames for p, _ in it.pps]
+            source = "from" in pps and not any(p in G.DEST_PREPS or p == "to" for p in pps)
+            where = f" ({ONLY_WHERE_IT_IS})" if source else ""
+            self.unparsed.append(f"no destination for the {obj.text or obj.key!r} in: {text}{where}")
             return None
         kind = _kind_of(r)
         untreated = said - _treated_where(final)
@@ -475,6 +479,11 @@ def _holdable(np: NP, holder: NP, look: AffordanceLookup | None) -> bool:
     )
 
 
+# a verb that itself says the thing goes to the bin ("throw away", "discard"); after it "in the fridge" is
+# where the thing is, where "toss the apple in the sink" may say where it lands
+_THROWN_AWAY = re.compile(r"\b(?:away|out|discard|dispose|get\s+rid)\b", re.I)
+
+
 def _read_destination(r: _Reading, fr: Frame, it: Item) -> None:
     """Where the item goes (stops on the way first); "in a cup to the counter" also names a container."""
     # "throw away the apple next to the sink", "grab the mug by the sink.": the sink says which one; the
@@ -482,6 +491,9 @@ def _read_destination(r: _Reading, fr: Frame, it: Item) -> None:
     dst = dest_of(it, fr.cls) or (near_dest(it) if fr.cls not in ("trash", "pick") else None)
     if any(p == THEN_TO for p, _ in it.pps):  # stops on the way come before the destination
         r.dests += [np for p, np in it.pps if p in G.DEST_PREPS and np.is_receptacle() and np is not dst]
+    binned = dst is not None and dst.entry is not None and "GarbageCan" in dst.entry.types
+    if fr.cls == "trash" and dst is not None and not binned and _THROWN_AWAY.search(fr.text):
+        dst = None  # "throw away the apple in the fridge": the fridge is where it is; away is the bin
     if fr.cls == "trash" and dst is None:
         dst = parse_np("garbage can")
     if dst is None or dst.is_lamp():

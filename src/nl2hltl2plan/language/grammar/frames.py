@@ -292,7 +292,8 @@ TWO_PLACES = "two places it could go"
 PICKED_OWNER = "picks one of several places the thing is in"  # "the second drawer's spoon"
 # refusals of the grammar's that the learned model must not read as one whole task (`learned.inference`):
 # the clause is read, and what it says is what no task can keep to
-NOT_A_WHOLE_TASK = (TWO_PLACES, PICKED_OWNER)
+ONLY_WHERE_IT_IS = "only where it is now is said"  # "the mug in the sink should go."
+NOT_A_WHOLE_TASK = (TWO_PLACES, PICKED_OWNER, ONLY_WHERE_IT_IS)
 
 
 def two_places_unread(clause: str, places: str) -> str:

@@ -215,6 +215,9 @@ _NOT_LOOKED_AT = {"into", "onto", "inside", "lamp", "light", "it", "them", "too"
 _NOT_LOOKED_AT |= {"other", "after", "before", "then", "afterwards", "first", "later", "once", "when"}
 _NOT_LOOKED_AT |= {"until"}
 _NEAR = {"closest", "nearest", "close", "next"}  # "closest to the vase": a landmark, not a destination
+# a bare "in" place on an item after an order word is the verbless placing users write ("..., then the pen
+# in the drawer", as "then the apple in the fridge"), not where a thing looked at is
+_PUT_IN = re.compile(r"\b(?:in|inside)\s+(?:the|a|an|another|that|this|my|your|one)\s", re.I)
 _OTHER_TASK = {"place", "pick", "clean", "heat", "cool", "slice", "fill", "trash", "other"}
 
 
@@ -295,7 +298,7 @@ def items_under_lamp(text: str) -> str:
     at = 0  # item by item: each one written out is the examination the next one follows
     while m := _NEXT_ITEM.search(text, at):
         lamp = _lamp_before(text, m.start())
-        if not lamp or not _looked_at(m["np"]):
+        if not lamp or not _looked_at(m["np"]) or _PUT_IN.search(m["np"]):
             at = m.start() + 1
             continue
         said = m["lead"] + _under(m["np"], lamp, False)

@@ -21,6 +21,7 @@ from nl2hltl2plan.language.grammar.references import (
     said_before,
     self_state,
     stated_tasks,
+    task_word_said,
     treats_own,
     units_said_before,
 )
@@ -478,6 +479,8 @@ def _ref_edges(after: bool, ref: str, u: Unit, tasks: Tasks, b: TaskBuilder, tex
         return
     if len(u.tasks) == 1 and treats_own(ref):
         self_state(ref, [specs[t] for t in u.tasks])
+    elif task_word_said(missing):  # "after the lamp one" with two lamp tasks
+        b.unparsed.append(f"could not tell which task {ref!r} refers to ({NOT_CERTAIN}: more than one fits)")
         return
     new = new_tasks_from_ref(ref, b, text)
     _add_ref_tasks(new, after, u, tasks, edges)
@@ -556,8 +559,9 @@ def _sentence_edges(relations: list[RelationSentence], tasks: Tasks, b: TaskBuil
             continue
         ta, _ = ref_targets(rel.a, tasks.specs, tasks.nps)
         if rel.kind in ("first", "last"):  # "Do the fork first.": the fork's task before every other one
-            if not ta:
-                b.unparsed.append(f"{rel.a} {rel.kind}")
+            if not ta:  # "Do the lamp one first" with two lamp tasks: the model must not pick one either
+                why = f" ({NOT_CERTAIN}: more than one task fits)" if task_word_said([rel.a]) else ""
+                b.unparsed.append(f"{rel.a} {rel.kind}{why}")
             others = [y for y in range(len(tasks.specs)) if y not in ta]
             edges.update((x, y) if rel.kind == "first" else (y, x) for x in ta for y in others)
             continue

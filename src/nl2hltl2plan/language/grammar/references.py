@@ -109,10 +109,13 @@ def ref_targets(
                     if head in "".join(specs[i].object).lower()
                     or any(head in r.lower() for r in (specs[i].receptacle or []))
                 ]
-        if hit:
+        many = np.plural or _PLURAL_TASK_WORDS.intersection(words) or words[0] == "both"
+        if len(hit) > 1 and not many and _TASK_WORDS.intersection(words):
+            missing.append(part)  # "the lamp one" with two tasks under the lamp: which one is not said
+        elif hit:
             found.append(hit[-1])
             # "the lamp ones", "both pen jobs (are done)": each
-            if (np.plural or _PLURAL_TASK_WORDS.intersection(words) or words[0] == "both") and len(hit) > 1:
+            if many and len(hit) > 1:
                 found.extend(hit)
         else:
             missing.append(part)
@@ -130,6 +133,12 @@ _TASK_WORDS = frozenset({"one", "ones", "job", "jobs", "task", "tasks", "chore",
 _PLURAL_TASK_WORDS = frozenset({"ones", "jobs", "tasks", "chores", "parts"})
 _COUNTS = {"two": 2, "three": 3}
 _DONE_AFTER = re.compile(r"\s+(?:is|are|have\s+been|has\s+been)\s+(?:done|finished|complete|completed|over)$")
+
+
+def task_word_said(parts: list[str]) -> bool:
+    """Does an unresolved reference name a task by a task noun ("the lamp one")? Then which task it means
+    is not said (two fit it), and the order it gives must not be dropped."""
+    return any((_TASK_WORDS - _PLURAL_TASK_WORDS).intersection(w for w, _, _ in tokens(p)) for p in parts)
 
 
 def _described(words: list[str], specs: list[BaseTaskSpec], candidates: list[int]) -> list[int] | None:

@@ -512,6 +512,13 @@ _TO_GO = re.compile(
     r"\s+(?=(?:in|into|on|onto|to)\s)",
     re.I,
 )
+# the same verbs with no destination after them: a place in the subject is still where the thing is ("the
+# mug in the sink should go.", "... goes next to the stove" read the sink as the destination)
+_TO_GO_NOWHERE = re.compile(
+    _TO_GO.pattern.rsplit(r"\s+(?=", 1)[0]
+    + r"(?=\s*(?:[.;!?,]|$)|\s+(?:next\s+to|close\s+to|beside|by|near|behind|in\s+front\s+of)\s)",
+    re.I,
+)
 _START_WITH = re.compile(r"\b(?:start|begin)\s+with\s+(?=(?:the|a|an)\s)", re.I)
 _PLACE_AFTER = re.compile(r"[^.;!?]*\b(?:in|into|on|onto|to)\s", re.I)
 
@@ -520,6 +527,7 @@ def supply_put(text: str) -> str:
     """The text with the placement verb its requests leave out written in (see above); a sentence with
     a verb, or whose words before the place name no object, is left as it is."""
     text = subject_sources(wished_put(text, _WISH), _TO_GO, names_object_before)  # where the thing is
+    text = subject_sources(text, _TO_GO_NOWHERE, names_object_before, near_too=False)
     text = _WISH.sub(lambda m: "" if _verb_follows(text, m.end()) else "put ", text)
     text = _TO_GO.sub(lambda m: " " if names_object_before(text, m.start()) else m.group(0), text)
     # "start with the apple on the plate" is "first put ..."; "Start with the fork." alone names a task of

@@ -39,6 +39,7 @@ from nl2hltl2plan.language.learned.structured import (
     combine_spans,
     complete_and_accounted,
     decide,
+    order_words_kept,
     resolved,
     with_verb,
 )
@@ -406,6 +407,8 @@ def _rescued(g: OfflineParse, instruction: str, ctx: ParseContext) -> OfflinePar
     again = grammar_parse(text, ctx.scene_types, ctx.scene, strict=False, affordances=ctx.affordances)
     if len(again.tasks) <= len(g.tasks) or account(instruction, again.tasks, again.before):
         return g  # a re-reading must read more and pass the word accounting (check 1) of the original
+    if not order_words_kept(instruction, again.tasks, again.before):
+        return g  # nor drop what an order word says ("A. Put the book on the bed, both before C")
     return again.model_copy(update={"instruction": instruction})
 
 
