@@ -294,7 +294,9 @@ _PLACE_HEADING = re.compile(
     re.I,
 )
 _ITEM_SEP = re.compile(r"(\s*,\s*(?:and\s+)?(?:then\s+)?|\s+and\s+(?:then\s+)?|\s+then\s+)", re.I)
-_HAS_PLACE = re.compile(r"\b(?:on|onto|in|into|inside|goes|go)\b", re.I)
+# an item that says a place of its own, or that it stays ("..., the mug stays put": `negations.unmoved_said`
+# reads it; made "put the mug stays put in the fridge", at exit 0, h205), keeps its words
+_HAS_PLACE = re.compile(r"\b(?:on|onto|in|into|inside|goes|go|stays?|remains?)\b", re.I)
 
 
 def _each_placed(m: re.Match[str]) -> str:

@@ -490,8 +490,8 @@ def until_guard(instruction: str, tok: tuple[str, int, int], ordered: bool) -> b
 _NP = r"(?:the|a|an|both|all\s+the)\s+[a-z]+(?:\s+[a-z]+){0,2}?"
 _UNMOVED = r"(?:put|there|(?:right\s+)?where\s+(?:it\s+is|they\s+are)|as\s+(?:it\s+is|they\s+are|is)|alone)"
 _KEPT_AS_IT_IS = re.compile(
-    rf"(?:^|(?<=[.;!?])\s+)(?:(?P<x>{_NP})\s+(?:(?:can|should|must|will)\s+)?(?:stays?|remains?)"
-    rf"(?:\s+{_UNMOVED})?|(?:just\s+)?leave\s+(?P<y>{_NP})\s+{_UNMOVED})(?=\s*(?:[.;!?]|$))",
+    rf"(?:^|(?<=[.;!?])\s+|(?<=,)\s+)(?:(?P<x>{_NP})\s+(?:(?:can|should|must|will)\s+)?(?:stays?|remains?)"
+    rf"(?:\s+{_UNMOVED})?|(?:just\s+)?leave\s+(?P<y>{_NP})\s+{_UNMOVED})(?=\s*(?:[.;!?,]|$))",
     re.I,
 )
 
