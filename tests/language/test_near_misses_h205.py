@@ -90,3 +90,12 @@ def test_an_item_that_stays_under_a_place_heading_is_not_moved():
     """ "Everything below goes in the fridge: the egg, the mug stays put" put the mug in the fridge."""
     got = read("Everything below goes in the fridge: the egg, the mug stays put")
     assert got == ([EGG], [], [], ["don't move the mug: forbids pickup(Mug)"])
+
+
+@pytest.mark.data
+def test_a_lamp_said_off_is_named():
+    """ "light off" after the lamp was dropped: the book was examined with the lamp on, at exit 0."""
+    from trust_sets import world_of
+
+    with pytest.raises(HTTError, match="'light off' \\(action\\): no base task switches something off"):
+        full_reading("the book under the desk lamp, light off", world_of("FloorPlan301"))

@@ -486,7 +486,8 @@ def until_guard(instruction: str, tok: tuple[str, int, int], ordered: bool) -> b
 
 
 # a thing said to stay as it is ("P.S. the mug stays where it is", "the mug can stay put", "the mug stays.",
-# "leave the mug alone"): it is not to be moved; read before, "stays put" put the mug where the last thing went, at exit 0
+# "leave the mug alone"): it is not to be moved; read before, "stays put" put the mug where the last thing
+# went, at exit 0 (h205)
 _NP = r"(?:the|a|an|both|all\s+the)\s+[a-z]+(?:\s+[a-z]+){0,2}?"
 _UNMOVED = r"(?:put|there|(?:right\s+)?where\s+(?:it\s+is|they\s+are)|as\s+(?:it\s+is|they\s+are|is)|alone)"
 _KEPT_AS_IT_IS = re.compile(

@@ -133,7 +133,8 @@ def _distributed(m: re.Match[str]) -> str:
     if len(said) < 2:
         return m[0]
     if any(thens):  # "A, then B": each step after its "then", the others with a comma (no order)
-        joined = said[0] + "".join((", then " if t else ", ") + x for t, x in zip(thens, said[1:], strict=True))
+        steps = zip(thens, said[1:], strict=True)
+        joined = said[0] + "".join((", then " if t else ", ") + x for t, x in steps)
         return m["lead"] + (joined if m["lead"].strip() else _capital(joined))
     lead = m["lead"]
     return lead + (", ".join(said[:-1]) + " and " + said[-1] if lead.strip() else _capital(", ".join(said)))
