@@ -60,7 +60,7 @@ from nl2hltl2plan.language.landmarks import (
     posture_at,
 )
 from nl2hltl2plan.language.memo import reading_memo
-from nl2hltl2plan.language.mention_use import looked_at, unused_mentions
+from nl2hltl2plan.language.mention_use import lamps_off, looked_at, unused_mentions
 from nl2hltl2plan.language.negations import (
     NO_CONSTRAINT,
     about_order,
@@ -142,7 +142,7 @@ def account(
     out += vague_words(instruction, mentions) + started(instruction, parse)
     out += corrections(instruction, mentions, parse) + repeated_tasks(instruction, mentions, parse)
     out += one_of_several(instruction, mentions, parse, instances)
-    out += under_a_place(instruction, mentions, parse)
+    out += under_a_place(instruction, mentions, parse) + lamps_off(toks, parse)
     out += first_and_last(instruction, mentions, parse) + fragments(instruction, mentions)
     out += repeats_for_another(instruction, mentions, parse) + it_of_two(instruction, mentions, parse.tasks)
     out += _words(instruction, toks, in_mention, mentions, parse, instances, scene)

@@ -10,6 +10,7 @@ from collections.abc import Mapping, Sequence
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.content_words import DETERMINERS, LOCATIVE, Unread, categories
 from nl2hltl2plan.language.grammar.counted_refs import counted_references
+from nl2hltl2plan.language.grammar.word_tables import STATE_WORDS
 from nl2hltl2plan.language.grounding import Mention, camel_words, find_mentions, tokens
 from nl2hltl2plan.language.parse_usage import ParseUsage
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
@@ -43,7 +44,8 @@ def _next_mention(mentions: list[Mention], words: list[str], i: int, within: int
     for m in mentions:
         if i < m.start <= i + within:
             between = words[i + 1 : m.start]
-            counted = all(w in DETERMINERS or not categories(w) for w in between)
+            # a state word may stand between ("three cold eggs": read before as 3 eggs of 2, at exit 0, h205)
+            counted = all(w in DETERMINERS or w in STATE_WORDS or not categories(w) for w in between)
             return m if counted and not set(between) & _PLACE_PREPS else None
     return None
 

@@ -122,6 +122,15 @@ def without_reasons(text: str) -> str:
     return _REASON.sub(lambda m: m[0] if _keeps_reason(m["why"]) else "", text)
 
 
+def _afterthought(m: re.Match[str]) -> str:
+    """ "Oh, and put C" -> "At any time, put C"; "Also" where an order word follows later in the sentence
+    ("Oh, and put C first", "... before that"): "At any time" would contradict it and hide it from the check
+    of order words (h205); the sentence is then read, or refused by name, as if said with no "oh, and"."""
+    rest = re.split(r"[.;!?]", m.string[m.end() :], maxsplit=1)[0]
+    ordered = any("order" in categories(w) for w in re.findall(r"[a-z]+", rest.lower()))
+    return m[1] + ("" if ordered else "At any time, ")
+
+
 def without_courtesy(text: str) -> str:
     """`text` without its courtesy frames (and the commas around them) and reminders, an afterthought after
     "oh" a sentence of its own; the text as it was when nothing else is left.
@@ -133,7 +142,7 @@ def without_courtesy(text: str) -> str:
     >>> without_courtesy("put the pear in the fridge and yeah that's it. the cup in the sink or whatever lol")
     'put the pear in the fridge. the cup in the sink'
     """
-    out = _OPENING_OH_VERB.sub(r"\1At any time, ", _OPENING_OH.sub(r"\1Also ", _TRAILING.sub("", text)))
+    out = _OPENING_OH_VERB.sub(_afterthought, _OPENING_OH.sub(r"\1Also ", _TRAILING.sub("", text)))
     out = _AFTERTHOUGHT.sub(". Also ", out)
     out = _FRAME.sub(" ", _REMINDER.sub(_reminded, out))
     out = re.sub(r"\s+([,.;:!?])", r"\1", " ".join(out.split()))
@@ -285,7 +294,9 @@ _PLACE_HEADING = re.compile(
     re.I,
 )
 _ITEM_SEP = re.compile(r"(\s*,\s*(?:and\s+)?(?:then\s+)?|\s+and\s+(?:then\s+)?|\s+then\s+)", re.I)
-_HAS_PLACE = re.compile(r"\b(?:on|onto|in|into|inside|goes|go)\b", re.I)
+# an item that says a place of its own, or that it stays ("..., the mug stays put": `negations.unmoved_said`
+# reads it; made "put the mug stays put in the fridge", at exit 0, h205), keeps its words
+_HAS_PLACE = re.compile(r"\b(?:on|onto|in|into|inside|goes|go|stays?|remains?)\b", re.I)
 
 
 def _each_placed(m: re.Match[str]) -> str:

@@ -84,3 +84,16 @@ _LOOK = frozenset({"verb_examine_in_light"})
 
 def _within(span: Span | None, at: int) -> bool:
     return span is not None and span[0] <= at < span[1]
+
+
+def lamps_off(toks: Sequence[tuple[str, int, int]], parse: ParseUsage) -> list[Unread]:
+    """A lamp said to be off right after its name ("the book under the desk lamp, light off"), where no
+    task switches one off: no base task does (read before as the examination, lamp on, at exit 0, h205)."""
+    if "off" in parse.states:
+        return []
+    pairs = zip(toks, toks[1:], strict=False)
+    return [Unread(f"{w} off", "action", _NO_OFF) for (w, _, _), (o, _, _) in pairs if (w, o) in _OFF]
+
+
+_OFF = frozenset((w, "off") for w in ("lamp", "lamps", "light", "lights"))
+_NO_OFF = "no base task switches something off"

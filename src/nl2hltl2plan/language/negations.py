@@ -483,3 +483,34 @@ def until_guard(instruction: str, tok: tuple[str, int, int], ordered: bool) -> b
     rest = re.split(r"[.;!?]", instruction[tok[2] :], maxsplit=1)[0].lower()
     said = re.search(r"\b(until|unless|before)\b", rest) is not None or until_first_at(instruction, tok[1])
     return ordered and said
+
+
+# a thing said to stay as it is ("P.S. the mug stays where it is", "the mug can stay put", "the mug stays.",
+# "leave the mug alone"): it is not to be moved; read before, "stays put" put the mug where the last thing
+# went, at exit 0 (h205)
+_NP = r"(?:the|a|an|both|all\s+the)\s+[a-z]+(?:\s+[a-z]+){0,2}?"
+_UNMOVED = r"(?:put|there|(?:right\s+)?where\s+(?:it\s+is|they\s+are)|as\s+(?:it\s+is|they\s+are|is)|alone)"
+_KEPT_AS_IT_IS = re.compile(
+    rf"(?:^|(?<=[.;!?])\s+|(?<=,)\s+)(?:(?P<x>{_NP})\s+(?:(?:can|should|must|will)\s+)?(?:stays?|remains?)"
+    rf"(?:\s+{_UNMOVED})?|(?:just\s+)?leave\s+(?P<y>{_NP})\s+{_UNMOVED})(?=\s*(?:[.;!?,]|$))",
+    re.I,
+)
+
+
+def unmoved_said(text: str) -> str:
+    """`text` with a thing said to stay where it is as "don't move X", which `read_negations` reads as a
+    ban on picking it up, where the lexicon names the thing (the household reader's `as_read`).
+
+    >>> unmoved_said("Put the egg in the fridge. P.S. the mug stays where it is.")
+    "Put the egg in the fridge. P.S. don't move the mug."
+    """
+
+    def unmoved(m: re.Match[str]) -> str:
+        thing = m["x"] or m["y"]
+        named = find_mentions(thing.lower())
+        if len(named) != 1 or thing.lower()[named[0].char_end :].strip():
+            return m[0]
+        lead = m[0][: len(m[0]) - len(m[0].lstrip())]
+        return f"{lead}don't move {thing[0].lower()}{thing[1:]}"
+
+    return _KEPT_AS_IT_IS.sub(unmoved, text)

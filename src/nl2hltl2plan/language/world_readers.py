@@ -40,6 +40,7 @@ from nl2hltl2plan.language.grounding import find_mentions
 from nl2hltl2plan.language.headings import answered, note_counts
 from nl2hltl2plan.language.household_forms import household_forms
 from nl2hltl2plan.language.household_words import contents_hint, descriptive_name_notes, descriptive_names
+from nl2hltl2plan.language.negations import unmoved_said
 from nl2hltl2plan.language.numbered_steps import step_order
 from nl2hltl2plan.language.respectively import distributed
 from nl2hltl2plan.language.result import LanguageResult
@@ -130,7 +131,8 @@ class _HouseholdReader(SharedGrammar):
     def as_read(self, lines: list[str]) -> str:  # greetings and thanks as every reader drops them; the
         # reasons a household request gives ("so it stays cold") ask for nothing (a tabletop "so that" states)
         text = without_greetings(answered(" ".join(lines)), lambda name: bool(find_mentions(name.lower())))
-        return without_framing(without_reasons(text))  # "Mom says put ...", "P.S.", "I was hoping you could"
+        # "Mom says put ...", "P.S.", "I was hoping you could"; "the mug stays put" is "don't move the mug"
+        return unmoved_said(without_framing(without_reasons(text)))
 
     def prepared(self, instruction: str) -> str:
         named = descriptive_names(household_forms(instruction), set(self.world.object_types()))

@@ -38,7 +38,13 @@ _WORD = r"(?!(?:and|or|then|in|into|on|onto|inside|with)\b)[a-z]+"
 _ITEM_NP = rf"(?:a|an|the|another|one|this|that|my|your)\s+{_WORD}(?:\s+{_WORD}){{0,3}}?"
 _THESE = r"(?:these|them|all\s+of\s+these|each\s+of\s+these|all\s+these|the\s+following)"
 _AWAY = r"(?:away|back|where\s+I\s+say|where\s+they\s+go|where\s+I\s+tell\s+you)"
-_ITEM_GAP = re.compile(r"\s*,\s*(?:and\s+)?|\s+and\s+(?=(?:a|an|the|another|one)\s)", re.I)
+# a gap between items; one that says "then" keeps its order ("the egg in the fridge, then the apple in the
+# bin": read before as a chilled egg and an apple only put, at exit 0, h205)
+_ITEM_GAP = re.compile(
+    r"\s*,\s*(?:and\s+)?(?P<then>then\s+)?|\s+and\s+(?P<and_then>then\s+)?(?=(?:a|an|the|another|one)\s)|"
+    r"\s+(?P<bare_then>then)\s+(?=(?:a|an|the|another|one)\s)",
+    re.I,
+)
 _ITEM_PLACE = re.compile(rf"^(?P<np>{_NP})\s+{_PREP}\s+(?P<place>(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)$", re.I)
 _SLICE = re.compile(r"(?:\s+slices?)?\s*", re.I)
 # "wash the pan and put it on the counter once both are done": the reference said first, where the grammar
@@ -113,8 +119,10 @@ def _distributed(m: re.Match[str]) -> str:
     """The heading's treatment and placement written for each item of its list; the text as it was where
     an item is not a name with its place (or a bare name, where the heading said the place)."""
     verb, shared = m["verb"].lower(), m["place"]
+    items = _TOO.sub("", m["items"].strip())
+    thens = [any(g.groups()) for g in _ITEM_GAP.finditer(items)]
     said = []
-    for part in _ITEM_GAP.split(_TOO.sub("", m["items"].strip())):
+    for part in _ITEM_GAP.sub("\0", items).split("\0"):
         found = _ITEM_PLACE.match(part.strip())
         if found and not shared and _names_things(found["np"]) and _names_things(found["place"]):
             said.append(f"{verb} {found['np']} and put it {found['prep'].lower()} {found['place']}")
@@ -124,6 +132,10 @@ def _distributed(m: re.Match[str]) -> str:
             return m[0]
     if len(said) < 2:
         return m[0]
+    if any(thens):  # "A, then B": each step after its "then", the others with a comma (no order)
+        steps = zip(thens, said[1:], strict=True)
+        joined = said[0] + "".join((", then " if t else ", ") + x for t, x in steps)
+        return m["lead"] + (joined if m["lead"].strip() else _capital(joined))
     lead = m["lead"]
     return lead + (", ".join(said[:-1]) + " and " + said[-1] if lead.strip() else _capital(", ".join(said)))
 
