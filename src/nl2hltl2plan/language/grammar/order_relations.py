@@ -479,7 +479,8 @@ def _ref_edges(after: bool, ref: str, u: Unit, tasks: Tasks, b: TaskBuilder, tex
         return
     if len(u.tasks) == 1 and treats_own(ref):
         self_state(ref, [specs[t] for t in u.tasks])
-    elif task_word_said(missing):  # "after the lamp one" with two lamp tasks
+        return
+    if task_word_said(missing):  # "after the lamp one" with two lamp tasks
         b.unparsed.append(f"could not tell which task {ref!r} refers to ({NOT_CERTAIN}: more than one fits)")
         return
     new = new_tasks_from_ref(ref, b, text)
