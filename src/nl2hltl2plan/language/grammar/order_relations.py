@@ -58,7 +58,9 @@ def relate(
         _marker_edges(k, tasks, (free, loose), b, text, edges)
         _step_edges(k, tasks, steps, free, edges)
     _first_edges(tasks.units, steps, free, edges)
-    _leading_last(tasks.units, free, edges)
+    _leading_last(tasks.units, steps, free, edges)
+    if len(_OPENING_FIRST.findall(text)) > 1:  # "First A, first B" / "First A. First B.": which one is?
+        b.unparsed.append(f"'first' said of {len(_OPENING_FIRST.findall(text))} steps ({ORDER_LEFT_OPEN})")
     _sentence_edges(relations, tasks, b, edges)
     _first_after_others(tasks, free, edges, b)
     return _order(edges, tasks)
@@ -85,6 +87,8 @@ def _first_after_others(tasks: Tasks, free: set[int], edges: Edges, b: TaskBuild
         b.unparsed.append(f"{tasks.specs[u.tasks[0]].text!r} ({why})")
 
 
+# "first" opening a clause (not "the first drawer", "first of all" once): said of two steps, neither is first
+_OPENING_FIRST = re.compile(r"(?:^|[,.;:!?]\s*|\b(?:and|then)\s+)first\b(?!\s+of\s+all\b)", re.I)
 # an order adverb that ends a task's own words: no marker read it
 _ORDER_WORD_LEFT = re.compile(r"\b(first|last|lastly|finally|next|afterwards?|beforehand)\W*$", re.I)
 
@@ -534,16 +538,19 @@ def _first_edges(units: list[Unit], steps: list[int], free: set[int], edges: Edg
         edges.update((a, b2) for a in u.tasks for b2 in later)
 
 
-def _leading_last(units: list[Unit], free: set[int], edges: Edges) -> None:
+def _leading_last(units: list[Unit], steps: list[int], free: set[int], edges: Edges) -> None:
     """ "Last, A; first B" / "Finally A. Then B": a "last" on the first task said has no task before it to
     come after (`_marker_edges` reads "finally" of the tasks said before); the writer said the order in
     reverse, and A comes after every task of a later sentence not allowed at any time ("finally A and B"
-    says nothing of B)."""
+    says nothing of B). "Last A, then B" in one sentence: B after A too, a cycle refused by name."""
     said = [k for k, u in enumerate(units) if u.tasks]
     if not said or not any(kind == G.FINALLY for kind, _ in units[said[0]].markers):
         return
     head, at = units[said[0]].tasks, units[said[0]].sentence
-    later = [t for u in units[said[0] + 1 :] if u.sentence != at for t in u.tasks if t not in free]
+    later = [
+        t for j in range(said[0] + 1, len(units)) if units[j].sentence != at or steps[j] != steps[said[0]]
+        for t in units[j].tasks if t not in free
+    ]
     edges.update((t, a) for t in later for a in head)
 
 
