@@ -12,6 +12,7 @@ from nl2hltl2plan.language.content_words import phrase_list_pattern
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.draft_tasks import TaskBuilder, Tasks, Unit
 from nl2hltl2plan.language.grammar.frames import IN_SENTENCE, OF_ALL
+from nl2hltl2plan.language.grammar.order_conflicts import first_said_unread
 from nl2hltl2plan.language.grammar.phrases import parse_np
 from nl2hltl2plan.language.grammar.references import (
     NOT_CERTAIN,
@@ -59,8 +60,8 @@ def relate(
         _step_edges(k, tasks, steps, free, edges)
     _first_edges(tasks.units, steps, free, edges)
     _leading_last(tasks.units, steps, free, edges)
-    if len(_OPENING_FIRST.findall(text)) > 1:  # "First A, first B" / "First A. First B.": which one is?
-        b.unparsed.append(f"'first' said of {len(_OPENING_FIRST.findall(text))} steps ({ORDER_LEFT_OPEN})")
+    if why := first_said_unread(tasks.units, text):  # "First A, first B": which one is first?
+        b.unparsed.append(f"{why} ({ORDER_LEFT_OPEN})")
     _sentence_edges(relations, tasks, b, edges)
     _first_after_others(tasks, free, edges, b)
     return _order(edges, tasks)
@@ -87,8 +88,6 @@ def _first_after_others(tasks: Tasks, free: set[int], edges: Edges, b: TaskBuild
         b.unparsed.append(f"{tasks.specs[u.tasks[0]].text!r} ({why})")
 
 
-# "first" opening a clause (not "the first drawer", "first of all" once): said of two steps, neither is first
-_OPENING_FIRST = re.compile(r"(?:^|[,.;:!?]\s*|\b(?:and|then)\s+)first\b(?!\s+of\s+all\b)", re.I)
 # an order adverb that ends a task's own words: no marker read it
 _ORDER_WORD_LEFT = re.compile(r"\b(first|last|lastly|finally|next|afterwards?|beforehand)\W*$", re.I)
 
