@@ -29,6 +29,7 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
+from nl2hltl2plan.language.content_words import categories
 from nl2hltl2plan.language.grounding import LAMPS, Mention, find_mentions, plural_name, tokens
 
 _N = r"(?:two|three|four|five|both|2|3|4|5)"
@@ -92,13 +93,17 @@ def counted_references(text: str) -> str:
 def _count_of_those(m: re.Match[str]) -> str:
     """ "two of the three cups" -> "two of the cups"; "both of the three cups" -> "both three cups"; a count
     more than those there ("three of the two mugs") stays as said, for check 1 to name."""
-    k, n = _WORD_VALUE.get(m["k"].lower(), 2), _WORD_VALUE.get(m["n"].strip().lower(), 0)
+    k, n = _value(m["k"]), _value(m["n"])
     if m["k"].lower() == "both" and n != 2:
         return f"{m['k']} {m['n']}"
     return m[0] if k > n else m[0][: m.start("n") - m.start()]
 
 
-_WORD_VALUE = {w: v for v, ws in enumerate(("", "one", "two 2 both", "three 3", "four 4", "five 5")) for w in ws.split()}
+def _value(word: str) -> int:
+    """The number a count word says ("both" is two), 0 for none (as `counts.count_value`)."""
+    w = word.strip().lower()
+    cats = [c for c in categories(w) if c.startswith("count_")]
+    return 2 if w == "both" else int(w) if w.isdigit() else int(cats[0].removeprefix("count_")) if cats else 0
 
 
 def another_said(text: str) -> str:
