@@ -71,7 +71,7 @@ _MORE_WITHOUT_VERB = re.compile(r"(?:[,;]|\b(?:then|and|also|plus))\s*$", re.I)
 # "one of the two tomatoes" is one tomato, "two of the three cups" two (the count is of those there, not of
 # the task's: the task took three cups at exit 0); "both of the three cups" keeps "both" by the count it
 # contradicts ("both three cups"), which check 1 names
-_ONE_OF_N = re.compile(rf"\b(?P<k>one|two|three|four|both)\s+of\s+the\s+(?P<n>{_N}\s+)", re.I)
+_ONE_OF_N = re.compile(rf"\b(?P<k>one|two|three|four|both|[1-5])\s+of\s+the\s+(?P<n>{_N}\s+)", re.I)
 _JUST_USED = re.compile(r"\bthe\s+one\s+you(?:'ve|\s+have)?\s+(?:just\s+)?used\b", re.I)
 # a count after a bare plural: ", two of them", " - two -", "(both)", ", also two", ", two of each"
 _COUNT_AFTER = re.compile(
