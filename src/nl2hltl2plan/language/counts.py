@@ -53,6 +53,16 @@ def _next_mention(mentions: list[Mention], words: list[str], i: int, within: int
 _PLACE_PREPS = (LOCATIVE - {"of"}) | {"to", "into", "onto"}
 
 
+# "all (of) the mugs but one / except the first / save two" (read as every mug, at exit 0)
+_ALL_BUT = re.compile(r"\s+(?:but|except|save|apart\s+from)\s+(?:for\s+)?(?:one|two|three|the\s+\w+)\b", re.I)
+
+
+def _both_of_more(words: list[str], i: int) -> str | None:
+    """The count other than two that "both" is said of ("both three cups", "both of the four"), if any."""
+    said = [w for w in words[i + 1 : i + 4] if w not in ("of", "the")][:1]
+    return said[0] if said and count_value(categories(said[0]), said[0]) not in (None, 2) else None
+
+
 def _of_all(words: list[str], i: int) -> bool:
     """ "..., and last of all a tomato in the sink", "first of all": the idiom's "all" counts nothing (it
     read as every tomato of the scene, at exit 0)."""
@@ -85,6 +95,8 @@ def count_unread(
     w, start, _ = toks[i]
     words = [t[0] for t in toks]
     m = _next_mention(mentions, words, i)
+    if m is None and w == "both" and (more := _both_of_more(words, i)):  # "both (of) the three cups"
+        return Unread(f"both {more}", "count", "'both' of more than two: say how many")
     if m is None or re.search(r"[,.;:!?]", instruction[start : m.char_start]):
         return None
     if _both_before_a_list(w, instruction, start, m) or (i > 0 and toks[i - 1][0] in ("those", "these")):
@@ -115,6 +127,8 @@ def count_unread(
         n = held
         if n is None:
             return None
+        if but := _ALL_BUT.match(instruction, m.char_end):  # "all of the mugs but one": not every mug
+            return Unread(phrase + but[0], "count", "'all' but some: say how many")
         if "other" in (t[0] for t in toks[i + 1 : m.start]):  # "all the other mugs": what the rest leave
             took = " + ".join(map(str, counts))
             if sum(counts) != n:

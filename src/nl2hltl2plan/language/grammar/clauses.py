@@ -53,7 +53,11 @@ def split_clauses(sentence: str) -> list[tuple[str, int, int, str]]:
             while j >= 0 and (words[j][0] in G.CLAUSE_JOINERS or words[j][0] == ",") and not _ends_an_order(
                 words, j
             ):
-                if words[j][0] in G.SEQ_JOINERS and not (joiner and G.SEQ_JOINERS[words[j][0]] == "first"):
+                # "A finally, and B": the word before the comma and "and" closes A (B was made last, h207)
+                closes = joiner == "and" and words[j + 1][0] == ","
+                if words[j][0] in G.SEQ_JOINERS and not closes and not (
+                    joiner and G.SEQ_JOINERS[words[j][0]] == "first"
+                ):
                     joiner = G.SEQ_JOINERS[words[j][0]]
                 elif words[j][0] in G.SEQ_JOINERS and ends_before < 0:
                     ends_before = j  # it stays with that clause, whose order reads it ("first" at its end)

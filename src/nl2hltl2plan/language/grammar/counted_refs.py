@@ -29,6 +29,7 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
+from nl2hltl2plan.language.content_words import categories
 from nl2hltl2plan.language.grounding import LAMPS, Mention, find_mentions, plural_name, tokens
 
 _N = r"(?:two|three|four|five|both|2|3|4|5)"
@@ -67,8 +68,10 @@ _ANOTHER_SAID = re.compile(
 )
 # "one more" with no verb of its own ("..., then one more", "and one more on the sofa"): not another X here
 _MORE_WITHOUT_VERB = re.compile(r"(?:[,;]|\b(?:then|and|also|plus))\s*$", re.I)
-# "one of the two tomatoes" is one tomato (the count is of those there, not of the task's)
-_ONE_OF_N = re.compile(rf"\bone\s+of\s+the\s+(?P<n>{_N}\s+)", re.I)
+# "one of the two tomatoes" is one tomato, "two of the three cups" two (the count is of those there, not of
+# the task's: the task took three cups at exit 0); "both of the three cups" keeps "both" by the count it
+# contradicts ("both three cups"), which check 1 names
+_ONE_OF_N = re.compile(rf"\b(?P<k>one|two|three|four|both|[1-5])\s+of\s+the\s+(?P<n>{_N}\s+)", re.I)
 _JUST_USED = re.compile(r"\bthe\s+one\s+you(?:'ve|\s+have)?\s+(?:just\s+)?used\b", re.I)
 # a count after a bare plural: ", two of them", " - two -", "(both)", ", also two", ", two of each"
 _COUNT_AFTER = re.compile(
@@ -81,10 +84,26 @@ _COUNT_AFTER = re.compile(
 @lru_cache(maxsize=1024)  # `everyday`, `counts` and `referents` each ask it of every reading's text
 def counted_references(text: str) -> str:
     """`text` with the counted and ordinal references above written out (a pure function of the text)."""
-    text = _ONE_OF_N.sub(lambda m: m[0][: m.start("n") - m.start()], text)
+    text = _ONE_OF_N.sub(_count_of_those, text)
     for rule in (_counts_after, _lamp_used, _counted_others, _rest, _other_one, _another):
         text = rule(text)
     return text
+
+
+def _count_of_those(m: re.Match[str]) -> str:
+    """ "two of the three cups" -> "two of the cups"; "both of the three cups" -> "both three cups"; a count
+    more than those there ("three of the two mugs") stays as said, for check 1 to name."""
+    k, n = _value(m["k"]), _value(m["n"])
+    if m["k"].lower() == "both" and n != 2:
+        return f"{m['k']} {m['n']}"
+    return m[0] if k > n else m[0][: m.start("n") - m.start()]
+
+
+def _value(word: str) -> int:
+    """The number a count word says ("both" is two), 0 for none (as `counts.count_value`)."""
+    w = word.strip().lower()
+    cats = [c for c in categories(w) if c.startswith("count_")]
+    return 2 if w == "both" else int(w) if w.isdigit() else int(cats[0].removeprefix("count_")) if cats else 0
 
 
 def another_said(text: str) -> str:

@@ -12,6 +12,7 @@ from nl2hltl2plan.language.content_words import phrase_list_pattern
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.draft_tasks import TaskBuilder, Tasks, Unit
 from nl2hltl2plan.language.grammar.frames import IN_SENTENCE, OF_ALL
+from nl2hltl2plan.language.grammar.order_conflicts import first_said_unread
 from nl2hltl2plan.language.grammar.phrases import parse_np
 from nl2hltl2plan.language.grammar.references import (
     NOT_CERTAIN,
@@ -58,7 +59,9 @@ def relate(
         _marker_edges(k, tasks, (free, loose), b, text, edges)
         _step_edges(k, tasks, steps, free, edges)
     _first_edges(tasks.units, steps, free, edges)
-    _leading_last(tasks.units, free, edges)
+    _leading_last(tasks.units, steps, free, edges)
+    if why := first_said_unread(tasks.units, text):  # "First A, first B": which one is first?
+        b.unparsed.append(f"{why} ({ORDER_LEFT_OPEN})")
     _sentence_edges(relations, tasks, b, edges)
     _first_after_others(tasks, free, edges, b)
     return _order(edges, tasks)
@@ -534,16 +537,19 @@ def _first_edges(units: list[Unit], steps: list[int], free: set[int], edges: Edg
         edges.update((a, b2) for a in u.tasks for b2 in later)
 
 
-def _leading_last(units: list[Unit], free: set[int], edges: Edges) -> None:
+def _leading_last(units: list[Unit], steps: list[int], free: set[int], edges: Edges) -> None:
     """ "Last, A; first B" / "Finally A. Then B": a "last" on the first task said has no task before it to
     come after (`_marker_edges` reads "finally" of the tasks said before); the writer said the order in
     reverse, and A comes after every task of a later sentence not allowed at any time ("finally A and B"
-    says nothing of B)."""
+    says nothing of B). "Last A, then B" in one sentence: B after A too, a cycle refused by name."""
     said = [k for k, u in enumerate(units) if u.tasks]
     if not said or not any(kind == G.FINALLY for kind, _ in units[said[0]].markers):
         return
     head, at = units[said[0]].tasks, units[said[0]].sentence
-    later = [t for u in units[said[0] + 1 :] if u.sentence != at for t in u.tasks if t not in free]
+    later = [
+        t for j in range(said[0] + 1, len(units)) if units[j].sentence != at or steps[j] != steps[said[0]]
+        for t in units[j].tasks if t not in free
+    ]
     edges.update((t, a) for t in later for a in head)
 
 
