@@ -11,6 +11,7 @@ from nl2hltl2plan.language.grammar.draft_tasks import Unit
 
 # "first" opening a clause ("first of all" is one "first"; "the first drawer" opens none)
 _OPENING_FIRST = re.compile(r"(?:^|[,.;:!?]\s*|\b(?:and|then|but)\s+)first\b(?!\s+of\s+all\b)", re.I)
+_BUT_FIRST = re.compile(r"\bbut\s+first\b(?!\s+of\s+all\b)", re.I)
 
 
 def first_said_unread(units: list[Unit], text: str) -> str | None:
@@ -19,6 +20,8 @@ def first_said_unread(units: list[Unit], text: str) -> str | None:
     said = len(_OPENING_FIRST.findall(text))
     if said > 1:
         return f"'first' said of {said} steps"
-    if said and not any(kind == G.FIRST for u in units for kind, _ in u.markers):  # "then B, but first C"
+    # "then B, but first C": a "but first" no clause took as its marker (an opening "first" no clause took is
+    # a list's, "X before Y: first A and B on Y, then ...", which a world's reader may read)
+    if _BUT_FIRST.search(text) and not any(kind == G.FIRST for u in units for kind, _ in u.markers):
         return "'first' (no step of the sentence is read as first)"
     return None
