@@ -185,6 +185,26 @@ _NOTE_FOR = re.compile(
 _SIGN_OFF = re.compile(rf"(?<=[.!?])\s*(?i:{courtesy_pattern('sign_off')})\s*,\s*(?P<name>[A-Z][a-z]+)\W*$")
 
 
+# a closing thanks or sign-off before a lone name that is also a thing ("Cheers, Mug", "Thanks! - Bread",
+# "Thank you mug!"): `without_greetings` keeps it, and the grammar would read the thing as one more item
+_THING_SIGN_OFF = re.compile(
+    rf"(?<=[.!?])\s*(?i:{courtesy_pattern('sign_off')}|{courtesy_pattern('closing')})\s*[!.,:]*\s*(?:[-\u2013\u2014]+\s*)?"
+    r"(?i:the\s+)?(?P<name>[A-Za-z]+)\W*$"
+)
+
+
+def signed_thing(text: str, names_a_thing: Callable[[str], bool]) -> str | None:
+    """The closing words of `text` when they are a thanks or a sign-off before a lone name that is also a
+    thing: a name or one more item, no reading can tell, so the reader names them unread.
+
+    >>> signed_thing("Put the egg in the fridge. Cheers, Mug", lambda name: name.lower() == "mug")
+    'Cheers, Mug'
+    >>> signed_thing("Put the egg in the fridge. Cheers, Ana", lambda name: name.lower() == "mug")
+    """
+    found = _THING_SIGN_OFF.search(text)
+    return found[0].strip() if found and names_a_thing(found["name"]) else None
+
+
 def without_greetings(text: str, names_a_thing: Callable[[str], bool]) -> str:
     """`text` without a greeting set apart at any sentence's start ("Hi there,", "Good morning!"), before
     any clause ("Hey, when you're done, put ..." is "when you're done, put ..."), an agent's reply set apart

@@ -514,3 +514,26 @@ def unmoved_said(text: str) -> str:
         return f"{lead}don't move {thing[0].lower()}{thing[1:]}"
 
     return _KEPT_AS_IT_IS.sub(unmoved, text)
+
+
+# "put all but the mug in the sink", "every item but the apple": an exclusion from a whole that no rule reads
+# (the grammar moved the mug itself); "Rather than the mug, the apple." on its own, with no verb: a swap of
+# which request is unclear (the grammar read both as more items). h208
+_ALL_BUT = re.compile(r"\b(?:everything|anything|all|every\s+[a-z]+)(?:\s+(?:the|of)\s+[a-z]+)?\s+but\b", re.I)
+_BARE_SWAP = re.compile(
+    r"(?:^|(?<=[.;!?]))\s*(?:rather\s+than|instead\s+of)\s+(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?\s*,\s*"
+    r"(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?\s*(?=[.;!?]|$)",
+    re.I,
+)
+
+
+def exclusions_unread(text: str) -> list[Unread]:
+    """An exclusion from a whole ("all but the mug") and a swap said with no verb ("Rather than the mug, the
+    apple."), each named unread (a negation no constraint carries) for the household reader's `unused`.
+
+    >>> [u.words for u in exclusions_unread("Put all but the mug in the sink. Rather than the egg, the apple.")]
+    ['all but', 'Rather than the egg, the apple']
+    """
+    found = [*_ALL_BUT.finditer(text), *_BARE_SWAP.finditer(text)]
+    why = "an exclusion or a swap that no rule reads: name each thing to move, and what not to do"
+    return [Unread(m[0].strip(), "negation", why) for m in found]

@@ -35,12 +35,12 @@ from collections.abc import Callable
 from typing import Protocol
 
 from nl2hltl2plan.language.content_words import Unread
-from nl2hltl2plan.language.courtesy import without_framing, without_greetings, without_reasons
+from nl2hltl2plan.language.courtesy import signed_thing, without_framing, without_greetings, without_reasons
 from nl2hltl2plan.language.grounding import find_mentions
 from nl2hltl2plan.language.headings import answered, note_counts
 from nl2hltl2plan.language.household_forms import household_forms
 from nl2hltl2plan.language.household_words import contents_hint, descriptive_name_notes, descriptive_names
-from nl2hltl2plan.language.negations import unmoved_said
+from nl2hltl2plan.language.negations import exclusions_unread, unmoved_said
 from nl2hltl2plan.language.numbered_steps import step_order
 from nl2hltl2plan.language.respectively import distributed
 from nl2hltl2plan.language.result import LanguageResult
@@ -148,7 +148,11 @@ class _HouseholdReader(SharedGrammar):
         n, forbids = len(res.tasks), len(res.constraint_specs)
         why = f"the heading counts them, and the reading makes {n} base task{'s' * (n != 1)}"
         counted = note_counts(res.instruction)
-        return [Unread(h.phrase, "count", why) for h in counted if h.number not in {n, n + forbids}]
+        unread = [Unread(h.phrase, "count", why) for h in counted if h.number not in {n, n + forbids}]
+        # a sign-off's name that is also a thing ("Cheers, Mug"), "all but the mug": no reading can tell (h208)
+        signed = signed_thing(res.instruction, lambda name: bool(find_mentions(name.lower())))
+        why_signed = "a sign-off's name that is also a thing: say the thing in a request of its own"
+        return [*unread, *([Unread(signed, "object", why_signed)] if signed else []), *exclusions_unread(res.instruction)]
 
     def refusal(self, refused: Exception, instruction: str, prepared: str, rest: str) -> Exception:
         hint = contents_hint(instruction)
