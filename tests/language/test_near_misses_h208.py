@@ -26,6 +26,8 @@ def read(text: str) -> tuple[list[str], list[tuple[str, str]], list[str], list[s
     [
         ("Put the egg in the fridge. Cheers, Mug", "Cheers, Mug"),
         ("Please put the egg in the fridge. Thank you mug!", "Thank you mug!"),
+        # found by the held-out batch, mended after it was scored: "take care" was no sign-off word
+        ("Put the bread on the counter. Take care - Tomato", "Take care - Tomato"),
         ("Put all but the mug in the sink", "all but"),
         ("Put every item but the apple in the fridge", "every item but"),
         ("Put the egg in the fridge. Rather than the mug, the apple.", "Rather than the mug, the apple"),
@@ -49,7 +51,8 @@ def test_a_sign_off_with_a_persons_name_still_reads():
     "text, task, forbidden",
     [
         # "in the sink" was read as washing: clean_place Mug -> Fridge at exit 0
-        ("Instead of putting the mug in the sink, put it in the fridge", "place Mug -> Fridge", "put(Mug,SinkBasin)"),
+        ("Instead of putting the mug in the sink, put it in the fridge", "place Mug -> Fridge",
+         "put(Mug,SinkBasin)"),
         # the heating that was to be skipped was done: heat_place Potato -> Fridge at exit 0
         ("Rather than heating the potato, put it in the fridge", "place Potato -> Fridge", "heat(Potato)"),
     ],
