@@ -23,7 +23,7 @@ import re
 from collections.abc import Callable
 from functools import cache
 
-from nl2hltl2plan.language.content_words import categories, phrase_list_pattern, phrase_words
+from nl2hltl2plan.language.content_words import Unread, categories, phrase_list_pattern, phrase_words
 
 
 def courtesy_pattern(*kinds: str) -> str:
@@ -183,6 +183,49 @@ _NOTE_FOR = re.compile(
     re.I,
 )
 _SIGN_OFF = re.compile(rf"(?<=[.!?])\s*(?i:{courtesy_pattern('sign_off')})\s*,\s*(?P<name>[A-Z][a-z]+)\W*$")
+
+
+# a closing thanks or sign-off before a lone name that is also a thing ("Cheers, Mug", "Thanks! - Bread",
+# "Thank you mug!"): `without_greetings` keeps it, and the grammar would read the thing as one more item
+_THING_SIGN_OFF = re.compile(
+    rf"(?<=[.!?])\s*(?i:{courtesy_pattern('sign_off')}|{courtesy_pattern('closing')})\s*[!.,:]*\s*(?:[-\u2013\u2014]+\s*)?"
+    r"(?i:the\s+)?(?P<name>[A-Za-z]+)\W*$"
+)
+
+
+# "Thanks for putting the egg in the fridge": done already, or thanks in advance? no reading can tell (h208)
+_THANKED_FOR = re.compile(r"\b(?:thanks|thank\s+you|cheers)\s+(?:so\s+much\s+)?for\s+[a-z]+ing\b", re.I)
+
+
+def thanked_for(text: str) -> list[str]:
+    """The thanks for an action in `text` ("Thanks for putting"), which the reader names unread.
+
+    >>> thanked_for("Put the mug in the sink. Thanks for putting the egg away!")
+    ['Thanks for putting']
+    """
+    return [m[0] for m in _THANKED_FOR.finditer(text)]
+
+
+def signed_thing(text: str, names_a_thing: Callable[[str], bool]) -> str | None:
+    """The closing words of `text` when they are a thanks or a sign-off before a lone name that is also a
+    thing: a name or one more item, no reading can tell, so the reader names them unread.
+
+    >>> signed_thing("Put the egg in the fridge. Cheers, Mug", lambda name: name.lower() == "mug")
+    'Cheers, Mug'
+    >>> signed_thing("Put the egg in the fridge. Cheers, Ana", lambda name: name.lower() == "mug")
+    """
+    found = _THING_SIGN_OFF.search(text)
+    return found[0].strip() if found and names_a_thing(found["name"]) else None
+
+
+def courtesy_unread(text: str, names_a_thing: Callable[[str], bool]) -> list[Unread]:
+    """The courtesy no reading can tell the meaning of, named unread: a sign-off's name that is also a thing
+    (`signed_thing`) and thanks for an action (`thanked_for`)."""
+    signed = signed_thing(text, names_a_thing)
+    name_why = "a sign-off's name that is also a thing: say the thing in a request of its own"
+    thanks_why = "thanks for what may be done already: say what is still to do"
+    thanked = [Unread(words, "action", thanks_why) for words in thanked_for(text)]
+    return [*([Unread(signed, "object", name_why)] if signed else []), *thanked]
 
 
 def without_greetings(text: str, names_a_thing: Callable[[str], bool]) -> str:

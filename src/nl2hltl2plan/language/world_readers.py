@@ -35,12 +35,17 @@ from collections.abc import Callable
 from typing import Protocol
 
 from nl2hltl2plan.language.content_words import Unread
-from nl2hltl2plan.language.courtesy import without_framing, without_greetings, without_reasons
+from nl2hltl2plan.language.courtesy import (
+    courtesy_unread,
+    without_framing,
+    without_greetings,
+    without_reasons,
+)
 from nl2hltl2plan.language.grounding import find_mentions
 from nl2hltl2plan.language.headings import answered, note_counts
 from nl2hltl2plan.language.household_forms import household_forms
 from nl2hltl2plan.language.household_words import contents_hint, descriptive_name_notes, descriptive_names
-from nl2hltl2plan.language.negations import unmoved_said
+from nl2hltl2plan.language.negations import exclusions_unread, instead_said, unmoved_said
 from nl2hltl2plan.language.numbered_steps import step_order
 from nl2hltl2plan.language.respectively import distributed
 from nl2hltl2plan.language.result import LanguageResult
@@ -117,6 +122,10 @@ class SharedGrammar:
         return []
 
 
+def _names_a_thing(name: str) -> bool:
+    return bool(find_mentions(name.lower()))
+
+
 class _HouseholdReader(SharedGrammar):
     """The household (ALFRED) floor plans: the shared grammar, with "Q: ... A: ..." read as the
     instruction the answers state (`headings.answered`), greetings and thanks dropped
@@ -130,9 +139,9 @@ class _HouseholdReader(SharedGrammar):
 
     def as_read(self, lines: list[str]) -> str:  # greetings and thanks as every reader drops them; the
         # reasons a household request gives ("so it stays cold") ask for nothing (a tabletop "so that" states)
-        text = without_greetings(answered(" ".join(lines)), lambda name: bool(find_mentions(name.lower())))
+        text = without_greetings(answered(" ".join(lines)), _names_a_thing)
         # "Mom says put ...", "P.S.", "I was hoping you could"; "the mug stays put" is "don't move the mug"
-        return unmoved_said(without_framing(without_reasons(text)))
+        return unmoved_said(instead_said(without_framing(without_reasons(text))))
 
     def prepared(self, instruction: str) -> str:
         named = descriptive_names(household_forms(instruction), set(self.world.object_types()))
@@ -148,7 +157,10 @@ class _HouseholdReader(SharedGrammar):
         n, forbids = len(res.tasks), len(res.constraint_specs)
         why = f"the heading counts them, and the reading makes {n} base task{'s' * (n != 1)}"
         counted = note_counts(res.instruction)
-        return [Unread(h.phrase, "count", why) for h in counted if h.number not in {n, n + forbids}]
+        unread = [Unread(h.phrase, "count", why) for h in counted if h.number not in {n, n + forbids}]
+        # what no reading can tell: "Cheers, Mug", "Thanks for putting ...", "all but the mug" (h208)
+        said = res.instruction
+        return [*unread, *courtesy_unread(said, _names_a_thing), *exclusions_unread(said)]
 
     def refusal(self, refused: Exception, instruction: str, prepared: str, rest: str) -> Exception:
         hint = contents_hint(instruction)
