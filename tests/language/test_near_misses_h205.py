@@ -99,3 +99,11 @@ def test_a_lamp_said_off_is_named():
 
     with pytest.raises(HTTError, match="'light off' \\(action\\): no base task switches something off"):
         full_reading("the book under the desk lamp, light off", world_of("FloorPlan301"))
+
+
+@pytest.mark.data
+def test_isnt_in_a_free_order_remark_is_no_negation():
+    # "isn't" became a negation word (h205); "Order isn't important" frees the order and forbids nothing
+    text = "Put the egg in the fridge and the mug in the sink. Order isn't important."
+    tasks, before, unread, forbids = read(text)
+    assert (sorted(tasks), before, unread, forbids) == (sorted([EGG, MUG]), [], [], [])
