@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from nl2hltl2plan.language.accounting import account
 from nl2hltl2plan.language.grammar import parse_instruction
+from nl2hltl2plan.language.learned.inference import parse_instruction as offline_parse
 from nl2hltl2plan.language.task_specs import transitive_closure
 
 Reading = tuple[list[str], set[tuple[str, str]], list[str]]
@@ -18,3 +19,12 @@ def sorted_reading(text: str, types: set[str]) -> Reading:
     unread = list(r.unparsed) + [u.words for u in account(text, r.tasks, r.before)]
     return sorted(name.values()), order, unread
 
+
+def offline_reading(text: str, types: set[str], scene: str = "room") -> Reading:
+    """The offline backend's reading (grammar and learned model, not strict): tasks in the order said, the
+    order's closure, unread as the parser and check 1 say it."""
+    p = offline_parse(text, types, scene, strict=False)
+    name = {t.id: t.summary() for t in p.tasks}
+    order = {(name[a], name[b]) for a, b in transitive_closure(p.before, list(name))}
+    unread = list(p.unparsed) + [str(u) for u in account(text, p.tasks, p.before)]
+    return [t.summary() for t in p.tasks], order, unread

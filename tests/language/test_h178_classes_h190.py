@@ -15,12 +15,10 @@ The default run keeps one case per class; `-m sweep` reads the wording variants.
 from __future__ import annotations
 
 import pytest
+from grammar_readings import offline_reading
 from household_readings import reading
 
 from nl2hltl2plan.errors import HTTError
-from nl2hltl2plan.language.accounting import account
-from nl2hltl2plan.language.learned.inference import parse_instruction
-from nl2hltl2plan.language.task_specs import transitive_closure
 from nl2hltl2plan.language.translate import translate
 
 ROOM = {
@@ -32,11 +30,7 @@ ROOM = {
 
 def read(text: str) -> tuple[list[str], set[tuple[str, str]], list[str]]:
     """(task summaries, the closure of the order as summary pairs, every unread word or clause)."""
-    p = parse_instruction(text, ROOM, "room", strict=False)
-    name = {t.id: t.summary() for t in p.tasks}
-    order = {(name[a], name[b]) for a, b in transitive_closure(p.before, list(name))}
-    unread = list(p.unparsed) + [str(u) for u in account(text, p.tasks, p.before)]
-    return [t.summary() for t in p.tasks], order, unread
+    return offline_reading(text, ROOM)
 
 
 def read_whole(text: str) -> tuple[list[str], set[tuple[str, str]]]:

@@ -16,10 +16,7 @@ The default run keeps one case per class and its near miss; `-m sweep` reads the
 from __future__ import annotations
 
 import pytest
-
-from nl2hltl2plan.language.accounting import account
-from nl2hltl2plan.language.learned.inference import parse_instruction
-from nl2hltl2plan.language.task_specs import transitive_closure
+from grammar_readings import offline_reading
 
 ROOM = {
     "Mug", "Apple", "Egg", "Bowl", "Pencil", "CD", "Laptop", "CreditCard", "Cloth", "SinkBasin", "Fridge",
@@ -31,11 +28,7 @@ PENCIL = "examine_in_light Pencil under DeskLamp"
 
 def read(text: str) -> tuple[list[str], set[tuple[str, str]], list[str]]:
     """(task summaries, the closure of the order as summary pairs, every unread word or clause)."""
-    p = parse_instruction(text, ROOM, "room", strict=False)
-    name = {t.id: t.summary() for t in p.tasks}
-    order = {(name[a], name[b]) for a, b in transitive_closure(p.before, list(name))}
-    unread = list(p.unparsed) + [str(u) for u in account(text, p.tasks, p.before)]
-    return [t.summary() for t in p.tasks], order, unread
+    return offline_reading(text, ROOM)
 
 
 # ----- "Begin by A; also B. To finish, C": the opening word is about the whole first step ---------------

@@ -5,11 +5,11 @@ then check 1). One real sentence per class, and a near miss where the rule must 
 from __future__ import annotations
 
 import pytest
+from grammar_readings import offline_reading
 
 from nl2hltl2plan.config import data_dir
 from nl2hltl2plan.language.accounting import account
 from nl2hltl2plan.language.learned.inference import parse_instruction
-from nl2hltl2plan.language.task_specs import transitive_closure
 
 KITCHEN = {
     "Apple", "Tomato", "Potato", "Lettuce", "Bread", "Egg", "Mug", "Cup", "Bowl", "Plate", "Pan", "Pot",
@@ -21,11 +21,7 @@ KITCHEN = {
 
 def read(text: str) -> tuple[list[str], set[tuple[str, str]], list[str]]:
     """(task summaries, the closure of the order as summary pairs, every unread word or clause)."""
-    p = parse_instruction(text, KITCHEN, "kitchen", strict=False)
-    name = {t.id: t.summary() for t in p.tasks}
-    order = {(name[a], name[b]) for a, b in transitive_closure(p.before, list(name))}
-    unread = list(p.unparsed) + [str(u) for u in account(text, p.tasks, p.before)]
-    return [t.summary() for t in p.tasks], order, unread
+    return offline_reading(text, KITCHEN, "kitchen")
 
 
 needs_data = pytest.mark.skipif(data_dir(required=False) is None, reason="needs ../shared/data")
