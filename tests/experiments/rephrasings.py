@@ -2353,55 +2353,56 @@ VALID_H181: dict[str, dict[int, list[str]]] = {
 # ground truth (suites/tabletop/tabletop_tasks.json):
 #   1: green apple -> blue plate, orange -> yellow plate; no order
 #   2: green apple -> pink plate, orange -> yellow plate, red apple -> blue plate; no order
-#   3: carrot -> blue plate, orange -> yellow plate, green apple -> green plate, red apple -> pink plate; no order
+#   3: carrot -> blue plate, orange -> yellow plate, green apple -> green plate, red apple -> pink plate;
+#      no order
 #   4: green apple and orange -> yellow plate, each before carrot and red apple -> blue plate; no order within
 #      either pair
 HELD_h210: dict[str, dict[int, list[str]]] = {
     "text_message": {
         1: ["hey can u put the green apple in the blue plate n the orange in the yellow plate? thx"],
-        2: ["pls put green apple in pink plate, orange in yellow plate, red apple in blue plate. any order is "
-            "fine"],
-        3: ["can u do carrot on the blue plate, orange on the yellow plate, green apple on the green plate and "
-            "red apple on the pink plate? order doesnt matter"],
-        4: ["first green apple + orange in the yellow plate, then carrot + red apple in the blue plate. order "
-            "within each pair doesnt matter"],
+        2: ["pls put green apple in pink plate, orange in yellow plate, red apple in blue plate. any "
+            "order is fine"],
+        3: ["can u do carrot on the blue plate, orange on the yellow plate, green apple on the green "
+            "plate and red apple on the pink plate? order doesnt matter"],
+        4: ["first green apple + orange in the yellow plate, then carrot + red apple in the blue plate. "
+            "order within each pair doesnt matter"],
     },
     "teacher_to_class": {
-        1: ["Okay class, listen carefully: the green apple goes into the blue plate, and the orange goes into "
-            "the yellow plate. That's all there is to it."],
-        2: ["Alright everyone, here is today's exercise. The green apple belongs in the pink plate, the orange "
-            "in the yellow plate and the red apple in the blue plate. You may do them in whatever order you "
-            "like."],
-        3: ["Class, pay attention, please. The carrot goes in the blue plate, the orange in the yellow plate, "
-            "the green apple in the green plate and the red apple in the pink plate. You can place them in any "
-            "order."],
-        4: ["Okay everyone, this one has two stages. Stage one: the green apple and the orange go into the "
-            "yellow plate. Stage two, only when both of those are in: the carrot and the red apple go into the "
-            "blue plate, in either order."],
+        1: ["Okay class, listen carefully: the green apple goes into the blue plate, and the orange goes "
+            "into the yellow plate. That's all there is to it."],
+        2: ["Alright everyone, here is today's exercise. The green apple belongs in the pink plate, the "
+            "orange in the yellow plate and the red apple in the blue plate. You may do them in whatever "
+            "order you like."],
+        3: ["Class, pay attention, please. The carrot goes in the blue plate, the orange in the yellow "
+            "plate, the green apple in the green plate and the red apple in the pink plate. You can place "
+            "them in any order."],
+        4: ["Okay everyone, this one has two stages. Stage one: the green apple and the orange go into "
+            "the yellow plate. Stage two, only when both of those are in: the carrot and the red apple go "
+            "into the blue plate, in either order."],
     },
     "terse_checklist": {
         1: ["To do:\n- green apple -> blue plate\n- orange -> yellow plate"],
-        2: ["Checklist (any order):\n[ ] green apple -> pink plate\n[ ] orange -> yellow plate\n[ ] red apple "
-            "-> blue plate"],
+        2: ["Checklist (any order):\n[ ] green apple -> pink plate\n[ ] orange -> yellow plate\n[ ] red "
+            "apple -> blue plate"],
         3: ["- carrot: blue plate\n- orange: yellow plate\n- green apple: green plate\n- red apple: pink "
             "plate\nOrder: any."],
-        4: ["Step 1 (any order):\n- green apple -> yellow plate\n- orange -> yellow plate\nStep 2, after step "
-            "1 (any order):\n- carrot -> blue plate\n- red apple -> blue plate"],
+        4: ["Step 1 (any order):\n- green apple -> yellow plate\n- orange -> yellow plate\nStep 2, after "
+            "step 1 (any order):\n- carrot -> blue plate\n- red apple -> blue plate"],
     },
     "chatty_long_winded": {
-        1: ["So I was thinking, if it's not too much trouble, could you take the green apple and pop it in the "
-            "blue plate, and the orange, that one can go in the yellow plate. No rush at all, whenever you get "
-            "to it."],
-        2: ["Okay so here's what I need, and honestly it doesn't matter which one you start with: the green "
-            "apple should end up in the pink plate, the orange in the yellow plate, and the red apple in the "
-            "blue plate. Thanks a bunch, you're a star."],
-        3: ["Right, so, I've got a bit of a tidy-up for you if you don't mind. The carrot, could you put that "
-            "in the blue plate? And the orange wants to go in the yellow plate, the green apple in the green "
-            "plate, and the red apple in the pink plate, though honestly you can do them in any order you "
-            "fancy, it's all the same to me."],
-        4: ["Okay, so what I'd love is for you to start off with the green apple and the orange, both of those "
-            "into the yellow plate, doesn't matter which goes first. Once you've got them both in there, it's "
-            "the carrot and the red apple's turn, and they go into the blue plate, again in whichever order "
-            "suits you. Thanks ever so much!"],
+        1: ["So I was thinking, if it's not too much trouble, could you take the green apple and pop it "
+            "in the blue plate, and the orange, that one can go in the yellow plate. No rush at all, "
+            "whenever you get to it."],
+        2: ["Okay so here's what I need, and honestly it doesn't matter which one you start with: the "
+            "green apple should end up in the pink plate, the orange in the yellow plate, and the red "
+            "apple in the blue plate. Thanks a bunch, you're a star."],
+        3: ["Right, so, I've got a bit of a tidy-up for you if you don't mind. The carrot, could you put "
+            "that in the blue plate? And the orange wants to go in the yellow plate, the green apple in "
+            "the green plate, and the red apple in the pink plate, though honestly you can do them in any "
+            "order you fancy, it's all the same to me."],
+        4: ["Okay, so what I'd love is for you to start off with the green apple and the orange, both of "
+            "those into the yellow plate, doesn't matter which goes first. Once you've got them both in "
+            "there, it's the carrot and the red apple's turn, and they go into the blue plate, again in "
+            "whichever order suits you. Thanks ever so much!"],
     },
 }

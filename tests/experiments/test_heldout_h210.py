@@ -1,0 +1,30 @@
+"""h210 (session 30, issues 28 and 24): held-out rephrasings of the paper's tabletop (`HELD_h210` of
+rephrasings.py) and handover (`held_h210` of handover_styles_session10.json) instructions, committed before
+any scoring and scored once, unchanged (results/experiments/h210.md: tabletop 10 of 16 the same, 6 refused;
+handover 2 of 16 the same, 14 refused; none misread). No rule was written for them; each line must stay read
+right or refused, never misread (`sweep`: whole committed batches)."""
+
+from __future__ import annotations
+
+import pytest
+from handover_session10 import STYLES
+from handover_specs import assert_written_spec_or_refused
+from rephrasings import HELD_h210
+from test_tabletop import TASKS, signature
+from test_tabletop_voices import _refused, _signature_or_none
+
+TABLETOP = [(task, text) for voice in HELD_h210.values() for task, texts in voice.items() for text in texts]
+HANDOVER = [(int(task), text) for voice in STYLES["held_h210"].values() for task, text in voice.items()]
+
+
+@pytest.mark.sweep
+@pytest.mark.parametrize(("task", "text"), TABLETOP)
+def test_tabletop_held_out_line_is_read_right_or_refused(task: int, text: str) -> None:
+    assert _refused(text) or _signature_or_none(text) == signature(TASKS[task].instruction), text
+
+
+@pytest.mark.data
+@pytest.mark.sweep
+@pytest.mark.parametrize(("task", "text"), HANDOVER)
+def test_handover_held_out_line_is_read_right_or_refused(task: int, text: str) -> None:
+    assert_written_spec_or_refused(task, text)
