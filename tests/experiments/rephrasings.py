@@ -2357,7 +2357,7 @@ VALID_H181: dict[str, dict[int, list[str]]] = {
 #      no order
 #   4: green apple and orange -> yellow plate, each before carrot and red apple -> blue plate; no order within
 #      either pair
-HELD_h210: dict[str, dict[int, list[str]]] = {
+HELD_H210: dict[str, dict[int, list[str]]] = {
     "text_message": {
         1: ["hey can u put the green apple in the blue plate n the orange in the yellow plate? thx"],
         2: ["pls put green apple in pink plate, orange in yellow plate, red apple in blue plate. any "

@@ -1,4 +1,4 @@
-"""h210 (session 30, issues 28 and 24): held-out rephrasings of the paper's tabletop (`HELD_h210` of
+"""h210 (session 30, issues 28 and 24): held-out rephrasings of the paper's tabletop (`HELD_H210` of
 rephrasings.py) and handover (`held_h210` of handover_styles_session10.json) instructions, committed before
 any scoring and scored once, unchanged (results/experiments/h210.md: tabletop 10 of 16 the same, 6 refused;
 handover 2 of 16 the same, 14 refused; none misread). No rule was written for them; each line must stay read
@@ -9,11 +9,11 @@ from __future__ import annotations
 import pytest
 from handover_session10 import STYLES
 from handover_specs import assert_written_spec_or_refused
-from rephrasings import HELD_h210
+from rephrasings import HELD_H210
 from test_tabletop import TASKS, signature
 from test_tabletop_voices import _refused, _signature_or_none
 
-TABLETOP = [(task, text) for voice in HELD_h210.values() for task, texts in voice.items() for text in texts]
+TABLETOP = [(task, text) for voice in HELD_H210.values() for task, texts in voice.items() for text in texts]
 HANDOVER = [(int(task), text) for voice in STYLES["held_h210"].values() for task, text in voice.items()]
 
 
