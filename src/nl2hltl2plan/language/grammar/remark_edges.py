@@ -10,6 +10,7 @@ from nl2hltl2plan.language.grammar.draft_tasks import TaskBuilder, Tasks
 from nl2hltl2plan.language.grammar.phrases import parse_np
 from nl2hltl2plan.language.grammar.references import KIND_WORDS, NOT_CERTAIN, ref_targets
 from nl2hltl2plan.language.grammar.sentences import RelationSentence
+from nl2hltl2plan.language.task_specs import BaseTaskSpec
 
 Edges = set[tuple[int, int]]
 REMARK = "remark_"  # the kinds `sentences.read_sentences` gives the relations of an order remark
@@ -22,8 +23,9 @@ _LOOKING = frozenset({"looking", "examining", "reading", "inspecting"})
 _COUNTS = {"two": 2, "three": 3, "2": 2, "3": 3}
 
 
-def remark_edges(rel: RelationSentence, relations: list[RelationSentence], tasks: Tasks, b: TaskBuilder,
-                 edges: Edges) -> bool:
+def remark_edges(
+    rel: RelationSentence, relations: list[RelationSentence], tasks: Tasks, b: TaskBuilder, edges: Edges
+) -> bool:
     """Add the edges of one remark relation; False where `rel` is no remark's."""
     if rel.kind in ("first", "last"):  # the sentence rules' "Do the fork first." (`first_last_sentence`)
         return _said_first_or_last(rel, tasks, b, edges)
@@ -37,7 +39,7 @@ def remark_edges(rel: RelationSentence, relations: list[RelationSentence], tasks
     if kind == "free":  # "the first two in any order": no order among them may have been said
         k = _COUNTS[rel.b]
         freed = set(range(k) if rel.a == "first" else range(n - k, n))
-        if k >= n or any(x in freed and y in freed for x, y in edges):
+        if k > n or any(x in freed and y in freed for x, y in edges):
             b.unparsed.append(f"the {rel.a} {rel.b} in any order ({NOT_CERTAIN}: an order was said for them)")
         return True
     named = _named(rel.a, tasks, rel.sentence)
@@ -61,16 +63,15 @@ def _said_first_or_last(rel: RelationSentence, tasks: Tasks, b: TaskBuilder, edg
     and the remark's words name one ("Do the heating first."), or where the words fit two tasks and the
     rules picked one ("Do the cup first." with a cup carried in one task and chilled in another)."""
     ta, _ = ref_targets(rel.a, tasks.specs, tasks.nps)
-    fit = _fitting(rel.a, tasks, rel.sentence)
-    if ta and (fit is None or len(fit[0]) <= 1 or fit[1]):
-        return False
-    if not ta and (fit is None or len(fit[0]) != 1 and not fit[1]):
-        return False
-    if ta:  # the words fit more than the one task the rules took
+    fit, many = _fitting(rel.a, tasks, rel.sentence) or ([], False)
+    by_thing = [i for i in fit if _moves(rel.a, tasks.specs[i])]  # a lamp or place one: the rules' reading
+    if ta and len(by_thing) > 1 and not many:  # the words fit more than the one task the rules took
         b.unparsed.append(f"{rel.a} {rel.kind} ({NOT_CERTAIN}: more than one task fits)")
         return True
-    named, others = fit[0], [y for y in range(len(tasks.specs)) if y not in fit[0]]  # type: ignore[index]
-    edges.update((x, y) if rel.kind == "first" else (y, x) for x in named for y in others)
+    if ta or len(fit) != 1:
+        return False
+    x = fit[0]
+    edges.update((x, y) if rel.kind == "first" else (y, x) for y in range(len(tasks.specs)) if y != x)
     return True
 
 
@@ -103,3 +104,9 @@ def _fitting(ref: str, tasks: Tasks, sentence: int) -> tuple[list[int], bool] | 
     if not hit:  # "the fridge stuff", "the bin one": by the place
         hit = [i for i, s in enumerate(specs) if name in (s.receptacle or []) or name in (s.light or [])]
     return hit, many or np.plural
+
+
+def _moves(ref: str, spec: BaseTaskSpec) -> bool:
+    """Does the task move the thing the remark names (as its object or its container)?"""
+    np = parse_np(" ".join(w for w in ref.lower().split() if w not in _SKIP | _TASK_NOUNS | _PLURAL_NOUNS))
+    return np.entry is not None and np.entry.canonical in [*spec.object, *(spec.container or [])]
