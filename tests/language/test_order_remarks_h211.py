@@ -39,6 +39,13 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "scripts"))
             "apple; the rest in any order.",
             {(APPLE, EGG), (APPLE, MUG)},
         ),
+        (
+            "Put the egg in the fridge, the mug in the sink and the apple on the counter. Apple first; order "
+            "doesn't matter for the rest.",
+            {(APPLE, EGG), (APPLE, MUG)},
+        ),
+        # a closing "after everything else" is the last clause's (each clause took it: a cycle, exit 2)
+        ("Put the egg in the fridge and put the mug in the sink after everything else.", {(EGG, MUG)}),
     ],
 )
 def test_a_remark_orders_the_tasks_it_names(text, order):

@@ -89,6 +89,15 @@ _SENTENCE = re.compile(r"[^.;!?]+[.;!?]*\s*")
 _COURTESY = re.compile(r"^(?:please|thanks|thank\s+you|cheers)$", re.I)
 
 
+# "A and put B after everything else": the clause the closing reference ends is B alone (each clause of the
+# sentence took it, a cycle); not "wash the mug and put it away ..." (one task)
+_LAST_CLAUSE_ELSE = re.compile(
+    r",?\s+and\s+(?=(?P<verb>[a-z]+)\s+(?!it\b|them\b|that\b|this\b)[^.;!?,]*?\s+(?:before|after)\s+"
+    r"(?:anything|everything)\s+else\s*(?:[.;!?]|$))",
+    re.I,
+)
+
+
 def remarks_said_plainly(text: str) -> str:
     """Each order remark written as the plain "X first" / "X last" that the rules and check 1 read ("Save the
     laptop for last." -> "the laptop last."); "the rest in any order" beside a first / last remark says no
@@ -97,6 +106,7 @@ def remarks_said_plainly(text: str) -> str:
     >>> remarks_said_plainly("Put A on B. Start with the spray bottle; the rest in any order.")
     'Put A on B. the spray bottle first; '
     """
+    text = _LAST_CLAUSE_ELSE.sub(lambda m: ". " if m["verb"].lower() in G.VERBS else m[0], text)
     spans = [(m, _read(m[0].rstrip(".;!? "))) for m in _SENTENCE.finditer(text)]
     ends = any(r is not None and any(k in ("first", "last") for (k, _, _), _ in r) for _, r in spans)
     out = []
