@@ -86,9 +86,9 @@ def _fitting(ref: str, tasks: Tasks, sentence: int) -> tuple[list[int], bool] | 
     words = [w for w in ref.lower().split() if w not in _SKIP]
     many = bool(_PLURAL_NOUNS.intersection(words))
     words = [w for w in words if w not in _TASK_NOUNS | _PLURAL_NOUNS]
-    if not words or set(words) <= _THAT:  # "do that one last": the task said just before the remark
-        said = [u.tasks for u in tasks.units if u.tasks and u.sentence < sentence]
-        return (said[-1], False) if said else None
+    if not words or set(words) <= _THAT:  # "That last.": the tasks of the sentence just before (one fits)
+        said = [u.sentence for u in tasks.units if u.tasks and u.sentence < sentence]
+        return ([t for u in tasks.units if said and u.sentence == said[-1] for t in u.tasks], False)
     specs = tasks.specs
     if len(words) == 1 and words[0].endswith("ing"):  # "the washing last"
         if words[0] in _LOOKING:
