@@ -54,9 +54,11 @@ _OTHER_ONE = re.compile(
 # "one more" said of a thing, not "one more time" / "one more step": the one family of words for a second
 # thing of a type with "another" (`another_said` below, `referents.another_thing`)
 ONE_MORE = r"one\s+more\b(?!\s+(?:time|step|thing|task|minute|second)s?\b)"
-# "the third (X|one)", "the last (X|one)", "a second one", "one more (X)"
+# "the third (X|one)", "the last (X|one)", "a second one", "one more (X)"; not "the last two can be done
+# any time": tasks counted by their place in the list (`order_remarks`)
 _ANOTHER = re.compile(
-    r"\b(?:the\s+(?:second|third|fourth|fifth|last)|(?:a|one)\s+(?:second|third|fourth|fifth)(?=\s+one\b)"
+    r"\b(?:the\s+(?:second|third|fourth|fifth|last)(?!\s+(?:two|three|2|3)\s+(?:can|in|ones|tasks|jobs|things)\b)"
+    r"|(?:a|one)\s+(?:second|third|fourth|fifth)(?=\s+one\b)"
     rf"|{ONE_MORE})(?:\s+one\b)?",
     re.I,
 )

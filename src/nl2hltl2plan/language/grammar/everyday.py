@@ -38,6 +38,7 @@ from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.counted_refs import another_said, counted_references
 from nl2hltl2plan.language.grammar.lamp_phrases import carried_to_lamp, items_under_lamp
 from nl2hltl2plan.language.grammar.order_phrases import dashed_first, state_on_it
+from nl2hltl2plan.language.grammar.order_remarks import remarks_said_plainly
 from nl2hltl2plan.language.grammar.repeats import repeated_for_another
 from nl2hltl2plan.language.grammar.restated import count_fits, restated
 from nl2hltl2plan.language.grammar.treatments_said import treatments_said
@@ -262,6 +263,7 @@ def everyday(text: str) -> str:
     of the text)."""
     text = _BARE.sub(lambda m: _BARE_CONTRACTION[m[1].lower()], _UR_DONE.sub("you're ", text))
     text = _noted(_without_fillers(text))  # first: "and, like, the box on there too" finds its place
+    text = remarks_said_plainly(text)  # "Save the mug for last.": "the mug last." (order_remarks.py)
     text = another_said(_as_well_as_doing(text))  # "one more" said of a thing (counted_refs.py)
     if _FREE_REMARK.search(text):  # "1. X. 2. Y. Any order is fine.": the numbers only list the steps
         text = _NUMBERED.sub(lambda m: m["lead"], text)

@@ -1,5 +1,4 @@
-"""Step 6, relations: the order markers of the units -> `before` pairs between task ids (the
-ANNOTATION_GUIDE rules), contradictions dropped, transitively reduced."""
+"""Step 6, relations: the units' order markers -> `before` pairs of task ids (ANNOTATION_GUIDE), reduced."""
 
 from __future__ import annotations
 
@@ -26,6 +25,7 @@ from nl2hltl2plan.language.grammar.references import (
     treats_own,
     units_said_before,
 )
+from nl2hltl2plan.language.grammar.remark_edges import remark_edges
 from nl2hltl2plan.language.grammar.sentences import RelationSentence, split_sentences
 from nl2hltl2plan.language.semantic_check import find_cycle
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter, transitive_reduction
@@ -62,7 +62,8 @@ def relate(
     _leading_last(tasks.units, steps, free, edges)
     if why := first_said_unread(tasks.units, text):  # "First A, first B": which one is first?
         b.unparsed.append(f"{why} ({ORDER_LEFT_OPEN})")
-    _sentence_edges(relations, tasks, b, edges)
+    rest = [r for r in relations if not remark_edges(r, relations, tasks, b, edges)]  # (`order_remarks`)
+    _sentence_edges(rest, tasks, b, edges)
     _first_after_others(tasks, free, edges, b)
     return _order(edges, tasks)
 
@@ -168,7 +169,8 @@ def _marker_edges(
         elif kind in {G.AFTER_REF, G.BEFORE_REF} and (
             named := by_position(ref, earlier, prev, others)
         ) is not None:
-            if not named:  # "Before any of that, Y" with nothing said before it (certain), or nothing read
+            # "Before any of that, Y" with nothing before it, or nothing read ("Y before anything else": no)
+            if not named and not re.fullmatch(r"(?:doing\s+)?anything\s+else", _normal(ref), re.I):
                 why = f" ({NOT_CERTAIN}: nothing is said before it)" if u.sentence == 0 else ""
                 b.unparsed.append(f"could not tell which task {ref!r} refers to{why}")
             later = kind == G.AFTER_REF  # "Before all that, Y": Y before every task said

@@ -128,7 +128,7 @@ _KIND_SAID: dict[Kind, str] = {
     "heat_place": "heat heating heated microwave microwaving microwaved warm warming cook cooked",
     "cool_place": "chill chilling chilled cool cooling cooled fridge",
 }
-_KIND_WORDS: dict[str, Kind] = {w: kind for kind, said in _KIND_SAID.items() for w in said.split()}
+KIND_WORDS: dict[str, Kind] = {w: kind for kind, said in _KIND_SAID.items() for w in said.split()}
 _TASK_WORDS = frozenset({"one", "ones", "job", "jobs", "task", "tasks", "chore", "chores", "part", "parts"})
 _PLURAL_TASK_WORDS = frozenset({"ones", "jobs", "tasks", "chores", "parts"})
 _COUNTS = {"two": 2, "three": 3}
@@ -150,7 +150,7 @@ def _described(words: list[str], specs: list[BaseTaskSpec], candidates: list[int
     words = _DONE_AFTER.sub("", " ".join(words)).split()  # "both pen jobs are done"
     if not words or words[-1] not in _TASK_WORDS:
         return None
-    kinds = {_KIND_WORDS[w] for w in words[:-1] if w in _KIND_WORDS}
+    kinds = {KIND_WORDS[w] for w in words[:-1] if w in KIND_WORDS}
     if len(kinds) == 1:
         return [i for i in candidates if specs[i].kind in kinds]
     if words[0] not in {"both", "all"}:

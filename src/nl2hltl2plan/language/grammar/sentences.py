@@ -26,6 +26,7 @@ from nl2hltl2plan.language.grammar.order_phrases import (
     subordinate_first,
     the_moment,
 )
+from nl2hltl2plan.language.grammar.order_remarks import order_remark
 from nl2hltl2plan.language.grammar.phrases import match_prep, parse_np, tokens
 from nl2hltl2plan.language.grammar.sentence_joins import (
     both_of_two_sentences,
@@ -89,6 +90,9 @@ def read_sentences(text: str) -> Sentences:
         rel = first_last_sentence(sentence) or relation_sentence(body)
         if rel is not None:
             out.relations.append(rel)
+            continue
+        if (remark := order_remark(sentence)) is not None:  # "Soap bottles first, toilet paper last."
+            out.relations += [RelationSentence(f"remark_{k}", a, b, index) for k, a, b in remark]
             continue
         trailing, body = strip_trailing(body)
         body = body.strip(" ,")

@@ -1,0 +1,127 @@
+"""The order said in a remark of its own, after or before the tasks (issue 28): "Start with the towel.",
+"Save the mug for last.", "Books first, mug last.", "The first two in any order, the cloth last.", "The
+washing last.", "Start with the spray bottle; the rest in any order.".
+
+A sentence is such a remark when every part of it (split at commas, semicolons and ", but") is one of the
+patterns of `order_remarks.txt`; each part gives one relation (kind, a, b) that `remark_edges` maps to the
+tasks it names. A sentence with any other part is left to the rules (`sentences.read_sentences`)."""
+
+from __future__ import annotations
+
+import re
+from functools import cache
+from pathlib import Path
+
+from nl2hltl2plan.language.grammar import word_tables as G
+
+# a thing that names a task: one to four words, no verb (but a treatment's "-ing") and no preposition, so
+# that "put the mug in the sink first" is a clause, never a remark
+_THING = r"(?:[a-z][a-z']*(?:\s+[a-z][a-z']*){0,3}?)"
+_NOT_IN_THING = frozenset(
+    "in on into onto to from under at by with for till until then and or it them you your i we is are be not "
+    "don't can wait save leave keep may might could should must will would either any whichever each every "
+    "neither step steps order".split()
+)
+_PARTS = re.compile(r"\s*(?:,\s*(?:but|and)\s+|,|;|\s+but\s+)\s*", re.I)
+
+Relation = tuple[str, str, str]  # (kind, a, b); "free": a is "first" / "last", b the count
+
+
+@cache
+def _patterns() -> list[tuple[str, re.Pattern[str]]]:
+    out = []
+    for line in Path(__file__).with_name("order_remarks.txt").read_text().splitlines():
+        if not line.strip() or line.startswith("#"):
+            continue
+        kind, pattern = line.split(":", 1)
+        body = pattern.strip().replace("{x}", rf"(?P<x>{_THING})").replace("{y}", rf"(?P<y>{_THING})")
+        out.append((kind.strip(), re.compile(rf"^{body}$", re.I)))
+    return out
+
+
+def _a_thing(words: str | None) -> bool:
+    """May these words name a task's thing (no verb, no preposition: a clause is no remark)?"""
+    said = (words or "").lower().split()
+    return bool(said) and not any(
+        w in _NOT_IN_THING or (w in G.VERBS and not w.endswith("ing")) or w in ("first", "last") for w in said
+    )
+
+
+def _part(part: str) -> Relation | None:
+    for kind, pattern in _patterns():
+        if not (m := pattern.match(part)):
+            continue
+        said = m.groupdict()
+        if kind == "free":
+            return kind, said["pos"].lower(), said["n"].lower()
+        if kind == "rest":
+            return kind, "", ""
+        if _a_thing(said.get("x")) and (kind != "before" or _a_thing(said.get("y"))):
+            return kind, said["x"], said.get("y") or ""
+    return None
+
+
+def order_remark(sentence: str) -> list[Relation] | None:
+    """The relations of a sentence that only says the order of tasks named elsewhere, free ones last (they
+    are checked against the edges the others give); None where any part says something else.
+
+    >>> order_remark("Soap bottles first, toilet paper last")
+    [('first', 'Soap bottles', ''), ('last', 'toilet paper', '')]
+    >>> order_remark("Put the mug in the sink first") is None
+    True
+    """
+    read = _read(sentence)
+    return None if read is None else sorted((r for r, _ in read), key=lambda r: r[0] == "free")
+
+
+def _read(sentence: str) -> list[tuple[Relation, str]] | None:
+    """Each part of a remark sentence with its relation, in the order said; None: no remark."""
+    parts = [p.strip(" .!") for p in _PARTS.split(sentence.strip(" .!")) if p.strip(" .!")]
+    read = [(_part(p), p) for p in parts if not _COURTESY.match(p)]
+    if not read or any(r is None for r, _ in read):
+        return None
+    if len(read) > 1 and all(r[0] == "rest" for r, _ in read if r is not None):
+        return None
+    return [(r, p) for r, p in read if r is not None]
+
+
+_SENTENCE = re.compile(r"[^.;!?]+[.;!?]*\s*")
+_COURTESY = re.compile(r"^(?:please|thanks|thank\s+you|cheers)$", re.I)
+
+
+# "A and put B after everything else": the clause the closing reference ends is B alone (each clause of the
+# sentence took it, a cycle); not "wash the mug and put it away ..." (one task)
+_LAST_CLAUSE_ELSE = re.compile(
+    r",?\s+and\s+(?=(?P<verb>[a-z]+)\s+(?!it\b|them\b|that\b|this\b)[^.;!?,]*?\s+(?:before|after)\s+"
+    r"(?:anything|everything)\s+else\s*(?:[.;!?]|$))",
+    re.I,
+)
+
+
+def remarks_said_plainly(text: str) -> str:
+    """Each order remark written as the plain "X first" / "X last" that the rules and check 1 read ("Save the
+    laptop for last." -> "the laptop last."); "the rest in any order" beside a first / last remark says no
+    more and goes. Other sentences are kept as written.
+
+    >>> remarks_said_plainly("Put A on B. Start with the spray bottle; the rest in any order.")
+    'Put A on B. the spray bottle first; '
+    """
+    text = _LAST_CLAUSE_ELSE.sub(lambda m: ". " if m["verb"].lower() in G.VERBS else m[0], text)
+    spans = [(m, _read(m[0].rstrip(".;!? "))) for m in _SENTENCE.finditer(text)]
+    ends = any(r is not None and any(k in ("first", "last") for (k, _, _), _ in r) for _, r in spans)
+    out = []
+    for m, read in spans:
+        said = m[0]
+        if read is not None and (ends or any(k != "rest" for (k, _, _), _ in read)):
+            body = m[0].rstrip(".;!? ")
+            lead, tail = body[: len(body) - len(body.lstrip())], m[0][len(body) :]
+            plain = ", ".join(s for (k, a, _), p in read if (s := _plain(k, a, p)))
+            said = lead + plain + tail if plain else ""
+        out.append(said)
+    return "".join(out)
+
+
+def _plain(kind: str, a: str, part: str) -> str:
+    if kind in ("first", "last"):
+        return f"{a} {kind}"
+    return "" if kind == "rest" else part
