@@ -65,9 +65,13 @@ def _restated(title: str, body: str) -> bool:
     """Every word of the title that is not a function, topic or day word is said again in the body, in
     the title's order."""
     kept = frame_words()["function"] | _words()["topic"] | _words()["day"] | frame_words()["month"]
+    kinds = {_stem(w) for w in _words()["kind"]}  # "regions", "blocks": said anywhere in the body
+    body_words = [_stem(w) for w in _tokens(body)]
     wanted = [_stem(w) for w in _tokens(title) if w not in kept]
-    said = iter(_stem(w) for w in _tokens(body))
-    return all(any(w == s for s in said) for w in wanted)
+    said = iter(body_words)
+    return all(w in body_words for w in wanted if w in kinds) and all(
+        any(w == s for s in said) for w in wanted if w not in kinds
+    )
 
 
 def _people(value: str) -> bool:
@@ -184,7 +188,10 @@ _ORDER_OPENS = re.compile(
 )
 # "No, never on any other region.": a "no" that says the rule again in full (not "No, nothing.")
 _NO_BUT = re.compile(r"(?i)^no\s*,\s*(?=(?:\S+\s+){2,}\S)(?=.*\b(?:regions?|side|[e-j])\b)")
-_ABOUT = re.compile(r"(?i)^(?:and\s+)?(?:anything|what)\s+(?:else\s+)?about\s+(?P<blocks>[^?]+?)\s*\?$")
+_ABOUT = re.compile(
+    r"(?i)^(?:and\s+)?(?:(?:anything|what)\s+(?:else\s+)?about|what\s+(?:do\s+(?:we|i|you)\s+do|happens|should\s+"
+    r"happen)\s+(?:with|to))\s+(?P<blocks>[^?]+?)\s*\?$"
+)
 _PRONOUN = re.compile(r"(?i)\b(?:it|them)\b")
 
 
