@@ -81,7 +81,8 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
     a step as a full stop does. Where the form reader refuses, each sentence it cannot read alone is said
     again from its cues (`handover_cues.restate`) and the whole is read once more (`_restated`). Questions
     and answers labelled "Q:" / "A:" are first said as the instruction they state (`headings.answered`,
-    every world's; a question it does not know is refused by name)."""
+    every world's; a question it does not know is refused by name), after the message's layout (headers, a
+    role's sign-off, a dialogue's turns, a work order's fields: `handover_headers.headed`)."""
     instruction = labelled_answers(headed(instruction))
     try:
         return _read_forms(instruction, world)
