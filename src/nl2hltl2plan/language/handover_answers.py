@@ -56,7 +56,13 @@ _WHICH_WHERE = re.compile(
 # "And yellow? To the opposite side.": blocks asked about, answered by a place
 _AND_BLOCKS = re.compile(
     rf"(?im){_START}(?:and\s+)?(?:what\s+about\s+)?(?P<objects>{_BLOCKS})\s*\?[ \t]+"
-    rf"(?P<answer>(?:{_PLACE_START}|any\s+empty|the\s+opposite|regions?\s)[^?.!;\n]*?){_END}"
+    rf"(?P<answer>(?:{_PLACE_START}|any\s+empty|the\s+opposite|regions?\s|whichever\s|whatever\s|"
+    rf"(?:some|an?)\s+(?:empty|free|unoccupied)\s)[^?.!;\n]*?){_END}"
+)
+# "What goes on H, I and J? The three blocks.": the place asked about, answered by the blocks
+_WHAT_GOES = re.compile(
+    rf"(?im){_START}what\s+(?:goes|should\s+go|is\s+going)\s+(?P<place>{_PLACE_START}[^?.!;\n]+?)\s*\?[ \t]+"
+    rf"(?P<objects>(?:the\s+|all\s+)?(?:three\s+|3\s+)?(?:blocks|objects|pillars)|{_BLOCKS}){_END}"
 )
 # a prompt that only asks for the next sentence ("What needs doing?", "Any rule?", "Order?")
 _PROMPT = re.compile(
@@ -70,8 +76,9 @@ _STEP = re.compile(
     r"\s*\?[ \t]+(?=\S)"
 )
 _HOW_MANY = re.compile(
-    rf"(?im){_START}how\s+many\s+(?:per|on\s+each|in\s+each)\s+region\s*\?[ \t]+(?:just\s+|only\s+)?"
-    rf"(?:one|1)(?:\s+each)?{_END}"
+    rf"(?im){_START}how\s+many\s+(?:per\s+region|(?:on|in)\s+each(?:\s+region)?)\s*\?[ \t]+"
+    r"(?:just\s+|only\s+)?"
+    rf"(?:one|1)(?:\s+each|\s+per\s+region)?{_END}"
 )
 _ANYTHING_ALLOWED = re.compile(
     rf"(?im){_START}(?:is\s+)?(?:anything|any\s+(?:object|block|pillar)s?)\s+(?:allowed|permitted)\s+"
@@ -82,7 +89,8 @@ _ANYTHING_ALLOWED = re.compile(
 
 def _where(match: re.Match[str]) -> str:
     # "All onto region I": the place; "First region I, then region G": the first of the block's places
-    answer = re.sub(rf"(?i)^all\s+(?={_PLACE_START})", "", match["answer"].strip())
+    answer = match["answer"].strip()
+    answer = re.sub(rf"(?i)^all(?:\s+(?:three|3|of\s+them))?\s+(?={_PLACE_START})", "", answer)
     first = re.match(r"(?i)first\s+", answer)
     answer = answer[first.end() :] if first else answer
     to = "" if re.match(_PLACE_START, answer, flags=re.IGNORECASE) else "to "
@@ -102,6 +110,7 @@ def answered(instruction: str) -> str:
     """
     instruction = _WHERE.sub(_where, _WHICH_WHERE.sub(_where, instruction))
     instruction = _AND_BLOCKS.sub(_where, instruction)
+    instruction = _WHAT_GOES.sub(lambda m: f"{m['start']}{m['objects']} go {m['place']}", instruction)
     instruction = _WHICH_FIRST.sub(_which_first, instruction)
     instruction = _WHAT_ORDER.sub(lambda m: f"{m['start']}{m['first']} before {m['then']}", instruction)
     instruction = _HOW_MANY.sub(lambda m: f"{m['start']}one per region", instruction)

@@ -58,6 +58,7 @@ from nl2hltl2plan.language.handover_goals import (
     lead,
     lead_later,
 )
+from nl2hltl2plan.language.handover_headers import headed
 from nl2hltl2plan.language.handover_phrases import drop_but, mark
 from nl2hltl2plan.language.handover_rules import (
     Prohibition,
@@ -80,8 +81,9 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
     a step as a full stop does. Where the form reader refuses, each sentence it cannot read alone is said
     again from its cues (`handover_cues.restate`) and the whole is read once more (`_restated`). Questions
     and answers labelled "Q:" / "A:" are first said as the instruction they state (`headings.answered`,
-    every world's; a question it does not know is refused by name)."""
-    instruction = labelled_answers(instruction)
+    every world's; a question it does not know is refused by name), after the message's layout (headers, a
+    role's sign-off, a dialogue's turns, a work order's fields: `handover_headers.headed`)."""
+    instruction = labelled_answers(headed(instruction))
     try:
         return _read_forms(instruction, world)
     except HTTError as refusal:

@@ -207,6 +207,18 @@ _RULES: tuple[tuple[str, str], ...] = (
         r"(?:blocks|objects|pillars)|everything|anything|them)\s+(?:out\s+of|away\s+from)\s+",
         "put nothing on ",
     ),
+    # ... and said of the blocks: "the blocks stay (must remain) out of F, G and H" (h215)
+    (
+        r"\b(?:every\s+(?:block|object|pillar)|(?:all\s+)?(?:the\s+)?(?:three\s+)?(?:blocks|objects|pillars))\s+"
+        r"(?:(?:must|should|shall|will|are\s+to)\s+)?(?:stays?|remains?|keeps?)\s+(?:out\s+of|away\s+from)\s+",
+        "put nothing on ",
+    ),
+    # "until the blocks are placed (have all been moved)": until every goal is met, as "until you are done"
+    (
+        r"\buntil\s+(?:all\s+)?(?:the\s+)?(?:three\s+)?(?:blocks|pillars|objects)\s+(?:are|have\s+been)\s+(?:all\s+)?"
+        r"(?:placed|moved|transferred|in\s+place|put\s+down|delivered)\b",
+        "until you are done",
+    ),
     (r"\b(?:free|clear|empty)\s+of\s+(?:objects|blocks|pillars|anything|everything|items|things)\b", "empty"),
     (
         rf",?\s*\bwhile\s+(?:keeping|you\s+keep|we\s+keep)\s+((?:regions?\s+)?{_LETTERS})\s+"

@@ -1,0 +1,89 @@
+"""h215 (issue 24): handover messages laid out as a memo or e-mail (headers, a role's sign-off), a dialogue
+of two speakers, a work order's labelled fields and a game's numbered rules (`handover_headers`). The
+sentences are committed batches of handover_styles_session10.json: `dev103` (written with the held-out
+`validation37` before the rules) and `validation37` (scored once at the end; read right or refused, never
+misread: `sweep`).
+"""
+
+from __future__ import annotations
+
+import pytest
+from handover_session10 import STYLES
+from handover_specs import (
+    assert_not_the_written_spec,
+    assert_refused_by_name,
+    assert_written_spec,
+    assert_written_spec_or_refused,
+)
+
+from nl2hltl2plan.language.handover_headers import headed
+
+DEV = [(int(task), text) for style in STYLES["dev103"].values() for task, text in style.items()]
+HELD = [(int(task), text) for style in STYLES["validation37"].values() for task, text in style.items()]
+OPPOSITE = "Move the three blocks to the opposite side. Red before blue."
+
+WRITTEN = [
+    (1, STYLES["dev103"]["memo_header"]["1"]),
+    (8, STYLES["dev103"]["memo_header"]["8"]),
+    (4, STYLES["dev103"]["dialogue_split"]["4"]),
+    (8, STYLES["dev103"]["dialogue_split"]["8"]),
+    (6, STYLES["dev103"]["work_order"]["6"]),
+    (7, STYLES["dev103"]["work_order"]["7"]),
+    (5, STYLES["dev103"]["rules_method"]["5"]),
+    # one line, turns after full stops and question marks
+    (1, "A: can you move the three blocks? B: where to? A: to the opposite side, red before blue"),
+]
+# a header, turn or field with a word no reader uses stays, and is refused by name
+UNCLEAR = [
+    (1, "Subject: swap\n" + OPPOSITE),  # the title says what the body does not
+    (1, "To: arms a and b\n" + OPPOSITE),  # arms named, not people
+    (1, "A: Move the three blocks.\nB: Where to?\nA: Not sure.\nB: Any order?\nA: Red before blue."),
+    (2, "Task: move\nObjects: the three blocks\nDestination: H, I and J\nPriority: yellow"),
+    (2, "Subject: three blocks\nPut the two blocks on H, I and J, one per region."),
+]
+# the title's words in another order than the body's: refused, never the body alone
+NEAR_MISSES = [
+    (1, "Subject: blue before red\n" + OPPOSITE),
+    (1, "Move the three blocks to the opposite side.\n- Red first"),  # a last line that is no role
+]
+
+
+@pytest.mark.parametrize(("task", "text"), WRITTEN)
+def test_laid_out_messages_give_the_written_spec(task: int, text: str) -> None:
+    assert_written_spec(task, text)
+
+
+@pytest.mark.parametrize(("task", "text"), UNCLEAR)
+def test_unread_headers_turns_and_fields_stay_refused(task: int, text: str) -> None:
+    assert_refused_by_name(task, text)
+
+
+@pytest.mark.parametrize(("task", "text"), NEAR_MISSES)
+def test_near_misses_are_not_the_written_spec(task: int, text: str) -> None:
+    assert_not_the_written_spec(task, text)
+
+
+def test_layout_is_said_as_plain_lines() -> None:
+    memo = "Subject: block moves for Tuesday\nMove the three blocks.\n- Shift lead"
+    assert headed(memo) == "Move the three blocks."
+    assert headed("Task: transfer\nOrder: red before blue\nObjects: the blocks\nDestination: H") == (
+        "transfer the blocks to H.\nred before blue."
+    )
+    assert headed("Lead: Put the blocks somewhere.\nRobot: Where?\nLead: On H, I and J.") == (
+        "Put the blocks on H, I and J."
+    )
+    assert headed("Rule 2: red before blue.") == "- red before blue."
+    record = "Blocks: red, blue, yellow\nTargets: H, I, J"  # `handover_sentences`' own record
+    assert headed(record) == record
+
+
+@pytest.mark.sweep
+@pytest.mark.parametrize(("task", "text"), DEV)
+def test_development_batch_gives_the_written_spec(task: int, text: str) -> None:
+    assert_written_spec(task, text)
+
+
+@pytest.mark.sweep
+@pytest.mark.parametrize(("task", "text"), HELD)
+def test_held_out_batch_is_read_right_or_refused(task: int, text: str) -> None:
+    assert_written_spec_or_refused(task, text)
