@@ -117,13 +117,30 @@ _SAME_THEN = re.compile(
 )
 
 
+# "..., and so does the cup", "the same goes for the cup", "likewise the cup", "ditto for the cup": "do the same
+# with the cup" (h216); "likewise X, and likewise Y" is one list ("do the same with X and Y")
+_SAME_SAID = re.compile(
+    rf"\b(?:so\s+(?:does|do)|(?:the\s+)?same\s+goes\s+for|likewise(?:\s+(?:for|with))?|ditto\s+(?:for|with))\s+(?={_DET}\s)",
+    re.I,
+)
+_LIKEWISE_AGAIN = re.compile(rf"(?<=\blikewise\s)(?P<np>{_NP})\s*,?\s+and\s+likewise\s+(?={_DET}\s)", re.I)
+# "X, and the cup too" / "..., and a slice of potato as well" inside the sentence of a plain task: "do the same
+# with" said at the end (h216); a place after the thing ("and the cup in the sink too") is no repeat
+_TOO_AND = re.compile(
+    rf"(?P<join>,\s*and\s+|\s+and\s+)(?P<np>{_NPS})\s*,?\s+(?:too|as\s+well)(?=\s*(?:[,.;!?]|$))", re.I
+)
+
+
 def repeated_for_another(text: str) -> str:
     """Each fragment sentence that repeats a plain one-task sentence for other things, written out."""
+    text = _LIKEWISE_AGAIN.sub(lambda m: f"{m['np']} and ", text)
+    text = _SAME_SAID.sub("do the same with ", text)
     text = _SAME_THEN.sub(lambda m: f"{m['head']}. Then do the same with {m['np']}", text)
     out: list[str] = []
     task = ""  # the last sentence that is not a fragment
     written = False  # the sentence split off by `_SAME_INSIDE` is kept only where its repeat is written out
     inline = _SAME_AND.sub(lambda m: _copy_inside(text, m), text)
+    inline = _TOO_AND.sub(lambda m: _copy_inside(inline, m), inline)
     written = inline != text
     for s in _SENTENCE.finditer(_SAME_INSIDE.sub(lambda m: ". " + m["conn"].capitalize(), inline)):
         body = s.group(0)
@@ -132,7 +149,7 @@ def repeated_for_another(text: str) -> str:
         fragment = core[said.end() :] if said else core
         if task and REPEAT_FRAGMENT.match(fragment):
             things = [m for m in find_mentions(fragment) if not m.entry.generic]
-            copies = [c for c in (_with_thing(task, m) for m in things) if c]
+            copies = [c for c in (_with_thing(task, m, words=_phrase(fragment, m)) for m in things) if c]
             # after an order word, one thing only ("then the cup and the bowl": their own order unsaid)
             one = not said or len(things) == 1
             if things and len(copies) == len(things) and _only_things(fragment, things) and one:
@@ -172,7 +189,7 @@ def _copy_inside(text: str, m: re.Match[str]) -> str:
     last = re.sub(r"^(?:and|then)\s+", "", clause.split(",")[-1].strip())
     tasks = [clause[said.end() :] if said else clause, last]
     for task in tasks:
-        copies = [c for c in (_with_thing(task.strip(), x, inside=True) for x in things) if c]
+        copies = [c for c in (_with_thing(task.strip(), x, True, words=_phrase(m["np"], x)) for x in things) if c]
         if copies and len(copies) == len(things):  # "..., and do the same with a pillow and a clock"
             return m["join"] + ", and ".join(c[:1].lower() + c[1:] for c in copies)
         counted = _COUNTED_TASK.match(task.strip())
@@ -218,11 +235,26 @@ def _own_words_start(m: Mention, toks: list[tuple[str, int, int]]) -> int:
     return at + 1 if at >= 0 else m.start
 
 
-def _with_thing(sentence: str, thing: Mention, inside: bool = False, container: bool = False) -> str | None:
-    """`sentence` with its thing replaced by `thing` and its source left out, where it is a plain one-task
-    sentence (None else); for a fragment sentence (not `inside`), one of one thing and one place. With
-    `container`, a place named again as a thing ("put a vase in a box and set the box on the table") is
-    the container, still a place."""
+def _phrase(text: str, m: Mention) -> str:
+    """The words of `m`'s noun phrase after its determiner ("slice of potato" of "a slice of potato")."""
+    toks, i = tokens(text), m.start
+    while i > 0 and _slice_word(toks, i - 1):
+        i -= 1
+    return text[toks[i][1] : m.char_end]
+
+
+def _sliced(words: str) -> bool:
+    return any("verb_sliced" in categories(w) for w in re.findall(r"[a-z]+", words.lower()))
+
+
+def _with_thing(
+    sentence: str, thing: Mention, inside: bool = False, container: bool = False, words: str = ""
+) -> str | None:
+    """`sentence` with its thing replaced by `thing` (by `words`, its words after the determiner: "slice of
+    potato") and its source left out, where it is a plain one-task sentence (None else); for a fragment
+    sentence (not `inside`), one of one thing and one place. With `container`, a place named again as a
+    thing ("put a vase in a box and set the box on the table") is the container, still a place."""
+    words = words or thing.surface
     if thing.plural:
         return None
     toks = tokens(sentence)
@@ -239,7 +271,8 @@ def _with_thing(sentence: str, thing: Mention, inside: bool = False, container: 
     firsts = [m for m, role in zip(named, roles, strict=True) if role == "thing"]
     if None in roles or len(firsts) != 1 or "place" not in roles or len(toks) < 3 or firsts[0].plural:
         return None
-    if firsts[0].entry.types[0] == thing.entry.types[0]:
+    own = sentence[toks[_det_at(firsts[0], toks) + 1][1] : firsts[0].char_end]
+    if firsts[0].entry.types[0] == thing.entry.types[0] and _sliced(own) == _sliced(words):
         return None  # "the mug ... Same for the coffee mug": one type, the atoms cannot tell them apart
     if not categories(toks[0][0]) & _OPENING:
         return None
@@ -253,24 +286,33 @@ def _with_thing(sentence: str, thing: Mention, inside: bool = False, container: 
         if i not in said and word not in plain and not categories(word) & opening:
             return None
     # the thing (with the words between its determiner and it) replaced, a source ("from the shelf") left out
-    spans = [(toks[_det_at(m, toks) + 1][1], m.char_end, thing.surface) for m in firsts]
+    spans = [(toks[_det_at(m, toks) + 1][1], m.char_end, words) for m in firsts]
     sources = [m for m, role in zip(named, roles, strict=True) if role == "source"]
     spans += [(toks[_det_at(m, toks) - 1][1] - 1, m.char_end, "") for m in sources]
     for start, end, new in sorted(spans, reverse=True):
         sentence = sentence[:start] + new + sentence[end:]
-    article = "an" if thing.surface[:1].lower() in "aeiou" else "a"  # "an egg" copied for "a tomato"
-    said_before = rf"\b[Aa]n?(?=\s+{re.escape(thing.surface)}\b)"
+    article = "an" if words[:1].lower() in "aeiou" else "a"  # "an egg" copied for "a tomato"
+    said_before = rf"\b[Aa]n?(?=\s+{re.escape(words)}\b)"
     return re.sub(said_before, lambda m: m[0][0] + article[1:], sentence, count=1)
 
 
 def _det_at(m: Mention, toks: list[tuple[str, int, int]]) -> int:
     """The index of the determiner that opens `m`'s noun phrase (the words between are its own); -1: none."""
     for i in range(m.start - 1, 0, -1):
+        if _slice_word(toks, i):  # "a slice of tomato", "a sliced apple": the thing's own words
+            continue
         if toks[i][0] in DETERMINERS:
             return i
         if toks[i][0] in _PLAIN or categories(toks[i][0]):
             return -1
     return -1
+
+
+def _slice_word(toks: list[tuple[str, int, int]], i: int) -> bool:
+    """Is the i-th word a slice word of a thing ("slice", "sliced") or the "of" after one ("slice of")?"""
+    if toks[i][0] == "of":
+        return i > 0 and "verb_sliced" in categories(toks[i - 1][0])
+    return "verb_sliced" in categories(toks[i][0]) and (toks[i][0].endswith("ed") or i + 1 < len(toks) and toks[i + 1][0] == "of")
 
 
 def _role(m: Mention, toks: list[tuple[str, int, int]]) -> str | None:

@@ -106,9 +106,18 @@ _INVERTED_AFTER = re.compile(
     re.I,
 )
 
+# "the lotion and the tissues both go on the tank", "a bowl, a pan and a pot each go in the sink": after a list
+# of things "both" / "each" / "all" counts nothing of its own (each thing is its own task), so it goes (h216)
+_EACH_OF_LIST = re.compile(
+    rf"{_CLAUSE_START}(?P<objs>(?:the|a|an)\s+[^.;!?]*?\band\s+(?:the|a|an)\s+[^.;!?]+?)\s+(?:both|each|all)\s+"
+    rf"(?=(?:go|belong|(?:need|have)\s+to\s+go|should\s+go)\s+{_PLACE}\s)",
+    re.I,
+)
+
 
 def restated(text: str) -> str:
     """The text with the restated requests above written as plain placements."""
+    text = _EACH_OF_LIST.sub(lambda m: m[0][: m.end("objs") - m.start()] + " ", text)
     text = _ONE.sub(lambda m: _one_named(text, m), text)
     text = _COUNTED_HEADER.sub(lambda m: _without_header(text, m), text)
     text = _TOPIC_HEADER.sub(_topic_clause, text)
