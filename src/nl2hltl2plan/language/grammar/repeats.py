@@ -117,22 +117,47 @@ _SAME_THEN = re.compile(
 )
 
 
-# "..., and so does the cup", "the same goes for the cup", "likewise the cup", "ditto for the cup": "do the same
-# with the cup" (h216); "likewise X, and likewise Y" is one list ("do the same with X and Y")
+# "..., and so does the cup", "the same goes for the cup", "likewise the cup", "ditto for the cup": "do the
+# same with the cup" (h216); "likewise X, and likewise Y" is one list ("do the same with X and Y")
 _SAME_SAID = re.compile(
     rf"\b(?:so\s+(?:does|do)|(?:the\s+)?same\s+goes\s+for|likewise(?:\s+(?:for|with))?|ditto\s+(?:for|with))\s+(?={_DET}\s)",
     re.I,
 )
+# after a placing said with "goes" ("the cup and the pot both go on the table, and so does the knife"):
+# the things after it go there too ("..., and the knife goes on the table")
+_GOES_SO = re.compile(
+    r"\b(?P<verb>goes|go|belongs?)\s+(?P<place>(?:in|into|on|onto|inside|under)\s+(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)"
+    r"\s*,?\s+and\s+(?:so\s+(?:does|do)|(?:the\s+)?same\s+goes\s+for|likewise)\s+"
+    r"(?P<np>(?:the|a|an|two|three|four|\d+)\s+[^,.;!?]+?)(?=\s*(?:[,.;!?]|$))",
+    re.I,
+)
 _LIKEWISE_AGAIN = re.compile(rf"(?<=\blikewise\s)(?P<np>{_NP})\s*,?\s+and\s+likewise\s+(?={_DET}\s)", re.I)
-# "X, and the cup too" / "..., and a slice of potato as well" inside the sentence of a plain task: "do the same
-# with" said at the end (h216); a place after the thing ("and the cup in the sink too") is no repeat
+# "X, and the cup too" / "..., and a slice of potato as well" / "..., plus the cup" inside the sentence of a
+# plain task: "do the same with" said at the end (h216); a place after the thing ("and the cup in the sink
+# too") is no repeat
 _TOO_AND = re.compile(
-    rf"(?P<join>,\s*and\s+|\s+and\s+)(?P<np>{_NPS})\s*,?\s+(?:too|as\s+well)(?=\s*(?:[,.;!?]|$))", re.I
+    rf"(?:(?P<join>,\s*and\s+|\s+and\s+)(?P<np>{_NPS}|{_COUNT}\s+{_W}(?:\s+{_W}){{0,3}})\s*,?\s+(?:too|as\s+well)"
+    rf"|(?P<plus>,\s*(?:and\s+)?plus\s+)(?P<np2>{_NPS}|{_COUNT}\s+{_W}(?:\s+{_W}){{0,3}}))(?=\s*(?:[,.;!?]|$))",
+    re.I,
+)
+# "heat a mug and put it on the counter, and one more for the shelf" / "..., then another one on the shelf":
+# the task before for a second thing of its type, at this place ("and heat another mug and put it on the
+# shelf"); the task before one plain clause (`_ONE_TASK`)
+_ONE_MORE = re.compile(
+    r"(?P<join>,\s*(?:and\s+)?(?:then\s+)?|\s+and\s+(?:then\s+)?|\s+then\s+)(?:one\s+more|another(?:\s+one)?)\s+"
+    r"(?P<prep>for|on|in|into|onto|inside|to)\s+(?P<place>(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)(?=\s*(?:[,.;!?]|$))",
+    re.I,
+)
+_ONE_TASK = re.compile(
+    r"^(?P<verb>[a-z]+)\s+(?:the|a|an)\s+(?P<thing>[a-z]+(?:\s+[a-z]+)?)"
+    r"(?P<put>\s+and\s+[a-z]+\s+it)?\s+(?P<prep>in|into|on|onto|inside|to)\s+(?P<at>(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+){0,2})$",
+    re.I,
 )
 
 
 def repeated_for_another(text: str) -> str:
     """Each fragment sentence that repeats a plain one-task sentence for other things, written out."""
+    text = _GOES_SO.sub(_goes_there_too, text)
     text = _LIKEWISE_AGAIN.sub(lambda m: f"{m['np']} and ", text)
     text = _SAME_SAID.sub("do the same with ", text)
     text = _SAME_THEN.sub(lambda m: f"{m['head']}. Then do the same with {m['np']}", text)
@@ -141,6 +166,7 @@ def repeated_for_another(text: str) -> str:
     written = False  # the sentence split off by `_SAME_INSIDE` is kept only where its repeat is written out
     inline = _SAME_AND.sub(lambda m: _copy_inside(text, m), text)
     inline = _TOO_AND.sub(lambda m: _copy_inside(inline, m), inline)
+    inline = _ONE_MORE.sub(lambda m: _one_more(inline, m), inline)
     written = inline != text
     for s in _SENTENCE.finditer(_SAME_INSIDE.sub(lambda m: ". " + m["conn"].capitalize(), inline)):
         body = s.group(0)
@@ -174,27 +200,64 @@ def repeated_for_another(text: str) -> str:
     return "".join(out) if written else text
 
 
+def _goes_there_too(m: re.Match[str]) -> str:
+    """ "go on the table, and so does the knife" -> "go on the table, and the knife goes on the table"."""
+    return f"{m[0][: m.end('place') - m.start()]}, and {m['np']} {_go(m['np'])} {m['place']}"
+
+
+def _go(things: str) -> str:
+    """ "goes" after one thing, "go" after a list or a count ("the 2 pump bottles and 2 bars of soap")."""
+    return "go" if re.search(r"\band\b|^(?:two|three|four|\d+)\b|s$", things.strip(), re.I) else "goes"
+
+
 # a request's opening question, which the task copied for another thing does not repeat
 _ASKED = re.compile(r"^(?:(?:can|could|would|will)\s+(?:you|u)\s+)?(?:please\s+)?(?=[a-z])", re.I)
+
+
+def _one_more(text: str, m: re.Match[str]) -> str:
+    """ ", and one more for the shelf" after "heat a mug and put it on the counter": ", and heat another mug
+    and put it on the shelf", where the clause before is one plain task of one thing; else as said."""
+    start = max(text.rfind(c, 0, m.start()) for c in ".;!?\n") + 1
+    clause = text[start : m.start()].strip()
+    said = _ORDER_LEAD.match(clause)
+    task = _ONE_TASK.match(clause[said.end() :] if said else clause)
+    if not task or not categories(task["verb"].lower()) & _TASK_VERBS:
+        return m[0]
+    named = [x for x in find_mentions(task["thing"]) if not x.entry.generic]
+    placing = "verb_any" in categories(task["verb"].lower())  # "put a mug on", not "heat a mug and put it"
+    if len(named) != 1 or named[0].plural or (not task["put"]) != placing:
+        return m[0]
+    prep = task["prep"] if m["prep"].lower() == "for" else m["prep"]
+    place = f"{prep} {m['place']}"
+    verb = task["verb"].lower()
+    again = f"{verb} another {task['thing']}{task['put'] or ''} {place}"
+    return f"{m['join']}{again}"
 
 
 def _copy_inside(text: str, m: re.Match[str]) -> str:
     """ "Then turn on the lamp while holding the book, and do the same with the box": the clause before
     (its order word left out; or its last comma-separated part) written out for the box, where it is one
     plain task; the words as they were otherwise."""
-    things = [x for x in find_mentions(m["np"]) if not x.entry.generic]
+    np, join = m["np"] or m.groupdict().get("np2") or "", m["join"] or ", and "
+    things = [x for x in find_mentions(np) if not x.entry.generic]
     start = max(text.rfind(c, 0, m.start()) for c in ".;!?\n") + 1
     clause = _ASKED.sub("", text[start : m.start()].strip())  # "can you hold X ..., and do the same with Y"
     said = _ORDER_LEAD.match(clause)
     last = re.sub(r"^(?:and|then)\s+", "", clause.split(",")[-1].strip())
     tasks = [clause[said.end() :] if said else clause, last]
     for task in tasks:
-        copies = [c for c in (_with_thing(task.strip(), x, True, words=_phrase(m["np"], x)) for x in things) if c]
+        copies = [c for c in (_with_thing(task.strip(), x, True, words=_phrase(np, x)) for x in things) if c]
         if copies and len(copies) == len(things):  # "..., and do the same with a pillow and a clock"
-            return m["join"] + ", and ".join(c[:1].lower() + c[1:] for c in copies)
+            return join + ", and ".join(c[:1].lower() + c[1:] for c in copies)
+        if len(things) != 1 or not re.match(_COUNT, np, re.I):
+            continue
         counted = _COUNTED_TASK.match(task.strip())
-        if counted and len(things) == 1 and re.match(_COUNT, m["np"], re.I) and _one_thing(counted["thing"]):
-            return f"{m['join']}{counted['verb'].lower()} {m['np']} {counted['place']}"
+        if counted and _one_thing(counted["thing"]):
+            return f"{join}{counted['verb'].lower()} {np} {counted['place']}"
+        # "move the clock to the dresser, and two pencils too": a counted placing of its own (h216)
+        one = _ONE_TASK.match(task.strip())
+        if one and not one["put"] and "verb_any" in categories(one["verb"].lower()):
+            return f"{join}{one['verb'].lower()} {np} {one['prep']} {one['at']}"
     return m[0]
 
 
@@ -312,7 +375,8 @@ def _slice_word(toks: list[tuple[str, int, int]], i: int) -> bool:
     """Is the i-th word a slice word of a thing ("slice", "sliced") or the "of" after one ("slice of")?"""
     if toks[i][0] == "of":
         return i > 0 and "verb_sliced" in categories(toks[i - 1][0])
-    return "verb_sliced" in categories(toks[i][0]) and (toks[i][0].endswith("ed") or i + 1 < len(toks) and toks[i + 1][0] == "of")
+    of_next = i + 1 < len(toks) and toks[i + 1][0] == "of"
+    return "verb_sliced" in categories(toks[i][0]) and (toks[i][0].endswith("ed") or of_next)
 
 
 def _role(m: Mention, toks: list[tuple[str, int, int]]) -> str | None:
