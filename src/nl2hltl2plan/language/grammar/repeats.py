@@ -341,7 +341,8 @@ def _with_thing(
         return None
     said = {i for m in named for i in range(_det_at(m, toks) + 1, m.end)}  # a thing and the words before it
     plain, opening = (_PLAIN, _OPENING) if inside else (_PLAIN_ONE, _TASK_VERBS)
-    direct = all(_det_at(m, toks) == m.start - 1 for m in named)  # no word between a determiner and its thing
+    # no word between a determiner and its thing but a slice's ("a slice of tomato")
+    direct = all(all(_slice_word(toks, j) for j in range(_det_at(m, toks) + 1, m.start)) for m in named)
     kept = [m for m, role in zip(named, roles, strict=True) if role != "source"]  # "from the sink": left out
     if not inside and (len(kept) != 2 or kept[0] is not firsts[0] or not direct):
         return None
@@ -349,7 +350,7 @@ def _with_thing(
         if i not in said and word not in plain and not categories(word) & opening:
             return None
     # the thing (with the words between its determiner and it) replaced, a source ("from the shelf") left out
-    spans = [(toks[_det_at(m, toks) + 1][1], m.char_end, words) for m in firsts]
+    spans = [(toks[_after_det(m, toks, _sliced(words))][1], m.char_end, words) for m in firsts]
     sources = [m for m, role in zip(named, roles, strict=True) if role == "source"]
     spans += [(toks[_det_at(m, toks) - 1][1] - 1, m.char_end, "") for m in sources]
     for start, end, new in sorted(spans, reverse=True):
@@ -357,6 +358,15 @@ def _with_thing(
     article = "an" if words[:1].lower() in "aeiou" else "a"  # "an egg" copied for "a tomato"
     said_before = rf"\b[Aa]n?(?=\s+{re.escape(words)}\b)"
     return re.sub(said_before, lambda m: m[0][0] + article[1:], sentence, count=1)
+
+
+def _after_det(m: Mention, toks: list[tuple[str, int, int]], sliced: bool) -> int:
+    """Where the words replaced for a copy start: after the determiner, and after a slice's words unless the
+    copy says its own ("a slice of tomato ... Same for an apple": a slice of apple)."""
+    at = _det_at(m, toks) + 1
+    while not sliced and at < m.start and _slice_word(toks, at):
+        at += 1
+    return at
 
 
 def _det_at(m: Mention, toks: list[tuple[str, int, int]]) -> int:
