@@ -298,6 +298,11 @@ KNOWN_WRONG: set[str] = {
     # (the grammar's convention for "then" after a sentence of two tasks); the guide's "then": after B only
     "Look at the box on the table under the desk lamp and do the same with the plate on the little brown "
     "table. Then look at the credit card on the TV stand under the floor lamp.",
+    # h216's held-out half (scored once at 8d9ada15, read so on main too): "plus two heads of lettuce in the
+    # fridge too" after "a potato slice in a pan and the pan in the fridge" puts the lettuce in the pan
+    "Wash a slice of apple and put it on the dining table. Put a potato slice in a pan and the pan in the "
+    "fridge, plus two heads of lettuce in the fridge too. Don't forget to chill a tomato slice and put it in "
+    "the microwave.",
 }
 
 
