@@ -303,6 +303,11 @@ KNOWN_WRONG: set[str] = {
     "center table, and one more remote in a box, with the box on the sofa. The chair stuff first.",
     "Put the spatula in the sink. Heat a mug and a potato in the microwave and set them on the counter. "
     "Once they're on the counter, put two more potatoes in the microwave.",
+    # h216's held-out half (scored once at 8d9ada15, read so on main too): "plus two heads of lettuce in the
+    # fridge too" after "a potato slice in a pan and the pan in the fridge" puts the lettuce in the pan
+    "Wash a slice of apple and put it on the dining table. Put a potato slice in a pan and the pan in the "
+    "fridge, plus two heads of lettuce in the fridge too. Don't forget to chill a tomato slice and put it in "
+    "the microwave.",
 }
 
 

@@ -306,10 +306,10 @@ def _locative(
     i = preposition_before(toks, start, LOCATIVE)
     if _walked_to(toks, m.start):
         return True
-    # "close to the sink" is nearness, as "next to" ("close" alone is a verb)
-    close_to = 0 <= i < len(toks) - 1 and toks[i][0] == "close" and toks[i + 1][0] == "to"
-    if not close_to and (i < 0 or toks[i][0] not in LOCATIVE or looked_at(toks, i)):
-        return False  # "look at the box": what is examined
+    close_to = 0 <= i < len(toks) - 1 and toks[i][0] == "close" and toks[i + 1][0] == "to"  # as "next to"
+    sliced = toks[i][0] == "of" and "verb_sliced" in categories(toks[i - 1][0]) if i > 0 else False
+    if not close_to and (i < 0 or toks[i][0] not in LOCATIVE or looked_at(toks, i) or sliced):
+        return False  # "look at the box": what is examined; "a slice of apple": what is sliced (h216)
     if re.search(r"[,;:.!?]", instruction[toks[i][2] : toks[start][1]]):
         return False  # "in the drawer, also the ladle": a preposition's phrase never reaches over punctuation
     if source_at(instruction, toks, start):  # "from under the bed", "out of": where it is

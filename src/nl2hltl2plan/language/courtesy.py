@@ -75,6 +75,17 @@ _REMINDER = re.compile(
 )
 
 
+# "don't forget the spatula - it goes in the sink", "remember the mug: it goes ...": the thing reminded of is
+# the subject of the placing said after it ("the spatula goes in the sink"); a reminder of a thing with no
+# placing after it ("don't forget the mug") stays, to be read or refused
+_REMINDED_THING = re.compile(
+    rf"\b{courtesy_pattern('reminder', 'reminded')}\s+(?:about\s+)?"
+    r"(?P<np>(?:the|a|an|your|my|two|both)\s+[a-z]+(?:\s+[a-z]+){0,3}?)\s*(?:-+|–|—|,|:)\s*"
+    r"(?:it|they|that|that\s+one|this\s+one)\s+(?P<verb>goes|go|belongs|belong|needs\s+to\s+go|should\s+go)\b",
+    re.I,
+)
+
+
 def _reminded(m: re.Match[str]) -> str:
     """A reminder's replacement: nothing before a request, the negation it reminds of before one."""
     said = (m["not"] or m["neg"] or "").lower()
@@ -144,6 +155,7 @@ def without_courtesy(text: str) -> str:
     """
     out = _OPENING_OH_VERB.sub(_afterthought, _OPENING_OH.sub(r"\1Also ", _TRAILING.sub("", text)))
     out = _AFTERTHOUGHT.sub(". Also ", out)
+    out = _REMINDED_THING.sub(lambda m: f"{m['np']} {m['verb']}", out)
     out = _FRAME.sub(" ", _REMINDER.sub(_reminded, out))
     out = re.sub(r"\s+([,.;:!?])", r"\1", " ".join(out.split()))
     out = re.sub(r"^[\s,.;:!?]+", "", out)

@@ -117,13 +117,56 @@ _SAME_THEN = re.compile(
 )
 
 
+# "..., and so does the cup", "the same goes for the cup", "likewise the cup", "ditto for the cup": "do the
+# same with the cup" (h216); "likewise X, and likewise Y" is one list ("do the same with X and Y")
+_SAME_SAID = re.compile(
+    rf"\b(?:so\s+(?:does|do)|(?:the\s+)?same\s+goes\s+for|likewise(?:\s+(?:for|with))?|ditto\s+(?:for|with))\s+(?={_DET}\s)",
+    re.I,
+)
+# after a placing said with "goes" ("the cup and the pot both go on the table, and so does the knife"):
+# the things after it go there too ("..., and the knife goes on the table")
+_GOES_SO = re.compile(
+    r"\b(?P<verb>goes|go|belongs?)\s+(?P<place>(?:in|into|on|onto|inside|under)\s+(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)"
+    r"\s*,?\s+and\s+(?:so\s+(?:does|do)|(?:the\s+)?same\s+goes\s+for|likewise)\s+"
+    r"(?P<np>(?:the|a|an|two|three|four|\d+)\s+[^,.;!?]+?)(?=\s*(?:[,.;!?]|$))",
+    re.I,
+)
+_LIKEWISE_AGAIN = re.compile(rf"(?<=\blikewise\s)(?P<np>{_NP})\s*,?\s+and\s+likewise\s+(?={_DET}\s)", re.I)
+# "X, and the cup too" / "..., and a slice of potato as well" / "..., plus the cup" inside the sentence of a
+# plain task: "do the same with" said at the end (h216); a place after the thing ("and the cup in the sink
+# too") is no repeat
+_TOO_AND = re.compile(
+    rf"(?:(?P<join>,\s*and\s+|\s+and\s+)(?P<np>{_NPS}|{_COUNT}\s+{_W}(?:\s+{_W}){{0,3}})\s*,?\s+(?:too|as\s+well)"
+    rf"|(?P<plus>,\s*(?:and\s+)?plus\s+)(?P<np2>{_NPS}|{_COUNT}\s+{_W}(?:\s+{_W}){{0,3}}))(?=\s*(?:[,.;!?]|$))",
+    re.I,
+)
+# "heat a mug and put it on the counter, and one more for the shelf" / "..., then another one on the shelf":
+# the task before for a second thing of its type, at this place ("and heat another mug and put it on the
+# shelf"); the task before one plain clause (`_ONE_TASK`)
+_ONE_MORE = re.compile(
+    r"(?P<join>,\s*(?:and\s+)?(?:then\s+)?|\s+and\s+(?:then\s+)?|\s+then\s+)(?:one\s+more|another(?:\s+one)?)\s+"
+    r"(?P<prep>for|on|in|into|onto|inside|to)\s+(?P<place>(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)(?=\s*(?:[,.;!?]|$))",
+    re.I,
+)
+_ONE_TASK = re.compile(
+    r"^(?P<verb>[a-z]+)\s+(?:the|a|an)\s+(?P<thing>[a-z]+(?:\s+[a-z]+)?)"
+    r"(?P<put>\s+and\s+[a-z]+\s+it)?\s+(?P<prep>in|into|on|onto|inside|to)\s+(?P<at>(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+){0,2})$",
+    re.I,
+)
+
+
 def repeated_for_another(text: str) -> str:
     """Each fragment sentence that repeats a plain one-task sentence for other things, written out."""
+    text = _GOES_SO.sub(_goes_there_too, text)
+    text = _LIKEWISE_AGAIN.sub(lambda m: f"{m['np']} and ", text)
+    text = _SAME_SAID.sub("do the same with ", text)
     text = _SAME_THEN.sub(lambda m: f"{m['head']}. Then do the same with {m['np']}", text)
     out: list[str] = []
     task = ""  # the last sentence that is not a fragment
     written = False  # the sentence split off by `_SAME_INSIDE` is kept only where its repeat is written out
     inline = _SAME_AND.sub(lambda m: _copy_inside(text, m), text)
+    inline = _TOO_AND.sub(lambda m: _copy_inside(inline, m), inline)
+    inline = _ONE_MORE.sub(lambda m: _one_more(inline, m), inline)
     written = inline != text
     for s in _SENTENCE.finditer(_SAME_INSIDE.sub(lambda m: ". " + m["conn"].capitalize(), inline)):
         body = s.group(0)
@@ -132,7 +175,7 @@ def repeated_for_another(text: str) -> str:
         fragment = core[said.end() :] if said else core
         if task and REPEAT_FRAGMENT.match(fragment):
             things = [m for m in find_mentions(fragment) if not m.entry.generic]
-            copies = [c for c in (_with_thing(task, m) for m in things) if c]
+            copies = [c for c in (_with_thing(task, m, words=_phrase(fragment, m)) for m in things) if c]
             # after an order word, one thing only ("then the cup and the bowl": their own order unsaid)
             one = not said or len(things) == 1
             if things and len(copies) == len(things) and _only_things(fragment, things) and one:
@@ -157,27 +200,64 @@ def repeated_for_another(text: str) -> str:
     return "".join(out) if written else text
 
 
+def _goes_there_too(m: re.Match[str]) -> str:
+    """ "go on the table, and so does the knife" -> "go on the table, and the knife goes on the table"."""
+    return f"{m[0][: m.end('place') - m.start()]}, and {m['np']} {_go(m['np'])} {m['place']}"
+
+
+def _go(things: str) -> str:
+    """ "goes" after one thing, "go" after a list or a count ("the 2 pump bottles and 2 bars of soap")."""
+    return "go" if re.search(r"\band\b|^(?:two|three|four|\d+)\b|s$", things.strip(), re.I) else "goes"
+
+
 # a request's opening question, which the task copied for another thing does not repeat
 _ASKED = re.compile(r"^(?:(?:can|could|would|will)\s+(?:you|u)\s+)?(?:please\s+)?(?=[a-z])", re.I)
+
+
+def _one_more(text: str, m: re.Match[str]) -> str:
+    """ ", and one more for the shelf" after "heat a mug and put it on the counter": ", and heat another mug
+    and put it on the shelf", where the clause before is one plain task of one thing; else as said."""
+    start = max(text.rfind(c, 0, m.start()) for c in ".;!?\n") + 1
+    clause = text[start : m.start()].strip()
+    said = _ORDER_LEAD.match(clause)
+    task = _ONE_TASK.match(clause[said.end() :] if said else clause)
+    if not task or not categories(task["verb"].lower()) & _TASK_VERBS:
+        return m[0]
+    named = [x for x in find_mentions(task["thing"]) if not x.entry.generic]
+    placing = "verb_any" in categories(task["verb"].lower())  # "put a mug on", not "heat a mug and put it"
+    if len(named) != 1 or named[0].plural or (not task["put"]) != placing:
+        return m[0]
+    prep = task["prep"] if m["prep"].lower() == "for" else m["prep"]
+    place = f"{prep} {m['place']}"
+    verb = task["verb"].lower()
+    again = f"{verb} another {task['thing']}{task['put'] or ''} {place}"
+    return f"{m['join']}{again}"
 
 
 def _copy_inside(text: str, m: re.Match[str]) -> str:
     """ "Then turn on the lamp while holding the book, and do the same with the box": the clause before
     (its order word left out; or its last comma-separated part) written out for the box, where it is one
     plain task; the words as they were otherwise."""
-    things = [x for x in find_mentions(m["np"]) if not x.entry.generic]
+    np, join = m["np"] or m.groupdict().get("np2") or "", m["join"] or ", and "
+    things = [x for x in find_mentions(np) if not x.entry.generic]
     start = max(text.rfind(c, 0, m.start()) for c in ".;!?\n") + 1
     clause = _ASKED.sub("", text[start : m.start()].strip())  # "can you hold X ..., and do the same with Y"
     said = _ORDER_LEAD.match(clause)
     last = re.sub(r"^(?:and|then)\s+", "", clause.split(",")[-1].strip())
     tasks = [clause[said.end() :] if said else clause, last]
     for task in tasks:
-        copies = [c for c in (_with_thing(task.strip(), x, inside=True) for x in things) if c]
+        copies = [c for c in (_with_thing(task.strip(), x, True, words=_phrase(np, x)) for x in things) if c]
         if copies and len(copies) == len(things):  # "..., and do the same with a pillow and a clock"
-            return m["join"] + ", and ".join(c[:1].lower() + c[1:] for c in copies)
+            return join + ", and ".join(c[:1].lower() + c[1:] for c in copies)
+        if len(things) != 1 or not re.match(_COUNT, np, re.I):
+            continue
         counted = _COUNTED_TASK.match(task.strip())
-        if counted and len(things) == 1 and re.match(_COUNT, m["np"], re.I) and _one_thing(counted["thing"]):
-            return f"{m['join']}{counted['verb'].lower()} {m['np']} {counted['place']}"
+        if counted and _one_thing(counted["thing"]):
+            return f"{join}{counted['verb'].lower()} {np} {counted['place']}"
+        # "move the clock to the dresser, and two pencils too": a counted placing of its own (h216)
+        one = _ONE_TASK.match(task.strip())
+        if one and not one["put"] and "verb_any" in categories(one["verb"].lower()):
+            return f"{join}{one['verb'].lower()} {np} {one['prep']} {one['at']}"
     return m[0]
 
 
@@ -218,11 +298,26 @@ def _own_words_start(m: Mention, toks: list[tuple[str, int, int]]) -> int:
     return at + 1 if at >= 0 else m.start
 
 
-def _with_thing(sentence: str, thing: Mention, inside: bool = False, container: bool = False) -> str | None:
-    """`sentence` with its thing replaced by `thing` and its source left out, where it is a plain one-task
-    sentence (None else); for a fragment sentence (not `inside`), one of one thing and one place. With
-    `container`, a place named again as a thing ("put a vase in a box and set the box on the table") is
-    the container, still a place."""
+def _phrase(text: str, m: Mention) -> str:
+    """The words of `m`'s noun phrase after its determiner ("slice of potato" of "a slice of potato")."""
+    toks, i = tokens(text), m.start
+    while i > 0 and _slice_word(toks, i - 1):
+        i -= 1
+    return text[toks[i][1] : m.char_end]
+
+
+def _sliced(words: str) -> bool:
+    return any("verb_sliced" in categories(w) for w in re.findall(r"[a-z]+", words.lower()))
+
+
+def _with_thing(
+    sentence: str, thing: Mention, inside: bool = False, container: bool = False, words: str = ""
+) -> str | None:
+    """`sentence` with its thing replaced by `thing` (by `words`, its words after the determiner: "slice of
+    potato") and its source left out, where it is a plain one-task sentence (None else); for a fragment
+    sentence (not `inside`), one of one thing and one place. With `container`, a place named again as a
+    thing ("put a vase in a box and set the box on the table") is the container, still a place."""
+    words = words or thing.surface
     if thing.plural:
         return None
     toks = tokens(sentence)
@@ -239,13 +334,15 @@ def _with_thing(sentence: str, thing: Mention, inside: bool = False, container: 
     firsts = [m for m, role in zip(named, roles, strict=True) if role == "thing"]
     if None in roles or len(firsts) != 1 or "place" not in roles or len(toks) < 3 or firsts[0].plural:
         return None
-    if firsts[0].entry.types[0] == thing.entry.types[0]:
+    own = sentence[toks[_det_at(firsts[0], toks) + 1][1] : firsts[0].char_end]
+    if firsts[0].entry.types[0] == thing.entry.types[0] and _sliced(own) == _sliced(words):
         return None  # "the mug ... Same for the coffee mug": one type, the atoms cannot tell them apart
     if not categories(toks[0][0]) & _OPENING:
         return None
     said = {i for m in named for i in range(_det_at(m, toks) + 1, m.end)}  # a thing and the words before it
     plain, opening = (_PLAIN, _OPENING) if inside else (_PLAIN_ONE, _TASK_VERBS)
-    direct = all(_det_at(m, toks) == m.start - 1 for m in named)  # no word between a determiner and its thing
+    # no word between a determiner and its thing but a slice's ("a slice of tomato")
+    direct = all(all(_slice_word(toks, j) for j in range(_det_at(m, toks) + 1, m.start)) for m in named)
     kept = [m for m, role in zip(named, roles, strict=True) if role != "source"]  # "from the sink": left out
     if not inside and (len(kept) != 2 or kept[0] is not firsts[0] or not direct):
         return None
@@ -253,24 +350,43 @@ def _with_thing(sentence: str, thing: Mention, inside: bool = False, container: 
         if i not in said and word not in plain and not categories(word) & opening:
             return None
     # the thing (with the words between its determiner and it) replaced, a source ("from the shelf") left out
-    spans = [(toks[_det_at(m, toks) + 1][1], m.char_end, thing.surface) for m in firsts]
+    spans = [(toks[_after_det(m, toks, _sliced(words))][1], m.char_end, words) for m in firsts]
     sources = [m for m, role in zip(named, roles, strict=True) if role == "source"]
     spans += [(toks[_det_at(m, toks) - 1][1] - 1, m.char_end, "") for m in sources]
     for start, end, new in sorted(spans, reverse=True):
         sentence = sentence[:start] + new + sentence[end:]
-    article = "an" if thing.surface[:1].lower() in "aeiou" else "a"  # "an egg" copied for "a tomato"
-    said_before = rf"\b[Aa]n?(?=\s+{re.escape(thing.surface)}\b)"
+    article = "an" if words[:1].lower() in "aeiou" else "a"  # "an egg" copied for "a tomato"
+    said_before = rf"\b[Aa]n?(?=\s+{re.escape(words)}\b)"
     return re.sub(said_before, lambda m: m[0][0] + article[1:], sentence, count=1)
+
+
+def _after_det(m: Mention, toks: list[tuple[str, int, int]], sliced: bool) -> int:
+    """Where the words replaced for a copy start: after the determiner, and after a slice's words unless the
+    copy says its own ("a slice of tomato ... Same for an apple": a slice of apple)."""
+    at = _det_at(m, toks) + 1
+    while not sliced and at < m.start and _slice_word(toks, at):
+        at += 1
+    return at
 
 
 def _det_at(m: Mention, toks: list[tuple[str, int, int]]) -> int:
     """The index of the determiner that opens `m`'s noun phrase (the words between are its own); -1: none."""
     for i in range(m.start - 1, 0, -1):
+        if _slice_word(toks, i):  # "a slice of tomato", "a sliced apple": the thing's own words
+            continue
         if toks[i][0] in DETERMINERS:
             return i
         if toks[i][0] in _PLAIN or categories(toks[i][0]):
             return -1
     return -1
+
+
+def _slice_word(toks: list[tuple[str, int, int]], i: int) -> bool:
+    """Is the i-th word a slice word of a thing ("slice", "sliced") or the "of" after one ("slice of")?"""
+    if toks[i][0] == "of":
+        return i > 0 and "verb_sliced" in categories(toks[i - 1][0])
+    of_next = i + 1 < len(toks) and toks[i + 1][0] == "of"
+    return "verb_sliced" in categories(toks[i][0]) and (toks[i][0].endswith("ed") or of_next)
 
 
 def _role(m: Mention, toks: list[tuple[str, int, int]]) -> str | None:

@@ -28,6 +28,7 @@ from __future__ import annotations
 
 import re
 
+from nl2hltl2plan.language.content_words import categories
 from nl2hltl2plan.language.grounding import RECEPTACLES, Mention, find_mentions
 
 _PLACE = r"(?:on|onto|in|into|inside)"
@@ -106,9 +107,37 @@ _INVERTED_AFTER = re.compile(
     re.I,
 )
 
+# "the lotion and the tissues both go on the tank", "a bowl, a pan and a pot each go in the sink": after a
+# list of things "both" / "each" / "all" counts nothing of its own (each thing is a task of its own) (h216)
+_EACH_OF_LIST = re.compile(
+    rf"{_CLAUSE_START}(?P<objs>(?:the|a|an)\s+[^.;!?]*?\band\s+(?:the|a|an)\s+[^.;!?]+?)\s+(?:both|each|all)\s+"
+    rf"(?=(?:go|belong|(?:need|have)\s+to\s+go|should\s+go)\s+{_PLACE}\s)",
+    re.I,
+)
+
+# "wash the ladle and put it in a drawer, and the two spatulas go in a drawer as well": a placing said with
+# "goes" after a task's clause is a request of its own ("and put the two spatulas in a drawer"); left
+# verbless, its counted things were read as a second object of the clause before (h216)
+_AND_GOES = re.compile(
+    r",\s*and\s+(?P<np>(?:the|a|an|two|both|three)\s+[^,.;!?]+?)\s+(?:goes|go|belongs?|should\s+go)\s+"
+    rf"(?={_PLACE}\s)",
+    re.I,
+)
+_TASK_VERB = frozenset({"verb_any", "verb_clean_place", "verb_heat_place", "verb_cool_place"})
+
+
+def _and_put(text: str, m: re.Match[str]) -> str:
+    """ ", and put X " where a task verb comes before in the sentence and X names a thing; else as said."""
+    start = max(text.rfind(c, 0, m.start()) for c in ".;!?\n") + 1
+    verbs = any(categories(w) & _TASK_VERB for w in re.findall(r"[a-z]+", text[start : m.start()].lower()))
+    named = any(not x.entry.generic for x in find_mentions(m["np"]))
+    return f", and put {m['np']} " if verbs and named else m[0]
+
 
 def restated(text: str) -> str:
     """The text with the restated requests above written as plain placements."""
+    text = _AND_GOES.sub(lambda m: _and_put(text, m), text)
+    text = _EACH_OF_LIST.sub(lambda m: m[0][: m.end("objs") - m.start()] + " ", text)
     text = _ONE.sub(lambda m: _one_named(text, m), text)
     text = _COUNTED_HEADER.sub(lambda m: _without_header(text, m), text)
     text = _TOPIC_HEADER.sub(_topic_clause, text)
