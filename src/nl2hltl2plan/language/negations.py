@@ -32,6 +32,7 @@ from dataclasses import dataclass
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.content_words import Unread, categories, stems
+from nl2hltl2plan.language.counts import all_but_said
 from nl2hltl2plan.language.grounding import (
     AffordanceLookup,
     Grounder,
@@ -516,12 +517,8 @@ def unmoved_said(text: str) -> str:
     return _KEPT_AS_IT_IS.sub(unmoved, text)
 
 
-# "put all but the mug in the sink", "every item but the apple": an exclusion from a whole that no rule reads
-# (the grammar moved the mug itself); "Rather than the mug, the apple." on its own, with no verb: a swap of
-# which request is unclear (the grammar read both as more items). h208
-_ALL_BUT = re.compile(
-    r"\b(?:everything|anything|every\s+[a-z]+|all(?:\s+(?:the|of))?(?:\s+[a-z]+)?)\s+but\b", re.I
-)
+# "Rather than the mug, the apple." on its own, with no verb: a swap of which request is unclear (the grammar
+# read both as more items); "all but the mug" is `counts.all_but_said`'s. h208
 _BARE_SWAP = re.compile(
     r"(?:^|(?<=[.;!?]))\s*(?:rather\s+than|instead\s+of)\s+(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?\s*,\s*"
     r"(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?\s*(?=[.;!?]|$)",
@@ -546,9 +543,10 @@ def exclusions_unread(text: str) -> list[Unread]:
     >>> [u.words for u in exclusions_unread("Put the apple in the sink. Actually leave the apple.")]
     ['Actually leave the apple']
     """
-    found = [*_ALL_BUT.finditer(text), *_BARE_SWAP.finditer(text), *_BARE_LEAVE.finditer(text)]
+    bare = [*_BARE_SWAP.finditer(text), *_BARE_LEAVE.finditer(text)]
+    found = [*all_but_said(text), *(m[0].strip() for m in bare)]
     why = "an exclusion, a swap or a bare 'leave' that no rule reads: say each thing to move"
-    return [Unread(m[0].strip(), "negation", why) for m in found]
+    return [Unread(words, "negation", why) for words in found]
 
 
 # "Instead of putting the mug in the sink, put it in the fridge": the grammar read "in the sink" as
