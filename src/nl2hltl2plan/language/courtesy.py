@@ -162,6 +162,13 @@ _GREETING = re.compile(
     rf"(?:{courtesy_pattern('greeting', 'address', 'greeting_with')}\s*)+[!.,]+\s*(?=\w)",
     re.I,
 )
+# a note's heading, the one pattern of it: "Note:", "A message for the robot:" (an address; `without_call`
+# drops it), "Note for Sam:", "Note for whoever's home first:" (a name or whoever comes: `without_greetings`
+# drops it, unless the name is a thing): it only says who the text is for and names no task
+_NOTE_HEADING = (
+    rf"(?:a\s+)?{courtesy_pattern('note')}(?:\s+(?:for|to)\s+(?:(?P<name>(?-i:[A-Z][a-z]+))|"
+    rf"(?P<whoever>{courtesy_pattern('note_for')})|(?:the\s+)?{courtesy_pattern('address')}))?\s*:\s*"
+)
 # a call run on into the request at a sentence's start, or set apart by a colon or a dash ("Robot: after you
 # put ..."), a note's heading ("Note for the robot:"), which
 # only says who the text is for, or a spoken opener before a name ("so the tomato goes ...") (`without_call`)
@@ -169,19 +176,15 @@ _CALLED = re.compile(
     rf"{_OPENS}(?:(?:{courtesy_pattern('spoken_opener', 'greeting', 'greeting_with')}\s*,?\s*)+"
     rf"{courtesy_pattern('address')}\s+|{courtesy_pattern('address')}\s*(?::|\s[-\u2013\u2014]+)\s*|"
     rf"{courtesy_pattern('address')}\s+(?=(?:can|could|would|will)\s+you\b|please\b)|"
-    rf"(?:a\s+)?(?:note|message)(?:\s+(?:for|to)\s+(?:the\s+)?{courtesy_pattern('address')})?\s*:\s*|"
+    rf"{_NOTE_HEADING}|"
     rf"(?:{courtesy_pattern('spoken_opener')}\s+)+(?=(?:the|a|an)\s))"
     r"(?=[a-z])",
     re.I,
 )
 _REPLY = re.compile(rf"{_OPENS}{courtesy_pattern('reply')}\s*[!.,]+\s*(?=\w)", re.I)
 _THANKS = re.compile(rf"(?<=[.!?])\s*{courtesy_pattern('closing')}\s*[!.]*\s*$", re.IGNORECASE)
-# a note's heading naming who it is for ("Note for Sam:", "Note for whoever's home first:"): it names no task
-_NOTE_FOR = re.compile(
-    rf"{_OPENS}(?:a\s+)?{courtesy_pattern('note')}\s+(?:for|to)\s+"
-    rf"(?:(?P<name>(?-i:[A-Z][a-z]+))|{courtesy_pattern('note_for')})\s*:\s*(?=\S)",
-    re.I,
-)
+# a note's heading naming who it is for ("Note for Sam:", "Note for whoever's home first:"), `_NOTE_HEADING`
+_NOTE_FOR = re.compile(rf"{_OPENS}{_NOTE_HEADING}(?=\S)", re.I)
 _SIGN_OFF = re.compile(rf"(?<=[.!?])\s*(?i:{courtesy_pattern('sign_off')})\s*,\s*(?P<name>[A-Z][a-z]+)\W*$")
 
 
@@ -243,11 +246,16 @@ def without_greetings(text: str, names_a_thing: Callable[[str], bool]) -> str:
     while opened != text:  # "Hi! Sure thing! ..."
         opened = text
         text = _REPLY.sub(lambda m: m["lead"], _GREETING.sub(lambda m: m["lead"], text))
-    text = _NOTE_FOR.sub(lambda m: m[0] if m["name"] and names_a_thing(m["name"]) else m["lead"], text)
+    text = _NOTE_FOR.sub(lambda m: m["lead"] if _for_someone(m, names_a_thing) else m[0], text)
     sign_off = _SIGN_OFF.search(text)
     if sign_off and not names_a_thing(sign_off["name"]):
         text = text[: sign_off.start()]
     return _THANKS.sub("", text).strip()
+
+
+def _for_someone(m: re.Match[str], names_a_thing: Callable[[str], bool]) -> bool:
+    """Does a note's heading name a person (a name that is no thing) or whoever comes?"""
+    return bool(m["whoever"] or (m["name"] and not names_a_thing(m["name"])))
 
 
 def without_call(text: str) -> str:
@@ -263,7 +271,8 @@ def without_call(text: str) -> str:
     >>> without_call("robot arms must not touch the mug")
     'robot arms must not touch the mug'
     """
-    return _CALLED.sub(lambda m: m["lead"], text)
+    # a note's heading for a name `without_greetings` kept (a thing: "Note for Mug:") stays
+    return _CALLED.sub(lambda m: m[0] if m["name"] else m["lead"], text)
 
 
 # a request passed on ("Mom says put ...", "she also says chill ..."), a note's "P.S." opening a sentence, a
