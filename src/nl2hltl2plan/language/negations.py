@@ -547,27 +547,3 @@ def exclusions_unread(text: str) -> list[Unread]:
     found = [*all_but_said(text), *(m[0].strip() for m in bare)]
     why = "an exclusion, a swap or a bare 'leave' that no rule reads: say each thing to move"
     return [Unread(words, "negation", why) for words in found]
-
-
-# "Instead of putting the mug in the sink, put it in the fridge": the grammar read "in the sink" as
-# washing (clean_place Mug -> Fridge, exit 0); said as the negation it is: "don't put the mug in ...". h208
-_INSTEAD_OF_DOING = re.compile(
-    r"(?:^|(?<=[.;!?])\s+)(?:instead\s+of|rather\s+than)\s+(?P<verb>[a-z]+ing)\b(?=[^.;!?,]*,\s*\w)", re.I
-)
-
-
-def instead_said(text: str) -> str:
-    """`text` with a sentence that opens "instead of / rather than" and an action word ending in -ing said as
-    "don't" and the action (the household reader's `as_read`); any other opening stays as said.
-
-    >>> instead_said("Instead of putting the mug in the sink, put it in the fridge.")
-    "don't put the mug in the sink, put it in the fridge."
-    """
-
-    def negated(m: re.Match[str]) -> str:
-        said = m["verb"].lower()  # the -ing form itself is a verb too (`categories` stems it)
-        verbs = [v for v in sorted(stems(said) - {said}) if any(c.startswith("verb_") for c in categories(v))]
-        lead = m[0][: len(m[0]) - len(m[0].lstrip())]
-        return f"{lead}don't {verbs[0]}" if len(verbs) == 1 else m[0]
-
-    return _INSTEAD_OF_DOING.sub(negated, text)
