@@ -106,3 +106,7 @@ def test_a_count_of_jobs_in_the_heading_is_checked_against_the_reading() -> None
     assert tasks == [EGG, MUG] and unparsed == []
     tasks, _, unparsed, _ = read("Kiddo, three jobs: put the egg in the fridge and the mug in the sink.")
     assert any("'three jobs' (count)" in u for u in unparsed), unparsed
+    # the note's count is the headings' one pattern (`headings._counted`): "we have ... to do" around it too
+    said = "Kiddo, we have three jobs to do: put the egg in the fridge and the mug in the sink."
+    tasks, _, unparsed, _ = read(said)
+    assert any("three jobs to do" in u for u in unparsed), unparsed

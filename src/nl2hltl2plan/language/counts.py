@@ -53,8 +53,24 @@ def _next_mention(mentions: list[Mention], words: list[str], i: int, within: int
 _PLACE_PREPS = (LOCATIVE - {"of"}) | {"to", "into", "onto"}
 
 
-# "all (of) the mugs but one / except the first / save two" (read as every mug, at exit 0)
+# "all but": the one owner of a whole said with what it leaves out. After a counted noun, "all (of) the mugs
+# but one / except the first / save two" (read as every mug, at exit 0: a vague count); before anything, "put
+# all but the mug in the sink", "every item but the apple" (an exclusion no rule reads: the grammar moved the
+# mug itself, h208), `all_but_said`
 _ALL_BUT = re.compile(r"\s+(?:but|except|save|apart\s+from)\s+(?:for\s+)?(?:one|two|three|the\s+\w+)\b", re.I)
+_WHOLE_BUT = re.compile(
+    r"\b(?:everything|anything|every\s+[a-z]+|all(?:\s+(?:the|of))?(?:\s+[a-z]+)?)\s+but\b", re.I
+)
+
+
+def all_but_said(text: str) -> list[str]:
+    """The words of each whole said with an exclusion ("all but", "every item but") in `text`, which the
+    household reader names unread (`negations.exclusions_unread`).
+
+    >>> all_but_said("Put all but the mug away, and every item but the egg in the fridge.")
+    ['all but', 'every item but']
+    """
+    return [m[0].strip() for m in _WHOLE_BUT.finditer(text)]
 
 
 def _both_of_more(words: list[str], i: int) -> str | None:

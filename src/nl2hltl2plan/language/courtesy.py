@@ -22,6 +22,7 @@ from __future__ import annotations
 import re
 from collections.abc import Callable
 from functools import cache
+from typing import NamedTuple
 
 from nl2hltl2plan.language.content_words import Unread, categories, phrase_list_pattern, phrase_words
 
@@ -174,6 +175,13 @@ _GREETING = re.compile(
     rf"(?:{courtesy_pattern('greeting', 'address', 'greeting_with')}\s*)+[!.,]+\s*(?=\w)",
     re.I,
 )
+# a note's heading, the one pattern of it: "Note:", "A message for the robot:" (an address; `without_call`
+# drops it), "Note for Sam:", "Note for whoever's home first:" (a name or whoever comes: `without_greetings`
+# drops it, unless the name is a thing): it only says who the text is for and names no task
+_NOTE_HEADING = (
+    rf"(?:a\s+)?{courtesy_pattern('note')}(?:\s+(?:for|to)\s+(?:(?P<name>(?-i:[A-Z][a-z]+))|"
+    rf"(?P<whoever>{courtesy_pattern('note_for')})|(?:the\s+)?{courtesy_pattern('address')}))?\s*:\s*"
+)
 # a call run on into the request at a sentence's start, or set apart by a colon or a dash ("Robot: after you
 # put ..."), a note's heading ("Note for the robot:"), which
 # only says who the text is for, or a spoken opener before a name ("so the tomato goes ...") (`without_call`)
@@ -181,24 +189,20 @@ _CALLED = re.compile(
     rf"{_OPENS}(?:(?:{courtesy_pattern('spoken_opener', 'greeting', 'greeting_with')}\s*,?\s*)+"
     rf"{courtesy_pattern('address')}\s+|{courtesy_pattern('address')}\s*(?::|\s[-\u2013\u2014]+)\s*|"
     rf"{courtesy_pattern('address')}\s+(?=(?:can|could|would|will)\s+you\b|please\b)|"
-    rf"(?:a\s+)?(?:note|message)(?:\s+(?:for|to)\s+(?:the\s+)?{courtesy_pattern('address')})?\s*:\s*|"
+    rf"{_NOTE_HEADING}|"
     rf"(?:{courtesy_pattern('spoken_opener')}\s+)+(?=(?:the|a|an)\s))"
     r"(?=[a-z])",
     re.I,
 )
 _REPLY = re.compile(rf"{_OPENS}{courtesy_pattern('reply')}\s*[!.,]+\s*(?=\w)", re.I)
 _THANKS = re.compile(rf"(?<=[.!?])\s*{courtesy_pattern('closing')}\s*[!.]*\s*$", re.IGNORECASE)
-# a note's heading naming who it is for ("Note for Sam:", "Note for whoever's home first:"): it names no task
-_NOTE_FOR = re.compile(
-    rf"{_OPENS}(?:a\s+)?{courtesy_pattern('note')}\s+(?:for|to)\s+"
-    rf"(?:(?P<name>(?-i:[A-Z][a-z]+))|{courtesy_pattern('note_for')})\s*:\s*(?=\S)",
-    re.I,
-)
+# a note's heading naming who it is for ("Note for Sam:", "Note for whoever's home first:"), `_NOTE_HEADING`
+_NOTE_FOR = re.compile(rf"{_OPENS}{_NOTE_HEADING}(?=\S)", re.I)
 _SIGN_OFF = re.compile(rf"(?<=[.!?])\s*(?i:{courtesy_pattern('sign_off')})\s*,\s*(?P<name>[A-Z][a-z]+)\W*$")
 
 
 # a closing thanks or sign-off before a lone name that is also a thing ("Cheers, Mug", "Thanks! - Bread",
-# "Thank you mug!"): `without_greetings` keeps it, and the grammar would read the thing as one more item
+# "Thank you mug!"): `greeted` keeps it and reports it (the grammar would read the thing as one more item)
 _THING_SIGN_OFF = re.compile(
     rf"(?<=[.!?])\s*(?i:{courtesy_pattern('sign_off')}|{courtesy_pattern('closing')})\s*[!.,:]*\s*(?:[-\u2013\u2014]+\s*)?"
     r"(?i:the\s+)?(?P<name>[A-Za-z]+)\W*$"
@@ -218,48 +222,63 @@ def thanked_for(text: str) -> list[str]:
     return [m[0] for m in _THANKED_FOR.finditer(text)]
 
 
-def signed_thing(text: str, names_a_thing: Callable[[str], bool]) -> str | None:
-    """The closing words of `text` when they are a thanks or a sign-off before a lone name that is also a
-    thing: a name or one more item, no reading can tell, so the reader names them unread.
-
-    >>> signed_thing("Put the egg in the fridge. Cheers, Mug", lambda name: name.lower() == "mug")
-    'Cheers, Mug'
-    >>> signed_thing("Put the egg in the fridge. Cheers, Ana", lambda name: name.lower() == "mug")
-    """
-    found = _THING_SIGN_OFF.search(text)
-    return found[0].strip() if found and names_a_thing(found["name"]) else None
-
-
 def courtesy_unread(text: str, names_a_thing: Callable[[str], bool]) -> list[Unread]:
     """The courtesy no reading can tell the meaning of, named unread: a sign-off's name that is also a thing
-    (`signed_thing`) and thanks for an action (`thanked_for`)."""
-    signed = signed_thing(text, names_a_thing)
+    (`greeted` keeps it) and thanks for an action (`thanked_for`)."""
+    signed = greeted(text, names_a_thing).signed_thing
     name_why = "a sign-off's name that is also a thing: say the thing in a request of its own"
     thanks_why = "thanks for what may be done already: say what is still to do"
     thanked = [Unread(words, "action", thanks_why) for words in thanked_for(text)]
     return [*([Unread(signed, "object", name_why)] if signed else []), *thanked]
 
 
-def without_greetings(text: str, names_a_thing: Callable[[str], bool]) -> str:
+class Greeted(NamedTuple):
+    """A text as `greeted` leaves it, and the sign-off it kept because its name is also a thing ("Cheers,
+    Mug", "Thanks! - Bread", "Thank you mug!": a name or one more item, no reading can tell)."""
+
+    text: str
+    signed_thing: str | None
+
+
+def greeted(text: str, names_a_thing: Callable[[str], bool]) -> Greeted:
     """`text` without a greeting set apart at any sentence's start ("Hi there,", "Good morning!"), before
     any clause ("Hey, when you're done, put ..." is "when you're done, put ..."), an agent's reply set apart
     there (`reply`: "No problem!", "Sure thing!"), a closing sentence that only thanks ("Thanks!") and a
-    sign-off with a name ("Cheers, Ana") unless `names_a_thing(name)`. The one greeting policy of every
-    reader that removes greetings (household, tabletop). A greeting that goes on ("Hey robot put ...") stays,
-    as does a closing "thanks" with more to say ("Thanks, but not the orange").
+    sign-off with a name ("Cheers, Ana"); a closing thanks or sign-off before a name that is a thing
+    (`names_a_thing(name)`) stays, and is reported. A greeting that goes on ("Hey robot put ...") stays, as
+    does a closing "thanks" with more to say ("Thanks, but not the orange").
 
-    >>> without_greetings("Hey, when you're done, put the mug in the sink. Hi there! Put the egg away.", bool)
-    "when you're done, put the mug in the sink. Put the egg away."
+    >>> greeted("Put the egg in the fridge. Cheers, Mug", lambda name: name.lower() == "mug")
+    Greeted(text='Put the egg in the fridge. Cheers, Mug', signed_thing='Cheers, Mug')
+    >>> greeted("Put the egg in the fridge. Cheers, Ana", lambda name: name.lower() == "mug")
+    Greeted(text='Put the egg in the fridge.', signed_thing=None)
     """
+    kept = _THING_SIGN_OFF.search(text)
+    signed = kept[0].strip() if kept and names_a_thing(kept["name"]) else None
     opened = None
     while opened != text:  # "Hi! Sure thing! ..."
         opened = text
         text = _REPLY.sub(lambda m: m["lead"], _GREETING.sub(lambda m: m["lead"], text))
-    text = _NOTE_FOR.sub(lambda m: m[0] if m["name"] and names_a_thing(m["name"]) else m["lead"], text)
+    text = _NOTE_FOR.sub(lambda m: m["lead"] if _for_someone(m, names_a_thing) else m[0], text)
     sign_off = _SIGN_OFF.search(text)
     if sign_off and not names_a_thing(sign_off["name"]):
         text = text[: sign_off.start()]
-    return _THANKS.sub("", text).strip()
+    return Greeted(_THANKS.sub("", text).strip(), signed)
+
+
+def without_greetings(text: str, names_a_thing: Callable[[str], bool]) -> str:
+    """`text` as `greeted` leaves it: the one greeting policy of every reader that removes greetings
+    (household, tabletop).
+
+    >>> without_greetings("Hey, when you're done, put the mug in the sink. Hi there! Put the egg away.", bool)
+    "when you're done, put the mug in the sink. Put the egg away."
+    """
+    return greeted(text, names_a_thing).text
+
+
+def _for_someone(m: re.Match[str], names_a_thing: Callable[[str], bool]) -> bool:
+    """Does a note's heading name a person (a name that is no thing) or whoever comes?"""
+    return bool(m["whoever"] or (m["name"] and not names_a_thing(m["name"])))
 
 
 def without_call(text: str) -> str:
@@ -275,7 +294,8 @@ def without_call(text: str) -> str:
     >>> without_call("robot arms must not touch the mug")
     'robot arms must not touch the mug'
     """
-    return _CALLED.sub(lambda m: m["lead"], text)
+    # a note's heading for a name `without_greetings` kept (a thing: "Note for Mug:") stays
+    return _CALLED.sub(lambda m: m[0] if m["name"] else m["lead"], text)
 
 
 # a request passed on ("Mom says put ...", "she also says chill ..."), a note's "P.S." opening a sentence, a

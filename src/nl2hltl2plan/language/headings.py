@@ -74,23 +74,23 @@ _TASK_NOUNS = "things?|tasks?|jobs?|placements?|moves?|items?|errands?|chores?|a
 _STAGE_NOUNS = "stages?|steps?|parts?|phases?|rounds?|batch(?:es)?"
 # "one more thing:", "two last things:": what is added, not how many there are
 _NOT_A_TOTAL = "(?:more|other|last|final|further|extra|additional|remaining)"
-_COUNTED = re.compile(
-    # "there are", "we have", "today the robot has": who has the things to do is the one asked
-    rf"{_START}(?:(?:(?:today|now),?\s+)?(?:there\s+are|here\s+are|(?:we|you|i)\s+have|(?:the\s+robot|it)\s+has)\s+)?"
-    rf"(?P<phrase>(?P<count>\d|{'|'.join(_COUNT_WORDS)})\s+(?:(?!{_NOT_A_TOTAL}\b)[a-z]+\s+)?(?:(?P<stages>{_STAGE_NOUNS})|{_TASK_NOUNS})"
-    r"(?:\s+(?:to\s+(?:do|place|make|carry\s+out)|in\s+(?:all|total)|for\s+(?:you|the\s+robot|today)))?)"
-    r"\s*(?P<end>[:.!,]|\s-+\s|\s*[—–])",
-    re.I,
-)
+def _counted(start: str) -> re.Pattern[str]:
+    """A heading that counts what follows (its tasks, or the stages they come in), after `start`."""
+    return re.compile(
+        # "there are", "we have", "today the robot has": who has the things to do is the one asked
+        rf"{start}(?:(?:(?:today|now),?\s+)?(?:there\s+are|here\s+are|(?:we|you|i)\s+have|(?:the\s+robot|it)\s+has)\s+)?"
+        rf"(?P<phrase>(?P<count>\d|{'|'.join(_COUNT_WORDS)})\s+(?:(?!{_NOT_A_TOTAL}\b)[a-z]+\s+)?(?:(?P<stages>{_STAGE_NOUNS})|{_TASK_NOUNS})"
+        r"(?:\s+(?:to\s+(?:do|place|make|carry\s+out)|in\s+(?:all|total)|for\s+(?:you|the\s+robot|today)))?)"
+        r"\s*(?P<end>[:.!,]|\s-+\s|\s*[—–])",
+        re.I,
+    )
 
 
+_COUNTED = _counted(_START)
 # a note's count of its jobs, also after an address or its writer ("Kiddo, three jobs: ...", "Mum here - two
-# things: ..."), which the household framing drops with the words before it (`courtesy`): its reader checks it
-_NOTE_COUNT = re.compile(
-    rf"(?:^|[.!?;,]\s*|\s[-–—]+\s*)(?P<phrase>(?P<count>\d|{'|'.join(_COUNT_WORDS)})\s+"
-    rf"(?:(?!{_NOT_A_TOTAL}\b)[a-z]+\s+)?(?:{_TASK_NOUNS}))\s*:",
-    re.I,
-)
+# things: ..."), which the household framing drops with the words before it (`courtesy`): its reader checks
+# the tasks counted before a colon (`note_counts`)
+_NOTE_COUNT = _counted(r"(?:^|[.!?;,]\s*|\s[-–—]+\s*)")
 
 
 class CountedHeading(NamedTuple):
@@ -130,6 +130,8 @@ def note_counts(text: str) -> list[CountedHeading]:
     """
     out = []
     for m in _NOTE_COUNT.finditer(text):
+        if m["stages"] or m["end"] != ":":
+            continue
         word = m["count"].lower()
         count = int(word) if word.isdigit() else _COUNT_WORDS[word]
         out.append(CountedHeading(m["phrase"], count, False, m.span("phrase")))

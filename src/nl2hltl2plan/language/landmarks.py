@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Callable
+from pathlib import Path
 
 from nl2hltl2plan.language.content_words import DETERMINERS, Unread, categories, stems, verb_places
 from nl2hltl2plan.language.grounding import RECEPTACLES, Mention, alfred_lookup, find_mentions
@@ -273,3 +274,36 @@ def wished_put(text: str, wish: re.Pattern[str]) -> str:
         return "put " + places_as_sources(m["thing"]) + " " if find_mentions(m["thing"]) else m[0]
 
     return said.sub(put, text)
+
+
+# "put away the mug in the sink": the one place after "put away X" where things are left out, not stored
+# (`left_out_places.txt`): where the mug is now (put away from the sink), or where it goes? (h206, read as
+# the sink, at exit 0); "put away the mug in the cabinet", "put the mug away in the sink" stay the grammar's
+_NAMED = r"(?:the|a|an|my|your)\s+[a-z]+(?:\s+(?!(?:and|then|please|in|on|into|onto|inside)\b)[a-z]+)?"
+_PUT_AWAY_IN = re.compile(
+    rf"\b(?:put|place|set)\s+away\s+(?P<thing>{_NAMED})\s+(?:in|on|into|onto|inside)\s+(?P<place>{_NAMED})"
+    r"\s*(?=[.,;!?]|$|\s+(?:and|then|please)\b)",
+    re.I,
+)
+_LEFT_OUT = frozenset(
+    w
+    for line in (Path(__file__).parent / "left_out_places.txt").read_text().splitlines()
+    if not line.startswith("#")
+    for w in line.split()
+)
+
+
+def put_away_unread(text: str) -> list[Unread]:
+    """ "put away X in P" where P is a place where things are left out: named unread, as no reading can tell
+    whether P is where X is or where it goes.
+
+    >>> [u.words for u in put_away_unread("Put away the mug in the sink. Put away the cup in the cabinet.")]
+    ['Put away the mug in the sink']
+    """
+    out = []
+    for m in _PUT_AWAY_IN.finditer(text):
+        named = find_mentions(m["place"].lower())
+        if len(named) == 1 and set(named[0].entry.types) <= _LEFT_OUT:
+            why = f"is {m['place']} where {m['thing']} is, or where it goes? say where to put it away"
+            out.append(Unread(m[0].strip(), "place", why))
+    return out

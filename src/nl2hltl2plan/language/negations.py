@@ -32,6 +32,7 @@ from dataclasses import dataclass
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.content_words import Unread, categories, stems
+from nl2hltl2plan.language.counts import all_but_said
 from nl2hltl2plan.language.grounding import (
     AffordanceLookup,
     Grounder,
@@ -516,12 +517,8 @@ def unmoved_said(text: str) -> str:
     return _KEPT_AS_IT_IS.sub(unmoved, text)
 
 
-# "put all but the mug in the sink", "every item but the apple": an exclusion from a whole that no rule reads
-# (the grammar moved the mug itself); "Rather than the mug, the apple." on its own, with no verb: a swap of
-# which request is unclear (the grammar read both as more items). h208
-_ALL_BUT = re.compile(
-    r"\b(?:everything|anything|every\s+[a-z]+|all(?:\s+(?:the|of))?(?:\s+[a-z]+)?)\s+but\b", re.I
-)
+# "Rather than the mug, the apple." on its own, with no verb: a swap of which request is unclear (the grammar
+# read both as more items); "all but the mug" is `counts.all_but_said`'s. h208
 _BARE_SWAP = re.compile(
     r"(?:^|(?<=[.;!?]))\s*(?:rather\s+than|instead\s+of)\s+(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?\s*,\s*"
     r"(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?\s*(?=[.;!?]|$)",
@@ -546,30 +543,7 @@ def exclusions_unread(text: str) -> list[Unread]:
     >>> [u.words for u in exclusions_unread("Put the apple in the sink. Actually leave the apple.")]
     ['Actually leave the apple']
     """
-    found = [*_ALL_BUT.finditer(text), *_BARE_SWAP.finditer(text), *_BARE_LEAVE.finditer(text)]
+    bare = [*_BARE_SWAP.finditer(text), *_BARE_LEAVE.finditer(text)]
+    found = [*all_but_said(text), *(m[0].strip() for m in bare)]
     why = "an exclusion, a swap or a bare 'leave' that no rule reads: say each thing to move"
-    return [Unread(m[0].strip(), "negation", why) for m in found]
-
-
-# "Instead of putting the mug in the sink, put it in the fridge": the grammar read "in the sink" as
-# washing (clean_place Mug -> Fridge, exit 0); said as the negation it is: "don't put the mug in ...". h208
-_INSTEAD_OF_DOING = re.compile(
-    r"(?:^|(?<=[.;!?])\s+)(?:instead\s+of|rather\s+than)\s+(?P<verb>[a-z]+ing)\b(?=[^.;!?,]*,\s*\w)", re.I
-)
-
-
-def instead_said(text: str) -> str:
-    """`text` with a sentence that opens "instead of / rather than" and an action word ending in -ing said as
-    "don't" and the action (the household reader's `as_read`); any other opening stays as said.
-
-    >>> instead_said("Instead of putting the mug in the sink, put it in the fridge.")
-    "don't put the mug in the sink, put it in the fridge."
-    """
-
-    def negated(m: re.Match[str]) -> str:
-        said = m["verb"].lower()  # the -ing form itself is a verb too (`categories` stems it)
-        verbs = [v for v in sorted(stems(said) - {said}) if any(c.startswith("verb_") for c in categories(v))]
-        lead = m[0][: len(m[0]) - len(m[0].lstrip())]
-        return f"{lead}don't {verbs[0]}" if len(verbs) == 1 else m[0]
-
-    return _INSTEAD_OF_DOING.sub(negated, text)
+    return [Unread(words, "negation", why) for words in found]

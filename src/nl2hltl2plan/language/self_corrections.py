@@ -84,7 +84,7 @@ class Roles:
 def corrected(text: str, roles: Roles) -> str:
     """`text` with each self-correction applied (see the module docstring); raises HTTError naming a
     correction that cannot be applied with certainty, in the words the user typed (`in_own_words`)."""
-    text = _ACTUALLY_ADDS.sub("", text)
+    text = _not_this_that(_ACTUALLY_ADDS.sub("", text), roles)
     read = [text]  # the text as rewritten so far, where a refusal quotes it
     swaps: list[tuple[str, str]] = []
     try:
@@ -131,6 +131,34 @@ def in_own_words(message: str, read: str, said: str, swaps: Sequence[tuple[str, 
         return repr(said[start:stop].strip(" ,;")) if said[start:stop].strip(" ,;") else m[0]
 
     return _QUOTED.sub(own, message)
+
+
+# "Put the egg in the fridge, not the egg, the apple": "not X, Y" closing a sentence, where X was said in it,
+# takes X back and says Y instead (it was read as a ban on both in the fridge next to the egg's task: exit 1)
+_NAME = r"(?:the|a|an|my|your)\s+[a-z]+(?:\s+[a-z]+)?"
+_NOT_THIS_THAT = re.compile(
+    rf"\s*(?:,|\s-+|—|–)\s*(?:(?:no|nope)\s*,?\s*)?not\s+(?P<wrong>{_NAME})\s*,\s*(?P<right>{_NAME})\s*(?=[.;!?]|$)",
+    re.I,
+)
+
+
+def _not_this_that(text: str, roles: Roles) -> str:
+    """`text` with each "not X, Y" closing a sentence applied: its X (said once in the sentence) is Y, where
+    X and Y each name one thing that share a role (a thing to carry, a place); any other is refused by
+    name."""
+    for m in reversed(list(_NOT_THIS_THAT.finditer(text))):
+        before = text[: m.start()]
+        wrong, right = find_mentions(m["wrong"]), find_mentions(m["right"])
+        head = _sentence_start(before)
+        surface = wrong[0].surface.lower() if len(wrong) == 1 else ""
+        said = [n for n in find_mentions(before) if n.char_start >= head and n.surface.lower() == surface]
+        if len(said) != 1 or len(right) != 1 or not roles.of(wrong[0]) & roles.of(right[0]):
+            words = m[0].strip(" ,-—–")
+            raise HTTError(f"the correction {words!r} takes back no one thing said before it: {_AGAIN}")
+        det = _ARTICLE.search(before[: said[0].char_start])
+        cut = det.start() if det else said[0].char_start
+        text = before[:cut] + m["right"] + before[said[0].char_end :] + text[m.end() :]
+    return text
 
 
 def _corrected(text: str, roles: Roles, read: list[str], swaps: list[tuple[str, str]]) -> str:

@@ -45,7 +45,9 @@ from nl2hltl2plan.language.grounding import find_mentions
 from nl2hltl2plan.language.headings import answered, note_counts
 from nl2hltl2plan.language.household_forms import household_forms
 from nl2hltl2plan.language.household_words import contents_hint, descriptive_name_notes, descriptive_names
-from nl2hltl2plan.language.negations import exclusions_unread, instead_said, unmoved_said
+from nl2hltl2plan.language.landmarks import put_away_unread
+from nl2hltl2plan.language.negation_forms import instead_said, untreated_said
+from nl2hltl2plan.language.negations import exclusions_unread, unmoved_said
 from nl2hltl2plan.language.numbered_steps import step_order
 from nl2hltl2plan.language.respectively import distributed
 from nl2hltl2plan.language.result import LanguageResult
@@ -141,7 +143,7 @@ class _HouseholdReader(SharedGrammar):
         # reasons a household request gives ("so it stays cold") ask for nothing (a tabletop "so that" states)
         text = without_greetings(answered(" ".join(lines)), _names_a_thing)
         # "Mom says put ...", "P.S.", "I was hoping you could"; "the mug stays put" is "don't move the mug"
-        return unmoved_said(instead_said(without_framing(without_reasons(text))))
+        return unmoved_said(untreated_said(instead_said(without_framing(without_reasons(text)))))
 
     def prepared(self, instruction: str) -> str:
         named = descriptive_names(household_forms(instruction), set(self.world.object_types()))
@@ -160,7 +162,8 @@ class _HouseholdReader(SharedGrammar):
         unread = [Unread(h.phrase, "count", why) for h in counted if h.number not in {n, n + forbids}]
         # what no reading can tell: "Cheers, Mug", "Thanks for putting ...", "all but the mug" (h208)
         said = res.instruction
-        return [*unread, *courtesy_unread(said, _names_a_thing), *exclusions_unread(said)]
+        unclear = [*courtesy_unread(said, _names_a_thing), *exclusions_unread(said), *put_away_unread(said)]
+        return [*unread, *unclear]
 
     def refusal(self, refused: Exception, instruction: str, prepared: str, rest: str) -> Exception:
         hint = contents_hint(instruction)

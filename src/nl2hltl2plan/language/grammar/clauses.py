@@ -90,11 +90,12 @@ def split_clauses(sentence: str) -> list[tuple[str, int, int, str]]:
 
 # ----- elided verbs ("first the saucers, then the cups, in the upper rack") -------------------------------
 _GAP_SPLIT = re.compile(
-    r"(?:\s*,\s*|\s+)(?:and\s+)?(?P<j>then|next|afterwards?|after\s+that|finally|lastly|followed\s+by)\b"
+    r"(?:\s*,\s*|\s+)(?:and\s+)?(?P<j>then|next|afterwards?|after\s+that|finally|lastly|followed\s+by|but\s+first)\b"
     r"\s*,?\s*",
     re.I,
 )
-_GAP_JOINER = {"finally": "finally", "lastly": "finally"}
+# "A, then B, but first C": the list keeps the marker of C (it was swallowed into B's segment)
+_GAP_JOINER = {"finally": "finally", "lastly": "finally", "but first": "first"}
 # a clause's own verb may take a pronoun before the list ("put it on the desk and then the pen in the drawer":
 # the verb is elided only after it); the later segments must name movable things, each with its own place
 _AT = re.compile(r"at\s+", re.I)
@@ -172,7 +173,7 @@ def expand_gapping(
             if m.start() <= pos or not _movable_np(args[m.end() :]):
                 continue
             parts.append((args[pos : m.start()], pos, seg_joiner))
-            seg_joiner = _GAP_JOINER.get(m.group("j").lower(), "then")
+            seg_joiner = _GAP_JOINER.get(" ".join(m.group("j").lower().split()), "then")
             pos = m.end()
         parts.append((args[pos:], pos, seg_joiner))
         parts = [(seg.strip(" ,"), off, j) for seg, off, j in parts if seg.strip(" ,")]

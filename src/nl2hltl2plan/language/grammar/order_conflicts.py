@@ -11,17 +11,17 @@ from nl2hltl2plan.language.grammar.draft_tasks import Unit
 
 # "first" opening a clause ("first of all" is one "first"; "the first drawer" opens none)
 _OPENING_FIRST = re.compile(r"(?:^|[,.;:!?]\s*|\b(?:and|then|but)\s+)first\b(?!\s+of\s+all\b)", re.I)
-_BUT_FIRST = re.compile(r"\bbut\s+first\b(?!\s+of\s+all\b)", re.I)
 
 
 def first_said_unread(units: list[Unit], text: str) -> str | None:
-    """Why a "first" cannot be read, if so: it opens two clauses, or no clause took it as its marker (an
-    elided-verb list swallowed "but first")."""
+    """Why a "first" cannot be read, if so: it opens two clauses, or a list's "but first" marks a clause
+    after others of its sentence ("A, then B, but first C, and finally D": the elided-verb list keeps C's
+    marker; before which of A and B? `_first_edges` reads a "first" that opens its sentence only)."""
     said = len(_OPENING_FIRST.findall(text))
     if said > 1:
         return f"'first' said of {said} steps"
-    # "then B, but first C": a "but first" no clause took as its marker (an opening "first" no clause took is
-    # a list's, "X before Y: first A and B on Y, then ...", which a world's reader may read)
-    if _BUT_FIRST.search(text) and not any(kind == G.FIRST for u in units for kind, _ in u.markers):
-        return "'first' (no step of the sentence is read as first)"
+    for k, u in enumerate(units):
+        said_before = any(v.sentence == u.sentence for v in units[:k])
+        if u.joiner == "first" and said_before and any(kind == G.FIRST for kind, _ in u.markers):
+            return "'first' (no step of the sentence is read as first)"
     return None

@@ -1,0 +1,69 @@
+"""Negations said in other words, written as the "don't" / "do not" the negation reader reads (`negations`),
+before the household grammar reads: "Instead of putting the mug in the sink, put it ..." (`instead_said`) and
+a treatment not to be done, "... without washing it", "..., no need to wash it" (`untreated_said`)."""
+
+from __future__ import annotations
+
+import re
+
+from nl2hltl2plan.language.content_words import categories, stems
+from nl2hltl2plan.language.grounding import find_mentions
+
+# "Instead of putting the mug in the sink, put it in the fridge": the grammar read "in the sink" as
+# washing (clean_place Mug -> Fridge, exit 0); said as the negation it is: "don't put the mug in ...". h208
+_INSTEAD_OF_DOING = re.compile(
+    r"(?:^|(?<=[.;!?])\s+)(?:instead\s+of|rather\s+than)\s+(?P<verb>[a-z]+ing)\b(?=[^.;!?,]*,\s*\w)", re.I
+)
+
+
+def instead_said(text: str) -> str:
+    """`text` with a sentence that opens "instead of / rather than" and an action word ending in -ing said as
+    "don't" and the action (the household reader's `as_read`); any other opening stays as said.
+
+    >>> instead_said("Instead of putting the mug in the sink, put it in the fridge.")
+    "don't put the mug in the sink, put it in the fridge."
+    """
+
+    def negated(m: re.Match[str]) -> str:
+        verb = _verb_said(m["verb"])
+        lead = m[0][: len(m[0]) - len(m[0].lstrip())]
+        return f"{lead}don't {verb}" if verb else m[0]
+
+    return _INSTEAD_OF_DOING.sub(negated, text)
+
+
+def _verb_said(word: str) -> str | None:
+    """The one verb an -ing form says ("putting": "put"); the -ing form itself is a verb too (`categories`
+    stems it)."""
+    said = word.lower()
+    verbs = [v for v in sorted(stems(said) - {said}) if any(c.startswith("verb_") for c in categories(v))]
+    return verbs[0] if len(verbs) == 1 else None
+
+
+# "Put the mug in the sink without washing it / , no need to wash it / , you don't need to wash it": a
+# treatment not to do, which the grammar left unread (refused); said as the ban it is, on the one thing of
+# its one-clause sentence: ". Do not wash the mug."
+_UNTREATED = re.compile(
+    r"(?P<clause>(?:^|(?<=[.;!?]))[^.;!?,]+?)\s*(?:,\s*|\s+)(?:(?:there's\s+)?no\s+need\s+to|(?:you\s+)?"
+    r"(?:don't|do\s+not)\s+(?:need|have)\s+to|without)\s+(?P<verb>[a-z]+)\s+(?:it|them)(?:\s+first)?(?=\s*(?:[.;!?]|$))",
+    re.I,
+)
+_TREATMENTS = frozenset({"verb_heat_place", "verb_cool_place", "verb_clean_place", "verb_sliced"})
+
+
+def untreated_said(text: str) -> str:
+    """`text` with a treatment said not to be done to the one thing its sentence names as a ban of its own
+    (the household reader's `as_read`); a sentence of more clauses or things stays as said.
+
+    >>> untreated_said("Put the mug in the sink without washing it.")
+    'Put the mug in the sink. Do not wash the mug.'
+    """
+
+    def banned(m: re.Match[str]) -> str:
+        verb = _verb_said(m["verb"]) if m["verb"].lower().endswith("ing") else m["verb"].lower()
+        named = [n for n in find_mentions(m["clause"].lower()) if not n.entry.generic]
+        if not verb or not categories(verb) & _TREATMENTS or len(named) != 2 or " and " in m["clause"]:
+            return m[0]
+        return f"{m['clause']}. Do not {verb} the {named[0].surface}"
+
+    return _UNTREATED.sub(banned, text)
