@@ -40,7 +40,10 @@ def bedroom():
             "Put the phone in the box. Then put the box on the sofa.",
             "Put the phone in the box, then put the box on the sofa.",
         ),
-        ("put the pen in a bowl. set that bowl on the desk.", "put the pen in a bowl, then set that bowl on the desk."),
+        (
+            "put the pen in a bowl. set that bowl on the desk.",
+            "put the pen in a bowl, then set that bowl on the desk.",
+        ),
         # kept apart: another container, another thing moved, a first sentence that ends elsewhere
         ("Put the pen in a bowl. Put another bowl on the desk.",) * 2,
         ("Put the pen in the bowl. Then put the book on the desk.",) * 2,
@@ -73,7 +76,7 @@ def test_an_item_with_its_content_takes_the_place_said_once(bedroom):
 
 @pytest.mark.data
 def test_another_container_is_a_second_task(bedroom):
-    text = "Put a bowl on the dresser, and put the pencil in another bowl and set that bowl on the side table."
+    text = "Put a bowl on the dresser, and put the pencil in another bowl and set that bowl on the side table"
     assert reading(text, bedroom)[0] == ["place Bowl -> Dresser", PENCIL_BOWL]
     text = "Put a pen in a bowl and a pencil in another bowl, and set both bowls on the dresser."
     assert reading(text, bedroom)[0] == [PEN_BOWL, PENCIL_BOWL.replace("SideTable", "Dresser")]

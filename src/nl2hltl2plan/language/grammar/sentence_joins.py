@@ -203,3 +203,9 @@ def both_containers_moved(text: str) -> str:
         return f"{m['v']} {m['x']}{m['c1']} {placed}, and put {m['y']}{m['c2']} {placed}"
 
     return _BOTH_MOVED.sub(one, text)
+
+
+def container_steps(text: str) -> str:
+    """The text with a thing put in a container and the container moved said as the one task the rules read
+    (`container_again`, `both_containers_moved`, `container_moved_on`)."""
+    return container_moved_on(both_containers_moved(container_again(text)))
