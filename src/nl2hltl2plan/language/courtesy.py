@@ -364,7 +364,8 @@ def _wished(m: re.Match[str]) -> str:
 # a heading that gives one place to every item of its list ("Everything below goes on the desk: A, B, C"):
 # each item, up to the sentence's end, with no place of its own ("A on the shelf") is put there (h202)
 _PLACE_HEADING = re.compile(
-    rf"{_OPENS}{courtesy_pattern('place_heading')}\s+(?P<prep>on|onto|in|into|inside)\s+"
+    rf"{_OPENS}{courtesy_pattern('place_heading', 'place_heading_verb')}\s+"
+    r"(?P<prep>on|onto|in|into|inside)\s+"
     r"(?P<place>(?:the|a|an|my|your)\s+[a-z -]+?)\s*:\s*(?P<items>[^.;!?]+)",
     re.I,
 )
@@ -372,6 +373,12 @@ _ITEM_SEP = re.compile(r"(\s*,\s*(?:and\s+)?(?:then\s+)?|\s+and\s+(?:then\s+)?|\
 # an item that says a place of its own, or that it stays ("..., the mug stays put": `negations.unmoved_said`
 # reads it; made "put the mug stays put in the fridge", at exit 0, h205), keeps its words
 _HAS_PLACE = re.compile(r"\b(?:on|onto|in|into|inside|goes|go|stays?|remains?)\b", re.I)
+# what a container item holds is no place of its own ("a mug with a pen in it": the mug goes there, h212)
+_CONTENT = re.compile(
+    r"\b(?:with|containing|holding|(?:that|which)(?:'s|\s+has|\s+holds)(?:\s+got)?)\s+(?:[a-z]+\s+){1,4}?"
+    r"(?:in|on|inside)\s+(?:it|them)\b",
+    re.I,
+)
 
 
 def _each_placed(m: re.Match[str]) -> str:
@@ -379,7 +386,9 @@ def _each_placed(m: re.Match[str]) -> str:
     clock on the desk"; an item with a place of its own keeps it."""
     parts = _ITEM_SEP.split(m["items"].strip())
     placed = [
-        part if i % 2 else part if _HAS_PLACE.search(part) else f"put {part} {m['prep']} {m['place']}"
+        part
+        if i % 2 or _HAS_PLACE.search(_CONTENT.sub("", part))
+        else f"put {part} {m['prep']} {m['place']}"
         for i, part in enumerate(parts)
     ]
     return m["lead"] + "".join(placed)

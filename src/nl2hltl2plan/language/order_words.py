@@ -140,14 +140,24 @@ def _remarks(text: str, per_group_only: bool) -> list[FreeOrder]:
 def _inside_one_task(words: list[str], i: int, parse: ParseUsage) -> bool:
     """Does the order word at `i` order the steps of one base task, its words on both sides in the task's
     own text and the thing named again by a pronoun after it ("chill the lettuce then return it to the
-    counter")?"""
+    counter"), or its container named on both sides ("put the pen in the bowl. then put the bowl on ...")?"""
     for task in parse.tasks:
         own = [w for w, _, _ in tokens(task.text or "")]
+        held = _container_words(task)
         for at in range(max(0, i - len(own) + 1), i):
             k = i - at  # the order word's place in the task's words
-            if words[at : at + len(own)] == own and 0 < k < len(own) - 1 and _PRONOUNS & set(own[k + 1 :]):
+            again = _PRONOUNS | (held & set(own[:k]))
+            if words[at : at + len(own)] == own and 0 < k < len(own) - 1 and again & set(own[k + 1 :]):
                 return True
     return False
+
+
+def _container_words(task: BaseTaskSpec) -> set[str]:
+    """The last words of the phrases that name a place-in-container task's container in its text ("bowl")."""
+    if not task.container:
+        return set()
+    said = find_mentions(task.text or "")
+    return {m.surface.lower().split()[-1] for m in said if set(m.entry.types) & set(task.container)}
 
 
 _PRONOUNS = frozenset({"it", "them"})

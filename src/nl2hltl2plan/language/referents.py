@@ -38,6 +38,7 @@ from nl2hltl2plan.language.counts import count_value
 from nl2hltl2plan.language.grammar.counted_refs import ONE_MORE, counted_references
 from nl2hltl2plan.language.grammar.use_names import named_by_use
 from nl2hltl2plan.language.grounding import (
+    MOVABLE_RECEPTACLES,
     Mention,
     camel_words,
     exact_name_conflict,
@@ -86,6 +87,7 @@ def check_referents(
     decided = exact_names(instruction, tasks, instances, scene, forbidden, scopes)
     moved_twice(instruction, tasks, before)
     place_then_moved(tasks, before)
+    moved_then_filled(tasks, before)
     another_thing(instruction, tasks)
     categories_named(instruction, tasks, instances, scene)
     said = decided + stand_ins(instruction, tasks, instances, scene, scopes)
@@ -276,16 +278,44 @@ def place_then_moved(tasks: Sequence[BaseTaskSpec], before: Sequence[tuple[str, 
     ("put the pencil in the mug, then the mug on the desk") it is a task with the mug as its container."""
     for k, later in enumerate(tasks):
         named = [t for t in tasks[:k] if t.kind == "place" and set(t.receptacle or ()) & set(later.object)]
-        if len(named) != 1 or not _moves(later) or (later.id, named[0].id) in before:
+        if not named or not _moves(later) or (later.id, named[-1].id) in before:
             continue
-        shared = set(named[0].receptacle or ()) & set(later.object)
-        said = _reference(later.text, shared, _words_for(named[0].text, shared))
-        if said is not None and said not in _BACK:
+        shared = set(named[-1].receptacle or ()) & set(later.object)
+        said = _reference(later.text, shared, {w for t in named for w in _words_for(t.text, shared)})
+        if said is None or said in _BACK:
+            continue
+        thing = camel_words(sorted(shared)[0])
+        if len(named) > 1:  # "a pen in a bowl and a pencil in a bowl, then put the bowl on ...": which one?
+            which = " and ".join(t.id for t in named)
+            raise HTTError(
+                f"{said!r}: tasks {which} each put a thing in a {thing}, and the text does not say which one "
+                f"task {later.id} moves: say where each {thing} goes (\"put X in a {thing} and the {thing} "
+                "on …\")"
+            )
+        raise HTTError(
+            f"{said!r} is where task {named[0].id} puts a thing and what task {later.id} moves, which no "
+            f"two tasks can say (each takes any {thing} it finds): say it as one step (\"put X in the "
+            f"{thing}, then the {thing} on …\"), or \"another {thing}\" for a second one"
+        )
+
+
+def moved_then_filled(tasks: Sequence[BaseTaskSpec], before: Sequence[tuple[str, str]] = ()) -> None:
+    """A container one task moves and a later task puts a thing in, referred back to ("put the bowl on the
+    dresser. Then put the pen in the bowl"): the spec cannot keep both to one bowl (h212). Said in one
+    sentence the grammar reads it as one task with the bowl as its container."""
+    for k, later in enumerate(tasks):
+        dest = set(later.receptacle or ())
+        named = [t for t in tasks[:k] if _moves(t) and not t.container and set(t.object) & dest]
+        if later.kind != "place" or len(named) != 1 or (later.id, named[0].id) in before:
+            continue
+        shared = set(named[0].object) & set(later.receptacle or ()) & MOVABLE_RECEPTACLES
+        said = _reference(later.text, shared, _words_for(named[0].text, shared)) if shared else None
+        if said is not None:
             thing = camel_words(sorted(shared)[0])
             raise HTTError(
-                f"{said!r} is where task {named[0].id} puts a thing and what task {later.id} moves, which no "
+                f"{said!r} is what task {named[0].id} moves and where task {later.id} puts a thing, which no "
                 f"two tasks can say (each takes any {thing} it finds): say it as one step (\"put X in the "
-                f"{thing}, then the {thing} on …\"), or \"another {thing}\" for a second one"
+                f"{thing}, then the {thing} on …\")"
             )
 
 

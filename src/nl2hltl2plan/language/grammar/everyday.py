@@ -41,6 +41,7 @@ from nl2hltl2plan.language.grammar.order_phrases import dashed_first, state_on_i
 from nl2hltl2plan.language.grammar.order_remarks import remarks_said_plainly
 from nl2hltl2plan.language.grammar.repeats import repeated_for_another
 from nl2hltl2plan.language.grammar.restated import count_fits, restated
+from nl2hltl2plan.language.grammar.sentence_joins import container_again
 from nl2hltl2plan.language.grammar.treatments_said import treatments_said
 from nl2hltl2plan.language.grammar.use_names import named_by_use
 from nl2hltl2plan.language.grammar.word_tables import VERBS
@@ -222,21 +223,12 @@ _THING_AGAIN = re.compile(
 )
 
 
-# "put a slice in a bowl and the bowl in the fridge": the container said again with its place is put there
-# (users_h195dev; with "a slice" the verbless second clause found no object)
-_CONTAINER_AGAIN = re.compile(
-    r"(?P<head>\b(?:put|place|set|stick|drop)\s+(?:a|an|the|one)\s+(?:[a-z]+\s+){0,2}?(?:in|into|inside)\s+"
-    r"(?:a|an|the)\s+(?P<c>[a-z]+))\s*,?\s+and\s+the\s+(?P=c)\s+(?=(?:in|into|on|onto|inside)\s)",
-    re.I,
-)
-
-
 def _noted(text: str) -> str:
     """A notes-app list onto the forms the rules read: its heading dropped, an item's bare name given "the",
     a treated thing said again with its place put there."""
     text = re.sub(r"\s+/\s+", "; ", _NOTE_HEADING.sub("", text))  # "A / B": items, as ";" says
     text = _THING_AGAIN.sub(lambda m: f"{m['verb']} the {m['x']} and put it {m['prep']} ", text)
-    return _CONTAINER_AGAIN.sub(r"\g<head> and put the \g<c> ", _ITEM.sub(_item_named, text))
+    return container_again(_ITEM.sub(_item_named, text))
 
 
 def _item_named(m: re.Match[str]) -> str:

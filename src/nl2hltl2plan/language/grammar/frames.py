@@ -434,8 +434,17 @@ def puts_into(holder: NP | None, fr: Frame, it: Item) -> bool:
         and not o.pronoun
         and holder.is_movable_receptacle()
         and not o.is_movable_receptacle()
-        and (same(dest_of(it, fr.cls), holder) or _into_it(it))
+        and (same(dest_of(it, fr.cls), holder) and not _said_other(dest_of(it, fr.cls)) or _into_it(it))
     )
+
+
+def _said_other(np: NP | None) -> bool:
+    """ "another box", "the other box", "a second box": not the holder moved so far (h212)."""
+    words = np.text.lower().split()[:2] if np is not None else []
+    return words[:1] == ["another"] or (len(words) == 2 and words[1] in _OTHER)
+
+
+_OTHER = frozenset({"other", "second", "third", "different"})
 
 
 def _into_it(it: Item) -> bool:

@@ -83,8 +83,10 @@ def merge_items(items: list[Item], b: TaskBuilder) -> list[Item]:
     if own and any(is_fixed(np) and not same(np, own[-1]) for _, np in dests):
         return items  # "the mug in the sink and the egg in the fridge": each goes its own way
     if b.g is not None and set(b.g.resolve(xo.entry)) == set(b.g.resolve(yo.entry)) and b.g.resolve(xo.entry):
-        if xo.count != 1 or yo.count != 1:
-            return items  # "a bar of soap ... and two soap ...": three things, never one pair
+        if xo.count != 1 or yo.count != 1 or _holds(x) or _holds(y):
+            # "a bar of soap ... and two soap ...": three things, never one pair; "a cup with a knife in it
+            # and another cup with a spoon in it": each container holds its own thing (h212)
+            return items
         if named_apart(xo, yo, b.g):
             return items
         xo.count = 2
@@ -117,3 +119,8 @@ def _where_both_go(x: Item, y: Item, cont: NP) -> list[tuple[str, NP]] | None:
     if y.obj is cont and all(same(np, cont) for _, np in xd):
         return yd
     return None
+
+
+def _holds(it: Item) -> bool:
+    """Does the item say what its container holds ("a cup with a knife in it")?"""
+    return any(p in G.WITH_PREPS and np.entry is not None for p, np in it.pps)

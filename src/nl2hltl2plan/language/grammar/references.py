@@ -155,9 +155,11 @@ def _described(words: list[str], specs: list[BaseTaskSpec], candidates: list[int
         return [i for i in candidates if specs[i].kind in kinds]
     if words[0] not in {"both", "all"}:
         return None
-    # "both pen jobs": every task on that thing
+    # "both pen jobs": every task on that thing, as its object or its container ("both bowl jobs": two bowls
+    # placed and a pen put in a third bowl; h212)
     np = parse_np(" ".join(w for w in words[1:-1] if w != "the"))
-    return [i for i in candidates if np.entry is not None and np.entry.canonical in specs[i].object]
+    key = np.entry.canonical if np.entry is not None else None
+    return [i for i in candidates if key in specs[i].object or key in (specs[i].container or [])]
 
 
 def _names_a_thing_before_place(words: list[str]) -> bool:

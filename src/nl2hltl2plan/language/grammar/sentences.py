@@ -30,6 +30,7 @@ from nl2hltl2plan.language.grammar.order_remarks import order_remark
 from nl2hltl2plan.language.grammar.phrases import match_prep, parse_np, tokens
 from nl2hltl2plan.language.grammar.sentence_joins import (
     both_of_two_sentences,
+    container_steps,
     holder_named,
     joined_treatments,
 )
@@ -499,7 +500,8 @@ def normalize(text: str) -> str:
     text = _THEN_INSIDE.sub(", then ", text)
     text = _DONE_WITH.sub(lambda m: _as_cased("after ", m[1]), text)
     text = closing_orders(subordinate_first(finished_thing(done_opener_closed(opener_closed(text)))))
-    return supply_put(re.sub(r"\s+", " ", text).strip())
+    # "the keys go in the box, and the box goes on the sofa": one task (after `supply_put` wrote the verbs)
+    return container_steps(supply_put(re.sub(r"\s+", " ", text).strip()))
 
 
 # The placement verb a terse or conversational request leaves out (issue 24's tabletop styles):

@@ -52,8 +52,8 @@ _PAIR = re.compile(
     r"(?:the|that)\s+(?P=c)\s+(?:in|into|on|onto|inside)\s",
     re.I,
 )
-_WITH_CONTAINER = re.compile(
-    r"\b(?P<c>[a-z]+)\s+with\s+(?P<d>the|that)\s+(?P=c)(?=\s+(?:in|into|on|onto|inside)\s)", re.I
+_WITH_CONTAINER = re.compile(  # (", with the mug on the desk": h212)
+    r"\b(?P<c>[a-z]+)\s*,?\s+with\s+(?P<d>the|that)\s+(?P=c)(?=\s+(?:in|into|on|onto|inside)\s)", re.I
 )
 # "the remote - coffee table": a dash between a thing and a place says where it goes, as "->" does
 _DASH = re.compile(r"(?P<x>[^,;:\-]+?)\s+[-\u2013]\s+(?P<y>[^,;:\-]+?)(?=\s*(?:,|$))")
