@@ -207,5 +207,6 @@ def both_containers_moved(text: str) -> str:
 
 def container_steps(text: str) -> str:
     """The text with a thing put in a container and the container moved said as the one task the rules read
-    (`container_again`, `both_containers_moved`, `container_moved_on`)."""
+    (`container_again`, `both_containers_moved`, `container_moved_on`): "the keys go in the box, and the box
+    goes on the sofa". `sentences.normalize` calls it after `supply_put` has written the left-out verbs."""
     return container_moved_on(both_containers_moved(container_again(text)))

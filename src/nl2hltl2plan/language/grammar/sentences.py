@@ -500,8 +500,7 @@ def normalize(text: str) -> str:
     text = _THEN_INSIDE.sub(", then ", text)
     text = _DONE_WITH.sub(lambda m: _as_cased("after ", m[1]), text)
     text = closing_orders(subordinate_first(finished_thing(done_opener_closed(opener_closed(text)))))
-    # "the keys go in the box, and the box goes on the sofa": one task (after `supply_put` wrote the verbs)
-    return container_steps(supply_put(re.sub(r"\s+", " ", text).strip()))
+    return container_steps(supply_put(re.sub(r"\s+", " ", text).strip()))  # after the verbs are written
 
 
 # The placement verb a terse or conversational request leaves out (issue 24's tabletop styles):
