@@ -109,12 +109,13 @@ def merge_items(items: list[Item], b: TaskBuilder) -> list[Item]:
 def _head_left_out(x: NP | None, y: NP | None) -> bool:
     """Is `x` a determiner and a word of how a thing is, with no noun ("an empty", "one full"), before a
     thing `y` of the scene with no treatment of its own? (A treatment word, "a clean and a dirty mug", is
-    not read as one pair.)"""
+    not read as one pair, nor "a slice", a part of a thing named elsewhere.)"""
     return (
         x is not None
         and y is not None
         and x.empty
         and not x.states
+        and not x.sliced
         and len(x.text.split()) > 1
         and y.entry is not None
         and not y.states
