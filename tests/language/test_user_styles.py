@@ -290,8 +290,6 @@ KNOWN_WRONG: set[str] = {
     "Throw two bars of soap from the counter into the bin by the toilet, plus the two spray bottles on the "
     "back of the toilet. Once those are in, rinse the pink bar of soap between the sinks and throw it in "
     "the bin as well.",
-    "Rinse the cabbage and put it in the fridge, and after that microwave an egg and put it in the fridge "
-    "as well. Heat a slice of apple and a black cup in the microwave and put each of them on the counter.",
     # h203's held-out set, scored once at 13e17269: "A and do the same with B. Then C" orders C after A, B
     # (the grammar's convention for "then" after a sentence of two tasks); the guide's "then": after B only
     "Look at the box on the table under the desk lamp and do the same with the plate on the little brown "

@@ -154,6 +154,8 @@ def count_unread(
         return Unread(phrase, "count", "a vague count: say how many")
     if n in counts or (n == 2 and w in ("both", "pair", "couple") and len(counts) >= 2):
         return None
+    if n == 1 and 2 in counts and i > 0 and toks[i - 1][0] == "and":
+        return None  # "an empty and one full roll of toilet paper": one of the pair the task takes
     got = " + ".join(map(str, counts)) or "none"
     return Unread(phrase, "count", f"the base tasks take {got}, not {n}")
 

@@ -385,11 +385,8 @@ def _refuse_free_and_ordered(sentence: Sentence, units: list[Unit]) -> None:
     last = units[-1]
     ordered = len(units) > 1 and (last.seq_after_prev or any(kind == G.FINALLY for kind, _ in last.markers))
     ordered = ordered and len(last.tasks) == 1
-    if (
-        ordered
-        and any(kind == G.FREE for kind, _ in sentence.trailing)
-        and _ORDER_IS_FREE.search(sentence.text)
-    ):
+    free = any(kind == G.FREE for kind, _ in sentence.trailing) and _ORDER_IS_FREE.search(sentence.text)
+    if ordered and free:
         raise HTTError(
             f"contradictory ordering in the instruction: {sentence.text.strip()!r} orders its tasks and "
             "leaves their order free; say which"
@@ -432,8 +429,9 @@ def _continues(d: Draft, fr: Frame, it: Item, joiner: str) -> bool:
     return incomplete(d) and d.obj is None
 
 
-# the pronouns that name every thing of a list said before ("them", "both of them")
-_THEM = frozenset({"them", "both", "both of them", "them both", "all of them", "them all", "those", "these"})
+# the pronouns that name every thing of a list said before ("them", "both of them", "each of them")
+_THEM = frozenset("them|both|both of them|them both|all of them|them all|those|these|each|each one"
+                  "|each of them|them each|each of those|each of these".split("|"))
 
 
 def _group_for_them(drafts: list[Draft], mine: list[int], it: Item) -> list[int]:
@@ -443,7 +441,9 @@ def _group_for_them(drafts: list[Draft], mine: list[int], it: Item) -> list[int]
         return []
     group = drafts[mine[-1]].group
     members = [k for k in mine if drafts[k].group == group] if group >= 0 else []
-    return members if len(members) > 1 and all(incomplete(drafts[k]) for k in members) else []
+    # "wash a tomato and an egg in the sink and put them on the counter": each is still in its appliance
+    still_open = [incomplete(drafts[k]) or _in_its_appliance(drafts[k]) for k in members]
+    return members if len(members) > 1 and all(still_open) else []
 
 
 def _another_of_it(o: NP, d: Draft) -> bool:

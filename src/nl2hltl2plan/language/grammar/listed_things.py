@@ -73,6 +73,10 @@ def merge_items(items: list[Item], b: TaskBuilder) -> list[Item]:
             and len(items) > 1
         )
     ] or items
+    if len(items) == 2 and _head_left_out(items[0].obj, items[1].obj):
+        # "an empty and a full toilet paper": the first thing's noun is the second's, said once
+        assert items[0].obj is not None and items[1].obj is not None
+        items[0].obj = replace(items[1].obj, text=items[0].obj.text, states=set())
     if len(items) != 2 or any(it.obj is None or it.obj.pronoun or it.obj.entry is None for it in items):
         return items
     x, y = items
@@ -102,6 +106,23 @@ def merge_items(items: list[Item], b: TaskBuilder) -> list[Item]:
                 return items
             return [Item(obj=content, pps=[("containing", cont), *sources, *where])]
     return items
+
+
+def _head_left_out(x: NP | None, y: NP | None) -> bool:
+    """Is `x` a determiner and a word of how a thing is, with no noun ("an empty", "one full"), before a
+    thing `y` of the scene with no treatment of its own? (A treatment word, "a clean and a dirty mug", is
+    not read as one pair, nor "a slice", a part of a thing named elsewhere.)"""
+    return (
+        x is not None
+        and y is not None
+        and x.empty
+        and not x.states
+        and not x.sliced
+        and len(x.text.split()) > 1
+        and y.entry is not None
+        and not y.states
+        and not y.pronoun
+    )
 
 
 def _where_both_go(x: Item, y: Item, cont: NP) -> list[tuple[str, NP]] | None:

@@ -27,6 +27,15 @@ _DO_THIS = re.compile(
     re.I,
 )
 
+# "after putting those away", "once you've placed them all": the things of a list placed just before, by a
+# placing verb and a plural pronoun (the list's tasks, `_listed_just_before`)
+_PLACED_THEM = re.compile(
+    r"^(?:you(?:'ve|\s+have)?\s+)?(?:having\s+)?(?:putting|put|placing|placed|moving|moved|setting|set|storing|"
+    r"stored)\s+(?:them|those|these|all\s+of\s+(?:them|those|these)|them\s+all|each\s+of\s+them)"
+    r"(?:\s+(?:away|down|in|there|in\s+place))?$",
+    re.I,
+)
+
 
 # why a reference to what was said is refused: the words fit several readings, which the structure model must
 # not choose between either (`learned.structured.decide`)
@@ -40,6 +49,8 @@ def said_before(ref: str, u: Unit, units: list[Unit]) -> list[int] | None:
     not such a reference; []: such a reference whose tasks are not certain (nothing said before it, or
     "A and B. Before you do this, C": A and B or B alone)."""
     ref = " ".join(ref.split())
+    if u.tasks and _PLACED_THEM.match(ref):
+        return _listed_just_before(u, units)
     if not u.tasks or not (_THE_REST.match(ref) or _DO_THIS.match(ref)):
         return None
     said = units_said_before(u, units)
@@ -50,6 +61,13 @@ def said_before(ref: str, u: Unit, units: list[Unit]) -> list[int] | None:
     last = said[-1]
     alone = [v for v in said if v.sentence == last.sentence] == [last]
     return list(last.tasks) if len(last.tasks) == 1 and (alone or last.sentence == u.sentence) else []
+
+
+def _listed_just_before(u: Unit, units: list[Unit]) -> list[int] | None:
+    """The tasks of a list said in the clause just before `u` ("put a fork, a spoon and a ladle in a drawer");
+    None where that clause states one task (the plural names no list: left to the other readings)."""
+    said = units_said_before(u, units)
+    return list(said[-1].tasks) if said and len(said[-1].tasks) > 1 else None
 
 
 def units_said_before(u: Unit, units: list[Unit]) -> list[Unit]:
