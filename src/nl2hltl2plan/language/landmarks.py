@@ -212,8 +212,9 @@ _PHRASE_END = re.compile(
     r"[,;.!?]|\s[-\u2013\u2014]\s",
     re.I,
 )
-# where a subject starts: after a clause's punctuation or joiner ("..., and the book on the bed goes ...")
-_CLAUSE_START = re.compile(r"[.;:!?,]\s*|\s[-\u2013\u2014]\s|\b(?:and|then|also|but|so|plus|oh)\s+", re.I)
+# where a subject starts: after a clause's punctuation or joiner ("..., and the book on the bed goes ..."),
+# never at "and from", which goes on a list of sources ("the spatulas from the sink and from the table go ...")
+_CLAUSE_START = re.compile(r"[.;:!?,]\s*|\s[-\u2013\u2014]\s|\b(?:and|then|also|but|so|plus|oh)\s+(?!from\s)", re.I)
 # a landmark said with a word of nearness ("the apple next to the sink should go in the fridge")
 _NEAR_SAID = re.compile(
     r"\b(?:next\s+to|close\s+to|beside|by|near|between|behind|in\s+front\s+of)\s+(?:the|a|an|two)\s", re.I
@@ -261,6 +262,52 @@ def subject_sources(
         elif subject != said:
             out = out[:start] + subject + out[m.start() :]
     return out
+
+
+# A source split over the things of a plural, or said of one of them, before where they go: "both spatulas,
+# the one next to the wine bottle and the one by the toaster, go in a drawer", "two bars of soap: one's in
+# the sink and the other's on the counter. Both go in the drawer", "the other knife, the one under the
+# microwave, in a cup". Each piece says where a thing is now: read as sources, "both spatulas from next to
+# the wine bottle and from by the toaster go in a drawer". Pieces with no destination after them ("put the
+# two mugs, one in the sink and the other on the counter") say where each goes and are left as they are.
+_PLAIN_AT = r"on\s+top\s+of|inside|on|in|at|atop|upon|from|off(?:\s+of)?|out\s+of"
+_NEAR_AT = r"next\s+to|close\s+to|by|near|beside|between|behind|under|underneath|beneath|below|above|in\s+front\s+of"
+_ONE_AT = (
+    r"(?:the\s+)?(?:one|other(?:\s+one)?|first|second|another)(?:'s|\s+is|\s+that's|\s+that\s+is|\s+which\s+is|"
+    r"\s+sitting|\s+lying)?\s+(?:(?P<plain{n}>" + _PLAIN_AT + r")|(?P<near{n}>" + _NEAR_AT + r"))\s+"
+    r"(?P<place{n}>(?:the|a|an|its|their|your|my)\s[^,;:.!?]*?)"
+)
+# a destination after the pieces: a verb of going or a place's preposition; or "Both go ..." after a stop
+_GOES_ON = r"(?=(?:go|goes|belong|belongs|should|need|needs|must|have|has|are|in|into|on|onto|to|inside)\b)"
+_THEN_THEY = r"\.\s+(?:both(?:\s+of\s+them)?|they(?:\s+both)?)\s+" + _GOES_ON
+_SPLIT_SOURCE = re.compile(
+    r"(?:,|:|\s[-\u2013\u2014])\s*"
+    + _ONE_AT.format(n=1)
+    + r"(?:\s+and\s+"
+    + _ONE_AT.format(n=2)
+    + r")?(?:,\s*"
+    + _GOES_ON
+    + r"|"
+    + _THEN_THEY
+    + ")",
+    re.I,
+)
+
+
+def split_sources(text: str) -> str:
+    """The text with each split source (above) said as sources of the thing before it."""
+
+    def said(m: re.Match[str], n: int) -> str:
+        near = m[f"near{n}"]
+        return ("from " + near.lower() + " " if near else "from ") + m[f"place{n}"]
+
+    def sources(m: re.Match[str]) -> str:
+        if m["place2"] is None and not re.match(r"[,:]\s*the\s+one\b", m[0], re.I):
+            return m[0]  # one piece alone is "the one ...": "two mugs, one in the sink, ..." is not a source
+        both = said(m, 1) + (" and " + said(m, 2) if m["place2"] is not None else "")
+        return " " + both + " "
+
+    return _SPLIT_SOURCE.sub(sources, text)
 
 
 def wished_put(text: str, wish: re.Pattern[str]) -> str:
