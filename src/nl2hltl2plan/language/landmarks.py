@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Callable
+from pathlib import Path
 
 from nl2hltl2plan.language.content_words import DETERMINERS, Unread, categories, stems, verb_places
 from nl2hltl2plan.language.grounding import RECEPTACLES, Mention, alfred_lookup, find_mentions
@@ -219,8 +220,17 @@ _CLAUSE_START = re.compile(r"[.;:!?,]\s*|\s[-\u2013\u2014]\s|\b(?:and|then|also|
 _NEAR_SAID = re.compile(
     r"\b(?:next\s+to|close\s+to|beside|by|near|between|behind|in\s+front\s+of)\s+(?:the|a|an|two)\s", re.I
 )
-# a part of the room after a subject's place: "the book on the armchair in the corner"
-_ROOM_PART_LAST = re.compile(r"\s(?:in|on|at)\s+the\s+(?:corner|middle|back|front|left|right|end)\s*$", re.I)
+# rooms people name (room_words.txt): "the laptop on the desk in the hall"
+ROOM_WORDS = tuple(
+    w for w in (Path(__file__).with_name("room_words.txt").read_text().splitlines()) if w and w[0] != "#"
+)
+# a part of the room, or the room, after a subject's place: "the book on the armchair in the corner"
+_ROOM_PART_LAST = re.compile(
+    r"\s(?:in|on|at)\s+the\s+(?:corner|middle|back|front|left|right|end|"
+    + "|".join(r"\s+".join(w.split()) for w in ROOM_WORDS)
+    + r")\s*$",
+    re.I,
+)
 # a wish's participle before the destination: "I'd like X put in D"
 _PARTICIPLE = (
     r"\s+(?:put|placed|moved|set|left|taken|brought)(?:\s+(?:it|them))?\s+(?=(?:in|into|on|onto|inside|to)\s)"
@@ -294,8 +304,18 @@ _SPLIT_SOURCE = re.compile(
 )
 
 
-def split_sources(text: str) -> str:
-    """The text with each split source (above) said as sources of the thing before it."""
+# a room opening a sentence says where all its things are: "In the bedroom, the two CDs ... go on the dresser"
+_ROOM_OPENER = re.compile(
+    r"(?:^|(?<=[.;!?]\s))\s*(?:in|inside|at)\s+the\s+(?:" + "|".join(r"\s+".join(w.split()) for w in ROOM_WORDS)
+    + r")\s*,\s*(?P<first>\w)",
+    re.I,
+)
+
+
+def where_things_are(text: str) -> str:
+    """The text with each split source (above) said as sources of the thing before it, and a room that opens
+    a sentence left out."""
+    text = _ROOM_OPENER.sub(lambda m: m["first"].upper(), text)
 
     def said(m: re.Match[str], n: int) -> str:
         near = m[f"near{n}"]
