@@ -214,8 +214,10 @@ _PHRASE_END = re.compile(
     re.I,
 )
 # where a subject starts: after a clause's punctuation or joiner ("..., and the book on the bed goes ..."),
-# never at "and from", which goes on a list of sources ("the spatulas from the sink and from the table go ...")
-_CLAUSE_START = re.compile(r"[.;:!?,]\s*|\s[-\u2013\u2014]\s|\b(?:and|then|also|but|so|plus|oh)\s+(?!from\s)", re.I)
+# never at "and from", which goes on a list of sources ("the spatulas from the sink and from the table go")
+_CLAUSE_START = re.compile(
+    r"[.;:!?,]\s*|\s[-\u2013\u2014]\s|\b(?:and|then|also|but|so|plus|oh)\s+(?!from\s)", re.I
+)
 # a landmark said with a word of nearness ("the apple next to the sink should go in the fridge")
 _NEAR_SAID = re.compile(
     r"\b(?:next\s+to|close\s+to|beside|by|near|between|behind|in\s+front\s+of)\s+(?:the|a|an|two)\s", re.I
@@ -281,7 +283,9 @@ def subject_sources(
 # the wine bottle and from by the toaster go in a drawer". Pieces with no destination after them ("put the
 # two mugs, one in the sink and the other on the counter") say where each goes and are left as they are.
 _PLAIN_AT = r"on\s+top\s+of|inside|on|in|at|atop|upon|from|off(?:\s+of)?|out\s+of"
-_NEAR_AT = r"next\s+to|close\s+to|by|near|beside|between|behind|under|underneath|beneath|below|above|in\s+front\s+of"
+_NEAR_AT = (
+    r"next\s+to|close\s+to|by|near|beside|between|behind|under|underneath|beneath|below|above|in\s+front\s+of"
+)
 _ONE_AT = (
     r"(?:the\s+)?(?:one|other(?:\s+one)?|first|second|another)(?:'s|\s+is|\s+that's|\s+that\s+is|\s+which\s+is|"
     r"\s+sitting|\s+lying)?\s+(?:(?P<plain{n}>" + _PLAIN_AT + r")|(?P<near{n}>" + _NEAR_AT + r"))\s+"
@@ -306,16 +310,30 @@ _SPLIT_SOURCE = re.compile(
 
 # a room opening a sentence says where all its things are: "In the bedroom, the two CDs ... go on the dresser"
 _ROOM_OPENER = re.compile(
-    r"(?:^|(?<=[.;!?]\s))\s*(?:in|inside|at)\s+the\s+(?:" + "|".join(r"\s+".join(w.split()) for w in ROOM_WORDS)
+    r"(?:^|(?<=[.;!?]\s))\s*(?:in|inside|at)\s+the\s+(?:"
+    + "|".join(r"\s+".join(w.split()) for w in ROOM_WORDS)
     + r")\s*,\s*(?P<first>\w)",
     re.I,
 )
 
 
+# a posture said of a thing with a plain place says where it is now, as "from" does: "the knife lying in the
+# sink on a plate" (with a word of nearness it is a landmark already, `posture_at`); never after "leave" or
+# "keep", or of "it" ("leave it lying on the bed" says where it goes)
+_POSTURE_IN = re.compile(
+    r"(?<!\bit)(?<!\bthem)\s+(?:that's\s+|that\s+is\s+|which\s+is\s+)?"
+    r"(?:sitting|lying|laying|located|standing|resting|kept|stored)\s+(?:in|on|inside|at|atop)\s+"
+    r"(?=(?:the|a|an|its|their|your|my)\s)",
+    re.I,
+)
+_KEPT_AS = re.compile(r"\b(?:leave|leaving|left|keep|keeping|have|let)\b[^,.;!?]*$", re.I)
+
+
 def where_things_are(text: str) -> str:
-    """The text with each split source (above) said as sources of the thing before it, and a room that opens
-    a sentence left out."""
+    """The text with each split source and posture (above) said as sources of the thing before it, and a room
+    that opens a sentence left out."""
     text = _ROOM_OPENER.sub(lambda m: m["first"].upper(), text)
+    text = _POSTURE_IN.sub(lambda m: m[0] if _KEPT_AS.search(text, 0, m.start()) else " from ", text)
 
     def said(m: re.Match[str], n: int) -> str:
         near = m[f"near{n}"]

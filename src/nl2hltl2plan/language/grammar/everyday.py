@@ -267,7 +267,7 @@ def everyday(text: str) -> str:
     if _FREE_REMARK.search(text):  # "1. X. 2. Y. Any order is fine.": the numbers only list the steps
         text = _NUMBERED.sub(lambda m: m["lead"], text)
     text = named_by_use(everyday_names(respelt(text)))  # misspelt names, everyday names, names by use
-    # a source split over two things first (`landmarks.where_things_are`): "both X, the one by A and the one by B"
+    # a source split over two things first (`landmarks.where_things_are`): "both X, the one by A and ..."
     text = _ONE_AND_OTHER.sub(_each_of_two, where_things_are(text))  # before "the other one" is "the other X"
     text = counted_references(text)  # "the remaining two", "remotes, two of them" (counted_refs.py)
     text = _LAMP_WITH_IT_ON.sub(r"\g<lamp>", text)  # before a repeat copies the sentence
