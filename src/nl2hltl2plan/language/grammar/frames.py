@@ -281,8 +281,9 @@ def dest_of(item: Item, cls: str = "") -> NP | None:
         return fixed[0] if fixed and cls != "pick" else None
     # "the soap on the counter between the sinks in the drawer": a landmark before a plain place says where
     # the thing is now; the plain place after it is where it goes
-    plain = next((k for k, (p, _) in enumerate(dests) if p in _PLACING), len(dests))
-    dests = [d for k, d in enumerate(dests) if k >= plain or d[0] not in _LANDMARK_PREPS]
+    plain = next((k for k, (p, _) in enumerate(dests) if p in _PLACING), None)
+    if plain is not None:
+        dests = [d for k, d in enumerate(dests) if k >= plain or d[0] not in _LANDMARK_PREPS]
     for p, np in dests:
         if p in DIRECTIONAL:
             return np
