@@ -315,6 +315,15 @@ KNOWN_WRONG: set[str] = {
     "the tub",
     "chill a slice of lettuce and put it on the table and put a butter knife in a pan and put the pan on the "
     "counter after that heat an apple and throw it in the trash",
+    # h219's dev set: "put the pen in a mug, leaving the mug on the desk" reads the participle as a third task
+    # (a movable container said with "leaving", h212's class)
+    "Move the two alarm clocks from the desk at the foot of the bed to the dresser, and put the pen on the "
+    "desk in a mug, leaving the mug on the desk.",
+    # h219's held-out set, scored once at ffb36763, no rule tuned: "the candle at the back corner of the
+    # counter on the toilet tank" takes the counter (a part of it said with "at") as the destination
+    "In the bathroom, move the yellow rag in the sink to the tub, put the candle at the back corner of the "
+    "counter on the toilet tank, and put the two toilet paper rolls, one on the back of the toilet and the "
+    "other by the sink, in the drawer.",
 }
 
 

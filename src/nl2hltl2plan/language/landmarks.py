@@ -213,14 +213,26 @@ _PHRASE_END = re.compile(
     r"[,;.!?]|\s[-\u2013\u2014]\s",
     re.I,
 )
-# where a subject starts: after a clause's punctuation or joiner ("..., and the book on the bed goes ...")
-_CLAUSE_START = re.compile(r"[.;:!?,]\s*|\s[-\u2013\u2014]\s|\b(?:and|then|also|but|so|plus|oh)\s+", re.I)
+# where a subject starts: after a clause's punctuation or joiner ("..., and the book on the bed goes ..."),
+# never at "and from", which goes on a list of sources ("the spatulas from the sink and from the table go")
+_CLAUSE_START = re.compile(
+    r"[.;:!?,]\s*|\s[-\u2013\u2014]\s|\b(?:and|then|also|but|so|plus|oh)\s+(?!from\s)", re.I
+)
 # a landmark said with a word of nearness ("the apple next to the sink should go in the fridge")
 _NEAR_SAID = re.compile(
     r"\b(?:next\s+to|close\s+to|beside|by|near|between|behind|in\s+front\s+of)\s+(?:the|a|an|two)\s", re.I
 )
-# a part of the room after a subject's place: "the book on the armchair in the corner"
-_ROOM_PART_LAST = re.compile(r"\s(?:in|on|at)\s+the\s+(?:corner|middle|back|front|left|right|end)\s*$", re.I)
+# rooms people name (room_words.txt): "the laptop on the desk in the hall"
+ROOM_WORDS = tuple(
+    w for w in (Path(__file__).with_name("room_words.txt").read_text().splitlines()) if w and w[0] != "#"
+)
+# a part of the room, or the room, after a subject's place: "the book on the armchair in the corner"
+_ROOM_PART_LAST = re.compile(
+    r"\s(?:in|on|at)\s+the\s+(?:corner|middle|back|front|left|right|end|"
+    + "|".join(r"\s+".join(w.split()) for w in ROOM_WORDS)
+    + r")\s*$",
+    re.I,
+)
 # a wish's participle before the destination: "I'd like X put in D"
 _PARTICIPLE = (
     r"\s+(?:put|placed|moved|set|left|taken|brought)(?:\s+(?:it|them))?\s+(?=(?:in|into|on|onto|inside|to)\s)"
@@ -262,6 +274,78 @@ def subject_sources(
         elif subject != said:
             out = out[:start] + subject + out[m.start() :]
     return out
+
+
+# A source split over the things of a plural, or said of one of them, before where they go: "both spatulas,
+# the one next to the wine bottle and the one by the toaster, go in a drawer", "two bars of soap: one's in
+# the sink and the other's on the counter. Both go in the drawer", "the other knife, the one under the
+# microwave, in a cup". Each piece says where a thing is now: read as sources, "both spatulas from next to
+# the wine bottle and from by the toaster go in a drawer". Pieces with no destination after them ("put the
+# two mugs, one in the sink and the other on the counter") say where each goes and are left as they are.
+_PLAIN_AT = r"on\s+top\s+of|inside|on|in|at|atop|upon|from|off(?:\s+of)?|out\s+of"
+_NEAR_AT = (
+    r"next\s+to|close\s+to|by|near|beside|between|behind|under|underneath|beneath|below|above|in\s+front\s+of"
+)
+_ONE_AT = (
+    r"(?:the\s+)?(?:one|other(?:\s+one)?|first|second|another)(?:'s|\s+is|\s+that's|\s+that\s+is|\s+which\s+is|"
+    r"\s+sitting|\s+lying)?\s+(?:(?P<plain{n}>" + _PLAIN_AT + r")|(?P<near{n}>" + _NEAR_AT + r"))\s+"
+    r"(?P<place{n}>(?:the|a|an|its|their|your|my)\s[^,;:.!?]*?)"
+)
+# a destination after the pieces: a verb of going or a place's preposition; or "Both go ..." after a stop
+_GOES_ON = r"(?=(?:go|goes|belong|belongs|should|need|needs|must|have|has|are|in|into|on|onto|to|inside)\b)"
+_THEN_THEY = r"\.\s+(?:both(?:\s+of\s+them)?|they(?:\s+both)?)\s+" + _GOES_ON
+_SPLIT_SOURCE = re.compile(
+    r"(?:,|:|\s[-\u2013\u2014])\s*"
+    + _ONE_AT.format(n=1)
+    + r"(?:\s+and\s+"
+    + _ONE_AT.format(n=2)
+    + r")?(?:,\s*"
+    + _GOES_ON
+    + r"|"
+    + _THEN_THEY
+    + ")",
+    re.I,
+)
+
+
+# a room opening a sentence says where all its things are: "In the bedroom, the two CDs ... go on the dresser"
+_ROOM_OPENER = re.compile(
+    r"(?:^|(?<=[.;!?]\s))\s*(?:in|inside|at)\s+the\s+(?:"
+    + "|".join(r"\s+".join(w.split()) for w in ROOM_WORDS)
+    + r")\s*,\s*(?P<first>\w)",
+    re.I,
+)
+
+
+# a posture said of a thing with a plain place says where it is now, as "from" does: "the knife lying in the
+# sink on a plate" (with a word of nearness it is a landmark already, `posture_at`); never after "leave" or
+# "keep", or of "it" ("leave it lying on the bed" says where it goes)
+_POSTURE_IN = re.compile(
+    r"(?<!\bit)(?<!\bthem)\s+(?:that's\s+|that\s+is\s+|which\s+is\s+)?"
+    r"(?:sitting|lying|laying|located|standing|resting|kept|stored)\s+(?:in|on|inside|at|atop)\s+"
+    r"(?=(?:the|a|an|its|their|your|my)\s)",
+    re.I,
+)
+_KEPT_AS = re.compile(r"\b(?:leave|leaving|left|keep|keeping|have|let)\b[^,.;!?]*$", re.I)
+
+
+def where_things_are(text: str) -> str:
+    """The text with each split source and posture (above) said as sources of the thing before it, and a room
+    that opens a sentence left out."""
+    text = _ROOM_OPENER.sub(lambda m: m["first"].upper(), text)
+    text = _POSTURE_IN.sub(lambda m: m[0] if _KEPT_AS.search(text, 0, m.start()) else " from ", text)
+
+    def said(m: re.Match[str], n: int) -> str:
+        near = m[f"near{n}"]
+        return ("from " + near.lower() + " " if near else "from ") + m[f"place{n}"]
+
+    def sources(m: re.Match[str]) -> str:
+        if m["place2"] is None and not re.match(r"[,:]\s*the\s+one\b", m[0], re.I):
+            return m[0]  # one piece alone is "the one ...": "two mugs, one in the sink, ..." is not a source
+        both = said(m, 1) + (" and " + said(m, 2) if m["place2"] is not None else "")
+        return " " + both + " "
+
+    return _SPLIT_SOURCE.sub(sources, text)
 
 
 def wished_put(text: str, wish: re.Pattern[str]) -> str:

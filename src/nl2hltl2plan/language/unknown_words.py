@@ -77,6 +77,7 @@ from nl2hltl2plan.language.content_words import (
     word_categories,
 )
 from nl2hltl2plan.language.grounding import Mention, find_mentions, lexicon, tokens
+from nl2hltl2plan.language.landmarks import ROOM_WORDS
 from nl2hltl2plan.language.memo import reading_memo
 from nl2hltl2plan.language.parse_usage import ParseUsage
 from nl2hltl2plan.language.spelling import (
@@ -157,7 +158,7 @@ _NOT_A_THING = frozenset(
     "bathroom office house home black white grey gray red blue green yellow brown orange pink purple gold "
     "silver golden new old large small big little deep tall short clean dirty empty full wet dry cold hot "
     "warm closest farthest nearest".split()
-)
+) | frozenset(w.split()[-1] for w in ROOM_WORDS)  # "in the hall", "in the living room"
 # the words a noun phrase opens after: what is between one of them and a name describes the thing
 MODIFIER_OPENS = _THING_DETERMINERS | _TAKES_A_THING | DETERMINERS | frozenset(
     "any each every all his her".split()

@@ -34,9 +34,9 @@ from nl2hltl2plan.language.statements import REFERENCE
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
 
 # "bring it back", "then back again", "return it", "put it back where it was", "back in its place": to
-# where it was (`put_back.WHERE_IT_WAS`), which no base task names; "three times"
+# where it was (`put_back.WHERE_IT_WAS`), which no base task names ("at the back" is a place); "three times"
 _ENDS = r"(?=\s*(?:$|[.,;!?)]|(?:and{}|then|again|afterwards|after|later|here|please|now)\b))"
-_RETURN = re.compile(r"\bback(?: again)?\b" + WHERE_IT_WAS + _ENDS.format(""))
+_RETURN = re.compile(r"(?<!\bthe )\bback(?: again)?\b" + WHERE_IT_WAS + _ENDS.format(""))
 # "return the mug", "return both": the thing is named, its place is not ("return the mug and the cup to the
 # shelf" names it after the list)
 _RETURN_VERB = re.compile(

@@ -54,6 +54,7 @@ from nl2hltl2plan.language.grounding import (
     sentence_start,
     tokens,
 )
+from nl2hltl2plan.language.landmarks import where_things_are
 from nl2hltl2plan.language.spelling import respelt
 from nl2hltl2plan.language.statements import RELATIVE_PLACE
 
@@ -260,7 +261,8 @@ def everyday(text: str) -> str:
     if _FREE_REMARK.search(text):  # "1. X. 2. Y. Any order is fine.": the numbers only list the steps
         text = _NUMBERED.sub(lambda m: m["lead"], text)
     text = named_by_use(everyday_names(respelt(text)))  # misspelt names, everyday names, names by use
-    text = _ONE_AND_OTHER.sub(_each_of_two, text)  # before "the other one" is written out as "the other X"
+    # a source split over two things first (`landmarks.where_things_are`): "both X, the one by A and ..."
+    text = _ONE_AND_OTHER.sub(_each_of_two, where_things_are(text))  # before "the other one" is "the other X"
     text = counted_references(text)  # "the remaining two", "remotes, two of them" (counted_refs.py)
     text = _LAMP_WITH_IT_ON.sub(r"\g<lamp>", text)  # before a repeat copies the sentence
     # "... The cup too.": the task before, for the cup (repeats.py); "carry X to the lamp and turn it on"

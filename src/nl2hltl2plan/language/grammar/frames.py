@@ -279,6 +279,11 @@ def dest_of(item: Item, cls: str = "") -> NP | None:
         # "place it with the coffee machine": a fixed receptacle after "with" is where the thing goes
         fixed = [np for p, np in item.pps if p == "with" and is_fixed(np)]
         return fixed[0] if fixed and cls != "pick" else None
+    # "the soap on the counter between the sinks in the drawer": a landmark before a plain place says where
+    # the thing is now; the plain place after it is where it goes
+    plain = next((k for k, (p, _) in enumerate(dests) if p in _PLACING), None)
+    if plain is not None:
+        dests = [d for k, d in enumerate(dests) if k >= plain or d[0] not in _LANDMARK_PREPS]
     for p, np in dests:
         if p in DIRECTIONAL:
             return np
@@ -286,6 +291,7 @@ def dest_of(item: Item, cls: str = "") -> NP | None:
 
 
 _PLACING = {"in", "into", "inside", "on", "onto"}
+_LANDMARK_PREPS = frozenset(G.NEAR_PREPS) | {"between", "in between", "among"}
 
 
 TWO_PLACES = "two places it could go"
