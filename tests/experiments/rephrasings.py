@@ -2406,3 +2406,34 @@ HELD_H210: dict[str, dict[int, list[str]]] = {
             "whichever order suits you. Thanks ever so much!"],
     },
 }
+
+
+# h220's held-out batch (session 30, issues 24 and 28): the frames of new voices around the paper's four
+# tabletop tasks (a crew briefing, a quiz night): a group addressed ("crew", "everybody", "folks", "ladies
+# and gentlemen"), a label naming the document ("Task card 2:", "Round 1:", "Question 3."), chatty asides
+# and sign-offs, a chatty remark that frees the order, and stage labels that carry task 4's order ("phase
+# two, only after both of those are in:", "Part B, after part A:"). Written with DEV_H220 and committed
+# before any rule changed, put aside and scored once at the end.
+VALID_H220: dict[str, dict[int, list[str]]] = {
+    "crew_briefing": {
+        1: ["All right, crew, put the orange on the yellow plate and the green apple on the blue plate. Easy "
+            "does it, crew."],
+        2: ["Task card 2: put the red apple on the blue plate, the green apple on the pink plate and the "
+            "orange on the yellow plate. Begin with whichever you like."],
+        3: ["Listen up, everybody. The carrot goes on the blue plate, the orange on the yellow plate, the "
+            "green apple on the green plate and the red apple on the pink plate. Doesn't matter where you "
+            "start."],
+        4: ["Crew, phase one: the green apple and the orange go in the yellow plate. Phase two, only after "
+            "both of those are in: the carrot and the red apple go in the blue plate, either order."],
+    },
+    "quiz_night": {
+        1: ["Round 1: the green apple on the blue plate and the orange on the yellow plate. Can you do it, "
+            "folks?"],
+        2: ["Ladies and gentlemen, the green apple goes in the pink plate, the orange in the yellow plate "
+            "and the red apple in the blue plate. Any one of them can come first. Best of luck!"],
+        3: ["Question 3. Put the carrot in the blue plate, the orange in the yellow plate, the green apple "
+            "in the green plate and the red apple in the pink plate, in any order you fancy, everyone."],
+        4: ["Everyone, part A: put the green apple and the orange in the yellow plate. Part B, after part "
+            "A: put the carrot and the red apple in the blue plate."],
+    },
+}
