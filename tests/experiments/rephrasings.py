@@ -2449,14 +2449,16 @@ DEV_H220: dict[str, dict[int, list[str]]] = {
             "Thank you for your cooperation."],
         2: ["Everyone, put the green apple on the pink plate, the orange on the yellow plate and the red "
             "apple on the blue plate. Start wherever you like."],
-        3: ["Folks, the carrot goes on the blue plate, the orange on the yellow plate, the green apple on the "
-            "green plate and the red apple on the pink plate. It doesn't matter which one you start with."],
+        3: ["Folks, the carrot goes on the blue plate, the orange on the yellow plate, the green apple on "
+            "the green plate and the red apple on the pink plate. It doesn't matter which one you start "
+            "with."],
         4: ["Ladies and gentlemen, put the green apple and the orange in the yellow plate first. Stage two, "
             "only when both of those are in: the carrot and the red apple go into the blue plate, in either "
             "order."],
     },
     "coach": {
-        1: ["Alright team, green apple on the blue plate, orange on the yellow plate. Nice and steady, team."],
+        1: ["Alright team, green apple on the blue plate, orange on the yellow plate. Nice and steady, "
+            "team."],
         2: ["Class, put the orange on the yellow plate, the red apple on the blue plate and the green apple "
             "on the pink plate, class. Whichever comes first is fine."],
         3: ["Crew, put the red apple on the pink plate, the green apple on the green plate, the orange on "
