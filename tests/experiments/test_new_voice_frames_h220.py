@@ -89,8 +89,8 @@ def test_tabletop_frames_and_stage_labels_give_the_tasks_and_order(task_id: int,
 
 
 def test_a_chatty_leave_to_start_anywhere_is_in_any_order_never_a_negation() -> None:
-    base = "Put the green apple on the pink plate, the orange on the yellow plate and the red apple on the blue "
-    base += "plate"
+    base = "Put the green apple on the pink plate, the orange on the yellow plate and the red apple on the "
+    base += "blue plate"
     freed = signature(base + ", in any order.")
     assert signature(base + ". Start wherever you like.") == freed
     assert signature(base + ". It's all the same to me which goes first.") == freed
