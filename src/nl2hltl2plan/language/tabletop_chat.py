@@ -8,7 +8,9 @@ Read before any reader sees the text (`TabletopReader.as_read`), each as the pla
   there"), which the readers resolve to it;
 - a greeting, an agent's reply, a closing thanks and a sign-off with a name that is no object or plate
   ("Hi there, ... Cheers, Ana", "Hey, when you're done, ...") are removed as in every reader, by one
-  policy (`courtesy.without_greetings`).
+  policy (`courtesy.without_greetings`);
+- a label that names the document and opens the text ("Puzzle #1:", "Exercise 2.", "Rules of play:") is
+  removed where it labels nothing else in the text (the frame lists' `record` and `title`).
 
 Chat shorthand ("n" for "and", "u" for "you") is read before, in every world (`spelling.shorthand_read`).
 The words of a leave are `tabletop_chat.txt`'s.
