@@ -2406,3 +2406,85 @@ HELD_H210: dict[str, dict[int, list[str]]] = {
             "whichever order suits you. Thanks ever so much!"],
     },
 }
+
+
+# h220's held-out batch (session 30, issues 24 and 28): the frames of new voices around the paper's four
+# tabletop tasks (a crew briefing, a quiz night): a group addressed ("crew", "everybody", "folks", "ladies
+# and gentlemen"), a label naming the document ("Task card 2:", "Round 1:", "Question 3."), chatty asides
+# and sign-offs, a chatty remark that frees the order, and stage labels that carry task 4's order ("phase
+# two, only after both of those are in:", "Part B, after part A:"). Written with DEV_H220 and committed
+# before any rule changed, put aside and scored once at the end.
+VALID_H220: dict[str, dict[int, list[str]]] = {
+    "crew_briefing": {
+        1: ["All right, crew, put the orange on the yellow plate and the green apple on the blue plate. Easy "
+            "does it, crew."],
+        2: ["Task card 2: put the red apple on the blue plate, the green apple on the pink plate and the "
+            "orange on the yellow plate. Begin with whichever you like."],
+        3: ["Listen up, everybody. The carrot goes on the blue plate, the orange on the yellow plate, the "
+            "green apple on the green plate and the red apple on the pink plate. Doesn't matter where you "
+            "start."],
+        4: ["Crew, phase one: the green apple and the orange go in the yellow plate. Phase two, only after "
+            "both of those are in: the carrot and the red apple go in the blue plate, either order."],
+    },
+    "quiz_night": {
+        1: ["Round 1: the green apple on the blue plate and the orange on the yellow plate. Can you do it, "
+            "folks?"],
+        2: ["Ladies and gentlemen, the green apple goes in the pink plate, the orange in the yellow plate "
+            "and the red apple in the blue plate. Any one of them can come first. Best of luck!"],
+        3: ["Question 3. Put the carrot in the blue plate, the orange in the yellow plate, the green apple "
+            "in the green plate and the red apple in the pink plate, in any order you fancy, everyone."],
+        4: ["Everyone, part A: put the green apple and the orange in the yellow plate. Part B, after part "
+            "A: put the carrot and the red apple in the blue plate."],
+    },
+}
+
+
+# h220's development batch (session 30, issues 24 and 28), written with VALID_H220: a tour guide, a coach,
+# a label naming the document and a chatty voice around the paper's four tabletop tasks, with chatty remarks
+# that free the order and stage or step labels that carry task 4's order; measured on first contact before
+# the reader was changed for it.
+DEV_H220: dict[str, dict[int, list[str]]] = {
+    "tour_guide": {
+        1: ["Ladies and gentlemen, put the green apple on the blue plate and the orange on the yellow plate. "
+            "Thank you for your cooperation."],
+        2: ["Everyone, put the green apple on the pink plate, the orange on the yellow plate and the red "
+            "apple on the blue plate. Start wherever you like."],
+        3: ["Folks, the carrot goes on the blue plate, the orange on the yellow plate, the green apple on "
+            "the green plate and the red apple on the pink plate. It doesn't matter which one you start "
+            "with."],
+        4: ["Ladies and gentlemen, put the green apple and the orange in the yellow plate first. Stage two, "
+            "only when both of those are in: the carrot and the red apple go into the blue plate, in either "
+            "order."],
+    },
+    "coach": {
+        1: ["Alright team, green apple on the blue plate, orange on the yellow plate. Nice and steady, "
+            "team."],
+        2: ["Class, put the orange on the yellow plate, the red apple on the blue plate and the green apple "
+            "on the pink plate, class. Whichever comes first is fine."],
+        3: ["Crew, put the red apple on the pink plate, the green apple on the green plate, the orange on "
+            "the yellow plate and the carrot on the blue plate. Start wherever you like, crew. Good luck!"],
+        4: ["Team, stage one: the green apple and the orange go into the yellow plate. Stage two, once both "
+            "of those are in: the carrot and the red apple go into the blue plate. Good luck!"],
+    },
+    "document_label": {
+        1: ["Puzzle #1: put the green apple on the blue plate and the orange on the yellow plate. Can you "
+            "solve it?"],
+        2: ["Exercise 2. Put the green apple in the pink plate, the orange in the yellow plate and the red "
+            "apple in the blue plate, in any order."],
+        3: ["Object of the game: the carrot in the blue plate, the orange in the yellow plate, the green "
+            "apple in the green plate and the red apple in the pink plate. Whichever comes first is fine."],
+        4: ["Rules of play: Step 1: put the green apple and the orange in the yellow plate. Step 2, after "
+            "step 1: put the carrot and the red apple in the blue plate."],
+    },
+    "chatty": {
+        1: ["What I'd love is for you to put the green apple on the blue plate and the orange on the yellow "
+            "plate. It's going to be perfect."],
+        2: ["Put the green apple on the pink plate, the orange on the yellow plate and the red apple on the "
+            "blue plate. It's all the same to me which goes first."],
+        3: ["Okay, so, nice and steady: the carrot on the blue plate, the orange on the yellow plate, the "
+            "green apple on the green plate and the red apple on the pink plate. Start wherever you like. "
+            "Thank you for your cooperation!"],
+        4: ["What I'd love is for you to put the green apple and the orange in the yellow plate. Stage two, "
+            "only when both are in: the carrot and the red apple in the blue plate. Good luck!"],
+    },
+}

@@ -73,7 +73,7 @@ def frame_words() -> dict[str, frozenset[str]]:
 
 
 # categories whose words are frame words only in one place of a fragment (see the words file)
-_PLACED = ("phrase", "opening", "label", "alone", "month", "score")
+_PLACED = ("phrase", "opening", "label", "title", "alone", "month", "score")
 
 
 def _words_as_pattern(words: frozenset[str]) -> str:
@@ -98,7 +98,7 @@ def _frame() -> _Frame:
         single=frozenset(w for name, ws in words.items() if name not in _PLACED for w in ws),
         phrases=re.compile(rf"\b(?:{_words_as_pattern(words['phrase'])}|{_REPLY})\b"),
         opening=re.compile(rf"^\s*(?:good\s+)?(?:{_words_as_pattern(words['opening'])})\b"),
-        label=re.compile(rf"\b(?:{_words_as_pattern(words['label'])})\b"),
+        label=re.compile(rf"\b(?:{_words_as_pattern(words['label'] | words['title'])})\b"),
         alone=frozenset(w.replace("_", " ") for w in words["alone"]),
         records=re.compile(
             rf"\b(?:{_words_as_pattern(words['record'])})\s+(?:no\s+|number\s+)?#?\s*(?:\d+|[a-z])\b|"

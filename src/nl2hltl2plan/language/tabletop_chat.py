@@ -8,7 +8,9 @@ Read before any reader sees the text (`TabletopReader.as_read`), each as the pla
   there"), which the readers resolve to it;
 - a greeting, an agent's reply, a closing thanks and a sign-off with a name that is no object or plate
   ("Hi there, ... Cheers, Ana", "Hey, when you're done, ...") are removed as in every reader, by one
-  policy (`courtesy.without_greetings`).
+  policy (`courtesy.without_greetings`);
+- a label that names the document and opens the text ("Puzzle #1:", "Exercise 2.", "Rules of play:") is
+  removed where it labels nothing else in the text (the frame lists' `record` and `title`).
 
 Chat shorthand ("n" for "and", "u" for "you") is read before, in every world (`spelling.shorthand_read`).
 The words of a leave are `tabletop_chat.txt`'s.
@@ -23,6 +25,7 @@ import re
 
 from nl2hltl2plan.language.content_words import phrase_list_pattern
 from nl2hltl2plan.language.courtesy import without_greetings
+from nl2hltl2plan.language.handover_discourse import frame_words
 
 _FIND = re.compile(
     rf"\b(?P<order>order|ordering|sequence)\s+(?:that\s+)?you\s+find\s+(?:it\s+)?"
@@ -37,9 +40,33 @@ _ON_IT = re.compile(
 )
 
 
+
+def _pattern(words: frozenset[str]) -> str:
+    return "|".join(sorted((w.replace("_", r"\s+") for w in words), key=len, reverse=True))
+
+
+# a label that names the document and opens the text: a record's kind with its number ("Puzzle #1:",
+# "Exercise 2.", "Agenda item 2 -") or a game's title ("Rules of play:"): the frame lists'
+# `record` and `title` (h220); a kind that labels another part of the text ("Task 1: ... Task 2: ...") is
+# a step's label, left to the step readers
+_DOCUMENT = re.compile(
+    rf"^\s*(?:(?P<kind>{_pattern(frame_words()['record'])})\s+(?:no\.?\s+|number\s+)?#?\s*(?:\d+|[a-z])\b|"
+    rf"(?:{_pattern(frame_words()['title'])}))\s*(?:[:.]|\s[-\u2013\u2014])\s+(?=\S)",
+    re.IGNORECASE,
+)
+
+
+def _document_label_dropped(text: str) -> str:
+    label = _DOCUMENT.match(text)
+    if label is None or (label["kind"] and re.search(rf"\b{label['kind']}\b", text[label.end() :], re.I)):
+        return text
+    return text[label.end() :]
+
+
 def chat_read(text: str, kinds: dict[str, bool]) -> str:
     """`text` with its chat forms read as plain words (see the module docstring); `kinds`: each object or
     plate name in words -> is it a plate (a sign-off's name that is a word of one stays)."""
+    text = _document_label_dropped(text)
     text = _FIND.sub(lambda m: f"{m['order']} you like", text)
     text = _ON_IT.sub(r"\g<head>there", text)
     return without_greetings(text, lambda name: any(name.lower() in said.split() for said in kinds))

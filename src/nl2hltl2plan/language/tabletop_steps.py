@@ -60,6 +60,16 @@ _REFERS_BACK = re.compile(
 )
 
 
+# "Stage two, only when both of those are in:", "Phase 2, once they are all there:": a later label's
+# condition that what was placed just before is in restates the order the labels say already (h220)
+_GROUP_DONE = re.compile(
+    rf"(?P<label>{_STEP_NOUN}\s+(?P<t>\w+))\s*,\s*(?:but\s+)?(?:only\s+)?(?:when|once|after|as\s+soon\s+as)\s+"
+    r"(?:both|all|the\s+two|they)(?:\s+of\s+(?:those|them|these))?\s+(?:are|have\s+been|'re)\s+"
+    r"(?:both\s+|all\s+)?(?:in|there|done|placed|in\s+place)\s*(?=[:.)\-])",
+    re.IGNORECASE,
+)
+
+
 def _names_the_one_before(noun: str, turn: int | None, reference: re.Match[str]) -> bool:
     """Does the reference (`noun2`, `b` of `_REFERENCE`) of the label `noun` at place `turn` name the label
     just before it: the same noun, one back in turn ("Round B, only after round A", "Goal 2 (after goal
@@ -149,7 +159,19 @@ def label_references_dropped(text: str) -> str:
     def dropped(m: re.Match[str]) -> str:
         return m["label"] if _names_the_one_before(m["noun"], _place_in_turn(m["t"]), m) else m[0]
 
-    return _REFERS_BACK.sub(dropped, text)
+    def group_done(m: re.Match[str]) -> str:
+        return m["label"] if (_place_in_turn(m["t"]) or 0) >= 2 else m[0]
+
+    return _second_step_after_unlabelled(_GROUP_DONE.sub(group_done, _REFERS_BACK.sub(dropped, text)))
+
+
+def _second_step_after_unlabelled(text: str) -> str:
+    """ "Put A and B on P first. Stage two: C and D on Q." -> "... then C and D on Q.": one label alone,
+    second in turn, after a sentence with no label: that sentence is the first step, as the label says."""
+    labels = _labels(text)
+    if len(labels) != 1 or _turn(labels[0]) != 2 or not re.search(r"[.;!?]\s*$", text[: labels[0].start()]):
+        return text
+    return text[: labels[0].start()] + " then " + text[labels[0].end() :]
 
 
 def order_confirmed_dropped(text: str, listed: bool) -> str:

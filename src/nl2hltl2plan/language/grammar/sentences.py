@@ -507,8 +507,9 @@ def normalize(text: str) -> str:
 # "I'd like the apple to go in the plate", "we need the apple on the plate" -> "put the apple in ...";
 # "the apple goes in the plate" / "the apple in the plate" (a sentence with no verb) -> "put the apple
 # in the plate"; "start with the apple in the plate" -> "first put the apple in the plate".
-_WISH = re.compile(
-    r"\b(?:I|we)(?:'d|\s+would|\s+will)?\s+(?:like|love|want|need|prefer)\s+(?:(?:for\s+)?you\s+to\s+)?",
+_WISH = re.compile(  # also a cleft: "what I'd love is for you to put ..." (h220)
+    r"\b(?:what\s+(?:I|we)(?:'d|\s+would)\s+(?:like|love)\s+is\s+for\s+you\s+to\s+|"
+    r"(?:I|we)(?:'d|\s+would|\s+will)?\s+(?:like|love|want|need|prefer)\s+(?:(?:for\s+)?you\s+to\s+)?)",
     re.I,
 )
 _TO_GO = re.compile(
