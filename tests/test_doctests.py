@@ -20,6 +20,7 @@ MODULES = [
     "nl2hltl2plan.domain.task_kinds",
     "nl2hltl2plan.logic.action_sequences",
     "nl2hltl2plan.language.restated_tasks",
+    "nl2hltl2plan.language.handover_discourse",
 ]
 
 

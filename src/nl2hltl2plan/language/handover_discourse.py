@@ -147,7 +147,7 @@ def empty(fragment: str, label: bool = False, whole: bool = False, header: bool 
 
     >>> empty("Re: today's job"), empty("Copy that"), empty("pillar move"), empty("Optional")
     (True, True, False, False)
-    >>> empty("Good morning, team"), empty("this morning"), empty("Procedure", label=True), empty("Procedure")
+    >>> empty("Good morning, team"), empty("this morning"), empty("Steps", label=True), empty("Steps")
     (True, False, True, False)
     """
     frame = _frame()
