@@ -34,7 +34,7 @@ from nl2hltl2plan.language.grammar.sentence_joins import (
     holder_named,
     joined_treatments,
 )
-from nl2hltl2plan.language.grammar.subordinate import placed_after, treated_before, treatment_of_it
+from nl2hltl2plan.language.grammar.subordinate import after_ref, placed_after, treated_before, treatment_of_it
 from nl2hltl2plan.language.grammar.verbless_items import (
     names_object_before,
     verbless_placement,
@@ -570,32 +570,3 @@ def split_sentences(text: str) -> list[tuple[str, int]]:
     if rest:
         out.append((rest, pos))
     return out
-
-
-def after_ref(body: str) -> tuple[str, str] | None:
-    """ "After placing the plunger, soap bottle, and towel, put ...": (reference, rest) split at the comma
-    that is followed by a verb (references may contain commas)."""
-    m = re.match(rf"^{G.AFTER_OPENER}", body, flags=re.I)
-    if not m or re.match(
-        r"^(?:completing|finishing|doing|all|these|those|the\s+previous|the\s+above|both|"
-        r"everything|each|every|that|this|it|which|done|finished|complete|completed|over|through|you|we)\b",
-        body[m.end() :],
-        flags=re.I,
-    ):
-        return None
-    splits: list[tuple[str, str]] = []
-    for c in re.finditer(r",\s*", body):
-        rest = body[c.end() :]
-        first = re.match(r"(?:then\s+|please\s+|now\s+|you\s+should\s+|we\s+)?([A-Za-z]+)", rest)
-        if c.start() > m.end() and first and first.group(1).lower() in G.VERBS:
-            splits.append((body[m.end() : c.start()], rest))
-    # "after slicing the bread, cook a slice, put it in the fridge, put the lettuce on the counter": clauses
-    # about the reference's own object (a pronoun, a slice) still belong to it
-    return next((sp for sp in splits if not _about_the_last_object(sp[1])), splits[0] if splits else None)
-
-
-def _about_the_last_object(clause: str) -> bool:
-    """Does a clause act on the object named before it ("put it in the fridge", "cook a slice")?"""
-    words = [w for w, _, _ in tokens(clause.split(",")[0])][1:]
-    words = [w for w in words if w not in G.PARTICLES and w not in {"a", "an", "the", "one"}]
-    return bool(words) and (words[0] in {"it", "them"} or words[0] in G.SLICE_NOUNS)

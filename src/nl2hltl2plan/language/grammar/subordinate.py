@@ -9,6 +9,9 @@ place but its own appliance, is read so: "after heating the apple" names another
 on the stove" a place no treatment here uses (both stay references). Check 1 still takes the connective
 for an order word: in a sentence of several tasks and no order, "after" needs an order and the
 instruction is refused.
+
+`after_ref` splits the other kind, a leading reference to another task ("After placing the plunger, soap
+bottle, and towel, put ..."), from the task said after it.
 """
 
 from __future__ import annotations
@@ -18,6 +21,7 @@ import re
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.clauses import split_clauses
 from nl2hltl2plan.language.grammar.frames import APPLIANCE_OF, Frame, parse_frame
+from nl2hltl2plan.language.grammar.phrases import tokens
 
 TREATMENTS = frozenset({*APPLIANCE_OF, "slice"})
 
@@ -60,7 +64,7 @@ def _as_gerund(verb: str, rest: str) -> str | None:
 
 
 # a connective that says the treatment is done before the clause it follows, inside a sentence (the
-# leading "After heating it, Y" is a reference `sentences.after_ref` reads): "after / once (you have)
+# leading "After heating it, Y" is a reference `subordinate.after_ref` reads): "after / once (you have)
 # (done / finished)", "when (you are) done / finished", "when you have"
 _DONE_FIRST = re.compile(
     r"(?<=\w)(?:\s*,)?\s+(?:"
@@ -99,3 +103,32 @@ def placed_after(text: str) -> str:
         return f", then {base}" if cls in {"place", "trash"} else m[0]
 
     return _BEFORE_PUTTING_IT.sub(sub, text)
+
+
+def after_ref(body: str) -> tuple[str, str] | None:
+    """ "After placing the plunger, soap bottle, and towel, put ...": (reference, rest) split at the comma
+    that is followed by a verb (references may contain commas)."""
+    m = re.match(rf"^{G.AFTER_OPENER}", body, flags=re.I)
+    if not m or re.match(
+        r"^(?:completing|finishing|doing|all|these|those|the\s+previous|the\s+above|both|"
+        r"everything|each|every|that|this|it|which|done|finished|complete|completed|over|through|you|we)\b",
+        body[m.end() :],
+        flags=re.I,
+    ):
+        return None
+    splits: list[tuple[str, str]] = []
+    for c in re.finditer(r",\s*", body):
+        rest = body[c.end() :]
+        first = re.match(r"(?:then\s+|please\s+|now\s+|you\s+should\s+|we\s+)?([A-Za-z]+)", rest)
+        if c.start() > m.end() and first and first.group(1).lower() in G.VERBS:
+            splits.append((body[m.end() : c.start()], rest))
+    # "after slicing the bread, cook a slice, put it in the fridge, put the lettuce on the counter": clauses
+    # about the reference's own object (a pronoun, a slice) still belong to it
+    return next((sp for sp in splits if not _about_the_last_object(sp[1])), splits[0] if splits else None)
+
+
+def _about_the_last_object(clause: str) -> bool:
+    """Does a clause act on the object named before it ("put it in the fridge", "cook a slice")?"""
+    words = [w for w, _, _ in tokens(clause.split(",")[0])][1:]
+    words = [w for w in words if w not in G.PARTICLES and w not in {"a", "an", "the", "one"}]
+    return bool(words) and (words[0] in {"it", "them"} or words[0] in G.SLICE_NOUNS)

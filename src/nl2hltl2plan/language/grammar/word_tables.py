@@ -421,7 +421,7 @@ _DONE = (
     r"out\s+of\s+the\s+way)"
 )
 # the words that open a reference the task comes after ("after X, Y", "right after X, Y", "once X, Y");
-# `sentences.after_ref` splits such a reference from its task
+# `subordinate.after_ref` splits such a reference from its task
 # ("having put the mug, Y": a perfect participle, not "having a mug in hand")
 AFTER_OPENER = (
     r"(?:(?:only|right|just|immediately)\s+)?"
