@@ -433,7 +433,9 @@ def _continues(d: Draft, fr: Frame, it: Item, joiner: str) -> bool:
 
 
 # the pronouns that name every thing of a list said before ("them", "both of them")
-_THEM = frozenset({"them", "both", "both of them", "them both", "all of them", "them all", "those", "these"})
+_THEM = frozenset(
+    {"them", "both", "both of them", "them both", "all of them", "them all", "those", "these", "each of them"}
+)
 
 
 def _group_for_them(drafts: list[Draft], mine: list[int], it: Item) -> list[int]:
@@ -443,7 +445,15 @@ def _group_for_them(drafts: list[Draft], mine: list[int], it: Item) -> list[int]
         return []
     group = drafts[mine[-1]].group
     members = [k for k in mine if drafts[k].group == group] if group >= 0 else []
-    return members if len(members) > 1 and all(incomplete(drafts[k]) for k in members) else []
+    return members if len(members) > 1 and all(_awaits_place(drafts[k]) for k in members) else []
+
+
+def _awaits_place(d: Draft) -> bool:
+    """Is draft `d` still to be put somewhere: nothing placed yet, or only in the appliance of its own
+    treatment ("heat an apple and a cup in the microwave and put them on the counter": the microwave is
+    where both are heated, not where the cup ends)?"""
+    treated = any(fr.cls in _APPLIANCE for fr, _ in d.frames)
+    return incomplete(d) or (treated and not _done(d))
 
 
 def _another_of_it(o: NP, d: Draft) -> bool:
