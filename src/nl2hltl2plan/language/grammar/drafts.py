@@ -17,7 +17,9 @@ from nl2hltl2plan.language.grammar.frames import (
     OF_ALL,
     Frame,
     Item,
+    added_place_unread,
     dest_of,
+    item_text,
     parse_frame,
     puts_into,
     same,
@@ -154,6 +156,9 @@ class DraftBuilder:
             return True
         if places := next((w for it in fr.items if (w := two_places(it))), ""):
             unparsed.append(two_places_unread(c_text, places))
+            return True
+        if fr.added_place:
+            unparsed.append(added_place_unread(c_text, fr.added_place))
             return True
         if fr.cls == "light" and not any(
             (it.obj is not None and it.obj.is_lamp()) or any(np.is_lamp() for _, np in it.pps)
@@ -445,29 +450,15 @@ def _group_for_them(drafts: list[Draft], mine: list[int], it: Item) -> list[int]
         return []
     group = drafts[mine[-1]].group
     members = [k for k in mine if drafts[k].group == group] if group >= 0 else []
-    return members if len(members) > 1 and all(_awaits_place(drafts[k]) for k in members) else []
-
-
-def _awaits_place(d: Draft) -> bool:
-    """Is draft `d` still to be put somewhere: nothing placed yet, or only in the appliance of its own
-    treatment ("heat an apple and a cup in the microwave and put them on the counter": the microwave is
-    where both are heated, not where the cup ends)?"""
-    treated = any(fr.cls in _APPLIANCE for fr, _ in d.frames)
-    return incomplete(d) or (treated and not _done(d))
+    # each still to be put somewhere: nothing placed yet, or only in its own treatment's appliance ("heat an
+    # apple and a cup in the microwave and put them on the counter": the cup does not end in the microwave)
+    awaits = all(incomplete(drafts[k]) or _in_its_appliance(drafts[k]) for k in members)
+    return members if len(members) > 1 and awaits else []
 
 
 def _another_of_it(o: NP, d: Draft) -> bool:
     """Is `o` "another one" / "another" / "the other one" after draft `d` has put its thing somewhere?"""
     return o.pronoun and o.text.lower() in {"another", "another one", "the other one"} and not incomplete(d)
-
-
-# ----- text helpers ----------------------------------------------------------------------------------
-def item_text(fr: Frame, it: Item) -> str:
-    """Own text of one item of a list clause: verb + object + its destination ("put plates into the rack")."""
-    verb = fr.text.split()[0] if fr.text.split() else ""
-    parts = [verb, it.obj.text if it.obj is not None else ""]
-    parts += [f"{p} {np.text}" for p, np in it.pps if p in G.DEST_PREPS and np.text]
-    return " ".join(x for x in parts if x)
 
 
 def joins(d: Draft, fr: Frame, it: Item) -> bool:
@@ -522,10 +513,6 @@ def joins(d: Draft, fr: Frame, it: Item) -> bool:
     return False
 
 
-# where an object is washed, heated, chilled: a placement there rarely ends a task of that state
-_APPLIANCE = {"clean": "SinkBasin", "heat": "Microwave", "cool": "Fridge"}
-
-
 def _canonical_in(np: NP | None, types: set[str] | frozenset[str]) -> bool:
     return np is not None and np.entry is not None and np.entry.canonical in types
 
@@ -541,12 +528,12 @@ def _done(d: Draft) -> bool:
     if fr.cls in {"light", "examine", "trash"} or fr.light_on:
         return True  # ("throw it away": the garbage can is a final place)
     dest = dest_of(it, fr.cls)
-    if dest is None or dest.entry is None or dest.entry.canonical not in _APPLIANCE.values():
+    if dest is None or dest.entry is None or dest.entry.canonical not in APPLIANCE_OF.values():
         return dest is not None
     states = {f.cls for f, _ in d.frames}
     states |= {s for _, i in d.frames if i.obj is not None for s in i.obj.states}
-    states &= set(_APPLIANCE)
-    return bool(states) and all(_APPLIANCE[s] != dest.entry.canonical for s in states)
+    states &= set(APPLIANCE_OF)
+    return bool(states) and all(APPLIANCE_OF[s] != dest.entry.canonical for s in states)
 
 
 def _placed_again(d: Draft, fr: Frame, it: Item) -> bool:
