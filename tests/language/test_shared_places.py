@@ -1,6 +1,7 @@
 """Issue 23 (h218): a place said once for a list of things. Two heated things are put where "them" goes,
 not left in the microwave; "plus" adds a thing to the placing before it, and a place of its own after it is
-refused (where it is, or where it goes?); two of one type share a destination said with a landmark."""
+refused (where it is, or where it goes?); two of one type share a destination said with a landmark. And a
+reference that says what was done to its thing ("after you've chilled the glass") names that task."""
 
 from __future__ import annotations
 
@@ -9,6 +10,7 @@ from pathlib import Path
 import pytest
 
 from nl2hltl2plan.language.grammar import parse_instruction
+from nl2hltl2plan.language.task_specs import transitive_closure
 
 ROOM = {
     "Apple", "Bread", "Egg", "Mug", "Cup", "Plate", "Fork", "Kettle", "SoapBar", "Candle", "KeyChain",
@@ -59,6 +61,28 @@ def test_a_place_after_plus_is_refused_naming_it():
     tasks, unparsed = read("throw the soap bar into the bin, plus the candle on the back of the toilet")
     assert tasks == []
     assert any("where it is or where it goes: 'the back of the toilet'" in u for u in unparsed), unparsed
+
+
+@pytest.mark.parametrize(
+    "text, first",
+    [
+        (
+            "Cool a cup and put it in the sink, and put a heated cup on the counter. After you've cooled the "
+            "cup, put the egg in the fridge.",
+            "cool_place Cup -> SinkBasin",
+        ),
+        (
+            "Wash a mug and put it in the cabinet. Put a warm mug on the counter. Once you've washed the mug, "
+            "put the apple in the fridge.",
+            "clean_place Mug -> Cabinet",
+        ),
+    ],
+)
+def test_a_reference_by_its_treatment_names_that_task(text, first):
+    r = parse_instruction(text, ROOM, "room", affordances=lambda t: None)
+    name = {t.id: t.summary() for t in r.tasks}
+    order = {(name[a], name[b]) for a, b in transitive_closure(r.before, list(name))}
+    assert order == {(first, r.tasks[-1].summary())}, order
 
 
 HELD = Path(__file__).parent / "data" / "known_wrong_h218_held.txt"
