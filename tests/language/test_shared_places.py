@@ -57,6 +57,20 @@ def test_a_place_said_once_for_a_list(text, tasks):
     assert read(text) == (tasks, [])
 
 
+def test_a_lamp_after_carrying_to_a_place_is_refused_naming_why():
+    """ "carry X to the desk and switch on the lamp": held under the lamp, or left on the desk? (h159held)"""
+    why = "the pen carried to the desk: held under the lamp, or left there"
+    _, unparsed = read("carry the pen to the desk and switch on the desk lamp")
+    assert any(why in u for u in unparsed), unparsed
+    # "put" says it is left there; "to look at it", and a lamp carried to, say it is held
+    for text in (
+        "put the pen on the desk and switch on the desk lamp",
+        "carry the pen to the desk and switch on the lamp to look at it",
+        "carry the pen to the desk lamp and switch it on",
+    ):
+        assert not any("carried to" in u for u in read(text)[1]), text
+
+
 def test_a_place_after_plus_is_refused_naming_it():
     tasks, unparsed = read("throw the soap bar into the bin, plus the candle on the back of the toilet")
     assert tasks == []
@@ -72,8 +86,8 @@ def test_a_place_after_plus_is_refused_naming_it():
             "cool_place Cup -> SinkBasin",
         ),
         (
-            "Wash a mug and put it in the cabinet. Put a warm mug on the counter. Once you've washed the mug, "
-            "put the apple in the fridge.",
+            "Wash a mug and put it in the cabinet. Put a warm mug on the counter. Once you've washed the "
+            "mug, put the apple in the fridge.",
             "clean_place Mug -> Cabinet",
         ),
     ],

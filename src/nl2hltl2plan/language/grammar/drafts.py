@@ -27,6 +27,7 @@ from nl2hltl2plan.language.grammar.frames import (
     two_places,
     two_places_unread,
 )
+from nl2hltl2plan.language.grammar.lamp_phrases import carried_then_lit
 from nl2hltl2plan.language.grammar.listed_things import merge_items
 from nl2hltl2plan.language.grammar.phrases import NP, one_of_each_under_a_shared_plural, tokens
 from nl2hltl2plan.language.grammar.sentences import Sentence
@@ -159,6 +160,10 @@ class DraftBuilder:
             return True
         if fr.added_place:
             unparsed.append(added_place_unread(c_text, fr.added_place))
+            return True
+        last = self.out.drafts[st.drafts[-1]] if st.drafts else None
+        if carried := carried_then_lit(fr, last, st.next_clause):
+            unparsed.append(f"{c_text} ({carried})")
             return True
         if fr.cls == "light" and not any(
             (it.obj is not None and it.obj.is_lamp()) or any(np.is_lamp() for _, np in it.pps)
@@ -438,9 +443,7 @@ def _continues(d: Draft, fr: Frame, it: Item, joiner: str) -> bool:
 
 
 # the pronouns that name every thing of a list said before ("them", "both of them")
-_THEM = frozenset(
-    {"them", "both", "both of them", "them both", "all of them", "them all", "those", "these", "each of them"}
-)
+_THEM = frozenset("them|both|both of them|them both|all of them|them all|those|these|each of them".split("|"))
 
 
 def _group_for_them(drafts: list[Draft], mine: list[int], it: Item) -> list[int]:
