@@ -217,14 +217,9 @@ def test_user_style_set_converts(name, least):
 # desk's lamp (the drafts' class): every word names something a task uses, so check 1, which counts per
 # mention since h172, has nothing to name
 KNOWN_WRONG: set[str] = {
-    "Put a pencil on the shelf. After that, carry the alarm clock to the desk and switch on the lamp.",
     # h166's paper-style dev: its truth orders "do the same with Y" after its task, which no word says
     "Put a remote in a box and set the box on the armchair, and move two sets of keys to the sofa. Then grab "
     "the watch on the table, turn on the floor lamp, and do the same with the remote control.",
-    # h169's held-out half, read wrong on main too (the reference picks the heated cup):
-    "Chill a glass in the fridge and put it in the sink. Before that, put a heated cup on the counter, and "
-    "after you've chilled the glass, put a cup with a spoon in it on the counter and a cold slice of potato "
-    "in the trash can, in any order.",
     # h177's held-out half: the freed last clause's marker is right, yet an edge orders it after task A
     "Examine the book under the desk lamp. Afterwards, examine the credit card under the lamp as well, and "
     "put a pen into a mug and place the mug on the dresser whenever you get a chance.",
@@ -243,9 +238,6 @@ KNOWN_WRONG: set[str] = {
     "put it in the sink, then rinse the mug and put it in the coffee machine",
     "put both keys on the shelf and the vase on the coffee table. then put a remote on the armchair and "
     "after that two more remotes on it",
-    # h179's held-out half, wrong on main too ("as soon as you have," names no task: pen not after bowl)
-    "Put two alarm clocks on the desk. Whenever that's done, look at the wooden bowl by the desk lamp; as "
-    "soon as you have, look at the pen, and then read the book by the lamp.",
     # h180's paper-style dev: its truth (two trials) keeps "put the box on the couch" a task beside "then drop
     # a remote into it"; the rules read one place_in_container, the guide's "usually ONE ALFRED task"
     "Hold a remote and turn on the floor lamp. After that, put the box on the couch and then drop a second "
@@ -287,13 +279,6 @@ KNOWN_WRONG: set[str] = {
     "tissue boxes on the coffee table",
     "a hot mug in the coffee machine, a cold pan on the dining table, a clean bowl on the shelf, then two "
     "loaves of bread in the fridge",
-    # h189's held-out paper-style set (results/language/h189.md), scored once at 5734f8c9, no rule tuned
-    "Could you put the empty toilet paper roll and the full one in the cabinet under the counter?",
-    "Throw two bars of soap from the counter into the bin by the toilet, plus the two spray bottles on the "
-    "back of the toilet. Once those are in, rinse the pink bar of soap between the sinks and throw it in "
-    "the bin as well.",
-    "Rinse the cabbage and put it in the fridge, and after that microwave an egg and put it in the fridge "
-    "as well. Heat a slice of apple and a black cup in the microwave and put each of them on the counter.",
     # h203's held-out set, scored once at 13e17269: "A and do the same with B. Then C" orders C after A, B
     # (the grammar's convention for "then" after a sentence of two tasks); the guide's "then": after B only
     "Look at the box on the table under the desk lamp and do the same with the plate on the little brown "
