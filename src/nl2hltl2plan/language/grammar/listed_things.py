@@ -84,6 +84,9 @@ def merge_items(items: list[Item], b: TaskBuilder) -> list[Item]:
     xd, yd = dest_of(x), dest_of(y)
     if xd is not None and yd is not None and is_fixed(xd) and is_fixed(yd) and not same(xd, yd):
         return items
+    own = [np for p, np in x.pps if p in G.DEST_PREPS and is_fixed(np)]
+    if xd is not yd and own and any(is_fixed(np) and not same(np, own[-1]) for _, np in dests):
+        return items  # each its own place phrases, the last ones differing: two tasks, as before
     if b.g is not None and set(b.g.resolve(xo.entry)) == set(b.g.resolve(yo.entry)) and b.g.resolve(xo.entry):
         if xo.count != 1 or yo.count != 1:
             return items  # "a bar of soap ... and two soap ...": three things, never one pair
