@@ -1,7 +1,8 @@
 """Issue 23 (h218): a place said once for a list of things. Two heated things are put where "them" goes,
-not left in the microwave; "plus" adds a thing to the placing before it, and a place of its own after it is
-refused (where it is, or where it goes?); two of one type share a destination said with a landmark. And a
-reference that says what was done to its thing ("after you've chilled the glass") names that task."""
+not left in the microwave; "plus" with no place of its own adds a thing to the placing before it; two of one
+type share a destination said with a landmark. A lamp switched on after a thing is carried to a place is
+refused (held under it, or left there?). A reference that says what was done to its thing ("after you've
+chilled the glass") names that task."""
 
 from __future__ import annotations
 
@@ -39,8 +40,8 @@ def read(text: str) -> tuple[list[str], list[str]]:
             "Throw two bars of soap into the bin, plus the candle.",
             ["place_two 2x SoapBar -> GarbageCan", "place Candle -> GarbageCan"],
         ),
-        (  # "and" gives the thing its own destination, as before
-            "put the soap bar in the bin, and the candle on the toilet",
+        (  # "and" or "plus" with a place of its own gives the thing its own destination, as before
+            "put the soap bar in the bin, plus the candle on the toilet",
             ["place SoapBar -> GarbageCan", "place Candle -> Toilet"],
         ),
         (  # one place said once for both, with where it is: one task for two of a type
@@ -71,12 +72,6 @@ def test_a_lamp_after_carrying_to_a_place_is_refused_naming_why():
         assert not any("carried to" in u for u in read(text)[1]), text
 
 
-def test_a_place_after_plus_is_refused_naming_it():
-    tasks, unparsed = read("throw the soap bar into the bin, plus the candle on the back of the toilet")
-    assert tasks == []
-    assert any("where it is or where it goes: 'the back of the toilet'" in u for u in unparsed), unparsed
-
-
 @pytest.mark.parametrize(
     "text, first",
     [
@@ -100,6 +95,9 @@ def test_a_reference_by_its_treatment_names_that_task(text, first):
 
 
 HELD = Path(__file__).parent / "data" / "known_wrong_h218_held.txt"
+# held-out lines read otherwise at the scoring: the refusal of "plus X on Y" was withdrawn before it
+# (users_h154's sets read Y as X's destination), so the line reads a destination
+HELD_MISSED = {"put the watch in the safe, plus the keychain on the desk"}
 
 
 @pytest.mark.sweep
@@ -108,6 +106,8 @@ HELD = Path(__file__).parent / "data" / "known_wrong_h218_held.txt"
 )
 def test_held_out_near_misses(line):
     text, tasks, refused = (part.strip() for part in line.split("|"))
+    if text in HELD_MISSED:
+        pytest.xfail("withdrawn rule (HELD_MISSED)")
     got, unparsed = read(text)
     if refused:
         assert any(refused in u for u in unparsed), unparsed

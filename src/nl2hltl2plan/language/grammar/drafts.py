@@ -17,7 +17,6 @@ from nl2hltl2plan.language.grammar.frames import (
     OF_ALL,
     Frame,
     Item,
-    added_place_unread,
     dest_of,
     item_text,
     parse_frame,
@@ -157,9 +156,6 @@ class DraftBuilder:
             return True
         if places := next((w for it in fr.items if (w := two_places(it))), ""):
             unparsed.append(two_places_unread(c_text, places))
-            return True
-        if fr.added_place:
-            unparsed.append(added_place_unread(c_text, fr.added_place))
             return True
         last = self.out.drafts[st.drafts[-1]] if st.drafts else None
         if carried := carried_then_lit(fr, last, st.next_clause):

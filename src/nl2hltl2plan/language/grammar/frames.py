@@ -30,7 +30,6 @@ class Frame:
     joiner: str = ""  # word that joined it to the previous clause ("then", "and", "to", ...)
     ambiguous: bool = False  # a list the parser cannot assign (several destinations)
     choice: bool = False  # objects joined by "or" ("the apple or the tomato"): which one is not said
-    added_place: str = ""  # the place phrase of a thing added by "plus": where it is, or where it goes?
 
 
 # where each treatment is done ("heat the potato in the microwave")
@@ -51,7 +50,7 @@ def parse_frame(text: str, start: int = 0, joiner: str = "") -> Frame:
     away = any(w == "away" for w, _, _ in toks[:i])  # "put away X on L in D"
     for it in items:
         _standing_place_first(it, text, away)
-    added_place = _added_things(items)
+    _added_things(items)
     # "to region G, H and I": bare noun phrases after an item with a destination continue that destination
     ambiguous = len(items) > 1 and items[-1].obj is not None and not items[-1].pps and bool(items[-2].pps)
     _share_colour_nouns(items)
@@ -66,23 +65,17 @@ def parse_frame(text: str, start: int = 0, joiner: str = "") -> Frame:
         joiner=joiner,
         ambiguous=ambiguous,
         choice=reader.choice and len(items) > 1,
-        added_place=added_place,
     )
 
 
-def _added_things(items: list[Item]) -> str:
-    """ "throw the soap into the bin, plus the spray bottle": "plus" adds a thing to the placing before it,
-    which it shares. A place of its own after it ("plus the spray bottles on the back of the toilet") may
-    say where the thing is or where it goes: its words, for a refusal ("" where there is none)."""
+def _added_things(items: list[Item]) -> None:
+    """ "throw the soap into the bin, plus the spray bottle": "plus" with no place of its own adds a thing to
+    the placing before it, which it shares. With a place of its own ("plus the candle on the counter") the
+    place is its destination, as with "and" (users_h154's "plus" lists)."""
     for before, it in zip(items, items[1:], strict=False):
         shared = [(p, np) for p, np in before.pps if p in G.DEST_PREPS]
-        if not it.added or not shared:
-            continue
-        own = [np.text for p, np in it.pps if p in G.DEST_PREPS]
-        if own:
-            return own[0]
-        it.pps.extend(shared)
-    return ""
+        if it.added and shared and not any(p in G.DEST_PREPS for p, _ in it.pps):
+            it.pps.extend(shared)
 
 
 def _read_verb(words: list[str]) -> tuple[str, str, int, bool]:
@@ -312,13 +305,7 @@ PICKED_OWNER = "picks one of several places the thing is in"  # "the second draw
 # refusals of the grammar's that the learned model must not read as one whole task (`learned.inference`):
 # the clause is read, and what it says is what no task can keep to
 ONLY_WHERE_IT_IS = "only where it is now is said"  # "the mug in the sink should go."
-WHERE_OR_WHITHER = "where it is or where it goes"  # "..., plus the spray bottle on the toilet"
-NOT_A_WHOLE_TASK = (TWO_PLACES, PICKED_OWNER, ONLY_WHERE_IT_IS, WHERE_OR_WHITHER)
-
-
-def added_place_unread(clause: str, place: str) -> str:
-    """The grammar's refusal of a thing added by "plus" with a place of its own (`_added_things`)."""
-    return f"{clause} ({WHERE_OR_WHITHER}: {place!r} after 'plus'; say which)"
+NOT_A_WHOLE_TASK = (TWO_PLACES, PICKED_OWNER, ONLY_WHERE_IT_IS)
 
 
 def two_places_unread(clause: str, places: str) -> str:

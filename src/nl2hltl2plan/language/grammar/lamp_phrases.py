@@ -322,7 +322,8 @@ def carried_then_lit(fr: Frame, d: Draft | None, nxt: Clause | None) -> str:
         return ""
     carried, it = d.frames[0]
     dest = dest_of(it, carried.cls)
-    if carried.verb not in _CARRYING or dest is None or dest.is_lamp() or it.obj is None:
+    to_lamp = any(np.is_lamp() for _, np in it.pps)  # "over to the lamp on the dresser": held under it
+    if carried.verb not in _CARRYING or dest is None or to_lamp or it.obj is None:
         return ""
     where = f"{it.obj.text} carried to {dest.text}"
     return f"{where}: held under the lamp, or left there with the lamp on? say which"
