@@ -279,7 +279,7 @@ KNOWN_WRONG: set[str] = {
     "tissue boxes on the coffee table",
     "a hot mug in the coffee machine, a cold pan on the dining table, a clean bowl on the shelf, then two "
     "loaves of bread in the fridge",
-    # h189's held-out set: "plus X on Y" reads Y as X's destination (users_h154's "plus" lists need it); here Y
+    # h189's held-out set: "plus X on Y" reads Y as X's destination (users_h154's "plus" lists need it); Y
     # is where the bottles are, which only the next sentence ("Once those are in") tells (h218)
     "Throw two bars of soap from the counter into the bin by the toilet, plus the two spray bottles on the "
     "back of the toilet. Once those are in, rinse the pink bar of soap between the sinks and throw it in "
