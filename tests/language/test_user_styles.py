@@ -291,8 +291,6 @@ KNOWN_WRONG: set[str] = {
     # h209's held-out paper-style set (results/language/h209.md), scored once at 753659b6, no rule tuned
     "Could you put a pair of newspapers and a pair of key chains on the chair? Also two remotes on the "
     "center table, and one more remote in a box, with the box on the sofa. The chair stuff first.",
-    "Put the spatula in the sink. Heat a mug and a potato in the microwave and set them on the counter. "
-    "Once they're on the counter, put two more potatoes in the microwave.",
 }
 
 
