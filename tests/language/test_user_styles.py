@@ -217,14 +217,9 @@ def test_user_style_set_converts(name, least):
 # desk's lamp (the drafts' class): every word names something a task uses, so check 1, which counts per
 # mention since h172, has nothing to name
 KNOWN_WRONG: set[str] = {
-    "Put a pencil on the shelf. After that, carry the alarm clock to the desk and switch on the lamp.",
     # h166's paper-style dev: its truth orders "do the same with Y" after its task, which no word says
     "Put a remote in a box and set the box on the armchair, and move two sets of keys to the sofa. Then grab "
     "the watch on the table, turn on the floor lamp, and do the same with the remote control.",
-    # h169's held-out half, read wrong on main too (the reference picks the heated cup):
-    "Chill a glass in the fridge and put it in the sink. Before that, put a heated cup on the counter, and "
-    "after you've chilled the glass, put a cup with a spoon in it on the counter and a cold slice of potato "
-    "in the trash can, in any order.",
     # h177's held-out half: the freed last clause's marker is right, yet an edge orders it after task A
     "Examine the book under the desk lamp. Afterwards, examine the credit card under the lamp as well, and "
     "put a pen into a mug and place the mug on the dresser whenever you get a chance.",
@@ -243,9 +238,6 @@ KNOWN_WRONG: set[str] = {
     "put it in the sink, then rinse the mug and put it in the coffee machine",
     "put both keys on the shelf and the vase on the coffee table. then put a remote on the armchair and "
     "after that two more remotes on it",
-    # h179's held-out half, wrong on main too ("as soon as you have," names no task: pen not after bowl)
-    "Put two alarm clocks on the desk. Whenever that's done, look at the wooden bowl by the desk lamp; as "
-    "soon as you have, look at the pen, and then read the book by the lamp.",
     # h180's paper-style dev: its truth (two trials) keeps "put the box on the couch" a task beside "then drop
     # a remote into it"; the rules read one place_in_container, the guide's "usually ONE ALFRED task"
     "Hold a remote and turn on the floor lamp. After that, put the box on the couch and then drop a second "
@@ -285,8 +277,8 @@ KNOWN_WRONG: set[str] = {
     "tissue boxes on the coffee table",
     "a hot mug in the coffee machine, a cold pan on the dining table, a clean bowl on the shelf, then two "
     "loaves of bread in the fridge",
-    # h189's held-out paper-style set (results/language/h189.md), scored once at 5734f8c9, no rule tuned
-    "Could you put the empty toilet paper roll and the full one in the cabinet under the counter?",
+    # h189's held-out set: "plus X on Y" reads Y as X's destination (users_h154's "plus" lists need it); Y
+    # is where the bottles are, which only the next sentence ("Once those are in") tells (h218)
     "Throw two bars of soap from the counter into the bin by the toilet, plus the two spray bottles on the "
     "back of the toilet. Once those are in, rinse the pink bar of soap between the sinks and throw it in "
     "the bin as well.",
@@ -297,8 +289,6 @@ KNOWN_WRONG: set[str] = {
     # h209's held-out paper-style set (results/language/h209.md), scored once at 753659b6, no rule tuned
     "Could you put a pair of newspapers and a pair of key chains on the chair? Also two remotes on the "
     "center table, and one more remote in a box, with the box on the sofa. The chair stuff first.",
-    "Put the spatula in the sink. Heat a mug and a potato in the microwave and set them on the counter. "
-    "Once they're on the counter, put two more potatoes in the microwave.",
     # h216's held-out half (scored once at 8d9ada15, read so on main too): "plus two heads of lettuce in the
     # fridge too" after "a potato slice in a pan and the pan in the fridge" puts the lettuce in the pan
     "Wash a slice of apple and put it on the dining table. Put a potato slice in a pan and the pan in the "

@@ -18,6 +18,7 @@ from nl2hltl2plan.language.grammar.frames import (
     Frame,
     Item,
     dest_of,
+    item_text,
     parse_frame,
     puts_into,
     same,
@@ -25,6 +26,7 @@ from nl2hltl2plan.language.grammar.frames import (
     two_places,
     two_places_unread,
 )
+from nl2hltl2plan.language.grammar.lamp_phrases import carried_then_lit
 from nl2hltl2plan.language.grammar.listed_things import merge_items
 from nl2hltl2plan.language.grammar.phrases import NP, one_of_each_under_a_shared_plural, tokens
 from nl2hltl2plan.language.grammar.sentences import Sentence
@@ -154,6 +156,10 @@ class DraftBuilder:
             return True
         if places := next((w for it in fr.items if (w := two_places(it))), ""):
             unparsed.append(two_places_unread(c_text, places))
+            return True
+        last = self.out.drafts[st.drafts[-1]] if st.drafts else None
+        if carried := carried_then_lit(fr, last, st.next_clause):
+            unparsed.append(f"{c_text} ({carried})")
             return True
         if fr.cls == "light" and not any(
             (it.obj is not None and it.obj.is_lamp()) or any(np.is_lamp() for _, np in it.pps)
@@ -451,15 +457,6 @@ def _another_of_it(o: NP, d: Draft) -> bool:
     return o.pronoun and o.text.lower() in {"another", "another one", "the other one"} and not incomplete(d)
 
 
-# ----- text helpers ----------------------------------------------------------------------------------
-def item_text(fr: Frame, it: Item) -> str:
-    """Own text of one item of a list clause: verb + object + its destination ("put plates into the rack")."""
-    verb = fr.text.split()[0] if fr.text.split() else ""
-    parts = [verb, it.obj.text if it.obj is not None else ""]
-    parts += [f"{p} {np.text}" for p, np in it.pps if p in G.DEST_PREPS and np.text]
-    return " ".join(x for x in parts if x)
-
-
 def joins(d: Draft, fr: Frame, it: Item) -> bool:
     """Does clause item `it` continue task draft `d` (same object, pronoun, no object, container)?"""
     o = it.obj
@@ -512,10 +509,6 @@ def joins(d: Draft, fr: Frame, it: Item) -> bool:
     return False
 
 
-# where an object is washed, heated, chilled: a placement there rarely ends a task of that state
-_APPLIANCE = {"clean": "SinkBasin", "heat": "Microwave", "cool": "Fridge"}
-
-
 def _canonical_in(np: NP | None, types: set[str] | frozenset[str]) -> bool:
     return np is not None and np.entry is not None and np.entry.canonical in types
 
@@ -531,12 +524,12 @@ def _done(d: Draft) -> bool:
     if fr.cls in {"light", "examine", "trash"} or fr.light_on:
         return True  # ("throw it away": the garbage can is a final place)
     dest = dest_of(it, fr.cls)
-    if dest is None or dest.entry is None or dest.entry.canonical not in _APPLIANCE.values():
+    if dest is None or dest.entry is None or dest.entry.canonical not in APPLIANCE_OF.values():
         return dest is not None
     states = {f.cls for f, _ in d.frames}
     states |= {s for _, i in d.frames if i.obj is not None for s in i.obj.states}
-    states &= set(_APPLIANCE)
-    return bool(states) and all(_APPLIANCE[s] != dest.entry.canonical for s in states)
+    states &= set(APPLIANCE_OF)
+    return bool(states) and all(APPLIANCE_OF[s] != dest.entry.canonical for s in states)
 
 
 def _placed_again(d: Draft, fr: Frame, it: Item) -> bool:

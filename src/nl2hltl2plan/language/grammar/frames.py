@@ -15,6 +15,7 @@ class Item:
 
     obj: NP | None
     pps: list[tuple[str, NP]] = field(default_factory=list)
+    added: bool = False  # joined by "plus": one more thing for the placing said before
 
 
 @dataclass
@@ -49,6 +50,7 @@ def parse_frame(text: str, start: int = 0, joiner: str = "") -> Frame:
     away = any(w == "away" for w, _, _ in toks[:i])  # "put away X on L in D"
     for it in items:
         _standing_place_first(it, text, away)
+    _added_things(items)
     # "to region G, H and I": bare noun phrases after an item with a destination continue that destination
     ambiguous = len(items) > 1 and items[-1].obj is not None and not items[-1].pps and bool(items[-2].pps)
     _share_colour_nouns(items)
@@ -64,6 +66,16 @@ def parse_frame(text: str, start: int = 0, joiner: str = "") -> Frame:
         ambiguous=ambiguous,
         choice=reader.choice and len(items) > 1,
     )
+
+
+def _added_things(items: list[Item]) -> None:
+    """ "throw the soap into the bin, plus the spray bottle": "plus" with no place of its own adds a thing to
+    the placing before it, which it shares. With a place of its own ("plus the candle on the counter") the
+    place is its destination, as with "and" (users_h154's "plus" lists)."""
+    for before, it in zip(items, items[1:], strict=False):
+        shared = [(p, np) for p, np in before.pps if p in G.DEST_PREPS]
+        if it.added and shared and not any(p in G.DEST_PREPS for p, _ in it.pps):
+            it.pps.extend(shared)
 
 
 def _read_verb(words: list[str]) -> tuple[str, str, int, bool]:
@@ -162,7 +174,7 @@ class _ItemReader:
             if nxt and nxt not in {",", "and"} and match_prep(words, i + 1) is None and nxt not in SEQ_WORDS:
                 if self.item.obj is not None or self.item.pps:
                     self.items.append(self.item)
-                    self.item = Item(obj=None)
+                    self.item = Item(obj=None, added="plus" in {w, nxt})  # ", plus the mug"
                 self.cur_prep = None
             return i + 1
         if self.cls == "trash" and w == "out" and (i + 1 >= len(words) or words[i + 1] in {",", "and"}):
@@ -459,3 +471,11 @@ def _into_it(it: Item) -> bool:
     places = [(p, np) for p, np in it.pps if p in G.DEST_PREPS]
     into = {"in", "into", "on", "onto", "inside"}
     return len(places) == 1 and places[0][0] in into and places[0][1].pronoun
+
+
+def item_text(fr: Frame, it: Item) -> str:
+    """Own text of one item of a list clause: verb + object + its destination ("put plates into the rack")."""
+    verb = fr.text.split()[0] if fr.text.split() else ""
+    parts = [verb, it.obj.text if it.obj is not None else ""]
+    parts += [f"{p} {np.text}" for p, np in it.pps if p in G.DEST_PREPS and np.text]
+    return " ".join(x for x in parts if x)

@@ -11,6 +11,9 @@ from __future__ import annotations
 import re
 
 from nl2hltl2plan.language.content_words import DETERMINERS
+from nl2hltl2plan.language.grammar.clauses import Clause
+from nl2hltl2plan.language.grammar.draft_tasks import Draft
+from nl2hltl2plan.language.grammar.frames import Frame, dest_of
 from nl2hltl2plan.language.grammar.word_tables import VERBS
 from nl2hltl2plan.language.grounding import find_mentions, tokens
 
@@ -304,3 +307,23 @@ def items_under_lamp(text: str) -> str:
         said = m["lead"] + _under(m["np"], lamp, False)
         text, at = text[: m.start()] + said + text[m.end() :], m.start() + len(said)
     return text
+
+
+_CARRYING = frozenset({"carry", "take", "bring"})
+
+
+def carried_then_lit(fr: Frame, d: Draft | None, nxt: Clause | None) -> str:
+    """ "carry the alarm clock to the desk and switch on the lamp": the thing may be held under the lamp
+    (ALFRED's look at it in the light) or left on the desk with the lamp switched on apart; the words do not
+    say which. Why, for a refusal; "" otherwise (carried to the lamp itself, "put it on the desk and ...", a
+    purpose that says it: "... and turn on the lamp to look at it")."""
+    lit = fr.cls == "light" or fr.light_on
+    if d is None or not lit or len(d.frames) != 1 or (nxt is not None and nxt.joiner == "to"):
+        return ""
+    carried, it = d.frames[0]
+    dest = dest_of(it, carried.cls)
+    to_lamp = any(np.is_lamp() for _, np in it.pps)  # "over to the lamp on the dresser": held under it
+    if carried.verb not in _CARRYING or dest is None or to_lamp or it.obj is None:
+        return ""
+    where = f"{it.obj.text} carried to {dest.text}"
+    return f"{where}: held under the lamp, or left there with the lamp on? say which"

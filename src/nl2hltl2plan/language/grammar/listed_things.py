@@ -8,7 +8,7 @@ from dataclasses import replace
 
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.draft_tasks import Draft, TaskBuilder
-from nl2hltl2plan.language.grammar.frames import Item, is_fixed, same
+from nl2hltl2plan.language.grammar.frames import Item, dest_of, is_fixed, same
 from nl2hltl2plan.language.grammar.phrases import NP
 from nl2hltl2plan.language.grounding import RECEPTACLES, Grounder, camel_words
 
@@ -83,9 +83,14 @@ def merge_items(items: list[Item], b: TaskBuilder) -> list[Item]:
     xo, yo = x.obj, y.obj
     assert xo is not None and yo is not None and xo.entry is not None and yo.entry is not None
     dests = [(p, np) for p, np in y.pps if p in G.DEST_PREPS]
+    # "the mug in the sink and the egg in the fridge": each goes its own way; a place said once for both
+    # with where it is ("the empty roll and the full one in the cabinet under the counter") is one way
+    xd, yd = dest_of(x), dest_of(y)
+    if xd is not None and yd is not None and is_fixed(xd) and is_fixed(yd) and not same(xd, yd):
+        return items
     own = [np for p, np in x.pps if p in G.DEST_PREPS and is_fixed(np)]
-    if own and any(is_fixed(np) and not same(np, own[-1]) for _, np in dests):
-        return items  # "the mug in the sink and the egg in the fridge": each goes its own way
+    if xd is not yd and own and any(is_fixed(np) and not same(np, own[-1]) for _, np in dests):
+        return items  # each its own place phrases, the last ones differing: two tasks, as before
     if b.g is not None and set(b.g.resolve(xo.entry)) == set(b.g.resolve(yo.entry)) and b.g.resolve(xo.entry):
         if xo.count != 1 or yo.count != 1 or _holds(x) or _holds(y):
             # "a bar of soap ... and two soap ...": three things, never one pair; "a cup with a knife in it
