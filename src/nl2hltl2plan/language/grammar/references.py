@@ -128,7 +128,7 @@ def ref_targets(
                     or any(head in r.lower() for r in (specs[i].receptacle or []))
                 ]
         if len(hit) > 1:  # "after you've chilled the glass": the task that chills it, not a heated one
-            said = {_KIND_WORDS[w] for w in words if w in _KIND_WORDS}
+            said = {KIND_WORDS[w] for w in words if w in KIND_WORDS}
             hit = [i for i in hit if specs[i].kind in said] or hit
         many = np.plural or _PLURAL_TASK_WORDS.intersection(words) or words[0] == "both"
         if len(hit) > 1 and not many and _TASK_WORDS.intersection(words):
