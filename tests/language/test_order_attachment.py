@@ -64,18 +64,22 @@ def test_then_after_a_list_follows_all_of_it(text):
     assert order == {(APPLE, FORK), (SINK_EGG, FORK)} and not unread
 
 
-def test_then_before_a_list_precedes_all_of_it():
+def test_then_orders_its_own_clause_only():
+    """ANNOTATION_GUIDE.md: "Then Y" -> [previous task, Y]; "and put the fork in a drawer" has no order word
+    (before h213 the fork came after the apple too)."""
     _, order, unread = read(
         "put the apple in the fridge, then put the egg in the sink and put the fork in a drawer"
     )
-    assert order == {(APPLE, SINK_EGG), (APPLE, FORK)} and not unread
+    assert order == {(APPLE, SINK_EGG)} and not unread
 
 
-def test_clauses_joined_by_commas_before_then_are_a_sequence():
+def test_then_after_commas_follows_the_clause_before_it():
+    """The guide's previous task is "the one stated in the immediately preceding clause": "A, B, then C" is
+    [B, C], not the sequence A < B < C read before h213."""
     _, order, unread = read(
         "put the apple in the fridge, put the egg in the sink, then put the fork in a drawer"
     )
-    assert order == chain(APPLE, SINK_EGG, FORK) and not unread
+    assert order == {(SINK_EGG, FORK)} and not unread
 
 
 def test_a_task_allowed_at_any_time_stays_out_of_the_step():
