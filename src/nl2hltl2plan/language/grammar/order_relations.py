@@ -125,7 +125,7 @@ def _marker_edges(
     earlier = [t for t in range(len(tasks.specs)) if t < first_of_sentence]
     others = [t for t in range(len(tasks.specs)) if t not in u.tasks]
     for kind, ref in u.markers:
-        if kind == G.THEN and _said_for_an_earlier_clause((kind, ref), k, units):
+        if kind == G.THEN and _said_for_an_earlier_clause((kind, ref), k, units, text):
             continue  # "A. Then B, and C too.": "then" opens B's clause, C's has no order word (the guide)
         if kind == G.THEN and prev is not None:
             after = [] if prev.sentence == u.sentence else _last_step(units, prev.sentence, free, edges, text)
@@ -180,11 +180,20 @@ def _marker_edges(
             _ref_edges(kind == G.AFTER_REF, ref, u, tasks, b, text, edges)
 
 
-def _said_for_an_earlier_clause(marker: tuple[str, str], k: int, units: list[Unit]) -> bool:
+def _said_for_an_earlier_clause(marker: tuple[str, str], k: int, units: list[Unit], text: str) -> bool:
     """Is a sentence's leading marker on unit `k` one that an earlier clause of the sentence carries (it was
-    said once, before that clause), with no "then" of its own joining `k`?"""
+    said once, before that clause), with no "then" of its own joining `k`? Not where the sentence groups its
+    clauses by leaving their order open ("Then B and C in any order": both after, the benchmark's form)."""
     u = units[k]
-    return not u.seq_after_prev and any(v.sentence == u.sentence and marker in v.markers for v in units[:k])
+    if u.seq_after_prev or _leaves_order_open(u, text):
+        return False
+    return any(v.sentence == u.sentence and marker in v.markers for v in units[:k])
+
+
+def _leaves_order_open(u: Unit, text: str) -> bool:
+    """Does the sentence of unit `u` say "in any order" (one group: a "then" before it is for all)?"""
+    sentences = split_sentences(text)
+    return u.sentence < len(sentences) and _ANY_ORDER.search(sentences[u.sentence][0]) is not None
 
 
 def _unfreed_clause(units: list[Unit], prev: Unit, free: set[int]) -> list[int]:
@@ -217,8 +226,8 @@ def _step_edges(k: int, tasks: Tasks, steps: list[int], free: set[int], edges: E
         return
     if (G.FINALLY, IN_SENTENCE) in units[opener].markers:  # "finally" states its own order
         return
-    if k != opener:  # "A, then B, and C too": C's clause has no order word (ANNOTATION_GUIDE.md)
-        return
+    if k != opener and (any(t in free for t in u.tasks) or not _leaves_order_open(u, text)):
+        return  # "A, then B, and C too": C's clause has no order word (ANNOTATION_GUIDE.md)
     before = [t for t in clause_before(tasks, steps, opener, text) if t not in free] or [
         t for j in range(opener) if steps[j] == step - 1 for t in units[j].tasks
     ]
