@@ -64,11 +64,19 @@ def test_then_after_a_list_follows_all_of_it(text):
     assert order == {(APPLE, FORK), (SINK_EGG, FORK)} and not unread
 
 
-def test_then_orders_its_own_clause_only():
-    """ANNOTATION_GUIDE.md: "Then Y" -> [previous task, Y]; "and put the fork in a drawer" has no order word
-    (before h213 the fork came after the apple too)."""
+def test_then_before_a_list_precedes_all_of_it():
+    """ "and" alone (no comma) may join one clause's two tasks: the guide leaves it open, both after."""
     _, order, unread = read(
         "put the apple in the fridge, then put the egg in the sink and put the fork in a drawer"
+    )
+    assert order == {(APPLE, SINK_EGG), (APPLE, FORK)} and not unread
+
+
+def test_then_orders_its_own_clause_only():
+    """ANNOTATION_GUIDE.md: "Then Y" -> [previous task, Y]; ", and put the fork in a drawer too", a clause set
+    apart by a comma, has no order word (before h213 the fork came after the apple too)."""
+    _, order, unread = read(
+        "put the apple in the fridge, then put the egg in the sink, and put the fork in a drawer too"
     )
     assert order == {(APPLE, SINK_EGG)} and not unread
 

@@ -27,7 +27,7 @@ from nl2hltl2plan.language.grammar.references import (
     units_said_before,
 )
 from nl2hltl2plan.language.grammar.sentences import RelationSentence, split_sentences
-from nl2hltl2plan.language.grammar.then_steps import clause_before, sentence_steps
+from nl2hltl2plan.language.grammar.then_steps import clause_before, own_clause, sentence_steps
 from nl2hltl2plan.language.semantic_check import find_cycle
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter, transitive_reduction
 
@@ -125,7 +125,7 @@ def _marker_edges(
     earlier = [t for t in range(len(tasks.specs)) if t < first_of_sentence]
     others = [t for t in range(len(tasks.specs)) if t not in u.tasks]
     for kind, ref in u.markers:
-        if kind == G.THEN and _said_for_an_earlier_clause((kind, ref), k, units, text):
+        if kind == G.THEN and _said_for_an_earlier_clause((kind, ref), k, tasks, text):
             continue  # "A. Then B, and C too.": "then" opens B's clause, C's has no order word (the guide)
         if kind == G.THEN and prev is not None:
             after = [] if prev.sentence == u.sentence else _last_step(units, prev.sentence, free, edges, text)
@@ -180,12 +180,14 @@ def _marker_edges(
             _ref_edges(kind == G.AFTER_REF, ref, u, tasks, b, text, edges)
 
 
-def _said_for_an_earlier_clause(marker: tuple[str, str], k: int, units: list[Unit], text: str) -> bool:
+def _said_for_an_earlier_clause(marker: tuple[str, str], k: int, tasks: Tasks, text: str) -> bool:
     """Is a sentence's leading marker on unit `k` one that an earlier clause of the sentence carries (it was
     said once, before that clause), with no "then" of its own joining `k`? Not where the sentence groups its
-    clauses by leaving their order open ("Then B and C in any order": both after, the benchmark's form)."""
+    clauses by leaving their order open ("Then B and C in any order": both after, the benchmark's form), nor
+    where `k` is not a clause of its own (`own_clause`)."""
+    units = tasks.units
     u = units[k]
-    if u.seq_after_prev or _leaves_order_open(u, text):
+    if u.seq_after_prev or _leaves_order_open(u, text) or not own_clause(k, tasks, text):
         return False
     return any(v.sentence == u.sentence and marker in v.markers for v in units[:k])
 
@@ -226,8 +228,10 @@ def _step_edges(k: int, tasks: Tasks, steps: list[int], free: set[int], edges: E
         return
     if (G.FINALLY, IN_SENTENCE) in units[opener].markers:  # "finally" states its own order
         return
-    if k != opener and (any(t in free for t in u.tasks) or not _leaves_order_open(u, text)):
-        return  # "A, then B, and C too": C's clause has no order word (ANNOTATION_GUIDE.md)
+    # "A, then B, and C too": C's clause has no order word (ANNOTATION_GUIDE.md)
+    apart = own_clause(k, tasks, text) and not _leaves_order_open(u, text)
+    if k != opener and (apart or any(t in free for t in u.tasks)):
+        return
     before = [t for t in clause_before(tasks, steps, opener, text) if t not in free] or [
         t for j in range(opener) if steps[j] == step - 1 for t in units[j].tasks
     ]

@@ -59,3 +59,14 @@ def _comma_alone(said: str, own: str, text: str) -> bool:
         spans.append((at, at + len(form)))
         end = at + len(form)
     return re.fullmatch(r"\s*,\s*", text[spans[0][1] : spans[1][0]]) is not None
+
+
+def own_clause(k: int, tasks: Tasks, text: str) -> bool:
+    """Is unit `k` a clause of its own after the one before it, set apart by a comma ("Then B, and C too")?
+    Joined by "and" alone it may be one clause's second task, its verb restated by the reader ("Then look at
+    the pen and the watch" reads "look at the pen ... and look at the watch ..."): "then" is for both."""
+    low, units = text.lower(), tasks.units
+    said, own = tasks.specs[units[k - 1].tasks[-1]].text.lower(), tasks.specs[units[k].tasks[0]].text.lower()
+    at = low.find(said)
+    end = low.find(own, at + len(said)) if at >= 0 else -1
+    return end >= 0 and "," in low[at + len(said) : end]
