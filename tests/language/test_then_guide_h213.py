@@ -25,10 +25,16 @@ BREAD = "place Bread -> CounterTop"
         ),
         # a verbless list: "then" follows the item before it (before: after the whole list)
         ("put the apple in the fridge, the mug in the sink, then the egg in the microwave", {(MUG, EGG)}),
-        # "Then B, and C too": C's clause has no order word (before: C after A too)
+        # "Then B, and C too": C's clause, a verb of its own, has no order word (before: C after A too)
+        (
+            "Put the apple in the fridge. Then put the mug in the sink, and heat the egg and put it in the "
+            "microwave too.",
+            {(APPLE, MUG)},
+        ),
+        # near miss: ", and <the same verb>" may be the reader's restated verb of one clause: after A too
         (
             "Put the apple in the fridge. Then put the mug in the sink, and put the egg in the microwave too.",
-            {(APPLE, MUG)},
+            {(APPLE, MUG), (APPLE, EGG)},
         ),
         # "A, then B, C, and finally D": [A, B], and D after B and C (before: B < C as well)
         (

@@ -521,6 +521,10 @@ def _first_edges(units: list[Unit], steps: list[int], free: set[int], edges: Edg
         if nxt is not None and (
             nxt.seq_after_prev or any(kind in {G.THEN, G.AFTER_ALL, G.AFTER_REF} for kind, _ in nxt.markers)
         ):
+            # "A - do that first. Then B, rinse C": first before all of the next sentence, which its "then"
+            # no longer orders as a whole
+            then = [t for v in units[k + 1 :] if v.sentence == nxt.sentence != u.sentence for t in v.tasks]
+            edges.update((a, b2) for a in u.tasks for b2 in then if b2 not in free)
             continue
         # "Begin by A; also B. Then C" / "First A, plus B. To finish, C": a list its adding word closes is
         # the first step where a later step follows ("First A, and B" alone: A first, the only other task B)
