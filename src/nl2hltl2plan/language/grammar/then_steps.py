@@ -62,13 +62,13 @@ def _comma_alone(said: str, own: str, text: str) -> bool:
 
 
 def own_clause(k: int, tasks: Tasks, text: str) -> bool:
-    """Is unit `k` a clause of its own after the one before it, set apart by a comma ("Then B, C") and, after
-    ", and", by a verb of its own ("Then B, and rinse C too")? The reader restates a shared verb ("Then look
-    at the pen and the watch" reads "look at the pen ..., and look at the watch ..."), so such a clause with
-    the verb of the one before it may be that clause's second task: "then" is for both (left open)."""
+    """Is unit `k` a clause of its own after the one before it, set apart by a comma and a verb of its own
+    ("Then B, and rinse C too")? The reader restates a shared verb ("Then look at the pen and the watch"
+    reads "look at the pen ..., and look at the watch ..."; "wash these: X, Y and Z"), so a clause with the
+    verb of the one before it may be that clause's second task: "then" is for both (left open)."""
     low, units = text.lower(), tasks.units
     said, own = tasks.specs[units[k - 1].tasks[-1]].text.lower(), tasks.specs[units[k].tasks[0]].text.lower()
-    if units[k].joiner and said.split(" ", 1)[0] == own.split(" ", 1)[0]:  # ", and <the same verb> ..."
+    if said.split(" ", 1)[0] == own.split(" ", 1)[0]:  # ", <the same verb> ...": maybe restated
         return False
     at = low.find(said)
     end = low.find(own, at + len(said)) if at >= 0 else -1
