@@ -73,8 +73,8 @@ def test_then_before_a_list_precedes_all_of_it():
 
 
 def test_then_orders_its_own_clause_only():
-    """ANNOTATION_GUIDE.md: "Then Y" -> [previous task, Y]; ", and drop the fork in a drawer too", a clause set
-    apart by a comma and a verb of its own, has no order word (before h213 the fork came after the apple)."""
+    """ANNOTATION_GUIDE.md: "Then Y" -> [previous task, Y]; ", and drop the fork in a drawer too", a clause
+    set apart by a comma and a verb of its own, has no order word (before h213: after the apple too)."""
     _, order, unread = read(
         "put the apple in the fridge, then put the egg in the sink, and drop the fork in a drawer too"
     )
