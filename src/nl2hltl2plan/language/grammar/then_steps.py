@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import re
 
+from nl2hltl2plan.language.content_words import phrase_list_pattern
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.draft_tasks import Tasks, Unit
 from nl2hltl2plan.language.grammar.frames import IN_SENTENCE
@@ -61,6 +62,9 @@ def _comma_alone(said: str, own: str, text: str) -> bool:
     return re.fullmatch(r"\s*,\s*", text[spans[0][1] : spans[1][0]]) is not None
 
 
+_ADDITIVE = re.compile(rf"^\W*(?:and\s+)?(?:{phrase_list_pattern('order_scope.txt', 'additive')})\b")
+
+
 def own_clause(k: int, tasks: Tasks, text: str) -> bool:
     """Is unit `k` a clause of its own after the one before it, set apart by a comma and a verb of its own
     ("Then B, and rinse C too")? The reader restates a shared verb ("Then look at the pen and the watch"
@@ -72,4 +76,6 @@ def own_clause(k: int, tasks: Tasks, text: str) -> bool:
         return False
     at = low.find(said)
     end = low.find(own, at + len(said)) if at >= 0 else -1
-    return end >= 0 and "," in low[at + len(said) : end]
+    between = low[at + len(said) : end]
+    # "After that, B; also C" / "B, plus C": an additive word joins C to B's step (the composed sets' form)
+    return end >= 0 and "," in between and _ADDITIVE.match(between) is None
