@@ -193,9 +193,9 @@ def _said_for_an_earlier_clause(marker: tuple[str, str], k: int, tasks: Tasks, t
 
 
 def _leaves_order_open(u: Unit, text: str) -> bool:
-    """Does the sentence of unit `u` say "in any order" (one group: a "then" before it is for all)?"""
-    sentences = split_sentences(text)
-    return u.sentence < len(sentences) and _ANY_ORDER.search(sentences[u.sentence][0]) is not None
+    """Does `u`'s sentence say "in any order" / "order doesn't matter" (one group: "then" is for all)?"""
+    said = sentences[u.sentence][0] if u.sentence < len(sentences := split_sentences(text)) else ""
+    return _ANY_ORDER.search(said) is not None or _ORDER_FREE.search(said) is not None
 
 
 def _unfreed_clause(units: list[Unit], prev: Unit, free: set[int]) -> list[int]:
@@ -250,6 +250,7 @@ def _any_order_steps(tasks: Tasks, steps: list[int]) -> set[int]:
     return {t for k, u in enumerate(units) if steps[k] in open_steps for t in u.tasks}
 
 
+_ORDER_FREE = re.compile(r"\border\s+(?:doesn'?t|does\s+not|isn'?t|is\s+not)\s+(?:matter|important)\b", re.I)
 _ANY_ORDER = re.compile(r"\b(?:any|either|whatever|no\s+particular)\s+order\b", re.I)
 # words that let one task happen at any time ("in any order" frees an order, not a task)
 _ANY_TIME = re.compile(
