@@ -65,17 +65,29 @@ def test_then_after_a_list_follows_all_of_it(text):
 
 
 def test_then_before_a_list_precedes_all_of_it():
+    """ "and" alone (no comma) may join one clause's two tasks: the guide leaves it open, both after."""
     _, order, unread = read(
         "put the apple in the fridge, then put the egg in the sink and put the fork in a drawer"
     )
     assert order == {(APPLE, SINK_EGG), (APPLE, FORK)} and not unread
 
 
-def test_clauses_joined_by_commas_before_then_are_a_sequence():
+def test_then_orders_its_own_clause_only():
+    """ANNOTATION_GUIDE.md: "Then Y" -> [previous task, Y]; ", and drop the fork in a drawer too", a clause
+    set apart by a comma and a verb of its own, has no order word (before h213: after the apple too)."""
+    _, order, unread = read(
+        "put the apple in the fridge, then put the egg in the sink, and drop the fork in a drawer too"
+    )
+    assert order == {(APPLE, SINK_EGG)} and not unread
+
+
+def test_then_after_commas_follows_the_clause_before_it():
+    """The guide's previous task is "the one stated in the immediately preceding clause": "A, B, then C" is
+    [B, C], not the sequence A < B < C read before h213."""
     _, order, unread = read(
         "put the apple in the fridge, put the egg in the sink, then put the fork in a drawer"
     )
-    assert order == chain(APPLE, SINK_EGG, FORK) and not unread
+    assert order == {(SINK_EGG, FORK)} and not unread
 
 
 def test_a_task_allowed_at_any_time_stays_out_of_the_step():

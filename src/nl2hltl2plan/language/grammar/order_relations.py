@@ -27,6 +27,7 @@ from nl2hltl2plan.language.grammar.references import (
 )
 from nl2hltl2plan.language.grammar.remark_edges import remark_edges
 from nl2hltl2plan.language.grammar.sentences import RelationSentence, split_sentences
+from nl2hltl2plan.language.grammar.then_steps import clause_before, own_clause, sentence_steps
 from nl2hltl2plan.language.semantic_check import find_cycle
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter, transitive_reduction
 
@@ -57,7 +58,7 @@ def relate(
         _added_to_free(k, tasks, text, b)
         _then_also(k, tasks, text, b)
         _marker_edges(k, tasks, (free, loose), b, text, edges)
-        _step_edges(k, tasks, steps, free, edges)
+        _step_edges(k, tasks, steps, free, edges, text)
     _first_edges(tasks.units, steps, free, edges)
     _leading_last(tasks.units, steps, free, edges)
     if why := first_said_unread(tasks.units, text):  # "First A, first B": which one is first?
@@ -125,6 +126,8 @@ def _marker_edges(
     earlier = [t for t in range(len(tasks.specs)) if t < first_of_sentence]
     others = [t for t in range(len(tasks.specs)) if t not in u.tasks]
     for kind, ref in u.markers:
+        if kind == G.THEN and _said_for_an_earlier_clause((kind, ref), k, tasks, text):
+            continue  # "A. Then B, and C too.": "then" opens B's clause, C's has no order word (the guide)
         if kind == G.THEN and prev is not None:
             after = [] if prev.sentence == u.sentence else _last_step(units, prev.sentence, free, edges, text)
             after = (after or _unfreed_clause(units, prev, free)) + _put_before(units, prev, free)
@@ -179,6 +182,24 @@ def _marker_edges(
             _ref_edges(kind == G.AFTER_REF, ref, u, tasks, b, text, edges)
 
 
+def _said_for_an_earlier_clause(marker: tuple[str, str], k: int, tasks: Tasks, text: str) -> bool:
+    """Is a sentence's leading marker on unit `k` one that an earlier clause of the sentence carries (it was
+    said once, before that clause), with no "then" of its own joining `k`? Not where the sentence groups its
+    clauses by leaving their order open ("Then B and C in any order": both after, the benchmark's form), nor
+    where `k` is not a clause of its own (`own_clause`)."""
+    units = tasks.units
+    u = units[k]
+    if u.seq_after_prev or _leaves_order_open(u, text) or not own_clause(k, tasks, text):
+        return False
+    return any(v.sentence == u.sentence and marker in v.markers for v in units[:k])
+
+
+def _leaves_order_open(u: Unit, text: str) -> bool:
+    """Does `u`'s sentence say "in any order" / "order doesn't matter" (one group: "then" is for all)?"""
+    said = sentences[u.sentence][0] if u.sentence < len(sentences := split_sentences(text)) else ""
+    return _ANY_ORDER.search(said) is not None or _ORDER_FREE.search(said) is not None
+
+
 def _unfreed_clause(units: list[Unit], prev: Unit, free: set[int]) -> list[int]:
     """The tasks "Then" comes after: the clause before it, or where a time phrase frees that clause alone ("A,
     and B whenever you like. Then C"), the last clause of its sentence that nothing frees."""
@@ -199,36 +220,7 @@ def _with_stated(scope: list[int], tasks: Tasks, edges: Edges) -> list[int]:
     return scope + stated
 
 
-def sentence_steps(units: list[Unit]) -> list[int]:
-    """The step of each unit. Every sentence opens a step, and so does a clause joined to the one before by
-    "then" ("..., then", "and once that's done", "and finally"): "A and B, then C and D" is the steps {A, B}
-    and {C, D}, so C and D come after both A and B, as in "A and B. Then C and D.". Before such a "then",
-    clauses joined by a comma alone are steps of their own: "A, B, then C" is a sequence, "A, B and C, then
-    D" a list ("and" closes it)."""
-    said = [k == 0 or u.sentence != units[k - 1].sentence or _follows_a_step(u) for k, u in enumerate(units)]
-    opens = list(said)
-    for k, u in enumerate(units):
-        nxt = next((j for j in range(k + 1, len(units)) if said[j]), len(units))
-        if (
-            not said[k]
-            and not u.joiner
-            and nxt < len(units)
-            and units[nxt].sentence == u.sentence
-            and not any(units[j].joiner for j in range(k + 1, nxt))
-        ):
-            opens[k] = True
-    out: list[int] = []
-    for k in range(len(units)):
-        out.append(out[-1] + 1 if out and opens[k] else out[-1] if out else 0)
-    return out
-
-
-def _follows_a_step(u: Unit) -> bool:
-    """Is the unit joined to the clauses before it in its sentence by "then" or "finally"?"""
-    return u.seq_after_prev or (G.FINALLY, IN_SENTENCE) in u.markers
-
-
-def _step_edges(k: int, tasks: Tasks, steps: list[int], free: set[int], edges: Edges) -> None:
+def _step_edges(k: int, tasks: Tasks, steps: list[int], free: set[int], edges: Edges, text: str) -> None:
     """ "A and B, then C": unit `k` after the step before its own, inside one sentence: after every task of
     that step that no word lets happen at any time ("A at any time and B, then C": after B; after the
     last clause when every task is so and "then" joins them)."""
@@ -238,9 +230,13 @@ def _step_edges(k: int, tasks: Tasks, steps: list[int], free: set[int], edges: E
         return
     if (G.FINALLY, IN_SENTENCE) in units[opener].markers:  # "finally" states its own order
         return
-    if k != opener and any(t in free for t in u.tasks):  # "A, then B, and C at any time"
+    # "A, then B, and C too": C's clause has no order word (ANNOTATION_GUIDE.md)
+    apart = own_clause(k, tasks, text) and not _leaves_order_open(u, text)
+    if k != opener and (apart or any(t in free for t in u.tasks)):
         return
-    before = [t for j in range(opener) if steps[j] == step - 1 for t in units[j].tasks]
+    before = [t for t in clause_before(tasks, steps, opener, text) if t not in free] or [
+        t for j in range(opener) if steps[j] == step - 1 for t in units[j].tasks
+    ]
     after = [t for t in before if t not in free and not _ANY_TIME.search(tasks.specs[t].text)]
     if not after and units[opener].seq_after_prev:  # "A at any time, then B": after A all the same
         after = units[opener - 1].tasks
@@ -256,6 +252,7 @@ def _any_order_steps(tasks: Tasks, steps: list[int]) -> set[int]:
     return {t for k, u in enumerate(units) if steps[k] in open_steps for t in u.tasks}
 
 
+_ORDER_FREE = re.compile(r"\border\s+(?:doesn'?t|does\s+not|isn'?t|is\s+not)\s+(?:matter|important)\b", re.I)
 _ANY_ORDER = re.compile(r"\b(?:any|either|whatever|no\s+particular)\s+order\b", re.I)
 # words that let one task happen at any time ("in any order" frees an order, not a task)
 _ANY_TIME = re.compile(
@@ -527,6 +524,10 @@ def _first_edges(units: list[Unit], steps: list[int], free: set[int], edges: Edg
         if nxt is not None and (
             nxt.seq_after_prev or any(kind in {G.THEN, G.AFTER_ALL, G.AFTER_REF} for kind, _ in nxt.markers)
         ):
+            # "A - do that first. Then B, rinse C": first before all of the next sentence, which its "then"
+            # no longer orders as a whole
+            then = [t for v in units[k + 1 :] if v.sentence == nxt.sentence != u.sentence for t in v.tasks]
+            edges.update((a, b2) for a in u.tasks for b2 in then if b2 not in free)
             continue
         # "Begin by A; also B. Then C" / "First A, plus B. To finish, C": a list its adding word closes is
         # the first step where a later step follows ("First A, and B" alone: A first, the only other task B)

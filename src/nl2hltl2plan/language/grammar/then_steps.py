@@ -1,0 +1,81 @@
+"""The steps of a sentence's clauses and the clause a "then" inside the sentence comes after
+(ANNOTATION_GUIDE.md: "Then Y" -> [previous task, Y], the one stated in the immediately preceding clause)."""
+
+from __future__ import annotations
+
+import re
+
+from nl2hltl2plan.language.content_words import phrase_list_pattern
+from nl2hltl2plan.language.grammar import word_tables as G
+from nl2hltl2plan.language.grammar.draft_tasks import Tasks, Unit
+from nl2hltl2plan.language.grammar.frames import IN_SENTENCE
+
+
+def sentence_steps(units: list[Unit]) -> list[int]:
+    """The step of each unit. Every sentence opens a step, and so does a clause joined to the one before by
+    "then" ("..., then", "and once that's done", "and finally"): "A and B, then C" is the steps {A, B} and
+    {C}; "A, B, then C" too (ANNOTATION_GUIDE.md: "A, B" states no order; `order_relations` orders C after B,
+    the clause before "then", only)."""
+    said = [k == 0 or u.sentence != units[k - 1].sentence or _follows_a_step(u) for k, u in enumerate(units)]
+    out: list[int] = []
+    for k in range(len(units)):
+        out.append(out[-1] + 1 if out and said[k] else out[-1] if out else 0)
+    return out
+
+
+def _follows_a_step(u: Unit) -> bool:
+    """Is the unit joined to the clauses before it in its sentence by "then" or "finally"?"""
+    return u.seq_after_prev or (G.FINALLY, IN_SENTENCE) in u.markers
+
+
+def clause_before(tasks: Tasks, steps: list[int], opener: int, text: str) -> list[int]:
+    """What "then" opening unit `opener` comes after: the step before it, or its last clause alone where a
+    comma alone joins that clause to the step ("A, B, then C" / "A, B, and then C": [B, C], the guide's
+    "previous task ... stated in the immediately preceding clause"), a verbless item too ("put X in A, Y in
+    B, then Z in C"). "A and B, then C" (one clause, or two joined by "and") is after both, as the guide
+    leaves it open."""
+    units = tasks.units
+    last = units[opener - 1]
+    same = [j for j in range(opener) if steps[j] == steps[opener - 1]]
+    if len(same) > 1 and not last.joiner:
+        return list(last.tasks)
+    said, own = (tasks.specs[t].text for t in last.tasks[-2:]) if len(last.tasks) > 1 else ("", "")
+    if own and _comma_alone(said, own, text):
+        return [last.tasks[-1]]
+    return [t for j in same for t in units[j].tasks]
+
+
+def _comma_alone(said: str, own: str, text: str) -> bool:
+    """Is the item `own` joined to the item `said` before it by a comma alone (no "and", no word)? A verbless
+    item's text carries the verb its list shares ("put a cold egg in the microwave"): found without it."""
+    low = text.lower()
+    end, spans = 0, []
+    for item in (said.lower(), own.lower()):
+        at, form = low.find(item, end), item
+        if at < 0:
+            form = item.split(" ", 1)[-1]
+            at = low.find(form, end)
+        if at < 0:
+            return False
+        spans.append((at, at + len(form)))
+        end = at + len(form)
+    return re.fullmatch(r"\s*,\s*", text[spans[0][1] : spans[1][0]]) is not None
+
+
+_ADDITIVE = re.compile(rf"^\W*(?:and\s+)?(?:{phrase_list_pattern('order_scope.txt', 'additive')})\b")
+
+
+def own_clause(k: int, tasks: Tasks, text: str) -> bool:
+    """Is unit `k` a clause of its own after the one before it, set apart by a comma and a verb of its own
+    ("Then B, and rinse C too")? The reader restates a shared verb ("Then look at the pen and the watch"
+    reads "look at the pen ..., and look at the watch ..."; "wash these: X, Y and Z"), so a clause with the
+    verb of the one before it may be that clause's second task: "then" is for both (left open)."""
+    low, units = text.lower(), tasks.units
+    said, own = tasks.specs[units[k - 1].tasks[-1]].text.lower(), tasks.specs[units[k].tasks[0]].text.lower()
+    if said.split(" ", 1)[0] == own.split(" ", 1)[0]:  # ", <the same verb> ...": maybe restated
+        return False
+    at = low.find(said)
+    end = low.find(own, at + len(said)) if at >= 0 else -1
+    between = low[at + len(said) : end]
+    # "After that, B; also C" / "B, plus C": an additive word joins C to B's step (the composed sets' form)
+    return end >= 0 and "," in between and _ADDITIVE.match(between) is None
