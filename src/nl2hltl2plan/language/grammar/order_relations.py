@@ -27,7 +27,14 @@ from nl2hltl2plan.language.grammar.references import (
 )
 from nl2hltl2plan.language.grammar.remark_edges import remark_edges
 from nl2hltl2plan.language.grammar.sentences import RelationSentence, split_sentences
-from nl2hltl2plan.language.grammar.then_steps import clause_before, own_clause, sentence_steps
+from nl2hltl2plan.language.grammar.then_steps import (
+    ANY_ORDER,
+    clause_before,
+    leaves_order_open,
+    own_clause,
+    said_for_an_earlier_clause,
+    sentence_steps,
+)
 from nl2hltl2plan.language.semantic_check import find_cycle
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter, transitive_reduction
 
@@ -126,7 +133,7 @@ def _marker_edges(
     earlier = [t for t in range(len(tasks.specs)) if t < first_of_sentence]
     others = [t for t in range(len(tasks.specs)) if t not in u.tasks]
     for kind, ref in u.markers:
-        if kind == G.THEN and _said_for_an_earlier_clause((kind, ref), k, tasks, text):
+        if kind == G.THEN and said_for_an_earlier_clause((kind, ref), k, tasks, text):
             continue  # "A. Then B, and C too.": "then" opens B's clause, C's has no order word (the guide)
         if kind == G.THEN and prev is not None:
             after = [] if prev.sentence == u.sentence else _last_step(units, prev.sentence, free, edges, text)
@@ -182,24 +189,6 @@ def _marker_edges(
             _ref_edges(kind == G.AFTER_REF, ref, u, tasks, b, text, edges)
 
 
-def _said_for_an_earlier_clause(marker: tuple[str, str], k: int, tasks: Tasks, text: str) -> bool:
-    """Is a sentence's leading marker on unit `k` one that an earlier clause of the sentence carries (it was
-    said once, before that clause), with no "then" of its own joining `k`? Not where the sentence groups its
-    clauses by leaving their order open ("Then B and C in any order": both after, the benchmark's form), nor
-    where `k` is not a clause of its own (`own_clause`)."""
-    units = tasks.units
-    u = units[k]
-    if u.seq_after_prev or _leaves_order_open(u, text) or not own_clause(k, tasks, text):
-        return False
-    return any(v.sentence == u.sentence and marker in v.markers for v in units[:k])
-
-
-def _leaves_order_open(u: Unit, text: str) -> bool:
-    """Does `u`'s sentence say "in any order" / "order doesn't matter" (one group: "then" is for all)?"""
-    said = sentences[u.sentence][0] if u.sentence < len(sentences := split_sentences(text)) else ""
-    return _ANY_ORDER.search(said) is not None or _ORDER_FREE.search(said) is not None
-
-
 def _unfreed_clause(units: list[Unit], prev: Unit, free: set[int]) -> list[int]:
     """The tasks "Then" comes after: the clause before it, or where a time phrase frees that clause alone ("A,
     and B whenever you like. Then C"), the last clause of its sentence that nothing frees."""
@@ -231,7 +220,7 @@ def _step_edges(k: int, tasks: Tasks, steps: list[int], free: set[int], edges: E
     if (G.FINALLY, IN_SENTENCE) in units[opener].markers:  # "finally" states its own order
         return
     # "A, then B, and C too": C's clause has no order word (ANNOTATION_GUIDE.md)
-    apart = own_clause(k, tasks, text) and not _leaves_order_open(u, text)
+    apart = own_clause(k, tasks, text) and not leaves_order_open(u, text)
     if k != opener and (apart or any(t in free for t in u.tasks)):
         return
     before = [t for t in clause_before(tasks, steps, opener, text) if t not in free] or [
@@ -247,13 +236,11 @@ def _any_order_steps(tasks: Tasks, steps: list[int]) -> set[int]:
     """The tasks of the steps whose words leave their order open ("A, and B in any order, and ...")."""
     units = tasks.units
     open_steps = {
-        steps[k] for k, u in enumerate(units) if any(_ANY_ORDER.search(tasks.specs[t].text) for t in u.tasks)
+        steps[k] for k, u in enumerate(units) if any(ANY_ORDER.search(tasks.specs[t].text) for t in u.tasks)
     }
     return {t for k, u in enumerate(units) if steps[k] in open_steps for t in u.tasks}
 
 
-_ORDER_FREE = re.compile(r"\border\s+(?:doesn'?t|does\s+not|isn'?t|is\s+not)\s+(?:matter|important)\b", re.I)
-_ANY_ORDER = re.compile(r"\b(?:any|either|whatever|no\s+particular)\s+order\b", re.I)
 # words that let one task happen at any time ("in any order" frees an order, not a task)
 _ANY_TIME = re.compile(
     r"\b(?:(?:any|whatever)\s+(?:time|point)|anytime|whenever|meanwhile|simultaneously|parallel|independently|"
@@ -386,7 +373,7 @@ def _last_step(units: list[Unit], sentence: int, free: set[int], edges: Edges, t
     if sentence >= len(sentences):
         return []
     said = sentences[sentence][0]
-    order_only = _ANY_ORDER.search(said) is not None and _ANY_TIME.search(said) is None
+    order_only = ANY_ORDER.search(said) is not None and _ANY_TIME.search(said) is None
     if _FREE_WORD.search(said) and not order_only:
         return []
     own = {t for v in units if v.sentence == sentence for t in v.tasks}

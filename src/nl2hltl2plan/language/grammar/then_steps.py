@@ -9,6 +9,11 @@ from nl2hltl2plan.language.content_words import phrase_list_pattern
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.draft_tasks import Tasks, Unit
 from nl2hltl2plan.language.grammar.frames import IN_SENTENCE
+from nl2hltl2plan.language.grammar.sentences import split_sentences
+
+# "in any order" / "order doesn't matter" said of a sentence: its clauses are one group
+ANY_ORDER = re.compile(r"\b(?:any|either|whatever|no\s+particular)\s+order\b", re.I)
+_ORDER_FREE = re.compile(r"\border\s+(?:doesn'?t|does\s+not|isn'?t|is\s+not)\s+(?:matter|important)\b", re.I)
 
 
 def sentence_steps(units: list[Unit]) -> list[int]:
@@ -79,3 +84,21 @@ def own_clause(k: int, tasks: Tasks, text: str) -> bool:
     between = low[at + len(said) : end]
     # "After that, B; also C" / "B, plus C": an additive word joins C to B's step (the composed sets' form)
     return end >= 0 and "," in between and _ADDITIVE.match(between) is None
+
+
+def said_for_an_earlier_clause(marker: tuple[str, str], k: int, tasks: Tasks, text: str) -> bool:
+    """Is a sentence's leading marker on unit `k` one that an earlier clause of the sentence carries (it was
+    said once, before that clause), with no "then" of its own joining `k`? Not where the sentence groups its
+    clauses by leaving their order open ("Then B and C in any order": both after, the benchmark's form), nor
+    where `k` is not a clause of its own (`own_clause`)."""
+    units = tasks.units
+    u = units[k]
+    if u.seq_after_prev or leaves_order_open(u, text) or not own_clause(k, tasks, text):
+        return False
+    return any(v.sentence == u.sentence and marker in v.markers for v in units[:k])
+
+
+def leaves_order_open(u: Unit, text: str) -> bool:
+    """Does `u`'s sentence say "in any order" / "order doesn't matter" (one group: "then" is for all)?"""
+    said = sentences[u.sentence][0] if u.sentence < len(sentences := split_sentences(text)) else ""
+    return ANY_ORDER.search(said) is not None or _ORDER_FREE.search(said) is not None
