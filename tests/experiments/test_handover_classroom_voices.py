@@ -62,8 +62,10 @@ UNCLEAR = [
     (3, PILLARS + "If a region is one of those three, never put an object on it."),
     # with no regions named before, "the ones I said" names none
     (3, "Don't put a pillar on a region other than the ones I said. Move the pillars to E, F and G."),
-    # a subject line's topic is not a command
-    (5, "Subject: swap\nSwap the red and blue blocks, red first. Yellow to the opposite side, any time."),
+    # a subject line's topic is not a command: one that says more than the body ("return") stays unread (a
+    # subject the body says again is dropped, h215's `handover_headers`)
+    (5, "Subject: swap and return\nSwap the red and blue blocks, red first. Yellow to the opposite side, any "
+     "time."),
 ]
 
 NEAR_MISSES = [

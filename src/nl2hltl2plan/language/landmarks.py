@@ -319,8 +319,8 @@ _ROOM_OPENER = re.compile(
 
 # a posture said of a thing with a plain place says where it is now, as "from" does: "the knife lying in the
 # sink on a plate" (with a word of nearness it is a landmark already, `posture_at`); never after "leave" or
-# "keep", or a wish ("I want the apple sitting on the plate": an end state), or of "it" ("leave it lying on
-# the bed" says where it goes)
+# "keep", or a wish or "be" ("I want the apple sitting on the plate", "it should be resting on the plate": an
+# end state), or of "it" ("leave it lying on the bed" says where it goes)
 _POSTURE_IN = re.compile(
     r"(?<!\bit)(?<!\bthem)\s+(?:that's\s+|that\s+is\s+|which\s+is\s+)?"
     r"(?:sitting|lying|laying|located|standing|resting|kept|stored)\s+(?:in|on|inside|at|atop)\s+"
@@ -328,7 +328,7 @@ _POSTURE_IN = re.compile(
     re.I,
 )
 _KEPT_AS = re.compile(
-    r"\b(?:leave|leaving|left|keep|keeping|have|let|wants?|like|love|needs?|prefer|see)\b[^,.;!?]*$", re.I
+    r"\b(?:leave|leaving|left|keep|keeping|have|let|wants?|like|love|needs?|prefer|see|be)\b[^,.;!?]*$", re.I
 )
 
 
