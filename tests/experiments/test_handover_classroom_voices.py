@@ -29,14 +29,13 @@ from handover_specs import (
 
 DEV = [(int(task), text) for style in STYLES["dev102"].values() for task, text in style.items()]
 HELD = [(int(task), text) for style in STYLES["validation36"].values() for task, text in style.items()]
-# left refused: a subject line names a topic, not a command ("Subject: swap"); the speakers "A:" and "B:"
-# are also arms a and b; "Right, class:" ("right" may be a side) and "Class, watch:" ("watch" is an object)
-STILL_REFUSED = {
-    *STYLES["dev102"]["email_subject"].values(),
-    *STYLES["dev102"]["dialogue"].values(),
-    STYLES["dev102"]["teacher"]["2"],
-    STYLES["dev102"]["teacher"]["4"],
-}
+# left refused: "Right, class:" ("right" may be a side) and "Class, watch:" ("watch" is an object); the
+# e-mails under a subject line the body says again and the "A: ... B: ..." dialogues read since h215
+# (`handover_headers`)
+STILL_REFUSED = {STYLES["dev102"]["teacher"]["2"], STYLES["dev102"]["teacher"]["4"]}
+HEADED = [
+    (int(task), text) for voice in ("email_subject", "dialogue") for task, text in STYLES["dev102"][voice].items()
+]
 PILLARS = "Move the three pillars to E, F and G beside arms a and b. "
 YELLOW = "Put the yellow block on I and then on G. "
 ON_I = "Put the three blocks on region I one after another, red before blue. "
@@ -113,6 +112,13 @@ def test_development_batch_gives_the_written_spec(task: int, text: str) -> None:
 @pytest.mark.parametrize(("task", "text"), [case for case in DEV if case[1] in STILL_REFUSED])
 def test_development_sentences_left_are_refused_by_name(task: int, text: str) -> None:
     assert_refused_by_name(task, text)
+
+
+@pytest.mark.data
+@pytest.mark.sweep
+@pytest.mark.parametrize(("task", "text"), HEADED)
+def test_subject_lines_and_dialogues_give_the_written_spec(task: int, text: str) -> None:
+    assert_written_spec(task, text)
 
 
 @pytest.mark.data
