@@ -27,15 +27,14 @@ from handover_specs import (
     assert_written_spec_or_refused,
 )
 
-DEV = [(int(task), text) for style in STYLES["dev102"].values() for task, text in style.items()]
+DEV102 = STYLES["dev102"]
+DEV = [(int(task), text) for style in DEV102.values() for task, text in style.items()]
 HELD = [(int(task), text) for style in STYLES["validation36"].values() for task, text in style.items()]
 # left refused: "Right, class:" ("right" may be a side) and "Class, watch:" ("watch" is an object); the
 # e-mails under a subject line the body says again and the "A: ... B: ..." dialogues read since h215
 # (`handover_headers`)
 STILL_REFUSED = {STYLES["dev102"]["teacher"]["2"], STYLES["dev102"]["teacher"]["4"]}
-HEADED = [
-    (int(task), text) for voice in ("email_subject", "dialogue") for task, text in STYLES["dev102"][voice].items()
-]
+HEADED = [(int(task), text) for voice in ("email_subject", "dialogue") for task, text in DEV102[voice].items()]
 PILLARS = "Move the three pillars to E, F and G beside arms a and b. "
 YELLOW = "Put the yellow block on I and then on G. "
 ON_I = "Put the three blocks on region I one after another, red before blue. "
