@@ -34,7 +34,7 @@ HELD = [(int(task), text) for style in STYLES["validation36"].values() for task,
 # e-mails under a subject line the body says again and the "A: ... B: ..." dialogues read since h215
 # (`handover_headers`)
 STILL_REFUSED = {STYLES["dev102"]["teacher"]["2"], STYLES["dev102"]["teacher"]["4"]}
-HEADED = [(int(task), text) for voice in ("email_subject", "dialogue") for task, text in DEV102[voice].items()]
+HEADED = [(int(t), text) for voice in ("email_subject", "dialogue") for t, text in DEV102[voice].items()]
 PILLARS = "Move the three pillars to E, F and G beside arms a and b. "
 YELLOW = "Put the yellow block on I and then on G. "
 ON_I = "Put the three blocks on region I one after another, red before blue. "
