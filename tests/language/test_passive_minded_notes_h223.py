@@ -11,6 +11,7 @@ import pytest
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.language.courtesy import without_framing, without_greetings
 from nl2hltl2plan.language.grammar.treatments_said import treatments_said
+from nl2hltl2plan.language.numbered_steps import bullets_apart
 from nl2hltl2plan.language.translate import translate
 
 
@@ -53,6 +54,21 @@ def test_a_host_or_carer_header_goes_and_an_unknown_one_stays():
     assert without_greetings(kept, bool) == kept
 
 
+@pytest.mark.parametrize(
+    "text, items",
+    [
+        ("To-do: - chill a cup - wash a pan", "To-do: chill a cup. wash a pan."),
+        ("To do \u2022 wash a plate, put it away \u2022 wash the pan",
+         "To do: wash a plate, put it away. wash the pan."),
+        ("- [ ] put the mug in the sink - [x] put the egg away",
+         "put the mug in the sink. put the egg away."),
+        ("Robot - put the mug in the sink - now", "Robot - put the mug in the sink - now"),  # no list
+    ],
+)
+def test_to_do_lists_are_one_sentence_an_item(text, items):
+    assert bullets_apart(text) == items
+
+
 def _read(text: str, world) -> list[str] | str:
     try:
         res = translate(text, world, "offline", build=False, actions="none")
@@ -86,3 +102,11 @@ def kitchen():
 )  # fmt: skip
 def test_read_in_a_kitchen(kitchen, text, read):
     assert _read(text, kitchen) == read
+
+
+@pytest.mark.data
+def test_a_to_do_list_gone_through_top_to_bottom_is_a_chain(kitchen):
+    said = "To-do: - chill a mug and put it in the sink - put the pan on the counter. Go top to bottom."
+    res = translate(said, kitchen, "offline", build=False, actions="none")
+    assert [t.summary() for t in res.tasks] == ["cool_place Mug -> SinkBasin", "place Pan -> CounterTop"]
+    assert [tuple(pair) for pair in res.before] == [("A", "B")]
