@@ -319,8 +319,8 @@ KNOWN_WRONG: set[str] = {
     "counter after that heat an apple and throw it in the trash",
     # h223's dev half (read so at the session-30 start too, another class than h223's): "A, B, and then C"
     # in one sentence chains A before B, which no word says (the guide: B before C only)
-    "I was wondering if you could chill a tomato and put it on the table, warm a mug and put it on the coffee "
-    "maker, and then chill a frying pan and put it on the table too.",
+    "I was wondering if you could chill a tomato and put it on the table, warm a mug and put it on the "
+    "coffee maker, and then chill a frying pan and put it on the table too.",
 }
 
 
