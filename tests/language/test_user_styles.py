@@ -330,6 +330,10 @@ KNOWN_WRONG: set[str] = {
     "first chill the tomato and put it on the dining table, then chill the mug and put it on the coffee "
     "machine, chill the apple and put it on the dining table, then chill the bread and put it on the dining "
     "table",
+    # h223's dev half (read so at the session-30 start too, another class than h223's): "A, B, and then C"
+    # in one sentence chains A before B, which no word says (the guide: B before C only)
+    "I was wondering if you could chill a tomato and put it on the table, warm a mug and put it on the "
+    "coffee maker, and then chill a frying pan and put it on the table too.",
 }
 
 

@@ -180,7 +180,8 @@ _GREETING = re.compile(
 # drops it, unless the name is a thing): it only says who the text is for and names no task
 _NOTE_HEADING = (
     rf"(?:a\s+)?{courtesy_pattern('note')}(?:\s+(?:for|to)\s+(?:(?P<name>(?-i:[A-Z][a-z]+))|"
-    rf"(?P<whoever>{courtesy_pattern('note_for')})|(?:the\s+)?{courtesy_pattern('address')}))?\s*:\s*"
+    rf"(?P<whoever>{courtesy_pattern('note_for', 'note_reader')})|(?:the\s+)?{courtesy_pattern('address')}))?"
+    r"\s*:\s*"
 )
 # a call run on into the request at a sentence's start, or set apart by a colon or a dash ("Robot: after you
 # put ..."), a note's heading ("Note for the robot:"), which
@@ -304,6 +305,10 @@ def without_call(text: str) -> str:
 _RELAYED = re.compile(rf"{_OPENS}{courtesy_pattern('relayed')}\s*[:,]?\s+(?=[a-z])", re.I)
 _POSTSCRIPT = re.compile(rf"{_OPENS}{courtesy_pattern('postscript')}(?:\s*[:,-])?\s+(?=\w)", re.I)
 _WISH = re.compile(rf"\b{courtesy_pattern('wish')}\s+(?:(?:also|please)\s+)?(?=[a-z])", re.I)
+_SOFTENED = re.compile(
+    rf"\b((?:could|can|would|will)\s+(?:you|u)|(?:you|u)\s+(?:could|can|would|might))\s+{courtesy_pattern('softened')}\b",
+    re.I,
+)
 # "it would be great if both phones were in the safe": the state wished for, a goal (`grammar/restated` reads
 # "make sure X is in Y"); a wish for anything else stays, and its "if" is refused as a condition
 _STATE_WISH = re.compile(
@@ -322,7 +327,7 @@ _UNHURRIED = re.compile(
 # order word ("ok so first ...") and a tag where a sentence ends (", ta.", ", okay?": a statement, "."): h202
 _ADDRESSED = re.compile(
     rf"{_OPENS}(?:(?:{courtesy_pattern('endearment')}\s*,|"
-    rf"{courtesy_pattern('speaker')}\s*(?:[:,]|\s[-\u2013\u2014]+))\s*(?=\w)|"
+    rf"{courtesy_pattern('speaker')}\s*(?:[:,]|[!.](?=\s)|\s[-\u2013\u2014]+))\s*(?=\w)|"
     rf"(?:{courtesy_pattern('spoken_opener')}\s*,?\s*)+(?={courtesy_pattern('opened')}\b))",
     re.I,
 )
@@ -334,10 +339,10 @@ def without_framing(text: str) -> str:
     """`text` without the framing a household request comes in that carries no task, no order and no
     negation: a relayed request's "Mom says", a "P.S.", a wish frame (a wished state is a goal), a sentence
     that only announces a request and "no rush" (`courtesy.txt`: `relayed`, `postscript`, `wish`,
-    `state_wish`, `aside`, `unhurried`), a form of address, the note's writer, a tag, spoken openers before
-    an order word, a numbered list's markers and a heading that places every item (`endearment`, `speaker`,
-    `tag`, `opened`, `place_heading`). Words no list holds stay, to be read or refused by name
-    (docs/language.md, "Courtesy").
+    `state_wish`, `aside`, `unhurried`), a hedge after "could you" (`softened`), a form of address, the
+    note's writer, a tag, spoken openers before an order word, a numbered list's markers and a heading that
+    places every item (`endearment`, `speaker`, `tag`, `opened`, `place_heading`). Words no list holds
+    stay, to be read or refused by name (docs/language.md, "Courtesy").
 
     >>> without_framing("Could you do me a favour? Mom says put the mug in the sink. P.S. the egg goes away")
     'put the mug in the sink. the egg goes away'
@@ -353,7 +358,7 @@ def without_framing(text: str) -> str:
     for framing in (_ADDRESSED, _RELAYED, _POSTSCRIPT, _ASIDE_SENTENCE, _UNHURRIED, _ADDRESSED):
         text = framing.sub(lambda m: m["lead"] or "", text)
     text = _PLACE_HEADING.sub(_each_placed, _unnumbered(text))
-    return _WISH.sub("", _STATE_WISH.sub(_wished, text)).strip()
+    return _WISH.sub("", _STATE_WISH.sub(_wished, _SOFTENED.sub(r"\1", text))).strip()
 
 
 def _wished(m: re.Match[str]) -> str:

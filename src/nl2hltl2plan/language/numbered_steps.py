@@ -60,8 +60,15 @@ _DASHED_ORDER = re.compile(rf"\s+[-\u2013\u2014]\s+(?={_ORDER_SAID})", re.I)
 # a list of bullets ("To do: - put the keychain in the box - put the pillow on the armchair"): a dash or a
 # bullet opening the text or following its heading's colon, and one more set apart by spaces; a dash inside
 # a sentence ("Robot - put ...", "1) kitchen - put ...") opens no list
-_BULLETED = re.compile(r"^(?P<head>[^-\u2022*:.!?]*:\s*)?[-\u2022*]\s+(?=\S.*\s[-\u2022*]\s+\S)")
+# (its heading may hold a hyphen, "To-do:", or stand before a bullet with no colon, "To do \u2022 ...", and an
+# item may open with a checkbox, "- [ ] ...": h223)
+_BULLETED = re.compile(
+    r"^(?P<head>(?:[^-\u2022*:.!?]|(?<=\w)-(?=\w))*:\s*|to[\s-]?do(?:\s+list)?\s+(?=\u2022))?"
+    r"[-\u2022*]\s+(?=\S.*\s[-\u2022*]\s+\S)",
+    re.I,
+)
 _BULLET = re.compile(r"\s+[-\u2022*]\s+")
+_CHECKBOX = re.compile(r"^\[\s*[x\u2713]?\s*\]\s*", re.I)
 
 
 def bullets_apart(text: str) -> str:
@@ -72,8 +79,10 @@ def bullets_apart(text: str) -> str:
     """
     if (m := _BULLETED.match(text.strip())) is None:
         return text
-    items = (item.strip(" .;!?") for item in _BULLET.split(text.strip()[m.end() :]))
-    return (m["head"] or "") + " ".join(f"{item}." for item in items if item)
+    items = (_CHECKBOX.sub("", item.strip(" .;!?")) for item in _BULLET.split(text.strip()[m.end() :]))
+    head = (m["head"] or "").strip()
+    head = f"{head}: " if head and not head.endswith(":") else f"{head} " if head else ""
+    return head + " ".join(f"{item}." for item in items if item)
 
 
 def step_order(text: str) -> str:

@@ -213,7 +213,11 @@ def _cased(word: str, like: str) -> str:
 
 
 # a list pasted from a phone's notes app (users_h195dev): its heading ("bathroom:", "to do:") opening the text
-_NOTE_HEADING = re.compile(rf"^\s*{courtesy_pattern('note_heading')}\s*:\s*(?=\w)", re.I)
+_NOTE_HEADING = re.compile(  # ... or when it is for ("A few things before you leave:", "While I'm away:")
+    rf"^\s*(?:{courtesy_pattern('note_heading')}(?:\s+{courtesy_pattern('note_when')})?|"
+    rf"{courtesy_pattern('note_when')})\s*:\s*(?=[\w-])",
+    re.I,
+)
 # an item of the list with no determiner ("..., toilet paper roll on the holder")
 _ITEM = re.compile(r"(?<=[,;])(?P<sp>\s*)(?P<item>[a-z][^,;.!?]*)", re.I)
 # "wash a cloth, cloth in the drawer": the thing treated, said again bare with its place, is put there

@@ -18,7 +18,8 @@ lexicon names (`find_mentions`), so a sentence about anything else is left as it
 - the place fronted: "onto the blue plate goes the green apple", "on the pink plate put the green apple,
   on the yellow plate the orange", "for the blue plate the carrot";
 - goals stated as a passive or an end state: "needs to be placed", "must be put", "ends up", "should
-  sit", "lands" before a place are "goes" (which `supply_put` reads), "make sure X is on Y" is "X goes on Y",
+  sit", "lands", "is to go", "should be left" before a place are "goes" (which `supply_put` reads), "X is to
+  be thrown away" is "take X and throw it out", "make sure X is on Y" is "X goes on Y",
   "I want to see X on Y" is "I want X on Y", an opening "By the end," is dropped (no earlier task);
 - an ordered clause about what goes where: "before anything goes on the blue plate" is "before you put
   anything on the blue plate", "only after that should X be placed on Y" is "after that, put X on Y".
@@ -68,12 +69,20 @@ _FRONTED_PLACE = re.compile(
     re.I,
 )
 _PASSIVE_GOAL = re.compile(
-    r"\s+(?:(?:needs?|has|have|is|are)\s+to\s+be\s+(?:placed|put|set|moved|laid|dropped)|"
-    r"(?:must|should|will|shall|can)\s+be\s+(?:placed|put|set|moved|laid|dropped)|"
+    r"\s+(?:(?:needs?|has|have|is|are)\s+to\s+be\s+(?:placed|put|set|moved|laid|dropped|left|kept|stored)|"
+    r"(?:must|should|will|shall|can)\s+be\s+(?:placed|put|set|moved|laid|dropped|left|kept|stored)|"
+    r"(?:is|are|needs?|has|have)\s+to\s+go|"
     r"(?:(?:should|must|has\s+to|have\s+to|needs?\s+to|will)\s+)?(?:ends?\s+up|sits?|rests?|lands?)|"
     r"(?:should|must|has\s+to|have\s+to|needs?\s+to|will)\s+(?:end\s+up|sit|rest|land)|"
     r"(?:should|must|has\s+to|have\s+to|needs?\s+to|will)\s+be\s+(?:sitting|resting|lying|standing))\s+"
     rf"(?={_PLACE}\s)",
+    re.I,
+)
+# "the spray bottle on the counter is to be thrown away" (h223): the thing, up to its landmark, thrown away
+_THROWN = re.compile(
+    r"(?P<lead>(?:^|(?<=[.;!?:])\s*|,\s*(?:and\s+)?|\s+and\s+))(?P<np>(?:the|a|an|two|both)\s+[^,.;!?]+?)\s+"
+    r"(?:(?:needs?|has|have|is|are)\s+to\s+be|(?:must|should|will|shall|can)\s+be)\s+"
+    r"(?:thrown|tossed|binned|chucked)\s+(?:away|out)\b",
     re.I,
 )
 _MAKE_SURE = re.compile(r"\b(?:make\s+sure|ensure|see\s+to\s+it)(?:\s+that)?\s+(?P<rest>[^.;!?]+)", re.I)
@@ -148,6 +157,7 @@ def restated(text: str) -> str:
     text = _WANT_TO_SEE.sub(r"\1", text)
     text = _MAKE_SURE.sub(lambda m: _IS_ON.sub(lambda i: _goes(m["rest"], i), m["rest"]), text)
     text = _PASSIVE_GOAL.sub(lambda m: _goes(text, m), text)
+    text = _THROWN.sub(_thrown, text)
     text = _CLAUSE_GOES.sub(_you_put, text)
     text = _INVERTED_AFTER.sub(_after_then_put, text)
     opener = _END_STATE_OPENER.match(text)
@@ -292,10 +302,16 @@ def _lower_article(phrase: str) -> str:
     return re.sub(r"^(The|A|An)\b", lambda a: a[0].lower(), phrase)
 
 
+def _thrown(m: re.Match[str]) -> str:
+    """ "the X on the counter is to be thrown away" -> "take the X on the counter and throw it out"."""
+    return f"{m['lead']}take {m['np']} and throw it out" if _is_named(m["np"]) else m[0]
+
+
 def _goes(text: str, m: re.Match[str]) -> str:
-    """ " goes " where an object is named right before the goal's verb."""
+    """ " goes " where an object is named right before the goal's verb ("the tomato slice" too)."""
     before = find_mentions(text[: m.start()])
-    return " goes " if before and before[-1].char_end == m.start() else m[0]
+    named = before and re.fullmatch(r"(?:\s+slices?)?", text[before[-1].char_end : m.start()], re.I)
+    return " goes " if named else m[0]
 
 
 def _after_then_put(m: re.Match[str]) -> str:

@@ -114,8 +114,8 @@ def read_sentences(text: str) -> Sentences:
 
 # "Do them in that order.": a sentence whose order is about the tasks stated before it
 _DO_THEM = re.compile(
-    r"^(?:(?:please|now)\s+)?(?:do|perform|complete|handle|carry\s+out)\s+(?:them|these|those|it(?:\s+all)?|"
-    r"all\s+of\s+(?:them|these|those|it)|everything|the\s+(?:tasks|steps|jobs))(?:\s+please)?$",
+    r"^(?:(?:please|now)\s+)?(?:go|(?:do|perform|complete|handle|carry\s+out)\s+(?:them|these|those|it(?:\s+all)?|"
+    r"all\s+of\s+(?:them|these|those|it)|everything|the\s+(?:tasks|steps|jobs)))(?:\s+please)?$",
     re.IGNORECASE,
 )
 

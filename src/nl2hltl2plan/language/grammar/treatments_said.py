@@ -5,7 +5,10 @@ slice), so a sentence about anything else, or a negated one, is left as it is:
 
 - a treatment said as a need: "the plate needs a (good) wash", "needs washing (up)", "needs to be (or
   get) chilled" is "wash / chill the plate"; "the plate doesn't need a wash" has no subject right before
-  the need, and is left (the grammar refuses it as a negation);
+  the need, and is left (the grammar refuses it as a negation); a duty in the passive ("has to be washed",
+  "should be chilled", a note's "to be rinsed") is the same, and "... and put / left on the counter" after it
+  puts the same thing ("wash the plate and put it on the counter"), as does "needs washing and putting";
+- "would you mind V-ing" (`courtesy.txt`, `minded`) is the request, each "and V-ing" after it its base form;
 - a causative: "have the bread cut up", "get the potato sliced" is "cut the bread", "slice the potato",
   and "have the robot slice the bread", "get someone to wash the plate" is "slice the bread", "wash the
   plate" (the grammar's verbs only);
@@ -31,6 +34,7 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
+from nl2hltl2plan.language.courtesy import courtesy_pattern
 from nl2hltl2plan.language.grammar.frames import APPLIANCE_OF
 from nl2hltl2plan.language.grammar.treated_lists import treated_lists
 from nl2hltl2plan.language.grammar.word_tables import VERB_PAST, VERBS
@@ -59,9 +63,11 @@ _PARTICLE = r"(?:\s+(?:up|down|off|out))?"
 def _patterns() -> tuple[re.Pattern[str], re.Pattern[str], re.Pattern[str]]:
     verbs, past = _forms(VERBS), _forms(VERB_PAST)
     need = re.compile(
-        rf"{_LEAD}{_THING}\s+(?:needs?|wants?|could\s+(?:use|do\s+with))\s+"
+        rf"{_LEAD}{_THING}\s+(?:(?:needs?|wants?|could\s+(?:use|do\s+with))\s+"
         rf"(?:(?:a|an)\s+(?:(?:good|quick|proper|little|bit\s+of\s+a)\s+)?(?P<noun>{verbs})"
-        rf"|to\s+(?:be|get)\s+(?P<part>{past})|(?P<ger>{verbs})){_PARTICLE}(?![\w'])",
+        rf"|to\s+(?:be|get)\s+(?P<part>{past})|(?P<ger>{verbs}))|{_DUTY}\s+(?P<duty>{past})){_PARTICLE}"
+        rf"(?:\s+and\s+(?P<then>{_PLACED})(?:\s+(?P<adv>away|back|down))?(?=\s+(?:in|into|on|onto|inside)\s))?"
+        r"(?![\w'])",
         re.I,
     )
     causative = re.compile(
@@ -75,11 +81,44 @@ def _patterns() -> tuple[re.Pattern[str], re.Pattern[str], re.Pattern[str]]:
     return need, causative, purpose
 
 
+# a duty said in the passive ("has to be washed", "should be chilled", a note's "to be rinsed", h223), and the
+# placing said after it in the same voice ("... and put / left / placed on the counter"), of the same thing
+_DUTY = r"(?:(?:has|have|is|are|ought)\s+to\s+(?:be|get)|(?:should|must|will|shall|can)\s+(?:be|get)|to\s+be)"
+_PLACED = (
+    r"(?:put|putting|placed|placing|set|setting|left|leaving|dropped|dropping|stored|storing|kept|keeping)"
+)
 _AGENT = re.compile(
     rf"{_LEAD}(?:have|get|let)\s+(?:(?:the|a|one)\s+robots?|one\s+of\s+(?:the\s+)?robots|someone|somebody)"
     r"\s+(?:to\s+)?(?P<verb>[a-z]+)\b",
     re.I,
 )
+
+
+# "would you mind washing the mug and putting it away?" (`courtesy.txt`, `minded`): the request, each verb of
+# its sentence said in the -ing form after the frame or after "and" / "then" / a comma in its base form (h223)
+_MINDED = re.compile(rf"\b{courtesy_pattern('minded')}\s+(?P<ger>[a-z]+ing)\b", re.I)
+_NEXT_GERUND = re.compile(r"(?P<lead>(?:\band|\bthen|,)\s+(?:then\s+)?)(?P<ger>[a-z]+ing)\b", re.I)
+
+
+def _minded(text: str) -> str:
+    """ "Would you mind chilling a mug and leaving it in the sink?" -> "chill a mug and leave it in the
+    sink?"; a frame before a word that is no verb of the grammar's stays, to be read or refused."""
+    out, pos = [], 0
+    for m in _MINDED.finditer(text):
+        found = VERBS.get(m["ger"].lower())
+        if found is None or m.start() < pos:
+            continue
+        stop = re.compile(r"[.?!;]").search(text, m.end())
+        end = stop.start() if stop else len(text)
+        rest = _NEXT_GERUND.sub(_base_form, text[m.end() : end])
+        out += [text[pos : m.start()], found[1], rest]
+        pos = end
+    return "".join(out) + text[pos:]
+
+
+def _base_form(g: re.Match[str]) -> str:
+    found = VERBS.get(g["ger"].lower())
+    return g["lead"] + found[1] if found else g[0]
 
 
 # "wash the plate, it should end up in the cabinet": a pronoun's end state after a clause is a placement of it
@@ -107,7 +146,8 @@ _AFTER_STEP = re.compile(rf"(?:(?<=^)|(?<=[,.;!?]\s)|(?<=\band\s))after\s*,?\s+(
 _YOU_STEP = re.compile(rf"(?P<lead>(?:^|[.;!?]\s*|\bthen\s+|\bplease\s+))you\s+(?={_STEP}\b)", re.I)
 _GIVE_ON = re.compile(r"\bgive\s+(?P<it>it|them)\s+(?=(?:on|in|into|onto|inside)\s)", re.I)
 _PUT_BARE = re.compile(
-    r"(?<=\S)(?P<lead>\s+(?:and\s+|then\s+)*)(?P<verb>put|place)\s+(?=(?:inside|into|in|onto|on|to)\s)", re.I
+    r"(?<=\S)(?<!\bbe)(?P<lead>\s+(?:and\s+|then\s+)*)(?P<verb>put|place)\s+(?=(?:inside|into|in|onto|on|to)\s)",
+    re.I,
 )
 _TEXTED_ID = re.compile(r"\bid\s+(?=(?:like|love|prefer|want)\b)", re.I)  # "id like" as texted: "I'd like"
 _COURTESY_AFTER_FIRST = re.compile(r"\bfirst\s*,?\s*(?:please|pls|plz)\s*(?=[.!]?\s*$)", re.I)
@@ -118,7 +158,11 @@ _FIRST_THEN = re.compile(
     r"\s*(?P<end>[.!]?\s*)$",
     re.I,
 )
-_DETERMINER = re.compile(r"\s*(?:(?:the|that|this|my|your|a|an)\s+)?", re.I)
+# (a slice named by its whole: "a slice of lettuce", "a tomato slice" is one thing, h223)
+_DETERMINER = re.compile(
+    r"\s*(?:(?:the|that|this|my|your|a|an)\s+)?(?:(?:slice|piece)s?\s+of\s+(?:the\s+)?)?", re.I
+)
+_SLICE_AFTER = re.compile(r"\s*(?:slices?)?\s*", re.I)
 # a thing said in a request ("the mug", "watch on the table"), not a bare label ("Target: yellow plate.")
 _DET_BEFORE = re.compile(r"\b(?:the|a|an|my|your|this|that)\s+$", re.I)
 _PREP_AFTER = re.compile(r"\s+(?:in|into|on|onto|inside)\s", re.I)
@@ -128,7 +172,8 @@ _PLACE_BEFORE = re.compile(r"\b(?:in|into|on|onto|inside|on\s+top\s+of)\s+(?:the
 def treatments_said(text: str) -> str:
     """The text with the needs, causatives and terse orders above rewritten (see the module docstring)."""
     need, causative, purpose = _patterns()
-    text = treated_lists(_TEXTED_ID.sub("I'd ", text))  # lists, outcomes, things said first (treated_lists)
+    text = _TEXTED_ID.sub("I'd ", _minded(text))
+    text = treated_lists(text)  # lists, outcomes, things said first (treated_lists)
     text = _MAKE_STATE.sub(_made, text)
     text = _AFTER_STEP.sub("then ", _GIVE_ON.sub(r"put \g<it> ", _YOU_STEP.sub(r"\g<lead>", text)))
     text = _PUT_BARE.sub(r"\g<lead>\g<verb> it ", text)
@@ -165,11 +210,12 @@ def _put_pronoun(m: re.Match[str]) -> str:
 
 def _imperative(m: re.Match[str]) -> str:
     forms = m.groupdict()
-    verb = _base(forms.get("noun") or forms.get("part") or forms.get("ger") or "")
+    verb = _base(forms.get("noun") or forms.get("part") or forms.get("ger") or forms.get("duty") or "")
     if verb is None or not _names_thing(m["thing"]):
         return m[0]
     thing = re.sub(r"^(?:that|this|my|your)\b", "the", m["thing"], flags=re.I)
-    return f"{m['lead']}{verb} {thing}"
+    placed = f" and put it{' ' + forms['adv'] if forms.get('adv') else ''}" if forms.get("then") else ""
+    return f"{m['lead']}{verb} {thing}{placed}"
 
 
 def _treated_next(m: re.Match[str]) -> str:
@@ -190,7 +236,7 @@ def _treated_next(m: re.Match[str]) -> str:
 def _names_thing(phrase: str) -> bool:
     """Is the phrase a determiner and one name the lexicon knows, and nothing else?"""
     found = find_mentions(phrase)
-    if len(found) != 1 or phrase[found[0].char_end :].strip():
+    if len(found) != 1 or not _SLICE_AFTER.fullmatch(phrase[found[0].char_end :]):
         return False
     return _DETERMINER.fullmatch(phrase[: found[0].char_start]) is not None
 

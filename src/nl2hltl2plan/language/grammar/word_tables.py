@@ -553,7 +553,7 @@ TRAILING: list[tuple[re.Pattern[str], str]] = [
         re.compile(
             r"\s*,?\s*(?:(?:strictly|exactly|precisely)\s+)?(?:in\s+(?:(?:strictly|exactly|precisely)\s+)?"
             r"(?:that|this|the\s+same|the\s+given|the\s+listed)\s+(?:exact\s+)?(?:order|sequence)|"
-            r"in\s+the\s+order\s+(?:given|listed|stated|named))(?:\s*,?\s*please)?\s*$",
+            r"in\s+the\s+order\s+(?:given|listed|stated|named)|(?:from\s+)?top\s+to\s+bottom)(?:\s*,?\s*please)?\s*$",
             _F,
         ),
         IN_ORDER,
