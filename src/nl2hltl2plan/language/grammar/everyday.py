@@ -171,7 +171,7 @@ _BARE = re.compile(rf"\b({'|'.join(_BARE_CONTRACTION)})\b", re.I)
 _REFERENCE_TO_ALL = re.compile(
     r"(?:(?P<lead>(?<=\w)\s*,?\s+(?:and\s+)?|^\s*|(?<=[.!?])\s+)"
     r"(?P<ref>(?:after|once|when)\s+(?:both|all|each)\s+of\s+(?:those|these|them)"
-    r"(?:\s+(?:are|is)\s+(?:done|finished))?)"
+    r"(?:\s+(?:are|is)\s+(?:done|finished))?)(?!\s+(?:are|is)\s+[a-z]+\s*(?:[.;!?]|$))"  # not closing it
     r"|(?<=\w)\s*,?\s+(?:and\s+)?(?P<short>(?:after|once)\s+(?:those|these|the)\s+(?:two|three|four)"
     r"(?:\s+(?:are|have\s+been)\s+(?:done|finished))?"
     r"|once\s+both\s+(?:of\s+(?:them|those)\s+)?(?:are|have\s+been)\s+(?:done|finished)"
