@@ -1,9 +1,9 @@
 """References people use (issue 28, h224): a thing examined and then the holder of a later task ("look at
 the box under the lamp, then put the keys in it": the keys go in the box), a thing placed and then examined
-(two tasks), "the same one" (the last place named), "the former" / "the latter" (of exactly two tasks; more is unread, never a guess), "X first,
-then the other one" / "the rest", "the former after the latter", and a closing "after the rest" / "once
-both are done" (the last clause's, of exactly two tasks before it). The dev set's lines (users_h224dev.txt)
-are swept under `-m sweep`."""
+(two tasks), "the same one" (the last place named), "the former" / "the latter" (of exactly two tasks; more
+is unread, never a guess), "X first, then the other one" / "the rest", "the former after the latter", and a
+closing "after the rest" / "once both are done" (the last clause's, of exactly two tasks before it). The dev
+set's lines (users_h224dev.txt) are swept under `-m sweep`."""
 
 from __future__ import annotations
 
