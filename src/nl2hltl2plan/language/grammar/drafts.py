@@ -492,7 +492,8 @@ def joins(d: Draft, fr: Frame, it: Item) -> bool:
         # "a" tomato after one was put somewhere (an indefinite article introduces another referent)
         return not ((_done(d) or (_placed(d) and _indefinite(o))) and _restates(fr, it))
     if puts_into(cur, fr, it):
-        return not _done(d)  # "look at the box under the lamp, then put the keys in it": a new task's holder
+        # "look at the box under the lamp, then put the keys in it": the box looked at is a new task's holder
+        return not any(f.cls in {"light", "examine"} or f.light_on for f, _ in d.frames)
     if o.sliced and o.entry is None and o.head in {"", "slice", "piece"}:
         return True
     if _placed(d) and _indefinite(o) and _restates(fr, it):
@@ -542,8 +543,7 @@ def _done(d: Draft) -> bool:
 def _placed_again(d: Draft, fr: Frame, it: Item) -> bool:
     """ "put the remote on the sofa, then put it on the armchair" / "then look at it under the lamp": a thing
     put down at a final place, then put elsewhere ("then", "next") or examined: each a task of its own. A
-    first place that is a treatment's appliance ("put the mug in the sink, then put it in the cabinet") or a
-    clause with no sequence word ("put it on the sofa and put it ...") joins."""
+    first place that is a treatment's appliance (the sink) or a clause with no sequence word joins."""
     last_fr, last_it = d.frames[-1]
     first = dest_of(last_it, last_fr.cls)
     if d.obj is None or d.obj.plural or (first is not None and first.is_movable_receptacle()):
