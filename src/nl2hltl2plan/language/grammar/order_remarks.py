@@ -20,7 +20,7 @@ _THING = r"(?:[a-z][a-z']*(?:\s+[a-z][a-z']*){0,3}?)"
 _NOT_IN_THING = frozenset(
     "in on into onto to from under at by with for till until then and or it them you your i we is are be not "
     "don't can wait save leave keep may might could should must will would either any whichever each every "
-    "neither step steps order only just right but".split()
+    "neither step steps order only just right but which what matter doesn't does".split()
 )
 _PARTS = re.compile(r"\s*(?:,\s*(?:but|and)\s+|,|;|\s+but\s+)\s*", re.I)
 
