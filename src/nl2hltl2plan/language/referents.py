@@ -366,6 +366,7 @@ _SECOND_THING = re.compile(
     r"(?:\s+one\b|(?=\s*(?:$|[,.;!?]|(?:in|into|on|onto|inside|to|next|by|near|too|as\s+well)\b)))"
     rf"|(?:another|{ONE_MORE}|a\s+second)\b(?!\s+(?:one|time|step|thing|task|minute)s?\b)(?!\s+(?:of|after)\b)\s*)"
 )
+_ORDER_OTHER = re.compile(r"\bfirst,?\s+(?:and\s+)?then\s+$")
 _PLACE_GAP = re.compile(r"\b(?:in|into|on|onto|inside|to|under|at|by|near|from|with|beside)\b")
 
 
@@ -382,6 +383,8 @@ def another_thing(instruction: str, tasks: Sequence[BaseTaskSpec]) -> None:
     for m in _SECOND_THING.finditer(lowered):
         if _after_preposition([w for w, _, _ in tokens(lowered[: m.start()])]):
             continue
+        if _ORDER_OTHER.search(lowered[: m.start()]) and not lowered[m.end() :].strip(" .!"):
+            continue  # "the statue first, then the other one": the other task (an order remark)
         before = [x for x in find_mentions(lowered[: m.start()]) if set(x.entry.types) & moved]
         rest = lowered[m.end() :]
         # "one more mug", not "one more in the cabinet" (the cabinet is where it goes)

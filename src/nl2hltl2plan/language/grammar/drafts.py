@@ -271,7 +271,7 @@ class DraftBuilder:
         d = drafts[st.drafts[-1]] if st.drafts else None
         if d is not None and d.obj is not None and it.obj is not None and _another_of_it(it.obj, d):
             # "put a toilet paper on the counter, then another one in the cabinet": a task of its own
-            it.obj = replace(d.obj, text=it.obj.text)
+            it.obj = replace(d.obj, text=it.obj.text, count=1, plural=False)  # one, after "two sets of keys"
             d = None
         if d is not None and it.obj is not None and it.obj.pronoun and _placed_again(d, fr, it):
             it.obj, d = d.obj or it.obj, None  # "put the remote on the sofa, then put it on the armchair"
@@ -489,7 +489,8 @@ def joins(d: Draft, fr: Frame, it: Item) -> bool:
         # "a" tomato after one was put somewhere (an indefinite article introduces another referent)
         return not ((_done(d) or (_placed(d) and _indefinite(o))) and _restates(fr, it))
     if puts_into(cur, fr, it):
-        return True
+        # "look at the box under the lamp, then put the keys in it": the box looked at is a new task's holder
+        return not any(f.cls in {"light", "examine"} or f.light_on for f, _ in d.frames)
     if o.sliced and o.entry is None and o.head in {"", "slice", "piece"}:
         return True
     if _placed(d) and _indefinite(o) and _restates(fr, it):
@@ -533,17 +534,16 @@ def _done(d: Draft) -> bool:
 
 
 def _placed_again(d: Draft, fr: Frame, it: Item) -> bool:
-    """ "put the remote on the sofa, then put it on the armchair": a thing put down at a final place and then
-    put somewhere else ("then", "next"): two placings in sequence, each a task (not one task whose first
-    place is left unread); a first place that is a treatment's appliance ("put the mug in the sink, then
-    put it in the cabinet") or a clause with no sequence word ("put it on the sofa and put it ...") joins."""
+    """ "put the remote on the sofa, then put it on the armchair" / "then look at it under the lamp": a thing
+    put down at a final place, then put elsewhere ("then", "next") or examined: each a task of its own. A
+    first place that is a treatment's appliance (the sink) or a clause with no sequence word joins."""
     last_fr, last_it = d.frames[-1]
     first = dest_of(last_it, last_fr.cls)
     if d.obj is None or d.obj.plural or (first is not None and first.is_movable_receptacle()):
         return False  # "put the pencils in the mug, then put it ...": "it" is (or may be) the holder
     if re.search(r"\b(?:back|return|returns)\b", fr.text, re.I):
         return False  # "then put it back (where it was)": the place it was taken from (`put_back`)
-    return (
+    return (fr.cls == "examine" and _placed(d)) or (  # no base task both places and examines
         fr.joiner == "then"
         and fr.cls == last_fr.cls == "place"
         and _done(d)

@@ -172,7 +172,7 @@ _BARE = re.compile(rf"\b({'|'.join(_BARE_CONTRACTION)})\b", re.I)
 _REFERENCE_TO_ALL = re.compile(
     r"(?:(?P<lead>(?<=\w)\s*,?\s+(?:and\s+)?|^\s*|(?<=[.!?])\s+)"
     r"(?P<ref>(?:after|once|when)\s+(?:both|all|each)\s+of\s+(?:those|these|them)"
-    r"(?:\s+(?:are|is)\s+(?:done|finished))?)"
+    r"(?:\s+(?:are|is)\s+(?:done|finished))?)(?!\s+(?:are|is)\s+[a-z]+\s*(?:[.;!?]|$))"  # not closing it
     r"|(?<=\w)\s*,?\s+(?:and\s+)?(?P<short>(?:after|once)\s+(?:those|these|the)\s+(?:two|three|four)"
     r"(?:\s+(?:are|have\s+been)\s+(?:done|finished))?"
     r"|once\s+both\s+(?:of\s+(?:them|those)\s+)?(?:are|have\s+been)\s+(?:done|finished)"
@@ -513,10 +513,13 @@ def _along_with(m: re.Match[str]) -> str:
     return f", and put {m['np']} {'on' if prep == 'to' else prep} the {place.surface}"
 
 
-# "put a pen on that shelf too": the last destination named before it with that word ("the coffee table"),
-# written out; else as it is ("the same table" stays: where the scene has two, the spec cannot keep one)
+# "put a pen on that shelf too", "on that same table", "on the same one": the last destination named before
+# it with that word ("the coffee table"; any word for "the same one"), written out; else as it is ("the same
+# table" stays: where the scene has two, the spec cannot keep one)
 _THAT_PLACE = re.compile(
-    r"\b(?P<prep>in|into|inside|on|onto|to)\s+that\s+(?P<noun>[a-z]+)\b(?!\s+(?:of|with)\b)", re.I
+    r"\b(?P<prep>in|into|inside|on|onto|to)\s+(?:that(?:\s+same)?|the\s+same(?=\s+one\b))\s+(?P<noun>[a-z]+)\b"
+    r"(?!\s+(?:of|with)\b)",
+    re.I,
 )
 
 
@@ -528,9 +531,10 @@ def _that_place_named(m: re.Match[str]) -> str:
     if _NEGATED.search(m.string[: m.start()]):
         return m[0]
     noun = m["noun"].lower()
+    any_word = noun == "one" and "same" in m[0].lower()  # "the same one", "that same one"
     for d in reversed(list(_DESCRIBED_PLACE.finditer(m.string[: m.start()]))):
         named = [x for x in find_mentions(d["np"]) if not x.entry.generic]
-        if named and named[-1].surface.lower().split()[-1] in (noun, noun + "s"):
+        if named and (any_word or named[-1].surface.lower().split()[-1] in (noun, noun + "s")):
             return f"{m['prep']} the {named[-1].surface}"
     return m[0]
 

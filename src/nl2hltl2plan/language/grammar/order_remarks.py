@@ -20,7 +20,7 @@ _THING = r"(?:[a-z][a-z']*(?:\s+[a-z][a-z']*){0,3}?)"
 _NOT_IN_THING = frozenset(
     "in on into onto to from under at by with for till until then and or it them you your i we is are be not "
     "don't can wait save leave keep may might could should must will would either any whichever each every "
-    "neither step steps order".split()
+    "neither step steps order only just right but which what matter doesn't does".split()
 )
 _PARTS = re.compile(r"\s*(?:,\s*(?:but|and)\s+|,|;|\s+but\s+)\s*", re.I)
 
@@ -89,11 +89,13 @@ _SENTENCE = re.compile(r"[^.;!?]+[.;!?]*\s*")
 _COURTESY = re.compile(r"^(?:please|thanks|thank\s+you|cheers)$", re.I)
 
 
-# "A and put B after everything else": the clause the closing reference ends is B alone (each clause of the
-# sentence took it, a cycle); not "wash the mug and put it away ..." (one task)
+# "A and put B after everything else" / "after the rest" / "once both are done": the clause the closing
+# reference ends is B alone (each clause of the sentence took it, a cycle); not "wash the mug and put it away
+# ..." (one task)
 _LAST_CLAUSE_ELSE = re.compile(
-    r",?\s+and\s+(?=(?P<verb>[a-z]+)\s+(?!it\b|them\b|that\b|this\b)[^.;!?,]*?\s+(?:before|after)\s+"
-    r"(?:anything|everything)\s+else\s*(?:[.;!?]|$))",
+    r",?\s+and\s+(?=(?P<verb>[a-z]+)\s+(?!it\b|them\b|that\b|this\b)[^.;!?,]*?\s+(?:before|after|once|when)\s+"
+    r"(?:(?:anything|everything)\s+else|the\s+rest|both(?:\s+of\s+th[a-z]+)?\s+(?:are|have\s+been)\s+[a-z]+)"
+    r"\s*(?:[.;!?]|$))",
     re.I,
 )
 
@@ -111,14 +113,32 @@ def remarks_said_plainly(text: str) -> str:
     ends = any(r is not None and any(k in ("first", "last") for (k, _, _), _ in r) for _, r in spans)
     out = []
     for m, read in spans:
-        said = m[0]
+        head, said = "", m[0]
+        if read is None and (tail := _tail_remark(said)) is not None:  # "A and B, the latter first."
+            head, said, read = tail
         if read is not None and (ends or any(k != "rest" for (k, _, _), _ in read)):
-            body = m[0].rstrip(".;!? ")
-            lead, tail = body[: len(body) - len(body.lstrip())], m[0][len(body) :]
+            body = said.rstrip(".;!? ")
+            lead, end = body[: len(body) - len(body.lstrip())], said[len(body) :]
             plain = ", ".join(s for (k, a, _), p in read if (s := _plain(k, a, p)))
-            said = lead + plain + tail if plain else ""
-        out.append(said)
+            said = lead + plain + end if plain else ""
+        out.append(head + said)
     return "".join(out)
+
+
+# where a remark said after the tasks of its own sentence begins: a comma or a dash
+_TAIL = re.compile(r",\s*|\s+-+\s+")
+
+
+def _tail_remark(sentence: str) -> tuple[str, str, list[tuple[Relation, str]]] | None:
+    """ "Look at A and B under the lamp, the latter first." -> ("Look at A and B under the lamp. ", "the
+    latter first.", its relations): the longest tail, after a comma or a dash, that is an order remark
+    saying which task is first, last or before another, as a sentence of its own; None where none is."""
+    body = sentence.rstrip(".;!? ")
+    for m in _TAIL.finditer(body):
+        read = _read(body[m.end() :])
+        if read is not None and any(k in ("first", "last", "before") for (k, _, _), _ in read):
+            return f"{body[: m.start()]}. ", body[m.end() :] + sentence[len(body) :], read
+    return None
 
 
 def _plain(kind: str, a: str, part: str) -> str:

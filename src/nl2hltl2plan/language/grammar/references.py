@@ -20,6 +20,12 @@ _THE_REST = re.compile(
     r"(?:done|finished|complete|completed|over|through|sorted|handled))?$",
     re.I,
 )
+# "once both of them are done", "after both are there": the tasks said before, where they are two
+_BOTH_DONE = re.compile(
+    r"^(?:both(?:\s+of\s+(?:them|those|these))?|them\s+both)(?:\s+(?:are|have\s+been)\s+"
+    r"(?:done|finished|complete|completed|there))?$",
+    re.I,
+)
 # "before you do this", "after you've done that", "once you finish this": the task just said
 _DO_THIS = re.compile(
     r"^(?:you(?:'ve|\s+have|'re|\s+are)?\s+)?(?:do|did|done|finish|finished|complete|completed)\s+"
@@ -51,9 +57,12 @@ def said_before(ref: str, u: Unit, units: list[Unit]) -> list[int] | None:
     ref = " ".join(ref.split())
     if u.tasks and _PLACED_THEM.match(ref):
         return _listed_just_before(u, units)
+    said = units_said_before(u, units)
+    if u.tasks and _BOTH_DONE.match(ref):  # "Y once both (of them) are done": the two tasks said before Y
+        two = [t for v in said for t in v.tasks]
+        return two if len(two) == 2 else None  # else left to the other readings of "both"
     if not u.tasks or not (_THE_REST.match(ref) or _DO_THIS.match(ref)):
         return None
-    said = units_said_before(u, units)
     if _THE_REST.match(ref):
         return [t for v in said for t in v.tasks]
     if not said:
@@ -165,6 +174,8 @@ def task_word_said(parts: list[str]) -> bool:
 def _described(words: list[str], specs: list[BaseTaskSpec], candidates: list[int]) -> list[int] | None:
     """Tasks a reference names by position ("the first two": the two said first) or by their treatment with a
     task noun ("the washing jobs"); every such task, in the order said. None: no such reference."""
+    if (position := former_or_latter(words, candidates)) is not None:
+        return position
     if len(words) == 3 and words[0] == "the" and words[1] in {"first", "last"} and words[2] in _COUNTS:
         n = _COUNTS[words[2]]
         return candidates[:n] if words[1] == "first" else candidates[-n:]
@@ -181,6 +192,18 @@ def _described(words: list[str], specs: list[BaseTaskSpec], candidates: list[int
     np = parse_np(" ".join(w for w in words[1:-1] if w != "the"))
     key = np.entry.canonical if np.entry is not None else None
     return [i for i in candidates if key in specs[i].object or key in (specs[i].container or [])]
+
+
+_POSITION = {"former": 0, "latter": -1}
+
+
+def former_or_latter(words: list[str], candidates: list[int]) -> list[int] | None:
+    """ "the former" / "the latter": the first / second of the two tasks it may name; [] where more than two
+    may be meant (which two is not said: never a guess). None: no such reference."""
+    said = [w for w in words if w != "the"]
+    if len(said) != 1 or said[0] not in _POSITION:
+        return None
+    return [candidates[_POSITION[said[0]]]] if len(candidates) == 2 else []
 
 
 def _names_a_thing_before_place(words: list[str]) -> bool:

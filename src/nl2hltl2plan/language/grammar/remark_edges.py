@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from nl2hltl2plan.language.grammar.draft_tasks import TaskBuilder, Tasks
 from nl2hltl2plan.language.grammar.phrases import parse_np
-from nl2hltl2plan.language.grammar.references import KIND_WORDS, NOT_CERTAIN, ref_targets
+from nl2hltl2plan.language.grammar.references import KIND_WORDS, NOT_CERTAIN, former_or_latter, ref_targets
 from nl2hltl2plan.language.grammar.sentences import RelationSentence
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
 
@@ -86,6 +86,8 @@ def _fitting(ref: str, tasks: Tasks, sentence: int) -> tuple[list[int], bool] | 
     words = [w for w in ref.lower().split() if w not in _SKIP]
     many = bool(_PLURAL_NOUNS.intersection(words))
     words = [w for w in words if w not in _TASK_NOUNS | _PLURAL_NOUNS]
+    if (position := former_or_latter(words, list(range(len(tasks.specs))))) is not None:
+        return position, False  # "the former first": of two tasks
     if not words or set(words) <= _THAT:  # "That last.": the tasks of the sentence just before (one fits)
         said = [u.sentence for u in tasks.units if u.tasks and u.sentence < sentence]
         return ([t for u in tasks.units if said and u.sentence == said[-1] for t in u.tasks], False)
