@@ -7,7 +7,7 @@ from dataclasses import dataclass
 
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.frames import dest_of, parse_frame
-from nl2hltl2plan.language.grammar.phrases import match_prep, parse_np, tokens
+from nl2hltl2plan.language.grammar.phrases import DETERMINERS, match_prep, parse_np, tokens
 
 
 def _is_verb_at(words: list[tuple[str, int, int]], i: int) -> bool:
@@ -41,12 +41,92 @@ def _ends_an_order(words: list[tuple[str, int, int]], j: int) -> bool:
     return words[j][0] == "order" and j > 0 and words[j - 1][0] in {"any", "either", "whatever"}
 
 
+_JOINERS_FIRST = re.compile(
+    r"^[\s,]*(?:(?:and|then|to|plus|also|while|or|as|so|first|next|finally|lastly|afterwards?|"
+    r"subsequently)\b[\s,]*)*",
+    re.I,
+)
+# a request asked in the middle of a run-on ("grab the mug can you put it in the sink"): its own clause
+_ASKS = frozenset({"can", "could", "would", "will"})
+_YOU = frozenset({"you", "u"})
+_PLEASE = frozenset({"please", "pls", "plz"})
+_SUBJECTS = frozenset({"you", "u", "i", "we", "they", "he", "she"})
+# words of a subordinate clause or a statement: a command that holds one is not known to be whole
+_NOT_A_COMMAND = _SUBJECTS | {"after", "before", "until", "once", "when", "whenever", "while", "if", "unless"}
+# the particle a verb of each class may take before its thing ("turn on the lamp", "look at the box")
+_PARTICLES = {
+    "light": {"on", "off", "up"},
+    "examine": {"at", "out"},
+    "pick": {"up"},
+    "clean": {"off", "out", "up"},
+    "trash": {"away", "out"},
+    "place": {"away", "down", "back"},
+}
+
+
+def _asked_from(words: list[tuple[str, int, int]], i: int) -> int:
+    """The index where "can you (please)" before word `i` starts, or `i` where none does."""
+    j = i - 1 if i > 0 and words[i - 1][0] in _PLEASE else i
+    if j >= 2 and words[j - 1][0] in _YOU and words[j - 2][0] in _ASKS:
+        return j - 2
+    return i
+
+
+def _complete(chunk: str) -> bool:
+    """Is `chunk` a whole command: a verb, a thing named by a known noun or a pronoun and, for a placing,
+    a place the same? ("put the cup on the" is not: the next word may be a noun, "the wash cloth")."""
+    body = _JOINERS_FIRST.sub("", chunk)
+    words = [w for w, _, _ in tokens(body)]
+    if _NOT_A_COMMAND.intersection(words[3 if _asked_from(tokens(body), 2) == 0 else 0 :]):
+        return False
+    fr = parse_frame(body)
+    if fr.cls in {"none", "other"} or not fr.items:
+        return False
+    last = fr.items[-1]
+    if last.obj is None or last.obj.empty:
+        return False
+    if fr.cls in {"place", "trash"}:
+        dst = dest_of(last, fr.cls)
+        return dst is not None and not dst.empty and chunk.rstrip().endswith(dst.text)
+    return not last.pps or not last.pps[-1][1].empty
+
+
+def _runs_on_at(sentence: str, words: list[tuple[str, int, int]], i: int, since: int) -> tuple[int, str]:
+    """Plain users' run-on commands, no "and" or comma between them ("put the phone on the desk throw the
+    pencil in the trash", "slice a potato chill one piece"): where a new clause starts at the imperative verb
+    `i` after a whole command that began at `since` (-1: none). The verb must be followed by a thing or a
+    particle of its own and follow a whole command; inside a noun phrase ("a cook book", "a slice of bread")
+    the command before it is not whole. A split that is not certain is left to the readers, which name the
+    words they could not read. Returns (the index the clause starts at, its joiner), or (-1, "")."""
+    w = words[i][0]
+    nxt = words[i + 1][0] if i + 1 < len(words) else ""
+    if w not in G.VERBS or i == 0 or words[i - 1][0] in G.CLAUSE_JOINERS or words[i - 1][0] == ",":
+        return -1, ""
+    starts = (nxt in DETERMINERS and nxt != "of") or nxt in G.NUMBERS or nxt.isdigit() or nxt in {"it", "them"}
+    if not (starts or nxt in _PARTICLES.get(G.VERBS[w][0], ())):
+        return -1, ""
+    b = _asked_from(words, i)
+    if b == i and words[i - 1][0] in _SUBJECTS:  # "after you look at ...": a subordinate clause's verb
+        return -1, ""
+    if 0 < b < i and words[b - 1][0] in {"and", "then", ","}:  # "... and can you put ...": said as a clause
+        return b - 1, "then" if words[b - 1][0] == "then" else "and"
+    joiner = "and"
+    if b > 1 and words[b - 1][0] == "last":  # "... in the tub last put ...": "lastly", its comma left out
+        b, joiner = b - 1, "finally"
+    if b == 0 or words[b - 1][0] in DETERMINERS or not _complete(sentence[since : words[b - 1][2]]):
+        return -1, ""
+    return b, joiner
+
+
 def split_clauses(sentence: str) -> list[tuple[str, int, int, str]]:
     """(clause text, start, end, joiner) for each verb clause of a sentence."""
     words = tokens(sentence)
     cuts: list[tuple[int, str]] = []
     for i in range(len(words)):
-        if _is_verb_at(words, i):
+        at, said = (-1, "") if _is_verb_at(words, i) else _runs_on_at(sentence, words, i, cuts[-1][0] if cuts else 0)
+        if at >= 0:
+            cuts.append((words[at][1], said))
+        elif _is_verb_at(words, i):
             j = i - 1
             joiner = ""
             ends_before = -1  # "X first and then Y": the "first" that ends the clause before
@@ -74,13 +154,10 @@ def split_clauses(sentence: str) -> list[tuple[str, int, int, str]]:
     for k, (cut, joiner) in enumerate(cuts):
         end = cuts[k + 1][0] if k + 1 < len(cuts) else len(sentence)
         chunk = sentence[cut:end]
-        stripped = re.sub(
-            r"^[\s,]*(?:(?:and|then|to|plus|also|while|or|as|so|first|next|finally|lastly|afterwards?|"
-            r"subsequently)\b[\s,]*)*",
-            "",
-            chunk,
-            flags=re.I,
-        )
+        stripped = _JOINERS_FIRST.sub("", chunk)
+        if _asked_from(tokens(stripped), 2) == 0:  # "can you put ...": the request
+            stripped = re.sub(r"^\w+\s+\w+\s+(?:(?:please|pls|plz)\s+)?", "", stripped)
+        stripped = re.sub(r"^last\s+", "", stripped) if joiner == "finally" else stripped
         stripped = re.sub(r"[\s,]*(?:\band\b)?[\s,]*$", "", stripped)
         if stripped:
             s = cut + chunk.index(stripped)

@@ -187,8 +187,22 @@ class _ItemReader:
             )
             self.cur_prep = hit[0]
             return i + hit[1]
+        if self._list_goes_on(words, i):  # "look at the remote the vase and a keychain": a comma left out
+            self._step(words[:i] + [","] + words[i:], i)  # read as the comma: the article is read next
+            return i
         self.cur.append(self.toks[i])
         return i + 1
+
+    def _list_goes_on(self, words: list[str], i: int) -> bool:
+        """Does the article at `i` start the next item of a list written without commas? Only after a whole
+        noun phrase the lexicon knows, with no preposition yet, and where an "and" later closes the list."""
+        if words[i] not in {"the", "a", "an"} or self.cur_prep is not None or not self.cur:
+            return False
+        if parse_np(self.text[self.cur[0][1] : self.cur[-1][2]]).entry is None:
+            return False
+        rest = words[i + 1 :]
+        ends = next((k for k in range(len(rest)) if match_prep(rest, k) is not None), len(rest))
+        return "and" in rest[:ends]
 
 
 def _particle_position(words: list[str], i: int) -> bool:
