@@ -66,6 +66,8 @@ _PARTICLES = {
 
 def _asked_from(words: list[tuple[str, int, int]], i: int) -> int:
     """The index where "can you (please)" before word `i` starts, or `i` where none does."""
+    if i > len(words):
+        return i
     j = i - 1 if i > 0 and words[i - 1][0] in _PLEASE else i
     if j >= 2 and words[j - 1][0] in _YOU and words[j - 2][0] in _ASKS:
         return j - 2
@@ -102,7 +104,8 @@ def _runs_on_at(sentence: str, words: list[tuple[str, int, int]], i: int, since:
     nxt = words[i + 1][0] if i + 1 < len(words) else ""
     if w not in G.VERBS or i == 0 or words[i - 1][0] in G.CLAUSE_JOINERS or words[i - 1][0] == ",":
         return -1, ""
-    starts = (nxt in DETERMINERS and nxt != "of") or nxt in G.NUMBERS or nxt.isdigit() or nxt in {"it", "them"}
+    thing = nxt in G.NUMBERS or nxt.isdigit() or nxt in {"it", "them"}
+    starts = thing or (nxt in DETERMINERS and nxt != "of")
     if not (starts or nxt in _PARTICLES.get(G.VERBS[w][0], ())):
         return -1, ""
     b = _asked_from(words, i)
@@ -123,7 +126,8 @@ def split_clauses(sentence: str) -> list[tuple[str, int, int, str]]:
     words = tokens(sentence)
     cuts: list[tuple[int, str]] = []
     for i in range(len(words)):
-        at, said = (-1, "") if _is_verb_at(words, i) else _runs_on_at(sentence, words, i, cuts[-1][0] if cuts else 0)
+        since = cuts[-1][0] if cuts else 0
+        at, said = (-1, "") if _is_verb_at(words, i) else _runs_on_at(sentence, words, i, since)
         if at >= 0:
             cuts.append((words[at][1], said))
         elif _is_verb_at(words, i):

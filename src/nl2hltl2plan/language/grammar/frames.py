@@ -194,15 +194,17 @@ class _ItemReader:
         return i + 1
 
     def _list_goes_on(self, words: list[str], i: int) -> bool:
-        """Does the article at `i` start the next item of a list written without commas? Only after a whole
-        noun phrase the lexicon knows, with no preposition yet, and where an "and" later closes the list."""
+        """Does the article at `i` start the next item of a list written without commas? Only between two
+        whole noun phrases the lexicon knows, before any preposition ("look at the remote the vase and a
+        keychain")."""
         if words[i] not in {"the", "a", "an"} or self.cur_prep is not None or not self.cur:
             return False
         if parse_np(self.text[self.cur[0][1] : self.cur[-1][2]]).entry is None:
             return False
-        rest = words[i + 1 :]
-        ends = next((k for k in range(len(rest)) if match_prep(rest, k) is not None), len(rest))
-        return "and" in rest[:ends]
+        rest = words[i:]
+        stops = (k for k in range(1, len(rest)) if rest[k] in {",", "and"} or match_prep(rest, k) is not None)
+        ends = next(stops, len(rest))
+        return ends > 1 and parse_np(" ".join(rest[:ends])).entry is not None
 
 
 def _particle_position(words: list[str], i: int) -> bool:
