@@ -102,7 +102,10 @@ def _runs_on_at(sentence: str, words: list[tuple[str, int, int]], i: int, since:
     words they could not read. Returns (the index the clause starts at, its joiner), or (-1, "")."""
     w = words[i][0]
     nxt = words[i + 1][0] if i + 1 < len(words) else ""
-    if w not in G.VERBS or i == 0 or words[i - 1][0] in G.CLAUSE_JOINERS or words[i - 1][0] == ",":
+    # the bare form only: "a box of tissues using the light of a lamp" is no command
+    if w not in G.VERBS or G.VERBS[w][1] != w or i == 0 or words[i - 1][0] in G.CLAUSE_JOINERS:
+        return -1, ""
+    if words[i - 1][0] == ",":
         return -1, ""
     thing = nxt in G.NUMBERS or nxt.isdigit() or nxt in {"it", "them"}
     starts = thing or (nxt in DETERMINERS and nxt != "of")

@@ -196,7 +196,7 @@ class _ItemReader:
     def _list_goes_on(self, words: list[str], i: int) -> bool:
         """Does the article at `i` start the next item of a list written without commas? Only between two
         whole noun phrases the lexicon knows, before any preposition ("look at the remote the vase and a
-        keychain")."""
+        keychain"), the second a thing to move (a lamp or a fixed place is where the first goes)."""
         if words[i] not in {"the", "a", "an"} or self.cur_prep is not None or not self.cur:
             return False
         if parse_np(self.text[self.cur[0][1] : self.cur[-1][2]]).entry is None:
@@ -204,7 +204,10 @@ class _ItemReader:
         rest = words[i:]
         stops = (k for k in range(1, len(rest)) if rest[k] in {",", "and"} or match_prep(rest, k) is not None)
         ends = next(stops, len(rest))
-        return ends > 1 and parse_np(" ".join(rest[:ends])).entry is not None
+        nxt = parse_np(" ".join(rest[:ends]))
+        if ends < 2 or nxt.entry is None or nxt.is_lamp():  # "examine a cup [under] a lamp": a typo lost
+            return False
+        return not nxt.is_receptacle() or nxt.is_movable_receptacle()
 
 
 def _particle_position(words: list[str], i: int) -> bool:
