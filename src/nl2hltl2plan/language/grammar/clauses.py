@@ -52,7 +52,7 @@ _YOU = frozenset({"you", "u"})
 _PLEASE = frozenset({"please", "pls", "plz"})
 _SUBJECTS = frozenset({"you", "u", "i", "we", "they", "he", "she"})
 # words of a subordinate clause or a statement: a command that holds one is not known to be whole
-_NOT_A_COMMAND = _SUBJECTS | {"after", "before", "until", "once", "when", "whenever", "while", "if", "unless"}
+_NOT_A_COMMAND = _SUBJECTS | set(G.SEQ_JOINERS) | {",", "once", "until", "when", "whenever", "while", "if"}
 # the particle a verb of each class may take before its thing ("turn on the lamp", "look at the box")
 _PARTICLES = {
     "light": {"on", "off", "up"},
@@ -119,7 +119,12 @@ def _runs_on_at(sentence: str, words: list[tuple[str, int, int]], i: int, since:
     joiner = "and"
     if b > 1 and words[b - 1][0] == "last":  # "... in the tub last put ...": "lastly", its comma left out
         b, joiner = b - 1, "finally"
-    if b == 0 or words[b - 1][0] in DETERMINERS or not _complete(sentence[since : words[b - 1][2]]):
+    if b == 0 or sentence[words[b - 1][2] : words[b][1]].strip():  # a bullet or a dash: a list of its own
+        return -1, ""
+    if words[b - 1][0] in DETERMINERS or not _complete(sentence[since : words[b - 1][2]]):
+        return -1, ""
+    before = parse_np(words[b - 1][0]).entry  # "heat a tomato slice the same way": a noun
+    if w in G.SLICE_NOUNS and before is not None and G.SLICEABLE.intersection(before.types):
         return -1, ""
     return b, joiner
 
