@@ -53,6 +53,7 @@ _PLEASE = frozenset({"please", "pls", "plz"})
 _SUBJECTS = frozenset({"you", "u", "i", "we", "they", "he", "she"})
 # words of a subordinate clause or a statement: a command that holds one is not known to be whole
 _NOT_A_COMMAND = _SUBJECTS | set(G.SEQ_JOINERS) | {",", "once", "until", "when", "whenever", "while", "if"}
+_NOT_A_COMMAND |= {"but", "never", "not", "don't", "dont", "do", "except", "unless"}  # negations, exceptions
 # the particle a verb of each class may take before its thing ("turn on the lamp", "look at the box")
 _PARTICLES = {
     "light": {"on", "off", "up"},
@@ -129,16 +130,18 @@ def _runs_on_at(sentence: str, words: list[tuple[str, int, int]], i: int, since:
     return b, joiner
 
 
-def split_clauses(sentence: str) -> list[tuple[str, int, int, str]]:
-    """(clause text, start, end, joiner) for each verb clause of a sentence."""
+def split_clauses(sentence: str, run_ons: bool = True) -> list[tuple[str, int, int, str]]:
+    """(clause text, start, end, joiner) for each verb clause of a sentence; `run_ons=False` leaves run-on
+    commands whole (in "before you A B, and C" where the subordinate clause ends is not certain)."""
     words = tokens(sentence)
     cuts: list[tuple[int, str]] = []
     for i in range(len(words)):
         since = cuts[-1][0] if cuts else 0
-        at, said = (-1, "") if _is_verb_at(words, i) else _runs_on_at(sentence, words, i, since)
+        verb_at = _is_verb_at(words, i)
+        at, said = _runs_on_at(sentence, words, i, since) if run_ons and not verb_at else (-1, "")
         if at >= 0:
             cuts.append((words[at][1], said))
-        elif _is_verb_at(words, i):
+        elif verb_at:
             j = i - 1
             joiner = ""
             ends_before = -1  # "X first and then Y": the "first" that ends the clause before

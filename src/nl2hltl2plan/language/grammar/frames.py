@@ -199,7 +199,8 @@ class _ItemReader:
         keychain"), the second a thing to move (a lamp or a fixed place is where the first goes)."""
         if words[i] not in {"the", "a", "an"} or self.cur_prep is not None or not self.cur:
             return False
-        if parse_np(self.text[self.cur[0][1] : self.cur[-1][2]]).entry is None:
+        said = parse_np(self.text[self.cur[0][1] : self.cur[-1][2]]).entry
+        if said is None or not self.cur[-1][0].startswith(said.phrase.split()[-1]):  # "the keys before": no
             return False
         rest = words[i:]
         stops = (k for k in range(1, len(rest)) if rest[k] in {",", "and"} or match_prep(rest, k) is not None)
