@@ -97,16 +97,14 @@ def _complete(chunk: str) -> bool:
 def _runs_on_at(sentence: str, words: list[tuple[str, int, int]], i: int, since: int) -> tuple[int, str]:
     """Plain users' run-on commands, no "and" or comma between them ("put the phone on the desk throw the
     pencil in the trash", "slice a potato chill one piece"): where a new clause starts at the imperative verb
-    `i` after a whole command that began at `since` (-1: none). The verb must be followed by a thing or a
+    `i` after a whole command that began at offset `since`. The verb must be followed by a thing or a
     particle of its own and follow a whole command; inside a noun phrase ("a cook book", "a slice of bread")
     the command before it is not whole. A split that is not certain is left to the readers, which name the
     words they could not read. Returns (the index the clause starts at, its joiner), or (-1, "")."""
     w = words[i][0]
     nxt = words[i + 1][0] if i + 1 < len(words) else ""
     # the bare form only: "a box of tissues using the light of a lamp" is no command
-    if w not in G.VERBS or G.VERBS[w][1] != w or i == 0 or words[i - 1][0] in G.CLAUSE_JOINERS:
-        return -1, ""
-    if words[i - 1][0] == ",":
+    if w not in G.VERBS or G.VERBS[w][1] != w or i == 0 or words[i - 1][0] in G.CLAUSE_JOINERS | {","}:
         return -1, ""
     thing = nxt in G.NUMBERS or nxt.isdigit() or nxt in {"it", "them"}
     starts = thing or (nxt in DETERMINERS and nxt != "of")
