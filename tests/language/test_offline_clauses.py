@@ -48,3 +48,47 @@ def test_a_stated_rule_is_not_read_as_an_elided_object_list() -> None:
     assert [t.object for t in r.tasks] == [["Box"], ["YellowBlock"]]  # no task made of the rule
     assert r.before == [("A", "B")]  # "after all of these" is a real order
     assert any("cannot touch" in u for u in r.unparsed)  # the rule is reported, not guessed
+
+
+def test_run_on_commands_split_at_the_imperative_verb_after_a_whole_command() -> None:
+    """Plain users leave out "and" and commas (issue 28): a clause starts at a verb after a whole command,
+    "can you" mid-line is a request of its own, and "last" before a verb is "lastly"."""
+    said = {
+        "put the phone on the desk throw the pencil in the trash": [
+            ("put the phone on the desk", ""), ("throw the pencil in the trash", "and")
+        ],
+        "grab the mug can you put it in the sink": [("grab the mug", ""), ("put it in the sink", "and")],
+        "put it in the tub last put 2 spray bottles in the cabinet": [
+            ("put it in the tub", ""), ("put 2 spray bottles in the cabinet", "finally")
+        ],
+    }
+    for text, clauses in said.items():
+        assert [(c[0], c[3]) for c in split_clauses(text)] == clauses, text
+
+
+def test_no_run_on_split_inside_a_noun_phrase_or_a_subordinate_clause() -> None:
+    for text in (
+        "put the soap on the wash cloth",  # "wash" after an article: a noun
+        "put a cook book on the shelf",
+        "chill a slice of lettuce",  # "slice of": a noun
+        "put the tv set on the stand",  # a placing without its place is not a whole command
+        "put 2 keychains in the safe after you look at the vase",  # a subordinate clause's verb
+    ):
+        assert len(split_clauses(text)) == 1, text
+
+
+def test_run_on_commands_and_a_comma_less_list_give_their_tasks() -> None:
+    from nl2hltl2plan.language.grammar import parse_instruction
+
+    types = {"CellPhone", "Desk", "Pencil", "GarbageCan"}
+    r = parse_instruction("put the phone on the desk throw the pencil in the trash", types)
+    assert [(t.object, t.receptacle) for t in r.tasks] == [
+        (["CellPhone"], ["Desk"]),
+        (["Pencil"], ["GarbageCan"]),
+    ]
+    assert r.unparsed == []
+    r = parse_instruction(
+        "look at the remote the vase and a keychain under the floor lamp",
+        {"RemoteControl", "Vase", "KeyChain", "FloorLamp"},
+    )
+    assert [t.object for t in r.tasks] == [["RemoteControl"], ["Vase"], ["KeyChain"]]

@@ -7,7 +7,7 @@ from dataclasses import dataclass
 
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.frames import dest_of, parse_frame
-from nl2hltl2plan.language.grammar.phrases import match_prep, parse_np, tokens
+from nl2hltl2plan.language.grammar.phrases import DETERMINERS, match_prep, parse_np, tokens
 
 
 def _is_verb_at(words: list[tuple[str, int, int]], i: int) -> bool:
@@ -41,12 +41,105 @@ def _ends_an_order(words: list[tuple[str, int, int]], j: int) -> bool:
     return words[j][0] == "order" and j > 0 and words[j - 1][0] in {"any", "either", "whatever"}
 
 
-def split_clauses(sentence: str) -> list[tuple[str, int, int, str]]:
-    """(clause text, start, end, joiner) for each verb clause of a sentence."""
+_JOINERS_FIRST = re.compile(
+    r"^[\s,]*(?:(?:and|then|to|plus|also|while|or|as|so|first|next|finally|lastly|afterwards?|"
+    r"subsequently)\b[\s,]*)*",
+    re.I,
+)
+# a request asked in the middle of a run-on ("grab the mug can you put it in the sink"): its own clause
+_ASKS = frozenset({"can", "could", "would", "will"})
+_YOU = frozenset({"you", "u"})
+_PLEASE = frozenset({"please", "pls", "plz"})
+_SUBJECTS = frozenset({"you", "u", "i", "we", "they", "he", "she"})
+# words of a subordinate clause or a statement: a command that holds one is not known to be whole
+_NOT_A_COMMAND = _SUBJECTS | set(G.SEQ_JOINERS) | {",", "once", "until", "when", "whenever", "while", "if"}
+_NOT_A_COMMAND |= {"but", "never", "not", "don't", "dont", "do", "except", "unless"}  # negations, exceptions
+# the particle a verb of each class may take before its thing ("turn on the lamp", "look at the box")
+_PARTICLES = {
+    "light": {"on", "off", "up"},
+    "examine": {"at", "out"},
+    "pick": {"up"},
+    "clean": {"off", "out", "up"},
+    "trash": {"away", "out"},
+    "place": {"away", "down", "back"},
+}
+
+
+def _asked_from(words: list[tuple[str, int, int]], i: int) -> int:
+    """The index where "can you (please)" before word `i` starts, or `i` where none does."""
+    if i > len(words):
+        return i
+    j = i - 1 if i > 0 and words[i - 1][0] in _PLEASE else i
+    if j >= 2 and words[j - 1][0] in _YOU and words[j - 2][0] in _ASKS:
+        return j - 2
+    return i
+
+
+def _complete(chunk: str) -> bool:
+    """Is `chunk` a whole command: a verb, a thing named by a known noun or a pronoun and, for a placing,
+    a place the same? ("put the cup on the" is not: the next word may be a noun, "the wash cloth")."""
+    body = _JOINERS_FIRST.sub("", chunk)
+    words = [w for w, _, _ in tokens(body)]
+    if _NOT_A_COMMAND.intersection(words[3 if _asked_from(tokens(body), 2) == 0 else 0 :]):
+        return False
+    fr = parse_frame(body)
+    if fr.cls in {"none", "other"} or not fr.items:
+        return False
+    last = fr.items[-1]
+    if last.obj is None or last.obj.empty:
+        return False
+    if fr.cls in {"place", "trash"}:
+        dst = dest_of(last, fr.cls)
+        return dst is not None and not dst.empty and chunk.rstrip().endswith(dst.text)
+    return not last.pps or not last.pps[-1][1].empty
+
+
+def _runs_on_at(sentence: str, words: list[tuple[str, int, int]], i: int, since: int) -> tuple[int, str]:
+    """Plain users' run-on commands, no "and" or comma between them ("put the phone on the desk throw the
+    pencil in the trash", "slice a potato chill one piece"): where a new clause starts at the imperative verb
+    `i` after a whole command that began at offset `since`. The verb must be followed by a thing or a
+    particle of its own and follow a whole command; inside a noun phrase ("a cook book", "a slice of bread")
+    the command before it is not whole. A split that is not certain is left to the readers, which name the
+    words they could not read. Returns (the index the clause starts at, its joiner), or (-1, "")."""
+    w = words[i][0]
+    nxt = words[i + 1][0] if i + 1 < len(words) else ""
+    # the bare form only: "a box of tissues using the light of a lamp" is no command
+    if w not in G.VERBS or G.VERBS[w][1] != w or i == 0 or words[i - 1][0] in G.CLAUSE_JOINERS | {","}:
+        return -1, ""
+    thing = nxt in G.NUMBERS or nxt.isdigit() or nxt in {"it", "them"}
+    starts = thing or (nxt in DETERMINERS and nxt != "of")
+    if not (starts or nxt in _PARTICLES.get(G.VERBS[w][0], ())):
+        return -1, ""
+    b = _asked_from(words, i)
+    if b == i and words[i - 1][0] in _SUBJECTS:  # "after you look at ...": a subordinate clause's verb
+        return -1, ""
+    if 0 < b < i and words[b - 1][0] in {"and", "then", ","}:  # "... and can you put ...": said as a clause
+        return b - 1, "then" if words[b - 1][0] == "then" else "and"
+    joiner = "and"
+    if b > 1 and words[b - 1][0] == "last":  # "... in the tub last put ...": "lastly", its comma left out
+        b, joiner = b - 1, "finally"
+    if b == 0 or sentence[words[b - 1][2] : words[b][1]].strip():  # a bullet or a dash: a list of its own
+        return -1, ""
+    if words[b - 1][0] in DETERMINERS or not _complete(sentence[since : words[b - 1][2]]):
+        return -1, ""
+    before = parse_np(words[b - 1][0]).entry  # "heat a tomato slice the same way": a noun
+    if w in G.SLICE_NOUNS and before is not None and G.SLICEABLE.intersection(before.types):
+        return -1, ""
+    return b, joiner
+
+
+def split_clauses(sentence: str, run_ons: bool = True) -> list[tuple[str, int, int, str]]:
+    """(clause text, start, end, joiner) for each verb clause of a sentence; `run_ons=False` leaves run-on
+    commands whole (in "before you A B, and C" where the subordinate clause ends is not certain)."""
     words = tokens(sentence)
     cuts: list[tuple[int, str]] = []
     for i in range(len(words)):
-        if _is_verb_at(words, i):
+        since = cuts[-1][0] if cuts else 0
+        verb_at = _is_verb_at(words, i)
+        at, said = _runs_on_at(sentence, words, i, since) if run_ons and not verb_at else (-1, "")
+        if at >= 0:
+            cuts.append((words[at][1], said))
+        elif verb_at:
             j = i - 1
             joiner = ""
             ends_before = -1  # "X first and then Y": the "first" that ends the clause before
@@ -74,13 +167,10 @@ def split_clauses(sentence: str) -> list[tuple[str, int, int, str]]:
     for k, (cut, joiner) in enumerate(cuts):
         end = cuts[k + 1][0] if k + 1 < len(cuts) else len(sentence)
         chunk = sentence[cut:end]
-        stripped = re.sub(
-            r"^[\s,]*(?:(?:and|then|to|plus|also|while|or|as|so|first|next|finally|lastly|afterwards?|"
-            r"subsequently)\b[\s,]*)*",
-            "",
-            chunk,
-            flags=re.I,
-        )
+        stripped = _JOINERS_FIRST.sub("", chunk)
+        if _asked_from(tokens(stripped), 2) == 0:  # "can you put ...": the request
+            stripped = re.sub(r"^\w+\s+\w+\s+(?:(?:please|pls|plz)\s+)?", "", stripped)
+        stripped = re.sub(r"^last\s+", "", stripped) if joiner == "finally" else stripped
         stripped = re.sub(r"[\s,]*(?:\band\b)?[\s,]*$", "", stripped)
         if stripped:
             s = cut + chunk.index(stripped)

@@ -199,8 +199,28 @@ class _ItemReader:
             )
             self.cur_prep = hit[0]
             return i + hit[1]
+        if self._list_goes_on(words, i):  # "look at the remote the vase and a keychain": a comma left out
+            self._step(words[:i] + [","] + words[i:], i)  # read as the comma: the article is read next
+            return i
         self.cur.append(self.toks[i])
         return i + 1
+
+    def _list_goes_on(self, words: list[str], i: int) -> bool:
+        """Does the article at `i` start the next item of a list written without commas? Only between two
+        whole noun phrases the lexicon knows, before any preposition ("look at the remote the vase and a
+        keychain"), the second a thing to move (a lamp or a fixed place is where the first goes)."""
+        if words[i] not in {"the", "a", "an"} or self.cur_prep is not None or not self.cur:
+            return False
+        said = parse_np(self.text[self.cur[0][1] : self.cur[-1][2]]).entry
+        if said is None or not self.cur[-1][0].startswith(said.phrase.split()[-1]):  # "the keys before": no
+            return False
+        rest = words[i:]
+        stops = (k for k in range(1, len(rest)) if rest[k] in {",", "and"} or match_prep(rest, k) is not None)
+        ends = next(stops, len(rest))
+        nxt = parse_np(" ".join(rest[:ends]))
+        if ends < 2 or nxt.entry is None or nxt.is_lamp():  # "examine a cup [under] a lamp": a typo lost
+            return False
+        return not nxt.is_receptacle() or nxt.is_movable_receptacle()
 
 
 def _particle_position(words: list[str], i: int) -> bool:

@@ -362,7 +362,8 @@ def new_tasks_from_ref(ref: str, b: TaskBuilder, text: str) -> list[BaseTaskSpec
     drafts: list[Draft] = []
     unread: list[str] = []
     ref = _PLACED_STATE.sub(lambda m: _placement(m, text), ref.strip())
-    for c_text, _s, _e, _j in split_clauses(_YOU.sub("", ref)):  # "after you put ...": a clause of its own
+    # "after you put ...": a clause of its own (a run-on in it may be the main clause: not split)
+    for c_text, _s, _e, _j in split_clauses(_YOU.sub("", ref), run_ons=False):
         words = [w for w, _, _ in tokens(c_text)]
         if words and words[0] not in G.VERBS and words[0] in G.VERB_PAST:
             # "after you have examined the keys under the lamp": the clause "examine the keys ..."
