@@ -16,6 +16,7 @@ from __future__ import annotations
 import re
 from functools import cache
 
+from nl2hltl2plan.language.content_words import free_order_phrase
 from nl2hltl2plan.language.grammar.drafts import states_where
 from nl2hltl2plan.language.grammar.sentences import normalize
 from nl2hltl2plan.language.grounding import camel_words, find_mentions, lexicon, plural_name
@@ -118,6 +119,8 @@ def _words_of(type_name: str) -> frozenset[str]:
 # a joiner that ends a failed clause ("putting the mug in the sink, though" before "first ..."): it belongs to
 # the connective after the clause, not to the task the canonical sentence restates
 _TRAILING_JOINER = re.compile(r"(?:\s*,)?\s+(?:though|although|but|and|then|plus|also)\s*,?\s*$", re.I)
+# "put B on X, order doesn't matter": the grammar reads the remark (it groups the sentence's clauses)
+_TRAILING_FREE_ORDER = re.compile(rf"\s*[,;]?\s*\b(?:{free_order_phrase('whole')})\W*$", re.I)
 
 
 def rewrite(
@@ -127,7 +130,8 @@ def rewrite(
     text = normalize(instruction)
     changed = False
     for said in failed_clauses(unparsed):
-        clause = _TRAILING_JOINER.sub("", said)  # the joiner stays, so its order does ("A, though first B")
+        # the joiner stays, so its order does ("A, though first B"); a closing free-order remark too
+        clause = _TRAILING_FREE_ORDER.sub("", _TRAILING_JOINER.sub("", said))
         at = text.lower().find(clause.lower())
         if at < 0 or not clause.strip() or states_where(clause):
             continue  # "the mug is in the sink" says where it is: no request to read back
