@@ -1,8 +1,9 @@
 """Issue 28 (h228): a clause the grammar leaves unread ("put a box on an armchair, order doesn't matter": read
 as a list of destinations) is rewritten by the slot model's rescue (`learned/rescue.py`) with its closing
-free-order remark kept, so the grammar still groups the sentence's clauses: "After you're done, B, C, order
-doesn't matter" is [A, B] and [A, C] (ANNOTATION_GUIDE.md, "After (doing) X, Y" for the whole group). Before,
-the rewrite dropped the remark and, since h213's "then" by the guide, C lost its order after A."""
+free-order remark restated as ", in any order", so the grammar still groups the sentence's clauses: "After
+you're done, B, C, order doesn't matter" is [A, B] and [A, C] (ANNOTATION_GUIDE.md, "After (doing) X, Y" for
+the whole group). Before, the rewrite dropped the remark and, since h213's "then" by the guide, C lost its
+order after A."""
 
 from __future__ import annotations
 
@@ -32,6 +33,11 @@ def object_order(text: str) -> set[str]:
             {"Watch<Laptop", "Watch<Box"},
         ),
         (  # before: Watch<Laptop only
+            "Place a watch inside of the safe. After you're done, look at a laptop under the lamp, put a box "
+            "on an armchair, order isn't important.",
+            {"Watch<Laptop", "Watch<Box"},
+        ),
+        (  # near miss: read right before too
             "Put the keychain in the safe. Afterwards, examine a laptop under the lamp, put a box on the "
             "sofa, order doesn't matter.",
             {"KeyChain<Laptop", "KeyChain<Box"},
@@ -48,16 +54,6 @@ def object_order(text: str) -> set[str]:
 )
 def test_a_rescued_clause_keeps_its_free_order_remark(text, order):
     assert object_order(text) == order
-
-
-def test_a_remark_neither_reader_reads_is_refused():
-    """Near miss: the grammar cannot read "order isn't important" after a destination, nor the structure
-    model's spans account for it; the rescue no longer drops it to read Watch<Laptop alone: unread."""
-    text = (
-        "Place a watch inside of the safe. After you're done, look at a laptop under the lamp, put a box on "
-        "an armchair, order isn't important."
-    )
-    assert offline_reading(text, TYPES)[2]
 
 
 def test_the_generator_row_h213_broke():
