@@ -16,6 +16,7 @@ from __future__ import annotations
 import re
 from functools import cache
 
+from nl2hltl2plan.language.content_words import free_order_phrase
 from nl2hltl2plan.language.grammar.drafts import states_where
 from nl2hltl2plan.language.grammar.sentences import normalize
 from nl2hltl2plan.language.grounding import camel_words, find_mentions, lexicon, plural_name
@@ -118,6 +119,8 @@ def _words_of(type_name: str) -> frozenset[str]:
 # a joiner that ends a failed clause ("putting the mug in the sink, though" before "first ..."): it belongs to
 # the connective after the clause, not to the task the canonical sentence restates
 _TRAILING_JOINER = re.compile(r"(?:\s*,)?\s+(?:though|although|but|and|then|plus|also)\s*,?\s*$", re.I)
+# "put B on X, order doesn't matter": a free-order remark closing a failed clause is not the task's
+_TRAILING_FREE_ORDER = re.compile(rf"\s*[,;]?\s*\b(?:{free_order_phrase('whole')})\W*$", re.I)
 
 
 def rewrite(
@@ -127,7 +130,8 @@ def rewrite(
     text = normalize(instruction)
     changed = False
     for said in failed_clauses(unparsed):
-        clause = _TRAILING_JOINER.sub("", said)  # the joiner stays, so its order does ("A, though first B")
+        said = _TRAILING_JOINER.sub("", said)  # the joiner stays, so its order does ("A, though first B")
+        clause = _TRAILING_FREE_ORDER.sub("", said)
         at = text.lower().find(clause.lower())
         if at < 0 or not clause.strip() or states_where(clause):
             continue  # "the mug is in the sink" says where it is: no request to read back
@@ -139,6 +143,10 @@ def rewrite(
         sentence = canonical(pred)
         if sentence is None:
             continue
+        if clause != said and text.lower()[at : at + len(said)] == said.lower():
+            # a closing free-order remark ("B, order doesn't matter") restated as the grammar reads it after
+            # a clause: it groups the sentence's clauses, which h213's guide "then" orders by it
+            sentence, clause = sentence + ", in any order", said
         text = text[:at] + sentence + text[at + len(clause) :]
         changed = True
     return text if changed else None
