@@ -148,6 +148,9 @@ _TAKES_A_THING = frozenset(
     "in into onto to inside put place move set drop take grab pick wash rinse clean heat cool chill slice "
     "cut bring carry throw toss".split()
 )
+# a thing added to another: "and the zebra", "plus the zebra", "so does the zebra", "the same with the
+# zebra" (the additive rules read it as another task's thing; one no word table knows was dropped at exit 0)
+_ADDS_A_THING = frozenset("and plus does do".split())
 _THING_DETERMINERS = frozenset(
     "the a an my your its their that this these those some both two another".split()
 )
@@ -163,7 +166,9 @@ _NOT_A_THING = frozenset(
 MODIFIER_OPENS = _THING_DETERMINERS | _TAKES_A_THING | DETERMINERS | frozenset(
     "any each every all his her".split()
 )
-_THING_ENDS = LOCATIVE | _COMMAND_START | frozenset("to into onto or with before after until once".split())
+_THING_ENDS = LOCATIVE | _COMMAND_START | frozenset(
+    "to into onto or with before after until once go goes too both each as".split()
+)
 THING_REASON = "no object of this world is called so"
 
 
@@ -173,14 +178,32 @@ def unknown_things(instruction: str, toks: Tokens | None = None) -> list[Unread]
     toks = tokens(instruction) if toks is None else toks
     out = []
     for i in range(len(toks) - 2):
-        if toks[i][0] not in _TAKES_A_THING or toks[i + 1][0] not in _THING_DETERMINERS:
+        if not _opens_a_thing(toks, i) or toks[i + 1][0] not in _THING_DETERMINERS:
             continue
         if toks[i][0] == "to" and i and toks[i - 1][0] in ("next", "close", "up"):
             continue  # "next to the fireplace": a landmark, where the thing is
         head = _head(instruction, toks, i + 2)
         if head is not None and _unknown_thing(head):
             out.append(Unread(head, "object", THING_REASON))
+    for m in _ALSO_SAID.finditer(instruction):  # "Put the mug in the sink. The zebra too."
+        word = m.group(1).lower()
+        if not (known_word(word) or categories(word) or word in _NOT_A_THING) and _unknown_thing(word):
+            out.append(Unread(word, "object", THING_REASON))
     return out
+
+
+# a sentence that adds one thing to the task before it
+_ALSO_SAID = re.compile(r"(?:^|[.!?;]\s+)(?:the|a|an|my|your|that|this)\s+([a-z]+)\s+(?:too|as well|also)\b", re.I)
+
+
+def _opens_a_thing(toks: Tokens, i: int) -> bool:
+    word, before = toks[i][0], toks[i - 1][0] if i else ""
+    if word in ("on", "upon"):  # "put it on the zebra": a destination (not "on the weekend")
+        return before in _PLACED_ON
+    return word in _TAKES_A_THING | _ADDS_A_THING or (word == "with" and before == "same")
+
+
+_PLACED_ON = frozenset("it them put set place placed go goes".split())
 
 
 def _head(instruction: str, toks: Tokens, start: int) -> str | None:

@@ -1,0 +1,70 @@
+"""h225 (issue 23): near misses of session 30's rewriting rules that were read at exit 0 with a part of the
+text lost. A thing no word table knows, added to a task ("and the zebra too", "so does the zebra", "the same
+with the zebra", "The zebra too.") or named as the place of a passive duty ("put on the zebra"), is unread
+by name; a ticked box of a to-do list ("- [x] ...") is refused, never done."""
+
+from __future__ import annotations
+
+import pytest
+from household_readings import full_reading
+
+from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.language.translate import translate
+from nl2hltl2plan.language.unknown_words import unknown_things
+
+
+@pytest.fixture(scope="module")
+def kitchen():
+    from nl2hltl2plan.worlds import load_world
+
+    return load_world("FloorPlan1")
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Put the mug in the sink, and the zebra too.",
+        "Put the mug in the sink, plus the zebra.",
+        "The mug goes in the sink, and so does the zebra.",
+        "Put the mug in the sink, and do the same with the zebra.",
+        "Put the mug in the sink. The zebra too.",
+        "The mug needs to be heated and put on the zebra.",
+    ],
+)
+def test_an_added_thing_no_table_knows_is_unread(text):
+    assert [u.words for u in unknown_things(text)] == ["zebra"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Put the mug in the sink, and the cup too.",
+        "Put the mug in the sink and the rest on the counter.",
+        "Heat the mug and put it on the left.",
+        "Put the mug in the sink, and do the same with the other one.",
+    ],
+)
+def test_known_things_and_positions_stay_read(text):
+    assert unknown_things(text) == []
+
+
+@pytest.mark.data
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Put the mug in the sink, and the zebra as well.",  # main: place Mug, zebra dropped, exit 0
+        "The mug needs to be heated and put on the giraffe.",  # main: heat_place Mug -> CoffeeMachine
+    ],
+)
+def test_the_unknown_thing_makes_the_reading_partial(text, kitchen):
+    tasks, _, unparsed, _ = full_reading(text, kitchen)
+    assert tasks and any("no object of this world is called so" in u for u in unparsed)
+
+
+@pytest.mark.data
+def test_a_ticked_item_of_a_to_do_list_is_refused_by_name(kitchen):
+    text = "To-do: - [ ] put the mug in the sink - [x] put the apple in the fridge"
+    with pytest.raises(HTTError, match=r"'\[x\] put the apple in the fridge' is ticked as done"):
+        translate(text, kitchen, build=False, actions="none")
+    tasks, _, unparsed, _ = full_reading(text.replace("[x]", "[ ]"), kitchen)
+    assert tasks == ["place Mug -> SinkBasin", "place Apple -> Fridge"] and not unparsed
