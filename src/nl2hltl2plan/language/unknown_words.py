@@ -193,7 +193,9 @@ def unknown_things(instruction: str, toks: Tokens | None = None) -> list[Unread]
 
 
 # a sentence that adds one thing to the task before it
-_ALSO_SAID = re.compile(r"(?:^|[.!?;]\s+)(?:the|a|an|my|your|that|this)\s+([a-z]+)\s+(?:too|as well|also)\b", re.I)
+_ALSO_SAID = re.compile(
+    r"(?:^|[.!?;]\s+)(?:the|a|an|my|your|that|this)\s+([a-z]+)\s+(?:too|as well|also)\b", re.I
+)
 
 
 def _opens_a_thing(toks: Tokens, i: int) -> bool:
