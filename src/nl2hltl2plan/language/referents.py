@@ -399,21 +399,17 @@ def another_thing(instruction: str, tasks: Sequence[BaseTaskSpec]) -> None:
             )
         if thing is None or not any(set(x.entry.types) & set(thing.entry.types) for x in before):
             continue
-        same = [x for x in before if set(x.entry.types) & set(thing.entry.types)]
-        # "two mugs ..., and one more": a third mug, which a reading of the two alone drops
+        same = [x for x in before if set(x.entry.types) & set(thing.entry.types)]  # "two mugs, and one more"
         if (had := max(_said_count(lowered, x) for x in same)) >= _taken(tasks, set(thing.entry.types)):
-            more = f"a second {thing.surface}" if had == 1 else f"one more than the {had} {thing.surface} said"
-            raise HTTError(
-                f"{said!r} names {more}, and the reading takes {_NUMBER.get(had, had)}: say what to do with it "
-                f"(\"put another {'one' if thing.plural else thing.surface} in ...\")"
-            )
-
-
-_NUMBER = {1: "one", 2: "two", 3: "three"}
+            name, one = thing.surface, "one" if thing.plural else thing.surface
+            more = f"a second {name}" if had == 1 else f"one more than the {had} {name} said"
+            taken = {1: "one", 2: "two", 3: "three"}.get(had, had)
+            raise HTTError(f"{said!r} names {more}, and the reading takes {taken}: say what to do with it "
+                           f"(\"put another {one} in ...\")")
 
 
 def _said_count(lowered: str, m: Mention) -> int:
-    """How many things a mention names: the count word up to three words before it ("two mugs"), else 1."""
+    """How many things a mention names: the count up to three words before it ("two mugs"), else 1."""
     for w, _, _ in tokens(lowered[: m.char_start])[-3:][::-1]:
         if (n := count_value(categories(w), w)) is not None:
             return n
