@@ -77,3 +77,14 @@ def test_one_more_after_a_count_is_one_more_than_the_count(kitchen):
         translate("Put two mugs in the sink, and one more.", kitchen, build=False, actions="none")
     tasks, _, unparsed, _ = full_reading("Put a mug in the sink, and one more in the fridge.", kitchen)
     assert tasks == ["place Mug -> SinkBasin", "place Mug -> Fridge"] and not unparsed
+
+
+@pytest.mark.data
+def test_a_word_between_the_container_and_its_place_is_read_or_refused():
+    from nl2hltl2plan.worlds import load_world
+
+    living_room = load_world("FloorPlan229")
+    tasks, _, unparsed, _ = full_reading("Put the pen in a box, with the box still on the sofa.", living_room)
+    assert tasks == ["place_in_container Pen in Box -> Sofa"] and not unparsed  # main: the sofa dropped
+    with pytest.raises(HTTError, match="'empty' in 'box, with the box empty': no task says this of the box"):
+        translate("Put the pen in a box, with the box empty on the sofa.", living_room, build=False, actions="none")
