@@ -87,4 +87,5 @@ def test_a_word_between_the_container_and_its_place_is_read_or_refused():
     tasks, _, unparsed, _ = full_reading("Put the pen in a box, with the box still on the sofa.", living_room)
     assert tasks == ["place_in_container Pen in Box -> Sofa"] and not unparsed  # main: the sofa dropped
     with pytest.raises(HTTError, match="'empty' in 'box, with the box empty': no task says this of the box"):
-        translate("Put the pen in a box, with the box empty on the sofa.", living_room, build=False, actions="none")
+        text = "Put the pen in a box, with the box empty on the sofa."
+        translate(text, living_room, build=False, actions="none")
