@@ -89,3 +89,7 @@ def test_a_word_between_the_container_and_its_place_is_read_or_refused():
     with pytest.raises(HTTError, match="'empty' in 'box, with the box empty': no task says this of the box"):
         text = "Put the pen in a box, with the box empty on the sofa."
         translate(text, living_room, build=False, actions="none")
+
+
+def test_a_pointing_word_after_and_or_do_adds_no_thing():
+    assert unknown_things("Wash an egg. Before you do that, though, heat the cup, and this time chill it.") == []

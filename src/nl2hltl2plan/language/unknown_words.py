@@ -151,6 +151,7 @@ _TAKES_A_THING = frozenset(
 # a thing added to another: "and the zebra", "plus the zebra", "so does the zebra", "the same with the
 # zebra" (the additive rules read it as another task's thing; one no word table knows was dropped at exit 0)
 _ADDS_A_THING = frozenset("and plus does do".split())
+_POINTING = frozenset("that this these those".split())
 _THING_DETERMINERS = frozenset(
     "the a an my your its their that this these those some both two another".split()
 )
@@ -180,6 +181,8 @@ def unknown_things(instruction: str, toks: Tokens | None = None) -> list[Unread]
     for i in range(len(toks) - 2):
         if not _opens_a_thing(toks, i) or toks[i + 1][0] not in _THING_DETERMINERS:
             continue
+        if toks[i][0] not in _TAKES_A_THING and toks[i + 1][0] in _POINTING:
+            continue  # "do that, though", "and this time": no thing added
         if toks[i][0] == "to" and i and toks[i - 1][0] in ("next", "close", "up"):
             continue  # "next to the fireplace": a landmark, where the thing is
         head = _head(instruction, toks, i + 2)
