@@ -92,4 +92,5 @@ def test_a_word_between_the_container_and_its_place_is_read_or_refused():
 
 
 def test_a_pointing_word_after_and_or_do_adds_no_thing():
-    assert unknown_things("Wash an egg. Before you do that, though, heat the cup, and this time chill it.") == []
+    text = "Wash an egg. Before you do that, though, heat a cup, and this time chill it."
+    assert unknown_things(text) == []
