@@ -94,3 +94,11 @@ def test_a_word_between_the_container_and_its_place_is_read_or_refused():
 def test_a_pointing_word_after_and_or_do_adds_no_thing():
     text = "Wash an egg. Before you do that, though, heat a cup, and this time chill it."
     assert unknown_things(text) == []
+
+
+@pytest.mark.data
+def test_a_placing_said_as_done_already_is_not_done_again(kitchen):
+    # main: place Mug -> SinkBasin at exit 0 (h223's handover header dropped, the statement read as a request)
+    text = "Handover for the evening carer: the morning carer already put the mug in the sink."
+    with pytest.raises(HTTError, match="'already put' \\(action\\): said as done already"):
+        translate(text, kitchen, build=False, actions="none")

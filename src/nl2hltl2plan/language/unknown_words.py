@@ -416,9 +416,21 @@ def unread_words(instruction: str, toks: Tokens | None = None) -> list[Unread]:
     words)."""
     toks = tokens(instruction) if toks is None else toks
     unknown = unknown_verbs(instruction, toks) + unknown_things(instruction, toks)
-    unknown += unknown_modifiers(instruction, toks)
+    unknown += unknown_modifiers(instruction, toks) + done_already(instruction)
     order = misspelt_order_words(instruction)
     return unknown + order + misspelt_words(instruction, {u.words for u in order})
+
+
+# a placing said as done ("the morning carer already put the mug in the sink"): a statement, no request
+_DONE_ALREADY = re.compile(
+    r"\balready\s+(?:been\s+)?(?:put|placed|moved|set|thrown|done|took|taken|brought|tidied)\b", re.I
+)
+
+
+def done_already(instruction: str) -> list[Unread]:
+    """A placing said as done already, which a reading would do again: unread, named."""
+    reason = "said as done already: say it as a request if it is to be done"
+    return [Unread(m[0], "action", reason) for m in _DONE_ALREADY.finditer(instruction)]
 
 
 def misspelt_order_words(instruction: str) -> list[Unread]:
