@@ -102,3 +102,13 @@ def test_a_placing_said_as_done_already_is_not_done_again(kitchen):
     text = "Handover for the evening carer: the morning carer already put the mug in the sink."
     with pytest.raises(HTTError, match="'already put' \\(action\\): said as done already"):
         translate(text, kitchen, build=False, actions="none")
+
+
+@pytest.mark.data
+def test_it_after_a_reminder_of_two_things_is_not_both(kitchen):
+    # main: place Mug and place Cup at exit 0; "it" is one of the two, and the text does not say which
+    with pytest.raises(HTTError):
+        text = "Don't forget the mug and the cup - it goes in the sink."
+        translate(text, kitchen, build=False, actions="none")
+    tasks, _, unparsed, _ = full_reading("Don't forget the mug and the cup - they go in the sink.", kitchen)
+    assert tasks == ["place Mug -> SinkBasin", "place Cup -> SinkBasin"] and not unparsed
