@@ -29,6 +29,7 @@ def kitchen():
         "Put the mug in the sink, and do the same with the zebra.",
         "Put the mug in the sink. The zebra too.",
         "The mug needs to be heated and put on the zebra.",
+        "The mug needs to be washed with the zebra and put in the sink.",  # main: zebra dropped at exit 0
     ],
 )
 def test_an_added_thing_no_table_knows_is_unread(text):
@@ -41,6 +42,7 @@ def test_an_added_thing_no_table_knows_is_unread(text):
         "Put the mug in the sink, and the cup too.",
         "Put the mug in the sink and the rest on the counter.",
         "Heat the mug and put it on the left.",
+        "Put the mug in the sink by the time I am back.",
         "Put the mug in the sink, and do the same with the other one.",
     ],
 )

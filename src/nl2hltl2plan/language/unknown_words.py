@@ -148,10 +148,12 @@ _TAKES_A_THING = frozenset(
     "in into onto to inside put place move set drop take grab pick wash rinse clean heat cool chill slice "
     "cut bring carry throw toss".split()
 )
-# a thing added to another: "and the zebra", "plus the zebra", "so does the zebra", "the same with the
-# zebra" (the additive rules read it as another task's thing; one no word table knows was dropped at exit 0)
+# a thing added to another: "and the zebra", "plus the zebra", "so does the zebra" (the additive rules read
+# it as another task's thing; one no word table knows was dropped at exit 0)
 _ADDS_A_THING = frozenset("and plus does do".split())
 _POINTING = frozenset("that this these those".split())
+# what a thing is done with or beside ("washed with the zebra", "put in the sink by the zebra")
+_BESIDE_A_THING = frozenset("with by".split())
 _THING_DETERMINERS = frozenset(
     "the a an my your its their that this these those some both two another".split()
 )
@@ -161,7 +163,7 @@ _NOT_A_THING = frozenset(
     "rest spot location area space room way place half part bit lot other one ones same kitchen bedroom "
     "bathroom office house home black white grey gray red blue green yellow brown orange pink purple gold "
     "silver golden new old large small big little deep tall short clean dirty empty full wet dry cold hot "
-    "warm closest farthest nearest".split()
+    "warm closest farthest nearest time".split()
 ) | frozenset(w.split()[-1] for w in ROOM_WORDS)  # "in the hall", "in the living room"
 # the words a noun phrase opens after: what is between one of them and a name describes the thing
 MODIFIER_OPENS = _THING_DETERMINERS | _TAKES_A_THING | DETERMINERS | frozenset(
@@ -205,7 +207,7 @@ def _opens_a_thing(toks: Tokens, i: int) -> bool:
     word, before = toks[i][0], toks[i - 1][0] if i else ""
     if word in ("on", "upon"):  # "put it on the zebra": a destination (not "on the weekend")
         return before in _PLACED_ON
-    return word in _TAKES_A_THING | _ADDS_A_THING or (word == "with" and before == "same")
+    return word in _TAKES_A_THING | _ADDS_A_THING | _BESIDE_A_THING
 
 
 _PLACED_ON = frozenset("it them put set place placed go goes".split())
