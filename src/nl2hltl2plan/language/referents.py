@@ -399,8 +399,10 @@ def another_thing(instruction: str, tasks: Sequence[BaseTaskSpec]) -> None:
             )
         if thing is None or not any(set(x.entry.types) & set(thing.entry.types) for x in before):
             continue
-        same = [x for x in before if set(x.entry.types) & set(thing.entry.types)]  # "two mugs, and one more"
-        if (had := max(_said_count(lowered, x) for x in same)) >= _taken(tasks, set(thing.entry.types)):
+        same = [x for x in before if set(x.entry.types) & set(thing.entry.types)]
+        adds = not re.match(r"the\s+(?:other|remaining|second)|a\s+second", m[0])  # "another", "one more"
+        had = max(_said_count(lowered, x) for x in same) if adds else 1
+        if had >= _taken(tasks, set(thing.entry.types)):
             name, one = thing.surface, "one" if thing.plural else thing.surface
             more = f"a second {name}" if had == 1 else f"one more than the {had} {name} said"
             taken = {1: "one", 2: "two", 3: "three"}.get(had, had)
