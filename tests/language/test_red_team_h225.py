@@ -114,3 +114,13 @@ def test_it_after_a_reminder_of_two_things_is_not_both(kitchen):
         translate(text, kitchen, build=False, actions="none")
     tasks, _, unparsed, _ = full_reading("Don't forget the mug and the cup - they go in the sink.", kitchen)
     assert tasks == ["place Mug -> SinkBasin", "place Cup -> SinkBasin"] and not unparsed
+
+
+@pytest.mark.data
+def test_the_other_container_said_with_the_first_is_refused():
+    # h225's held-out line 5: main read the pencil put in a bowl at exit 0, the other bowl and the dresser lost
+    from nl2hltl2plan.worlds import load_world
+
+    with pytest.raises(HTTError, match="a second bowl, which no task moves"):
+        text = "Put the pencil in a bowl, with the other bowl on the dresser."
+        translate(text, load_world("FloorPlan330"), build=False, actions="none")

@@ -58,6 +58,8 @@ _WITH_CONTAINER = re.compile(  # (", with the mug on the desk": h212; "with the 
     r"(?=\s+(?:in|into|on|onto|inside)\s)",
     re.I,
 )
+# "a bowl, with the other bowl on the dresser": a second container, which the one task cannot move
+_WITH_OTHER = re.compile(r"\b(?P<c>[a-z]+)\s*,?\s+with\s+(?:the\s+other|another)\s+(?P=c)\b", re.I)
 # what may stand between the container and its place and say nothing a task must do ("still", "then")
 _PASSING = frozenset("still then later afterwards now also".split())
 # "the remote - coffee table": a dash between a thing and a place says where it goes, as "->" does
@@ -170,6 +172,8 @@ def verbs_written(body: str) -> str | None:
     """A sentence with the verbs its list leaves out written in (see the module's note), or None where it is
     no such list. A list of placements alone is left to `supply_put`'s one verb, which carries over; a verb
     said before the first item stays, and is written again only where an item of the other kind follows."""
+    if other := _WITH_OTHER.search(body):
+        raise HTTError(f"{other[0]!r}: a second {other['c']}, which no task moves: say what to do with it")
     said = _WITH_CONTAINER.sub(_container_placed, _DASH.sub(_dash_place, body))
     said = _TOO.sub(_place_shared, said)
     verb = _SAID_VERB.match(said)
