@@ -118,7 +118,7 @@ def test_it_after_a_reminder_of_two_things_is_not_both(kitchen):
 
 @pytest.mark.data
 def test_the_other_container_said_with_the_first_is_refused():
-    # h225's held-out line 5: main read the pencil put in a bowl at exit 0, the other bowl and the dresser lost
+    # h225's held-out line 5: main put the pencil in a bowl at exit 0, the other bowl and the dresser lost
     from nl2hltl2plan.worlds import load_world
 
     with pytest.raises(HTTError, match="a second bowl, which no task moves"):
