@@ -23,9 +23,10 @@ without its margin over English ("nevr": "never" or "near"), is unread, named wi
 Things (`unknown_things`): the thing a placing verb acts on, or the place after "in" / "into" / "onto" /
 "to", whose head word English knows and no word table does ("put the spoon in the goblet", "move the
 tray"), is unread: no object of the world is called so, and a reading without it (the spoon put in the
-sink) would drop it. So is such a thing added to a task ("and the zebra too", "plus the zebra", "so does the
-zebra", "The zebra too.") or named after "with" / "by" / a placing's "on" ("washed with the zebra"), and a placing
-said as done already ("the carer already put the mug in the sink": `done_already`). Not judged: a head with "of" after it (a part or an amount: "the ledge of the sink",
+sink) would drop it. So is such a thing added to a task ("and the zebra too", "plus the zebra", "so does
+the zebra", "The zebra too.") or named after "with" / "by" / a placing's "on" ("washed with the zebra"), and
+a placing said as done already ("the carer already put the mug in the sink": `done_already`). Not judged: a
+head with "of" after it (a part or an amount: "the ledge of the sink",
 "a slide of lettuce"), words of position ("the corner", "the middle"), colours, sizes and states before
 a noun ("the black and white statues").
 
