@@ -60,7 +60,7 @@ def test_a_host_or_carer_header_goes_and_an_unknown_one_stays():
         ("To-do: - chill a cup - wash a pan", "To-do: chill a cup. wash a pan."),
         ("To do \u2022 wash a plate, put it away \u2022 wash the pan",
          "To do: wash a plate, put it away. wash the pan."),
-        ("- [ ] put the mug in the sink - [x] put the egg away",
+        ("- [ ] put the mug in the sink - [ ] put the egg away",
          "put the mug in the sink. put the egg away."),
         ("Robot - put the mug in the sink - now", "Robot - put the mug in the sink - now"),  # no list
     ],

@@ -82,9 +82,17 @@ _REMINDER = re.compile(
 _REMINDED_THING = re.compile(
     rf"\b{courtesy_pattern('reminder', 'reminded')}\s+(?:about\s+)?"
     r"(?P<np>(?:the|a|an|your|my|two|both)\s+[a-z]+(?:\s+[a-z]+){0,3}?)\s*(?:-+|–|—|,|:)\s*"
-    r"(?:it|they|that|that\s+one|this\s+one)\s+(?P<verb>goes|go|belongs|belong|needs\s+to\s+go|should\s+go)\b",
+    r"(?P<pron>it|they|that|that\s+one|this\s+one)\s+(?P<verb>goes|go|belongs|belong|needs\s+to\s+go|should\s+go)\b",
     re.I,
 )
+
+
+def _reminded_thing(m: re.Match[str]) -> str:
+    """ "the spatula - it goes" -> "the spatula goes"; "the mug and the cup - it goes" stays: "it" is one of
+    two, and which one the text does not say."""
+    if m["pron"].lower() != "they" and re.search(r"\b(?:and|two|both)\b", m["np"], re.I):
+        return m[0]
+    return f"{m['np']} {m['verb']}"
 
 
 def _reminded(m: re.Match[str]) -> str:
@@ -156,7 +164,7 @@ def without_courtesy(text: str) -> str:
     """
     out = _OPENING_OH_VERB.sub(_afterthought, _OPENING_OH.sub(r"\1Also ", _TRAILING.sub("", text)))
     out = _AFTERTHOUGHT.sub(". Also ", out)
-    out = _REMINDED_THING.sub(lambda m: f"{m['np']} {m['verb']}", out)
+    out = _REMINDED_THING.sub(_reminded_thing, out)
     out = _FRAME.sub(" ", _REMINDER.sub(_reminded, out))
     out = re.sub(r"\s+([,.;:!?])", r"\1", " ".join(out.split()))
     out = re.sub(r"^[\s,.;:!?]+", "", out)

@@ -79,7 +79,11 @@ def bullets_apart(text: str) -> str:
     """
     if (m := _BULLETED.match(text.strip())) is None:
         return text
-    items = (_CHECKBOX.sub("", item.strip(" .;!?")) for item in _BULLET.split(text.strip()[m.end() :]))
+    said = [item.strip(" .;!?") for item in _BULLET.split(text.strip()[m.end() :])]
+    # a ticked box says the item is done: doing it again (or dropping it unsaid) is no careful reading
+    if ticked := [item for item in said if (box := _CHECKBOX.match(item)) and box[0].strip("[] ")]:
+        raise HTTError(f"{ticked[0]!r} is ticked as done: untick it to have it done, or leave it out")
+    items = (_CHECKBOX.sub("", item) for item in said)
     head = (m["head"] or "").strip()
     head = f"{head}: " if head and not head.endswith(":") else f"{head} " if head else ""
     return head + " ".join(f"{item}." for item in items if item)

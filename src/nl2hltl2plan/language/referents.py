@@ -399,11 +399,23 @@ def another_thing(instruction: str, tasks: Sequence[BaseTaskSpec]) -> None:
             )
         if thing is None or not any(set(x.entry.types) & set(thing.entry.types) for x in before):
             continue
-        if _taken(tasks, set(thing.entry.types)) < 2:
-            raise HTTError(
-                f"{said!r} names a second {thing.surface}, and the reading takes one: say what to do with it "
-                f"(\"put another {thing.surface} in ...\")"
-            )
+        same = [x for x in before if set(x.entry.types) & set(thing.entry.types)]
+        adds = not re.match(r"the\s+(?:other|remaining|second)|a\s+second", m[0])  # "another", "one more"
+        had = max(_said_count(lowered, x) for x in same) if adds else 1
+        if had >= _taken(tasks, set(thing.entry.types)):
+            name, one = thing.surface, "one" if thing.plural else thing.surface
+            more = f"a second {name}" if had == 1 else f"one more than the {had} {name} said"
+            taken = {1: "one", 2: "two", 3: "three"}.get(had, had)
+            raise HTTError(f"{said!r} names {more}, and the reading takes {taken}: say what to do with it "
+                           f"(\"put another {one} in ...\")")
+
+
+def _said_count(lowered: str, m: Mention) -> int:
+    """How many things a mention names: the count up to three words before it ("two mugs"), else 1."""
+    for w, _, _ in tokens(lowered[: m.char_start])[-3:][::-1]:
+        if (n := count_value(categories(w), w)) is not None:
+            return n
+    return 1
 
 
 def _taken(tasks: Sequence[BaseTaskSpec], types: set[str]) -> int:

@@ -23,7 +23,10 @@ without its margin over English ("nevr": "never" or "near"), is unread, named wi
 Things (`unknown_things`): the thing a placing verb acts on, or the place after "in" / "into" / "onto" /
 "to", whose head word English knows and no word table does ("put the spoon in the goblet", "move the
 tray"), is unread: no object of the world is called so, and a reading without it (the spoon put in the
-sink) would drop it. Not judged: a head with "of" after it (a part or an amount: "the ledge of the sink",
+sink) would drop it. So is such a thing added to a task ("and the zebra too", "plus the zebra", "so does
+the zebra", "The zebra too.") or named after "with" / "by" / a placing's "on" ("washed with the zebra"), and
+a placing said as done already ("the carer already put the mug in the sink": `done_already`). Not judged: a
+head with "of" after it (a part or an amount: "the ledge of the sink",
 "a slide of lettuce"), words of position ("the corner", "the middle"), colours, sizes and states before
 a noun ("the black and white statues").
 
@@ -148,6 +151,12 @@ _TAKES_A_THING = frozenset(
     "in into onto to inside put place move set drop take grab pick wash rinse clean heat cool chill slice "
     "cut bring carry throw toss".split()
 )
+# a thing added to another: "and the zebra", "plus the zebra", "so does the zebra" (the additive rules read
+# it as another task's thing; one no word table knows was dropped at exit 0)
+_ADDS_A_THING = frozenset("and plus does do".split())
+_POINTING = frozenset("that this these those".split())
+# what a thing is done with or beside ("washed with the zebra", "put in the sink by the zebra")
+_BESIDE_A_THING = frozenset("with by".split())
 _THING_DETERMINERS = frozenset(
     "the a an my your its their that this these those some both two another".split()
 )
@@ -157,13 +166,15 @@ _NOT_A_THING = frozenset(
     "rest spot location area space room way place half part bit lot other one ones same kitchen bedroom "
     "bathroom office house home black white grey gray red blue green yellow brown orange pink purple gold "
     "silver golden new old large small big little deep tall short clean dirty empty full wet dry cold hot "
-    "warm closest farthest nearest".split()
+    "warm closest farthest nearest time".split()
 ) | frozenset(w.split()[-1] for w in ROOM_WORDS)  # "in the hall", "in the living room"
 # the words a noun phrase opens after: what is between one of them and a name describes the thing
 MODIFIER_OPENS = _THING_DETERMINERS | _TAKES_A_THING | DETERMINERS | frozenset(
     "any each every all his her".split()
 )
-_THING_ENDS = LOCATIVE | _COMMAND_START | frozenset("to into onto or with before after until once".split())
+_THING_ENDS = LOCATIVE | _COMMAND_START | frozenset(
+    "to into onto or with before after until once go goes too both each as".split()
+)
 THING_REASON = "no object of this world is called so"
 
 
@@ -173,14 +184,36 @@ def unknown_things(instruction: str, toks: Tokens | None = None) -> list[Unread]
     toks = tokens(instruction) if toks is None else toks
     out = []
     for i in range(len(toks) - 2):
-        if toks[i][0] not in _TAKES_A_THING or toks[i + 1][0] not in _THING_DETERMINERS:
+        if not _opens_a_thing(toks, i) or toks[i + 1][0] not in _THING_DETERMINERS:
             continue
+        if toks[i][0] not in _TAKES_A_THING and toks[i + 1][0] in _POINTING:
+            continue  # "do that, though", "and this time": no thing added
         if toks[i][0] == "to" and i and toks[i - 1][0] in ("next", "close", "up"):
             continue  # "next to the fireplace": a landmark, where the thing is
         head = _head(instruction, toks, i + 2)
         if head is not None and _unknown_thing(head):
             out.append(Unread(head, "object", THING_REASON))
+    for m in _ALSO_SAID.finditer(instruction):  # "Put the mug in the sink. The zebra too."
+        word = m.group(1).lower()
+        if not (known_word(word) or categories(word) or word in _NOT_A_THING) and _unknown_thing(word):
+            out.append(Unread(word, "object", THING_REASON))
     return out
+
+
+# a sentence that adds one thing to the task before it
+_ALSO_SAID = re.compile(
+    r"(?:^|[.!?;]\s+)(?:the|a|an|my|your|that|this)\s+([a-z]+)\s+(?:too|as well|also)\b", re.I
+)
+
+
+def _opens_a_thing(toks: Tokens, i: int) -> bool:
+    word, before = toks[i][0], toks[i - 1][0] if i else ""
+    if word in ("on", "upon"):  # "put it on the zebra": a destination (not "on the weekend")
+        return before in _PLACED_ON
+    return word in _TAKES_A_THING | _ADDS_A_THING | _BESIDE_A_THING
+
+
+_PLACED_ON = frozenset("it them put set place placed go goes".split())
 
 
 def _head(instruction: str, toks: Tokens, start: int) -> str | None:
@@ -388,9 +421,21 @@ def unread_words(instruction: str, toks: Tokens | None = None) -> list[Unread]:
     words)."""
     toks = tokens(instruction) if toks is None else toks
     unknown = unknown_verbs(instruction, toks) + unknown_things(instruction, toks)
-    unknown += unknown_modifiers(instruction, toks)
+    unknown += unknown_modifiers(instruction, toks) + done_already(instruction)
     order = misspelt_order_words(instruction)
     return unknown + order + misspelt_words(instruction, {u.words for u in order})
+
+
+# a placing said as done ("the morning carer already put the mug in the sink"): a statement, no request
+_DONE_ALREADY = re.compile(
+    r"\balready\s+(?:been\s+)?(?:put|placed|moved|set|thrown|done|took|taken|brought|tidied)\b", re.I
+)
+
+
+def done_already(instruction: str) -> list[Unread]:
+    """A placing said as done already, which a reading would do again: unread, named."""
+    reason = "said as done already: say it as a request if it is to be done"
+    return [Unread(m[0], "action", reason) for m in _DONE_ALREADY.finditer(instruction)]
 
 
 def misspelt_order_words(instruction: str) -> list[Unread]:

@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import re
 
+from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.phrases import tokens
 from nl2hltl2plan.language.grounding import find_mentions
@@ -52,9 +53,15 @@ _PAIR = re.compile(
     r"(?:the|that)\s+(?P=c)\s+(?:in|into|on|onto|inside)\s",
     re.I,
 )
-_WITH_CONTAINER = re.compile(  # (", with the mug on the desk": h212)
-    r"\b(?P<c>[a-z]+)\s*,?\s+with\s+(?P<d>the|that)\s+(?P=c)(?=\s+(?:in|into|on|onto|inside)\s)", re.I
+_WITH_CONTAINER = re.compile(  # (", with the mug on the desk": h212; "with the mug still on the desk")
+    r"\b(?P<c>[a-z]+)\s*,?\s+with\s+(?P<d>the|that)\s+(?P=c)(?:\s+(?P<w>[a-z]+))??"
+    r"(?=\s+(?:in|into|on|onto|inside)\s)",
+    re.I,
 )
+# "a bowl, with the other bowl on the dresser": a second container, which the one task cannot move
+_WITH_OTHER = re.compile(r"\b(?P<c>[a-z]+)\s*,?\s+with\s+(?:the\s+other|another)\s+(?P=c)\b", re.I)
+# what may stand between the container and its place and say nothing a task must do ("still", "then")
+_PASSING = frozenset("still then later afterwards now also".split())
 # "the remote - coffee table": a dash between a thing and a place says where it goes, as "->" does
 _DASH = re.compile(r"(?P<x>[^,;:\-]+?)\s+[-\u2013]\s+(?P<y>[^,;:\-]+?)(?=\s*(?:,|$))")
 # ", lamp on" after the lamp: the rules read "with the lamp on" (a bare "lamp on" they take for a thing)
@@ -153,11 +160,21 @@ def _place_shared(m: re.Match[str]) -> str:
     return f"{m['lead']}{m['x']} and {m['y']} {m['dest']}"
 
 
+def _container_placed(m: re.Match[str]) -> str:
+    """ "a mug, with the mug (still) on the desk" -> "a mug and the mug on the desk"; another word there
+    ("with the box empty on the sofa") says what no task does: refused by name, never dropped."""
+    if m["w"] and m["w"].lower() not in _PASSING:
+        raise HTTError(f"{m['w']!r} in {m[0]!r}: no task says this of the {m['c']}")
+    return f"{m['c']} and {m['d']} {m['c']}"
+
+
 def verbs_written(body: str) -> str | None:
     """A sentence with the verbs its list leaves out written in (see the module's note), or None where it is
     no such list. A list of placements alone is left to `supply_put`'s one verb, which carries over; a verb
     said before the first item stays, and is written again only where an item of the other kind follows."""
-    said = _WITH_CONTAINER.sub(r"\g<c> and \g<d> \g<c>", _DASH.sub(_dash_place, body))
+    if other := _WITH_OTHER.search(body):
+        raise HTTError(f"{other[0]!r}: a second {other['c']}, which no task moves: say what to do with it")
+    said = _WITH_CONTAINER.sub(_container_placed, _DASH.sub(_dash_place, body))
     said = _TOO.sub(_place_shared, said)
     verb = _SAID_VERB.match(said)
     head = verb.end() if verb else 0
