@@ -27,7 +27,7 @@ from nl2hltl2plan.language.grammar.frames import (
     two_places_unread,
 )
 from nl2hltl2plan.language.grammar.lamp_phrases import carried_then_lit
-from nl2hltl2plan.language.grammar.listed_things import merge_items
+from nl2hltl2plan.language.grammar.listed_things import merge_items, split_last_own_place
 from nl2hltl2plan.language.grammar.phrases import NP, one_of_each_under_a_shared_plural, tokens
 from nl2hltl2plan.language.grammar.sentences import Sentence
 from nl2hltl2plan.language.grammar.subordinate import treatment_after
@@ -322,6 +322,10 @@ class DraftBuilder:
         sentence_units = units[st.first_unit :]
         if not sentence_units:
             return
+        one_list = len(sentence_units) == 1
+        if one_list and (rest := split_last_own_place(st.sentence, units[-1], self.b, self.out.drafts)):
+            units.append(rest)  # its own unit, ordered by the loop below ("A and B afterwards")
+            sentence_units.append(rest)
         _refuse_free_and_ordered(st.sentence, sentence_units)
         if _one_task_in_any_order(st.sentence, sentence_units, self.out.drafts):
             why = "('in any order', but its clauses read as one task)"
