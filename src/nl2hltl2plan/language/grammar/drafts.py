@@ -323,7 +323,7 @@ class DraftBuilder:
         if not sentence_units:
             return
         one_list = len(sentence_units) == 1
-        if one_list and (rest := split_last_own_place(st.sentence, units[-1], self.b, self.out.drafts)):
+        if one_list and (rest := split_last_own_place(st.sentence, units[-1], self.out.drafts)):
             units.append(rest)  # its own unit, ordered by the loop below ("A and B afterwards")
             sentence_units.append(rest)
         _refuse_free_and_ordered(st.sentence, sentence_units)

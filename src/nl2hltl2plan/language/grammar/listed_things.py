@@ -153,23 +153,18 @@ def _holds(it: Item) -> bool:
     return any(p in G.WITH_PREPS and np.entry is not None for p, np in it.pps)
 
 
-def split_last_own_place(sentence: Sentence, unit: Unit, b: TaskBuilder, drafts: list[Draft]) -> Unit | None:
+def split_last_own_place(sentence: Sentence, unit: Unit, drafts: list[Draft]) -> Unit | None:
     """ "put the mug in the sink, and the egg in the fridge afterwards": a closing sequence word of a
     one-clause list whose last thing has a place of its own orders that thing after the ones before it, as
     "A, and put B afterwards" does. The last task leaves `unit` as a unit of its own (returned); a list that
-    shares its place ("the knife and the fork in the drawer afterwards") stays whole (None). A closing
-    "first" there (the last thing first, or the list before the sentence before?) is refused by name."""
+    shares its place ("the knife and the fork in the drawer afterwards") stays whole (None)."""
     kinds = {k for k, _ in sentence.trailing}
-    if len(unit.tasks) < 2 or not kinds & {G.THEN, G.FIRST} or G.FREE in kinds:  # "in any order, after"
+    if len(unit.tasks) < 2 or G.THEN not in kinds or G.FREE in kinds:  # not "in any order, afterwards"
         return None
     fr, last = drafts[unit.tasks[-1]].frames[-1]
     place = dest_of(last, fr.cls)
     before = [dest_of(it, f.cls) for t in unit.tasks[:-1] for f, it in drafts[t].frames]
     if place is None or any(p is place or same(p, place) for p in before):
-        return None
-    if G.FIRST in kinds:
-        why = "('first' closes a list: which thing first? say the order)"
-        b.unparsed.append(f"{sentence.text.strip()} {why}")
         return None
     rest = Unit(tasks=[unit.tasks[-1]], sentence=unit.sentence, joiner="and")
     unit.tasks = unit.tasks[:-1]
