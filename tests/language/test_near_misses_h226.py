@@ -32,6 +32,20 @@ def test_a_closing_afterwards_orders_the_last_thing_of_a_list():
     assert (tasks, order, unparsed) == (["place Fork -> Drawer", "place Spoon -> Cabinet"], {(0, 1)}, [])
 
 
+@pytest.mark.parametrize(
+    "text",
+    [  # an order word before ", and": it closes the clause before it, never opens the next (wrong at exit 0)
+        "put the apple in the fridge and put the egg in the sink afterwards, and put the mug on the counter",
+        "put the apple in the fridge and the egg in the sink afterwards, and the mug on the counter",
+    ],
+)
+def test_an_order_word_closing_a_middle_clause_is_named_not_moved(text):
+    _, pairs, unparsed = read(text)
+    assert pairs == set()
+    said = "'put the egg in the sink afterwards'"
+    assert unparsed == [f"{said} ('afterwards': an order word inside a clause, not read)"]
+
+
 @pytest.mark.sweep
 @pytest.mark.parametrize(
     "line", [ln for ln in HELD.read_text().splitlines() if ln.strip() and not ln.startswith("#")]
