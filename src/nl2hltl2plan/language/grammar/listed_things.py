@@ -4,6 +4,7 @@ roll of toilet paper"), or two types that one word names ("the towel and the han
 
 from __future__ import annotations
 
+import re
 from dataclasses import replace
 
 from nl2hltl2plan.language.grammar import word_tables as G
@@ -169,3 +170,19 @@ def split_last_own_place(sentence: Sentence, unit: Unit, drafts: list[Draft]) ->
     rest = Unit(tasks=[unit.tasks[-1]], sentence=unit.sentence, joiner="and")
     unit.tasks = unit.tasks[:-1]
     return rest
+
+
+# "the first one", "the second one": one thing of a list said before, picked by its place in the list
+_ORDINAL_ONE = re.compile(r"^(?:the\s+)?(?:first|second|third)\s+one$", re.I)
+
+
+def ordinal_of_a_list(it: Item, drafts: list[Draft], mine: list[int], b: TaskBuilder, text: str) -> bool:
+    """ "heat the potato and the egg ... and put the first one on the counter": an ordinal that picks one
+    thing of a list said before in the sentence. The reader continued the last thing said (the egg), which
+    drops the ordinal (a wrong reading at exit 0); it is refused by name (True)."""
+    if it.obj is None or not _ORDINAL_ONE.match(" ".join(it.obj.text.split())):
+        return False
+    if len([k for k in mine if drafts[k].group >= 0]) < 2:
+        return False
+    b.unparsed.append(f"{text} ({it.obj.text!r}: which of the things listed? name it)")
+    return True
