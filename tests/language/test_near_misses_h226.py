@@ -47,7 +47,7 @@ def test_an_order_word_closing_a_middle_clause_is_named_not_moved(text):
 
 
 def test_the_first_one_of_a_list_is_refused_by_name():
-    tasks, _, unparsed = read("heat the potato and the egg in the microwave and put the first one on the sink")
+    tasks, _, unparsed = read("heat the potato and the egg in the microwave, put the first one on the sink")
     assert "heat_place Egg -> SinkBasin" not in tasks  # the ordinal was dropped: the last thing said went
     why = "('the first one': which of the things listed? name it)"
     assert unparsed == [f"put the first one on the sink {why}"]
