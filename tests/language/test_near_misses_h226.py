@@ -51,6 +51,8 @@ def test_the_first_one_of_a_list_is_refused_by_name():
     assert "heat_place Egg -> SinkBasin" not in tasks  # the ordinal was dropped: the last thing said went
     why = "('the first one': which of the things listed? name it)"
     assert unparsed == [f"put the first one on the sink {why}"]
+    tasks, _, unparsed = read("put two mugs in the sink, then put the first one on the counter")
+    assert unparsed == [f"put the first one on the counter {why}"]
 
 
 @pytest.mark.sweep

@@ -178,11 +178,13 @@ _ORDINAL_ONE = re.compile(r"^(?:the\s+)?(?:first|second|third)\s+one$", re.I)
 
 def ordinal_of_a_list(it: Item, drafts: list[Draft], mine: list[int], b: TaskBuilder, text: str) -> bool:
     """ "heat the potato and the egg ... and put the first one on the counter": an ordinal that picks one
-    thing of a list said before in the sentence. The reader continued the last thing said (the egg), which
-    drops the ordinal (a wrong reading at exit 0); it is refused by name (True)."""
+    thing of a list (or of a count: "two mugs") said before in the sentence. The reader continued the last
+    thing said (the egg), which drops the ordinal (a wrong reading at exit 0); it is refused by name."""
     if it.obj is None or not _ORDINAL_ONE.match(" ".join(it.obj.text.split())):
         return False
-    if len([k for k in mine if drafts[k].group >= 0]) < 2:
+    last = drafts[mine[-1]].obj if mine else None
+    counted = last is not None and last.count >= 2  # "two mugs"
+    if len([k for k in mine if drafts[k].group >= 0]) < 2 and not counted:
         return False
     b.unparsed.append(f"{text} ({it.obj.text!r}: which of the things listed? name it)")
     return True
