@@ -113,3 +113,32 @@ def test_held_out_near_misses(line):
         assert any(refused in u for u in unparsed), unparsed
     elif not unparsed:  # a refusal is honest, never wrong (as the style sets' sweep counts it)
         assert got == [t.strip() for t in tasks.split(";")]
+
+
+@pytest.mark.parametrize(
+    "text, pairs, refused",
+    [
+        (  # h226: a closing "afterwards" of a list whose last thing has a place of its own orders that thing
+            "put the mug in the sink, and the egg in the fridge afterwards",
+            {("place Mug -> SinkBasin", "place Egg -> Fridge")},
+            "",
+        ),
+        (
+            "put the mug in the sink and the egg in the fridge after that",
+            {("place Mug -> SinkBasin", "place Egg -> Fridge")},
+            "",
+        ),
+        ("put the knife and the fork in the drawer afterwards", set(), ""),  # one place: the list stays whole
+        (  # after a sentence with an order of its own (check 1 saw an order and passed it at exit 0)
+            "put the apple on the counter. Then put the mug in the sink, and the egg in the fridge later",
+            {("place Apple -> CounterTop", x) for x in ("place Mug -> SinkBasin", "place Egg -> Fridge")}
+            | {("place Mug -> SinkBasin", "place Egg -> Fridge")},
+            "",
+        ),
+    ],
+)
+def test_a_closing_order_word_of_a_list(text, pairs, refused):
+    r = parse_instruction(text, ROOM, "room", affordances=lambda t: None)
+    name = {t.id: t.summary() for t in r.tasks}
+    assert {(name[a], name[b]) for a, b in transitive_closure(r.before, list(name))} == pairs
+    assert any(refused in u for u in r.unparsed) if refused else r.unparsed == []

@@ -181,7 +181,7 @@ def split_clauses(sentence: str, run_ons: bool = True) -> list[tuple[str, int, i
 # ----- elided verbs ("first the saucers, then the cups, in the upper rack") -------------------------------
 _GAP_SPLIT = re.compile(
     r"(?:\s*,\s*|\s+)(?:and\s+)?(?P<j>then|next|afterwards?|after\s+that|finally|lastly|followed\s+by|but\s+first)\b"
-    r"\s*,?\s*",
+    r"(?!\s*,?\s*(?:and|then)\b)\s*,?\s*",  # "A and B afterwards, and C": the word closes B's (h226)
     re.I,
 )
 # "A, then B, but first C": the list keeps the marker of C (it was swallowed into B's segment)

@@ -27,7 +27,7 @@ from nl2hltl2plan.language.grammar.frames import (
     two_places_unread,
 )
 from nl2hltl2plan.language.grammar.lamp_phrases import carried_then_lit
-from nl2hltl2plan.language.grammar.listed_things import merge_items
+from nl2hltl2plan.language.grammar.listed_things import merge_items, ordinal_of_a_list, split_last_own_place
 from nl2hltl2plan.language.grammar.phrases import NP, one_of_each_under_a_shared_plural, tokens
 from nl2hltl2plan.language.grammar.sentences import Sentence
 from nl2hltl2plan.language.grammar.subordinate import treatment_after
@@ -268,6 +268,8 @@ class DraftBuilder:
     ) -> int:
         """Attach one clause item to the sentence's last draft (-1) or start a new draft (its index)."""
         drafts = self.out.drafts
+        if ordinal_of_a_list(it, drafts, st.drafts, self.b, clause.text):
+            return -1
         d = drafts[st.drafts[-1]] if st.drafts else None
         if d is not None and d.obj is not None and it.obj is not None and _another_of_it(it.obj, d):
             # "put a toilet paper on the counter, then another one in the cabinet": a task of its own
@@ -322,6 +324,10 @@ class DraftBuilder:
         sentence_units = units[st.first_unit :]
         if not sentence_units:
             return
+        one_list = len(sentence_units) == 1
+        if one_list and (rest := split_last_own_place(st.sentence, units[-1], self.out.drafts)):
+            units.append(rest)  # its own unit, ordered by the loop below ("A and B afterwards")
+            sentence_units.append(rest)
         _refuse_free_and_ordered(st.sentence, sentence_units)
         if _one_task_in_any_order(st.sentence, sentence_units, self.out.drafts):
             why = "('in any order', but its clauses read as one task)"

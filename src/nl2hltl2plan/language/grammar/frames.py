@@ -155,6 +155,7 @@ class _ItemReader:
             and self.cur_prep in G.DEST_PREPS
             and self.cls in {"place", "trash", "pick", "clean", "heat", "cool"}
             and i + 1 < len(words)
+            and words[i + 1] not in {",", "and"}  # "in the sink afterwards, and ...": it closes the item
         ):
             # "in the microwave, then on the counter" / "to the sink and finally the toilet": a further
             # destination; the earlier ones become stops on the way

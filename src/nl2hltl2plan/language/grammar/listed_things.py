@@ -4,12 +4,14 @@ roll of toilet paper"), or two types that one word names ("the towel and the han
 
 from __future__ import annotations
 
+import re
 from dataclasses import replace
 
 from nl2hltl2plan.language.grammar import word_tables as G
-from nl2hltl2plan.language.grammar.draft_tasks import Draft, TaskBuilder
+from nl2hltl2plan.language.grammar.draft_tasks import Draft, TaskBuilder, Unit
 from nl2hltl2plan.language.grammar.frames import Item, dest_of, is_fixed, same
 from nl2hltl2plan.language.grammar.phrases import NP
+from nl2hltl2plan.language.grammar.sentences import Sentence
 from nl2hltl2plan.language.grounding import RECEPTACLES, Grounder, camel_words
 
 
@@ -150,3 +152,39 @@ def _where_both_go(x: Item, y: Item, cont: NP) -> list[tuple[str, NP]] | None:
 def _holds(it: Item) -> bool:
     """Does the item say what its container holds ("a cup with a knife in it")?"""
     return any(p in G.WITH_PREPS and np.entry is not None for p, np in it.pps)
+
+
+def split_last_own_place(sentence: Sentence, unit: Unit, drafts: list[Draft]) -> Unit | None:
+    """ "put the mug in the sink, and the egg in the fridge afterwards": a closing sequence word of a
+    one-clause list whose last thing has a place of its own orders that thing after the ones before it, as
+    "A, and put B afterwards" does. The last task leaves `unit` as a unit of its own (returned); a list that
+    shares its place ("the knife and the fork in the drawer afterwards") stays whole (None)."""
+    kinds = {k for k, _ in sentence.trailing}
+    if len(unit.tasks) < 2 or G.THEN not in kinds or G.FREE in kinds:  # not "in any order, afterwards"
+        return None
+    fr, last = drafts[unit.tasks[-1]].frames[-1]
+    place = dest_of(last, fr.cls)
+    before = [dest_of(it, f.cls) for t in unit.tasks[:-1] for f, it in drafts[t].frames]
+    if place is None or any(p is place or same(p, place) for p in before):
+        return None
+    rest = Unit(tasks=[unit.tasks[-1]], sentence=unit.sentence, joiner="and")
+    unit.tasks = unit.tasks[:-1]
+    return rest
+
+
+# "the first one", "the second one": one thing of a list said before, picked by its place in the list
+_ORDINAL_ONE = re.compile(r"^(?:the\s+)?(?:first|second|third)\s+one$", re.I)
+
+
+def ordinal_of_a_list(it: Item, drafts: list[Draft], mine: list[int], b: TaskBuilder, text: str) -> bool:
+    """ "heat the potato and the egg ... and put the first one on the counter": an ordinal that picks one
+    thing of a list (or of a count: "two mugs") said before in the sentence. The reader continued the last
+    thing said (the egg), which drops the ordinal (a wrong reading at exit 0); it is refused by name."""
+    if it.obj is None or not _ORDINAL_ONE.match(" ".join(it.obj.text.split())):
+        return False
+    last = drafts[mine[-1]].obj if mine else None
+    counted = last is not None and last.count >= 2  # "two mugs"
+    if len([k for k in mine if drafts[k].group >= 0]) < 2 and not counted:
+        return False
+    b.unparsed.append(f"{text} ({it.obj.text!r}: which of the things listed? name it)")
+    return True

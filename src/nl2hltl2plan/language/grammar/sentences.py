@@ -401,7 +401,7 @@ _THEN_INSIDE = re.compile(
     r"\s*(?:done|finished|through|there|in\s+place|handled|taken\s+care\s+of|out\s+of\s+the\s+way)"
     r"(?:\s+with\s+(?:that|it|this))?"
     r"|after\s+(?:that|this)|afterwards?|following\s+that|only\s+then"
-    r")\s*,?\s+(?=[a-z])",
+    r")(?!\s*,?\s+(?:and|then)\b)\s*,?\s+(?=[a-z])",  # "X afterwards, and Y": the word closes X (h226)
     re.IGNORECASE,
 )
 # "Y when you're done putting X in A", "Y when done heating it": what is done is named, a reference ("Y
