@@ -58,8 +58,8 @@ def test_run_on_commands_split_at_the_imperative_verb_after_a_whole_command() ->
             ("put the phone on the desk", ""), ("throw the pencil in the trash", "and")
         ],
         "grab the mug can you put it in the sink": [("grab the mug", ""), ("put it in the sink", "and")],
-        "put it in the tub last put 2 spray bottles in the cabinet": [
-            ("put it in the tub", ""), ("put 2 spray bottles in the cabinet", "finally")
+        "rinse the cloth put it in the tub last put 2 spray bottles in the cabinet": [
+            ("rinse the cloth", ""), ("put it in the tub", "and"), ("put 2 spray bottles in the cabinet", "finally")
         ],
     }
     for text, clauses in said.items():
@@ -73,6 +73,9 @@ def test_no_run_on_split_inside_a_noun_phrase_or_a_subordinate_clause() -> None:
         "chill a slice of lettuce",  # "slice of": a noun
         "put the tv set on the stand",  # a placing without its place is not a whole command
         "put 2 keychains in the safe after you look at the vase",  # a subordinate clause's verb
+        # h227: "A last put B" after one command: "A, lastly B" or "A last, then B", opposite orders
+        "put the apple in the fridge last put the egg in the fridge",
+        "put the cup in the sink put two in the cabinet",  # a count with no noun: two of which?
     ):
         assert len(split_clauses(text)) == 1, text
 
@@ -92,3 +95,10 @@ def test_run_on_commands_and_a_comma_less_list_give_their_tasks() -> None:
         {"RemoteControl", "Vase", "KeyChain", "FloorLamp"},
     )
     assert [t.object for t in r.tasks] == [["RemoteControl"], ["Vase"], ["KeyChain"]]
+    # h227: a relative clause without "that" is no list item ("the remote [that] the watch is on")
+    from nl2hltl2plan.language.accounting import account
+
+    text = "look at the remote the watch is on under the floor lamp"
+    r = parse_instruction(text, {"RemoteControl", "Watch", "FloorLamp"})
+    assert [t.object for t in r.tasks] == [["RemoteControl"]]  # no task made of the watch
+    assert any("watch" in u.words for u in account(text, r.tasks, r.before))  # named, so never exit 0

@@ -215,12 +215,18 @@ class _ItemReader:
         if said is None or not self.cur[-1][0].startswith(said.phrase.split()[-1]):  # "the keys before": no
             return False
         rest = words[i:]
-        stops = (k for k in range(1, len(rest)) if rest[k] in {",", "and"} or match_prep(rest, k) is not None)
+        stops = (k for k in range(1, len(rest)) if rest[k] in _ITEM_ENDS or match_prep(rest, k) is not None)
         ends = next(stops, len(rest))
         nxt = parse_np(" ".join(rest[:ends]))
         if ends < 2 or nxt.entry is None or nxt.is_lamp():  # "examine a cup [under] a lamp": a typo lost
             return False
+        if not rest[ends - 1].startswith(nxt.entry.phrase.split()[-1]):  # "the remote the watch is on": a
+            return False  # relative clause without "that" (the phrase goes on past its noun), no list item
         return not nxt.is_receptacle() or nxt.is_movable_receptacle()
+
+
+# what ends an item of a list without commas: a comma, "and", or the next item's article
+_ITEM_ENDS = frozenset({",", "and", "the", "a", "an"})
 
 
 def _particle_position(words: list[str], i: int) -> bool:
