@@ -102,3 +102,9 @@ def test_run_on_commands_and_a_comma_less_list_give_their_tasks() -> None:
     r = parse_instruction(text, {"RemoteControl", "Watch", "FloorLamp"})
     assert [t.object for t in r.tasks] == [["RemoteControl"]]  # no task made of the watch
     assert any("watch" in u.words for u in account(text, r.tasks, r.before))  # named, so never exit 0
+    # h227: after a destination, a thing to move starts the next item; it is never read into the place
+    r = parse_instruction("put the watch in the box the keys on the sofa", {"Watch", "Box", "KeyChain", "Sofa"})
+    assert [(t.object, t.receptacle) for t in r.tasks] == [(["Watch"], ["Box"]), (["KeyChain"], ["Sofa"])]
+    r = parse_instruction("put the pan in the sink plate the egg", {"Pan", "SinkBasin", "Plate", "Egg"})
+    assert [(t.object, t.receptacle) for t in r.tasks] != [(["Pan"], ["Plate"])]  # "the egg" not dropped
+    assert r.unparsed

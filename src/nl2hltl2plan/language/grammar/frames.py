@@ -208,8 +208,12 @@ class _ItemReader:
     def _list_goes_on(self, words: list[str], i: int) -> bool:
         """Does the article at `i` start the next item of a list written without commas? Only between two
         whole noun phrases the lexicon knows, before any preposition ("look at the remote the vase and a
-        keychain"), the second a thing to move (a lamp or a fixed place is where the first goes)."""
-        if words[i] not in {"the", "a", "an"} or self.cur_prep is not None or not self.cur:
+        keychain"), the second a thing to move (a lamp or a fixed place is where the first goes). After a
+        destination the same holds ("put the watch in the box the keys on the sofa"): the thing is never read
+        into the place's phrase ("the sink plate the egg" is no plate, h227)."""
+        if words[i] not in {"the", "a", "an"} or not self.cur:
+            return False
+        if self.cur_prep is not None and self.cur_prep not in G.DEST_PREPS:
             return False
         said = parse_np(self.text[self.cur[0][1] : self.cur[-1][2]]).entry
         if said is None or not self.cur[-1][0].startswith(said.phrase.split()[-1]):  # "the keys before": no
