@@ -108,3 +108,13 @@ def test_run_on_commands_and_a_comma_less_list_give_their_tasks() -> None:
     r = parse_instruction("put the pan in the sink plate the egg", {"Pan", "SinkBasin", "Plate", "Egg"})
     assert [(t.object, t.receptacle) for t in r.tasks] != [(["Pan"], ["Plate"])]  # "the egg" not dropped
     assert r.unparsed
+
+
+def test_a_room_is_never_the_thing_of_the_task_before() -> None:
+    """h227: "clean the kitchen" after a placing named no thing; the apple was cleaned instead, at exit 0."""
+    from nl2hltl2plan.language.grammar import parse_instruction
+
+    for text in ("put the apple in the fridge and clean the kitchen", "put the apple in the fridge heat the kitchen"):
+        r = parse_instruction(text, {"Apple", "Fridge"})
+        assert [t.kind for t in r.tasks] == ["place"], text
+        assert any("kitchen" in u for u in r.unparsed), text
