@@ -59,7 +59,9 @@ def test_run_on_commands_split_at_the_imperative_verb_after_a_whole_command() ->
         ],
         "grab the mug can you put it in the sink": [("grab the mug", ""), ("put it in the sink", "and")],
         "rinse the cloth put it in the tub last put 2 spray bottles in the cabinet": [
-            ("rinse the cloth", ""), ("put it in the tub", "and"), ("put 2 spray bottles in the cabinet", "finally")
+            ("rinse the cloth", ""),
+            ("put it in the tub", "and"),
+            ("put 2 spray bottles in the cabinet", "finally"),
         ],
     }
     for text, clauses in said.items():
@@ -103,7 +105,8 @@ def test_run_on_commands_and_a_comma_less_list_give_their_tasks() -> None:
     assert [t.object for t in r.tasks] == [["RemoteControl"]]  # no task made of the watch
     assert any("watch" in u.words for u in account(text, r.tasks, r.before))  # named, so never exit 0
     # h227: after a destination, a thing to move starts the next item; it is never read into the place
-    r = parse_instruction("put the watch in the box the keys on the sofa", {"Watch", "Box", "KeyChain", "Sofa"})
+    types = {"Watch", "Box", "KeyChain", "Sofa"}
+    r = parse_instruction("put the watch in the box the keys on the sofa", types)
     assert [(t.object, t.receptacle) for t in r.tasks] == [(["Watch"], ["Box"]), (["KeyChain"], ["Sofa"])]
     r = parse_instruction("put the pan in the sink plate the egg", {"Pan", "SinkBasin", "Plate", "Egg"})
     assert [(t.object, t.receptacle) for t in r.tasks] != [(["Pan"], ["Plate"])]  # "the egg" not dropped
@@ -114,7 +117,10 @@ def test_a_room_is_never_the_thing_of_the_task_before() -> None:
     """h227: "clean the kitchen" after a placing named no thing; the apple was cleaned instead, at exit 0."""
     from nl2hltl2plan.language.grammar import parse_instruction
 
-    for text in ("put the apple in the fridge and clean the kitchen", "put the apple in the fridge heat the kitchen"):
+    for text in (
+        "put the apple in the fridge and clean the kitchen",
+        "put the apple in the fridge heat the kitchen",
+    ):
         r = parse_instruction(text, {"Apple", "Fridge"})
         assert [t.kind for t in r.tasks] == ["place"], text
         assert any("kitchen" in u for u in r.unparsed), text
