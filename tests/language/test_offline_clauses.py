@@ -58,8 +58,10 @@ def test_run_on_commands_split_at_the_imperative_verb_after_a_whole_command() ->
             ("put the phone on the desk", ""), ("throw the pencil in the trash", "and")
         ],
         "grab the mug can you put it in the sink": [("grab the mug", ""), ("put it in the sink", "and")],
-        "put it in the tub last put 2 spray bottles in the cabinet": [
-            ("put it in the tub", ""), ("put 2 spray bottles in the cabinet", "finally")
+        "rinse the cloth put it in the tub last put 2 spray bottles in the cabinet": [
+            ("rinse the cloth", ""),
+            ("put it in the tub", "and"),
+            ("put 2 spray bottles in the cabinet", "finally"),
         ],
     }
     for text, clauses in said.items():
@@ -73,6 +75,9 @@ def test_no_run_on_split_inside_a_noun_phrase_or_a_subordinate_clause() -> None:
         "chill a slice of lettuce",  # "slice of": a noun
         "put the tv set on the stand",  # a placing without its place is not a whole command
         "put 2 keychains in the safe after you look at the vase",  # a subordinate clause's verb
+        # h227: "A last put B" after one command: "A, lastly B" or "A last, then B", opposite orders
+        "put the apple in the fridge last put the egg in the fridge",
+        "put the cup in the sink put two in the cabinet",  # a count with no noun: two of which?
     ):
         assert len(split_clauses(text)) == 1, text
 
@@ -92,3 +97,30 @@ def test_run_on_commands_and_a_comma_less_list_give_their_tasks() -> None:
         {"RemoteControl", "Vase", "KeyChain", "FloorLamp"},
     )
     assert [t.object for t in r.tasks] == [["RemoteControl"], ["Vase"], ["KeyChain"]]
+    # h227: a relative clause without "that" is no list item ("the remote [that] the watch is on")
+    from nl2hltl2plan.language.accounting import account
+
+    text = "look at the remote the watch is on under the floor lamp"
+    r = parse_instruction(text, {"RemoteControl", "Watch", "FloorLamp"})
+    assert [t.object for t in r.tasks] == [["RemoteControl"]]  # no task made of the watch
+    assert any("watch" in u.words for u in account(text, r.tasks, r.before))  # named, so never exit 0
+    # h227: after a destination, a thing to move starts the next item; it is never read into the place
+    types = {"Watch", "Box", "KeyChain", "Sofa"}
+    r = parse_instruction("put the watch in the box the keys on the sofa", types)
+    assert [(t.object, t.receptacle) for t in r.tasks] == [(["Watch"], ["Box"]), (["KeyChain"], ["Sofa"])]
+    r = parse_instruction("put the pan in the sink plate the egg", {"Pan", "SinkBasin", "Plate", "Egg"})
+    assert [(t.object, t.receptacle) for t in r.tasks] != [(["Pan"], ["Plate"])]  # "the egg" not dropped
+    assert r.unparsed
+
+
+def test_a_room_is_never_the_thing_of_the_task_before() -> None:
+    """h227: "clean the kitchen" after a placing named no thing; the apple was cleaned instead, at exit 0."""
+    from nl2hltl2plan.language.grammar import parse_instruction
+
+    for text in (
+        "put the apple in the fridge and clean the kitchen",
+        "put the apple in the fridge heat the kitchen",
+    ):
+        r = parse_instruction(text, {"Apple", "Fridge"})
+        assert [t.kind for t in r.tasks] == ["place"], text
+        assert any("kitchen" in u for u in r.unparsed), text

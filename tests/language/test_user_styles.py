@@ -335,6 +335,10 @@ KNOWN_WRONG: set[str] = {
     "and put two vases on that side table too",
     "put a pencil in the box and put it on the coffee table, put two newspapers on the same table, then look "
     "at the watering can under the floor lamp",
+    # h227's held-out near misses (scored once, read so on main before the branch too): a verbless count
+    # after a placing moves the apple to the sink; a negation's "it" forbids every placing of the apple
+    "put the apple in the fridge two in the sink",
+    "put the egg in the fridge don't put the apple in it",
 }
 
 

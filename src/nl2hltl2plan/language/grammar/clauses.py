@@ -106,8 +106,11 @@ def _runs_on_at(sentence: str, words: list[tuple[str, int, int]], i: int, since:
     # the bare form only: "a box of tissues using the light of a lamp" is no command
     if w not in G.VERBS or G.VERBS[w][1] != w or i == 0 or words[i - 1][0] in G.CLAUSE_JOINERS | {","}:
         return -1, ""
-    thing = nxt in G.NUMBERS or nxt.isdigit() or nxt in {"it", "them"}
-    starts = thing or (nxt in DETERMINERS and nxt != "of")
+    # "put two in the cabinet": a count with no noun names no thing (two of which? the split would guess)
+    count = nxt in G.NUMBERS or nxt.isdigit()
+    if count and (i + 2 >= len(words) or match_prep([t for t, _, _ in words], i + 2) is not None):
+        return -1, ""
+    starts = count or nxt in {"it", "them"} or (nxt in DETERMINERS and nxt != "of")
     if not (starts or nxt in _PARTICLES.get(G.VERBS[w][0], ())):
         return -1, ""
     b = _asked_from(words, i)
@@ -117,6 +120,8 @@ def _runs_on_at(sentence: str, words: list[tuple[str, int, int]], i: int, since:
         return b - 1, "then" if words[b - 1][0] == "then" else "and"
     joiner = "and"
     if b > 1 and words[b - 1][0] == "last":  # "... in the tub last put ...": "lastly", its comma left out
+        if since == 0:  # "A last put B": "A, lastly B" or "A last, then B", opposite orders (h227)
+            return -1, ""
         b, joiner = b - 1, "finally"
     if b == 0 or sentence[words[b - 1][2] : words[b][1]].strip():  # a bullet or a dash: a list of its own
         return -1, ""

@@ -31,6 +31,7 @@ from nl2hltl2plan.language.grammar.listed_things import merge_items, ordinal_of_
 from nl2hltl2plan.language.grammar.phrases import NP, one_of_each_under_a_shared_plural, tokens
 from nl2hltl2plan.language.grammar.sentences import Sentence
 from nl2hltl2plan.language.grammar.subordinate import treatment_after
+from nl2hltl2plan.language.landmarks import ROOM_WORDS
 from nl2hltl2plan.language.statements import WHERE_COPULA
 
 
@@ -150,6 +151,10 @@ class DraftBuilder:
             return True
         if fr.ambiguous:
             unparsed.append(f"{c_text} (a list of destinations)")
+            return True
+        if any(o.empty and o.text.lower().endswith(ROOM_WORDS) for o in objects):
+            # "clean the kitchen": a room is never the thing of the task before (it was cleaned instead, h227)
+            unparsed.append(f"{c_text} (a room: no thing to treat or move)")
             return True
         if fr.choice:
             unparsed.append(f"{c_text} (a choice between objects: say which one)")

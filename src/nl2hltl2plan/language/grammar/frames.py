@@ -209,19 +209,29 @@ class _ItemReader:
     def _list_goes_on(self, words: list[str], i: int) -> bool:
         """Does the article at `i` start the next item of a list written without commas? Only between two
         whole noun phrases the lexicon knows, before any preposition ("look at the remote the vase and a
-        keychain"), the second a thing to move (a lamp or a fixed place is where the first goes)."""
-        if words[i] not in {"the", "a", "an"} or self.cur_prep is not None or not self.cur:
+        keychain"), the second a thing to move (a lamp or a fixed place is where the first goes). After a
+        destination the same holds ("put the watch in the box the keys on the sofa"): the thing is never read
+        into the place's phrase ("the sink plate the egg" is no plate, h227)."""
+        if words[i] not in {"the", "a", "an"} or not self.cur:
+            return False
+        if self.cur_prep is not None and self.cur_prep not in G.DEST_PREPS:
             return False
         said = parse_np(self.text[self.cur[0][1] : self.cur[-1][2]]).entry
         if said is None or not self.cur[-1][0].startswith(said.phrase.split()[-1]):  # "the keys before": no
             return False
         rest = words[i:]
-        stops = (k for k in range(1, len(rest)) if rest[k] in {",", "and"} or match_prep(rest, k) is not None)
+        stops = (k for k in range(1, len(rest)) if rest[k] in _ITEM_ENDS or match_prep(rest, k) is not None)
         ends = next(stops, len(rest))
         nxt = parse_np(" ".join(rest[:ends]))
         if ends < 2 or nxt.entry is None or nxt.is_lamp():  # "examine a cup [under] a lamp": a typo lost
             return False
+        if not rest[ends - 1].startswith(nxt.entry.phrase.split()[-1]):  # "the remote the watch is on": a
+            return False  # relative clause without "that" (the phrase goes on past its noun), no list item
         return not nxt.is_receptacle() or nxt.is_movable_receptacle()
+
+
+# what ends an item of a list without commas: a comma, "and", or the next item's article
+_ITEM_ENDS = frozenset({",", "and", "the", "a", "an"})
 
 
 def _particle_position(words: list[str], i: int) -> bool:
