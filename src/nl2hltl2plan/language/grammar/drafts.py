@@ -6,7 +6,6 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field, replace
 
-from nl2hltl2plan.domain.task_kinds import MAX_COUNT
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.clauses import Clause, expand_gapping, split_clauses
@@ -18,20 +17,18 @@ from nl2hltl2plan.language.grammar.frames import (
     Frame,
     Item,
     dest_of,
+    frame_unread,
     item_text,
     parse_frame,
     puts_into,
     same,
     treats_another_object,
-    two_places,
-    two_places_unread,
 )
 from nl2hltl2plan.language.grammar.lamp_phrases import carried_then_lit
 from nl2hltl2plan.language.grammar.listed_things import merge_items, ordinal_of_a_list, split_last_own_place
 from nl2hltl2plan.language.grammar.phrases import NP, one_of_each_under_a_shared_plural, tokens
 from nl2hltl2plan.language.grammar.sentences import Sentence
 from nl2hltl2plan.language.grammar.subordinate import treatment_after
-from nl2hltl2plan.language.landmarks import ROOM_WORDS
 from nl2hltl2plan.language.statements import WHERE_COPULA
 
 
@@ -140,27 +137,8 @@ class DraftBuilder:
             ):
                 unparsed.append(c_text)
                 return True
-        if any(it.obj is not None and it.obj.count > MAX_COUNT for it in fr.items):
-            unparsed.append(f"{c_text} (more objects of one kind than any scene holds)")
-            return True
-        objects = [it.obj for it in fr.items if it.obj is not None]
-        if any(o.heading_count or (o.generic and o.count > 2) for o in objects):
-            # "three things: the egg ... and the mug ...": the count of a heading (`restated` drops one whose
-            # count is the things listed) or of things of no named kind, not the count of the thing
-            unparsed.append(f"{c_text} (a count of things of no named kind)")
-            return True
-        if fr.ambiguous:
-            unparsed.append(f"{c_text} (a list of destinations)")
-            return True
-        if any(o.empty and o.text.lower().endswith(ROOM_WORDS) for o in objects):
-            # "clean the kitchen": a room is never the thing of the task before (it was cleaned instead, h227)
-            unparsed.append(f"{c_text} (a room: no thing to treat or move)")
-            return True
-        if fr.choice:
-            unparsed.append(f"{c_text} (a choice between objects: say which one)")
-            return True
-        if places := next((w for it in fr.items if (w := two_places(it))), ""):
-            unparsed.append(two_places_unread(c_text, places))
+        if why := frame_unread(fr, c_text):
+            unparsed.append(why)
             return True
         last = self.out.drafts[st.drafts[-1]] if st.drafts else None
         if carried := carried_then_lit(fr, last, st.next_clause):

@@ -4,9 +4,11 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from nl2hltl2plan.domain.task_kinds import MAX_COUNT
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.phrases import COLOURS, DETERMINERS, NP, match_prep, parse_np, tokens
 from nl2hltl2plan.language.grounding import find_mentions
+from nl2hltl2plan.language.landmarks import ROOM_WORDS
 
 
 @dataclass
@@ -510,3 +512,24 @@ def item_text(fr: Frame, it: Item) -> str:
     parts = [verb, it.obj.text if it.obj is not None else ""]
     parts += [f"{p} {np.text}" for p, np in it.pps if p in G.DEST_PREPS and np.text]
     return " ".join(x for x in parts if x)
+
+
+def frame_unread(fr: Frame, c_text: str) -> str | None:
+    """Why a clause's frame alone states no task of ours, as its `unparsed` entry; None where it may."""
+    if any(it.obj is not None and it.obj.count > MAX_COUNT for it in fr.items):
+        return f"{c_text} (more objects of one kind than any scene holds)"
+    objects = [it.obj for it in fr.items if it.obj is not None]
+    if any(o.heading_count or (o.generic and o.count > 2) for o in objects):
+        # "three things: the egg ... and the mug ...": the count of a heading (`restated` drops one whose
+        # count is the things listed) or of things of no named kind, not the count of the thing
+        return f"{c_text} (a count of things of no named kind)"
+    if fr.ambiguous:
+        return f"{c_text} (a list of destinations)"
+    if any(o.empty and o.text.lower().endswith(ROOM_WORDS) for o in objects):
+        # "clean the kitchen": a room is never the thing of the task before (it was cleaned instead, h227)
+        return f"{c_text} (a room: no thing to treat or move)"
+    if fr.choice:
+        return f"{c_text} (a choice between objects: say which one)"
+    if places := next((w for it in fr.items if (w := two_places(it))), ""):
+        return two_places_unread(c_text, places)
+    return None
