@@ -3,6 +3,7 @@ order, as `translate` gives them for a floor plan's world (a partial reading fai
 
 from __future__ import annotations
 
+from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.language.translate import translate
 from nl2hltl2plan.worlds.world import World
 
@@ -20,3 +21,22 @@ def full_reading(text: str, world: World) -> tuple[list[str], list[tuple[str, st
     res = translate(text, world, build=False, actions="none")
     forbids = [c.describe() for c in res.constraint_specs]
     return [t.summary() for t in res.tasks], sorted(res.before), res.unparsed, forbids
+
+
+def refusal(text: str, world: World) -> str:
+    """Why `plan` refuses the instruction: the error's message, or a partial reading's unread parts joined;
+    "" where it reads completely."""
+    try:
+        res = translate(text, world, build=False, actions="none")
+    except Nl2Hltl2PlanError as exc:
+        return str(exc)
+    return "; ".join(res.unparsed) if res.partial else ""
+
+
+def outcome(text: str, world: World) -> list[str] | str:
+    """The tasks' summaries, or "refused" / "partial"."""
+    try:
+        res = translate(text, world, build=False, actions="none")
+    except Nl2Hltl2PlanError:
+        return "refused"
+    return "partial" if res.partial else [t.summary() for t in res.tasks]

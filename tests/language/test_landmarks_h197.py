@@ -16,10 +16,8 @@
 from __future__ import annotations
 
 import pytest
-from household_readings import reading
+from household_readings import reading, refusal
 
-from nl2hltl2plan.errors import Nl2Hltl2PlanError
-from nl2hltl2plan.language.translate import translate
 from nl2hltl2plan.worlds import load_world
 
 READ = [
@@ -90,14 +88,6 @@ REFUSED_SWEEP = [
 ]
 
 
-def _refusal(floor_plan: str, text: str) -> str:
-    try:
-        res = translate(text, load_world(floor_plan), build=False, actions="none")
-    except Nl2Hltl2PlanError as exc:
-        return str(exc)
-    return "; ".join(res.unparsed) if res.partial else ""  # a partial reading is refused, as by `plan`
-
-
 @pytest.mark.data
 @pytest.mark.parametrize("floor_plan, text, tasks", READ)
 def test_a_landmark_of_the_thing_is_where_it_is(floor_plan: str, text: str, tasks: list[str]) -> None:
@@ -107,7 +97,7 @@ def test_a_landmark_of_the_thing_is_where_it_is(floor_plan: str, text: str, task
 @pytest.mark.data
 @pytest.mark.parametrize("floor_plan, text, words", REFUSED)
 def test_a_landmark_that_may_be_the_destination_is_refused(floor_plan: str, text: str, words: str) -> None:
-    assert words in _refusal(floor_plan, text)
+    assert words in refusal(text, load_world(floor_plan))
 
 
 @pytest.mark.sweep
@@ -121,4 +111,4 @@ def test_more_landmarks_of_the_thing(floor_plan: str, text: str, tasks: list[str
 @pytest.mark.data
 @pytest.mark.parametrize("floor_plan, text, words", REFUSED_SWEEP)
 def test_more_landmarks_that_may_be_the_destination(floor_plan: str, text: str, words: str) -> None:
-    assert words in _refusal(floor_plan, text)
+    assert words in refusal(text, load_world(floor_plan))

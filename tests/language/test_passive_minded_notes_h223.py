@@ -7,8 +7,8 @@ asked or where a header holds a word of no list are left, to be read or refused 
 from __future__ import annotations
 
 import pytest
+from household_readings import outcome
 
-from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.language.courtesy import without_framing, without_greetings
 from nl2hltl2plan.language.grammar.treatments_said import treatments_said
 from nl2hltl2plan.language.numbered_steps import bullets_apart
@@ -69,14 +69,6 @@ def test_to_do_lists_are_one_sentence_an_item(text, items):
     assert bullets_apart(text) == items
 
 
-def _read(text: str, world) -> list[str] | str:
-    try:
-        res = translate(text, world, "offline", build=False, actions="none")
-    except Nl2Hltl2PlanError:
-        return "refused"
-    return "partial" if res.partial else [t.summary() for t in res.tasks]
-
-
 @pytest.fixture(scope="module")
 def kitchen():
     from nl2hltl2plan.worlds import load_world
@@ -101,7 +93,7 @@ def kitchen():
     ],
 )  # fmt: skip
 def test_read_in_a_kitchen(kitchen, text, read):
-    assert _read(text, kitchen) == read
+    assert outcome(text, kitchen) == read
 
 
 @pytest.mark.data

@@ -9,10 +9,9 @@ import sys
 from pathlib import Path
 
 import pytest
+from household_readings import outcome
 
-from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.language.grammar.treatments_said import treatments_said
-from nl2hltl2plan.language.translate import translate
 
 
 @pytest.mark.parametrize(
@@ -74,14 +73,6 @@ def test_an_order_naming_a_thing_in_no_placement_orders_nothing():
     assert treatments_said(said) == "put the mug and the bowl in the sink, the mug first, then the bread"
 
 
-def _read(text: str, world) -> list[str] | str:
-    try:
-        res = translate(text, world, "offline", build=False, actions="none")
-    except Nl2Hltl2PlanError:
-        return "refused"
-    return "partial" if res.partial else [t.summary() for t in res.tasks]
-
-
 @pytest.fixture(scope="module")
 def kitchen():
     from nl2hltl2plan.worlds import load_world
@@ -105,7 +96,7 @@ def kitchen():
     ],
 )  # fmt: skip
 def test_read_in_a_kitchen(kitchen, text, read):
-    assert _read(text, kitchen) == read
+    assert outcome(text, kitchen) == read
 
 
 @pytest.mark.data

@@ -13,10 +13,8 @@
 from __future__ import annotations
 
 import pytest
-from household_readings import reading
+from household_readings import reading, refusal
 
-from nl2hltl2plan.errors import Nl2Hltl2PlanError
-from nl2hltl2plan.language.translate import translate
 from nl2hltl2plan.worlds import load_world
 
 READ = [
@@ -71,14 +69,6 @@ REFUSED = [
 ]
 
 
-def _refusal(floor_plan: str, text: str) -> str:
-    try:
-        res = translate(text, load_world(floor_plan), build=False, actions="none")
-    except Nl2Hltl2PlanError as exc:
-        return str(exc)
-    return "; ".join(res.unparsed) if res.partial else ""  # a partial reading is refused, as by `plan`
-
-
 @pytest.mark.data
 @pytest.mark.parametrize("floor_plan, text, tasks", READ)
 def test_where_a_thing_is_now_is_no_destination(floor_plan: str, text: str, tasks: list[str]) -> None:
@@ -88,7 +78,7 @@ def test_where_a_thing_is_now_is_no_destination(floor_plan: str, text: str, task
 @pytest.mark.data
 @pytest.mark.parametrize("floor_plan, text, words", REFUSED)
 def test_a_room_or_return_as_the_only_place_is_refused(floor_plan: str, text: str, words: str) -> None:
-    assert words in _refusal(floor_plan, text)
+    assert words in refusal(text, load_world(floor_plan))
 
 
 @pytest.mark.sweep
