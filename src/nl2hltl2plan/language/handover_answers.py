@@ -16,7 +16,10 @@
   "Move the yellow block to the opposite side at any time". Only where the last clause of the sentence
   before names the same blocks and no others, and no order word: otherwise the sentence stays (refused by
   its words), as does a pronoun ("It can go at any time.": which goal?); a next place said alone ("Yellow
-  to I. Then to G.") is joined to the sentence before where its last clause names one block.
+  to I. Then to G.") is joined to the sentence before where its last clause names one block. "No
+  timing requirement." is "at any time" for the clause before where it names blocks and no order;
+  otherwise it is dropped where nothing before says an order ("No other timing requirement." is always
+  dropped: the order said is all).
 """
 
 from __future__ import annotations
@@ -120,6 +123,10 @@ def answered(instruction: str) -> str:
 
 
 _ANY_TIME = r"(?:at\s+any\s+(?:time|point|moment)|any\s*time|whenever(?:\s+you\s+(?:like|want))?)"
+_NO_TIME = r"(?:time|timing)\s+(?:constraints?|restrictions?|requirements?)"
+# the time left free for every goal said ("No timing requirement."), or for all but the order said ("No
+# other timing requirement.")
+_NO_TIME_AT_ALL = re.compile(rf"(?i)^\s*(?:and\s+)?(?:there\s+is\s+)?no\s+(?P<other>other\s+)?{_NO_TIME}\s*$")
 _MOVED = (
     r"(?:go(?:es)?|be\s+(?:moved|placed|put|done|taken|transferred)|is\s+(?:moved|placed|put|done|taken))"
 )
@@ -130,13 +137,13 @@ _TIMING = (
     re.compile(
         rf"(?i)^\s*it\s+(?:does\s+not|doesn[’']?t|does\s*nt)\s+matter\s+when\s+(?P<blocks>{_BLOCKS})\s+{_MOVED}\s*$"
     ),
-    # a time left free in words: "the yellow block has no time constraint"
+    # a time left free in words: "the yellow block has no time constraint", "no timing requirement for yellow"
     re.compile(
-        rf"(?i)^\s*(?:and\s+|also\s+)?(?P<blocks>{_BLOCKS})\s+(?:has|have)\s+no\s+(?:time|timing)\s+"
-        r"(?:constraints?|restrictions?)\s*$"
+        rf"(?i)^\s*(?:and\s+|also\s+)?(?P<blocks>{_BLOCKS})\s+(?:has|have)\s+no\s+{_NO_TIME}\s*$"
     ),
-    # a block's heading before its time alone: "Yellow block: any time", "yellow: whenever"
-    re.compile(rf"(?i)^\s*(?:[-*•·]\s+)?(?P<blocks>{_BLOCKS})\s*:\s*{_ANY_TIME}\s*$"),
+    re.compile(rf"(?i)^\s*(?:and\s+)?no\s+{_NO_TIME}\s+(?:for|on)\s+(?P<blocks>{_BLOCKS})\s*$"),
+    # a block's heading before its time alone: "Yellow block: any time", "yellow: whenever", "yellow anytime"
+    re.compile(rf"(?i)^\s*(?:[-*•·]\s+)?(?P<blocks>{_BLOCKS})\s*:?\s*{_ANY_TIME}\s*$"),
     # the time alone, of the clause before: "Yellow: opposite side. Whenever."
     re.compile(rf"(?i)^\s*(?:and\s+)?(?P<blocks>){_ANY_TIME}\s*$"),
 )
@@ -189,6 +196,13 @@ def timing_joined(sentences: list[str]) -> list[str]:
             out[-1] = f"{out[-1].rstrip()}, {sentence.strip()}"
             continue
         said = next((m for p in _TIMING if (m := p.match(sentence))), None)
+        if out and (free := _NO_TIME_AT_ALL.match(sentence)):
+            last = _CLAUSE_BREAK.split(out[-1])[-1]
+            if _colours(last) and not _ORDER_WORD.search(last) and not free["other"]:
+                out[-1] = f"{out[-1].rstrip()} at any time"  # of the blocks of the clause before
+                continue
+            if free["other"] or not any(_ORDER_WORD.search(o) for o in out):
+                continue  # says no more than the goals (and the order) said before it
         if said and out:
             last = _CLAUSE_BREAK.split(out[-1])[-1]
             # "It can go at any time": "it" is the one block of the clause before; a time alone, its blocks

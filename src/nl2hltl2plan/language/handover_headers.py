@@ -17,7 +17,9 @@ holds any other word stays as it was, to be read or refused by name.
   never says which arm acts, so dropping them changes no spec.)
 - A work order: "Task: transfer", "Objects: the three blocks", "Destination: the opposite side", in
   any order, are one command at the first of them; "Order:", "Constraint:", "Note:" ... are
-  sentences of their own, and "Final step:" is "Finally, ...".
+  sentences of their own, and "Final step:" is "Finally, ...". A work order said as a title and
+  sentences ("Work order #12 - move the three blocks ... . Constraints: red before blue; no block on
+  H.") loses its title, and its remark line's parts become sentences of their own.
 - "Rule 1:" opening a line is a bullet (rules are not steps: no order between them).
 """
 
@@ -209,11 +211,34 @@ def _with_place(command: str, answer: str) -> str:
     return f"{head} {place}{comma}{tail}{end}"
 
 
+def _alternatives(kind: str) -> str:
+    """A category's words as a regex alternation ('work_order' matches 'work order')."""
+    return "|".join(r"\s+".join(t.split("_")) for t in sorted(_words()[kind], key=len, reverse=True))
+
+
+def _titled(text: str) -> str:
+    """'Work order #12 - move ... . Constraints: red before blue; no block on H.' as 'move ... .' then
+    'red before blue.' and 'no block on H.': a title said on the command's line goes, and a remark field
+    after a sentence becomes its parts (joined by semicolons) as sentences of their own."""
+    opening = re.match(
+        rf"(?i)^\s*(?:{_alternatives('title')})\s*(?:(?:#|no\.?)\s*\d+|\d+)?\s*(?::|[-–—]+)\s*(?=\S)", text
+    )
+    if opening is None:
+        return text
+    body = text[opening.end() :]
+    remark = re.search(rf"(?im)(?<=[.!?])[ \t]+(?:{_alternatives('remark_field')})[ \t]*:[ \t]*(.*)$", body)
+    if remark is None:
+        return body
+    said = [r.strip().rstrip(".") for r in remark[1].split(";")]
+    sentences = " ".join(r[:1].upper() + r[1:] + "." for r in said if r)
+    return f"{body[: remark.start()]} {sentences}{body[remark.end() :]}"
+
+
 def headed(text: str) -> str:
     """The message said as the plain lines the handover reader reads (see the module docstring)."""
     turns = _dialogue(text)
     if turns is not None:
         return " ".join(turns)
-    lines = _unheaded(text.splitlines())
+    lines = _unheaded(_titled(text).splitlines())
     lines = [_RULE.sub("- ", line) for line in lines]
     return "\n".join(_work_order(lines))
