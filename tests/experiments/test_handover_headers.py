@@ -21,7 +21,10 @@ from nl2hltl2plan.language.handover_headers import headed
 
 DEV = [(int(task), text) for style in STYLES["dev103"].values() for task, text in style.items()]
 HELD = [(int(task), text) for style in STYLES["validation37"].values() for task, text in style.items()]
-DEV += [(int(task), text) for style in STYLES["dev_h230"].values() for task, text in style.items()]
+# all of dev_h230 but one: "Red is placed first; yellow at any time." stays refused, as a time given to a goal
+# that is not the last clause before is (test_handover_sixth_round.py's near misses)
+DEV += [(int(task), text) for style in STYLES["dev_h230"].values() for task, text in style.items()
+        if "yellow at any time" not in text]
 HELD += [(int(task), text) for style in STYLES["held_h230"].values() for task, text in style.items()]
 OPPOSITE = "Move the three blocks to the opposite side. Red before blue."
 
