@@ -2488,3 +2488,32 @@ DEV_H220: dict[str, dict[int, list[str]]] = {
             "only when both are in: the carrot and the red apple in the blue plate. Good luck!"],
     },
 }
+
+
+# h229's held-out batch (session 30, issue 28): task 4 said in labelled stages or steps, arrow bullets,
+# and a chatty long-winded voice ("take X and pop it in", "X, that one can go ...", "it's X's turn", "a bit
+# of a tidy-up"). Written with DEV_H229 and committed before any rule changed, scored once at the end.
+HELD_H229: dict[str, dict[int, list[str]]] = {
+    "labelled_steps": {
+        1: ["Step 1 (any order):\n-> green apple on the blue plate\n-> orange on the yellow plate"],
+        2: ["Stage one, in any order: the green apple into the pink plate, the orange into the yellow "
+            "plate, the red apple into the blue plate."],
+        3: ["Steps, any order:\n-> carrot on the blue plate\n-> orange on the yellow plate\n-> green apple "
+            "on the green plate\n-> red apple on the pink plate"],
+        4: ["Stage 1 (either order): the green apple and the orange into the yellow plate.\nStage 2, only "
+            "once stage 1 is done: the carrot and the red apple into the blue plate, either order."],
+    },
+    "chatty_rambling": {
+        1: ["Hey, so if you could, take the orange and pop it in the yellow plate, and the green apple, "
+            "that one can go in the blue plate. Cheers!"],
+        2: ["Right then, a little job for you: the red apple wants to go in the blue plate, the green "
+            "apple in the pink plate and the orange in the yellow plate, and honestly whichever you fancy "
+            "first is fine."],
+        3: ["Okay so, bit of a tidy-up if you don't mind. Take the green apple and pop it in the green "
+            "plate, the red apple, that one goes in the pink plate, the carrot in the blue plate and the "
+            "orange in the yellow plate. Any order you fancy."],
+        4: ["So what I'd really like is the green apple and the orange in the yellow plate first, "
+            "whichever goes first. Once they're both in there, it's the carrot's turn and the red apple's "
+            "turn, and those go into the blue plate. Thanks a million!"],
+    },
+}
