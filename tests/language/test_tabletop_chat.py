@@ -125,7 +125,6 @@ def test_once_you_have_got_them_in_there_waits_for_them_to_be_there():
     assert chat_read("Once you've got them both in there, put the carrot on the blue plate", KINDS) == (
         "Once they're both there, put the carrot on the blue plate"
     )
-    assert _reading("First the green apple and the orange go into the yellow plate, in either order. Once "
-                    "you've got them both in there, the carrot and the red apple go into the blue plate.") == (
-        _ORDERED
-    )
+    text = ("First the green apple and the orange go into the yellow plate, in either order. Once you've got "
+            "them both in there, the carrot and the red apple go into the blue plate.")
+    assert _reading(text) == _ORDERED

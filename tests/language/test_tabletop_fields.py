@@ -149,8 +149,8 @@ def test_a_test_scenarios_outcome_is_what_is_asked():
 @pytest.mark.parametrize(
     "text",
     [
-        "Step 1 (any order):\n-> green apple on the yellow plate\n-> orange on the yellow plate\nStep 2, after "
-        "step 1 (any order):\n-> carrot on the blue plate\n-> red apple on the blue plate",
+        "Step 1 (any order):\n-> green apple on the yellow plate\n-> orange on the yellow plate\nStep 2, "
+        "after step 1 (any order):\n-> carrot on the blue plate\n-> red apple on the blue plate",
         "Stage one, in either order: the green apple and the orange on the yellow plate. Stage two (any "
         "order): the carrot and the red apple on the blue plate.",
     ],
