@@ -2488,3 +2488,79 @@ DEV_H220: dict[str, dict[int, list[str]]] = {
             "only when both are in: the carrot and the red apple in the blue plate. Good luck!"],
     },
 }
+
+
+# h229's held-out batch (session 30, issue 28): task 4 said in labelled stages or steps, arrow bullets,
+# and a chatty long-winded voice ("take X and pop it in", "X, that one can go ...", "it's X's turn", "a bit
+# of a tidy-up"). Written with DEV_H229 and committed before any rule changed, scored once at the end.
+HELD_H229: dict[str, dict[int, list[str]]] = {
+    "labelled_steps": {
+        1: ["Step 1 (any order):\n-> green apple on the blue plate\n-> orange on the yellow plate"],
+        2: ["Stage one, in any order: the green apple into the pink plate, the orange into the yellow "
+            "plate, the red apple into the blue plate."],
+        3: ["Steps, any order:\n-> carrot on the blue plate\n-> orange on the yellow plate\n-> green apple "
+            "on the green plate\n-> red apple on the pink plate"],
+        4: ["Stage 1 (either order): the green apple and the orange into the yellow plate.\nStage 2, only "
+            "once stage 1 is done: the carrot and the red apple into the blue plate, either order."],
+    },
+    "chatty_rambling": {
+        1: ["Hey, so if you could, take the orange and pop it in the yellow plate, and the green apple, "
+            "that one can go in the blue plate. Cheers!"],
+        2: ["Right then, a little job for you: the red apple wants to go in the blue plate, the green "
+            "apple in the pink plate and the orange in the yellow plate, and honestly whichever you fancy "
+            "first is fine."],
+        3: ["Okay so, bit of a tidy-up if you don't mind. Take the green apple and pop it in the green "
+            "plate, the red apple, that one goes in the pink plate, the carrot in the blue plate and the "
+            "orange in the yellow plate. Any order you fancy."],
+        4: ["So what I'd really like is the green apple and the orange in the yellow plate first, "
+            "whichever goes first. Once they're both in there, it's the carrot's turn and the red apple's "
+            "turn, and those go into the blue plate. Thanks a million!"],
+    },
+}
+
+
+# h229's development batch (session 30, issue 28), written with HELD_H229: labelled stages and steps (arrow
+# bullets, "Stage two, only when both of those are in:") and a chatty voice; measured before rules changed.
+DEV_H229: dict[str, dict[int, list[str]]] = {
+    "stage_steps": {
+        1: ["Step 1, any order:\n-> orange on the yellow plate\n-> green apple on the blue plate"],
+        2: ["Stage one (any order):\n-> green apple into the pink plate\n-> orange into the yellow plate\n"
+            "-> red apple into the blue plate"],
+        3: ["Step 1 (any order): the carrot on the blue plate, the orange on the yellow plate, the green "
+            "apple on the green plate and the red apple on the pink plate."],
+        4: ["Stage one: the green apple and the orange into the yellow plate, either order. Stage two, only "
+            "when both of those are in: the carrot and the red apple into the blue plate."],
+    },
+    "arrow_stages": {
+        1: ["-> green apple on the blue plate\n-> orange on the yellow plate\nAny order."],
+        2: ["Step 1 (any order):\n-> orange on the yellow plate\n-> red apple on the blue plate\n-> green "
+            "apple on the pink plate"],
+        3: ["Stage 1, any order:\n-> red apple on the pink plate\n-> green apple on the green plate\n-> "
+            "orange on the yellow plate\n-> carrot on the blue plate"],
+        4: ["Step 1 (any order):\n-> green apple on the yellow plate\n-> orange on the yellow plate\nStep 2, "
+            "after step 1 (any order):\n-> carrot on the blue plate\n-> red apple on the blue plate"],
+    },
+    "chatty_voice": {
+        1: ["Could you take the green apple and pop it in the blue plate, and the orange, that one can go "
+            "in the yellow plate? Thanks!"],
+        2: ["So here's the thing: the orange should end up in the yellow plate, the green apple in the "
+            "pink plate and the red apple in the blue plate, whichever you start with."],
+        3: ["I've got a bit of a tidy-up for you. The carrot goes in the blue plate, the orange in the "
+            "yellow plate, the green apple in the green plate and the red apple in the pink plate, in any "
+            "order you fancy."],
+        4: ["First the green apple and the orange go into the yellow plate, in either order. Once you've "
+            "got them both in there, it's the carrot and the red apple's turn, and they go into the blue "
+            "plate."],
+    },
+    "chatty_aside": {
+        1: ["Take the orange and pop it in the yellow plate, and the green apple, that one can go in the "
+            "blue plate. No rush at all."],
+        2: ["Okay so, the red apple, that one can go in the blue plate, the orange in the yellow plate and "
+            "the green apple in the pink plate. Any order is fine."],
+        3: ["Right, so, take the carrot and pop it in the blue plate, the orange in the yellow plate, the "
+            "green apple in the green plate and the red apple in the pink plate. Any order you like."],
+        4: ["Start off with the green apple and the orange, both of those into the yellow plate. Once "
+            "they're both in, it's the carrot's turn and the red apple's, and they go into the blue "
+            "plate."],
+    },
+}

@@ -108,3 +108,23 @@ def test_a_greeting_before_a_waiting_clause_changes_no_reading(opener):
     follows reads as it reads alone."""
     text = f"{opener}when you're done, put the carrot on the blue plate and the orange on the yellow plate."
     assert _reading(text) == _TWO
+
+
+def test_a_thing_taken_up_again_by_that_one_is_the_subject():
+    # h229: "the orange, that one can go in ..." is "the orange can go in ..."; a plate taken up stays
+    assert chat_read("the orange, that one can go in the yellow plate", KINDS) == (
+        "the orange can go in the yellow plate"
+    )
+    assert chat_read("the blue plate, that one can go", KINDS) == "the blue plate, that one can go"
+    assert _reading("Take the carrot and pop it in the blue plate, and the orange, that one can go in the "
+                    "yellow plate. No rush at all, whenever you get to it.") == _TWO
+
+
+def test_once_you_have_got_them_in_there_waits_for_them_to_be_there():
+    # h229: what the one asked has placed, said as the things being there
+    assert chat_read("Once you've got them both in there, put the carrot on the blue plate", KINDS) == (
+        "Once they're both there, put the carrot on the blue plate"
+    )
+    text = ("First the green apple and the orange go into the yellow plate, in either order. Once you've got "
+            "them both in there, the carrot and the red apple go into the blue plate.")
+    assert _reading(text) == _ORDERED

@@ -144,3 +144,23 @@ def test_a_test_scenarios_outcome_is_what_is_asked():
     # a context that names a thing of the world is a state, not a step: refused as before
     assert _read("Given the orange is on the yellow plate, when I say go, then the green apple is on the "
                  "blue plate.") is None
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Step 1 (any order):\n-> green apple on the yellow plate\n-> orange on the yellow plate\nStep 2, "
+        "after step 1 (any order):\n-> carrot on the blue plate\n-> red apple on the blue plate",
+        "Stage one, in either order: the green apple and the orange on the yellow plate. Stage two (any "
+        "order): the carrot and the red apple on the blue plate.",
+    ],
+)
+def test_step_labels_that_each_free_their_own_step_order_the_steps_alone(text):
+    # h229: "(any order)" on a label frees inside that step; arrows opening lines are bullets
+    assert _read(text) == YELLOW_THEN_BLUE
+
+
+def test_a_step_label_freeing_its_step_beside_one_that_does_not_stays_a_refusal():
+    # which steps are free is said of one step only: not read as "within each step"
+    assert _read("Step 1 (any order): green apple on the yellow plate. orange on the yellow plate. Step 2: "
+                 "carrot on the blue plate. red apple on the blue plate.") is None

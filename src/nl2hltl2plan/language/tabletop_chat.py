@@ -9,6 +9,11 @@ Read before any reader sees the text (`TabletopReader.as_read`), each as the pla
 - a greeting, an agent's reply, a closing thanks and a sign-off with a name that is no object or plate
   ("Hi there, ... Cheers, Ana", "Hey, when you're done, ...") are removed as in every reader, by one
   policy (`courtesy.without_greetings`);
+- "once you've got them both in there" (the one asked having placed them) is "once they're both there"
+  (h229; `tabletop_chat.txt`'s `yours`);
+- a thing taken up again by a pronoun after a comma ("the orange, that one can go in the yellow plate") is
+  the subject itself ("the orange can go in the yellow plate"; h229): the pronouns and the verbs after them
+  are `tabletop_chat.txt`'s `resumptive` and `goes`;
 - a label that names the document and opens the text ("Puzzle #1:", "Exercise 2.", "Rules of play:") is
   removed where it labels nothing else in the text (the frame lists' `record` and `title`).
 
@@ -26,6 +31,7 @@ import re
 from nl2hltl2plan.language.content_words import phrase_list_pattern
 from nl2hltl2plan.language.courtesy import without_greetings
 from nl2hltl2plan.language.handover_discourse import frame_words
+from nl2hltl2plan.language.tabletop_wording import mention_pattern
 
 _FIND = re.compile(
     rf"\b(?P<order>order|ordering|sequence)\s+(?:that\s+)?you\s+find\s+(?:it\s+)?"
@@ -38,7 +44,25 @@ _ON_IT = re.compile(
     r"(?:are|have been|'re|are both|are all)\s+)(?:on|in|onto)\s+it\b",
     re.IGNORECASE,
 )
+# "once you've got them both in there": what the one asked has placed, said as the things being there
+_YOURS = re.compile(
+    rf"\b(?P<head>when|once|after|as soon as)\s+{phrase_list_pattern('tabletop_chat.txt', 'yours')}\s+"
+    r"(?:them|those|these|the two)(?:\s+(?P<all>both|all))?\s+(?:in|on|onto)\s+(?:there|it)\b",
+    re.IGNORECASE,
+)
 
+# "the orange, that one can go ...": the thing taken up again by a pronoun
+_RESUMED = (
+    rf",\s+{phrase_list_pattern('tabletop_chat.txt', 'resumptive')}\s+"
+    rf"(?={phrase_list_pattern('tabletop_chat.txt', 'goes')}\b)"
+)
+
+
+def _resumed(text: str, kinds: dict[str, bool]) -> str:
+    things = [name for name, plate in kinds.items() if not plate]
+    if not things:
+        return text
+    return re.sub(rf"({mention_pattern(things).pattern}){_RESUMED}", r"\1 ", text, flags=re.IGNORECASE)
 
 
 def _pattern(words: frozenset[str]) -> str:
@@ -68,5 +92,7 @@ def chat_read(text: str, kinds: dict[str, bool]) -> str:
     plate name in words -> is it a plate (a sign-off's name that is a word of one stays)."""
     text = _document_label_dropped(text)
     text = _FIND.sub(lambda m: f"{m['order']} you like", text)
+    text = _YOURS.sub(lambda m: f"{m['head']} they're {m['all'] or 'all'} there", text)  # "in there": there
     text = _ON_IT.sub(r"\g<head>there", text)
+    text = _resumed(text, kinds)
     return without_greetings(text, lambda name: any(name.lower() in said.split() for said in kinds))

@@ -14,7 +14,9 @@ on the instruction's lines as `tabletop_lines.lines_joined` gives them:
   done": the sentence before);
 - an order label that any order will do ("Order: any", "Order - whatever", "Sequence: free"): "In any
   order.", which the readers read as that (and refuse beside "then", as they refuse "..., then ..., in any
-  order").
+  order");
+- step labels that each free their own step ("Step 1 (any order): ... Step 2, after step 1 (any order):
+  ..."): `tabletop_steps.label_remarks_read`.
 
 >>> kinds = {"green apple": False, "orange": False, "blue plate": True, "yellow plate": True}
 >>> fields_read("Object: green apple. Target: blue plate. Object: orange. Target: yellow plate.", kinds)
@@ -29,6 +31,7 @@ from __future__ import annotations
 import re
 
 from nl2hltl2plan.language.content_words import free_order_phrase, phrase_category, phrase_words
+from nl2hltl2plan.language.tabletop_steps import label_remarks_read
 from nl2hltl2plan.language.tabletop_wording import mention_pattern
 
 _WHAT = phrase_words("tabletop_fields.txt", "what")
@@ -42,7 +45,7 @@ def fields_read(text: str, kinds: dict[str, bool]) -> str:
     text = _records_paired(text, kinds)
     text = _AS_FOLLOWS.sub(lambda m: f"{m['verb']}{m['free'] or ''}:", text)
     text = _ORDER_LABEL.sub(_any_order_label, text)
-    return _UNTIL_THEN.sub(_then_put, _parts_ordered(text))
+    return label_remarks_read(_UNTIL_THEN.sub(_then_put, _parts_ordered(text)))
 
 
 # "Order: any" / "Order: none" as a sentence of its own (`headings` has made "Order - any" a colon): a label

@@ -15,8 +15,8 @@ Here each line break says what a writer of one line would have put there, by wha
 - any other line that names something ends a sentence: ". ".
 
 A keycap emoji opening a line ("1️⃣") is its number ("1."). A bullet that opens a line ("-", "*", "•",
-"[ ]", "[x]") only marks the item and is dropped, and so is a chat log's time stamp ("[09:14] Dana: ...",
-"09:14 Dana: ..."; not "12:00 put ...", which may say when). A line's number or label ("1.", "a)", "Step
+"->", "[ ]", "[x]") only marks the item and is dropped, and so is a chat log's time stamp ("[09:14] Dana:
+...", "09:14 Dana: ..."; not "12:00 put ...", which may say when). A line's number or label ("1.", "a)", "Step
 2:") is kept: the readers read those as before.
 
 Names spelt otherwise (`names_spelt`) are the world's names where the words can mean nothing else: an
@@ -43,7 +43,8 @@ from collections.abc import Callable
 
 from nl2hltl2plan.language.tabletop_wording import mention_pattern
 
-_BULLET = re.compile(r"^(?:[-*•·–]|\[\s*[xX✓]?\s*\])(?:\s+|$)")
+# an arrow opening a line ("-> carrot on the blue plate") is a bullet too: it points at the item
+_BULLET = re.compile(r"^(?:->|=>|[-*•·–→➡]|\[\s*[xX✓]?\s*\])(?:\s+|$)")
 # a keycap emoji's digit opening a line ("1️⃣ green apple ➡️ pink plate"): the list's number, as "1."
 _KEYCAP = re.compile(r"^(?P<digit>\d)\ufe0f?\u20e3\s*")
 # a chat log's time stamp opening a line: bracketed ("[09:14] Dana: ..."), or before the writer's name and

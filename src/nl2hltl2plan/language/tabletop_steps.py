@@ -70,6 +70,33 @@ _GROUP_DONE = re.compile(
 )
 
 
+# "Step 1 (any order):", "Stage one, in either order:", "Step 2, after step 1 (any order):": a label that
+# frees the order inside its own step (h229); read as "within each step, any order" where every step label
+# says so, and left (refused) where only some do
+_LABEL_FREED = re.compile(
+    rf"(?:^|(?<=[.;!?:\n]))(?P<label>\s*{_STEP_NOUN}\s+\w+(?:\s*,\s*(?:only\s+)?(?:after|once|following)\s+"
+    rf"{_STEP_NOUN}\s+\w+)?)\s*(?:,\s*|\(\s*)(?P<remark>(?:in\s+)?(?:any|either|whatever|whichever)\s+order)"
+    r"\s*\)?\s*(?=:)",
+    re.IGNORECASE,
+)
+_STEP_OPENS = re.compile(
+    rf"(?:^|(?<=[.;!?:\n]))\s*{_STEP_NOUN}\s+(?:\d|one|two|three|four|first|second|third|fourth|[a-d]|i{{1,3}}|iv)\b",
+    re.IGNORECASE,
+)
+
+
+def label_remarks_read(text: str) -> str:
+    """ "Step 1 (any order): A. B. Step 2 (any order): C. D." -> "Step 1: A. B. Step 2: C. D. Within each
+    step, any order." where every step label frees its own step and each remark is a free-order remark."""
+    freed = [m for m in _LABEL_FREED.finditer(text) if free_order(m["remark"].lower())[1]]
+    if not freed or len(freed) != len(_STEP_OPENS.findall(text)):
+        return text
+    for m in reversed(freed):
+        text = text[: m.start()] + m["label"] + text[m.end() :]
+    text = text.rstrip()
+    return text + ("" if text.endswith((".", "!", "?")) else ".") + " Within each step, any order."
+
+
 def _names_the_one_before(noun: str, turn: int | None, reference: re.Match[str]) -> bool:
     """Does the reference (`noun2`, `b` of `_REFERENCE`) of the label `noun` at place `turn` name the label
     just before it: the same noun, one back in turn ("Round B, only after round A", "Goal 2 (after goal
