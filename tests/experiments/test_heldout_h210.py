@@ -10,8 +10,7 @@ import pytest
 from handover_session10 import STYLES
 from handover_specs import assert_written_spec_or_refused
 from rephrasings import HELD_H210
-from test_tabletop import TASKS, signature
-from test_tabletop_voices import _refused, _signature_or_none
+from test_tabletop import TASKS, refused, signature, signature_or_none
 
 TABLETOP = [(task, text) for voice in HELD_H210.values() for task, texts in voice.items() for text in texts]
 HANDOVER = [(int(task), text) for voice in STYLES["held_h210"].values() for task, text in voice.items()]
@@ -20,7 +19,7 @@ HANDOVER = [(int(task), text) for voice in STYLES["held_h210"].values() for task
 @pytest.mark.sweep
 @pytest.mark.parametrize(("task", "text"), TABLETOP)
 def test_tabletop_held_out_line_is_read_right_or_refused(task: int, text: str) -> None:
-    assert _refused(text) or _signature_or_none(text) == signature(TASKS[task].instruction), text
+    assert refused(text) or signature_or_none(text) == signature(TASKS[task].instruction), text
 
 
 @pytest.mark.data

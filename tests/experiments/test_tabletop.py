@@ -3,11 +3,14 @@ stub server, and the verbal-style rephrasings (paper's Q3)."""
 
 from __future__ import annotations
 
+import contextlib
+import io
 import json
 
 import pytest
 from rephrasings import DEV_H61, HARDER, REPHRASINGS, STYLES
 
+from nl2hltl2plan.cli.main import main as cli_main
 from nl2hltl2plan.config.llm_settings import LLMSettings
 from nl2hltl2plan.errors import Nl2Hltl2PlanError, WorldError
 from nl2hltl2plan.language.llm.client import LLMClient
@@ -35,6 +38,13 @@ def signature_or_none(instruction: str) -> tuple[list, list] | None:
         return signature(instruction)
     except Nl2Hltl2PlanError:
         return None
+
+
+def refused(instruction: str) -> bool:
+    """`nl2hltl2plan plan INSTRUCTION --world tabletop` exits non-zero (its output discarded)."""
+    sink = io.StringIO()
+    with contextlib.redirect_stdout(sink), contextlib.redirect_stderr(sink):
+        return cli_main(["plan", instruction, "--world", "tabletop"]) != 0
 
 
 def test_layouts_are_seeded_distinct_and_validated():

@@ -7,15 +7,10 @@ the step; where "finish" has an object ("After finishing the orange, ...") it is
 
 from __future__ import annotations
 
-import contextlib
-import io
-
 import pytest
 from rephrasings import DEV_H138, DEV_H142, VALID_H138, VALID_H142
-from test_tabletop import TASKS, signature
+from test_tabletop import TASKS, refused, signature, signature_or_none
 
-from nl2hltl2plan.cli.main import main as cli_main
-from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.language.tabletop_steps import order_confirmed_dropped
 from nl2hltl2plan.language.tabletop_wording import _UNSAID_DONE
 
@@ -36,12 +31,6 @@ def test_h138_development_voices_give_the_tasks_and_order(style: str) -> None:
     _check(DEV_H138, style)
 
 
-def _refused(text: str) -> bool:
-    """`nl2hltl2plan plan TEXT --world tabletop` exits non-zero (its output discarded)."""
-    sink = io.StringIO()
-    with contextlib.redirect_stdout(sink), contextlib.redirect_stderr(sink):
-        return cli_main(["plan", text, "--world", "tabletop"]) != 0
-
 
 @pytest.mark.sweep
 @pytest.mark.parametrize("style", sorted(VALID_H138))
@@ -50,14 +39,8 @@ def test_h138_held_out_voices_are_read_right_or_refused(style: str) -> None:
     for task_id, texts in VALID_H138[style].items():
         reference = signature(TASKS[task_id].instruction)
         for text in texts:
-            assert _refused(text) or _signature_or_none(text) == reference, text
+            assert refused(text) or signature_or_none(text) == reference, text
 
-
-def _signature_or_none(text: str) -> tuple[list, list] | None:
-    try:
-        return signature(text)
-    except Nl2Hltl2PlanError:
-        return None
 
 
 def test_a_step_finished_without_a_subject_is_a_step_done() -> None:
@@ -77,7 +60,7 @@ def test_h142_development_voices_give_the_tasks_and_order(style: str) -> None:
     for task_id, texts in DEV_H142[style].items():
         reference = signature(TASKS[task_id].instruction)
         for text in texts:
-            assert _refused(text) or signature(text) == reference, text
+            assert refused(text) or signature(text) == reference, text
 
 
 @pytest.mark.sweep
@@ -86,7 +69,7 @@ def test_h142_held_out_voices_are_read_right_or_refused(style: str) -> None:
     for task_id, texts in VALID_H142[style].items():
         reference = signature(TASKS[task_id].instruction)
         for text in texts:
-            assert _refused(text) or _signature_or_none(text) == reference, text
+            assert refused(text) or signature_or_none(text) == reference, text
 
 
 def test_a_remark_that_keeps_the_steps_order_is_dropped_only_beside_steps() -> None:
@@ -108,6 +91,6 @@ def test_numbered_goals_are_no_steps() -> None:
     """A spec sheet's "Goal 1: ... Goal 2: ..." (h142's held-out VALID_H142, where it was read as two ordered
     steps on first contact) lists: never read as first / then; "Step 1: ... Step 2: ..." still orders."""
     goals = "Goal 1: green apple -> blue plate\nGoal 2: orange -> yellow plate"
-    assert _refused(goals) or signature(goals) == signature(TASKS[1].instruction)
+    assert refused(goals) or signature(goals) == signature(TASKS[1].instruction)
     steps = "Step 1: green apple -> blue plate\nStep 2: orange -> yellow plate"
     assert signature(steps) != signature(TASKS[1].instruction)
