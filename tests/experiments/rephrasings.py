@@ -2564,3 +2564,59 @@ DEV_H229: dict[str, dict[int, list[str]]] = {
             "plate."],
     },
 }
+
+
+# h233's held-out batch (session 31, issues 28 and 24): four rephrasings of each of the paper's four tabletop
+# tasks, one per voice (a fitness instructor, a nature-documentary narrator, a Southern US drawl, corporate
+# jargon), voices no batch above uses; written without reading the reader's code or trying any line,
+# committed before any scoring and scored once, unchanged (results/experiments/h233.md). The expected reading
+# of each line is its task's ground truth (suites/tabletop/tabletop_tasks.json), as listed above HELD_H210.
+HELD_H233: dict[str, dict[int, list[str]]] = {
+    "fitness_instructor": {
+        1: ["Alright, let's get moving! Green apple into the blue plate, orange into the yellow plate. "
+            "Great work, keep it up!"],
+        2: ["Okay, warm-up's over! I want the green apple in the pink plate, the orange in the yellow "
+            "plate and the red apple in the blue plate. Mix up the order however you like, just keep that "
+            "energy up!"],
+        3: ["Let's go, let's go! Carrot in the blue plate, orange in the yellow plate, green apple in the "
+            "green plate, red apple in the pink plate. Any order, you've got this!"],
+        4: ["Two sets today. Set one: the green apple and the orange go in the yellow plate. Set two, once "
+            "set one is done: the carrot and the red apple go in the blue plate, any order. Push through!"],
+    },
+    "nature_documentary": {
+        1: ["And here, in its natural habitat, the robot arm gently places the green apple in the blue "
+            "plate and the orange in the yellow plate. Truly remarkable."],
+        2: ["Watch closely. The green apple must find its way to the pink plate, the orange to the yellow "
+            "plate and the red apple to the blue plate. Which comes first? That, the arm decides for "
+            "itself."],
+        3: ["Here on the open table, four travellers await their new homes: the carrot will settle in the "
+            "blue plate, the orange in the yellow plate, the green apple in the green plate and the red "
+            "apple in the pink plate. The order in which they arrive is of no importance."],
+        4: ["First, the green apple and the orange make their way into the yellow plate, in either order. "
+            "Only once both have arrived do the carrot and the red apple set off for the blue plate, again "
+            "in either order."],
+    },
+    "southern_drawl": {
+        1: ["Hey there, would y'all mind puttin' the green apple in the blue plate and the orange in the "
+            "yellow plate? Much obliged."],
+        2: ["Well now, the green apple oughta go in the pink plate, the orange in the yellow plate and the "
+            "red apple in the blue plate. Don't matter none which one you do first, darlin'."],
+        3: ["Alright y'all, go on and put the carrot in the blue plate, the orange in the yellow plate, "
+            "the green apple in the green plate and the red apple in the pink plate. Any order's just fine."],
+        4: ["Now first thing, y'all put the green apple and the orange in the yellow plate. Once that's "
+            "done, go on ahead and put the carrot and the red apple in the blue plate, whichever order "
+            "suits ya."],
+    },
+    "corporate_jargon": {
+        1: ["Quick ask: can we action the green apple into the blue plate and the orange into the yellow "
+            "plate? Thanks in advance."],
+        2: ["Circling back on the plates: the deliverables are the green apple in the pink plate, the "
+            "orange in the yellow plate and the red apple in the blue plate. No dependencies between them, "
+            "so sequence them however works for you."],
+        3: ["Per our sync, we need the carrot in the blue plate, the orange in the yellow plate, the green "
+            "apple in the green plate and the red apple in the pink plate. Order isn't a blocker here."],
+        4: ["Phase one is the green apple and the orange into the yellow plate. Phase two kicks off once "
+            "phase one has landed: the carrot and the red apple into the blue plate. Within each phase, "
+            "sequencing is flexible."],
+    },
+}

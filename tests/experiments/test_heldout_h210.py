@@ -1,19 +1,32 @@
-"""h210 (session 30, issues 28 and 24): held-out rephrasings of the paper's tabletop (`HELD_H210` of
-rephrasings.py) and handover (`held_h210` of handover_styles_session10.json) instructions, committed before
-any scoring and scored once, unchanged (results/experiments/h210.md: tabletop 10 of 16 the same, 6 refused;
-handover 2 of 16 the same, 14 refused; none misread). No rule was written for them; each line must stay read
-right or refused, never misread (`sweep`: whole committed batches)."""
+"""Held-out rephrasings of the paper's tabletop (`HELD_H210`, `HELD_H233` of rephrasings.py) and handover
+(`held_h210`, `held_h233` of handover_styles_session10.json) instructions, each committed before any scoring
+and scored once, unchanged: h210 (session 30; results/experiments/h210.md: tabletop 10 of 16 the same, 6
+refused; handover 2 of 16 the same, 14 refused) and h233 (session 31; results/experiments/h233.md: tabletop 7
+of 16 read the same, 3 of them planned, 13 refused; handover 0 of 16, all refused). None is misread. No rule
+was written for them; each line must stay read right or refused, never misread (`sweep`: whole committed
+batches)."""
 
 from __future__ import annotations
 
 import pytest
 from handover_session10 import STYLES
 from handover_specs import assert_written_spec_or_refused
-from rephrasings import HELD_H210
+from rephrasings import HELD_H210, HELD_H233
 from test_tabletop import TASKS, refused, signature, signature_or_none
 
-TABLETOP = [(task, text) for voice in HELD_H210.values() for task, texts in voice.items() for text in texts]
-HANDOVER = [(int(task), text) for voice in STYLES["held_h210"].values() for task, text in voice.items()]
+TABLETOP = [
+    (task, text)
+    for batch in (HELD_H210, HELD_H233)
+    for voice in batch.values()
+    for task, texts in voice.items()
+    for text in texts
+]
+HANDOVER = [
+    (int(task), text)
+    for batch in ("held_h210", "held_h233")
+    for voice in STYLES[batch].values()
+    for task, text in voice.items()
+]
 
 
 @pytest.mark.sweep
