@@ -74,3 +74,27 @@ def kitchen():
 )  # fmt: skip
 def test_read_in_a_kitchen(kitchen, text, read):
     assert outcome(text, kitchen) == read
+
+
+def test_a_reference_by_treatment_is_read_by_one_reader():
+    """`references.treated_tasks` reads "the washing (jobs)" and "the looking" for `_described` and the
+    remarks (`remark_edges`) alike; words that name no one treatment are no such reference."""
+    from nl2hltl2plan.language.grammar.references import treated_tasks
+    from nl2hltl2plan.language.task_specs import BaseTaskSpec
+
+    def spec(kind: str, obj: str, tid: str) -> BaseTaskSpec:
+        return BaseTaskSpec(kind=kind, object=[obj], receptacle=["Desk"], id=tid, text="")  # type: ignore[arg-type]
+
+    specs = [spec("clean_place", "Mug", "A"), spec("examine_in_light", "Book", "B")]
+    specs.append(spec("clean_place", "Cup", "C"))
+    assert treated_tasks(["the", "washing"], specs, [0, 1, 2]) == [0, 2]
+    assert treated_tasks(["looking"], specs, [0, 1, 2]) == [1]
+    assert treated_tasks(["the", "pen"], specs, [0, 1, 2]) is None
+    assert treated_tasks(["washing", "heating"], specs, [0, 1, 2]) is None
+
+
+def test_a_subject_line_is_matched_by_the_projects_stems():
+    from nl2hltl2plan.language.handover_headers import _stem
+
+    assert {_stem(w) for w in ("moves", "moving", "move")} == {"mov"}
+    assert _stem("swapping") == _stem("swap") and _stem("blocks") == _stem("block")
