@@ -217,6 +217,10 @@ def test_user_style_set_converts(name, least):
 # desk's lamp (the drafts' class): every word names something a task uses, so check 1, which counts per
 # mention since h172, has nothing to name
 KNOWN_WRONG: set[str] = {
+    # h239's held-out half (scored once, read so on main too): "both knives go in a drawer" after a treated
+    # list is read as a place_two of its own beside three treatments with no place (places-after class)
+    "Wash a mug, a butter knife and a knife. The mug goes on the coffee machine, and both knives go in a "
+    "drawer.",
     # h166's paper-style dev: its truth orders "do the same with Y" after its task, which no word says
     "Put a remote in a box and set the box on the armchair, and move two sets of keys to the sofa. Then grab "
     "the watch on the table, turn on the floor lamp, and do the same with the remote control.",

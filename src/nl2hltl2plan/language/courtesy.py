@@ -234,7 +234,7 @@ def thanked_for(text: str) -> list[str]:
 def courtesy_unread(text: str, names_a_thing: Callable[[str], bool]) -> list[Unread]:
     """The courtesy no reading can tell the meaning of, named unread: a sign-off's name that is also a thing
     (`greeted` keeps it) and thanks for an action (`thanked_for`)."""
-    signed = greeted(text, names_a_thing).signed_thing
+    signed = _signed_thing(text, names_a_thing)  # the sign-off `greeted` kept: no second pass of greeted
     name_why = "a sign-off's name that is also a thing: say the thing in a request of its own"
     thanks_why = "thanks for what may be done already: say what is still to do"
     thanked = [Unread(words, "action", thanks_why) for words in thanked_for(text)]
@@ -262,8 +262,7 @@ def greeted(text: str, names_a_thing: Callable[[str], bool]) -> Greeted:
     >>> greeted("Put the egg in the fridge. Cheers, Ana", lambda name: name.lower() == "mug")
     Greeted(text='Put the egg in the fridge.', signed_thing=None)
     """
-    kept = _THING_SIGN_OFF.search(text)
-    signed = kept[0].strip() if kept and names_a_thing(kept["name"]) else None
+    signed = _signed_thing(text, names_a_thing)
     opened = None
     while opened != text:  # "Hi! Sure thing! ..."
         opened = text
@@ -273,6 +272,13 @@ def greeted(text: str, names_a_thing: Callable[[str], bool]) -> Greeted:
     if sign_off and not names_a_thing(sign_off["name"]):
         text = text[: sign_off.start()]
     return Greeted(_THANKS.sub("", text).strip(), signed)
+
+
+def _signed_thing(text: str, names_a_thing: Callable[[str], bool]) -> str | None:
+    """A closing thanks or sign-off before a name that is also a thing ("Cheers, Mug"), which `greeted`
+    keeps; None where there is none."""
+    kept = _THING_SIGN_OFF.search(text)
+    return kept[0].strip() if kept and names_a_thing(kept["name"]) else None
 
 
 def without_greetings(text: str, names_a_thing: Callable[[str], bool]) -> str:

@@ -28,7 +28,7 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
-from nl2hltl2plan.language.content_words import word_categories
+from nl2hltl2plan.language.content_words import stems, word_categories
 from nl2hltl2plan.language.handover_discourse import MEANING, frame_words
 
 
@@ -55,12 +55,9 @@ def _tokens(text: str) -> list[str]:
 
 
 def _stem(word: str) -> str:
-    """'moves', 'moving', 'move' -> 'mov'; 'swapping' -> 'swap': enough to match a title's words."""
-    for end in ("ing", "ment", "es", "ed", "s", "e"):
-        if word.endswith(end) and len(word) > len(end) + 2:
-            word = word[: -len(end)]
-            break
-    return word[:-1] if len(word) > 3 and word[-1] == word[-2] else word
+    """'moves', 'moving', 'move' -> 'mov'; 'swapping' -> 'swap': enough to match a title's words (the
+    shortest of the project's `stems`, less a final 'e')."""
+    return min(stems(word), key=lambda s: (len(s), s)).removesuffix("e")
 
 
 def _restated(title: str, body: str) -> bool:

@@ -13,6 +13,7 @@ from collections.abc import Callable
 from pathlib import Path
 
 from nl2hltl2plan.language.content_words import DETERMINERS, Unread, categories, stems, verb_places
+from nl2hltl2plan.language.courtesy import courtesy_pattern
 from nl2hltl2plan.language.grounding import RECEPTACLES, Mention, alfred_lookup, find_mentions
 from nl2hltl2plan.language.parse_usage import ParseUsage
 from nl2hltl2plan.language.statements import says_where
@@ -327,8 +328,9 @@ _POSTURE_IN = re.compile(
     r"(?=(?:the|a|an|its|their|your|my)\s)",
     re.I,
 )
-_KEPT_AS = re.compile(
-    r"\b(?:leave|leaving|left|keep|keeping|have|let|wants?|like|love|needs?|prefer|see|be)\b[^,.;!?]*$", re.I
+_KEPT_AS = re.compile(  # the wish verbs are the wish readers' (`courtesy.txt`'s `wish_verb`), a person's too
+    rf"\b(?:leave|leaving|left|keep|keeping|have|let|see|be|{courtesy_pattern('wish_verb')}s?)\b[^,.;!?]*$",
+    re.I,
 )
 
 

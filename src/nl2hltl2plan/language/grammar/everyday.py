@@ -305,14 +305,16 @@ def everyday(text: str) -> str:
 
 # "put the apple in the fridge and the tomato too", "..., also the ladle", "the pencil as well": a second
 # object for the same place (read as "put the apple and the tomato in the fridge"); the second phrase names
-# no place of its own
-_WORD = r"(?!(?:in|into|on|onto|to|inside|and|also|plus|too|as|then)\b)[a-z]+"
-_NP = rf"(?:the|a|an|my|your|that|this)\s+{_WORD}(?:\s+{_WORD}){{0,2}}"
+# no place of its own; either may say where it is now ("move the two books from the bed to the dresser, and
+# the keys from the nightstand as well": the keys go to the dresser too, h239)
+_WORD = r"(?!(?:in|into|on|onto|to|inside|and|also|plus|too|as|then|from)\b)[a-z]+"
+_NP = rf"(?:the|a|an|my|your|that|this|two|three)\s+{_WORD}(?:\s+{_WORD}){{0,2}}"
+_FROM = rf"(?:\s+from\s+(?:the|a|an|my|your)\s+{_WORD}(?:\s+{_WORD})?)?"
 _ALSO_THERE = re.compile(
-    rf"(?P<head>\b(?:put|place|move|set|stick|pop|drop|throw|toss|leave)\s+{_NP})\s+"
+    rf"(?P<head>\b(?:put|place|move|set|stick|pop|drop|throw|toss|leave)\s+{_NP}{_FROM})\s+"
     rf"(?P<dest>(?:in|into|on|onto|inside|to)\s+{_NP})\s*,?\s+"
-    rf"(?:(?:and\s+)?(?:also|plus)\s+(?P<y>{_NP})(?:\s*,?\s+(?:too|as\s+well|also))?"
-    rf"|(?:and\s+)?(?P<y2>{_NP})\s*,?\s+(?:too|as\s+well|also))"
+    rf"(?:(?:and\s+)?(?:also|plus)\s+(?P<y>{_NP}{_FROM})(?:\s*,?\s+(?:too|as\s+well|also))?"
+    rf"|(?:and\s+)?(?P<y2>{_NP}{_FROM})\s*,?\s+(?:too|as\s+well|also))"
     r"\s*(?=[.;!?]|$)",
     re.I,
 )

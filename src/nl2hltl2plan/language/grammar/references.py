@@ -159,6 +159,17 @@ _KIND_SAID: dict[Kind, str] = {
     "cool_place": "chill chilling chilled cool cooling cooled fridge",
 }
 KIND_WORDS: dict[str, Kind] = {w: kind for kind, said in _KIND_SAID.items() for w in said.split()}
+_LOOKING = frozenset({"looking", "examining", "reading", "inspecting"})  # "the looking last": no other word
+
+
+def treated_tasks(words: list[str], specs: list[BaseTaskSpec], candidates: list[int]) -> list[int] | None:
+    """The tasks a reference names by what is done to their things: "the washing (jobs)", "the heating
+    ones", "the looking": every candidate of that one kind, in the order said. None: its words name no one
+    treatment (the one reader of `_described` here and of `remark_edges`' remarks)."""
+    kinds = {KIND_WORDS[w] for w in words if w in KIND_WORDS}
+    if set(words) - {"the"} and set(words) - {"the"} <= _LOOKING:
+        kinds = {"examine_in_light"}
+    return [i for i in candidates if specs[i].kind in kinds] if len(kinds) == 1 else None
 _TASK_WORDS = frozenset({"one", "ones", "job", "jobs", "task", "tasks", "chore", "chores", "part", "parts"})
 _PLURAL_TASK_WORDS = frozenset({"ones", "jobs", "tasks", "chores", "parts"})
 _COUNTS = {"two": 2, "three": 3}
@@ -182,9 +193,8 @@ def _described(words: list[str], specs: list[BaseTaskSpec], candidates: list[int
     words = _DONE_AFTER.sub("", " ".join(words)).split()  # "both pen jobs are done"
     if not words or words[-1] not in _TASK_WORDS:
         return None
-    kinds = {KIND_WORDS[w] for w in words[:-1] if w in KIND_WORDS}
-    if len(kinds) == 1:
-        return [i for i in candidates if specs[i].kind in kinds]
+    if (treated := treated_tasks(words[:-1], specs, candidates)) is not None:
+        return treated
     if words[0] not in {"both", "all"}:
         return None
     # "both pen jobs": every task on that thing, as its object or its container ("both bowl jobs": two bowls

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from nl2hltl2plan.language.grammar.draft_tasks import TaskBuilder, Tasks
 from nl2hltl2plan.language.grammar.phrases import parse_np
-from nl2hltl2plan.language.grammar.references import KIND_WORDS, NOT_CERTAIN, former_or_latter, ref_targets
+from nl2hltl2plan.language.grammar.references import NOT_CERTAIN, former_or_latter, ref_targets, treated_tasks
 from nl2hltl2plan.language.grammar.sentences import RelationSentence
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
 
@@ -19,7 +19,6 @@ _SKIP = frozenset({"the", "a", "an", "please", "do", "all"})
 _TASK_NOUNS = frozenset({"one", "job", "task", "thing", "bit", "stuff", "part"})
 _PLURAL_NOUNS = frozenset({"ones", "jobs", "tasks", "things", "bits", "parts"})
 _THAT = frozenset({"that", "this", "it"})
-_LOOKING = frozenset({"looking", "examining", "reading", "inspecting"})
 _COUNTS = {"two": 2, "three": 3, "2": 2, "3": 3}
 
 
@@ -93,11 +92,7 @@ def _fitting(ref: str, tasks: Tasks, sentence: int) -> tuple[list[int], bool] | 
         return ([t for u in tasks.units if said and u.sentence == said[-1] for t in u.tasks], False)
     specs = tasks.specs
     if len(words) == 1 and words[0].endswith("ing"):  # "the washing last"
-        if words[0] in _LOOKING:
-            hit = [i for i, s in enumerate(specs) if s.kind == "examine_in_light"]
-        else:
-            hit = [i for i, s in enumerate(specs) if s.kind == KIND_WORDS.get(words[0])]
-        return hit, many
+        return treated_tasks(words, specs, list(range(len(specs)))) or [], many
     np = parse_np(" ".join(words))
     if np.entry is None:
         return None

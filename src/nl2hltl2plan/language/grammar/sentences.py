@@ -7,7 +7,7 @@ from dataclasses import dataclass, field
 from functools import lru_cache
 
 from nl2hltl2plan.language.content_words import phrase_list_pattern
-from nl2hltl2plan.language.courtesy import without_call
+from nl2hltl2plan.language.courtesy import courtesy_pattern, without_call
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.everyday import everyday
 from nl2hltl2plan.language.grammar.lamp_phrases import lamp_phrasing
@@ -509,7 +509,9 @@ def normalize(text: str) -> str:
 # in the plate"; "start with the apple in the plate" -> "first put the apple in the plate".
 _WISH = re.compile(  # also a cleft: "what I'd love is for you to put ..." (h220)
     r"\b(?:what\s+(?:I|we)(?:'d|\s+would)\s+(?:like|love)\s+is\s+for\s+you\s+to\s+|"
-    r"(?:I|we)(?:'d|\s+would|\s+will)?\s+(?:like|love|want|need|prefer)\s+(?:(?:for\s+)?you\s+to\s+)?)",
+    r"(?:I|we)(?:'d|\s+would|\s+will)?\s+"
+    + courtesy_pattern("wish_verb")  # the wish verbs (`courtesy.txt`)
+    + r"\s+(?:(?:for\s+)?you\s+to\s+)?)",
     re.I,
 )
 _TO_GO = re.compile(

@@ -16,7 +16,14 @@ is one of the grammar's treatments (`word_tables`: clean, heat, cool), so anythi
 - a name and its place after a treatment and a placement of a thing: "rinse out a bowl and leave it on the
   counter and a green glass in the cupboard" is "..., and rinse a green glass and leave it in the cupboard";
 - a thing named before its steps: "Next, a slice of potato: heat it up and drop it in the sink" is "Next,
-  heat up a slice of potato and drop it in the sink".
+  heat up a slice of potato and drop it in the sink";
+- one verb over a list, each thing's place after it: "Heat an egg and a plate. The egg goes on the side
+  table, the plate on the counter." and "Wash a knife and a mug, one at a time, then put the knife in a
+  drawer and the mug on the coffee machine" are "heat an egg and put it on the side table, heat a plate and
+  put it on the counter" (no order: a list says none); every thing of the list takes one place, and each
+  place names one thing of it by its words ("the slice" of "a potato slice"), else the text stays; "one at
+  a time" after such a list ("..., one at a time, and put each of them on the counter") says nothing more;
+  "microwave a slice, then drop the slice in the sink" drops that slice ("then drop it").
 """
 
 from __future__ import annotations
@@ -94,12 +101,36 @@ def _patterns() -> tuple[re.Pattern[str], ...]:
         rf"(?P<place>(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)(?=\s*(?:[.;!?]|$))",
         re.I,
     )
-    return heading, outcome, item, named_first, shared
+    placed_after = re.compile(
+        rf"(?P<lead>(?:^|(?<=[.;!?])\s+)(?:(?:then|next|now|also|first)\s*,?\s+)?)"
+        rf"(?P<verb>{verbs}|put|move){_PARTICLE}(?:\s+away)?\s+(?P<items>{_ITEM_NP}(?:\s*,\s*{_ITEM_NP})*\s*,?\s+and\s+"
+        rf"{_ITEM_NP})(?:\s+away)?{_APPLIANCE}(?:\s*,?\s*one\s+at\s+a\s+time)?\s*"
+        r"(?:[.:;]|,?\s+(?:and\s+)?then\b|,)\s*(?:then\s*,?\s+)?(?:(?:put|place|set|leave)\s+)?"
+        r"(?P<places>[^.;!?]+)",
+        re.I,
+    )
+    # "Heat a tomato, an egg and a potato in the microwave, one at a time, and put each of them on the
+    # counter": each thing on its own says no order and no other task (h239)
+    one_at_a_time = re.compile(
+        rf"(?P<list>\b(?:{verbs}){_PARTICLE}\s+{_ITEM_NP}(?:\s*,\s*{_ITEM_NP})*\s*,?\s+and\s+{_ITEM_NP}"
+        rf"{_APPLIANCE})\s*,\s*one\s+at\s+a\s+time\s*(?=,)",
+        re.I,
+    )
+    # "Cut a potato and microwave a slice, then drop the slice in the sink": the slice just treated is "it"
+    slice_again = re.compile(
+        rf"(?P<head>\b(?:{verbs}){_PARTICLE}\s+(?:a|one)\s+slice{_APPLIANCE}\s*,?\s+(?:and\s+)?(?:then\s+)?"
+        r"(?:put|drop|place|set|leave|throw|toss|move)\s+)the\s+slice\b",
+        re.I,
+    )
+    return heading, outcome, item, named_first, shared, placed_after, one_at_a_time, slice_again
 
 
 def treated_lists(text: str) -> str:
     """The text with the treatments above rewritten (see the module docstring)."""
-    heading, outcome, item, named_first, shared = _patterns()
+    heading, outcome, item, named_first, shared, placed_after, one_at_a_time, slice_again = _patterns()
+    text = slice_again.sub(r"\g<head>it", text)
+    text = placed_after.sub(_placed_after, text)
+    text = one_at_a_time.sub(lambda m: m["list"] if _names_things(m["list"], most=9) else m[0], text)
     text = shared.sub(_steps_shared, text)
     text = heading.sub(_distributed, text)
     if re.search(r"\b(?:make\s+sure|ensure)\b", text, re.I) and (said := outcome.sub(_outcome, text)) != text:
@@ -181,3 +212,50 @@ def _named_first(m: re.Match[str]) -> str:
         return m[0]
     verb = m["verb"] if m["lead"].strip() else _capital(m["verb"].lower())
     return f"{m['lead']}{verb}{m['particle']} {m['np']}"
+
+
+_PLACE_ITEM = re.compile(
+    r"^(?P<np>(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+){0,3}?)\s+(?:(?:goes|go|belongs?)\s+(?:back\s+)?)?"
+    r"(?P<prep>in|into|on|onto|inside)\s+(?P<place>(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+){0,3})$",
+    re.I,
+)
+_PLACE_GAP = re.compile(r"\s*,\s*(?:and\s+)?|\s+and\s+(?=(?:the|a|an)\s)", re.I)
+_NOT_NAMING = frozenset({"the", "a", "an", "of", "piece", "slice"})
+
+
+def _placed_after(m: re.Match[str]) -> str:
+    """ "Heat an egg and a plate. The egg goes on the table, the plate on the counter" -> "heat an egg and
+    put it on the table, heat a plate and put it on the counter"; the text as it was unless each thing has
+    exactly one place and each place one thing."""
+    items = [i.strip() for i in _ITEM_GAP.sub("\0", m["items"]).split("\0")]
+    if len(items) < 2 or not all(_names_things(i) for i in items):
+        return m[0]
+    where: dict[int, str] = {}
+    waiting: list[str] = []  # "the plate and the pan go on the counter": both take the place
+    for part in _PLACE_GAP.sub("\0", _TOO.sub("", m["places"].strip())).split("\0"):
+        said = _PLACE_ITEM.match(part.strip())
+        if said is None and re.fullmatch(r"(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?", part.strip(), re.I):
+            waiting.append(part.strip())
+            continue
+        if said is None or not _names_things(said["place"]):
+            return m[0]
+        for np in [*waiting, said["np"]]:
+            hit = [k for k, i in enumerate(items) if _same_thing(np, i)]
+            if len(hit) != 1 or hit[0] in where:
+                return m[0]
+            where[hit[0]] = f"{said['prep'].lower()} {said['place']}"
+        waiting = []
+    if waiting or len(where) != len(items):
+        return m[0]
+    verb = m["verb"].lower()
+    steps = [f"put {i} {where[k]}" if verb in {"put", "move"} else f"{verb} {i} and put it {where[k]}"
+             for k, i in enumerate(items)]
+    return m["lead"] + _capital(", ".join(steps))  # as `_distributed` writes a list: no order
+
+
+def _same_thing(np: str, item: str) -> bool:
+    """Does a place's thing name that item of the list by its words ("the slice" of "a potato slice", "the
+    bread" of "a slice of bread")?"""
+    said = set(np.lower().split()) - _NOT_NAMING
+    named = set(item.lower().split())
+    return (said <= named and bool(said)) or (np.lower().split()[-1] == "slice" and "slice" in named)

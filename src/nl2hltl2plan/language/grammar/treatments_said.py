@@ -55,12 +55,13 @@ def _base(word: str) -> str | None:
 
 
 _LEAD = r"(?P<lead>^|(?<=[,.;:!?])\s*|\b(?:and|then|please|pls|so)\s+)"
-_THING = r"(?P<thing>(?:the|that|this|my|your|a|an)\s+[a-z]+(?:\s+[a-z]+){0,2}?)"
+# (a note's "one bar of soap to be rinsed ...", h239)
+_THING = r"(?P<thing>(?:the|that|this|my|your|a|an|one)\s+[a-z]+(?:\s+[a-z]+){0,2}?)"
 _PARTICLE = r"(?:\s+(?:up|down|off|out))?"
 
 
 @lru_cache(maxsize=1)
-def _patterns() -> tuple[re.Pattern[str], re.Pattern[str], re.Pattern[str]]:
+def _patterns() -> tuple[re.Pattern[str], ...]:
     verbs, past = _forms(VERBS), _forms(VERB_PAST)
     need = re.compile(
         rf"{_LEAD}{_THING}\s+(?:(?:needs?|wants?|could\s+(?:use|do\s+with))\s+"
@@ -78,7 +79,17 @@ def _patterns() -> tuple[re.Pattern[str], re.Pattern[str], re.Pattern[str]]:
         rf"\s+to\s+(?:be|get)\s+(?P<part>{past}){_PARTICLE}(?![\w'])",
         re.I,
     )
-    return need, causative, purpose
+    # two things with one need, the place said of both: "the soap and a cloth both need washing, and both
+    # go back on the rack", "the cup and the plate need to be washed and put in the fridge" (h239)
+    thing = r"(?:the|that|this|my|your|a|an|one)\s+[a-z]+(?:\s+[a-z]+){0,3}?"
+    pair = re.compile(
+        rf"{_LEAD}(?P<a>{thing})\s+and\s+(?P<b>{thing})\s+(?:both\s+)?(?:need|want)\s+"
+        rf"(?:to\s+(?:be|get)\s+(?P<part>{past})|(?P<ger>{verbs})){_PARTICLE}(?![\w'])"
+        rf"(?P<then>(?:\s*,?\s+and\s+(?:(?:both|they)\s+)?(?:go|belong)\s+|\s+and\s+{_PLACED}\s+(?:(?:it|them)\s+)?)"
+        rf"(?:(?:back|away|down)\s+)?(?=(?:in|into|on|onto|inside)\s))?",
+        re.I,
+    )
+    return need, causative, purpose, pair
 
 
 # a duty said in the passive ("has to be washed", "should be chilled", a note's "to be rinsed", h223), and the
@@ -160,7 +171,7 @@ _FIRST_THEN = re.compile(
 )
 # (a slice named by its whole: "a slice of lettuce", "a tomato slice" is one thing, h223)
 _DETERMINER = re.compile(
-    r"\s*(?:(?:the|that|this|my|your|a|an)\s+)?(?:(?:slice|piece)s?\s+of\s+(?:the\s+)?)?", re.I
+    r"\s*(?:(?:the|that|this|my|your|a|an|one)\s+)?(?:(?:slice|piece)s?\s+of\s+(?:the\s+)?)?", re.I
 )
 _SLICE_AFTER = re.compile(r"\s*(?:slices?)?\s*", re.I)
 # a thing said in a request ("the mug", "watch on the table"), not a bare label ("Target: yellow plate.")
@@ -171,7 +182,7 @@ _PLACE_BEFORE = re.compile(r"\b(?:in|into|on|onto|inside|on\s+top\s+of)\s+(?:the
 
 def treatments_said(text: str) -> str:
     """The text with the needs, causatives and terse orders above rewritten (see the module docstring)."""
-    need, causative, purpose = _patterns()
+    need, causative, purpose, pair = _patterns()
     text = _TEXTED_ID.sub("I'd ", _minded(text))
     text = treated_lists(text)  # lists, outcomes, things said first (treated_lists)
     text = _MAKE_STATE.sub(_made, text)
@@ -179,6 +190,7 @@ def treatments_said(text: str) -> str:
     text = _PUT_BARE.sub(r"\g<lead>\g<verb> it ", text)
     text = _PRONOUN_GOAL.sub(_put_pronoun, text)
     text = _AGENT.sub(lambda m: f"{m['lead']}{m['verb']}" if m["verb"].lower() in VERBS else m[0], text)
+    text = pair.sub(_both_treated, text)
     text = need.sub(_imperative, text)
     text = causative.sub(_imperative, text)
     text = purpose.sub(_treated_next, text)
@@ -218,6 +230,16 @@ def _imperative(m: re.Match[str]) -> str:
     return f"{m['lead']}{verb} {thing}{placed}"
 
 
+def _both_treated(m: re.Match[str]) -> str:
+    """ "the soap and a cloth both need washing, and both go back on the" -> "wash the soap and a cloth and
+    put them on the"; the text as it was unless each ends on the one name the lexicon knows in it."""
+    verb = _base(m["part"] or m["ger"])
+    if verb is None or not (_ends_on_name(m["a"]) and _ends_on_name(m["b"])):
+        return m[0]
+    a, b = (re.sub(r"^(?:that|this|my|your)\b", "the", t, flags=re.I) for t in (m["a"], m["b"]))
+    return f"{m['lead']}{verb} {a} and {b}{' and put them ' if m['then'] else ''}"
+
+
 def _treated_next(m: re.Match[str]) -> str:
     """ "slice an apple to be cooked" -> "slice an apple and cook it"; "put a mug in the sink to be washed" ->
     "put a mug in the sink and wash it" (a place other than the treatment's appliance: left)."""
@@ -231,6 +253,12 @@ def _treated_next(m: re.Match[str]) -> str:
         if not said or APPLIANCE_OF.get(VERBS[verb][0]) not in said[0].entry.types:  # washed in the sink
             return m[0]
     return f"{m['head']} and {verb} it"
+
+
+def _ends_on_name(phrase: str) -> bool:
+    """Does the phrase end on the one name the lexicon knows in it ("the pink bar of soap")?"""
+    found = find_mentions(phrase)
+    return len(found) == 1 and _SLICE_AFTER.fullmatch(phrase[found[0].char_end :]) is not None
 
 
 def _names_thing(phrase: str) -> bool:
