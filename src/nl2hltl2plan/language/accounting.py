@@ -89,8 +89,8 @@ from nl2hltl2plan.language.unsupported_steps import (
     started,
     treated_after_placing,
     under_a_place,
-    vague_words,
 )
+from nl2hltl2plan.language.vague_words import vague_words
 
 NAVIGATION = frozenset({"go", "walk", "head", "come", "run", "move", "turn"})  # "move to the sink", no object
 
