@@ -247,7 +247,7 @@ def _read_clause(
     things, where = _objects_and_places(inside, words, grounder)
     if things is None:
         return None
-    if verb == "put" and not where and "there" in words[j + 1 : cut]:  # "don't put the knife there"
+    if verb == "put" and not where and _there_or_in_it(words[j + 1 : cut]):  # "don't put the fork in it"
         where = _previous_destination(text, toks, i, mentions, grounder)
         if not where:
             return None
@@ -261,6 +261,12 @@ def _read_clause(
         spans = [text[toks[_determined(words, m.start)][1] : m.char_end] for m in named]
         neg.thing, neg.several = " and ".join(spans), len(named) > 1 or named[0].plural
     return neg
+
+
+def _there_or_in_it(words: list[str]) -> bool:
+    """Does a negated placing name its place by "there" or by "in/on it" (the place said before: "put the egg
+    in the fridge, don't put the apple in it" forbids the fridge only, never every placing of the apple)?"""
+    return "there" in words or any(a in PREPS and b == "it" for a, b in itertools.pairwise(words))
 
 
 def _determined(words: list[str], k: int) -> int:
