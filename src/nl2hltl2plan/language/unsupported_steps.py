@@ -50,6 +50,35 @@ _TIMES = re.compile(
 )
 
 
+# "then take the pen out", "get the spoon back out of the mug": a removal from a container, which no base
+# task does; "take the butter knife out of the sink, put it in ..." says where it comes from
+_TAKEN_OUT = re.compile(
+    r"\b(?:take|takes|took|taking|get|gets|getting|pull|pulls|pulling|lift|lifts|fish|grab)"
+    r"(?P<thing>(?:\s+[a-z']+){0,4}?)\s+(?:back\s+)?out\b(?!side)"
+    r"(?:\s+of(?:\s+[a-z']+){1,3}?(?=\s*(?:[,.;!?]|$|and\b|then\b)))?"
+)
+_PLACED_NEXT = re.compile(  # "... out of the drawer and place them on the table"
+    r"[^.;!?]*?(?:\band|\bthen|,)\s+(?:\w+\s+){0,2}?(?:put|place|set|drop|move|carry|bring|toss|throw)\s+(?:it|them)\b"
+)
+_REMOVAL = "a removal from a container, which no base task does: say where it goes instead (put it in/on ...)"
+
+
+def taken_out(instruction: str, mentions: list[Mention], parse: ParseUsage) -> list[Unread]:
+    """ "Take the pen out (of the mug)": where a task acts on the pen and the pen is first named here, the
+    words say where it comes from; a thing named before ("put the pen in the box, then take the pen out",
+    "take it out") or that no task acts on is taken out and left so, which no task of the world does."""
+    out, lowered = [], instruction.lower()
+    used = {o for t in parse.tasks for o in (*t.object, *(t.container or ()))}
+    for m in _TAKEN_OUT.finditer(lowered):
+        start, end = m.span("thing") if m["thing"] else (m.end(), m.end() + 12)  # "take out the apple"
+        named = [x for x in mentions if start <= x.char_start < end]
+        types = {t for x in named[:1] for t in x.entry.types}
+        said_before = any(set(x.entry.types) & types for x in mentions if x.char_start < m.start())
+        if not (types & used and (not said_before or _PLACED_NEXT.match(lowered, m.end()))):
+            out.append(Unread(m.group(0).strip(), "action", _REMOVAL))
+    return out
+
+
 def returns_and_repeats(instruction: str, mentions: list[Mention], parse: ParseUsage) -> list[Unread]:
     """ "Back" with no place after it names one only where the sentence said where the thing came from
     and a task puts it there ("wash the cloth from the cabinet, put it back"); "move the plate from the
@@ -61,6 +90,7 @@ def returns_and_repeats(instruction: str, mentions: list[Mention], parse: ParseU
         if not _returned(lowered, sentence_start(instruction, m.start()), m.start(), mentions, parse)
     ]
     out += [Unread(m.group(0), "negation", NO_CONSTRAINT) for m in _LEFT_OUT.finditer(lowered)]
+    out += taken_out(instruction, mentions, parse)
     return out + [
         Unread(m.group(0), "count", "no base task is done more than once: say each time as its own task")
         for m in _TIMES.finditer(lowered)
