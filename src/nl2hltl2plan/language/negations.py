@@ -497,9 +497,13 @@ def until_guard(instruction: str, tok: tuple[str, int, int], ordered: bool) -> b
 # went, at exit 0 (h205)
 _NP = r"(?:the|a|an|both|all\s+the)\s+[a-z]+(?:\s+[a-z]+){0,2}?"
 _UNMOVED = r"(?:put|there|(?:right\s+)?where\s+(?:it\s+is|they\s+are)|as\s+(?:it\s+is|they\s+are|is)|alone)"
+# "the keys stay on the coffee table", "the pot remains on the stove": where it is now, kept (h236); a placing
+# said so ("put the keys on the table") is a task, and "leave it on the table" stays one
+_WHERE_IT_STAYS = r"(?:on|in|inside|at)\s+(?:the|its|their)\s+[a-z]+(?:\s+[a-z]+)?"
 _KEPT_AS_IT_IS = re.compile(
-    rf"(?:^|(?<=[.;!?])\s+|(?<=,)\s+)(?:(?P<x>{_NP})\s+(?:(?:can|should|must|will)\s+)?(?:stays?|remains?)"
-    rf"(?:\s+{_UNMOVED})?|(?:just\s+)?leave\s+(?P<y>{_NP})\s+{_UNMOVED})(?=\s*(?:[.;!?,]|$))",
+    rf"(?:^|(?<=[.;!?])\s+|(?<=,)\s+|(?<=\band\s)|(?<=\bbut\s))"
+    rf"(?:(?P<x>{_NP})\s+(?:(?:can|should|must|will)\s+)?(?:stays?|remains?)"
+    rf"(?:\s+{_UNMOVED}|\s+{_WHERE_IT_STAYS})?|(?:just\s+)?leave\s+(?P<y>{_NP})\s+{_UNMOVED})(?=\s*(?:[.;!?,]|$))",
     re.I,
 )
 
