@@ -53,6 +53,28 @@ def treatment_of_it(text: str) -> bool:
     return bool(clauses) and treats_it(parse_frame(clauses[0][0]))
 
 
+def ends_treating_it(body: str) -> bool:
+    """Does a sentence of several clauses close with a treatment of "it" ("put the apple in the fridge, and
+    the mug too, but wash it first")? Its closing "first" says the treatment comes before that task's own
+    placing (the task's kind), not that the task comes before the others (h225's leftover)."""
+    clauses = split_clauses(body)
+    return len(clauses) > 1 and treats_it(parse_frame(_after_comma(clauses[-1][0])))
+
+
+def closes_treating_it(clause: str) -> bool:
+    """Does the clause close with a treatment of "it" after a comma ("put the mug in the fridge, but wash
+    it")?"""
+    return "," in clause and treats_it(parse_frame(_after_comma(clause)))
+
+
+def _after_comma(clause: str) -> str:
+    return re.split(r",\s*(?:but\s+)?", clause)[-1]
+
+
+# the closing order word of such a treatment: before the placing, which its task's kind says already
+TREATMENT_FIRST = re.compile(r"\s+(?:first|beforehand|before(?:\s+that)?)\b(?=\s*(?:[.;!?]|$))", re.I)
+
+
 def _as_gerund(verb: str, rest: str) -> str | None:
     """ "rinsed" + " it off" -> "rinsing": the gerund of a treatment verb (any form) when the words from it
     on open a treatment of "it"; else None."""
