@@ -396,9 +396,9 @@ def put_away_unread(text: str) -> list[Unread]:
     return out
 
 
-# "the bowl (that) the mug is in", "the shelf the vase is next to": a relative clause that leaves its preposition
-# at its end (nothing named after it) says where the thing before it is; its subject is a landmark, never a
-# destination or a second task (h227's leftover, h236)
+# "the bowl (that) the mug is in", "the shelf the vase is next to": a relative clause that leaves its
+# preposition at its end (nothing named after it) says where the thing before it is; its subject is a
+# landmark, never a destination or a second task (h227's leftover, h236)
 _STRANDED_WHERE = re.compile(
     r"\s+(?:is|are|'s|sits|was)\s+(?:(?:sitting|lying|standing|now|already)\s+)?"
     r"(?:next\s+to|close\s+to|in|on|by|beside|near|inside|at|under|behind)"
