@@ -154,10 +154,12 @@ def _inside_one_task(words: list[str], i: int, parse: ParseUsage) -> bool:
 
 
 def _treated_first(words: list[str], i: int, parse: ParseUsage) -> bool:
-    """Is the order word a treatment's own, closing "wash it first" / "heat it up before (that)" where a task
-    treats its thing so: before that task's placing, which the task's kind says (h236)?"""
-    at = i - 1 - (i >= 3 and words[i - 1] in ("up", "off", "down"))
+    """Is the order word a treatment's own, "wash it first" / "heat it up before (that)" / "only after rinsing
+    it", where a task treats its thing so: before that task's placing, which the task's kind says (h236)?"""
     kinds = {f"verb_{t.kind}" for t in parse.tasks}
+    if words[i] == "after" and i >= 1 and words[i - 1] == "only" and i + 2 < len(words):
+        return bool(categories(words[i + 1]) & kinds) and words[i + 2] in _PRONOUNS
+    at = i - 1 - (i >= 3 and words[i - 1] in ("up", "off", "down"))
     return (
         words[i] in ("first", "before", "beforehand")
         and at >= 1

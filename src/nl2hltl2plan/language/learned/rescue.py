@@ -19,7 +19,6 @@ from functools import cache
 from nl2hltl2plan.language.content_words import free_order_phrase
 from nl2hltl2plan.language.grammar.drafts import states_where
 from nl2hltl2plan.language.grammar.sentences import normalize
-from nl2hltl2plan.language.grammar.subordinate import TREATMENT_FIRST, closes_treating_it
 from nl2hltl2plan.language.grounding import camel_words, find_mentions, lexicon, plural_name
 from nl2hltl2plan.language.learned.slot_model import SlotModel, SlotPrediction
 from nl2hltl2plan.language.prepositions import a_source
@@ -148,9 +147,6 @@ def rewrite(
             # a closing free-order remark ("B, order doesn't matter") restated as the grammar reads it after
             # a clause: it groups the sentence's clauses, which h213's guide "then" orders by it
             sentence, clause = sentence + ", in any order", said
-        end = at + len(clause)
-        if closes_treating_it(clause) and (first := TREATMENT_FIRST.match(text, end)):
-            end = first.end()  # "..., but wash it first": the canonical "rinse X and put it ..." says so
-        text = text[:at] + sentence + text[end:]
+        text = text[:at] + sentence + text[at + len(clause) :]
         changed = True
     return text if changed else None
