@@ -237,9 +237,11 @@ def _read_clause(
         contrast = _contrasted_place(text, toks, i, inside, mentions, grounder, look)
         if contrast is not None:  # "put the tomato in the fridge, not the microwave"
             return _negation(text, toks, i, end_tok, end_tok, "put", *contrast)
-    if verb is None or not inside:
+    if verb in _DONE_TO_IT and not inside and j + 1 < cut and words[j + 1] in ("it", "them"):
+        inside = []  # "put the apple in the fridge, don't heat it": the pronoun alone names the thing
+    elif verb is None or not inside:
         return None
-    if PRONOUNS & set(words[j + 1 : inside[0].start]):  # "don't put it in the sink": it is a thing
+    if PRONOUNS & set(words[j + 1 : inside[0].start if inside else cut]):  # "don't put it in the sink"
         antecedent = _previous_object(text, toks, i, mentions)
         if antecedent is None:
             return None
@@ -347,6 +349,9 @@ def _objects_and_places(
 
 
 PRONOUNS = frozenset({"it", "them", "this", "that", "these", "those"})  # that stand for a thing named before
+# what may be forbidden of "it" alone, the thing said before: done to a thing, never to a place ("don't open
+# it" after "in the fridge" may be the fridge) nor its move (the task moves it)
+_DONE_TO_IT = frozenset({"heat", "cool", "clean", "slice", "break"})
 
 
 def _previous_object(
