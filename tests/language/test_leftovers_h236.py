@@ -90,6 +90,9 @@ def test_where_a_thing_stays_is_read_only_after_its_name_at_a_clause_start():
     assert unmoved_said("Put the plate away, but the pot remains on the stove.") == (
         "Put the plate away, but don't move the pot."
     )
+    assert unmoved_said("Put the watch on the sofa and make sure the vase stays on the table.") == (
+        "Put the watch on the sofa and don't move the vase."
+    )
     # "leave it on the counter" says where it goes: a placing, untouched
     assert unmoved_said("Put the mug in the sink and leave it on the counter.") == (
         "Put the mug in the sink and leave it on the counter."

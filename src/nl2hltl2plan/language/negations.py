@@ -507,8 +507,9 @@ _UNMOVED = r"(?:put|there|(?:right\s+)?where\s+(?:it\s+is|they\s+are)|as\s+(?:it
 _WHERE_IT_STAYS = r"(?:on|in|inside|at)\s+(?:the|its|their)\s+[a-z]+(?:\s+[a-z]+)?"
 _KEPT_AS_IT_IS = re.compile(
     rf"(?:^|(?<=[.;!?])\s+|(?<=,)\s+|(?<=\band\s)|(?<=\bbut\s))"
-    rf"(?:(?P<x>{_NP})\s+(?:(?:can|should|must|will)\s+)?(?:stays?|remains?)"
-    rf"(?:\s+{_UNMOVED}|\s+{_WHERE_IT_STAYS})?|(?:just\s+)?leave\s+(?P<y>{_NP})\s+{_UNMOVED})(?=\s*(?:[.;!?,]|$))",
+    rf"(?:(?:(?:make|be)\s+sure\s+(?:that\s+)?)?(?P<x>{_NP})\s+(?:(?:can|should|must|will)\s+)?(?:stays?|remains?)"
+    rf"(?:\s+{_UNMOVED}|\s+{_WHERE_IT_STAYS})?|(?:just\s+)?(?:leave|keep)\s+(?P<y>{_NP})\s+{_UNMOVED})"
+    rf"(?=\s*(?:[.;!?,]|$))",
     re.I,
 )
 
