@@ -527,6 +527,8 @@ def unmoved_said(text: str) -> str:
         named = find_mentions(thing.lower())
         if len(named) != 1 or thing.lower()[named[0].char_end :].strip():
             return m[0]
+        if m[0].endswith("alone") and not m[0][:1].isspace() and m.start():
+            return m[0]  # "... and leave X alone": untouched, more than unmoved (users_h195held's truth)
         lead = m[0][: len(m[0]) - len(m[0].lstrip())]
         return f"{lead}don't move {thing[0].lower()}{thing[1:]}"
 
